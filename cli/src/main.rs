@@ -1,0 +1,2 @@
+//! The `rtc` command line.
+fn main() {}

@@ -1,0 +1,33 @@
+//! `rtc-compiler`: the rtc language from source text to GPU code, without a GPU.
+//!
+//! The pipeline, one entry function per phase (see [`driver`] for the list in order):
+//! `source` files → `syntax` (lexer, parser, AST) → `sema` (modules and imports, name resolution,
+//! types, program signatures, scenes, recursion) → typed HIR → (later) `link` → `lower` to naga IR →
+//! back ends. Every phase returns data plus [`diag::Diagnostic`]s; nothing here prints, exits or panics on
+//! user input.
+//!
+//! Guarantees:
+//! - No `unsafe`, no GPU dependency: the compiler builds and is tested on any machine.
+//! - User mistakes become diagnostics with a stable code, a span and, where it helps, a help line.
+
+#![forbid(unsafe_code)]
+#![cfg_attr(
+    not(test),
+    warn(
+        clippy::panic,
+        clippy::todo,
+        clippy::dbg_macro,
+        clippy::print_stdout,
+        clippy::print_stderr,
+        clippy::unwrap_used
+    )
+)]
+
+pub mod diag;
+pub mod driver;
+pub mod sema;
+pub mod source;
+pub mod syntax;
+
+pub use diag::{Diagnostic, Severity};
+pub use source::{FileId, SourceMap, Span};

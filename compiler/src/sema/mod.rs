@@ -1,0 +1,1 @@
+//! Semantic analysis: modules and imports, name resolution, types, programs, scenes, recursion.

@@ -1,0 +1,1 @@
+//! `rtc-bvh`: BVH construction for rtc.
