@@ -23,6 +23,7 @@
     )
 )]
 
+pub mod back;
 pub mod diag;
 pub mod driver;
 pub mod sema;

@@ -69,6 +69,9 @@ pub struct SourceFile {
     /// The text.
     pub text: String,
     line_starts: Vec<u32>,
+    /// Where the file starts in the one address space shared by all files of the map (see
+    /// [`SourceMap::to_global`]).
+    base: u32,
 }
 
 impl SourceFile {
@@ -105,11 +108,17 @@ impl SourceMap {
             }
         }
         let id = FileId(self.files.len() as u32);
+        let base = self
+            .files
+            .last()
+            .map(|f| f.base.saturating_add(f.text.len() as u32).saturating_add(1))
+            .unwrap_or(0);
         self.files.push(SourceFile {
             name: name.into(),
             path,
             text,
             line_starts,
+            base,
         });
         id
     }
@@ -164,6 +173,38 @@ impl SourceMap {
         (line + 1, col + 1)
     }
 
+    /// A span as one `(start, end)` range of an address space shared by all files of this map, so that
+    /// spans can be stored where there is no room for a file id (naga's arenas) and mapped back with
+    /// [`SourceMap::from_global`].
+    pub fn to_global(&self, span: Span) -> (u32, u32) {
+        let base = self
+            .files
+            .get(span.file.0 as usize)
+            .map(|f| f.base)
+            .unwrap_or(0);
+        (base.saturating_add(span.lo), base.saturating_add(span.hi))
+    }
+
+    /// The span of a global range made by [`SourceMap::to_global`]; `None` if it falls in no file.
+    pub fn from_global(&self, start: u32, end: u32) -> Option<Span> {
+        let idx = match self.files.binary_search_by_key(&start, |f| f.base) {
+            Ok(i) => i,
+            Err(0) => return None,
+            Err(i) => i - 1,
+        };
+        let f = &self.files[idx];
+        let len = f.text.len() as u32;
+        let lo = start - f.base;
+        if lo > len {
+            return None;
+        }
+        Some(Span {
+            file: FileId(idx as u32),
+            lo,
+            hi: end.saturating_sub(f.base).clamp(lo, len),
+        })
+    }
+
     /// The text a span covers (empty if the span is out of range).
     pub fn snippet(&self, span: Span) -> &str {
         self.get(span.file).text.get(span.range()).unwrap_or("")
@@ -182,5 +223,22 @@ mod tests {
         assert_eq!(map.line_col(f, 3), (2, 1));
         assert_eq!(map.line_col(f, 5), (2, 2)); // after the two-byte 'ç'
         assert_eq!(map.line_col(f, 100), (3, 1));
+    }
+
+    #[test]
+    fn global_spans_round_trip() {
+        let mut map = SourceMap::new();
+        let a = map.add("a.rt", None, "fn a() {}");
+        let b = map.add("b.rt", None, "fn bb() {}");
+        for span in [
+            Span::new(a, 0, 2),
+            Span::new(a, 9, 9),
+            Span::new(b, 3, 5),
+            Span::new(b, 0, 10),
+        ] {
+            let (s, e) = map.to_global(span);
+            assert_eq!(map.from_global(s, e), Some(span));
+        }
+        assert_eq!(map.from_global(1000, 1001), None);
     }
 }
