@@ -23,9 +23,11 @@
     )
 )]
 
+pub mod abi;
 pub mod back;
 pub mod diag;
 pub mod driver;
+pub mod link;
 pub mod sema;
 pub mod source;
 pub mod syntax;

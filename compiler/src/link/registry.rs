@@ -1,0 +1,223 @@
+//! The program registry: stable ids for types and programs, persisted next to the sources.
+//!
+//! This is the thesis's assets database (3.2.2 B–D): every camera, geometry, material, light and
+//! background type, and every program, gets a small integer id that the generated dispatch switches
+//! on and the runtime writes into instance records. Ids must not shuffle when a file is added, changed
+//! or removed elsewhere, so they are kept in a JSON file (`rtc.registry.json` beside the scene) and only
+//! changed by [`Registry::sync`]:
+//! - a key seen before keeps its id;
+//! - a new key gets the smallest id not in use in its namespace (new keys are assigned in sorted order,
+//!   so the result does not depend on discovery order);
+//! - a key no longer present is removed, and its id becomes free.
+//!
+//! Invariants: ids are unique within a namespace; the JSON is written with sorted keys, so the same
+//! registry gives the same bytes; a missing or unreadable file is an empty registry (with a warning for
+//! an unreadable one), never an error that stops a compile.
+
+use serde::{Deserialize, Serialize};
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::Path;
+
+/// The file name of the registry, in the scene's folder.
+pub const FILE_NAME: &str = "rtc.registry.json";
+
+/// The current format version.
+const VERSION: u32 = 1;
+
+/// Ids per namespace (one namespace per struct role and one per program kind), keyed by a stable
+/// name such as `material:std/materials/lambert.rt::Lambert`.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Registry {
+    version: u32,
+    namespaces: BTreeMap<String, BTreeMap<String, u32>>,
+}
+
+/// What [`Registry::sync`] changed in one namespace.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Changes {
+    /// Keys that got a new id.
+    pub added: Vec<(String, u32)>,
+    /// Keys that were removed, with the id they had.
+    pub removed: Vec<(String, u32)>,
+}
+
+impl Changes {
+    /// Whether nothing changed.
+    pub fn is_empty(&self) -> bool {
+        self.added.is_empty() && self.removed.is_empty()
+    }
+}
+
+/// Why a registry file could not be used (it is then treated as empty).
+#[derive(Debug)]
+pub enum LoadWarning {
+    /// The file could not be read.
+    Io(std::io::Error),
+    /// The file is not a registry.
+    Format(String),
+}
+
+impl std::fmt::Display for LoadWarning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            LoadWarning::Io(e) => write!(f, "cannot read the registry: {e}"),
+            LoadWarning::Format(e) => write!(
+                f,
+                "the registry is not valid ({e}); ids are assigned afresh"
+            ),
+        }
+    }
+}
+
+impl Registry {
+    /// An empty registry.
+    pub fn new() -> Registry {
+        Registry {
+            version: VERSION,
+            namespaces: BTreeMap::new(),
+        }
+    }
+
+    /// Reads a registry from JSON text.
+    pub fn from_json(text: &str) -> Result<Registry, LoadWarning> {
+        let reg: Registry =
+            serde_json::from_str(text).map_err(|e| LoadWarning::Format(e.to_string()))?;
+        if reg.version != VERSION {
+            return Err(LoadWarning::Format(format!(
+                "version {} (expected {VERSION})",
+                reg.version
+            )));
+        }
+        for (ns, ids) in &reg.namespaces {
+            let mut seen = BTreeSet::new();
+            if let Some((key, id)) = ids.iter().find(|(_, id)| !seen.insert(**id)) {
+                return Err(LoadWarning::Format(format!(
+                    "id {id} of `{key}` is used twice in `{ns}`"
+                )));
+            }
+        }
+        Ok(reg)
+    }
+
+    /// Loads the registry at `path`; a missing file is an empty registry, an unreadable or invalid one
+    /// is an empty registry plus a warning.
+    pub fn load(path: &Path) -> (Registry, Option<LoadWarning>) {
+        match std::fs::read_to_string(path) {
+            Ok(text) => match Registry::from_json(&text) {
+                Ok(reg) => (reg, None),
+                Err(w) => (Registry::new(), Some(w)),
+            },
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => (Registry::new(), None),
+            Err(e) => (Registry::new(), Some(LoadWarning::Io(e))),
+        }
+    }
+
+    /// The registry as pretty JSON with sorted keys (deterministic).
+    pub fn to_json(&self) -> String {
+        let mut s = serde_json::to_string_pretty(self).unwrap_or_default();
+        s.push('\n');
+        s
+    }
+
+    /// The id of `key` in `namespace`, if it has one.
+    pub fn id(&self, namespace: &str, key: &str) -> Option<u32> {
+        self.namespaces.get(namespace)?.get(key).copied()
+    }
+
+    /// Makes `namespace` hold exactly `present` (create, update, delete), keeping existing ids.
+    pub fn sync<'a>(
+        &mut self,
+        namespace: &str,
+        present: impl IntoIterator<Item = &'a str>,
+    ) -> Changes {
+        let present: BTreeSet<&str> = present.into_iter().collect();
+        let ids = self.namespaces.entry(namespace.to_string()).or_default();
+        let mut changes = Changes::default();
+        ids.retain(|key, id| {
+            let keep = present.contains(key.as_str());
+            if !keep {
+                changes.removed.push((key.clone(), *id));
+            }
+            keep
+        });
+        let mut used: BTreeSet<u32> = ids.values().copied().collect();
+        let mut next_free = 0u32;
+        for key in present {
+            if ids.contains_key(key) {
+                continue;
+            }
+            while used.contains(&next_free) {
+                next_free += 1;
+            }
+            ids.insert(key.to_string(), next_free);
+            used.insert(next_free);
+            changes.added.push((key.to_string(), next_free));
+        }
+        if ids.is_empty() {
+            self.namespaces.remove(namespace);
+        }
+        changes
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ids_are_stable_across_additions_and_removals() {
+        let mut reg = Registry::new();
+        let c = reg.sync("material", ["b", "a", "c"]);
+        assert_eq!(
+            c.added,
+            vec![("a".into(), 0), ("b".into(), 1), ("c".into(), 2)]
+        );
+        // Remove `b`; `a` and `c` keep their ids.
+        let c = reg.sync("material", ["a", "c"]);
+        assert_eq!(c.removed, vec![("b".into(), 1)]);
+        assert_eq!(
+            (reg.id("material", "a"), reg.id("material", "c")),
+            (Some(0), Some(2))
+        );
+        // A new key takes the freed id; nothing else moves.
+        let c = reg.sync("material", ["a", "c", "d"]);
+        assert_eq!(c.added, vec![("d".into(), 1)]);
+        assert!(reg.sync("material", ["a", "c", "d"]).is_empty());
+    }
+
+    #[test]
+    fn namespaces_are_independent() {
+        let mut reg = Registry::new();
+        reg.sync("material", ["m"]);
+        reg.sync("light", ["l"]);
+        assert_eq!(reg.id("material", "m"), Some(0));
+        assert_eq!(reg.id("light", "l"), Some(0));
+    }
+
+    #[test]
+    fn json_round_trip_is_byte_identical() {
+        let mut reg = Registry::new();
+        reg.sync("material", ["x", "y"]);
+        reg.sync("camera", ["p"]);
+        let json = reg.to_json();
+        let back = Registry::from_json(&json).unwrap();
+        assert_eq!(back, reg);
+        assert_eq!(back.to_json(), json);
+    }
+
+    #[test]
+    fn invalid_files_are_warnings() {
+        assert!(matches!(
+            Registry::from_json("{"),
+            Err(LoadWarning::Format(_))
+        ));
+        let dup = r#"{"version":1,"namespaces":{"material":{"a":0,"b":0}}}"#;
+        assert!(matches!(
+            Registry::from_json(dup),
+            Err(LoadWarning::Format(_))
+        ));
+        let (reg, warn) = Registry::load(Path::new("/nonexistent/rtc.registry.json"));
+        assert!(warn.is_none());
+        assert_eq!(reg, Registry::new());
+    }
+}
