@@ -28,6 +28,7 @@ pub mod back;
 pub mod diag;
 pub mod driver;
 pub mod link;
+pub mod lower;
 pub mod sema;
 pub mod source;
 pub mod syntax;
