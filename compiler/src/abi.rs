@@ -95,11 +95,15 @@ pub const NODE: StructDesc = StructDesc {
 /// One object of the scene (an instance of a geometry with a material and a transform).
 pub const INSTANCE: StructDesc = StructDesc {
     name: "GpuInstance",
-    doc: "object: world-to-object affine transform (3 rows), geometry and material ids and parameter offsets",
+    doc: "object: world-to-object and object-to-world affine transforms (3 rows each), geometry and material \
+          ids and parameter offsets, flags, and the object's index in the scene",
     fields: &[
         f("world_to_object_0", FieldType::Vec4F32),
         f("world_to_object_1", FieldType::Vec4F32),
         f("world_to_object_2", FieldType::Vec4F32),
+        f("object_to_world_0", FieldType::Vec4F32),
+        f("object_to_world_1", FieldType::Vec4F32),
+        f("object_to_world_2", FieldType::Vec4F32),
         f("geometry_type", FieldType::U32),
         f("geometry_offset", FieldType::U32),
         f("material_type", FieldType::U32),
@@ -107,7 +111,7 @@ pub const INSTANCE: StructDesc = StructDesc {
         f("blas_root", FieldType::U32),
         f("triangle_offset", FieldType::U32),
         f("flags", FieldType::U32),
-        f("reserved", FieldType::U32),
+        f("object", FieldType::U32),
     ],
 };
 
