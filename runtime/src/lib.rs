@@ -1,1 +1,16 @@
 //! `rtc-runtime`: the thin wgpu runtime of rtc (scenes, BVHs, GPU buffers, dispatch, images).
+//!
+//! The crate is layered so that each layer knows nothing of the ones above it:
+//!
+//! - [`gpu`]: the language-independent GPU core. Adapter selection ([`gpu::Gpu`]), compute
+//!   pipelines with explicit bind group layouts ([`gpu::Kernel`]), persistent per-binding buffers
+//!   that re-upload only what changed ([`gpu::BufferSet`]), tiled dispatch with progress and
+//!   read-back ([`gpu::TileDispatcher`]).
+//! - [`image_out`]: linear RGBA `f32` images, EXR/PNG output and input, and image metrics.
+//!
+//! Invariants of the whole crate: it never exits the process and never panics on run-time
+//! failures; every fallible operation returns a typed error (`thiserror` enums, one per module).
+//! It contains no `unsafe` code (the workspace denies it).
+
+pub mod gpu;
+pub mod image_out;

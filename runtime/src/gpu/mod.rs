@@ -1,0 +1,260 @@
+//! The language-independent GPU core of the runtime: one [`Gpu`] context (instance, adapter,
+//! device, queue), compute [`Kernel`]s with explicit bind group layouts, a persistent
+//! [`BufferSet`] keyed by binding, and tiled dispatch with read-back ([`TileDispatcher`]).
+//!
+//! The layer knows nothing of the rtc language: a kernel is a compute entry point plus a list of
+//! [`BindingDesc`]s in bind group 0, exactly what the compiler's manifest describes.
+//!
+//! Invariants:
+//! - Every wgpu call that can raise a validation, out-of-memory or internal error runs inside
+//!   error scopes ([`Gpu::scoped`]), so wgpu's default uncaptured-error handler (which panics) is
+//!   never reached by our own calls. A last-resort handler is installed anyway; it records the
+//!   message instead of panicking ([`Gpu::take_uncaptured_errors`]).
+//! - The device is created with the adapter's own limits (not wgpu's small defaults), so big
+//!   scenes fit; [`GpuLimits`] records the ones the runtime checks against.
+//! - Nothing here exits the process or panics on a run-time failure; errors are typed.
+
+mod adapter;
+mod buffers;
+mod dispatch;
+mod pipeline;
+
+use std::sync::{Arc, Mutex, PoisonError};
+use std::time::Instant;
+
+pub use adapter::{list_adapters, AdapterChoice, AdapterChoiceParseError, AdapterDescription};
+pub use buffers::{BufferError, BufferLimits, BufferSet, UploadOutcome, UploadStats};
+pub use dispatch::{
+    dispatch_once, plan_tiles, read_buffer, read_vec4_f32, DispatchError, DispatchReport,
+    TileConfig, TileDispatcher, TileParams, TILE_PARAMS_WGSL,
+};
+pub use pipeline::{
+    create_kernel, BindingDesc, BindingKind, Kernel, KernelDesc, KernelSource, PipelineError,
+    PipelineTimings,
+};
+
+/// Why no GPU context could be created.
+#[derive(Debug, thiserror::Error)]
+pub enum AdapterError {
+    /// wgpu found no adapter at all on the enabled backends.
+    #[error(
+        "no GPU adapter found (backends tried: {backends}). To run on the CPU, install Mesa's \
+         software Vulkan driver (lavapipe): `apt-get install -y mesa-vulkan-drivers libvulkan1` \
+         on Debian/Ubuntu; for the OpenGL fallback also `libegl1 libegl-mesa0 libgl1-mesa-dri`. \
+         `WGPU_BACKEND` (vulkan, gl, metal, dx12) restricts the backends tried"
+    )]
+    NoAdapter {
+        /// The backends the instance was allowed to use, as wgpu names them.
+        backends: String,
+    },
+    /// Adapters exist, but none matches the explicit choice.
+    #[error("no adapter matches {choice}; available: {}", available.join("; "))]
+    NoMatch {
+        /// The choice, rendered for humans.
+        choice: String,
+        /// One line per adapter that was found.
+        available: Vec<String>,
+    },
+    /// The chosen adapter refused to create a device.
+    #[error("adapter `{adapter}` could not create a device: {source}")]
+    RequestDevice {
+        /// The adapter's name.
+        adapter: String,
+        /// wgpu's reason.
+        source: wgpu::RequestDeviceError,
+    },
+}
+
+/// The device limits the runtime checks against (copied from the device at creation).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct GpuLimits {
+    /// Largest size in bytes of one storage buffer binding.
+    pub max_storage_buffer_binding_size: u64,
+    /// Largest size in bytes of one uniform buffer binding.
+    pub max_uniform_buffer_binding_size: u64,
+    /// Largest size in bytes of any buffer.
+    pub max_buffer_size: u64,
+    /// How many storage buffers one compute shader may bind.
+    pub max_storage_buffers_per_shader_stage: u32,
+    /// Required alignment of dynamic uniform offsets.
+    pub min_uniform_buffer_offset_alignment: u32,
+    /// Largest workgroup count in one dimension of a dispatch.
+    pub max_compute_workgroups_per_dimension: u32,
+    /// Largest product of a workgroup's three sizes.
+    pub max_compute_invocations_per_workgroup: u32,
+}
+
+impl GpuLimits {
+    fn from_wgpu(limits: &wgpu::Limits) -> Self {
+        Self {
+            max_storage_buffer_binding_size: limits.max_storage_buffer_binding_size,
+            max_uniform_buffer_binding_size: limits.max_uniform_buffer_binding_size,
+            max_buffer_size: limits.max_buffer_size,
+            max_storage_buffers_per_shader_stage: limits.max_storage_buffers_per_shader_stage,
+            min_uniform_buffer_offset_alignment: limits.min_uniform_buffer_offset_alignment,
+            max_compute_workgroups_per_dimension: limits.max_compute_workgroups_per_dimension,
+            max_compute_invocations_per_workgroup: limits.max_compute_invocations_per_workgroup,
+        }
+    }
+}
+
+/// Wall-clock milliseconds spent creating the context.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct InitTimings {
+    /// `Instance::new`.
+    pub instance_ms: f64,
+    /// Enumerating adapters and choosing one.
+    pub adapter_ms: f64,
+    /// `request_device`.
+    pub device_ms: f64,
+}
+
+impl InitTimings {
+    /// Sum of all phases.
+    pub fn total_ms(&self) -> f64 {
+        self.instance_ms + self.adapter_ms + self.device_ms
+    }
+}
+
+/// One GPU context: the chosen adapter, its device and queue, and what we learnt about them.
+#[derive(Debug)]
+pub struct Gpu {
+    adapter: wgpu::Adapter,
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    description: AdapterDescription,
+    limits: GpuLimits,
+    init_timings: InitTimings,
+    uncaptured: Arc<Mutex<Vec<String>>>,
+}
+
+impl Gpu {
+    /// Chooses an adapter (see [`AdapterChoice`] for the rules) and creates a device with the
+    /// adapter's own limits.
+    pub fn new(choice: &AdapterChoice) -> Result<Self, AdapterError> {
+        let (adapter, mut init_timings) = adapter::select(choice)?;
+        let info = adapter.get_info();
+        let description = AdapterDescription::from_info(&info);
+
+        let start = Instant::now();
+        let descriptor = wgpu::DeviceDescriptor {
+            label: Some("rtc device"),
+            required_features: wgpu::Features::empty(),
+            required_limits: adapter.limits(),
+            experimental_features: wgpu::ExperimentalFeatures::disabled(),
+            memory_hints: wgpu::MemoryHints::Performance,
+            trace: wgpu::Trace::Off,
+        };
+        let (device, queue) =
+            pollster::block_on(adapter.request_device(&descriptor)).map_err(|source| {
+                AdapterError::RequestDevice {
+                    adapter: info.name.clone(),
+                    source,
+                }
+            })?;
+        init_timings.device_ms = elapsed_ms(start);
+
+        let uncaptured = Arc::new(Mutex::new(Vec::new()));
+        let sink = Arc::clone(&uncaptured);
+        device.on_uncaptured_error(Arc::new(move |error: wgpu::Error| {
+            sink.lock()
+                .unwrap_or_else(PoisonError::into_inner)
+                .push(error.to_string());
+        }));
+
+        let limits = GpuLimits::from_wgpu(&device.limits());
+        Ok(Self {
+            adapter,
+            device,
+            queue,
+            description,
+            limits,
+            init_timings,
+            uncaptured,
+        })
+    }
+
+    /// What the chosen adapter is (name, backend, device type, driver), for printing.
+    pub fn description(&self) -> &AdapterDescription {
+        &self.description
+    }
+
+    /// The device limits the runtime checks against.
+    pub fn limits(&self) -> &GpuLimits {
+        &self.limits
+    }
+
+    /// How long creating this context took.
+    pub fn init_timings(&self) -> InitTimings {
+        self.init_timings
+    }
+
+    /// The wgpu adapter.
+    pub fn adapter(&self) -> &wgpu::Adapter {
+        &self.adapter
+    }
+
+    /// The wgpu device.
+    pub fn device(&self) -> &wgpu::Device {
+        &self.device
+    }
+
+    /// The wgpu queue.
+    pub fn queue(&self) -> &wgpu::Queue {
+        &self.queue
+    }
+
+    /// Errors wgpu reported outside any error scope since the last call (normally none: the
+    /// runtime scopes its own calls; this catches errors from callers using the raw device).
+    pub fn take_uncaptured_errors(&self) -> Vec<String> {
+        std::mem::take(
+            &mut *self
+                .uncaptured
+                .lock()
+                .unwrap_or_else(PoisonError::into_inner),
+        )
+    }
+
+    /// Runs `f` inside validation, out-of-memory and internal error scopes and returns its value
+    /// with the first error raised, rendered with its source chain.
+    pub fn scoped<T>(&self, f: impl FnOnce() -> T) -> (T, Option<String>) {
+        let internal = self.device.push_error_scope(wgpu::ErrorFilter::Internal);
+        let oom = self.device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+        let validation = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let value = f();
+        let errors = [
+            pollster::block_on(validation.pop()),
+            pollster::block_on(oom.pop()),
+            pollster::block_on(internal.pop()),
+        ];
+        let first = errors.into_iter().flatten().next().map(|e| error_chain(&e));
+        (value, first)
+    }
+
+    /// Blocks until all submitted work is done.
+    pub fn wait_idle(&self) -> Result<(), wgpu::PollError> {
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map(|_| ())
+    }
+}
+
+/// Renders an error and all its sources on one line (wgpu's `Display` often hides the detail).
+pub(crate) fn error_chain(error: &dyn std::error::Error) -> String {
+    let mut text = error.to_string();
+    let mut source = error.source();
+    while let Some(inner) = source {
+        let line = inner.to_string();
+        if !text.contains(&line) {
+            text.push_str(": ");
+            text.push_str(&line);
+        }
+        source = inner.source();
+    }
+    text
+}
+
+/// Milliseconds since `start`.
+pub(crate) fn elapsed_ms(start: Instant) -> f64 {
+    start.elapsed().as_secs_f64() * 1e3
+}
