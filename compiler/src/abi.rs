@@ -11,7 +11,7 @@
 //!
 //! Invariants:
 //! - Bindings are all in group 0, numbered densely from 0 in [`BINDINGS`] order.
-//! - At most 7 storage buffers plus 1 uniform buffer, within WebGPU's default of 8 storage buffers per
+//! - At most 8 storage buffers plus 2 uniform buffers, within WebGPU's default of 8 storage buffers per
 //!   stage, so the kernel runs on every adapter.
 //! - A binding that the kernel of a scene does not use is not declared in that kernel (see the link step);
 //!   hosts bind exactly the bindings the manifest lists.
@@ -124,6 +124,8 @@ pub enum Element {
     StructArray(&'static StructDesc),
     /// A runtime-sized array of a plain type.
     Array(FieldType),
+    /// A runtime-sized array of `atomic<u32>`.
+    Atomics,
 }
 
 /// One binding of the kernel.
@@ -152,52 +154,66 @@ pub const BINDINGS: &[BindingDesc] = &[
     },
     BindingDesc {
         binding: 1,
+        name: "tile",
+        kind: ResourceKind::Uniform,
+        element: Element::Struct(&TILE),
+        doc: "the tile of this dispatch (bound with a dynamic offset)",
+    },
+    BindingDesc {
+        binding: 2,
         name: "nodes",
         kind: ResourceKind::StorageRead,
         element: Element::StructArray(&NODE),
         doc: "the scene-level BVH and every mesh's object-level BVH, concatenated",
     },
     BindingDesc {
-        binding: 2,
+        binding: 3,
         name: "instances",
         kind: ResourceKind::StorageRead,
         element: Element::StructArray(&INSTANCE),
         doc: "the scene's objects",
     },
     BindingDesc {
-        binding: 3,
+        binding: 4,
         name: "triangles",
         kind: ResourceKind::StorageRead,
         element: Element::Array(FieldType::Vec4F32),
         doc: "triangle vertex positions in object space, 3 vec4 per triangle in BVH leaf order (w of the first: the mesh's triangle index, as bits)",
     },
     BindingDesc {
-        binding: 4,
+        binding: 5,
         name: "attributes",
         kind: ResourceKind::StorageRead,
         element: Element::Array(FieldType::Vec4U32),
         doc: "per triangle, 2 vec4u: octahedral normals of the 3 vertices (snorm16x2) and their uvs (f16x2)",
     },
     BindingDesc {
-        binding: 5,
+        binding: 6,
         name: "params",
         kind: ResourceKind::StorageRead,
         element: Element::Array(FieldType::U32),
         doc: "instance data of every camera, geometry, material and light type, the light and medium tables, mesh and texture records, as 32-bit words",
     },
     BindingDesc {
-        binding: 6,
+        binding: 7,
         name: "texels",
         kind: ResourceKind::StorageRead,
         element: Element::Array(FieldType::U32),
         doc: "every texture's texels (rgba8 sRGB, or rgba16f as 2 words)",
     },
     BindingDesc {
-        binding: 7,
+        binding: 8,
         name: "accum",
         kind: ResourceKind::StorageReadWrite,
         element: Element::Array(FieldType::Vec4F32),
         doc: "per pixel: rgb = sum of sample radiance, a = sample count",
+    },
+    BindingDesc {
+        binding: 9,
+        name: "counters",
+        kind: ResourceKind::StorageReadWrite,
+        element: Element::Atomics,
+        doc: "atomic counters: [0] = samples that were not finite (NaN or infinite) and were replaced by zero",
     },
 ];
 
