@@ -59,16 +59,26 @@ pub struct StructDesc {
     pub doc: &'static str,
 }
 
-/// Per-dispatch constants (the uniform buffer).
+/// Per-tile constants: which pixels one dispatch covers (a uniform buffer bound with a dynamic
+/// offset per tile; the runtime's `gpu::TileParams` mirrors it).
+pub const TILE: StructDesc = StructDesc {
+    name: "TileParams",
+    doc: "per-dispatch tile: top-left pixel, extent (clipped at the image edge), image size, tile index, pass",
+    fields: &[
+        f("origin", FieldType::Vec2U32),
+        f("extent", FieldType::Vec2U32),
+        f("image_size", FieldType::Vec2U32),
+        f("tile_index", FieldType::U32),
+        f("frame", FieldType::U32),
+    ],
+};
+
+/// Per-scene constants (a uniform buffer): sampling, the scene-level BVH root, and where the scene's
+/// tables are in `params`.
 pub const FRAME: StructDesc = StructDesc {
     name: "FrameUniforms",
-    doc:
-        "per-dispatch constants: image and tile, pass, and where the scene's tables are in `params`",
+    doc: "per-scene constants: sampling, the scene-level BVH root, and where the scene's tables are in `params`",
     fields: &[
-        f("image_size", FieldType::Vec2U32),
-        f("tile_origin", FieldType::Vec2U32),
-        f("tile_size", FieldType::Vec2U32),
-        f("frame_index", FieldType::U32),
         f("samples_per_pass", FieldType::U32),
         f("total_samples", FieldType::U32),
         f("seed", FieldType::U32),
