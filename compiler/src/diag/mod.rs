@@ -13,6 +13,7 @@
 //!   says so; it is never a panic.
 
 pub mod codes;
+pub mod suggest;
 
 use crate::source::{SourceMap, Span};
 pub use codes::Code;

@@ -10,8 +10,13 @@
 //!   module that holds it.
 //! - Every node has a span in the module's file. Spans of a parent cover its children.
 //! - Syntax errors never leave holes: the parser puts [`ExprKind::Error`], [`TypeExprKind::Error`],
-//!   [`StmtKind::Error`] or [`ItemKind::Error`] where it recovered, and has already reported a
-//!   diagnostic there, so later phases skip error nodes silently (no cascades).
+//!   [`StmtKind::Error`] or [`ItemKind::Error`] where it recovered (a scene entry it cannot make
+//!   sense of is left out), and has already reported a diagnostic there, so later phases skip error
+//!   nodes silently (no cascades). The arena may also hold expressions that no node refers to (the
+//!   operands of a construct replaced by an error node, such as `a < b < c`).
+//! - Depth is bounded, so later phases may recurse: an expression tree is at most
+//!   [`crate::syntax::MAX_EXPR_DEPTH`] (256) nodes deep, and blocks, generic types and parenthesised
+//!   or delimited sub-expressions nest at most [`crate::syntax::MAX_DEPTH`] (128) levels.
 
 use crate::source::{FileId, Span};
 use la_arena::{Arena, Idx};
@@ -293,6 +298,8 @@ pub enum ExprKind {
     },
     /// `func(args)`, `func<generics>(args)`: function calls, built-ins, and type constructors and
     /// conversions such as `vec3f(1.0)`, `vec3<f32>(x)`, `array<f32, 3>(a, b, c)`, `bitcast<u32>(x)`.
+    /// Generic arguments are only parsed after the built-in generic names (`vec2` … `vec4`,
+    /// `mat2x2` … `mat4x4`, `array`, `bitcast`); after any other name `<` is "less than".
     Call {
         /// The called name.
         func: Ident,
@@ -329,6 +336,10 @@ pub enum ExprKind {
 }
 
 /// A generic argument: a type (`vec3<f32>`) or a constant expression (the size in `array<f32, 3>`).
+///
+/// The parser reads the **first** argument of a list as a type and every further one as an
+/// expression (the only generic with two arguments is `array<T, N>`), so `array<f32, N>` gives
+/// `[Type(f32), Expr(N)]` whatever `N` names.
 #[derive(Clone, Debug, PartialEq)]
 pub enum GenericArg {
     /// A type.
