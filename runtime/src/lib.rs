@@ -12,5 +12,6 @@
 //! failures; every fallible operation returns a typed error (`thiserror` enums, one per module).
 //! It contains no `unsafe` code (the workspace denies it).
 
+pub mod assets;
 pub mod gpu;
 pub mod image_out;

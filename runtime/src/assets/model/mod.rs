@@ -1,0 +1,283 @@
+//! glTF 2.0 (`.gltf` with external or embedded buffers, and `.glb`) → [`ModelScene`], the scene
+//! entities of a `model "file.glb"` entry.
+//!
+//! # The pipeline, in order ([`load_gltf`])
+//!
+//! 1. `document::parse`: split a `.glb` container (our own checked parser), parse the JSON into
+//!    `gltf::json::Root`, pre-check what `gltf-json`'s validator would index unchecked, then run
+//!    the validator (every index in range, required properties present, required extensions
+//!    supported).
+//! 2. `buffers::load`: every buffer's bytes (the `.glb` binary chunk, a `data:` URI, or a file
+//!    relative to the glTF file), each at least its declared length.
+//! 3. `nodes::walk`: the default scene (or the first; without scenes, every parentless node),
+//!    depth first, children in order, accumulating world transforms. Each node with a mesh adds
+//!    one [`MeshInstance`] per primitive; each camera and `KHR_lights_punctual` light is placed
+//!    in world space.
+//! 4. On first use, `primitive::convert` turns a glTF primitive into a [`MeshData`] through the
+//!    checked accessor reader (`accessor.rs`), and `materials::convert` a glTF material into a
+//!    [`GltfMaterial`], decoding its base-colour image into a [`TextureData`].
+//!
+//! We work on the JSON level (`gltf::json`) rather than through the `gltf` crate's wrapper types
+//! and readers, because those index and slice without checking (they panic on an accessor that
+//! overruns its buffer, a count of zero, a spot light without its `spot` object, …).
+//!
+//! # Invariants of a [`ModelScene`]
+//!
+//! - One [`MeshData`] per *used* glTF primitive of mode `TRIANGLES`, converted once however many
+//!   nodes use it: instancing is [`MeshInstance`]s sharing a `mesh` index. Other modes, morph
+//!   targets, skins, animations and extensions other than `KHR_lights_punctual` and
+//!   `KHR_materials_emissive_strength` are skipped with a warning (an unsupported extension the
+//!   file *requires* is an error).
+//! - Every `MeshInstance::mesh` and `::material` and every `GltfMaterial::base_color_texture` is
+//!   a valid index into `meshes`, `materials` and `textures`. Primitives without a material use
+//!   glTF's default material, appended to `materials` when needed.
+//! - Transforms are finite object-to-world matrices (a node whose transform is not finite is
+//!   skipped with its subtree, with a warning).
+//! - glTF and rtc share conventions (right-handed, y-up, counter-clockwise front faces, uv origin
+//!   top-left), so no coordinate is changed on import.
+
+mod accessor;
+mod buffers;
+mod document;
+mod materials;
+mod nodes;
+mod primitive;
+
+/// The URI decoders, for the tests.
+#[cfg(test)]
+pub(crate) mod buffers_for_tests {
+    pub(crate) use super::buffers::{decode_base64, percent_decode};
+}
+
+use std::path::Path;
+
+use glam::{Mat4, Vec3};
+
+use super::{AssetError, Bounds, MeshData, TextureData};
+
+/// Everything a glTF file contributes to a scene.
+#[derive(Clone, Debug, Default)]
+pub struct ModelScene {
+    /// One mesh per used glTF primitive.
+    pub meshes: Vec<MeshData>,
+    /// Placed meshes; several may share a mesh.
+    pub instances: Vec<MeshInstance>,
+    /// The used materials (glTF's default material last, when a primitive has none).
+    pub materials: Vec<GltfMaterial>,
+    /// The decoded base-colour images of the materials.
+    pub textures: Vec<TextureData>,
+    /// The cameras of the scene's nodes, in node order; the first is the default camera.
+    pub cameras: Vec<GltfCamera>,
+    /// The `KHR_lights_punctual` lights of the scene's nodes, in node order.
+    pub lights: Vec<GltfLight>,
+    /// What was skipped or approximated, one sentence each.
+    pub warnings: Vec<String>,
+}
+
+impl ModelScene {
+    /// The world-space box around all instances (empty when there are none), for framing the
+    /// model with a camera.
+    pub fn bounds(&self) -> Bounds {
+        let mesh_bounds: Vec<Bounds> = self.meshes.iter().map(MeshData::bounds).collect();
+        self.instances
+            .iter()
+            .filter_map(|i| Some(mesh_bounds.get(i.mesh)?.transformed(&i.transform)))
+            .fold(Bounds::EMPTY, Bounds::union)
+    }
+
+    /// The default camera: the first one in the scene.
+    pub fn default_camera(&self) -> Option<&GltfCamera> {
+        self.cameras.first()
+    }
+}
+
+/// A mesh placed in the world.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MeshInstance {
+    /// Index into [`ModelScene::meshes`].
+    pub mesh: usize,
+    /// Index into [`ModelScene::materials`].
+    pub material: usize,
+    /// Object-to-world transform (the node's world transform).
+    pub transform: Mat4,
+    /// The glTF node it comes from.
+    pub node: usize,
+}
+
+/// How a material treats alpha (glTF `alphaMode`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum AlphaMode {
+    /// Alpha is ignored.
+    #[default]
+    Opaque,
+    /// Alpha below `alpha_cutoff` is fully transparent, otherwise opaque.
+    Mask,
+    /// Alpha blends.
+    Blend,
+}
+
+/// A glTF metallic-roughness material.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GltfMaterial {
+    /// The material's name, if any.
+    pub name: Option<String>,
+    /// Linear RGBA base colour factor (multiplies the texture).
+    pub base_color: [f32; 4],
+    /// Index into [`ModelScene::textures`] of the base-colour image (sRGB), sampled with
+    /// `TEXCOORD_0`.
+    pub base_color_texture: Option<usize>,
+    /// Metalness factor, 0..=1.
+    pub metallic: f32,
+    /// Perceptual roughness factor, 0..=1.
+    pub roughness: f32,
+    /// Linear emitted radiance factor (times `KHR_materials_emissive_strength`).
+    pub emissive: [f32; 3],
+    /// How alpha is used.
+    pub alpha_mode: AlphaMode,
+    /// The cutoff of [`AlphaMode::Mask`].
+    pub alpha_cutoff: f32,
+    /// Whether back faces are lit like front faces.
+    pub double_sided: bool,
+}
+
+impl Default for GltfMaterial {
+    /// glTF's default material: white, fully metallic and rough, opaque, single-sided.
+    fn default() -> Self {
+        Self {
+            name: None,
+            base_color: [1.0; 4],
+            base_color_texture: None,
+            metallic: 1.0,
+            roughness: 1.0,
+            emissive: [0.0; 3],
+            alpha_mode: AlphaMode::Opaque,
+            alpha_cutoff: 0.5,
+            double_sided: false,
+        }
+    }
+}
+
+/// A camera's projection (glTF units: radians, scene units).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Projection {
+    /// A pinhole camera.
+    Perspective {
+        /// Vertical field of view in radians.
+        yfov: f32,
+        /// Width / height, if the file fixes it (otherwise the image's).
+        aspect: Option<f32>,
+        /// Near plane distance.
+        znear: f32,
+        /// Far plane distance; `None` is infinite.
+        zfar: Option<f32>,
+    },
+    /// An orthographic camera.
+    Orthographic {
+        /// Half the view's width.
+        xmag: f32,
+        /// Half the view's height.
+        ymag: f32,
+        /// Near plane distance.
+        znear: f32,
+        /// Far plane distance.
+        zfar: f32,
+    },
+}
+
+/// A camera placed in the world. In its own frame it looks down -z with +y up.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GltfCamera {
+    /// The camera's name, if any.
+    pub name: Option<String>,
+    /// The projection.
+    pub projection: Projection,
+    /// Camera-to-world transform (the node's world transform).
+    pub transform: Mat4,
+}
+
+impl GltfCamera {
+    /// The eye position in world space.
+    pub fn position(&self) -> Vec3 {
+        self.transform.transform_point3(Vec3::ZERO)
+    }
+
+    /// The unit viewing direction in world space.
+    pub fn forward(&self) -> Vec3 {
+        self.transform
+            .transform_vector3(Vec3::NEG_Z)
+            .normalize_or(Vec3::NEG_Z)
+    }
+
+    /// The unit up direction in world space.
+    pub fn up(&self) -> Vec3 {
+        self.transform
+            .transform_vector3(Vec3::Y)
+            .normalize_or(Vec3::Y)
+    }
+}
+
+/// The kind of a `KHR_lights_punctual` light.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LightKind {
+    /// Emits in all directions from `position`; intensity in candela.
+    Point,
+    /// A cone around `direction` from `position`; intensity in candela.
+    Spot {
+        /// Angle in radians from the axis where the falloff begins.
+        inner_cone_angle: f32,
+        /// Angle in radians from the axis where the light ends.
+        outer_cone_angle: f32,
+    },
+    /// Parallel light along `direction`; intensity in lux.
+    Directional,
+}
+
+/// A `KHR_lights_punctual` light placed in the world.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GltfLight {
+    /// The light's name, if any.
+    pub name: Option<String>,
+    /// Point, spot or directional.
+    pub kind: LightKind,
+    /// Linear RGB colour.
+    pub color: [f32; 3],
+    /// Brightness (candela for point and spot, lux for directional).
+    pub intensity: f32,
+    /// Distance where the light's influence ends; `None` is infinite.
+    pub range: Option<f32>,
+    /// World-space position (meaningless for directional lights).
+    pub position: Vec3,
+    /// Unit world-space direction the light shines in (the node's -z; unused for point lights).
+    pub direction: Vec3,
+}
+
+/// Reads a glTF 2.0 file (`.gltf` or `.glb`, told apart by content) and everything it refers to.
+/// See the [module docs](self) for what is imported and what is skipped.
+pub fn load_gltf(path: impl AsRef<Path>) -> Result<ModelScene, AssetError> {
+    let path = path.as_ref();
+    let bytes = std::fs::read(path).map_err(|source| AssetError::Read {
+        path: path.to_owned(),
+        source,
+    })?;
+    parse_gltf(&bytes, path)
+}
+
+/// [`load_gltf`] on the file's bytes; `path` names the file in errors and its folder is where
+/// relative URIs are resolved.
+pub(crate) fn parse_gltf(bytes: &[u8], path: &Path) -> Result<ModelScene, AssetError> {
+    let (root, blob) = document::parse(bytes, path)?;
+    let buffers = buffers::load(&root, blob, path)?;
+    let ctx = Ctx {
+        path,
+        root: &root,
+        buffers: &buffers,
+    };
+    nodes::build(&ctx)
+}
+
+/// What every conversion step reads: the file's name, its validated JSON and its buffers.
+struct Ctx<'a> {
+    path: &'a Path,
+    root: &'a gltf::json::Root,
+    buffers: &'a [Vec<u8>],
+}

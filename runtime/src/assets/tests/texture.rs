@@ -1,0 +1,199 @@
+//! Images: PNG/JPEG → `Rgba8Srgb`, HDR/EXR → `Rgba16F`, exact texel words, limits, bad files.
+
+use std::path::Path;
+
+use image::{ImageBuffer, Luma, Rgb, Rgba};
+
+use super::{assert_close, TempDir};
+use crate::assets::texture::{decode_image, pack_f16x2, srgb_to_linear, unpack_f16x2};
+use crate::assets::{
+    load_image, solid_texture, AssetError, TextureData, TextureFormat, MAX_TEXTURE_SIZE,
+};
+
+#[test]
+fn png_rgba8_words_are_little_endian_rgba() {
+    let dir = TempDir::new("tex");
+    let pixels: Vec<u8> = vec![
+        255, 0, 0, 255, /**/ 0, 255, 0, 128, /**/ 0, 0, 255, 0, //
+        1, 2, 3, 4, /**/ 10, 20, 30, 40, /**/ 250, 251, 252, 253,
+    ];
+    let img: ImageBuffer<Rgba<u8>, _> = ImageBuffer::from_raw(3, 2, pixels.clone()).unwrap();
+    let path = dir.path().join("rgba.png");
+    img.save(&path).unwrap();
+    let tex = load_image(&path).unwrap();
+    assert_eq!(
+        (tex.width, tex.height, tex.format),
+        (3, 2, TextureFormat::Rgba8Srgb)
+    );
+    let expected: Vec<u32> = pixels
+        .chunks(4)
+        .map(|c| {
+            u32::from(c[0]) | u32::from(c[1]) << 8 | u32::from(c[2]) << 16 | u32::from(c[3]) << 24
+        })
+        .collect();
+    assert_eq!(tex.words, expected);
+    // Row 0 is the top row of the image; texel() decodes sRGB to linear.
+    assert_eq!(tex.texel(0, 0), Some([1.0, 0.0, 0.0, 1.0]));
+    let t = tex.texel(1, 1).unwrap();
+    assert_close(t[0], srgb_to_linear(10.0 / 255.0), 1e-7);
+    assert_close(t[1], srgb_to_linear(20.0 / 255.0), 1e-7);
+    assert_close(t[3], 40.0 / 255.0, 1e-7);
+    assert_eq!(tex.texel(3, 0), None);
+    assert_eq!(tex.texel(0, 2), None);
+}
+
+#[test]
+fn grey_rgb_and_16_bit_pngs_become_rgba8() {
+    let dir = TempDir::new("tex");
+    let grey: ImageBuffer<Luma<u8>, _> = ImageBuffer::from_raw(2, 1, vec![0u8, 200]).unwrap();
+    grey.save(dir.path().join("grey.png")).unwrap();
+    let tex = load_image(dir.path().join("grey.png")).unwrap();
+    assert_eq!(tex.words, vec![0xff00_0000, 0xffc8_c8c8]);
+
+    let rgb: ImageBuffer<Rgb<u8>, _> = ImageBuffer::from_raw(1, 1, vec![1u8, 2, 3]).unwrap();
+    rgb.save(dir.path().join("rgb.png")).unwrap();
+    assert_eq!(
+        load_image(dir.path().join("rgb.png")).unwrap().words,
+        vec![0xff03_0201]
+    );
+
+    let deep: ImageBuffer<Rgba<u16>, _> =
+        ImageBuffer::from_raw(1, 1, vec![65535u16, 0, 32896, 65535]).unwrap();
+    deep.save(dir.path().join("deep.png")).unwrap();
+    let tex = load_image(dir.path().join("deep.png")).unwrap();
+    assert_eq!(tex.format, TextureFormat::Rgba8Srgb);
+    assert_eq!(tex.words, vec![0xff80_00ff]);
+}
+
+#[test]
+fn jpeg_decodes_to_rgba8() {
+    let dir = TempDir::new("tex");
+    let img: ImageBuffer<Rgb<u8>, _> = ImageBuffer::from_fn(8, 8, |_, _| Rgb([200, 100, 50]));
+    let path = dir.path().join("flat.jpg");
+    img.save(&path).unwrap();
+    let tex = load_image(&path).unwrap();
+    assert_eq!(
+        (tex.width, tex.height, tex.format),
+        (8, 8, TextureFormat::Rgba8Srgb)
+    );
+    for w in &tex.words {
+        let [r, g, b, a] = w.to_le_bytes();
+        assert!(
+            r.abs_diff(200) <= 3 && g.abs_diff(100) <= 3 && b.abs_diff(50) <= 3,
+            "{w:#x}"
+        );
+        assert_eq!(a, 255);
+    }
+}
+
+#[test]
+fn exr_and_hdr_become_rgba16f() {
+    let dir = TempDir::new("tex");
+    let values = vec![0.5f32, 1.0, 2.0, 1.0, /**/ 1000.0, 0.25, 0.0, 0.5];
+    let img: ImageBuffer<Rgba<f32>, _> = ImageBuffer::from_raw(2, 1, values.clone()).unwrap();
+    let path = dir.path().join("hdr.exr");
+    img.save(&path).unwrap();
+    let tex = load_image(&path).unwrap();
+    assert_eq!(
+        (tex.width, tex.height, tex.format),
+        (2, 1, TextureFormat::Rgba16F)
+    );
+    assert_eq!(tex.words.len(), 4);
+    // These values are exact in f16, so the words are known bit patterns.
+    assert_eq!(tex.words[0], pack_f16x2(0.5, 1.0));
+    assert_eq!(tex.words[0], 0x3c00_3800);
+    assert_eq!(tex.words[1], 0x3c00_4000);
+    assert_eq!(tex.texel(1, 0), Some([1000.0, 0.25, 0.0, 0.5]));
+
+    let rgb: ImageBuffer<Rgb<f32>, _> =
+        ImageBuffer::from_raw(1, 1, vec![4.0f32, 0.5, 0.125]).unwrap();
+    let path = dir.path().join("sky.hdr");
+    rgb.save(&path).unwrap();
+    let tex = load_image(&path).unwrap();
+    assert_eq!(tex.format, TextureFormat::Rgba16F);
+    // Radiance HDR stores a shared exponent; these values are representable exactly.
+    assert_eq!(tex.texel(0, 0), Some([4.0, 0.5, 0.125, 1.0]));
+}
+
+#[test]
+fn f16_packing_clamps_and_drops_nan() {
+    assert_eq!(unpack_f16x2(pack_f16x2(1e9, -1e9)), [65504.0, -65504.0]);
+    assert_eq!(
+        unpack_f16x2(pack_f16x2(f32::NAN, f32::INFINITY)),
+        [0.0, 65504.0]
+    );
+    assert_eq!(unpack_f16x2(pack_f16x2(-2.5, 0.0)), [-2.5, 0.0]);
+    // The first value is in the low half (WGSL unpack2x16float order).
+    assert_eq!(pack_f16x2(1.0, 0.0), 0x0000_3c00);
+}
+
+#[test]
+fn solid_texture_is_one_linear_texel() {
+    let tex = solid_texture([0.25, 0.5, 2.0, 1.0]);
+    assert_eq!(
+        tex,
+        TextureData {
+            width: 1,
+            height: 1,
+            format: TextureFormat::Rgba16F,
+            words: vec![pack_f16x2(0.25, 0.5), pack_f16x2(2.0, 1.0)],
+        }
+    );
+    assert_eq!(tex.texel(0, 0), Some([0.25, 0.5, 2.0, 1.0]));
+    assert_eq!(tex.texel_count(), 1);
+}
+
+#[test]
+fn too_large_image_is_rejected_before_decoding() {
+    let dir = TempDir::new("tex");
+    let wide: ImageBuffer<Luma<u8>, _> = ImageBuffer::new(MAX_TEXTURE_SIZE + 1, 1);
+    let path = dir.path().join("wide.png");
+    wide.save(&path).unwrap();
+    match load_image(&path) {
+        Err(AssetError::ImageTooLarge {
+            width, height, max, ..
+        }) => {
+            assert_eq!(
+                (width, height, max),
+                (MAX_TEXTURE_SIZE + 1, 1, MAX_TEXTURE_SIZE)
+            );
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn bad_images_are_errors() {
+    let label = Path::new("bad.png");
+    // Not an image at all.
+    assert!(matches!(
+        decode_image(b"hello, world", label),
+        Err(AssetError::UnsupportedFormat { .. })
+    ));
+    // A format we do not read (BMP magic).
+    let bmp = decode_image(b"BM\x3a\0\0\0\0\0\0\0\x36\0\0\0\x28\0\0\0", label);
+    assert!(
+        matches!(&bmp, Err(AssetError::UnsupportedFormat { found, .. }) if found.contains("Bmp")),
+        "{bmp:?}"
+    );
+    // A truncated PNG.
+    let dir = TempDir::new("tex");
+    let img: ImageBuffer<Rgb<u8>, _> =
+        ImageBuffer::from_fn(16, 16, |x, y| Rgb([x as u8, y as u8, 7]));
+    let path = dir.path().join("ok.png");
+    img.save(&path).unwrap();
+    let bytes = std::fs::read(&path).unwrap();
+    for cut in [8, 20, 40, bytes.len() - 20] {
+        let err = decode_image(&bytes[..cut], label).unwrap_err();
+        assert!(
+            matches!(err, AssetError::ImageDecode { .. }),
+            "cut {cut}: {err:?}"
+        );
+        assert!(err.to_string().starts_with("bad.png: "), "{err}");
+    }
+    // Missing file.
+    assert!(matches!(
+        load_image("/nonexistent/rtc/t.png"),
+        Err(AssetError::Read { .. })
+    ));
+}

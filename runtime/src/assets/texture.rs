@@ -1,0 +1,240 @@
+//! Textures on the CPU: images decoded into the exact `u32` words of the GPU's texel buffer.
+//!
+//! # Layout (the kernel decodes it the same way)
+//!
+//! A [`TextureData`] of `width × height` texels holds `width * height * words_per_texel` words,
+//! row-major, **top row first** (texel `(x, y)` starts at word `(y * width + x) *
+//! words_per_texel`), so uv `(0, 0)` is the top-left corner as in the
+//! [module conventions](super).
+//!
+//! - [`TextureFormat::Rgba8Srgb`], one word per texel: bits 0–7 red, 8–15 green, 16–23 blue,
+//!   24–31 alpha, i.e. the RGBA bytes in little-endian order (`u32::from_le_bytes([r, g, b, a])`).
+//!   WGSL's `unpack4x8unorm(word)` gives `(r, g, b, a) / 255`. Red, green and blue are
+//!   sRGB-encoded and must be decoded to linear ([`srgb_to_linear`]); alpha is linear.
+//! - [`TextureFormat::Rgba16F`], two words per texel: word 0 = `f16(r) | f16(g) << 16`, word 1 =
+//!   `f16(b) | f16(a) << 16` (IEEE binary16 bit patterns), so `unpack2x16float(word0)` is
+//!   `(r, g)` and `unpack2x16float(word1)` is `(b, a)`. Values are linear. On packing, NaN
+//!   becomes 0 and values beyond ±65504 (the largest f16) are clamped to it, so no texel is ever
+//!   NaN or infinite.
+//!
+//! # Which format an image gets
+//!
+//! PNG and JPEG (8 or 16 bits per channel, grey or colour, with or without alpha) become
+//! `Rgba8Srgb` (16-bit channels are rounded to 8 bits; grey is replicated; missing alpha is 1).
+//! HDR and EXR (floating point) become `Rgba16F`. [`solid_texture`] is `Rgba16F` so a colour is
+//! stored linearly, without an sRGB round trip, and may exceed 1.
+//!
+//! Invariants: `words.len() == width * height * format.words_per_texel()`; `1 <= width, height
+//! <= MAX_TEXTURE_SIZE`, and a decoder allocates at most [`MAX_DECODE_BYTES`]. Decoding never panics on bad bytes; it returns [`AssetError`].
+
+use std::io::Cursor;
+use std::path::Path;
+
+use half::f16;
+use image::{DynamicImage, ImageFormat, ImageReader};
+
+use super::AssetError;
+
+/// The largest width or height of a texture, in texels.
+pub const MAX_TEXTURE_SIZE: u32 = 16384;
+
+/// The most memory a decoder may allocate for one image: twice a 16384² RGBA8 image, so any
+/// 8-bit image within [`MAX_TEXTURE_SIZE`] decodes, and a float image up to about 11585² (a
+/// crafted header cannot make the decoder allocate more).
+pub const MAX_DECODE_BYTES: u64 = 2 << 30;
+
+/// How a texel is packed into words (see the [module docs](self)).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TextureFormat {
+    /// One word per texel: sRGB-encoded red, green, blue and linear alpha, 8 bits each.
+    Rgba8Srgb,
+    /// Two words per texel: linear red, green, blue, alpha as IEEE half floats.
+    Rgba16F,
+}
+
+impl TextureFormat {
+    /// `u32` words per texel.
+    pub const fn words_per_texel(self) -> usize {
+        match self {
+            Self::Rgba8Srgb => 1,
+            Self::Rgba16F => 2,
+        }
+    }
+}
+
+/// A decoded texture, in the GPU's texel-buffer layout (see the [module docs](self)).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TextureData {
+    /// Width in texels.
+    pub width: u32,
+    /// Height in texels.
+    pub height: u32,
+    /// The packing of each texel.
+    pub format: TextureFormat,
+    /// The packed texels, row-major, top row first.
+    pub words: Vec<u32>,
+}
+
+impl TextureData {
+    /// Number of texels.
+    pub fn texel_count(&self) -> usize {
+        self.width as usize * self.height as usize
+    }
+
+    /// The texel at column `x`, row `y` (row 0 at the top), decoded to linear RGBA exactly as the
+    /// kernel decodes it; `None` outside the texture.
+    pub fn texel(&self, x: u32, y: u32) -> Option<[f32; 4]> {
+        if x >= self.width || y >= self.height {
+            return None;
+        }
+        let wpt = self.format.words_per_texel();
+        let start = (y as usize)
+            .checked_mul(self.width as usize)?
+            .checked_add(x as usize)?
+            .checked_mul(wpt)?;
+        let words = self.words.get(start..start.checked_add(wpt)?)?;
+        Some(match (self.format, words) {
+            (TextureFormat::Rgba8Srgb, &[w]) => {
+                let [r, g, b, a] = w.to_le_bytes().map(|c| f32::from(c) / 255.0);
+                [srgb_to_linear(r), srgb_to_linear(g), srgb_to_linear(b), a]
+            }
+            (TextureFormat::Rgba16F, &[rg, ba]) => {
+                let [r, g] = unpack_f16x2(rg);
+                let [b, a] = unpack_f16x2(ba);
+                [r, g, b, a]
+            }
+            _ => return None,
+        })
+    }
+}
+
+/// The sRGB transfer function, decoding (IEC 61966-2-1): encoded `[0, 1]` → linear `[0, 1]`.
+pub fn srgb_to_linear(c: f32) -> f32 {
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+/// Packs two floats as IEEE half floats, the first in the low 16 bits (WGSL `pack2x16float`),
+/// with NaN → 0 and clamping to ±65504.
+pub fn pack_f16x2(lo: f32, hi: f32) -> u32 {
+    let bits = |x: f32| {
+        let x = if x.is_nan() {
+            0.0
+        } else {
+            x.clamp(-f16::MAX.to_f32(), f16::MAX.to_f32())
+        };
+        u32::from(f16::from_f32(x).to_bits())
+    };
+    bits(lo) | (bits(hi) << 16)
+}
+
+/// Unpacks [`pack_f16x2`] (WGSL `unpack2x16float`).
+pub fn unpack_f16x2(word: u32) -> [f32; 2] {
+    let [a, b, c, d] = word.to_le_bytes();
+    [
+        f16::from_le_bytes([a, b]).to_f32(),
+        f16::from_le_bytes([c, d]).to_f32(),
+    ]
+}
+
+/// A 1×1 texture of one linear colour (`Rgba16F`, see the [module docs](self)).
+pub fn solid_texture(color: [f32; 4]) -> TextureData {
+    let [r, g, b, a] = color;
+    TextureData {
+        width: 1,
+        height: 1,
+        format: TextureFormat::Rgba16F,
+        words: vec![pack_f16x2(r, g), pack_f16x2(b, a)],
+    }
+}
+
+/// Reads a PNG, JPEG, HDR or EXR file (recognised by its content, not its name).
+pub fn load_image(path: impl AsRef<Path>) -> Result<TextureData, AssetError> {
+    let path = path.as_ref();
+    let bytes = std::fs::read(path).map_err(|source| AssetError::Read {
+        path: path.to_owned(),
+        source,
+    })?;
+    decode_image(&bytes, path)
+}
+
+/// [`load_image`] on bytes; `label` names the image in errors (a file, or `model.glb#images[2]`).
+pub(crate) fn decode_image(bytes: &[u8], label: &Path) -> Result<TextureData, AssetError> {
+    let decode_error = |source| AssetError::ImageDecode {
+        path: label.to_owned(),
+        source,
+    };
+    let format = image::guess_format(bytes).map_err(|_| AssetError::UnsupportedFormat {
+        path: label.to_owned(),
+        found: "not a PNG, JPEG, HDR or EXR image".to_owned(),
+    })?;
+    if !matches!(
+        format,
+        ImageFormat::Png | ImageFormat::Jpeg | ImageFormat::Hdr | ImageFormat::OpenExr
+    ) {
+        return Err(AssetError::UnsupportedFormat {
+            path: label.to_owned(),
+            found: format!("{format:?} image (expected PNG, JPEG, HDR or EXR)"),
+        });
+    }
+    let (width, height) = ImageReader::with_format(Cursor::new(bytes), format)
+        .into_dimensions()
+        .map_err(decode_error)?;
+    if width > MAX_TEXTURE_SIZE || height > MAX_TEXTURE_SIZE || width == 0 || height == 0 {
+        return Err(AssetError::ImageTooLarge {
+            path: label.to_owned(),
+            width,
+            height,
+            max: MAX_TEXTURE_SIZE,
+        });
+    }
+    let mut reader = ImageReader::with_format(Cursor::new(bytes), format);
+    let mut limits = image::Limits::default();
+    limits.max_image_width = Some(MAX_TEXTURE_SIZE);
+    limits.max_image_height = Some(MAX_TEXTURE_SIZE);
+    limits.max_alloc = Some(MAX_DECODE_BYTES);
+    reader.limits(limits);
+    let image = reader.decode().map_err(decode_error)?;
+    Ok(from_dynamic(image))
+}
+
+fn from_dynamic(image: DynamicImage) -> TextureData {
+    let (width, height) = (image.width(), image.height());
+    let float = matches!(
+        image,
+        DynamicImage::ImageRgb32F(_) | DynamicImage::ImageRgba32F(_)
+    );
+    if float {
+        let rgba = image.into_rgba32f();
+        let words = rgba
+            .pixels()
+            .flat_map(|p| {
+                let [r, g, b, a] = p.0;
+                [pack_f16x2(r, g), pack_f16x2(b, a)]
+            })
+            .collect();
+        TextureData {
+            width,
+            height,
+            format: TextureFormat::Rgba16F,
+            words,
+        }
+    } else {
+        let rgba = image.into_rgba8();
+        let words = rgba
+            .as_raw()
+            .chunks_exact(4)
+            .filter_map(|c| <[u8; 4]>::try_from(c).ok())
+            .map(u32::from_le_bytes)
+            .collect();
+        TextureData {
+            width,
+            height,
+            format: TextureFormat::Rgba8Srgb,
+            words,
+        }
+    }
+}
