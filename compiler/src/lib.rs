@@ -27,6 +27,7 @@ pub mod abi;
 pub mod back;
 pub mod diag;
 pub mod driver;
+pub mod kernel;
 pub mod layout;
 pub mod link;
 pub mod lower;
