@@ -1,0 +1,542 @@
+//! The errors and warnings of module loading and semantic analysis, and their conversion to
+//! [`Diagnostic`]s, in one place (STYLE rule 4).
+//!
+//! Variants carry spans and typed data (types as [`TypeId`]s, built-ins as [`Builtin`]s, program kinds,
+//! names); all wording, labels, notes and help lines are decided here, in [`SemaError::to_diagnostic`],
+//! which renders types through the program's type table and reads source snippets for help lines such
+//! as "convert with `f32(b)`".
+//!
+//! Layout: this file holds the error types and the shared rendering helpers; [`expressions`] renders
+//! the errors of modules, names, types and expressions (E01xx–E04xx), [`programs`] those of statements,
+//! programs, scenes and the call graph, and the warnings.
+//!
+//! Invariant: every variant maps to exactly one code of `diag::codes`; an error variant is never
+//! created for an operand of the error type (the checker suppresses cascades before it gets here).
+
+mod expressions;
+mod programs;
+
+use super::builtins::Builtin;
+use super::consteval::NotConst;
+use super::hir::{LocalKind, Program, ProgramKind, Role};
+use super::types::{ScalarKind, Type, TypeId};
+use crate::diag::{codes, Diagnostic};
+use crate::source::{FileId, SourceMap, Span};
+
+/// What kind of thing a name denotes (for E0306 and E0414).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum NameKind {
+    /// A struct.
+    Struct,
+    /// A built-in type.
+    Type,
+    /// A function.
+    Function,
+    /// A built-in function.
+    Builtin,
+    /// A constant.
+    Const,
+    /// A local.
+    Local,
+    /// A scene.
+    Scene,
+}
+
+impl NameKind {
+    pub(super) fn describe(self) -> &'static str {
+        match self {
+            NameKind::Struct => "struct",
+            NameKind::Type => "type",
+            NameKind::Function => "function",
+            NameKind::Builtin => "built-in function",
+            NameKind::Const => "constant",
+            NameKind::Local => "variable",
+            NameKind::Scene => "scene",
+        }
+    }
+}
+
+/// Why a constructor call is wrong (E0409).
+#[derive(Clone, Debug, PartialEq)]
+pub enum CtorError {
+    /// Components do not add up.
+    Count {
+        /// How many the type needs.
+        expected: u32,
+        /// How many were given.
+        found: u32,
+    },
+    /// A component of the wrong scalar type.
+    Component {
+        /// The element type.
+        expected: TypeId,
+        /// The component's type.
+        found: TypeId,
+    },
+    /// `S(…)` for a struct `S`.
+    Struct,
+    /// A conversion between types that do not convert.
+    Convert {
+        /// The source type.
+        from: TypeId,
+    },
+    /// `bitcast` between types of different sizes, or to/from a non-32-bit type.
+    Bitcast {
+        /// The source type.
+        from: TypeId,
+    },
+    /// `array(…)` with no elements.
+    EmptyArray,
+    /// `T(…)` for a type that cannot be constructed (handles, strings).
+    NotConstructible,
+}
+
+/// Why an attribute argument is wrong (E0606).
+#[derive(Clone, Debug, PartialEq)]
+pub enum AttrArgError {
+    /// The attribute takes no arguments.
+    NoArgs,
+    /// An argument name that the attribute does not know.
+    Unknown(String),
+    /// `samples = N` with `N` not a positive `u32` constant.
+    Samples,
+}
+
+/// Why a loop cannot bound spawned rays (E0802).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unbounded {
+    /// Inside `while`.
+    While,
+    /// Inside `loop`.
+    Loop,
+    /// Inside a `for` whose bounds are not constant.
+    For,
+}
+
+/// What a scene expected where it found a value of the wrong role (E0702).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Expected {
+    /// An instance of a struct with this role.
+    Role(Role),
+    /// A mesh or a `@geometry` instance.
+    Geometry,
+}
+
+/// An error or warning of loading or semantic analysis.
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub enum SemaError {
+    // ---- modules ----
+    InvalidUtf8 {
+        file: FileId,
+        offset: u32,
+    },
+    ImportNotFound {
+        span: Span,
+        path: String,
+        close: Vec<String>,
+    },
+    Unreadable {
+        span: Span,
+        path: String,
+        reason: String,
+    },
+    ImportCycle {
+        span: Span,
+        chain: Vec<String>,
+    },
+    // ---- names ----
+    UnknownAttribute {
+        span: Span,
+        name: String,
+    },
+    Undefined {
+        span: Span,
+        name: String,
+        suggestion: Option<String>,
+        elsewhere: Option<String>,
+    },
+    DefinedLater {
+        span: Span,
+        name: String,
+        def: Span,
+    },
+    Duplicate {
+        span: Span,
+        first: Span,
+        name: String,
+    },
+    Ambiguous {
+        span: Span,
+        name: String,
+        modules: [String; 2],
+        defs: [Span; 2],
+    },
+    NotAValue {
+        span: Span,
+        name: String,
+        kind: NameKind,
+    },
+    NotAType {
+        span: Span,
+        name: String,
+        kind: NameKind,
+    },
+    NotAStruct {
+        span: Span,
+        name: String,
+        kind: NameKind,
+    },
+    BadGenerics {
+        span: Span,
+        name: String,
+        expected: &'static str,
+    },
+    UnknownField {
+        span: Span,
+        ty: TypeId,
+        field: String,
+        suggestion: Option<String>,
+        decl: Option<Span>,
+    },
+    // ---- types and expressions ----
+    Mismatch {
+        span: Span,
+        expected: TypeId,
+        found: TypeId,
+    },
+    BadOperands {
+        span: Span,
+        op: &'static str,
+        lhs: TypeId,
+        rhs: TypeId,
+        lhs_span: Span,
+        rhs_span: Span,
+    },
+    BadUnary {
+        span: Span,
+        op: &'static str,
+        ty: TypeId,
+    },
+    Arity {
+        span: Span,
+        name: String,
+        expected: Vec<usize>,
+        found: usize,
+        decl: Option<Span>,
+    },
+    NoOverload {
+        span: Span,
+        func: Builtin,
+        args: Vec<TypeId>,
+    },
+    BadSwizzle {
+        span: Span,
+        ty: TypeId,
+        swizzle: String,
+    },
+    NotIndexable {
+        span: Span,
+        ty: TypeId,
+    },
+    IndexOutOfRange {
+        span: Span,
+        index: i64,
+        len: u32,
+        ty: TypeId,
+    },
+    MissingFields {
+        span: Span,
+        ty: TypeId,
+        missing: Vec<String>,
+        decl: Span,
+    },
+    DuplicateField {
+        span: Span,
+        first: Span,
+        name: String,
+    },
+    BadConstructor {
+        span: Span,
+        ty: TypeId,
+        reason: CtorError,
+    },
+    BadArraySize {
+        span: Span,
+        found: TypeId,
+        value: Option<i64>,
+    },
+    LiteralRange {
+        span: Span,
+        ty: TypeId,
+    },
+    NotConst {
+        span: Span,
+        what: NotConst,
+        context: &'static str,
+    },
+    SceneOnly {
+        span: Span,
+        func: Builtin,
+    },
+    TypeNotAllowed {
+        span: Span,
+        ty: TypeId,
+        context: &'static str,
+    },
+    NotCallable {
+        span: Span,
+        name: String,
+        kind: NameKind,
+    },
+    // ---- statements ----
+    AssignImmutable {
+        span: Span,
+        name: String,
+        kind: Option<LocalKind>,
+        decl: Span,
+    },
+    BadAssignTarget {
+        span: Span,
+        multi_swizzle: bool,
+    },
+    OutsideLoop {
+        span: Span,
+        keyword: &'static str,
+    },
+    MissingReturn {
+        span: Span,
+        ret: TypeId,
+        end: Span,
+    },
+    ReturnMismatch {
+        span: Span,
+        expected: Option<TypeId>,
+    },
+    ConditionNotBool {
+        span: Span,
+        found: TypeId,
+    },
+    BadRange {
+        span: Span,
+        start: TypeId,
+        end: TypeId,
+    },
+    // ---- programs ----
+    Signature {
+        span: Span,
+        kind: ProgramKind,
+        struct_name: String,
+        found: String,
+    },
+    MisplacedAttribute {
+        span: Span,
+        attr: String,
+        item: &'static str,
+        hint: Option<&'static str>,
+    },
+    NotRoleStruct {
+        span: Span,
+        kind: ProgramKind,
+        found: TypeId,
+        found_role: Option<Role>,
+    },
+    IntrinsicNotAllowed {
+        span: Span,
+        func: Builtin,
+        kind: ProgramKind,
+        chain: Vec<String>,
+        program: Span,
+    },
+    NotStorable {
+        span: Span,
+        ty: TypeId,
+        role: Role,
+    },
+    BadAttributeArg {
+        span: Span,
+        attr: String,
+        reason: AttrArgError,
+    },
+    DuplicateProgram {
+        span: Span,
+        first: Span,
+        kind: ProgramKind,
+        ty: TypeId,
+    },
+    TwoRoles {
+        span: Span,
+        first: Span,
+    },
+    // ---- scenes ----
+    UnknownEntry {
+        span: Span,
+        name: String,
+        place: &'static str,
+        known: &'static [&'static str],
+    },
+    WrongRole {
+        span: Span,
+        expected: Expected,
+        found: TypeId,
+        found_role: Option<Role>,
+    },
+    MissingEntry {
+        span: Span,
+        what: &'static str,
+        place: String,
+    },
+    SettingRange {
+        span: Span,
+        key: &'static str,
+        value: u32,
+        lo: u32,
+        hi: u32,
+    },
+    DuplicateEntry {
+        span: Span,
+        first: Span,
+        what: String,
+    },
+    // ---- call graph ----
+    Recursion {
+        span: Span,
+        cycle: Vec<String>,
+        what: &'static str,
+    },
+    UnboundedSpawn {
+        span: Span,
+        why: Unbounded,
+        loop_span: Span,
+        program: String,
+    },
+    // ---- warnings ----
+    UnusedVariable {
+        span: Span,
+        name: String,
+    },
+    UnusedValue {
+        span: Span,
+    },
+    Unreachable {
+        span: Span,
+        cause: Span,
+    },
+}
+
+pub(super) fn list(items: &[String]) -> String {
+    let q: Vec<String> = items.iter().map(|s| format!("`{s}`")).collect();
+    match q.len() {
+        0 => String::new(),
+        1 => q[0].clone(),
+        n => format!("{} and {}", q[..n - 1].join(", "), q[n - 1]),
+    }
+}
+
+/// The expected signature of a program kind, with `S` the struct's name.
+pub fn expected_signature(kind: ProgramKind, s: &str) -> String {
+    let first = kind.role().name();
+    match kind {
+        ProgramKind::RayGeneration => format!("fn({first}: {s}, pixel: vec2u, sample: u32) -> Ray"),
+        ProgramKind::Intersection => format!("fn({first}: {s}, ray: Ray) -> Intersection"),
+        ProgramKind::Bounds => format!("fn({first}: {s}) -> Aabb"),
+        ProgramKind::AnyHit => format!("fn({first}: {s}, ray: Ray, hit: Hit) -> bool"),
+        ProgramKind::ClosestHit => format!(
+            "fn({first}: {s}, ray: Ray, hit: Hit) -> vec3f` or `fn({first}: {s}, ray: Ray, hit: Hit, secondary: vec3f) -> vec3f"
+        ),
+        ProgramKind::SecondaryRays => format!("fn({first}: {s}, ray: Ray, hit: Hit)"),
+        ProgramKind::Medium => {
+            format!("fn({first}: {s}, ray: Ray, t: f32, radiance: vec3f) -> vec3f")
+        }
+        ProgramKind::Light => {
+            format!("fn({first}: {s}, position: vec3f, normal: vec3f) -> LightSample")
+        }
+        ProgramKind::Miss => format!("fn({first}: {s}, ray: Ray) -> vec3f"),
+    }
+}
+
+pub(super) fn err(code: codes::Code, message: impl Into<String>, span: Span) -> Diagnostic {
+    Diagnostic::error(code, message, span)
+}
+
+pub(super) struct R<'a> {
+    pub(super) p: &'a Program,
+    pub(super) src: &'a SourceMap,
+}
+
+impl R<'_> {
+    pub(super) fn ty(&self, t: TypeId) -> String {
+        format!("`{}`", self.p.type_name(t))
+    }
+
+    pub(super) fn snippet(&self, span: Span) -> &str {
+        if (span.file.0 as usize) < self.src.len() {
+            self.src.snippet(span)
+        } else {
+            ""
+        }
+    }
+
+    /// "convert with `f32(x)`" when a value of `from` can be converted to `to`.
+    pub(super) fn conversion(&self, from: TypeId, to: TypeId, span: Span) -> Option<String> {
+        let t = &self.p.types;
+        let text = self.snippet(span);
+        if text.is_empty() {
+            return None;
+        }
+        let text = if text.contains(' ') {
+            format!("({text})")
+        } else {
+            text.to_string()
+        };
+        match (t.get(from), t.get(to)) {
+            (Type::Scalar(a), Type::Scalar(b)) if a != b => {
+                Some(format!("convert with `{}({text})`", b.name()))
+            }
+            (
+                Type::Vector {
+                    size: s1,
+                    scalar: a,
+                },
+                Type::Vector {
+                    size: s2,
+                    scalar: b,
+                },
+            ) if s1 == s2 && a != b => {
+                Some(format!("convert with `{}({text})`", self.p.type_name(to)))
+            }
+            (Type::Scalar(a), Type::Vector { scalar: b, .. }) if a == b => Some(format!(
+                "make a vector with `{}({text})`",
+                self.p.type_name(to)
+            )),
+            (Type::String, Type::Scalar(k)) => Some(format!(
+                "write a number such as `{}`",
+                match k {
+                    ScalarKind::F32 => "1.5",
+                    ScalarKind::U32 => "1u",
+                    ScalarKind::I32 => "1",
+                    ScalarKind::Bool => "true",
+                }
+            )),
+            _ => None,
+        }
+    }
+}
+
+impl SemaError {
+    /// Whether this is a warning.
+    pub fn is_warning(&self) -> bool {
+        matches!(
+            self,
+            SemaError::UnusedVariable { .. }
+                | SemaError::UnusedValue { .. }
+                | SemaError::Unreachable { .. }
+        )
+    }
+
+    /// The diagnostic shown to the user.
+    pub fn to_diagnostic(&self, p: &Program, src: &SourceMap) -> Diagnostic {
+        let r = R { p, src };
+        self.render(&r)
+    }
+}

@@ -1,0 +1,136 @@
+//! The checked scene description: what a `scene` item evaluates to (spec/scenes.md).
+//!
+//! Invariants (in a program without errors): every [`Instance`] is of a struct whose role fits its
+//! place (camera, background, light, material, custom geometry), with every field evaluated in
+//! declaration order; transforms are column-major object-to-world matrices; asset paths are resolved
+//! relative to the scene's file.
+
+use super::{ConstValue, MeshAsset, ModuleId, StructId};
+use crate::source::Span;
+use std::path::PathBuf;
+
+/// A role struct's instance in a scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Instance {
+    /// The struct.
+    pub struct_id: StructId,
+    /// Every field's value, in declaration order (defaults filled in).
+    pub fields: Vec<ConstValue>,
+    /// Where the instance was written.
+    pub span: Span,
+}
+
+/// A scene's settings, with defaults filled in.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    /// Image width, pixels.
+    pub width: u32,
+    /// Image height, pixels.
+    pub height: u32,
+    /// Samples per pixel, in total.
+    pub samples: u32,
+    /// Generations of secondary rays below a camera ray.
+    pub max_depth: u32,
+    /// Rays one `@secondary_rays` call may spawn.
+    pub max_rays_per_hit: u32,
+    /// Seed of the random numbers.
+    pub seed: u32,
+}
+
+impl Default for Settings {
+    fn default() -> Settings {
+        Settings {
+            width: 512,
+            height: 512,
+            samples: 1,
+            max_depth: 4,
+            max_rays_per_hit: 4,
+            seed: 0,
+        }
+    }
+}
+
+/// An object's geometry.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Geometry {
+    /// A triangle mesh (built-in geometry).
+    Mesh(MeshAsset),
+    /// An instance of a `@geometry` struct.
+    Custom(Instance),
+}
+
+/// An object of a scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Object {
+    /// Its name, if given.
+    pub name: Option<String>,
+    /// Its geometry.
+    pub geometry: Geometry,
+    /// Its material.
+    pub material: Instance,
+    /// Object to world, column-major (`transform[c][r]`).
+    pub transform: [[f32; 4]; 4],
+    /// The entry.
+    pub span: Span,
+}
+
+/// A glTF file imported by a scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Model {
+    /// The path, resolved relative to the scene's file.
+    pub path: PathBuf,
+    /// Applied to the whole file, column-major.
+    pub transform: [[f32; 4]; 4],
+    /// The string in the scene.
+    pub span: Span,
+}
+
+/// A checked, evaluated scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneDesc {
+    /// Its name.
+    pub name: String,
+    /// The module declaring it.
+    pub module: ModuleId,
+    /// The span of its name.
+    pub span: Span,
+    /// Settings.
+    pub settings: Settings,
+    /// The camera; `None` only when a `model` is expected to bring one.
+    pub camera: Option<Instance>,
+    /// The background, if any.
+    pub background: Option<Instance>,
+    /// Objects in order.
+    pub objects: Vec<Object>,
+    /// Lights in order.
+    pub lights: Vec<Instance>,
+    /// glTF models in order.
+    pub models: Vec<Model>,
+}
+
+/// The identity transform.
+pub const IDENTITY: [[f32; 4]; 4] = [
+    [1.0, 0.0, 0.0, 0.0],
+    [0.0, 1.0, 0.0, 0.0],
+    [0.0, 0.0, 1.0, 0.0],
+    [0.0, 0.0, 0.0, 1.0],
+];
+
+/// Why [`Program::select_scene`] found no single scene.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SceneChoiceError {
+    /// No scene in the checked files.
+    NoScene,
+    /// Several scenes and no name (E0706).
+    Ambiguous {
+        /// Every scene's name and span.
+        scenes: Vec<(String, Span)>,
+    },
+    /// No scene with that name (E0706).
+    NotFound {
+        /// The name asked for.
+        name: String,
+        /// Every scene's name.
+        available: Vec<String>,
+    },
+}

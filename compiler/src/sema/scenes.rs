@@ -1,0 +1,391 @@
+//! Scenes (spec/scenes.md): entries checked against the declared structs and evaluated to constants.
+//!
+//! Every value in a scene is a constant expression checked by the same [`Checker`] as code (so
+//! `Glass { ior: "x" }` is E0401 at `"x"`), in [`Mode::Scene`], where the asset constructors are
+//! allowed and asset paths resolve relative to the scene's file. A scene `let` binds an evaluated
+//! value visible to the entries after it.
+//!
+//! Invariants of a [`SceneDesc`] without errors: the camera, background, lights and materials are
+//! instances of structs of the right role with every field evaluated; settings are in range; object
+//! names are unique; the camera is present unless a `model` is expected to bring one.
+
+use super::error::{Expected, SemaError};
+use super::expr::{Binding, Checker, Mode};
+use super::hir::{
+    ConstValue, Geometry, Instance, Model, Object, Program, Role, SceneChoiceError, SceneDesc,
+    SceneId, Settings, IDENTITY,
+};
+use super::types::{Type, TypeTable};
+use super::Ctx;
+use crate::source::Span;
+use crate::syntax::ast;
+use la_arena::{Idx, RawIdx};
+
+const SETTINGS: &[&str] = &[
+    "width",
+    "height",
+    "samples",
+    "max_depth",
+    "max_rays_per_hit",
+    "seed",
+];
+const OBJECT_FIELDS: &[&str] = &["geometry", "material", "transform"];
+const MODEL_FIELDS: &[&str] = &["transform"];
+
+/// Phase 8: every scene.
+pub(crate) fn check_scenes(cx: &mut Ctx) {
+    let scenes = cx.scenes_ast.clone();
+    for (i, (module, decl)) in scenes.into_iter().enumerate() {
+        let id: SceneId = Idx::from_raw(RawIdx::from_u32(i as u32));
+        let desc = check_scene(cx, module, decl, cx.p.scenes[id].clone());
+        cx.p.scenes[id] = desc;
+    }
+}
+
+/// Remembers the first occurrence of a once-only entry; reports E0705 for the next ones.
+fn once(ck: &mut Checker, slot: &mut Option<Span>, span: Span, what: &str) -> bool {
+    match slot {
+        Some(first) => {
+            ck.err(SemaError::DuplicateEntry {
+                span,
+                first: *first,
+                what: what.to_string(),
+            });
+            false
+        }
+        None => {
+            *slot = Some(span);
+            true
+        }
+    }
+}
+
+fn entry_head(span: Span, len: u32) -> Span {
+    Span::new(span.file, span.lo, span.lo.saturating_add(len).min(span.hi))
+}
+
+fn check_scene<'a>(
+    cx: &mut Ctx<'a>,
+    module: super::hir::ModuleId,
+    decl: &'a ast::SceneDecl,
+    mut desc: SceneDesc,
+) -> SceneDesc {
+    let src = cx.src;
+    let base_dir = src[module.index()].path.as_deref().and_then(|p| p.parent());
+    let mut ck = Checker::new(cx, module, Mode::Scene);
+    ck.base_dir = base_dir;
+    let (mut settings, mut camera, mut background) = (None, None, None);
+    let mut names: Vec<(&str, Span)> = Vec::new();
+    for entry in &decl.entries {
+        if let ast::SceneEntryKind::Let { name, .. } = &entry.kind {
+            ck.later.push((name.name.as_str(), name.span));
+        }
+    }
+    ck.later.reverse();
+    for entry in &decl.entries {
+        match &entry.kind {
+            ast::SceneEntryKind::Settings(fields) => {
+                if once(
+                    &mut ck,
+                    &mut settings,
+                    entry_head(entry.span, 8),
+                    "`settings`",
+                ) {
+                    desc.settings = check_settings(&mut ck, fields);
+                }
+            }
+            ast::SceneEntryKind::Camera(e) => {
+                if once(
+                    &mut ck,
+                    &mut camera,
+                    entry_head(entry.span, 6),
+                    "the camera",
+                ) {
+                    desc.camera = instance(&mut ck, *e, Role::Camera);
+                }
+            }
+            ast::SceneEntryKind::Background(e) => {
+                if once(
+                    &mut ck,
+                    &mut background,
+                    entry_head(entry.span, 10),
+                    "the background",
+                ) {
+                    desc.background = instance(&mut ck, *e, Role::Background);
+                }
+            }
+            ast::SceneEntryKind::Let { name, value } => {
+                ck.later.pop();
+                let id = ck.expr(*value, None);
+                let ty = ck.ty(id);
+                let v = ck.eval_const(id);
+                ck.scopes.push((name.name.as_str(), Binding::Value(ty, v)));
+            }
+            ast::SceneEntryKind::Object { name, fields } => {
+                if let Some(n) = name {
+                    match names.iter().find(|(x, _)| *x == n.name) {
+                        Some((_, first)) => ck.err(SemaError::DuplicateEntry {
+                            span: n.span,
+                            first: *first,
+                            what: format!("object `{}`", n.name),
+                        }),
+                        None => names.push((n.name.as_str(), n.span)),
+                    }
+                }
+                if let Some(o) = object(&mut ck, name.as_ref(), fields, entry.span) {
+                    desc.objects.push(o);
+                }
+            }
+            ast::SceneEntryKind::Light { value, .. } => {
+                if let Some(l) = instance(&mut ck, *value, Role::Light) {
+                    desc.lights.push(l);
+                }
+            }
+            ast::SceneEntryKind::Model {
+                path,
+                path_span,
+                fields,
+            } => {
+                let mut transform = IDENTITY;
+                for f in known_fields(&mut ck, fields, "model field", MODEL_FIELDS) {
+                    transform = check_transform(&mut ck, f.value).unwrap_or(IDENTITY);
+                }
+                let path = match base_dir {
+                    Some(d) => d.join(path),
+                    None => std::path::PathBuf::from(path),
+                };
+                desc.models.push(Model {
+                    path,
+                    transform,
+                    span: *path_span,
+                });
+            }
+            ast::SceneEntryKind::Error => {}
+        }
+    }
+    if camera.is_none() && desc.models.is_empty() {
+        ck.err(SemaError::MissingEntry {
+            span: decl.name.span,
+            what: "camera",
+            place: format!("scene `{}`", decl.name.name),
+        });
+    }
+    desc
+}
+
+/// The fields among `fields` whose names are in `known` (E0701 for others, E0408 for repeats).
+fn known_fields<'a>(
+    ck: &mut Checker,
+    fields: &'a [ast::FieldInit],
+    place: &'static str,
+    known: &'static [&'static str],
+) -> Vec<&'a ast::FieldInit> {
+    known_fields_counting(ck, fields, place, known).0
+}
+
+/// As [`known_fields`], also saying whether an unknown field was written.
+fn known_fields_counting<'a>(
+    ck: &mut Checker,
+    fields: &'a [ast::FieldInit],
+    place: &'static str,
+    known: &'static [&'static str],
+) -> (Vec<&'a ast::FieldInit>, bool) {
+    let mut out: Vec<&ast::FieldInit> = Vec::new();
+    let mut unknown = false;
+    for f in fields {
+        if !known.contains(&f.name.name.as_str()) {
+            ck.err(SemaError::UnknownEntry {
+                span: f.name.span,
+                name: f.name.name.clone(),
+                place,
+                known,
+            });
+            ck.expr(f.value, None);
+            unknown = true;
+            continue;
+        }
+        if let Some(first) = out.iter().find(|x| x.name.name == f.name.name) {
+            ck.err(SemaError::DuplicateField {
+                span: f.name.span,
+                first: first.name.span,
+                name: f.name.name.clone(),
+            });
+            continue;
+        }
+        out.push(f);
+    }
+    (out, unknown)
+}
+
+fn check_settings(ck: &mut Checker, fields: &[ast::FieldInit]) -> Settings {
+    let mut s = Settings::default();
+    for f in known_fields(ck, fields, "setting", SETTINGS) {
+        let id = ck.expect(f.value, TypeTable::U32);
+        let v = match ck.eval_const(id) {
+            ConstValue::Scalar(super::hir::Scalar::U32(v)) => v,
+            _ => continue,
+        };
+        let (key, lo, hi, slot): (&'static str, u32, u32, &mut u32) = match f.name.name.as_str() {
+            "width" => ("width", 1, 16384, &mut s.width),
+            "height" => ("height", 1, 16384, &mut s.height),
+            "samples" => ("samples", 1, 1 << 20, &mut s.samples),
+            "max_depth" => ("max_depth", 0, 64, &mut s.max_depth),
+            "max_rays_per_hit" => ("max_rays_per_hit", 1, 64, &mut s.max_rays_per_hit),
+            _ => ("seed", 0, u32::MAX, &mut s.seed),
+        };
+        if v < lo || v > hi {
+            let span = ck.span(id);
+            ck.err(SemaError::SettingRange {
+                span,
+                key,
+                value: v,
+                lo,
+                hi,
+            });
+        } else {
+            *slot = v;
+        }
+    }
+    s
+}
+
+/// An instance of a struct with `role` (E0702 for another role or a non-struct).
+fn instance(ck: &mut Checker, e: ast::ExprId, role: Role) -> Option<Instance> {
+    let id = ck.expr(e, None);
+    let ty = ck.ty(id);
+    if TypeTable::is_error(ty) {
+        return None;
+    }
+    let found_role = ck.cx.p.struct_of(ty).and_then(|s| ck.cx.p.structs[s].role);
+    if found_role != Some(role) {
+        let span = ck.span(id);
+        ck.err(SemaError::WrongRole {
+            span,
+            expected: Expected::Role(role),
+            found: ty,
+            found_role,
+        });
+        return None;
+    }
+    to_instance(ck.eval_const(id), ck.span(id))
+}
+
+fn to_instance(v: ConstValue, span: Span) -> Option<Instance> {
+    match v {
+        ConstValue::Struct { id, fields } => Some(Instance {
+            struct_id: id,
+            fields,
+            span,
+        }),
+        _ => None,
+    }
+}
+
+fn check_transform(ck: &mut Checker, e: ast::ExprId) -> Option<[[f32; 4]; 4]> {
+    let id = ck.expect(e, TypeTable::MAT4);
+    match ck.eval_const(id) {
+        ConstValue::Matrix { data, .. } => Some(data),
+        _ => None,
+    }
+}
+
+fn object(
+    ck: &mut Checker,
+    name: Option<&ast::Ident>,
+    fields: &[ast::FieldInit],
+    span: Span,
+) -> Option<Object> {
+    let (mut geometry, mut material, mut transform) = (None, None, Some(IDENTITY));
+    let (mut has_geometry, mut has_material) = (false, false);
+    let (known, typo) = known_fields_counting(ck, fields, "object field", OBJECT_FIELDS);
+    for f in known {
+        match f.name.name.as_str() {
+            "geometry" => {
+                has_geometry = true;
+                geometry = geometry_value(ck, f.value);
+            }
+            "material" => {
+                has_material = true;
+                material = instance(ck, f.value, Role::Material);
+            }
+            _ => transform = check_transform(ck, f.value),
+        }
+    }
+    let place = match name {
+        Some(n) => format!("object `{}`", n.name),
+        None => "this object".to_string(),
+    };
+    let at = name.map_or(entry_head(span, 6), |n| n.span);
+    for (has, what) in [(has_geometry, "geometry"), (has_material, "material")] {
+        // After a misspelt field, the missing one is most likely that typo: say it once.
+        if !has && !typo {
+            ck.err(SemaError::MissingEntry {
+                span: at,
+                what,
+                place: place.clone(),
+            });
+        }
+    }
+    Some(Object {
+        name: name.map(|n| n.name.clone()),
+        geometry: geometry?,
+        material: material?,
+        transform: transform?,
+        span,
+    })
+}
+
+fn geometry_value(ck: &mut Checker, e: ast::ExprId) -> Option<Geometry> {
+    let id = ck.expr(e, None);
+    let ty = ck.ty(id);
+    let span = ck.span(id);
+    match ck.cx.p.types.get(ty) {
+        Type::Error => None,
+        Type::Mesh => match ck.eval_const(id) {
+            ConstValue::Mesh(m) => Some(Geometry::Mesh(m)),
+            _ => None,
+        },
+        Type::Struct(s) if ck.cx.p.structs[s].role == Some(Role::Geometry) => {
+            to_instance(ck.eval_const(id), span).map(Geometry::Custom)
+        }
+        _ => {
+            let found_role = ck.cx.p.struct_of(ty).and_then(|s| ck.cx.p.structs[s].role);
+            ck.err(SemaError::WrongRole {
+                span,
+                expected: Expected::Geometry,
+                found: ty,
+                found_role,
+            });
+            None
+        }
+    }
+}
+
+/// The scene to render: the one called `name`, or the only one of the root modules.
+pub fn select_scene(p: &Program, name: Option<&str>) -> Result<SceneId, SceneChoiceError> {
+    let roots: Vec<(SceneId, &SceneDesc)> = p
+        .scenes
+        .iter()
+        .filter(|(_, s)| p.modules[s.module.index()].is_root)
+        .collect();
+    match name {
+        Some(n) => roots
+            .iter()
+            .find(|(_, s)| s.name == n)
+            .map(|(id, _)| *id)
+            .ok_or_else(|| SceneChoiceError::NotFound {
+                name: n.to_string(),
+                available: roots.iter().map(|(_, s)| s.name.clone()).collect(),
+            }),
+        None => match roots.as_slice() {
+            [] => Err(SceneChoiceError::NoScene),
+            [(id, _)] => Ok(*id),
+            _ => Err(SceneChoiceError::Ambiguous {
+                scenes: roots
+                    .iter()
+                    .map(|(_, s)| (s.name.clone(), s.span))
+                    .collect(),
+            }),
+        },
+    }
+}
