@@ -152,9 +152,9 @@ pub fn pack_into(
         }
         (Type::Matrix { cols, rows }, ConstValue::Matrix { data, .. }) => {
             let col_words = if rows == 2 { 2 } else { 4 };
-            for c in 0..cols as usize {
-                for r in 0..rows as usize {
-                    put(c * col_words + r, data[c][r].to_bits());
+            for (c, column) in data.iter().take(cols as usize).enumerate() {
+                for (r, v) in column.iter().take(rows as usize).enumerate() {
+                    put(c * col_words + r, v.to_bits());
                 }
             }
         }

@@ -11,7 +11,9 @@
 //!
 //! The result, [`CompiledScene`], is what `rtc compile` writes out and what the runtime runs.
 
+pub mod dispatch;
 pub mod generated;
+pub mod intrinsics;
 
 use crate::abi::BindingDesc;
 use crate::diag::Diagnostic;

@@ -1,0 +1,496 @@
+//! Generated code of the kernel: binding globals, struct loaders and the dispatch switches.
+//!
+//! - **Globals**: one naga global variable per ABI binding, created the first time something reads it,
+//!   so a kernel declares exactly the bindings it reaches.
+//! - **Loaders**: `load_<Struct>(offset: u32) -> Struct` rebuilds a role struct's instance from the
+//!   `params` words at the offsets of [`crate::layout`] (the same offsets the runtime packs with).
+//! - **Dispatchers** (the thesis's "switch collections", Appendix B): for each program kind, a function
+//!   `dispatch_<kind>(type_id, offset, args…)` that switches on the type id, loads the instance and calls
+//!   the program. A kind with one program is a direct call; a kind with none returns zero. Every switch
+//!   has a `default` (naga requires one), which returns zero.
+//!
+//! Invariants: generated functions are created once (memoised) and only when reached; their handles come
+//! after the handles of the functions they call, as naga requires.
+
+use crate::abi::{self, BindingDesc, Element, FieldType};
+use crate::back::ResourceKind;
+use crate::layout;
+use crate::link::Linked;
+use crate::lower::builder::{FnBuilder, TypeCache};
+use crate::sema::hir::{FnId, Program, ProgramKind, StructId};
+use crate::sema::types::{ScalarKind, Type as HirType, TypeId};
+use naga::{
+    AddressSpace, Expression, GlobalVariable, Handle, Literal, ResourceBinding, Scalar, Span,
+    Statement, StorageAccess, SwitchCase, SwitchValue, Type, TypeInner,
+};
+use std::collections::BTreeMap;
+
+/// What kernel assembly needs from the lowering of user code.
+pub trait LowerCx {
+    /// The module being built.
+    fn module(&mut self) -> &mut naga::Module;
+    /// The naga type of a language type.
+    fn lower_type(&mut self, ty: TypeId) -> Handle<Type>;
+    /// The naga function of a language function (lowered on first use, callees first).
+    fn lower_function(&mut self, f: FnId) -> Result<Handle<naga::Function>, String>;
+}
+
+/// Generated functions and globals of one kernel module.
+#[derive(Default)]
+pub struct Generated {
+    globals: BTreeMap<u32, Handle<GlobalVariable>>,
+    private: BTreeMap<&'static str, Handle<GlobalVariable>>,
+    loaders: BTreeMap<StructId, Handle<naga::Function>>,
+    dispatchers: BTreeMap<ProgramKind, Handle<naga::Function>>,
+    helpers: BTreeMap<&'static str, Handle<naga::Function>>,
+}
+
+fn naga_scalar(t: FieldType) -> (Option<naga::VectorSize>, Scalar) {
+    match t {
+        FieldType::U32 => (None, Scalar::U32),
+        FieldType::F32 => (None, Scalar::F32),
+        FieldType::Vec2U32 => (Some(naga::VectorSize::Bi), Scalar::U32),
+        FieldType::Vec3F32 => (Some(naga::VectorSize::Tri), Scalar::F32),
+        FieldType::Vec4F32 => (Some(naga::VectorSize::Quad), Scalar::F32),
+        FieldType::Vec4U32 => (Some(naga::VectorSize::Quad), Scalar::U32),
+    }
+}
+
+fn field_type(m: &mut naga::Module, t: FieldType) -> Handle<Type> {
+    match naga_scalar(t) {
+        (None, s) => TypeCache::scalar(m, s),
+        (Some(size), s) => TypeCache::vector(m, size, s),
+    }
+}
+
+/// The language struct that mirrors an ABI struct (declared in `rtc:abi`).
+pub fn abi_struct(program: &Program, name: &str) -> Option<StructId> {
+    program
+        .structs
+        .iter()
+        .find(|(_, s)| {
+            s.name == name && program.modules[s.module.index()].name == super::generated::ABI_MODULE
+        })
+        .map(|(id, _)| id)
+}
+
+impl Generated {
+    /// The global variable of an ABI binding, declared on first use.
+    pub fn binding(
+        &mut self,
+        cx: &mut dyn LowerCx,
+        program: &Program,
+        desc: &'static BindingDesc,
+    ) -> Result<Handle<GlobalVariable>, String> {
+        if let Some(&g) = self.globals.get(&desc.binding) {
+            return Ok(g);
+        }
+        let struct_ty =
+            |cx: &mut dyn LowerCx, s: &abi::StructDesc| -> Result<Handle<Type>, String> {
+                let id = abi_struct(program, s.name)
+                    .ok_or_else(|| format!("`{}` is missing from rtc:abi", s.name))?;
+                let ty = program
+                    .types
+                    .iter()
+                    .find(|(_, t)| *t == HirType::Struct(id))
+                    .map(|(t, _)| t)
+                    .ok_or_else(|| format!("`{}` has no type", s.name))?;
+                Ok(cx.lower_type(ty))
+            };
+        let ty = match desc.element {
+            Element::Struct(s) => struct_ty(cx, s)?,
+            Element::StructArray(s) => {
+                let base = struct_ty(cx, s)?;
+                TypeCache::runtime_array(cx.module(), base)
+            }
+            Element::Array(t) => {
+                let m = cx.module();
+                let base = field_type(m, t);
+                TypeCache::runtime_array(m, base)
+            }
+            Element::Atomics => {
+                let m = cx.module();
+                let atomic = m.types.insert(
+                    Type {
+                        name: None,
+                        inner: TypeInner::Atomic(Scalar::U32),
+                    },
+                    Span::UNDEFINED,
+                );
+                TypeCache::runtime_array(m, atomic)
+            }
+        };
+        let space = match desc.kind {
+            ResourceKind::Uniform => AddressSpace::Uniform,
+            ResourceKind::StorageRead => AddressSpace::Storage {
+                access: StorageAccess::LOAD,
+            },
+            ResourceKind::StorageReadWrite => AddressSpace::Storage {
+                access: StorageAccess::LOAD | StorageAccess::STORE,
+            },
+        };
+        let g = cx.module().global_variables.append(
+            GlobalVariable {
+                name: Some(desc.name.to_string()),
+                space,
+                binding: Some(ResourceBinding {
+                    group: 0,
+                    binding: desc.binding,
+                }),
+                ty,
+                init: None,
+                memory_decorations: Default::default(),
+            },
+            Span::UNDEFINED,
+        );
+        self.globals.insert(desc.binding, g);
+        Ok(g)
+    }
+
+    /// The bindings declared so far, in binding order.
+    pub fn used_bindings(&self) -> Vec<&'static BindingDesc> {
+        abi::BINDINGS
+            .iter()
+            .filter(|b| self.globals.contains_key(&b.binding))
+            .collect()
+    }
+
+    /// A private (per-invocation) global variable, declared on first use.
+    pub fn private(
+        &mut self,
+        cx: &mut dyn LowerCx,
+        name: &'static str,
+        ty: Handle<Type>,
+    ) -> Handle<GlobalVariable> {
+        *self.private.entry(name).or_insert_with(|| {
+            cx.module().global_variables.append(
+                GlobalVariable {
+                    name: Some(name.to_string()),
+                    space: AddressSpace::Private,
+                    binding: None,
+                    ty,
+                    init: None,
+                    memory_decorations: Default::default(),
+                },
+                Span::UNDEFINED,
+            )
+        })
+    }
+
+    /// A memoised helper function.
+    pub fn helper(
+        &mut self,
+        name: &'static str,
+        build: impl FnOnce(&mut Self) -> Result<Handle<naga::Function>, String>,
+    ) -> Result<Handle<naga::Function>, String> {
+        if let Some(&f) = self.helpers.get(name) {
+            return Ok(f);
+        }
+        let f = build(self)?;
+        self.helpers.insert(name, f);
+        Ok(f)
+    }
+
+    /// `load_<S>(offset: u32) -> S`: the instance of `s` at word `offset` of `params`.
+    pub fn loader(
+        &mut self,
+        cx: &mut dyn LowerCx,
+        program: &Program,
+        s: StructId,
+    ) -> Result<Handle<naga::Function>, String> {
+        if let Some(&f) = self.loaders.get(&s) {
+            return Ok(f);
+        }
+        let params = self.binding(cx, program, abi_binding("params")?)?;
+        let ty = struct_type_id(program, s)?;
+        let result = cx.lower_type(ty);
+        let u32_ty = TypeCache::scalar(cx.module(), Scalar::U32);
+        let name = format!("load_{}", program.structs[s].name);
+        let mut fb = FnBuilder::new(&name, &[("offset", u32_ty)], Some(result));
+        let base = fb.arg(0);
+        let value = load_value(cx, program, &mut fb, params, ty, base, 0)?;
+        fb.stmt(Statement::Return { value: Some(value) }, Span::UNDEFINED);
+        let f = cx.module().functions.append(fb.finish(), Span::UNDEFINED);
+        self.loaders.insert(s, f);
+        Ok(f)
+    }
+
+    /// The dispatcher of a program kind for the linked scene: `dispatch_<kind>(type_id, offset, args…)`.
+    ///
+    /// `params` are the dispatcher's parameters after `type_id` and `offset` (names and types), as the
+    /// framework intrinsic `call_<kind>` declares them; `result` its result type.
+    pub fn dispatcher(
+        &mut self,
+        cx: &mut dyn LowerCx,
+        program: &Program,
+        linked: &Linked,
+        kind: ProgramKind,
+        params: &[(String, TypeId)],
+        result: Option<TypeId>,
+    ) -> Result<Handle<naga::Function>, String> {
+        if let Some(&f) = self.dispatchers.get(&kind) {
+            return Ok(f);
+        }
+        // Lower the programs (and loaders) first: callees must precede the dispatcher.
+        let mut cases = Vec::new();
+        for (k, func, t) in linked.programs() {
+            if k != kind {
+                continue;
+            }
+            let loader = self.loader(cx, program, t.struct_id)?;
+            let f = cx.lower_function(func)?;
+            let arity = program.functions[func].params.len();
+            cases.push((t.id, loader, f, arity));
+        }
+        let u32_ty = TypeCache::scalar(cx.module(), Scalar::U32);
+        let mut args: Vec<(String, Handle<Type>)> =
+            vec![("type_id".into(), u32_ty), ("offset".into(), u32_ty)];
+        for (n, t) in params {
+            args.push((n.clone(), cx.lower_type(*t)));
+        }
+        let result_ty = result.map(|t| cx.lower_type(t));
+        let arg_refs: Vec<(&str, Handle<Type>)> =
+            args.iter().map(|(n, t)| (n.as_str(), *t)).collect();
+        let mut fb = FnBuilder::new(&format!("dispatch_{}", kind.name()), &arg_refs, result_ty);
+        let type_id = fb.arg(0);
+        let offset = fb.arg(1);
+        let rest: Vec<_> = (0..params.len() as u32).map(|i| fb.arg(i + 2)).collect();
+        let call_case = |fb: &mut FnBuilder, loader, f, arity: usize| {
+            let instance = fb.call(loader, vec![offset], true, Span::UNDEFINED);
+            let mut call_args: Vec<_> = instance.into_iter().collect();
+            call_args.extend(rest.iter().copied().take(arity.saturating_sub(1)));
+            let r = fb.call(f, call_args, result_ty.is_some(), Span::UNDEFINED);
+            fb.stmt(Statement::Return { value: r }, Span::UNDEFINED);
+        };
+        match cases.as_slice() {
+            [] => {}
+            [(_, loader, f, arity)] => call_case(&mut fb, *loader, *f, *arity),
+            many => {
+                let mut switch_cases = Vec::new();
+                for (id, loader, f, arity) in many {
+                    fb.push_block();
+                    call_case(&mut fb, *loader, *f, *arity);
+                    let body = fb.pop_block();
+                    switch_cases.push(SwitchCase {
+                        value: SwitchValue::U32(*id),
+                        body,
+                        fall_through: false,
+                    });
+                }
+                switch_cases.push(SwitchCase {
+                    value: SwitchValue::Default,
+                    body: naga::Block::new(),
+                    fall_through: false,
+                });
+                fb.stmt(
+                    Statement::Switch {
+                        selector: type_id,
+                        cases: switch_cases,
+                    },
+                    Span::UNDEFINED,
+                );
+            }
+        }
+        if !fb.terminated() {
+            let zero = result_ty.map(|t| fb.expr(Expression::ZeroValue(t), Span::UNDEFINED));
+            fb.stmt(Statement::Return { value: zero }, Span::UNDEFINED);
+        }
+        let f = cx.module().functions.append(fb.finish(), Span::UNDEFINED);
+        self.dispatchers.insert(kind, f);
+        Ok(f)
+    }
+}
+
+/// The ABI binding with this name.
+pub fn abi_binding(name: &str) -> Result<&'static BindingDesc, String> {
+    abi::binding(name).ok_or_else(|| format!("no ABI binding `{name}`"))
+}
+
+fn struct_type_id(program: &Program, s: StructId) -> Result<TypeId, String> {
+    program
+        .types
+        .iter()
+        .find(|(_, t)| *t == HirType::Struct(s))
+        .map(|(t, _)| t)
+        .ok_or_else(|| format!("struct `{}` has no type", program.structs[s].name))
+}
+
+/// `params[base + word]` as a u32 expression.
+fn word(
+    fb: &mut FnBuilder,
+    params: Handle<GlobalVariable>,
+    base: Handle<Expression>,
+    word: u32,
+) -> Handle<Expression> {
+    let g = fb.expr(Expression::GlobalVariable(params), Span::UNDEFINED);
+    let k = fb.expr(Expression::Literal(Literal::U32(word)), Span::UNDEFINED);
+    let index = fb.expr(
+        Expression::Binary {
+            op: naga::BinaryOperator::Add,
+            left: base,
+            right: k,
+        },
+        Span::UNDEFINED,
+    );
+    let ptr = fb.expr(Expression::Access { base: g, index }, Span::UNDEFINED);
+    fb.load(ptr, Span::UNDEFINED)
+}
+
+fn scalar_from_word(
+    fb: &mut FnBuilder,
+    w: Handle<Expression>,
+    kind: ScalarKind,
+) -> Handle<Expression> {
+    match kind {
+        ScalarKind::U32 => w,
+        ScalarKind::I32 => fb.expr(
+            Expression::As {
+                expr: w,
+                kind: naga::ScalarKind::Sint,
+                convert: None,
+            },
+            Span::UNDEFINED,
+        ),
+        ScalarKind::F32 => fb.expr(
+            Expression::As {
+                expr: w,
+                kind: naga::ScalarKind::Float,
+                convert: None,
+            },
+            Span::UNDEFINED,
+        ),
+        ScalarKind::Bool => {
+            let zero = fb.expr(Expression::Literal(Literal::U32(0)), Span::UNDEFINED);
+            fb.expr(
+                Expression::Binary {
+                    op: naga::BinaryOperator::NotEqual,
+                    left: w,
+                    right: zero,
+                },
+                Span::UNDEFINED,
+            )
+        }
+    }
+}
+
+/// Builds the value of type `ty` stored at word `base + first` of `params`.
+fn load_value(
+    cx: &mut dyn LowerCx,
+    program: &Program,
+    fb: &mut FnBuilder,
+    params: Handle<GlobalVariable>,
+    ty: TypeId,
+    base: Handle<Expression>,
+    first: u32,
+) -> Result<Handle<Expression>, String> {
+    let naga_ty = cx.lower_type(ty);
+    Ok(match program.types.get(ty) {
+        HirType::Scalar(k) => {
+            let w = word(fb, params, base, first);
+            scalar_from_word(fb, w, k)
+        }
+        HirType::Texture | HirType::Mesh => word(fb, params, base, first),
+        HirType::Vector { size, scalar } => {
+            let comps = (0..size as u32)
+                .map(|i| {
+                    let w = word(fb, params, base, first + i);
+                    scalar_from_word(fb, w, scalar)
+                })
+                .collect();
+            fb.expr(
+                Expression::Compose {
+                    ty: naga_ty,
+                    components: comps,
+                },
+                Span::UNDEFINED,
+            )
+        }
+        HirType::Matrix { cols, rows } => {
+            let col_ty = program_vec_f32(cx, rows);
+            let stride = if rows == 2 { 2 } else { 4 };
+            let mut columns = Vec::new();
+            for c in 0..cols as u32 {
+                let comps = (0..rows as u32)
+                    .map(|r| {
+                        let w = word(fb, params, base, first + c * stride + r);
+                        scalar_from_word(fb, w, ScalarKind::F32)
+                    })
+                    .collect();
+                columns.push(fb.expr(
+                    Expression::Compose {
+                        ty: col_ty,
+                        components: comps,
+                    },
+                    Span::UNDEFINED,
+                ));
+            }
+            fb.expr(
+                Expression::Compose {
+                    ty: naga_ty,
+                    components: columns,
+                },
+                Span::UNDEFINED,
+            )
+        }
+        HirType::Array { elem, len } => {
+            let l = layout::layout(program, elem);
+            let stride = l.size.div_ceil(l.align) * l.align / 4;
+            let mut items = Vec::new();
+            for i in 0..len {
+                items.push(load_value(
+                    cx,
+                    program,
+                    fb,
+                    params,
+                    elem,
+                    base,
+                    first + i * stride,
+                )?);
+            }
+            fb.expr(
+                Expression::Compose {
+                    ty: naga_ty,
+                    components: items,
+                },
+                Span::UNDEFINED,
+            )
+        }
+        HirType::Struct(s) => {
+            let offsets = layout::field_offsets(program, ty);
+            let mut fields = Vec::new();
+            for (f, off) in program.structs[s].fields.iter().zip(offsets) {
+                fields.push(load_value(
+                    cx,
+                    program,
+                    fb,
+                    params,
+                    f.ty,
+                    base,
+                    first + off / 4,
+                )?);
+            }
+            fb.expr(
+                Expression::Compose {
+                    ty: naga_ty,
+                    components: fields,
+                },
+                Span::UNDEFINED,
+            )
+        }
+        HirType::Error | HirType::Void | HirType::String => {
+            return Err(format!(
+                "cannot load a value of type {}",
+                program.type_name(ty)
+            ))
+        }
+    })
+}
+
+fn program_vec_f32(cx: &mut dyn LowerCx, rows: u8) -> Handle<Type> {
+    let size = match rows {
+        2 => naga::VectorSize::Bi,
+        3 => naga::VectorSize::Tri,
+        _ => naga::VectorSize::Quad,
+    };
+    TypeCache::vector(cx.module(), size, Scalar::F32)
+}
