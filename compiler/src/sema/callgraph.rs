@@ -256,10 +256,16 @@ impl SpawnWalk<'_> {
                     else_block,
                 } => {
                     self.count(&[*cond], mult);
+                    // Only one branch runs: the bound is the larger of the two, not their sum.
+                    let before = self.out.count;
                     self.block(then_block, mult);
+                    let then_count = self.out.count - before;
+                    self.out.count = before;
                     if let Some(e) = else_block {
                         self.block(e, mult);
                     }
+                    let else_count = self.out.count - before;
+                    self.out.count = before.saturating_add(then_count.max(else_count));
                 }
                 StmtKind::For {
                     start, end, body, ..
