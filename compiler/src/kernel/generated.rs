@@ -1,7 +1,7 @@
 //! The two modules the compiler generates for the framework kernel: `rtc:abi` and `rtc:config`.
 //!
 //! - `rtc:abi` declares, in the language, the GPU structs of [`crate::abi`] (so the kernel reads buffers
-//!   with ordinary field access) and the framework intrinsics as bodiless `@intrinsic` functions (buffer
+//!   with ordinary field access) and the framework intrinsics as functions with placeholder bodies (buffer
 //!   loads, dispatch to the scene's programs, the spawn queue, the random-number state, accumulation).
 //!   It is the same for every scene.
 //! - `rtc:config` holds the scene's kernel constants ([`KernelConfig`]): stack sizes and which features
@@ -95,7 +95,37 @@ pub const INTRINSICS: &[(&str, &str, &str)] = &[
         "LightSample",
     ),
     ("call_miss", "type_id: u32, offset: u32, ray: Ray", "vec3f"),
+    ("write_bounds", "i: u32, lo: vec3f, hi: vec3f", ""),
 ];
+
+/// A zero value of a type named in [`INTRINSICS`], as source text (the placeholder bodies).
+fn zero_of(ty: &str) -> String {
+    let abi_struct = [&TILE, &FRAME, &NODE, &INSTANCE]
+        .into_iter()
+        .find(|s| s.name == ty);
+    if let Some(s) = abi_struct {
+        let fields: Vec<String> = s
+            .fields
+            .iter()
+            .map(|f| format!("{}: {}", f.name, zero_of(type_name(f.ty))))
+            .collect();
+        return format!("{} {{ {} }}", s.name, fields.join(", "));
+    }
+    match ty {
+        "u32" => "0u".into(),
+        "f32" => "0.0".into(),
+        "bool" => "false".into(),
+        "vec2u" => "vec2u(0u)".into(),
+        "vec4u" => "vec4u(0u)".into(),
+        "vec3f" => "vec3f(0.0)".into(),
+        "vec4f" => "vec4f(0.0)".into(),
+        "Ray" => "Ray { origin: vec3f(0.0), dir: vec3f(0.0) }".into(),
+        "Intersection" => "Intersection {}".into(),
+        "Aabb" => "Aabb { min: vec3f(0.0), max: vec3f(0.0) }".into(),
+        "LightSample" => "LightSample { dir: vec3f(0.0), dist: 0.0, radiance: vec3f(0.0) }".into(),
+        other => format!("{other}()"),
+    }
+}
 
 /// The text of `rtc:abi`.
 pub fn abi_module() -> String {
@@ -105,13 +135,18 @@ pub fn abi_module() -> String {
     for s in [&TILE, &FRAME, &NODE, &INSTANCE] {
         write_struct(&mut out, s);
     }
+    // Each intrinsic is declared with a placeholder body that only makes it check; the lowering
+    // replaces every call of a function of this module and never lowers the bodies.
     for (name, params, result) in INTRINSICS {
-        let ret = if result.is_empty() {
-            String::new()
+        if result.is_empty() {
+            let _ = writeln!(out, "fn {name}({params}) {{\n}}\n");
         } else {
-            format!(" -> {result}")
-        };
-        let _ = writeln!(out, "@intrinsic\nfn {name}({params}){ret};\n");
+            let _ = writeln!(
+                out,
+                "fn {name}({params}) -> {result} {{\n    return {};\n}}\n",
+                zero_of(result)
+            );
+        }
     }
     out
 }

@@ -59,6 +59,99 @@ pub struct CompileFailure {
     pub diagnostics: Vec<Diagnostic>,
 }
 
+/// The framework kernel's files, checked with every scene.
+pub const KERNEL_ROOTS: &[&str] = &["std/kernel/trace.rt"];
+
+/// Phases 1–3: checks the user's files, links the scene and checks again with the kernel.
+pub fn check_with_kernel(
+    paths: &[PathBuf],
+    scene: Option<&str>,
+    options: &Options,
+    link_options: &LinkOptions,
+) -> Result<(Checked, SceneId, Linked), Box<CompileFailure>> {
+    let fail = |checked: Checked, diagnostics: Vec<Diagnostic>| {
+        Box::new(CompileFailure {
+            checked,
+            diagnostics,
+        })
+    };
+    let first = crate::driver::check_paths(paths, options);
+    let Some(program) = first.program.as_ref() else {
+        let d = first.diagnostics.clone();
+        return Err(fail(first, d));
+    };
+    let scene_id = match program.select_scene(scene) {
+        Ok(s) => s,
+        Err(e) => {
+            let d = vec![scene_choice_diagnostic(&e, &first)];
+            return Err(fail(first, d));
+        }
+    };
+    let registry_path = registry_path(program, scene_id);
+    let (mut registry, _) = crate::link::registry::Registry::load(&registry_path);
+    let linked = match crate::link::link(program, scene_id, &mut registry, link_options) {
+        Ok(l) => l,
+        Err(d) => return Err(fail(first, d)),
+    };
+    let mut opts = options.clone();
+    opts.generated
+        .insert(generated::ABI_MODULE.to_string(), generated::abi_module());
+    opts.generated.insert(
+        generated::CONFIG_MODULE.to_string(),
+        generated::config_module(&linked.config),
+    );
+    let second = crate::driver::check_paths_with_std(paths, KERNEL_ROOTS, &opts);
+    let Some(program) = second.program.as_ref() else {
+        let d = second.diagnostics.clone();
+        return Err(fail(second, d));
+    };
+    // Ids are the same (same keys, same registry); struct and function handles are the second check's.
+    let scene_id = match program.select_scene(scene) {
+        Ok(s) => s,
+        Err(e) => {
+            let d = vec![scene_choice_diagnostic(&e, &second)];
+            return Err(fail(second, d));
+        }
+    };
+    let linked = match crate::link::link(program, scene_id, &mut registry, link_options) {
+        Ok(l) => l,
+        Err(d) => return Err(fail(second, d)),
+    };
+    Ok((second, scene_id, linked))
+}
+
+/// E0706 for an ambiguous or unknown scene name; E0703 when the files declare no scene at all.
+fn scene_choice_diagnostic(
+    e: &crate::sema::hir::SceneChoiceError,
+    checked: &Checked,
+) -> Diagnostic {
+    e.to_diagnostic().unwrap_or_else(|| {
+        let file = checked
+            .program
+            .as_ref()
+            .and_then(|p| p.modules.iter().find(|m| m.is_root))
+            .map(|m| m.file)
+            .unwrap_or_default();
+        Diagnostic::error(
+            crate::diag::codes::E0703,
+            "there is no scene to compile",
+            crate::source::Span::new(file, 0, 0),
+        )
+        .with_help("declare one: `scene name { camera …  object … }` (see spec/scenes.md)")
+    })
+}
+
+/// The registry file of a scene: `rtc.registry.json` in the folder of the file that declares it.
+pub fn registry_path(program: &crate::sema::hir::Program, scene: SceneId) -> PathBuf {
+    let module = &program.modules[program.scenes[scene].module.index()];
+    module
+        .path
+        .as_deref()
+        .and_then(std::path::Path::parent)
+        .unwrap_or(std::path::Path::new("."))
+        .join(crate::link::registry::FILE_NAME)
+}
+
 /// Compiles the scene `scene` (or the only scene) of the given root files.
 pub fn compile_scene(
     paths: &[PathBuf],
@@ -71,4 +164,29 @@ pub fn compile_scene(
         checked: Checked::default(),
         diagnostics: Vec::new(),
     }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn example(name: &str) -> PathBuf {
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples").join(name).join("scene.rt")
+    }
+
+    #[test]
+    fn the_kernel_checks_with_a_scene() {
+        let r = check_with_kernel(&[example("hello")], None, &Options::default(), &LinkOptions::default());
+        match r {
+            Ok((checked, _, linked)) => {
+                assert!(checked.program.is_some());
+                assert!(linked.config.has_secondary_rays);
+                assert_eq!(linked.config.max_spawn, 1);
+            }
+            Err(f) => panic!(
+                "{}",
+                crate::diag::render_human(&f.checked.sources, &f.diagnostics, false)
+            ),
+        }
+    }
 }

@@ -74,6 +74,26 @@ pub struct KernelConfig {
     pub has_background: bool,
 }
 
+impl KernelConfig {
+    /// The configuration of the kernel with every feature on (`--all-programs`, and checking the
+    /// kernel on its own).
+    pub fn unspecialised() -> KernelConfig {
+        KernelConfig {
+            max_depth: 4,
+            max_spawn: 4,
+            stack_size: 4,
+            tlas_stack: MAX_BVH_DEPTH,
+            blas_stack: MAX_BVH_DEPTH,
+            has_secondary_rays: true,
+            has_any_hit: true,
+            has_custom_geometry: true,
+            has_meshes: true,
+            has_media: true,
+            has_background: true,
+        }
+    }
+}
+
 /// The deepest BVH the traversal stacks can handle; the BVH builder guarantees it.
 pub const MAX_BVH_DEPTH: u32 = 64;
 

@@ -316,6 +316,13 @@ builtins! {
     SampleCosineHemisphere "sample_cosine_hemisphere" false Allowed::Anywhere => &[ov(NONE, &[fx("n", Fixed::Vec3f), fx("u", Fixed::Vec2f)], RV3)];
     SampleUniformSphere "sample_uniform_sphere" false Allowed::Anywhere => &[ov(NONE, &[fx("u", Fixed::Vec2f)], RV3)];
     Luminance "luminance" false Allowed::Anywhere => &[ov(NONE, &[fx("c", Fixed::Vec3f)], RF)];
+    // ---- bit packing ----
+    UnpackUnorm4x8 "unpack_unorm4x8" false Allowed::Anywhere => &[ov(NONE, &[fx("bits", Fixed::U32)], Pat::Fixed(Fixed::Vec4f))];
+    UnpackSnorm2x16 "unpack_snorm2x16" false Allowed::Anywhere => &[ov(NONE, &[fx("bits", Fixed::U32)], Pat::Fixed(Fixed::Vec2f))];
+    UnpackHalf2x16 "unpack_half2x16" false Allowed::Anywhere => &[ov(NONE, &[fx("bits", Fixed::U32)], Pat::Fixed(Fixed::Vec2f))];
+    PackUnorm4x8 "pack_unorm4x8" false Allowed::Anywhere => &[ov(NONE, &[fx("v", Fixed::Vec4f)], RU)];
+    PackSnorm2x16 "pack_snorm2x16" false Allowed::Anywhere => &[ov(NONE, &[fx("v", Fixed::Vec2f)], RU)];
+    PackHalf2x16 "pack_half2x16" false Allowed::Anywhere => &[ov(NONE, &[fx("v", Fixed::Vec2f)], RU)];
     // ---- transforms ----
     Identity "identity" true Allowed::Anywhere => &[ov(NONE, &[], RM4)];
     Translate "translate" true Allowed::Anywhere => &[ov(NONE, &[fx("v", Fixed::Vec3f)], RM4)];
