@@ -14,6 +14,7 @@
 pub mod dispatch;
 pub mod generated;
 pub mod intrinsics;
+pub mod manifest;
 
 use crate::abi::BindingDesc;
 use crate::diag::Diagnostic;

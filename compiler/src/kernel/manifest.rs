@@ -1,0 +1,247 @@
+//! `manifest.json`: what a host needs to run a compiled kernel without rtc's runtime.
+//!
+//! For the render kernel (and the bounds kernel, when there is one): every binding it declares (group,
+//! binding, name, kind, and the element layout with member offsets and sizes as naga's layouter computes
+//! them for the emitted code), every linked type and program with its kind, name and dispatch id, the
+//! layouts of the role structs in `params`, the kernel's constants, the workgroup sizes, and a
+//! `left_out` list: programs, features and bindings the scene does not need, each with the reason.
+//!
+//! Invariant: the manifest is deterministic (sorted, no hash-map order), so it can be a golden file.
+
+use super::{CompiledScene, BOUNDS_ENTRY, BOUNDS_WORKGROUP, RENDER_ENTRY, RENDER_WORKGROUP};
+use crate::abi;
+use crate::back::ResourceKind;
+use crate::layout;
+use crate::sema::types::{Type as HirType, TypeId};
+use serde::Serialize;
+
+#[derive(Serialize)]
+struct Member {
+    name: String,
+    offset: u32,
+    size: u32,
+}
+
+#[derive(Serialize)]
+struct Binding {
+    group: u32,
+    binding: u32,
+    name: &'static str,
+    kind: &'static str,
+    element: String,
+    element_size: u32,
+    members: Vec<Member>,
+    doc: &'static str,
+}
+
+#[derive(Serialize)]
+struct Program {
+    kind: &'static str,
+    name: String,
+    type_name: String,
+    role: &'static str,
+    id: u32,
+}
+
+#[derive(Serialize)]
+struct ParamLayout {
+    name: String,
+    role: &'static str,
+    id: u32,
+    size_words: u32,
+    fields: Vec<Member>,
+}
+
+#[derive(Serialize)]
+struct LeftOut {
+    kind: &'static str,
+    name: String,
+    reason: String,
+}
+
+#[derive(Serialize)]
+struct Kernel {
+    entry_point: &'static str,
+    workgroup_size: [u32; 3],
+    bindings: Vec<Binding>,
+}
+
+#[derive(Serialize)]
+struct Manifest {
+    format: u32,
+    scene: String,
+    kernels: Vec<Kernel>,
+    programs: Vec<Program>,
+    params_layouts: Vec<ParamLayout>,
+    constants: std::collections::BTreeMap<&'static str, serde_json::Value>,
+    left_out: Vec<LeftOut>,
+}
+
+fn kind_name(k: ResourceKind) -> &'static str {
+    match k {
+        ResourceKind::Uniform => "uniform",
+        ResourceKind::StorageRead => "storage_read",
+        ResourceKind::StorageReadWrite => "storage_read_write",
+    }
+}
+
+/// The bindings a module declares, with layouts from naga's layouter.
+fn bindings_of(module: &naga::Module) -> Vec<Binding> {
+    let mut layouter = naga::proc::Layouter::default();
+    let _ = layouter.update(module.to_ctx());
+    let mut out = Vec::new();
+    for (_, g) in module.global_variables.iter() {
+        let Some(rb) = &g.binding else { continue };
+        let Some(desc) = abi::BINDINGS.iter().find(|b| b.binding == rb.binding) else {
+            continue;
+        };
+        // For runtime-sized arrays, describe the element.
+        let mut ty = g.ty;
+        if let naga::TypeInner::Array { base, .. } = module.types[ty].inner {
+            ty = base;
+        }
+        let members = match &module.types[ty].inner {
+            naga::TypeInner::Struct { members, .. } => members
+                .iter()
+                .map(|m| Member {
+                    name: m.name.clone().unwrap_or_default(),
+                    offset: m.offset,
+                    size: layouter[m.ty].size,
+                })
+                .collect(),
+            _ => Vec::new(),
+        };
+        let element = module.types[ty]
+            .name
+            .clone()
+            .unwrap_or_else(|| format!("{:?}", module.types[ty].inner).to_lowercase());
+        out.push(Binding {
+            group: rb.group,
+            binding: rb.binding,
+            name: desc.name,
+            kind: kind_name(desc.kind),
+            element,
+            element_size: layouter[ty].size,
+            members,
+            doc: desc.doc,
+        });
+    }
+    out.sort_by_key(|b| b.binding);
+    out
+}
+
+/// The manifest of a compiled scene, as pretty JSON.
+pub fn manifest_json(c: &CompiledScene) -> String {
+    let Some(program) = c.checked.program.as_ref() else {
+        return "{}\n".to_string();
+    };
+    let mut kernels = vec![Kernel {
+        entry_point: RENDER_ENTRY,
+        workgroup_size: [RENDER_WORKGROUP[0], RENDER_WORKGROUP[1], 1],
+        bindings: bindings_of(&c.render),
+    }];
+    if let Some(b) = &c.bounds {
+        kernels.push(Kernel {
+            entry_point: BOUNDS_ENTRY,
+            workgroup_size: [BOUNDS_WORKGROUP, 1, 1],
+            bindings: bindings_of(b),
+        });
+    }
+    let mut programs = Vec::new();
+    let mut params_layouts = Vec::new();
+    for t in c.linked.types.values().flatten() {
+        let st = &program.structs[t.struct_id];
+        for (kind, f) in &t.programs {
+            programs.push(Program {
+                kind: kind.name(),
+                name: program.functions[*f].name.clone(),
+                type_name: st.name.clone(),
+                role: t.role.name(),
+                id: t.id,
+            });
+        }
+        if let Some(ty) = struct_type(program, t.struct_id) {
+            let offsets = layout::field_offsets(program, ty);
+            params_layouts.push(ParamLayout {
+                name: st.name.clone(),
+                role: t.role.name(),
+                id: t.id,
+                size_words: layout::layout(program, ty).size / 4,
+                fields: st
+                    .fields
+                    .iter()
+                    .zip(offsets)
+                    .map(|(f, off)| Member {
+                        name: f.name.clone(),
+                        offset: off,
+                        size: layout::layout(program, f.ty).size,
+                    })
+                    .collect(),
+            });
+        }
+    }
+    let cfg = c.linked.config;
+    let mut constants = std::collections::BTreeMap::new();
+    for (k, v) in [
+        ("max_depth", cfg.max_depth),
+        ("max_spawn", cfg.max_spawn),
+        ("stack_size", cfg.stack_size),
+        ("tlas_stack", cfg.tlas_stack),
+        ("blas_stack", cfg.blas_stack),
+        ("samples_per_pass", c.samples_per_pass),
+    ] {
+        constants.insert(k, serde_json::json!(v));
+    }
+    for (k, v) in [
+        ("has_secondary_rays", cfg.has_secondary_rays),
+        ("has_any_hit", cfg.has_any_hit),
+        ("has_custom_geometry", cfg.has_custom_geometry),
+        ("has_meshes", cfg.has_meshes),
+        ("has_media", cfg.has_media),
+        ("has_background", cfg.has_background),
+    ] {
+        constants.insert(k, serde_json::json!(v));
+    }
+    let mut left_out: Vec<LeftOut> = c
+        .linked
+        .left_out
+        .iter()
+        .map(|l| LeftOut {
+            kind: l.kind,
+            name: l.name.clone(),
+            reason: l.reason.clone(),
+        })
+        .collect();
+    for b in abi::BINDINGS {
+        if !c.bindings.iter().any(|u| u.binding == b.binding) {
+            left_out.push(LeftOut {
+                kind: "binding",
+                name: b.name.to_string(),
+                reason: "nothing the scene's kernel runs reads it".to_string(),
+            });
+        }
+    }
+    let m = Manifest {
+        format: 1,
+        scene: program.scenes[c.scene].name.clone(),
+        kernels,
+        programs,
+        params_layouts,
+        constants,
+        left_out,
+    };
+    let mut s = serde_json::to_string_pretty(&m).unwrap_or_default();
+    s.push('\n');
+    s
+}
+
+fn struct_type(
+    program: &crate::sema::hir::Program,
+    s: crate::sema::hir::StructId,
+) -> Option<TypeId> {
+    program
+        .types
+        .iter()
+        .find(|(_, t)| *t == HirType::Struct(s))
+        .map(|(t, _)| t)
+}
