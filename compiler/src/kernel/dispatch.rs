@@ -15,24 +15,29 @@
 use crate::abi::{self, BindingDesc, Element, FieldType};
 use crate::back::ResourceKind;
 use crate::layout;
-use crate::link::Linked;
 use crate::lower::builder::{FnBuilder, TypeCache};
-use crate::sema::hir::{FnId, Program, ProgramKind, StructId};
+use crate::lower::LowerError;
+use crate::sema::hir::{Program, StructId};
 use crate::sema::types::{ScalarKind, Type as HirType, TypeId};
 use naga::{
     AddressSpace, Expression, GlobalVariable, Handle, Literal, ResourceBinding, Scalar, Span,
-    Statement, StorageAccess, SwitchCase, SwitchValue, Type, TypeInner,
+    Statement, StorageAccess, Type, TypeInner,
 };
 use std::collections::BTreeMap;
 
-/// What kernel assembly needs from the lowering of user code.
-pub trait LowerCx {
-    /// The module being built.
-    fn module(&mut self) -> &mut naga::Module;
-    /// The naga type of a language type.
-    fn lower_type(&mut self, ty: TypeId) -> Handle<Type>;
-    /// The naga function of a language function (lowered on first use, callees first).
-    fn lower_function(&mut self, f: FnId) -> Result<Handle<naga::Function>, String>;
+/// The lowering context of the kernel module.
+pub type LowerCx<'p> = crate::lower::Lowerer<'p>;
+
+/// A kernel-assembly failure (an internal error: the kernel or the ABI is inconsistent).
+pub fn kernel_error(message: impl Into<String>) -> LowerError {
+    LowerError::Validation {
+        message: format!("kernel assembly: {}", message.into()),
+        span: None,
+    }
+}
+
+fn ty_of(cx: &mut LowerCx<'_>, ty: TypeId) -> Result<Handle<Type>, LowerError> {
+    cx.ty(ty)
 }
 
 /// Generated functions and globals of one kernel module.
@@ -41,7 +46,8 @@ pub struct Generated {
     globals: BTreeMap<u32, Handle<GlobalVariable>>,
     private: BTreeMap<&'static str, Handle<GlobalVariable>>,
     loaders: BTreeMap<StructId, Handle<naga::Function>>,
-    dispatchers: BTreeMap<ProgramKind, Handle<naga::Function>>,
+    /// Dispatchers, by program kind.
+    pub dispatchers: BTreeMap<crate::sema::hir::ProgramKind, Handle<naga::Function>>,
     helpers: BTreeMap<&'static str, Handle<naga::Function>>,
 }
 
@@ -78,38 +84,38 @@ impl Generated {
     /// The global variable of an ABI binding, declared on first use.
     pub fn binding(
         &mut self,
-        cx: &mut dyn LowerCx,
+        cx: &mut LowerCx<'_>,
         program: &Program,
         desc: &'static BindingDesc,
-    ) -> Result<Handle<GlobalVariable>, String> {
+    ) -> Result<Handle<GlobalVariable>, LowerError> {
         if let Some(&g) = self.globals.get(&desc.binding) {
             return Ok(g);
         }
         let struct_ty =
-            |cx: &mut dyn LowerCx, s: &abi::StructDesc| -> Result<Handle<Type>, String> {
+            |cx: &mut LowerCx<'_>, s: &abi::StructDesc| -> Result<Handle<Type>, LowerError> {
                 let id = abi_struct(program, s.name)
-                    .ok_or_else(|| format!("`{}` is missing from rtc:abi", s.name))?;
+                    .ok_or_else(|| kernel_error(format!("`{}` is missing from rtc:abi", s.name)))?;
                 let ty = program
                     .types
                     .iter()
                     .find(|(_, t)| *t == HirType::Struct(id))
                     .map(|(t, _)| t)
-                    .ok_or_else(|| format!("`{}` has no type", s.name))?;
-                Ok(cx.lower_type(ty))
+                    .ok_or_else(|| kernel_error(format!("`{}` has no type", s.name)))?;
+                Ok(ty_of(cx, ty)?)
             };
         let ty = match desc.element {
             Element::Struct(s) => struct_ty(cx, s)?,
             Element::StructArray(s) => {
                 let base = struct_ty(cx, s)?;
-                TypeCache::runtime_array(cx.module(), base)
+                TypeCache::runtime_array(cx.module_mut(), base)
             }
             Element::Array(t) => {
-                let m = cx.module();
+                let m = cx.module_mut();
                 let base = field_type(m, t);
                 TypeCache::runtime_array(m, base)
             }
             Element::Atomics => {
-                let m = cx.module();
+                let m = cx.module_mut();
                 let atomic = m.types.insert(
                     Type {
                         name: None,
@@ -129,7 +135,7 @@ impl Generated {
                 access: StorageAccess::LOAD | StorageAccess::STORE,
             },
         };
-        let g = cx.module().global_variables.append(
+        let g = cx.module_mut().global_variables.append(
             GlobalVariable {
                 name: Some(desc.name.to_string()),
                 space,
@@ -158,12 +164,12 @@ impl Generated {
     /// A private (per-invocation) global variable, declared on first use.
     pub fn private(
         &mut self,
-        cx: &mut dyn LowerCx,
+        cx: &mut LowerCx<'_>,
         name: &'static str,
         ty: Handle<Type>,
     ) -> Handle<GlobalVariable> {
         *self.private.entry(name).or_insert_with(|| {
-            cx.module().global_variables.append(
+            cx.module_mut().global_variables.append(
                 GlobalVariable {
                     name: Some(name.to_string()),
                     space: AddressSpace::Private,
@@ -181,8 +187,8 @@ impl Generated {
     pub fn helper(
         &mut self,
         name: &'static str,
-        build: impl FnOnce(&mut Self) -> Result<Handle<naga::Function>, String>,
-    ) -> Result<Handle<naga::Function>, String> {
+        build: impl FnOnce(&mut Self) -> Result<Handle<naga::Function>, LowerError>,
+    ) -> Result<Handle<naga::Function>, LowerError> {
         if let Some(&f) = self.helpers.get(name) {
             return Ok(f);
         }
@@ -194,125 +200,44 @@ impl Generated {
     /// `load_<S>(offset: u32) -> S`: the instance of `s` at word `offset` of `params`.
     pub fn loader(
         &mut self,
-        cx: &mut dyn LowerCx,
+        cx: &mut LowerCx<'_>,
         program: &Program,
         s: StructId,
-    ) -> Result<Handle<naga::Function>, String> {
+    ) -> Result<Handle<naga::Function>, LowerError> {
         if let Some(&f) = self.loaders.get(&s) {
             return Ok(f);
         }
         let params = self.binding(cx, program, abi_binding("params")?)?;
         let ty = struct_type_id(program, s)?;
-        let result = cx.lower_type(ty);
-        let u32_ty = TypeCache::scalar(cx.module(), Scalar::U32);
+        let result = ty_of(cx, ty)?;
+        let u32_ty = TypeCache::scalar(cx.module_mut(), Scalar::U32);
         let name = format!("load_{}", program.structs[s].name);
         let mut fb = FnBuilder::new(&name, &[("offset", u32_ty)], Some(result));
         let base = fb.arg(0);
         let value = load_value(cx, program, &mut fb, params, ty, base, 0)?;
         fb.stmt(Statement::Return { value: Some(value) }, Span::UNDEFINED);
-        let f = cx.module().functions.append(fb.finish(), Span::UNDEFINED);
+        let f = cx
+            .module_mut()
+            .functions
+            .append(fb.finish(), Span::UNDEFINED);
         self.loaders.insert(s, f);
-        Ok(f)
-    }
-
-    /// The dispatcher of a program kind for the linked scene: `dispatch_<kind>(type_id, offset, args…)`.
-    ///
-    /// `params` are the dispatcher's parameters after `type_id` and `offset` (names and types), as the
-    /// framework intrinsic `call_<kind>` declares them; `result` its result type.
-    pub fn dispatcher(
-        &mut self,
-        cx: &mut dyn LowerCx,
-        program: &Program,
-        linked: &Linked,
-        kind: ProgramKind,
-        params: &[(String, TypeId)],
-        result: Option<TypeId>,
-    ) -> Result<Handle<naga::Function>, String> {
-        if let Some(&f) = self.dispatchers.get(&kind) {
-            return Ok(f);
-        }
-        // Lower the programs (and loaders) first: callees must precede the dispatcher.
-        let mut cases = Vec::new();
-        for (k, func, t) in linked.programs() {
-            if k != kind {
-                continue;
-            }
-            let loader = self.loader(cx, program, t.struct_id)?;
-            let f = cx.lower_function(func)?;
-            let arity = program.functions[func].params.len();
-            cases.push((t.id, loader, f, arity));
-        }
-        let u32_ty = TypeCache::scalar(cx.module(), Scalar::U32);
-        let mut args: Vec<(String, Handle<Type>)> =
-            vec![("type_id".into(), u32_ty), ("offset".into(), u32_ty)];
-        for (n, t) in params {
-            args.push((n.clone(), cx.lower_type(*t)));
-        }
-        let result_ty = result.map(|t| cx.lower_type(t));
-        let arg_refs: Vec<(&str, Handle<Type>)> =
-            args.iter().map(|(n, t)| (n.as_str(), *t)).collect();
-        let mut fb = FnBuilder::new(&format!("dispatch_{}", kind.name()), &arg_refs, result_ty);
-        let type_id = fb.arg(0);
-        let offset = fb.arg(1);
-        let rest: Vec<_> = (0..params.len() as u32).map(|i| fb.arg(i + 2)).collect();
-        let call_case = |fb: &mut FnBuilder, loader, f, arity: usize| {
-            let instance = fb.call(loader, vec![offset], true, Span::UNDEFINED);
-            let mut call_args: Vec<_> = instance.into_iter().collect();
-            call_args.extend(rest.iter().copied().take(arity.saturating_sub(1)));
-            let r = fb.call(f, call_args, result_ty.is_some(), Span::UNDEFINED);
-            fb.stmt(Statement::Return { value: r }, Span::UNDEFINED);
-        };
-        match cases.as_slice() {
-            [] => {}
-            [(_, loader, f, arity)] => call_case(&mut fb, *loader, *f, *arity),
-            many => {
-                let mut switch_cases = Vec::new();
-                for (id, loader, f, arity) in many {
-                    fb.push_block();
-                    call_case(&mut fb, *loader, *f, *arity);
-                    let body = fb.pop_block();
-                    switch_cases.push(SwitchCase {
-                        value: SwitchValue::U32(*id),
-                        body,
-                        fall_through: false,
-                    });
-                }
-                switch_cases.push(SwitchCase {
-                    value: SwitchValue::Default,
-                    body: naga::Block::new(),
-                    fall_through: false,
-                });
-                fb.stmt(
-                    Statement::Switch {
-                        selector: type_id,
-                        cases: switch_cases,
-                    },
-                    Span::UNDEFINED,
-                );
-            }
-        }
-        if !fb.terminated() {
-            let zero = result_ty.map(|t| fb.expr(Expression::ZeroValue(t), Span::UNDEFINED));
-            fb.stmt(Statement::Return { value: zero }, Span::UNDEFINED);
-        }
-        let f = cx.module().functions.append(fb.finish(), Span::UNDEFINED);
-        self.dispatchers.insert(kind, f);
         Ok(f)
     }
 }
 
 /// The ABI binding with this name.
-pub fn abi_binding(name: &str) -> Result<&'static BindingDesc, String> {
-    abi::binding(name).ok_or_else(|| format!("no ABI binding `{name}`"))
+pub fn abi_binding(name: &str) -> Result<&'static BindingDesc, LowerError> {
+    abi::binding(name).ok_or_else(|| kernel_error(format!("no ABI binding `{name}`")))
 }
 
-fn struct_type_id(program: &Program, s: StructId) -> Result<TypeId, String> {
+/// The type id of a struct.
+pub fn struct_type_id(program: &Program, s: StructId) -> Result<TypeId, LowerError> {
     program
         .types
         .iter()
         .find(|(_, t)| *t == HirType::Struct(s))
         .map(|(t, _)| t)
-        .ok_or_else(|| format!("struct `{}` has no type", program.structs[s].name))
+        .ok_or_else(|| kernel_error(format!("struct `{}` has no type", program.structs[s].name)))
 }
 
 /// `params[base + word]` as a u32 expression.
@@ -375,15 +300,15 @@ fn scalar_from_word(
 
 /// Builds the value of type `ty` stored at word `base + first` of `params`.
 fn load_value(
-    cx: &mut dyn LowerCx,
+    cx: &mut LowerCx<'_>,
     program: &Program,
     fb: &mut FnBuilder,
     params: Handle<GlobalVariable>,
     ty: TypeId,
     base: Handle<Expression>,
     first: u32,
-) -> Result<Handle<Expression>, String> {
-    let naga_ty = cx.lower_type(ty);
+) -> Result<Handle<Expression>, LowerError> {
+    let naga_ty = ty_of(cx, ty)?;
     Ok(match program.types.get(ty) {
         HirType::Scalar(k) => {
             let w = word(fb, params, base, first);
@@ -478,19 +403,19 @@ fn load_value(
             )
         }
         HirType::Error | HirType::Void | HirType::String => {
-            return Err(format!(
+            return Err(kernel_error(format!(
                 "cannot load a value of type {}",
                 program.type_name(ty)
-            ))
+            )))
         }
     })
 }
 
-fn program_vec_f32(cx: &mut dyn LowerCx, rows: u8) -> Handle<Type> {
+fn program_vec_f32(cx: &mut LowerCx<'_>, rows: u8) -> Handle<Type> {
     let size = match rows {
         2 => naga::VectorSize::Bi,
         3 => naga::VectorSize::Tri,
         _ => naga::VectorSize::Quad,
     };
-    TypeCache::vector(cx.module(), size, Scalar::F32)
+    TypeCache::vector(cx.module_mut(), size, Scalar::F32)
 }

@@ -1,26 +1,31 @@
-//! Lowering of intrinsics: the framework's (declared in `rtc:abi`) and the user-facing ones.
+//! Lowering of intrinsics for one scene's kernel: the [`KernelHooks`] given to the lowerer.
 //!
-//! - Framework intrinsics read the kernel's buffers (`load_*`), keep per-invocation state in private
-//!   globals (the random-number state and the spawn queue), accumulate, and call the generated
-//!   dispatchers (`call_<kind>` → `dispatch_<kind>`).
-//! - User intrinsics (spec/programs.md) become calls of the kernel's own functions written in the
+//! - **Framework intrinsics** are the functions of the generated `rtc:abi` module. Their bodies are
+//!   placeholders; every call is replaced ([`Intrinsics::lower_call`]): `load_*` read the kernel's
+//!   buffers, `rng_*` and the spawn queue use private globals, `accumulate` and `write_bounds` write
+//!   results, and `call_<kind>` calls the generated dispatcher of that program kind.
+//! - **User intrinsics** (spec/programs.md) become calls of the kernel's own functions written in the
 //!   language (`rand()` → `rand_next`, `shadow(…)` → `shadow_query`, …), except `spawn`, which appends to
 //!   the spawn queue.
 //!
-//! Invariant: the spawn queue never writes past `MAX_SPAWN` entries; `spawned_count` is clamped.
+//! Invariants: the spawn queue never writes past `MAX_SPAWN` entries and `spawned_count` is clamped to
+//! it; a dispatcher is built once per kind, after the programs and loaders it calls.
 
-use super::dispatch::{abi_binding, Generated, LowerCx};
+use super::dispatch::{abi_binding, kernel_error, Generated, LowerCx};
+use super::generated::ABI_MODULE;
 use crate::link::{KernelConfig, Linked};
 use crate::lower::builder::{FnBuilder, TypeCache};
+use crate::lower::{CallLowering, FunctionCall, IntrinsicCall, Intrinsics, LowerError};
 use crate::sema::builtins::Builtin;
 use crate::sema::hir::{FnId, Program, ProgramKind};
+use crate::sema::types::{TypeId, TypeTable};
 use naga::{
     AtomicFunction, BinaryOperator, Expression, Handle, Literal, Scalar, Span, Statement,
-    VectorSize,
+    SwitchCase, SwitchValue, VectorSize,
 };
 
-/// Everything intrinsic lowering needs besides the lowerer.
-pub struct KernelCx<'a> {
+/// The intrinsics hook of one scene's kernel.
+pub struct KernelHooks<'a> {
     /// The checked program (user code, stdlib, kernel).
     pub program: &'a Program,
     /// The link plan.
@@ -32,7 +37,7 @@ pub struct KernelCx<'a> {
 }
 
 /// The kernel function (from `stdlib/kernel/`) named `name`.
-pub fn kernel_fn(program: &Program, name: &str) -> Result<FnId, String> {
+pub fn kernel_fn(program: &Program, name: &str) -> Result<FnId, LowerError> {
     program
         .functions
         .iter()
@@ -43,7 +48,7 @@ pub fn kernel_fn(program: &Program, name: &str) -> Result<FnId, String> {
                     .starts_with("std/kernel/")
         })
         .map(|(id, _)| id)
-        .ok_or_else(|| format!("the framework kernel has no function `{name}`"))
+        .ok_or_else(|| kernel_error(format!("the framework kernel has no function `{name}`")))
 }
 
 /// The kernel function implementing a user intrinsic, if it is one.
@@ -71,35 +76,52 @@ fn lit_u32(fb: &mut FnBuilder, v: u32) -> Handle<Expression> {
     fb.expr(Expression::Literal(Literal::U32(v)), Span::UNDEFINED)
 }
 
-impl KernelCx<'_> {
-    /// Lowers a call of a user-facing intrinsic. `Ok(None)` for a call without a value; `Err` if `b` is
-    /// not an intrinsic this kernel implements.
-    pub fn lower_user_intrinsic(
+impl Intrinsics for KernelHooks<'_> {
+    fn lower(
         &mut self,
-        cx: &mut dyn LowerCx,
+        cx: &mut LowerCx<'_>,
         fb: &mut FnBuilder,
-        b: Builtin,
-        args: &[Handle<Expression>],
-        span: Span,
-    ) -> Result<Option<Handle<Expression>>, String> {
-        if b == Builtin::Spawn {
+        call: &IntrinsicCall<'_>,
+    ) -> Result<Option<Handle<Expression>>, LowerError> {
+        if call.builtin == Builtin::Spawn {
             let f = self.spawn_fn(cx)?;
-            fb.call(f, args.to_vec(), false, span);
+            fb.call(f, call.args.to_vec(), false, call.span);
             return Ok(None);
         }
-        let name = user_intrinsic_fn(b).ok_or_else(|| format!("`{b:?}` is not an intrinsic"))?;
+        let name = user_intrinsic_fn(call.builtin).ok_or_else(|| {
+            kernel_error(format!(
+                "`{:?}` is not an intrinsic of the kernel",
+                call.builtin
+            ))
+        })?;
         let id = kernel_fn(self.program, name)?;
-        let f = cx.lower_function(id)?;
-        let has_result = self.program.functions[id].ret != crate::sema::types::TypeTable::VOID;
-        Ok(fb.call(f, args.to_vec(), has_result, span))
+        let f = cx.ensure_function(id, self)?;
+        let has_result = self.program.functions[id].ret != TypeTable::VOID;
+        Ok(fb.call(f, call.args.to_vec(), has_result, call.span))
     }
 
+    fn lower_call(
+        &mut self,
+        cx: &mut LowerCx<'_>,
+        fb: &mut FnBuilder,
+        call: &FunctionCall<'_>,
+    ) -> Result<CallLowering, LowerError> {
+        let func = &self.program.functions[call.callee];
+        if self.program.modules[func.module.index()].name != ABI_MODULE {
+            return Ok(CallLowering::Default);
+        }
+        self.framework_call(cx, fb, call.callee, call.args, call.span)
+            .map(CallLowering::Done)
+    }
+}
+
+impl KernelHooks<'_> {
     /// `rt_spawn(dir, weight)`: appends to the spawn queue (dropping rays beyond `MAX_SPAWN`).
-    fn spawn_fn(&mut self, cx: &mut dyn LowerCx) -> Result<Handle<naga::Function>, String> {
+    fn spawn_fn(&mut self, cx: &mut LowerCx<'_>) -> Result<Handle<naga::Function>, LowerError> {
         let max = self.config.max_spawn;
         let (dirs, weights, count) = self.spawn_queue(cx);
         self.generated.helper("rt_spawn", |_| {
-            let v3 = TypeCache::vector(cx.module(), VectorSize::Tri, Scalar::F32);
+            let v3 = TypeCache::vector(cx.module_mut(), VectorSize::Tri, Scalar::F32);
             let mut fb = FnBuilder::new("rt_spawn", &[("dir", v3), ("weight", v3)], None);
             let dir = fb.arg(0);
             let weight = fb.arg(1);
@@ -140,67 +162,79 @@ impl KernelCx<'_> {
                 },
                 Span::UNDEFINED,
             );
-            Ok(cx.module().functions.append(fb.finish(), Span::UNDEFINED))
+            Ok(cx
+                .module_mut()
+                .functions
+                .append(fb.finish(), Span::UNDEFINED))
         })
     }
 
     /// The private globals of the spawn queue: directions, weights, count.
     fn spawn_queue(
         &mut self,
-        cx: &mut dyn LowerCx,
+        cx: &mut LowerCx<'_>,
     ) -> (
         Handle<naga::GlobalVariable>,
         Handle<naga::GlobalVariable>,
         Handle<naga::GlobalVariable>,
     ) {
-        let v3 = TypeCache::vector(cx.module(), VectorSize::Tri, Scalar::F32);
-        let arr = TypeCache::array(cx.module(), v3, self.config.max_spawn.max(1));
-        let u = TypeCache::scalar(cx.module(), Scalar::U32);
+        let v3 = TypeCache::vector(cx.module_mut(), VectorSize::Tri, Scalar::F32);
+        let arr = TypeCache::array(cx.module_mut(), v3, self.config.max_spawn.max(1));
+        let u = TypeCache::scalar(cx.module_mut(), Scalar::U32);
         let dirs = self.generated.private(cx, "spawn_dirs", arr);
         let weights = self.generated.private(cx, "spawn_weights", arr);
         let count = self.generated.private(cx, "spawn_count", u);
         (dirs, weights, count)
     }
 
-    /// Lowers a call of a framework intrinsic (a function of `rtc:abi`) named `name`.
-    pub fn lower_framework_call(
+    /// Loads element `index` (or the whole value) of an ABI binding.
+    fn load_binding(
         &mut self,
-        cx: &mut dyn LowerCx,
+        cx: &mut LowerCx<'_>,
+        fb: &mut FnBuilder,
+        binding: &str,
+        index: Option<Handle<Expression>>,
+        span: Span,
+    ) -> Result<Handle<Expression>, LowerError> {
+        let g = self
+            .generated
+            .binding(cx, self.program, abi_binding(binding)?)?;
+        let gp = fb.expr(Expression::GlobalVariable(g), span);
+        let ptr = match index {
+            Some(i) => fb.expr(Expression::Access { base: gp, index: i }, span),
+            None => gp,
+        };
+        Ok(fb.load(ptr, span))
+    }
+
+    /// Lowers a call of a framework intrinsic (a function of `rtc:abi`).
+    fn framework_call(
+        &mut self,
+        cx: &mut LowerCx<'_>,
         fb: &mut FnBuilder,
         callee: FnId,
         args: &[Handle<Expression>],
         span: Span,
-    ) -> Result<Option<Handle<Expression>>, String> {
+    ) -> Result<Option<Handle<Expression>>, LowerError> {
         let program = self.program;
         let func = &program.functions[callee];
         let name = func.name.as_str();
-        let load_binding = |this: &mut Self,
-                            cx: &mut dyn LowerCx,
-                            fb: &mut FnBuilder,
-                            binding: &str,
-                            index: Option<Handle<Expression>>| {
-            let g = this.generated.binding(cx, program, abi_binding(binding)?)?;
-            let gp = fb.expr(Expression::GlobalVariable(g), span);
-            let ptr = match index {
-                Some(i) => fb.expr(Expression::Access { base: gp, index: i }, span),
-                None => gp,
-            };
-            Ok::<_, String>(fb.load(ptr, span))
-        };
         let arg = |i: usize| {
             args.get(i)
                 .copied()
-                .ok_or_else(|| format!("`{name}` lacks argument {i}"))
+                .ok_or_else(|| kernel_error(format!("`{name}` lacks argument {i}")))
         };
         let value = match name {
-            "load_frame" => load_binding(self, cx, fb, "frame", None)?,
-            "load_tile" => load_binding(self, cx, fb, "tile", None)?,
-            "load_node" => load_binding(self, cx, fb, "nodes", Some(arg(0)?))?,
-            "load_instance" => load_binding(self, cx, fb, "instances", Some(arg(0)?))?,
-            "load_triangle_vertex" => load_binding(self, cx, fb, "triangles", Some(arg(0)?))?,
-            "load_attribute" => load_binding(self, cx, fb, "attributes", Some(arg(0)?))?,
-            "load_param" => load_binding(self, cx, fb, "params", Some(arg(0)?))?,
-            "load_texel" => load_binding(self, cx, fb, "texels", Some(arg(0)?))?,
+            "load_frame" => self.load_binding(cx, fb, "frame", None, span)?,
+            "load_tile" => self.load_binding(cx, fb, "tile", None, span)?,
+            "load_node" => self.load_binding(cx, fb, "nodes", Some(arg(0)?), span)?,
+            "load_instance" => self.load_binding(cx, fb, "instances", Some(arg(0)?), span)?,
+            "load_triangle_vertex" => {
+                self.load_binding(cx, fb, "triangles", Some(arg(0)?), span)?
+            }
+            "load_attribute" => self.load_binding(cx, fb, "attributes", Some(arg(0)?), span)?,
+            "load_param" => self.load_binding(cx, fb, "params", Some(arg(0)?), span)?,
+            "load_texel" => self.load_binding(cx, fb, "texels", Some(arg(0)?), span)?,
             "accumulate" => {
                 self.accumulate(cx, fb, arg(0)?, arg(1)?, arg(2)?, span)?;
                 return Ok(None);
@@ -210,7 +244,7 @@ impl KernelCx<'_> {
                 return Ok(None);
             }
             "rng_load" | "rng_store" => {
-                let u = TypeCache::scalar(cx.module(), Scalar::U32);
+                let u = TypeCache::scalar(cx.module_mut(), Scalar::U32);
                 let g = self.generated.private(cx, "rng_state", u);
                 let p = fb.expr(Expression::GlobalVariable(g), span);
                 if name == "rng_store" {
@@ -257,31 +291,127 @@ impl KernelCx<'_> {
             }
             _ => {
                 let Some(kind) = name.strip_prefix("call_").and_then(ProgramKind::from_name) else {
-                    return Err(format!("unknown framework intrinsic `{name}`"));
+                    return Err(kernel_error(format!(
+                        "unknown framework intrinsic `{name}`"
+                    )));
                 };
-                let params: Vec<_> = func.params[2..]
+                let params: Vec<(String, TypeId)> = func
+                    .params
                     .iter()
+                    .skip(2)
                     .map(|&l| (func.body.locals[l].name.clone(), func.body.locals[l].ty))
                     .collect();
-                let ret = (func.ret != crate::sema::types::TypeTable::VOID).then_some(func.ret);
-                let d = self
-                    .generated
-                    .dispatcher(cx, program, self.linked, kind, &params, ret)?;
+                let ret = (func.ret != TypeTable::VOID).then_some(func.ret);
+                let d = self.dispatcher(cx, kind, &params, ret)?;
                 return Ok(fb.call(d, args.to_vec(), ret.is_some(), span));
             }
         };
         Ok(Some(value))
     }
 
+    /// The dispatcher of a program kind for the linked scene: `dispatch_<kind>(type_id, offset, args…)`.
+    ///
+    /// `params` are its parameters after `type_id` and `offset`, as the framework intrinsic
+    /// `call_<kind>` declares them; `result` its result type. A kind with one program is a direct
+    /// call; with none, the dispatcher returns zero.
+    fn dispatcher(
+        &mut self,
+        cx: &mut LowerCx<'_>,
+        kind: ProgramKind,
+        params: &[(String, TypeId)],
+        result: Option<TypeId>,
+    ) -> Result<Handle<naga::Function>, LowerError> {
+        if let Some(&f) = self.generated.dispatchers.get(&kind) {
+            return Ok(f);
+        }
+        let program = self.program;
+        // Lower the programs and their loaders first: callees must precede the dispatcher.
+        let mut cases = Vec::new();
+        let programs: Vec<_> = self
+            .linked
+            .programs()
+            .filter(|(k, _, _)| *k == kind)
+            .map(|(_, f, t)| (f, t.struct_id, t.id))
+            .collect();
+        for (func, struct_id, id) in programs {
+            let loader = self.generated.loader(cx, program, struct_id)?;
+            let f = cx.ensure_function(func, self)?;
+            let arity = program.functions[func].params.len();
+            cases.push((id, loader, f, arity));
+        }
+        let u32_ty = TypeCache::scalar(cx.module_mut(), Scalar::U32);
+        let mut args: Vec<(String, Handle<naga::Type>)> =
+            vec![("type_id".into(), u32_ty), ("offset".into(), u32_ty)];
+        for (n, t) in params {
+            args.push((n.clone(), cx.ty(*t)?));
+        }
+        let result_ty = match result {
+            Some(t) => Some(cx.ty(t)?),
+            None => None,
+        };
+        let arg_refs: Vec<(&str, Handle<naga::Type>)> =
+            args.iter().map(|(n, t)| (n.as_str(), *t)).collect();
+        let mut fb = FnBuilder::new(&format!("dispatch_{}", kind.name()), &arg_refs, result_ty);
+        let type_id = fb.arg(0);
+        let offset = fb.arg(1);
+        let rest: Vec<_> = (0..params.len() as u32).map(|i| fb.arg(i + 2)).collect();
+        let call_case = |fb: &mut FnBuilder, loader, f, arity: usize| {
+            let instance = fb.call(loader, vec![offset], true, Span::UNDEFINED);
+            let mut call_args: Vec<_> = instance.into_iter().collect();
+            call_args.extend(rest.iter().copied().take(arity.saturating_sub(1)));
+            let r = fb.call(f, call_args, result_ty.is_some(), Span::UNDEFINED);
+            fb.stmt(Statement::Return { value: r }, Span::UNDEFINED);
+        };
+        match cases.as_slice() {
+            [] => {}
+            [(_, loader, f, arity)] => call_case(&mut fb, *loader, *f, *arity),
+            many => {
+                let mut switch_cases = Vec::new();
+                for (id, loader, f, arity) in many {
+                    fb.push_block();
+                    call_case(&mut fb, *loader, *f, *arity);
+                    let body = fb.pop_block();
+                    switch_cases.push(SwitchCase {
+                        value: SwitchValue::U32(*id),
+                        body,
+                        fall_through: false,
+                    });
+                }
+                switch_cases.push(SwitchCase {
+                    value: SwitchValue::Default,
+                    body: naga::Block::new(),
+                    fall_through: false,
+                });
+                fb.stmt(
+                    Statement::Switch {
+                        selector: type_id,
+                        cases: switch_cases,
+                    },
+                    Span::UNDEFINED,
+                );
+            }
+        }
+        if !fb.terminated() {
+            let zero = result_ty.map(|t| fb.expr(Expression::ZeroValue(t), Span::UNDEFINED));
+            fb.stmt(Statement::Return { value: zero }, Span::UNDEFINED);
+        }
+        let f = cx
+            .module_mut()
+            .functions
+            .append(fb.finish(), Span::UNDEFINED);
+        self.generated.dispatchers.insert(kind, f);
+        Ok(f)
+    }
+
     fn accumulate(
         &mut self,
-        cx: &mut dyn LowerCx,
+        cx: &mut LowerCx<'_>,
         fb: &mut FnBuilder,
         pixel: Handle<Expression>,
         value: Handle<Expression>,
         nonfinite: Handle<Expression>,
         span: Span,
-    ) -> Result<(), String> {
+    ) -> Result<(), LowerError> {
         let program = self.program;
         let accum = self.generated.binding(cx, program, abi_binding("accum")?)?;
         let g = fb.expr(Expression::GlobalVariable(accum), span);
@@ -340,16 +470,16 @@ impl KernelCx<'_> {
 
     fn write_bounds(
         &mut self,
-        cx: &mut dyn LowerCx,
+        cx: &mut LowerCx<'_>,
         fb: &mut FnBuilder,
         index: Handle<Expression>,
         min: Handle<Expression>,
         max: Handle<Expression>,
         span: Span,
-    ) -> Result<(), String> {
+    ) -> Result<(), LowerError> {
         let program = self.program;
         let accum = self.generated.binding(cx, program, abi_binding("accum")?)?;
-        let v4 = TypeCache::vector(cx.module(), VectorSize::Quad, Scalar::F32);
+        let v4 = TypeCache::vector(cx.module_mut(), VectorSize::Quad, Scalar::F32);
         let one = fb.expr(Expression::Literal(Literal::F32(1.0)), span);
         let two = lit_u32(fb, 2);
         let at = fb.expr(

@@ -12,6 +12,7 @@
 //! The result, [`CompiledScene`], is what `rtc compile` writes out and what the runtime runs.
 
 pub mod dispatch;
+mod entry;
 pub mod generated;
 pub mod intrinsics;
 pub mod manifest;
@@ -20,7 +21,9 @@ use crate::abi::BindingDesc;
 use crate::diag::Diagnostic;
 use crate::driver::{Checked, Options};
 use crate::link::{LinkOptions, Linked};
-use crate::sema::hir::SceneId;
+use crate::lower::{LowerError, Lowerer};
+use crate::sema::hir::{Program, ProgramKind, SceneId};
+use intrinsics::KernelHooks;
 use std::path::PathBuf;
 
 /// A compiled scene: the checked program, the link plan and the kernel modules.
@@ -142,6 +145,22 @@ fn scene_choice_diagnostic(
     })
 }
 
+/// Writes the scene's program registry (`rtc.registry.json` beside its file) if it changed.
+pub fn save_registry(c: &CompiledScene) -> std::io::Result<()> {
+    let Some(program) = c.checked.program.as_ref() else {
+        return Ok(());
+    };
+    let path = registry_path(program, c.scene);
+    let (mut registry, _) = crate::link::registry::Registry::load(&path);
+    // Re-linking against the file's registry records exactly the ids this compile used.
+    let _ = crate::link::link(program, c.scene, &mut registry, &LinkOptions::default());
+    let text = registry.to_json();
+    if std::fs::read_to_string(&path).ok().as_deref() == Some(text.as_str()) {
+        return Ok(());
+    }
+    std::fs::write(path, text)
+}
+
 /// The registry file of a scene: `rtc.registry.json` in the folder of the file that declares it.
 pub fn registry_path(program: &crate::sema::hir::Program, scene: SceneId) -> PathBuf {
     let module = &program.modules[program.scenes[scene].module.index()];
@@ -160,11 +179,95 @@ pub fn compile_scene(
     options: &Options,
     link_options: &LinkOptions,
 ) -> Result<CompiledScene, Box<CompileFailure>> {
-    let _ = (paths, scene, options, link_options);
-    Err(Box::new(CompileFailure {
-        checked: Checked::default(),
-        diagnostics: Vec::new(),
-    }))
+    let (checked, scene_id, linked) = check_with_kernel(paths, scene, options, link_options)?;
+    let built = match checked.program.as_ref() {
+        Some(program) => lower_kernels(program, &checked.sources, &linked),
+        None => Err(dispatch::kernel_error("the checked program is missing")),
+    };
+    match built {
+        Ok((render, bounds, bindings)) => {
+            let samples_per_pass = checked
+                .program
+                .as_ref()
+                .and_then(|p| {
+                    let cam = p.scenes[scene_id].camera.as_ref()?;
+                    p.program_for(cam.struct_id, ProgramKind::RayGeneration)
+                        .map(|e| e.samples.max(1))
+                })
+                .unwrap_or(1);
+            Ok(CompiledScene {
+                checked,
+                scene: scene_id,
+                linked,
+                render,
+                bounds,
+                bindings,
+                samples_per_pass,
+            })
+        }
+        Err(e) => {
+            let d = match checked.program.as_ref() {
+                Some(p) => e.to_diagnostic(p),
+                None => Diagnostic::error(
+                    crate::diag::codes::ICE,
+                    e.to_string(),
+                    crate::source::Span::default(),
+                ),
+            };
+            Err(Box::new(CompileFailure {
+                checked,
+                diagnostics: vec![d],
+            }))
+        }
+    }
+}
+
+/// Phases 4 and 5: lowers the render kernel (and the bounds kernel when the scene has custom geometry)
+/// and validates them.
+fn lower_kernels(
+    program: &Program,
+    sources: &crate::source::SourceMap,
+    linked: &Linked,
+) -> Result<
+    (
+        naga::Module,
+        Option<naga::Module>,
+        Vec<&'static BindingDesc>,
+    ),
+    LowerError,
+> {
+    let render_pixel = intrinsics::kernel_fn(program, "render_pixel")?;
+    let mut hooks = KernelHooks {
+        program,
+        linked,
+        config: linked.config,
+        generated: dispatch::Generated::default(),
+    };
+    let mut cx = Lowerer::new(program, sources);
+    let f = cx.ensure_function(render_pixel, &mut hooks)?;
+    entry::render_entry(&mut cx, &mut hooks, f)?;
+    let bindings = hooks.generated.used_bindings();
+    let render = cx.into_module();
+    crate::lower::validate(&render, sources)?;
+
+    let bounds = if linked.config.has_custom_geometry {
+        let compute_bounds = intrinsics::kernel_fn(program, "compute_bounds")?;
+        let mut hooks = KernelHooks {
+            program,
+            linked,
+            config: linked.config,
+            generated: dispatch::Generated::default(),
+        };
+        let mut cx = Lowerer::new(program, sources);
+        let f = cx.ensure_function(compute_bounds, &mut hooks)?;
+        entry::bounds_entry(&mut cx, f)?;
+        let module = cx.into_module();
+        crate::lower::validate(&module, sources)?;
+        Some(module)
+    } else {
+        None
+    };
+    Ok((render, bounds, bindings))
 }
 
 #[cfg(test)]
@@ -172,12 +275,20 @@ mod tests {
     use super::*;
 
     fn example(name: &str) -> PathBuf {
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples").join(name).join("scene.rt")
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../examples")
+            .join(name)
+            .join("scene.rt")
     }
 
     #[test]
     fn the_kernel_checks_with_a_scene() {
-        let r = check_with_kernel(&[example("hello")], None, &Options::default(), &LinkOptions::default());
+        let r = check_with_kernel(
+            &[example("hello")],
+            None,
+            &Options::default(),
+            &LinkOptions::default(),
+        );
         match r {
             Ok((checked, _, linked)) => {
                 assert!(checked.program.is_some());
@@ -188,6 +299,31 @@ mod tests {
                 "{}",
                 crate::diag::render_human(&f.checked.sources, &f.diagnostics, false)
             ),
+        }
+    }
+}
+
+#[cfg(test)]
+mod compile_tests {
+    use super::*;
+    use crate::back::Target;
+
+    #[test]
+    fn hello_compiles_to_every_target() {
+        let path =
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/hello/scene.rt");
+        let c = match compile_scene(&[path], None, &Options::default(), &LinkOptions::default()) {
+            Ok(c) => c,
+            Err(f) => panic!(
+                "{}",
+                crate::diag::render_human(&f.checked.sources, &f.diagnostics, false)
+            ),
+        };
+        let resources = crate::abi::resources(c.bindings.iter().copied());
+        for t in Target::ALL {
+            if let Err(e) = crate::back::write(&c.render, t, RENDER_ENTRY, &resources) {
+                panic!("{}: {e}", t.name());
+            }
         }
     }
 }
