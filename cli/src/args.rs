@@ -1,0 +1,65 @@
+//! The command line's clap definitions: the top-level [`Cli`], the options every subcommand shares
+//! ([`GlobalArgs`]) and the choice of colour. Each subcommand's own arguments live in its module under
+//! `cmd/`.
+
+use crate::cmd::Command;
+use clap::{Args, Parser, ValueEnum};
+use std::path::PathBuf;
+
+/// rtc: a compiler and runtime for programmable ray tracing on any GPU.
+#[derive(Debug, Parser)]
+#[command(name = "rtc", version, propagate_version = true)]
+#[command(subcommand_required = true, arg_required_else_help = true)]
+pub struct Cli {
+    /// Options shared by every subcommand.
+    #[command(flatten)]
+    pub global: GlobalArgs,
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// Options shared by every subcommand.
+#[derive(Debug, Args)]
+pub struct GlobalArgs {
+    /// When to colour the output: `auto` colours when stderr is a terminal and `NO_COLOR` is unset.
+    #[arg(long, value_enum, default_value_t = ColorChoice::Auto, global = true)]
+    pub color: ColorChoice,
+    /// The standard library folder (`std/…` imports); defaults to `RTC_STDLIB` or the built-in one.
+    #[arg(long, value_name = "DIR", global = true)]
+    pub stdlib: Option<PathBuf>,
+    /// Panic on purpose after parsing the arguments, to test the internal-error path.
+    #[arg(long, global = true, hide = true)]
+    pub debug_force_ice: bool,
+}
+
+/// `--color`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ColorChoice {
+    /// Colour when writing to a terminal and `NO_COLOR` is not set.
+    Auto,
+    /// Always colour.
+    Always,
+    /// Never colour.
+    Never,
+}
+
+/// `--message-format`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum MessageFormat {
+    /// rustc-style text on stderr.
+    Human,
+    /// One JSON object per diagnostic and line, on stdout.
+    Json,
+}
+
+impl GlobalArgs {
+    /// The compiler options these arguments ask for.
+    pub fn compiler_options(&self) -> rtc_compiler::driver::Options {
+        let mut options = rtc_compiler::driver::Options::default();
+        if let Some(dir) = &self.stdlib {
+            options.stdlib_dir = dir.clone();
+        }
+        options
+    }
+}

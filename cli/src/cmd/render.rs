@@ -1,0 +1,350 @@
+//! `rtc render <scene.rt> -o out.png|out.exr`: compiles a scene for this GPU, renders it and writes
+//! the image.
+//!
+//! Order of work: the output format and the flags are checked first (a usage error, exit code 2,
+//! before anything is compiled); then the scene is compiled (errors are diagnostics, exit code 1,
+//! without touching the GPU); then the adapter is chosen and printed; then the runtime builds the
+//! scene (assets, BVHs, uploads, pipelines) and renders, with a progress bar on stderr when there
+//! are more than a few tiles. At the end it prints the adapter, BVH build, upload and render times
+//! and primary rays per second on stdout.
+//!
+//! Failures of the runtime (no adapter, an asset that cannot be loaded, a device limit) are printed
+//! as one `error:` line (an unreadable asset as an E0902 diagnostic at the scene's string) and exit
+//! with code 1. Nothing here panics on bad input; the process is never exited from here.
+
+use super::Context;
+use crate::args::MessageFormat;
+use crate::exit::Exit;
+use crate::{report, term};
+use rtc_compiler::kernel::compile_scene;
+use rtc_compiler::link::LinkOptions;
+use rtc_runtime::gpu::{AdapterChoice, Gpu};
+use rtc_runtime::image_out::{write_exr, write_png, ToneMap};
+use rtc_runtime::render::{BuildPreset, RenderError, RenderOptions, RenderStats, Renderer};
+use std::path::{Path, PathBuf};
+use std::str::FromStr;
+
+/// More tiles than this get a progress bar.
+const PROGRESS_MIN_TILES: u64 = 4;
+
+/// Arguments of `rtc render`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The scene file (the files it imports are read too).
+    #[arg(value_name = "SCENE")]
+    pub path: PathBuf,
+    /// The image to write: `.png` (8-bit sRGB, values clipped to 1) or `.exr` (linear float).
+    #[arg(short, long, value_name = "FILE")]
+    pub output: PathBuf,
+    /// Image size instead of the scene's `width` and `height`, as `WIDTHxHEIGHT`.
+    #[arg(long, value_name = "WxH")]
+    pub size: Option<Size>,
+    /// Samples per pixel instead of the scene's `samples`.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    pub spp: Option<u32>,
+    /// Which scene to render when the file declares several.
+    #[arg(long, value_name = "NAME")]
+    pub scene: Option<String>,
+    /// The GPU: `auto`, `cpu`, a backend (`vulkan`, `metal`, `dx12`, `gl`) and/or part of the
+    /// adapter's name, comma-separated (e.g. `gl,llvmpipe`).
+    #[arg(long, value_name = "CHOICE", default_value = "auto")]
+    pub adapter: String,
+    /// BVH builder preset: `fast` builds quickly; `quality` traces faster on large triangles.
+    #[arg(long, value_enum, default_value_t = BvhPreset::Fast)]
+    pub bvh: BvhPreset,
+}
+
+/// `--bvh`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum BvhPreset {
+    /// Binned SAH.
+    Fast,
+    /// Finer binning and spatial splits.
+    Quality,
+}
+
+impl From<BvhPreset> for BuildPreset {
+    fn from(p: BvhPreset) -> Self {
+        match p {
+            BvhPreset::Fast => BuildPreset::Fast,
+            BvhPreset::Quality => BuildPreset::Quality,
+        }
+    }
+}
+
+/// `--size WxH`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Size {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+}
+
+impl FromStr for Size {
+    type Err = String;
+
+    fn from_str(text: &str) -> Result<Size, String> {
+        let bad = || format!("`{text}` is not a size; write WIDTHxHEIGHT, e.g. 640x480");
+        let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
+        let parse = |s: &str| {
+            s.trim()
+                .parse::<u32>()
+                .ok()
+                .filter(|&n| (1..=16384).contains(&n))
+        };
+        match (parse(w), parse(h)) {
+            (Some(width), Some(height)) => Ok(Size { width, height }),
+            _ => Err(format!(
+                "`{text}`: width and height must be whole numbers from 1 to 16384"
+            )),
+        }
+    }
+}
+
+/// The output formats, by extension.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Format {
+    Png,
+    Exr,
+}
+
+fn output_format(path: &Path) -> Option<Format> {
+    let ext = path.extension()?.to_str()?.to_ascii_lowercase();
+    match ext.as_str() {
+        "png" => Some(Format::Png),
+        "exr" => Some(Format::Exr),
+        _ => None,
+    }
+}
+
+/// Runs `rtc render`.
+pub fn run(args: &Args, ctx: &Context) -> Exit {
+    let Some(format) = output_format(&args.output) else {
+        return report::usage_error(
+            &format!(
+                "cannot write `{}`: the output must end in `.png` or `.exr`",
+                args.output.display()
+            ),
+            ctx.color,
+        );
+    };
+    let choice = match AdapterChoice::from_str(&args.adapter) {
+        Ok(c) => c,
+        Err(e) => return report::usage_error(&e.to_string(), ctx.color),
+    };
+
+    let compiled = match compile_scene(
+        std::slice::from_ref(&args.path),
+        args.scene.as_deref(),
+        &ctx.options,
+        &LinkOptions::default(),
+    ) {
+        Ok(c) => c,
+        Err(failure) => {
+            let exit = report::diagnostics(
+                &failure.checked.sources,
+                &failure.diagnostics,
+                MessageFormat::Human,
+                ctx.color,
+                "render",
+            );
+            if exit == Exit::Success {
+                // No error was reported, yet nothing was compiled: never exit 0 for that.
+                return fail(
+                    &format!("`{}` could not be compiled", args.path.display()),
+                    ctx,
+                );
+            }
+            return Exit::Failure;
+        }
+    };
+    if !compiled.checked.diagnostics.is_empty() {
+        // Warnings only (errors would have failed the compile).
+        report::diagnostics(
+            &compiled.checked.sources,
+            &compiled.checked.diagnostics,
+            MessageFormat::Human,
+            ctx.color,
+            "render",
+        );
+    }
+
+    let gpu = match Gpu::new(&choice) {
+        Ok(gpu) => gpu,
+        Err(e) => return fail(&e.to_string(), ctx),
+    };
+    term::print(&format!("adapter: {}\n", gpu.description()));
+
+    let options = RenderOptions {
+        size: args.size.map(|s| [s.width, s.height]),
+        samples: args.spp,
+        bvh: args.bvh.into(),
+        ..RenderOptions::default()
+    };
+    let rendered = Renderer::new(&gpu, &compiled, options).and_then(|mut renderer| {
+        let total = renderer.total_tiles();
+        let bar = progress_bar(total);
+        let result = renderer.render(&mut |done, total| {
+            if let Some(bar) = &bar {
+                bar.set_length(total);
+                bar.set_position(done);
+            }
+        });
+        if let Some(bar) = bar {
+            bar.finish_and_clear();
+        }
+        result
+    });
+    let result = match rendered {
+        Ok(r) => r,
+        Err(e) => return render_failure(&e, &compiled.checked.sources, ctx),
+    };
+
+    let written = match format {
+        Format::Png => write_png(&args.output, &result.image, &ToneMap::default()),
+        Format::Exr => write_exr(&args.output, &result.image),
+    };
+    let write_report = match written {
+        Ok(r) => r,
+        Err(e) => return fail(&e.to_string(), ctx),
+    };
+    for w in &result.stats.warnings {
+        warn(w, ctx);
+    }
+    if result.stats.nonfinite_samples > 0 {
+        warn(
+            &format!(
+                "{} samples were NaN or infinite and counted as zero",
+                result.stats.nonfinite_samples
+            ),
+            ctx,
+        );
+    }
+    if write_report.nonfinite_pixels > 0 {
+        warn(
+            &format!(
+                "{} pixels were not finite and were written as black",
+                write_report.nonfinite_pixels
+            ),
+            ctx,
+        );
+    }
+    term::print(&summary(&result.stats, &args.output));
+    Exit::Success
+}
+
+/// A progress bar on stderr for renders of more than a few tiles (hidden when stderr is not a
+/// terminal, by indicatif).
+fn progress_bar(total: u64) -> Option<indicatif::ProgressBar> {
+    if total <= PROGRESS_MIN_TILES {
+        return None;
+    }
+    let bar = indicatif::ProgressBar::with_draw_target(
+        Some(total),
+        indicatif::ProgressDrawTarget::stderr(),
+    );
+    if let Ok(style) = indicatif::ProgressStyle::with_template(
+        "rendering {bar:40} {pos}/{len} tiles  {elapsed_precise} (eta {eta})",
+    ) {
+        bar.set_style(style);
+    }
+    Some(bar)
+}
+
+/// The closing report, one figure per line.
+pub fn summary(s: &RenderStats, output: &Path) -> String {
+    let mut out = String::new();
+    out.push_str(&format!("adapter: {}\n", s.adapter));
+    out.push_str(&format!(
+        "rendered {}x{} at {} spp ({} pass{} of {}) to {}\n",
+        s.width,
+        s.height,
+        s.samples,
+        s.passes,
+        if s.passes == 1 { "" } else { "es" },
+        s.samples_per_pass,
+        output.display()
+    ));
+    out.push_str(&format!(
+        "  bvh build {:>10.2} ms  ({} mesh{}, {} triangles, {} objects)\n",
+        s.bvh_build_ms,
+        s.meshes,
+        if s.meshes == 1 { "" } else { "es" },
+        s.triangles,
+        s.objects
+    ));
+    out.push_str(&format!(
+        "  upload    {:>10.2} ms  ({:.2} MB)\n",
+        s.upload_ms,
+        s.bytes_uploaded as f64 / 1e6
+    ));
+    out.push_str(&format!(
+        "  render    {:>10.2} ms  ({:.2} M primary rays/s)\n",
+        s.render_ms,
+        s.rays_per_second / 1e6
+    ));
+    out
+}
+
+fn fail(message: &str, ctx: &Context) -> Exit {
+    term::eprint(&format!(
+        "{}: {message}\n",
+        term::paint("error", 31, ctx.color)
+    ));
+    Exit::Failure
+}
+
+fn warn(message: &str, ctx: &Context) {
+    term::eprint(&format!(
+        "{}: {message}\n",
+        term::paint("warning", 33, ctx.color)
+    ));
+}
+
+/// A runtime failure: a diagnostic when it points into the scene (E0902), else one line.
+fn render_failure(e: &RenderError, sources: &rtc_compiler::SourceMap, ctx: &Context) -> Exit {
+    if let RenderError::Scene(scene) = e {
+        if let Some(d) = scene.to_diagnostic() {
+            return report::diagnostics(
+                sources,
+                std::slice::from_ref(&d),
+                MessageFormat::Human,
+                ctx.color,
+                "render",
+            );
+        }
+    }
+    fail(&e.to_string(), ctx)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_parse_and_bad_ones_say_why() {
+        assert_eq!(
+            "640x480".parse::<Size>(),
+            Ok(Size {
+                width: 640,
+                height: 480
+            })
+        );
+        assert_eq!(
+            "2X3".parse::<Size>().map(|s| (s.width, s.height)),
+            Ok((2, 3))
+        );
+        assert!("640".parse::<Size>().unwrap_err().contains("WIDTHxHEIGHT"));
+        assert!("0x5".parse::<Size>().unwrap_err().contains("1 to 16384"));
+        assert!("axb".parse::<Size>().is_err());
+    }
+
+    #[test]
+    fn output_formats_by_extension() {
+        assert_eq!(output_format(Path::new("a.png")), Some(Format::Png));
+        assert_eq!(output_format(Path::new("a.EXR")), Some(Format::Exr));
+        assert_eq!(output_format(Path::new("a.jpg")), None);
+        assert_eq!(output_format(Path::new("a")), None);
+    }
+}

@@ -1,0 +1,232 @@
+//! End-to-end tests of the `rtc` binary: exit codes (0 clean, 1 user errors, 2 usage errors, 101 only
+//! for an internal error), the summary line, `--message-format json`, `--color`, `--version`, `help`,
+//! and that no bad input (every UI case, garbage, invalid UTF-8, deep nesting) ever reaches the
+//! internal-error path.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn rtc(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rtc"))
+        .args(args)
+        .env_remove("NO_COLOR")
+        .output()
+        .expect("run rtc")
+}
+
+fn code(out: &Output) -> i32 {
+    out.status.code().unwrap_or(-1)
+}
+
+fn stderr(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+fn repo() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("the cli crate is in the repository")
+        .to_path_buf()
+}
+
+/// A scratch folder for this test process.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("rtc-cli-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("create a scratch folder");
+    dir
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().expect("UTF-8 path")
+}
+
+#[test]
+fn version_and_help() {
+    let out = rtc(&["--version"]);
+    assert_eq!(code(&out), 0);
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout),
+        format!("rtc {}\n", env!("CARGO_PKG_VERSION"))
+    );
+    let out = rtc(&["help"]);
+    assert_eq!(code(&out), 0);
+    assert!(String::from_utf8_lossy(&out.stdout).contains("check"));
+    let out = rtc(&["help", "check"]);
+    assert_eq!(code(&out), 0);
+    assert!(String::from_utf8_lossy(&out.stdout).contains("--message-format"));
+}
+
+#[test]
+fn usage_errors_exit_with_2() {
+    let empty = scratch("empty");
+    let cases: &[&[&str]] = &[
+        &[],
+        &["check"],
+        &["frobnicate"],
+        &["check", "--bogus", "x.rt"],
+        &["check", "--color", "sometimes", "x.rt"],
+        &["check", "--message-format", "xml", "x.rt"],
+        &["check", "definitely/not/here.rt"],
+        &["check", s(&empty)],
+    ];
+    for args in cases {
+        let out = rtc(args);
+        assert_eq!(code(&out), 2, "rtc {args:?}: {}", stderr(&out));
+        assert!(!stderr(&out).is_empty(), "rtc {args:?} said nothing");
+    }
+    let _ = std::fs::remove_dir_all(&empty);
+}
+
+#[test]
+fn clean_input_exits_0() {
+    let out = rtc(&["check", s(&repo().join("stdlib"))]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert!(!stderr(&out).contains("error"), "{}", stderr(&out));
+}
+
+#[test]
+fn errors_exit_1_with_a_summary_line() {
+    let dir = scratch("errors");
+    let file = dir.join("bad.rt");
+    std::fs::write(&file, "fn f() -> f32 { return $; }\n").expect("write");
+    let out = rtc(&["--color", "never", "check", s(&file)]);
+    let err = stderr(&out);
+    assert_eq!(code(&out), 1, "{err}");
+    assert!(err.contains("error[E"), "{err}");
+    let last = err.lines().last().unwrap_or_default();
+    assert!(last.starts_with("error: could not check: "), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn json_lines_on_stdout() {
+    let dir = scratch("json");
+    let file = dir.join("bad.rt");
+    std::fs::write(&file, "fn f() -> f32 { return $; }\n").expect("write");
+    let out = rtc(&["check", "--message-format", "json", s(&file)]);
+    assert_eq!(code(&out), 1, "{}", stderr(&out));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(!stdout.is_empty());
+    for line in stdout.lines() {
+        let v: serde_json::Value = serde_json::from_str(line).expect("each line is JSON");
+        for key in ["severity", "code", "message", "primary", "rendered"] {
+            assert!(v.get(key).is_some(), "no `{key}` in {line}");
+        }
+    }
+    // Only the summary goes to stderr.
+    assert!(stderr(&out).starts_with("error: could not check: "));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn color_follows_the_flag_and_no_color() {
+    let missing = "definitely/not/here.rt";
+    let always = rtc(&["--color", "always", "check", missing]);
+    assert!(stderr(&always).contains("\x1b["), "{}", stderr(&always));
+    let never = rtc(&["--color", "never", "check", missing]);
+    assert!(!stderr(&never).contains('\x1b'));
+    // `auto` with stderr not a terminal (a pipe here): no colour.
+    let auto = rtc(&["check", missing]);
+    assert!(!stderr(&auto).contains('\x1b'));
+    let no_color = Command::new(env!("CARGO_BIN_EXE_rtc"))
+        .args(["--color", "auto", "check", missing])
+        .env("NO_COLOR", "1")
+        .output()
+        .expect("run rtc");
+    assert!(!stderr(&no_color).contains('\x1b'));
+}
+
+#[test]
+fn a_panic_becomes_an_ice_with_101() {
+    let out = rtc(&["--debug-force-ice", "check", "x.rt"]);
+    assert_eq!(code(&out), 101);
+    let err = stderr(&out);
+    assert!(err.contains("error[ICE]: internal compiler error"), "{err}");
+    assert!(err.contains("please report it"), "{err}");
+}
+
+/// Normal bad inputs end in diagnostics (exit 1) or success, never in the internal-error path.
+#[test]
+fn bad_inputs_never_reach_the_ice_path() {
+    let dir = scratch("bad");
+    let mut inputs: Vec<PathBuf> = Vec::new();
+    let mut write = |name: &str, bytes: &[u8]| {
+        let p = dir.join(name);
+        std::fs::write(&p, bytes).expect("write");
+        inputs.push(p);
+    };
+    write("empty.rt", b"");
+    write(
+        "garbage.rt",
+        b"@@@ $$$ fn ( { [ \"unterminated\n/* never closed",
+    );
+    write(
+        "invalid_utf8.rt",
+        &[0x66, 0x6e, 0x20, 0xff, 0xfe, 0x80, 0x28, 0x29],
+    );
+    write("nul.rt", b"fn f() {\0}");
+    write(
+        "deep_parens.rt",
+        format!(
+            "fn f() -> f32 {{ return {}1{}; }}",
+            "(".repeat(100_000),
+            ")".repeat(100_000)
+        )
+        .as_bytes(),
+    );
+    write(
+        "deep_blocks.rt",
+        format!(
+            "fn f() {{ {}{} }}",
+            "{".repeat(100_000),
+            "}".repeat(100_000)
+        )
+        .as_bytes(),
+    );
+    write(
+        "bad_import.rt",
+        b"import \"std/nothing/here.rt\";\nimport \"../../../../../../etc\";\n",
+    );
+    write("self_import.rt", b"import \"self_import.rt\";\n");
+    // Found by the fuzz test: a role struct that contains itself.
+    write("self_struct.rt", b"@material\nstruct M { m: M }\n");
+    write(
+        "mutual_structs.rt",
+        b"struct A { b: B }\nstruct B { a: A }\nfn f(a: A) {}\n",
+    );
+    let ui = repo().join("tests/ui");
+    inputs.extend(rt_files(&ui));
+    inputs.push(ui.clone());
+    let mut failures = Vec::new();
+    for input in &inputs {
+        let out = rtc(&["--color", "never", "check", s(input)]);
+        let c = code(&out);
+        if !(0..=2).contains(&c) || stderr(&out).contains("internal compiler error") {
+            failures.push(format!(
+                "{}: {}\n{}",
+                input.display(),
+                out.status,
+                stderr(&out)
+            ));
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+fn rt_files(dir: &Path) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    if let Ok(rd) = std::fs::read_dir(dir) {
+        for e in rd.flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                out.extend(rt_files(&p));
+            } else if p.extension().is_some_and(|x| x == "rt") {
+                out.push(p);
+            }
+        }
+    }
+    out.sort();
+    out
+}
