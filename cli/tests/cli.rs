@@ -230,3 +230,41 @@ fn rt_files(dir: &Path) -> Vec<PathBuf> {
     out.sort();
     out
 }
+
+/// `rtc compile` of a file with two scenes and no `--scene`: E0706 with the scene names.
+#[test]
+fn compile_with_two_scenes_needs_a_choice() {
+    let dir = scratch("two-scenes");
+    let file = dir.join("two.rt");
+    std::fs::write(
+        &file,
+        "import \"std/cameras/pinhole.rt\";\nimport \"std/materials/lambert.rt\";\n\
+         scene a { camera Pinhole {} object o { geometry: cube_mesh(), material: Lambert {} } }\n\
+         scene b { camera Pinhole {} object o { geometry: cube_mesh(), material: Lambert {} } }\n",
+    )
+    .unwrap();
+    let out = rtc(&["compile", s(&file), "--out", s(&dir.join("out"))]);
+    assert_eq!(code(&out), 1, "{}", stderr(&out));
+    let err = stderr(&out);
+    assert!(err.contains("error[E0706]") && err.contains("--scene"), "{err}");
+    let out = rtc(&["compile", s(&file), "--scene", "b", "--out", s(&dir.join("out"))]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    assert!(dir.join("out/kernel.wgsl").is_file() && dir.join("out/manifest.json").is_file());
+}
+
+/// `rtc compile` of a scene whose material type has no `@closest_hit` program: E0901 at the object.
+#[test]
+fn compile_reports_a_missing_program() {
+    let dir = scratch("missing-program");
+    let file = dir.join("scene.rt");
+    std::fs::write(
+        &file,
+        "import \"std/cameras/pinhole.rt\";\n@material struct Bare { a: f32 = 1.0 }\n\
+         scene s { camera Pinhole {} object o { geometry: cube_mesh(), material: Bare {} } }\n",
+    )
+    .unwrap();
+    let out = rtc(&["compile", s(&file), "--out", s(&dir.join("out"))]);
+    assert_eq!(code(&out), 1, "{}", stderr(&out));
+    let err = stderr(&out);
+    assert!(err.contains("error[E0901]") && err.contains("@closest_hit"), "{err}");
+}

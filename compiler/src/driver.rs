@@ -425,6 +425,8 @@ fn normalize(p: &Path) -> String {
                     out.push("..".to_string());
                 }
             }
+            // The root joins as a leading `/` (pushing "/" itself would give `//abs/path`).
+            Component::RootDir => out.push(String::new()),
             other => out.push(other.as_os_str().to_string_lossy().into_owned()),
         }
     }

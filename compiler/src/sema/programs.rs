@@ -115,6 +115,12 @@ fn struct_attrs(cx: &mut Ctx, id: StructId, item: &ast::Item) {
 
 /// Whether a type may be stored in scene data.
 pub(crate) fn storable(p: &hir::Program, ty: TypeId) -> bool {
+    storable_in(p, ty, &mut Vec::new())
+}
+
+/// [`storable`], with the structs being visited (a struct that contains itself is reported as
+/// recursion elsewhere; here it must not recurse forever).
+fn storable_in(p: &hir::Program, ty: TypeId, visiting: &mut Vec<hir::StructId>) -> bool {
     match p.types.get(ty) {
         Type::Error
         | Type::Scalar(_)
@@ -122,8 +128,16 @@ pub(crate) fn storable(p: &hir::Program, ty: TypeId) -> bool {
         | Type::Matrix { .. }
         | Type::Texture
         | Type::Mesh => true,
-        Type::Array { elem, .. } => storable(p, elem),
-        Type::Struct(s) => p.structs[s].fields.iter().all(|f| storable(p, f.ty)),
+        Type::Array { elem, .. } => storable_in(p, elem, visiting),
+        Type::Struct(s) => {
+            if visiting.contains(&s) {
+                return true;
+            }
+            visiting.push(s);
+            let ok = p.structs[s].fields.iter().all(|f| storable_in(p, f.ty, visiting));
+            visiting.pop();
+            ok
+        }
         Type::Void | Type::String => false,
     }
 }
