@@ -205,6 +205,180 @@ impl FnBuilder {
         &self.func
     }
 
+    /// Gives an expression a name (a `let` in the written code). The first name given wins; naming a
+    /// pre-emitted expression (a literal, an argument) has no visible effect in naga's writers.
+    pub fn name(&mut self, expr: Handle<Expression>, name: &str) {
+        self.func
+            .named_expressions
+            .entry(expr)
+            .or_insert_with(|| name.to_string());
+    }
+
+    /// A literal (pre-emitted). Callers make sure it is finite: naga rejects NaN and infinite literals.
+    pub fn literal(&mut self, value: naga::Literal) -> Handle<Expression> {
+        self.expr(Expression::Literal(value), Span::UNDEFINED)
+    }
+
+    /// `left op right`
+    pub fn binary(
+        &mut self,
+        op: naga::BinaryOperator,
+        left: Handle<Expression>,
+        right: Handle<Expression>,
+        span: Span,
+    ) -> Handle<Expression> {
+        self.expr(Expression::Binary { op, left, right }, span)
+    }
+
+    /// `op expr`
+    pub fn unary(
+        &mut self,
+        op: naga::UnaryOperator,
+        expr: Handle<Expression>,
+        span: Span,
+    ) -> Handle<Expression> {
+        self.expr(Expression::Unary { op, expr }, span)
+    }
+
+    /// A math function applied to one to four arguments (extra arguments are ignored).
+    pub fn math(
+        &mut self,
+        fun: naga::MathFunction,
+        args: &[Handle<Expression>],
+        span: Span,
+    ) -> Handle<Expression> {
+        let mut it = args.iter().copied();
+        let arg = it
+            .next()
+            .unwrap_or_else(|| self.literal(naga::Literal::F32(0.0)));
+        let (arg1, arg2, arg3) = (it.next(), it.next(), it.next());
+        self.expr(
+            Expression::Math {
+                fun,
+                arg,
+                arg1,
+                arg2,
+                arg3,
+            },
+            span,
+        )
+    }
+
+    /// `base.index` (a struct member, vector component or matrix column; also through pointers).
+    pub fn access_index(
+        &mut self,
+        base: Handle<Expression>,
+        index: u32,
+        span: Span,
+    ) -> Handle<Expression> {
+        self.expr(Expression::AccessIndex { base, index }, span)
+    }
+
+    /// `base[index]` with a computed index.
+    pub fn access(
+        &mut self,
+        base: Handle<Expression>,
+        index: Handle<Expression>,
+        span: Span,
+    ) -> Handle<Expression> {
+        self.expr(Expression::Access { base, index }, span)
+    }
+
+    /// A value of type `ty` made of `components`.
+    pub fn compose(
+        &mut self,
+        ty: Handle<Type>,
+        components: Vec<Handle<Expression>>,
+        span: Span,
+    ) -> Handle<Expression> {
+        self.expr(Expression::Compose { ty, components }, span)
+    }
+
+    /// A vector of `size` copies of the scalar `value`.
+    pub fn splat(
+        &mut self,
+        size: VectorSize,
+        value: Handle<Expression>,
+        span: Span,
+    ) -> Handle<Expression> {
+        self.expr(Expression::Splat { size, value }, span)
+    }
+
+    /// `accept` where `condition` holds, else `reject` (both evaluated).
+    pub fn select(
+        &mut self,
+        condition: Handle<Expression>,
+        accept: Handle<Expression>,
+        reject: Handle<Expression>,
+        span: Span,
+    ) -> Handle<Expression> {
+        self.expr(
+            Expression::Select {
+                condition,
+                accept,
+                reject,
+            },
+            span,
+        )
+    }
+
+    /// A conversion (`convert: Some(4)`) or a bit cast (`convert: None`) to `kind`.
+    pub fn cast(
+        &mut self,
+        expr: Handle<Expression>,
+        kind: naga::ScalarKind,
+        convert: Option<u8>,
+        span: Span,
+    ) -> Handle<Expression> {
+        self.expr(
+            Expression::As {
+                expr,
+                kind,
+                convert,
+            },
+            span,
+        )
+    }
+
+    /// `return value;`
+    pub fn ret(&mut self, value: Option<Handle<Expression>>, span: Span) {
+        self.stmt(Statement::Return { value }, span);
+    }
+
+    /// Declares a local variable with a source span; returns the pointer expression to it.
+    pub fn local_at(
+        &mut self,
+        name: &str,
+        ty: Handle<Type>,
+        init: Option<Handle<Expression>>,
+        span: Span,
+    ) -> Handle<Expression> {
+        let var = self.func.local_variables.append(
+            LocalVariable {
+                name: Some(name.to_string()),
+                ty,
+                init: None,
+            },
+            span,
+        );
+        let ptr = self.expr(Expression::LocalVariable(var), span);
+        if let Some(value) = init {
+            self.stmt(
+                Statement::Store {
+                    pointer: ptr,
+                    value,
+                },
+                span,
+            );
+        }
+        ptr
+    }
+
+    /// The number of nested blocks open (0 in the function body).
+    pub fn depth(&self) -> usize {
+        self.blocks.len() - 1
+    }
+
     /// Finishes the function.
     pub fn finish(mut self) -> Function {
         self.end_emit();
