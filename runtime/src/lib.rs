@@ -7,6 +7,12 @@
 //!   that re-upload only what changed ([`gpu::BufferSet`]), tiled dispatch with progress and
 //!   read-back ([`gpu::TileDispatcher`]).
 //! - [`image_out`]: linear RGBA `f32` images, EXR/PNG output and input, and image metrics.
+//! - [`assets`]: file formats in (OBJ, glTF, images), plain CPU-side meshes and textures out.
+//! - [`scene`]: a compiled scene's description → scene entities (meshes with their BVHs, objects,
+//!   packed parameters) → the GPU buffers the kernel reads; the module docs are the GPU scene
+//!   format.
+//! - [`render`]: from a `CompiledScene` to an image: entities, uploads, pipelines, passes of tiled
+//!   dispatch, read-back, statistics.
 //!
 //! Invariants of the whole crate: it never exits the process and never panics on run-time
 //! failures; every fallible operation returns a typed error (`thiserror` enums, one per module).
@@ -15,3 +21,5 @@
 pub mod assets;
 pub mod gpu;
 pub mod image_out;
+pub mod render;
+pub mod scene;

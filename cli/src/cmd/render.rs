@@ -275,6 +275,10 @@ pub fn summary(s: &RenderStats, output: &Path) -> String {
         s.objects
     ));
     out.push_str(&format!(
+        "  pipelines {:>10.2} ms  (kernel creation and the driver's compile)\n",
+        s.pipeline_ms
+    ));
+    out.push_str(&format!(
         "  upload    {:>10.2} ms  ({:.2} MB)\n",
         s.upload_ms,
         s.bytes_uploaded as f64 / 1e6

@@ -1,0 +1,862 @@
+//! The scene-entity stage: a scene description turned into plain CPU data ready for upload.
+//!
+//! [`Entities::build`] runs, in order:
+//! 1. refuse what cannot be rendered yet (glTF `model` entries) and check the camera;
+//! 2. load every asset once ([`AssetCache`]): object meshes, and every `mesh`/`texture` value in any
+//!    instance's fields;
+//! 3. build one BLAS per distinct mesh (counted in [`EntityStats::blas_builds`]), flatten it into
+//!    `nodes`, and encode its triangle slots (`encode.rs`);
+//! 4. concatenate the textures' texels;
+//! 5. write `params`: mesh and texture records, then every instance, then the light table;
+//! 6. validate the objects' transforms;
+//! 7. build the TLAS, unless custom-geometry bounds must come from the GPU first
+//!    ([`Entities::needs_bounds`]; the GPU stage calls [`Entities::set_custom_bounds`] and then
+//!    [`Entities::rebuild_tlas`]).
+//!
+//! Moving objects: [`Entities::set_transform`] changes one object and marks the TLAS stale;
+//! [`Entities::refresh`] rebuilds only the TLAS (never a BLAS), rewrites `instances` and the medium
+//! table, and bumps only the [`Versions`] of what changed, which is what the GPU stage compares.
+//!
+//! Invariants: every index written for the GPU fits a `u32` (checked, [`SceneError::TooLarge`]);
+//! `nodes[..tlas_root]` are the BLASes and never change after `build`; `instances` is in TLAS leaf
+//! order; versions come from one process-wide counter, so two `Entities` never share a version.
+
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::time::Instant;
+
+use glam::{Mat4, Vec3, Vec4};
+use rtc_bvh::{build, flatten, Aabb, BuildInput, BuildPreset, GpuNode};
+use rtc_compiler::link::Linked;
+use rtc_compiler::sema::hir::{
+    Geometry, Instance, Program, ProgramKind, SceneDesc, Settings, StructId,
+};
+use rtc_compiler::Span;
+
+use super::assets_cache::AssetCache;
+use super::encode::encode_mesh;
+use super::gpu_types::{FrameUniforms, GpuInstance};
+use super::params::ParamsBuilder;
+use super::SceneError;
+use crate::assets::TextureFormat;
+
+/// Options of the entity stage.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct EntityOptions {
+    /// The BVH builder preset, for every BLAS and the TLAS.
+    pub bvh: BuildPreset,
+}
+
+/// A type id and the word offset of an instance in `params`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct TypedOffset {
+    /// The type's id from the link plan.
+    pub type_id: u32,
+    /// Word offset in `params`.
+    pub offset: u32,
+}
+
+/// A distinct mesh with its BLAS (flattened into [`Entities::nodes`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshEntity {
+    /// What the scene named (a path, `cube_mesh()`, …).
+    pub source: String,
+    /// Vertices of the mesh.
+    pub vertices: u32,
+    /// Triangles of the mesh.
+    pub triangles: u32,
+    /// Triangle slots in `triangles` (more than `triangles` with spatial splits, fewer if some were
+    /// rejected as non-finite).
+    pub slots: u32,
+    /// Index of the BLAS root in `nodes`.
+    pub node_base: u32,
+    /// Nodes of the BLAS.
+    pub node_count: u32,
+    /// First triangle slot.
+    pub triangle_base: u32,
+    /// The mesh's object-space box (empty for a mesh without accepted triangles).
+    pub bounds: Aabb,
+    /// Depth of its BLAS.
+    pub depth: u32,
+}
+
+/// A texture in `texels`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TextureEntity {
+    /// What the scene named.
+    pub source: String,
+    /// Width in texels.
+    pub width: u32,
+    /// Height in texels.
+    pub height: u32,
+    /// Packing.
+    pub format: TextureFormat,
+    /// First word in `texels`.
+    pub texel_base: u32,
+}
+
+/// The object-space box of a custom geometry, as far as it is known.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CustomBounds {
+    /// Not computed yet (the bounds kernel has not run).
+    Unknown,
+    /// The program's box.
+    Known(Aabb),
+    /// The program returned no usable box (NaN, or min > max): the object is left out of the TLAS.
+    Invalid,
+}
+
+/// An object's geometry.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ObjectGeometry {
+    /// A triangle mesh: index into [`Entities::meshes`].
+    Mesh {
+        /// The mesh.
+        mesh: usize,
+    },
+    /// An instance of a `@geometry` struct.
+    Custom {
+        /// Its type id and parameters.
+        geometry: TypedOffset,
+        /// Its object-space box.
+        bounds: CustomBounds,
+    },
+}
+
+/// An object of the scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ObjectEntity {
+    /// Its name, if the scene gave one.
+    pub name: Option<String>,
+    /// The scene entry.
+    pub span: Span,
+    /// Its geometry.
+    pub geometry: ObjectGeometry,
+    /// Its material.
+    pub material: TypedOffset,
+    /// [`GpuInstance`] flags of the material.
+    pub flags: u32,
+    /// Object to world.
+    pub transform: Mat4,
+    /// World to object (the inverse of `transform`).
+    pub inverse: Mat4,
+}
+
+/// A light: type id and parameters (world space; lights have no transform).
+pub type LightEntity = TypedOffset;
+
+/// Version numbers of the data behind each buffer; a new number means new contents.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Versions {
+    /// `nodes` (BLASes and TLAS).
+    pub nodes: u64,
+    /// `instances` (TLAS order).
+    pub instances: u64,
+    /// `triangles`.
+    pub triangles: u64,
+    /// `attributes`.
+    pub attributes: u64,
+    /// `params`.
+    pub params: u64,
+    /// `texels`.
+    pub texels: u64,
+}
+
+/// What building the entities did and cost.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct EntityStats {
+    /// BLAS builds so far (one per distinct mesh; moving objects adds none).
+    pub blas_builds: u32,
+    /// TLAS builds so far.
+    pub tlas_builds: u32,
+    /// Milliseconds loading assets.
+    pub load_ms: f64,
+    /// Milliseconds building and flattening BLASes and encoding triangles.
+    pub blas_ms: f64,
+    /// Milliseconds of the last TLAS build (including instance records and the medium table).
+    pub tlas_ms: f64,
+    /// Milliseconds packing `params`.
+    pub pack_ms: f64,
+    /// Distinct triangles in memory (sum over distinct meshes).
+    pub triangles: u64,
+    /// Triangles as rendered (sum over objects: instancing counts a mesh once per object).
+    pub instanced_triangles: u64,
+    /// Deepest BLAS.
+    pub max_blas_depth: u32,
+    /// Depth of the TLAS.
+    pub tlas_depth: u32,
+}
+
+/// The scene's entities: everything the GPU stage uploads, as plain data.
+#[derive(Debug)]
+pub struct Entities {
+    scene_name: String,
+    settings: Settings,
+    preset: BuildPreset,
+    meshes: Vec<MeshEntity>,
+    textures: Vec<TextureEntity>,
+    objects: Vec<ObjectEntity>,
+    lights: Vec<LightEntity>,
+    camera: TypedOffset,
+    background: Option<TypedOffset>,
+    params: Vec<u32>,
+    light_table: u32,
+    medium_table: u32,
+    medium_count: u32,
+    nodes: Vec<GpuNode>,
+    blas_nodes: u32,
+    triangles: Vec<[f32; 4]>,
+    attributes: Vec<[u32; 4]>,
+    texels: Vec<u32>,
+    tlas_order: Option<Vec<u32>>,
+    tlas_stale: bool,
+    instances: Vec<GpuInstance>,
+    versions: Versions,
+    stats: EntityStats,
+    stacks: (u32, u32),
+    warnings: Vec<String>,
+}
+
+static NEXT_VERSION: AtomicU64 = AtomicU64::new(1);
+
+/// A version number never handed out before in this process.
+fn next_version() -> u64 {
+    NEXT_VERSION.fetch_add(1, Ordering::Relaxed)
+}
+
+fn to_u32(what: &'static str, n: usize) -> Result<u32, SceneError> {
+    u32::try_from(n).map_err(|_| SceneError::TooLarge {
+        what,
+        count: n as u64,
+    })
+}
+
+fn ms_since(start: Instant) -> f64 {
+    start.elapsed().as_secs_f64() * 1e3
+}
+
+/// The link plan's id for a struct the scene uses.
+fn type_id(program: &Program, linked: &Linked, s: StructId) -> Result<u32, SceneError> {
+    linked
+        .type_of(s)
+        .map(|t| t.id)
+        .ok_or_else(|| SceneError::Unlinked {
+            name: program.structs[s].name.clone(),
+        })
+}
+
+/// The [`GpuInstance`] flags of a material type.
+fn material_flags(linked: &Linked, s: StructId) -> u32 {
+    let Some(t) = linked.type_of(s) else { return 0 };
+    t.programs.iter().fold(0, |flags, (kind, _)| {
+        flags
+            | match kind {
+                ProgramKind::AnyHit => GpuInstance::FLAG_ANY_HIT,
+                ProgramKind::SecondaryRays => GpuInstance::FLAG_SECONDARY_RAYS,
+                ProgramKind::Medium => GpuInstance::FLAG_MEDIUM,
+                _ => 0,
+            }
+    })
+}
+
+/// Checks an object-to-world matrix and returns its inverse.
+fn invert_transform(m: &Mat4) -> Result<Mat4, &'static str> {
+    if !m.is_finite() {
+        return Err("has a NaN or infinite entry");
+    }
+    if m.row(3) != Vec4::W {
+        return Err("is not affine (its last row is not 0, 0, 0, 1)");
+    }
+    let det = m.determinant();
+    if det == 0.0 || !det.is_finite() {
+        return Err(
+            "is singular (it flattens the object), so rays cannot be moved into object space",
+        );
+    }
+    let inverse = m.inverse();
+    if !inverse.is_finite() {
+        return Err("cannot be inverted in single precision");
+    }
+    Ok(inverse)
+}
+
+/// The three top rows of an affine matrix (translation in `w`).
+fn rows(m: &Mat4) -> [[f32; 4]; 3] {
+    [
+        m.row(0).to_array(),
+        m.row(1).to_array(),
+        m.row(2).to_array(),
+    ]
+}
+
+/// The world box of an object-space box: its 8 corners transformed. A non-finite box stays the
+/// infinite box (the BVH builder clamps it); an empty box stays empty.
+pub(super) fn transform_box(b: &Aabb, m: &Mat4) -> Aabb {
+    if b.is_empty() {
+        return Aabb::EMPTY;
+    }
+    if !b.is_finite() {
+        return Aabb::new(Vec3::NEG_INFINITY, Vec3::INFINITY);
+    }
+    let (lo, hi) = (Vec3::from(b.min), Vec3::from(b.max));
+    let mut out = Aabb::EMPTY;
+    for i in 0..8 {
+        let corner = Vec3::new(
+            if i & 1 == 0 { lo.x } else { hi.x },
+            if i & 2 == 0 { lo.y } else { hi.y },
+            if i & 4 == 0 { lo.z } else { hi.z },
+        );
+        out.grow_point(m.transform_point3(corner).into());
+    }
+    out
+}
+
+impl Entities {
+    /// Builds the entities of `scene` (a scene of `program`, linked as `linked`).
+    pub fn build(
+        program: &Program,
+        scene: &SceneDesc,
+        linked: &Linked,
+        options: &EntityOptions,
+    ) -> Result<Entities, SceneError> {
+        if let Some(model) = scene.models.first() {
+            return Err(SceneError::ModelsUnsupported {
+                path: model.path.clone(),
+                span: model.span,
+            });
+        }
+        let Some(camera) = &scene.camera else {
+            return Err(SceneError::NoCamera {
+                scene: scene.name.clone(),
+            });
+        };
+        let mut stats = EntityStats::default();
+        let mut warnings = Vec::new();
+
+        // 2. Assets, each once.
+        let start = Instant::now();
+        let mut cache = AssetCache::default();
+        let mut object_meshes = Vec::with_capacity(scene.objects.len());
+        for obj in &scene.objects {
+            object_meshes.push(match &obj.geometry {
+                Geometry::Mesh(asset) => Some(cache.mesh(asset)?),
+                Geometry::Custom(_) => None,
+            });
+        }
+        for inst in all_instances(scene) {
+            for value in &inst.fields {
+                cache.scan(value)?;
+            }
+        }
+        stats.load_ms = ms_since(start);
+
+        // 3. One BLAS per distinct mesh, triangles in leaf order.
+        let start = Instant::now();
+        let mut nodes: Vec<GpuNode> = Vec::new();
+        let mut triangles = Vec::new();
+        let mut attributes = Vec::new();
+        let mut meshes = Vec::with_capacity(cache.meshes.len());
+        for (key, data) in &cache.meshes {
+            let vertices: &[Vec3] = bytemuck::cast_slice(&data.positions);
+            let bvh = build(
+                BuildInput::Indexed {
+                    vertices,
+                    indices: &data.indices,
+                },
+                options.bvh,
+            );
+            stats.blas_builds += 1;
+            let node_base = to_u32("BVH nodes", nodes.len())?;
+            let triangle_base = to_u32("triangle slots", triangles.len() / 3)?;
+            let flat = flatten(&bvh);
+            let depth = bvh.max_depth();
+            stats.max_blas_depth = stats.max_blas_depth.max(depth);
+            stats.triangles += data.indices.len() as u64;
+            meshes.push(MeshEntity {
+                source: key.describe(),
+                vertices: to_u32("vertices", data.positions.len())?,
+                triangles: to_u32("triangles", data.indices.len())?,
+                slots: to_u32("triangle slots", bvh.prim_indices().len())?,
+                node_base,
+                node_count: to_u32("BVH nodes", flat.len())?,
+                triangle_base,
+                bounds: bvh.root_aabb(),
+                depth,
+            });
+            nodes.extend_from_slice(&flat);
+            encode_mesh(data, &bvh, &mut triangles, &mut attributes);
+        }
+        let blas_nodes = to_u32("BVH nodes", nodes.len())?;
+        to_u32("triangle slots", triangles.len())?;
+        stats.blas_ms = ms_since(start);
+        if stats.max_blas_depth > linked.config.blas_stack {
+            warnings.push(format!(
+                "a mesh BVH is {} levels deep, deeper than the kernel's traversal stack ({}): \
+                 some triangles may be missed",
+                stats.max_blas_depth, linked.config.blas_stack
+            ));
+        }
+
+        // 4. Texels.
+        let mut texels = Vec::new();
+        let mut textures = Vec::with_capacity(cache.textures.len());
+        for (key, data) in &cache.textures {
+            textures.push(TextureEntity {
+                source: key.describe(),
+                width: data.width,
+                height: data.height,
+                format: data.format,
+                texel_base: to_u32("texel words", texels.len())?,
+            });
+            texels.extend_from_slice(&data.words);
+        }
+        to_u32("texel words", texels.len())?;
+
+        // 5. params: records, instances, light table.
+        let start = Instant::now();
+        let mut params = ParamsBuilder::default();
+        for ((key, _), mesh) in cache.meshes.iter().zip(&meshes) {
+            let at = params.push_record([mesh.node_base, mesh.triangle_base, mesh.slots, 0])?;
+            params.mesh_records.insert(key.clone(), at);
+        }
+        for ((key, _), tex) in cache.textures.iter().zip(&textures) {
+            let format = match tex.format {
+                TextureFormat::Rgba8Srgb => 0,
+                TextureFormat::Rgba16F => 1,
+            };
+            let at = params.push_record([tex.texel_base, tex.width, tex.height, format])?;
+            params.texture_records.insert(key.clone(), at);
+        }
+        let typed =
+            |params: &mut ParamsBuilder, inst: &Instance| -> Result<TypedOffset, SceneError> {
+                Ok(TypedOffset {
+                    type_id: type_id(program, linked, inst.struct_id)?,
+                    offset: params.push_instance(program, inst)?,
+                })
+            };
+        let camera = typed(&mut params, camera)?;
+        let background = match &scene.background {
+            Some(bg) => Some(typed(&mut params, bg)?),
+            None => None,
+        };
+        let mut objects = Vec::with_capacity(scene.objects.len());
+        for (index, (obj, mesh)) in scene.objects.iter().zip(object_meshes).enumerate() {
+            let geometry = match (&obj.geometry, mesh) {
+                (Geometry::Custom(inst), _) => ObjectGeometry::Custom {
+                    geometry: typed(&mut params, inst)?,
+                    bounds: CustomBounds::Unknown,
+                },
+                (Geometry::Mesh(_), Some(mesh)) => ObjectGeometry::Mesh { mesh },
+                (Geometry::Mesh(_), None) => ObjectGeometry::Mesh { mesh: 0 },
+            };
+            let material = typed(&mut params, &obj.material)?;
+            let transform = Mat4::from_cols_array_2d(&obj.transform);
+            let inverse =
+                invert_transform(&transform).map_err(|reason| SceneError::BadTransform {
+                    object: index,
+                    name: obj.name.clone(),
+                    reason,
+                })?;
+            if let ObjectGeometry::Mesh { mesh } = geometry {
+                stats.instanced_triangles += meshes.get(mesh).map_or(0, |m| u64::from(m.triangles));
+            }
+            objects.push(ObjectEntity {
+                name: obj.name.clone(),
+                span: obj.span,
+                geometry,
+                material,
+                flags: material_flags(linked, obj.material.struct_id),
+                transform,
+                inverse,
+            });
+        }
+        to_u32("objects", objects.len())?;
+        let mut lights = Vec::with_capacity(scene.lights.len());
+        for light in &scene.lights {
+            lights.push(typed(&mut params, light)?);
+        }
+        let table: Vec<u32> = lights.iter().flat_map(|l| [l.type_id, l.offset]).collect();
+        let light_table = params.push_words(&table)?;
+        let medium_table = params.offset()?;
+        stats.pack_ms = ms_since(start);
+
+        let v = next_version();
+        let mut entities = Entities {
+            scene_name: scene.name.clone(),
+            settings: scene.settings,
+            preset: options.bvh,
+            meshes,
+            textures,
+            objects,
+            lights,
+            camera,
+            background,
+            params: params.words,
+            light_table,
+            medium_table,
+            medium_count: 0,
+            nodes,
+            blas_nodes,
+            triangles,
+            attributes,
+            texels,
+            tlas_order: None,
+            tlas_stale: true,
+            instances: Vec::new(),
+            versions: Versions {
+                nodes: v,
+                instances: v,
+                triangles: v,
+                attributes: v,
+                params: v,
+                texels: v,
+            },
+            stats,
+            stacks: (linked.config.tlas_stack, linked.config.blas_stack),
+            warnings,
+        };
+        if !entities.needs_bounds() {
+            entities.rebuild_tlas()?;
+        }
+        Ok(entities)
+    }
+
+    /// Whether some custom-geometry object's bounds are still unknown (the GPU stage must run the
+    /// bounds kernel and call [`set_custom_bounds`](Self::set_custom_bounds) before the TLAS).
+    pub fn needs_bounds(&self) -> bool {
+        self.objects.iter().any(|o| {
+            matches!(
+                o.geometry,
+                ObjectGeometry::Custom {
+                    bounds: CustomBounds::Unknown,
+                    ..
+                }
+            )
+        })
+    }
+
+    /// Whether any object has custom geometry.
+    pub fn has_custom_geometry(&self) -> bool {
+        self.objects
+            .iter()
+            .any(|o| matches!(o.geometry, ObjectGeometry::Custom { .. }))
+    }
+
+    /// Sets the object-space box of custom-geometry object `object` (`None`, or a box with NaN or
+    /// `min > max`: the program gave no usable box, and the object is left out). Marks the TLAS
+    /// stale. Ignored for mesh objects.
+    pub fn set_custom_bounds(
+        &mut self,
+        object: usize,
+        bounds: Option<Aabb>,
+    ) -> Result<(), SceneError> {
+        let count = self.objects.len();
+        let obj = self
+            .objects
+            .get_mut(object)
+            .ok_or(SceneError::NoSuchObject { object, count })?;
+        if let ObjectGeometry::Custom { bounds: b, .. } = &mut obj.geometry {
+            *b = match bounds {
+                Some(bx) if !bx.min.is_nan() && !bx.max.is_nan() && !bx.is_empty() => {
+                    CustomBounds::Known(bx)
+                }
+                _ => CustomBounds::Invalid,
+            };
+            self.tlas_stale = true;
+        }
+        Ok(())
+    }
+
+    /// Moves object `object`: `transform` is its new object-to-world matrix (affine, invertible).
+    /// Only the TLAS goes stale; call [`refresh`](Self::refresh) (the renderer does) to rebuild it.
+    pub fn set_transform(&mut self, object: usize, transform: Mat4) -> Result<(), SceneError> {
+        let count = self.objects.len();
+        let obj = self
+            .objects
+            .get_mut(object)
+            .ok_or(SceneError::NoSuchObject { object, count })?;
+        let inverse = invert_transform(&transform).map_err(|reason| SceneError::BadTransform {
+            object,
+            name: obj.name.clone(),
+            reason,
+        })?;
+        obj.transform = transform;
+        obj.inverse = inverse;
+        self.tlas_stale = true;
+        Ok(())
+    }
+
+    /// Rebuilds the TLAS if an object moved or bounds changed since the last build; returns
+    /// whether it did.
+    pub fn refresh(&mut self) -> Result<bool, SceneError> {
+        if !self.tlas_stale {
+            return Ok(false);
+        }
+        self.rebuild_tlas()?;
+        Ok(true)
+    }
+
+    /// Builds the TLAS over the objects' world boxes, rewrites `nodes[tlas_root..]`, the instance
+    /// records (in TLAS leaf order) and the medium table. BLASes are not touched.
+    pub fn rebuild_tlas(&mut self) -> Result<(), SceneError> {
+        if let Some(object) = self.objects.iter().position(|o| {
+            matches!(
+                o.geometry,
+                ObjectGeometry::Custom {
+                    bounds: CustomBounds::Unknown,
+                    ..
+                }
+            )
+        }) {
+            return Err(SceneError::MissingBounds { object });
+        }
+        let start = Instant::now();
+        let boxes: Vec<Aabb> = self.objects.iter().map(|o| self.world_box(o)).collect();
+        let tlas = build(BuildInput::Aabbs(&boxes), self.preset);
+        self.stats.tlas_builds += 1;
+        self.stats.tlas_depth = tlas.max_depth();
+        let flat = flatten(&tlas);
+        to_u32("BVH nodes", self.blas_nodes as usize + flat.len())?;
+        self.nodes.truncate(self.blas_nodes as usize);
+        self.nodes.extend_from_slice(&flat);
+        let order = tlas.prim_indices().to_vec();
+        self.instances = order
+            .iter()
+            .map(|&o| self.instance_record(o as usize))
+            .collect();
+
+        // The medium table lists instance slots, which follow the TLAS order.
+        let mut slot_of = vec![u32::MAX; self.objects.len()];
+        for (slot, &o) in order.iter().enumerate() {
+            if let Some(s) = slot_of.get_mut(o as usize) {
+                *s = slot as u32;
+            }
+        }
+        let media: Vec<u32> = self
+            .objects
+            .iter()
+            .zip(&slot_of)
+            .filter(|(o, &slot)| o.flags & GpuInstance::FLAG_MEDIUM != 0 && slot != u32::MAX)
+            .map(|(_, &slot)| slot)
+            .collect();
+        let table_start = self.medium_table as usize;
+        if self.params.get(table_start..) != Some(&media[..]) {
+            self.params.truncate(table_start);
+            self.params.extend_from_slice(&media);
+            to_u32("parameter words", self.params.len())?;
+            self.versions.params = next_version();
+        }
+        self.medium_count = media.len() as u32;
+
+        if self.stats.tlas_depth > self.stacks.0 {
+            let warning = format!(
+                "the scene BVH is {} levels deep, deeper than the kernel's traversal stack ({}): \
+                 some objects may be missed",
+                self.stats.tlas_depth, self.stacks.0
+            );
+            if !self.warnings.contains(&warning) {
+                self.warnings.push(warning);
+            }
+        }
+        self.tlas_order = Some(order);
+        self.tlas_stale = false;
+        let v = next_version();
+        self.versions.nodes = v;
+        self.versions.instances = v;
+        self.stats.tlas_ms = ms_since(start);
+        Ok(())
+    }
+
+    /// The world box of an object (empty when it has none: it is then left out of the TLAS).
+    fn world_box(&self, o: &ObjectEntity) -> Aabb {
+        let local = match o.geometry {
+            ObjectGeometry::Mesh { mesh } => {
+                self.meshes.get(mesh).map_or(Aabb::EMPTY, |m| m.bounds)
+            }
+            ObjectGeometry::Custom {
+                bounds: CustomBounds::Known(b),
+                ..
+            } => b,
+            ObjectGeometry::Custom { .. } => Aabb::EMPTY,
+        };
+        transform_box(&local, &o.transform)
+    }
+
+    /// The GPU record of object `index`.
+    fn instance_record(&self, index: usize) -> GpuInstance {
+        let Some(o) = self.objects.get(index) else {
+            return GpuInstance::default();
+        };
+        let (geometry_type, geometry_offset, blas_root, triangle_offset) = match o.geometry {
+            ObjectGeometry::Mesh { mesh } => {
+                let (root, first) = self
+                    .meshes
+                    .get(mesh)
+                    .map_or((0, 0), |m| (m.node_base, m.triangle_base));
+                (GpuInstance::MESH_GEOMETRY, 0, root, first)
+            }
+            ObjectGeometry::Custom { geometry, .. } => (geometry.type_id, geometry.offset, 0, 0),
+        };
+        GpuInstance {
+            world_to_object: rows(&o.inverse),
+            object_to_world: rows(&o.transform),
+            geometry_type,
+            geometry_offset,
+            material_type: o.material.type_id,
+            material_offset: o.material.offset,
+            blas_root,
+            triangle_offset,
+            flags: o.flags,
+            // Fits: checked against u32 when the objects were built.
+            object: index as u32,
+        }
+    }
+
+    /// Instance records in object order (slot `i` = object `i`), for the bounds kernel.
+    pub fn instances_in_object_order(&self) -> Vec<GpuInstance> {
+        (0..self.objects.len())
+            .map(|i| self.instance_record(i))
+            .collect()
+    }
+
+    /// Instance records in TLAS leaf order (empty before the first TLAS build).
+    pub fn instances(&self) -> &[GpuInstance] {
+        &self.instances
+    }
+
+    /// The object in each instance slot (`tlas.prim_indices()`), once the TLAS is built.
+    pub fn tlas_order(&self) -> Option<&[u32]> {
+        self.tlas_order.as_deref()
+    }
+
+    /// Every BVH node: the BLASes, then the TLAS from [`tlas_root`](Self::tlas_root).
+    pub fn nodes(&self) -> &[GpuNode] {
+        &self.nodes
+    }
+
+    /// Index of the TLAS root in [`nodes`](Self::nodes).
+    pub fn tlas_root(&self) -> u32 {
+        self.blas_nodes
+    }
+
+    /// The `triangles` buffer's contents.
+    pub fn triangles(&self) -> &[[f32; 4]] {
+        &self.triangles
+    }
+
+    /// The `attributes` buffer's contents.
+    pub fn attributes(&self) -> &[[u32; 4]] {
+        &self.attributes
+    }
+
+    /// The `params` words.
+    pub fn params(&self) -> &[u32] {
+        &self.params
+    }
+
+    /// The `texels` words.
+    pub fn texels(&self) -> &[u32] {
+        &self.texels
+    }
+
+    /// Word offset of the light table.
+    pub fn light_table(&self) -> u32 {
+        self.light_table
+    }
+
+    /// Word offset and length of the medium table.
+    pub fn medium_table(&self) -> (u32, u32) {
+        (self.medium_table, self.medium_count)
+    }
+
+    /// The frame uniforms for the current TLAS.
+    pub fn frame_uniforms(&self, samples_per_pass: u32, total_samples: u32) -> FrameUniforms {
+        let background = self.background.unwrap_or_default();
+        FrameUniforms {
+            samples_per_pass,
+            total_samples,
+            seed: self.settings.seed,
+            tlas_root: self.blas_nodes,
+            // Fits: at most the object count, checked against u32.
+            instance_count: self.instances.len() as u32,
+            light_count: self.lights.len() as u32,
+            light_table: self.light_table,
+            medium_count: self.medium_count,
+            medium_table: self.medium_table,
+            camera_type: self.camera.type_id,
+            camera_offset: self.camera.offset,
+            background_type: background.type_id,
+            background_offset: background.offset,
+        }
+    }
+
+    /// The distinct meshes, in order of first use.
+    pub fn meshes(&self) -> &[MeshEntity] {
+        &self.meshes
+    }
+
+    /// The distinct textures, in order of first use.
+    pub fn textures(&self) -> &[TextureEntity] {
+        &self.textures
+    }
+
+    /// The objects, in scene order.
+    pub fn objects(&self) -> &[ObjectEntity] {
+        &self.objects
+    }
+
+    /// The lights, in scene order.
+    pub fn lights(&self) -> &[LightEntity] {
+        &self.lights
+    }
+
+    /// The camera.
+    pub fn camera(&self) -> TypedOffset {
+        self.camera
+    }
+
+    /// The background, if any.
+    pub fn background(&self) -> Option<TypedOffset> {
+        self.background
+    }
+
+    /// The scene's settings.
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// The scene's name.
+    pub fn scene_name(&self) -> &str {
+        &self.scene_name
+    }
+
+    /// Current versions of the buffer contents.
+    pub fn versions(&self) -> Versions {
+        self.versions
+    }
+
+    /// What building cost so far.
+    pub fn stats(&self) -> EntityStats {
+        self.stats
+    }
+
+    /// Problems that do not stop a render (BVHs deeper than the kernel's stacks).
+    pub fn warnings(&self) -> &[String] {
+        &self.warnings
+    }
+}
+
+/// Every role-struct instance of a scene (the ones whose fields may hold assets).
+fn all_instances(scene: &SceneDesc) -> impl Iterator<Item = &Instance> {
+    scene
+        .camera
+        .iter()
+        .chain(scene.background.iter())
+        .chain(scene.objects.iter().flat_map(|o| {
+            let geometry = match &o.geometry {
+                Geometry::Custom(inst) => Some(inst),
+                Geometry::Mesh(_) => None,
+            };
+            geometry.into_iter().chain(std::iter::once(&o.material))
+        }))
+        .chain(scene.lights.iter())
+}

@@ -1,0 +1,493 @@
+//! Host mirrors of the ABI's GPU structs ([`FrameUniforms`], [`GpuInstance`]) and the layout of any
+//! [`abi`] struct computed from the table itself.
+//!
+//! The ABI table (`rtc_compiler::abi`) is the one definition of every struct the kernel and the host
+//! share. This file does not restate it: [`struct_size`] and [`field_offset`] compute the WGSL
+//! storage-buffer layout (scalars aligned to 4, `vec2` to 8, `vec3` and `vec4` to 16; a struct's size
+//! rounded up to its largest alignment) straight from [`abi::StructDesc`], and compile-time asserts tie
+//! every field of the Rust mirrors to it. A unit test builds the same structs as naga types and checks
+//! sizes and offsets with `naga::proc::Layouter` (STYLE rule 7), and the mirror of the tile uniform,
+//! `gpu::TileParams`, is checked against [`abi::TILE`] the same way.
+//!
+//! Invariants: the mirrors are `#[repr(C)]` + `bytemuck::Pod`, without implicit padding; a change to
+//! `abi.rs` that the mirrors do not follow fails to compile.
+
+use bytemuck::{Pod, Zeroable};
+use rtc_compiler::abi::{self, Element, FieldType, StructDesc};
+
+/// Size and alignment in bytes of an ABI field type under WGSL's storage layout.
+pub const fn field_layout(ty: FieldType) -> (usize, usize) {
+    match ty {
+        FieldType::U32 | FieldType::F32 => (4, 4),
+        FieldType::Vec2U32 => (8, 8),
+        FieldType::Vec3F32 => (12, 16),
+        FieldType::Vec4F32 | FieldType::Vec4U32 => (16, 16),
+    }
+}
+
+const fn round_up(x: usize, align: usize) -> usize {
+    x.div_ceil(align) * align
+}
+
+/// Byte offset of field `index` of `s` (the struct's size for `index == fields.len()` before the
+/// final rounding; `usize::MAX` beyond that).
+pub const fn field_offset_at(s: &StructDesc, index: usize) -> usize {
+    if index > s.fields.len() {
+        return usize::MAX;
+    }
+    let mut offset = 0;
+    let mut i = 0;
+    let mut rest = s.fields;
+    while let Some((field, tail)) = rest.split_first() {
+        let (size, align) = field_layout(field.ty);
+        offset = round_up(offset, align);
+        if i == index {
+            return offset;
+        }
+        offset += size;
+        i += 1;
+        rest = tail;
+    }
+    offset
+}
+
+const fn same_name(a: &str, b: &str) -> bool {
+    let (mut a, mut b) = (a.as_bytes(), b.as_bytes());
+    loop {
+        match (a.split_first(), b.split_first()) {
+            (None, None) => return true,
+            (Some((x, at)), Some((y, bt))) if *x == *y => {
+                a = at;
+                b = bt;
+            }
+            _ => return false,
+        }
+    }
+}
+
+/// Byte offset of the field called `name` in `s`, or `usize::MAX` when there is none (so a
+/// compile-time assert against a Rust offset fails).
+pub const fn field_offset(s: &StructDesc, name: &str) -> usize {
+    let mut i = 0;
+    let mut rest = s.fields;
+    while let Some((field, tail)) = rest.split_first() {
+        if same_name(field.name, name) {
+            return field_offset_at(s, i);
+        }
+        i += 1;
+        rest = tail;
+    }
+    usize::MAX
+}
+
+/// Alignment of `s` in bytes (its largest field alignment, at least 4).
+pub const fn struct_align(s: &StructDesc) -> usize {
+    let mut align = 4;
+    let mut rest = s.fields;
+    while let Some((field, tail)) = rest.split_first() {
+        let (_, a) = field_layout(field.ty);
+        if a > align {
+            align = a;
+        }
+        rest = tail;
+    }
+    align
+}
+
+/// Size of `s` in bytes (the end of its last field, rounded up to its alignment).
+pub const fn struct_size(s: &StructDesc) -> usize {
+    round_up(field_offset_at(s, s.fields.len()), struct_align(s))
+}
+
+/// Size in bytes of one element of a binding (the struct of a uniform, one array element).
+pub const fn element_size(e: Element) -> usize {
+    match e {
+        Element::Struct(s) | Element::StructArray(s) => struct_size(s),
+        Element::Array(t) => field_layout(t).0,
+        Element::Atomics => 4,
+    }
+}
+
+/// `FrameUniforms` ([`abi::FRAME`]): per-scene constants, one uniform buffer.
+///
+/// Every field is a `u32`; offsets follow the ABI field order (4 bytes apart). See the field docs
+/// for what the runtime writes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Pod, Zeroable)]
+pub struct FrameUniforms {
+    /// Samples per pixel one pass takes (`CompiledScene::samples_per_pass`).
+    pub samples_per_pass: u32,
+    /// Samples per pixel in total (the scene's `samples`, or the override).
+    pub total_samples: u32,
+    /// The scene's `seed`.
+    pub seed: u32,
+    /// Index of the scene-level BVH's root in `nodes`.
+    pub tlas_root: u32,
+    /// Entries of `instances` (objects in the scene-level BVH).
+    pub instance_count: u32,
+    /// Lights in the light table.
+    pub light_count: u32,
+    /// Word offset in `params` of the light table (`light_count` pairs `[type_id, offset]`).
+    pub light_table: u32,
+    /// Entries of the medium table.
+    pub medium_count: u32,
+    /// Word offset in `params` of the medium table (instance slots of objects with a `@medium`
+    /// material).
+    pub medium_table: u32,
+    /// Type id of the camera.
+    pub camera_type: u32,
+    /// Word offset of the camera instance in `params`.
+    pub camera_offset: u32,
+    /// Type id of the background (0 without one; the kernel then never reads it).
+    pub background_type: u32,
+    /// Word offset of the background instance (0 without one).
+    pub background_offset: u32,
+}
+
+/// `GpuInstance` ([`abi::INSTANCE`]): one object of the scene, 128 bytes.
+///
+/// | bytes | field | contents |
+/// |---|---|---|
+/// | 0..48 | `world_to_object` | rows 0..3 of the inverse of the object-to-world matrix; translation in `w` |
+/// | 48..96 | `object_to_world` | rows 0..3 of the object-to-world matrix; translation in `w` |
+/// | 96 | `geometry_type` | [`GpuInstance::MESH_GEOMETRY`] for a triangle mesh, else the custom geometry type's id |
+/// | 100 | `geometry_offset` | word offset of the custom geometry instance in `params` (0 for meshes) |
+/// | 104 | `material_type` | the material type's id |
+/// | 108 | `material_offset` | word offset of the material instance in `params` |
+/// | 112 | `blas_root` | index in `nodes` of the mesh BVH's root (0 for custom geometry) |
+/// | 116 | `triangle_offset` | first triangle slot of the mesh in `triangles` (0 for custom geometry) |
+/// | 120 | `flags` | [`GpuInstance::FLAG_ANY_HIT`], [`GpuInstance::FLAG_SECONDARY_RAYS`], [`GpuInstance::FLAG_MEDIUM`] |
+/// | 124 | `object` | the object's index in the scene (scene `object` entries in order, then model instances) |
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
+pub struct GpuInstance {
+    /// Rows of the world-to-object affine transform.
+    pub world_to_object: [[f32; 4]; 3],
+    /// Rows of the object-to-world affine transform.
+    pub object_to_world: [[f32; 4]; 3],
+    /// [`GpuInstance::MESH_GEOMETRY`] or a custom geometry type id.
+    pub geometry_type: u32,
+    /// Word offset of the custom geometry instance.
+    pub geometry_offset: u32,
+    /// Material type id.
+    pub material_type: u32,
+    /// Word offset of the material instance.
+    pub material_offset: u32,
+    /// Root node of the mesh BVH.
+    pub blas_root: u32,
+    /// First triangle slot of the mesh.
+    pub triangle_offset: u32,
+    /// Material feature bits.
+    pub flags: u32,
+    /// The object's index in the scene.
+    pub object: u32,
+}
+
+impl GpuInstance {
+    /// `geometry_type` of a built-in triangle mesh.
+    pub const MESH_GEOMETRY: u32 = 0xffff_ffff;
+    /// `flags`: the material has an `@any_hit` program.
+    pub const FLAG_ANY_HIT: u32 = 1;
+    /// `flags`: the material has a `@secondary_rays` program.
+    pub const FLAG_SECONDARY_RAYS: u32 = 2;
+    /// `flags`: the material has a `@medium` program.
+    pub const FLAG_MEDIUM: u32 = 4;
+}
+
+macro_rules! assert_field {
+    ($ty:ty, $field:ident, $desc:expr, $name:literal) => {
+        const _: () = assert!(std::mem::offset_of!($ty, $field) == field_offset(&$desc, $name));
+    };
+}
+
+const _: () = assert!(std::mem::size_of::<FrameUniforms>() == struct_size(&abi::FRAME));
+const _: () = assert!(abi::FRAME.fields.len() == 13);
+assert_field!(
+    FrameUniforms,
+    samples_per_pass,
+    abi::FRAME,
+    "samples_per_pass"
+);
+assert_field!(FrameUniforms, total_samples, abi::FRAME, "total_samples");
+assert_field!(FrameUniforms, seed, abi::FRAME, "seed");
+assert_field!(FrameUniforms, tlas_root, abi::FRAME, "tlas_root");
+assert_field!(FrameUniforms, instance_count, abi::FRAME, "instance_count");
+assert_field!(FrameUniforms, light_count, abi::FRAME, "light_count");
+assert_field!(FrameUniforms, light_table, abi::FRAME, "light_table");
+assert_field!(FrameUniforms, medium_count, abi::FRAME, "medium_count");
+assert_field!(FrameUniforms, medium_table, abi::FRAME, "medium_table");
+assert_field!(FrameUniforms, camera_type, abi::FRAME, "camera_type");
+assert_field!(FrameUniforms, camera_offset, abi::FRAME, "camera_offset");
+assert_field!(
+    FrameUniforms,
+    background_type,
+    abi::FRAME,
+    "background_type"
+);
+assert_field!(
+    FrameUniforms,
+    background_offset,
+    abi::FRAME,
+    "background_offset"
+);
+
+const _: () = assert!(std::mem::size_of::<GpuInstance>() == struct_size(&abi::INSTANCE));
+const _: () = assert!(std::mem::size_of::<GpuInstance>() == 128);
+const _: () = assert!(std::mem::align_of::<GpuInstance>() == struct_align(&abi::INSTANCE));
+const _: () = assert!(abi::INSTANCE.fields.len() == 14);
+assert_field!(
+    GpuInstance,
+    world_to_object,
+    abi::INSTANCE,
+    "world_to_object_0"
+);
+const _: () = assert!(field_offset(&abi::INSTANCE, "world_to_object_1") == 16);
+const _: () = assert!(field_offset(&abi::INSTANCE, "world_to_object_2") == 32);
+assert_field!(
+    GpuInstance,
+    object_to_world,
+    abi::INSTANCE,
+    "object_to_world_0"
+);
+const _: () = assert!(field_offset(&abi::INSTANCE, "object_to_world_1") == 64);
+const _: () = assert!(field_offset(&abi::INSTANCE, "object_to_world_2") == 80);
+assert_field!(GpuInstance, geometry_type, abi::INSTANCE, "geometry_type");
+assert_field!(
+    GpuInstance,
+    geometry_offset,
+    abi::INSTANCE,
+    "geometry_offset"
+);
+assert_field!(GpuInstance, material_type, abi::INSTANCE, "material_type");
+assert_field!(
+    GpuInstance,
+    material_offset,
+    abi::INSTANCE,
+    "material_offset"
+);
+assert_field!(GpuInstance, blas_root, abi::INSTANCE, "blas_root");
+assert_field!(
+    GpuInstance,
+    triangle_offset,
+    abi::INSTANCE,
+    "triangle_offset"
+);
+assert_field!(GpuInstance, flags, abi::INSTANCE, "flags");
+assert_field!(GpuInstance, object, abi::INSTANCE, "object");
+
+const _: () = assert!(std::mem::size_of::<rtc_bvh::GpuNode>() == struct_size(&abi::NODE));
+assert_field!(rtc_bvh::GpuNode, min, abi::NODE, "min");
+assert_field!(rtc_bvh::GpuNode, a, abi::NODE, "a");
+assert_field!(rtc_bvh::GpuNode, max, abi::NODE, "max");
+assert_field!(rtc_bvh::GpuNode, b, abi::NODE, "b");
+
+const _: () = assert!(std::mem::size_of::<crate::gpu::TileParams>() == struct_size(&abi::TILE));
+assert_field!(crate::gpu::TileParams, origin, abi::TILE, "origin");
+assert_field!(crate::gpu::TileParams, extent, abi::TILE, "extent");
+assert_field!(crate::gpu::TileParams, image_size, abi::TILE, "image_size");
+assert_field!(crate::gpu::TileParams, tile_index, abi::TILE, "tile_index");
+assert_field!(crate::gpu::TileParams, frame, abi::TILE, "frame");
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use naga::{Scalar, Span, StructMember, Type, TypeInner, VectorSize};
+
+    /// Builds `s` as a naga struct, members placed with the Layouter's alignments (as any naga front
+    /// end does), and returns `(size, [(name, offset)])` as the Layouter sees them.
+    fn naga_layout(s: &StructDesc) -> (u32, Vec<(String, u32)>) {
+        let mut module = naga::Module::default();
+        let member_types: Vec<_> = s
+            .fields
+            .iter()
+            .map(|f| {
+                let (size, scalar) = match f.ty {
+                    FieldType::U32 => (None, Scalar::U32),
+                    FieldType::F32 => (None, Scalar::F32),
+                    FieldType::Vec2U32 => (Some(VectorSize::Bi), Scalar::U32),
+                    FieldType::Vec3F32 => (Some(VectorSize::Tri), Scalar::F32),
+                    FieldType::Vec4F32 => (Some(VectorSize::Quad), Scalar::F32),
+                    FieldType::Vec4U32 => (Some(VectorSize::Quad), Scalar::U32),
+                };
+                let inner = match size {
+                    None => TypeInner::Scalar(scalar),
+                    Some(size) => TypeInner::Vector { size, scalar },
+                };
+                module
+                    .types
+                    .insert(Type { name: None, inner }, Span::UNDEFINED)
+            })
+            .collect();
+        let mut layouter = naga::proc::Layouter::default();
+        layouter
+            .update(module.to_ctx())
+            .expect("member types lay out");
+        let mut offset = 0u32;
+        let mut align = naga::proc::Alignment::ONE;
+        let mut members = Vec::new();
+        for (f, &ty) in s.fields.iter().zip(&member_types) {
+            let l = layouter[ty];
+            offset = l.alignment.round_up(offset);
+            align = align.max(l.alignment);
+            members.push(StructMember {
+                name: Some(f.name.to_string()),
+                ty,
+                binding: None,
+                offset,
+            });
+            offset += l.size;
+        }
+        let span = align.round_up(offset);
+        let handle = module.types.insert(
+            Type {
+                name: Some(s.name.to_string()),
+                inner: TypeInner::Struct { members, span },
+            },
+            Span::UNDEFINED,
+        );
+        layouter.update(module.to_ctx()).expect("struct lays out");
+        let TypeInner::Struct { members, .. } = &module.types[handle].inner else {
+            unreachable!("inserted a struct")
+        };
+        let offsets = members
+            .iter()
+            .map(|m| (m.name.clone().unwrap_or_default(), m.offset))
+            .collect();
+        (layouter[handle].size, offsets)
+    }
+
+    fn check(s: &StructDesc, rust_size: usize, rust_offsets: &[(&str, usize)]) {
+        let (size, offsets) = naga_layout(s);
+        assert_eq!(size as usize, rust_size, "size of {}", s.name);
+        assert_eq!(size as usize, struct_size(s), "struct_size({})", s.name);
+        for (name, offset) in &offsets {
+            assert_eq!(
+                *offset as usize,
+                field_offset(s, name),
+                "{}.{name}: field_offset",
+                s.name
+            );
+        }
+        for (name, want) in rust_offsets {
+            let found = offsets
+                .iter()
+                .find(|(n, _)| n == name)
+                .unwrap_or_else(|| panic!("{}.{name} is not in the ABI", s.name));
+            assert_eq!(found.1 as usize, *want, "{}.{name}", s.name);
+        }
+    }
+
+    #[test]
+    fn mirrors_match_naga_layouts_of_the_abi() {
+        use std::mem::{offset_of, size_of};
+        check(
+            &abi::FRAME,
+            size_of::<FrameUniforms>(),
+            &[
+                (
+                    "samples_per_pass",
+                    offset_of!(FrameUniforms, samples_per_pass),
+                ),
+                ("total_samples", offset_of!(FrameUniforms, total_samples)),
+                ("seed", offset_of!(FrameUniforms, seed)),
+                ("tlas_root", offset_of!(FrameUniforms, tlas_root)),
+                ("instance_count", offset_of!(FrameUniforms, instance_count)),
+                ("light_count", offset_of!(FrameUniforms, light_count)),
+                ("light_table", offset_of!(FrameUniforms, light_table)),
+                ("medium_count", offset_of!(FrameUniforms, medium_count)),
+                ("medium_table", offset_of!(FrameUniforms, medium_table)),
+                ("camera_type", offset_of!(FrameUniforms, camera_type)),
+                ("camera_offset", offset_of!(FrameUniforms, camera_offset)),
+                (
+                    "background_type",
+                    offset_of!(FrameUniforms, background_type),
+                ),
+                (
+                    "background_offset",
+                    offset_of!(FrameUniforms, background_offset),
+                ),
+            ],
+        );
+        let w2o = offset_of!(GpuInstance, world_to_object);
+        let o2w = offset_of!(GpuInstance, object_to_world);
+        check(
+            &abi::INSTANCE,
+            size_of::<GpuInstance>(),
+            &[
+                ("world_to_object_0", w2o),
+                ("world_to_object_1", w2o + 16),
+                ("world_to_object_2", w2o + 32),
+                ("object_to_world_0", o2w),
+                ("object_to_world_1", o2w + 16),
+                ("object_to_world_2", o2w + 32),
+                ("geometry_type", offset_of!(GpuInstance, geometry_type)),
+                ("geometry_offset", offset_of!(GpuInstance, geometry_offset)),
+                ("material_type", offset_of!(GpuInstance, material_type)),
+                ("material_offset", offset_of!(GpuInstance, material_offset)),
+                ("blas_root", offset_of!(GpuInstance, blas_root)),
+                ("triangle_offset", offset_of!(GpuInstance, triangle_offset)),
+                ("flags", offset_of!(GpuInstance, flags)),
+                ("object", offset_of!(GpuInstance, object)),
+            ],
+        );
+        check(
+            &abi::NODE,
+            size_of::<rtc_bvh::GpuNode>(),
+            &[
+                ("min", offset_of!(rtc_bvh::GpuNode, min)),
+                ("a", offset_of!(rtc_bvh::GpuNode, a)),
+                ("max", offset_of!(rtc_bvh::GpuNode, max)),
+                ("b", offset_of!(rtc_bvh::GpuNode, b)),
+            ],
+        );
+    }
+
+    /// `gpu::TileParams` (the dispatcher's record) is the ABI's `TileParams`: same fields, same
+    /// order, same offsets, same size.
+    #[test]
+    fn tile_params_match_the_abi_field_list() {
+        use crate::gpu::TileParams;
+        use std::mem::{offset_of, size_of};
+        let rust = [
+            ("origin", offset_of!(TileParams, origin)),
+            ("extent", offset_of!(TileParams, extent)),
+            ("image_size", offset_of!(TileParams, image_size)),
+            ("tile_index", offset_of!(TileParams, tile_index)),
+            ("frame", offset_of!(TileParams, frame)),
+        ];
+        let names: Vec<&str> = abi::TILE.fields.iter().map(|f| f.name).collect();
+        assert_eq!(names, rust.map(|(n, _)| n), "field order");
+        check(&abi::TILE, size_of::<TileParams>(), &rust);
+        // And the WGSL text the dispatcher documents parses to the same layout.
+        let module = naga::front::wgsl::parse_str(crate::gpu::TILE_PARAMS_WGSL).expect("parses");
+        let (_, ty) = module
+            .types
+            .iter()
+            .find(|(_, t)| t.name.as_deref() == Some("TileParams"))
+            .expect("declared");
+        let TypeInner::Struct { members, .. } = &ty.inner else {
+            panic!("a struct")
+        };
+        let wgsl: Vec<(String, usize)> = members
+            .iter()
+            .map(|m| (m.name.clone().unwrap_or_default(), m.offset as usize))
+            .collect();
+        let want: Vec<(String, usize)> = rust.iter().map(|(n, o)| (n.to_string(), *o)).collect();
+        assert_eq!(wgsl, want);
+    }
+
+    #[test]
+    fn element_sizes() {
+        let size = |name: &str| element_size(abi::binding(name).expect("binding").element);
+        assert_eq!(size("frame"), 52);
+        assert_eq!(size("tile"), 32);
+        assert_eq!(size("nodes"), 32);
+        assert_eq!(size("instances"), 128);
+        assert_eq!(size("triangles"), 16);
+        assert_eq!(size("attributes"), 16);
+        assert_eq!(size("params"), 4);
+        assert_eq!(size("texels"), 4);
+        assert_eq!(size("accum"), 16);
+        assert_eq!(size("counters"), 4);
+    }
+}

@@ -1,0 +1,232 @@
+//! Scenes on the GPU: from the compiler's scene description to the buffers the kernel reads.
+//!
+//! Three stages, kept apart (ARCHITECTURE invariant 10, STYLE rule 9):
+//!
+//! 1. **Scene description**: the compiler's checked, evaluated [`SceneDesc`] (with the program it
+//!    belongs to and the link plan [`Linked`] that gives every used type its id). Nothing here parses.
+//! 2. **Scene entities** ([`Entities`], `entities.rs`): assets loaded once each ([`assets`]), one
+//!    object-level BVH per distinct mesh, objects with their transforms, every role-struct instance
+//!    packed into `params`, the light and medium tables, the scene-level BVH. Plain CPU data, no
+//!    GPU: the whole stage is unit-tested without an adapter. Moving an object
+//!    ([`Entities::set_transform`]) rebuilds only the scene-level BVH.
+//! 3. **GPU objects** ([`GpuScene`], `upload.rs`): one persistent [`BufferSet`] entry per ABI
+//!    binding the kernel declares, re-uploaded only when its entity data changed. It knows nothing
+//!    of file formats or of the language.
+//!
+//! [`assets`]: crate::assets
+//! [`SceneDesc`]: rtc_compiler::sema::hir::SceneDesc
+//! [`Linked`]: rtc_compiler::link::Linked
+//! [`BufferSet`]: crate::gpu::BufferSet
+//!
+//! # The GPU scene format (the contract with the kernel, `stdlib/kernel/`)
+//!
+//! Bindings, struct layouts and their docs are in `rtc_compiler::abi`; this is what the runtime puts
+//! in them.
+//!
+//! - **`nodes`** (`GpuNode`, 32 bytes, bits in `rtc_bvh::gpu`): every BVH flattened with
+//!   [`rtc_bvh::flatten`], concatenated: first one object-level BVH (BLAS) per distinct mesh, in order
+//!   of first use, **built once per mesh and shared by all objects using it**; then the scene-level
+//!   BVH (TLAS) over the objects' world-space boxes. A BVH whose first node is at index `base` has
+//!   its root at `base` and the children of an inner node at `base + a` and `base + a + 1`; its
+//!   node `base + 1` is rtc-bvh's padding node. The TLAS comes last so that rebuilding it (its node
+//!   count may change) never moves a BLAS. `FrameUniforms.tlas_root` is the TLAS base.
+//! - **`instances`** ([`GpuInstance`], 128 bytes): one per object in the TLAS, **in TLAS leaf
+//!   order**: a TLAS leaf's slots index this array directly, and slot `s` holds the object
+//!   `tlas.prim_indices()[s]`. Fields: world-to-object and object-to-world affine rows (translation
+//!   in `w`), `geometry_type` ([`GpuInstance::MESH_GEOMETRY`] for a mesh, else the custom geometry
+//!   type's id), `geometry_offset`, `material_type`, `material_offset`, `blas_root` (the mesh BVH's
+//!   base), `triangle_offset` (the mesh's first triangle slot), `flags` (1: `@any_hit`, 2:
+//!   `@secondary_rays`, 4: `@medium`), `object` (scene `object` entries in order, then model
+//!   instances). An object whose world box is empty or not finite (an empty mesh, invalid custom
+//!   bounds) is left out of the TLAS and therefore of this array; `object` keeps its index.
+//! - **`triangles`**: 3 `vec4f` per triangle slot, object space, per mesh in BLAS leaf order from the
+//!   mesh's `triangle_offset`: `[v0, bits(t)]`, `[v1, 0]`, `[v2, 0]` where `t` is the triangle's index
+//!   in its mesh. Slots, not triangles: with the `quality` preset's spatial splits a triangle may
+//!   occupy several slots.
+//! - **`attributes`**: 2 `vec4u` per triangle slot: `[oct(n0), oct(n1), oct(n2), f16x2(uv0)]`,
+//!   `[f16x2(uv1), f16x2(uv2), 0, 0]` (see `encode.rs`).
+//! - **`params`** (`u32` words), in this order: mesh records `[node_base, triangle_base,
+//!   slot_count, 0]` and texture records `[texel_base, width, height, format]` (format 0 = rgba8
+//!   sRGB, 1 = rgba16f) for every `mesh`/`texture` value of the scene, whose word offsets are what
+//!   `layout::Handles` gives the packer; then every role-struct instance (camera, background,
+//!   custom geometries, materials, lights), packed with `rtc_compiler::layout::pack_into`, each
+//!   starting at a multiple of 4 words (identical instances of one type share one copy); then the
+//!   light table (`light_count` pairs `[type_id, offset]`, scene order); last the medium table
+//!   (`medium_count` instance slots of objects whose material has `@medium`, in object order), last
+//!   because it follows the TLAS order. Type ids are `Linked::type_of(struct).id`.
+//! - **`texels`**: every texture's words ([`TextureData`](crate::assets::TextureData)) concatenated;
+//!   a texture record's `texel_base` is its first word.
+//! - **`frame`** ([`FrameUniforms`]): `samples_per_pass` (the camera's), `total_samples` (the
+//!   scene's `samples` or an override), `seed`, `tlas_root`, `instance_count`, the light and medium
+//!   tables, camera and background type ids and offsets (background 0/0 without one).
+//! - **`tile`**: `gpu::TileParams`, written by the tile dispatcher; `frame` is the pass index.
+//! - **`accum`**: `width * height` `vec4f` (rgb = radiance sum, a = sample count), zeroed before the
+//!   first pass of a render. **`counters`**: 4 `u32`, zeroed with it; counter 0 counts non-finite
+//!   samples the kernel replaced by zero.
+//! - **Custom geometry bounds**: when the scene has custom geometry, `instances` is first uploaded
+//!   in object order (slot `i` = object `i`, `instance_count` = the object count) and the compiler's
+//!   `bounds` kernel runs one invocation per object, writing the object-space box of custom-geometry
+//!   object `i` to `accum[2i].xyz` (min) and `accum[2i + 1].xyz` (max); the runtime reads them back,
+//!   transforms them to world space and only then builds the TLAS.
+//!
+//! Exactly the bindings the kernel declares are created and bound (the kernel of a scene may lack
+//! some, e.g. `texels` without textures).
+
+#![cfg_attr(
+    not(test),
+    deny(
+        clippy::unwrap_used,
+        clippy::expect_used,
+        clippy::panic,
+        clippy::indexing_slicing,
+        clippy::todo,
+        clippy::unimplemented
+    )
+)]
+
+mod assets_cache;
+mod encode;
+mod entities;
+mod gpu_types;
+mod params;
+mod upload;
+
+#[cfg(test)]
+mod tests;
+
+pub use encode::{decode_octahedral, octahedral, pack_snorm2x16, unpack_snorm2x16};
+pub use entities::{
+    Entities, EntityOptions, EntityStats, LightEntity, MeshEntity, ObjectEntity, ObjectGeometry,
+    TextureEntity, TypedOffset, Versions,
+};
+pub use gpu_types::{
+    element_size, field_offset, struct_align, struct_size, FrameUniforms, GpuInstance,
+};
+pub use upload::{runtime_binding, GpuScene, UploadReport};
+
+use rtc_compiler::diag::{codes, Diagnostic};
+use rtc_compiler::Span;
+use std::path::PathBuf;
+
+use crate::assets::AssetError;
+use crate::gpu::{BufferError, DispatchError};
+
+/// Why a scene could not be turned into entities or GPU buffers.
+#[derive(Debug, thiserror::Error)]
+pub enum SceneError {
+    /// An asset the scene names cannot be loaded (E0902).
+    #[error("{source}")]
+    Asset {
+        /// The string in the scene that names it, when known.
+        span: Option<Span>,
+        /// The loader's error (it names the file).
+        source: AssetError,
+    },
+    /// The scene imports glTF models, which cannot be rendered yet.
+    #[error(
+        "{}: glTF models are not supported yet (mapping glTF materials needs a standard-library \
+         material that does not exist yet); remove the `model` entry to render the rest",
+        path.display()
+    )]
+    ModelsUnsupported {
+        /// The model's file.
+        path: PathBuf,
+        /// The `model` entry's string.
+        span: Span,
+    },
+    /// The scene has no camera (only possible when a model was to bring one).
+    #[error("the scene `{scene}` has no camera")]
+    NoCamera {
+        /// The scene's name.
+        scene: String,
+    },
+    /// The compile step handed over no checked program (its diagnostics had errors).
+    #[error("the compiled scene carries no checked program")]
+    NoProgram,
+    /// The link plan has no id for a type the scene uses: the plan is not this scene's (a bug in
+    /// the caller or the compiler).
+    #[error("internal error: the link plan has no id for `{name}`, which the scene uses")]
+    Unlinked {
+        /// The struct's name.
+        name: String,
+    },
+    /// A struct the scene uses has no type in the program's type table (a compiler bug).
+    #[error("internal error: `{name}` has no type in the program's type table")]
+    NoStructType {
+        /// The struct's name.
+        name: String,
+    },
+    /// A `mesh` or `texture` value was met while packing that the asset scan did not see (a bug).
+    #[error("internal error: the asset scan missed a {what} value while packing parameters")]
+    UnresolvedHandle {
+        /// `mesh` or `texture`.
+        what: &'static str,
+    },
+    /// An object's transform cannot be used.
+    #[error("object {}: its transform {reason}", object_label(*object, name.as_deref()))]
+    BadTransform {
+        /// The object's index.
+        object: usize,
+        /// Its name, if it has one.
+        name: Option<String>,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
+    /// An object index out of range.
+    #[error("there is no object {object}: the scene has {count}")]
+    NoSuchObject {
+        /// The index asked for.
+        object: usize,
+        /// How many objects there are.
+        count: usize,
+    },
+    /// The TLAS was requested while custom-geometry bounds are still unknown.
+    #[error("object {object} has custom geometry whose bounds have not been computed (run the bounds kernel first)")]
+    MissingBounds {
+        /// The first such object.
+        object: usize,
+    },
+    /// The scene is too large for 32-bit GPU indices.
+    #[error("the scene's {what} need {count} entries, more than 32-bit GPU indices can address")]
+    TooLarge {
+        /// What overflowed.
+        what: &'static str,
+        /// How many.
+        count: u64,
+    },
+    /// A buffer could not be created or written (including data above a device limit).
+    #[error(transparent)]
+    Buffer(#[from] BufferError),
+    /// Reading a buffer back failed.
+    #[error(transparent)]
+    ReadBack(#[from] DispatchError),
+}
+
+fn object_label(index: usize, name: Option<&str>) -> String {
+    match name {
+        Some(n) => format!("`{n}` (#{index})"),
+        None => format!("#{index}"),
+    }
+}
+
+impl SceneError {
+    /// The error as a diagnostic at the scene's source, when it is about something written there
+    /// (an asset that cannot be read: E0902). Render it with the compile's source map.
+    pub fn to_diagnostic(&self) -> Option<Diagnostic> {
+        match self {
+            SceneError::Asset {
+                span: Some(span),
+                source,
+            } => Some(
+                Diagnostic::error(
+                    codes::E0902,
+                    format!("cannot load `{}`", source.path().display()),
+                    *span,
+                )
+                .with_label("named here")
+                .with_note(source.to_string()),
+            ),
+            _ => None,
+        }
+    }
+}

@@ -1,0 +1,245 @@
+//! The GPU stage: the scene's entities in persistent GPU buffers, one per ABI binding the kernel
+//! declares, re-uploaded only when their contents changed.
+//!
+//! Change detection: the big geometry buffers (`nodes`, `triangles`, `attributes`, `texels`) and
+//! `params` are compared by the [`Versions`](super::Versions) the entity stage keeps, without
+//! hashing; `frame` and `instances` by content hash (they are small, and `instances` switches
+//! between object order for the bounds kernel and TLAS order for rendering). So moving an object
+//! re-uploads `nodes` and `instances` (and `frame` only if the instance count changed) and nothing
+//! else. Every upload reports what happened per binding ([`UploadReport`]).
+//!
+//! Invariants: only bindings in the list given to [`GpuScene::new`] get buffers; data above a
+//! device limit is refused with `BufferError::TooLarge` naming the binding, before anything is
+//! written; `accum` and `counters` are zeroed by [`GpuScene::clear_accumulation`], never by an
+//! upload of scene data.
+
+use rtc_compiler::abi;
+use rtc_compiler::back::ResourceKind;
+
+use super::entities::Entities;
+use super::gpu_types::{element_size, FrameUniforms, GpuInstance};
+use super::SceneError;
+use crate::gpu::{
+    read_buffer, read_vec4_f32, BindingDesc, BindingKind, BufferLimits, BufferSet, Gpu, TileParams,
+    UploadOutcome, UploadStats,
+};
+
+/// The runtime's description of an ABI binding (kind and one element as the minimum size).
+pub fn runtime_binding(b: &abi::BindingDesc) -> BindingDesc {
+    let kind = match b.kind {
+        ResourceKind::Uniform => BindingKind::Uniform,
+        ResourceKind::StorageRead => BindingKind::StorageRead,
+        ResourceKind::StorageReadWrite => BindingKind::StorageReadWrite,
+    };
+    BindingDesc::new(b.binding, b.name, kind, element_size(b.element) as u64)
+}
+
+/// What one upload did, per binding, and the buffer set's statistics for it.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct UploadReport {
+    /// Each binding handled, by ABI name, with its outcome.
+    pub outcomes: Vec<(&'static str, UploadOutcome)>,
+    /// Bytes and buffers written, and CPU time.
+    pub stats: UploadStats,
+}
+
+impl UploadReport {
+    /// The outcome for the binding called `name`, if it was handled.
+    pub fn outcome(&self, name: &str) -> Option<UploadOutcome> {
+        self.outcomes
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, o)| *o)
+    }
+
+    /// Names of the bindings whose data was written.
+    pub fn written(&self) -> Vec<&'static str> {
+        self.outcomes
+            .iter()
+            .filter(|(_, o)| *o != UploadOutcome::Unchanged)
+            .map(|(n, _)| *n)
+            .collect()
+    }
+}
+
+/// Which instance order an upload writes.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum InstanceOrder {
+    Tlas,
+    Objects,
+}
+
+/// The scene's GPU buffers.
+#[derive(Debug)]
+pub struct GpuScene {
+    buffers: BufferSet,
+    bindings: Vec<(&'static abi::BindingDesc, BindingDesc)>,
+}
+
+impl GpuScene {
+    /// Buffers for exactly these bindings (duplicates are kept once), with `gpu`'s limits.
+    pub fn new(gpu: &Gpu, bindings: &[&'static abi::BindingDesc]) -> Self {
+        let mut list: Vec<(&'static abi::BindingDesc, BindingDesc)> = Vec::new();
+        for &b in bindings {
+            if !list.iter().any(|(have, _)| have.binding == b.binding) {
+                list.push((b, runtime_binding(b)));
+            }
+        }
+        list.sort_by_key(|(b, _)| b.binding);
+        Self {
+            buffers: BufferSet::new(gpu, "rtc scene"),
+            bindings: list,
+        }
+    }
+
+    /// Replaces the enforced limits (tests fake tiny ones).
+    pub fn with_limits(mut self, limits: BufferLimits) -> Self {
+        self.buffers = self.buffers.with_limits(limits);
+        self
+    }
+
+    /// The buffers, for binding to kernels.
+    pub fn buffers(&self) -> &BufferSet {
+        &self.buffers
+    }
+
+    /// The runtime descriptions of the given ABI bindings (for `create_kernel`).
+    pub fn runtime_bindings(bindings: &[&'static abi::BindingDesc]) -> Vec<BindingDesc> {
+        bindings.iter().map(|b| runtime_binding(b)).collect()
+    }
+
+    fn has(&self, name: &str) -> bool {
+        self.bindings.iter().any(|(b, _)| b.name == name)
+    }
+
+    /// Uploads what changed for rendering: instances in TLAS order, `accum` sized for `pixels`
+    /// pixels (zeroed if new or resized; see [`clear_accumulation`](Self::clear_accumulation)).
+    pub fn upload(
+        &mut self,
+        gpu: &Gpu,
+        entities: &Entities,
+        frame: &FrameUniforms,
+        pixels: u64,
+    ) -> Result<UploadReport, SceneError> {
+        self.write(gpu, entities, frame, InstanceOrder::Tlas, pixels)
+    }
+
+    /// Uploads what the bounds kernel reads: instances in object order, `accum` holding at least
+    /// two entries per object.
+    pub fn upload_for_bounds(
+        &mut self,
+        gpu: &Gpu,
+        entities: &Entities,
+        frame: &FrameUniforms,
+    ) -> Result<UploadReport, SceneError> {
+        let entries = 2 * entities.objects().len() as u64;
+        self.write(gpu, entities, frame, InstanceOrder::Objects, entries)
+    }
+
+    fn write(
+        &mut self,
+        gpu: &Gpu,
+        entities: &Entities,
+        frame: &FrameUniforms,
+        order: InstanceOrder,
+        accum_entries: u64,
+    ) -> Result<UploadReport, SceneError> {
+        self.buffers.begin_frame();
+        let versions = entities.versions();
+        let object_order;
+        let instances: &[GpuInstance] = match order {
+            InstanceOrder::Tlas => entities.instances(),
+            InstanceOrder::Objects => {
+                object_order = entities.instances_in_object_order();
+                &object_order
+            }
+        };
+        let mut outcomes = Vec::with_capacity(self.bindings.len());
+        for (abi_desc, desc) in &self.bindings {
+            let set = &mut self.buffers;
+            let outcome = match abi_desc.name {
+                "frame" => set.upload(gpu, desc, bytemuck::bytes_of(frame))?,
+                // Only for a bounds kernel that reads it; the tile dispatcher binds its own.
+                "tile" => set.upload(gpu, desc, bytemuck::bytes_of(&TileParams::default()))?,
+                "nodes" => set.upload_generation(
+                    gpu,
+                    desc,
+                    bytemuck::cast_slice(entities.nodes()),
+                    versions.nodes,
+                )?,
+                "instances" => set.upload(gpu, desc, bytemuck::cast_slice(instances))?,
+                "triangles" => set.upload_generation(
+                    gpu,
+                    desc,
+                    bytemuck::cast_slice(entities.triangles()),
+                    versions.triangles,
+                )?,
+                "attributes" => set.upload_generation(
+                    gpu,
+                    desc,
+                    bytemuck::cast_slice(entities.attributes()),
+                    versions.attributes,
+                )?,
+                "params" => set.upload_generation(
+                    gpu,
+                    desc,
+                    bytemuck::cast_slice(entities.params()),
+                    versions.params,
+                )?,
+                "texels" => set.upload_generation(
+                    gpu,
+                    desc,
+                    bytemuck::cast_slice(entities.texels()),
+                    versions.texels,
+                )?,
+                "accum" => set.ensure_zeroed(gpu, desc, accum_entries.max(1) * 16)?,
+                "counters" => set.ensure_zeroed(gpu, desc, 16)?,
+                // A binding this runtime does not know: nothing to put in it.
+                _ => continue,
+            };
+            outcomes.push((abi_desc.name, outcome));
+        }
+        Ok(UploadReport {
+            outcomes,
+            stats: self.buffers.stats(),
+        })
+    }
+
+    /// Zeroes `accum` and `counters` (before the first pass of a render).
+    pub fn clear_accumulation(&mut self, gpu: &Gpu) -> Result<(), SceneError> {
+        for name in ["accum", "counters"] {
+            if let Some(b) = abi::binding(name).filter(|_| self.has(name)) {
+                if self.buffers.buffer(b.binding).is_some() {
+                    self.buffers.clear(gpu, b.binding)?;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Reads `accum` back (every bound entry).
+    pub fn read_accumulation(&self, gpu: &Gpu) -> Result<Vec<[f32; 4]>, SceneError> {
+        let Some(b) = abi::binding("accum").filter(|_| self.has("accum")) else {
+            return Ok(Vec::new());
+        };
+        Ok(read_vec4_f32(gpu, &self.buffers, b.binding)?)
+    }
+
+    /// Reads the 4 `counters` back (zeros when the kernel has none).
+    pub fn read_counters(&self, gpu: &Gpu) -> Result<[u32; 4], SceneError> {
+        let buffer = abi::binding("counters")
+            .filter(|_| self.has("counters"))
+            .and_then(|b| self.buffers.buffer(b.binding));
+        let Some(buffer) = buffer else {
+            return Ok([0; 4]);
+        };
+        let bytes = read_buffer(gpu, buffer, 16)?;
+        let mut out = [0u32; 4];
+        for (word, chunk) in out.iter_mut().zip(bytes.chunks_exact(4)) {
+            if let Ok(b) = <[u8; 4]>::try_from(chunk) {
+                *word = u32::from_le_bytes(b);
+            }
+        }
+        Ok(out)
+    }
+}
