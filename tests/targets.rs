@@ -30,18 +30,27 @@ fn have(tool: &str) -> bool {
 fn required(tool: &str) -> bool {
     let present = have(tool);
     if !present {
-        assert!(std::env::var("CI").as_deref() != Ok("true"), "`{tool}` is required in CI (.ci/run installs it)");
+        assert!(
+            std::env::var("CI").as_deref() != Ok("true"),
+            "`{tool}` is required in CI (.ci/run installs it)"
+        );
         eprintln!("SKIPPED {tool}: not installed (apt-get install spirv-tools glslang-tools)");
     }
     present
 }
 
 fn slang_available() -> bool {
-    Command::new("python3").args(["-c", "import slangpy"]).output().map(|o| o.status.success()).unwrap_or(false)
+    Command::new("python3")
+        .args(["-c", "import slangpy"])
+        .output()
+        .map(|o| o.status.success())
+        .unwrap_or(false)
 }
 
 fn run(cmd: &mut Command, what: &str) -> Result<(), String> {
-    let out = cmd.output().map_err(|e| format!("{what}: cannot run: {e}"))?;
+    let out = cmd
+        .output()
+        .map_err(|e| format!("{what}: cannot run: {e}"))?;
     if out.status.success() {
         Ok(())
     } else {
@@ -75,9 +84,12 @@ fn check_all_targets(name: &str, c: &CompiledScene, dir: &Path) -> Vec<String> {
             let path = dir.join(format!("{stem}.{ext}"));
             std::fs::write(&path, &bytes).expect("write output");
             let result = match t {
-                Target::SpirV if required("spirv-val") => {
-                    run(Command::new("spirv-val").args(["--target-env", "vulkan1.1"]).arg(&path), "spirv-val")
-                }
+                Target::SpirV if required("spirv-val") => run(
+                    Command::new("spirv-val")
+                        .args(["--target-env", "vulkan1.1"])
+                        .arg(&path),
+                    "spirv-val",
+                ),
                 Target::Glsl if required("glslangValidator") && required("spirv-val") => {
                     let spv = dir.join(format!("{stem}.glsl.spv"));
                     run(
@@ -88,7 +100,12 @@ fn check_all_targets(name: &str, c: &CompiledScene, dir: &Path) -> Vec<String> {
                         "glslangValidator",
                     )
                     .and_then(|_| {
-                        run(Command::new("spirv-val").args(["--target-env", "vulkan1.1"]).arg(&spv), "spirv-val (GLSL)")
+                        run(
+                            Command::new("spirv-val")
+                                .args(["--target-env", "vulkan1.1"])
+                                .arg(&spv),
+                            "spirv-val (GLSL)",
+                        )
                     })
                 }
                 Target::Wgsl => {
@@ -96,14 +113,23 @@ fn check_all_targets(name: &str, c: &CompiledScene, dir: &Path) -> Vec<String> {
                     let reparsed = naga::front::wgsl::parse_str(&text)
                         .map_err(|e| format!("naga re-parse: {}", e.emit_to_string(&text)))
                         .and_then(|m| {
-                            naga::valid::Validator::new(naga::valid::ValidationFlags::all(), Target::Wgsl.capabilities())
-                                .validate(&m)
-                                .map(|_| ())
-                                .map_err(|e| format!("naga re-validation: {e:?}"))
+                            naga::valid::Validator::new(
+                                naga::valid::ValidationFlags::all(),
+                                Target::Wgsl.capabilities(),
+                            )
+                            .validate(&m)
+                            .map(|_| ())
+                            .map_err(|e| format!("naga re-validation: {e:?}"))
                         });
                     reparsed.and_then(|_| {
                         if have("tint") {
-                            run(Command::new("tint").args(["-f", "wgsl", "-o"]).arg(dir.join("tint.wgsl")).arg(&path), "tint")
+                            run(
+                                Command::new("tint")
+                                    .args(["-f", "wgsl", "-o"])
+                                    .arg(dir.join("tint.wgsl"))
+                                    .arg(&path),
+                                "tint",
+                            )
                         } else {
                             eprintln!("SKIPPED tint: not on PATH");
                             Ok(())
@@ -117,7 +143,9 @@ fn check_all_targets(name: &str, c: &CompiledScene, dir: &Path) -> Vec<String> {
                             Command::new("python3")
                                 .arg(script)
                                 .arg(&path)
-                                .args(["-target", "spirv", "-entry", entry, "-stage", "compute", "-o"])
+                                .args([
+                                    "-target", "spirv", "-entry", entry, "-stage", "compute", "-o",
+                                ])
                                 .arg(dir.join(format!("{stem}.slang.spv"))),
                             "slang (HLSL)",
                         )
@@ -137,7 +165,12 @@ fn check_all_targets(name: &str, c: &CompiledScene, dir: &Path) -> Vec<String> {
 }
 
 fn compile(paths: &[PathBuf], all: bool) -> CompiledScene {
-    match kernel::compile_scene(paths, None, &Options::default(), &LinkOptions { all_programs: all }) {
+    match kernel::compile_scene(
+        paths,
+        None,
+        &Options::default(),
+        &LinkOptions { all_programs: all },
+    ) {
         Ok(c) => c,
         Err(f) => panic!(
             "{}",
@@ -162,7 +195,11 @@ fn every_example_passes_every_validator() {
     let tmp = std::env::temp_dir().join(format!("rtc-targets-{}", std::process::id()));
     let mut failures = Vec::new();
     for ex in examples() {
-        let name = ex.parent().and_then(|p| p.file_name()).map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        let name = ex
+            .parent()
+            .and_then(|p| p.file_name())
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
         let c = compile(std::slice::from_ref(&ex), false);
         failures.extend(check_all_targets(&name, &c, &tmp.join(&name)));
     }

@@ -246,8 +246,18 @@ fn compile_with_two_scenes_needs_a_choice() {
     let out = rtc(&["compile", s(&file), "--out", s(&dir.join("out"))]);
     assert_eq!(code(&out), 1, "{}", stderr(&out));
     let err = stderr(&out);
-    assert!(err.contains("error[E0706]") && err.contains("--scene"), "{err}");
-    let out = rtc(&["compile", s(&file), "--scene", "b", "--out", s(&dir.join("out"))]);
+    assert!(
+        err.contains("error[E0706]") && err.contains("--scene"),
+        "{err}"
+    );
+    let out = rtc(&[
+        "compile",
+        s(&file),
+        "--scene",
+        "b",
+        "--out",
+        s(&dir.join("out")),
+    ]);
     assert_eq!(code(&out), 0, "{}", stderr(&out));
     assert!(dir.join("out/kernel.wgsl").is_file() && dir.join("out/manifest.json").is_file());
 }
@@ -266,5 +276,8 @@ fn compile_reports_a_missing_program() {
     let out = rtc(&["compile", s(&file), "--out", s(&dir.join("out"))]);
     assert_eq!(code(&out), 1, "{}", stderr(&out));
     let err = stderr(&out);
-    assert!(err.contains("error[E0901]") && err.contains("@closest_hit"), "{err}");
+    assert!(
+        err.contains("error[E0901]") && err.contains("@closest_hit"),
+        "{err}"
+    );
 }

@@ -11,6 +11,9 @@
 //! - User mistakes become diagnostics with a stable code, a span and, where it helps, a help line.
 
 #![forbid(unsafe_code)]
+// Docs are built with `--document-private-items`: links from module docs to private helpers are
+// meant for readers of the code.
+#![allow(rustdoc::private_intra_doc_links)]
 #![cfg_attr(
     not(test),
     warn(

@@ -101,7 +101,7 @@ impl Generated {
                     .find(|(_, t)| *t == HirType::Struct(id))
                     .map(|(t, _)| t)
                     .ok_or_else(|| kernel_error(format!("`{}` has no type", s.name)))?;
-                Ok(ty_of(cx, ty)?)
+                ty_of(cx, ty)
             };
         let ty = match desc.element {
             Element::Struct(s) => struct_ty(cx, s)?,

@@ -134,7 +134,10 @@ fn storable_in(p: &hir::Program, ty: TypeId, visiting: &mut Vec<hir::StructId>) 
                 return true;
             }
             visiting.push(s);
-            let ok = p.structs[s].fields.iter().all(|f| storable_in(p, f.ty, visiting));
+            let ok = p.structs[s]
+                .fields
+                .iter()
+                .all(|f| storable_in(p, f.ty, visiting));
             visiting.pop();
             ok
         }

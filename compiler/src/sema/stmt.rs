@@ -8,7 +8,7 @@
 //! that always leaves the block (`return`, `break`, `continue`, or an `if`/block/loop that always does)
 //! is unreachable; one W0003 per block, at the first such statement.
 //!
-//! Invariant: parameters and locals live in the function's [`Body`]; a local is in scope from the
+//! Invariant: parameters and locals live in the function's [`Body`](crate::sema::hir::Body); a local is in scope from the
 //! statement after its declaration to the end of its block.
 
 use super::error::SemaError;

@@ -116,7 +116,7 @@ pub const IDENTITY: [[f32; 4]; 4] = [
     [0.0, 0.0, 0.0, 1.0],
 ];
 
-/// Why [`Program::select_scene`] found no single scene.
+/// Why [`Program::select_scene`](crate::sema::hir::Program::select_scene) found no single scene.
 #[derive(Clone, Debug, PartialEq)]
 pub enum SceneChoiceError {
     /// No scene in the checked files.
