@@ -6,7 +6,7 @@
 //! | SPIR-V | `spirv-val --target-env vulkan1.1` |
 //! | GLSL | `glslangValidator -V` to SPIR-V, then `spirv-val` |
 //! | WGSL | re-parsed and validated by naga; and Tint (`tint` on PATH) where available |
-//! | HLSL | Slang's compiler library (`python3 tests/tools/slangc.py`, needs `pip install slangpy`) where available |
+//! | HLSL | Slang's compiler library (`tests/tools/slangc.py` run by `$RTC_SLANG_PYTHON` or `python3`; `.ci/run` installs slangpy in a virtual environment) where available |
 //! | MSL | no compiler exists on Linux: only naga's own validation for the MSL capabilities |
 //!
 //! With `CI=true`, `spirv-val` and `glslangValidator` must be present (`.ci/run` installs them); an
@@ -140,7 +140,7 @@ fn check_all_targets(name: &str, c: &CompiledScene, dir: &Path) -> Vec<String> {
                     if slang_available() {
                         let script = root().join("tests/tools/slangc.py");
                         run(
-                            Command::new("python3")
+                            Command::new(slang_python())
                                 .arg(script)
                                 .arg(&path)
                                 .args([

@@ -247,8 +247,11 @@ fn lower_kernels(
     let f = cx.ensure_function(render_pixel, &mut hooks)?;
     entry::render_entry(&mut cx, &mut hooks, f)?;
     let bindings = hooks.generated.used_bindings();
-    let render = cx.into_module();
+    let mut render = cx.into_module();
     crate::lower::validate(&render, sources)?;
+    // Compaction drops types and constants nothing uses, so outputs (and their snapshots) change only
+    // when the code does.
+    naga::compact::compact(&mut render, naga::compact::KeepUnused::No);
 
     let bounds = if linked.config.has_custom_geometry {
         let compute_bounds = intrinsics::kernel_fn(program, "compute_bounds")?;
@@ -261,8 +264,9 @@ fn lower_kernels(
         let mut cx = Lowerer::new(program, sources);
         let f = cx.ensure_function(compute_bounds, &mut hooks)?;
         entry::bounds_entry(&mut cx, f)?;
-        let module = cx.into_module();
+        let mut module = cx.into_module();
         crate::lower::validate(&module, sources)?;
+        naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
         Some(module)
     } else {
         None

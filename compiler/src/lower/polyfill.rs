@@ -10,7 +10,7 @@
 //! - `is_nan`, `is_inf`, `is_finite` test the bit pattern (`bitcast<u32>(x) & 0x7fffffff` against
 //!   `0x7f800000`): WGSL has no such functions, and comparisons like `x != x` are folded away by
 //!   fast-math compilers.
-//! - integer `/` and `%`: a zero divisor gives the left operand, and `i32::MIN / -1` gives `i32::MIN`
+//! - integer `/` and `%`: a zero divisor gives the left operand for `/` and 0 for `%`, and `i32::MIN / -1` gives `i32::MIN`
 //!   (`% -1` gives 0). naga's SPIR-V, HLSL and MSL writers guard division but make `x % 0` zero (as
 //!   WGSL does), naga's GLSL writer does not guard at all, and GLSL's `%` is undefined for negative
 //!   operands; the helpers (signed remainder as `a - d * (a / d)`) make all five targets agree with
@@ -396,7 +396,8 @@ fn int_div(lw: &mut Lowerer<'_>, w: u8, signed: bool, rem: bool) -> Function {
         } else {
             f.bin(Bo::Modulo, a, divisor)
         };
-        f.sel(by_zero, a, r)
+        // Remainder by zero is 0 (spec/expressions.md, as in WGSL).
+        f.sel(by_zero, zero, r)
     } else {
         f.div(a, divisor)
     };

@@ -14,10 +14,10 @@ pub fn div_i32(a: i32, b: i32) -> i32 {
     }
 }
 
-/// `a % b` for `i32`: a zero divisor gives `a`; `MIN % -1` gives 0; truncated (sign of `a`).
+/// `a % b` for `i32`: a zero divisor gives 0; `MIN % -1` gives 0; truncated (sign of `a`).
 pub fn rem_i32(a: i32, b: i32) -> i32 {
     if b == 0 {
-        a
+        0
     } else {
         a.wrapping_rem(b)
     }
@@ -28,9 +28,9 @@ pub fn div_u32(a: u32, b: u32) -> u32 {
     a.checked_div(b).unwrap_or(a)
 }
 
-/// `a % b` for `u32`: a zero divisor gives `a`.
+/// `a % b` for `u32`: a zero divisor gives 0.
 pub fn rem_u32(a: u32, b: u32) -> u32 {
-    a.checked_rem(b).unwrap_or(a)
+    a.checked_rem(b).unwrap_or(0)
 }
 
 /// `i32(x)` of an `f32`: truncation, saturating to the `f32` values nearest the range

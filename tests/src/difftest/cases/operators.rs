@@ -54,7 +54,7 @@ pub fn int_op(
     )
 }
 
-/// Integer arithmetic: wrapping `+ - *`, division and remainder by zero (the left operand),
+/// Integer arithmetic: wrapping `+ - *`, division by zero (the left operand) and remainder by zero (0),
 /// `i32::MIN / -1`, shifts modulo 32, bit operators, negation, comparisons, compound assignment.
 pub fn integer_operators() -> Vec<Spec> {
     let mut specs = Vec::new();
