@@ -314,6 +314,7 @@ fn stand_in(text: &str, samples_per_pass: u32) -> CompiledScene {
             .map(|n| abi::binding(n).expect("ABI binding"))
             .collect(),
         samples_per_pass,
+        timings: Vec::new(),
     }
 }
 

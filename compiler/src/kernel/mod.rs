@@ -43,6 +43,12 @@ pub struct CompiledScene {
     pub bindings: Vec<&'static BindingDesc>,
     /// Samples per pixel one pass of the render kernel takes (the camera program's `samples`).
     pub samples_per_pass: u32,
+    /// How long each phase of the compile took, in milliseconds, in order.
+    pub timings: Vec<(&'static str, f64)>,
+}
+
+fn ms_since(t: std::time::Instant) -> f64 {
+    t.elapsed().as_secs_f64() * 1e3
 }
 
 /// The render kernel's entry point.
@@ -73,6 +79,18 @@ pub fn check_with_kernel(
     options: &Options,
     link_options: &LinkOptions,
 ) -> Result<(Checked, SceneId, Linked), Box<CompileFailure>> {
+    check_with_kernel_timed(paths, scene, options, link_options, &mut Vec::new())
+}
+
+/// [`check_with_kernel`], recording the time of each phase in `timings`.
+pub fn check_with_kernel_timed(
+    paths: &[PathBuf],
+    scene: Option<&str>,
+    options: &Options,
+    link_options: &LinkOptions,
+    timings: &mut Vec<(&'static str, f64)>,
+) -> Result<(Checked, SceneId, Linked), Box<CompileFailure>> {
+    let t = std::time::Instant::now();
     let fail = |checked: Checked, diagnostics: Vec<Diagnostic>| {
         Box::new(CompileFailure {
             checked,
@@ -80,6 +98,8 @@ pub fn check_with_kernel(
         })
     };
     let first = crate::driver::check_paths(paths, options);
+    timings.push(("check the user's files", ms_since(t)));
+    let t = std::time::Instant::now();
     let Some(program) = first.program.as_ref() else {
         let d = first.diagnostics.clone();
         return Err(fail(first, d));
@@ -97,6 +117,8 @@ pub fn check_with_kernel(
         Ok(l) => l,
         Err(d) => return Err(fail(first, d)),
     };
+    timings.push(("link", ms_since(t)));
+    let t = std::time::Instant::now();
     let mut opts = options.clone();
     opts.generated
         .insert(generated::ABI_MODULE.to_string(), generated::abi_module());
@@ -105,6 +127,7 @@ pub fn check_with_kernel(
         generated::config_module(&linked.config),
     );
     let second = crate::driver::check_paths_with_std(paths, KERNEL_ROOTS, &opts);
+    timings.push(("check with the kernel", ms_since(t)));
     let Some(program) = second.program.as_ref() else {
         let d = second.diagnostics.clone();
         return Err(fail(second, d));
@@ -179,9 +202,11 @@ pub fn compile_scene(
     options: &Options,
     link_options: &LinkOptions,
 ) -> Result<CompiledScene, Box<CompileFailure>> {
-    let (checked, scene_id, linked) = check_with_kernel(paths, scene, options, link_options)?;
+    let mut timings = Vec::new();
+    let (checked, scene_id, linked) =
+        check_with_kernel_timed(paths, scene, options, link_options, &mut timings)?;
     let built = match checked.program.as_ref() {
-        Some(program) => lower_kernels(program, &checked.sources, &linked),
+        Some(program) => lower_kernels(program, &checked.sources, &linked, &mut timings),
         None => Err(dispatch::kernel_error("the checked program is missing")),
     };
     match built {
@@ -203,6 +228,7 @@ pub fn compile_scene(
                 bounds,
                 bindings,
                 samples_per_pass,
+                timings,
             })
         }
         Err(e) => {
@@ -224,18 +250,20 @@ pub fn compile_scene(
 
 /// Phases 4 and 5: lowers the render kernel (and the bounds kernel when the scene has custom geometry)
 /// and validates them.
+/// The modules [`lower_kernels`] builds: render, bounds (if any), and the render kernel's bindings.
+type Kernels = (
+    naga::Module,
+    Option<naga::Module>,
+    Vec<&'static BindingDesc>,
+);
+
 fn lower_kernels(
     program: &Program,
     sources: &crate::source::SourceMap,
     linked: &Linked,
-) -> Result<
-    (
-        naga::Module,
-        Option<naga::Module>,
-        Vec<&'static BindingDesc>,
-    ),
-    LowerError,
-> {
+    timings: &mut Vec<(&'static str, f64)>,
+) -> Result<Kernels, LowerError> {
+    let t = std::time::Instant::now();
     let render_pixel = intrinsics::kernel_fn(program, "render_pixel")?;
     let mut hooks = KernelHooks {
         program,
@@ -248,10 +276,14 @@ fn lower_kernels(
     entry::render_entry(&mut cx, &mut hooks, f)?;
     let bindings = hooks.generated.used_bindings();
     let mut render = cx.into_module();
+    timings.push(("lower to naga IR", ms_since(t)));
+    let t = std::time::Instant::now();
     crate::lower::validate(&render, sources)?;
     // Compaction drops types and constants nothing uses, so outputs (and their snapshots) change only
     // when the code does.
     naga::compact::compact(&mut render, naga::compact::KeepUnused::No);
+    timings.push(("validate and compact", ms_since(t)));
+    let t = std::time::Instant::now();
 
     let bounds = if linked.config.has_custom_geometry {
         let compute_bounds = intrinsics::kernel_fn(program, "compute_bounds")?;
@@ -271,6 +303,9 @@ fn lower_kernels(
     } else {
         None
     };
+    if bounds.is_some() {
+        timings.push(("bounds kernel", ms_since(t)));
+    }
     Ok((render, bounds, bindings))
 }
 
