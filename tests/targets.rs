@@ -155,6 +155,12 @@ fn check_all_targets(name: &str, c: &CompiledScene, dir: &Path) -> Vec<String> {
                             "slang (HLSL)",
                         )
                     } else {
+                        // `.ci/run` installs slangpy and sets RTC_SLANG_PYTHON: in CI the check must run.
+                        assert!(
+                            !(std::env::var("CI").as_deref() == Ok("true")
+                                && std::env::var_os("RTC_SLANG_PYTHON").is_some()),
+                            "RTC_SLANG_PYTHON is set but cannot import slangpy"
+                        );
                         eprintln!("SKIPPED slang: `pip install slangpy` to compile HLSL");
                         Ok(())
                     }
