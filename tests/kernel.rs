@@ -1,0 +1,235 @@
+//! Specialisation of the generated kernel, checked without a GPU: a program, dispatcher or binding
+//! the scene does not use is in none of the five emitted outputs and is listed in `manifest.json`'s
+//! `left_out`; `LinkOptions { all_programs: true }` (the CLI's `--all-programs`) keeps them.
+//!
+//! The scenes import several stdlib materials and backgrounds and declare a textured material of
+//! their own, then use only some of them.
+
+use rtc_compiler::back::{self, Target};
+use rtc_compiler::driver::Options;
+use rtc_compiler::kernel::{self, manifest::manifest_json, CompiledScene, RENDER_ENTRY};
+use rtc_compiler::link::LinkOptions;
+
+/// The programs of the imported types; the scenes below use `lambert_shade` and
+/// `constant_background` (and `textured_shade` when `textured` is true).
+const UNUSED: [&str; 6] = [
+    "mirror_rays",
+    "mirror_shade",
+    "glass_rays",
+    "glass_shade",
+    "sky_gradient",
+    "textured_shade",
+];
+
+fn scene(textured: bool) -> String {
+    let material = if textured {
+        "Textured { tex: solid_texture(vec4f(0.5, 0.25, 1.0, 1.0)) }"
+    } else {
+        "Lambert { albedo: vec3f(0.5) }"
+    };
+    format!(
+        r#"
+import "std/cameras/pinhole.rt";
+import "std/materials/lambert.rt";
+import "std/materials/mirror.rt";
+import "std/materials/glass.rt";
+import "std/lights/point.rt";
+import "std/miss/constant.rt";
+import "std/miss/gradient.rt";
+
+/// A material that samples a texture: the only reader of the `texels` binding.
+@material
+struct Textured {{
+    tex: texture,
+}}
+
+@closest_hit
+fn textured_shade(m: Textured, ray: Ray, hit: Hit) -> vec3f {{
+    return sample(m.tex, hit.uv).xyz;
+}}
+
+scene specialised {{
+    settings {{ width: 16, height: 16, samples: 1 }}
+    camera Pinhole {{}}
+    background ConstantBackground {{ color: vec3f(0.1) }}
+    object floor {{ geometry: quad_mesh(), material: {material} }}
+    object ball {{ geometry: sphere_mesh(1u), material: Lambert {{}}, transform: translate(vec3f(0.0, 1.0, 0.0)) }}
+    light PointLight {{ position: vec3f(0.0, 3.0, 0.0) }}
+}}
+"#
+    )
+}
+
+fn compile(name: &str, text: &str, all_programs: bool) -> CompiledScene {
+    let dir = std::env::temp_dir().join(format!("rtc-kernel-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join("scene.rt");
+    std::fs::write(&path, text).expect("scene file");
+    let c = kernel::compile_scene(
+        std::slice::from_ref(&path),
+        None,
+        &Options::default(),
+        &LinkOptions { all_programs },
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+    match c {
+        Ok(c) => c,
+        Err(f) => panic!(
+            "{name}: compile failed:\n{}",
+            rtc_compiler::diag::render_human(&f.checked.sources, &f.diagnostics, false)
+        ),
+    }
+}
+
+/// The five outputs of the render kernel, as text (SPIR-V as its words in hex and its strings).
+fn outputs(c: &CompiledScene) -> Vec<(Target, Vec<u8>)> {
+    let resources = rtc_compiler::abi::resources(c.bindings.iter().copied());
+    Target::ALL
+        .into_iter()
+        .map(|t| {
+            let bytes = back::write(&c.render, t, RENDER_ENTRY, &resources)
+                .unwrap_or_else(|e| panic!("{}: {e}", t.name()));
+            (t, bytes)
+        })
+        .collect()
+}
+
+fn contains(haystack: &[u8], needle: &str) -> bool {
+    haystack
+        .windows(needle.len())
+        .any(|w| w == needle.as_bytes())
+}
+
+fn function_names(c: &CompiledScene) -> Vec<String> {
+    c.render
+        .functions
+        .iter()
+        .filter_map(|(_, f)| f.name.clone())
+        .collect()
+}
+
+fn global_names(c: &CompiledScene) -> Vec<String> {
+    c.render
+        .global_variables
+        .iter()
+        .filter_map(|(_, g)| g.name.clone())
+        .collect()
+}
+
+/// The `left_out` part of the manifest (it is the last member); a program there is named
+/// `"@<kind> <function>"`.
+fn left_out(manifest: &str) -> &str {
+    let at = manifest
+        .find("\"left_out\"")
+        .expect("manifest has left_out");
+    &manifest[at..]
+}
+
+/// The manifest without its `left_out` part: what the kernels declare.
+fn declared(manifest: &str) -> &str {
+    let at = manifest
+        .find("\"left_out\"")
+        .expect("manifest has left_out");
+    &manifest[..at]
+}
+
+#[test]
+fn unused_programs_are_in_no_output_and_listed_as_left_out() {
+    let c = compile("lambert", &scene(false), false);
+    let names = function_names(&c);
+    assert!(
+        names.iter().any(|n| n.contains("lambert_shade")),
+        "the used program is emitted: {names:?}"
+    );
+    for (t, bytes) in outputs(&c) {
+        for f in UNUSED {
+            assert!(!contains(&bytes, f), "{f} is in the {} output", t.name());
+        }
+    }
+    for f in UNUSED {
+        assert!(
+            !names.iter().any(|n| n.contains(f)),
+            "{f} is a function of the module"
+        );
+    }
+    let manifest = manifest_json(&c);
+    let left = left_out(&manifest);
+    for f in UNUSED {
+        assert!(
+            contains(left.as_bytes(), &format!(" {f}\"")),
+            "{f} is not in the manifest's left_out:\n{left}"
+        );
+        assert!(
+            !contains(declared(&manifest).as_bytes(), f),
+            "{f} is in the manifest's kernels or programs"
+        );
+    }
+}
+
+#[test]
+fn a_scene_without_textures_has_no_texels_binding() {
+    let c = compile("no-textures", &scene(false), false);
+    assert!(!c.bindings.iter().any(|b| b.name == "texels"));
+    assert!(
+        !global_names(&c).iter().any(|g| g.contains("texels")),
+        "{:?}",
+        global_names(&c)
+    );
+    let manifest = manifest_json(&c);
+    assert!(!contains(declared(&manifest).as_bytes(), "\"texels\""));
+    assert!(contains(left_out(&manifest).as_bytes(), "\"texels\""));
+    for (t, bytes) in outputs(&c) {
+        assert!(
+            !contains(&bytes, "texels"),
+            "texels in the {} output",
+            t.name()
+        );
+    }
+
+    // The same scene with the textured material in use has the binding.
+    let t = compile("textures", &scene(true), false);
+    assert!(t.bindings.iter().any(|b| b.name == "texels"));
+    assert!(global_names(&t).iter().any(|g| g.contains("texels")));
+    let manifest = manifest_json(&t);
+    assert!(contains(declared(&manifest).as_bytes(), "\"texels\""));
+    assert!(!contains(left_out(&manifest).as_bytes(), "\"texels\""));
+}
+
+#[test]
+fn all_programs_keeps_every_program_and_binding() {
+    let specialised = compile("specialised", &scene(false), false);
+    let all = compile("all-programs", &scene(false), true);
+    let names = function_names(&all);
+    for f in UNUSED {
+        assert!(
+            names.iter().any(|n| n.contains(f)),
+            "{f} is not a function of the --all-programs module: {names:?}"
+        );
+    }
+    assert!(all.bindings.iter().any(|b| b.name == "texels"));
+    assert!(global_names(&all).iter().any(|g| g.contains("texels")));
+    let manifest = manifest_json(&all);
+    for f in UNUSED {
+        assert!(
+            contains(declared(&manifest).as_bytes(), &format!("\"{f}\"")),
+            "{f} is not among the --all-programs manifest's programs"
+        );
+    }
+    assert!(contains(declared(&manifest).as_bytes(), "\"texels\""));
+    // Every output of the unspecialised kernel is larger.
+    for ((t, s), (_, a)) in outputs(&specialised).into_iter().zip(outputs(&all)) {
+        assert!(
+            a.len() > s.len(),
+            "{}: {} bytes specialised, {} with --all-programs",
+            t.name(),
+            s.len(),
+            a.len()
+        );
+        if t != Target::SpirV {
+            for f in UNUSED {
+                assert!(contains(&a, f), "{f} is not in the {} output", t.name());
+            }
+        }
+    }
+}
