@@ -7,13 +7,26 @@
 //! The doubled centroids of the node's references are mapped into `bins` equal slabs per axis
 //! of the centroid box ([`BinMap`]). One pass accumulates each bin's box and count on all three
 //! axes (in parallel for large nodes); a sweep from each side then prices every plane between
-//! two non-empty bins.
+//! two non-empty bins. Two or four accumulators take references in turn, which shortens the
+//! chains of dependent updates when neighbouring references fall into the same bin.
+//!
+//! Two additions to Wald's scheme:
+//!
+//! * **Size split** ([`find_size`]): where a node holds a reference larger than a sixteenth of
+//!   the node, cuts between size classes ("large ones left, small ones right") are priced as
+//!   well. A plane cannot group large primitives whose centroids lie far apart (a ground quad
+//!   under a model); the SAH rewards doing so.
+//! * **Sampling**: nodes of at least [`SAMPLED_BINNING_MIN`] references bin every
+//!   [`SAMPLE_STRIDE`]-th one (the top levels of a multi-million-triangle build are
+//!   memory-bound); the partition then measures the exact child boxes.
 //!
 //! # Invariants
 //!
 //! * Partitioning uses the same bin map as binning ([`BinMap::bin_on`] equals a lane of
 //!   [`BinMap::bin`]), so the counts and boxes found while binning are exactly those of the two
-//!   halves.
+//!   halves (for a sampled node, the boxes are measured by the partition instead).
+//! * Costs are unnormalised SAH costs in `f64` (a sample's counts scaled by the stride), so they
+//!   compare with the costs of every other split search.
 //! * Parallel binning and partitioning split the work by position only, so the result does not
 //!   depend on the number of threads.
 
@@ -139,48 +152,68 @@ impl Bins {
         }
     }
 
-    /// Bins `refs` into `self` and `alt` alternately, then merges `alt` into `self`. Spatially
-    /// coherent references often fall into the same bins; two accumulators halve the chains of
-    /// dependent load-min-store updates on one bin.
-    fn fill_pairs(
+    /// Bins every `stride`-th reference into `self` and the `extra` accumulators in turn, then
+    /// merges them into `self`. Spatially coherent references often fall into the same bins;
+    /// each accumulator breaks the chain of dependent load-min-store updates on one bin. Four
+    /// accumulators for dense nodes of at least [`QUAD_BINNING_MIN`] references, two otherwise
+    /// (merging costs `bins` unions per accumulator).
+    fn fill_interleaved(
         &mut self,
-        alt: &mut Bins,
+        extra: &mut Extra,
         refs: &[PrimRef],
         map: &BinMap,
         n_bins: usize,
         stride: usize,
     ) {
+        let [a, b, c] = extra;
         self.reset(n_bins);
-        alt.reset(n_bins);
-        let mut it = refs.iter().step_by(stride);
-        while let Some(a) = it.next() {
-            self.add(map, a);
-            if let Some(b) = it.next() {
-                alt.add(map, b);
+        a.reset(n_bins);
+        if stride == 1 && refs.len() >= QUAD_BINNING_MIN {
+            b.reset(n_bins);
+            c.reset(n_bins);
+            let mut quads = refs.chunks_exact(4);
+            for q in &mut quads {
+                self.add(map, &q[0]);
+                a.add(map, &q[1]);
+                b.add(map, &q[2]);
+                c.add(map, &q[3]);
+            }
+            for r in quads.remainder() {
+                self.add(map, r);
+            }
+            self.merge(b, n_bins);
+            self.merge(c, n_bins);
+        } else {
+            let mut it = refs.iter().step_by(stride);
+            while let Some(r) = it.next() {
+                self.add(map, r);
+                if let Some(r) = it.next() {
+                    a.add(map, r);
+                }
             }
         }
-        self.merge(alt, n_bins);
+        self.merge(a, n_bins);
     }
 
     /// Bins every `stride`-th reference of `refs` into `self` (in parallel for large nodes);
-    /// `alt` is scratch of the same shape.
+    /// `extra` are scratch accumulators.
     pub(crate) fn fill(
         &mut self,
-        alt: &mut Bins,
+        extra: &mut Extra,
         refs: &[PrimRef],
         map: &BinMap,
         n_bins: usize,
         stride: usize,
     ) {
         if refs.len() < PAR_BINNING_MIN {
-            self.fill_pairs(alt, refs, map, n_bins, stride);
+            self.fill_interleaved(extra, refs, map, n_bins, stride);
             return;
         }
         let partial = refs
             .par_chunks(PAR_BINNING_CHUNK)
             .map(|chunk| {
-                let (mut bins, mut alt) = (Bins::new(), Bins::new());
-                bins.fill_pairs(&mut alt, chunk, map, n_bins, stride);
+                let mut bins = Bins::new();
+                bins.fill_interleaved(&mut Bins::extra(), chunk, map, n_bins, stride);
                 bins
             })
             .reduce_with(|mut a, b| {
@@ -192,7 +225,18 @@ impl Bins {
             self.merge(&p, n_bins);
         }
     }
+
+    /// Scratch accumulators for [`Bins::fill`].
+    pub(crate) fn extra() -> Extra {
+        [Bins::new(), Bins::new(), Bins::new()]
+    }
 }
+
+/// The extra accumulators of interleaved binning.
+pub(crate) type Extra = [Box<Bins>; 3];
+
+/// Nodes with at least this many references are binned into four accumulators.
+const QUAD_BINNING_MIN: usize = 256;
 
 /// Prices every plane between non-empty bins on every usable axis and returns the cheapest
 /// object split, or `None` when no plane has references on both sides (every centroid in one
@@ -203,7 +247,7 @@ pub(crate) fn find(
     info: &NodeInfo,
     n_bins: usize,
     bins: &mut Bins,
-    alt: &mut Bins,
+    extra: &mut Extra,
 ) -> Option<ObjectChoice> {
     let map = BinMap::new(&info.centroid_bounds, n_bins);
     // Very large nodes (the memory-bound top of a multi-million-reference build) choose their
@@ -213,7 +257,7 @@ pub(crate) fn find(
     } else {
         1
     };
-    bins.fill(alt, refs, &map, n_bins, stride);
+    bins.fill(extra, refs, &map, n_bins, stride);
     let mut best = find_planes(bins, &map, n_bins, stride > 1);
     if bins.max_area > SIZE_SPLIT_MIN_RATIO * info.bounds.half_area() {
         if let Some(s) = find_size(refs, bins.max_area) {
@@ -226,7 +270,7 @@ pub(crate) fn find(
 }
 
 /// Nodes with at least this many references are binned from every [`SAMPLE_STRIDE`]-th one.
-const SAMPLED_BINNING_MIN: usize = 1 << 20;
+const SAMPLED_BINNING_MIN: usize = 1 << 17;
 
 /// Sampling stride of very large nodes.
 const SAMPLE_STRIDE: usize = 4;

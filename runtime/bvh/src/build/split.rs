@@ -7,7 +7,9 @@
 //! * Costs are unnormalised SAH costs of the two children (`sum half_area * count`) in `f64`,
 //!   computed from finite `f32` half areas, so no cost is NaN and every comparison is total.
 //! * A node with more than `max_leaf_size` references is always split, and every split leaves
-//!   at least one reference on each side, so the recursion terminates.
+//!   at least one reference on each side. The recursion terminates: an object split makes both
+//!   children smaller; a spatial split that creates `d` extra references costs the subtree `d`
+//!   of its duplication budget, so `references + budget` of each child is below the parent's.
 //! * From [`SAH_DEPTH_LIMIT`] on, splits are median splits, which halve the count: the depth
 //!   stays below `SAH_DEPTH_LIMIT + 32 <= MAX_DEPTH`.
 //! * The decision depends only on the node's references and settings, never on thread timing.
@@ -91,8 +93,8 @@ pub(crate) enum ObjectHow {
 /// Per-task scratch memory, reused by every node the task splits.
 pub(crate) struct Scratch {
     pub bins: Box<Bins>,
-    /// Second accumulator for binning.
-    pub alt: Box<Bins>,
+    /// Extra accumulators for binning.
+    pub extra: binned::Extra,
     /// Allocated on the first spatial split attempt.
     pub spatial: Option<Box<SpatialBins>>,
 }
@@ -101,7 +103,7 @@ impl Scratch {
     pub(crate) fn new() -> Self {
         Self {
             bins: Bins::new(),
-            alt: Bins::new(),
+            extra: Bins::extra(),
             spatial: None,
         }
     }
@@ -194,7 +196,13 @@ pub(crate) fn decide(
     } else if n <= small::SMALL_NODE_MAX {
         small::find_sorted(refs, info, params.sweep_all_axes)
     } else {
-        binned::find(refs, info, params.bins, &mut scratch.bins, &mut scratch.alt)
+        binned::find(
+            refs,
+            info,
+            params.bins,
+            &mut scratch.bins,
+            &mut scratch.extra,
+        )
     };
     let spatial = match &ctx.spatial {
         Some(sc) if budget > 0 && overlap(object.as_ref(), info) > sc.min_overlap => {
