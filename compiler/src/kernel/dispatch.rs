@@ -36,10 +36,6 @@ pub fn kernel_error(message: impl Into<String>) -> LowerError {
     }
 }
 
-fn ty_of(cx: &mut LowerCx<'_>, ty: TypeId) -> Result<Handle<Type>, LowerError> {
-    cx.ty(ty)
-}
-
 /// Generated functions and globals of one kernel module.
 #[derive(Default)]
 pub struct Generated {
@@ -95,13 +91,7 @@ impl Generated {
             |cx: &mut LowerCx<'_>, s: &abi::StructDesc| -> Result<Handle<Type>, LowerError> {
                 let id = abi_struct(program, s.name)
                     .ok_or_else(|| kernel_error(format!("`{}` is missing from rtc:abi", s.name)))?;
-                let ty = program
-                    .types
-                    .iter()
-                    .find(|(_, t)| *t == HirType::Struct(id))
-                    .map(|(t, _)| t)
-                    .ok_or_else(|| kernel_error(format!("`{}` has no type", s.name)))?;
-                ty_of(cx, ty)
+                cx.ty(struct_type_id(program, id)?)
             };
         let ty = match desc.element {
             Element::Struct(s) => struct_ty(cx, s)?,
@@ -209,7 +199,7 @@ impl Generated {
         }
         let params = self.binding(cx, program, abi_binding("params")?)?;
         let ty = struct_type_id(program, s)?;
-        let result = ty_of(cx, ty)?;
+        let result = cx.ty(ty)?;
         let u32_ty = TypeCache::scalar(cx.module_mut(), Scalar::U32);
         let name = format!("load_{}", program.structs[s].name);
         let mut fb = FnBuilder::new(&name, &[("offset", u32_ty)], Some(result));
@@ -308,7 +298,7 @@ fn load_value(
     base: Handle<Expression>,
     first: u32,
 ) -> Result<Handle<Expression>, LowerError> {
-    let naga_ty = ty_of(cx, ty)?;
+    let naga_ty = cx.ty(ty)?;
     Ok(match program.types.get(ty) {
         HirType::Scalar(k) => {
             let w = word(fb, params, base, first);

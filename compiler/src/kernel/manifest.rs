@@ -12,7 +12,6 @@ use super::{CompiledScene, BOUNDS_ENTRY, BOUNDS_WORKGROUP, RENDER_ENTRY, RENDER_
 use crate::abi;
 use crate::back::ResourceKind;
 use crate::layout;
-use crate::sema::types::{Type as HirType, TypeId};
 use serde::Serialize;
 
 #[derive(Serialize)]
@@ -160,7 +159,7 @@ pub fn manifest_json(c: &CompiledScene) -> String {
                 id: t.id,
             });
         }
-        if let Some(ty) = struct_type(program, t.struct_id) {
+        if let Ok(ty) = super::dispatch::struct_type_id(program, t.struct_id) {
             let offsets = layout::field_offsets(program, ty);
             params_layouts.push(ParamLayout {
                 name: st.name.clone(),
@@ -233,15 +232,4 @@ pub fn manifest_json(c: &CompiledScene) -> String {
     let mut s = serde_json::to_string_pretty(&m).unwrap_or_default();
     s.push('\n');
     s
-}
-
-fn struct_type(
-    program: &crate::sema::hir::Program,
-    s: crate::sema::hir::StructId,
-) -> Option<TypeId> {
-    program
-        .types
-        .iter()
-        .find(|(_, t)| *t == HirType::Struct(s))
-        .map(|(t, _)| t)
 }
