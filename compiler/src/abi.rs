@@ -223,7 +223,7 @@ pub const BINDINGS: &[BindingDesc] = &[
         name: "counters",
         kind: ResourceKind::StorageReadWrite,
         element: Element::Atomics,
-        doc: "atomic counters: [0] = samples that were not finite (NaN or infinite) and were replaced by zero",
+        doc: "atomic counters: [0] = samples that were not finite (NaN or infinite) and were replaced by zero, [1] = rays traced (camera, secondary and shadow)",
     },
 ];
 

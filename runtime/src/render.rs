@@ -22,8 +22,9 @@
 //! taken are `total_samples` rounded up to a multiple of it ([`RenderStats::samples`]); the average
 //! is exact whatever the count, because `accum.a` counts the samples.
 //!
-//! Rays per second count primary rays only (`width × height × samples`): the kernel does not count
-//! the secondary and shadow rays it traces.
+//! Rays per second are given twice: primary rays only (`width × height × samples`), and every ray
+//! the kernel traced (camera, secondary and shadow rays: the kernel's counter 1, read after each
+//! pass so a 32-bit counter cannot wrap within a render of fewer than 2³² rays per pass).
 //!
 //! Invariants: nothing here panics on run-time data or exits; every failure is a [`RenderError`];
 //! wgpu errors raised outside our error scopes are collected after a render and reported.
@@ -160,6 +161,11 @@ pub struct RenderStats {
     pub primary_rays: u64,
     /// Primary rays per second of `render_ms`.
     pub rays_per_second: f64,
+    /// Rays traced: camera, secondary and shadow rays (the kernel's counter 1; 0 for a kernel
+    /// without it).
+    pub rays_traced: u64,
+    /// Rays traced per second of `render_ms`.
+    pub traced_rays_per_second: f64,
     /// Samples that were NaN or infinite and counted as zero (the kernel's counter 0).
     pub nonfinite_samples: u32,
     /// Distinct triangles in memory.
@@ -457,6 +463,8 @@ impl<'g> Renderer<'g> {
         let mut render_ms = 0.0;
         let mut flush_ms = 0.0;
         let mut tiles = 0u64;
+        let mut rays_traced = 0u64;
+        let mut last_rays = 0u32;
         for pass in 0..passes {
             let base = u64::from(pass) * per_pass;
             let d = self.dispatcher.dispatch(
@@ -470,11 +478,17 @@ impl<'g> Renderer<'g> {
             render_ms += d.dispatch_ms;
             flush_ms += d.flush_ms;
             tiles += u64::from(d.tiles);
+            if passes > 1 {
+                let rays = self.scene.read_counters(gpu)?[1];
+                rays_traced += u64::from(rays.wrapping_sub(last_rays));
+                last_rays = rays;
+            }
         }
 
         let start = Instant::now();
         let accum = self.scene.read_accumulation(gpu)?;
         let counters = self.scene.read_counters(gpu)?;
+        rays_traced += u64::from(counters[1].wrapping_sub(last_rays));
         let image = LinearImage::from_accumulation(width, height, &accum)?;
         let readback_ms = ms_since(start);
         let messages = gpu.take_uncaptured_errors();
@@ -509,6 +523,12 @@ impl<'g> Renderer<'g> {
             } else {
                 0.0
             },
+            rays_traced,
+            traced_rays_per_second: if render_ms > 0.0 {
+                rays_traced as f64 / (render_ms / 1e3)
+            } else {
+                0.0
+            },
             nonfinite_samples: counters[0],
             triangles: es.triangles,
             instanced_triangles: es.instanced_triangles,
@@ -521,6 +541,44 @@ impl<'g> Renderer<'g> {
             warnings: self.entities.warnings().to_vec(),
         };
         Ok(RenderResult { image, stats })
+    }
+}
+
+impl Renderer<'_> {
+    /// Runs one pass of a **debug kernel** (compiled with `rtc_compiler::kernel::compile_scene_with`
+    /// and `KernelOptions { debug: Some(mode) }`) and returns its raw per-pixel values, row-major
+    /// (`y * width + x`), `width × height` of them. What the four channels hold is the
+    /// `DebugMode`'s (nodes visited, primitives tested, hit `t` or -1, hit object or -1; or the
+    /// camera ray's origin and `tmin`; or its direction and `tmax`). The values are not divided by
+    /// a sample count: one pass writes each pixel once, into a zeroed buffer.
+    ///
+    /// With a normal kernel this returns the first pass's raw accumulation (`rgb` sums, `a` = the
+    /// samples of one pass).
+    pub fn render_debug(&mut self) -> Result<Vec<[f32; 4]>, RenderError> {
+        let gpu = self.gpu;
+        self.entities.refresh()?;
+        let [width, height] = self.size;
+        let pixels = u64::from(width) * u64::from(height);
+        let frame = self
+            .entities
+            .frame_uniforms(self.samples_per_pass, self.total_samples);
+        self.scene.upload(gpu, &self.entities, &frame, pixels)?;
+        self.scene.clear_accumulation(gpu)?;
+        self.dispatcher.dispatch(
+            gpu,
+            &self.kernel,
+            self.scene.buffers(),
+            self.size,
+            0,
+            &mut |_, _| {},
+        )?;
+        let mut accum = self.scene.read_accumulation(gpu)?;
+        let messages = gpu.take_uncaptured_errors();
+        if !messages.is_empty() {
+            return Err(RenderError::Wgpu { messages });
+        }
+        accum.truncate(usize::try_from(pixels).unwrap_or(usize::MAX));
+        Ok(accum)
     }
 }
 

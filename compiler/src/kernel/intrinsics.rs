@@ -2,14 +2,16 @@
 //!
 //! - **Framework intrinsics** are the functions of the generated `rtc:abi` module. Their bodies are
 //!   placeholders; every call is replaced ([`Intrinsics::lower_call`]): `load_*` read the kernel's
-//!   buffers, `rng_*` and the spawn queue use private globals, `accumulate` and `write_bounds` write
+//!   buffers, `rng_*`, the spawn queue, the traversal stack (`stack_load`, `stack_store`), the ray
+//!   count (`count_ray`, flushed to counter 1 by `flush_ray_count`) and a debug kernel's counters
+//!   (`debug_count`, `debug_counts`) use private globals, `accumulate` and `write_bounds` write
 //!   results, and `call_<kind>` calls the generated dispatcher of that program kind.
 //! - **User intrinsics** (spec/programs.md) become calls of the kernel's own functions written in the
 //!   language (`rand()` → `rand_next`, `shadow(…)` → `shadow_query`, …), except `spawn`, which appends to
 //!   the spawn queue.
 //!
 //! Invariants: the spawn queue never writes past `MAX_SPAWN` entries and `spawned_count` is clamped to
-//! it; a dispatcher is built once per kind, after the programs and loaders it calls.
+//! it; traversal stack indices are clamped to the stack; a dispatcher is built once per kind, after the programs and loaders it calls.
 
 use super::dispatch::{abi_binding, kernel_error, Generated, LowerCx};
 use super::generated::ABI_MODULE;
@@ -187,6 +189,39 @@ impl KernelHooks<'_> {
         (dirs, weights, count)
     }
 
+    /// Entries of the traversal stack: the scene-level and the object-level parts.
+    fn traversal_stack_len(&self) -> u32 {
+        (self.config.tlas_stack + self.config.blas_stack).max(1)
+    }
+
+    /// The traversal stack, a private global of `vec2u` entries (node, entry distance bits). A
+    /// private global is zeroed once per invocation, where a local array is zeroed at every call of
+    /// the function that declares it (once per ray), which on CPU drivers costs more than the
+    /// traversal itself.
+    fn traversal_stack(&mut self, cx: &mut LowerCx<'_>) -> Handle<naga::GlobalVariable> {
+        let v2 = TypeCache::vector(cx.module_mut(), VectorSize::Bi, Scalar::U32);
+        let arr = TypeCache::array(cx.module_mut(), v2, self.traversal_stack_len());
+        self.generated.private(cx, "traversal_stack", arr)
+    }
+
+    /// The private count of rays this invocation traced.
+    fn ray_count(&mut self, cx: &mut LowerCx<'_>) -> Handle<naga::GlobalVariable> {
+        let u = TypeCache::scalar(cx.module_mut(), Scalar::U32);
+        self.generated.private(cx, "ray_count", u)
+    }
+
+    /// The private globals of a debug kernel's counters: nodes visited, primitives tested (zero at
+    /// the start of each invocation, which renders one pixel).
+    fn debug_counters(
+        &mut self,
+        cx: &mut LowerCx<'_>,
+    ) -> (Handle<naga::GlobalVariable>, Handle<naga::GlobalVariable>) {
+        let u = TypeCache::scalar(cx.module_mut(), Scalar::U32);
+        let nodes = self.generated.private(cx, "debug_nodes", u);
+        let prims = self.generated.private(cx, "debug_primitives", u);
+        (nodes, prims)
+    }
+
     /// Loads element `index` (or the whole value) of an ABI binding.
     fn load_binding(
         &mut self,
@@ -252,6 +287,97 @@ impl KernelHooks<'_> {
                     return Ok(None);
                 }
                 fb.load(p, span)
+            }
+            "stack_load" | "stack_store" => {
+                let g = self.traversal_stack(cx);
+                let base = fb.expr(Expression::GlobalVariable(g), span);
+                // Clamped like every array index of the language: never outside the stack.
+                let last = lit_u32(fb, self.traversal_stack_len() - 1);
+                let i = fb.expr(
+                    Expression::Math {
+                        fun: naga::MathFunction::Min,
+                        arg: arg(0)?,
+                        arg1: Some(last),
+                        arg2: None,
+                        arg3: None,
+                    },
+                    span,
+                );
+                let p = fb.expr(Expression::Access { base, index: i }, span);
+                if name == "stack_store" {
+                    fb.store(p, arg(1)?, span);
+                    return Ok(None);
+                }
+                fb.load(p, span)
+            }
+            "count_ray" => {
+                let g = self.ray_count(cx);
+                let p = fb.expr(Expression::GlobalVariable(g), span);
+                let old = fb.load(p, span);
+                let one = lit_u32(fb, 1);
+                let new = fb.expr(
+                    Expression::Binary {
+                        op: BinaryOperator::Add,
+                        left: old,
+                        right: one,
+                    },
+                    span,
+                );
+                fb.store(p, new, span);
+                return Ok(None);
+            }
+            "flush_ray_count" => {
+                let program = self.program;
+                let g = self.ray_count(cx);
+                let p = fb.expr(Expression::GlobalVariable(g), span);
+                let n = fb.load(p, span);
+                let counters = self
+                    .generated
+                    .binding(cx, program, abi_binding("counters")?)?;
+                let c = fb.expr(Expression::GlobalVariable(counters), span);
+                let second = fb.expr(Expression::AccessIndex { base: c, index: 1 }, span);
+                fb.stmt(
+                    Statement::Atomic {
+                        pointer: second,
+                        fun: AtomicFunction::Add,
+                        value: n,
+                        result: None,
+                    },
+                    span,
+                );
+                return Ok(None);
+            }
+            "debug_count" => {
+                let (nodes, prims) = self.debug_counters(cx);
+                for (g, i) in [(nodes, 0), (prims, 1)] {
+                    let p = fb.expr(Expression::GlobalVariable(g), span);
+                    let old = fb.load(p, span);
+                    let new = fb.expr(
+                        Expression::Binary {
+                            op: BinaryOperator::Add,
+                            left: old,
+                            right: arg(i)?,
+                        },
+                        span,
+                    );
+                    fb.store(p, new, span);
+                }
+                return Ok(None);
+            }
+            "debug_counts" => {
+                let (nodes, prims) = self.debug_counters(cx);
+                let pn = fb.expr(Expression::GlobalVariable(nodes), span);
+                let n = fb.load(pn, span);
+                let pp = fb.expr(Expression::GlobalVariable(prims), span);
+                let p = fb.load(pp, span);
+                let v2 = TypeCache::vector(cx.module_mut(), VectorSize::Bi, Scalar::U32);
+                fb.expr(
+                    Expression::Compose {
+                        ty: v2,
+                        components: vec![n, p],
+                    },
+                    span,
+                )
             }
             "spawn_reset" => {
                 let (_, _, count) = self.spawn_queue(cx);

@@ -60,6 +60,31 @@ pub const RENDER_WORKGROUP: [u32; 2] = [8, 8];
 /// Workgroup size of the bounds kernel (objects).
 pub const BOUNDS_WORKGROUP: u32 = 64;
 
+/// What a debug kernel writes to the accumulation buffer instead of radiance. A debug kernel
+/// traces one camera ray per pixel (the pass's first sample; no shading, no secondary or shadow
+/// rays) and adds one `vec4f` per pixel to `accum` (a zeroed buffer after one pass holds exactly
+/// that value). Normal kernels (`None`) contain none of this code.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum DebugMode {
+    /// `x` = BVH nodes visited (scene level and object level: one per node the traversal loop
+    /// enters, the root included, not counting a scene root the ray misses), `y` = primitives
+    /// tested (triangles and `@intersection` calls), `z` = `t` of the closest accepted hit or -1,
+    /// `w` = the hit object's index in the scene (`Hit.instance`) or -1.
+    Counts,
+    /// `xyz` = the camera ray's origin (world space), `w` = its `tmin`.
+    RayOrigin,
+    /// `xyz` = the camera ray's direction as the camera program returned it (not renormalised),
+    /// `w` = its `tmax` (`+inf` when unbounded).
+    RayDirection,
+}
+
+/// Options of the kernel itself (beyond the link plan).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct KernelOptions {
+    /// Build a debug kernel that writes [`DebugMode`] values instead of radiance.
+    pub debug: Option<DebugMode>,
+}
+
 /// Why a scene could not be compiled: the diagnostics (with the sources to render them).
 #[derive(Debug)]
 pub struct CompileFailure {
@@ -79,7 +104,14 @@ pub fn check_with_kernel(
     options: &Options,
     link_options: &LinkOptions,
 ) -> Result<(Checked, SceneId, Linked), Box<CompileFailure>> {
-    check_with_kernel_timed(paths, scene, options, link_options, &mut Vec::new())
+    check_with_kernel_timed(
+        paths,
+        scene,
+        options,
+        link_options,
+        &KernelOptions::default(),
+        &mut Vec::new(),
+    )
 }
 
 /// [`check_with_kernel`], recording the time of each phase in `timings`.
@@ -88,6 +120,7 @@ pub fn check_with_kernel_timed(
     scene: Option<&str>,
     options: &Options,
     link_options: &LinkOptions,
+    kernel_options: &KernelOptions,
     timings: &mut Vec<(&'static str, f64)>,
 ) -> Result<(Checked, SceneId, Linked), Box<CompileFailure>> {
     let t = std::time::Instant::now();
@@ -124,7 +157,7 @@ pub fn check_with_kernel_timed(
         .insert(generated::ABI_MODULE.to_string(), generated::abi_module());
     opts.generated.insert(
         generated::CONFIG_MODULE.to_string(),
-        generated::config_module(&linked.config),
+        generated::config_module_with(&linked.config, kernel_options.debug),
     );
     let second = crate::driver::check_paths_with_std(paths, KERNEL_ROOTS, &opts);
     timings.push(("check with the kernel", ms_since(t)));
@@ -202,9 +235,32 @@ pub fn compile_scene(
     options: &Options,
     link_options: &LinkOptions,
 ) -> Result<CompiledScene, Box<CompileFailure>> {
+    compile_scene_with(
+        paths,
+        scene,
+        options,
+        link_options,
+        &KernelOptions::default(),
+    )
+}
+
+/// [`compile_scene`] with kernel options (a debug kernel: [`KernelOptions::debug`]).
+pub fn compile_scene_with(
+    paths: &[PathBuf],
+    scene: Option<&str>,
+    options: &Options,
+    link_options: &LinkOptions,
+    kernel_options: &KernelOptions,
+) -> Result<CompiledScene, Box<CompileFailure>> {
     let mut timings = Vec::new();
-    let (checked, scene_id, linked) =
-        check_with_kernel_timed(paths, scene, options, link_options, &mut timings)?;
+    let (checked, scene_id, linked) = check_with_kernel_timed(
+        paths,
+        scene,
+        options,
+        link_options,
+        kernel_options,
+        &mut timings,
+    )?;
     let built = match checked.program.as_ref() {
         Some(program) => lower_kernels(program, &checked.sources, &linked, &mut timings),
         None => Err(dispatch::kernel_error("the checked program is missing")),
