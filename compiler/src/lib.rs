@@ -28,6 +28,7 @@
 
 pub mod abi;
 pub mod back;
+pub mod cache;
 pub mod diag;
 pub mod driver;
 pub mod kernel;

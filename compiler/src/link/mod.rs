@@ -149,6 +149,28 @@ pub fn type_key(program: &hir::Program, s: StructId) -> String {
     format!("{role}:{module}::{}", st.name)
 }
 
+/// The standard-library role structs a scene's `model` entries become, as (module, struct): the
+/// glTF materials (opaque, and alpha-masked with an `@any_hit` program, so a scene with a model has
+/// any-hit filtering on; opaque instances skip it by their flag), the `KHR_lights_punctual` lights,
+/// and the camera (used only when the scene has no
+/// `camera` entry). The driver loads these modules for any scene with a `model` entry, and [`link`]
+/// links these types for it: what a glTF file holds is only known when the runtime reads it.
+pub const MODEL_TYPES: &[(&str, &str)] = &[
+    ("std/materials/gltf.rt", "GltfMaterial"),
+    ("std/materials/gltf.rt", "GltfMaskedMaterial"),
+    ("std/lights/point.rt", "PointLight"),
+    ("std/lights/directional.rt", "DirectionalLight"),
+    ("std/lights/spot.rt", "SpotLight"),
+    ("std/cameras/pinhole.rt", "Pinhole"),
+];
+
+/// The struct of one of [`MODEL_TYPES`] in `program`, if its module was loaded.
+pub fn model_type(program: &hir::Program, module: &str, name: &str) -> Option<StructId> {
+    program.structs.iter().find_map(|(s, st)| {
+        (st.name == name && program.modules[st.module.index()].name == module).then_some(s)
+    })
+}
+
 /// The programs a role requires.
 fn required(role: Role) -> &'static [ProgramKind] {
     match role {
@@ -193,6 +215,17 @@ pub fn link(
     }
     for light in &desc.lights {
         note(light.struct_id, light.span);
+    }
+    if let Some(model) = desc.models.first() {
+        for &(module, name) in MODEL_TYPES {
+            let is_camera = module.starts_with("std/cameras/");
+            if is_camera && desc.camera.is_some() {
+                continue;
+            }
+            if let Some(s) = model_type(program, module, name) {
+                note(s, model.span);
+            }
+        }
     }
     if options.all_programs {
         for (s, st) in program.structs.iter() {

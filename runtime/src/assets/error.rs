@@ -245,6 +245,13 @@ pub enum GltfItem {
     Texture(usize),
     /// `materials[i]`.
     Material(usize),
+    /// The base-colour image `images[image]` of `materials[material]`.
+    BaseColorImage {
+        /// The material.
+        material: usize,
+        /// The image.
+        image: usize,
+    },
     /// `meshes[mesh].primitives[primitive]`.
     Primitive {
         /// The mesh.
@@ -263,6 +270,12 @@ impl fmt::Display for GltfItem {
             Self::Image(i) => write!(f, "images[{i}]"),
             Self::Texture(i) => write!(f, "textures[{i}]"),
             Self::Material(i) => write!(f, "materials[{i}]"),
+            Self::BaseColorImage { material, image } => {
+                write!(
+                    f,
+                    "the base colour texture of materials[{material}] (images[{image}])"
+                )
+            }
             Self::Primitive { mesh, primitive } => {
                 write!(f, "meshes[{mesh}].primitives[{primitive}]")
             }

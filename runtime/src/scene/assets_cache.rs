@@ -2,6 +2,10 @@
 //! textures (`load_image`, `solid_texture`), keyed by what they are rather than where they were
 //! written, so two `load_mesh("bunny.obj")` in a scene give one mesh (and one BVH).
 //!
+//! glTF models add their meshes and images directly ([`AssetCache::insert_mesh`],
+//! [`AssetCache::insert_texture`]); a model image is keyed by the path `file.glb#images[i]`, which
+//! is also what the model's material instances name it by.
+//!
 //! Invariant: the n-th distinct asset gets index n, in order of first use, so ids are deterministic.
 
 use std::collections::HashMap;
@@ -19,6 +23,11 @@ pub(super) enum MeshKey {
     Quad,
     Cube,
     Sphere(u32),
+    /// Primitive `mesh` (in `ModelScene::meshes` order) of a glTF file.
+    Model {
+        path: PathBuf,
+        mesh: usize,
+    },
 }
 
 impl MeshKey {
@@ -38,6 +47,7 @@ impl MeshKey {
             MeshKey::Quad => "quad_mesh()".into(),
             MeshKey::Cube => "cube_mesh()".into(),
             MeshKey::Sphere(n) => format!("sphere_mesh({n})"),
+            MeshKey::Model { path, mesh } => format!("{}#mesh {mesh}", path.display()),
         }
     }
 }
@@ -97,6 +107,32 @@ impl AssetCache {
         self.meshes.push((key.clone(), data));
         self.mesh_index.insert(key, i);
         Ok(i)
+    }
+
+    /// The index of a mesh that does not come from the scene's text (a glTF model's), made by
+    /// `make` on first use.
+    pub fn insert_mesh(&mut self, key: MeshKey, make: impl FnOnce() -> MeshData) -> usize {
+        if let Some(&i) = self.mesh_index.get(&key) {
+            return i;
+        }
+        let mut data = make();
+        data.ensure_normals();
+        let i = self.meshes.len();
+        self.meshes.push((key.clone(), data));
+        self.mesh_index.insert(key, i);
+        i
+    }
+
+    /// The index of a texture that does not come from the scene's text (a glTF model's image,
+    /// keyed `file.glb#images[i]`), made by `make` on first use.
+    pub fn insert_texture(&mut self, key: TextureKey, make: impl FnOnce() -> TextureData) -> usize {
+        if let Some(&i) = self.texture_index.get(&key) {
+            return i;
+        }
+        let i = self.textures.len();
+        self.textures.push((key.clone(), make()));
+        self.texture_index.insert(key, i);
+        i
     }
 
     /// The index of a texture, loading it on first use.

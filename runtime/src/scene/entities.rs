@@ -1,9 +1,10 @@
 //! The scene-entity stage: a scene description turned into plain CPU data ready for upload.
 //!
 //! [`Entities::build`] runs, in order:
-//! 1. refuse what cannot be rendered yet (glTF `model` entries) and check the camera;
-//! 2. load every asset once ([`AssetCache`]): object meshes, and every `mesh`/`texture` value in any
-//!    instance's fields;
+//! 1. load every asset once ([`AssetCache`]): object meshes, the scene's glTF models (`models.rs`:
+//!    their meshes, images, and the objects, lights and camera they bring), and every
+//!    `mesh`/`texture` value in any instance's fields;
+//! 2. check the camera (the scene's, else the first model's);
 //! 3. build one BLAS per distinct mesh (counted in [`EntityStats::blas_builds`]), flatten it into
 //!    `nodes`, and encode its triangle slots (`encode.rs`);
 //! 4. concatenate the textures' texels;
@@ -35,6 +36,7 @@ use rtc_compiler::Span;
 use super::assets_cache::AssetCache;
 use super::encode::encode_mesh;
 use super::gpu_types::{FrameUniforms, GpuInstance};
+use super::models;
 use super::params::ParamsBuilder;
 use super::SceneError;
 use crate::assets::TextureFormat;
@@ -318,17 +320,6 @@ impl Entities {
         linked: &Linked,
         options: &EntityOptions,
     ) -> Result<Entities, SceneError> {
-        if let Some(model) = scene.models.first() {
-            return Err(SceneError::ModelsUnsupported {
-                path: model.path.clone(),
-                span: model.span,
-            });
-        }
-        let Some(camera) = &scene.camera else {
-            return Err(SceneError::NoCamera {
-                scene: scene.name.clone(),
-            });
-        };
         let mut stats = EntityStats::default();
         let mut warnings = Vec::new();
 
@@ -342,11 +333,23 @@ impl Entities {
                 Geometry::Custom(_) => None,
             });
         }
-        for inst in all_instances(scene) {
+        let models = models::import(program, scene, &mut cache)?;
+        warnings.extend(models.warnings.iter().cloned());
+        let model_materials = models.objects.iter().map(|o| &o.material);
+        for inst in all_instances(scene)
+            .chain(model_materials)
+            .chain(&models.lights)
+            .chain(&models.camera)
+        {
             for value in &inst.fields {
                 cache.scan(value)?;
             }
         }
+        let Some(camera) = scene.camera.as_ref().or(models.camera.as_ref()) else {
+            return Err(SceneError::NoCamera {
+                scene: scene.name.clone(),
+            });
+        };
         stats.load_ms = ms_since(start);
 
         // 3. One BLAS per distinct mesh, triangles in leaf order.
@@ -469,9 +472,29 @@ impl Entities {
                 inverse,
             });
         }
+        for (index, obj) in models.objects.iter().enumerate() {
+            let index = index + scene.objects.len();
+            let name = Some(obj.name.clone());
+            let inverse =
+                invert_transform(&obj.transform).map_err(|reason| SceneError::BadTransform {
+                    object: index,
+                    name: name.clone(),
+                    reason,
+                })?;
+            stats.instanced_triangles += meshes.get(obj.mesh).map_or(0, |m| u64::from(m.triangles));
+            objects.push(ObjectEntity {
+                name,
+                span: obj.span,
+                geometry: ObjectGeometry::Mesh { mesh: obj.mesh },
+                material: typed(&mut params, &obj.material)?,
+                flags: material_flags(linked, obj.material.struct_id),
+                transform: obj.transform,
+                inverse,
+            });
+        }
         to_u32("objects", objects.len())?;
-        let mut lights = Vec::with_capacity(scene.lights.len());
-        for light in &scene.lights {
+        let mut lights = Vec::with_capacity(scene.lights.len() + models.lights.len());
+        for light in scene.lights.iter().chain(&models.lights) {
             lights.push(typed(&mut params, light)?);
         }
         let table: Vec<u32> = lights.iter().flat_map(|l| [l.type_id, l.offset]).collect();

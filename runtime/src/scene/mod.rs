@@ -88,6 +88,7 @@ mod assets_cache;
 mod encode;
 mod entities;
 mod gpu_types;
+mod models;
 mod params;
 mod upload;
 
@@ -106,7 +107,6 @@ pub use upload::{runtime_binding, GpuScene, UploadReport};
 
 use rtc_compiler::diag::{codes, Diagnostic};
 use rtc_compiler::Span;
-use std::path::PathBuf;
 
 use crate::assets::AssetError;
 use crate::gpu::{BufferError, DispatchError};
@@ -122,20 +122,11 @@ pub enum SceneError {
         /// The loader's error (it names the file).
         source: AssetError,
     },
-    /// The scene imports glTF models, which cannot be rendered yet.
+    /// The scene has no camera (only possible when a model was to bring one and has none).
     #[error(
-        "{}: glTF models are not supported yet (mapping glTF materials needs a standard-library \
-         material that does not exist yet); remove the `model` entry to render the rest",
-        path.display()
+        "the scene `{scene}` has no camera: add a `camera` entry (its models have no perspective \
+         camera)"
     )]
-    ModelsUnsupported {
-        /// The model's file.
-        path: PathBuf,
-        /// The `model` entry's string.
-        span: Span,
-    },
-    /// The scene has no camera (only possible when a model was to bring one).
-    #[error("the scene `{scene}` has no camera")]
     NoCamera {
         /// The scene's name.
         scene: String,

@@ -621,7 +621,7 @@ scene s {{
 
 #[test]
 fn scene_errors_are_typed() {
-    // A glTF model: not supported yet, said clearly.
+    // A glTF model that cannot be read: E0902 at the model's string.
     let text = format!(
         "{HEADER}
 scene s {{
@@ -631,11 +631,14 @@ scene s {{
     );
     let (p, l) = compile(&text);
     let err = Entities::build(&p, &p.scenes[l.scene], &l, &EntityOptions::default())
-        .expect_err("models are refused");
-    assert!(matches!(err, SceneError::ModelsUnsupported { .. }));
-    assert!(err
-        .to_string()
-        .contains("glTF models are not supported yet"));
+        .expect_err("the model is missing");
+    assert!(
+        matches!(err, SceneError::Asset { span: Some(_), .. }),
+        "{err}"
+    );
+    let diag = err.to_diagnostic().expect("a diagnostic");
+    assert_eq!(diag.code.0, "E0902");
+    assert!(diag.message.contains("missing.glb"), "{}", diag.message);
 
     // An OBJ that cannot be read: E0902 at the string.
     let text = format!(

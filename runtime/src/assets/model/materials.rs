@@ -7,6 +7,8 @@
 //! `KHR_texture_transform` (as of any extension we do not read, see `nodes.rs`); sampler
 //! settings (filters, wrap modes) are ignored silently, as nearly every file has them. A
 //! base-colour texture on a uv set other than 0 is kept, with a warning, and sampled with set 0.
+//! A base-colour image file that cannot be read is [`AssetError::MissingFile`] naming the material
+//! and the image ([`GltfItem::BaseColorImage`]).
 
 use std::collections::HashMap;
 
@@ -102,7 +104,19 @@ impl Materials {
                     .textures
                     .get(info.index.value())
                     .ok_or_else(|| dangling(ctx, GltfItem::Texture(info.index.value())))?;
-                Some(self.texture(ctx, texture.source.value())?)
+                let image = texture.source.value();
+                Some(self.texture(ctx, image).map_err(|e| match e {
+                    // Name the material too: that is what the user knows the texture by.
+                    AssetError::MissingFile {
+                        path, file, source, ..
+                    } => AssetError::MissingFile {
+                        path,
+                        item: GltfItem::BaseColorImage { material: m, image },
+                        file,
+                        source,
+                    },
+                    other => other,
+                })?)
             }
         };
         let strength = json

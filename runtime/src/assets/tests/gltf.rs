@@ -527,7 +527,13 @@ fn missing_texture_image_names_the_file() {
     match load_gltf(&path) {
         Err(AssetError::MissingFile { file, item, .. }) => {
             assert_eq!(file, dir.path().join("gone.png"));
-            assert_eq!(item, GltfItem::Image(0));
+            assert_eq!(
+                item,
+                GltfItem::BaseColorImage {
+                    material: 0,
+                    image: 0
+                }
+            );
         }
         other => panic!("{other:?}"),
     }

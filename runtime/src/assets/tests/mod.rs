@@ -5,6 +5,7 @@
 mod fuzz;
 mod gltf;
 mod gltf_builder;
+mod gltf_scene;
 mod mesh;
 mod obj;
 mod procedural;

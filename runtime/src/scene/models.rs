@@ -1,0 +1,316 @@
+//! A scene's `model "file.glb" { transform: … }` entries → objects, lights and a camera made of the
+//! standard-library role structs the compiler linked for them (`rtc_compiler::link::MODEL_TYPES`).
+//!
+//! What each part of a glTF file becomes:
+//! - every triangle primitive → one mesh in the [`AssetCache`] (key [`MeshKey::Model`]), so it gets
+//!   **one object-level BVH however many nodes instance it**;
+//! - every node instancing a primitive → one object, object-to-world = the entry's `transform` ×
+//!   the node's world transform, named `file.glb#nodes[i]`;
+//! - every used material → a `GltfMaterial` (`stdlib/materials/gltf.rt`; `GltfMaskedMaterial`
+//!   with its `alpha_cutoff` for `alphaMode: MASK`; blending is rendered opaque with a warning):
+//!   base colour factor, base-colour texture (or `solid_texture(vec4f(1.0))`), metallic,
+//!   roughness, emissive. Its
+//!   texture enters the cache under the path `file.glb#images[i]`, which is how the instance's
+//!   `texture` field refers to it;
+//! - `KHR_lights_punctual` lights → `PointLight`, `DirectionalLight` or `SpotLight`
+//!   (`stdlib/lights/`), glTF's intensity as is (candela for point and spot, whose strength falls
+//!   off with the inverse square of the distance; lux for directional), the cone angles in
+//!   degrees;
+//! - the first perspective camera of the first model that has one → a `Pinhole`, when the scene
+//!   has no `camera` entry (`fov` = `yfov` in degrees, looking along the camera's -z).
+//!
+//! Invariants: the entry's span is the span of every instance made here (errors point at the
+//! `model` string); a glTF file named by several entries is read once; what the import skips or
+//! approximates is a warning (the file's own, prefixed with its name), never silent.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+use glam::{Mat4, Vec3};
+use rtc_compiler::link::{model_type, MODEL_TYPES};
+use rtc_compiler::sema::hir::{
+    ConstValue, Instance, Model, Program, Scalar, SceneDesc, StructId, TextureAsset,
+};
+use rtc_compiler::Span;
+
+use super::assets_cache::{AssetCache, MeshKey, TextureKey};
+use super::SceneError;
+use crate::assets::model::{AlphaMode, LightKind, ModelScene, Projection};
+use crate::assets::{load_gltf, solid_texture};
+
+/// An object a model brings.
+pub(super) struct ModelObject {
+    /// `file.glb#nodes[i]`.
+    pub name: String,
+    /// The `model` entry's string.
+    pub span: Span,
+    /// Index of its mesh in the asset cache.
+    pub mesh: usize,
+    /// Its `GltfMaterial`.
+    pub material: Instance,
+    /// Object to world.
+    pub transform: Mat4,
+}
+
+/// Everything the scene's models bring.
+#[derive(Default)]
+pub(super) struct ModelParts {
+    /// Objects, model by model, in node order.
+    pub objects: Vec<ModelObject>,
+    /// Light instances, model by model.
+    pub lights: Vec<Instance>,
+    /// A `Pinhole` from the first model's first perspective camera (only looked for when the
+    /// scene has no camera).
+    pub camera: Option<Instance>,
+    /// What was skipped or approximated.
+    pub warnings: Vec<String>,
+}
+
+/// Reads every model of `scene` into `cache` and makes its instances.
+pub(super) fn import(
+    program: &Program,
+    scene: &SceneDesc,
+    cache: &mut AssetCache,
+) -> Result<ModelParts, SceneError> {
+    let mut parts = ModelParts::default();
+    let mut loaded: HashMap<PathBuf, ModelScene> = HashMap::new();
+    for model in &scene.models {
+        if !loaded.contains_key(&model.path) {
+            let data = load_gltf(&model.path).map_err(|source| SceneError::Asset {
+                span: Some(model.span),
+                source,
+            })?;
+            let name = model.path.display();
+            parts
+                .warnings
+                .extend(data.warnings.iter().map(|w| format!("{name}: {w}")));
+            loaded.insert(model.path.clone(), data);
+        }
+        if let Some(data) = loaded.get(&model.path) {
+            import_one(
+                program,
+                model,
+                data,
+                scene.camera.is_none(),
+                cache,
+                &mut parts,
+            )?;
+        }
+    }
+    Ok(parts)
+}
+
+/// The struct of a model type, by name (the compiler links them for any scene with a model).
+fn struct_of(program: &Program, name: &str) -> Result<StructId, SceneError> {
+    MODEL_TYPES
+        .iter()
+        .find(|(_, n)| *n == name)
+        .and_then(|(module, n)| model_type(program, module, n))
+        .ok_or_else(|| SceneError::Unlinked {
+            name: name.to_owned(),
+        })
+}
+
+fn f32_value(x: f32) -> ConstValue {
+    ConstValue::Scalar(Scalar::F32(x))
+}
+
+fn vec_value<const N: usize>(v: [f32; N]) -> ConstValue {
+    let mut comps = [Scalar::F32(0.0); 4];
+    for (c, x) in comps.iter_mut().zip(v) {
+        *c = Scalar::F32(x);
+    }
+    ConstValue::Vector {
+        len: N as u8,
+        comps,
+    }
+}
+
+/// An instance of struct `name` with the given fields, the others at their declared defaults.
+fn instance(
+    program: &Program,
+    name: &str,
+    span: Span,
+    fields: &[(&str, ConstValue)],
+) -> Result<Instance, SceneError> {
+    let struct_id = struct_of(program, name)?;
+    let decl = &program.structs[struct_id];
+    let values = decl
+        .fields
+        .iter()
+        .map(|f| {
+            fields
+                .iter()
+                .find(|(n, _)| *n == f.name)
+                .map(|(_, v)| v.clone())
+                .or_else(|| f.default.clone())
+                // A field without a default that we do not set: the stdlib struct changed under us.
+                .ok_or_else(|| SceneError::Unlinked {
+                    name: format!("{name}.{}", f.name),
+                })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Instance {
+        struct_id,
+        fields: values,
+        span,
+    })
+}
+
+/// The path under which image `image` of `file` is in the texture cache.
+fn image_path(file: &Path, image: usize) -> PathBuf {
+    let mut label = file.as_os_str().to_owned();
+    label.push(format!("#images[{image}]"));
+    PathBuf::from(label)
+}
+
+fn import_one(
+    program: &Program,
+    model: &Model,
+    data: &ModelScene,
+    wants_camera: bool,
+    cache: &mut AssetCache,
+    parts: &mut ModelParts,
+) -> Result<(), SceneError> {
+    let entry = Mat4::from_cols_array_2d(&model.transform);
+    let span = model.span;
+    let name = model.path.display().to_string();
+
+    let mut meshes = Vec::with_capacity(data.meshes.len());
+    for (i, mesh) in data.meshes.iter().enumerate() {
+        let key = MeshKey::Model {
+            path: model.path.clone(),
+            mesh: i,
+        };
+        meshes.push(cache.insert_mesh(key, || mesh.clone()));
+    }
+    let mut textures = Vec::with_capacity(data.textures.len());
+    for (i, texture) in data.textures.iter().enumerate() {
+        let path = image_path(&model.path, i);
+        cache.insert_texture(TextureKey::File(path.clone()), || texture.clone());
+        textures.push(ConstValue::Texture(TextureAsset::File { path, span }));
+    }
+    let white = [1.0f32; 4];
+    cache.insert_texture(TextureKey::Solid(white.map(f32::to_bits)), || {
+        solid_texture(white)
+    });
+
+    let mut materials = Vec::with_capacity(data.materials.len());
+    let mut blended = 0usize;
+    for m in &data.materials {
+        let texture = m
+            .base_color_texture
+            .and_then(|t| textures.get(t).cloned())
+            .unwrap_or(ConstValue::Texture(TextureAsset::Solid(white)));
+        let mut fields = vec![
+            ("base_color", vec_value(m.base_color)),
+            ("base_texture", texture),
+            ("metallic", f32_value(m.metallic)),
+            ("roughness", f32_value(m.roughness)),
+            ("emissive", vec_value(m.emissive)),
+        ];
+        let kind = match m.alpha_mode {
+            AlphaMode::Mask => {
+                fields.push(("alpha_cutoff", f32_value(m.alpha_cutoff)));
+                "GltfMaskedMaterial"
+            }
+            AlphaMode::Blend => {
+                blended += 1;
+                "GltfMaterial"
+            }
+            AlphaMode::Opaque => "GltfMaterial",
+        };
+        materials.push(instance(program, kind, span, &fields)?);
+    }
+    if blended > 0 {
+        parts.warnings.push(format!(
+            "{name}: {blended} material(s) blend with alpha, rendered opaque"
+        ));
+    }
+
+    for inst in &data.instances {
+        let (Some(&mesh), Some(material)) = (meshes.get(inst.mesh), materials.get(inst.material))
+        else {
+            continue; // guaranteed by ModelScene's invariants
+        };
+        parts.objects.push(ModelObject {
+            name: format!("{name}#nodes[{}]", inst.node),
+            span,
+            mesh,
+            material: material.clone(),
+            transform: entry * inst.transform,
+        });
+    }
+
+    for light in &data.lights {
+        let position = entry.transform_point3(light.position);
+        let direction = entry
+            .transform_vector3(light.direction)
+            .normalize_or(Vec3::NEG_Y);
+        let common = [
+            ("color", vec_value(light.color)),
+            ("intensity", f32_value(light.intensity)),
+        ];
+        let range = f32_value(light.range.unwrap_or(0.0));
+        let made = match light.kind {
+            LightKind::Point => {
+                let mut fields = vec![
+                    ("position", vec_value(position.to_array())),
+                    ("range", range),
+                ];
+                fields.extend(common.iter().cloned());
+                instance(program, "PointLight", span, &fields)?
+            }
+            LightKind::Directional => {
+                let mut fields = vec![("direction", vec_value(direction.to_array()))];
+                fields.extend(common.iter().cloned());
+                instance(program, "DirectionalLight", span, &fields)?
+            }
+            LightKind::Spot {
+                inner_cone_angle,
+                outer_cone_angle,
+            } => {
+                let mut fields = vec![
+                    ("position", vec_value(position.to_array())),
+                    ("direction", vec_value(direction.to_array())),
+                    ("range", range),
+                    ("inner_angle", f32_value(inner_cone_angle.to_degrees())),
+                    ("outer_angle", f32_value(outer_cone_angle.to_degrees())),
+                ];
+                fields.extend(common.iter().cloned());
+                instance(program, "SpotLight", span, &fields)?
+            }
+        };
+        parts.lights.push(made);
+    }
+
+    if wants_camera && parts.camera.is_none() {
+        let perspective = data.cameras.iter().find_map(|c| match c.projection {
+            Projection::Perspective { yfov, .. } => Some((c, yfov)),
+            Projection::Orthographic { .. } => None,
+        });
+        if let Some((camera, yfov)) = perspective {
+            let position = entry.transform_point3(camera.position());
+            let forward = entry
+                .transform_vector3(camera.forward())
+                .normalize_or(Vec3::NEG_Z);
+            let up = entry.transform_vector3(camera.up()).normalize_or(Vec3::Y);
+            parts.camera = Some(instance(
+                program,
+                "Pinhole",
+                span,
+                &[
+                    ("position", vec_value(position.to_array())),
+                    ("look_at", vec_value((position + forward).to_array())),
+                    ("up", vec_value(up.to_array())),
+                    ("fov", f32_value(yfov.to_degrees())),
+                ],
+            )?);
+        } else if !data.cameras.is_empty() {
+            parts.warnings.push(format!(
+                "{name}: only orthographic cameras, which are not imported"
+            ));
+        }
+    }
+    Ok(())
+}
