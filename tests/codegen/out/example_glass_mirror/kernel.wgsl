@@ -64,23 +64,20 @@ struct GpuInstance {
     object: u32,
 }
 
+struct TriangleRay {
+    origin: vec3<f32>,
+    kx: u32,
+    ky: u32,
+    kz: u32,
+    shear: vec3<f32>,
+    valid: bool,
+}
+
 struct GpuNode {
     min: vec3<f32>,
     a: u32,
     max: vec3<f32>,
     b: u32,
-}
-
-struct Triangle {
-    v0_: vec3<f32>,
-    v1_: vec3<f32>,
-    v2_: vec3<f32>,
-}
-
-struct Intersection {
-    t: f32,
-    normal: vec3<f32>,
-    uv: vec2<f32>,
 }
 
 struct Hit {
@@ -92,6 +89,12 @@ struct Hit {
     front_face: bool,
     instance: u32,
     primitive: u32,
+}
+
+struct Triangle {
+    v0_: vec3<f32>,
+    v1_: vec3<f32>,
+    v2_: vec3<f32>,
 }
 
 struct SkyGradient {
@@ -121,15 +124,13 @@ struct Frame {
 }
 
 const RAY_CAMERA: u32 = 0u;
-const HAS_MEDIA: bool = false;
 const NO_HIT: u32 = 4294967295u;
+const HAS_MEDIA: bool = false;
 const MESH_GEOMETRY: u32 = 4294967295u;
 const LEAF_BIT: u32 = 2147483648u;
-const HAS_ANY_HIT: bool = false;
-const FLAG_ANY_HIT: u32 = 1u;
 const BLAS_STACK: u32 = 64u;
-const HAS_SECONDARY_RAYS: bool = true;
 const TLAS_STACK: u32 = 64u;
+const HAS_SECONDARY_RAYS: bool = true;
 const HAS_BACKGROUND: bool = true;
 const FLAG_MEDIUM: u32 = 4u;
 const FLAG_SECONDARY: u32 = 2u;
@@ -152,8 +153,10 @@ var<storage> instances: array<GpuInstance>;
 var<storage> nodes: array<GpuNode>;
 @group(0) @binding(4) 
 var<storage> triangles: array<vec4<f32>>;
+var<private> traversal_stack: array<vec2<u32>, 128>;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
+var<private> ray_count: u32;
 var<private> spawn_dirs: array<vec3<f32>, 2>;
 var<private> spawn_weights: array<vec3<f32>, 2>;
 var<private> spawn_count: u32;
@@ -274,65 +277,228 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 }
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
-    let tiny = vec3(0.000000000000000000000000000001f);
+    let tiny = vec3(0.000000000000000000000000000000000000011754944f);
     let s_2 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
     let dd = select(d, (s_2 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
-fn load_triangle(slot: u32) -> Triangle {
-    let v0_ = triangles[(slot * 3u)];
-    let v1_ = triangles[((slot * 3u) + 1u)];
-    let v2_ = triangles[((slot * 3u) + 2u)];
+fn prepare_triangle_ray(ray_1: Ray) -> TriangleRay {
+    let d_2 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
+    let ad = abs(d_2);
+    let y_gt = (ad.y > ad.x);
+    let kz = select(select(0u, 1u, y_gt), 2u, (ad.z > select(ad.x, ad.y, y_gt)));
+    let kx0_ = select((kz + 1u), 0u, (kz == 2u));
+    let ky0_ = select((kz + 2u), (kz - 1u), (kz >= 1u));
+    let dz = d_2[min(kz, 2u)];
+    let flip = (dz < 0f);
+    let kx = select(kx0_, ky0_, flip);
+    let ky = select(ky0_, kx0_, flip);
+    let inf_bits = vec3(2139095040u);
+    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_2) & vec3(2147483647u)) < inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_2[min(kx, 2u)] / dz), (d_2[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
+}
+
+fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32> {
+    let _e8 = triangles[(slot * 3u)];
+    let a = (_e8.xyz - r_1.origin);
+    let _e18 = triangles[((slot * 3u) + 1u)];
+    let b_1 = (_e18.xyz - r_1.origin);
+    let _e28 = triangles[((slot * 3u) + 2u)];
+    let c_5 = (_e28.xyz - r_1.origin);
+    let ax = (a[min(r_1.kx, 2u)] - (r_1.shear.x * a[min(r_1.kz, 2u)]));
+    let ay = (a[min(r_1.ky, 2u)] - (r_1.shear.y * a[min(r_1.kz, 2u)]));
+    let bx = (b_1[min(r_1.kx, 2u)] - (r_1.shear.x * b_1[min(r_1.kz, 2u)]));
+    let by = (b_1[min(r_1.ky, 2u)] - (r_1.shear.y * b_1[min(r_1.kz, 2u)]));
+    let cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
+    let cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
+    let u = ((cx * by) - (cy * bx));
+    let v_1 = ((ax * cy) - (ay * cx));
+    let w = ((bx * ay) - (by * ax));
+    let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
+    let det = ((u + v_1) + w);
+    let rcp = (1f / det);
+    let t_3 = ((((u * (r_1.shear.z * a[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_1[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    let hit_8 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
+    let _e173 = F32_INF;
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_3, (v_1 * rcp), (w * rcp)), hit_8);
+}
+
+fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
+    return true;
+}
+
+fn slab(lo: vec3<f32>, hi: vec3<f32>, origin: vec3<f32>, inv_dir: vec3<f32>, tmin_1: f32, tmax_2: f32) -> f32 {
+    let t0_ = ((lo - origin) * inv_dir);
+    let t1_ = ((hi - origin) * inv_dir);
+    let near_2 = min(t0_, t1_);
+    let far_2 = max(t0_, t1_);
+    let enter = max(max(near_2.x, near_2.y), max(near_2.z, tmin_1));
+    let exit = min((min(far_2.x, far_2.y) * 1.0000005f), min((far_2.z * 1.0000005f), tmax_2));
+    if (enter <= exit) {
+        return enter;
+    }
+    let _e30 = F32_INF;
+    return bitcast<f32>(_e30);
+}
+
+fn pop_within(base: u32, sp_in: u32, t: f32) -> vec2<u32> {
+    var sp: u32;
+
+    sp = sp_in;
+    loop {
+        let _e4 = sp;
+        if (_e4 == 0u) {
+            break;
+        }
+        let _e7 = sp;
+        sp = (_e7 - 1u);
+        let _e10 = sp;
+        let e = traversal_stack[min((base + _e10), 127u)];
+        if (bitcast<f32>(e.y) <= t) {
+            let _e21 = sp;
+            return vec2<u32>(e.x, _e21);
+        }
+    }
+    return vec2<u32>(NO_HIT, 0u);
+}
+
+fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+    var best: Candidate;
+    var sp_1: u32;
+    var node: u32;
+    var k: u32;
+    var near: u32;
+    var far: u32;
+    var t_far: f32;
+
+    best = best_in;
+    let _e8 = safe_inverse(ray_3.dir);
+    let _e9 = prepare_triangle_ray(ray_3);
+    let base_1 = inst_2.blas_root;
+    sp_1 = 0u;
+    node = base_1;
+    loop {
+        let _e14 = node;
+        let n_5 = nodes[_e14];
+        if ((n_5.b & LEAF_BIT) != 0u) {
+            let count = (n_5.b & ~(LEAF_BIT));
+            k = 0u;
+            loop {
+                let _e29 = k;
+                if (_e29 >= count) {
+                    break;
+                }
+                let _e34 = k;
+                let prim = ((inst_2.triangle_offset + n_5.a) + _e34);
+                let _e38 = best.t;
+                let _e39 = hit_triangle(_e9, prim, ray_3.tmin, _e38);
+                let _e42 = F32_INF;
+                if (_e39.x < bitcast<f32>(_e42)) {
+                    let c_6 = Candidate(_e39.x, slot_1, prim, _e39.yz, vec3(0f));
+                    let _e50 = accept(inst_2, world_ray, c_6);
+                    if _e50 {
+                        best = c_6;
+                        if shadow {
+                            let _e51 = best;
+                            return _e51;
+                        }
+                    }
+                }
+                continuing {
+                    let _e52 = k;
+                    k = (_e52 + 1u);
+                }
+            }
+        } else {
+            let left = (base_1 + n_5.a);
+            let right = (left + 1u);
+            let l = nodes[left];
+            let rr = nodes[right];
+            let _e70 = best.t;
+            let _e71 = slab(l.min, l.max, ray_3.origin, _e8, ray_3.tmin, _e70);
+            let _e77 = best.t;
+            let _e78 = slab(rr.min, rr.max, ray_3.origin, _e8, ray_3.tmin, _e77);
+            let _e80 = F32_INF;
+            let _e84 = F32_INF;
+            if ((_e71 < bitcast<f32>(_e80)) && (_e78 < bitcast<f32>(_e84))) {
+                near = left;
+                far = right;
+                t_far = _e78;
+                if (_e78 < _e71) {
+                    near = right;
+                    far = left;
+                    t_far = _e71;
+                }
+                let _e92 = sp_1;
+                if (_e92 < BLAS_STACK) {
+                    let _e96 = sp_1;
+                    let _e98 = far;
+                    let _e99 = t_far;
+                    traversal_stack[min((TLAS_STACK + _e96), 127u)] = vec2<u32>(_e98, bitcast<u32>(_e99));
+                    let _e106 = sp_1;
+                    sp_1 = (_e106 + 1u);
+                }
+                let _e109 = near;
+                node = _e109;
+                continue;
+            }
+            let _e111 = F32_INF;
+            if (_e71 < bitcast<f32>(_e111)) {
+                node = left;
+                continue;
+            }
+            let _e115 = F32_INF;
+            if (_e78 < bitcast<f32>(_e115)) {
+                node = right;
+                continue;
+            }
+        }
+        let _e119 = sp_1;
+        let _e121 = best.t;
+        let _e122 = pop_within(TLAS_STACK, _e119, _e121);
+        if (_e122.x == NO_HIT) {
+            break;
+        }
+        node = _e122.x;
+        sp_1 = _e122.y;
+    }
+    let _e128 = best;
+    return _e128;
+}
+
+fn intersect_object(slot_2: u32, ray_4: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+    var r_2: Ray;
+
+    let inst_5 = instances[slot_2];
+    let _e7 = to_object(inst_5, ray_4);
+    r_2 = _e7;
+    r_2.tmax = best_1.t;
+    if (inst_5.geometry_type == MESH_GEOMETRY) {
+        let _e14 = r_2;
+        let _e15 = intersect_mesh(inst_5, slot_2, ray_4, _e14, best_1, shadow_1);
+        return _e15;
+    }
+    return best_1;
+}
+
+fn load_triangle(slot_3: u32) -> Triangle {
+    let v0_ = triangles[(slot_3 * 3u)];
+    let v1_ = triangles[((slot_3 * 3u) + 1u)];
+    let v2_ = triangles[((slot_3 * 3u) + 2u)];
     return Triangle(v0_.xyz, v1_.xyz, v2_.xyz);
 }
 
-fn intersect_triangle(ray_1: Ray, tri: Triangle) -> Intersection {
-    let _e10 = vec3(2139095040u);
-    let dir_2 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
-    let _e31 = abs(dir_2);
-    let _e38 = (_e31.y > _e31.x);
-    let kz = select(select(0u, 1u, _e38), 2u, (_e31.z > select(_e31.x, _e31.y, _e38)));
-    let _e45 = select((kz + 1u), 0u, (kz == 2u));
-    let _e49 = select((kz + 2u), (kz - 1u), (kz >= 1u));
-    let dz = dir_2[kz];
-    let _e52 = (dz < 0f);
-    let kx = select(_e45, _e49, _e52);
-    let ky = select(_e49, _e45, _e52);
-    let sx = (dir_2[kx] / dz);
-    let sy = (dir_2[ky] / dz);
-    let sz = (1f / dz);
-    let _e62 = (tri.v0_ - ray_1.origin);
-    let _e68 = (_e62[kx] - (sx * _e62[kz]));
-    let _e69 = (_e62[ky] - (sy * _e62[kz]));
-    let _e71 = (tri.v1_ - ray_1.origin);
-    let _e77 = (_e71[kx] - (sx * _e71[kz]));
-    let _e78 = (_e71[ky] - (sy * _e71[kz]));
-    let _e80 = (tri.v2_ - ray_1.origin);
-    let _e86 = (_e80[kx] - (sx * _e80[kz]));
-    let _e87 = (_e80[ky] - (sy * _e80[kz]));
-    let u = ((_e86 * _e78) - (_e87 * _e77));
-    let v_1 = ((_e68 * _e87) - (_e69 * _e86));
-    let w = ((_e77 * _e69) - (_e78 * _e68));
-    let det = ((u + v_1) + w);
-    let _e112 = (1f / det);
-    let t_2 = ((((u * (sz * _e62[kz])) + (v_1 * (sz * _e71[kz]))) + (w * (sz * _e80[kz]))) * _e112);
-    let hit_9 = (((((all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < _e10)) && all(((bitcast<vec3<u32>>(ray_1.dir) & vec3(2147483647u)) < _e10))) && (dz != 0f)) && !(((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f))))) && !((det == 0f))) && ((t_2 >= ray_1.tmin) && (t_2 <= ray_1.tmax)));
-    let _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
-    let _e137 = F32_INF;
-    return Intersection(select(bitcast<f32>(_e137), t_2, hit_9), select(vec3<f32>(0f, 0f, 1f), _e132, hit_9), select(vec2(0f), vec2<f32>((v_1 * _e112), (w * _e112)), hit_9));
-}
-
-fn point_to_world(inst_1: GpuInstance, p: vec3<f32>) -> vec3<f32> {
+fn point_to_world(inst_3: GpuInstance, p: vec3<f32>) -> vec3<f32> {
     let q = vec4<f32>(p, 1f);
-    return vec3<f32>(dot(inst_1.object_to_world_0_, q), dot(inst_1.object_to_world_1_, q), dot(inst_1.object_to_world_2_, q));
+    return vec3<f32>(dot(inst_3.object_to_world_0_, q), dot(inst_3.object_to_world_1_, q), dot(inst_3.object_to_world_2_, q));
 }
 
 fn decode_octahedral(bits: u32) -> vec3<f32> {
     var n: vec3<f32>;
 
-    let e = unpack2x16snorm(bits);
-    n = vec3<f32>(e.x, e.y, ((1f - abs(e.x)) - abs(e.y)));
+    let e_1 = unpack2x16snorm(bits);
+    n = vec3<f32>(e_1.x, e_1.y, ((1f - abs(e_1.x)) - abs(e_1.y)));
     let _e14 = n.z;
     if (_e14 < 0f) {
         let _e21 = n;
@@ -347,34 +513,34 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     return _e40;
 }
 
-fn normal_to_world(inst_2: GpuInstance, n_1: vec3<f32>) -> vec3<f32> {
-    let w_1 = (((inst_2.world_to_object_0_.xyz * vec3(n_1.x)) + (inst_2.world_to_object_1_.xyz * vec3(n_1.y))) + (inst_2.world_to_object_2_.xyz * vec3(n_1.z)));
+fn normal_to_world(inst_4: GpuInstance, n_1: vec3<f32>) -> vec3<f32> {
+    let w_1 = (((inst_4.world_to_object_0_.xyz * vec3(n_1.x)) + (inst_4.world_to_object_1_.xyz * vec3(n_1.y))) + (inst_4.world_to_object_2_.xyz * vec3(n_1.z)));
     let _e19 = normalize_vec3f(w_1);
     return _e19;
 }
 
-fn finish_hit(ray_2: Ray, c: Candidate) -> Hit {
+fn finish_hit(ray_5: Ray, c_1: Candidate) -> Hit {
     var hit: Hit;
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
-    let inst_5 = instances[c.slot];
-    hit = Hit((ray_2.origin + (ray_2.dir * vec3(c.t))), c.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c.uv, true, inst_5.object, c.primitive);
-    n_geo = c.normal;
-    n_shade = c.normal;
-    if (inst_5.geometry_type == MESH_GEOMETRY) {
-        let _e35 = load_triangle(c.primitive);
-        let b_1 = c.uv;
-        let w_2 = ((1f - b_1.x) - b_1.y);
-        let _e56 = point_to_world(inst_5, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_1.x))) + (_e35.v2_ * vec3(b_1.y))));
+    let inst_6 = instances[c_1.slot];
+    hit = Hit((ray_5.origin + (ray_5.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_6.object, c_1.primitive);
+    n_geo = c_1.normal;
+    n_shade = c_1.normal;
+    if (inst_6.geometry_type == MESH_GEOMETRY) {
+        let _e35 = load_triangle(c_1.primitive);
+        let b_2 = c_1.uv;
+        let w_2 = ((1f - b_2.x) - b_2.y);
+        let _e56 = point_to_world(inst_6, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_2.x))) + (_e35.v2_ * vec3(b_2.y))));
         hit.position = _e56;
         n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
-        let a0_ = attributes[(c.primitive * 2u)];
-        let a1_ = attributes[((c.primitive * 2u) + 1u)];
+        let a0_ = attributes[(c_1.primitive * 2u)];
+        let a1_ = attributes[((c_1.primitive * 2u) + 1u)];
         let _e79 = decode_octahedral(a0_.x);
         let _e83 = decode_octahedral(a0_.y);
         let _e89 = decode_octahedral(a0_.z);
-        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_1.x))) + (_e89 * vec3(b_1.y)));
+        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_2.x))) + (_e89 * vec3(b_2.y)));
         let _e94 = n_shade;
         let _e95 = n_shade;
         if (dot(_e94, _e95) < 0.000000000001f) {
@@ -384,264 +550,121 @@ fn finish_hit(ray_2: Ray, c: Candidate) -> Hit {
         let uv0_ = unpack2x16float(a0_.w);
         let uv1_ = unpack2x16float(a1_.x);
         let uv2_ = unpack2x16float(a1_.y);
-        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_1.x))) + (uv2_ * vec2(b_1.y)));
-        let _e123 = triangles[(c.primitive * 3u)];
+        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_2.x))) + (uv2_ * vec2(b_2.y)));
+        let _e123 = triangles[(c_1.primitive * 3u)];
         hit.primitive = bitcast<u32>(_e123.w);
     }
     let _e127 = n_geo;
-    let _e128 = normal_to_world(inst_5, _e127);
+    let _e128 = normal_to_world(inst_6, _e127);
     hit.geometric_normal = _e128;
     let _e130 = n_shade;
-    let _e131 = normal_to_world(inst_5, _e130);
+    let _e131 = normal_to_world(inst_6, _e130);
     hit.normal = _e131;
     let _e135 = hit.geometric_normal;
-    hit.front_face = (dot(ray_2.dir, _e135) < 0f);
+    hit.front_face = (dot(ray_5.dir, _e135) < 0f);
     let _e139 = hit;
     return _e139;
 }
 
-fn dispatch_any_hit(type_id_1: u32, offset_2: u32, ray_3: Ray, hit_1: Hit) -> bool {
-    return bool();
-}
-
-fn accept(inst_3: GpuInstance, ray_4: Ray, c_1: Candidate) -> bool {
-    if !(HAS_ANY_HIT) {
-        return true;
-    }
-    if ((inst_3.flags & FLAG_ANY_HIT) == 0u) {
-        return true;
-    }
-    let _e12 = finish_hit(ray_4, c_1);
-    let _e15 = dispatch_any_hit(inst_3.material_type, inst_3.material_offset, ray_4, _e12);
-    return _e15;
-}
-
-fn slab(lo: vec3<f32>, hi: vec3<f32>, origin: vec3<f32>, inv_dir: vec3<f32>, tmin: f32, tmax_1: f32) -> f32 {
-    let t0_ = ((lo - origin) * inv_dir);
-    let t1_ = ((hi - origin) * inv_dir);
-    let near_2 = min(t0_, t1_);
-    let far_2 = max(t0_, t1_);
-    let enter = max(max(near_2.x, near_2.y), max(near_2.z, tmin));
-    let exit = min(min(far_2.x, far_2.y), min(far_2.z, tmax_1));
-    if (enter <= exit) {
-        return enter;
-    }
-    let _e26 = F32_INF;
-    return bitcast<f32>(_e26);
-}
-
-fn intersect_mesh(inst_4: GpuInstance, slot_1: u32, world_ray: Ray, ray_5: Ray, best_in: Candidate, shadow: bool) -> Candidate {
-    var best: Candidate;
-    var stack: array<u32, 64>;
-    var sp: u32;
-    var node: u32;
-    var k: u32;
-    var r_1: Ray;
-    var near: u32;
-    var far: u32;
-
-    best = best_in;
-    let _e8 = safe_inverse(ray_5.dir);
-    let base = inst_4.blas_root;
-    stack = array<u32, 64>();
-    sp = 0u;
-    node = base;
-    loop {
-        let _e15 = node;
-        let n_5 = nodes[_e15];
-        if ((n_5.b & LEAF_BIT) != 0u) {
-            let count = (n_5.b & ~(LEAF_BIT));
-            k = 0u;
-            loop {
-                let _e30 = k;
-                if (_e30 >= count) {
-                    break;
-                }
-                let _e35 = k;
-                let prim = ((inst_4.triangle_offset + n_5.a) + _e35);
-                r_1 = ray_5;
-                let _e40 = best.t;
-                r_1.tmax = _e40;
-                let _e41 = r_1;
-                let _e42 = load_triangle(prim);
-                let _e43 = intersect_triangle(_e41, _e42);
-                let _e46 = r_1.tmin;
-                let _e50 = r_1.tmax;
-                let _e55 = F32_INF;
-                if (((_e43.t >= _e46) && (_e43.t <= _e50)) && (_e43.t < bitcast<f32>(_e55))) {
-                    let c_5 = Candidate(_e43.t, slot_1, prim, _e43.uv, _e43.normal);
-                    let _e63 = accept(inst_4, world_ray, c_5);
-                    if _e63 {
-                        best = c_5;
-                        if shadow {
-                            let _e64 = best;
-                            return _e64;
-                        }
-                    }
-                }
-                continuing {
-                    let _e65 = k;
-                    k = (_e65 + 1u);
-                }
-            }
-        } else {
-            let left = (base + n_5.a);
-            let right = (left + 1u);
-            let l = nodes[left];
-            let rr = nodes[right];
-            let _e83 = best.t;
-            let _e84 = slab(l.min, l.max, ray_5.origin, _e8, ray_5.tmin, _e83);
-            let _e90 = best.t;
-            let _e91 = slab(rr.min, rr.max, ray_5.origin, _e8, ray_5.tmin, _e90);
-            let _e93 = F32_INF;
-            let _e97 = F32_INF;
-            if ((_e84 < bitcast<f32>(_e93)) && (_e91 < bitcast<f32>(_e97))) {
-                near = left;
-                far = right;
-                if (_e91 < _e84) {
-                    near = right;
-                    far = left;
-                }
-                let _e104 = sp;
-                if (_e104 < BLAS_STACK) {
-                    let _e107 = sp;
-                    let _e111 = far;
-                    stack[min(_e107, 63u)] = _e111;
-                    let _e112 = sp;
-                    sp = (_e112 + 1u);
-                }
-                let _e115 = near;
-                node = _e115;
-                continue;
-            }
-            let _e117 = F32_INF;
-            if (_e84 < bitcast<f32>(_e117)) {
-                node = left;
-                continue;
-            }
-            let _e121 = F32_INF;
-            if (_e91 < bitcast<f32>(_e121)) {
-                node = right;
-                continue;
-            }
-        }
-        let _e124 = sp;
-        if (_e124 == 0u) {
-            break;
-        }
-        let _e127 = sp;
-        sp = (_e127 - 1u);
-        let _e130 = sp;
-        let _e134 = stack[min(_e130, 63u)];
-        node = _e134;
-    }
-    let _e135 = best;
-    return _e135;
-}
-
-fn intersect_object(slot_2: u32, ray_6: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
-    var r_2: Ray;
-
-    let inst_6 = instances[slot_2];
-    let _e7 = to_object(inst_6, ray_6);
-    r_2 = _e7;
-    r_2.tmax = best_1.t;
-    if (inst_6.geometry_type == MESH_GEOMETRY) {
-        let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_6, slot_2, ray_6, _e14, best_1, shadow_1);
-        return _e15;
-    }
-    return best_1;
-}
-
-fn medium_at(p_1: vec3<f32>) -> u32 {
+fn medium_at(p_1: vec3<f32>, exclude: u32) -> u32 {
+    var inside: u32;
+    var nearest: f32;
     var i: u32;
 
     if !(HAS_MEDIA) {
         return 0u;
     }
     let frame_1 = frame;
-    let _e11 = normalize_vec3f(vec3<f32>(0.5773f, 0.5774f, 0.5775f));
-    let _e13 = F32_INF;
-    let probe = Ray(p_1, 0f, _e11, bitcast<f32>(_e13), 0u, 0u, 0u);
+    let _e12 = normalize_vec3f(vec3<f32>(0.5773f, 0.5774f, 0.5775f));
+    let _e14 = F32_INF;
+    let probe = Ray(p_1, 0f, _e12, bitcast<f32>(_e14), 0u, 0u, 0u);
+    inside = 0u;
+    let _e23 = F32_INF;
+    nearest = bitcast<f32>(_e23);
     let end = frame_1.medium_count;
     i = 0u;
     loop {
-        let _e22 = i;
-        if (_e22 >= end) {
+        let _e29 = i;
+        if (_e29 >= end) {
             break;
         }
-        let _e25 = i;
-        let slot_3 = params[(frame_1.medium_table + _e25)];
-        let _e31 = F32_INF;
-        let _e33 = no_candidate(bitcast<f32>(_e31));
-        let _e35 = intersect_object(slot_3, probe, _e33, false);
-        if (_e35.slot != NO_HIT) {
-            let _e39 = finish_hit(probe, _e35);
-            if !(_e39.front_face) {
-                return (slot_3 + 1u);
+        let _e32 = i;
+        let slot_4 = params[(frame_1.medium_table + _e32)];
+        if (slot_4 != exclude) {
+            let _e39 = F32_INF;
+            let _e41 = no_candidate(bitcast<f32>(_e39));
+            let _e43 = intersect_object(slot_4, probe, _e41, false);
+            let _e48 = nearest;
+            if ((_e43.slot != NO_HIT) && (_e43.t < _e48)) {
+                let _e51 = finish_hit(probe, _e43);
+                if !(_e51.front_face) {
+                    inside = (slot_4 + 1u);
+                    nearest = _e43.t;
+                }
             }
         }
         continuing {
-            let _e44 = i;
-            i = (_e44 + 1u);
+            let _e57 = i;
+            i = (_e57 + 1u);
         }
     }
-    return 0u;
+    let _e60 = inside;
+    return _e60;
 }
 
-fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_6: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
-    var stack_1: array<u32, 64>;
-    var sp_1: u32;
+    var sp_2: u32;
     var node_1: u32;
     var k_1: u32;
     var near_1: u32;
     var far_1: u32;
+    var t_far_1: f32;
 
-    let _e3 = no_candidate(ray_7.tmax);
-    best_2 = _e3;
+    let _e3 = ray_count;
+    ray_count = (_e3 + 1u);
+    let _e7 = no_candidate(ray_6.tmax);
+    best_2 = _e7;
     let frame_2 = frame;
     if (frame_2.instance_count == 0u) {
-        let _e10 = best_2;
-        return _e10;
+        let _e14 = best_2;
+        return _e14;
     }
-    let _e12 = safe_inverse(ray_7.dir);
-    stack_1 = array<u32, 64>();
-    sp_1 = 0u;
+    let _e16 = safe_inverse(ray_6.dir);
+    sp_2 = 0u;
     node_1 = frame_2.tlas_root;
-    let _e19 = node_1;
-    let root = nodes[_e19];
-    let _e28 = best_2.t;
-    let _e29 = slab(root.min, root.max, ray_7.origin, _e12, ray_7.tmin, _e28);
-    let _e31 = F32_INF;
-    if (_e29 == bitcast<f32>(_e31)) {
-        let _e34 = best_2;
-        return _e34;
+    let _e21 = node_1;
+    let root = nodes[_e21];
+    let _e30 = best_2.t;
+    let _e31 = slab(root.min, root.max, ray_6.origin, _e16, ray_6.tmin, _e30);
+    let _e33 = F32_INF;
+    if (_e31 == bitcast<f32>(_e33)) {
+        let _e36 = best_2;
+        return _e36;
     }
     loop {
-        let _e35 = node_1;
-        let n_6 = nodes[_e35];
+        let _e37 = node_1;
+        let n_6 = nodes[_e37];
         if ((n_6.b & LEAF_BIT) != 0u) {
             let count_1 = (n_6.b & ~(LEAF_BIT));
             k_1 = 0u;
             loop {
-                let _e50 = k_1;
-                if (_e50 >= count_1) {
+                let _e52 = k_1;
+                if (_e52 >= count_1) {
                     break;
                 }
-                let _e53 = k_1;
-                let _e55 = best_2;
-                let _e56 = intersect_object((n_6.a + _e53), ray_7, _e55, shadow_2);
-                best_2 = _e56;
-                let _e58 = best_2.slot;
-                if (shadow_2 && (_e58 != NO_HIT)) {
-                    let _e62 = best_2;
-                    return _e62;
+                let _e55 = k_1;
+                let _e57 = best_2;
+                let _e58 = intersect_object((n_6.a + _e55), ray_6, _e57, shadow_2);
+                best_2 = _e58;
+                let _e60 = best_2.slot;
+                if (shadow_2 && (_e60 != NO_HIT)) {
+                    let _e64 = best_2;
+                    return _e64;
                 }
                 continuing {
-                    let _e63 = k_1;
-                    k_1 = (_e63 + 1u);
+                    let _e65 = k_1;
+                    k_1 = (_e65 + 1u);
                 }
             }
         } else {
@@ -649,71 +672,73 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
             let right_1 = (left_1 + 1u);
             let l_1 = nodes[left_1];
             let rr_1 = nodes[right_1];
-            let _e82 = best_2.t;
-            let _e83 = slab(l_1.min, l_1.max, ray_7.origin, _e12, ray_7.tmin, _e82);
-            let _e89 = best_2.t;
-            let _e90 = slab(rr_1.min, rr_1.max, ray_7.origin, _e12, ray_7.tmin, _e89);
-            let _e92 = F32_INF;
-            let _e96 = F32_INF;
-            if ((_e83 < bitcast<f32>(_e92)) && (_e90 < bitcast<f32>(_e96))) {
+            let _e84 = best_2.t;
+            let _e85 = slab(l_1.min, l_1.max, ray_6.origin, _e16, ray_6.tmin, _e84);
+            let _e91 = best_2.t;
+            let _e92 = slab(rr_1.min, rr_1.max, ray_6.origin, _e16, ray_6.tmin, _e91);
+            let _e94 = F32_INF;
+            let _e98 = F32_INF;
+            if ((_e85 < bitcast<f32>(_e94)) && (_e92 < bitcast<f32>(_e98))) {
                 near_1 = left_1;
                 far_1 = right_1;
-                if (_e90 < _e83) {
+                t_far_1 = _e92;
+                if (_e92 < _e85) {
                     near_1 = right_1;
                     far_1 = left_1;
+                    t_far_1 = _e85;
                 }
-                let _e103 = sp_1;
-                if (_e103 < TLAS_STACK) {
-                    let _e106 = sp_1;
+                let _e106 = sp_2;
+                if (_e106 < TLAS_STACK) {
+                    let _e109 = sp_2;
                     let _e110 = far_1;
-                    stack_1[min(_e106, 63u)] = _e110;
-                    let _e111 = sp_1;
-                    sp_1 = (_e111 + 1u);
+                    let _e111 = t_far_1;
+                    traversal_stack[min(_e109, 127u)] = vec2<u32>(_e110, bitcast<u32>(_e111));
+                    let _e118 = sp_2;
+                    sp_2 = (_e118 + 1u);
                 }
-                let _e114 = near_1;
-                node_1 = _e114;
+                let _e121 = near_1;
+                node_1 = _e121;
                 continue;
             }
-            let _e116 = F32_INF;
-            if (_e83 < bitcast<f32>(_e116)) {
+            let _e123 = F32_INF;
+            if (_e85 < bitcast<f32>(_e123)) {
                 node_1 = left_1;
                 continue;
             }
-            let _e120 = F32_INF;
-            if (_e90 < bitcast<f32>(_e120)) {
+            let _e127 = F32_INF;
+            if (_e92 < bitcast<f32>(_e127)) {
                 node_1 = right_1;
                 continue;
             }
         }
-        let _e123 = sp_1;
-        if (_e123 == 0u) {
+        let _e131 = sp_2;
+        let _e133 = best_2.t;
+        let _e134 = pop_within(0u, _e131, _e133);
+        if (_e134.x == NO_HIT) {
             break;
         }
-        let _e126 = sp_1;
-        sp_1 = (_e126 - 1u);
-        let _e129 = sp_1;
-        let _e133 = stack_1[min(_e129, 63u)];
-        node_1 = _e133;
+        node_1 = _e134.x;
+        sp_2 = _e134.y;
     }
-    let _e134 = best_2;
-    return _e134;
+    let _e140 = best_2;
+    return _e140;
 }
 
-fn load_SkyGradient(offset_3: u32) -> SkyGradient {
-    let _e5 = params[(offset_3 + 0u)];
-    let _e11 = params[(offset_3 + 1u)];
-    let _e17 = params[(offset_3 + 2u)];
-    let _e24 = params[(offset_3 + 4u)];
-    let _e30 = params[(offset_3 + 5u)];
-    let _e36 = params[(offset_3 + 6u)];
-    let _e43 = params[(offset_3 + 8u)];
-    let _e49 = params[(offset_3 + 9u)];
-    let _e55 = params[(offset_3 + 10u)];
+fn load_SkyGradient(offset_2: u32) -> SkyGradient {
+    let _e5 = params[(offset_2 + 0u)];
+    let _e11 = params[(offset_2 + 1u)];
+    let _e17 = params[(offset_2 + 2u)];
+    let _e24 = params[(offset_2 + 4u)];
+    let _e30 = params[(offset_2 + 5u)];
+    let _e36 = params[(offset_2 + 6u)];
+    let _e43 = params[(offset_2 + 8u)];
+    let _e49 = params[(offset_2 + 9u)];
+    let _e55 = params[(offset_2 + 10u)];
     return SkyGradient(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)));
 }
 
-fn sky_gradient(b: SkyGradient, ray_8: Ray) -> vec3<f32> {
-    let _e3 = normalize_vec3f(ray_8.dir);
+fn sky_gradient(b: SkyGradient, ray_7: Ray) -> vec3<f32> {
+    let _e3 = normalize_vec3f(ray_7.dir);
     let y = _e3.y;
     if (y < 0f) {
         return mix(b.horizon, b.ground, vec3(min((-(y) * 4f), 1f)));
@@ -721,73 +746,73 @@ fn sky_gradient(b: SkyGradient, ray_8: Ray) -> vec3<f32> {
     return mix(b.horizon, b.zenith, vec3(sqrt(y)));
 }
 
-fn dispatch_miss(type_id_2: u32, offset_4: u32, ray_9: Ray) -> vec3<f32> {
-    let _e2 = load_SkyGradient(offset_4);
-    let _e3 = sky_gradient(_e2, ray_9);
+fn dispatch_miss(type_id_1: u32, offset_3: u32, ray_8: Ray) -> vec3<f32> {
+    let _e2 = load_SkyGradient(offset_3);
+    let _e3 = sky_gradient(_e2, ray_8);
     return _e3;
 }
 
-fn miss(ray_10: Ray) -> vec3<f32> {
+fn miss(ray_9: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_3 = frame;
-    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_10);
+    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_9);
     return _e9;
 }
 
-fn dispatch_medium(type_id_3: u32, offset_5: u32, ray_11: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_2: u32, offset_4: u32, ray_10: Ray, t_1: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_12: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_11: Ray, t_2: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_12.medium == 0u) {
+    if (ray_11.medium == 0u) {
         return radiance_1;
     }
-    let inst_7 = instances[(ray_12.medium - 1u)];
+    let inst_7 = instances[(ray_11.medium - 1u)];
     if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_12, t_1, radiance_1);
+    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_11, t_2, radiance_1);
     return _e21;
 }
 
-fn load_Glass(offset_6: u32) -> Glass {
-    let _e5 = params[(offset_6 + 0u)];
-    let _e11 = params[(offset_6 + 4u)];
-    let _e17 = params[(offset_6 + 5u)];
-    let _e23 = params[(offset_6 + 6u)];
+fn load_Glass(offset_5: u32) -> Glass {
+    let _e5 = params[(offset_5 + 0u)];
+    let _e11 = params[(offset_5 + 4u)];
+    let _e17 = params[(offset_5 + 5u)];
+    let _e23 = params[(offset_5 + 6u)];
     return Glass(bitcast<f32>(_e5), vec3<f32>(bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)));
 }
 
-fn glass_shade(m: Glass, ray_13: Ray, hit_2: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn glass_shade(m: Glass, ray_12: Ray, hit_1: Hit, secondary: vec3<f32>) -> vec3<f32> {
     return secondary;
 }
 
-fn load_Mirror(offset_7: u32) -> Mirror {
-    let _e5 = params[(offset_7 + 0u)];
-    let _e11 = params[(offset_7 + 1u)];
-    let _e17 = params[(offset_7 + 2u)];
+fn load_Mirror(offset_6: u32) -> Mirror {
+    let _e5 = params[(offset_6 + 0u)];
+    let _e11 = params[(offset_6 + 1u)];
+    let _e17 = params[(offset_6 + 2u)];
     return Mirror(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn mirror_shade(m_1: Mirror, ray_14: Ray, hit_3: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+fn mirror_shade(m_1: Mirror, ray_13: Ray, hit_2: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     return secondary_1;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_15: Ray, hit_4: Hit, secondary_2: vec3<f32>) -> vec3<f32> {
-    switch type_id_4 {
+fn dispatch_closest_hit(type_id_3: u32, offset_7: u32, ray_14: Ray, hit_3: Hit, secondary_2: vec3<f32>) -> vec3<f32> {
+    switch type_id_3 {
         case 0u: {
-            let _e5 = load_Glass(offset_8);
-            let _e6 = glass_shade(_e5, ray_15, hit_4, secondary_2);
+            let _e5 = load_Glass(offset_7);
+            let _e6 = glass_shade(_e5, ray_14, hit_3, secondary_2);
             return _e6;
         }
         case 1u: {
-            let _e7 = load_Mirror(offset_8);
-            let _e8 = mirror_shade(_e7, ray_15, hit_4, secondary_2);
+            let _e7 = load_Mirror(offset_7);
+            let _e8 = mirror_shade(_e7, ray_14, hit_3, secondary_2);
             return _e8;
         }
         default: {
@@ -796,10 +821,10 @@ fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_15: Ray, hit_4: Hit, 
     return vec3<f32>();
 }
 
-fn shade_direct(ray_16: Ray, c_2: Candidate) -> vec3<f32> {
+fn shade_direct(ray_15: Ray, c_2: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_2.slot];
-    let _e6 = finish_hit(ray_16, c_2);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_15, c_2);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, vec3(0f));
     return _e11;
 }
 
@@ -818,51 +843,52 @@ fn rt_spawn(dir: vec3<f32>, weight: vec3<f32>) {
     }
 }
 
-fn glass_rays(m_2: Glass, ray_17: Ray, hit_5: Hit) {
+fn glass_rays(m_2: Glass, ray_16: Ray, hit_4: Hit) {
     var n_2: vec3<f32>;
     var eta_1: f32;
 
-    let _e4 = normalize_vec3f(ray_17.dir);
-    n_2 = hit_5.normal;
+    let _e4 = normalize_vec3f(ray_16.dir);
+    n_2 = hit_4.normal;
     eta_1 = (1f / m_2.ior);
-    if !(hit_5.front_face) {
+    if !(hit_4.front_face) {
         let _e13 = n_2;
         n_2 = -(_e13);
         eta_1 = m_2.ior;
     }
     let _e17 = n_2;
-    let c_6 = min(dot(-(_e4), _e17), 1f);
+    let c_7 = min(dot(-(_e4), _e17), 1f);
     let _e21 = n_2;
     let _e22 = eta_1;
-    let t_3 = refract(_e4, _e21, _e22);
+    let t_4 = refract(_e4, _e21, _e22);
     let _e24 = eta_1;
-    let _e25 = schlick(c_6, _e24);
-    if (dot(t_3, t_3) == 0f) {
+    let _e25 = schlick(c_7, _e24);
+    if (dot(t_4, t_4) == 0f) {
         let _e29 = n_2;
         rt_spawn(reflect(_e4, _e29), m_2.tint);
     } else {
         let _e32 = n_2;
         rt_spawn(reflect(_e4, _e32), vec3(_e25));
-        rt_spawn(t_3, (m_2.tint * vec3((1f - _e25))));
+        rt_spawn(t_4, (m_2.tint * vec3((1f - _e25))));
     }
     return;
 }
 
-fn mirror_rays(m_3: Mirror, ray_18: Ray, hit_6: Hit) {
-    rt_spawn(reflect(ray_18.dir, hit_6.normal), m_3.tint);
+fn mirror_rays(m_3: Mirror, ray_17: Ray, hit_5: Hit) {
+    let _e4 = normalize_vec3f(ray_17.dir);
+    rt_spawn(reflect(_e4, hit_5.normal), m_3.tint);
     return;
 }
 
-fn dispatch_secondary_rays(type_id_5: u32, offset_9: u32, ray_19: Ray, hit_7: Hit) {
-    switch type_id_5 {
+fn dispatch_secondary_rays(type_id_4: u32, offset_8: u32, ray_18: Ray, hit_6: Hit) {
+    switch type_id_4 {
         case 0u: {
-            let _e4 = load_Glass(offset_9);
-            glass_rays(_e4, ray_19, hit_7);
+            let _e4 = load_Glass(offset_8);
+            glass_rays(_e4, ray_18, hit_6);
             return;
         }
         case 1u: {
-            let _e5 = load_Mirror(offset_9);
-            mirror_rays(_e5, ray_19, hit_7);
+            let _e5 = load_Mirror(offset_8);
+            mirror_rays(_e5, ray_18, hit_6);
             return;
         }
         default: {
@@ -871,35 +897,32 @@ fn dispatch_secondary_rays(type_id_5: u32, offset_9: u32, ray_19: Ray, hit_7: Hi
     return;
 }
 
-fn vec3i_from_vec3f(x_1: vec3<f32>) -> vec3<i32> {
-    return select(vec3<i32>(min(max(x_1, vec3(-2147483600f)), vec3(2147483500f))), vec3(0i), ((bitcast<vec3<u32>>(x_1) & vec3(2147483647u)) > vec3(2139095040u)));
-}
-
 fn offset_origin(p_2: vec3<f32>, n_3: vec3<f32>) -> vec3<f32> {
-    let _e5 = vec3i_from_vec3f((n_3 * vec3(256f)));
-    let pi = vec3<f32>(bitcast<f32>((bitcast<i32>(p_2.x) + select(_e5.x, -(_e5.x), (p_2.x < 0f)))), bitcast<f32>((bitcast<i32>(p_2.y) + select(_e5.y, -(_e5.y), (p_2.y < 0f)))), bitcast<f32>((bitcast<i32>(p_2.z) + select(_e5.z, -(_e5.z), (p_2.z < 0f)))));
-    let small = (abs(p_2) < vec3((1f / 32f)));
-    return select(pi, (p_2 + (n_3 * vec3((1f / 65536f)))), small);
+    let _e3 = frame;
+    let root_1 = nodes[_e3.tlas_root];
+    let a_1 = max(abs(p_2), max(abs(root_1.min), abs(root_1.max)));
+    let m_4 = max(max(a_1.x, a_1.y), a_1.z);
+    return (p_2 + (n_3 * vec3((m_4 * (1f / 65536f)))));
 }
 
-fn spawn_origin(hit_8: Hit, dir_1: vec3<f32>) -> vec3<f32> {
+fn spawn_origin(hit_7: Hit, dir_1: vec3<f32>) -> vec3<f32> {
     var n_4: vec3<f32>;
 
-    n_4 = hit_8.geometric_normal;
+    n_4 = hit_7.geometric_normal;
     let _e4 = n_4;
     if (dot(dir_1, _e4) < 0f) {
         let _e8 = n_4;
         n_4 = -(_e8);
     }
     let _e11 = n_4;
-    let _e12 = offset_origin(hit_8.position, _e11);
+    let _e12 = offset_origin(hit_7.position, _e11);
     return _e12;
 }
 
 fn trace(camera_ray: Ray) -> vec3<f32> {
-    var stack_2: array<Frame, 6>;
+    var stack: array<Frame, 6>;
     var depth: u32;
-    var ray_20: Ray;
+    var ray_19: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var pushed: bool;
@@ -919,39 +942,39 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e15 = through_medium(camera_ray, _e4.t, _e14);
         return _e15;
     }
-    stack_2 = array<Frame, 6>();
+    stack = array<Frame, 6>();
     depth = 0u;
-    ray_20 = camera_ray;
+    ray_19 = camera_ray;
     value = vec3(0f);
     have_value = false;
     loop {
         let _e26 = have_value;
         if !(_e26) {
-            let _e28 = ray_20;
+            let _e28 = ray_19;
             let _e30 = intersect_scene(_e28, false);
             if (_e30.slot == NO_HIT) {
-                let _e34 = ray_20;
+                let _e34 = ray_19;
                 let _e36 = F32_INF;
-                let _e38 = ray_20;
+                let _e38 = ray_19;
                 let _e39 = miss(_e38);
                 let _e40 = through_medium(_e34, bitcast<f32>(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 let inst_9 = instances[_e30.slot];
-                let _e46 = ray_20;
+                let _e46 = ray_19;
                 let _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                let _e56 = ray_20.depth;
+                let _e56 = ray_19.depth;
                 let _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    let _e68 = ray_20;
+                    let _e68 = ray_19;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     let _e70 = spawn_count;
                     let n_7 = min(min(_e70, 2u), MAX_SPAWN);
                     if (n_7 > 0u) {
-                        let _e77 = ray_20;
+                        let _e77 = ray_19;
                         f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 2>(), array<vec3<f32>, 2>(), n_7, 0u);
                         i_1 = 0u;
                         loop {
@@ -974,7 +997,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                         }
                         let _e111 = depth;
                         let _e115 = f;
-                        stack_2[min(_e111, 5u)] = _e115;
+                        stack[min(_e111, 5u)] = _e115;
                         let _e116 = depth;
                         depth = (_e116 + 1u);
                         pushed = true;
@@ -982,9 +1005,9 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 }
                 let _e120 = pushed;
                 if !(_e120) {
-                    let _e124 = ray_20;
+                    let _e124 = ray_19;
                     let _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0f));
-                    let _e128 = ray_20;
+                    let _e128 = ray_19;
                     let _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1000,38 +1023,38 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             }
             let _e137 = depth;
             let top = (_e137 - 1u);
-            let _e144 = stack_2[min(top, 5u)].next;
+            let _e144 = stack[min(top, 5u)].next;
             let child = (_e144 - 1u);
-            let _e151 = stack_2[min(top, 5u)].sum;
-            let _e159 = stack_2[min(top, 5u)].weights[min(child, 1u)];
+            let _e151 = stack[min(top, 5u)].sum;
+            let _e159 = stack[min(top, 5u)].weights[min(child, 1u)];
             let _e160 = value;
-            stack_2[min(top, 5u)].sum = (_e151 + (_e159 * _e160));
+            stack[min(top, 5u)].sum = (_e151 + (_e159 * _e160));
             have_value = false;
         }
         let _e164 = depth;
         let top_1 = (_e164 - 1u);
-        let _e171 = stack_2[min(top_1, 5u)].next;
-        let _e176 = stack_2[min(top_1, 5u)].count;
+        let _e171 = stack[min(top_1, 5u)].next;
+        let _e176 = stack[min(top_1, 5u)].count;
         if (_e171 < _e176) {
-            let i_2 = stack_2[min(top_1, 5u)].next;
-            stack_2[min(top_1, 5u)].next = (i_2 + 1u);
-            let parent = stack_2[min(top_1, 5u)].ray;
-            let hit_10 = stack_2[min(top_1, 5u)].hit;
-            let dir_3 = stack_2[min(top_1, 5u)].dirs[min(i_2, 1u)];
+            let i_2 = stack[min(top_1, 5u)].next;
+            stack[min(top_1, 5u)].next = (i_2 + 1u);
+            let parent = stack[min(top_1, 5u)].ray;
+            let hit_9 = stack[min(top_1, 5u)].hit;
+            let dir_2 = stack[min(top_1, 5u)].dirs[min(i_2, 1u)];
             medium = parent.medium;
-            let _e209 = spawn_origin(hit_10, dir_3);
+            let _e209 = spawn_origin(hit_9, dir_2);
             let _e212 = F32_INF;
             let _e218 = medium;
-            ray_20 = Ray(_e209, 0f, dir_3, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_19 = Ray(_e209, 0f, dir_2, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
-            let _e224 = stack_2[min(top_1, 5u)].slot;
+            let _e224 = stack[min(top_1, 5u)].slot;
             let inst_10 = instances[_e224];
-            let _e234 = stack_2[min(top_1, 5u)].ray;
-            let _e239 = stack_2[min(top_1, 5u)].hit;
-            let _e244 = stack_2[min(top_1, 5u)].sum;
+            let _e234 = stack[min(top_1, 5u)].ray;
+            let _e239 = stack[min(top_1, 5u)].hit;
+            let _e244 = stack[min(top_1, 5u)].sum;
             let _e245 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e234, _e239, _e244);
-            let _e250 = stack_2[min(top_1, 5u)].ray;
-            let _e256 = stack_2[min(top_1, 5u)].hit.t;
+            let _e250 = stack[min(top_1, 5u)].ray;
+            let _e256 = stack[min(top_1, 5u)].hit.t;
             let _e257 = through_medium(_e250, _e256, _e245);
             value = _e257;
             depth = top_1;
@@ -1041,8 +1064,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn is_finite_vec3f(x_2: vec3<f32>) -> vec3<bool> {
-    return ((bitcast<vec3<u32>>(x_2) & vec3(2147483647u)) < vec3(2139095040u));
+fn is_finite_vec3f(x_1: vec3<f32>) -> vec3<bool> {
+    return ((bitcast<vec3<u32>>(x_1) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
 fn finite_or_zero(c_4: vec3<f32>) -> vec3<f32> {
@@ -1054,7 +1077,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s: u32;
-    var ray_21: Ray;
+    var ray_20: Ray;
 
     let frame_4 = frame;
     let tile_1 = tile;
@@ -1071,37 +1094,39 @@ fn render_pixel(pixel_3: vec2<u32>) {
         let sample_3 = ((tile_1.frame * frame_4.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_4.seed);
         let _e23 = dispatch_ray_generation(frame_4.camera_type, frame_4.camera_offset, pixel_3, sample_3);
-        ray_21 = _e23;
-        ray_21.depth = 0u;
-        ray_21.kind = RAY_CAMERA;
-        let _e31 = ray_21.origin;
-        let _e32 = medium_at(_e31);
-        ray_21.medium = _e32;
-        let _e33 = ray_21;
-        let _e34 = trace(_e33);
-        let _e35 = is_finite_vec3f(_e34);
-        if all(_e35) {
-            let _e37 = sum;
-            sum = (_e37 + _e34);
+        ray_20 = _e23;
+        ray_20.depth = 0u;
+        ray_20.kind = RAY_CAMERA;
+        let _e31 = ray_20.origin;
+        let _e33 = medium_at(_e31, NO_HIT);
+        ray_20.medium = _e33;
+        let _e34 = ray_20;
+        let _e35 = trace(_e34);
+        let _e36 = is_finite_vec3f(_e35);
+        if all(_e36) {
+            let _e38 = sum;
+            sum = (_e38 + _e35);
         } else {
-            let _e39 = sum;
-            let _e40 = finite_or_zero(_e34);
-            sum = (_e39 + _e40);
-            let _e42 = bad;
-            bad = (_e42 + 1u);
+            let _e40 = sum;
+            let _e41 = finite_or_zero(_e35);
+            sum = (_e40 + _e41);
+            let _e43 = bad;
+            bad = (_e43 + 1u);
         }
         continuing {
-            let _e45 = s;
-            s = (_e45 + 1u);
+            let _e46 = s;
+            s = (_e46 + 1u);
         }
     }
-    let _e54 = sum;
-    let _e58 = bad;
-    let _e61 = accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
-    accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e61 + vec4<f32>(_e54, f32(frame_4.samples_per_pass)));
-    if (_e58 > 0u) {
-        atomicAdd((&counters[0]), _e58);
+    let _e55 = sum;
+    let _e59 = bad;
+    let _e62 = accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
+    accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e62 + vec4<f32>(_e55, f32(frame_4.samples_per_pass)));
+    if (_e59 > 0u) {
+        atomicAdd((&counters[0]), _e59);
     }
+    let _e69 = ray_count;
+    atomicAdd((&counters[1]), _e69);
     return;
 }
 

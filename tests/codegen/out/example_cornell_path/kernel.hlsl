@@ -1,0 +1,1527 @@
+struct FrameUniforms {
+    uint samples_per_pass;
+    uint total_samples;
+    uint seed;
+    uint tlas_root;
+    uint instance_count;
+    uint light_count;
+    uint light_table;
+    uint medium_count;
+    uint medium_table;
+    uint camera_type;
+    uint camera_offset;
+    uint background_type;
+    uint background_offset;
+};
+
+struct TileParams {
+    uint2 origin;
+    uint2 extent;
+    uint2 image_size;
+    uint tile_index;
+    uint frame;
+};
+
+struct Ray {
+    float3 origin;
+    float tmin;
+    float3 dir;
+    float tmax;
+    uint depth;
+    uint kind;
+    uint medium;
+    int _end_pad_0;
+};
+
+struct Pinhole {
+    float3 position;
+    int _pad1_0;
+    float3 look_at;
+    int _pad2_0;
+    float3 up;
+    float fov;
+};
+
+struct Candidate {
+    float t;
+    uint slot;
+    uint primitive;
+    int _pad3_0;
+    float2 uv;
+    int _pad4_0;
+    int _pad4_1;
+    float3 normal;
+    int _end_pad_0;
+};
+
+struct GpuInstance {
+    float4 world_to_object_0_;
+    float4 world_to_object_1_;
+    float4 world_to_object_2_;
+    float4 object_to_world_0_;
+    float4 object_to_world_1_;
+    float4 object_to_world_2_;
+    uint geometry_type;
+    uint geometry_offset;
+    uint material_type;
+    uint material_offset;
+    uint blas_root;
+    uint triangle_offset;
+    uint flags;
+    uint object;
+};
+
+struct TriangleRay {
+    float3 origin;
+    uint kx;
+    uint ky;
+    uint kz;
+    int _pad4_0;
+    int _pad4_1;
+    float3 shear;
+    bool valid;
+};
+
+struct GpuNode {
+    float3 min_;
+    uint a;
+    float3 max_;
+    uint b;
+};
+
+struct Hit {
+    float3 position;
+    float t;
+    float3 normal;
+    int _pad3_0;
+    float3 geometric_normal;
+    int _pad4_0;
+    float2 uv;
+    bool front_face;
+    uint instance;
+    uint primitive;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
+struct Triangle {
+    float3 v0_;
+    int _pad1_0;
+    float3 v1_;
+    int _pad2_0;
+    float3 v2_;
+    int _end_pad_0;
+};
+
+struct Emissive {
+    float3 color;
+    float intensity;
+    uint two_sided;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
+struct PathDiffuse {
+    float3 albedo;
+    uint roulette_depth;
+};
+
+struct LightSample {
+    float3 dir;
+    float dist;
+    float3 radiance;
+    int _end_pad_0;
+};
+
+struct QuadLight {
+    float3 corner;
+    int _pad1_0;
+    float3 edge_u;
+    int _pad2_0;
+    float3 edge_v;
+    int _pad3_0;
+    float3 color;
+    float intensity;
+};
+
+struct Frame {
+    Ray ray;
+    Hit hit;
+    uint slot;
+    int _pad3_0;
+    int _pad3_1;
+    int _pad3_2;
+    float3 sum;
+    int _pad4_0;
+    float3 dirs[1];
+    int _pad5_0;
+    float3 weights[1];
+    int _pad6_0;
+    uint count;
+    uint next;
+    int _end_pad_0;
+    int _end_pad_1;
+};
+
+static const uint RAY_CAMERA = 0u;
+static const uint NO_HIT = 4294967295u;
+static const bool HAS_MEDIA = false;
+static const uint MESH_GEOMETRY = 4294967295u;
+static const uint LEAF_BIT = 2147483648u;
+static const uint BLAS_STACK = 64u;
+static const uint TLAS_STACK = 64u;
+static const bool HAS_SECONDARY_RAYS = true;
+static const bool HAS_BACKGROUND = false;
+static const uint FLAG_MEDIUM = 4u;
+static const uint RAY_SHADOW = 2u;
+static const float INV_PI = 0.31830987;
+static const uint FLAG_SECONDARY = 2u;
+static const uint MAX_DEPTH = 6u;
+static const uint STACK_SIZE = 6u;
+static const float NEE_BOUNCE_LENGTH = 2.0;
+static const uint MAX_SPAWN = 1u;
+static const uint RAY_SECONDARY = 1u;
+
+cbuffer frame : register(b0) { FrameUniforms frame; }
+cbuffer tile : register(b1) { TileParams tile; }
+static uint rng_state = (uint)0;
+ByteAddressBuffer params : register(t6);
+static uint F32_INF = 2139095040u;
+ByteAddressBuffer instances : register(t3);
+ByteAddressBuffer nodes : register(t2);
+ByteAddressBuffer triangles : register(t4);
+static uint2 traversal_stack[128] = (uint2[128])0;
+ByteAddressBuffer attributes : register(t5);
+static uint ray_count = (uint)0;
+static float3 spawn_dirs[1] = (float3[1])0;
+static float3 spawn_weights[1] = (float3[1])0;
+static uint spawn_count = (uint)0;
+RWByteAddressBuffer accum : register(u8);
+RWByteAddressBuffer counters : register(u9);
+
+uint pcg_hash(uint x)
+{
+    uint state = ((x * 747796405u) + 2891336453u);
+    uint word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    return ((word >> 22u) ^ word);
+}
+
+void rng_seed(uint2 pixel, uint sample_, uint seed)
+{
+    uint h = (uint)0;
+
+    const uint _e5 = pcg_hash(seed);
+    const uint _e7 = pcg_hash((sample_ ^ _e5));
+    const uint _e9 = pcg_hash((pixel.y ^ _e7));
+    const uint _e11 = pcg_hash((pixel.x ^ _e9));
+    h = _e11;
+    uint _e13 = h;
+    if ((_e13 == 0u)) {
+        h = 1u;
+    }
+    uint _e17 = h;
+    rng_state = _e17;
+    return;
+}
+
+Pinhole ConstructPinhole(float3 arg0, float3 arg1, float3 arg2, float arg3) {
+    Pinhole ret = (Pinhole)0;
+    ret.position = arg0;
+    ret.look_at = arg1;
+    ret.up = arg2;
+    ret.fov = arg3;
+    return ret;
+}
+
+Pinhole load_Pinhole(uint offset)
+{
+    uint _e5 = asuint(params.Load((offset + 0u)*4));
+    uint _e11 = asuint(params.Load((offset + 1u)*4));
+    uint _e17 = asuint(params.Load((offset + 2u)*4));
+    uint _e24 = asuint(params.Load((offset + 4u)*4));
+    uint _e30 = asuint(params.Load((offset + 5u)*4));
+    uint _e36 = asuint(params.Load((offset + 6u)*4));
+    uint _e43 = asuint(params.Load((offset + 8u)*4));
+    uint _e49 = asuint(params.Load((offset + 9u)*4));
+    uint _e55 = asuint(params.Load((offset + 10u)*4));
+    uint _e62 = asuint(params.Load((offset + 11u)*4));
+    const Pinhole pinhole = ConstructPinhole(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), float3(asfloat(_e24), asfloat(_e30), asfloat(_e36)), float3(asfloat(_e43), asfloat(_e49), asfloat(_e55)), asfloat(_e62));
+    return pinhole;
+}
+
+uint2 image_size_query()
+{
+    TileParams _e1 = tile;
+    return _e1.image_size;
+}
+
+uint samples_per_pixel_query()
+{
+    FrameUniforms _e1 = frame;
+    return _e1.total_samples;
+}
+
+float rand_next()
+{
+    uint _e1 = rng_state;
+    uint s_1 = ((_e1 * 747796405u) + 2891336453u);
+    rng_state = s_1;
+    uint word_1 = (((s_1 >> (((s_1 >> 28u) + 4u) & 31u)) ^ s_1) * 277803737u);
+    uint r_3 = ((word_1 >> 22u) ^ word_1);
+    return (float((r_3 >> 8u)) * (1.0 / 16777216.0));
+}
+
+float2 rand2_next()
+{
+    const float _e0 = rand_next();
+    const float _e1 = rand_next();
+    return float2(_e0, _e1);
+}
+
+float3 normalize_vec3f(float3 v)
+{
+    return ((dot(v, v) >= 1.1754944e-38) ? normalize(v) : (0.0).xxx);
+}
+
+Ray ConstructRay(float3 arg0, float arg1, float3 arg2, float arg3, uint arg4, uint arg5, uint arg6) {
+    Ray ret = (Ray)0;
+    ret.origin = arg0;
+    ret.tmin = arg1;
+    ret.dir = arg2;
+    ret.tmax = arg3;
+    ret.depth = arg4;
+    ret.kind = arg5;
+    ret.medium = arg6;
+    return ret;
+}
+
+Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
+{
+    float2 jitter = (float2)0;
+
+    const uint2 _e2 = image_size_query();
+    float2 size = float2(_e2);
+    jitter = (0.5).xx;
+    const uint _e7 = samples_per_pixel_query();
+    if ((_e7 > 1u)) {
+        const float2 _e10 = rand2_next();
+        jitter = _e10;
+    }
+    float2 _e12 = jitter;
+    float2 ndc = ((((float2(pixel_1) + _e12) / size) * (2.0).xx) - (1.0).xx);
+    const float3 _e24 = normalize_vec3f((cam.look_at - cam.position));
+    const float3 _e27 = normalize_vec3f(cross(_e24, cam.up));
+    float3 up = cross(_e27, _e24);
+    float h_1 = tan((radians(cam.fov) * 0.5));
+    float aspect = (size.x / size.y);
+    const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
+    uint _e52 = F32_INF;
+    const Ray ray_20 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_20;
+}
+
+Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
+{
+    const Pinhole _e3 = load_Pinhole(offset_1);
+    const Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
+    const Ray ray_21 = _e4;
+    return ray_21;
+}
+
+Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
+    Candidate ret = (Candidate)0;
+    ret.t = arg0;
+    ret.slot = arg1;
+    ret.primitive = arg2;
+    ret.uv = arg3;
+    ret.normal = arg4;
+    return ret;
+}
+
+Candidate no_candidate(float tmax)
+{
+    const Candidate candidate = ConstructCandidate(tmax, NO_HIT, 0u, (0.0).xx, (0.0).xxx);
+    return candidate;
+}
+
+Ray to_object(GpuInstance inst, Ray ray)
+{
+    Ray r = (Ray)0;
+
+    r = ray;
+    float4 o = float4(ray.origin, 1.0);
+    float4 d_1 = float4(ray.dir, 0.0);
+    r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
+    r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
+    Ray _e25 = r;
+    const Ray ray_22 = _e25;
+    return ray_22;
+}
+
+float3 safe_inverse(float3 d)
+{
+    float3 tiny = (1.1754944e-38).xxx;
+    float3 s_2 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 dd = ((abs(d) < tiny) ? (s_2 * tiny) : d);
+    return ((1.0).xxx / dd);
+}
+
+TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, float3 arg4, bool arg5) {
+    TriangleRay ret = (TriangleRay)0;
+    ret.origin = arg0;
+    ret.kx = arg1;
+    ret.ky = arg2;
+    ret.kz = arg3;
+    ret.shear = arg4;
+    ret.valid = arg5;
+    return ret;
+}
+
+TriangleRay prepare_triangle_ray(Ray ray_1)
+{
+    float3 d_2 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
+    float3 ad = abs(d_2);
+    bool y_gt = (ad.y > ad.x);
+    uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
+    uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
+    uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
+    float dz = d_2[min(uint(min(kz, 2u)), 2u)];
+    bool flip = (dz < 0.0);
+    uint kx = (flip ? ky0_ : kx0_);
+    uint ky = (flip ? kx0_ : ky0_);
+    uint3 inf_bits = (2139095040u).xxx;
+    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_2) & (2147483647u).xxx) < inf_bits)));
+    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_2[min(uint(min(kx, 2u)), 2u)] / dz), (d_2[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    return triangleray;
+}
+
+float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
+{
+    float4 _e8 = asfloat(triangles.Load4((slot * 3u)*16));
+    float3 a = (_e8.xyz - r_1.origin);
+    float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
+    float3 b = (_e18.xyz - r_1.origin);
+    float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
+    float3 c_4 = (_e28.xyz - r_1.origin);
+    float ax = (a[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float ay = (a[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float bx = (b[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float by = (b[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * b[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cx = (c_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_4[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cy = (c_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_4[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float u_1 = ((cx * by) - (cy * bx));
+    float v_1 = ((ax * cy) - (ay * cx));
+    float w = ((bx * ay) - (by * ax));
+    bool outside = ((((u_1 < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u_1 > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
+    float det = ((u_1 + v_1) + w);
+    float rcp_ = (1.0 / det);
+    float t_3 = ((((u_1 * (r_1.shear.z * a[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
+    uint _e173 = F32_INF;
+    return (hit_7 ? float3(t_3, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+}
+
+bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
+{
+    return true;
+}
+
+float slab(float3 lo, float3 hi, float3 origin, float3 inv_dir, float tmin_1, float tmax_2)
+{
+    float3 t0_ = ((lo - origin) * inv_dir);
+    float3 t1_ = ((hi - origin) * inv_dir);
+    float3 near_2 = min(t0_, t1_);
+    float3 far_2 = max(t0_, t1_);
+    float enter = max(max(near_2.x, near_2.y), max(near_2.z, tmin_1));
+    float exit = min((min(far_2.x, far_2.y) * 1.0000005), min((far_2.z * 1.0000005), tmax_2));
+    if ((enter <= exit)) {
+        return enter;
+    }
+    uint _e30 = F32_INF;
+    return asfloat(_e30);
+}
+
+uint2 pop_within(uint base, uint sp_in, float t)
+{
+    uint sp = (uint)0;
+
+    sp = sp_in;
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e4 = sp;
+        if ((_e4 == 0u)) {
+            break;
+        }
+        uint _e7 = sp;
+        sp = (_e7 - 1u);
+        uint _e10 = sp;
+        uint2 e = traversal_stack[min(uint(min((base + _e10), 127u)), 127u)];
+        if ((asfloat(e.y) <= t)) {
+            uint _e21 = sp;
+            return uint2(e.x, _e21);
+        }
+    }
+    return uint2(NO_HIT, 0u);
+}
+
+GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
+    GpuNode ret = (GpuNode)0;
+    ret.min_ = arg0;
+    ret.a = arg1;
+    ret.max_ = arg2;
+    ret.b = arg3;
+    return ret;
+}
+
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_3, Candidate best_in, bool shadow)
+{
+    Candidate best = (Candidate)0;
+    uint sp_1 = (uint)0;
+    uint node = (uint)0;
+    uint k = (uint)0;
+    uint near = (uint)0;
+    uint far = (uint)0;
+    float t_far = (float)0;
+
+    best = best_in;
+    const float3 _e8 = safe_inverse(ray_3.dir);
+    const TriangleRay _e9 = prepare_triangle_ray(ray_3);
+    uint base_1 = inst_2.blas_root;
+    sp_1 = 0u;
+    node = base_1;
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e14 = node;
+        GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3(_e14*32+0)), asuint(nodes.Load(_e14*32+12)), asfloat(nodes.Load3(_e14*32+16)), asuint(nodes.Load(_e14*32+28)));
+        if (((n_7.b & LEAF_BIT) != 0u)) {
+            uint count = (n_7.b & ~(LEAF_BIT));
+            k = 0u;
+            uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+            bool loop_init = true;
+            while(true) {
+                if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                if (!loop_init) {
+                    uint _e52 = k;
+                    k = (_e52 + 1u);
+                }
+                loop_init = false;
+                uint _e29 = k;
+                if ((_e29 >= count)) {
+                    break;
+                }
+                uint _e34 = k;
+                uint prim = ((inst_2.triangle_offset + n_7.a) + _e34);
+                float _e38 = best.t;
+                const float3 _e39 = hit_triangle(_e9, prim, ray_3.tmin, _e38);
+                uint _e42 = F32_INF;
+                if ((_e39.x < asfloat(_e42))) {
+                    Candidate c_5 = ConstructCandidate(_e39.x, slot_1, prim, _e39.yz, (0.0).xxx);
+                    const bool _e50 = accept(inst_2, world_ray, c_5);
+                    if (_e50) {
+                        best = c_5;
+                        if (shadow) {
+                            Candidate _e51 = best;
+                            const Candidate candidate_1 = _e51;
+                            return candidate_1;
+                        }
+                    }
+                }
+            }
+        } else {
+            uint left = (base_1 + n_7.a);
+            uint right = (left + 1u);
+            GpuNode l_1 = ConstructGpuNode(asfloat(nodes.Load3(left*32+0)), asuint(nodes.Load(left*32+12)), asfloat(nodes.Load3(left*32+16)), asuint(nodes.Load(left*32+28)));
+            GpuNode rr = ConstructGpuNode(asfloat(nodes.Load3(right*32+0)), asuint(nodes.Load(right*32+12)), asfloat(nodes.Load3(right*32+16)), asuint(nodes.Load(right*32+28)));
+            float _e70 = best.t;
+            const float _e71 = slab(l_1.min_, l_1.max_, ray_3.origin, _e8, ray_3.tmin, _e70);
+            float _e77 = best.t;
+            const float _e78 = slab(rr.min_, rr.max_, ray_3.origin, _e8, ray_3.tmin, _e77);
+            uint _e80 = F32_INF;
+            uint _e84 = F32_INF;
+            if (((_e71 < asfloat(_e80)) && (_e78 < asfloat(_e84)))) {
+                near = left;
+                far = right;
+                t_far = _e78;
+                if ((_e78 < _e71)) {
+                    near = right;
+                    far = left;
+                    t_far = _e71;
+                }
+                uint _e92 = sp_1;
+                if ((_e92 < BLAS_STACK)) {
+                    uint _e96 = sp_1;
+                    uint _e98 = far;
+                    float _e99 = t_far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e96), 127u)), 127u)] = uint2(_e98, asuint(_e99));
+                    uint _e106 = sp_1;
+                    sp_1 = (_e106 + 1u);
+                }
+                uint _e109 = near;
+                node = _e109;
+                continue;
+            }
+            uint _e111 = F32_INF;
+            if ((_e71 < asfloat(_e111))) {
+                node = left;
+                continue;
+            }
+            uint _e115 = F32_INF;
+            if ((_e78 < asfloat(_e115))) {
+                node = right;
+                continue;
+            }
+        }
+        uint _e119 = sp_1;
+        float _e121 = best.t;
+        const uint2 _e122 = pop_within(TLAS_STACK, _e119, _e121);
+        if ((_e122.x == NO_HIT)) {
+            break;
+        }
+        node = _e122.x;
+        sp_1 = _e122.y;
+    }
+    Candidate _e128 = best;
+    const Candidate candidate_2 = _e128;
+    return candidate_2;
+}
+
+GpuInstance ConstructGpuInstance(float4 arg0, float4 arg1, float4 arg2, float4 arg3, float4 arg4, float4 arg5, uint arg6, uint arg7, uint arg8, uint arg9, uint arg10, uint arg11, uint arg12, uint arg13) {
+    GpuInstance ret = (GpuInstance)0;
+    ret.world_to_object_0_ = arg0;
+    ret.world_to_object_1_ = arg1;
+    ret.world_to_object_2_ = arg2;
+    ret.object_to_world_0_ = arg3;
+    ret.object_to_world_1_ = arg4;
+    ret.object_to_world_2_ = arg5;
+    ret.geometry_type = arg6;
+    ret.geometry_offset = arg7;
+    ret.material_type = arg8;
+    ret.material_offset = arg9;
+    ret.blas_root = arg10;
+    ret.triangle_offset = arg11;
+    ret.flags = arg12;
+    ret.object = arg13;
+    return ret;
+}
+
+Candidate intersect_object(uint slot_2, Ray ray_4, Candidate best_1, bool shadow_1)
+{
+    Ray r_2 = (Ray)0;
+
+    GpuInstance inst_5 = ConstructGpuInstance(asfloat(instances.Load4(slot_2*128+0)), asfloat(instances.Load4(slot_2*128+16)), asfloat(instances.Load4(slot_2*128+32)), asfloat(instances.Load4(slot_2*128+48)), asfloat(instances.Load4(slot_2*128+64)), asfloat(instances.Load4(slot_2*128+80)), asuint(instances.Load(slot_2*128+96)), asuint(instances.Load(slot_2*128+100)), asuint(instances.Load(slot_2*128+104)), asuint(instances.Load(slot_2*128+108)), asuint(instances.Load(slot_2*128+112)), asuint(instances.Load(slot_2*128+116)), asuint(instances.Load(slot_2*128+120)), asuint(instances.Load(slot_2*128+124)));
+    const Ray _e7 = to_object(inst_5, ray_4);
+    r_2 = _e7;
+    r_2.tmax = best_1.t;
+    if ((inst_5.geometry_type == MESH_GEOMETRY)) {
+        Ray _e14 = r_2;
+        const Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_4, _e14, best_1, shadow_1);
+        const Candidate candidate_3 = _e15;
+        return candidate_3;
+    }
+    const Candidate candidate_4 = best_1;
+    return candidate_4;
+}
+
+Triangle ConstructTriangle(float3 arg0, float3 arg1, float3 arg2) {
+    Triangle ret = (Triangle)0;
+    ret.v0_ = arg0;
+    ret.v1_ = arg1;
+    ret.v2_ = arg2;
+    return ret;
+}
+
+Triangle load_triangle(uint slot_3)
+{
+    float4 v0_ = asfloat(triangles.Load4((slot_3 * 3u)*16));
+    float4 v1_ = asfloat(triangles.Load4(((slot_3 * 3u) + 1u)*16));
+    float4 v2_ = asfloat(triangles.Load4(((slot_3 * 3u) + 2u)*16));
+    const Triangle triangle_ = ConstructTriangle(v0_.xyz, v1_.xyz, v2_.xyz);
+    return triangle_;
+}
+
+float3 point_to_world(GpuInstance inst_3, float3 p)
+{
+    float4 q = float4(p, 1.0);
+    return float3(dot(inst_3.object_to_world_0_, q), dot(inst_3.object_to_world_1_, q), dot(inst_3.object_to_world_2_, q));
+}
+
+float3 decode_octahedral(uint bits)
+{
+    float3 n = (float3)0;
+
+    float2 e_1 = (float2(int2(bits << 16, bits) >> 16) / 32767.0);
+    n = float3(e_1.x, e_1.y, ((1.0 - abs(e_1.x)) - abs(e_1.y)));
+    float _e14 = n.z;
+    if ((_e14 < 0.0)) {
+        float3 _e21 = n;
+        float2 s_3 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
+        float3 _e29 = n;
+        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_3);
+        float _e37 = n.z;
+        n = float3(xy.x, xy.y, _e37);
+    }
+    float3 _e39 = n;
+    const float3 _e40 = normalize_vec3f(_e39);
+    return _e40;
+}
+
+float3 normal_to_world(GpuInstance inst_4, float3 n_1)
+{
+    float3 w_1 = (((inst_4.world_to_object_0_.xyz * (n_1.x).xxx) + (inst_4.world_to_object_1_.xyz * (n_1.y).xxx)) + (inst_4.world_to_object_2_.xyz * (n_1.z).xxx));
+    const float3 _e19 = normalize_vec3f(w_1);
+    return _e19;
+}
+
+Hit ConstructHit(float3 arg0, float arg1, float3 arg2, float3 arg3, float2 arg4, bool arg5, uint arg6, uint arg7) {
+    Hit ret = (Hit)0;
+    ret.position = arg0;
+    ret.t = arg1;
+    ret.normal = arg2;
+    ret.geometric_normal = arg3;
+    ret.uv = arg4;
+    ret.front_face = arg5;
+    ret.instance = arg6;
+    ret.primitive = arg7;
+    return ret;
+}
+
+Hit finish_hit(Ray ray_5, Candidate c_1)
+{
+    Hit hit = (Hit)0;
+    float3 n_geo = (float3)0;
+    float3 n_shade = (float3)0;
+
+    GpuInstance inst_6 = ConstructGpuInstance(asfloat(instances.Load4(c_1.slot*128+0)), asfloat(instances.Load4(c_1.slot*128+16)), asfloat(instances.Load4(c_1.slot*128+32)), asfloat(instances.Load4(c_1.slot*128+48)), asfloat(instances.Load4(c_1.slot*128+64)), asfloat(instances.Load4(c_1.slot*128+80)), asuint(instances.Load(c_1.slot*128+96)), asuint(instances.Load(c_1.slot*128+100)), asuint(instances.Load(c_1.slot*128+104)), asuint(instances.Load(c_1.slot*128+108)), asuint(instances.Load(c_1.slot*128+112)), asuint(instances.Load(c_1.slot*128+116)), asuint(instances.Load(c_1.slot*128+120)), asuint(instances.Load(c_1.slot*128+124)));
+    hit = ConstructHit((ray_5.origin + (ray_5.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_6.object, c_1.primitive);
+    n_geo = c_1.normal;
+    n_shade = c_1.normal;
+    if ((inst_6.geometry_type == MESH_GEOMETRY)) {
+        const Triangle _e35 = load_triangle(c_1.primitive);
+        float2 b_1 = c_1.uv;
+        float w_2 = ((1.0 - b_1.x) - b_1.y);
+        const float3 _e56 = point_to_world(inst_6, (((_e35.v0_ * (w_2).xxx) + (_e35.v1_ * (b_1.x).xxx)) + (_e35.v2_ * (b_1.y).xxx)));
+        hit.position = _e56;
+        n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
+        uint4 a0_ = asuint(attributes.Load4((c_1.primitive * 2u)*16));
+        uint4 a1_ = asuint(attributes.Load4(((c_1.primitive * 2u) + 1u)*16));
+        const float3 _e79 = decode_octahedral(a0_.x);
+        const float3 _e83 = decode_octahedral(a0_.y);
+        const float3 _e89 = decode_octahedral(a0_.z);
+        n_shade = (((_e79 * (w_2).xxx) + (_e83 * (b_1.x).xxx)) + (_e89 * (b_1.y).xxx));
+        float3 _e94 = n_shade;
+        float3 _e95 = n_shade;
+        if ((dot(_e94, _e95) < 1e-12)) {
+            float3 _e99 = n_geo;
+            n_shade = _e99;
+        }
+        uint _e100 = a0_.w;
+        float2 uv0_ = float2(f16tof32(_e100), f16tof32((_e100) >> 16));
+        uint _e102 = a1_.x;
+        float2 uv1_ = float2(f16tof32(_e102), f16tof32((_e102) >> 16));
+        uint _e104 = a1_.y;
+        float2 uv2_ = float2(f16tof32(_e104), f16tof32((_e104) >> 16));
+        hit.uv = (((uv0_ * (w_2).xx) + (uv1_ * (b_1.x).xx)) + (uv2_ * (b_1.y).xx));
+        float4 _e123 = asfloat(triangles.Load4((c_1.primitive * 3u)*16));
+        hit.primitive = asuint(_e123.w);
+    }
+    float3 _e127 = n_geo;
+    const float3 _e128 = normal_to_world(inst_6, _e127);
+    hit.geometric_normal = _e128;
+    float3 _e130 = n_shade;
+    const float3 _e131 = normal_to_world(inst_6, _e130);
+    hit.normal = _e131;
+    float3 _e135 = hit.geometric_normal;
+    hit.front_face = (dot(ray_5.dir, _e135) < 0.0);
+    Hit _e139 = hit;
+    const Hit hit_8 = _e139;
+    return hit_8;
+}
+
+uint medium_at(float3 p_1, uint exclude)
+{
+    uint inside = (uint)0;
+    float nearest = (float)0;
+    uint i = (uint)0;
+
+    if (!(HAS_MEDIA)) {
+        return 0u;
+    }
+    FrameUniforms frame_1 = frame;
+    const float3 _e12 = normalize_vec3f(float3(0.5773, 0.5774, 0.5775));
+    uint _e14 = F32_INF;
+    Ray probe = ConstructRay(p_1, 0.0, _e12, asfloat(_e14), 0u, 0u, 0u);
+    inside = 0u;
+    uint _e23 = F32_INF;
+    nearest = asfloat(_e23);
+    uint end = frame_1.medium_count;
+    i = 0u;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e57 = i;
+            i = (_e57 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e29 = i;
+        if ((_e29 >= end)) {
+            break;
+        }
+        uint _e32 = i;
+        uint slot_4 = asuint(params.Load((frame_1.medium_table + _e32)*4));
+        if ((slot_4 != exclude)) {
+            uint _e39 = F32_INF;
+            const Candidate _e41 = no_candidate(asfloat(_e39));
+            const Candidate _e43 = intersect_object(slot_4, probe, _e41, false);
+            float _e48 = nearest;
+            if (((_e43.slot != NO_HIT) && (_e43.t < _e48))) {
+                const Hit _e51 = finish_hit(probe, _e43);
+                if (!(_e51.front_face)) {
+                    inside = (slot_4 + 1u);
+                    nearest = _e43.t;
+                }
+            }
+        }
+    }
+    uint _e60 = inside;
+    return _e60;
+}
+
+Candidate intersect_scene(Ray ray_6, bool shadow_2)
+{
+    Candidate best_2 = (Candidate)0;
+    uint sp_2 = (uint)0;
+    uint node_1 = (uint)0;
+    uint k_1 = (uint)0;
+    uint near_1 = (uint)0;
+    uint far_1 = (uint)0;
+    float t_far_1 = (float)0;
+
+    uint _e3 = ray_count;
+    ray_count = (_e3 + 1u);
+    const Candidate _e7 = no_candidate(ray_6.tmax);
+    best_2 = _e7;
+    FrameUniforms frame_2 = frame;
+    if ((frame_2.instance_count == 0u)) {
+        Candidate _e14 = best_2;
+        const Candidate candidate_5 = _e14;
+        return candidate_5;
+    }
+    const float3 _e16 = safe_inverse(ray_6.dir);
+    sp_2 = 0u;
+    node_1 = frame_2.tlas_root;
+    uint _e21 = node_1;
+    GpuNode root = ConstructGpuNode(asfloat(nodes.Load3(_e21*32+0)), asuint(nodes.Load(_e21*32+12)), asfloat(nodes.Load3(_e21*32+16)), asuint(nodes.Load(_e21*32+28)));
+    float _e30 = best_2.t;
+    const float _e31 = slab(root.min_, root.max_, ray_6.origin, _e16, ray_6.tmin, _e30);
+    uint _e33 = F32_INF;
+    if ((_e31 == asfloat(_e33))) {
+        Candidate _e36 = best_2;
+        const Candidate candidate_6 = _e36;
+        return candidate_6;
+    }
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        uint _e37 = node_1;
+        GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3(_e37*32+0)), asuint(nodes.Load(_e37*32+12)), asfloat(nodes.Load3(_e37*32+16)), asuint(nodes.Load(_e37*32+28)));
+        if (((n_8.b & LEAF_BIT) != 0u)) {
+            uint count_1 = (n_8.b & ~(LEAF_BIT));
+            k_1 = 0u;
+            uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+            bool loop_init_2 = true;
+            while(true) {
+                if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (!loop_init_2) {
+                    uint _e65 = k_1;
+                    k_1 = (_e65 + 1u);
+                }
+                loop_init_2 = false;
+                uint _e52 = k_1;
+                if ((_e52 >= count_1)) {
+                    break;
+                }
+                uint _e55 = k_1;
+                Candidate _e57 = best_2;
+                const Candidate _e58 = intersect_object((n_8.a + _e55), ray_6, _e57, shadow_2);
+                best_2 = _e58;
+                uint _e60 = best_2.slot;
+                if ((shadow_2 && (_e60 != NO_HIT))) {
+                    Candidate _e64 = best_2;
+                    const Candidate candidate_7 = _e64;
+                    return candidate_7;
+                }
+            }
+        } else {
+            uint left_1 = (frame_2.tlas_root + n_8.a);
+            uint right_1 = (left_1 + 1u);
+            GpuNode l_2 = ConstructGpuNode(asfloat(nodes.Load3(left_1*32+0)), asuint(nodes.Load(left_1*32+12)), asfloat(nodes.Load3(left_1*32+16)), asuint(nodes.Load(left_1*32+28)));
+            GpuNode rr_1 = ConstructGpuNode(asfloat(nodes.Load3(right_1*32+0)), asuint(nodes.Load(right_1*32+12)), asfloat(nodes.Load3(right_1*32+16)), asuint(nodes.Load(right_1*32+28)));
+            float _e84 = best_2.t;
+            const float _e85 = slab(l_2.min_, l_2.max_, ray_6.origin, _e16, ray_6.tmin, _e84);
+            float _e91 = best_2.t;
+            const float _e92 = slab(rr_1.min_, rr_1.max_, ray_6.origin, _e16, ray_6.tmin, _e91);
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if (((_e85 < asfloat(_e94)) && (_e92 < asfloat(_e98)))) {
+                near_1 = left_1;
+                far_1 = right_1;
+                t_far_1 = _e92;
+                if ((_e92 < _e85)) {
+                    near_1 = right_1;
+                    far_1 = left_1;
+                    t_far_1 = _e85;
+                }
+                uint _e106 = sp_2;
+                if ((_e106 < TLAS_STACK)) {
+                    uint _e109 = sp_2;
+                    uint _e110 = far_1;
+                    float _e111 = t_far_1;
+                    traversal_stack[min(uint(min(_e109, 127u)), 127u)] = uint2(_e110, asuint(_e111));
+                    uint _e118 = sp_2;
+                    sp_2 = (_e118 + 1u);
+                }
+                uint _e121 = near_1;
+                node_1 = _e121;
+                continue;
+            }
+            uint _e123 = F32_INF;
+            if ((_e85 < asfloat(_e123))) {
+                node_1 = left_1;
+                continue;
+            }
+            uint _e127 = F32_INF;
+            if ((_e92 < asfloat(_e127))) {
+                node_1 = right_1;
+                continue;
+            }
+        }
+        uint _e131 = sp_2;
+        float _e133 = best_2.t;
+        const uint2 _e134 = pop_within(0u, _e131, _e133);
+        if ((_e134.x == NO_HIT)) {
+            break;
+        }
+        node_1 = _e134.x;
+        sp_2 = _e134.y;
+    }
+    Candidate _e140 = best_2;
+    const Candidate candidate_8 = _e140;
+    return candidate_8;
+}
+
+float3 ZeroValuefloat3() {
+    return (float3)0;
+}
+
+float3 dispatch_miss(uint type_id_1, uint offset_2, Ray ray_7)
+{
+    return ZeroValuefloat3();
+}
+
+float3 miss(Ray ray_8)
+{
+    if (!(HAS_BACKGROUND)) {
+        return (0.0).xxx;
+    }
+    FrameUniforms frame_3 = frame;
+    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_8);
+    return _e9;
+}
+
+float3 dispatch_medium(uint type_id_2, uint offset_3, Ray ray_9, float t_1, float3 radiance)
+{
+    return ZeroValuefloat3();
+}
+
+float3 through_medium(Ray ray_10, float t_2, float3 radiance_1)
+{
+    if (!(HAS_MEDIA)) {
+        return radiance_1;
+    }
+    if ((ray_10.medium == 0u)) {
+        return radiance_1;
+    }
+    GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4((ray_10.medium - 1u)*128+0)), asfloat(instances.Load4((ray_10.medium - 1u)*128+16)), asfloat(instances.Load4((ray_10.medium - 1u)*128+32)), asfloat(instances.Load4((ray_10.medium - 1u)*128+48)), asfloat(instances.Load4((ray_10.medium - 1u)*128+64)), asfloat(instances.Load4((ray_10.medium - 1u)*128+80)), asuint(instances.Load((ray_10.medium - 1u)*128+96)), asuint(instances.Load((ray_10.medium - 1u)*128+100)), asuint(instances.Load((ray_10.medium - 1u)*128+104)), asuint(instances.Load((ray_10.medium - 1u)*128+108)), asuint(instances.Load((ray_10.medium - 1u)*128+112)), asuint(instances.Load((ray_10.medium - 1u)*128+116)), asuint(instances.Load((ray_10.medium - 1u)*128+120)), asuint(instances.Load((ray_10.medium - 1u)*128+124)));
+    if (((inst_7.flags & FLAG_MEDIUM) == 0u)) {
+        return radiance_1;
+    }
+    const float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_10, t_2, radiance_1);
+    return _e21;
+}
+
+Emissive ConstructEmissive(float3 arg0, float arg1, uint arg2) {
+    Emissive ret = (Emissive)0;
+    ret.color = arg0;
+    ret.intensity = arg1;
+    ret.two_sided = arg2;
+    return ret;
+}
+
+Emissive load_Emissive(uint offset_4)
+{
+    uint _e5 = asuint(params.Load((offset_4 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_4 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_4 + 2u)*4));
+    uint _e24 = asuint(params.Load((offset_4 + 3u)*4));
+    uint _e30 = asuint(params.Load((offset_4 + 4u)*4));
+    const Emissive emissive = ConstructEmissive(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), asfloat(_e24), _e30);
+    return emissive;
+}
+
+bool after_nee_bounce(Ray ray_11)
+{
+    return (dot(ray_11.dir, ray_11.dir) > 2.0);
+}
+
+float3 emissive_shade(Emissive m, Ray ray_12, Hit hit_1)
+{
+    const bool _e3 = after_nee_bounce(ray_12);
+    if ((_e3 || (!(hit_1.front_face) && (m.two_sided == 0u)))) {
+        return (0.0).xxx;
+    }
+    return (m.color * (m.intensity).xxx);
+}
+
+PathDiffuse ConstructPathDiffuse(float3 arg0, uint arg1) {
+    PathDiffuse ret = (PathDiffuse)0;
+    ret.albedo = arg0;
+    ret.roulette_depth = arg1;
+    return ret;
+}
+
+PathDiffuse load_PathDiffuse(uint offset_5)
+{
+    uint _e5 = asuint(params.Load((offset_5 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_5 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_5 + 2u)*4));
+    uint _e24 = asuint(params.Load((offset_5 + 3u)*4));
+    const PathDiffuse pathdiffuse = ConstructPathDiffuse(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), _e24);
+    return pathdiffuse;
+}
+
+uint light_count_query()
+{
+    FrameUniforms _e1 = frame;
+    return _e1.light_count;
+}
+
+QuadLight ConstructQuadLight(float3 arg0, float3 arg1, float3 arg2, float3 arg3, float arg4) {
+    QuadLight ret = (QuadLight)0;
+    ret.corner = arg0;
+    ret.edge_u = arg1;
+    ret.edge_v = arg2;
+    ret.color = arg3;
+    ret.intensity = arg4;
+    return ret;
+}
+
+QuadLight load_QuadLight(uint offset_6)
+{
+    uint _e5 = asuint(params.Load((offset_6 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_6 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_6 + 2u)*4));
+    uint _e24 = asuint(params.Load((offset_6 + 4u)*4));
+    uint _e30 = asuint(params.Load((offset_6 + 5u)*4));
+    uint _e36 = asuint(params.Load((offset_6 + 6u)*4));
+    uint _e43 = asuint(params.Load((offset_6 + 8u)*4));
+    uint _e49 = asuint(params.Load((offset_6 + 9u)*4));
+    uint _e55 = asuint(params.Load((offset_6 + 10u)*4));
+    uint _e62 = asuint(params.Load((offset_6 + 12u)*4));
+    uint _e68 = asuint(params.Load((offset_6 + 13u)*4));
+    uint _e74 = asuint(params.Load((offset_6 + 14u)*4));
+    uint _e81 = asuint(params.Load((offset_6 + 15u)*4));
+    const QuadLight quadlight = ConstructQuadLight(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), float3(asfloat(_e24), asfloat(_e30), asfloat(_e36)), float3(asfloat(_e43), asfloat(_e49), asfloat(_e55)), float3(asfloat(_e62), asfloat(_e68), asfloat(_e74)), asfloat(_e81));
+    return quadlight;
+}
+
+float3 offset_origin(float3 p_2, float3 n_2)
+{
+    FrameUniforms _e3 = frame;
+    GpuNode root_1 = ConstructGpuNode(asfloat(nodes.Load3(_e3.tlas_root*32+0)), asuint(nodes.Load(_e3.tlas_root*32+12)), asfloat(nodes.Load3(_e3.tlas_root*32+16)), asuint(nodes.Load(_e3.tlas_root*32+28)));
+    float3 a_1 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
+    float m_3 = max(max(a_1.x, a_1.y), a_1.z);
+    return (p_2 + (n_2 * ((m_3 * (1.0 / 65536.0))).xxx));
+}
+
+float shadow_query(float3 position, float3 normal, float3 dir, float dist)
+{
+    float3 n_3 = (float3)0;
+
+    n_3 = normal;
+    float3 _e5 = n_3;
+    if ((dot(dir, _e5) < 0.0)) {
+        float3 _e9 = n_3;
+        n_3 = -(_e9);
+    }
+    float3 _e11 = n_3;
+    const float3 _e12 = offset_origin(position, _e11);
+    Ray ray_23 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    const Candidate _e23 = intersect_scene(ray_23, true);
+    return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
+}
+
+LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2) {
+    LightSample ret = (LightSample)0;
+    ret.dir = arg0;
+    ret.dist = arg1;
+    ret.radiance = arg2;
+    return ret;
+}
+
+LightSample quad_light(QuadLight l, float3 position_1, float3 normal_1)
+{
+    float3 c_6 = cross(l.edge_u, l.edge_v);
+    float area = length(c_6);
+    const float2 _e7 = rand2_next();
+    float3 to_light = (((l.corner + (l.edge_u * (_e7.x).xxx)) + (l.edge_v * (_e7.y).xxx)) - position_1);
+    float dist2_ = dot(to_light, to_light);
+    float dist_1 = sqrt(dist2_);
+    float3 dir_4 = (to_light / (max(dist_1, 1e-20)).xxx);
+    float cos_light = (-(dot(dir_4, c_6)) / max(area, 1e-30));
+    if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
+        const LightSample lightsample = ConstructLightSample(dir_4, dist_1, (0.0).xxx);
+        return lightsample;
+    }
+    const float _e41 = shadow_query(position_1, normal_1, dir_4, dist_1);
+    float strength = (((l.intensity * cos_light) * area) / dist2_);
+    const LightSample lightsample_1 = ConstructLightSample(dir_4, dist_1, ((l.color * (strength).xxx) * (_e41).xxx));
+    return lightsample_1;
+}
+
+LightSample dispatch_light(uint type_id_3, uint offset_7, float3 position_2, float3 normal_2)
+{
+    const QuadLight _e3 = load_QuadLight(offset_7);
+    const LightSample _e4 = quad_light(_e3, position_2, normal_2);
+    const LightSample lightsample_2 = _e4;
+    return lightsample_2;
+}
+
+LightSample sample_light_query(uint i_1, float3 position_3, float3 normal_3)
+{
+    FrameUniforms frame_4 = frame;
+    if ((i_1 >= frame_4.light_count)) {
+        const LightSample lightsample_3 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx);
+        return lightsample_3;
+    }
+    uint entry = (frame_4.light_table + (i_1 * 2u));
+    uint _e21 = asuint(params.Load(entry*4));
+    uint _e26 = asuint(params.Load((entry + 1u)*4));
+    const LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3);
+    const LightSample lightsample_4 = _e27;
+    return lightsample_4;
+}
+
+float3 path_diffuse_shade(PathDiffuse m_1, Ray ray_13, Hit hit_2, float3 secondary)
+{
+    float3 direct = (float3)0;
+    uint i_2 = (uint)0;
+
+    float3 n_9 = faceforward(hit_2.normal, ray_13.dir, hit_2.geometric_normal);
+    direct = (0.0).xxx;
+    const uint _e12 = light_count_query();
+    i_2 = 0u;
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e29 = i_2;
+            i_2 = (_e29 + 1u);
+        }
+        loop_init_3 = false;
+        uint _e14 = i_2;
+        if ((_e14 >= _e12)) {
+            break;
+        }
+        uint _e16 = i_2;
+        const LightSample _e19 = sample_light_query(_e16, hit_2.position, hit_2.geometric_normal);
+        float3 _e20 = direct;
+        direct = (_e20 + (_e19.radiance * (max(dot(n_9, _e19.dir), 0.0)).xxx));
+    }
+    float3 _e36 = direct;
+    return (((m_1.albedo * (INV_PI).xxx) * _e36) + secondary);
+}
+
+float3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_14, Hit hit_3, float3 secondary_1)
+{
+    switch(type_id_4) {
+        case 0u: {
+            const Emissive _e5 = load_Emissive(offset_8);
+            const float3 _e6 = emissive_shade(_e5, ray_14, hit_3);
+            return _e6;
+        }
+        case 1u: {
+            const PathDiffuse _e7 = load_PathDiffuse(offset_8);
+            const float3 _e8 = path_diffuse_shade(_e7, ray_14, hit_3, secondary_1);
+            return _e8;
+        }
+        default: {
+            break;
+        }
+    }
+    return ZeroValuefloat3();
+}
+
+float3 shade_direct(Ray ray_15, Candidate c_2)
+{
+    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
+    const Hit _e6 = finish_hit(ray_15, c_2);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, (0.0).xxx);
+    return _e11;
+}
+
+float3x3 orthonormal_basis(float3 n_4)
+{
+    float sign_ = (((asuint(n_4.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
+    float a_2 = (-1.0 / (sign_ + n_4.z));
+    float b_2 = ((n_4.x * n_4.y) * a_2);
+    float _e16 = (sign_ * n_4.x);
+    return float3x3(float3((1.0 + ((_e16 * n_4.x) * a_2)), (sign_ * b_2), -(_e16)), float3(b_2, (sign_ + ((n_4.y * n_4.y) * a_2)), -(n_4.y)), n_4);
+}
+
+float3 sample_cosine_hemisphere(float3 n_5, float2 u)
+{
+    float r_4 = sqrt(u.x);
+    float phi = (6.2831855 * u.y);
+    float3 local = float3((r_4 * cos(phi)), (r_4 * sin(phi)), sqrt(max((1.0 - u.x), 0.0)));
+    const float3x3 _e17 = orthonormal_basis(n_5);
+    return mul(local, _e17);
+}
+
+float3 nee_bounce_dir(float3 dir_1)
+{
+    return (dir_1 * (NEE_BOUNCE_LENGTH).xxx);
+}
+
+void rt_spawn(float3 dir_2, float3 weight)
+{
+    uint _e3 = spawn_count;
+    if ((_e3 < 1u)) {
+        spawn_dirs[min(uint(_e3), 0u)] = dir_2;
+        spawn_weights[min(uint(_e3), 0u)] = weight;
+        spawn_count = (_e3 + 1u);
+    }
+}
+
+void path_diffuse_rays(PathDiffuse m_2, Ray ray_16, Hit hit_4)
+{
+    float3 weight_1 = (float3)0;
+
+    float3 ng = (hit_4.front_face ? hit_4.geometric_normal : -(hit_4.geometric_normal));
+    float3 n_10 = faceforward(hit_4.normal, -(ng), hit_4.normal);
+    const float2 _e12 = rand2_next();
+    const float3 _e13 = sample_cosine_hemisphere(n_10, _e12);
+    weight_1 = m_2.albedo;
+    if ((ray_16.depth >= m_2.roulette_depth)) {
+        float q_1 = saturate(max(m_2.albedo.x, max(m_2.albedo.y, m_2.albedo.z)));
+        const float _e28 = rand_next();
+        if ((_e28 >= q_1)) {
+            return;
+        }
+        weight_1 = (m_2.albedo / (q_1).xxx);
+    }
+    if ((dot(_e13, ng) > 0.0)) {
+        const float3 _e36 = nee_bounce_dir(_e13);
+        float3 _e37 = weight_1;
+        rt_spawn(_e36, _e37);
+    }
+    return;
+}
+
+void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_17, Hit hit_5)
+{
+    const PathDiffuse _e3 = load_PathDiffuse(offset_9);
+    path_diffuse_rays(_e3, ray_17, hit_5);
+    return;
+}
+
+float3 spawn_origin(Hit hit_6, float3 dir_3)
+{
+    float3 n_6 = (float3)0;
+
+    n_6 = hit_6.geometric_normal;
+    float3 _e4 = n_6;
+    if ((dot(dir_3, _e4) < 0.0)) {
+        float3 _e8 = n_6;
+        n_6 = -(_e8);
+    }
+    float3 _e11 = n_6;
+    const float3 _e12 = offset_origin(hit_6.position, _e11);
+    return _e12;
+}
+
+Frame ConstructFrame(Ray arg0, Hit arg1, uint arg2, float3 arg3, float3 arg4[1], float3 arg5[1], uint arg6, uint arg7) {
+    Frame ret = (Frame)0;
+    ret.ray = arg0;
+    ret.hit = arg1;
+    ret.slot = arg2;
+    ret.sum = arg3;
+    ret.dirs = arg4;
+    ret.weights = arg5;
+    ret.count = arg6;
+    ret.next = arg7;
+    return ret;
+}
+
+typedef Frame ret_ZeroValuearray6_Frame_[6];
+ret_ZeroValuearray6_Frame_ ZeroValuearray6_Frame_() {
+    return (Frame[6])0;
+}
+
+typedef float3 ret_ZeroValuearray1_float3_[1];
+ret_ZeroValuearray1_float3_ ZeroValuearray1_float3_() {
+    return (float3[1])0;
+}
+
+float3 trace(Ray camera_ray)
+{
+    Frame stack[6] = (Frame[6])0;
+    uint depth = (uint)0;
+    Ray ray_18 = (Ray)0;
+    float3 value = (float3)0;
+    bool have_value = (bool)0;
+    bool pushed = (bool)0;
+    Frame f = (Frame)0;
+    uint i_3 = (uint)0;
+    uint medium = (uint)0;
+
+    if (!(HAS_SECONDARY_RAYS)) {
+        const Candidate _e4 = intersect_scene(camera_ray, false);
+        if ((_e4.slot == NO_HIT)) {
+            uint _e9 = F32_INF;
+            const float3 _e11 = miss(camera_ray);
+            const float3 _e12 = through_medium(camera_ray, asfloat(_e9), _e11);
+            return _e12;
+        }
+        const float3 _e14 = shade_direct(camera_ray, _e4);
+        const float3 _e15 = through_medium(camera_ray, _e4.t, _e14);
+        return _e15;
+    }
+    stack = ZeroValuearray6_Frame_();
+    depth = 0u;
+    ray_18 = camera_ray;
+    value = (0.0).xxx;
+    have_value = false;
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        bool _e26 = have_value;
+        if (!(_e26)) {
+            Ray _e28 = ray_18;
+            const Candidate _e30 = intersect_scene(_e28, false);
+            if ((_e30.slot == NO_HIT)) {
+                Ray _e34 = ray_18;
+                uint _e36 = F32_INF;
+                Ray _e38 = ray_18;
+                const float3 _e39 = miss(_e38);
+                const float3 _e40 = through_medium(_e34, asfloat(_e36), _e39);
+                value = _e40;
+                have_value = true;
+            } else {
+                GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(_e30.slot*128+0)), asfloat(instances.Load4(_e30.slot*128+16)), asfloat(instances.Load4(_e30.slot*128+32)), asfloat(instances.Load4(_e30.slot*128+48)), asfloat(instances.Load4(_e30.slot*128+64)), asfloat(instances.Load4(_e30.slot*128+80)), asuint(instances.Load(_e30.slot*128+96)), asuint(instances.Load(_e30.slot*128+100)), asuint(instances.Load(_e30.slot*128+104)), asuint(instances.Load(_e30.slot*128+108)), asuint(instances.Load(_e30.slot*128+112)), asuint(instances.Load(_e30.slot*128+116)), asuint(instances.Load(_e30.slot*128+120)), asuint(instances.Load(_e30.slot*128+124)));
+                Ray _e46 = ray_18;
+                const Hit _e47 = finish_hit(_e46, _e30);
+                pushed = false;
+                uint _e56 = ray_18.depth;
+                uint _e60 = depth;
+                if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
+                    spawn_count = 0u;
+                    Ray _e68 = ray_18;
+                    dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
+                    uint _e70 = spawn_count;
+                    uint n_11 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_11 > 0u)) {
+                        Ray _e77 = ray_18;
+                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_11, 0u);
+                        i_3 = 0u;
+                        uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+                        bool loop_init_4 = true;
+                        while(true) {
+                            if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+                            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                            if (!loop_init_4) {
+                                uint _e108 = i_3;
+                                i_3 = (_e108 + 1u);
+                            }
+                            loop_init_4 = false;
+                            uint _e88 = i_3;
+                            if ((_e88 >= n_11)) {
+                                break;
+                            }
+                            uint _e91 = i_3;
+                            uint _e95 = i_3;
+                            float3 _e98 = spawn_dirs[min(uint(_e95), 0u)];
+                            f.dirs[min(uint(min(_e91, 0u)), 0u)] = _e98;
+                            uint _e100 = i_3;
+                            uint _e104 = i_3;
+                            float3 _e107 = spawn_weights[min(uint(_e104), 0u)];
+                            f.weights[min(uint(min(_e100, 0u)), 0u)] = _e107;
+                        }
+                        uint _e111 = depth;
+                        Frame _e115 = f;
+                        stack[min(uint(min(_e111, 5u)), 5u)] = _e115;
+                        uint _e116 = depth;
+                        depth = (_e116 + 1u);
+                        pushed = true;
+                    }
+                }
+                bool _e120 = pushed;
+                if (!(_e120)) {
+                    Ray _e124 = ray_18;
+                    const float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, (0.0).xxx);
+                    Ray _e128 = ray_18;
+                    const float3 _e130 = through_medium(_e128, _e30.t, _e127);
+                    value = _e130;
+                    have_value = true;
+                }
+            }
+        }
+        bool _e132 = have_value;
+        if (_e132) {
+            uint _e133 = depth;
+            if ((_e133 == 0u)) {
+                float3 _e136 = value;
+                return _e136;
+            }
+            uint _e137 = depth;
+            uint top = (_e137 - 1u);
+            uint _e144 = stack[min(uint(min(top, 5u)), 5u)].next;
+            uint child = (_e144 - 1u);
+            float3 _e151 = stack[min(uint(min(top, 5u)), 5u)].sum;
+            float3 _e159 = stack[min(uint(min(top, 5u)), 5u)].weights[min(uint(min(child, 0u)), 0u)];
+            float3 _e160 = value;
+            stack[min(uint(min(top, 5u)), 5u)].sum = (_e151 + (_e159 * _e160));
+            have_value = false;
+        }
+        uint _e164 = depth;
+        uint top_1 = (_e164 - 1u);
+        uint _e171 = stack[min(uint(min(top_1, 5u)), 5u)].next;
+        uint _e176 = stack[min(uint(min(top_1, 5u)), 5u)].count;
+        if ((_e171 < _e176)) {
+            uint i_4 = stack[min(uint(min(top_1, 5u)), 5u)].next;
+            stack[min(uint(min(top_1, 5u)), 5u)].next = (i_4 + 1u);
+            Ray parent = stack[min(uint(min(top_1, 5u)), 5u)].ray;
+            Hit hit_9 = stack[min(uint(min(top_1, 5u)), 5u)].hit;
+            float3 dir_5 = stack[min(uint(min(top_1, 5u)), 5u)].dirs[min(uint(min(i_4, 0u)), 0u)];
+            medium = parent.medium;
+            const float3 _e209 = spawn_origin(hit_9, dir_5);
+            uint _e212 = F32_INF;
+            uint _e218 = medium;
+            ray_18 = ConstructRay(_e209, 0.0, dir_5, asfloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+        } else {
+            uint _e224 = stack[min(uint(min(top_1, 5u)), 5u)].slot;
+            GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e224*128+0)), asfloat(instances.Load4(_e224*128+16)), asfloat(instances.Load4(_e224*128+32)), asfloat(instances.Load4(_e224*128+48)), asfloat(instances.Load4(_e224*128+64)), asfloat(instances.Load4(_e224*128+80)), asuint(instances.Load(_e224*128+96)), asuint(instances.Load(_e224*128+100)), asuint(instances.Load(_e224*128+104)), asuint(instances.Load(_e224*128+108)), asuint(instances.Load(_e224*128+112)), asuint(instances.Load(_e224*128+116)), asuint(instances.Load(_e224*128+120)), asuint(instances.Load(_e224*128+124)));
+            Ray _e234 = stack[min(uint(min(top_1, 5u)), 5u)].ray;
+            Hit _e239 = stack[min(uint(min(top_1, 5u)), 5u)].hit;
+            float3 _e244 = stack[min(uint(min(top_1, 5u)), 5u)].sum;
+            const float3 _e245 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e234, _e239, _e244);
+            Ray _e250 = stack[min(uint(min(top_1, 5u)), 5u)].ray;
+            float _e256 = stack[min(uint(min(top_1, 5u)), 5u)].hit.t;
+            const float3 _e257 = through_medium(_e250, _e256, _e245);
+            value = _e257;
+            depth = top_1;
+            have_value = true;
+        }
+    }
+    return ZeroValuefloat3();
+}
+
+bool3 is_finite_vec3f(float3 x_1)
+{
+    return ((asuint(x_1) & (2147483647u).xxx) < (2139095040u).xxx);
+}
+
+float3 finite_or_zero(float3 c_3)
+{
+    const bool3 _e3 = is_finite_vec3f(c_3);
+    return (_e3 ? c_3 : (0.0).xxx);
+}
+
+void render_pixel(uint2 pixel_3)
+{
+    float3 sum = (float3)0;
+    uint bad = (uint)0;
+    uint s = (uint)0;
+    Ray ray_19 = (Ray)0;
+
+    FrameUniforms frame_5 = frame;
+    TileParams tile_1 = tile;
+    sum = (0.0).xxx;
+    bad = 0u;
+    uint end_1 = frame_5.samples_per_pass;
+    s = 0u;
+    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    bool loop_init_5 = true;
+    while(true) {
+        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_5) {
+            uint _e46 = s;
+            s = (_e46 + 1u);
+        }
+        loop_init_5 = false;
+        uint _e13 = s;
+        if ((_e13 >= end_1)) {
+            break;
+        }
+        uint _e18 = s;
+        uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_3, sample_3, frame_5.seed);
+        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        ray_19 = _e23;
+        ray_19.depth = 0u;
+        ray_19.kind = RAY_CAMERA;
+        float3 _e31 = ray_19.origin;
+        const uint _e33 = medium_at(_e31, NO_HIT);
+        ray_19.medium = _e33;
+        Ray _e34 = ray_19;
+        const float3 _e35 = trace(_e34);
+        const bool3 _e36 = is_finite_vec3f(_e35);
+        if (all(_e36)) {
+            float3 _e38 = sum;
+            sum = (_e38 + _e35);
+        } else {
+            float3 _e40 = sum;
+            const float3 _e41 = finite_or_zero(_e35);
+            sum = (_e40 + _e41);
+            uint _e43 = bad;
+            bad = (_e43 + 1u);
+        }
+    }
+    float3 _e55 = sum;
+    uint _e59 = bad;
+    float4 _e62 = asfloat(accum.Load4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16));
+    accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint((_e62 + float4(_e55, float(frame_5.samples_per_pass)))));
+    if ((_e59 > 0u)) {
+        counters.InterlockedAdd(0, _e59);
+    }
+    uint _e69 = ray_count;
+    counters.InterlockedAdd(4, _e69);
+    return;
+}
+
+[numthreads(8, 8, 1)]
+void render(uint3 gid : SV_DispatchThreadID)
+{
+    TileParams _e2 = tile;
+    uint2 _e7 = uint2(gid.x, gid.y);
+    if (any((_e7 >= _e2.extent))) {
+        return;
+    }
+    render_pixel((_e2.origin + _e7));
+    return;
+}

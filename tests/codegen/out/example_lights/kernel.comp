@@ -1,0 +1,1430 @@
+#version 450 core
+#extension GL_ARB_compute_shader : require
+#extension GL_ARB_shader_storage_buffer_object : require
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+struct FrameUniforms {
+    uint samples_per_pass;
+    uint total_samples;
+    uint seed;
+    uint tlas_root;
+    uint instance_count;
+    uint light_count;
+    uint light_table;
+    uint medium_count;
+    uint medium_table;
+    uint camera_type;
+    uint camera_offset;
+    uint background_type;
+    uint background_offset;
+};
+struct TileParams {
+    uvec2 origin;
+    uvec2 extent;
+    uvec2 image_size;
+    uint tile_index;
+    uint frame;
+};
+struct Ray {
+    vec3 origin;
+    float tmin;
+    vec3 dir;
+    float tmax;
+    uint depth;
+    uint kind;
+    uint medium;
+};
+struct Pinhole {
+    vec3 position;
+    vec3 look_at;
+    vec3 up;
+    float fov;
+};
+struct Candidate {
+    float t;
+    uint slot;
+    uint primitive;
+    vec2 uv;
+    vec3 normal;
+};
+struct GpuInstance {
+    vec4 world_to_object_0_;
+    vec4 world_to_object_1_;
+    vec4 world_to_object_2_;
+    vec4 object_to_world_0_;
+    vec4 object_to_world_1_;
+    vec4 object_to_world_2_;
+    uint geometry_type;
+    uint geometry_offset;
+    uint material_type;
+    uint material_offset;
+    uint blas_root;
+    uint triangle_offset;
+    uint flags;
+    uint object;
+};
+struct TriangleRay {
+    vec3 origin;
+    uint kx;
+    uint ky;
+    uint kz;
+    vec3 shear;
+    bool valid;
+};
+struct GpuNode {
+    vec3 min_;
+    uint a;
+    vec3 max_;
+    uint b;
+};
+struct Box {
+    vec3 min_;
+    vec3 max_;
+};
+struct Intersection {
+    float t;
+    vec3 normal;
+    vec2 uv;
+};
+struct Sphere {
+    vec3 center;
+    float radius;
+};
+struct Hit {
+    vec3 position;
+    float t;
+    vec3 normal;
+    vec3 geometric_normal;
+    vec2 uv;
+    bool front_face;
+    uint instance;
+    uint primitive;
+};
+struct Triangle {
+    vec3 v0_;
+    vec3 v1_;
+    vec3 v2_;
+};
+struct ConstantBackground {
+    vec3 color;
+};
+struct Lambert {
+    vec3 albedo;
+};
+struct LightSample {
+    vec3 dir;
+    float dist;
+    vec3 radiance;
+};
+struct DirectionalLight {
+    vec3 direction;
+    vec3 color;
+    float intensity;
+};
+struct PointLight {
+    vec3 position;
+    vec3 color;
+    float intensity;
+    float range;
+    float inner_range;
+};
+struct SphereLight {
+    vec3 position;
+    float radius;
+    vec3 color;
+    float intensity;
+};
+struct SpotLight {
+    vec3 position;
+    vec3 direction;
+    vec3 color;
+    float intensity;
+    float range;
+    float inner_angle;
+    float outer_angle;
+};
+struct Frame {
+    Ray ray;
+    Hit hit;
+    uint slot;
+    vec3 sum;
+    vec3 dirs[1];
+    vec3 weights[1];
+    uint count;
+    uint next;
+};
+const uint RAY_CAMERA = 0u;
+const uint NO_HIT = 4294967295u;
+const bool HAS_MEDIA = false;
+const uint MESH_GEOMETRY = 4294967295u;
+const uint LEAF_BIT = 2147483648u;
+const uint BLAS_STACK = 64u;
+const uint TLAS_STACK = 64u;
+const float TAU = 6.2831855;
+const float INV_PI = 0.31830987;
+const bool HAS_SECONDARY_RAYS = false;
+const bool HAS_BACKGROUND = true;
+const uint FLAG_MEDIUM = 4u;
+const uint RAY_SHADOW = 2u;
+const uint FLAG_SECONDARY = 2u;
+const uint MAX_DEPTH = 4u;
+const uint STACK_SIZE = 4u;
+const uint MAX_SPAWN = 1u;
+const uint RAY_SECONDARY = 1u;
+
+layout(std140, binding = 0) uniform FrameUniforms_block_0Compute { FrameUniforms _group_0_binding_0_cs; };
+
+layout(std140, binding = 1) uniform TileParams_block_1Compute { TileParams _group_0_binding_1_cs; };
+
+uint rng_state = 0u;
+
+layout(std430, binding = 6) readonly buffer type_4_block_2Compute { uint _group_0_binding_6_cs[]; };
+
+uint F32_INF = 2139095040u;
+
+layout(std430, binding = 3) readonly buffer type_8_block_3Compute { GpuInstance _group_0_binding_3_cs[]; };
+
+layout(std430, binding = 2) readonly buffer type_9_block_4Compute { GpuNode _group_0_binding_2_cs[]; };
+
+layout(std430, binding = 4) readonly buffer type_10_block_5Compute { vec4 _group_0_binding_4_cs[]; };
+
+uvec2 traversal_stack[128] = uvec2[128](uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u));
+
+layout(std430, binding = 5) readonly buffer type_13_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
+
+uint ray_count = 0u;
+
+vec3 spawn_dirs[1] = vec3[1](vec3(0.0));
+
+vec3 spawn_weights[1] = vec3[1](vec3(0.0));
+
+uint spawn_count = 0u;
+
+layout(std430, binding = 8) buffer type_10_block_7Compute { vec4 _group_0_binding_8_cs[]; };
+
+layout(std430, binding = 9) buffer type_19_block_8Compute { uint _group_0_binding_9_cs[]; };
+
+
+uint pcg_hash(uint x) {
+    uint state = ((x * 747796405u) + 2891336453u);
+    uint word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    return ((word >> 22u) ^ word);
+}
+
+void rng_seed(uvec2 pixel, uint sample_, uint seed) {
+    uint h = 0u;
+    uint _e5 = pcg_hash(seed);
+    uint _e7 = pcg_hash((sample_ ^ _e5));
+    uint _e9 = pcg_hash((pixel.y ^ _e7));
+    uint _e11 = pcg_hash((pixel.x ^ _e9));
+    h = _e11;
+    uint _e13 = h;
+    if ((_e13 == 0u)) {
+        h = 1u;
+    }
+    uint _e17 = h;
+    rng_state = _e17;
+    return;
+}
+
+Pinhole load_Pinhole(uint offset) {
+    uint _e5 = _group_0_binding_6_cs[(offset + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset + 2u)];
+    uint _e24 = _group_0_binding_6_cs[(offset + 4u)];
+    uint _e30 = _group_0_binding_6_cs[(offset + 5u)];
+    uint _e36 = _group_0_binding_6_cs[(offset + 6u)];
+    uint _e43 = _group_0_binding_6_cs[(offset + 8u)];
+    uint _e49 = _group_0_binding_6_cs[(offset + 9u)];
+    uint _e55 = _group_0_binding_6_cs[(offset + 10u)];
+    uint _e62 = _group_0_binding_6_cs[(offset + 11u)];
+    return Pinhole(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)), uintBitsToFloat(_e62));
+}
+
+uvec2 image_size_query() {
+    TileParams _e1 = _group_0_binding_1_cs;
+    return _e1.image_size;
+}
+
+uint samples_per_pixel_query() {
+    FrameUniforms _e1 = _group_0_binding_0_cs;
+    return _e1.total_samples;
+}
+
+float rand_next() {
+    uint _e1 = rng_state;
+    uint s_2 = ((_e1 * 747796405u) + 2891336453u);
+    rng_state = s_2;
+    uint word_1 = (((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u);
+    uint r_3 = ((word_1 >> 22u) ^ word_1);
+    return (float((r_3 >> 8u)) * (1.0 / 16777216.0));
+}
+
+vec2 rand2_next() {
+    float _e0 = rand_next();
+    float _e1 = rand_next();
+    return vec2(_e0, _e1);
+}
+
+vec3 normalize_vec3f(vec3 v) {
+    return ((dot(v, v) >= 1.1754944e-38) ? normalize(v) : vec3(0.0));
+}
+
+Ray pinhole_ray(Pinhole cam, uvec2 pixel_1, uint sample_1) {
+    vec2 jitter = vec2(0.0);
+    uvec2 _e2 = image_size_query();
+    vec2 size = vec2(_e2);
+    jitter = vec2(0.5);
+    uint _e7 = samples_per_pixel_query();
+    if ((_e7 > 1u)) {
+        vec2 _e10 = rand2_next();
+        jitter = _e10;
+    }
+    vec2 _e12 = jitter;
+    vec2 ndc = ((((vec2(pixel_1) + _e12) / size) * vec2(2.0)) - vec2(1.0));
+    vec3 _e24 = normalize_vec3f((cam.look_at - cam.position));
+    vec3 _e27 = normalize_vec3f(cross(_e24, cam.up));
+    vec3 up = cross(_e27, _e24);
+    float h_1 = tan((radians(cam.fov) * 0.5));
+    float aspect = (size.x / size.y);
+    vec3 _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
+    uint _e52 = F32_INF;
+    return Ray(cam.position, 0.0, _e48, uintBitsToFloat(_e52), 0u, 0u, 0u);
+}
+
+Ray dispatch_ray_generation(uint type_id, uint offset_1, uvec2 pixel_2, uint sample_2) {
+    Pinhole _e3 = load_Pinhole(offset_1);
+    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
+    return _e4;
+}
+
+Candidate no_candidate(float tmax) {
+    return Candidate(tmax, NO_HIT, 0u, vec2(0.0), vec3(0.0));
+}
+
+Ray to_object(GpuInstance inst, Ray ray) {
+    Ray r = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    r = ray;
+    vec4 o = vec4(ray.origin, 1.0);
+    vec4 d_1 = vec4(ray.dir, 0.0);
+    r.origin = vec3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
+    r.dir = vec3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
+    Ray _e25 = r;
+    return _e25;
+}
+
+vec3 safe_inverse(vec3 d) {
+    vec3 tiny = vec3(1.1754944e-38);
+    vec3 s_3 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
+    vec3 dd = mix(d, (s_3 * tiny), lessThan(abs(d), tiny));
+    return (vec3(1.0) / dd);
+}
+
+TriangleRay prepare_triangle_ray(Ray ray_1) {
+    vec3 d_2 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
+    vec3 ad = abs(d_2);
+    bool y_gt = (ad.y > ad.x);
+    uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
+    uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
+    uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
+    float dz = d_2[min(kz, 2u)];
+    bool flip = (dz < 0.0);
+    uint kx = (flip ? ky0_ : kx0_);
+    uint ky = (flip ? kx0_ : ky0_);
+    uvec3 inf_bits = uvec3(2139095040u);
+    bool finite = (all(lessThan((floatBitsToUint(ray_1.origin) & uvec3(2147483647u)), inf_bits)) && all(lessThan((floatBitsToUint(d_2) & uvec3(2147483647u)), inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_2[min(kx, 2u)] / dz), (d_2[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+}
+
+vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
+    vec4 _e8 = _group_0_binding_4_cs[(slot * 3u)];
+    vec3 a = (_e8.xyz - r_1.origin);
+    vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
+    vec3 b_2 = (_e18.xyz - r_1.origin);
+    vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
+    vec3 c_4 = (_e28.xyz - r_1.origin);
+    float ax = (a[min(r_1.kx, 2u)] - (r_1.shear.x * a[min(r_1.kz, 2u)]));
+    float ay = (a[min(r_1.ky, 2u)] - (r_1.shear.y * a[min(r_1.kz, 2u)]));
+    float bx = (b_2[min(r_1.kx, 2u)] - (r_1.shear.x * b_2[min(r_1.kz, 2u)]));
+    float by = (b_2[min(r_1.ky, 2u)] - (r_1.shear.y * b_2[min(r_1.kz, 2u)]));
+    float cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
+    float cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
+    float u = ((cx * by) - (cy * bx));
+    float v_1 = ((ax * cy) - (ay * cx));
+    float w = ((bx * ay) - (by * ax));
+    bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
+    float det = ((u + v_1) + w);
+    float rcp = (1.0 / det);
+    float t_5 = ((((u * (r_1.shear.z * a[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_2[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    bool hit_5 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
+    uint _e173 = F32_INF;
+    return (hit_5 ? vec3(t_5, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+}
+
+bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
+    return true;
+}
+
+float slab(vec3 lo, vec3 hi, vec3 origin, vec3 inv_dir, float tmin_1, float tmax_2) {
+    vec3 t0_ = ((lo - origin) * inv_dir);
+    vec3 t1_ = ((hi - origin) * inv_dir);
+    vec3 near_2 = min(t0_, t1_);
+    vec3 far_2 = max(t0_, t1_);
+    float enter = max(max(near_2.x, near_2.y), max(near_2.z, tmin_1));
+    float exit = min((min(far_2.x, far_2.y) * 1.0000005), min((far_2.z * 1.0000005), tmax_2));
+    if ((enter <= exit)) {
+        return enter;
+    }
+    uint _e30 = F32_INF;
+    return uintBitsToFloat(_e30);
+}
+
+uvec2 pop_within(uint base, uint sp_in, float t) {
+    uint sp = 0u;
+    sp = sp_in;
+    while(true) {
+        uint _e4 = sp;
+        if ((_e4 == 0u)) {
+            break;
+        }
+        uint _e7 = sp;
+        sp = (_e7 - 1u);
+        uint _e10 = sp;
+        uvec2 e = traversal_stack[min((base + _e10), 127u)];
+        if ((uintBitsToFloat(e.y) <= t)) {
+            uint _e21 = sp;
+            return uvec2(e.x, _e21);
+        }
+    }
+    return uvec2(NO_HIT, 0u);
+}
+
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_3, Candidate best_in, bool shadow) {
+    Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
+    uint sp_1 = 0u;
+    uint node = 0u;
+    uint k = 0u;
+    uint near = 0u;
+    uint far = 0u;
+    float t_far = 0.0;
+    best = best_in;
+    vec3 _e8 = safe_inverse(ray_3.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_3);
+    uint base_1 = inst_2.blas_root;
+    sp_1 = 0u;
+    node = base_1;
+    while(true) {
+        uint _e14 = node;
+        GpuNode n_7 = _group_0_binding_2_cs[_e14];
+        if (((n_7.b & LEAF_BIT) != 0u)) {
+            uint count = (n_7.b & ~(LEAF_BIT));
+            k = 0u;
+            bool loop_init = true;
+            while(true) {
+                if (!loop_init) {
+                    uint _e52 = k;
+                    k = (_e52 + 1u);
+                }
+                loop_init = false;
+                uint _e29 = k;
+                if ((_e29 >= count)) {
+                    break;
+                }
+                uint _e34 = k;
+                uint prim = ((inst_2.triangle_offset + n_7.a) + _e34);
+                float _e38 = best.t;
+                vec3 _e39 = hit_triangle(_e9, prim, ray_3.tmin, _e38);
+                uint _e42 = F32_INF;
+                if ((_e39.x < uintBitsToFloat(_e42))) {
+                    Candidate c_5 = Candidate(_e39.x, slot_1, prim, _e39.yz, vec3(0.0));
+                    bool _e50 = accept(inst_2, world_ray, c_5);
+                    if (_e50) {
+                        best = c_5;
+                        if (shadow) {
+                            Candidate _e51 = best;
+                            return _e51;
+                        }
+                    }
+                }
+            }
+        } else {
+            uint left = (base_1 + n_7.a);
+            uint right = (left + 1u);
+            GpuNode l_4 = _group_0_binding_2_cs[left];
+            GpuNode rr = _group_0_binding_2_cs[right];
+            float _e70 = best.t;
+            float _e71 = slab(l_4.min_, l_4.max_, ray_3.origin, _e8, ray_3.tmin, _e70);
+            float _e77 = best.t;
+            float _e78 = slab(rr.min_, rr.max_, ray_3.origin, _e8, ray_3.tmin, _e77);
+            uint _e80 = F32_INF;
+            uint _e84 = F32_INF;
+            if (((_e71 < uintBitsToFloat(_e80)) && (_e78 < uintBitsToFloat(_e84)))) {
+                near = left;
+                far = right;
+                t_far = _e78;
+                if ((_e78 < _e71)) {
+                    near = right;
+                    far = left;
+                    t_far = _e71;
+                }
+                uint _e92 = sp_1;
+                if ((_e92 < BLAS_STACK)) {
+                    uint _e96 = sp_1;
+                    uint _e98 = far;
+                    float _e99 = t_far;
+                    traversal_stack[min((TLAS_STACK + _e96), 127u)] = uvec2(_e98, floatBitsToUint(_e99));
+                    uint _e106 = sp_1;
+                    sp_1 = (_e106 + 1u);
+                }
+                uint _e109 = near;
+                node = _e109;
+                continue;
+            }
+            uint _e111 = F32_INF;
+            if ((_e71 < uintBitsToFloat(_e111))) {
+                node = left;
+                continue;
+            }
+            uint _e115 = F32_INF;
+            if ((_e78 < uintBitsToFloat(_e115))) {
+                node = right;
+                continue;
+            }
+        }
+        uint _e119 = sp_1;
+        float _e121 = best.t;
+        uvec2 _e122 = pop_within(TLAS_STACK, _e119, _e121);
+        if ((_e122.x == NO_HIT)) {
+            break;
+        }
+        node = _e122.x;
+        sp_1 = _e122.y;
+    }
+    Candidate _e128 = best;
+    return _e128;
+}
+
+Box load_Box(uint offset_2) {
+    uint _e5 = _group_0_binding_6_cs[(offset_2 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_2 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_2 + 2u)];
+    uint _e24 = _group_0_binding_6_cs[(offset_2 + 4u)];
+    uint _e30 = _group_0_binding_6_cs[(offset_2 + 5u)];
+    uint _e36 = _group_0_binding_6_cs[(offset_2 + 6u)];
+    return Box(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)));
+}
+
+Intersection box_intersect(Box b, Ray ray_4) {
+    float t_1 = 0.0;
+    uint axis = 0u;
+    float sign_ = 0.0;
+    vec3 n = vec3(0.0);
+    bvec3 tiny_1 = lessThan(abs(ray_4.dir), vec3(1e-30));
+    vec3 inv = (vec3(1.0) / mix(ray_4.dir, vec3(1e-30), tiny_1));
+    vec3 t_lo = ((b.min_ - ray_4.origin) * inv);
+    vec3 t_hi = ((b.max_ - ray_4.origin) * inv);
+    vec3 near_3 = min(t_lo, t_hi);
+    vec3 far_3 = max(t_lo, t_hi);
+    float entry = max(max(near_3.x, near_3.y), near_3.z);
+    float exit_1 = min(min(far_3.x, far_3.y), far_3.z);
+    if (!((entry <= exit_1))) {
+        uint _e37 = F32_INF;
+        return Intersection(uintBitsToFloat(_e37), vec3(0.0, 0.0, 1.0), vec2(0.0));
+    }
+    t_1 = entry;
+    axis = ((entry == near_3.x) ? 0u : ((entry == near_3.y) ? 1u : 2u));
+    sign_ = -1.0;
+    if (!((entry >= ray_4.tmin))) {
+        t_1 = exit_1;
+        axis = ((exit_1 == far_3.x) ? 0u : ((exit_1 == far_3.y) ? 1u : 2u));
+        sign_ = 1.0;
+    }
+    float _e71 = t_1;
+    float _e74 = t_1;
+    if (!(((_e71 >= ray_4.tmin) && (_e74 <= ray_4.tmax)))) {
+        uint _e80 = F32_INF;
+        return Intersection(uintBitsToFloat(_e80), vec3(0.0, 0.0, 1.0), vec2(0.0));
+    }
+    n = vec3(0.0);
+    uint _e91 = axis;
+    float _e95 = sign_;
+    uint _e99 = axis;
+    n[min(_e91, 2u)] = (_e95 * ((ray_4.dir[min(_e99, 2u)] >= 0.0) ? 1.0 : -1.0));
+    float _e109 = t_1;
+    vec3 rel = (((ray_4.origin + (ray_4.dir * vec3(_e109))) - b.min_) / max((b.max_ - b.min_), vec3(1e-30)));
+    uint _e124 = axis;
+    uint _e129 = axis;
+    vec2 uv = ((_e129 == 0u) ? rel.zy : ((_e124 == 1u) ? rel.xz : rel.xy));
+    float _e133 = t_1;
+    vec3 _e134 = n;
+    return Intersection(_e133, _e134, uv);
+}
+
+Sphere load_Sphere(uint offset_3) {
+    uint _e5 = _group_0_binding_6_cs[(offset_3 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_3 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_3 + 2u)];
+    uint _e24 = _group_0_binding_6_cs[(offset_3 + 3u)];
+    return Sphere(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24));
+}
+
+Intersection sphere_intersect(Sphere s, Ray ray_5) {
+    float t_2 = 0.0;
+    vec3 f_1 = (ray_5.origin - s.center);
+    float a_1 = dot(ray_5.dir, ray_5.dir);
+    float b_3 = -(dot(f_1, ray_5.dir));
+    vec3 l_5 = (f_1 + (ray_5.dir * vec3((b_3 / a_1))));
+    float r2_ = (s.radius * s.radius);
+    float disc = (a_1 * (r2_ - dot(l_5, l_5)));
+    if ((!((disc >= 0.0)) || !((a_1 > 0.0)))) {
+        uint _e30 = F32_INF;
+        return Intersection(uintBitsToFloat(_e30), vec3(0.0, 0.0, 1.0), vec2(0.0));
+    }
+    float q = (b_3 + (((b_3 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
+    float t0_1 = ((dot(f_1, f_1) - r2_) / q);
+    float t1_1 = (q / a_1);
+    t_2 = min(t0_1, t1_1);
+    float _e52 = t_2;
+    if (!((_e52 >= ray_5.tmin))) {
+        t_2 = max(t0_1, t1_1);
+    }
+    float _e57 = t_2;
+    float _e60 = t_2;
+    if (!(((_e57 >= ray_5.tmin) && (_e60 <= ray_5.tmax)))) {
+        uint _e66 = F32_INF;
+        return Intersection(uintBitsToFloat(_e66), vec3(0.0, 0.0, 1.0), vec2(0.0));
+    }
+    float _e76 = t_2;
+    vec3 _e82 = normalize_vec3f(((ray_5.origin + (ray_5.dir * vec3(_e76))) - s.center));
+    float u_1 = (((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (atan(_e82.z, -(_e82.x)) / TAU)));
+    vec2 uv_1 = vec2(u_1, (acos(min(max(_e82.y, -1.0), 1.0)) * INV_PI));
+    float _e109 = t_2;
+    return Intersection(_e109, _e82, uv_1);
+}
+
+Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_6) {
+    switch(type_id_1) {
+        case 0u: {
+            Box _e3 = load_Box(offset_4);
+            Intersection _e4 = box_intersect(_e3, ray_6);
+            return _e4;
+        }
+        case 1u: {
+            Sphere _e5 = load_Sphere(offset_4);
+            Intersection _e6 = sphere_intersect(_e5, ray_6);
+            return _e6;
+        }
+        default: {
+            break;
+        }
+    }
+    return Intersection(0.0, vec3(0.0), vec2(0.0));
+}
+
+Candidate intersect_object(uint slot_2, Ray ray_7, Candidate best_1, bool shadow_1) {
+    Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    GpuInstance inst_5 = _group_0_binding_3_cs[slot_2];
+    Ray _e7 = to_object(inst_5, ray_7);
+    r_2 = _e7;
+    r_2.tmax = best_1.t;
+    if ((inst_5.geometry_type == MESH_GEOMETRY)) {
+        Ray _e14 = r_2;
+        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_7, _e14, best_1, shadow_1);
+        return _e15;
+    }
+    Ray _e18 = r_2;
+    Intersection _e19 = dispatch_intersection(inst_5.geometry_type, inst_5.geometry_offset, _e18);
+    float _e22 = r_2.tmin;
+    float _e26 = r_2.tmax;
+    uint _e31 = F32_INF;
+    if ((((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < uintBitsToFloat(_e31)))) {
+        Candidate c_6 = Candidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
+        bool _e40 = accept(inst_5, ray_7, c_6);
+        if (_e40) {
+            return c_6;
+        }
+    }
+    return best_1;
+}
+
+Triangle load_triangle(uint slot_3) {
+    vec4 v0_ = _group_0_binding_4_cs[(slot_3 * 3u)];
+    vec4 v1_ = _group_0_binding_4_cs[((slot_3 * 3u) + 1u)];
+    vec4 v2_ = _group_0_binding_4_cs[((slot_3 * 3u) + 2u)];
+    return Triangle(v0_.xyz, v1_.xyz, v2_.xyz);
+}
+
+vec3 point_to_world(GpuInstance inst_3, vec3 p) {
+    vec4 q_1 = vec4(p, 1.0);
+    return vec3(dot(inst_3.object_to_world_0_, q_1), dot(inst_3.object_to_world_1_, q_1), dot(inst_3.object_to_world_2_, q_1));
+}
+
+vec3 decode_octahedral(uint bits) {
+    vec3 n_1 = vec3(0.0);
+    vec2 e_1 = unpackSnorm2x16(bits);
+    n_1 = vec3(e_1.x, e_1.y, ((1.0 - abs(e_1.x)) - abs(e_1.y)));
+    float _e14 = n_1.z;
+    if ((_e14 < 0.0)) {
+        vec3 _e21 = n_1;
+        vec2 s_4 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
+        vec3 _e29 = n_1;
+        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_4);
+        float _e37 = n_1.z;
+        n_1 = vec3(xy.x, xy.y, _e37);
+    }
+    vec3 _e39 = n_1;
+    vec3 _e40 = normalize_vec3f(_e39);
+    return _e40;
+}
+
+vec3 normal_to_world(GpuInstance inst_4, vec3 n_2) {
+    vec3 w_1 = (((inst_4.world_to_object_0_.xyz * vec3(n_2.x)) + (inst_4.world_to_object_1_.xyz * vec3(n_2.y))) + (inst_4.world_to_object_2_.xyz * vec3(n_2.z)));
+    vec3 _e19 = normalize_vec3f(w_1);
+    return _e19;
+}
+
+Hit finish_hit(Ray ray_8, Candidate c_1) {
+    Hit hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
+    vec3 n_geo = vec3(0.0);
+    vec3 n_shade = vec3(0.0);
+    GpuInstance inst_6 = _group_0_binding_3_cs[c_1.slot];
+    hit = Hit((ray_8.origin + (ray_8.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_6.object, c_1.primitive);
+    n_geo = c_1.normal;
+    n_shade = c_1.normal;
+    if ((inst_6.geometry_type == MESH_GEOMETRY)) {
+        Triangle _e35 = load_triangle(c_1.primitive);
+        vec2 b_4 = c_1.uv;
+        float w_2 = ((1.0 - b_4.x) - b_4.y);
+        vec3 _e56 = point_to_world(inst_6, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_4.x))) + (_e35.v2_ * vec3(b_4.y))));
+        hit.position = _e56;
+        n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
+        uvec4 a0_ = _group_0_binding_5_cs[(c_1.primitive * 2u)];
+        uvec4 a1_ = _group_0_binding_5_cs[((c_1.primitive * 2u) + 1u)];
+        vec3 _e79 = decode_octahedral(a0_.x);
+        vec3 _e83 = decode_octahedral(a0_.y);
+        vec3 _e89 = decode_octahedral(a0_.z);
+        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_4.x))) + (_e89 * vec3(b_4.y)));
+        vec3 _e94 = n_shade;
+        vec3 _e95 = n_shade;
+        if ((dot(_e94, _e95) < 1e-12)) {
+            vec3 _e99 = n_geo;
+            n_shade = _e99;
+        }
+        vec2 uv0_ = unpackHalf2x16(a0_.w);
+        vec2 uv1_ = unpackHalf2x16(a1_.x);
+        vec2 uv2_ = unpackHalf2x16(a1_.y);
+        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_4.x))) + (uv2_ * vec2(b_4.y)));
+        vec4 _e123 = _group_0_binding_4_cs[(c_1.primitive * 3u)];
+        hit.primitive = floatBitsToUint(_e123.w);
+    }
+    vec3 _e127 = n_geo;
+    vec3 _e128 = normal_to_world(inst_6, _e127);
+    hit.geometric_normal = _e128;
+    vec3 _e130 = n_shade;
+    vec3 _e131 = normal_to_world(inst_6, _e130);
+    hit.normal = _e131;
+    vec3 _e135 = hit.geometric_normal;
+    hit.front_face = (dot(ray_8.dir, _e135) < 0.0);
+    Hit _e139 = hit;
+    return _e139;
+}
+
+uint medium_at(vec3 p_1, uint exclude) {
+    uint inside = 0u;
+    float nearest = 0.0;
+    uint i = 0u;
+    if (!(HAS_MEDIA)) {
+        return 0u;
+    }
+    FrameUniforms frame_1 = _group_0_binding_0_cs;
+    vec3 _e12 = normalize_vec3f(vec3(0.5773, 0.5774, 0.5775));
+    uint _e14 = F32_INF;
+    Ray probe = Ray(p_1, 0.0, _e12, uintBitsToFloat(_e14), 0u, 0u, 0u);
+    inside = 0u;
+    uint _e23 = F32_INF;
+    nearest = uintBitsToFloat(_e23);
+    uint end = frame_1.medium_count;
+    i = 0u;
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            uint _e57 = i;
+            i = (_e57 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e29 = i;
+        if ((_e29 >= end)) {
+            break;
+        }
+        uint _e32 = i;
+        uint slot_4 = _group_0_binding_6_cs[(frame_1.medium_table + _e32)];
+        if ((slot_4 != exclude)) {
+            uint _e39 = F32_INF;
+            Candidate _e41 = no_candidate(uintBitsToFloat(_e39));
+            Candidate _e43 = intersect_object(slot_4, probe, _e41, false);
+            float _e48 = nearest;
+            if (((_e43.slot != NO_HIT) && (_e43.t < _e48))) {
+                Hit _e51 = finish_hit(probe, _e43);
+                if (!(_e51.front_face)) {
+                    inside = (slot_4 + 1u);
+                    nearest = _e43.t;
+                }
+            }
+        }
+    }
+    uint _e60 = inside;
+    return _e60;
+}
+
+Candidate intersect_scene(Ray ray_9, bool shadow_2) {
+    Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
+    uint sp_2 = 0u;
+    uint node_1 = 0u;
+    uint k_1 = 0u;
+    uint near_1 = 0u;
+    uint far_1 = 0u;
+    float t_far_1 = 0.0;
+    uint _e3 = ray_count;
+    ray_count = (_e3 + 1u);
+    Candidate _e7 = no_candidate(ray_9.tmax);
+    best_2 = _e7;
+    FrameUniforms frame_2 = _group_0_binding_0_cs;
+    if ((frame_2.instance_count == 0u)) {
+        Candidate _e14 = best_2;
+        return _e14;
+    }
+    vec3 _e16 = safe_inverse(ray_9.dir);
+    sp_2 = 0u;
+    node_1 = frame_2.tlas_root;
+    uint _e21 = node_1;
+    GpuNode root = _group_0_binding_2_cs[_e21];
+    float _e30 = best_2.t;
+    float _e31 = slab(root.min_, root.max_, ray_9.origin, _e16, ray_9.tmin, _e30);
+    uint _e33 = F32_INF;
+    if ((_e31 == uintBitsToFloat(_e33))) {
+        Candidate _e36 = best_2;
+        return _e36;
+    }
+    while(true) {
+        uint _e37 = node_1;
+        GpuNode n_8 = _group_0_binding_2_cs[_e37];
+        if (((n_8.b & LEAF_BIT) != 0u)) {
+            uint count_1 = (n_8.b & ~(LEAF_BIT));
+            k_1 = 0u;
+            bool loop_init_2 = true;
+            while(true) {
+                if (!loop_init_2) {
+                    uint _e65 = k_1;
+                    k_1 = (_e65 + 1u);
+                }
+                loop_init_2 = false;
+                uint _e52 = k_1;
+                if ((_e52 >= count_1)) {
+                    break;
+                }
+                uint _e55 = k_1;
+                Candidate _e57 = best_2;
+                Candidate _e58 = intersect_object((n_8.a + _e55), ray_9, _e57, shadow_2);
+                best_2 = _e58;
+                uint _e60 = best_2.slot;
+                if ((shadow_2 && (_e60 != NO_HIT))) {
+                    Candidate _e64 = best_2;
+                    return _e64;
+                }
+            }
+        } else {
+            uint left_1 = (frame_2.tlas_root + n_8.a);
+            uint right_1 = (left_1 + 1u);
+            GpuNode l_6 = _group_0_binding_2_cs[left_1];
+            GpuNode rr_1 = _group_0_binding_2_cs[right_1];
+            float _e84 = best_2.t;
+            float _e85 = slab(l_6.min_, l_6.max_, ray_9.origin, _e16, ray_9.tmin, _e84);
+            float _e91 = best_2.t;
+            float _e92 = slab(rr_1.min_, rr_1.max_, ray_9.origin, _e16, ray_9.tmin, _e91);
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if (((_e85 < uintBitsToFloat(_e94)) && (_e92 < uintBitsToFloat(_e98)))) {
+                near_1 = left_1;
+                far_1 = right_1;
+                t_far_1 = _e92;
+                if ((_e92 < _e85)) {
+                    near_1 = right_1;
+                    far_1 = left_1;
+                    t_far_1 = _e85;
+                }
+                uint _e106 = sp_2;
+                if ((_e106 < TLAS_STACK)) {
+                    uint _e109 = sp_2;
+                    uint _e110 = far_1;
+                    float _e111 = t_far_1;
+                    traversal_stack[min(_e109, 127u)] = uvec2(_e110, floatBitsToUint(_e111));
+                    uint _e118 = sp_2;
+                    sp_2 = (_e118 + 1u);
+                }
+                uint _e121 = near_1;
+                node_1 = _e121;
+                continue;
+            }
+            uint _e123 = F32_INF;
+            if ((_e85 < uintBitsToFloat(_e123))) {
+                node_1 = left_1;
+                continue;
+            }
+            uint _e127 = F32_INF;
+            if ((_e92 < uintBitsToFloat(_e127))) {
+                node_1 = right_1;
+                continue;
+            }
+        }
+        uint _e131 = sp_2;
+        float _e133 = best_2.t;
+        uvec2 _e134 = pop_within(0u, _e131, _e133);
+        if ((_e134.x == NO_HIT)) {
+            break;
+        }
+        node_1 = _e134.x;
+        sp_2 = _e134.y;
+    }
+    Candidate _e140 = best_2;
+    return _e140;
+}
+
+ConstantBackground load_ConstantBackground(uint offset_5) {
+    uint _e5 = _group_0_binding_6_cs[(offset_5 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_5 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_5 + 2u)];
+    return ConstantBackground(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
+}
+
+vec3 constant_background(ConstantBackground b_1, Ray ray_10) {
+    return b_1.color;
+}
+
+vec3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_11) {
+    ConstantBackground _e2 = load_ConstantBackground(offset_6);
+    vec3 _e3 = constant_background(_e2, ray_11);
+    return _e3;
+}
+
+vec3 miss(Ray ray_12) {
+    if (!(HAS_BACKGROUND)) {
+        return vec3(0.0);
+    }
+    FrameUniforms frame_3 = _group_0_binding_0_cs;
+    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_12);
+    return _e9;
+}
+
+vec3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_13, float t_3, vec3 radiance) {
+    return vec3(0.0);
+}
+
+vec3 through_medium(Ray ray_14, float t_4, vec3 radiance_1) {
+    if (!(HAS_MEDIA)) {
+        return radiance_1;
+    }
+    if ((ray_14.medium == 0u)) {
+        return radiance_1;
+    }
+    GpuInstance inst_7 = _group_0_binding_3_cs[(ray_14.medium - 1u)];
+    if (((inst_7.flags & FLAG_MEDIUM) == 0u)) {
+        return radiance_1;
+    }
+    vec3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_14, t_4, radiance_1);
+    return _e21;
+}
+
+Lambert load_Lambert(uint offset_8) {
+    uint _e5 = _group_0_binding_6_cs[(offset_8 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_8 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_8 + 2u)];
+    return Lambert(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
+}
+
+uint light_count_query() {
+    FrameUniforms _e1 = _group_0_binding_0_cs;
+    return _e1.light_count;
+}
+
+DirectionalLight load_DirectionalLight(uint offset_9) {
+    uint _e5 = _group_0_binding_6_cs[(offset_9 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_9 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_9 + 2u)];
+    uint _e24 = _group_0_binding_6_cs[(offset_9 + 4u)];
+    uint _e30 = _group_0_binding_6_cs[(offset_9 + 5u)];
+    uint _e36 = _group_0_binding_6_cs[(offset_9 + 6u)];
+    uint _e43 = _group_0_binding_6_cs[(offset_9 + 7u)];
+    return DirectionalLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43));
+}
+
+vec3 offset_origin(vec3 p_2, vec3 n_3) {
+    FrameUniforms _e3 = _group_0_binding_0_cs;
+    GpuNode root_1 = _group_0_binding_2_cs[_e3.tlas_root];
+    vec3 a_2 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
+    float m_1 = max(max(a_2.x, a_2.y), a_2.z);
+    return (p_2 + (n_3 * vec3((m_1 * (1.0 / 65536.0)))));
+}
+
+float shadow_query(vec3 position, vec3 normal, vec3 dir, float dist) {
+    vec3 n_4 = vec3(0.0);
+    n_4 = normal;
+    vec3 _e5 = n_4;
+    if ((dot(dir, _e5) < 0.0)) {
+        vec3 _e9 = n_4;
+        n_4 = -(_e9);
+    }
+    vec3 _e11 = n_4;
+    vec3 _e12 = offset_origin(position, _e11);
+    Ray ray_21 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    Candidate _e23 = intersect_scene(ray_21, true);
+    return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
+}
+
+LightSample directional_light(DirectionalLight l, vec3 position_1, vec3 normal_1) {
+    vec3 _e4 = normalize_vec3f(l.direction);
+    vec3 dir_2 = -(_e4);
+    if ((dot(dir_2, dir_2) == 0.0)) {
+        uint _e14 = F32_INF;
+        return LightSample(vec3(0.0, 1.0, 0.0), uintBitsToFloat(_e14), vec3(0.0));
+    }
+    uint _e20 = F32_INF;
+    float _e22 = shadow_query(position_1, normal_1, dir_2, uintBitsToFloat(_e20));
+    uint _e24 = F32_INF;
+    return LightSample(dir_2, uintBitsToFloat(_e24), ((l.color * vec3(l.intensity)) * vec3(_e22)));
+}
+
+PointLight load_PointLight(uint offset_10) {
+    uint _e5 = _group_0_binding_6_cs[(offset_10 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_10 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_10 + 2u)];
+    uint _e24 = _group_0_binding_6_cs[(offset_10 + 4u)];
+    uint _e30 = _group_0_binding_6_cs[(offset_10 + 5u)];
+    uint _e36 = _group_0_binding_6_cs[(offset_10 + 6u)];
+    uint _e43 = _group_0_binding_6_cs[(offset_10 + 7u)];
+    uint _e49 = _group_0_binding_6_cs[(offset_10 + 8u)];
+    uint _e55 = _group_0_binding_6_cs[(offset_10 + 9u)];
+    return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
+}
+
+LightSample point_light(PointLight l_1, vec3 position_2, vec3 normal_2) {
+    float strength = 0.0;
+    vec3 to_light = (l_1.position - position_2);
+    float dist_1 = length(to_light);
+    vec3 dir_3 = (to_light / vec3(max(dist_1, 1e-20)));
+    strength = (l_1.intensity / max((dist_1 * dist_1), 1e-20));
+    if ((l_1.range > 0.0)) {
+        float _e19 = strength;
+        strength = (_e19 * (1.0 - smoothstep(l_1.inner_range, l_1.range, dist_1)));
+    }
+    float _e26 = shadow_query(position_2, normal_2, dir_3, dist_1);
+    float _e28 = strength;
+    return LightSample(dir_3, dist_1, ((l_1.color * vec3(_e28)) * vec3(_e26)));
+}
+
+SphereLight load_SphereLight(uint offset_11) {
+    uint _e5 = _group_0_binding_6_cs[(offset_11 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_11 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_11 + 2u)];
+    uint _e24 = _group_0_binding_6_cs[(offset_11 + 3u)];
+    uint _e30 = _group_0_binding_6_cs[(offset_11 + 4u)];
+    uint _e36 = _group_0_binding_6_cs[(offset_11 + 5u)];
+    uint _e42 = _group_0_binding_6_cs[(offset_11 + 6u)];
+    uint _e49 = _group_0_binding_6_cs[(offset_11 + 7u)];
+    return SphereLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24), vec3(uintBitsToFloat(_e30), uintBitsToFloat(_e36), uintBitsToFloat(_e42)), uintBitsToFloat(_e49));
+}
+
+mat3x3 orthonormal_basis(vec3 n_5) {
+    float sign_1 = (((floatBitsToUint(n_5.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
+    float a_3 = (-1.0 / (sign_1 + n_5.z));
+    float b_5 = ((n_5.x * n_5.y) * a_3);
+    float _e16 = (sign_1 * n_5.x);
+    return mat3x3(vec3((1.0 + ((_e16 * n_5.x) * a_3)), (sign_1 * b_5), -(_e16)), vec3(b_5, (sign_1 + ((n_5.y * n_5.y) * a_3)), -(n_5.y)), n_5);
+}
+
+LightSample sphere_light(SphereLight l_2, vec3 position_3, vec3 normal_3) {
+    vec3 to_center = (l_2.position - position_3);
+    float d2_ = dot(to_center, to_center);
+    float r2_1 = max((l_2.radius * l_2.radius), 1e-20);
+    if ((d2_ <= r2_1)) {
+        return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0));
+    }
+    vec3 w_3 = (to_center * vec3(inversesqrt(d2_)));
+    float s2_ = (r2_1 / d2_);
+    float cos_max = sqrt((1.0 - s2_));
+    float one_minus_cos_max = (s2_ / (1.0 + cos_max));
+    vec2 _e30 = rand2_next();
+    float cos_t = (1.0 - (_e30.x * one_minus_cos_max));
+    float sin_t = sqrt(max((1.0 - (cos_t * cos_t)), 0.0));
+    float phi = (TAU * _e30.y);
+    mat3x3 _e44 = orthonormal_basis(w_3);
+    vec3 _e51 = normalize_vec3f((_e44 * vec3((cos(phi) * sin_t), (sin(phi) * sin_t), cos_t)));
+    float along = dot(to_center, _e51);
+    float dist_2 = max((along - sqrt(max((r2_1 - (d2_ - (along * along))), 0.0))), 0.0);
+    float weight = (((l_2.intensity * 2.0) * one_minus_cos_max) / r2_1);
+    float _e67 = shadow_query(position_3, normal_3, _e51, dist_2);
+    return LightSample(_e51, dist_2, ((l_2.color * vec3(weight)) * vec3(_e67)));
+}
+
+SpotLight load_SpotLight(uint offset_12) {
+    uint _e5 = _group_0_binding_6_cs[(offset_12 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_12 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_12 + 2u)];
+    uint _e24 = _group_0_binding_6_cs[(offset_12 + 4u)];
+    uint _e30 = _group_0_binding_6_cs[(offset_12 + 5u)];
+    uint _e36 = _group_0_binding_6_cs[(offset_12 + 6u)];
+    uint _e43 = _group_0_binding_6_cs[(offset_12 + 8u)];
+    uint _e49 = _group_0_binding_6_cs[(offset_12 + 9u)];
+    uint _e55 = _group_0_binding_6_cs[(offset_12 + 10u)];
+    uint _e62 = _group_0_binding_6_cs[(offset_12 + 11u)];
+    uint _e68 = _group_0_binding_6_cs[(offset_12 + 12u)];
+    uint _e74 = _group_0_binding_6_cs[(offset_12 + 13u)];
+    uint _e80 = _group_0_binding_6_cs[(offset_12 + 14u)];
+    return SpotLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)), uintBitsToFloat(_e62), uintBitsToFloat(_e68), uintBitsToFloat(_e74), uintBitsToFloat(_e80));
+}
+
+LightSample spot_light(SpotLight l_3, vec3 position_4, vec3 normal_4) {
+    float strength_1 = 0.0;
+    vec3 to_light_1 = (l_3.position - position_4);
+    float dist_3 = length(to_light_1);
+    vec3 dir_4 = (to_light_1 / vec3(max(dist_3, 1e-20)));
+    strength_1 = (l_3.intensity / max((dist_3 * dist_3), 1e-20));
+    if ((l_3.range > 0.0)) {
+        float _e19 = strength_1;
+        strength_1 = (_e19 * (1.0 - smoothstep(0.0, l_3.range, dist_3)));
+    }
+    float cos_inner = cos(radians(min(max(l_3.inner_angle, 0.0), 180.0)));
+    float cos_outer = min(cos(radians(min(max(l_3.outer_angle, 0.0), 180.0))), (cos_inner - 0.0001));
+    float _e43 = strength_1;
+    vec3 _e46 = normalize_vec3f(l_3.direction);
+    strength_1 = (_e43 * smoothstep(cos_outer, cos_inner, dot(-(dir_4), _e46)));
+    float _e50 = strength_1;
+    if ((_e50 <= 0.0)) {
+        return LightSample(dir_4, dist_3, vec3(0.0));
+    }
+    float _e56 = shadow_query(position_4, normal_4, dir_4, dist_3);
+    float _e58 = strength_1;
+    return LightSample(dir_4, dist_3, ((l_3.color * vec3(_e58)) * vec3(_e56)));
+}
+
+LightSample dispatch_light(uint type_id_4, uint offset_13, vec3 position_5, vec3 normal_5) {
+    switch(type_id_4) {
+        case 0u: {
+            DirectionalLight _e4 = load_DirectionalLight(offset_13);
+            LightSample _e5 = directional_light(_e4, position_5, normal_5);
+            return _e5;
+        }
+        case 1u: {
+            PointLight _e6 = load_PointLight(offset_13);
+            LightSample _e7 = point_light(_e6, position_5, normal_5);
+            return _e7;
+        }
+        case 2u: {
+            SphereLight _e8 = load_SphereLight(offset_13);
+            LightSample _e9 = sphere_light(_e8, position_5, normal_5);
+            return _e9;
+        }
+        case 3u: {
+            SpotLight _e10 = load_SpotLight(offset_13);
+            LightSample _e11 = spot_light(_e10, position_5, normal_5);
+            return _e11;
+        }
+        default: {
+            break;
+        }
+    }
+    return LightSample(vec3(0.0), 0.0, vec3(0.0));
+}
+
+LightSample sample_light_query(uint i_1, vec3 position_6, vec3 normal_6) {
+    FrameUniforms frame_4 = _group_0_binding_0_cs;
+    if ((i_1 >= frame_4.light_count)) {
+        return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0));
+    }
+    uint entry_1 = (frame_4.light_table + (i_1 * 2u));
+    uint _e21 = _group_0_binding_6_cs[entry_1];
+    uint _e26 = _group_0_binding_6_cs[(entry_1 + 1u)];
+    LightSample _e27 = dispatch_light(_e21, _e26, position_6, normal_6);
+    return _e27;
+}
+
+vec3 lambert_shade(Lambert m, Ray ray_15, Hit hit_1) {
+    vec3 color = vec3(0.0);
+    uint i_2 = 0u;
+    vec3 n_9 = faceforward(hit_1.normal, ray_15.dir, hit_1.normal);
+    color = vec3(0.0);
+    uint _e11 = light_count_query();
+    i_2 = 0u;
+    bool loop_init_3 = true;
+    while(true) {
+        if (!loop_init_3) {
+            uint _e33 = i_2;
+            i_2 = (_e33 + 1u);
+        }
+        loop_init_3 = false;
+        uint _e13 = i_2;
+        if ((_e13 >= _e11)) {
+            break;
+        }
+        uint _e15 = i_2;
+        LightSample _e18 = sample_light_query(_e15, hit_1.position, hit_1.geometric_normal);
+        vec3 _e19 = color;
+        color = (_e19 + (((m.albedo * vec3(INV_PI)) * _e18.radiance) * vec3(max(dot(n_9, _e18.dir), 0.0))));
+    }
+    vec3 _e36 = color;
+    return _e36;
+}
+
+vec3 dispatch_closest_hit(uint type_id_5, uint offset_14, Ray ray_16, Hit hit_2, vec3 secondary) {
+    Lambert _e3 = load_Lambert(offset_14);
+    vec3 _e4 = lambert_shade(_e3, ray_16, hit_2);
+    return _e4;
+}
+
+vec3 shade_direct(Ray ray_17, Candidate c_2) {
+    GpuInstance inst_8 = _group_0_binding_3_cs[c_2.slot];
+    Hit _e6 = finish_hit(ray_17, c_2);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e6, vec3(0.0));
+    return _e11;
+}
+
+void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_18, Hit hit_3) {
+    return;
+}
+
+vec3 spawn_origin(Hit hit_4, vec3 dir_1) {
+    vec3 n_6 = vec3(0.0);
+    n_6 = hit_4.geometric_normal;
+    vec3 _e4 = n_6;
+    if ((dot(dir_1, _e4) < 0.0)) {
+        vec3 _e8 = n_6;
+        n_6 = -(_e8);
+    }
+    vec3 _e11 = n_6;
+    vec3 _e12 = offset_origin(hit_4.position, _e11);
+    return _e12;
+}
+
+vec3 trace(Ray camera_ray) {
+    Frame stack[4] = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
+    uint depth = 0u;
+    Ray ray_19 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    vec3 value = vec3(0.0);
+    bool have_value = false;
+    bool pushed = false;
+    Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
+    uint i_3 = 0u;
+    uint medium = 0u;
+    if (!(HAS_SECONDARY_RAYS)) {
+        Candidate _e4 = intersect_scene(camera_ray, false);
+        if ((_e4.slot == NO_HIT)) {
+            uint _e9 = F32_INF;
+            vec3 _e11 = miss(camera_ray);
+            vec3 _e12 = through_medium(camera_ray, uintBitsToFloat(_e9), _e11);
+            return _e12;
+        }
+        vec3 _e14 = shade_direct(camera_ray, _e4);
+        vec3 _e15 = through_medium(camera_ray, _e4.t, _e14);
+        return _e15;
+    }
+    stack = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
+    depth = 0u;
+    ray_19 = camera_ray;
+    value = vec3(0.0);
+    have_value = false;
+    while(true) {
+        bool _e26 = have_value;
+        if (!(_e26)) {
+            Ray _e28 = ray_19;
+            Candidate _e30 = intersect_scene(_e28, false);
+            if ((_e30.slot == NO_HIT)) {
+                Ray _e34 = ray_19;
+                uint _e36 = F32_INF;
+                Ray _e38 = ray_19;
+                vec3 _e39 = miss(_e38);
+                vec3 _e40 = through_medium(_e34, uintBitsToFloat(_e36), _e39);
+                value = _e40;
+                have_value = true;
+            } else {
+                GpuInstance inst_9 = _group_0_binding_3_cs[_e30.slot];
+                Ray _e46 = ray_19;
+                Hit _e47 = finish_hit(_e46, _e30);
+                pushed = false;
+                uint _e56 = ray_19.depth;
+                uint _e60 = depth;
+                if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
+                    spawn_count = 0u;
+                    Ray _e68 = ray_19;
+                    dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
+                    uint _e70 = spawn_count;
+                    uint n_10 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_10 > 0u)) {
+                        Ray _e77 = ray_19;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_10, 0u);
+                        i_3 = 0u;
+                        bool loop_init_4 = true;
+                        while(true) {
+                            if (!loop_init_4) {
+                                uint _e108 = i_3;
+                                i_3 = (_e108 + 1u);
+                            }
+                            loop_init_4 = false;
+                            uint _e88 = i_3;
+                            if ((_e88 >= n_10)) {
+                                break;
+                            }
+                            uint _e91 = i_3;
+                            uint _e95 = i_3;
+                            vec3 _e98 = spawn_dirs[_e95];
+                            f.dirs[min(_e91, 0u)] = _e98;
+                            uint _e100 = i_3;
+                            uint _e104 = i_3;
+                            vec3 _e107 = spawn_weights[_e104];
+                            f.weights[min(_e100, 0u)] = _e107;
+                        }
+                        uint _e111 = depth;
+                        Frame _e115 = f;
+                        stack[min(_e111, 3u)] = _e115;
+                        uint _e116 = depth;
+                        depth = (_e116 + 1u);
+                        pushed = true;
+                    }
+                }
+                bool _e120 = pushed;
+                if (!(_e120)) {
+                    Ray _e124 = ray_19;
+                    vec3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0.0));
+                    Ray _e128 = ray_19;
+                    vec3 _e130 = through_medium(_e128, _e30.t, _e127);
+                    value = _e130;
+                    have_value = true;
+                }
+            }
+        }
+        bool _e132 = have_value;
+        if (_e132) {
+            uint _e133 = depth;
+            if ((_e133 == 0u)) {
+                vec3 _e136 = value;
+                return _e136;
+            }
+            uint _e137 = depth;
+            uint top = (_e137 - 1u);
+            uint _e144 = stack[min(top, 3u)].next;
+            uint child = (_e144 - 1u);
+            vec3 _e151 = stack[min(top, 3u)].sum;
+            vec3 _e159 = stack[min(top, 3u)].weights[min(child, 0u)];
+            vec3 _e160 = value;
+            stack[min(top, 3u)].sum = (_e151 + (_e159 * _e160));
+            have_value = false;
+        }
+        uint _e164 = depth;
+        uint top_1 = (_e164 - 1u);
+        uint _e171 = stack[min(top_1, 3u)].next;
+        uint _e176 = stack[min(top_1, 3u)].count;
+        if ((_e171 < _e176)) {
+            uint i_4 = stack[min(top_1, 3u)].next;
+            stack[min(top_1, 3u)].next = (i_4 + 1u);
+            Ray parent = stack[min(top_1, 3u)].ray;
+            Hit hit_6 = stack[min(top_1, 3u)].hit;
+            vec3 dir_5 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
+            medium = parent.medium;
+            vec3 _e209 = spawn_origin(hit_6, dir_5);
+            uint _e212 = F32_INF;
+            uint _e218 = medium;
+            ray_19 = Ray(_e209, 0.0, dir_5, uintBitsToFloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+        } else {
+            uint _e224 = stack[min(top_1, 3u)].slot;
+            GpuInstance inst_10 = _group_0_binding_3_cs[_e224];
+            Ray _e234 = stack[min(top_1, 3u)].ray;
+            Hit _e239 = stack[min(top_1, 3u)].hit;
+            vec3 _e244 = stack[min(top_1, 3u)].sum;
+            vec3 _e245 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e234, _e239, _e244);
+            Ray _e250 = stack[min(top_1, 3u)].ray;
+            float _e256 = stack[min(top_1, 3u)].hit.t;
+            vec3 _e257 = through_medium(_e250, _e256, _e245);
+            value = _e257;
+            depth = top_1;
+            have_value = true;
+        }
+    }
+    return vec3(0.0);
+}
+
+bvec3 is_finite_vec3f(vec3 x_1) {
+    return lessThan((floatBitsToUint(x_1) & uvec3(2147483647u)), uvec3(2139095040u));
+}
+
+vec3 finite_or_zero(vec3 c_3) {
+    bvec3 _e3 = is_finite_vec3f(c_3);
+    return mix(vec3(0.0), c_3, _e3);
+}
+
+void render_pixel(uvec2 pixel_3) {
+    vec3 sum = vec3(0.0);
+    uint bad = 0u;
+    uint s_1 = 0u;
+    Ray ray_20 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    FrameUniforms frame_5 = _group_0_binding_0_cs;
+    TileParams tile_1 = _group_0_binding_1_cs;
+    sum = vec3(0.0);
+    bad = 0u;
+    uint end_1 = frame_5.samples_per_pass;
+    s_1 = 0u;
+    bool loop_init_5 = true;
+    while(true) {
+        if (!loop_init_5) {
+            uint _e46 = s_1;
+            s_1 = (_e46 + 1u);
+        }
+        loop_init_5 = false;
+        uint _e13 = s_1;
+        if ((_e13 >= end_1)) {
+            break;
+        }
+        uint _e18 = s_1;
+        uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_3, sample_3, frame_5.seed);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        ray_20 = _e23;
+        ray_20.depth = 0u;
+        ray_20.kind = RAY_CAMERA;
+        vec3 _e31 = ray_20.origin;
+        uint _e33 = medium_at(_e31, NO_HIT);
+        ray_20.medium = _e33;
+        Ray _e34 = ray_20;
+        vec3 _e35 = trace(_e34);
+        bvec3 _e36 = is_finite_vec3f(_e35);
+        if (all(_e36)) {
+            vec3 _e38 = sum;
+            sum = (_e38 + _e35);
+        } else {
+            vec3 _e40 = sum;
+            vec3 _e41 = finite_or_zero(_e35);
+            sum = (_e40 + _e41);
+            uint _e43 = bad;
+            bad = (_e43 + 1u);
+        }
+    }
+    vec3 _e55 = sum;
+    uint _e59 = bad;
+    vec4 _e62 = _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
+    _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e62 + vec4(_e55, float(frame_5.samples_per_pass)));
+    if ((_e59 > 0u)) {
+        atomicAdd(_group_0_binding_9_cs[0], _e59);
+    }
+    uint _e69 = ray_count;
+    atomicAdd(_group_0_binding_9_cs[1], _e69);
+    return;
+}
+
+void main() {
+    uvec3 gid = gl_GlobalInvocationID;
+    TileParams _e2 = _group_0_binding_1_cs;
+    uvec2 _e7 = uvec2(gid.x, gid.y);
+    if (any(greaterThanEqual(_e7, _e2.extent))) {
+        return;
+    }
+    render_pixel((_e2.origin + _e7));
+    return;
+}
+

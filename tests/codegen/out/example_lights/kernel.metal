@@ -1,0 +1,1899 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct _mslBufferSizes {
+    uint size3;
+    uint size5;
+    uint size6;
+    uint size7;
+    uint size9;
+    uint size14;
+    uint size15;
+};
+
+struct FrameUniforms {
+    uint samples_per_pass;
+    uint total_samples;
+    uint seed;
+    uint tlas_root;
+    uint instance_count;
+    uint light_count;
+    uint light_table;
+    uint medium_count;
+    uint medium_table;
+    uint camera_type;
+    uint camera_offset;
+    uint background_type;
+    uint background_offset;
+};
+struct TileParams {
+    metal::uint2 origin;
+    metal::uint2 extent;
+    metal::uint2 image_size;
+    uint tile_index;
+    uint frame;
+};
+struct Ray {
+    metal::packed_float3 origin;
+    float tmin;
+    metal::packed_float3 dir;
+    float tmax;
+    uint depth;
+    uint kind;
+    uint medium;
+    char _pad7[4];
+};
+typedef uint type_4[1];
+struct Pinhole {
+    metal::float3 position;
+    metal::float3 look_at;
+    metal::packed_float3 up;
+    float fov;
+};
+struct Candidate {
+    float t;
+    uint slot;
+    uint primitive;
+    char _pad3[4];
+    metal::float2 uv;
+    char _pad4[8];
+    metal::float3 normal;
+};
+struct GpuInstance {
+    metal::float4 world_to_object_0_;
+    metal::float4 world_to_object_1_;
+    metal::float4 world_to_object_2_;
+    metal::float4 object_to_world_0_;
+    metal::float4 object_to_world_1_;
+    metal::float4 object_to_world_2_;
+    uint geometry_type;
+    uint geometry_offset;
+    uint material_type;
+    uint material_offset;
+    uint blas_root;
+    uint triangle_offset;
+    uint flags;
+    uint object;
+};
+typedef GpuInstance type_8[1];
+struct TriangleRay {
+    metal::packed_float3 origin;
+    uint kx;
+    uint ky;
+    uint kz;
+    char _pad4[8];
+    metal::packed_float3 shear;
+    bool valid;
+    char _pad6[3];
+};
+struct GpuNode {
+    metal::packed_float3 min;
+    uint a;
+    metal::packed_float3 max;
+    uint b;
+};
+typedef GpuNode type_9[1];
+typedef metal::float4 type_10[1];
+struct type_11 {
+    metal::uint2 inner[128];
+};
+struct Box {
+    metal::float3 min;
+    metal::float3 max;
+};
+struct Intersection {
+    float t;
+    char _pad1[12];
+    metal::float3 normal;
+    metal::float2 uv;
+    char _pad3[8];
+};
+struct Sphere {
+    metal::packed_float3 center;
+    float radius;
+};
+struct Hit {
+    metal::packed_float3 position;
+    float t;
+    metal::float3 normal;
+    metal::float3 geometric_normal;
+    metal::float2 uv;
+    bool front_face;
+    char _pad6[3];
+    uint instance;
+    uint primitive;
+    char _pad8[12];
+};
+struct Triangle {
+    metal::float3 v0_;
+    metal::float3 v1_;
+    metal::float3 v2_;
+};
+typedef metal::uint4 type_13[1];
+struct ConstantBackground {
+    metal::float3 color;
+};
+struct Lambert {
+    metal::float3 albedo;
+};
+struct LightSample {
+    metal::packed_float3 dir;
+    float dist;
+    metal::float3 radiance;
+};
+struct DirectionalLight {
+    metal::float3 direction;
+    metal::packed_float3 color;
+    float intensity;
+};
+struct PointLight {
+    metal::float3 position;
+    metal::packed_float3 color;
+    float intensity;
+    float range;
+    float inner_range;
+    char _pad5[8];
+};
+struct SphereLight {
+    metal::packed_float3 position;
+    float radius;
+    metal::packed_float3 color;
+    float intensity;
+};
+struct SpotLight {
+    metal::float3 position;
+    metal::float3 direction;
+    metal::packed_float3 color;
+    float intensity;
+    float range;
+    float inner_angle;
+    float outer_angle;
+    char _pad7[4];
+};
+struct type_15 {
+    metal::float3 inner[1];
+};
+struct Frame {
+    Ray ray;
+    Hit hit;
+    uint slot;
+    char _pad3[12];
+    metal::float3 sum;
+    type_15 dirs;
+    type_15 weights;
+    uint count;
+    uint next;
+    char _pad8[8];
+};
+struct type_16 {
+    Frame inner[4];
+};
+typedef metal::atomic_uint type_19[1];
+constant uint RAY_CAMERA = 0u;
+constant uint NO_HIT = 4294967295u;
+constant bool HAS_MEDIA = false;
+constant uint MESH_GEOMETRY = 4294967295u;
+constant uint LEAF_BIT = 2147483648u;
+constant uint BLAS_STACK = 64u;
+constant uint TLAS_STACK = 64u;
+constant float TAU = 6.2831855;
+constant float INV_PI = 0.31830987;
+constant bool HAS_SECONDARY_RAYS = false;
+constant bool HAS_BACKGROUND = true;
+constant uint FLAG_MEDIUM = 4u;
+constant uint RAY_SHADOW = 2u;
+constant uint FLAG_SECONDARY = 2u;
+constant uint MAX_DEPTH = 4u;
+constant uint STACK_SIZE = 4u;
+constant uint MAX_SPAWN = 1u;
+constant uint RAY_SECONDARY = 1u;
+
+uint pcg_hash(
+    uint x
+) {
+    uint state = (x * 747796405u) + 2891336453u;
+    uint word = ((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+void rng_seed(
+    metal::uint2 pixel,
+    uint sample,
+    uint seed,
+    thread uint& rng_state
+) {
+    uint h = {};
+    uint _e5 = pcg_hash(seed);
+    uint _e7 = pcg_hash(sample ^ _e5);
+    uint _e9 = pcg_hash(pixel.y ^ _e7);
+    uint _e11 = pcg_hash(pixel.x ^ _e9);
+    h = _e11;
+    uint _e13 = h;
+    if (_e13 == 0u) {
+        h = 1u;
+    }
+    uint _e17 = h;
+    rng_state = _e17;
+    return;
+}
+
+Pinhole load_Pinhole(
+    uint offset,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset + 0u];
+    uint _e11 = params[offset + 1u];
+    uint _e17 = params[offset + 2u];
+    uint _e24 = params[offset + 4u];
+    uint _e30 = params[offset + 5u];
+    uint _e36 = params[offset + 6u];
+    uint _e43 = params[offset + 8u];
+    uint _e49 = params[offset + 9u];
+    uint _e55 = params[offset + 10u];
+    uint _e62 = params[offset + 11u];
+    return Pinhole {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), metal::float3(as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)), as_type<float>(_e62)};
+}
+
+metal::uint2 image_size_query(
+    constant TileParams& tile
+) {
+    TileParams _e1 = tile;
+    return _e1.image_size;
+}
+
+uint samples_per_pixel_query(
+    constant FrameUniforms& frame
+) {
+    FrameUniforms _e1 = frame;
+    return _e1.total_samples;
+}
+
+float rand_next(
+    thread uint& rng_state
+) {
+    uint _e1 = rng_state;
+    uint s_2 = (_e1 * 747796405u) + 2891336453u;
+    rng_state = s_2;
+    uint word_1 = ((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u;
+    uint r_3 = (word_1 >> 22u) ^ word_1;
+    return static_cast<float>(r_3 >> 8u) * (1.0 / 16777216.0);
+}
+
+metal::float2 rand2_next(
+    thread uint& rng_state
+) {
+    float _e0 = rand_next(rng_state);
+    float _e1 = rand_next(rng_state);
+    return metal::float2(_e0, _e1);
+}
+
+metal::float3 normalize_vec3f(
+    metal::float3 v
+) {
+    return (metal::dot(v, v) >= 0.000000000000000000000000000000000000011754944) ? metal::normalize(v) : metal::float3(0.0);
+}
+
+Ray pinhole_ray(
+    Pinhole cam,
+    metal::uint2 pixel_1,
+    uint sample_1,
+    constant FrameUniforms& frame,
+    constant TileParams& tile,
+    thread uint& rng_state,
+    thread uint& F32_INF
+) {
+    metal::float2 jitter = {};
+    metal::uint2 _e2 = image_size_query(tile);
+    metal::float2 size = static_cast<metal::float2>(_e2);
+    jitter = metal::float2(0.5);
+    uint _e7 = samples_per_pixel_query(frame);
+    if (_e7 > 1u) {
+        metal::float2 _e10 = rand2_next(rng_state);
+        jitter = _e10;
+    }
+    metal::float2 _e12 = jitter;
+    metal::float2 ndc = (((static_cast<metal::float2>(pixel_1) + _e12) / size) * metal::float2(2.0)) - metal::float2(1.0);
+    metal::float3 _e24 = normalize_vec3f(cam.look_at - cam.position);
+    metal::float3 _e27 = normalize_vec3f(metal::cross(_e24, cam.up));
+    metal::float3 up = metal::cross(_e27, _e24);
+    float h_1 = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
+    float aspect = size.x / size.y;
+    metal::float3 _e48 = normalize_vec3f((_e24 + (_e27 * metal::float3((ndc.x * h_1) * aspect))) - (up * metal::float3(ndc.y * h_1)));
+    uint _e52 = F32_INF;
+    return Ray {cam.position, 0.0, _e48, as_type<float>(_e52), 0u, 0u, 0u};
+}
+
+Ray dispatch_ray_generation(
+    uint type_id,
+    uint offset_1,
+    metal::uint2 pixel_2,
+    uint sample_2,
+    constant FrameUniforms& frame,
+    constant TileParams& tile,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Pinhole _e3 = load_Pinhole(offset_1, params, _buffer_sizes);
+    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2, frame, tile, rng_state, F32_INF);
+    return _e4;
+}
+
+Candidate no_candidate(
+    float tmax
+) {
+    return Candidate {tmax, NO_HIT, 0u, {}, metal::float2(0.0), {}, metal::float3(0.0)};
+}
+
+Ray to_object(
+    GpuInstance inst,
+    Ray ray
+) {
+    Ray r = {};
+    r = ray;
+    metal::float4 o = metal::float4(ray.origin, 1.0);
+    metal::float4 d_1 = metal::float4(ray.dir, 0.0);
+    r.origin = metal::float3(metal::dot(inst.world_to_object_0_, o), metal::dot(inst.world_to_object_1_, o), metal::dot(inst.world_to_object_2_, o));
+    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_1), metal::dot(inst.world_to_object_1_, d_1), metal::dot(inst.world_to_object_2_, d_1));
+    Ray _e25 = r;
+    return _e25;
+}
+
+metal::float3 safe_inverse(
+    metal::float3 d
+) {
+    metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
+    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_3 * tiny, metal::abs(d) < tiny);
+    return metal::float3(1.0) / dd;
+}
+
+TriangleRay prepare_triangle_ray(
+    Ray ray_1
+) {
+    metal::float3 d_2 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 ad = metal::abs(d_2);
+    bool y_gt = ad.y > ad.x;
+    uint kz = (ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u);
+    uint kx0_ = (kz == 2u) ? 0u : (kz + 1u);
+    uint ky0_ = (kz >= 1u) ? (kz - 1u) : (kz + 2u);
+    float dz = d_2[metal::min(kz, 2u)];
+    bool flip = dz < 0.0;
+    uint kx = flip ? ky0_ : kx0_;
+    uint ky = flip ? kx0_ : ky0_;
+    metal::uint3 inf_bits = metal::uint3(2139095040u);
+    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_2) & metal::uint3(2147483647u)) < inf_bits);
+    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_2[metal::min(kx, 2u)] / dz, d_2[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
+}
+
+metal::float3 hit_triangle(
+    TriangleRay r_1,
+    uint slot,
+    float tmin,
+    float tmax_1,
+    thread uint& F32_INF,
+    device type_10 const& triangles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float4 _e8 = triangles[slot * 3u];
+    metal::float3 a = _e8.xyz - r_1.origin;
+    metal::float4 _e18 = triangles[(slot * 3u) + 1u];
+    metal::float3 b_2 = _e18.xyz - r_1.origin;
+    metal::float4 _e28 = triangles[(slot * 3u) + 2u];
+    metal::float3 c_4 = _e28.xyz - r_1.origin;
+    float ax = a[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a[metal::min(r_1.kz, 2u)]);
+    float ay = a[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a[metal::min(r_1.kz, 2u)]);
+    float bx = b_2[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_2[metal::min(r_1.kz, 2u)]);
+    float by = b_2[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_2[metal::min(r_1.kz, 2u)]);
+    float cx = c_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_4[metal::min(r_1.kz, 2u)]);
+    float cy = c_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_4[metal::min(r_1.kz, 2u)]);
+    float u = (cx * by) - (cy * bx);
+    float v_1 = (ax * cy) - (ay * cx);
+    float w = (bx * ay) - (by * ax);
+    bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
+    float det = (u + v_1) + w;
+    float rcp = 1.0 / det;
+    float t_5 = (((u * (r_1.shear[2] * a[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_2[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
+    bool hit_5 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1);
+    uint _e173 = F32_INF;
+    return hit_5 ? metal::float3(t_5, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+}
+
+bool accept(
+    GpuInstance inst_1,
+    Ray ray_2,
+    Candidate c
+) {
+    return true;
+}
+
+float slab(
+    metal::float3 lo,
+    metal::float3 hi,
+    metal::float3 origin,
+    metal::float3 inv_dir,
+    float tmin_1,
+    float tmax_2,
+    thread uint& F32_INF
+) {
+    metal::float3 t0_ = (lo - origin) * inv_dir;
+    metal::float3 t1_ = (hi - origin) * inv_dir;
+    metal::float3 near_2 = metal::min(t0_, t1_);
+    metal::float3 far_2 = metal::max(t0_, t1_);
+    float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, tmin_1));
+    float exit = metal::min(metal::min(far_2.x, far_2.y) * 1.0000005, metal::min(far_2.z * 1.0000005, tmax_2));
+    if (enter <= exit) {
+        return enter;
+    }
+    uint _e30 = F32_INF;
+    return as_type<float>(_e30);
+}
+
+metal::uint2 pop_within(
+    uint base,
+    uint sp_in,
+    float t,
+    thread type_11& traversal_stack
+) {
+    uint sp = {};
+    sp = sp_in;
+    uint2 loop_bound = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e4 = sp;
+        if (_e4 == 0u) {
+            break;
+        }
+        uint _e7 = sp;
+        sp = _e7 - 1u;
+        uint _e10 = sp;
+        metal::uint2 e = traversal_stack.inner[metal::min(base + _e10, 127u)];
+        if (as_type<float>(e.y) <= t) {
+            uint _e21 = sp;
+            return metal::uint2(e.x, _e21);
+        }
+    }
+    return metal::uint2(NO_HIT, 0u);
+}
+
+Candidate intersect_mesh(
+    GpuInstance inst_2,
+    uint slot_1,
+    Ray world_ray,
+    Ray ray_3,
+    Candidate best_in,
+    bool shadow,
+    thread uint& F32_INF,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Candidate best = {};
+    uint sp_1 = {};
+    uint node = {};
+    uint k = {};
+    uint near = {};
+    uint far = {};
+    float t_far = {};
+    best = best_in;
+    metal::float3 _e8 = safe_inverse(ray_3.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_3);
+    uint base_1 = inst_2.blas_root;
+    sp_1 = 0u;
+    node = base_1;
+    uint2 loop_bound_1 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e14 = node;
+        GpuNode n_7 = nodes[_e14];
+        if ((n_7.b & LEAF_BIT) != 0u) {
+            uint count = n_7.b & ~(LEAF_BIT);
+            k = 0u;
+            uint2 loop_bound_2 = uint2(4294967295u);
+            bool loop_init = true;
+            while(true) {
+                if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                if (!loop_init) {
+                    uint _e52 = k;
+                    k = _e52 + 1u;
+                }
+                loop_init = false;
+                uint _e29 = k;
+                if (_e29 >= count) {
+                    break;
+                }
+                uint _e34 = k;
+                uint prim = (inst_2.triangle_offset + n_7.a) + _e34;
+                float _e38 = best.t;
+                metal::float3 _e39 = hit_triangle(_e9, prim, ray_3.tmin, _e38, F32_INF, triangles, _buffer_sizes);
+                uint _e42 = F32_INF;
+                if (_e39.x < as_type<float>(_e42)) {
+                    Candidate c_5 = Candidate {_e39.x, slot_1, prim, {}, _e39.yz, {}, metal::float3(0.0)};
+                    bool _e50 = accept(inst_2, world_ray, c_5);
+                    if (_e50) {
+                        best = c_5;
+                        if (shadow) {
+                            Candidate _e51 = best;
+                            return _e51;
+                        }
+                    }
+                }
+            }
+        } else {
+            uint left = base_1 + n_7.a;
+            uint right = left + 1u;
+            GpuNode l_4 = nodes[left];
+            GpuNode rr = nodes[right];
+            float _e70 = best.t;
+            float _e71 = slab(l_4.min, l_4.max, ray_3.origin, _e8, ray_3.tmin, _e70, F32_INF);
+            float _e77 = best.t;
+            float _e78 = slab(rr.min, rr.max, ray_3.origin, _e8, ray_3.tmin, _e77, F32_INF);
+            uint _e80 = F32_INF;
+            uint _e84 = F32_INF;
+            if ((_e71 < as_type<float>(_e80)) && (_e78 < as_type<float>(_e84))) {
+                near = left;
+                far = right;
+                t_far = _e78;
+                if (_e78 < _e71) {
+                    near = right;
+                    far = left;
+                    t_far = _e71;
+                }
+                uint _e92 = sp_1;
+                if (_e92 < BLAS_STACK) {
+                    uint _e96 = sp_1;
+                    uint _e98 = far;
+                    float _e99 = t_far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e96, 127u)] = metal::uint2(_e98, as_type<uint>(_e99));
+                    uint _e106 = sp_1;
+                    sp_1 = _e106 + 1u;
+                }
+                uint _e109 = near;
+                node = _e109;
+                continue;
+            }
+            uint _e111 = F32_INF;
+            if (_e71 < as_type<float>(_e111)) {
+                node = left;
+                continue;
+            }
+            uint _e115 = F32_INF;
+            if (_e78 < as_type<float>(_e115)) {
+                node = right;
+                continue;
+            }
+        }
+        uint _e119 = sp_1;
+        float _e121 = best.t;
+        metal::uint2 _e122 = pop_within(TLAS_STACK, _e119, _e121, traversal_stack);
+        if (_e122.x == NO_HIT) {
+            break;
+        }
+        node = _e122.x;
+        sp_1 = _e122.y;
+    }
+    Candidate _e128 = best;
+    return _e128;
+}
+
+Box load_Box(
+    uint offset_2,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_2 + 0u];
+    uint _e11 = params[offset_2 + 1u];
+    uint _e17 = params[offset_2 + 2u];
+    uint _e24 = params[offset_2 + 4u];
+    uint _e30 = params[offset_2 + 5u];
+    uint _e36 = params[offset_2 + 6u];
+    return Box {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36))};
+}
+
+Intersection box_intersect(
+    Box b,
+    Ray ray_4,
+    thread uint& F32_INF
+) {
+    float t_1 = {};
+    uint axis = {};
+    float sign = {};
+    metal::float3 n = {};
+    metal::bool3 tiny_1 = metal::abs(ray_4.dir) < metal::float3(0.000000000000000000000000000001);
+    metal::float3 inv = metal::float3(1.0) / metal::select(ray_4.dir, metal::float3(0.000000000000000000000000000001), tiny_1);
+    metal::float3 t_lo = (b.min - ray_4.origin) * inv;
+    metal::float3 t_hi = (b.max - ray_4.origin) * inv;
+    metal::float3 near_3 = metal::min(t_lo, t_hi);
+    metal::float3 far_3 = metal::max(t_lo, t_hi);
+    float entry = metal::max(metal::max(near_3.x, near_3.y), near_3.z);
+    float exit_1 = metal::min(metal::min(far_3.x, far_3.y), far_3.z);
+    if (!((entry <= exit_1))) {
+        uint _e37 = F32_INF;
+        return Intersection {as_type<float>(_e37), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
+    }
+    t_1 = entry;
+    axis = (entry == near_3.x) ? 0u : ((entry == near_3.y) ? 1u : 2u);
+    sign = -1.0;
+    if (!((entry >= ray_4.tmin))) {
+        t_1 = exit_1;
+        axis = (exit_1 == far_3.x) ? 0u : ((exit_1 == far_3.y) ? 1u : 2u);
+        sign = 1.0;
+    }
+    float _e71 = t_1;
+    float _e74 = t_1;
+    if (!(((_e71 >= ray_4.tmin) && (_e74 <= ray_4.tmax)))) {
+        uint _e80 = F32_INF;
+        return Intersection {as_type<float>(_e80), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
+    }
+    n = metal::float3(0.0);
+    uint _e91 = axis;
+    float _e95 = sign;
+    uint _e99 = axis;
+    n[metal::min(_e91, 2u)] = _e95 * ((ray_4.dir[metal::min(_e99, 2u)] >= 0.0) ? 1.0 : -1.0);
+    float _e109 = t_1;
+    metal::float3 rel = ((ray_4.origin + (ray_4.dir * metal::float3(_e109))) - b.min) / metal::max(b.max - b.min, metal::float3(0.000000000000000000000000000001));
+    uint _e124 = axis;
+    uint _e129 = axis;
+    metal::float2 uv = (_e129 == 0u) ? rel.zy : ((_e124 == 1u) ? rel.xz : rel.xy);
+    float _e133 = t_1;
+    metal::float3 _e134 = n;
+    return Intersection {_e133, {}, _e134, uv};
+}
+
+Sphere load_Sphere(
+    uint offset_3,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_3 + 0u];
+    uint _e11 = params[offset_3 + 1u];
+    uint _e17 = params[offset_3 + 2u];
+    uint _e24 = params[offset_3 + 3u];
+    return Sphere {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), as_type<float>(_e24)};
+}
+
+Intersection sphere_intersect(
+    Sphere s,
+    Ray ray_5,
+    thread uint& F32_INF
+) {
+    float t_2 = {};
+    metal::float3 f_1 = ray_5.origin - s.center;
+    float a_1 = metal::dot(ray_5.dir, ray_5.dir);
+    float b_3 = -(metal::dot(f_1, ray_5.dir));
+    metal::float3 l_5 = f_1 + (ray_5.dir * metal::float3(b_3 / a_1));
+    float r2_ = s.radius * s.radius;
+    float disc = a_1 * (r2_ - metal::dot(l_5, l_5));
+    if (!((disc >= 0.0)) || !((a_1 > 0.0))) {
+        uint _e30 = F32_INF;
+        return Intersection {as_type<float>(_e30), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
+    }
+    float q = b_3 + (((b_3 >= 0.0) ? 1.0 : -1.0) * metal::sqrt(disc));
+    float t0_1 = (metal::dot(f_1, f_1) - r2_) / q;
+    float t1_1 = q / a_1;
+    t_2 = metal::min(t0_1, t1_1);
+    float _e52 = t_2;
+    if (!((_e52 >= ray_5.tmin))) {
+        t_2 = metal::max(t0_1, t1_1);
+    }
+    float _e57 = t_2;
+    float _e60 = t_2;
+    if (!(((_e57 >= ray_5.tmin) && (_e60 <= ray_5.tmax)))) {
+        uint _e66 = F32_INF;
+        return Intersection {as_type<float>(_e66), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
+    }
+    float _e76 = t_2;
+    metal::float3 _e82 = normalize_vec3f((ray_5.origin + (ray_5.dir * metal::float3(_e76))) - s.center);
+    float u_1 = ((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (metal::atan2(_e82.z, -(_e82.x)) / TAU));
+    metal::float2 uv_1 = metal::float2(u_1, metal::acos(metal::min(metal::max(_e82.y, -1.0), 1.0)) * INV_PI);
+    float _e109 = t_2;
+    return Intersection {_e109, {}, _e82, uv_1};
+}
+
+Intersection dispatch_intersection(
+    uint type_id_1,
+    uint offset_4,
+    Ray ray_6,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    switch(type_id_1) {
+        case 0u: {
+            Box _e3 = load_Box(offset_4, params, _buffer_sizes);
+            Intersection _e4 = box_intersect(_e3, ray_6, F32_INF);
+            return _e4;
+        }
+        case 1u: {
+            Sphere _e5 = load_Sphere(offset_4, params, _buffer_sizes);
+            Intersection _e6 = sphere_intersect(_e5, ray_6, F32_INF);
+            return _e6;
+        }
+        default: {
+            break;
+        }
+    }
+    return Intersection {};
+}
+
+Candidate intersect_object(
+    uint slot_2,
+    Ray ray_7,
+    Candidate best_1,
+    bool shadow_1,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Ray r_2 = {};
+    GpuInstance inst_5 = instances[slot_2];
+    Ray _e7 = to_object(inst_5, ray_7);
+    r_2 = _e7;
+    r_2.tmax = best_1.t;
+    if (inst_5.geometry_type == MESH_GEOMETRY) {
+        Ray _e14 = r_2;
+        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_7, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        return _e15;
+    }
+    Ray _e18 = r_2;
+    Intersection _e19 = dispatch_intersection(inst_5.geometry_type, inst_5.geometry_offset, _e18, params, F32_INF, _buffer_sizes);
+    float _e22 = r_2.tmin;
+    float _e26 = r_2.tmax;
+    uint _e31 = F32_INF;
+    if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < as_type<float>(_e31))) {
+        Candidate c_6 = Candidate {_e19.t, slot_2, 0u, {}, _e19.uv, {}, _e19.normal};
+        bool _e40 = accept(inst_5, ray_7, c_6);
+        if (_e40) {
+            return c_6;
+        }
+    }
+    return best_1;
+}
+
+Triangle load_triangle(
+    uint slot_3,
+    device type_10 const& triangles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float4 v0_ = triangles[slot_3 * 3u];
+    metal::float4 v1_ = triangles[(slot_3 * 3u) + 1u];
+    metal::float4 v2_ = triangles[(slot_3 * 3u) + 2u];
+    return Triangle {v0_.xyz, v1_.xyz, v2_.xyz};
+}
+
+metal::float3 point_to_world(
+    GpuInstance inst_3,
+    metal::float3 p
+) {
+    metal::float4 q_1 = metal::float4(p, 1.0);
+    return metal::float3(metal::dot(inst_3.object_to_world_0_, q_1), metal::dot(inst_3.object_to_world_1_, q_1), metal::dot(inst_3.object_to_world_2_, q_1));
+}
+
+metal::float3 decode_octahedral(
+    uint bits
+) {
+    metal::float3 n_1 = {};
+    metal::float2 e_1 = metal::unpack_snorm2x16_to_float(bits);
+    n_1 = metal::float3(e_1.x, e_1.y, (1.0 - metal::abs(e_1.x)) - metal::abs(e_1.y));
+    float _e14 = n_1.z;
+    if (_e14 < 0.0) {
+        metal::float3 _e21 = n_1;
+        metal::float2 s_4 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float3 _e29 = n_1;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_4;
+        float _e37 = n_1.z;
+        n_1 = metal::float3(xy.x, xy.y, _e37);
+    }
+    metal::float3 _e39 = n_1;
+    metal::float3 _e40 = normalize_vec3f(_e39);
+    return _e40;
+}
+
+metal::float3 normal_to_world(
+    GpuInstance inst_4,
+    metal::float3 n_2
+) {
+    metal::float3 w_1 = ((inst_4.world_to_object_0_.xyz * metal::float3(n_2.x)) + (inst_4.world_to_object_1_.xyz * metal::float3(n_2.y))) + (inst_4.world_to_object_2_.xyz * metal::float3(n_2.z));
+    metal::float3 _e19 = normalize_vec3f(w_1);
+    return _e19;
+}
+
+Hit finish_hit(
+    Ray ray_8,
+    Candidate c_1,
+    device type_8 const& instances,
+    device type_10 const& triangles,
+    device type_13 const& attributes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Hit hit = {};
+    metal::float3 n_geo = {};
+    metal::float3 n_shade = {};
+    GpuInstance inst_6 = instances[c_1.slot];
+    hit = Hit {ray_8.origin + (ray_8.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_6.object, c_1.primitive};
+    n_geo = c_1.normal;
+    n_shade = c_1.normal;
+    if (inst_6.geometry_type == MESH_GEOMETRY) {
+        Triangle _e35 = load_triangle(c_1.primitive, triangles, _buffer_sizes);
+        metal::float2 b_4 = c_1.uv;
+        float w_2 = (1.0 - c_1.uv.x) - c_1.uv.y;
+        metal::float3 _e56 = point_to_world(inst_6, ((_e35.v0_ * metal::float3(w_2)) + (_e35.v1_ * metal::float3(c_1.uv.x))) + (_e35.v2_ * metal::float3(c_1.uv.y)));
+        hit.position = _e56;
+        n_geo = metal::cross(_e35.v1_ - _e35.v0_, _e35.v2_ - _e35.v0_);
+        metal::uint4 a0_ = attributes[c_1.primitive * 2u];
+        metal::uint4 a1_ = attributes[(c_1.primitive * 2u) + 1u];
+        metal::float3 _e79 = decode_octahedral(a0_.x);
+        metal::float3 _e83 = decode_octahedral(a0_.y);
+        metal::float3 _e89 = decode_octahedral(a0_.z);
+        n_shade = ((_e79 * metal::float3(w_2)) + (_e83 * metal::float3(c_1.uv.x))) + (_e89 * metal::float3(c_1.uv.y));
+        metal::float3 _e94 = n_shade;
+        metal::float3 _e95 = n_shade;
+        if (metal::dot(_e94, _e95) < 0.000000000001) {
+            metal::float3 _e99 = n_geo;
+            n_shade = _e99;
+        }
+        metal::float2 uv0_ = float2(as_type<half2>(a0_.w));
+        metal::float2 uv1_ = float2(as_type<half2>(a1_.x));
+        metal::float2 uv2_ = float2(as_type<half2>(a1_.y));
+        hit.uv = ((uv0_ * metal::float2(w_2)) + (uv1_ * metal::float2(c_1.uv.x))) + (uv2_ * metal::float2(c_1.uv.y));
+        metal::float4 _e123 = triangles[c_1.primitive * 3u];
+        hit.primitive = as_type<uint>(_e123.w);
+    }
+    metal::float3 _e127 = n_geo;
+    metal::float3 _e128 = normal_to_world(inst_6, _e127);
+    hit.geometric_normal = _e128;
+    metal::float3 _e130 = n_shade;
+    metal::float3 _e131 = normal_to_world(inst_6, _e130);
+    hit.normal = _e131;
+    metal::float3 _e135 = hit.geometric_normal;
+    hit.front_face = metal::dot(ray_8.dir, _e135) < 0.0;
+    Hit _e139 = hit;
+    return _e139;
+}
+
+uint medium_at(
+    metal::float3 p_1,
+    uint exclude,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    device type_13 const& attributes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint inside = {};
+    float nearest = {};
+    uint i = {};
+    if (!(HAS_MEDIA)) {
+        return 0u;
+    }
+    FrameUniforms frame_1 = frame;
+    metal::float3 _e12 = normalize_vec3f(metal::float3(0.5773, 0.5774, 0.5775));
+    uint _e14 = F32_INF;
+    Ray probe = Ray {p_1, 0.0, _e12, as_type<float>(_e14), 0u, 0u, 0u};
+    inside = 0u;
+    uint _e23 = F32_INF;
+    nearest = as_type<float>(_e23);
+    uint end = frame_1.medium_count;
+    i = 0u;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e57 = i;
+            i = _e57 + 1u;
+        }
+        loop_init_1 = false;
+        uint _e29 = i;
+        if (_e29 >= end) {
+            break;
+        }
+        uint _e32 = i;
+        uint slot_4 = params[frame_1.medium_table + _e32];
+        if (slot_4 != exclude) {
+            uint _e39 = F32_INF;
+            Candidate _e41 = no_candidate(as_type<float>(_e39));
+            Candidate _e43 = intersect_object(slot_4, probe, _e41, false, params, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+            float _e48 = nearest;
+            if ((_e43.slot != NO_HIT) && (_e43.t < _e48)) {
+                Hit _e51 = finish_hit(probe, _e43, instances, triangles, attributes, _buffer_sizes);
+                if (!(_e51.front_face)) {
+                    inside = slot_4 + 1u;
+                    nearest = _e43.t;
+                }
+            }
+        }
+    }
+    uint _e60 = inside;
+    return _e60;
+}
+
+Candidate intersect_scene(
+    Ray ray_9,
+    bool shadow_2,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Candidate best_2 = {};
+    uint sp_2 = {};
+    uint node_1 = {};
+    uint k_1 = {};
+    uint near_1 = {};
+    uint far_1 = {};
+    float t_far_1 = {};
+    uint _e3 = ray_count;
+    ray_count = _e3 + 1u;
+    Candidate _e7 = no_candidate(ray_9.tmax);
+    best_2 = _e7;
+    FrameUniforms frame_2 = frame;
+    if (frame_2.instance_count == 0u) {
+        Candidate _e14 = best_2;
+        return _e14;
+    }
+    metal::float3 _e16 = safe_inverse(ray_9.dir);
+    sp_2 = 0u;
+    node_1 = frame_2.tlas_root;
+    uint _e21 = node_1;
+    GpuNode root = nodes[_e21];
+    float _e30 = best_2.t;
+    float _e31 = slab(root.min, root.max, ray_9.origin, _e16, ray_9.tmin, _e30, F32_INF);
+    uint _e33 = F32_INF;
+    if (_e31 == as_type<float>(_e33)) {
+        Candidate _e36 = best_2;
+        return _e36;
+    }
+    uint2 loop_bound_4 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        uint _e37 = node_1;
+        GpuNode n_8 = nodes[_e37];
+        if ((n_8.b & LEAF_BIT) != 0u) {
+            uint count_1 = n_8.b & ~(LEAF_BIT);
+            k_1 = 0u;
+            uint2 loop_bound_5 = uint2(4294967295u);
+            bool loop_init_2 = true;
+            while(true) {
+                if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (!loop_init_2) {
+                    uint _e65 = k_1;
+                    k_1 = _e65 + 1u;
+                }
+                loop_init_2 = false;
+                uint _e52 = k_1;
+                if (_e52 >= count_1) {
+                    break;
+                }
+                uint _e55 = k_1;
+                Candidate _e57 = best_2;
+                Candidate _e58 = intersect_object(n_8.a + _e55, ray_9, _e57, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                best_2 = _e58;
+                uint _e60 = best_2.slot;
+                if (shadow_2 && (_e60 != NO_HIT)) {
+                    Candidate _e64 = best_2;
+                    return _e64;
+                }
+            }
+        } else {
+            uint left_1 = frame_2.tlas_root + n_8.a;
+            uint right_1 = left_1 + 1u;
+            GpuNode l_6 = nodes[left_1];
+            GpuNode rr_1 = nodes[right_1];
+            float _e84 = best_2.t;
+            float _e85 = slab(l_6.min, l_6.max, ray_9.origin, _e16, ray_9.tmin, _e84, F32_INF);
+            float _e91 = best_2.t;
+            float _e92 = slab(rr_1.min, rr_1.max, ray_9.origin, _e16, ray_9.tmin, _e91, F32_INF);
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if ((_e85 < as_type<float>(_e94)) && (_e92 < as_type<float>(_e98))) {
+                near_1 = left_1;
+                far_1 = right_1;
+                t_far_1 = _e92;
+                if (_e92 < _e85) {
+                    near_1 = right_1;
+                    far_1 = left_1;
+                    t_far_1 = _e85;
+                }
+                uint _e106 = sp_2;
+                if (_e106 < TLAS_STACK) {
+                    uint _e109 = sp_2;
+                    uint _e110 = far_1;
+                    float _e111 = t_far_1;
+                    traversal_stack.inner[metal::min(_e109, 127u)] = metal::uint2(_e110, as_type<uint>(_e111));
+                    uint _e118 = sp_2;
+                    sp_2 = _e118 + 1u;
+                }
+                uint _e121 = near_1;
+                node_1 = _e121;
+                continue;
+            }
+            uint _e123 = F32_INF;
+            if (_e85 < as_type<float>(_e123)) {
+                node_1 = left_1;
+                continue;
+            }
+            uint _e127 = F32_INF;
+            if (_e92 < as_type<float>(_e127)) {
+                node_1 = right_1;
+                continue;
+            }
+        }
+        uint _e131 = sp_2;
+        float _e133 = best_2.t;
+        metal::uint2 _e134 = pop_within(0u, _e131, _e133, traversal_stack);
+        if (_e134.x == NO_HIT) {
+            break;
+        }
+        node_1 = _e134.x;
+        sp_2 = _e134.y;
+    }
+    Candidate _e140 = best_2;
+    return _e140;
+}
+
+ConstantBackground load_ConstantBackground(
+    uint offset_5,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_5 + 0u];
+    uint _e11 = params[offset_5 + 1u];
+    uint _e17 = params[offset_5 + 2u];
+    return ConstantBackground {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17))};
+}
+
+metal::float3 constant_background(
+    ConstantBackground b_1,
+    Ray ray_10
+) {
+    return b_1.color;
+}
+
+metal::float3 dispatch_miss(
+    uint type_id_2,
+    uint offset_6,
+    Ray ray_11,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    ConstantBackground _e2 = load_ConstantBackground(offset_6, params, _buffer_sizes);
+    metal::float3 _e3 = constant_background(_e2, ray_11);
+    return _e3;
+}
+
+metal::float3 miss(
+    Ray ray_12,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!(HAS_BACKGROUND)) {
+        return metal::float3(0.0);
+    }
+    FrameUniforms frame_3 = frame;
+    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_12, params, _buffer_sizes);
+    return _e9;
+}
+
+metal::float3 dispatch_medium(
+    uint type_id_3,
+    uint offset_7,
+    Ray ray_13,
+    float t_3,
+    metal::float3 radiance
+) {
+    return metal::float3 {};
+}
+
+metal::float3 through_medium(
+    Ray ray_14,
+    float t_4,
+    metal::float3 radiance_1,
+    device type_8 const& instances,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!(HAS_MEDIA)) {
+        return radiance_1;
+    }
+    if (ray_14.medium == 0u) {
+        return radiance_1;
+    }
+    GpuInstance inst_7 = instances[ray_14.medium - 1u];
+    if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
+        return radiance_1;
+    }
+    metal::float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_14, t_4, radiance_1);
+    return _e21;
+}
+
+Lambert load_Lambert(
+    uint offset_8,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_8 + 0u];
+    uint _e11 = params[offset_8 + 1u];
+    uint _e17 = params[offset_8 + 2u];
+    return Lambert {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17))};
+}
+
+uint light_count_query(
+    constant FrameUniforms& frame
+) {
+    FrameUniforms _e1 = frame;
+    return _e1.light_count;
+}
+
+DirectionalLight load_DirectionalLight(
+    uint offset_9,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_9 + 0u];
+    uint _e11 = params[offset_9 + 1u];
+    uint _e17 = params[offset_9 + 2u];
+    uint _e24 = params[offset_9 + 4u];
+    uint _e30 = params[offset_9 + 5u];
+    uint _e36 = params[offset_9 + 6u];
+    uint _e43 = params[offset_9 + 7u];
+    return DirectionalLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), as_type<float>(_e43)};
+}
+
+metal::float3 offset_origin(
+    metal::float3 p_2,
+    metal::float3 n_3,
+    constant FrameUniforms& frame,
+    device type_9 const& nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    FrameUniforms _e3 = frame;
+    GpuNode root_1 = nodes[_e3.tlas_root];
+    metal::float3 a_2 = metal::max(metal::abs(p_2), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
+    float m_1 = metal::max(metal::max(a_2.x, a_2.y), a_2.z);
+    return p_2 + (n_3 * metal::float3(m_1 * (1.0 / 65536.0)));
+}
+
+float shadow_query(
+    metal::float3 position,
+    metal::float3 normal,
+    metal::float3 dir,
+    float dist,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 n_4 = {};
+    n_4 = normal;
+    metal::float3 _e5 = n_4;
+    if (metal::dot(dir, _e5) < 0.0) {
+        metal::float3 _e9 = n_4;
+        n_4 = -(_e9);
+    }
+    metal::float3 _e11 = n_4;
+    metal::float3 _e12 = offset_origin(position, _e11, frame, nodes, _buffer_sizes);
+    Ray ray_21 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
+    Candidate _e23 = intersect_scene(ray_21, true, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return (_e23.slot != NO_HIT) ? 0.0 : 1.0;
+}
+
+LightSample directional_light(
+    DirectionalLight l,
+    metal::float3 position_1,
+    metal::float3 normal_1,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e4 = normalize_vec3f(l.direction);
+    metal::float3 dir_2 = -(_e4);
+    if (metal::dot(dir_2, dir_2) == 0.0) {
+        uint _e14 = F32_INF;
+        return LightSample {metal::float3(0.0, 1.0, 0.0), as_type<float>(_e14), metal::float3(0.0)};
+    }
+    uint _e20 = F32_INF;
+    float _e22 = shadow_query(position_1, normal_1, dir_2, as_type<float>(_e20), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    uint _e24 = F32_INF;
+    return LightSample {dir_2, as_type<float>(_e24), (l.color * metal::float3(l.intensity)) * metal::float3(_e22)};
+}
+
+PointLight load_PointLight(
+    uint offset_10,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_10 + 0u];
+    uint _e11 = params[offset_10 + 1u];
+    uint _e17 = params[offset_10 + 2u];
+    uint _e24 = params[offset_10 + 4u];
+    uint _e30 = params[offset_10 + 5u];
+    uint _e36 = params[offset_10 + 6u];
+    uint _e43 = params[offset_10 + 7u];
+    uint _e49 = params[offset_10 + 8u];
+    uint _e55 = params[offset_10 + 9u];
+    return PointLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)};
+}
+
+LightSample point_light(
+    PointLight l_1,
+    metal::float3 position_2,
+    metal::float3 normal_2,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float strength = {};
+    metal::float3 to_light = l_1.position - position_2;
+    float dist_1 = metal::length(to_light);
+    metal::float3 dir_3 = to_light / metal::float3(metal::max(dist_1, 0.00000000000000000001));
+    strength = l_1.intensity / metal::max(dist_1 * dist_1, 0.00000000000000000001);
+    if (l_1.range > 0.0) {
+        float _e19 = strength;
+        strength = _e19 * (1.0 - metal::smoothstep(l_1.inner_range, l_1.range, dist_1));
+    }
+    float _e26 = shadow_query(position_2, normal_2, dir_3, dist_1, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    float _e28 = strength;
+    return LightSample {dir_3, dist_1, (l_1.color * metal::float3(_e28)) * metal::float3(_e26)};
+}
+
+SphereLight load_SphereLight(
+    uint offset_11,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_11 + 0u];
+    uint _e11 = params[offset_11 + 1u];
+    uint _e17 = params[offset_11 + 2u];
+    uint _e24 = params[offset_11 + 3u];
+    uint _e30 = params[offset_11 + 4u];
+    uint _e36 = params[offset_11 + 5u];
+    uint _e42 = params[offset_11 + 6u];
+    uint _e49 = params[offset_11 + 7u];
+    return SphereLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), as_type<float>(_e24), metal::float3(as_type<float>(_e30), as_type<float>(_e36), as_type<float>(_e42)), as_type<float>(_e49)};
+}
+
+metal::float3x3 orthonormal_basis(
+    metal::float3 n_5
+) {
+    float sign_1 = ((as_type<uint>(n_5.z) & 2147483648u) != 0u) ? -1.0 : 1.0;
+    float a_3 = -1.0 / (sign_1 + n_5.z);
+    float b_5 = (n_5.x * n_5.y) * a_3;
+    float _e16 = sign_1 * n_5.x;
+    return metal::float3x3(metal::float3(1.0 + ((_e16 * n_5.x) * a_3), sign_1 * b_5, -(_e16)), metal::float3(b_5, sign_1 + ((n_5.y * n_5.y) * a_3), -(n_5.y)), n_5);
+}
+
+LightSample sphere_light(
+    SphereLight l_2,
+    metal::float3 position_3,
+    metal::float3 normal_3,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 to_center = l_2.position - position_3;
+    float d2_ = metal::dot(to_center, to_center);
+    float r2_1 = metal::max(l_2.radius * l_2.radius, 0.00000000000000000001);
+    if (d2_ <= r2_1) {
+        return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0)};
+    }
+    metal::float3 w_3 = to_center * metal::float3(metal::rsqrt(d2_));
+    float s2_ = r2_1 / d2_;
+    float cos_max = metal::sqrt(1.0 - s2_);
+    float one_minus_cos_max = s2_ / (1.0 + cos_max);
+    metal::float2 _e30 = rand2_next(rng_state);
+    float cos_t = 1.0 - (_e30.x * one_minus_cos_max);
+    float sin_t = metal::sqrt(metal::max(1.0 - (cos_t * cos_t), 0.0));
+    float phi = TAU * _e30.y;
+    metal::float3x3 _e44 = orthonormal_basis(w_3);
+    metal::float3 _e51 = normalize_vec3f(_e44 * metal::float3(metal::cos(phi) * sin_t, metal::sin(phi) * sin_t, cos_t));
+    float along = metal::dot(to_center, _e51);
+    float dist_2 = metal::max(along - metal::sqrt(metal::max(r2_1 - (d2_ - (along * along)), 0.0)), 0.0);
+    float weight = ((l_2.intensity * 2.0) * one_minus_cos_max) / r2_1;
+    float _e67 = shadow_query(position_3, normal_3, _e51, dist_2, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return LightSample {_e51, dist_2, (l_2.color * metal::float3(weight)) * metal::float3(_e67)};
+}
+
+SpotLight load_SpotLight(
+    uint offset_12,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_12 + 0u];
+    uint _e11 = params[offset_12 + 1u];
+    uint _e17 = params[offset_12 + 2u];
+    uint _e24 = params[offset_12 + 4u];
+    uint _e30 = params[offset_12 + 5u];
+    uint _e36 = params[offset_12 + 6u];
+    uint _e43 = params[offset_12 + 8u];
+    uint _e49 = params[offset_12 + 9u];
+    uint _e55 = params[offset_12 + 10u];
+    uint _e62 = params[offset_12 + 11u];
+    uint _e68 = params[offset_12 + 12u];
+    uint _e74 = params[offset_12 + 13u];
+    uint _e80 = params[offset_12 + 14u];
+    return SpotLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), metal::float3(as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)), as_type<float>(_e62), as_type<float>(_e68), as_type<float>(_e74), as_type<float>(_e80)};
+}
+
+LightSample spot_light(
+    SpotLight l_3,
+    metal::float3 position_4,
+    metal::float3 normal_4,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float strength_1 = {};
+    metal::float3 to_light_1 = l_3.position - position_4;
+    float dist_3 = metal::length(to_light_1);
+    metal::float3 dir_4 = to_light_1 / metal::float3(metal::max(dist_3, 0.00000000000000000001));
+    strength_1 = l_3.intensity / metal::max(dist_3 * dist_3, 0.00000000000000000001);
+    if (l_3.range > 0.0) {
+        float _e19 = strength_1;
+        strength_1 = _e19 * (1.0 - metal::smoothstep(0.0, l_3.range, dist_3));
+    }
+    float cos_inner = metal::cos(((metal::min(metal::max(l_3.inner_angle, 0.0), 180.0)) * 0.017453292519943295474));
+    float cos_outer = metal::min(metal::cos(((metal::min(metal::max(l_3.outer_angle, 0.0), 180.0)) * 0.017453292519943295474)), cos_inner - 0.0001);
+    float _e43 = strength_1;
+    metal::float3 _e46 = normalize_vec3f(l_3.direction);
+    strength_1 = _e43 * metal::smoothstep(cos_outer, cos_inner, metal::dot(-(dir_4), _e46));
+    float _e50 = strength_1;
+    if (_e50 <= 0.0) {
+        return LightSample {dir_4, dist_3, metal::float3(0.0)};
+    }
+    float _e56 = shadow_query(position_4, normal_4, dir_4, dist_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    float _e58 = strength_1;
+    return LightSample {dir_4, dist_3, (l_3.color * metal::float3(_e58)) * metal::float3(_e56)};
+}
+
+LightSample dispatch_light(
+    uint type_id_4,
+    uint offset_13,
+    metal::float3 position_5,
+    metal::float3 normal_5,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    switch(type_id_4) {
+        case 0u: {
+            DirectionalLight _e4 = load_DirectionalLight(offset_13, params, _buffer_sizes);
+            LightSample _e5 = directional_light(_e4, position_5, normal_5, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+            return _e5;
+        }
+        case 1u: {
+            PointLight _e6 = load_PointLight(offset_13, params, _buffer_sizes);
+            LightSample _e7 = point_light(_e6, position_5, normal_5, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+            return _e7;
+        }
+        case 2u: {
+            SphereLight _e8 = load_SphereLight(offset_13, params, _buffer_sizes);
+            LightSample _e9 = sphere_light(_e8, position_5, normal_5, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+            return _e9;
+        }
+        case 3u: {
+            SpotLight _e10 = load_SpotLight(offset_13, params, _buffer_sizes);
+            LightSample _e11 = spot_light(_e10, position_5, normal_5, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+            return _e11;
+        }
+        default: {
+            break;
+        }
+    }
+    return LightSample {};
+}
+
+LightSample sample_light_query(
+    uint i_1,
+    metal::float3 position_6,
+    metal::float3 normal_6,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    FrameUniforms frame_4 = frame;
+    if (i_1 >= frame_4.light_count) {
+        return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0)};
+    }
+    uint entry_1 = frame_4.light_table + (i_1 * 2u);
+    uint _e21 = params[entry_1];
+    uint _e26 = params[entry_1 + 1u];
+    LightSample _e27 = dispatch_light(_e21, _e26, position_6, normal_6, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return _e27;
+}
+
+metal::float3 lambert_shade(
+    Lambert m,
+    Ray ray_15,
+    Hit hit_1,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 color = {};
+    uint i_2 = {};
+    metal::float3 n_9 = metal::faceforward(hit_1.normal, ray_15.dir, hit_1.normal);
+    color = metal::float3(0.0);
+    uint _e11 = light_count_query(frame);
+    i_2 = 0u;
+    uint2 loop_bound_6 = uint2(4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e33 = i_2;
+            i_2 = _e33 + 1u;
+        }
+        loop_init_3 = false;
+        uint _e13 = i_2;
+        if (_e13 >= _e11) {
+            break;
+        }
+        uint _e15 = i_2;
+        LightSample _e18 = sample_light_query(_e15, hit_1.position, hit_1.geometric_normal, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e19 = color;
+        color = _e19 + (((m.albedo * metal::float3(INV_PI)) * _e18.radiance) * metal::float3(metal::max(metal::dot(n_9, _e18.dir), 0.0)));
+    }
+    metal::float3 _e36 = color;
+    return _e36;
+}
+
+metal::float3 dispatch_closest_hit(
+    uint type_id_5,
+    uint offset_14,
+    Ray ray_16,
+    Hit hit_2,
+    metal::float3 secondary,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Lambert _e3 = load_Lambert(offset_14, params, _buffer_sizes);
+    metal::float3 _e4 = lambert_shade(_e3, ray_16, hit_2, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return _e4;
+}
+
+metal::float3 shade_direct(
+    Ray ray_17,
+    Candidate c_2,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    device type_13 const& attributes,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuInstance inst_8 = instances[c_2.slot];
+    Hit _e6 = finish_hit(ray_17, c_2, instances, triangles, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e6, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return _e11;
+}
+
+void dispatch_secondary_rays(
+    uint type_id_6,
+    uint offset_15,
+    Ray ray_18,
+    Hit hit_3
+) {
+    return;
+}
+
+metal::float3 spawn_origin(
+    Hit hit_4,
+    metal::float3 dir_1,
+    constant FrameUniforms& frame,
+    device type_9 const& nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 n_6 = {};
+    n_6 = hit_4.geometric_normal;
+    metal::float3 _e4 = n_6;
+    if (metal::dot(dir_1, _e4) < 0.0) {
+        metal::float3 _e8 = n_6;
+        n_6 = -(_e8);
+    }
+    metal::float3 _e11 = n_6;
+    metal::float3 _e12 = offset_origin(hit_4.position, _e11, frame, nodes, _buffer_sizes);
+    return _e12;
+}
+
+metal::float3 trace(
+    Ray camera_ray,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    device type_13 const& attributes,
+    thread uint& ray_count,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
+    thread uint& spawn_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    type_16 stack = {};
+    uint depth = {};
+    Ray ray_19 = {};
+    metal::float3 value = {};
+    bool have_value = {};
+    bool pushed = {};
+    Frame f = {};
+    uint i_3 = {};
+    uint medium = {};
+    if (!(HAS_SECONDARY_RAYS)) {
+        Candidate _e4 = intersect_scene(camera_ray, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        if (_e4.slot == NO_HIT) {
+            uint _e9 = F32_INF;
+            metal::float3 _e11 = miss(camera_ray, frame, params, _buffer_sizes);
+            metal::float3 _e12 = through_medium(camera_ray, as_type<float>(_e9), _e11, instances, _buffer_sizes);
+            return _e12;
+        }
+        metal::float3 _e14 = shade_direct(camera_ray, _e4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, _buffer_sizes);
+        metal::float3 _e15 = through_medium(camera_ray, _e4.t, _e14, instances, _buffer_sizes);
+        return _e15;
+    }
+    stack = type_16 {};
+    depth = 0u;
+    ray_19 = camera_ray;
+    value = metal::float3(0.0);
+    have_value = false;
+    uint2 loop_bound_7 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        bool _e26 = have_value;
+        if (!(_e26)) {
+            Ray _e28 = ray_19;
+            Candidate _e30 = intersect_scene(_e28, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+            if (_e30.slot == NO_HIT) {
+                Ray _e34 = ray_19;
+                uint _e36 = F32_INF;
+                Ray _e38 = ray_19;
+                metal::float3 _e39 = miss(_e38, frame, params, _buffer_sizes);
+                metal::float3 _e40 = through_medium(_e34, as_type<float>(_e36), _e39, instances, _buffer_sizes);
+                value = _e40;
+                have_value = true;
+            } else {
+                GpuInstance inst_9 = instances[_e30.slot];
+                Ray _e46 = ray_19;
+                Hit _e47 = finish_hit(_e46, _e30, instances, triangles, attributes, _buffer_sizes);
+                pushed = false;
+                uint _e56 = ray_19.depth;
+                uint _e60 = depth;
+                if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
+                    spawn_count = 0u;
+                    Ray _e68 = ray_19;
+                    dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
+                    uint _e70 = spawn_count;
+                    uint n_10 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
+                    if (n_10 > 0u) {
+                        Ray _e77 = ray_19;
+                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_10, 0u};
+                        i_3 = 0u;
+                        uint2 loop_bound_8 = uint2(4294967295u);
+                        bool loop_init_4 = true;
+                        while(true) {
+                            if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+                            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                            if (!loop_init_4) {
+                                uint _e108 = i_3;
+                                i_3 = _e108 + 1u;
+                            }
+                            loop_init_4 = false;
+                            uint _e88 = i_3;
+                            if (_e88 >= n_10) {
+                                break;
+                            }
+                            uint _e91 = i_3;
+                            uint _e95 = i_3;
+                            metal::float3 _e98 = spawn_dirs.inner[_e95];
+                            f.dirs.inner[metal::min(_e91, 0u)] = _e98;
+                            uint _e100 = i_3;
+                            uint _e104 = i_3;
+                            metal::float3 _e107 = spawn_weights.inner[_e104];
+                            f.weights.inner[metal::min(_e100, 0u)] = _e107;
+                        }
+                        uint _e111 = depth;
+                        Frame _e115 = f;
+                        stack.inner[metal::min(_e111, 3u)] = _e115;
+                        uint _e116 = depth;
+                        depth = _e116 + 1u;
+                        pushed = true;
+                    }
+                }
+                bool _e120 = pushed;
+                if (!(_e120)) {
+                    Ray _e124 = ray_19;
+                    metal::float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+                    Ray _e128 = ray_19;
+                    metal::float3 _e130 = through_medium(_e128, _e30.t, _e127, instances, _buffer_sizes);
+                    value = _e130;
+                    have_value = true;
+                }
+            }
+        }
+        bool _e132 = have_value;
+        if (_e132) {
+            uint _e133 = depth;
+            if (_e133 == 0u) {
+                metal::float3 _e136 = value;
+                return _e136;
+            }
+            uint _e137 = depth;
+            uint top = _e137 - 1u;
+            uint _e144 = stack.inner[metal::min(top, 3u)].next;
+            uint child = _e144 - 1u;
+            metal::float3 _e151 = stack.inner[metal::min(top, 3u)].sum;
+            metal::float3 _e159 = stack.inner[metal::min(top, 3u)].weights.inner[metal::min(child, 0u)];
+            metal::float3 _e160 = value;
+            stack.inner[metal::min(top, 3u)].sum = _e151 + (_e159 * _e160);
+            have_value = false;
+        }
+        uint _e164 = depth;
+        uint top_1 = _e164 - 1u;
+        uint _e171 = stack.inner[metal::min(top_1, 3u)].next;
+        uint _e176 = stack.inner[metal::min(top_1, 3u)].count;
+        if (_e171 < _e176) {
+            uint i_4 = stack.inner[metal::min(top_1, 3u)].next;
+            stack.inner[metal::min(top_1, 3u)].next = i_4 + 1u;
+            Ray parent = stack.inner[metal::min(top_1, 3u)].ray;
+            Hit hit_6 = stack.inner[metal::min(top_1, 3u)].hit;
+            metal::float3 dir_5 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_4, 0u)];
+            medium = parent.medium;
+            metal::float3 _e209 = spawn_origin(hit_6, dir_5, frame, nodes, _buffer_sizes);
+            uint _e212 = F32_INF;
+            uint _e218 = medium;
+            ray_19 = Ray {_e209, 0.0, dir_5, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
+        } else {
+            uint _e224 = stack.inner[metal::min(top_1, 3u)].slot;
+            GpuInstance inst_10 = instances[_e224];
+            Ray _e234 = stack.inner[metal::min(top_1, 3u)].ray;
+            Hit _e239 = stack.inner[metal::min(top_1, 3u)].hit;
+            metal::float3 _e244 = stack.inner[metal::min(top_1, 3u)].sum;
+            metal::float3 _e245 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e234, _e239, _e244, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+            Ray _e250 = stack.inner[metal::min(top_1, 3u)].ray;
+            float _e256 = stack.inner[metal::min(top_1, 3u)].hit.t;
+            metal::float3 _e257 = through_medium(_e250, _e256, _e245, instances, _buffer_sizes);
+            value = _e257;
+            depth = top_1;
+            have_value = true;
+        }
+    }
+    return metal::float3 {};
+}
+
+metal::bool3 is_finite_vec3f(
+    metal::float3 x_1
+) {
+    return (as_type<metal::uint3>(x_1) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+}
+
+metal::float3 finite_or_zero(
+    metal::float3 c_3
+) {
+    metal::bool3 _e3 = is_finite_vec3f(c_3);
+    return metal::select(metal::float3(0.0), c_3, _e3);
+}
+
+void render_pixel(
+    metal::uint2 pixel_3,
+    constant FrameUniforms& frame,
+    constant TileParams& tile,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    device type_13 const& attributes,
+    thread uint& ray_count,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
+    thread uint& spawn_count,
+    device type_10& accum,
+    device type_19& counters,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 sum = {};
+    uint bad = {};
+    uint s_1 = {};
+    Ray ray_20 = {};
+    FrameUniforms frame_5 = frame;
+    TileParams tile_1 = tile;
+    sum = metal::float3(0.0);
+    bad = 0u;
+    uint end_1 = frame_5.samples_per_pass;
+    s_1 = 0u;
+    uint2 loop_bound_9 = uint2(4294967295u);
+    bool loop_init_5 = true;
+    while(true) {
+        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_5) {
+            uint _e46 = s_1;
+            s_1 = _e46 + 1u;
+        }
+        loop_init_5 = false;
+        uint _e13 = s_1;
+        if (_e13 >= end_1) {
+            break;
+        }
+        uint _e18 = s_1;
+        uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
+        rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, frame, tile, rng_state, params, F32_INF, _buffer_sizes);
+        ray_20 = _e23;
+        ray_20.depth = 0u;
+        ray_20.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_20.origin;
+        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, _buffer_sizes);
+        ray_20.medium = _e33;
+        Ray _e34 = ray_20;
+        metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::bool3 _e36 = is_finite_vec3f(_e35);
+        if (metal::all(_e36)) {
+            metal::float3 _e38 = sum;
+            sum = _e38 + _e35;
+        } else {
+            metal::float3 _e40 = sum;
+            metal::float3 _e41 = finite_or_zero(_e35);
+            sum = _e40 + _e41;
+            uint _e43 = bad;
+            bad = _e43 + 1u;
+        }
+    }
+    metal::float3 _e55 = sum;
+    uint _e59 = bad;
+    metal::float4 _e62 = accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x];
+    accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e62 + metal::float4(_e55, static_cast<float>(frame_5.samples_per_pass));
+    if (_e59 > 0u) {
+        metal::atomic_fetch_add_explicit(&counters[0], _e59, metal::memory_order_relaxed);
+    }
+    uint _e69 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e69, metal::memory_order_relaxed);
+    return;
+}
+
+struct renderInput {
+};
+[[max_total_threads_per_threadgroup(64)]] kernel void render(
+  metal::uint3 gid [[thread_position_in_grid]]
+, constant FrameUniforms& frame [[buffer(0)]]
+, constant TileParams& tile [[buffer(1)]]
+, device type_4 const& params [[buffer(6)]]
+, device type_8 const& instances [[buffer(3)]]
+, device type_9 const& nodes [[buffer(2)]]
+, device type_10 const& triangles [[buffer(4)]]
+, device type_13 const& attributes [[buffer(5)]]
+, device type_10& accum [[buffer(8)]]
+, device type_19& counters [[buffer(9)]]
+, constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
+) {
+    uint rng_state = {};
+    uint F32_INF = 2139095040u;
+    type_11 traversal_stack = {};
+    uint ray_count = {};
+    type_15 spawn_dirs = {};
+    type_15 spawn_weights = {};
+    uint spawn_count = {};
+    TileParams _e2 = tile;
+    metal::uint2 _e7 = metal::uint2(gid.x, gid.y);
+    if (metal::any(_e7 >= _e2.extent)) {
+        return;
+    }
+    render_pixel(_e2.origin + _e7, frame, tile, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
+    return;
+}

@@ -1,0 +1,1727 @@
+struct FrameUniforms {
+    uint samples_per_pass;
+    uint total_samples;
+    uint seed;
+    uint tlas_root;
+    uint instance_count;
+    uint light_count;
+    uint light_table;
+    uint medium_count;
+    uint medium_table;
+    uint camera_type;
+    uint camera_offset;
+    uint background_type;
+    uint background_offset;
+};
+
+struct TileParams {
+    uint2 origin;
+    uint2 extent;
+    uint2 image_size;
+    uint tile_index;
+    uint frame;
+};
+
+struct Ray {
+    float3 origin;
+    float tmin;
+    float3 dir;
+    float tmax;
+    uint depth;
+    uint kind;
+    uint medium;
+    int _end_pad_0;
+};
+
+struct Pinhole {
+    float3 position;
+    int _pad1_0;
+    float3 look_at;
+    int _pad2_0;
+    float3 up;
+    float fov;
+};
+
+struct Candidate {
+    float t;
+    uint slot;
+    uint primitive;
+    int _pad3_0;
+    float2 uv;
+    int _pad4_0;
+    int _pad4_1;
+    float3 normal;
+    int _end_pad_0;
+};
+
+struct GpuInstance {
+    float4 world_to_object_0_;
+    float4 world_to_object_1_;
+    float4 world_to_object_2_;
+    float4 object_to_world_0_;
+    float4 object_to_world_1_;
+    float4 object_to_world_2_;
+    uint geometry_type;
+    uint geometry_offset;
+    uint material_type;
+    uint material_offset;
+    uint blas_root;
+    uint triangle_offset;
+    uint flags;
+    uint object;
+};
+
+struct TriangleRay {
+    float3 origin;
+    uint kx;
+    uint ky;
+    uint kz;
+    int _pad4_0;
+    int _pad4_1;
+    float3 shear;
+    bool valid;
+};
+
+struct GpuNode {
+    float3 min_;
+    uint a;
+    float3 max_;
+    uint b;
+};
+
+struct Hit {
+    float3 position;
+    float t;
+    float3 normal;
+    int _pad3_0;
+    float3 geometric_normal;
+    int _pad4_0;
+    float2 uv;
+    bool front_face;
+    uint instance;
+    uint primitive;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
+};
+
+struct Triangle {
+    float3 v0_;
+    int _pad1_0;
+    float3 v1_;
+    int _pad2_0;
+    float3 v2_;
+    int _end_pad_0;
+};
+
+struct SkyGradient {
+    float3 zenith;
+    int _pad1_0;
+    float3 horizon;
+    int _pad2_0;
+    float3 ground;
+    int _end_pad_0;
+};
+
+struct BlinnPhong {
+    uint texture_;
+    int _pad1_0;
+    int _pad1_1;
+    int _pad1_2;
+    float3 diffuse;
+    int _pad2_0;
+    float3 specular;
+    float shininess;
+    float3 ambient;
+    int _pad5_0;
+    float2 uv_scale;
+    int _end_pad_0;
+    int _end_pad_1;
+};
+
+struct LightSample {
+    float3 dir;
+    float dist;
+    float3 radiance;
+    int _end_pad_0;
+};
+
+struct PointLight {
+    float3 position;
+    int _pad1_0;
+    float3 color;
+    float intensity;
+    float range;
+    float inner_range;
+    int _end_pad_0;
+    int _end_pad_1;
+};
+
+struct Lambert {
+    float3 albedo;
+    int _end_pad_0;
+};
+
+struct Mirror {
+    float3 tint;
+    int _end_pad_0;
+};
+
+struct UnlitTexture {
+    uint texture_;
+    int _pad1_0;
+    int _pad1_1;
+    int _pad1_2;
+    float3 tint;
+    int _pad2_0;
+    float2 uv_scale;
+    uint planar;
+    int _end_pad_0;
+};
+
+struct Frame {
+    Ray ray;
+    Hit hit;
+    uint slot;
+    int _pad3_0;
+    int _pad3_1;
+    int _pad3_2;
+    float3 sum;
+    int _pad4_0;
+    float3 dirs[1];
+    int _pad5_0;
+    float3 weights[1];
+    int _pad6_0;
+    uint count;
+    uint next;
+    int _end_pad_0;
+    int _end_pad_1;
+};
+
+static const uint RAY_CAMERA = 0u;
+static const uint NO_HIT = 4294967295u;
+static const bool HAS_MEDIA = false;
+static const uint MESH_GEOMETRY = 4294967295u;
+static const uint LEAF_BIT = 2147483648u;
+static const uint BLAS_STACK = 64u;
+static const uint TLAS_STACK = 64u;
+static const bool HAS_SECONDARY_RAYS = true;
+static const bool HAS_BACKGROUND = true;
+static const uint FLAG_MEDIUM = 4u;
+static const float INV_PI = 0.31830987;
+static const uint RAY_SHADOW = 2u;
+static const uint FLAG_SECONDARY = 2u;
+static const uint MAX_DEPTH = 3u;
+static const uint STACK_SIZE = 3u;
+static const uint MAX_SPAWN = 1u;
+static const uint RAY_SECONDARY = 1u;
+
+cbuffer frame : register(b0) { FrameUniforms frame; }
+cbuffer tile : register(b1) { TileParams tile; }
+static uint rng_state = (uint)0;
+ByteAddressBuffer params : register(t6);
+static uint F32_INF = 2139095040u;
+ByteAddressBuffer instances : register(t3);
+ByteAddressBuffer nodes : register(t2);
+ByteAddressBuffer triangles : register(t4);
+static uint2 traversal_stack[128] = (uint2[128])0;
+ByteAddressBuffer attributes : register(t5);
+static uint ray_count = (uint)0;
+ByteAddressBuffer texels : register(t7);
+static float3 spawn_dirs[1] = (float3[1])0;
+static float3 spawn_weights[1] = (float3[1])0;
+static uint spawn_count = (uint)0;
+RWByteAddressBuffer accum : register(u8);
+RWByteAddressBuffer counters : register(u9);
+
+uint pcg_hash(uint x)
+{
+    uint state = ((x * 747796405u) + 2891336453u);
+    uint word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    return ((word >> 22u) ^ word);
+}
+
+void rng_seed(uint2 pixel, uint sample_, uint seed)
+{
+    uint h = (uint)0;
+
+    const uint _e5 = pcg_hash(seed);
+    const uint _e7 = pcg_hash((sample_ ^ _e5));
+    const uint _e9 = pcg_hash((pixel.y ^ _e7));
+    const uint _e11 = pcg_hash((pixel.x ^ _e9));
+    h = _e11;
+    uint _e13 = h;
+    if ((_e13 == 0u)) {
+        h = 1u;
+    }
+    uint _e17 = h;
+    rng_state = _e17;
+    return;
+}
+
+Pinhole ConstructPinhole(float3 arg0, float3 arg1, float3 arg2, float arg3) {
+    Pinhole ret = (Pinhole)0;
+    ret.position = arg0;
+    ret.look_at = arg1;
+    ret.up = arg2;
+    ret.fov = arg3;
+    return ret;
+}
+
+Pinhole load_Pinhole(uint offset)
+{
+    uint _e5 = asuint(params.Load((offset + 0u)*4));
+    uint _e11 = asuint(params.Load((offset + 1u)*4));
+    uint _e17 = asuint(params.Load((offset + 2u)*4));
+    uint _e24 = asuint(params.Load((offset + 4u)*4));
+    uint _e30 = asuint(params.Load((offset + 5u)*4));
+    uint _e36 = asuint(params.Load((offset + 6u)*4));
+    uint _e43 = asuint(params.Load((offset + 8u)*4));
+    uint _e49 = asuint(params.Load((offset + 9u)*4));
+    uint _e55 = asuint(params.Load((offset + 10u)*4));
+    uint _e62 = asuint(params.Load((offset + 11u)*4));
+    const Pinhole pinhole = ConstructPinhole(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), float3(asfloat(_e24), asfloat(_e30), asfloat(_e36)), float3(asfloat(_e43), asfloat(_e49), asfloat(_e55)), asfloat(_e62));
+    return pinhole;
+}
+
+uint2 image_size_query()
+{
+    TileParams _e1 = tile;
+    return _e1.image_size;
+}
+
+uint samples_per_pixel_query()
+{
+    FrameUniforms _e1 = frame;
+    return _e1.total_samples;
+}
+
+float rand_next()
+{
+    uint _e1 = rng_state;
+    uint s_1 = ((_e1 * 747796405u) + 2891336453u);
+    rng_state = s_1;
+    uint word_1 = (((s_1 >> (((s_1 >> 28u) + 4u) & 31u)) ^ s_1) * 277803737u);
+    uint r_3 = ((word_1 >> 22u) ^ word_1);
+    return (float((r_3 >> 8u)) * (1.0 / 16777216.0));
+}
+
+float2 rand2_next()
+{
+    const float _e0 = rand_next();
+    const float _e1 = rand_next();
+    return float2(_e0, _e1);
+}
+
+float3 normalize_vec3f(float3 v)
+{
+    return ((dot(v, v) >= 1.1754944e-38) ? normalize(v) : (0.0).xxx);
+}
+
+Ray ConstructRay(float3 arg0, float arg1, float3 arg2, float arg3, uint arg4, uint arg5, uint arg6) {
+    Ray ret = (Ray)0;
+    ret.origin = arg0;
+    ret.tmin = arg1;
+    ret.dir = arg2;
+    ret.tmax = arg3;
+    ret.depth = arg4;
+    ret.kind = arg5;
+    ret.medium = arg6;
+    return ret;
+}
+
+Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
+{
+    float2 jitter = (float2)0;
+
+    const uint2 _e2 = image_size_query();
+    float2 size = float2(_e2);
+    jitter = (0.5).xx;
+    const uint _e7 = samples_per_pixel_query();
+    if ((_e7 > 1u)) {
+        const float2 _e10 = rand2_next();
+        jitter = _e10;
+    }
+    float2 _e12 = jitter;
+    float2 ndc = ((((float2(pixel_1) + _e12) / size) * (2.0).xx) - (1.0).xx);
+    const float3 _e24 = normalize_vec3f((cam.look_at - cam.position));
+    const float3 _e27 = normalize_vec3f(cross(_e24, cam.up));
+    float3 up = cross(_e27, _e24);
+    float h_1 = tan((radians(cam.fov) * 0.5));
+    float aspect = (size.x / size.y);
+    const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
+    uint _e52 = F32_INF;
+    const Ray ray_22 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_22;
+}
+
+Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
+{
+    const Pinhole _e3 = load_Pinhole(offset_1);
+    const Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
+    const Ray ray_23 = _e4;
+    return ray_23;
+}
+
+Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
+    Candidate ret = (Candidate)0;
+    ret.t = arg0;
+    ret.slot = arg1;
+    ret.primitive = arg2;
+    ret.uv = arg3;
+    ret.normal = arg4;
+    return ret;
+}
+
+Candidate no_candidate(float tmax)
+{
+    const Candidate candidate = ConstructCandidate(tmax, NO_HIT, 0u, (0.0).xx, (0.0).xxx);
+    return candidate;
+}
+
+Ray to_object(GpuInstance inst, Ray ray)
+{
+    Ray r = (Ray)0;
+
+    r = ray;
+    float4 o = float4(ray.origin, 1.0);
+    float4 d_1 = float4(ray.dir, 0.0);
+    r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
+    r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
+    Ray _e25 = r;
+    const Ray ray_24 = _e25;
+    return ray_24;
+}
+
+float3 safe_inverse(float3 d)
+{
+    float3 tiny = (1.1754944e-38).xxx;
+    float3 s_2 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 dd = ((abs(d) < tiny) ? (s_2 * tiny) : d);
+    return ((1.0).xxx / dd);
+}
+
+TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, float3 arg4, bool arg5) {
+    TriangleRay ret = (TriangleRay)0;
+    ret.origin = arg0;
+    ret.kx = arg1;
+    ret.ky = arg2;
+    ret.kz = arg3;
+    ret.shear = arg4;
+    ret.valid = arg5;
+    return ret;
+}
+
+TriangleRay prepare_triangle_ray(Ray ray_1)
+{
+    float3 d_2 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
+    float3 ad = abs(d_2);
+    bool y_gt = (ad.y > ad.x);
+    uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
+    uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
+    uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
+    float dz = d_2[min(uint(min(kz, 2u)), 2u)];
+    bool flip = (dz < 0.0);
+    uint kx = (flip ? ky0_ : kx0_);
+    uint ky = (flip ? kx0_ : ky0_);
+    uint3 inf_bits = (2139095040u).xxx;
+    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_2) & (2147483647u).xxx) < inf_bits)));
+    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_2[min(uint(min(kx, 2u)), 2u)] / dz), (d_2[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    return triangleray;
+}
+
+float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
+{
+    float4 _e8 = asfloat(triangles.Load4((slot * 3u)*16));
+    float3 a_1 = (_e8.xyz - r_1.origin);
+    float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
+    float3 b_2 = (_e18.xyz - r_1.origin);
+    float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
+    float3 c_5 = (_e28.xyz - r_1.origin);
+    float ax = (a_1[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_1[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float ay = (a_1[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_1[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float bx = (b_2[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_2[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float by = (b_2[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * b_2[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cx = (c_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cy = (c_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float u = ((cx * by) - (cy * bx));
+    float v_1 = ((ax * cy) - (ay * cx));
+    float w = ((bx * ay) - (by * ax));
+    bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
+    float det = ((u + v_1) + w);
+    float rcp_ = (1.0 / det);
+    float t_5 = ((((u * (r_1.shear.z * a_1[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_2[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    bool hit_9 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
+    uint _e173 = F32_INF;
+    return (hit_9 ? float3(t_5, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+}
+
+bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
+{
+    return true;
+}
+
+float slab(float3 lo, float3 hi, float3 origin, float3 inv_dir, float tmin_1, float tmax_2)
+{
+    float3 t0_ = ((lo - origin) * inv_dir);
+    float3 t1_ = ((hi - origin) * inv_dir);
+    float3 near_2 = min(t0_, t1_);
+    float3 far_2 = max(t0_, t1_);
+    float enter = max(max(near_2.x, near_2.y), max(near_2.z, tmin_1));
+    float exit = min((min(far_2.x, far_2.y) * 1.0000005), min((far_2.z * 1.0000005), tmax_2));
+    if ((enter <= exit)) {
+        return enter;
+    }
+    uint _e30 = F32_INF;
+    return asfloat(_e30);
+}
+
+uint2 pop_within(uint base, uint sp_in, float t)
+{
+    uint sp = (uint)0;
+
+    sp = sp_in;
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e4 = sp;
+        if ((_e4 == 0u)) {
+            break;
+        }
+        uint _e7 = sp;
+        sp = (_e7 - 1u);
+        uint _e10 = sp;
+        uint2 e = traversal_stack[min(uint(min((base + _e10), 127u)), 127u)];
+        if ((asfloat(e.y) <= t)) {
+            uint _e21 = sp;
+            return uint2(e.x, _e21);
+        }
+    }
+    return uint2(NO_HIT, 0u);
+}
+
+GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
+    GpuNode ret = (GpuNode)0;
+    ret.min_ = arg0;
+    ret.a = arg1;
+    ret.max_ = arg2;
+    ret.b = arg3;
+    return ret;
+}
+
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_3, Candidate best_in, bool shadow)
+{
+    Candidate best = (Candidate)0;
+    uint sp_1 = (uint)0;
+    uint node = (uint)0;
+    uint k = (uint)0;
+    uint near = (uint)0;
+    uint far = (uint)0;
+    float t_far = (float)0;
+
+    best = best_in;
+    const float3 _e8 = safe_inverse(ray_3.dir);
+    const TriangleRay _e9 = prepare_triangle_ray(ray_3);
+    uint base_1 = inst_2.blas_root;
+    sp_1 = 0u;
+    node = base_1;
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e14 = node;
+        GpuNode n_5 = ConstructGpuNode(asfloat(nodes.Load3(_e14*32+0)), asuint(nodes.Load(_e14*32+12)), asfloat(nodes.Load3(_e14*32+16)), asuint(nodes.Load(_e14*32+28)));
+        if (((n_5.b & LEAF_BIT) != 0u)) {
+            uint count = (n_5.b & ~(LEAF_BIT));
+            k = 0u;
+            uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+            bool loop_init = true;
+            while(true) {
+                if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                if (!loop_init) {
+                    uint _e52 = k;
+                    k = (_e52 + 1u);
+                }
+                loop_init = false;
+                uint _e29 = k;
+                if ((_e29 >= count)) {
+                    break;
+                }
+                uint _e34 = k;
+                uint prim = ((inst_2.triangle_offset + n_5.a) + _e34);
+                float _e38 = best.t;
+                const float3 _e39 = hit_triangle(_e9, prim, ray_3.tmin, _e38);
+                uint _e42 = F32_INF;
+                if ((_e39.x < asfloat(_e42))) {
+                    Candidate c_6 = ConstructCandidate(_e39.x, slot_1, prim, _e39.yz, (0.0).xxx);
+                    const bool _e50 = accept(inst_2, world_ray, c_6);
+                    if (_e50) {
+                        best = c_6;
+                        if (shadow) {
+                            Candidate _e51 = best;
+                            const Candidate candidate_1 = _e51;
+                            return candidate_1;
+                        }
+                    }
+                }
+            }
+        } else {
+            uint left = (base_1 + n_5.a);
+            uint right = (left + 1u);
+            GpuNode l_1 = ConstructGpuNode(asfloat(nodes.Load3(left*32+0)), asuint(nodes.Load(left*32+12)), asfloat(nodes.Load3(left*32+16)), asuint(nodes.Load(left*32+28)));
+            GpuNode rr = ConstructGpuNode(asfloat(nodes.Load3(right*32+0)), asuint(nodes.Load(right*32+12)), asfloat(nodes.Load3(right*32+16)), asuint(nodes.Load(right*32+28)));
+            float _e70 = best.t;
+            const float _e71 = slab(l_1.min_, l_1.max_, ray_3.origin, _e8, ray_3.tmin, _e70);
+            float _e77 = best.t;
+            const float _e78 = slab(rr.min_, rr.max_, ray_3.origin, _e8, ray_3.tmin, _e77);
+            uint _e80 = F32_INF;
+            uint _e84 = F32_INF;
+            if (((_e71 < asfloat(_e80)) && (_e78 < asfloat(_e84)))) {
+                near = left;
+                far = right;
+                t_far = _e78;
+                if ((_e78 < _e71)) {
+                    near = right;
+                    far = left;
+                    t_far = _e71;
+                }
+                uint _e92 = sp_1;
+                if ((_e92 < BLAS_STACK)) {
+                    uint _e96 = sp_1;
+                    uint _e98 = far;
+                    float _e99 = t_far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e96), 127u)), 127u)] = uint2(_e98, asuint(_e99));
+                    uint _e106 = sp_1;
+                    sp_1 = (_e106 + 1u);
+                }
+                uint _e109 = near;
+                node = _e109;
+                continue;
+            }
+            uint _e111 = F32_INF;
+            if ((_e71 < asfloat(_e111))) {
+                node = left;
+                continue;
+            }
+            uint _e115 = F32_INF;
+            if ((_e78 < asfloat(_e115))) {
+                node = right;
+                continue;
+            }
+        }
+        uint _e119 = sp_1;
+        float _e121 = best.t;
+        const uint2 _e122 = pop_within(TLAS_STACK, _e119, _e121);
+        if ((_e122.x == NO_HIT)) {
+            break;
+        }
+        node = _e122.x;
+        sp_1 = _e122.y;
+    }
+    Candidate _e128 = best;
+    const Candidate candidate_2 = _e128;
+    return candidate_2;
+}
+
+GpuInstance ConstructGpuInstance(float4 arg0, float4 arg1, float4 arg2, float4 arg3, float4 arg4, float4 arg5, uint arg6, uint arg7, uint arg8, uint arg9, uint arg10, uint arg11, uint arg12, uint arg13) {
+    GpuInstance ret = (GpuInstance)0;
+    ret.world_to_object_0_ = arg0;
+    ret.world_to_object_1_ = arg1;
+    ret.world_to_object_2_ = arg2;
+    ret.object_to_world_0_ = arg3;
+    ret.object_to_world_1_ = arg4;
+    ret.object_to_world_2_ = arg5;
+    ret.geometry_type = arg6;
+    ret.geometry_offset = arg7;
+    ret.material_type = arg8;
+    ret.material_offset = arg9;
+    ret.blas_root = arg10;
+    ret.triangle_offset = arg11;
+    ret.flags = arg12;
+    ret.object = arg13;
+    return ret;
+}
+
+Candidate intersect_object(uint slot_2, Ray ray_4, Candidate best_1, bool shadow_1)
+{
+    Ray r_2 = (Ray)0;
+
+    GpuInstance inst_5 = ConstructGpuInstance(asfloat(instances.Load4(slot_2*128+0)), asfloat(instances.Load4(slot_2*128+16)), asfloat(instances.Load4(slot_2*128+32)), asfloat(instances.Load4(slot_2*128+48)), asfloat(instances.Load4(slot_2*128+64)), asfloat(instances.Load4(slot_2*128+80)), asuint(instances.Load(slot_2*128+96)), asuint(instances.Load(slot_2*128+100)), asuint(instances.Load(slot_2*128+104)), asuint(instances.Load(slot_2*128+108)), asuint(instances.Load(slot_2*128+112)), asuint(instances.Load(slot_2*128+116)), asuint(instances.Load(slot_2*128+120)), asuint(instances.Load(slot_2*128+124)));
+    const Ray _e7 = to_object(inst_5, ray_4);
+    r_2 = _e7;
+    r_2.tmax = best_1.t;
+    if ((inst_5.geometry_type == MESH_GEOMETRY)) {
+        Ray _e14 = r_2;
+        const Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_4, _e14, best_1, shadow_1);
+        const Candidate candidate_3 = _e15;
+        return candidate_3;
+    }
+    const Candidate candidate_4 = best_1;
+    return candidate_4;
+}
+
+Triangle ConstructTriangle(float3 arg0, float3 arg1, float3 arg2) {
+    Triangle ret = (Triangle)0;
+    ret.v0_ = arg0;
+    ret.v1_ = arg1;
+    ret.v2_ = arg2;
+    return ret;
+}
+
+Triangle load_triangle(uint slot_3)
+{
+    float4 v0_ = asfloat(triangles.Load4((slot_3 * 3u)*16));
+    float4 v1_ = asfloat(triangles.Load4(((slot_3 * 3u) + 1u)*16));
+    float4 v2_ = asfloat(triangles.Load4(((slot_3 * 3u) + 2u)*16));
+    const Triangle triangle_ = ConstructTriangle(v0_.xyz, v1_.xyz, v2_.xyz);
+    return triangle_;
+}
+
+float3 point_to_world(GpuInstance inst_3, float3 p)
+{
+    float4 q = float4(p, 1.0);
+    return float3(dot(inst_3.object_to_world_0_, q), dot(inst_3.object_to_world_1_, q), dot(inst_3.object_to_world_2_, q));
+}
+
+float3 decode_octahedral(uint bits)
+{
+    float3 n = (float3)0;
+
+    float2 e_1 = (float2(int2(bits << 16, bits) >> 16) / 32767.0);
+    n = float3(e_1.x, e_1.y, ((1.0 - abs(e_1.x)) - abs(e_1.y)));
+    float _e14 = n.z;
+    if ((_e14 < 0.0)) {
+        float3 _e21 = n;
+        float2 s_3 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
+        float3 _e29 = n;
+        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_3);
+        float _e37 = n.z;
+        n = float3(xy.x, xy.y, _e37);
+    }
+    float3 _e39 = n;
+    const float3 _e40 = normalize_vec3f(_e39);
+    return _e40;
+}
+
+float3 normal_to_world(GpuInstance inst_4, float3 n_1)
+{
+    float3 w_1 = (((inst_4.world_to_object_0_.xyz * (n_1.x).xxx) + (inst_4.world_to_object_1_.xyz * (n_1.y).xxx)) + (inst_4.world_to_object_2_.xyz * (n_1.z).xxx));
+    const float3 _e19 = normalize_vec3f(w_1);
+    return _e19;
+}
+
+Hit ConstructHit(float3 arg0, float arg1, float3 arg2, float3 arg3, float2 arg4, bool arg5, uint arg6, uint arg7) {
+    Hit ret = (Hit)0;
+    ret.position = arg0;
+    ret.t = arg1;
+    ret.normal = arg2;
+    ret.geometric_normal = arg3;
+    ret.uv = arg4;
+    ret.front_face = arg5;
+    ret.instance = arg6;
+    ret.primitive = arg7;
+    return ret;
+}
+
+Hit finish_hit(Ray ray_5, Candidate c_1)
+{
+    Hit hit = (Hit)0;
+    float3 n_geo = (float3)0;
+    float3 n_shade = (float3)0;
+
+    GpuInstance inst_6 = ConstructGpuInstance(asfloat(instances.Load4(c_1.slot*128+0)), asfloat(instances.Load4(c_1.slot*128+16)), asfloat(instances.Load4(c_1.slot*128+32)), asfloat(instances.Load4(c_1.slot*128+48)), asfloat(instances.Load4(c_1.slot*128+64)), asfloat(instances.Load4(c_1.slot*128+80)), asuint(instances.Load(c_1.slot*128+96)), asuint(instances.Load(c_1.slot*128+100)), asuint(instances.Load(c_1.slot*128+104)), asuint(instances.Load(c_1.slot*128+108)), asuint(instances.Load(c_1.slot*128+112)), asuint(instances.Load(c_1.slot*128+116)), asuint(instances.Load(c_1.slot*128+120)), asuint(instances.Load(c_1.slot*128+124)));
+    hit = ConstructHit((ray_5.origin + (ray_5.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_6.object, c_1.primitive);
+    n_geo = c_1.normal;
+    n_shade = c_1.normal;
+    if ((inst_6.geometry_type == MESH_GEOMETRY)) {
+        const Triangle _e35 = load_triangle(c_1.primitive);
+        float2 b_3 = c_1.uv;
+        float w_2 = ((1.0 - b_3.x) - b_3.y);
+        const float3 _e56 = point_to_world(inst_6, (((_e35.v0_ * (w_2).xxx) + (_e35.v1_ * (b_3.x).xxx)) + (_e35.v2_ * (b_3.y).xxx)));
+        hit.position = _e56;
+        n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
+        uint4 a0_ = asuint(attributes.Load4((c_1.primitive * 2u)*16));
+        uint4 a1_ = asuint(attributes.Load4(((c_1.primitive * 2u) + 1u)*16));
+        const float3 _e79 = decode_octahedral(a0_.x);
+        const float3 _e83 = decode_octahedral(a0_.y);
+        const float3 _e89 = decode_octahedral(a0_.z);
+        n_shade = (((_e79 * (w_2).xxx) + (_e83 * (b_3.x).xxx)) + (_e89 * (b_3.y).xxx));
+        float3 _e94 = n_shade;
+        float3 _e95 = n_shade;
+        if ((dot(_e94, _e95) < 1e-12)) {
+            float3 _e99 = n_geo;
+            n_shade = _e99;
+        }
+        uint _e100 = a0_.w;
+        float2 uv0_ = float2(f16tof32(_e100), f16tof32((_e100) >> 16));
+        uint _e102 = a1_.x;
+        float2 uv1_ = float2(f16tof32(_e102), f16tof32((_e102) >> 16));
+        uint _e104 = a1_.y;
+        float2 uv2_ = float2(f16tof32(_e104), f16tof32((_e104) >> 16));
+        hit.uv = (((uv0_ * (w_2).xx) + (uv1_ * (b_3.x).xx)) + (uv2_ * (b_3.y).xx));
+        float4 _e123 = asfloat(triangles.Load4((c_1.primitive * 3u)*16));
+        hit.primitive = asuint(_e123.w);
+    }
+    float3 _e127 = n_geo;
+    const float3 _e128 = normal_to_world(inst_6, _e127);
+    hit.geometric_normal = _e128;
+    float3 _e130 = n_shade;
+    const float3 _e131 = normal_to_world(inst_6, _e130);
+    hit.normal = _e131;
+    float3 _e135 = hit.geometric_normal;
+    hit.front_face = (dot(ray_5.dir, _e135) < 0.0);
+    Hit _e139 = hit;
+    const Hit hit_10 = _e139;
+    return hit_10;
+}
+
+uint medium_at(float3 p_1, uint exclude)
+{
+    uint inside = (uint)0;
+    float nearest = (float)0;
+    uint i = (uint)0;
+
+    if (!(HAS_MEDIA)) {
+        return 0u;
+    }
+    FrameUniforms frame_1 = frame;
+    const float3 _e12 = normalize_vec3f(float3(0.5773, 0.5774, 0.5775));
+    uint _e14 = F32_INF;
+    Ray probe = ConstructRay(p_1, 0.0, _e12, asfloat(_e14), 0u, 0u, 0u);
+    inside = 0u;
+    uint _e23 = F32_INF;
+    nearest = asfloat(_e23);
+    uint end = frame_1.medium_count;
+    i = 0u;
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e57 = i;
+            i = (_e57 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e29 = i;
+        if ((_e29 >= end)) {
+            break;
+        }
+        uint _e32 = i;
+        uint slot_4 = asuint(params.Load((frame_1.medium_table + _e32)*4));
+        if ((slot_4 != exclude)) {
+            uint _e39 = F32_INF;
+            const Candidate _e41 = no_candidate(asfloat(_e39));
+            const Candidate _e43 = intersect_object(slot_4, probe, _e41, false);
+            float _e48 = nearest;
+            if (((_e43.slot != NO_HIT) && (_e43.t < _e48))) {
+                const Hit _e51 = finish_hit(probe, _e43);
+                if (!(_e51.front_face)) {
+                    inside = (slot_4 + 1u);
+                    nearest = _e43.t;
+                }
+            }
+        }
+    }
+    uint _e60 = inside;
+    return _e60;
+}
+
+Candidate intersect_scene(Ray ray_6, bool shadow_2)
+{
+    Candidate best_2 = (Candidate)0;
+    uint sp_2 = (uint)0;
+    uint node_1 = (uint)0;
+    uint k_1 = (uint)0;
+    uint near_1 = (uint)0;
+    uint far_1 = (uint)0;
+    float t_far_1 = (float)0;
+
+    uint _e3 = ray_count;
+    ray_count = (_e3 + 1u);
+    const Candidate _e7 = no_candidate(ray_6.tmax);
+    best_2 = _e7;
+    FrameUniforms frame_2 = frame;
+    if ((frame_2.instance_count == 0u)) {
+        Candidate _e14 = best_2;
+        const Candidate candidate_5 = _e14;
+        return candidate_5;
+    }
+    const float3 _e16 = safe_inverse(ray_6.dir);
+    sp_2 = 0u;
+    node_1 = frame_2.tlas_root;
+    uint _e21 = node_1;
+    GpuNode root = ConstructGpuNode(asfloat(nodes.Load3(_e21*32+0)), asuint(nodes.Load(_e21*32+12)), asfloat(nodes.Load3(_e21*32+16)), asuint(nodes.Load(_e21*32+28)));
+    float _e30 = best_2.t;
+    const float _e31 = slab(root.min_, root.max_, ray_6.origin, _e16, ray_6.tmin, _e30);
+    uint _e33 = F32_INF;
+    if ((_e31 == asfloat(_e33))) {
+        Candidate _e36 = best_2;
+        const Candidate candidate_6 = _e36;
+        return candidate_6;
+    }
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        uint _e37 = node_1;
+        GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3(_e37*32+0)), asuint(nodes.Load(_e37*32+12)), asfloat(nodes.Load3(_e37*32+16)), asuint(nodes.Load(_e37*32+28)));
+        if (((n_6.b & LEAF_BIT) != 0u)) {
+            uint count_1 = (n_6.b & ~(LEAF_BIT));
+            k_1 = 0u;
+            uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+            bool loop_init_2 = true;
+            while(true) {
+                if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (!loop_init_2) {
+                    uint _e65 = k_1;
+                    k_1 = (_e65 + 1u);
+                }
+                loop_init_2 = false;
+                uint _e52 = k_1;
+                if ((_e52 >= count_1)) {
+                    break;
+                }
+                uint _e55 = k_1;
+                Candidate _e57 = best_2;
+                const Candidate _e58 = intersect_object((n_6.a + _e55), ray_6, _e57, shadow_2);
+                best_2 = _e58;
+                uint _e60 = best_2.slot;
+                if ((shadow_2 && (_e60 != NO_HIT))) {
+                    Candidate _e64 = best_2;
+                    const Candidate candidate_7 = _e64;
+                    return candidate_7;
+                }
+            }
+        } else {
+            uint left_1 = (frame_2.tlas_root + n_6.a);
+            uint right_1 = (left_1 + 1u);
+            GpuNode l_2 = ConstructGpuNode(asfloat(nodes.Load3(left_1*32+0)), asuint(nodes.Load(left_1*32+12)), asfloat(nodes.Load3(left_1*32+16)), asuint(nodes.Load(left_1*32+28)));
+            GpuNode rr_1 = ConstructGpuNode(asfloat(nodes.Load3(right_1*32+0)), asuint(nodes.Load(right_1*32+12)), asfloat(nodes.Load3(right_1*32+16)), asuint(nodes.Load(right_1*32+28)));
+            float _e84 = best_2.t;
+            const float _e85 = slab(l_2.min_, l_2.max_, ray_6.origin, _e16, ray_6.tmin, _e84);
+            float _e91 = best_2.t;
+            const float _e92 = slab(rr_1.min_, rr_1.max_, ray_6.origin, _e16, ray_6.tmin, _e91);
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if (((_e85 < asfloat(_e94)) && (_e92 < asfloat(_e98)))) {
+                near_1 = left_1;
+                far_1 = right_1;
+                t_far_1 = _e92;
+                if ((_e92 < _e85)) {
+                    near_1 = right_1;
+                    far_1 = left_1;
+                    t_far_1 = _e85;
+                }
+                uint _e106 = sp_2;
+                if ((_e106 < TLAS_STACK)) {
+                    uint _e109 = sp_2;
+                    uint _e110 = far_1;
+                    float _e111 = t_far_1;
+                    traversal_stack[min(uint(min(_e109, 127u)), 127u)] = uint2(_e110, asuint(_e111));
+                    uint _e118 = sp_2;
+                    sp_2 = (_e118 + 1u);
+                }
+                uint _e121 = near_1;
+                node_1 = _e121;
+                continue;
+            }
+            uint _e123 = F32_INF;
+            if ((_e85 < asfloat(_e123))) {
+                node_1 = left_1;
+                continue;
+            }
+            uint _e127 = F32_INF;
+            if ((_e92 < asfloat(_e127))) {
+                node_1 = right_1;
+                continue;
+            }
+        }
+        uint _e131 = sp_2;
+        float _e133 = best_2.t;
+        const uint2 _e134 = pop_within(0u, _e131, _e133);
+        if ((_e134.x == NO_HIT)) {
+            break;
+        }
+        node_1 = _e134.x;
+        sp_2 = _e134.y;
+    }
+    Candidate _e140 = best_2;
+    const Candidate candidate_8 = _e140;
+    return candidate_8;
+}
+
+SkyGradient ConstructSkyGradient(float3 arg0, float3 arg1, float3 arg2) {
+    SkyGradient ret = (SkyGradient)0;
+    ret.zenith = arg0;
+    ret.horizon = arg1;
+    ret.ground = arg2;
+    return ret;
+}
+
+SkyGradient load_SkyGradient(uint offset_2)
+{
+    uint _e5 = asuint(params.Load((offset_2 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_2 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_2 + 2u)*4));
+    uint _e24 = asuint(params.Load((offset_2 + 4u)*4));
+    uint _e30 = asuint(params.Load((offset_2 + 5u)*4));
+    uint _e36 = asuint(params.Load((offset_2 + 6u)*4));
+    uint _e43 = asuint(params.Load((offset_2 + 8u)*4));
+    uint _e49 = asuint(params.Load((offset_2 + 9u)*4));
+    uint _e55 = asuint(params.Load((offset_2 + 10u)*4));
+    const SkyGradient skygradient = ConstructSkyGradient(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), float3(asfloat(_e24), asfloat(_e30), asfloat(_e36)), float3(asfloat(_e43), asfloat(_e49), asfloat(_e55)));
+    return skygradient;
+}
+
+float3 sky_gradient(SkyGradient b, Ray ray_7)
+{
+    const float3 _e3 = normalize_vec3f(ray_7.dir);
+    float y_1 = _e3.y;
+    if ((y_1 < 0.0)) {
+        return lerp(b.horizon, b.ground, (min((-(y_1) * 4.0), 1.0)).xxx);
+    }
+    return lerp(b.horizon, b.zenith, (sqrt(y_1)).xxx);
+}
+
+float3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_8)
+{
+    const SkyGradient _e2 = load_SkyGradient(offset_3);
+    const float3 _e3 = sky_gradient(_e2, ray_8);
+    return _e3;
+}
+
+float3 miss(Ray ray_9)
+{
+    if (!(HAS_BACKGROUND)) {
+        return (0.0).xxx;
+    }
+    FrameUniforms frame_3 = frame;
+    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_9);
+    return _e9;
+}
+
+float3 ZeroValuefloat3() {
+    return (float3)0;
+}
+
+float3 dispatch_medium(uint type_id_2, uint offset_4, Ray ray_10, float t_1, float3 radiance)
+{
+    return ZeroValuefloat3();
+}
+
+float3 through_medium(Ray ray_11, float t_2, float3 radiance_1)
+{
+    if (!(HAS_MEDIA)) {
+        return radiance_1;
+    }
+    if ((ray_11.medium == 0u)) {
+        return radiance_1;
+    }
+    GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4((ray_11.medium - 1u)*128+0)), asfloat(instances.Load4((ray_11.medium - 1u)*128+16)), asfloat(instances.Load4((ray_11.medium - 1u)*128+32)), asfloat(instances.Load4((ray_11.medium - 1u)*128+48)), asfloat(instances.Load4((ray_11.medium - 1u)*128+64)), asfloat(instances.Load4((ray_11.medium - 1u)*128+80)), asuint(instances.Load((ray_11.medium - 1u)*128+96)), asuint(instances.Load((ray_11.medium - 1u)*128+100)), asuint(instances.Load((ray_11.medium - 1u)*128+104)), asuint(instances.Load((ray_11.medium - 1u)*128+108)), asuint(instances.Load((ray_11.medium - 1u)*128+112)), asuint(instances.Load((ray_11.medium - 1u)*128+116)), asuint(instances.Load((ray_11.medium - 1u)*128+120)), asuint(instances.Load((ray_11.medium - 1u)*128+124)));
+    if (((inst_7.flags & FLAG_MEDIUM) == 0u)) {
+        return radiance_1;
+    }
+    const float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_11, t_2, radiance_1);
+    return _e21;
+}
+
+BlinnPhong ConstructBlinnPhong(uint arg0, float3 arg1, float3 arg2, float arg3, float3 arg4, float2 arg5) {
+    BlinnPhong ret = (BlinnPhong)0;
+    ret.texture_ = arg0;
+    ret.diffuse = arg1;
+    ret.specular = arg2;
+    ret.shininess = arg3;
+    ret.ambient = arg4;
+    ret.uv_scale = arg5;
+    return ret;
+}
+
+BlinnPhong load_BlinnPhong(uint offset_5)
+{
+    uint _e5 = asuint(params.Load((offset_5 + 0u)*4));
+    uint _e10 = asuint(params.Load((offset_5 + 4u)*4));
+    uint _e16 = asuint(params.Load((offset_5 + 5u)*4));
+    uint _e22 = asuint(params.Load((offset_5 + 6u)*4));
+    uint _e29 = asuint(params.Load((offset_5 + 8u)*4));
+    uint _e35 = asuint(params.Load((offset_5 + 9u)*4));
+    uint _e41 = asuint(params.Load((offset_5 + 10u)*4));
+    uint _e48 = asuint(params.Load((offset_5 + 11u)*4));
+    uint _e54 = asuint(params.Load((offset_5 + 12u)*4));
+    uint _e60 = asuint(params.Load((offset_5 + 13u)*4));
+    uint _e66 = asuint(params.Load((offset_5 + 14u)*4));
+    uint _e73 = asuint(params.Load((offset_5 + 16u)*4));
+    uint _e79 = asuint(params.Load((offset_5 + 17u)*4));
+    const BlinnPhong blinnphong = ConstructBlinnPhong(_e5, float3(asfloat(_e10), asfloat(_e16), asfloat(_e22)), float3(asfloat(_e29), asfloat(_e35), asfloat(_e41)), asfloat(_e48), float3(asfloat(_e54), asfloat(_e60), asfloat(_e66)), float2(asfloat(_e73), asfloat(_e79)));
+    return blinnphong;
+}
+
+int naga_f2i32(float value) {
+    return int(clamp(value, -2147483600.0, 2147483500.0));
+}
+
+int i32_from_f32_(float x_1)
+{
+    return (((asuint(x_1) & 2147483647u) > 2139095040u) ? int(0) : naga_f2i32(min(max(x_1, -2147483600.0), 2147483500.0)));
+}
+
+int naga_div(int lhs, int rhs) {
+    return lhs / (((lhs == int(-2147483647 - 1) & rhs == -1) | (rhs == 0)) ? 1 : rhs);
+}
+
+int rem_i32_(int a, int b_1)
+{
+    bool by_zero = (b_1 == int(0));
+    int divisor = (((a == int(-2147483647 - 1)) & (b_1 == int(-1))) ? int(1) : (by_zero ? int(1) : b_1));
+    return (by_zero ? int(0) : asint(asuint(a) - asuint(asint(asuint(divisor) * asuint(naga_div(a, divisor))))));
+}
+
+float srgb_channel(float c_2)
+{
+    if ((c_2 <= 0.04045)) {
+        return (c_2 / 12.92);
+    }
+    return pow(((c_2 + 0.055) / 1.055), 2.4);
+}
+
+float4 texel_at(uint t_3, int x_2, int y)
+{
+    uint base_2 = asuint(params.Load(t_3*4));
+    uint _e10 = asuint(params.Load((t_3 + 1u)*4));
+    uint w_3 = max(_e10, 1u);
+    uint _e17 = asuint(params.Load((t_3 + 2u)*4));
+    uint h_2 = max(_e17, 1u);
+    uint format = asuint(params.Load((t_3 + 3u)*4));
+    const int _e26 = rem_i32_(x_2, int(w_3));
+    const int _e30 = rem_i32_(asint(asuint(_e26) + asuint(int(w_3))), int(w_3));
+    uint xi = uint(_e30);
+    const int _e33 = rem_i32_(y, int(h_2));
+    const int _e37 = rem_i32_(asint(asuint(_e33) + asuint(int(h_2))), int(h_2));
+    uint yi = uint(_e37);
+    uint index = ((yi * w_3) + xi);
+    if ((format == 0u)) {
+        uint _e46 = asuint(texels.Load((base_2 + index)*4));
+        float4 c_7 = (float4(_e46 & 0xFF, _e46 >> 8 & 0xFF, _e46 >> 16 & 0xFF, _e46 >> 24) / 255.0);
+        const float _e49 = srgb_channel(c_7.x);
+        const float _e51 = srgb_channel(c_7.y);
+        const float _e53 = srgb_channel(c_7.z);
+        return float4(_e49, _e51, _e53, c_7.w);
+    }
+    uint _e61 = asuint(texels.Load((base_2 + (index * 2u))*4));
+    float2 rg = float2(f16tof32(_e61), f16tof32((_e61) >> 16));
+    uint _e70 = asuint(texels.Load(((base_2 + (index * 2u)) + 1u)*4));
+    float2 ba = float2(f16tof32(_e70), f16tof32((_e70) >> 16));
+    return float4(rg, ba);
+}
+
+float4 sample_texture(uint t_4, float2 uv)
+{
+    uint _e6 = asuint(params.Load((t_4 + 1u)*4));
+    float w_4 = float(max(_e6, 1u));
+    uint _e14 = asuint(params.Load((t_4 + 2u)*4));
+    float h_3 = float(max(_e14, 1u));
+    float2 p_3 = ((uv * float2(w_4, h_3)) - (0.5).xx);
+    float2 f_1 = floor(p_3);
+    float2 fr = (p_3 - f_1);
+    const int _e26 = i32_from_f32_(f_1.x);
+    const int _e28 = i32_from_f32_(f_1.y);
+    const float4 _e29 = texel_at(t_4, _e26, _e28);
+    const float4 _e32 = texel_at(t_4, asint(asuint(_e26) + asuint(int(1))), _e28);
+    float4 a_2 = lerp(_e29, _e32, (fr.x).xxxx);
+    const float4 _e38 = texel_at(t_4, _e26, asint(asuint(_e28) + asuint(int(1))));
+    const float4 _e43 = texel_at(t_4, asint(asuint(_e26) + asuint(int(1))), asint(asuint(_e28) + asuint(int(1))));
+    float4 b_4 = lerp(_e38, _e43, (fr.x).xxxx);
+    return lerp(a_2, b_4, (fr.y).xxxx);
+}
+
+uint light_count_query()
+{
+    FrameUniforms _e1 = frame;
+    return _e1.light_count;
+}
+
+PointLight ConstructPointLight(float3 arg0, float3 arg1, float arg2, float arg3, float arg4) {
+    PointLight ret = (PointLight)0;
+    ret.position = arg0;
+    ret.color = arg1;
+    ret.intensity = arg2;
+    ret.range = arg3;
+    ret.inner_range = arg4;
+    return ret;
+}
+
+PointLight load_PointLight(uint offset_6)
+{
+    uint _e5 = asuint(params.Load((offset_6 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_6 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_6 + 2u)*4));
+    uint _e24 = asuint(params.Load((offset_6 + 4u)*4));
+    uint _e30 = asuint(params.Load((offset_6 + 5u)*4));
+    uint _e36 = asuint(params.Load((offset_6 + 6u)*4));
+    uint _e43 = asuint(params.Load((offset_6 + 7u)*4));
+    uint _e49 = asuint(params.Load((offset_6 + 8u)*4));
+    uint _e55 = asuint(params.Load((offset_6 + 9u)*4));
+    const PointLight pointlight = ConstructPointLight(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), float3(asfloat(_e24), asfloat(_e30), asfloat(_e36)), asfloat(_e43), asfloat(_e49), asfloat(_e55));
+    return pointlight;
+}
+
+float3 offset_origin(float3 p_2, float3 n_2)
+{
+    FrameUniforms _e3 = frame;
+    GpuNode root_1 = ConstructGpuNode(asfloat(nodes.Load3(_e3.tlas_root*32+0)), asuint(nodes.Load(_e3.tlas_root*32+12)), asfloat(nodes.Load3(_e3.tlas_root*32+16)), asuint(nodes.Load(_e3.tlas_root*32+28)));
+    float3 a_3 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
+    float m_5 = max(max(a_3.x, a_3.y), a_3.z);
+    return (p_2 + (n_2 * ((m_5 * (1.0 / 65536.0))).xxx));
+}
+
+float shadow_query(float3 position, float3 normal, float3 dir, float dist)
+{
+    float3 n_3 = (float3)0;
+
+    n_3 = normal;
+    float3 _e5 = n_3;
+    if ((dot(dir, _e5) < 0.0)) {
+        float3 _e9 = n_3;
+        n_3 = -(_e9);
+    }
+    float3 _e11 = n_3;
+    const float3 _e12 = offset_origin(position, _e11);
+    Ray ray_25 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    const Candidate _e23 = intersect_scene(ray_25, true);
+    return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
+}
+
+LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2) {
+    LightSample ret = (LightSample)0;
+    ret.dir = arg0;
+    ret.dist = arg1;
+    ret.radiance = arg2;
+    return ret;
+}
+
+LightSample point_light(PointLight l, float3 position_1, float3 normal_1)
+{
+    float strength = (float)0;
+
+    float3 to_light = (l.position - position_1);
+    float dist_1 = length(to_light);
+    float3 dir_3 = (to_light / (max(dist_1, 1e-20)).xxx);
+    strength = (l.intensity / max((dist_1 * dist_1), 1e-20));
+    if ((l.range > 0.0)) {
+        float _e19 = strength;
+        strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_1)));
+    }
+    const float _e26 = shadow_query(position_1, normal_1, dir_3, dist_1);
+    float _e28 = strength;
+    const LightSample lightsample = ConstructLightSample(dir_3, dist_1, ((l.color * (_e28).xxx) * (_e26).xxx));
+    return lightsample;
+}
+
+LightSample dispatch_light(uint type_id_3, uint offset_7, float3 position_2, float3 normal_2)
+{
+    const PointLight _e3 = load_PointLight(offset_7);
+    const LightSample _e4 = point_light(_e3, position_2, normal_2);
+    const LightSample lightsample_1 = _e4;
+    return lightsample_1;
+}
+
+LightSample sample_light_query(uint i_1, float3 position_3, float3 normal_3)
+{
+    FrameUniforms frame_4 = frame;
+    if ((i_1 >= frame_4.light_count)) {
+        const LightSample lightsample_2 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx);
+        return lightsample_2;
+    }
+    uint entry = (frame_4.light_table + (i_1 * 2u));
+    uint _e21 = asuint(params.Load(entry*4));
+    uint _e26 = asuint(params.Load((entry + 1u)*4));
+    const LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3);
+    const LightSample lightsample_3 = _e27;
+    return lightsample_3;
+}
+
+float3 blinn_phong_shade(BlinnPhong m, Ray ray_12, Hit hit_1)
+{
+    float3 color = (float3)0;
+    uint i_2 = (uint)0;
+
+    float3 n_7 = faceforward(hit_1.normal, ray_12.dir, hit_1.normal);
+    const float3 _e8 = normalize_vec3f(ray_12.dir);
+    float3 v_2 = -(_e8);
+    const float4 _e15 = sample_texture(m.texture_, (hit_1.uv * m.uv_scale));
+    float3 kd = (m.diffuse * _e15.xyz);
+    float s_4 = max(m.shininess, 0.0);
+    float norm = ((s_4 + 8.0) * (INV_PI / 8.0));
+    color = (m.ambient * kd);
+    const uint _e31 = light_count_query();
+    i_2 = 0u;
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e64 = i_2;
+            i_2 = (_e64 + 1u);
+        }
+        loop_init_3 = false;
+        uint _e33 = i_2;
+        if ((_e33 >= _e31)) {
+            break;
+        }
+        uint _e35 = i_2;
+        const LightSample _e38 = sample_light_query(_e35, hit_1.position, hit_1.geometric_normal);
+        float ndl = max(dot(n_7, _e38.dir), 0.0);
+        const float3 _e45 = normalize_vec3f((_e38.dir + v_2));
+        float highlight = (pow(max(dot(n_7, _e45), 0.0), s_4) * norm);
+        float3 _e51 = color;
+        color = (_e51 + ((_e38.radiance * (ndl).xxx) * ((kd * (INV_PI).xxx) + (m.specular * (highlight).xxx))));
+    }
+    float3 _e67 = color;
+    return _e67;
+}
+
+Lambert ConstructLambert(float3 arg0) {
+    Lambert ret = (Lambert)0;
+    ret.albedo = arg0;
+    return ret;
+}
+
+Lambert load_Lambert(uint offset_8)
+{
+    uint _e5 = asuint(params.Load((offset_8 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_8 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_8 + 2u)*4));
+    const Lambert lambert = ConstructLambert(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)));
+    return lambert;
+}
+
+float3 lambert_shade(Lambert m_1, Ray ray_13, Hit hit_2)
+{
+    float3 color_1 = (float3)0;
+    uint i_3 = (uint)0;
+
+    float3 n_8 = faceforward(hit_2.normal, ray_13.dir, hit_2.normal);
+    color_1 = (0.0).xxx;
+    const uint _e11 = light_count_query();
+    i_3 = 0u;
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    bool loop_init_4 = true;
+    while(true) {
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e33 = i_3;
+            i_3 = (_e33 + 1u);
+        }
+        loop_init_4 = false;
+        uint _e13 = i_3;
+        if ((_e13 >= _e11)) {
+            break;
+        }
+        uint _e15 = i_3;
+        const LightSample _e18 = sample_light_query(_e15, hit_2.position, hit_2.geometric_normal);
+        float3 _e19 = color_1;
+        color_1 = (_e19 + (((m_1.albedo * (INV_PI).xxx) * _e18.radiance) * (max(dot(n_8, _e18.dir), 0.0)).xxx));
+    }
+    float3 _e36 = color_1;
+    return _e36;
+}
+
+Mirror ConstructMirror(float3 arg0) {
+    Mirror ret = (Mirror)0;
+    ret.tint = arg0;
+    return ret;
+}
+
+Mirror load_Mirror(uint offset_9)
+{
+    uint _e5 = asuint(params.Load((offset_9 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_9 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_9 + 2u)*4));
+    const Mirror mirror = ConstructMirror(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)));
+    return mirror;
+}
+
+float3 mirror_shade(Mirror m_2, Ray ray_14, Hit hit_3, float3 secondary)
+{
+    return secondary;
+}
+
+UnlitTexture ConstructUnlitTexture(uint arg0, float3 arg1, float2 arg2, uint arg3) {
+    UnlitTexture ret = (UnlitTexture)0;
+    ret.texture_ = arg0;
+    ret.tint = arg1;
+    ret.uv_scale = arg2;
+    ret.planar = arg3;
+    return ret;
+}
+
+UnlitTexture load_UnlitTexture(uint offset_10)
+{
+    uint _e5 = asuint(params.Load((offset_10 + 0u)*4));
+    uint _e10 = asuint(params.Load((offset_10 + 4u)*4));
+    uint _e16 = asuint(params.Load((offset_10 + 5u)*4));
+    uint _e22 = asuint(params.Load((offset_10 + 6u)*4));
+    uint _e29 = asuint(params.Load((offset_10 + 8u)*4));
+    uint _e35 = asuint(params.Load((offset_10 + 9u)*4));
+    uint _e42 = asuint(params.Load((offset_10 + 10u)*4));
+    const UnlitTexture unlittexture = ConstructUnlitTexture(_e5, float3(asfloat(_e10), asfloat(_e16), asfloat(_e22)), float2(asfloat(_e29), asfloat(_e35)), _e42);
+    return unlittexture;
+}
+
+float3 unlit_texture_shade(UnlitTexture m_3, Ray ray_15, Hit hit_4)
+{
+    float2 uv_1 = (float2)0;
+
+    uv_1 = hit_4.uv;
+    if ((m_3.planar == 1u)) {
+        uv_1 = float2(hit_4.position.x, -(hit_4.position.y));
+    }
+    float2 _e14 = uv_1;
+    const float4 _e17 = sample_texture(m_3.texture_, (_e14 * m_3.uv_scale));
+    return (_e17.xyz * m_3.tint);
+}
+
+float3 dispatch_closest_hit(uint type_id_4, uint offset_11, Ray ray_16, Hit hit_5, float3 secondary_1)
+{
+    switch(type_id_4) {
+        case 0u: {
+            const BlinnPhong _e5 = load_BlinnPhong(offset_11);
+            const float3 _e6 = blinn_phong_shade(_e5, ray_16, hit_5);
+            return _e6;
+        }
+        case 1u: {
+            const Lambert _e7 = load_Lambert(offset_11);
+            const float3 _e8 = lambert_shade(_e7, ray_16, hit_5);
+            return _e8;
+        }
+        case 2u: {
+            const Mirror _e9 = load_Mirror(offset_11);
+            const float3 _e10 = mirror_shade(_e9, ray_16, hit_5, secondary_1);
+            return _e10;
+        }
+        case 3u: {
+            const UnlitTexture _e11 = load_UnlitTexture(offset_11);
+            const float3 _e12 = unlit_texture_shade(_e11, ray_16, hit_5);
+            return _e12;
+        }
+        default: {
+            break;
+        }
+    }
+    return ZeroValuefloat3();
+}
+
+float3 shade_direct(Ray ray_17, Candidate c_3)
+{
+    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_3.slot*128+0)), asfloat(instances.Load4(c_3.slot*128+16)), asfloat(instances.Load4(c_3.slot*128+32)), asfloat(instances.Load4(c_3.slot*128+48)), asfloat(instances.Load4(c_3.slot*128+64)), asfloat(instances.Load4(c_3.slot*128+80)), asuint(instances.Load(c_3.slot*128+96)), asuint(instances.Load(c_3.slot*128+100)), asuint(instances.Load(c_3.slot*128+104)), asuint(instances.Load(c_3.slot*128+108)), asuint(instances.Load(c_3.slot*128+112)), asuint(instances.Load(c_3.slot*128+116)), asuint(instances.Load(c_3.slot*128+120)), asuint(instances.Load(c_3.slot*128+124)));
+    const Hit _e6 = finish_hit(ray_17, c_3);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e6, (0.0).xxx);
+    return _e11;
+}
+
+void rt_spawn(float3 dir_1, float3 weight)
+{
+    uint _e3 = spawn_count;
+    if ((_e3 < 1u)) {
+        spawn_dirs[min(uint(_e3), 0u)] = dir_1;
+        spawn_weights[min(uint(_e3), 0u)] = weight;
+        spawn_count = (_e3 + 1u);
+    }
+}
+
+void mirror_rays(Mirror m_4, Ray ray_18, Hit hit_6)
+{
+    const float3 _e4 = normalize_vec3f(ray_18.dir);
+    rt_spawn(reflect(_e4, hit_6.normal), m_4.tint);
+    return;
+}
+
+void dispatch_secondary_rays(uint type_id_5, uint offset_12, Ray ray_19, Hit hit_7)
+{
+    const Mirror _e3 = load_Mirror(offset_12);
+    mirror_rays(_e3, ray_19, hit_7);
+    return;
+}
+
+float3 spawn_origin(Hit hit_8, float3 dir_2)
+{
+    float3 n_4 = (float3)0;
+
+    n_4 = hit_8.geometric_normal;
+    float3 _e4 = n_4;
+    if ((dot(dir_2, _e4) < 0.0)) {
+        float3 _e8 = n_4;
+        n_4 = -(_e8);
+    }
+    float3 _e11 = n_4;
+    const float3 _e12 = offset_origin(hit_8.position, _e11);
+    return _e12;
+}
+
+Frame ConstructFrame(Ray arg0, Hit arg1, uint arg2, float3 arg3, float3 arg4[1], float3 arg5[1], uint arg6, uint arg7) {
+    Frame ret = (Frame)0;
+    ret.ray = arg0;
+    ret.hit = arg1;
+    ret.slot = arg2;
+    ret.sum = arg3;
+    ret.dirs = arg4;
+    ret.weights = arg5;
+    ret.count = arg6;
+    ret.next = arg7;
+    return ret;
+}
+
+typedef Frame ret_ZeroValuearray3_Frame_[3];
+ret_ZeroValuearray3_Frame_ ZeroValuearray3_Frame_() {
+    return (Frame[3])0;
+}
+
+typedef float3 ret_ZeroValuearray1_float3_[1];
+ret_ZeroValuearray1_float3_ ZeroValuearray1_float3_() {
+    return (float3[1])0;
+}
+
+float3 trace(Ray camera_ray)
+{
+    Frame stack[3] = (Frame[3])0;
+    uint depth = (uint)0;
+    Ray ray_20 = (Ray)0;
+    float3 value = (float3)0;
+    bool have_value = (bool)0;
+    bool pushed = (bool)0;
+    Frame f = (Frame)0;
+    uint i_4 = (uint)0;
+    uint medium = (uint)0;
+
+    if (!(HAS_SECONDARY_RAYS)) {
+        const Candidate _e4 = intersect_scene(camera_ray, false);
+        if ((_e4.slot == NO_HIT)) {
+            uint _e9 = F32_INF;
+            const float3 _e11 = miss(camera_ray);
+            const float3 _e12 = through_medium(camera_ray, asfloat(_e9), _e11);
+            return _e12;
+        }
+        const float3 _e14 = shade_direct(camera_ray, _e4);
+        const float3 _e15 = through_medium(camera_ray, _e4.t, _e14);
+        return _e15;
+    }
+    stack = ZeroValuearray3_Frame_();
+    depth = 0u;
+    ray_20 = camera_ray;
+    value = (0.0).xxx;
+    have_value = false;
+    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        bool _e26 = have_value;
+        if (!(_e26)) {
+            Ray _e28 = ray_20;
+            const Candidate _e30 = intersect_scene(_e28, false);
+            if ((_e30.slot == NO_HIT)) {
+                Ray _e34 = ray_20;
+                uint _e36 = F32_INF;
+                Ray _e38 = ray_20;
+                const float3 _e39 = miss(_e38);
+                const float3 _e40 = through_medium(_e34, asfloat(_e36), _e39);
+                value = _e40;
+                have_value = true;
+            } else {
+                GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(_e30.slot*128+0)), asfloat(instances.Load4(_e30.slot*128+16)), asfloat(instances.Load4(_e30.slot*128+32)), asfloat(instances.Load4(_e30.slot*128+48)), asfloat(instances.Load4(_e30.slot*128+64)), asfloat(instances.Load4(_e30.slot*128+80)), asuint(instances.Load(_e30.slot*128+96)), asuint(instances.Load(_e30.slot*128+100)), asuint(instances.Load(_e30.slot*128+104)), asuint(instances.Load(_e30.slot*128+108)), asuint(instances.Load(_e30.slot*128+112)), asuint(instances.Load(_e30.slot*128+116)), asuint(instances.Load(_e30.slot*128+120)), asuint(instances.Load(_e30.slot*128+124)));
+                Ray _e46 = ray_20;
+                const Hit _e47 = finish_hit(_e46, _e30);
+                pushed = false;
+                uint _e56 = ray_20.depth;
+                uint _e60 = depth;
+                if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
+                    spawn_count = 0u;
+                    Ray _e68 = ray_20;
+                    dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
+                    uint _e70 = spawn_count;
+                    uint n_9 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_9 > 0u)) {
+                        Ray _e77 = ray_20;
+                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_9, 0u);
+                        i_4 = 0u;
+                        uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+                        bool loop_init_5 = true;
+                        while(true) {
+                            if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+                            loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                            if (!loop_init_5) {
+                                uint _e108 = i_4;
+                                i_4 = (_e108 + 1u);
+                            }
+                            loop_init_5 = false;
+                            uint _e88 = i_4;
+                            if ((_e88 >= n_9)) {
+                                break;
+                            }
+                            uint _e91 = i_4;
+                            uint _e95 = i_4;
+                            float3 _e98 = spawn_dirs[min(uint(_e95), 0u)];
+                            f.dirs[min(uint(min(_e91, 0u)), 0u)] = _e98;
+                            uint _e100 = i_4;
+                            uint _e104 = i_4;
+                            float3 _e107 = spawn_weights[min(uint(_e104), 0u)];
+                            f.weights[min(uint(min(_e100, 0u)), 0u)] = _e107;
+                        }
+                        uint _e111 = depth;
+                        Frame _e115 = f;
+                        stack[min(uint(min(_e111, 2u)), 2u)] = _e115;
+                        uint _e116 = depth;
+                        depth = (_e116 + 1u);
+                        pushed = true;
+                    }
+                }
+                bool _e120 = pushed;
+                if (!(_e120)) {
+                    Ray _e124 = ray_20;
+                    const float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, (0.0).xxx);
+                    Ray _e128 = ray_20;
+                    const float3 _e130 = through_medium(_e128, _e30.t, _e127);
+                    value = _e130;
+                    have_value = true;
+                }
+            }
+        }
+        bool _e132 = have_value;
+        if (_e132) {
+            uint _e133 = depth;
+            if ((_e133 == 0u)) {
+                float3 _e136 = value;
+                return _e136;
+            }
+            uint _e137 = depth;
+            uint top = (_e137 - 1u);
+            uint _e144 = stack[min(uint(min(top, 2u)), 2u)].next;
+            uint child = (_e144 - 1u);
+            float3 _e151 = stack[min(uint(min(top, 2u)), 2u)].sum;
+            float3 _e159 = stack[min(uint(min(top, 2u)), 2u)].weights[min(uint(min(child, 0u)), 0u)];
+            float3 _e160 = value;
+            stack[min(uint(min(top, 2u)), 2u)].sum = (_e151 + (_e159 * _e160));
+            have_value = false;
+        }
+        uint _e164 = depth;
+        uint top_1 = (_e164 - 1u);
+        uint _e171 = stack[min(uint(min(top_1, 2u)), 2u)].next;
+        uint _e176 = stack[min(uint(min(top_1, 2u)), 2u)].count;
+        if ((_e171 < _e176)) {
+            uint i_5 = stack[min(uint(min(top_1, 2u)), 2u)].next;
+            stack[min(uint(min(top_1, 2u)), 2u)].next = (i_5 + 1u);
+            Ray parent = stack[min(uint(min(top_1, 2u)), 2u)].ray;
+            Hit hit_11 = stack[min(uint(min(top_1, 2u)), 2u)].hit;
+            float3 dir_4 = stack[min(uint(min(top_1, 2u)), 2u)].dirs[min(uint(min(i_5, 0u)), 0u)];
+            medium = parent.medium;
+            const float3 _e209 = spawn_origin(hit_11, dir_4);
+            uint _e212 = F32_INF;
+            uint _e218 = medium;
+            ray_20 = ConstructRay(_e209, 0.0, dir_4, asfloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+        } else {
+            uint _e224 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
+            GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e224*128+0)), asfloat(instances.Load4(_e224*128+16)), asfloat(instances.Load4(_e224*128+32)), asfloat(instances.Load4(_e224*128+48)), asfloat(instances.Load4(_e224*128+64)), asfloat(instances.Load4(_e224*128+80)), asuint(instances.Load(_e224*128+96)), asuint(instances.Load(_e224*128+100)), asuint(instances.Load(_e224*128+104)), asuint(instances.Load(_e224*128+108)), asuint(instances.Load(_e224*128+112)), asuint(instances.Load(_e224*128+116)), asuint(instances.Load(_e224*128+120)), asuint(instances.Load(_e224*128+124)));
+            Ray _e234 = stack[min(uint(min(top_1, 2u)), 2u)].ray;
+            Hit _e239 = stack[min(uint(min(top_1, 2u)), 2u)].hit;
+            float3 _e244 = stack[min(uint(min(top_1, 2u)), 2u)].sum;
+            const float3 _e245 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e234, _e239, _e244);
+            Ray _e250 = stack[min(uint(min(top_1, 2u)), 2u)].ray;
+            float _e256 = stack[min(uint(min(top_1, 2u)), 2u)].hit.t;
+            const float3 _e257 = through_medium(_e250, _e256, _e245);
+            value = _e257;
+            depth = top_1;
+            have_value = true;
+        }
+    }
+    return ZeroValuefloat3();
+}
+
+bool3 is_finite_vec3f(float3 x_3)
+{
+    return ((asuint(x_3) & (2147483647u).xxx) < (2139095040u).xxx);
+}
+
+float3 finite_or_zero(float3 c_4)
+{
+    const bool3 _e3 = is_finite_vec3f(c_4);
+    return (_e3 ? c_4 : (0.0).xxx);
+}
+
+void render_pixel(uint2 pixel_3)
+{
+    float3 sum = (float3)0;
+    uint bad = (uint)0;
+    uint s = (uint)0;
+    Ray ray_21 = (Ray)0;
+
+    FrameUniforms frame_5 = frame;
+    TileParams tile_1 = tile;
+    sum = (0.0).xxx;
+    bad = 0u;
+    uint end_1 = frame_5.samples_per_pass;
+    s = 0u;
+    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+    bool loop_init_6 = true;
+    while(true) {
+        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e46 = s;
+            s = (_e46 + 1u);
+        }
+        loop_init_6 = false;
+        uint _e13 = s;
+        if ((_e13 >= end_1)) {
+            break;
+        }
+        uint _e18 = s;
+        uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_3, sample_3, frame_5.seed);
+        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        ray_21 = _e23;
+        ray_21.depth = 0u;
+        ray_21.kind = RAY_CAMERA;
+        float3 _e31 = ray_21.origin;
+        const uint _e33 = medium_at(_e31, NO_HIT);
+        ray_21.medium = _e33;
+        Ray _e34 = ray_21;
+        const float3 _e35 = trace(_e34);
+        const bool3 _e36 = is_finite_vec3f(_e35);
+        if (all(_e36)) {
+            float3 _e38 = sum;
+            sum = (_e38 + _e35);
+        } else {
+            float3 _e40 = sum;
+            const float3 _e41 = finite_or_zero(_e35);
+            sum = (_e40 + _e41);
+            uint _e43 = bad;
+            bad = (_e43 + 1u);
+        }
+    }
+    float3 _e55 = sum;
+    uint _e59 = bad;
+    float4 _e62 = asfloat(accum.Load4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16));
+    accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint((_e62 + float4(_e55, float(frame_5.samples_per_pass)))));
+    if ((_e59 > 0u)) {
+        counters.InterlockedAdd(0, _e59);
+    }
+    uint _e69 = ray_count;
+    counters.InterlockedAdd(4, _e69);
+    return;
+}
+
+[numthreads(8, 8, 1)]
+void render(uint3 gid : SV_DispatchThreadID)
+{
+    TileParams _e2 = tile;
+    uint2 _e7 = uint2(gid.x, gid.y);
+    if (any((_e7 >= _e2.extent))) {
+        return;
+    }
+    render_pixel((_e2.origin + _e7));
+    return;
+}

@@ -1,0 +1,1832 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct _mslBufferSizes {
+    uint size3;
+    uint size5;
+    uint size6;
+    uint size7;
+    uint size9;
+    uint size11;
+    uint size15;
+    uint size16;
+};
+
+struct FrameUniforms {
+    uint samples_per_pass;
+    uint total_samples;
+    uint seed;
+    uint tlas_root;
+    uint instance_count;
+    uint light_count;
+    uint light_table;
+    uint medium_count;
+    uint medium_table;
+    uint camera_type;
+    uint camera_offset;
+    uint background_type;
+    uint background_offset;
+};
+struct TileParams {
+    metal::uint2 origin;
+    metal::uint2 extent;
+    metal::uint2 image_size;
+    uint tile_index;
+    uint frame;
+};
+struct Ray {
+    metal::packed_float3 origin;
+    float tmin;
+    metal::packed_float3 dir;
+    float tmax;
+    uint depth;
+    uint kind;
+    uint medium;
+    char _pad7[4];
+};
+typedef uint type_4[1];
+struct Pinhole {
+    metal::float3 position;
+    metal::float3 look_at;
+    metal::packed_float3 up;
+    float fov;
+};
+struct Candidate {
+    float t;
+    uint slot;
+    uint primitive;
+    char _pad3[4];
+    metal::float2 uv;
+    char _pad4[8];
+    metal::float3 normal;
+};
+struct GpuInstance {
+    metal::float4 world_to_object_0_;
+    metal::float4 world_to_object_1_;
+    metal::float4 world_to_object_2_;
+    metal::float4 object_to_world_0_;
+    metal::float4 object_to_world_1_;
+    metal::float4 object_to_world_2_;
+    uint geometry_type;
+    uint geometry_offset;
+    uint material_type;
+    uint material_offset;
+    uint blas_root;
+    uint triangle_offset;
+    uint flags;
+    uint object;
+};
+typedef GpuInstance type_8[1];
+struct TriangleRay {
+    metal::packed_float3 origin;
+    uint kx;
+    uint ky;
+    uint kz;
+    char _pad4[8];
+    metal::packed_float3 shear;
+    bool valid;
+    char _pad6[3];
+};
+struct GpuNode {
+    metal::packed_float3 min;
+    uint a;
+    metal::packed_float3 max;
+    uint b;
+};
+typedef GpuNode type_9[1];
+typedef metal::float4 type_10[1];
+struct type_11 {
+    metal::uint2 inner[128];
+};
+struct Hit {
+    metal::packed_float3 position;
+    float t;
+    metal::float3 normal;
+    metal::float3 geometric_normal;
+    metal::float2 uv;
+    bool front_face;
+    char _pad6[3];
+    uint instance;
+    uint primitive;
+    char _pad8[12];
+};
+struct Triangle {
+    metal::float3 v0_;
+    metal::float3 v1_;
+    metal::float3 v2_;
+};
+typedef metal::uint4 type_13[1];
+struct SkyGradient {
+    metal::float3 zenith;
+    metal::float3 horizon;
+    metal::float3 ground;
+};
+struct BlinnPhong {
+    uint texture;
+    char _pad1[12];
+    metal::float3 diffuse;
+    metal::packed_float3 specular;
+    float shininess;
+    metal::float3 ambient;
+    metal::float2 uv_scale;
+    char _pad6[8];
+};
+struct LightSample {
+    metal::packed_float3 dir;
+    float dist;
+    metal::float3 radiance;
+};
+struct PointLight {
+    metal::float3 position;
+    metal::packed_float3 color;
+    float intensity;
+    float range;
+    float inner_range;
+    char _pad5[8];
+};
+struct Lambert {
+    metal::float3 albedo;
+};
+struct Mirror {
+    metal::float3 tint;
+};
+struct UnlitTexture {
+    uint texture;
+    char _pad1[12];
+    metal::float3 tint;
+    metal::float2 uv_scale;
+    uint planar;
+    char _pad4[4];
+};
+struct type_15 {
+    metal::float3 inner[1];
+};
+struct Frame {
+    Ray ray;
+    Hit hit;
+    uint slot;
+    char _pad3[12];
+    metal::float3 sum;
+    type_15 dirs;
+    type_15 weights;
+    uint count;
+    uint next;
+    char _pad8[8];
+};
+struct type_16 {
+    Frame inner[3];
+};
+typedef metal::atomic_uint type_19[1];
+constant uint RAY_CAMERA = 0u;
+constant uint NO_HIT = 4294967295u;
+constant bool HAS_MEDIA = false;
+constant uint MESH_GEOMETRY = 4294967295u;
+constant uint LEAF_BIT = 2147483648u;
+constant uint BLAS_STACK = 64u;
+constant uint TLAS_STACK = 64u;
+constant bool HAS_SECONDARY_RAYS = true;
+constant bool HAS_BACKGROUND = true;
+constant uint FLAG_MEDIUM = 4u;
+constant float INV_PI = 0.31830987;
+constant uint RAY_SHADOW = 2u;
+constant uint FLAG_SECONDARY = 2u;
+constant uint MAX_DEPTH = 3u;
+constant uint STACK_SIZE = 3u;
+constant uint MAX_SPAWN = 1u;
+constant uint RAY_SECONDARY = 1u;
+
+uint pcg_hash(
+    uint x
+) {
+    uint state = (x * 747796405u) + 2891336453u;
+    uint word = ((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+void rng_seed(
+    metal::uint2 pixel,
+    uint sample,
+    uint seed,
+    thread uint& rng_state
+) {
+    uint h = {};
+    uint _e5 = pcg_hash(seed);
+    uint _e7 = pcg_hash(sample ^ _e5);
+    uint _e9 = pcg_hash(pixel.y ^ _e7);
+    uint _e11 = pcg_hash(pixel.x ^ _e9);
+    h = _e11;
+    uint _e13 = h;
+    if (_e13 == 0u) {
+        h = 1u;
+    }
+    uint _e17 = h;
+    rng_state = _e17;
+    return;
+}
+
+Pinhole load_Pinhole(
+    uint offset,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset + 0u];
+    uint _e11 = params[offset + 1u];
+    uint _e17 = params[offset + 2u];
+    uint _e24 = params[offset + 4u];
+    uint _e30 = params[offset + 5u];
+    uint _e36 = params[offset + 6u];
+    uint _e43 = params[offset + 8u];
+    uint _e49 = params[offset + 9u];
+    uint _e55 = params[offset + 10u];
+    uint _e62 = params[offset + 11u];
+    return Pinhole {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), metal::float3(as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)), as_type<float>(_e62)};
+}
+
+metal::uint2 image_size_query(
+    constant TileParams& tile
+) {
+    TileParams _e1 = tile;
+    return _e1.image_size;
+}
+
+uint samples_per_pixel_query(
+    constant FrameUniforms& frame
+) {
+    FrameUniforms _e1 = frame;
+    return _e1.total_samples;
+}
+
+float rand_next(
+    thread uint& rng_state
+) {
+    uint _e1 = rng_state;
+    uint s_1 = (_e1 * 747796405u) + 2891336453u;
+    rng_state = s_1;
+    uint word_1 = ((s_1 >> (((s_1 >> 28u) + 4u) & 31u)) ^ s_1) * 277803737u;
+    uint r_3 = (word_1 >> 22u) ^ word_1;
+    return static_cast<float>(r_3 >> 8u) * (1.0 / 16777216.0);
+}
+
+metal::float2 rand2_next(
+    thread uint& rng_state
+) {
+    float _e0 = rand_next(rng_state);
+    float _e1 = rand_next(rng_state);
+    return metal::float2(_e0, _e1);
+}
+
+metal::float3 normalize_vec3f(
+    metal::float3 v
+) {
+    return (metal::dot(v, v) >= 0.000000000000000000000000000000000000011754944) ? metal::normalize(v) : metal::float3(0.0);
+}
+
+Ray pinhole_ray(
+    Pinhole cam,
+    metal::uint2 pixel_1,
+    uint sample_1,
+    constant FrameUniforms& frame,
+    constant TileParams& tile,
+    thread uint& rng_state,
+    thread uint& F32_INF
+) {
+    metal::float2 jitter = {};
+    metal::uint2 _e2 = image_size_query(tile);
+    metal::float2 size = static_cast<metal::float2>(_e2);
+    jitter = metal::float2(0.5);
+    uint _e7 = samples_per_pixel_query(frame);
+    if (_e7 > 1u) {
+        metal::float2 _e10 = rand2_next(rng_state);
+        jitter = _e10;
+    }
+    metal::float2 _e12 = jitter;
+    metal::float2 ndc = (((static_cast<metal::float2>(pixel_1) + _e12) / size) * metal::float2(2.0)) - metal::float2(1.0);
+    metal::float3 _e24 = normalize_vec3f(cam.look_at - cam.position);
+    metal::float3 _e27 = normalize_vec3f(metal::cross(_e24, cam.up));
+    metal::float3 up = metal::cross(_e27, _e24);
+    float h_1 = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
+    float aspect = size.x / size.y;
+    metal::float3 _e48 = normalize_vec3f((_e24 + (_e27 * metal::float3((ndc.x * h_1) * aspect))) - (up * metal::float3(ndc.y * h_1)));
+    uint _e52 = F32_INF;
+    return Ray {cam.position, 0.0, _e48, as_type<float>(_e52), 0u, 0u, 0u};
+}
+
+Ray dispatch_ray_generation(
+    uint type_id,
+    uint offset_1,
+    metal::uint2 pixel_2,
+    uint sample_2,
+    constant FrameUniforms& frame,
+    constant TileParams& tile,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Pinhole _e3 = load_Pinhole(offset_1, params, _buffer_sizes);
+    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2, frame, tile, rng_state, F32_INF);
+    return _e4;
+}
+
+Candidate no_candidate(
+    float tmax
+) {
+    return Candidate {tmax, NO_HIT, 0u, {}, metal::float2(0.0), {}, metal::float3(0.0)};
+}
+
+Ray to_object(
+    GpuInstance inst,
+    Ray ray
+) {
+    Ray r = {};
+    r = ray;
+    metal::float4 o = metal::float4(ray.origin, 1.0);
+    metal::float4 d_1 = metal::float4(ray.dir, 0.0);
+    r.origin = metal::float3(metal::dot(inst.world_to_object_0_, o), metal::dot(inst.world_to_object_1_, o), metal::dot(inst.world_to_object_2_, o));
+    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_1), metal::dot(inst.world_to_object_1_, d_1), metal::dot(inst.world_to_object_2_, d_1));
+    Ray _e25 = r;
+    return _e25;
+}
+
+metal::float3 safe_inverse(
+    metal::float3 d
+) {
+    metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
+    metal::float3 s_2 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_2 * tiny, metal::abs(d) < tiny);
+    return metal::float3(1.0) / dd;
+}
+
+TriangleRay prepare_triangle_ray(
+    Ray ray_1
+) {
+    metal::float3 d_2 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 ad = metal::abs(d_2);
+    bool y_gt = ad.y > ad.x;
+    uint kz = (ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u);
+    uint kx0_ = (kz == 2u) ? 0u : (kz + 1u);
+    uint ky0_ = (kz >= 1u) ? (kz - 1u) : (kz + 2u);
+    float dz = d_2[metal::min(kz, 2u)];
+    bool flip = dz < 0.0;
+    uint kx = flip ? ky0_ : kx0_;
+    uint ky = flip ? kx0_ : ky0_;
+    metal::uint3 inf_bits = metal::uint3(2139095040u);
+    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_2) & metal::uint3(2147483647u)) < inf_bits);
+    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_2[metal::min(kx, 2u)] / dz, d_2[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
+}
+
+metal::float3 hit_triangle(
+    TriangleRay r_1,
+    uint slot,
+    float tmin,
+    float tmax_1,
+    thread uint& F32_INF,
+    device type_10 const& triangles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float4 _e8 = triangles[slot * 3u];
+    metal::float3 a_1 = _e8.xyz - r_1.origin;
+    metal::float4 _e18 = triangles[(slot * 3u) + 1u];
+    metal::float3 b_2 = _e18.xyz - r_1.origin;
+    metal::float4 _e28 = triangles[(slot * 3u) + 2u];
+    metal::float3 c_5 = _e28.xyz - r_1.origin;
+    float ax = a_1[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_1[metal::min(r_1.kz, 2u)]);
+    float ay = a_1[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_1[metal::min(r_1.kz, 2u)]);
+    float bx = b_2[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_2[metal::min(r_1.kz, 2u)]);
+    float by = b_2[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_2[metal::min(r_1.kz, 2u)]);
+    float cx = c_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_5[metal::min(r_1.kz, 2u)]);
+    float cy = c_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_5[metal::min(r_1.kz, 2u)]);
+    float u = (cx * by) - (cy * bx);
+    float v_1 = (ax * cy) - (ay * cx);
+    float w = (bx * ay) - (by * ax);
+    bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
+    float det = (u + v_1) + w;
+    float rcp = 1.0 / det;
+    float t_5 = (((u * (r_1.shear[2] * a_1[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_2[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
+    bool hit_9 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1);
+    uint _e173 = F32_INF;
+    return hit_9 ? metal::float3(t_5, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+}
+
+bool accept(
+    GpuInstance inst_1,
+    Ray ray_2,
+    Candidate c
+) {
+    return true;
+}
+
+float slab(
+    metal::float3 lo,
+    metal::float3 hi,
+    metal::float3 origin,
+    metal::float3 inv_dir,
+    float tmin_1,
+    float tmax_2,
+    thread uint& F32_INF
+) {
+    metal::float3 t0_ = (lo - origin) * inv_dir;
+    metal::float3 t1_ = (hi - origin) * inv_dir;
+    metal::float3 near_2 = metal::min(t0_, t1_);
+    metal::float3 far_2 = metal::max(t0_, t1_);
+    float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, tmin_1));
+    float exit = metal::min(metal::min(far_2.x, far_2.y) * 1.0000005, metal::min(far_2.z * 1.0000005, tmax_2));
+    if (enter <= exit) {
+        return enter;
+    }
+    uint _e30 = F32_INF;
+    return as_type<float>(_e30);
+}
+
+metal::uint2 pop_within(
+    uint base,
+    uint sp_in,
+    float t,
+    thread type_11& traversal_stack
+) {
+    uint sp = {};
+    sp = sp_in;
+    uint2 loop_bound = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e4 = sp;
+        if (_e4 == 0u) {
+            break;
+        }
+        uint _e7 = sp;
+        sp = _e7 - 1u;
+        uint _e10 = sp;
+        metal::uint2 e = traversal_stack.inner[metal::min(base + _e10, 127u)];
+        if (as_type<float>(e.y) <= t) {
+            uint _e21 = sp;
+            return metal::uint2(e.x, _e21);
+        }
+    }
+    return metal::uint2(NO_HIT, 0u);
+}
+
+Candidate intersect_mesh(
+    GpuInstance inst_2,
+    uint slot_1,
+    Ray world_ray,
+    Ray ray_3,
+    Candidate best_in,
+    bool shadow,
+    thread uint& F32_INF,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Candidate best = {};
+    uint sp_1 = {};
+    uint node = {};
+    uint k = {};
+    uint near = {};
+    uint far = {};
+    float t_far = {};
+    best = best_in;
+    metal::float3 _e8 = safe_inverse(ray_3.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_3);
+    uint base_1 = inst_2.blas_root;
+    sp_1 = 0u;
+    node = base_1;
+    uint2 loop_bound_1 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e14 = node;
+        GpuNode n_5 = nodes[_e14];
+        if ((n_5.b & LEAF_BIT) != 0u) {
+            uint count = n_5.b & ~(LEAF_BIT);
+            k = 0u;
+            uint2 loop_bound_2 = uint2(4294967295u);
+            bool loop_init = true;
+            while(true) {
+                if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                if (!loop_init) {
+                    uint _e52 = k;
+                    k = _e52 + 1u;
+                }
+                loop_init = false;
+                uint _e29 = k;
+                if (_e29 >= count) {
+                    break;
+                }
+                uint _e34 = k;
+                uint prim = (inst_2.triangle_offset + n_5.a) + _e34;
+                float _e38 = best.t;
+                metal::float3 _e39 = hit_triangle(_e9, prim, ray_3.tmin, _e38, F32_INF, triangles, _buffer_sizes);
+                uint _e42 = F32_INF;
+                if (_e39.x < as_type<float>(_e42)) {
+                    Candidate c_6 = Candidate {_e39.x, slot_1, prim, {}, _e39.yz, {}, metal::float3(0.0)};
+                    bool _e50 = accept(inst_2, world_ray, c_6);
+                    if (_e50) {
+                        best = c_6;
+                        if (shadow) {
+                            Candidate _e51 = best;
+                            return _e51;
+                        }
+                    }
+                }
+            }
+        } else {
+            uint left = base_1 + n_5.a;
+            uint right = left + 1u;
+            GpuNode l_1 = nodes[left];
+            GpuNode rr = nodes[right];
+            float _e70 = best.t;
+            float _e71 = slab(l_1.min, l_1.max, ray_3.origin, _e8, ray_3.tmin, _e70, F32_INF);
+            float _e77 = best.t;
+            float _e78 = slab(rr.min, rr.max, ray_3.origin, _e8, ray_3.tmin, _e77, F32_INF);
+            uint _e80 = F32_INF;
+            uint _e84 = F32_INF;
+            if ((_e71 < as_type<float>(_e80)) && (_e78 < as_type<float>(_e84))) {
+                near = left;
+                far = right;
+                t_far = _e78;
+                if (_e78 < _e71) {
+                    near = right;
+                    far = left;
+                    t_far = _e71;
+                }
+                uint _e92 = sp_1;
+                if (_e92 < BLAS_STACK) {
+                    uint _e96 = sp_1;
+                    uint _e98 = far;
+                    float _e99 = t_far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e96, 127u)] = metal::uint2(_e98, as_type<uint>(_e99));
+                    uint _e106 = sp_1;
+                    sp_1 = _e106 + 1u;
+                }
+                uint _e109 = near;
+                node = _e109;
+                continue;
+            }
+            uint _e111 = F32_INF;
+            if (_e71 < as_type<float>(_e111)) {
+                node = left;
+                continue;
+            }
+            uint _e115 = F32_INF;
+            if (_e78 < as_type<float>(_e115)) {
+                node = right;
+                continue;
+            }
+        }
+        uint _e119 = sp_1;
+        float _e121 = best.t;
+        metal::uint2 _e122 = pop_within(TLAS_STACK, _e119, _e121, traversal_stack);
+        if (_e122.x == NO_HIT) {
+            break;
+        }
+        node = _e122.x;
+        sp_1 = _e122.y;
+    }
+    Candidate _e128 = best;
+    return _e128;
+}
+
+Candidate intersect_object(
+    uint slot_2,
+    Ray ray_4,
+    Candidate best_1,
+    bool shadow_1,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Ray r_2 = {};
+    GpuInstance inst_5 = instances[slot_2];
+    Ray _e7 = to_object(inst_5, ray_4);
+    r_2 = _e7;
+    r_2.tmax = best_1.t;
+    if (inst_5.geometry_type == MESH_GEOMETRY) {
+        Ray _e14 = r_2;
+        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_4, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        return _e15;
+    }
+    return best_1;
+}
+
+Triangle load_triangle(
+    uint slot_3,
+    device type_10 const& triangles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float4 v0_ = triangles[slot_3 * 3u];
+    metal::float4 v1_ = triangles[(slot_3 * 3u) + 1u];
+    metal::float4 v2_ = triangles[(slot_3 * 3u) + 2u];
+    return Triangle {v0_.xyz, v1_.xyz, v2_.xyz};
+}
+
+metal::float3 point_to_world(
+    GpuInstance inst_3,
+    metal::float3 p
+) {
+    metal::float4 q = metal::float4(p, 1.0);
+    return metal::float3(metal::dot(inst_3.object_to_world_0_, q), metal::dot(inst_3.object_to_world_1_, q), metal::dot(inst_3.object_to_world_2_, q));
+}
+
+metal::float3 decode_octahedral(
+    uint bits
+) {
+    metal::float3 n = {};
+    metal::float2 e_1 = metal::unpack_snorm2x16_to_float(bits);
+    n = metal::float3(e_1.x, e_1.y, (1.0 - metal::abs(e_1.x)) - metal::abs(e_1.y));
+    float _e14 = n.z;
+    if (_e14 < 0.0) {
+        metal::float3 _e21 = n;
+        metal::float2 s_3 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float3 _e29 = n;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_3;
+        float _e37 = n.z;
+        n = metal::float3(xy.x, xy.y, _e37);
+    }
+    metal::float3 _e39 = n;
+    metal::float3 _e40 = normalize_vec3f(_e39);
+    return _e40;
+}
+
+metal::float3 normal_to_world(
+    GpuInstance inst_4,
+    metal::float3 n_1
+) {
+    metal::float3 w_1 = ((inst_4.world_to_object_0_.xyz * metal::float3(n_1.x)) + (inst_4.world_to_object_1_.xyz * metal::float3(n_1.y))) + (inst_4.world_to_object_2_.xyz * metal::float3(n_1.z));
+    metal::float3 _e19 = normalize_vec3f(w_1);
+    return _e19;
+}
+
+Hit finish_hit(
+    Ray ray_5,
+    Candidate c_1,
+    device type_8 const& instances,
+    device type_10 const& triangles,
+    device type_13 const& attributes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Hit hit = {};
+    metal::float3 n_geo = {};
+    metal::float3 n_shade = {};
+    GpuInstance inst_6 = instances[c_1.slot];
+    hit = Hit {ray_5.origin + (ray_5.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_6.object, c_1.primitive};
+    n_geo = c_1.normal;
+    n_shade = c_1.normal;
+    if (inst_6.geometry_type == MESH_GEOMETRY) {
+        Triangle _e35 = load_triangle(c_1.primitive, triangles, _buffer_sizes);
+        metal::float2 b_3 = c_1.uv;
+        float w_2 = (1.0 - c_1.uv.x) - c_1.uv.y;
+        metal::float3 _e56 = point_to_world(inst_6, ((_e35.v0_ * metal::float3(w_2)) + (_e35.v1_ * metal::float3(c_1.uv.x))) + (_e35.v2_ * metal::float3(c_1.uv.y)));
+        hit.position = _e56;
+        n_geo = metal::cross(_e35.v1_ - _e35.v0_, _e35.v2_ - _e35.v0_);
+        metal::uint4 a0_ = attributes[c_1.primitive * 2u];
+        metal::uint4 a1_ = attributes[(c_1.primitive * 2u) + 1u];
+        metal::float3 _e79 = decode_octahedral(a0_.x);
+        metal::float3 _e83 = decode_octahedral(a0_.y);
+        metal::float3 _e89 = decode_octahedral(a0_.z);
+        n_shade = ((_e79 * metal::float3(w_2)) + (_e83 * metal::float3(c_1.uv.x))) + (_e89 * metal::float3(c_1.uv.y));
+        metal::float3 _e94 = n_shade;
+        metal::float3 _e95 = n_shade;
+        if (metal::dot(_e94, _e95) < 0.000000000001) {
+            metal::float3 _e99 = n_geo;
+            n_shade = _e99;
+        }
+        metal::float2 uv0_ = float2(as_type<half2>(a0_.w));
+        metal::float2 uv1_ = float2(as_type<half2>(a1_.x));
+        metal::float2 uv2_ = float2(as_type<half2>(a1_.y));
+        hit.uv = ((uv0_ * metal::float2(w_2)) + (uv1_ * metal::float2(c_1.uv.x))) + (uv2_ * metal::float2(c_1.uv.y));
+        metal::float4 _e123 = triangles[c_1.primitive * 3u];
+        hit.primitive = as_type<uint>(_e123.w);
+    }
+    metal::float3 _e127 = n_geo;
+    metal::float3 _e128 = normal_to_world(inst_6, _e127);
+    hit.geometric_normal = _e128;
+    metal::float3 _e130 = n_shade;
+    metal::float3 _e131 = normal_to_world(inst_6, _e130);
+    hit.normal = _e131;
+    metal::float3 _e135 = hit.geometric_normal;
+    hit.front_face = metal::dot(ray_5.dir, _e135) < 0.0;
+    Hit _e139 = hit;
+    return _e139;
+}
+
+uint medium_at(
+    metal::float3 p_1,
+    uint exclude,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    device type_13 const& attributes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint inside = {};
+    float nearest = {};
+    uint i = {};
+    if (!(HAS_MEDIA)) {
+        return 0u;
+    }
+    FrameUniforms frame_1 = frame;
+    metal::float3 _e12 = normalize_vec3f(metal::float3(0.5773, 0.5774, 0.5775));
+    uint _e14 = F32_INF;
+    Ray probe = Ray {p_1, 0.0, _e12, as_type<float>(_e14), 0u, 0u, 0u};
+    inside = 0u;
+    uint _e23 = F32_INF;
+    nearest = as_type<float>(_e23);
+    uint end = frame_1.medium_count;
+    i = 0u;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e57 = i;
+            i = _e57 + 1u;
+        }
+        loop_init_1 = false;
+        uint _e29 = i;
+        if (_e29 >= end) {
+            break;
+        }
+        uint _e32 = i;
+        uint slot_4 = params[frame_1.medium_table + _e32];
+        if (slot_4 != exclude) {
+            uint _e39 = F32_INF;
+            Candidate _e41 = no_candidate(as_type<float>(_e39));
+            Candidate _e43 = intersect_object(slot_4, probe, _e41, false, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+            float _e48 = nearest;
+            if ((_e43.slot != NO_HIT) && (_e43.t < _e48)) {
+                Hit _e51 = finish_hit(probe, _e43, instances, triangles, attributes, _buffer_sizes);
+                if (!(_e51.front_face)) {
+                    inside = slot_4 + 1u;
+                    nearest = _e43.t;
+                }
+            }
+        }
+    }
+    uint _e60 = inside;
+    return _e60;
+}
+
+Candidate intersect_scene(
+    Ray ray_6,
+    bool shadow_2,
+    constant FrameUniforms& frame,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Candidate best_2 = {};
+    uint sp_2 = {};
+    uint node_1 = {};
+    uint k_1 = {};
+    uint near_1 = {};
+    uint far_1 = {};
+    float t_far_1 = {};
+    uint _e3 = ray_count;
+    ray_count = _e3 + 1u;
+    Candidate _e7 = no_candidate(ray_6.tmax);
+    best_2 = _e7;
+    FrameUniforms frame_2 = frame;
+    if (frame_2.instance_count == 0u) {
+        Candidate _e14 = best_2;
+        return _e14;
+    }
+    metal::float3 _e16 = safe_inverse(ray_6.dir);
+    sp_2 = 0u;
+    node_1 = frame_2.tlas_root;
+    uint _e21 = node_1;
+    GpuNode root = nodes[_e21];
+    float _e30 = best_2.t;
+    float _e31 = slab(root.min, root.max, ray_6.origin, _e16, ray_6.tmin, _e30, F32_INF);
+    uint _e33 = F32_INF;
+    if (_e31 == as_type<float>(_e33)) {
+        Candidate _e36 = best_2;
+        return _e36;
+    }
+    uint2 loop_bound_4 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        uint _e37 = node_1;
+        GpuNode n_6 = nodes[_e37];
+        if ((n_6.b & LEAF_BIT) != 0u) {
+            uint count_1 = n_6.b & ~(LEAF_BIT);
+            k_1 = 0u;
+            uint2 loop_bound_5 = uint2(4294967295u);
+            bool loop_init_2 = true;
+            while(true) {
+                if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (!loop_init_2) {
+                    uint _e65 = k_1;
+                    k_1 = _e65 + 1u;
+                }
+                loop_init_2 = false;
+                uint _e52 = k_1;
+                if (_e52 >= count_1) {
+                    break;
+                }
+                uint _e55 = k_1;
+                Candidate _e57 = best_2;
+                Candidate _e58 = intersect_object(n_6.a + _e55, ray_6, _e57, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                best_2 = _e58;
+                uint _e60 = best_2.slot;
+                if (shadow_2 && (_e60 != NO_HIT)) {
+                    Candidate _e64 = best_2;
+                    return _e64;
+                }
+            }
+        } else {
+            uint left_1 = frame_2.tlas_root + n_6.a;
+            uint right_1 = left_1 + 1u;
+            GpuNode l_2 = nodes[left_1];
+            GpuNode rr_1 = nodes[right_1];
+            float _e84 = best_2.t;
+            float _e85 = slab(l_2.min, l_2.max, ray_6.origin, _e16, ray_6.tmin, _e84, F32_INF);
+            float _e91 = best_2.t;
+            float _e92 = slab(rr_1.min, rr_1.max, ray_6.origin, _e16, ray_6.tmin, _e91, F32_INF);
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if ((_e85 < as_type<float>(_e94)) && (_e92 < as_type<float>(_e98))) {
+                near_1 = left_1;
+                far_1 = right_1;
+                t_far_1 = _e92;
+                if (_e92 < _e85) {
+                    near_1 = right_1;
+                    far_1 = left_1;
+                    t_far_1 = _e85;
+                }
+                uint _e106 = sp_2;
+                if (_e106 < TLAS_STACK) {
+                    uint _e109 = sp_2;
+                    uint _e110 = far_1;
+                    float _e111 = t_far_1;
+                    traversal_stack.inner[metal::min(_e109, 127u)] = metal::uint2(_e110, as_type<uint>(_e111));
+                    uint _e118 = sp_2;
+                    sp_2 = _e118 + 1u;
+                }
+                uint _e121 = near_1;
+                node_1 = _e121;
+                continue;
+            }
+            uint _e123 = F32_INF;
+            if (_e85 < as_type<float>(_e123)) {
+                node_1 = left_1;
+                continue;
+            }
+            uint _e127 = F32_INF;
+            if (_e92 < as_type<float>(_e127)) {
+                node_1 = right_1;
+                continue;
+            }
+        }
+        uint _e131 = sp_2;
+        float _e133 = best_2.t;
+        metal::uint2 _e134 = pop_within(0u, _e131, _e133, traversal_stack);
+        if (_e134.x == NO_HIT) {
+            break;
+        }
+        node_1 = _e134.x;
+        sp_2 = _e134.y;
+    }
+    Candidate _e140 = best_2;
+    return _e140;
+}
+
+SkyGradient load_SkyGradient(
+    uint offset_2,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_2 + 0u];
+    uint _e11 = params[offset_2 + 1u];
+    uint _e17 = params[offset_2 + 2u];
+    uint _e24 = params[offset_2 + 4u];
+    uint _e30 = params[offset_2 + 5u];
+    uint _e36 = params[offset_2 + 6u];
+    uint _e43 = params[offset_2 + 8u];
+    uint _e49 = params[offset_2 + 9u];
+    uint _e55 = params[offset_2 + 10u];
+    return SkyGradient {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), metal::float3(as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55))};
+}
+
+metal::float3 sky_gradient(
+    SkyGradient b,
+    Ray ray_7
+) {
+    metal::float3 _e3 = normalize_vec3f(ray_7.dir);
+    float y_1 = _e3.y;
+    if (y_1 < 0.0) {
+        return metal::mix(b.horizon, b.ground, metal::float3(metal::min(-(y_1) * 4.0, 1.0)));
+    }
+    return metal::mix(b.horizon, b.zenith, metal::float3(metal::sqrt(y_1)));
+}
+
+metal::float3 dispatch_miss(
+    uint type_id_1,
+    uint offset_3,
+    Ray ray_8,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    SkyGradient _e2 = load_SkyGradient(offset_3, params, _buffer_sizes);
+    metal::float3 _e3 = sky_gradient(_e2, ray_8);
+    return _e3;
+}
+
+metal::float3 miss(
+    Ray ray_9,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!(HAS_BACKGROUND)) {
+        return metal::float3(0.0);
+    }
+    FrameUniforms frame_3 = frame;
+    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_9, params, _buffer_sizes);
+    return _e9;
+}
+
+metal::float3 dispatch_medium(
+    uint type_id_2,
+    uint offset_4,
+    Ray ray_10,
+    float t_1,
+    metal::float3 radiance
+) {
+    return metal::float3 {};
+}
+
+metal::float3 through_medium(
+    Ray ray_11,
+    float t_2,
+    metal::float3 radiance_1,
+    device type_8 const& instances,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!(HAS_MEDIA)) {
+        return radiance_1;
+    }
+    if (ray_11.medium == 0u) {
+        return radiance_1;
+    }
+    GpuInstance inst_7 = instances[ray_11.medium - 1u];
+    if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
+        return radiance_1;
+    }
+    metal::float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_11, t_2, radiance_1);
+    return _e21;
+}
+
+BlinnPhong load_BlinnPhong(
+    uint offset_5,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_5 + 0u];
+    uint _e10 = params[offset_5 + 4u];
+    uint _e16 = params[offset_5 + 5u];
+    uint _e22 = params[offset_5 + 6u];
+    uint _e29 = params[offset_5 + 8u];
+    uint _e35 = params[offset_5 + 9u];
+    uint _e41 = params[offset_5 + 10u];
+    uint _e48 = params[offset_5 + 11u];
+    uint _e54 = params[offset_5 + 12u];
+    uint _e60 = params[offset_5 + 13u];
+    uint _e66 = params[offset_5 + 14u];
+    uint _e73 = params[offset_5 + 16u];
+    uint _e79 = params[offset_5 + 17u];
+    return BlinnPhong {_e5, {}, metal::float3(as_type<float>(_e10), as_type<float>(_e16), as_type<float>(_e22)), metal::float3(as_type<float>(_e29), as_type<float>(_e35), as_type<float>(_e41)), as_type<float>(_e48), metal::float3(as_type<float>(_e54), as_type<float>(_e60), as_type<float>(_e66)), metal::float2(as_type<float>(_e73), as_type<float>(_e79))};
+}
+
+int naga_f2i32(float value) {
+    return static_cast<int>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+int i32_from_f32_(
+    float x_1
+) {
+    return ((as_type<uint>(x_1) & 2147483647u) > 2139095040u) ? 0 : naga_f2i32(metal::min(metal::max(x_1, -2147483600.0), 2147483500.0));
+}
+
+int naga_div(int lhs, int rhs) {
+    return lhs / metal::select(rhs, 1, (lhs == (-2147483647 - 1) & rhs == -1) | (rhs == 0));
+}
+
+int rem_i32_(
+    int a,
+    int b_1
+) {
+    bool by_zero = b_1 == 0;
+    int divisor = ((a == (-2147483647 - 1)) & (b_1 == -1)) ? 1 : (by_zero ? 1 : b_1);
+    return by_zero ? 0 : as_type<int>(as_type<uint>(a) - as_type<uint>(as_type<int>(as_type<uint>(divisor) * as_type<uint>(naga_div(a, divisor)))));
+}
+
+float srgb_channel(
+    float c_2
+) {
+    if (c_2 <= 0.04045) {
+        return c_2 / 12.92;
+    }
+    return metal::pow((c_2 + 0.055) / 1.055, 2.4);
+}
+
+metal::float4 texel_at(
+    uint t_3,
+    int x_2,
+    int y,
+    device type_4 const& params,
+    device type_4 const& texels,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint base_2 = params[t_3];
+    uint _e10 = params[t_3 + 1u];
+    uint w_3 = metal::max(_e10, 1u);
+    uint _e17 = params[t_3 + 2u];
+    uint h_2 = metal::max(_e17, 1u);
+    uint format = params[t_3 + 3u];
+    int _e26 = rem_i32_(x_2, static_cast<int>(w_3));
+    int _e30 = rem_i32_(as_type<int>(as_type<uint>(_e26) + as_type<uint>(static_cast<int>(w_3))), static_cast<int>(w_3));
+    uint xi = static_cast<uint>(_e30);
+    int _e33 = rem_i32_(y, static_cast<int>(h_2));
+    int _e37 = rem_i32_(as_type<int>(as_type<uint>(_e33) + as_type<uint>(static_cast<int>(h_2))), static_cast<int>(h_2));
+    uint yi = static_cast<uint>(_e37);
+    uint index = (yi * w_3) + xi;
+    if (format == 0u) {
+        uint _e46 = texels[base_2 + index];
+        metal::float4 c_7 = metal::unpack_unorm4x8_to_float(_e46);
+        float _e49 = srgb_channel(c_7.x);
+        float _e51 = srgb_channel(c_7.y);
+        float _e53 = srgb_channel(c_7.z);
+        return metal::float4(_e49, _e51, _e53, c_7.w);
+    }
+    uint _e61 = texels[base_2 + (index * 2u)];
+    metal::float2 rg = float2(as_type<half2>(_e61));
+    uint _e70 = texels[(base_2 + (index * 2u)) + 1u];
+    metal::float2 ba = float2(as_type<half2>(_e70));
+    return metal::float4(rg, ba);
+}
+
+metal::float4 sample_texture(
+    uint t_4,
+    metal::float2 uv,
+    device type_4 const& params,
+    device type_4 const& texels,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e6 = params[t_4 + 1u];
+    float w_4 = static_cast<float>(metal::max(_e6, 1u));
+    uint _e14 = params[t_4 + 2u];
+    float h_3 = static_cast<float>(metal::max(_e14, 1u));
+    metal::float2 p_3 = (uv * metal::float2(w_4, h_3)) - metal::float2(0.5);
+    metal::float2 f_1 = metal::floor(p_3);
+    metal::float2 fr = p_3 - f_1;
+    int _e26 = i32_from_f32_(f_1.x);
+    int _e28 = i32_from_f32_(f_1.y);
+    metal::float4 _e29 = texel_at(t_4, _e26, _e28, params, texels, _buffer_sizes);
+    metal::float4 _e32 = texel_at(t_4, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), _e28, params, texels, _buffer_sizes);
+    metal::float4 a_2 = metal::mix(_e29, _e32, metal::float4(fr.x));
+    metal::float4 _e38 = texel_at(t_4, _e26, as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
+    metal::float4 _e43 = texel_at(t_4, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
+    metal::float4 b_4 = metal::mix(_e38, _e43, metal::float4(fr.x));
+    return metal::mix(a_2, b_4, metal::float4(fr.y));
+}
+
+uint light_count_query(
+    constant FrameUniforms& frame
+) {
+    FrameUniforms _e1 = frame;
+    return _e1.light_count;
+}
+
+PointLight load_PointLight(
+    uint offset_6,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_6 + 0u];
+    uint _e11 = params[offset_6 + 1u];
+    uint _e17 = params[offset_6 + 2u];
+    uint _e24 = params[offset_6 + 4u];
+    uint _e30 = params[offset_6 + 5u];
+    uint _e36 = params[offset_6 + 6u];
+    uint _e43 = params[offset_6 + 7u];
+    uint _e49 = params[offset_6 + 8u];
+    uint _e55 = params[offset_6 + 9u];
+    return PointLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)};
+}
+
+metal::float3 offset_origin(
+    metal::float3 p_2,
+    metal::float3 n_2,
+    constant FrameUniforms& frame,
+    device type_9 const& nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    FrameUniforms _e3 = frame;
+    GpuNode root_1 = nodes[_e3.tlas_root];
+    metal::float3 a_3 = metal::max(metal::abs(p_2), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
+    float m_5 = metal::max(metal::max(a_3.x, a_3.y), a_3.z);
+    return p_2 + (n_2 * metal::float3(m_5 * (1.0 / 65536.0)));
+}
+
+float shadow_query(
+    metal::float3 position,
+    metal::float3 normal,
+    metal::float3 dir,
+    float dist,
+    constant FrameUniforms& frame,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 n_3 = {};
+    n_3 = normal;
+    metal::float3 _e5 = n_3;
+    if (metal::dot(dir, _e5) < 0.0) {
+        metal::float3 _e9 = n_3;
+        n_3 = -(_e9);
+    }
+    metal::float3 _e11 = n_3;
+    metal::float3 _e12 = offset_origin(position, _e11, frame, nodes, _buffer_sizes);
+    Ray ray_22 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
+    Candidate _e23 = intersect_scene(ray_22, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return (_e23.slot != NO_HIT) ? 0.0 : 1.0;
+}
+
+LightSample point_light(
+    PointLight l,
+    metal::float3 position_1,
+    metal::float3 normal_1,
+    constant FrameUniforms& frame,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float strength = {};
+    metal::float3 to_light = l.position - position_1;
+    float dist_1 = metal::length(to_light);
+    metal::float3 dir_3 = to_light / metal::float3(metal::max(dist_1, 0.00000000000000000001));
+    strength = l.intensity / metal::max(dist_1 * dist_1, 0.00000000000000000001);
+    if (l.range > 0.0) {
+        float _e19 = strength;
+        strength = _e19 * (1.0 - metal::smoothstep(l.inner_range, l.range, dist_1));
+    }
+    float _e26 = shadow_query(position_1, normal_1, dir_3, dist_1, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    float _e28 = strength;
+    return LightSample {dir_3, dist_1, (l.color * metal::float3(_e28)) * metal::float3(_e26)};
+}
+
+LightSample dispatch_light(
+    uint type_id_3,
+    uint offset_7,
+    metal::float3 position_2,
+    metal::float3 normal_2,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    PointLight _e3 = load_PointLight(offset_7, params, _buffer_sizes);
+    LightSample _e4 = point_light(_e3, position_2, normal_2, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return _e4;
+}
+
+LightSample sample_light_query(
+    uint i_1,
+    metal::float3 position_3,
+    metal::float3 normal_3,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    FrameUniforms frame_4 = frame;
+    if (i_1 >= frame_4.light_count) {
+        return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0)};
+    }
+    uint entry = frame_4.light_table + (i_1 * 2u);
+    uint _e21 = params[entry];
+    uint _e26 = params[entry + 1u];
+    LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return _e27;
+}
+
+metal::float3 blinn_phong_shade(
+    BlinnPhong m,
+    Ray ray_12,
+    Hit hit_1,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    device type_4 const& texels,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 color = {};
+    uint i_2 = {};
+    metal::float3 n_7 = metal::faceforward(hit_1.normal, ray_12.dir, hit_1.normal);
+    metal::float3 _e8 = normalize_vec3f(ray_12.dir);
+    metal::float3 v_2 = -(_e8);
+    metal::float4 _e15 = sample_texture(m.texture, hit_1.uv * m.uv_scale, params, texels, _buffer_sizes);
+    metal::float3 kd = m.diffuse * _e15.xyz;
+    float s_4 = metal::max(m.shininess, 0.0);
+    float norm = (s_4 + 8.0) * (INV_PI / 8.0);
+    color = m.ambient * kd;
+    uint _e31 = light_count_query(frame);
+    i_2 = 0u;
+    uint2 loop_bound_6 = uint2(4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e64 = i_2;
+            i_2 = _e64 + 1u;
+        }
+        loop_init_3 = false;
+        uint _e33 = i_2;
+        if (_e33 >= _e31) {
+            break;
+        }
+        uint _e35 = i_2;
+        LightSample _e38 = sample_light_query(_e35, hit_1.position, hit_1.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        float ndl = metal::max(metal::dot(n_7, _e38.dir), 0.0);
+        metal::float3 _e45 = normalize_vec3f(_e38.dir + v_2);
+        float highlight = metal::pow(metal::max(metal::dot(n_7, _e45), 0.0), s_4) * norm;
+        metal::float3 _e51 = color;
+        color = _e51 + ((_e38.radiance * metal::float3(ndl)) * ((kd * metal::float3(INV_PI)) + (m.specular * metal::float3(highlight))));
+    }
+    metal::float3 _e67 = color;
+    return _e67;
+}
+
+Lambert load_Lambert(
+    uint offset_8,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_8 + 0u];
+    uint _e11 = params[offset_8 + 1u];
+    uint _e17 = params[offset_8 + 2u];
+    return Lambert {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17))};
+}
+
+metal::float3 lambert_shade(
+    Lambert m_1,
+    Ray ray_13,
+    Hit hit_2,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 color_1 = {};
+    uint i_3 = {};
+    metal::float3 n_8 = metal::faceforward(hit_2.normal, ray_13.dir, hit_2.normal);
+    color_1 = metal::float3(0.0);
+    uint _e11 = light_count_query(frame);
+    i_3 = 0u;
+    uint2 loop_bound_7 = uint2(4294967295u);
+    bool loop_init_4 = true;
+    while(true) {
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e33 = i_3;
+            i_3 = _e33 + 1u;
+        }
+        loop_init_4 = false;
+        uint _e13 = i_3;
+        if (_e13 >= _e11) {
+            break;
+        }
+        uint _e15 = i_3;
+        LightSample _e18 = sample_light_query(_e15, hit_2.position, hit_2.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e19 = color_1;
+        color_1 = _e19 + (((m_1.albedo * metal::float3(INV_PI)) * _e18.radiance) * metal::float3(metal::max(metal::dot(n_8, _e18.dir), 0.0)));
+    }
+    metal::float3 _e36 = color_1;
+    return _e36;
+}
+
+Mirror load_Mirror(
+    uint offset_9,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_9 + 0u];
+    uint _e11 = params[offset_9 + 1u];
+    uint _e17 = params[offset_9 + 2u];
+    return Mirror {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17))};
+}
+
+metal::float3 mirror_shade(
+    Mirror m_2,
+    Ray ray_14,
+    Hit hit_3,
+    metal::float3 secondary
+) {
+    return secondary;
+}
+
+UnlitTexture load_UnlitTexture(
+    uint offset_10,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_10 + 0u];
+    uint _e10 = params[offset_10 + 4u];
+    uint _e16 = params[offset_10 + 5u];
+    uint _e22 = params[offset_10 + 6u];
+    uint _e29 = params[offset_10 + 8u];
+    uint _e35 = params[offset_10 + 9u];
+    uint _e42 = params[offset_10 + 10u];
+    return UnlitTexture {_e5, {}, metal::float3(as_type<float>(_e10), as_type<float>(_e16), as_type<float>(_e22)), metal::float2(as_type<float>(_e29), as_type<float>(_e35)), _e42};
+}
+
+metal::float3 unlit_texture_shade(
+    UnlitTexture m_3,
+    Ray ray_15,
+    Hit hit_4,
+    device type_4 const& params,
+    device type_4 const& texels,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float2 uv_1 = {};
+    uv_1 = hit_4.uv;
+    if (m_3.planar == 1u) {
+        uv_1 = metal::float2(hit_4.position[0], -(hit_4.position[1]));
+    }
+    metal::float2 _e14 = uv_1;
+    metal::float4 _e17 = sample_texture(m_3.texture, _e14 * m_3.uv_scale, params, texels, _buffer_sizes);
+    return _e17.xyz * m_3.tint;
+}
+
+metal::float3 dispatch_closest_hit(
+    uint type_id_4,
+    uint offset_11,
+    Ray ray_16,
+    Hit hit_5,
+    metal::float3 secondary_1,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& ray_count,
+    device type_4 const& texels,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    switch(type_id_4) {
+        case 0u: {
+            BlinnPhong _e5 = load_BlinnPhong(offset_11, params, _buffer_sizes);
+            metal::float3 _e6 = blinn_phong_shade(_e5, ray_16, hit_5, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, texels, _buffer_sizes);
+            return _e6;
+        }
+        case 1u: {
+            Lambert _e7 = load_Lambert(offset_11, params, _buffer_sizes);
+            metal::float3 _e8 = lambert_shade(_e7, ray_16, hit_5, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+            return _e8;
+        }
+        case 2u: {
+            Mirror _e9 = load_Mirror(offset_11, params, _buffer_sizes);
+            metal::float3 _e10 = mirror_shade(_e9, ray_16, hit_5, secondary_1);
+            return _e10;
+        }
+        case 3u: {
+            UnlitTexture _e11 = load_UnlitTexture(offset_11, params, _buffer_sizes);
+            metal::float3 _e12 = unlit_texture_shade(_e11, ray_16, hit_5, params, texels, _buffer_sizes);
+            return _e12;
+        }
+        default: {
+            break;
+        }
+    }
+    return metal::float3 {};
+}
+
+metal::float3 shade_direct(
+    Ray ray_17,
+    Candidate c_3,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    device type_13 const& attributes,
+    thread uint& ray_count,
+    device type_4 const& texels,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuInstance inst_8 = instances[c_3.slot];
+    Hit _e6 = finish_hit(ray_17, c_3, instances, triangles, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, texels, _buffer_sizes);
+    return _e11;
+}
+
+void rt_spawn(
+    metal::float3 dir_1,
+    metal::float3 weight,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
+    thread uint& spawn_count
+) {
+    uint _e3 = spawn_count;
+    if (_e3 < 1u) {
+        spawn_dirs.inner[_e3] = dir_1;
+        spawn_weights.inner[_e3] = weight;
+        spawn_count = _e3 + 1u;
+    }
+}
+
+void mirror_rays(
+    Mirror m_4,
+    Ray ray_18,
+    Hit hit_6,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
+    thread uint& spawn_count
+) {
+    metal::float3 _e4 = normalize_vec3f(ray_18.dir);
+    rt_spawn(metal::reflect(_e4, hit_6.normal), m_4.tint, spawn_dirs, spawn_weights, spawn_count);
+    return;
+}
+
+void dispatch_secondary_rays(
+    uint type_id_5,
+    uint offset_12,
+    Ray ray_19,
+    Hit hit_7,
+    device type_4 const& params,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
+    thread uint& spawn_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Mirror _e3 = load_Mirror(offset_12, params, _buffer_sizes);
+    mirror_rays(_e3, ray_19, hit_7, spawn_dirs, spawn_weights, spawn_count);
+    return;
+}
+
+metal::float3 spawn_origin(
+    Hit hit_8,
+    metal::float3 dir_2,
+    constant FrameUniforms& frame,
+    device type_9 const& nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 n_4 = {};
+    n_4 = hit_8.geometric_normal;
+    metal::float3 _e4 = n_4;
+    if (metal::dot(dir_2, _e4) < 0.0) {
+        metal::float3 _e8 = n_4;
+        n_4 = -(_e8);
+    }
+    metal::float3 _e11 = n_4;
+    metal::float3 _e12 = offset_origin(hit_8.position, _e11, frame, nodes, _buffer_sizes);
+    return _e12;
+}
+
+metal::float3 trace(
+    Ray camera_ray,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    device type_13 const& attributes,
+    thread uint& ray_count,
+    device type_4 const& texels,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
+    thread uint& spawn_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    type_16 stack = {};
+    uint depth = {};
+    Ray ray_20 = {};
+    metal::float3 value = {};
+    bool have_value = {};
+    bool pushed = {};
+    Frame f = {};
+    uint i_4 = {};
+    uint medium = {};
+    if (!(HAS_SECONDARY_RAYS)) {
+        Candidate _e4 = intersect_scene(camera_ray, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        if (_e4.slot == NO_HIT) {
+            uint _e9 = F32_INF;
+            metal::float3 _e11 = miss(camera_ray, frame, params, _buffer_sizes);
+            metal::float3 _e12 = through_medium(camera_ray, as_type<float>(_e9), _e11, instances, _buffer_sizes);
+            return _e12;
+        }
+        metal::float3 _e14 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, texels, _buffer_sizes);
+        metal::float3 _e15 = through_medium(camera_ray, _e4.t, _e14, instances, _buffer_sizes);
+        return _e15;
+    }
+    stack = type_16 {};
+    depth = 0u;
+    ray_20 = camera_ray;
+    value = metal::float3(0.0);
+    have_value = false;
+    uint2 loop_bound_8 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        bool _e26 = have_value;
+        if (!(_e26)) {
+            Ray _e28 = ray_20;
+            Candidate _e30 = intersect_scene(_e28, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+            if (_e30.slot == NO_HIT) {
+                Ray _e34 = ray_20;
+                uint _e36 = F32_INF;
+                Ray _e38 = ray_20;
+                metal::float3 _e39 = miss(_e38, frame, params, _buffer_sizes);
+                metal::float3 _e40 = through_medium(_e34, as_type<float>(_e36), _e39, instances, _buffer_sizes);
+                value = _e40;
+                have_value = true;
+            } else {
+                GpuInstance inst_9 = instances[_e30.slot];
+                Ray _e46 = ray_20;
+                Hit _e47 = finish_hit(_e46, _e30, instances, triangles, attributes, _buffer_sizes);
+                pushed = false;
+                uint _e56 = ray_20.depth;
+                uint _e60 = depth;
+                if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
+                    spawn_count = 0u;
+                    Ray _e68 = ray_20;
+                    dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+                    uint _e70 = spawn_count;
+                    uint n_9 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
+                    if (n_9 > 0u) {
+                        Ray _e77 = ray_20;
+                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_9, 0u};
+                        i_4 = 0u;
+                        uint2 loop_bound_9 = uint2(4294967295u);
+                        bool loop_init_5 = true;
+                        while(true) {
+                            if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+                            loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                            if (!loop_init_5) {
+                                uint _e108 = i_4;
+                                i_4 = _e108 + 1u;
+                            }
+                            loop_init_5 = false;
+                            uint _e88 = i_4;
+                            if (_e88 >= n_9) {
+                                break;
+                            }
+                            uint _e91 = i_4;
+                            uint _e95 = i_4;
+                            metal::float3 _e98 = spawn_dirs.inner[_e95];
+                            f.dirs.inner[metal::min(_e91, 0u)] = _e98;
+                            uint _e100 = i_4;
+                            uint _e104 = i_4;
+                            metal::float3 _e107 = spawn_weights.inner[_e104];
+                            f.weights.inner[metal::min(_e100, 0u)] = _e107;
+                        }
+                        uint _e111 = depth;
+                        Frame _e115 = f;
+                        stack.inner[metal::min(_e111, 2u)] = _e115;
+                        uint _e116 = depth;
+                        depth = _e116 + 1u;
+                        pushed = true;
+                    }
+                }
+                bool _e120 = pushed;
+                if (!(_e120)) {
+                    Ray _e124 = ray_20;
+                    metal::float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, texels, _buffer_sizes);
+                    Ray _e128 = ray_20;
+                    metal::float3 _e130 = through_medium(_e128, _e30.t, _e127, instances, _buffer_sizes);
+                    value = _e130;
+                    have_value = true;
+                }
+            }
+        }
+        bool _e132 = have_value;
+        if (_e132) {
+            uint _e133 = depth;
+            if (_e133 == 0u) {
+                metal::float3 _e136 = value;
+                return _e136;
+            }
+            uint _e137 = depth;
+            uint top = _e137 - 1u;
+            uint _e144 = stack.inner[metal::min(top, 2u)].next;
+            uint child = _e144 - 1u;
+            metal::float3 _e151 = stack.inner[metal::min(top, 2u)].sum;
+            metal::float3 _e159 = stack.inner[metal::min(top, 2u)].weights.inner[metal::min(child, 0u)];
+            metal::float3 _e160 = value;
+            stack.inner[metal::min(top, 2u)].sum = _e151 + (_e159 * _e160);
+            have_value = false;
+        }
+        uint _e164 = depth;
+        uint top_1 = _e164 - 1u;
+        uint _e171 = stack.inner[metal::min(top_1, 2u)].next;
+        uint _e176 = stack.inner[metal::min(top_1, 2u)].count;
+        if (_e171 < _e176) {
+            uint i_5 = stack.inner[metal::min(top_1, 2u)].next;
+            stack.inner[metal::min(top_1, 2u)].next = i_5 + 1u;
+            Ray parent = stack.inner[metal::min(top_1, 2u)].ray;
+            Hit hit_10 = stack.inner[metal::min(top_1, 2u)].hit;
+            metal::float3 dir_4 = stack.inner[metal::min(top_1, 2u)].dirs.inner[metal::min(i_5, 0u)];
+            medium = parent.medium;
+            metal::float3 _e209 = spawn_origin(hit_10, dir_4, frame, nodes, _buffer_sizes);
+            uint _e212 = F32_INF;
+            uint _e218 = medium;
+            ray_20 = Ray {_e209, 0.0, dir_4, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
+        } else {
+            uint _e224 = stack.inner[metal::min(top_1, 2u)].slot;
+            GpuInstance inst_10 = instances[_e224];
+            Ray _e234 = stack.inner[metal::min(top_1, 2u)].ray;
+            Hit _e239 = stack.inner[metal::min(top_1, 2u)].hit;
+            metal::float3 _e244 = stack.inner[metal::min(top_1, 2u)].sum;
+            metal::float3 _e245 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e234, _e239, _e244, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, texels, _buffer_sizes);
+            Ray _e250 = stack.inner[metal::min(top_1, 2u)].ray;
+            float _e256 = stack.inner[metal::min(top_1, 2u)].hit.t;
+            metal::float3 _e257 = through_medium(_e250, _e256, _e245, instances, _buffer_sizes);
+            value = _e257;
+            depth = top_1;
+            have_value = true;
+        }
+    }
+    return metal::float3 {};
+}
+
+metal::bool3 is_finite_vec3f(
+    metal::float3 x_3
+) {
+    return (as_type<metal::uint3>(x_3) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+}
+
+metal::float3 finite_or_zero(
+    metal::float3 c_4
+) {
+    metal::bool3 _e3 = is_finite_vec3f(c_4);
+    return metal::select(metal::float3(0.0), c_4, _e3);
+}
+
+void render_pixel(
+    metal::uint2 pixel_3,
+    constant FrameUniforms& frame,
+    constant TileParams& tile,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    device type_13 const& attributes,
+    thread uint& ray_count,
+    device type_4 const& texels,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
+    thread uint& spawn_count,
+    device type_10& accum,
+    device type_19& counters,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 sum = {};
+    uint bad = {};
+    uint s = {};
+    Ray ray_21 = {};
+    FrameUniforms frame_5 = frame;
+    TileParams tile_1 = tile;
+    sum = metal::float3(0.0);
+    bad = 0u;
+    uint end_1 = frame_5.samples_per_pass;
+    s = 0u;
+    uint2 loop_bound_10 = uint2(4294967295u);
+    bool loop_init_6 = true;
+    while(true) {
+        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e46 = s;
+            s = _e46 + 1u;
+        }
+        loop_init_6 = false;
+        uint _e13 = s;
+        if (_e13 >= end_1) {
+            break;
+        }
+        uint _e18 = s;
+        uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
+        rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, frame, tile, rng_state, params, F32_INF, _buffer_sizes);
+        ray_21 = _e23;
+        ray_21.depth = 0u;
+        ray_21.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_21.origin;
+        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, _buffer_sizes);
+        ray_21.medium = _e33;
+        Ray _e34 = ray_21;
+        metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::bool3 _e36 = is_finite_vec3f(_e35);
+        if (metal::all(_e36)) {
+            metal::float3 _e38 = sum;
+            sum = _e38 + _e35;
+        } else {
+            metal::float3 _e40 = sum;
+            metal::float3 _e41 = finite_or_zero(_e35);
+            sum = _e40 + _e41;
+            uint _e43 = bad;
+            bad = _e43 + 1u;
+        }
+    }
+    metal::float3 _e55 = sum;
+    uint _e59 = bad;
+    metal::float4 _e62 = accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x];
+    accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e62 + metal::float4(_e55, static_cast<float>(frame_5.samples_per_pass));
+    if (_e59 > 0u) {
+        metal::atomic_fetch_add_explicit(&counters[0], _e59, metal::memory_order_relaxed);
+    }
+    uint _e69 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e69, metal::memory_order_relaxed);
+    return;
+}
+
+struct renderInput {
+};
+[[max_total_threads_per_threadgroup(64)]] kernel void render(
+  metal::uint3 gid [[thread_position_in_grid]]
+, constant FrameUniforms& frame [[buffer(0)]]
+, constant TileParams& tile [[buffer(1)]]
+, device type_4 const& params [[buffer(6)]]
+, device type_8 const& instances [[buffer(3)]]
+, device type_9 const& nodes [[buffer(2)]]
+, device type_10 const& triangles [[buffer(4)]]
+, device type_13 const& attributes [[buffer(5)]]
+, device type_4 const& texels [[buffer(7)]]
+, device type_10& accum [[buffer(8)]]
+, device type_19& counters [[buffer(9)]]
+, constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
+) {
+    uint rng_state = {};
+    uint F32_INF = 2139095040u;
+    type_11 traversal_stack = {};
+    uint ray_count = {};
+    type_15 spawn_dirs = {};
+    type_15 spawn_weights = {};
+    uint spawn_count = {};
+    TileParams _e2 = tile;
+    metal::uint2 _e7 = metal::uint2(gid.x, gid.y);
+    if (metal::any(_e7 >= _e2.extent)) {
+        return;
+    }
+    render_pixel(_e2.origin + _e7, frame, tile, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
+    return;
+}

@@ -1,0 +1,2021 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct _mslBufferSizes {
+    uint size3;
+    uint size5;
+    uint size6;
+    uint size7;
+    uint size10;
+    uint size12;
+    uint size16;
+    uint size17;
+};
+
+struct FrameUniforms {
+    uint samples_per_pass;
+    uint total_samples;
+    uint seed;
+    uint tlas_root;
+    uint instance_count;
+    uint light_count;
+    uint light_table;
+    uint medium_count;
+    uint medium_table;
+    uint camera_type;
+    uint camera_offset;
+    uint background_type;
+    uint background_offset;
+};
+struct TileParams {
+    metal::uint2 origin;
+    metal::uint2 extent;
+    metal::uint2 image_size;
+    uint tile_index;
+    uint frame;
+};
+struct Ray {
+    metal::packed_float3 origin;
+    float tmin;
+    metal::packed_float3 dir;
+    float tmax;
+    uint depth;
+    uint kind;
+    uint medium;
+    char _pad7[4];
+};
+typedef uint type_4[1];
+struct SupersampledPinhole {
+    metal::float3 position;
+    metal::float3 look_at;
+    metal::packed_float3 up;
+    float fov;
+};
+struct Candidate {
+    float t;
+    uint slot;
+    uint primitive;
+    char _pad3[4];
+    metal::float2 uv;
+    char _pad4[8];
+    metal::float3 normal;
+};
+struct GpuInstance {
+    metal::float4 world_to_object_0_;
+    metal::float4 world_to_object_1_;
+    metal::float4 world_to_object_2_;
+    metal::float4 object_to_world_0_;
+    metal::float4 object_to_world_1_;
+    metal::float4 object_to_world_2_;
+    uint geometry_type;
+    uint geometry_offset;
+    uint material_type;
+    uint material_offset;
+    uint blas_root;
+    uint triangle_offset;
+    uint flags;
+    uint object;
+};
+typedef GpuInstance type_8[1];
+struct TriangleRay {
+    metal::packed_float3 origin;
+    uint kx;
+    uint ky;
+    uint kz;
+    char _pad4[8];
+    metal::packed_float3 shear;
+    bool valid;
+    char _pad6[3];
+};
+struct GpuNode {
+    metal::packed_float3 min;
+    uint a;
+    metal::packed_float3 max;
+    uint b;
+};
+typedef GpuNode type_9[1];
+typedef metal::float4 type_10[1];
+struct type_11 {
+    metal::uint2 inner[128];
+};
+struct BvhMesh {
+    uint mesh;
+};
+struct Intersection {
+    float t;
+    char _pad1[12];
+    metal::float3 normal;
+    metal::float2 uv;
+    char _pad3[8];
+};
+struct type_12 {
+    uint inner[64];
+};
+struct type_13 {
+    float inner[64];
+};
+struct BvhNode {
+    metal::float3 min;
+    metal::packed_float3 max;
+    uint first;
+    uint count;
+    char _pad4[12];
+};
+struct Triangle {
+    metal::float3 v0_;
+    metal::float3 v1_;
+    metal::float3 v2_;
+};
+struct Sphere {
+    metal::packed_float3 center;
+    float radius;
+};
+struct Hit {
+    metal::packed_float3 position;
+    float t;
+    metal::float3 normal;
+    metal::float3 geometric_normal;
+    metal::float2 uv;
+    bool front_face;
+    char _pad6[3];
+    uint instance;
+    uint primitive;
+    char _pad8[12];
+};
+typedef metal::uint4 type_15[1];
+struct Skybox {
+    uint image;
+    float intensity;
+    float rotation;
+};
+struct Lambert {
+    metal::float3 albedo;
+};
+struct LightSample {
+    metal::packed_float3 dir;
+    float dist;
+    metal::float3 radiance;
+};
+struct PointLight {
+    metal::float3 position;
+    metal::packed_float3 color;
+    float intensity;
+    float range;
+    float inner_range;
+    char _pad5[8];
+};
+struct type_17 {
+    metal::float3 inner[1];
+};
+struct Frame {
+    Ray ray;
+    Hit hit;
+    uint slot;
+    char _pad3[12];
+    metal::float3 sum;
+    type_17 dirs;
+    type_17 weights;
+    uint count;
+    uint next;
+    char _pad8[8];
+};
+struct type_18 {
+    Frame inner[4];
+};
+typedef metal::atomic_uint type_21[1];
+constant uint SUPERSAMPLING_GRID = 2u;
+constant uint RAY_CAMERA = 0u;
+constant uint NO_HIT = 4294967295u;
+constant bool HAS_MEDIA = false;
+constant uint MESH_GEOMETRY = 4294967295u;
+constant uint LEAF_BIT = 2147483648u;
+constant uint BLAS_STACK = 64u;
+constant uint TLAS_STACK = 64u;
+constant uint BVH_MESH_STACK = 64u;
+constant float TAU = 6.2831855;
+constant float INV_PI = 0.31830987;
+constant bool HAS_SECONDARY_RAYS = false;
+constant bool HAS_BACKGROUND = true;
+constant uint FLAG_MEDIUM = 4u;
+constant uint RAY_SHADOW = 2u;
+constant uint FLAG_SECONDARY = 2u;
+constant uint MAX_DEPTH = 4u;
+constant uint STACK_SIZE = 4u;
+constant uint MAX_SPAWN = 1u;
+constant uint RAY_SECONDARY = 1u;
+
+uint pcg_hash(
+    uint x
+) {
+    uint state = (x * 747796405u) + 2891336453u;
+    uint word = ((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+void rng_seed(
+    metal::uint2 pixel,
+    uint sample,
+    uint seed,
+    thread uint& rng_state
+) {
+    uint h = {};
+    uint _e5 = pcg_hash(seed);
+    uint _e7 = pcg_hash(sample ^ _e5);
+    uint _e9 = pcg_hash(pixel.y ^ _e7);
+    uint _e11 = pcg_hash(pixel.x ^ _e9);
+    h = _e11;
+    uint _e13 = h;
+    if (_e13 == 0u) {
+        h = 1u;
+    }
+    uint _e17 = h;
+    rng_state = _e17;
+    return;
+}
+
+SupersampledPinhole load_SupersampledPinhole(
+    uint offset,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset + 0u];
+    uint _e11 = params[offset + 1u];
+    uint _e17 = params[offset + 2u];
+    uint _e24 = params[offset + 4u];
+    uint _e30 = params[offset + 5u];
+    uint _e36 = params[offset + 6u];
+    uint _e43 = params[offset + 8u];
+    uint _e49 = params[offset + 9u];
+    uint _e55 = params[offset + 10u];
+    uint _e62 = params[offset + 11u];
+    return SupersampledPinhole {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), metal::float3(as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)), as_type<float>(_e62)};
+}
+
+metal::uint2 image_size_query(
+    constant TileParams& tile
+) {
+    TileParams _e1 = tile;
+    return _e1.image_size;
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint rem_u32_(
+    uint a,
+    uint b
+) {
+    bool by_zero = b == 0u;
+    uint divisor = by_zero ? 1u : b;
+    return by_zero ? 0u : naga_mod(a, divisor);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint div_u32_(
+    uint a_1,
+    uint b_1
+) {
+    bool by_zero_1 = b_1 == 0u;
+    uint divisor_1 = by_zero_1 ? 1u : b_1;
+    return naga_div(a_1, divisor_1);
+}
+
+float rand_next(
+    thread uint& rng_state
+) {
+    uint _e1 = rng_state;
+    uint s_2 = (_e1 * 747796405u) + 2891336453u;
+    rng_state = s_2;
+    uint word_1 = ((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u;
+    uint r_4 = (word_1 >> 22u) ^ word_1;
+    return static_cast<float>(r_4 >> 8u) * (1.0 / 16777216.0);
+}
+
+metal::float2 rand2_next(
+    thread uint& rng_state
+) {
+    float _e0 = rand_next(rng_state);
+    float _e1 = rand_next(rng_state);
+    return metal::float2(_e0, _e1);
+}
+
+metal::float3 normalize_vec3f(
+    metal::float3 v
+) {
+    return (metal::dot(v, v) >= 0.000000000000000000000000000000000000011754944) ? metal::normalize(v) : metal::float3(0.0);
+}
+
+Ray supersampled_ray(
+    SupersampledPinhole cam,
+    metal::uint2 pixel_1,
+    uint sample_1,
+    constant TileParams& tile,
+    thread uint& rng_state,
+    thread uint& F32_INF
+) {
+    metal::uint2 _e3 = image_size_query(tile);
+    metal::float2 size = static_cast<metal::float2>(_e3);
+    uint _e8 = rem_u32_(sample_1, SUPERSAMPLING_GRID * SUPERSAMPLING_GRID);
+    uint _e10 = rem_u32_(_e8, SUPERSAMPLING_GRID);
+    uint _e13 = div_u32_(_e8, SUPERSAMPLING_GRID);
+    metal::float2 stratum = metal::float2(static_cast<float>(_e10), static_cast<float>(_e13));
+    metal::float2 _e16 = rand2_next(rng_state);
+    metal::float2 offset_13 = (stratum + _e16) / metal::float2(static_cast<float>(SUPERSAMPLING_GRID));
+    metal::float2 ndc = (((static_cast<metal::float2>(pixel_1) + offset_13) / size) * metal::float2(2.0)) - metal::float2(1.0);
+    metal::float3 _e34 = normalize_vec3f(cam.look_at - cam.position);
+    metal::float3 _e37 = normalize_vec3f(metal::cross(_e34, cam.up));
+    metal::float3 up = metal::cross(_e37, _e34);
+    float h_1 = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
+    float aspect = size.x / size.y;
+    metal::float3 _e58 = normalize_vec3f((_e34 + (_e37 * metal::float3((ndc.x * h_1) * aspect))) - (up * metal::float3(ndc.y * h_1)));
+    uint _e62 = F32_INF;
+    return Ray {cam.position, 0.0, _e58, as_type<float>(_e62), 0u, 0u, 0u};
+}
+
+Ray dispatch_ray_generation(
+    uint type_id,
+    uint offset_1,
+    metal::uint2 pixel_2,
+    uint sample_2,
+    constant TileParams& tile,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    SupersampledPinhole _e3 = load_SupersampledPinhole(offset_1, params, _buffer_sizes);
+    Ray _e4 = supersampled_ray(_e3, pixel_2, sample_2, tile, rng_state, F32_INF);
+    return _e4;
+}
+
+Candidate no_candidate(
+    float tmax
+) {
+    return Candidate {tmax, NO_HIT, 0u, {}, metal::float2(0.0), {}, metal::float3(0.0)};
+}
+
+Ray to_object(
+    GpuInstance inst,
+    Ray ray
+) {
+    Ray r = {};
+    r = ray;
+    metal::float4 o = metal::float4(ray.origin, 1.0);
+    metal::float4 d_1 = metal::float4(ray.dir, 0.0);
+    r.origin = metal::float3(metal::dot(inst.world_to_object_0_, o), metal::dot(inst.world_to_object_1_, o), metal::dot(inst.world_to_object_2_, o));
+    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_1), metal::dot(inst.world_to_object_1_, d_1), metal::dot(inst.world_to_object_2_, d_1));
+    Ray _e25 = r;
+    return _e25;
+}
+
+metal::float3 safe_inverse(
+    metal::float3 d
+) {
+    metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
+    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_3 * tiny, metal::abs(d) < tiny);
+    return metal::float3(1.0) / dd;
+}
+
+TriangleRay prepare_triangle_ray(
+    Ray ray_1
+) {
+    metal::float3 d_2 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 ad = metal::abs(d_2);
+    bool y_gt = ad.y > ad.x;
+    uint kz = (ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u);
+    uint kx0_ = (kz == 2u) ? 0u : (kz + 1u);
+    uint ky0_ = (kz >= 1u) ? (kz - 1u) : (kz + 2u);
+    float dz = d_2[metal::min(kz, 2u)];
+    bool flip = dz < 0.0;
+    uint kx = flip ? ky0_ : kx0_;
+    uint ky = flip ? kx0_ : ky0_;
+    metal::uint3 inf_bits = metal::uint3(2139095040u);
+    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_2) & metal::uint3(2147483647u)) < inf_bits);
+    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_2[metal::min(kx, 2u)] / dz, d_2[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
+}
+
+metal::float3 hit_triangle(
+    TriangleRay r_1,
+    uint slot,
+    float tmin,
+    float tmax_1,
+    thread uint& F32_INF,
+    device type_10 const& triangles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float4 _e8 = triangles[slot * 3u];
+    metal::float3 a_3 = _e8.xyz - r_1.origin;
+    metal::float4 _e18 = triangles[(slot * 3u) + 1u];
+    metal::float3 b_4 = _e18.xyz - r_1.origin;
+    metal::float4 _e28 = triangles[(slot * 3u) + 2u];
+    metal::float3 c_5 = _e28.xyz - r_1.origin;
+    float ax = a_3[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_3[metal::min(r_1.kz, 2u)]);
+    float ay = a_3[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_3[metal::min(r_1.kz, 2u)]);
+    float bx = b_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_4[metal::min(r_1.kz, 2u)]);
+    float by = b_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_4[metal::min(r_1.kz, 2u)]);
+    float cx = c_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_5[metal::min(r_1.kz, 2u)]);
+    float cy = c_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_5[metal::min(r_1.kz, 2u)]);
+    float u = (cx * by) - (cy * bx);
+    float v_1 = (ax * cy) - (ay * cx);
+    float w = (bx * ay) - (by * ax);
+    bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
+    float det = (u + v_1) + w;
+    float rcp = 1.0 / det;
+    float t_6 = (((u * (r_1.shear[2] * a_3[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_4[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
+    bool hit_5 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1);
+    uint _e173 = F32_INF;
+    return hit_5 ? metal::float3(t_6, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+}
+
+bool accept(
+    GpuInstance inst_1,
+    Ray ray_2,
+    Candidate c
+) {
+    return true;
+}
+
+float slab(
+    metal::float3 lo,
+    metal::float3 hi,
+    metal::float3 origin,
+    metal::float3 inv_dir,
+    float tmin_1,
+    float tmax_2,
+    thread uint& F32_INF
+) {
+    metal::float3 t0_ = (lo - origin) * inv_dir;
+    metal::float3 t1_ = (hi - origin) * inv_dir;
+    metal::float3 near_2 = metal::min(t0_, t1_);
+    metal::float3 far_2 = metal::max(t0_, t1_);
+    float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, tmin_1));
+    float exit = metal::min(metal::min(far_2.x, far_2.y) * 1.0000005, metal::min(far_2.z * 1.0000005, tmax_2));
+    if (enter <= exit) {
+        return enter;
+    }
+    uint _e30 = F32_INF;
+    return as_type<float>(_e30);
+}
+
+metal::uint2 pop_within(
+    uint base,
+    uint sp_in,
+    float t,
+    thread type_11& traversal_stack
+) {
+    uint sp = {};
+    sp = sp_in;
+    uint2 loop_bound = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e4 = sp;
+        if (_e4 == 0u) {
+            break;
+        }
+        uint _e7 = sp;
+        sp = _e7 - 1u;
+        uint _e10 = sp;
+        metal::uint2 e = traversal_stack.inner[metal::min(base + _e10, 127u)];
+        if (as_type<float>(e.y) <= t) {
+            uint _e21 = sp;
+            return metal::uint2(e.x, _e21);
+        }
+    }
+    return metal::uint2(NO_HIT, 0u);
+}
+
+Candidate intersect_mesh(
+    GpuInstance inst_2,
+    uint slot_1,
+    Ray world_ray,
+    Ray ray_3,
+    Candidate best_in,
+    bool shadow,
+    thread uint& F32_INF,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Candidate best = {};
+    uint sp_1 = {};
+    uint node = {};
+    uint k = {};
+    uint near = {};
+    uint far = {};
+    float t_far = {};
+    best = best_in;
+    metal::float3 _e8 = safe_inverse(ray_3.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_3);
+    uint base_1 = inst_2.blas_root;
+    sp_1 = 0u;
+    node = base_1;
+    uint2 loop_bound_1 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e14 = node;
+        GpuNode n_6 = nodes[_e14];
+        if ((n_6.b & LEAF_BIT) != 0u) {
+            uint count_1 = n_6.b & ~(LEAF_BIT);
+            k = 0u;
+            uint2 loop_bound_2 = uint2(4294967295u);
+            bool loop_init = true;
+            while(true) {
+                if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                if (!loop_init) {
+                    uint _e52 = k;
+                    k = _e52 + 1u;
+                }
+                loop_init = false;
+                uint _e29 = k;
+                if (_e29 >= count_1) {
+                    break;
+                }
+                uint _e34 = k;
+                uint prim = (inst_2.triangle_offset + n_6.a) + _e34;
+                float _e38 = best.t;
+                metal::float3 _e39 = hit_triangle(_e9, prim, ray_3.tmin, _e38, F32_INF, triangles, _buffer_sizes);
+                uint _e42 = F32_INF;
+                if (_e39.x < as_type<float>(_e42)) {
+                    Candidate c_6 = Candidate {_e39.x, slot_1, prim, {}, _e39.yz, {}, metal::float3(0.0)};
+                    bool _e50 = accept(inst_2, world_ray, c_6);
+                    if (_e50) {
+                        best = c_6;
+                        if (shadow) {
+                            Candidate _e51 = best;
+                            return _e51;
+                        }
+                    }
+                }
+            }
+        } else {
+            uint left = base_1 + n_6.a;
+            uint right = left + 1u;
+            GpuNode l_1 = nodes[left];
+            GpuNode rr = nodes[right];
+            float _e70 = best.t;
+            float _e71 = slab(l_1.min, l_1.max, ray_3.origin, _e8, ray_3.tmin, _e70, F32_INF);
+            float _e77 = best.t;
+            float _e78 = slab(rr.min, rr.max, ray_3.origin, _e8, ray_3.tmin, _e77, F32_INF);
+            uint _e80 = F32_INF;
+            uint _e84 = F32_INF;
+            if ((_e71 < as_type<float>(_e80)) && (_e78 < as_type<float>(_e84))) {
+                near = left;
+                far = right;
+                t_far = _e78;
+                if (_e78 < _e71) {
+                    near = right;
+                    far = left;
+                    t_far = _e71;
+                }
+                uint _e92 = sp_1;
+                if (_e92 < BLAS_STACK) {
+                    uint _e96 = sp_1;
+                    uint _e98 = far;
+                    float _e99 = t_far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e96, 127u)] = metal::uint2(_e98, as_type<uint>(_e99));
+                    uint _e106 = sp_1;
+                    sp_1 = _e106 + 1u;
+                }
+                uint _e109 = near;
+                node = _e109;
+                continue;
+            }
+            uint _e111 = F32_INF;
+            if (_e71 < as_type<float>(_e111)) {
+                node = left;
+                continue;
+            }
+            uint _e115 = F32_INF;
+            if (_e78 < as_type<float>(_e115)) {
+                node = right;
+                continue;
+            }
+        }
+        uint _e119 = sp_1;
+        float _e121 = best.t;
+        metal::uint2 _e122 = pop_within(TLAS_STACK, _e119, _e121, traversal_stack);
+        if (_e122.x == NO_HIT) {
+            break;
+        }
+        node = _e122.x;
+        sp_1 = _e122.y;
+    }
+    Candidate _e128 = best;
+    return _e128;
+}
+
+BvhMesh load_BvhMesh(
+    uint offset_2,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_2 + 0u];
+    return BvhMesh {_e5};
+}
+
+BvhNode mesh_node_query(
+    uint m,
+    uint i,
+    device type_4 const& params,
+    device type_9 const& nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint count = {};
+    uint _e4 = params[m];
+    GpuNode n_7 = nodes[_e4 + i];
+    count = 0u;
+    if ((n_7.b & 2147483648u) != 0u) {
+        count = n_7.b & 2147483647u;
+    }
+    uint _e22 = count;
+    return BvhNode {n_7.min, n_7.max, n_7.a, _e22};
+}
+
+metal::float2 intersect_aabb(
+    Ray ray_4,
+    metal::float3 min,
+    metal::float3 max,
+    thread uint& F32_INF,
+    thread uint& F32_NEG_INF
+) {
+    metal::bool3 parallel = metal::abs(ray_4.dir) < metal::float3(0.000000000000000000000000000000000000011754944);
+    metal::float3 _e12 = metal::float3(1.0);
+    metal::float3 inv_dir_1 = _e12 / metal::select(ray_4.dir, _e12, parallel);
+    metal::float3 _e17 = (min - ray_4.origin) * inv_dir_1;
+    metal::float3 _e18 = (max - ray_4.origin) * inv_dir_1;
+    metal::bool3 _e23 = (min <= ray_4.origin) & (ray_4.origin <= max);
+    uint _e25 = F32_INF;
+    metal::float3 _e27 = metal::float3(as_type<float>(_e25));
+    uint _e29 = F32_NEG_INF;
+    metal::float3 _e31 = metal::float3(as_type<float>(_e29));
+    metal::float3 near_3 = metal::select(metal::min(_e17, _e18), metal::select(_e27, _e31, _e23), parallel);
+    metal::float3 far_3 = metal::select(metal::max(_e17, _e18), metal::select(_e31, _e27, _e23), parallel);
+    return metal::float2(metal::max(metal::max(metal::max(near_3.x, near_3.y), near_3.z), ray_4.tmin), metal::min(metal::min(metal::min(far_3.x, far_3.y), far_3.z), ray_4.tmax));
+}
+
+float bvh_mesh_enter(
+    Ray ray_5,
+    BvhNode n,
+    float tmax_3,
+    thread uint& F32_INF,
+    thread uint& F32_NEG_INF
+) {
+    metal::float2 _e5 = intersect_aabb(ray_5, n.min, n.max, F32_INF, F32_NEG_INF);
+    uint _e7 = F32_INF;
+    return ((_e5.x <= _e5.y) && (_e5.x <= tmax_3)) ? _e5.x : as_type<float>(_e7);
+}
+
+Triangle mesh_triangle_query(
+    uint m_1,
+    uint i_1,
+    device type_4 const& params,
+    device type_10 const& triangles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e6 = params[m_1 + 1u];
+    uint slot_4 = (_e6 + i_1) * 3u;
+    metal::float4 _e12 = triangles[slot_4];
+    metal::float4 _e18 = triangles[slot_4 + 1u];
+    metal::float4 _e24 = triangles[slot_4 + 2u];
+    return Triangle {_e12.xyz, _e18.xyz, _e24.xyz};
+}
+
+Intersection intersect_triangle(
+    Ray ray_6,
+    Triangle tri,
+    thread uint& F32_INF
+) {
+    metal::uint3 _e10 = metal::uint3(2139095040u);
+    metal::float3 dir_2 = metal::select(ray_6.dir, metal::float3(0.0), metal::abs(ray_6.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 _e31 = metal::abs(dir_2);
+    bool _e38 = _e31.y > _e31.x;
+    uint kz_1 = (_e31.z > (_e38 ? _e31.y : _e31.x)) ? 2u : (_e38 ? 1u : 0u);
+    uint _e45 = (kz_1 == 2u) ? 0u : (kz_1 + 1u);
+    uint _e49 = (kz_1 >= 1u) ? (kz_1 - 1u) : (kz_1 + 2u);
+    float dz_1 = dir_2[kz_1];
+    bool _e52 = dz_1 < 0.0;
+    uint kx_1 = _e52 ? _e49 : _e45;
+    uint ky_1 = _e52 ? _e45 : _e49;
+    float sx = dir_2[kx_1] / dz_1;
+    float sy = dir_2[ky_1] / dz_1;
+    float sz = 1.0 / dz_1;
+    metal::float3 _e62 = tri.v0_ - ray_6.origin;
+    float _e68 = _e62[kx_1] - (sx * _e62[kz_1]);
+    float _e69 = _e62[ky_1] - (sy * _e62[kz_1]);
+    metal::float3 _e71 = tri.v1_ - ray_6.origin;
+    float _e77 = _e71[kx_1] - (sx * _e71[kz_1]);
+    float _e78 = _e71[ky_1] - (sy * _e71[kz_1]);
+    metal::float3 _e80 = tri.v2_ - ray_6.origin;
+    float _e86 = _e80[kx_1] - (sx * _e80[kz_1]);
+    float _e87 = _e80[ky_1] - (sy * _e80[kz_1]);
+    float u_1 = (_e86 * _e78) - (_e87 * _e77);
+    float v_2 = (_e68 * _e87) - (_e69 * _e86);
+    float w_1 = (_e77 * _e69) - (_e78 * _e68);
+    float det_1 = (u_1 + v_2) + w_1;
+    float _e112 = 1.0 / det_1;
+    float t_7 = (((u_1 * (sz * _e62[kz_1])) + (v_2 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112;
+    bool hit_6 = ((((metal::all((as_type<metal::uint3>(ray_6.origin) & metal::uint3(2147483647u)) < _e10) && metal::all((as_type<metal::uint3>(ray_6.dir) & metal::uint3(2147483647u)) < _e10)) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_7 >= ray_6.tmin) && (t_7 <= ray_6.tmax));
+    metal::float3 _e132 = normalize_vec3f(metal::cross(tri.v1_ - tri.v0_, tri.v2_ - tri.v0_));
+    uint _e137 = F32_INF;
+    return Intersection {hit_6 ? t_7 : as_type<float>(_e137), {}, hit_6 ? _e132 : metal::float3(0.0, 0.0, 1.0), hit_6 ? metal::float2(v_2 * _e112, w_1 * _e112) : metal::float2(0.0)};
+}
+
+Intersection bvh_mesh_intersect(
+    BvhMesh g,
+    Ray ray_7,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread uint& F32_NEG_INF,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Intersection best_1 = {};
+    Ray r_2 = {};
+    type_12 stack = {};
+    type_13 stack_t = {};
+    uint sp_2 = {};
+    BvhNode node_1 = {};
+    uint k_1 = {};
+    bool found = {};
+    uint _e3 = F32_INF;
+    best_1 = Intersection {as_type<float>(_e3), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
+    r_2 = ray_7;
+    stack = type_12 {};
+    stack_t = type_13 {};
+    sp_2 = 0u;
+    BvhNode _e21 = mesh_node_query(g.mesh, 0u, params, nodes, _buffer_sizes);
+    node_1 = _e21;
+    Ray _e23 = r_2;
+    BvhNode _e24 = node_1;
+    float _e26 = r_2.tmax;
+    float _e27 = bvh_mesh_enter(_e23, _e24, _e26, F32_INF, F32_NEG_INF);
+    uint _e29 = F32_INF;
+    if (_e27 == as_type<float>(_e29)) {
+        Intersection _e32 = best_1;
+        return _e32;
+    }
+    uint2 loop_bound_3 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        uint _e34 = node_1.count;
+        if (_e34 > 0u) {
+            uint end = node_1.count;
+            k_1 = 0u;
+            uint2 loop_bound_4 = uint2(4294967295u);
+            bool loop_init_1 = true;
+            while(true) {
+                if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                if (!loop_init_1) {
+                    uint _e57 = k_1;
+                    k_1 = _e57 + 1u;
+                }
+                loop_init_1 = false;
+                uint _e41 = k_1;
+                if (_e41 >= end) {
+                    break;
+                }
+                Ray _e43 = r_2;
+                uint _e46 = node_1.first;
+                uint _e47 = k_1;
+                Triangle _e49 = mesh_triangle_query(g.mesh, _e46 + _e47, params, triangles, _buffer_sizes);
+                Intersection _e50 = intersect_triangle(_e43, _e49, F32_INF);
+                float _e53 = best_1.t;
+                if (_e50.t < _e53) {
+                    best_1 = _e50;
+                    r_2.tmax = _e50.t;
+                }
+            }
+        } else {
+            uint first = node_1.first;
+            BvhNode _e63 = mesh_node_query(g.mesh, first, params, nodes, _buffer_sizes);
+            BvhNode _e67 = mesh_node_query(g.mesh, first + 1u, params, nodes, _buffer_sizes);
+            Ray _e68 = r_2;
+            float _e70 = r_2.tmax;
+            float _e71 = bvh_mesh_enter(_e68, _e63, _e70, F32_INF, F32_NEG_INF);
+            Ray _e72 = r_2;
+            float _e74 = r_2.tmax;
+            float _e75 = bvh_mesh_enter(_e72, _e67, _e74, F32_INF, F32_NEG_INF);
+            uint _e78 = F32_INF;
+            if (metal::min(_e71, _e75) < as_type<float>(_e78)) {
+                bool left_first = _e71 <= _e75;
+                uint _e84 = F32_INF;
+                uint _e87 = sp_2;
+                if ((metal::max(_e71, _e75) < as_type<float>(_e84)) && (_e87 < BVH_MESH_STACK)) {
+                    uint _e91 = sp_2;
+                    stack.inner[metal::min(_e91, 63u)] = left_first ? (first + 1u) : first;
+                    uint _e98 = sp_2;
+                    stack_t.inner[metal::min(_e98, 63u)] = metal::max(_e71, _e75);
+                    uint _e103 = sp_2;
+                    sp_2 = _e103 + 1u;
+                }
+                node_1 = _e67;
+                if (left_first) {
+                    node_1 = _e63;
+                }
+                continue;
+            }
+        }
+        found = false;
+        uint2 loop_bound_5 = uint2(4294967295u);
+        while(true) {
+            if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+            loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+            uint _e108 = sp_2;
+            bool _e111 = found;
+            if (!(((_e108 > 0u) && !(_e111)))) {
+                break;
+            }
+            uint _e115 = sp_2;
+            sp_2 = _e115 - 1u;
+            uint _e118 = sp_2;
+            float _e122 = stack_t.inner[metal::min(_e118, 63u)];
+            float _e124 = r_2.tmax;
+            found = _e122 <= _e124;
+        }
+        bool _e126 = found;
+        if (!(_e126)) {
+            break;
+        }
+        uint _e129 = sp_2;
+        uint _e133 = stack.inner[metal::min(_e129, 63u)];
+        BvhNode _e134 = mesh_node_query(g.mesh, _e133, params, nodes, _buffer_sizes);
+        node_1 = _e134;
+    }
+    Intersection _e135 = best_1;
+    return _e135;
+}
+
+Sphere load_Sphere(
+    uint offset_3,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_3 + 0u];
+    uint _e11 = params[offset_3 + 1u];
+    uint _e17 = params[offset_3 + 2u];
+    uint _e24 = params[offset_3 + 3u];
+    return Sphere {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), as_type<float>(_e24)};
+}
+
+Intersection sphere_intersect(
+    Sphere s,
+    Ray ray_8,
+    thread uint& F32_INF
+) {
+    float t_1 = {};
+    metal::float3 f_1 = ray_8.origin - s.center;
+    float a_4 = metal::dot(ray_8.dir, ray_8.dir);
+    float b_5 = -(metal::dot(f_1, ray_8.dir));
+    metal::float3 l_2 = f_1 + (ray_8.dir * metal::float3(b_5 / a_4));
+    float r2_ = s.radius * s.radius;
+    float disc = a_4 * (r2_ - metal::dot(l_2, l_2));
+    if (!((disc >= 0.0)) || !((a_4 > 0.0))) {
+        uint _e30 = F32_INF;
+        return Intersection {as_type<float>(_e30), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
+    }
+    float q = b_5 + (((b_5 >= 0.0) ? 1.0 : -1.0) * metal::sqrt(disc));
+    float t0_1 = (metal::dot(f_1, f_1) - r2_) / q;
+    float t1_1 = q / a_4;
+    t_1 = metal::min(t0_1, t1_1);
+    float _e52 = t_1;
+    if (!((_e52 >= ray_8.tmin))) {
+        t_1 = metal::max(t0_1, t1_1);
+    }
+    float _e57 = t_1;
+    float _e60 = t_1;
+    if (!(((_e57 >= ray_8.tmin) && (_e60 <= ray_8.tmax)))) {
+        uint _e66 = F32_INF;
+        return Intersection {as_type<float>(_e66), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
+    }
+    float _e76 = t_1;
+    metal::float3 _e82 = normalize_vec3f((ray_8.origin + (ray_8.dir * metal::float3(_e76))) - s.center);
+    float u_2 = ((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (metal::atan2(_e82.z, -(_e82.x)) / TAU));
+    metal::float2 uv_1 = metal::float2(u_2, metal::acos(metal::min(metal::max(_e82.y, -1.0), 1.0)) * INV_PI);
+    float _e109 = t_1;
+    return Intersection {_e109, {}, _e82, uv_1};
+}
+
+Intersection dispatch_intersection(
+    uint type_id_1,
+    uint offset_4,
+    Ray ray_9,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread uint& F32_NEG_INF,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    switch(type_id_1) {
+        case 0u: {
+            BvhMesh _e3 = load_BvhMesh(offset_4, params, _buffer_sizes);
+            Intersection _e4 = bvh_mesh_intersect(_e3, ray_9, params, F32_INF, nodes, triangles, F32_NEG_INF, _buffer_sizes);
+            return _e4;
+        }
+        case 1u: {
+            Sphere _e5 = load_Sphere(offset_4, params, _buffer_sizes);
+            Intersection _e6 = sphere_intersect(_e5, ray_9, F32_INF);
+            return _e6;
+        }
+        default: {
+            break;
+        }
+    }
+    return Intersection {};
+}
+
+Candidate intersect_object(
+    uint slot_2,
+    Ray ray_10,
+    Candidate best_2,
+    bool shadow_1,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& F32_NEG_INF,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Ray r_3 = {};
+    GpuInstance inst_5 = instances[slot_2];
+    Ray _e7 = to_object(inst_5, ray_10);
+    r_3 = _e7;
+    r_3.tmax = best_2.t;
+    if (inst_5.geometry_type == MESH_GEOMETRY) {
+        Ray _e14 = r_3;
+        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_10, _e14, best_2, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        return _e15;
+    }
+    Ray _e18 = r_3;
+    Intersection _e19 = dispatch_intersection(inst_5.geometry_type, inst_5.geometry_offset, _e18, params, F32_INF, nodes, triangles, F32_NEG_INF, _buffer_sizes);
+    float _e22 = r_3.tmin;
+    float _e26 = r_3.tmax;
+    uint _e31 = F32_INF;
+    if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < as_type<float>(_e31))) {
+        Candidate c_7 = Candidate {_e19.t, slot_2, 0u, {}, _e19.uv, {}, _e19.normal};
+        bool _e40 = accept(inst_5, ray_10, c_7);
+        if (_e40) {
+            return c_7;
+        }
+    }
+    return best_2;
+}
+
+Triangle load_triangle(
+    uint slot_3,
+    device type_10 const& triangles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float4 v0_ = triangles[slot_3 * 3u];
+    metal::float4 v1_ = triangles[(slot_3 * 3u) + 1u];
+    metal::float4 v2_ = triangles[(slot_3 * 3u) + 2u];
+    return Triangle {v0_.xyz, v1_.xyz, v2_.xyz};
+}
+
+metal::float3 point_to_world(
+    GpuInstance inst_3,
+    metal::float3 p
+) {
+    metal::float4 q_1 = metal::float4(p, 1.0);
+    return metal::float3(metal::dot(inst_3.object_to_world_0_, q_1), metal::dot(inst_3.object_to_world_1_, q_1), metal::dot(inst_3.object_to_world_2_, q_1));
+}
+
+metal::float3 decode_octahedral(
+    uint bits
+) {
+    metal::float3 n_1 = {};
+    metal::float2 e_1 = metal::unpack_snorm2x16_to_float(bits);
+    n_1 = metal::float3(e_1.x, e_1.y, (1.0 - metal::abs(e_1.x)) - metal::abs(e_1.y));
+    float _e14 = n_1.z;
+    if (_e14 < 0.0) {
+        metal::float3 _e21 = n_1;
+        metal::float2 s_4 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float3 _e29 = n_1;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_4;
+        float _e37 = n_1.z;
+        n_1 = metal::float3(xy.x, xy.y, _e37);
+    }
+    metal::float3 _e39 = n_1;
+    metal::float3 _e40 = normalize_vec3f(_e39);
+    return _e40;
+}
+
+metal::float3 normal_to_world(
+    GpuInstance inst_4,
+    metal::float3 n_2
+) {
+    metal::float3 w_2 = ((inst_4.world_to_object_0_.xyz * metal::float3(n_2.x)) + (inst_4.world_to_object_1_.xyz * metal::float3(n_2.y))) + (inst_4.world_to_object_2_.xyz * metal::float3(n_2.z));
+    metal::float3 _e19 = normalize_vec3f(w_2);
+    return _e19;
+}
+
+Hit finish_hit(
+    Ray ray_11,
+    Candidate c_1,
+    device type_8 const& instances,
+    device type_10 const& triangles,
+    device type_15 const& attributes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Hit hit = {};
+    metal::float3 n_geo = {};
+    metal::float3 n_shade = {};
+    GpuInstance inst_6 = instances[c_1.slot];
+    hit = Hit {ray_11.origin + (ray_11.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_6.object, c_1.primitive};
+    n_geo = c_1.normal;
+    n_shade = c_1.normal;
+    if (inst_6.geometry_type == MESH_GEOMETRY) {
+        Triangle _e35 = load_triangle(c_1.primitive, triangles, _buffer_sizes);
+        metal::float2 b_6 = c_1.uv;
+        float w_3 = (1.0 - c_1.uv.x) - c_1.uv.y;
+        metal::float3 _e56 = point_to_world(inst_6, ((_e35.v0_ * metal::float3(w_3)) + (_e35.v1_ * metal::float3(c_1.uv.x))) + (_e35.v2_ * metal::float3(c_1.uv.y)));
+        hit.position = _e56;
+        n_geo = metal::cross(_e35.v1_ - _e35.v0_, _e35.v2_ - _e35.v0_);
+        metal::uint4 a0_ = attributes[c_1.primitive * 2u];
+        metal::uint4 a1_ = attributes[(c_1.primitive * 2u) + 1u];
+        metal::float3 _e79 = decode_octahedral(a0_.x);
+        metal::float3 _e83 = decode_octahedral(a0_.y);
+        metal::float3 _e89 = decode_octahedral(a0_.z);
+        n_shade = ((_e79 * metal::float3(w_3)) + (_e83 * metal::float3(c_1.uv.x))) + (_e89 * metal::float3(c_1.uv.y));
+        metal::float3 _e94 = n_shade;
+        metal::float3 _e95 = n_shade;
+        if (metal::dot(_e94, _e95) < 0.000000000001) {
+            metal::float3 _e99 = n_geo;
+            n_shade = _e99;
+        }
+        metal::float2 uv0_ = float2(as_type<half2>(a0_.w));
+        metal::float2 uv1_ = float2(as_type<half2>(a1_.x));
+        metal::float2 uv2_ = float2(as_type<half2>(a1_.y));
+        hit.uv = ((uv0_ * metal::float2(w_3)) + (uv1_ * metal::float2(c_1.uv.x))) + (uv2_ * metal::float2(c_1.uv.y));
+        metal::float4 _e123 = triangles[c_1.primitive * 3u];
+        hit.primitive = as_type<uint>(_e123.w);
+    }
+    metal::float3 _e127 = n_geo;
+    metal::float3 _e128 = normal_to_world(inst_6, _e127);
+    hit.geometric_normal = _e128;
+    metal::float3 _e130 = n_shade;
+    metal::float3 _e131 = normal_to_world(inst_6, _e130);
+    hit.normal = _e131;
+    metal::float3 _e135 = hit.geometric_normal;
+    hit.front_face = metal::dot(ray_11.dir, _e135) < 0.0;
+    Hit _e139 = hit;
+    return _e139;
+}
+
+uint medium_at(
+    metal::float3 p_1,
+    uint exclude,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& F32_NEG_INF,
+    device type_15 const& attributes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint inside = {};
+    float nearest = {};
+    uint i_2 = {};
+    if (!(HAS_MEDIA)) {
+        return 0u;
+    }
+    FrameUniforms frame_1 = frame;
+    metal::float3 _e12 = normalize_vec3f(metal::float3(0.5773, 0.5774, 0.5775));
+    uint _e14 = F32_INF;
+    Ray probe = Ray {p_1, 0.0, _e12, as_type<float>(_e14), 0u, 0u, 0u};
+    inside = 0u;
+    uint _e23 = F32_INF;
+    nearest = as_type<float>(_e23);
+    uint end_1 = frame_1.medium_count;
+    i_2 = 0u;
+    uint2 loop_bound_6 = uint2(4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e57 = i_2;
+            i_2 = _e57 + 1u;
+        }
+        loop_init_2 = false;
+        uint _e29 = i_2;
+        if (_e29 >= end_1) {
+            break;
+        }
+        uint _e32 = i_2;
+        uint slot_5 = params[frame_1.medium_table + _e32];
+        if (slot_5 != exclude) {
+            uint _e39 = F32_INF;
+            Candidate _e41 = no_candidate(as_type<float>(_e39));
+            Candidate _e43 = intersect_object(slot_5, probe, _e41, false, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, _buffer_sizes);
+            float _e48 = nearest;
+            if ((_e43.slot != NO_HIT) && (_e43.t < _e48)) {
+                Hit _e51 = finish_hit(probe, _e43, instances, triangles, attributes, _buffer_sizes);
+                if (!(_e51.front_face)) {
+                    inside = slot_5 + 1u;
+                    nearest = _e43.t;
+                }
+            }
+        }
+    }
+    uint _e60 = inside;
+    return _e60;
+}
+
+Candidate intersect_scene(
+    Ray ray_12,
+    bool shadow_2,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& F32_NEG_INF,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Candidate best_3 = {};
+    uint sp_3 = {};
+    uint node_2 = {};
+    uint k_2 = {};
+    uint near_1 = {};
+    uint far_1 = {};
+    float t_far_1 = {};
+    uint _e3 = ray_count;
+    ray_count = _e3 + 1u;
+    Candidate _e7 = no_candidate(ray_12.tmax);
+    best_3 = _e7;
+    FrameUniforms frame_2 = frame;
+    if (frame_2.instance_count == 0u) {
+        Candidate _e14 = best_3;
+        return _e14;
+    }
+    metal::float3 _e16 = safe_inverse(ray_12.dir);
+    sp_3 = 0u;
+    node_2 = frame_2.tlas_root;
+    uint _e21 = node_2;
+    GpuNode root = nodes[_e21];
+    float _e30 = best_3.t;
+    float _e31 = slab(root.min, root.max, ray_12.origin, _e16, ray_12.tmin, _e30, F32_INF);
+    uint _e33 = F32_INF;
+    if (_e31 == as_type<float>(_e33)) {
+        Candidate _e36 = best_3;
+        return _e36;
+    }
+    uint2 loop_bound_7 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        uint _e37 = node_2;
+        GpuNode n_8 = nodes[_e37];
+        if ((n_8.b & LEAF_BIT) != 0u) {
+            uint count_2 = n_8.b & ~(LEAF_BIT);
+            k_2 = 0u;
+            uint2 loop_bound_8 = uint2(4294967295u);
+            bool loop_init_3 = true;
+            while(true) {
+                if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                if (!loop_init_3) {
+                    uint _e65 = k_2;
+                    k_2 = _e65 + 1u;
+                }
+                loop_init_3 = false;
+                uint _e52 = k_2;
+                if (_e52 >= count_2) {
+                    break;
+                }
+                uint _e55 = k_2;
+                Candidate _e57 = best_3;
+                Candidate _e58 = intersect_object(n_8.a + _e55, ray_12, _e57, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, _buffer_sizes);
+                best_3 = _e58;
+                uint _e60 = best_3.slot;
+                if (shadow_2 && (_e60 != NO_HIT)) {
+                    Candidate _e64 = best_3;
+                    return _e64;
+                }
+            }
+        } else {
+            uint left_1 = frame_2.tlas_root + n_8.a;
+            uint right_1 = left_1 + 1u;
+            GpuNode l_3 = nodes[left_1];
+            GpuNode rr_1 = nodes[right_1];
+            float _e84 = best_3.t;
+            float _e85 = slab(l_3.min, l_3.max, ray_12.origin, _e16, ray_12.tmin, _e84, F32_INF);
+            float _e91 = best_3.t;
+            float _e92 = slab(rr_1.min, rr_1.max, ray_12.origin, _e16, ray_12.tmin, _e91, F32_INF);
+            uint _e94 = F32_INF;
+            uint _e98 = F32_INF;
+            if ((_e85 < as_type<float>(_e94)) && (_e92 < as_type<float>(_e98))) {
+                near_1 = left_1;
+                far_1 = right_1;
+                t_far_1 = _e92;
+                if (_e92 < _e85) {
+                    near_1 = right_1;
+                    far_1 = left_1;
+                    t_far_1 = _e85;
+                }
+                uint _e106 = sp_3;
+                if (_e106 < TLAS_STACK) {
+                    uint _e109 = sp_3;
+                    uint _e110 = far_1;
+                    float _e111 = t_far_1;
+                    traversal_stack.inner[metal::min(_e109, 127u)] = metal::uint2(_e110, as_type<uint>(_e111));
+                    uint _e118 = sp_3;
+                    sp_3 = _e118 + 1u;
+                }
+                uint _e121 = near_1;
+                node_2 = _e121;
+                continue;
+            }
+            uint _e123 = F32_INF;
+            if (_e85 < as_type<float>(_e123)) {
+                node_2 = left_1;
+                continue;
+            }
+            uint _e127 = F32_INF;
+            if (_e92 < as_type<float>(_e127)) {
+                node_2 = right_1;
+                continue;
+            }
+        }
+        uint _e131 = sp_3;
+        float _e133 = best_3.t;
+        metal::uint2 _e134 = pop_within(0u, _e131, _e133, traversal_stack);
+        if (_e134.x == NO_HIT) {
+            break;
+        }
+        node_2 = _e134.x;
+        sp_3 = _e134.y;
+    }
+    Candidate _e140 = best_3;
+    return _e140;
+}
+
+Skybox load_Skybox(
+    uint offset_5,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_5 + 0u];
+    uint _e10 = params[offset_5 + 1u];
+    uint _e16 = params[offset_5 + 2u];
+    return Skybox {_e5, as_type<float>(_e10), as_type<float>(_e16)};
+}
+
+int naga_f2i32(float value) {
+    return static_cast<int>(metal::clamp(value, -2147483600.0, 2147483500.0));
+}
+
+int i32_from_f32_(
+    float x_1
+) {
+    return ((as_type<uint>(x_1) & 2147483647u) > 2139095040u) ? 0 : naga_f2i32(metal::min(metal::max(x_1, -2147483600.0), 2147483500.0));
+}
+
+int naga_div(int lhs, int rhs) {
+    return lhs / metal::select(rhs, 1, (lhs == (-2147483647 - 1) & rhs == -1) | (rhs == 0));
+}
+
+int rem_i32_(
+    int a_2,
+    int b_2
+) {
+    bool by_zero_2 = b_2 == 0;
+    int divisor_2 = ((a_2 == (-2147483647 - 1)) & (b_2 == -1)) ? 1 : (by_zero_2 ? 1 : b_2);
+    return by_zero_2 ? 0 : as_type<int>(as_type<uint>(a_2) - as_type<uint>(as_type<int>(as_type<uint>(divisor_2) * as_type<uint>(naga_div(a_2, divisor_2)))));
+}
+
+float srgb_channel(
+    float c_2
+) {
+    if (c_2 <= 0.04045) {
+        return c_2 / 12.92;
+    }
+    return metal::pow((c_2 + 0.055) / 1.055, 2.4);
+}
+
+metal::float4 texel_at(
+    uint t_2,
+    int x_2,
+    int y,
+    device type_4 const& params,
+    device type_4 const& texels,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint base_2 = params[t_2];
+    uint _e10 = params[t_2 + 1u];
+    uint w_4 = metal::max(_e10, 1u);
+    uint _e17 = params[t_2 + 2u];
+    uint h_2 = metal::max(_e17, 1u);
+    uint format = params[t_2 + 3u];
+    int _e26 = rem_i32_(x_2, static_cast<int>(w_4));
+    int _e30 = rem_i32_(as_type<int>(as_type<uint>(_e26) + as_type<uint>(static_cast<int>(w_4))), static_cast<int>(w_4));
+    uint xi = static_cast<uint>(_e30);
+    int _e33 = rem_i32_(y, static_cast<int>(h_2));
+    int _e37 = rem_i32_(as_type<int>(as_type<uint>(_e33) + as_type<uint>(static_cast<int>(h_2))), static_cast<int>(h_2));
+    uint yi = static_cast<uint>(_e37);
+    uint index = (yi * w_4) + xi;
+    if (format == 0u) {
+        uint _e46 = texels[base_2 + index];
+        metal::float4 c_8 = metal::unpack_unorm4x8_to_float(_e46);
+        float _e49 = srgb_channel(c_8.x);
+        float _e51 = srgb_channel(c_8.y);
+        float _e53 = srgb_channel(c_8.z);
+        return metal::float4(_e49, _e51, _e53, c_8.w);
+    }
+    uint _e61 = texels[base_2 + (index * 2u)];
+    metal::float2 rg = float2(as_type<half2>(_e61));
+    uint _e70 = texels[(base_2 + (index * 2u)) + 1u];
+    metal::float2 ba = float2(as_type<half2>(_e70));
+    return metal::float4(rg, ba);
+}
+
+metal::float4 sample_texture(
+    uint t_3,
+    metal::float2 uv,
+    device type_4 const& params,
+    device type_4 const& texels,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e6 = params[t_3 + 1u];
+    float w_5 = static_cast<float>(metal::max(_e6, 1u));
+    uint _e14 = params[t_3 + 2u];
+    float h_3 = static_cast<float>(metal::max(_e14, 1u));
+    metal::float2 p_3 = (uv * metal::float2(w_5, h_3)) - metal::float2(0.5);
+    metal::float2 f_2 = metal::floor(p_3);
+    metal::float2 fr = p_3 - f_2;
+    int _e26 = i32_from_f32_(f_2.x);
+    int _e28 = i32_from_f32_(f_2.y);
+    metal::float4 _e29 = texel_at(t_3, _e26, _e28, params, texels, _buffer_sizes);
+    metal::float4 _e32 = texel_at(t_3, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), _e28, params, texels, _buffer_sizes);
+    metal::float4 a_5 = metal::mix(_e29, _e32, metal::float4(fr.x));
+    metal::float4 _e38 = texel_at(t_3, _e26, as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
+    metal::float4 _e43 = texel_at(t_3, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
+    metal::float4 b_7 = metal::mix(_e38, _e43, metal::float4(fr.x));
+    return metal::mix(a_5, b_7, metal::float4(fr.y));
+}
+
+metal::float3 skybox(
+    Skybox b_3,
+    Ray ray_13,
+    device type_4 const& params,
+    device type_4 const& texels,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 _e3 = normalize_vec3f(ray_13.dir);
+    bool pole = (_e3.x == 0.0) && (_e3.z == 0.0);
+    float longitude = (pole ? 0.0 : metal::atan2(_e3.x, -(_e3.z))) - ((b_3.rotation) * 0.017453292519943295474);
+    float latitude = metal::acos(metal::min(metal::max(_e3.y, -1.0), 1.0));
+    metal::float2 uv_2 = metal::float2(0.5 + (longitude / TAU), latitude * INV_PI);
+    metal::float4 _e34 = sample_texture(b_3.image, uv_2, params, texels, _buffer_sizes);
+    return _e34.xyz * metal::float3(b_3.intensity);
+}
+
+metal::float3 dispatch_miss(
+    uint type_id_2,
+    uint offset_6,
+    Ray ray_14,
+    device type_4 const& params,
+    device type_4 const& texels,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Skybox _e2 = load_Skybox(offset_6, params, _buffer_sizes);
+    metal::float3 _e3 = skybox(_e2, ray_14, params, texels, _buffer_sizes);
+    return _e3;
+}
+
+metal::float3 miss(
+    Ray ray_15,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    device type_4 const& texels,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!(HAS_BACKGROUND)) {
+        return metal::float3(0.0);
+    }
+    FrameUniforms frame_3 = frame;
+    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_15, params, texels, _buffer_sizes);
+    return _e9;
+}
+
+metal::float3 dispatch_medium(
+    uint type_id_3,
+    uint offset_7,
+    Ray ray_16,
+    float t_4,
+    metal::float3 radiance
+) {
+    return metal::float3 {};
+}
+
+metal::float3 through_medium(
+    Ray ray_17,
+    float t_5,
+    metal::float3 radiance_1,
+    device type_8 const& instances,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!(HAS_MEDIA)) {
+        return radiance_1;
+    }
+    if (ray_17.medium == 0u) {
+        return radiance_1;
+    }
+    GpuInstance inst_7 = instances[ray_17.medium - 1u];
+    if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
+        return radiance_1;
+    }
+    metal::float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_17, t_5, radiance_1);
+    return _e21;
+}
+
+Lambert load_Lambert(
+    uint offset_8,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_8 + 0u];
+    uint _e11 = params[offset_8 + 1u];
+    uint _e17 = params[offset_8 + 2u];
+    return Lambert {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17))};
+}
+
+uint light_count_query(
+    constant FrameUniforms& frame
+) {
+    FrameUniforms _e1 = frame;
+    return _e1.light_count;
+}
+
+PointLight load_PointLight(
+    uint offset_9,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_9 + 0u];
+    uint _e11 = params[offset_9 + 1u];
+    uint _e17 = params[offset_9 + 2u];
+    uint _e24 = params[offset_9 + 4u];
+    uint _e30 = params[offset_9 + 5u];
+    uint _e36 = params[offset_9 + 6u];
+    uint _e43 = params[offset_9 + 7u];
+    uint _e49 = params[offset_9 + 8u];
+    uint _e55 = params[offset_9 + 9u];
+    return PointLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)};
+}
+
+metal::float3 offset_origin(
+    metal::float3 p_2,
+    metal::float3 n_3,
+    constant FrameUniforms& frame,
+    device type_9 const& nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    FrameUniforms _e3 = frame;
+    GpuNode root_1 = nodes[_e3.tlas_root];
+    metal::float3 a_6 = metal::max(metal::abs(p_2), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
+    float m_3 = metal::max(metal::max(a_6.x, a_6.y), a_6.z);
+    return p_2 + (n_3 * metal::float3(m_3 * (1.0 / 65536.0)));
+}
+
+float shadow_query(
+    metal::float3 position,
+    metal::float3 normal,
+    metal::float3 dir,
+    float dist,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& F32_NEG_INF,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 n_4 = {};
+    n_4 = normal;
+    metal::float3 _e5 = n_4;
+    if (metal::dot(dir, _e5) < 0.0) {
+        metal::float3 _e9 = n_4;
+        n_4 = -(_e9);
+    }
+    metal::float3 _e11 = n_4;
+    metal::float3 _e12 = offset_origin(position, _e11, frame, nodes, _buffer_sizes);
+    Ray ray_24 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
+    Candidate _e23 = intersect_scene(ray_24, true, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    return (_e23.slot != NO_HIT) ? 0.0 : 1.0;
+}
+
+LightSample point_light(
+    PointLight l,
+    metal::float3 position_1,
+    metal::float3 normal_1,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& F32_NEG_INF,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float strength = {};
+    metal::float3 to_light = l.position - position_1;
+    float dist_1 = metal::length(to_light);
+    metal::float3 dir_3 = to_light / metal::float3(metal::max(dist_1, 0.00000000000000000001));
+    strength = l.intensity / metal::max(dist_1 * dist_1, 0.00000000000000000001);
+    if (l.range > 0.0) {
+        float _e19 = strength;
+        strength = _e19 * (1.0 - metal::smoothstep(l.inner_range, l.range, dist_1));
+    }
+    float _e26 = shadow_query(position_1, normal_1, dir_3, dist_1, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    float _e28 = strength;
+    return LightSample {dir_3, dist_1, (l.color * metal::float3(_e28)) * metal::float3(_e26)};
+}
+
+LightSample dispatch_light(
+    uint type_id_4,
+    uint offset_10,
+    metal::float3 position_2,
+    metal::float3 normal_2,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& F32_NEG_INF,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    PointLight _e3 = load_PointLight(offset_10, params, _buffer_sizes);
+    LightSample _e4 = point_light(_e3, position_2, normal_2, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    return _e4;
+}
+
+LightSample sample_light_query(
+    uint i_3,
+    metal::float3 position_3,
+    metal::float3 normal_3,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& F32_NEG_INF,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    FrameUniforms frame_4 = frame;
+    if (i_3 >= frame_4.light_count) {
+        return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0)};
+    }
+    uint entry = frame_4.light_table + (i_3 * 2u);
+    uint _e21 = params[entry];
+    uint _e26 = params[entry + 1u];
+    LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    return _e27;
+}
+
+metal::float3 lambert_shade(
+    Lambert m_2,
+    Ray ray_18,
+    Hit hit_1,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& F32_NEG_INF,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 color = {};
+    uint i_4 = {};
+    metal::float3 n_9 = metal::faceforward(hit_1.normal, ray_18.dir, hit_1.normal);
+    color = metal::float3(0.0);
+    uint _e11 = light_count_query(frame);
+    i_4 = 0u;
+    uint2 loop_bound_9 = uint2(4294967295u);
+    bool loop_init_4 = true;
+    while(true) {
+        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e33 = i_4;
+            i_4 = _e33 + 1u;
+        }
+        loop_init_4 = false;
+        uint _e13 = i_4;
+        if (_e13 >= _e11) {
+            break;
+        }
+        uint _e15 = i_4;
+        LightSample _e18 = sample_light_query(_e15, hit_1.position, hit_1.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+        metal::float3 _e19 = color;
+        color = _e19 + (((m_2.albedo * metal::float3(INV_PI)) * _e18.radiance) * metal::float3(metal::max(metal::dot(n_9, _e18.dir), 0.0)));
+    }
+    metal::float3 _e36 = color;
+    return _e36;
+}
+
+metal::float3 dispatch_closest_hit(
+    uint type_id_5,
+    uint offset_11,
+    Ray ray_19,
+    Hit hit_2,
+    metal::float3 secondary,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& F32_NEG_INF,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Lambert _e3 = load_Lambert(offset_11, params, _buffer_sizes);
+    metal::float3 _e4 = lambert_shade(_e3, ray_19, hit_2, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    return _e4;
+}
+
+metal::float3 shade_direct(
+    Ray ray_20,
+    Candidate c_3,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& F32_NEG_INF,
+    device type_15 const& attributes,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuInstance inst_8 = instances[c_3.slot];
+    Hit _e6 = finish_hit(ray_20, c_3, instances, triangles, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    return _e11;
+}
+
+void dispatch_secondary_rays(
+    uint type_id_6,
+    uint offset_12,
+    Ray ray_21,
+    Hit hit_3
+) {
+    return;
+}
+
+metal::float3 spawn_origin(
+    Hit hit_4,
+    metal::float3 dir_1,
+    constant FrameUniforms& frame,
+    device type_9 const& nodes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 n_5 = {};
+    n_5 = hit_4.geometric_normal;
+    metal::float3 _e4 = n_5;
+    if (metal::dot(dir_1, _e4) < 0.0) {
+        metal::float3 _e8 = n_5;
+        n_5 = -(_e8);
+    }
+    metal::float3 _e11 = n_5;
+    metal::float3 _e12 = offset_origin(hit_4.position, _e11, frame, nodes, _buffer_sizes);
+    return _e12;
+}
+
+metal::float3 trace(
+    Ray camera_ray,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& F32_NEG_INF,
+    device type_15 const& attributes,
+    thread uint& ray_count,
+    device type_4 const& texels,
+    thread type_17& spawn_dirs,
+    thread type_17& spawn_weights,
+    thread uint& spawn_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    type_18 stack_1 = {};
+    uint depth = {};
+    Ray ray_22 = {};
+    metal::float3 value = {};
+    bool have_value = {};
+    bool pushed = {};
+    Frame f = {};
+    uint i_5 = {};
+    uint medium = {};
+    if (!(HAS_SECONDARY_RAYS)) {
+        Candidate _e4 = intersect_scene(camera_ray, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+        if (_e4.slot == NO_HIT) {
+            uint _e9 = F32_INF;
+            metal::float3 _e11 = miss(camera_ray, frame, params, texels, _buffer_sizes);
+            metal::float3 _e12 = through_medium(camera_ray, as_type<float>(_e9), _e11, instances, _buffer_sizes);
+            return _e12;
+        }
+        metal::float3 _e14 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, ray_count, _buffer_sizes);
+        metal::float3 _e15 = through_medium(camera_ray, _e4.t, _e14, instances, _buffer_sizes);
+        return _e15;
+    }
+    stack_1 = type_18 {};
+    depth = 0u;
+    ray_22 = camera_ray;
+    value = metal::float3(0.0);
+    have_value = false;
+    uint2 loop_bound_10 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        bool _e26 = have_value;
+        if (!(_e26)) {
+            Ray _e28 = ray_22;
+            Candidate _e30 = intersect_scene(_e28, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+            if (_e30.slot == NO_HIT) {
+                Ray _e34 = ray_22;
+                uint _e36 = F32_INF;
+                Ray _e38 = ray_22;
+                metal::float3 _e39 = miss(_e38, frame, params, texels, _buffer_sizes);
+                metal::float3 _e40 = through_medium(_e34, as_type<float>(_e36), _e39, instances, _buffer_sizes);
+                value = _e40;
+                have_value = true;
+            } else {
+                GpuInstance inst_9 = instances[_e30.slot];
+                Ray _e46 = ray_22;
+                Hit _e47 = finish_hit(_e46, _e30, instances, triangles, attributes, _buffer_sizes);
+                pushed = false;
+                uint _e56 = ray_22.depth;
+                uint _e60 = depth;
+                if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
+                    spawn_count = 0u;
+                    Ray _e68 = ray_22;
+                    dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
+                    uint _e70 = spawn_count;
+                    uint n_10 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
+                    if (n_10 > 0u) {
+                        Ray _e77 = ray_22;
+                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_17 {}, type_17 {}, n_10, 0u};
+                        i_5 = 0u;
+                        uint2 loop_bound_11 = uint2(4294967295u);
+                        bool loop_init_5 = true;
+                        while(true) {
+                            if (metal::all(loop_bound_11 == uint2(0u))) { break; }
+                            loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+                            if (!loop_init_5) {
+                                uint _e108 = i_5;
+                                i_5 = _e108 + 1u;
+                            }
+                            loop_init_5 = false;
+                            uint _e88 = i_5;
+                            if (_e88 >= n_10) {
+                                break;
+                            }
+                            uint _e91 = i_5;
+                            uint _e95 = i_5;
+                            metal::float3 _e98 = spawn_dirs.inner[_e95];
+                            f.dirs.inner[metal::min(_e91, 0u)] = _e98;
+                            uint _e100 = i_5;
+                            uint _e104 = i_5;
+                            metal::float3 _e107 = spawn_weights.inner[_e104];
+                            f.weights.inner[metal::min(_e100, 0u)] = _e107;
+                        }
+                        uint _e111 = depth;
+                        Frame _e115 = f;
+                        stack_1.inner[metal::min(_e111, 3u)] = _e115;
+                        uint _e116 = depth;
+                        depth = _e116 + 1u;
+                        pushed = true;
+                    }
+                }
+                bool _e120 = pushed;
+                if (!(_e120)) {
+                    Ray _e124 = ray_22;
+                    metal::float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+                    Ray _e128 = ray_22;
+                    metal::float3 _e130 = through_medium(_e128, _e30.t, _e127, instances, _buffer_sizes);
+                    value = _e130;
+                    have_value = true;
+                }
+            }
+        }
+        bool _e132 = have_value;
+        if (_e132) {
+            uint _e133 = depth;
+            if (_e133 == 0u) {
+                metal::float3 _e136 = value;
+                return _e136;
+            }
+            uint _e137 = depth;
+            uint top = _e137 - 1u;
+            uint _e144 = stack_1.inner[metal::min(top, 3u)].next;
+            uint child = _e144 - 1u;
+            metal::float3 _e151 = stack_1.inner[metal::min(top, 3u)].sum;
+            metal::float3 _e159 = stack_1.inner[metal::min(top, 3u)].weights.inner[metal::min(child, 0u)];
+            metal::float3 _e160 = value;
+            stack_1.inner[metal::min(top, 3u)].sum = _e151 + (_e159 * _e160);
+            have_value = false;
+        }
+        uint _e164 = depth;
+        uint top_1 = _e164 - 1u;
+        uint _e171 = stack_1.inner[metal::min(top_1, 3u)].next;
+        uint _e176 = stack_1.inner[metal::min(top_1, 3u)].count;
+        if (_e171 < _e176) {
+            uint i_6 = stack_1.inner[metal::min(top_1, 3u)].next;
+            stack_1.inner[metal::min(top_1, 3u)].next = i_6 + 1u;
+            Ray parent = stack_1.inner[metal::min(top_1, 3u)].ray;
+            Hit hit_7 = stack_1.inner[metal::min(top_1, 3u)].hit;
+            metal::float3 dir_4 = stack_1.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_6, 0u)];
+            medium = parent.medium;
+            metal::float3 _e209 = spawn_origin(hit_7, dir_4, frame, nodes, _buffer_sizes);
+            uint _e212 = F32_INF;
+            uint _e218 = medium;
+            ray_22 = Ray {_e209, 0.0, dir_4, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
+        } else {
+            uint _e224 = stack_1.inner[metal::min(top_1, 3u)].slot;
+            GpuInstance inst_10 = instances[_e224];
+            Ray _e234 = stack_1.inner[metal::min(top_1, 3u)].ray;
+            Hit _e239 = stack_1.inner[metal::min(top_1, 3u)].hit;
+            metal::float3 _e244 = stack_1.inner[metal::min(top_1, 3u)].sum;
+            metal::float3 _e245 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e234, _e239, _e244, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+            Ray _e250 = stack_1.inner[metal::min(top_1, 3u)].ray;
+            float _e256 = stack_1.inner[metal::min(top_1, 3u)].hit.t;
+            metal::float3 _e257 = through_medium(_e250, _e256, _e245, instances, _buffer_sizes);
+            value = _e257;
+            depth = top_1;
+            have_value = true;
+        }
+    }
+    return metal::float3 {};
+}
+
+metal::bool3 is_finite_vec3f(
+    metal::float3 x_3
+) {
+    return (as_type<metal::uint3>(x_3) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+}
+
+metal::float3 finite_or_zero(
+    metal::float3 c_4
+) {
+    metal::bool3 _e3 = is_finite_vec3f(c_4);
+    return metal::select(metal::float3(0.0), c_4, _e3);
+}
+
+void render_pixel(
+    metal::uint2 pixel_3,
+    constant FrameUniforms& frame,
+    constant TileParams& tile,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& F32_NEG_INF,
+    device type_15 const& attributes,
+    thread uint& ray_count,
+    device type_4 const& texels,
+    thread type_17& spawn_dirs,
+    thread type_17& spawn_weights,
+    thread uint& spawn_count,
+    device type_10& accum,
+    device type_21& counters,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 sum = {};
+    uint bad = {};
+    uint s_1 = {};
+    Ray ray_23 = {};
+    FrameUniforms frame_5 = frame;
+    TileParams tile_1 = tile;
+    sum = metal::float3(0.0);
+    bad = 0u;
+    uint end_2 = frame_5.samples_per_pass;
+    s_1 = 0u;
+    uint2 loop_bound_12 = uint2(4294967295u);
+    bool loop_init_6 = true;
+    while(true) {
+        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e46 = s_1;
+            s_1 = _e46 + 1u;
+        }
+        loop_init_6 = false;
+        uint _e13 = s_1;
+        if (_e13 >= end_2) {
+            break;
+        }
+        uint _e18 = s_1;
+        uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
+        rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, rng_state, params, F32_INF, _buffer_sizes);
+        ray_23 = _e23;
+        ray_23.depth = 0u;
+        ray_23.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_23.origin;
+        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, _buffer_sizes);
+        ray_23.medium = _e33;
+        Ray _e34 = ray_23;
+        metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::bool3 _e36 = is_finite_vec3f(_e35);
+        if (metal::all(_e36)) {
+            metal::float3 _e38 = sum;
+            sum = _e38 + _e35;
+        } else {
+            metal::float3 _e40 = sum;
+            metal::float3 _e41 = finite_or_zero(_e35);
+            sum = _e40 + _e41;
+            uint _e43 = bad;
+            bad = _e43 + 1u;
+        }
+    }
+    metal::float3 _e55 = sum;
+    uint _e59 = bad;
+    metal::float4 _e62 = accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x];
+    accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e62 + metal::float4(_e55, static_cast<float>(frame_5.samples_per_pass));
+    if (_e59 > 0u) {
+        metal::atomic_fetch_add_explicit(&counters[0], _e59, metal::memory_order_relaxed);
+    }
+    uint _e69 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e69, metal::memory_order_relaxed);
+    return;
+}
+
+struct renderInput {
+};
+[[max_total_threads_per_threadgroup(64)]] kernel void render(
+  metal::uint3 gid [[thread_position_in_grid]]
+, constant FrameUniforms& frame [[buffer(0)]]
+, constant TileParams& tile [[buffer(1)]]
+, device type_4 const& params [[buffer(6)]]
+, device type_8 const& instances [[buffer(3)]]
+, device type_9 const& nodes [[buffer(2)]]
+, device type_10 const& triangles [[buffer(4)]]
+, device type_15 const& attributes [[buffer(5)]]
+, device type_4 const& texels [[buffer(7)]]
+, device type_10& accum [[buffer(8)]]
+, device type_21& counters [[buffer(9)]]
+, constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
+) {
+    uint rng_state = {};
+    uint F32_INF = 2139095040u;
+    type_11 traversal_stack = {};
+    uint F32_NEG_INF = 4286578688u;
+    uint ray_count = {};
+    type_17 spawn_dirs = {};
+    type_17 spawn_weights = {};
+    uint spawn_count = {};
+    TileParams _e2 = tile;
+    metal::uint2 _e7 = metal::uint2(gid.x, gid.y);
+    if (metal::any(_e7 >= _e2.extent)) {
+        return;
+    }
+    render_pixel(_e2.origin + _e7, frame, tile, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
+    return;
+}
