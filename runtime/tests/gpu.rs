@@ -532,3 +532,46 @@ fn adapter_selection_reports_and_filters() {
     .expect("same adapter");
     assert_eq!(again.description(), gpu.description());
 }
+
+/// A kernel created again from the same module and bindings is the cached pipeline (no shader
+/// module, no driver compile), and still computes the right values; a changed module or binding
+/// list is compiled anew.
+#[test]
+fn an_unchanged_kernel_is_reused_and_a_changed_one_is_not() {
+    let Some(gpu) = gpu_or_skip("an_unchanged_kernel_is_reused_and_a_changed_one_is_not") else {
+        return;
+    };
+    let make = |wgsl: &str, bindings: &[BindingDesc]| {
+        create_kernel(
+            &gpu,
+            KernelDesc {
+                label: "cache probe",
+                source: KernelSource::Wgsl(wgsl.into()),
+                entry_point: "main",
+                bindings,
+                tile_binding: None,
+            },
+        )
+        .expect("the probe kernel is valid")
+    };
+    let bindings = round_trip_bindings();
+    // A module no other test creates, so the first creation below is a miss.
+    let first_text = ROUND_TRIP_WGSL.replace("0.5, 1.0", "0.25, 1.0");
+    let first = make(&first_text, &bindings);
+    assert!(first.timings().shader_module_ms > 0.0 && first.timings().pipeline_ms > 0.0);
+
+    let again = make(&first_text, &bindings);
+    assert_eq!(again.timings().shader_module_ms, 0.0, "{:?}", again.timings());
+    assert_eq!(again.timings().pipeline_ms, 0.0, "{:?}", again.timings());
+
+    let changed = make(&ROUND_TRIP_WGSL.replace("0.5, 1.0", "0.125, 1.0"), &bindings);
+    assert!(changed.timings().pipeline_ms > 0.0, "a changed module must be compiled");
+    let mut other_bindings = bindings.clone();
+    other_bindings[1].min_size = 32;
+    let rebound = make(&first_text, &other_bindings);
+    assert!(rebound.timings().pipeline_ms > 0.0, "changed bindings must be compiled");
+
+    // The reused pipeline still runs: the whole round trip through the cache.
+    round_trip(&gpu, KernelSource::Wgsl(ROUND_TRIP_WGSL.into()));
+    round_trip(&gpu, KernelSource::Wgsl(ROUND_TRIP_WGSL.into()));
+}

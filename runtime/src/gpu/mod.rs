@@ -126,7 +126,12 @@ pub struct Gpu {
     limits: GpuLimits,
     init_timings: InitTimings,
     uncaptured: Arc<Mutex<Vec<String>>>,
+    /// Recently created kernels by [`pipeline`]'s key, most recent last (at most [`KERNEL_CACHE`]).
+    kernels: Mutex<Vec<(u64, Kernel)>>,
 }
+
+/// How many kernels a [`Gpu`] keeps for reuse.
+const KERNEL_CACHE: usize = 8;
 
 impl Gpu {
     /// Chooses an adapter (see [`AdapterChoice`] for the rules) and creates a device with the
@@ -171,7 +176,28 @@ impl Gpu {
             limits,
             init_timings,
             uncaptured,
+            kernels: Mutex::new(Vec::new()),
         })
+    }
+
+    /// A kernel created earlier on this device from the same module and bindings, if kept.
+    fn cached_kernel(&self, key: u64) -> Option<Kernel> {
+        let mut kernels = self.kernels.lock().unwrap_or_else(PoisonError::into_inner);
+        let at = kernels.iter().position(|(k, _)| *k == key)?;
+        let entry = kernels.remove(at);
+        let kernel = entry.1.clone();
+        kernels.push(entry);
+        Some(kernel)
+    }
+
+    /// Keeps `kernel` for reuse, dropping the least recently used beyond [`KERNEL_CACHE`].
+    fn cache_kernel(&self, key: u64, kernel: Kernel) {
+        let mut kernels = self.kernels.lock().unwrap_or_else(PoisonError::into_inner);
+        kernels.retain(|(k, _)| *k != key);
+        kernels.push((key, kernel));
+        if kernels.len() > KERNEL_CACHE {
+            kernels.remove(0);
+        }
     }
 
     /// What the chosen adapter is (name, backend, device type, driver), for printing.

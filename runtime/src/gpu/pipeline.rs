@@ -258,7 +258,8 @@ pub enum PipelineError {
 }
 
 /// A compute pipeline with its explicit bind group layout and what the dispatcher needs to know.
-#[derive(Debug)]
+/// Cloning is cheap: wgpu's handles are reference-counted.
+#[derive(Clone, Debug)]
 pub struct Kernel {
     label: String,
     pipeline: wgpu::ComputePipeline,
@@ -325,6 +326,24 @@ pub fn create_kernel(gpu: &Gpu, desc: KernelDesc<'_>) -> Result<Kernel, Pipeline
     };
     timings.parse_ms = elapsed_ms(start);
 
+    // The same module with the same bindings on the same device is the same pipeline: reuse it.
+    // This is what makes a watch-mode preview fast when an edit leaves the kernel unchanged.
+    let start = Instant::now();
+    let key = kernel_key(
+        [desc.label, desc.entry_point],
+        desc.tile_binding,
+        desc.bindings,
+        &module,
+    );
+    if let Some(mut kernel) = gpu.cached_kernel(key) {
+        kernel.timings = PipelineTimings {
+            validate_ms: elapsed_ms(start),
+            ..PipelineTimings::default()
+        };
+        return Ok(kernel);
+    }
+    let key_ms = elapsed_ms(start);
+
     let start = Instant::now();
     let bindings = sorted_bindings(&label, desc.bindings)?;
     let workgroup_size = reflect(
@@ -343,7 +362,7 @@ pub fn create_kernel(gpu: &Gpu, desc: KernelDesc<'_>) -> Result<Kernel, Pipeline
             });
         }
     }
-    timings.validate_ms = elapsed_ms(start);
+    timings.validate_ms = elapsed_ms(start) + key_ms;
 
     let start = Instant::now();
     let (shader, error) = gpu.scoped(|| {
@@ -397,7 +416,7 @@ pub fn create_kernel(gpu: &Gpu, desc: KernelDesc<'_>) -> Result<Kernel, Pipeline
     }
     timings.pipeline_ms = elapsed_ms(start);
 
-    Ok(Kernel {
+    let kernel = Kernel {
         label,
         pipeline,
         bind_group_layout,
@@ -405,7 +424,33 @@ pub fn create_kernel(gpu: &Gpu, desc: KernelDesc<'_>) -> Result<Kernel, Pipeline
         tile_binding: desc.tile_binding,
         workgroup_size,
         timings,
-    })
+    };
+    gpu.cache_kernel(key, kernel.clone());
+    Ok(kernel)
+}
+
+/// A hash of everything a pipeline depends on: the label, entry point, tile binding, binding list
+/// and the module itself (its `Debug` form, which holds every arena's contents but no spans).
+fn kernel_key(
+    names: [&str; 2],
+    tile_binding: Option<u32>,
+    bindings: &[BindingDesc],
+    module: &naga::Module,
+) -> u64 {
+    use std::hash::{Hash, Hasher};
+    struct HashWriter(std::collections::hash_map::DefaultHasher);
+    impl fmt::Write for HashWriter {
+        fn write_str(&mut self, s: &str) -> fmt::Result {
+            self.0.write(s.as_bytes());
+            Ok(())
+        }
+    }
+    let mut w = HashWriter(std::collections::hash_map::DefaultHasher::new());
+    names.hash(&mut w.0);
+    tile_binding.hash(&mut w.0);
+    // Writing into a hasher cannot fail.
+    let _ = fmt::write(&mut w, format_args!("{bindings:?}{module:?}"));
+    w.0.finish()
 }
 
 fn sorted_bindings(
