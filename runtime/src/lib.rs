@@ -19,6 +19,7 @@
 //! It contains no `unsafe` code (the workspace denies it).
 
 pub mod assets;
+pub mod bvh_view;
 pub mod gpu;
 pub mod image_out;
 pub mod render;

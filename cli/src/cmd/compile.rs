@@ -52,7 +52,7 @@ pub struct Args {
     pub message_format: MessageFormat,
 }
 
-fn parse_target(s: &str) -> Result<Target, String> {
+pub fn parse_target(s: &str) -> Result<Target, String> {
     Target::from_name(s)
         .ok_or_else(|| format!("unknown target `{s}` (expected wgsl, spirv, hlsl, msl or glsl)"))
 }
@@ -111,38 +111,15 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             ctx.color,
         );
     }
-    let resources = rtc_compiler::abi::resources(compiled.bindings.iter().copied());
-    let mut modules = vec![("kernel", &compiled.render, RENDER_ENTRY)];
-    if let Some(b) = &compiled.bounds {
-        modules.push(("bounds", b, BOUNDS_ENTRY));
-    }
-    for (stem, module, entry) in modules {
-        for &t in &targets {
-            let bytes = match back::write(module, t, entry, &resources) {
-                Ok(b) => b,
-                Err(e) => {
-                    term::eprint(&format!(
-                        "error[ICE]: {e}\nnote: this is a bug in rtc; please report it\n"
-                    ));
-                    return Exit::Failure;
-                }
-            };
-            let ext = t.file_name().rsplit('.').next().unwrap_or("out");
-            let path = args.out.join(format!("{stem}.{ext}"));
-            if let Err(e) = std::fs::write(&path, bytes) {
-                return report::usage_error(
-                    &format!("cannot write `{}`: {e}", path.display()),
-                    ctx.color,
-                );
-            }
+    match write_outputs(&compiled, &targets, &args.out) {
+        Ok(_) => {}
+        Err(OutputError::Backend(e)) => {
+            term::eprint(&format!(
+                "error[ICE]: {e}\nnote: this is a bug in rtc; please report it\n"
+            ));
+            return Exit::Failure;
         }
-    }
-    let manifest_path = args.out.join("manifest.json");
-    if let Err(e) = std::fs::write(&manifest_path, manifest::manifest_json(&compiled)) {
-        return report::usage_error(
-            &format!("cannot write `{}`: {e}", manifest_path.display()),
-            ctx.color,
-        );
+        Err(OutputError::Write(e)) => return report::usage_error(&e, ctx.color),
     }
     term::eprint(&format!(
         "compiled scene `{}` for {} into {}\n",
@@ -160,6 +137,68 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         args.out.display()
     ));
     Exit::Success
+}
+
+/// Why [`write_outputs`] stopped.
+#[derive(Debug)]
+pub enum OutputError {
+    /// A backend could not write a module (a bug in rtc: the module was validated).
+    Backend(String),
+    /// A file could not be written; the message names it.
+    Write(String),
+}
+
+/// Writes the kernel (and the bounds kernel, if any) for every target, then `manifest.json`, into
+/// `out` (which must exist). Returns the files written, in order. Shared by `rtc compile` and
+/// `rtc watch`.
+pub fn write_outputs(
+    compiled: &kernel::CompiledScene,
+    targets: &[Target],
+    out: &std::path::Path,
+) -> Result<Vec<PathBuf>, OutputError> {
+    let resources = rtc_compiler::abi::resources(compiled.bindings.iter().copied());
+    let mut modules = vec![("kernel", &compiled.render, RENDER_ENTRY)];
+    if let Some(b) = &compiled.bounds {
+        modules.push(("bounds", b, BOUNDS_ENTRY));
+    }
+    let jobs: Vec<_> = modules
+        .iter()
+        .flat_map(|m| targets.iter().map(move |&t| (m, t)))
+        .collect();
+    // The backends are independent: each target is written on its own thread.
+    let results: Vec<Result<PathBuf, OutputError>> = std::thread::scope(|scope| {
+        let handles: Vec<_> = jobs
+            .iter()
+            .map(|&(&(stem, module, entry), t)| {
+                let resources = &resources;
+                scope.spawn(move || {
+                    let bytes = back::write(module, t, entry, resources)
+                        .map_err(|e| OutputError::Backend(e.to_string()))?;
+                    let ext = t.file_name().rsplit('.').next().unwrap_or("out");
+                    let path = out.join(format!("{stem}.{ext}"));
+                    std::fs::write(&path, bytes).map_err(|e| {
+                        OutputError::Write(format!("cannot write `{}`: {e}", path.display()))
+                    })?;
+                    Ok(path)
+                })
+            })
+            .collect();
+        handles
+            .into_iter()
+            // A panic in a backend is a bug: it goes on as the panic it is (an ICE, exit code 101).
+            .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
+            .collect()
+    });
+    let mut written = Vec::new();
+    for r in results {
+        written.push(r?);
+    }
+    let manifest_path = out.join("manifest.json");
+    std::fs::write(&manifest_path, manifest::manifest_json(compiled)).map_err(|e| {
+        OutputError::Write(format!("cannot write `{}`: {e}", manifest_path.display()))
+    })?;
+    written.push(manifest_path);
+    Ok(written)
 }
 
 fn emit_ast(args: &Args, ctx: &Context) -> Exit {

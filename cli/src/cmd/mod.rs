@@ -5,9 +5,13 @@
 //! variant to [`Command`] and an arm to [`run`]. Printing goes through `crate::report` and
 //! `crate::term`; exit codes through [`Exit`].
 
+pub mod bench;
+pub mod bvh;
 pub mod check;
 pub mod compile;
 pub mod render;
+pub mod view;
+pub mod watch;
 
 use crate::args::{Cli, GlobalArgs};
 use crate::exit::Exit;
@@ -22,6 +26,26 @@ pub enum Command {
     Compile(compile::Args),
     /// Render a scene on the GPU to a PNG or EXR image.
     Render(render::Args),
+    /// Error against run time: render at increasing samples per pixel and compare with a reference.
+    ///
+    /// Prints spp, render ms, RMSE, relative MSE and PSNR per level; writes CSV, JSON and a log-log
+    /// SVG plot on request; `--bvh-presets` adds BVH build ms against trace ms per builder preset.
+    Bench(bench::Args),
+    /// Draw the scene-level and object-level BVH boxes (a colour per level) or a heat map of the
+    /// nodes visited and primitives tested per pixel.
+    Bvh(bvh::Args),
+    /// Compile a scene, then recompile, re-emit and re-render a preview on every save (Ctrl-C stops).
+    ///
+    /// Watches the scene, everything it imports and the assets it loads. A save that breaks the
+    /// scene prints the diagnostics and keeps the last good outputs; each reload prints what
+    /// changed and how long each phase took.
+    Watch(watch::Args),
+    /// Show a scene in a window, refining progressively; orbit (left drag), pan (right drag) and
+    /// zoom (scroll); reloads programs and scene on every save, keeping the camera.
+    ///
+    /// Needs a display (on Linux, `DISPLAY` or `WAYLAND_DISPLAY`); without one it says so and exits
+    /// with code 1. The title shows the samples per pixel, the frame time and the rays per second.
+    View(view::Args),
 }
 
 /// What every subcommand gets besides its own arguments.
@@ -52,5 +76,9 @@ pub fn run(cli: Cli) -> Exit {
         Command::Check(args) => check::run(args, &ctx),
         Command::Compile(args) => compile::run(args, &ctx),
         Command::Render(args) => render::run(args, &ctx),
+        Command::Bench(args) => bench::run(args, &ctx),
+        Command::Bvh(args) => bvh::run(args, &ctx),
+        Command::Watch(args) => watch::run(args, &ctx),
+        Command::View(args) => view::run(args, &ctx),
     }
 }

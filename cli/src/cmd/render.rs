@@ -6,11 +6,17 @@
 //! without touching the GPU); then the adapter is chosen and printed; then the runtime builds the
 //! scene (assets, BVHs, uploads, pipelines) and renders, with a progress bar on stderr when there
 //! are more than a few tiles. At the end it prints the adapter, BVH build, upload and render times
-//! and primary rays per second on stdout.
+//! and rays per second (primary rays, and every ray traced) on stdout.
+//!
+//! A `.gltf` or `.glb` file instead of a scene is rendered through a scene written for it with
+//! sensible defaults (a camera framing it, a light, a background; see [`model`]), and the defaults
+//! chosen are printed before rendering.
 //!
 //! Failures of the runtime (no adapter, an asset that cannot be loaded, a device limit) are printed
 //! as one `error:` line (an unreadable asset as an E0902 diagnostic at the scene's string) and exit
 //! with code 1. Nothing here panics on bad input; the process is never exited from here.
+
+pub mod model;
 
 use super::Context;
 use crate::args::MessageFormat;
@@ -30,7 +36,8 @@ const PROGRESS_MIN_TILES: u64 = 4;
 /// Arguments of `rtc render`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// The scene file (the files it imports are read too).
+    /// The scene file (the files it imports are read too), or a glTF file (`.gltf`, `.glb`) to
+    /// render with default camera, light and background where it has none.
     #[arg(value_name = "SCENE")]
     pub path: PathBuf,
     /// The image to write: `.png` (8-bit sRGB, values clipped to 1) or `.exr` (linear float).
@@ -104,12 +111,15 @@ impl FromStr for Size {
 
 /// The output formats, by extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Format {
+pub enum Format {
+    /// `.png`
     Png,
+    /// `.exr`
     Exr,
 }
 
-fn output_format(path: &Path) -> Option<Format> {
+/// The format of an output file, by its extension (`None`: neither `.png` nor `.exr`).
+pub fn output_format(path: &Path) -> Option<Format> {
     let ext = path.extension()?.to_str()?.to_ascii_lowercase();
     match ext.as_str() {
         "png" => Some(Format::Png),
@@ -134,8 +144,30 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Err(e) => return report::usage_error(&e.to_string(), ctx.color),
     };
 
+    // A bare glTF file: render a scene written for it, saying which defaults it got.
+    let synth = if model::is_model(&args.path) {
+        if args.scene.is_some() {
+            return report::usage_error(
+                "--scene chooses among the scenes of a .rt file; a glTF file has one",
+                ctx.color,
+            );
+        }
+        match model::synthesize(&args.path) {
+            Ok(s) => {
+                for d in &s.defaults {
+                    term::print(&format!("default {d}\n"));
+                }
+                Some(s)
+            }
+            Err(e) => return fail(&e.to_string(), ctx),
+        }
+    } else {
+        None
+    };
+    let scene_path = synth.as_ref().map_or(&args.path, |s| &s.path);
+
     let compiled = match compile_scene(
-        std::slice::from_ref(&args.path),
+        std::slice::from_ref(scene_path),
         args.scene.as_deref(),
         &ctx.options,
         &LinkOptions::default(),
@@ -174,7 +206,6 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Ok(gpu) => gpu,
         Err(e) => return fail(&e.to_string(), ctx),
     };
-    term::print(&format!("adapter: {}\n", gpu.description()));
 
     let options = RenderOptions {
         size: args.size.map(|s| [s.width, s.height]),
@@ -201,11 +232,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Err(e) => return render_failure(&e, &compiled.checked.sources, ctx),
     };
 
-    let written = match format {
-        Format::Png => write_png(&args.output, &result.image, &ToneMap::default()),
-        Format::Exr => write_exr(&args.output, &result.image),
-    };
-    let write_report = match written {
+    let write_report = match write_image(&args.output, format, &result.image) {
         Ok(r) => r,
         Err(e) => return fail(&e.to_string(), ctx),
     };
@@ -232,6 +259,19 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     }
     term::print(&summary(&result.stats, &args.output));
     Exit::Success
+}
+
+/// Writes `image` to `path` in `format` (PNG with the default tone map, or EXR). Shared by
+/// `rtc render` and `rtc watch`.
+pub fn write_image(
+    path: &Path,
+    format: Format,
+    image: &rtc_runtime::image_out::LinearImage,
+) -> Result<rtc_runtime::image_out::WriteReport, rtc_runtime::image_out::ImageError> {
+    match format {
+        Format::Png => write_png(path, image, &ToneMap::default()),
+        Format::Exr => write_exr(path, image),
+    }
 }
 
 /// A progress bar on stderr for renders of more than a few tiles (hidden when stderr is not a
@@ -284,14 +324,17 @@ pub fn summary(s: &RenderStats, output: &Path) -> String {
         s.bytes_uploaded as f64 / 1e6
     ));
     out.push_str(&format!(
-        "  render    {:>10.2} ms  ({:.2} M primary rays/s)\n",
+        "  render    {:>10.2} ms  ({:.2} M primary rays/s, {:.2} M rays/s in all: {} rays traced)\n",
         s.render_ms,
-        s.rays_per_second / 1e6
+        s.rays_per_second / 1e6,
+        s.traced_rays_per_second / 1e6,
+        s.rays_traced
     ));
     out
 }
 
-fn fail(message: &str, ctx: &Context) -> Exit {
+/// Prints `error: message` and returns [`Exit::Failure`].
+pub fn fail(message: &str, ctx: &Context) -> Exit {
     term::eprint(&format!(
         "{}: {message}\n",
         term::paint("error", 31, ctx.color)
@@ -299,7 +342,8 @@ fn fail(message: &str, ctx: &Context) -> Exit {
     Exit::Failure
 }
 
-fn warn(message: &str, ctx: &Context) {
+/// Prints `warning: message`.
+pub fn warn(message: &str, ctx: &Context) {
     term::eprint(&format!(
         "{}: {message}\n",
         term::paint("warning", 33, ctx.color)
@@ -307,7 +351,7 @@ fn warn(message: &str, ctx: &Context) {
 }
 
 /// A runtime failure: a diagnostic when it points into the scene (E0902), else one line.
-fn render_failure(e: &RenderError, sources: &rtc_compiler::SourceMap, ctx: &Context) -> Exit {
+pub fn render_failure(e: &RenderError, sources: &rtc_compiler::SourceMap, ctx: &Context) -> Exit {
     if let RenderError::Scene(scene) = e {
         if let Some(d) = scene.to_diagnostic() {
             return report::diagnostics(

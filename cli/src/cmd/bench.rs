@@ -1,0 +1,768 @@
+//! `rtc bench <scene.rt>`: error against run time.
+//!
+//! Renders the scene at each sample count of `--spp-list` (default 1, 4, 16, 64, 256) and compares
+//! each image with a reference: an EXR/PNG file (`--reference`), or the scene itself rendered at
+//! `--reference-spp` samples (default 1024). Prints a table (spp, ms, RMSE, relative MSE, PSNR),
+//! and on request writes it as CSV (`--csv`) and JSON (`--json`, with the setup figures) and draws
+//! the log-log error-against-time plot as SVG (`--plot`).
+//!
+//! How it is timed: each level is a **separate render** that starts at pass 0, so the samples of
+//! a level are the first samples of every larger level (and of a reference rendered here), and
+//! its time is the whole render's: the GPU dispatches of all its passes. Pipeline creation (with
+//! the driver's compile and the warm-up dispatch), BVH build and upload are setup, measured by
+//! the runtime separately, printed apart and never included in `ms`.
+//!
+//! Because a reference rendered here shares the first `n` samples of each level, the expected
+//! measured MSE is `σ²(1/n − 1/N)` rather than `σ²/n` (`N` the reference's samples); the output
+//! says so. An independent reference file has no such bias.
+//!
+//! `--bvh-presets` adds the BVH knob: for each builder preset (`fast`, `quality`) it builds the
+//! scene and renders `--preset-spp` samples, and reports BVH build ms, trace (render) ms, and the
+//! SAH cost of the scene-level BVH and of the object-level BVHs (their mean weighted by
+//! triangles).
+//!
+//! Errors (a missing or unreadable reference, a reference of another size, a bad output name)
+//! are one `error:` line and exit code 1 (2 for usage errors), found before the long renders
+//! where possible; nothing here panics on user input.
+
+use super::render::{fail, render_failure, warn, BvhPreset, Size};
+use super::Context;
+use crate::args::MessageFormat;
+use crate::exit::Exit;
+use crate::{report, term};
+use rtc_compiler::kernel::{compile_scene_with, CompiledScene, KernelOptions};
+use rtc_compiler::link::LinkOptions;
+use rtc_runtime::bvh_view::sah_cost;
+use rtc_runtime::gpu::{AdapterChoice, Gpu};
+use rtc_runtime::image_out::{compare, read_image};
+use rtc_runtime::render::{RenderError, RenderOptions, RenderResult, Renderer};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::str::FromStr;
+
+/// The reference's sample count when neither `--reference` nor `--reference-spp` is given.
+pub const DEFAULT_REFERENCE_SPP: u32 = 1024;
+
+/// Arguments of `rtc bench`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The scene file.
+    #[arg(value_name = "SCENE")]
+    pub path: PathBuf,
+    /// The reference image (EXR for linear values; a PNG is decoded from sRGB).
+    #[arg(long, value_name = "FILE", conflicts_with = "reference_spp")]
+    pub reference: Option<PathBuf>,
+    /// Render the reference from the scene at this many samples per pixel (default 1024).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    pub reference_spp: Option<u32>,
+    /// The sample counts to measure, comma-separated.
+    #[arg(
+        long,
+        value_name = "LIST",
+        value_delimiter = ',',
+        default_value = "1,4,16,64,256",
+        value_parser = clap::value_parser!(u32).range(1..)
+    )]
+    pub spp_list: Vec<u32>,
+    /// Image size instead of the scene's `width` and `height`, as `WIDTHxHEIGHT`.
+    #[arg(long, value_name = "WxH")]
+    pub size: Option<Size>,
+    /// Which scene to render when the file declares several.
+    #[arg(long, value_name = "NAME")]
+    pub scene: Option<String>,
+    /// The GPU (as for `rtc render`).
+    #[arg(long, value_name = "CHOICE", default_value = "auto")]
+    pub adapter: String,
+    /// BVH builder preset of the measured renders.
+    #[arg(long, value_enum, default_value_t = BvhPreset::Fast)]
+    pub bvh: BvhPreset,
+    /// Write the table as CSV.
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
+    /// Write the table and the setup figures as JSON.
+    #[arg(long, value_name = "FILE")]
+    pub json: Option<PathBuf>,
+    /// Draw RMSE against render time (log-log) as SVG.
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
+    /// Also report BVH build ms against trace ms and SAH cost for each builder preset.
+    #[arg(long)]
+    pub bvh_presets: bool,
+    /// Samples per pixel of the `--bvh-presets` renders.
+    #[arg(long, value_name = "N", default_value_t = 16, value_parser = clap::value_parser!(u32).range(1..))]
+    pub preset_spp: u32,
+}
+
+/// One measured level.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Row {
+    /// Samples per pixel asked for.
+    pub spp: u32,
+    /// Samples per pixel taken (rounded up to the camera's samples per pass).
+    pub samples: u32,
+    /// Render time, ms (GPU dispatches of all passes).
+    pub ms: f64,
+    /// Root-mean-square error against the reference.
+    pub rmse: f64,
+    /// Relative MSE against the reference.
+    pub rel_mse: f64,
+    /// PSNR for a peak of 1, dB.
+    pub psnr: f64,
+}
+
+/// Setup figures of one renderer (not part of any row's `ms`).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Setup {
+    /// Pipeline creation including the driver's compile and the warm-up dispatch.
+    pub pipeline_ms: f64,
+    /// BVH builds.
+    pub bvh_build_ms: f64,
+    /// Uploads.
+    pub upload_ms: f64,
+}
+
+/// One BVH preset's figures.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PresetRow {
+    /// The preset.
+    pub preset: BvhPreset,
+    /// BVH build, ms.
+    pub build_ms: f64,
+    /// Render at `--preset-spp`, ms.
+    pub trace_ms: f64,
+    /// SAH cost of the scene-level BVH.
+    pub tlas_sah: f64,
+    /// Triangle-weighted mean SAH cost of the object-level BVHs.
+    pub blas_sah: f64,
+    /// Nodes in the node buffer (all BVHs).
+    pub nodes: usize,
+}
+
+/// Compiles `path` (the normal kernel, or a debug kernel per `kernel`), printing diagnostics; the
+/// error is the exit code to return. Shared by `rtc bench` and `rtc bvh`.
+pub fn compile(
+    path: &Path,
+    scene: Option<&str>,
+    kernel: &KernelOptions,
+    ctx: &Context,
+    verb: &str,
+) -> Result<CompiledScene, Exit> {
+    match compile_scene_with(
+        std::slice::from_ref(&path.to_path_buf()),
+        scene,
+        &ctx.options,
+        &LinkOptions::default(),
+        kernel,
+    ) {
+        Ok(c) => Ok(c),
+        Err(failure) => {
+            let exit = report::diagnostics(
+                &failure.checked.sources,
+                &failure.diagnostics,
+                MessageFormat::Human,
+                ctx.color,
+                verb,
+            );
+            if exit == Exit::Success {
+                return Err(fail(
+                    &format!("`{}` could not be compiled", path.display()),
+                    ctx,
+                ));
+            }
+            Err(Exit::Failure)
+        }
+    }
+}
+
+/// Prints a compiled scene's warnings, if any.
+pub fn print_warnings(compiled: &CompiledScene, ctx: &Context, verb: &str) {
+    if !compiled.checked.diagnostics.is_empty() {
+        report::diagnostics(
+            &compiled.checked.sources,
+            &compiled.checked.diagnostics,
+            MessageFormat::Human,
+            ctx.color,
+            verb,
+        );
+    }
+}
+
+/// Renders `compiled` once with `options`, returning the result and the renderer's setup.
+fn render_once<'g>(
+    gpu: &'g Gpu,
+    compiled: &CompiledScene,
+    options: RenderOptions,
+) -> Result<(RenderResult, Renderer<'g>), RenderError> {
+    let mut renderer = Renderer::new(gpu, compiled, options)?;
+    let result = renderer.render(&mut |_, _| {})?;
+    Ok((result, renderer))
+}
+
+/// The compiled scene's own image size (`None` when the compile kept no program).
+fn scene_size(compiled: &CompiledScene) -> Option<[u32; 2]> {
+    let program = compiled.checked.program.as_ref()?;
+    let settings = &program.scenes[compiled.scene].settings;
+    Some([settings.width, settings.height])
+}
+
+fn setup_of(r: &RenderResult) -> Setup {
+    Setup {
+        pipeline_ms: r.stats.pipeline_ms,
+        bvh_build_ms: r.stats.bvh_build_ms,
+        upload_ms: r.stats.upload_ms,
+    }
+}
+
+/// Runs `rtc bench`.
+pub fn run(args: &Args, ctx: &Context) -> Exit {
+    if let Some(plot) = &args.plot {
+        let ext = plot
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase);
+        if ext.as_deref() != Some("svg") {
+            return report::usage_error(
+                &format!(
+                    "cannot draw `{}`: the plot is written as SVG, so its name must end in `.svg`",
+                    plot.display()
+                ),
+                ctx.color,
+            );
+        }
+    }
+    let choice = match AdapterChoice::from_str(&args.adapter) {
+        Ok(c) => c,
+        Err(e) => return report::usage_error(&e.to_string(), ctx.color),
+    };
+    let mut levels = args.spp_list.clone();
+    levels.sort_unstable();
+    levels.dedup();
+    if levels.is_empty() {
+        return report::usage_error("--spp-list needs at least one sample count", ctx.color);
+    }
+
+    // A reference file is read before anything is compiled or rendered.
+    let reference_file = match &args.reference {
+        Some(path) => match read_image(path) {
+            Ok(image) => Some(image),
+            Err(e) => {
+                return fail(
+                    &format!("cannot use the reference `{}`: {e}", path.display()),
+                    ctx,
+                )
+            }
+        },
+        None => None,
+    };
+
+    let compiled = match compile(
+        &args.path,
+        args.scene.as_deref(),
+        &KernelOptions::default(),
+        ctx,
+        "bench",
+    ) {
+        Ok(c) => c,
+        Err(exit) => return exit,
+    };
+    print_warnings(&compiled, ctx, "bench");
+    let gpu = match Gpu::new(&choice) {
+        Ok(gpu) => gpu,
+        Err(e) => return fail(&e.to_string(), ctx),
+    };
+    term::print(&format!("adapter: {}\n", gpu.description()));
+    let base = RenderOptions {
+        size: args.size.map(|s| [s.width, s.height]),
+        bvh: args.bvh.into(),
+        ..RenderOptions::default()
+    };
+
+    // The reference: from the file (its size checked against the render's), or rendered here.
+    let (reference, reference_spp) = match reference_file {
+        Some(image) => {
+            let size = match (base.size, scene_size(&compiled)) {
+                (Some(size), _) | (None, Some(size)) => size,
+                (None, None) => match Renderer::new(&gpu, &compiled, base) {
+                    Ok(r) => r.size(),
+                    Err(e) => return render_failure(&e, &compiled.checked.sources, ctx),
+                },
+            };
+            if [image.width(), image.height()] != size {
+                return fail(
+                    &format!(
+                        "the reference `{}` is {}x{} but the bench renders {}x{}; give \
+                         --size {}x{} or a reference of the render's size",
+                        args.reference.as_deref().unwrap_or(Path::new("")).display(),
+                        image.width(),
+                        image.height(),
+                        size[0],
+                        size[1],
+                        image.width(),
+                        image.height()
+                    ),
+                    ctx,
+                );
+            }
+            (image, None)
+        }
+        None => {
+            let spp = args.reference_spp.unwrap_or(DEFAULT_REFERENCE_SPP);
+            term::eprint(&format!("rendering the reference at {spp} spp...\n"));
+            let options = RenderOptions {
+                samples: Some(spp),
+                ..base
+            };
+            match render_once(&gpu, &compiled, options) {
+                Ok((r, _)) => {
+                    term::print(&format!(
+                        "reference: the scene at {} spp, rendered in {:.1} ms\n",
+                        r.stats.samples, r.stats.render_ms
+                    ));
+                    (r.image, Some(r.stats.samples))
+                }
+                Err(e) => return render_failure(&e, &compiled.checked.sources, ctx),
+            }
+        }
+    };
+    if let Some(path) = &args.reference {
+        term::print(&format!("reference: {}\n", path.display()));
+    }
+
+    term::print(&format!(
+        "{:>7} {:>12} {:>12} {:>12} {:>9}\n",
+        "spp", "ms", "RMSE", "rel MSE", "PSNR dB"
+    ));
+    let mut rows = Vec::new();
+    let mut setup = Setup::default();
+    let mut size = [0, 0];
+    for &spp in &levels {
+        let options = RenderOptions {
+            samples: Some(spp),
+            ..base
+        };
+        let r = match render_once(&gpu, &compiled, options) {
+            Ok((r, _)) => r,
+            Err(e) => return render_failure(&e, &compiled.checked.sources, ctx),
+        };
+        if rows.is_empty() {
+            setup = setup_of(&r);
+            size = [r.stats.width, r.stats.height];
+            for w in &r.stats.warnings {
+                warn(w, ctx);
+            }
+        }
+        let m = match compare(&r.image, &reference) {
+            Ok(m) => m,
+            Err(e) => return fail(&format!("cannot compare with the reference: {e}"), ctx),
+        };
+        if m.nonfinite_test > 0 {
+            warn(
+                &format!(
+                    "{} pixels at {spp} spp are not finite and were left out of the error",
+                    m.nonfinite_test
+                ),
+                ctx,
+            );
+        }
+        let row = Row {
+            spp,
+            samples: r.stats.samples,
+            ms: r.stats.render_ms,
+            rmse: m.rmse,
+            rel_mse: m.rel_mse,
+            psnr: m.psnr,
+        };
+        term::print(&format!(
+            "{:>7} {:>12.2} {:>12.6} {:>12.6} {:>9.2}\n",
+            row.samples, row.ms, row.rmse, row.rel_mse, row.psnr
+        ));
+        rows.push(row);
+    }
+    term::print(&format!(
+        "{}x{}; ms = GPU render time of all passes of that level (a separate render from pass \
+         0); not included, per render: pipelines {:.1} ms, BVH build {:.2} ms, upload {:.2} ms\n",
+        size[0], size[1], setup.pipeline_ms, setup.bvh_build_ms, setup.upload_ms
+    ));
+    if let Some(n) = reference_spp {
+        term::print(&format!(
+            "note: the reference shares each level's first samples, so the expected MSE is \
+             sigma^2 (1/n - 1/{n}), not sigma^2/n\n"
+        ));
+    }
+    if let Some(slope) = loglog_slope(&rows) {
+        term::print(&format!(
+            "log-log slope of RMSE against ms: {slope:.3} (Monte Carlo: -0.5)\n"
+        ));
+    }
+
+    let mut presets = Vec::new();
+    if args.bvh_presets {
+        term::print(&format!(
+            "\nBVH presets ({} spp):\n{:>8} {:>10} {:>10} {:>10} {:>10} {:>9}\n",
+            args.preset_spp, "preset", "build ms", "trace ms", "TLAS SAH", "BLAS SAH", "nodes"
+        ));
+        for preset in [BvhPreset::Fast, BvhPreset::Quality] {
+            let options = RenderOptions {
+                samples: Some(args.preset_spp),
+                bvh: preset.into(),
+                ..base
+            };
+            let (r, renderer) = match render_once(&gpu, &compiled, options) {
+                Ok(x) => x,
+                Err(e) => return render_failure(&e, &compiled.checked.sources, ctx),
+            };
+            let row = preset_row(preset, &r, &renderer);
+            term::print(&format!(
+                "{:>8} {:>10.2} {:>10.2} {:>10.3} {:>10.3} {:>9}\n",
+                preset_name(preset),
+                row.build_ms,
+                row.trace_ms,
+                row.tlas_sah,
+                row.blas_sah,
+                row.nodes
+            ));
+            presets.push(row);
+        }
+    }
+
+    let reference_desc = match (&args.reference, reference_spp) {
+        (Some(p), _) => format!("file {}", p.display()),
+        (None, Some(n)) => format!("scene at {n} spp"),
+        (None, None) => String::new(),
+    };
+    let mut outputs: Vec<(&Path, String)> = Vec::new();
+    if let Some(p) = &args.csv {
+        outputs.push((p, csv(&rows)));
+    }
+    if let Some(p) = &args.json {
+        let value = json(
+            &args.path,
+            size,
+            &reference_desc,
+            setup,
+            &rows,
+            &presets,
+            args.preset_spp,
+        );
+        outputs.push((p, format!("{value:#}\n")));
+    }
+    if let Some(p) = &args.plot {
+        outputs.push((p, svg_plot(&rows, &args.path, size, &reference_desc)));
+    }
+    for (path, text) in outputs {
+        if let Err(e) = std::fs::write(path, text) {
+            return fail(&format!("cannot write `{}`: {e}", path.display()), ctx);
+        }
+        term::print(&format!("wrote {}\n", path.display()));
+    }
+    Exit::Success
+}
+
+fn preset_name(p: BvhPreset) -> &'static str {
+    match p {
+        BvhPreset::Fast => "fast",
+        BvhPreset::Quality => "quality",
+    }
+}
+
+fn preset_row(preset: BvhPreset, r: &RenderResult, renderer: &Renderer<'_>) -> PresetRow {
+    let e = renderer.entities();
+    let nodes = e.nodes();
+    let (mut sum, mut weight) = (0.0f64, 0.0f64);
+    for m in e.meshes() {
+        let w = f64::from(m.triangles);
+        sum += w * sah_cost(nodes, m.node_base);
+        weight += w;
+    }
+    PresetRow {
+        preset,
+        build_ms: r.stats.bvh_build_ms,
+        trace_ms: r.stats.render_ms,
+        tlas_sah: sah_cost(nodes, e.tlas_root()),
+        blas_sah: if weight > 0.0 { sum / weight } else { 0.0 },
+        nodes: nodes.len(),
+    }
+}
+
+/// Least-squares slope of `ln RMSE` against `ln ms` over rows with positive finite values;
+/// `None` with fewer than two.
+pub fn loglog_slope(rows: &[Row]) -> Option<f64> {
+    let pts: Vec<(f64, f64)> = rows
+        .iter()
+        .filter(|r| r.ms > 0.0 && r.rmse > 0.0 && r.ms.is_finite() && r.rmse.is_finite())
+        .map(|r| (r.ms.ln(), r.rmse.ln()))
+        .collect();
+    if pts.len() < 2 {
+        return None;
+    }
+    let n = pts.len() as f64;
+    let mx = pts.iter().map(|p| p.0).sum::<f64>() / n;
+    let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    (sxx > 0.0).then(|| sxy / sxx)
+}
+
+/// The table as CSV (header `spp,ms,rmse,rel_mse,psnr_db`).
+pub fn csv(rows: &[Row]) -> String {
+    let mut out = String::from("spp,ms,rmse,rel_mse,psnr_db\n");
+    for r in rows {
+        let _ = writeln!(
+            out,
+            "{},{:.3},{:.8},{:.8},{:.4}",
+            r.samples, r.ms, r.rmse, r.rel_mse, r.psnr
+        );
+    }
+    out
+}
+
+fn finite(x: f64) -> serde_json::Value {
+    if x.is_finite() {
+        serde_json::json!(x)
+    } else {
+        serde_json::Value::Null
+    }
+}
+
+fn json(
+    scene: &Path,
+    size: [u32; 2],
+    reference: &str,
+    setup: Setup,
+    rows: &[Row],
+    presets: &[PresetRow],
+    preset_spp: u32,
+) -> serde_json::Value {
+    serde_json::json!({
+        "scene": scene.display().to_string(),
+        "width": size[0],
+        "height": size[1],
+        "reference": reference,
+        "timing": "ms = GPU render time of all passes of a separate render from pass 0; setup excluded",
+        "setup": {
+            "pipeline_ms": setup.pipeline_ms,
+            "bvh_build_ms": setup.bvh_build_ms,
+            "upload_ms": setup.upload_ms,
+        },
+        "rows": rows.iter().map(|r| serde_json::json!({
+            "spp": r.samples,
+            "ms": r.ms,
+            "rmse": finite(r.rmse),
+            "rel_mse": finite(r.rel_mse),
+            "psnr_db": finite(r.psnr),
+        })).collect::<Vec<_>>(),
+        "loglog_slope": loglog_slope(rows).map_or(serde_json::Value::Null, finite),
+        "bvh_presets": presets.iter().map(|p| serde_json::json!({
+            "preset": preset_name(p.preset),
+            "spp": preset_spp,
+            "build_ms": p.build_ms,
+            "trace_ms": p.trace_ms,
+            "tlas_sah": p.tlas_sah,
+            "blas_sah": p.blas_sah,
+            "nodes": p.nodes,
+        })).collect::<Vec<_>>(),
+    })
+}
+
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+/// The decades (powers of ten) covering `[lo, hi]`, widened to at least one decade.
+fn decades(lo: f64, hi: f64) -> (f64, f64) {
+    let a = lo.log10().floor();
+    let mut b = hi.log10().ceil();
+    if b <= a {
+        b = a + 1.0;
+    }
+    (a, b)
+}
+
+/// RMSE against ms on log-log axes, points labelled with their spp, and a dashed `ms^-1/2` line
+/// through the first point (the Monte Carlo rate), as a standalone SVG document.
+pub fn svg_plot(rows: &[Row], scene: &Path, size: [u32; 2], reference: &str) -> String {
+    let pts: Vec<&Row> = rows
+        .iter()
+        .filter(|r| r.ms > 0.0 && r.rmse > 0.0 && r.ms.is_finite() && r.rmse.is_finite())
+        .collect();
+    let (w, h) = (640.0, 440.0);
+    let (left, right, top, bottom) = (80.0, 20.0, 50.0, 60.0);
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" \
+         viewBox=\"0 0 {w} {h}\" font-family=\"sans-serif\" font-size=\"12\">"
+    );
+    let _ = writeln!(s, "<rect width=\"{w}\" height=\"{h}\" fill=\"white\"/>");
+    let _ = writeln!(
+        s,
+        "<text x=\"{}\" y=\"20\" text-anchor=\"middle\" font-size=\"14\">RMSE against render \
+         time: {} ({}x{})</text>",
+        w / 2.0,
+        escape(&scene.display().to_string()),
+        size[0],
+        size[1]
+    );
+    let _ = writeln!(
+        s,
+        "<text x=\"{}\" y=\"38\" text-anchor=\"middle\" fill=\"#555\">reference: {}</text>",
+        w / 2.0,
+        escape(reference)
+    );
+    if pts.is_empty() {
+        let _ = writeln!(
+            s,
+            "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">no finite, positive error to \
+             plot</text>",
+            w / 2.0,
+            h / 2.0
+        );
+        s.push_str("</svg>\n");
+        return s;
+    }
+    let (x0, x1) = decades(
+        pts.iter().map(|r| r.ms).fold(f64::INFINITY, f64::min),
+        pts.iter().map(|r| r.ms).fold(0.0, f64::max),
+    );
+    let (y0, y1) = decades(
+        pts.iter().map(|r| r.rmse).fold(f64::INFINITY, f64::min),
+        pts.iter().map(|r| r.rmse).fold(0.0, f64::max),
+    );
+    let (pw, ph) = (w - left - right, h - top - bottom);
+    let px = |ms: f64| left + (ms.log10() - x0) / (x1 - x0) * pw;
+    let py = |e: f64| top + (1.0 - (e.log10() - y0) / (y1 - y0)) * ph;
+    // Grid and decade labels.
+    for d in (x0 as i32)..=(x1 as i32) {
+        let x = px(10f64.powi(d));
+        let _ = writeln!(
+            s,
+            "<line x1=\"{x:.1}\" y1=\"{top}\" x2=\"{x:.1}\" y2=\"{:.1}\" stroke=\"#ddd\"/>\
+             <text x=\"{x:.1}\" y=\"{:.1}\" text-anchor=\"middle\">1e{d}</text>",
+            top + ph,
+            top + ph + 18.0
+        );
+    }
+    for d in (y0 as i32)..=(y1 as i32) {
+        let y = py(10f64.powi(d));
+        let _ = writeln!(
+            s,
+            "<line x1=\"{left}\" y1=\"{y:.1}\" x2=\"{:.1}\" y2=\"{y:.1}\" stroke=\"#ddd\"/>\
+             <text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"end\">1e{d}</text>",
+            left + pw,
+            left - 6.0,
+            y + 4.0
+        );
+    }
+    let _ = writeln!(
+        s,
+        "<rect x=\"{left}\" y=\"{top}\" width=\"{pw}\" height=\"{ph}\" fill=\"none\" \
+         stroke=\"black\"/>"
+    );
+    let _ = writeln!(
+        s,
+        "<text x=\"{:.1}\" y=\"{:.1}\" text-anchor=\"middle\">render time, ms (log)</text>",
+        left + pw / 2.0,
+        h - 14.0
+    );
+    let _ = writeln!(
+        s,
+        "<text x=\"18\" y=\"{:.1}\" text-anchor=\"middle\" transform=\"rotate(-90 18 {:.1})\">\
+         RMSE (log)</text>",
+        top + ph / 2.0,
+        top + ph / 2.0
+    );
+    // The Monte Carlo rate through the first point, clipped to the plot.
+    let first = pts[0];
+    let last_ms = pts.iter().map(|r| r.ms).fold(0.0, f64::max);
+    let ideal = |ms: f64| first.rmse * (ms / first.ms).powf(-0.5);
+    let _ = writeln!(
+        s,
+        "<line x1=\"{:.1}\" y1=\"{:.1}\" x2=\"{:.1}\" y2=\"{:.1}\" stroke=\"#888\" \
+         stroke-dasharray=\"6 4\"/>",
+        px(first.ms),
+        py(ideal(first.ms)),
+        px(last_ms),
+        py(ideal(last_ms))
+    );
+    let line: Vec<String> = pts
+        .iter()
+        .map(|r| format!("{:.1},{:.1}", px(r.ms), py(r.rmse)))
+        .collect();
+    let _ = writeln!(
+        s,
+        "<polyline points=\"{}\" fill=\"none\" stroke=\"#c0392b\" stroke-width=\"2\"/>",
+        line.join(" ")
+    );
+    for r in &pts {
+        // Labels near the right edge go to the left of their point.
+        let (x, anchor) = if px(r.ms) > left + pw - 70.0 {
+            (px(r.ms) - 7.0, "end")
+        } else {
+            (px(r.ms) + 7.0, "start")
+        };
+        let _ = writeln!(
+            s,
+            "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"4\" fill=\"#c0392b\"/><text x=\"{x:.1}\" \
+             y=\"{:.1}\" text-anchor=\"{anchor}\">{} spp</text>",
+            px(r.ms),
+            py(r.rmse),
+            py(r.rmse) - 7.0,
+            r.samples
+        );
+    }
+    let _ = writeln!(
+        s,
+        "<line x1=\"{:.1}\" y1=\"{:.1}\" x2=\"{:.1}\" y2=\"{:.1}\" stroke=\"#888\" \
+         stroke-dasharray=\"6 4\"/><text x=\"{:.1}\" y=\"{:.1}\" fill=\"#555\">slope -1/2 \
+         (Monte Carlo)</text>",
+        left + pw - 190.0,
+        top + 16.0,
+        left + pw - 160.0,
+        top + 16.0,
+        left + pw - 154.0,
+        top + 20.0
+    );
+    s.push_str("</svg>\n");
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn row(spp: u32, ms: f64, rmse: f64) -> Row {
+        Row {
+            spp,
+            samples: spp,
+            ms,
+            rmse,
+            rel_mse: rmse * rmse,
+            psnr: -20.0 * rmse.log10(),
+        }
+    }
+
+    #[test]
+    fn slope_of_a_monte_carlo_series_is_minus_a_half() {
+        let rows: Vec<Row> = [1u32, 4, 16, 64]
+            .iter()
+            .map(|&n| row(n, 2.0 * f64::from(n), 0.3 / f64::from(n).sqrt()))
+            .collect();
+        let slope = loglog_slope(&rows).expect("four points");
+        assert!((slope + 0.5).abs() < 1e-9, "{slope}");
+        assert_eq!(loglog_slope(&rows[..1]), None);
+    }
+
+    #[test]
+    fn csv_and_svg_have_one_entry_per_row() {
+        let rows = vec![row(1, 10.0, 0.2), row(4, 40.0, 0.1)];
+        let text = csv(&rows);
+        assert_eq!(text.lines().count(), 3);
+        assert!(text.starts_with("spp,ms,rmse,rel_mse,psnr_db\n1,10.000,0.2"));
+        let svg = svg_plot(&rows, Path::new("a<b>.rt"), [8, 8], "scene at 64 spp");
+        assert_eq!(svg.matches("<circle").count(), 2);
+        assert!(svg.contains("a&lt;b&gt;.rt"));
+        assert!(svg.trim_end().ends_with("</svg>"));
+    }
+}

@@ -1,0 +1,251 @@
+//! `rtc render model.gltf|model.glb`: a bare glTF file rendered through a scene written for it.
+//!
+//! The file is read once here to see what it lacks; then a scene is synthesised as `.rt` text with
+//! one `model` entry (the file, by absolute path) plus the defaults it needs, and written to a fresh
+//! temporary folder ([`SynthScene`], removed on drop) so it goes through the normal compile and
+//! render path:
+//! - **camera**: the file's first perspective camera if it has one, else a `Pinhole` framing the
+//!   model's world-space bounds (from the front, [`ELEVATION_DEG`] above the centre, at the distance
+//!   where the bounding sphere fills [`FRAME_FILL`] of a [`FOV_DEG`] vertical field of view);
+//! - **light**: the file's `KHR_lights_punctual` lights if it has any, else one `DirectionalLight`
+//!   from above, behind the camera's left shoulder, of intensity π (a white diffuse surface facing it
+//!   shows its albedo);
+//! - **background**: always a `SkyGradient`;
+//! - **settings**: [`DEFAULT_SIZE`] at [`DEFAULT_SAMPLES`] samples per pixel (`--size`, `--spp`
+//!   override them as for any scene).
+//!
+//! Every default chosen is listed in [`SynthScene::defaults`], one sentence each, which
+//! `rtc render` prints. A file that cannot be read is an error naming it (the loader's message).
+
+use rtc_runtime::assets::model::{ModelScene, Projection};
+use rtc_runtime::assets::{load_gltf, AssetError};
+use std::path::{Path, PathBuf};
+
+/// Vertical field of view of the framing camera, degrees.
+pub const FOV_DEG: f32 = 40.0;
+/// How far above the model's centre the framing camera looks down from, degrees.
+pub const ELEVATION_DEG: f32 = 20.0;
+/// The fraction of the field of view the bounding sphere fills.
+pub const FRAME_FILL: f32 = 0.9;
+/// Image size of the synthesised scene.
+pub const DEFAULT_SIZE: [u32; 2] = [640, 480];
+/// Samples per pixel of the synthesised scene.
+pub const DEFAULT_SAMPLES: u32 = 4;
+
+/// Whether `path` names a glTF file (by extension).
+pub fn is_model(path: &Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("gltf") || e.eq_ignore_ascii_case("glb"))
+}
+
+/// Why no scene could be made for a model.
+#[derive(Debug, thiserror::Error)]
+pub enum ModelError {
+    /// The file cannot be read or is not valid glTF.
+    #[error(transparent)]
+    Asset(#[from] AssetError),
+    /// The path cannot be written in a scene's string.
+    #[error("`{}`: the path is not valid UTF-8, so it cannot be named in a scene", .0.display())]
+    Path(PathBuf),
+    /// The temporary scene could not be written.
+    #[error("cannot write the scene for the model to `{}`: {source}", path.display())]
+    Write {
+        /// The scene file.
+        path: PathBuf,
+        /// The I/O error.
+        source: std::io::Error,
+    },
+}
+
+/// A scene written for a model, in a temporary folder removed on drop.
+#[derive(Debug)]
+pub struct SynthScene {
+    /// The scene file.
+    pub path: PathBuf,
+    /// The defaults chosen, one sentence each.
+    pub defaults: Vec<String>,
+    dir: PathBuf,
+}
+
+impl Drop for SynthScene {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.dir);
+    }
+}
+
+/// A string literal of the language holding `text`.
+fn literal(text: &str) -> String {
+    let mut out = String::from("\"");
+    for c in text.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            '\n' => out.push_str("\\n"),
+            '\t' => out.push_str("\\t"),
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
+
+/// `vec3f(x, y, z)` with enough digits to round-trip.
+fn vec3(v: glam::Vec3) -> String {
+    format!("vec3f({:?}, {:?}, {:?})", v.x, v.y, v.z)
+}
+
+/// The scene text for `model` (a file read as `data`) and the defaults it chose.
+pub fn scene_text(model: &str, data: &ModelScene) -> (String, Vec<String>) {
+    let mut defaults = Vec::new();
+    let mut imports = vec!["std/miss/gradient.rt"];
+    let mut entries = vec![
+        format!(
+            "    settings {{ width: {}, height: {}, samples: {} }}",
+            DEFAULT_SIZE[0], DEFAULT_SIZE[1], DEFAULT_SAMPLES
+        ),
+        "    background SkyGradient {}".to_owned(),
+    ];
+    defaults.push("background: a sky gradient (SkyGradient)".to_owned());
+
+    let has_camera = data
+        .cameras
+        .iter()
+        .any(|c| matches!(c.projection, Projection::Perspective { .. }));
+    let bounds = data.bounds();
+    let (center, radius) = if bounds.is_empty() {
+        (glam::Vec3::ZERO, 1.0)
+    } else {
+        let r = bounds.size().length() * 0.5;
+        (bounds.center(), if r > 0.0 { r } else { 1.0 })
+    };
+    let elevation = ELEVATION_DEG.to_radians();
+    let toward_camera = glam::Vec3::new(0.0, elevation.sin(), elevation.cos());
+    if has_camera {
+        defaults.push("camera: the file's first perspective camera".to_owned());
+    } else {
+        imports.push("std/cameras/pinhole.rt");
+        let distance = radius / (FRAME_FILL * (FOV_DEG.to_radians() * 0.5).tan());
+        let position = center + toward_camera * distance;
+        entries.push(format!(
+            "    camera Pinhole {{ position: {}, look_at: {}, fov: {FOV_DEG:?} }}",
+            vec3(position),
+            vec3(center)
+        ));
+        defaults.push(if bounds.is_empty() {
+            format!(
+                "camera: the file has none and no geometry; a Pinhole at {} looking at the origin",
+                fmt3(position)
+            )
+        } else {
+            format!(
+                "camera: the file has none; a Pinhole framing the model's bounds (centre {}, \
+                 radius {radius:.3}) from {} with a {FOV_DEG}° field of view",
+                fmt3(center),
+                fmt3(position)
+            )
+        });
+    }
+    if data.lights.is_empty() {
+        imports.push("std/lights/directional.rt");
+        // From above, behind the viewer's left shoulder.
+        let from = glam::Vec3::new(-0.5, 1.0, 0.6).normalize();
+        entries.push(format!(
+            "    light key DirectionalLight {{ direction: {}, intensity: {:?} }}",
+            vec3(-from),
+            std::f32::consts::PI
+        ));
+        defaults.push(format!(
+            "light: the file has none; a DirectionalLight shining along {} (intensity π)",
+            fmt3(-from)
+        ));
+    } else {
+        defaults.push(format!(
+            "lights: the file's {} KHR_lights_punctual light(s)",
+            data.lights.len()
+        ));
+    }
+    entries.push(format!("    model {} {{}}", literal(model)));
+
+    let mut text = format!("// Written by `rtc render` for {}.\n", literal(model));
+    for i in imports {
+        text.push_str(&format!("import \"{i}\";\n"));
+    }
+    text.push_str("\nscene model {\n");
+    for e in entries {
+        text.push_str(&e);
+        text.push('\n');
+    }
+    text.push_str("}\n");
+    (text, defaults)
+}
+
+fn fmt3(v: glam::Vec3) -> String {
+    format!("({:.3}, {:.3}, {:.3})", v.x, v.y, v.z)
+}
+
+/// Reads the model at `path` and writes a scene for it into a fresh temporary folder.
+pub fn synthesize(path: &Path) -> Result<SynthScene, ModelError> {
+    let data = load_gltf(path)?;
+    let absolute = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+    let model = absolute
+        .to_str()
+        .ok_or_else(|| ModelError::Path(absolute.clone()))?;
+    let (text, defaults) = scene_text(model, &data);
+    let dir = unique_dir();
+    let scene = dir.join("scene.rt");
+    let written = std::fs::create_dir_all(&dir).and_then(|()| std::fs::write(&scene, &text));
+    let synth = SynthScene {
+        path: scene,
+        defaults,
+        dir,
+    };
+    match written {
+        Ok(()) => Ok(synth),
+        Err(source) => Err(ModelError::Write {
+            path: synth.path.clone(),
+            source,
+        }),
+    }
+}
+
+/// A temporary folder name no other `rtc render` of this process or another uses.
+fn unique_dir() -> PathBuf {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    static NEXT: AtomicUsize = AtomicUsize::new(0);
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.subsec_nanos());
+    std::env::temp_dir().join(format!(
+        "rtc-model-{}-{nanos}-{}",
+        std::process::id(),
+        NEXT.fetch_add(1, Ordering::Relaxed)
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn gltf_extensions_are_recognised_case_insensitively() {
+        assert!(is_model(Path::new("a.glb")));
+        assert!(is_model(Path::new("dir/a.GLTF")));
+        assert!(!is_model(Path::new("a.rt")));
+        assert!(!is_model(Path::new("glb")));
+    }
+
+    #[test]
+    fn paths_are_escaped_in_the_scene_string() {
+        assert_eq!(literal(r#"a"b\c"#), r#""a\"b\\c""#);
+    }
+
+    #[test]
+    fn an_empty_model_gets_every_default() {
+        let (text, defaults) = scene_text("/m.glb", &ModelScene::default());
+        assert!(text.contains("camera Pinhole"), "{text}");
+        assert!(text.contains("light key DirectionalLight"), "{text}");
+        assert!(text.contains("model \"/m.glb\" {}"), "{text}");
+        assert_eq!(defaults.len(), 3, "{defaults:?}");
+    }
+}

@@ -1,0 +1,817 @@
+//! `rtc view <scene.rt>`: a window showing the scene as it renders, refined progressively, with an
+//! orbit camera, reloading programs and scene on every save.
+//!
+//! How it works:
+//! - the scene is compiled and watched by the same [`Session`] as `rtc watch` (no code is written);
+//!   a save reloads it, prints what changed and each phase's time, and keeps the camera;
+//! - the image is rendered by the runtime on its compute device ([`Gpu`]), as `rtc render` does,
+//!   progressively: 1 sample per pixel, then 2, 4, … up to the scene's `samples` (or `--spp`), each
+//!   step a full render shown as soon as it is done; a camera move or a reload starts again at 1;
+//! - the window (winit) is drawn through a wgpu surface ([`present::Presenter`]): the last image is
+//!   uploaded to a texture and drawn over the whole window;
+//! - the camera: drag with the left button to orbit around the point looked at, with the right or
+//!   middle button to pan, scroll to zoom. It works on cameras with `position` and `look_at` fields
+//!   (the standard library's pinhole and thin-lens cameras); for others the window only shows;
+//! - the title shows the samples per pixel reached, the frame time (the last step's render) and the
+//!   primary rays per second.
+//!
+//! Without a display (neither `DISPLAY` nor `WAYLAND_DISPLAY` set, or one that cannot be opened) it
+//! says so and exits with code 1; a scene with errors exits with code 1 after its diagnostics; errors
+//! after the window opened are printed and the window stays (the last good image is kept).
+//!
+//! For tests: `--screenshot FILE` writes what the window shows after every new frame is drawn (read
+//! back from the window's surface, at the window's size; where the surface cannot be read, the image
+//! uploaded to it) and prints `[view] screenshot N …`; `--exit-after-frames N` closes the window
+//! after `N` frames. Escape, `q`, closing the window and Ctrl-C end it with code 0.
+
+mod present;
+
+use super::render::{output_format, write_image, Format, Size};
+use super::watch::{describe, update_dirs, Session, Status};
+use super::Context;
+use crate::exit::Exit;
+use crate::{report, term};
+use rtc_compiler::kernel::CompiledScene;
+use rtc_compiler::sema::hir::{ConstValue, Scalar};
+use rtc_runtime::gpu::{AdapterChoice, Gpu};
+use rtc_runtime::image_out::{srgb_to_linear, LinearImage};
+use rtc_runtime::render::{RenderOptions, Renderer};
+use std::collections::BTreeSet;
+use std::path::PathBuf;
+use std::str::FromStr;
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+use winit::application::ApplicationHandler;
+use winit::event::{ElementState, MouseButton, MouseScrollDelta, WindowEvent};
+use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
+use winit::keyboard::{Key, NamedKey};
+use winit::window::{Window, WindowId};
+
+/// Arguments of `rtc view`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The scene file (its imports and assets are watched and reloaded).
+    #[arg(value_name = "SCENE.rt")]
+    pub path: PathBuf,
+    /// Image size instead of the scene's `width` and `height`, as `WIDTHxHEIGHT`.
+    #[arg(long, value_name = "WxH")]
+    pub size: Option<Size>,
+    /// Samples per pixel to refine to, instead of the scene's `samples`.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    pub spp: Option<u32>,
+    /// Which scene, when the file declares several.
+    #[arg(long, value_name = "NAME")]
+    pub scene: Option<String>,
+    /// The GPU that renders (as for `rtc render`).
+    #[arg(long, value_name = "CHOICE", default_value = "auto")]
+    pub adapter: String,
+    /// Write the image shown to this `.png` or `.exr` after every frame (for tests).
+    #[arg(long, value_name = "FILE", hide = true)]
+    pub screenshot: Option<PathBuf>,
+    /// Close the window after this many frames (for tests).
+    #[arg(long, value_name = "N", hide = true)]
+    pub exit_after_frames: Option<u32>,
+}
+
+/// What the file watcher and the Ctrl-C handler send to the event loop.
+#[derive(Debug)]
+enum UserEvent {
+    Files(Vec<PathBuf>),
+    Stop,
+}
+
+/// An orbit camera: `position` and `look_at`, as the scene's camera fields.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Orbit {
+    position: [f32; 3],
+    look_at: [f32; 3],
+}
+
+fn sub(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn add(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+
+fn scale(a: [f32; 3], s: f32) -> [f32; 3] {
+    [a[0] * s, a[1] * s, a[2] * s]
+}
+
+fn length(a: [f32; 3]) -> f32 {
+    (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt()
+}
+
+fn normalize(a: [f32; 3]) -> [f32; 3] {
+    let l = length(a);
+    if l > 0.0 {
+        scale(a, 1.0 / l)
+    } else {
+        a
+    }
+}
+
+fn cross(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+impl Orbit {
+    /// Turns around `look_at`: `yaw` about the world's y axis, `pitch` up and down (kept off the
+    /// poles), in radians.
+    fn orbit(&mut self, yaw: f32, pitch: f32) {
+        let d = sub(self.position, self.look_at);
+        let r = length(d).max(1e-4);
+        let mut theta = d[2].atan2(d[0]) + yaw;
+        let mut phi = (d[1] / r).clamp(-1.0, 1.0).asin() + pitch;
+        phi = phi.clamp(-1.5, 1.5);
+        if !theta.is_finite() {
+            theta = 0.0;
+        }
+        self.position = add(
+            self.look_at,
+            [
+                r * phi.cos() * theta.cos(),
+                r * phi.sin(),
+                r * phi.cos() * theta.sin(),
+            ],
+        );
+    }
+
+    /// Moves both points across the view: `dx`, `dy` in units of the distance to `look_at`.
+    fn pan(&mut self, dx: f32, dy: f32) {
+        let d = sub(self.look_at, self.position);
+        let r = length(d);
+        let forward = normalize(d);
+        let right = normalize(cross(forward, [0.0, 1.0, 0.0]));
+        let up = cross(right, forward);
+        let shift = add(scale(right, -dx * r), scale(up, dy * r));
+        self.position = add(self.position, shift);
+        self.look_at = add(self.look_at, shift);
+    }
+
+    /// Moves towards `look_at` by `factor` of the distance (below 1 zooms in).
+    fn zoom(&mut self, factor: f32) {
+        let d = sub(self.position, self.look_at);
+        let r = length(d);
+        let target = (r * factor).clamp(1e-3, 1e6);
+        self.position = add(self.look_at, scale(normalize(d), target));
+    }
+}
+
+/// The indices of the `position` and `look_at` fields of the scene's camera, if it has both.
+fn camera_fields(compiled: &CompiledScene) -> Option<(usize, usize)> {
+    let program = compiled.checked.program.as_ref()?;
+    let camera = program.scenes[compiled.scene].camera.as_ref()?;
+    let s = &program.structs[camera.struct_id];
+    Some((s.field_index("position")?, s.field_index("look_at")?))
+}
+
+fn vec3(v: &ConstValue) -> Option<[f32; 3]> {
+    match v {
+        ConstValue::Vector { len: 3, comps } => {
+            let mut out = [0.0; 3];
+            for (o, c) in out.iter_mut().zip(comps) {
+                *o = match c {
+                    Scalar::F32(x) => *x,
+                    _ => return None,
+                };
+            }
+            Some(out)
+        }
+        _ => None,
+    }
+}
+
+fn const_vec3(v: [f32; 3]) -> ConstValue {
+    ConstValue::Vector {
+        len: 3,
+        comps: [
+            Scalar::F32(v[0]),
+            Scalar::F32(v[1]),
+            Scalar::F32(v[2]),
+            Scalar::F32(0.0),
+        ],
+    }
+}
+
+/// The scene's camera as an orbit, if it has `position` and `look_at`.
+fn read_orbit(compiled: &CompiledScene) -> Option<Orbit> {
+    let (p, l) = camera_fields(compiled)?;
+    let program = compiled.checked.program.as_ref()?;
+    let camera = program.scenes[compiled.scene].camera.as_ref()?;
+    Some(Orbit {
+        position: vec3(camera.fields.get(p)?)?,
+        look_at: vec3(camera.fields.get(l)?)?,
+    })
+}
+
+/// Puts `orbit` into the compiled scene's camera (what the runtime reads to build the frame).
+fn write_orbit(compiled: &mut CompiledScene, orbit: Orbit) {
+    let Some((p, l)) = camera_fields(compiled) else {
+        return;
+    };
+    let scene = compiled.scene;
+    let Some(program) = compiled.checked.program.as_mut() else {
+        return;
+    };
+    if let Some(camera) = program.scenes[scene].camera.as_mut() {
+        if let Some(f) = camera.fields.get_mut(p) {
+            *f = const_vec3(orbit.position);
+        }
+        if let Some(f) = camera.fields.get_mut(l) {
+            *f = const_vec3(orbit.look_at);
+        }
+    }
+}
+
+/// The camera after a reload: the user's while they moved it (and the new scene still has an orbit
+/// camera), else the one in the file.
+fn camera_after_reload(
+    moved: bool,
+    user: Option<Orbit>,
+    from_file: Option<Orbit>,
+) -> Option<Orbit> {
+    match (moved, user, from_file) {
+        (true, Some(user), Some(_)) => Some(user),
+        _ => from_file,
+    }
+}
+
+/// Which mouse button drags, and how.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Drag {
+    Orbit,
+    Pan,
+}
+
+struct App<'a> {
+    args: &'a Args,
+    ctx: &'a Context,
+    session: Session,
+    gpu: Gpu,
+    watcher: Option<notify::RecommendedWatcher>,
+    dirs: BTreeSet<PathBuf>,
+    window: Option<Arc<Window>>,
+    presenter: Option<present::Presenter>,
+    /// The image shown.
+    image: Option<LinearImage>,
+    /// Samples per pixel of the next step; `None`: refined as far as asked, nothing to do.
+    next_spp: Option<u32>,
+    /// Samples per pixel to refine to.
+    target_spp: u32,
+    orbit: Option<Orbit>,
+    /// Whether the user moved the camera (then a reload keeps it; else the file's camera is used).
+    moved: bool,
+    drag: Option<Drag>,
+    cursor: Option<(f64, f64)>,
+    pending: Vec<PathBuf>,
+    last_event: Instant,
+    frames: u32,
+    /// Whether the last frame rendered was not drawn into the window yet.
+    undrawn: bool,
+    status: String,
+    exit: Exit,
+}
+
+const DEBOUNCE: Duration = Duration::from_millis(15);
+
+impl App<'_> {
+    fn fail(&mut self, event_loop: &ActiveEventLoop, message: &str) {
+        term::eprint(&format!(
+            "{}: {message}\n",
+            term::paint("error", 31, self.ctx.color)
+        ));
+        self.exit = Exit::Failure;
+        event_loop.exit();
+    }
+
+    /// Starts refining again from 1 sample per pixel.
+    fn restart(&mut self) {
+        self.next_spp = Some(1);
+    }
+
+    /// The scene's own sample count (or `--spp`).
+    fn wanted_spp(&self) -> u32 {
+        self.args.spp.unwrap_or_else(|| {
+            self.session
+                .last()
+                .and_then(|c| {
+                    let p = c.checked.program.as_ref()?;
+                    Some(p.scenes[c.scene].settings.samples)
+                })
+                .unwrap_or(1)
+                .max(1)
+        })
+    }
+
+    /// Reloads after file events; keeps the camera the user set.
+    fn reload(&mut self) {
+        let paths = std::mem::take(&mut self.pending);
+        let reload = self.session.reload(&paths);
+        term::eprint(&reload.messages);
+        if reload.status == Status::Unchanged {
+            return;
+        }
+        term::print(&describe(&reload, self.ctx.color));
+        if let Some(w) = self.watcher.as_mut() {
+            update_dirs(w, &mut self.dirs, &self.session, self.ctx);
+        }
+        if matches!(reload.status, Status::Built | Status::Rerendered) {
+            let from_file = self.session.last().and_then(read_orbit);
+            self.orbit = camera_after_reload(self.moved, self.orbit, from_file);
+            self.target_spp = self.wanted_spp();
+            self.restart();
+        }
+    }
+
+    /// Renders the next refinement step and shows it.
+    fn step(&mut self, event_loop: &ActiveEventLoop) {
+        let Some(spp) = self.next_spp else { return };
+        let orbit = self.orbit;
+        let Some(compiled) = self.session.last_mut() else {
+            self.next_spp = None;
+            return;
+        };
+        if let Some(orbit) = orbit {
+            write_orbit(compiled, orbit);
+        }
+        let options = RenderOptions {
+            size: self.args.size.map(|s| [s.width, s.height]),
+            samples: Some(spp),
+            ..RenderOptions::default()
+        };
+        let t = Instant::now();
+        let result =
+            Renderer::new(&self.gpu, compiled, options).and_then(|mut r| r.render(&mut |_, _| {}));
+        let frame_ms = t.elapsed().as_secs_f64() * 1e3;
+        let result = match result {
+            Ok(r) => r,
+            Err(e) => {
+                term::eprint(&format!(
+                    "{}: {e}\n",
+                    term::paint("error", 31, self.ctx.color)
+                ));
+                self.next_spp = None;
+                return;
+            }
+        };
+        self.next_spp = (spp < self.target_spp).then(|| (spp * 2).min(self.target_spp));
+        self.frames += 1;
+        self.status = format!(
+            "{} spp, frame {frame_ms:.0} ms, {:.2} M rays/s",
+            result.stats.samples,
+            result.stats.rays_per_second / 1e6
+        );
+        if let (Some(p), Some(w)) = (&mut self.presenter, &self.window) {
+            if let Err(e) = p.upload(&result.image) {
+                term::eprint(&format!(
+                    "{}: cannot show the image: {e}\n",
+                    term::paint("error", 31, self.ctx.color)
+                ));
+            }
+            w.set_title(&format!(
+                "rtc view: {} ({})",
+                self.args.path.display(),
+                self.status
+            ));
+            w.request_redraw();
+        }
+        term::print(&format!("[view] frame {}: {}\n", self.frames, self.status));
+        self.image = Some(result.image);
+        self.undrawn = true;
+        if self.window.is_none() {
+            self.after_draw(event_loop, None);
+        }
+    }
+
+    /// After a new frame was drawn: the screenshot, and the end after `--exit-after-frames`.
+    fn after_draw(&mut self, event_loop: &ActiveEventLoop, capture: Option<present::Capture>) {
+        self.undrawn = false;
+        if let Some(path) = &self.args.screenshot {
+            let format = output_format(path).unwrap_or(Format::Png);
+            // What the window shows, read back from its surface; else the image uploaded to it.
+            let captured = capture.and_then(|c| {
+                let pixels = c
+                    .rgba
+                    .chunks_exact(4)
+                    .map(|p| {
+                        let f = |b: u8| srgb_to_linear(f32::from(b) / 255.0);
+                        [f(p[0]), f(p[1]), f(p[2]), 1.0]
+                    })
+                    .collect();
+                LinearImage::new(c.width, c.height, pixels).ok()
+            });
+            let (image, what) = match (&captured, &self.image) {
+                (Some(c), _) => (Some(c), "the window"),
+                (None, image) => (image.as_ref(), "the image shown"),
+            };
+            if let Some(image) = image {
+                match write_image(path, format, image) {
+                    Ok(_) => term::print(&format!(
+                        "[view] screenshot {} of {what}: {}\n",
+                        self.frames, self.status
+                    )),
+                    Err(e) => term::eprint(&format!(
+                        "{}: screenshot: {e}\n",
+                        term::paint("error", 31, self.ctx.color)
+                    )),
+                }
+            }
+        }
+        if self
+            .args
+            .exit_after_frames
+            .is_some_and(|n| self.frames >= n)
+        {
+            event_loop.exit();
+        }
+    }
+}
+
+impl ApplicationHandler<UserEvent> for App<'_> {
+    fn resumed(&mut self, event_loop: &ActiveEventLoop) {
+        if self.window.is_some() {
+            return;
+        }
+        let [w, h] = match (self.args.size, self.session.last()) {
+            (Some(s), _) => [s.width, s.height],
+            (None, Some(c)) => c
+                .checked
+                .program
+                .as_ref()
+                .map(|p| {
+                    let s = &p.scenes[c.scene].settings;
+                    [s.width, s.height]
+                })
+                .unwrap_or([512, 512]),
+            (None, None) => [512, 512],
+        };
+        let attributes = Window::default_attributes()
+            .with_title(format!("rtc view: {}", self.args.path.display()))
+            .with_inner_size(winit::dpi::PhysicalSize::new(w.max(1), h.max(1)));
+        let window = match event_loop.create_window(attributes) {
+            Ok(w) => Arc::new(w),
+            Err(e) => return self.fail(event_loop, &format!("cannot open a window: {e}")),
+        };
+        match present::Presenter::new(Arc::clone(&window), self.args.screenshot.is_some()) {
+            Ok(p) => self.presenter = Some(p),
+            Err(e) => return self.fail(event_loop, &format!("cannot draw into the window: {e}")),
+        }
+        self.window = Some(window);
+        self.restart();
+    }
+
+    fn user_event(&mut self, event_loop: &ActiveEventLoop, event: UserEvent) {
+        match event {
+            UserEvent::Stop => event_loop.exit(),
+            UserEvent::Files(paths) => {
+                for p in paths {
+                    if self.session.is_relevant(&p) && !self.pending.contains(&p) {
+                        self.pending.push(p);
+                        self.last_event = Instant::now();
+                    }
+                }
+            }
+        }
+    }
+
+    fn window_event(&mut self, event_loop: &ActiveEventLoop, _id: WindowId, event: WindowEvent) {
+        match event {
+            WindowEvent::CloseRequested => event_loop.exit(),
+            WindowEvent::Resized(size) => {
+                if let Some(p) = &mut self.presenter {
+                    p.resize(size.width, size.height);
+                }
+            }
+            WindowEvent::RedrawRequested => {
+                let drawn = match &mut self.presenter {
+                    Some(p) => p.draw(),
+                    None => Ok(None),
+                };
+                match drawn {
+                    Ok(capture) if self.undrawn => self.after_draw(event_loop, capture),
+                    Ok(_) => {}
+                    Err(e) => term::eprint(&format!(
+                        "{}: cannot draw the window: {e}\n",
+                        term::paint("warning", 33, self.ctx.color)
+                    )),
+                }
+            }
+            WindowEvent::KeyboardInput { event, .. } if event.state == ElementState::Pressed => {
+                match event.logical_key {
+                    Key::Named(NamedKey::Escape) => event_loop.exit(),
+                    Key::Character(c) if c.as_str() == "q" => event_loop.exit(),
+                    _ => {}
+                }
+            }
+            WindowEvent::MouseInput { state, button, .. } => {
+                self.drag = match (state, button) {
+                    (ElementState::Pressed, MouseButton::Left) => Some(Drag::Orbit),
+                    (ElementState::Pressed, MouseButton::Right | MouseButton::Middle) => {
+                        Some(Drag::Pan)
+                    }
+                    _ => None,
+                };
+            }
+            WindowEvent::CursorMoved { position, .. } => {
+                let now = (position.x, position.y);
+                if let (Some(drag), Some(before), Some(orbit)) =
+                    (self.drag, self.cursor, self.orbit.as_mut())
+                {
+                    let dx = (now.0 - before.0) as f32;
+                    let dy = (now.1 - before.1) as f32;
+                    match drag {
+                        Drag::Orbit => orbit.orbit(dx * 0.01, dy * 0.01),
+                        Drag::Pan => orbit.pan(dx * 0.002, dy * 0.002),
+                    }
+                    self.moved = true;
+                    self.restart();
+                }
+                self.cursor = Some(now);
+            }
+            WindowEvent::MouseWheel { delta, .. } => {
+                let lines = match delta {
+                    MouseScrollDelta::LineDelta(_, y) => y,
+                    MouseScrollDelta::PixelDelta(p) => p.y as f32 / 40.0,
+                };
+                if let Some(orbit) = self.orbit.as_mut() {
+                    orbit.zoom(0.9f32.powf(lines));
+                    self.moved = true;
+                    self.restart();
+                }
+            }
+            _ => {}
+        }
+    }
+
+    fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
+        if !self.pending.is_empty() {
+            let quiet_at = self.last_event + DEBOUNCE;
+            if Instant::now() >= quiet_at {
+                self.reload();
+            } else {
+                event_loop.set_control_flow(ControlFlow::WaitUntil(quiet_at));
+                return;
+            }
+        }
+        if self.window.is_some() && self.next_spp.is_some() {
+            self.step(event_loop);
+        }
+        event_loop.set_control_flow(if self.next_spp.is_some() {
+            ControlFlow::Poll
+        } else {
+            ControlFlow::Wait
+        });
+    }
+}
+
+/// Whether this process can hope to open a window, and if not, why.
+fn display_missing() -> Option<&'static str> {
+    if cfg!(any(
+        target_os = "linux",
+        target_os = "freebsd",
+        target_os = "openbsd"
+    )) {
+        let set = |v: &str| std::env::var_os(v).is_some_and(|x| !x.is_empty());
+        if !set("DISPLAY") && !set("WAYLAND_DISPLAY") {
+            return Some("neither DISPLAY nor WAYLAND_DISPLAY is set");
+        }
+    }
+    None
+}
+
+fn no_display(reason: &str, ctx: &Context) -> Exit {
+    term::eprint(&format!(
+        "{}: `rtc view` needs a display, and there is none: {reason}\n\
+         help: run it in a desktop session, or under a virtual display (`xvfb-run rtc view …`); \
+         `rtc watch SCENE -o preview.png` renders previews on every save without a window\n",
+        term::paint("error", 31, ctx.color)
+    ));
+    Exit::Failure
+}
+
+/// The event loop, allowed off the main thread (`rtc` runs its commands on a worker thread).
+fn event_loop() -> Result<EventLoop<UserEvent>, winit::error::EventLoopError> {
+    let mut builder = EventLoop::<UserEvent>::with_user_event();
+    #[cfg(any(target_os = "linux", target_os = "freebsd", target_os = "openbsd"))]
+    {
+        use winit::platform::wayland::EventLoopBuilderExtWayland;
+        use winit::platform::x11::EventLoopBuilderExtX11;
+        EventLoopBuilderExtX11::with_any_thread(&mut builder, true);
+        EventLoopBuilderExtWayland::with_any_thread(&mut builder, true);
+    }
+    builder.build()
+}
+
+/// Runs `rtc view`.
+pub fn run(args: &Args, ctx: &Context) -> Exit {
+    if let Some(path) = &args.screenshot {
+        if output_format(path).is_none() {
+            return report::usage_error(
+                &format!(
+                    "cannot write `{}`: the screenshot must end in `.png` or `.exr`",
+                    path.display()
+                ),
+                ctx.color,
+            );
+        }
+    }
+    let choice = match AdapterChoice::from_str(&args.adapter) {
+        Ok(c) => c,
+        Err(e) => return report::usage_error(&e.to_string(), ctx.color),
+    };
+    if !args.path.is_file() {
+        return report::usage_error(
+            &format!("cannot read `{}`: no such file", args.path.display()),
+            ctx.color,
+        );
+    }
+    if let Some(reason) = display_missing() {
+        return no_display(reason, ctx);
+    }
+    let mut session = Session::new(
+        &args.path,
+        args.scene.clone(),
+        &ctx.options,
+        Vec::new(),
+        None,
+        None,
+        ctx.color,
+    );
+    let first = session.reload(&[]);
+    term::eprint(&first.messages);
+    if first.status != Status::Built {
+        return Exit::Failure;
+    }
+    term::print(&describe(&first, ctx.color));
+
+    let event_loop = match event_loop() {
+        Ok(l) => l,
+        Err(e) => return no_display(&e.to_string(), ctx),
+    };
+    let gpu = match Gpu::new(&choice) {
+        Ok(g) => g,
+        Err(e) => {
+            term::eprint(&format!("{}: {e}\n", term::paint("error", 31, ctx.color)));
+            return Exit::Failure;
+        }
+    };
+    term::print(&format!("adapter: {}\n", gpu.description()));
+
+    let proxy = event_loop.create_proxy();
+    let stop = proxy.clone();
+    if let Err(e) = ctrlc::set_handler(move || {
+        let _ = stop.send_event(UserEvent::Stop);
+    }) {
+        term::eprint(&format!(
+            "{}: cannot catch Ctrl-C: {e}\n",
+            term::paint("warning", 33, ctx.color)
+        ));
+    }
+    let files = proxy.clone();
+    let watcher = notify::recommended_watcher(move |res: notify::Result<notify::Event>| {
+        if let Ok(event) = res {
+            if !matches!(event.kind, notify::EventKind::Access(_)) {
+                let _ = files.send_event(UserEvent::Files(event.paths));
+            }
+        }
+    });
+    let watcher = match watcher {
+        Ok(w) => Some(w),
+        Err(e) => {
+            term::eprint(&format!(
+                "{}: cannot watch files, no hot reload: {e}\n",
+                term::paint("warning", 33, ctx.color)
+            ));
+            None
+        }
+    };
+    let orbit = session.last().and_then(read_orbit);
+    let mut app = App {
+        args,
+        ctx,
+        target_spp: 1,
+        session,
+        gpu,
+        watcher,
+        dirs: BTreeSet::new(),
+        window: None,
+        presenter: None,
+        image: None,
+        next_spp: None,
+        orbit,
+        moved: false,
+        drag: None,
+        cursor: None,
+        pending: Vec::new(),
+        last_event: Instant::now(),
+        frames: 0,
+        undrawn: false,
+        status: String::new(),
+        exit: Exit::Success,
+    };
+    app.target_spp = app.wanted_spp();
+    if let Some(w) = app.watcher.as_mut() {
+        update_dirs(w, &mut app.dirs, &app.session, ctx);
+    }
+    if orbit.is_none() {
+        term::print(
+            "[view] this camera has no `position` and `look_at`: the mouse does not move it\n",
+        );
+    }
+    if let Err(e) = event_loop.run_app(&mut app) {
+        term::eprint(&format!(
+            "{}: the window's event loop failed: {e}\n",
+            term::paint("error", 31, ctx.color)
+        ));
+        return Exit::Failure;
+    }
+    term::print("[view] closed\n");
+    app.exit
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rtc_compiler::driver::Options;
+    use rtc_compiler::kernel::compile_scene;
+    use rtc_compiler::link::LinkOptions;
+
+    fn close(a: [f32; 3], b: [f32; 3]) -> bool {
+        length(sub(a, b)) < 1e-4
+    }
+
+    #[test]
+    fn orbit_keeps_the_distance_pan_moves_both_zoom_scales() {
+        let start = Orbit {
+            position: [0.0, 1.0, 5.0],
+            look_at: [0.0, 1.0, 0.0],
+        };
+        let mut o = start;
+        o.orbit(0.7, 0.3);
+        assert!((length(sub(o.position, o.look_at)) - 5.0).abs() < 1e-4);
+        assert!(!close(o.position, start.position));
+        assert!(close(o.look_at, start.look_at));
+        // Far past the pole it stops short of it (the view never flips).
+        o.orbit(0.0, 10.0);
+        let d = normalize(sub(o.position, o.look_at));
+        assert!(d[1] < 0.9999 && d[1] > 0.99, "pitch clamped: {d:?}");
+
+        let mut p = start;
+        p.pan(0.1, 0.0);
+        let moved = sub(p.position, start.position);
+        assert!(close(moved, sub(p.look_at, start.look_at)));
+        assert!((length(moved) - 0.5).abs() < 1e-4, "0.1 of the distance 5");
+
+        let mut z = start;
+        z.zoom(0.5);
+        assert!(close(z.position, [0.0, 1.0, 2.5]));
+    }
+
+    #[test]
+    fn a_reload_keeps_a_moved_camera_and_follows_the_file_otherwise() {
+        let user = Orbit {
+            position: [1.0, 2.0, 3.0],
+            look_at: [0.0; 3],
+        };
+        let file = Orbit {
+            position: [0.0, 0.0, 9.0],
+            look_at: [0.0; 3],
+        };
+        assert_eq!(
+            camera_after_reload(true, Some(user), Some(file)),
+            Some(user)
+        );
+        assert_eq!(
+            camera_after_reload(false, Some(user), Some(file)),
+            Some(file)
+        );
+        // A camera without `position`/`look_at` now: nothing to keep.
+        assert_eq!(camera_after_reload(true, Some(user), None), None);
+    }
+
+    #[test]
+    fn the_camera_round_trips_through_the_compiled_scene() {
+        let path =
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/hello/scene.rt");
+        let Ok(mut compiled) =
+            compile_scene(&[path], None, &Options::default(), &LinkOptions::default())
+        else {
+            panic!("examples/hello compiles");
+        };
+        let orbit = read_orbit(&compiled).expect("a pinhole camera");
+        assert!(close(orbit.position, [0.0, 1.5, 5.0]));
+        assert!(close(orbit.look_at, [0.0, 0.5, 0.0]));
+        let moved = Orbit {
+            position: [1.0, 2.0, 3.0],
+            look_at: [0.5, 0.5, 0.5],
+        };
+        write_orbit(&mut compiled, moved);
+        assert_eq!(read_orbit(&compiled), Some(moved));
+    }
+}

@@ -1,0 +1,221 @@
+//! Tests of the watch [`Session`] in process, without file events: the soak tests drive the part of
+//! `rtc watch` that runs per edit ([`Session::reload`]) many times over, alternating valid and
+//! invalid edits, and check that every reload ends as it should and that memory does not grow.
+
+use super::{Preview, Session, Status};
+use crate::cmd::render::Format;
+use rtc_compiler::back::Target;
+use rtc_compiler::driver::Options;
+use rtc_runtime::gpu::{AdapterChoice, Gpu};
+use std::path::{Path, PathBuf};
+
+/// Most the resident set may grow over a soak, after the warm-up.
+const MAX_GROWTH_BYTES: u64 = 10 << 20;
+
+/// The soak tests measure the resident set of the whole process: they run one at a time.
+static SERIAL: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+fn scene(fov: &str) -> String {
+    format!(
+        r#"import "std/cameras/pinhole.rt";
+import "std/materials/lambert.rt";
+import "std/lights/point.rt";
+import "std/miss/gradient.rt";
+
+scene soak {{
+    settings {{ width: 32, height: 32, samples: 1, max_depth: 2 }}
+    camera Pinhole {{ position: vec3f(0.0, 1.5, 5.0), look_at: vec3f(0.0, 0.5, 0.0), fov: {fov} }}
+    background SkyGradient {{}}
+    object floor {{ geometry: quad_mesh(), material: Lambert {{ albedo: vec3f(0.5) }}, transform: scale(10.0) }}
+    object ball {{ geometry: sphere_mesh(1u), material: Lambert {{ albedo: vec3f(0.8, 0.2, 0.2) }} }}
+    light key PointLight {{ position: vec3f(2.0, 4.0, 3.0), color: vec3f(1.0), intensity: 30.0 }}
+}}
+"#
+    )
+}
+
+/// The resident set of this process in bytes (`/proc/self/statm`, pages of 4 KiB), or `None`
+/// where there is no such file.
+fn resident_bytes() -> Option<u64> {
+    let statm = std::fs::read_to_string("/proc/self/statm").ok()?;
+    let pages: u64 = statm.split_whitespace().nth(1)?.parse().ok()?;
+    Some(pages * 4096)
+}
+
+fn temp_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("rtc-soak-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    dir
+}
+
+/// Runs `cycles` edits on `file`, even ones valid (a new field of view each time, so the content
+/// always changes) and odd ones invalid; checks each reload's outcome. Returns the resident-set
+/// growth from after `warmup` cycles to the end.
+fn soak(session: &mut Session, file: &Path, cycles: u32, warmup: u32) -> Option<i64> {
+    let mut base = None;
+    for i in 0..cycles {
+        if i == warmup {
+            base = resident_bytes();
+        }
+        let valid = i % 2 == 0;
+        let fov = format!("{}.5", 30 + i % 40);
+        let text = if valid {
+            scene(&fov)
+        } else {
+            scene(&format!("{fov} +"))
+        };
+        std::fs::write(file, text).expect("write");
+        let r = session.reload(&[file.to_path_buf()]);
+        let want = if valid { Status::Built } else { Status::Failed };
+        assert_eq!(r.status, want, "cycle {i}: {}", r.messages);
+        if !valid {
+            assert!(
+                r.messages.contains("error[E0201]"),
+                "cycle {i}: {}",
+                r.messages
+            );
+        }
+    }
+    let end = resident_bytes()?;
+    Some(end as i64 - base? as i64)
+}
+
+#[test]
+fn soak_1000_edits_alternating_valid_and_invalid() {
+    let _serial = SERIAL
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    let dir = temp_dir("code");
+    let file = dir.join("scene.rt");
+    std::fs::write(&file, scene("40.0")).expect("write");
+    let mut session = Session::new(
+        &file,
+        None,
+        &Options::default(),
+        Target::ALL.to_vec(),
+        Some(dir.join("out")),
+        None,
+        false,
+    );
+    assert_eq!(session.reload(&[]).status, Status::Built);
+    let growth = soak(&mut session, &file, 1000, 100);
+    eprintln!("resident set growth over 900 edit cycles: {growth:?} bytes");
+    if let Some(growth) = growth {
+        assert!(
+            growth < MAX_GROWTH_BYTES as i64,
+            "the resident set grew by {growth} bytes"
+        );
+    }
+    assert!(dir.join("out").join("kernel.wgsl").is_file());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn soak_20_edits_with_previews() {
+    let _serial = SERIAL
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    if let Err(e) = Gpu::new(&AdapterChoice::default()) {
+        assert!(
+            std::env::var("CI").as_deref() != Ok("true"),
+            "CI needs a GPU adapter (lavapipe) for this test: {e}"
+        );
+        eprintln!("skipped: no GPU adapter here ({e})");
+        return;
+    }
+    let dir = temp_dir("preview");
+    let file = dir.join("scene.rt");
+    let image = dir.join("preview.png");
+    std::fs::write(&file, scene("40.0")).expect("write");
+    let mut session = Session::new(
+        &file,
+        None,
+        &Options::default(),
+        vec![Target::Wgsl],
+        Some(dir.join("out")),
+        Some(Preview {
+            path: image.clone(),
+            format: Format::Png,
+            size: Some([32, 32]),
+            samples: Some(1),
+            adapter: AdapterChoice::default(),
+        }),
+        false,
+    );
+    let first = session.reload(&[]);
+    assert_eq!(first.status, Status::Built, "{}", first.messages);
+    let before = std::fs::read(&image).expect("the first preview");
+    let growth = soak(&mut session, &file, 20, 4);
+    eprintln!("resident set growth over 16 edit cycles with previews: {growth:?} bytes");
+    if let Some(growth) = growth {
+        assert!(
+            growth < MAX_GROWTH_BYTES as i64,
+            "the resident set grew by {growth} bytes"
+        );
+    }
+    // The last valid edit set another field of view: the preview shows it.
+    let after = std::fs::read(&image).expect("the last preview");
+    assert_ne!(before, after, "the preview was not rendered again");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_touch_without_a_change_does_nothing() {
+    let dir = temp_dir("touch");
+    let file = dir.join("scene.rt");
+    std::fs::write(&file, scene("40.0")).expect("write");
+    let mut session = Session::new(
+        &file,
+        None,
+        &Options::default(),
+        vec![Target::Wgsl],
+        Some(dir.join("out")),
+        None,
+        false,
+    );
+    assert_eq!(session.reload(&[]).status, Status::Built);
+    std::fs::write(&file, scene("40.0")).expect("write");
+    let r = session.reload(std::slice::from_ref(&file));
+    assert_eq!(r.status, Status::Unchanged);
+    assert_eq!(r.number, 1, "an unchanged reload is not counted");
+    assert!(session.is_relevant(&file));
+    assert!(!session.is_relevant(&dir.join("other.rt")));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn assets_are_watched_and_an_asset_edit_skips_the_compile() {
+    let dir = temp_dir("asset");
+    let file = dir.join("scene.rt");
+    let mesh = dir.join("tri.obj");
+    std::fs::write(&mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").expect("write obj");
+    let text = scene("40.0").replace(
+        "geometry: sphere_mesh(1u)",
+        "geometry: load_mesh(\"tri.obj\")",
+    );
+    std::fs::write(&file, text).expect("write");
+    let mut session = Session::new(
+        &file,
+        None,
+        &Options::default(),
+        vec![Target::Wgsl],
+        Some(dir.join("out")),
+        None,
+        false,
+    );
+    let first = session.reload(&[]);
+    assert_eq!(first.status, Status::Built, "{}", first.messages);
+    let canon = mesh.canonicalize().expect("canonical");
+    assert!(
+        session.watched().any(|p| *p == canon),
+        "the mesh is watched"
+    );
+    assert!(session.is_relevant(&mesh));
+    std::fs::write(&mesh, "v 0 0 0\nv 2 0 0\nv 0 2 0\nf 1 2 3\n").expect("edit obj");
+    let r = session.reload(std::slice::from_ref(&mesh));
+    assert_eq!(r.status, Status::Rerendered, "{}", r.messages);
+    assert_eq!(r.changed, vec![canon]);
+    assert_eq!(r.parsed, (0, 0), "nothing was compiled");
+    let _ = std::fs::remove_dir_all(&dir);
+}

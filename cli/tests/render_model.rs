@@ -1,0 +1,200 @@
+//! End-to-end tests of `rtc render model.glb` on lavapipe (skipped, saying so, where no adapter
+//! exists): a bare glTF file (the example's model without its camera and lights) renders with the
+//! defaults it prints, the model in the middle of the image and the sky at the top; a file with a
+//! camera and lights keeps them; a truncated file and `--scene` are clear errors, never a panic.
+
+use rtc_runtime::image_out::read_image;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn rtc(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rtc"))
+        .args(args)
+        .env("XDG_RUNTIME_DIR", std::env::temp_dir())
+        .env("NO_COLOR", "1")
+        .output()
+        .expect("run rtc")
+}
+
+fn stdout(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+fn text(out: &Output) -> String {
+    format!("{}{}", stdout(out), String::from_utf8_lossy(&out.stderr))
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("rtc-model-test-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("create a scratch folder");
+    dir
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().expect("UTF-8 path")
+}
+
+fn no_gpu(out: &Output) -> bool {
+    let t = text(out);
+    let none = t.contains("no adapter matches");
+    if none {
+        eprintln!("no adapter here: skipped\n{t}");
+    }
+    none
+}
+
+/// The example's model.
+fn example_glb() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/gltf_scene/model.glb")
+}
+
+/// The JSON and binary chunks of a `.glb`.
+fn split(glb: &[u8]) -> (serde_json::Value, Vec<u8>) {
+    let len = u32::from_le_bytes(glb[12..16].try_into().unwrap()) as usize;
+    let json = serde_json::from_slice(&glb[20..20 + len]).expect("JSON chunk");
+    (json, glb[20 + len..].to_vec())
+}
+
+/// A `.glb` of a JSON document and the binary chunk(s) `rest` (already framed).
+fn join(doc: &serde_json::Value, rest: &[u8]) -> Vec<u8> {
+    let mut json = serde_json::to_vec(doc).unwrap();
+    while json.len() % 4 != 0 {
+        json.push(b' ');
+    }
+    let mut body = (json.len() as u32).to_le_bytes().to_vec();
+    body.extend_from_slice(b"JSON");
+    body.extend_from_slice(&json);
+    body.extend_from_slice(rest);
+    let mut out = b"glTF".to_vec();
+    out.extend_from_slice(&2u32.to_le_bytes());
+    out.extend_from_slice(&(12 + body.len() as u32).to_le_bytes());
+    out.extend_from_slice(&body);
+    out
+}
+
+/// The example's model with its camera and lights removed.
+fn bare_glb(dir: &Path) -> PathBuf {
+    let (mut doc, bin) = split(&std::fs::read(example_glb()).expect("the example's model"));
+    let root = doc.as_object_mut().unwrap();
+    root.remove("cameras");
+    root.remove("extensions");
+    root.remove("extensionsUsed");
+    for node in root["nodes"].as_array_mut().unwrap() {
+        let node = node.as_object_mut().unwrap();
+        node.remove("camera");
+        node.remove("extensions");
+    }
+    let path = dir.join("bare.glb");
+    std::fs::write(&path, join(&doc, &bin)).unwrap();
+    path
+}
+
+#[test]
+fn a_bare_glb_renders_with_the_defaults_it_prints() {
+    let dir = scratch("bare");
+    let model = bare_glb(&dir);
+    let png = dir.join("bare.png");
+    let out = rtc(&[
+        "render",
+        s(&model),
+        "-o",
+        s(&png),
+        "--size",
+        "64x48",
+        "--spp",
+        "1",
+    ]);
+    if no_gpu(&out) {
+        return;
+    }
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    let printed = stdout(&out);
+    for line in [
+        "default camera: the file has none; a Pinhole framing the model's bounds",
+        "default light: the file has none; a DirectionalLight",
+        "default background: a sky gradient",
+    ] {
+        assert!(printed.contains(line), "missing `{line}` in\n{printed}");
+    }
+    let image = read_image(&png).expect("the PNG");
+    assert_eq!((image.width(), image.height()), (64, 48));
+    // The framed model (grey floor, objects) fills the centre; the sky (blue-white, blue above red)
+    // the top row. The floor is neutral grey: its blue and red differ by less than 0.05.
+    let top = image.get(32, 0).unwrap();
+    let centre = image.get(32, 30).unwrap();
+    assert!(top[2] > top[0], "the sky is bluish: {top:?}");
+    assert!(
+        (centre[2] - centre[0]).abs() < 0.05 && centre[0] > 0.02,
+        "the lit grey floor is at the centre: {centre:?}"
+    );
+}
+
+#[test]
+fn a_glb_with_camera_and_lights_keeps_them() {
+    let dir = scratch("full");
+    let png = dir.join("full.png");
+    let model = example_glb();
+    let out = rtc(&[
+        "render",
+        s(&model),
+        "-o",
+        s(&png),
+        "--size",
+        "48x32",
+        "--spp",
+        "1",
+    ]);
+    if no_gpu(&out) {
+        return;
+    }
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    let printed = stdout(&out);
+    assert!(
+        printed.contains("default camera: the file's first perspective camera"),
+        "{printed}"
+    );
+    assert!(
+        printed.contains("default lights: the file's 2 KHR_lights_punctual light(s)"),
+        "{printed}"
+    );
+    assert!(
+        printed.contains("(6 meshes, 2896 triangles, 7 objects)"),
+        "{printed}"
+    );
+}
+
+#[test]
+fn broken_models_are_clear_errors() {
+    let dir = scratch("broken");
+    let glb = std::fs::read(example_glb()).unwrap();
+    let cut = dir.join("cut.glb");
+    std::fs::write(&cut, &glb[..glb.len() / 3]).unwrap();
+    let out = rtc(&["render", s(&cut), "-o", s(&dir.join("x.png"))]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    let t = text(&out);
+    assert!(
+        t.contains("cut.glb") && t.contains("bad .glb file") && t.contains("truncated"),
+        "{t}"
+    );
+
+    let missing = dir.join("nothing.gltf");
+    let out = rtc(&["render", s(&missing), "-o", s(&dir.join("x.png"))]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    assert!(
+        text(&out).contains("nothing.gltf: cannot read the file"),
+        "{}",
+        text(&out)
+    );
+
+    let out = rtc(&[
+        "render",
+        s(&example_glb()),
+        "-o",
+        s(&dir.join("x.png")),
+        "--scene",
+        "a",
+    ]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    assert!(text(&out).contains("--scene"), "{}", text(&out));
+}
