@@ -561,15 +561,29 @@ fn an_unchanged_kernel_is_reused_and_a_changed_one_is_not() {
     assert!(first.timings().shader_module_ms > 0.0 && first.timings().pipeline_ms > 0.0);
 
     let again = make(&first_text, &bindings);
-    assert_eq!(again.timings().shader_module_ms, 0.0, "{:?}", again.timings());
+    assert_eq!(
+        again.timings().shader_module_ms,
+        0.0,
+        "{:?}",
+        again.timings()
+    );
     assert_eq!(again.timings().pipeline_ms, 0.0, "{:?}", again.timings());
 
-    let changed = make(&ROUND_TRIP_WGSL.replace("0.5, 1.0", "0.125, 1.0"), &bindings);
-    assert!(changed.timings().pipeline_ms > 0.0, "a changed module must be compiled");
+    let changed = make(
+        &ROUND_TRIP_WGSL.replace("0.5, 1.0", "0.125, 1.0"),
+        &bindings,
+    );
+    assert!(
+        changed.timings().pipeline_ms > 0.0,
+        "a changed module must be compiled"
+    );
     let mut other_bindings = bindings.clone();
     other_bindings[1].min_size = 32;
     let rebound = make(&first_text, &other_bindings);
-    assert!(rebound.timings().pipeline_ms > 0.0, "changed bindings must be compiled");
+    assert!(
+        rebound.timings().pipeline_ms > 0.0,
+        "changed bindings must be compiled"
+    );
 
     // The reused pipeline still runs: the whole round trip through the cache.
     round_trip(&gpu, KernelSource::Wgsl(ROUND_TRIP_WGSL.into()));
