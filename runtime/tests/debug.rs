@@ -13,37 +13,17 @@
 //!
 //! A test skips only when there is no adapter at all, and then says so on stderr.
 
+mod common;
+
+use common::{gpu_or_skip, temp_dir};
 use std::fmt::Write as _;
-use std::path::PathBuf;
 
 use rtc_bvh::GpuNode;
 use rtc_compiler::driver::Options;
 use rtc_compiler::kernel::{compile_scene_with, CompiledScene, DebugMode, KernelOptions};
 use rtc_compiler::link::LinkOptions;
-use rtc_runtime::gpu::{AdapterChoice, AdapterError, Gpu};
 use rtc_runtime::render::{RenderOptions, Renderer};
 use rtc_runtime::scene::{Entities, GpuInstance};
-
-fn gpu_or_skip(test: &str) -> Option<Gpu> {
-    match Gpu::new(&AdapterChoice::default()) {
-        Ok(gpu) => {
-            eprintln!("{test}: running on {}", gpu.description());
-            Some(gpu)
-        }
-        Err(error @ AdapterError::NoAdapter { .. }) => {
-            eprintln!("SKIPPED {test}: no GPU adapter at all: {error}");
-            None
-        }
-        Err(error) => panic!("{test}: {error}"),
-    }
-}
-
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rtc-debug-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
-}
 
 /// An `f32` literal with exactly these bits.
 fn lit(x: f32) -> String {
@@ -325,7 +305,7 @@ fn debug_counts_match_the_cpu_traversal() {
     let Some(gpu) = gpu_or_skip("debug_counts_match_the_cpu_traversal") else {
         return;
     };
-    let dir = temp_dir("counts");
+    let dir = temp_dir("debug", "counts");
     let compiled = compile(&dir, DebugMode::Counts);
     let mut renderer = Renderer::new(&gpu, &compiled, RenderOptions::default()).expect("renderer");
     let pixels = renderer.render_debug().expect("debug render");
@@ -368,7 +348,7 @@ fn debug_rays_are_the_camera_rays() {
     let Some(gpu) = gpu_or_skip("debug_rays_are_the_camera_rays") else {
         return;
     };
-    let dir = temp_dir("rays");
+    let dir = temp_dir("debug", "rays");
     for mode in [DebugMode::RayOrigin, DebugMode::RayDirection] {
         let compiled = compile(&dir, mode);
         let mut renderer =

@@ -18,37 +18,18 @@
 //! Test meshes are generated here as OBJ text in a temporary folder (nothing large is committed).
 //! A test skips only when there is no adapter at all, and then says so on stderr.
 
+mod common;
+
+use common::{gpu_or_skip, temp_dir};
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use rtc_compiler::driver::Options;
 use rtc_compiler::kernel::{compile_scene, CompiledScene};
 use rtc_compiler::link::LinkOptions;
-use rtc_runtime::gpu::{AdapterChoice, AdapterError, Gpu};
+use rtc_runtime::gpu::Gpu;
 use rtc_runtime::image_out::LinearImage;
 use rtc_runtime::render::{RenderOptions, RenderStats, Renderer};
-
-fn gpu_or_skip(test: &str) -> Option<Gpu> {
-    match Gpu::new(&AdapterChoice::default()) {
-        Ok(gpu) => {
-            eprintln!("{test}: running on {}", gpu.description());
-            Some(gpu)
-        }
-        Err(error @ AdapterError::NoAdapter { .. }) => {
-            eprintln!("SKIPPED {test}: no GPU adapter at all: {error}");
-            None
-        }
-        Err(error) => panic!("{test}: {error}"),
-    }
-}
-
-/// A fresh temporary folder for one test's scene and meshes.
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rtc-extreme-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
-}
 
 /// Writes `text` as `scene.rt` in `dir` and compiles it.
 fn compile(dir: &Path, text: &str) -> CompiledScene {
@@ -326,7 +307,7 @@ fn rays_at_shared_edges_and_vertices_of_closed_meshes_never_leak() {
     let Some(gpu) = gpu_or_skip(test) else {
         return;
     };
-    let dir = temp_dir("watertight");
+    let dir = temp_dir("extreme", "watertight");
     let (p, t) = fan_bipyramid(96);
     write_obj(&dir.join("fan.obj"), &p, &t);
     let (p, t) = grid_box(WT_GRID);
@@ -659,7 +640,7 @@ fn shadow_and_spawned_rays_show_no_acne_and_no_leaks_at_any_scale() {
     let mut failures = Vec::new();
     for (s, t) in configs {
         let offset = [t, -0.75 * t, 0.5 * t];
-        let dir = temp_dir("self-intersection");
+        let dir = temp_dir("extreme", "self-intersection");
         let compiled = compile(&dir, &self_intersection_scene(s, offset));
         let (img, _) = render(&gpu, &compiled, &format!("scale {s:e} at offset {t:e}"));
         // The kernel's offset is 2^-16 of the scene's largest coordinate: bound it by twice that.
@@ -871,7 +852,7 @@ fn degenerate_directions_grazing_rays_and_degenerate_triangles() {
     let Some(gpu) = gpu_or_skip(test) else {
         return;
     };
-    let dir = temp_dir("degenerate");
+    let dir = temp_dir("extreme", "degenerate");
     // Object 2: zero-area triangles and a sliver, in the plane z = 0 around x = 20.
     let positions = [
         [20.0, 0.0, 0.0],
@@ -1044,7 +1025,7 @@ fn tangent_and_nested_spheres() {
     let Some(gpu) = gpu_or_skip(test) else {
         return;
     };
-    let dir = temp_dir("spheres");
+    let dir = temp_dir("extreme", "spheres");
     let rel = |o: u32, t: f64| Some((o, t, 1e-5 * t));
     let mesh = |o: u32, t: f64| Some((o, t, 3e-3));
     // Tangent pair around (0, 0, -10); nested around (0, 0, -30); nested meshes around (0, 0, -50).
@@ -1168,7 +1149,7 @@ fn a_camera_inside_fog_sees_the_transmittance_to_the_wall() {
     };
     const SIZE: u32 = 32;
     const SIGMA: f64 = 0.5;
-    let dir = temp_dir("inside-fog");
+    let dir = temp_dir("extreme", "inside-fog");
     let text = format!(
         r#"
 import "std/cameras/pinhole.rt";
@@ -1296,7 +1277,7 @@ fn stiff_fog_slabs_match_exp_minus_sigma_d() {
     const W: u32 = 256;
     const H: u32 = 32;
     let densities: Vec<f64> = (-3..=4).map(|e| 10f64.powi(e)).collect();
-    let dir = temp_dir("stiff-slabs");
+    let dir = temp_dir("extreme", "stiff-slabs");
     let mut objects = String::new();
     for (j, sigma) in densities.iter().enumerate() {
         let _ = writeln!(
@@ -1370,7 +1351,7 @@ fn stiff_fog_ramps_have_no_banding() {
     const H: u32 = 32;
     // (density, largest thickness); ramp j covers y ∈ [0.05 j - 0.05, 0.05 j].
     let ramps: [(f64, f64); 2] = [(1e4, 0.012), (1e3, 0.12)];
-    let dir = temp_dir("stiff-ramps");
+    let dir = temp_dir("extreme", "stiff-ramps");
     let (p, t) = wedge();
     write_obj(&dir.join("wedge.obj"), &p, &t);
     let mut objects = String::new();
@@ -1510,7 +1491,7 @@ scene tir {{
 "#,
         n = angles.len()
     );
-    let dir = temp_dir("tir");
+    let dir = temp_dir("extreme", "tir");
     let compiled = compile(&dir, &text);
     let (img, _) = render(&gpu, &compiled, test);
     let critical = (1.0f64 / 1.5).asin().to_degrees();
@@ -1614,7 +1595,7 @@ scene mirrors {{
 "#,
             n = dirs.len()
         );
-        let dir = temp_dir("mirrors");
+        let dir = temp_dir("extreme", "mirrors");
         let compiled = compile(&dir, &text);
         let (img, _) = render(&gpu, &compiled, &format!("{test}, max_depth {depth}"));
         let want = 0.1 * (1.0 - 0.9f64.powi(depth as i32 + 1)) / (1.0 - 0.9);
@@ -1690,7 +1671,7 @@ scene large {{
         w = PER * n,
         hx = 1.25 * n as f32,
     );
-    let dir = temp_dir("large");
+    let dir = temp_dir("extreme", "large");
     let compiled = compile(&dir, &text);
     let (img, stats) = render(&gpu, &compiled, test);
     assert_eq!(stats.triangles, 1_310_720);
@@ -1746,7 +1727,7 @@ fn a_single_ten_million_triangle_mesh_is_refused_by_the_binding_limit() {
         return;
     };
     const N: u32 = 2237;
-    let dir = temp_dir("ten-million");
+    let dir = temp_dir("extreme", "ten-million");
     {
         use std::io::Write as _;
         let file = std::fs::File::create(dir.join("grid.obj")).expect("OBJ file");

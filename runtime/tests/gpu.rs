@@ -4,6 +4,9 @@
 //!
 //! A test skips only when there is no adapter at all, and then says so on stderr.
 
+mod common;
+
+use common::gpu_or_skip;
 use rtc_runtime::gpu::{
     create_kernel, dispatch_once, list_adapters, read_buffer, read_vec4_f32, AdapterChoice,
     AdapterError, BindingDesc, BindingKind, BufferError, BufferLimits, BufferSet, DispatchError,
@@ -11,21 +14,6 @@ use rtc_runtime::gpu::{
     TILE_PARAMS_WGSL,
 };
 use rtc_runtime::image_out::LinearImage;
-
-/// The context, or `None` (after saying why) when no adapter exists at all.
-fn gpu_or_skip(test: &str) -> Option<Gpu> {
-    match Gpu::new(&AdapterChoice::default()) {
-        Ok(gpu) => {
-            eprintln!("{test}: running on {}", gpu.description());
-            Some(gpu)
-        }
-        Err(error @ AdapterError::NoAdapter { .. }) => {
-            eprintln!("SKIPPED {test}: no GPU adapter at all: {error}");
-            None
-        }
-        Err(error) => panic!("{test}: {error}"),
-    }
-}
 
 const ROUND_TRIP_WGSL: &str = "
 struct Params { scale: f32, offset: u32, count: u32, pad: u32 }

@@ -25,28 +25,17 @@
 //! Every render must be free of NaN and infinities (`nonfinite_samples == 0`). A test skips only when
 //! there is no adapter at all, and then says so on stderr.
 
+mod common;
+
+use common::gpu_or_skip;
 use std::path::PathBuf;
 
 use rtc_compiler::driver::Options;
 use rtc_compiler::kernel::{compile_scene, CompiledScene};
 use rtc_compiler::link::LinkOptions;
-use rtc_runtime::gpu::{AdapterChoice, AdapterError, Gpu};
+use rtc_runtime::gpu::Gpu;
 use rtc_runtime::image_out::LinearImage;
 use rtc_runtime::render::{RenderOptions, Renderer};
-
-fn gpu_or_skip(test: &str) -> Option<Gpu> {
-    match Gpu::new(&AdapterChoice::default()) {
-        Ok(gpu) => {
-            eprintln!("{test}: running on {}", gpu.description());
-            Some(gpu)
-        }
-        Err(error @ AdapterError::NoAdapter { .. }) => {
-            eprintln!("SKIPPED {test}: no GPU adapter at all: {error}");
-            None
-        }
-        Err(error) => panic!("{test}: {error}"),
-    }
-}
 
 /// Writes `text` as `scene.rt` in a fresh folder and compiles it.
 fn compile(name: &str, text: &str) -> (CompiledScene, PathBuf) {

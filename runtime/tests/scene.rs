@@ -10,6 +10,9 @@
 //!
 //! A test skips only when there is no adapter at all, and then says so on stderr.
 
+mod common;
+
+use common::gpu_or_skip;
 use glam::{Mat4, Vec3};
 use rtc_compiler::abi::{self, FieldType, StructDesc};
 use rtc_compiler::driver::{check_text, Checked, Options};
@@ -17,27 +20,9 @@ use rtc_compiler::kernel::CompiledScene;
 use rtc_compiler::link::registry::Registry;
 use rtc_compiler::link::{link, LinkOptions, Linked};
 use rtc_compiler::sema::hir::Program;
-use rtc_runtime::gpu::{
-    read_buffer, AdapterChoice, AdapterError, BufferError, BufferLimits, Gpu, TileConfig,
-    UploadOutcome,
-};
+use rtc_runtime::gpu::{read_buffer, BufferError, BufferLimits, Gpu, TileConfig, UploadOutcome};
 use rtc_runtime::render::{RenderError, RenderOptions, Renderer};
 use rtc_runtime::scene::{Entities, EntityOptions, GpuScene, SceneError};
-
-/// The context, or `None` (after saying why) when no adapter exists at all.
-fn gpu_or_skip(test: &str) -> Option<Gpu> {
-    match Gpu::new(&AdapterChoice::default()) {
-        Ok(gpu) => {
-            eprintln!("{test}: running on {}", gpu.description());
-            Some(gpu)
-        }
-        Err(error @ AdapterError::NoAdapter { .. }) => {
-            eprintln!("SKIPPED {test}: no GPU adapter at all: {error}");
-            None
-        }
-        Err(error) => panic!("{test}: {error}"),
-    }
-}
 
 fn checked(text: &str) -> (Checked, Linked) {
     let checked = check_text("scene_gpu_test.rt", text, &Options::default());

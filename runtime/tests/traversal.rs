@@ -18,37 +18,18 @@
 //!
 //! A test skips only when there is no adapter at all, and then says so on stderr.
 
+mod common;
+
+use common::{gpu_or_skip, temp_dir};
 use std::fmt::Write as _;
-use std::path::PathBuf;
 
 use glam::{DMat4, DVec3};
 use rtc_compiler::driver::Options;
 use rtc_compiler::kernel::{compile_scene, CompiledScene};
 use rtc_compiler::link::LinkOptions;
-use rtc_runtime::gpu::{AdapterChoice, AdapterError, Gpu};
+use rtc_runtime::gpu::Gpu;
 use rtc_runtime::image_out::{read_image, write_exr, LinearImage};
 use rtc_runtime::render::{RenderOptions, Renderer};
-
-fn gpu_or_skip(test: &str) -> Option<Gpu> {
-    match Gpu::new(&AdapterChoice::default()) {
-        Ok(gpu) => {
-            eprintln!("{test}: running on {}", gpu.description());
-            Some(gpu)
-        }
-        Err(error @ AdapterError::NoAdapter { .. }) => {
-            eprintln!("SKIPPED {test}: no GPU adapter at all: {error}");
-            None
-        }
-        Err(error) => panic!("{test}: {error}"),
-    }
-}
-
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rtc-traversal-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
-}
 
 /// Writes `text` as `scene.rt` in `dir` and compiles it.
 fn compile(dir: &std::path::Path, text: &str) -> CompiledScene {
@@ -657,7 +638,7 @@ fn known_rays_hit_what_the_reference_hits() {
     };
     let objects = objects();
     let hand = hand_rays();
-    let dir = temp_dir("rays");
+    let dir = temp_dir("traversal", "rays");
     let compiled = compile(&dir, &scene_text(&hand, RANDOM_RAYS, &objects));
     let img = render(&gpu, &compiled, &dir);
     let (hits, misses) = check(&img, &hand, 0, &objects, true);
@@ -733,7 +714,7 @@ scene dispatch {
 }
 "#,
     );
-    let dir = temp_dir("dispatch");
+    let dir = temp_dir("traversal", "dispatch");
     let compiled = compile(&dir, &text);
     let materials = compiled
         .linked

@@ -1,0 +1,33 @@
+//! Helpers shared by the runtime's GPU test suites (each suite includes this with `mod common;`).
+//!
+//! A GPU test skips only when there is no adapter at all, and says so on stderr; any other adapter
+//! error fails the test.
+
+#![allow(dead_code)] // each suite uses some of these
+
+use std::path::PathBuf;
+
+use rtc_runtime::gpu::{AdapterChoice, AdapterError, Gpu};
+
+/// The default adapter, or `None` (with a `SKIPPED` line naming `test`) when there is none at all.
+pub fn gpu_or_skip(test: &str) -> Option<Gpu> {
+    match Gpu::new(&AdapterChoice::default()) {
+        Ok(gpu) => {
+            eprintln!("{test}: running on {}", gpu.description());
+            Some(gpu)
+        }
+        Err(error @ AdapterError::NoAdapter { .. }) => {
+            eprintln!("SKIPPED {test}: no GPU adapter at all: {error}");
+            None
+        }
+        Err(error) => panic!("{test}: {error}"),
+    }
+}
+
+/// A fresh, empty temporary folder for one test of the suite `suite`, unique to this process.
+pub fn temp_dir(suite: &str, name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("rtc-{suite}-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    dir
+}
