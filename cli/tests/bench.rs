@@ -3,52 +3,17 @@
 //! sample count, the CSV, JSON and SVG files are written and parse; a missing or wrong-sized
 //! reference is a clear error, never a panic.
 
+mod common;
+
+use common::{no_gpu, rtc, s, scratch, text};
 use rtc_runtime::image_out::{write_exr, LinearImage};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn rtc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rtc"))
-        .args(args)
-        .env("XDG_RUNTIME_DIR", std::env::temp_dir())
-        .env("NO_COLOR", "1")
-        .output()
-        .expect("run rtc")
-}
-
-fn text(out: &Output) -> String {
-    format!(
-        "{}{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    )
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rtc-bench-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("create a scratch folder");
-    dir
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().expect("UTF-8 path")
-}
 
 fn cornell() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../examples/cornell_path/scene.rt")
         .canonicalize()
         .expect("examples/cornell_path exists")
-}
-
-fn no_gpu(out: &Output) -> bool {
-    let t = text(out);
-    let none = t.contains("no adapter matches");
-    if none {
-        eprintln!("no adapter here: skipped\n{t}");
-    }
-    none
 }
 
 /// RMSE at 1, 4, 16 spp against the scene at 128 spp. The reference shares the levels' first
@@ -58,7 +23,7 @@ fn no_gpu(out: &Output) -> bool {
 /// below 0.5 from 1 to 16 spp (expected 0.23).
 #[test]
 fn table_rows_fall_and_files_parse() {
-    let dir = scratch("table");
+    let dir = scratch("bench", "table");
     let (csv, json, svg) = (dir.join("t.csv"), dir.join("t.json"), dir.join("t.svg"));
     let out = rtc(&[
         "bench",
@@ -132,7 +97,7 @@ fn table_rows_fall_and_files_parse() {
 
 #[test]
 fn bad_references_are_clear_errors() {
-    let dir = scratch("bad");
+    let dir = scratch("bench", "bad");
     let missing = dir.join("missing.exr");
     let out = rtc(&[
         "bench",

@@ -2,47 +2,11 @@
 //! level-0 box of a one-object scene is drawn exactly on its projected edges, an unknown
 //! `--object` lists the scene's objects, and the heat map is brighter where there is geometry.
 
+mod common;
+
+use common::{no_gpu, rtc, s, scratch, text};
 use rtc_runtime::image_out::{read_image, LinearImage};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn rtc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rtc"))
-        .args(args)
-        .env("XDG_RUNTIME_DIR", std::env::temp_dir())
-        .env("NO_COLOR", "1")
-        .output()
-        .expect("run rtc")
-}
-
-fn text(out: &Output) -> String {
-    format!(
-        "{}{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    )
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rtc-bvh-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("create a scratch folder");
-    dir
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().expect("UTF-8 path")
-}
-
-/// True (after saying so) when the machine has no adapter, so the GPU checks are skipped.
-fn no_gpu(out: &Output) -> bool {
-    let t = text(out);
-    let none = t.contains("no adapter matches");
-    if none {
-        eprintln!("no adapter here: skipped\n{t}");
-    }
-    none
-}
 
 const W: u32 = 96;
 const H: u32 = 72;
@@ -138,7 +102,7 @@ fn lit(image: &LinearImage, x: u32, y: u32) -> Option<[f32; 4]> {
 /// pixel within 1.5 px.
 #[test]
 fn level_zero_box_is_drawn_on_the_projected_edges() {
-    let dir = scratch("edges");
+    let dir = scratch("bvh", "edges");
     let scene = cube_scene(&dir);
     let out_png = dir.join("boxes.png");
     let out = rtc(&[
@@ -192,7 +156,7 @@ fn level_zero_box_is_drawn_on_the_projected_edges() {
 
 #[test]
 fn unknown_object_lists_the_names_and_too_deep_a_level_names_the_deepest() {
-    let dir = scratch("names");
+    let dir = scratch("bvh", "names");
     let scene = cube_scene(&dir);
     let png = dir.join("x.png");
     let out = rtc(&["bvh", s(&scene), "--object", "nope", "-o", s(&png)]);
@@ -228,7 +192,7 @@ fn unknown_object_lists_the_names_and_too_deep_a_level_names_the_deepest() {
 /// at the cube's centre is brighter than a corner pixel whose ray misses everything.
 #[test]
 fn heat_map_is_brighter_on_geometry() {
-    let dir = scratch("heat");
+    let dir = scratch("bvh", "heat");
     let scene = cube_scene(&dir);
     let png = dir.join("heat.png");
     let out = rtc(&["bvh", s(&scene), "--heatmap", "-o", s(&png)]);

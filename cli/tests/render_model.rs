@@ -3,45 +3,15 @@
 //! defaults it prints, the model in the middle of the image and the sky at the top; a file with a
 //! camera and lights keeps them; a truncated file and `--scene` are clear errors, never a panic.
 
+mod common;
+
+use common::{no_gpu, rtc, s, scratch, text};
 use rtc_runtime::image_out::read_image;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn rtc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rtc"))
-        .args(args)
-        .env("XDG_RUNTIME_DIR", std::env::temp_dir())
-        .env("NO_COLOR", "1")
-        .output()
-        .expect("run rtc")
-}
+use std::process::Output;
 
 fn stdout(out: &Output) -> String {
     String::from_utf8_lossy(&out.stdout).into_owned()
-}
-
-fn text(out: &Output) -> String {
-    format!("{}{}", stdout(out), String::from_utf8_lossy(&out.stderr))
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rtc-model-test-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("create a scratch folder");
-    dir
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().expect("UTF-8 path")
-}
-
-fn no_gpu(out: &Output) -> bool {
-    let t = text(out);
-    let none = t.contains("no adapter matches");
-    if none {
-        eprintln!("no adapter here: skipped\n{t}");
-    }
-    none
 }
 
 /// The example's model.
@@ -92,7 +62,7 @@ fn bare_glb(dir: &Path) -> PathBuf {
 
 #[test]
 fn a_bare_glb_renders_with_the_defaults_it_prints() {
-    let dir = scratch("bare");
+    let dir = scratch("model-test", "bare");
     let model = bare_glb(&dir);
     let png = dir.join("bare.png");
     let out = rtc(&[
@@ -132,7 +102,7 @@ fn a_bare_glb_renders_with_the_defaults_it_prints() {
 
 #[test]
 fn a_glb_with_camera_and_lights_keeps_them() {
-    let dir = scratch("full");
+    let dir = scratch("model-test", "full");
     let png = dir.join("full.png");
     let model = example_glb();
     let out = rtc(&[
@@ -166,7 +136,7 @@ fn a_glb_with_camera_and_lights_keeps_them() {
 
 #[test]
 fn broken_models_are_clear_errors() {
-    let dir = scratch("broken");
+    let dir = scratch("model-test", "broken");
     let glb = std::fs::read(example_glb()).unwrap();
     let cut = dir.join("cut.glb");
     std::fs::write(&cut, &glb[..glb.len() / 3]).unwrap();
