@@ -174,6 +174,58 @@ fn a_lit_quad_matches_the_analytic_lambert_value() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// The render kernel spreads each tile's workgroups over the tile by a permutation of their order
+/// (`render_invocation`); whatever the tile shape (partial edge workgroups, one workgroup, a prime
+/// number of them, tiles narrower than a workgroup), every pixel is rendered exactly once, so the
+/// image is the same bit for bit.
+#[test]
+fn every_tile_shape_renders_every_pixel_once() {
+    let Some(gpu) = gpu_or_skip("every_tile_shape_renders_every_pixel_once") else {
+        return;
+    };
+    let (compiled, dir) = compile("tile-shapes", &lit_quad());
+    let render = |tile_width, tile_height, tiles_per_batch| {
+        let tiles = TileConfig {
+            tile_width,
+            tile_height,
+            tiles_per_batch,
+        };
+        let mut renderer = Renderer::new(
+            &gpu,
+            &compiled,
+            RenderOptions {
+                tiles: Some(tiles),
+                ..RenderOptions::default()
+            },
+        )
+        .expect("renderer");
+        renderer.render(&mut |_, _| {}).expect("render").image
+    };
+    // 33 x 33 pixels in one tile: 5 x 5 = 25 workgroups, the last row and column partial.
+    let reference = render(33, 33, 1);
+    for px in reference.pixels() {
+        assert_eq!(px[3], 1.0, "every pixel has exactly one sample");
+    }
+    // Tiles are clipped at the image's edge. 16 x 16: 2 x 2 workgroups, and 1-pixel-wide edge
+    // tiles; 16 x 8: 2 x 1; 24 x 40: 3 x 5 = 15 workgroups; 8 x 40: 5 (a prime); 5 x 3 and
+    // 8 x 8: tiles of one workgroup or less.
+    for (w, h, batch) in [
+        (16, 16, 4),
+        (16, 8, 4),
+        (24, 40, 2),
+        (8, 40, 3),
+        (5, 3, 64),
+        (8, 8, 9),
+    ] {
+        let image = render(w, h, batch);
+        assert!(
+            image == reference,
+            "{w} x {h} tiles give a different image from one 33 x 33 tile"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// A custom geometry (an analytic ball written in the test) goes through the compiler's bounds
 /// kernel: if its box were lost or wrong, the ball would be missing from the scene-level BVH and
 /// the pixels would show the background.

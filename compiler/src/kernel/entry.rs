@@ -1,17 +1,16 @@
 //! The kernels' entry points, built in IR: thin wrappers that turn the invocation id into the work
 //! item and call the kernel function written in the language.
 //!
-//! - `render` (`@workgroup_size(8, 8)`): one invocation per pixel of the dispatch's tile; returns early
-//!   outside the tile's extent, else calls `render_pixel(tile.origin + gid.xy)`.
+//! - `render` (`@workgroup_size(8, 8)`): one invocation per pixel of the dispatch's tile; calls
+//!   `render_invocation(gid.xy)` (`stdlib/kernel/trace.rt`), which picks the pixel.
 //! - `bounds` (`@workgroup_size(64)`): one invocation per object; calls `compute_bounds(gid.x)`, which
 //!   checks the object count itself.
 
-use super::dispatch::{abi_binding, LowerCx};
-use super::intrinsics::KernelHooks;
+use super::dispatch::LowerCx;
 use super::{BOUNDS_ENTRY, BOUNDS_WORKGROUP, RENDER_ENTRY, RENDER_WORKGROUP};
 use crate::lower::builder::{FnBuilder, TypeCache};
 use crate::lower::LowerError;
-use naga::{BinaryOperator, Expression, Handle, Scalar, Span, Statement, VectorSize};
+use naga::{Expression, Handle, Scalar, Span, Statement, VectorSize};
 
 /// A compute function taking `@builtin(global_invocation_id) gid: vec3<u32>`.
 fn compute_fn(cx: &mut LowerCx<'_>, name: &str) -> FnBuilder {
@@ -37,35 +36,15 @@ fn push_entry(cx: &mut LowerCx<'_>, name: &str, fb: FnBuilder, workgroup_size: [
     });
 }
 
-/// The `render` entry point calling `render_pixel`.
+/// The `render` entry point calling `render_invocation(gid.xy)`.
 pub fn render_entry(
     cx: &mut LowerCx<'_>,
-    hooks: &mut KernelHooks<'_>,
-    render_pixel: Handle<naga::Function>,
+    render_invocation: Handle<naga::Function>,
 ) -> Result<(), LowerError> {
-    let program = hooks.program;
-    let tile_global = hooks.generated.binding(cx, program, abi_binding("tile")?)?;
     let v2u = TypeCache::vector(cx.module_mut(), VectorSize::Bi, Scalar::U32);
     let mut fb = compute_fn(cx, RENDER_ENTRY);
     let s = Span::UNDEFINED;
     let gid = fb.arg(0);
-    let g = fb.expr(Expression::GlobalVariable(tile_global), s);
-    let tile = fb.load(g, s);
-    // TileParams: origin (0), extent (1).
-    let origin = fb.expr(
-        Expression::AccessIndex {
-            base: tile,
-            index: 0,
-        },
-        s,
-    );
-    let extent = fb.expr(
-        Expression::AccessIndex {
-            base: tile,
-            index: 1,
-        },
-        s,
-    );
     let gx = fb.expr(
         Expression::AccessIndex {
             base: gid,
@@ -80,48 +59,14 @@ pub fn render_entry(
         },
         s,
     );
-    let local = fb.expr(
+    let id = fb.expr(
         Expression::Compose {
             ty: v2u,
             components: vec![gx, gy],
         },
         s,
     );
-    let outside = fb.expr(
-        Expression::Binary {
-            op: BinaryOperator::GreaterEqual,
-            left: local,
-            right: extent,
-        },
-        s,
-    );
-    let any = fb.expr(
-        Expression::Relational {
-            fun: naga::RelationalFunction::Any,
-            argument: outside,
-        },
-        s,
-    );
-    fb.push_block();
-    fb.stmt(Statement::Return { value: None }, s);
-    let accept = fb.pop_block();
-    fb.stmt(
-        Statement::If {
-            condition: any,
-            accept,
-            reject: naga::Block::new(),
-        },
-        s,
-    );
-    let pixel = fb.expr(
-        Expression::Binary {
-            op: BinaryOperator::Add,
-            left: origin,
-            right: local,
-        },
-        s,
-    );
-    fb.call(render_pixel, vec![pixel], false, s);
+    fb.call(render_invocation, vec![id], false, s);
     fb.stmt(Statement::Return { value: None }, s);
     push_entry(
         cx,

@@ -174,6 +174,8 @@ pub fn config_module_with(c: &KernelConfig, debug: Option<super::DebugMode>) -> 
         ("TLAS_STACK", c.tlas_stack),
         ("BLAS_STACK", c.blas_stack),
         ("TRAVERSAL_STACK", c.tlas_stack + c.blas_stack),
+        ("WORKGROUP_WIDTH", super::RENDER_WORKGROUP[0]),
+        ("WORKGROUP_HEIGHT", super::RENDER_WORKGROUP[1]),
     ];
     for (name, v) in u {
         let _ = writeln!(out, "const {name}: u32 = {v}u;");

@@ -320,7 +320,7 @@ fn lower_kernels(
     timings: &mut Vec<(&'static str, f64)>,
 ) -> Result<Kernels, LowerError> {
     let t = std::time::Instant::now();
-    let render_pixel = intrinsics::kernel_fn(program, "render_pixel")?;
+    let render_invocation = intrinsics::kernel_fn(program, "render_invocation")?;
     let mut hooks = KernelHooks {
         program,
         linked,
@@ -328,8 +328,8 @@ fn lower_kernels(
         generated: dispatch::Generated::default(),
     };
     let mut cx = Lowerer::new(program, sources);
-    let f = cx.ensure_function(render_pixel, &mut hooks)?;
-    entry::render_entry(&mut cx, &mut hooks, f)?;
+    let f = cx.ensure_function(render_invocation, &mut hooks)?;
+    entry::render_entry(&mut cx, f)?;
     let bindings = hooks.generated.used_bindings();
     let mut render = cx.into_module();
     timings.push(("lower to naga IR", ms_since(t)));

@@ -65,6 +65,10 @@ pub const TILE_PARAMS_WGSL: &str = "struct TileParams {
 }
 ";
 
+/// The largest tile side: the render kernel permutes a tile's 8 × 8 workgroups with 32-bit
+/// arithmetic that needs at most 2^16 of them (`render_invocation` in `stdlib/kernel/trace.rt`).
+pub const MAX_TILE_SIDE: u32 = 2048;
+
 /// How to cut an image into tiles and how many tiles to submit at once.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct TileConfig {
@@ -90,16 +94,19 @@ impl Default for TileConfig {
 }
 
 impl TileConfig {
-    /// The default for an adapter: [`TileConfig::default`] for GPUs; 512 × 512 tiles, 2 per
-    /// batch for CPU adapters, which have no watchdog but pay a synchronisation per dispatch.
-    /// Measured on lavapipe (2 cores, 1080p, 64 FMA per pixel): one whole-frame dispatch 46 ms,
-    /// 512² tiles 48 ms, 256² tiles 65 to 79 ms, 128² tiles 81 to 101 ms.
+    /// The default for an adapter: [`TileConfig::default`] for GPUs; 1024 × 1024 tiles, one per
+    /// batch, for CPU adapters, which have no watchdog but pay a synchronisation per dispatch, and
+    /// whose threads wait for the slowest at the end of each. Measured on lavapipe (2 cores,
+    /// 1080p, 64 FMA per pixel): one whole-frame dispatch 46 ms, 512² tiles 48 ms, 256² tiles 65
+    /// to 79 ms, 128² tiles 81 to 101 ms. On the thesis scene (1080p, best of 3, after the kernel
+    /// spread its workgroups over each tile): 1024² tiles 1634 ms, the whole frame 1649 ms, 512²
+    /// tiles two per batch 1738 ms, 256² tiles 1705 ms.
     pub fn for_adapter(adapter: &super::AdapterDescription) -> Self {
         match adapter.device_type {
             wgpu::DeviceType::Cpu => Self {
-                tile_width: 512,
-                tile_height: 512,
-                tiles_per_batch: 2,
+                tile_width: 1024,
+                tile_height: 1024,
+                tiles_per_batch: 1,
             },
             _ => Self::default(),
         }
@@ -525,6 +532,8 @@ fn read_mapped<T>(
 fn check_config(config: &TileConfig) -> Result<(), DispatchError> {
     let reason = if config.tile_width == 0 || config.tile_height == 0 {
         "tile width and height must be positive"
+    } else if config.tile_width > MAX_TILE_SIDE || config.tile_height > MAX_TILE_SIDE {
+        "tile width and height must be at most 2048"
     } else if config.tiles_per_batch == 0 {
         "tiles_per_batch must be positive"
     } else {
@@ -606,7 +615,7 @@ mod tests {
             vendor: 0,
             device: 0,
         };
-        assert_eq!(TileConfig::for_adapter(&adapter).tile_width, 512);
+        assert_eq!(TileConfig::for_adapter(&adapter).tile_width, 1024);
         adapter.device_type = wgpu::DeviceType::DiscreteGpu;
         assert_eq!(TileConfig::for_adapter(&adapter), TileConfig::default());
         assert!(check_config(&TileConfig::default()).is_ok());
@@ -616,6 +625,14 @@ mod tests {
         };
         assert!(matches!(
             check_config(&zero),
+            Err(DispatchError::BadTileConfig { .. })
+        ));
+        let huge = TileConfig {
+            tile_width: MAX_TILE_SIDE + 1,
+            ..TileConfig::default()
+        };
+        assert!(matches!(
+            check_config(&huge),
             Err(DispatchError::BadTileConfig { .. })
         ));
     }

@@ -1,3 +1,11 @@
+struct TileParams {
+    uint2 origin;
+    uint2 extent;
+    uint2 image_size;
+    uint tile_index;
+    uint frame;
+};
+
 struct FrameUniforms {
     uint samples_per_pass;
     uint total_samples;
@@ -12,14 +20,6 @@ struct FrameUniforms {
     uint camera_offset;
     uint background_type;
     uint background_offset;
-};
-
-struct TileParams {
-    uint2 origin;
-    uint2 extent;
-    uint2 image_size;
-    uint tile_index;
-    uint frame;
 };
 
 struct Ray {
@@ -165,6 +165,9 @@ struct Frame {
     int _end_pad_1;
 };
 
+static const uint WORKGROUP_WIDTH = 8u;
+static const uint WORKGROUP_HEIGHT = 8u;
+static const uint SCATTER = 1000003u;
 static const uint RAY_CAMERA = 0u;
 static const uint NO_HIT = 4294967295u;
 static const bool HAS_MEDIA = false;
@@ -184,8 +187,8 @@ static const float NEE_BOUNCE_LENGTH = 2.0;
 static const uint MAX_SPAWN = 1u;
 static const uint RAY_SECONDARY = 1u;
 
-cbuffer frame : register(b0) { FrameUniforms frame; }
 cbuffer tile : register(b1) { TileParams tile; }
+cbuffer frame : register(b0) { FrameUniforms frame; }
 static uint rng_state = (uint)0;
 ByteAddressBuffer params : register(t6);
 static uint F32_INF = 2139095040u;
@@ -200,6 +203,51 @@ static float3 spawn_weights[1] = (float3[1])0;
 static uint spawn_count = (uint)0;
 RWByteAddressBuffer accum : register(u8);
 RWByteAddressBuffer counters : register(u9);
+
+uint2 naga_div(uint2 lhs, uint2 rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+uint2 div_vec2u(uint2 a, uint2 b)
+{
+    bool2 by_zero = (b == (0u).xx);
+    uint2 divisor = (by_zero ? (1u).xx : b);
+    return naga_div(a, divisor);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint rem_u32_(uint a_1, uint b_1)
+{
+    bool by_zero_1 = (b_1 == 0u);
+    uint divisor_1 = (by_zero_1 ? 1u : b_1);
+    return (by_zero_1 ? 0u : naga_mod(a_1, divisor_1));
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+uint div_u32_(uint a_2, uint b_2)
+{
+    bool by_zero_2 = (b_2 == 0u);
+    uint divisor_2 = (by_zero_2 ? 1u : b_2);
+    return naga_div(a_2, divisor_2);
+}
+
+uint2 naga_mod(uint2 lhs, uint2 rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint2 rem_vec2u(uint2 a_3, uint2 b_3)
+{
+    uint2 _e3 = (0u).xx;
+    bool2 by_zero_3 = (b_3 == _e3);
+    uint2 divisor_3 = (by_zero_3 ? (1u).xx : b_3);
+    return (by_zero_3 ? _e3 : naga_mod(a_3, divisor_3));
+}
 
 uint pcg_hash(uint x)
 {
@@ -400,15 +448,15 @@ TriangleRay prepare_triangle_ray(Ray ray_1)
 float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
 {
     float4 _e8 = asfloat(triangles.Load4((slot * 3u)*16));
-    float3 a = (_e8.xyz - r_1.origin);
+    float3 a_4 = (_e8.xyz - r_1.origin);
     float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
-    float3 b = (_e18.xyz - r_1.origin);
+    float3 b_4 = (_e18.xyz - r_1.origin);
     float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
     float3 c_4 = (_e28.xyz - r_1.origin);
-    float ax = (a[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float ay = (a[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float bx = (b[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float by = (b[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * b[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float ax = (a_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float ay = (a_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float bx = (b_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_4[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float by = (b_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * b_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float cx = (c_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float cy = (c_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u_1 = ((cx * by) - (cy * bx));
@@ -417,7 +465,7 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     bool outside = ((((u_1 < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u_1 > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u_1 + v_1) + w);
     float rcp_ = (1.0 / det);
-    float t_3 = ((((u_1 * (r_1.shear.z * a[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_3 = ((((u_1 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_4[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_7 ? float3(t_3, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
@@ -704,9 +752,9 @@ Hit finish_hit(Ray ray_5, Candidate c_1)
     n_shade = c_1.normal;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         const Triangle _e35 = load_triangle(c_1.primitive);
-        float2 b_1 = c_1.uv;
-        float w_2 = ((1.0 - b_1.x) - b_1.y);
-        const float3 _e56 = point_to_world(inst_6, (((_e35.v0_ * (w_2).xxx) + (_e35.v1_ * (b_1.x).xxx)) + (_e35.v2_ * (b_1.y).xxx)));
+        float2 b_5 = c_1.uv;
+        float w_2 = ((1.0 - b_5.x) - b_5.y);
+        const float3 _e56 = point_to_world(inst_6, (((_e35.v0_ * (w_2).xxx) + (_e35.v1_ * (b_5.x).xxx)) + (_e35.v2_ * (b_5.y).xxx)));
         hit.position = _e56;
         n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
         uint4 a0_ = asuint(attributes.Load4((c_1.primitive * 2u)*16));
@@ -714,7 +762,7 @@ Hit finish_hit(Ray ray_5, Candidate c_1)
         const float3 _e79 = decode_octahedral(a0_.x);
         const float3 _e83 = decode_octahedral(a0_.y);
         const float3 _e89 = decode_octahedral(a0_.z);
-        n_shade = (((_e79 * (w_2).xxx) + (_e83 * (b_1.x).xxx)) + (_e89 * (b_1.y).xxx));
+        n_shade = (((_e79 * (w_2).xxx) + (_e83 * (b_5.x).xxx)) + (_e89 * (b_5.y).xxx));
         float3 _e94 = n_shade;
         float3 _e95 = n_shade;
         if ((dot(_e94, _e95) < 1e-12)) {
@@ -727,7 +775,7 @@ Hit finish_hit(Ray ray_5, Candidate c_1)
         float2 uv1_ = float2(f16tof32(_e102), f16tof32((_e102) >> 16));
         uint _e104 = a1_.y;
         float2 uv2_ = float2(f16tof32(_e104), f16tof32((_e104) >> 16));
-        hit.uv = (((uv0_ * (w_2).xx) + (uv1_ * (b_1.x).xx)) + (uv2_ * (b_1.y).xx));
+        hit.uv = (((uv0_ * (w_2).xx) + (uv1_ * (b_5.x).xx)) + (uv2_ * (b_5.y).xx));
         float4 _e123 = asfloat(triangles.Load4((c_1.primitive * 3u)*16));
         hit.primitive = asuint(_e123.w);
     }
@@ -1050,8 +1098,8 @@ float3 offset_origin(float3 p_2, float3 n_2)
 {
     FrameUniforms _e3 = frame;
     GpuNode root_1 = ConstructGpuNode(asfloat(nodes.Load3(_e3.tlas_root*32+0)), asuint(nodes.Load(_e3.tlas_root*32+12)), asfloat(nodes.Load3(_e3.tlas_root*32+16)), asuint(nodes.Load(_e3.tlas_root*32+28)));
-    float3 a_1 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
-    float m_3 = max(max(a_1.x, a_1.y), a_1.z);
+    float3 a_5 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
+    float m_3 = max(max(a_5.x, a_5.y), a_5.z);
     return (p_2 + (n_2 * ((m_3 * (1.0 / 65536.0))).xxx));
 }
 
@@ -1186,10 +1234,10 @@ float3 shade_direct(Ray ray_15, Candidate c_2)
 float3x3 orthonormal_basis(float3 n_4)
 {
     float sign_ = (((asuint(n_4.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
-    float a_2 = (-1.0 / (sign_ + n_4.z));
-    float b_2 = ((n_4.x * n_4.y) * a_2);
+    float a_6 = (-1.0 / (sign_ + n_4.z));
+    float b_6 = ((n_4.x * n_4.y) * a_6);
     float _e16 = (sign_ * n_4.x);
-    return float3x3(float3((1.0 + ((_e16 * n_4.x) * a_2)), (sign_ * b_2), -(_e16)), float3(b_2, (sign_ + ((n_4.y * n_4.y) * a_2)), -(n_4.y)), n_4);
+    return float3x3(float3((1.0 + ((_e16 * n_4.x) * a_6)), (sign_ * b_6), -(_e16)), float3(b_6, (sign_ + ((n_4.y * n_4.y) * a_6)), -(n_4.y)), n_4);
 }
 
 float3 sample_cosine_hemisphere(float3 n_5, float2 u)
@@ -1514,14 +1562,33 @@ void render_pixel(uint2 pixel_3)
     return;
 }
 
+void render_invocation(uint2 id)
+{
+    TileParams tile_2 = tile;
+    uint2 size_1 = uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    const uint2 _e11 = div_vec2u(((tile_2.extent + size_1) - (1u).xx), size_1);
+    uint count_2 = (_e11.x * _e11.y);
+    if ((count_2 == 0u)) {
+        return;
+    }
+    const uint2 _e17 = div_vec2u(id, size_1);
+    uint order = ((_e17.y * _e11.x) + _e17.x);
+    const uint _e24 = rem_u32_(SCATTER, count_2);
+    const uint _e26 = rem_u32_((order * _e24), count_2);
+    const uint _e28 = rem_u32_(_e26, _e11.x);
+    const uint _e30 = div_u32_(_e26, _e11.x);
+    const uint2 _e33 = rem_vec2u(id, size_1);
+    uint2 local_1 = ((uint2(_e28, _e30) * size_1) + _e33);
+    if (any((local_1 >= tile_2.extent))) {
+        return;
+    }
+    render_pixel((tile_2.origin + local_1));
+    return;
+}
+
 [numthreads(8, 8, 1)]
 void render(uint3 gid : SV_DispatchThreadID)
 {
-    TileParams _e2 = tile;
-    uint2 _e7 = uint2(gid.x, gid.y);
-    if (any((_e7 >= _e2.extent))) {
-        return;
-    }
-    render_pixel((_e2.origin + _e7));
+    render_invocation(uint2(gid.x, gid.y));
     return;
 }

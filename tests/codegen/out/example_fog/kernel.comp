@@ -3,6 +3,13 @@
 #extension GL_ARB_shader_storage_buffer_object : require
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
+struct TileParams {
+    uvec2 origin;
+    uvec2 extent;
+    uvec2 image_size;
+    uint tile_index;
+    uint frame;
+};
 struct FrameUniforms {
     uint samples_per_pass;
     uint total_samples;
@@ -17,13 +24,6 @@ struct FrameUniforms {
     uint camera_offset;
     uint background_type;
     uint background_offset;
-};
-struct TileParams {
-    uvec2 origin;
-    uvec2 extent;
-    uvec2 image_size;
-    uint tile_index;
-    uint frame;
 };
 struct Ray {
     vec3 origin;
@@ -122,6 +122,9 @@ struct Frame {
     uint count;
     uint next;
 };
+const uint WORKGROUP_WIDTH = 8u;
+const uint WORKGROUP_HEIGHT = 8u;
+const uint SCATTER = 1000003u;
 const uint RAY_CAMERA = 0u;
 const uint NO_HIT = 4294967295u;
 const bool HAS_MEDIA = true;
@@ -142,9 +145,9 @@ const uint STACK_SIZE = 3u;
 const uint MAX_SPAWN = 1u;
 const uint RAY_SECONDARY = 1u;
 
-layout(std140, binding = 0) uniform FrameUniforms_block_0Compute { FrameUniforms _group_0_binding_0_cs; };
+layout(std140, binding = 1) uniform TileParams_block_0Compute { TileParams _group_0_binding_1_cs; };
 
-layout(std140, binding = 1) uniform TileParams_block_1Compute { TileParams _group_0_binding_1_cs; };
+layout(std140, binding = 0) uniform FrameUniforms_block_1Compute { FrameUniforms _group_0_binding_0_cs; };
 
 uint rng_state = 0u;
 
@@ -174,6 +177,31 @@ layout(std430, binding = 8) buffer type_10_block_7Compute { vec4 _group_0_bindin
 
 layout(std430, binding = 9) buffer type_18_block_8Compute { uint _group_0_binding_9_cs[]; };
 
+
+uvec2 div_vec2u(uvec2 a, uvec2 b) {
+    bvec2 by_zero = equal(b, uvec2(0u));
+    uvec2 divisor = mix(b, uvec2(1u), by_zero);
+    return (a / divisor);
+}
+
+uint rem_u32_(uint a_1, uint b_1) {
+    bool by_zero_1 = (b_1 == 0u);
+    uint divisor_1 = (by_zero_1 ? 1u : b_1);
+    return (by_zero_1 ? 0u : (a_1 % divisor_1));
+}
+
+uint div_u32_(uint a_2, uint b_2) {
+    bool by_zero_2 = (b_2 == 0u);
+    uint divisor_2 = (by_zero_2 ? 1u : b_2);
+    return (a_2 / divisor_2);
+}
+
+uvec2 rem_vec2u(uvec2 a_3, uvec2 b_3) {
+    uvec2 _e3 = uvec2(0u);
+    bvec2 by_zero_3 = equal(b_3, _e3);
+    uvec2 divisor_3 = mix(b_3, uvec2(1u), by_zero_3);
+    return mix((a_3 % divisor_3), _e3, by_zero_3);
+}
 
 uint pcg_hash(uint x) {
     uint state = ((x * 747796405u) + 2891336453u);
@@ -308,15 +336,15 @@ TriangleRay prepare_triangle_ray(Ray ray_1) {
 
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     vec4 _e8 = _group_0_binding_4_cs[(slot * 3u)];
-    vec3 a = (_e8.xyz - r_1.origin);
+    vec3 a_4 = (_e8.xyz - r_1.origin);
     vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
-    vec3 b = (_e18.xyz - r_1.origin);
+    vec3 b_4 = (_e18.xyz - r_1.origin);
     vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
     vec3 c_4 = (_e28.xyz - r_1.origin);
-    float ax = (a[min(r_1.kx, 2u)] - (r_1.shear.x * a[min(r_1.kz, 2u)]));
-    float ay = (a[min(r_1.ky, 2u)] - (r_1.shear.y * a[min(r_1.kz, 2u)]));
-    float bx = (b[min(r_1.kx, 2u)] - (r_1.shear.x * b[min(r_1.kz, 2u)]));
-    float by = (b[min(r_1.ky, 2u)] - (r_1.shear.y * b[min(r_1.kz, 2u)]));
+    float ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
+    float ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
+    float bx = (b_4[min(r_1.kx, 2u)] - (r_1.shear.x * b_4[min(r_1.kz, 2u)]));
+    float by = (b_4[min(r_1.ky, 2u)] - (r_1.shear.y * b_4[min(r_1.kz, 2u)]));
     float cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
     float cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
@@ -325,7 +353,7 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
-    float t_4 = ((((u * (r_1.shear.z * a[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    float t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
     bool hit_9 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_9 ? vec3(t_4, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
@@ -377,9 +405,9 @@ Hit finish_hit(Ray ray_2, Candidate c) {
     n_shade = c.normal;
     if ((inst_5.geometry_type == MESH_GEOMETRY)) {
         Triangle _e35 = load_triangle(c.primitive);
-        vec2 b_1 = c.uv;
-        float w_2 = ((1.0 - b_1.x) - b_1.y);
-        vec3 _e56 = point_to_world(inst_5, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_1.x))) + (_e35.v2_ * vec3(b_1.y))));
+        vec2 b_5 = c.uv;
+        float w_2 = ((1.0 - b_5.x) - b_5.y);
+        vec3 _e56 = point_to_world(inst_5, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_5.x))) + (_e35.v2_ * vec3(b_5.y))));
         hit.position = _e56;
         n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
         uvec4 a0_ = _group_0_binding_5_cs[(c.primitive * 2u)];
@@ -387,7 +415,7 @@ Hit finish_hit(Ray ray_2, Candidate c) {
         vec3 _e79 = decode_octahedral(a0_.x);
         vec3 _e83 = decode_octahedral(a0_.y);
         vec3 _e89 = decode_octahedral(a0_.z);
-        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_1.x))) + (_e89 * vec3(b_1.y)));
+        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_5.x))) + (_e89 * vec3(b_5.y)));
         vec3 _e94 = n_shade;
         vec3 _e95 = n_shade;
         if ((dot(_e94, _e95) < 1e-12)) {
@@ -397,7 +425,7 @@ Hit finish_hit(Ray ray_2, Candidate c) {
         vec2 uv0_ = unpackHalf2x16(a0_.w);
         vec2 uv1_ = unpackHalf2x16(a1_.x);
         vec2 uv2_ = unpackHalf2x16(a1_.y);
-        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_1.x))) + (uv2_ * vec2(b_1.y)));
+        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_5.x))) + (uv2_ * vec2(b_5.y)));
         vec4 _e123 = _group_0_binding_4_cs[(c.primitive * 3u)];
         hit.primitive = floatBitsToUint(_e123.w);
     }
@@ -788,8 +816,8 @@ PointLight load_PointLight(uint offset_5) {
 vec3 offset_origin(vec3 p_2, vec3 n_2) {
     FrameUniforms _e3 = _group_0_binding_0_cs;
     GpuNode root_1 = _group_0_binding_2_cs[_e3.tlas_root];
-    vec3 a_1 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
-    float m_6 = max(max(a_1.x, a_1.y), a_1.z);
+    vec3 a_5 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
+    float m_6 = max(max(a_5.x, a_5.y), a_5.z);
     return (p_2 + (n_2 * vec3((m_6 * (1.0 / 65536.0)))));
 }
 
@@ -1286,14 +1314,32 @@ void render_pixel(uvec2 pixel_3) {
     return;
 }
 
-void main() {
-    uvec3 gid = gl_GlobalInvocationID;
-    TileParams _e2 = _group_0_binding_1_cs;
-    uvec2 _e7 = uvec2(gid.x, gid.y);
-    if (any(greaterThanEqual(_e7, _e2.extent))) {
+void render_invocation(uvec2 id) {
+    TileParams tile_2 = _group_0_binding_1_cs;
+    uvec2 size_1 = uvec2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    uvec2 _e11 = div_vec2u(((tile_2.extent + size_1) - uvec2(1u)), size_1);
+    uint count_2 = (_e11.x * _e11.y);
+    if ((count_2 == 0u)) {
         return;
     }
-    render_pixel((_e2.origin + _e7));
+    uvec2 _e17 = div_vec2u(id, size_1);
+    uint order = ((_e17.y * _e11.x) + _e17.x);
+    uint _e24 = rem_u32_(SCATTER, count_2);
+    uint _e26 = rem_u32_((order * _e24), count_2);
+    uint _e28 = rem_u32_(_e26, _e11.x);
+    uint _e30 = div_u32_(_e26, _e11.x);
+    uvec2 _e33 = rem_vec2u(id, size_1);
+    uvec2 local = ((uvec2(_e28, _e30) * size_1) + _e33);
+    if (any(greaterThanEqual(local, tile_2.extent))) {
+        return;
+    }
+    render_pixel((tile_2.origin + local));
+    return;
+}
+
+void main() {
+    uvec3 gid = gl_GlobalInvocationID;
+    render_invocation(uvec2(gid.x, gid.y));
     return;
 }
 

@@ -14,6 +14,13 @@ struct _mslBufferSizes {
     uint size15;
 };
 
+struct TileParams {
+    metal::uint2 origin;
+    metal::uint2 extent;
+    metal::uint2 image_size;
+    uint tile_index;
+    uint frame;
+};
 struct FrameUniforms {
     uint samples_per_pass;
     uint total_samples;
@@ -28,13 +35,6 @@ struct FrameUniforms {
     uint camera_offset;
     uint background_type;
     uint background_offset;
-};
-struct TileParams {
-    metal::uint2 origin;
-    metal::uint2 extent;
-    metal::uint2 image_size;
-    uint tile_index;
-    uint frame;
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -150,6 +150,9 @@ struct type_15 {
     Frame inner[6];
 };
 typedef metal::atomic_uint type_18[1];
+constant uint WORKGROUP_WIDTH = 8u;
+constant uint WORKGROUP_HEIGHT = 8u;
+constant uint SCATTER = 1000003u;
 constant uint RAY_CAMERA = 0u;
 constant uint NO_HIT = 4294967295u;
 constant bool HAS_MEDIA = false;
@@ -165,6 +168,59 @@ constant uint MAX_DEPTH = 6u;
 constant uint STACK_SIZE = 6u;
 constant uint MAX_SPAWN = 2u;
 constant uint RAY_SECONDARY = 1u;
+
+metal::uint2 naga_div(metal::uint2 lhs, metal::uint2 rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+metal::uint2 div_vec2u(
+    metal::uint2 a,
+    metal::uint2 b
+) {
+    metal::bool2 by_zero = b == metal::uint2(0u);
+    metal::uint2 divisor = metal::select(b, metal::uint2(1u), by_zero);
+    return naga_div(a, divisor);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint rem_u32_(
+    uint a_1,
+    uint b_1
+) {
+    bool by_zero_1 = b_1 == 0u;
+    uint divisor_1 = by_zero_1 ? 1u : b_1;
+    return by_zero_1 ? 0u : naga_mod(a_1, divisor_1);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint div_u32_(
+    uint a_2,
+    uint b_2
+) {
+    bool by_zero_2 = b_2 == 0u;
+    uint divisor_2 = by_zero_2 ? 1u : b_2;
+    return naga_div(a_2, divisor_2);
+}
+
+metal::uint2 naga_mod(metal::uint2 lhs, metal::uint2 rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+metal::uint2 rem_vec2u(
+    metal::uint2 a_3,
+    metal::uint2 b_3
+) {
+    metal::uint2 _e3 = metal::uint2(0u);
+    metal::bool2 by_zero_3 = b_3 == _e3;
+    metal::uint2 divisor_3 = metal::select(b_3, metal::uint2(1u), by_zero_3);
+    return metal::select(naga_mod(a_3, divisor_3), _e3, by_zero_3);
+}
 
 uint pcg_hash(
     uint x
@@ -256,8 +312,8 @@ Ray pinhole_ray(
     Pinhole cam,
     metal::uint2 pixel_1,
     uint sample_1,
-    constant FrameUniforms& frame,
     constant TileParams& tile,
+    constant FrameUniforms& frame,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -287,15 +343,15 @@ Ray dispatch_ray_generation(
     uint offset_1,
     metal::uint2 pixel_2,
     uint sample_2,
-    constant FrameUniforms& frame,
     constant TileParams& tile,
+    constant FrameUniforms& frame,
     thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Pinhole _e3 = load_Pinhole(offset_1, params, _buffer_sizes);
-    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2, frame, tile, rng_state, F32_INF);
+    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2, tile, frame, rng_state, F32_INF);
     return _e4;
 }
 
@@ -356,15 +412,15 @@ metal::float3 hit_triangle(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e8 = triangles[slot * 3u];
-    metal::float3 a = _e8.xyz - r_1.origin;
+    metal::float3 a_4 = _e8.xyz - r_1.origin;
     metal::float4 _e18 = triangles[(slot * 3u) + 1u];
-    metal::float3 b_1 = _e18.xyz - r_1.origin;
+    metal::float3 b_5 = _e18.xyz - r_1.origin;
     metal::float4 _e28 = triangles[(slot * 3u) + 2u];
     metal::float3 c_5 = _e28.xyz - r_1.origin;
-    float ax = a[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a[metal::min(r_1.kz, 2u)]);
-    float ay = a[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a[metal::min(r_1.kz, 2u)]);
-    float bx = b_1[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_1[metal::min(r_1.kz, 2u)]);
-    float by = b_1[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_1[metal::min(r_1.kz, 2u)]);
+    float ax = a_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_4[metal::min(r_1.kz, 2u)]);
+    float ay = a_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_4[metal::min(r_1.kz, 2u)]);
+    float bx = b_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_5[metal::min(r_1.kz, 2u)]);
+    float by = b_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_5[metal::min(r_1.kz, 2u)]);
     float cx = c_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_5[metal::min(r_1.kz, 2u)]);
     float cy = c_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_5[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
@@ -373,7 +429,7 @@ metal::float3 hit_triangle(
     bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
-    float t_3 = (((u * (r_1.shear[2] * a[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_1[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_3 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_8 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1);
     uint _e173 = F32_INF;
     return hit_8 ? metal::float3(t_3, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
@@ -650,7 +706,7 @@ Hit finish_hit(
     n_shade = c_1.normal;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         Triangle _e35 = load_triangle(c_1.primitive, triangles, _buffer_sizes);
-        metal::float2 b_2 = c_1.uv;
+        metal::float2 b_6 = c_1.uv;
         float w_2 = (1.0 - c_1.uv.x) - c_1.uv.y;
         metal::float3 _e56 = point_to_world(inst_6, ((_e35.v0_ * metal::float3(w_2)) + (_e35.v1_ * metal::float3(c_1.uv.x))) + (_e35.v2_ * metal::float3(c_1.uv.y)));
         hit.position = _e56;
@@ -896,15 +952,15 @@ SkyGradient load_SkyGradient(
 }
 
 metal::float3 sky_gradient(
-    SkyGradient b,
+    SkyGradient b_4,
     Ray ray_7
 ) {
     metal::float3 _e3 = normalize_vec3f(ray_7.dir);
     float y = _e3.y;
     if (y < 0.0) {
-        return metal::mix(b.horizon, b.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
+        return metal::mix(b_4.horizon, b_4.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
     }
-    return metal::mix(b.horizon, b.zenith, metal::float3(metal::sqrt(y)));
+    return metal::mix(b_4.horizon, b_4.zenith, metal::float3(metal::sqrt(y)));
 }
 
 metal::float3 dispatch_miss(
@@ -1158,8 +1214,8 @@ metal::float3 offset_origin(
 ) {
     FrameUniforms _e3 = frame;
     GpuNode root_1 = nodes[_e3.tlas_root];
-    metal::float3 a_1 = metal::max(metal::abs(p_2), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
-    float m_4 = metal::max(metal::max(a_1.x, a_1.y), a_1.z);
+    metal::float3 a_5 = metal::max(metal::abs(p_2), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
+    float m_4 = metal::max(metal::max(a_5.x, a_5.y), a_5.z);
     return p_2 + (n_3 * metal::float3(m_4 * (1.0 / 65536.0)));
 }
 
@@ -1364,8 +1420,8 @@ metal::float3 finite_or_zero(
 
 void render_pixel(
     metal::uint2 pixel_3,
-    constant FrameUniforms& frame,
     constant TileParams& tile,
+    constant FrameUniforms& frame,
     thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1409,7 +1465,7 @@ void render_pixel(
         uint _e18 = s;
         uint sample_3 = (tile_1.frame * frame_4.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_4.seed, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_4.camera_type, frame_4.camera_offset, pixel_3, sample_3, frame, tile, rng_state, params, F32_INF, _buffer_sizes);
+        Ray _e23 = dispatch_ray_generation(frame_4.camera_type, frame_4.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
         ray_20 = _e23;
         ray_20.depth = 0u;
         ray_20.kind = RAY_CAMERA;
@@ -1442,12 +1498,54 @@ void render_pixel(
     return;
 }
 
+void render_invocation(
+    metal::uint2 id,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    device type_13 const& attributes,
+    thread uint& ray_count,
+    thread type_14& spawn_dirs,
+    thread type_14& spawn_weights,
+    thread uint& spawn_count,
+    device type_10& accum,
+    device type_18& counters,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    TileParams tile_2 = tile;
+    metal::uint2 size_1 = metal::uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    metal::uint2 _e11 = div_vec2u((tile_2.extent + size_1) - metal::uint2(1u), size_1);
+    uint count_2 = _e11.x * _e11.y;
+    if (count_2 == 0u) {
+        return;
+    }
+    metal::uint2 _e17 = div_vec2u(id, size_1);
+    uint order = (_e17.y * _e11.x) + _e17.x;
+    uint _e24 = rem_u32_(SCATTER, count_2);
+    uint _e26 = rem_u32_(order * _e24, count_2);
+    uint _e28 = rem_u32_(_e26, _e11.x);
+    uint _e30 = div_u32_(_e26, _e11.x);
+    metal::uint2 _e33 = rem_vec2u(id, size_1);
+    metal::uint2 local = (metal::uint2(_e28, _e30) * size_1) + _e33;
+    if (metal::any(local >= tile_2.extent)) {
+        return;
+    }
+    render_pixel(tile_2.origin + local, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
+    return;
+}
+
 struct renderInput {
 };
 [[max_total_threads_per_threadgroup(64)]] kernel void render(
   metal::uint3 gid [[thread_position_in_grid]]
-, constant FrameUniforms& frame [[buffer(0)]]
 , constant TileParams& tile [[buffer(1)]]
+, constant FrameUniforms& frame [[buffer(0)]]
 , device type_4 const& params [[buffer(6)]]
 , device type_8 const& instances [[buffer(3)]]
 , device type_9 const& nodes [[buffer(2)]]
@@ -1464,11 +1562,6 @@ struct renderInput {
     type_14 spawn_dirs = {};
     type_14 spawn_weights = {};
     uint spawn_count = {};
-    TileParams _e2 = tile;
-    metal::uint2 _e7 = metal::uint2(gid.x, gid.y);
-    if (metal::any(_e7 >= _e2.extent)) {
-        return;
-    }
-    render_pixel(_e2.origin + _e7, frame, tile, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
     return;
 }

@@ -1,3 +1,11 @@
+struct TileParams {
+    origin: vec2<u32>,
+    extent: vec2<u32>,
+    image_size: vec2<u32>,
+    tile_index: u32,
+    frame: u32,
+}
+
 struct FrameUniforms {
     samples_per_pass: u32,
     total_samples: u32,
@@ -12,14 +20,6 @@ struct FrameUniforms {
     camera_offset: u32,
     background_type: u32,
     background_offset: u32,
-}
-
-struct TileParams {
-    origin: vec2<u32>,
-    extent: vec2<u32>,
-    image_size: vec2<u32>,
-    tile_index: u32,
-    frame: u32,
 }
 
 struct Ray {
@@ -123,6 +123,9 @@ struct Frame {
     next: u32,
 }
 
+const WORKGROUP_WIDTH: u32 = 8u;
+const WORKGROUP_HEIGHT: u32 = 8u;
+const SCATTER: u32 = 1000003u;
 const RAY_CAMERA: u32 = 0u;
 const NO_HIT: u32 = 4294967295u;
 const HAS_MEDIA: bool = false;
@@ -139,10 +142,10 @@ const STACK_SIZE: u32 = 6u;
 const MAX_SPAWN: u32 = 2u;
 const RAY_SECONDARY: u32 = 1u;
 
-@group(0) @binding(0) 
-var<uniform> frame: FrameUniforms;
 @group(0) @binding(1) 
 var<uniform> tile: TileParams;
+@group(0) @binding(0) 
+var<uniform> frame: FrameUniforms;
 var<private> rng_state: u32;
 @group(0) @binding(6) 
 var<storage> params: array<u32>;
@@ -164,6 +167,31 @@ var<private> spawn_count: u32;
 var<storage, read_write> accum: array<vec4<f32>>;
 @group(0) @binding(9) 
 var<storage, read_write> counters: array<atomic<u32>>;
+
+fn div_vec2u(a: vec2<u32>, b: vec2<u32>) -> vec2<u32> {
+    let by_zero = (b == vec2(0u));
+    let divisor = select(b, vec2(1u), by_zero);
+    return (a / divisor);
+}
+
+fn rem_u32_(a_1: u32, b_1: u32) -> u32 {
+    let by_zero_1 = (b_1 == 0u);
+    let divisor_1 = select(b_1, 1u, by_zero_1);
+    return select((a_1 % divisor_1), 0u, by_zero_1);
+}
+
+fn div_u32_(a_2: u32, b_2: u32) -> u32 {
+    let by_zero_2 = (b_2 == 0u);
+    let divisor_2 = select(b_2, 1u, by_zero_2);
+    return (a_2 / divisor_2);
+}
+
+fn rem_vec2u(a_3: vec2<u32>, b_3: vec2<u32>) -> vec2<u32> {
+    let _e3 = vec2(0u);
+    let by_zero_3 = (b_3 == _e3);
+    let divisor_3 = select(b_3, vec2(1u), by_zero_3);
+    return select((a_3 % divisor_3), _e3, by_zero_3);
+}
 
 fn pcg_hash(x: u32) -> u32 {
     let state = ((x * 747796405u) + 2891336453u);
@@ -301,15 +329,15 @@ fn prepare_triangle_ray(ray_1: Ray) -> TriangleRay {
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32> {
     let _e8 = triangles[(slot * 3u)];
-    let a = (_e8.xyz - r_1.origin);
+    let a_4 = (_e8.xyz - r_1.origin);
     let _e18 = triangles[((slot * 3u) + 1u)];
-    let b_1 = (_e18.xyz - r_1.origin);
+    let b_5 = (_e18.xyz - r_1.origin);
     let _e28 = triangles[((slot * 3u) + 2u)];
     let c_5 = (_e28.xyz - r_1.origin);
-    let ax = (a[min(r_1.kx, 2u)] - (r_1.shear.x * a[min(r_1.kz, 2u)]));
-    let ay = (a[min(r_1.ky, 2u)] - (r_1.shear.y * a[min(r_1.kz, 2u)]));
-    let bx = (b_1[min(r_1.kx, 2u)] - (r_1.shear.x * b_1[min(r_1.kz, 2u)]));
-    let by = (b_1[min(r_1.ky, 2u)] - (r_1.shear.y * b_1[min(r_1.kz, 2u)]));
+    let ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
+    let ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
+    let bx = (b_5[min(r_1.kx, 2u)] - (r_1.shear.x * b_5[min(r_1.kz, 2u)]));
+    let by = (b_5[min(r_1.ky, 2u)] - (r_1.shear.y * b_5[min(r_1.kz, 2u)]));
     let cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
     let cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
@@ -318,7 +346,7 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
-    let t_3 = ((((u * (r_1.shear.z * a[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_1[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    let t_3 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
     let hit_8 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
     let _e173 = F32_INF;
     return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_3, (v_1 * rcp), (w * rcp)), hit_8);
@@ -530,9 +558,9 @@ fn finish_hit(ray_5: Ray, c_1: Candidate) -> Hit {
     n_shade = c_1.normal;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         let _e35 = load_triangle(c_1.primitive);
-        let b_2 = c_1.uv;
-        let w_2 = ((1f - b_2.x) - b_2.y);
-        let _e56 = point_to_world(inst_6, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_2.x))) + (_e35.v2_ * vec3(b_2.y))));
+        let b_6 = c_1.uv;
+        let w_2 = ((1f - b_6.x) - b_6.y);
+        let _e56 = point_to_world(inst_6, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_6.x))) + (_e35.v2_ * vec3(b_6.y))));
         hit.position = _e56;
         n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
         let a0_ = attributes[(c_1.primitive * 2u)];
@@ -540,7 +568,7 @@ fn finish_hit(ray_5: Ray, c_1: Candidate) -> Hit {
         let _e79 = decode_octahedral(a0_.x);
         let _e83 = decode_octahedral(a0_.y);
         let _e89 = decode_octahedral(a0_.z);
-        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_2.x))) + (_e89 * vec3(b_2.y)));
+        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_6.x))) + (_e89 * vec3(b_6.y)));
         let _e94 = n_shade;
         let _e95 = n_shade;
         if (dot(_e94, _e95) < 0.000000000001f) {
@@ -550,7 +578,7 @@ fn finish_hit(ray_5: Ray, c_1: Candidate) -> Hit {
         let uv0_ = unpack2x16float(a0_.w);
         let uv1_ = unpack2x16float(a1_.x);
         let uv2_ = unpack2x16float(a1_.y);
-        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_2.x))) + (uv2_ * vec2(b_2.y)));
+        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_6.x))) + (uv2_ * vec2(b_6.y)));
         let _e123 = triangles[(c_1.primitive * 3u)];
         hit.primitive = bitcast<u32>(_e123.w);
     }
@@ -737,13 +765,13 @@ fn load_SkyGradient(offset_2: u32) -> SkyGradient {
     return SkyGradient(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)));
 }
 
-fn sky_gradient(b: SkyGradient, ray_7: Ray) -> vec3<f32> {
+fn sky_gradient(b_4: SkyGradient, ray_7: Ray) -> vec3<f32> {
     let _e3 = normalize_vec3f(ray_7.dir);
     let y = _e3.y;
     if (y < 0f) {
-        return mix(b.horizon, b.ground, vec3(min((-(y) * 4f), 1f)));
+        return mix(b_4.horizon, b_4.ground, vec3(min((-(y) * 4f), 1f)));
     }
-    return mix(b.horizon, b.zenith, vec3(sqrt(y)));
+    return mix(b_4.horizon, b_4.zenith, vec3(sqrt(y)));
 }
 
 fn dispatch_miss(type_id_1: u32, offset_3: u32, ray_8: Ray) -> vec3<f32> {
@@ -900,8 +928,8 @@ fn dispatch_secondary_rays(type_id_4: u32, offset_8: u32, ray_18: Ray, hit_6: Hi
 fn offset_origin(p_2: vec3<f32>, n_3: vec3<f32>) -> vec3<f32> {
     let _e3 = frame;
     let root_1 = nodes[_e3.tlas_root];
-    let a_1 = max(abs(p_2), max(abs(root_1.min), abs(root_1.max)));
-    let m_4 = max(max(a_1.x, a_1.y), a_1.z);
+    let a_5 = max(abs(p_2), max(abs(root_1.min), abs(root_1.max)));
+    let m_4 = max(max(a_5.x, a_5.y), a_5.z);
     return (p_2 + (n_3 * vec3((m_4 * (1f / 65536f)))));
 }
 
@@ -1130,13 +1158,31 @@ fn render_pixel(pixel_3: vec2<u32>) {
     return;
 }
 
-@compute @workgroup_size(8, 8, 1) 
-fn render(@builtin(global_invocation_id) gid: vec3<u32>) {
-    let _e2 = tile;
-    let _e7 = vec2<u32>(gid.x, gid.y);
-    if any((_e7 >= _e2.extent)) {
+fn render_invocation(id: vec2<u32>) {
+    let tile_2 = tile;
+    let size_1 = vec2<u32>(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    let _e11 = div_vec2u(((tile_2.extent + size_1) - vec2(1u)), size_1);
+    let count_2 = (_e11.x * _e11.y);
+    if (count_2 == 0u) {
         return;
     }
-    render_pixel((_e2.origin + _e7));
+    let _e17 = div_vec2u(id, size_1);
+    let order = ((_e17.y * _e11.x) + _e17.x);
+    let _e24 = rem_u32_(SCATTER, count_2);
+    let _e26 = rem_u32_((order * _e24), count_2);
+    let _e28 = rem_u32_(_e26, _e11.x);
+    let _e30 = div_u32_(_e26, _e11.x);
+    let _e33 = rem_vec2u(id, size_1);
+    let local = ((vec2<u32>(_e28, _e30) * size_1) + _e33);
+    if any((local >= tile_2.extent)) {
+        return;
+    }
+    render_pixel((tile_2.origin + local));
+    return;
+}
+
+@compute @workgroup_size(8, 8, 1) 
+fn render(@builtin(global_invocation_id) gid: vec3<u32>) {
+    render_invocation(vec2<u32>(gid.x, gid.y));
     return;
 }

@@ -1,3 +1,11 @@
+struct TileParams {
+    origin: vec2<u32>,
+    extent: vec2<u32>,
+    image_size: vec2<u32>,
+    tile_index: u32,
+    frame: u32,
+}
+
 struct FrameUniforms {
     samples_per_pass: u32,
     total_samples: u32,
@@ -12,14 +20,6 @@ struct FrameUniforms {
     camera_offset: u32,
     background_type: u32,
     background_offset: u32,
-}
-
-struct TileParams {
-    origin: vec2<u32>,
-    extent: vec2<u32>,
-    image_size: vec2<u32>,
-    tile_index: u32,
-    frame: u32,
 }
 
 struct Ray {
@@ -161,6 +161,9 @@ struct Frame {
     next: u32,
 }
 
+const WORKGROUP_WIDTH: u32 = 8u;
+const WORKGROUP_HEIGHT: u32 = 8u;
+const SCATTER: u32 = 1000003u;
 const RAY_CAMERA: u32 = 0u;
 const NO_HIT: u32 = 4294967295u;
 const HAS_MEDIA: bool = false;
@@ -180,10 +183,10 @@ const STACK_SIZE: u32 = 4u;
 const MAX_SPAWN: u32 = 1u;
 const RAY_SECONDARY: u32 = 1u;
 
-@group(0) @binding(0) 
-var<uniform> frame: FrameUniforms;
 @group(0) @binding(1) 
 var<uniform> tile: TileParams;
+@group(0) @binding(0) 
+var<uniform> frame: FrameUniforms;
 var<private> rng_state: u32;
 @group(0) @binding(6) 
 var<storage> params: array<u32>;
@@ -207,6 +210,31 @@ var<private> spawn_count: u32;
 var<storage, read_write> accum: array<vec4<f32>>;
 @group(0) @binding(9) 
 var<storage, read_write> counters: array<atomic<u32>>;
+
+fn div_vec2u(a: vec2<u32>, b: vec2<u32>) -> vec2<u32> {
+    let by_zero = (b == vec2(0u));
+    let divisor = select(b, vec2(1u), by_zero);
+    return (a / divisor);
+}
+
+fn rem_u32_(a_1: u32, b_1: u32) -> u32 {
+    let by_zero_1 = (b_1 == 0u);
+    let divisor_1 = select(b_1, 1u, by_zero_1);
+    return select((a_1 % divisor_1), 0u, by_zero_1);
+}
+
+fn div_u32_(a_2: u32, b_2: u32) -> u32 {
+    let by_zero_2 = (b_2 == 0u);
+    let divisor_2 = select(b_2, 1u, by_zero_2);
+    return (a_2 / divisor_2);
+}
+
+fn rem_vec2u(a_3: vec2<u32>, b_3: vec2<u32>) -> vec2<u32> {
+    let _e3 = vec2(0u);
+    let by_zero_3 = (b_3 == _e3);
+    let divisor_3 = select(b_3, vec2(1u), by_zero_3);
+    return select((a_3 % divisor_3), _e3, by_zero_3);
+}
 
 fn pcg_hash(x: u32) -> u32 {
     let state = ((x * 747796405u) + 2891336453u);
@@ -344,15 +372,15 @@ fn prepare_triangle_ray(ray_1: Ray) -> TriangleRay {
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32> {
     let _e8 = triangles[(slot * 3u)];
-    let a_1 = (_e8.xyz - r_1.origin);
+    let a_5 = (_e8.xyz - r_1.origin);
     let _e18 = triangles[((slot * 3u) + 1u)];
-    let b_2 = (_e18.xyz - r_1.origin);
+    let b_6 = (_e18.xyz - r_1.origin);
     let _e28 = triangles[((slot * 3u) + 2u)];
     let c_6 = (_e28.xyz - r_1.origin);
-    let ax = (a_1[min(r_1.kx, 2u)] - (r_1.shear.x * a_1[min(r_1.kz, 2u)]));
-    let ay = (a_1[min(r_1.ky, 2u)] - (r_1.shear.y * a_1[min(r_1.kz, 2u)]));
-    let bx = (b_2[min(r_1.kx, 2u)] - (r_1.shear.x * b_2[min(r_1.kz, 2u)]));
-    let by = (b_2[min(r_1.ky, 2u)] - (r_1.shear.y * b_2[min(r_1.kz, 2u)]));
+    let ax = (a_5[min(r_1.kx, 2u)] - (r_1.shear.x * a_5[min(r_1.kz, 2u)]));
+    let ay = (a_5[min(r_1.ky, 2u)] - (r_1.shear.y * a_5[min(r_1.kz, 2u)]));
+    let bx = (b_6[min(r_1.kx, 2u)] - (r_1.shear.x * b_6[min(r_1.kz, 2u)]));
+    let by = (b_6[min(r_1.ky, 2u)] - (r_1.shear.y * b_6[min(r_1.kz, 2u)]));
     let cx = (c_6[min(r_1.kx, 2u)] - (r_1.shear.x * c_6[min(r_1.kz, 2u)]));
     let cy = (c_6[min(r_1.ky, 2u)] - (r_1.shear.y * c_6[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
@@ -361,7 +389,7 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
-    let t_5 = ((((u * (r_1.shear.z * a_1[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_2[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
+    let t_5 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
     let hit_9 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     let _e173 = F32_INF;
     return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_5, (v_1 * rcp), (w * rcp)), hit_9);
@@ -415,9 +443,9 @@ fn finish_hit(ray_2: Ray, c: Candidate) -> Hit {
     n_shade = c.normal;
     if (inst_5.geometry_type == MESH_GEOMETRY) {
         let _e35 = load_triangle(c.primitive);
-        let b_3 = c.uv;
-        let w_2 = ((1f - b_3.x) - b_3.y);
-        let _e56 = point_to_world(inst_5, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_3.x))) + (_e35.v2_ * vec3(b_3.y))));
+        let b_7 = c.uv;
+        let w_2 = ((1f - b_7.x) - b_7.y);
+        let _e56 = point_to_world(inst_5, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_7.x))) + (_e35.v2_ * vec3(b_7.y))));
         hit.position = _e56;
         n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
         let a0_ = attributes[(c.primitive * 2u)];
@@ -425,7 +453,7 @@ fn finish_hit(ray_2: Ray, c: Candidate) -> Hit {
         let _e79 = decode_octahedral(a0_.x);
         let _e83 = decode_octahedral(a0_.y);
         let _e89 = decode_octahedral(a0_.z);
-        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_3.x))) + (_e89 * vec3(b_3.y)));
+        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_7.x))) + (_e89 * vec3(b_7.y)));
         let _e94 = n_shade;
         let _e95 = n_shade;
         if (dot(_e94, _e95) < 0.000000000001f) {
@@ -435,7 +463,7 @@ fn finish_hit(ray_2: Ray, c: Candidate) -> Hit {
         let uv0_ = unpack2x16float(a0_.w);
         let uv1_ = unpack2x16float(a1_.x);
         let uv2_ = unpack2x16float(a1_.y);
-        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_3.x))) + (uv2_ * vec2(b_3.y)));
+        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_7.x))) + (uv2_ * vec2(b_7.y)));
         let _e123 = triangles[(c.primitive * 3u)];
         hit.primitive = bitcast<u32>(_e123.w);
     }
@@ -470,10 +498,10 @@ fn i32_from_f32_(x_1: f32) -> i32 {
     return select(i32(min(max(x_1, -2147483600f), 2147483500f)), 0i, ((bitcast<u32>(x_1) & 2147483647u) > 2139095040u));
 }
 
-fn rem_i32_(a: i32, b: i32) -> i32 {
-    let by_zero = (b == 0i);
-    let divisor = select(select(b, 1i, by_zero), 1i, ((a == i32(-2147483648)) & (b == -1i)));
-    return select((a - (divisor * (a / divisor))), 0i, by_zero);
+fn rem_i32_(a_4: i32, b_4: i32) -> i32 {
+    let by_zero_4 = (b_4 == 0i);
+    let divisor_4 = select(select(b_4, 1i, by_zero_4), 1i, ((a_4 == i32(-2147483648)) & (b_4 == -1i)));
+    return select((a_4 - (divisor_4 * (a_4 / divisor_4))), 0i, by_zero_4);
 }
 
 fn srgb_channel(c_1: f32) -> f32 {
@@ -524,11 +552,11 @@ fn sample_texture(t_1: u32, uv: vec2<f32>) -> vec4<f32> {
     let _e28 = i32_from_f32_(f_1.y);
     let _e29 = texel_at(t_1, _e26, _e28);
     let _e32 = texel_at(t_1, (_e26 + 1i), _e28);
-    let a_2 = mix(_e29, _e32, vec4(fr.x));
+    let a_6 = mix(_e29, _e32, vec4(fr.x));
     let _e38 = texel_at(t_1, _e26, (_e28 + 1i));
     let _e43 = texel_at(t_1, (_e26 + 1i), (_e28 + 1i));
-    let b_4 = mix(_e38, _e43, vec4(fr.x));
-    return mix(a_2, b_4, vec4(fr.y));
+    let b_8 = mix(_e38, _e43, vec4(fr.x));
+    return mix(a_6, b_8, vec4(fr.y));
 }
 
 fn gltf_masked_any_hit(m: GltfMaskedMaterial, ray_3: Ray, hit_1: Hit) -> bool {
@@ -876,13 +904,13 @@ fn load_SkyGradient(offset_4: u32) -> SkyGradient {
     return SkyGradient(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)));
 }
 
-fn sky_gradient(b_1: SkyGradient, ray_9: Ray) -> vec3<f32> {
+fn sky_gradient(b_5: SkyGradient, ray_9: Ray) -> vec3<f32> {
     let _e3 = normalize_vec3f(ray_9.dir);
     let y_1 = _e3.y;
     if (y_1 < 0f) {
-        return mix(b_1.horizon, b_1.ground, vec3(min((-(y_1) * 4f), 1f)));
+        return mix(b_5.horizon, b_5.ground, vec3(min((-(y_1) * 4f), 1f)));
     }
-    return mix(b_1.horizon, b_1.zenith, vec3(sqrt(y_1)));
+    return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y_1)));
 }
 
 fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_10: Ray) -> vec3<f32> {
@@ -938,8 +966,8 @@ fn load_DirectionalLight(offset_7: u32) -> DirectionalLight {
 fn offset_origin(p_2: vec3<f32>, n_2: vec3<f32>) -> vec3<f32> {
     let _e3 = frame;
     let root_1 = nodes[_e3.tlas_root];
-    let a_3 = max(abs(p_2), max(abs(root_1.min), abs(root_1.max)));
-    let m_3 = max(max(a_3.x, a_3.y), a_3.z);
+    let a_7 = max(abs(p_2), max(abs(root_1.min), abs(root_1.max)));
+    let m_3 = max(max(a_7.x, a_7.y), a_7.z);
     return (p_2 + (n_2 * vec3((m_3 * (1f / 65536f)))));
 }
 
@@ -1399,13 +1427,31 @@ fn render_pixel(pixel_3: vec2<u32>) {
     return;
 }
 
-@compute @workgroup_size(8, 8, 1) 
-fn render(@builtin(global_invocation_id) gid: vec3<u32>) {
-    let _e2 = tile;
-    let _e7 = vec2<u32>(gid.x, gid.y);
-    if any((_e7 >= _e2.extent)) {
+fn render_invocation(id: vec2<u32>) {
+    let tile_2 = tile;
+    let size_1 = vec2<u32>(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    let _e11 = div_vec2u(((tile_2.extent + size_1) - vec2(1u)), size_1);
+    let count_2 = (_e11.x * _e11.y);
+    if (count_2 == 0u) {
         return;
     }
-    render_pixel((_e2.origin + _e7));
+    let _e17 = div_vec2u(id, size_1);
+    let order = ((_e17.y * _e11.x) + _e17.x);
+    let _e24 = rem_u32_(SCATTER, count_2);
+    let _e26 = rem_u32_((order * _e24), count_2);
+    let _e28 = rem_u32_(_e26, _e11.x);
+    let _e30 = div_u32_(_e26, _e11.x);
+    let _e33 = rem_vec2u(id, size_1);
+    let local = ((vec2<u32>(_e28, _e30) * size_1) + _e33);
+    if any((local >= tile_2.extent)) {
+        return;
+    }
+    render_pixel((tile_2.origin + local));
+    return;
+}
+
+@compute @workgroup_size(8, 8, 1) 
+fn render(@builtin(global_invocation_id) gid: vec3<u32>) {
+    render_invocation(vec2<u32>(gid.x, gid.y));
     return;
 }

@@ -3,6 +3,13 @@
 #extension GL_ARB_shader_storage_buffer_object : require
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
+struct TileParams {
+    uvec2 origin;
+    uvec2 extent;
+    uvec2 image_size;
+    uint tile_index;
+    uint frame;
+};
 struct FrameUniforms {
     uint samples_per_pass;
     uint total_samples;
@@ -17,13 +24,6 @@ struct FrameUniforms {
     uint camera_offset;
     uint background_type;
     uint background_offset;
-};
-struct TileParams {
-    uvec2 origin;
-    uvec2 extent;
-    uvec2 image_size;
-    uint tile_index;
-    uint frame;
 };
 struct Ray {
     vec3 origin;
@@ -153,6 +153,9 @@ struct Frame {
     uint count;
     uint next;
 };
+const uint WORKGROUP_WIDTH = 8u;
+const uint WORKGROUP_HEIGHT = 8u;
+const uint SCATTER = 1000003u;
 const uint RAY_CAMERA = 0u;
 const uint NO_HIT = 4294967295u;
 const bool HAS_MEDIA = false;
@@ -172,9 +175,9 @@ const uint STACK_SIZE = 4u;
 const uint MAX_SPAWN = 1u;
 const uint RAY_SECONDARY = 1u;
 
-layout(std140, binding = 0) uniform FrameUniforms_block_0Compute { FrameUniforms _group_0_binding_0_cs; };
+layout(std140, binding = 1) uniform TileParams_block_0Compute { TileParams _group_0_binding_1_cs; };
 
-layout(std140, binding = 1) uniform TileParams_block_1Compute { TileParams _group_0_binding_1_cs; };
+layout(std140, binding = 0) uniform FrameUniforms_block_1Compute { FrameUniforms _group_0_binding_0_cs; };
 
 uint rng_state = 0u;
 
@@ -204,6 +207,31 @@ layout(std430, binding = 8) buffer type_10_block_7Compute { vec4 _group_0_bindin
 
 layout(std430, binding = 9) buffer type_19_block_8Compute { uint _group_0_binding_9_cs[]; };
 
+
+uvec2 div_vec2u(uvec2 a, uvec2 b) {
+    bvec2 by_zero = equal(b, uvec2(0u));
+    uvec2 divisor = mix(b, uvec2(1u), by_zero);
+    return (a / divisor);
+}
+
+uint rem_u32_(uint a_1, uint b_1) {
+    bool by_zero_1 = (b_1 == 0u);
+    uint divisor_1 = (by_zero_1 ? 1u : b_1);
+    return (by_zero_1 ? 0u : (a_1 % divisor_1));
+}
+
+uint div_u32_(uint a_2, uint b_2) {
+    bool by_zero_2 = (b_2 == 0u);
+    uint divisor_2 = (by_zero_2 ? 1u : b_2);
+    return (a_2 / divisor_2);
+}
+
+uvec2 rem_vec2u(uvec2 a_3, uvec2 b_3) {
+    uvec2 _e3 = uvec2(0u);
+    bvec2 by_zero_3 = equal(b_3, _e3);
+    uvec2 divisor_3 = mix(b_3, uvec2(1u), by_zero_3);
+    return mix((a_3 % divisor_3), _e3, by_zero_3);
+}
 
 uint pcg_hash(uint x) {
     uint state = ((x * 747796405u) + 2891336453u);
@@ -338,15 +366,15 @@ TriangleRay prepare_triangle_ray(Ray ray_1) {
 
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     vec4 _e8 = _group_0_binding_4_cs[(slot * 3u)];
-    vec3 a = (_e8.xyz - r_1.origin);
+    vec3 a_4 = (_e8.xyz - r_1.origin);
     vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
-    vec3 b_2 = (_e18.xyz - r_1.origin);
+    vec3 b_6 = (_e18.xyz - r_1.origin);
     vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
     vec3 c_4 = (_e28.xyz - r_1.origin);
-    float ax = (a[min(r_1.kx, 2u)] - (r_1.shear.x * a[min(r_1.kz, 2u)]));
-    float ay = (a[min(r_1.ky, 2u)] - (r_1.shear.y * a[min(r_1.kz, 2u)]));
-    float bx = (b_2[min(r_1.kx, 2u)] - (r_1.shear.x * b_2[min(r_1.kz, 2u)]));
-    float by = (b_2[min(r_1.ky, 2u)] - (r_1.shear.y * b_2[min(r_1.kz, 2u)]));
+    float ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
+    float ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
+    float bx = (b_6[min(r_1.kx, 2u)] - (r_1.shear.x * b_6[min(r_1.kz, 2u)]));
+    float by = (b_6[min(r_1.ky, 2u)] - (r_1.shear.y * b_6[min(r_1.kz, 2u)]));
     float cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
     float cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
@@ -355,7 +383,7 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
-    float t_5 = ((((u * (r_1.shear.z * a[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_2[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    float t_5 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
     bool hit_5 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_5 ? vec3(t_5, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
@@ -514,15 +542,15 @@ Box load_Box(uint offset_2) {
     return Box(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)));
 }
 
-Intersection box_intersect(Box b, Ray ray_4) {
+Intersection box_intersect(Box b_4, Ray ray_4) {
     float t_1 = 0.0;
     uint axis = 0u;
     float sign_ = 0.0;
     vec3 n = vec3(0.0);
     bvec3 tiny_1 = lessThan(abs(ray_4.dir), vec3(1e-30));
     vec3 inv = (vec3(1.0) / mix(ray_4.dir, vec3(1e-30), tiny_1));
-    vec3 t_lo = ((b.min_ - ray_4.origin) * inv);
-    vec3 t_hi = ((b.max_ - ray_4.origin) * inv);
+    vec3 t_lo = ((b_4.min_ - ray_4.origin) * inv);
+    vec3 t_hi = ((b_4.max_ - ray_4.origin) * inv);
     vec3 near_3 = min(t_lo, t_hi);
     vec3 far_3 = max(t_lo, t_hi);
     float entry = max(max(near_3.x, near_3.y), near_3.z);
@@ -551,7 +579,7 @@ Intersection box_intersect(Box b, Ray ray_4) {
     uint _e99 = axis;
     n[min(_e91, 2u)] = (_e95 * ((ray_4.dir[min(_e99, 2u)] >= 0.0) ? 1.0 : -1.0));
     float _e109 = t_1;
-    vec3 rel = (((ray_4.origin + (ray_4.dir * vec3(_e109))) - b.min_) / max((b.max_ - b.min_), vec3(1e-30)));
+    vec3 rel = (((ray_4.origin + (ray_4.dir * vec3(_e109))) - b_4.min_) / max((b_4.max_ - b_4.min_), vec3(1e-30)));
     uint _e124 = axis;
     uint _e129 = axis;
     vec2 uv = ((_e129 == 0u) ? rel.zy : ((_e124 == 1u) ? rel.xz : rel.xy));
@@ -571,18 +599,18 @@ Sphere load_Sphere(uint offset_3) {
 Intersection sphere_intersect(Sphere s, Ray ray_5) {
     float t_2 = 0.0;
     vec3 f_1 = (ray_5.origin - s.center);
-    float a_1 = dot(ray_5.dir, ray_5.dir);
-    float b_3 = -(dot(f_1, ray_5.dir));
-    vec3 l_5 = (f_1 + (ray_5.dir * vec3((b_3 / a_1))));
+    float a_5 = dot(ray_5.dir, ray_5.dir);
+    float b_7 = -(dot(f_1, ray_5.dir));
+    vec3 l_5 = (f_1 + (ray_5.dir * vec3((b_7 / a_5))));
     float r2_ = (s.radius * s.radius);
-    float disc = (a_1 * (r2_ - dot(l_5, l_5)));
-    if ((!((disc >= 0.0)) || !((a_1 > 0.0)))) {
+    float disc = (a_5 * (r2_ - dot(l_5, l_5)));
+    if ((!((disc >= 0.0)) || !((a_5 > 0.0)))) {
         uint _e30 = F32_INF;
         return Intersection(uintBitsToFloat(_e30), vec3(0.0, 0.0, 1.0), vec2(0.0));
     }
-    float q = (b_3 + (((b_3 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
+    float q = (b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
     float t0_1 = ((dot(f_1, f_1) - r2_) / q);
-    float t1_1 = (q / a_1);
+    float t1_1 = (q / a_5);
     t_2 = min(t0_1, t1_1);
     float _e52 = t_2;
     if (!((_e52 >= ray_5.tmin))) {
@@ -693,9 +721,9 @@ Hit finish_hit(Ray ray_8, Candidate c_1) {
     n_shade = c_1.normal;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Triangle _e35 = load_triangle(c_1.primitive);
-        vec2 b_4 = c_1.uv;
-        float w_2 = ((1.0 - b_4.x) - b_4.y);
-        vec3 _e56 = point_to_world(inst_6, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_4.x))) + (_e35.v2_ * vec3(b_4.y))));
+        vec2 b_8 = c_1.uv;
+        float w_2 = ((1.0 - b_8.x) - b_8.y);
+        vec3 _e56 = point_to_world(inst_6, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_8.x))) + (_e35.v2_ * vec3(b_8.y))));
         hit.position = _e56;
         n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
         uvec4 a0_ = _group_0_binding_5_cs[(c_1.primitive * 2u)];
@@ -703,7 +731,7 @@ Hit finish_hit(Ray ray_8, Candidate c_1) {
         vec3 _e79 = decode_octahedral(a0_.x);
         vec3 _e83 = decode_octahedral(a0_.y);
         vec3 _e89 = decode_octahedral(a0_.z);
-        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_4.x))) + (_e89 * vec3(b_4.y)));
+        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_8.x))) + (_e89 * vec3(b_8.y)));
         vec3 _e94 = n_shade;
         vec3 _e95 = n_shade;
         if ((dot(_e94, _e95) < 1e-12)) {
@@ -713,7 +741,7 @@ Hit finish_hit(Ray ray_8, Candidate c_1) {
         vec2 uv0_ = unpackHalf2x16(a0_.w);
         vec2 uv1_ = unpackHalf2x16(a1_.x);
         vec2 uv2_ = unpackHalf2x16(a1_.y);
-        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_4.x))) + (uv2_ * vec2(b_4.y)));
+        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_8.x))) + (uv2_ * vec2(b_8.y)));
         vec4 _e123 = _group_0_binding_4_cs[(c_1.primitive * 3u)];
         hit.primitive = floatBitsToUint(_e123.w);
     }
@@ -896,8 +924,8 @@ ConstantBackground load_ConstantBackground(uint offset_5) {
     return ConstantBackground(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 constant_background(ConstantBackground b_1, Ray ray_10) {
-    return b_1.color;
+vec3 constant_background(ConstantBackground b_5, Ray ray_10) {
+    return b_5.color;
 }
 
 vec3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_11) {
@@ -960,8 +988,8 @@ DirectionalLight load_DirectionalLight(uint offset_9) {
 vec3 offset_origin(vec3 p_2, vec3 n_3) {
     FrameUniforms _e3 = _group_0_binding_0_cs;
     GpuNode root_1 = _group_0_binding_2_cs[_e3.tlas_root];
-    vec3 a_2 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
-    float m_1 = max(max(a_2.x, a_2.y), a_2.z);
+    vec3 a_6 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
+    float m_1 = max(max(a_6.x, a_6.y), a_6.z);
     return (p_2 + (n_3 * vec3((m_1 * (1.0 / 65536.0)))));
 }
 
@@ -1035,10 +1063,10 @@ SphereLight load_SphereLight(uint offset_11) {
 
 mat3x3 orthonormal_basis(vec3 n_5) {
     float sign_1 = (((floatBitsToUint(n_5.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
-    float a_3 = (-1.0 / (sign_1 + n_5.z));
-    float b_5 = ((n_5.x * n_5.y) * a_3);
+    float a_7 = (-1.0 / (sign_1 + n_5.z));
+    float b_9 = ((n_5.x * n_5.y) * a_7);
     float _e16 = (sign_1 * n_5.x);
-    return mat3x3(vec3((1.0 + ((_e16 * n_5.x) * a_3)), (sign_1 * b_5), -(_e16)), vec3(b_5, (sign_1 + ((n_5.y * n_5.y) * a_3)), -(n_5.y)), n_5);
+    return mat3x3(vec3((1.0 + ((_e16 * n_5.x) * a_7)), (sign_1 * b_9), -(_e16)), vec3(b_9, (sign_1 + ((n_5.y * n_5.y) * a_7)), -(n_5.y)), n_5);
 }
 
 LightSample sphere_light(SphereLight l_2, vec3 position_3, vec3 normal_3) {
@@ -1417,14 +1445,32 @@ void render_pixel(uvec2 pixel_3) {
     return;
 }
 
-void main() {
-    uvec3 gid = gl_GlobalInvocationID;
-    TileParams _e2 = _group_0_binding_1_cs;
-    uvec2 _e7 = uvec2(gid.x, gid.y);
-    if (any(greaterThanEqual(_e7, _e2.extent))) {
+void render_invocation(uvec2 id) {
+    TileParams tile_2 = _group_0_binding_1_cs;
+    uvec2 size_1 = uvec2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    uvec2 _e11 = div_vec2u(((tile_2.extent + size_1) - uvec2(1u)), size_1);
+    uint count_2 = (_e11.x * _e11.y);
+    if ((count_2 == 0u)) {
         return;
     }
-    render_pixel((_e2.origin + _e7));
+    uvec2 _e17 = div_vec2u(id, size_1);
+    uint order = ((_e17.y * _e11.x) + _e17.x);
+    uint _e24 = rem_u32_(SCATTER, count_2);
+    uint _e26 = rem_u32_((order * _e24), count_2);
+    uint _e28 = rem_u32_(_e26, _e11.x);
+    uint _e30 = div_u32_(_e26, _e11.x);
+    uvec2 _e33 = rem_vec2u(id, size_1);
+    uvec2 local = ((uvec2(_e28, _e30) * size_1) + _e33);
+    if (any(greaterThanEqual(local, tile_2.extent))) {
+        return;
+    }
+    render_pixel((tile_2.origin + local));
+    return;
+}
+
+void main() {
+    uvec3 gid = gl_GlobalInvocationID;
+    render_invocation(uvec2(gid.x, gid.y));
     return;
 }
 

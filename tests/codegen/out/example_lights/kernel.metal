@@ -14,6 +14,13 @@ struct _mslBufferSizes {
     uint size15;
 };
 
+struct TileParams {
+    metal::uint2 origin;
+    metal::uint2 extent;
+    metal::uint2 image_size;
+    uint tile_index;
+    uint frame;
+};
 struct FrameUniforms {
     uint samples_per_pass;
     uint total_samples;
@@ -28,13 +35,6 @@ struct FrameUniforms {
     uint camera_offset;
     uint background_type;
     uint background_offset;
-};
-struct TileParams {
-    metal::uint2 origin;
-    metal::uint2 extent;
-    metal::uint2 image_size;
-    uint tile_index;
-    uint frame;
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -192,6 +192,9 @@ struct type_16 {
     Frame inner[4];
 };
 typedef metal::atomic_uint type_19[1];
+constant uint WORKGROUP_WIDTH = 8u;
+constant uint WORKGROUP_HEIGHT = 8u;
+constant uint SCATTER = 1000003u;
 constant uint RAY_CAMERA = 0u;
 constant uint NO_HIT = 4294967295u;
 constant bool HAS_MEDIA = false;
@@ -210,6 +213,59 @@ constant uint MAX_DEPTH = 4u;
 constant uint STACK_SIZE = 4u;
 constant uint MAX_SPAWN = 1u;
 constant uint RAY_SECONDARY = 1u;
+
+metal::uint2 naga_div(metal::uint2 lhs, metal::uint2 rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+metal::uint2 div_vec2u(
+    metal::uint2 a,
+    metal::uint2 b
+) {
+    metal::bool2 by_zero = b == metal::uint2(0u);
+    metal::uint2 divisor = metal::select(b, metal::uint2(1u), by_zero);
+    return naga_div(a, divisor);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint rem_u32_(
+    uint a_1,
+    uint b_1
+) {
+    bool by_zero_1 = b_1 == 0u;
+    uint divisor_1 = by_zero_1 ? 1u : b_1;
+    return by_zero_1 ? 0u : naga_mod(a_1, divisor_1);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint div_u32_(
+    uint a_2,
+    uint b_2
+) {
+    bool by_zero_2 = b_2 == 0u;
+    uint divisor_2 = by_zero_2 ? 1u : b_2;
+    return naga_div(a_2, divisor_2);
+}
+
+metal::uint2 naga_mod(metal::uint2 lhs, metal::uint2 rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+metal::uint2 rem_vec2u(
+    metal::uint2 a_3,
+    metal::uint2 b_3
+) {
+    metal::uint2 _e3 = metal::uint2(0u);
+    metal::bool2 by_zero_3 = b_3 == _e3;
+    metal::uint2 divisor_3 = metal::select(b_3, metal::uint2(1u), by_zero_3);
+    return metal::select(naga_mod(a_3, divisor_3), _e3, by_zero_3);
+}
 
 uint pcg_hash(
     uint x
@@ -301,8 +357,8 @@ Ray pinhole_ray(
     Pinhole cam,
     metal::uint2 pixel_1,
     uint sample_1,
-    constant FrameUniforms& frame,
     constant TileParams& tile,
+    constant FrameUniforms& frame,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -332,15 +388,15 @@ Ray dispatch_ray_generation(
     uint offset_1,
     metal::uint2 pixel_2,
     uint sample_2,
-    constant FrameUniforms& frame,
     constant TileParams& tile,
+    constant FrameUniforms& frame,
     thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Pinhole _e3 = load_Pinhole(offset_1, params, _buffer_sizes);
-    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2, frame, tile, rng_state, F32_INF);
+    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2, tile, frame, rng_state, F32_INF);
     return _e4;
 }
 
@@ -401,15 +457,15 @@ metal::float3 hit_triangle(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e8 = triangles[slot * 3u];
-    metal::float3 a = _e8.xyz - r_1.origin;
+    metal::float3 a_4 = _e8.xyz - r_1.origin;
     metal::float4 _e18 = triangles[(slot * 3u) + 1u];
-    metal::float3 b_2 = _e18.xyz - r_1.origin;
+    metal::float3 b_6 = _e18.xyz - r_1.origin;
     metal::float4 _e28 = triangles[(slot * 3u) + 2u];
     metal::float3 c_4 = _e28.xyz - r_1.origin;
-    float ax = a[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a[metal::min(r_1.kz, 2u)]);
-    float ay = a[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a[metal::min(r_1.kz, 2u)]);
-    float bx = b_2[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_2[metal::min(r_1.kz, 2u)]);
-    float by = b_2[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_2[metal::min(r_1.kz, 2u)]);
+    float ax = a_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_4[metal::min(r_1.kz, 2u)]);
+    float ay = a_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_4[metal::min(r_1.kz, 2u)]);
+    float bx = b_6[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_6[metal::min(r_1.kz, 2u)]);
+    float by = b_6[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_6[metal::min(r_1.kz, 2u)]);
     float cx = c_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_4[metal::min(r_1.kz, 2u)]);
     float cy = c_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_4[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
@@ -418,7 +474,7 @@ metal::float3 hit_triangle(
     bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
-    float t_5 = (((u * (r_1.shear[2] * a[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_2[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_5 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_5 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1);
     uint _e173 = F32_INF;
     return hit_5 ? metal::float3(t_5, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
@@ -620,7 +676,7 @@ Box load_Box(
 }
 
 Intersection box_intersect(
-    Box b,
+    Box b_4,
     Ray ray_4,
     thread uint& F32_INF
 ) {
@@ -630,8 +686,8 @@ Intersection box_intersect(
     metal::float3 n = {};
     metal::bool3 tiny_1 = metal::abs(ray_4.dir) < metal::float3(0.000000000000000000000000000001);
     metal::float3 inv = metal::float3(1.0) / metal::select(ray_4.dir, metal::float3(0.000000000000000000000000000001), tiny_1);
-    metal::float3 t_lo = (b.min - ray_4.origin) * inv;
-    metal::float3 t_hi = (b.max - ray_4.origin) * inv;
+    metal::float3 t_lo = (b_4.min - ray_4.origin) * inv;
+    metal::float3 t_hi = (b_4.max - ray_4.origin) * inv;
     metal::float3 near_3 = metal::min(t_lo, t_hi);
     metal::float3 far_3 = metal::max(t_lo, t_hi);
     float entry = metal::max(metal::max(near_3.x, near_3.y), near_3.z);
@@ -660,7 +716,7 @@ Intersection box_intersect(
     uint _e99 = axis;
     n[metal::min(_e91, 2u)] = _e95 * ((ray_4.dir[metal::min(_e99, 2u)] >= 0.0) ? 1.0 : -1.0);
     float _e109 = t_1;
-    metal::float3 rel = ((ray_4.origin + (ray_4.dir * metal::float3(_e109))) - b.min) / metal::max(b.max - b.min, metal::float3(0.000000000000000000000000000001));
+    metal::float3 rel = ((ray_4.origin + (ray_4.dir * metal::float3(_e109))) - b_4.min) / metal::max(b_4.max - b_4.min, metal::float3(0.000000000000000000000000000001));
     uint _e124 = axis;
     uint _e129 = axis;
     metal::float2 uv = (_e129 == 0u) ? rel.zy : ((_e124 == 1u) ? rel.xz : rel.xy);
@@ -688,18 +744,18 @@ Intersection sphere_intersect(
 ) {
     float t_2 = {};
     metal::float3 f_1 = ray_5.origin - s.center;
-    float a_1 = metal::dot(ray_5.dir, ray_5.dir);
-    float b_3 = -(metal::dot(f_1, ray_5.dir));
-    metal::float3 l_5 = f_1 + (ray_5.dir * metal::float3(b_3 / a_1));
+    float a_5 = metal::dot(ray_5.dir, ray_5.dir);
+    float b_7 = -(metal::dot(f_1, ray_5.dir));
+    metal::float3 l_5 = f_1 + (ray_5.dir * metal::float3(b_7 / a_5));
     float r2_ = s.radius * s.radius;
-    float disc = a_1 * (r2_ - metal::dot(l_5, l_5));
-    if (!((disc >= 0.0)) || !((a_1 > 0.0))) {
+    float disc = a_5 * (r2_ - metal::dot(l_5, l_5));
+    if (!((disc >= 0.0)) || !((a_5 > 0.0))) {
         uint _e30 = F32_INF;
         return Intersection {as_type<float>(_e30), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     }
-    float q = b_3 + (((b_3 >= 0.0) ? 1.0 : -1.0) * metal::sqrt(disc));
+    float q = b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * metal::sqrt(disc));
     float t0_1 = (metal::dot(f_1, f_1) - r2_) / q;
-    float t1_1 = q / a_1;
+    float t1_1 = q / a_5;
     t_2 = metal::min(t0_1, t1_1);
     float _e52 = t_2;
     if (!((_e52 >= ray_5.tmin))) {
@@ -848,7 +904,7 @@ Hit finish_hit(
     n_shade = c_1.normal;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         Triangle _e35 = load_triangle(c_1.primitive, triangles, _buffer_sizes);
-        metal::float2 b_4 = c_1.uv;
+        metal::float2 b_8 = c_1.uv;
         float w_2 = (1.0 - c_1.uv.x) - c_1.uv.y;
         metal::float3 _e56 = point_to_world(inst_6, ((_e35.v0_ * metal::float3(w_2)) + (_e35.v1_ * metal::float3(c_1.uv.x))) + (_e35.v2_ * metal::float3(c_1.uv.y)));
         hit.position = _e56;
@@ -1089,10 +1145,10 @@ ConstantBackground load_ConstantBackground(
 }
 
 metal::float3 constant_background(
-    ConstantBackground b_1,
+    ConstantBackground b_5,
     Ray ray_10
 ) {
-    return b_1.color;
+    return b_5.color;
 }
 
 metal::float3 dispatch_miss(
@@ -1194,8 +1250,8 @@ metal::float3 offset_origin(
 ) {
     FrameUniforms _e3 = frame;
     GpuNode root_1 = nodes[_e3.tlas_root];
-    metal::float3 a_2 = metal::max(metal::abs(p_2), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
-    float m_1 = metal::max(metal::max(a_2.x, a_2.y), a_2.z);
+    metal::float3 a_6 = metal::max(metal::abs(p_2), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
+    float m_1 = metal::max(metal::max(a_6.x, a_6.y), a_6.z);
     return p_2 + (n_3 * metal::float3(m_1 * (1.0 / 65536.0)));
 }
 
@@ -1319,10 +1375,10 @@ metal::float3x3 orthonormal_basis(
     metal::float3 n_5
 ) {
     float sign_1 = ((as_type<uint>(n_5.z) & 2147483648u) != 0u) ? -1.0 : 1.0;
-    float a_3 = -1.0 / (sign_1 + n_5.z);
-    float b_5 = (n_5.x * n_5.y) * a_3;
+    float a_7 = -1.0 / (sign_1 + n_5.z);
+    float b_9 = (n_5.x * n_5.y) * a_7;
     float _e16 = sign_1 * n_5.x;
-    return metal::float3x3(metal::float3(1.0 + ((_e16 * n_5.x) * a_3), sign_1 * b_5, -(_e16)), metal::float3(b_5, sign_1 + ((n_5.y * n_5.y) * a_3), -(n_5.y)), n_5);
+    return metal::float3x3(metal::float3(1.0 + ((_e16 * n_5.x) * a_7), sign_1 * b_9, -(_e16)), metal::float3(b_9, sign_1 + ((n_5.y * n_5.y) * a_7), -(n_5.y)), n_5);
 }
 
 LightSample sphere_light(
@@ -1789,8 +1845,8 @@ metal::float3 finite_or_zero(
 
 void render_pixel(
     metal::uint2 pixel_3,
-    constant FrameUniforms& frame,
     constant TileParams& tile,
+    constant FrameUniforms& frame,
     thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1834,7 +1890,7 @@ void render_pixel(
         uint _e18 = s_1;
         uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, frame, tile, rng_state, params, F32_INF, _buffer_sizes);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
         ray_20 = _e23;
         ray_20.depth = 0u;
         ray_20.kind = RAY_CAMERA;
@@ -1867,12 +1923,54 @@ void render_pixel(
     return;
 }
 
+void render_invocation(
+    metal::uint2 id,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    device type_13 const& attributes,
+    thread uint& ray_count,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
+    thread uint& spawn_count,
+    device type_10& accum,
+    device type_19& counters,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    TileParams tile_2 = tile;
+    metal::uint2 size_1 = metal::uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    metal::uint2 _e11 = div_vec2u((tile_2.extent + size_1) - metal::uint2(1u), size_1);
+    uint count_2 = _e11.x * _e11.y;
+    if (count_2 == 0u) {
+        return;
+    }
+    metal::uint2 _e17 = div_vec2u(id, size_1);
+    uint order = (_e17.y * _e11.x) + _e17.x;
+    uint _e24 = rem_u32_(SCATTER, count_2);
+    uint _e26 = rem_u32_(order * _e24, count_2);
+    uint _e28 = rem_u32_(_e26, _e11.x);
+    uint _e30 = div_u32_(_e26, _e11.x);
+    metal::uint2 _e33 = rem_vec2u(id, size_1);
+    metal::uint2 local = (metal::uint2(_e28, _e30) * size_1) + _e33;
+    if (metal::any(local >= tile_2.extent)) {
+        return;
+    }
+    render_pixel(tile_2.origin + local, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
+    return;
+}
+
 struct renderInput {
 };
 [[max_total_threads_per_threadgroup(64)]] kernel void render(
   metal::uint3 gid [[thread_position_in_grid]]
-, constant FrameUniforms& frame [[buffer(0)]]
 , constant TileParams& tile [[buffer(1)]]
+, constant FrameUniforms& frame [[buffer(0)]]
 , device type_4 const& params [[buffer(6)]]
 , device type_8 const& instances [[buffer(3)]]
 , device type_9 const& nodes [[buffer(2)]]
@@ -1889,11 +1987,6 @@ struct renderInput {
     type_15 spawn_dirs = {};
     type_15 spawn_weights = {};
     uint spawn_count = {};
-    TileParams _e2 = tile;
-    metal::uint2 _e7 = metal::uint2(gid.x, gid.y);
-    if (metal::any(_e7 >= _e2.extent)) {
-        return;
-    }
-    render_pixel(_e2.origin + _e7, frame, tile, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
     return;
 }

@@ -1,3 +1,11 @@
+struct TileParams {
+    origin: vec2<u32>,
+    extent: vec2<u32>,
+    image_size: vec2<u32>,
+    tile_index: u32,
+    frame: u32,
+}
+
 struct FrameUniforms {
     samples_per_pass: u32,
     total_samples: u32,
@@ -12,14 +20,6 @@ struct FrameUniforms {
     camera_offset: u32,
     background_type: u32,
     background_offset: u32,
-}
-
-struct TileParams {
-    origin: vec2<u32>,
-    extent: vec2<u32>,
-    image_size: vec2<u32>,
-    tile_index: u32,
-    frame: u32,
 }
 
 struct Ray {
@@ -169,6 +169,9 @@ struct Frame {
     next: u32,
 }
 
+const WORKGROUP_WIDTH: u32 = 8u;
+const WORKGROUP_HEIGHT: u32 = 8u;
+const SCATTER: u32 = 1000003u;
 const RAY_CAMERA: u32 = 0u;
 const NO_HIT: u32 = 4294967295u;
 const HAS_MEDIA: bool = false;
@@ -188,10 +191,10 @@ const STACK_SIZE: u32 = 4u;
 const MAX_SPAWN: u32 = 1u;
 const RAY_SECONDARY: u32 = 1u;
 
-@group(0) @binding(0) 
-var<uniform> frame: FrameUniforms;
 @group(0) @binding(1) 
 var<uniform> tile: TileParams;
+@group(0) @binding(0) 
+var<uniform> frame: FrameUniforms;
 var<private> rng_state: u32;
 @group(0) @binding(6) 
 var<storage> params: array<u32>;
@@ -213,6 +216,31 @@ var<private> spawn_count: u32;
 var<storage, read_write> accum: array<vec4<f32>>;
 @group(0) @binding(9) 
 var<storage, read_write> counters: array<atomic<u32>>;
+
+fn div_vec2u(a: vec2<u32>, b: vec2<u32>) -> vec2<u32> {
+    let by_zero = (b == vec2(0u));
+    let divisor = select(b, vec2(1u), by_zero);
+    return (a / divisor);
+}
+
+fn rem_u32_(a_1: u32, b_1: u32) -> u32 {
+    let by_zero_1 = (b_1 == 0u);
+    let divisor_1 = select(b_1, 1u, by_zero_1);
+    return select((a_1 % divisor_1), 0u, by_zero_1);
+}
+
+fn div_u32_(a_2: u32, b_2: u32) -> u32 {
+    let by_zero_2 = (b_2 == 0u);
+    let divisor_2 = select(b_2, 1u, by_zero_2);
+    return (a_2 / divisor_2);
+}
+
+fn rem_vec2u(a_3: vec2<u32>, b_3: vec2<u32>) -> vec2<u32> {
+    let _e3 = vec2(0u);
+    let by_zero_3 = (b_3 == _e3);
+    let divisor_3 = select(b_3, vec2(1u), by_zero_3);
+    return select((a_3 % divisor_3), _e3, by_zero_3);
+}
 
 fn pcg_hash(x: u32) -> u32 {
     let state = ((x * 747796405u) + 2891336453u);
@@ -350,15 +378,15 @@ fn prepare_triangle_ray(ray_1: Ray) -> TriangleRay {
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32> {
     let _e8 = triangles[(slot * 3u)];
-    let a = (_e8.xyz - r_1.origin);
+    let a_4 = (_e8.xyz - r_1.origin);
     let _e18 = triangles[((slot * 3u) + 1u)];
-    let b_2 = (_e18.xyz - r_1.origin);
+    let b_6 = (_e18.xyz - r_1.origin);
     let _e28 = triangles[((slot * 3u) + 2u)];
     let c_4 = (_e28.xyz - r_1.origin);
-    let ax = (a[min(r_1.kx, 2u)] - (r_1.shear.x * a[min(r_1.kz, 2u)]));
-    let ay = (a[min(r_1.ky, 2u)] - (r_1.shear.y * a[min(r_1.kz, 2u)]));
-    let bx = (b_2[min(r_1.kx, 2u)] - (r_1.shear.x * b_2[min(r_1.kz, 2u)]));
-    let by = (b_2[min(r_1.ky, 2u)] - (r_1.shear.y * b_2[min(r_1.kz, 2u)]));
+    let ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
+    let ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
+    let bx = (b_6[min(r_1.kx, 2u)] - (r_1.shear.x * b_6[min(r_1.kz, 2u)]));
+    let by = (b_6[min(r_1.ky, 2u)] - (r_1.shear.y * b_6[min(r_1.kz, 2u)]));
     let cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
     let cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
@@ -367,7 +395,7 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
-    let t_5 = ((((u * (r_1.shear.z * a[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_2[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    let t_5 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
     let hit_5 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     let _e173 = F32_INF;
     return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_5, (v_1 * rcp), (w * rcp)), hit_5);
@@ -526,7 +554,7 @@ fn load_Box(offset_2: u32) -> Box {
     return Box(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)));
 }
 
-fn box_intersect(b: Box, ray_4: Ray) -> Intersection {
+fn box_intersect(b_4: Box, ray_4: Ray) -> Intersection {
     var t_1: f32;
     var axis: u32;
     var sign_: f32;
@@ -534,8 +562,8 @@ fn box_intersect(b: Box, ray_4: Ray) -> Intersection {
 
     let tiny_1 = (abs(ray_4.dir) < vec3(0.000000000000000000000000000001f));
     let inv = (vec3(1f) / select(ray_4.dir, vec3(0.000000000000000000000000000001f), tiny_1));
-    let t_lo = ((b.min - ray_4.origin) * inv);
-    let t_hi = ((b.max - ray_4.origin) * inv);
+    let t_lo = ((b_4.min - ray_4.origin) * inv);
+    let t_hi = ((b_4.max - ray_4.origin) * inv);
     let near_3 = min(t_lo, t_hi);
     let far_3 = max(t_lo, t_hi);
     let entry = max(max(near_3.x, near_3.y), near_3.z);
@@ -564,7 +592,7 @@ fn box_intersect(b: Box, ray_4: Ray) -> Intersection {
     let _e99 = axis;
     n[min(_e91, 2u)] = (_e95 * select(-1f, 1f, (ray_4.dir[min(_e99, 2u)] >= 0f)));
     let _e109 = t_1;
-    let rel = (((ray_4.origin + (ray_4.dir * vec3(_e109))) - b.min) / max((b.max - b.min), vec3(0.000000000000000000000000000001f)));
+    let rel = (((ray_4.origin + (ray_4.dir * vec3(_e109))) - b_4.min) / max((b_4.max - b_4.min), vec3(0.000000000000000000000000000001f)));
     let _e124 = axis;
     let _e129 = axis;
     let uv = select(select(rel.xy, rel.xz, (_e124 == 1u)), rel.zy, (_e129 == 0u));
@@ -585,18 +613,18 @@ fn sphere_intersect(s: Sphere, ray_5: Ray) -> Intersection {
     var t_2: f32;
 
     let f_1 = (ray_5.origin - s.center);
-    let a_1 = dot(ray_5.dir, ray_5.dir);
-    let b_3 = -(dot(f_1, ray_5.dir));
-    let l_5 = (f_1 + (ray_5.dir * vec3((b_3 / a_1))));
+    let a_5 = dot(ray_5.dir, ray_5.dir);
+    let b_7 = -(dot(f_1, ray_5.dir));
+    let l_5 = (f_1 + (ray_5.dir * vec3((b_7 / a_5))));
     let r2_ = (s.radius * s.radius);
-    let disc = (a_1 * (r2_ - dot(l_5, l_5)));
-    if (!((disc >= 0f)) || !((a_1 > 0f))) {
+    let disc = (a_5 * (r2_ - dot(l_5, l_5)));
+    if (!((disc >= 0f)) || !((a_5 > 0f))) {
         let _e30 = F32_INF;
         return Intersection(bitcast<f32>(_e30), vec3<f32>(0f, 0f, 1f), vec2<f32>());
     }
-    let q = (b_3 + (select(-1f, 1f, (b_3 >= 0f)) * sqrt(disc)));
+    let q = (b_7 + (select(-1f, 1f, (b_7 >= 0f)) * sqrt(disc)));
     let t0_1 = ((dot(f_1, f_1) - r2_) / q);
-    let t1_1 = (q / a_1);
+    let t1_1 = (q / a_5);
     t_2 = min(t0_1, t1_1);
     let _e52 = t_2;
     if !((_e52 >= ray_5.tmin)) {
@@ -709,9 +737,9 @@ fn finish_hit(ray_8: Ray, c_1: Candidate) -> Hit {
     n_shade = c_1.normal;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         let _e35 = load_triangle(c_1.primitive);
-        let b_4 = c_1.uv;
-        let w_2 = ((1f - b_4.x) - b_4.y);
-        let _e56 = point_to_world(inst_6, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_4.x))) + (_e35.v2_ * vec3(b_4.y))));
+        let b_8 = c_1.uv;
+        let w_2 = ((1f - b_8.x) - b_8.y);
+        let _e56 = point_to_world(inst_6, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_8.x))) + (_e35.v2_ * vec3(b_8.y))));
         hit.position = _e56;
         n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
         let a0_ = attributes[(c_1.primitive * 2u)];
@@ -719,7 +747,7 @@ fn finish_hit(ray_8: Ray, c_1: Candidate) -> Hit {
         let _e79 = decode_octahedral(a0_.x);
         let _e83 = decode_octahedral(a0_.y);
         let _e89 = decode_octahedral(a0_.z);
-        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_4.x))) + (_e89 * vec3(b_4.y)));
+        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_8.x))) + (_e89 * vec3(b_8.y)));
         let _e94 = n_shade;
         let _e95 = n_shade;
         if (dot(_e94, _e95) < 0.000000000001f) {
@@ -729,7 +757,7 @@ fn finish_hit(ray_8: Ray, c_1: Candidate) -> Hit {
         let uv0_ = unpack2x16float(a0_.w);
         let uv1_ = unpack2x16float(a1_.x);
         let uv2_ = unpack2x16float(a1_.y);
-        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_4.x))) + (uv2_ * vec2(b_4.y)));
+        hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_8.x))) + (uv2_ * vec2(b_8.y)));
         let _e123 = triangles[(c_1.primitive * 3u)];
         hit.primitive = bitcast<u32>(_e123.w);
     }
@@ -910,8 +938,8 @@ fn load_ConstantBackground(offset_5: u32) -> ConstantBackground {
     return ConstantBackground(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn constant_background(b_1: ConstantBackground, ray_10: Ray) -> vec3<f32> {
-    return b_1.color;
+fn constant_background(b_5: ConstantBackground, ray_10: Ray) -> vec3<f32> {
+    return b_5.color;
 }
 
 fn dispatch_miss(type_id_2: u32, offset_6: u32, ray_11: Ray) -> vec3<f32> {
@@ -974,8 +1002,8 @@ fn load_DirectionalLight(offset_9: u32) -> DirectionalLight {
 fn offset_origin(p_2: vec3<f32>, n_3: vec3<f32>) -> vec3<f32> {
     let _e3 = frame;
     let root_1 = nodes[_e3.tlas_root];
-    let a_2 = max(abs(p_2), max(abs(root_1.min), abs(root_1.max)));
-    let m_1 = max(max(a_2.x, a_2.y), a_2.z);
+    let a_6 = max(abs(p_2), max(abs(root_1.min), abs(root_1.max)));
+    let m_1 = max(max(a_6.x, a_6.y), a_6.z);
     return (p_2 + (n_3 * vec3((m_1 * (1f / 65536f)))));
 }
 
@@ -1051,10 +1079,10 @@ fn load_SphereLight(offset_11: u32) -> SphereLight {
 
 fn orthonormal_basis(n_5: vec3<f32>) -> mat3x3<f32> {
     let sign_1 = select(1f, -1f, ((bitcast<u32>(n_5.z) & 2147483648u) != 0u));
-    let a_3 = (-1f / (sign_1 + n_5.z));
-    let b_5 = ((n_5.x * n_5.y) * a_3);
+    let a_7 = (-1f / (sign_1 + n_5.z));
+    let b_9 = ((n_5.x * n_5.y) * a_7);
     let _e16 = (sign_1 * n_5.x);
-    return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_5.x) * a_3)), (sign_1 * b_5), -(_e16)), vec3<f32>(b_5, (sign_1 + ((n_5.y * n_5.y) * a_3)), -(n_5.y)), n_5);
+    return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_5.x) * a_7)), (sign_1 * b_9), -(_e16)), vec3<f32>(b_9, (sign_1 + ((n_5.y * n_5.y) * a_7)), -(n_5.y)), n_5);
 }
 
 fn sphere_light(l_2: SphereLight, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
@@ -1431,13 +1459,31 @@ fn render_pixel(pixel_3: vec2<u32>) {
     return;
 }
 
-@compute @workgroup_size(8, 8, 1) 
-fn render(@builtin(global_invocation_id) gid: vec3<u32>) {
-    let _e2 = tile;
-    let _e7 = vec2<u32>(gid.x, gid.y);
-    if any((_e7 >= _e2.extent)) {
+fn render_invocation(id: vec2<u32>) {
+    let tile_2 = tile;
+    let size_1 = vec2<u32>(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    let _e11 = div_vec2u(((tile_2.extent + size_1) - vec2(1u)), size_1);
+    let count_2 = (_e11.x * _e11.y);
+    if (count_2 == 0u) {
         return;
     }
-    render_pixel((_e2.origin + _e7));
+    let _e17 = div_vec2u(id, size_1);
+    let order = ((_e17.y * _e11.x) + _e17.x);
+    let _e24 = rem_u32_(SCATTER, count_2);
+    let _e26 = rem_u32_((order * _e24), count_2);
+    let _e28 = rem_u32_(_e26, _e11.x);
+    let _e30 = div_u32_(_e26, _e11.x);
+    let _e33 = rem_vec2u(id, size_1);
+    let local = ((vec2<u32>(_e28, _e30) * size_1) + _e33);
+    if any((local >= tile_2.extent)) {
+        return;
+    }
+    render_pixel((tile_2.origin + local));
+    return;
+}
+
+@compute @workgroup_size(8, 8, 1) 
+fn render(@builtin(global_invocation_id) gid: vec3<u32>) {
+    render_invocation(vec2<u32>(gid.x, gid.y));
     return;
 }

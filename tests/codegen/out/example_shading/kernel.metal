@@ -15,6 +15,13 @@ struct _mslBufferSizes {
     uint size16;
 };
 
+struct TileParams {
+    metal::uint2 origin;
+    metal::uint2 extent;
+    metal::uint2 image_size;
+    uint tile_index;
+    uint frame;
+};
 struct FrameUniforms {
     uint samples_per_pass;
     uint total_samples;
@@ -29,13 +36,6 @@ struct FrameUniforms {
     uint camera_offset;
     uint background_type;
     uint background_offset;
-};
-struct TileParams {
-    metal::uint2 origin;
-    metal::uint2 extent;
-    metal::uint2 image_size;
-    uint tile_index;
-    uint frame;
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -180,6 +180,9 @@ struct type_16 {
     Frame inner[3];
 };
 typedef metal::atomic_uint type_19[1];
+constant uint WORKGROUP_WIDTH = 8u;
+constant uint WORKGROUP_HEIGHT = 8u;
+constant uint SCATTER = 1000003u;
 constant uint RAY_CAMERA = 0u;
 constant uint NO_HIT = 4294967295u;
 constant bool HAS_MEDIA = false;
@@ -197,6 +200,59 @@ constant uint MAX_DEPTH = 3u;
 constant uint STACK_SIZE = 3u;
 constant uint MAX_SPAWN = 1u;
 constant uint RAY_SECONDARY = 1u;
+
+metal::uint2 naga_div(metal::uint2 lhs, metal::uint2 rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+metal::uint2 div_vec2u(
+    metal::uint2 a,
+    metal::uint2 b
+) {
+    metal::bool2 by_zero = b == metal::uint2(0u);
+    metal::uint2 divisor = metal::select(b, metal::uint2(1u), by_zero);
+    return naga_div(a, divisor);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint rem_u32_(
+    uint a_1,
+    uint b_1
+) {
+    bool by_zero_1 = b_1 == 0u;
+    uint divisor_1 = by_zero_1 ? 1u : b_1;
+    return by_zero_1 ? 0u : naga_mod(a_1, divisor_1);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint div_u32_(
+    uint a_2,
+    uint b_2
+) {
+    bool by_zero_2 = b_2 == 0u;
+    uint divisor_2 = by_zero_2 ? 1u : b_2;
+    return naga_div(a_2, divisor_2);
+}
+
+metal::uint2 naga_mod(metal::uint2 lhs, metal::uint2 rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+metal::uint2 rem_vec2u(
+    metal::uint2 a_3,
+    metal::uint2 b_3
+) {
+    metal::uint2 _e3 = metal::uint2(0u);
+    metal::bool2 by_zero_3 = b_3 == _e3;
+    metal::uint2 divisor_3 = metal::select(b_3, metal::uint2(1u), by_zero_3);
+    return metal::select(naga_mod(a_3, divisor_3), _e3, by_zero_3);
+}
 
 uint pcg_hash(
     uint x
@@ -288,8 +344,8 @@ Ray pinhole_ray(
     Pinhole cam,
     metal::uint2 pixel_1,
     uint sample_1,
-    constant FrameUniforms& frame,
     constant TileParams& tile,
+    constant FrameUniforms& frame,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -319,15 +375,15 @@ Ray dispatch_ray_generation(
     uint offset_1,
     metal::uint2 pixel_2,
     uint sample_2,
-    constant FrameUniforms& frame,
     constant TileParams& tile,
+    constant FrameUniforms& frame,
     thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Pinhole _e3 = load_Pinhole(offset_1, params, _buffer_sizes);
-    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2, frame, tile, rng_state, F32_INF);
+    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2, tile, frame, rng_state, F32_INF);
     return _e4;
 }
 
@@ -388,15 +444,15 @@ metal::float3 hit_triangle(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e8 = triangles[slot * 3u];
-    metal::float3 a_1 = _e8.xyz - r_1.origin;
+    metal::float3 a_5 = _e8.xyz - r_1.origin;
     metal::float4 _e18 = triangles[(slot * 3u) + 1u];
-    metal::float3 b_2 = _e18.xyz - r_1.origin;
+    metal::float3 b_6 = _e18.xyz - r_1.origin;
     metal::float4 _e28 = triangles[(slot * 3u) + 2u];
     metal::float3 c_5 = _e28.xyz - r_1.origin;
-    float ax = a_1[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_1[metal::min(r_1.kz, 2u)]);
-    float ay = a_1[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_1[metal::min(r_1.kz, 2u)]);
-    float bx = b_2[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_2[metal::min(r_1.kz, 2u)]);
-    float by = b_2[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_2[metal::min(r_1.kz, 2u)]);
+    float ax = a_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_5[metal::min(r_1.kz, 2u)]);
+    float ay = a_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_5[metal::min(r_1.kz, 2u)]);
+    float bx = b_6[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_6[metal::min(r_1.kz, 2u)]);
+    float by = b_6[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_6[metal::min(r_1.kz, 2u)]);
     float cx = c_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_5[metal::min(r_1.kz, 2u)]);
     float cy = c_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_5[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
@@ -405,7 +461,7 @@ metal::float3 hit_triangle(
     bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
-    float t_5 = (((u * (r_1.shear[2] * a_1[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_2[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_5 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_9 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1);
     uint _e173 = F32_INF;
     return hit_9 ? metal::float3(t_5, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
@@ -682,7 +738,7 @@ Hit finish_hit(
     n_shade = c_1.normal;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         Triangle _e35 = load_triangle(c_1.primitive, triangles, _buffer_sizes);
-        metal::float2 b_3 = c_1.uv;
+        metal::float2 b_7 = c_1.uv;
         float w_2 = (1.0 - c_1.uv.x) - c_1.uv.y;
         metal::float3 _e56 = point_to_world(inst_6, ((_e35.v0_ * metal::float3(w_2)) + (_e35.v1_ * metal::float3(c_1.uv.x))) + (_e35.v2_ * metal::float3(c_1.uv.y)));
         hit.position = _e56;
@@ -928,15 +984,15 @@ SkyGradient load_SkyGradient(
 }
 
 metal::float3 sky_gradient(
-    SkyGradient b,
+    SkyGradient b_4,
     Ray ray_7
 ) {
     metal::float3 _e3 = normalize_vec3f(ray_7.dir);
     float y_1 = _e3.y;
     if (y_1 < 0.0) {
-        return metal::mix(b.horizon, b.ground, metal::float3(metal::min(-(y_1) * 4.0, 1.0)));
+        return metal::mix(b_4.horizon, b_4.ground, metal::float3(metal::min(-(y_1) * 4.0, 1.0)));
     }
-    return metal::mix(b.horizon, b.zenith, metal::float3(metal::sqrt(y_1)));
+    return metal::mix(b_4.horizon, b_4.zenith, metal::float3(metal::sqrt(y_1)));
 }
 
 metal::float3 dispatch_miss(
@@ -1032,12 +1088,12 @@ int naga_div(int lhs, int rhs) {
 }
 
 int rem_i32_(
-    int a,
-    int b_1
+    int a_4,
+    int b_5
 ) {
-    bool by_zero = b_1 == 0;
-    int divisor = ((a == (-2147483647 - 1)) & (b_1 == -1)) ? 1 : (by_zero ? 1 : b_1);
-    return by_zero ? 0 : as_type<int>(as_type<uint>(a) - as_type<uint>(as_type<int>(as_type<uint>(divisor) * as_type<uint>(naga_div(a, divisor)))));
+    bool by_zero_4 = b_5 == 0;
+    int divisor_4 = ((a_4 == (-2147483647 - 1)) & (b_5 == -1)) ? 1 : (by_zero_4 ? 1 : b_5);
+    return by_zero_4 ? 0 : as_type<int>(as_type<uint>(a_4) - as_type<uint>(as_type<int>(as_type<uint>(divisor_4) * as_type<uint>(naga_div(a_4, divisor_4)))));
 }
 
 float srgb_channel(
@@ -1103,11 +1159,11 @@ metal::float4 sample_texture(
     int _e28 = i32_from_f32_(f_1.y);
     metal::float4 _e29 = texel_at(t_4, _e26, _e28, params, texels, _buffer_sizes);
     metal::float4 _e32 = texel_at(t_4, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), _e28, params, texels, _buffer_sizes);
-    metal::float4 a_2 = metal::mix(_e29, _e32, metal::float4(fr.x));
+    metal::float4 a_6 = metal::mix(_e29, _e32, metal::float4(fr.x));
     metal::float4 _e38 = texel_at(t_4, _e26, as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
     metal::float4 _e43 = texel_at(t_4, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
-    metal::float4 b_4 = metal::mix(_e38, _e43, metal::float4(fr.x));
-    return metal::mix(a_2, b_4, metal::float4(fr.y));
+    metal::float4 b_8 = metal::mix(_e38, _e43, metal::float4(fr.x));
+    return metal::mix(a_6, b_8, metal::float4(fr.y));
 }
 
 uint light_count_query(
@@ -1143,8 +1199,8 @@ metal::float3 offset_origin(
 ) {
     FrameUniforms _e3 = frame;
     GpuNode root_1 = nodes[_e3.tlas_root];
-    metal::float3 a_3 = metal::max(metal::abs(p_2), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
-    float m_5 = metal::max(metal::max(a_3.x, a_3.y), a_3.z);
+    metal::float3 a_7 = metal::max(metal::abs(p_2), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
+    float m_5 = metal::max(metal::max(a_7.x, a_7.y), a_7.z);
     return p_2 + (n_2 * metal::float3(m_5 * (1.0 / 65536.0)));
 }
 
@@ -1720,8 +1776,8 @@ metal::float3 finite_or_zero(
 
 void render_pixel(
     metal::uint2 pixel_3,
-    constant FrameUniforms& frame,
     constant TileParams& tile,
+    constant FrameUniforms& frame,
     thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1766,7 +1822,7 @@ void render_pixel(
         uint _e18 = s;
         uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, frame, tile, rng_state, params, F32_INF, _buffer_sizes);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
         ray_21 = _e23;
         ray_21.depth = 0u;
         ray_21.kind = RAY_CAMERA;
@@ -1799,12 +1855,55 @@ void render_pixel(
     return;
 }
 
+void render_invocation(
+    metal::uint2 id,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    device type_13 const& attributes,
+    thread uint& ray_count,
+    device type_4 const& texels,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
+    thread uint& spawn_count,
+    device type_10& accum,
+    device type_19& counters,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    TileParams tile_2 = tile;
+    metal::uint2 size_1 = metal::uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    metal::uint2 _e11 = div_vec2u((tile_2.extent + size_1) - metal::uint2(1u), size_1);
+    uint count_2 = _e11.x * _e11.y;
+    if (count_2 == 0u) {
+        return;
+    }
+    metal::uint2 _e17 = div_vec2u(id, size_1);
+    uint order = (_e17.y * _e11.x) + _e17.x;
+    uint _e24 = rem_u32_(SCATTER, count_2);
+    uint _e26 = rem_u32_(order * _e24, count_2);
+    uint _e28 = rem_u32_(_e26, _e11.x);
+    uint _e30 = div_u32_(_e26, _e11.x);
+    metal::uint2 _e33 = rem_vec2u(id, size_1);
+    metal::uint2 local = (metal::uint2(_e28, _e30) * size_1) + _e33;
+    if (metal::any(local >= tile_2.extent)) {
+        return;
+    }
+    render_pixel(tile_2.origin + local, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
+    return;
+}
+
 struct renderInput {
 };
 [[max_total_threads_per_threadgroup(64)]] kernel void render(
   metal::uint3 gid [[thread_position_in_grid]]
-, constant FrameUniforms& frame [[buffer(0)]]
 , constant TileParams& tile [[buffer(1)]]
+, constant FrameUniforms& frame [[buffer(0)]]
 , device type_4 const& params [[buffer(6)]]
 , device type_8 const& instances [[buffer(3)]]
 , device type_9 const& nodes [[buffer(2)]]
@@ -1822,11 +1921,6 @@ struct renderInput {
     type_15 spawn_dirs = {};
     type_15 spawn_weights = {};
     uint spawn_count = {};
-    TileParams _e2 = tile;
-    metal::uint2 _e7 = metal::uint2(gid.x, gid.y);
-    if (metal::any(_e7 >= _e2.extent)) {
-        return;
-    }
-    render_pixel(_e2.origin + _e7, frame, tile, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
     return;
 }

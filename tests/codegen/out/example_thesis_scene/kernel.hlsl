@@ -1,3 +1,11 @@
+struct TileParams {
+    uint2 origin;
+    uint2 extent;
+    uint2 image_size;
+    uint tile_index;
+    uint frame;
+};
+
 struct FrameUniforms {
     uint samples_per_pass;
     uint total_samples;
@@ -12,14 +20,6 @@ struct FrameUniforms {
     uint camera_offset;
     uint background_type;
     uint background_offset;
-};
-
-struct TileParams {
-    uint2 origin;
-    uint2 extent;
-    uint2 image_size;
-    uint tile_index;
-    uint frame;
 };
 
 struct Ray {
@@ -172,6 +172,9 @@ struct Frame {
     int _end_pad_1;
 };
 
+static const uint WORKGROUP_WIDTH = 8u;
+static const uint WORKGROUP_HEIGHT = 8u;
+static const uint SCATTER = 1000003u;
 static const uint RAY_CAMERA = 0u;
 static const uint NO_HIT = 4294967295u;
 static const bool HAS_MEDIA = false;
@@ -190,8 +193,8 @@ static const uint STACK_SIZE = 1u;
 static const uint MAX_SPAWN = 1u;
 static const uint RAY_SECONDARY = 1u;
 
-cbuffer frame : register(b0) { FrameUniforms frame; }
 cbuffer tile : register(b1) { TileParams tile; }
+cbuffer frame : register(b0) { FrameUniforms frame; }
 static uint rng_state = (uint)0;
 ByteAddressBuffer params : register(t6);
 static uint F32_INF = 2139095040u;
@@ -207,6 +210,51 @@ static float3 spawn_weights[1] = (float3[1])0;
 static uint spawn_count = (uint)0;
 RWByteAddressBuffer accum : register(u8);
 RWByteAddressBuffer counters : register(u9);
+
+uint2 naga_div(uint2 lhs, uint2 rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+uint2 div_vec2u(uint2 a, uint2 b)
+{
+    bool2 by_zero = (b == (0u).xx);
+    uint2 divisor = (by_zero ? (1u).xx : b);
+    return naga_div(a, divisor);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint rem_u32_(uint a_1, uint b_1)
+{
+    bool by_zero_1 = (b_1 == 0u);
+    uint divisor_1 = (by_zero_1 ? 1u : b_1);
+    return (by_zero_1 ? 0u : naga_mod(a_1, divisor_1));
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+uint div_u32_(uint a_2, uint b_2)
+{
+    bool by_zero_2 = (b_2 == 0u);
+    uint divisor_2 = (by_zero_2 ? 1u : b_2);
+    return naga_div(a_2, divisor_2);
+}
+
+uint2 naga_mod(uint2 lhs, uint2 rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint2 rem_vec2u(uint2 a_3, uint2 b_3)
+{
+    uint2 _e3 = (0u).xx;
+    bool2 by_zero_3 = (b_3 == _e3);
+    uint2 divisor_3 = (by_zero_3 ? (1u).xx : b_3);
+    return (by_zero_3 ? _e3 : naga_mod(a_3, divisor_3));
+}
 
 uint pcg_hash(uint x)
 {
@@ -407,15 +455,15 @@ TriangleRay prepare_triangle_ray(Ray ray_1)
 float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
 {
     float4 _e8 = asfloat(triangles.Load4((slot * 3u)*16));
-    float3 a_1 = (_e8.xyz - r_1.origin);
+    float3 a_5 = (_e8.xyz - r_1.origin);
     float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
-    float3 b_2 = (_e18.xyz - r_1.origin);
+    float3 b_6 = (_e18.xyz - r_1.origin);
     float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
     float3 c_5 = (_e28.xyz - r_1.origin);
-    float ax = (a_1[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_1[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float ay = (a_1[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_1[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float bx = (b_2[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_2[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float by = (b_2[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * b_2[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float ax = (a_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_5[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float ay = (a_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_5[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float bx = (b_6[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_6[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float by = (b_6[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * b_6[min(uint(min(r_1.kz, 2u)), 2u)]));
     float cx = (c_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float cy = (c_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u = ((cx * by) - (cy * bx));
@@ -424,7 +472,7 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
-    float t_5 = ((((u * (r_1.shear.z * a_1[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_2[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_5 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_5 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_5 ? float3(t_5, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
@@ -711,9 +759,9 @@ Hit finish_hit(Ray ray_5, Candidate c_1)
     n_shade = c_1.normal;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         const Triangle _e35 = load_triangle(c_1.primitive);
-        float2 b_3 = c_1.uv;
-        float w_2 = ((1.0 - b_3.x) - b_3.y);
-        const float3 _e56 = point_to_world(inst_6, (((_e35.v0_ * (w_2).xxx) + (_e35.v1_ * (b_3.x).xxx)) + (_e35.v2_ * (b_3.y).xxx)));
+        float2 b_7 = c_1.uv;
+        float w_2 = ((1.0 - b_7.x) - b_7.y);
+        const float3 _e56 = point_to_world(inst_6, (((_e35.v0_ * (w_2).xxx) + (_e35.v1_ * (b_7.x).xxx)) + (_e35.v2_ * (b_7.y).xxx)));
         hit.position = _e56;
         n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
         uint4 a0_ = asuint(attributes.Load4((c_1.primitive * 2u)*16));
@@ -721,7 +769,7 @@ Hit finish_hit(Ray ray_5, Candidate c_1)
         const float3 _e79 = decode_octahedral(a0_.x);
         const float3 _e83 = decode_octahedral(a0_.y);
         const float3 _e89 = decode_octahedral(a0_.z);
-        n_shade = (((_e79 * (w_2).xxx) + (_e83 * (b_3.x).xxx)) + (_e89 * (b_3.y).xxx));
+        n_shade = (((_e79 * (w_2).xxx) + (_e83 * (b_7.x).xxx)) + (_e89 * (b_7.y).xxx));
         float3 _e94 = n_shade;
         float3 _e95 = n_shade;
         if ((dot(_e94, _e95) < 1e-12)) {
@@ -734,7 +782,7 @@ Hit finish_hit(Ray ray_5, Candidate c_1)
         float2 uv1_ = float2(f16tof32(_e102), f16tof32((_e102) >> 16));
         uint _e104 = a1_.y;
         float2 uv2_ = float2(f16tof32(_e104), f16tof32((_e104) >> 16));
-        hit.uv = (((uv0_ * (w_2).xx) + (uv1_ * (b_3.x).xx)) + (uv2_ * (b_3.y).xx));
+        hit.uv = (((uv0_ * (w_2).xx) + (uv1_ * (b_7.x).xx)) + (uv2_ * (b_7.y).xx));
         float4 _e123 = asfloat(triangles.Load4((c_1.primitive * 3u)*16));
         hit.primitive = asuint(_e123.w);
     }
@@ -943,9 +991,9 @@ ConstantBackground load_ConstantBackground(uint offset_2)
     return constantbackground;
 }
 
-float3 constant_background(ConstantBackground b, Ray ray_7)
+float3 constant_background(ConstantBackground b_4, Ray ray_7)
 {
-    return b.color;
+    return b_4.color;
 }
 
 float3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_8)
@@ -1033,11 +1081,11 @@ int naga_div(int lhs, int rhs) {
     return lhs / (((lhs == int(-2147483647 - 1) & rhs == -1) | (rhs == 0)) ? 1 : rhs);
 }
 
-int rem_i32_(int a, int b_1)
+int rem_i32_(int a_4, int b_5)
 {
-    bool by_zero = (b_1 == int(0));
-    int divisor = (((a == int(-2147483647 - 1)) & (b_1 == int(-1))) ? int(1) : (by_zero ? int(1) : b_1));
-    return (by_zero ? int(0) : asint(asuint(a) - asuint(asint(asuint(divisor) * asuint(naga_div(a, divisor))))));
+    bool by_zero_4 = (b_5 == int(0));
+    int divisor_4 = (((a_4 == int(-2147483647 - 1)) & (b_5 == int(-1))) ? int(1) : (by_zero_4 ? int(1) : b_5));
+    return (by_zero_4 ? int(0) : asint(asuint(a_4) - asuint(asint(asuint(divisor_4) * asuint(naga_div(a_4, divisor_4))))));
 }
 
 float srgb_channel(float c_2)
@@ -1091,11 +1139,11 @@ float4 sample_texture(uint t_4, float2 uv)
     const int _e28 = i32_from_f32_(f_1.y);
     const float4 _e29 = texel_at(t_4, _e26, _e28);
     const float4 _e32 = texel_at(t_4, asint(asuint(_e26) + asuint(int(1))), _e28);
-    float4 a_2 = lerp(_e29, _e32, (fr.x).xxxx);
+    float4 a_6 = lerp(_e29, _e32, (fr.x).xxxx);
     const float4 _e38 = texel_at(t_4, _e26, asint(asuint(_e28) + asuint(int(1))));
     const float4 _e43 = texel_at(t_4, asint(asuint(_e26) + asuint(int(1))), asint(asuint(_e28) + asuint(int(1))));
-    float4 b_4 = lerp(_e38, _e43, (fr.x).xxxx);
-    return lerp(a_2, b_4, (fr.y).xxxx);
+    float4 b_8 = lerp(_e38, _e43, (fr.x).xxxx);
+    return lerp(a_6, b_8, (fr.y).xxxx);
 }
 
 uint light_count_query()
@@ -1133,8 +1181,8 @@ float3 offset_origin(float3 p_2, float3 n_2)
 {
     FrameUniforms _e3 = frame;
     GpuNode root_1 = ConstructGpuNode(asfloat(nodes.Load3(_e3.tlas_root*32+0)), asuint(nodes.Load(_e3.tlas_root*32+12)), asfloat(nodes.Load3(_e3.tlas_root*32+16)), asuint(nodes.Load(_e3.tlas_root*32+28)));
-    float3 a_3 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
-    float m_1 = max(max(a_3.x, a_3.y), a_3.z);
+    float3 a_7 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
+    float m_1 = max(max(a_7.x, a_7.y), a_7.z);
     return (p_2 + (n_2 * ((m_1 * (1.0 / 65536.0))).xxx));
 }
 
@@ -1531,14 +1579,33 @@ void render_pixel(uint2 pixel_3)
     return;
 }
 
+void render_invocation(uint2 id)
+{
+    TileParams tile_2 = tile;
+    uint2 size_1 = uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    const uint2 _e11 = div_vec2u(((tile_2.extent + size_1) - (1u).xx), size_1);
+    uint count_2 = (_e11.x * _e11.y);
+    if ((count_2 == 0u)) {
+        return;
+    }
+    const uint2 _e17 = div_vec2u(id, size_1);
+    uint order = ((_e17.y * _e11.x) + _e17.x);
+    const uint _e24 = rem_u32_(SCATTER, count_2);
+    const uint _e26 = rem_u32_((order * _e24), count_2);
+    const uint _e28 = rem_u32_(_e26, _e11.x);
+    const uint _e30 = div_u32_(_e26, _e11.x);
+    const uint2 _e33 = rem_vec2u(id, size_1);
+    uint2 local = ((uint2(_e28, _e30) * size_1) + _e33);
+    if (any((local >= tile_2.extent))) {
+        return;
+    }
+    render_pixel((tile_2.origin + local));
+    return;
+}
+
 [numthreads(8, 8, 1)]
 void render(uint3 gid : SV_DispatchThreadID)
 {
-    TileParams _e2 = tile;
-    uint2 _e7 = uint2(gid.x, gid.y);
-    if (any((_e7 >= _e2.extent))) {
-        return;
-    }
-    render_pixel((_e2.origin + _e7));
+    render_invocation(uint2(gid.x, gid.y));
     return;
 }

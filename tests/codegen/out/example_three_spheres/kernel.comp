@@ -3,6 +3,13 @@
 #extension GL_ARB_shader_storage_buffer_object : require
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
+struct TileParams {
+    uvec2 origin;
+    uvec2 extent;
+    uvec2 image_size;
+    uint tile_index;
+    uint frame;
+};
 struct FrameUniforms {
     uint samples_per_pass;
     uint total_samples;
@@ -17,13 +24,6 @@ struct FrameUniforms {
     uint camera_offset;
     uint background_type;
     uint background_offset;
-};
-struct TileParams {
-    uvec2 origin;
-    uvec2 extent;
-    uvec2 image_size;
-    uint tile_index;
-    uint frame;
 };
 struct Ray {
     vec3 origin;
@@ -140,6 +140,9 @@ struct Frame {
     uint count;
     uint next;
 };
+const uint WORKGROUP_WIDTH = 8u;
+const uint WORKGROUP_HEIGHT = 8u;
+const uint SCATTER = 1000003u;
 const uint SUPERSAMPLING_GRID = 2u;
 const uint RAY_CAMERA = 0u;
 const uint NO_HIT = 4294967295u;
@@ -161,9 +164,9 @@ const uint STACK_SIZE = 4u;
 const uint MAX_SPAWN = 1u;
 const uint RAY_SECONDARY = 1u;
 
-layout(std140, binding = 0) uniform FrameUniforms_block_0Compute { FrameUniforms _group_0_binding_0_cs; };
+layout(std140, binding = 1) uniform TileParams_block_0Compute { TileParams _group_0_binding_1_cs; };
 
-layout(std140, binding = 1) uniform TileParams_block_1Compute { TileParams _group_0_binding_1_cs; };
+layout(std140, binding = 0) uniform FrameUniforms_block_1Compute { FrameUniforms _group_0_binding_0_cs; };
 
 uint rng_state = 0u;
 
@@ -197,6 +200,31 @@ layout(std430, binding = 8) buffer type_10_block_8Compute { vec4 _group_0_bindin
 
 layout(std430, binding = 9) buffer type_21_block_9Compute { uint _group_0_binding_9_cs[]; };
 
+
+uvec2 div_vec2u(uvec2 a, uvec2 b) {
+    bvec2 by_zero = equal(b, uvec2(0u));
+    uvec2 divisor = mix(b, uvec2(1u), by_zero);
+    return (a / divisor);
+}
+
+uint rem_u32_(uint a_1, uint b_1) {
+    bool by_zero_1 = (b_1 == 0u);
+    uint divisor_1 = (by_zero_1 ? 1u : b_1);
+    return (by_zero_1 ? 0u : (a_1 % divisor_1));
+}
+
+uint div_u32_(uint a_2, uint b_2) {
+    bool by_zero_2 = (b_2 == 0u);
+    uint divisor_2 = (by_zero_2 ? 1u : b_2);
+    return (a_2 / divisor_2);
+}
+
+uvec2 rem_vec2u(uvec2 a_3, uvec2 b_3) {
+    uvec2 _e3 = uvec2(0u);
+    bvec2 by_zero_3 = equal(b_3, _e3);
+    uvec2 divisor_3 = mix(b_3, uvec2(1u), by_zero_3);
+    return mix((a_3 % divisor_3), _e3, by_zero_3);
+}
 
 uint pcg_hash(uint x) {
     uint state = ((x * 747796405u) + 2891336453u);
@@ -237,18 +265,6 @@ SupersampledPinhole load_SupersampledPinhole(uint offset) {
 uvec2 image_size_query() {
     TileParams _e1 = _group_0_binding_1_cs;
     return _e1.image_size;
-}
-
-uint rem_u32_(uint a, uint b) {
-    bool by_zero = (b == 0u);
-    uint divisor = (by_zero ? 1u : b);
-    return (by_zero ? 0u : (a % divisor));
-}
-
-uint div_u32_(uint a_1, uint b_1) {
-    bool by_zero_1 = (b_1 == 0u);
-    uint divisor_1 = (by_zero_1 ? 1u : b_1);
-    return (a_1 / divisor_1);
 }
 
 float rand_next() {
@@ -336,15 +352,15 @@ TriangleRay prepare_triangle_ray(Ray ray_1) {
 
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     vec4 _e8 = _group_0_binding_4_cs[(slot * 3u)];
-    vec3 a_3 = (_e8.xyz - r_1.origin);
+    vec3 a_5 = (_e8.xyz - r_1.origin);
     vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
-    vec3 b_4 = (_e18.xyz - r_1.origin);
+    vec3 b_6 = (_e18.xyz - r_1.origin);
     vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
     vec3 c_5 = (_e28.xyz - r_1.origin);
-    float ax = (a_3[min(r_1.kx, 2u)] - (r_1.shear.x * a_3[min(r_1.kz, 2u)]));
-    float ay = (a_3[min(r_1.ky, 2u)] - (r_1.shear.y * a_3[min(r_1.kz, 2u)]));
-    float bx = (b_4[min(r_1.kx, 2u)] - (r_1.shear.x * b_4[min(r_1.kz, 2u)]));
-    float by = (b_4[min(r_1.ky, 2u)] - (r_1.shear.y * b_4[min(r_1.kz, 2u)]));
+    float ax = (a_5[min(r_1.kx, 2u)] - (r_1.shear.x * a_5[min(r_1.kz, 2u)]));
+    float ay = (a_5[min(r_1.ky, 2u)] - (r_1.shear.y * a_5[min(r_1.kz, 2u)]));
+    float bx = (b_6[min(r_1.kx, 2u)] - (r_1.shear.x * b_6[min(r_1.kz, 2u)]));
+    float by = (b_6[min(r_1.ky, 2u)] - (r_1.shear.y * b_6[min(r_1.kz, 2u)]));
     float cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
     float cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
@@ -353,7 +369,7 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
-    float t_6 = ((((u * (r_1.shear.z * a_3[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    float t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
     bool hit_5 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_5 ? vec3(t_6, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
@@ -707,18 +723,18 @@ Sphere load_Sphere(uint offset_3) {
 Intersection sphere_intersect(Sphere s, Ray ray_8) {
     float t_1 = 0.0;
     vec3 f_1 = (ray_8.origin - s.center);
-    float a_4 = dot(ray_8.dir, ray_8.dir);
-    float b_5 = -(dot(f_1, ray_8.dir));
-    vec3 l_2 = (f_1 + (ray_8.dir * vec3((b_5 / a_4))));
+    float a_6 = dot(ray_8.dir, ray_8.dir);
+    float b_7 = -(dot(f_1, ray_8.dir));
+    vec3 l_2 = (f_1 + (ray_8.dir * vec3((b_7 / a_6))));
     float r2_ = (s.radius * s.radius);
-    float disc = (a_4 * (r2_ - dot(l_2, l_2)));
-    if ((!((disc >= 0.0)) || !((a_4 > 0.0)))) {
+    float disc = (a_6 * (r2_ - dot(l_2, l_2)));
+    if ((!((disc >= 0.0)) || !((a_6 > 0.0)))) {
         uint _e30 = F32_INF;
         return Intersection(uintBitsToFloat(_e30), vec3(0.0, 0.0, 1.0), vec2(0.0));
     }
-    float q = (b_5 + (((b_5 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
+    float q = (b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
     float t0_1 = ((dot(f_1, f_1) - r2_) / q);
-    float t1_1 = (q / a_4);
+    float t1_1 = (q / a_6);
     t_1 = min(t0_1, t1_1);
     float _e52 = t_1;
     if (!((_e52 >= ray_8.tmin))) {
@@ -829,9 +845,9 @@ Hit finish_hit(Ray ray_11, Candidate c_1) {
     n_shade = c_1.normal;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Triangle _e35 = load_triangle(c_1.primitive);
-        vec2 b_6 = c_1.uv;
-        float w_3 = ((1.0 - b_6.x) - b_6.y);
-        vec3 _e56 = point_to_world(inst_6, (((_e35.v0_ * vec3(w_3)) + (_e35.v1_ * vec3(b_6.x))) + (_e35.v2_ * vec3(b_6.y))));
+        vec2 b_8 = c_1.uv;
+        float w_3 = ((1.0 - b_8.x) - b_8.y);
+        vec3 _e56 = point_to_world(inst_6, (((_e35.v0_ * vec3(w_3)) + (_e35.v1_ * vec3(b_8.x))) + (_e35.v2_ * vec3(b_8.y))));
         hit.position = _e56;
         n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
         uvec4 a0_ = _group_0_binding_5_cs[(c_1.primitive * 2u)];
@@ -839,7 +855,7 @@ Hit finish_hit(Ray ray_11, Candidate c_1) {
         vec3 _e79 = decode_octahedral(a0_.x);
         vec3 _e83 = decode_octahedral(a0_.y);
         vec3 _e89 = decode_octahedral(a0_.z);
-        n_shade = (((_e79 * vec3(w_3)) + (_e83 * vec3(b_6.x))) + (_e89 * vec3(b_6.y)));
+        n_shade = (((_e79 * vec3(w_3)) + (_e83 * vec3(b_8.x))) + (_e89 * vec3(b_8.y)));
         vec3 _e94 = n_shade;
         vec3 _e95 = n_shade;
         if ((dot(_e94, _e95) < 1e-12)) {
@@ -849,7 +865,7 @@ Hit finish_hit(Ray ray_11, Candidate c_1) {
         vec2 uv0_ = unpackHalf2x16(a0_.w);
         vec2 uv1_ = unpackHalf2x16(a1_.x);
         vec2 uv2_ = unpackHalf2x16(a1_.y);
-        hit.uv = (((uv0_ * vec2(w_3)) + (uv1_ * vec2(b_6.x))) + (uv2_ * vec2(b_6.y)));
+        hit.uv = (((uv0_ * vec2(w_3)) + (uv1_ * vec2(b_8.x))) + (uv2_ * vec2(b_8.y)));
         vec4 _e123 = _group_0_binding_4_cs[(c_1.primitive * 3u)];
         hit.primitive = floatBitsToUint(_e123.w);
     }
@@ -1036,10 +1052,10 @@ int i32_from_f32_(float x_1) {
     return (((floatBitsToUint(x_1) & 2147483647u) > 2139095040u) ? 0 : int(min(max(x_1, -2147483600.0), 2147483500.0)));
 }
 
-int rem_i32_(int a_2, int b_2) {
-    bool by_zero_2 = (b_2 == 0);
-    int divisor_2 = (((a_2 == -2147483648) && (b_2 == -1)) ? 1 : (by_zero_2 ? 1 : b_2));
-    return (by_zero_2 ? 0 : (a_2 - (divisor_2 * (a_2 / divisor_2))));
+int rem_i32_(int a_4, int b_4) {
+    bool by_zero_4 = (b_4 == 0);
+    int divisor_4 = (((a_4 == -2147483648) && (b_4 == -1)) ? 1 : (by_zero_4 ? 1 : b_4));
+    return (by_zero_4 ? 0 : (a_4 - (divisor_4 * (a_4 / divisor_4))));
 }
 
 float srgb_channel(float c_2) {
@@ -1090,21 +1106,21 @@ vec4 sample_texture(uint t_3, vec2 uv) {
     int _e28 = i32_from_f32_(f_2.y);
     vec4 _e29 = texel_at(t_3, _e26, _e28);
     vec4 _e32 = texel_at(t_3, (_e26 + 1), _e28);
-    vec4 a_5 = mix(_e29, _e32, vec4(fr.x));
+    vec4 a_7 = mix(_e29, _e32, vec4(fr.x));
     vec4 _e38 = texel_at(t_3, _e26, (_e28 + 1));
     vec4 _e43 = texel_at(t_3, (_e26 + 1), (_e28 + 1));
-    vec4 b_7 = mix(_e38, _e43, vec4(fr.x));
-    return mix(a_5, b_7, vec4(fr.y));
+    vec4 b_9 = mix(_e38, _e43, vec4(fr.x));
+    return mix(a_7, b_9, vec4(fr.y));
 }
 
-vec3 skybox(Skybox b_3, Ray ray_13) {
+vec3 skybox(Skybox b_5, Ray ray_13) {
     vec3 _e3 = normalize_vec3f(ray_13.dir);
     bool pole = ((_e3.x == 0.0) && (_e3.z == 0.0));
-    float longitude = ((pole ? 0.0 : atan(_e3.x, -(_e3.z))) - radians(b_3.rotation));
+    float longitude = ((pole ? 0.0 : atan(_e3.x, -(_e3.z))) - radians(b_5.rotation));
     float latitude = acos(min(max(_e3.y, -1.0), 1.0));
     vec2 uv_2 = vec2((0.5 + (longitude / TAU)), (latitude * INV_PI));
-    vec4 _e34 = sample_texture(b_3.image, uv_2);
-    return (_e34.xyz * vec3(b_3.intensity));
+    vec4 _e34 = sample_texture(b_5.image, uv_2);
+    return (_e34.xyz * vec3(b_5.intensity));
 }
 
 vec3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_14) {
@@ -1169,8 +1185,8 @@ PointLight load_PointLight(uint offset_9) {
 vec3 offset_origin(vec3 p_2, vec3 n_3) {
     FrameUniforms _e3 = _group_0_binding_0_cs;
     GpuNode root_1 = _group_0_binding_2_cs[_e3.tlas_root];
-    vec3 a_6 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
-    float m_3 = max(max(a_6.x, a_6.y), a_6.z);
+    vec3 a_8 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
+    float m_3 = max(max(a_8.x, a_8.y), a_8.z);
     return (p_2 + (n_3 * vec3((m_3 * (1.0 / 65536.0)))));
 }
 
@@ -1492,14 +1508,32 @@ void render_pixel(uvec2 pixel_3) {
     return;
 }
 
-void main() {
-    uvec3 gid = gl_GlobalInvocationID;
-    TileParams _e2 = _group_0_binding_1_cs;
-    uvec2 _e7 = uvec2(gid.x, gid.y);
-    if (any(greaterThanEqual(_e7, _e2.extent))) {
+void render_invocation(uvec2 id) {
+    TileParams tile_2 = _group_0_binding_1_cs;
+    uvec2 size_1 = uvec2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    uvec2 _e11 = div_vec2u(((tile_2.extent + size_1) - uvec2(1u)), size_1);
+    uint count_3 = (_e11.x * _e11.y);
+    if ((count_3 == 0u)) {
         return;
     }
-    render_pixel((_e2.origin + _e7));
+    uvec2 _e17 = div_vec2u(id, size_1);
+    uint order = ((_e17.y * _e11.x) + _e17.x);
+    uint _e24 = rem_u32_(SCATTER, count_3);
+    uint _e26 = rem_u32_((order * _e24), count_3);
+    uint _e28 = rem_u32_(_e26, _e11.x);
+    uint _e30 = div_u32_(_e26, _e11.x);
+    uvec2 _e33 = rem_vec2u(id, size_1);
+    uvec2 local = ((uvec2(_e28, _e30) * size_1) + _e33);
+    if (any(greaterThanEqual(local, tile_2.extent))) {
+        return;
+    }
+    render_pixel((tile_2.origin + local));
+    return;
+}
+
+void main() {
+    uvec3 gid = gl_GlobalInvocationID;
+    render_invocation(uvec2(gid.x, gid.y));
     return;
 }
 

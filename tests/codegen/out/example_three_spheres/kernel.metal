@@ -15,6 +15,13 @@ struct _mslBufferSizes {
     uint size17;
 };
 
+struct TileParams {
+    metal::uint2 origin;
+    metal::uint2 extent;
+    metal::uint2 image_size;
+    uint tile_index;
+    uint frame;
+};
 struct FrameUniforms {
     uint samples_per_pass;
     uint total_samples;
@@ -29,13 +36,6 @@ struct FrameUniforms {
     uint camera_offset;
     uint background_type;
     uint background_offset;
-};
-struct TileParams {
-    metal::uint2 origin;
-    metal::uint2 extent;
-    metal::uint2 image_size;
-    uint tile_index;
-    uint frame;
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -186,6 +186,9 @@ struct type_18 {
     Frame inner[4];
 };
 typedef metal::atomic_uint type_21[1];
+constant uint WORKGROUP_WIDTH = 8u;
+constant uint WORKGROUP_HEIGHT = 8u;
+constant uint SCATTER = 1000003u;
 constant uint SUPERSAMPLING_GRID = 2u;
 constant uint RAY_CAMERA = 0u;
 constant uint NO_HIT = 4294967295u;
@@ -206,6 +209,59 @@ constant uint MAX_DEPTH = 4u;
 constant uint STACK_SIZE = 4u;
 constant uint MAX_SPAWN = 1u;
 constant uint RAY_SECONDARY = 1u;
+
+metal::uint2 naga_div(metal::uint2 lhs, metal::uint2 rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+metal::uint2 div_vec2u(
+    metal::uint2 a,
+    metal::uint2 b
+) {
+    metal::bool2 by_zero = b == metal::uint2(0u);
+    metal::uint2 divisor = metal::select(b, metal::uint2(1u), by_zero);
+    return naga_div(a, divisor);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint rem_u32_(
+    uint a_1,
+    uint b_1
+) {
+    bool by_zero_1 = b_1 == 0u;
+    uint divisor_1 = by_zero_1 ? 1u : b_1;
+    return by_zero_1 ? 0u : naga_mod(a_1, divisor_1);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint div_u32_(
+    uint a_2,
+    uint b_2
+) {
+    bool by_zero_2 = b_2 == 0u;
+    uint divisor_2 = by_zero_2 ? 1u : b_2;
+    return naga_div(a_2, divisor_2);
+}
+
+metal::uint2 naga_mod(metal::uint2 lhs, metal::uint2 rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+metal::uint2 rem_vec2u(
+    metal::uint2 a_3,
+    metal::uint2 b_3
+) {
+    metal::uint2 _e3 = metal::uint2(0u);
+    metal::bool2 by_zero_3 = b_3 == _e3;
+    metal::uint2 divisor_3 = metal::select(b_3, metal::uint2(1u), by_zero_3);
+    return metal::select(naga_mod(a_3, divisor_3), _e3, by_zero_3);
+}
 
 uint pcg_hash(
     uint x
@@ -259,32 +315,6 @@ metal::uint2 image_size_query(
 ) {
     TileParams _e1 = tile;
     return _e1.image_size;
-}
-
-uint naga_mod(uint lhs, uint rhs) {
-    return lhs % metal::select(rhs, 1u, rhs == 0u);
-}
-
-uint rem_u32_(
-    uint a,
-    uint b
-) {
-    bool by_zero = b == 0u;
-    uint divisor = by_zero ? 1u : b;
-    return by_zero ? 0u : naga_mod(a, divisor);
-}
-
-uint naga_div(uint lhs, uint rhs) {
-    return lhs / metal::select(rhs, 1u, rhs == 0u);
-}
-
-uint div_u32_(
-    uint a_1,
-    uint b_1
-) {
-    bool by_zero_1 = b_1 == 0u;
-    uint divisor_1 = by_zero_1 ? 1u : b_1;
-    return naga_div(a_1, divisor_1);
 }
 
 float rand_next(
@@ -412,15 +442,15 @@ metal::float3 hit_triangle(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e8 = triangles[slot * 3u];
-    metal::float3 a_3 = _e8.xyz - r_1.origin;
+    metal::float3 a_5 = _e8.xyz - r_1.origin;
     metal::float4 _e18 = triangles[(slot * 3u) + 1u];
-    metal::float3 b_4 = _e18.xyz - r_1.origin;
+    metal::float3 b_6 = _e18.xyz - r_1.origin;
     metal::float4 _e28 = triangles[(slot * 3u) + 2u];
     metal::float3 c_5 = _e28.xyz - r_1.origin;
-    float ax = a_3[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_3[metal::min(r_1.kz, 2u)]);
-    float ay = a_3[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_3[metal::min(r_1.kz, 2u)]);
-    float bx = b_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_4[metal::min(r_1.kz, 2u)]);
-    float by = b_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_4[metal::min(r_1.kz, 2u)]);
+    float ax = a_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_5[metal::min(r_1.kz, 2u)]);
+    float ay = a_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_5[metal::min(r_1.kz, 2u)]);
+    float bx = b_6[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_6[metal::min(r_1.kz, 2u)]);
+    float by = b_6[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_6[metal::min(r_1.kz, 2u)]);
     float cx = c_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_5[metal::min(r_1.kz, 2u)]);
     float cy = c_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_5[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
@@ -429,7 +459,7 @@ metal::float3 hit_triangle(
     bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
-    float t_6 = (((u * (r_1.shear[2] * a_3[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_4[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_6 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_5 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1);
     uint _e173 = F32_INF;
     return hit_5 ? metal::float3(t_6, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
@@ -879,18 +909,18 @@ Intersection sphere_intersect(
 ) {
     float t_1 = {};
     metal::float3 f_1 = ray_8.origin - s.center;
-    float a_4 = metal::dot(ray_8.dir, ray_8.dir);
-    float b_5 = -(metal::dot(f_1, ray_8.dir));
-    metal::float3 l_2 = f_1 + (ray_8.dir * metal::float3(b_5 / a_4));
+    float a_6 = metal::dot(ray_8.dir, ray_8.dir);
+    float b_7 = -(metal::dot(f_1, ray_8.dir));
+    metal::float3 l_2 = f_1 + (ray_8.dir * metal::float3(b_7 / a_6));
     float r2_ = s.radius * s.radius;
-    float disc = a_4 * (r2_ - metal::dot(l_2, l_2));
-    if (!((disc >= 0.0)) || !((a_4 > 0.0))) {
+    float disc = a_6 * (r2_ - metal::dot(l_2, l_2));
+    if (!((disc >= 0.0)) || !((a_6 > 0.0))) {
         uint _e30 = F32_INF;
         return Intersection {as_type<float>(_e30), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     }
-    float q = b_5 + (((b_5 >= 0.0) ? 1.0 : -1.0) * metal::sqrt(disc));
+    float q = b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * metal::sqrt(disc));
     float t0_1 = (metal::dot(f_1, f_1) - r2_) / q;
-    float t1_1 = q / a_4;
+    float t1_1 = q / a_6;
     t_1 = metal::min(t0_1, t1_1);
     float _e52 = t_1;
     if (!((_e52 >= ray_8.tmin))) {
@@ -1043,7 +1073,7 @@ Hit finish_hit(
     n_shade = c_1.normal;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         Triangle _e35 = load_triangle(c_1.primitive, triangles, _buffer_sizes);
-        metal::float2 b_6 = c_1.uv;
+        metal::float2 b_8 = c_1.uv;
         float w_3 = (1.0 - c_1.uv.x) - c_1.uv.y;
         metal::float3 _e56 = point_to_world(inst_6, ((_e35.v0_ * metal::float3(w_3)) + (_e35.v1_ * metal::float3(c_1.uv.x))) + (_e35.v2_ * metal::float3(c_1.uv.y)));
         hit.position = _e56;
@@ -1300,12 +1330,12 @@ int naga_div(int lhs, int rhs) {
 }
 
 int rem_i32_(
-    int a_2,
-    int b_2
+    int a_4,
+    int b_4
 ) {
-    bool by_zero_2 = b_2 == 0;
-    int divisor_2 = ((a_2 == (-2147483647 - 1)) & (b_2 == -1)) ? 1 : (by_zero_2 ? 1 : b_2);
-    return by_zero_2 ? 0 : as_type<int>(as_type<uint>(a_2) - as_type<uint>(as_type<int>(as_type<uint>(divisor_2) * as_type<uint>(naga_div(a_2, divisor_2)))));
+    bool by_zero_4 = b_4 == 0;
+    int divisor_4 = ((a_4 == (-2147483647 - 1)) & (b_4 == -1)) ? 1 : (by_zero_4 ? 1 : b_4);
+    return by_zero_4 ? 0 : as_type<int>(as_type<uint>(a_4) - as_type<uint>(as_type<int>(as_type<uint>(divisor_4) * as_type<uint>(naga_div(a_4, divisor_4)))));
 }
 
 float srgb_channel(
@@ -1371,15 +1401,15 @@ metal::float4 sample_texture(
     int _e28 = i32_from_f32_(f_2.y);
     metal::float4 _e29 = texel_at(t_3, _e26, _e28, params, texels, _buffer_sizes);
     metal::float4 _e32 = texel_at(t_3, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), _e28, params, texels, _buffer_sizes);
-    metal::float4 a_5 = metal::mix(_e29, _e32, metal::float4(fr.x));
+    metal::float4 a_7 = metal::mix(_e29, _e32, metal::float4(fr.x));
     metal::float4 _e38 = texel_at(t_3, _e26, as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
     metal::float4 _e43 = texel_at(t_3, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
-    metal::float4 b_7 = metal::mix(_e38, _e43, metal::float4(fr.x));
-    return metal::mix(a_5, b_7, metal::float4(fr.y));
+    metal::float4 b_9 = metal::mix(_e38, _e43, metal::float4(fr.x));
+    return metal::mix(a_7, b_9, metal::float4(fr.y));
 }
 
 metal::float3 skybox(
-    Skybox b_3,
+    Skybox b_5,
     Ray ray_13,
     device type_4 const& params,
     device type_4 const& texels,
@@ -1387,11 +1417,11 @@ metal::float3 skybox(
 ) {
     metal::float3 _e3 = normalize_vec3f(ray_13.dir);
     bool pole = (_e3.x == 0.0) && (_e3.z == 0.0);
-    float longitude = (pole ? 0.0 : metal::atan2(_e3.x, -(_e3.z))) - ((b_3.rotation) * 0.017453292519943295474);
+    float longitude = (pole ? 0.0 : metal::atan2(_e3.x, -(_e3.z))) - ((b_5.rotation) * 0.017453292519943295474);
     float latitude = metal::acos(metal::min(metal::max(_e3.y, -1.0), 1.0));
     metal::float2 uv_2 = metal::float2(0.5 + (longitude / TAU), latitude * INV_PI);
-    metal::float4 _e34 = sample_texture(b_3.image, uv_2, params, texels, _buffer_sizes);
-    return _e34.xyz * metal::float3(b_3.intensity);
+    metal::float4 _e34 = sample_texture(b_5.image, uv_2, params, texels, _buffer_sizes);
+    return _e34.xyz * metal::float3(b_5.intensity);
 }
 
 metal::float3 dispatch_miss(
@@ -1497,8 +1527,8 @@ metal::float3 offset_origin(
 ) {
     FrameUniforms _e3 = frame;
     GpuNode root_1 = nodes[_e3.tlas_root];
-    metal::float3 a_6 = metal::max(metal::abs(p_2), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
-    float m_3 = metal::max(metal::max(a_6.x, a_6.y), a_6.z);
+    metal::float3 a_8 = metal::max(metal::abs(p_2), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
+    float m_3 = metal::max(metal::max(a_8.x, a_8.y), a_8.z);
     return p_2 + (n_3 * metal::float3(m_3 * (1.0 / 65536.0)));
 }
 
@@ -1907,8 +1937,8 @@ metal::float3 finite_or_zero(
 
 void render_pixel(
     metal::uint2 pixel_3,
-    constant FrameUniforms& frame,
     constant TileParams& tile,
+    constant FrameUniforms& frame,
     thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1987,12 +2017,56 @@ void render_pixel(
     return;
 }
 
+void render_invocation(
+    metal::uint2 id,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_11& traversal_stack,
+    thread uint& F32_NEG_INF,
+    device type_15 const& attributes,
+    thread uint& ray_count,
+    device type_4 const& texels,
+    thread type_17& spawn_dirs,
+    thread type_17& spawn_weights,
+    thread uint& spawn_count,
+    device type_10& accum,
+    device type_21& counters,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    TileParams tile_2 = tile;
+    metal::uint2 size_1 = metal::uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    metal::uint2 _e11 = div_vec2u((tile_2.extent + size_1) - metal::uint2(1u), size_1);
+    uint count_3 = _e11.x * _e11.y;
+    if (count_3 == 0u) {
+        return;
+    }
+    metal::uint2 _e17 = div_vec2u(id, size_1);
+    uint order = (_e17.y * _e11.x) + _e17.x;
+    uint _e24 = rem_u32_(SCATTER, count_3);
+    uint _e26 = rem_u32_(order * _e24, count_3);
+    uint _e28 = rem_u32_(_e26, _e11.x);
+    uint _e30 = div_u32_(_e26, _e11.x);
+    metal::uint2 _e33 = rem_vec2u(id, size_1);
+    metal::uint2 local = (metal::uint2(_e28, _e30) * size_1) + _e33;
+    if (metal::any(local >= tile_2.extent)) {
+        return;
+    }
+    render_pixel(tile_2.origin + local, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
+    return;
+}
+
 struct renderInput {
 };
 [[max_total_threads_per_threadgroup(64)]] kernel void render(
   metal::uint3 gid [[thread_position_in_grid]]
-, constant FrameUniforms& frame [[buffer(0)]]
 , constant TileParams& tile [[buffer(1)]]
+, constant FrameUniforms& frame [[buffer(0)]]
 , device type_4 const& params [[buffer(6)]]
 , device type_8 const& instances [[buffer(3)]]
 , device type_9 const& nodes [[buffer(2)]]
@@ -2011,11 +2085,6 @@ struct renderInput {
     type_17 spawn_dirs = {};
     type_17 spawn_weights = {};
     uint spawn_count = {};
-    TileParams _e2 = tile;
-    metal::uint2 _e7 = metal::uint2(gid.x, gid.y);
-    if (metal::any(_e7 >= _e2.extent)) {
-        return;
-    }
-    render_pixel(_e2.origin + _e7, frame, tile, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
     return;
 }
