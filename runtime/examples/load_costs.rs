@@ -1,0 +1,115 @@
+//! What a storage-buffer load costs on the chosen adapter: a chain of 64 dependent, divergent loads
+//! per invocation from a 512 KiB buffer, by load shape (scalars, `vec3`, `vec4`), printed as
+//! nanoseconds per step of one 8-lane SIMD batch. A performance aid for kernel layout decisions
+//! (ARCHITECTURE.md, "Performance on lavapipe"), not a test:
+//! `cargo run --release -p rtc-runtime --example load_costs`.
+//!
+//! On lavapipe every load becomes a loop over the lanes with a bounds check per component, so
+//! the cost is about a fixed part per load plus a part per component; the figures say which.
+use rtc_runtime::gpu::{AdapterChoice, Gpu};
+use std::time::Instant;
+use wgpu::util::DeviceExt;
+
+fn main() {
+    let gpu = Gpu::new(&AdapterChoice::default()).expect("adapter");
+    let device = gpu.device();
+    let threads = std::thread::available_parallelism().map_or(1.0, |n| n.get() as f64);
+    println!("{} ({threads} cores)", gpu.description().name);
+    let n: u32 = 1 << 15; // vec4s: 512 KiB
+    let data: Vec<u32> = (0..n * 4)
+        .map(|i| i.wrapping_mul(2654435761) >> 17)
+        .collect();
+    let buf = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: None,
+        contents: bytemuck::cast_slice(&data),
+        usage: wgpu::BufferUsages::STORAGE,
+    });
+    let out = device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size: 4 << 20,
+        usage: wgpu::BufferUsages::STORAGE,
+        mapped_at_creation: false,
+    });
+    let cases = [
+        ("no load", "let v = vec4u(i * 3u, i ^ 7u, i + 5u, i >> 1u);"),
+        ("1 x u32", "let v = vec4u(s[i * 4u]);"),
+        ("4 x u32", "let v = vec4u(s[i * 4u], s[i * 4u + 1u], s[i * 4u + 2u], s[i * 4u + 3u]);"),
+        ("1 x vec4u", "let v = q[i];"),
+        ("1 x vec3u", "let v = vec4u(q[i].xyz, 0u);"),
+        ("2 x vec4u", "let v = q[i] + q[i ^ 1u];"),
+        ("8 x u32", "let v = vec4u(s[i * 4u], s[i * 4u + 1u], s[i * 4u + 2u], s[i * 4u + 3u]) + vec4u(s[i * 4u + 4u], s[i * 4u + 5u], s[i * 4u + 6u], s[i * 4u + 7u]);"),
+    ];
+    for (name, body) in cases {
+        let src = format!(
+            "@group(0) @binding(0) var<storage, read> s: array<u32>;
+@group(0) @binding(1) var<storage, read> q: array<vec4u>;
+@group(0) @binding(2) var<storage, read_write> out: array<u32>;
+@compute @workgroup_size(8, 8)
+fn main(@builtin(global_invocation_id) g: vec3u) {{
+    let id = g.y * 1024u + g.x;
+    var i = (id * 2654435761u) & 0x7ffeu;
+    var acc = 0u;
+    for (var k = 0u; k < 64u; k++) {{
+        {body}
+        acc += v.x + v.y + v.z + v.w;
+        i = (v.x + v.w + i * 1664525u + 1013904223u) & 0x7ffeu;
+    }}
+    out[id] = acc;
+}}"
+        );
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(name),
+            source: wgpu::ShaderSource::Wgsl(src.clone().into()),
+        });
+        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(name),
+            layout: None,
+            module: &module,
+            entry_point: Some("main"),
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        let layout = pipeline.get_bind_group_layout(0);
+        let mut entries = vec![wgpu::BindGroupEntry {
+            binding: 2,
+            resource: out.as_entire_binding(),
+        }];
+        if src.contains("s[") {
+            entries.push(wgpu::BindGroupEntry {
+                binding: 0,
+                resource: buf.as_entire_binding(),
+            });
+        }
+        if src.contains("q[") {
+            entries.push(wgpu::BindGroupEntry {
+                binding: 1,
+                resource: buf.as_entire_binding(),
+            });
+        }
+        let bg = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: None,
+            layout: &layout,
+            entries: &entries,
+        });
+        let mut best = f64::MAX;
+        for _ in 0..3 {
+            let mut enc = device.create_command_encoder(&Default::default());
+            {
+                let mut pass = enc.begin_compute_pass(&Default::default());
+                pass.set_pipeline(&pipeline);
+                pass.set_bind_group(0, &bg, &[]);
+                pass.dispatch_workgroups(128, 128, 1);
+            }
+            let t = Instant::now();
+            gpu.queue().submit([enc.finish()]);
+            gpu.wait_idle().unwrap();
+            best = best.min(t.elapsed().as_secs_f64() * 1e3);
+        }
+        for e in gpu.take_uncaptured_errors() {
+            println!("ERR {e}");
+        }
+        // 1M invocations x 64 steps in 8-lane batches, spread over every core.
+        let per_step = best * 1e6 * threads / (131_072.0 * 64.0);
+        println!("{name:10} {best:8.1} ms  {per_step:6.1} ns per 8-lane step on one core");
+    }
+}
