@@ -5,9 +5,9 @@
 //! The scene is five unit cubes (`cube_mesh()`, 12 triangles each) in a row along x, with a camera
 //! whose `@ray_generation` returns one hand-written ray per pixel (every float written as its exact
 //! bits). The expected counts come from a CPU copy of the kernel's traversal order (`intersect_scene`
-//! and `intersect_mesh` in `stdlib/kernel/trace.rt`: near child first, far child deferred with its
-//! entry distance, deferred nodes beyond the closest hit skipped when popped) run over the renderer's own node, instance and triangle
-//! arrays. The rays are axis-aligned and pass at least 0.05 (in face coordinates) from every
+//! and `intersect_mesh` in `stdlib/kernel/trace.rt`: near child first, far child deferred, a
+//! deferred node visited when popped even if the closest hit lies before it) run over the
+//! renderer's own node, instance and triangle arrays. The rays are axis-aligned and pass at least 0.05 (in face coordinates) from every
 //! triangle edge, so no box or triangle decision is within rounding of its boundary: counts must
 //! match exactly, `t` within a relative 1e-6, object indices exactly.
 //!
@@ -183,8 +183,7 @@ struct Counts {
     object: f32,
 }
 
-/// One node pair step of the kernel's loop: `Some(next)` to descend, pushing the far child with
-/// its entry distance.
+/// One node pair step of the kernel's loop: `Some(next)` to descend, pushing the far child.
 fn children(
     nodes: &[GpuNode],
     left: u32,
@@ -192,16 +191,16 @@ fn children(
     inv: [f32; 3],
     tmin: f32,
     best: f32,
-    stack: &mut Vec<(u32, f32)>,
+    stack: &mut Vec<u32>,
 ) -> Option<u32> {
     let l = &nodes[left as usize];
     let r = &nodes[left as usize + 1];
     match (slab(l, o, inv, tmin, best), slab(r, o, inv, tmin, best)) {
         (Some(tl), Some(tr)) => {
             let (near, far) = if tr < tl {
-                (left + 1, (left, tl))
+                (left + 1, left)
             } else {
-                (left, (left + 1, tr))
+                (left, left + 1)
             };
             stack.push(far);
             Some(near)
@@ -210,16 +209,6 @@ fn children(
         (None, Some(_)) => Some(left + 1),
         (None, None) => None,
     }
-}
-
-/// The kernel's `pop_within`: the next deferred node whose entry distance is at most `t`.
-fn pop_within(stack: &mut Vec<(u32, f32)>, t: f32) -> Option<u32> {
-    while let Some((node, entry)) = stack.pop() {
-        if entry <= t {
-            return Some(node);
-        }
-    }
-    None
 }
 
 fn transform(rows: &[[f32; 4]; 3], v: [f32; 3], w: f32) -> [f32; 3] {
@@ -283,7 +272,7 @@ fn reference(e: &Entities, origin: [f32; 3], dir: [f32; 3]) -> Counts {
                             &mut bstack,
                         );
                     }
-                    match next.or_else(|| pop_within(&mut bstack, best)) {
+                    match next.or_else(|| bstack.pop()) {
                         Some(b) => bnode = b,
                         None => break,
                     }
@@ -293,7 +282,7 @@ fn reference(e: &Entities, origin: [f32; 3], dir: [f32; 3]) -> Counts {
             node = next;
             continue;
         }
-        match pop_within(&mut stack, best) {
+        match stack.pop() {
             Some(s) => node = s,
             None => return c,
         }

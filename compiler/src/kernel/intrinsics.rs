@@ -194,13 +194,12 @@ impl KernelHooks<'_> {
         (self.config.tlas_stack + self.config.blas_stack).max(1)
     }
 
-    /// The traversal stack, a private global of `vec2u` entries (node, entry distance bits). A
-    /// private global is zeroed once per invocation, where a local array is zeroed at every call of
-    /// the function that declares it (once per ray), which on CPU drivers costs more than the
-    /// traversal itself.
+    /// The traversal stack, a private global of `u32` node indices. A private global is zeroed
+    /// once per invocation, where a local array is zeroed at every call of the function that
+    /// declares it (once per ray), which on CPU drivers costs more than the traversal itself.
     fn traversal_stack(&mut self, cx: &mut LowerCx<'_>) -> Handle<naga::GlobalVariable> {
-        let v2 = TypeCache::vector(cx.module_mut(), VectorSize::Bi, Scalar::U32);
-        let arr = TypeCache::array(cx.module_mut(), v2, self.traversal_stack_len());
+        let u = TypeCache::scalar(cx.module_mut(), Scalar::U32);
+        let arr = TypeCache::array(cx.module_mut(), u, self.traversal_stack_len());
         self.generated.private(cx, "traversal_stack", arr)
     }
 

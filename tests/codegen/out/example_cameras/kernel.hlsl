@@ -194,7 +194,7 @@ static uint F32_INF = 2139095040u;
 ByteAddressBuffer instances : register(t3);
 ByteAddressBuffer nodes : register(t2);
 ByteAddressBuffer triangles : register(t4);
-static uint2 traversal_stack[128] = (uint2[128])0;
+static uint traversal_stack[128] = (uint[128])0;
 ByteAddressBuffer attributes : register(t5);
 static uint ray_count = (uint)0;
 static float3 spawn_dirs[1] = (float3[1])0;
@@ -464,10 +464,10 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
-    float t_3 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_5 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
+    float t_2 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    bool hit_5 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_5 ? float3(t_3, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_5 ? float3(t_2, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -490,29 +490,13 @@ float slab(float3 lo, float3 hi, float3 origin, float3 inv_dir, float tmin_1, fl
     return asfloat(_e30);
 }
 
-uint2 pop_within(uint base, uint sp_in, float t)
+uint2 pop(uint base, uint sp)
 {
-    uint sp = (uint)0;
-
-    sp = sp_in;
-    uint2 loop_bound = uint2(4294967295u, 4294967295u);
-    while(true) {
-        if (all(loop_bound == uint2(0u, 0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e4 = sp;
-        if ((_e4 == 0u)) {
-            break;
-        }
-        uint _e7 = sp;
-        sp = (_e7 - 1u);
-        uint _e10 = sp;
-        uint2 e = traversal_stack[min(uint(min((base + _e10), 127u)), 127u)];
-        if ((asfloat(e.y) <= t)) {
-            uint _e21 = sp;
-            return uint2(e.x, _e21);
-        }
+    if ((sp == 0u)) {
+        return uint2(NO_HIT, 0u);
     }
-    return uint2(NO_HIT, 0u);
+    uint _e14 = traversal_stack[min(uint(min(((base + sp) - 1u), 127u)), 127u)];
+    return uint2(_e14, (sp - 1u));
 }
 
 GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
@@ -532,7 +516,6 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint k = (uint)0;
     uint near = (uint)0;
     uint far = (uint)0;
-    float t_far = (float)0;
 
     best = best_in;
     const float3 _e8 = safe_inverse(ray_3.dir);
@@ -540,20 +523,20 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint base_1 = inst_2.blas_root;
     sp_1 = 0u;
     node = base_1;
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e14 = node;
         GpuNode n_5 = ConstructGpuNode(asfloat(nodes.Load3(_e14*32+0)), asuint(nodes.Load(_e14*32+12)), asfloat(nodes.Load3(_e14*32+16)), asuint(nodes.Load(_e14*32+28)));
         if (((n_5.b & LEAF_BIT) != 0u)) {
             uint count = (n_5.b & ~(LEAF_BIT));
             k = 0u;
-            uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+            uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
             bool loop_init = true;
             while(true) {
-                if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+                loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
                     uint _e52 = k;
                     k = (_e52 + 1u);
@@ -595,47 +578,43 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             if (((_e71 < asfloat(_e80)) && (_e78 < asfloat(_e84)))) {
                 near = left;
                 far = right;
-                t_far = _e78;
                 if ((_e78 < _e71)) {
                     near = right;
                     far = left;
-                    t_far = _e71;
                 }
-                uint _e92 = sp_1;
-                if ((_e92 < BLAS_STACK)) {
-                    uint _e96 = sp_1;
-                    uint _e98 = far;
-                    float _e99 = t_far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e96), 127u)), 127u)] = uint2(_e98, asuint(_e99));
-                    uint _e106 = sp_1;
-                    sp_1 = (_e106 + 1u);
+                uint _e91 = sp_1;
+                if ((_e91 < BLAS_STACK)) {
+                    uint _e95 = sp_1;
+                    uint _e97 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e95), 127u)), 127u)] = _e97;
+                    uint _e102 = sp_1;
+                    sp_1 = (_e102 + 1u);
                 }
-                uint _e109 = near;
-                node = _e109;
+                uint _e105 = near;
+                node = _e105;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if ((_e71 < asfloat(_e111))) {
+            uint _e107 = F32_INF;
+            if ((_e71 < asfloat(_e107))) {
                 node = left;
                 continue;
             }
-            uint _e115 = F32_INF;
-            if ((_e78 < asfloat(_e115))) {
+            uint _e111 = F32_INF;
+            if ((_e78 < asfloat(_e111))) {
                 node = right;
                 continue;
             }
         }
-        uint _e119 = sp_1;
-        float _e121 = best.t;
-        const uint2 _e122 = pop_within(TLAS_STACK, _e119, _e121);
-        if ((_e122.x == NO_HIT)) {
+        uint _e115 = sp_1;
+        const uint2 _e116 = pop(TLAS_STACK, _e115);
+        if ((_e116.x == NO_HIT)) {
             break;
         }
-        node = _e122.x;
-        sp_1 = _e122.y;
+        node = _e116.x;
+        sp_1 = _e116.y;
     }
-    Candidate _e128 = best;
-    const Candidate candidate_2 = _e128;
+    Candidate _e122 = best;
+    const Candidate candidate_2 = _e122;
     return candidate_2;
 }
 
@@ -703,8 +682,8 @@ float3 decode_octahedral(uint bits)
 {
     float3 n = (float3)0;
 
-    float2 e_1 = (float2(int2(bits << 16, bits) >> 16) / 32767.0);
-    n = float3(e_1.x, e_1.y, ((1.0 - abs(e_1.x)) - abs(e_1.y)));
+    float2 e = (float2(int2(bits << 16, bits) >> 16) / 32767.0);
+    n = float3(e.x, e.y, ((1.0 - abs(e.x)) - abs(e.y)));
     float _e14 = n.z;
     if ((_e14 < 0.0)) {
         float3 _e21 = n;
@@ -809,11 +788,11 @@ uint medium_at(float3 p_1, uint exclude)
     nearest = asfloat(_e23);
     uint end = frame_1.medium_count;
     i = 0u;
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
             uint _e57 = i;
             i = (_e57 + 1u);
@@ -851,7 +830,6 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2)
     uint k_1 = (uint)0;
     uint near_1 = (uint)0;
     uint far_1 = (uint)0;
-    float t_far_1 = (float)0;
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
@@ -876,20 +854,20 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2)
         const Candidate candidate_6 = _e36;
         return candidate_6;
     }
-    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         uint _e37 = node_1;
         GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3(_e37*32+0)), asuint(nodes.Load(_e37*32+12)), asfloat(nodes.Load3(_e37*32+16)), asuint(nodes.Load(_e37*32+28)));
         if (((n_6.b & LEAF_BIT) != 0u)) {
             uint count_1 = (n_6.b & ~(LEAF_BIT));
             k_1 = 0u;
-            uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+            uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
             bool loop_init_2 = true;
             while(true) {
-                if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                 if (!loop_init_2) {
                     uint _e65 = k_1;
                     k_1 = (_e65 + 1u);
@@ -924,47 +902,43 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2)
             if (((_e85 < asfloat(_e94)) && (_e92 < asfloat(_e98)))) {
                 near_1 = left_1;
                 far_1 = right_1;
-                t_far_1 = _e92;
                 if ((_e92 < _e85)) {
                     near_1 = right_1;
                     far_1 = left_1;
-                    t_far_1 = _e85;
                 }
-                uint _e106 = sp_2;
-                if ((_e106 < TLAS_STACK)) {
-                    uint _e109 = sp_2;
-                    uint _e110 = far_1;
-                    float _e111 = t_far_1;
-                    traversal_stack[min(uint(min(_e109, 127u)), 127u)] = uint2(_e110, asuint(_e111));
-                    uint _e118 = sp_2;
-                    sp_2 = (_e118 + 1u);
+                uint _e105 = sp_2;
+                if ((_e105 < TLAS_STACK)) {
+                    uint _e108 = sp_2;
+                    uint _e109 = far_1;
+                    traversal_stack[min(uint(min(_e108, 127u)), 127u)] = _e109;
+                    uint _e114 = sp_2;
+                    sp_2 = (_e114 + 1u);
                 }
-                uint _e121 = near_1;
-                node_1 = _e121;
+                uint _e117 = near_1;
+                node_1 = _e117;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if ((_e85 < asfloat(_e123))) {
+            uint _e119 = F32_INF;
+            if ((_e85 < asfloat(_e119))) {
                 node_1 = left_1;
                 continue;
             }
-            uint _e127 = F32_INF;
-            if ((_e92 < asfloat(_e127))) {
+            uint _e123 = F32_INF;
+            if ((_e92 < asfloat(_e123))) {
                 node_1 = right_1;
                 continue;
             }
         }
-        uint _e131 = sp_2;
-        float _e133 = best_2.t;
-        const uint2 _e134 = pop_within(0u, _e131, _e133);
-        if ((_e134.x == NO_HIT)) {
+        uint _e127 = sp_2;
+        const uint2 _e128 = pop(0u, _e127);
+        if ((_e128.x == NO_HIT)) {
             break;
         }
-        node_1 = _e134.x;
-        sp_2 = _e134.y;
+        node_1 = _e128.x;
+        sp_2 = _e128.y;
     }
-    Candidate _e140 = best_2;
-    const Candidate candidate_8 = _e140;
+    Candidate _e134 = best_2;
+    const Candidate candidate_8 = _e134;
     return candidate_8;
 }
 
@@ -1022,12 +996,12 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_medium(uint type_id_2, uint offset_4, Ray ray_10, float t_1, float3 radiance)
+float3 dispatch_medium(uint type_id_2, uint offset_4, Ray ray_10, float t, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_11, float t_2, float3 radiance_1)
+float3 through_medium(Ray ray_11, float t_1, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
@@ -1039,7 +1013,7 @@ float3 through_medium(Ray ray_11, float t_2, float3 radiance_1)
     if (((inst_7.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_11, t_2, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_11, t_1, radiance_1);
     return _e21;
 }
 
@@ -1173,11 +1147,11 @@ float3 lambert_shade(Lambert m, Ray ray_12, Hit hit_1)
     color = (0.0).xxx;
     const uint _e11 = light_count_query();
     i_2 = 0u;
-    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
-        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
             uint _e33 = i_2;
             i_2 = (_e33 + 1u);
@@ -1283,10 +1257,10 @@ float3 trace(Ray camera_ray)
     ray_16 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
-    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
             Ray _e28 = ray_16;
@@ -1316,11 +1290,11 @@ float3 trace(Ray camera_ray)
                         Ray _e77 = ray_16;
                         f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_8, 0u);
                         i_3 = 0u;
-                        uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+                        uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
                         bool loop_init_4 = true;
                         while(true) {
-                            if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-                            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                            if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+                            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                             if (!loop_init_4) {
                                 uint _e108 = i_3;
                                 i_3 = (_e108 + 1u);
@@ -1432,11 +1406,11 @@ void render_pixel(uint2 pixel_3)
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s = 0u;
-    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_5 = true;
     while(true) {
-        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_5) {
             uint _e46 = s;
             s = (_e46 + 1u);

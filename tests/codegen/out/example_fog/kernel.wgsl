@@ -171,7 +171,7 @@ var<storage> nodes: array<GpuNode>;
 var<storage> triangles: array<vec4<f32>>;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
-var<private> traversal_stack: array<vec2<u32>, 128>;
+var<private> traversal_stack: array<u32, 128>;
 var<private> ray_count: u32;
 var<private> spawn_dirs: array<vec3<f32>, 1>;
 var<private> spawn_weights: array<vec3<f32>, 1>;
@@ -359,10 +359,10 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
-    let t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
-    let hit_9 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
+    let t_3 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    let hit_9 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_1 * rcp), (w * rcp)), hit_9);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_3, (v_1 * rcp), (w * rcp)), hit_9);
 }
 
 fn load_triangle(slot_1: u32) -> Triangle {
@@ -491,25 +491,12 @@ fn slab(lo: vec3<f32>, hi: vec3<f32>, origin: vec3<f32>, inv_dir: vec3<f32>, tmi
     return bitcast<f32>(_e30);
 }
 
-fn pop_within(base: u32, sp_in: u32, t: f32) -> vec2<u32> {
-    var sp: u32;
-
-    sp = sp_in;
-    loop {
-        let _e4 = sp;
-        if (_e4 == 0u) {
-            break;
-        }
-        let _e7 = sp;
-        sp = (_e7 - 1u);
-        let _e10 = sp;
-        let e_1 = traversal_stack[min((base + _e10), 127u)];
-        if (bitcast<f32>(e_1.y) <= t) {
-            let _e21 = sp;
-            return vec2<u32>(e_1.x, _e21);
-        }
+fn pop(base: u32, sp: u32) -> vec2<u32> {
+    if (sp == 0u) {
+        return vec2<u32>(NO_HIT, 0u);
     }
-    return vec2<u32>(NO_HIT, 0u);
+    let _e14 = traversal_stack[min(((base + sp) - 1u), 127u)];
+    return vec2<u32>(_e14, (sp - 1u));
 }
 
 fn intersect_mesh(inst_4: GpuInstance, slot_2: u32, world_ray: Ray, ray_6: Ray, best_in: Candidate, shadow: bool) -> Candidate {
@@ -519,7 +506,6 @@ fn intersect_mesh(inst_4: GpuInstance, slot_2: u32, world_ray: Ray, ray_6: Ray, 
     var k: u32;
     var near: u32;
     var far: u32;
-    var t_far: f32;
 
     best = best_in;
     let _e8 = safe_inverse(ray_6.dir);
@@ -573,47 +559,43 @@ fn intersect_mesh(inst_4: GpuInstance, slot_2: u32, world_ray: Ray, ray_6: Ray, 
             if ((_e71 < bitcast<f32>(_e80)) && (_e78 < bitcast<f32>(_e84))) {
                 near = left;
                 far = right;
-                t_far = _e78;
                 if (_e78 < _e71) {
                     near = right;
                     far = left;
-                    t_far = _e71;
                 }
-                let _e92 = sp_1;
-                if (_e92 < BLAS_STACK) {
-                    let _e96 = sp_1;
-                    let _e98 = far;
-                    let _e99 = t_far;
-                    traversal_stack[min((TLAS_STACK + _e96), 127u)] = vec2<u32>(_e98, bitcast<u32>(_e99));
-                    let _e106 = sp_1;
-                    sp_1 = (_e106 + 1u);
+                let _e91 = sp_1;
+                if (_e91 < BLAS_STACK) {
+                    let _e95 = sp_1;
+                    let _e97 = far;
+                    traversal_stack[min((TLAS_STACK + _e95), 127u)] = _e97;
+                    let _e102 = sp_1;
+                    sp_1 = (_e102 + 1u);
                 }
-                let _e109 = near;
-                node = _e109;
+                let _e105 = near;
+                node = _e105;
                 continue;
             }
-            let _e111 = F32_INF;
-            if (_e71 < bitcast<f32>(_e111)) {
+            let _e107 = F32_INF;
+            if (_e71 < bitcast<f32>(_e107)) {
                 node = left;
                 continue;
             }
-            let _e115 = F32_INF;
-            if (_e78 < bitcast<f32>(_e115)) {
+            let _e111 = F32_INF;
+            if (_e78 < bitcast<f32>(_e111)) {
                 node = right;
                 continue;
             }
         }
-        let _e119 = sp_1;
-        let _e121 = best.t;
-        let _e122 = pop_within(TLAS_STACK, _e119, _e121);
-        if (_e122.x == NO_HIT) {
+        let _e115 = sp_1;
+        let _e116 = pop(TLAS_STACK, _e115);
+        if (_e116.x == NO_HIT) {
             break;
         }
-        node = _e122.x;
-        sp_1 = _e122.y;
+        node = _e116.x;
+        sp_1 = _e116.y;
     }
-    let _e128 = best;
-    return _e128;
+    let _e122 = best;
+    return _e122;
 }
 
 fn intersect_object(slot_3: u32, ray_7: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
@@ -684,7 +666,6 @@ fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
     var k_1: u32;
     var near_1: u32;
     var far_1: u32;
-    var t_far_1: f32;
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
@@ -746,47 +727,43 @@ fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
             if ((_e85 < bitcast<f32>(_e94)) && (_e92 < bitcast<f32>(_e98))) {
                 near_1 = left_1;
                 far_1 = right_1;
-                t_far_1 = _e92;
                 if (_e92 < _e85) {
                     near_1 = right_1;
                     far_1 = left_1;
-                    t_far_1 = _e85;
                 }
-                let _e106 = sp_2;
-                if (_e106 < TLAS_STACK) {
-                    let _e109 = sp_2;
-                    let _e110 = far_1;
-                    let _e111 = t_far_1;
-                    traversal_stack[min(_e109, 127u)] = vec2<u32>(_e110, bitcast<u32>(_e111));
-                    let _e118 = sp_2;
-                    sp_2 = (_e118 + 1u);
+                let _e105 = sp_2;
+                if (_e105 < TLAS_STACK) {
+                    let _e108 = sp_2;
+                    let _e109 = far_1;
+                    traversal_stack[min(_e108, 127u)] = _e109;
+                    let _e114 = sp_2;
+                    sp_2 = (_e114 + 1u);
                 }
-                let _e121 = near_1;
-                node_1 = _e121;
+                let _e117 = near_1;
+                node_1 = _e117;
                 continue;
             }
-            let _e123 = F32_INF;
-            if (_e85 < bitcast<f32>(_e123)) {
+            let _e119 = F32_INF;
+            if (_e85 < bitcast<f32>(_e119)) {
                 node_1 = left_1;
                 continue;
             }
-            let _e127 = F32_INF;
-            if (_e92 < bitcast<f32>(_e127)) {
+            let _e123 = F32_INF;
+            if (_e92 < bitcast<f32>(_e123)) {
                 node_1 = right_1;
                 continue;
             }
         }
-        let _e131 = sp_2;
-        let _e133 = best_2.t;
-        let _e134 = pop_within(0u, _e131, _e133);
-        if (_e134.x == NO_HIT) {
+        let _e127 = sp_2;
+        let _e128 = pop(0u, _e127);
+        if (_e128.x == NO_HIT) {
             break;
         }
-        node_1 = _e134.x;
-        sp_2 = _e134.y;
+        node_1 = _e128.x;
+        sp_2 = _e128.y;
     }
-    let _e140 = best_2;
-    return _e140;
+    let _e134 = best_2;
+    return _e134;
 }
 
 fn dispatch_miss(type_id_2: u32, offset_4: u32, ray_9: Ray) -> vec3<f32> {
@@ -908,18 +885,18 @@ fn fog_inscatter(m_1: Fog, i_2: u32, o: vec3<f32>, dir_1: vec3<f32>, d_1: f32, t
     let _e61 = s;
     s = min(max(_e61, 0f), d_1);
     let _e66 = s;
-    let e_2 = exp((-(sigma) * _e66));
-    let p_free = select(((sigma * e_2) / (1f - trans)), (1f / d_1), tiny_1);
+    let e_1 = exp((-(sigma) * _e66));
+    let p_free = select(((sigma * e_1) / (1f - trans)), (1f / d_1), tiny_1);
     let _e76 = s;
     let r_4 = (_e76 - delta);
     let pdf = (((1f - w_3) * p_free) + select(0f, ((w_3 * h_2) / ((tb - ta) * ((h_2 * h_2) + (r_4 * r_4)))), equi));
     let _e91 = s;
     let _e97 = sample_light_query(i_2, (o + (dir_1 * vec3(_e91))), vec3(0f));
     let att = select(1f, exp((-(sigma) * _e97.dist)), (m_1.lights_inside == 1u));
-    return (_e97.radiance * vec3((((att * sigma) * e_2) / pdf)));
+    return (_e97.radiance * vec3((((att * sigma) * e_1) / pdf)));
 }
 
-fn fog_medium(m_2: Fog, ray_11: Ray, t_1: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn fog_medium(m_2: Fog, ray_11: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     var light: vec3<f32>;
     var i_3: u32;
 
@@ -927,7 +904,7 @@ fn fog_medium(m_2: Fog, ray_11: Ray, t_1: f32, radiance: vec3<f32>) -> vec3<f32>
     if (!((m_2.density > 0f)) || !((len > 0f))) {
         return radiance;
     }
-    let d_4 = (t_1 * len);
+    let d_4 = (t * len);
     let trans_1 = exp((-(m_2.density) * d_4));
     light = vec3(0f);
     let _e23 = light_count_query();
@@ -950,13 +927,13 @@ fn fog_medium(m_2: Fog, ray_11: Ray, t_1: f32, radiance: vec3<f32>) -> vec3<f32>
     return ((radiance * vec3(trans_1)) + ((m_2.albedo * vec3((0.25f * INV_PI))) * _e46));
 }
 
-fn dispatch_medium(type_id_4: u32, offset_7: u32, ray_12: Ray, t_2: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_4: u32, offset_7: u32, ray_12: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     let _e4 = load_Fog(offset_7);
-    let _e5 = fog_medium(_e4, ray_12, t_2, radiance_1);
+    let _e5 = fog_medium(_e4, ray_12, t_1, radiance_1);
     return _e5;
 }
 
-fn through_medium(ray_13: Ray, t_3: f32, radiance_2: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_13: Ray, t_2: f32, radiance_2: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_2;
     }
@@ -967,7 +944,7 @@ fn through_medium(ray_13: Ray, t_3: f32, radiance_2: vec3<f32>) -> vec3<f32> {
     if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
         return radiance_2;
     }
-    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_13, t_3, radiance_2);
+    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_13, t_2, radiance_2);
     return _e21;
 }
 

@@ -191,7 +191,7 @@ layout(std430, binding = 2) readonly buffer type_9_block_4Compute { GpuNode _gro
 
 layout(std430, binding = 4) readonly buffer type_10_block_5Compute { vec4 _group_0_binding_4_cs[]; };
 
-uvec2 traversal_stack[128] = uvec2[128](uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u));
+uint traversal_stack[128] = uint[128](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
 layout(std430, binding = 5) readonly buffer type_13_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
 
@@ -383,10 +383,10 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
-    float t_5 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_5 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
+    float t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    bool hit_5 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_5 ? vec3(t_5, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_5 ? vec3(t_4, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
@@ -407,24 +407,12 @@ float slab(vec3 lo, vec3 hi, vec3 origin, vec3 inv_dir, float tmin_1, float tmax
     return uintBitsToFloat(_e30);
 }
 
-uvec2 pop_within(uint base, uint sp_in, float t) {
-    uint sp = 0u;
-    sp = sp_in;
-    while(true) {
-        uint _e4 = sp;
-        if ((_e4 == 0u)) {
-            break;
-        }
-        uint _e7 = sp;
-        sp = (_e7 - 1u);
-        uint _e10 = sp;
-        uvec2 e = traversal_stack[min((base + _e10), 127u)];
-        if ((uintBitsToFloat(e.y) <= t)) {
-            uint _e21 = sp;
-            return uvec2(e.x, _e21);
-        }
+uvec2 pop(uint base, uint sp) {
+    if ((sp == 0u)) {
+        return uvec2(NO_HIT, 0u);
     }
-    return uvec2(NO_HIT, 0u);
+    uint _e14 = traversal_stack[min(((base + sp) - 1u), 127u)];
+    return uvec2(_e14, (sp - 1u));
 }
 
 Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_3, Candidate best_in, bool shadow) {
@@ -434,7 +422,6 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint k = 0u;
     uint near = 0u;
     uint far = 0u;
-    float t_far = 0.0;
     best = best_in;
     vec3 _e8 = safe_inverse(ray_3.dir);
     TriangleRay _e9 = prepare_triangle_ray(ray_3);
@@ -489,47 +476,43 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             if (((_e71 < uintBitsToFloat(_e80)) && (_e78 < uintBitsToFloat(_e84)))) {
                 near = left;
                 far = right;
-                t_far = _e78;
                 if ((_e78 < _e71)) {
                     near = right;
                     far = left;
-                    t_far = _e71;
                 }
-                uint _e92 = sp_1;
-                if ((_e92 < BLAS_STACK)) {
-                    uint _e96 = sp_1;
-                    uint _e98 = far;
-                    float _e99 = t_far;
-                    traversal_stack[min((TLAS_STACK + _e96), 127u)] = uvec2(_e98, floatBitsToUint(_e99));
-                    uint _e106 = sp_1;
-                    sp_1 = (_e106 + 1u);
+                uint _e91 = sp_1;
+                if ((_e91 < BLAS_STACK)) {
+                    uint _e95 = sp_1;
+                    uint _e97 = far;
+                    traversal_stack[min((TLAS_STACK + _e95), 127u)] = _e97;
+                    uint _e102 = sp_1;
+                    sp_1 = (_e102 + 1u);
                 }
-                uint _e109 = near;
-                node = _e109;
+                uint _e105 = near;
+                node = _e105;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if ((_e71 < uintBitsToFloat(_e111))) {
+            uint _e107 = F32_INF;
+            if ((_e71 < uintBitsToFloat(_e107))) {
                 node = left;
                 continue;
             }
-            uint _e115 = F32_INF;
-            if ((_e78 < uintBitsToFloat(_e115))) {
+            uint _e111 = F32_INF;
+            if ((_e78 < uintBitsToFloat(_e111))) {
                 node = right;
                 continue;
             }
         }
-        uint _e119 = sp_1;
-        float _e121 = best.t;
-        uvec2 _e122 = pop_within(TLAS_STACK, _e119, _e121);
-        if ((_e122.x == NO_HIT)) {
+        uint _e115 = sp_1;
+        uvec2 _e116 = pop(TLAS_STACK, _e115);
+        if ((_e116.x == NO_HIT)) {
             break;
         }
-        node = _e122.x;
-        sp_1 = _e122.y;
+        node = _e116.x;
+        sp_1 = _e116.y;
     }
-    Candidate _e128 = best;
-    return _e128;
+    Candidate _e122 = best;
+    return _e122;
 }
 
 Box load_Box(uint offset_2) {
@@ -543,7 +526,7 @@ Box load_Box(uint offset_2) {
 }
 
 Intersection box_intersect(Box b_4, Ray ray_4) {
-    float t_1 = 0.0;
+    float t = 0.0;
     uint axis = 0u;
     float sign_ = 0.0;
     vec3 n = vec3(0.0);
@@ -559,16 +542,16 @@ Intersection box_intersect(Box b_4, Ray ray_4) {
         uint _e37 = F32_INF;
         return Intersection(uintBitsToFloat(_e37), vec3(0.0, 0.0, 1.0), vec2(0.0));
     }
-    t_1 = entry;
+    t = entry;
     axis = ((entry == near_3.x) ? 0u : ((entry == near_3.y) ? 1u : 2u));
     sign_ = -1.0;
     if (!((entry >= ray_4.tmin))) {
-        t_1 = exit_1;
+        t = exit_1;
         axis = ((exit_1 == far_3.x) ? 0u : ((exit_1 == far_3.y) ? 1u : 2u));
         sign_ = 1.0;
     }
-    float _e71 = t_1;
-    float _e74 = t_1;
+    float _e71 = t;
+    float _e74 = t;
     if (!(((_e71 >= ray_4.tmin) && (_e74 <= ray_4.tmax)))) {
         uint _e80 = F32_INF;
         return Intersection(uintBitsToFloat(_e80), vec3(0.0, 0.0, 1.0), vec2(0.0));
@@ -578,12 +561,12 @@ Intersection box_intersect(Box b_4, Ray ray_4) {
     float _e95 = sign_;
     uint _e99 = axis;
     n[min(_e91, 2u)] = (_e95 * ((ray_4.dir[min(_e99, 2u)] >= 0.0) ? 1.0 : -1.0));
-    float _e109 = t_1;
+    float _e109 = t;
     vec3 rel = (((ray_4.origin + (ray_4.dir * vec3(_e109))) - b_4.min_) / max((b_4.max_ - b_4.min_), vec3(1e-30)));
     uint _e124 = axis;
     uint _e129 = axis;
     vec2 uv = ((_e129 == 0u) ? rel.zy : ((_e124 == 1u) ? rel.xz : rel.xy));
-    float _e133 = t_1;
+    float _e133 = t;
     vec3 _e134 = n;
     return Intersection(_e133, _e134, uv);
 }
@@ -597,7 +580,7 @@ Sphere load_Sphere(uint offset_3) {
 }
 
 Intersection sphere_intersect(Sphere s, Ray ray_5) {
-    float t_2 = 0.0;
+    float t_1 = 0.0;
     vec3 f_1 = (ray_5.origin - s.center);
     float a_5 = dot(ray_5.dir, ray_5.dir);
     float b_7 = -(dot(f_1, ray_5.dir));
@@ -611,22 +594,22 @@ Intersection sphere_intersect(Sphere s, Ray ray_5) {
     float q = (b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
     float t0_1 = ((dot(f_1, f_1) - r2_) / q);
     float t1_1 = (q / a_5);
-    t_2 = min(t0_1, t1_1);
-    float _e52 = t_2;
+    t_1 = min(t0_1, t1_1);
+    float _e52 = t_1;
     if (!((_e52 >= ray_5.tmin))) {
-        t_2 = max(t0_1, t1_1);
+        t_1 = max(t0_1, t1_1);
     }
-    float _e57 = t_2;
-    float _e60 = t_2;
+    float _e57 = t_1;
+    float _e60 = t_1;
     if (!(((_e57 >= ray_5.tmin) && (_e60 <= ray_5.tmax)))) {
         uint _e66 = F32_INF;
         return Intersection(uintBitsToFloat(_e66), vec3(0.0, 0.0, 1.0), vec2(0.0));
     }
-    float _e76 = t_2;
+    float _e76 = t_1;
     vec3 _e82 = normalize_vec3f(((ray_5.origin + (ray_5.dir * vec3(_e76))) - s.center));
     float u_1 = (((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (atan(_e82.z, -(_e82.x)) / TAU)));
     vec2 uv_1 = vec2(u_1, (acos(min(max(_e82.y, -1.0), 1.0)) * INV_PI));
-    float _e109 = t_2;
+    float _e109 = t_1;
     return Intersection(_e109, _e82, uv_1);
 }
 
@@ -689,8 +672,8 @@ vec3 point_to_world(GpuInstance inst_3, vec3 p) {
 
 vec3 decode_octahedral(uint bits) {
     vec3 n_1 = vec3(0.0);
-    vec2 e_1 = unpackSnorm2x16(bits);
-    n_1 = vec3(e_1.x, e_1.y, ((1.0 - abs(e_1.x)) - abs(e_1.y)));
+    vec2 e = unpackSnorm2x16(bits);
+    n_1 = vec3(e.x, e.y, ((1.0 - abs(e.x)) - abs(e.y)));
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n_1;
@@ -811,7 +794,6 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
     uint k_1 = 0u;
     uint near_1 = 0u;
     uint far_1 = 0u;
-    float t_far_1 = 0.0;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
     Candidate _e7 = no_candidate(ray_9.tmax);
@@ -874,47 +856,43 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
             if (((_e85 < uintBitsToFloat(_e94)) && (_e92 < uintBitsToFloat(_e98)))) {
                 near_1 = left_1;
                 far_1 = right_1;
-                t_far_1 = _e92;
                 if ((_e92 < _e85)) {
                     near_1 = right_1;
                     far_1 = left_1;
-                    t_far_1 = _e85;
                 }
-                uint _e106 = sp_2;
-                if ((_e106 < TLAS_STACK)) {
-                    uint _e109 = sp_2;
-                    uint _e110 = far_1;
-                    float _e111 = t_far_1;
-                    traversal_stack[min(_e109, 127u)] = uvec2(_e110, floatBitsToUint(_e111));
-                    uint _e118 = sp_2;
-                    sp_2 = (_e118 + 1u);
+                uint _e105 = sp_2;
+                if ((_e105 < TLAS_STACK)) {
+                    uint _e108 = sp_2;
+                    uint _e109 = far_1;
+                    traversal_stack[min(_e108, 127u)] = _e109;
+                    uint _e114 = sp_2;
+                    sp_2 = (_e114 + 1u);
                 }
-                uint _e121 = near_1;
-                node_1 = _e121;
+                uint _e117 = near_1;
+                node_1 = _e117;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if ((_e85 < uintBitsToFloat(_e123))) {
+            uint _e119 = F32_INF;
+            if ((_e85 < uintBitsToFloat(_e119))) {
                 node_1 = left_1;
                 continue;
             }
-            uint _e127 = F32_INF;
-            if ((_e92 < uintBitsToFloat(_e127))) {
+            uint _e123 = F32_INF;
+            if ((_e92 < uintBitsToFloat(_e123))) {
                 node_1 = right_1;
                 continue;
             }
         }
-        uint _e131 = sp_2;
-        float _e133 = best_2.t;
-        uvec2 _e134 = pop_within(0u, _e131, _e133);
-        if ((_e134.x == NO_HIT)) {
+        uint _e127 = sp_2;
+        uvec2 _e128 = pop(0u, _e127);
+        if ((_e128.x == NO_HIT)) {
             break;
         }
-        node_1 = _e134.x;
-        sp_2 = _e134.y;
+        node_1 = _e128.x;
+        sp_2 = _e128.y;
     }
-    Candidate _e140 = best_2;
-    return _e140;
+    Candidate _e134 = best_2;
+    return _e134;
 }
 
 ConstantBackground load_ConstantBackground(uint offset_5) {
@@ -943,11 +921,11 @@ vec3 miss(Ray ray_12) {
     return _e9;
 }
 
-vec3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_13, float t_3, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_13, float t_2, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_14, float t_4, vec3 radiance_1) {
+vec3 through_medium(Ray ray_14, float t_3, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
@@ -958,7 +936,7 @@ vec3 through_medium(Ray ray_14, float t_4, vec3 radiance_1) {
     if (((inst_7.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_14, t_4, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_14, t_3, radiance_1);
     return _e21;
 }
 

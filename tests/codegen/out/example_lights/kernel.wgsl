@@ -205,7 +205,7 @@ var<storage> instances: array<GpuInstance>;
 var<storage> nodes: array<GpuNode>;
 @group(0) @binding(4) 
 var<storage> triangles: array<vec4<f32>>;
-var<private> traversal_stack: array<vec2<u32>, 128>;
+var<private> traversal_stack: array<u32, 128>;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
 var<private> ray_count: u32;
@@ -395,10 +395,10 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
-    let t_5 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
-    let hit_5 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
+    let t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    let hit_5 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_5, (v_1 * rcp), (w * rcp)), hit_5);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_1 * rcp), (w * rcp)), hit_5);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -419,25 +419,12 @@ fn slab(lo: vec3<f32>, hi: vec3<f32>, origin: vec3<f32>, inv_dir: vec3<f32>, tmi
     return bitcast<f32>(_e30);
 }
 
-fn pop_within(base: u32, sp_in: u32, t: f32) -> vec2<u32> {
-    var sp: u32;
-
-    sp = sp_in;
-    loop {
-        let _e4 = sp;
-        if (_e4 == 0u) {
-            break;
-        }
-        let _e7 = sp;
-        sp = (_e7 - 1u);
-        let _e10 = sp;
-        let e = traversal_stack[min((base + _e10), 127u)];
-        if (bitcast<f32>(e.y) <= t) {
-            let _e21 = sp;
-            return vec2<u32>(e.x, _e21);
-        }
+fn pop(base: u32, sp: u32) -> vec2<u32> {
+    if (sp == 0u) {
+        return vec2<u32>(NO_HIT, 0u);
     }
-    return vec2<u32>(NO_HIT, 0u);
+    let _e14 = traversal_stack[min(((base + sp) - 1u), 127u)];
+    return vec2<u32>(_e14, (sp - 1u));
 }
 
 fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, best_in: Candidate, shadow: bool) -> Candidate {
@@ -447,7 +434,6 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, 
     var k: u32;
     var near: u32;
     var far: u32;
-    var t_far: f32;
 
     best = best_in;
     let _e8 = safe_inverse(ray_3.dir);
@@ -501,47 +487,43 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, 
             if ((_e71 < bitcast<f32>(_e80)) && (_e78 < bitcast<f32>(_e84))) {
                 near = left;
                 far = right;
-                t_far = _e78;
                 if (_e78 < _e71) {
                     near = right;
                     far = left;
-                    t_far = _e71;
                 }
-                let _e92 = sp_1;
-                if (_e92 < BLAS_STACK) {
-                    let _e96 = sp_1;
-                    let _e98 = far;
-                    let _e99 = t_far;
-                    traversal_stack[min((TLAS_STACK + _e96), 127u)] = vec2<u32>(_e98, bitcast<u32>(_e99));
-                    let _e106 = sp_1;
-                    sp_1 = (_e106 + 1u);
+                let _e91 = sp_1;
+                if (_e91 < BLAS_STACK) {
+                    let _e95 = sp_1;
+                    let _e97 = far;
+                    traversal_stack[min((TLAS_STACK + _e95), 127u)] = _e97;
+                    let _e102 = sp_1;
+                    sp_1 = (_e102 + 1u);
                 }
-                let _e109 = near;
-                node = _e109;
+                let _e105 = near;
+                node = _e105;
                 continue;
             }
-            let _e111 = F32_INF;
-            if (_e71 < bitcast<f32>(_e111)) {
+            let _e107 = F32_INF;
+            if (_e71 < bitcast<f32>(_e107)) {
                 node = left;
                 continue;
             }
-            let _e115 = F32_INF;
-            if (_e78 < bitcast<f32>(_e115)) {
+            let _e111 = F32_INF;
+            if (_e78 < bitcast<f32>(_e111)) {
                 node = right;
                 continue;
             }
         }
-        let _e119 = sp_1;
-        let _e121 = best.t;
-        let _e122 = pop_within(TLAS_STACK, _e119, _e121);
-        if (_e122.x == NO_HIT) {
+        let _e115 = sp_1;
+        let _e116 = pop(TLAS_STACK, _e115);
+        if (_e116.x == NO_HIT) {
             break;
         }
-        node = _e122.x;
-        sp_1 = _e122.y;
+        node = _e116.x;
+        sp_1 = _e116.y;
     }
-    let _e128 = best;
-    return _e128;
+    let _e122 = best;
+    return _e122;
 }
 
 fn load_Box(offset_2: u32) -> Box {
@@ -555,7 +537,7 @@ fn load_Box(offset_2: u32) -> Box {
 }
 
 fn box_intersect(b_4: Box, ray_4: Ray) -> Intersection {
-    var t_1: f32;
+    var t: f32;
     var axis: u32;
     var sign_: f32;
     var n: vec3<f32>;
@@ -572,16 +554,16 @@ fn box_intersect(b_4: Box, ray_4: Ray) -> Intersection {
         let _e37 = F32_INF;
         return Intersection(bitcast<f32>(_e37), vec3<f32>(0f, 0f, 1f), vec2<f32>());
     }
-    t_1 = entry;
+    t = entry;
     axis = select(select(2u, 1u, (entry == near_3.y)), 0u, (entry == near_3.x));
     sign_ = -1f;
     if !((entry >= ray_4.tmin)) {
-        t_1 = exit_1;
+        t = exit_1;
         axis = select(select(2u, 1u, (exit_1 == far_3.y)), 0u, (exit_1 == far_3.x));
         sign_ = 1f;
     }
-    let _e71 = t_1;
-    let _e74 = t_1;
+    let _e71 = t;
+    let _e74 = t;
     if !(((_e71 >= ray_4.tmin) && (_e74 <= ray_4.tmax))) {
         let _e80 = F32_INF;
         return Intersection(bitcast<f32>(_e80), vec3<f32>(0f, 0f, 1f), vec2<f32>());
@@ -591,12 +573,12 @@ fn box_intersect(b_4: Box, ray_4: Ray) -> Intersection {
     let _e95 = sign_;
     let _e99 = axis;
     n[min(_e91, 2u)] = (_e95 * select(-1f, 1f, (ray_4.dir[min(_e99, 2u)] >= 0f)));
-    let _e109 = t_1;
+    let _e109 = t;
     let rel = (((ray_4.origin + (ray_4.dir * vec3(_e109))) - b_4.min) / max((b_4.max - b_4.min), vec3(0.000000000000000000000000000001f)));
     let _e124 = axis;
     let _e129 = axis;
     let uv = select(select(rel.xy, rel.xz, (_e124 == 1u)), rel.zy, (_e129 == 0u));
-    let _e133 = t_1;
+    let _e133 = t;
     let _e134 = n;
     return Intersection(_e133, _e134, uv);
 }
@@ -610,7 +592,7 @@ fn load_Sphere(offset_3: u32) -> Sphere {
 }
 
 fn sphere_intersect(s: Sphere, ray_5: Ray) -> Intersection {
-    var t_2: f32;
+    var t_1: f32;
 
     let f_1 = (ray_5.origin - s.center);
     let a_5 = dot(ray_5.dir, ray_5.dir);
@@ -625,22 +607,22 @@ fn sphere_intersect(s: Sphere, ray_5: Ray) -> Intersection {
     let q = (b_7 + (select(-1f, 1f, (b_7 >= 0f)) * sqrt(disc)));
     let t0_1 = ((dot(f_1, f_1) - r2_) / q);
     let t1_1 = (q / a_5);
-    t_2 = min(t0_1, t1_1);
-    let _e52 = t_2;
+    t_1 = min(t0_1, t1_1);
+    let _e52 = t_1;
     if !((_e52 >= ray_5.tmin)) {
-        t_2 = max(t0_1, t1_1);
+        t_1 = max(t0_1, t1_1);
     }
-    let _e57 = t_2;
-    let _e60 = t_2;
+    let _e57 = t_1;
+    let _e60 = t_1;
     if !(((_e57 >= ray_5.tmin) && (_e60 <= ray_5.tmax))) {
         let _e66 = F32_INF;
         return Intersection(bitcast<f32>(_e66), vec3<f32>(0f, 0f, 1f), vec2<f32>());
     }
-    let _e76 = t_2;
+    let _e76 = t_1;
     let _e82 = normalize_vec3f(((ray_5.origin + (ray_5.dir * vec3(_e76))) - s.center));
     let u_1 = select((0.5f + (atan2(_e82.z, -(_e82.x)) / TAU)), 0.5f, ((_e82.x == 0f) && (_e82.z == 0f)));
     let uv_1 = vec2<f32>(u_1, (acos(min(max(_e82.y, -1f), 1f)) * INV_PI));
-    let _e109 = t_2;
+    let _e109 = t_1;
     return Intersection(_e109, _e82, uv_1);
 }
 
@@ -704,8 +686,8 @@ fn point_to_world(inst_3: GpuInstance, p: vec3<f32>) -> vec3<f32> {
 fn decode_octahedral(bits: u32) -> vec3<f32> {
     var n_1: vec3<f32>;
 
-    let e_1 = unpack2x16snorm(bits);
-    n_1 = vec3<f32>(e_1.x, e_1.y, ((1f - abs(e_1.x)) - abs(e_1.y)));
+    let e = unpack2x16snorm(bits);
+    n_1 = vec3<f32>(e.x, e.y, ((1f - abs(e.x)) - abs(e.y)));
     let _e14 = n_1.z;
     if (_e14 < 0f) {
         let _e21 = n_1;
@@ -826,7 +808,6 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
     var k_1: u32;
     var near_1: u32;
     var far_1: u32;
-    var t_far_1: f32;
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
@@ -888,47 +869,43 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
             if ((_e85 < bitcast<f32>(_e94)) && (_e92 < bitcast<f32>(_e98))) {
                 near_1 = left_1;
                 far_1 = right_1;
-                t_far_1 = _e92;
                 if (_e92 < _e85) {
                     near_1 = right_1;
                     far_1 = left_1;
-                    t_far_1 = _e85;
                 }
-                let _e106 = sp_2;
-                if (_e106 < TLAS_STACK) {
-                    let _e109 = sp_2;
-                    let _e110 = far_1;
-                    let _e111 = t_far_1;
-                    traversal_stack[min(_e109, 127u)] = vec2<u32>(_e110, bitcast<u32>(_e111));
-                    let _e118 = sp_2;
-                    sp_2 = (_e118 + 1u);
+                let _e105 = sp_2;
+                if (_e105 < TLAS_STACK) {
+                    let _e108 = sp_2;
+                    let _e109 = far_1;
+                    traversal_stack[min(_e108, 127u)] = _e109;
+                    let _e114 = sp_2;
+                    sp_2 = (_e114 + 1u);
                 }
-                let _e121 = near_1;
-                node_1 = _e121;
+                let _e117 = near_1;
+                node_1 = _e117;
                 continue;
             }
-            let _e123 = F32_INF;
-            if (_e85 < bitcast<f32>(_e123)) {
+            let _e119 = F32_INF;
+            if (_e85 < bitcast<f32>(_e119)) {
                 node_1 = left_1;
                 continue;
             }
-            let _e127 = F32_INF;
-            if (_e92 < bitcast<f32>(_e127)) {
+            let _e123 = F32_INF;
+            if (_e92 < bitcast<f32>(_e123)) {
                 node_1 = right_1;
                 continue;
             }
         }
-        let _e131 = sp_2;
-        let _e133 = best_2.t;
-        let _e134 = pop_within(0u, _e131, _e133);
-        if (_e134.x == NO_HIT) {
+        let _e127 = sp_2;
+        let _e128 = pop(0u, _e127);
+        if (_e128.x == NO_HIT) {
             break;
         }
-        node_1 = _e134.x;
-        sp_2 = _e134.y;
+        node_1 = _e128.x;
+        sp_2 = _e128.y;
     }
-    let _e140 = best_2;
-    return _e140;
+    let _e134 = best_2;
+    return _e134;
 }
 
 fn load_ConstantBackground(offset_5: u32) -> ConstantBackground {
@@ -957,11 +934,11 @@ fn miss(ray_12: Ray) -> vec3<f32> {
     return _e9;
 }
 
-fn dispatch_medium(type_id_3: u32, offset_7: u32, ray_13: Ray, t_3: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_3: u32, offset_7: u32, ray_13: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_14: Ray, t_4: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_14: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
@@ -972,7 +949,7 @@ fn through_medium(ray_14: Ray, t_4: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_14, t_4, radiance_1);
+    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_14, t_3, radiance_1);
     return _e21;
 }
 

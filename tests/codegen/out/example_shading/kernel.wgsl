@@ -187,7 +187,7 @@ var<storage> instances: array<GpuInstance>;
 var<storage> nodes: array<GpuNode>;
 @group(0) @binding(4) 
 var<storage> triangles: array<vec4<f32>>;
-var<private> traversal_stack: array<vec2<u32>, 128>;
+var<private> traversal_stack: array<u32, 128>;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
 var<private> ray_count: u32;
@@ -379,10 +379,10 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
-    let t_5 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
-    let hit_9 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
+    let t_4 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    let hit_9 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_5, (v_1 * rcp), (w * rcp)), hit_9);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_1 * rcp), (w * rcp)), hit_9);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -403,25 +403,12 @@ fn slab(lo: vec3<f32>, hi: vec3<f32>, origin: vec3<f32>, inv_dir: vec3<f32>, tmi
     return bitcast<f32>(_e30);
 }
 
-fn pop_within(base: u32, sp_in: u32, t: f32) -> vec2<u32> {
-    var sp: u32;
-
-    sp = sp_in;
-    loop {
-        let _e4 = sp;
-        if (_e4 == 0u) {
-            break;
-        }
-        let _e7 = sp;
-        sp = (_e7 - 1u);
-        let _e10 = sp;
-        let e = traversal_stack[min((base + _e10), 127u)];
-        if (bitcast<f32>(e.y) <= t) {
-            let _e21 = sp;
-            return vec2<u32>(e.x, _e21);
-        }
+fn pop(base: u32, sp: u32) -> vec2<u32> {
+    if (sp == 0u) {
+        return vec2<u32>(NO_HIT, 0u);
     }
-    return vec2<u32>(NO_HIT, 0u);
+    let _e14 = traversal_stack[min(((base + sp) - 1u), 127u)];
+    return vec2<u32>(_e14, (sp - 1u));
 }
 
 fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, best_in: Candidate, shadow: bool) -> Candidate {
@@ -431,7 +418,6 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, 
     var k: u32;
     var near: u32;
     var far: u32;
-    var t_far: f32;
 
     best = best_in;
     let _e8 = safe_inverse(ray_3.dir);
@@ -485,47 +471,43 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, 
             if ((_e71 < bitcast<f32>(_e80)) && (_e78 < bitcast<f32>(_e84))) {
                 near = left;
                 far = right;
-                t_far = _e78;
                 if (_e78 < _e71) {
                     near = right;
                     far = left;
-                    t_far = _e71;
                 }
-                let _e92 = sp_1;
-                if (_e92 < BLAS_STACK) {
-                    let _e96 = sp_1;
-                    let _e98 = far;
-                    let _e99 = t_far;
-                    traversal_stack[min((TLAS_STACK + _e96), 127u)] = vec2<u32>(_e98, bitcast<u32>(_e99));
-                    let _e106 = sp_1;
-                    sp_1 = (_e106 + 1u);
+                let _e91 = sp_1;
+                if (_e91 < BLAS_STACK) {
+                    let _e95 = sp_1;
+                    let _e97 = far;
+                    traversal_stack[min((TLAS_STACK + _e95), 127u)] = _e97;
+                    let _e102 = sp_1;
+                    sp_1 = (_e102 + 1u);
                 }
-                let _e109 = near;
-                node = _e109;
+                let _e105 = near;
+                node = _e105;
                 continue;
             }
-            let _e111 = F32_INF;
-            if (_e71 < bitcast<f32>(_e111)) {
+            let _e107 = F32_INF;
+            if (_e71 < bitcast<f32>(_e107)) {
                 node = left;
                 continue;
             }
-            let _e115 = F32_INF;
-            if (_e78 < bitcast<f32>(_e115)) {
+            let _e111 = F32_INF;
+            if (_e78 < bitcast<f32>(_e111)) {
                 node = right;
                 continue;
             }
         }
-        let _e119 = sp_1;
-        let _e121 = best.t;
-        let _e122 = pop_within(TLAS_STACK, _e119, _e121);
-        if (_e122.x == NO_HIT) {
+        let _e115 = sp_1;
+        let _e116 = pop(TLAS_STACK, _e115);
+        if (_e116.x == NO_HIT) {
             break;
         }
-        node = _e122.x;
-        sp_1 = _e122.y;
+        node = _e116.x;
+        sp_1 = _e116.y;
     }
-    let _e128 = best;
-    return _e128;
+    let _e122 = best;
+    return _e122;
 }
 
 fn intersect_object(slot_2: u32, ray_4: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
@@ -558,8 +540,8 @@ fn point_to_world(inst_3: GpuInstance, p: vec3<f32>) -> vec3<f32> {
 fn decode_octahedral(bits: u32) -> vec3<f32> {
     var n: vec3<f32>;
 
-    let e_1 = unpack2x16snorm(bits);
-    n = vec3<f32>(e_1.x, e_1.y, ((1f - abs(e_1.x)) - abs(e_1.y)));
+    let e = unpack2x16snorm(bits);
+    n = vec3<f32>(e.x, e.y, ((1f - abs(e.x)) - abs(e.y)));
     let _e14 = n.z;
     if (_e14 < 0f) {
         let _e21 = n;
@@ -680,7 +662,6 @@ fn intersect_scene(ray_6: Ray, shadow_2: bool) -> Candidate {
     var k_1: u32;
     var near_1: u32;
     var far_1: u32;
-    var t_far_1: f32;
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
@@ -742,47 +723,43 @@ fn intersect_scene(ray_6: Ray, shadow_2: bool) -> Candidate {
             if ((_e85 < bitcast<f32>(_e94)) && (_e92 < bitcast<f32>(_e98))) {
                 near_1 = left_1;
                 far_1 = right_1;
-                t_far_1 = _e92;
                 if (_e92 < _e85) {
                     near_1 = right_1;
                     far_1 = left_1;
-                    t_far_1 = _e85;
                 }
-                let _e106 = sp_2;
-                if (_e106 < TLAS_STACK) {
-                    let _e109 = sp_2;
-                    let _e110 = far_1;
-                    let _e111 = t_far_1;
-                    traversal_stack[min(_e109, 127u)] = vec2<u32>(_e110, bitcast<u32>(_e111));
-                    let _e118 = sp_2;
-                    sp_2 = (_e118 + 1u);
+                let _e105 = sp_2;
+                if (_e105 < TLAS_STACK) {
+                    let _e108 = sp_2;
+                    let _e109 = far_1;
+                    traversal_stack[min(_e108, 127u)] = _e109;
+                    let _e114 = sp_2;
+                    sp_2 = (_e114 + 1u);
                 }
-                let _e121 = near_1;
-                node_1 = _e121;
+                let _e117 = near_1;
+                node_1 = _e117;
                 continue;
             }
-            let _e123 = F32_INF;
-            if (_e85 < bitcast<f32>(_e123)) {
+            let _e119 = F32_INF;
+            if (_e85 < bitcast<f32>(_e119)) {
                 node_1 = left_1;
                 continue;
             }
-            let _e127 = F32_INF;
-            if (_e92 < bitcast<f32>(_e127)) {
+            let _e123 = F32_INF;
+            if (_e92 < bitcast<f32>(_e123)) {
                 node_1 = right_1;
                 continue;
             }
         }
-        let _e131 = sp_2;
-        let _e133 = best_2.t;
-        let _e134 = pop_within(0u, _e131, _e133);
-        if (_e134.x == NO_HIT) {
+        let _e127 = sp_2;
+        let _e128 = pop(0u, _e127);
+        if (_e128.x == NO_HIT) {
             break;
         }
-        node_1 = _e134.x;
-        sp_2 = _e134.y;
+        node_1 = _e128.x;
+        sp_2 = _e128.y;
     }
-    let _e140 = best_2;
-    return _e140;
+    let _e134 = best_2;
+    return _e134;
 }
 
 fn load_SkyGradient(offset_2: u32) -> SkyGradient {
@@ -822,11 +799,11 @@ fn miss(ray_9: Ray) -> vec3<f32> {
     return _e9;
 }
 
-fn dispatch_medium(type_id_2: u32, offset_4: u32, ray_10: Ray, t_1: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_2: u32, offset_4: u32, ray_10: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_11: Ray, t_2: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_11: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
@@ -837,7 +814,7 @@ fn through_medium(ray_11: Ray, t_2: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_11, t_2, radiance_1);
+    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_11, t_1, radiance_1);
     return _e21;
 }
 
@@ -875,13 +852,13 @@ fn srgb_channel(c_2: f32) -> f32 {
     return pow(((c_2 + 0.055f) / 1.055f), 2.4f);
 }
 
-fn texel_at(t_3: u32, x_2: i32, y: i32) -> vec4<f32> {
-    let base_2 = params[t_3];
-    let _e10 = params[(t_3 + 1u)];
+fn texel_at(t_2: u32, x_2: i32, y: i32) -> vec4<f32> {
+    let base_2 = params[t_2];
+    let _e10 = params[(t_2 + 1u)];
     let w_3 = max(_e10, 1u);
-    let _e17 = params[(t_3 + 2u)];
+    let _e17 = params[(t_2 + 2u)];
     let h_2 = max(_e17, 1u);
-    let format = params[(t_3 + 3u)];
+    let format = params[(t_2 + 3u)];
     let _e26 = rem_i32_(x_2, i32(w_3));
     let _e30 = rem_i32_((_e26 + i32(w_3)), i32(w_3));
     let xi = u32(_e30);
@@ -904,21 +881,21 @@ fn texel_at(t_3: u32, x_2: i32, y: i32) -> vec4<f32> {
     return vec4<f32>(rg, ba);
 }
 
-fn sample_texture(t_4: u32, uv: vec2<f32>) -> vec4<f32> {
-    let _e6 = params[(t_4 + 1u)];
+fn sample_texture(t_3: u32, uv: vec2<f32>) -> vec4<f32> {
+    let _e6 = params[(t_3 + 1u)];
     let w_4 = f32(max(_e6, 1u));
-    let _e14 = params[(t_4 + 2u)];
+    let _e14 = params[(t_3 + 2u)];
     let h_3 = f32(max(_e14, 1u));
     let p_3 = ((uv * vec2<f32>(w_4, h_3)) - vec2(0.5f));
     let f_1 = floor(p_3);
     let fr = (p_3 - f_1);
     let _e26 = i32_from_f32_(f_1.x);
     let _e28 = i32_from_f32_(f_1.y);
-    let _e29 = texel_at(t_4, _e26, _e28);
-    let _e32 = texel_at(t_4, (_e26 + 1i), _e28);
+    let _e29 = texel_at(t_3, _e26, _e28);
+    let _e32 = texel_at(t_3, (_e26 + 1i), _e28);
     let a_6 = mix(_e29, _e32, vec4(fr.x));
-    let _e38 = texel_at(t_4, _e26, (_e28 + 1i));
-    let _e43 = texel_at(t_4, (_e26 + 1i), (_e28 + 1i));
+    let _e38 = texel_at(t_3, _e26, (_e28 + 1i));
+    let _e43 = texel_at(t_3, (_e26 + 1i), (_e28 + 1i));
     let b_8 = mix(_e38, _e43, vec4(fr.x));
     return mix(a_6, b_8, vec4(fr.y));
 }

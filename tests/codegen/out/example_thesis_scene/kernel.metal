@@ -99,7 +99,7 @@ struct GpuNode {
 typedef GpuNode type_9[1];
 typedef metal::float4 type_10[1];
 struct type_11 {
-    metal::uint2 inner[128];
+    uint inner[128];
 };
 struct Hit {
     metal::packed_float3 position;
@@ -445,10 +445,10 @@ metal::float3 hit_triangle(
     bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
-    float t_5 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_5 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1);
+    float t_4 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
+    bool hit_5 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_5 ? metal::float3(t_5, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_5 ? metal::float3(t_4, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -481,32 +481,16 @@ float slab(
     return as_type<float>(_e30);
 }
 
-metal::uint2 pop_within(
+metal::uint2 pop(
     uint base,
-    uint sp_in,
-    float t,
+    uint sp,
     thread type_11& traversal_stack
 ) {
-    uint sp = {};
-    sp = sp_in;
-    uint2 loop_bound = uint2(4294967295u);
-    while(true) {
-        if (metal::all(loop_bound == uint2(0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e4 = sp;
-        if (_e4 == 0u) {
-            break;
-        }
-        uint _e7 = sp;
-        sp = _e7 - 1u;
-        uint _e10 = sp;
-        metal::uint2 e = traversal_stack.inner[metal::min(base + _e10, 127u)];
-        if (as_type<float>(e.y) <= t) {
-            uint _e21 = sp;
-            return metal::uint2(e.x, _e21);
-        }
+    if (sp == 0u) {
+        return metal::uint2(NO_HIT, 0u);
     }
-    return metal::uint2(NO_HIT, 0u);
+    uint _e14 = traversal_stack.inner[metal::min((base + sp) - 1u, 127u)];
+    return metal::uint2(_e14, sp - 1u);
 }
 
 Candidate intersect_mesh(
@@ -528,27 +512,26 @@ Candidate intersect_mesh(
     uint k = {};
     uint near = {};
     uint far = {};
-    float t_far = {};
     best = best_in;
     metal::float3 _e8 = safe_inverse(ray_3.dir);
     TriangleRay _e9 = prepare_triangle_ray(ray_3);
     uint base_1 = inst_2.blas_root;
     sp_1 = 0u;
     node = base_1;
-    uint2 loop_bound_1 = uint2(4294967295u);
+    uint2 loop_bound = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e14 = node;
         GpuNode n_5 = nodes[_e14];
         if ((n_5.b & LEAF_BIT) != 0u) {
             uint count = n_5.b & ~(LEAF_BIT);
             k = 0u;
-            uint2 loop_bound_2 = uint2(4294967295u);
+            uint2 loop_bound_1 = uint2(4294967295u);
             bool loop_init = true;
             while(true) {
-                if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+                loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
                     uint _e52 = k;
                     k = _e52 + 1u;
@@ -589,47 +572,43 @@ Candidate intersect_mesh(
             if ((_e71 < as_type<float>(_e80)) && (_e78 < as_type<float>(_e84))) {
                 near = left;
                 far = right;
-                t_far = _e78;
                 if (_e78 < _e71) {
                     near = right;
                     far = left;
-                    t_far = _e71;
                 }
-                uint _e92 = sp_1;
-                if (_e92 < BLAS_STACK) {
-                    uint _e96 = sp_1;
-                    uint _e98 = far;
-                    float _e99 = t_far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e96, 127u)] = metal::uint2(_e98, as_type<uint>(_e99));
-                    uint _e106 = sp_1;
-                    sp_1 = _e106 + 1u;
+                uint _e91 = sp_1;
+                if (_e91 < BLAS_STACK) {
+                    uint _e95 = sp_1;
+                    uint _e97 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e95, 127u)] = _e97;
+                    uint _e102 = sp_1;
+                    sp_1 = _e102 + 1u;
                 }
-                uint _e109 = near;
-                node = _e109;
+                uint _e105 = near;
+                node = _e105;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if (_e71 < as_type<float>(_e111)) {
+            uint _e107 = F32_INF;
+            if (_e71 < as_type<float>(_e107)) {
                 node = left;
                 continue;
             }
-            uint _e115 = F32_INF;
-            if (_e78 < as_type<float>(_e115)) {
+            uint _e111 = F32_INF;
+            if (_e78 < as_type<float>(_e111)) {
                 node = right;
                 continue;
             }
         }
-        uint _e119 = sp_1;
-        float _e121 = best.t;
-        metal::uint2 _e122 = pop_within(TLAS_STACK, _e119, _e121, traversal_stack);
-        if (_e122.x == NO_HIT) {
+        uint _e115 = sp_1;
+        metal::uint2 _e116 = pop(TLAS_STACK, _e115, traversal_stack);
+        if (_e116.x == NO_HIT) {
             break;
         }
-        node = _e122.x;
-        sp_1 = _e122.y;
+        node = _e116.x;
+        sp_1 = _e116.y;
     }
-    Candidate _e128 = best;
-    return _e128;
+    Candidate _e122 = best;
+    return _e122;
 }
 
 Candidate intersect_object(
@@ -680,8 +659,8 @@ metal::float3 decode_octahedral(
     uint bits
 ) {
     metal::float3 n = {};
-    metal::float2 e_1 = metal::unpack_snorm2x16_to_float(bits);
-    n = metal::float3(e_1.x, e_1.y, (1.0 - metal::abs(e_1.x)) - metal::abs(e_1.y));
+    metal::float2 e = metal::unpack_snorm2x16_to_float(bits);
+    n = metal::float3(e.x, e.y, (1.0 - metal::abs(e.x)) - metal::abs(e.y));
     float _e14 = n.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n;
@@ -786,11 +765,11 @@ uint medium_at(
     nearest = as_type<float>(_e23);
     uint end = frame_1.medium_count;
     i = 0u;
-    uint2 loop_bound_3 = uint2(4294967295u);
+    uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
             uint _e57 = i;
             i = _e57 + 1u;
@@ -838,7 +817,6 @@ Candidate intersect_scene(
     uint k_1 = {};
     uint near_1 = {};
     uint far_1 = {};
-    float t_far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
     Candidate _e7 = no_candidate(ray_6.tmax);
@@ -860,20 +838,20 @@ Candidate intersect_scene(
         Candidate _e36 = best_2;
         return _e36;
     }
-    uint2 loop_bound_4 = uint2(4294967295u);
+    uint2 loop_bound_3 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         uint _e37 = node_1;
         GpuNode n_6 = nodes[_e37];
         if ((n_6.b & LEAF_BIT) != 0u) {
             uint count_1 = n_6.b & ~(LEAF_BIT);
             k_1 = 0u;
-            uint2 loop_bound_5 = uint2(4294967295u);
+            uint2 loop_bound_4 = uint2(4294967295u);
             bool loop_init_2 = true;
             while(true) {
-                if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-                loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+                if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
                 if (!loop_init_2) {
                     uint _e65 = k_1;
                     k_1 = _e65 + 1u;
@@ -907,47 +885,43 @@ Candidate intersect_scene(
             if ((_e85 < as_type<float>(_e94)) && (_e92 < as_type<float>(_e98))) {
                 near_1 = left_1;
                 far_1 = right_1;
-                t_far_1 = _e92;
                 if (_e92 < _e85) {
                     near_1 = right_1;
                     far_1 = left_1;
-                    t_far_1 = _e85;
                 }
-                uint _e106 = sp_2;
-                if (_e106 < TLAS_STACK) {
-                    uint _e109 = sp_2;
-                    uint _e110 = far_1;
-                    float _e111 = t_far_1;
-                    traversal_stack.inner[metal::min(_e109, 127u)] = metal::uint2(_e110, as_type<uint>(_e111));
-                    uint _e118 = sp_2;
-                    sp_2 = _e118 + 1u;
+                uint _e105 = sp_2;
+                if (_e105 < TLAS_STACK) {
+                    uint _e108 = sp_2;
+                    uint _e109 = far_1;
+                    traversal_stack.inner[metal::min(_e108, 127u)] = _e109;
+                    uint _e114 = sp_2;
+                    sp_2 = _e114 + 1u;
                 }
-                uint _e121 = near_1;
-                node_1 = _e121;
+                uint _e117 = near_1;
+                node_1 = _e117;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if (_e85 < as_type<float>(_e123)) {
+            uint _e119 = F32_INF;
+            if (_e85 < as_type<float>(_e119)) {
                 node_1 = left_1;
                 continue;
             }
-            uint _e127 = F32_INF;
-            if (_e92 < as_type<float>(_e127)) {
+            uint _e123 = F32_INF;
+            if (_e92 < as_type<float>(_e123)) {
                 node_1 = right_1;
                 continue;
             }
         }
-        uint _e131 = sp_2;
-        float _e133 = best_2.t;
-        metal::uint2 _e134 = pop_within(0u, _e131, _e133, traversal_stack);
-        if (_e134.x == NO_HIT) {
+        uint _e127 = sp_2;
+        metal::uint2 _e128 = pop(0u, _e127, traversal_stack);
+        if (_e128.x == NO_HIT) {
             break;
         }
-        node_1 = _e134.x;
-        sp_2 = _e134.y;
+        node_1 = _e128.x;
+        sp_2 = _e128.y;
     }
-    Candidate _e140 = best_2;
-    return _e140;
+    Candidate _e134 = best_2;
+    return _e134;
 }
 
 ConstantBackground load_ConstantBackground(
@@ -998,7 +972,7 @@ metal::float3 dispatch_medium(
     uint type_id_2,
     uint offset_4,
     Ray ray_10,
-    float t_1,
+    float t,
     metal::float3 radiance
 ) {
     return metal::float3 {};
@@ -1006,7 +980,7 @@ metal::float3 dispatch_medium(
 
 metal::float3 through_medium(
     Ray ray_11,
-    float t_2,
+    float t_1,
     metal::float3 radiance_1,
     device type_8 const& instances,
     constant _mslBufferSizes& _buffer_sizes
@@ -1021,7 +995,7 @@ metal::float3 through_medium(
     if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_11, t_2, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_11, t_1, radiance_1);
     return _e21;
 }
 
@@ -1079,19 +1053,19 @@ float srgb_channel(
 }
 
 metal::float4 texel_at(
-    uint t_3,
+    uint t_2,
     int x_2,
     int y,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint base_2 = params[t_3];
-    uint _e10 = params[t_3 + 1u];
+    uint base_2 = params[t_2];
+    uint _e10 = params[t_2 + 1u];
     uint w_3 = metal::max(_e10, 1u);
-    uint _e17 = params[t_3 + 2u];
+    uint _e17 = params[t_2 + 2u];
     uint h_2 = metal::max(_e17, 1u);
-    uint format = params[t_3 + 3u];
+    uint format = params[t_2 + 3u];
     int _e26 = rem_i32_(x_2, static_cast<int>(w_3));
     int _e30 = rem_i32_(as_type<int>(as_type<uint>(_e26) + as_type<uint>(static_cast<int>(w_3))), static_cast<int>(w_3));
     uint xi = static_cast<uint>(_e30);
@@ -1115,26 +1089,26 @@ metal::float4 texel_at(
 }
 
 metal::float4 sample_texture(
-    uint t_4,
+    uint t_3,
     metal::float2 uv,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e6 = params[t_4 + 1u];
+    uint _e6 = params[t_3 + 1u];
     float w_4 = static_cast<float>(metal::max(_e6, 1u));
-    uint _e14 = params[t_4 + 2u];
+    uint _e14 = params[t_3 + 2u];
     float h_3 = static_cast<float>(metal::max(_e14, 1u));
     metal::float2 p_3 = (uv * metal::float2(w_4, h_3)) - metal::float2(0.5);
     metal::float2 f_1 = metal::floor(p_3);
     metal::float2 fr = p_3 - f_1;
     int _e26 = i32_from_f32_(f_1.x);
     int _e28 = i32_from_f32_(f_1.y);
-    metal::float4 _e29 = texel_at(t_4, _e26, _e28, params, texels, _buffer_sizes);
-    metal::float4 _e32 = texel_at(t_4, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), _e28, params, texels, _buffer_sizes);
+    metal::float4 _e29 = texel_at(t_3, _e26, _e28, params, texels, _buffer_sizes);
+    metal::float4 _e32 = texel_at(t_3, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), _e28, params, texels, _buffer_sizes);
     metal::float4 a_6 = metal::mix(_e29, _e32, metal::float4(fr.x));
-    metal::float4 _e38 = texel_at(t_4, _e26, as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
-    metal::float4 _e43 = texel_at(t_4, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
+    metal::float4 _e38 = texel_at(t_3, _e26, as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
+    metal::float4 _e43 = texel_at(t_3, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
     metal::float4 b_8 = metal::mix(_e38, _e43, metal::float4(fr.x));
     return metal::mix(a_6, b_8, metal::float4(fr.y));
 }
@@ -1304,11 +1278,11 @@ metal::float3 blinn_phong_shade(
     color = m.ambient * kd;
     uint _e31 = light_count_query(frame);
     i_2 = 0u;
-    uint2 loop_bound_6 = uint2(4294967295u);
+    uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
             uint _e64 = i_2;
             i_2 = _e64 + 1u;
@@ -1444,10 +1418,10 @@ metal::float3 trace(
     ray_16 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
-    uint2 loop_bound_7 = uint2(4294967295u);
+    uint2 loop_bound_6 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
             Ray _e28 = ray_16;
@@ -1477,11 +1451,11 @@ metal::float3 trace(
                         Ray _e77 = ray_16;
                         f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_8, 0u};
                         i_3 = 0u;
-                        uint2 loop_bound_8 = uint2(4294967295u);
+                        uint2 loop_bound_7 = uint2(4294967295u);
                         bool loop_init_4 = true;
                         while(true) {
-                            if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-                            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+                            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                             if (!loop_init_4) {
                                 uint _e108 = i_3;
                                 i_3 = _e108 + 1u;
@@ -1613,11 +1587,11 @@ void render_pixel(
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s = 0u;
-    uint2 loop_bound_9 = uint2(4294967295u);
+    uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_5 = true;
     while(true) {
-        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_5) {
             uint _e46 = s;
             s = _e46 + 1u;

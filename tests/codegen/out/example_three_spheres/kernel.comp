@@ -180,7 +180,7 @@ layout(std430, binding = 2) readonly buffer type_9_block_4Compute { GpuNode _gro
 
 layout(std430, binding = 4) readonly buffer type_10_block_5Compute { vec4 _group_0_binding_4_cs[]; };
 
-uvec2 traversal_stack[128] = uvec2[128](uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u), uvec2(0u));
+uint traversal_stack[128] = uint[128](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
 uint F32_NEG_INF = 4286578688u;
 
@@ -369,10 +369,10 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
-    float t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_5 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
+    float t_5 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    bool hit_5 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_5 ? vec3(t_6, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_5 ? vec3(t_5, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
@@ -393,24 +393,12 @@ float slab(vec3 lo, vec3 hi, vec3 origin, vec3 inv_dir, float tmin_1, float tmax
     return uintBitsToFloat(_e30);
 }
 
-uvec2 pop_within(uint base, uint sp_in, float t) {
-    uint sp = 0u;
-    sp = sp_in;
-    while(true) {
-        uint _e4 = sp;
-        if ((_e4 == 0u)) {
-            break;
-        }
-        uint _e7 = sp;
-        sp = (_e7 - 1u);
-        uint _e10 = sp;
-        uvec2 e = traversal_stack[min((base + _e10), 127u)];
-        if ((uintBitsToFloat(e.y) <= t)) {
-            uint _e21 = sp;
-            return uvec2(e.x, _e21);
-        }
+uvec2 pop(uint base, uint sp) {
+    if ((sp == 0u)) {
+        return uvec2(NO_HIT, 0u);
     }
-    return uvec2(NO_HIT, 0u);
+    uint _e14 = traversal_stack[min(((base + sp) - 1u), 127u)];
+    return uvec2(_e14, (sp - 1u));
 }
 
 Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_3, Candidate best_in, bool shadow) {
@@ -420,7 +408,6 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint k = 0u;
     uint near = 0u;
     uint far = 0u;
-    float t_far = 0.0;
     best = best_in;
     vec3 _e8 = safe_inverse(ray_3.dir);
     TriangleRay _e9 = prepare_triangle_ray(ray_3);
@@ -475,47 +462,43 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             if (((_e71 < uintBitsToFloat(_e80)) && (_e78 < uintBitsToFloat(_e84)))) {
                 near = left;
                 far = right;
-                t_far = _e78;
                 if ((_e78 < _e71)) {
                     near = right;
                     far = left;
-                    t_far = _e71;
                 }
-                uint _e92 = sp_1;
-                if ((_e92 < BLAS_STACK)) {
-                    uint _e96 = sp_1;
-                    uint _e98 = far;
-                    float _e99 = t_far;
-                    traversal_stack[min((TLAS_STACK + _e96), 127u)] = uvec2(_e98, floatBitsToUint(_e99));
-                    uint _e106 = sp_1;
-                    sp_1 = (_e106 + 1u);
+                uint _e91 = sp_1;
+                if ((_e91 < BLAS_STACK)) {
+                    uint _e95 = sp_1;
+                    uint _e97 = far;
+                    traversal_stack[min((TLAS_STACK + _e95), 127u)] = _e97;
+                    uint _e102 = sp_1;
+                    sp_1 = (_e102 + 1u);
                 }
-                uint _e109 = near;
-                node = _e109;
+                uint _e105 = near;
+                node = _e105;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if ((_e71 < uintBitsToFloat(_e111))) {
+            uint _e107 = F32_INF;
+            if ((_e71 < uintBitsToFloat(_e107))) {
                 node = left;
                 continue;
             }
-            uint _e115 = F32_INF;
-            if ((_e78 < uintBitsToFloat(_e115))) {
+            uint _e111 = F32_INF;
+            if ((_e78 < uintBitsToFloat(_e111))) {
                 node = right;
                 continue;
             }
         }
-        uint _e119 = sp_1;
-        float _e121 = best.t;
-        uvec2 _e122 = pop_within(TLAS_STACK, _e119, _e121);
-        if ((_e122.x == NO_HIT)) {
+        uint _e115 = sp_1;
+        uvec2 _e116 = pop(TLAS_STACK, _e115);
+        if ((_e116.x == NO_HIT)) {
             break;
         }
-        node = _e122.x;
-        sp_1 = _e122.y;
+        node = _e116.x;
+        sp_1 = _e116.y;
     }
-    Candidate _e128 = best;
-    return _e128;
+    Candidate _e122 = best;
+    return _e122;
 }
 
 BvhMesh load_BvhMesh(uint offset_2) {
@@ -595,11 +578,11 @@ Intersection intersect_triangle(Ray ray_6, Triangle tri) {
     float w_1 = ((_e77 * _e69) - (_e78 * _e68));
     float det_1 = ((u_1 + v_2) + w_1);
     float _e112 = (1.0 / det_1);
-    float t_7 = ((((u_1 * (sz * _e62[kz_1])) + (v_2 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
-    bool hit_6 = (((((all(lessThan((floatBitsToUint(ray_6.origin) & uvec3(2147483647u)), _e10)) && all(lessThan((floatBitsToUint(ray_6.dir) & uvec3(2147483647u)), _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_7 >= ray_6.tmin) && (t_7 <= ray_6.tmax)));
+    float t_6 = ((((u_1 * (sz * _e62[kz_1])) + (v_2 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
+    bool hit_6 = (((((all(lessThan((floatBitsToUint(ray_6.origin) & uvec3(2147483647u)), _e10)) && all(lessThan((floatBitsToUint(ray_6.dir) & uvec3(2147483647u)), _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_6 >= ray_6.tmin) && (t_6 <= ray_6.tmax)));
     vec3 _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     uint _e137 = F32_INF;
-    return Intersection((hit_6 ? t_7 : uintBitsToFloat(_e137)), (hit_6 ? _e132 : vec3(0.0, 0.0, 1.0)), (hit_6 ? vec2((v_2 * _e112), (w_1 * _e112)) : vec2(0.0)));
+    return Intersection((hit_6 ? t_6 : uintBitsToFloat(_e137)), (hit_6 ? _e132 : vec3(0.0, 0.0, 1.0)), (hit_6 ? vec2((v_2 * _e112), (w_1 * _e112)) : vec2(0.0)));
 }
 
 Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7) {
@@ -721,7 +704,7 @@ Sphere load_Sphere(uint offset_3) {
 }
 
 Intersection sphere_intersect(Sphere s, Ray ray_8) {
-    float t_1 = 0.0;
+    float t = 0.0;
     vec3 f_1 = (ray_8.origin - s.center);
     float a_6 = dot(ray_8.dir, ray_8.dir);
     float b_7 = -(dot(f_1, ray_8.dir));
@@ -735,22 +718,22 @@ Intersection sphere_intersect(Sphere s, Ray ray_8) {
     float q = (b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
     float t0_1 = ((dot(f_1, f_1) - r2_) / q);
     float t1_1 = (q / a_6);
-    t_1 = min(t0_1, t1_1);
-    float _e52 = t_1;
+    t = min(t0_1, t1_1);
+    float _e52 = t;
     if (!((_e52 >= ray_8.tmin))) {
-        t_1 = max(t0_1, t1_1);
+        t = max(t0_1, t1_1);
     }
-    float _e57 = t_1;
-    float _e60 = t_1;
+    float _e57 = t;
+    float _e60 = t;
     if (!(((_e57 >= ray_8.tmin) && (_e60 <= ray_8.tmax)))) {
         uint _e66 = F32_INF;
         return Intersection(uintBitsToFloat(_e66), vec3(0.0, 0.0, 1.0), vec2(0.0));
     }
-    float _e76 = t_1;
+    float _e76 = t;
     vec3 _e82 = normalize_vec3f(((ray_8.origin + (ray_8.dir * vec3(_e76))) - s.center));
     float u_2 = (((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (atan(_e82.z, -(_e82.x)) / TAU)));
     vec2 uv_1 = vec2(u_2, (acos(min(max(_e82.y, -1.0), 1.0)) * INV_PI));
-    float _e109 = t_1;
+    float _e109 = t;
     return Intersection(_e109, _e82, uv_1);
 }
 
@@ -813,8 +796,8 @@ vec3 point_to_world(GpuInstance inst_3, vec3 p) {
 
 vec3 decode_octahedral(uint bits) {
     vec3 n_1 = vec3(0.0);
-    vec2 e_1 = unpackSnorm2x16(bits);
-    n_1 = vec3(e_1.x, e_1.y, ((1.0 - abs(e_1.x)) - abs(e_1.y)));
+    vec2 e = unpackSnorm2x16(bits);
+    n_1 = vec3(e.x, e.y, ((1.0 - abs(e.x)) - abs(e.y)));
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n_1;
@@ -935,7 +918,6 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2) {
     uint k_2 = 0u;
     uint near_1 = 0u;
     uint far_1 = 0u;
-    float t_far_1 = 0.0;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
     Candidate _e7 = no_candidate(ray_12.tmax);
@@ -998,47 +980,43 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2) {
             if (((_e85 < uintBitsToFloat(_e94)) && (_e92 < uintBitsToFloat(_e98)))) {
                 near_1 = left_1;
                 far_1 = right_1;
-                t_far_1 = _e92;
                 if ((_e92 < _e85)) {
                     near_1 = right_1;
                     far_1 = left_1;
-                    t_far_1 = _e85;
                 }
-                uint _e106 = sp_3;
-                if ((_e106 < TLAS_STACK)) {
-                    uint _e109 = sp_3;
-                    uint _e110 = far_1;
-                    float _e111 = t_far_1;
-                    traversal_stack[min(_e109, 127u)] = uvec2(_e110, floatBitsToUint(_e111));
-                    uint _e118 = sp_3;
-                    sp_3 = (_e118 + 1u);
+                uint _e105 = sp_3;
+                if ((_e105 < TLAS_STACK)) {
+                    uint _e108 = sp_3;
+                    uint _e109 = far_1;
+                    traversal_stack[min(_e108, 127u)] = _e109;
+                    uint _e114 = sp_3;
+                    sp_3 = (_e114 + 1u);
                 }
-                uint _e121 = near_1;
-                node_2 = _e121;
+                uint _e117 = near_1;
+                node_2 = _e117;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if ((_e85 < uintBitsToFloat(_e123))) {
+            uint _e119 = F32_INF;
+            if ((_e85 < uintBitsToFloat(_e119))) {
                 node_2 = left_1;
                 continue;
             }
-            uint _e127 = F32_INF;
-            if ((_e92 < uintBitsToFloat(_e127))) {
+            uint _e123 = F32_INF;
+            if ((_e92 < uintBitsToFloat(_e123))) {
                 node_2 = right_1;
                 continue;
             }
         }
-        uint _e131 = sp_3;
-        float _e133 = best_3.t;
-        uvec2 _e134 = pop_within(0u, _e131, _e133);
-        if ((_e134.x == NO_HIT)) {
+        uint _e127 = sp_3;
+        uvec2 _e128 = pop(0u, _e127);
+        if ((_e128.x == NO_HIT)) {
             break;
         }
-        node_2 = _e134.x;
-        sp_3 = _e134.y;
+        node_2 = _e128.x;
+        sp_3 = _e128.y;
     }
-    Candidate _e140 = best_3;
-    return _e140;
+    Candidate _e134 = best_3;
+    return _e134;
 }
 
 Skybox load_Skybox(uint offset_5) {
@@ -1065,13 +1043,13 @@ float srgb_channel(float c_2) {
     return pow(((c_2 + 0.055) / 1.055), 2.4);
 }
 
-vec4 texel_at(uint t_2, int x_2, int y) {
-    uint base_2 = _group_0_binding_6_cs[t_2];
-    uint _e10 = _group_0_binding_6_cs[(t_2 + 1u)];
+vec4 texel_at(uint t_1, int x_2, int y) {
+    uint base_2 = _group_0_binding_6_cs[t_1];
+    uint _e10 = _group_0_binding_6_cs[(t_1 + 1u)];
     uint w_4 = max(_e10, 1u);
-    uint _e17 = _group_0_binding_6_cs[(t_2 + 2u)];
+    uint _e17 = _group_0_binding_6_cs[(t_1 + 2u)];
     uint h_2 = max(_e17, 1u);
-    uint format = _group_0_binding_6_cs[(t_2 + 3u)];
+    uint format = _group_0_binding_6_cs[(t_1 + 3u)];
     int _e26 = rem_i32_(x_2, int(w_4));
     int _e30 = rem_i32_((_e26 + int(w_4)), int(w_4));
     uint xi = uint(_e30);
@@ -1094,21 +1072,21 @@ vec4 texel_at(uint t_2, int x_2, int y) {
     return vec4(rg, ba);
 }
 
-vec4 sample_texture(uint t_3, vec2 uv) {
-    uint _e6 = _group_0_binding_6_cs[(t_3 + 1u)];
+vec4 sample_texture(uint t_2, vec2 uv) {
+    uint _e6 = _group_0_binding_6_cs[(t_2 + 1u)];
     float w_5 = float(max(_e6, 1u));
-    uint _e14 = _group_0_binding_6_cs[(t_3 + 2u)];
+    uint _e14 = _group_0_binding_6_cs[(t_2 + 2u)];
     float h_3 = float(max(_e14, 1u));
     vec2 p_3 = ((uv * vec2(w_5, h_3)) - vec2(0.5));
     vec2 f_2 = floor(p_3);
     vec2 fr = (p_3 - f_2);
     int _e26 = i32_from_f32_(f_2.x);
     int _e28 = i32_from_f32_(f_2.y);
-    vec4 _e29 = texel_at(t_3, _e26, _e28);
-    vec4 _e32 = texel_at(t_3, (_e26 + 1), _e28);
+    vec4 _e29 = texel_at(t_2, _e26, _e28);
+    vec4 _e32 = texel_at(t_2, (_e26 + 1), _e28);
     vec4 a_7 = mix(_e29, _e32, vec4(fr.x));
-    vec4 _e38 = texel_at(t_3, _e26, (_e28 + 1));
-    vec4 _e43 = texel_at(t_3, (_e26 + 1), (_e28 + 1));
+    vec4 _e38 = texel_at(t_2, _e26, (_e28 + 1));
+    vec4 _e43 = texel_at(t_2, (_e26 + 1), (_e28 + 1));
     vec4 b_9 = mix(_e38, _e43, vec4(fr.x));
     return mix(a_7, b_9, vec4(fr.y));
 }
@@ -1138,11 +1116,11 @@ vec3 miss(Ray ray_15) {
     return _e9;
 }
 
-vec3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_16, float t_4, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_16, float t_3, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_17, float t_5, vec3 radiance_1) {
+vec3 through_medium(Ray ray_17, float t_4, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
@@ -1153,7 +1131,7 @@ vec3 through_medium(Ray ray_17, float t_5, vec3 radiance_1) {
     if (((inst_7.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_17, t_5, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_17, t_4, radiance_1);
     return _e21;
 }
 

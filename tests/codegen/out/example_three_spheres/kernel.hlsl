@@ -226,7 +226,7 @@ static uint F32_INF = 2139095040u;
 ByteAddressBuffer instances : register(t3);
 ByteAddressBuffer nodes : register(t2);
 ByteAddressBuffer triangles : register(t4);
-static uint2 traversal_stack[128] = (uint2[128])0;
+static uint traversal_stack[128] = (uint[128])0;
 static uint F32_NEG_INF = 4286578688u;
 ByteAddressBuffer attributes : register(t5);
 static uint ray_count = (uint)0;
@@ -489,10 +489,10 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
-    float t_6 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_5 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
+    float t_5 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    bool hit_5 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_5 ? float3(t_6, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_5 ? float3(t_5, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -515,29 +515,13 @@ float slab(float3 lo, float3 hi, float3 origin, float3 inv_dir, float tmin_1, fl
     return asfloat(_e30);
 }
 
-uint2 pop_within(uint base, uint sp_in, float t)
+uint2 pop(uint base, uint sp)
 {
-    uint sp = (uint)0;
-
-    sp = sp_in;
-    uint2 loop_bound = uint2(4294967295u, 4294967295u);
-    while(true) {
-        if (all(loop_bound == uint2(0u, 0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e4 = sp;
-        if ((_e4 == 0u)) {
-            break;
-        }
-        uint _e7 = sp;
-        sp = (_e7 - 1u);
-        uint _e10 = sp;
-        uint2 e = traversal_stack[min(uint(min((base + _e10), 127u)), 127u)];
-        if ((asfloat(e.y) <= t)) {
-            uint _e21 = sp;
-            return uint2(e.x, _e21);
-        }
+    if ((sp == 0u)) {
+        return uint2(NO_HIT, 0u);
     }
-    return uint2(NO_HIT, 0u);
+    uint _e14 = traversal_stack[min(uint(min(((base + sp) - 1u), 127u)), 127u)];
+    return uint2(_e14, (sp - 1u));
 }
 
 GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
@@ -557,7 +541,6 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint k = (uint)0;
     uint near = (uint)0;
     uint far = (uint)0;
-    float t_far = (float)0;
 
     best = best_in;
     const float3 _e8 = safe_inverse(ray_3.dir);
@@ -565,20 +548,20 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint base_1 = inst_2.blas_root;
     sp_1 = 0u;
     node = base_1;
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e14 = node;
         GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3(_e14*32+0)), asuint(nodes.Load(_e14*32+12)), asfloat(nodes.Load3(_e14*32+16)), asuint(nodes.Load(_e14*32+28)));
         if (((n_6.b & LEAF_BIT) != 0u)) {
             uint count_1 = (n_6.b & ~(LEAF_BIT));
             k = 0u;
-            uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+            uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
             bool loop_init = true;
             while(true) {
-                if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+                if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+                loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
                     uint _e52 = k;
                     k = (_e52 + 1u);
@@ -620,47 +603,43 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             if (((_e71 < asfloat(_e80)) && (_e78 < asfloat(_e84)))) {
                 near = left;
                 far = right;
-                t_far = _e78;
                 if ((_e78 < _e71)) {
                     near = right;
                     far = left;
-                    t_far = _e71;
                 }
-                uint _e92 = sp_1;
-                if ((_e92 < BLAS_STACK)) {
-                    uint _e96 = sp_1;
-                    uint _e98 = far;
-                    float _e99 = t_far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e96), 127u)), 127u)] = uint2(_e98, asuint(_e99));
-                    uint _e106 = sp_1;
-                    sp_1 = (_e106 + 1u);
+                uint _e91 = sp_1;
+                if ((_e91 < BLAS_STACK)) {
+                    uint _e95 = sp_1;
+                    uint _e97 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e95), 127u)), 127u)] = _e97;
+                    uint _e102 = sp_1;
+                    sp_1 = (_e102 + 1u);
                 }
-                uint _e109 = near;
-                node = _e109;
+                uint _e105 = near;
+                node = _e105;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if ((_e71 < asfloat(_e111))) {
+            uint _e107 = F32_INF;
+            if ((_e71 < asfloat(_e107))) {
                 node = left;
                 continue;
             }
-            uint _e115 = F32_INF;
-            if ((_e78 < asfloat(_e115))) {
+            uint _e111 = F32_INF;
+            if ((_e78 < asfloat(_e111))) {
                 node = right;
                 continue;
             }
         }
-        uint _e119 = sp_1;
-        float _e121 = best.t;
-        const uint2 _e122 = pop_within(TLAS_STACK, _e119, _e121);
-        if ((_e122.x == NO_HIT)) {
+        uint _e115 = sp_1;
+        const uint2 _e116 = pop(TLAS_STACK, _e115);
+        if ((_e116.x == NO_HIT)) {
             break;
         }
-        node = _e122.x;
-        sp_1 = _e122.y;
+        node = _e116.x;
+        sp_1 = _e116.y;
     }
-    Candidate _e128 = best;
-    const Candidate candidate_2 = _e128;
+    Candidate _e122 = best;
+    const Candidate candidate_2 = _e122;
     return candidate_2;
 }
 
@@ -782,11 +761,11 @@ Intersection intersect_triangle(Ray ray_6, Triangle tri)
     float w_1 = ((_e77 * _e69) - (_e78 * _e68));
     float det_1 = ((u_1 + v_2) + w_1);
     float _e112 = (1.0 / det_1);
-    float t_7 = ((((u_1 * (sz * _e62[min(uint(kz_1), 2u)])) + (v_2 * (sz * _e71[min(uint(kz_1), 2u)]))) + (w_1 * (sz * _e80[min(uint(kz_1), 2u)]))) * _e112);
-    bool hit_6 = (((((all(((asuint(ray_6.origin) & (2147483647u).xxx) < _e10)) && all(((asuint(ray_6.dir) & (2147483647u).xxx) < _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_7 >= ray_6.tmin) && (t_7 <= ray_6.tmax)));
+    float t_6 = ((((u_1 * (sz * _e62[min(uint(kz_1), 2u)])) + (v_2 * (sz * _e71[min(uint(kz_1), 2u)]))) + (w_1 * (sz * _e80[min(uint(kz_1), 2u)]))) * _e112);
+    bool hit_6 = (((((all(((asuint(ray_6.origin) & (2147483647u).xxx) < _e10)) && all(((asuint(ray_6.dir) & (2147483647u).xxx) < _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_6 >= ray_6.tmin) && (t_6 <= ray_6.tmax)));
     const float3 _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     uint _e137 = F32_INF;
-    const Intersection intersection = ConstructIntersection((hit_6 ? t_7 : asfloat(_e137)), (hit_6 ? _e132 : float3(0.0, 0.0, 1.0)), (hit_6 ? float2((v_2 * _e112), (w_1 * _e112)) : (0.0).xx));
+    const Intersection intersection = ConstructIntersection((hit_6 ? t_6 : asfloat(_e137)), (hit_6 ? _e132 : float3(0.0, 0.0, 1.0)), (hit_6 ? float2((v_2 * _e112), (w_1 * _e112)) : (0.0).xx));
     return intersection;
 }
 
@@ -833,19 +812,19 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7)
         const Intersection intersection_1 = _e32;
         return intersection_1;
     }
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         uint _e34 = node_1.count;
         if ((_e34 > 0u)) {
             uint end = node_1.count;
             k_1 = 0u;
-            uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+            uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
             bool loop_init_1 = true;
             while(true) {
-                if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+                if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_1) {
                     uint _e57 = k_1;
                     k_1 = (_e57 + 1u);
@@ -897,10 +876,10 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7)
             }
         }
         found = false;
-        uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+        uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
         while(true) {
-            if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-            loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+            if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+            loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
             uint _e108 = sp_2;
             bool _e111 = found;
             if (!(((_e108 > 0u) && !(_e111)))) {
@@ -946,7 +925,7 @@ Sphere load_Sphere(uint offset_3)
 
 Intersection sphere_intersect(Sphere s, Ray ray_8)
 {
-    float t_1 = (float)0;
+    float t = (float)0;
 
     float3 f_1 = (ray_8.origin - s.center_);
     float a_6 = dot(ray_8.dir, ray_8.dir);
@@ -962,23 +941,23 @@ Intersection sphere_intersect(Sphere s, Ray ray_8)
     float q = (b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
     float t0_1 = ((dot(f_1, f_1) - r2_) / q);
     float t1_1 = (q / a_6);
-    t_1 = min(t0_1, t1_1);
-    float _e52 = t_1;
+    t = min(t0_1, t1_1);
+    float _e52 = t;
     if (!((_e52 >= ray_8.tmin))) {
-        t_1 = max(t0_1, t1_1);
+        t = max(t0_1, t1_1);
     }
-    float _e57 = t_1;
-    float _e60 = t_1;
+    float _e57 = t;
+    float _e60 = t;
     if (!(((_e57 >= ray_8.tmin) && (_e60 <= ray_8.tmax)))) {
         uint _e66 = F32_INF;
         const Intersection intersection_4 = ConstructIntersection(asfloat(_e66), float3(0.0, 0.0, 1.0), ZeroValuefloat2());
         return intersection_4;
     }
-    float _e76 = t_1;
+    float _e76 = t;
     const float3 _e82 = normalize_vec3f(((ray_8.origin + (ray_8.dir * (_e76).xxx)) - s.center_));
     float u_2 = (((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (atan2(_e82.z, -(_e82.x)) / TAU)));
     float2 uv_1 = float2(u_2, (acos(min(max(_e82.y, -1.0), 1.0)) * INV_PI));
-    float _e109 = t_1;
+    float _e109 = t;
     const Intersection intersection_5 = ConstructIntersection(_e109, _e82, uv_1);
     return intersection_5;
 }
@@ -1079,8 +1058,8 @@ float3 decode_octahedral(uint bits)
 {
     float3 n_1 = (float3)0;
 
-    float2 e_1 = (float2(int2(bits << 16, bits) >> 16) / 32767.0);
-    n_1 = float3(e_1.x, e_1.y, ((1.0 - abs(e_1.x)) - abs(e_1.y)));
+    float2 e = (float2(int2(bits << 16, bits) >> 16) / 32767.0);
+    n_1 = float3(e.x, e.y, ((1.0 - abs(e.x)) - abs(e.y)));
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         float3 _e21 = n_1;
@@ -1185,11 +1164,11 @@ uint medium_at(float3 p_1, uint exclude)
     nearest = asfloat(_e23);
     uint end_1 = frame_1.medium_count;
     i_2 = 0u;
-    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
-        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
             uint _e57 = i_2;
             i_2 = (_e57 + 1u);
@@ -1227,7 +1206,6 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
     uint k_2 = (uint)0;
     uint near_1 = (uint)0;
     uint far_1 = (uint)0;
-    float t_far_1 = (float)0;
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
@@ -1252,20 +1230,20 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
         const Candidate candidate_7 = _e36;
         return candidate_7;
     }
-    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         uint _e37 = node_2;
         GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3(_e37*32+0)), asuint(nodes.Load(_e37*32+12)), asfloat(nodes.Load3(_e37*32+16)), asuint(nodes.Load(_e37*32+28)));
         if (((n_8.b & LEAF_BIT) != 0u)) {
             uint count_2 = (n_8.b & ~(LEAF_BIT));
             k_2 = 0u;
-            uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+            uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
             bool loop_init_3 = true;
             while(true) {
-                if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                 if (!loop_init_3) {
                     uint _e65 = k_2;
                     k_2 = (_e65 + 1u);
@@ -1300,47 +1278,43 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
             if (((_e85 < asfloat(_e94)) && (_e92 < asfloat(_e98)))) {
                 near_1 = left_1;
                 far_1 = right_1;
-                t_far_1 = _e92;
                 if ((_e92 < _e85)) {
                     near_1 = right_1;
                     far_1 = left_1;
-                    t_far_1 = _e85;
                 }
-                uint _e106 = sp_3;
-                if ((_e106 < TLAS_STACK)) {
-                    uint _e109 = sp_3;
-                    uint _e110 = far_1;
-                    float _e111 = t_far_1;
-                    traversal_stack[min(uint(min(_e109, 127u)), 127u)] = uint2(_e110, asuint(_e111));
-                    uint _e118 = sp_3;
-                    sp_3 = (_e118 + 1u);
+                uint _e105 = sp_3;
+                if ((_e105 < TLAS_STACK)) {
+                    uint _e108 = sp_3;
+                    uint _e109 = far_1;
+                    traversal_stack[min(uint(min(_e108, 127u)), 127u)] = _e109;
+                    uint _e114 = sp_3;
+                    sp_3 = (_e114 + 1u);
                 }
-                uint _e121 = near_1;
-                node_2 = _e121;
+                uint _e117 = near_1;
+                node_2 = _e117;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if ((_e85 < asfloat(_e123))) {
+            uint _e119 = F32_INF;
+            if ((_e85 < asfloat(_e119))) {
                 node_2 = left_1;
                 continue;
             }
-            uint _e127 = F32_INF;
-            if ((_e92 < asfloat(_e127))) {
+            uint _e123 = F32_INF;
+            if ((_e92 < asfloat(_e123))) {
                 node_2 = right_1;
                 continue;
             }
         }
-        uint _e131 = sp_3;
-        float _e133 = best_3.t;
-        const uint2 _e134 = pop_within(0u, _e131, _e133);
-        if ((_e134.x == NO_HIT)) {
+        uint _e127 = sp_3;
+        const uint2 _e128 = pop(0u, _e127);
+        if ((_e128.x == NO_HIT)) {
             break;
         }
-        node_2 = _e134.x;
-        sp_3 = _e134.y;
+        node_2 = _e128.x;
+        sp_3 = _e128.y;
     }
-    Candidate _e140 = best_3;
-    const Candidate candidate_9 = _e140;
+    Candidate _e134 = best_3;
+    const Candidate candidate_9 = _e134;
     return candidate_9;
 }
 
@@ -1389,14 +1363,14 @@ float srgb_channel(float c_2)
     return pow(((c_2 + 0.055) / 1.055), 2.4);
 }
 
-float4 texel_at(uint t_2, int x_2, int y)
+float4 texel_at(uint t_1, int x_2, int y)
 {
-    uint base_2 = asuint(params.Load(t_2*4));
-    uint _e10 = asuint(params.Load((t_2 + 1u)*4));
+    uint base_2 = asuint(params.Load(t_1*4));
+    uint _e10 = asuint(params.Load((t_1 + 1u)*4));
     uint w_4 = max(_e10, 1u);
-    uint _e17 = asuint(params.Load((t_2 + 2u)*4));
+    uint _e17 = asuint(params.Load((t_1 + 2u)*4));
     uint h_2 = max(_e17, 1u);
-    uint format = asuint(params.Load((t_2 + 3u)*4));
+    uint format = asuint(params.Load((t_1 + 3u)*4));
     const int _e26 = rem_i32_(x_2, int(w_4));
     const int _e30 = rem_i32_(asint(asuint(_e26) + asuint(int(w_4))), int(w_4));
     uint xi = uint(_e30);
@@ -1419,22 +1393,22 @@ float4 texel_at(uint t_2, int x_2, int y)
     return float4(rg, ba);
 }
 
-float4 sample_texture(uint t_3, float2 uv)
+float4 sample_texture(uint t_2, float2 uv)
 {
-    uint _e6 = asuint(params.Load((t_3 + 1u)*4));
+    uint _e6 = asuint(params.Load((t_2 + 1u)*4));
     float w_5 = float(max(_e6, 1u));
-    uint _e14 = asuint(params.Load((t_3 + 2u)*4));
+    uint _e14 = asuint(params.Load((t_2 + 2u)*4));
     float h_3 = float(max(_e14, 1u));
     float2 p_3 = ((uv * float2(w_5, h_3)) - (0.5).xx);
     float2 f_2 = floor(p_3);
     float2 fr = (p_3 - f_2);
     const int _e26 = i32_from_f32_(f_2.x);
     const int _e28 = i32_from_f32_(f_2.y);
-    const float4 _e29 = texel_at(t_3, _e26, _e28);
-    const float4 _e32 = texel_at(t_3, asint(asuint(_e26) + asuint(int(1))), _e28);
+    const float4 _e29 = texel_at(t_2, _e26, _e28);
+    const float4 _e32 = texel_at(t_2, asint(asuint(_e26) + asuint(int(1))), _e28);
     float4 a_7 = lerp(_e29, _e32, (fr.x).xxxx);
-    const float4 _e38 = texel_at(t_3, _e26, asint(asuint(_e28) + asuint(int(1))));
-    const float4 _e43 = texel_at(t_3, asint(asuint(_e26) + asuint(int(1))), asint(asuint(_e28) + asuint(int(1))));
+    const float4 _e38 = texel_at(t_2, _e26, asint(asuint(_e28) + asuint(int(1))));
+    const float4 _e43 = texel_at(t_2, asint(asuint(_e26) + asuint(int(1))), asint(asuint(_e28) + asuint(int(1))));
     float4 b_9 = lerp(_e38, _e43, (fr.x).xxxx);
     return lerp(a_7, b_9, (fr.y).xxxx);
 }
@@ -1471,12 +1445,12 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_16, float t_4, float3 radiance)
+float3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_16, float t_3, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_17, float t_5, float3 radiance_1)
+float3 through_medium(Ray ray_17, float t_4, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
@@ -1488,7 +1462,7 @@ float3 through_medium(Ray ray_17, float t_5, float3 radiance_1)
     if (((inst_7.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_17, t_5, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_17, t_4, radiance_1);
     return _e21;
 }
 
@@ -1622,11 +1596,11 @@ float3 lambert_shade(Lambert m_2, Ray ray_18, Hit hit_1)
     color = (0.0).xxx;
     const uint _e11 = light_count_query();
     i_4 = 0u;
-    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_4 = true;
     while(true) {
-        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_4) {
             uint _e33 = i_4;
             i_4 = (_e33 + 1u);
@@ -1732,10 +1706,10 @@ float3 trace(Ray camera_ray)
     ray_22 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
-    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
-        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
             Ray _e28 = ray_22;
@@ -1765,11 +1739,11 @@ float3 trace(Ray camera_ray)
                         Ray _e77 = ray_22;
                         f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_10, 0u);
                         i_5 = 0u;
-                        uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+                        uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
                         bool loop_init_5 = true;
                         while(true) {
-                            if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
-                            loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+                            if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+                            loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
                             if (!loop_init_5) {
                                 uint _e108 = i_5;
                                 i_5 = (_e108 + 1u);
@@ -1881,11 +1855,11 @@ void render_pixel(uint2 pixel_3)
     bad = 0u;
     uint end_2 = frame_5.samples_per_pass;
     s_1 = 0u;
-    uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
     bool loop_init_6 = true;
     while(true) {
-        if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
-        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
         if (!loop_init_6) {
             uint _e46 = s_1;
             s_1 = (_e46 + 1u);
