@@ -453,43 +453,43 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, 
             if ((_e71 < bitcast<f32>(_e80)) && (_e78 < bitcast<f32>(_e84))) {
                 near = left;
                 far = right;
-                if (_e78 < _e71) {
+                if ((_e78 < _e71) != shadow) {
                     near = right;
                     far = left;
                 }
-                let _e91 = sp_1;
-                if (_e91 < BLAS_STACK) {
-                    let _e95 = sp_1;
-                    let _e97 = far;
-                    traversal_stack[min((TLAS_STACK + _e95), 127u)] = _e97;
-                    let _e102 = sp_1;
-                    sp_1 = (_e102 + 1u);
+                let _e92 = sp_1;
+                if (_e92 < BLAS_STACK) {
+                    let _e96 = sp_1;
+                    let _e98 = far;
+                    traversal_stack[min((TLAS_STACK + _e96), 127u)] = _e98;
+                    let _e103 = sp_1;
+                    sp_1 = (_e103 + 1u);
                 }
-                let _e105 = near;
-                node = _e105;
+                let _e106 = near;
+                node = _e106;
                 continue;
             }
-            let _e107 = F32_INF;
-            if (_e71 < bitcast<f32>(_e107)) {
+            let _e108 = F32_INF;
+            if (_e71 < bitcast<f32>(_e108)) {
                 node = left;
                 continue;
             }
-            let _e111 = F32_INF;
-            if (_e78 < bitcast<f32>(_e111)) {
+            let _e112 = F32_INF;
+            if (_e78 < bitcast<f32>(_e112)) {
                 node = right;
                 continue;
             }
         }
-        let _e115 = sp_1;
-        let _e116 = pop(TLAS_STACK, _e115);
-        if (_e116.x == NO_HIT) {
+        let _e116 = sp_1;
+        let _e117 = pop(TLAS_STACK, _e116);
+        if (_e117.x == NO_HIT) {
             break;
         }
-        node = _e116.x;
-        sp_1 = _e116.y;
+        node = _e117.x;
+        sp_1 = _e117.y;
     }
-    let _e122 = best;
-    return _e122;
+    let _e123 = best;
+    return _e123;
 }
 
 fn intersect_object(slot_2: u32, ray_4: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {

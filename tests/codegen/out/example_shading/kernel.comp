@@ -463,43 +463,43 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             if (((_e71 < uintBitsToFloat(_e80)) && (_e78 < uintBitsToFloat(_e84)))) {
                 near = left;
                 far = right;
-                if ((_e78 < _e71)) {
+                if (((_e78 < _e71) != shadow)) {
                     near = right;
                     far = left;
                 }
-                uint _e91 = sp_1;
-                if ((_e91 < BLAS_STACK)) {
-                    uint _e95 = sp_1;
-                    uint _e97 = far;
-                    traversal_stack[min((TLAS_STACK + _e95), 127u)] = _e97;
-                    uint _e102 = sp_1;
-                    sp_1 = (_e102 + 1u);
+                uint _e92 = sp_1;
+                if ((_e92 < BLAS_STACK)) {
+                    uint _e96 = sp_1;
+                    uint _e98 = far;
+                    traversal_stack[min((TLAS_STACK + _e96), 127u)] = _e98;
+                    uint _e103 = sp_1;
+                    sp_1 = (_e103 + 1u);
                 }
-                uint _e105 = near;
-                node = _e105;
+                uint _e106 = near;
+                node = _e106;
                 continue;
             }
-            uint _e107 = F32_INF;
-            if ((_e71 < uintBitsToFloat(_e107))) {
+            uint _e108 = F32_INF;
+            if ((_e71 < uintBitsToFloat(_e108))) {
                 node = left;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if ((_e78 < uintBitsToFloat(_e111))) {
+            uint _e112 = F32_INF;
+            if ((_e78 < uintBitsToFloat(_e112))) {
                 node = right;
                 continue;
             }
         }
-        uint _e115 = sp_1;
-        uvec2 _e116 = pop(TLAS_STACK, _e115);
-        if ((_e116.x == NO_HIT)) {
+        uint _e116 = sp_1;
+        uvec2 _e117 = pop(TLAS_STACK, _e116);
+        if ((_e117.x == NO_HIT)) {
             break;
         }
-        node = _e116.x;
-        sp_1 = _e116.y;
+        node = _e117.x;
+        sp_1 = _e117.y;
     }
-    Candidate _e122 = best;
-    return _e122;
+    Candidate _e123 = best;
+    return _e123;
 }
 
 Candidate intersect_object(uint slot_2, Ray ray_4, Candidate best_1, bool shadow_1) {

@@ -612,43 +612,43 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             if (((_e71 < asfloat(_e80)) && (_e78 < asfloat(_e84)))) {
                 near = left;
                 far = right;
-                if ((_e78 < _e71)) {
+                if (((_e78 < _e71) != shadow)) {
                     near = right;
                     far = left;
                 }
-                uint _e91 = sp_1;
-                if ((_e91 < BLAS_STACK)) {
-                    uint _e95 = sp_1;
-                    uint _e97 = far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e95), 127u)), 127u)] = _e97;
-                    uint _e102 = sp_1;
-                    sp_1 = (_e102 + 1u);
+                uint _e92 = sp_1;
+                if ((_e92 < BLAS_STACK)) {
+                    uint _e96 = sp_1;
+                    uint _e98 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e96), 127u)), 127u)] = _e98;
+                    uint _e103 = sp_1;
+                    sp_1 = (_e103 + 1u);
                 }
-                uint _e105 = near;
-                node = _e105;
+                uint _e106 = near;
+                node = _e106;
                 continue;
             }
-            uint _e107 = F32_INF;
-            if ((_e71 < asfloat(_e107))) {
+            uint _e108 = F32_INF;
+            if ((_e71 < asfloat(_e108))) {
                 node = left;
                 continue;
             }
-            uint _e111 = F32_INF;
-            if ((_e78 < asfloat(_e111))) {
+            uint _e112 = F32_INF;
+            if ((_e78 < asfloat(_e112))) {
                 node = right;
                 continue;
             }
         }
-        uint _e115 = sp_1;
-        const uint2 _e116 = pop(TLAS_STACK, _e115);
-        if ((_e116.x == NO_HIT)) {
+        uint _e116 = sp_1;
+        const uint2 _e117 = pop(TLAS_STACK, _e116);
+        if ((_e117.x == NO_HIT)) {
             break;
         }
-        node = _e116.x;
-        sp_1 = _e116.y;
+        node = _e117.x;
+        sp_1 = _e117.y;
     }
-    Candidate _e122 = best;
-    const Candidate candidate_2 = _e122;
+    Candidate _e123 = best;
+    const Candidate candidate_2 = _e123;
     return candidate_2;
 }
 
