@@ -93,6 +93,15 @@ fn buffers_hold_the_entities_and_moves_reupload_only_nodes_and_instances() {
     let program = c.program.as_ref().expect("program");
     let mut e = entities(program, &l);
     let mut scene = GpuScene::new(&gpu, &all_bindings());
+    // The scene-level BVH (the last nodes) has one object per leaf: the kernel tests a leaf's
+    // object `a` without a loop.
+    let tlas = &e.nodes()[e.tlas_root() as usize..];
+    let leaves: Vec<u32> = tlas
+        .iter()
+        .filter(|n| n.is_leaf() && n.count() > 0)
+        .map(|n| n.count())
+        .collect();
+    assert_eq!(leaves, vec![1; 8]);
 
     let frame = e.frame_uniforms(1, 4);
     let first = scene.upload(&gpu, &e, &frame, 64 * 64).expect("upload");

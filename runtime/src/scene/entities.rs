@@ -26,7 +26,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Instant;
 
 use glam::{Mat4, Vec3, Vec4};
-use rtc_bvh::{build, flatten, Aabb, BuildInput, BuildPreset, GpuNode};
+use rtc_bvh::{build, build_with_params, flatten, Aabb, BuildInput, BuildPreset, GpuNode};
 use rtc_compiler::link::Linked;
 use rtc_compiler::sema::hir::{
     Geometry, Instance, Program, ProgramKind, SceneDesc, Settings, StructId,
@@ -634,10 +634,12 @@ impl Entities {
         }
         let start = Instant::now();
         let boxes: Vec<Aabb> = self.objects.iter().map(|o| self.world_box(o)).collect();
-        let tlas = build(BuildInput::Aabbs(&boxes), self.preset);
+        // One object per leaf: the kernel's scene-level leaf step tests `a` alone.
+        let tlas = build_with_params(BuildInput::Aabbs(&boxes), &self.preset.single_leaf_params());
         self.stats.tlas_builds += 1;
         self.stats.tlas_depth = tlas.max_depth();
         let flat = flatten(&tlas);
+        debug_assert!(flat.iter().all(|n| n.count() <= 1));
         to_u32("BVH nodes", self.blas_nodes as usize + flat.len())?;
         self.nodes.truncate(self.blas_nodes as usize);
         self.nodes.extend_from_slice(&flat);

@@ -26,7 +26,9 @@
 //! - **`nodes`** (`GpuNode`, 32 bytes, bits in `rtc_bvh::gpu`): every BVH flattened with
 //!   [`rtc_bvh::flatten`], concatenated: first one object-level BVH (BLAS) per distinct mesh, in order
 //!   of first use, **built once per mesh and shared by all objects using it**; then the scene-level
-//!   BVH (TLAS) over the objects' world-space boxes. A BVH whose first node is at index `base` has
+//!   BVH (TLAS) over the objects' world-space boxes, **one object per leaf** (built with
+//!   `BuildPreset::single_leaf_params`; the kernel tests a TLAS leaf's object `a` without a loop).
+//!   A BVH whose first node is at index `base` has
 //!   its root at `base` and the children of an inner node at `base + a` and `base + a + 1`; its
 //!   node `base + 1` is rtc-bvh's padding node. The TLAS comes last so that rebuilding it (its node
 //!   count may change) never moves a BLAS. `FrameUniforms.tlas_root` is the TLAS base.

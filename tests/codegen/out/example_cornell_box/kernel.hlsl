@@ -818,7 +818,6 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2)
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
     uint node_1 = (uint)0;
-    uint k_1 = (uint)0;
     uint near_1 = (uint)0;
     uint far_1 = (uint)0;
 
@@ -852,30 +851,14 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2)
         uint _e37 = node_1;
         GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3(_e37*32+0)), asuint(nodes.Load(_e37*32+12)), asfloat(nodes.Load3(_e37*32+16)), asuint(nodes.Load(_e37*32+28)));
         if (((n_6.b & LEAF_BIT) != 0u)) {
-            uint count_1 = (n_6.b & ~(LEAF_BIT));
-            k_1 = 0u;
-            uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-            bool loop_init_2 = true;
-            while(true) {
-                if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                if (!loop_init_2) {
-                    uint _e65 = k_1;
-                    k_1 = (_e65 + 1u);
-                }
-                loop_init_2 = false;
-                uint _e52 = k_1;
-                if ((_e52 >= count_1)) {
-                    break;
-                }
-                uint _e55 = k_1;
-                Candidate _e57 = best_2;
-                const Candidate _e58 = intersect_object((n_6.a + _e55), ray_6, _e57, shadow_2);
-                best_2 = _e58;
-                uint _e60 = best_2.slot;
-                if ((shadow_2 && (_e60 != NO_HIT))) {
-                    Candidate _e64 = best_2;
-                    const Candidate candidate_7 = _e64;
+            if (((n_6.b & ~(LEAF_BIT)) != 0u)) {
+                Candidate _e53 = best_2;
+                const Candidate _e54 = intersect_object(n_6.a, ray_6, _e53, shadow_2);
+                best_2 = _e54;
+                uint _e56 = best_2.slot;
+                if ((shadow_2 && (_e56 != NO_HIT))) {
+                    Candidate _e60 = best_2;
+                    const Candidate candidate_7 = _e60;
                     return candidate_7;
                 }
             }
@@ -884,52 +867,52 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2)
             uint right_1 = (left_1 + 1u);
             GpuNode l_2 = ConstructGpuNode(asfloat(nodes.Load3(left_1*32+0)), asuint(nodes.Load(left_1*32+12)), asfloat(nodes.Load3(left_1*32+16)), asuint(nodes.Load(left_1*32+28)));
             GpuNode rr_1 = ConstructGpuNode(asfloat(nodes.Load3(right_1*32+0)), asuint(nodes.Load(right_1*32+12)), asfloat(nodes.Load3(right_1*32+16)), asuint(nodes.Load(right_1*32+28)));
+            float _e77 = best_2.t;
+            const float _e78 = slab(l_2.min_, l_2.max_, ray_6.origin, _e16, ray_6.tmin, _e77);
             float _e84 = best_2.t;
-            const float _e85 = slab(l_2.min_, l_2.max_, ray_6.origin, _e16, ray_6.tmin, _e84);
-            float _e91 = best_2.t;
-            const float _e92 = slab(rr_1.min_, rr_1.max_, ray_6.origin, _e16, ray_6.tmin, _e91);
-            uint _e94 = F32_INF;
-            uint _e98 = F32_INF;
-            if (((_e85 < asfloat(_e94)) && (_e92 < asfloat(_e98)))) {
+            const float _e85 = slab(rr_1.min_, rr_1.max_, ray_6.origin, _e16, ray_6.tmin, _e84);
+            uint _e87 = F32_INF;
+            uint _e91 = F32_INF;
+            if (((_e78 < asfloat(_e87)) && (_e85 < asfloat(_e91)))) {
                 near_1 = left_1;
                 far_1 = right_1;
-                if ((_e92 < _e85)) {
+                if ((_e85 < _e78)) {
                     near_1 = right_1;
                     far_1 = left_1;
                 }
-                uint _e105 = sp_2;
-                if ((_e105 < TLAS_STACK)) {
-                    uint _e108 = sp_2;
-                    uint _e109 = far_1;
-                    traversal_stack[min(uint(min(_e108, 127u)), 127u)] = _e109;
-                    uint _e114 = sp_2;
-                    sp_2 = (_e114 + 1u);
+                uint _e98 = sp_2;
+                if ((_e98 < TLAS_STACK)) {
+                    uint _e101 = sp_2;
+                    uint _e102 = far_1;
+                    traversal_stack[min(uint(min(_e101, 127u)), 127u)] = _e102;
+                    uint _e107 = sp_2;
+                    sp_2 = (_e107 + 1u);
                 }
-                uint _e117 = near_1;
-                node_1 = _e117;
+                uint _e110 = near_1;
+                node_1 = _e110;
                 continue;
             }
-            uint _e119 = F32_INF;
-            if ((_e85 < asfloat(_e119))) {
+            uint _e112 = F32_INF;
+            if ((_e78 < asfloat(_e112))) {
                 node_1 = left_1;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if ((_e92 < asfloat(_e123))) {
+            uint _e116 = F32_INF;
+            if ((_e85 < asfloat(_e116))) {
                 node_1 = right_1;
                 continue;
             }
         }
-        uint _e127 = sp_2;
-        const uint2 _e128 = pop(0u, _e127);
-        if ((_e128.x == NO_HIT)) {
+        uint _e120 = sp_2;
+        const uint2 _e121 = pop(0u, _e120);
+        if ((_e121.x == NO_HIT)) {
             break;
         }
-        node_1 = _e128.x;
-        sp_2 = _e128.y;
+        node_1 = _e121.x;
+        sp_2 = _e121.y;
     }
-    Candidate _e134 = best_2;
-    const Candidate candidate_8 = _e134;
+    Candidate _e127 = best_2;
+    const Candidate candidate_8 = _e127;
     return candidate_8;
 }
 
@@ -1103,16 +1086,16 @@ float3 lambert_shade(Lambert m, Ray ray_11, Hit hit_1)
     color = (0.0).xxx;
     const uint _e11 = light_count_query();
     i_2 = 0u;
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-    bool loop_init_3 = true;
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_2) {
             uint _e33 = i_2;
             i_2 = (_e33 + 1u);
         }
-        loop_init_3 = false;
+        loop_init_2 = false;
         uint _e13 = i_2;
         if ((_e13 >= _e11)) {
             break;
@@ -1213,10 +1196,10 @@ float3 trace(Ray camera_ray)
     ray_15 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
-    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
             Ray _e28 = ray_15;
@@ -1246,16 +1229,16 @@ float3 trace(Ray camera_ray)
                         Ray _e77 = ray_15;
                         f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_8, 0u);
                         i_3 = 0u;
-                        uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-                        bool loop_init_4 = true;
+                        uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+                        bool loop_init_3 = true;
                         while(true) {
-                            if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-                            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-                            if (!loop_init_4) {
+                            if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+                            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                            if (!loop_init_3) {
                                 uint _e108 = i_3;
                                 i_3 = (_e108 + 1u);
                             }
-                            loop_init_4 = false;
+                            loop_init_3 = false;
                             uint _e88 = i_3;
                             if ((_e88 >= n_8)) {
                                 break;
@@ -1362,16 +1345,16 @@ void render_pixel(uint2 pixel_3)
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s = 0u;
-    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
-    bool loop_init_5 = true;
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    bool loop_init_4 = true;
     while(true) {
-        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        if (!loop_init_5) {
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_4) {
             uint _e46 = s;
             s = (_e46 + 1u);
         }
-        loop_init_5 = false;
+        loop_init_4 = false;
         uint _e13 = s;
         if ((_e13 >= end_1)) {
             break;
@@ -1417,14 +1400,14 @@ void render_invocation(uint2 id)
     TileParams tile_2 = tile;
     uint2 size_1 = uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
     const uint2 _e11 = div_vec2u(((tile_2.extent + size_1) - (1u).xx), size_1);
-    uint count_2 = (_e11.x * _e11.y);
-    if ((count_2 == 0u)) {
+    uint count_1 = (_e11.x * _e11.y);
+    if ((count_1 == 0u)) {
         return;
     }
     const uint2 _e17 = div_vec2u(id, size_1);
     uint order = ((_e17.y * _e11.x) + _e17.x);
-    const uint _e24 = rem_u32_(SCATTER, count_2);
-    const uint _e26 = rem_u32_((order * _e24), count_2);
+    const uint _e24 = rem_u32_(SCATTER, count_1);
+    const uint _e26 = rem_u32_((order * _e24), count_1);
     const uint _e28 = rem_u32_(_e26, _e11.x);
     const uint _e30 = div_u32_(_e26, _e11.x);
     const uint2 _e33 = rem_vec2u(id, size_1);

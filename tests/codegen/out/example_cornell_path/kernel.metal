@@ -810,7 +810,6 @@ Candidate intersect_scene(
     Candidate best_2 = {};
     uint sp_2 = {};
     uint node_1 = {};
-    uint k_1 = {};
     uint near_1 = {};
     uint far_1 = {};
     uint _e3 = ray_count;
@@ -841,30 +840,14 @@ Candidate intersect_scene(
         uint _e37 = node_1;
         GpuNode n_8 = nodes[_e37];
         if ((n_8.b & LEAF_BIT) != 0u) {
-            uint count_1 = n_8.b & ~(LEAF_BIT);
-            k_1 = 0u;
-            uint2 loop_bound_4 = uint2(4294967295u);
-            bool loop_init_2 = true;
-            while(true) {
-                if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                if (!loop_init_2) {
-                    uint _e65 = k_1;
-                    k_1 = _e65 + 1u;
-                }
-                loop_init_2 = false;
-                uint _e52 = k_1;
-                if (_e52 >= count_1) {
-                    break;
-                }
-                uint _e55 = k_1;
-                Candidate _e57 = best_2;
-                Candidate _e58 = intersect_object(n_8.a + _e55, ray_6, _e57, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
-                best_2 = _e58;
-                uint _e60 = best_2.slot;
-                if (shadow_2 && (_e60 != NO_HIT)) {
-                    Candidate _e64 = best_2;
-                    return _e64;
+            if ((n_8.b & ~(LEAF_BIT)) != 0u) {
+                Candidate _e53 = best_2;
+                Candidate _e54 = intersect_object(n_8.a, ray_6, _e53, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                best_2 = _e54;
+                uint _e56 = best_2.slot;
+                if (shadow_2 && (_e56 != NO_HIT)) {
+                    Candidate _e60 = best_2;
+                    return _e60;
                 }
             }
         } else {
@@ -872,52 +855,52 @@ Candidate intersect_scene(
             uint right_1 = left_1 + 1u;
             GpuNode l_2 = nodes[left_1];
             GpuNode rr_1 = nodes[right_1];
+            float _e77 = best_2.t;
+            float _e78 = slab(l_2.min, l_2.max, ray_6.origin, _e16, ray_6.tmin, _e77, F32_INF);
             float _e84 = best_2.t;
-            float _e85 = slab(l_2.min, l_2.max, ray_6.origin, _e16, ray_6.tmin, _e84, F32_INF);
-            float _e91 = best_2.t;
-            float _e92 = slab(rr_1.min, rr_1.max, ray_6.origin, _e16, ray_6.tmin, _e91, F32_INF);
-            uint _e94 = F32_INF;
-            uint _e98 = F32_INF;
-            if ((_e85 < as_type<float>(_e94)) && (_e92 < as_type<float>(_e98))) {
+            float _e85 = slab(rr_1.min, rr_1.max, ray_6.origin, _e16, ray_6.tmin, _e84, F32_INF);
+            uint _e87 = F32_INF;
+            uint _e91 = F32_INF;
+            if ((_e78 < as_type<float>(_e87)) && (_e85 < as_type<float>(_e91))) {
                 near_1 = left_1;
                 far_1 = right_1;
-                if (_e92 < _e85) {
+                if (_e85 < _e78) {
                     near_1 = right_1;
                     far_1 = left_1;
                 }
-                uint _e105 = sp_2;
-                if (_e105 < TLAS_STACK) {
-                    uint _e108 = sp_2;
-                    uint _e109 = far_1;
-                    traversal_stack.inner[metal::min(_e108, 127u)] = _e109;
-                    uint _e114 = sp_2;
-                    sp_2 = _e114 + 1u;
+                uint _e98 = sp_2;
+                if (_e98 < TLAS_STACK) {
+                    uint _e101 = sp_2;
+                    uint _e102 = far_1;
+                    traversal_stack.inner[metal::min(_e101, 127u)] = _e102;
+                    uint _e107 = sp_2;
+                    sp_2 = _e107 + 1u;
                 }
-                uint _e117 = near_1;
-                node_1 = _e117;
+                uint _e110 = near_1;
+                node_1 = _e110;
                 continue;
             }
-            uint _e119 = F32_INF;
-            if (_e85 < as_type<float>(_e119)) {
+            uint _e112 = F32_INF;
+            if (_e78 < as_type<float>(_e112)) {
                 node_1 = left_1;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if (_e92 < as_type<float>(_e123)) {
+            uint _e116 = F32_INF;
+            if (_e85 < as_type<float>(_e116)) {
                 node_1 = right_1;
                 continue;
             }
         }
-        uint _e127 = sp_2;
-        metal::uint2 _e128 = pop(0u, _e127, traversal_stack);
-        if (_e128.x == NO_HIT) {
+        uint _e120 = sp_2;
+        metal::uint2 _e121 = pop(0u, _e120, traversal_stack);
+        if (_e121.x == NO_HIT) {
             break;
         }
-        node_1 = _e128.x;
-        sp_2 = _e128.y;
+        node_1 = _e121.x;
+        sp_2 = _e121.y;
     }
-    Candidate _e134 = best_2;
-    return _e134;
+    Candidate _e127 = best_2;
+    return _e127;
 }
 
 metal::float3 dispatch_miss(
@@ -1183,16 +1166,16 @@ metal::float3 path_diffuse_shade(
     direct = metal::float3(0.0);
     uint _e12 = light_count_query(frame);
     i_2 = 0u;
-    uint2 loop_bound_5 = uint2(4294967295u);
-    bool loop_init_3 = true;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_2 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_2) {
             uint _e29 = i_2;
             i_2 = _e29 + 1u;
         }
-        loop_init_3 = false;
+        loop_init_2 = false;
         uint _e14 = i_2;
         if (_e14 >= _e12) {
             break;
@@ -1414,10 +1397,10 @@ metal::float3 trace(
     ray_18 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
-    uint2 loop_bound_6 = uint2(4294967295u);
+    uint2 loop_bound_5 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
             Ray _e28 = ray_18;
@@ -1447,16 +1430,16 @@ metal::float3 trace(
                         Ray _e77 = ray_18;
                         f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_14 {}, type_14 {}, n_11, 0u};
                         i_3 = 0u;
-                        uint2 loop_bound_7 = uint2(4294967295u);
-                        bool loop_init_4 = true;
+                        uint2 loop_bound_6 = uint2(4294967295u);
+                        bool loop_init_3 = true;
                         while(true) {
-                            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-                            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-                            if (!loop_init_4) {
+                            if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+                            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                            if (!loop_init_3) {
                                 uint _e108 = i_3;
                                 i_3 = _e108 + 1u;
                             }
-                            loop_init_4 = false;
+                            loop_init_3 = false;
                             uint _e88 = i_3;
                             if (_e88 >= n_11) {
                                 break;
@@ -1582,16 +1565,16 @@ void render_pixel(
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s = 0u;
-    uint2 loop_bound_8 = uint2(4294967295u);
-    bool loop_init_5 = true;
+    uint2 loop_bound_7 = uint2(4294967295u);
+    bool loop_init_4 = true;
     while(true) {
-        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        if (!loop_init_5) {
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_4) {
             uint _e46 = s;
             s = _e46 + 1u;
         }
-        loop_init_5 = false;
+        loop_init_4 = false;
         uint _e13 = s;
         if (_e13 >= end_1) {
             break;
@@ -1655,14 +1638,14 @@ void render_invocation(
     TileParams tile_2 = tile;
     metal::uint2 size_1 = metal::uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
     metal::uint2 _e11 = div_vec2u((tile_2.extent + size_1) - metal::uint2(1u), size_1);
-    uint count_2 = _e11.x * _e11.y;
-    if (count_2 == 0u) {
+    uint count_1 = _e11.x * _e11.y;
+    if (count_1 == 0u) {
         return;
     }
     metal::uint2 _e17 = div_vec2u(id, size_1);
     uint order = (_e17.y * _e11.x) + _e17.x;
-    uint _e24 = rem_u32_(SCATTER, count_2);
-    uint _e26 = rem_u32_(order * _e24, count_2);
+    uint _e24 = rem_u32_(SCATTER, count_1);
+    uint _e26 = rem_u32_(order * _e24, count_1);
     uint _e28 = rem_u32_(_e26, _e11.x);
     uint _e30 = div_u32_(_e26, _e11.x);
     metal::uint2 _e33 = rem_vec2u(id, size_1);

@@ -862,7 +862,6 @@ Candidate intersect_scene(
     Candidate best_2 = {};
     uint sp_2 = {};
     uint node_1 = {};
-    uint k_1 = {};
     uint near_1 = {};
     uint far_1 = {};
     uint _e3 = ray_count;
@@ -893,30 +892,14 @@ Candidate intersect_scene(
         uint _e37 = node_1;
         GpuNode n_6 = nodes[_e37];
         if ((n_6.b & LEAF_BIT) != 0u) {
-            uint count_1 = n_6.b & ~(LEAF_BIT);
-            k_1 = 0u;
-            uint2 loop_bound_4 = uint2(4294967295u);
-            bool loop_init_2 = true;
-            while(true) {
-                if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-                loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-                if (!loop_init_2) {
-                    uint _e65 = k_1;
-                    k_1 = _e65 + 1u;
-                }
-                loop_init_2 = false;
-                uint _e52 = k_1;
-                if (_e52 >= count_1) {
-                    break;
-                }
-                uint _e55 = k_1;
-                Candidate _e57 = best_2;
-                Candidate _e58 = intersect_object(n_6.a + _e55, ray_8, _e57, shadow_2, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, _buffer_sizes);
-                best_2 = _e58;
-                uint _e60 = best_2.slot;
-                if (shadow_2 && (_e60 != NO_HIT)) {
-                    Candidate _e64 = best_2;
-                    return _e64;
+            if ((n_6.b & ~(LEAF_BIT)) != 0u) {
+                Candidate _e53 = best_2;
+                Candidate _e54 = intersect_object(n_6.a, ray_8, _e53, shadow_2, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, _buffer_sizes);
+                best_2 = _e54;
+                uint _e56 = best_2.slot;
+                if (shadow_2 && (_e56 != NO_HIT)) {
+                    Candidate _e60 = best_2;
+                    return _e60;
                 }
             }
         } else {
@@ -924,52 +907,52 @@ Candidate intersect_scene(
             uint right_1 = left_1 + 1u;
             GpuNode l_2 = nodes[left_1];
             GpuNode rr_1 = nodes[right_1];
+            float _e77 = best_2.t;
+            float _e78 = slab(l_2.min, l_2.max, ray_8.origin, _e16, ray_8.tmin, _e77, F32_INF);
             float _e84 = best_2.t;
-            float _e85 = slab(l_2.min, l_2.max, ray_8.origin, _e16, ray_8.tmin, _e84, F32_INF);
-            float _e91 = best_2.t;
-            float _e92 = slab(rr_1.min, rr_1.max, ray_8.origin, _e16, ray_8.tmin, _e91, F32_INF);
-            uint _e94 = F32_INF;
-            uint _e98 = F32_INF;
-            if ((_e85 < as_type<float>(_e94)) && (_e92 < as_type<float>(_e98))) {
+            float _e85 = slab(rr_1.min, rr_1.max, ray_8.origin, _e16, ray_8.tmin, _e84, F32_INF);
+            uint _e87 = F32_INF;
+            uint _e91 = F32_INF;
+            if ((_e78 < as_type<float>(_e87)) && (_e85 < as_type<float>(_e91))) {
                 near_1 = left_1;
                 far_1 = right_1;
-                if (_e92 < _e85) {
+                if (_e85 < _e78) {
                     near_1 = right_1;
                     far_1 = left_1;
                 }
-                uint _e105 = sp_2;
-                if (_e105 < TLAS_STACK) {
-                    uint _e108 = sp_2;
-                    uint _e109 = far_1;
-                    traversal_stack.inner[metal::min(_e108, 127u)] = _e109;
-                    uint _e114 = sp_2;
-                    sp_2 = _e114 + 1u;
+                uint _e98 = sp_2;
+                if (_e98 < TLAS_STACK) {
+                    uint _e101 = sp_2;
+                    uint _e102 = far_1;
+                    traversal_stack.inner[metal::min(_e101, 127u)] = _e102;
+                    uint _e107 = sp_2;
+                    sp_2 = _e107 + 1u;
                 }
-                uint _e117 = near_1;
-                node_1 = _e117;
+                uint _e110 = near_1;
+                node_1 = _e110;
                 continue;
             }
-            uint _e119 = F32_INF;
-            if (_e85 < as_type<float>(_e119)) {
+            uint _e112 = F32_INF;
+            if (_e78 < as_type<float>(_e112)) {
                 node_1 = left_1;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if (_e92 < as_type<float>(_e123)) {
+            uint _e116 = F32_INF;
+            if (_e85 < as_type<float>(_e116)) {
                 node_1 = right_1;
                 continue;
             }
         }
-        uint _e127 = sp_2;
-        metal::uint2 _e128 = pop(0u, _e127, traversal_stack);
-        if (_e128.x == NO_HIT) {
+        uint _e120 = sp_2;
+        metal::uint2 _e121 = pop(0u, _e120, traversal_stack);
+        if (_e121.x == NO_HIT) {
             break;
         }
-        node_1 = _e128.x;
-        sp_2 = _e128.y;
+        node_1 = _e121.x;
+        sp_2 = _e121.y;
     }
-    Candidate _e134 = best_2;
-    return _e134;
+    Candidate _e127 = best_2;
+    return _e127;
 }
 
 metal::float3 dispatch_miss(
@@ -1224,16 +1207,16 @@ metal::float3 fog_medium(
     light = metal::float3(0.0);
     uint _e23 = light_count_query(frame);
     i_3 = 0u;
-    uint2 loop_bound_5 = uint2(4294967295u);
-    bool loop_init_3 = true;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_2 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_2) {
             uint _e35 = i_3;
             i_3 = _e35 + 1u;
         }
-        loop_init_3 = false;
+        loop_init_2 = false;
         uint _e25 = i_3;
         if (_e25 >= _e23) {
             break;
@@ -1341,16 +1324,16 @@ metal::float3 lambert_shade(
     color = metal::float3(0.0);
     uint _e11 = light_count_query(frame);
     i_4 = 0u;
-    uint2 loop_bound_6 = uint2(4294967295u);
-    bool loop_init_4 = true;
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        if (!loop_init_4) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_3) {
             uint _e33 = i_4;
             i_4 = _e33 + 1u;
         }
-        loop_init_4 = false;
+        loop_init_3 = false;
         uint _e13 = i_4;
         if (_e13 >= _e11) {
             break;
@@ -1508,7 +1491,7 @@ metal::float3 trace(
     uint i_5 = {};
     uint medium = {};
     bool found = {};
-    uint k_2 = {};
+    uint k_1 = {};
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
         if (_e4.slot == NO_HIT) {
@@ -1526,10 +1509,10 @@ metal::float3 trace(
     ray_20 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
-    uint2 loop_bound_7 = uint2(4294967295u);
+    uint2 loop_bound_6 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
             Ray _e28 = ray_20;
@@ -1559,16 +1542,16 @@ metal::float3 trace(
                         Ray _e77 = ray_20;
                         f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_14 {}, type_14 {}, n_8, 0u};
                         i_5 = 0u;
-                        uint2 loop_bound_8 = uint2(4294967295u);
-                        bool loop_init_5 = true;
+                        uint2 loop_bound_7 = uint2(4294967295u);
+                        bool loop_init_4 = true;
                         while(true) {
-                            if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-                            loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-                            if (!loop_init_5) {
+                            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+                            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+                            if (!loop_init_4) {
                                 uint _e108 = i_5;
                                 i_5 = _e108 + 1u;
                             }
-                            loop_init_5 = false;
+                            loop_init_4 = false;
                             uint _e88 = i_5;
                             if (_e88 >= n_8) {
                                 break;
@@ -1637,26 +1620,26 @@ metal::float3 trace(
                 if (parent.medium == (_e225 + 1u)) {
                     found = false;
                     medium = 0u;
-                    k_2 = top_1;
-                    uint2 loop_bound_9 = uint2(4294967295u);
+                    k_1 = top_1;
+                    uint2 loop_bound_8 = uint2(4294967295u);
                     while(true) {
-                        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-                        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                        uint _e233 = k_2;
+                        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+                        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                        uint _e233 = k_1;
                         if (_e233 == 0u) {
                             break;
                         }
-                        uint _e236 = k_2;
-                        k_2 = _e236 - 1u;
-                        uint _e239 = k_2;
+                        uint _e236 = k_1;
+                        k_1 = _e236 - 1u;
+                        uint _e239 = k_1;
                         uint _e244 = stack.inner[metal::min(_e239, 2u)].slot;
                         uint _e249 = stack.inner[metal::min(top_1, 2u)].slot;
-                        uint _e251 = k_2;
+                        uint _e251 = k_1;
                         uint _e257 = stack.inner[metal::min(_e251, 2u)].ray.medium;
-                        uint _e261 = k_2;
+                        uint _e261 = k_1;
                         uint _e269 = stack.inner[metal::min(_e261 + 1u, 2u)].ray.medium;
                         if (((_e244 == _e249) && (_e257 != parent.medium)) && (_e269 == parent.medium)) {
-                            uint _e273 = k_2;
+                            uint _e273 = k_1;
                             uint _e279 = stack.inner[metal::min(_e273, 2u)].ray.medium;
                             medium = _e279;
                             found = true;
@@ -1737,16 +1720,16 @@ void render_pixel(
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_1 = 0u;
-    uint2 loop_bound_10 = uint2(4294967295u);
-    bool loop_init_6 = true;
+    uint2 loop_bound_9 = uint2(4294967295u);
+    bool loop_init_5 = true;
     while(true) {
-        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
-        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-        if (!loop_init_6) {
+        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_5) {
             uint _e46 = s_1;
             s_1 = _e46 + 1u;
         }
-        loop_init_6 = false;
+        loop_init_5 = false;
         uint _e13 = s_1;
         if (_e13 >= end_1) {
             break;
@@ -1810,14 +1793,14 @@ void render_invocation(
     TileParams tile_2 = tile;
     metal::uint2 size_1 = metal::uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
     metal::uint2 _e11 = div_vec2u((tile_2.extent + size_1) - metal::uint2(1u), size_1);
-    uint count_2 = _e11.x * _e11.y;
-    if (count_2 == 0u) {
+    uint count_1 = _e11.x * _e11.y;
+    if (count_1 == 0u) {
         return;
     }
     metal::uint2 _e17 = div_vec2u(id, size_1);
     uint order = (_e17.y * _e11.x) + _e17.x;
-    uint _e24 = rem_u32_(SCATTER, count_2);
-    uint _e26 = rem_u32_(order * _e24, count_2);
+    uint _e24 = rem_u32_(SCATTER, count_1);
+    uint _e26 = rem_u32_(order * _e24, count_1);
     uint _e28 = rem_u32_(_e26, _e11.x);
     uint _e30 = div_u32_(_e26, _e11.x);
     metal::uint2 _e33 = rem_vec2u(id, size_1);

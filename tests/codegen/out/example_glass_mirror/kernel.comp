@@ -620,7 +620,6 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint node_1 = 0u;
-    uint k_1 = 0u;
     uint near_1 = 0u;
     uint far_1 = 0u;
     uint _e3 = ray_count;
@@ -648,27 +647,14 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2) {
         uint _e37 = node_1;
         GpuNode n_6 = _group_0_binding_2_cs[_e37];
         if (((n_6.b & LEAF_BIT) != 0u)) {
-            uint count_1 = (n_6.b & ~(LEAF_BIT));
-            k_1 = 0u;
-            bool loop_init_2 = true;
-            while(true) {
-                if (!loop_init_2) {
-                    uint _e65 = k_1;
-                    k_1 = (_e65 + 1u);
-                }
-                loop_init_2 = false;
-                uint _e52 = k_1;
-                if ((_e52 >= count_1)) {
-                    break;
-                }
-                uint _e55 = k_1;
-                Candidate _e57 = best_2;
-                Candidate _e58 = intersect_object((n_6.a + _e55), ray_6, _e57, shadow_2);
-                best_2 = _e58;
-                uint _e60 = best_2.slot;
-                if ((shadow_2 && (_e60 != NO_HIT))) {
-                    Candidate _e64 = best_2;
-                    return _e64;
+            if (((n_6.b & ~(LEAF_BIT)) != 0u)) {
+                Candidate _e53 = best_2;
+                Candidate _e54 = intersect_object(n_6.a, ray_6, _e53, shadow_2);
+                best_2 = _e54;
+                uint _e56 = best_2.slot;
+                if ((shadow_2 && (_e56 != NO_HIT))) {
+                    Candidate _e60 = best_2;
+                    return _e60;
                 }
             }
         } else {
@@ -676,52 +662,52 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2) {
             uint right_1 = (left_1 + 1u);
             GpuNode l_1 = _group_0_binding_2_cs[left_1];
             GpuNode rr_1 = _group_0_binding_2_cs[right_1];
+            float _e77 = best_2.t;
+            float _e78 = slab(l_1.min_, l_1.max_, ray_6.origin, _e16, ray_6.tmin, _e77);
             float _e84 = best_2.t;
-            float _e85 = slab(l_1.min_, l_1.max_, ray_6.origin, _e16, ray_6.tmin, _e84);
-            float _e91 = best_2.t;
-            float _e92 = slab(rr_1.min_, rr_1.max_, ray_6.origin, _e16, ray_6.tmin, _e91);
-            uint _e94 = F32_INF;
-            uint _e98 = F32_INF;
-            if (((_e85 < uintBitsToFloat(_e94)) && (_e92 < uintBitsToFloat(_e98)))) {
+            float _e85 = slab(rr_1.min_, rr_1.max_, ray_6.origin, _e16, ray_6.tmin, _e84);
+            uint _e87 = F32_INF;
+            uint _e91 = F32_INF;
+            if (((_e78 < uintBitsToFloat(_e87)) && (_e85 < uintBitsToFloat(_e91)))) {
                 near_1 = left_1;
                 far_1 = right_1;
-                if ((_e92 < _e85)) {
+                if ((_e85 < _e78)) {
                     near_1 = right_1;
                     far_1 = left_1;
                 }
-                uint _e105 = sp_2;
-                if ((_e105 < TLAS_STACK)) {
-                    uint _e108 = sp_2;
-                    uint _e109 = far_1;
-                    traversal_stack[min(_e108, 127u)] = _e109;
-                    uint _e114 = sp_2;
-                    sp_2 = (_e114 + 1u);
+                uint _e98 = sp_2;
+                if ((_e98 < TLAS_STACK)) {
+                    uint _e101 = sp_2;
+                    uint _e102 = far_1;
+                    traversal_stack[min(_e101, 127u)] = _e102;
+                    uint _e107 = sp_2;
+                    sp_2 = (_e107 + 1u);
                 }
-                uint _e117 = near_1;
-                node_1 = _e117;
+                uint _e110 = near_1;
+                node_1 = _e110;
                 continue;
             }
-            uint _e119 = F32_INF;
-            if ((_e85 < uintBitsToFloat(_e119))) {
+            uint _e112 = F32_INF;
+            if ((_e78 < uintBitsToFloat(_e112))) {
                 node_1 = left_1;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if ((_e92 < uintBitsToFloat(_e123))) {
+            uint _e116 = F32_INF;
+            if ((_e85 < uintBitsToFloat(_e116))) {
                 node_1 = right_1;
                 continue;
             }
         }
-        uint _e127 = sp_2;
-        uvec2 _e128 = pop(0u, _e127);
-        if ((_e128.x == NO_HIT)) {
+        uint _e120 = sp_2;
+        uvec2 _e121 = pop(0u, _e120);
+        if ((_e121.x == NO_HIT)) {
             break;
         }
-        node_1 = _e128.x;
-        sp_2 = _e128.y;
+        node_1 = _e121.x;
+        sp_2 = _e121.y;
     }
-    Candidate _e134 = best_2;
-    return _e134;
+    Candidate _e127 = best_2;
+    return _e127;
 }
 
 SkyGradient load_SkyGradient(uint offset_2) {
@@ -976,13 +962,13 @@ vec3 trace(Ray camera_ray) {
                         Ray _e77 = ray_19;
                         f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), n_7, 0u);
                         i_1 = 0u;
-                        bool loop_init_3 = true;
+                        bool loop_init_2 = true;
                         while(true) {
-                            if (!loop_init_3) {
+                            if (!loop_init_2) {
                                 uint _e108 = i_1;
                                 i_1 = (_e108 + 1u);
                             }
-                            loop_init_3 = false;
+                            loop_init_2 = false;
                             uint _e88 = i_1;
                             if ((_e88 >= n_7)) {
                                 break;
@@ -1085,13 +1071,13 @@ void render_pixel(uvec2 pixel_3) {
     bad = 0u;
     uint end_1 = frame_4.samples_per_pass;
     s = 0u;
-    bool loop_init_4 = true;
+    bool loop_init_3 = true;
     while(true) {
-        if (!loop_init_4) {
+        if (!loop_init_3) {
             uint _e46 = s;
             s = (_e46 + 1u);
         }
-        loop_init_4 = false;
+        loop_init_3 = false;
         uint _e13 = s;
         if ((_e13 >= end_1)) {
             break;
@@ -1136,14 +1122,14 @@ void render_invocation(uvec2 id) {
     TileParams tile_2 = _group_0_binding_1_cs;
     uvec2 size_1 = uvec2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
     uvec2 _e11 = div_vec2u(((tile_2.extent + size_1) - uvec2(1u)), size_1);
-    uint count_2 = (_e11.x * _e11.y);
-    if ((count_2 == 0u)) {
+    uint count_1 = (_e11.x * _e11.y);
+    if ((count_1 == 0u)) {
         return;
     }
     uvec2 _e17 = div_vec2u(id, size_1);
     uint order = ((_e17.y * _e11.x) + _e17.x);
-    uint _e24 = rem_u32_(SCATTER, count_2);
-    uint _e26 = rem_u32_((order * _e24), count_2);
+    uint _e24 = rem_u32_(SCATTER, count_1);
+    uint _e26 = rem_u32_((order * _e24), count_1);
     uint _e28 = rem_u32_(_e26, _e11.x);
     uint _e30 = div_u32_(_e26, _e11.x);
     uvec2 _e33 = rem_vec2u(id, size_1);

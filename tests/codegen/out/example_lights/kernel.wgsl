@@ -805,7 +805,6 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var node_1: u32;
-    var k_1: u32;
     var near_1: u32;
     var far_1: u32;
 
@@ -834,25 +833,14 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
         let _e37 = node_1;
         let n_8 = nodes[_e37];
         if ((n_8.b & LEAF_BIT) != 0u) {
-            let count_1 = (n_8.b & ~(LEAF_BIT));
-            k_1 = 0u;
-            loop {
-                let _e52 = k_1;
-                if (_e52 >= count_1) {
-                    break;
-                }
-                let _e55 = k_1;
-                let _e57 = best_2;
-                let _e58 = intersect_object((n_8.a + _e55), ray_9, _e57, shadow_2);
-                best_2 = _e58;
-                let _e60 = best_2.slot;
-                if (shadow_2 && (_e60 != NO_HIT)) {
-                    let _e64 = best_2;
-                    return _e64;
-                }
-                continuing {
-                    let _e65 = k_1;
-                    k_1 = (_e65 + 1u);
+            if ((n_8.b & ~(LEAF_BIT)) != 0u) {
+                let _e53 = best_2;
+                let _e54 = intersect_object(n_8.a, ray_9, _e53, shadow_2);
+                best_2 = _e54;
+                let _e56 = best_2.slot;
+                if (shadow_2 && (_e56 != NO_HIT)) {
+                    let _e60 = best_2;
+                    return _e60;
                 }
             }
         } else {
@@ -860,52 +848,52 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
             let right_1 = (left_1 + 1u);
             let l_6 = nodes[left_1];
             let rr_1 = nodes[right_1];
+            let _e77 = best_2.t;
+            let _e78 = slab(l_6.min, l_6.max, ray_9.origin, _e16, ray_9.tmin, _e77);
             let _e84 = best_2.t;
-            let _e85 = slab(l_6.min, l_6.max, ray_9.origin, _e16, ray_9.tmin, _e84);
-            let _e91 = best_2.t;
-            let _e92 = slab(rr_1.min, rr_1.max, ray_9.origin, _e16, ray_9.tmin, _e91);
-            let _e94 = F32_INF;
-            let _e98 = F32_INF;
-            if ((_e85 < bitcast<f32>(_e94)) && (_e92 < bitcast<f32>(_e98))) {
+            let _e85 = slab(rr_1.min, rr_1.max, ray_9.origin, _e16, ray_9.tmin, _e84);
+            let _e87 = F32_INF;
+            let _e91 = F32_INF;
+            if ((_e78 < bitcast<f32>(_e87)) && (_e85 < bitcast<f32>(_e91))) {
                 near_1 = left_1;
                 far_1 = right_1;
-                if (_e92 < _e85) {
+                if (_e85 < _e78) {
                     near_1 = right_1;
                     far_1 = left_1;
                 }
-                let _e105 = sp_2;
-                if (_e105 < TLAS_STACK) {
-                    let _e108 = sp_2;
-                    let _e109 = far_1;
-                    traversal_stack[min(_e108, 127u)] = _e109;
-                    let _e114 = sp_2;
-                    sp_2 = (_e114 + 1u);
+                let _e98 = sp_2;
+                if (_e98 < TLAS_STACK) {
+                    let _e101 = sp_2;
+                    let _e102 = far_1;
+                    traversal_stack[min(_e101, 127u)] = _e102;
+                    let _e107 = sp_2;
+                    sp_2 = (_e107 + 1u);
                 }
-                let _e117 = near_1;
-                node_1 = _e117;
+                let _e110 = near_1;
+                node_1 = _e110;
                 continue;
             }
-            let _e119 = F32_INF;
-            if (_e85 < bitcast<f32>(_e119)) {
+            let _e112 = F32_INF;
+            if (_e78 < bitcast<f32>(_e112)) {
                 node_1 = left_1;
                 continue;
             }
-            let _e123 = F32_INF;
-            if (_e92 < bitcast<f32>(_e123)) {
+            let _e116 = F32_INF;
+            if (_e85 < bitcast<f32>(_e116)) {
                 node_1 = right_1;
                 continue;
             }
         }
-        let _e127 = sp_2;
-        let _e128 = pop(0u, _e127);
-        if (_e128.x == NO_HIT) {
+        let _e120 = sp_2;
+        let _e121 = pop(0u, _e120);
+        if (_e121.x == NO_HIT) {
             break;
         }
-        node_1 = _e128.x;
-        sp_2 = _e128.y;
+        node_1 = _e121.x;
+        sp_2 = _e121.y;
     }
-    let _e134 = best_2;
-    return _e134;
+    let _e127 = best_2;
+    return _e127;
 }
 
 fn load_ConstantBackground(offset_5: u32) -> ConstantBackground {
@@ -1440,14 +1428,14 @@ fn render_invocation(id: vec2<u32>) {
     let tile_2 = tile;
     let size_1 = vec2<u32>(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
     let _e11 = div_vec2u(((tile_2.extent + size_1) - vec2(1u)), size_1);
-    let count_2 = (_e11.x * _e11.y);
-    if (count_2 == 0u) {
+    let count_1 = (_e11.x * _e11.y);
+    if (count_1 == 0u) {
         return;
     }
     let _e17 = div_vec2u(id, size_1);
     let order = ((_e17.y * _e11.x) + _e17.x);
-    let _e24 = rem_u32_(SCATTER, count_2);
-    let _e26 = rem_u32_((order * _e24), count_2);
+    let _e24 = rem_u32_(SCATTER, count_1);
+    let _e26 = rem_u32_((order * _e24), count_1);
     let _e28 = rem_u32_(_e26, _e11.x);
     let _e30 = div_u32_(_e26, _e11.x);
     let _e33 = rem_vec2u(id, size_1);

@@ -1203,7 +1203,6 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
     Candidate best_3 = (Candidate)0;
     uint sp_3 = (uint)0;
     uint node_2 = (uint)0;
-    uint k_2 = (uint)0;
     uint near_1 = (uint)0;
     uint far_1 = (uint)0;
 
@@ -1237,30 +1236,14 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
         uint _e37 = node_2;
         GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3(_e37*32+0)), asuint(nodes.Load(_e37*32+12)), asfloat(nodes.Load3(_e37*32+16)), asuint(nodes.Load(_e37*32+28)));
         if (((n_8.b & LEAF_BIT) != 0u)) {
-            uint count_2 = (n_8.b & ~(LEAF_BIT));
-            k_2 = 0u;
-            uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-            bool loop_init_3 = true;
-            while(true) {
-                if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-                if (!loop_init_3) {
-                    uint _e65 = k_2;
-                    k_2 = (_e65 + 1u);
-                }
-                loop_init_3 = false;
-                uint _e52 = k_2;
-                if ((_e52 >= count_2)) {
-                    break;
-                }
-                uint _e55 = k_2;
-                Candidate _e57 = best_3;
-                const Candidate _e58 = intersect_object((n_8.a + _e55), ray_12, _e57, shadow_2);
-                best_3 = _e58;
-                uint _e60 = best_3.slot;
-                if ((shadow_2 && (_e60 != NO_HIT))) {
-                    Candidate _e64 = best_3;
-                    const Candidate candidate_8 = _e64;
+            if (((n_8.b & ~(LEAF_BIT)) != 0u)) {
+                Candidate _e53 = best_3;
+                const Candidate _e54 = intersect_object(n_8.a, ray_12, _e53, shadow_2);
+                best_3 = _e54;
+                uint _e56 = best_3.slot;
+                if ((shadow_2 && (_e56 != NO_HIT))) {
+                    Candidate _e60 = best_3;
+                    const Candidate candidate_8 = _e60;
                     return candidate_8;
                 }
             }
@@ -1269,52 +1252,52 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
             uint right_1 = (left_1 + 1u);
             GpuNode l_3 = ConstructGpuNode(asfloat(nodes.Load3(left_1*32+0)), asuint(nodes.Load(left_1*32+12)), asfloat(nodes.Load3(left_1*32+16)), asuint(nodes.Load(left_1*32+28)));
             GpuNode rr_1 = ConstructGpuNode(asfloat(nodes.Load3(right_1*32+0)), asuint(nodes.Load(right_1*32+12)), asfloat(nodes.Load3(right_1*32+16)), asuint(nodes.Load(right_1*32+28)));
+            float _e77 = best_3.t;
+            const float _e78 = slab(l_3.min_, l_3.max_, ray_12.origin, _e16, ray_12.tmin, _e77);
             float _e84 = best_3.t;
-            const float _e85 = slab(l_3.min_, l_3.max_, ray_12.origin, _e16, ray_12.tmin, _e84);
-            float _e91 = best_3.t;
-            const float _e92 = slab(rr_1.min_, rr_1.max_, ray_12.origin, _e16, ray_12.tmin, _e91);
-            uint _e94 = F32_INF;
-            uint _e98 = F32_INF;
-            if (((_e85 < asfloat(_e94)) && (_e92 < asfloat(_e98)))) {
+            const float _e85 = slab(rr_1.min_, rr_1.max_, ray_12.origin, _e16, ray_12.tmin, _e84);
+            uint _e87 = F32_INF;
+            uint _e91 = F32_INF;
+            if (((_e78 < asfloat(_e87)) && (_e85 < asfloat(_e91)))) {
                 near_1 = left_1;
                 far_1 = right_1;
-                if ((_e92 < _e85)) {
+                if ((_e85 < _e78)) {
                     near_1 = right_1;
                     far_1 = left_1;
                 }
-                uint _e105 = sp_3;
-                if ((_e105 < TLAS_STACK)) {
-                    uint _e108 = sp_3;
-                    uint _e109 = far_1;
-                    traversal_stack[min(uint(min(_e108, 127u)), 127u)] = _e109;
-                    uint _e114 = sp_3;
-                    sp_3 = (_e114 + 1u);
+                uint _e98 = sp_3;
+                if ((_e98 < TLAS_STACK)) {
+                    uint _e101 = sp_3;
+                    uint _e102 = far_1;
+                    traversal_stack[min(uint(min(_e101, 127u)), 127u)] = _e102;
+                    uint _e107 = sp_3;
+                    sp_3 = (_e107 + 1u);
                 }
-                uint _e117 = near_1;
-                node_2 = _e117;
+                uint _e110 = near_1;
+                node_2 = _e110;
                 continue;
             }
-            uint _e119 = F32_INF;
-            if ((_e85 < asfloat(_e119))) {
+            uint _e112 = F32_INF;
+            if ((_e78 < asfloat(_e112))) {
                 node_2 = left_1;
                 continue;
             }
-            uint _e123 = F32_INF;
-            if ((_e92 < asfloat(_e123))) {
+            uint _e116 = F32_INF;
+            if ((_e85 < asfloat(_e116))) {
                 node_2 = right_1;
                 continue;
             }
         }
-        uint _e127 = sp_3;
-        const uint2 _e128 = pop(0u, _e127);
-        if ((_e128.x == NO_HIT)) {
+        uint _e120 = sp_3;
+        const uint2 _e121 = pop(0u, _e120);
+        if ((_e121.x == NO_HIT)) {
             break;
         }
-        node_2 = _e128.x;
-        sp_3 = _e128.y;
+        node_2 = _e121.x;
+        sp_3 = _e121.y;
     }
-    Candidate _e134 = best_3;
-    const Candidate candidate_9 = _e134;
+    Candidate _e127 = best_3;
+    const Candidate candidate_9 = _e127;
     return candidate_9;
 }
 
@@ -1596,16 +1579,16 @@ float3 lambert_shade(Lambert m_2, Ray ray_18, Hit hit_1)
     color = (0.0).xxx;
     const uint _e11 = light_count_query();
     i_4 = 0u;
-    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
-    bool loop_init_4 = true;
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        if (!loop_init_4) {
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_3) {
             uint _e33 = i_4;
             i_4 = (_e33 + 1u);
         }
-        loop_init_4 = false;
+        loop_init_3 = false;
         uint _e13 = i_4;
         if ((_e13 >= _e11)) {
             break;
@@ -1706,10 +1689,10 @@ float3 trace(Ray camera_ray)
     ray_22 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
-    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
             Ray _e28 = ray_22;
@@ -1739,16 +1722,16 @@ float3 trace(Ray camera_ray)
                         Ray _e77 = ray_22;
                         f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_10, 0u);
                         i_5 = 0u;
-                        uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
-                        bool loop_init_5 = true;
+                        uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+                        bool loop_init_4 = true;
                         while(true) {
-                            if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
-                            loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-                            if (!loop_init_5) {
+                            if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+                            loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                            if (!loop_init_4) {
                                 uint _e108 = i_5;
                                 i_5 = (_e108 + 1u);
                             }
-                            loop_init_5 = false;
+                            loop_init_4 = false;
                             uint _e88 = i_5;
                             if ((_e88 >= n_10)) {
                                 break;
@@ -1855,16 +1838,16 @@ void render_pixel(uint2 pixel_3)
     bad = 0u;
     uint end_2 = frame_5.samples_per_pass;
     s_1 = 0u;
-    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
-    bool loop_init_6 = true;
+    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+    bool loop_init_5 = true;
     while(true) {
-        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
-        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-        if (!loop_init_6) {
+        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_5) {
             uint _e46 = s_1;
             s_1 = (_e46 + 1u);
         }
-        loop_init_6 = false;
+        loop_init_5 = false;
         uint _e13 = s_1;
         if ((_e13 >= end_2)) {
             break;
@@ -1910,14 +1893,14 @@ void render_invocation(uint2 id)
     TileParams tile_2 = tile;
     uint2 size_1 = uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
     const uint2 _e11 = div_vec2u(((tile_2.extent + size_1) - (1u).xx), size_1);
-    uint count_3 = (_e11.x * _e11.y);
-    if ((count_3 == 0u)) {
+    uint count_2 = (_e11.x * _e11.y);
+    if ((count_2 == 0u)) {
         return;
     }
     const uint2 _e17 = div_vec2u(id, size_1);
     uint order = ((_e17.y * _e11.x) + _e17.x);
-    const uint _e24 = rem_u32_(SCATTER, count_3);
-    const uint _e26 = rem_u32_((order * _e24), count_3);
+    const uint _e24 = rem_u32_(SCATTER, count_2);
+    const uint _e26 = rem_u32_((order * _e24), count_2);
     const uint _e28 = rem_u32_(_e26, _e11.x);
     const uint _e30 = div_u32_(_e26, _e11.x);
     const uint2 _e33 = rem_vec2u(id, size_1);

@@ -924,7 +924,6 @@ fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
     var best_3: Candidate;
     var sp_3: u32;
     var node_2: u32;
-    var k_2: u32;
     var near_1: u32;
     var far_1: u32;
 
@@ -953,25 +952,14 @@ fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
         let _e37 = node_2;
         let n_8 = nodes[_e37];
         if ((n_8.b & LEAF_BIT) != 0u) {
-            let count_2 = (n_8.b & ~(LEAF_BIT));
-            k_2 = 0u;
-            loop {
-                let _e52 = k_2;
-                if (_e52 >= count_2) {
-                    break;
-                }
-                let _e55 = k_2;
-                let _e57 = best_3;
-                let _e58 = intersect_object((n_8.a + _e55), ray_12, _e57, shadow_2);
-                best_3 = _e58;
-                let _e60 = best_3.slot;
-                if (shadow_2 && (_e60 != NO_HIT)) {
-                    let _e64 = best_3;
-                    return _e64;
-                }
-                continuing {
-                    let _e65 = k_2;
-                    k_2 = (_e65 + 1u);
+            if ((n_8.b & ~(LEAF_BIT)) != 0u) {
+                let _e53 = best_3;
+                let _e54 = intersect_object(n_8.a, ray_12, _e53, shadow_2);
+                best_3 = _e54;
+                let _e56 = best_3.slot;
+                if (shadow_2 && (_e56 != NO_HIT)) {
+                    let _e60 = best_3;
+                    return _e60;
                 }
             }
         } else {
@@ -979,52 +967,52 @@ fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
             let right_1 = (left_1 + 1u);
             let l_3 = nodes[left_1];
             let rr_1 = nodes[right_1];
+            let _e77 = best_3.t;
+            let _e78 = slab(l_3.min, l_3.max, ray_12.origin, _e16, ray_12.tmin, _e77);
             let _e84 = best_3.t;
-            let _e85 = slab(l_3.min, l_3.max, ray_12.origin, _e16, ray_12.tmin, _e84);
-            let _e91 = best_3.t;
-            let _e92 = slab(rr_1.min, rr_1.max, ray_12.origin, _e16, ray_12.tmin, _e91);
-            let _e94 = F32_INF;
-            let _e98 = F32_INF;
-            if ((_e85 < bitcast<f32>(_e94)) && (_e92 < bitcast<f32>(_e98))) {
+            let _e85 = slab(rr_1.min, rr_1.max, ray_12.origin, _e16, ray_12.tmin, _e84);
+            let _e87 = F32_INF;
+            let _e91 = F32_INF;
+            if ((_e78 < bitcast<f32>(_e87)) && (_e85 < bitcast<f32>(_e91))) {
                 near_1 = left_1;
                 far_1 = right_1;
-                if (_e92 < _e85) {
+                if (_e85 < _e78) {
                     near_1 = right_1;
                     far_1 = left_1;
                 }
-                let _e105 = sp_3;
-                if (_e105 < TLAS_STACK) {
-                    let _e108 = sp_3;
-                    let _e109 = far_1;
-                    traversal_stack[min(_e108, 127u)] = _e109;
-                    let _e114 = sp_3;
-                    sp_3 = (_e114 + 1u);
+                let _e98 = sp_3;
+                if (_e98 < TLAS_STACK) {
+                    let _e101 = sp_3;
+                    let _e102 = far_1;
+                    traversal_stack[min(_e101, 127u)] = _e102;
+                    let _e107 = sp_3;
+                    sp_3 = (_e107 + 1u);
                 }
-                let _e117 = near_1;
-                node_2 = _e117;
+                let _e110 = near_1;
+                node_2 = _e110;
                 continue;
             }
-            let _e119 = F32_INF;
-            if (_e85 < bitcast<f32>(_e119)) {
+            let _e112 = F32_INF;
+            if (_e78 < bitcast<f32>(_e112)) {
                 node_2 = left_1;
                 continue;
             }
-            let _e123 = F32_INF;
-            if (_e92 < bitcast<f32>(_e123)) {
+            let _e116 = F32_INF;
+            if (_e85 < bitcast<f32>(_e116)) {
                 node_2 = right_1;
                 continue;
             }
         }
-        let _e127 = sp_3;
-        let _e128 = pop(0u, _e127);
-        if (_e128.x == NO_HIT) {
+        let _e120 = sp_3;
+        let _e121 = pop(0u, _e120);
+        if (_e121.x == NO_HIT) {
             break;
         }
-        node_2 = _e128.x;
-        sp_3 = _e128.y;
+        node_2 = _e121.x;
+        sp_3 = _e121.y;
     }
-    let _e134 = best_3;
-    return _e134;
+    let _e127 = best_3;
+    return _e127;
 }
 
 fn load_Skybox(offset_5: u32) -> Skybox {
@@ -1498,14 +1486,14 @@ fn render_invocation(id: vec2<u32>) {
     let tile_2 = tile;
     let size_1 = vec2<u32>(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
     let _e11 = div_vec2u(((tile_2.extent + size_1) - vec2(1u)), size_1);
-    let count_3 = (_e11.x * _e11.y);
-    if (count_3 == 0u) {
+    let count_2 = (_e11.x * _e11.y);
+    if (count_2 == 0u) {
         return;
     }
     let _e17 = div_vec2u(id, size_1);
     let order = ((_e17.y * _e11.x) + _e17.x);
-    let _e24 = rem_u32_(SCATTER, count_3);
-    let _e26 = rem_u32_((order * _e24), count_3);
+    let _e24 = rem_u32_(SCATTER, count_2);
+    let _e26 = rem_u32_((order * _e24), count_2);
     let _e28 = rem_u32_(_e26, _e11.x);
     let _e30 = div_u32_(_e26, _e11.x);
     let _e33 = rem_vec2u(id, size_1);
