@@ -3,8 +3,8 @@
 //! # Invariants
 //!
 //! * Every number that steers a build lives in [`BuildParams`], and the only sanctioned values are
-//!   the ones [`BuildPreset::params`] and [`BuildPreset::single_leaf_params`] return. Code elsewhere never writes a bin count, a leaf size
-//!   or a cost constant as a literal.
+//!   the ones [`BuildPreset::params`] and [`BuildPreset::single_leaf_params`] return. Code
+//!   elsewhere never writes a bin count, a leaf size or a cost constant as a literal.
 //! * Trees are compared by [`crate::Bvh::sah_cost`] with [`SahCost::STANDARD`] (traversal cost
 //!   1 per inner node, intersection cost 1 per primitive, both weighted by surface area relative
 //!   to the root), whatever their builder minimised. [`BuildPreset::Quality`] minimises exactly
@@ -78,9 +78,9 @@ impl BuildPreset {
 
     /// The settings of this preset for a BVH over objects whose leaves must hold one object
     /// each (rtc's scene-level BVH: the kernel tests a leaf's one object without a loop, which
-    /// on a CPU driver made the thesis frame 3.8 % faster, and the one-object leaves another
-    /// 2 %). A node over more than one reference is always split, so every leaf of a non-empty
-    /// input holds exactly one.
+    /// on lavapipe made the thesis frame 3.8 % faster, and the one-object leaves about 2 % more).
+    /// A node over more than one reference is always split, so every leaf of a non-empty input
+    /// holds exactly one.
     pub const fn single_leaf_params(self) -> BuildParams {
         let mut params = self.params();
         params.max_leaf_size = 1;
