@@ -4,8 +4,9 @@
 //! (ARCHITECTURE.md, "Performance on lavapipe"), not a test:
 //! `cargo run --release -p rtc-runtime --example load_costs`.
 //!
-//! On lavapipe every load becomes a loop over the lanes with a bounds check per component, so
-//! the cost is about a fixed part per load plus a part per component; the figures say which.
+//! On Mesa 22.3's lavapipe every load becomes a loop over the lanes with a bounds check per
+//! component, so the cost is about a fixed part per load plus a part per component; Mesa 25's is
+//! cheaper per component (ARCHITECTURE.md has both sets of figures).
 use rtc_runtime::gpu::{AdapterChoice, Gpu};
 use std::time::Instant;
 use wgpu::util::DeviceExt;
