@@ -18,13 +18,16 @@
 //!   two false-colour panels with a colour bar and labels (`0` and the maximum) under each, and
 //!   [`HeatStats`] (maximum, mean) to print beside it.
 //! - [`sah_cost`] computes the surface-area-heuristic cost of a flattened BVH in the GPU node
-//!   buffer, the same figure `rtc_bvh::Bvh::sah_cost` reports for a canonical tree.
+//!   buffer, the same figure `rtc_bvh::Bvh::sah_cost` reports for a canonical tree, and
+//!   [`mesh_sah_cost`] the same for a mesh BVH in the quantised layout (over its quantised boxes,
+//!   a little larger than the exact ones).
 //!
 //! Guarantees: nothing here panics on any scene or ray data (indices out of range, NaN, zero
 //! direction components are skipped or handled); the traversals visit each reachable node once per
-//! instance that references it and cannot loop (children always lie at larger indices).
+//! instance that references it and cannot loop (children always lie at larger indices or records).
 
 use glam::Vec3;
+use rtc_bvh::quantized::{Child, QuantizedHeader, QuantizedNode};
 use rtc_bvh::GpuNode;
 
 use crate::image_out::{srgb_to_linear, LinearImage};
@@ -126,8 +129,7 @@ pub fn object_names(entities: &Entities) -> Vec<String> {
 }
 
 fn node_box(n: &GpuNode) -> Option<(Vec3, Vec3)> {
-    let (min, max) = (Vec3::from(n.min), Vec3::from(n.max));
-    (min.cmple(max).all() && min.is_finite() && max.is_finite()).then_some((min, max))
+    node_box_of(Vec3::from(n.min), Vec3::from(n.max))
 }
 
 /// Walks one BVH of the node buffer rooted at `root` (child indices are relative to it), calling
@@ -150,6 +152,73 @@ fn walk(nodes: &[GpuNode], root: u32, mut visit: impl FnMut(&GpuNode, u32)) {
     }
 }
 
+/// One node of a mesh BVH as [`walk_mesh`] reports it: its box (`None` for an empty leaf), depth
+/// and, for a leaf, its primitive count.
+#[derive(Clone, Copy, Debug)]
+struct MeshNodeView {
+    bounds: Option<(Vec3, Vec3)>,
+    depth: u32,
+    leaf_count: Option<u32>,
+}
+
+/// Walks the mesh BVH whose header record is `nodes[base]` (the quantised layout of
+/// `rtc_bvh::quantized`), calling `visit` for every node, leaves included. The root's box is the
+/// union of its children's (a leaf root gets the header's whole quantisation frame). Inner
+/// children lie at larger records than their parent; anything else is a broken buffer and is not
+/// followed.
+fn walk_mesh(nodes: &[GpuNode], base: u32, mut visit: impl FnMut(MeshNodeView)) {
+    let Some(&header) = nodes.get(base as usize) else {
+        return;
+    };
+    let header: QuantizedHeader = bytemuck::cast(header);
+    let frame = (header.point([0; 3]), header.point([0xffff; 3]));
+    let mut stack = vec![(header.root, frame, 0u32, 0u32)];
+    while let Some((reference, bounds, depth, parent)) = stack.pop() {
+        match Child::decode(reference) {
+            Child::Leaf { count, .. } => visit(MeshNodeView {
+                bounds: (count > 0)
+                    .then_some(bounds)
+                    .and_then(|(a, b)| node_box_of(a, b)),
+                depth,
+                leaf_count: Some(count),
+            }),
+            Child::Inner(record) => {
+                if record <= parent {
+                    continue;
+                }
+                let Some(&n) = (base as usize)
+                    .checked_add(record as usize)
+                    .and_then(|i| nodes.get(i))
+                else {
+                    continue;
+                };
+                let n: QuantizedNode = bytemuck::cast(n);
+                let (l, r) = (header.unpack(n.left_box), header.unpack(n.right_box));
+                let (l, r) = (
+                    (Vec3::from(l.min), Vec3::from(l.max)),
+                    (Vec3::from(r.min), Vec3::from(r.max)),
+                );
+                let bounds = if depth == 0 {
+                    (l.0.min(r.0), l.1.max(r.1))
+                } else {
+                    bounds
+                };
+                visit(MeshNodeView {
+                    bounds: node_box_of(bounds.0, bounds.1),
+                    depth,
+                    leaf_count: None,
+                });
+                stack.push((n.right, r, depth + 1, record));
+                stack.push((n.left, l, depth + 1, record));
+            }
+        }
+    }
+}
+
+fn node_box_of(min: Vec3, max: Vec3) -> Option<(Vec3, Vec3)> {
+    (min.cmple(max).all() && min.is_finite() && max.is_finite()).then_some((min, max))
+}
+
 /// Collects the boxes of the chosen `levels`: of the whole scene (TLAS, then each instance's
 /// BLAS below its leaf), or, with `object`, of that object's BLAS only (see the module docs).
 pub fn collect_boxes(
@@ -161,11 +230,11 @@ pub fn collect_boxes(
     let instances = entities.instances();
     let mut set = BoxSet::default();
     let blas = |set: &mut BoxSet, inst: &GpuInstance, base: u32| {
-        walk(nodes, inst.blas_root, |n, d| {
-            let level = base + d;
+        walk_mesh(nodes, inst.blas_root, |n| {
+            let level = base + n.depth;
             set.nodes += 1;
             set.deepest = set.deepest.max(level);
-            if let (true, Some((min, max))) = (levels.contains(level), node_box(n)) {
+            if let (true, Some((min, max))) = (levels.contains(level), n.bounds) {
                 set.boxes.push(ViewBox {
                     min,
                     max,
@@ -250,6 +319,22 @@ pub fn sah_cost(nodes: &[GpuNode], root: u32) -> f64 {
         } else {
             1.0
         };
+    });
+    total
+}
+
+/// [`sah_cost`] of the mesh BVH whose header record is `nodes[base]` (the quantised layout of
+/// `rtc_bvh::quantized`), over the quantised boxes.
+pub fn mesh_sah_cost(nodes: &[GpuNode], base: u32) -> f64 {
+    let mut root_area = None;
+    let mut total = 0.0f64;
+    walk_mesh(nodes, base, |n| {
+        let Some((min, max)) = n.bounds else { return };
+        let d = max - min;
+        let area = f64::from(d.x * d.y + d.y * d.z + d.z * d.x);
+        let root = *root_area.get_or_insert(area);
+        let w = if root > 0.0 { area / root } else { 1.0 };
+        total += w * n.leaf_count.map_or(1.0, f64::from);
     });
     total
 }

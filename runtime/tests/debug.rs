@@ -5,7 +5,8 @@
 //! The scene is five unit cubes (`cube_mesh()`, 12 triangles each) in a row along x, with a camera
 //! whose `@ray_generation` returns one hand-written ray per pixel (every float written as its exact
 //! bits). The expected counts come from a CPU copy of the kernel's traversal order (`intersect_scene`
-//! and `intersect_mesh` in `stdlib/kernel/trace.rt`: near child first, far child deferred, a
+//! and `intersect_mesh` in `stdlib/kernel/trace.rt`, over the quantised mesh records of
+//! `rtc_bvh::quantized`: near child first, far child deferred, a
 //! deferred node visited when popped even if the closest hit lies before it) run over the
 //! renderer's own node, instance and triangle arrays. The rays are axis-aligned and pass at least 0.05 (in face coordinates) from every
 //! triangle edge, so no box or triangle decision is within rounding of its boundary: counts must
@@ -18,6 +19,7 @@ mod common;
 use common::{gpu_or_skip, temp_dir};
 use std::fmt::Write as _;
 
+use rtc_bvh::quantized::{Child, QuantizedBvh};
 use rtc_bvh::GpuNode;
 use rtc_compiler::driver::Options;
 use rtc_compiler::kernel::{compile_scene_with, CompiledScene, DebugMode, KernelOptions};
@@ -134,11 +136,23 @@ fn safe_inverse(d: [f32; 3]) -> [f32; 3] {
 
 /// The kernel's `slab`: entry distance, or `None` for a miss within `[tmin, tmax]`.
 fn slab(n: &GpuNode, o: [f32; 3], inv: [f32; 3], tmin: f32, tmax: f32) -> Option<f32> {
+    slab_box(n.min, n.max, o, inv, tmin, tmax)
+}
+
+/// The same for a box given by its corners.
+fn slab_box(
+    min: [f32; 3],
+    max: [f32; 3],
+    o: [f32; 3],
+    inv: [f32; 3],
+    tmin: f32,
+    tmax: f32,
+) -> Option<f32> {
     let mut enter = tmin;
     let mut exit = tmax;
     for a in 0..3 {
-        let t0 = (n.min[a] - o[a]) * inv[a];
-        let t1 = (n.max[a] - o[a]) * inv[a];
+        let t0 = (min[a] - o[a]) * inv[a];
+        let t1 = (max[a] - o[a]) * inv[a];
         enter = enter.max(t0.min(t1));
         exit = exit.min(t0.max(t1));
     }
@@ -244,36 +258,46 @@ fn reference(e: &Entities, origin: [f32; 3], dir: [f32; 3]) -> Counts {
                 let o = transform(&inst.world_to_object, origin, 1.0);
                 let d = transform(&inst.world_to_object, dir, 0.0);
                 let oinv = safe_inverse(d);
+                // The mesh's quantised records (`rtc_bvh::quantized`), in the kernel's order.
+                let blas = QuantizedBvh::from_gpu_nodes(&nodes[inst.blas_root as usize..])
+                    .expect("a BLAS header");
                 let mut bstack = Vec::new();
-                let mut bnode = inst.blas_root;
+                let mut child = Child::decode(blas.header.root);
                 loop {
-                    let bn = &nodes[bnode as usize];
                     c.nodes += 1;
                     let mut next = None;
-                    if bn.is_leaf() {
-                        for k in 0..bn.count() {
-                            c.primitives += 1;
-                            let prim = (inst.triangle_offset + bn.a + k) as usize;
-                            let v = [tris[3 * prim], tris[3 * prim + 1], tris[3 * prim + 2]];
-                            if let Some(t) = triangle(v, o, d, 0.0, best) {
-                                best = t;
-                                c.t = t;
-                                c.object = inst.object as f32;
+                    match child {
+                        Child::Leaf { first, count } => {
+                            for k in 0..count {
+                                c.primitives += 1;
+                                let prim = (inst.triangle_offset + first + k) as usize;
+                                let v = [tris[3 * prim], tris[3 * prim + 1], tris[3 * prim + 2]];
+                                if let Some(t) = triangle(v, o, d, 0.0, best) {
+                                    best = t;
+                                    c.t = t;
+                                    c.object = inst.object as f32;
+                                }
                             }
                         }
-                    } else {
-                        next = children(
-                            nodes,
-                            inst.blas_root + bn.a,
-                            o,
-                            oinv,
-                            0.0,
-                            best,
-                            &mut bstack,
-                        );
+                        Child::Inner(record) => {
+                            let [(lb, l), (rb, r)] = blas.children(record);
+                            let hit = |b: rtc_bvh::Aabb| {
+                                slab_box(b.min.into(), b.max.into(), o, oinv, 0.0, best)
+                            };
+                            next = match (hit(lb), hit(rb)) {
+                                (Some(tl), Some(tr)) => {
+                                    let (near, far) = if tr < tl { (r, l) } else { (l, r) };
+                                    bstack.push(far);
+                                    Some(near)
+                                }
+                                (Some(_), None) => Some(l),
+                                (None, Some(_)) => Some(r),
+                                (None, None) => None,
+                            };
+                        }
                     }
                     match next.or_else(|| bstack.pop()) {
-                        Some(b) => bnode = b,
+                        Some(b) => child = b,
                         None => break,
                     }
                 }

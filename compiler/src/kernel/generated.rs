@@ -51,7 +51,11 @@ pub const INTRINSICS: &[(&str, &str, &str)] = &[
     ("load_attribute", "i: u32", "vec4u"),
     ("load_param", "i: u32", "u32"),
     ("load_texel", "i: u32", "u32"),
-    ("accumulate", "pixel: u32, value: vec4f, nonfinite: u32", ""),
+    (
+        "accumulate",
+        "pixel: u32, value: vec4f, nonfinite: u32, fresh: bool",
+        "",
+    ),
     ("rng_load", "", "u32"),
     ("rng_store", "state: u32", ""),
     ("spawn_reset", "", ""),

@@ -270,7 +270,7 @@ impl KernelHooks<'_> {
             "load_param" => self.load_binding(cx, fb, "params", Some(arg(0)?), span)?,
             "load_texel" => self.load_binding(cx, fb, "texels", Some(arg(0)?), span)?,
             "accumulate" => {
-                self.accumulate(cx, fb, arg(0)?, arg(1)?, arg(2)?, span)?;
+                self.accumulate(cx, fb, [arg(0)?, arg(1)?, arg(2)?, arg(3)?], span)?;
                 return Ok(None);
             }
             "write_bounds" => {
@@ -528,13 +528,14 @@ impl KernelHooks<'_> {
         Ok(f)
     }
 
+    /// `accumulate(pixel, value, nonfinite, fresh)`: `accum[pixel] += value`, or `= value` when
+    /// `fresh` (the pass is the first after the buffer was zeroed, so the old value, a cache miss
+    /// per pixel, need not be read); counter 0 `+= nonfinite`.
     fn accumulate(
         &mut self,
         cx: &mut LowerCx<'_>,
         fb: &mut FnBuilder,
-        pixel: Handle<Expression>,
-        value: Handle<Expression>,
-        nonfinite: Handle<Expression>,
+        [pixel, value, nonfinite, fresh]: [Handle<Expression>; 4],
         span: Span,
     ) -> Result<(), LowerError> {
         let program = self.program;
@@ -547,6 +548,10 @@ impl KernelHooks<'_> {
             },
             span,
         );
+        fb.push_block();
+        fb.store(p, value, span);
+        let first = fb.pop_block();
+        fb.push_block();
         let old = fb.load(p, span);
         let sum = fb.expr(
             Expression::Binary {
@@ -557,6 +562,15 @@ impl KernelHooks<'_> {
             span,
         );
         fb.store(p, sum, span);
+        let later = fb.pop_block();
+        fb.stmt(
+            Statement::If {
+                condition: fresh,
+                accept: first,
+                reject: later,
+            },
+            span,
+        );
         let counters = self
             .generated
             .binding(cx, program, abi_binding("counters")?)?;

@@ -1,6 +1,8 @@
-//! The one GPU node layout, [`GpuNode`], and [`flatten`], the only converter from the canonical
-//! [`Bvh`] to it. The traversal kernel (and the CPU reference in [`crate::traverse`]) reads
-//! exactly this layout.
+//! The GPU node layout, [`GpuNode`], and [`flatten`], the only converter from the canonical
+//! [`Bvh`] to it. The traversal kernel reads the scene-level BVH in exactly this layout (and the
+//! CPU reference in [`crate::traverse`] reads any BVH in it); a mesh's BVH is stored in the
+//! quantised layout of [`crate::quantized`], whose 32-byte records the node buffer holds as
+//! `GpuNode`s too.
 //!
 //! # Layout of the node buffer
 //!

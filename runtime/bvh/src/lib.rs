@@ -13,14 +13,16 @@
 //!  Bvh   canonical: nodes in depth-first sibling-pair order + primitive index list
 //!      │  stats, sah_cost, max_depth, validate, reorder
 //!      ▼
-//!  flatten(&Bvh) → Vec<GpuNode>        32-byte #[repr(C)] nodes, every bit documented
+//!  flatten(&Bvh) → Vec<GpuNode>        32-byte #[repr(C)] nodes, every bit documented (scene level)
+//!  quantized::quantize(&Bvh)           meshes: one 32-byte record per inner node, 16-bit child boxes
 //!      ▼
-//!  traverse::{closest_hit, any_hit}    CPU reference of the GPU kernel
+//!  traverse::{closest_hit, any_hit,    CPU reference of the GPU kernel, over either layout
+//!            closest_hit_quantized, any_hit_quantized}
 //! ```
 //!
 //! Building, converting and traversing are kept apart (STYLE rule 8): builders know nothing of
-//! the GPU layout, [`flatten`] is the only converter, and the traversal reads only
-//! [`GpuNode`]s. Builder settings exist only as named presets ([`BuildPreset::Fast`], the
+//! the GPU layouts, [`flatten`] and [`quantized::quantize`] are the only converters, and the
+//! traversal reads only the converted nodes. Builder settings exist only as named presets ([`BuildPreset::Fast`], the
 //! default, and [`BuildPreset::Quality`]).
 //!
 //! # Crate-wide invariants
@@ -57,6 +59,7 @@ pub mod bvh;
 pub mod gpu;
 pub mod input;
 pub mod preset;
+pub mod quantized;
 pub mod traverse;
 
 pub use aabb::Aabb;

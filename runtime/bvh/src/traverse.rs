@@ -1,4 +1,5 @@
-//! CPU reference traversal over the GPU node layout ([`GpuNode`]): closest hit and any hit,
+//! CPU reference traversal over the GPU node layouts ([`GpuNode`], and a mesh's
+//! [`QuantizedBvh`]): closest hit and any hit,
 //! a robust slab test and a watertight triangle test. It is written to be read next to the GPU
 //! kernel (one loop, a short explicit stack, no recursion), and the tests compare it with brute
 //! force.
@@ -32,6 +33,7 @@ use glam::{BVec3A, Vec3, Vec3A};
 
 use crate::bvh::MAX_DEPTH;
 use crate::gpu::GpuNode;
+use crate::quantized::{Child, QuantizedBvh};
 
 /// A ray segment: `origin + t * dir`, `t` in `[tmin, tmax]`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -306,6 +308,93 @@ where
             None => return best,
         }
     }
+}
+
+/// The same loop over a mesh's [`QuantizedBvh`]: children are tested from their parent's record,
+/// and a leaf is reached through its reference, with no record of its own.
+#[inline(always)]
+fn traverse_quantized<F>(
+    bvh: &QuantizedBvh,
+    ray: &Ray,
+    stop_at_first: bool,
+    mut leaf: F,
+) -> Option<Hit>
+where
+    F: FnMut(u32, &PreparedRay, f32) -> Option<Hit>,
+{
+    let r = PreparedRay::new(ray)?;
+    let mut best: Option<Hit> = None;
+    let mut t_best = r.tmax;
+    let mut stack = Stack::new();
+    let mut child = Child::decode(bvh.header.root);
+    loop {
+        match child {
+            Child::Leaf { first, count } => {
+                for slot in first..first + count {
+                    if let Some(h) = leaf(slot, &r, t_best) {
+                        if best.as_ref().is_none_or(|b| closer(&h, b)) {
+                            t_best = h.t;
+                            best = Some(h);
+                            if stop_at_first {
+                                return best;
+                            }
+                        }
+                    }
+                }
+            }
+            Child::Inner(record) => {
+                let [(lb, l), (rb, rr)] = bvh.children(record);
+                let hl = intersect_aabb(&r, lb.min, lb.max, t_best);
+                let hr = intersect_aabb(&r, rb.min, rb.max, t_best);
+                let next = match (hl, hr) {
+                    (Some(tl), Some(tr)) => {
+                        let (near, far, t_far) = if tl <= tr { (l, rr, tr) } else { (rr, l, tl) };
+                        stack.push(far.encode(), t_far);
+                        Some(near)
+                    }
+                    (Some(_), None) => Some(l),
+                    (None, Some(_)) => Some(rr),
+                    (None, None) => None,
+                };
+                if let Some(next) = next {
+                    child = next;
+                    continue;
+                }
+            }
+        }
+        match stack.pop_within(t_best) {
+            Some(next) => child = Child::decode(next),
+            None => return best,
+        }
+    }
+}
+
+/// [`closest_hit_with`] over a mesh's quantised BVH ([`crate::quantized`]).
+pub fn closest_hit_quantized_with<F>(bvh: &QuantizedBvh, ray: &Ray, intersect: F) -> Option<Hit>
+where
+    F: FnMut(u32, &PreparedRay, f32) -> Option<Hit>,
+{
+    traverse_quantized(bvh, ray, false, intersect)
+}
+
+/// [`closest_hit`] over a mesh's quantised BVH.
+pub fn closest_hit_quantized(
+    bvh: &QuantizedBvh,
+    prim_indices: &[u32],
+    tris: &[[Vec3; 3]],
+    ray: &Ray,
+) -> Option<Hit> {
+    traverse_quantized(bvh, ray, false, triangle_leaf(prim_indices, tris))
+}
+
+/// [`any_hit`] over a mesh's quantised BVH.
+pub fn any_hit_quantized(
+    bvh: &QuantizedBvh,
+    prim_indices: &[u32],
+    tris: &[[Vec3; 3]],
+    ray: &Ray,
+) -> bool {
+    traverse_quantized(bvh, ray, true, triangle_leaf(prim_indices, tris)).is_some()
 }
 
 /// Closest hit over arbitrary primitives: `intersect(slot, ray, t_max)` tests leaf slot `slot`

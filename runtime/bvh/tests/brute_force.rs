@@ -1,6 +1,7 @@
 //! The BVH traversal against brute force: for every preset and several meshes, random rays
 //! (including axis-aligned and grazing ones) must give exactly the brute-force closest hit
-//! (same `t`, primitive and barycentrics, bit for bit) and the same any-hit answer.
+//! (same `t`, primitive and barycentrics, bit for bit) and the same any-hit answer, in both node
+//! layouts (`flatten`'s and the quantised mesh layout).
 //!
 //! Invariant under test: traversal never loses a hit (conservative boxes, robust slab test,
 //! spatial-split fragments that cover their triangles) and the closest-hit tie rule makes the
@@ -9,7 +10,11 @@
 mod common;
 
 use glam::Vec3;
-use rtc_bvh::traverse::{any_hit, any_hit_brute_force, closest_hit, closest_hit_brute_force};
+use rtc_bvh::quantized::quantize;
+use rtc_bvh::traverse::{
+    any_hit, any_hit_brute_force, any_hit_quantized, closest_hit, closest_hit_brute_force,
+    closest_hit_quantized,
+};
 use rtc_bvh::{build, flatten, BuildInput, BuildPreset};
 
 fn check(name: &str, tris: &[[Vec3; 3]], n_rays: usize) {
@@ -28,6 +33,7 @@ fn check(name: &str, tris: &[[Vec3; 3]], n_rays: usize) {
         let bvh = build(BuildInput::Triangles(tris), preset);
         bvh.validate().unwrap();
         let nodes = flatten(&bvh);
+        let quantized = quantize(&bvh).unwrap();
         for (i, r) in rays.iter().enumerate() {
             let got = closest_hit(&nodes, bvh.prim_indices(), tris, r);
             assert_eq!(
@@ -38,6 +44,16 @@ fn check(name: &str, tris: &[[Vec3; 3]], n_rays: usize) {
             assert_eq!(
                 got_any, expected_any[i],
                 "{name} {preset:?}: any hit of ray {i} {r:?}"
+            );
+            let got = closest_hit_quantized(&quantized, bvh.prim_indices(), tris, r);
+            assert_eq!(
+                got, expected[i],
+                "{name} {preset:?}: quantised closest hit of ray {i} {r:?}"
+            );
+            let got_any = any_hit_quantized(&quantized, bvh.prim_indices(), tris, r);
+            assert_eq!(
+                got_any, expected_any[i],
+                "{name} {preset:?}: quantised any hit of ray {i} {r:?}"
             );
         }
     }

@@ -9,7 +9,8 @@ mod common;
 
 use glam::Vec3;
 use rtc_bvh::input::{sanitize_aabb, triangle_aabb};
-use rtc_bvh::traverse::{closest_hit, closest_hit_brute_force, Ray};
+use rtc_bvh::quantized::quantize;
+use rtc_bvh::traverse::{closest_hit, closest_hit_brute_force, closest_hit_quantized, Ray};
 use rtc_bvh::{build, flatten, Aabb, BuildInput, BuildPreset, Bvh, GpuNode, MAX_COORD};
 
 const NAN: f32 = f32::NAN;
@@ -65,10 +66,13 @@ fn check_triangles(name: &str, tris: &[[Vec3; 3]]) {
         let label = format!("{name} {preset:?}");
         check_bvh(&bvh, &accepted, &label);
         let nodes = flatten(&bvh);
+        let quantized = quantize(&bvh).unwrap();
         for r in &rays {
             let got = closest_hit(&nodes, bvh.prim_indices(), tris, r);
             let want = closest_hit_brute_force(&kept, r).filter(|h| accepted[h.prim as usize]);
             assert_eq!(got, want, "{label}: ray {r:?}");
+            let got = closest_hit_quantized(&quantized, bvh.prim_indices(), tris, r);
+            assert_eq!(got, want, "{label}: quantised, ray {r:?}");
         }
     }
 }

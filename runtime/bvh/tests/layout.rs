@@ -1,10 +1,12 @@
 //! The GPU node layout and the tree invariants: `GpuNode` against naga's WGSL layout rules,
 //! the bits written by `flatten`, the depth-first sibling-pair order, leaf ranges, primitive
-//! coverage, depth bounds, SAH arithmetic, layout validation, and build determinism.
+//! coverage, depth bounds, SAH arithmetic, layout validation, build determinism, and the
+//! quantised mesh layout (`rtc_bvh::quantized`).
 
 mod common;
 
 use glam::Vec3;
+use rtc_bvh::quantized::{quantize, Child, QuantizeError, QuantizedBvh, MAX_LEAF_COUNT};
 use rtc_bvh::{
     build, flatten, Aabb, BuildInput, BuildPreset, Bvh, BvhNode, GpuNode, LayoutError, NodeKind,
     SahCost, MAX_DEPTH,
@@ -283,5 +285,141 @@ fn builds_are_deterministic_across_thread_counts() {
         let b = four.install(|| build(BuildInput::Triangles(&tris), preset));
         assert_eq!(a.nodes(), b.nodes(), "{preset:?}");
         assert_eq!(a.prim_indices(), b.prim_indices(), "{preset:?}");
+    }
+}
+
+/// Checks the quantised mesh layout against the canonical tree: one record per inner node (record
+/// `r` for canonical pair `r`), references that name the same children, leaf ranges unchanged, and
+/// boxes that contain the exact ones whichever way the kernel rounds `origin + q * scale`.
+fn check_quantized(bvh: &Bvh, name: &str) {
+    let q = quantize(bvh).unwrap_or_else(|e| panic!("{name}: {e}"));
+    assert_eq!(q.to_gpu_nodes().len(), q.nodes.len() + 1);
+    assert_eq!(
+        QuantizedBvh::from_gpu_nodes(&q.to_gpu_nodes()).as_ref(),
+        Some(&q)
+    );
+    let nodes = bvh.nodes();
+    let inner = nodes.iter().filter(|n| !n.is_leaf()).count();
+    assert_eq!(q.nodes.len(), inner, "{name}: one record per inner node");
+    // Walk both trees together.
+    let mut stack = vec![(0usize, Child::decode(q.header.root))];
+    let mut next_record = 1;
+    let h = q.header;
+    while let Some((i, child)) = stack.pop() {
+        match (nodes[i].kind(), child) {
+            (NodeKind::Leaf { first, count }, Child::Leaf { first: f, count: c }) => {
+                assert_eq!((first, count), (f, c), "{name}: leaf {i}");
+            }
+            (NodeKind::Inner { left }, Child::Inner(record)) => {
+                assert_eq!(
+                    record,
+                    left.div_ceil(2),
+                    "{name}: record r is canonical pair r"
+                );
+                next_record += 1;
+                let n = q.node(record);
+                // Right first, so the left subtree is walked first (pre-order).
+                for (k, (packed, bits)) in [(n.left_box, n.left), (n.right_box, n.right)]
+                    .into_iter()
+                    .enumerate()
+                    .rev()
+                {
+                    let exact = nodes[left as usize + k].aabb();
+                    let lo = [packed[0] & 0xffff, packed[0] >> 16, packed[1] & 0xffff];
+                    let hi = [packed[1] >> 16, packed[2] & 0xffff, packed[2] >> 16];
+                    for a in 0..3 {
+                        let point = |b: u32| {
+                            let twice = h.origin[a] + b as f32 * h.scale[a];
+                            let fused = (b as f32).mul_add(h.scale[a], h.origin[a]);
+                            (twice.min(fused), twice.max(fused))
+                        };
+                        assert!(
+                            point(lo[a]).1 <= exact.min[a],
+                            "{name}: low bound, axis {a}"
+                        );
+                        assert!(
+                            point(hi[a]).0 >= exact.max[a],
+                            "{name}: high bound, axis {a}"
+                        );
+                        assert!(lo[a] <= hi[a]);
+                    }
+                    stack.push((left as usize + k, Child::decode(bits)));
+                }
+            }
+            (kind, child) => panic!("{name}: node {i} is {kind:?} but its reference is {child:?}"),
+        }
+    }
+    assert_eq!(next_record as usize, inner + 1);
+}
+
+#[test]
+fn quantized_mesh_layout_keeps_the_tree_and_conservative_boxes() {
+    let offset = |tris: Vec<[Vec3; 3]>, by: Vec3, scale: f32| -> Vec<[Vec3; 3]> {
+        tris.into_iter()
+            .map(|t| t.map(|v| v * scale + by))
+            .collect()
+    };
+    let scenes = [
+        ("sphere", common::sphere(Vec3::ZERO, 1.0, 16, 24)),
+        ("soup", common::soup(5000, 1)),
+        ("thesis-like", common::thesis_like()),
+        // Far from the origin and small: bounds are coarser than one rounding step of the origin.
+        (
+            "far and small",
+            offset(
+                common::sphere(Vec3::ZERO, 1.0, 8, 12),
+                Vec3::splat(1e6),
+                1e-3,
+            ),
+        ),
+        (
+            "tiny",
+            offset(common::sphere(Vec3::ZERO, 1.0, 8, 12), Vec3::ZERO, 1e-30),
+        ),
+        ("huge", offset(common::soup(500, 3), Vec3::ZERO, 1e15)),
+        (
+            "flat",
+            vec![
+                [Vec3::ZERO, Vec3::X, Vec3::Z],
+                [Vec3::X, Vec3::X + Vec3::Z, Vec3::Z],
+            ],
+        ),
+    ];
+    for (name, tris) in &scenes {
+        for preset in BuildPreset::ALL {
+            let bvh = build(BuildInput::Triangles(tris), preset);
+            check_quantized(&bvh, &format!("{name} {preset:?}"));
+        }
+    }
+    let empty = quantize(&build(BuildInput::Triangles(&[]), BuildPreset::Fast)).unwrap();
+    assert!(empty.nodes.is_empty());
+    assert_eq!(
+        Child::decode(empty.header.root),
+        Child::Leaf { first: 0, count: 0 }
+    );
+}
+
+#[test]
+fn quantized_layout_rejects_leaves_it_cannot_encode() {
+    let tris = common::soup(64, 5);
+    let mut params = BuildPreset::Fast.params();
+    params.max_leaf_size = 64;
+    params.cost = SahCost {
+        traversal: 1e6,
+        intersection: 1.0,
+    };
+    let bvh = rtc_bvh::build_with_params(BuildInput::Triangles(&tris), &params);
+    let biggest = bvh.stats().max_leaf_size;
+    if biggest > MAX_LEAF_COUNT {
+        let e = quantize(&bvh).unwrap_err();
+        assert_eq!(
+            e,
+            QuantizeError::LeafTooLarge {
+                count: biggest as u32
+            }
+        );
+        assert!(e.to_string().contains("at most 15"), "{e}");
+    } else {
+        panic!("the build should make one large leaf, made {biggest}");
     }
 }

@@ -5,8 +5,9 @@
 //!    their meshes, images, and the objects, lights and camera they bring), and every
 //!    `mesh`/`texture` value in any instance's fields;
 //! 2. check the camera (the scene's, else the first model's);
-//! 3. build one BLAS per distinct mesh (counted in [`EntityStats::blas_builds`]), flatten it into
-//!    `nodes`, and encode its triangle slots (`encode.rs`);
+//! 3. build one BLAS per distinct mesh (counted in [`EntityStats::blas_builds`]), quantise it into
+//!    `nodes` (the mesh node layout of `rtc_bvh::quantized`: a header, then one record per inner
+//!    node), and encode its triangle slots (`encode.rs`);
 //! 4. concatenate the textures' texels;
 //! 5. write `params`: mesh and texture records, then every instance, then the light table;
 //! 6. validate the objects' transforms;
@@ -26,6 +27,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Instant;
 
 use glam::{Mat4, Vec3, Vec4};
+use rtc_bvh::quantized::quantize;
 use rtc_bvh::{build, build_with_params, flatten, Aabb, BuildInput, BuildPreset, GpuNode};
 use rtc_compiler::link::Linked;
 use rtc_compiler::sema::hir::{
@@ -57,7 +59,7 @@ pub struct TypedOffset {
     pub offset: u32,
 }
 
-/// A distinct mesh with its BLAS (flattened into [`Entities::nodes`]).
+/// A distinct mesh with its BLAS (quantised into [`Entities::nodes`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct MeshEntity {
     /// What the scene named (a path, `cube_mesh()`, …).
@@ -69,9 +71,9 @@ pub struct MeshEntity {
     /// Triangle slots in `triangles` (more than `triangles` with spatial splits, fewer if some were
     /// rejected as non-finite).
     pub slots: u32,
-    /// Index of the BLAS root in `nodes`.
+    /// Index of the BLAS's header record in `nodes` (`rtc_bvh::quantized`).
     pub node_base: u32,
-    /// Nodes of the BLAS.
+    /// Records of the BLAS (its header and one per inner node).
     pub node_count: u32,
     /// First triangle slot.
     pub triangle_base: u32,
@@ -370,7 +372,10 @@ impl Entities {
             stats.blas_builds += 1;
             let node_base = to_u32("BVH nodes", nodes.len())?;
             let triangle_base = to_u32("triangle slots", triangles.len() / 3)?;
-            let flat = flatten(&bvh);
+            let records = quantize(&bvh).map_err(|source| SceneError::MeshLayout {
+                mesh: key.describe(),
+                source,
+            })?;
             let depth = bvh.max_depth();
             stats.max_blas_depth = stats.max_blas_depth.max(depth);
             stats.triangles += data.indices.len() as u64;
@@ -380,12 +385,12 @@ impl Entities {
                 triangles: to_u32("triangles", data.indices.len())?,
                 slots: to_u32("triangle slots", bvh.prim_indices().len())?,
                 node_base,
-                node_count: to_u32("BVH nodes", flat.len())?,
+                node_count: to_u32("BVH nodes", records.record_count())?,
                 triangle_base,
                 bounds: bvh.root_aabb(),
                 depth,
             });
-            nodes.extend_from_slice(&flat);
+            records.append_gpu_nodes(&mut nodes);
             encode_mesh(data, &bvh, &mut triangles, &mut attributes);
         }
         let blas_nodes = to_u32("BVH nodes", nodes.len())?;

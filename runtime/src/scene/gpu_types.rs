@@ -154,7 +154,7 @@ pub struct FrameUniforms {
 /// | 100 | `geometry_offset` | word offset of the custom geometry instance in `params` (0 for meshes) |
 /// | 104 | `material_type` | the material type's id |
 /// | 108 | `material_offset` | word offset of the material instance in `params` |
-/// | 112 | `blas_root` | index in `nodes` of the mesh BVH's root (0 for custom geometry) |
+/// | 112 | `blas_root` | index in `nodes` of the mesh BVH's header record (`rtc_bvh::quantized`; 0 for custom geometry) |
 /// | 116 | `triangle_offset` | first triangle slot of the mesh in `triangles` (0 for custom geometry) |
 /// | 120 | `flags` | [`GpuInstance::FLAG_ANY_HIT`], [`GpuInstance::FLAG_SECONDARY_RAYS`], [`GpuInstance::FLAG_MEDIUM`] |
 /// | 124 | `object` | the object's index in the scene (scene `object` entries in order, then model instances) |

@@ -37,7 +37,7 @@
 //!   `tlas.prim_indices()[s]`. Fields: world-to-object and object-to-world affine rows (translation
 //!   in `w`), `geometry_type` ([`GpuInstance::MESH_GEOMETRY`] for a mesh, else the custom geometry
 //!   type's id), `geometry_offset`, `material_type`, `material_offset`, `blas_root` (the mesh BVH's
-//!   base), `triangle_offset` (the mesh's first triangle slot), `flags` (1: `@any_hit`, 2:
+//!   header record: meshes use the quantised layout of `rtc_bvh::quantized`), `triangle_offset` (the mesh's first triangle slot), `flags` (1: `@any_hit`, 2:
 //!   `@secondary_rays`, 4: `@medium`), `object` (scene `object` entries in order, then model
 //!   instances). An object whose world box is empty or not finite (an empty mesh, invalid custom
 //!   bounds) is left out of the TLAS and therefore of this array; `object` keeps its index.
@@ -186,6 +186,14 @@ pub enum SceneError {
         what: &'static str,
         /// How many.
         count: u64,
+    },
+    /// A mesh's BVH does not fit the quantised mesh node layout (`rtc_bvh::quantized`).
+    #[error("mesh {mesh}: {source}")]
+    MeshLayout {
+        /// The mesh's source.
+        mesh: String,
+        /// The layout limit it exceeds.
+        source: rtc_bvh::quantized::QuantizeError,
     },
     /// A buffer could not be created or written (including data above a device limit).
     #[error(transparent)]

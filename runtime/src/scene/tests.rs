@@ -7,8 +7,11 @@
 //! the kernel does, and must find the object and triangle a ray was aimed at.
 
 use glam::{Mat4, Vec3, Vec4};
-use rtc_bvh::traverse::{closest_hit_with, intersect_triangle, Hit, Ray};
-use rtc_bvh::{Aabb, BuildPreset};
+use rtc_bvh::quantized::QuantizedBvh;
+use rtc_bvh::traverse::{
+    closest_hit_quantized_with, closest_hit_with, intersect_triangle, Hit, Ray,
+};
+use rtc_bvh::{Aabb, BuildPreset, GpuNode};
 use rtc_compiler::driver::{check_text, Options};
 use rtc_compiler::layout;
 use rtc_compiler::link::registry::Registry;
@@ -242,8 +245,16 @@ scene s {{
             w[rec..rec + 4],
             [me.node_base, me.triangle_base, me.slots, 0]
         );
-        let root = &e.nodes()[me.node_base as usize];
-        assert_eq!(root.aabb(), me.bounds, "node_base is the BLAS root");
+        // node_base is the BLAS's header: its quantisation frame starts at the mesh box's
+        // minimum and covers its maximum.
+        let records = &e.nodes()[me.node_base as usize..][..me.node_count as usize];
+        let blas = QuantizedBvh::from_gpu_nodes(records).expect("header");
+        assert_eq!(Vec3::from(blas.header.origin), Vec3::from(me.bounds.min));
+        assert!(blas
+            .header
+            .point([0xffff; 3])
+            .cmpge(Vec3::from(me.bounds.max))
+            .all());
         // Texture record: [texel_base, width, height, format]; solid textures are rgba16f.
         let rec = w[m + tex_word] as usize;
         let te = &e.textures()[texture];
@@ -291,8 +302,14 @@ fn trace(e: &Entities, origin: Vec3, dir: Vec3) -> Option<(u32, u32, f32)> {
             tmin: 0.0,
             tmax: t_max,
         };
-        let blas = &nodes[inst.blas_root as usize..];
-        let h = closest_hit_with(blas, &ray, |s, r, tm| {
+        let mesh = e
+            .meshes()
+            .iter()
+            .find(|m| m.node_base == inst.blas_root)
+            .expect("the instance's mesh");
+        let records = &nodes[inst.blas_root as usize..][..mesh.node_count as usize];
+        let blas = QuantizedBvh::from_gpu_nodes(records).expect("header");
+        let h = closest_hit_quantized_with(&blas, &ray, |s, r, tm| {
             let k = (inst.triangle_offset + s) as usize * 3;
             let v = |i: usize| Vec3::from_slice(&tris[k + i][..3]);
             intersect_triangle(r, &[v(0), v(1), v(2)], tm).map(|(t, u, v)| Hit {
@@ -430,9 +447,10 @@ fn moving_an_object_rebuilds_only_the_tlas() {
     assert!(e.refresh().expect("refresh"));
     assert_eq!(e.stats().blas_builds, builds, "no BLAS rebuilt");
     assert_eq!(e.stats().tlas_builds, tlas_builds + 1);
+    // Compared as bits: quantised records hold integers in their float fields.
     assert_eq!(
-        &e.nodes()[..e.tlas_root() as usize],
-        &blas[..],
+        bytemuck::cast_slice::<GpuNode, u32>(&e.nodes()[..e.tlas_root() as usize]),
+        bytemuck::cast_slice::<GpuNode, u32>(&blas),
         "BLASes untouched"
     );
     let after = e.versions();

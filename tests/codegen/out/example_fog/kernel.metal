@@ -121,7 +121,7 @@ struct Fog {
     metal::packed_float3 albedo;
     uint lights_inside;
 };
-struct type_13 {
+struct type_14 {
     uint inner[128];
 };
 struct LightSample {
@@ -140,7 +140,7 @@ struct PointLight {
 struct Lambert {
     metal::float3 albedo;
 };
-struct type_14 {
+struct type_15 {
     metal::float3 inner[1];
 };
 struct Frame {
@@ -149,16 +149,16 @@ struct Frame {
     uint slot;
     char _pad3[12];
     metal::float3 sum;
-    type_14 dirs;
-    type_14 weights;
+    type_15 dirs;
+    type_15 weights;
     uint count;
     uint next;
     char _pad8[8];
 };
-struct type_15 {
+struct type_16 {
     Frame inner[3];
 };
-typedef metal::atomic_uint type_18[1];
+typedef metal::atomic_uint type_19[1];
 constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint SCATTER = 1000003u;
@@ -166,12 +166,16 @@ constant uint RAY_CAMERA = 0u;
 constant uint NO_HIT = 4294967295u;
 constant bool HAS_MEDIA = true;
 constant uint MESH_GEOMETRY = 4294967295u;
-constant uint LEAF_BIT = 2147483648u;
+constant uint MESH_LEAF_BIT = 2147483648u;
+constant uint MESH_COUNT_SHIFT = 27u;
+constant uint MESH_COUNT_MASK = 15u;
+constant uint MESH_FIRST_MASK = 134217727u;
 constant uint FLAG_ANY_HIT = 1u;
 constant uint RAY_SHADOW = 2u;
 constant uint BLAS_STACK = 64u;
 constant uint TLAS_STACK = 64u;
 constant bool HAS_SECONDARY_RAYS = true;
+constant uint LEAF_BIT = 2147483648u;
 constant bool HAS_BACKGROUND = false;
 constant uint FLAG_MEDIUM = 4u;
 constant float PI = 3.1415927;
@@ -463,8 +467,8 @@ metal::float3 point_to_world(
     GpuInstance inst_1,
     metal::float3 p
 ) {
-    metal::float4 q = metal::float4(p, 1.0);
-    return metal::float3(metal::dot(inst_1.object_to_world_0_, q), metal::dot(inst_1.object_to_world_1_, q), metal::dot(inst_1.object_to_world_2_, q));
+    metal::float4 q_1 = metal::float4(p, 1.0);
+    return metal::float3(metal::dot(inst_1.object_to_world_0_, q_1), metal::dot(inst_1.object_to_world_1_, q_1), metal::dot(inst_1.object_to_world_2_, q_1));
 }
 
 metal::float3 decode_octahedral(
@@ -601,17 +605,37 @@ bool accept(
     return true;
 }
 
+metal::uint3 mesh_box_lo(
+    metal::uint3 p_1
+) {
+    return metal::uint3(p_1.x & 65535u, p_1.x >> 16u, p_1.y & 65535u);
+}
+
+metal::float3 mesh_point(
+    metal::float3 origin,
+    metal::float3 scale,
+    metal::uint3 q
+) {
+    return origin + (static_cast<metal::float3>(q) * scale);
+}
+
+metal::uint3 mesh_box_hi(
+    metal::uint3 p_2
+) {
+    return metal::uint3(p_2.y >> 16u, p_2.z & 65535u, p_2.z >> 16u);
+}
+
 float slab(
     metal::float3 lo,
     metal::float3 hi,
-    metal::float3 origin,
+    metal::float3 origin_1,
     metal::float3 inv_dir,
     float tmin_1,
     float tmax_2,
     thread uint& F32_INF
 ) {
-    metal::float3 t0_ = (lo - origin) * inv_dir;
-    metal::float3 t1_ = (hi - origin) * inv_dir;
+    metal::float3 t0_ = (lo - origin_1) * inv_dir;
+    metal::float3 t1_ = (hi - origin_1) * inv_dir;
     metal::float3 near_2 = metal::min(t0_, t1_);
     metal::float3 far_2 = metal::max(t0_, t1_);
     float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, tmin_1));
@@ -626,7 +650,7 @@ float slab(
 metal::uint2 pop(
     uint base,
     uint sp,
-    thread type_13& traversal_stack
+    thread type_14& traversal_stack
 ) {
     if (sp == 0u) {
         return metal::uint2(NO_HIT, 0u);
@@ -648,12 +672,12 @@ Candidate intersect_mesh(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Candidate best = {};
     uint sp_1 = {};
-    uint node = {};
+    uint child = {};
     uint k = {};
     uint near = {};
     uint far = {};
@@ -661,16 +685,21 @@ Candidate intersect_mesh(
     metal::float3 _e8 = safe_inverse(ray_6.dir);
     TriangleRay _e9 = prepare_triangle_ray(ray_6);
     uint base_1 = inst_4.blas_root;
+    GpuNode header = nodes[base_1];
+    metal::float3 origin_2 = header.min;
+    metal::float3 scale_1 = header.max;
     sp_1 = 0u;
-    node = base_1;
+    child = header.a;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e14 = node;
-        GpuNode n_5 = nodes[_e14];
-        if ((n_5.b & LEAF_BIT) != 0u) {
-            uint count = n_5.b & ~(LEAF_BIT);
+        uint _e20 = child;
+        if ((_e20 & MESH_LEAF_BIT) != 0u) {
+            uint _e25 = child;
+            uint count = (_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK;
+            uint _e32 = child;
+            uint first = _e32 & MESH_FIRST_MASK;
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u);
             bool loop_init = true;
@@ -678,82 +707,90 @@ Candidate intersect_mesh(
                 if (metal::all(loop_bound_1 == uint2(0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e52 = k;
-                    k = _e52 + 1u;
+                    uint _e59 = k;
+                    k = _e59 + 1u;
                 }
                 loop_init = false;
-                uint _e29 = k;
-                if (_e29 >= count) {
+                uint _e37 = k;
+                if (_e37 >= count) {
                     break;
                 }
-                uint _e34 = k;
-                uint prim = (inst_4.triangle_offset + n_5.a) + _e34;
-                float _e38 = best.t;
-                metal::float3 _e39 = hit_triangle(_e9, prim, ray_6.tmin, _e38, F32_INF, triangles, _buffer_sizes);
-                uint _e42 = F32_INF;
-                if (_e39.x < as_type<float>(_e42)) {
-                    Candidate c_5 = Candidate {_e39.x, slot_2, prim, {}, _e39.yz, {}, metal::float3(0.0)};
-                    bool _e50 = accept(inst_4, world_ray, c_5, params, instances, triangles, attributes, _buffer_sizes);
-                    if (_e50) {
+                uint _e41 = k;
+                uint prim = (inst_4.triangle_offset + first) + _e41;
+                float _e45 = best.t;
+                metal::float3 _e46 = hit_triangle(_e9, prim, ray_6.tmin, _e45, F32_INF, triangles, _buffer_sizes);
+                uint _e49 = F32_INF;
+                if (_e46.x < as_type<float>(_e49)) {
+                    Candidate c_5 = Candidate {_e46.x, slot_2, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e57 = accept(inst_4, world_ray, c_5, params, instances, triangles, attributes, _buffer_sizes);
+                    if (_e57) {
                         best = c_5;
                         if (shadow) {
-                            Candidate _e51 = best;
-                            return _e51;
+                            Candidate _e58 = best;
+                            return _e58;
                         }
                     }
                 }
             }
         } else {
-            uint left = base_1 + n_5.a;
-            uint right = left + 1u;
-            GpuNode l_1 = nodes[left];
-            GpuNode rr = nodes[right];
-            float _e70 = best.t;
-            float _e71 = slab(l_1.min, l_1.max, ray_6.origin, _e8, ray_6.tmin, _e70, F32_INF);
-            float _e77 = best.t;
-            float _e78 = slab(rr.min, rr.max, ray_6.origin, _e8, ray_6.tmin, _e77, F32_INF);
-            uint _e80 = F32_INF;
-            uint _e84 = F32_INF;
-            if ((_e71 < as_type<float>(_e80)) && (_e78 < as_type<float>(_e84))) {
-                near = left;
-                far = right;
-                if ((_e78 < _e71) != shadow) {
-                    near = right;
-                    far = left;
+            uint _e62 = child;
+            GpuNode n_5 = nodes[base_1 + _e62];
+            metal::uint3 lq = as_type<metal::uint3>(n_5.min);
+            metal::uint3 rq = as_type<metal::uint3>(n_5.max);
+            metal::uint3 _e71 = mesh_box_lo(lq);
+            metal::float3 _e72 = mesh_point(origin_2, scale_1, _e71);
+            metal::uint3 _e73 = mesh_box_hi(lq);
+            metal::float3 _e74 = mesh_point(origin_2, scale_1, _e73);
+            float _e78 = best.t;
+            float _e79 = slab(_e72, _e74, ray_6.origin, _e8, ray_6.tmin, _e78, F32_INF);
+            metal::uint3 _e80 = mesh_box_lo(rq);
+            metal::float3 _e81 = mesh_point(origin_2, scale_1, _e80);
+            metal::uint3 _e82 = mesh_box_hi(rq);
+            metal::float3 _e83 = mesh_point(origin_2, scale_1, _e82);
+            float _e87 = best.t;
+            float _e88 = slab(_e81, _e83, ray_6.origin, _e8, ray_6.tmin, _e87, F32_INF);
+            uint _e90 = F32_INF;
+            uint _e94 = F32_INF;
+            if ((_e79 < as_type<float>(_e90)) && (_e88 < as_type<float>(_e94))) {
+                near = n_5.a;
+                far = n_5.b;
+                if ((_e88 < _e79) != shadow) {
+                    near = n_5.b;
+                    far = n_5.a;
                 }
-                uint _e92 = sp_1;
-                if (_e92 < BLAS_STACK) {
-                    uint _e96 = sp_1;
-                    uint _e98 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e96, 127u)] = _e98;
-                    uint _e103 = sp_1;
-                    sp_1 = _e103 + 1u;
+                uint _e106 = sp_1;
+                if (_e106 < BLAS_STACK) {
+                    uint _e110 = sp_1;
+                    uint _e112 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e110, 127u)] = _e112;
+                    uint _e117 = sp_1;
+                    sp_1 = _e117 + 1u;
                 }
-                uint _e106 = near;
-                node = _e106;
+                uint _e120 = near;
+                child = _e120;
                 continue;
             }
-            uint _e108 = F32_INF;
-            if (_e71 < as_type<float>(_e108)) {
-                node = left;
+            uint _e122 = F32_INF;
+            if (_e79 < as_type<float>(_e122)) {
+                child = n_5.a;
                 continue;
             }
-            uint _e112 = F32_INF;
-            if (_e78 < as_type<float>(_e112)) {
-                node = right;
+            uint _e127 = F32_INF;
+            if (_e88 < as_type<float>(_e127)) {
+                child = n_5.b;
                 continue;
             }
         }
-        uint _e116 = sp_1;
-        metal::uint2 _e117 = pop(TLAS_STACK, _e116, traversal_stack);
-        if (_e117.x == NO_HIT) {
+        uint _e132 = sp_1;
+        metal::uint2 _e133 = pop(TLAS_STACK, _e132, traversal_stack);
+        if (_e133.x == NO_HIT) {
             break;
         }
-        node = _e117.x;
-        sp_1 = _e117.y;
+        child = _e133.x;
+        sp_1 = _e133.y;
     }
-    Candidate _e123 = best;
-    return _e123;
+    Candidate _e139 = best;
+    return _e139;
 }
 
 Candidate intersect_object(
@@ -767,7 +804,7 @@ Candidate intersect_object(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray r_2 = {};
@@ -784,7 +821,7 @@ Candidate intersect_object(
 }
 
 uint medium_at(
-    metal::float3 p_1,
+    metal::float3 p_3,
     uint exclude,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -793,7 +830,7 @@ uint medium_at(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint inside = {};
@@ -805,7 +842,7 @@ uint medium_at(
     FrameUniforms frame_1 = frame;
     metal::float3 _e12 = normalize_vec3f(metal::float3(0.5773, 0.5774, 0.5775));
     uint _e14 = F32_INF;
-    Ray probe = Ray {p_1, 0.0, _e12, as_type<float>(_e14), 0u, 0u, 0u};
+    Ray probe = Ray {p_3, 0.0, _e12, as_type<float>(_e14), 0u, 0u, 0u};
     inside = 0u;
     uint _e23 = F32_INF;
     nearest = as_type<float>(_e23);
@@ -855,13 +892,13 @@ Candidate intersect_scene(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Candidate best_2 = {};
     uint sp_2 = {};
-    uint node_1 = {};
+    uint node = {};
     uint near_1 = {};
     uint far_1 = {};
     uint _e3 = ray_count;
@@ -875,8 +912,8 @@ Candidate intersect_scene(
     }
     metal::float3 _e16 = safe_inverse(ray_8.dir);
     sp_2 = 0u;
-    node_1 = frame_2.tlas_root;
-    uint _e21 = node_1;
+    node = frame_2.tlas_root;
+    uint _e21 = node;
     GpuNode root = nodes[_e21];
     float _e30 = best_2.t;
     float _e31 = slab(root.min, root.max, ray_8.origin, _e16, ray_8.tmin, _e30, F32_INF);
@@ -889,7 +926,7 @@ Candidate intersect_scene(
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e37 = node_1;
+        uint _e37 = node;
         GpuNode n_6 = nodes[_e37];
         if ((n_6.b & LEAF_BIT) != 0u) {
             if ((n_6.b & ~(LEAF_BIT)) != 0u) {
@@ -903,22 +940,22 @@ Candidate intersect_scene(
                 }
             }
         } else {
-            uint left_1 = frame_2.tlas_root + n_6.a;
-            uint right_1 = left_1 + 1u;
-            GpuNode l_2 = nodes[left_1];
-            GpuNode rr_1 = nodes[right_1];
+            uint left = frame_2.tlas_root + n_6.a;
+            uint right = left + 1u;
+            GpuNode l_1 = nodes[left];
+            GpuNode rr = nodes[right];
             float _e77 = best_2.t;
-            float _e78 = slab(l_2.min, l_2.max, ray_8.origin, _e16, ray_8.tmin, _e77, F32_INF);
+            float _e78 = slab(l_1.min, l_1.max, ray_8.origin, _e16, ray_8.tmin, _e77, F32_INF);
             float _e84 = best_2.t;
-            float _e85 = slab(rr_1.min, rr_1.max, ray_8.origin, _e16, ray_8.tmin, _e84, F32_INF);
+            float _e85 = slab(rr.min, rr.max, ray_8.origin, _e16, ray_8.tmin, _e84, F32_INF);
             uint _e87 = F32_INF;
             uint _e91 = F32_INF;
             if ((_e78 < as_type<float>(_e87)) && (_e85 < as_type<float>(_e91))) {
-                near_1 = left_1;
-                far_1 = right_1;
+                near_1 = left;
+                far_1 = right;
                 if (_e85 < _e78) {
-                    near_1 = right_1;
-                    far_1 = left_1;
+                    near_1 = right;
+                    far_1 = left;
                 }
                 uint _e98 = sp_2;
                 if (_e98 < TLAS_STACK) {
@@ -929,17 +966,17 @@ Candidate intersect_scene(
                     sp_2 = _e107 + 1u;
                 }
                 uint _e110 = near_1;
-                node_1 = _e110;
+                node = _e110;
                 continue;
             }
             uint _e112 = F32_INF;
             if (_e78 < as_type<float>(_e112)) {
-                node_1 = left_1;
+                node = left;
                 continue;
             }
             uint _e116 = F32_INF;
             if (_e85 < as_type<float>(_e116)) {
-                node_1 = right_1;
+                node = right;
                 continue;
             }
         }
@@ -948,7 +985,7 @@ Candidate intersect_scene(
         if (_e121.x == NO_HIT) {
             break;
         }
-        node_1 = _e121.x;
+        node = _e121.x;
         sp_2 = _e121.y;
     }
     Candidate _e127 = best_2;
@@ -1000,7 +1037,7 @@ PointLight load_PointLight(
 }
 
 metal::float3 offset_origin(
-    metal::float3 p_2,
+    metal::float3 p_4,
     metal::float3 n_2,
     constant FrameUniforms& frame,
     device type_9 const& nodes,
@@ -1008,9 +1045,9 @@ metal::float3 offset_origin(
 ) {
     FrameUniforms _e3 = frame;
     GpuNode root_1 = nodes[_e3.tlas_root];
-    metal::float3 a_5 = metal::max(metal::abs(p_2), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
+    metal::float3 a_5 = metal::max(metal::abs(p_4), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
     float m_6 = metal::max(metal::max(a_5.x, a_5.y), a_5.z);
-    return p_2 + (n_2 * metal::float3(m_6 * (1.0 / 65536.0)));
+    return p_4 + (n_2 * metal::float3(m_6 * (1.0 / 65536.0)));
 }
 
 float shadow_query(
@@ -1025,7 +1062,7 @@ float shadow_query(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1054,7 +1091,7 @@ LightSample point_light(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1084,7 +1121,7 @@ LightSample dispatch_light(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1104,7 +1141,7 @@ LightSample sample_light_query(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1140,7 +1177,7 @@ metal::float3 fog_inscatter(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1192,7 +1229,7 @@ metal::float3 fog_medium(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1244,7 +1281,7 @@ metal::float3 dispatch_medium(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1265,7 +1302,7 @@ metal::float3 through_medium(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1314,7 +1351,7 @@ metal::float3 lambert_shade(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1360,7 +1397,7 @@ metal::float3 dispatch_closest_hit(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1392,7 +1429,7 @@ metal::float3 shade_direct(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1405,8 +1442,8 @@ metal::float3 shade_direct(
 void rt_spawn(
     metal::float3 dir_2,
     metal::float3 weight,
-    thread type_14& spawn_dirs,
-    thread type_14& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count
 ) {
     uint _e3 = spawn_count;
@@ -1421,8 +1458,8 @@ void fog_rays(
     Fog m_5,
     Ray ray_18,
     Hit hit_6,
-    thread type_14& spawn_dirs,
-    thread type_14& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count
 ) {
     rt_spawn(ray_18.dir, metal::float3(1.0), spawn_dirs, spawn_weights, spawn_count);
@@ -1435,8 +1472,8 @@ void dispatch_secondary_rays(
     Ray ray_19,
     Hit hit_7,
     device type_4 const& params,
-    thread type_14& spawn_dirs,
-    thread type_14& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1474,14 +1511,14 @@ metal::float3 trace(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     thread uint& ray_count,
-    thread type_14& spawn_dirs,
-    thread type_14& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    type_15 stack = {};
+    type_16 stack = {};
     uint depth = {};
     Ray ray_20 = {};
     metal::float3 value = {};
@@ -1504,7 +1541,7 @@ metal::float3 trace(
         metal::float3 _e15 = through_medium(camera_ray, _e4.t, _e14, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
         return _e15;
     }
-    stack = type_15 {};
+    stack = type_16 {};
     depth = 0u;
     ray_20 = camera_ray;
     value = metal::float3(0.0);
@@ -1540,7 +1577,7 @@ metal::float3 trace(
                     uint n_8 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
                     if (n_8 > 0u) {
                         Ray _e77 = ray_20;
-                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_14 {}, type_14 {}, n_8, 0u};
+                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_8, 0u};
                         i_5 = 0u;
                         uint2 loop_bound_7 = uint2(4294967295u);
                         bool loop_init_4 = true;
@@ -1594,9 +1631,9 @@ metal::float3 trace(
             uint _e137 = depth;
             uint top = _e137 - 1u;
             uint _e144 = stack.inner[metal::min(top, 2u)].next;
-            uint child = _e144 - 1u;
+            uint child_1 = _e144 - 1u;
             metal::float3 _e151 = stack.inner[metal::min(top, 2u)].sum;
-            metal::float3 _e159 = stack.inner[metal::min(top, 2u)].weights.inner[metal::min(child, 0u)];
+            metal::float3 _e159 = stack.inner[metal::min(top, 2u)].weights.inner[metal::min(child_1, 0u)];
             metal::float3 _e160 = value;
             stack.inner[metal::min(top, 2u)].sum = _e151 + (_e159 * _e160);
             have_value = false;
@@ -1701,13 +1738,13 @@ void render_pixel(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     thread uint& ray_count,
-    thread type_14& spawn_dirs,
-    thread type_14& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count,
     device type_10& accum,
-    device type_18& counters,
+    device type_19& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 sum = {};
@@ -1759,14 +1796,19 @@ void render_pixel(
         }
     }
     metal::float3 _e55 = sum;
+    metal::float4 _e58 = metal::float4(_e55, static_cast<float>(frame_5.samples_per_pass));
     uint _e59 = bad;
-    metal::float4 _e62 = accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x];
-    accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e62 + metal::float4(_e55, static_cast<float>(frame_5.samples_per_pass));
+    if (tile_1.frame == 0u) {
+        accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e58;
+    } else {
+        metal::float4 _e65 = accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x];
+        accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e65 + _e58;
+    }
     if (_e59 > 0u) {
         metal::atomic_fetch_add_explicit(&counters[0], _e59, metal::memory_order_relaxed);
     }
-    uint _e69 = ray_count;
-    metal::atomic_fetch_add_explicit(&counters[1], _e69, metal::memory_order_relaxed);
+    uint _e72 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e72, metal::memory_order_relaxed);
     return;
 }
 
@@ -1781,13 +1823,13 @@ void render_invocation(
     device type_9 const& nodes,
     device type_10 const& triangles,
     device type_12 const& attributes,
-    thread type_13& traversal_stack,
+    thread type_14& traversal_stack,
     thread uint& ray_count,
-    thread type_14& spawn_dirs,
-    thread type_14& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count,
     device type_10& accum,
-    device type_18& counters,
+    device type_19& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     TileParams tile_2 = tile;
@@ -1824,15 +1866,15 @@ struct renderInput {
 , device type_10 const& triangles [[buffer(4)]]
 , device type_12 const& attributes [[buffer(5)]]
 , device type_10& accum [[buffer(8)]]
-, device type_18& counters [[buffer(9)]]
+, device type_19& counters [[buffer(9)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
     uint rng_state = {};
     uint F32_INF = 2139095040u;
-    type_13 traversal_stack = {};
+    type_14 traversal_stack = {};
     uint ray_count = {};
-    type_14 spawn_dirs = {};
-    type_14 spawn_weights = {};
+    type_15 spawn_dirs = {};
+    type_15 spawn_weights = {};
     uint spawn_count = {};
     render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
     return;

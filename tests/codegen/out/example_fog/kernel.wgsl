@@ -139,12 +139,16 @@ const RAY_CAMERA: u32 = 0u;
 const NO_HIT: u32 = 4294967295u;
 const HAS_MEDIA: bool = true;
 const MESH_GEOMETRY: u32 = 4294967295u;
-const LEAF_BIT: u32 = 2147483648u;
+const MESH_LEAF_BIT: u32 = 2147483648u;
+const MESH_COUNT_SHIFT: u32 = 27u;
+const MESH_COUNT_MASK: u32 = 15u;
+const MESH_FIRST_MASK: u32 = 134217727u;
 const FLAG_ANY_HIT: u32 = 1u;
 const RAY_SHADOW: u32 = 2u;
 const BLAS_STACK: u32 = 64u;
 const TLAS_STACK: u32 = 64u;
 const HAS_SECONDARY_RAYS: bool = true;
+const LEAF_BIT: u32 = 2147483648u;
 const HAS_BACKGROUND: bool = false;
 const FLAG_MEDIUM: u32 = 4u;
 const PI: f32 = 3.1415927f;
@@ -373,8 +377,8 @@ fn load_triangle(slot_1: u32) -> Triangle {
 }
 
 fn point_to_world(inst_1: GpuInstance, p: vec3<f32>) -> vec3<f32> {
-    let q = vec4<f32>(p, 1f);
-    return vec3<f32>(dot(inst_1.object_to_world_0_, q), dot(inst_1.object_to_world_1_, q), dot(inst_1.object_to_world_2_, q));
+    let q_1 = vec4<f32>(p, 1f);
+    return vec3<f32>(dot(inst_1.object_to_world_0_, q_1), dot(inst_1.object_to_world_1_, q_1), dot(inst_1.object_to_world_2_, q_1));
 }
 
 fn decode_octahedral(bits: u32) -> vec3<f32> {
@@ -477,9 +481,21 @@ fn accept(inst_3: GpuInstance, ray_5: Ray, c_1: Candidate) -> bool {
     return true;
 }
 
-fn slab(lo: vec3<f32>, hi: vec3<f32>, origin: vec3<f32>, inv_dir: vec3<f32>, tmin_1: f32, tmax_2: f32) -> f32 {
-    let t0_ = ((lo - origin) * inv_dir);
-    let t1_ = ((hi - origin) * inv_dir);
+fn mesh_box_lo(p_1: vec3<u32>) -> vec3<u32> {
+    return vec3<u32>((p_1.x & 65535u), (p_1.x >> 16u), (p_1.y & 65535u));
+}
+
+fn mesh_point(origin: vec3<f32>, scale: vec3<f32>, q: vec3<u32>) -> vec3<f32> {
+    return (origin + (vec3<f32>(q) * scale));
+}
+
+fn mesh_box_hi(p_2: vec3<u32>) -> vec3<u32> {
+    return vec3<u32>((p_2.y >> 16u), (p_2.z & 65535u), (p_2.z >> 16u));
+}
+
+fn slab(lo: vec3<f32>, hi: vec3<f32>, origin_1: vec3<f32>, inv_dir: vec3<f32>, tmin_1: f32, tmax_2: f32) -> f32 {
+    let t0_ = ((lo - origin_1) * inv_dir);
+    let t1_ = ((hi - origin_1) * inv_dir);
     let near_2 = min(t0_, t1_);
     let far_2 = max(t0_, t1_);
     let enter = max(max(near_2.x, near_2.y), max(near_2.z, tmin_1));
@@ -502,7 +518,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
 fn intersect_mesh(inst_4: GpuInstance, slot_2: u32, world_ray: Ray, ray_6: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
-    var node: u32;
+    var child: u32;
     var k: u32;
     var near: u32;
     var far: u32;
@@ -511,91 +527,104 @@ fn intersect_mesh(inst_4: GpuInstance, slot_2: u32, world_ray: Ray, ray_6: Ray, 
     let _e8 = safe_inverse(ray_6.dir);
     let _e9 = prepare_triangle_ray(ray_6);
     let base_1 = inst_4.blas_root;
+    let header = nodes[base_1];
+    let origin_2 = header.min;
+    let scale_1 = header.max;
     sp_1 = 0u;
-    node = base_1;
+    child = header.a;
     loop {
-        let _e14 = node;
-        let n_5 = nodes[_e14];
-        if ((n_5.b & LEAF_BIT) != 0u) {
-            let count = (n_5.b & ~(LEAF_BIT));
+        let _e20 = child;
+        if ((_e20 & MESH_LEAF_BIT) != 0u) {
+            let _e25 = child;
+            let count = ((_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+            let _e32 = child;
+            let first = (_e32 & MESH_FIRST_MASK);
             k = 0u;
             loop {
-                let _e29 = k;
-                if (_e29 >= count) {
+                let _e37 = k;
+                if (_e37 >= count) {
                     break;
                 }
-                let _e34 = k;
-                let prim = ((inst_4.triangle_offset + n_5.a) + _e34);
-                let _e38 = best.t;
-                let _e39 = hit_triangle(_e9, prim, ray_6.tmin, _e38);
-                let _e42 = F32_INF;
-                if (_e39.x < bitcast<f32>(_e42)) {
-                    let c_5 = Candidate(_e39.x, slot_2, prim, _e39.yz, vec3(0f));
-                    let _e50 = accept(inst_4, world_ray, c_5);
-                    if _e50 {
+                let _e41 = k;
+                let prim = ((inst_4.triangle_offset + first) + _e41);
+                let _e45 = best.t;
+                let _e46 = hit_triangle(_e9, prim, ray_6.tmin, _e45);
+                let _e49 = F32_INF;
+                if (_e46.x < bitcast<f32>(_e49)) {
+                    let c_5 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0f));
+                    let _e57 = accept(inst_4, world_ray, c_5);
+                    if _e57 {
                         best = c_5;
                         if shadow {
-                            let _e51 = best;
-                            return _e51;
+                            let _e58 = best;
+                            return _e58;
                         }
                     }
                 }
                 continuing {
-                    let _e52 = k;
-                    k = (_e52 + 1u);
+                    let _e59 = k;
+                    k = (_e59 + 1u);
                 }
             }
         } else {
-            let left = (base_1 + n_5.a);
-            let right = (left + 1u);
-            let l_1 = nodes[left];
-            let rr = nodes[right];
-            let _e70 = best.t;
-            let _e71 = slab(l_1.min, l_1.max, ray_6.origin, _e8, ray_6.tmin, _e70);
-            let _e77 = best.t;
-            let _e78 = slab(rr.min, rr.max, ray_6.origin, _e8, ray_6.tmin, _e77);
-            let _e80 = F32_INF;
-            let _e84 = F32_INF;
-            if ((_e71 < bitcast<f32>(_e80)) && (_e78 < bitcast<f32>(_e84))) {
-                near = left;
-                far = right;
-                if ((_e78 < _e71) != shadow) {
-                    near = right;
-                    far = left;
+            let _e62 = child;
+            let n_5 = nodes[(base_1 + _e62)];
+            let lq = bitcast<vec3<u32>>(n_5.min);
+            let rq = bitcast<vec3<u32>>(n_5.max);
+            let _e71 = mesh_box_lo(lq);
+            let _e72 = mesh_point(origin_2, scale_1, _e71);
+            let _e73 = mesh_box_hi(lq);
+            let _e74 = mesh_point(origin_2, scale_1, _e73);
+            let _e78 = best.t;
+            let _e79 = slab(_e72, _e74, ray_6.origin, _e8, ray_6.tmin, _e78);
+            let _e80 = mesh_box_lo(rq);
+            let _e81 = mesh_point(origin_2, scale_1, _e80);
+            let _e82 = mesh_box_hi(rq);
+            let _e83 = mesh_point(origin_2, scale_1, _e82);
+            let _e87 = best.t;
+            let _e88 = slab(_e81, _e83, ray_6.origin, _e8, ray_6.tmin, _e87);
+            let _e90 = F32_INF;
+            let _e94 = F32_INF;
+            if ((_e79 < bitcast<f32>(_e90)) && (_e88 < bitcast<f32>(_e94))) {
+                near = n_5.a;
+                far = n_5.b;
+                if ((_e88 < _e79) != shadow) {
+                    near = n_5.b;
+                    far = n_5.a;
                 }
-                let _e92 = sp_1;
-                if (_e92 < BLAS_STACK) {
-                    let _e96 = sp_1;
-                    let _e98 = far;
-                    traversal_stack[min((TLAS_STACK + _e96), 127u)] = _e98;
-                    let _e103 = sp_1;
-                    sp_1 = (_e103 + 1u);
+                let _e106 = sp_1;
+                if (_e106 < BLAS_STACK) {
+                    let _e110 = sp_1;
+                    let _e112 = far;
+                    traversal_stack[min((TLAS_STACK + _e110), 127u)] = _e112;
+                    let _e117 = sp_1;
+                    sp_1 = (_e117 + 1u);
                 }
-                let _e106 = near;
-                node = _e106;
+                let _e120 = near;
+                child = _e120;
                 continue;
             }
-            let _e108 = F32_INF;
-            if (_e71 < bitcast<f32>(_e108)) {
-                node = left;
+            let _e122 = F32_INF;
+            if (_e79 < bitcast<f32>(_e122)) {
+                child = n_5.a;
                 continue;
             }
-            let _e112 = F32_INF;
-            if (_e78 < bitcast<f32>(_e112)) {
-                node = right;
+            let _e127 = F32_INF;
+            if (_e88 < bitcast<f32>(_e127)) {
+                child = n_5.b;
                 continue;
             }
         }
-        let _e116 = sp_1;
-        let _e117 = pop(TLAS_STACK, _e116);
-        if (_e117.x == NO_HIT) {
+        let _e132 = sp_1;
+        let _e133 = pop(TLAS_STACK, _e132);
+        if (_e133.x == NO_HIT) {
             break;
         }
-        node = _e117.x;
-        sp_1 = _e117.y;
+        child = _e133.x;
+        sp_1 = _e133.y;
     }
-    let _e123 = best;
-    return _e123;
+    let _e139 = best;
+    return _e139;
 }
 
 fn intersect_object(slot_3: u32, ray_7: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
@@ -613,7 +642,7 @@ fn intersect_object(slot_3: u32, ray_7: Ray, best_1: Candidate, shadow_1: bool) 
     return best_1;
 }
 
-fn medium_at(p_1: vec3<f32>, exclude: u32) -> u32 {
+fn medium_at(p_3: vec3<f32>, exclude: u32) -> u32 {
     var inside: u32;
     var nearest: f32;
     var i: u32;
@@ -624,7 +653,7 @@ fn medium_at(p_1: vec3<f32>, exclude: u32) -> u32 {
     let frame_1 = frame;
     let _e12 = normalize_vec3f(vec3<f32>(0.5773f, 0.5774f, 0.5775f));
     let _e14 = F32_INF;
-    let probe = Ray(p_1, 0f, _e12, bitcast<f32>(_e14), 0u, 0u, 0u);
+    let probe = Ray(p_3, 0f, _e12, bitcast<f32>(_e14), 0u, 0u, 0u);
     inside = 0u;
     let _e23 = F32_INF;
     nearest = bitcast<f32>(_e23);
@@ -662,7 +691,7 @@ fn medium_at(p_1: vec3<f32>, exclude: u32) -> u32 {
 fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
-    var node_1: u32;
+    var node: u32;
     var near_1: u32;
     var far_1: u32;
 
@@ -677,8 +706,8 @@ fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
     }
     let _e16 = safe_inverse(ray_8.dir);
     sp_2 = 0u;
-    node_1 = frame_2.tlas_root;
-    let _e21 = node_1;
+    node = frame_2.tlas_root;
+    let _e21 = node;
     let root = nodes[_e21];
     let _e30 = best_2.t;
     let _e31 = slab(root.min, root.max, ray_8.origin, _e16, ray_8.tmin, _e30);
@@ -688,7 +717,7 @@ fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
         return _e36;
     }
     loop {
-        let _e37 = node_1;
+        let _e37 = node;
         let n_6 = nodes[_e37];
         if ((n_6.b & LEAF_BIT) != 0u) {
             if ((n_6.b & ~(LEAF_BIT)) != 0u) {
@@ -702,22 +731,22 @@ fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
                 }
             }
         } else {
-            let left_1 = (frame_2.tlas_root + n_6.a);
-            let right_1 = (left_1 + 1u);
-            let l_2 = nodes[left_1];
-            let rr_1 = nodes[right_1];
+            let left = (frame_2.tlas_root + n_6.a);
+            let right = (left + 1u);
+            let l_1 = nodes[left];
+            let rr = nodes[right];
             let _e77 = best_2.t;
-            let _e78 = slab(l_2.min, l_2.max, ray_8.origin, _e16, ray_8.tmin, _e77);
+            let _e78 = slab(l_1.min, l_1.max, ray_8.origin, _e16, ray_8.tmin, _e77);
             let _e84 = best_2.t;
-            let _e85 = slab(rr_1.min, rr_1.max, ray_8.origin, _e16, ray_8.tmin, _e84);
+            let _e85 = slab(rr.min, rr.max, ray_8.origin, _e16, ray_8.tmin, _e84);
             let _e87 = F32_INF;
             let _e91 = F32_INF;
             if ((_e78 < bitcast<f32>(_e87)) && (_e85 < bitcast<f32>(_e91))) {
-                near_1 = left_1;
-                far_1 = right_1;
+                near_1 = left;
+                far_1 = right;
                 if (_e85 < _e78) {
-                    near_1 = right_1;
-                    far_1 = left_1;
+                    near_1 = right;
+                    far_1 = left;
                 }
                 let _e98 = sp_2;
                 if (_e98 < TLAS_STACK) {
@@ -728,17 +757,17 @@ fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
                     sp_2 = (_e107 + 1u);
                 }
                 let _e110 = near_1;
-                node_1 = _e110;
+                node = _e110;
                 continue;
             }
             let _e112 = F32_INF;
             if (_e78 < bitcast<f32>(_e112)) {
-                node_1 = left_1;
+                node = left;
                 continue;
             }
             let _e116 = F32_INF;
             if (_e85 < bitcast<f32>(_e116)) {
-                node_1 = right_1;
+                node = right;
                 continue;
             }
         }
@@ -747,7 +776,7 @@ fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
         if (_e121.x == NO_HIT) {
             break;
         }
-        node_1 = _e121.x;
+        node = _e121.x;
         sp_2 = _e121.y;
     }
     let _e127 = best_2;
@@ -785,12 +814,12 @@ fn load_PointLight(offset_5: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn offset_origin(p_2: vec3<f32>, n_2: vec3<f32>) -> vec3<f32> {
+fn offset_origin(p_4: vec3<f32>, n_2: vec3<f32>) -> vec3<f32> {
     let _e3 = frame;
     let root_1 = nodes[_e3.tlas_root];
-    let a_5 = max(abs(p_2), max(abs(root_1.min), abs(root_1.max)));
+    let a_5 = max(abs(p_4), max(abs(root_1.min), abs(root_1.max)));
     let m_6 = max(max(a_5.x, a_5.y), a_5.z);
-    return (p_2 + (n_2 * vec3((m_6 * (1f / 65536f)))));
+    return (p_4 + (n_2 * vec3((m_6 * (1f / 65536f)))));
 }
 
 fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
@@ -1139,9 +1168,9 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e137 = depth;
             let top = (_e137 - 1u);
             let _e144 = stack[min(top, 2u)].next;
-            let child = (_e144 - 1u);
+            let child_1 = (_e144 - 1u);
             let _e151 = stack[min(top, 2u)].sum;
-            let _e159 = stack[min(top, 2u)].weights[min(child, 0u)];
+            let _e159 = stack[min(top, 2u)].weights[min(child_1, 0u)];
             let _e160 = value;
             stack[min(top, 2u)].sum = (_e151 + (_e159 * _e160));
             have_value = false;
@@ -1274,14 +1303,19 @@ fn render_pixel(pixel_3: vec2<u32>) {
         }
     }
     let _e55 = sum;
+    let _e58 = vec4<f32>(_e55, f32(frame_5.samples_per_pass));
     let _e59 = bad;
-    let _e62 = accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
-    accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e62 + vec4<f32>(_e55, f32(frame_5.samples_per_pass)));
+    if (tile_1.frame == 0u) {
+        accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = _e58;
+    } else {
+        let _e65 = accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
+        accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e65 + _e58);
+    }
     if (_e59 > 0u) {
         atomicAdd((&counters[0]), _e59);
     }
-    let _e69 = ray_count;
-    atomicAdd((&counters[1]), _e69);
+    let _e72 = ray_count;
+    atomicAdd((&counters[1]), _e72);
     return;
 }
 

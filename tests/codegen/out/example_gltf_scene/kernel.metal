@@ -125,7 +125,7 @@ struct GltfMaskedMaterial {
     metal::packed_float3 emissive;
     float alpha_cutoff;
 };
-struct type_14 {
+struct type_15 {
     uint inner[128];
 };
 struct SkyGradient {
@@ -169,7 +169,7 @@ struct GltfMaterial {
     char _pad4[4];
     metal::float3 emissive;
 };
-struct type_15 {
+struct type_16 {
     metal::float3 inner[1];
 };
 struct Frame {
@@ -178,16 +178,16 @@ struct Frame {
     uint slot;
     char _pad3[12];
     metal::float3 sum;
-    type_15 dirs;
-    type_15 weights;
+    type_16 dirs;
+    type_16 weights;
     uint count;
     uint next;
     char _pad8[8];
 };
-struct type_16 {
+struct type_17 {
     Frame inner[4];
 };
-typedef metal::atomic_uint type_19[1];
+typedef metal::atomic_uint type_20[1];
 constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint SCATTER = 1000003u;
@@ -195,11 +195,15 @@ constant uint RAY_CAMERA = 0u;
 constant uint NO_HIT = 4294967295u;
 constant bool HAS_MEDIA = false;
 constant uint MESH_GEOMETRY = 4294967295u;
-constant uint LEAF_BIT = 2147483648u;
+constant uint MESH_LEAF_BIT = 2147483648u;
+constant uint MESH_COUNT_SHIFT = 27u;
+constant uint MESH_COUNT_MASK = 15u;
+constant uint MESH_FIRST_MASK = 134217727u;
 constant uint FLAG_ANY_HIT = 1u;
 constant uint BLAS_STACK = 64u;
 constant uint TLAS_STACK = 64u;
 constant bool HAS_SECONDARY_RAYS = false;
+constant uint LEAF_BIT = 2147483648u;
 constant bool HAS_BACKGROUND = true;
 constant uint FLAG_MEDIUM = 4u;
 constant uint RAY_SHADOW = 2u;
@@ -491,8 +495,8 @@ metal::float3 point_to_world(
     GpuInstance inst_1,
     metal::float3 p
 ) {
-    metal::float4 q = metal::float4(p, 1.0);
-    return metal::float3(metal::dot(inst_1.object_to_world_0_, q), metal::dot(inst_1.object_to_world_1_, q), metal::dot(inst_1.object_to_world_2_, q));
+    metal::float4 q_1 = metal::float4(p, 1.0);
+    return metal::float3(metal::dot(inst_1.object_to_world_0_, q_1), metal::dot(inst_1.object_to_world_1_, q_1), metal::dot(inst_1.object_to_world_2_, q_1));
 }
 
 metal::float3 decode_octahedral(
@@ -675,9 +679,9 @@ metal::float4 sample_texture(
     float w_4 = static_cast<float>(metal::max(_e6, 1u));
     uint _e14 = params[t_1 + 2u];
     float h_3 = static_cast<float>(metal::max(_e14, 1u));
-    metal::float2 p_3 = (uv * metal::float2(w_4, h_3)) - metal::float2(0.5);
-    metal::float2 f_1 = metal::floor(p_3);
-    metal::float2 fr = p_3 - f_1;
+    metal::float2 p_5 = (uv * metal::float2(w_4, h_3)) - metal::float2(0.5);
+    metal::float2 f_1 = metal::floor(p_5);
+    metal::float2 fr = p_5 - f_1;
     int _e26 = i32_from_f32_(f_1.x);
     int _e28 = i32_from_f32_(f_1.y);
     metal::float4 _e29 = texel_at(t_1, _e26, _e28, params, texels, _buffer_sizes);
@@ -734,17 +738,37 @@ bool accept(
     return true;
 }
 
+metal::uint3 mesh_box_lo(
+    metal::uint3 p_1
+) {
+    return metal::uint3(p_1.x & 65535u, p_1.x >> 16u, p_1.y & 65535u);
+}
+
+metal::float3 mesh_point(
+    metal::float3 origin,
+    metal::float3 scale,
+    metal::uint3 q
+) {
+    return origin + (static_cast<metal::float3>(q) * scale);
+}
+
+metal::uint3 mesh_box_hi(
+    metal::uint3 p_2
+) {
+    return metal::uint3(p_2.y >> 16u, p_2.z & 65535u, p_2.z >> 16u);
+}
+
 float slab(
     metal::float3 lo,
     metal::float3 hi,
-    metal::float3 origin,
+    metal::float3 origin_1,
     metal::float3 inv_dir,
     float tmin_1,
     float tmax_2,
     thread uint& F32_INF
 ) {
-    metal::float3 t0_ = (lo - origin) * inv_dir;
-    metal::float3 t1_ = (hi - origin) * inv_dir;
+    metal::float3 t0_ = (lo - origin_1) * inv_dir;
+    metal::float3 t1_ = (hi - origin_1) * inv_dir;
     metal::float3 near_2 = metal::min(t0_, t1_);
     metal::float3 far_2 = metal::max(t0_, t1_);
     float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, tmin_1));
@@ -759,7 +783,7 @@ float slab(
 metal::uint2 pop(
     uint base,
     uint sp,
-    thread type_14& traversal_stack
+    thread type_15& traversal_stack
 ) {
     if (sp == 0u) {
         return metal::uint2(NO_HIT, 0u);
@@ -782,12 +806,12 @@ Candidate intersect_mesh(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Candidate best = {};
     uint sp_1 = {};
-    uint node = {};
+    uint child = {};
     uint k = {};
     uint near = {};
     uint far = {};
@@ -795,16 +819,21 @@ Candidate intersect_mesh(
     metal::float3 _e8 = safe_inverse(ray_6.dir);
     TriangleRay _e9 = prepare_triangle_ray(ray_6);
     uint base_2 = inst_4.blas_root;
+    GpuNode header = nodes[base_2];
+    metal::float3 origin_2 = header.min;
+    metal::float3 scale_1 = header.max;
     sp_1 = 0u;
-    node = base_2;
+    child = header.a;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e14 = node;
-        GpuNode n_5 = nodes[_e14];
-        if ((n_5.b & LEAF_BIT) != 0u) {
-            uint count = n_5.b & ~(LEAF_BIT);
+        uint _e20 = child;
+        if ((_e20 & MESH_LEAF_BIT) != 0u) {
+            uint _e25 = child;
+            uint count = (_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK;
+            uint _e32 = child;
+            uint first = _e32 & MESH_FIRST_MASK;
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u);
             bool loop_init = true;
@@ -812,82 +841,90 @@ Candidate intersect_mesh(
                 if (metal::all(loop_bound_1 == uint2(0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e52 = k;
-                    k = _e52 + 1u;
+                    uint _e59 = k;
+                    k = _e59 + 1u;
                 }
                 loop_init = false;
-                uint _e29 = k;
-                if (_e29 >= count) {
+                uint _e37 = k;
+                if (_e37 >= count) {
                     break;
                 }
-                uint _e34 = k;
-                uint prim = (inst_4.triangle_offset + n_5.a) + _e34;
-                float _e38 = best.t;
-                metal::float3 _e39 = hit_triangle(_e9, prim, ray_6.tmin, _e38, F32_INF, triangles, _buffer_sizes);
-                uint _e42 = F32_INF;
-                if (_e39.x < as_type<float>(_e42)) {
-                    Candidate c_8 = Candidate {_e39.x, slot_2, prim, {}, _e39.yz, {}, metal::float3(0.0)};
-                    bool _e50 = accept(inst_4, world_ray, c_8, params, instances, triangles, attributes, texels, _buffer_sizes);
-                    if (_e50) {
+                uint _e41 = k;
+                uint prim = (inst_4.triangle_offset + first) + _e41;
+                float _e45 = best.t;
+                metal::float3 _e46 = hit_triangle(_e9, prim, ray_6.tmin, _e45, F32_INF, triangles, _buffer_sizes);
+                uint _e49 = F32_INF;
+                if (_e46.x < as_type<float>(_e49)) {
+                    Candidate c_8 = Candidate {_e46.x, slot_2, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e57 = accept(inst_4, world_ray, c_8, params, instances, triangles, attributes, texels, _buffer_sizes);
+                    if (_e57) {
                         best = c_8;
                         if (shadow) {
-                            Candidate _e51 = best;
-                            return _e51;
+                            Candidate _e58 = best;
+                            return _e58;
                         }
                     }
                 }
             }
         } else {
-            uint left = base_2 + n_5.a;
-            uint right = left + 1u;
-            GpuNode l_3 = nodes[left];
-            GpuNode rr = nodes[right];
-            float _e70 = best.t;
-            float _e71 = slab(l_3.min, l_3.max, ray_6.origin, _e8, ray_6.tmin, _e70, F32_INF);
-            float _e77 = best.t;
-            float _e78 = slab(rr.min, rr.max, ray_6.origin, _e8, ray_6.tmin, _e77, F32_INF);
-            uint _e80 = F32_INF;
-            uint _e84 = F32_INF;
-            if ((_e71 < as_type<float>(_e80)) && (_e78 < as_type<float>(_e84))) {
-                near = left;
-                far = right;
-                if ((_e78 < _e71) != shadow) {
-                    near = right;
-                    far = left;
+            uint _e62 = child;
+            GpuNode n_5 = nodes[base_2 + _e62];
+            metal::uint3 lq = as_type<metal::uint3>(n_5.min);
+            metal::uint3 rq = as_type<metal::uint3>(n_5.max);
+            metal::uint3 _e71 = mesh_box_lo(lq);
+            metal::float3 _e72 = mesh_point(origin_2, scale_1, _e71);
+            metal::uint3 _e73 = mesh_box_hi(lq);
+            metal::float3 _e74 = mesh_point(origin_2, scale_1, _e73);
+            float _e78 = best.t;
+            float _e79 = slab(_e72, _e74, ray_6.origin, _e8, ray_6.tmin, _e78, F32_INF);
+            metal::uint3 _e80 = mesh_box_lo(rq);
+            metal::float3 _e81 = mesh_point(origin_2, scale_1, _e80);
+            metal::uint3 _e82 = mesh_box_hi(rq);
+            metal::float3 _e83 = mesh_point(origin_2, scale_1, _e82);
+            float _e87 = best.t;
+            float _e88 = slab(_e81, _e83, ray_6.origin, _e8, ray_6.tmin, _e87, F32_INF);
+            uint _e90 = F32_INF;
+            uint _e94 = F32_INF;
+            if ((_e79 < as_type<float>(_e90)) && (_e88 < as_type<float>(_e94))) {
+                near = n_5.a;
+                far = n_5.b;
+                if ((_e88 < _e79) != shadow) {
+                    near = n_5.b;
+                    far = n_5.a;
                 }
-                uint _e92 = sp_1;
-                if (_e92 < BLAS_STACK) {
-                    uint _e96 = sp_1;
-                    uint _e98 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e96, 127u)] = _e98;
-                    uint _e103 = sp_1;
-                    sp_1 = _e103 + 1u;
+                uint _e106 = sp_1;
+                if (_e106 < BLAS_STACK) {
+                    uint _e110 = sp_1;
+                    uint _e112 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e110, 127u)] = _e112;
+                    uint _e117 = sp_1;
+                    sp_1 = _e117 + 1u;
                 }
-                uint _e106 = near;
-                node = _e106;
+                uint _e120 = near;
+                child = _e120;
                 continue;
             }
-            uint _e108 = F32_INF;
-            if (_e71 < as_type<float>(_e108)) {
-                node = left;
+            uint _e122 = F32_INF;
+            if (_e79 < as_type<float>(_e122)) {
+                child = n_5.a;
                 continue;
             }
-            uint _e112 = F32_INF;
-            if (_e78 < as_type<float>(_e112)) {
-                node = right;
+            uint _e127 = F32_INF;
+            if (_e88 < as_type<float>(_e127)) {
+                child = n_5.b;
                 continue;
             }
         }
-        uint _e116 = sp_1;
-        metal::uint2 _e117 = pop(TLAS_STACK, _e116, traversal_stack);
-        if (_e117.x == NO_HIT) {
+        uint _e132 = sp_1;
+        metal::uint2 _e133 = pop(TLAS_STACK, _e132, traversal_stack);
+        if (_e133.x == NO_HIT) {
             break;
         }
-        node = _e117.x;
-        sp_1 = _e117.y;
+        child = _e133.x;
+        sp_1 = _e133.y;
     }
-    Candidate _e123 = best;
-    return _e123;
+    Candidate _e139 = best;
+    return _e139;
 }
 
 Candidate intersect_object(
@@ -902,7 +939,7 @@ Candidate intersect_object(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray r_2 = {};
@@ -919,7 +956,7 @@ Candidate intersect_object(
 }
 
 uint medium_at(
-    metal::float3 p_1,
+    metal::float3 p_3,
     uint exclude,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -929,7 +966,7 @@ uint medium_at(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint inside = {};
@@ -941,7 +978,7 @@ uint medium_at(
     FrameUniforms frame_1 = frame;
     metal::float3 _e12 = normalize_vec3f(metal::float3(0.5773, 0.5774, 0.5775));
     uint _e14 = F32_INF;
-    Ray probe = Ray {p_1, 0.0, _e12, as_type<float>(_e14), 0u, 0u, 0u};
+    Ray probe = Ray {p_3, 0.0, _e12, as_type<float>(_e14), 0u, 0u, 0u};
     inside = 0u;
     uint _e23 = F32_INF;
     nearest = as_type<float>(_e23);
@@ -992,13 +1029,13 @@ Candidate intersect_scene(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Candidate best_2 = {};
     uint sp_2 = {};
-    uint node_1 = {};
+    uint node = {};
     uint near_1 = {};
     uint far_1 = {};
     uint _e3 = ray_count;
@@ -1012,8 +1049,8 @@ Candidate intersect_scene(
     }
     metal::float3 _e16 = safe_inverse(ray_8.dir);
     sp_2 = 0u;
-    node_1 = frame_2.tlas_root;
-    uint _e21 = node_1;
+    node = frame_2.tlas_root;
+    uint _e21 = node;
     GpuNode root = nodes[_e21];
     float _e30 = best_2.t;
     float _e31 = slab(root.min, root.max, ray_8.origin, _e16, ray_8.tmin, _e30, F32_INF);
@@ -1026,7 +1063,7 @@ Candidate intersect_scene(
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e37 = node_1;
+        uint _e37 = node;
         GpuNode n_6 = nodes[_e37];
         if ((n_6.b & LEAF_BIT) != 0u) {
             if ((n_6.b & ~(LEAF_BIT)) != 0u) {
@@ -1040,22 +1077,22 @@ Candidate intersect_scene(
                 }
             }
         } else {
-            uint left_1 = frame_2.tlas_root + n_6.a;
-            uint right_1 = left_1 + 1u;
-            GpuNode l_4 = nodes[left_1];
-            GpuNode rr_1 = nodes[right_1];
+            uint left = frame_2.tlas_root + n_6.a;
+            uint right = left + 1u;
+            GpuNode l_3 = nodes[left];
+            GpuNode rr = nodes[right];
             float _e77 = best_2.t;
-            float _e78 = slab(l_4.min, l_4.max, ray_8.origin, _e16, ray_8.tmin, _e77, F32_INF);
+            float _e78 = slab(l_3.min, l_3.max, ray_8.origin, _e16, ray_8.tmin, _e77, F32_INF);
             float _e84 = best_2.t;
-            float _e85 = slab(rr_1.min, rr_1.max, ray_8.origin, _e16, ray_8.tmin, _e84, F32_INF);
+            float _e85 = slab(rr.min, rr.max, ray_8.origin, _e16, ray_8.tmin, _e84, F32_INF);
             uint _e87 = F32_INF;
             uint _e91 = F32_INF;
             if ((_e78 < as_type<float>(_e87)) && (_e85 < as_type<float>(_e91))) {
-                near_1 = left_1;
-                far_1 = right_1;
+                near_1 = left;
+                far_1 = right;
                 if (_e85 < _e78) {
-                    near_1 = right_1;
-                    far_1 = left_1;
+                    near_1 = right;
+                    far_1 = left;
                 }
                 uint _e98 = sp_2;
                 if (_e98 < TLAS_STACK) {
@@ -1066,17 +1103,17 @@ Candidate intersect_scene(
                     sp_2 = _e107 + 1u;
                 }
                 uint _e110 = near_1;
-                node_1 = _e110;
+                node = _e110;
                 continue;
             }
             uint _e112 = F32_INF;
             if (_e78 < as_type<float>(_e112)) {
-                node_1 = left_1;
+                node = left;
                 continue;
             }
             uint _e116 = F32_INF;
             if (_e85 < as_type<float>(_e116)) {
-                node_1 = right_1;
+                node = right;
                 continue;
             }
         }
@@ -1085,7 +1122,7 @@ Candidate intersect_scene(
         if (_e121.x == NO_HIT) {
             break;
         }
-        node_1 = _e121.x;
+        node = _e121.x;
         sp_2 = _e121.y;
     }
     Candidate _e127 = best_2;
@@ -1201,7 +1238,7 @@ DirectionalLight load_DirectionalLight(
 }
 
 metal::float3 offset_origin(
-    metal::float3 p_2,
+    metal::float3 p_4,
     metal::float3 n_2,
     constant FrameUniforms& frame,
     device type_9 const& nodes,
@@ -1209,9 +1246,9 @@ metal::float3 offset_origin(
 ) {
     FrameUniforms _e3 = frame;
     GpuNode root_1 = nodes[_e3.tlas_root];
-    metal::float3 a_7 = metal::max(metal::abs(p_2), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
+    metal::float3 a_7 = metal::max(metal::abs(p_4), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
     float m_3 = metal::max(metal::max(a_7.x, a_7.y), a_7.z);
-    return p_2 + (n_2 * metal::float3(m_3 * (1.0 / 65536.0)));
+    return p_4 + (n_2 * metal::float3(m_3 * (1.0 / 65536.0)));
 }
 
 float shadow_query(
@@ -1227,7 +1264,7 @@ float shadow_query(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1257,7 +1294,7 @@ LightSample directional_light(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1302,7 +1339,7 @@ LightSample point_light(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1353,7 +1390,7 @@ LightSample spot_light(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1393,7 +1430,7 @@ LightSample dispatch_light(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1432,7 +1469,7 @@ LightSample sample_light_query(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1462,7 +1499,7 @@ metal::float3 gltf_radiance(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1520,7 +1557,7 @@ metal::float3 gltf_masked_shade(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1560,7 +1597,7 @@ metal::float3 gltf_shade(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1584,7 +1621,7 @@ metal::float3 dispatch_closest_hit(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1617,7 +1654,7 @@ metal::float3 shade_direct(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1665,14 +1702,14 @@ metal::float3 trace(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    type_16 stack = {};
+    type_17 stack = {};
     uint depth = {};
     Ray ray_20 = {};
     metal::float3 value = {};
@@ -1693,7 +1730,7 @@ metal::float3 trace(
         metal::float3 _e15 = through_medium(camera_ray, _e4.t, _e14, instances, _buffer_sizes);
         return _e15;
     }
-    stack = type_16 {};
+    stack = type_17 {};
     depth = 0u;
     ray_20 = camera_ray;
     value = metal::float3(0.0);
@@ -1729,7 +1766,7 @@ metal::float3 trace(
                     uint n_8 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
                     if (n_8 > 0u) {
                         Ray _e77 = ray_20;
-                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_8, 0u};
+                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_8, 0u};
                         i_3 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u);
                         bool loop_init_3 = true;
@@ -1783,9 +1820,9 @@ metal::float3 trace(
             uint _e137 = depth;
             uint top = _e137 - 1u;
             uint _e144 = stack.inner[metal::min(top, 3u)].next;
-            uint child = _e144 - 1u;
+            uint child_1 = _e144 - 1u;
             metal::float3 _e151 = stack.inner[metal::min(top, 3u)].sum;
-            metal::float3 _e159 = stack.inner[metal::min(top, 3u)].weights.inner[metal::min(child, 0u)];
+            metal::float3 _e159 = stack.inner[metal::min(top, 3u)].weights.inner[metal::min(child_1, 0u)];
             metal::float3 _e160 = value;
             stack.inner[metal::min(top, 3u)].sum = _e151 + (_e159 * _e160);
             have_value = false;
@@ -1848,13 +1885,13 @@ void render_pixel(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count,
     device type_10& accum,
-    device type_19& counters,
+    device type_20& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 sum = {};
@@ -1906,14 +1943,19 @@ void render_pixel(
         }
     }
     metal::float3 _e55 = sum;
+    metal::float4 _e58 = metal::float4(_e55, static_cast<float>(frame_5.samples_per_pass));
     uint _e59 = bad;
-    metal::float4 _e62 = accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x];
-    accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e62 + metal::float4(_e55, static_cast<float>(frame_5.samples_per_pass));
+    if (tile_1.frame == 0u) {
+        accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e58;
+    } else {
+        metal::float4 _e65 = accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x];
+        accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e65 + _e58;
+    }
     if (_e59 > 0u) {
         metal::atomic_fetch_add_explicit(&counters[0], _e59, metal::memory_order_relaxed);
     }
-    uint _e69 = ray_count;
-    metal::atomic_fetch_add_explicit(&counters[1], _e69, metal::memory_order_relaxed);
+    uint _e72 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e72, metal::memory_order_relaxed);
     return;
 }
 
@@ -1929,13 +1971,13 @@ void render_invocation(
     device type_10 const& triangles,
     device type_12 const& attributes,
     device type_4 const& texels,
-    thread type_14& traversal_stack,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count,
     device type_10& accum,
-    device type_19& counters,
+    device type_20& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     TileParams tile_2 = tile;
@@ -1973,15 +2015,15 @@ struct renderInput {
 , device type_12 const& attributes [[buffer(5)]]
 , device type_4 const& texels [[buffer(7)]]
 , device type_10& accum [[buffer(8)]]
-, device type_19& counters [[buffer(9)]]
+, device type_20& counters [[buffer(9)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
     uint rng_state = {};
     uint F32_INF = 2139095040u;
-    type_14 traversal_stack = {};
+    type_15 traversal_stack = {};
     uint ray_count = {};
-    type_15 spawn_dirs = {};
-    type_15 spawn_weights = {};
+    type_16 spawn_dirs = {};
+    type_16 spawn_weights = {};
     uint spawn_count = {};
     render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
     return;

@@ -177,10 +177,14 @@ static const uint RAY_CAMERA = 0u;
 static const uint NO_HIT = 4294967295u;
 static const bool HAS_MEDIA = false;
 static const uint MESH_GEOMETRY = 4294967295u;
-static const uint LEAF_BIT = 2147483648u;
+static const uint MESH_LEAF_BIT = 2147483648u;
+static const uint MESH_COUNT_SHIFT = 27u;
+static const uint MESH_COUNT_MASK = 15u;
+static const uint MESH_FIRST_MASK = 134217727u;
 static const uint BLAS_STACK = 64u;
 static const uint TLAS_STACK = 64u;
 static const bool HAS_SECONDARY_RAYS = true;
+static const uint LEAF_BIT = 2147483648u;
 static const bool HAS_BACKGROUND = true;
 static const uint FLAG_MEDIUM = 4u;
 static const uint RAY_SHADOW = 2u;
@@ -480,10 +484,25 @@ bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
     return true;
 }
 
-float slab(float3 lo, float3 hi, float3 origin, float3 inv_dir, float tmin_1, float tmax_2)
+uint3 mesh_box_lo(uint3 p)
 {
-    float3 t0_ = ((lo - origin) * inv_dir);
-    float3 t1_ = ((hi - origin) * inv_dir);
+    return uint3((p.x & 65535u), (p.x >> 16u), (p.y & 65535u));
+}
+
+float3 mesh_point(float3 origin, float3 scale, uint3 q)
+{
+    return (origin + (float3(q) * scale));
+}
+
+uint3 mesh_box_hi(uint3 p_1)
+{
+    return uint3((p_1.y >> 16u), (p_1.z & 65535u), (p_1.z >> 16u));
+}
+
+float slab(float3 lo, float3 hi, float3 origin_1, float3 inv_dir, float tmin_1, float tmax_2)
+{
+    float3 t0_ = ((lo - origin_1) * inv_dir);
+    float3 t1_ = ((hi - origin_1) * inv_dir);
     float3 near_2 = min(t0_, t1_);
     float3 far_2 = max(t0_, t1_);
     float enter = max(max(near_2.x, near_2.y), max(near_2.z, tmin_1));
@@ -517,7 +536,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
-    uint node = (uint)0;
+    uint child = (uint)0;
     uint k = (uint)0;
     uint near = (uint)0;
     uint far = (uint)0;
@@ -526,16 +545,21 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     const float3 _e8 = safe_inverse(ray_3.dir);
     const TriangleRay _e9 = prepare_triangle_ray(ray_3);
     uint base_1 = inst_2.blas_root;
+    GpuNode header = ConstructGpuNode(asfloat(nodes.Load3(base_1*32+0)), asuint(nodes.Load(base_1*32+12)), asfloat(nodes.Load3(base_1*32+16)), asuint(nodes.Load(base_1*32+28)));
+    float3 origin_2 = header.min_;
+    float3 scale_1 = header.max_;
     sp_1 = 0u;
-    node = base_1;
+    child = header.a;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e14 = node;
-        GpuNode n_5 = ConstructGpuNode(asfloat(nodes.Load3(_e14*32+0)), asuint(nodes.Load(_e14*32+12)), asfloat(nodes.Load3(_e14*32+16)), asuint(nodes.Load(_e14*32+28)));
-        if (((n_5.b & LEAF_BIT) != 0u)) {
-            uint count = (n_5.b & ~(LEAF_BIT));
+        uint _e20 = child;
+        if (((_e20 & MESH_LEAF_BIT) != 0u)) {
+            uint _e25 = child;
+            uint count = ((_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+            uint _e32 = child;
+            uint first = (_e32 & MESH_FIRST_MASK);
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
             bool loop_init = true;
@@ -543,83 +567,91 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e52 = k;
-                    k = (_e52 + 1u);
+                    uint _e59 = k;
+                    k = (_e59 + 1u);
                 }
                 loop_init = false;
-                uint _e29 = k;
-                if ((_e29 >= count)) {
+                uint _e37 = k;
+                if ((_e37 >= count)) {
                     break;
                 }
-                uint _e34 = k;
-                uint prim = ((inst_2.triangle_offset + n_5.a) + _e34);
-                float _e38 = best.t;
-                const float3 _e39 = hit_triangle(_e9, prim, ray_3.tmin, _e38);
-                uint _e42 = F32_INF;
-                if ((_e39.x < asfloat(_e42))) {
-                    Candidate c_5 = ConstructCandidate(_e39.x, slot_1, prim, _e39.yz, (0.0).xxx);
-                    const bool _e50 = accept(inst_2, world_ray, c_5);
-                    if (_e50) {
+                uint _e41 = k;
+                uint prim = ((inst_2.triangle_offset + first) + _e41);
+                float _e45 = best.t;
+                const float3 _e46 = hit_triangle(_e9, prim, ray_3.tmin, _e45);
+                uint _e49 = F32_INF;
+                if ((_e46.x < asfloat(_e49))) {
+                    Candidate c_5 = ConstructCandidate(_e46.x, slot_1, prim, _e46.yz, (0.0).xxx);
+                    const bool _e57 = accept(inst_2, world_ray, c_5);
+                    if (_e57) {
                         best = c_5;
                         if (shadow) {
-                            Candidate _e51 = best;
-                            const Candidate candidate_1 = _e51;
+                            Candidate _e58 = best;
+                            const Candidate candidate_1 = _e58;
                             return candidate_1;
                         }
                     }
                 }
             }
         } else {
-            uint left = (base_1 + n_5.a);
-            uint right = (left + 1u);
-            GpuNode l_1 = ConstructGpuNode(asfloat(nodes.Load3(left*32+0)), asuint(nodes.Load(left*32+12)), asfloat(nodes.Load3(left*32+16)), asuint(nodes.Load(left*32+28)));
-            GpuNode rr = ConstructGpuNode(asfloat(nodes.Load3(right*32+0)), asuint(nodes.Load(right*32+12)), asfloat(nodes.Load3(right*32+16)), asuint(nodes.Load(right*32+28)));
-            float _e70 = best.t;
-            const float _e71 = slab(l_1.min_, l_1.max_, ray_3.origin, _e8, ray_3.tmin, _e70);
-            float _e77 = best.t;
-            const float _e78 = slab(rr.min_, rr.max_, ray_3.origin, _e8, ray_3.tmin, _e77);
-            uint _e80 = F32_INF;
-            uint _e84 = F32_INF;
-            if (((_e71 < asfloat(_e80)) && (_e78 < asfloat(_e84)))) {
-                near = left;
-                far = right;
-                if (((_e78 < _e71) != shadow)) {
-                    near = right;
-                    far = left;
+            uint _e62 = child;
+            GpuNode n_5 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e62)*32+0)), asuint(nodes.Load((base_1 + _e62)*32+12)), asfloat(nodes.Load3((base_1 + _e62)*32+16)), asuint(nodes.Load((base_1 + _e62)*32+28)));
+            uint3 lq = asuint(n_5.min_);
+            uint3 rq = asuint(n_5.max_);
+            const uint3 _e71 = mesh_box_lo(lq);
+            const float3 _e72 = mesh_point(origin_2, scale_1, _e71);
+            const uint3 _e73 = mesh_box_hi(lq);
+            const float3 _e74 = mesh_point(origin_2, scale_1, _e73);
+            float _e78 = best.t;
+            const float _e79 = slab(_e72, _e74, ray_3.origin, _e8, ray_3.tmin, _e78);
+            const uint3 _e80 = mesh_box_lo(rq);
+            const float3 _e81 = mesh_point(origin_2, scale_1, _e80);
+            const uint3 _e82 = mesh_box_hi(rq);
+            const float3 _e83 = mesh_point(origin_2, scale_1, _e82);
+            float _e87 = best.t;
+            const float _e88 = slab(_e81, _e83, ray_3.origin, _e8, ray_3.tmin, _e87);
+            uint _e90 = F32_INF;
+            uint _e94 = F32_INF;
+            if (((_e79 < asfloat(_e90)) && (_e88 < asfloat(_e94)))) {
+                near = n_5.a;
+                far = n_5.b;
+                if (((_e88 < _e79) != shadow)) {
+                    near = n_5.b;
+                    far = n_5.a;
                 }
-                uint _e92 = sp_1;
-                if ((_e92 < BLAS_STACK)) {
-                    uint _e96 = sp_1;
-                    uint _e98 = far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e96), 127u)), 127u)] = _e98;
-                    uint _e103 = sp_1;
-                    sp_1 = (_e103 + 1u);
+                uint _e106 = sp_1;
+                if ((_e106 < BLAS_STACK)) {
+                    uint _e110 = sp_1;
+                    uint _e112 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e110), 127u)), 127u)] = _e112;
+                    uint _e117 = sp_1;
+                    sp_1 = (_e117 + 1u);
                 }
-                uint _e106 = near;
-                node = _e106;
+                uint _e120 = near;
+                child = _e120;
                 continue;
             }
-            uint _e108 = F32_INF;
-            if ((_e71 < asfloat(_e108))) {
-                node = left;
+            uint _e122 = F32_INF;
+            if ((_e79 < asfloat(_e122))) {
+                child = n_5.a;
                 continue;
             }
-            uint _e112 = F32_INF;
-            if ((_e78 < asfloat(_e112))) {
-                node = right;
+            uint _e127 = F32_INF;
+            if ((_e88 < asfloat(_e127))) {
+                child = n_5.b;
                 continue;
             }
         }
-        uint _e116 = sp_1;
-        const uint2 _e117 = pop(TLAS_STACK, _e116);
-        if ((_e117.x == NO_HIT)) {
+        uint _e132 = sp_1;
+        const uint2 _e133 = pop(TLAS_STACK, _e132);
+        if ((_e133.x == NO_HIT)) {
             break;
         }
-        node = _e117.x;
-        sp_1 = _e117.y;
+        child = _e133.x;
+        sp_1 = _e133.y;
     }
-    Candidate _e123 = best;
-    const Candidate candidate_2 = _e123;
+    Candidate _e139 = best;
+    const Candidate candidate_2 = _e139;
     return candidate_2;
 }
 
@@ -677,10 +709,10 @@ Triangle load_triangle(uint slot_3)
     return triangle_;
 }
 
-float3 point_to_world(GpuInstance inst_3, float3 p)
+float3 point_to_world(GpuInstance inst_3, float3 p_2)
 {
-    float4 q = float4(p, 1.0);
-    return float3(dot(inst_3.object_to_world_0_, q), dot(inst_3.object_to_world_1_, q), dot(inst_3.object_to_world_2_, q));
+    float4 q_1 = float4(p_2, 1.0);
+    return float3(dot(inst_3.object_to_world_0_, q_1), dot(inst_3.object_to_world_1_, q_1), dot(inst_3.object_to_world_2_, q_1));
 }
 
 float3 decode_octahedral(uint bits)
@@ -775,7 +807,7 @@ Hit finish_hit(Ray ray_5, Candidate c_1)
     return hit_8;
 }
 
-uint medium_at(float3 p_1, uint exclude)
+uint medium_at(float3 p_3, uint exclude)
 {
     uint inside = (uint)0;
     float nearest = (float)0;
@@ -787,7 +819,7 @@ uint medium_at(float3 p_1, uint exclude)
     FrameUniforms frame_1 = frame;
     const float3 _e12 = normalize_vec3f(float3(0.5773, 0.5774, 0.5775));
     uint _e14 = F32_INF;
-    Ray probe = ConstructRay(p_1, 0.0, _e12, asfloat(_e14), 0u, 0u, 0u);
+    Ray probe = ConstructRay(p_3, 0.0, _e12, asfloat(_e14), 0u, 0u, 0u);
     inside = 0u;
     uint _e23 = F32_INF;
     nearest = asfloat(_e23);
@@ -831,7 +863,7 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
-    uint node_1 = (uint)0;
+    uint node = (uint)0;
     uint near_1 = (uint)0;
     uint far_1 = (uint)0;
 
@@ -847,8 +879,8 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2)
     }
     const float3 _e16 = safe_inverse(ray_6.dir);
     sp_2 = 0u;
-    node_1 = frame_2.tlas_root;
-    uint _e21 = node_1;
+    node = frame_2.tlas_root;
+    uint _e21 = node;
     GpuNode root = ConstructGpuNode(asfloat(nodes.Load3(_e21*32+0)), asuint(nodes.Load(_e21*32+12)), asfloat(nodes.Load3(_e21*32+16)), asuint(nodes.Load(_e21*32+28)));
     float _e30 = best_2.t;
     const float _e31 = slab(root.min_, root.max_, ray_6.origin, _e16, ray_6.tmin, _e30);
@@ -862,7 +894,7 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2)
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e37 = node_1;
+        uint _e37 = node;
         GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3(_e37*32+0)), asuint(nodes.Load(_e37*32+12)), asfloat(nodes.Load3(_e37*32+16)), asuint(nodes.Load(_e37*32+28)));
         if (((n_6.b & LEAF_BIT) != 0u)) {
             if (((n_6.b & ~(LEAF_BIT)) != 0u)) {
@@ -877,22 +909,22 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2)
                 }
             }
         } else {
-            uint left_1 = (frame_2.tlas_root + n_6.a);
-            uint right_1 = (left_1 + 1u);
-            GpuNode l_2 = ConstructGpuNode(asfloat(nodes.Load3(left_1*32+0)), asuint(nodes.Load(left_1*32+12)), asfloat(nodes.Load3(left_1*32+16)), asuint(nodes.Load(left_1*32+28)));
-            GpuNode rr_1 = ConstructGpuNode(asfloat(nodes.Load3(right_1*32+0)), asuint(nodes.Load(right_1*32+12)), asfloat(nodes.Load3(right_1*32+16)), asuint(nodes.Load(right_1*32+28)));
+            uint left = (frame_2.tlas_root + n_6.a);
+            uint right = (left + 1u);
+            GpuNode l_1 = ConstructGpuNode(asfloat(nodes.Load3(left*32+0)), asuint(nodes.Load(left*32+12)), asfloat(nodes.Load3(left*32+16)), asuint(nodes.Load(left*32+28)));
+            GpuNode rr = ConstructGpuNode(asfloat(nodes.Load3(right*32+0)), asuint(nodes.Load(right*32+12)), asfloat(nodes.Load3(right*32+16)), asuint(nodes.Load(right*32+28)));
             float _e77 = best_2.t;
-            const float _e78 = slab(l_2.min_, l_2.max_, ray_6.origin, _e16, ray_6.tmin, _e77);
+            const float _e78 = slab(l_1.min_, l_1.max_, ray_6.origin, _e16, ray_6.tmin, _e77);
             float _e84 = best_2.t;
-            const float _e85 = slab(rr_1.min_, rr_1.max_, ray_6.origin, _e16, ray_6.tmin, _e84);
+            const float _e85 = slab(rr.min_, rr.max_, ray_6.origin, _e16, ray_6.tmin, _e84);
             uint _e87 = F32_INF;
             uint _e91 = F32_INF;
             if (((_e78 < asfloat(_e87)) && (_e85 < asfloat(_e91)))) {
-                near_1 = left_1;
-                far_1 = right_1;
+                near_1 = left;
+                far_1 = right;
                 if ((_e85 < _e78)) {
-                    near_1 = right_1;
-                    far_1 = left_1;
+                    near_1 = right;
+                    far_1 = left;
                 }
                 uint _e98 = sp_2;
                 if ((_e98 < TLAS_STACK)) {
@@ -903,17 +935,17 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2)
                     sp_2 = (_e107 + 1u);
                 }
                 uint _e110 = near_1;
-                node_1 = _e110;
+                node = _e110;
                 continue;
             }
             uint _e112 = F32_INF;
             if ((_e78 < asfloat(_e112))) {
-                node_1 = left_1;
+                node = left;
                 continue;
             }
             uint _e116 = F32_INF;
             if ((_e85 < asfloat(_e116))) {
-                node_1 = right_1;
+                node = right;
                 continue;
             }
         }
@@ -922,7 +954,7 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2)
         if ((_e121.x == NO_HIT)) {
             break;
         }
-        node_1 = _e121.x;
+        node = _e121.x;
         sp_2 = _e121.y;
     }
     Candidate _e127 = best_2;
@@ -1051,13 +1083,13 @@ PointLight load_PointLight(uint offset_6)
     return pointlight;
 }
 
-float3 offset_origin(float3 p_2, float3 n_2)
+float3 offset_origin(float3 p_4, float3 n_2)
 {
     FrameUniforms _e3 = frame;
     GpuNode root_1 = ConstructGpuNode(asfloat(nodes.Load3(_e3.tlas_root*32+0)), asuint(nodes.Load(_e3.tlas_root*32+12)), asfloat(nodes.Load3(_e3.tlas_root*32+16)), asuint(nodes.Load(_e3.tlas_root*32+28)));
-    float3 a_5 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
+    float3 a_5 = max(abs(p_4), max(abs(root_1.min_), abs(root_1.max_)));
     float m_3 = max(max(a_5.x, a_5.y), a_5.z);
-    return (p_2 + (n_2 * ((m_3 * (1.0 / 65536.0))).xxx));
+    return (p_4 + (n_2 * ((m_3 * (1.0 / 65536.0))).xxx));
 }
 
 float shadow_query(float3 position, float3 normal, float3 dir, float dist)
@@ -1382,9 +1414,9 @@ float3 trace(Ray camera_ray)
             uint _e137 = depth;
             uint top = (_e137 - 1u);
             uint _e144 = stack[min(uint(min(top, 2u)), 2u)].next;
-            uint child = (_e144 - 1u);
+            uint child_1 = (_e144 - 1u);
             float3 _e151 = stack[min(uint(min(top, 2u)), 2u)].sum;
-            float3 _e159 = stack[min(uint(min(top, 2u)), 2u)].weights[min(uint(min(child, 0u)), 0u)];
+            float3 _e159 = stack[min(uint(min(top, 2u)), 2u)].weights[min(uint(min(child_1, 0u)), 0u)];
             float3 _e160 = value;
             stack[min(uint(min(top, 2u)), 2u)].sum = (_e151 + (_e159 * _e160));
             have_value = false;
@@ -1485,14 +1517,19 @@ void render_pixel(uint2 pixel_3)
         }
     }
     float3 _e55 = sum;
+    float4 _e58 = float4(_e55, float(frame_5.samples_per_pass));
     uint _e59 = bad;
-    float4 _e62 = asfloat(accum.Load4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16));
-    accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint((_e62 + float4(_e55, float(frame_5.samples_per_pass)))));
+    if ((tile_1.frame == 0u)) {
+        accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint(_e58));
+    } else {
+        float4 _e65 = asfloat(accum.Load4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16));
+        accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint((_e65 + _e58)));
+    }
     if ((_e59 > 0u)) {
         counters.InterlockedAdd(0, _e59);
     }
-    uint _e69 = ray_count;
-    counters.InterlockedAdd(4, _e69);
+    uint _e72 = ray_count;
+    counters.InterlockedAdd(4, _e72);
     return;
 }
 

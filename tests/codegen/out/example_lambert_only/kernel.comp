@@ -127,10 +127,14 @@ const uint RAY_CAMERA = 0u;
 const uint NO_HIT = 4294967295u;
 const bool HAS_MEDIA = false;
 const uint MESH_GEOMETRY = 4294967295u;
-const uint LEAF_BIT = 2147483648u;
+const uint MESH_LEAF_BIT = 2147483648u;
+const uint MESH_COUNT_SHIFT = 27u;
+const uint MESH_COUNT_MASK = 15u;
+const uint MESH_FIRST_MASK = 134217727u;
 const uint BLAS_STACK = 64u;
 const uint TLAS_STACK = 64u;
 const bool HAS_SECONDARY_RAYS = false;
+const uint LEAF_BIT = 2147483648u;
 const bool HAS_BACKGROUND = true;
 const uint FLAG_MEDIUM = 4u;
 const uint RAY_SHADOW = 2u;
@@ -159,7 +163,7 @@ layout(std430, binding = 4) readonly buffer type_10_block_5Compute { vec4 _group
 
 uint traversal_stack[128] = uint[128](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
-layout(std430, binding = 5) readonly buffer type_13_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
+layout(std430, binding = 5) readonly buffer type_14_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
 
 uint ray_count = 0u;
 
@@ -171,7 +175,7 @@ uint spawn_count = 0u;
 
 layout(std430, binding = 8) buffer type_10_block_7Compute { vec4 _group_0_binding_8_cs[]; };
 
-layout(std430, binding = 9) buffer type_18_block_8Compute { uint _group_0_binding_9_cs[]; };
+layout(std430, binding = 9) buffer type_19_block_8Compute { uint _group_0_binding_9_cs[]; };
 
 
 uvec2 div_vec2u(uvec2 a, uvec2 b) {
@@ -359,9 +363,21 @@ bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
     return true;
 }
 
-float slab(vec3 lo, vec3 hi, vec3 origin, vec3 inv_dir, float tmin_1, float tmax_2) {
-    vec3 t0_ = ((lo - origin) * inv_dir);
-    vec3 t1_ = ((hi - origin) * inv_dir);
+uvec3 mesh_box_lo(uvec3 p) {
+    return uvec3((p.x & 65535u), (p.x >> 16u), (p.y & 65535u));
+}
+
+vec3 mesh_point(vec3 origin, vec3 scale, uvec3 q) {
+    return (origin + (vec3(q) * scale));
+}
+
+uvec3 mesh_box_hi(uvec3 p_1) {
+    return uvec3((p_1.y >> 16u), (p_1.z & 65535u), (p_1.z >> 16u));
+}
+
+float slab(vec3 lo, vec3 hi, vec3 origin_1, vec3 inv_dir, float tmin_1, float tmax_2) {
+    vec3 t0_ = ((lo - origin_1) * inv_dir);
+    vec3 t1_ = ((hi - origin_1) * inv_dir);
     vec3 near_2 = min(t0_, t1_);
     vec3 far_2 = max(t0_, t1_);
     float enter = max(max(near_2.x, near_2.y), max(near_2.z, tmin_1));
@@ -384,7 +400,7 @@ uvec2 pop(uint base, uint sp) {
 Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_3, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
-    uint node = 0u;
+    uint child = 0u;
     uint k = 0u;
     uint near = 0u;
     uint far = 0u;
@@ -392,93 +408,106 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     vec3 _e8 = safe_inverse(ray_3.dir);
     TriangleRay _e9 = prepare_triangle_ray(ray_3);
     uint base_1 = inst_2.blas_root;
+    GpuNode header = _group_0_binding_2_cs[base_1];
+    vec3 origin_2 = header.min_;
+    vec3 scale_1 = header.max_;
     sp_1 = 0u;
-    node = base_1;
+    child = header.a;
     while(true) {
-        uint _e14 = node;
-        GpuNode n_5 = _group_0_binding_2_cs[_e14];
-        if (((n_5.b & LEAF_BIT) != 0u)) {
-            uint count = (n_5.b & ~(LEAF_BIT));
+        uint _e20 = child;
+        if (((_e20 & MESH_LEAF_BIT) != 0u)) {
+            uint _e25 = child;
+            uint count = ((_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+            uint _e32 = child;
+            uint first = (_e32 & MESH_FIRST_MASK);
             k = 0u;
             bool loop_init = true;
             while(true) {
                 if (!loop_init) {
-                    uint _e52 = k;
-                    k = (_e52 + 1u);
+                    uint _e59 = k;
+                    k = (_e59 + 1u);
                 }
                 loop_init = false;
-                uint _e29 = k;
-                if ((_e29 >= count)) {
+                uint _e37 = k;
+                if ((_e37 >= count)) {
                     break;
                 }
-                uint _e34 = k;
-                uint prim = ((inst_2.triangle_offset + n_5.a) + _e34);
-                float _e38 = best.t;
-                vec3 _e39 = hit_triangle(_e9, prim, ray_3.tmin, _e38);
-                uint _e42 = F32_INF;
-                if ((_e39.x < uintBitsToFloat(_e42))) {
-                    Candidate c_5 = Candidate(_e39.x, slot_1, prim, _e39.yz, vec3(0.0));
-                    bool _e50 = accept(inst_2, world_ray, c_5);
-                    if (_e50) {
+                uint _e41 = k;
+                uint prim = ((inst_2.triangle_offset + first) + _e41);
+                float _e45 = best.t;
+                vec3 _e46 = hit_triangle(_e9, prim, ray_3.tmin, _e45);
+                uint _e49 = F32_INF;
+                if ((_e46.x < uintBitsToFloat(_e49))) {
+                    Candidate c_5 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0.0));
+                    bool _e57 = accept(inst_2, world_ray, c_5);
+                    if (_e57) {
                         best = c_5;
                         if (shadow) {
-                            Candidate _e51 = best;
-                            return _e51;
+                            Candidate _e58 = best;
+                            return _e58;
                         }
                     }
                 }
             }
         } else {
-            uint left = (base_1 + n_5.a);
-            uint right = (left + 1u);
-            GpuNode l_1 = _group_0_binding_2_cs[left];
-            GpuNode rr = _group_0_binding_2_cs[right];
-            float _e70 = best.t;
-            float _e71 = slab(l_1.min_, l_1.max_, ray_3.origin, _e8, ray_3.tmin, _e70);
-            float _e77 = best.t;
-            float _e78 = slab(rr.min_, rr.max_, ray_3.origin, _e8, ray_3.tmin, _e77);
-            uint _e80 = F32_INF;
-            uint _e84 = F32_INF;
-            if (((_e71 < uintBitsToFloat(_e80)) && (_e78 < uintBitsToFloat(_e84)))) {
-                near = left;
-                far = right;
-                if (((_e78 < _e71) != shadow)) {
-                    near = right;
-                    far = left;
+            uint _e62 = child;
+            GpuNode n_5 = _group_0_binding_2_cs[(base_1 + _e62)];
+            uvec3 lq = floatBitsToUint(n_5.min_);
+            uvec3 rq = floatBitsToUint(n_5.max_);
+            uvec3 _e71 = mesh_box_lo(lq);
+            vec3 _e72 = mesh_point(origin_2, scale_1, _e71);
+            uvec3 _e73 = mesh_box_hi(lq);
+            vec3 _e74 = mesh_point(origin_2, scale_1, _e73);
+            float _e78 = best.t;
+            float _e79 = slab(_e72, _e74, ray_3.origin, _e8, ray_3.tmin, _e78);
+            uvec3 _e80 = mesh_box_lo(rq);
+            vec3 _e81 = mesh_point(origin_2, scale_1, _e80);
+            uvec3 _e82 = mesh_box_hi(rq);
+            vec3 _e83 = mesh_point(origin_2, scale_1, _e82);
+            float _e87 = best.t;
+            float _e88 = slab(_e81, _e83, ray_3.origin, _e8, ray_3.tmin, _e87);
+            uint _e90 = F32_INF;
+            uint _e94 = F32_INF;
+            if (((_e79 < uintBitsToFloat(_e90)) && (_e88 < uintBitsToFloat(_e94)))) {
+                near = n_5.a;
+                far = n_5.b;
+                if (((_e88 < _e79) != shadow)) {
+                    near = n_5.b;
+                    far = n_5.a;
                 }
-                uint _e92 = sp_1;
-                if ((_e92 < BLAS_STACK)) {
-                    uint _e96 = sp_1;
-                    uint _e98 = far;
-                    traversal_stack[min((TLAS_STACK + _e96), 127u)] = _e98;
-                    uint _e103 = sp_1;
-                    sp_1 = (_e103 + 1u);
+                uint _e106 = sp_1;
+                if ((_e106 < BLAS_STACK)) {
+                    uint _e110 = sp_1;
+                    uint _e112 = far;
+                    traversal_stack[min((TLAS_STACK + _e110), 127u)] = _e112;
+                    uint _e117 = sp_1;
+                    sp_1 = (_e117 + 1u);
                 }
-                uint _e106 = near;
-                node = _e106;
+                uint _e120 = near;
+                child = _e120;
                 continue;
             }
-            uint _e108 = F32_INF;
-            if ((_e71 < uintBitsToFloat(_e108))) {
-                node = left;
+            uint _e122 = F32_INF;
+            if ((_e79 < uintBitsToFloat(_e122))) {
+                child = n_5.a;
                 continue;
             }
-            uint _e112 = F32_INF;
-            if ((_e78 < uintBitsToFloat(_e112))) {
-                node = right;
+            uint _e127 = F32_INF;
+            if ((_e88 < uintBitsToFloat(_e127))) {
+                child = n_5.b;
                 continue;
             }
         }
-        uint _e116 = sp_1;
-        uvec2 _e117 = pop(TLAS_STACK, _e116);
-        if ((_e117.x == NO_HIT)) {
+        uint _e132 = sp_1;
+        uvec2 _e133 = pop(TLAS_STACK, _e132);
+        if ((_e133.x == NO_HIT)) {
             break;
         }
-        node = _e117.x;
-        sp_1 = _e117.y;
+        child = _e133.x;
+        sp_1 = _e133.y;
     }
-    Candidate _e123 = best;
-    return _e123;
+    Candidate _e139 = best;
+    return _e139;
 }
 
 Candidate intersect_object(uint slot_2, Ray ray_4, Candidate best_1, bool shadow_1) {
@@ -502,9 +531,9 @@ Triangle load_triangle(uint slot_3) {
     return Triangle(v0_.xyz, v1_.xyz, v2_.xyz);
 }
 
-vec3 point_to_world(GpuInstance inst_3, vec3 p) {
-    vec4 q = vec4(p, 1.0);
-    return vec3(dot(inst_3.object_to_world_0_, q), dot(inst_3.object_to_world_1_, q), dot(inst_3.object_to_world_2_, q));
+vec3 point_to_world(GpuInstance inst_3, vec3 p_2) {
+    vec4 q_1 = vec4(p_2, 1.0);
+    return vec3(dot(inst_3.object_to_world_0_, q_1), dot(inst_3.object_to_world_1_, q_1), dot(inst_3.object_to_world_2_, q_1));
 }
 
 vec3 decode_octahedral(uint bits) {
@@ -577,7 +606,7 @@ Hit finish_hit(Ray ray_5, Candidate c_1) {
     return _e139;
 }
 
-uint medium_at(vec3 p_1, uint exclude) {
+uint medium_at(vec3 p_3, uint exclude) {
     uint inside = 0u;
     float nearest = 0.0;
     uint i = 0u;
@@ -587,7 +616,7 @@ uint medium_at(vec3 p_1, uint exclude) {
     FrameUniforms frame_1 = _group_0_binding_0_cs;
     vec3 _e12 = normalize_vec3f(vec3(0.5773, 0.5774, 0.5775));
     uint _e14 = F32_INF;
-    Ray probe = Ray(p_1, 0.0, _e12, uintBitsToFloat(_e14), 0u, 0u, 0u);
+    Ray probe = Ray(p_3, 0.0, _e12, uintBitsToFloat(_e14), 0u, 0u, 0u);
     inside = 0u;
     uint _e23 = F32_INF;
     nearest = uintBitsToFloat(_e23);
@@ -627,7 +656,7 @@ uint medium_at(vec3 p_1, uint exclude) {
 Candidate intersect_scene(Ray ray_6, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
-    uint node_1 = 0u;
+    uint node = 0u;
     uint near_1 = 0u;
     uint far_1 = 0u;
     uint _e3 = ray_count;
@@ -641,8 +670,8 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2) {
     }
     vec3 _e16 = safe_inverse(ray_6.dir);
     sp_2 = 0u;
-    node_1 = frame_2.tlas_root;
-    uint _e21 = node_1;
+    node = frame_2.tlas_root;
+    uint _e21 = node;
     GpuNode root = _group_0_binding_2_cs[_e21];
     float _e30 = best_2.t;
     float _e31 = slab(root.min_, root.max_, ray_6.origin, _e16, ray_6.tmin, _e30);
@@ -652,7 +681,7 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2) {
         return _e36;
     }
     while(true) {
-        uint _e37 = node_1;
+        uint _e37 = node;
         GpuNode n_6 = _group_0_binding_2_cs[_e37];
         if (((n_6.b & LEAF_BIT) != 0u)) {
             if (((n_6.b & ~(LEAF_BIT)) != 0u)) {
@@ -666,22 +695,22 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2) {
                 }
             }
         } else {
-            uint left_1 = (frame_2.tlas_root + n_6.a);
-            uint right_1 = (left_1 + 1u);
-            GpuNode l_2 = _group_0_binding_2_cs[left_1];
-            GpuNode rr_1 = _group_0_binding_2_cs[right_1];
+            uint left = (frame_2.tlas_root + n_6.a);
+            uint right = (left + 1u);
+            GpuNode l_1 = _group_0_binding_2_cs[left];
+            GpuNode rr = _group_0_binding_2_cs[right];
             float _e77 = best_2.t;
-            float _e78 = slab(l_2.min_, l_2.max_, ray_6.origin, _e16, ray_6.tmin, _e77);
+            float _e78 = slab(l_1.min_, l_1.max_, ray_6.origin, _e16, ray_6.tmin, _e77);
             float _e84 = best_2.t;
-            float _e85 = slab(rr_1.min_, rr_1.max_, ray_6.origin, _e16, ray_6.tmin, _e84);
+            float _e85 = slab(rr.min_, rr.max_, ray_6.origin, _e16, ray_6.tmin, _e84);
             uint _e87 = F32_INF;
             uint _e91 = F32_INF;
             if (((_e78 < uintBitsToFloat(_e87)) && (_e85 < uintBitsToFloat(_e91)))) {
-                near_1 = left_1;
-                far_1 = right_1;
+                near_1 = left;
+                far_1 = right;
                 if ((_e85 < _e78)) {
-                    near_1 = right_1;
-                    far_1 = left_1;
+                    near_1 = right;
+                    far_1 = left;
                 }
                 uint _e98 = sp_2;
                 if ((_e98 < TLAS_STACK)) {
@@ -692,17 +721,17 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2) {
                     sp_2 = (_e107 + 1u);
                 }
                 uint _e110 = near_1;
-                node_1 = _e110;
+                node = _e110;
                 continue;
             }
             uint _e112 = F32_INF;
             if ((_e78 < uintBitsToFloat(_e112))) {
-                node_1 = left_1;
+                node = left;
                 continue;
             }
             uint _e116 = F32_INF;
             if ((_e85 < uintBitsToFloat(_e116))) {
-                node_1 = right_1;
+                node = right;
                 continue;
             }
         }
@@ -711,7 +740,7 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2) {
         if ((_e121.x == NO_HIT)) {
             break;
         }
-        node_1 = _e121.x;
+        node = _e121.x;
         sp_2 = _e121.y;
     }
     Candidate _e127 = best_2;
@@ -788,12 +817,12 @@ PointLight load_PointLight(uint offset_6) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
-vec3 offset_origin(vec3 p_2, vec3 n_2) {
+vec3 offset_origin(vec3 p_4, vec3 n_2) {
     FrameUniforms _e3 = _group_0_binding_0_cs;
     GpuNode root_1 = _group_0_binding_2_cs[_e3.tlas_root];
-    vec3 a_5 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
+    vec3 a_5 = max(abs(p_4), max(abs(root_1.min_), abs(root_1.max_)));
     float m_1 = max(max(a_5.x, a_5.y), a_5.z);
-    return (p_2 + (n_2 * vec3((m_1 * (1.0 / 65536.0)))));
+    return (p_4 + (n_2 * vec3((m_1 * (1.0 / 65536.0)))));
 }
 
 float shadow_query(vec3 position, vec3 normal, vec3 dir, float dist) {
@@ -1007,9 +1036,9 @@ vec3 trace(Ray camera_ray) {
             uint _e137 = depth;
             uint top = (_e137 - 1u);
             uint _e144 = stack[min(top, 3u)].next;
-            uint child = (_e144 - 1u);
+            uint child_1 = (_e144 - 1u);
             vec3 _e151 = stack[min(top, 3u)].sum;
-            vec3 _e159 = stack[min(top, 3u)].weights[min(child, 0u)];
+            vec3 _e159 = stack[min(top, 3u)].weights[min(child_1, 0u)];
             vec3 _e160 = value;
             stack[min(top, 3u)].sum = (_e151 + (_e159 * _e160));
             have_value = false;
@@ -1103,14 +1132,19 @@ void render_pixel(uvec2 pixel_3) {
         }
     }
     vec3 _e55 = sum;
+    vec4 _e58 = vec4(_e55, float(frame_5.samples_per_pass));
     uint _e59 = bad;
-    vec4 _e62 = _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
-    _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e62 + vec4(_e55, float(frame_5.samples_per_pass)));
+    if ((tile_1.frame == 0u)) {
+        _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = _e58;
+    } else {
+        vec4 _e65 = _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
+        _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e65 + _e58);
+    }
     if ((_e59 > 0u)) {
         atomicAdd(_group_0_binding_9_cs[0], _e59);
     }
-    uint _e69 = ray_count;
-    atomicAdd(_group_0_binding_9_cs[1], _e69);
+    uint _e72 = ray_count;
+    atomicAdd(_group_0_binding_9_cs[1], _e72);
     return;
 }
 

@@ -148,13 +148,17 @@ const uint RAY_CAMERA = 0u;
 const uint NO_HIT = 4294967295u;
 const bool HAS_MEDIA = false;
 const uint MESH_GEOMETRY = 4294967295u;
-const uint LEAF_BIT = 2147483648u;
+const uint MESH_LEAF_BIT = 2147483648u;
+const uint MESH_COUNT_SHIFT = 27u;
+const uint MESH_COUNT_MASK = 15u;
+const uint MESH_FIRST_MASK = 134217727u;
 const uint BLAS_STACK = 64u;
 const uint TLAS_STACK = 64u;
 const uint BVH_MESH_STACK = 64u;
 const float TAU = 6.2831855;
 const float INV_PI = 0.31830987;
 const bool HAS_SECONDARY_RAYS = false;
+const uint LEAF_BIT = 2147483648u;
 const bool HAS_BACKGROUND = true;
 const uint FLAG_MEDIUM = 4u;
 const uint RAY_SHADOW = 2u;
@@ -184,7 +188,7 @@ uint traversal_stack[128] = uint[128](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u
 
 uint F32_NEG_INF = 4286578688u;
 
-layout(std430, binding = 5) readonly buffer type_15_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
+layout(std430, binding = 5) readonly buffer type_16_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
 
 uint ray_count = 0u;
 
@@ -198,7 +202,7 @@ uint spawn_count = 0u;
 
 layout(std430, binding = 8) buffer type_10_block_8Compute { vec4 _group_0_binding_8_cs[]; };
 
-layout(std430, binding = 9) buffer type_21_block_9Compute { uint _group_0_binding_9_cs[]; };
+layout(std430, binding = 9) buffer type_22_block_9Compute { uint _group_0_binding_9_cs[]; };
 
 
 uvec2 div_vec2u(uvec2 a, uvec2 b) {
@@ -379,9 +383,21 @@ bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
     return true;
 }
 
-float slab(vec3 lo, vec3 hi, vec3 origin, vec3 inv_dir, float tmin_1, float tmax_2) {
-    vec3 t0_ = ((lo - origin) * inv_dir);
-    vec3 t1_ = ((hi - origin) * inv_dir);
+uvec3 mesh_box_lo(uvec3 p) {
+    return uvec3((p.x & 65535u), (p.x >> 16u), (p.y & 65535u));
+}
+
+vec3 mesh_point(vec3 origin, vec3 scale, uvec3 q) {
+    return (origin + (vec3(q) * scale));
+}
+
+uvec3 mesh_box_hi(uvec3 p_1) {
+    return uvec3((p_1.y >> 16u), (p_1.z & 65535u), (p_1.z >> 16u));
+}
+
+float slab(vec3 lo, vec3 hi, vec3 origin_1, vec3 inv_dir, float tmin_1, float tmax_2) {
+    vec3 t0_ = ((lo - origin_1) * inv_dir);
+    vec3 t1_ = ((hi - origin_1) * inv_dir);
     vec3 near_2 = min(t0_, t1_);
     vec3 far_2 = max(t0_, t1_);
     float enter = max(max(near_2.x, near_2.y), max(near_2.z, tmin_1));
@@ -404,7 +420,7 @@ uvec2 pop(uint base, uint sp) {
 Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_3, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
-    uint node = 0u;
+    uint child = 0u;
     uint k = 0u;
     uint near = 0u;
     uint far = 0u;
@@ -412,93 +428,106 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     vec3 _e8 = safe_inverse(ray_3.dir);
     TriangleRay _e9 = prepare_triangle_ray(ray_3);
     uint base_1 = inst_2.blas_root;
+    GpuNode header = _group_0_binding_2_cs[base_1];
+    vec3 origin_2 = header.min_;
+    vec3 scale_1 = header.max_;
     sp_1 = 0u;
-    node = base_1;
+    child = header.a;
     while(true) {
-        uint _e14 = node;
-        GpuNode n_6 = _group_0_binding_2_cs[_e14];
-        if (((n_6.b & LEAF_BIT) != 0u)) {
-            uint count_1 = (n_6.b & ~(LEAF_BIT));
+        uint _e20 = child;
+        if (((_e20 & MESH_LEAF_BIT) != 0u)) {
+            uint _e25 = child;
+            uint count = ((_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+            uint _e32 = child;
+            uint first = (_e32 & MESH_FIRST_MASK);
             k = 0u;
             bool loop_init = true;
             while(true) {
                 if (!loop_init) {
-                    uint _e52 = k;
-                    k = (_e52 + 1u);
+                    uint _e59 = k;
+                    k = (_e59 + 1u);
                 }
                 loop_init = false;
-                uint _e29 = k;
-                if ((_e29 >= count_1)) {
+                uint _e37 = k;
+                if ((_e37 >= count)) {
                     break;
                 }
-                uint _e34 = k;
-                uint prim = ((inst_2.triangle_offset + n_6.a) + _e34);
-                float _e38 = best.t;
-                vec3 _e39 = hit_triangle(_e9, prim, ray_3.tmin, _e38);
-                uint _e42 = F32_INF;
-                if ((_e39.x < uintBitsToFloat(_e42))) {
-                    Candidate c_6 = Candidate(_e39.x, slot_1, prim, _e39.yz, vec3(0.0));
-                    bool _e50 = accept(inst_2, world_ray, c_6);
-                    if (_e50) {
+                uint _e41 = k;
+                uint prim = ((inst_2.triangle_offset + first) + _e41);
+                float _e45 = best.t;
+                vec3 _e46 = hit_triangle(_e9, prim, ray_3.tmin, _e45);
+                uint _e49 = F32_INF;
+                if ((_e46.x < uintBitsToFloat(_e49))) {
+                    Candidate c_6 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0.0));
+                    bool _e57 = accept(inst_2, world_ray, c_6);
+                    if (_e57) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e51 = best;
-                            return _e51;
+                            Candidate _e58 = best;
+                            return _e58;
                         }
                     }
                 }
             }
         } else {
-            uint left = (base_1 + n_6.a);
-            uint right = (left + 1u);
-            GpuNode l_1 = _group_0_binding_2_cs[left];
-            GpuNode rr = _group_0_binding_2_cs[right];
-            float _e70 = best.t;
-            float _e71 = slab(l_1.min_, l_1.max_, ray_3.origin, _e8, ray_3.tmin, _e70);
-            float _e77 = best.t;
-            float _e78 = slab(rr.min_, rr.max_, ray_3.origin, _e8, ray_3.tmin, _e77);
-            uint _e80 = F32_INF;
-            uint _e84 = F32_INF;
-            if (((_e71 < uintBitsToFloat(_e80)) && (_e78 < uintBitsToFloat(_e84)))) {
-                near = left;
-                far = right;
-                if (((_e78 < _e71) != shadow)) {
-                    near = right;
-                    far = left;
+            uint _e62 = child;
+            GpuNode n_6 = _group_0_binding_2_cs[(base_1 + _e62)];
+            uvec3 lq = floatBitsToUint(n_6.min_);
+            uvec3 rq = floatBitsToUint(n_6.max_);
+            uvec3 _e71 = mesh_box_lo(lq);
+            vec3 _e72 = mesh_point(origin_2, scale_1, _e71);
+            uvec3 _e73 = mesh_box_hi(lq);
+            vec3 _e74 = mesh_point(origin_2, scale_1, _e73);
+            float _e78 = best.t;
+            float _e79 = slab(_e72, _e74, ray_3.origin, _e8, ray_3.tmin, _e78);
+            uvec3 _e80 = mesh_box_lo(rq);
+            vec3 _e81 = mesh_point(origin_2, scale_1, _e80);
+            uvec3 _e82 = mesh_box_hi(rq);
+            vec3 _e83 = mesh_point(origin_2, scale_1, _e82);
+            float _e87 = best.t;
+            float _e88 = slab(_e81, _e83, ray_3.origin, _e8, ray_3.tmin, _e87);
+            uint _e90 = F32_INF;
+            uint _e94 = F32_INF;
+            if (((_e79 < uintBitsToFloat(_e90)) && (_e88 < uintBitsToFloat(_e94)))) {
+                near = n_6.a;
+                far = n_6.b;
+                if (((_e88 < _e79) != shadow)) {
+                    near = n_6.b;
+                    far = n_6.a;
                 }
-                uint _e92 = sp_1;
-                if ((_e92 < BLAS_STACK)) {
-                    uint _e96 = sp_1;
-                    uint _e98 = far;
-                    traversal_stack[min((TLAS_STACK + _e96), 127u)] = _e98;
-                    uint _e103 = sp_1;
-                    sp_1 = (_e103 + 1u);
+                uint _e106 = sp_1;
+                if ((_e106 < BLAS_STACK)) {
+                    uint _e110 = sp_1;
+                    uint _e112 = far;
+                    traversal_stack[min((TLAS_STACK + _e110), 127u)] = _e112;
+                    uint _e117 = sp_1;
+                    sp_1 = (_e117 + 1u);
                 }
-                uint _e106 = near;
-                node = _e106;
+                uint _e120 = near;
+                child = _e120;
                 continue;
             }
-            uint _e108 = F32_INF;
-            if ((_e71 < uintBitsToFloat(_e108))) {
-                node = left;
+            uint _e122 = F32_INF;
+            if ((_e79 < uintBitsToFloat(_e122))) {
+                child = n_6.a;
                 continue;
             }
-            uint _e112 = F32_INF;
-            if ((_e78 < uintBitsToFloat(_e112))) {
-                node = right;
+            uint _e127 = F32_INF;
+            if ((_e88 < uintBitsToFloat(_e127))) {
+                child = n_6.b;
                 continue;
             }
         }
-        uint _e116 = sp_1;
-        uvec2 _e117 = pop(TLAS_STACK, _e116);
-        if ((_e117.x == NO_HIT)) {
+        uint _e132 = sp_1;
+        uvec2 _e133 = pop(TLAS_STACK, _e132);
+        if ((_e133.x == NO_HIT)) {
             break;
         }
-        node = _e117.x;
-        sp_1 = _e117.y;
+        child = _e133.x;
+        sp_1 = _e133.y;
     }
-    Candidate _e123 = best;
-    return _e123;
+    Candidate _e139 = best;
+    return _e139;
 }
 
 BvhMesh load_BvhMesh(uint offset_2) {
@@ -507,15 +536,49 @@ BvhMesh load_BvhMesh(uint offset_2) {
 }
 
 BvhNode mesh_node_query(uint m, uint i) {
-    uint count = 0u;
-    uint _e4 = _group_0_binding_6_cs[m];
-    GpuNode n_7 = _group_0_binding_2_cs[(_e4 + i)];
-    count = 0u;
-    if (((n_7.b & 2147483648u) != 0u)) {
-        count = (n_7.b & 2147483647u);
+    vec3 lo_1 = vec3(0.0);
+    vec3 hi_1 = vec3(0.0);
+    uint reference = 0u;
+    uvec3 q_1 = uvec3(0u);
+    uint base_2 = _group_0_binding_6_cs[m];
+    GpuNode header_1 = _group_0_binding_2_cs[base_2];
+    lo_1 = header_1.min_;
+    vec3 _e14 = mesh_point(header_1.min_, header_1.max_, uvec3(65535u));
+    hi_1 = _e14;
+    reference = header_1.a;
+    if ((i >= 2u)) {
+        GpuNode n_7 = _group_0_binding_2_cs[(base_2 + (i >> 1u))];
+        q_1 = floatBitsToUint(n_7.min_);
+        reference = n_7.a;
+        if (((i & 1u) != 0u)) {
+            q_1 = floatBitsToUint(n_7.max_);
+            reference = n_7.b;
+        }
+        uvec3 _e39 = q_1;
+        uvec3 _e40 = mesh_box_lo(_e39);
+        vec3 _e41 = mesh_point(header_1.min_, header_1.max_, _e40);
+        lo_1 = _e41;
+        uvec3 _e44 = q_1;
+        uvec3 _e45 = mesh_box_hi(_e44);
+        vec3 _e46 = mesh_point(header_1.min_, header_1.max_, _e45);
+        hi_1 = _e46;
     }
-    uint _e22 = count;
-    return BvhNode(n_7.min_, n_7.max_, n_7.a, _e22);
+    uint _e47 = reference;
+    if (((_e47 & MESH_LEAF_BIT) == 0u)) {
+        vec3 _e52 = lo_1;
+        vec3 _e53 = hi_1;
+        uint _e55 = reference;
+        return BvhNode(_e52, _e53, (2u * _e55), 0u);
+    }
+    uint _e59 = reference;
+    uint count_1 = ((_e59 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+    if ((count_1 == 0u)) {
+        return BvhNode(uintBitsToFloat(uvec3(2139095039u)), uintBitsToFloat(uvec3(4286578687u)), 0u, 0u);
+    }
+    vec3 _e77 = lo_1;
+    vec3 _e78 = hi_1;
+    uint _e79 = reference;
+    return BvhNode(_e77, _e78, (_e79 & MESH_FIRST_MASK), count_1);
 }
 
 vec2 intersect_aabb(Ray ray_4, vec3 min_, vec3 max_) {
@@ -591,7 +654,7 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7) {
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     float stack_t[64] = float[64](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     uint sp_2 = 0u;
-    BvhNode node_1 = BvhNode(vec3(0.0), vec3(0.0), 0u, 0u);
+    BvhNode node = BvhNode(vec3(0.0), vec3(0.0), 0u, 0u);
     uint k_1 = 0u;
     bool found = false;
     uint _e3 = F32_INF;
@@ -601,9 +664,9 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7) {
     stack_t = float[64](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     sp_2 = 0u;
     BvhNode _e21 = mesh_node_query(g.mesh, 0u);
-    node_1 = _e21;
+    node = _e21;
     Ray _e23 = r_2;
-    BvhNode _e24 = node_1;
+    BvhNode _e24 = node;
     float _e26 = r_2.tmax;
     float _e27 = bvh_mesh_enter(_e23, _e24, _e26);
     uint _e29 = F32_INF;
@@ -612,9 +675,9 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7) {
         return _e32;
     }
     while(true) {
-        uint _e34 = node_1.count;
+        uint _e34 = node.count;
         if ((_e34 > 0u)) {
-            uint end = node_1.count;
+            uint end = node.count;
             k_1 = 0u;
             bool loop_init_1 = true;
             while(true) {
@@ -628,7 +691,7 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7) {
                     break;
                 }
                 Ray _e43 = r_2;
-                uint _e46 = node_1.first;
+                uint _e46 = node.first;
                 uint _e47 = k_1;
                 Triangle _e49 = mesh_triangle_query(g.mesh, (_e46 + _e47));
                 Intersection _e50 = intersect_triangle(_e43, _e49);
@@ -639,9 +702,9 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7) {
                 }
             }
         } else {
-            uint first = node_1.first;
-            BvhNode _e63 = mesh_node_query(g.mesh, first);
-            BvhNode _e67 = mesh_node_query(g.mesh, (first + 1u));
+            uint first_1 = node.first;
+            BvhNode _e63 = mesh_node_query(g.mesh, first_1);
+            BvhNode _e67 = mesh_node_query(g.mesh, (first_1 + 1u));
             Ray _e68 = r_2;
             float _e70 = r_2.tmax;
             float _e71 = bvh_mesh_enter(_e68, _e63, _e70);
@@ -655,15 +718,15 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7) {
                 uint _e87 = sp_2;
                 if (((max(_e71, _e75) < uintBitsToFloat(_e84)) && (_e87 < BVH_MESH_STACK))) {
                     uint _e91 = sp_2;
-                    stack[min(_e91, 63u)] = (left_first ? (first + 1u) : first);
+                    stack[min(_e91, 63u)] = (left_first ? (first_1 + 1u) : first_1);
                     uint _e98 = sp_2;
                     stack_t[min(_e98, 63u)] = max(_e71, _e75);
                     uint _e103 = sp_2;
                     sp_2 = (_e103 + 1u);
                 }
-                node_1 = _e67;
+                node = _e67;
                 if (left_first) {
-                    node_1 = _e63;
+                    node = _e63;
                 }
                 continue;
             }
@@ -689,7 +752,7 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7) {
         uint _e129 = sp_2;
         uint _e133 = stack[min(_e129, 63u)];
         BvhNode _e134 = mesh_node_query(g.mesh, _e133);
-        node_1 = _e134;
+        node = _e134;
     }
     Intersection _e135 = best_1;
     return _e135;
@@ -708,16 +771,16 @@ Intersection sphere_intersect(Sphere s, Ray ray_8) {
     vec3 f_1 = (ray_8.origin - s.center);
     float a_6 = dot(ray_8.dir, ray_8.dir);
     float b_7 = -(dot(f_1, ray_8.dir));
-    vec3 l_2 = (f_1 + (ray_8.dir * vec3((b_7 / a_6))));
+    vec3 l_1 = (f_1 + (ray_8.dir * vec3((b_7 / a_6))));
     float r2_ = (s.radius * s.radius);
-    float disc = (a_6 * (r2_ - dot(l_2, l_2)));
+    float disc = (a_6 * (r2_ - dot(l_1, l_1)));
     if ((!((disc >= 0.0)) || !((a_6 > 0.0)))) {
         uint _e30 = F32_INF;
         return Intersection(uintBitsToFloat(_e30), vec3(0.0, 0.0, 1.0), vec2(0.0));
     }
-    float q = (b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
-    float t0_1 = ((dot(f_1, f_1) - r2_) / q);
-    float t1_1 = (q / a_6);
+    float q_2 = (b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
+    float t0_1 = ((dot(f_1, f_1) - r2_) / q_2);
+    float t1_1 = (q_2 / a_6);
     t = min(t0_1, t1_1);
     float _e52 = t;
     if (!((_e52 >= ray_8.tmin))) {
@@ -789,9 +852,9 @@ Triangle load_triangle(uint slot_3) {
     return Triangle(v0_.xyz, v1_.xyz, v2_.xyz);
 }
 
-vec3 point_to_world(GpuInstance inst_3, vec3 p) {
-    vec4 q_1 = vec4(p, 1.0);
-    return vec3(dot(inst_3.object_to_world_0_, q_1), dot(inst_3.object_to_world_1_, q_1), dot(inst_3.object_to_world_2_, q_1));
+vec3 point_to_world(GpuInstance inst_3, vec3 p_2) {
+    vec4 q_3 = vec4(p_2, 1.0);
+    return vec3(dot(inst_3.object_to_world_0_, q_3), dot(inst_3.object_to_world_1_, q_3), dot(inst_3.object_to_world_2_, q_3));
 }
 
 vec3 decode_octahedral(uint bits) {
@@ -864,7 +927,7 @@ Hit finish_hit(Ray ray_11, Candidate c_1) {
     return _e139;
 }
 
-uint medium_at(vec3 p_1, uint exclude) {
+uint medium_at(vec3 p_3, uint exclude) {
     uint inside = 0u;
     float nearest = 0.0;
     uint i_2 = 0u;
@@ -874,7 +937,7 @@ uint medium_at(vec3 p_1, uint exclude) {
     FrameUniforms frame_1 = _group_0_binding_0_cs;
     vec3 _e12 = normalize_vec3f(vec3(0.5773, 0.5774, 0.5775));
     uint _e14 = F32_INF;
-    Ray probe = Ray(p_1, 0.0, _e12, uintBitsToFloat(_e14), 0u, 0u, 0u);
+    Ray probe = Ray(p_3, 0.0, _e12, uintBitsToFloat(_e14), 0u, 0u, 0u);
     inside = 0u;
     uint _e23 = F32_INF;
     nearest = uintBitsToFloat(_e23);
@@ -914,7 +977,7 @@ uint medium_at(vec3 p_1, uint exclude) {
 Candidate intersect_scene(Ray ray_12, bool shadow_2) {
     Candidate best_3 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_3 = 0u;
-    uint node_2 = 0u;
+    uint node_1 = 0u;
     uint near_1 = 0u;
     uint far_1 = 0u;
     uint _e3 = ray_count;
@@ -928,8 +991,8 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2) {
     }
     vec3 _e16 = safe_inverse(ray_12.dir);
     sp_3 = 0u;
-    node_2 = frame_2.tlas_root;
-    uint _e21 = node_2;
+    node_1 = frame_2.tlas_root;
+    uint _e21 = node_1;
     GpuNode root = _group_0_binding_2_cs[_e21];
     float _e30 = best_3.t;
     float _e31 = slab(root.min_, root.max_, ray_12.origin, _e16, ray_12.tmin, _e30);
@@ -939,7 +1002,7 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2) {
         return _e36;
     }
     while(true) {
-        uint _e37 = node_2;
+        uint _e37 = node_1;
         GpuNode n_8 = _group_0_binding_2_cs[_e37];
         if (((n_8.b & LEAF_BIT) != 0u)) {
             if (((n_8.b & ~(LEAF_BIT)) != 0u)) {
@@ -953,22 +1016,22 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2) {
                 }
             }
         } else {
-            uint left_1 = (frame_2.tlas_root + n_8.a);
-            uint right_1 = (left_1 + 1u);
-            GpuNode l_3 = _group_0_binding_2_cs[left_1];
-            GpuNode rr_1 = _group_0_binding_2_cs[right_1];
+            uint left = (frame_2.tlas_root + n_8.a);
+            uint right = (left + 1u);
+            GpuNode l_2 = _group_0_binding_2_cs[left];
+            GpuNode rr = _group_0_binding_2_cs[right];
             float _e77 = best_3.t;
-            float _e78 = slab(l_3.min_, l_3.max_, ray_12.origin, _e16, ray_12.tmin, _e77);
+            float _e78 = slab(l_2.min_, l_2.max_, ray_12.origin, _e16, ray_12.tmin, _e77);
             float _e84 = best_3.t;
-            float _e85 = slab(rr_1.min_, rr_1.max_, ray_12.origin, _e16, ray_12.tmin, _e84);
+            float _e85 = slab(rr.min_, rr.max_, ray_12.origin, _e16, ray_12.tmin, _e84);
             uint _e87 = F32_INF;
             uint _e91 = F32_INF;
             if (((_e78 < uintBitsToFloat(_e87)) && (_e85 < uintBitsToFloat(_e91)))) {
-                near_1 = left_1;
-                far_1 = right_1;
+                near_1 = left;
+                far_1 = right;
                 if ((_e85 < _e78)) {
-                    near_1 = right_1;
-                    far_1 = left_1;
+                    near_1 = right;
+                    far_1 = left;
                 }
                 uint _e98 = sp_3;
                 if ((_e98 < TLAS_STACK)) {
@@ -979,17 +1042,17 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2) {
                     sp_3 = (_e107 + 1u);
                 }
                 uint _e110 = near_1;
-                node_2 = _e110;
+                node_1 = _e110;
                 continue;
             }
             uint _e112 = F32_INF;
             if ((_e78 < uintBitsToFloat(_e112))) {
-                node_2 = left_1;
+                node_1 = left;
                 continue;
             }
             uint _e116 = F32_INF;
             if ((_e85 < uintBitsToFloat(_e116))) {
-                node_2 = right_1;
+                node_1 = right;
                 continue;
             }
         }
@@ -998,7 +1061,7 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2) {
         if ((_e121.x == NO_HIT)) {
             break;
         }
-        node_2 = _e121.x;
+        node_1 = _e121.x;
         sp_3 = _e121.y;
     }
     Candidate _e127 = best_3;
@@ -1030,7 +1093,7 @@ float srgb_channel(float c_2) {
 }
 
 vec4 texel_at(uint t_1, int x_2, int y) {
-    uint base_2 = _group_0_binding_6_cs[t_1];
+    uint base_3 = _group_0_binding_6_cs[t_1];
     uint _e10 = _group_0_binding_6_cs[(t_1 + 1u)];
     uint w_4 = max(_e10, 1u);
     uint _e17 = _group_0_binding_6_cs[(t_1 + 2u)];
@@ -1044,16 +1107,16 @@ vec4 texel_at(uint t_1, int x_2, int y) {
     uint yi = uint(_e37);
     uint index = ((yi * w_4) + xi);
     if ((format == 0u)) {
-        uint _e46 = _group_0_binding_7_cs[(base_2 + index)];
+        uint _e46 = _group_0_binding_7_cs[(base_3 + index)];
         vec4 c_8 = unpackUnorm4x8(_e46);
         float _e49 = srgb_channel(c_8.x);
         float _e51 = srgb_channel(c_8.y);
         float _e53 = srgb_channel(c_8.z);
         return vec4(_e49, _e51, _e53, c_8.w);
     }
-    uint _e61 = _group_0_binding_7_cs[(base_2 + (index * 2u))];
+    uint _e61 = _group_0_binding_7_cs[(base_3 + (index * 2u))];
     vec2 rg = unpackHalf2x16(_e61);
-    uint _e70 = _group_0_binding_7_cs[((base_2 + (index * 2u)) + 1u)];
+    uint _e70 = _group_0_binding_7_cs[((base_3 + (index * 2u)) + 1u)];
     vec2 ba = unpackHalf2x16(_e70);
     return vec4(rg, ba);
 }
@@ -1063,9 +1126,9 @@ vec4 sample_texture(uint t_2, vec2 uv) {
     float w_5 = float(max(_e6, 1u));
     uint _e14 = _group_0_binding_6_cs[(t_2 + 2u)];
     float h_3 = float(max(_e14, 1u));
-    vec2 p_3 = ((uv * vec2(w_5, h_3)) - vec2(0.5));
-    vec2 f_2 = floor(p_3);
-    vec2 fr = (p_3 - f_2);
+    vec2 p_5 = ((uv * vec2(w_5, h_3)) - vec2(0.5));
+    vec2 f_2 = floor(p_5);
+    vec2 fr = (p_5 - f_2);
     int _e26 = i32_from_f32_(f_2.x);
     int _e28 = i32_from_f32_(f_2.y);
     vec4 _e29 = texel_at(t_2, _e26, _e28);
@@ -1146,12 +1209,12 @@ PointLight load_PointLight(uint offset_9) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
-vec3 offset_origin(vec3 p_2, vec3 n_3) {
+vec3 offset_origin(vec3 p_4, vec3 n_3) {
     FrameUniforms _e3 = _group_0_binding_0_cs;
     GpuNode root_1 = _group_0_binding_2_cs[_e3.tlas_root];
-    vec3 a_8 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
+    vec3 a_8 = max(abs(p_4), max(abs(root_1.min_), abs(root_1.max_)));
     float m_3 = max(max(a_8.x, a_8.y), a_8.z);
-    return (p_2 + (n_3 * vec3((m_3 * (1.0 / 65536.0)))));
+    return (p_4 + (n_3 * vec3((m_3 * (1.0 / 65536.0)))));
 }
 
 float shadow_query(vec3 position, vec3 normal, vec3 dir, float dist) {
@@ -1365,9 +1428,9 @@ vec3 trace(Ray camera_ray) {
             uint _e137 = depth;
             uint top = (_e137 - 1u);
             uint _e144 = stack_1[min(top, 3u)].next;
-            uint child = (_e144 - 1u);
+            uint child_1 = (_e144 - 1u);
             vec3 _e151 = stack_1[min(top, 3u)].sum;
-            vec3 _e159 = stack_1[min(top, 3u)].weights[min(child, 0u)];
+            vec3 _e159 = stack_1[min(top, 3u)].weights[min(child_1, 0u)];
             vec3 _e160 = value;
             stack_1[min(top, 3u)].sum = (_e151 + (_e159 * _e160));
             have_value = false;
@@ -1461,14 +1524,19 @@ void render_pixel(uvec2 pixel_3) {
         }
     }
     vec3 _e55 = sum;
+    vec4 _e58 = vec4(_e55, float(frame_5.samples_per_pass));
     uint _e59 = bad;
-    vec4 _e62 = _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
-    _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e62 + vec4(_e55, float(frame_5.samples_per_pass)));
+    if ((tile_1.frame == 0u)) {
+        _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = _e58;
+    } else {
+        vec4 _e65 = _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
+        _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e65 + _e58);
+    }
     if ((_e59 > 0u)) {
         atomicAdd(_group_0_binding_9_cs[0], _e59);
     }
-    uint _e69 = ray_count;
-    atomicAdd(_group_0_binding_9_cs[1], _e69);
+    uint _e72 = ray_count;
+    atomicAdd(_group_0_binding_9_cs[1], _e72);
     return;
 }
 

@@ -202,13 +202,17 @@ static const uint RAY_CAMERA = 0u;
 static const uint NO_HIT = 4294967295u;
 static const bool HAS_MEDIA = false;
 static const uint MESH_GEOMETRY = 4294967295u;
-static const uint LEAF_BIT = 2147483648u;
+static const uint MESH_LEAF_BIT = 2147483648u;
+static const uint MESH_COUNT_SHIFT = 27u;
+static const uint MESH_COUNT_MASK = 15u;
+static const uint MESH_FIRST_MASK = 134217727u;
 static const uint BLAS_STACK = 64u;
 static const uint TLAS_STACK = 64u;
 static const uint BVH_MESH_STACK = 64u;
 static const float TAU = 6.2831855;
 static const float INV_PI = 0.31830987;
 static const bool HAS_SECONDARY_RAYS = false;
+static const uint LEAF_BIT = 2147483648u;
 static const bool HAS_BACKGROUND = true;
 static const uint FLAG_MEDIUM = 4u;
 static const uint RAY_SHADOW = 2u;
@@ -500,10 +504,25 @@ bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
     return true;
 }
 
-float slab(float3 lo, float3 hi, float3 origin, float3 inv_dir, float tmin_1, float tmax_2)
+uint3 mesh_box_lo(uint3 p)
 {
-    float3 t0_ = ((lo - origin) * inv_dir);
-    float3 t1_ = ((hi - origin) * inv_dir);
+    return uint3((p.x & 65535u), (p.x >> 16u), (p.y & 65535u));
+}
+
+float3 mesh_point(float3 origin, float3 scale, uint3 q)
+{
+    return (origin + (float3(q) * scale));
+}
+
+uint3 mesh_box_hi(uint3 p_1)
+{
+    return uint3((p_1.y >> 16u), (p_1.z & 65535u), (p_1.z >> 16u));
+}
+
+float slab(float3 lo, float3 hi, float3 origin_1, float3 inv_dir, float tmin_1, float tmax_2)
+{
+    float3 t0_ = ((lo - origin_1) * inv_dir);
+    float3 t1_ = ((hi - origin_1) * inv_dir);
     float3 near_2 = min(t0_, t1_);
     float3 far_2 = max(t0_, t1_);
     float enter = max(max(near_2.x, near_2.y), max(near_2.z, tmin_1));
@@ -537,7 +556,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
-    uint node = (uint)0;
+    uint child = (uint)0;
     uint k = (uint)0;
     uint near = (uint)0;
     uint far = (uint)0;
@@ -546,16 +565,21 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     const float3 _e8 = safe_inverse(ray_3.dir);
     const TriangleRay _e9 = prepare_triangle_ray(ray_3);
     uint base_1 = inst_2.blas_root;
+    GpuNode header = ConstructGpuNode(asfloat(nodes.Load3(base_1*32+0)), asuint(nodes.Load(base_1*32+12)), asfloat(nodes.Load3(base_1*32+16)), asuint(nodes.Load(base_1*32+28)));
+    float3 origin_2 = header.min_;
+    float3 scale_1 = header.max_;
     sp_1 = 0u;
-    node = base_1;
+    child = header.a;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e14 = node;
-        GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3(_e14*32+0)), asuint(nodes.Load(_e14*32+12)), asfloat(nodes.Load3(_e14*32+16)), asuint(nodes.Load(_e14*32+28)));
-        if (((n_6.b & LEAF_BIT) != 0u)) {
-            uint count_1 = (n_6.b & ~(LEAF_BIT));
+        uint _e20 = child;
+        if (((_e20 & MESH_LEAF_BIT) != 0u)) {
+            uint _e25 = child;
+            uint count = ((_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+            uint _e32 = child;
+            uint first = (_e32 & MESH_FIRST_MASK);
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
             bool loop_init = true;
@@ -563,83 +587,91 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e52 = k;
-                    k = (_e52 + 1u);
+                    uint _e59 = k;
+                    k = (_e59 + 1u);
                 }
                 loop_init = false;
-                uint _e29 = k;
-                if ((_e29 >= count_1)) {
+                uint _e37 = k;
+                if ((_e37 >= count)) {
                     break;
                 }
-                uint _e34 = k;
-                uint prim = ((inst_2.triangle_offset + n_6.a) + _e34);
-                float _e38 = best.t;
-                const float3 _e39 = hit_triangle(_e9, prim, ray_3.tmin, _e38);
-                uint _e42 = F32_INF;
-                if ((_e39.x < asfloat(_e42))) {
-                    Candidate c_6 = ConstructCandidate(_e39.x, slot_1, prim, _e39.yz, (0.0).xxx);
-                    const bool _e50 = accept(inst_2, world_ray, c_6);
-                    if (_e50) {
+                uint _e41 = k;
+                uint prim = ((inst_2.triangle_offset + first) + _e41);
+                float _e45 = best.t;
+                const float3 _e46 = hit_triangle(_e9, prim, ray_3.tmin, _e45);
+                uint _e49 = F32_INF;
+                if ((_e46.x < asfloat(_e49))) {
+                    Candidate c_6 = ConstructCandidate(_e46.x, slot_1, prim, _e46.yz, (0.0).xxx);
+                    const bool _e57 = accept(inst_2, world_ray, c_6);
+                    if (_e57) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e51 = best;
-                            const Candidate candidate_1 = _e51;
+                            Candidate _e58 = best;
+                            const Candidate candidate_1 = _e58;
                             return candidate_1;
                         }
                     }
                 }
             }
         } else {
-            uint left = (base_1 + n_6.a);
-            uint right = (left + 1u);
-            GpuNode l_1 = ConstructGpuNode(asfloat(nodes.Load3(left*32+0)), asuint(nodes.Load(left*32+12)), asfloat(nodes.Load3(left*32+16)), asuint(nodes.Load(left*32+28)));
-            GpuNode rr = ConstructGpuNode(asfloat(nodes.Load3(right*32+0)), asuint(nodes.Load(right*32+12)), asfloat(nodes.Load3(right*32+16)), asuint(nodes.Load(right*32+28)));
-            float _e70 = best.t;
-            const float _e71 = slab(l_1.min_, l_1.max_, ray_3.origin, _e8, ray_3.tmin, _e70);
-            float _e77 = best.t;
-            const float _e78 = slab(rr.min_, rr.max_, ray_3.origin, _e8, ray_3.tmin, _e77);
-            uint _e80 = F32_INF;
-            uint _e84 = F32_INF;
-            if (((_e71 < asfloat(_e80)) && (_e78 < asfloat(_e84)))) {
-                near = left;
-                far = right;
-                if (((_e78 < _e71) != shadow)) {
-                    near = right;
-                    far = left;
+            uint _e62 = child;
+            GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e62)*32+0)), asuint(nodes.Load((base_1 + _e62)*32+12)), asfloat(nodes.Load3((base_1 + _e62)*32+16)), asuint(nodes.Load((base_1 + _e62)*32+28)));
+            uint3 lq = asuint(n_6.min_);
+            uint3 rq = asuint(n_6.max_);
+            const uint3 _e71 = mesh_box_lo(lq);
+            const float3 _e72 = mesh_point(origin_2, scale_1, _e71);
+            const uint3 _e73 = mesh_box_hi(lq);
+            const float3 _e74 = mesh_point(origin_2, scale_1, _e73);
+            float _e78 = best.t;
+            const float _e79 = slab(_e72, _e74, ray_3.origin, _e8, ray_3.tmin, _e78);
+            const uint3 _e80 = mesh_box_lo(rq);
+            const float3 _e81 = mesh_point(origin_2, scale_1, _e80);
+            const uint3 _e82 = mesh_box_hi(rq);
+            const float3 _e83 = mesh_point(origin_2, scale_1, _e82);
+            float _e87 = best.t;
+            const float _e88 = slab(_e81, _e83, ray_3.origin, _e8, ray_3.tmin, _e87);
+            uint _e90 = F32_INF;
+            uint _e94 = F32_INF;
+            if (((_e79 < asfloat(_e90)) && (_e88 < asfloat(_e94)))) {
+                near = n_6.a;
+                far = n_6.b;
+                if (((_e88 < _e79) != shadow)) {
+                    near = n_6.b;
+                    far = n_6.a;
                 }
-                uint _e92 = sp_1;
-                if ((_e92 < BLAS_STACK)) {
-                    uint _e96 = sp_1;
-                    uint _e98 = far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e96), 127u)), 127u)] = _e98;
-                    uint _e103 = sp_1;
-                    sp_1 = (_e103 + 1u);
+                uint _e106 = sp_1;
+                if ((_e106 < BLAS_STACK)) {
+                    uint _e110 = sp_1;
+                    uint _e112 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e110), 127u)), 127u)] = _e112;
+                    uint _e117 = sp_1;
+                    sp_1 = (_e117 + 1u);
                 }
-                uint _e106 = near;
-                node = _e106;
+                uint _e120 = near;
+                child = _e120;
                 continue;
             }
-            uint _e108 = F32_INF;
-            if ((_e71 < asfloat(_e108))) {
-                node = left;
+            uint _e122 = F32_INF;
+            if ((_e79 < asfloat(_e122))) {
+                child = n_6.a;
                 continue;
             }
-            uint _e112 = F32_INF;
-            if ((_e78 < asfloat(_e112))) {
-                node = right;
+            uint _e127 = F32_INF;
+            if ((_e88 < asfloat(_e127))) {
+                child = n_6.b;
                 continue;
             }
         }
-        uint _e116 = sp_1;
-        const uint2 _e117 = pop(TLAS_STACK, _e116);
-        if ((_e117.x == NO_HIT)) {
+        uint _e132 = sp_1;
+        const uint2 _e133 = pop(TLAS_STACK, _e132);
+        if ((_e133.x == NO_HIT)) {
             break;
         }
-        node = _e117.x;
-        sp_1 = _e117.y;
+        child = _e133.x;
+        sp_1 = _e133.y;
     }
-    Candidate _e123 = best;
-    const Candidate candidate_2 = _e123;
+    Candidate _e139 = best;
+    const Candidate candidate_2 = _e139;
     return candidate_2;
 }
 
@@ -667,17 +699,53 @@ BvhNode ConstructBvhNode(float3 arg0, float3 arg1, uint arg2, uint arg3) {
 
 BvhNode mesh_node_query(uint m, uint i)
 {
-    uint count = (uint)0;
+    float3 lo_1 = (float3)0;
+    float3 hi_1 = (float3)0;
+    uint reference = (uint)0;
+    uint3 q_1 = (uint3)0;
 
-    uint _e4 = asuint(params.Load(m*4));
-    GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((_e4 + i)*32+0)), asuint(nodes.Load((_e4 + i)*32+12)), asfloat(nodes.Load3((_e4 + i)*32+16)), asuint(nodes.Load((_e4 + i)*32+28)));
-    count = 0u;
-    if (((n_7.b & 2147483648u) != 0u)) {
-        count = (n_7.b & 2147483647u);
+    uint base_2 = asuint(params.Load(m*4));
+    GpuNode header_1 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
+    lo_1 = header_1.min_;
+    const float3 _e14 = mesh_point(header_1.min_, header_1.max_, (65535u).xxx);
+    hi_1 = _e14;
+    reference = header_1.a;
+    if ((i >= 2u)) {
+        GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + (i >> 1u))*32+0)), asuint(nodes.Load((base_2 + (i >> 1u))*32+12)), asfloat(nodes.Load3((base_2 + (i >> 1u))*32+16)), asuint(nodes.Load((base_2 + (i >> 1u))*32+28)));
+        q_1 = asuint(n_7.min_);
+        reference = n_7.a;
+        if (((i & 1u) != 0u)) {
+            q_1 = asuint(n_7.max_);
+            reference = n_7.b;
+        }
+        uint3 _e39 = q_1;
+        const uint3 _e40 = mesh_box_lo(_e39);
+        const float3 _e41 = mesh_point(header_1.min_, header_1.max_, _e40);
+        lo_1 = _e41;
+        uint3 _e44 = q_1;
+        const uint3 _e45 = mesh_box_hi(_e44);
+        const float3 _e46 = mesh_point(header_1.min_, header_1.max_, _e45);
+        hi_1 = _e46;
     }
-    uint _e22 = count;
-    const BvhNode bvhnode = ConstructBvhNode(n_7.min_, n_7.max_, n_7.a, _e22);
-    return bvhnode;
+    uint _e47 = reference;
+    if (((_e47 & MESH_LEAF_BIT) == 0u)) {
+        float3 _e52 = lo_1;
+        float3 _e53 = hi_1;
+        uint _e55 = reference;
+        const BvhNode bvhnode = ConstructBvhNode(_e52, _e53, (2u * _e55), 0u);
+        return bvhnode;
+    }
+    uint _e59 = reference;
+    uint count_1 = ((_e59 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+    if ((count_1 == 0u)) {
+        const BvhNode bvhnode_1 = ConstructBvhNode(asfloat((2139095039u).xxx), asfloat((4286578687u).xxx), 0u, 0u);
+        return bvhnode_1;
+    }
+    float3 _e77 = lo_1;
+    float3 _e78 = hi_1;
+    uint _e79 = reference;
+    const BvhNode bvhnode_2 = ConstructBvhNode(_e77, _e78, (_e79 & MESH_FIRST_MASK), count_1);
+    return bvhnode_2;
 }
 
 float2 intersect_aabb(Ray ray_4, float3 min_, float3 max_)
@@ -790,7 +858,7 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7)
     uint stack[64] = (uint[64])0;
     float stack_t[64] = (float[64])0;
     uint sp_2 = (uint)0;
-    BvhNode node_1 = (BvhNode)0;
+    BvhNode node = (BvhNode)0;
     uint k_1 = (uint)0;
     bool found = (bool)0;
 
@@ -801,9 +869,9 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7)
     stack_t = ZeroValuearray64_float_();
     sp_2 = 0u;
     const BvhNode _e21 = mesh_node_query(g.mesh, 0u);
-    node_1 = _e21;
+    node = _e21;
     Ray _e23 = r_2;
-    BvhNode _e24 = node_1;
+    BvhNode _e24 = node;
     float _e26 = r_2.tmax;
     const float _e27 = bvh_mesh_enter(_e23, _e24, _e26);
     uint _e29 = F32_INF;
@@ -816,9 +884,9 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7)
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        uint _e34 = node_1.count;
+        uint _e34 = node.count;
         if ((_e34 > 0u)) {
-            uint end = node_1.count;
+            uint end = node.count;
             k_1 = 0u;
             uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
             bool loop_init_1 = true;
@@ -835,7 +903,7 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7)
                     break;
                 }
                 Ray _e43 = r_2;
-                uint _e46 = node_1.first;
+                uint _e46 = node.first;
                 uint _e47 = k_1;
                 const Triangle _e49 = mesh_triangle_query(g.mesh, (_e46 + _e47));
                 const Intersection _e50 = intersect_triangle(_e43, _e49);
@@ -846,9 +914,9 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7)
                 }
             }
         } else {
-            uint first = node_1.first;
-            const BvhNode _e63 = mesh_node_query(g.mesh, first);
-            const BvhNode _e67 = mesh_node_query(g.mesh, (first + 1u));
+            uint first_1 = node.first;
+            const BvhNode _e63 = mesh_node_query(g.mesh, first_1);
+            const BvhNode _e67 = mesh_node_query(g.mesh, (first_1 + 1u));
             Ray _e68 = r_2;
             float _e70 = r_2.tmax;
             const float _e71 = bvh_mesh_enter(_e68, _e63, _e70);
@@ -862,15 +930,15 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7)
                 uint _e87 = sp_2;
                 if (((max(_e71, _e75) < asfloat(_e84)) && (_e87 < BVH_MESH_STACK))) {
                     uint _e91 = sp_2;
-                    stack[min(uint(min(_e91, 63u)), 63u)] = (left_first ? (first + 1u) : first);
+                    stack[min(uint(min(_e91, 63u)), 63u)] = (left_first ? (first_1 + 1u) : first_1);
                     uint _e98 = sp_2;
                     stack_t[min(uint(min(_e98, 63u)), 63u)] = max(_e71, _e75);
                     uint _e103 = sp_2;
                     sp_2 = (_e103 + 1u);
                 }
-                node_1 = _e67;
+                node = _e67;
                 if (left_first) {
-                    node_1 = _e63;
+                    node = _e63;
                 }
                 continue;
             }
@@ -899,7 +967,7 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7)
         uint _e129 = sp_2;
         uint _e133 = stack[min(uint(min(_e129, 63u)), 63u)];
         const BvhNode _e134 = mesh_node_query(g.mesh, _e133);
-        node_1 = _e134;
+        node = _e134;
     }
     Intersection _e135 = best_1;
     const Intersection intersection_2 = _e135;
@@ -930,17 +998,17 @@ Intersection sphere_intersect(Sphere s, Ray ray_8)
     float3 f_1 = (ray_8.origin - s.center_);
     float a_6 = dot(ray_8.dir, ray_8.dir);
     float b_7 = -(dot(f_1, ray_8.dir));
-    float3 l_2 = (f_1 + (ray_8.dir * ((b_7 / a_6)).xxx));
+    float3 l_1 = (f_1 + (ray_8.dir * ((b_7 / a_6)).xxx));
     float r2_ = (s.radius * s.radius);
-    float disc = (a_6 * (r2_ - dot(l_2, l_2)));
+    float disc = (a_6 * (r2_ - dot(l_1, l_1)));
     if ((!((disc >= 0.0)) || !((a_6 > 0.0)))) {
         uint _e30 = F32_INF;
         const Intersection intersection_3 = ConstructIntersection(asfloat(_e30), float3(0.0, 0.0, 1.0), ZeroValuefloat2());
         return intersection_3;
     }
-    float q = (b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
-    float t0_1 = ((dot(f_1, f_1) - r2_) / q);
-    float t1_1 = (q / a_6);
+    float q_2 = (b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
+    float t0_1 = ((dot(f_1, f_1) - r2_) / q_2);
+    float t1_1 = (q_2 / a_6);
     t = min(t0_1, t1_1);
     float _e52 = t;
     if (!((_e52 >= ray_8.tmin))) {
@@ -1048,10 +1116,10 @@ Triangle load_triangle(uint slot_3)
     return triangle_1;
 }
 
-float3 point_to_world(GpuInstance inst_3, float3 p)
+float3 point_to_world(GpuInstance inst_3, float3 p_2)
 {
-    float4 q_1 = float4(p, 1.0);
-    return float3(dot(inst_3.object_to_world_0_, q_1), dot(inst_3.object_to_world_1_, q_1), dot(inst_3.object_to_world_2_, q_1));
+    float4 q_3 = float4(p_2, 1.0);
+    return float3(dot(inst_3.object_to_world_0_, q_3), dot(inst_3.object_to_world_1_, q_3), dot(inst_3.object_to_world_2_, q_3));
 }
 
 float3 decode_octahedral(uint bits)
@@ -1146,7 +1214,7 @@ Hit finish_hit(Ray ray_11, Candidate c_1)
     return hit_7;
 }
 
-uint medium_at(float3 p_1, uint exclude)
+uint medium_at(float3 p_3, uint exclude)
 {
     uint inside = (uint)0;
     float nearest = (float)0;
@@ -1158,7 +1226,7 @@ uint medium_at(float3 p_1, uint exclude)
     FrameUniforms frame_1 = frame;
     const float3 _e12 = normalize_vec3f(float3(0.5773, 0.5774, 0.5775));
     uint _e14 = F32_INF;
-    Ray probe = ConstructRay(p_1, 0.0, _e12, asfloat(_e14), 0u, 0u, 0u);
+    Ray probe = ConstructRay(p_3, 0.0, _e12, asfloat(_e14), 0u, 0u, 0u);
     inside = 0u;
     uint _e23 = F32_INF;
     nearest = asfloat(_e23);
@@ -1202,7 +1270,7 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
 {
     Candidate best_3 = (Candidate)0;
     uint sp_3 = (uint)0;
-    uint node_2 = (uint)0;
+    uint node_1 = (uint)0;
     uint near_1 = (uint)0;
     uint far_1 = (uint)0;
 
@@ -1218,8 +1286,8 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
     }
     const float3 _e16 = safe_inverse(ray_12.dir);
     sp_3 = 0u;
-    node_2 = frame_2.tlas_root;
-    uint _e21 = node_2;
+    node_1 = frame_2.tlas_root;
+    uint _e21 = node_1;
     GpuNode root = ConstructGpuNode(asfloat(nodes.Load3(_e21*32+0)), asuint(nodes.Load(_e21*32+12)), asfloat(nodes.Load3(_e21*32+16)), asuint(nodes.Load(_e21*32+28)));
     float _e30 = best_3.t;
     const float _e31 = slab(root.min_, root.max_, ray_12.origin, _e16, ray_12.tmin, _e30);
@@ -1233,7 +1301,7 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
     while(true) {
         if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        uint _e37 = node_2;
+        uint _e37 = node_1;
         GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3(_e37*32+0)), asuint(nodes.Load(_e37*32+12)), asfloat(nodes.Load3(_e37*32+16)), asuint(nodes.Load(_e37*32+28)));
         if (((n_8.b & LEAF_BIT) != 0u)) {
             if (((n_8.b & ~(LEAF_BIT)) != 0u)) {
@@ -1248,22 +1316,22 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
                 }
             }
         } else {
-            uint left_1 = (frame_2.tlas_root + n_8.a);
-            uint right_1 = (left_1 + 1u);
-            GpuNode l_3 = ConstructGpuNode(asfloat(nodes.Load3(left_1*32+0)), asuint(nodes.Load(left_1*32+12)), asfloat(nodes.Load3(left_1*32+16)), asuint(nodes.Load(left_1*32+28)));
-            GpuNode rr_1 = ConstructGpuNode(asfloat(nodes.Load3(right_1*32+0)), asuint(nodes.Load(right_1*32+12)), asfloat(nodes.Load3(right_1*32+16)), asuint(nodes.Load(right_1*32+28)));
+            uint left = (frame_2.tlas_root + n_8.a);
+            uint right = (left + 1u);
+            GpuNode l_2 = ConstructGpuNode(asfloat(nodes.Load3(left*32+0)), asuint(nodes.Load(left*32+12)), asfloat(nodes.Load3(left*32+16)), asuint(nodes.Load(left*32+28)));
+            GpuNode rr = ConstructGpuNode(asfloat(nodes.Load3(right*32+0)), asuint(nodes.Load(right*32+12)), asfloat(nodes.Load3(right*32+16)), asuint(nodes.Load(right*32+28)));
             float _e77 = best_3.t;
-            const float _e78 = slab(l_3.min_, l_3.max_, ray_12.origin, _e16, ray_12.tmin, _e77);
+            const float _e78 = slab(l_2.min_, l_2.max_, ray_12.origin, _e16, ray_12.tmin, _e77);
             float _e84 = best_3.t;
-            const float _e85 = slab(rr_1.min_, rr_1.max_, ray_12.origin, _e16, ray_12.tmin, _e84);
+            const float _e85 = slab(rr.min_, rr.max_, ray_12.origin, _e16, ray_12.tmin, _e84);
             uint _e87 = F32_INF;
             uint _e91 = F32_INF;
             if (((_e78 < asfloat(_e87)) && (_e85 < asfloat(_e91)))) {
-                near_1 = left_1;
-                far_1 = right_1;
+                near_1 = left;
+                far_1 = right;
                 if ((_e85 < _e78)) {
-                    near_1 = right_1;
-                    far_1 = left_1;
+                    near_1 = right;
+                    far_1 = left;
                 }
                 uint _e98 = sp_3;
                 if ((_e98 < TLAS_STACK)) {
@@ -1274,17 +1342,17 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
                     sp_3 = (_e107 + 1u);
                 }
                 uint _e110 = near_1;
-                node_2 = _e110;
+                node_1 = _e110;
                 continue;
             }
             uint _e112 = F32_INF;
             if ((_e78 < asfloat(_e112))) {
-                node_2 = left_1;
+                node_1 = left;
                 continue;
             }
             uint _e116 = F32_INF;
             if ((_e85 < asfloat(_e116))) {
-                node_2 = right_1;
+                node_1 = right;
                 continue;
             }
         }
@@ -1293,7 +1361,7 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
         if ((_e121.x == NO_HIT)) {
             break;
         }
-        node_2 = _e121.x;
+        node_1 = _e121.x;
         sp_3 = _e121.y;
     }
     Candidate _e127 = best_3;
@@ -1348,7 +1416,7 @@ float srgb_channel(float c_2)
 
 float4 texel_at(uint t_1, int x_2, int y)
 {
-    uint base_2 = asuint(params.Load(t_1*4));
+    uint base_3 = asuint(params.Load(t_1*4));
     uint _e10 = asuint(params.Load((t_1 + 1u)*4));
     uint w_4 = max(_e10, 1u);
     uint _e17 = asuint(params.Load((t_1 + 2u)*4));
@@ -1362,16 +1430,16 @@ float4 texel_at(uint t_1, int x_2, int y)
     uint yi = uint(_e37);
     uint index = ((yi * w_4) + xi);
     if ((format == 0u)) {
-        uint _e46 = asuint(texels.Load((base_2 + index)*4));
+        uint _e46 = asuint(texels.Load((base_3 + index)*4));
         float4 c_8 = (float4(_e46 & 0xFF, _e46 >> 8 & 0xFF, _e46 >> 16 & 0xFF, _e46 >> 24) / 255.0);
         const float _e49 = srgb_channel(c_8.x);
         const float _e51 = srgb_channel(c_8.y);
         const float _e53 = srgb_channel(c_8.z);
         return float4(_e49, _e51, _e53, c_8.w);
     }
-    uint _e61 = asuint(texels.Load((base_2 + (index * 2u))*4));
+    uint _e61 = asuint(texels.Load((base_3 + (index * 2u))*4));
     float2 rg = float2(f16tof32(_e61), f16tof32((_e61) >> 16));
-    uint _e70 = asuint(texels.Load(((base_2 + (index * 2u)) + 1u)*4));
+    uint _e70 = asuint(texels.Load(((base_3 + (index * 2u)) + 1u)*4));
     float2 ba = float2(f16tof32(_e70), f16tof32((_e70) >> 16));
     return float4(rg, ba);
 }
@@ -1382,9 +1450,9 @@ float4 sample_texture(uint t_2, float2 uv)
     float w_5 = float(max(_e6, 1u));
     uint _e14 = asuint(params.Load((t_2 + 2u)*4));
     float h_3 = float(max(_e14, 1u));
-    float2 p_3 = ((uv * float2(w_5, h_3)) - (0.5).xx);
-    float2 f_2 = floor(p_3);
-    float2 fr = (p_3 - f_2);
+    float2 p_5 = ((uv * float2(w_5, h_3)) - (0.5).xx);
+    float2 f_2 = floor(p_5);
+    float2 fr = (p_5 - f_2);
     const int _e26 = i32_from_f32_(f_2.x);
     const int _e28 = i32_from_f32_(f_2.y);
     const float4 _e29 = texel_at(t_2, _e26, _e28);
@@ -1495,13 +1563,13 @@ PointLight load_PointLight(uint offset_9)
     return pointlight;
 }
 
-float3 offset_origin(float3 p_2, float3 n_3)
+float3 offset_origin(float3 p_4, float3 n_3)
 {
     FrameUniforms _e3 = frame;
     GpuNode root_1 = ConstructGpuNode(asfloat(nodes.Load3(_e3.tlas_root*32+0)), asuint(nodes.Load(_e3.tlas_root*32+12)), asfloat(nodes.Load3(_e3.tlas_root*32+16)), asuint(nodes.Load(_e3.tlas_root*32+28)));
-    float3 a_8 = max(abs(p_2), max(abs(root_1.min_), abs(root_1.max_)));
+    float3 a_8 = max(abs(p_4), max(abs(root_1.min_), abs(root_1.max_)));
     float m_3 = max(max(a_8.x, a_8.y), a_8.z);
-    return (p_2 + (n_3 * ((m_3 * (1.0 / 65536.0))).xxx));
+    return (p_4 + (n_3 * ((m_3 * (1.0 / 65536.0))).xxx));
 }
 
 float shadow_query(float3 position, float3 normal, float3 dir, float dist)
@@ -1774,9 +1842,9 @@ float3 trace(Ray camera_ray)
             uint _e137 = depth;
             uint top = (_e137 - 1u);
             uint _e144 = stack_1[min(uint(min(top, 3u)), 3u)].next;
-            uint child = (_e144 - 1u);
+            uint child_1 = (_e144 - 1u);
             float3 _e151 = stack_1[min(uint(min(top, 3u)), 3u)].sum;
-            float3 _e159 = stack_1[min(uint(min(top, 3u)), 3u)].weights[min(uint(min(child, 0u)), 0u)];
+            float3 _e159 = stack_1[min(uint(min(top, 3u)), 3u)].weights[min(uint(min(child_1, 0u)), 0u)];
             float3 _e160 = value;
             stack_1[min(uint(min(top, 3u)), 3u)].sum = (_e151 + (_e159 * _e160));
             have_value = false;
@@ -1877,14 +1945,19 @@ void render_pixel(uint2 pixel_3)
         }
     }
     float3 _e55 = sum;
+    float4 _e58 = float4(_e55, float(frame_5.samples_per_pass));
     uint _e59 = bad;
-    float4 _e62 = asfloat(accum.Load4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16));
-    accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint((_e62 + float4(_e55, float(frame_5.samples_per_pass)))));
+    if ((tile_1.frame == 0u)) {
+        accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint(_e58));
+    } else {
+        float4 _e65 = asfloat(accum.Load4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16));
+        accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint((_e65 + _e58)));
+    }
     if ((_e59 > 0u)) {
         counters.InterlockedAdd(0, _e59);
     }
-    uint _e69 = ray_count;
-    counters.InterlockedAdd(4, _e69);
+    uint _e72 = ray_count;
+    counters.InterlockedAdd(4, _e72);
     return;
 }
 

@@ -98,7 +98,7 @@ struct GpuNode {
 };
 typedef GpuNode type_9[1];
 typedef metal::float4 type_10[1];
-struct type_11 {
+struct type_12 {
     uint inner[128];
 };
 struct BvhMesh {
@@ -111,10 +111,10 @@ struct Intersection {
     metal::float2 uv;
     char _pad3[8];
 };
-struct type_12 {
+struct type_13 {
     uint inner[64];
 };
-struct type_13 {
+struct type_14 {
     float inner[64];
 };
 struct BvhNode {
@@ -145,7 +145,7 @@ struct Hit {
     uint primitive;
     char _pad8[12];
 };
-typedef metal::uint4 type_15[1];
+typedef metal::uint4 type_16[1];
 struct Skybox {
     uint image;
     float intensity;
@@ -167,7 +167,7 @@ struct PointLight {
     float inner_range;
     char _pad5[8];
 };
-struct type_17 {
+struct type_18 {
     metal::float3 inner[1];
 };
 struct Frame {
@@ -176,16 +176,16 @@ struct Frame {
     uint slot;
     char _pad3[12];
     metal::float3 sum;
-    type_17 dirs;
-    type_17 weights;
+    type_18 dirs;
+    type_18 weights;
     uint count;
     uint next;
     char _pad8[8];
 };
-struct type_18 {
+struct type_19 {
     Frame inner[4];
 };
-typedef metal::atomic_uint type_21[1];
+typedef metal::atomic_uint type_22[1];
 constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint SCATTER = 1000003u;
@@ -194,13 +194,17 @@ constant uint RAY_CAMERA = 0u;
 constant uint NO_HIT = 4294967295u;
 constant bool HAS_MEDIA = false;
 constant uint MESH_GEOMETRY = 4294967295u;
-constant uint LEAF_BIT = 2147483648u;
+constant uint MESH_LEAF_BIT = 2147483648u;
+constant uint MESH_COUNT_SHIFT = 27u;
+constant uint MESH_COUNT_MASK = 15u;
+constant uint MESH_FIRST_MASK = 134217727u;
 constant uint BLAS_STACK = 64u;
 constant uint TLAS_STACK = 64u;
 constant uint BVH_MESH_STACK = 64u;
 constant float TAU = 6.2831855;
 constant float INV_PI = 0.31830987;
 constant bool HAS_SECONDARY_RAYS = false;
+constant uint LEAF_BIT = 2147483648u;
 constant bool HAS_BACKGROUND = true;
 constant uint FLAG_MEDIUM = 4u;
 constant uint RAY_SHADOW = 2u;
@@ -473,17 +477,37 @@ bool accept(
     return true;
 }
 
+metal::uint3 mesh_box_lo(
+    metal::uint3 p
+) {
+    return metal::uint3(p.x & 65535u, p.x >> 16u, p.y & 65535u);
+}
+
+metal::float3 mesh_point(
+    metal::float3 origin,
+    metal::float3 scale,
+    metal::uint3 q
+) {
+    return origin + (static_cast<metal::float3>(q) * scale);
+}
+
+metal::uint3 mesh_box_hi(
+    metal::uint3 p_1
+) {
+    return metal::uint3(p_1.y >> 16u, p_1.z & 65535u, p_1.z >> 16u);
+}
+
 float slab(
     metal::float3 lo,
     metal::float3 hi,
-    metal::float3 origin,
+    metal::float3 origin_1,
     metal::float3 inv_dir,
     float tmin_1,
     float tmax_2,
     thread uint& F32_INF
 ) {
-    metal::float3 t0_ = (lo - origin) * inv_dir;
-    metal::float3 t1_ = (hi - origin) * inv_dir;
+    metal::float3 t0_ = (lo - origin_1) * inv_dir;
+    metal::float3 t1_ = (hi - origin_1) * inv_dir;
     metal::float3 near_2 = metal::min(t0_, t1_);
     metal::float3 far_2 = metal::max(t0_, t1_);
     float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, tmin_1));
@@ -498,7 +522,7 @@ float slab(
 metal::uint2 pop(
     uint base,
     uint sp,
-    thread type_11& traversal_stack
+    thread type_12& traversal_stack
 ) {
     if (sp == 0u) {
         return metal::uint2(NO_HIT, 0u);
@@ -517,12 +541,12 @@ Candidate intersect_mesh(
     thread uint& F32_INF,
     device type_9 const& nodes,
     device type_10 const& triangles,
-    thread type_11& traversal_stack,
+    thread type_12& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Candidate best = {};
     uint sp_1 = {};
-    uint node = {};
+    uint child = {};
     uint k = {};
     uint near = {};
     uint far = {};
@@ -530,16 +554,21 @@ Candidate intersect_mesh(
     metal::float3 _e8 = safe_inverse(ray_3.dir);
     TriangleRay _e9 = prepare_triangle_ray(ray_3);
     uint base_1 = inst_2.blas_root;
+    GpuNode header = nodes[base_1];
+    metal::float3 origin_2 = header.min;
+    metal::float3 scale_1 = header.max;
     sp_1 = 0u;
-    node = base_1;
+    child = header.a;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        uint _e14 = node;
-        GpuNode n_6 = nodes[_e14];
-        if ((n_6.b & LEAF_BIT) != 0u) {
-            uint count_1 = n_6.b & ~(LEAF_BIT);
+        uint _e20 = child;
+        if ((_e20 & MESH_LEAF_BIT) != 0u) {
+            uint _e25 = child;
+            uint count = (_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK;
+            uint _e32 = child;
+            uint first = _e32 & MESH_FIRST_MASK;
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u);
             bool loop_init = true;
@@ -547,82 +576,90 @@ Candidate intersect_mesh(
                 if (metal::all(loop_bound_1 == uint2(0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e52 = k;
-                    k = _e52 + 1u;
+                    uint _e59 = k;
+                    k = _e59 + 1u;
                 }
                 loop_init = false;
-                uint _e29 = k;
-                if (_e29 >= count_1) {
+                uint _e37 = k;
+                if (_e37 >= count) {
                     break;
                 }
-                uint _e34 = k;
-                uint prim = (inst_2.triangle_offset + n_6.a) + _e34;
-                float _e38 = best.t;
-                metal::float3 _e39 = hit_triangle(_e9, prim, ray_3.tmin, _e38, F32_INF, triangles, _buffer_sizes);
-                uint _e42 = F32_INF;
-                if (_e39.x < as_type<float>(_e42)) {
-                    Candidate c_6 = Candidate {_e39.x, slot_1, prim, {}, _e39.yz, {}, metal::float3(0.0)};
-                    bool _e50 = accept(inst_2, world_ray, c_6);
-                    if (_e50) {
+                uint _e41 = k;
+                uint prim = (inst_2.triangle_offset + first) + _e41;
+                float _e45 = best.t;
+                metal::float3 _e46 = hit_triangle(_e9, prim, ray_3.tmin, _e45, F32_INF, triangles, _buffer_sizes);
+                uint _e49 = F32_INF;
+                if (_e46.x < as_type<float>(_e49)) {
+                    Candidate c_6 = Candidate {_e46.x, slot_1, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e57 = accept(inst_2, world_ray, c_6);
+                    if (_e57) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e51 = best;
-                            return _e51;
+                            Candidate _e58 = best;
+                            return _e58;
                         }
                     }
                 }
             }
         } else {
-            uint left = base_1 + n_6.a;
-            uint right = left + 1u;
-            GpuNode l_1 = nodes[left];
-            GpuNode rr = nodes[right];
-            float _e70 = best.t;
-            float _e71 = slab(l_1.min, l_1.max, ray_3.origin, _e8, ray_3.tmin, _e70, F32_INF);
-            float _e77 = best.t;
-            float _e78 = slab(rr.min, rr.max, ray_3.origin, _e8, ray_3.tmin, _e77, F32_INF);
-            uint _e80 = F32_INF;
-            uint _e84 = F32_INF;
-            if ((_e71 < as_type<float>(_e80)) && (_e78 < as_type<float>(_e84))) {
-                near = left;
-                far = right;
-                if ((_e78 < _e71) != shadow) {
-                    near = right;
-                    far = left;
+            uint _e62 = child;
+            GpuNode n_6 = nodes[base_1 + _e62];
+            metal::uint3 lq = as_type<metal::uint3>(n_6.min);
+            metal::uint3 rq = as_type<metal::uint3>(n_6.max);
+            metal::uint3 _e71 = mesh_box_lo(lq);
+            metal::float3 _e72 = mesh_point(origin_2, scale_1, _e71);
+            metal::uint3 _e73 = mesh_box_hi(lq);
+            metal::float3 _e74 = mesh_point(origin_2, scale_1, _e73);
+            float _e78 = best.t;
+            float _e79 = slab(_e72, _e74, ray_3.origin, _e8, ray_3.tmin, _e78, F32_INF);
+            metal::uint3 _e80 = mesh_box_lo(rq);
+            metal::float3 _e81 = mesh_point(origin_2, scale_1, _e80);
+            metal::uint3 _e82 = mesh_box_hi(rq);
+            metal::float3 _e83 = mesh_point(origin_2, scale_1, _e82);
+            float _e87 = best.t;
+            float _e88 = slab(_e81, _e83, ray_3.origin, _e8, ray_3.tmin, _e87, F32_INF);
+            uint _e90 = F32_INF;
+            uint _e94 = F32_INF;
+            if ((_e79 < as_type<float>(_e90)) && (_e88 < as_type<float>(_e94))) {
+                near = n_6.a;
+                far = n_6.b;
+                if ((_e88 < _e79) != shadow) {
+                    near = n_6.b;
+                    far = n_6.a;
                 }
-                uint _e92 = sp_1;
-                if (_e92 < BLAS_STACK) {
-                    uint _e96 = sp_1;
-                    uint _e98 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e96, 127u)] = _e98;
-                    uint _e103 = sp_1;
-                    sp_1 = _e103 + 1u;
+                uint _e106 = sp_1;
+                if (_e106 < BLAS_STACK) {
+                    uint _e110 = sp_1;
+                    uint _e112 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e110, 127u)] = _e112;
+                    uint _e117 = sp_1;
+                    sp_1 = _e117 + 1u;
                 }
-                uint _e106 = near;
-                node = _e106;
+                uint _e120 = near;
+                child = _e120;
                 continue;
             }
-            uint _e108 = F32_INF;
-            if (_e71 < as_type<float>(_e108)) {
-                node = left;
+            uint _e122 = F32_INF;
+            if (_e79 < as_type<float>(_e122)) {
+                child = n_6.a;
                 continue;
             }
-            uint _e112 = F32_INF;
-            if (_e78 < as_type<float>(_e112)) {
-                node = right;
+            uint _e127 = F32_INF;
+            if (_e88 < as_type<float>(_e127)) {
+                child = n_6.b;
                 continue;
             }
         }
-        uint _e116 = sp_1;
-        metal::uint2 _e117 = pop(TLAS_STACK, _e116, traversal_stack);
-        if (_e117.x == NO_HIT) {
+        uint _e132 = sp_1;
+        metal::uint2 _e133 = pop(TLAS_STACK, _e132, traversal_stack);
+        if (_e133.x == NO_HIT) {
             break;
         }
-        node = _e117.x;
-        sp_1 = _e117.y;
+        child = _e133.x;
+        sp_1 = _e133.y;
     }
-    Candidate _e123 = best;
-    return _e123;
+    Candidate _e139 = best;
+    return _e139;
 }
 
 BvhMesh load_BvhMesh(
@@ -641,15 +678,49 @@ BvhNode mesh_node_query(
     device type_9 const& nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint count = {};
-    uint _e4 = params[m];
-    GpuNode n_7 = nodes[_e4 + i];
-    count = 0u;
-    if ((n_7.b & 2147483648u) != 0u) {
-        count = n_7.b & 2147483647u;
+    metal::float3 lo_1 = {};
+    metal::float3 hi_1 = {};
+    uint reference = {};
+    metal::uint3 q_1 = {};
+    uint base_2 = params[m];
+    GpuNode header_1 = nodes[base_2];
+    lo_1 = header_1.min;
+    metal::float3 _e14 = mesh_point(header_1.min, header_1.max, metal::uint3(65535u));
+    hi_1 = _e14;
+    reference = header_1.a;
+    if (i >= 2u) {
+        GpuNode n_7 = nodes[base_2 + (i >> 1u)];
+        q_1 = as_type<metal::uint3>(n_7.min);
+        reference = n_7.a;
+        if ((i & 1u) != 0u) {
+            q_1 = as_type<metal::uint3>(n_7.max);
+            reference = n_7.b;
+        }
+        metal::uint3 _e39 = q_1;
+        metal::uint3 _e40 = mesh_box_lo(_e39);
+        metal::float3 _e41 = mesh_point(header_1.min, header_1.max, _e40);
+        lo_1 = _e41;
+        metal::uint3 _e44 = q_1;
+        metal::uint3 _e45 = mesh_box_hi(_e44);
+        metal::float3 _e46 = mesh_point(header_1.min, header_1.max, _e45);
+        hi_1 = _e46;
     }
-    uint _e22 = count;
-    return BvhNode {n_7.min, n_7.max, n_7.a, _e22};
+    uint _e47 = reference;
+    if ((_e47 & MESH_LEAF_BIT) == 0u) {
+        metal::float3 _e52 = lo_1;
+        metal::float3 _e53 = hi_1;
+        uint _e55 = reference;
+        return BvhNode {_e52, _e53, 2u * _e55, 0u};
+    }
+    uint _e59 = reference;
+    uint count_1 = (_e59 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK;
+    if (count_1 == 0u) {
+        return BvhNode {as_type<metal::float3>(metal::uint3(2139095039u)), as_type<metal::float3>(metal::uint3(4286578687u)), 0u, 0u};
+    }
+    metal::float3 _e77 = lo_1;
+    metal::float3 _e78 = hi_1;
+    uint _e79 = reference;
+    return BvhNode {_e77, _e78, _e79 & MESH_FIRST_MASK, count_1};
 }
 
 metal::float2 intersect_aabb(
@@ -753,22 +824,22 @@ Intersection bvh_mesh_intersect(
 ) {
     Intersection best_1 = {};
     Ray r_2 = {};
-    type_12 stack = {};
-    type_13 stack_t = {};
+    type_13 stack = {};
+    type_14 stack_t = {};
     uint sp_2 = {};
-    BvhNode node_1 = {};
+    BvhNode node = {};
     uint k_1 = {};
     bool found = {};
     uint _e3 = F32_INF;
     best_1 = Intersection {as_type<float>(_e3), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     r_2 = ray_7;
-    stack = type_12 {};
-    stack_t = type_13 {};
+    stack = type_13 {};
+    stack_t = type_14 {};
     sp_2 = 0u;
     BvhNode _e21 = mesh_node_query(g.mesh, 0u, params, nodes, _buffer_sizes);
-    node_1 = _e21;
+    node = _e21;
     Ray _e23 = r_2;
-    BvhNode _e24 = node_1;
+    BvhNode _e24 = node;
     float _e26 = r_2.tmax;
     float _e27 = bvh_mesh_enter(_e23, _e24, _e26, F32_INF, F32_NEG_INF);
     uint _e29 = F32_INF;
@@ -780,9 +851,9 @@ Intersection bvh_mesh_intersect(
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        uint _e34 = node_1.count;
+        uint _e34 = node.count;
         if (_e34 > 0u) {
-            uint end = node_1.count;
+            uint end = node.count;
             k_1 = 0u;
             uint2 loop_bound_3 = uint2(4294967295u);
             bool loop_init_1 = true;
@@ -799,7 +870,7 @@ Intersection bvh_mesh_intersect(
                     break;
                 }
                 Ray _e43 = r_2;
-                uint _e46 = node_1.first;
+                uint _e46 = node.first;
                 uint _e47 = k_1;
                 Triangle _e49 = mesh_triangle_query(g.mesh, _e46 + _e47, params, triangles, _buffer_sizes);
                 Intersection _e50 = intersect_triangle(_e43, _e49, F32_INF);
@@ -810,9 +881,9 @@ Intersection bvh_mesh_intersect(
                 }
             }
         } else {
-            uint first = node_1.first;
-            BvhNode _e63 = mesh_node_query(g.mesh, first, params, nodes, _buffer_sizes);
-            BvhNode _e67 = mesh_node_query(g.mesh, first + 1u, params, nodes, _buffer_sizes);
+            uint first_1 = node.first;
+            BvhNode _e63 = mesh_node_query(g.mesh, first_1, params, nodes, _buffer_sizes);
+            BvhNode _e67 = mesh_node_query(g.mesh, first_1 + 1u, params, nodes, _buffer_sizes);
             Ray _e68 = r_2;
             float _e70 = r_2.tmax;
             float _e71 = bvh_mesh_enter(_e68, _e63, _e70, F32_INF, F32_NEG_INF);
@@ -826,15 +897,15 @@ Intersection bvh_mesh_intersect(
                 uint _e87 = sp_2;
                 if ((metal::max(_e71, _e75) < as_type<float>(_e84)) && (_e87 < BVH_MESH_STACK)) {
                     uint _e91 = sp_2;
-                    stack.inner[metal::min(_e91, 63u)] = left_first ? (first + 1u) : first;
+                    stack.inner[metal::min(_e91, 63u)] = left_first ? (first_1 + 1u) : first_1;
                     uint _e98 = sp_2;
                     stack_t.inner[metal::min(_e98, 63u)] = metal::max(_e71, _e75);
                     uint _e103 = sp_2;
                     sp_2 = _e103 + 1u;
                 }
-                node_1 = _e67;
+                node = _e67;
                 if (left_first) {
-                    node_1 = _e63;
+                    node = _e63;
                 }
                 continue;
             }
@@ -863,7 +934,7 @@ Intersection bvh_mesh_intersect(
         uint _e129 = sp_2;
         uint _e133 = stack.inner[metal::min(_e129, 63u)];
         BvhNode _e134 = mesh_node_query(g.mesh, _e133, params, nodes, _buffer_sizes);
-        node_1 = _e134;
+        node = _e134;
     }
     Intersection _e135 = best_1;
     return _e135;
@@ -890,16 +961,16 @@ Intersection sphere_intersect(
     metal::float3 f_1 = ray_8.origin - s.center;
     float a_6 = metal::dot(ray_8.dir, ray_8.dir);
     float b_7 = -(metal::dot(f_1, ray_8.dir));
-    metal::float3 l_2 = f_1 + (ray_8.dir * metal::float3(b_7 / a_6));
+    metal::float3 l_1 = f_1 + (ray_8.dir * metal::float3(b_7 / a_6));
     float r2_ = s.radius * s.radius;
-    float disc = a_6 * (r2_ - metal::dot(l_2, l_2));
+    float disc = a_6 * (r2_ - metal::dot(l_1, l_1));
     if (!((disc >= 0.0)) || !((a_6 > 0.0))) {
         uint _e30 = F32_INF;
         return Intersection {as_type<float>(_e30), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     }
-    float q = b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * metal::sqrt(disc));
-    float t0_1 = (metal::dot(f_1, f_1) - r2_) / q;
-    float t1_1 = q / a_6;
+    float q_2 = b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * metal::sqrt(disc));
+    float t0_1 = (metal::dot(f_1, f_1) - r2_) / q_2;
+    float t1_1 = q_2 / a_6;
     t = metal::min(t0_1, t1_1);
     float _e52 = t;
     if (!((_e52 >= ray_8.tmin))) {
@@ -958,7 +1029,7 @@ Candidate intersect_object(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
-    thread type_11& traversal_stack,
+    thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1000,10 +1071,10 @@ Triangle load_triangle(
 
 metal::float3 point_to_world(
     GpuInstance inst_3,
-    metal::float3 p
+    metal::float3 p_2
 ) {
-    metal::float4 q_1 = metal::float4(p, 1.0);
-    return metal::float3(metal::dot(inst_3.object_to_world_0_, q_1), metal::dot(inst_3.object_to_world_1_, q_1), metal::dot(inst_3.object_to_world_2_, q_1));
+    metal::float4 q_3 = metal::float4(p_2, 1.0);
+    return metal::float3(metal::dot(inst_3.object_to_world_0_, q_3), metal::dot(inst_3.object_to_world_1_, q_3), metal::dot(inst_3.object_to_world_2_, q_3));
 }
 
 metal::float3 decode_octahedral(
@@ -1040,7 +1111,7 @@ Hit finish_hit(
     Candidate c_1,
     device type_8 const& instances,
     device type_10 const& triangles,
-    device type_15 const& attributes,
+    device type_16 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Hit hit = {};
@@ -1089,7 +1160,7 @@ Hit finish_hit(
 }
 
 uint medium_at(
-    metal::float3 p_1,
+    metal::float3 p_3,
     uint exclude,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1097,9 +1168,9 @@ uint medium_at(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
-    thread type_11& traversal_stack,
+    thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
-    device type_15 const& attributes,
+    device type_16 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint inside = {};
@@ -1111,7 +1182,7 @@ uint medium_at(
     FrameUniforms frame_1 = frame;
     metal::float3 _e12 = normalize_vec3f(metal::float3(0.5773, 0.5774, 0.5775));
     uint _e14 = F32_INF;
-    Ray probe = Ray {p_1, 0.0, _e12, as_type<float>(_e14), 0u, 0u, 0u};
+    Ray probe = Ray {p_3, 0.0, _e12, as_type<float>(_e14), 0u, 0u, 0u};
     inside = 0u;
     uint _e23 = F32_INF;
     nearest = as_type<float>(_e23);
@@ -1160,14 +1231,14 @@ Candidate intersect_scene(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
-    thread type_11& traversal_stack,
+    thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Candidate best_3 = {};
     uint sp_3 = {};
-    uint node_2 = {};
+    uint node_1 = {};
     uint near_1 = {};
     uint far_1 = {};
     uint _e3 = ray_count;
@@ -1181,8 +1252,8 @@ Candidate intersect_scene(
     }
     metal::float3 _e16 = safe_inverse(ray_12.dir);
     sp_3 = 0u;
-    node_2 = frame_2.tlas_root;
-    uint _e21 = node_2;
+    node_1 = frame_2.tlas_root;
+    uint _e21 = node_1;
     GpuNode root = nodes[_e21];
     float _e30 = best_3.t;
     float _e31 = slab(root.min, root.max, ray_12.origin, _e16, ray_12.tmin, _e30, F32_INF);
@@ -1195,7 +1266,7 @@ Candidate intersect_scene(
     while(true) {
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        uint _e37 = node_2;
+        uint _e37 = node_1;
         GpuNode n_8 = nodes[_e37];
         if ((n_8.b & LEAF_BIT) != 0u) {
             if ((n_8.b & ~(LEAF_BIT)) != 0u) {
@@ -1209,22 +1280,22 @@ Candidate intersect_scene(
                 }
             }
         } else {
-            uint left_1 = frame_2.tlas_root + n_8.a;
-            uint right_1 = left_1 + 1u;
-            GpuNode l_3 = nodes[left_1];
-            GpuNode rr_1 = nodes[right_1];
+            uint left = frame_2.tlas_root + n_8.a;
+            uint right = left + 1u;
+            GpuNode l_2 = nodes[left];
+            GpuNode rr = nodes[right];
             float _e77 = best_3.t;
-            float _e78 = slab(l_3.min, l_3.max, ray_12.origin, _e16, ray_12.tmin, _e77, F32_INF);
+            float _e78 = slab(l_2.min, l_2.max, ray_12.origin, _e16, ray_12.tmin, _e77, F32_INF);
             float _e84 = best_3.t;
-            float _e85 = slab(rr_1.min, rr_1.max, ray_12.origin, _e16, ray_12.tmin, _e84, F32_INF);
+            float _e85 = slab(rr.min, rr.max, ray_12.origin, _e16, ray_12.tmin, _e84, F32_INF);
             uint _e87 = F32_INF;
             uint _e91 = F32_INF;
             if ((_e78 < as_type<float>(_e87)) && (_e85 < as_type<float>(_e91))) {
-                near_1 = left_1;
-                far_1 = right_1;
+                near_1 = left;
+                far_1 = right;
                 if (_e85 < _e78) {
-                    near_1 = right_1;
-                    far_1 = left_1;
+                    near_1 = right;
+                    far_1 = left;
                 }
                 uint _e98 = sp_3;
                 if (_e98 < TLAS_STACK) {
@@ -1235,17 +1306,17 @@ Candidate intersect_scene(
                     sp_3 = _e107 + 1u;
                 }
                 uint _e110 = near_1;
-                node_2 = _e110;
+                node_1 = _e110;
                 continue;
             }
             uint _e112 = F32_INF;
             if (_e78 < as_type<float>(_e112)) {
-                node_2 = left_1;
+                node_1 = left;
                 continue;
             }
             uint _e116 = F32_INF;
             if (_e85 < as_type<float>(_e116)) {
-                node_2 = right_1;
+                node_1 = right;
                 continue;
             }
         }
@@ -1254,7 +1325,7 @@ Candidate intersect_scene(
         if (_e121.x == NO_HIT) {
             break;
         }
-        node_2 = _e121.x;
+        node_1 = _e121.x;
         sp_3 = _e121.y;
     }
     Candidate _e127 = best_3;
@@ -1312,7 +1383,7 @@ metal::float4 texel_at(
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint base_2 = params[t_1];
+    uint base_3 = params[t_1];
     uint _e10 = params[t_1 + 1u];
     uint w_4 = metal::max(_e10, 1u);
     uint _e17 = params[t_1 + 2u];
@@ -1326,16 +1397,16 @@ metal::float4 texel_at(
     uint yi = static_cast<uint>(_e37);
     uint index = (yi * w_4) + xi;
     if (format == 0u) {
-        uint _e46 = texels[base_2 + index];
+        uint _e46 = texels[base_3 + index];
         metal::float4 c_8 = metal::unpack_unorm4x8_to_float(_e46);
         float _e49 = srgb_channel(c_8.x);
         float _e51 = srgb_channel(c_8.y);
         float _e53 = srgb_channel(c_8.z);
         return metal::float4(_e49, _e51, _e53, c_8.w);
     }
-    uint _e61 = texels[base_2 + (index * 2u)];
+    uint _e61 = texels[base_3 + (index * 2u)];
     metal::float2 rg = float2(as_type<half2>(_e61));
-    uint _e70 = texels[(base_2 + (index * 2u)) + 1u];
+    uint _e70 = texels[(base_3 + (index * 2u)) + 1u];
     metal::float2 ba = float2(as_type<half2>(_e70));
     return metal::float4(rg, ba);
 }
@@ -1351,9 +1422,9 @@ metal::float4 sample_texture(
     float w_5 = static_cast<float>(metal::max(_e6, 1u));
     uint _e14 = params[t_2 + 2u];
     float h_3 = static_cast<float>(metal::max(_e14, 1u));
-    metal::float2 p_3 = (uv * metal::float2(w_5, h_3)) - metal::float2(0.5);
-    metal::float2 f_2 = metal::floor(p_3);
-    metal::float2 fr = p_3 - f_2;
+    metal::float2 p_5 = (uv * metal::float2(w_5, h_3)) - metal::float2(0.5);
+    metal::float2 f_2 = metal::floor(p_5);
+    metal::float2 fr = p_5 - f_2;
     int _e26 = i32_from_f32_(f_2.x);
     int _e28 = i32_from_f32_(f_2.y);
     metal::float4 _e29 = texel_at(t_2, _e26, _e28, params, texels, _buffer_sizes);
@@ -1476,7 +1547,7 @@ PointLight load_PointLight(
 }
 
 metal::float3 offset_origin(
-    metal::float3 p_2,
+    metal::float3 p_4,
     metal::float3 n_3,
     constant FrameUniforms& frame,
     device type_9 const& nodes,
@@ -1484,9 +1555,9 @@ metal::float3 offset_origin(
 ) {
     FrameUniforms _e3 = frame;
     GpuNode root_1 = nodes[_e3.tlas_root];
-    metal::float3 a_8 = metal::max(metal::abs(p_2), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
+    metal::float3 a_8 = metal::max(metal::abs(p_4), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
     float m_3 = metal::max(metal::max(a_8.x, a_8.y), a_8.z);
-    return p_2 + (n_3 * metal::float3(m_3 * (1.0 / 65536.0)));
+    return p_4 + (n_3 * metal::float3(m_3 * (1.0 / 65536.0)));
 }
 
 float shadow_query(
@@ -1500,7 +1571,7 @@ float shadow_query(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
-    thread type_11& traversal_stack,
+    thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1529,7 +1600,7 @@ LightSample point_light(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
-    thread type_11& traversal_stack,
+    thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1559,7 +1630,7 @@ LightSample dispatch_light(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
-    thread type_11& traversal_stack,
+    thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1579,7 +1650,7 @@ LightSample sample_light_query(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
-    thread type_11& traversal_stack,
+    thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1605,7 +1676,7 @@ metal::float3 lambert_shade(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
-    thread type_11& traversal_stack,
+    thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1651,7 +1722,7 @@ metal::float3 dispatch_closest_hit(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
-    thread type_11& traversal_stack,
+    thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1670,9 +1741,9 @@ metal::float3 shade_direct(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
-    thread type_11& traversal_stack,
+    thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
-    device type_15 const& attributes,
+    device type_16 const& attributes,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1718,17 +1789,17 @@ metal::float3 trace(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
-    thread type_11& traversal_stack,
+    thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
-    device type_15 const& attributes,
+    device type_16 const& attributes,
     thread uint& ray_count,
     device type_4 const& texels,
-    thread type_17& spawn_dirs,
-    thread type_17& spawn_weights,
+    thread type_18& spawn_dirs,
+    thread type_18& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    type_18 stack_1 = {};
+    type_19 stack_1 = {};
     uint depth = {};
     Ray ray_22 = {};
     metal::float3 value = {};
@@ -1749,7 +1820,7 @@ metal::float3 trace(
         metal::float3 _e15 = through_medium(camera_ray, _e4.t, _e14, instances, _buffer_sizes);
         return _e15;
     }
-    stack_1 = type_18 {};
+    stack_1 = type_19 {};
     depth = 0u;
     ray_22 = camera_ray;
     value = metal::float3(0.0);
@@ -1785,7 +1856,7 @@ metal::float3 trace(
                     uint n_10 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
                     if (n_10 > 0u) {
                         Ray _e77 = ray_22;
-                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_17 {}, type_17 {}, n_10, 0u};
+                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_18 {}, type_18 {}, n_10, 0u};
                         i_5 = 0u;
                         uint2 loop_bound_9 = uint2(4294967295u);
                         bool loop_init_4 = true;
@@ -1839,9 +1910,9 @@ metal::float3 trace(
             uint _e137 = depth;
             uint top = _e137 - 1u;
             uint _e144 = stack_1.inner[metal::min(top, 3u)].next;
-            uint child = _e144 - 1u;
+            uint child_1 = _e144 - 1u;
             metal::float3 _e151 = stack_1.inner[metal::min(top, 3u)].sum;
-            metal::float3 _e159 = stack_1.inner[metal::min(top, 3u)].weights.inner[metal::min(child, 0u)];
+            metal::float3 _e159 = stack_1.inner[metal::min(top, 3u)].weights.inner[metal::min(child_1, 0u)];
             metal::float3 _e160 = value;
             stack_1.inner[metal::min(top, 3u)].sum = _e151 + (_e159 * _e160);
             have_value = false;
@@ -1902,16 +1973,16 @@ void render_pixel(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
-    thread type_11& traversal_stack,
+    thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
-    device type_15 const& attributes,
+    device type_16 const& attributes,
     thread uint& ray_count,
     device type_4 const& texels,
-    thread type_17& spawn_dirs,
-    thread type_17& spawn_weights,
+    thread type_18& spawn_dirs,
+    thread type_18& spawn_weights,
     thread uint& spawn_count,
     device type_10& accum,
-    device type_21& counters,
+    device type_22& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 sum = {};
@@ -1963,14 +2034,19 @@ void render_pixel(
         }
     }
     metal::float3 _e55 = sum;
+    metal::float4 _e58 = metal::float4(_e55, static_cast<float>(frame_5.samples_per_pass));
     uint _e59 = bad;
-    metal::float4 _e62 = accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x];
-    accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e62 + metal::float4(_e55, static_cast<float>(frame_5.samples_per_pass));
+    if (tile_1.frame == 0u) {
+        accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e58;
+    } else {
+        metal::float4 _e65 = accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x];
+        accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e65 + _e58;
+    }
     if (_e59 > 0u) {
         metal::atomic_fetch_add_explicit(&counters[0], _e59, metal::memory_order_relaxed);
     }
-    uint _e69 = ray_count;
-    metal::atomic_fetch_add_explicit(&counters[1], _e69, metal::memory_order_relaxed);
+    uint _e72 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e72, metal::memory_order_relaxed);
     return;
 }
 
@@ -1984,16 +2060,16 @@ void render_invocation(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
-    thread type_11& traversal_stack,
+    thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
-    device type_15 const& attributes,
+    device type_16 const& attributes,
     thread uint& ray_count,
     device type_4 const& texels,
-    thread type_17& spawn_dirs,
-    thread type_17& spawn_weights,
+    thread type_18& spawn_dirs,
+    thread type_18& spawn_weights,
     thread uint& spawn_count,
     device type_10& accum,
-    device type_21& counters,
+    device type_22& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     TileParams tile_2 = tile;
@@ -2028,19 +2104,19 @@ struct renderInput {
 , device type_8 const& instances [[buffer(3)]]
 , device type_9 const& nodes [[buffer(2)]]
 , device type_10 const& triangles [[buffer(4)]]
-, device type_15 const& attributes [[buffer(5)]]
+, device type_16 const& attributes [[buffer(5)]]
 , device type_4 const& texels [[buffer(7)]]
 , device type_10& accum [[buffer(8)]]
-, device type_21& counters [[buffer(9)]]
+, device type_22& counters [[buffer(9)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
     uint rng_state = {};
     uint F32_INF = 2139095040u;
-    type_11 traversal_stack = {};
+    type_12 traversal_stack = {};
     uint F32_NEG_INF = 4286578688u;
     uint ray_count = {};
-    type_17 spawn_dirs = {};
-    type_17 spawn_weights = {};
+    type_18 spawn_dirs = {};
+    type_18 spawn_weights = {};
     uint spawn_count = {};
     render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
     return;

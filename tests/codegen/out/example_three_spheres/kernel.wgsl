@@ -162,13 +162,17 @@ const RAY_CAMERA: u32 = 0u;
 const NO_HIT: u32 = 4294967295u;
 const HAS_MEDIA: bool = false;
 const MESH_GEOMETRY: u32 = 4294967295u;
-const LEAF_BIT: u32 = 2147483648u;
+const MESH_LEAF_BIT: u32 = 2147483648u;
+const MESH_COUNT_SHIFT: u32 = 27u;
+const MESH_COUNT_MASK: u32 = 15u;
+const MESH_FIRST_MASK: u32 = 134217727u;
 const BLAS_STACK: u32 = 64u;
 const TLAS_STACK: u32 = 64u;
 const BVH_MESH_STACK: u32 = 64u;
 const TAU: f32 = 6.2831855f;
 const INV_PI: f32 = 0.31830987f;
 const HAS_SECONDARY_RAYS: bool = false;
+const LEAF_BIT: u32 = 2147483648u;
 const HAS_BACKGROUND: bool = true;
 const FLAG_MEDIUM: u32 = 4u;
 const RAY_SHADOW: u32 = 2u;
@@ -387,9 +391,21 @@ fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
     return true;
 }
 
-fn slab(lo: vec3<f32>, hi: vec3<f32>, origin: vec3<f32>, inv_dir: vec3<f32>, tmin_1: f32, tmax_2: f32) -> f32 {
-    let t0_ = ((lo - origin) * inv_dir);
-    let t1_ = ((hi - origin) * inv_dir);
+fn mesh_box_lo(p: vec3<u32>) -> vec3<u32> {
+    return vec3<u32>((p.x & 65535u), (p.x >> 16u), (p.y & 65535u));
+}
+
+fn mesh_point(origin: vec3<f32>, scale: vec3<f32>, q: vec3<u32>) -> vec3<f32> {
+    return (origin + (vec3<f32>(q) * scale));
+}
+
+fn mesh_box_hi(p_1: vec3<u32>) -> vec3<u32> {
+    return vec3<u32>((p_1.y >> 16u), (p_1.z & 65535u), (p_1.z >> 16u));
+}
+
+fn slab(lo: vec3<f32>, hi: vec3<f32>, origin_1: vec3<f32>, inv_dir: vec3<f32>, tmin_1: f32, tmax_2: f32) -> f32 {
+    let t0_ = ((lo - origin_1) * inv_dir);
+    let t1_ = ((hi - origin_1) * inv_dir);
     let near_2 = min(t0_, t1_);
     let far_2 = max(t0_, t1_);
     let enter = max(max(near_2.x, near_2.y), max(near_2.z, tmin_1));
@@ -412,7 +428,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
 fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
-    var node: u32;
+    var child: u32;
     var k: u32;
     var near: u32;
     var far: u32;
@@ -421,91 +437,104 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, 
     let _e8 = safe_inverse(ray_3.dir);
     let _e9 = prepare_triangle_ray(ray_3);
     let base_1 = inst_2.blas_root;
+    let header = nodes[base_1];
+    let origin_2 = header.min;
+    let scale_1 = header.max;
     sp_1 = 0u;
-    node = base_1;
+    child = header.a;
     loop {
-        let _e14 = node;
-        let n_6 = nodes[_e14];
-        if ((n_6.b & LEAF_BIT) != 0u) {
-            let count_1 = (n_6.b & ~(LEAF_BIT));
+        let _e20 = child;
+        if ((_e20 & MESH_LEAF_BIT) != 0u) {
+            let _e25 = child;
+            let count = ((_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+            let _e32 = child;
+            let first = (_e32 & MESH_FIRST_MASK);
             k = 0u;
             loop {
-                let _e29 = k;
-                if (_e29 >= count_1) {
+                let _e37 = k;
+                if (_e37 >= count) {
                     break;
                 }
-                let _e34 = k;
-                let prim = ((inst_2.triangle_offset + n_6.a) + _e34);
-                let _e38 = best.t;
-                let _e39 = hit_triangle(_e9, prim, ray_3.tmin, _e38);
-                let _e42 = F32_INF;
-                if (_e39.x < bitcast<f32>(_e42)) {
-                    let c_6 = Candidate(_e39.x, slot_1, prim, _e39.yz, vec3(0f));
-                    let _e50 = accept(inst_2, world_ray, c_6);
-                    if _e50 {
+                let _e41 = k;
+                let prim = ((inst_2.triangle_offset + first) + _e41);
+                let _e45 = best.t;
+                let _e46 = hit_triangle(_e9, prim, ray_3.tmin, _e45);
+                let _e49 = F32_INF;
+                if (_e46.x < bitcast<f32>(_e49)) {
+                    let c_6 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0f));
+                    let _e57 = accept(inst_2, world_ray, c_6);
+                    if _e57 {
                         best = c_6;
                         if shadow {
-                            let _e51 = best;
-                            return _e51;
+                            let _e58 = best;
+                            return _e58;
                         }
                     }
                 }
                 continuing {
-                    let _e52 = k;
-                    k = (_e52 + 1u);
+                    let _e59 = k;
+                    k = (_e59 + 1u);
                 }
             }
         } else {
-            let left = (base_1 + n_6.a);
-            let right = (left + 1u);
-            let l_1 = nodes[left];
-            let rr = nodes[right];
-            let _e70 = best.t;
-            let _e71 = slab(l_1.min, l_1.max, ray_3.origin, _e8, ray_3.tmin, _e70);
-            let _e77 = best.t;
-            let _e78 = slab(rr.min, rr.max, ray_3.origin, _e8, ray_3.tmin, _e77);
-            let _e80 = F32_INF;
-            let _e84 = F32_INF;
-            if ((_e71 < bitcast<f32>(_e80)) && (_e78 < bitcast<f32>(_e84))) {
-                near = left;
-                far = right;
-                if ((_e78 < _e71) != shadow) {
-                    near = right;
-                    far = left;
+            let _e62 = child;
+            let n_6 = nodes[(base_1 + _e62)];
+            let lq = bitcast<vec3<u32>>(n_6.min);
+            let rq = bitcast<vec3<u32>>(n_6.max);
+            let _e71 = mesh_box_lo(lq);
+            let _e72 = mesh_point(origin_2, scale_1, _e71);
+            let _e73 = mesh_box_hi(lq);
+            let _e74 = mesh_point(origin_2, scale_1, _e73);
+            let _e78 = best.t;
+            let _e79 = slab(_e72, _e74, ray_3.origin, _e8, ray_3.tmin, _e78);
+            let _e80 = mesh_box_lo(rq);
+            let _e81 = mesh_point(origin_2, scale_1, _e80);
+            let _e82 = mesh_box_hi(rq);
+            let _e83 = mesh_point(origin_2, scale_1, _e82);
+            let _e87 = best.t;
+            let _e88 = slab(_e81, _e83, ray_3.origin, _e8, ray_3.tmin, _e87);
+            let _e90 = F32_INF;
+            let _e94 = F32_INF;
+            if ((_e79 < bitcast<f32>(_e90)) && (_e88 < bitcast<f32>(_e94))) {
+                near = n_6.a;
+                far = n_6.b;
+                if ((_e88 < _e79) != shadow) {
+                    near = n_6.b;
+                    far = n_6.a;
                 }
-                let _e92 = sp_1;
-                if (_e92 < BLAS_STACK) {
-                    let _e96 = sp_1;
-                    let _e98 = far;
-                    traversal_stack[min((TLAS_STACK + _e96), 127u)] = _e98;
-                    let _e103 = sp_1;
-                    sp_1 = (_e103 + 1u);
+                let _e106 = sp_1;
+                if (_e106 < BLAS_STACK) {
+                    let _e110 = sp_1;
+                    let _e112 = far;
+                    traversal_stack[min((TLAS_STACK + _e110), 127u)] = _e112;
+                    let _e117 = sp_1;
+                    sp_1 = (_e117 + 1u);
                 }
-                let _e106 = near;
-                node = _e106;
+                let _e120 = near;
+                child = _e120;
                 continue;
             }
-            let _e108 = F32_INF;
-            if (_e71 < bitcast<f32>(_e108)) {
-                node = left;
+            let _e122 = F32_INF;
+            if (_e79 < bitcast<f32>(_e122)) {
+                child = n_6.a;
                 continue;
             }
-            let _e112 = F32_INF;
-            if (_e78 < bitcast<f32>(_e112)) {
-                node = right;
+            let _e127 = F32_INF;
+            if (_e88 < bitcast<f32>(_e127)) {
+                child = n_6.b;
                 continue;
             }
         }
-        let _e116 = sp_1;
-        let _e117 = pop(TLAS_STACK, _e116);
-        if (_e117.x == NO_HIT) {
+        let _e132 = sp_1;
+        let _e133 = pop(TLAS_STACK, _e132);
+        if (_e133.x == NO_HIT) {
             break;
         }
-        node = _e117.x;
-        sp_1 = _e117.y;
+        child = _e133.x;
+        sp_1 = _e133.y;
     }
-    let _e123 = best;
-    return _e123;
+    let _e139 = best;
+    return _e139;
 }
 
 fn load_BvhMesh(offset_2: u32) -> BvhMesh {
@@ -514,16 +543,50 @@ fn load_BvhMesh(offset_2: u32) -> BvhMesh {
 }
 
 fn mesh_node_query(m: u32, i: u32) -> BvhNode {
-    var count: u32;
+    var lo_1: vec3<f32>;
+    var hi_1: vec3<f32>;
+    var reference: u32;
+    var q_1: vec3<u32>;
 
-    let _e4 = params[m];
-    let n_7 = nodes[(_e4 + i)];
-    count = 0u;
-    if ((n_7.b & 2147483648u) != 0u) {
-        count = (n_7.b & 2147483647u);
+    let base_2 = params[m];
+    let header_1 = nodes[base_2];
+    lo_1 = header_1.min;
+    let _e14 = mesh_point(header_1.min, header_1.max, vec3(65535u));
+    hi_1 = _e14;
+    reference = header_1.a;
+    if (i >= 2u) {
+        let n_7 = nodes[(base_2 + (i >> 1u))];
+        q_1 = bitcast<vec3<u32>>(n_7.min);
+        reference = n_7.a;
+        if ((i & 1u) != 0u) {
+            q_1 = bitcast<vec3<u32>>(n_7.max);
+            reference = n_7.b;
+        }
+        let _e39 = q_1;
+        let _e40 = mesh_box_lo(_e39);
+        let _e41 = mesh_point(header_1.min, header_1.max, _e40);
+        lo_1 = _e41;
+        let _e44 = q_1;
+        let _e45 = mesh_box_hi(_e44);
+        let _e46 = mesh_point(header_1.min, header_1.max, _e45);
+        hi_1 = _e46;
     }
-    let _e22 = count;
-    return BvhNode(n_7.min, n_7.max, n_7.a, _e22);
+    let _e47 = reference;
+    if ((_e47 & MESH_LEAF_BIT) == 0u) {
+        let _e52 = lo_1;
+        let _e53 = hi_1;
+        let _e55 = reference;
+        return BvhNode(_e52, _e53, (2u * _e55), 0u);
+    }
+    let _e59 = reference;
+    let count_1 = ((_e59 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+    if (count_1 == 0u) {
+        return BvhNode(bitcast<vec3<f32>>(vec3(2139095039u)), bitcast<vec3<f32>>(vec3(4286578687u)), 0u, 0u);
+    }
+    let _e77 = lo_1;
+    let _e78 = hi_1;
+    let _e79 = reference;
+    return BvhNode(_e77, _e78, (_e79 & MESH_FIRST_MASK), count_1);
 }
 
 fn intersect_aabb(ray_4: Ray, min_: vec3<f32>, max_: vec3<f32>) -> vec2<f32> {
@@ -599,7 +662,7 @@ fn bvh_mesh_intersect(g: BvhMesh, ray_7: Ray) -> Intersection {
     var stack: array<u32, 64>;
     var stack_t: array<f32, 64>;
     var sp_2: u32;
-    var node_1: BvhNode;
+    var node: BvhNode;
     var k_1: u32;
     var found: bool;
 
@@ -610,9 +673,9 @@ fn bvh_mesh_intersect(g: BvhMesh, ray_7: Ray) -> Intersection {
     stack_t = array<f32, 64>();
     sp_2 = 0u;
     let _e21 = mesh_node_query(g.mesh, 0u);
-    node_1 = _e21;
+    node = _e21;
     let _e23 = r_2;
-    let _e24 = node_1;
+    let _e24 = node;
     let _e26 = r_2.tmax;
     let _e27 = bvh_mesh_enter(_e23, _e24, _e26);
     let _e29 = F32_INF;
@@ -621,9 +684,9 @@ fn bvh_mesh_intersect(g: BvhMesh, ray_7: Ray) -> Intersection {
         return _e32;
     }
     loop {
-        let _e34 = node_1.count;
+        let _e34 = node.count;
         if (_e34 > 0u) {
-            let end = node_1.count;
+            let end = node.count;
             k_1 = 0u;
             loop {
                 let _e41 = k_1;
@@ -631,7 +694,7 @@ fn bvh_mesh_intersect(g: BvhMesh, ray_7: Ray) -> Intersection {
                     break;
                 }
                 let _e43 = r_2;
-                let _e46 = node_1.first;
+                let _e46 = node.first;
                 let _e47 = k_1;
                 let _e49 = mesh_triangle_query(g.mesh, (_e46 + _e47));
                 let _e50 = intersect_triangle(_e43, _e49);
@@ -646,9 +709,9 @@ fn bvh_mesh_intersect(g: BvhMesh, ray_7: Ray) -> Intersection {
                 }
             }
         } else {
-            let first = node_1.first;
-            let _e63 = mesh_node_query(g.mesh, first);
-            let _e67 = mesh_node_query(g.mesh, (first + 1u));
+            let first_1 = node.first;
+            let _e63 = mesh_node_query(g.mesh, first_1);
+            let _e67 = mesh_node_query(g.mesh, (first_1 + 1u));
             let _e68 = r_2;
             let _e70 = r_2.tmax;
             let _e71 = bvh_mesh_enter(_e68, _e63, _e70);
@@ -662,15 +725,15 @@ fn bvh_mesh_intersect(g: BvhMesh, ray_7: Ray) -> Intersection {
                 let _e87 = sp_2;
                 if ((max(_e71, _e75) < bitcast<f32>(_e84)) && (_e87 < BVH_MESH_STACK)) {
                     let _e91 = sp_2;
-                    stack[min(_e91, 63u)] = select(first, (first + 1u), left_first);
+                    stack[min(_e91, 63u)] = select(first_1, (first_1 + 1u), left_first);
                     let _e98 = sp_2;
                     stack_t[min(_e98, 63u)] = max(_e71, _e75);
                     let _e103 = sp_2;
                     sp_2 = (_e103 + 1u);
                 }
-                node_1 = _e67;
+                node = _e67;
                 if left_first {
-                    node_1 = _e63;
+                    node = _e63;
                 }
                 continue;
             }
@@ -696,7 +759,7 @@ fn bvh_mesh_intersect(g: BvhMesh, ray_7: Ray) -> Intersection {
         let _e129 = sp_2;
         let _e133 = stack[min(_e129, 63u)];
         let _e134 = mesh_node_query(g.mesh, _e133);
-        node_1 = _e134;
+        node = _e134;
     }
     let _e135 = best_1;
     return _e135;
@@ -716,16 +779,16 @@ fn sphere_intersect(s: Sphere, ray_8: Ray) -> Intersection {
     let f_1 = (ray_8.origin - s.center);
     let a_6 = dot(ray_8.dir, ray_8.dir);
     let b_7 = -(dot(f_1, ray_8.dir));
-    let l_2 = (f_1 + (ray_8.dir * vec3((b_7 / a_6))));
+    let l_1 = (f_1 + (ray_8.dir * vec3((b_7 / a_6))));
     let r2_ = (s.radius * s.radius);
-    let disc = (a_6 * (r2_ - dot(l_2, l_2)));
+    let disc = (a_6 * (r2_ - dot(l_1, l_1)));
     if (!((disc >= 0f)) || !((a_6 > 0f))) {
         let _e30 = F32_INF;
         return Intersection(bitcast<f32>(_e30), vec3<f32>(0f, 0f, 1f), vec2<f32>());
     }
-    let q = (b_7 + (select(-1f, 1f, (b_7 >= 0f)) * sqrt(disc)));
-    let t0_1 = ((dot(f_1, f_1) - r2_) / q);
-    let t1_1 = (q / a_6);
+    let q_2 = (b_7 + (select(-1f, 1f, (b_7 >= 0f)) * sqrt(disc)));
+    let t0_1 = ((dot(f_1, f_1) - r2_) / q_2);
+    let t1_1 = (q_2 / a_6);
     t = min(t0_1, t1_1);
     let _e52 = t;
     if !((_e52 >= ray_8.tmin)) {
@@ -797,9 +860,9 @@ fn load_triangle(slot_3: u32) -> Triangle {
     return Triangle(v0_.xyz, v1_.xyz, v2_.xyz);
 }
 
-fn point_to_world(inst_3: GpuInstance, p: vec3<f32>) -> vec3<f32> {
-    let q_1 = vec4<f32>(p, 1f);
-    return vec3<f32>(dot(inst_3.object_to_world_0_, q_1), dot(inst_3.object_to_world_1_, q_1), dot(inst_3.object_to_world_2_, q_1));
+fn point_to_world(inst_3: GpuInstance, p_2: vec3<f32>) -> vec3<f32> {
+    let q_3 = vec4<f32>(p_2, 1f);
+    return vec3<f32>(dot(inst_3.object_to_world_0_, q_3), dot(inst_3.object_to_world_1_, q_3), dot(inst_3.object_to_world_2_, q_3));
 }
 
 fn decode_octahedral(bits: u32) -> vec3<f32> {
@@ -874,7 +937,7 @@ fn finish_hit(ray_11: Ray, c_1: Candidate) -> Hit {
     return _e139;
 }
 
-fn medium_at(p_1: vec3<f32>, exclude: u32) -> u32 {
+fn medium_at(p_3: vec3<f32>, exclude: u32) -> u32 {
     var inside: u32;
     var nearest: f32;
     var i_2: u32;
@@ -885,7 +948,7 @@ fn medium_at(p_1: vec3<f32>, exclude: u32) -> u32 {
     let frame_1 = frame;
     let _e12 = normalize_vec3f(vec3<f32>(0.5773f, 0.5774f, 0.5775f));
     let _e14 = F32_INF;
-    let probe = Ray(p_1, 0f, _e12, bitcast<f32>(_e14), 0u, 0u, 0u);
+    let probe = Ray(p_3, 0f, _e12, bitcast<f32>(_e14), 0u, 0u, 0u);
     inside = 0u;
     let _e23 = F32_INF;
     nearest = bitcast<f32>(_e23);
@@ -923,7 +986,7 @@ fn medium_at(p_1: vec3<f32>, exclude: u32) -> u32 {
 fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
     var best_3: Candidate;
     var sp_3: u32;
-    var node_2: u32;
+    var node_1: u32;
     var near_1: u32;
     var far_1: u32;
 
@@ -938,8 +1001,8 @@ fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
     }
     let _e16 = safe_inverse(ray_12.dir);
     sp_3 = 0u;
-    node_2 = frame_2.tlas_root;
-    let _e21 = node_2;
+    node_1 = frame_2.tlas_root;
+    let _e21 = node_1;
     let root = nodes[_e21];
     let _e30 = best_3.t;
     let _e31 = slab(root.min, root.max, ray_12.origin, _e16, ray_12.tmin, _e30);
@@ -949,7 +1012,7 @@ fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
         return _e36;
     }
     loop {
-        let _e37 = node_2;
+        let _e37 = node_1;
         let n_8 = nodes[_e37];
         if ((n_8.b & LEAF_BIT) != 0u) {
             if ((n_8.b & ~(LEAF_BIT)) != 0u) {
@@ -963,22 +1026,22 @@ fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
                 }
             }
         } else {
-            let left_1 = (frame_2.tlas_root + n_8.a);
-            let right_1 = (left_1 + 1u);
-            let l_3 = nodes[left_1];
-            let rr_1 = nodes[right_1];
+            let left = (frame_2.tlas_root + n_8.a);
+            let right = (left + 1u);
+            let l_2 = nodes[left];
+            let rr = nodes[right];
             let _e77 = best_3.t;
-            let _e78 = slab(l_3.min, l_3.max, ray_12.origin, _e16, ray_12.tmin, _e77);
+            let _e78 = slab(l_2.min, l_2.max, ray_12.origin, _e16, ray_12.tmin, _e77);
             let _e84 = best_3.t;
-            let _e85 = slab(rr_1.min, rr_1.max, ray_12.origin, _e16, ray_12.tmin, _e84);
+            let _e85 = slab(rr.min, rr.max, ray_12.origin, _e16, ray_12.tmin, _e84);
             let _e87 = F32_INF;
             let _e91 = F32_INF;
             if ((_e78 < bitcast<f32>(_e87)) && (_e85 < bitcast<f32>(_e91))) {
-                near_1 = left_1;
-                far_1 = right_1;
+                near_1 = left;
+                far_1 = right;
                 if (_e85 < _e78) {
-                    near_1 = right_1;
-                    far_1 = left_1;
+                    near_1 = right;
+                    far_1 = left;
                 }
                 let _e98 = sp_3;
                 if (_e98 < TLAS_STACK) {
@@ -989,17 +1052,17 @@ fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
                     sp_3 = (_e107 + 1u);
                 }
                 let _e110 = near_1;
-                node_2 = _e110;
+                node_1 = _e110;
                 continue;
             }
             let _e112 = F32_INF;
             if (_e78 < bitcast<f32>(_e112)) {
-                node_2 = left_1;
+                node_1 = left;
                 continue;
             }
             let _e116 = F32_INF;
             if (_e85 < bitcast<f32>(_e116)) {
-                node_2 = right_1;
+                node_1 = right;
                 continue;
             }
         }
@@ -1008,7 +1071,7 @@ fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
         if (_e121.x == NO_HIT) {
             break;
         }
-        node_2 = _e121.x;
+        node_1 = _e121.x;
         sp_3 = _e121.y;
     }
     let _e127 = best_3;
@@ -1040,7 +1103,7 @@ fn srgb_channel(c_2: f32) -> f32 {
 }
 
 fn texel_at(t_1: u32, x_2: i32, y: i32) -> vec4<f32> {
-    let base_2 = params[t_1];
+    let base_3 = params[t_1];
     let _e10 = params[(t_1 + 1u)];
     let w_4 = max(_e10, 1u);
     let _e17 = params[(t_1 + 2u)];
@@ -1054,16 +1117,16 @@ fn texel_at(t_1: u32, x_2: i32, y: i32) -> vec4<f32> {
     let yi = u32(_e37);
     let index = ((yi * w_4) + xi);
     if (format == 0u) {
-        let _e46 = texels[(base_2 + index)];
+        let _e46 = texels[(base_3 + index)];
         let c_8 = unpack4x8unorm(_e46);
         let _e49 = srgb_channel(c_8.x);
         let _e51 = srgb_channel(c_8.y);
         let _e53 = srgb_channel(c_8.z);
         return vec4<f32>(_e49, _e51, _e53, c_8.w);
     }
-    let _e61 = texels[(base_2 + (index * 2u))];
+    let _e61 = texels[(base_3 + (index * 2u))];
     let rg = unpack2x16float(_e61);
-    let _e70 = texels[((base_2 + (index * 2u)) + 1u)];
+    let _e70 = texels[((base_3 + (index * 2u)) + 1u)];
     let ba = unpack2x16float(_e70);
     return vec4<f32>(rg, ba);
 }
@@ -1073,9 +1136,9 @@ fn sample_texture(t_2: u32, uv: vec2<f32>) -> vec4<f32> {
     let w_5 = f32(max(_e6, 1u));
     let _e14 = params[(t_2 + 2u)];
     let h_3 = f32(max(_e14, 1u));
-    let p_3 = ((uv * vec2<f32>(w_5, h_3)) - vec2(0.5f));
-    let f_2 = floor(p_3);
-    let fr = (p_3 - f_2);
+    let p_5 = ((uv * vec2<f32>(w_5, h_3)) - vec2(0.5f));
+    let f_2 = floor(p_5);
+    let fr = (p_5 - f_2);
     let _e26 = i32_from_f32_(f_2.x);
     let _e28 = i32_from_f32_(f_2.y);
     let _e29 = texel_at(t_2, _e26, _e28);
@@ -1156,12 +1219,12 @@ fn load_PointLight(offset_9: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn offset_origin(p_2: vec3<f32>, n_3: vec3<f32>) -> vec3<f32> {
+fn offset_origin(p_4: vec3<f32>, n_3: vec3<f32>) -> vec3<f32> {
     let _e3 = frame;
     let root_1 = nodes[_e3.tlas_root];
-    let a_8 = max(abs(p_2), max(abs(root_1.min), abs(root_1.max)));
+    let a_8 = max(abs(p_4), max(abs(root_1.min), abs(root_1.max)));
     let m_3 = max(max(a_8.x, a_8.y), a_8.z);
-    return (p_2 + (n_3 * vec3((m_3 * (1f / 65536f)))));
+    return (p_4 + (n_3 * vec3((m_3 * (1f / 65536f)))));
 }
 
 fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
@@ -1376,9 +1439,9 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e137 = depth;
             let top = (_e137 - 1u);
             let _e144 = stack_1[min(top, 3u)].next;
-            let child = (_e144 - 1u);
+            let child_1 = (_e144 - 1u);
             let _e151 = stack_1[min(top, 3u)].sum;
-            let _e159 = stack_1[min(top, 3u)].weights[min(child, 0u)];
+            let _e159 = stack_1[min(top, 3u)].weights[min(child_1, 0u)];
             let _e160 = value;
             stack_1[min(top, 3u)].sum = (_e151 + (_e159 * _e160));
             have_value = false;
@@ -1471,14 +1534,19 @@ fn render_pixel(pixel_3: vec2<u32>) {
         }
     }
     let _e55 = sum;
+    let _e58 = vec4<f32>(_e55, f32(frame_5.samples_per_pass));
     let _e59 = bad;
-    let _e62 = accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
-    accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e62 + vec4<f32>(_e55, f32(frame_5.samples_per_pass)));
+    if (tile_1.frame == 0u) {
+        accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = _e58;
+    } else {
+        let _e65 = accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
+        accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e65 + _e58);
+    }
     if (_e59 > 0u) {
         atomicAdd((&counters[0]), _e59);
     }
-    let _e69 = ray_count;
-    atomicAdd((&counters[1]), _e69);
+    let _e72 = ray_count;
+    atomicAdd((&counters[1]), _e72);
     return;
 }
 
