@@ -95,10 +95,11 @@ pub const FRAME: StructDesc = StructDesc {
     ],
 };
 
-/// A BVH node, scene or object level (32 bytes; the bits of `a` and `b` are documented in `rtc-bvh`).
+/// A BVH record, scene or object level (32 bytes; the layout is `rtc_bvh::quantized`'s).
 pub const NODE: StructDesc = StructDesc {
     name: "GpuNode",
-    doc: "BVH node: box min and `a` (left child, or first primitive of a leaf), box max and `b` (leaf flag and count)",
+    doc: "BVH record: a header (quantisation origin in `min`, root reference in `a`, step size in `max`) or an \
+          inner node (both children's 16-bit boxes as the bits of `min` and `max`, their references in `a` and `b`)",
     fields: &[f("min", FieldType::Vec3F32), f("a", FieldType::U32), f("max", FieldType::Vec3F32), f("b", FieldType::U32)],
 };
 

@@ -17,10 +17,9 @@
 //! - [`heatmap`] turns the debug kernel's per-pixel counts (nodes visited, primitives tested) into
 //!   two false-colour panels with a colour bar and labels (`0` and the maximum) under each, and
 //!   [`HeatStats`] (maximum, mean) to print beside it.
-//! - [`sah_cost`] computes the surface-area-heuristic cost of a flattened BVH in the GPU node
-//!   buffer, the same figure `rtc_bvh::Bvh::sah_cost` reports for a canonical tree, and
-//!   [`mesh_sah_cost`] the same for a mesh BVH in the quantised layout (over its quantised boxes,
-//!   a little larger than the exact ones).
+//! - [`sah_cost`] computes the surface-area-heuristic cost of a BVH in the GPU node buffer (the
+//!   quantised layout of `rtc_bvh::quantized`), the figure `rtc_bvh::Bvh::sah_cost` reports for a
+//!   canonical tree, over the quantised boxes (a little larger than the exact ones).
 //!
 //! Guarantees: nothing here panics on any scene or ray data (indices out of range, NaN, zero
 //! direction components are skipped or handled); the traversals visit each reachable node once per
@@ -128,45 +127,21 @@ pub fn object_names(entities: &Entities) -> Vec<String> {
         .collect()
 }
 
-fn node_box(n: &GpuNode) -> Option<(Vec3, Vec3)> {
-    node_box_of(Vec3::from(n.min), Vec3::from(n.max))
-}
-
-/// Walks one BVH of the node buffer rooted at `root` (child indices are relative to it), calling
-/// `visit(node, depth)` for every node.
-fn walk(nodes: &[GpuNode], root: u32, mut visit: impl FnMut(&GpuNode, u32)) {
-    let mut stack = vec![(root, 0u32)];
-    while let Some((i, depth)) = stack.pop() {
-        let Some(n) = nodes.get(i as usize) else {
-            continue;
-        };
-        visit(n, depth);
-        if !n.is_leaf() {
-            let left = root.saturating_add(n.a);
-            // Children lie after their parent; anything else is a broken buffer, not a loop.
-            if left > i {
-                stack.push((left.saturating_add(1), depth + 1));
-                stack.push((left, depth + 1));
-            }
-        }
-    }
-}
-
-/// One node of a mesh BVH as [`walk_mesh`] reports it: its box (`None` for an empty leaf), depth
-/// and, for a leaf, its primitive count.
+/// One node of a BVH as [`walk`] reports it: its box (`None` for an empty leaf), depth and, for
+/// a leaf, its first slot and slot count.
 #[derive(Clone, Copy, Debug)]
-struct MeshNodeView {
+struct NodeView {
     bounds: Option<(Vec3, Vec3)>,
     depth: u32,
-    leaf_count: Option<u32>,
+    leaf: Option<(u32, u32)>,
 }
 
-/// Walks the mesh BVH whose header record is `nodes[base]` (the quantised layout of
+/// Walks the BVH whose header record is `nodes[base]` (the quantised layout of
 /// `rtc_bvh::quantized`), calling `visit` for every node, leaves included. The root's box is the
 /// union of its children's (a leaf root gets the header's whole quantisation frame). Inner
 /// children lie at larger records than their parent; anything else is a broken buffer and is not
 /// followed.
-fn walk_mesh(nodes: &[GpuNode], base: u32, mut visit: impl FnMut(MeshNodeView)) {
+fn walk(nodes: &[GpuNode], base: u32, mut visit: impl FnMut(NodeView)) {
     let Some(&header) = nodes.get(base as usize) else {
         return;
     };
@@ -175,12 +150,12 @@ fn walk_mesh(nodes: &[GpuNode], base: u32, mut visit: impl FnMut(MeshNodeView)) 
     let mut stack = vec![(header.root, frame, 0u32, 0u32)];
     while let Some((reference, bounds, depth, parent)) = stack.pop() {
         match Child::decode(reference) {
-            Child::Leaf { count, .. } => visit(MeshNodeView {
+            Child::Leaf { first, count } => visit(NodeView {
                 bounds: (count > 0)
                     .then_some(bounds)
                     .and_then(|(a, b)| node_box_of(a, b)),
                 depth,
-                leaf_count: Some(count),
+                leaf: Some((first, count)),
             }),
             Child::Inner(record) => {
                 if record <= parent {
@@ -203,10 +178,10 @@ fn walk_mesh(nodes: &[GpuNode], base: u32, mut visit: impl FnMut(MeshNodeView)) 
                 } else {
                     bounds
                 };
-                visit(MeshNodeView {
+                visit(NodeView {
                     bounds: node_box_of(bounds.0, bounds.1),
                     depth,
-                    leaf_count: None,
+                    leaf: None,
                 });
                 stack.push((n.right, r, depth + 1, record));
                 stack.push((n.left, l, depth + 1, record));
@@ -230,7 +205,7 @@ pub fn collect_boxes(
     let instances = entities.instances();
     let mut set = BoxSet::default();
     let blas = |set: &mut BoxSet, inst: &GpuInstance, base: u32| {
-        walk_mesh(nodes, inst.blas_root, |n| {
+        walk(nodes, inst.blas_root, |n| {
             let level = base + n.depth;
             set.nodes += 1;
             set.deepest = set.deepest.max(level);
@@ -267,10 +242,11 @@ pub fn collect_boxes(
         return Ok(set);
     }
     let mut leaves = Vec::new();
-    walk(nodes, entities.tlas_root(), |n, d| {
+    walk(nodes, entities.tlas_root(), |n| {
+        let d = n.depth;
         set.nodes += 1;
         set.deepest = set.deepest.max(d);
-        if let (true, Some((min, max))) = (levels.contains(d), node_box(n)) {
+        if let (true, Some((min, max))) = (levels.contains(d), n.bounds) {
             set.boxes.push(ViewBox {
                 min,
                 max,
@@ -278,8 +254,8 @@ pub fn collect_boxes(
                 world_to_object: None,
             });
         }
-        if n.is_leaf() {
-            leaves.push((n.a, n.count(), d));
+        if let Some((first, count)) = n.leaf {
+            leaves.push((first, count, d));
         }
     });
     for (first, count, depth) in leaves {
@@ -294,47 +270,21 @@ pub fn collect_boxes(
     Ok(set)
 }
 
-/// Surface-area-heuristic cost of the BVH rooted at `root` in the node buffer: the sum over inner
-/// nodes of `A(n)` plus the sum over leaves of `count · A(n)`, divided by `A(root)` (traversal and
-/// intersection cost 1 each, `rtc_bvh::SahCost::STANDARD`). A root of zero area weighs each node
-/// by 1; an empty tree costs 0.
-pub fn sah_cost(nodes: &[GpuNode], root: u32) -> f64 {
-    let Some(root_node) = nodes.get(root as usize) else {
-        return 0.0;
-    };
-    if node_box(root_node).is_none() {
-        return 0.0;
-    }
-    let root_area = f64::from(root_node.aabb().half_area());
-    let mut total = 0.0f64;
-    walk(nodes, root, |n, _| {
-        let Some(_) = node_box(n) else { return };
-        let w = if root_area > 0.0 {
-            f64::from(n.aabb().half_area()) / root_area
-        } else {
-            1.0
-        };
-        total += w * if n.is_leaf() {
-            f64::from(n.count())
-        } else {
-            1.0
-        };
-    });
-    total
-}
-
-/// [`sah_cost`] of the mesh BVH whose header record is `nodes[base]` (the quantised layout of
-/// `rtc_bvh::quantized`), over the quantised boxes.
-pub fn mesh_sah_cost(nodes: &[GpuNode], base: u32) -> f64 {
+/// Surface-area-heuristic cost of the BVH whose header record is `nodes[base]` (the quantised
+/// layout of `rtc_bvh::quantized`), over its quantised boxes: the sum over inner nodes of `A(n)`
+/// plus the sum over leaves of `count · A(n)`, divided by `A(root)` (traversal and intersection
+/// cost 1 each, `rtc_bvh::SahCost::STANDARD`). A root of zero area weighs each node by 1; an empty
+/// tree costs 0.
+pub fn sah_cost(nodes: &[GpuNode], base: u32) -> f64 {
     let mut root_area = None;
     let mut total = 0.0f64;
-    walk_mesh(nodes, base, |n| {
+    walk(nodes, base, |n| {
         let Some((min, max)) = n.bounds else { return };
         let d = max - min;
         let area = f64::from(d.x * d.y + d.y * d.z + d.z * d.x);
         let root = *root_area.get_or_insert(area);
         let w = if root > 0.0 { area / root } else { 1.0 };
-        total += w * n.leaf_count.map_or(1.0, f64::from);
+        total += w * n.leaf.map_or(1.0, |(_, count)| f64::from(count));
     });
     total
 }

@@ -20,7 +20,7 @@ use common::{gpu_or_skip, temp_dir};
 use std::fmt::Write as _;
 
 use rtc_bvh::quantized::{Child, QuantizedBvh};
-use rtc_bvh::GpuNode;
+use rtc_bvh::Aabb;
 use rtc_compiler::driver::Options;
 use rtc_compiler::kernel::{compile_scene_with, CompiledScene, DebugMode, KernelOptions};
 use rtc_compiler::link::LinkOptions;
@@ -134,12 +134,8 @@ fn safe_inverse(d: [f32; 3]) -> [f32; 3] {
     })
 }
 
-/// The kernel's `slab`: entry distance, or `None` for a miss within `[tmin, tmax]`.
-fn slab(n: &GpuNode, o: [f32; 3], inv: [f32; 3], tmin: f32, tmax: f32) -> Option<f32> {
-    slab_box(n.min, n.max, o, inv, tmin, tmax)
-}
-
-/// The same for a box given by its corners.
+/// The kernel's `slab` for a box given by its corners: entry distance, or `None` for a miss
+/// within `[tmin, tmax]`.
 fn slab_box(
     min: [f32; 3],
     max: [f32; 3],
@@ -197,36 +193,49 @@ struct Counts {
     object: f32,
 }
 
-/// One node pair step of the kernel's loop: `Some(next)` to descend, pushing the far child.
-fn children(
-    nodes: &[GpuNode],
-    left: u32,
-    o: [f32; 3],
-    inv: [f32; 3],
-    tmin: f32,
-    best: f32,
-    stack: &mut Vec<u32>,
-) -> Option<u32> {
-    let l = &nodes[left as usize];
-    let r = &nodes[left as usize + 1];
-    match (slab(l, o, inv, tmin, best), slab(r, o, inv, tmin, best)) {
-        (Some(tl), Some(tr)) => {
-            let (near, far) = if tr < tl {
-                (left + 1, left)
-            } else {
-                (left, left + 1)
-            };
-            stack.push(far);
-            Some(near)
-        }
-        (Some(_), None) => Some(left),
-        (None, Some(_)) => Some(left + 1),
-        (None, None) => None,
-    }
-}
-
 fn transform(rows: &[[f32; 4]; 3], v: [f32; 3], w: f32) -> [f32; 3] {
     rows.map(|r| r[0] * v[0] + r[1] * v[1] + r[2] * v[2] + r[3] * w)
+}
+
+/// The kernel's loop over one BVH's quantised records (`rtc_bvh::quantized`): near child first,
+/// far child deferred, a deferred node visited when popped; `leaf(first, count, best, counts)`
+/// tests a leaf. Every visit (inner record or leaf) counts as a node, as `debug_count` does.
+fn traverse(
+    bvh: &QuantizedBvh,
+    o: [f32; 3],
+    inv: [f32; 3],
+    best: &mut f32,
+    c: &mut Counts,
+    leaf: &mut dyn FnMut(u32, u32, &mut f32, &mut Counts),
+) {
+    let mut stack = Vec::new();
+    let mut child = Child::decode(bvh.header.root);
+    loop {
+        c.nodes += 1;
+        let mut next = None;
+        match child {
+            Child::Leaf { first, count } => leaf(first, count, best, c),
+            Child::Inner(record) => {
+                let [(lb, l), (rb, r)] = bvh.children(record);
+                let t = *best;
+                let hit = |b: Aabb| slab_box(b.min.into(), b.max.into(), o, inv, 0.0, t);
+                next = match (hit(lb), hit(rb)) {
+                    (Some(tl), Some(tr)) => {
+                        let (near, far) = if tr < tl { (r, l) } else { (l, r) };
+                        stack.push(far);
+                        Some(near)
+                    }
+                    (Some(_), None) => Some(l),
+                    (None, Some(_)) => Some(r),
+                    (None, None) => None,
+                };
+            }
+        }
+        match next.or_else(|| stack.pop()) {
+            Some(b) => child = b,
+            None => return,
+        }
+    }
 }
 
 /// The CPU copy of the kernel's closest-hit traversal, counting as the debug kernel does.
@@ -242,75 +251,59 @@ fn reference(e: &Entities, origin: [f32; 3], dir: [f32; 3]) -> Counts {
     };
     let mut best = f32::INFINITY;
     let inv = safe_inverse(dir);
-    let root = e.tlas_root();
-    if slab(&nodes[root as usize], origin, inv, 0.0, best).is_none() {
+    let tlas =
+        QuantizedBvh::from_gpu_nodes(&nodes[e.tlas_root() as usize..]).expect("a TLAS header");
+    // The kernel first tests the TLAS's whole quantisation frame.
+    let h = tlas.header;
+    if slab_box(
+        h.point([0; 3]).into(),
+        h.point([0xffff; 3]).into(),
+        origin,
+        inv,
+        0.0,
+        best,
+    )
+    .is_none()
+    {
         return c;
     }
-    let mut stack = Vec::new();
-    let mut node = root;
-    loop {
-        let n = &nodes[node as usize];
-        c.nodes += 1;
-        if n.is_leaf() {
-            for slot in n.a..n.a + n.count() {
+    traverse(
+        &tlas,
+        origin,
+        inv,
+        &mut best,
+        &mut c,
+        &mut |first, count, best, c| {
+            for slot in first..first + count {
                 let inst = &instances[slot as usize];
                 assert_eq!(inst.geometry_type, GpuInstance::MESH_GEOMETRY);
                 let o = transform(&inst.world_to_object, origin, 1.0);
                 let d = transform(&inst.world_to_object, dir, 0.0);
-                let oinv = safe_inverse(d);
-                // The mesh's quantised records (`rtc_bvh::quantized`), in the kernel's order.
                 let blas = QuantizedBvh::from_gpu_nodes(&nodes[inst.blas_root as usize..])
                     .expect("a BLAS header");
-                let mut bstack = Vec::new();
-                let mut child = Child::decode(blas.header.root);
-                loop {
-                    c.nodes += 1;
-                    let mut next = None;
-                    match child {
-                        Child::Leaf { first, count } => {
-                            for k in 0..count {
-                                c.primitives += 1;
-                                let prim = (inst.triangle_offset + first + k) as usize;
-                                let v = [tris[3 * prim], tris[3 * prim + 1], tris[3 * prim + 2]];
-                                if let Some(t) = triangle(v, o, d, 0.0, best) {
-                                    best = t;
-                                    c.t = t;
-                                    c.object = inst.object as f32;
-                                }
+                traverse(
+                    &blas,
+                    o,
+                    safe_inverse(d),
+                    best,
+                    c,
+                    &mut |first, count, best, c| {
+                        for k in 0..count {
+                            c.primitives += 1;
+                            let prim = (inst.triangle_offset + first + k) as usize;
+                            let v = [tris[3 * prim], tris[3 * prim + 1], tris[3 * prim + 2]];
+                            if let Some(t) = triangle(v, o, d, 0.0, *best) {
+                                *best = t;
+                                c.t = t;
+                                c.object = inst.object as f32;
                             }
                         }
-                        Child::Inner(record) => {
-                            let [(lb, l), (rb, r)] = blas.children(record);
-                            let hit = |b: rtc_bvh::Aabb| {
-                                slab_box(b.min.into(), b.max.into(), o, oinv, 0.0, best)
-                            };
-                            next = match (hit(lb), hit(rb)) {
-                                (Some(tl), Some(tr)) => {
-                                    let (near, far) = if tr < tl { (r, l) } else { (l, r) };
-                                    bstack.push(far);
-                                    Some(near)
-                                }
-                                (Some(_), None) => Some(l),
-                                (None, Some(_)) => Some(r),
-                                (None, None) => None,
-                            };
-                        }
-                    }
-                    match next.or_else(|| bstack.pop()) {
-                        Some(b) => child = b,
-                        None => break,
-                    }
-                }
+                    },
+                );
             }
-        } else if let Some(next) = children(nodes, root + n.a, origin, inv, 0.0, best, &mut stack) {
-            node = next;
-            continue;
-        }
-        match stack.pop() {
-            Some(s) => node = s,
-            None => return c,
-        }
-    }
+        },
+    );
+    c
 }
 
 #[test]

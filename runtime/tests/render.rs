@@ -302,8 +302,11 @@ fn a_custom_geometry_goes_through_the_bounds_kernel() {
     // The box the bounds kernel computed (radius 0.25 scaled by 2 around y = 0.5), in world space,
     // is the scene-level BVH's root.
     let e = renderer.entities();
-    let root = e.nodes()[e.tlas_root() as usize];
-    assert_eq!((root.min, root.max), ([-0.5, 0.0, -0.5], [0.5, 1.0, 0.5]));
+    let root = e.tlas_bounds();
+    assert_eq!(
+        (root.min.to_array(), root.max.to_array()),
+        ([-0.5, 0.0, -0.5], [0.5, 1.0, 0.5])
+    );
     let result = renderer.render(&mut |_, _| {}).expect("render");
     let s = &result.stats;
     eprintln!(

@@ -14,6 +14,7 @@ mod common;
 
 use common::gpu_or_skip;
 use glam::{Mat4, Vec3};
+use rtc_bvh::quantized::QuantizedBvh;
 use rtc_compiler::abi::{self, FieldType, StructDesc};
 use rtc_compiler::driver::{check_text, Checked, Options};
 use rtc_compiler::kernel::CompiledScene;
@@ -95,12 +96,8 @@ fn buffers_hold_the_entities_and_moves_reupload_only_nodes_and_instances() {
     let mut scene = GpuScene::new(&gpu, &all_bindings());
     // The scene-level BVH (the last nodes) has one object per leaf: the kernel tests a leaf's
     // object `a` without a loop.
-    let tlas = &e.nodes()[e.tlas_root() as usize..];
-    let leaves: Vec<u32> = tlas
-        .iter()
-        .filter(|n| n.is_leaf() && n.count() > 0)
-        .map(|n| n.count())
-        .collect();
+    let tlas = QuantizedBvh::from_gpu_nodes(&e.nodes()[e.tlas_root() as usize..]).unwrap();
+    let leaves: Vec<u32> = tlas.leaves().iter().map(|&(_, _, count)| count).collect();
     assert_eq!(leaves, vec![1; 8]);
 
     let frame = e.frame_uniforms(1, 4);
@@ -348,9 +345,9 @@ scene s {{
     // the ball with an inverted box was left out.
     let e = renderer.entities();
     assert_eq!(e.instances().len(), 2);
-    let root = e.nodes()[e.tlas_root() as usize];
-    assert_eq!((root.min[0], root.max[0]), (-1.0, 12.0));
-    assert_eq!((root.min[1], root.max[1]), (-2.0, 2.0));
+    let root = e.tlas_bounds();
+    assert_eq!((root.min.x, root.max.x), (-1.0, 12.0));
+    assert_eq!((root.min.y, root.max.y), (-2.0, 2.0));
 
     // 7 samples at 2 per pass: 4 passes of 3 × 2 tiles.
     assert_eq!(renderer.total_tiles(), 4 * 6);
@@ -397,8 +394,7 @@ scene s {{
         moved.stats.tlas_builds, 2,
         "after the bounds, after the move"
     );
-    let root = renderer.entities().nodes()[renderer.entities().tlas_root() as usize];
-    assert_eq!(root.min[1], -5.0);
+    assert_eq!(renderer.entities().tlas_bounds().min.y, -5.0);
     assert!(gpu.take_uncaptured_errors().is_empty());
 }
 

@@ -32,7 +32,7 @@ use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::kernel::{compile_scene_with, CompiledScene, KernelOptions};
 use rtc_compiler::link::LinkOptions;
-use rtc_runtime::bvh_view::{mesh_sah_cost, sah_cost};
+use rtc_runtime::bvh_view::sah_cost;
 use rtc_runtime::gpu::{AdapterChoice, Gpu};
 use rtc_runtime::image_out::{compare, read_image};
 use rtc_runtime::render::{RenderError, RenderOptions, RenderResult, Renderer};
@@ -471,7 +471,7 @@ fn preset_row(preset: BvhPreset, r: &RenderResult, renderer: &Renderer<'_>) -> P
     let (mut sum, mut weight) = (0.0f64, 0.0f64);
     for m in e.meshes() {
         let w = f64::from(m.triangles);
-        sum += w * mesh_sah_cost(nodes, m.node_base);
+        sum += w * sah_cost(nodes, m.node_base);
         weight += w;
     }
     PresetRow {

@@ -1,8 +1,8 @@
-//! The GPU node layout, [`GpuNode`], and [`flatten`], the only converter from the canonical
-//! [`Bvh`] to it. The traversal kernel reads the scene-level BVH in exactly this layout (and the
-//! CPU reference in [`crate::traverse`] reads any BVH in it); a mesh's BVH is stored in the
-//! quantised layout of [`crate::quantized`], whose 32-byte records the node buffer holds as
-//! `GpuNode`s too.
+//! The full-precision node layout, [`GpuNode`], and [`flatten`], the only converter from the
+//! canonical [`Bvh`] to it. The CPU reference in [`crate::traverse`] reads any BVH in it. The GPU
+//! kernel reads every BVH (scene and object level) in the quantised layout of
+//! [`crate::quantized`], whose 32-byte records the node buffer declares as `GpuNode`s (same size,
+//! alignment and field offsets).
 //!
 //! # Layout of the node buffer
 //!

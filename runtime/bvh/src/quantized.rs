@@ -236,6 +236,25 @@ impl QuantizedBvh {
         &self.nodes[record as usize - 1]
     }
 
+    /// Every leaf, depth-first, left first: its box (the header's whole frame for a root leaf),
+    /// first slot and slot count. The empty BVH's root is one leaf over no slots.
+    pub fn leaves(&self) -> Vec<(Aabb, u32, u32)> {
+        let frame = Aabb::new(self.header.point([0; 3]), self.header.point([0xffff; 3]));
+        let mut out = Vec::new();
+        let mut stack = vec![(frame, Child::decode(self.header.root))];
+        while let Some((bounds, child)) = stack.pop() {
+            match child {
+                Child::Leaf { first, count } => out.push((bounds, first, count)),
+                Child::Inner(record) => {
+                    let [left, right] = self.children(record);
+                    stack.push(right);
+                    stack.push(left);
+                }
+            }
+        }
+        out
+    }
+
     /// Both children of record `record`: `[(box, reference); 2]`, left first.
     #[inline(always)]
     pub fn children(&self, record: u32) -> [(Aabb, Child); 2] {

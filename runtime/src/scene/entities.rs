@@ -20,7 +20,8 @@
 //! table, and bumps only the [`Versions`] of what changed, which is what the GPU stage compares.
 //!
 //! Invariants: every index written for the GPU fits a `u32` (checked, [`SceneError::TooLarge`]);
-//! `nodes[..tlas_root]` are the BLASes and never change after `build`; `instances` is in TLAS leaf
+//! `nodes[..tlas_root]` are the BLASes and never change after `build` (all BVHs are in the
+//! quantised layout of `rtc_bvh::quantized`); `instances` is in TLAS leaf
 //! order; versions come from one process-wide counter, so two `Entities` never share a version.
 
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -28,7 +29,7 @@ use std::time::Instant;
 
 use glam::{Mat4, Vec3, Vec4};
 use rtc_bvh::quantized::quantize;
-use rtc_bvh::{build, build_with_params, flatten, Aabb, BuildInput, BuildPreset, GpuNode};
+use rtc_bvh::{build, build_with_params, Aabb, BuildInput, BuildPreset, GpuNode};
 use rtc_compiler::link::Linked;
 use rtc_compiler::sema::hir::{
     Geometry, Instance, Program, ProgramKind, SceneDesc, Settings, StructId,
@@ -212,6 +213,8 @@ pub struct Entities {
     attributes: Vec<[u32; 4]>,
     texels: Vec<u32>,
     tlas_order: Option<Vec<u32>>,
+    /// The TLAS root's exact box (the header's quantisation frame is a little larger).
+    tlas_bounds: Aabb,
     tlas_stale: bool,
     instances: Vec<GpuInstance>,
     versions: Versions,
@@ -528,6 +531,7 @@ impl Entities {
             attributes,
             texels,
             tlas_order: None,
+            tlas_bounds: Aabb::EMPTY,
             tlas_stale: true,
             instances: Vec::new(),
             versions: Versions {
@@ -643,11 +647,17 @@ impl Entities {
         let tlas = build_with_params(BuildInput::Aabbs(&boxes), &self.preset.single_leaf_params());
         self.stats.tlas_builds += 1;
         self.stats.tlas_depth = tlas.max_depth();
-        let flat = flatten(&tlas);
-        debug_assert!(flat.iter().all(|n| n.count() <= 1));
-        to_u32("BVH nodes", self.blas_nodes as usize + flat.len())?;
+        // One-object leaves always fit a reference; only an object count beyond 2^27 does not.
+        let records = quantize(&tlas).map_err(|_| SceneError::TooLarge {
+            what: "objects",
+            count: boxes.len() as u64,
+        })?;
+        to_u32(
+            "BVH nodes",
+            self.blas_nodes as usize + records.record_count(),
+        )?;
         self.nodes.truncate(self.blas_nodes as usize);
-        self.nodes.extend_from_slice(&flat);
+        records.append_gpu_nodes(&mut self.nodes);
         let order = tlas.prim_indices().to_vec();
         self.instances = order
             .iter()
@@ -688,6 +698,7 @@ impl Entities {
             }
         }
         self.tlas_order = Some(order);
+        self.tlas_bounds = tlas.root_aabb();
         self.tlas_stale = false;
         let v = next_version();
         self.versions.nodes = v;
@@ -763,7 +774,13 @@ impl Entities {
         &self.nodes
     }
 
-    /// Index of the TLAS root in [`nodes`](Self::nodes).
+    /// The scene-level BVH's root box, exactly (empty before the first build and for an empty
+    /// scene).
+    pub fn tlas_bounds(&self) -> Aabb {
+        self.tlas_bounds
+    }
+
+    /// Index of the TLAS's header record in [`nodes`](Self::nodes) (`rtc_bvh::quantized`).
     pub fn tlas_root(&self) -> u32 {
         self.blas_nodes
     }

@@ -121,7 +121,7 @@ pub struct FrameUniforms {
     pub total_samples: u32,
     /// The scene's `seed`.
     pub seed: u32,
-    /// Index of the scene-level BVH's root in `nodes`.
+    /// Index of the scene-level BVH's header record in `nodes` (`rtc_bvh::quantized`).
     pub tlas_root: u32,
     /// Entries of `instances` (objects in the scene-level BVH).
     pub instance_count: u32,

@@ -23,15 +23,15 @@
 //! Bindings, struct layouts and their docs are in `rtc_compiler::abi`; this is what the runtime puts
 //! in them.
 //!
-//! - **`nodes`** (`GpuNode`, 32 bytes, bits in `rtc_bvh::gpu`): every BVH flattened with
-//!   [`rtc_bvh::flatten`], concatenated: first one object-level BVH (BLAS) per distinct mesh, in order
-//!   of first use, **built once per mesh and shared by all objects using it**; then the scene-level
-//!   BVH (TLAS) over the objects' world-space boxes, **one object per leaf** (built with
-//!   `BuildPreset::single_leaf_params`; the kernel tests a TLAS leaf's object `a` without a loop).
-//!   A BVH whose first node is at index `base` has
-//!   its root at `base` and the children of an inner node at `base + a` and `base + a + 1`; its
-//!   node `base + 1` is rtc-bvh's padding node. The TLAS comes last so that rebuilding it (its node
-//!   count may change) never moves a BLAS. `FrameUniforms.tlas_root` is the TLAS base.
+//! - **`nodes`** (32-byte records, declared as `GpuNode`; bits in `rtc_bvh::quantized`): every
+//!   BVH converted with `rtc_bvh::quantized::quantize`, concatenated: first one object-level BVH
+//!   (BLAS) per distinct mesh, in order of first use, **built once per mesh and shared by all
+//!   objects using it**; then the scene-level BVH (TLAS) over the objects' world-space boxes, **one
+//!   object per leaf** (built with `BuildPreset::single_leaf_params`; the kernel tests a TLAS
+//!   leaf's object without a loop). A BVH whose first record is at index `base` has its header
+//!   (quantisation frame and root reference) at `base` and its inner-node record `r` at
+//!   `base + r`. The TLAS comes last so that rebuilding it (its record count may change) never
+//!   moves a BLAS. `FrameUniforms.tlas_root` is the TLAS's header.
 //! - **`instances`** ([`GpuInstance`], 128 bytes): one per object in the TLAS, **in TLAS leaf
 //!   order**: a TLAS leaf's slots index this array directly, and slot `s` holds the object
 //!   `tlas.prim_indices()[s]`. Fields: world-to-object and object-to-world affine rows (translation

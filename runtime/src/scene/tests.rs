@@ -8,9 +8,7 @@
 
 use glam::{Mat4, Vec3, Vec4};
 use rtc_bvh::quantized::QuantizedBvh;
-use rtc_bvh::traverse::{
-    closest_hit_quantized_with, closest_hit_with, intersect_triangle, Hit, Ray,
-};
+use rtc_bvh::traverse::{closest_hit_quantized_with, intersect_triangle, Hit, Ray};
 use rtc_bvh::{Aabb, BuildPreset, GpuNode};
 use rtc_compiler::driver::{check_text, Options};
 use rtc_compiler::layout;
@@ -289,11 +287,11 @@ fn world_to_object(inst: &GpuInstance) -> Mat4 {
 /// Two-level closest hit over the buffers only: `(object, triangle, t)`.
 fn trace(e: &Entities, origin: Vec3, dir: Vec3) -> Option<(u32, u32, f32)> {
     let nodes = e.nodes();
-    let tlas = &nodes[e.tlas_root() as usize..];
+    let tlas = QuantizedBvh::from_gpu_nodes(&nodes[e.tlas_root() as usize..]).expect("header");
     let tris = e.triangles();
     // The closest triangle found in each object (by object index).
     let mut triangle_of = vec![0u32; e.objects().len()];
-    let hit = closest_hit_with(tlas, &Ray::new(origin, dir), |slot, _, t_max| {
+    let hit = closest_hit_quantized_with(&tlas, &Ray::new(origin, dir), |slot, _, t_max| {
         let inst = e.instances()[slot as usize];
         let m = world_to_object(&inst);
         let ray = Ray {
@@ -370,11 +368,11 @@ fn instance_slots_follow_the_tlas_leaf_order() {
             );
         }
         // Every leaf's slots lie inside the leaf's box.
-        let tlas = &e.nodes()[e.tlas_root() as usize..];
-        for n in tlas.iter().filter(|n| n.is_leaf() && n.count() > 0) {
-            for slot in n.a..n.a + n.count() {
+        let tlas = QuantizedBvh::from_gpu_nodes(&e.nodes()[e.tlas_root() as usize..]).unwrap();
+        for (b, first, count) in tlas.leaves() {
+            for slot in first..first + count {
                 let x = 4.0 * e.instances()[slot as usize].object as f32;
-                assert!(n.min[0] <= x && x <= n.max[0]);
+                assert!(b.min.x <= x && x <= b.max.x);
             }
         }
         // Aim at every cube's centre from above: the two-level traversal finds exactly it.
@@ -623,9 +621,8 @@ scene s {{
         "medium objects, by instance slot, in object order"
     );
     // The ball's world box is its bounds moved by its transform.
-    let tlas_root = &e.nodes()[e.tlas_root() as usize];
-    assert_eq!(tlas_root.max[0], 12.0);
-    assert_eq!(tlas_root.min[0], -11.0);
+    assert_eq!(e.tlas_bounds().max.x, 12.0);
+    assert_eq!(e.tlas_bounds().min.x, -11.0);
 
     // Moving a medium object re-sorts the table only when the slots change.
     let params_version = e.versions().params;

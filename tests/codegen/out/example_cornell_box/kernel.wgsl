@@ -133,14 +133,13 @@ const RAY_CAMERA: u32 = 0u;
 const NO_HIT: u32 = 4294967295u;
 const HAS_MEDIA: bool = false;
 const MESH_GEOMETRY: u32 = 4294967295u;
-const MESH_LEAF_BIT: u32 = 2147483648u;
-const MESH_COUNT_SHIFT: u32 = 27u;
-const MESH_COUNT_MASK: u32 = 15u;
-const MESH_FIRST_MASK: u32 = 134217727u;
+const NODE_LEAF_BIT: u32 = 2147483648u;
+const NODE_COUNT_SHIFT: u32 = 27u;
+const NODE_COUNT_MASK: u32 = 15u;
+const NODE_FIRST_MASK: u32 = 134217727u;
 const BLAS_STACK: u32 = 64u;
 const TLAS_STACK: u32 = 64u;
 const HAS_SECONDARY_RAYS: bool = false;
-const LEAF_BIT: u32 = 2147483648u;
 const HAS_BACKGROUND: bool = false;
 const FLAG_MEDIUM: u32 = 4u;
 const RAY_SHADOW: u32 = 2u;
@@ -365,15 +364,15 @@ fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
     return true;
 }
 
-fn mesh_box_lo(p: vec3<u32>) -> vec3<u32> {
+fn node_box_lo(p: vec3<u32>) -> vec3<u32> {
     return vec3<u32>((p.x & 65535u), (p.x >> 16u), (p.y & 65535u));
 }
 
-fn mesh_point(origin: vec3<f32>, scale: vec3<f32>, q: vec3<u32>) -> vec3<f32> {
+fn node_point(origin: vec3<f32>, scale: vec3<f32>, q: vec3<u32>) -> vec3<f32> {
     return (origin + (vec3<f32>(q) * scale));
 }
 
-fn mesh_box_hi(p_1: vec3<u32>) -> vec3<u32> {
+fn node_box_hi(p_1: vec3<u32>) -> vec3<u32> {
     return vec3<u32>((p_1.y >> 16u), (p_1.z & 65535u), (p_1.z >> 16u));
 }
 
@@ -391,6 +390,22 @@ fn slab(lo: vec3<f32>, hi: vec3<f32>, origin_1: vec3<f32>, inv_dir: vec3<f32>, t
     return bitcast<f32>(_e30);
 }
 
+fn children_entry(n: GpuNode, origin_2: vec3<f32>, scale_1: vec3<f32>, ray_3: Ray, inv: vec3<f32>, tmax_3: f32) -> vec2<f32> {
+    let lq = bitcast<vec3<u32>>(n.min);
+    let rq = bitcast<vec3<u32>>(n.max);
+    let _e10 = node_box_lo(lq);
+    let _e11 = node_point(origin_2, scale_1, _e10);
+    let _e12 = node_box_hi(lq);
+    let _e13 = node_point(origin_2, scale_1, _e12);
+    let _e16 = slab(_e11, _e13, ray_3.origin, inv, ray_3.tmin, tmax_3);
+    let _e17 = node_box_lo(rq);
+    let _e18 = node_point(origin_2, scale_1, _e17);
+    let _e19 = node_box_hi(rq);
+    let _e20 = node_point(origin_2, scale_1, _e19);
+    let _e23 = slab(_e18, _e20, ray_3.origin, inv, ray_3.tmin, tmax_3);
+    return vec2<f32>(_e16, _e23);
+}
+
 fn pop(base: u32, sp: u32) -> vec2<u32> {
     if (sp == 0u) {
         return vec2<u32>(NO_HIT, 0u);
@@ -399,7 +414,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -408,21 +423,21 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e8 = safe_inverse(ray_3.dir);
-    let _e9 = prepare_triangle_ray(ray_3);
+    let _e8 = safe_inverse(ray_4.dir);
+    let _e9 = prepare_triangle_ray(ray_4);
     let base_1 = inst_2.blas_root;
     let header = nodes[base_1];
-    let origin_2 = header.min;
-    let scale_1 = header.max;
+    let origin_3 = header.min;
+    let scale_2 = header.max;
     sp_1 = 0u;
     child = header.a;
     loop {
         let _e20 = child;
-        if ((_e20 & MESH_LEAF_BIT) != 0u) {
+        if ((_e20 & NODE_LEAF_BIT) != 0u) {
             let _e25 = child;
-            let count = ((_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+            let count = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
             let _e32 = child;
-            let first = (_e32 & MESH_FIRST_MASK);
+            let first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
             loop {
                 let _e37 = k;
@@ -432,7 +447,7 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, 
                 let _e41 = k;
                 let prim = ((inst_2.triangle_offset + first) + _e41);
                 let _e45 = best.t;
-                let _e46 = hit_triangle(_e9, prim, ray_3.tmin, _e45);
+                let _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
                     let c_5 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0f));
@@ -452,75 +467,65 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, 
             }
         } else {
             let _e62 = child;
-            let n_5 = nodes[(base_1 + _e62)];
-            let lq = bitcast<vec3<u32>>(n_5.min);
-            let rq = bitcast<vec3<u32>>(n_5.max);
-            let _e71 = mesh_box_lo(lq);
-            let _e72 = mesh_point(origin_2, scale_1, _e71);
-            let _e73 = mesh_box_hi(lq);
-            let _e74 = mesh_point(origin_2, scale_1, _e73);
-            let _e78 = best.t;
-            let _e79 = slab(_e72, _e74, ray_3.origin, _e8, ray_3.tmin, _e78);
-            let _e80 = mesh_box_lo(rq);
-            let _e81 = mesh_point(origin_2, scale_1, _e80);
-            let _e82 = mesh_box_hi(rq);
-            let _e83 = mesh_point(origin_2, scale_1, _e82);
-            let _e87 = best.t;
-            let _e88 = slab(_e81, _e83, ray_3.origin, _e8, ray_3.tmin, _e87);
-            let _e90 = F32_INF;
-            let _e94 = F32_INF;
-            if ((_e79 < bitcast<f32>(_e90)) && (_e88 < bitcast<f32>(_e94))) {
-                near = n_5.a;
-                far = n_5.b;
-                if ((_e88 < _e79) != shadow) {
-                    near = n_5.b;
-                    far = n_5.a;
+            let n_6 = nodes[(base_1 + _e62)];
+            let _e68 = best.t;
+            let _e69 = children_entry(n_6, origin_3, scale_2, ray_4, _e8, _e68);
+            let tl = _e69.x;
+            let tr = _e69.y;
+            let _e73 = F32_INF;
+            let _e77 = F32_INF;
+            if ((tl < bitcast<f32>(_e73)) && (tr < bitcast<f32>(_e77))) {
+                near = n_6.a;
+                far = n_6.b;
+                if ((tr < tl) != shadow) {
+                    near = n_6.b;
+                    far = n_6.a;
                 }
-                let _e106 = sp_1;
-                if (_e106 < BLAS_STACK) {
-                    let _e110 = sp_1;
-                    let _e112 = far;
-                    traversal_stack[min((TLAS_STACK + _e110), 127u)] = _e112;
-                    let _e117 = sp_1;
-                    sp_1 = (_e117 + 1u);
+                let _e89 = sp_1;
+                if (_e89 < BLAS_STACK) {
+                    let _e93 = sp_1;
+                    let _e95 = far;
+                    traversal_stack[min((TLAS_STACK + _e93), 127u)] = _e95;
+                    let _e100 = sp_1;
+                    sp_1 = (_e100 + 1u);
                 }
-                let _e120 = near;
-                child = _e120;
+                let _e103 = near;
+                child = _e103;
                 continue;
             }
-            let _e122 = F32_INF;
-            if (_e79 < bitcast<f32>(_e122)) {
-                child = n_5.a;
+            let _e105 = F32_INF;
+            if (tl < bitcast<f32>(_e105)) {
+                child = n_6.a;
                 continue;
             }
-            let _e127 = F32_INF;
-            if (_e88 < bitcast<f32>(_e127)) {
-                child = n_5.b;
+            let _e110 = F32_INF;
+            if (tr < bitcast<f32>(_e110)) {
+                child = n_6.b;
                 continue;
             }
         }
-        let _e132 = sp_1;
-        let _e133 = pop(TLAS_STACK, _e132);
-        if (_e133.x == NO_HIT) {
+        let _e115 = sp_1;
+        let _e116 = pop(TLAS_STACK, _e115);
+        if (_e116.x == NO_HIT) {
             break;
         }
-        child = _e133.x;
-        sp_1 = _e133.y;
+        child = _e116.x;
+        sp_1 = _e116.y;
     }
-    let _e139 = best;
-    return _e139;
+    let _e122 = best;
+    return _e122;
 }
 
-fn intersect_object(slot_2: u32, ray_4: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_2: u32, ray_5: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
     let inst_5 = instances[slot_2];
-    let _e7 = to_object(inst_5, ray_4);
+    let _e7 = to_object(inst_5, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_5.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_5, slot_2, ray_4, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_5, slot_2, ray_5, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -539,37 +544,37 @@ fn point_to_world(inst_3: GpuInstance, p_2: vec3<f32>) -> vec3<f32> {
 }
 
 fn decode_octahedral(bits: u32) -> vec3<f32> {
-    var n: vec3<f32>;
+    var n_1: vec3<f32>;
 
     let e = unpack2x16snorm(bits);
-    n = vec3<f32>(e.x, e.y, ((1f - abs(e.x)) - abs(e.y)));
-    let _e14 = n.z;
+    n_1 = vec3<f32>(e.x, e.y, ((1f - abs(e.x)) - abs(e.y)));
+    let _e14 = n_1.z;
     if (_e14 < 0f) {
-        let _e21 = n;
+        let _e21 = n_1;
         let s_3 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
-        let _e29 = n;
+        let _e29 = n_1;
         let xy = ((vec2(1f) - abs(_e29.yx)) * s_3);
-        let _e37 = n.z;
-        n = vec3<f32>(xy.x, xy.y, _e37);
+        let _e37 = n_1.z;
+        n_1 = vec3<f32>(xy.x, xy.y, _e37);
     }
-    let _e39 = n;
+    let _e39 = n_1;
     let _e40 = normalize_vec3f(_e39);
     return _e40;
 }
 
-fn normal_to_world(inst_4: GpuInstance, n_1: vec3<f32>) -> vec3<f32> {
-    let w_1 = (((inst_4.world_to_object_0_.xyz * vec3(n_1.x)) + (inst_4.world_to_object_1_.xyz * vec3(n_1.y))) + (inst_4.world_to_object_2_.xyz * vec3(n_1.z)));
+fn normal_to_world(inst_4: GpuInstance, n_2: vec3<f32>) -> vec3<f32> {
+    let w_1 = (((inst_4.world_to_object_0_.xyz * vec3(n_2.x)) + (inst_4.world_to_object_1_.xyz * vec3(n_2.y))) + (inst_4.world_to_object_2_.xyz * vec3(n_2.z)));
     let _e19 = normalize_vec3f(w_1);
     return _e19;
 }
 
-fn finish_hit(ray_5: Ray, c_1: Candidate) -> Hit {
+fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
     var hit: Hit;
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
     let inst_6 = instances[c_1.slot];
-    hit = Hit((ray_5.origin + (ray_5.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_6.object, c_1.primitive);
+    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_6.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
@@ -605,7 +610,7 @@ fn finish_hit(ray_5: Ray, c_1: Candidate) -> Hit {
     let _e131 = normal_to_world(inst_6, _e130);
     hit.normal = _e131;
     let _e135 = hit.geometric_normal;
-    hit.front_face = (dot(ray_5.dir, _e135) < 0f);
+    hit.front_face = (dot(ray_6.dir, _e135) < 0f);
     let _e139 = hit;
     return _e139;
 }
@@ -656,130 +661,132 @@ fn medium_at(p_3: vec3<f32>, exclude: u32) -> u32 {
     return _e60;
 }
 
-fn intersect_scene(ray_6: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
-    var node: u32;
+    var child_1: u32;
     var near_1: u32;
     var far_1: u32;
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_6.tmax);
+    let _e7 = no_candidate(ray_7.tmax);
     best_2 = _e7;
     let frame_2 = frame;
     if (frame_2.instance_count == 0u) {
         let _e14 = best_2;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_6.dir);
-    sp_2 = 0u;
-    node = frame_2.tlas_root;
-    let _e21 = node;
-    let root = nodes[_e21];
-    let _e30 = best_2.t;
-    let _e31 = slab(root.min, root.max, ray_6.origin, _e16, ray_6.tmin, _e30);
-    let _e33 = F32_INF;
-    if (_e31 == bitcast<f32>(_e33)) {
-        let _e36 = best_2;
-        return _e36;
+    let _e16 = safe_inverse(ray_7.dir);
+    let base_2 = frame_2.tlas_root;
+    let header_1 = nodes[base_2];
+    let origin_4 = header_1.min;
+    let scale_3 = header_1.max;
+    let _e25 = node_point(origin_4, scale_3, vec3(65535u));
+    let _e29 = best_2.t;
+    let _e30 = slab(origin_4, _e25, ray_7.origin, _e16, ray_7.tmin, _e29);
+    let _e32 = F32_INF;
+    if (_e30 == bitcast<f32>(_e32)) {
+        let _e35 = best_2;
+        return _e35;
     }
+    sp_2 = 0u;
+    child_1 = header_1.a;
     loop {
-        let _e37 = node;
-        let n_6 = nodes[_e37];
-        if ((n_6.b & LEAF_BIT) != 0u) {
-            if ((n_6.b & ~(LEAF_BIT)) != 0u) {
-                let _e53 = best_2;
-                let _e54 = intersect_object(n_6.a, ray_6, _e53, shadow_2);
-                best_2 = _e54;
-                let _e56 = best_2.slot;
-                if (shadow_2 && (_e56 != NO_HIT)) {
-                    let _e60 = best_2;
-                    return _e60;
+        let _e40 = child_1;
+        if ((_e40 & NODE_LEAF_BIT) != 0u) {
+            let _e45 = child_1;
+            if (((_e45 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                let _e54 = child_1;
+                let _e57 = best_2;
+                let _e58 = intersect_object((_e54 & NODE_FIRST_MASK), ray_7, _e57, shadow_2);
+                best_2 = _e58;
+                let _e60 = best_2.slot;
+                if (shadow_2 && (_e60 != NO_HIT)) {
+                    let _e64 = best_2;
+                    return _e64;
                 }
             }
         } else {
-            let left = (frame_2.tlas_root + n_6.a);
-            let right = (left + 1u);
-            let l_1 = nodes[left];
-            let rr = nodes[right];
-            let _e77 = best_2.t;
-            let _e78 = slab(l_1.min, l_1.max, ray_6.origin, _e16, ray_6.tmin, _e77);
-            let _e84 = best_2.t;
-            let _e85 = slab(rr.min, rr.max, ray_6.origin, _e16, ray_6.tmin, _e84);
-            let _e87 = F32_INF;
-            let _e91 = F32_INF;
-            if ((_e78 < bitcast<f32>(_e87)) && (_e85 < bitcast<f32>(_e91))) {
-                near_1 = left;
-                far_1 = right;
-                if (_e85 < _e78) {
-                    near_1 = right;
-                    far_1 = left;
+            let _e65 = child_1;
+            let n_7 = nodes[(base_2 + _e65)];
+            let _e71 = best_2.t;
+            let _e72 = children_entry(n_7, origin_4, scale_3, ray_7, _e16, _e71);
+            let tl_1 = _e72.x;
+            let tr_1 = _e72.y;
+            let _e76 = F32_INF;
+            let _e80 = F32_INF;
+            if ((tl_1 < bitcast<f32>(_e76)) && (tr_1 < bitcast<f32>(_e80))) {
+                near_1 = n_7.a;
+                far_1 = n_7.b;
+                if (tr_1 < tl_1) {
+                    near_1 = n_7.b;
+                    far_1 = n_7.a;
                 }
-                let _e98 = sp_2;
-                if (_e98 < TLAS_STACK) {
-                    let _e101 = sp_2;
-                    let _e102 = far_1;
-                    traversal_stack[min(_e101, 127u)] = _e102;
-                    let _e107 = sp_2;
-                    sp_2 = (_e107 + 1u);
+                let _e91 = sp_2;
+                if (_e91 < TLAS_STACK) {
+                    let _e94 = sp_2;
+                    let _e95 = far_1;
+                    traversal_stack[min(_e94, 127u)] = _e95;
+                    let _e100 = sp_2;
+                    sp_2 = (_e100 + 1u);
                 }
-                let _e110 = near_1;
-                node = _e110;
+                let _e103 = near_1;
+                child_1 = _e103;
                 continue;
             }
-            let _e112 = F32_INF;
-            if (_e78 < bitcast<f32>(_e112)) {
-                node = left;
+            let _e105 = F32_INF;
+            if (tl_1 < bitcast<f32>(_e105)) {
+                child_1 = n_7.a;
                 continue;
             }
-            let _e116 = F32_INF;
-            if (_e85 < bitcast<f32>(_e116)) {
-                node = right;
+            let _e110 = F32_INF;
+            if (tr_1 < bitcast<f32>(_e110)) {
+                child_1 = n_7.b;
                 continue;
             }
         }
-        let _e120 = sp_2;
-        let _e121 = pop(0u, _e120);
-        if (_e121.x == NO_HIT) {
+        let _e115 = sp_2;
+        let _e116 = pop(0u, _e115);
+        if (_e116.x == NO_HIT) {
             break;
         }
-        node = _e121.x;
-        sp_2 = _e121.y;
+        child_1 = _e116.x;
+        sp_2 = _e116.y;
     }
-    let _e127 = best_2;
-    return _e127;
+    let _e122 = best_2;
+    return _e122;
 }
 
-fn dispatch_miss(type_id_1: u32, offset_2: u32, ray_7: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_1: u32, offset_2: u32, ray_8: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn miss(ray_8: Ray) -> vec3<f32> {
+fn miss(ray_9: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_3 = frame;
-    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_8);
+    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_9);
     return _e9;
 }
 
-fn dispatch_medium(type_id_2: u32, offset_3: u32, ray_9: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_2: u32, offset_3: u32, ray_10: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_10: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_11: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_10.medium == 0u) {
+    if (ray_11.medium == 0u) {
         return radiance_1;
     }
-    let inst_7 = instances[(ray_10.medium - 1u)];
+    let inst_7 = instances[(ray_11.medium - 1u)];
     if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_10, t_1, radiance_1);
+    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_11, t_1, radiance_1);
     return _e21;
 }
 
@@ -808,27 +815,28 @@ fn load_PointLight(offset_5: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn offset_origin(p_4: vec3<f32>, n_2: vec3<f32>) -> vec3<f32> {
+fn offset_origin(p_4: vec3<f32>, n_3: vec3<f32>) -> vec3<f32> {
     let _e3 = frame;
-    let root_1 = nodes[_e3.tlas_root];
-    let a_5 = max(abs(p_4), max(abs(root_1.min), abs(root_1.max)));
+    let header_2 = nodes[_e3.tlas_root];
+    let _e15 = node_point(header_2.min, header_2.max, vec3(65535u));
+    let a_5 = max(abs(p_4), max(abs(header_2.min), abs(_e15)));
     let m_1 = max(max(a_5.x, a_5.y), a_5.z);
-    return (p_4 + (n_2 * vec3((m_1 * (1f / 65536f)))));
+    return (p_4 + (n_3 * vec3((m_1 * (1f / 65536f)))));
 }
 
 fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
-    var n_3: vec3<f32>;
+    var n_4: vec3<f32>;
 
-    n_3 = normal;
-    let _e5 = n_3;
+    n_4 = normal;
+    let _e5 = n_4;
     if (dot(dir, _e5) < 0f) {
-        let _e9 = n_3;
-        n_3 = -(_e9);
+        let _e9 = n_4;
+        n_4 = -(_e9);
     }
-    let _e11 = n_3;
+    let _e11 = n_4;
     let _e12 = offset_origin(position, _e11);
-    let ray_17 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
-    let _e23 = intersect_scene(ray_17, true);
+    let ray_18 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
+    let _e23 = intersect_scene(ray_18, true);
     return select(1f, 0f, (_e23.slot != NO_HIT));
 }
 
@@ -866,11 +874,11 @@ fn sample_light_query(i_1: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> L
     return _e27;
 }
 
-fn lambert_shade(m: Lambert, ray_11: Ray, hit_1: Hit) -> vec3<f32> {
+fn lambert_shade(m: Lambert, ray_12: Ray, hit_1: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_2: u32;
 
-    let n_7 = faceForward(hit_1.normal, ray_11.dir, hit_1.normal);
+    let n_8 = faceForward(hit_1.normal, ray_12.dir, hit_1.normal);
     color = vec3(0f);
     let _e11 = light_count_query();
     i_2 = 0u;
@@ -882,7 +890,7 @@ fn lambert_shade(m: Lambert, ray_11: Ray, hit_1: Hit) -> vec3<f32> {
         let _e15 = i_2;
         let _e18 = sample_light_query(_e15, hit_1.position, hit_1.geometric_normal);
         let _e19 = color;
-        color = (_e19 + (((m.albedo * vec3(INV_PI)) * _e18.radiance) * vec3(max(dot(n_7, _e18.dir), 0f))));
+        color = (_e19 + (((m.albedo * vec3(INV_PI)) * _e18.radiance) * vec3(max(dot(n_8, _e18.dir), 0f))));
         continuing {
             let _e33 = i_2;
             i_2 = (_e33 + 1u);
@@ -892,33 +900,33 @@ fn lambert_shade(m: Lambert, ray_11: Ray, hit_1: Hit) -> vec3<f32> {
     return _e36;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_7: u32, ray_12: Ray, hit_2: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_7: u32, ray_13: Ray, hit_2: Hit, secondary: vec3<f32>) -> vec3<f32> {
     let _e3 = load_Lambert(offset_7);
-    let _e4 = lambert_shade(_e3, ray_12, hit_2);
+    let _e4 = lambert_shade(_e3, ray_13, hit_2);
     return _e4;
 }
 
-fn shade_direct(ray_13: Ray, c_2: Candidate) -> vec3<f32> {
+fn shade_direct(ray_14: Ray, c_2: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_2.slot];
-    let _e6 = finish_hit(ray_13, c_2);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_13, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_14, c_2);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_secondary_rays(type_id_5: u32, offset_8: u32, ray_14: Ray, hit_3: Hit) {
+fn dispatch_secondary_rays(type_id_5: u32, offset_8: u32, ray_15: Ray, hit_3: Hit) {
     return;
 }
 
 fn spawn_origin(hit_4: Hit, dir_1: vec3<f32>) -> vec3<f32> {
-    var n_4: vec3<f32>;
+    var n_5: vec3<f32>;
 
-    n_4 = hit_4.geometric_normal;
-    let _e4 = n_4;
+    n_5 = hit_4.geometric_normal;
+    let _e4 = n_5;
     if (dot(dir_1, _e4) < 0f) {
-        let _e8 = n_4;
-        n_4 = -(_e8);
+        let _e8 = n_5;
+        n_5 = -(_e8);
     }
-    let _e11 = n_4;
+    let _e11 = n_5;
     let _e12 = offset_origin(hit_4.position, _e11);
     return _e12;
 }
@@ -926,7 +934,7 @@ fn spawn_origin(hit_4: Hit, dir_1: vec3<f32>) -> vec3<f32> {
 fn trace(camera_ray: Ray) -> vec3<f32> {
     var stack: array<Frame, 1>;
     var depth: u32;
-    var ray_15: Ray;
+    var ray_16: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var pushed: bool;
@@ -948,42 +956,42 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 1>();
     depth = 0u;
-    ray_15 = camera_ray;
+    ray_16 = camera_ray;
     value = vec3(0f);
     have_value = false;
     loop {
         let _e26 = have_value;
         if !(_e26) {
-            let _e28 = ray_15;
+            let _e28 = ray_16;
             let _e30 = intersect_scene(_e28, false);
             if (_e30.slot == NO_HIT) {
-                let _e34 = ray_15;
+                let _e34 = ray_16;
                 let _e36 = F32_INF;
-                let _e38 = ray_15;
+                let _e38 = ray_16;
                 let _e39 = miss(_e38);
                 let _e40 = through_medium(_e34, bitcast<f32>(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 let inst_9 = instances[_e30.slot];
-                let _e46 = ray_15;
+                let _e46 = ray_16;
                 let _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                let _e56 = ray_15.depth;
+                let _e56 = ray_16.depth;
                 let _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    let _e68 = ray_15;
+                    let _e68 = ray_16;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     let _e70 = spawn_count;
-                    let n_8 = min(min(_e70, 1u), MAX_SPAWN);
-                    if (n_8 > 0u) {
-                        let _e77 = ray_15;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
+                    let n_9 = min(min(_e70, 1u), MAX_SPAWN);
+                    if (n_9 > 0u) {
+                        let _e77 = ray_16;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_9, 0u);
                         i_3 = 0u;
                         loop {
                             let _e88 = i_3;
-                            if (_e88 >= n_8) {
+                            if (_e88 >= n_9) {
                                 break;
                             }
                             let _e91 = i_3;
@@ -1009,9 +1017,9 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 }
                 let _e120 = pushed;
                 if !(_e120) {
-                    let _e124 = ray_15;
+                    let _e124 = ray_16;
                     let _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0f));
-                    let _e128 = ray_15;
+                    let _e128 = ray_16;
                     let _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1028,9 +1036,9 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e137 = depth;
             let top = (_e137 - 1u);
             let _e144 = stack[min(top, 0u)].next;
-            let child_1 = (_e144 - 1u);
+            let child_2 = (_e144 - 1u);
             let _e151 = stack[min(top, 0u)].sum;
-            let _e159 = stack[min(top, 0u)].weights[min(child_1, 0u)];
+            let _e159 = stack[min(top, 0u)].weights[min(child_2, 0u)];
             let _e160 = value;
             stack[min(top, 0u)].sum = (_e151 + (_e159 * _e160));
             have_value = false;
@@ -1049,7 +1057,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e209 = spawn_origin(hit_6, dir_3);
             let _e212 = F32_INF;
             let _e218 = medium;
-            ray_15 = Ray(_e209, 0f, dir_3, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_16 = Ray(_e209, 0f, dir_3, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             let _e224 = stack[min(top_1, 0u)].slot;
             let inst_10 = instances[_e224];
@@ -1081,7 +1089,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s: u32;
-    var ray_16: Ray;
+    var ray_17: Ray;
 
     let frame_5 = frame;
     let tile_1 = tile;
@@ -1098,13 +1106,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
         let sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_16 = _e23;
-        ray_16.depth = 0u;
-        ray_16.kind = RAY_CAMERA;
-        let _e31 = ray_16.origin;
+        ray_17 = _e23;
+        ray_17.depth = 0u;
+        ray_17.kind = RAY_CAMERA;
+        let _e31 = ray_17.origin;
         let _e33 = medium_at(_e31, NO_HIT);
-        ray_16.medium = _e33;
-        let _e34 = ray_16;
+        ray_17.medium = _e33;
+        let _e34 = ray_17;
         let _e35 = trace(_e34);
         let _e36 = is_finite_vec3f(_e35);
         if all(_e36) {

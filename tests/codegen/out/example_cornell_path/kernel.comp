@@ -130,14 +130,13 @@ const uint RAY_CAMERA = 0u;
 const uint NO_HIT = 4294967295u;
 const bool HAS_MEDIA = false;
 const uint MESH_GEOMETRY = 4294967295u;
-const uint MESH_LEAF_BIT = 2147483648u;
-const uint MESH_COUNT_SHIFT = 27u;
-const uint MESH_COUNT_MASK = 15u;
-const uint MESH_FIRST_MASK = 134217727u;
+const uint NODE_LEAF_BIT = 2147483648u;
+const uint NODE_COUNT_SHIFT = 27u;
+const uint NODE_COUNT_MASK = 15u;
+const uint NODE_FIRST_MASK = 134217727u;
 const uint BLAS_STACK = 64u;
 const uint TLAS_STACK = 64u;
 const bool HAS_SECONDARY_RAYS = true;
-const uint LEAF_BIT = 2147483648u;
 const bool HAS_BACKGROUND = false;
 const uint FLAG_MEDIUM = 4u;
 const uint RAY_SHADOW = 2u;
@@ -367,15 +366,15 @@ bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
     return true;
 }
 
-uvec3 mesh_box_lo(uvec3 p) {
+uvec3 node_box_lo(uvec3 p) {
     return uvec3((p.x & 65535u), (p.x >> 16u), (p.y & 65535u));
 }
 
-vec3 mesh_point(vec3 origin, vec3 scale, uvec3 q) {
+vec3 node_point(vec3 origin, vec3 scale, uvec3 q) {
     return (origin + (vec3(q) * scale));
 }
 
-uvec3 mesh_box_hi(uvec3 p_1) {
+uvec3 node_box_hi(uvec3 p_1) {
     return uvec3((p_1.y >> 16u), (p_1.z & 65535u), (p_1.z >> 16u));
 }
 
@@ -393,6 +392,22 @@ float slab(vec3 lo, vec3 hi, vec3 origin_1, vec3 inv_dir, float tmin_1, float tm
     return uintBitsToFloat(_e30);
 }
 
+vec2 children_entry(GpuNode n, vec3 origin_2, vec3 scale_1, Ray ray_3, vec3 inv, float tmax_3) {
+    uvec3 lq = floatBitsToUint(n.min_);
+    uvec3 rq = floatBitsToUint(n.max_);
+    uvec3 _e10 = node_box_lo(lq);
+    vec3 _e11 = node_point(origin_2, scale_1, _e10);
+    uvec3 _e12 = node_box_hi(lq);
+    vec3 _e13 = node_point(origin_2, scale_1, _e12);
+    float _e16 = slab(_e11, _e13, ray_3.origin, inv, ray_3.tmin, tmax_3);
+    uvec3 _e17 = node_box_lo(rq);
+    vec3 _e18 = node_point(origin_2, scale_1, _e17);
+    uvec3 _e19 = node_box_hi(rq);
+    vec3 _e20 = node_point(origin_2, scale_1, _e19);
+    float _e23 = slab(_e18, _e20, ray_3.origin, inv, ray_3.tmin, tmax_3);
+    return vec2(_e16, _e23);
+}
+
 uvec2 pop(uint base, uint sp) {
     if ((sp == 0u)) {
         return uvec2(NO_HIT, 0u);
@@ -401,7 +416,7 @@ uvec2 pop(uint base, uint sp) {
     return uvec2(_e14, (sp - 1u));
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_3, Candidate best_in, bool shadow) {
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
     uint child = 0u;
@@ -409,21 +424,21 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    vec3 _e8 = safe_inverse(ray_3.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_3);
+    vec3 _e8 = safe_inverse(ray_4.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header = _group_0_binding_2_cs[base_1];
-    vec3 origin_2 = header.min_;
-    vec3 scale_1 = header.max_;
+    vec3 origin_3 = header.min_;
+    vec3 scale_2 = header.max_;
     sp_1 = 0u;
     child = header.a;
     while(true) {
         uint _e20 = child;
-        if (((_e20 & MESH_LEAF_BIT) != 0u)) {
+        if (((_e20 & NODE_LEAF_BIT) != 0u)) {
             uint _e25 = child;
-            uint count = ((_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+            uint count = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
             uint _e32 = child;
-            uint first = (_e32 & MESH_FIRST_MASK);
+            uint first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
             bool loop_init = true;
             while(true) {
@@ -439,7 +454,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e41 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e41);
                 float _e45 = best.t;
-                vec3 _e46 = hit_triangle(_e9, prim, ray_3.tmin, _e45);
+                vec3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
                     Candidate c_5 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0.0));
@@ -455,74 +470,64 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             }
         } else {
             uint _e62 = child;
-            GpuNode n_7 = _group_0_binding_2_cs[(base_1 + _e62)];
-            uvec3 lq = floatBitsToUint(n_7.min_);
-            uvec3 rq = floatBitsToUint(n_7.max_);
-            uvec3 _e71 = mesh_box_lo(lq);
-            vec3 _e72 = mesh_point(origin_2, scale_1, _e71);
-            uvec3 _e73 = mesh_box_hi(lq);
-            vec3 _e74 = mesh_point(origin_2, scale_1, _e73);
-            float _e78 = best.t;
-            float _e79 = slab(_e72, _e74, ray_3.origin, _e8, ray_3.tmin, _e78);
-            uvec3 _e80 = mesh_box_lo(rq);
-            vec3 _e81 = mesh_point(origin_2, scale_1, _e80);
-            uvec3 _e82 = mesh_box_hi(rq);
-            vec3 _e83 = mesh_point(origin_2, scale_1, _e82);
-            float _e87 = best.t;
-            float _e88 = slab(_e81, _e83, ray_3.origin, _e8, ray_3.tmin, _e87);
-            uint _e90 = F32_INF;
-            uint _e94 = F32_INF;
-            if (((_e79 < uintBitsToFloat(_e90)) && (_e88 < uintBitsToFloat(_e94)))) {
-                near = n_7.a;
-                far = n_7.b;
-                if (((_e88 < _e79) != shadow)) {
-                    near = n_7.b;
-                    far = n_7.a;
+            GpuNode n_8 = _group_0_binding_2_cs[(base_1 + _e62)];
+            float _e68 = best.t;
+            vec2 _e69 = children_entry(n_8, origin_3, scale_2, ray_4, _e8, _e68);
+            float tl = _e69.x;
+            float tr = _e69.y;
+            uint _e73 = F32_INF;
+            uint _e77 = F32_INF;
+            if (((tl < uintBitsToFloat(_e73)) && (tr < uintBitsToFloat(_e77)))) {
+                near = n_8.a;
+                far = n_8.b;
+                if (((tr < tl) != shadow)) {
+                    near = n_8.b;
+                    far = n_8.a;
                 }
-                uint _e106 = sp_1;
-                if ((_e106 < BLAS_STACK)) {
-                    uint _e110 = sp_1;
-                    uint _e112 = far;
-                    traversal_stack[min((TLAS_STACK + _e110), 127u)] = _e112;
-                    uint _e117 = sp_1;
-                    sp_1 = (_e117 + 1u);
+                uint _e89 = sp_1;
+                if ((_e89 < BLAS_STACK)) {
+                    uint _e93 = sp_1;
+                    uint _e95 = far;
+                    traversal_stack[min((TLAS_STACK + _e93), 127u)] = _e95;
+                    uint _e100 = sp_1;
+                    sp_1 = (_e100 + 1u);
                 }
-                uint _e120 = near;
-                child = _e120;
+                uint _e103 = near;
+                child = _e103;
                 continue;
             }
-            uint _e122 = F32_INF;
-            if ((_e79 < uintBitsToFloat(_e122))) {
-                child = n_7.a;
+            uint _e105 = F32_INF;
+            if ((tl < uintBitsToFloat(_e105))) {
+                child = n_8.a;
                 continue;
             }
-            uint _e127 = F32_INF;
-            if ((_e88 < uintBitsToFloat(_e127))) {
-                child = n_7.b;
+            uint _e110 = F32_INF;
+            if ((tr < uintBitsToFloat(_e110))) {
+                child = n_8.b;
                 continue;
             }
         }
-        uint _e132 = sp_1;
-        uvec2 _e133 = pop(TLAS_STACK, _e132);
-        if ((_e133.x == NO_HIT)) {
+        uint _e115 = sp_1;
+        uvec2 _e116 = pop(TLAS_STACK, _e115);
+        if ((_e116.x == NO_HIT)) {
             break;
         }
-        child = _e133.x;
-        sp_1 = _e133.y;
+        child = _e116.x;
+        sp_1 = _e116.y;
     }
-    Candidate _e139 = best;
-    return _e139;
+    Candidate _e122 = best;
+    return _e122;
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_4, Candidate best_1, bool shadow_1) {
+Candidate intersect_object(uint slot_2, Ray ray_5, Candidate best_1, bool shadow_1) {
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     GpuInstance inst_5 = _group_0_binding_3_cs[slot_2];
-    Ray _e7 = to_object(inst_5, ray_4);
+    Ray _e7 = to_object(inst_5, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_5.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_4, _e14, best_1, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_5, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -541,35 +546,35 @@ vec3 point_to_world(GpuInstance inst_3, vec3 p_2) {
 }
 
 vec3 decode_octahedral(uint bits) {
-    vec3 n = vec3(0.0);
+    vec3 n_1 = vec3(0.0);
     vec2 e = unpackSnorm2x16(bits);
-    n = vec3(e.x, e.y, ((1.0 - abs(e.x)) - abs(e.y)));
-    float _e14 = n.z;
+    n_1 = vec3(e.x, e.y, ((1.0 - abs(e.x)) - abs(e.y)));
+    float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
-        vec3 _e21 = n;
+        vec3 _e21 = n_1;
         vec2 s_3 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
-        vec3 _e29 = n;
+        vec3 _e29 = n_1;
         vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_3);
-        float _e37 = n.z;
-        n = vec3(xy.x, xy.y, _e37);
+        float _e37 = n_1.z;
+        n_1 = vec3(xy.x, xy.y, _e37);
     }
-    vec3 _e39 = n;
+    vec3 _e39 = n_1;
     vec3 _e40 = normalize_vec3f(_e39);
     return _e40;
 }
 
-vec3 normal_to_world(GpuInstance inst_4, vec3 n_1) {
-    vec3 w_1 = (((inst_4.world_to_object_0_.xyz * vec3(n_1.x)) + (inst_4.world_to_object_1_.xyz * vec3(n_1.y))) + (inst_4.world_to_object_2_.xyz * vec3(n_1.z)));
+vec3 normal_to_world(GpuInstance inst_4, vec3 n_2) {
+    vec3 w_1 = (((inst_4.world_to_object_0_.xyz * vec3(n_2.x)) + (inst_4.world_to_object_1_.xyz * vec3(n_2.y))) + (inst_4.world_to_object_2_.xyz * vec3(n_2.z)));
     vec3 _e19 = normalize_vec3f(w_1);
     return _e19;
 }
 
-Hit finish_hit(Ray ray_5, Candidate c_1) {
+Hit finish_hit(Ray ray_6, Candidate c_1) {
     Hit hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     vec3 n_geo = vec3(0.0);
     vec3 n_shade = vec3(0.0);
     GpuInstance inst_6 = _group_0_binding_3_cs[c_1.slot];
-    hit = Hit((ray_5.origin + (ray_5.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_6.object, c_1.primitive);
+    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_6.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
@@ -605,7 +610,7 @@ Hit finish_hit(Ray ray_5, Candidate c_1) {
     vec3 _e131 = normal_to_world(inst_6, _e130);
     hit.normal = _e131;
     vec3 _e135 = hit.geometric_normal;
-    hit.front_face = (dot(ray_5.dir, _e135) < 0.0);
+    hit.front_face = (dot(ray_6.dir, _e135) < 0.0);
     Hit _e139 = hit;
     return _e139;
 }
@@ -657,129 +662,131 @@ uint medium_at(vec3 p_3, uint exclude) {
     return _e60;
 }
 
-Candidate intersect_scene(Ray ray_6, bool shadow_2) {
+Candidate intersect_scene(Ray ray_7, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
-    uint node = 0u;
+    uint child_1 = 0u;
     uint near_1 = 0u;
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_6.tmax);
+    Candidate _e7 = no_candidate(ray_7.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = _group_0_binding_0_cs;
     if ((frame_2.instance_count == 0u)) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    vec3 _e16 = safe_inverse(ray_6.dir);
-    sp_2 = 0u;
-    node = frame_2.tlas_root;
-    uint _e21 = node;
-    GpuNode root = _group_0_binding_2_cs[_e21];
-    float _e30 = best_2.t;
-    float _e31 = slab(root.min_, root.max_, ray_6.origin, _e16, ray_6.tmin, _e30);
-    uint _e33 = F32_INF;
-    if ((_e31 == uintBitsToFloat(_e33))) {
-        Candidate _e36 = best_2;
-        return _e36;
+    vec3 _e16 = safe_inverse(ray_7.dir);
+    uint base_2 = frame_2.tlas_root;
+    GpuNode header_1 = _group_0_binding_2_cs[base_2];
+    vec3 origin_4 = header_1.min_;
+    vec3 scale_3 = header_1.max_;
+    vec3 _e25 = node_point(origin_4, scale_3, uvec3(65535u));
+    float _e29 = best_2.t;
+    float _e30 = slab(origin_4, _e25, ray_7.origin, _e16, ray_7.tmin, _e29);
+    uint _e32 = F32_INF;
+    if ((_e30 == uintBitsToFloat(_e32))) {
+        Candidate _e35 = best_2;
+        return _e35;
     }
+    sp_2 = 0u;
+    child_1 = header_1.a;
     while(true) {
-        uint _e37 = node;
-        GpuNode n_8 = _group_0_binding_2_cs[_e37];
-        if (((n_8.b & LEAF_BIT) != 0u)) {
-            if (((n_8.b & ~(LEAF_BIT)) != 0u)) {
-                Candidate _e53 = best_2;
-                Candidate _e54 = intersect_object(n_8.a, ray_6, _e53, shadow_2);
-                best_2 = _e54;
-                uint _e56 = best_2.slot;
-                if ((shadow_2 && (_e56 != NO_HIT))) {
-                    Candidate _e60 = best_2;
-                    return _e60;
+        uint _e40 = child_1;
+        if (((_e40 & NODE_LEAF_BIT) != 0u)) {
+            uint _e45 = child_1;
+            if ((((_e45 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
+                uint _e54 = child_1;
+                Candidate _e57 = best_2;
+                Candidate _e58 = intersect_object((_e54 & NODE_FIRST_MASK), ray_7, _e57, shadow_2);
+                best_2 = _e58;
+                uint _e60 = best_2.slot;
+                if ((shadow_2 && (_e60 != NO_HIT))) {
+                    Candidate _e64 = best_2;
+                    return _e64;
                 }
             }
         } else {
-            uint left = (frame_2.tlas_root + n_8.a);
-            uint right = (left + 1u);
-            GpuNode l_1 = _group_0_binding_2_cs[left];
-            GpuNode rr = _group_0_binding_2_cs[right];
-            float _e77 = best_2.t;
-            float _e78 = slab(l_1.min_, l_1.max_, ray_6.origin, _e16, ray_6.tmin, _e77);
-            float _e84 = best_2.t;
-            float _e85 = slab(rr.min_, rr.max_, ray_6.origin, _e16, ray_6.tmin, _e84);
-            uint _e87 = F32_INF;
-            uint _e91 = F32_INF;
-            if (((_e78 < uintBitsToFloat(_e87)) && (_e85 < uintBitsToFloat(_e91)))) {
-                near_1 = left;
-                far_1 = right;
-                if ((_e85 < _e78)) {
-                    near_1 = right;
-                    far_1 = left;
+            uint _e65 = child_1;
+            GpuNode n_9 = _group_0_binding_2_cs[(base_2 + _e65)];
+            float _e71 = best_2.t;
+            vec2 _e72 = children_entry(n_9, origin_4, scale_3, ray_7, _e16, _e71);
+            float tl_1 = _e72.x;
+            float tr_1 = _e72.y;
+            uint _e76 = F32_INF;
+            uint _e80 = F32_INF;
+            if (((tl_1 < uintBitsToFloat(_e76)) && (tr_1 < uintBitsToFloat(_e80)))) {
+                near_1 = n_9.a;
+                far_1 = n_9.b;
+                if ((tr_1 < tl_1)) {
+                    near_1 = n_9.b;
+                    far_1 = n_9.a;
                 }
-                uint _e98 = sp_2;
-                if ((_e98 < TLAS_STACK)) {
-                    uint _e101 = sp_2;
-                    uint _e102 = far_1;
-                    traversal_stack[min(_e101, 127u)] = _e102;
-                    uint _e107 = sp_2;
-                    sp_2 = (_e107 + 1u);
+                uint _e91 = sp_2;
+                if ((_e91 < TLAS_STACK)) {
+                    uint _e94 = sp_2;
+                    uint _e95 = far_1;
+                    traversal_stack[min(_e94, 127u)] = _e95;
+                    uint _e100 = sp_2;
+                    sp_2 = (_e100 + 1u);
                 }
-                uint _e110 = near_1;
-                node = _e110;
+                uint _e103 = near_1;
+                child_1 = _e103;
                 continue;
             }
-            uint _e112 = F32_INF;
-            if ((_e78 < uintBitsToFloat(_e112))) {
-                node = left;
+            uint _e105 = F32_INF;
+            if ((tl_1 < uintBitsToFloat(_e105))) {
+                child_1 = n_9.a;
                 continue;
             }
-            uint _e116 = F32_INF;
-            if ((_e85 < uintBitsToFloat(_e116))) {
-                node = right;
+            uint _e110 = F32_INF;
+            if ((tr_1 < uintBitsToFloat(_e110))) {
+                child_1 = n_9.b;
                 continue;
             }
         }
-        uint _e120 = sp_2;
-        uvec2 _e121 = pop(0u, _e120);
-        if ((_e121.x == NO_HIT)) {
+        uint _e115 = sp_2;
+        uvec2 _e116 = pop(0u, _e115);
+        if ((_e116.x == NO_HIT)) {
             break;
         }
-        node = _e121.x;
-        sp_2 = _e121.y;
+        child_1 = _e116.x;
+        sp_2 = _e116.y;
     }
-    Candidate _e127 = best_2;
-    return _e127;
+    Candidate _e122 = best_2;
+    return _e122;
 }
 
-vec3 dispatch_miss(uint type_id_1, uint offset_2, Ray ray_7) {
+vec3 dispatch_miss(uint type_id_1, uint offset_2, Ray ray_8) {
     return vec3(0.0);
 }
 
-vec3 miss(Ray ray_8) {
+vec3 miss(Ray ray_9) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_3 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_8);
+    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_9);
     return _e9;
 }
 
-vec3 dispatch_medium(uint type_id_2, uint offset_3, Ray ray_9, float t, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_2, uint offset_3, Ray ray_10, float t, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_10, float t_1, vec3 radiance_1) {
+vec3 through_medium(Ray ray_11, float t_1, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_10.medium == 0u)) {
+    if ((ray_11.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_7 = _group_0_binding_3_cs[(ray_10.medium - 1u)];
+    GpuInstance inst_7 = _group_0_binding_3_cs[(ray_11.medium - 1u)];
     if (((inst_7.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_10, t_1, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_11, t_1, radiance_1);
     return _e21;
 }
 
@@ -792,12 +799,12 @@ Emissive load_Emissive(uint offset_4) {
     return Emissive(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24), _e30);
 }
 
-bool after_nee_bounce(Ray ray_11) {
-    return (dot(ray_11.dir, ray_11.dir) > 2.0);
+bool after_nee_bounce(Ray ray_12) {
+    return (dot(ray_12.dir, ray_12.dir) > 2.0);
 }
 
-vec3 emissive_shade(Emissive m, Ray ray_12, Hit hit_1) {
-    bool _e3 = after_nee_bounce(ray_12);
+vec3 emissive_shade(Emissive m, Ray ray_13, Hit hit_1) {
+    bool _e3 = after_nee_bounce(ray_13);
     if ((_e3 || (!(hit_1.front_face) && (m.two_sided == 0u)))) {
         return vec3(0.0);
     }
@@ -834,26 +841,27 @@ QuadLight load_QuadLight(uint offset_6) {
     return QuadLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)), vec3(uintBitsToFloat(_e62), uintBitsToFloat(_e68), uintBitsToFloat(_e74)), uintBitsToFloat(_e81));
 }
 
-vec3 offset_origin(vec3 p_4, vec3 n_2) {
+vec3 offset_origin(vec3 p_4, vec3 n_3) {
     FrameUniforms _e3 = _group_0_binding_0_cs;
-    GpuNode root_1 = _group_0_binding_2_cs[_e3.tlas_root];
-    vec3 a_5 = max(abs(p_4), max(abs(root_1.min_), abs(root_1.max_)));
+    GpuNode header_2 = _group_0_binding_2_cs[_e3.tlas_root];
+    vec3 _e15 = node_point(header_2.min_, header_2.max_, uvec3(65535u));
+    vec3 a_5 = max(abs(p_4), max(abs(header_2.min_), abs(_e15)));
     float m_3 = max(max(a_5.x, a_5.y), a_5.z);
-    return (p_4 + (n_2 * vec3((m_3 * (1.0 / 65536.0)))));
+    return (p_4 + (n_3 * vec3((m_3 * (1.0 / 65536.0)))));
 }
 
 float shadow_query(vec3 position, vec3 normal, vec3 dir, float dist) {
-    vec3 n_3 = vec3(0.0);
-    n_3 = normal;
-    vec3 _e5 = n_3;
+    vec3 n_4 = vec3(0.0);
+    n_4 = normal;
+    vec3 _e5 = n_4;
     if ((dot(dir, _e5) < 0.0)) {
-        vec3 _e9 = n_3;
-        n_3 = -(_e9);
+        vec3 _e9 = n_4;
+        n_4 = -(_e9);
     }
-    vec3 _e11 = n_3;
+    vec3 _e11 = n_4;
     vec3 _e12 = offset_origin(position, _e11);
-    Ray ray_20 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    Candidate _e23 = intersect_scene(ray_20, true);
+    Ray ray_21 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    Candidate _e23 = intersect_scene(ray_21, true);
     return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
@@ -892,10 +900,10 @@ LightSample sample_light_query(uint i_1, vec3 position_3, vec3 normal_3) {
     return _e27;
 }
 
-vec3 path_diffuse_shade(PathDiffuse m_1, Ray ray_13, Hit hit_2, vec3 secondary) {
+vec3 path_diffuse_shade(PathDiffuse m_1, Ray ray_14, Hit hit_2, vec3 secondary) {
     vec3 direct = vec3(0.0);
     uint i_2 = 0u;
-    vec3 n_9 = faceforward(hit_2.normal, ray_13.dir, hit_2.geometric_normal);
+    vec3 n_10 = faceforward(hit_2.normal, ray_14.dir, hit_2.geometric_normal);
     direct = vec3(0.0);
     uint _e12 = light_count_query();
     i_2 = 0u;
@@ -913,22 +921,22 @@ vec3 path_diffuse_shade(PathDiffuse m_1, Ray ray_13, Hit hit_2, vec3 secondary) 
         uint _e16 = i_2;
         LightSample _e19 = sample_light_query(_e16, hit_2.position, hit_2.geometric_normal);
         vec3 _e20 = direct;
-        direct = (_e20 + (_e19.radiance * vec3(max(dot(n_9, _e19.dir), 0.0))));
+        direct = (_e20 + (_e19.radiance * vec3(max(dot(n_10, _e19.dir), 0.0))));
     }
     vec3 _e36 = direct;
     return (((m_1.albedo * vec3(INV_PI)) * _e36) + secondary);
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_14, Hit hit_3, vec3 secondary_1) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_15, Hit hit_3, vec3 secondary_1) {
     switch(type_id_4) {
         case 0u: {
             Emissive _e5 = load_Emissive(offset_8);
-            vec3 _e6 = emissive_shade(_e5, ray_14, hit_3);
+            vec3 _e6 = emissive_shade(_e5, ray_15, hit_3);
             return _e6;
         }
         case 1u: {
             PathDiffuse _e7 = load_PathDiffuse(offset_8);
-            vec3 _e8 = path_diffuse_shade(_e7, ray_14, hit_3, secondary_1);
+            vec3 _e8 = path_diffuse_shade(_e7, ray_15, hit_3, secondary_1);
             return _e8;
         }
         default: {
@@ -938,26 +946,26 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_14, Hit hit_3, 
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_15, Candidate c_2) {
+vec3 shade_direct(Ray ray_16, Candidate c_2) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_2.slot];
-    Hit _e6 = finish_hit(ray_15, c_2);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_16, c_2);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, vec3(0.0));
     return _e11;
 }
 
-mat3x3 orthonormal_basis(vec3 n_4) {
-    float sign_ = (((floatBitsToUint(n_4.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
-    float a_6 = (-1.0 / (sign_ + n_4.z));
-    float b_6 = ((n_4.x * n_4.y) * a_6);
-    float _e16 = (sign_ * n_4.x);
-    return mat3x3(vec3((1.0 + ((_e16 * n_4.x) * a_6)), (sign_ * b_6), -(_e16)), vec3(b_6, (sign_ + ((n_4.y * n_4.y) * a_6)), -(n_4.y)), n_4);
+mat3x3 orthonormal_basis(vec3 n_5) {
+    float sign_ = (((floatBitsToUint(n_5.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
+    float a_6 = (-1.0 / (sign_ + n_5.z));
+    float b_6 = ((n_5.x * n_5.y) * a_6);
+    float _e16 = (sign_ * n_5.x);
+    return mat3x3(vec3((1.0 + ((_e16 * n_5.x) * a_6)), (sign_ * b_6), -(_e16)), vec3(b_6, (sign_ + ((n_5.y * n_5.y) * a_6)), -(n_5.y)), n_5);
 }
 
-vec3 sample_cosine_hemisphere(vec3 n_5, vec2 u) {
+vec3 sample_cosine_hemisphere(vec3 n_6, vec2 u) {
     float r_4 = sqrt(u.x);
     float phi = (6.2831855 * u.y);
     vec3 local = vec3((r_4 * cos(phi)), (r_4 * sin(phi)), sqrt(max((1.0 - u.x), 0.0)));
-    mat3x3 _e17 = orthonormal_basis(n_5);
+    mat3x3 _e17 = orthonormal_basis(n_6);
     return (_e17 * local);
 }
 
@@ -974,14 +982,14 @@ void rt_spawn(vec3 dir_2, vec3 weight) {
     }
 }
 
-void path_diffuse_rays(PathDiffuse m_2, Ray ray_16, Hit hit_4) {
+void path_diffuse_rays(PathDiffuse m_2, Ray ray_17, Hit hit_4) {
     vec3 weight_1 = vec3(0.0);
     vec3 ng = (hit_4.front_face ? hit_4.geometric_normal : -(hit_4.geometric_normal));
-    vec3 n_10 = faceforward(hit_4.normal, -(ng), hit_4.normal);
+    vec3 n_11 = faceforward(hit_4.normal, -(ng), hit_4.normal);
     vec2 _e12 = rand2_next();
-    vec3 _e13 = sample_cosine_hemisphere(n_10, _e12);
+    vec3 _e13 = sample_cosine_hemisphere(n_11, _e12);
     weight_1 = m_2.albedo;
-    if ((ray_16.depth >= m_2.roulette_depth)) {
+    if ((ray_17.depth >= m_2.roulette_depth)) {
         float q_2 = clamp(max(m_2.albedo.x, max(m_2.albedo.y, m_2.albedo.z)), 0.0, 1.0);
         float _e28 = rand_next();
         if ((_e28 >= q_2)) {
@@ -997,21 +1005,21 @@ void path_diffuse_rays(PathDiffuse m_2, Ray ray_16, Hit hit_4) {
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_17, Hit hit_5) {
+void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_18, Hit hit_5) {
     PathDiffuse _e3 = load_PathDiffuse(offset_9);
-    path_diffuse_rays(_e3, ray_17, hit_5);
+    path_diffuse_rays(_e3, ray_18, hit_5);
     return;
 }
 
 vec3 spawn_origin(Hit hit_6, vec3 dir_3) {
-    vec3 n_6 = vec3(0.0);
-    n_6 = hit_6.geometric_normal;
-    vec3 _e4 = n_6;
+    vec3 n_7 = vec3(0.0);
+    n_7 = hit_6.geometric_normal;
+    vec3 _e4 = n_7;
     if ((dot(dir_3, _e4) < 0.0)) {
-        vec3 _e8 = n_6;
-        n_6 = -(_e8);
+        vec3 _e8 = n_7;
+        n_7 = -(_e8);
     }
-    vec3 _e11 = n_6;
+    vec3 _e11 = n_7;
     vec3 _e12 = offset_origin(hit_6.position, _e11);
     return _e12;
 }
@@ -1019,7 +1027,7 @@ vec3 spawn_origin(Hit hit_6, vec3 dir_3) {
 vec3 trace(Ray camera_ray) {
     Frame stack[6] = Frame[6](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_18 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_19 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     bool pushed = false;
@@ -1040,38 +1048,38 @@ vec3 trace(Ray camera_ray) {
     }
     stack = Frame[6](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_18 = camera_ray;
+    ray_19 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     while(true) {
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_18;
+            Ray _e28 = ray_19;
             Candidate _e30 = intersect_scene(_e28, false);
             if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_18;
+                Ray _e34 = ray_19;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_18;
+                Ray _e38 = ray_19;
                 vec3 _e39 = miss(_e38);
                 vec3 _e40 = through_medium(_e34, uintBitsToFloat(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = _group_0_binding_3_cs[_e30.slot];
-                Ray _e46 = ray_18;
+                Ray _e46 = ray_19;
                 Hit _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                uint _e56 = ray_18.depth;
+                uint _e56 = ray_19.depth;
                 uint _e60 = depth;
                 if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_18;
+                    Ray _e68 = ray_19;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_11 = min(min(_e70, 1u), MAX_SPAWN);
-                    if ((n_11 > 0u)) {
-                        Ray _e77 = ray_18;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_11, 0u);
+                    uint n_12 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_12 > 0u)) {
+                        Ray _e77 = ray_19;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_12, 0u);
                         i_3 = 0u;
                         bool loop_init_3 = true;
                         while(true) {
@@ -1081,7 +1089,7 @@ vec3 trace(Ray camera_ray) {
                             }
                             loop_init_3 = false;
                             uint _e88 = i_3;
-                            if ((_e88 >= n_11)) {
+                            if ((_e88 >= n_12)) {
                                 break;
                             }
                             uint _e91 = i_3;
@@ -1103,9 +1111,9 @@ vec3 trace(Ray camera_ray) {
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_18;
+                    Ray _e124 = ray_19;
                     vec3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0.0));
-                    Ray _e128 = ray_18;
+                    Ray _e128 = ray_19;
                     vec3 _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1122,9 +1130,9 @@ vec3 trace(Ray camera_ray) {
             uint _e137 = depth;
             uint top = (_e137 - 1u);
             uint _e144 = stack[min(top, 5u)].next;
-            uint child_1 = (_e144 - 1u);
+            uint child_2 = (_e144 - 1u);
             vec3 _e151 = stack[min(top, 5u)].sum;
-            vec3 _e159 = stack[min(top, 5u)].weights[min(child_1, 0u)];
+            vec3 _e159 = stack[min(top, 5u)].weights[min(child_2, 0u)];
             vec3 _e160 = value;
             stack[min(top, 5u)].sum = (_e151 + (_e159 * _e160));
             have_value = false;
@@ -1143,7 +1151,7 @@ vec3 trace(Ray camera_ray) {
             vec3 _e209 = spawn_origin(hit_8, dir_5);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_18 = Ray(_e209, 0.0, dir_5, uintBitsToFloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_19 = Ray(_e209, 0.0, dir_5, uintBitsToFloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             uint _e224 = stack[min(top_1, 5u)].slot;
             GpuInstance inst_10 = _group_0_binding_3_cs[_e224];
@@ -1175,7 +1183,7 @@ void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s = 0u;
-    Ray ray_19 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_20 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_1 = _group_0_binding_1_cs;
     sum = vec3(0.0);
@@ -1197,13 +1205,13 @@ void render_pixel(uvec2 pixel_3) {
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_19 = _e23;
-        ray_19.depth = 0u;
-        ray_19.kind = RAY_CAMERA;
-        vec3 _e31 = ray_19.origin;
+        ray_20 = _e23;
+        ray_20.depth = 0u;
+        ray_20.kind = RAY_CAMERA;
+        vec3 _e31 = ray_20.origin;
         uint _e33 = medium_at(_e31, NO_HIT);
-        ray_19.medium = _e33;
-        Ray _e34 = ray_19;
+        ray_20.medium = _e33;
+        Ray _e34 = ray_20;
         vec3 _e35 = trace(_e34);
         bvec3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

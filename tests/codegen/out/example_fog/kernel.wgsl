@@ -139,16 +139,15 @@ const RAY_CAMERA: u32 = 0u;
 const NO_HIT: u32 = 4294967295u;
 const HAS_MEDIA: bool = true;
 const MESH_GEOMETRY: u32 = 4294967295u;
-const MESH_LEAF_BIT: u32 = 2147483648u;
-const MESH_COUNT_SHIFT: u32 = 27u;
-const MESH_COUNT_MASK: u32 = 15u;
-const MESH_FIRST_MASK: u32 = 134217727u;
+const NODE_LEAF_BIT: u32 = 2147483648u;
+const NODE_COUNT_SHIFT: u32 = 27u;
+const NODE_COUNT_MASK: u32 = 15u;
+const NODE_FIRST_MASK: u32 = 134217727u;
 const FLAG_ANY_HIT: u32 = 1u;
 const RAY_SHADOW: u32 = 2u;
 const BLAS_STACK: u32 = 64u;
 const TLAS_STACK: u32 = 64u;
 const HAS_SECONDARY_RAYS: bool = true;
-const LEAF_BIT: u32 = 2147483648u;
 const HAS_BACKGROUND: bool = false;
 const FLAG_MEDIUM: u32 = 4u;
 const PI: f32 = 3.1415927f;
@@ -481,15 +480,15 @@ fn accept(inst_3: GpuInstance, ray_5: Ray, c_1: Candidate) -> bool {
     return true;
 }
 
-fn mesh_box_lo(p_1: vec3<u32>) -> vec3<u32> {
+fn node_box_lo(p_1: vec3<u32>) -> vec3<u32> {
     return vec3<u32>((p_1.x & 65535u), (p_1.x >> 16u), (p_1.y & 65535u));
 }
 
-fn mesh_point(origin: vec3<f32>, scale: vec3<f32>, q: vec3<u32>) -> vec3<f32> {
+fn node_point(origin: vec3<f32>, scale: vec3<f32>, q: vec3<u32>) -> vec3<f32> {
     return (origin + (vec3<f32>(q) * scale));
 }
 
-fn mesh_box_hi(p_2: vec3<u32>) -> vec3<u32> {
+fn node_box_hi(p_2: vec3<u32>) -> vec3<u32> {
     return vec3<u32>((p_2.y >> 16u), (p_2.z & 65535u), (p_2.z >> 16u));
 }
 
@@ -507,6 +506,22 @@ fn slab(lo: vec3<f32>, hi: vec3<f32>, origin_1: vec3<f32>, inv_dir: vec3<f32>, t
     return bitcast<f32>(_e30);
 }
 
+fn children_entry(n_2: GpuNode, origin_2: vec3<f32>, scale_1: vec3<f32>, ray_6: Ray, inv: vec3<f32>, tmax_3: f32) -> vec2<f32> {
+    let lq = bitcast<vec3<u32>>(n_2.min);
+    let rq = bitcast<vec3<u32>>(n_2.max);
+    let _e10 = node_box_lo(lq);
+    let _e11 = node_point(origin_2, scale_1, _e10);
+    let _e12 = node_box_hi(lq);
+    let _e13 = node_point(origin_2, scale_1, _e12);
+    let _e16 = slab(_e11, _e13, ray_6.origin, inv, ray_6.tmin, tmax_3);
+    let _e17 = node_box_lo(rq);
+    let _e18 = node_point(origin_2, scale_1, _e17);
+    let _e19 = node_box_hi(rq);
+    let _e20 = node_point(origin_2, scale_1, _e19);
+    let _e23 = slab(_e18, _e20, ray_6.origin, inv, ray_6.tmin, tmax_3);
+    return vec2<f32>(_e16, _e23);
+}
+
 fn pop(base: u32, sp: u32) -> vec2<u32> {
     if (sp == 0u) {
         return vec2<u32>(NO_HIT, 0u);
@@ -515,7 +530,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_4: GpuInstance, slot_2: u32, world_ray: Ray, ray_6: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_4: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -524,21 +539,21 @@ fn intersect_mesh(inst_4: GpuInstance, slot_2: u32, world_ray: Ray, ray_6: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e8 = safe_inverse(ray_6.dir);
-    let _e9 = prepare_triangle_ray(ray_6);
+    let _e8 = safe_inverse(ray_7.dir);
+    let _e9 = prepare_triangle_ray(ray_7);
     let base_1 = inst_4.blas_root;
     let header = nodes[base_1];
-    let origin_2 = header.min;
-    let scale_1 = header.max;
+    let origin_3 = header.min;
+    let scale_2 = header.max;
     sp_1 = 0u;
     child = header.a;
     loop {
         let _e20 = child;
-        if ((_e20 & MESH_LEAF_BIT) != 0u) {
+        if ((_e20 & NODE_LEAF_BIT) != 0u) {
             let _e25 = child;
-            let count = ((_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+            let count = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
             let _e32 = child;
-            let first = (_e32 & MESH_FIRST_MASK);
+            let first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
             loop {
                 let _e37 = k;
@@ -548,7 +563,7 @@ fn intersect_mesh(inst_4: GpuInstance, slot_2: u32, world_ray: Ray, ray_6: Ray, 
                 let _e41 = k;
                 let prim = ((inst_4.triangle_offset + first) + _e41);
                 let _e45 = best.t;
-                let _e46 = hit_triangle(_e9, prim, ray_6.tmin, _e45);
+                let _e46 = hit_triangle(_e9, prim, ray_7.tmin, _e45);
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
                     let c_5 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0f));
@@ -568,75 +583,65 @@ fn intersect_mesh(inst_4: GpuInstance, slot_2: u32, world_ray: Ray, ray_6: Ray, 
             }
         } else {
             let _e62 = child;
-            let n_5 = nodes[(base_1 + _e62)];
-            let lq = bitcast<vec3<u32>>(n_5.min);
-            let rq = bitcast<vec3<u32>>(n_5.max);
-            let _e71 = mesh_box_lo(lq);
-            let _e72 = mesh_point(origin_2, scale_1, _e71);
-            let _e73 = mesh_box_hi(lq);
-            let _e74 = mesh_point(origin_2, scale_1, _e73);
-            let _e78 = best.t;
-            let _e79 = slab(_e72, _e74, ray_6.origin, _e8, ray_6.tmin, _e78);
-            let _e80 = mesh_box_lo(rq);
-            let _e81 = mesh_point(origin_2, scale_1, _e80);
-            let _e82 = mesh_box_hi(rq);
-            let _e83 = mesh_point(origin_2, scale_1, _e82);
-            let _e87 = best.t;
-            let _e88 = slab(_e81, _e83, ray_6.origin, _e8, ray_6.tmin, _e87);
-            let _e90 = F32_INF;
-            let _e94 = F32_INF;
-            if ((_e79 < bitcast<f32>(_e90)) && (_e88 < bitcast<f32>(_e94))) {
-                near = n_5.a;
-                far = n_5.b;
-                if ((_e88 < _e79) != shadow) {
-                    near = n_5.b;
-                    far = n_5.a;
+            let n_6 = nodes[(base_1 + _e62)];
+            let _e68 = best.t;
+            let _e69 = children_entry(n_6, origin_3, scale_2, ray_7, _e8, _e68);
+            let tl = _e69.x;
+            let tr = _e69.y;
+            let _e73 = F32_INF;
+            let _e77 = F32_INF;
+            if ((tl < bitcast<f32>(_e73)) && (tr < bitcast<f32>(_e77))) {
+                near = n_6.a;
+                far = n_6.b;
+                if ((tr < tl) != shadow) {
+                    near = n_6.b;
+                    far = n_6.a;
                 }
-                let _e106 = sp_1;
-                if (_e106 < BLAS_STACK) {
-                    let _e110 = sp_1;
-                    let _e112 = far;
-                    traversal_stack[min((TLAS_STACK + _e110), 127u)] = _e112;
-                    let _e117 = sp_1;
-                    sp_1 = (_e117 + 1u);
+                let _e89 = sp_1;
+                if (_e89 < BLAS_STACK) {
+                    let _e93 = sp_1;
+                    let _e95 = far;
+                    traversal_stack[min((TLAS_STACK + _e93), 127u)] = _e95;
+                    let _e100 = sp_1;
+                    sp_1 = (_e100 + 1u);
                 }
-                let _e120 = near;
-                child = _e120;
+                let _e103 = near;
+                child = _e103;
                 continue;
             }
-            let _e122 = F32_INF;
-            if (_e79 < bitcast<f32>(_e122)) {
-                child = n_5.a;
+            let _e105 = F32_INF;
+            if (tl < bitcast<f32>(_e105)) {
+                child = n_6.a;
                 continue;
             }
-            let _e127 = F32_INF;
-            if (_e88 < bitcast<f32>(_e127)) {
-                child = n_5.b;
+            let _e110 = F32_INF;
+            if (tr < bitcast<f32>(_e110)) {
+                child = n_6.b;
                 continue;
             }
         }
-        let _e132 = sp_1;
-        let _e133 = pop(TLAS_STACK, _e132);
-        if (_e133.x == NO_HIT) {
+        let _e115 = sp_1;
+        let _e116 = pop(TLAS_STACK, _e115);
+        if (_e116.x == NO_HIT) {
             break;
         }
-        child = _e133.x;
-        sp_1 = _e133.y;
+        child = _e116.x;
+        sp_1 = _e116.y;
     }
-    let _e139 = best;
-    return _e139;
+    let _e122 = best;
+    return _e122;
 }
 
-fn intersect_object(slot_3: u32, ray_7: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_3: u32, ray_8: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
     let inst_6 = instances[slot_3];
-    let _e7 = to_object(inst_6, ray_7);
+    let _e7 = to_object(inst_6, ray_8);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_6, slot_3, ray_7, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_6, slot_3, ray_8, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -688,111 +693,113 @@ fn medium_at(p_3: vec3<f32>, exclude: u32) -> u32 {
     return _e60;
 }
 
-fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
-    var node: u32;
+    var child_1: u32;
     var near_1: u32;
     var far_1: u32;
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_8.tmax);
+    let _e7 = no_candidate(ray_9.tmax);
     best_2 = _e7;
     let frame_2 = frame;
     if (frame_2.instance_count == 0u) {
         let _e14 = best_2;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_8.dir);
-    sp_2 = 0u;
-    node = frame_2.tlas_root;
-    let _e21 = node;
-    let root = nodes[_e21];
-    let _e30 = best_2.t;
-    let _e31 = slab(root.min, root.max, ray_8.origin, _e16, ray_8.tmin, _e30);
-    let _e33 = F32_INF;
-    if (_e31 == bitcast<f32>(_e33)) {
-        let _e36 = best_2;
-        return _e36;
+    let _e16 = safe_inverse(ray_9.dir);
+    let base_2 = frame_2.tlas_root;
+    let header_1 = nodes[base_2];
+    let origin_4 = header_1.min;
+    let scale_3 = header_1.max;
+    let _e25 = node_point(origin_4, scale_3, vec3(65535u));
+    let _e29 = best_2.t;
+    let _e30 = slab(origin_4, _e25, ray_9.origin, _e16, ray_9.tmin, _e29);
+    let _e32 = F32_INF;
+    if (_e30 == bitcast<f32>(_e32)) {
+        let _e35 = best_2;
+        return _e35;
     }
+    sp_2 = 0u;
+    child_1 = header_1.a;
     loop {
-        let _e37 = node;
-        let n_6 = nodes[_e37];
-        if ((n_6.b & LEAF_BIT) != 0u) {
-            if ((n_6.b & ~(LEAF_BIT)) != 0u) {
-                let _e53 = best_2;
-                let _e54 = intersect_object(n_6.a, ray_8, _e53, shadow_2);
-                best_2 = _e54;
-                let _e56 = best_2.slot;
-                if (shadow_2 && (_e56 != NO_HIT)) {
-                    let _e60 = best_2;
-                    return _e60;
+        let _e40 = child_1;
+        if ((_e40 & NODE_LEAF_BIT) != 0u) {
+            let _e45 = child_1;
+            if (((_e45 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                let _e54 = child_1;
+                let _e57 = best_2;
+                let _e58 = intersect_object((_e54 & NODE_FIRST_MASK), ray_9, _e57, shadow_2);
+                best_2 = _e58;
+                let _e60 = best_2.slot;
+                if (shadow_2 && (_e60 != NO_HIT)) {
+                    let _e64 = best_2;
+                    return _e64;
                 }
             }
         } else {
-            let left = (frame_2.tlas_root + n_6.a);
-            let right = (left + 1u);
-            let l_1 = nodes[left];
-            let rr = nodes[right];
-            let _e77 = best_2.t;
-            let _e78 = slab(l_1.min, l_1.max, ray_8.origin, _e16, ray_8.tmin, _e77);
-            let _e84 = best_2.t;
-            let _e85 = slab(rr.min, rr.max, ray_8.origin, _e16, ray_8.tmin, _e84);
-            let _e87 = F32_INF;
-            let _e91 = F32_INF;
-            if ((_e78 < bitcast<f32>(_e87)) && (_e85 < bitcast<f32>(_e91))) {
-                near_1 = left;
-                far_1 = right;
-                if (_e85 < _e78) {
-                    near_1 = right;
-                    far_1 = left;
+            let _e65 = child_1;
+            let n_7 = nodes[(base_2 + _e65)];
+            let _e71 = best_2.t;
+            let _e72 = children_entry(n_7, origin_4, scale_3, ray_9, _e16, _e71);
+            let tl_1 = _e72.x;
+            let tr_1 = _e72.y;
+            let _e76 = F32_INF;
+            let _e80 = F32_INF;
+            if ((tl_1 < bitcast<f32>(_e76)) && (tr_1 < bitcast<f32>(_e80))) {
+                near_1 = n_7.a;
+                far_1 = n_7.b;
+                if (tr_1 < tl_1) {
+                    near_1 = n_7.b;
+                    far_1 = n_7.a;
                 }
-                let _e98 = sp_2;
-                if (_e98 < TLAS_STACK) {
-                    let _e101 = sp_2;
-                    let _e102 = far_1;
-                    traversal_stack[min(_e101, 127u)] = _e102;
-                    let _e107 = sp_2;
-                    sp_2 = (_e107 + 1u);
+                let _e91 = sp_2;
+                if (_e91 < TLAS_STACK) {
+                    let _e94 = sp_2;
+                    let _e95 = far_1;
+                    traversal_stack[min(_e94, 127u)] = _e95;
+                    let _e100 = sp_2;
+                    sp_2 = (_e100 + 1u);
                 }
-                let _e110 = near_1;
-                node = _e110;
+                let _e103 = near_1;
+                child_1 = _e103;
                 continue;
             }
-            let _e112 = F32_INF;
-            if (_e78 < bitcast<f32>(_e112)) {
-                node = left;
+            let _e105 = F32_INF;
+            if (tl_1 < bitcast<f32>(_e105)) {
+                child_1 = n_7.a;
                 continue;
             }
-            let _e116 = F32_INF;
-            if (_e85 < bitcast<f32>(_e116)) {
-                node = right;
+            let _e110 = F32_INF;
+            if (tr_1 < bitcast<f32>(_e110)) {
+                child_1 = n_7.b;
                 continue;
             }
         }
-        let _e120 = sp_2;
-        let _e121 = pop(0u, _e120);
-        if (_e121.x == NO_HIT) {
+        let _e115 = sp_2;
+        let _e116 = pop(0u, _e115);
+        if (_e116.x == NO_HIT) {
             break;
         }
-        node = _e121.x;
-        sp_2 = _e121.y;
+        child_1 = _e116.x;
+        sp_2 = _e116.y;
     }
-    let _e127 = best_2;
-    return _e127;
+    let _e122 = best_2;
+    return _e122;
 }
 
-fn dispatch_miss(type_id_2: u32, offset_4: u32, ray_9: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_4: u32, ray_10: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn miss(ray_10: Ray) -> vec3<f32> {
+fn miss(ray_11: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_3 = frame;
-    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_10);
+    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_11);
     return _e9;
 }
 
@@ -814,27 +821,28 @@ fn load_PointLight(offset_5: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn offset_origin(p_4: vec3<f32>, n_2: vec3<f32>) -> vec3<f32> {
+fn offset_origin(p_4: vec3<f32>, n_3: vec3<f32>) -> vec3<f32> {
     let _e3 = frame;
-    let root_1 = nodes[_e3.tlas_root];
-    let a_5 = max(abs(p_4), max(abs(root_1.min), abs(root_1.max)));
+    let header_2 = nodes[_e3.tlas_root];
+    let _e15 = node_point(header_2.min, header_2.max, vec3(65535u));
+    let a_5 = max(abs(p_4), max(abs(header_2.min), abs(_e15)));
     let m_6 = max(max(a_5.x, a_5.y), a_5.z);
-    return (p_4 + (n_2 * vec3((m_6 * (1f / 65536f)))));
+    return (p_4 + (n_3 * vec3((m_6 * (1f / 65536f)))));
 }
 
 fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
-    var n_3: vec3<f32>;
+    var n_4: vec3<f32>;
 
-    n_3 = normal;
-    let _e5 = n_3;
+    n_4 = normal;
+    let _e5 = n_4;
     if (dot(dir, _e5) < 0f) {
-        let _e9 = n_3;
-        n_3 = -(_e9);
+        let _e9 = n_4;
+        n_4 = -(_e9);
     }
-    let _e11 = n_3;
+    let _e11 = n_4;
     let _e12 = offset_origin(position, _e11);
-    let ray_22 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
-    let _e23 = intersect_scene(ray_22, true);
+    let ray_23 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
+    let _e23 = intersect_scene(ray_23, true);
     return select(1f, 0f, (_e23.slot != NO_HIT));
 }
 
@@ -913,11 +921,11 @@ fn fog_inscatter(m_1: Fog, i_2: u32, o: vec3<f32>, dir_1: vec3<f32>, d_1: f32, t
     return (_e97.radiance * vec3((((att * sigma) * e_1) / pdf)));
 }
 
-fn fog_medium(m_2: Fog, ray_11: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn fog_medium(m_2: Fog, ray_12: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     var light: vec3<f32>;
     var i_3: u32;
 
-    let len = length(ray_11.dir);
+    let len = length(ray_12.dir);
     if (!((m_2.density > 0f)) || !((len > 0f))) {
         return radiance;
     }
@@ -933,7 +941,7 @@ fn fog_medium(m_2: Fog, ray_11: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
         }
         let _e27 = light;
         let _e28 = i_3;
-        let _e33 = fog_inscatter(m_2, _e28, ray_11.origin, (ray_11.dir / vec3(len)), d_4, trans_1);
+        let _e33 = fog_inscatter(m_2, _e28, ray_12.origin, (ray_12.dir / vec3(len)), d_4, trans_1);
         light = (_e27 + _e33);
         continuing {
             let _e35 = i_3;
@@ -944,28 +952,28 @@ fn fog_medium(m_2: Fog, ray_11: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     return ((radiance * vec3(trans_1)) + ((m_2.albedo * vec3((0.25f * INV_PI))) * _e46));
 }
 
-fn dispatch_medium(type_id_4: u32, offset_7: u32, ray_12: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_4: u32, offset_7: u32, ray_13: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     let _e4 = load_Fog(offset_7);
-    let _e5 = fog_medium(_e4, ray_12, t_1, radiance_1);
+    let _e5 = fog_medium(_e4, ray_13, t_1, radiance_1);
     return _e5;
 }
 
-fn through_medium(ray_13: Ray, t_2: f32, radiance_2: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_14: Ray, t_2: f32, radiance_2: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_2;
     }
-    if (ray_13.medium == 0u) {
+    if (ray_14.medium == 0u) {
         return radiance_2;
     }
-    let inst_7 = instances[(ray_13.medium - 1u)];
+    let inst_7 = instances[(ray_14.medium - 1u)];
     if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
         return radiance_2;
     }
-    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_13, t_2, radiance_2);
+    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_14, t_2, radiance_2);
     return _e21;
 }
 
-fn fog_shade(m_3: Fog, ray_14: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn fog_shade(m_3: Fog, ray_15: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
     return secondary;
 }
 
@@ -976,11 +984,11 @@ fn load_Lambert(offset_8: u32) -> Lambert {
     return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn lambert_shade(m_4: Lambert, ray_15: Ray, hit_4: Hit) -> vec3<f32> {
+fn lambert_shade(m_4: Lambert, ray_16: Ray, hit_4: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_4: u32;
 
-    let n_7 = faceForward(hit_4.normal, ray_15.dir, hit_4.normal);
+    let n_8 = faceForward(hit_4.normal, ray_16.dir, hit_4.normal);
     color = vec3(0f);
     let _e11 = light_count_query();
     i_4 = 0u;
@@ -992,7 +1000,7 @@ fn lambert_shade(m_4: Lambert, ray_15: Ray, hit_4: Hit) -> vec3<f32> {
         let _e15 = i_4;
         let _e18 = sample_light_query(_e15, hit_4.position, hit_4.geometric_normal);
         let _e19 = color;
-        color = (_e19 + (((m_4.albedo * vec3(INV_PI)) * _e18.radiance) * vec3(max(dot(n_7, _e18.dir), 0f))));
+        color = (_e19 + (((m_4.albedo * vec3(INV_PI)) * _e18.radiance) * vec3(max(dot(n_8, _e18.dir), 0f))));
         continuing {
             let _e33 = i_4;
             i_4 = (_e33 + 1u);
@@ -1002,16 +1010,16 @@ fn lambert_shade(m_4: Lambert, ray_15: Ray, hit_4: Hit) -> vec3<f32> {
     return _e36;
 }
 
-fn dispatch_closest_hit(type_id_5: u32, offset_9: u32, ray_16: Ray, hit_5: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_5: u32, offset_9: u32, ray_17: Ray, hit_5: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     switch type_id_5 {
         case 0u: {
             let _e5 = load_Fog(offset_9);
-            let _e6 = fog_shade(_e5, ray_16, hit_5, secondary_1);
+            let _e6 = fog_shade(_e5, ray_17, hit_5, secondary_1);
             return _e6;
         }
         case 1u: {
             let _e7 = load_Lambert(offset_9);
-            let _e8 = lambert_shade(_e7, ray_16, hit_5);
+            let _e8 = lambert_shade(_e7, ray_17, hit_5);
             return _e8;
         }
         default: {
@@ -1020,10 +1028,10 @@ fn dispatch_closest_hit(type_id_5: u32, offset_9: u32, ray_16: Ray, hit_5: Hit, 
     return vec3<f32>();
 }
 
-fn shade_direct(ray_17: Ray, c_2: Candidate) -> vec3<f32> {
+fn shade_direct(ray_18: Ray, c_2: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_2.slot];
-    let _e6 = finish_hit(ray_17, c_2);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_18, c_2);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, vec3(0f));
     return _e11;
 }
 
@@ -1036,27 +1044,27 @@ fn rt_spawn(dir_2: vec3<f32>, weight: vec3<f32>) {
     }
 }
 
-fn fog_rays(m_5: Fog, ray_18: Ray, hit_6: Hit) {
-    rt_spawn(ray_18.dir, vec3(1f));
+fn fog_rays(m_5: Fog, ray_19: Ray, hit_6: Hit) {
+    rt_spawn(ray_19.dir, vec3(1f));
     return;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_10: u32, ray_19: Ray, hit_7: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_10: u32, ray_20: Ray, hit_7: Hit) {
     let _e3 = load_Fog(offset_10);
-    fog_rays(_e3, ray_19, hit_7);
+    fog_rays(_e3, ray_20, hit_7);
     return;
 }
 
 fn spawn_origin(hit_8: Hit, dir_3: vec3<f32>) -> vec3<f32> {
-    var n_4: vec3<f32>;
+    var n_5: vec3<f32>;
 
-    n_4 = hit_8.geometric_normal;
-    let _e4 = n_4;
+    n_5 = hit_8.geometric_normal;
+    let _e4 = n_5;
     if (dot(dir_3, _e4) < 0f) {
-        let _e8 = n_4;
-        n_4 = -(_e8);
+        let _e8 = n_5;
+        n_5 = -(_e8);
     }
-    let _e11 = n_4;
+    let _e11 = n_5;
     let _e12 = offset_origin(hit_8.position, _e11);
     return _e12;
 }
@@ -1064,7 +1072,7 @@ fn spawn_origin(hit_8: Hit, dir_3: vec3<f32>) -> vec3<f32> {
 fn trace(camera_ray: Ray) -> vec3<f32> {
     var stack: array<Frame, 3>;
     var depth: u32;
-    var ray_20: Ray;
+    var ray_21: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var pushed: bool;
@@ -1088,42 +1096,42 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 3>();
     depth = 0u;
-    ray_20 = camera_ray;
+    ray_21 = camera_ray;
     value = vec3(0f);
     have_value = false;
     loop {
         let _e26 = have_value;
         if !(_e26) {
-            let _e28 = ray_20;
+            let _e28 = ray_21;
             let _e30 = intersect_scene(_e28, false);
             if (_e30.slot == NO_HIT) {
-                let _e34 = ray_20;
+                let _e34 = ray_21;
                 let _e36 = F32_INF;
-                let _e38 = ray_20;
+                let _e38 = ray_21;
                 let _e39 = miss(_e38);
                 let _e40 = through_medium(_e34, bitcast<f32>(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 let inst_9 = instances[_e30.slot];
-                let _e46 = ray_20;
+                let _e46 = ray_21;
                 let _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                let _e56 = ray_20.depth;
+                let _e56 = ray_21.depth;
                 let _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    let _e68 = ray_20;
+                    let _e68 = ray_21;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     let _e70 = spawn_count;
-                    let n_8 = min(min(_e70, 1u), MAX_SPAWN);
-                    if (n_8 > 0u) {
-                        let _e77 = ray_20;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
+                    let n_9 = min(min(_e70, 1u), MAX_SPAWN);
+                    if (n_9 > 0u) {
+                        let _e77 = ray_21;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_9, 0u);
                         i_5 = 0u;
                         loop {
                             let _e88 = i_5;
-                            if (_e88 >= n_8) {
+                            if (_e88 >= n_9) {
                                 break;
                             }
                             let _e91 = i_5;
@@ -1149,9 +1157,9 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 }
                 let _e120 = pushed;
                 if !(_e120) {
-                    let _e124 = ray_20;
+                    let _e124 = ray_21;
                     let _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0f));
-                    let _e128 = ray_20;
+                    let _e128 = ray_21;
                     let _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1168,9 +1176,9 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e137 = depth;
             let top = (_e137 - 1u);
             let _e144 = stack[min(top, 2u)].next;
-            let child_1 = (_e144 - 1u);
+            let child_2 = (_e144 - 1u);
             let _e151 = stack[min(top, 2u)].sum;
-            let _e159 = stack[min(top, 2u)].weights[min(child_1, 0u)];
+            let _e159 = stack[min(top, 2u)].weights[min(child_2, 0u)];
             let _e160 = value;
             stack[min(top, 2u)].sum = (_e151 + (_e159 * _e160));
             have_value = false;
@@ -1229,7 +1237,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e290 = spawn_origin(hit_10, dir_5);
             let _e293 = F32_INF;
             let _e299 = medium;
-            ray_20 = Ray(_e290, 0f, dir_5, bitcast<f32>(_e293), (parent.depth + 1u), RAY_SECONDARY, _e299);
+            ray_21 = Ray(_e290, 0f, dir_5, bitcast<f32>(_e293), (parent.depth + 1u), RAY_SECONDARY, _e299);
         } else {
             let _e305 = stack[min(top_1, 2u)].slot;
             let inst_10 = instances[_e305];
@@ -1261,7 +1269,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s_1: u32;
-    var ray_21: Ray;
+    var ray_22: Ray;
 
     let frame_5 = frame;
     let tile_1 = tile;
@@ -1278,13 +1286,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
         let sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_21 = _e23;
-        ray_21.depth = 0u;
-        ray_21.kind = RAY_CAMERA;
-        let _e31 = ray_21.origin;
+        ray_22 = _e23;
+        ray_22.depth = 0u;
+        ray_22.kind = RAY_CAMERA;
+        let _e31 = ray_22.origin;
         let _e33 = medium_at(_e31, NO_HIT);
-        ray_21.medium = _e33;
-        let _e34 = ray_21;
+        ray_22.medium = _e33;
+        let _e34 = ray_22;
         let _e35 = trace(_e34);
         let _e36 = is_finite_vec3f(_e35);
         if all(_e36) {

@@ -157,14 +157,13 @@ constant uint RAY_CAMERA = 0u;
 constant uint NO_HIT = 4294967295u;
 constant bool HAS_MEDIA = false;
 constant uint MESH_GEOMETRY = 4294967295u;
-constant uint MESH_LEAF_BIT = 2147483648u;
-constant uint MESH_COUNT_SHIFT = 27u;
-constant uint MESH_COUNT_MASK = 15u;
-constant uint MESH_FIRST_MASK = 134217727u;
+constant uint NODE_LEAF_BIT = 2147483648u;
+constant uint NODE_COUNT_SHIFT = 27u;
+constant uint NODE_COUNT_MASK = 15u;
+constant uint NODE_FIRST_MASK = 134217727u;
 constant uint BLAS_STACK = 64u;
 constant uint TLAS_STACK = 64u;
 constant bool HAS_SECONDARY_RAYS = true;
-constant uint LEAF_BIT = 2147483648u;
 constant bool HAS_BACKGROUND = true;
 constant uint FLAG_MEDIUM = 4u;
 constant uint FLAG_SECONDARY = 2u;
@@ -447,13 +446,13 @@ bool accept(
     return true;
 }
 
-metal::uint3 mesh_box_lo(
+metal::uint3 node_box_lo(
     metal::uint3 p
 ) {
     return metal::uint3(p.x & 65535u, p.x >> 16u, p.y & 65535u);
 }
 
-metal::float3 mesh_point(
+metal::float3 node_point(
     metal::float3 origin,
     metal::float3 scale,
     metal::uint3 q
@@ -461,7 +460,7 @@ metal::float3 mesh_point(
     return origin + (static_cast<metal::float3>(q) * scale);
 }
 
-metal::uint3 mesh_box_hi(
+metal::uint3 node_box_hi(
     metal::uint3 p_1
 ) {
     return metal::uint3(p_1.y >> 16u, p_1.z & 65535u, p_1.z >> 16u);
@@ -489,6 +488,30 @@ float slab(
     return as_type<float>(_e30);
 }
 
+metal::float2 children_entry(
+    GpuNode n,
+    metal::float3 origin_2,
+    metal::float3 scale_1,
+    Ray ray_3,
+    metal::float3 inv,
+    float tmax_3,
+    thread uint& F32_INF
+) {
+    metal::uint3 lq = as_type<metal::uint3>(n.min);
+    metal::uint3 rq = as_type<metal::uint3>(n.max);
+    metal::uint3 _e10 = node_box_lo(lq);
+    metal::float3 _e11 = node_point(origin_2, scale_1, _e10);
+    metal::uint3 _e12 = node_box_hi(lq);
+    metal::float3 _e13 = node_point(origin_2, scale_1, _e12);
+    float _e16 = slab(_e11, _e13, ray_3.origin, inv, ray_3.tmin, tmax_3, F32_INF);
+    metal::uint3 _e17 = node_box_lo(rq);
+    metal::float3 _e18 = node_point(origin_2, scale_1, _e17);
+    metal::uint3 _e19 = node_box_hi(rq);
+    metal::float3 _e20 = node_point(origin_2, scale_1, _e19);
+    float _e23 = slab(_e18, _e20, ray_3.origin, inv, ray_3.tmin, tmax_3, F32_INF);
+    return metal::float2(_e16, _e23);
+}
+
 metal::uint2 pop(
     uint base,
     uint sp,
@@ -505,7 +528,7 @@ Candidate intersect_mesh(
     GpuInstance inst_2,
     uint slot_1,
     Ray world_ray,
-    Ray ray_3,
+    Ray ray_4,
     Candidate best_in,
     bool shadow,
     thread uint& F32_INF,
@@ -521,12 +544,12 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    metal::float3 _e8 = safe_inverse(ray_3.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_3);
+    metal::float3 _e8 = safe_inverse(ray_4.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header = nodes[base_1];
-    metal::float3 origin_2 = header.min;
-    metal::float3 scale_1 = header.max;
+    metal::float3 origin_3 = header.min;
+    metal::float3 scale_2 = header.max;
     sp_1 = 0u;
     child = header.a;
     uint2 loop_bound = uint2(4294967295u);
@@ -534,11 +557,11 @@ Candidate intersect_mesh(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e20 = child;
-        if ((_e20 & MESH_LEAF_BIT) != 0u) {
+        if ((_e20 & NODE_LEAF_BIT) != 0u) {
             uint _e25 = child;
-            uint count = (_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK;
+            uint count = (_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
             uint _e32 = child;
-            uint first = _e32 & MESH_FIRST_MASK;
+            uint first = _e32 & NODE_FIRST_MASK;
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u);
             bool loop_init = true;
@@ -557,7 +580,7 @@ Candidate intersect_mesh(
                 uint _e41 = k;
                 uint prim = (inst_2.triangle_offset + first) + _e41;
                 float _e45 = best.t;
-                metal::float3 _e46 = hit_triangle(_e9, prim, ray_3.tmin, _e45, F32_INF, triangles, _buffer_sizes);
+                metal::float3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45, F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     Candidate c_6 = Candidate {_e46.x, slot_1, prim, {}, _e46.yz, {}, metal::float3(0.0)};
@@ -573,68 +596,58 @@ Candidate intersect_mesh(
             }
         } else {
             uint _e62 = child;
-            GpuNode n_5 = nodes[base_1 + _e62];
-            metal::uint3 lq = as_type<metal::uint3>(n_5.min);
-            metal::uint3 rq = as_type<metal::uint3>(n_5.max);
-            metal::uint3 _e71 = mesh_box_lo(lq);
-            metal::float3 _e72 = mesh_point(origin_2, scale_1, _e71);
-            metal::uint3 _e73 = mesh_box_hi(lq);
-            metal::float3 _e74 = mesh_point(origin_2, scale_1, _e73);
-            float _e78 = best.t;
-            float _e79 = slab(_e72, _e74, ray_3.origin, _e8, ray_3.tmin, _e78, F32_INF);
-            metal::uint3 _e80 = mesh_box_lo(rq);
-            metal::float3 _e81 = mesh_point(origin_2, scale_1, _e80);
-            metal::uint3 _e82 = mesh_box_hi(rq);
-            metal::float3 _e83 = mesh_point(origin_2, scale_1, _e82);
-            float _e87 = best.t;
-            float _e88 = slab(_e81, _e83, ray_3.origin, _e8, ray_3.tmin, _e87, F32_INF);
-            uint _e90 = F32_INF;
-            uint _e94 = F32_INF;
-            if ((_e79 < as_type<float>(_e90)) && (_e88 < as_type<float>(_e94))) {
-                near = n_5.a;
-                far = n_5.b;
-                if ((_e88 < _e79) != shadow) {
-                    near = n_5.b;
-                    far = n_5.a;
+            GpuNode n_6 = nodes[base_1 + _e62];
+            float _e68 = best.t;
+            metal::float2 _e69 = children_entry(n_6, origin_3, scale_2, ray_4, _e8, _e68, F32_INF);
+            float tl = _e69.x;
+            float tr = _e69.y;
+            uint _e73 = F32_INF;
+            uint _e77 = F32_INF;
+            if ((tl < as_type<float>(_e73)) && (tr < as_type<float>(_e77))) {
+                near = n_6.a;
+                far = n_6.b;
+                if ((tr < tl) != shadow) {
+                    near = n_6.b;
+                    far = n_6.a;
                 }
-                uint _e106 = sp_1;
-                if (_e106 < BLAS_STACK) {
-                    uint _e110 = sp_1;
-                    uint _e112 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e110, 127u)] = _e112;
-                    uint _e117 = sp_1;
-                    sp_1 = _e117 + 1u;
+                uint _e89 = sp_1;
+                if (_e89 < BLAS_STACK) {
+                    uint _e93 = sp_1;
+                    uint _e95 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e93, 127u)] = _e95;
+                    uint _e100 = sp_1;
+                    sp_1 = _e100 + 1u;
                 }
-                uint _e120 = near;
-                child = _e120;
+                uint _e103 = near;
+                child = _e103;
                 continue;
             }
-            uint _e122 = F32_INF;
-            if (_e79 < as_type<float>(_e122)) {
-                child = n_5.a;
+            uint _e105 = F32_INF;
+            if (tl < as_type<float>(_e105)) {
+                child = n_6.a;
                 continue;
             }
-            uint _e127 = F32_INF;
-            if (_e88 < as_type<float>(_e127)) {
-                child = n_5.b;
+            uint _e110 = F32_INF;
+            if (tr < as_type<float>(_e110)) {
+                child = n_6.b;
                 continue;
             }
         }
-        uint _e132 = sp_1;
-        metal::uint2 _e133 = pop(TLAS_STACK, _e132, traversal_stack);
-        if (_e133.x == NO_HIT) {
+        uint _e115 = sp_1;
+        metal::uint2 _e116 = pop(TLAS_STACK, _e115, traversal_stack);
+        if (_e116.x == NO_HIT) {
             break;
         }
-        child = _e133.x;
-        sp_1 = _e133.y;
+        child = _e116.x;
+        sp_1 = _e116.y;
     }
-    Candidate _e139 = best;
-    return _e139;
+    Candidate _e122 = best;
+    return _e122;
 }
 
 Candidate intersect_object(
     uint slot_2,
-    Ray ray_4,
+    Ray ray_5,
     Candidate best_1,
     bool shadow_1,
     thread uint& F32_INF,
@@ -646,12 +659,12 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_5 = instances[slot_2];
-    Ray _e7 = to_object(inst_5, ray_4);
+    Ray _e7 = to_object(inst_5, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_5.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_4, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_5, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
@@ -679,34 +692,34 @@ metal::float3 point_to_world(
 metal::float3 decode_octahedral(
     uint bits
 ) {
-    metal::float3 n = {};
+    metal::float3 n_1 = {};
     metal::float2 e = metal::unpack_snorm2x16_to_float(bits);
-    n = metal::float3(e.x, e.y, (1.0 - metal::abs(e.x)) - metal::abs(e.y));
-    float _e14 = n.z;
+    n_1 = metal::float3(e.x, e.y, (1.0 - metal::abs(e.x)) - metal::abs(e.y));
+    float _e14 = n_1.z;
     if (_e14 < 0.0) {
-        metal::float3 _e21 = n;
+        metal::float3 _e21 = n_1;
         metal::float2 s_3 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
-        metal::float3 _e29 = n;
+        metal::float3 _e29 = n_1;
         metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_3;
-        float _e37 = n.z;
-        n = metal::float3(xy.x, xy.y, _e37);
+        float _e37 = n_1.z;
+        n_1 = metal::float3(xy.x, xy.y, _e37);
     }
-    metal::float3 _e39 = n;
+    metal::float3 _e39 = n_1;
     metal::float3 _e40 = normalize_vec3f(_e39);
     return _e40;
 }
 
 metal::float3 normal_to_world(
     GpuInstance inst_4,
-    metal::float3 n_1
+    metal::float3 n_2
 ) {
-    metal::float3 w_1 = ((inst_4.world_to_object_0_.xyz * metal::float3(n_1.x)) + (inst_4.world_to_object_1_.xyz * metal::float3(n_1.y))) + (inst_4.world_to_object_2_.xyz * metal::float3(n_1.z));
+    metal::float3 w_1 = ((inst_4.world_to_object_0_.xyz * metal::float3(n_2.x)) + (inst_4.world_to_object_1_.xyz * metal::float3(n_2.y))) + (inst_4.world_to_object_2_.xyz * metal::float3(n_2.z));
     metal::float3 _e19 = normalize_vec3f(w_1);
     return _e19;
 }
 
 Hit finish_hit(
-    Ray ray_5,
+    Ray ray_6,
     Candidate c_1,
     device type_8 const& instances,
     device type_10 const& triangles,
@@ -717,7 +730,7 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_6 = instances[c_1.slot];
-    hit = Hit {ray_5.origin + (ray_5.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_6.object, c_1.primitive};
+    hit = Hit {ray_6.origin + (ray_6.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_6.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
@@ -753,7 +766,7 @@ Hit finish_hit(
     metal::float3 _e131 = normal_to_world(inst_6, _e130);
     hit.normal = _e131;
     metal::float3 _e135 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_5.dir, _e135) < 0.0;
+    hit.front_face = metal::dot(ray_6.dir, _e135) < 0.0;
     Hit _e139 = hit;
     return _e139;
 }
@@ -821,7 +834,7 @@ uint medium_at(
 }
 
 Candidate intersect_scene(
-    Ray ray_6,
+    Ray ray_7,
     bool shadow_2,
     constant FrameUniforms& frame,
     thread uint& F32_INF,
@@ -834,98 +847,100 @@ Candidate intersect_scene(
 ) {
     Candidate best_2 = {};
     uint sp_2 = {};
-    uint node = {};
+    uint child_1 = {};
     uint near_1 = {};
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_6.tmax);
+    Candidate _e7 = no_candidate(ray_7.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = frame;
     if (frame_2.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_6.dir);
-    sp_2 = 0u;
-    node = frame_2.tlas_root;
-    uint _e21 = node;
-    GpuNode root = nodes[_e21];
-    float _e30 = best_2.t;
-    float _e31 = slab(root.min, root.max, ray_6.origin, _e16, ray_6.tmin, _e30, F32_INF);
-    uint _e33 = F32_INF;
-    if (_e31 == as_type<float>(_e33)) {
-        Candidate _e36 = best_2;
-        return _e36;
+    metal::float3 _e16 = safe_inverse(ray_7.dir);
+    uint base_2 = frame_2.tlas_root;
+    GpuNode header_1 = nodes[base_2];
+    metal::float3 origin_4 = header_1.min;
+    metal::float3 scale_3 = header_1.max;
+    metal::float3 _e25 = node_point(origin_4, scale_3, metal::uint3(65535u));
+    float _e29 = best_2.t;
+    float _e30 = slab(origin_4, _e25, ray_7.origin, _e16, ray_7.tmin, _e29, F32_INF);
+    uint _e32 = F32_INF;
+    if (_e30 == as_type<float>(_e32)) {
+        Candidate _e35 = best_2;
+        return _e35;
     }
+    sp_2 = 0u;
+    child_1 = header_1.a;
     uint2 loop_bound_3 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e37 = node;
-        GpuNode n_6 = nodes[_e37];
-        if ((n_6.b & LEAF_BIT) != 0u) {
-            if ((n_6.b & ~(LEAF_BIT)) != 0u) {
-                Candidate _e53 = best_2;
-                Candidate _e54 = intersect_object(n_6.a, ray_6, _e53, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
-                best_2 = _e54;
-                uint _e56 = best_2.slot;
-                if (shadow_2 && (_e56 != NO_HIT)) {
-                    Candidate _e60 = best_2;
-                    return _e60;
+        uint _e40 = child_1;
+        if ((_e40 & NODE_LEAF_BIT) != 0u) {
+            uint _e45 = child_1;
+            if (((_e45 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                uint _e54 = child_1;
+                Candidate _e57 = best_2;
+                Candidate _e58 = intersect_object(_e54 & NODE_FIRST_MASK, ray_7, _e57, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                best_2 = _e58;
+                uint _e60 = best_2.slot;
+                if (shadow_2 && (_e60 != NO_HIT)) {
+                    Candidate _e64 = best_2;
+                    return _e64;
                 }
             }
         } else {
-            uint left = frame_2.tlas_root + n_6.a;
-            uint right = left + 1u;
-            GpuNode l = nodes[left];
-            GpuNode rr = nodes[right];
-            float _e77 = best_2.t;
-            float _e78 = slab(l.min, l.max, ray_6.origin, _e16, ray_6.tmin, _e77, F32_INF);
-            float _e84 = best_2.t;
-            float _e85 = slab(rr.min, rr.max, ray_6.origin, _e16, ray_6.tmin, _e84, F32_INF);
-            uint _e87 = F32_INF;
-            uint _e91 = F32_INF;
-            if ((_e78 < as_type<float>(_e87)) && (_e85 < as_type<float>(_e91))) {
-                near_1 = left;
-                far_1 = right;
-                if (_e85 < _e78) {
-                    near_1 = right;
-                    far_1 = left;
+            uint _e65 = child_1;
+            GpuNode n_7 = nodes[base_2 + _e65];
+            float _e71 = best_2.t;
+            metal::float2 _e72 = children_entry(n_7, origin_4, scale_3, ray_7, _e16, _e71, F32_INF);
+            float tl_1 = _e72.x;
+            float tr_1 = _e72.y;
+            uint _e76 = F32_INF;
+            uint _e80 = F32_INF;
+            if ((tl_1 < as_type<float>(_e76)) && (tr_1 < as_type<float>(_e80))) {
+                near_1 = n_7.a;
+                far_1 = n_7.b;
+                if (tr_1 < tl_1) {
+                    near_1 = n_7.b;
+                    far_1 = n_7.a;
                 }
-                uint _e98 = sp_2;
-                if (_e98 < TLAS_STACK) {
-                    uint _e101 = sp_2;
-                    uint _e102 = far_1;
-                    traversal_stack.inner[metal::min(_e101, 127u)] = _e102;
-                    uint _e107 = sp_2;
-                    sp_2 = _e107 + 1u;
+                uint _e91 = sp_2;
+                if (_e91 < TLAS_STACK) {
+                    uint _e94 = sp_2;
+                    uint _e95 = far_1;
+                    traversal_stack.inner[metal::min(_e94, 127u)] = _e95;
+                    uint _e100 = sp_2;
+                    sp_2 = _e100 + 1u;
                 }
-                uint _e110 = near_1;
-                node = _e110;
+                uint _e103 = near_1;
+                child_1 = _e103;
                 continue;
             }
-            uint _e112 = F32_INF;
-            if (_e78 < as_type<float>(_e112)) {
-                node = left;
+            uint _e105 = F32_INF;
+            if (tl_1 < as_type<float>(_e105)) {
+                child_1 = n_7.a;
                 continue;
             }
-            uint _e116 = F32_INF;
-            if (_e85 < as_type<float>(_e116)) {
-                node = right;
+            uint _e110 = F32_INF;
+            if (tr_1 < as_type<float>(_e110)) {
+                child_1 = n_7.b;
                 continue;
             }
         }
-        uint _e120 = sp_2;
-        metal::uint2 _e121 = pop(0u, _e120, traversal_stack);
-        if (_e121.x == NO_HIT) {
+        uint _e115 = sp_2;
+        metal::uint2 _e116 = pop(0u, _e115, traversal_stack);
+        if (_e116.x == NO_HIT) {
             break;
         }
-        node = _e121.x;
-        sp_2 = _e121.y;
+        child_1 = _e116.x;
+        sp_2 = _e116.y;
     }
-    Candidate _e127 = best_2;
-    return _e127;
+    Candidate _e122 = best_2;
+    return _e122;
 }
 
 SkyGradient load_SkyGradient(
@@ -947,9 +962,9 @@ SkyGradient load_SkyGradient(
 
 metal::float3 sky_gradient(
     SkyGradient b_4,
-    Ray ray_7
+    Ray ray_8
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_7.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_8.dir);
     float y = _e3.y;
     if (y < 0.0) {
         return metal::mix(b_4.horizon, b_4.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
@@ -960,17 +975,17 @@ metal::float3 sky_gradient(
 metal::float3 dispatch_miss(
     uint type_id_1,
     uint offset_3,
-    Ray ray_8,
+    Ray ray_9,
     device type_4 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_3, params, _buffer_sizes);
-    metal::float3 _e3 = sky_gradient(_e2, ray_8);
+    metal::float3 _e3 = sky_gradient(_e2, ray_9);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_9,
+    Ray ray_10,
     constant FrameUniforms& frame,
     device type_4 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -979,14 +994,14 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_3 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_9, params, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_10, params, _buffer_sizes);
     return _e9;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_2,
     uint offset_4,
-    Ray ray_10,
+    Ray ray_11,
     float t,
     metal::float3 radiance
 ) {
@@ -994,7 +1009,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_11,
+    Ray ray_12,
     float t_1,
     metal::float3 radiance_1,
     device type_8 const& instances,
@@ -1003,14 +1018,14 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_11.medium == 0u) {
+    if (ray_12.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_7 = instances[ray_11.medium - 1u];
+    GpuInstance inst_7 = instances[ray_12.medium - 1u];
     if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_11, t_1, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_12, t_1, radiance_1);
     return _e21;
 }
 
@@ -1028,7 +1043,7 @@ Glass load_Glass(
 
 metal::float3 glass_shade(
     Glass m,
-    Ray ray_12,
+    Ray ray_13,
     Hit hit_1,
     metal::float3 secondary
 ) {
@@ -1048,7 +1063,7 @@ Mirror load_Mirror(
 
 metal::float3 mirror_shade(
     Mirror m_1,
-    Ray ray_13,
+    Ray ray_14,
     Hit hit_2,
     metal::float3 secondary_1
 ) {
@@ -1058,7 +1073,7 @@ metal::float3 mirror_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_3,
     uint offset_7,
-    Ray ray_14,
+    Ray ray_15,
     Hit hit_3,
     metal::float3 secondary_2,
     device type_4 const& params,
@@ -1067,12 +1082,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_3) {
         case 0u: {
             Glass _e5 = load_Glass(offset_7, params, _buffer_sizes);
-            metal::float3 _e6 = glass_shade(_e5, ray_14, hit_3, secondary_2);
+            metal::float3 _e6 = glass_shade(_e5, ray_15, hit_3, secondary_2);
             return _e6;
         }
         case 1u: {
             Mirror _e7 = load_Mirror(offset_7, params, _buffer_sizes);
-            metal::float3 _e8 = mirror_shade(_e7, ray_14, hit_3, secondary_2);
+            metal::float3 _e8 = mirror_shade(_e7, ray_15, hit_3, secondary_2);
             return _e8;
         }
         default: {
@@ -1083,7 +1098,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_15,
+    Ray ray_16,
     Candidate c_2,
     device type_4 const& params,
     device type_8 const& instances,
@@ -1092,8 +1107,8 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_15, c_2, instances, triangles, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, metal::float3(0.0), params, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_16, c_2, instances, triangles, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, metal::float3(0.0), params, _buffer_sizes);
     return _e11;
 }
 
@@ -1123,34 +1138,34 @@ void rt_spawn(
 
 void glass_rays(
     Glass m_2,
-    Ray ray_16,
+    Ray ray_17,
     Hit hit_4,
     thread type_15& spawn_dirs,
     thread type_15& spawn_weights,
     thread uint& spawn_count
 ) {
-    metal::float3 n_2 = {};
+    metal::float3 n_3 = {};
     float eta_1 = {};
-    metal::float3 _e4 = normalize_vec3f(ray_16.dir);
-    n_2 = hit_4.normal;
+    metal::float3 _e4 = normalize_vec3f(ray_17.dir);
+    n_3 = hit_4.normal;
     eta_1 = 1.0 / m_2.ior;
     if (!(hit_4.front_face)) {
-        metal::float3 _e13 = n_2;
-        n_2 = -(_e13);
+        metal::float3 _e13 = n_3;
+        n_3 = -(_e13);
         eta_1 = m_2.ior;
     }
-    metal::float3 _e17 = n_2;
+    metal::float3 _e17 = n_3;
     float c_7 = metal::min(metal::dot(-(_e4), _e17), 1.0);
-    metal::float3 _e21 = n_2;
+    metal::float3 _e21 = n_3;
     float _e22 = eta_1;
     metal::float3 t_3 = metal::refract(_e4, _e21, _e22);
     float _e24 = eta_1;
     float _e25 = schlick(c_7, _e24);
     if (metal::dot(t_3, t_3) == 0.0) {
-        metal::float3 _e29 = n_2;
+        metal::float3 _e29 = n_3;
         rt_spawn(metal::reflect(_e4, _e29), m_2.tint, spawn_dirs, spawn_weights, spawn_count);
     } else {
-        metal::float3 _e32 = n_2;
+        metal::float3 _e32 = n_3;
         rt_spawn(metal::reflect(_e4, _e32), metal::float3(_e25), spawn_dirs, spawn_weights, spawn_count);
         rt_spawn(t_3, m_2.tint * metal::float3(1.0 - _e25), spawn_dirs, spawn_weights, spawn_count);
     }
@@ -1159,13 +1174,13 @@ void glass_rays(
 
 void mirror_rays(
     Mirror m_3,
-    Ray ray_17,
+    Ray ray_18,
     Hit hit_5,
     thread type_15& spawn_dirs,
     thread type_15& spawn_weights,
     thread uint& spawn_count
 ) {
-    metal::float3 _e4 = normalize_vec3f(ray_17.dir);
+    metal::float3 _e4 = normalize_vec3f(ray_18.dir);
     rt_spawn(metal::reflect(_e4, hit_5.normal), m_3.tint, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
@@ -1173,7 +1188,7 @@ void mirror_rays(
 void dispatch_secondary_rays(
     uint type_id_4,
     uint offset_8,
-    Ray ray_18,
+    Ray ray_19,
     Hit hit_6,
     device type_4 const& params,
     thread type_15& spawn_dirs,
@@ -1184,12 +1199,12 @@ void dispatch_secondary_rays(
     switch(type_id_4) {
         case 0u: {
             Glass _e4 = load_Glass(offset_8, params, _buffer_sizes);
-            glass_rays(_e4, ray_18, hit_6, spawn_dirs, spawn_weights, spawn_count);
+            glass_rays(_e4, ray_19, hit_6, spawn_dirs, spawn_weights, spawn_count);
             return;
         }
         case 1u: {
             Mirror _e5 = load_Mirror(offset_8, params, _buffer_sizes);
-            mirror_rays(_e5, ray_18, hit_6, spawn_dirs, spawn_weights, spawn_count);
+            mirror_rays(_e5, ray_19, hit_6, spawn_dirs, spawn_weights, spawn_count);
             return;
         }
         default: {
@@ -1201,16 +1216,17 @@ void dispatch_secondary_rays(
 
 metal::float3 offset_origin(
     metal::float3 p_4,
-    metal::float3 n_3,
+    metal::float3 n_4,
     constant FrameUniforms& frame,
     device type_9 const& nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     FrameUniforms _e3 = frame;
-    GpuNode root_1 = nodes[_e3.tlas_root];
-    metal::float3 a_5 = metal::max(metal::abs(p_4), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
+    GpuNode header_2 = nodes[_e3.tlas_root];
+    metal::float3 _e15 = node_point(header_2.min, header_2.max, metal::uint3(65535u));
+    metal::float3 a_5 = metal::max(metal::abs(p_4), metal::max(metal::abs(header_2.min), metal::abs(_e15)));
     float m_4 = metal::max(metal::max(a_5.x, a_5.y), a_5.z);
-    return p_4 + (n_3 * metal::float3(m_4 * (1.0 / 65536.0)));
+    return p_4 + (n_4 * metal::float3(m_4 * (1.0 / 65536.0)));
 }
 
 metal::float3 spawn_origin(
@@ -1220,14 +1236,14 @@ metal::float3 spawn_origin(
     device type_9 const& nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 n_4 = {};
-    n_4 = hit_7.geometric_normal;
-    metal::float3 _e4 = n_4;
+    metal::float3 n_5 = {};
+    n_5 = hit_7.geometric_normal;
+    metal::float3 _e4 = n_5;
     if (metal::dot(dir_1, _e4) < 0.0) {
-        metal::float3 _e8 = n_4;
-        n_4 = -(_e8);
+        metal::float3 _e8 = n_5;
+        n_5 = -(_e8);
     }
-    metal::float3 _e11 = n_4;
+    metal::float3 _e11 = n_5;
     metal::float3 _e12 = offset_origin(hit_7.position, _e11, frame, nodes, _buffer_sizes);
     return _e12;
 }
@@ -1250,7 +1266,7 @@ metal::float3 trace(
 ) {
     type_16 stack = {};
     uint depth = {};
-    Ray ray_19 = {};
+    Ray ray_20 = {};
     metal::float3 value = {};
     bool have_value = {};
     bool pushed = {};
@@ -1271,7 +1287,7 @@ metal::float3 trace(
     }
     stack = type_16 {};
     depth = 0u;
-    ray_19 = camera_ray;
+    ray_20 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     uint2 loop_bound_4 = uint2(4294967295u);
@@ -1280,32 +1296,32 @@ metal::float3 trace(
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_19;
+            Ray _e28 = ray_20;
             Candidate _e30 = intersect_scene(_e28, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
             if (_e30.slot == NO_HIT) {
-                Ray _e34 = ray_19;
+                Ray _e34 = ray_20;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_19;
+                Ray _e38 = ray_20;
                 metal::float3 _e39 = miss(_e38, frame, params, _buffer_sizes);
                 metal::float3 _e40 = through_medium(_e34, as_type<float>(_e36), _e39, instances, _buffer_sizes);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = instances[_e30.slot];
-                Ray _e46 = ray_19;
+                Ray _e46 = ray_20;
                 Hit _e47 = finish_hit(_e46, _e30, instances, triangles, attributes, _buffer_sizes);
                 pushed = false;
-                uint _e56 = ray_19.depth;
+                uint _e56 = ray_20.depth;
                 uint _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_19;
+                    Ray _e68 = ray_20;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
                     uint _e70 = spawn_count;
-                    uint n_7 = metal::min(metal::min(_e70, 2u), MAX_SPAWN);
-                    if (n_7 > 0u) {
-                        Ray _e77 = ray_19;
-                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_7, 0u};
+                    uint n_8 = metal::min(metal::min(_e70, 2u), MAX_SPAWN);
+                    if (n_8 > 0u) {
+                        Ray _e77 = ray_20;
+                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_8, 0u};
                         i_1 = 0u;
                         uint2 loop_bound_5 = uint2(4294967295u);
                         bool loop_init_2 = true;
@@ -1318,7 +1334,7 @@ metal::float3 trace(
                             }
                             loop_init_2 = false;
                             uint _e88 = i_1;
-                            if (_e88 >= n_7) {
+                            if (_e88 >= n_8) {
                                 break;
                             }
                             uint _e91 = i_1;
@@ -1340,9 +1356,9 @@ metal::float3 trace(
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_19;
+                    Ray _e124 = ray_20;
                     metal::float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, metal::float3(0.0), params, _buffer_sizes);
-                    Ray _e128 = ray_19;
+                    Ray _e128 = ray_20;
                     metal::float3 _e130 = through_medium(_e128, _e30.t, _e127, instances, _buffer_sizes);
                     value = _e130;
                     have_value = true;
@@ -1359,9 +1375,9 @@ metal::float3 trace(
             uint _e137 = depth;
             uint top = _e137 - 1u;
             uint _e144 = stack.inner[metal::min(top, 5u)].next;
-            uint child_1 = _e144 - 1u;
+            uint child_2 = _e144 - 1u;
             metal::float3 _e151 = stack.inner[metal::min(top, 5u)].sum;
-            metal::float3 _e159 = stack.inner[metal::min(top, 5u)].weights.inner[metal::min(child_1, 1u)];
+            metal::float3 _e159 = stack.inner[metal::min(top, 5u)].weights.inner[metal::min(child_2, 1u)];
             metal::float3 _e160 = value;
             stack.inner[metal::min(top, 5u)].sum = _e151 + (_e159 * _e160);
             have_value = false;
@@ -1380,7 +1396,7 @@ metal::float3 trace(
             metal::float3 _e209 = spawn_origin(hit_9, dir_2, frame, nodes, _buffer_sizes);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_19 = Ray {_e209, 0.0, dir_2, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
+            ray_20 = Ray {_e209, 0.0, dir_2, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
         } else {
             uint _e224 = stack.inner[metal::min(top_1, 5u)].slot;
             GpuInstance inst_10 = instances[_e224];
@@ -1435,7 +1451,7 @@ void render_pixel(
     metal::float3 sum = {};
     uint bad = {};
     uint s = {};
-    Ray ray_20 = {};
+    Ray ray_21 = {};
     FrameUniforms frame_4 = frame;
     TileParams tile_1 = tile;
     sum = metal::float3(0.0);
@@ -1460,13 +1476,13 @@ void render_pixel(
         uint sample_3 = (tile_1.frame * frame_4.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_4.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_4.camera_type, frame_4.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
-        ray_20 = _e23;
-        ray_20.depth = 0u;
-        ray_20.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_20.origin;
+        ray_21 = _e23;
+        ray_21.depth = 0u;
+        ray_21.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_21.origin;
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, _buffer_sizes);
-        ray_20.medium = _e33;
-        Ray _e34 = ray_20;
+        ray_21.medium = _e33;
+        Ray _e34 = ray_21;
         metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {

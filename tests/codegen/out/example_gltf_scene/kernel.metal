@@ -195,15 +195,14 @@ constant uint RAY_CAMERA = 0u;
 constant uint NO_HIT = 4294967295u;
 constant bool HAS_MEDIA = false;
 constant uint MESH_GEOMETRY = 4294967295u;
-constant uint MESH_LEAF_BIT = 2147483648u;
-constant uint MESH_COUNT_SHIFT = 27u;
-constant uint MESH_COUNT_MASK = 15u;
-constant uint MESH_FIRST_MASK = 134217727u;
+constant uint NODE_LEAF_BIT = 2147483648u;
+constant uint NODE_COUNT_SHIFT = 27u;
+constant uint NODE_COUNT_MASK = 15u;
+constant uint NODE_FIRST_MASK = 134217727u;
 constant uint FLAG_ANY_HIT = 1u;
 constant uint BLAS_STACK = 64u;
 constant uint TLAS_STACK = 64u;
 constant bool HAS_SECONDARY_RAYS = false;
-constant uint LEAF_BIT = 2147483648u;
 constant bool HAS_BACKGROUND = true;
 constant uint FLAG_MEDIUM = 4u;
 constant uint RAY_SHADOW = 2u;
@@ -738,13 +737,13 @@ bool accept(
     return true;
 }
 
-metal::uint3 mesh_box_lo(
+metal::uint3 node_box_lo(
     metal::uint3 p_1
 ) {
     return metal::uint3(p_1.x & 65535u, p_1.x >> 16u, p_1.y & 65535u);
 }
 
-metal::float3 mesh_point(
+metal::float3 node_point(
     metal::float3 origin,
     metal::float3 scale,
     metal::uint3 q
@@ -752,7 +751,7 @@ metal::float3 mesh_point(
     return origin + (static_cast<metal::float3>(q) * scale);
 }
 
-metal::uint3 mesh_box_hi(
+metal::uint3 node_box_hi(
     metal::uint3 p_2
 ) {
     return metal::uint3(p_2.y >> 16u, p_2.z & 65535u, p_2.z >> 16u);
@@ -780,6 +779,30 @@ float slab(
     return as_type<float>(_e30);
 }
 
+metal::float2 children_entry(
+    GpuNode n_2,
+    metal::float3 origin_2,
+    metal::float3 scale_1,
+    Ray ray_6,
+    metal::float3 inv,
+    float tmax_3,
+    thread uint& F32_INF
+) {
+    metal::uint3 lq = as_type<metal::uint3>(n_2.min);
+    metal::uint3 rq = as_type<metal::uint3>(n_2.max);
+    metal::uint3 _e10 = node_box_lo(lq);
+    metal::float3 _e11 = node_point(origin_2, scale_1, _e10);
+    metal::uint3 _e12 = node_box_hi(lq);
+    metal::float3 _e13 = node_point(origin_2, scale_1, _e12);
+    float _e16 = slab(_e11, _e13, ray_6.origin, inv, ray_6.tmin, tmax_3, F32_INF);
+    metal::uint3 _e17 = node_box_lo(rq);
+    metal::float3 _e18 = node_point(origin_2, scale_1, _e17);
+    metal::uint3 _e19 = node_box_hi(rq);
+    metal::float3 _e20 = node_point(origin_2, scale_1, _e19);
+    float _e23 = slab(_e18, _e20, ray_6.origin, inv, ray_6.tmin, tmax_3, F32_INF);
+    return metal::float2(_e16, _e23);
+}
+
 metal::uint2 pop(
     uint base,
     uint sp,
@@ -796,7 +819,7 @@ Candidate intersect_mesh(
     GpuInstance inst_4,
     uint slot_2,
     Ray world_ray,
-    Ray ray_6,
+    Ray ray_7,
     Candidate best_in,
     bool shadow,
     device type_4 const& params,
@@ -816,12 +839,12 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    metal::float3 _e8 = safe_inverse(ray_6.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_6);
+    metal::float3 _e8 = safe_inverse(ray_7.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_7);
     uint base_2 = inst_4.blas_root;
     GpuNode header = nodes[base_2];
-    metal::float3 origin_2 = header.min;
-    metal::float3 scale_1 = header.max;
+    metal::float3 origin_3 = header.min;
+    metal::float3 scale_2 = header.max;
     sp_1 = 0u;
     child = header.a;
     uint2 loop_bound = uint2(4294967295u);
@@ -829,11 +852,11 @@ Candidate intersect_mesh(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e20 = child;
-        if ((_e20 & MESH_LEAF_BIT) != 0u) {
+        if ((_e20 & NODE_LEAF_BIT) != 0u) {
             uint _e25 = child;
-            uint count = (_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK;
+            uint count = (_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
             uint _e32 = child;
-            uint first = _e32 & MESH_FIRST_MASK;
+            uint first = _e32 & NODE_FIRST_MASK;
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u);
             bool loop_init = true;
@@ -852,7 +875,7 @@ Candidate intersect_mesh(
                 uint _e41 = k;
                 uint prim = (inst_4.triangle_offset + first) + _e41;
                 float _e45 = best.t;
-                metal::float3 _e46 = hit_triangle(_e9, prim, ray_6.tmin, _e45, F32_INF, triangles, _buffer_sizes);
+                metal::float3 _e46 = hit_triangle(_e9, prim, ray_7.tmin, _e45, F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     Candidate c_8 = Candidate {_e46.x, slot_2, prim, {}, _e46.yz, {}, metal::float3(0.0)};
@@ -868,68 +891,58 @@ Candidate intersect_mesh(
             }
         } else {
             uint _e62 = child;
-            GpuNode n_5 = nodes[base_2 + _e62];
-            metal::uint3 lq = as_type<metal::uint3>(n_5.min);
-            metal::uint3 rq = as_type<metal::uint3>(n_5.max);
-            metal::uint3 _e71 = mesh_box_lo(lq);
-            metal::float3 _e72 = mesh_point(origin_2, scale_1, _e71);
-            metal::uint3 _e73 = mesh_box_hi(lq);
-            metal::float3 _e74 = mesh_point(origin_2, scale_1, _e73);
-            float _e78 = best.t;
-            float _e79 = slab(_e72, _e74, ray_6.origin, _e8, ray_6.tmin, _e78, F32_INF);
-            metal::uint3 _e80 = mesh_box_lo(rq);
-            metal::float3 _e81 = mesh_point(origin_2, scale_1, _e80);
-            metal::uint3 _e82 = mesh_box_hi(rq);
-            metal::float3 _e83 = mesh_point(origin_2, scale_1, _e82);
-            float _e87 = best.t;
-            float _e88 = slab(_e81, _e83, ray_6.origin, _e8, ray_6.tmin, _e87, F32_INF);
-            uint _e90 = F32_INF;
-            uint _e94 = F32_INF;
-            if ((_e79 < as_type<float>(_e90)) && (_e88 < as_type<float>(_e94))) {
-                near = n_5.a;
-                far = n_5.b;
-                if ((_e88 < _e79) != shadow) {
-                    near = n_5.b;
-                    far = n_5.a;
+            GpuNode n_6 = nodes[base_2 + _e62];
+            float _e68 = best.t;
+            metal::float2 _e69 = children_entry(n_6, origin_3, scale_2, ray_7, _e8, _e68, F32_INF);
+            float tl = _e69.x;
+            float tr = _e69.y;
+            uint _e73 = F32_INF;
+            uint _e77 = F32_INF;
+            if ((tl < as_type<float>(_e73)) && (tr < as_type<float>(_e77))) {
+                near = n_6.a;
+                far = n_6.b;
+                if ((tr < tl) != shadow) {
+                    near = n_6.b;
+                    far = n_6.a;
                 }
-                uint _e106 = sp_1;
-                if (_e106 < BLAS_STACK) {
-                    uint _e110 = sp_1;
-                    uint _e112 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e110, 127u)] = _e112;
-                    uint _e117 = sp_1;
-                    sp_1 = _e117 + 1u;
+                uint _e89 = sp_1;
+                if (_e89 < BLAS_STACK) {
+                    uint _e93 = sp_1;
+                    uint _e95 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e93, 127u)] = _e95;
+                    uint _e100 = sp_1;
+                    sp_1 = _e100 + 1u;
                 }
-                uint _e120 = near;
-                child = _e120;
+                uint _e103 = near;
+                child = _e103;
                 continue;
             }
-            uint _e122 = F32_INF;
-            if (_e79 < as_type<float>(_e122)) {
-                child = n_5.a;
+            uint _e105 = F32_INF;
+            if (tl < as_type<float>(_e105)) {
+                child = n_6.a;
                 continue;
             }
-            uint _e127 = F32_INF;
-            if (_e88 < as_type<float>(_e127)) {
-                child = n_5.b;
+            uint _e110 = F32_INF;
+            if (tr < as_type<float>(_e110)) {
+                child = n_6.b;
                 continue;
             }
         }
-        uint _e132 = sp_1;
-        metal::uint2 _e133 = pop(TLAS_STACK, _e132, traversal_stack);
-        if (_e133.x == NO_HIT) {
+        uint _e115 = sp_1;
+        metal::uint2 _e116 = pop(TLAS_STACK, _e115, traversal_stack);
+        if (_e116.x == NO_HIT) {
             break;
         }
-        child = _e133.x;
-        sp_1 = _e133.y;
+        child = _e116.x;
+        sp_1 = _e116.y;
     }
-    Candidate _e139 = best;
-    return _e139;
+    Candidate _e122 = best;
+    return _e122;
 }
 
 Candidate intersect_object(
     uint slot_3,
-    Ray ray_7,
+    Ray ray_8,
     Candidate best_1,
     bool shadow_1,
     device type_4 const& params,
@@ -944,12 +957,12 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_6 = instances[slot_3];
-    Ray _e7 = to_object(inst_6, ray_7);
+    Ray _e7 = to_object(inst_6, ray_8);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_6, slot_3, ray_7, _e14, best_1, shadow_1, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_6, slot_3, ray_8, _e14, best_1, shadow_1, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
@@ -1019,7 +1032,7 @@ uint medium_at(
 }
 
 Candidate intersect_scene(
-    Ray ray_8,
+    Ray ray_9,
     bool shadow_2,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1035,98 +1048,100 @@ Candidate intersect_scene(
 ) {
     Candidate best_2 = {};
     uint sp_2 = {};
-    uint node = {};
+    uint child_1 = {};
     uint near_1 = {};
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_8.tmax);
+    Candidate _e7 = no_candidate(ray_9.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = frame;
     if (frame_2.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_8.dir);
-    sp_2 = 0u;
-    node = frame_2.tlas_root;
-    uint _e21 = node;
-    GpuNode root = nodes[_e21];
-    float _e30 = best_2.t;
-    float _e31 = slab(root.min, root.max, ray_8.origin, _e16, ray_8.tmin, _e30, F32_INF);
-    uint _e33 = F32_INF;
-    if (_e31 == as_type<float>(_e33)) {
-        Candidate _e36 = best_2;
-        return _e36;
+    metal::float3 _e16 = safe_inverse(ray_9.dir);
+    uint base_3 = frame_2.tlas_root;
+    GpuNode header_1 = nodes[base_3];
+    metal::float3 origin_4 = header_1.min;
+    metal::float3 scale_3 = header_1.max;
+    metal::float3 _e25 = node_point(origin_4, scale_3, metal::uint3(65535u));
+    float _e29 = best_2.t;
+    float _e30 = slab(origin_4, _e25, ray_9.origin, _e16, ray_9.tmin, _e29, F32_INF);
+    uint _e32 = F32_INF;
+    if (_e30 == as_type<float>(_e32)) {
+        Candidate _e35 = best_2;
+        return _e35;
     }
+    sp_2 = 0u;
+    child_1 = header_1.a;
     uint2 loop_bound_3 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e37 = node;
-        GpuNode n_6 = nodes[_e37];
-        if ((n_6.b & LEAF_BIT) != 0u) {
-            if ((n_6.b & ~(LEAF_BIT)) != 0u) {
-                Candidate _e53 = best_2;
-                Candidate _e54 = intersect_object(n_6.a, ray_8, _e53, shadow_2, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, _buffer_sizes);
-                best_2 = _e54;
-                uint _e56 = best_2.slot;
-                if (shadow_2 && (_e56 != NO_HIT)) {
-                    Candidate _e60 = best_2;
-                    return _e60;
+        uint _e40 = child_1;
+        if ((_e40 & NODE_LEAF_BIT) != 0u) {
+            uint _e45 = child_1;
+            if (((_e45 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                uint _e54 = child_1;
+                Candidate _e57 = best_2;
+                Candidate _e58 = intersect_object(_e54 & NODE_FIRST_MASK, ray_9, _e57, shadow_2, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, _buffer_sizes);
+                best_2 = _e58;
+                uint _e60 = best_2.slot;
+                if (shadow_2 && (_e60 != NO_HIT)) {
+                    Candidate _e64 = best_2;
+                    return _e64;
                 }
             }
         } else {
-            uint left = frame_2.tlas_root + n_6.a;
-            uint right = left + 1u;
-            GpuNode l_3 = nodes[left];
-            GpuNode rr = nodes[right];
-            float _e77 = best_2.t;
-            float _e78 = slab(l_3.min, l_3.max, ray_8.origin, _e16, ray_8.tmin, _e77, F32_INF);
-            float _e84 = best_2.t;
-            float _e85 = slab(rr.min, rr.max, ray_8.origin, _e16, ray_8.tmin, _e84, F32_INF);
-            uint _e87 = F32_INF;
-            uint _e91 = F32_INF;
-            if ((_e78 < as_type<float>(_e87)) && (_e85 < as_type<float>(_e91))) {
-                near_1 = left;
-                far_1 = right;
-                if (_e85 < _e78) {
-                    near_1 = right;
-                    far_1 = left;
+            uint _e65 = child_1;
+            GpuNode n_7 = nodes[base_3 + _e65];
+            float _e71 = best_2.t;
+            metal::float2 _e72 = children_entry(n_7, origin_4, scale_3, ray_9, _e16, _e71, F32_INF);
+            float tl_1 = _e72.x;
+            float tr_1 = _e72.y;
+            uint _e76 = F32_INF;
+            uint _e80 = F32_INF;
+            if ((tl_1 < as_type<float>(_e76)) && (tr_1 < as_type<float>(_e80))) {
+                near_1 = n_7.a;
+                far_1 = n_7.b;
+                if (tr_1 < tl_1) {
+                    near_1 = n_7.b;
+                    far_1 = n_7.a;
                 }
-                uint _e98 = sp_2;
-                if (_e98 < TLAS_STACK) {
-                    uint _e101 = sp_2;
-                    uint _e102 = far_1;
-                    traversal_stack.inner[metal::min(_e101, 127u)] = _e102;
-                    uint _e107 = sp_2;
-                    sp_2 = _e107 + 1u;
+                uint _e91 = sp_2;
+                if (_e91 < TLAS_STACK) {
+                    uint _e94 = sp_2;
+                    uint _e95 = far_1;
+                    traversal_stack.inner[metal::min(_e94, 127u)] = _e95;
+                    uint _e100 = sp_2;
+                    sp_2 = _e100 + 1u;
                 }
-                uint _e110 = near_1;
-                node = _e110;
+                uint _e103 = near_1;
+                child_1 = _e103;
                 continue;
             }
-            uint _e112 = F32_INF;
-            if (_e78 < as_type<float>(_e112)) {
-                node = left;
+            uint _e105 = F32_INF;
+            if (tl_1 < as_type<float>(_e105)) {
+                child_1 = n_7.a;
                 continue;
             }
-            uint _e116 = F32_INF;
-            if (_e85 < as_type<float>(_e116)) {
-                node = right;
+            uint _e110 = F32_INF;
+            if (tr_1 < as_type<float>(_e110)) {
+                child_1 = n_7.b;
                 continue;
             }
         }
-        uint _e120 = sp_2;
-        metal::uint2 _e121 = pop(0u, _e120, traversal_stack);
-        if (_e121.x == NO_HIT) {
+        uint _e115 = sp_2;
+        metal::uint2 _e116 = pop(0u, _e115, traversal_stack);
+        if (_e116.x == NO_HIT) {
             break;
         }
-        node = _e121.x;
-        sp_2 = _e121.y;
+        child_1 = _e116.x;
+        sp_2 = _e116.y;
     }
-    Candidate _e127 = best_2;
-    return _e127;
+    Candidate _e122 = best_2;
+    return _e122;
 }
 
 SkyGradient load_SkyGradient(
@@ -1148,9 +1163,9 @@ SkyGradient load_SkyGradient(
 
 metal::float3 sky_gradient(
     SkyGradient b_5,
-    Ray ray_9
+    Ray ray_10
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_9.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_10.dir);
     float y_1 = _e3.y;
     if (y_1 < 0.0) {
         return metal::mix(b_5.horizon, b_5.ground, metal::float3(metal::min(-(y_1) * 4.0, 1.0)));
@@ -1161,17 +1176,17 @@ metal::float3 sky_gradient(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_5,
-    Ray ray_10,
+    Ray ray_11,
     device type_4 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_5, params, _buffer_sizes);
-    metal::float3 _e3 = sky_gradient(_e2, ray_10);
+    metal::float3 _e3 = sky_gradient(_e2, ray_11);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_11,
+    Ray ray_12,
     constant FrameUniforms& frame,
     device type_4 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1180,14 +1195,14 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_3 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_11, params, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_12, params, _buffer_sizes);
     return _e9;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_3,
     uint offset_6,
-    Ray ray_12,
+    Ray ray_13,
     float t_2,
     metal::float3 radiance
 ) {
@@ -1195,7 +1210,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_13,
+    Ray ray_14,
     float t_3,
     metal::float3 radiance_1,
     device type_8 const& instances,
@@ -1204,14 +1219,14 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_13.medium == 0u) {
+    if (ray_14.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_7 = instances[ray_13.medium - 1u];
+    GpuInstance inst_7 = instances[ray_14.medium - 1u];
     if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_13, t_3, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_14, t_3, radiance_1);
     return _e21;
 }
 
@@ -1239,16 +1254,17 @@ DirectionalLight load_DirectionalLight(
 
 metal::float3 offset_origin(
     metal::float3 p_4,
-    metal::float3 n_2,
+    metal::float3 n_3,
     constant FrameUniforms& frame,
     device type_9 const& nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     FrameUniforms _e3 = frame;
-    GpuNode root_1 = nodes[_e3.tlas_root];
-    metal::float3 a_7 = metal::max(metal::abs(p_4), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
+    GpuNode header_2 = nodes[_e3.tlas_root];
+    metal::float3 _e15 = node_point(header_2.min, header_2.max, metal::uint3(65535u));
+    metal::float3 a_7 = metal::max(metal::abs(p_4), metal::max(metal::abs(header_2.min), metal::abs(_e15)));
     float m_3 = metal::max(metal::max(a_7.x, a_7.y), a_7.z);
-    return p_4 + (n_2 * metal::float3(m_3 * (1.0 / 65536.0)));
+    return p_4 + (n_3 * metal::float3(m_3 * (1.0 / 65536.0)));
 }
 
 float shadow_query(
@@ -1268,17 +1284,17 @@ float shadow_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 n_3 = {};
-    n_3 = normal;
-    metal::float3 _e5 = n_3;
+    metal::float3 n_4 = {};
+    n_4 = normal;
+    metal::float3 _e5 = n_4;
     if (metal::dot(dir, _e5) < 0.0) {
-        metal::float3 _e9 = n_3;
-        n_3 = -(_e9);
+        metal::float3 _e9 = n_4;
+        n_4 = -(_e9);
     }
-    metal::float3 _e11 = n_3;
+    metal::float3 _e11 = n_4;
     metal::float3 _e12 = offset_origin(position, _e11, frame, nodes, _buffer_sizes);
-    Ray ray_22 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
-    Candidate _e23 = intersect_scene(ray_22, true, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    Ray ray_23 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
+    Candidate _e23 = intersect_scene(ray_23, true, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return (_e23.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
@@ -1489,7 +1505,7 @@ metal::float3 gltf_radiance(
     float metallic,
     float roughness,
     metal::float3 emissive,
-    Ray ray_14,
+    Ray ray_15,
     Hit hit_3,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1505,13 +1521,13 @@ metal::float3 gltf_radiance(
 ) {
     metal::float3 color = {};
     uint i_2 = {};
-    metal::float3 n_7 = metal::faceforward(hit_3.normal, ray_14.dir, hit_3.normal);
-    metal::float3 _e11 = normalize_vec3f(ray_14.dir);
+    metal::float3 n_8 = metal::faceforward(hit_3.normal, ray_15.dir, hit_3.normal);
+    metal::float3 _e11 = normalize_vec3f(ray_15.dir);
     metal::float3 v_2 = -(_e11);
     float metal_ = metal::saturate(metallic);
     float a2_ = metal::max(metal::pow(metal::saturate(roughness), 4.0), 0.000004);
     metal::float3 f0_ = metal::mix(metal::float3(0.04), c_3, metal::float3(metal_));
-    float ndv = metal::max(metal::dot(n_7, v_2), 0.0001);
+    float ndv = metal::max(metal::dot(n_8, v_2), 0.0001);
     color = emissive;
     uint _e28 = light_count_query(frame);
     i_2 = 0u;
@@ -1531,9 +1547,9 @@ metal::float3 gltf_radiance(
         }
         uint _e32 = i_2;
         LightSample _e35 = sample_light_query(_e32, hit_3.position, hit_3.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-        float ndl = metal::max(metal::dot(n_7, _e35.dir), 0.0);
+        float ndl = metal::max(metal::dot(n_8, _e35.dir), 0.0);
         metal::float3 _e42 = normalize_vec3f(_e35.dir + v_2);
-        float ndh = metal::max(metal::dot(n_7, _e42), 0.0);
+        float ndh = metal::max(metal::dot(n_8, _e42), 0.0);
         float d_3 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
         float ggx = (a2_ * INV_PI) / metal::max(d_3 * d_3, 0.00000001);
         float vis = 0.5 / metal::max((ndl * metal::sqrt(((ndv * ndv) * (1.0 - a2_)) + a2_)) + (ndv * metal::sqrt(((ndl * ndl) * (1.0 - a2_)) + a2_)), 0.00000001);
@@ -1547,7 +1563,7 @@ metal::float3 gltf_radiance(
 
 metal::float3 gltf_masked_shade(
     GltfMaskedMaterial m_1,
-    Ray ray_15,
+    Ray ray_16,
     Hit hit_4,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1563,7 +1579,7 @@ metal::float3 gltf_masked_shade(
 ) {
     metal::float4 _e7 = sample_texture(m_1.base_texture, hit_4.uv, params, texels, _buffer_sizes);
     metal::float3 c_9 = m_1.base_color.xyz * _e7.xyz;
-    metal::float3 _e13 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, m_1.emissive, ray_15, hit_4, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e13 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, m_1.emissive, ray_16, hit_4, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e13;
 }
 
@@ -1587,7 +1603,7 @@ GltfMaterial load_GltfMaterial(
 
 metal::float3 gltf_shade(
     GltfMaterial m_2,
-    Ray ray_16,
+    Ray ray_17,
     Hit hit_5,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1603,14 +1619,14 @@ metal::float3 gltf_shade(
 ) {
     metal::float4 _e7 = sample_texture(m_2.base_texture, hit_5.uv, params, texels, _buffer_sizes);
     metal::float3 c_10 = m_2.base_color.xyz * _e7.xyz;
-    metal::float3 _e13 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, m_2.emissive, ray_16, hit_5, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e13 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, m_2.emissive, ray_17, hit_5, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e13;
 }
 
 metal::float3 dispatch_closest_hit(
     uint type_id_5,
     uint offset_12,
-    Ray ray_17,
+    Ray ray_18,
     Hit hit_6,
     metal::float3 secondary,
     constant FrameUniforms& frame,
@@ -1628,12 +1644,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_5) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_12, params, _buffer_sizes);
-            metal::float3 _e5 = gltf_masked_shade(_e4, ray_17, hit_6, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e5 = gltf_masked_shade(_e4, ray_18, hit_6, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_12, params, _buffer_sizes);
-            metal::float3 _e7 = gltf_shade(_e6, ray_17, hit_6, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e7 = gltf_shade(_e6, ray_18, hit_6, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e7;
         }
         default: {
@@ -1644,7 +1660,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_18,
+    Ray ray_19,
     Candidate c_4,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1659,15 +1675,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_4.slot];
-    Hit _e6 = finish_hit(ray_18, c_4, instances, triangles, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_19, c_4, instances, triangles, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e11;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_13,
-    Ray ray_19,
+    Ray ray_20,
     Hit hit_7
 ) {
     return;
@@ -1680,14 +1696,14 @@ metal::float3 spawn_origin(
     device type_9 const& nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 n_4 = {};
-    n_4 = hit_8.geometric_normal;
-    metal::float3 _e4 = n_4;
+    metal::float3 n_5 = {};
+    n_5 = hit_8.geometric_normal;
+    metal::float3 _e4 = n_5;
     if (metal::dot(dir_1, _e4) < 0.0) {
-        metal::float3 _e8 = n_4;
-        n_4 = -(_e8);
+        metal::float3 _e8 = n_5;
+        n_5 = -(_e8);
     }
-    metal::float3 _e11 = n_4;
+    metal::float3 _e11 = n_5;
     metal::float3 _e12 = offset_origin(hit_8.position, _e11, frame, nodes, _buffer_sizes);
     return _e12;
 }
@@ -1711,7 +1727,7 @@ metal::float3 trace(
 ) {
     type_17 stack = {};
     uint depth = {};
-    Ray ray_20 = {};
+    Ray ray_21 = {};
     metal::float3 value = {};
     bool have_value = {};
     bool pushed = {};
@@ -1732,7 +1748,7 @@ metal::float3 trace(
     }
     stack = type_17 {};
     depth = 0u;
-    ray_20 = camera_ray;
+    ray_21 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     uint2 loop_bound_5 = uint2(4294967295u);
@@ -1741,32 +1757,32 @@ metal::float3 trace(
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_20;
+            Ray _e28 = ray_21;
             Candidate _e30 = intersect_scene(_e28, false, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             if (_e30.slot == NO_HIT) {
-                Ray _e34 = ray_20;
+                Ray _e34 = ray_21;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_20;
+                Ray _e38 = ray_21;
                 metal::float3 _e39 = miss(_e38, frame, params, _buffer_sizes);
                 metal::float3 _e40 = through_medium(_e34, as_type<float>(_e36), _e39, instances, _buffer_sizes);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = instances[_e30.slot];
-                Ray _e46 = ray_20;
+                Ray _e46 = ray_21;
                 Hit _e47 = finish_hit(_e46, _e30, instances, triangles, attributes, _buffer_sizes);
                 pushed = false;
-                uint _e56 = ray_20.depth;
+                uint _e56 = ray_21.depth;
                 uint _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_20;
+                    Ray _e68 = ray_21;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_8 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
-                    if (n_8 > 0u) {
-                        Ray _e77 = ray_20;
-                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_8, 0u};
+                    uint n_9 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
+                    if (n_9 > 0u) {
+                        Ray _e77 = ray_21;
+                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_9, 0u};
                         i_3 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u);
                         bool loop_init_3 = true;
@@ -1779,7 +1795,7 @@ metal::float3 trace(
                             }
                             loop_init_3 = false;
                             uint _e88 = i_3;
-                            if (_e88 >= n_8) {
+                            if (_e88 >= n_9) {
                                 break;
                             }
                             uint _e91 = i_3;
@@ -1801,9 +1817,9 @@ metal::float3 trace(
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_20;
+                    Ray _e124 = ray_21;
                     metal::float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-                    Ray _e128 = ray_20;
+                    Ray _e128 = ray_21;
                     metal::float3 _e130 = through_medium(_e128, _e30.t, _e127, instances, _buffer_sizes);
                     value = _e130;
                     have_value = true;
@@ -1820,9 +1836,9 @@ metal::float3 trace(
             uint _e137 = depth;
             uint top = _e137 - 1u;
             uint _e144 = stack.inner[metal::min(top, 3u)].next;
-            uint child_1 = _e144 - 1u;
+            uint child_2 = _e144 - 1u;
             metal::float3 _e151 = stack.inner[metal::min(top, 3u)].sum;
-            metal::float3 _e159 = stack.inner[metal::min(top, 3u)].weights.inner[metal::min(child_1, 0u)];
+            metal::float3 _e159 = stack.inner[metal::min(top, 3u)].weights.inner[metal::min(child_2, 0u)];
             metal::float3 _e160 = value;
             stack.inner[metal::min(top, 3u)].sum = _e151 + (_e159 * _e160);
             have_value = false;
@@ -1841,7 +1857,7 @@ metal::float3 trace(
             metal::float3 _e209 = spawn_origin(hit_10, dir_5, frame, nodes, _buffer_sizes);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_20 = Ray {_e209, 0.0, dir_5, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
+            ray_21 = Ray {_e209, 0.0, dir_5, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
         } else {
             uint _e224 = stack.inner[metal::min(top_1, 3u)].slot;
             GpuInstance inst_10 = instances[_e224];
@@ -1897,7 +1913,7 @@ void render_pixel(
     metal::float3 sum = {};
     uint bad = {};
     uint s = {};
-    Ray ray_21 = {};
+    Ray ray_22 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
     sum = metal::float3(0.0);
@@ -1922,13 +1938,13 @@ void render_pixel(
         uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
-        ray_21 = _e23;
-        ray_21.depth = 0u;
-        ray_21.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_21.origin;
+        ray_22 = _e23;
+        ray_22.depth = 0u;
+        ray_22.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_22.origin;
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, _buffer_sizes);
-        ray_21.medium = _e33;
-        Ray _e34 = ray_21;
+        ray_22.medium = _e33;
+        Ray _e34 = ray_22;
         metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {

@@ -168,14 +168,13 @@ static const uint RAY_CAMERA = 0u;
 static const uint NO_HIT = 4294967295u;
 static const bool HAS_MEDIA = false;
 static const uint MESH_GEOMETRY = 4294967295u;
-static const uint MESH_LEAF_BIT = 2147483648u;
-static const uint MESH_COUNT_SHIFT = 27u;
-static const uint MESH_COUNT_MASK = 15u;
-static const uint MESH_FIRST_MASK = 134217727u;
+static const uint NODE_LEAF_BIT = 2147483648u;
+static const uint NODE_COUNT_SHIFT = 27u;
+static const uint NODE_COUNT_MASK = 15u;
+static const uint NODE_FIRST_MASK = 134217727u;
 static const uint BLAS_STACK = 64u;
 static const uint TLAS_STACK = 64u;
 static const bool HAS_SECONDARY_RAYS = false;
-static const uint LEAF_BIT = 2147483648u;
 static const bool HAS_BACKGROUND = true;
 static const uint FLAG_MEDIUM = 4u;
 static const uint RAY_SHADOW = 2u;
@@ -365,16 +364,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
     float aspect = (size.x / size.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_18 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_18;
+    const Ray ray_19 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_19;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
-    const Ray ray_19 = _e4;
-    return ray_19;
+    const Ray ray_20 = _e4;
+    return ray_20;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -403,8 +402,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_20 = _e25;
-    return ray_20;
+    const Ray ray_21 = _e25;
+    return ray_21;
 }
 
 float3 safe_inverse(float3 d)
@@ -475,17 +474,17 @@ bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
     return true;
 }
 
-uint3 mesh_box_lo(uint3 p)
+uint3 node_box_lo(uint3 p)
 {
     return uint3((p.x & 65535u), (p.x >> 16u), (p.y & 65535u));
 }
 
-float3 mesh_point(float3 origin, float3 scale, uint3 q)
+float3 node_point(float3 origin, float3 scale, uint3 q)
 {
     return (origin + (float3(q) * scale));
 }
 
-uint3 mesh_box_hi(uint3 p_1)
+uint3 node_box_hi(uint3 p_1)
 {
     return uint3((p_1.y >> 16u), (p_1.z & 65535u), (p_1.z >> 16u));
 }
@@ -503,6 +502,23 @@ float slab(float3 lo, float3 hi, float3 origin_1, float3 inv_dir, float tmin_1, 
     }
     uint _e30 = F32_INF;
     return asfloat(_e30);
+}
+
+float2 children_entry(GpuNode n, float3 origin_2, float3 scale_1, Ray ray_3, float3 inv, float tmax_3)
+{
+    uint3 lq = asuint(n.min_);
+    uint3 rq = asuint(n.max_);
+    const uint3 _e10 = node_box_lo(lq);
+    const float3 _e11 = node_point(origin_2, scale_1, _e10);
+    const uint3 _e12 = node_box_hi(lq);
+    const float3 _e13 = node_point(origin_2, scale_1, _e12);
+    const float _e16 = slab(_e11, _e13, ray_3.origin, inv, ray_3.tmin, tmax_3);
+    const uint3 _e17 = node_box_lo(rq);
+    const float3 _e18 = node_point(origin_2, scale_1, _e17);
+    const uint3 _e19 = node_box_hi(rq);
+    const float3 _e20 = node_point(origin_2, scale_1, _e19);
+    const float _e23 = slab(_e18, _e20, ray_3.origin, inv, ray_3.tmin, tmax_3);
+    return float2(_e16, _e23);
 }
 
 uint2 pop(uint base, uint sp)
@@ -523,7 +539,7 @@ GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
     return ret;
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_3, Candidate best_in, bool shadow)
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow)
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
@@ -533,12 +549,12 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint far = (uint)0;
 
     best = best_in;
-    const float3 _e8 = safe_inverse(ray_3.dir);
-    const TriangleRay _e9 = prepare_triangle_ray(ray_3);
+    const float3 _e8 = safe_inverse(ray_4.dir);
+    const TriangleRay _e9 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header = ConstructGpuNode(asfloat(nodes.Load3(base_1*32+0)), asuint(nodes.Load(base_1*32+12)), asfloat(nodes.Load3(base_1*32+16)), asuint(nodes.Load(base_1*32+28)));
-    float3 origin_2 = header.min_;
-    float3 scale_1 = header.max_;
+    float3 origin_3 = header.min_;
+    float3 scale_2 = header.max_;
     sp_1 = 0u;
     child = header.a;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
@@ -546,11 +562,11 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e20 = child;
-        if (((_e20 & MESH_LEAF_BIT) != 0u)) {
+        if (((_e20 & NODE_LEAF_BIT) != 0u)) {
             uint _e25 = child;
-            uint count = ((_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+            uint count = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
             uint _e32 = child;
-            uint first = (_e32 & MESH_FIRST_MASK);
+            uint first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
             bool loop_init = true;
@@ -569,7 +585,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e41 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e41);
                 float _e45 = best.t;
-                const float3 _e46 = hit_triangle(_e9, prim, ray_3.tmin, _e45);
+                const float3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < asfloat(_e49))) {
                     Candidate c_5 = ConstructCandidate(_e46.x, slot_1, prim, _e46.yz, (0.0).xxx);
@@ -586,63 +602,53 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             }
         } else {
             uint _e62 = child;
-            GpuNode n_5 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e62)*32+0)), asuint(nodes.Load((base_1 + _e62)*32+12)), asfloat(nodes.Load3((base_1 + _e62)*32+16)), asuint(nodes.Load((base_1 + _e62)*32+28)));
-            uint3 lq = asuint(n_5.min_);
-            uint3 rq = asuint(n_5.max_);
-            const uint3 _e71 = mesh_box_lo(lq);
-            const float3 _e72 = mesh_point(origin_2, scale_1, _e71);
-            const uint3 _e73 = mesh_box_hi(lq);
-            const float3 _e74 = mesh_point(origin_2, scale_1, _e73);
-            float _e78 = best.t;
-            const float _e79 = slab(_e72, _e74, ray_3.origin, _e8, ray_3.tmin, _e78);
-            const uint3 _e80 = mesh_box_lo(rq);
-            const float3 _e81 = mesh_point(origin_2, scale_1, _e80);
-            const uint3 _e82 = mesh_box_hi(rq);
-            const float3 _e83 = mesh_point(origin_2, scale_1, _e82);
-            float _e87 = best.t;
-            const float _e88 = slab(_e81, _e83, ray_3.origin, _e8, ray_3.tmin, _e87);
-            uint _e90 = F32_INF;
-            uint _e94 = F32_INF;
-            if (((_e79 < asfloat(_e90)) && (_e88 < asfloat(_e94)))) {
-                near = n_5.a;
-                far = n_5.b;
-                if (((_e88 < _e79) != shadow)) {
-                    near = n_5.b;
-                    far = n_5.a;
+            GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e62)*32+0)), asuint(nodes.Load((base_1 + _e62)*32+12)), asfloat(nodes.Load3((base_1 + _e62)*32+16)), asuint(nodes.Load((base_1 + _e62)*32+28)));
+            float _e68 = best.t;
+            const float2 _e69 = children_entry(n_6, origin_3, scale_2, ray_4, _e8, _e68);
+            float tl = _e69.x;
+            float tr = _e69.y;
+            uint _e73 = F32_INF;
+            uint _e77 = F32_INF;
+            if (((tl < asfloat(_e73)) && (tr < asfloat(_e77)))) {
+                near = n_6.a;
+                far = n_6.b;
+                if (((tr < tl) != shadow)) {
+                    near = n_6.b;
+                    far = n_6.a;
                 }
-                uint _e106 = sp_1;
-                if ((_e106 < BLAS_STACK)) {
-                    uint _e110 = sp_1;
-                    uint _e112 = far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e110), 127u)), 127u)] = _e112;
-                    uint _e117 = sp_1;
-                    sp_1 = (_e117 + 1u);
+                uint _e89 = sp_1;
+                if ((_e89 < BLAS_STACK)) {
+                    uint _e93 = sp_1;
+                    uint _e95 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e93), 127u)), 127u)] = _e95;
+                    uint _e100 = sp_1;
+                    sp_1 = (_e100 + 1u);
                 }
-                uint _e120 = near;
-                child = _e120;
+                uint _e103 = near;
+                child = _e103;
                 continue;
             }
-            uint _e122 = F32_INF;
-            if ((_e79 < asfloat(_e122))) {
-                child = n_5.a;
+            uint _e105 = F32_INF;
+            if ((tl < asfloat(_e105))) {
+                child = n_6.a;
                 continue;
             }
-            uint _e127 = F32_INF;
-            if ((_e88 < asfloat(_e127))) {
-                child = n_5.b;
+            uint _e110 = F32_INF;
+            if ((tr < asfloat(_e110))) {
+                child = n_6.b;
                 continue;
             }
         }
-        uint _e132 = sp_1;
-        const uint2 _e133 = pop(TLAS_STACK, _e132);
-        if ((_e133.x == NO_HIT)) {
+        uint _e115 = sp_1;
+        const uint2 _e116 = pop(TLAS_STACK, _e115);
+        if ((_e116.x == NO_HIT)) {
             break;
         }
-        child = _e133.x;
-        sp_1 = _e133.y;
+        child = _e116.x;
+        sp_1 = _e116.y;
     }
-    Candidate _e139 = best;
-    const Candidate candidate_2 = _e139;
+    Candidate _e122 = best;
+    const Candidate candidate_2 = _e122;
     return candidate_2;
 }
 
@@ -665,17 +671,17 @@ GpuInstance ConstructGpuInstance(float4 arg0, float4 arg1, float4 arg2, float4 a
     return ret;
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_4, Candidate best_1, bool shadow_1)
+Candidate intersect_object(uint slot_2, Ray ray_5, Candidate best_1, bool shadow_1)
 {
     Ray r_2 = (Ray)0;
 
     GpuInstance inst_5 = ConstructGpuInstance(asfloat(instances.Load4(slot_2*128+0)), asfloat(instances.Load4(slot_2*128+16)), asfloat(instances.Load4(slot_2*128+32)), asfloat(instances.Load4(slot_2*128+48)), asfloat(instances.Load4(slot_2*128+64)), asfloat(instances.Load4(slot_2*128+80)), asuint(instances.Load(slot_2*128+96)), asuint(instances.Load(slot_2*128+100)), asuint(instances.Load(slot_2*128+104)), asuint(instances.Load(slot_2*128+108)), asuint(instances.Load(slot_2*128+112)), asuint(instances.Load(slot_2*128+116)), asuint(instances.Load(slot_2*128+120)), asuint(instances.Load(slot_2*128+124)));
-    const Ray _e7 = to_object(inst_5, ray_4);
+    const Ray _e7 = to_object(inst_5, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_5.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        const Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_4, _e14, best_1, shadow_1);
+        const Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_5, _e14, best_1, shadow_1);
         const Candidate candidate_3 = _e15;
         return candidate_3;
     }
@@ -708,27 +714,27 @@ float3 point_to_world(GpuInstance inst_3, float3 p_2)
 
 float3 decode_octahedral(uint bits)
 {
-    float3 n = (float3)0;
+    float3 n_1 = (float3)0;
 
     float2 e = (float2(int2(bits << 16, bits) >> 16) / 32767.0);
-    n = float3(e.x, e.y, ((1.0 - abs(e.x)) - abs(e.y)));
-    float _e14 = n.z;
+    n_1 = float3(e.x, e.y, ((1.0 - abs(e.x)) - abs(e.y)));
+    float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
-        float3 _e21 = n;
+        float3 _e21 = n_1;
         float2 s_3 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
-        float3 _e29 = n;
+        float3 _e29 = n_1;
         float2 xy = (((1.0).xx - abs(_e29.yx)) * s_3);
-        float _e37 = n.z;
-        n = float3(xy.x, xy.y, _e37);
+        float _e37 = n_1.z;
+        n_1 = float3(xy.x, xy.y, _e37);
     }
-    float3 _e39 = n;
+    float3 _e39 = n_1;
     const float3 _e40 = normalize_vec3f(_e39);
     return _e40;
 }
 
-float3 normal_to_world(GpuInstance inst_4, float3 n_1)
+float3 normal_to_world(GpuInstance inst_4, float3 n_2)
 {
-    float3 w_1 = (((inst_4.world_to_object_0_.xyz * (n_1.x).xxx) + (inst_4.world_to_object_1_.xyz * (n_1.y).xxx)) + (inst_4.world_to_object_2_.xyz * (n_1.z).xxx));
+    float3 w_1 = (((inst_4.world_to_object_0_.xyz * (n_2.x).xxx) + (inst_4.world_to_object_1_.xyz * (n_2.y).xxx)) + (inst_4.world_to_object_2_.xyz * (n_2.z).xxx));
     const float3 _e19 = normalize_vec3f(w_1);
     return _e19;
 }
@@ -746,14 +752,14 @@ Hit ConstructHit(float3 arg0, float arg1, float3 arg2, float3 arg3, float2 arg4,
     return ret;
 }
 
-Hit finish_hit(Ray ray_5, Candidate c_1)
+Hit finish_hit(Ray ray_6, Candidate c_1)
 {
     Hit hit = (Hit)0;
     float3 n_geo = (float3)0;
     float3 n_shade = (float3)0;
 
     GpuInstance inst_6 = ConstructGpuInstance(asfloat(instances.Load4(c_1.slot*128+0)), asfloat(instances.Load4(c_1.slot*128+16)), asfloat(instances.Load4(c_1.slot*128+32)), asfloat(instances.Load4(c_1.slot*128+48)), asfloat(instances.Load4(c_1.slot*128+64)), asfloat(instances.Load4(c_1.slot*128+80)), asuint(instances.Load(c_1.slot*128+96)), asuint(instances.Load(c_1.slot*128+100)), asuint(instances.Load(c_1.slot*128+104)), asuint(instances.Load(c_1.slot*128+108)), asuint(instances.Load(c_1.slot*128+112)), asuint(instances.Load(c_1.slot*128+116)), asuint(instances.Load(c_1.slot*128+120)), asuint(instances.Load(c_1.slot*128+124)));
-    hit = ConstructHit((ray_5.origin + (ray_5.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_6.object, c_1.primitive);
+    hit = ConstructHit((ray_6.origin + (ray_6.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_6.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
@@ -792,7 +798,7 @@ Hit finish_hit(Ray ray_5, Candidate c_1)
     const float3 _e131 = normal_to_world(inst_6, _e130);
     hit.normal = _e131;
     float3 _e135 = hit.geometric_normal;
-    hit.front_face = (dot(ray_5.dir, _e135) < 0.0);
+    hit.front_face = (dot(ray_6.dir, _e135) < 0.0);
     Hit _e139 = hit;
     const Hit hit_6 = _e139;
     return hit_6;
@@ -850,17 +856,17 @@ uint medium_at(float3 p_3, uint exclude)
     return _e60;
 }
 
-Candidate intersect_scene(Ray ray_6, bool shadow_2)
+Candidate intersect_scene(Ray ray_7, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
-    uint node = (uint)0;
+    uint child_1 = (uint)0;
     uint near_1 = (uint)0;
     uint far_1 = (uint)0;
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_6.tmax);
+    const Candidate _e7 = no_candidate(ray_7.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = frame;
     if ((frame_2.instance_count == 0u)) {
@@ -868,88 +874,90 @@ Candidate intersect_scene(Ray ray_6, bool shadow_2)
         const Candidate candidate_5 = _e14;
         return candidate_5;
     }
-    const float3 _e16 = safe_inverse(ray_6.dir);
-    sp_2 = 0u;
-    node = frame_2.tlas_root;
-    uint _e21 = node;
-    GpuNode root = ConstructGpuNode(asfloat(nodes.Load3(_e21*32+0)), asuint(nodes.Load(_e21*32+12)), asfloat(nodes.Load3(_e21*32+16)), asuint(nodes.Load(_e21*32+28)));
-    float _e30 = best_2.t;
-    const float _e31 = slab(root.min_, root.max_, ray_6.origin, _e16, ray_6.tmin, _e30);
-    uint _e33 = F32_INF;
-    if ((_e31 == asfloat(_e33))) {
-        Candidate _e36 = best_2;
-        const Candidate candidate_6 = _e36;
+    const float3 _e16 = safe_inverse(ray_7.dir);
+    uint base_2 = frame_2.tlas_root;
+    GpuNode header_1 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
+    float3 origin_4 = header_1.min_;
+    float3 scale_3 = header_1.max_;
+    const float3 _e25 = node_point(origin_4, scale_3, (65535u).xxx);
+    float _e29 = best_2.t;
+    const float _e30 = slab(origin_4, _e25, ray_7.origin, _e16, ray_7.tmin, _e29);
+    uint _e32 = F32_INF;
+    if ((_e30 == asfloat(_e32))) {
+        Candidate _e35 = best_2;
+        const Candidate candidate_6 = _e35;
         return candidate_6;
     }
+    sp_2 = 0u;
+    child_1 = header_1.a;
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e37 = node;
-        GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3(_e37*32+0)), asuint(nodes.Load(_e37*32+12)), asfloat(nodes.Load3(_e37*32+16)), asuint(nodes.Load(_e37*32+28)));
-        if (((n_6.b & LEAF_BIT) != 0u)) {
-            if (((n_6.b & ~(LEAF_BIT)) != 0u)) {
-                Candidate _e53 = best_2;
-                const Candidate _e54 = intersect_object(n_6.a, ray_6, _e53, shadow_2);
-                best_2 = _e54;
-                uint _e56 = best_2.slot;
-                if ((shadow_2 && (_e56 != NO_HIT))) {
-                    Candidate _e60 = best_2;
-                    const Candidate candidate_7 = _e60;
+        uint _e40 = child_1;
+        if (((_e40 & NODE_LEAF_BIT) != 0u)) {
+            uint _e45 = child_1;
+            if ((((_e45 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
+                uint _e54 = child_1;
+                Candidate _e57 = best_2;
+                const Candidate _e58 = intersect_object((_e54 & NODE_FIRST_MASK), ray_7, _e57, shadow_2);
+                best_2 = _e58;
+                uint _e60 = best_2.slot;
+                if ((shadow_2 && (_e60 != NO_HIT))) {
+                    Candidate _e64 = best_2;
+                    const Candidate candidate_7 = _e64;
                     return candidate_7;
                 }
             }
         } else {
-            uint left = (frame_2.tlas_root + n_6.a);
-            uint right = (left + 1u);
-            GpuNode l_1 = ConstructGpuNode(asfloat(nodes.Load3(left*32+0)), asuint(nodes.Load(left*32+12)), asfloat(nodes.Load3(left*32+16)), asuint(nodes.Load(left*32+28)));
-            GpuNode rr = ConstructGpuNode(asfloat(nodes.Load3(right*32+0)), asuint(nodes.Load(right*32+12)), asfloat(nodes.Load3(right*32+16)), asuint(nodes.Load(right*32+28)));
-            float _e77 = best_2.t;
-            const float _e78 = slab(l_1.min_, l_1.max_, ray_6.origin, _e16, ray_6.tmin, _e77);
-            float _e84 = best_2.t;
-            const float _e85 = slab(rr.min_, rr.max_, ray_6.origin, _e16, ray_6.tmin, _e84);
-            uint _e87 = F32_INF;
-            uint _e91 = F32_INF;
-            if (((_e78 < asfloat(_e87)) && (_e85 < asfloat(_e91)))) {
-                near_1 = left;
-                far_1 = right;
-                if ((_e85 < _e78)) {
-                    near_1 = right;
-                    far_1 = left;
+            uint _e65 = child_1;
+            GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e65)*32+0)), asuint(nodes.Load((base_2 + _e65)*32+12)), asfloat(nodes.Load3((base_2 + _e65)*32+16)), asuint(nodes.Load((base_2 + _e65)*32+28)));
+            float _e71 = best_2.t;
+            const float2 _e72 = children_entry(n_7, origin_4, scale_3, ray_7, _e16, _e71);
+            float tl_1 = _e72.x;
+            float tr_1 = _e72.y;
+            uint _e76 = F32_INF;
+            uint _e80 = F32_INF;
+            if (((tl_1 < asfloat(_e76)) && (tr_1 < asfloat(_e80)))) {
+                near_1 = n_7.a;
+                far_1 = n_7.b;
+                if ((tr_1 < tl_1)) {
+                    near_1 = n_7.b;
+                    far_1 = n_7.a;
                 }
-                uint _e98 = sp_2;
-                if ((_e98 < TLAS_STACK)) {
-                    uint _e101 = sp_2;
-                    uint _e102 = far_1;
-                    traversal_stack[min(uint(min(_e101, 127u)), 127u)] = _e102;
-                    uint _e107 = sp_2;
-                    sp_2 = (_e107 + 1u);
+                uint _e91 = sp_2;
+                if ((_e91 < TLAS_STACK)) {
+                    uint _e94 = sp_2;
+                    uint _e95 = far_1;
+                    traversal_stack[min(uint(min(_e94, 127u)), 127u)] = _e95;
+                    uint _e100 = sp_2;
+                    sp_2 = (_e100 + 1u);
                 }
-                uint _e110 = near_1;
-                node = _e110;
+                uint _e103 = near_1;
+                child_1 = _e103;
                 continue;
             }
-            uint _e112 = F32_INF;
-            if ((_e78 < asfloat(_e112))) {
-                node = left;
+            uint _e105 = F32_INF;
+            if ((tl_1 < asfloat(_e105))) {
+                child_1 = n_7.a;
                 continue;
             }
-            uint _e116 = F32_INF;
-            if ((_e85 < asfloat(_e116))) {
-                node = right;
+            uint _e110 = F32_INF;
+            if ((tr_1 < asfloat(_e110))) {
+                child_1 = n_7.b;
                 continue;
             }
         }
-        uint _e120 = sp_2;
-        const uint2 _e121 = pop(0u, _e120);
-        if ((_e121.x == NO_HIT)) {
+        uint _e115 = sp_2;
+        const uint2 _e116 = pop(0u, _e115);
+        if ((_e116.x == NO_HIT)) {
             break;
         }
-        node = _e121.x;
-        sp_2 = _e121.y;
+        child_1 = _e116.x;
+        sp_2 = _e116.y;
     }
-    Candidate _e127 = best_2;
-    const Candidate candidate_8 = _e127;
+    Candidate _e122 = best_2;
+    const Candidate candidate_8 = _e122;
     return candidate_8;
 }
 
@@ -968,25 +976,25 @@ ConstantBackground load_ConstantBackground(uint offset_2)
     return constantbackground;
 }
 
-float3 constant_background(ConstantBackground b_4, Ray ray_7)
+float3 constant_background(ConstantBackground b_4, Ray ray_8)
 {
     return b_4.color;
 }
 
-float3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_8)
+float3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_9)
 {
     const ConstantBackground _e2 = load_ConstantBackground(offset_3);
-    const float3 _e3 = constant_background(_e2, ray_8);
+    const float3 _e3 = constant_background(_e2, ray_9);
     return _e3;
 }
 
-float3 miss(Ray ray_9)
+float3 miss(Ray ray_10)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
     FrameUniforms frame_3 = frame;
-    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_9);
+    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_10);
     return _e9;
 }
 
@@ -994,24 +1002,24 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_medium(uint type_id_2, uint offset_4, Ray ray_10, float t, float3 radiance)
+float3 dispatch_medium(uint type_id_2, uint offset_4, Ray ray_11, float t, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_11, float t_1, float3 radiance_1)
+float3 through_medium(Ray ray_12, float t_1, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_11.medium == 0u)) {
+    if ((ray_12.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4((ray_11.medium - 1u)*128+0)), asfloat(instances.Load4((ray_11.medium - 1u)*128+16)), asfloat(instances.Load4((ray_11.medium - 1u)*128+32)), asfloat(instances.Load4((ray_11.medium - 1u)*128+48)), asfloat(instances.Load4((ray_11.medium - 1u)*128+64)), asfloat(instances.Load4((ray_11.medium - 1u)*128+80)), asuint(instances.Load((ray_11.medium - 1u)*128+96)), asuint(instances.Load((ray_11.medium - 1u)*128+100)), asuint(instances.Load((ray_11.medium - 1u)*128+104)), asuint(instances.Load((ray_11.medium - 1u)*128+108)), asuint(instances.Load((ray_11.medium - 1u)*128+112)), asuint(instances.Load((ray_11.medium - 1u)*128+116)), asuint(instances.Load((ray_11.medium - 1u)*128+120)), asuint(instances.Load((ray_11.medium - 1u)*128+124)));
+    GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4((ray_12.medium - 1u)*128+0)), asfloat(instances.Load4((ray_12.medium - 1u)*128+16)), asfloat(instances.Load4((ray_12.medium - 1u)*128+32)), asfloat(instances.Load4((ray_12.medium - 1u)*128+48)), asfloat(instances.Load4((ray_12.medium - 1u)*128+64)), asfloat(instances.Load4((ray_12.medium - 1u)*128+80)), asuint(instances.Load((ray_12.medium - 1u)*128+96)), asuint(instances.Load((ray_12.medium - 1u)*128+100)), asuint(instances.Load((ray_12.medium - 1u)*128+104)), asuint(instances.Load((ray_12.medium - 1u)*128+108)), asuint(instances.Load((ray_12.medium - 1u)*128+112)), asuint(instances.Load((ray_12.medium - 1u)*128+116)), asuint(instances.Load((ray_12.medium - 1u)*128+120)), asuint(instances.Load((ray_12.medium - 1u)*128+124)));
     if (((inst_7.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_11, t_1, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_12, t_1, radiance_1);
     return _e21;
 }
 
@@ -1061,29 +1069,30 @@ PointLight load_PointLight(uint offset_6)
     return pointlight;
 }
 
-float3 offset_origin(float3 p_4, float3 n_2)
+float3 offset_origin(float3 p_4, float3 n_3)
 {
     FrameUniforms _e3 = frame;
-    GpuNode root_1 = ConstructGpuNode(asfloat(nodes.Load3(_e3.tlas_root*32+0)), asuint(nodes.Load(_e3.tlas_root*32+12)), asfloat(nodes.Load3(_e3.tlas_root*32+16)), asuint(nodes.Load(_e3.tlas_root*32+28)));
-    float3 a_5 = max(abs(p_4), max(abs(root_1.min_), abs(root_1.max_)));
+    GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(_e3.tlas_root*32+0)), asuint(nodes.Load(_e3.tlas_root*32+12)), asfloat(nodes.Load3(_e3.tlas_root*32+16)), asuint(nodes.Load(_e3.tlas_root*32+28)));
+    const float3 _e15 = node_point(header_2.min_, header_2.max_, (65535u).xxx);
+    float3 a_5 = max(abs(p_4), max(abs(header_2.min_), abs(_e15)));
     float m_1 = max(max(a_5.x, a_5.y), a_5.z);
-    return (p_4 + (n_2 * ((m_1 * (1.0 / 65536.0))).xxx));
+    return (p_4 + (n_3 * ((m_1 * (1.0 / 65536.0))).xxx));
 }
 
 float shadow_query(float3 position, float3 normal, float3 dir, float dist)
 {
-    float3 n_3 = (float3)0;
+    float3 n_4 = (float3)0;
 
-    n_3 = normal;
-    float3 _e5 = n_3;
+    n_4 = normal;
+    float3 _e5 = n_4;
     if ((dot(dir, _e5) < 0.0)) {
-        float3 _e9 = n_3;
-        n_3 = -(_e9);
+        float3 _e9 = n_4;
+        n_4 = -(_e9);
     }
-    float3 _e11 = n_3;
+    float3 _e11 = n_4;
     const float3 _e12 = offset_origin(position, _e11);
-    Ray ray_21 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    const Candidate _e23 = intersect_scene(ray_21, true);
+    Ray ray_22 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    const Candidate _e23 = intersect_scene(ray_22, true);
     return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
@@ -1136,12 +1145,12 @@ LightSample sample_light_query(uint i_1, float3 position_3, float3 normal_3)
     return lightsample_3;
 }
 
-float3 lambert_shade(Lambert m, Ray ray_12, Hit hit_1)
+float3 lambert_shade(Lambert m, Ray ray_13, Hit hit_1)
 {
     float3 color = (float3)0;
     uint i_2 = (uint)0;
 
-    float3 n_7 = faceforward(hit_1.normal, ray_12.dir, hit_1.normal);
+    float3 n_8 = faceforward(hit_1.normal, ray_13.dir, hit_1.normal);
     color = (0.0).xxx;
     const uint _e11 = light_count_query();
     i_2 = 0u;
@@ -1162,43 +1171,43 @@ float3 lambert_shade(Lambert m, Ray ray_12, Hit hit_1)
         uint _e15 = i_2;
         const LightSample _e18 = sample_light_query(_e15, hit_1.position, hit_1.geometric_normal);
         float3 _e19 = color;
-        color = (_e19 + (((m.albedo * (INV_PI).xxx) * _e18.radiance) * (max(dot(n_7, _e18.dir), 0.0)).xxx));
+        color = (_e19 + (((m.albedo * (INV_PI).xxx) * _e18.radiance) * (max(dot(n_8, _e18.dir), 0.0)).xxx));
     }
     float3 _e36 = color;
     return _e36;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_13, Hit hit_2, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_14, Hit hit_2, float3 secondary)
 {
     const Lambert _e3 = load_Lambert(offset_8);
-    const float3 _e4 = lambert_shade(_e3, ray_13, hit_2);
+    const float3 _e4 = lambert_shade(_e3, ray_14, hit_2);
     return _e4;
 }
 
-float3 shade_direct(Ray ray_14, Candidate c_2)
+float3 shade_direct(Ray ray_15, Candidate c_2)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_14, c_2);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_15, c_2);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, (0.0).xxx);
     return _e11;
 }
 
-void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_15, Hit hit_3)
+void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_16, Hit hit_3)
 {
     return;
 }
 
 float3 spawn_origin(Hit hit_4, float3 dir_1)
 {
-    float3 n_4 = (float3)0;
+    float3 n_5 = (float3)0;
 
-    n_4 = hit_4.geometric_normal;
-    float3 _e4 = n_4;
+    n_5 = hit_4.geometric_normal;
+    float3 _e4 = n_5;
     if ((dot(dir_1, _e4) < 0.0)) {
-        float3 _e8 = n_4;
-        n_4 = -(_e8);
+        float3 _e8 = n_5;
+        n_5 = -(_e8);
     }
-    float3 _e11 = n_4;
+    float3 _e11 = n_5;
     const float3 _e12 = offset_origin(hit_4.position, _e11);
     return _e12;
 }
@@ -1230,7 +1239,7 @@ float3 trace(Ray camera_ray)
 {
     Frame stack[4] = (Frame[4])0;
     uint depth = (uint)0;
-    Ray ray_16 = (Ray)0;
+    Ray ray_17 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     bool pushed = (bool)0;
@@ -1252,7 +1261,7 @@ float3 trace(Ray camera_ray)
     }
     stack = ZeroValuearray4_Frame_();
     depth = 0u;
-    ray_16 = camera_ray;
+    ray_17 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
@@ -1261,32 +1270,32 @@ float3 trace(Ray camera_ray)
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_16;
+            Ray _e28 = ray_17;
             const Candidate _e30 = intersect_scene(_e28, false);
             if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_16;
+                Ray _e34 = ray_17;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_16;
+                Ray _e38 = ray_17;
                 const float3 _e39 = miss(_e38);
                 const float3 _e40 = through_medium(_e34, asfloat(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(_e30.slot*128+0)), asfloat(instances.Load4(_e30.slot*128+16)), asfloat(instances.Load4(_e30.slot*128+32)), asfloat(instances.Load4(_e30.slot*128+48)), asfloat(instances.Load4(_e30.slot*128+64)), asfloat(instances.Load4(_e30.slot*128+80)), asuint(instances.Load(_e30.slot*128+96)), asuint(instances.Load(_e30.slot*128+100)), asuint(instances.Load(_e30.slot*128+104)), asuint(instances.Load(_e30.slot*128+108)), asuint(instances.Load(_e30.slot*128+112)), asuint(instances.Load(_e30.slot*128+116)), asuint(instances.Load(_e30.slot*128+120)), asuint(instances.Load(_e30.slot*128+124)));
-                Ray _e46 = ray_16;
+                Ray _e46 = ray_17;
                 const Hit _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                uint _e56 = ray_16.depth;
+                uint _e56 = ray_17.depth;
                 uint _e60 = depth;
                 if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_16;
+                    Ray _e68 = ray_17;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_8 = min(min(_e70, 1u), MAX_SPAWN);
-                    if ((n_8 > 0u)) {
-                        Ray _e77 = ray_16;
-                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_8, 0u);
+                    uint n_9 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_9 > 0u)) {
+                        Ray _e77 = ray_17;
+                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_9, 0u);
                         i_3 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
                         bool loop_init_3 = true;
@@ -1299,7 +1308,7 @@ float3 trace(Ray camera_ray)
                             }
                             loop_init_3 = false;
                             uint _e88 = i_3;
-                            if ((_e88 >= n_8)) {
+                            if ((_e88 >= n_9)) {
                                 break;
                             }
                             uint _e91 = i_3;
@@ -1321,9 +1330,9 @@ float3 trace(Ray camera_ray)
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_16;
+                    Ray _e124 = ray_17;
                     const float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, (0.0).xxx);
-                    Ray _e128 = ray_16;
+                    Ray _e128 = ray_17;
                     const float3 _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1340,9 +1349,9 @@ float3 trace(Ray camera_ray)
             uint _e137 = depth;
             uint top = (_e137 - 1u);
             uint _e144 = stack[min(uint(min(top, 3u)), 3u)].next;
-            uint child_1 = (_e144 - 1u);
+            uint child_2 = (_e144 - 1u);
             float3 _e151 = stack[min(uint(min(top, 3u)), 3u)].sum;
-            float3 _e159 = stack[min(uint(min(top, 3u)), 3u)].weights[min(uint(min(child_1, 0u)), 0u)];
+            float3 _e159 = stack[min(uint(min(top, 3u)), 3u)].weights[min(uint(min(child_2, 0u)), 0u)];
             float3 _e160 = value;
             stack[min(uint(min(top, 3u)), 3u)].sum = (_e151 + (_e159 * _e160));
             have_value = false;
@@ -1361,7 +1370,7 @@ float3 trace(Ray camera_ray)
             const float3 _e209 = spawn_origin(hit_7, dir_3);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_16 = ConstructRay(_e209, 0.0, dir_3, asfloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_17 = ConstructRay(_e209, 0.0, dir_3, asfloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             uint _e224 = stack[min(uint(min(top_1, 3u)), 3u)].slot;
             GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e224*128+0)), asfloat(instances.Load4(_e224*128+16)), asfloat(instances.Load4(_e224*128+32)), asfloat(instances.Load4(_e224*128+48)), asfloat(instances.Load4(_e224*128+64)), asfloat(instances.Load4(_e224*128+80)), asuint(instances.Load(_e224*128+96)), asuint(instances.Load(_e224*128+100)), asuint(instances.Load(_e224*128+104)), asuint(instances.Load(_e224*128+108)), asuint(instances.Load(_e224*128+112)), asuint(instances.Load(_e224*128+116)), asuint(instances.Load(_e224*128+120)), asuint(instances.Load(_e224*128+124)));
@@ -1396,7 +1405,7 @@ void render_pixel(uint2 pixel_3)
     float3 sum = (float3)0;
     uint bad = (uint)0;
     uint s = (uint)0;
-    Ray ray_17 = (Ray)0;
+    Ray ray_18 = (Ray)0;
 
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
@@ -1422,13 +1431,13 @@ void render_pixel(uint2 pixel_3)
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_17 = _e23;
-        ray_17.depth = 0u;
-        ray_17.kind = RAY_CAMERA;
-        float3 _e31 = ray_17.origin;
+        ray_18 = _e23;
+        ray_18.depth = 0u;
+        ray_18.kind = RAY_CAMERA;
+        float3 _e31 = ray_18.origin;
         const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_17.medium = _e33;
-        Ray _e34 = ray_17;
+        ray_18.medium = _e33;
+        Ray _e34 = ray_18;
         const float3 _e35 = trace(_e34);
         const bool3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

@@ -146,14 +146,13 @@ const uint RAY_CAMERA = 0u;
 const uint NO_HIT = 4294967295u;
 const bool HAS_MEDIA = false;
 const uint MESH_GEOMETRY = 4294967295u;
-const uint MESH_LEAF_BIT = 2147483648u;
-const uint MESH_COUNT_SHIFT = 27u;
-const uint MESH_COUNT_MASK = 15u;
-const uint MESH_FIRST_MASK = 134217727u;
+const uint NODE_LEAF_BIT = 2147483648u;
+const uint NODE_COUNT_SHIFT = 27u;
+const uint NODE_COUNT_MASK = 15u;
+const uint NODE_FIRST_MASK = 134217727u;
 const uint BLAS_STACK = 64u;
 const uint TLAS_STACK = 64u;
 const bool HAS_SECONDARY_RAYS = true;
-const uint LEAF_BIT = 2147483648u;
 const bool HAS_BACKGROUND = true;
 const uint FLAG_MEDIUM = 4u;
 const float INV_PI = 0.31830987;
@@ -384,15 +383,15 @@ bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
     return true;
 }
 
-uvec3 mesh_box_lo(uvec3 p) {
+uvec3 node_box_lo(uvec3 p) {
     return uvec3((p.x & 65535u), (p.x >> 16u), (p.y & 65535u));
 }
 
-vec3 mesh_point(vec3 origin, vec3 scale, uvec3 q) {
+vec3 node_point(vec3 origin, vec3 scale, uvec3 q) {
     return (origin + (vec3(q) * scale));
 }
 
-uvec3 mesh_box_hi(uvec3 p_1) {
+uvec3 node_box_hi(uvec3 p_1) {
     return uvec3((p_1.y >> 16u), (p_1.z & 65535u), (p_1.z >> 16u));
 }
 
@@ -410,6 +409,22 @@ float slab(vec3 lo, vec3 hi, vec3 origin_1, vec3 inv_dir, float tmin_1, float tm
     return uintBitsToFloat(_e30);
 }
 
+vec2 children_entry(GpuNode n, vec3 origin_2, vec3 scale_1, Ray ray_3, vec3 inv, float tmax_3) {
+    uvec3 lq = floatBitsToUint(n.min_);
+    uvec3 rq = floatBitsToUint(n.max_);
+    uvec3 _e10 = node_box_lo(lq);
+    vec3 _e11 = node_point(origin_2, scale_1, _e10);
+    uvec3 _e12 = node_box_hi(lq);
+    vec3 _e13 = node_point(origin_2, scale_1, _e12);
+    float _e16 = slab(_e11, _e13, ray_3.origin, inv, ray_3.tmin, tmax_3);
+    uvec3 _e17 = node_box_lo(rq);
+    vec3 _e18 = node_point(origin_2, scale_1, _e17);
+    uvec3 _e19 = node_box_hi(rq);
+    vec3 _e20 = node_point(origin_2, scale_1, _e19);
+    float _e23 = slab(_e18, _e20, ray_3.origin, inv, ray_3.tmin, tmax_3);
+    return vec2(_e16, _e23);
+}
+
 uvec2 pop(uint base, uint sp) {
     if ((sp == 0u)) {
         return uvec2(NO_HIT, 0u);
@@ -418,7 +433,7 @@ uvec2 pop(uint base, uint sp) {
     return uvec2(_e14, (sp - 1u));
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_3, Candidate best_in, bool shadow) {
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
     uint child = 0u;
@@ -426,21 +441,21 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    vec3 _e8 = safe_inverse(ray_3.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_3);
+    vec3 _e8 = safe_inverse(ray_4.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header = _group_0_binding_2_cs[base_1];
-    vec3 origin_2 = header.min_;
-    vec3 scale_1 = header.max_;
+    vec3 origin_3 = header.min_;
+    vec3 scale_2 = header.max_;
     sp_1 = 0u;
     child = header.a;
     while(true) {
         uint _e20 = child;
-        if (((_e20 & MESH_LEAF_BIT) != 0u)) {
+        if (((_e20 & NODE_LEAF_BIT) != 0u)) {
             uint _e25 = child;
-            uint count = ((_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+            uint count = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
             uint _e32 = child;
-            uint first = (_e32 & MESH_FIRST_MASK);
+            uint first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
             bool loop_init = true;
             while(true) {
@@ -456,7 +471,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e41 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e41);
                 float _e45 = best.t;
-                vec3 _e46 = hit_triangle(_e9, prim, ray_3.tmin, _e45);
+                vec3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
                     Candidate c_6 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0.0));
@@ -472,74 +487,64 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             }
         } else {
             uint _e62 = child;
-            GpuNode n_5 = _group_0_binding_2_cs[(base_1 + _e62)];
-            uvec3 lq = floatBitsToUint(n_5.min_);
-            uvec3 rq = floatBitsToUint(n_5.max_);
-            uvec3 _e71 = mesh_box_lo(lq);
-            vec3 _e72 = mesh_point(origin_2, scale_1, _e71);
-            uvec3 _e73 = mesh_box_hi(lq);
-            vec3 _e74 = mesh_point(origin_2, scale_1, _e73);
-            float _e78 = best.t;
-            float _e79 = slab(_e72, _e74, ray_3.origin, _e8, ray_3.tmin, _e78);
-            uvec3 _e80 = mesh_box_lo(rq);
-            vec3 _e81 = mesh_point(origin_2, scale_1, _e80);
-            uvec3 _e82 = mesh_box_hi(rq);
-            vec3 _e83 = mesh_point(origin_2, scale_1, _e82);
-            float _e87 = best.t;
-            float _e88 = slab(_e81, _e83, ray_3.origin, _e8, ray_3.tmin, _e87);
-            uint _e90 = F32_INF;
-            uint _e94 = F32_INF;
-            if (((_e79 < uintBitsToFloat(_e90)) && (_e88 < uintBitsToFloat(_e94)))) {
-                near = n_5.a;
-                far = n_5.b;
-                if (((_e88 < _e79) != shadow)) {
-                    near = n_5.b;
-                    far = n_5.a;
+            GpuNode n_6 = _group_0_binding_2_cs[(base_1 + _e62)];
+            float _e68 = best.t;
+            vec2 _e69 = children_entry(n_6, origin_3, scale_2, ray_4, _e8, _e68);
+            float tl = _e69.x;
+            float tr = _e69.y;
+            uint _e73 = F32_INF;
+            uint _e77 = F32_INF;
+            if (((tl < uintBitsToFloat(_e73)) && (tr < uintBitsToFloat(_e77)))) {
+                near = n_6.a;
+                far = n_6.b;
+                if (((tr < tl) != shadow)) {
+                    near = n_6.b;
+                    far = n_6.a;
                 }
-                uint _e106 = sp_1;
-                if ((_e106 < BLAS_STACK)) {
-                    uint _e110 = sp_1;
-                    uint _e112 = far;
-                    traversal_stack[min((TLAS_STACK + _e110), 127u)] = _e112;
-                    uint _e117 = sp_1;
-                    sp_1 = (_e117 + 1u);
+                uint _e89 = sp_1;
+                if ((_e89 < BLAS_STACK)) {
+                    uint _e93 = sp_1;
+                    uint _e95 = far;
+                    traversal_stack[min((TLAS_STACK + _e93), 127u)] = _e95;
+                    uint _e100 = sp_1;
+                    sp_1 = (_e100 + 1u);
                 }
-                uint _e120 = near;
-                child = _e120;
+                uint _e103 = near;
+                child = _e103;
                 continue;
             }
-            uint _e122 = F32_INF;
-            if ((_e79 < uintBitsToFloat(_e122))) {
-                child = n_5.a;
+            uint _e105 = F32_INF;
+            if ((tl < uintBitsToFloat(_e105))) {
+                child = n_6.a;
                 continue;
             }
-            uint _e127 = F32_INF;
-            if ((_e88 < uintBitsToFloat(_e127))) {
-                child = n_5.b;
+            uint _e110 = F32_INF;
+            if ((tr < uintBitsToFloat(_e110))) {
+                child = n_6.b;
                 continue;
             }
         }
-        uint _e132 = sp_1;
-        uvec2 _e133 = pop(TLAS_STACK, _e132);
-        if ((_e133.x == NO_HIT)) {
+        uint _e115 = sp_1;
+        uvec2 _e116 = pop(TLAS_STACK, _e115);
+        if ((_e116.x == NO_HIT)) {
             break;
         }
-        child = _e133.x;
-        sp_1 = _e133.y;
+        child = _e116.x;
+        sp_1 = _e116.y;
     }
-    Candidate _e139 = best;
-    return _e139;
+    Candidate _e122 = best;
+    return _e122;
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_4, Candidate best_1, bool shadow_1) {
+Candidate intersect_object(uint slot_2, Ray ray_5, Candidate best_1, bool shadow_1) {
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     GpuInstance inst_5 = _group_0_binding_3_cs[slot_2];
-    Ray _e7 = to_object(inst_5, ray_4);
+    Ray _e7 = to_object(inst_5, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_5.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_4, _e14, best_1, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_5, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -558,35 +563,35 @@ vec3 point_to_world(GpuInstance inst_3, vec3 p_2) {
 }
 
 vec3 decode_octahedral(uint bits) {
-    vec3 n = vec3(0.0);
+    vec3 n_1 = vec3(0.0);
     vec2 e = unpackSnorm2x16(bits);
-    n = vec3(e.x, e.y, ((1.0 - abs(e.x)) - abs(e.y)));
-    float _e14 = n.z;
+    n_1 = vec3(e.x, e.y, ((1.0 - abs(e.x)) - abs(e.y)));
+    float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
-        vec3 _e21 = n;
+        vec3 _e21 = n_1;
         vec2 s_3 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
-        vec3 _e29 = n;
+        vec3 _e29 = n_1;
         vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_3);
-        float _e37 = n.z;
-        n = vec3(xy.x, xy.y, _e37);
+        float _e37 = n_1.z;
+        n_1 = vec3(xy.x, xy.y, _e37);
     }
-    vec3 _e39 = n;
+    vec3 _e39 = n_1;
     vec3 _e40 = normalize_vec3f(_e39);
     return _e40;
 }
 
-vec3 normal_to_world(GpuInstance inst_4, vec3 n_1) {
-    vec3 w_1 = (((inst_4.world_to_object_0_.xyz * vec3(n_1.x)) + (inst_4.world_to_object_1_.xyz * vec3(n_1.y))) + (inst_4.world_to_object_2_.xyz * vec3(n_1.z)));
+vec3 normal_to_world(GpuInstance inst_4, vec3 n_2) {
+    vec3 w_1 = (((inst_4.world_to_object_0_.xyz * vec3(n_2.x)) + (inst_4.world_to_object_1_.xyz * vec3(n_2.y))) + (inst_4.world_to_object_2_.xyz * vec3(n_2.z)));
     vec3 _e19 = normalize_vec3f(w_1);
     return _e19;
 }
 
-Hit finish_hit(Ray ray_5, Candidate c_1) {
+Hit finish_hit(Ray ray_6, Candidate c_1) {
     Hit hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     vec3 n_geo = vec3(0.0);
     vec3 n_shade = vec3(0.0);
     GpuInstance inst_6 = _group_0_binding_3_cs[c_1.slot];
-    hit = Hit((ray_5.origin + (ray_5.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_6.object, c_1.primitive);
+    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_6.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
@@ -622,7 +627,7 @@ Hit finish_hit(Ray ray_5, Candidate c_1) {
     vec3 _e131 = normal_to_world(inst_6, _e130);
     hit.normal = _e131;
     vec3 _e135 = hit.geometric_normal;
-    hit.front_face = (dot(ray_5.dir, _e135) < 0.0);
+    hit.front_face = (dot(ray_6.dir, _e135) < 0.0);
     Hit _e139 = hit;
     return _e139;
 }
@@ -674,98 +679,100 @@ uint medium_at(vec3 p_3, uint exclude) {
     return _e60;
 }
 
-Candidate intersect_scene(Ray ray_6, bool shadow_2) {
+Candidate intersect_scene(Ray ray_7, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
-    uint node = 0u;
+    uint child_1 = 0u;
     uint near_1 = 0u;
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_6.tmax);
+    Candidate _e7 = no_candidate(ray_7.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = _group_0_binding_0_cs;
     if ((frame_2.instance_count == 0u)) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    vec3 _e16 = safe_inverse(ray_6.dir);
-    sp_2 = 0u;
-    node = frame_2.tlas_root;
-    uint _e21 = node;
-    GpuNode root = _group_0_binding_2_cs[_e21];
-    float _e30 = best_2.t;
-    float _e31 = slab(root.min_, root.max_, ray_6.origin, _e16, ray_6.tmin, _e30);
-    uint _e33 = F32_INF;
-    if ((_e31 == uintBitsToFloat(_e33))) {
-        Candidate _e36 = best_2;
-        return _e36;
+    vec3 _e16 = safe_inverse(ray_7.dir);
+    uint base_2 = frame_2.tlas_root;
+    GpuNode header_1 = _group_0_binding_2_cs[base_2];
+    vec3 origin_4 = header_1.min_;
+    vec3 scale_3 = header_1.max_;
+    vec3 _e25 = node_point(origin_4, scale_3, uvec3(65535u));
+    float _e29 = best_2.t;
+    float _e30 = slab(origin_4, _e25, ray_7.origin, _e16, ray_7.tmin, _e29);
+    uint _e32 = F32_INF;
+    if ((_e30 == uintBitsToFloat(_e32))) {
+        Candidate _e35 = best_2;
+        return _e35;
     }
+    sp_2 = 0u;
+    child_1 = header_1.a;
     while(true) {
-        uint _e37 = node;
-        GpuNode n_6 = _group_0_binding_2_cs[_e37];
-        if (((n_6.b & LEAF_BIT) != 0u)) {
-            if (((n_6.b & ~(LEAF_BIT)) != 0u)) {
-                Candidate _e53 = best_2;
-                Candidate _e54 = intersect_object(n_6.a, ray_6, _e53, shadow_2);
-                best_2 = _e54;
-                uint _e56 = best_2.slot;
-                if ((shadow_2 && (_e56 != NO_HIT))) {
-                    Candidate _e60 = best_2;
-                    return _e60;
+        uint _e40 = child_1;
+        if (((_e40 & NODE_LEAF_BIT) != 0u)) {
+            uint _e45 = child_1;
+            if ((((_e45 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
+                uint _e54 = child_1;
+                Candidate _e57 = best_2;
+                Candidate _e58 = intersect_object((_e54 & NODE_FIRST_MASK), ray_7, _e57, shadow_2);
+                best_2 = _e58;
+                uint _e60 = best_2.slot;
+                if ((shadow_2 && (_e60 != NO_HIT))) {
+                    Candidate _e64 = best_2;
+                    return _e64;
                 }
             }
         } else {
-            uint left = (frame_2.tlas_root + n_6.a);
-            uint right = (left + 1u);
-            GpuNode l_1 = _group_0_binding_2_cs[left];
-            GpuNode rr = _group_0_binding_2_cs[right];
-            float _e77 = best_2.t;
-            float _e78 = slab(l_1.min_, l_1.max_, ray_6.origin, _e16, ray_6.tmin, _e77);
-            float _e84 = best_2.t;
-            float _e85 = slab(rr.min_, rr.max_, ray_6.origin, _e16, ray_6.tmin, _e84);
-            uint _e87 = F32_INF;
-            uint _e91 = F32_INF;
-            if (((_e78 < uintBitsToFloat(_e87)) && (_e85 < uintBitsToFloat(_e91)))) {
-                near_1 = left;
-                far_1 = right;
-                if ((_e85 < _e78)) {
-                    near_1 = right;
-                    far_1 = left;
+            uint _e65 = child_1;
+            GpuNode n_7 = _group_0_binding_2_cs[(base_2 + _e65)];
+            float _e71 = best_2.t;
+            vec2 _e72 = children_entry(n_7, origin_4, scale_3, ray_7, _e16, _e71);
+            float tl_1 = _e72.x;
+            float tr_1 = _e72.y;
+            uint _e76 = F32_INF;
+            uint _e80 = F32_INF;
+            if (((tl_1 < uintBitsToFloat(_e76)) && (tr_1 < uintBitsToFloat(_e80)))) {
+                near_1 = n_7.a;
+                far_1 = n_7.b;
+                if ((tr_1 < tl_1)) {
+                    near_1 = n_7.b;
+                    far_1 = n_7.a;
                 }
-                uint _e98 = sp_2;
-                if ((_e98 < TLAS_STACK)) {
-                    uint _e101 = sp_2;
-                    uint _e102 = far_1;
-                    traversal_stack[min(_e101, 127u)] = _e102;
-                    uint _e107 = sp_2;
-                    sp_2 = (_e107 + 1u);
+                uint _e91 = sp_2;
+                if ((_e91 < TLAS_STACK)) {
+                    uint _e94 = sp_2;
+                    uint _e95 = far_1;
+                    traversal_stack[min(_e94, 127u)] = _e95;
+                    uint _e100 = sp_2;
+                    sp_2 = (_e100 + 1u);
                 }
-                uint _e110 = near_1;
-                node = _e110;
+                uint _e103 = near_1;
+                child_1 = _e103;
                 continue;
             }
-            uint _e112 = F32_INF;
-            if ((_e78 < uintBitsToFloat(_e112))) {
-                node = left;
+            uint _e105 = F32_INF;
+            if ((tl_1 < uintBitsToFloat(_e105))) {
+                child_1 = n_7.a;
                 continue;
             }
-            uint _e116 = F32_INF;
-            if ((_e85 < uintBitsToFloat(_e116))) {
-                node = right;
+            uint _e110 = F32_INF;
+            if ((tr_1 < uintBitsToFloat(_e110))) {
+                child_1 = n_7.b;
                 continue;
             }
         }
-        uint _e120 = sp_2;
-        uvec2 _e121 = pop(0u, _e120);
-        if ((_e121.x == NO_HIT)) {
+        uint _e115 = sp_2;
+        uvec2 _e116 = pop(0u, _e115);
+        if ((_e116.x == NO_HIT)) {
             break;
         }
-        node = _e121.x;
-        sp_2 = _e121.y;
+        child_1 = _e116.x;
+        sp_2 = _e116.y;
     }
-    Candidate _e127 = best_2;
-    return _e127;
+    Candidate _e122 = best_2;
+    return _e122;
 }
 
 SkyGradient load_SkyGradient(uint offset_2) {
@@ -781,8 +788,8 @@ SkyGradient load_SkyGradient(uint offset_2) {
     return SkyGradient(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)));
 }
 
-vec3 sky_gradient(SkyGradient b_4, Ray ray_7) {
-    vec3 _e3 = normalize_vec3f(ray_7.dir);
+vec3 sky_gradient(SkyGradient b_4, Ray ray_8) {
+    vec3 _e3 = normalize_vec3f(ray_8.dir);
     float y_1 = _e3.y;
     if ((y_1 < 0.0)) {
         return mix(b_4.horizon, b_4.ground, vec3(min((-(y_1) * 4.0), 1.0)));
@@ -790,37 +797,37 @@ vec3 sky_gradient(SkyGradient b_4, Ray ray_7) {
     return mix(b_4.horizon, b_4.zenith, vec3(sqrt(y_1)));
 }
 
-vec3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_8) {
+vec3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_9) {
     SkyGradient _e2 = load_SkyGradient(offset_3);
-    vec3 _e3 = sky_gradient(_e2, ray_8);
+    vec3 _e3 = sky_gradient(_e2, ray_9);
     return _e3;
 }
 
-vec3 miss(Ray ray_9) {
+vec3 miss(Ray ray_10) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_3 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_9);
+    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_10);
     return _e9;
 }
 
-vec3 dispatch_medium(uint type_id_2, uint offset_4, Ray ray_10, float t, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_2, uint offset_4, Ray ray_11, float t, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_11, float t_1, vec3 radiance_1) {
+vec3 through_medium(Ray ray_12, float t_1, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_11.medium == 0u)) {
+    if ((ray_12.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_7 = _group_0_binding_3_cs[(ray_11.medium - 1u)];
+    GpuInstance inst_7 = _group_0_binding_3_cs[(ray_12.medium - 1u)];
     if (((inst_7.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_11, t_1, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_12, t_1, radiance_1);
     return _e21;
 }
 
@@ -859,7 +866,7 @@ float srgb_channel(float c_2) {
 }
 
 vec4 texel_at(uint t_2, int x_2, int y) {
-    uint base_2 = _group_0_binding_6_cs[t_2];
+    uint base_3 = _group_0_binding_6_cs[t_2];
     uint _e10 = _group_0_binding_6_cs[(t_2 + 1u)];
     uint w_3 = max(_e10, 1u);
     uint _e17 = _group_0_binding_6_cs[(t_2 + 2u)];
@@ -873,16 +880,16 @@ vec4 texel_at(uint t_2, int x_2, int y) {
     uint yi = uint(_e37);
     uint index = ((yi * w_3) + xi);
     if ((format == 0u)) {
-        uint _e46 = _group_0_binding_7_cs[(base_2 + index)];
+        uint _e46 = _group_0_binding_7_cs[(base_3 + index)];
         vec4 c_7 = unpackUnorm4x8(_e46);
         float _e49 = srgb_channel(c_7.x);
         float _e51 = srgb_channel(c_7.y);
         float _e53 = srgb_channel(c_7.z);
         return vec4(_e49, _e51, _e53, c_7.w);
     }
-    uint _e61 = _group_0_binding_7_cs[(base_2 + (index * 2u))];
+    uint _e61 = _group_0_binding_7_cs[(base_3 + (index * 2u))];
     vec2 rg = unpackHalf2x16(_e61);
-    uint _e70 = _group_0_binding_7_cs[((base_2 + (index * 2u)) + 1u)];
+    uint _e70 = _group_0_binding_7_cs[((base_3 + (index * 2u)) + 1u)];
     vec2 ba = unpackHalf2x16(_e70);
     return vec4(rg, ba);
 }
@@ -924,26 +931,27 @@ PointLight load_PointLight(uint offset_6) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
-vec3 offset_origin(vec3 p_4, vec3 n_2) {
+vec3 offset_origin(vec3 p_4, vec3 n_3) {
     FrameUniforms _e3 = _group_0_binding_0_cs;
-    GpuNode root_1 = _group_0_binding_2_cs[_e3.tlas_root];
-    vec3 a_7 = max(abs(p_4), max(abs(root_1.min_), abs(root_1.max_)));
+    GpuNode header_2 = _group_0_binding_2_cs[_e3.tlas_root];
+    vec3 _e15 = node_point(header_2.min_, header_2.max_, uvec3(65535u));
+    vec3 a_7 = max(abs(p_4), max(abs(header_2.min_), abs(_e15)));
     float m_5 = max(max(a_7.x, a_7.y), a_7.z);
-    return (p_4 + (n_2 * vec3((m_5 * (1.0 / 65536.0)))));
+    return (p_4 + (n_3 * vec3((m_5 * (1.0 / 65536.0)))));
 }
 
 float shadow_query(vec3 position, vec3 normal, vec3 dir, float dist) {
-    vec3 n_3 = vec3(0.0);
-    n_3 = normal;
-    vec3 _e5 = n_3;
+    vec3 n_4 = vec3(0.0);
+    n_4 = normal;
+    vec3 _e5 = n_4;
     if ((dot(dir, _e5) < 0.0)) {
-        vec3 _e9 = n_3;
-        n_3 = -(_e9);
+        vec3 _e9 = n_4;
+        n_4 = -(_e9);
     }
-    vec3 _e11 = n_3;
+    vec3 _e11 = n_4;
     vec3 _e12 = offset_origin(position, _e11);
-    Ray ray_22 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    Candidate _e23 = intersect_scene(ray_22, true);
+    Ray ray_23 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    Candidate _e23 = intersect_scene(ray_23, true);
     return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
@@ -980,11 +988,11 @@ LightSample sample_light_query(uint i_1, vec3 position_3, vec3 normal_3) {
     return _e27;
 }
 
-vec3 blinn_phong_shade(BlinnPhong m, Ray ray_12, Hit hit_1) {
+vec3 blinn_phong_shade(BlinnPhong m, Ray ray_13, Hit hit_1) {
     vec3 color = vec3(0.0);
     uint i_2 = 0u;
-    vec3 n_7 = faceforward(hit_1.normal, ray_12.dir, hit_1.normal);
-    vec3 _e8 = normalize_vec3f(ray_12.dir);
+    vec3 n_8 = faceforward(hit_1.normal, ray_13.dir, hit_1.normal);
+    vec3 _e8 = normalize_vec3f(ray_13.dir);
     vec3 v_2 = -(_e8);
     vec4 _e15 = sample_texture(m.texture_, (hit_1.uv * m.uv_scale));
     vec3 kd = (m.diffuse * _e15.xyz);
@@ -1006,9 +1014,9 @@ vec3 blinn_phong_shade(BlinnPhong m, Ray ray_12, Hit hit_1) {
         }
         uint _e35 = i_2;
         LightSample _e38 = sample_light_query(_e35, hit_1.position, hit_1.geometric_normal);
-        float ndl = max(dot(n_7, _e38.dir), 0.0);
+        float ndl = max(dot(n_8, _e38.dir), 0.0);
         vec3 _e45 = normalize_vec3f((_e38.dir + v_2));
-        float highlight = (pow(max(dot(n_7, _e45), 0.0), s_4) * norm);
+        float highlight = (pow(max(dot(n_8, _e45), 0.0), s_4) * norm);
         vec3 _e51 = color;
         color = (_e51 + ((_e38.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m.specular * vec3(highlight)))));
     }
@@ -1023,10 +1031,10 @@ Lambert load_Lambert(uint offset_8) {
     return Lambert(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 lambert_shade(Lambert m_1, Ray ray_13, Hit hit_2) {
+vec3 lambert_shade(Lambert m_1, Ray ray_14, Hit hit_2) {
     vec3 color_1 = vec3(0.0);
     uint i_3 = 0u;
-    vec3 n_8 = faceforward(hit_2.normal, ray_13.dir, hit_2.normal);
+    vec3 n_9 = faceforward(hit_2.normal, ray_14.dir, hit_2.normal);
     color_1 = vec3(0.0);
     uint _e11 = light_count_query();
     i_3 = 0u;
@@ -1044,7 +1052,7 @@ vec3 lambert_shade(Lambert m_1, Ray ray_13, Hit hit_2) {
         uint _e15 = i_3;
         LightSample _e18 = sample_light_query(_e15, hit_2.position, hit_2.geometric_normal);
         vec3 _e19 = color_1;
-        color_1 = (_e19 + (((m_1.albedo * vec3(INV_PI)) * _e18.radiance) * vec3(max(dot(n_8, _e18.dir), 0.0))));
+        color_1 = (_e19 + (((m_1.albedo * vec3(INV_PI)) * _e18.radiance) * vec3(max(dot(n_9, _e18.dir), 0.0))));
     }
     vec3 _e36 = color_1;
     return _e36;
@@ -1057,7 +1065,7 @@ Mirror load_Mirror(uint offset_9) {
     return Mirror(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 mirror_shade(Mirror m_2, Ray ray_14, Hit hit_3, vec3 secondary) {
+vec3 mirror_shade(Mirror m_2, Ray ray_15, Hit hit_3, vec3 secondary) {
     return secondary;
 }
 
@@ -1072,7 +1080,7 @@ UnlitTexture load_UnlitTexture(uint offset_10) {
     return UnlitTexture(_e5, vec3(uintBitsToFloat(_e10), uintBitsToFloat(_e16), uintBitsToFloat(_e22)), vec2(uintBitsToFloat(_e29), uintBitsToFloat(_e35)), _e42);
 }
 
-vec3 unlit_texture_shade(UnlitTexture m_3, Ray ray_15, Hit hit_4) {
+vec3 unlit_texture_shade(UnlitTexture m_3, Ray ray_16, Hit hit_4) {
     vec2 uv_1 = vec2(0.0);
     uv_1 = hit_4.uv;
     if ((m_3.planar == 1u)) {
@@ -1083,26 +1091,26 @@ vec3 unlit_texture_shade(UnlitTexture m_3, Ray ray_15, Hit hit_4) {
     return (_e17.xyz * m_3.tint);
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_11, Ray ray_16, Hit hit_5, vec3 secondary_1) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_11, Ray ray_17, Hit hit_5, vec3 secondary_1) {
     switch(type_id_4) {
         case 0u: {
             BlinnPhong _e5 = load_BlinnPhong(offset_11);
-            vec3 _e6 = blinn_phong_shade(_e5, ray_16, hit_5);
+            vec3 _e6 = blinn_phong_shade(_e5, ray_17, hit_5);
             return _e6;
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_11);
-            vec3 _e8 = lambert_shade(_e7, ray_16, hit_5);
+            vec3 _e8 = lambert_shade(_e7, ray_17, hit_5);
             return _e8;
         }
         case 2u: {
             Mirror _e9 = load_Mirror(offset_11);
-            vec3 _e10 = mirror_shade(_e9, ray_16, hit_5, secondary_1);
+            vec3 _e10 = mirror_shade(_e9, ray_17, hit_5, secondary_1);
             return _e10;
         }
         case 3u: {
             UnlitTexture _e11 = load_UnlitTexture(offset_11);
-            vec3 _e12 = unlit_texture_shade(_e11, ray_16, hit_5);
+            vec3 _e12 = unlit_texture_shade(_e11, ray_17, hit_5);
             return _e12;
         }
         default: {
@@ -1112,10 +1120,10 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_11, Ray ray_16, Hit hit_5,
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_17, Candidate c_3) {
+vec3 shade_direct(Ray ray_18, Candidate c_3) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_3.slot];
-    Hit _e6 = finish_hit(ray_17, c_3);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_18, c_3);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, vec3(0.0));
     return _e11;
 }
 
@@ -1128,27 +1136,27 @@ void rt_spawn(vec3 dir_1, vec3 weight) {
     }
 }
 
-void mirror_rays(Mirror m_4, Ray ray_18, Hit hit_6) {
-    vec3 _e4 = normalize_vec3f(ray_18.dir);
+void mirror_rays(Mirror m_4, Ray ray_19, Hit hit_6) {
+    vec3 _e4 = normalize_vec3f(ray_19.dir);
     rt_spawn(reflect(_e4, hit_6.normal), m_4.tint);
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_5, uint offset_12, Ray ray_19, Hit hit_7) {
+void dispatch_secondary_rays(uint type_id_5, uint offset_12, Ray ray_20, Hit hit_7) {
     Mirror _e3 = load_Mirror(offset_12);
-    mirror_rays(_e3, ray_19, hit_7);
+    mirror_rays(_e3, ray_20, hit_7);
     return;
 }
 
 vec3 spawn_origin(Hit hit_8, vec3 dir_2) {
-    vec3 n_4 = vec3(0.0);
-    n_4 = hit_8.geometric_normal;
-    vec3 _e4 = n_4;
+    vec3 n_5 = vec3(0.0);
+    n_5 = hit_8.geometric_normal;
+    vec3 _e4 = n_5;
     if ((dot(dir_2, _e4) < 0.0)) {
-        vec3 _e8 = n_4;
-        n_4 = -(_e8);
+        vec3 _e8 = n_5;
+        n_5 = -(_e8);
     }
-    vec3 _e11 = n_4;
+    vec3 _e11 = n_5;
     vec3 _e12 = offset_origin(hit_8.position, _e11);
     return _e12;
 }
@@ -1156,7 +1164,7 @@ vec3 spawn_origin(Hit hit_8, vec3 dir_2) {
 vec3 trace(Ray camera_ray) {
     Frame stack[3] = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_20 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_21 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     bool pushed = false;
@@ -1177,38 +1185,38 @@ vec3 trace(Ray camera_ray) {
     }
     stack = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_20 = camera_ray;
+    ray_21 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     while(true) {
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_20;
+            Ray _e28 = ray_21;
             Candidate _e30 = intersect_scene(_e28, false);
             if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_20;
+                Ray _e34 = ray_21;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_20;
+                Ray _e38 = ray_21;
                 vec3 _e39 = miss(_e38);
                 vec3 _e40 = through_medium(_e34, uintBitsToFloat(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = _group_0_binding_3_cs[_e30.slot];
-                Ray _e46 = ray_20;
+                Ray _e46 = ray_21;
                 Hit _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                uint _e56 = ray_20.depth;
+                uint _e56 = ray_21.depth;
                 uint _e60 = depth;
                 if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_20;
+                    Ray _e68 = ray_21;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_9 = min(min(_e70, 1u), MAX_SPAWN);
-                    if ((n_9 > 0u)) {
-                        Ray _e77 = ray_20;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_9, 0u);
+                    uint n_10 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_10 > 0u)) {
+                        Ray _e77 = ray_21;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_10, 0u);
                         i_4 = 0u;
                         bool loop_init_4 = true;
                         while(true) {
@@ -1218,7 +1226,7 @@ vec3 trace(Ray camera_ray) {
                             }
                             loop_init_4 = false;
                             uint _e88 = i_4;
-                            if ((_e88 >= n_9)) {
+                            if ((_e88 >= n_10)) {
                                 break;
                             }
                             uint _e91 = i_4;
@@ -1240,9 +1248,9 @@ vec3 trace(Ray camera_ray) {
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_20;
+                    Ray _e124 = ray_21;
                     vec3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0.0));
-                    Ray _e128 = ray_20;
+                    Ray _e128 = ray_21;
                     vec3 _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1259,9 +1267,9 @@ vec3 trace(Ray camera_ray) {
             uint _e137 = depth;
             uint top = (_e137 - 1u);
             uint _e144 = stack[min(top, 2u)].next;
-            uint child_1 = (_e144 - 1u);
+            uint child_2 = (_e144 - 1u);
             vec3 _e151 = stack[min(top, 2u)].sum;
-            vec3 _e159 = stack[min(top, 2u)].weights[min(child_1, 0u)];
+            vec3 _e159 = stack[min(top, 2u)].weights[min(child_2, 0u)];
             vec3 _e160 = value;
             stack[min(top, 2u)].sum = (_e151 + (_e159 * _e160));
             have_value = false;
@@ -1280,7 +1288,7 @@ vec3 trace(Ray camera_ray) {
             vec3 _e209 = spawn_origin(hit_10, dir_4);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_20 = Ray(_e209, 0.0, dir_4, uintBitsToFloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_21 = Ray(_e209, 0.0, dir_4, uintBitsToFloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             uint _e224 = stack[min(top_1, 2u)].slot;
             GpuInstance inst_10 = _group_0_binding_3_cs[_e224];
@@ -1312,7 +1320,7 @@ void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s = 0u;
-    Ray ray_21 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_22 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_1 = _group_0_binding_1_cs;
     sum = vec3(0.0);
@@ -1334,13 +1342,13 @@ void render_pixel(uvec2 pixel_3) {
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_21 = _e23;
-        ray_21.depth = 0u;
-        ray_21.kind = RAY_CAMERA;
-        vec3 _e31 = ray_21.origin;
+        ray_22 = _e23;
+        ray_22.depth = 0u;
+        ray_22.kind = RAY_CAMERA;
+        vec3 _e31 = ray_22.origin;
         uint _e33 = medium_at(_e31, NO_HIT);
-        ray_21.medium = _e33;
-        Ray _e34 = ray_21;
+        ray_22.medium = _e33;
+        Ray _e34 = ray_22;
         vec3 _e35 = trace(_e34);
         bvec3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

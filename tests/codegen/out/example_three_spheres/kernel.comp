@@ -148,17 +148,16 @@ const uint RAY_CAMERA = 0u;
 const uint NO_HIT = 4294967295u;
 const bool HAS_MEDIA = false;
 const uint MESH_GEOMETRY = 4294967295u;
-const uint MESH_LEAF_BIT = 2147483648u;
-const uint MESH_COUNT_SHIFT = 27u;
-const uint MESH_COUNT_MASK = 15u;
-const uint MESH_FIRST_MASK = 134217727u;
+const uint NODE_LEAF_BIT = 2147483648u;
+const uint NODE_COUNT_SHIFT = 27u;
+const uint NODE_COUNT_MASK = 15u;
+const uint NODE_FIRST_MASK = 134217727u;
 const uint BLAS_STACK = 64u;
 const uint TLAS_STACK = 64u;
 const uint BVH_MESH_STACK = 64u;
 const float TAU = 6.2831855;
 const float INV_PI = 0.31830987;
 const bool HAS_SECONDARY_RAYS = false;
-const uint LEAF_BIT = 2147483648u;
 const bool HAS_BACKGROUND = true;
 const uint FLAG_MEDIUM = 4u;
 const uint RAY_SHADOW = 2u;
@@ -383,15 +382,15 @@ bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
     return true;
 }
 
-uvec3 mesh_box_lo(uvec3 p) {
+uvec3 node_box_lo(uvec3 p) {
     return uvec3((p.x & 65535u), (p.x >> 16u), (p.y & 65535u));
 }
 
-vec3 mesh_point(vec3 origin, vec3 scale, uvec3 q) {
+vec3 node_point(vec3 origin, vec3 scale, uvec3 q) {
     return (origin + (vec3(q) * scale));
 }
 
-uvec3 mesh_box_hi(uvec3 p_1) {
+uvec3 node_box_hi(uvec3 p_1) {
     return uvec3((p_1.y >> 16u), (p_1.z & 65535u), (p_1.z >> 16u));
 }
 
@@ -409,6 +408,22 @@ float slab(vec3 lo, vec3 hi, vec3 origin_1, vec3 inv_dir, float tmin_1, float tm
     return uintBitsToFloat(_e30);
 }
 
+vec2 children_entry(GpuNode n, vec3 origin_2, vec3 scale_1, Ray ray_3, vec3 inv, float tmax_3) {
+    uvec3 lq = floatBitsToUint(n.min_);
+    uvec3 rq = floatBitsToUint(n.max_);
+    uvec3 _e10 = node_box_lo(lq);
+    vec3 _e11 = node_point(origin_2, scale_1, _e10);
+    uvec3 _e12 = node_box_hi(lq);
+    vec3 _e13 = node_point(origin_2, scale_1, _e12);
+    float _e16 = slab(_e11, _e13, ray_3.origin, inv, ray_3.tmin, tmax_3);
+    uvec3 _e17 = node_box_lo(rq);
+    vec3 _e18 = node_point(origin_2, scale_1, _e17);
+    uvec3 _e19 = node_box_hi(rq);
+    vec3 _e20 = node_point(origin_2, scale_1, _e19);
+    float _e23 = slab(_e18, _e20, ray_3.origin, inv, ray_3.tmin, tmax_3);
+    return vec2(_e16, _e23);
+}
+
 uvec2 pop(uint base, uint sp) {
     if ((sp == 0u)) {
         return uvec2(NO_HIT, 0u);
@@ -417,7 +432,7 @@ uvec2 pop(uint base, uint sp) {
     return uvec2(_e14, (sp - 1u));
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_3, Candidate best_in, bool shadow) {
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
     uint child = 0u;
@@ -425,21 +440,21 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    vec3 _e8 = safe_inverse(ray_3.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_3);
+    vec3 _e8 = safe_inverse(ray_4.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header = _group_0_binding_2_cs[base_1];
-    vec3 origin_2 = header.min_;
-    vec3 scale_1 = header.max_;
+    vec3 origin_3 = header.min_;
+    vec3 scale_2 = header.max_;
     sp_1 = 0u;
     child = header.a;
     while(true) {
         uint _e20 = child;
-        if (((_e20 & MESH_LEAF_BIT) != 0u)) {
+        if (((_e20 & NODE_LEAF_BIT) != 0u)) {
             uint _e25 = child;
-            uint count = ((_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+            uint count = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
             uint _e32 = child;
-            uint first = (_e32 & MESH_FIRST_MASK);
+            uint first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
             bool loop_init = true;
             while(true) {
@@ -455,7 +470,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e41 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e41);
                 float _e45 = best.t;
-                vec3 _e46 = hit_triangle(_e9, prim, ray_3.tmin, _e45);
+                vec3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
                     Candidate c_6 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0.0));
@@ -471,63 +486,53 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             }
         } else {
             uint _e62 = child;
-            GpuNode n_6 = _group_0_binding_2_cs[(base_1 + _e62)];
-            uvec3 lq = floatBitsToUint(n_6.min_);
-            uvec3 rq = floatBitsToUint(n_6.max_);
-            uvec3 _e71 = mesh_box_lo(lq);
-            vec3 _e72 = mesh_point(origin_2, scale_1, _e71);
-            uvec3 _e73 = mesh_box_hi(lq);
-            vec3 _e74 = mesh_point(origin_2, scale_1, _e73);
-            float _e78 = best.t;
-            float _e79 = slab(_e72, _e74, ray_3.origin, _e8, ray_3.tmin, _e78);
-            uvec3 _e80 = mesh_box_lo(rq);
-            vec3 _e81 = mesh_point(origin_2, scale_1, _e80);
-            uvec3 _e82 = mesh_box_hi(rq);
-            vec3 _e83 = mesh_point(origin_2, scale_1, _e82);
-            float _e87 = best.t;
-            float _e88 = slab(_e81, _e83, ray_3.origin, _e8, ray_3.tmin, _e87);
-            uint _e90 = F32_INF;
-            uint _e94 = F32_INF;
-            if (((_e79 < uintBitsToFloat(_e90)) && (_e88 < uintBitsToFloat(_e94)))) {
-                near = n_6.a;
-                far = n_6.b;
-                if (((_e88 < _e79) != shadow)) {
-                    near = n_6.b;
-                    far = n_6.a;
+            GpuNode n_7 = _group_0_binding_2_cs[(base_1 + _e62)];
+            float _e68 = best.t;
+            vec2 _e69 = children_entry(n_7, origin_3, scale_2, ray_4, _e8, _e68);
+            float tl = _e69.x;
+            float tr = _e69.y;
+            uint _e73 = F32_INF;
+            uint _e77 = F32_INF;
+            if (((tl < uintBitsToFloat(_e73)) && (tr < uintBitsToFloat(_e77)))) {
+                near = n_7.a;
+                far = n_7.b;
+                if (((tr < tl) != shadow)) {
+                    near = n_7.b;
+                    far = n_7.a;
                 }
-                uint _e106 = sp_1;
-                if ((_e106 < BLAS_STACK)) {
-                    uint _e110 = sp_1;
-                    uint _e112 = far;
-                    traversal_stack[min((TLAS_STACK + _e110), 127u)] = _e112;
-                    uint _e117 = sp_1;
-                    sp_1 = (_e117 + 1u);
+                uint _e89 = sp_1;
+                if ((_e89 < BLAS_STACK)) {
+                    uint _e93 = sp_1;
+                    uint _e95 = far;
+                    traversal_stack[min((TLAS_STACK + _e93), 127u)] = _e95;
+                    uint _e100 = sp_1;
+                    sp_1 = (_e100 + 1u);
                 }
-                uint _e120 = near;
-                child = _e120;
+                uint _e103 = near;
+                child = _e103;
                 continue;
             }
-            uint _e122 = F32_INF;
-            if ((_e79 < uintBitsToFloat(_e122))) {
-                child = n_6.a;
+            uint _e105 = F32_INF;
+            if ((tl < uintBitsToFloat(_e105))) {
+                child = n_7.a;
                 continue;
             }
-            uint _e127 = F32_INF;
-            if ((_e88 < uintBitsToFloat(_e127))) {
-                child = n_6.b;
+            uint _e110 = F32_INF;
+            if ((tr < uintBitsToFloat(_e110))) {
+                child = n_7.b;
                 continue;
             }
         }
-        uint _e132 = sp_1;
-        uvec2 _e133 = pop(TLAS_STACK, _e132);
-        if ((_e133.x == NO_HIT)) {
+        uint _e115 = sp_1;
+        uvec2 _e116 = pop(TLAS_STACK, _e115);
+        if ((_e116.x == NO_HIT)) {
             break;
         }
-        child = _e133.x;
-        sp_1 = _e133.y;
+        child = _e116.x;
+        sp_1 = _e116.y;
     }
-    Candidate _e139 = best;
-    return _e139;
+    Candidate _e122 = best;
+    return _e122;
 }
 
 BvhMesh load_BvhMesh(uint offset_2) {
@@ -543,64 +548,64 @@ BvhNode mesh_node_query(uint m, uint i) {
     uint base_2 = _group_0_binding_6_cs[m];
     GpuNode header_1 = _group_0_binding_2_cs[base_2];
     lo_1 = header_1.min_;
-    vec3 _e14 = mesh_point(header_1.min_, header_1.max_, uvec3(65535u));
+    vec3 _e14 = node_point(header_1.min_, header_1.max_, uvec3(65535u));
     hi_1 = _e14;
     reference = header_1.a;
     if ((i >= 2u)) {
-        GpuNode n_7 = _group_0_binding_2_cs[(base_2 + (i >> 1u))];
-        q_1 = floatBitsToUint(n_7.min_);
-        reference = n_7.a;
+        GpuNode n_8 = _group_0_binding_2_cs[(base_2 + (i >> 1u))];
+        q_1 = floatBitsToUint(n_8.min_);
+        reference = n_8.a;
         if (((i & 1u) != 0u)) {
-            q_1 = floatBitsToUint(n_7.max_);
-            reference = n_7.b;
+            q_1 = floatBitsToUint(n_8.max_);
+            reference = n_8.b;
         }
         uvec3 _e39 = q_1;
-        uvec3 _e40 = mesh_box_lo(_e39);
-        vec3 _e41 = mesh_point(header_1.min_, header_1.max_, _e40);
+        uvec3 _e40 = node_box_lo(_e39);
+        vec3 _e41 = node_point(header_1.min_, header_1.max_, _e40);
         lo_1 = _e41;
         uvec3 _e44 = q_1;
-        uvec3 _e45 = mesh_box_hi(_e44);
-        vec3 _e46 = mesh_point(header_1.min_, header_1.max_, _e45);
+        uvec3 _e45 = node_box_hi(_e44);
+        vec3 _e46 = node_point(header_1.min_, header_1.max_, _e45);
         hi_1 = _e46;
     }
     uint _e47 = reference;
-    if (((_e47 & MESH_LEAF_BIT) == 0u)) {
+    if (((_e47 & NODE_LEAF_BIT) == 0u)) {
         vec3 _e52 = lo_1;
         vec3 _e53 = hi_1;
         uint _e55 = reference;
         return BvhNode(_e52, _e53, (2u * _e55), 0u);
     }
     uint _e59 = reference;
-    uint count_1 = ((_e59 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+    uint count_1 = ((_e59 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
     if ((count_1 == 0u)) {
         return BvhNode(uintBitsToFloat(uvec3(2139095039u)), uintBitsToFloat(uvec3(4286578687u)), 0u, 0u);
     }
     vec3 _e77 = lo_1;
     vec3 _e78 = hi_1;
     uint _e79 = reference;
-    return BvhNode(_e77, _e78, (_e79 & MESH_FIRST_MASK), count_1);
+    return BvhNode(_e77, _e78, (_e79 & NODE_FIRST_MASK), count_1);
 }
 
-vec2 intersect_aabb(Ray ray_4, vec3 min_, vec3 max_) {
-    bvec3 parallel = lessThan(abs(ray_4.dir), vec3(1.1754944e-38));
+vec2 intersect_aabb(Ray ray_5, vec3 min_, vec3 max_) {
+    bvec3 parallel = lessThan(abs(ray_5.dir), vec3(1.1754944e-38));
     vec3 _e12 = vec3(1.0);
-    vec3 inv_dir_1 = (_e12 / mix(ray_4.dir, _e12, parallel));
-    vec3 _e17 = ((min_ - ray_4.origin) * inv_dir_1);
-    vec3 _e18 = ((max_ - ray_4.origin) * inv_dir_1);
-    bvec3 _e23 = bvec3(lessThanEqual(min_, ray_4.origin).x && lessThanEqual(ray_4.origin, max_).x, lessThanEqual(min_, ray_4.origin).y && lessThanEqual(ray_4.origin, max_).y, lessThanEqual(min_, ray_4.origin).z && lessThanEqual(ray_4.origin, max_).z);
+    vec3 inv_dir_1 = (_e12 / mix(ray_5.dir, _e12, parallel));
+    vec3 _e17 = ((min_ - ray_5.origin) * inv_dir_1);
+    vec3 _e18 = ((max_ - ray_5.origin) * inv_dir_1);
+    bvec3 _e23 = bvec3(lessThanEqual(min_, ray_5.origin).x && lessThanEqual(ray_5.origin, max_).x, lessThanEqual(min_, ray_5.origin).y && lessThanEqual(ray_5.origin, max_).y, lessThanEqual(min_, ray_5.origin).z && lessThanEqual(ray_5.origin, max_).z);
     uint _e25 = F32_INF;
     vec3 _e27 = vec3(uintBitsToFloat(_e25));
     uint _e29 = F32_NEG_INF;
     vec3 _e31 = vec3(uintBitsToFloat(_e29));
     vec3 near_3 = mix(min(_e17, _e18), mix(_e27, _e31, _e23), parallel);
     vec3 far_3 = mix(max(_e17, _e18), mix(_e31, _e27, _e23), parallel);
-    return vec2(max(max(max(near_3.x, near_3.y), near_3.z), ray_4.tmin), min(min(min(far_3.x, far_3.y), far_3.z), ray_4.tmax));
+    return vec2(max(max(max(near_3.x, near_3.y), near_3.z), ray_5.tmin), min(min(min(far_3.x, far_3.y), far_3.z), ray_5.tmax));
 }
 
-float bvh_mesh_enter(Ray ray_5, BvhNode n, float tmax_3) {
-    vec2 _e5 = intersect_aabb(ray_5, n.min_, n.max_);
+float bvh_mesh_enter(Ray ray_6, BvhNode n_1, float tmax_4) {
+    vec2 _e5 = intersect_aabb(ray_6, n_1.min_, n_1.max_);
     uint _e7 = F32_INF;
-    return (((_e5.x <= _e5.y) && (_e5.x <= tmax_3)) ? _e5.x : uintBitsToFloat(_e7));
+    return (((_e5.x <= _e5.y) && (_e5.x <= tmax_4)) ? _e5.x : uintBitsToFloat(_e7));
 }
 
 Triangle mesh_triangle_query(uint m_1, uint i_1) {
@@ -612,9 +617,9 @@ Triangle mesh_triangle_query(uint m_1, uint i_1) {
     return Triangle(_e12.xyz, _e18.xyz, _e24.xyz);
 }
 
-Intersection intersect_triangle(Ray ray_6, Triangle tri) {
+Intersection intersect_triangle(Ray ray_7, Triangle tri) {
     uvec3 _e10 = uvec3(2139095040u);
-    vec3 dir_2 = mix(ray_6.dir, vec3(0.0), lessThan(abs(ray_6.dir), vec3(1.1754944e-38)));
+    vec3 dir_2 = mix(ray_7.dir, vec3(0.0), lessThan(abs(ray_7.dir), vec3(1.1754944e-38)));
     vec3 _e31 = abs(dir_2);
     bool _e38 = (_e31.y > _e31.x);
     uint kz_1 = ((_e31.z > (_e38 ? _e31.y : _e31.x)) ? 2u : (_e38 ? 1u : 0u));
@@ -627,13 +632,13 @@ Intersection intersect_triangle(Ray ray_6, Triangle tri) {
     float sx = (dir_2[kx_1] / dz_1);
     float sy = (dir_2[ky_1] / dz_1);
     float sz = (1.0 / dz_1);
-    vec3 _e62 = (tri.v0_ - ray_6.origin);
+    vec3 _e62 = (tri.v0_ - ray_7.origin);
     float _e68 = (_e62[kx_1] - (sx * _e62[kz_1]));
     float _e69 = (_e62[ky_1] - (sy * _e62[kz_1]));
-    vec3 _e71 = (tri.v1_ - ray_6.origin);
+    vec3 _e71 = (tri.v1_ - ray_7.origin);
     float _e77 = (_e71[kx_1] - (sx * _e71[kz_1]));
     float _e78 = (_e71[ky_1] - (sy * _e71[kz_1]));
-    vec3 _e80 = (tri.v2_ - ray_6.origin);
+    vec3 _e80 = (tri.v2_ - ray_7.origin);
     float _e86 = (_e80[kx_1] - (sx * _e80[kz_1]));
     float _e87 = (_e80[ky_1] - (sy * _e80[kz_1]));
     float u_1 = ((_e86 * _e78) - (_e87 * _e77));
@@ -642,13 +647,13 @@ Intersection intersect_triangle(Ray ray_6, Triangle tri) {
     float det_1 = ((u_1 + v_2) + w_1);
     float _e112 = (1.0 / det_1);
     float t_6 = ((((u_1 * (sz * _e62[kz_1])) + (v_2 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
-    bool hit_6 = (((((all(lessThan((floatBitsToUint(ray_6.origin) & uvec3(2147483647u)), _e10)) && all(lessThan((floatBitsToUint(ray_6.dir) & uvec3(2147483647u)), _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_6 >= ray_6.tmin) && (t_6 <= ray_6.tmax)));
+    bool hit_6 = (((((all(lessThan((floatBitsToUint(ray_7.origin) & uvec3(2147483647u)), _e10)) && all(lessThan((floatBitsToUint(ray_7.dir) & uvec3(2147483647u)), _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_6 >= ray_7.tmin) && (t_6 <= ray_7.tmax)));
     vec3 _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     uint _e137 = F32_INF;
     return Intersection((hit_6 ? t_6 : uintBitsToFloat(_e137)), (hit_6 ? _e132 : vec3(0.0, 0.0, 1.0)), (hit_6 ? vec2((v_2 * _e112), (w_1 * _e112)) : vec2(0.0)));
 }
 
-Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7) {
+Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_8) {
     Intersection best_1 = Intersection(0.0, vec3(0.0), vec2(0.0));
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     uint stack[64] = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
@@ -659,7 +664,7 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7) {
     bool found = false;
     uint _e3 = F32_INF;
     best_1 = Intersection(uintBitsToFloat(_e3), vec3(0.0, 0.0, 1.0), vec2(0.0));
-    r_2 = ray_7;
+    r_2 = ray_8;
     stack = uint[64](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     stack_t = float[64](0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
     sp_2 = 0u;
@@ -766,12 +771,12 @@ Sphere load_Sphere(uint offset_3) {
     return Sphere(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24));
 }
 
-Intersection sphere_intersect(Sphere s, Ray ray_8) {
+Intersection sphere_intersect(Sphere s, Ray ray_9) {
     float t = 0.0;
-    vec3 f_1 = (ray_8.origin - s.center);
-    float a_6 = dot(ray_8.dir, ray_8.dir);
-    float b_7 = -(dot(f_1, ray_8.dir));
-    vec3 l_1 = (f_1 + (ray_8.dir * vec3((b_7 / a_6))));
+    vec3 f_1 = (ray_9.origin - s.center);
+    float a_6 = dot(ray_9.dir, ray_9.dir);
+    float b_7 = -(dot(f_1, ray_9.dir));
+    vec3 l_1 = (f_1 + (ray_9.dir * vec3((b_7 / a_6))));
     float r2_ = (s.radius * s.radius);
     float disc = (a_6 * (r2_ - dot(l_1, l_1)));
     if ((!((disc >= 0.0)) || !((a_6 > 0.0)))) {
@@ -783,33 +788,33 @@ Intersection sphere_intersect(Sphere s, Ray ray_8) {
     float t1_1 = (q_2 / a_6);
     t = min(t0_1, t1_1);
     float _e52 = t;
-    if (!((_e52 >= ray_8.tmin))) {
+    if (!((_e52 >= ray_9.tmin))) {
         t = max(t0_1, t1_1);
     }
     float _e57 = t;
     float _e60 = t;
-    if (!(((_e57 >= ray_8.tmin) && (_e60 <= ray_8.tmax)))) {
+    if (!(((_e57 >= ray_9.tmin) && (_e60 <= ray_9.tmax)))) {
         uint _e66 = F32_INF;
         return Intersection(uintBitsToFloat(_e66), vec3(0.0, 0.0, 1.0), vec2(0.0));
     }
     float _e76 = t;
-    vec3 _e82 = normalize_vec3f(((ray_8.origin + (ray_8.dir * vec3(_e76))) - s.center));
+    vec3 _e82 = normalize_vec3f(((ray_9.origin + (ray_9.dir * vec3(_e76))) - s.center));
     float u_2 = (((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (atan(_e82.z, -(_e82.x)) / TAU)));
     vec2 uv_1 = vec2(u_2, (acos(min(max(_e82.y, -1.0), 1.0)) * INV_PI));
     float _e109 = t;
     return Intersection(_e109, _e82, uv_1);
 }
 
-Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_9) {
+Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_10) {
     switch(type_id_1) {
         case 0u: {
             BvhMesh _e3 = load_BvhMesh(offset_4);
-            Intersection _e4 = bvh_mesh_intersect(_e3, ray_9);
+            Intersection _e4 = bvh_mesh_intersect(_e3, ray_10);
             return _e4;
         }
         case 1u: {
             Sphere _e5 = load_Sphere(offset_4);
-            Intersection _e6 = sphere_intersect(_e5, ray_9);
+            Intersection _e6 = sphere_intersect(_e5, ray_10);
             return _e6;
         }
         default: {
@@ -819,15 +824,15 @@ Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_9) {
     return Intersection(0.0, vec3(0.0), vec2(0.0));
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_10, Candidate best_2, bool shadow_1) {
+Candidate intersect_object(uint slot_2, Ray ray_11, Candidate best_2, bool shadow_1) {
     Ray r_3 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     GpuInstance inst_5 = _group_0_binding_3_cs[slot_2];
-    Ray _e7 = to_object(inst_5, ray_10);
+    Ray _e7 = to_object(inst_5, ray_11);
     r_3 = _e7;
     r_3.tmax = best_2.t;
     if ((inst_5.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_3;
-        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_10, _e14, best_2, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_11, _e14, best_2, shadow_1);
         return _e15;
     }
     Ray _e18 = r_3;
@@ -837,7 +842,7 @@ Candidate intersect_object(uint slot_2, Ray ray_10, Candidate best_2, bool shado
     uint _e31 = F32_INF;
     if ((((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < uintBitsToFloat(_e31)))) {
         Candidate c_7 = Candidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        bool _e40 = accept(inst_5, ray_10, c_7);
+        bool _e40 = accept(inst_5, ray_11, c_7);
         if (_e40) {
             return c_7;
         }
@@ -858,35 +863,35 @@ vec3 point_to_world(GpuInstance inst_3, vec3 p_2) {
 }
 
 vec3 decode_octahedral(uint bits) {
-    vec3 n_1 = vec3(0.0);
+    vec3 n_2 = vec3(0.0);
     vec2 e = unpackSnorm2x16(bits);
-    n_1 = vec3(e.x, e.y, ((1.0 - abs(e.x)) - abs(e.y)));
-    float _e14 = n_1.z;
+    n_2 = vec3(e.x, e.y, ((1.0 - abs(e.x)) - abs(e.y)));
+    float _e14 = n_2.z;
     if ((_e14 < 0.0)) {
-        vec3 _e21 = n_1;
+        vec3 _e21 = n_2;
         vec2 s_4 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
-        vec3 _e29 = n_1;
+        vec3 _e29 = n_2;
         vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_4);
-        float _e37 = n_1.z;
-        n_1 = vec3(xy.x, xy.y, _e37);
+        float _e37 = n_2.z;
+        n_2 = vec3(xy.x, xy.y, _e37);
     }
-    vec3 _e39 = n_1;
+    vec3 _e39 = n_2;
     vec3 _e40 = normalize_vec3f(_e39);
     return _e40;
 }
 
-vec3 normal_to_world(GpuInstance inst_4, vec3 n_2) {
-    vec3 w_2 = (((inst_4.world_to_object_0_.xyz * vec3(n_2.x)) + (inst_4.world_to_object_1_.xyz * vec3(n_2.y))) + (inst_4.world_to_object_2_.xyz * vec3(n_2.z)));
+vec3 normal_to_world(GpuInstance inst_4, vec3 n_3) {
+    vec3 w_2 = (((inst_4.world_to_object_0_.xyz * vec3(n_3.x)) + (inst_4.world_to_object_1_.xyz * vec3(n_3.y))) + (inst_4.world_to_object_2_.xyz * vec3(n_3.z)));
     vec3 _e19 = normalize_vec3f(w_2);
     return _e19;
 }
 
-Hit finish_hit(Ray ray_11, Candidate c_1) {
+Hit finish_hit(Ray ray_12, Candidate c_1) {
     Hit hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     vec3 n_geo = vec3(0.0);
     vec3 n_shade = vec3(0.0);
     GpuInstance inst_6 = _group_0_binding_3_cs[c_1.slot];
-    hit = Hit((ray_11.origin + (ray_11.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_6.object, c_1.primitive);
+    hit = Hit((ray_12.origin + (ray_12.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_6.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
@@ -922,7 +927,7 @@ Hit finish_hit(Ray ray_11, Candidate c_1) {
     vec3 _e131 = normal_to_world(inst_6, _e130);
     hit.normal = _e131;
     vec3 _e135 = hit.geometric_normal;
-    hit.front_face = (dot(ray_11.dir, _e135) < 0.0);
+    hit.front_face = (dot(ray_12.dir, _e135) < 0.0);
     Hit _e139 = hit;
     return _e139;
 }
@@ -974,98 +979,100 @@ uint medium_at(vec3 p_3, uint exclude) {
     return _e60;
 }
 
-Candidate intersect_scene(Ray ray_12, bool shadow_2) {
+Candidate intersect_scene(Ray ray_13, bool shadow_2) {
     Candidate best_3 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_3 = 0u;
-    uint node_1 = 0u;
+    uint child_1 = 0u;
     uint near_1 = 0u;
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_12.tmax);
+    Candidate _e7 = no_candidate(ray_13.tmax);
     best_3 = _e7;
     FrameUniforms frame_2 = _group_0_binding_0_cs;
     if ((frame_2.instance_count == 0u)) {
         Candidate _e14 = best_3;
         return _e14;
     }
-    vec3 _e16 = safe_inverse(ray_12.dir);
-    sp_3 = 0u;
-    node_1 = frame_2.tlas_root;
-    uint _e21 = node_1;
-    GpuNode root = _group_0_binding_2_cs[_e21];
-    float _e30 = best_3.t;
-    float _e31 = slab(root.min_, root.max_, ray_12.origin, _e16, ray_12.tmin, _e30);
-    uint _e33 = F32_INF;
-    if ((_e31 == uintBitsToFloat(_e33))) {
-        Candidate _e36 = best_3;
-        return _e36;
+    vec3 _e16 = safe_inverse(ray_13.dir);
+    uint base_3 = frame_2.tlas_root;
+    GpuNode header_2 = _group_0_binding_2_cs[base_3];
+    vec3 origin_4 = header_2.min_;
+    vec3 scale_3 = header_2.max_;
+    vec3 _e25 = node_point(origin_4, scale_3, uvec3(65535u));
+    float _e29 = best_3.t;
+    float _e30 = slab(origin_4, _e25, ray_13.origin, _e16, ray_13.tmin, _e29);
+    uint _e32 = F32_INF;
+    if ((_e30 == uintBitsToFloat(_e32))) {
+        Candidate _e35 = best_3;
+        return _e35;
     }
+    sp_3 = 0u;
+    child_1 = header_2.a;
     while(true) {
-        uint _e37 = node_1;
-        GpuNode n_8 = _group_0_binding_2_cs[_e37];
-        if (((n_8.b & LEAF_BIT) != 0u)) {
-            if (((n_8.b & ~(LEAF_BIT)) != 0u)) {
-                Candidate _e53 = best_3;
-                Candidate _e54 = intersect_object(n_8.a, ray_12, _e53, shadow_2);
-                best_3 = _e54;
-                uint _e56 = best_3.slot;
-                if ((shadow_2 && (_e56 != NO_HIT))) {
-                    Candidate _e60 = best_3;
-                    return _e60;
+        uint _e40 = child_1;
+        if (((_e40 & NODE_LEAF_BIT) != 0u)) {
+            uint _e45 = child_1;
+            if ((((_e45 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
+                uint _e54 = child_1;
+                Candidate _e57 = best_3;
+                Candidate _e58 = intersect_object((_e54 & NODE_FIRST_MASK), ray_13, _e57, shadow_2);
+                best_3 = _e58;
+                uint _e60 = best_3.slot;
+                if ((shadow_2 && (_e60 != NO_HIT))) {
+                    Candidate _e64 = best_3;
+                    return _e64;
                 }
             }
         } else {
-            uint left = (frame_2.tlas_root + n_8.a);
-            uint right = (left + 1u);
-            GpuNode l_2 = _group_0_binding_2_cs[left];
-            GpuNode rr = _group_0_binding_2_cs[right];
-            float _e77 = best_3.t;
-            float _e78 = slab(l_2.min_, l_2.max_, ray_12.origin, _e16, ray_12.tmin, _e77);
-            float _e84 = best_3.t;
-            float _e85 = slab(rr.min_, rr.max_, ray_12.origin, _e16, ray_12.tmin, _e84);
-            uint _e87 = F32_INF;
-            uint _e91 = F32_INF;
-            if (((_e78 < uintBitsToFloat(_e87)) && (_e85 < uintBitsToFloat(_e91)))) {
-                near_1 = left;
-                far_1 = right;
-                if ((_e85 < _e78)) {
-                    near_1 = right;
-                    far_1 = left;
+            uint _e65 = child_1;
+            GpuNode n_9 = _group_0_binding_2_cs[(base_3 + _e65)];
+            float _e71 = best_3.t;
+            vec2 _e72 = children_entry(n_9, origin_4, scale_3, ray_13, _e16, _e71);
+            float tl_1 = _e72.x;
+            float tr_1 = _e72.y;
+            uint _e76 = F32_INF;
+            uint _e80 = F32_INF;
+            if (((tl_1 < uintBitsToFloat(_e76)) && (tr_1 < uintBitsToFloat(_e80)))) {
+                near_1 = n_9.a;
+                far_1 = n_9.b;
+                if ((tr_1 < tl_1)) {
+                    near_1 = n_9.b;
+                    far_1 = n_9.a;
                 }
-                uint _e98 = sp_3;
-                if ((_e98 < TLAS_STACK)) {
-                    uint _e101 = sp_3;
-                    uint _e102 = far_1;
-                    traversal_stack[min(_e101, 127u)] = _e102;
-                    uint _e107 = sp_3;
-                    sp_3 = (_e107 + 1u);
+                uint _e91 = sp_3;
+                if ((_e91 < TLAS_STACK)) {
+                    uint _e94 = sp_3;
+                    uint _e95 = far_1;
+                    traversal_stack[min(_e94, 127u)] = _e95;
+                    uint _e100 = sp_3;
+                    sp_3 = (_e100 + 1u);
                 }
-                uint _e110 = near_1;
-                node_1 = _e110;
+                uint _e103 = near_1;
+                child_1 = _e103;
                 continue;
             }
-            uint _e112 = F32_INF;
-            if ((_e78 < uintBitsToFloat(_e112))) {
-                node_1 = left;
+            uint _e105 = F32_INF;
+            if ((tl_1 < uintBitsToFloat(_e105))) {
+                child_1 = n_9.a;
                 continue;
             }
-            uint _e116 = F32_INF;
-            if ((_e85 < uintBitsToFloat(_e116))) {
-                node_1 = right;
+            uint _e110 = F32_INF;
+            if ((tr_1 < uintBitsToFloat(_e110))) {
+                child_1 = n_9.b;
                 continue;
             }
         }
-        uint _e120 = sp_3;
-        uvec2 _e121 = pop(0u, _e120);
-        if ((_e121.x == NO_HIT)) {
+        uint _e115 = sp_3;
+        uvec2 _e116 = pop(0u, _e115);
+        if ((_e116.x == NO_HIT)) {
             break;
         }
-        node_1 = _e121.x;
-        sp_3 = _e121.y;
+        child_1 = _e116.x;
+        sp_3 = _e116.y;
     }
-    Candidate _e127 = best_3;
-    return _e127;
+    Candidate _e122 = best_3;
+    return _e122;
 }
 
 Skybox load_Skybox(uint offset_5) {
@@ -1093,7 +1100,7 @@ float srgb_channel(float c_2) {
 }
 
 vec4 texel_at(uint t_1, int x_2, int y) {
-    uint base_3 = _group_0_binding_6_cs[t_1];
+    uint base_4 = _group_0_binding_6_cs[t_1];
     uint _e10 = _group_0_binding_6_cs[(t_1 + 1u)];
     uint w_4 = max(_e10, 1u);
     uint _e17 = _group_0_binding_6_cs[(t_1 + 2u)];
@@ -1107,16 +1114,16 @@ vec4 texel_at(uint t_1, int x_2, int y) {
     uint yi = uint(_e37);
     uint index = ((yi * w_4) + xi);
     if ((format == 0u)) {
-        uint _e46 = _group_0_binding_7_cs[(base_3 + index)];
+        uint _e46 = _group_0_binding_7_cs[(base_4 + index)];
         vec4 c_8 = unpackUnorm4x8(_e46);
         float _e49 = srgb_channel(c_8.x);
         float _e51 = srgb_channel(c_8.y);
         float _e53 = srgb_channel(c_8.z);
         return vec4(_e49, _e51, _e53, c_8.w);
     }
-    uint _e61 = _group_0_binding_7_cs[(base_3 + (index * 2u))];
+    uint _e61 = _group_0_binding_7_cs[(base_4 + (index * 2u))];
     vec2 rg = unpackHalf2x16(_e61);
-    uint _e70 = _group_0_binding_7_cs[((base_3 + (index * 2u)) + 1u)];
+    uint _e70 = _group_0_binding_7_cs[((base_4 + (index * 2u)) + 1u)];
     vec2 ba = unpackHalf2x16(_e70);
     return vec4(rg, ba);
 }
@@ -1140,8 +1147,8 @@ vec4 sample_texture(uint t_2, vec2 uv) {
     return mix(a_7, b_9, vec4(fr.y));
 }
 
-vec3 skybox(Skybox b_5, Ray ray_13) {
-    vec3 _e3 = normalize_vec3f(ray_13.dir);
+vec3 skybox(Skybox b_5, Ray ray_14) {
+    vec3 _e3 = normalize_vec3f(ray_14.dir);
     bool pole = ((_e3.x == 0.0) && (_e3.z == 0.0));
     float longitude = ((pole ? 0.0 : atan(_e3.x, -(_e3.z))) - radians(b_5.rotation));
     float latitude = acos(min(max(_e3.y, -1.0), 1.0));
@@ -1150,37 +1157,37 @@ vec3 skybox(Skybox b_5, Ray ray_13) {
     return (_e34.xyz * vec3(b_5.intensity));
 }
 
-vec3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_14) {
+vec3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_15) {
     Skybox _e2 = load_Skybox(offset_6);
-    vec3 _e3 = skybox(_e2, ray_14);
+    vec3 _e3 = skybox(_e2, ray_15);
     return _e3;
 }
 
-vec3 miss(Ray ray_15) {
+vec3 miss(Ray ray_16) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_3 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_15);
+    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_16);
     return _e9;
 }
 
-vec3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_16, float t_3, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_17, float t_3, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_17, float t_4, vec3 radiance_1) {
+vec3 through_medium(Ray ray_18, float t_4, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_17.medium == 0u)) {
+    if ((ray_18.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_7 = _group_0_binding_3_cs[(ray_17.medium - 1u)];
+    GpuInstance inst_7 = _group_0_binding_3_cs[(ray_18.medium - 1u)];
     if (((inst_7.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_17, t_4, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_18, t_4, radiance_1);
     return _e21;
 }
 
@@ -1209,26 +1216,27 @@ PointLight load_PointLight(uint offset_9) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
-vec3 offset_origin(vec3 p_4, vec3 n_3) {
+vec3 offset_origin(vec3 p_4, vec3 n_4) {
     FrameUniforms _e3 = _group_0_binding_0_cs;
-    GpuNode root_1 = _group_0_binding_2_cs[_e3.tlas_root];
-    vec3 a_8 = max(abs(p_4), max(abs(root_1.min_), abs(root_1.max_)));
+    GpuNode header_3 = _group_0_binding_2_cs[_e3.tlas_root];
+    vec3 _e15 = node_point(header_3.min_, header_3.max_, uvec3(65535u));
+    vec3 a_8 = max(abs(p_4), max(abs(header_3.min_), abs(_e15)));
     float m_3 = max(max(a_8.x, a_8.y), a_8.z);
-    return (p_4 + (n_3 * vec3((m_3 * (1.0 / 65536.0)))));
+    return (p_4 + (n_4 * vec3((m_3 * (1.0 / 65536.0)))));
 }
 
 float shadow_query(vec3 position, vec3 normal, vec3 dir, float dist) {
-    vec3 n_4 = vec3(0.0);
-    n_4 = normal;
-    vec3 _e5 = n_4;
+    vec3 n_5 = vec3(0.0);
+    n_5 = normal;
+    vec3 _e5 = n_5;
     if ((dot(dir, _e5) < 0.0)) {
-        vec3 _e9 = n_4;
-        n_4 = -(_e9);
+        vec3 _e9 = n_5;
+        n_5 = -(_e9);
     }
-    vec3 _e11 = n_4;
+    vec3 _e11 = n_5;
     vec3 _e12 = offset_origin(position, _e11);
-    Ray ray_24 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    Candidate _e23 = intersect_scene(ray_24, true);
+    Ray ray_25 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    Candidate _e23 = intersect_scene(ray_25, true);
     return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
@@ -1265,10 +1273,10 @@ LightSample sample_light_query(uint i_3, vec3 position_3, vec3 normal_3) {
     return _e27;
 }
 
-vec3 lambert_shade(Lambert m_2, Ray ray_18, Hit hit_1) {
+vec3 lambert_shade(Lambert m_2, Ray ray_19, Hit hit_1) {
     vec3 color = vec3(0.0);
     uint i_4 = 0u;
-    vec3 n_9 = faceforward(hit_1.normal, ray_18.dir, hit_1.normal);
+    vec3 n_10 = faceforward(hit_1.normal, ray_19.dir, hit_1.normal);
     color = vec3(0.0);
     uint _e11 = light_count_query();
     i_4 = 0u;
@@ -1286,38 +1294,38 @@ vec3 lambert_shade(Lambert m_2, Ray ray_18, Hit hit_1) {
         uint _e15 = i_4;
         LightSample _e18 = sample_light_query(_e15, hit_1.position, hit_1.geometric_normal);
         vec3 _e19 = color;
-        color = (_e19 + (((m_2.albedo * vec3(INV_PI)) * _e18.radiance) * vec3(max(dot(n_9, _e18.dir), 0.0))));
+        color = (_e19 + (((m_2.albedo * vec3(INV_PI)) * _e18.radiance) * vec3(max(dot(n_10, _e18.dir), 0.0))));
     }
     vec3 _e36 = color;
     return _e36;
 }
 
-vec3 dispatch_closest_hit(uint type_id_5, uint offset_11, Ray ray_19, Hit hit_2, vec3 secondary) {
+vec3 dispatch_closest_hit(uint type_id_5, uint offset_11, Ray ray_20, Hit hit_2, vec3 secondary) {
     Lambert _e3 = load_Lambert(offset_11);
-    vec3 _e4 = lambert_shade(_e3, ray_19, hit_2);
+    vec3 _e4 = lambert_shade(_e3, ray_20, hit_2);
     return _e4;
 }
 
-vec3 shade_direct(Ray ray_20, Candidate c_3) {
+vec3 shade_direct(Ray ray_21, Candidate c_3) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_3.slot];
-    Hit _e6 = finish_hit(ray_20, c_3);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_21, c_3);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e6, vec3(0.0));
     return _e11;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_21, Hit hit_3) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_22, Hit hit_3) {
     return;
 }
 
 vec3 spawn_origin(Hit hit_4, vec3 dir_1) {
-    vec3 n_5 = vec3(0.0);
-    n_5 = hit_4.geometric_normal;
-    vec3 _e4 = n_5;
+    vec3 n_6 = vec3(0.0);
+    n_6 = hit_4.geometric_normal;
+    vec3 _e4 = n_6;
     if ((dot(dir_1, _e4) < 0.0)) {
-        vec3 _e8 = n_5;
-        n_5 = -(_e8);
+        vec3 _e8 = n_6;
+        n_6 = -(_e8);
     }
-    vec3 _e11 = n_5;
+    vec3 _e11 = n_6;
     vec3 _e12 = offset_origin(hit_4.position, _e11);
     return _e12;
 }
@@ -1325,7 +1333,7 @@ vec3 spawn_origin(Hit hit_4, vec3 dir_1) {
 vec3 trace(Ray camera_ray) {
     Frame stack_1[4] = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_22 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_23 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     bool pushed = false;
@@ -1346,38 +1354,38 @@ vec3 trace(Ray camera_ray) {
     }
     stack_1 = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_22 = camera_ray;
+    ray_23 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     while(true) {
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_22;
+            Ray _e28 = ray_23;
             Candidate _e30 = intersect_scene(_e28, false);
             if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_22;
+                Ray _e34 = ray_23;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_22;
+                Ray _e38 = ray_23;
                 vec3 _e39 = miss(_e38);
                 vec3 _e40 = through_medium(_e34, uintBitsToFloat(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = _group_0_binding_3_cs[_e30.slot];
-                Ray _e46 = ray_22;
+                Ray _e46 = ray_23;
                 Hit _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                uint _e56 = ray_22.depth;
+                uint _e56 = ray_23.depth;
                 uint _e60 = depth;
                 if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_22;
+                    Ray _e68 = ray_23;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_10 = min(min(_e70, 1u), MAX_SPAWN);
-                    if ((n_10 > 0u)) {
-                        Ray _e77 = ray_22;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_10, 0u);
+                    uint n_11 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_11 > 0u)) {
+                        Ray _e77 = ray_23;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_11, 0u);
                         i_5 = 0u;
                         bool loop_init_4 = true;
                         while(true) {
@@ -1387,7 +1395,7 @@ vec3 trace(Ray camera_ray) {
                             }
                             loop_init_4 = false;
                             uint _e88 = i_5;
-                            if ((_e88 >= n_10)) {
+                            if ((_e88 >= n_11)) {
                                 break;
                             }
                             uint _e91 = i_5;
@@ -1409,9 +1417,9 @@ vec3 trace(Ray camera_ray) {
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_22;
+                    Ray _e124 = ray_23;
                     vec3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0.0));
-                    Ray _e128 = ray_22;
+                    Ray _e128 = ray_23;
                     vec3 _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1428,9 +1436,9 @@ vec3 trace(Ray camera_ray) {
             uint _e137 = depth;
             uint top = (_e137 - 1u);
             uint _e144 = stack_1[min(top, 3u)].next;
-            uint child_1 = (_e144 - 1u);
+            uint child_2 = (_e144 - 1u);
             vec3 _e151 = stack_1[min(top, 3u)].sum;
-            vec3 _e159 = stack_1[min(top, 3u)].weights[min(child_1, 0u)];
+            vec3 _e159 = stack_1[min(top, 3u)].weights[min(child_2, 0u)];
             vec3 _e160 = value;
             stack_1[min(top, 3u)].sum = (_e151 + (_e159 * _e160));
             have_value = false;
@@ -1449,7 +1457,7 @@ vec3 trace(Ray camera_ray) {
             vec3 _e209 = spawn_origin(hit_7, dir_4);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_22 = Ray(_e209, 0.0, dir_4, uintBitsToFloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_23 = Ray(_e209, 0.0, dir_4, uintBitsToFloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             uint _e224 = stack_1[min(top_1, 3u)].slot;
             GpuInstance inst_10 = _group_0_binding_3_cs[_e224];
@@ -1481,7 +1489,7 @@ void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s_1 = 0u;
-    Ray ray_23 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_24 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_1 = _group_0_binding_1_cs;
     sum = vec3(0.0);
@@ -1503,13 +1511,13 @@ void render_pixel(uvec2 pixel_3) {
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_23 = _e23;
-        ray_23.depth = 0u;
-        ray_23.kind = RAY_CAMERA;
-        vec3 _e31 = ray_23.origin;
+        ray_24 = _e23;
+        ray_24.depth = 0u;
+        ray_24.kind = RAY_CAMERA;
+        vec3 _e31 = ray_24.origin;
         uint _e33 = medium_at(_e31, NO_HIT);
-        ray_23.medium = _e33;
-        Ray _e34 = ray_23;
+        ray_24.medium = _e33;
+        Ray _e34 = ray_24;
         vec3 _e35 = trace(_e34);
         bvec3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

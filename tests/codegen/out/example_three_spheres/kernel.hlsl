@@ -202,17 +202,16 @@ static const uint RAY_CAMERA = 0u;
 static const uint NO_HIT = 4294967295u;
 static const bool HAS_MEDIA = false;
 static const uint MESH_GEOMETRY = 4294967295u;
-static const uint MESH_LEAF_BIT = 2147483648u;
-static const uint MESH_COUNT_SHIFT = 27u;
-static const uint MESH_COUNT_MASK = 15u;
-static const uint MESH_FIRST_MASK = 134217727u;
+static const uint NODE_LEAF_BIT = 2147483648u;
+static const uint NODE_COUNT_SHIFT = 27u;
+static const uint NODE_COUNT_MASK = 15u;
+static const uint NODE_FIRST_MASK = 134217727u;
 static const uint BLAS_STACK = 64u;
 static const uint TLAS_STACK = 64u;
 static const uint BVH_MESH_STACK = 64u;
 static const float TAU = 6.2831855;
 static const float INV_PI = 0.31830987;
 static const bool HAS_SECONDARY_RAYS = false;
-static const uint LEAF_BIT = 2147483648u;
 static const bool HAS_BACKGROUND = true;
 static const uint FLAG_MEDIUM = 4u;
 static const uint RAY_SHADOW = 2u;
@@ -394,16 +393,16 @@ Ray supersampled_ray(SupersampledPinhole cam, uint2 pixel_1, uint sample_1)
     float aspect = (size.x / size.y);
     const float3 _e58 = normalize_vec3f(((_e34 + (_e37 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
     uint _e62 = F32_INF;
-    const Ray ray_24 = ConstructRay(cam.position, 0.0, _e58, asfloat(_e62), 0u, 0u, 0u);
-    return ray_24;
+    const Ray ray_25 = ConstructRay(cam.position, 0.0, _e58, asfloat(_e62), 0u, 0u, 0u);
+    return ray_25;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
 {
     const SupersampledPinhole _e3 = load_SupersampledPinhole(offset_1);
     const Ray _e4 = supersampled_ray(_e3, pixel_2, sample_2);
-    const Ray ray_25 = _e4;
-    return ray_25;
+    const Ray ray_26 = _e4;
+    return ray_26;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -432,8 +431,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_26 = _e25;
-    return ray_26;
+    const Ray ray_27 = _e25;
+    return ray_27;
 }
 
 float3 safe_inverse(float3 d)
@@ -504,17 +503,17 @@ bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
     return true;
 }
 
-uint3 mesh_box_lo(uint3 p)
+uint3 node_box_lo(uint3 p)
 {
     return uint3((p.x & 65535u), (p.x >> 16u), (p.y & 65535u));
 }
 
-float3 mesh_point(float3 origin, float3 scale, uint3 q)
+float3 node_point(float3 origin, float3 scale, uint3 q)
 {
     return (origin + (float3(q) * scale));
 }
 
-uint3 mesh_box_hi(uint3 p_1)
+uint3 node_box_hi(uint3 p_1)
 {
     return uint3((p_1.y >> 16u), (p_1.z & 65535u), (p_1.z >> 16u));
 }
@@ -532,6 +531,23 @@ float slab(float3 lo, float3 hi, float3 origin_1, float3 inv_dir, float tmin_1, 
     }
     uint _e30 = F32_INF;
     return asfloat(_e30);
+}
+
+float2 children_entry(GpuNode n, float3 origin_2, float3 scale_1, Ray ray_3, float3 inv, float tmax_3)
+{
+    uint3 lq = asuint(n.min_);
+    uint3 rq = asuint(n.max_);
+    const uint3 _e10 = node_box_lo(lq);
+    const float3 _e11 = node_point(origin_2, scale_1, _e10);
+    const uint3 _e12 = node_box_hi(lq);
+    const float3 _e13 = node_point(origin_2, scale_1, _e12);
+    const float _e16 = slab(_e11, _e13, ray_3.origin, inv, ray_3.tmin, tmax_3);
+    const uint3 _e17 = node_box_lo(rq);
+    const float3 _e18 = node_point(origin_2, scale_1, _e17);
+    const uint3 _e19 = node_box_hi(rq);
+    const float3 _e20 = node_point(origin_2, scale_1, _e19);
+    const float _e23 = slab(_e18, _e20, ray_3.origin, inv, ray_3.tmin, tmax_3);
+    return float2(_e16, _e23);
 }
 
 uint2 pop(uint base, uint sp)
@@ -552,7 +568,7 @@ GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
     return ret;
 }
 
-Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_3, Candidate best_in, bool shadow)
+Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray_4, Candidate best_in, bool shadow)
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
@@ -562,12 +578,12 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     uint far = (uint)0;
 
     best = best_in;
-    const float3 _e8 = safe_inverse(ray_3.dir);
-    const TriangleRay _e9 = prepare_triangle_ray(ray_3);
+    const float3 _e8 = safe_inverse(ray_4.dir);
+    const TriangleRay _e9 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header = ConstructGpuNode(asfloat(nodes.Load3(base_1*32+0)), asuint(nodes.Load(base_1*32+12)), asfloat(nodes.Load3(base_1*32+16)), asuint(nodes.Load(base_1*32+28)));
-    float3 origin_2 = header.min_;
-    float3 scale_1 = header.max_;
+    float3 origin_3 = header.min_;
+    float3 scale_2 = header.max_;
     sp_1 = 0u;
     child = header.a;
     uint2 loop_bound = uint2(4294967295u, 4294967295u);
@@ -575,11 +591,11 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e20 = child;
-        if (((_e20 & MESH_LEAF_BIT) != 0u)) {
+        if (((_e20 & NODE_LEAF_BIT) != 0u)) {
             uint _e25 = child;
-            uint count = ((_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+            uint count = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
             uint _e32 = child;
-            uint first = (_e32 & MESH_FIRST_MASK);
+            uint first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
             bool loop_init = true;
@@ -598,7 +614,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 uint _e41 = k;
                 uint prim = ((inst_2.triangle_offset + first) + _e41);
                 float _e45 = best.t;
-                const float3 _e46 = hit_triangle(_e9, prim, ray_3.tmin, _e45);
+                const float3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < asfloat(_e49))) {
                     Candidate c_6 = ConstructCandidate(_e46.x, slot_1, prim, _e46.yz, (0.0).xxx);
@@ -615,63 +631,53 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             }
         } else {
             uint _e62 = child;
-            GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e62)*32+0)), asuint(nodes.Load((base_1 + _e62)*32+12)), asfloat(nodes.Load3((base_1 + _e62)*32+16)), asuint(nodes.Load((base_1 + _e62)*32+28)));
-            uint3 lq = asuint(n_6.min_);
-            uint3 rq = asuint(n_6.max_);
-            const uint3 _e71 = mesh_box_lo(lq);
-            const float3 _e72 = mesh_point(origin_2, scale_1, _e71);
-            const uint3 _e73 = mesh_box_hi(lq);
-            const float3 _e74 = mesh_point(origin_2, scale_1, _e73);
-            float _e78 = best.t;
-            const float _e79 = slab(_e72, _e74, ray_3.origin, _e8, ray_3.tmin, _e78);
-            const uint3 _e80 = mesh_box_lo(rq);
-            const float3 _e81 = mesh_point(origin_2, scale_1, _e80);
-            const uint3 _e82 = mesh_box_hi(rq);
-            const float3 _e83 = mesh_point(origin_2, scale_1, _e82);
-            float _e87 = best.t;
-            const float _e88 = slab(_e81, _e83, ray_3.origin, _e8, ray_3.tmin, _e87);
-            uint _e90 = F32_INF;
-            uint _e94 = F32_INF;
-            if (((_e79 < asfloat(_e90)) && (_e88 < asfloat(_e94)))) {
-                near = n_6.a;
-                far = n_6.b;
-                if (((_e88 < _e79) != shadow)) {
-                    near = n_6.b;
-                    far = n_6.a;
+            GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e62)*32+0)), asuint(nodes.Load((base_1 + _e62)*32+12)), asfloat(nodes.Load3((base_1 + _e62)*32+16)), asuint(nodes.Load((base_1 + _e62)*32+28)));
+            float _e68 = best.t;
+            const float2 _e69 = children_entry(n_7, origin_3, scale_2, ray_4, _e8, _e68);
+            float tl = _e69.x;
+            float tr = _e69.y;
+            uint _e73 = F32_INF;
+            uint _e77 = F32_INF;
+            if (((tl < asfloat(_e73)) && (tr < asfloat(_e77)))) {
+                near = n_7.a;
+                far = n_7.b;
+                if (((tr < tl) != shadow)) {
+                    near = n_7.b;
+                    far = n_7.a;
                 }
-                uint _e106 = sp_1;
-                if ((_e106 < BLAS_STACK)) {
-                    uint _e110 = sp_1;
-                    uint _e112 = far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e110), 127u)), 127u)] = _e112;
-                    uint _e117 = sp_1;
-                    sp_1 = (_e117 + 1u);
+                uint _e89 = sp_1;
+                if ((_e89 < BLAS_STACK)) {
+                    uint _e93 = sp_1;
+                    uint _e95 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e93), 127u)), 127u)] = _e95;
+                    uint _e100 = sp_1;
+                    sp_1 = (_e100 + 1u);
                 }
-                uint _e120 = near;
-                child = _e120;
+                uint _e103 = near;
+                child = _e103;
                 continue;
             }
-            uint _e122 = F32_INF;
-            if ((_e79 < asfloat(_e122))) {
-                child = n_6.a;
+            uint _e105 = F32_INF;
+            if ((tl < asfloat(_e105))) {
+                child = n_7.a;
                 continue;
             }
-            uint _e127 = F32_INF;
-            if ((_e88 < asfloat(_e127))) {
-                child = n_6.b;
+            uint _e110 = F32_INF;
+            if ((tr < asfloat(_e110))) {
+                child = n_7.b;
                 continue;
             }
         }
-        uint _e132 = sp_1;
-        const uint2 _e133 = pop(TLAS_STACK, _e132);
-        if ((_e133.x == NO_HIT)) {
+        uint _e115 = sp_1;
+        const uint2 _e116 = pop(TLAS_STACK, _e115);
+        if ((_e116.x == NO_HIT)) {
             break;
         }
-        child = _e133.x;
-        sp_1 = _e133.y;
+        child = _e116.x;
+        sp_1 = _e116.y;
     }
-    Candidate _e139 = best;
-    const Candidate candidate_2 = _e139;
+    Candidate _e122 = best;
+    const Candidate candidate_2 = _e122;
     return candidate_2;
 }
 
@@ -707,28 +713,28 @@ BvhNode mesh_node_query(uint m, uint i)
     uint base_2 = asuint(params.Load(m*4));
     GpuNode header_1 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
     lo_1 = header_1.min_;
-    const float3 _e14 = mesh_point(header_1.min_, header_1.max_, (65535u).xxx);
+    const float3 _e14 = node_point(header_1.min_, header_1.max_, (65535u).xxx);
     hi_1 = _e14;
     reference = header_1.a;
     if ((i >= 2u)) {
-        GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + (i >> 1u))*32+0)), asuint(nodes.Load((base_2 + (i >> 1u))*32+12)), asfloat(nodes.Load3((base_2 + (i >> 1u))*32+16)), asuint(nodes.Load((base_2 + (i >> 1u))*32+28)));
-        q_1 = asuint(n_7.min_);
-        reference = n_7.a;
+        GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + (i >> 1u))*32+0)), asuint(nodes.Load((base_2 + (i >> 1u))*32+12)), asfloat(nodes.Load3((base_2 + (i >> 1u))*32+16)), asuint(nodes.Load((base_2 + (i >> 1u))*32+28)));
+        q_1 = asuint(n_8.min_);
+        reference = n_8.a;
         if (((i & 1u) != 0u)) {
-            q_1 = asuint(n_7.max_);
-            reference = n_7.b;
+            q_1 = asuint(n_8.max_);
+            reference = n_8.b;
         }
         uint3 _e39 = q_1;
-        const uint3 _e40 = mesh_box_lo(_e39);
-        const float3 _e41 = mesh_point(header_1.min_, header_1.max_, _e40);
+        const uint3 _e40 = node_box_lo(_e39);
+        const float3 _e41 = node_point(header_1.min_, header_1.max_, _e40);
         lo_1 = _e41;
         uint3 _e44 = q_1;
-        const uint3 _e45 = mesh_box_hi(_e44);
-        const float3 _e46 = mesh_point(header_1.min_, header_1.max_, _e45);
+        const uint3 _e45 = node_box_hi(_e44);
+        const float3 _e46 = node_point(header_1.min_, header_1.max_, _e45);
         hi_1 = _e46;
     }
     uint _e47 = reference;
-    if (((_e47 & MESH_LEAF_BIT) == 0u)) {
+    if (((_e47 & NODE_LEAF_BIT) == 0u)) {
         float3 _e52 = lo_1;
         float3 _e53 = hi_1;
         uint _e55 = reference;
@@ -736,7 +742,7 @@ BvhNode mesh_node_query(uint m, uint i)
         return bvhnode;
     }
     uint _e59 = reference;
-    uint count_1 = ((_e59 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+    uint count_1 = ((_e59 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
     if ((count_1 == 0u)) {
         const BvhNode bvhnode_1 = ConstructBvhNode(asfloat((2139095039u).xxx), asfloat((4286578687u).xxx), 0u, 0u);
         return bvhnode_1;
@@ -744,32 +750,32 @@ BvhNode mesh_node_query(uint m, uint i)
     float3 _e77 = lo_1;
     float3 _e78 = hi_1;
     uint _e79 = reference;
-    const BvhNode bvhnode_2 = ConstructBvhNode(_e77, _e78, (_e79 & MESH_FIRST_MASK), count_1);
+    const BvhNode bvhnode_2 = ConstructBvhNode(_e77, _e78, (_e79 & NODE_FIRST_MASK), count_1);
     return bvhnode_2;
 }
 
-float2 intersect_aabb(Ray ray_4, float3 min_, float3 max_)
+float2 intersect_aabb(Ray ray_5, float3 min_, float3 max_)
 {
-    bool3 parallel = (abs(ray_4.dir) < (1.1754944e-38).xxx);
+    bool3 parallel = (abs(ray_5.dir) < (1.1754944e-38).xxx);
     float3 _e12 = (1.0).xxx;
-    float3 inv_dir_1 = (_e12 / (parallel ? _e12 : ray_4.dir));
-    float3 _e17 = ((min_ - ray_4.origin) * inv_dir_1);
-    float3 _e18 = ((max_ - ray_4.origin) * inv_dir_1);
-    bool3 _e23 = ((min_ <= ray_4.origin) & (ray_4.origin <= max_));
+    float3 inv_dir_1 = (_e12 / (parallel ? _e12 : ray_5.dir));
+    float3 _e17 = ((min_ - ray_5.origin) * inv_dir_1);
+    float3 _e18 = ((max_ - ray_5.origin) * inv_dir_1);
+    bool3 _e23 = ((min_ <= ray_5.origin) & (ray_5.origin <= max_));
     uint _e25 = F32_INF;
     float3 _e27 = (asfloat(_e25)).xxx;
     uint _e29 = F32_NEG_INF;
     float3 _e31 = (asfloat(_e29)).xxx;
     float3 near_3 = (parallel ? (_e23 ? _e31 : _e27) : min(_e17, _e18));
     float3 far_3 = (parallel ? (_e23 ? _e27 : _e31) : max(_e17, _e18));
-    return float2(max(max(max(near_3.x, near_3.y), near_3.z), ray_4.tmin), min(min(min(far_3.x, far_3.y), far_3.z), ray_4.tmax));
+    return float2(max(max(max(near_3.x, near_3.y), near_3.z), ray_5.tmin), min(min(min(far_3.x, far_3.y), far_3.z), ray_5.tmax));
 }
 
-float bvh_mesh_enter(Ray ray_5, BvhNode n, float tmax_3)
+float bvh_mesh_enter(Ray ray_6, BvhNode n_1, float tmax_4)
 {
-    const float2 _e5 = intersect_aabb(ray_5, n.min_, n.max_);
+    const float2 _e5 = intersect_aabb(ray_6, n_1.min_, n_1.max_);
     uint _e7 = F32_INF;
-    return (((_e5.x <= _e5.y) && (_e5.x <= tmax_3)) ? _e5.x : asfloat(_e7));
+    return (((_e5.x <= _e5.y) && (_e5.x <= tmax_4)) ? _e5.x : asfloat(_e7));
 }
 
 Triangle ConstructTriangle(float3 arg0, float3 arg1, float3 arg2) {
@@ -799,10 +805,10 @@ Intersection ConstructIntersection(float arg0, float3 arg1, float2 arg2) {
     return ret;
 }
 
-Intersection intersect_triangle(Ray ray_6, Triangle tri)
+Intersection intersect_triangle(Ray ray_7, Triangle tri)
 {
     uint3 _e10 = (2139095040u).xxx;
-    float3 dir_2 = ((abs(ray_6.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_6.dir);
+    float3 dir_2 = ((abs(ray_7.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_7.dir);
     float3 _e31 = abs(dir_2);
     bool _e38 = (_e31.y > _e31.x);
     uint kz_1 = ((_e31.z > (_e38 ? _e31.y : _e31.x)) ? 2u : (_e38 ? 1u : 0u));
@@ -815,13 +821,13 @@ Intersection intersect_triangle(Ray ray_6, Triangle tri)
     float sx = (dir_2[min(uint(kx_1), 2u)] / dz_1);
     float sy = (dir_2[min(uint(ky_1), 2u)] / dz_1);
     float sz = (1.0 / dz_1);
-    float3 _e62 = (tri.v0_ - ray_6.origin);
+    float3 _e62 = (tri.v0_ - ray_7.origin);
     float _e68 = (_e62[min(uint(kx_1), 2u)] - (sx * _e62[min(uint(kz_1), 2u)]));
     float _e69 = (_e62[min(uint(ky_1), 2u)] - (sy * _e62[min(uint(kz_1), 2u)]));
-    float3 _e71 = (tri.v1_ - ray_6.origin);
+    float3 _e71 = (tri.v1_ - ray_7.origin);
     float _e77 = (_e71[min(uint(kx_1), 2u)] - (sx * _e71[min(uint(kz_1), 2u)]));
     float _e78 = (_e71[min(uint(ky_1), 2u)] - (sy * _e71[min(uint(kz_1), 2u)]));
-    float3 _e80 = (tri.v2_ - ray_6.origin);
+    float3 _e80 = (tri.v2_ - ray_7.origin);
     float _e86 = (_e80[min(uint(kx_1), 2u)] - (sx * _e80[min(uint(kz_1), 2u)]));
     float _e87 = (_e80[min(uint(ky_1), 2u)] - (sy * _e80[min(uint(kz_1), 2u)]));
     float u_1 = ((_e86 * _e78) - (_e87 * _e77));
@@ -830,7 +836,7 @@ Intersection intersect_triangle(Ray ray_6, Triangle tri)
     float det_1 = ((u_1 + v_2) + w_1);
     float _e112 = (1.0 / det_1);
     float t_6 = ((((u_1 * (sz * _e62[min(uint(kz_1), 2u)])) + (v_2 * (sz * _e71[min(uint(kz_1), 2u)]))) + (w_1 * (sz * _e80[min(uint(kz_1), 2u)]))) * _e112);
-    bool hit_6 = (((((all(((asuint(ray_6.origin) & (2147483647u).xxx) < _e10)) && all(((asuint(ray_6.dir) & (2147483647u).xxx) < _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_6 >= ray_6.tmin) && (t_6 <= ray_6.tmax)));
+    bool hit_6 = (((((all(((asuint(ray_7.origin) & (2147483647u).xxx) < _e10)) && all(((asuint(ray_7.dir) & (2147483647u).xxx) < _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_6 >= ray_7.tmin) && (t_6 <= ray_7.tmax)));
     const float3 _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     uint _e137 = F32_INF;
     const Intersection intersection = ConstructIntersection((hit_6 ? t_6 : asfloat(_e137)), (hit_6 ? _e132 : float3(0.0, 0.0, 1.0)), (hit_6 ? float2((v_2 * _e112), (w_1 * _e112)) : (0.0).xx));
@@ -851,7 +857,7 @@ ret_ZeroValuearray64_float_ ZeroValuearray64_float_() {
     return (float[64])0;
 }
 
-Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7)
+Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_8)
 {
     Intersection best_1 = (Intersection)0;
     Ray r_2 = (Ray)0;
@@ -864,7 +870,7 @@ Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_7)
 
     uint _e3 = F32_INF;
     best_1 = ConstructIntersection(asfloat(_e3), float3(0.0, 0.0, 1.0), ZeroValuefloat2());
-    r_2 = ray_7;
+    r_2 = ray_8;
     stack = ZeroValuearray64_uint_();
     stack_t = ZeroValuearray64_float_();
     sp_2 = 0u;
@@ -991,14 +997,14 @@ Sphere load_Sphere(uint offset_3)
     return sphere;
 }
 
-Intersection sphere_intersect(Sphere s, Ray ray_8)
+Intersection sphere_intersect(Sphere s, Ray ray_9)
 {
     float t = (float)0;
 
-    float3 f_1 = (ray_8.origin - s.center_);
-    float a_6 = dot(ray_8.dir, ray_8.dir);
-    float b_7 = -(dot(f_1, ray_8.dir));
-    float3 l_1 = (f_1 + (ray_8.dir * ((b_7 / a_6)).xxx));
+    float3 f_1 = (ray_9.origin - s.center_);
+    float a_6 = dot(ray_9.dir, ray_9.dir);
+    float b_7 = -(dot(f_1, ray_9.dir));
+    float3 l_1 = (f_1 + (ray_9.dir * ((b_7 / a_6)).xxx));
     float r2_ = (s.radius * s.radius);
     float disc = (a_6 * (r2_ - dot(l_1, l_1)));
     if ((!((disc >= 0.0)) || !((a_6 > 0.0)))) {
@@ -1011,18 +1017,18 @@ Intersection sphere_intersect(Sphere s, Ray ray_8)
     float t1_1 = (q_2 / a_6);
     t = min(t0_1, t1_1);
     float _e52 = t;
-    if (!((_e52 >= ray_8.tmin))) {
+    if (!((_e52 >= ray_9.tmin))) {
         t = max(t0_1, t1_1);
     }
     float _e57 = t;
     float _e60 = t;
-    if (!(((_e57 >= ray_8.tmin) && (_e60 <= ray_8.tmax)))) {
+    if (!(((_e57 >= ray_9.tmin) && (_e60 <= ray_9.tmax)))) {
         uint _e66 = F32_INF;
         const Intersection intersection_4 = ConstructIntersection(asfloat(_e66), float3(0.0, 0.0, 1.0), ZeroValuefloat2());
         return intersection_4;
     }
     float _e76 = t;
-    const float3 _e82 = normalize_vec3f(((ray_8.origin + (ray_8.dir * (_e76).xxx)) - s.center_));
+    const float3 _e82 = normalize_vec3f(((ray_9.origin + (ray_9.dir * (_e76).xxx)) - s.center_));
     float u_2 = (((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (atan2(_e82.z, -(_e82.x)) / TAU)));
     float2 uv_1 = float2(u_2, (acos(min(max(_e82.y, -1.0), 1.0)) * INV_PI));
     float _e109 = t;
@@ -1034,18 +1040,18 @@ Intersection ZeroValueIntersection() {
     return (Intersection)0;
 }
 
-Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_9)
+Intersection dispatch_intersection(uint type_id_1, uint offset_4, Ray ray_10)
 {
     switch(type_id_1) {
         case 0u: {
             const BvhMesh _e3 = load_BvhMesh(offset_4);
-            const Intersection _e4 = bvh_mesh_intersect(_e3, ray_9);
+            const Intersection _e4 = bvh_mesh_intersect(_e3, ray_10);
             const Intersection intersection_6 = _e4;
             return intersection_6;
         }
         case 1u: {
             const Sphere _e5 = load_Sphere(offset_4);
-            const Intersection _e6 = sphere_intersect(_e5, ray_9);
+            const Intersection _e6 = sphere_intersect(_e5, ray_10);
             const Intersection intersection_7 = _e6;
             return intersection_7;
         }
@@ -1076,17 +1082,17 @@ GpuInstance ConstructGpuInstance(float4 arg0, float4 arg1, float4 arg2, float4 a
     return ret;
 }
 
-Candidate intersect_object(uint slot_2, Ray ray_10, Candidate best_2, bool shadow_1)
+Candidate intersect_object(uint slot_2, Ray ray_11, Candidate best_2, bool shadow_1)
 {
     Ray r_3 = (Ray)0;
 
     GpuInstance inst_5 = ConstructGpuInstance(asfloat(instances.Load4(slot_2*128+0)), asfloat(instances.Load4(slot_2*128+16)), asfloat(instances.Load4(slot_2*128+32)), asfloat(instances.Load4(slot_2*128+48)), asfloat(instances.Load4(slot_2*128+64)), asfloat(instances.Load4(slot_2*128+80)), asuint(instances.Load(slot_2*128+96)), asuint(instances.Load(slot_2*128+100)), asuint(instances.Load(slot_2*128+104)), asuint(instances.Load(slot_2*128+108)), asuint(instances.Load(slot_2*128+112)), asuint(instances.Load(slot_2*128+116)), asuint(instances.Load(slot_2*128+120)), asuint(instances.Load(slot_2*128+124)));
-    const Ray _e7 = to_object(inst_5, ray_10);
+    const Ray _e7 = to_object(inst_5, ray_11);
     r_3 = _e7;
     r_3.tmax = best_2.t;
     if ((inst_5.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_3;
-        const Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_10, _e14, best_2, shadow_1);
+        const Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_11, _e14, best_2, shadow_1);
         const Candidate candidate_3 = _e15;
         return candidate_3;
     }
@@ -1097,7 +1103,7 @@ Candidate intersect_object(uint slot_2, Ray ray_10, Candidate best_2, bool shado
     uint _e31 = F32_INF;
     if ((((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < asfloat(_e31)))) {
         Candidate c_7 = ConstructCandidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        const bool _e40 = accept(inst_5, ray_10, c_7);
+        const bool _e40 = accept(inst_5, ray_11, c_7);
         if (_e40) {
             const Candidate candidate_4 = c_7;
             return candidate_4;
@@ -1124,27 +1130,27 @@ float3 point_to_world(GpuInstance inst_3, float3 p_2)
 
 float3 decode_octahedral(uint bits)
 {
-    float3 n_1 = (float3)0;
+    float3 n_2 = (float3)0;
 
     float2 e = (float2(int2(bits << 16, bits) >> 16) / 32767.0);
-    n_1 = float3(e.x, e.y, ((1.0 - abs(e.x)) - abs(e.y)));
-    float _e14 = n_1.z;
+    n_2 = float3(e.x, e.y, ((1.0 - abs(e.x)) - abs(e.y)));
+    float _e14 = n_2.z;
     if ((_e14 < 0.0)) {
-        float3 _e21 = n_1;
+        float3 _e21 = n_2;
         float2 s_4 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
-        float3 _e29 = n_1;
+        float3 _e29 = n_2;
         float2 xy = (((1.0).xx - abs(_e29.yx)) * s_4);
-        float _e37 = n_1.z;
-        n_1 = float3(xy.x, xy.y, _e37);
+        float _e37 = n_2.z;
+        n_2 = float3(xy.x, xy.y, _e37);
     }
-    float3 _e39 = n_1;
+    float3 _e39 = n_2;
     const float3 _e40 = normalize_vec3f(_e39);
     return _e40;
 }
 
-float3 normal_to_world(GpuInstance inst_4, float3 n_2)
+float3 normal_to_world(GpuInstance inst_4, float3 n_3)
 {
-    float3 w_2 = (((inst_4.world_to_object_0_.xyz * (n_2.x).xxx) + (inst_4.world_to_object_1_.xyz * (n_2.y).xxx)) + (inst_4.world_to_object_2_.xyz * (n_2.z).xxx));
+    float3 w_2 = (((inst_4.world_to_object_0_.xyz * (n_3.x).xxx) + (inst_4.world_to_object_1_.xyz * (n_3.y).xxx)) + (inst_4.world_to_object_2_.xyz * (n_3.z).xxx));
     const float3 _e19 = normalize_vec3f(w_2);
     return _e19;
 }
@@ -1162,14 +1168,14 @@ Hit ConstructHit(float3 arg0, float arg1, float3 arg2, float3 arg3, float2 arg4,
     return ret;
 }
 
-Hit finish_hit(Ray ray_11, Candidate c_1)
+Hit finish_hit(Ray ray_12, Candidate c_1)
 {
     Hit hit = (Hit)0;
     float3 n_geo = (float3)0;
     float3 n_shade = (float3)0;
 
     GpuInstance inst_6 = ConstructGpuInstance(asfloat(instances.Load4(c_1.slot*128+0)), asfloat(instances.Load4(c_1.slot*128+16)), asfloat(instances.Load4(c_1.slot*128+32)), asfloat(instances.Load4(c_1.slot*128+48)), asfloat(instances.Load4(c_1.slot*128+64)), asfloat(instances.Load4(c_1.slot*128+80)), asuint(instances.Load(c_1.slot*128+96)), asuint(instances.Load(c_1.slot*128+100)), asuint(instances.Load(c_1.slot*128+104)), asuint(instances.Load(c_1.slot*128+108)), asuint(instances.Load(c_1.slot*128+112)), asuint(instances.Load(c_1.slot*128+116)), asuint(instances.Load(c_1.slot*128+120)), asuint(instances.Load(c_1.slot*128+124)));
-    hit = ConstructHit((ray_11.origin + (ray_11.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_6.object, c_1.primitive);
+    hit = ConstructHit((ray_12.origin + (ray_12.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_6.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_6.geometry_type == MESH_GEOMETRY)) {
@@ -1208,7 +1214,7 @@ Hit finish_hit(Ray ray_11, Candidate c_1)
     const float3 _e131 = normal_to_world(inst_6, _e130);
     hit.normal = _e131;
     float3 _e135 = hit.geometric_normal;
-    hit.front_face = (dot(ray_11.dir, _e135) < 0.0);
+    hit.front_face = (dot(ray_12.dir, _e135) < 0.0);
     Hit _e139 = hit;
     const Hit hit_7 = _e139;
     return hit_7;
@@ -1266,17 +1272,17 @@ uint medium_at(float3 p_3, uint exclude)
     return _e60;
 }
 
-Candidate intersect_scene(Ray ray_12, bool shadow_2)
+Candidate intersect_scene(Ray ray_13, bool shadow_2)
 {
     Candidate best_3 = (Candidate)0;
     uint sp_3 = (uint)0;
-    uint node_1 = (uint)0;
+    uint child_1 = (uint)0;
     uint near_1 = (uint)0;
     uint far_1 = (uint)0;
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_12.tmax);
+    const Candidate _e7 = no_candidate(ray_13.tmax);
     best_3 = _e7;
     FrameUniforms frame_2 = frame;
     if ((frame_2.instance_count == 0u)) {
@@ -1284,88 +1290,90 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
         const Candidate candidate_6 = _e14;
         return candidate_6;
     }
-    const float3 _e16 = safe_inverse(ray_12.dir);
-    sp_3 = 0u;
-    node_1 = frame_2.tlas_root;
-    uint _e21 = node_1;
-    GpuNode root = ConstructGpuNode(asfloat(nodes.Load3(_e21*32+0)), asuint(nodes.Load(_e21*32+12)), asfloat(nodes.Load3(_e21*32+16)), asuint(nodes.Load(_e21*32+28)));
-    float _e30 = best_3.t;
-    const float _e31 = slab(root.min_, root.max_, ray_12.origin, _e16, ray_12.tmin, _e30);
-    uint _e33 = F32_INF;
-    if ((_e31 == asfloat(_e33))) {
-        Candidate _e36 = best_3;
-        const Candidate candidate_7 = _e36;
+    const float3 _e16 = safe_inverse(ray_13.dir);
+    uint base_3 = frame_2.tlas_root;
+    GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_3*32+0)), asuint(nodes.Load(base_3*32+12)), asfloat(nodes.Load3(base_3*32+16)), asuint(nodes.Load(base_3*32+28)));
+    float3 origin_4 = header_2.min_;
+    float3 scale_3 = header_2.max_;
+    const float3 _e25 = node_point(origin_4, scale_3, (65535u).xxx);
+    float _e29 = best_3.t;
+    const float _e30 = slab(origin_4, _e25, ray_13.origin, _e16, ray_13.tmin, _e29);
+    uint _e32 = F32_INF;
+    if ((_e30 == asfloat(_e32))) {
+        Candidate _e35 = best_3;
+        const Candidate candidate_7 = _e35;
         return candidate_7;
     }
+    sp_3 = 0u;
+    child_1 = header_2.a;
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        uint _e37 = node_1;
-        GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3(_e37*32+0)), asuint(nodes.Load(_e37*32+12)), asfloat(nodes.Load3(_e37*32+16)), asuint(nodes.Load(_e37*32+28)));
-        if (((n_8.b & LEAF_BIT) != 0u)) {
-            if (((n_8.b & ~(LEAF_BIT)) != 0u)) {
-                Candidate _e53 = best_3;
-                const Candidate _e54 = intersect_object(n_8.a, ray_12, _e53, shadow_2);
-                best_3 = _e54;
-                uint _e56 = best_3.slot;
-                if ((shadow_2 && (_e56 != NO_HIT))) {
-                    Candidate _e60 = best_3;
-                    const Candidate candidate_8 = _e60;
+        uint _e40 = child_1;
+        if (((_e40 & NODE_LEAF_BIT) != 0u)) {
+            uint _e45 = child_1;
+            if ((((_e45 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
+                uint _e54 = child_1;
+                Candidate _e57 = best_3;
+                const Candidate _e58 = intersect_object((_e54 & NODE_FIRST_MASK), ray_13, _e57, shadow_2);
+                best_3 = _e58;
+                uint _e60 = best_3.slot;
+                if ((shadow_2 && (_e60 != NO_HIT))) {
+                    Candidate _e64 = best_3;
+                    const Candidate candidate_8 = _e64;
                     return candidate_8;
                 }
             }
         } else {
-            uint left = (frame_2.tlas_root + n_8.a);
-            uint right = (left + 1u);
-            GpuNode l_2 = ConstructGpuNode(asfloat(nodes.Load3(left*32+0)), asuint(nodes.Load(left*32+12)), asfloat(nodes.Load3(left*32+16)), asuint(nodes.Load(left*32+28)));
-            GpuNode rr = ConstructGpuNode(asfloat(nodes.Load3(right*32+0)), asuint(nodes.Load(right*32+12)), asfloat(nodes.Load3(right*32+16)), asuint(nodes.Load(right*32+28)));
-            float _e77 = best_3.t;
-            const float _e78 = slab(l_2.min_, l_2.max_, ray_12.origin, _e16, ray_12.tmin, _e77);
-            float _e84 = best_3.t;
-            const float _e85 = slab(rr.min_, rr.max_, ray_12.origin, _e16, ray_12.tmin, _e84);
-            uint _e87 = F32_INF;
-            uint _e91 = F32_INF;
-            if (((_e78 < asfloat(_e87)) && (_e85 < asfloat(_e91)))) {
-                near_1 = left;
-                far_1 = right;
-                if ((_e85 < _e78)) {
-                    near_1 = right;
-                    far_1 = left;
+            uint _e65 = child_1;
+            GpuNode n_9 = ConstructGpuNode(asfloat(nodes.Load3((base_3 + _e65)*32+0)), asuint(nodes.Load((base_3 + _e65)*32+12)), asfloat(nodes.Load3((base_3 + _e65)*32+16)), asuint(nodes.Load((base_3 + _e65)*32+28)));
+            float _e71 = best_3.t;
+            const float2 _e72 = children_entry(n_9, origin_4, scale_3, ray_13, _e16, _e71);
+            float tl_1 = _e72.x;
+            float tr_1 = _e72.y;
+            uint _e76 = F32_INF;
+            uint _e80 = F32_INF;
+            if (((tl_1 < asfloat(_e76)) && (tr_1 < asfloat(_e80)))) {
+                near_1 = n_9.a;
+                far_1 = n_9.b;
+                if ((tr_1 < tl_1)) {
+                    near_1 = n_9.b;
+                    far_1 = n_9.a;
                 }
-                uint _e98 = sp_3;
-                if ((_e98 < TLAS_STACK)) {
-                    uint _e101 = sp_3;
-                    uint _e102 = far_1;
-                    traversal_stack[min(uint(min(_e101, 127u)), 127u)] = _e102;
-                    uint _e107 = sp_3;
-                    sp_3 = (_e107 + 1u);
+                uint _e91 = sp_3;
+                if ((_e91 < TLAS_STACK)) {
+                    uint _e94 = sp_3;
+                    uint _e95 = far_1;
+                    traversal_stack[min(uint(min(_e94, 127u)), 127u)] = _e95;
+                    uint _e100 = sp_3;
+                    sp_3 = (_e100 + 1u);
                 }
-                uint _e110 = near_1;
-                node_1 = _e110;
+                uint _e103 = near_1;
+                child_1 = _e103;
                 continue;
             }
-            uint _e112 = F32_INF;
-            if ((_e78 < asfloat(_e112))) {
-                node_1 = left;
+            uint _e105 = F32_INF;
+            if ((tl_1 < asfloat(_e105))) {
+                child_1 = n_9.a;
                 continue;
             }
-            uint _e116 = F32_INF;
-            if ((_e85 < asfloat(_e116))) {
-                node_1 = right;
+            uint _e110 = F32_INF;
+            if ((tr_1 < asfloat(_e110))) {
+                child_1 = n_9.b;
                 continue;
             }
         }
-        uint _e120 = sp_3;
-        const uint2 _e121 = pop(0u, _e120);
-        if ((_e121.x == NO_HIT)) {
+        uint _e115 = sp_3;
+        const uint2 _e116 = pop(0u, _e115);
+        if ((_e116.x == NO_HIT)) {
             break;
         }
-        node_1 = _e121.x;
-        sp_3 = _e121.y;
+        child_1 = _e116.x;
+        sp_3 = _e116.y;
     }
-    Candidate _e127 = best_3;
-    const Candidate candidate_9 = _e127;
+    Candidate _e122 = best_3;
+    const Candidate candidate_9 = _e122;
     return candidate_9;
 }
 
@@ -1416,7 +1424,7 @@ float srgb_channel(float c_2)
 
 float4 texel_at(uint t_1, int x_2, int y)
 {
-    uint base_3 = asuint(params.Load(t_1*4));
+    uint base_4 = asuint(params.Load(t_1*4));
     uint _e10 = asuint(params.Load((t_1 + 1u)*4));
     uint w_4 = max(_e10, 1u);
     uint _e17 = asuint(params.Load((t_1 + 2u)*4));
@@ -1430,16 +1438,16 @@ float4 texel_at(uint t_1, int x_2, int y)
     uint yi = uint(_e37);
     uint index = ((yi * w_4) + xi);
     if ((format == 0u)) {
-        uint _e46 = asuint(texels.Load((base_3 + index)*4));
+        uint _e46 = asuint(texels.Load((base_4 + index)*4));
         float4 c_8 = (float4(_e46 & 0xFF, _e46 >> 8 & 0xFF, _e46 >> 16 & 0xFF, _e46 >> 24) / 255.0);
         const float _e49 = srgb_channel(c_8.x);
         const float _e51 = srgb_channel(c_8.y);
         const float _e53 = srgb_channel(c_8.z);
         return float4(_e49, _e51, _e53, c_8.w);
     }
-    uint _e61 = asuint(texels.Load((base_3 + (index * 2u))*4));
+    uint _e61 = asuint(texels.Load((base_4 + (index * 2u))*4));
     float2 rg = float2(f16tof32(_e61), f16tof32((_e61) >> 16));
-    uint _e70 = asuint(texels.Load(((base_3 + (index * 2u)) + 1u)*4));
+    uint _e70 = asuint(texels.Load(((base_4 + (index * 2u)) + 1u)*4));
     float2 ba = float2(f16tof32(_e70), f16tof32((_e70) >> 16));
     return float4(rg, ba);
 }
@@ -1464,9 +1472,9 @@ float4 sample_texture(uint t_2, float2 uv)
     return lerp(a_7, b_9, (fr.y).xxxx);
 }
 
-float3 skybox(Skybox b_5, Ray ray_13)
+float3 skybox(Skybox b_5, Ray ray_14)
 {
-    const float3 _e3 = normalize_vec3f(ray_13.dir);
+    const float3 _e3 = normalize_vec3f(ray_14.dir);
     bool pole = ((_e3.x == 0.0) && (_e3.z == 0.0));
     float longitude = ((pole ? 0.0 : atan2(_e3.x, -(_e3.z))) - radians(b_5.rotation));
     float latitude = acos(min(max(_e3.y, -1.0), 1.0));
@@ -1475,20 +1483,20 @@ float3 skybox(Skybox b_5, Ray ray_13)
     return (_e34.xyz * (b_5.intensity).xxx);
 }
 
-float3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_14)
+float3 dispatch_miss(uint type_id_2, uint offset_6, Ray ray_15)
 {
     const Skybox _e2 = load_Skybox(offset_6);
-    const float3 _e3 = skybox(_e2, ray_14);
+    const float3 _e3 = skybox(_e2, ray_15);
     return _e3;
 }
 
-float3 miss(Ray ray_15)
+float3 miss(Ray ray_16)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
     FrameUniforms frame_3 = frame;
-    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_15);
+    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_16);
     return _e9;
 }
 
@@ -1496,24 +1504,24 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_16, float t_3, float3 radiance)
+float3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_17, float t_3, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_17, float t_4, float3 radiance_1)
+float3 through_medium(Ray ray_18, float t_4, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_17.medium == 0u)) {
+    if ((ray_18.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4((ray_17.medium - 1u)*128+0)), asfloat(instances.Load4((ray_17.medium - 1u)*128+16)), asfloat(instances.Load4((ray_17.medium - 1u)*128+32)), asfloat(instances.Load4((ray_17.medium - 1u)*128+48)), asfloat(instances.Load4((ray_17.medium - 1u)*128+64)), asfloat(instances.Load4((ray_17.medium - 1u)*128+80)), asuint(instances.Load((ray_17.medium - 1u)*128+96)), asuint(instances.Load((ray_17.medium - 1u)*128+100)), asuint(instances.Load((ray_17.medium - 1u)*128+104)), asuint(instances.Load((ray_17.medium - 1u)*128+108)), asuint(instances.Load((ray_17.medium - 1u)*128+112)), asuint(instances.Load((ray_17.medium - 1u)*128+116)), asuint(instances.Load((ray_17.medium - 1u)*128+120)), asuint(instances.Load((ray_17.medium - 1u)*128+124)));
+    GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4((ray_18.medium - 1u)*128+0)), asfloat(instances.Load4((ray_18.medium - 1u)*128+16)), asfloat(instances.Load4((ray_18.medium - 1u)*128+32)), asfloat(instances.Load4((ray_18.medium - 1u)*128+48)), asfloat(instances.Load4((ray_18.medium - 1u)*128+64)), asfloat(instances.Load4((ray_18.medium - 1u)*128+80)), asuint(instances.Load((ray_18.medium - 1u)*128+96)), asuint(instances.Load((ray_18.medium - 1u)*128+100)), asuint(instances.Load((ray_18.medium - 1u)*128+104)), asuint(instances.Load((ray_18.medium - 1u)*128+108)), asuint(instances.Load((ray_18.medium - 1u)*128+112)), asuint(instances.Load((ray_18.medium - 1u)*128+116)), asuint(instances.Load((ray_18.medium - 1u)*128+120)), asuint(instances.Load((ray_18.medium - 1u)*128+124)));
     if (((inst_7.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_17, t_4, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_18, t_4, radiance_1);
     return _e21;
 }
 
@@ -1563,29 +1571,30 @@ PointLight load_PointLight(uint offset_9)
     return pointlight;
 }
 
-float3 offset_origin(float3 p_4, float3 n_3)
+float3 offset_origin(float3 p_4, float3 n_4)
 {
     FrameUniforms _e3 = frame;
-    GpuNode root_1 = ConstructGpuNode(asfloat(nodes.Load3(_e3.tlas_root*32+0)), asuint(nodes.Load(_e3.tlas_root*32+12)), asfloat(nodes.Load3(_e3.tlas_root*32+16)), asuint(nodes.Load(_e3.tlas_root*32+28)));
-    float3 a_8 = max(abs(p_4), max(abs(root_1.min_), abs(root_1.max_)));
+    GpuNode header_3 = ConstructGpuNode(asfloat(nodes.Load3(_e3.tlas_root*32+0)), asuint(nodes.Load(_e3.tlas_root*32+12)), asfloat(nodes.Load3(_e3.tlas_root*32+16)), asuint(nodes.Load(_e3.tlas_root*32+28)));
+    const float3 _e15 = node_point(header_3.min_, header_3.max_, (65535u).xxx);
+    float3 a_8 = max(abs(p_4), max(abs(header_3.min_), abs(_e15)));
     float m_3 = max(max(a_8.x, a_8.y), a_8.z);
-    return (p_4 + (n_3 * ((m_3 * (1.0 / 65536.0))).xxx));
+    return (p_4 + (n_4 * ((m_3 * (1.0 / 65536.0))).xxx));
 }
 
 float shadow_query(float3 position, float3 normal, float3 dir, float dist)
 {
-    float3 n_4 = (float3)0;
+    float3 n_5 = (float3)0;
 
-    n_4 = normal;
-    float3 _e5 = n_4;
+    n_5 = normal;
+    float3 _e5 = n_5;
     if ((dot(dir, _e5) < 0.0)) {
-        float3 _e9 = n_4;
-        n_4 = -(_e9);
+        float3 _e9 = n_5;
+        n_5 = -(_e9);
     }
-    float3 _e11 = n_4;
+    float3 _e11 = n_5;
     const float3 _e12 = offset_origin(position, _e11);
-    Ray ray_27 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    const Candidate _e23 = intersect_scene(ray_27, true);
+    Ray ray_28 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    const Candidate _e23 = intersect_scene(ray_28, true);
     return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
@@ -1638,12 +1647,12 @@ LightSample sample_light_query(uint i_3, float3 position_3, float3 normal_3)
     return lightsample_3;
 }
 
-float3 lambert_shade(Lambert m_2, Ray ray_18, Hit hit_1)
+float3 lambert_shade(Lambert m_2, Ray ray_19, Hit hit_1)
 {
     float3 color = (float3)0;
     uint i_4 = (uint)0;
 
-    float3 n_9 = faceforward(hit_1.normal, ray_18.dir, hit_1.normal);
+    float3 n_10 = faceforward(hit_1.normal, ray_19.dir, hit_1.normal);
     color = (0.0).xxx;
     const uint _e11 = light_count_query();
     i_4 = 0u;
@@ -1664,43 +1673,43 @@ float3 lambert_shade(Lambert m_2, Ray ray_18, Hit hit_1)
         uint _e15 = i_4;
         const LightSample _e18 = sample_light_query(_e15, hit_1.position, hit_1.geometric_normal);
         float3 _e19 = color;
-        color = (_e19 + (((m_2.albedo * (INV_PI).xxx) * _e18.radiance) * (max(dot(n_9, _e18.dir), 0.0)).xxx));
+        color = (_e19 + (((m_2.albedo * (INV_PI).xxx) * _e18.radiance) * (max(dot(n_10, _e18.dir), 0.0)).xxx));
     }
     float3 _e36 = color;
     return _e36;
 }
 
-float3 dispatch_closest_hit(uint type_id_5, uint offset_11, Ray ray_19, Hit hit_2, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_5, uint offset_11, Ray ray_20, Hit hit_2, float3 secondary)
 {
     const Lambert _e3 = load_Lambert(offset_11);
-    const float3 _e4 = lambert_shade(_e3, ray_19, hit_2);
+    const float3 _e4 = lambert_shade(_e3, ray_20, hit_2);
     return _e4;
 }
 
-float3 shade_direct(Ray ray_20, Candidate c_3)
+float3 shade_direct(Ray ray_21, Candidate c_3)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_3.slot*128+0)), asfloat(instances.Load4(c_3.slot*128+16)), asfloat(instances.Load4(c_3.slot*128+32)), asfloat(instances.Load4(c_3.slot*128+48)), asfloat(instances.Load4(c_3.slot*128+64)), asfloat(instances.Load4(c_3.slot*128+80)), asuint(instances.Load(c_3.slot*128+96)), asuint(instances.Load(c_3.slot*128+100)), asuint(instances.Load(c_3.slot*128+104)), asuint(instances.Load(c_3.slot*128+108)), asuint(instances.Load(c_3.slot*128+112)), asuint(instances.Load(c_3.slot*128+116)), asuint(instances.Load(c_3.slot*128+120)), asuint(instances.Load(c_3.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_20, c_3);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_21, c_3);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e6, (0.0).xxx);
     return _e11;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_21, Hit hit_3)
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_22, Hit hit_3)
 {
     return;
 }
 
 float3 spawn_origin(Hit hit_4, float3 dir_1)
 {
-    float3 n_5 = (float3)0;
+    float3 n_6 = (float3)0;
 
-    n_5 = hit_4.geometric_normal;
-    float3 _e4 = n_5;
+    n_6 = hit_4.geometric_normal;
+    float3 _e4 = n_6;
     if ((dot(dir_1, _e4) < 0.0)) {
-        float3 _e8 = n_5;
-        n_5 = -(_e8);
+        float3 _e8 = n_6;
+        n_6 = -(_e8);
     }
-    float3 _e11 = n_5;
+    float3 _e11 = n_6;
     const float3 _e12 = offset_origin(hit_4.position, _e11);
     return _e12;
 }
@@ -1732,7 +1741,7 @@ float3 trace(Ray camera_ray)
 {
     Frame stack_1[4] = (Frame[4])0;
     uint depth = (uint)0;
-    Ray ray_22 = (Ray)0;
+    Ray ray_23 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     bool pushed = (bool)0;
@@ -1754,7 +1763,7 @@ float3 trace(Ray camera_ray)
     }
     stack_1 = ZeroValuearray4_Frame_();
     depth = 0u;
-    ray_22 = camera_ray;
+    ray_23 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
@@ -1763,32 +1772,32 @@ float3 trace(Ray camera_ray)
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_22;
+            Ray _e28 = ray_23;
             const Candidate _e30 = intersect_scene(_e28, false);
             if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_22;
+                Ray _e34 = ray_23;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_22;
+                Ray _e38 = ray_23;
                 const float3 _e39 = miss(_e38);
                 const float3 _e40 = through_medium(_e34, asfloat(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(_e30.slot*128+0)), asfloat(instances.Load4(_e30.slot*128+16)), asfloat(instances.Load4(_e30.slot*128+32)), asfloat(instances.Load4(_e30.slot*128+48)), asfloat(instances.Load4(_e30.slot*128+64)), asfloat(instances.Load4(_e30.slot*128+80)), asuint(instances.Load(_e30.slot*128+96)), asuint(instances.Load(_e30.slot*128+100)), asuint(instances.Load(_e30.slot*128+104)), asuint(instances.Load(_e30.slot*128+108)), asuint(instances.Load(_e30.slot*128+112)), asuint(instances.Load(_e30.slot*128+116)), asuint(instances.Load(_e30.slot*128+120)), asuint(instances.Load(_e30.slot*128+124)));
-                Ray _e46 = ray_22;
+                Ray _e46 = ray_23;
                 const Hit _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                uint _e56 = ray_22.depth;
+                uint _e56 = ray_23.depth;
                 uint _e60 = depth;
                 if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_22;
+                    Ray _e68 = ray_23;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_10 = min(min(_e70, 1u), MAX_SPAWN);
-                    if ((n_10 > 0u)) {
-                        Ray _e77 = ray_22;
-                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_10, 0u);
+                    uint n_11 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_11 > 0u)) {
+                        Ray _e77 = ray_23;
+                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_11, 0u);
                         i_5 = 0u;
                         uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
                         bool loop_init_4 = true;
@@ -1801,7 +1810,7 @@ float3 trace(Ray camera_ray)
                             }
                             loop_init_4 = false;
                             uint _e88 = i_5;
-                            if ((_e88 >= n_10)) {
+                            if ((_e88 >= n_11)) {
                                 break;
                             }
                             uint _e91 = i_5;
@@ -1823,9 +1832,9 @@ float3 trace(Ray camera_ray)
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_22;
+                    Ray _e124 = ray_23;
                     const float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, (0.0).xxx);
-                    Ray _e128 = ray_22;
+                    Ray _e128 = ray_23;
                     const float3 _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1842,9 +1851,9 @@ float3 trace(Ray camera_ray)
             uint _e137 = depth;
             uint top = (_e137 - 1u);
             uint _e144 = stack_1[min(uint(min(top, 3u)), 3u)].next;
-            uint child_1 = (_e144 - 1u);
+            uint child_2 = (_e144 - 1u);
             float3 _e151 = stack_1[min(uint(min(top, 3u)), 3u)].sum;
-            float3 _e159 = stack_1[min(uint(min(top, 3u)), 3u)].weights[min(uint(min(child_1, 0u)), 0u)];
+            float3 _e159 = stack_1[min(uint(min(top, 3u)), 3u)].weights[min(uint(min(child_2, 0u)), 0u)];
             float3 _e160 = value;
             stack_1[min(uint(min(top, 3u)), 3u)].sum = (_e151 + (_e159 * _e160));
             have_value = false;
@@ -1863,7 +1872,7 @@ float3 trace(Ray camera_ray)
             const float3 _e209 = spawn_origin(hit_8, dir_4);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_22 = ConstructRay(_e209, 0.0, dir_4, asfloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_23 = ConstructRay(_e209, 0.0, dir_4, asfloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             uint _e224 = stack_1[min(uint(min(top_1, 3u)), 3u)].slot;
             GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e224*128+0)), asfloat(instances.Load4(_e224*128+16)), asfloat(instances.Load4(_e224*128+32)), asfloat(instances.Load4(_e224*128+48)), asfloat(instances.Load4(_e224*128+64)), asfloat(instances.Load4(_e224*128+80)), asuint(instances.Load(_e224*128+96)), asuint(instances.Load(_e224*128+100)), asuint(instances.Load(_e224*128+104)), asuint(instances.Load(_e224*128+108)), asuint(instances.Load(_e224*128+112)), asuint(instances.Load(_e224*128+116)), asuint(instances.Load(_e224*128+120)), asuint(instances.Load(_e224*128+124)));
@@ -1898,7 +1907,7 @@ void render_pixel(uint2 pixel_3)
     float3 sum = (float3)0;
     uint bad = (uint)0;
     uint s_1 = (uint)0;
-    Ray ray_23 = (Ray)0;
+    Ray ray_24 = (Ray)0;
 
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
@@ -1924,13 +1933,13 @@ void render_pixel(uint2 pixel_3)
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_23 = _e23;
-        ray_23.depth = 0u;
-        ray_23.kind = RAY_CAMERA;
-        float3 _e31 = ray_23.origin;
+        ray_24 = _e23;
+        ray_24.depth = 0u;
+        ray_24.kind = RAY_CAMERA;
+        float3 _e31 = ray_24.origin;
         const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_23.medium = _e33;
-        Ray _e34 = ray_23;
+        ray_24.medium = _e33;
+        Ray _e34 = ray_24;
         const float3 _e35 = trace(_e34);
         const bool3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

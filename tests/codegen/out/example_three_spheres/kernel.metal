@@ -194,17 +194,16 @@ constant uint RAY_CAMERA = 0u;
 constant uint NO_HIT = 4294967295u;
 constant bool HAS_MEDIA = false;
 constant uint MESH_GEOMETRY = 4294967295u;
-constant uint MESH_LEAF_BIT = 2147483648u;
-constant uint MESH_COUNT_SHIFT = 27u;
-constant uint MESH_COUNT_MASK = 15u;
-constant uint MESH_FIRST_MASK = 134217727u;
+constant uint NODE_LEAF_BIT = 2147483648u;
+constant uint NODE_COUNT_SHIFT = 27u;
+constant uint NODE_COUNT_MASK = 15u;
+constant uint NODE_FIRST_MASK = 134217727u;
 constant uint BLAS_STACK = 64u;
 constant uint TLAS_STACK = 64u;
 constant uint BVH_MESH_STACK = 64u;
 constant float TAU = 6.2831855;
 constant float INV_PI = 0.31830987;
 constant bool HAS_SECONDARY_RAYS = false;
-constant uint LEAF_BIT = 2147483648u;
 constant bool HAS_BACKGROUND = true;
 constant uint FLAG_MEDIUM = 4u;
 constant uint RAY_SHADOW = 2u;
@@ -477,13 +476,13 @@ bool accept(
     return true;
 }
 
-metal::uint3 mesh_box_lo(
+metal::uint3 node_box_lo(
     metal::uint3 p
 ) {
     return metal::uint3(p.x & 65535u, p.x >> 16u, p.y & 65535u);
 }
 
-metal::float3 mesh_point(
+metal::float3 node_point(
     metal::float3 origin,
     metal::float3 scale,
     metal::uint3 q
@@ -491,7 +490,7 @@ metal::float3 mesh_point(
     return origin + (static_cast<metal::float3>(q) * scale);
 }
 
-metal::uint3 mesh_box_hi(
+metal::uint3 node_box_hi(
     metal::uint3 p_1
 ) {
     return metal::uint3(p_1.y >> 16u, p_1.z & 65535u, p_1.z >> 16u);
@@ -519,6 +518,30 @@ float slab(
     return as_type<float>(_e30);
 }
 
+metal::float2 children_entry(
+    GpuNode n,
+    metal::float3 origin_2,
+    metal::float3 scale_1,
+    Ray ray_3,
+    metal::float3 inv,
+    float tmax_3,
+    thread uint& F32_INF
+) {
+    metal::uint3 lq = as_type<metal::uint3>(n.min);
+    metal::uint3 rq = as_type<metal::uint3>(n.max);
+    metal::uint3 _e10 = node_box_lo(lq);
+    metal::float3 _e11 = node_point(origin_2, scale_1, _e10);
+    metal::uint3 _e12 = node_box_hi(lq);
+    metal::float3 _e13 = node_point(origin_2, scale_1, _e12);
+    float _e16 = slab(_e11, _e13, ray_3.origin, inv, ray_3.tmin, tmax_3, F32_INF);
+    metal::uint3 _e17 = node_box_lo(rq);
+    metal::float3 _e18 = node_point(origin_2, scale_1, _e17);
+    metal::uint3 _e19 = node_box_hi(rq);
+    metal::float3 _e20 = node_point(origin_2, scale_1, _e19);
+    float _e23 = slab(_e18, _e20, ray_3.origin, inv, ray_3.tmin, tmax_3, F32_INF);
+    return metal::float2(_e16, _e23);
+}
+
 metal::uint2 pop(
     uint base,
     uint sp,
@@ -535,7 +558,7 @@ Candidate intersect_mesh(
     GpuInstance inst_2,
     uint slot_1,
     Ray world_ray,
-    Ray ray_3,
+    Ray ray_4,
     Candidate best_in,
     bool shadow,
     thread uint& F32_INF,
@@ -551,12 +574,12 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    metal::float3 _e8 = safe_inverse(ray_3.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_3);
+    metal::float3 _e8 = safe_inverse(ray_4.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header = nodes[base_1];
-    metal::float3 origin_2 = header.min;
-    metal::float3 scale_1 = header.max;
+    metal::float3 origin_3 = header.min;
+    metal::float3 scale_2 = header.max;
     sp_1 = 0u;
     child = header.a;
     uint2 loop_bound = uint2(4294967295u);
@@ -564,11 +587,11 @@ Candidate intersect_mesh(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e20 = child;
-        if ((_e20 & MESH_LEAF_BIT) != 0u) {
+        if ((_e20 & NODE_LEAF_BIT) != 0u) {
             uint _e25 = child;
-            uint count = (_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK;
+            uint count = (_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
             uint _e32 = child;
-            uint first = _e32 & MESH_FIRST_MASK;
+            uint first = _e32 & NODE_FIRST_MASK;
             k = 0u;
             uint2 loop_bound_1 = uint2(4294967295u);
             bool loop_init = true;
@@ -587,7 +610,7 @@ Candidate intersect_mesh(
                 uint _e41 = k;
                 uint prim = (inst_2.triangle_offset + first) + _e41;
                 float _e45 = best.t;
-                metal::float3 _e46 = hit_triangle(_e9, prim, ray_3.tmin, _e45, F32_INF, triangles, _buffer_sizes);
+                metal::float3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45, F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     Candidate c_6 = Candidate {_e46.x, slot_1, prim, {}, _e46.yz, {}, metal::float3(0.0)};
@@ -603,63 +626,53 @@ Candidate intersect_mesh(
             }
         } else {
             uint _e62 = child;
-            GpuNode n_6 = nodes[base_1 + _e62];
-            metal::uint3 lq = as_type<metal::uint3>(n_6.min);
-            metal::uint3 rq = as_type<metal::uint3>(n_6.max);
-            metal::uint3 _e71 = mesh_box_lo(lq);
-            metal::float3 _e72 = mesh_point(origin_2, scale_1, _e71);
-            metal::uint3 _e73 = mesh_box_hi(lq);
-            metal::float3 _e74 = mesh_point(origin_2, scale_1, _e73);
-            float _e78 = best.t;
-            float _e79 = slab(_e72, _e74, ray_3.origin, _e8, ray_3.tmin, _e78, F32_INF);
-            metal::uint3 _e80 = mesh_box_lo(rq);
-            metal::float3 _e81 = mesh_point(origin_2, scale_1, _e80);
-            metal::uint3 _e82 = mesh_box_hi(rq);
-            metal::float3 _e83 = mesh_point(origin_2, scale_1, _e82);
-            float _e87 = best.t;
-            float _e88 = slab(_e81, _e83, ray_3.origin, _e8, ray_3.tmin, _e87, F32_INF);
-            uint _e90 = F32_INF;
-            uint _e94 = F32_INF;
-            if ((_e79 < as_type<float>(_e90)) && (_e88 < as_type<float>(_e94))) {
-                near = n_6.a;
-                far = n_6.b;
-                if ((_e88 < _e79) != shadow) {
-                    near = n_6.b;
-                    far = n_6.a;
+            GpuNode n_7 = nodes[base_1 + _e62];
+            float _e68 = best.t;
+            metal::float2 _e69 = children_entry(n_7, origin_3, scale_2, ray_4, _e8, _e68, F32_INF);
+            float tl = _e69.x;
+            float tr = _e69.y;
+            uint _e73 = F32_INF;
+            uint _e77 = F32_INF;
+            if ((tl < as_type<float>(_e73)) && (tr < as_type<float>(_e77))) {
+                near = n_7.a;
+                far = n_7.b;
+                if ((tr < tl) != shadow) {
+                    near = n_7.b;
+                    far = n_7.a;
                 }
-                uint _e106 = sp_1;
-                if (_e106 < BLAS_STACK) {
-                    uint _e110 = sp_1;
-                    uint _e112 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e110, 127u)] = _e112;
-                    uint _e117 = sp_1;
-                    sp_1 = _e117 + 1u;
+                uint _e89 = sp_1;
+                if (_e89 < BLAS_STACK) {
+                    uint _e93 = sp_1;
+                    uint _e95 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e93, 127u)] = _e95;
+                    uint _e100 = sp_1;
+                    sp_1 = _e100 + 1u;
                 }
-                uint _e120 = near;
-                child = _e120;
+                uint _e103 = near;
+                child = _e103;
                 continue;
             }
-            uint _e122 = F32_INF;
-            if (_e79 < as_type<float>(_e122)) {
-                child = n_6.a;
+            uint _e105 = F32_INF;
+            if (tl < as_type<float>(_e105)) {
+                child = n_7.a;
                 continue;
             }
-            uint _e127 = F32_INF;
-            if (_e88 < as_type<float>(_e127)) {
-                child = n_6.b;
+            uint _e110 = F32_INF;
+            if (tr < as_type<float>(_e110)) {
+                child = n_7.b;
                 continue;
             }
         }
-        uint _e132 = sp_1;
-        metal::uint2 _e133 = pop(TLAS_STACK, _e132, traversal_stack);
-        if (_e133.x == NO_HIT) {
+        uint _e115 = sp_1;
+        metal::uint2 _e116 = pop(TLAS_STACK, _e115, traversal_stack);
+        if (_e116.x == NO_HIT) {
             break;
         }
-        child = _e133.x;
-        sp_1 = _e133.y;
+        child = _e116.x;
+        sp_1 = _e116.y;
     }
-    Candidate _e139 = best;
-    return _e139;
+    Candidate _e122 = best;
+    return _e122;
 }
 
 BvhMesh load_BvhMesh(
@@ -685,76 +698,76 @@ BvhNode mesh_node_query(
     uint base_2 = params[m];
     GpuNode header_1 = nodes[base_2];
     lo_1 = header_1.min;
-    metal::float3 _e14 = mesh_point(header_1.min, header_1.max, metal::uint3(65535u));
+    metal::float3 _e14 = node_point(header_1.min, header_1.max, metal::uint3(65535u));
     hi_1 = _e14;
     reference = header_1.a;
     if (i >= 2u) {
-        GpuNode n_7 = nodes[base_2 + (i >> 1u)];
-        q_1 = as_type<metal::uint3>(n_7.min);
-        reference = n_7.a;
+        GpuNode n_8 = nodes[base_2 + (i >> 1u)];
+        q_1 = as_type<metal::uint3>(n_8.min);
+        reference = n_8.a;
         if ((i & 1u) != 0u) {
-            q_1 = as_type<metal::uint3>(n_7.max);
-            reference = n_7.b;
+            q_1 = as_type<metal::uint3>(n_8.max);
+            reference = n_8.b;
         }
         metal::uint3 _e39 = q_1;
-        metal::uint3 _e40 = mesh_box_lo(_e39);
-        metal::float3 _e41 = mesh_point(header_1.min, header_1.max, _e40);
+        metal::uint3 _e40 = node_box_lo(_e39);
+        metal::float3 _e41 = node_point(header_1.min, header_1.max, _e40);
         lo_1 = _e41;
         metal::uint3 _e44 = q_1;
-        metal::uint3 _e45 = mesh_box_hi(_e44);
-        metal::float3 _e46 = mesh_point(header_1.min, header_1.max, _e45);
+        metal::uint3 _e45 = node_box_hi(_e44);
+        metal::float3 _e46 = node_point(header_1.min, header_1.max, _e45);
         hi_1 = _e46;
     }
     uint _e47 = reference;
-    if ((_e47 & MESH_LEAF_BIT) == 0u) {
+    if ((_e47 & NODE_LEAF_BIT) == 0u) {
         metal::float3 _e52 = lo_1;
         metal::float3 _e53 = hi_1;
         uint _e55 = reference;
         return BvhNode {_e52, _e53, 2u * _e55, 0u};
     }
     uint _e59 = reference;
-    uint count_1 = (_e59 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK;
+    uint count_1 = (_e59 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
     if (count_1 == 0u) {
         return BvhNode {as_type<metal::float3>(metal::uint3(2139095039u)), as_type<metal::float3>(metal::uint3(4286578687u)), 0u, 0u};
     }
     metal::float3 _e77 = lo_1;
     metal::float3 _e78 = hi_1;
     uint _e79 = reference;
-    return BvhNode {_e77, _e78, _e79 & MESH_FIRST_MASK, count_1};
+    return BvhNode {_e77, _e78, _e79 & NODE_FIRST_MASK, count_1};
 }
 
 metal::float2 intersect_aabb(
-    Ray ray_4,
+    Ray ray_5,
     metal::float3 min,
     metal::float3 max,
     thread uint& F32_INF,
     thread uint& F32_NEG_INF
 ) {
-    metal::bool3 parallel = metal::abs(ray_4.dir) < metal::float3(0.000000000000000000000000000000000000011754944);
+    metal::bool3 parallel = metal::abs(ray_5.dir) < metal::float3(0.000000000000000000000000000000000000011754944);
     metal::float3 _e12 = metal::float3(1.0);
-    metal::float3 inv_dir_1 = _e12 / metal::select(ray_4.dir, _e12, parallel);
-    metal::float3 _e17 = (min - ray_4.origin) * inv_dir_1;
-    metal::float3 _e18 = (max - ray_4.origin) * inv_dir_1;
-    metal::bool3 _e23 = (min <= ray_4.origin) & (ray_4.origin <= max);
+    metal::float3 inv_dir_1 = _e12 / metal::select(ray_5.dir, _e12, parallel);
+    metal::float3 _e17 = (min - ray_5.origin) * inv_dir_1;
+    metal::float3 _e18 = (max - ray_5.origin) * inv_dir_1;
+    metal::bool3 _e23 = (min <= ray_5.origin) & (ray_5.origin <= max);
     uint _e25 = F32_INF;
     metal::float3 _e27 = metal::float3(as_type<float>(_e25));
     uint _e29 = F32_NEG_INF;
     metal::float3 _e31 = metal::float3(as_type<float>(_e29));
     metal::float3 near_3 = metal::select(metal::min(_e17, _e18), metal::select(_e27, _e31, _e23), parallel);
     metal::float3 far_3 = metal::select(metal::max(_e17, _e18), metal::select(_e31, _e27, _e23), parallel);
-    return metal::float2(metal::max(metal::max(metal::max(near_3.x, near_3.y), near_3.z), ray_4.tmin), metal::min(metal::min(metal::min(far_3.x, far_3.y), far_3.z), ray_4.tmax));
+    return metal::float2(metal::max(metal::max(metal::max(near_3.x, near_3.y), near_3.z), ray_5.tmin), metal::min(metal::min(metal::min(far_3.x, far_3.y), far_3.z), ray_5.tmax));
 }
 
 float bvh_mesh_enter(
-    Ray ray_5,
-    BvhNode n,
-    float tmax_3,
+    Ray ray_6,
+    BvhNode n_1,
+    float tmax_4,
     thread uint& F32_INF,
     thread uint& F32_NEG_INF
 ) {
-    metal::float2 _e5 = intersect_aabb(ray_5, n.min, n.max, F32_INF, F32_NEG_INF);
+    metal::float2 _e5 = intersect_aabb(ray_6, n_1.min, n_1.max, F32_INF, F32_NEG_INF);
     uint _e7 = F32_INF;
-    return ((_e5.x <= _e5.y) && (_e5.x <= tmax_3)) ? _e5.x : as_type<float>(_e7);
+    return ((_e5.x <= _e5.y) && (_e5.x <= tmax_4)) ? _e5.x : as_type<float>(_e7);
 }
 
 Triangle mesh_triangle_query(
@@ -773,12 +786,12 @@ Triangle mesh_triangle_query(
 }
 
 Intersection intersect_triangle(
-    Ray ray_6,
+    Ray ray_7,
     Triangle tri,
     thread uint& F32_INF
 ) {
     metal::uint3 _e10 = metal::uint3(2139095040u);
-    metal::float3 dir_2 = metal::select(ray_6.dir, metal::float3(0.0), metal::abs(ray_6.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 dir_2 = metal::select(ray_7.dir, metal::float3(0.0), metal::abs(ray_7.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
     metal::float3 _e31 = metal::abs(dir_2);
     bool _e38 = _e31.y > _e31.x;
     uint kz_1 = (_e31.z > (_e38 ? _e31.y : _e31.x)) ? 2u : (_e38 ? 1u : 0u);
@@ -791,13 +804,13 @@ Intersection intersect_triangle(
     float sx = dir_2[kx_1] / dz_1;
     float sy = dir_2[ky_1] / dz_1;
     float sz = 1.0 / dz_1;
-    metal::float3 _e62 = tri.v0_ - ray_6.origin;
+    metal::float3 _e62 = tri.v0_ - ray_7.origin;
     float _e68 = _e62[kx_1] - (sx * _e62[kz_1]);
     float _e69 = _e62[ky_1] - (sy * _e62[kz_1]);
-    metal::float3 _e71 = tri.v1_ - ray_6.origin;
+    metal::float3 _e71 = tri.v1_ - ray_7.origin;
     float _e77 = _e71[kx_1] - (sx * _e71[kz_1]);
     float _e78 = _e71[ky_1] - (sy * _e71[kz_1]);
-    metal::float3 _e80 = tri.v2_ - ray_6.origin;
+    metal::float3 _e80 = tri.v2_ - ray_7.origin;
     float _e86 = _e80[kx_1] - (sx * _e80[kz_1]);
     float _e87 = _e80[ky_1] - (sy * _e80[kz_1]);
     float u_1 = (_e86 * _e78) - (_e87 * _e77);
@@ -806,7 +819,7 @@ Intersection intersect_triangle(
     float det_1 = (u_1 + v_2) + w_1;
     float _e112 = 1.0 / det_1;
     float t_6 = (((u_1 * (sz * _e62[kz_1])) + (v_2 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112;
-    bool hit_6 = ((((metal::all((as_type<metal::uint3>(ray_6.origin) & metal::uint3(2147483647u)) < _e10) && metal::all((as_type<metal::uint3>(ray_6.dir) & metal::uint3(2147483647u)) < _e10)) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_6 >= ray_6.tmin) && (t_6 <= ray_6.tmax));
+    bool hit_6 = ((((metal::all((as_type<metal::uint3>(ray_7.origin) & metal::uint3(2147483647u)) < _e10) && metal::all((as_type<metal::uint3>(ray_7.dir) & metal::uint3(2147483647u)) < _e10)) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_6 >= ray_7.tmin) && (t_6 <= ray_7.tmax));
     metal::float3 _e132 = normalize_vec3f(metal::cross(tri.v1_ - tri.v0_, tri.v2_ - tri.v0_));
     uint _e137 = F32_INF;
     return Intersection {hit_6 ? t_6 : as_type<float>(_e137), {}, hit_6 ? _e132 : metal::float3(0.0, 0.0, 1.0), hit_6 ? metal::float2(v_2 * _e112, w_1 * _e112) : metal::float2(0.0)};
@@ -814,7 +827,7 @@ Intersection intersect_triangle(
 
 Intersection bvh_mesh_intersect(
     BvhMesh g,
-    Ray ray_7,
+    Ray ray_8,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_9 const& nodes,
@@ -832,7 +845,7 @@ Intersection bvh_mesh_intersect(
     bool found = {};
     uint _e3 = F32_INF;
     best_1 = Intersection {as_type<float>(_e3), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
-    r_2 = ray_7;
+    r_2 = ray_8;
     stack = type_13 {};
     stack_t = type_14 {};
     sp_2 = 0u;
@@ -954,14 +967,14 @@ Sphere load_Sphere(
 
 Intersection sphere_intersect(
     Sphere s,
-    Ray ray_8,
+    Ray ray_9,
     thread uint& F32_INF
 ) {
     float t = {};
-    metal::float3 f_1 = ray_8.origin - s.center;
-    float a_6 = metal::dot(ray_8.dir, ray_8.dir);
-    float b_7 = -(metal::dot(f_1, ray_8.dir));
-    metal::float3 l_1 = f_1 + (ray_8.dir * metal::float3(b_7 / a_6));
+    metal::float3 f_1 = ray_9.origin - s.center;
+    float a_6 = metal::dot(ray_9.dir, ray_9.dir);
+    float b_7 = -(metal::dot(f_1, ray_9.dir));
+    metal::float3 l_1 = f_1 + (ray_9.dir * metal::float3(b_7 / a_6));
     float r2_ = s.radius * s.radius;
     float disc = a_6 * (r2_ - metal::dot(l_1, l_1));
     if (!((disc >= 0.0)) || !((a_6 > 0.0))) {
@@ -973,17 +986,17 @@ Intersection sphere_intersect(
     float t1_1 = q_2 / a_6;
     t = metal::min(t0_1, t1_1);
     float _e52 = t;
-    if (!((_e52 >= ray_8.tmin))) {
+    if (!((_e52 >= ray_9.tmin))) {
         t = metal::max(t0_1, t1_1);
     }
     float _e57 = t;
     float _e60 = t;
-    if (!(((_e57 >= ray_8.tmin) && (_e60 <= ray_8.tmax)))) {
+    if (!(((_e57 >= ray_9.tmin) && (_e60 <= ray_9.tmax)))) {
         uint _e66 = F32_INF;
         return Intersection {as_type<float>(_e66), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     }
     float _e76 = t;
-    metal::float3 _e82 = normalize_vec3f((ray_8.origin + (ray_8.dir * metal::float3(_e76))) - s.center);
+    metal::float3 _e82 = normalize_vec3f((ray_9.origin + (ray_9.dir * metal::float3(_e76))) - s.center);
     float u_2 = ((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (metal::atan2(_e82.z, -(_e82.x)) / TAU));
     metal::float2 uv_1 = metal::float2(u_2, metal::acos(metal::min(metal::max(_e82.y, -1.0), 1.0)) * INV_PI);
     float _e109 = t;
@@ -993,7 +1006,7 @@ Intersection sphere_intersect(
 Intersection dispatch_intersection(
     uint type_id_1,
     uint offset_4,
-    Ray ray_9,
+    Ray ray_10,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_9 const& nodes,
@@ -1004,12 +1017,12 @@ Intersection dispatch_intersection(
     switch(type_id_1) {
         case 0u: {
             BvhMesh _e3 = load_BvhMesh(offset_4, params, _buffer_sizes);
-            Intersection _e4 = bvh_mesh_intersect(_e3, ray_9, params, F32_INF, nodes, triangles, F32_NEG_INF, _buffer_sizes);
+            Intersection _e4 = bvh_mesh_intersect(_e3, ray_10, params, F32_INF, nodes, triangles, F32_NEG_INF, _buffer_sizes);
             return _e4;
         }
         case 1u: {
             Sphere _e5 = load_Sphere(offset_4, params, _buffer_sizes);
-            Intersection _e6 = sphere_intersect(_e5, ray_9, F32_INF);
+            Intersection _e6 = sphere_intersect(_e5, ray_10, F32_INF);
             return _e6;
         }
         default: {
@@ -1021,7 +1034,7 @@ Intersection dispatch_intersection(
 
 Candidate intersect_object(
     uint slot_2,
-    Ray ray_10,
+    Ray ray_11,
     Candidate best_2,
     bool shadow_1,
     device type_4 const& params,
@@ -1035,12 +1048,12 @@ Candidate intersect_object(
 ) {
     Ray r_3 = {};
     GpuInstance inst_5 = instances[slot_2];
-    Ray _e7 = to_object(inst_5, ray_10);
+    Ray _e7 = to_object(inst_5, ray_11);
     r_3 = _e7;
     r_3.tmax = best_2.t;
     if (inst_5.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_3;
-        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_10, _e14, best_2, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_11, _e14, best_2, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
         return _e15;
     }
     Ray _e18 = r_3;
@@ -1050,7 +1063,7 @@ Candidate intersect_object(
     uint _e31 = F32_INF;
     if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < as_type<float>(_e31))) {
         Candidate c_7 = Candidate {_e19.t, slot_2, 0u, {}, _e19.uv, {}, _e19.normal};
-        bool _e40 = accept(inst_5, ray_10, c_7);
+        bool _e40 = accept(inst_5, ray_11, c_7);
         if (_e40) {
             return c_7;
         }
@@ -1080,34 +1093,34 @@ metal::float3 point_to_world(
 metal::float3 decode_octahedral(
     uint bits
 ) {
-    metal::float3 n_1 = {};
+    metal::float3 n_2 = {};
     metal::float2 e = metal::unpack_snorm2x16_to_float(bits);
-    n_1 = metal::float3(e.x, e.y, (1.0 - metal::abs(e.x)) - metal::abs(e.y));
-    float _e14 = n_1.z;
+    n_2 = metal::float3(e.x, e.y, (1.0 - metal::abs(e.x)) - metal::abs(e.y));
+    float _e14 = n_2.z;
     if (_e14 < 0.0) {
-        metal::float3 _e21 = n_1;
+        metal::float3 _e21 = n_2;
         metal::float2 s_4 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
-        metal::float3 _e29 = n_1;
+        metal::float3 _e29 = n_2;
         metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_4;
-        float _e37 = n_1.z;
-        n_1 = metal::float3(xy.x, xy.y, _e37);
+        float _e37 = n_2.z;
+        n_2 = metal::float3(xy.x, xy.y, _e37);
     }
-    metal::float3 _e39 = n_1;
+    metal::float3 _e39 = n_2;
     metal::float3 _e40 = normalize_vec3f(_e39);
     return _e40;
 }
 
 metal::float3 normal_to_world(
     GpuInstance inst_4,
-    metal::float3 n_2
+    metal::float3 n_3
 ) {
-    metal::float3 w_2 = ((inst_4.world_to_object_0_.xyz * metal::float3(n_2.x)) + (inst_4.world_to_object_1_.xyz * metal::float3(n_2.y))) + (inst_4.world_to_object_2_.xyz * metal::float3(n_2.z));
+    metal::float3 w_2 = ((inst_4.world_to_object_0_.xyz * metal::float3(n_3.x)) + (inst_4.world_to_object_1_.xyz * metal::float3(n_3.y))) + (inst_4.world_to_object_2_.xyz * metal::float3(n_3.z));
     metal::float3 _e19 = normalize_vec3f(w_2);
     return _e19;
 }
 
 Hit finish_hit(
-    Ray ray_11,
+    Ray ray_12,
     Candidate c_1,
     device type_8 const& instances,
     device type_10 const& triangles,
@@ -1118,7 +1131,7 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_6 = instances[c_1.slot];
-    hit = Hit {ray_11.origin + (ray_11.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_6.object, c_1.primitive};
+    hit = Hit {ray_12.origin + (ray_12.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_6.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
@@ -1154,7 +1167,7 @@ Hit finish_hit(
     metal::float3 _e131 = normal_to_world(inst_6, _e130);
     hit.normal = _e131;
     metal::float3 _e135 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_11.dir, _e135) < 0.0;
+    hit.front_face = metal::dot(ray_12.dir, _e135) < 0.0;
     Hit _e139 = hit;
     return _e139;
 }
@@ -1223,7 +1236,7 @@ uint medium_at(
 }
 
 Candidate intersect_scene(
-    Ray ray_12,
+    Ray ray_13,
     bool shadow_2,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1238,98 +1251,100 @@ Candidate intersect_scene(
 ) {
     Candidate best_3 = {};
     uint sp_3 = {};
-    uint node_1 = {};
+    uint child_1 = {};
     uint near_1 = {};
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_12.tmax);
+    Candidate _e7 = no_candidate(ray_13.tmax);
     best_3 = _e7;
     FrameUniforms frame_2 = frame;
     if (frame_2.instance_count == 0u) {
         Candidate _e14 = best_3;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_12.dir);
-    sp_3 = 0u;
-    node_1 = frame_2.tlas_root;
-    uint _e21 = node_1;
-    GpuNode root = nodes[_e21];
-    float _e30 = best_3.t;
-    float _e31 = slab(root.min, root.max, ray_12.origin, _e16, ray_12.tmin, _e30, F32_INF);
-    uint _e33 = F32_INF;
-    if (_e31 == as_type<float>(_e33)) {
-        Candidate _e36 = best_3;
-        return _e36;
+    metal::float3 _e16 = safe_inverse(ray_13.dir);
+    uint base_3 = frame_2.tlas_root;
+    GpuNode header_2 = nodes[base_3];
+    metal::float3 origin_4 = header_2.min;
+    metal::float3 scale_3 = header_2.max;
+    metal::float3 _e25 = node_point(origin_4, scale_3, metal::uint3(65535u));
+    float _e29 = best_3.t;
+    float _e30 = slab(origin_4, _e25, ray_13.origin, _e16, ray_13.tmin, _e29, F32_INF);
+    uint _e32 = F32_INF;
+    if (_e30 == as_type<float>(_e32)) {
+        Candidate _e35 = best_3;
+        return _e35;
     }
+    sp_3 = 0u;
+    child_1 = header_2.a;
     uint2 loop_bound_6 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        uint _e37 = node_1;
-        GpuNode n_8 = nodes[_e37];
-        if ((n_8.b & LEAF_BIT) != 0u) {
-            if ((n_8.b & ~(LEAF_BIT)) != 0u) {
-                Candidate _e53 = best_3;
-                Candidate _e54 = intersect_object(n_8.a, ray_12, _e53, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, _buffer_sizes);
-                best_3 = _e54;
-                uint _e56 = best_3.slot;
-                if (shadow_2 && (_e56 != NO_HIT)) {
-                    Candidate _e60 = best_3;
-                    return _e60;
+        uint _e40 = child_1;
+        if ((_e40 & NODE_LEAF_BIT) != 0u) {
+            uint _e45 = child_1;
+            if (((_e45 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                uint _e54 = child_1;
+                Candidate _e57 = best_3;
+                Candidate _e58 = intersect_object(_e54 & NODE_FIRST_MASK, ray_13, _e57, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, _buffer_sizes);
+                best_3 = _e58;
+                uint _e60 = best_3.slot;
+                if (shadow_2 && (_e60 != NO_HIT)) {
+                    Candidate _e64 = best_3;
+                    return _e64;
                 }
             }
         } else {
-            uint left = frame_2.tlas_root + n_8.a;
-            uint right = left + 1u;
-            GpuNode l_2 = nodes[left];
-            GpuNode rr = nodes[right];
-            float _e77 = best_3.t;
-            float _e78 = slab(l_2.min, l_2.max, ray_12.origin, _e16, ray_12.tmin, _e77, F32_INF);
-            float _e84 = best_3.t;
-            float _e85 = slab(rr.min, rr.max, ray_12.origin, _e16, ray_12.tmin, _e84, F32_INF);
-            uint _e87 = F32_INF;
-            uint _e91 = F32_INF;
-            if ((_e78 < as_type<float>(_e87)) && (_e85 < as_type<float>(_e91))) {
-                near_1 = left;
-                far_1 = right;
-                if (_e85 < _e78) {
-                    near_1 = right;
-                    far_1 = left;
+            uint _e65 = child_1;
+            GpuNode n_9 = nodes[base_3 + _e65];
+            float _e71 = best_3.t;
+            metal::float2 _e72 = children_entry(n_9, origin_4, scale_3, ray_13, _e16, _e71, F32_INF);
+            float tl_1 = _e72.x;
+            float tr_1 = _e72.y;
+            uint _e76 = F32_INF;
+            uint _e80 = F32_INF;
+            if ((tl_1 < as_type<float>(_e76)) && (tr_1 < as_type<float>(_e80))) {
+                near_1 = n_9.a;
+                far_1 = n_9.b;
+                if (tr_1 < tl_1) {
+                    near_1 = n_9.b;
+                    far_1 = n_9.a;
                 }
-                uint _e98 = sp_3;
-                if (_e98 < TLAS_STACK) {
-                    uint _e101 = sp_3;
-                    uint _e102 = far_1;
-                    traversal_stack.inner[metal::min(_e101, 127u)] = _e102;
-                    uint _e107 = sp_3;
-                    sp_3 = _e107 + 1u;
+                uint _e91 = sp_3;
+                if (_e91 < TLAS_STACK) {
+                    uint _e94 = sp_3;
+                    uint _e95 = far_1;
+                    traversal_stack.inner[metal::min(_e94, 127u)] = _e95;
+                    uint _e100 = sp_3;
+                    sp_3 = _e100 + 1u;
                 }
-                uint _e110 = near_1;
-                node_1 = _e110;
+                uint _e103 = near_1;
+                child_1 = _e103;
                 continue;
             }
-            uint _e112 = F32_INF;
-            if (_e78 < as_type<float>(_e112)) {
-                node_1 = left;
+            uint _e105 = F32_INF;
+            if (tl_1 < as_type<float>(_e105)) {
+                child_1 = n_9.a;
                 continue;
             }
-            uint _e116 = F32_INF;
-            if (_e85 < as_type<float>(_e116)) {
-                node_1 = right;
+            uint _e110 = F32_INF;
+            if (tr_1 < as_type<float>(_e110)) {
+                child_1 = n_9.b;
                 continue;
             }
         }
-        uint _e120 = sp_3;
-        metal::uint2 _e121 = pop(0u, _e120, traversal_stack);
-        if (_e121.x == NO_HIT) {
+        uint _e115 = sp_3;
+        metal::uint2 _e116 = pop(0u, _e115, traversal_stack);
+        if (_e116.x == NO_HIT) {
             break;
         }
-        node_1 = _e121.x;
-        sp_3 = _e121.y;
+        child_1 = _e116.x;
+        sp_3 = _e116.y;
     }
-    Candidate _e127 = best_3;
-    return _e127;
+    Candidate _e122 = best_3;
+    return _e122;
 }
 
 Skybox load_Skybox(
@@ -1383,7 +1398,7 @@ metal::float4 texel_at(
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint base_3 = params[t_1];
+    uint base_4 = params[t_1];
     uint _e10 = params[t_1 + 1u];
     uint w_4 = metal::max(_e10, 1u);
     uint _e17 = params[t_1 + 2u];
@@ -1397,16 +1412,16 @@ metal::float4 texel_at(
     uint yi = static_cast<uint>(_e37);
     uint index = (yi * w_4) + xi;
     if (format == 0u) {
-        uint _e46 = texels[base_3 + index];
+        uint _e46 = texels[base_4 + index];
         metal::float4 c_8 = metal::unpack_unorm4x8_to_float(_e46);
         float _e49 = srgb_channel(c_8.x);
         float _e51 = srgb_channel(c_8.y);
         float _e53 = srgb_channel(c_8.z);
         return metal::float4(_e49, _e51, _e53, c_8.w);
     }
-    uint _e61 = texels[base_3 + (index * 2u)];
+    uint _e61 = texels[base_4 + (index * 2u)];
     metal::float2 rg = float2(as_type<half2>(_e61));
-    uint _e70 = texels[(base_3 + (index * 2u)) + 1u];
+    uint _e70 = texels[(base_4 + (index * 2u)) + 1u];
     metal::float2 ba = float2(as_type<half2>(_e70));
     return metal::float4(rg, ba);
 }
@@ -1438,12 +1453,12 @@ metal::float4 sample_texture(
 
 metal::float3 skybox(
     Skybox b_5,
-    Ray ray_13,
+    Ray ray_14,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_13.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_14.dir);
     bool pole = (_e3.x == 0.0) && (_e3.z == 0.0);
     float longitude = (pole ? 0.0 : metal::atan2(_e3.x, -(_e3.z))) - ((b_5.rotation) * 0.017453292519943295474);
     float latitude = metal::acos(metal::min(metal::max(_e3.y, -1.0), 1.0));
@@ -1455,18 +1470,18 @@ metal::float3 skybox(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_6,
-    Ray ray_14,
+    Ray ray_15,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Skybox _e2 = load_Skybox(offset_6, params, _buffer_sizes);
-    metal::float3 _e3 = skybox(_e2, ray_14, params, texels, _buffer_sizes);
+    metal::float3 _e3 = skybox(_e2, ray_15, params, texels, _buffer_sizes);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_15,
+    Ray ray_16,
     constant FrameUniforms& frame,
     device type_4 const& params,
     device type_4 const& texels,
@@ -1476,14 +1491,14 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_3 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_15, params, texels, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_16, params, texels, _buffer_sizes);
     return _e9;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_3,
     uint offset_7,
-    Ray ray_16,
+    Ray ray_17,
     float t_3,
     metal::float3 radiance
 ) {
@@ -1491,7 +1506,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_17,
+    Ray ray_18,
     float t_4,
     metal::float3 radiance_1,
     device type_8 const& instances,
@@ -1500,14 +1515,14 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_17.medium == 0u) {
+    if (ray_18.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_7 = instances[ray_17.medium - 1u];
+    GpuInstance inst_7 = instances[ray_18.medium - 1u];
     if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_17, t_4, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_18, t_4, radiance_1);
     return _e21;
 }
 
@@ -1548,16 +1563,17 @@ PointLight load_PointLight(
 
 metal::float3 offset_origin(
     metal::float3 p_4,
-    metal::float3 n_3,
+    metal::float3 n_4,
     constant FrameUniforms& frame,
     device type_9 const& nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     FrameUniforms _e3 = frame;
-    GpuNode root_1 = nodes[_e3.tlas_root];
-    metal::float3 a_8 = metal::max(metal::abs(p_4), metal::max(metal::abs(root_1.min), metal::abs(root_1.max)));
+    GpuNode header_3 = nodes[_e3.tlas_root];
+    metal::float3 _e15 = node_point(header_3.min, header_3.max, metal::uint3(65535u));
+    metal::float3 a_8 = metal::max(metal::abs(p_4), metal::max(metal::abs(header_3.min), metal::abs(_e15)));
     float m_3 = metal::max(metal::max(a_8.x, a_8.y), a_8.z);
-    return p_4 + (n_3 * metal::float3(m_3 * (1.0 / 65536.0)));
+    return p_4 + (n_4 * metal::float3(m_3 * (1.0 / 65536.0)));
 }
 
 float shadow_query(
@@ -1576,17 +1592,17 @@ float shadow_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 n_4 = {};
-    n_4 = normal;
-    metal::float3 _e5 = n_4;
+    metal::float3 n_5 = {};
+    n_5 = normal;
+    metal::float3 _e5 = n_5;
     if (metal::dot(dir, _e5) < 0.0) {
-        metal::float3 _e9 = n_4;
-        n_4 = -(_e9);
+        metal::float3 _e9 = n_5;
+        n_5 = -(_e9);
     }
-    metal::float3 _e11 = n_4;
+    metal::float3 _e11 = n_5;
     metal::float3 _e12 = offset_origin(position, _e11, frame, nodes, _buffer_sizes);
-    Ray ray_24 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
-    Candidate _e23 = intersect_scene(ray_24, true, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    Ray ray_25 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
+    Candidate _e23 = intersect_scene(ray_25, true, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
     return (_e23.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
@@ -1668,7 +1684,7 @@ LightSample sample_light_query(
 
 metal::float3 lambert_shade(
     Lambert m_2,
-    Ray ray_18,
+    Ray ray_19,
     Hit hit_1,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1683,7 +1699,7 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_4 = {};
-    metal::float3 n_9 = metal::faceforward(hit_1.normal, ray_18.dir, hit_1.normal);
+    metal::float3 n_10 = metal::faceforward(hit_1.normal, ray_19.dir, hit_1.normal);
     color = metal::float3(0.0);
     uint _e11 = light_count_query(frame);
     i_4 = 0u;
@@ -1704,7 +1720,7 @@ metal::float3 lambert_shade(
         uint _e15 = i_4;
         LightSample _e18 = sample_light_query(_e15, hit_1.position, hit_1.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
         metal::float3 _e19 = color;
-        color = _e19 + (((m_2.albedo * metal::float3(INV_PI)) * _e18.radiance) * metal::float3(metal::max(metal::dot(n_9, _e18.dir), 0.0)));
+        color = _e19 + (((m_2.albedo * metal::float3(INV_PI)) * _e18.radiance) * metal::float3(metal::max(metal::dot(n_10, _e18.dir), 0.0)));
     }
     metal::float3 _e36 = color;
     return _e36;
@@ -1713,7 +1729,7 @@ metal::float3 lambert_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_5,
     uint offset_11,
-    Ray ray_19,
+    Ray ray_20,
     Hit hit_2,
     metal::float3 secondary,
     constant FrameUniforms& frame,
@@ -1728,12 +1744,12 @@ metal::float3 dispatch_closest_hit(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Lambert _e3 = load_Lambert(offset_11, params, _buffer_sizes);
-    metal::float3 _e4 = lambert_shade(_e3, ray_19, hit_2, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    metal::float3 _e4 = lambert_shade(_e3, ray_20, hit_2, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
     return _e4;
 }
 
 metal::float3 shade_direct(
-    Ray ray_20,
+    Ray ray_21,
     Candidate c_3,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1748,15 +1764,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_3.slot];
-    Hit _e6 = finish_hit(ray_20, c_3, instances, triangles, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_21, c_3, instances, triangles, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
     return _e11;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_12,
-    Ray ray_21,
+    Ray ray_22,
     Hit hit_3
 ) {
     return;
@@ -1769,14 +1785,14 @@ metal::float3 spawn_origin(
     device type_9 const& nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 n_5 = {};
-    n_5 = hit_4.geometric_normal;
-    metal::float3 _e4 = n_5;
+    metal::float3 n_6 = {};
+    n_6 = hit_4.geometric_normal;
+    metal::float3 _e4 = n_6;
     if (metal::dot(dir_1, _e4) < 0.0) {
-        metal::float3 _e8 = n_5;
-        n_5 = -(_e8);
+        metal::float3 _e8 = n_6;
+        n_6 = -(_e8);
     }
-    metal::float3 _e11 = n_5;
+    metal::float3 _e11 = n_6;
     metal::float3 _e12 = offset_origin(hit_4.position, _e11, frame, nodes, _buffer_sizes);
     return _e12;
 }
@@ -1801,7 +1817,7 @@ metal::float3 trace(
 ) {
     type_19 stack_1 = {};
     uint depth = {};
-    Ray ray_22 = {};
+    Ray ray_23 = {};
     metal::float3 value = {};
     bool have_value = {};
     bool pushed = {};
@@ -1822,7 +1838,7 @@ metal::float3 trace(
     }
     stack_1 = type_19 {};
     depth = 0u;
-    ray_22 = camera_ray;
+    ray_23 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     uint2 loop_bound_8 = uint2(4294967295u);
@@ -1831,32 +1847,32 @@ metal::float3 trace(
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_22;
+            Ray _e28 = ray_23;
             Candidate _e30 = intersect_scene(_e28, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
             if (_e30.slot == NO_HIT) {
-                Ray _e34 = ray_22;
+                Ray _e34 = ray_23;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_22;
+                Ray _e38 = ray_23;
                 metal::float3 _e39 = miss(_e38, frame, params, texels, _buffer_sizes);
                 metal::float3 _e40 = through_medium(_e34, as_type<float>(_e36), _e39, instances, _buffer_sizes);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = instances[_e30.slot];
-                Ray _e46 = ray_22;
+                Ray _e46 = ray_23;
                 Hit _e47 = finish_hit(_e46, _e30, instances, triangles, attributes, _buffer_sizes);
                 pushed = false;
-                uint _e56 = ray_22.depth;
+                uint _e56 = ray_23.depth;
                 uint _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_22;
+                    Ray _e68 = ray_23;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_10 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
-                    if (n_10 > 0u) {
-                        Ray _e77 = ray_22;
-                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_18 {}, type_18 {}, n_10, 0u};
+                    uint n_11 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
+                    if (n_11 > 0u) {
+                        Ray _e77 = ray_23;
+                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_18 {}, type_18 {}, n_11, 0u};
                         i_5 = 0u;
                         uint2 loop_bound_9 = uint2(4294967295u);
                         bool loop_init_4 = true;
@@ -1869,7 +1885,7 @@ metal::float3 trace(
                             }
                             loop_init_4 = false;
                             uint _e88 = i_5;
-                            if (_e88 >= n_10) {
+                            if (_e88 >= n_11) {
                                 break;
                             }
                             uint _e91 = i_5;
@@ -1891,9 +1907,9 @@ metal::float3 trace(
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_22;
+                    Ray _e124 = ray_23;
                     metal::float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
-                    Ray _e128 = ray_22;
+                    Ray _e128 = ray_23;
                     metal::float3 _e130 = through_medium(_e128, _e30.t, _e127, instances, _buffer_sizes);
                     value = _e130;
                     have_value = true;
@@ -1910,9 +1926,9 @@ metal::float3 trace(
             uint _e137 = depth;
             uint top = _e137 - 1u;
             uint _e144 = stack_1.inner[metal::min(top, 3u)].next;
-            uint child_1 = _e144 - 1u;
+            uint child_2 = _e144 - 1u;
             metal::float3 _e151 = stack_1.inner[metal::min(top, 3u)].sum;
-            metal::float3 _e159 = stack_1.inner[metal::min(top, 3u)].weights.inner[metal::min(child_1, 0u)];
+            metal::float3 _e159 = stack_1.inner[metal::min(top, 3u)].weights.inner[metal::min(child_2, 0u)];
             metal::float3 _e160 = value;
             stack_1.inner[metal::min(top, 3u)].sum = _e151 + (_e159 * _e160);
             have_value = false;
@@ -1931,7 +1947,7 @@ metal::float3 trace(
             metal::float3 _e209 = spawn_origin(hit_7, dir_4, frame, nodes, _buffer_sizes);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_22 = Ray {_e209, 0.0, dir_4, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
+            ray_23 = Ray {_e209, 0.0, dir_4, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
         } else {
             uint _e224 = stack_1.inner[metal::min(top_1, 3u)].slot;
             GpuInstance inst_10 = instances[_e224];
@@ -1988,7 +2004,7 @@ void render_pixel(
     metal::float3 sum = {};
     uint bad = {};
     uint s_1 = {};
-    Ray ray_23 = {};
+    Ray ray_24 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
     sum = metal::float3(0.0);
@@ -2013,13 +2029,13 @@ void render_pixel(
         uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, rng_state, params, F32_INF, _buffer_sizes);
-        ray_23 = _e23;
-        ray_23.depth = 0u;
-        ray_23.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_23.origin;
+        ray_24 = _e23;
+        ray_24.depth = 0u;
+        ray_24.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_24.origin;
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, _buffer_sizes);
-        ray_23.medium = _e33;
-        Ray _e34 = ray_23;
+        ray_24.medium = _e33;
+        Ray _e34 = ray_24;
         metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {

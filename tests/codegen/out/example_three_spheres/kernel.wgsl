@@ -162,17 +162,16 @@ const RAY_CAMERA: u32 = 0u;
 const NO_HIT: u32 = 4294967295u;
 const HAS_MEDIA: bool = false;
 const MESH_GEOMETRY: u32 = 4294967295u;
-const MESH_LEAF_BIT: u32 = 2147483648u;
-const MESH_COUNT_SHIFT: u32 = 27u;
-const MESH_COUNT_MASK: u32 = 15u;
-const MESH_FIRST_MASK: u32 = 134217727u;
+const NODE_LEAF_BIT: u32 = 2147483648u;
+const NODE_COUNT_SHIFT: u32 = 27u;
+const NODE_COUNT_MASK: u32 = 15u;
+const NODE_FIRST_MASK: u32 = 134217727u;
 const BLAS_STACK: u32 = 64u;
 const TLAS_STACK: u32 = 64u;
 const BVH_MESH_STACK: u32 = 64u;
 const TAU: f32 = 6.2831855f;
 const INV_PI: f32 = 0.31830987f;
 const HAS_SECONDARY_RAYS: bool = false;
-const LEAF_BIT: u32 = 2147483648u;
 const HAS_BACKGROUND: bool = true;
 const FLAG_MEDIUM: u32 = 4u;
 const RAY_SHADOW: u32 = 2u;
@@ -391,15 +390,15 @@ fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
     return true;
 }
 
-fn mesh_box_lo(p: vec3<u32>) -> vec3<u32> {
+fn node_box_lo(p: vec3<u32>) -> vec3<u32> {
     return vec3<u32>((p.x & 65535u), (p.x >> 16u), (p.y & 65535u));
 }
 
-fn mesh_point(origin: vec3<f32>, scale: vec3<f32>, q: vec3<u32>) -> vec3<f32> {
+fn node_point(origin: vec3<f32>, scale: vec3<f32>, q: vec3<u32>) -> vec3<f32> {
     return (origin + (vec3<f32>(q) * scale));
 }
 
-fn mesh_box_hi(p_1: vec3<u32>) -> vec3<u32> {
+fn node_box_hi(p_1: vec3<u32>) -> vec3<u32> {
     return vec3<u32>((p_1.y >> 16u), (p_1.z & 65535u), (p_1.z >> 16u));
 }
 
@@ -417,6 +416,22 @@ fn slab(lo: vec3<f32>, hi: vec3<f32>, origin_1: vec3<f32>, inv_dir: vec3<f32>, t
     return bitcast<f32>(_e30);
 }
 
+fn children_entry(n: GpuNode, origin_2: vec3<f32>, scale_1: vec3<f32>, ray_3: Ray, inv: vec3<f32>, tmax_3: f32) -> vec2<f32> {
+    let lq = bitcast<vec3<u32>>(n.min);
+    let rq = bitcast<vec3<u32>>(n.max);
+    let _e10 = node_box_lo(lq);
+    let _e11 = node_point(origin_2, scale_1, _e10);
+    let _e12 = node_box_hi(lq);
+    let _e13 = node_point(origin_2, scale_1, _e12);
+    let _e16 = slab(_e11, _e13, ray_3.origin, inv, ray_3.tmin, tmax_3);
+    let _e17 = node_box_lo(rq);
+    let _e18 = node_point(origin_2, scale_1, _e17);
+    let _e19 = node_box_hi(rq);
+    let _e20 = node_point(origin_2, scale_1, _e19);
+    let _e23 = slab(_e18, _e20, ray_3.origin, inv, ray_3.tmin, tmax_3);
+    return vec2<f32>(_e16, _e23);
+}
+
 fn pop(base: u32, sp: u32) -> vec2<u32> {
     if (sp == 0u) {
         return vec2<u32>(NO_HIT, 0u);
@@ -425,7 +440,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -434,21 +449,21 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e8 = safe_inverse(ray_3.dir);
-    let _e9 = prepare_triangle_ray(ray_3);
+    let _e8 = safe_inverse(ray_4.dir);
+    let _e9 = prepare_triangle_ray(ray_4);
     let base_1 = inst_2.blas_root;
     let header = nodes[base_1];
-    let origin_2 = header.min;
-    let scale_1 = header.max;
+    let origin_3 = header.min;
+    let scale_2 = header.max;
     sp_1 = 0u;
     child = header.a;
     loop {
         let _e20 = child;
-        if ((_e20 & MESH_LEAF_BIT) != 0u) {
+        if ((_e20 & NODE_LEAF_BIT) != 0u) {
             let _e25 = child;
-            let count = ((_e25 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+            let count = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
             let _e32 = child;
-            let first = (_e32 & MESH_FIRST_MASK);
+            let first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
             loop {
                 let _e37 = k;
@@ -458,7 +473,7 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, 
                 let _e41 = k;
                 let prim = ((inst_2.triangle_offset + first) + _e41);
                 let _e45 = best.t;
-                let _e46 = hit_triangle(_e9, prim, ray_3.tmin, _e45);
+                let _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
                     let c_6 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0f));
@@ -478,63 +493,53 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_3: Ray, 
             }
         } else {
             let _e62 = child;
-            let n_6 = nodes[(base_1 + _e62)];
-            let lq = bitcast<vec3<u32>>(n_6.min);
-            let rq = bitcast<vec3<u32>>(n_6.max);
-            let _e71 = mesh_box_lo(lq);
-            let _e72 = mesh_point(origin_2, scale_1, _e71);
-            let _e73 = mesh_box_hi(lq);
-            let _e74 = mesh_point(origin_2, scale_1, _e73);
-            let _e78 = best.t;
-            let _e79 = slab(_e72, _e74, ray_3.origin, _e8, ray_3.tmin, _e78);
-            let _e80 = mesh_box_lo(rq);
-            let _e81 = mesh_point(origin_2, scale_1, _e80);
-            let _e82 = mesh_box_hi(rq);
-            let _e83 = mesh_point(origin_2, scale_1, _e82);
-            let _e87 = best.t;
-            let _e88 = slab(_e81, _e83, ray_3.origin, _e8, ray_3.tmin, _e87);
-            let _e90 = F32_INF;
-            let _e94 = F32_INF;
-            if ((_e79 < bitcast<f32>(_e90)) && (_e88 < bitcast<f32>(_e94))) {
-                near = n_6.a;
-                far = n_6.b;
-                if ((_e88 < _e79) != shadow) {
-                    near = n_6.b;
-                    far = n_6.a;
+            let n_7 = nodes[(base_1 + _e62)];
+            let _e68 = best.t;
+            let _e69 = children_entry(n_7, origin_3, scale_2, ray_4, _e8, _e68);
+            let tl = _e69.x;
+            let tr = _e69.y;
+            let _e73 = F32_INF;
+            let _e77 = F32_INF;
+            if ((tl < bitcast<f32>(_e73)) && (tr < bitcast<f32>(_e77))) {
+                near = n_7.a;
+                far = n_7.b;
+                if ((tr < tl) != shadow) {
+                    near = n_7.b;
+                    far = n_7.a;
                 }
-                let _e106 = sp_1;
-                if (_e106 < BLAS_STACK) {
-                    let _e110 = sp_1;
-                    let _e112 = far;
-                    traversal_stack[min((TLAS_STACK + _e110), 127u)] = _e112;
-                    let _e117 = sp_1;
-                    sp_1 = (_e117 + 1u);
+                let _e89 = sp_1;
+                if (_e89 < BLAS_STACK) {
+                    let _e93 = sp_1;
+                    let _e95 = far;
+                    traversal_stack[min((TLAS_STACK + _e93), 127u)] = _e95;
+                    let _e100 = sp_1;
+                    sp_1 = (_e100 + 1u);
                 }
-                let _e120 = near;
-                child = _e120;
+                let _e103 = near;
+                child = _e103;
                 continue;
             }
-            let _e122 = F32_INF;
-            if (_e79 < bitcast<f32>(_e122)) {
-                child = n_6.a;
+            let _e105 = F32_INF;
+            if (tl < bitcast<f32>(_e105)) {
+                child = n_7.a;
                 continue;
             }
-            let _e127 = F32_INF;
-            if (_e88 < bitcast<f32>(_e127)) {
-                child = n_6.b;
+            let _e110 = F32_INF;
+            if (tr < bitcast<f32>(_e110)) {
+                child = n_7.b;
                 continue;
             }
         }
-        let _e132 = sp_1;
-        let _e133 = pop(TLAS_STACK, _e132);
-        if (_e133.x == NO_HIT) {
+        let _e115 = sp_1;
+        let _e116 = pop(TLAS_STACK, _e115);
+        if (_e116.x == NO_HIT) {
             break;
         }
-        child = _e133.x;
-        sp_1 = _e133.y;
+        child = _e116.x;
+        sp_1 = _e116.y;
     }
-    let _e139 = best;
-    return _e139;
+    let _e122 = best;
+    return _e122;
 }
 
 fn load_BvhMesh(offset_2: u32) -> BvhMesh {
@@ -551,64 +556,64 @@ fn mesh_node_query(m: u32, i: u32) -> BvhNode {
     let base_2 = params[m];
     let header_1 = nodes[base_2];
     lo_1 = header_1.min;
-    let _e14 = mesh_point(header_1.min, header_1.max, vec3(65535u));
+    let _e14 = node_point(header_1.min, header_1.max, vec3(65535u));
     hi_1 = _e14;
     reference = header_1.a;
     if (i >= 2u) {
-        let n_7 = nodes[(base_2 + (i >> 1u))];
-        q_1 = bitcast<vec3<u32>>(n_7.min);
-        reference = n_7.a;
+        let n_8 = nodes[(base_2 + (i >> 1u))];
+        q_1 = bitcast<vec3<u32>>(n_8.min);
+        reference = n_8.a;
         if ((i & 1u) != 0u) {
-            q_1 = bitcast<vec3<u32>>(n_7.max);
-            reference = n_7.b;
+            q_1 = bitcast<vec3<u32>>(n_8.max);
+            reference = n_8.b;
         }
         let _e39 = q_1;
-        let _e40 = mesh_box_lo(_e39);
-        let _e41 = mesh_point(header_1.min, header_1.max, _e40);
+        let _e40 = node_box_lo(_e39);
+        let _e41 = node_point(header_1.min, header_1.max, _e40);
         lo_1 = _e41;
         let _e44 = q_1;
-        let _e45 = mesh_box_hi(_e44);
-        let _e46 = mesh_point(header_1.min, header_1.max, _e45);
+        let _e45 = node_box_hi(_e44);
+        let _e46 = node_point(header_1.min, header_1.max, _e45);
         hi_1 = _e46;
     }
     let _e47 = reference;
-    if ((_e47 & MESH_LEAF_BIT) == 0u) {
+    if ((_e47 & NODE_LEAF_BIT) == 0u) {
         let _e52 = lo_1;
         let _e53 = hi_1;
         let _e55 = reference;
         return BvhNode(_e52, _e53, (2u * _e55), 0u);
     }
     let _e59 = reference;
-    let count_1 = ((_e59 >> (MESH_COUNT_SHIFT & 31u)) & MESH_COUNT_MASK);
+    let count_1 = ((_e59 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
     if (count_1 == 0u) {
         return BvhNode(bitcast<vec3<f32>>(vec3(2139095039u)), bitcast<vec3<f32>>(vec3(4286578687u)), 0u, 0u);
     }
     let _e77 = lo_1;
     let _e78 = hi_1;
     let _e79 = reference;
-    return BvhNode(_e77, _e78, (_e79 & MESH_FIRST_MASK), count_1);
+    return BvhNode(_e77, _e78, (_e79 & NODE_FIRST_MASK), count_1);
 }
 
-fn intersect_aabb(ray_4: Ray, min_: vec3<f32>, max_: vec3<f32>) -> vec2<f32> {
-    let parallel = (abs(ray_4.dir) < vec3(0.000000000000000000000000000000000000011754944f));
+fn intersect_aabb(ray_5: Ray, min_: vec3<f32>, max_: vec3<f32>) -> vec2<f32> {
+    let parallel = (abs(ray_5.dir) < vec3(0.000000000000000000000000000000000000011754944f));
     let _e12 = vec3(1f);
-    let inv_dir_1 = (_e12 / select(ray_4.dir, _e12, parallel));
-    let _e17 = ((min_ - ray_4.origin) * inv_dir_1);
-    let _e18 = ((max_ - ray_4.origin) * inv_dir_1);
-    let _e23 = ((min_ <= ray_4.origin) & (ray_4.origin <= max_));
+    let inv_dir_1 = (_e12 / select(ray_5.dir, _e12, parallel));
+    let _e17 = ((min_ - ray_5.origin) * inv_dir_1);
+    let _e18 = ((max_ - ray_5.origin) * inv_dir_1);
+    let _e23 = ((min_ <= ray_5.origin) & (ray_5.origin <= max_));
     let _e25 = F32_INF;
     let _e27 = vec3(bitcast<f32>(_e25));
     let _e29 = F32_NEG_INF;
     let _e31 = vec3(bitcast<f32>(_e29));
     let near_3 = select(min(_e17, _e18), select(_e27, _e31, _e23), parallel);
     let far_3 = select(max(_e17, _e18), select(_e31, _e27, _e23), parallel);
-    return vec2<f32>(max(max(max(near_3.x, near_3.y), near_3.z), ray_4.tmin), min(min(min(far_3.x, far_3.y), far_3.z), ray_4.tmax));
+    return vec2<f32>(max(max(max(near_3.x, near_3.y), near_3.z), ray_5.tmin), min(min(min(far_3.x, far_3.y), far_3.z), ray_5.tmax));
 }
 
-fn bvh_mesh_enter(ray_5: Ray, n: BvhNode, tmax_3: f32) -> f32 {
-    let _e5 = intersect_aabb(ray_5, n.min, n.max);
+fn bvh_mesh_enter(ray_6: Ray, n_1: BvhNode, tmax_4: f32) -> f32 {
+    let _e5 = intersect_aabb(ray_6, n_1.min, n_1.max);
     let _e7 = F32_INF;
-    return select(bitcast<f32>(_e7), _e5.x, ((_e5.x <= _e5.y) && (_e5.x <= tmax_3)));
+    return select(bitcast<f32>(_e7), _e5.x, ((_e5.x <= _e5.y) && (_e5.x <= tmax_4)));
 }
 
 fn mesh_triangle_query(m_1: u32, i_1: u32) -> Triangle {
@@ -620,9 +625,9 @@ fn mesh_triangle_query(m_1: u32, i_1: u32) -> Triangle {
     return Triangle(_e12.xyz, _e18.xyz, _e24.xyz);
 }
 
-fn intersect_triangle(ray_6: Ray, tri: Triangle) -> Intersection {
+fn intersect_triangle(ray_7: Ray, tri: Triangle) -> Intersection {
     let _e10 = vec3(2139095040u);
-    let dir_2 = select(ray_6.dir, vec3(0f), (abs(ray_6.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
+    let dir_2 = select(ray_7.dir, vec3(0f), (abs(ray_7.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
     let _e31 = abs(dir_2);
     let _e38 = (_e31.y > _e31.x);
     let kz_1 = select(select(0u, 1u, _e38), 2u, (_e31.z > select(_e31.x, _e31.y, _e38)));
@@ -635,13 +640,13 @@ fn intersect_triangle(ray_6: Ray, tri: Triangle) -> Intersection {
     let sx = (dir_2[kx_1] / dz_1);
     let sy = (dir_2[ky_1] / dz_1);
     let sz = (1f / dz_1);
-    let _e62 = (tri.v0_ - ray_6.origin);
+    let _e62 = (tri.v0_ - ray_7.origin);
     let _e68 = (_e62[kx_1] - (sx * _e62[kz_1]));
     let _e69 = (_e62[ky_1] - (sy * _e62[kz_1]));
-    let _e71 = (tri.v1_ - ray_6.origin);
+    let _e71 = (tri.v1_ - ray_7.origin);
     let _e77 = (_e71[kx_1] - (sx * _e71[kz_1]));
     let _e78 = (_e71[ky_1] - (sy * _e71[kz_1]));
-    let _e80 = (tri.v2_ - ray_6.origin);
+    let _e80 = (tri.v2_ - ray_7.origin);
     let _e86 = (_e80[kx_1] - (sx * _e80[kz_1]));
     let _e87 = (_e80[ky_1] - (sy * _e80[kz_1]));
     let u_1 = ((_e86 * _e78) - (_e87 * _e77));
@@ -650,13 +655,13 @@ fn intersect_triangle(ray_6: Ray, tri: Triangle) -> Intersection {
     let det_1 = ((u_1 + v_2) + w_1);
     let _e112 = (1f / det_1);
     let t_6 = ((((u_1 * (sz * _e62[kz_1])) + (v_2 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
-    let hit_6 = (((((all(((bitcast<vec3<u32>>(ray_6.origin) & vec3(2147483647u)) < _e10)) && all(((bitcast<vec3<u32>>(ray_6.dir) & vec3(2147483647u)) < _e10))) && (dz_1 != 0f)) && !(((((u_1 < 0f) || (v_2 < 0f)) || (w_1 < 0f)) && (((u_1 > 0f) || (v_2 > 0f)) || (w_1 > 0f))))) && !((det_1 == 0f))) && ((t_6 >= ray_6.tmin) && (t_6 <= ray_6.tmax)));
+    let hit_6 = (((((all(((bitcast<vec3<u32>>(ray_7.origin) & vec3(2147483647u)) < _e10)) && all(((bitcast<vec3<u32>>(ray_7.dir) & vec3(2147483647u)) < _e10))) && (dz_1 != 0f)) && !(((((u_1 < 0f) || (v_2 < 0f)) || (w_1 < 0f)) && (((u_1 > 0f) || (v_2 > 0f)) || (w_1 > 0f))))) && !((det_1 == 0f))) && ((t_6 >= ray_7.tmin) && (t_6 <= ray_7.tmax)));
     let _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     let _e137 = F32_INF;
     return Intersection(select(bitcast<f32>(_e137), t_6, hit_6), select(vec3<f32>(0f, 0f, 1f), _e132, hit_6), select(vec2(0f), vec2<f32>((v_2 * _e112), (w_1 * _e112)), hit_6));
 }
 
-fn bvh_mesh_intersect(g: BvhMesh, ray_7: Ray) -> Intersection {
+fn bvh_mesh_intersect(g: BvhMesh, ray_8: Ray) -> Intersection {
     var best_1: Intersection;
     var r_2: Ray;
     var stack: array<u32, 64>;
@@ -668,7 +673,7 @@ fn bvh_mesh_intersect(g: BvhMesh, ray_7: Ray) -> Intersection {
 
     let _e3 = F32_INF;
     best_1 = Intersection(bitcast<f32>(_e3), vec3<f32>(0f, 0f, 1f), vec2<f32>());
-    r_2 = ray_7;
+    r_2 = ray_8;
     stack = array<u32, 64>();
     stack_t = array<f32, 64>();
     sp_2 = 0u;
@@ -773,13 +778,13 @@ fn load_Sphere(offset_3: u32) -> Sphere {
     return Sphere(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), bitcast<f32>(_e24));
 }
 
-fn sphere_intersect(s: Sphere, ray_8: Ray) -> Intersection {
+fn sphere_intersect(s: Sphere, ray_9: Ray) -> Intersection {
     var t: f32;
 
-    let f_1 = (ray_8.origin - s.center);
-    let a_6 = dot(ray_8.dir, ray_8.dir);
-    let b_7 = -(dot(f_1, ray_8.dir));
-    let l_1 = (f_1 + (ray_8.dir * vec3((b_7 / a_6))));
+    let f_1 = (ray_9.origin - s.center);
+    let a_6 = dot(ray_9.dir, ray_9.dir);
+    let b_7 = -(dot(f_1, ray_9.dir));
+    let l_1 = (f_1 + (ray_9.dir * vec3((b_7 / a_6))));
     let r2_ = (s.radius * s.radius);
     let disc = (a_6 * (r2_ - dot(l_1, l_1)));
     if (!((disc >= 0f)) || !((a_6 > 0f))) {
@@ -791,33 +796,33 @@ fn sphere_intersect(s: Sphere, ray_8: Ray) -> Intersection {
     let t1_1 = (q_2 / a_6);
     t = min(t0_1, t1_1);
     let _e52 = t;
-    if !((_e52 >= ray_8.tmin)) {
+    if !((_e52 >= ray_9.tmin)) {
         t = max(t0_1, t1_1);
     }
     let _e57 = t;
     let _e60 = t;
-    if !(((_e57 >= ray_8.tmin) && (_e60 <= ray_8.tmax))) {
+    if !(((_e57 >= ray_9.tmin) && (_e60 <= ray_9.tmax))) {
         let _e66 = F32_INF;
         return Intersection(bitcast<f32>(_e66), vec3<f32>(0f, 0f, 1f), vec2<f32>());
     }
     let _e76 = t;
-    let _e82 = normalize_vec3f(((ray_8.origin + (ray_8.dir * vec3(_e76))) - s.center));
+    let _e82 = normalize_vec3f(((ray_9.origin + (ray_9.dir * vec3(_e76))) - s.center));
     let u_2 = select((0.5f + (atan2(_e82.z, -(_e82.x)) / TAU)), 0.5f, ((_e82.x == 0f) && (_e82.z == 0f)));
     let uv_1 = vec2<f32>(u_2, (acos(min(max(_e82.y, -1f), 1f)) * INV_PI));
     let _e109 = t;
     return Intersection(_e109, _e82, uv_1);
 }
 
-fn dispatch_intersection(type_id_1: u32, offset_4: u32, ray_9: Ray) -> Intersection {
+fn dispatch_intersection(type_id_1: u32, offset_4: u32, ray_10: Ray) -> Intersection {
     switch type_id_1 {
         case 0u: {
             let _e3 = load_BvhMesh(offset_4);
-            let _e4 = bvh_mesh_intersect(_e3, ray_9);
+            let _e4 = bvh_mesh_intersect(_e3, ray_10);
             return _e4;
         }
         case 1u: {
             let _e5 = load_Sphere(offset_4);
-            let _e6 = sphere_intersect(_e5, ray_9);
+            let _e6 = sphere_intersect(_e5, ray_10);
             return _e6;
         }
         default: {
@@ -826,16 +831,16 @@ fn dispatch_intersection(type_id_1: u32, offset_4: u32, ray_9: Ray) -> Intersect
     return Intersection();
 }
 
-fn intersect_object(slot_2: u32, ray_10: Ray, best_2: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_2: u32, ray_11: Ray, best_2: Candidate, shadow_1: bool) -> Candidate {
     var r_3: Ray;
 
     let inst_5 = instances[slot_2];
-    let _e7 = to_object(inst_5, ray_10);
+    let _e7 = to_object(inst_5, ray_11);
     r_3 = _e7;
     r_3.tmax = best_2.t;
     if (inst_5.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_3;
-        let _e15 = intersect_mesh(inst_5, slot_2, ray_10, _e14, best_2, shadow_1);
+        let _e15 = intersect_mesh(inst_5, slot_2, ray_11, _e14, best_2, shadow_1);
         return _e15;
     }
     let _e18 = r_3;
@@ -845,7 +850,7 @@ fn intersect_object(slot_2: u32, ray_10: Ray, best_2: Candidate, shadow_1: bool)
     let _e31 = F32_INF;
     if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < bitcast<f32>(_e31))) {
         let c_7 = Candidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        let _e40 = accept(inst_5, ray_10, c_7);
+        let _e40 = accept(inst_5, ray_11, c_7);
         if _e40 {
             return c_7;
         }
@@ -866,37 +871,37 @@ fn point_to_world(inst_3: GpuInstance, p_2: vec3<f32>) -> vec3<f32> {
 }
 
 fn decode_octahedral(bits: u32) -> vec3<f32> {
-    var n_1: vec3<f32>;
+    var n_2: vec3<f32>;
 
     let e = unpack2x16snorm(bits);
-    n_1 = vec3<f32>(e.x, e.y, ((1f - abs(e.x)) - abs(e.y)));
-    let _e14 = n_1.z;
+    n_2 = vec3<f32>(e.x, e.y, ((1f - abs(e.x)) - abs(e.y)));
+    let _e14 = n_2.z;
     if (_e14 < 0f) {
-        let _e21 = n_1;
+        let _e21 = n_2;
         let s_4 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
-        let _e29 = n_1;
+        let _e29 = n_2;
         let xy = ((vec2(1f) - abs(_e29.yx)) * s_4);
-        let _e37 = n_1.z;
-        n_1 = vec3<f32>(xy.x, xy.y, _e37);
+        let _e37 = n_2.z;
+        n_2 = vec3<f32>(xy.x, xy.y, _e37);
     }
-    let _e39 = n_1;
+    let _e39 = n_2;
     let _e40 = normalize_vec3f(_e39);
     return _e40;
 }
 
-fn normal_to_world(inst_4: GpuInstance, n_2: vec3<f32>) -> vec3<f32> {
-    let w_2 = (((inst_4.world_to_object_0_.xyz * vec3(n_2.x)) + (inst_4.world_to_object_1_.xyz * vec3(n_2.y))) + (inst_4.world_to_object_2_.xyz * vec3(n_2.z)));
+fn normal_to_world(inst_4: GpuInstance, n_3: vec3<f32>) -> vec3<f32> {
+    let w_2 = (((inst_4.world_to_object_0_.xyz * vec3(n_3.x)) + (inst_4.world_to_object_1_.xyz * vec3(n_3.y))) + (inst_4.world_to_object_2_.xyz * vec3(n_3.z)));
     let _e19 = normalize_vec3f(w_2);
     return _e19;
 }
 
-fn finish_hit(ray_11: Ray, c_1: Candidate) -> Hit {
+fn finish_hit(ray_12: Ray, c_1: Candidate) -> Hit {
     var hit: Hit;
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
     let inst_6 = instances[c_1.slot];
-    hit = Hit((ray_11.origin + (ray_11.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_6.object, c_1.primitive);
+    hit = Hit((ray_12.origin + (ray_12.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_6.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_6.geometry_type == MESH_GEOMETRY) {
@@ -932,7 +937,7 @@ fn finish_hit(ray_11: Ray, c_1: Candidate) -> Hit {
     let _e131 = normal_to_world(inst_6, _e130);
     hit.normal = _e131;
     let _e135 = hit.geometric_normal;
-    hit.front_face = (dot(ray_11.dir, _e135) < 0f);
+    hit.front_face = (dot(ray_12.dir, _e135) < 0f);
     let _e139 = hit;
     return _e139;
 }
@@ -983,99 +988,101 @@ fn medium_at(p_3: vec3<f32>, exclude: u32) -> u32 {
     return _e60;
 }
 
-fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_13: Ray, shadow_2: bool) -> Candidate {
     var best_3: Candidate;
     var sp_3: u32;
-    var node_1: u32;
+    var child_1: u32;
     var near_1: u32;
     var far_1: u32;
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_12.tmax);
+    let _e7 = no_candidate(ray_13.tmax);
     best_3 = _e7;
     let frame_2 = frame;
     if (frame_2.instance_count == 0u) {
         let _e14 = best_3;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_12.dir);
-    sp_3 = 0u;
-    node_1 = frame_2.tlas_root;
-    let _e21 = node_1;
-    let root = nodes[_e21];
-    let _e30 = best_3.t;
-    let _e31 = slab(root.min, root.max, ray_12.origin, _e16, ray_12.tmin, _e30);
-    let _e33 = F32_INF;
-    if (_e31 == bitcast<f32>(_e33)) {
-        let _e36 = best_3;
-        return _e36;
+    let _e16 = safe_inverse(ray_13.dir);
+    let base_3 = frame_2.tlas_root;
+    let header_2 = nodes[base_3];
+    let origin_4 = header_2.min;
+    let scale_3 = header_2.max;
+    let _e25 = node_point(origin_4, scale_3, vec3(65535u));
+    let _e29 = best_3.t;
+    let _e30 = slab(origin_4, _e25, ray_13.origin, _e16, ray_13.tmin, _e29);
+    let _e32 = F32_INF;
+    if (_e30 == bitcast<f32>(_e32)) {
+        let _e35 = best_3;
+        return _e35;
     }
+    sp_3 = 0u;
+    child_1 = header_2.a;
     loop {
-        let _e37 = node_1;
-        let n_8 = nodes[_e37];
-        if ((n_8.b & LEAF_BIT) != 0u) {
-            if ((n_8.b & ~(LEAF_BIT)) != 0u) {
-                let _e53 = best_3;
-                let _e54 = intersect_object(n_8.a, ray_12, _e53, shadow_2);
-                best_3 = _e54;
-                let _e56 = best_3.slot;
-                if (shadow_2 && (_e56 != NO_HIT)) {
-                    let _e60 = best_3;
-                    return _e60;
+        let _e40 = child_1;
+        if ((_e40 & NODE_LEAF_BIT) != 0u) {
+            let _e45 = child_1;
+            if (((_e45 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                let _e54 = child_1;
+                let _e57 = best_3;
+                let _e58 = intersect_object((_e54 & NODE_FIRST_MASK), ray_13, _e57, shadow_2);
+                best_3 = _e58;
+                let _e60 = best_3.slot;
+                if (shadow_2 && (_e60 != NO_HIT)) {
+                    let _e64 = best_3;
+                    return _e64;
                 }
             }
         } else {
-            let left = (frame_2.tlas_root + n_8.a);
-            let right = (left + 1u);
-            let l_2 = nodes[left];
-            let rr = nodes[right];
-            let _e77 = best_3.t;
-            let _e78 = slab(l_2.min, l_2.max, ray_12.origin, _e16, ray_12.tmin, _e77);
-            let _e84 = best_3.t;
-            let _e85 = slab(rr.min, rr.max, ray_12.origin, _e16, ray_12.tmin, _e84);
-            let _e87 = F32_INF;
-            let _e91 = F32_INF;
-            if ((_e78 < bitcast<f32>(_e87)) && (_e85 < bitcast<f32>(_e91))) {
-                near_1 = left;
-                far_1 = right;
-                if (_e85 < _e78) {
-                    near_1 = right;
-                    far_1 = left;
+            let _e65 = child_1;
+            let n_9 = nodes[(base_3 + _e65)];
+            let _e71 = best_3.t;
+            let _e72 = children_entry(n_9, origin_4, scale_3, ray_13, _e16, _e71);
+            let tl_1 = _e72.x;
+            let tr_1 = _e72.y;
+            let _e76 = F32_INF;
+            let _e80 = F32_INF;
+            if ((tl_1 < bitcast<f32>(_e76)) && (tr_1 < bitcast<f32>(_e80))) {
+                near_1 = n_9.a;
+                far_1 = n_9.b;
+                if (tr_1 < tl_1) {
+                    near_1 = n_9.b;
+                    far_1 = n_9.a;
                 }
-                let _e98 = sp_3;
-                if (_e98 < TLAS_STACK) {
-                    let _e101 = sp_3;
-                    let _e102 = far_1;
-                    traversal_stack[min(_e101, 127u)] = _e102;
-                    let _e107 = sp_3;
-                    sp_3 = (_e107 + 1u);
+                let _e91 = sp_3;
+                if (_e91 < TLAS_STACK) {
+                    let _e94 = sp_3;
+                    let _e95 = far_1;
+                    traversal_stack[min(_e94, 127u)] = _e95;
+                    let _e100 = sp_3;
+                    sp_3 = (_e100 + 1u);
                 }
-                let _e110 = near_1;
-                node_1 = _e110;
+                let _e103 = near_1;
+                child_1 = _e103;
                 continue;
             }
-            let _e112 = F32_INF;
-            if (_e78 < bitcast<f32>(_e112)) {
-                node_1 = left;
+            let _e105 = F32_INF;
+            if (tl_1 < bitcast<f32>(_e105)) {
+                child_1 = n_9.a;
                 continue;
             }
-            let _e116 = F32_INF;
-            if (_e85 < bitcast<f32>(_e116)) {
-                node_1 = right;
+            let _e110 = F32_INF;
+            if (tr_1 < bitcast<f32>(_e110)) {
+                child_1 = n_9.b;
                 continue;
             }
         }
-        let _e120 = sp_3;
-        let _e121 = pop(0u, _e120);
-        if (_e121.x == NO_HIT) {
+        let _e115 = sp_3;
+        let _e116 = pop(0u, _e115);
+        if (_e116.x == NO_HIT) {
             break;
         }
-        node_1 = _e121.x;
-        sp_3 = _e121.y;
+        child_1 = _e116.x;
+        sp_3 = _e116.y;
     }
-    let _e127 = best_3;
-    return _e127;
+    let _e122 = best_3;
+    return _e122;
 }
 
 fn load_Skybox(offset_5: u32) -> Skybox {
@@ -1103,7 +1110,7 @@ fn srgb_channel(c_2: f32) -> f32 {
 }
 
 fn texel_at(t_1: u32, x_2: i32, y: i32) -> vec4<f32> {
-    let base_3 = params[t_1];
+    let base_4 = params[t_1];
     let _e10 = params[(t_1 + 1u)];
     let w_4 = max(_e10, 1u);
     let _e17 = params[(t_1 + 2u)];
@@ -1117,16 +1124,16 @@ fn texel_at(t_1: u32, x_2: i32, y: i32) -> vec4<f32> {
     let yi = u32(_e37);
     let index = ((yi * w_4) + xi);
     if (format == 0u) {
-        let _e46 = texels[(base_3 + index)];
+        let _e46 = texels[(base_4 + index)];
         let c_8 = unpack4x8unorm(_e46);
         let _e49 = srgb_channel(c_8.x);
         let _e51 = srgb_channel(c_8.y);
         let _e53 = srgb_channel(c_8.z);
         return vec4<f32>(_e49, _e51, _e53, c_8.w);
     }
-    let _e61 = texels[(base_3 + (index * 2u))];
+    let _e61 = texels[(base_4 + (index * 2u))];
     let rg = unpack2x16float(_e61);
-    let _e70 = texels[((base_3 + (index * 2u)) + 1u)];
+    let _e70 = texels[((base_4 + (index * 2u)) + 1u)];
     let ba = unpack2x16float(_e70);
     return vec4<f32>(rg, ba);
 }
@@ -1150,8 +1157,8 @@ fn sample_texture(t_2: u32, uv: vec2<f32>) -> vec4<f32> {
     return mix(a_7, b_9, vec4(fr.y));
 }
 
-fn skybox(b_5: Skybox, ray_13: Ray) -> vec3<f32> {
-    let _e3 = normalize_vec3f(ray_13.dir);
+fn skybox(b_5: Skybox, ray_14: Ray) -> vec3<f32> {
+    let _e3 = normalize_vec3f(ray_14.dir);
     let pole = ((_e3.x == 0f) && (_e3.z == 0f));
     let longitude = (select(atan2(_e3.x, -(_e3.z)), 0f, pole) - radians(b_5.rotation));
     let latitude = acos(min(max(_e3.y, -1f), 1f));
@@ -1160,37 +1167,37 @@ fn skybox(b_5: Skybox, ray_13: Ray) -> vec3<f32> {
     return (_e34.xyz * vec3(b_5.intensity));
 }
 
-fn dispatch_miss(type_id_2: u32, offset_6: u32, ray_14: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_6: u32, ray_15: Ray) -> vec3<f32> {
     let _e2 = load_Skybox(offset_6);
-    let _e3 = skybox(_e2, ray_14);
+    let _e3 = skybox(_e2, ray_15);
     return _e3;
 }
 
-fn miss(ray_15: Ray) -> vec3<f32> {
+fn miss(ray_16: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_3 = frame;
-    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_15);
+    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_16);
     return _e9;
 }
 
-fn dispatch_medium(type_id_3: u32, offset_7: u32, ray_16: Ray, t_3: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_3: u32, offset_7: u32, ray_17: Ray, t_3: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_17: Ray, t_4: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_18: Ray, t_4: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_17.medium == 0u) {
+    if (ray_18.medium == 0u) {
         return radiance_1;
     }
-    let inst_7 = instances[(ray_17.medium - 1u)];
+    let inst_7 = instances[(ray_18.medium - 1u)];
     if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_17, t_4, radiance_1);
+    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_18, t_4, radiance_1);
     return _e21;
 }
 
@@ -1219,27 +1226,28 @@ fn load_PointLight(offset_9: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn offset_origin(p_4: vec3<f32>, n_3: vec3<f32>) -> vec3<f32> {
+fn offset_origin(p_4: vec3<f32>, n_4: vec3<f32>) -> vec3<f32> {
     let _e3 = frame;
-    let root_1 = nodes[_e3.tlas_root];
-    let a_8 = max(abs(p_4), max(abs(root_1.min), abs(root_1.max)));
+    let header_3 = nodes[_e3.tlas_root];
+    let _e15 = node_point(header_3.min, header_3.max, vec3(65535u));
+    let a_8 = max(abs(p_4), max(abs(header_3.min), abs(_e15)));
     let m_3 = max(max(a_8.x, a_8.y), a_8.z);
-    return (p_4 + (n_3 * vec3((m_3 * (1f / 65536f)))));
+    return (p_4 + (n_4 * vec3((m_3 * (1f / 65536f)))));
 }
 
 fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
-    var n_4: vec3<f32>;
+    var n_5: vec3<f32>;
 
-    n_4 = normal;
-    let _e5 = n_4;
+    n_5 = normal;
+    let _e5 = n_5;
     if (dot(dir, _e5) < 0f) {
-        let _e9 = n_4;
-        n_4 = -(_e9);
+        let _e9 = n_5;
+        n_5 = -(_e9);
     }
-    let _e11 = n_4;
+    let _e11 = n_5;
     let _e12 = offset_origin(position, _e11);
-    let ray_24 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
-    let _e23 = intersect_scene(ray_24, true);
+    let ray_25 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
+    let _e23 = intersect_scene(ray_25, true);
     return select(1f, 0f, (_e23.slot != NO_HIT));
 }
 
@@ -1277,11 +1285,11 @@ fn sample_light_query(i_3: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> L
     return _e27;
 }
 
-fn lambert_shade(m_2: Lambert, ray_18: Ray, hit_1: Hit) -> vec3<f32> {
+fn lambert_shade(m_2: Lambert, ray_19: Ray, hit_1: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_4: u32;
 
-    let n_9 = faceForward(hit_1.normal, ray_18.dir, hit_1.normal);
+    let n_10 = faceForward(hit_1.normal, ray_19.dir, hit_1.normal);
     color = vec3(0f);
     let _e11 = light_count_query();
     i_4 = 0u;
@@ -1293,7 +1301,7 @@ fn lambert_shade(m_2: Lambert, ray_18: Ray, hit_1: Hit) -> vec3<f32> {
         let _e15 = i_4;
         let _e18 = sample_light_query(_e15, hit_1.position, hit_1.geometric_normal);
         let _e19 = color;
-        color = (_e19 + (((m_2.albedo * vec3(INV_PI)) * _e18.radiance) * vec3(max(dot(n_9, _e18.dir), 0f))));
+        color = (_e19 + (((m_2.albedo * vec3(INV_PI)) * _e18.radiance) * vec3(max(dot(n_10, _e18.dir), 0f))));
         continuing {
             let _e33 = i_4;
             i_4 = (_e33 + 1u);
@@ -1303,33 +1311,33 @@ fn lambert_shade(m_2: Lambert, ray_18: Ray, hit_1: Hit) -> vec3<f32> {
     return _e36;
 }
 
-fn dispatch_closest_hit(type_id_5: u32, offset_11: u32, ray_19: Ray, hit_2: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_5: u32, offset_11: u32, ray_20: Ray, hit_2: Hit, secondary: vec3<f32>) -> vec3<f32> {
     let _e3 = load_Lambert(offset_11);
-    let _e4 = lambert_shade(_e3, ray_19, hit_2);
+    let _e4 = lambert_shade(_e3, ray_20, hit_2);
     return _e4;
 }
 
-fn shade_direct(ray_20: Ray, c_3: Candidate) -> vec3<f32> {
+fn shade_direct(ray_21: Ray, c_3: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_3.slot];
-    let _e6 = finish_hit(ray_20, c_3);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_21, c_3);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_21: Ray, hit_3: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_22: Ray, hit_3: Hit) {
     return;
 }
 
 fn spawn_origin(hit_4: Hit, dir_1: vec3<f32>) -> vec3<f32> {
-    var n_5: vec3<f32>;
+    var n_6: vec3<f32>;
 
-    n_5 = hit_4.geometric_normal;
-    let _e4 = n_5;
+    n_6 = hit_4.geometric_normal;
+    let _e4 = n_6;
     if (dot(dir_1, _e4) < 0f) {
-        let _e8 = n_5;
-        n_5 = -(_e8);
+        let _e8 = n_6;
+        n_6 = -(_e8);
     }
-    let _e11 = n_5;
+    let _e11 = n_6;
     let _e12 = offset_origin(hit_4.position, _e11);
     return _e12;
 }
@@ -1337,7 +1345,7 @@ fn spawn_origin(hit_4: Hit, dir_1: vec3<f32>) -> vec3<f32> {
 fn trace(camera_ray: Ray) -> vec3<f32> {
     var stack_1: array<Frame, 4>;
     var depth: u32;
-    var ray_22: Ray;
+    var ray_23: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var pushed: bool;
@@ -1359,42 +1367,42 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack_1 = array<Frame, 4>();
     depth = 0u;
-    ray_22 = camera_ray;
+    ray_23 = camera_ray;
     value = vec3(0f);
     have_value = false;
     loop {
         let _e26 = have_value;
         if !(_e26) {
-            let _e28 = ray_22;
+            let _e28 = ray_23;
             let _e30 = intersect_scene(_e28, false);
             if (_e30.slot == NO_HIT) {
-                let _e34 = ray_22;
+                let _e34 = ray_23;
                 let _e36 = F32_INF;
-                let _e38 = ray_22;
+                let _e38 = ray_23;
                 let _e39 = miss(_e38);
                 let _e40 = through_medium(_e34, bitcast<f32>(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 let inst_9 = instances[_e30.slot];
-                let _e46 = ray_22;
+                let _e46 = ray_23;
                 let _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                let _e56 = ray_22.depth;
+                let _e56 = ray_23.depth;
                 let _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    let _e68 = ray_22;
+                    let _e68 = ray_23;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     let _e70 = spawn_count;
-                    let n_10 = min(min(_e70, 1u), MAX_SPAWN);
-                    if (n_10 > 0u) {
-                        let _e77 = ray_22;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_10, 0u);
+                    let n_11 = min(min(_e70, 1u), MAX_SPAWN);
+                    if (n_11 > 0u) {
+                        let _e77 = ray_23;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_11, 0u);
                         i_5 = 0u;
                         loop {
                             let _e88 = i_5;
-                            if (_e88 >= n_10) {
+                            if (_e88 >= n_11) {
                                 break;
                             }
                             let _e91 = i_5;
@@ -1420,9 +1428,9 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 }
                 let _e120 = pushed;
                 if !(_e120) {
-                    let _e124 = ray_22;
+                    let _e124 = ray_23;
                     let _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0f));
-                    let _e128 = ray_22;
+                    let _e128 = ray_23;
                     let _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1439,9 +1447,9 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e137 = depth;
             let top = (_e137 - 1u);
             let _e144 = stack_1[min(top, 3u)].next;
-            let child_1 = (_e144 - 1u);
+            let child_2 = (_e144 - 1u);
             let _e151 = stack_1[min(top, 3u)].sum;
-            let _e159 = stack_1[min(top, 3u)].weights[min(child_1, 0u)];
+            let _e159 = stack_1[min(top, 3u)].weights[min(child_2, 0u)];
             let _e160 = value;
             stack_1[min(top, 3u)].sum = (_e151 + (_e159 * _e160));
             have_value = false;
@@ -1460,7 +1468,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e209 = spawn_origin(hit_7, dir_4);
             let _e212 = F32_INF;
             let _e218 = medium;
-            ray_22 = Ray(_e209, 0f, dir_4, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_23 = Ray(_e209, 0f, dir_4, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             let _e224 = stack_1[min(top_1, 3u)].slot;
             let inst_10 = instances[_e224];
@@ -1492,7 +1500,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s_1: u32;
-    var ray_23: Ray;
+    var ray_24: Ray;
 
     let frame_5 = frame;
     let tile_1 = tile;
@@ -1509,13 +1517,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
         let sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_23 = _e23;
-        ray_23.depth = 0u;
-        ray_23.kind = RAY_CAMERA;
-        let _e31 = ray_23.origin;
+        ray_24 = _e23;
+        ray_24.depth = 0u;
+        ray_24.kind = RAY_CAMERA;
+        let _e31 = ray_24.origin;
         let _e33 = medium_at(_e31, NO_HIT);
-        ray_23.medium = _e33;
-        let _e34 = ray_23;
+        ray_24.medium = _e33;
+        let _e34 = ray_24;
         let _e35 = trace(_e34);
         let _e36 = is_finite_vec3f(_e35);
         if all(_e36) {
