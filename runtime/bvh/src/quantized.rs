@@ -1,17 +1,19 @@
-//! The object-level node layout: a mesh's BVH with both children of an inner node in one 32-byte
-//! record, their boxes quantised to 16 bits per bound relative to the mesh's root box, and
-//! [`quantize`], the only converter from the canonical [`Bvh`] to it. The traversal kernel's
-//! `intersect_mesh` (and the CPU reference [`crate::traverse::closest_hit_quantized`]) read
-//! exactly this layout; the scene-level BVH keeps the full-precision [`crate::GpuNode`] layout.
+//! The GPU node layout of every BVH the kernel reads (each mesh's object-level BVH and the
+//! scene-level BVH): both children of an inner node in one 32-byte record, their boxes quantised
+//! to 16 bits per bound relative to the BVH's root box, and [`quantize`], the only converter from
+//! the canonical [`Bvh`] to it. The traversal kernel (`intersect_mesh` and `intersect_scene` in
+//! `stdlib/kernel/trace.rt`) and the CPU reference [`crate::traverse::closest_hit_quantized`]
+//! read exactly this layout. In the scene-level BVH a leaf's slots are instance slots.
 //!
 //! Why: on lavapipe every storage-buffer load is a per-lane sequence, so a traversal step costs
-//! about what its loads cost. The [`crate::GpuNode`] step loads 14 words (the node's `a`/`b`,
-//! then both children's boxes); a [`QuantizedNode`] step loads 8 (both boxes and both child
-//! references), and there is one record per inner node instead of one per node, so a mesh's
-//! nodes take half the memory. Leaves need no record at all: a child reference holds a leaf's
-//! whole range.
+//! about what its loads cost. A [`crate::GpuNode`] step loads 14 words (the node's `a`/`b`, then
+//! both children's boxes); a [`QuantizedNode`] step loads 8 (both boxes and both child
+//! references), and there is one record per inner node instead of one per node, so the nodes take
+//! half the memory. Leaves need no record at all: a child reference holds a leaf's whole range.
+//! On the thesis frame this took lavapipe from 802 to 722 ms (ARCHITECTURE.md, "Performance on
+//! lavapipe").
 //!
-//! # Records of one mesh (32 bytes each, 16-byte aligned, contiguous from the mesh's base)
+//! # Records of one BVH (32 bytes each, 16-byte aligned, contiguous from the BVH's base)
 //!
 //! * Record 0 is a [`QuantizedHeader`]: the quantisation frame (`origin`, `scale`) and the
 //!   reference to the root.
@@ -35,7 +37,7 @@
 //! bound, and by the brute-force tests).
 //!
 //! A **child reference** is 32 bits: bit 31 clear: an inner node, the record index (`>= 1`)
-//! relative to the mesh's base. Bit 31 set ([`LEAF_BIT`]): a leaf, bits 27..=30 its slot count
+//! relative to the BVH's base. Bit 31 set ([`LEAF_BIT`]): a leaf, bits 27..=30 its slot count
 //! (at most [`MAX_LEAF_COUNT`]) and bits 0..=26 its first slot (at most [`MAX_FIRST`]) in the
 //! reordered primitive list ([`Bvh::prim_indices`]). An empty BVH is the header alone, whose root
 //! is a leaf over zero slots.
@@ -57,13 +59,13 @@ pub const LEAF_BIT: u32 = 1 << 31;
 pub const COUNT_SHIFT: u32 = 27;
 /// Largest slot count of a leaf (4 bits; the build presets use at most 8).
 pub const MAX_LEAF_COUNT: u32 = 15;
-/// Largest first slot of a leaf (27 bits: about 134 million triangle slots per mesh).
+/// Largest first slot of a leaf (27 bits: about 134 million primitive slots per BVH).
 pub const MAX_FIRST: u32 = (1 << COUNT_SHIFT) - 1;
 /// Steps across the root box: the largest bound, 65535, lies 3 steps beyond the root's maximum,
 /// which leaves room for rounding the upper bounds outwards.
 pub const QUANT_STEPS: f32 = 65532.0;
 
-/// Record 0 of a mesh: the quantisation frame and the root reference (see the module docs).
+/// Record 0 of a BVH: the quantisation frame and the root reference (see the module docs).
 #[derive(Clone, Copy, Debug, PartialEq, Pod, Zeroable)]
 #[repr(C, align(16))]
 pub struct QuantizedHeader {
@@ -150,7 +152,7 @@ pub enum QuantizeError {
         /// The leaf's slot count.
         count: u32,
     },
-    /// The mesh has more primitive slots than a reference can address.
+    /// The BVH has more primitive slots than a reference can address.
     TooManySlots {
         /// The BVH's slot count.
         slots: u64,
@@ -162,11 +164,11 @@ impl std::fmt::Display for QuantizeError {
         match self {
             QuantizeError::LeafTooLarge { count } => write!(
                 f,
-                "a BVH leaf holds {count} primitives; the mesh node layout allows at most {MAX_LEAF_COUNT}"
+                "a BVH leaf holds {count} primitives; the BVH node layout allows at most {MAX_LEAF_COUNT}"
             ),
             QuantizeError::TooManySlots { slots } => write!(
                 f,
-                "a mesh with {slots} triangle slots is larger than the mesh node layout's limit of {}",
+                "a BVH over {slots} primitive slots is larger than the node layout's limit of {}",
                 u64::from(MAX_FIRST) + 1
             ),
         }
@@ -175,7 +177,7 @@ impl std::fmt::Display for QuantizeError {
 
 impl std::error::Error for QuantizeError {}
 
-/// A mesh's BVH in the quantised layout: the header and the inner-node records (record `i >= 1`
+/// A BVH in the quantised layout: the header and the inner-node records (record `i >= 1`
 /// is `nodes[i - 1]`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct QuantizedBvh {
@@ -286,8 +288,7 @@ impl Axis {
     /// The same in `f64`, close enough to the exact value to decide the fused rounding: if it is
     /// `<= v` (`>= v`), the exact value is within far less than half an `f32` step of `v` or
     /// below (above) it, so the fused result, the exact value rounded once, is `<= v` (`>= v`).
-    /// (`f32::mul_add` itself is a library call without a target FMA and made the conversion of
-    /// a 10M-triangle mesh a second slower.)
+    /// (`f32::mul_add` would be a library call: the x86-64 baseline has no FMA instruction.)
     #[inline(always)]
     fn exact(self, q: u32) -> f64 {
         f64::from(self.origin) + f64::from(q) * f64::from(self.scale)

@@ -6,7 +6,7 @@
 //!    `mesh`/`texture` value in any instance's fields;
 //! 2. check the camera (the scene's, else the first model's);
 //! 3. build one BLAS per distinct mesh (counted in [`EntityStats::blas_builds`]), quantise it into
-//!    `nodes` (the mesh node layout of `rtc_bvh::quantized`: a header, then one record per inner
+//!    `nodes` (the node layout of `rtc_bvh::quantized`: a header, then one record per inner
 //!    node), and encode its triangle slots (`encode.rs`);
 //! 4. concatenate the textures' texels;
 //! 5. write `params`: mesh and texture records, then every instance, then the light table;
