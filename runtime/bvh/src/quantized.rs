@@ -40,7 +40,9 @@
 //! relative to the BVH's base. Bit 31 set ([`LEAF_BIT`]): a leaf, bits 27..=30 its slot count
 //! (at most [`MAX_LEAF_COUNT`]) and bits 0..=26 its first slot (at most [`MAX_FIRST`]) in the
 //! reordered primitive list ([`Bvh::prim_indices`]). An empty BVH is the header alone, whose root
-//! is a leaf over zero slots.
+//! is a leaf over zero slots. No reference is `u32::MAX`, the kernel's empty-stack marker: that
+//! would be a leaf of 15 slots from slot `MAX_FIRST`, past the `MAX_FIRST + 1` slots a BVH may
+//! have ([`QuantizeError::TooManySlots`]).
 //!
 //! In WGSL the records are read as the node buffer's `GpuNode` (same size, alignment and
 //! offsets), with `bitcast<vec3u>` of `min` and `max` for the quantised boxes.

@@ -309,6 +309,11 @@ fn check_quantized(bvh: &Bvh, name: &str) {
         match (nodes[i].kind(), child) {
             (NodeKind::Leaf { first, count }, Child::Leaf { first: f, count: c }) => {
                 assert_eq!((first, count), (f, c), "{name}: leaf {i}");
+                assert_ne!(
+                    Child::Leaf { first, count }.encode(),
+                    u32::MAX,
+                    "{name}: marker"
+                );
             }
             (NodeKind::Inner { left }, Child::Inner(record)) => {
                 assert_eq!(
