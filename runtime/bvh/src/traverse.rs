@@ -212,7 +212,7 @@ fn closer(a: &Hit, b: &Hit) -> bool {
     a.t < b.t || (a.t == b.t && a.prim < b.prim)
 }
 
-/// The traversal stack: node index and entry distance of each deferred node.
+/// The traversal stack: node id and entry distance of each deferred node.
 struct Stack {
     entries: [(u32, f32); MAX_DEPTH as usize],
     len: usize,
@@ -228,7 +228,7 @@ impl Stack {
 
     #[inline(always)]
     fn push(&mut self, node: u32, t: f32) {
-        // Cannot overflow for nodes from `flatten` (depth <= MAX_DEPTH, one push per level).
+        // Cannot overflow for valid trees (depth <= MAX_DEPTH, one push per level).
         self.entries[self.len] = (node, t);
         self.len += 1;
     }
@@ -247,89 +247,85 @@ impl Stack {
     }
 }
 
-/// The traversal loop shared by closest and any hit. `leaf(slot, ray, t_limit)` tests one
-/// primitive slot and returns a hit within `t_limit`; `stop_at_first` ends at the first hit.
-#[inline(always)]
-fn traverse<F>(nodes: &[GpuNode], ray: &Ray, stop_at_first: bool, mut leaf: F) -> Option<Hit>
-where
-    F: FnMut(u32, &PreparedRay, f32) -> Option<Hit>,
-{
-    let r = PreparedRay::new(ray)?;
-    let root = &nodes[0];
-    intersect_aabb(&r, root.min.into(), root.max.into(), r.tmax)?;
-    let mut best: Option<Hit> = None;
-    let mut t_best = r.tmax;
-    let mut stack = Stack::new();
-    let mut node = 0u32;
-    loop {
-        let n = &nodes[node as usize];
+/// One node as the traversal loop sees it.
+enum Node {
+    /// A leaf over `count` slots from `first`.
+    Leaf { first: u32, count: u32 },
+    /// An inner node: both children's boxes and ids, left first.
+    Inner([(Vec3A, Vec3A, u32); 2]),
+}
+
+/// What the traversal loop reads of a node layout: the root's id (after any root-box test) and
+/// each node by id.
+trait Tree {
+    /// The root's id, or `None` when the ray misses the whole tree.
+    fn root(&self, ray: &PreparedRay) -> Option<u32>;
+    /// Node `id`.
+    fn node(&self, id: u32) -> Node;
+}
+
+/// [`GpuNode`]s: node `i`'s id is `i`; the root's box is tested first.
+impl Tree for [GpuNode] {
+    fn root(&self, ray: &PreparedRay) -> Option<u32> {
+        let root = &self[0];
+        intersect_aabb(ray, root.min.into(), root.max.into(), ray.tmax)?;
+        Some(0)
+    }
+
+    #[inline(always)]
+    fn node(&self, id: u32) -> Node {
+        let n = &self[id as usize];
         if n.is_leaf() {
-            for slot in n.a..n.a + n.count() {
-                if let Some(h) = leaf(slot, &r, t_best) {
-                    if best.as_ref().is_none_or(|b| closer(&h, b)) {
-                        t_best = h.t;
-                        best = Some(h);
-                        if stop_at_first {
-                            return best;
-                        }
-                    }
-                }
-            }
-        } else {
-            // Test both children (one 64-byte pair), go to the nearer, defer the farther.
-            let left = n.a;
-            let (l, rr) = (&nodes[left as usize], &nodes[left as usize + 1]);
-            let hl = intersect_aabb(&r, l.min.into(), l.max.into(), t_best);
-            let hr = intersect_aabb(&r, rr.min.into(), rr.max.into(), t_best);
-            match (hl, hr) {
-                (Some(tl), Some(tr)) => {
-                    let (near, far, t_far) = if tl <= tr {
-                        (left, left + 1, tr)
-                    } else {
-                        (left + 1, left, tl)
-                    };
-                    stack.push(far, t_far);
-                    node = near;
-                    continue;
-                }
-                (Some(_), None) => {
-                    node = left;
-                    continue;
-                }
-                (None, Some(_)) => {
-                    node = left + 1;
-                    continue;
-                }
-                (None, None) => {}
-            }
+            return Node::Leaf {
+                first: n.a,
+                count: n.count(),
+            };
         }
-        match stack.pop_within(t_best) {
-            Some(next) => node = next,
-            None => return best,
+        // Both children are one 64-byte pair.
+        let left = n.a;
+        let (l, r) = (&self[left as usize], &self[left as usize + 1]);
+        Node::Inner([
+            (l.min.into(), l.max.into(), left),
+            (r.min.into(), r.max.into(), left + 1),
+        ])
+    }
+}
+
+/// A [`QuantizedBvh`]: a node's id is its child reference; the kernel tests no root box.
+impl Tree for QuantizedBvh {
+    fn root(&self, _: &PreparedRay) -> Option<u32> {
+        Some(self.header.root)
+    }
+
+    #[inline(always)]
+    fn node(&self, id: u32) -> Node {
+        match Child::decode(id) {
+            Child::Leaf { first, count } => Node::Leaf { first, count },
+            Child::Inner(record) => Node::Inner(
+                self.children(record)
+                    .map(|(b, c)| (b.min, b.max, c.encode())),
+            ),
         }
     }
 }
 
-/// The same loop over a mesh's [`QuantizedBvh`]: children are tested from their parent's record,
-/// and a leaf is reached through its reference, with no record of its own.
+/// The traversal loop shared by both layouts, closest and any hit. `leaf(slot, ray, t_limit)`
+/// tests one primitive slot and returns a hit within `t_limit`; `stop_at_first` ends at the first
+/// hit.
 #[inline(always)]
-fn traverse_quantized<F>(
-    bvh: &QuantizedBvh,
-    ray: &Ray,
-    stop_at_first: bool,
-    mut leaf: F,
-) -> Option<Hit>
+fn traverse<T, F>(tree: &T, ray: &Ray, stop_at_first: bool, mut leaf: F) -> Option<Hit>
 where
+    T: Tree + ?Sized,
     F: FnMut(u32, &PreparedRay, f32) -> Option<Hit>,
 {
     let r = PreparedRay::new(ray)?;
+    let mut node = tree.root(&r)?;
     let mut best: Option<Hit> = None;
     let mut t_best = r.tmax;
     let mut stack = Stack::new();
-    let mut child = Child::decode(bvh.header.root);
     loop {
-        match child {
-            Child::Leaf { first, count } => {
+        match tree.node(node) {
+            Node::Leaf { first, count } => {
                 for slot in first..first + count {
                     if let Some(h) = leaf(slot, &r, t_best) {
                         if best.as_ref().is_none_or(|b| closer(&h, b)) {
@@ -342,28 +338,31 @@ where
                     }
                 }
             }
-            Child::Inner(record) => {
-                let [(lb, l), (rb, rr)] = bvh.children(record);
-                let hl = intersect_aabb(&r, lb.min, lb.max, t_best);
-                let hr = intersect_aabb(&r, rb.min, rb.max, t_best);
-                let next = match (hl, hr) {
+            Node::Inner([(lmin, lmax, l), (rmin, rmax, rr)]) => {
+                // Test both children, go to the nearer, defer the farther.
+                let hl = intersect_aabb(&r, lmin, lmax, t_best);
+                let hr = intersect_aabb(&r, rmin, rmax, t_best);
+                match (hl, hr) {
                     (Some(tl), Some(tr)) => {
                         let (near, far, t_far) = if tl <= tr { (l, rr, tr) } else { (rr, l, tl) };
-                        stack.push(far.encode(), t_far);
-                        Some(near)
+                        stack.push(far, t_far);
+                        node = near;
+                        continue;
                     }
-                    (Some(_), None) => Some(l),
-                    (None, Some(_)) => Some(rr),
-                    (None, None) => None,
-                };
-                if let Some(next) = next {
-                    child = next;
-                    continue;
+                    (Some(_), None) => {
+                        node = l;
+                        continue;
+                    }
+                    (None, Some(_)) => {
+                        node = rr;
+                        continue;
+                    }
+                    (None, None) => {}
                 }
             }
         }
         match stack.pop_within(t_best) {
-            Some(next) => child = Child::decode(next),
+            Some(next) => node = next,
             None => return best,
         }
     }
@@ -374,7 +373,7 @@ pub fn closest_hit_quantized_with<F>(bvh: &QuantizedBvh, ray: &Ray, intersect: F
 where
     F: FnMut(u32, &PreparedRay, f32) -> Option<Hit>,
 {
-    traverse_quantized(bvh, ray, false, intersect)
+    traverse(bvh, ray, false, intersect)
 }
 
 /// [`closest_hit`] over a mesh's quantised BVH.
@@ -384,7 +383,7 @@ pub fn closest_hit_quantized(
     tris: &[[Vec3; 3]],
     ray: &Ray,
 ) -> Option<Hit> {
-    traverse_quantized(bvh, ray, false, triangle_leaf(prim_indices, tris))
+    traverse(bvh, ray, false, triangle_leaf(prim_indices, tris))
 }
 
 /// [`any_hit`] over a mesh's quantised BVH.
@@ -394,7 +393,7 @@ pub fn any_hit_quantized(
     tris: &[[Vec3; 3]],
     ray: &Ray,
 ) -> bool {
-    traverse_quantized(bvh, ray, true, triangle_leaf(prim_indices, tris)).is_some()
+    traverse(bvh, ray, true, triangle_leaf(prim_indices, tris)).is_some()
 }
 
 /// Closest hit over arbitrary primitives: `intersect(slot, ray, t_max)` tests leaf slot `slot`
