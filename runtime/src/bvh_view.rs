@@ -27,7 +27,7 @@
 
 use glam::Vec3;
 use rtc_bvh::quantized::{Child, QuantizedHeader, QuantizedNode};
-use rtc_bvh::GpuNode;
+use rtc_bvh::{Aabb, GpuNode};
 
 use crate::image_out::{srgb_to_linear, LinearImage};
 use crate::scene::{Entities, GpuInstance};
@@ -131,7 +131,7 @@ pub fn object_names(entities: &Entities) -> Vec<String> {
 /// a leaf, its first slot and slot count.
 #[derive(Clone, Copy, Debug)]
 struct NodeView {
-    bounds: Option<(Vec3, Vec3)>,
+    bounds: Option<Aabb>,
     depth: u32,
     leaf: Option<(u32, u32)>,
 }
@@ -146,14 +146,11 @@ fn walk(nodes: &[GpuNode], base: u32, mut visit: impl FnMut(NodeView)) {
         return;
     };
     let header: QuantizedHeader = bytemuck::cast(header);
-    let frame = (header.point([0; 3]), header.point([0xffff; 3]));
-    let mut stack = vec![(header.root, frame, 0u32, 0u32)];
+    let mut stack = vec![(header.root, header.frame(), 0u32, 0u32)];
     while let Some((reference, bounds, depth, parent)) = stack.pop() {
         match Child::decode(reference) {
             Child::Leaf { first, count } => visit(NodeView {
-                bounds: (count > 0)
-                    .then_some(bounds)
-                    .and_then(|(a, b)| node_box_of(a, b)),
+                bounds: (count > 0).then_some(bounds).and_then(drawable),
                 depth,
                 leaf: Some((first, count)),
             }),
@@ -169,17 +166,8 @@ fn walk(nodes: &[GpuNode], base: u32, mut visit: impl FnMut(NodeView)) {
                 };
                 let n: QuantizedNode = bytemuck::cast(n);
                 let (l, r) = (header.unpack(n.left_box), header.unpack(n.right_box));
-                let (l, r) = (
-                    (Vec3::from(l.min), Vec3::from(l.max)),
-                    (Vec3::from(r.min), Vec3::from(r.max)),
-                );
-                let bounds = if depth == 0 {
-                    (l.0.min(r.0), l.1.max(r.1))
-                } else {
-                    bounds
-                };
                 visit(NodeView {
-                    bounds: node_box_of(bounds.0, bounds.1),
+                    bounds: drawable(if depth == 0 { l.union(&r) } else { bounds }),
                     depth,
                     leaf: None,
                 });
@@ -190,8 +178,9 @@ fn walk(nodes: &[GpuNode], base: u32, mut visit: impl FnMut(NodeView)) {
     }
 }
 
-fn node_box_of(min: Vec3, max: Vec3) -> Option<(Vec3, Vec3)> {
-    (min.cmple(max).all() && min.is_finite() && max.is_finite()).then_some((min, max))
+/// `b` when it is a finite, non-empty box.
+fn drawable(b: Aabb) -> Option<Aabb> {
+    (!b.is_empty() && b.is_finite()).then_some(b)
 }
 
 /// Collects the boxes of the chosen `levels`: of the whole scene (TLAS, then each instance's
@@ -209,10 +198,10 @@ pub fn collect_boxes(
             let level = base + n.depth;
             set.nodes += 1;
             set.deepest = set.deepest.max(level);
-            if let (true, Some((min, max))) = (levels.contains(level), n.bounds) {
+            if let (true, Some(b)) = (levels.contains(level), n.bounds) {
                 set.boxes.push(ViewBox {
-                    min,
-                    max,
+                    min: b.min.into(),
+                    max: b.max.into(),
                     level,
                     world_to_object: Some(inst.world_to_object),
                 });
@@ -246,10 +235,10 @@ pub fn collect_boxes(
         let d = n.depth;
         set.nodes += 1;
         set.deepest = set.deepest.max(d);
-        if let (true, Some((min, max))) = (levels.contains(d), n.bounds) {
+        if let (true, Some(b)) = (levels.contains(d), n.bounds) {
             set.boxes.push(ViewBox {
-                min,
-                max,
+                min: b.min.into(),
+                max: b.max.into(),
                 level: d,
                 world_to_object: None,
             });
@@ -279,9 +268,8 @@ pub fn sah_cost(nodes: &[GpuNode], base: u32) -> f64 {
     let mut root_area = None;
     let mut total = 0.0f64;
     walk(nodes, base, |n| {
-        let Some((min, max)) = n.bounds else { return };
-        let d = max - min;
-        let area = f64::from(d.x * d.y + d.y * d.z + d.z * d.x);
+        let Some(b) = n.bounds else { return };
+        let area = f64::from(b.half_area());
         let root = *root_area.get_or_insert(area);
         let w = if root > 0.0 { area / root } else { 1.0 };
         total += w * n.leaf.map_or(1.0, |(_, count)| f64::from(count));

@@ -254,17 +254,8 @@ fn reference(e: &Entities, origin: [f32; 3], dir: [f32; 3]) -> Counts {
     let tlas =
         QuantizedBvh::from_gpu_nodes(&nodes[e.tlas_root() as usize..]).expect("a TLAS header");
     // The kernel first tests the TLAS's whole quantisation frame.
-    let h = tlas.header;
-    if slab_box(
-        h.point([0; 3]).into(),
-        h.point([0xffff; 3]).into(),
-        origin,
-        inv,
-        0.0,
-        best,
-    )
-    .is_none()
-    {
+    let frame = tlas.header.frame();
+    if slab_box(frame.min.into(), frame.max.into(), origin, inv, 0.0, best).is_none() {
         return c;
     }
     traverse(
