@@ -171,10 +171,10 @@ var<private> ray_count: u32;
 var<private> spawn_dirs: array<vec3<f32>, 1>;
 var<private> spawn_weights: array<vec3<f32>, 1>;
 var<private> spawn_count: u32;
-@group(0) @binding(8) 
-var<storage, read_write> accum: array<vec4<f32>>;
 @group(0) @binding(9) 
 var<storage, read_write> counters: array<atomic<u32>>;
+@group(0) @binding(8) 
+var<storage, read_write> accum: array<vec4<f32>>;
 
 fn div_vec2u(a: vec2<u32>, b: vec2<u32>) -> vec2<u32> {
     let by_zero = (b == vec2(0u));
@@ -1130,20 +1130,20 @@ fn render_pixel(pixel_3: vec2<u32>) {
             s = (_e46 + 1u);
         }
     }
-    let _e55 = sum;
-    let _e58 = vec4<f32>(_e55, f32(frame_5.samples_per_pass));
-    let _e59 = bad;
+    let _e50 = ray_count;
+    atomicAdd((&counters[1]), _e50);
+    let _e59 = sum;
+    let _e62 = vec4<f32>(_e59, f32(frame_5.samples_per_pass));
+    let _e63 = bad;
     if (tile_1.frame == 0u) {
-        accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = _e58;
+        accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = _e62;
     } else {
-        let _e65 = accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
-        accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e65 + _e58);
+        let _e69 = accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
+        accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e69 + _e62);
     }
-    if (_e59 > 0u) {
-        atomicAdd((&counters[0]), _e59);
+    if (_e63 > 0u) {
+        atomicAdd((&counters[0]), _e63);
     }
-    let _e72 = ray_count;
-    atomicAdd((&counters[1]), _e72);
     return;
 }
 

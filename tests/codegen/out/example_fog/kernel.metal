@@ -1759,8 +1759,8 @@ void render_pixel(
     thread type_15& spawn_dirs,
     thread type_15& spawn_weights,
     thread uint& spawn_count,
-    device type_10& accum,
     device type_19& counters,
+    device type_10& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 sum = {};
@@ -1811,20 +1811,20 @@ void render_pixel(
             bad = _e43 + 1u;
         }
     }
-    metal::float3 _e55 = sum;
-    metal::float4 _e58 = metal::float4(_e55, static_cast<float>(frame_5.samples_per_pass));
-    uint _e59 = bad;
+    uint _e50 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e50, metal::memory_order_relaxed);
+    metal::float3 _e59 = sum;
+    metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
+    uint _e63 = bad;
     if (tile_1.frame == 0u) {
-        accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e58;
+        accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e62;
     } else {
-        metal::float4 _e65 = accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x];
-        accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e65 + _e58;
+        metal::float4 _e69 = accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x];
+        accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e69 + _e62;
     }
-    if (_e59 > 0u) {
-        metal::atomic_fetch_add_explicit(&counters[0], _e59, metal::memory_order_relaxed);
+    if (_e63 > 0u) {
+        metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
     }
-    uint _e72 = ray_count;
-    metal::atomic_fetch_add_explicit(&counters[1], _e72, metal::memory_order_relaxed);
     return;
 }
 
@@ -1844,8 +1844,8 @@ void render_invocation(
     thread type_15& spawn_dirs,
     thread type_15& spawn_weights,
     thread uint& spawn_count,
-    device type_10& accum,
     device type_19& counters,
+    device type_10& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     TileParams tile_2 = tile;
@@ -1866,7 +1866,7 @@ void render_invocation(
     if (metal::any(local >= tile_2.extent)) {
         return;
     }
-    render_pixel(tile_2.origin + local, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
+    render_pixel(tile_2.origin + local, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }
 
@@ -1881,8 +1881,8 @@ struct renderInput {
 , device type_9 const& nodes [[buffer(2)]]
 , device type_10 const& triangles [[buffer(4)]]
 , device type_12 const& attributes [[buffer(5)]]
-, device type_10& accum [[buffer(8)]]
 , device type_19& counters [[buffer(9)]]
+, device type_10& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
     uint rng_state = {};
@@ -1892,6 +1892,6 @@ struct renderInput {
     type_15 spawn_dirs = {};
     type_15 spawn_weights = {};
     uint spawn_count = {};
-    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, accum, counters, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }

@@ -177,9 +177,9 @@ vec3 spawn_weights[1] = vec3[1](vec3(0.0));
 
 uint spawn_count = 0u;
 
-layout(std430, binding = 8) buffer type_10_block_7Compute { vec4 _group_0_binding_8_cs[]; };
+layout(std430, binding = 9) buffer type_19_block_7Compute { uint _group_0_binding_9_cs[]; };
 
-layout(std430, binding = 9) buffer type_19_block_8Compute { uint _group_0_binding_9_cs[]; };
+layout(std430, binding = 8) buffer type_10_block_8Compute { vec4 _group_0_binding_8_cs[]; };
 
 
 uvec2 div_vec2u(uvec2 a, uvec2 b) {
@@ -1196,20 +1196,20 @@ void render_pixel(uvec2 pixel_3) {
             bad = (_e43 + 1u);
         }
     }
-    vec3 _e55 = sum;
-    vec4 _e58 = vec4(_e55, float(frame_5.samples_per_pass));
-    uint _e59 = bad;
+    uint _e50 = ray_count;
+    atomicAdd(_group_0_binding_9_cs[1], _e50);
+    vec3 _e59 = sum;
+    vec4 _e62 = vec4(_e59, float(frame_5.samples_per_pass));
+    uint _e63 = bad;
     if ((tile_1.frame == 0u)) {
-        _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = _e58;
+        _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = _e62;
     } else {
-        vec4 _e65 = _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
-        _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e65 + _e58);
+        vec4 _e69 = _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
+        _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e69 + _e62);
     }
-    if ((_e59 > 0u)) {
-        atomicAdd(_group_0_binding_9_cs[0], _e59);
+    if ((_e63 > 0u)) {
+        atomicAdd(_group_0_binding_9_cs[0], _e63);
     }
-    uint _e72 = ray_count;
-    atomicAdd(_group_0_binding_9_cs[1], _e72);
     return;
 }
 

@@ -251,8 +251,8 @@ static uint ray_count = (uint)0;
 static float3 spawn_dirs[1] = (float3[1])0;
 static float3 spawn_weights[1] = (float3[1])0;
 static uint spawn_count = (uint)0;
-RWByteAddressBuffer accum : register(u8);
 RWByteAddressBuffer counters : register(u9);
+RWByteAddressBuffer accum : register(u8);
 
 uint2 naga_div(uint2 lhs, uint2 rhs) {
     return lhs / (rhs == 0u ? 1u : rhs);
@@ -1867,20 +1867,20 @@ void render_pixel(uint2 pixel_3)
             bad = (_e43 + 1u);
         }
     }
-    float3 _e55 = sum;
-    float4 _e58 = float4(_e55, float(frame_5.samples_per_pass));
-    uint _e59 = bad;
+    uint _e50 = ray_count;
+    counters.InterlockedAdd(4, _e50);
+    float3 _e59 = sum;
+    float4 _e62 = float4(_e59, float(frame_5.samples_per_pass));
+    uint _e63 = bad;
     if ((tile_1.frame == 0u)) {
-        accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint(_e58));
+        accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint(_e62));
     } else {
-        float4 _e65 = asfloat(accum.Load4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16));
-        accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint((_e65 + _e58)));
+        float4 _e69 = asfloat(accum.Load4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16));
+        accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint((_e69 + _e62)));
     }
-    if ((_e59 > 0u)) {
-        counters.InterlockedAdd(0, _e59);
+    if ((_e63 > 0u)) {
+        counters.InterlockedAdd(0, _e63);
     }
-    uint _e72 = ray_count;
-    counters.InterlockedAdd(4, _e72);
     return;
 }
 
