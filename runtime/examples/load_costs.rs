@@ -6,14 +6,34 @@
 //!
 //! On Mesa 22.3's lavapipe every load becomes a loop over the lanes with a bounds check per
 //! component, so the cost is about a fixed part per load plus a part per component; Mesa 25's is
-//! cheaper per component (ARCHITECTURE.md has both sets of figures).
+//! cheaper per component (ARCHITECTURE.md has both sets of figures). Adjacent loads are merged,
+//! but still fetched one 32-bit component per lane at a time, so the cost grows with the words
+//! loaded; the `vec4<u64>` cases (run where the adapter has `SHADER_INT64`, on a device of their
+//! own) fetch two words per lane at a time.
 use rtc_runtime::gpu::{AdapterChoice, Gpu};
 use std::time::Instant;
 use wgpu::util::DeviceExt;
 
 fn main() {
     let gpu = Gpu::new(&AdapterChoice::default()).expect("adapter");
-    let device = gpu.device();
+    // A device of its own, with `SHADER_INT64` where the adapter has it (rtc's does not ask for it).
+    let int64 = gpu
+        .adapter()
+        .features()
+        .contains(wgpu::Features::SHADER_INT64);
+    let (device, queue) =
+        pollster::block_on(gpu.adapter().request_device(&wgpu::DeviceDescriptor {
+            required_features: if int64 {
+                wgpu::Features::SHADER_INT64
+            } else {
+                wgpu::Features::empty()
+            },
+            required_limits: gpu.adapter().limits(),
+            ..Default::default()
+        }))
+        .expect("device");
+    device.on_uncaptured_error(std::sync::Arc::new(|e: wgpu::Error| println!("ERR {e}")));
+    let device = &device;
     let threads = std::thread::available_parallelism().map_or(1.0, |n| n.get() as f64);
     println!("{} ({threads} cores)", gpu.description().name);
     let n: u32 = 1 << 15; // vec4s: 512 KiB
@@ -38,13 +58,28 @@ fn main() {
         ("1 x vec4u", "let v = q[i];"),
         ("1 x vec3u", "let v = vec4u(q[i].xyz, 0u);"),
         ("2 x vec4u", "let v = q[i] + q[i ^ 1u];"),
+        ("3 x vec4u", "let j = i & 0x7ffcu; let v = q[j] + q[j + 1u] + q[j + 2u];"),
+        ("4 x vec4u", "let j = i & 0x7ffcu; let v = q[j] + q[j + 1u] + q[j + 2u] + q[j + 3u];"),
+        ("1 x vec4<u64>", "let w = d[(i & 0x7ffeu) >> 1u]; let v = vec4u(u32(w.x), u32(w.y >> 32u), u32(w.z), u32(w.w >> 32u));"),
+        ("2 x vec4<u64>", "let j = (i & 0x7ffcu) >> 1u; let w = d[j] + d[j + 1u]; let v = vec4u(u32(w.x), u32(w.y >> 32u), u32(w.z), u32(w.w >> 32u));"),
         ("8 x u32", "let v = vec4u(s[i * 4u], s[i * 4u + 1u], s[i * 4u + 2u], s[i * 4u + 3u]) + vec4u(s[i * 4u + 4u], s[i * 4u + 5u], s[i * 4u + 6u], s[i * 4u + 7u]);"),
     ];
     for (name, body) in cases {
+        let wide = body.contains("d[");
+        if wide && !int64 {
+            println!("{name:13} skipped: the adapter has no SHADER_INT64");
+            continue;
+        }
+        let decl = if wide {
+            "@group(0) @binding(3) var<storage, read> d: array<vec4<u64>>;"
+        } else {
+            ""
+        };
         let src = format!(
             "@group(0) @binding(0) var<storage, read> s: array<u32>;
 @group(0) @binding(1) var<storage, read> q: array<vec4u>;
 @group(0) @binding(2) var<storage, read_write> out: array<u32>;
+{decl}
 @compute @workgroup_size(8, 8)
 fn main(@builtin(global_invocation_id) g: vec3u) {{
     let id = g.y * 1024u + g.x;
@@ -81,6 +116,12 @@ fn main(@builtin(global_invocation_id) g: vec3u) {{
                 resource: buf.as_entire_binding(),
             });
         }
+        if wide {
+            entries.push(wgpu::BindGroupEntry {
+                binding: 3,
+                resource: buf.as_entire_binding(),
+            });
+        }
         if src.contains("q[") {
             entries.push(wgpu::BindGroupEntry {
                 binding: 1,
@@ -102,15 +143,14 @@ fn main(@builtin(global_invocation_id) g: vec3u) {{
                 pass.dispatch_workgroups(128, 128, 1);
             }
             let t = Instant::now();
-            gpu.queue().submit([enc.finish()]);
-            gpu.wait_idle().unwrap();
+            queue.submit([enc.finish()]);
+            device
+                .poll(wgpu::PollType::wait_indefinitely())
+                .expect("poll");
             best = best.min(t.elapsed().as_secs_f64() * 1e3);
-        }
-        for e in gpu.take_uncaptured_errors() {
-            println!("ERR {e}");
         }
         // 1M invocations x 64 steps in 8-lane batches, spread over every core.
         let per_step = best * 1e6 * threads / (131_072.0 * 64.0);
-        println!("{name:10} {best:8.1} ms  {per_step:6.1} ns per 8-lane step on one core");
+        println!("{name:13} {best:8.1} ms  {per_step:6.1} ns per 8-lane step on one core");
     }
 }
