@@ -787,3 +787,55 @@ fn a_bvh_mesh_finds_the_hits_of_the_built_in_mesh() {
         "{soup_pixels} soup and {ball_pixels} ball pixels of {hits} hits"
     );
 }
+
+/// A shading normal that leans away from the viewer but lies on the geometric normal's side (as
+/// interpolated normals do near a silhouette) still shades with the light it faces: the stdlib
+/// materials orient the shading normal by the geometric one, not by the view direction (which
+/// flipped it and turned such pixels black). The floor quad's normals all lean toward +x,
+/// `normalize(1, 0.2, 0)`; the right part of the image sees them from behind, and a point light at
+/// `(4, 1, 0)` lights them: every floor pixel must show `I (n · l) / (π d²)` within 1e-3.
+#[test]
+fn a_shading_normal_leaning_away_from_the_viewer_is_still_lit() {
+    let Some(gpu) = gpu_or_skip("a_shading_normal_leaning_away_from_the_viewer_is_still_lit")
+    else {
+        return;
+    };
+    let quad =
+        "v -4 0 -4\nv -4 0 4\nv 4 0 4\nv 4 0 -4\nvn 1 0.2 0\nf 1//1 2//1 3//1\nf 1//1 3//1 4//1\n";
+    let body = r#"
+    object floor { geometry: load_mesh("leaning.obj"), material: Lambert { albedo: vec3f(1.0) } }
+    light PointLight { position: vec3f(4.0, 1.0, 0.0), intensity: 5.0 }"#;
+    let img = render_with_files(
+        &gpu,
+        "leaning_normals",
+        &analytic_scene("leaning_normals", 1, body),
+        &[("leaning.obj", quad)],
+    );
+    let len = (1.0f64 + 0.04).sqrt();
+    let n = [1.0 / len, 0.2 / len, 0.0];
+    let (mut away, mut checked) = (0, 0);
+    for y in 0..SIZE {
+        for x in 0..SIZE {
+            let p = floor_point(x, y, 0.5, 0.5);
+            let d = [4.0 - p[0], 1.0 - p[1], -p[2]];
+            let d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            let cos = (n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) / d2.sqrt();
+            let want = 5.0 * cos.max(0.0) / d2 / std::f64::consts::PI;
+            let got = red(&img, x, y);
+            assert!(
+                (got - want).abs() <= 1e-3 * want + 1e-6,
+                "pixel ({x}, {y}): {got} instead of {want}"
+            );
+            // The view direction from the camera at (0, 3, 0) to p, against the shading normal.
+            let view = [p[0], -CAM_Y, p[2]];
+            if n[0] * view[0] + n[1] * view[1] > 0.0 && want > 0.0 {
+                away += 1;
+            }
+            checked += 1;
+        }
+    }
+    assert!(
+        away > 50,
+        "only {away} of {checked} pixels see the normal from behind"
+    );
+}

@@ -897,28 +897,29 @@ LightSample sample_light_query(uint i_1, vec3 position_3, vec3 normal_3) {
 vec3 lambert_shade(Lambert m, Ray ray_13, Hit hit_1) {
     vec3 color = vec3(0.0);
     uint i_2 = 0u;
-    vec3 n_8 = faceforward(hit_1.normal, ray_13.dir, hit_1.normal);
+    vec3 ng = faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    vec3 n_8 = faceforward(hit_1.normal, -(ng), hit_1.normal);
     color = vec3(0.0);
-    uint _e11 = light_count_query();
+    uint _e15 = light_count_query();
     i_2 = 0u;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e33 = i_2;
-            i_2 = (_e33 + 1u);
+            uint _e37 = i_2;
+            i_2 = (_e37 + 1u);
         }
         loop_init_2 = false;
-        uint _e13 = i_2;
-        if ((_e13 >= _e11)) {
+        uint _e17 = i_2;
+        if ((_e17 >= _e15)) {
             break;
         }
-        uint _e15 = i_2;
-        LightSample _e18 = sample_light_query(_e15, hit_1.position, hit_1.geometric_normal);
-        vec3 _e19 = color;
-        color = (_e19 + (((m.albedo * vec3(INV_PI)) * _e18.radiance) * vec3(max(dot(n_8, _e18.dir), 0.0))));
+        uint _e19 = i_2;
+        LightSample _e22 = sample_light_query(_e19, hit_1.position, hit_1.geometric_normal);
+        vec3 _e23 = color;
+        color = (_e23 + (((m.albedo * vec3(INV_PI)) * _e22.radiance) * vec3(max(dot(n_8, _e22.dir), 0.0))));
     }
-    vec3 _e36 = color;
-    return _e36;
+    vec3 _e40 = color;
+    return _e40;
 }
 
 vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_14, Hit hit_2, vec3 secondary) {

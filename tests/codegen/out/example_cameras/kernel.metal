@@ -1205,9 +1205,10 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_2 = {};
-    metal::float3 n_8 = metal::faceforward(hit_1.normal, ray_13.dir, hit_1.normal);
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    metal::float3 n_8 = metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
     color = metal::float3(0.0);
-    uint _e11 = light_count_query(frame);
+    uint _e15 = light_count_query(frame);
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
@@ -1215,21 +1216,21 @@ metal::float3 lambert_shade(
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e33 = i_2;
-            i_2 = _e33 + 1u;
+            uint _e37 = i_2;
+            i_2 = _e37 + 1u;
         }
         loop_init_2 = false;
-        uint _e13 = i_2;
-        if (_e13 >= _e11) {
+        uint _e17 = i_2;
+        if (_e17 >= _e15) {
             break;
         }
-        uint _e15 = i_2;
-        LightSample _e18 = sample_light_query(_e15, hit_1.position, hit_1.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        metal::float3 _e19 = color;
-        color = _e19 + (((m.albedo * metal::float3(INV_PI)) * _e18.radiance) * metal::float3(metal::max(metal::dot(n_8, _e18.dir), 0.0)));
+        uint _e19 = i_2;
+        LightSample _e22 = sample_light_query(_e19, hit_1.position, hit_1.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e23 = color;
+        color = _e23 + (((m.albedo * metal::float3(INV_PI)) * _e22.radiance) * metal::float3(metal::max(metal::dot(n_8, _e22.dir), 0.0)));
     }
-    metal::float3 _e36 = color;
-    return _e36;
+    metal::float3 _e40 = color;
+    return _e40;
 }
 
 metal::float3 dispatch_closest_hit(

@@ -977,28 +977,29 @@ Lambert load_Lambert(uint offset_8) {
 vec3 lambert_shade(Lambert m_4, Ray ray_16, Hit hit_4) {
     vec3 color = vec3(0.0);
     uint i_4 = 0u;
-    vec3 n_8 = faceforward(hit_4.normal, ray_16.dir, hit_4.normal);
+    vec3 ng = faceforward(hit_4.geometric_normal, ray_16.dir, hit_4.geometric_normal);
+    vec3 n_8 = faceforward(hit_4.normal, -(ng), hit_4.normal);
     color = vec3(0.0);
-    uint _e11 = light_count_query();
+    uint _e15 = light_count_query();
     i_4 = 0u;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e33 = i_4;
-            i_4 = (_e33 + 1u);
+            uint _e37 = i_4;
+            i_4 = (_e37 + 1u);
         }
         loop_init_3 = false;
-        uint _e13 = i_4;
-        if ((_e13 >= _e11)) {
+        uint _e17 = i_4;
+        if ((_e17 >= _e15)) {
             break;
         }
-        uint _e15 = i_4;
-        LightSample _e18 = sample_light_query(_e15, hit_4.position, hit_4.geometric_normal);
-        vec3 _e19 = color;
-        color = (_e19 + (((m_4.albedo * vec3(INV_PI)) * _e18.radiance) * vec3(max(dot(n_8, _e18.dir), 0.0))));
+        uint _e19 = i_4;
+        LightSample _e22 = sample_light_query(_e19, hit_4.position, hit_4.geometric_normal);
+        vec3 _e23 = color;
+        color = (_e23 + (((m_4.albedo * vec3(INV_PI)) * _e22.radiance) * vec3(max(dot(n_8, _e22.dir), 0.0))));
     }
-    vec3 _e36 = color;
-    return _e36;
+    vec3 _e40 = color;
+    return _e40;
 }
 
 vec3 dispatch_closest_hit(uint type_id_5, uint offset_9, Ray ray_17, Hit hit_5, vec3 secondary_1) {

@@ -1373,9 +1373,10 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_4 = {};
-    metal::float3 n_8 = metal::faceforward(hit_4.normal, ray_16.dir, hit_4.normal);
+    metal::float3 ng = metal::faceforward(hit_4.geometric_normal, ray_16.dir, hit_4.geometric_normal);
+    metal::float3 n_8 = metal::faceforward(hit_4.normal, -(ng), hit_4.normal);
     color = metal::float3(0.0);
-    uint _e11 = light_count_query(frame);
+    uint _e15 = light_count_query(frame);
     i_4 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_3 = true;
@@ -1383,21 +1384,21 @@ metal::float3 lambert_shade(
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e33 = i_4;
-            i_4 = _e33 + 1u;
+            uint _e37 = i_4;
+            i_4 = _e37 + 1u;
         }
         loop_init_3 = false;
-        uint _e13 = i_4;
-        if (_e13 >= _e11) {
+        uint _e17 = i_4;
+        if (_e17 >= _e15) {
             break;
         }
-        uint _e15 = i_4;
-        LightSample _e18 = sample_light_query(_e15, hit_4.position, hit_4.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
-        metal::float3 _e19 = color;
-        color = _e19 + (((m_4.albedo * metal::float3(INV_PI)) * _e18.radiance) * metal::float3(metal::max(metal::dot(n_8, _e18.dir), 0.0)));
+        uint _e19 = i_4;
+        LightSample _e22 = sample_light_query(_e19, hit_4.position, hit_4.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e23 = color;
+        color = _e23 + (((m_4.albedo * metal::float3(INV_PI)) * _e22.radiance) * metal::float3(metal::max(metal::dot(n_8, _e22.dir), 0.0)));
     }
-    metal::float3 _e36 = color;
-    return _e36;
+    metal::float3 _e40 = color;
+    return _e40;
 }
 
 metal::float3 dispatch_closest_hit(

@@ -1098,41 +1098,42 @@ LightSample sample_light_query(uint i_1, vec3 position_5, vec3 normal_5) {
 vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, vec3 emissive, Ray ray_15, Hit hit_3) {
     vec3 color = vec3(0.0);
     uint i_2 = 0u;
-    vec3 n_8 = faceforward(hit_3.normal, ray_15.dir, hit_3.normal);
-    vec3 _e11 = normalize_vec3f(ray_15.dir);
-    vec3 v_2 = -(_e11);
+    vec3 ng = faceforward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
+    vec3 n_8 = faceforward(hit_3.normal, -(ng), hit_3.normal);
+    vec3 _e15 = normalize_vec3f(ray_15.dir);
+    vec3 v_2 = -(_e15);
     float metal = clamp(metallic, 0.0, 1.0);
     float a2_ = max(pow(clamp(roughness, 0.0, 1.0), 4.0), 4e-6);
     vec3 f0_ = mix(vec3(0.04), c_3, vec3(metal));
     float ndv = max(dot(n_8, v_2), 0.0001);
     color = emissive;
-    uint _e28 = light_count_query();
+    uint _e32 = light_count_query();
     i_2 = 0u;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e107 = i_2;
-            i_2 = (_e107 + 1u);
+            uint _e111 = i_2;
+            i_2 = (_e111 + 1u);
         }
         loop_init_2 = false;
-        uint _e30 = i_2;
-        if ((_e30 >= _e28)) {
+        uint _e34 = i_2;
+        if ((_e34 >= _e32)) {
             break;
         }
-        uint _e32 = i_2;
-        LightSample _e35 = sample_light_query(_e32, hit_3.position, hit_3.geometric_normal);
-        float ndl = max(dot(n_8, _e35.dir), 0.0);
-        vec3 _e42 = normalize_vec3f((_e35.dir + v_2));
-        float ndh = max(dot(n_8, _e42), 0.0);
+        uint _e36 = i_2;
+        LightSample _e39 = sample_light_query(_e36, hit_3.position, hit_3.geometric_normal);
+        float ndl = max(dot(n_8, _e39.dir), 0.0);
+        vec3 _e46 = normalize_vec3f((_e39.dir + v_2));
+        float ndh = max(dot(n_8, _e46), 0.0);
         float d_3 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
         float ggx = ((a2_ * INV_PI) / max((d_3 * d_3), 1e-8));
         float vis = (0.5 / max(((ndl * sqrt((((ndv * ndv) * (1.0 - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1.0 - a2_)) + a2_)))), 1e-8));
-        vec3 fresnel = (f0_ + ((vec3(1.0) - f0_) * vec3(pow((1.0 - max(dot(v_2, _e42), 0.0)), 5.0))));
-        vec3 _e90 = color;
-        color = (_e90 + ((_e35.radiance * vec3(ndl)) * (((c_3 * vec3((1.0 - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))));
+        vec3 fresnel = (f0_ + ((vec3(1.0) - f0_) * vec3(pow((1.0 - max(dot(v_2, _e46), 0.0)), 5.0))));
+        vec3 _e94 = color;
+        color = (_e94 + ((_e39.radiance * vec3(ndl)) * (((c_3 * vec3((1.0 - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))));
     }
-    vec3 _e110 = color;
-    return _e110;
+    vec3 _e114 = color;
+    return _e114;
 }
 
 vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_16, Hit hit_4) {

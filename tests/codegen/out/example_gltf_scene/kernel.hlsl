@@ -1434,15 +1434,16 @@ float3 gltf_radiance(float3 c_3, float metallic, float roughness, float3 emissiv
     float3 color = (float3)0;
     uint i_2 = (uint)0;
 
-    float3 n_8 = faceforward(hit_3.normal, ray_15.dir, hit_3.normal);
-    const float3 _e11 = normalize_vec3f(ray_15.dir);
-    float3 v_2 = -(_e11);
+    float3 ng = faceforward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
+    float3 n_8 = faceforward(hit_3.normal, -(ng), hit_3.normal);
+    const float3 _e15 = normalize_vec3f(ray_15.dir);
+    float3 v_2 = -(_e15);
     float metal = saturate(metallic);
     float a2_ = max(pow(saturate(roughness), 4.0), 4e-6);
     float3 f0_ = lerp((0.04).xxx, c_3, (metal).xxx);
     float ndv = max(dot(n_8, v_2), 0.0001);
     color = emissive;
-    const uint _e28 = light_count_query();
+    const uint _e32 = light_count_query();
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
@@ -1450,28 +1451,28 @@ float3 gltf_radiance(float3 c_3, float metallic, float roughness, float3 emissiv
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e107 = i_2;
-            i_2 = (_e107 + 1u);
+            uint _e111 = i_2;
+            i_2 = (_e111 + 1u);
         }
         loop_init_2 = false;
-        uint _e30 = i_2;
-        if ((_e30 >= _e28)) {
+        uint _e34 = i_2;
+        if ((_e34 >= _e32)) {
             break;
         }
-        uint _e32 = i_2;
-        const LightSample _e35 = sample_light_query(_e32, hit_3.position, hit_3.geometric_normal);
-        float ndl = max(dot(n_8, _e35.dir), 0.0);
-        const float3 _e42 = normalize_vec3f((_e35.dir + v_2));
-        float ndh = max(dot(n_8, _e42), 0.0);
+        uint _e36 = i_2;
+        const LightSample _e39 = sample_light_query(_e36, hit_3.position, hit_3.geometric_normal);
+        float ndl = max(dot(n_8, _e39.dir), 0.0);
+        const float3 _e46 = normalize_vec3f((_e39.dir + v_2));
+        float ndh = max(dot(n_8, _e46), 0.0);
         float d_3 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
         float ggx = ((a2_ * INV_PI) / max((d_3 * d_3), 1e-8));
         float vis = (0.5 / max(((ndl * sqrt((((ndv * ndv) * (1.0 - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1.0 - a2_)) + a2_)))), 1e-8));
-        float3 fresnel = (f0_ + (((1.0).xxx - f0_) * (pow((1.0 - max(dot(v_2, _e42), 0.0)), 5.0)).xxx));
-        float3 _e90 = color;
-        color = (_e90 + ((_e35.radiance * (ndl).xxx) * (((c_3 * ((1.0 - metal)).xxx) * (INV_PI).xxx) + (fresnel * ((ggx * vis)).xxx))));
+        float3 fresnel = (f0_ + (((1.0).xxx - f0_) * (pow((1.0 - max(dot(v_2, _e46), 0.0)), 5.0)).xxx));
+        float3 _e94 = color;
+        color = (_e94 + ((_e39.radiance * (ndl).xxx) * (((c_3 * ((1.0 - metal)).xxx) * (INV_PI).xxx) + (fresnel * ((ggx * vis)).xxx))));
     }
-    float3 _e110 = color;
-    return _e110;
+    float3 _e114 = color;
+    return _e114;
 }
 
 float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_16, Hit hit_4)

@@ -1521,15 +1521,16 @@ metal::float3 gltf_radiance(
 ) {
     metal::float3 color = {};
     uint i_2 = {};
-    metal::float3 n_8 = metal::faceforward(hit_3.normal, ray_15.dir, hit_3.normal);
-    metal::float3 _e11 = normalize_vec3f(ray_15.dir);
-    metal::float3 v_2 = -(_e11);
+    metal::float3 ng = metal::faceforward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
+    metal::float3 n_8 = metal::faceforward(hit_3.normal, -(ng), hit_3.normal);
+    metal::float3 _e15 = normalize_vec3f(ray_15.dir);
+    metal::float3 v_2 = -(_e15);
     float metal_ = metal::saturate(metallic);
     float a2_ = metal::max(metal::pow(metal::saturate(roughness), 4.0), 0.000004);
     metal::float3 f0_ = metal::mix(metal::float3(0.04), c_3, metal::float3(metal_));
     float ndv = metal::max(metal::dot(n_8, v_2), 0.0001);
     color = emissive;
-    uint _e28 = light_count_query(frame);
+    uint _e32 = light_count_query(frame);
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
@@ -1537,28 +1538,28 @@ metal::float3 gltf_radiance(
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e107 = i_2;
-            i_2 = _e107 + 1u;
+            uint _e111 = i_2;
+            i_2 = _e111 + 1u;
         }
         loop_init_2 = false;
-        uint _e30 = i_2;
-        if (_e30 >= _e28) {
+        uint _e34 = i_2;
+        if (_e34 >= _e32) {
             break;
         }
-        uint _e32 = i_2;
-        LightSample _e35 = sample_light_query(_e32, hit_3.position, hit_3.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-        float ndl = metal::max(metal::dot(n_8, _e35.dir), 0.0);
-        metal::float3 _e42 = normalize_vec3f(_e35.dir + v_2);
-        float ndh = metal::max(metal::dot(n_8, _e42), 0.0);
+        uint _e36 = i_2;
+        LightSample _e39 = sample_light_query(_e36, hit_3.position, hit_3.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+        float ndl = metal::max(metal::dot(n_8, _e39.dir), 0.0);
+        metal::float3 _e46 = normalize_vec3f(_e39.dir + v_2);
+        float ndh = metal::max(metal::dot(n_8, _e46), 0.0);
         float d_3 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
         float ggx = (a2_ * INV_PI) / metal::max(d_3 * d_3, 0.00000001);
         float vis = 0.5 / metal::max((ndl * metal::sqrt(((ndv * ndv) * (1.0 - a2_)) + a2_)) + (ndv * metal::sqrt(((ndl * ndl) * (1.0 - a2_)) + a2_)), 0.00000001);
-        metal::float3 fresnel = f0_ + ((metal::float3(1.0) - f0_) * metal::float3(metal::pow(1.0 - metal::max(metal::dot(v_2, _e42), 0.0), 5.0)));
-        metal::float3 _e90 = color;
-        color = _e90 + ((_e35.radiance * metal::float3(ndl)) * (((c_3 * metal::float3(1.0 - metal_)) * metal::float3(INV_PI)) + (fresnel * metal::float3(ggx * vis))));
+        metal::float3 fresnel = f0_ + ((metal::float3(1.0) - f0_) * metal::float3(metal::pow(1.0 - metal::max(metal::dot(v_2, _e46), 0.0), 5.0)));
+        metal::float3 _e94 = color;
+        color = _e94 + ((_e39.radiance * metal::float3(ndl)) * (((c_3 * metal::float3(1.0 - metal_)) * metal::float3(INV_PI)) + (fresnel * metal::float3(ggx * vis))));
     }
-    metal::float3 _e110 = color;
-    return _e110;
+    metal::float3 _e114 = color;
+    return _e114;
 }
 
 metal::float3 gltf_masked_shade(

@@ -1112,39 +1112,40 @@ fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, emissive: vec3<f
     var color: vec3<f32>;
     var i_2: u32;
 
-    let n_8 = faceForward(hit_3.normal, ray_15.dir, hit_3.normal);
-    let _e11 = normalize_vec3f(ray_15.dir);
-    let v_2 = -(_e11);
+    let ng = faceForward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
+    let n_8 = faceForward(hit_3.normal, -(ng), hit_3.normal);
+    let _e15 = normalize_vec3f(ray_15.dir);
+    let v_2 = -(_e15);
     let metal = saturate(metallic);
     let a2_ = max(pow(saturate(roughness), 4f), 0.000004f);
     let f0_ = mix(vec3(0.04f), c_3, vec3(metal));
     let ndv = max(dot(n_8, v_2), 0.0001f);
     color = emissive;
-    let _e28 = light_count_query();
+    let _e32 = light_count_query();
     i_2 = 0u;
     loop {
-        let _e30 = i_2;
-        if (_e30 >= _e28) {
+        let _e34 = i_2;
+        if (_e34 >= _e32) {
             break;
         }
-        let _e32 = i_2;
-        let _e35 = sample_light_query(_e32, hit_3.position, hit_3.geometric_normal);
-        let ndl = max(dot(n_8, _e35.dir), 0f);
-        let _e42 = normalize_vec3f((_e35.dir + v_2));
-        let ndh = max(dot(n_8, _e42), 0f);
+        let _e36 = i_2;
+        let _e39 = sample_light_query(_e36, hit_3.position, hit_3.geometric_normal);
+        let ndl = max(dot(n_8, _e39.dir), 0f);
+        let _e46 = normalize_vec3f((_e39.dir + v_2));
+        let ndh = max(dot(n_8, _e46), 0f);
         let d_3 = (((ndh * ndh) * (a2_ - 1f)) + 1f);
         let ggx = ((a2_ * INV_PI) / max((d_3 * d_3), 0.00000001f));
         let vis = (0.5f / max(((ndl * sqrt((((ndv * ndv) * (1f - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1f - a2_)) + a2_)))), 0.00000001f));
-        let fresnel = (f0_ + ((vec3(1f) - f0_) * vec3(pow((1f - max(dot(v_2, _e42), 0f)), 5f))));
-        let _e90 = color;
-        color = (_e90 + ((_e35.radiance * vec3(ndl)) * (((c_3 * vec3((1f - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))));
+        let fresnel = (f0_ + ((vec3(1f) - f0_) * vec3(pow((1f - max(dot(v_2, _e46), 0f)), 5f))));
+        let _e94 = color;
+        color = (_e94 + ((_e39.radiance * vec3(ndl)) * (((c_3 * vec3((1f - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))));
         continuing {
-            let _e107 = i_2;
-            i_2 = (_e107 + 1u);
+            let _e111 = i_2;
+            i_2 = (_e111 + 1u);
         }
     }
-    let _e110 = color;
-    return _e110;
+    let _e114 = color;
+    return _e114;
 }
 
 fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_16: Ray, hit_4: Hit) -> vec3<f32> {

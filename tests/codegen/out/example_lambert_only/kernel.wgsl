@@ -895,26 +895,27 @@ fn lambert_shade(m: Lambert, ray_13: Ray, hit_1: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_2: u32;
 
-    let n_8 = faceForward(hit_1.normal, ray_13.dir, hit_1.normal);
+    let ng = faceForward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    let n_8 = faceForward(hit_1.normal, -(ng), hit_1.normal);
     color = vec3(0f);
-    let _e11 = light_count_query();
+    let _e15 = light_count_query();
     i_2 = 0u;
     loop {
-        let _e13 = i_2;
-        if (_e13 >= _e11) {
+        let _e17 = i_2;
+        if (_e17 >= _e15) {
             break;
         }
-        let _e15 = i_2;
-        let _e18 = sample_light_query(_e15, hit_1.position, hit_1.geometric_normal);
-        let _e19 = color;
-        color = (_e19 + (((m.albedo * vec3(INV_PI)) * _e18.radiance) * vec3(max(dot(n_8, _e18.dir), 0f))));
+        let _e19 = i_2;
+        let _e22 = sample_light_query(_e19, hit_1.position, hit_1.geometric_normal);
+        let _e23 = color;
+        color = (_e23 + (((m.albedo * vec3(INV_PI)) * _e22.radiance) * vec3(max(dot(n_8, _e22.dir), 0f))));
         continuing {
-            let _e33 = i_2;
-            i_2 = (_e33 + 1u);
+            let _e37 = i_2;
+            i_2 = (_e37 + 1u);
         }
     }
-    let _e36 = color;
-    return _e36;
+    let _e40 = color;
+    return _e40;
 }
 
 fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_14: Ray, hit_2: Hit, secondary: vec3<f32>) -> vec3<f32> {

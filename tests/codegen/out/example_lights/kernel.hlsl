@@ -1566,9 +1566,10 @@ float3 lambert_shade(Lambert m, Ray ray_16, Hit hit_1)
     float3 color = (float3)0;
     uint i_2 = (uint)0;
 
-    float3 n_10 = faceforward(hit_1.normal, ray_16.dir, hit_1.normal);
+    float3 ng = faceforward(hit_1.geometric_normal, ray_16.dir, hit_1.geometric_normal);
+    float3 n_10 = faceforward(hit_1.normal, -(ng), hit_1.normal);
     color = (0.0).xxx;
-    const uint _e11 = light_count_query();
+    const uint _e15 = light_count_query();
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
@@ -1576,21 +1577,21 @@ float3 lambert_shade(Lambert m, Ray ray_16, Hit hit_1)
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e33 = i_2;
-            i_2 = (_e33 + 1u);
+            uint _e37 = i_2;
+            i_2 = (_e37 + 1u);
         }
         loop_init_2 = false;
-        uint _e13 = i_2;
-        if ((_e13 >= _e11)) {
+        uint _e17 = i_2;
+        if ((_e17 >= _e15)) {
             break;
         }
-        uint _e15 = i_2;
-        const LightSample _e18 = sample_light_query(_e15, hit_1.position, hit_1.geometric_normal);
-        float3 _e19 = color;
-        color = (_e19 + (((m.albedo * (INV_PI).xxx) * _e18.radiance) * (max(dot(n_10, _e18.dir), 0.0)).xxx));
+        uint _e19 = i_2;
+        const LightSample _e22 = sample_light_query(_e19, hit_1.position, hit_1.geometric_normal);
+        float3 _e23 = color;
+        color = (_e23 + (((m.albedo * (INV_PI).xxx) * _e22.radiance) * (max(dot(n_10, _e22.dir), 0.0)).xxx));
     }
-    float3 _e36 = color;
-    return _e36;
+    float3 _e40 = color;
+    return _e40;
 }
 
 float3 dispatch_closest_hit(uint type_id_5, uint offset_14, Ray ray_17, Hit hit_2, float3 secondary)

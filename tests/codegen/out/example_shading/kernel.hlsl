@@ -1294,15 +1294,16 @@ float3 blinn_phong_shade(BlinnPhong m, Ray ray_13, Hit hit_1)
     float3 color = (float3)0;
     uint i_2 = (uint)0;
 
-    float3 n_8 = faceforward(hit_1.normal, ray_13.dir, hit_1.normal);
-    const float3 _e8 = normalize_vec3f(ray_13.dir);
-    float3 v_2 = -(_e8);
-    const float4 _e15 = sample_texture(m.texture_, (hit_1.uv * m.uv_scale));
-    float3 kd = (m.diffuse * _e15.xyz);
+    float3 ng = faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    float3 n_8 = faceforward(hit_1.normal, -(ng), hit_1.normal);
+    const float3 _e12 = normalize_vec3f(ray_13.dir);
+    float3 v_2 = -(_e12);
+    const float4 _e19 = sample_texture(m.texture_, (hit_1.uv * m.uv_scale));
+    float3 kd = (m.diffuse * _e19.xyz);
     float s_4 = max(m.shininess, 0.0);
     float norm = ((s_4 + 8.0) * (INV_PI / 8.0));
     color = (m.ambient * kd);
-    const uint _e31 = light_count_query();
+    const uint _e35 = light_count_query();
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
@@ -1310,24 +1311,24 @@ float3 blinn_phong_shade(BlinnPhong m, Ray ray_13, Hit hit_1)
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e64 = i_2;
-            i_2 = (_e64 + 1u);
+            uint _e68 = i_2;
+            i_2 = (_e68 + 1u);
         }
         loop_init_2 = false;
-        uint _e33 = i_2;
-        if ((_e33 >= _e31)) {
+        uint _e37 = i_2;
+        if ((_e37 >= _e35)) {
             break;
         }
-        uint _e35 = i_2;
-        const LightSample _e38 = sample_light_query(_e35, hit_1.position, hit_1.geometric_normal);
-        float ndl = max(dot(n_8, _e38.dir), 0.0);
-        const float3 _e45 = normalize_vec3f((_e38.dir + v_2));
-        float highlight = (pow(max(dot(n_8, _e45), 0.0), s_4) * norm);
-        float3 _e51 = color;
-        color = (_e51 + ((_e38.radiance * (ndl).xxx) * ((kd * (INV_PI).xxx) + (m.specular * (highlight).xxx))));
+        uint _e39 = i_2;
+        const LightSample _e42 = sample_light_query(_e39, hit_1.position, hit_1.geometric_normal);
+        float ndl = max(dot(n_8, _e42.dir), 0.0);
+        const float3 _e49 = normalize_vec3f((_e42.dir + v_2));
+        float highlight = (pow(max(dot(n_8, _e49), 0.0), s_4) * norm);
+        float3 _e55 = color;
+        color = (_e55 + ((_e42.radiance * (ndl).xxx) * ((kd * (INV_PI).xxx) + (m.specular * (highlight).xxx))));
     }
-    float3 _e67 = color;
-    return _e67;
+    float3 _e71 = color;
+    return _e71;
 }
 
 Lambert ConstructLambert(float3 arg0) {
@@ -1350,9 +1351,10 @@ float3 lambert_shade(Lambert m_1, Ray ray_14, Hit hit_2)
     float3 color_1 = (float3)0;
     uint i_3 = (uint)0;
 
-    float3 n_9 = faceforward(hit_2.normal, ray_14.dir, hit_2.normal);
+    float3 ng_1 = faceforward(hit_2.geometric_normal, ray_14.dir, hit_2.geometric_normal);
+    float3 n_9 = faceforward(hit_2.normal, -(ng_1), hit_2.normal);
     color_1 = (0.0).xxx;
-    const uint _e11 = light_count_query();
+    const uint _e15 = light_count_query();
     i_3 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
@@ -1360,21 +1362,21 @@ float3 lambert_shade(Lambert m_1, Ray ray_14, Hit hit_2)
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e33 = i_3;
-            i_3 = (_e33 + 1u);
+            uint _e37 = i_3;
+            i_3 = (_e37 + 1u);
         }
         loop_init_3 = false;
-        uint _e13 = i_3;
-        if ((_e13 >= _e11)) {
+        uint _e17 = i_3;
+        if ((_e17 >= _e15)) {
             break;
         }
-        uint _e15 = i_3;
-        const LightSample _e18 = sample_light_query(_e15, hit_2.position, hit_2.geometric_normal);
-        float3 _e19 = color_1;
-        color_1 = (_e19 + (((m_1.albedo * (INV_PI).xxx) * _e18.radiance) * (max(dot(n_9, _e18.dir), 0.0)).xxx));
+        uint _e19 = i_3;
+        const LightSample _e22 = sample_light_query(_e19, hit_2.position, hit_2.geometric_normal);
+        float3 _e23 = color_1;
+        color_1 = (_e23 + (((m_1.albedo * (INV_PI).xxx) * _e22.radiance) * (max(dot(n_9, _e22.dir), 0.0)).xxx));
     }
-    float3 _e36 = color_1;
-    return _e36;
+    float3 _e40 = color_1;
+    return _e40;
 }
 
 Mirror ConstructMirror(float3 arg0) {

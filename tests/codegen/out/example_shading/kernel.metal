@@ -1331,15 +1331,16 @@ metal::float3 blinn_phong_shade(
 ) {
     metal::float3 color = {};
     uint i_2 = {};
-    metal::float3 n_8 = metal::faceforward(hit_1.normal, ray_13.dir, hit_1.normal);
-    metal::float3 _e8 = normalize_vec3f(ray_13.dir);
-    metal::float3 v_2 = -(_e8);
-    metal::float4 _e15 = sample_texture(m.texture, hit_1.uv * m.uv_scale, params, texels, _buffer_sizes);
-    metal::float3 kd = m.diffuse * _e15.xyz;
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    metal::float3 n_8 = metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
+    metal::float3 _e12 = normalize_vec3f(ray_13.dir);
+    metal::float3 v_2 = -(_e12);
+    metal::float4 _e19 = sample_texture(m.texture, hit_1.uv * m.uv_scale, params, texels, _buffer_sizes);
+    metal::float3 kd = m.diffuse * _e19.xyz;
     float s_4 = metal::max(m.shininess, 0.0);
     float norm = (s_4 + 8.0) * (INV_PI / 8.0);
     color = m.ambient * kd;
-    uint _e31 = light_count_query(frame);
+    uint _e35 = light_count_query(frame);
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
@@ -1347,24 +1348,24 @@ metal::float3 blinn_phong_shade(
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e64 = i_2;
-            i_2 = _e64 + 1u;
+            uint _e68 = i_2;
+            i_2 = _e68 + 1u;
         }
         loop_init_2 = false;
-        uint _e33 = i_2;
-        if (_e33 >= _e31) {
+        uint _e37 = i_2;
+        if (_e37 >= _e35) {
             break;
         }
-        uint _e35 = i_2;
-        LightSample _e38 = sample_light_query(_e35, hit_1.position, hit_1.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        float ndl = metal::max(metal::dot(n_8, _e38.dir), 0.0);
-        metal::float3 _e45 = normalize_vec3f(_e38.dir + v_2);
-        float highlight = metal::pow(metal::max(metal::dot(n_8, _e45), 0.0), s_4) * norm;
-        metal::float3 _e51 = color;
-        color = _e51 + ((_e38.radiance * metal::float3(ndl)) * ((kd * metal::float3(INV_PI)) + (m.specular * metal::float3(highlight))));
+        uint _e39 = i_2;
+        LightSample _e42 = sample_light_query(_e39, hit_1.position, hit_1.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        float ndl = metal::max(metal::dot(n_8, _e42.dir), 0.0);
+        metal::float3 _e49 = normalize_vec3f(_e42.dir + v_2);
+        float highlight = metal::pow(metal::max(metal::dot(n_8, _e49), 0.0), s_4) * norm;
+        metal::float3 _e55 = color;
+        color = _e55 + ((_e42.radiance * metal::float3(ndl)) * ((kd * metal::float3(INV_PI)) + (m.specular * metal::float3(highlight))));
     }
-    metal::float3 _e67 = color;
-    return _e67;
+    metal::float3 _e71 = color;
+    return _e71;
 }
 
 Lambert load_Lambert(
@@ -1394,9 +1395,10 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color_1 = {};
     uint i_3 = {};
-    metal::float3 n_9 = metal::faceforward(hit_2.normal, ray_14.dir, hit_2.normal);
+    metal::float3 ng_1 = metal::faceforward(hit_2.geometric_normal, ray_14.dir, hit_2.geometric_normal);
+    metal::float3 n_9 = metal::faceforward(hit_2.normal, -(ng_1), hit_2.normal);
     color_1 = metal::float3(0.0);
-    uint _e11 = light_count_query(frame);
+    uint _e15 = light_count_query(frame);
     i_3 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_3 = true;
@@ -1404,21 +1406,21 @@ metal::float3 lambert_shade(
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e33 = i_3;
-            i_3 = _e33 + 1u;
+            uint _e37 = i_3;
+            i_3 = _e37 + 1u;
         }
         loop_init_3 = false;
-        uint _e13 = i_3;
-        if (_e13 >= _e11) {
+        uint _e17 = i_3;
+        if (_e17 >= _e15) {
             break;
         }
-        uint _e15 = i_3;
-        LightSample _e18 = sample_light_query(_e15, hit_2.position, hit_2.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        metal::float3 _e19 = color_1;
-        color_1 = _e19 + (((m_1.albedo * metal::float3(INV_PI)) * _e18.radiance) * metal::float3(metal::max(metal::dot(n_9, _e18.dir), 0.0)));
+        uint _e19 = i_3;
+        LightSample _e22 = sample_light_query(_e19, hit_2.position, hit_2.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e23 = color_1;
+        color_1 = _e23 + (((m_1.albedo * metal::float3(INV_PI)) * _e22.radiance) * metal::float3(metal::max(metal::dot(n_9, _e22.dir), 0.0)));
     }
-    metal::float3 _e36 = color_1;
-    return _e36;
+    metal::float3 _e40 = color_1;
+    return _e40;
 }
 
 Mirror load_Mirror(

@@ -1005,35 +1005,36 @@ fn blinn_phong_shade(m: BlinnPhong, ray_13: Ray, hit_1: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_2: u32;
 
-    let n_8 = faceForward(hit_1.normal, ray_13.dir, hit_1.normal);
-    let _e8 = normalize_vec3f(ray_13.dir);
-    let v_2 = -(_e8);
-    let _e15 = sample_texture(m.texture, (hit_1.uv * m.uv_scale));
-    let kd = (m.diffuse * _e15.xyz);
+    let ng = faceForward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    let n_8 = faceForward(hit_1.normal, -(ng), hit_1.normal);
+    let _e12 = normalize_vec3f(ray_13.dir);
+    let v_2 = -(_e12);
+    let _e19 = sample_texture(m.texture, (hit_1.uv * m.uv_scale));
+    let kd = (m.diffuse * _e19.xyz);
     let s_4 = max(m.shininess, 0f);
     let norm = ((s_4 + 8f) * (INV_PI / 8f));
     color = (m.ambient * kd);
-    let _e31 = light_count_query();
+    let _e35 = light_count_query();
     i_2 = 0u;
     loop {
-        let _e33 = i_2;
-        if (_e33 >= _e31) {
+        let _e37 = i_2;
+        if (_e37 >= _e35) {
             break;
         }
-        let _e35 = i_2;
-        let _e38 = sample_light_query(_e35, hit_1.position, hit_1.geometric_normal);
-        let ndl = max(dot(n_8, _e38.dir), 0f);
-        let _e45 = normalize_vec3f((_e38.dir + v_2));
-        let highlight = (pow(max(dot(n_8, _e45), 0f), s_4) * norm);
-        let _e51 = color;
-        color = (_e51 + ((_e38.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m.specular * vec3(highlight)))));
+        let _e39 = i_2;
+        let _e42 = sample_light_query(_e39, hit_1.position, hit_1.geometric_normal);
+        let ndl = max(dot(n_8, _e42.dir), 0f);
+        let _e49 = normalize_vec3f((_e42.dir + v_2));
+        let highlight = (pow(max(dot(n_8, _e49), 0f), s_4) * norm);
+        let _e55 = color;
+        color = (_e55 + ((_e42.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m.specular * vec3(highlight)))));
         continuing {
-            let _e64 = i_2;
-            i_2 = (_e64 + 1u);
+            let _e68 = i_2;
+            i_2 = (_e68 + 1u);
         }
     }
-    let _e67 = color;
-    return _e67;
+    let _e71 = color;
+    return _e71;
 }
 
 fn load_Lambert(offset_8: u32) -> Lambert {
@@ -1047,26 +1048,27 @@ fn lambert_shade(m_1: Lambert, ray_14: Ray, hit_2: Hit) -> vec3<f32> {
     var color_1: vec3<f32>;
     var i_3: u32;
 
-    let n_9 = faceForward(hit_2.normal, ray_14.dir, hit_2.normal);
+    let ng_1 = faceForward(hit_2.geometric_normal, ray_14.dir, hit_2.geometric_normal);
+    let n_9 = faceForward(hit_2.normal, -(ng_1), hit_2.normal);
     color_1 = vec3(0f);
-    let _e11 = light_count_query();
+    let _e15 = light_count_query();
     i_3 = 0u;
     loop {
-        let _e13 = i_3;
-        if (_e13 >= _e11) {
+        let _e17 = i_3;
+        if (_e17 >= _e15) {
             break;
         }
-        let _e15 = i_3;
-        let _e18 = sample_light_query(_e15, hit_2.position, hit_2.geometric_normal);
-        let _e19 = color_1;
-        color_1 = (_e19 + (((m_1.albedo * vec3(INV_PI)) * _e18.radiance) * vec3(max(dot(n_9, _e18.dir), 0f))));
+        let _e19 = i_3;
+        let _e22 = sample_light_query(_e19, hit_2.position, hit_2.geometric_normal);
+        let _e23 = color_1;
+        color_1 = (_e23 + (((m_1.albedo * vec3(INV_PI)) * _e22.radiance) * vec3(max(dot(n_9, _e22.dir), 0f))));
         continuing {
-            let _e33 = i_3;
-            i_3 = (_e33 + 1u);
+            let _e37 = i_3;
+            i_3 = (_e37 + 1u);
         }
     }
-    let _e36 = color_1;
-    return _e36;
+    let _e40 = color_1;
+    return _e40;
 }
 
 fn load_Mirror(offset_9: u32) -> Mirror {

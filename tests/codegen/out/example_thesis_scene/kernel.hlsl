@@ -1255,15 +1255,16 @@ float3 blinn_phong_shade(BlinnPhong m, Ray ray_13, Hit hit_1)
     float3 color = (float3)0;
     uint i_2 = (uint)0;
 
-    float3 n_8 = faceforward(hit_1.normal, ray_13.dir, hit_1.normal);
-    const float3 _e8 = normalize_vec3f(ray_13.dir);
-    float3 v_2 = -(_e8);
-    const float4 _e15 = sample_texture(m.texture_, (hit_1.uv * m.uv_scale));
-    float3 kd = (m.diffuse * _e15.xyz);
+    float3 ng = faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    float3 n_8 = faceforward(hit_1.normal, -(ng), hit_1.normal);
+    const float3 _e12 = normalize_vec3f(ray_13.dir);
+    float3 v_2 = -(_e12);
+    const float4 _e19 = sample_texture(m.texture_, (hit_1.uv * m.uv_scale));
+    float3 kd = (m.diffuse * _e19.xyz);
     float s_4 = max(m.shininess, 0.0);
     float norm = ((s_4 + 8.0) * (INV_PI / 8.0));
     color = (m.ambient * kd);
-    const uint _e31 = light_count_query();
+    const uint _e35 = light_count_query();
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
@@ -1271,24 +1272,24 @@ float3 blinn_phong_shade(BlinnPhong m, Ray ray_13, Hit hit_1)
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e64 = i_2;
-            i_2 = (_e64 + 1u);
+            uint _e68 = i_2;
+            i_2 = (_e68 + 1u);
         }
         loop_init_2 = false;
-        uint _e33 = i_2;
-        if ((_e33 >= _e31)) {
+        uint _e37 = i_2;
+        if ((_e37 >= _e35)) {
             break;
         }
-        uint _e35 = i_2;
-        const LightSample _e38 = sample_light_query(_e35, hit_1.position, hit_1.geometric_normal);
-        float ndl = max(dot(n_8, _e38.dir), 0.0);
-        const float3 _e45 = normalize_vec3f((_e38.dir + v_2));
-        float highlight = (pow(max(dot(n_8, _e45), 0.0), s_4) * norm);
-        float3 _e51 = color;
-        color = (_e51 + ((_e38.radiance * (ndl).xxx) * ((kd * (INV_PI).xxx) + (m.specular * (highlight).xxx))));
+        uint _e39 = i_2;
+        const LightSample _e42 = sample_light_query(_e39, hit_1.position, hit_1.geometric_normal);
+        float ndl = max(dot(n_8, _e42.dir), 0.0);
+        const float3 _e49 = normalize_vec3f((_e42.dir + v_2));
+        float highlight = (pow(max(dot(n_8, _e49), 0.0), s_4) * norm);
+        float3 _e55 = color;
+        color = (_e55 + ((_e42.radiance * (ndl).xxx) * ((kd * (INV_PI).xxx) + (m.specular * (highlight).xxx))));
     }
-    float3 _e67 = color;
-    return _e67;
+    float3 _e71 = color;
+    return _e71;
 }
 
 float3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_14, Hit hit_2, float3 secondary)

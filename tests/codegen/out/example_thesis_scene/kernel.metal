@@ -1304,15 +1304,16 @@ metal::float3 blinn_phong_shade(
 ) {
     metal::float3 color = {};
     uint i_2 = {};
-    metal::float3 n_8 = metal::faceforward(hit_1.normal, ray_13.dir, hit_1.normal);
-    metal::float3 _e8 = normalize_vec3f(ray_13.dir);
-    metal::float3 v_2 = -(_e8);
-    metal::float4 _e15 = sample_texture(m.texture, hit_1.uv * m.uv_scale, params, texels, _buffer_sizes);
-    metal::float3 kd = m.diffuse * _e15.xyz;
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    metal::float3 n_8 = metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
+    metal::float3 _e12 = normalize_vec3f(ray_13.dir);
+    metal::float3 v_2 = -(_e12);
+    metal::float4 _e19 = sample_texture(m.texture, hit_1.uv * m.uv_scale, params, texels, _buffer_sizes);
+    metal::float3 kd = m.diffuse * _e19.xyz;
     float s_4 = metal::max(m.shininess, 0.0);
     float norm = (s_4 + 8.0) * (INV_PI / 8.0);
     color = m.ambient * kd;
-    uint _e31 = light_count_query(frame);
+    uint _e35 = light_count_query(frame);
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
@@ -1320,24 +1321,24 @@ metal::float3 blinn_phong_shade(
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e64 = i_2;
-            i_2 = _e64 + 1u;
+            uint _e68 = i_2;
+            i_2 = _e68 + 1u;
         }
         loop_init_2 = false;
-        uint _e33 = i_2;
-        if (_e33 >= _e31) {
+        uint _e37 = i_2;
+        if (_e37 >= _e35) {
             break;
         }
-        uint _e35 = i_2;
-        LightSample _e38 = sample_light_query(_e35, hit_1.position, hit_1.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        float ndl = metal::max(metal::dot(n_8, _e38.dir), 0.0);
-        metal::float3 _e45 = normalize_vec3f(_e38.dir + v_2);
-        float highlight = metal::pow(metal::max(metal::dot(n_8, _e45), 0.0), s_4) * norm;
-        metal::float3 _e51 = color;
-        color = _e51 + ((_e38.radiance * metal::float3(ndl)) * ((kd * metal::float3(INV_PI)) + (m.specular * metal::float3(highlight))));
+        uint _e39 = i_2;
+        LightSample _e42 = sample_light_query(_e39, hit_1.position, hit_1.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        float ndl = metal::max(metal::dot(n_8, _e42.dir), 0.0);
+        metal::float3 _e49 = normalize_vec3f(_e42.dir + v_2);
+        float highlight = metal::pow(metal::max(metal::dot(n_8, _e49), 0.0), s_4) * norm;
+        metal::float3 _e55 = color;
+        color = _e55 + ((_e42.radiance * metal::float3(ndl)) * ((kd * metal::float3(INV_PI)) + (m.specular * metal::float3(highlight))));
     }
-    metal::float3 _e67 = color;
-    return _e67;
+    metal::float3 _e71 = color;
+    return _e71;
 }
 
 metal::float3 dispatch_closest_hit(

@@ -977,35 +977,36 @@ fn blinn_phong_shade(m: BlinnPhong, ray_13: Ray, hit_1: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_2: u32;
 
-    let n_8 = faceForward(hit_1.normal, ray_13.dir, hit_1.normal);
-    let _e8 = normalize_vec3f(ray_13.dir);
-    let v_2 = -(_e8);
-    let _e15 = sample_texture(m.texture, (hit_1.uv * m.uv_scale));
-    let kd = (m.diffuse * _e15.xyz);
+    let ng = faceForward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    let n_8 = faceForward(hit_1.normal, -(ng), hit_1.normal);
+    let _e12 = normalize_vec3f(ray_13.dir);
+    let v_2 = -(_e12);
+    let _e19 = sample_texture(m.texture, (hit_1.uv * m.uv_scale));
+    let kd = (m.diffuse * _e19.xyz);
     let s_4 = max(m.shininess, 0f);
     let norm = ((s_4 + 8f) * (INV_PI / 8f));
     color = (m.ambient * kd);
-    let _e31 = light_count_query();
+    let _e35 = light_count_query();
     i_2 = 0u;
     loop {
-        let _e33 = i_2;
-        if (_e33 >= _e31) {
+        let _e37 = i_2;
+        if (_e37 >= _e35) {
             break;
         }
-        let _e35 = i_2;
-        let _e38 = sample_light_query(_e35, hit_1.position, hit_1.geometric_normal);
-        let ndl = max(dot(n_8, _e38.dir), 0f);
-        let _e45 = normalize_vec3f((_e38.dir + v_2));
-        let highlight = (pow(max(dot(n_8, _e45), 0f), s_4) * norm);
-        let _e51 = color;
-        color = (_e51 + ((_e38.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m.specular * vec3(highlight)))));
+        let _e39 = i_2;
+        let _e42 = sample_light_query(_e39, hit_1.position, hit_1.geometric_normal);
+        let ndl = max(dot(n_8, _e42.dir), 0f);
+        let _e49 = normalize_vec3f((_e42.dir + v_2));
+        let highlight = (pow(max(dot(n_8, _e49), 0f), s_4) * norm);
+        let _e55 = color;
+        color = (_e55 + ((_e42.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m.specular * vec3(highlight)))));
         continuing {
-            let _e64 = i_2;
-            i_2 = (_e64 + 1u);
+            let _e68 = i_2;
+            i_2 = (_e68 + 1u);
         }
     }
-    let _e67 = color;
-    return _e67;
+    let _e71 = color;
+    return _e71;
 }
 
 fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_14: Ray, hit_2: Hit, secondary: vec3<f32>) -> vec3<f32> {
