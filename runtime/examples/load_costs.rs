@@ -9,7 +9,10 @@
 //! cheaper per component (ARCHITECTURE.md has both sets of figures). Adjacent loads are merged,
 //! but still fetched one 32-bit component per lane at a time, so the cost grows with the words
 //! loaded; the `vec4<u64>` cases (run where the adapter has `SHADER_INT64`, on a device of their
-//! own) fetch two words per lane at a time.
+//! own) fetch two words per lane at a time. The `64K` and `half lanes` cases compare a storage
+//! buffer with a uniform buffer of the same 64 KiB, with every lane loading and with a random half
+//! of them: lavapipe tests each lane's mask bit with a branch before a storage load, and a random
+//! mask makes those branches mispredict; its uniform-buffer gathers have no such branch.
 use rtc_runtime::gpu::{AdapterChoice, Gpu};
 use std::time::Instant;
 use wgpu::util::DeviceExt;
@@ -45,6 +48,12 @@ fn main() {
         contents: bytemuck::cast_slice(&data),
         usage: wgpu::BufferUsages::STORAGE,
     });
+    // The first 64 KiB of the same data, as a uniform buffer.
+    let ubo = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: None,
+        contents: bytemuck::cast_slice(&data[..16384]),
+        usage: wgpu::BufferUsages::UNIFORM,
+    });
     let out = device.create_buffer(&wgpu::BufferDescriptor {
         label: None,
         size: 4 << 20,
@@ -62,16 +71,22 @@ fn main() {
         ("4 x vec4u", "let j = i & 0x7ffcu; let v = q[j] + q[j + 1u] + q[j + 2u] + q[j + 3u];"),
         ("1 x vec4<u64>", "let w = d[(i & 0x7ffeu) >> 1u]; let v = vec4u(u32(w.x), u32(w.y >> 32u), u32(w.z), u32(w.w >> 32u));"),
         ("2 x vec4<u64>", "let j = (i & 0x7ffcu) >> 1u; let w = d[j] + d[j + 1u]; let v = vec4u(u32(w.x), u32(w.y >> 32u), u32(w.z), u32(w.w >> 32u));"),
+        ("ssbo 2 x vec4u 64K", "let j = i & 0xffeu; let v = q[j] + q[j + 1u];"),
+        ("ubo 2 x vec4u 64K", "let j = i & 0xffeu; let v = u[j] + u[j + 1u];"),
+        ("ssbo half lanes", "let j = i & 0xffeu; var v = vec4u(i, i, i, i); if ((i >> 5u) & 1u) == 0u { v = q[j] + q[j + 1u]; }"),
+        ("ubo half lanes", "let j = i & 0xffeu; var v = vec4u(i, i, i, i); if ((i >> 5u) & 1u) == 0u { v = u[j] + u[j + 1u]; }"),
         ("8 x u32", "let v = vec4u(s[i * 4u], s[i * 4u + 1u], s[i * 4u + 2u], s[i * 4u + 3u]) + vec4u(s[i * 4u + 4u], s[i * 4u + 5u], s[i * 4u + 6u], s[i * 4u + 7u]);"),
     ];
     for (name, body) in cases {
         let wide = body.contains("d[");
         if wide && !int64 {
-            println!("{name:13} skipped: the adapter has no SHADER_INT64");
+            println!("{name:20} skipped: the adapter has no SHADER_INT64");
             continue;
         }
         let decl = if wide {
             "@group(0) @binding(3) var<storage, read> d: array<vec4<u64>>;"
+        } else if body.contains("u[") {
+            "@group(0) @binding(4) var<uniform> u: array<vec4u, 4096>;"
         } else {
             ""
         };
@@ -116,6 +131,12 @@ fn main(@builtin(global_invocation_id) g: vec3u) {{
                 resource: buf.as_entire_binding(),
             });
         }
+        if body.contains("u[") {
+            entries.push(wgpu::BindGroupEntry {
+                binding: 4,
+                resource: ubo.as_entire_binding(),
+            });
+        }
         if wide {
             entries.push(wgpu::BindGroupEntry {
                 binding: 3,
@@ -151,6 +172,6 @@ fn main(@builtin(global_invocation_id) g: vec3u) {{
         }
         // 1M invocations x 64 steps in 8-lane batches, spread over every core.
         let per_step = best * 1e6 * threads / (131_072.0 * 64.0);
-        println!("{name:13} {best:8.1} ms  {per_step:6.1} ns per 8-lane step on one core");
+        println!("{name:20} {best:8.1} ms  {per_step:6.1} ns per 8-lane step on one core");
     }
 }
