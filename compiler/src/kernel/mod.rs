@@ -145,7 +145,8 @@ pub fn check_with_kernel_timed(
         }
     };
     let registry_path = registry_path(program, scene_id);
-    let (mut registry, _) = crate::link::registry::Registry::load(&registry_path);
+    let (mut registry, _) =
+        crate::link::registry::load_scene(&registry_path, &registry_key(program, scene_id));
     let linked = match crate::link::link(program, scene_id, &mut registry, link_options) {
         Ok(l) => l,
         Err(d) => return Err(fail(first, d)),
@@ -201,20 +202,30 @@ fn scene_choice_diagnostic(
     })
 }
 
-/// Writes the scene's program registry (`rtc.registry.json` beside its file) if it changed.
+/// Writes the scene's program registry (its part of `rtc.registry.json` beside its file) if it
+/// changed.
 pub fn save_registry(c: &CompiledScene) -> std::io::Result<()> {
     let Some(program) = c.checked.program.as_ref() else {
         return Ok(());
     };
     let path = registry_path(program, c.scene);
-    let (mut registry, _) = crate::link::registry::Registry::load(&path);
+    let key = registry_key(program, c.scene);
+    let (mut registry, _) = crate::link::registry::load_scene(&path, &key);
     // Re-linking against the file's registry records exactly the ids this compile used.
     let _ = crate::link::link(program, c.scene, &mut registry, &LinkOptions::default());
-    let text = registry.to_json();
-    if std::fs::read_to_string(&path).ok().as_deref() == Some(text.as_str()) {
-        return Ok(());
-    }
-    std::fs::write(path, text)
+    crate::link::registry::save_scene(&path, &key, &registry)
+}
+
+/// The scene's key in its registry file: the declaring file's name and the scene's name.
+pub fn registry_key(program: &crate::sema::hir::Program, scene: SceneId) -> String {
+    let s = &program.scenes[scene];
+    let file = program.modules[s.module.index()]
+        .path
+        .as_deref()
+        .and_then(std::path::Path::file_name)
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    crate::link::registry::scene_key(&file, &s.name)
 }
 
 /// The registry file of a scene: `rtc.registry.json` in the folder of the file that declares it.

@@ -4,7 +4,11 @@
 //! background type, and every program, gets a small integer id that the generated dispatch switches
 //! on and the runtime writes into instance records. Ids must not shuffle when a file is added, changed
 //! or removed elsewhere, so they are kept in a JSON file (`rtc.registry.json` beside the scene) and only
-//! changed by [`Registry::sync`]:
+//! changed by [`Registry::sync`]. The file holds one registry per scene, keyed by the declaring file's
+//! name and the scene's (`scene.rt::thesis_scene`), so scenes that share a folder, or a file, keep
+//! their ids apart and compiling one leaves the others' as they are ([`load_scene`], [`save_scene`];
+//! a file of the first format, one registry for the folder, is read as the registry of whichever
+//! scene loads it first). Within a scene's registry:
 //! - a key seen before keeps its id;
 //! - a new key gets the smallest id not in use in its namespace (new keys are assigned in sorted order,
 //!   so the result does not depend on discovery order);
@@ -21,8 +25,96 @@ use std::path::Path;
 /// The file name of the registry, in the scene's folder.
 pub const FILE_NAME: &str = "rtc.registry.json";
 
-/// The current format version.
+/// The format version of a scene's registry.
 const VERSION: u32 = 1;
+
+/// The format version of a registry file holding one registry per scene.
+const FILE_VERSION: u32 = 2;
+
+/// Ids per namespace, then per key.
+type Namespaces = BTreeMap<String, BTreeMap<String, u32>>;
+
+/// A registry file: one registry per scene, by scene key (see the module docs).
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+struct RegistryFile {
+    version: u32,
+    scenes: BTreeMap<String, Namespaces>,
+}
+
+/// The key of a scene in its registry file: the declaring file's name and the scene's name.
+pub fn scene_key(file_name: &str, scene: &str) -> String {
+    format!("{file_name}::{scene}")
+}
+
+/// Every scene's registry in the file at `path`: empty for a missing file, and for an unreadable or
+/// invalid one with a warning; a file of the first format (one registry) is returned as `legacy`.
+fn read_file(path: &Path) -> (RegistryFile, Option<Registry>, Option<LoadWarning>) {
+    let empty = RegistryFile {
+        version: FILE_VERSION,
+        scenes: BTreeMap::new(),
+    };
+    let text = match std::fs::read_to_string(path) {
+        Ok(text) => text,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return (empty, None, None),
+        Err(e) => return (empty, None, Some(LoadWarning::Io(e))),
+    };
+    if let Ok(file) = serde_json::from_str::<RegistryFile>(&text) {
+        if file.version != FILE_VERSION {
+            let w = format!("version {} (expected {FILE_VERSION})", file.version);
+            return (empty, None, Some(LoadWarning::Format(w)));
+        }
+        for (scene, namespaces) in &file.scenes {
+            let reg = Registry {
+                version: VERSION,
+                namespaces: namespaces.clone(),
+            };
+            if let Err(LoadWarning::Format(e)) = reg.validate() {
+                let w = format!("scene `{scene}`: {e}");
+                return (empty, None, Some(LoadWarning::Format(w)));
+            }
+        }
+        return (file, None, None);
+    }
+    match Registry::from_json(&text) {
+        Ok(legacy) => (empty, Some(legacy), None),
+        Err(w) => (empty, None, Some(w)),
+    }
+}
+
+/// The registry of scene `key` (see [`scene_key`]) in the file at `path`; missing (file or scene)
+/// means empty, unreadable or invalid means empty with a warning.
+pub fn load_scene(path: &Path, key: &str) -> (Registry, Option<LoadWarning>) {
+    let (mut file, legacy, warning) = read_file(path);
+    if let Some(legacy) = legacy {
+        return (legacy, None);
+    }
+    let namespaces = file.scenes.remove(key).unwrap_or_default();
+    (
+        Registry {
+            version: VERSION,
+            namespaces,
+        },
+        warning,
+    )
+}
+
+/// Stores `registry` as scene `key`'s in the file at `path`, keeping every other scene's, and
+/// writes the file only if its text changes. A file of the first format is replaced.
+pub fn save_scene(path: &Path, key: &str, registry: &Registry) -> std::io::Result<()> {
+    let (mut file, _, _) = read_file(path);
+    if registry.namespaces.is_empty() {
+        file.scenes.remove(key);
+    } else {
+        file.scenes
+            .insert(key.to_string(), registry.namespaces.clone());
+    }
+    let mut text = serde_json::to_string_pretty(&file).unwrap_or_default();
+    text.push('\n');
+    if std::fs::read_to_string(path).ok().as_deref() == Some(text.as_str()) {
+        return Ok(());
+    }
+    std::fs::write(path, text)
+}
 
 /// Ids per namespace (one namespace per struct role and one per program kind), keyed by a stable
 /// name such as `material:std/materials/lambert.rt::Lambert`.
@@ -88,7 +180,13 @@ impl Registry {
                 reg.version
             )));
         }
-        for (ns, ids) in &reg.namespaces {
+        reg.validate()?;
+        Ok(reg)
+    }
+
+    /// Checks that no id is used twice in a namespace.
+    fn validate(&self) -> Result<(), LoadWarning> {
+        for (ns, ids) in &self.namespaces {
             let mut seen = BTreeSet::new();
             if let Some((key, id)) = ids.iter().find(|(_, id)| !seen.insert(**id)) {
                 return Err(LoadWarning::Format(format!(
@@ -96,7 +194,7 @@ impl Registry {
                 )));
             }
         }
-        Ok(reg)
+        Ok(())
     }
 
     /// Loads the registry at `path`; a missing file is an empty registry, an unreadable or invalid one
@@ -203,6 +301,55 @@ mod tests {
         let back = Registry::from_json(&json).unwrap();
         assert_eq!(back, reg);
         assert_eq!(back.to_json(), json);
+    }
+
+    #[test]
+    fn scenes_sharing_a_file_keep_their_ids_apart() {
+        let dir = std::env::temp_dir().join(format!("rtc-registry-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join(FILE_NAME);
+        // A file of the first format is read as the first loader's registry.
+        let mut legacy = Registry::new();
+        legacy.sync("material", ["lambert"]);
+        std::fs::write(&path, legacy.to_json()).unwrap();
+        let (a0, warn) = load_scene(&path, "a.rt::a");
+        assert!(warn.is_none());
+        assert_eq!(a0, legacy);
+        // Two scenes with different types, each compiled in turn: each keeps its own ids, and
+        // compiling either again changes nothing in the file.
+        let mut a = a0;
+        a.sync("material", ["lambert", "mirror"]);
+        save_scene(&path, "a.rt::a", &a).unwrap();
+        let (mut b, _) = load_scene(&path, "b.rt::b");
+        assert_eq!(b, Registry::new());
+        b.sync("material", ["glass"]);
+        save_scene(&path, "b.rt::b", &b).unwrap();
+        let text = std::fs::read_to_string(&path).unwrap();
+        for key in ["a.rt::a", "b.rt::b"] {
+            let (mut reg, warn) = load_scene(&path, key);
+            assert!(warn.is_none());
+            let present: Vec<String> = reg.namespaces["material"].keys().cloned().collect();
+            assert!(reg
+                .sync("material", present.iter().map(String::as_str))
+                .is_empty());
+            save_scene(&path, key, &reg).unwrap();
+            assert_eq!(std::fs::read_to_string(&path).unwrap(), text);
+        }
+        assert_eq!(
+            load_scene(&path, "a.rt::a").0.id("material", "mirror"),
+            Some(1)
+        );
+        assert_eq!(
+            load_scene(&path, "b.rt::b").0.id("material", "glass"),
+            Some(0)
+        );
+        // A duplicate id inside a scene's section is a warning and an empty registry.
+        let bad = r#"{"version":2,"scenes":{"a.rt::a":{"material":{"x":0,"y":0}}}}"#;
+        std::fs::write(&path, bad).unwrap();
+        let (reg, warn) = load_scene(&path, "a.rt::a");
+        assert!(matches!(warn, Some(LoadWarning::Format(_))));
+        assert_eq!(reg, Registry::new());
+        let _ = std::fs::remove_dir_all(&dir);
     }
 
     #[test]
