@@ -46,45 +46,63 @@ pub fn scene_key(file_name: &str, scene: &str) -> String {
     format!("{file_name}::{scene}")
 }
 
-/// Every scene's registry in the file at `path`: empty for a missing file, and for an unreadable or
-/// invalid one with a warning; a file of the first format (one registry) is returned as `legacy`.
-fn read_file(path: &Path) -> (RegistryFile, Option<Registry>, Option<LoadWarning>) {
+/// The text of the registry file at `path`: `None` for a missing file, and for an unreadable one
+/// with a warning.
+fn read_text(path: &Path) -> (Option<String>, Option<LoadWarning>) {
+    match std::fs::read_to_string(path) {
+        Ok(text) => (Some(text), None),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => (None, None),
+        Err(e) => (None, Some(LoadWarning::Io(e))),
+    }
+}
+
+/// Every scene's registry in a registry file's text (empty for none, and for an invalid one with
+/// a warning); a file of the first format (one registry) is returned as `legacy`.
+fn parse_file(text: Option<&str>) -> (RegistryFile, Option<Registry>, Option<LoadWarning>) {
     let empty = RegistryFile {
         version: FILE_VERSION,
         scenes: BTreeMap::new(),
     };
-    let text = match std::fs::read_to_string(path) {
-        Ok(text) => text,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return (empty, None, None),
-        Err(e) => return (empty, None, Some(LoadWarning::Io(e))),
+    let Some(text) = text else {
+        return (empty, None, None);
     };
-    if let Ok(file) = serde_json::from_str::<RegistryFile>(&text) {
+    if let Ok(file) = serde_json::from_str::<RegistryFile>(text) {
         if file.version != FILE_VERSION {
             let w = format!("version {} (expected {FILE_VERSION})", file.version);
             return (empty, None, Some(LoadWarning::Format(w)));
         }
         for (scene, namespaces) in &file.scenes {
-            let reg = Registry {
-                version: VERSION,
-                namespaces: namespaces.clone(),
-            };
-            if let Err(LoadWarning::Format(e)) = reg.validate() {
+            if let Err(LoadWarning::Format(e)) = validate(namespaces) {
                 let w = format!("scene `{scene}`: {e}");
                 return (empty, None, Some(LoadWarning::Format(w)));
             }
         }
         return (file, None, None);
     }
-    match Registry::from_json(&text) {
+    match Registry::from_json(text) {
         Ok(legacy) => (empty, Some(legacy), None),
         Err(w) => (empty, None, Some(w)),
     }
 }
 
+/// Checks that no id is used twice in a namespace.
+fn validate(namespaces: &Namespaces) -> Result<(), LoadWarning> {
+    for (ns, ids) in namespaces {
+        let mut seen = BTreeSet::new();
+        if let Some((key, id)) = ids.iter().find(|(_, id)| !seen.insert(**id)) {
+            return Err(LoadWarning::Format(format!(
+                "id {id} of `{key}` is used twice in `{ns}`"
+            )));
+        }
+    }
+    Ok(())
+}
+
 /// The registry of scene `key` (see [`scene_key`]) in the file at `path`; missing (file or scene)
 /// means empty, unreadable or invalid means empty with a warning.
 pub fn load_scene(path: &Path, key: &str) -> (Registry, Option<LoadWarning>) {
-    let (mut file, legacy, warning) = read_file(path);
+    let (text, io_warning) = read_text(path);
+    let (mut file, legacy, warning) = parse_file(text.as_deref());
     if let Some(legacy) = legacy {
         return (legacy, None);
     }
@@ -94,14 +112,15 @@ pub fn load_scene(path: &Path, key: &str) -> (Registry, Option<LoadWarning>) {
             version: VERSION,
             namespaces,
         },
-        warning,
+        io_warning.or(warning),
     )
 }
 
 /// Stores `registry` as scene `key`'s in the file at `path`, keeping every other scene's, and
 /// writes the file only if its text changes. A file of the first format is replaced.
 pub fn save_scene(path: &Path, key: &str, registry: &Registry) -> std::io::Result<()> {
-    let (mut file, _, _) = read_file(path);
+    let (old, _) = read_text(path);
+    let (mut file, _, _) = parse_file(old.as_deref());
     if registry.namespaces.is_empty() {
         file.scenes.remove(key);
     } else {
@@ -110,7 +129,7 @@ pub fn save_scene(path: &Path, key: &str, registry: &Registry) -> std::io::Resul
     }
     let mut text = serde_json::to_string_pretty(&file).unwrap_or_default();
     text.push('\n');
-    if std::fs::read_to_string(path).ok().as_deref() == Some(text.as_str()) {
+    if old.as_deref() == Some(text.as_str()) {
         return Ok(());
     }
     std::fs::write(path, text)
@@ -121,7 +140,7 @@ pub fn save_scene(path: &Path, key: &str, registry: &Registry) -> std::io::Resul
 #[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Registry {
     version: u32,
-    namespaces: BTreeMap<String, BTreeMap<String, u32>>,
+    namespaces: Namespaces,
 }
 
 /// What [`Registry::sync`] changed in one namespace.
@@ -180,34 +199,8 @@ impl Registry {
                 reg.version
             )));
         }
-        reg.validate()?;
+        validate(&reg.namespaces)?;
         Ok(reg)
-    }
-
-    /// Checks that no id is used twice in a namespace.
-    fn validate(&self) -> Result<(), LoadWarning> {
-        for (ns, ids) in &self.namespaces {
-            let mut seen = BTreeSet::new();
-            if let Some((key, id)) = ids.iter().find(|(_, id)| !seen.insert(**id)) {
-                return Err(LoadWarning::Format(format!(
-                    "id {id} of `{key}` is used twice in `{ns}`"
-                )));
-            }
-        }
-        Ok(())
-    }
-
-    /// Loads the registry at `path`; a missing file is an empty registry, an unreadable or invalid one
-    /// is an empty registry plus a warning.
-    pub fn load(path: &Path) -> (Registry, Option<LoadWarning>) {
-        match std::fs::read_to_string(path) {
-            Ok(text) => match Registry::from_json(&text) {
-                Ok(reg) => (reg, None),
-                Err(w) => (Registry::new(), Some(w)),
-            },
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => (Registry::new(), None),
-            Err(e) => (Registry::new(), Some(LoadWarning::Io(e))),
-        }
     }
 
     /// The registry as pretty JSON with sorted keys (deterministic).
@@ -363,7 +356,7 @@ mod tests {
             Registry::from_json(dup),
             Err(LoadWarning::Format(_))
         ));
-        let (reg, warn) = Registry::load(Path::new("/nonexistent/rtc.registry.json"));
+        let (reg, warn) = load_scene(Path::new("/nonexistent/rtc.registry.json"), "a.rt::a");
         assert!(warn.is_none());
         assert_eq!(reg, Registry::new());
     }
