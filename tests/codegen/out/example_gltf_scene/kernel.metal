@@ -842,11 +842,11 @@ Candidate intersect_mesh(
     metal::float3 _e8 = safe_inverse(ray_7.dir);
     TriangleRay _e9 = prepare_triangle_ray(ray_7);
     uint base_2 = inst_4.blas_root;
-    GpuNode header = nodes[base_2];
-    metal::float3 origin_3 = header.min;
-    metal::float3 scale_2 = header.max;
+    GpuNode header_1 = nodes[base_2];
+    metal::float3 origin_3 = header_1.min;
+    metal::float3 scale_2 = header_1.max;
     sp_1 = 0u;
-    child = header.a;
+    child = header_1.a;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
@@ -1031,6 +1031,13 @@ uint medium_at(
     return _e60;
 }
 
+metal::float3 node_frame_hi(
+    GpuNode header
+) {
+    metal::float3 _e5 = node_point(header.min, header.max, metal::uint3(65535u));
+    return _e5;
+}
+
 Candidate intersect_scene(
     Ray ray_9,
     bool shadow_2,
@@ -1062,86 +1069,86 @@ Candidate intersect_scene(
     }
     metal::float3 _e16 = safe_inverse(ray_9.dir);
     uint base_3 = frame_2.tlas_root;
-    GpuNode header_1 = nodes[base_3];
-    metal::float3 origin_4 = header_1.min;
-    metal::float3 scale_3 = header_1.max;
-    metal::float3 _e25 = node_point(origin_4, scale_3, metal::uint3(65535u));
-    float _e29 = best_2.t;
-    float _e30 = slab(origin_4, _e25, ray_9.origin, _e16, ray_9.tmin, _e29, F32_INF);
-    uint _e32 = F32_INF;
-    if (_e30 == as_type<float>(_e32)) {
-        Candidate _e35 = best_2;
-        return _e35;
+    GpuNode header_2 = nodes[base_3];
+    metal::float3 origin_4 = header_2.min;
+    metal::float3 scale_3 = header_2.max;
+    metal::float3 _e23 = node_frame_hi(header_2);
+    float _e27 = best_2.t;
+    float _e28 = slab(origin_4, _e23, ray_9.origin, _e16, ray_9.tmin, _e27, F32_INF);
+    uint _e30 = F32_INF;
+    if (_e28 == as_type<float>(_e30)) {
+        Candidate _e33 = best_2;
+        return _e33;
     }
     sp_2 = 0u;
-    child_1 = header_1.a;
+    child_1 = header_2.a;
     uint2 loop_bound_3 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_3 == uint2(0u))) { break; }
         loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        uint _e40 = child_1;
-        if ((_e40 & NODE_LEAF_BIT) != 0u) {
-            uint _e45 = child_1;
-            if (((_e45 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
-                uint _e54 = child_1;
-                Candidate _e57 = best_2;
-                Candidate _e58 = intersect_object(_e54 & NODE_FIRST_MASK, ray_9, _e57, shadow_2, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, _buffer_sizes);
-                best_2 = _e58;
-                uint _e60 = best_2.slot;
-                if (shadow_2 && (_e60 != NO_HIT)) {
-                    Candidate _e64 = best_2;
-                    return _e64;
+        uint _e38 = child_1;
+        if ((_e38 & NODE_LEAF_BIT) != 0u) {
+            uint _e43 = child_1;
+            if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                uint _e52 = child_1;
+                Candidate _e55 = best_2;
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_9, _e55, shadow_2, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, _buffer_sizes);
+                best_2 = _e56;
+                uint _e58 = best_2.slot;
+                if (shadow_2 && (_e58 != NO_HIT)) {
+                    Candidate _e62 = best_2;
+                    return _e62;
                 }
             }
         } else {
-            uint _e65 = child_1;
-            GpuNode n_7 = nodes[base_3 + _e65];
-            float _e71 = best_2.t;
-            metal::float2 _e72 = children_entry(n_7, origin_4, scale_3, ray_9, _e16, _e71, F32_INF);
-            float tl_1 = _e72.x;
-            float tr_1 = _e72.y;
-            uint _e76 = F32_INF;
-            uint _e80 = F32_INF;
-            if ((tl_1 < as_type<float>(_e76)) && (tr_1 < as_type<float>(_e80))) {
+            uint _e63 = child_1;
+            GpuNode n_7 = nodes[base_3 + _e63];
+            float _e69 = best_2.t;
+            metal::float2 _e70 = children_entry(n_7, origin_4, scale_3, ray_9, _e16, _e69, F32_INF);
+            float tl_1 = _e70.x;
+            float tr_1 = _e70.y;
+            uint _e74 = F32_INF;
+            uint _e78 = F32_INF;
+            if ((tl_1 < as_type<float>(_e74)) && (tr_1 < as_type<float>(_e78))) {
                 near_1 = n_7.a;
                 far_1 = n_7.b;
                 if (tr_1 < tl_1) {
                     near_1 = n_7.b;
                     far_1 = n_7.a;
                 }
-                uint _e91 = sp_2;
-                if (_e91 < TLAS_STACK) {
-                    uint _e94 = sp_2;
-                    uint _e95 = far_1;
-                    traversal_stack.inner[metal::min(_e94, 127u)] = _e95;
-                    uint _e100 = sp_2;
-                    sp_2 = _e100 + 1u;
+                uint _e89 = sp_2;
+                if (_e89 < TLAS_STACK) {
+                    uint _e92 = sp_2;
+                    uint _e93 = far_1;
+                    traversal_stack.inner[metal::min(_e92, 127u)] = _e93;
+                    uint _e98 = sp_2;
+                    sp_2 = _e98 + 1u;
                 }
-                uint _e103 = near_1;
-                child_1 = _e103;
+                uint _e101 = near_1;
+                child_1 = _e101;
                 continue;
             }
-            uint _e105 = F32_INF;
-            if (tl_1 < as_type<float>(_e105)) {
+            uint _e103 = F32_INF;
+            if (tl_1 < as_type<float>(_e103)) {
                 child_1 = n_7.a;
                 continue;
             }
-            uint _e110 = F32_INF;
-            if (tr_1 < as_type<float>(_e110)) {
+            uint _e108 = F32_INF;
+            if (tr_1 < as_type<float>(_e108)) {
                 child_1 = n_7.b;
                 continue;
             }
         }
-        uint _e115 = sp_2;
-        metal::uint2 _e116 = pop(0u, _e115, traversal_stack);
-        if (_e116.x == NO_HIT) {
+        uint _e113 = sp_2;
+        metal::uint2 _e114 = pop(0u, _e113, traversal_stack);
+        if (_e114.x == NO_HIT) {
             break;
         }
-        child_1 = _e116.x;
-        sp_2 = _e116.y;
+        child_1 = _e114.x;
+        sp_2 = _e114.y;
     }
-    Candidate _e122 = best_2;
-    return _e122;
+    Candidate _e120 = best_2;
+    return _e120;
 }
 
 SkyGradient load_SkyGradient(
@@ -1260,9 +1267,9 @@ metal::float3 offset_origin(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     FrameUniforms _e3 = frame;
-    GpuNode header_2 = nodes[_e3.tlas_root];
-    metal::float3 _e15 = node_point(header_2.min, header_2.max, metal::uint3(65535u));
-    metal::float3 a_7 = metal::max(metal::abs(p_4), metal::max(metal::abs(header_2.min), metal::abs(_e15)));
+    GpuNode header_3 = nodes[_e3.tlas_root];
+    metal::float3 _e11 = node_frame_hi(header_3);
+    metal::float3 a_7 = metal::max(metal::abs(p_4), metal::max(metal::abs(header_3.min), metal::abs(_e11)));
     float m_3 = metal::max(metal::max(a_7.x, a_7.y), a_7.z);
     return p_4 + (n_3 * metal::float3(m_3 * (1.0 / 65536.0)));
 }

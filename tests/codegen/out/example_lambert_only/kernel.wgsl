@@ -430,11 +430,11 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
     let _e8 = safe_inverse(ray_4.dir);
     let _e9 = prepare_triangle_ray(ray_4);
     let base_1 = inst_2.blas_root;
-    let header = nodes[base_1];
-    let origin_3 = header.min;
-    let scale_2 = header.max;
+    let header_1 = nodes[base_1];
+    let origin_3 = header_1.min;
+    let scale_2 = header_1.max;
     sp_1 = 0u;
-    child = header.a;
+    child = header_1.a;
     loop {
         let _e20 = child;
         if ((_e20 & NODE_LEAF_BIT) != 0u) {
@@ -665,6 +665,11 @@ fn medium_at(p_3: vec3<f32>, exclude: u32) -> u32 {
     return _e60;
 }
 
+fn node_frame_hi(header: GpuNode) -> vec3<f32> {
+    let _e5 = node_point(header.min, header.max, vec3(65535u));
+    return _e5;
+}
+
 fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
@@ -683,83 +688,83 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
     }
     let _e16 = safe_inverse(ray_7.dir);
     let base_2 = frame_2.tlas_root;
-    let header_1 = nodes[base_2];
-    let origin_4 = header_1.min;
-    let scale_3 = header_1.max;
-    let _e25 = node_point(origin_4, scale_3, vec3(65535u));
-    let _e29 = best_2.t;
-    let _e30 = slab(origin_4, _e25, ray_7.origin, _e16, ray_7.tmin, _e29);
-    let _e32 = F32_INF;
-    if (_e30 == bitcast<f32>(_e32)) {
-        let _e35 = best_2;
-        return _e35;
+    let header_2 = nodes[base_2];
+    let origin_4 = header_2.min;
+    let scale_3 = header_2.max;
+    let _e23 = node_frame_hi(header_2);
+    let _e27 = best_2.t;
+    let _e28 = slab(origin_4, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
+    let _e30 = F32_INF;
+    if (_e28 == bitcast<f32>(_e30)) {
+        let _e33 = best_2;
+        return _e33;
     }
     sp_2 = 0u;
-    child_1 = header_1.a;
+    child_1 = header_2.a;
     loop {
-        let _e40 = child_1;
-        if ((_e40 & NODE_LEAF_BIT) != 0u) {
-            let _e45 = child_1;
-            if (((_e45 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
-                let _e54 = child_1;
-                let _e57 = best_2;
-                let _e58 = intersect_object((_e54 & NODE_FIRST_MASK), ray_7, _e57, shadow_2);
-                best_2 = _e58;
-                let _e60 = best_2.slot;
-                if (shadow_2 && (_e60 != NO_HIT)) {
-                    let _e64 = best_2;
-                    return _e64;
+        let _e38 = child_1;
+        if ((_e38 & NODE_LEAF_BIT) != 0u) {
+            let _e43 = child_1;
+            if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                let _e52 = child_1;
+                let _e55 = best_2;
+                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_7, _e55, shadow_2);
+                best_2 = _e56;
+                let _e58 = best_2.slot;
+                if (shadow_2 && (_e58 != NO_HIT)) {
+                    let _e62 = best_2;
+                    return _e62;
                 }
             }
         } else {
-            let _e65 = child_1;
-            let n_7 = nodes[(base_2 + _e65)];
-            let _e71 = best_2.t;
-            let _e72 = children_entry(n_7, origin_4, scale_3, ray_7, _e16, _e71);
-            let tl_1 = _e72.x;
-            let tr_1 = _e72.y;
-            let _e76 = F32_INF;
-            let _e80 = F32_INF;
-            if ((tl_1 < bitcast<f32>(_e76)) && (tr_1 < bitcast<f32>(_e80))) {
+            let _e63 = child_1;
+            let n_7 = nodes[(base_2 + _e63)];
+            let _e69 = best_2.t;
+            let _e70 = children_entry(n_7, origin_4, scale_3, ray_7, _e16, _e69);
+            let tl_1 = _e70.x;
+            let tr_1 = _e70.y;
+            let _e74 = F32_INF;
+            let _e78 = F32_INF;
+            if ((tl_1 < bitcast<f32>(_e74)) && (tr_1 < bitcast<f32>(_e78))) {
                 near_1 = n_7.a;
                 far_1 = n_7.b;
                 if (tr_1 < tl_1) {
                     near_1 = n_7.b;
                     far_1 = n_7.a;
                 }
-                let _e91 = sp_2;
-                if (_e91 < TLAS_STACK) {
-                    let _e94 = sp_2;
-                    let _e95 = far_1;
-                    traversal_stack[min(_e94, 127u)] = _e95;
-                    let _e100 = sp_2;
-                    sp_2 = (_e100 + 1u);
+                let _e89 = sp_2;
+                if (_e89 < TLAS_STACK) {
+                    let _e92 = sp_2;
+                    let _e93 = far_1;
+                    traversal_stack[min(_e92, 127u)] = _e93;
+                    let _e98 = sp_2;
+                    sp_2 = (_e98 + 1u);
                 }
-                let _e103 = near_1;
-                child_1 = _e103;
+                let _e101 = near_1;
+                child_1 = _e101;
                 continue;
             }
-            let _e105 = F32_INF;
-            if (tl_1 < bitcast<f32>(_e105)) {
+            let _e103 = F32_INF;
+            if (tl_1 < bitcast<f32>(_e103)) {
                 child_1 = n_7.a;
                 continue;
             }
-            let _e110 = F32_INF;
-            if (tr_1 < bitcast<f32>(_e110)) {
+            let _e108 = F32_INF;
+            if (tr_1 < bitcast<f32>(_e108)) {
                 child_1 = n_7.b;
                 continue;
             }
         }
-        let _e115 = sp_2;
-        let _e116 = pop(0u, _e115);
-        if (_e116.x == NO_HIT) {
+        let _e113 = sp_2;
+        let _e114 = pop(0u, _e113);
+        if (_e114.x == NO_HIT) {
             break;
         }
-        child_1 = _e116.x;
-        sp_2 = _e116.y;
+        child_1 = _e114.x;
+        sp_2 = _e114.y;
     }
-    let _e122 = best_2;
-    return _e122;
+    let _e120 = best_2;
+    return _e120;
 }
 
 fn load_ConstantBackground(offset_2: u32) -> ConstantBackground {
@@ -834,9 +839,9 @@ fn load_PointLight(offset_6: u32) -> PointLight {
 
 fn offset_origin(p_4: vec3<f32>, n_3: vec3<f32>) -> vec3<f32> {
     let _e3 = frame;
-    let header_2 = nodes[_e3.tlas_root];
-    let _e15 = node_point(header_2.min, header_2.max, vec3(65535u));
-    let a_5 = max(abs(p_4), max(abs(header_2.min), abs(_e15)));
+    let header_3 = nodes[_e3.tlas_root];
+    let _e11 = node_frame_hi(header_3);
+    let a_5 = max(abs(p_4), max(abs(header_3.min), abs(_e11)));
     let m_1 = max(max(a_5.x, a_5.y), a_5.z);
     return (p_4 + (n_3 * vec3((m_1 * (1f / 65536f)))));
 }

@@ -577,11 +577,11 @@ Candidate intersect_mesh(
     metal::float3 _e8 = safe_inverse(ray_4.dir);
     TriangleRay _e9 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
-    GpuNode header = nodes[base_1];
-    metal::float3 origin_3 = header.min;
-    metal::float3 scale_2 = header.max;
+    GpuNode header_1 = nodes[base_1];
+    metal::float3 origin_3 = header_1.min;
+    metal::float3 scale_2 = header_1.max;
     sp_1 = 0u;
-    child = header.a;
+    child = header_1.a;
     uint2 loop_bound = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound == uint2(0u))) { break; }
@@ -684,6 +684,13 @@ BvhMesh load_BvhMesh(
     return BvhMesh {_e5};
 }
 
+metal::float3 node_frame_hi(
+    GpuNode header
+) {
+    metal::float3 _e5 = node_point(header.min, header.max, metal::uint3(65535u));
+    return _e5;
+}
+
 BvhNode mesh_node_query(
     uint m,
     uint i,
@@ -696,11 +703,11 @@ BvhNode mesh_node_query(
     uint reference = {};
     metal::uint3 q_1 = {};
     uint base_2 = params[m];
-    GpuNode header_1 = nodes[base_2];
-    lo_1 = header_1.min;
-    metal::float3 _e14 = node_point(header_1.min, header_1.max, metal::uint3(65535u));
-    hi_1 = _e14;
-    reference = header_1.a;
+    GpuNode header_2 = nodes[base_2];
+    lo_1 = header_2.min;
+    metal::float3 _e10 = node_frame_hi(header_2);
+    hi_1 = _e10;
+    reference = header_2.a;
     if (i >= 2u) {
         GpuNode n_8 = nodes[base_2 + (i >> 1u)];
         q_1 = as_type<metal::uint3>(n_8.min);
@@ -709,31 +716,31 @@ BvhNode mesh_node_query(
             q_1 = as_type<metal::uint3>(n_8.max);
             reference = n_8.b;
         }
-        metal::uint3 _e39 = q_1;
-        metal::uint3 _e40 = node_box_lo(_e39);
-        metal::float3 _e41 = node_point(header_1.min, header_1.max, _e40);
-        lo_1 = _e41;
-        metal::uint3 _e44 = q_1;
-        metal::uint3 _e45 = node_box_hi(_e44);
-        metal::float3 _e46 = node_point(header_1.min, header_1.max, _e45);
-        hi_1 = _e46;
+        metal::uint3 _e35 = q_1;
+        metal::uint3 _e36 = node_box_lo(_e35);
+        metal::float3 _e37 = node_point(header_2.min, header_2.max, _e36);
+        lo_1 = _e37;
+        metal::uint3 _e40 = q_1;
+        metal::uint3 _e41 = node_box_hi(_e40);
+        metal::float3 _e42 = node_point(header_2.min, header_2.max, _e41);
+        hi_1 = _e42;
     }
-    uint _e47 = reference;
-    if ((_e47 & NODE_LEAF_BIT) == 0u) {
-        metal::float3 _e52 = lo_1;
-        metal::float3 _e53 = hi_1;
-        uint _e55 = reference;
-        return BvhNode {_e52, _e53, 2u * _e55, 0u};
+    uint _e43 = reference;
+    if ((_e43 & NODE_LEAF_BIT) == 0u) {
+        metal::float3 _e48 = lo_1;
+        metal::float3 _e49 = hi_1;
+        uint _e51 = reference;
+        return BvhNode {_e48, _e49, 2u * _e51, 0u};
     }
-    uint _e59 = reference;
-    uint count_1 = (_e59 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
+    uint _e55 = reference;
+    uint count_1 = (_e55 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
     if (count_1 == 0u) {
         return BvhNode {as_type<metal::float3>(metal::uint3(2139095039u)), as_type<metal::float3>(metal::uint3(4286578687u)), 0u, 0u};
     }
-    metal::float3 _e77 = lo_1;
-    metal::float3 _e78 = hi_1;
-    uint _e79 = reference;
-    return BvhNode {_e77, _e78, _e79 & NODE_FIRST_MASK, count_1};
+    metal::float3 _e73 = lo_1;
+    metal::float3 _e74 = hi_1;
+    uint _e75 = reference;
+    return BvhNode {_e73, _e74, _e75 & NODE_FIRST_MASK, count_1};
 }
 
 metal::float2 intersect_aabb(
@@ -1265,86 +1272,86 @@ Candidate intersect_scene(
     }
     metal::float3 _e16 = safe_inverse(ray_13.dir);
     uint base_3 = frame_2.tlas_root;
-    GpuNode header_2 = nodes[base_3];
-    metal::float3 origin_4 = header_2.min;
-    metal::float3 scale_3 = header_2.max;
-    metal::float3 _e25 = node_point(origin_4, scale_3, metal::uint3(65535u));
-    float _e29 = best_3.t;
-    float _e30 = slab(origin_4, _e25, ray_13.origin, _e16, ray_13.tmin, _e29, F32_INF);
-    uint _e32 = F32_INF;
-    if (_e30 == as_type<float>(_e32)) {
-        Candidate _e35 = best_3;
-        return _e35;
+    GpuNode header_3 = nodes[base_3];
+    metal::float3 origin_4 = header_3.min;
+    metal::float3 scale_3 = header_3.max;
+    metal::float3 _e23 = node_frame_hi(header_3);
+    float _e27 = best_3.t;
+    float _e28 = slab(origin_4, _e23, ray_13.origin, _e16, ray_13.tmin, _e27, F32_INF);
+    uint _e30 = F32_INF;
+    if (_e28 == as_type<float>(_e30)) {
+        Candidate _e33 = best_3;
+        return _e33;
     }
     sp_3 = 0u;
-    child_1 = header_2.a;
+    child_1 = header_3.a;
     uint2 loop_bound_6 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        uint _e40 = child_1;
-        if ((_e40 & NODE_LEAF_BIT) != 0u) {
-            uint _e45 = child_1;
-            if (((_e45 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
-                uint _e54 = child_1;
-                Candidate _e57 = best_3;
-                Candidate _e58 = intersect_object(_e54 & NODE_FIRST_MASK, ray_13, _e57, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, _buffer_sizes);
-                best_3 = _e58;
-                uint _e60 = best_3.slot;
-                if (shadow_2 && (_e60 != NO_HIT)) {
-                    Candidate _e64 = best_3;
-                    return _e64;
+        uint _e38 = child_1;
+        if ((_e38 & NODE_LEAF_BIT) != 0u) {
+            uint _e43 = child_1;
+            if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                uint _e52 = child_1;
+                Candidate _e55 = best_3;
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_13, _e55, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, _buffer_sizes);
+                best_3 = _e56;
+                uint _e58 = best_3.slot;
+                if (shadow_2 && (_e58 != NO_HIT)) {
+                    Candidate _e62 = best_3;
+                    return _e62;
                 }
             }
         } else {
-            uint _e65 = child_1;
-            GpuNode n_9 = nodes[base_3 + _e65];
-            float _e71 = best_3.t;
-            metal::float2 _e72 = children_entry(n_9, origin_4, scale_3, ray_13, _e16, _e71, F32_INF);
-            float tl_1 = _e72.x;
-            float tr_1 = _e72.y;
-            uint _e76 = F32_INF;
-            uint _e80 = F32_INF;
-            if ((tl_1 < as_type<float>(_e76)) && (tr_1 < as_type<float>(_e80))) {
+            uint _e63 = child_1;
+            GpuNode n_9 = nodes[base_3 + _e63];
+            float _e69 = best_3.t;
+            metal::float2 _e70 = children_entry(n_9, origin_4, scale_3, ray_13, _e16, _e69, F32_INF);
+            float tl_1 = _e70.x;
+            float tr_1 = _e70.y;
+            uint _e74 = F32_INF;
+            uint _e78 = F32_INF;
+            if ((tl_1 < as_type<float>(_e74)) && (tr_1 < as_type<float>(_e78))) {
                 near_1 = n_9.a;
                 far_1 = n_9.b;
                 if (tr_1 < tl_1) {
                     near_1 = n_9.b;
                     far_1 = n_9.a;
                 }
-                uint _e91 = sp_3;
-                if (_e91 < TLAS_STACK) {
-                    uint _e94 = sp_3;
-                    uint _e95 = far_1;
-                    traversal_stack.inner[metal::min(_e94, 127u)] = _e95;
-                    uint _e100 = sp_3;
-                    sp_3 = _e100 + 1u;
+                uint _e89 = sp_3;
+                if (_e89 < TLAS_STACK) {
+                    uint _e92 = sp_3;
+                    uint _e93 = far_1;
+                    traversal_stack.inner[metal::min(_e92, 127u)] = _e93;
+                    uint _e98 = sp_3;
+                    sp_3 = _e98 + 1u;
                 }
-                uint _e103 = near_1;
-                child_1 = _e103;
+                uint _e101 = near_1;
+                child_1 = _e101;
                 continue;
             }
-            uint _e105 = F32_INF;
-            if (tl_1 < as_type<float>(_e105)) {
+            uint _e103 = F32_INF;
+            if (tl_1 < as_type<float>(_e103)) {
                 child_1 = n_9.a;
                 continue;
             }
-            uint _e110 = F32_INF;
-            if (tr_1 < as_type<float>(_e110)) {
+            uint _e108 = F32_INF;
+            if (tr_1 < as_type<float>(_e108)) {
                 child_1 = n_9.b;
                 continue;
             }
         }
-        uint _e115 = sp_3;
-        metal::uint2 _e116 = pop(0u, _e115, traversal_stack);
-        if (_e116.x == NO_HIT) {
+        uint _e113 = sp_3;
+        metal::uint2 _e114 = pop(0u, _e113, traversal_stack);
+        if (_e114.x == NO_HIT) {
             break;
         }
-        child_1 = _e116.x;
-        sp_3 = _e116.y;
+        child_1 = _e114.x;
+        sp_3 = _e114.y;
     }
-    Candidate _e122 = best_3;
-    return _e122;
+    Candidate _e120 = best_3;
+    return _e120;
 }
 
 Skybox load_Skybox(
@@ -1569,9 +1576,9 @@ metal::float3 offset_origin(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     FrameUniforms _e3 = frame;
-    GpuNode header_3 = nodes[_e3.tlas_root];
-    metal::float3 _e15 = node_point(header_3.min, header_3.max, metal::uint3(65535u));
-    metal::float3 a_8 = metal::max(metal::abs(p_4), metal::max(metal::abs(header_3.min), metal::abs(_e15)));
+    GpuNode header_4 = nodes[_e3.tlas_root];
+    metal::float3 _e11 = node_frame_hi(header_4);
+    metal::float3 a_8 = metal::max(metal::abs(p_4), metal::max(metal::abs(header_4.min), metal::abs(_e11)));
     float m_3 = metal::max(metal::max(a_8.x, a_8.y), a_8.z);
     return p_4 + (n_4 * metal::float3(m_3 * (1.0 / 65536.0)));
 }
