@@ -3,13 +3,21 @@
 # traced by Embree 4 (the anchor in ../shared/bench, 2 threads) and by rtc on the default adapter,
 # one right after the other, with the ratio of their rays per second.
 #
-#   bash docs/bench/thesis_vs_embree.sh [RUNS]
+#   bash docs/bench/thesis_vs_embree.sh [--current-lavapipe] [RUNS]
+#
+# `--current-lavapipe` runs rtc on the current Mesa release's lavapipe (Debian trixie-backports',
+# unpacked by docs/bench/current_lavapipe.sh) instead of the system's Vulkan driver.
 #
 # Needs ../shared/bench and ../shared/models next to the repository (the project's shared folder),
 # python3-venv, and a release build of rtc (built here if missing). The Embree side installs
 # embreex and numpy into a virtual environment under ${TMPDIR:-/tmp}.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+runner=()
+if [[ ${1:-} == --current-lavapipe ]]; then
+    runner=(bash docs/bench/current_lavapipe.sh)
+    shift
+fi
 runs=${1:-3}
 shared=../shared
 venv=${TMPDIR:-/tmp}/rtc-embree-venv
@@ -27,9 +35,11 @@ import json
 d = json.load(open('$out/embree.json'))
 print(d['scenes'][0]['per_threads']['2']['frame_ms'])
 ")
+"${runner[@]}" target/release/rtc render examples/thesis_scene/scene.rt -o "$out/thesis.png" 2>&1 |
+    grep '^adapter'
 times=()
 for _ in $(seq "$runs"); do
-    ms=$(target/release/rtc render examples/thesis_scene/scene.rt -o "$out/thesis.png" 2>&1 |
+    ms=$("${runner[@]}" target/release/rtc render examples/thesis_scene/scene.rt -o "$out/thesis.png" 2>&1 |
         awk '/^  render/ {print $2}')
     echo "rtc render: $ms ms"
     times+=("$ms")
