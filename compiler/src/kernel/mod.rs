@@ -407,6 +407,32 @@ mod tests {
             ),
         }
     }
+
+    /// The scene-level traversal stack holds one entry per object but one (a binary BVH over `n`
+    /// objects has at most `n - 1` inner nodes on a path); a scene whose glTF models bring objects
+    /// the compiler cannot count gets the builder's depth bound.
+    #[test]
+    fn the_scene_level_stack_is_sized_by_the_object_count() {
+        let config = |name: &str| match check_with_kernel(
+            &[example(name)],
+            None,
+            &Options::default(),
+            &LinkOptions::default(),
+        ) {
+            Ok((_, _, linked)) => linked.config,
+            Err(f) => panic!(
+                "{}",
+                crate::diag::render_human(&f.checked.sources, &f.diagnostics, false)
+            ),
+        };
+        // 17 bunnies and a floor.
+        assert_eq!(config("thesis_scene").tlas_stack, 17);
+        assert_eq!(
+            config("thesis_scene").blas_stack,
+            crate::link::MAX_BVH_DEPTH
+        );
+        assert_eq!(config("gltf_scene").tlas_stack, crate::link::MAX_BVH_DEPTH);
+    }
 }
 
 #[cfg(test)]

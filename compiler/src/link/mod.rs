@@ -97,6 +97,20 @@ impl KernelConfig {
 /// The deepest BVH the traversal stacks can handle; the BVH builder guarantees it.
 pub const MAX_BVH_DEPTH: u32 = 64;
 
+/// Entries the scene-level traversal stack needs: a binary BVH over `n` objects has at most `n - 1`
+/// inner nodes on a path from its root, and the stack holds at most one deferred child per inner
+/// node of the path; so `n - 1` (at least 1), and at most [`MAX_BVH_DEPTH`]. A scene with glTF
+/// `model` entries gets `MAX_BVH_DEPTH`: their objects are only known when the files are read.
+/// (The object-level stack stays at `MAX_BVH_DEPTH`: meshes are read after the kernel is
+/// compiled.)
+pub fn tlas_stack_bound(desc: &hir::SceneDesc) -> u32 {
+    if !desc.models.is_empty() {
+        return MAX_BVH_DEPTH;
+    }
+    let objects = u32::try_from(desc.objects.len()).unwrap_or(u32::MAX);
+    objects.saturating_sub(1).clamp(1, MAX_BVH_DEPTH)
+}
+
 /// Something left out of the kernel, and why.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct LeftOut {
@@ -312,7 +326,7 @@ pub fn link(
         max_depth,
         max_spawn,
         stack_size: max_depth.max(1),
-        tlas_stack: MAX_BVH_DEPTH,
+        tlas_stack: tlas_stack_bound(desc),
         blas_stack: MAX_BVH_DEPTH,
         has_secondary_rays,
         has_any_hit: has(ProgramKind::AnyHit) || options.all_programs,

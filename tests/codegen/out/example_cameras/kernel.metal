@@ -98,7 +98,7 @@ struct GpuNode {
 typedef GpuNode type_9[1];
 typedef metal::float4 type_10[1];
 struct type_12 {
-    uint inner[128];
+    uint inner[68];
 };
 struct Hit {
     metal::packed_float3 position;
@@ -170,7 +170,7 @@ constant uint NODE_COUNT_SHIFT = 27u;
 constant uint NODE_COUNT_MASK = 15u;
 constant uint NODE_FIRST_MASK = 134217727u;
 constant uint BLAS_STACK = 64u;
-constant uint TLAS_STACK = 64u;
+constant uint TLAS_STACK = 4u;
 constant bool HAS_SECONDARY_RAYS = false;
 constant bool HAS_BACKGROUND = true;
 constant uint FLAG_MEDIUM = 4u;
@@ -530,7 +530,7 @@ metal::uint2 pop(
     if (sp == 0u) {
         return metal::uint2(NO_HIT, 0u);
     }
-    uint _e14 = traversal_stack.inner[metal::min((base + sp) - 1u, 127u)];
+    uint _e14 = traversal_stack.inner[metal::min((base + sp) - 1u, 67u)];
     return metal::uint2(_e14, sp - 1u);
 }
 
@@ -624,7 +624,7 @@ Candidate intersect_mesh(
                 if (_e89 < BLAS_STACK) {
                     uint _e93 = sp_1;
                     uint _e95 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e93, 127u)] = _e95;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e93, 67u)] = _e95;
                     uint _e100 = sp_1;
                     sp_1 = _e100 + 1u;
                 }
@@ -929,7 +929,7 @@ Candidate intersect_scene(
                 if (_e89 < TLAS_STACK) {
                     uint _e92 = sp_2;
                     uint _e93 = far_1;
-                    traversal_stack.inner[metal::min(_e92, 127u)] = _e93;
+                    traversal_stack.inner[metal::min(_e92, 67u)] = _e93;
                     uint _e98 = sp_2;
                     sp_2 = _e98 + 1u;
                 }

@@ -165,7 +165,7 @@ const uint NODE_COUNT_SHIFT = 27u;
 const uint NODE_COUNT_MASK = 15u;
 const uint NODE_FIRST_MASK = 134217727u;
 const uint BLAS_STACK = 64u;
-const uint TLAS_STACK = 64u;
+const uint TLAS_STACK = 6u;
 const float TAU = 6.2831855;
 const float INV_PI = 0.31830987;
 const bool HAS_SECONDARY_RAYS = false;
@@ -194,7 +194,7 @@ layout(std430, binding = 2) readonly buffer type_9_block_4Compute { GpuNode _gro
 
 layout(std430, binding = 4) readonly buffer type_10_block_5Compute { vec4 _group_0_binding_4_cs[]; };
 
-uint traversal_stack[128] = uint[128](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+uint traversal_stack[70] = uint[70](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
 layout(std430, binding = 5) readonly buffer type_14_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
 
@@ -442,7 +442,7 @@ uvec2 pop(uint base, uint sp) {
     if ((sp == 0u)) {
         return uvec2(NO_HIT, 0u);
     }
-    uint _e14 = traversal_stack[min(((base + sp) - 1u), 127u)];
+    uint _e14 = traversal_stack[min(((base + sp) - 1u), 69u)];
     return uvec2(_e14, (sp - 1u));
 }
 
@@ -518,7 +518,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 if ((_e89 < BLAS_STACK)) {
                     uint _e93 = sp_1;
                     uint _e95 = far;
-                    traversal_stack[min((TLAS_STACK + _e93), 127u)] = _e95;
+                    traversal_stack[min((TLAS_STACK + _e93), 69u)] = _e95;
                     uint _e100 = sp_1;
                     sp_1 = (_e100 + 1u);
                 }
@@ -891,7 +891,7 @@ Candidate intersect_scene(Ray ray_10, bool shadow_2) {
                 if ((_e89 < TLAS_STACK)) {
                     uint _e92 = sp_2;
                     uint _e93 = far_1;
-                    traversal_stack[min(_e92, 127u)] = _e93;
+                    traversal_stack[min(_e92, 69u)] = _e93;
                     uint _e98 = sp_2;
                     sp_2 = (_e98 + 1u);
                 }

@@ -164,7 +164,7 @@ const NODE_COUNT_SHIFT: u32 = 27u;
 const NODE_COUNT_MASK: u32 = 15u;
 const NODE_FIRST_MASK: u32 = 134217727u;
 const BLAS_STACK: u32 = 64u;
-const TLAS_STACK: u32 = 64u;
+const TLAS_STACK: u32 = 3u;
 const HAS_SECONDARY_RAYS: bool = true;
 const HAS_BACKGROUND: bool = true;
 const FLAG_MEDIUM: u32 = 4u;
@@ -190,7 +190,7 @@ var<storage> instances: array<GpuInstance>;
 var<storage> nodes: array<GpuNode>;
 @group(0) @binding(4) 
 var<storage> triangles: array<vec4<f32>>;
-var<private> traversal_stack: array<u32, 128>;
+var<private> traversal_stack: array<u32, 67>;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
 var<private> ray_count: u32;
@@ -438,7 +438,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     if (sp == 0u) {
         return vec2<u32>(NO_HIT, 0u);
     }
-    let _e14 = traversal_stack[min(((base + sp) - 1u), 127u)];
+    let _e14 = traversal_stack[min(((base + sp) - 1u), 66u)];
     return vec2<u32>(_e14, (sp - 1u));
 }
 
@@ -513,7 +513,7 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
                 if (_e89 < BLAS_STACK) {
                     let _e93 = sp_1;
                     let _e95 = far;
-                    traversal_stack[min((TLAS_STACK + _e93), 127u)] = _e95;
+                    traversal_stack[min((TLAS_STACK + _e93), 66u)] = _e95;
                     let _e100 = sp_1;
                     sp_1 = (_e100 + 1u);
                 }
@@ -760,7 +760,7 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
                 if (_e89 < TLAS_STACK) {
                     let _e92 = sp_2;
                     let _e93 = far_1;
-                    traversal_stack[min(_e92, 127u)] = _e93;
+                    traversal_stack[min(_e92, 66u)] = _e93;
                     let _e98 = sp_2;
                     sp_2 = (_e98 + 1u);
                 }

@@ -207,7 +207,7 @@ static const uint NODE_COUNT_SHIFT = 27u;
 static const uint NODE_COUNT_MASK = 15u;
 static const uint NODE_FIRST_MASK = 134217727u;
 static const uint BLAS_STACK = 64u;
-static const uint TLAS_STACK = 64u;
+static const uint TLAS_STACK = 3u;
 static const uint BVH_MESH_STACK = 64u;
 static const float TAU = 6.2831855;
 static const float INV_PI = 0.31830987;
@@ -229,7 +229,7 @@ static uint F32_INF = 2139095040u;
 ByteAddressBuffer instances : register(t3);
 ByteAddressBuffer nodes : register(t2);
 ByteAddressBuffer triangles : register(t4);
-static uint traversal_stack[128] = (uint[128])0;
+static uint traversal_stack[67] = (uint[67])0;
 static uint F32_NEG_INF = 4286578688u;
 ByteAddressBuffer attributes : register(t5);
 static uint ray_count = (uint)0;
@@ -555,7 +555,7 @@ uint2 pop(uint base, uint sp)
     if ((sp == 0u)) {
         return uint2(NO_HIT, 0u);
     }
-    uint _e14 = traversal_stack[min(uint(min(((base + sp) - 1u), 127u)), 127u)];
+    uint _e14 = traversal_stack[min(uint(min(((base + sp) - 1u), 66u)), 66u)];
     return uint2(_e14, (sp - 1u));
 }
 
@@ -649,7 +649,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 if ((_e89 < BLAS_STACK)) {
                     uint _e93 = sp_1;
                     uint _e95 = far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e93), 127u)), 127u)] = _e95;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e93), 66u)), 66u)] = _e95;
                     uint _e100 = sp_1;
                     sp_1 = (_e100 + 1u);
                 }
@@ -1351,7 +1351,7 @@ Candidate intersect_scene(Ray ray_13, bool shadow_2)
                 if ((_e89 < TLAS_STACK)) {
                     uint _e92 = sp_3;
                     uint _e93 = far_1;
-                    traversal_stack[min(uint(min(_e92, 127u)), 127u)] = _e93;
+                    traversal_stack[min(uint(min(_e92, 66u)), 66u)] = _e93;
                     uint _e98 = sp_3;
                     sp_3 = (_e98 + 1u);
                 }

@@ -99,7 +99,7 @@ struct GpuNode {
 typedef GpuNode type_9[1];
 typedef metal::float4 type_10[1];
 struct type_12 {
-    uint inner[128];
+    uint inner[67];
 };
 struct BvhMesh {
     uint mesh;
@@ -199,7 +199,7 @@ constant uint NODE_COUNT_SHIFT = 27u;
 constant uint NODE_COUNT_MASK = 15u;
 constant uint NODE_FIRST_MASK = 134217727u;
 constant uint BLAS_STACK = 64u;
-constant uint TLAS_STACK = 64u;
+constant uint TLAS_STACK = 3u;
 constant uint BVH_MESH_STACK = 64u;
 constant float TAU = 6.2831855;
 constant float INV_PI = 0.31830987;
@@ -550,7 +550,7 @@ metal::uint2 pop(
     if (sp == 0u) {
         return metal::uint2(NO_HIT, 0u);
     }
-    uint _e14 = traversal_stack.inner[metal::min((base + sp) - 1u, 127u)];
+    uint _e14 = traversal_stack.inner[metal::min((base + sp) - 1u, 66u)];
     return metal::uint2(_e14, sp - 1u);
 }
 
@@ -644,7 +644,7 @@ Candidate intersect_mesh(
                 if (_e89 < BLAS_STACK) {
                     uint _e93 = sp_1;
                     uint _e95 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e93, 127u)] = _e95;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e93, 66u)] = _e95;
                     uint _e100 = sp_1;
                     sp_1 = _e100 + 1u;
                 }
@@ -1323,7 +1323,7 @@ Candidate intersect_scene(
                 if (_e89 < TLAS_STACK) {
                     uint _e92 = sp_3;
                     uint _e93 = far_1;
-                    traversal_stack.inner[metal::min(_e92, 127u)] = _e93;
+                    traversal_stack.inner[metal::min(_e92, 66u)] = _e93;
                     uint _e98 = sp_3;
                     sp_3 = _e98 + 1u;
                 }

@@ -167,7 +167,7 @@ const NODE_COUNT_SHIFT: u32 = 27u;
 const NODE_COUNT_MASK: u32 = 15u;
 const NODE_FIRST_MASK: u32 = 134217727u;
 const BLAS_STACK: u32 = 64u;
-const TLAS_STACK: u32 = 64u;
+const TLAS_STACK: u32 = 3u;
 const BVH_MESH_STACK: u32 = 64u;
 const TAU: f32 = 6.2831855f;
 const INV_PI: f32 = 0.31830987f;
@@ -195,7 +195,7 @@ var<storage> instances: array<GpuInstance>;
 var<storage> nodes: array<GpuNode>;
 @group(0) @binding(4) 
 var<storage> triangles: array<vec4<f32>>;
-var<private> traversal_stack: array<u32, 128>;
+var<private> traversal_stack: array<u32, 67>;
 var<private> F32_NEG_INF: u32 = 4286578688u;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
@@ -436,7 +436,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     if (sp == 0u) {
         return vec2<u32>(NO_HIT, 0u);
     }
-    let _e14 = traversal_stack[min(((base + sp) - 1u), 127u)];
+    let _e14 = traversal_stack[min(((base + sp) - 1u), 66u)];
     return vec2<u32>(_e14, (sp - 1u));
 }
 
@@ -511,7 +511,7 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
                 if (_e89 < BLAS_STACK) {
                     let _e93 = sp_1;
                     let _e95 = far;
-                    traversal_stack[min((TLAS_STACK + _e93), 127u)] = _e95;
+                    traversal_stack[min((TLAS_STACK + _e93), 66u)] = _e95;
                     let _e100 = sp_1;
                     sp_1 = (_e100 + 1u);
                 }
@@ -1059,7 +1059,7 @@ fn intersect_scene(ray_13: Ray, shadow_2: bool) -> Candidate {
                 if (_e89 < TLAS_STACK) {
                     let _e92 = sp_3;
                     let _e93 = far_1;
-                    traversal_stack[min(_e92, 127u)] = _e93;
+                    traversal_stack[min(_e92, 66u)] = _e93;
                     let _e98 = sp_3;
                     sp_3 = (_e98 + 1u);
                 }
