@@ -24,7 +24,7 @@ root=${RTC_MESA_ROOT:-${XDG_CACHE_HOME:-$HOME/.cache}/rtc/lavapipe-trixie-backpo
 sysroot=$root/sysroot
 if [[ ! -e $root/ready ]]; then
     rm -rf "$root"
-    mkdir -p "$root/apt/lists/partial" "$root/apt/archives/partial" "$root/apt/etc" "$sysroot"
+    mkdir -p "$root/apt/lists/partial" "$root/apt/archives/partial" "$root/apt/etc/parts" "$sysroot"
     : >"$root/apt/status"
     cat >"$root/apt/etc/sources.list" <<'EOF'
 deb http://deb.debian.org/debian trixie main
@@ -32,9 +32,9 @@ deb http://deb.debian.org/debian trixie-backports main
 EOF
     apt_opts=(
         -o "Dir::Etc::SourceList=$root/apt/etc/sources.list"
-        -o "Dir::Etc::SourceParts=/nonexistent"
+        -o "Dir::Etc::SourceParts=$root/apt/etc/parts"
         -o "Dir::Etc::Preferences=/nonexistent"
-        -o "Dir::Etc::PreferencesParts=/nonexistent"
+        -o "Dir::Etc::PreferencesParts=$root/apt/etc/parts"
         -o "Dir::State=$root/apt"
         -o "Dir::State::Lists=$root/apt/lists"
         -o "Dir::State::status=$root/apt/status"
