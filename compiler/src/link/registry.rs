@@ -203,7 +203,9 @@ impl Registry {
         Ok(reg)
     }
 
-    /// The registry as pretty JSON with sorted keys (deterministic).
+    /// The registry as pretty JSON with sorted keys (deterministic): a file of the first format,
+    /// which the tests write (files are written per scene by [`save_scene`]).
+    #[cfg(test)]
     pub fn to_json(&self) -> String {
         let mut s = serde_json::to_string_pretty(self).unwrap_or_default();
         s.push('\n');

@@ -361,9 +361,9 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
     let t_2 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
-    let hit_5 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
+    let hit_6 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_2, (v_1 * rcp), (w * rcp)), hit_5);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_2, (v_1 * rcp), (w * rcp)), hit_6);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -832,6 +832,11 @@ fn load_Lambert(offset_5: u32) -> Lambert {
     return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
+fn shading_normal(ray_13: Ray, hit_1: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    return faceForward(hit_1.normal, -(ng), hit_1.normal);
+}
+
 fn light_count_query() -> u32 {
     let _e1 = frame;
     return _e1.light_count;
@@ -870,8 +875,8 @@ fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f3
     }
     let _e11 = n_4;
     let _e12 = offset_origin(position, _e11);
-    let ray_19 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
-    let _e23 = intersect_scene(ray_19, true);
+    let ray_20 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
+    let _e23 = intersect_scene(ray_20, true);
     return select(1f, 0f, (_e23.slot != NO_HIT));
 }
 
@@ -909,68 +914,67 @@ fn sample_light_query(i_1: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> L
     return _e27;
 }
 
-fn lambert_shade(m: Lambert, ray_13: Ray, hit_1: Hit) -> vec3<f32> {
+fn lambert_shade(m: Lambert, ray_14: Ray, hit_2: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_2: u32;
 
-    let ng = faceForward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
-    let n_8 = faceForward(hit_1.normal, -(ng), hit_1.normal);
+    let _e3 = shading_normal(ray_14, hit_2);
     color = vec3(0f);
-    let _e15 = light_count_query();
+    let _e8 = light_count_query();
     i_2 = 0u;
     loop {
-        let _e17 = i_2;
-        if (_e17 >= _e15) {
+        let _e10 = i_2;
+        if (_e10 >= _e8) {
             break;
         }
-        let _e19 = i_2;
-        let _e22 = sample_light_query(_e19, hit_1.position, hit_1.geometric_normal);
-        let _e23 = color;
-        color = (_e23 + (((m.albedo * vec3(INV_PI)) * _e22.radiance) * vec3(max(dot(n_8, _e22.dir), 0f))));
+        let _e12 = i_2;
+        let _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
+        let _e16 = color;
+        color = (_e16 + (((m.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0f))));
         continuing {
-            let _e37 = i_2;
-            i_2 = (_e37 + 1u);
+            let _e30 = i_2;
+            i_2 = (_e30 + 1u);
         }
     }
-    let _e40 = color;
-    return _e40;
+    let _e33 = color;
+    return _e33;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_14: Ray, hit_2: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_15: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
     let _e3 = load_Lambert(offset_8);
-    let _e4 = lambert_shade(_e3, ray_14, hit_2);
+    let _e4 = lambert_shade(_e3, ray_15, hit_3);
     return _e4;
 }
 
-fn shade_direct(ray_15: Ray, c_2: Candidate) -> vec3<f32> {
+fn shade_direct(ray_16: Ray, c_2: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_2.slot];
-    let _e6 = finish_hit(ray_15, c_2);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_16, c_2);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_secondary_rays(type_id_5: u32, offset_9: u32, ray_16: Ray, hit_3: Hit) {
+fn dispatch_secondary_rays(type_id_5: u32, offset_9: u32, ray_17: Ray, hit_4: Hit) {
     return;
 }
 
-fn spawn_origin(hit_4: Hit, dir_1: vec3<f32>) -> vec3<f32> {
+fn spawn_origin(hit_5: Hit, dir_1: vec3<f32>) -> vec3<f32> {
     var n_5: vec3<f32>;
 
-    n_5 = hit_4.geometric_normal;
+    n_5 = hit_5.geometric_normal;
     let _e4 = n_5;
     if (dot(dir_1, _e4) < 0f) {
         let _e8 = n_5;
         n_5 = -(_e8);
     }
     let _e11 = n_5;
-    let _e12 = offset_origin(hit_4.position, _e11);
+    let _e12 = offset_origin(hit_5.position, _e11);
     return _e12;
 }
 
 fn trace(camera_ray: Ray) -> vec3<f32> {
     var stack: array<Frame, 4>;
     var depth: u32;
-    var ray_17: Ray;
+    var ray_18: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var pushed: bool;
@@ -992,42 +996,42 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 4>();
     depth = 0u;
-    ray_17 = camera_ray;
+    ray_18 = camera_ray;
     value = vec3(0f);
     have_value = false;
     loop {
         let _e26 = have_value;
         if !(_e26) {
-            let _e28 = ray_17;
+            let _e28 = ray_18;
             let _e30 = intersect_scene(_e28, false);
             if (_e30.slot == NO_HIT) {
-                let _e34 = ray_17;
+                let _e34 = ray_18;
                 let _e36 = F32_INF;
-                let _e38 = ray_17;
+                let _e38 = ray_18;
                 let _e39 = miss(_e38);
                 let _e40 = through_medium(_e34, bitcast<f32>(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 let inst_9 = instances[_e30.slot];
-                let _e46 = ray_17;
+                let _e46 = ray_18;
                 let _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                let _e56 = ray_17.depth;
+                let _e56 = ray_18.depth;
                 let _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    let _e68 = ray_17;
+                    let _e68 = ray_18;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     let _e70 = spawn_count;
-                    let n_9 = min(min(_e70, 1u), MAX_SPAWN);
-                    if (n_9 > 0u) {
-                        let _e77 = ray_17;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_9, 0u);
+                    let n_8 = min(min(_e70, 1u), MAX_SPAWN);
+                    if (n_8 > 0u) {
+                        let _e77 = ray_18;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
                         i_3 = 0u;
                         loop {
                             let _e88 = i_3;
-                            if (_e88 >= n_9) {
+                            if (_e88 >= n_8) {
                                 break;
                             }
                             let _e91 = i_3;
@@ -1053,9 +1057,9 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 }
                 let _e120 = pushed;
                 if !(_e120) {
-                    let _e124 = ray_17;
+                    let _e124 = ray_18;
                     let _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0f));
-                    let _e128 = ray_17;
+                    let _e128 = ray_18;
                     let _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1087,13 +1091,13 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let i_4 = stack[min(top_1, 3u)].next;
             stack[min(top_1, 3u)].next = (i_4 + 1u);
             let parent = stack[min(top_1, 3u)].ray;
-            let hit_6 = stack[min(top_1, 3u)].hit;
+            let hit_7 = stack[min(top_1, 3u)].hit;
             let dir_3 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
             medium = parent.medium;
-            let _e209 = spawn_origin(hit_6, dir_3);
+            let _e209 = spawn_origin(hit_7, dir_3);
             let _e212 = F32_INF;
             let _e218 = medium;
-            ray_17 = Ray(_e209, 0f, dir_3, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_18 = Ray(_e209, 0f, dir_3, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             let _e224 = stack[min(top_1, 3u)].slot;
             let inst_10 = instances[_e224];
@@ -1125,7 +1129,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s: u32;
-    var ray_18: Ray;
+    var ray_19: Ray;
 
     let frame_5 = frame;
     let tile_1 = tile;
@@ -1142,13 +1146,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
         let sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_18 = _e23;
-        ray_18.depth = 0u;
-        ray_18.kind = RAY_CAMERA;
-        let _e31 = ray_18.origin;
+        ray_19 = _e23;
+        ray_19.depth = 0u;
+        ray_19.kind = RAY_CAMERA;
+        let _e31 = ray_19.origin;
         let _e33 = medium_at(_e31, NO_HIT);
-        ray_18.medium = _e33;
-        let _e34 = ray_18;
+        ray_19.medium = _e33;
+        let _e34 = ray_19;
         let _e35 = trace(_e34);
         let _e36 = is_finite_vec3f(_e35);
         if all(_e36) {

@@ -350,9 +350,9 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
     float t_2 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_5 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
+    bool hit_6 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_5 ? vec3(t_2, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_6 ? vec3(t_2, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
@@ -795,6 +795,11 @@ Lambert load_Lambert(uint offset_4) {
     return Lambert(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
+vec3 shading_normal(Ray ray_12, Hit hit_1) {
+    vec3 ng = faceforward(hit_1.geometric_normal, ray_12.dir, hit_1.geometric_normal);
+    return faceforward(hit_1.normal, -(ng), hit_1.normal);
+}
+
 uint light_count_query() {
     FrameUniforms _e1 = _group_0_binding_0_cs;
     return _e1.light_count;
@@ -832,8 +837,8 @@ float shadow_query(vec3 position, vec3 normal, vec3 dir, float dist) {
     }
     vec3 _e11 = n_4;
     vec3 _e12 = offset_origin(position, _e11);
-    Ray ray_18 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    Candidate _e23 = intersect_scene(ray_18, true);
+    Ray ray_19 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    Candidate _e23 = intersect_scene(ray_19, true);
     return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
@@ -870,68 +875,67 @@ LightSample sample_light_query(uint i_1, vec3 position_3, vec3 normal_3) {
     return _e27;
 }
 
-vec3 lambert_shade(Lambert m, Ray ray_12, Hit hit_1) {
+vec3 lambert_shade(Lambert m, Ray ray_13, Hit hit_2) {
     vec3 color = vec3(0.0);
     uint i_2 = 0u;
-    vec3 ng = faceforward(hit_1.geometric_normal, ray_12.dir, hit_1.geometric_normal);
-    vec3 n_8 = faceforward(hit_1.normal, -(ng), hit_1.normal);
+    vec3 _e3 = shading_normal(ray_13, hit_2);
     color = vec3(0.0);
-    uint _e15 = light_count_query();
+    uint _e8 = light_count_query();
     i_2 = 0u;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e37 = i_2;
-            i_2 = (_e37 + 1u);
+            uint _e30 = i_2;
+            i_2 = (_e30 + 1u);
         }
         loop_init_2 = false;
-        uint _e17 = i_2;
-        if ((_e17 >= _e15)) {
+        uint _e10 = i_2;
+        if ((_e10 >= _e8)) {
             break;
         }
-        uint _e19 = i_2;
-        LightSample _e22 = sample_light_query(_e19, hit_1.position, hit_1.geometric_normal);
-        vec3 _e23 = color;
-        color = (_e23 + (((m.albedo * vec3(INV_PI)) * _e22.radiance) * vec3(max(dot(n_8, _e22.dir), 0.0))));
+        uint _e12 = i_2;
+        LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
+        vec3 _e16 = color;
+        color = (_e16 + (((m.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0.0))));
     }
-    vec3 _e40 = color;
-    return _e40;
+    vec3 _e33 = color;
+    return _e33;
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_7, Ray ray_13, Hit hit_2, vec3 secondary) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_7, Ray ray_14, Hit hit_3, vec3 secondary) {
     Lambert _e3 = load_Lambert(offset_7);
-    vec3 _e4 = lambert_shade(_e3, ray_13, hit_2);
+    vec3 _e4 = lambert_shade(_e3, ray_14, hit_3);
     return _e4;
 }
 
-vec3 shade_direct(Ray ray_14, Candidate c_2) {
+vec3 shade_direct(Ray ray_15, Candidate c_2) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_2.slot];
-    Hit _e6 = finish_hit(ray_14, c_2);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_15, c_2);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, vec3(0.0));
     return _e11;
 }
 
-void dispatch_secondary_rays(uint type_id_5, uint offset_8, Ray ray_15, Hit hit_3) {
+void dispatch_secondary_rays(uint type_id_5, uint offset_8, Ray ray_16, Hit hit_4) {
     return;
 }
 
-vec3 spawn_origin(Hit hit_4, vec3 dir_1) {
+vec3 spawn_origin(Hit hit_5, vec3 dir_1) {
     vec3 n_5 = vec3(0.0);
-    n_5 = hit_4.geometric_normal;
+    n_5 = hit_5.geometric_normal;
     vec3 _e4 = n_5;
     if ((dot(dir_1, _e4) < 0.0)) {
         vec3 _e8 = n_5;
         n_5 = -(_e8);
     }
     vec3 _e11 = n_5;
-    vec3 _e12 = offset_origin(hit_4.position, _e11);
+    vec3 _e12 = offset_origin(hit_5.position, _e11);
     return _e12;
 }
 
 vec3 trace(Ray camera_ray) {
     Frame stack[1] = Frame[1](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_16 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_17 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     bool pushed = false;
@@ -952,38 +956,38 @@ vec3 trace(Ray camera_ray) {
     }
     stack = Frame[1](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_16 = camera_ray;
+    ray_17 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     while(true) {
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_16;
+            Ray _e28 = ray_17;
             Candidate _e30 = intersect_scene(_e28, false);
             if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_16;
+                Ray _e34 = ray_17;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_16;
+                Ray _e38 = ray_17;
                 vec3 _e39 = miss(_e38);
                 vec3 _e40 = through_medium(_e34, uintBitsToFloat(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = _group_0_binding_3_cs[_e30.slot];
-                Ray _e46 = ray_16;
+                Ray _e46 = ray_17;
                 Hit _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                uint _e56 = ray_16.depth;
+                uint _e56 = ray_17.depth;
                 uint _e60 = depth;
                 if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_16;
+                    Ray _e68 = ray_17;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_9 = min(min(_e70, 1u), MAX_SPAWN);
-                    if ((n_9 > 0u)) {
-                        Ray _e77 = ray_16;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_9, 0u);
+                    uint n_8 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_8 > 0u)) {
+                        Ray _e77 = ray_17;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_8, 0u);
                         i_3 = 0u;
                         bool loop_init_3 = true;
                         while(true) {
@@ -993,7 +997,7 @@ vec3 trace(Ray camera_ray) {
                             }
                             loop_init_3 = false;
                             uint _e88 = i_3;
-                            if ((_e88 >= n_9)) {
+                            if ((_e88 >= n_8)) {
                                 break;
                             }
                             uint _e91 = i_3;
@@ -1015,9 +1019,9 @@ vec3 trace(Ray camera_ray) {
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_16;
+                    Ray _e124 = ray_17;
                     vec3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0.0));
-                    Ray _e128 = ray_16;
+                    Ray _e128 = ray_17;
                     vec3 _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1049,13 +1053,13 @@ vec3 trace(Ray camera_ray) {
             uint i_4 = stack[min(top_1, 0u)].next;
             stack[min(top_1, 0u)].next = (i_4 + 1u);
             Ray parent = stack[min(top_1, 0u)].ray;
-            Hit hit_6 = stack[min(top_1, 0u)].hit;
+            Hit hit_7 = stack[min(top_1, 0u)].hit;
             vec3 dir_3 = stack[min(top_1, 0u)].dirs[min(i_4, 0u)];
             medium = parent.medium;
-            vec3 _e209 = spawn_origin(hit_6, dir_3);
+            vec3 _e209 = spawn_origin(hit_7, dir_3);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_16 = Ray(_e209, 0.0, dir_3, uintBitsToFloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_17 = Ray(_e209, 0.0, dir_3, uintBitsToFloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             uint _e224 = stack[min(top_1, 0u)].slot;
             GpuInstance inst_10 = _group_0_binding_3_cs[_e224];
@@ -1087,7 +1091,7 @@ void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s = 0u;
-    Ray ray_17 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_18 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_1 = _group_0_binding_1_cs;
     sum = vec3(0.0);
@@ -1109,13 +1113,13 @@ void render_pixel(uvec2 pixel_3) {
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_17 = _e23;
-        ray_17.depth = 0u;
-        ray_17.kind = RAY_CAMERA;
-        vec3 _e31 = ray_17.origin;
+        ray_18 = _e23;
+        ray_18.depth = 0u;
+        ray_18.kind = RAY_CAMERA;
+        vec3 _e31 = ray_18.origin;
         uint _e33 = medium_at(_e31, NO_HIT);
-        ray_17.medium = _e33;
-        Ray _e34 = ray_17;
+        ray_18.medium = _e33;
+        Ray _e34 = ray_18;
         vec3 _e35 = trace(_e34);
         bvec3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

@@ -438,9 +438,9 @@ metal::float3 hit_triangle(
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
     float t_2 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_4[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_5 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1);
+    bool hit_6 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_5 ? metal::float3(t_2, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_6 ? metal::float3(t_2, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -1017,6 +1017,14 @@ Lambert load_Lambert(
     return Lambert {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17))};
 }
 
+metal::float3 shading_normal(
+    Ray ray_12,
+    Hit hit_1
+) {
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_12.dir, hit_1.geometric_normal);
+    return metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
+}
+
 uint light_count_query(
     constant FrameUniforms& frame
 ) {
@@ -1079,8 +1087,8 @@ float shadow_query(
     }
     metal::float3 _e11 = n_4;
     metal::float3 _e12 = offset_origin(position, _e11, frame, nodes, _buffer_sizes);
-    Ray ray_18 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
-    Candidate _e23 = intersect_scene(ray_18, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    Ray ray_19 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
+    Candidate _e23 = intersect_scene(ray_19, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
     return (_e23.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
@@ -1158,8 +1166,8 @@ LightSample sample_light_query(
 
 metal::float3 lambert_shade(
     Lambert m,
-    Ray ray_12,
-    Hit hit_1,
+    Ray ray_13,
+    Hit hit_2,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1172,10 +1180,9 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_2 = {};
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_12.dir, hit_1.geometric_normal);
-    metal::float3 n_8 = metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
+    metal::float3 _e3 = shading_normal(ray_13, hit_2);
     color = metal::float3(0.0);
-    uint _e15 = light_count_query(frame);
+    uint _e8 = light_count_query(frame);
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
@@ -1183,28 +1190,28 @@ metal::float3 lambert_shade(
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e37 = i_2;
-            i_2 = _e37 + 1u;
+            uint _e30 = i_2;
+            i_2 = _e30 + 1u;
         }
         loop_init_2 = false;
-        uint _e17 = i_2;
-        if (_e17 >= _e15) {
+        uint _e10 = i_2;
+        if (_e10 >= _e8) {
             break;
         }
-        uint _e19 = i_2;
-        LightSample _e22 = sample_light_query(_e19, hit_1.position, hit_1.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        metal::float3 _e23 = color;
-        color = _e23 + (((m.albedo * metal::float3(INV_PI)) * _e22.radiance) * metal::float3(metal::max(metal::dot(n_8, _e22.dir), 0.0)));
+        uint _e12 = i_2;
+        LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e16 = color;
+        color = _e16 + (((m.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
     }
-    metal::float3 _e40 = color;
-    return _e40;
+    metal::float3 _e33 = color;
+    return _e33;
 }
 
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_7,
-    Ray ray_13,
-    Hit hit_2,
+    Ray ray_14,
+    Hit hit_3,
     metal::float3 secondary,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1217,12 +1224,12 @@ metal::float3 dispatch_closest_hit(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Lambert _e3 = load_Lambert(offset_7, params, _buffer_sizes);
-    metal::float3 _e4 = lambert_shade(_e3, ray_13, hit_2, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e4 = lambert_shade(_e3, ray_14, hit_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
     return _e4;
 }
 
 metal::float3 shade_direct(
-    Ray ray_14,
+    Ray ray_15,
     Candidate c_2,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1236,36 +1243,36 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_14, c_2, instances, triangles, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_15, c_2, instances, triangles, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
     return _e11;
 }
 
 void dispatch_secondary_rays(
     uint type_id_5,
     uint offset_8,
-    Ray ray_15,
-    Hit hit_3
+    Ray ray_16,
+    Hit hit_4
 ) {
     return;
 }
 
 metal::float3 spawn_origin(
-    Hit hit_4,
+    Hit hit_5,
     metal::float3 dir_1,
     constant FrameUniforms& frame,
     device type_9 const& nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 n_5 = {};
-    n_5 = hit_4.geometric_normal;
+    n_5 = hit_5.geometric_normal;
     metal::float3 _e4 = n_5;
     if (metal::dot(dir_1, _e4) < 0.0) {
         metal::float3 _e8 = n_5;
         n_5 = -(_e8);
     }
     metal::float3 _e11 = n_5;
-    metal::float3 _e12 = offset_origin(hit_4.position, _e11, frame, nodes, _buffer_sizes);
+    metal::float3 _e12 = offset_origin(hit_5.position, _e11, frame, nodes, _buffer_sizes);
     return _e12;
 }
 
@@ -1287,7 +1294,7 @@ metal::float3 trace(
 ) {
     type_16 stack = {};
     uint depth = {};
-    Ray ray_16 = {};
+    Ray ray_17 = {};
     metal::float3 value = {};
     bool have_value = {};
     bool pushed = {};
@@ -1308,7 +1315,7 @@ metal::float3 trace(
     }
     stack = type_16 {};
     depth = 0u;
-    ray_16 = camera_ray;
+    ray_17 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     uint2 loop_bound_5 = uint2(4294967295u);
@@ -1317,32 +1324,32 @@ metal::float3 trace(
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_16;
+            Ray _e28 = ray_17;
             Candidate _e30 = intersect_scene(_e28, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
             if (_e30.slot == NO_HIT) {
-                Ray _e34 = ray_16;
+                Ray _e34 = ray_17;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_16;
+                Ray _e38 = ray_17;
                 metal::float3 _e39 = miss(_e38, frame);
                 metal::float3 _e40 = through_medium(_e34, as_type<float>(_e36), _e39, instances, _buffer_sizes);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = instances[_e30.slot];
-                Ray _e46 = ray_16;
+                Ray _e46 = ray_17;
                 Hit _e47 = finish_hit(_e46, _e30, instances, triangles, attributes, _buffer_sizes);
                 pushed = false;
-                uint _e56 = ray_16.depth;
+                uint _e56 = ray_17.depth;
                 uint _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_16;
+                    Ray _e68 = ray_17;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_9 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
-                    if (n_9 > 0u) {
-                        Ray _e77 = ray_16;
-                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_9, 0u};
+                    uint n_8 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
+                    if (n_8 > 0u) {
+                        Ray _e77 = ray_17;
+                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_8, 0u};
                         i_3 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u);
                         bool loop_init_3 = true;
@@ -1355,7 +1362,7 @@ metal::float3 trace(
                             }
                             loop_init_3 = false;
                             uint _e88 = i_3;
-                            if (_e88 >= n_9) {
+                            if (_e88 >= n_8) {
                                 break;
                             }
                             uint _e91 = i_3;
@@ -1377,9 +1384,9 @@ metal::float3 trace(
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_16;
+                    Ray _e124 = ray_17;
                     metal::float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-                    Ray _e128 = ray_16;
+                    Ray _e128 = ray_17;
                     metal::float3 _e130 = through_medium(_e128, _e30.t, _e127, instances, _buffer_sizes);
                     value = _e130;
                     have_value = true;
@@ -1411,13 +1418,13 @@ metal::float3 trace(
             uint i_4 = stack.inner[metal::min(top_1, 0u)].next;
             stack.inner[metal::min(top_1, 0u)].next = i_4 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 0u)].ray;
-            Hit hit_6 = stack.inner[metal::min(top_1, 0u)].hit;
+            Hit hit_7 = stack.inner[metal::min(top_1, 0u)].hit;
             metal::float3 dir_3 = stack.inner[metal::min(top_1, 0u)].dirs.inner[metal::min(i_4, 0u)];
             medium = parent.medium;
-            metal::float3 _e209 = spawn_origin(hit_6, dir_3, frame, nodes, _buffer_sizes);
+            metal::float3 _e209 = spawn_origin(hit_7, dir_3, frame, nodes, _buffer_sizes);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_16 = Ray {_e209, 0.0, dir_3, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
+            ray_17 = Ray {_e209, 0.0, dir_3, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
         } else {
             uint _e224 = stack.inner[metal::min(top_1, 0u)].slot;
             GpuInstance inst_10 = instances[_e224];
@@ -1472,7 +1479,7 @@ void render_pixel(
     metal::float3 sum = {};
     uint bad = {};
     uint s = {};
-    Ray ray_17 = {};
+    Ray ray_18 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
     sum = metal::float3(0.0);
@@ -1497,13 +1504,13 @@ void render_pixel(
         uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
-        ray_17 = _e23;
-        ray_17.depth = 0u;
-        ray_17.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_17.origin;
+        ray_18 = _e23;
+        ray_18.depth = 0u;
+        ray_18.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_18.origin;
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, _buffer_sizes);
-        ray_17.medium = _e33;
-        Ray _e34 = ray_17;
+        ray_18.medium = _e33;
+        Ray _e34 = ray_18;
         metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {

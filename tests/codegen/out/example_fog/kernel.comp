@@ -357,9 +357,9 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
     float t_3 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_9 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
+    bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_9 ? vec3(t_3, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_10 ? vec3(t_3, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 Triangle load_triangle(uint slot_1) {
@@ -837,8 +837,8 @@ float shadow_query(vec3 position, vec3 normal, vec3 dir, float dist) {
     }
     vec3 _e11 = n_4;
     vec3 _e12 = offset_origin(position, _e11);
-    Ray ray_23 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    Candidate _e23 = intersect_scene(ray_23, true);
+    Ray ray_24 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    Candidate _e23 = intersect_scene(ray_24, true);
     return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
@@ -979,44 +979,48 @@ Lambert load_Lambert(uint offset_8) {
     return Lambert(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 lambert_shade(Lambert m_4, Ray ray_16, Hit hit_4) {
+vec3 shading_normal(Ray ray_16, Hit hit_4) {
+    vec3 ng = faceforward(hit_4.geometric_normal, ray_16.dir, hit_4.geometric_normal);
+    return faceforward(hit_4.normal, -(ng), hit_4.normal);
+}
+
+vec3 lambert_shade(Lambert m_4, Ray ray_17, Hit hit_5) {
     vec3 color = vec3(0.0);
     uint i_4 = 0u;
-    vec3 ng = faceforward(hit_4.geometric_normal, ray_16.dir, hit_4.geometric_normal);
-    vec3 n_8 = faceforward(hit_4.normal, -(ng), hit_4.normal);
+    vec3 _e3 = shading_normal(ray_17, hit_5);
     color = vec3(0.0);
-    uint _e15 = light_count_query();
+    uint _e8 = light_count_query();
     i_4 = 0u;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e37 = i_4;
-            i_4 = (_e37 + 1u);
+            uint _e30 = i_4;
+            i_4 = (_e30 + 1u);
         }
         loop_init_3 = false;
-        uint _e17 = i_4;
-        if ((_e17 >= _e15)) {
+        uint _e10 = i_4;
+        if ((_e10 >= _e8)) {
             break;
         }
-        uint _e19 = i_4;
-        LightSample _e22 = sample_light_query(_e19, hit_4.position, hit_4.geometric_normal);
-        vec3 _e23 = color;
-        color = (_e23 + (((m_4.albedo * vec3(INV_PI)) * _e22.radiance) * vec3(max(dot(n_8, _e22.dir), 0.0))));
+        uint _e12 = i_4;
+        LightSample _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal);
+        vec3 _e16 = color;
+        color = (_e16 + (((m_4.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0.0))));
     }
-    vec3 _e40 = color;
-    return _e40;
+    vec3 _e33 = color;
+    return _e33;
 }
 
-vec3 dispatch_closest_hit(uint type_id_5, uint offset_9, Ray ray_17, Hit hit_5, vec3 secondary_1) {
+vec3 dispatch_closest_hit(uint type_id_5, uint offset_9, Ray ray_18, Hit hit_6, vec3 secondary_1) {
     switch(type_id_5) {
         case 0u: {
             Fog _e5 = load_Fog(offset_9);
-            vec3 _e6 = fog_shade(_e5, ray_17, hit_5, secondary_1);
+            vec3 _e6 = fog_shade(_e5, ray_18, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_9);
-            vec3 _e8 = lambert_shade(_e7, ray_17, hit_5);
+            vec3 _e8 = lambert_shade(_e7, ray_18, hit_6);
             return _e8;
         }
         default: {
@@ -1026,10 +1030,10 @@ vec3 dispatch_closest_hit(uint type_id_5, uint offset_9, Ray ray_17, Hit hit_5, 
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_18, Candidate c_2) {
+vec3 shade_direct(Ray ray_19, Candidate c_2) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_2.slot];
-    Hit _e6 = finish_hit(ray_18, c_2);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_19, c_2);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, vec3(0.0));
     return _e11;
 }
 
@@ -1042,34 +1046,34 @@ void rt_spawn(vec3 dir_2, vec3 weight) {
     }
 }
 
-void fog_rays(Fog m_5, Ray ray_19, Hit hit_6) {
-    rt_spawn(ray_19.dir, vec3(1.0));
+void fog_rays(Fog m_5, Ray ray_20, Hit hit_7) {
+    rt_spawn(ray_20.dir, vec3(1.0));
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_20, Hit hit_7) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_21, Hit hit_8) {
     Fog _e3 = load_Fog(offset_10);
-    fog_rays(_e3, ray_20, hit_7);
+    fog_rays(_e3, ray_21, hit_8);
     return;
 }
 
-vec3 spawn_origin(Hit hit_8, vec3 dir_3) {
+vec3 spawn_origin(Hit hit_9, vec3 dir_3) {
     vec3 n_5 = vec3(0.0);
-    n_5 = hit_8.geometric_normal;
+    n_5 = hit_9.geometric_normal;
     vec3 _e4 = n_5;
     if ((dot(dir_3, _e4) < 0.0)) {
         vec3 _e8 = n_5;
         n_5 = -(_e8);
     }
     vec3 _e11 = n_5;
-    vec3 _e12 = offset_origin(hit_8.position, _e11);
+    vec3 _e12 = offset_origin(hit_9.position, _e11);
     return _e12;
 }
 
 vec3 trace(Ray camera_ray) {
     Frame stack[3] = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_21 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_22 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     bool pushed = false;
@@ -1092,38 +1096,38 @@ vec3 trace(Ray camera_ray) {
     }
     stack = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_21 = camera_ray;
+    ray_22 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     while(true) {
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_21;
+            Ray _e28 = ray_22;
             Candidate _e30 = intersect_scene(_e28, false);
             if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_21;
+                Ray _e34 = ray_22;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_21;
+                Ray _e38 = ray_22;
                 vec3 _e39 = miss(_e38);
                 vec3 _e40 = through_medium(_e34, uintBitsToFloat(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = _group_0_binding_3_cs[_e30.slot];
-                Ray _e46 = ray_21;
+                Ray _e46 = ray_22;
                 Hit _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                uint _e56 = ray_21.depth;
+                uint _e56 = ray_22.depth;
                 uint _e60 = depth;
                 if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_21;
+                    Ray _e68 = ray_22;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_9 = min(min(_e70, 1u), MAX_SPAWN);
-                    if ((n_9 > 0u)) {
-                        Ray _e77 = ray_21;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_9, 0u);
+                    uint n_8 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_8 > 0u)) {
+                        Ray _e77 = ray_22;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_8, 0u);
                         i_5 = 0u;
                         bool loop_init_4 = true;
                         while(true) {
@@ -1133,7 +1137,7 @@ vec3 trace(Ray camera_ray) {
                             }
                             loop_init_4 = false;
                             uint _e88 = i_5;
-                            if ((_e88 >= n_9)) {
+                            if ((_e88 >= n_8)) {
                                 break;
                             }
                             uint _e91 = i_5;
@@ -1155,9 +1159,9 @@ vec3 trace(Ray camera_ray) {
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_21;
+                    Ray _e124 = ray_22;
                     vec3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0.0));
-                    Ray _e128 = ray_21;
+                    Ray _e128 = ray_22;
                     vec3 _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1189,10 +1193,10 @@ vec3 trace(Ray camera_ray) {
             uint i_6 = stack[min(top_1, 2u)].next;
             stack[min(top_1, 2u)].next = (i_6 + 1u);
             Ray parent = stack[min(top_1, 2u)].ray;
-            Hit hit_10 = stack[min(top_1, 2u)].hit;
+            Hit hit_11 = stack[min(top_1, 2u)].hit;
             vec3 dir_5 = stack[min(top_1, 2u)].dirs[min(i_6, 0u)];
             medium = parent.medium;
-            if ((dot(dir_5, hit_10.geometric_normal) < 0.0)) {
+            if ((dot(dir_5, hit_11.geometric_normal) < 0.0)) {
                 uint _e217 = stack[min(top_1, 2u)].slot;
                 medium = (_e217 + 1u);
             } else {
@@ -1225,17 +1229,17 @@ vec3 trace(Ray camera_ray) {
                     }
                     bool _e281 = found;
                     if (!(_e281)) {
-                        vec3 _e283 = spawn_origin(hit_10, dir_5);
+                        vec3 _e283 = spawn_origin(hit_11, dir_5);
                         uint _e288 = stack[min(top_1, 2u)].slot;
                         uint _e289 = medium_at(_e283, _e288);
                         medium = _e289;
                     }
                 }
             }
-            vec3 _e290 = spawn_origin(hit_10, dir_5);
+            vec3 _e290 = spawn_origin(hit_11, dir_5);
             uint _e293 = F32_INF;
             uint _e299 = medium;
-            ray_21 = Ray(_e290, 0.0, dir_5, uintBitsToFloat(_e293), (parent.depth + 1u), RAY_SECONDARY, _e299);
+            ray_22 = Ray(_e290, 0.0, dir_5, uintBitsToFloat(_e293), (parent.depth + 1u), RAY_SECONDARY, _e299);
         } else {
             uint _e305 = stack[min(top_1, 2u)].slot;
             GpuInstance inst_10 = _group_0_binding_3_cs[_e305];
@@ -1267,7 +1271,7 @@ void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s_1 = 0u;
-    Ray ray_22 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_23 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_1 = _group_0_binding_1_cs;
     sum = vec3(0.0);
@@ -1289,13 +1293,13 @@ void render_pixel(uvec2 pixel_3) {
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        vec3 _e31 = ray_22.origin;
+        ray_23 = _e23;
+        ray_23.depth = 0u;
+        ray_23.kind = RAY_CAMERA;
+        vec3 _e31 = ray_23.origin;
         uint _e33 = medium_at(_e31, NO_HIT);
-        ray_22.medium = _e33;
-        Ray _e34 = ray_22;
+        ray_23.medium = _e33;
+        Ray _e34 = ray_23;
         vec3 _e35 = trace(_e34);
         bvec3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

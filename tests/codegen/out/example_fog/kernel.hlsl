@@ -370,16 +370,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
     float aspect = (size.x / size.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_23 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_23;
+    const Ray ray_24 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_24;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
-    const Ray ray_24 = _e4;
-    return ray_24;
+    const Ray ray_25 = _e4;
+    return ray_25;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -408,8 +408,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o_1), dot(inst.world_to_object_1_, o_1), dot(inst.world_to_object_2_, o_1));
     r.dir = float3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
-    const Ray ray_25 = _e25;
-    return ray_25;
+    const Ray ray_26 = _e25;
+    return ray_26;
 }
 
 float3 safe_inverse(float3 d)
@@ -470,9 +470,9 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
     float t_3 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_4[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_9 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
+    bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_9 ? float3(t_3, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_10 ? float3(t_3, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 Triangle ConstructTriangle(float3 arg0, float3 arg1, float3 arg2) {
@@ -605,8 +605,8 @@ Hit finish_hit(Ray ray_2, Candidate c)
     float3 _e135 = hit.geometric_normal;
     hit.front_face = (dot(ray_2.dir, _e135) < 0.0);
     Hit _e139 = hit;
-    const Hit hit_10 = _e139;
-    return hit_10;
+    const Hit hit_11 = _e139;
+    return hit_11;
 }
 
 Fog ConstructFog(float arg0, float3 arg1, uint arg2) {
@@ -1081,8 +1081,8 @@ float shadow_query(float3 position, float3 normal, float3 dir, float dist)
     }
     float3 _e11 = n_4;
     const float3 _e12 = offset_origin(position, _e11);
-    Ray ray_26 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    const Candidate _e23 = intersect_scene(ray_26, true);
+    Ray ray_27 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    const Candidate _e23 = intersect_scene(ray_27, true);
     return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
@@ -1258,15 +1258,20 @@ Lambert load_Lambert(uint offset_8)
     return lambert;
 }
 
-float3 lambert_shade(Lambert m_4, Ray ray_16, Hit hit_4)
+float3 shading_normal(Ray ray_16, Hit hit_4)
+{
+    float3 ng = faceforward(hit_4.geometric_normal, ray_16.dir, hit_4.geometric_normal);
+    return faceforward(hit_4.normal, -(ng), hit_4.normal);
+}
+
+float3 lambert_shade(Lambert m_4, Ray ray_17, Hit hit_5)
 {
     float3 color = (float3)0;
     uint i_4 = (uint)0;
 
-    float3 ng = faceforward(hit_4.geometric_normal, ray_16.dir, hit_4.geometric_normal);
-    float3 n_8 = faceforward(hit_4.normal, -(ng), hit_4.normal);
+    const float3 _e3 = shading_normal(ray_17, hit_5);
     color = (0.0).xxx;
-    const uint _e15 = light_count_query();
+    const uint _e8 = light_count_query();
     i_4 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
@@ -1274,34 +1279,34 @@ float3 lambert_shade(Lambert m_4, Ray ray_16, Hit hit_4)
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e37 = i_4;
-            i_4 = (_e37 + 1u);
+            uint _e30 = i_4;
+            i_4 = (_e30 + 1u);
         }
         loop_init_3 = false;
-        uint _e17 = i_4;
-        if ((_e17 >= _e15)) {
+        uint _e10 = i_4;
+        if ((_e10 >= _e8)) {
             break;
         }
-        uint _e19 = i_4;
-        const LightSample _e22 = sample_light_query(_e19, hit_4.position, hit_4.geometric_normal);
-        float3 _e23 = color;
-        color = (_e23 + (((m_4.albedo * (INV_PI).xxx) * _e22.radiance) * (max(dot(n_8, _e22.dir), 0.0)).xxx));
+        uint _e12 = i_4;
+        const LightSample _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal);
+        float3 _e16 = color;
+        color = (_e16 + (((m_4.albedo * (INV_PI).xxx) * _e15.radiance) * (max(dot(_e3, _e15.dir), 0.0)).xxx));
     }
-    float3 _e40 = color;
-    return _e40;
+    float3 _e33 = color;
+    return _e33;
 }
 
-float3 dispatch_closest_hit(uint type_id_5, uint offset_9, Ray ray_17, Hit hit_5, float3 secondary_1)
+float3 dispatch_closest_hit(uint type_id_5, uint offset_9, Ray ray_18, Hit hit_6, float3 secondary_1)
 {
     switch(type_id_5) {
         case 0u: {
             const Fog _e5 = load_Fog(offset_9);
-            const float3 _e6 = fog_shade(_e5, ray_17, hit_5, secondary_1);
+            const float3 _e6 = fog_shade(_e5, ray_18, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             const Lambert _e7 = load_Lambert(offset_9);
-            const float3 _e8 = lambert_shade(_e7, ray_17, hit_5);
+            const float3 _e8 = lambert_shade(_e7, ray_18, hit_6);
             return _e8;
         }
         default: {
@@ -1311,11 +1316,11 @@ float3 dispatch_closest_hit(uint type_id_5, uint offset_9, Ray ray_17, Hit hit_5
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_18, Candidate c_2)
+float3 shade_direct(Ray ray_19, Candidate c_2)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_18, c_2);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_19, c_2);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, (0.0).xxx);
     return _e11;
 }
 
@@ -1329,31 +1334,31 @@ void rt_spawn(float3 dir_2, float3 weight)
     }
 }
 
-void fog_rays(Fog m_5, Ray ray_19, Hit hit_6)
+void fog_rays(Fog m_5, Ray ray_20, Hit hit_7)
 {
-    rt_spawn(ray_19.dir, (1.0).xxx);
+    rt_spawn(ray_20.dir, (1.0).xxx);
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_20, Hit hit_7)
+void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_21, Hit hit_8)
 {
     const Fog _e3 = load_Fog(offset_10);
-    fog_rays(_e3, ray_20, hit_7);
+    fog_rays(_e3, ray_21, hit_8);
     return;
 }
 
-float3 spawn_origin(Hit hit_8, float3 dir_3)
+float3 spawn_origin(Hit hit_9, float3 dir_3)
 {
     float3 n_5 = (float3)0;
 
-    n_5 = hit_8.geometric_normal;
+    n_5 = hit_9.geometric_normal;
     float3 _e4 = n_5;
     if ((dot(dir_3, _e4) < 0.0)) {
         float3 _e8 = n_5;
         n_5 = -(_e8);
     }
     float3 _e11 = n_5;
-    const float3 _e12 = offset_origin(hit_8.position, _e11);
+    const float3 _e12 = offset_origin(hit_9.position, _e11);
     return _e12;
 }
 
@@ -1384,7 +1389,7 @@ float3 trace(Ray camera_ray)
 {
     Frame stack[3] = (Frame[3])0;
     uint depth = (uint)0;
-    Ray ray_21 = (Ray)0;
+    Ray ray_22 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     bool pushed = (bool)0;
@@ -1408,7 +1413,7 @@ float3 trace(Ray camera_ray)
     }
     stack = ZeroValuearray3_Frame_();
     depth = 0u;
-    ray_21 = camera_ray;
+    ray_22 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
@@ -1417,32 +1422,32 @@ float3 trace(Ray camera_ray)
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_21;
+            Ray _e28 = ray_22;
             const Candidate _e30 = intersect_scene(_e28, false);
             if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_21;
+                Ray _e34 = ray_22;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_21;
+                Ray _e38 = ray_22;
                 const float3 _e39 = miss(_e38);
                 const float3 _e40 = through_medium(_e34, asfloat(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(_e30.slot*128+0)), asfloat(instances.Load4(_e30.slot*128+16)), asfloat(instances.Load4(_e30.slot*128+32)), asfloat(instances.Load4(_e30.slot*128+48)), asfloat(instances.Load4(_e30.slot*128+64)), asfloat(instances.Load4(_e30.slot*128+80)), asuint(instances.Load(_e30.slot*128+96)), asuint(instances.Load(_e30.slot*128+100)), asuint(instances.Load(_e30.slot*128+104)), asuint(instances.Load(_e30.slot*128+108)), asuint(instances.Load(_e30.slot*128+112)), asuint(instances.Load(_e30.slot*128+116)), asuint(instances.Load(_e30.slot*128+120)), asuint(instances.Load(_e30.slot*128+124)));
-                Ray _e46 = ray_21;
+                Ray _e46 = ray_22;
                 const Hit _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                uint _e56 = ray_21.depth;
+                uint _e56 = ray_22.depth;
                 uint _e60 = depth;
                 if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_21;
+                    Ray _e68 = ray_22;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_9 = min(min(_e70, 1u), MAX_SPAWN);
-                    if ((n_9 > 0u)) {
-                        Ray _e77 = ray_21;
-                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_9, 0u);
+                    uint n_8 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_8 > 0u)) {
+                        Ray _e77 = ray_22;
+                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_8, 0u);
                         i_5 = 0u;
                         uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
                         bool loop_init_4 = true;
@@ -1455,7 +1460,7 @@ float3 trace(Ray camera_ray)
                             }
                             loop_init_4 = false;
                             uint _e88 = i_5;
-                            if ((_e88 >= n_9)) {
+                            if ((_e88 >= n_8)) {
                                 break;
                             }
                             uint _e91 = i_5;
@@ -1477,9 +1482,9 @@ float3 trace(Ray camera_ray)
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_21;
+                    Ray _e124 = ray_22;
                     const float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, (0.0).xxx);
-                    Ray _e128 = ray_21;
+                    Ray _e128 = ray_22;
                     const float3 _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1511,10 +1516,10 @@ float3 trace(Ray camera_ray)
             uint i_6 = stack[min(uint(min(top_1, 2u)), 2u)].next;
             stack[min(uint(min(top_1, 2u)), 2u)].next = (i_6 + 1u);
             Ray parent = stack[min(uint(min(top_1, 2u)), 2u)].ray;
-            Hit hit_11 = stack[min(uint(min(top_1, 2u)), 2u)].hit;
+            Hit hit_12 = stack[min(uint(min(top_1, 2u)), 2u)].hit;
             float3 dir_5 = stack[min(uint(min(top_1, 2u)), 2u)].dirs[min(uint(min(i_6, 0u)), 0u)];
             medium = parent.medium;
-            if ((dot(dir_5, hit_11.geometric_normal) < 0.0)) {
+            if ((dot(dir_5, hit_12.geometric_normal) < 0.0)) {
                 uint _e217 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
                 medium = (_e217 + 1u);
             } else {
@@ -1550,17 +1555,17 @@ float3 trace(Ray camera_ray)
                     }
                     bool _e281 = found;
                     if (!(_e281)) {
-                        const float3 _e283 = spawn_origin(hit_11, dir_5);
+                        const float3 _e283 = spawn_origin(hit_12, dir_5);
                         uint _e288 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
                         const uint _e289 = medium_at(_e283, _e288);
                         medium = _e289;
                     }
                 }
             }
-            const float3 _e290 = spawn_origin(hit_11, dir_5);
+            const float3 _e290 = spawn_origin(hit_12, dir_5);
             uint _e293 = F32_INF;
             uint _e299 = medium;
-            ray_21 = ConstructRay(_e290, 0.0, dir_5, asfloat(_e293), (parent.depth + 1u), RAY_SECONDARY, _e299);
+            ray_22 = ConstructRay(_e290, 0.0, dir_5, asfloat(_e293), (parent.depth + 1u), RAY_SECONDARY, _e299);
         } else {
             uint _e305 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
             GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e305*128+0)), asfloat(instances.Load4(_e305*128+16)), asfloat(instances.Load4(_e305*128+32)), asfloat(instances.Load4(_e305*128+48)), asfloat(instances.Load4(_e305*128+64)), asfloat(instances.Load4(_e305*128+80)), asuint(instances.Load(_e305*128+96)), asuint(instances.Load(_e305*128+100)), asuint(instances.Load(_e305*128+104)), asuint(instances.Load(_e305*128+108)), asuint(instances.Load(_e305*128+112)), asuint(instances.Load(_e305*128+116)), asuint(instances.Load(_e305*128+120)), asuint(instances.Load(_e305*128+124)));
@@ -1595,7 +1600,7 @@ void render_pixel(uint2 pixel_3)
     float3 sum = (float3)0;
     uint bad = (uint)0;
     uint s_1 = (uint)0;
-    Ray ray_22 = (Ray)0;
+    Ray ray_23 = (Ray)0;
 
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
@@ -1621,13 +1626,13 @@ void render_pixel(uint2 pixel_3)
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        float3 _e31 = ray_22.origin;
+        ray_23 = _e23;
+        ray_23.depth = 0u;
+        ray_23.kind = RAY_CAMERA;
+        float3 _e31 = ray_23.origin;
         const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_22.medium = _e33;
-        Ray _e34 = ray_22;
+        ray_23.medium = _e33;
+        Ray _e34 = ray_23;
         const float3 _e35 = trace(_e34);
         const bool3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

@@ -446,9 +446,9 @@ metal::float3 hit_triangle(
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
     float t_3 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_4[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_9 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1);
+    bool hit_10 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_9 ? metal::float3(t_3, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_10 ? metal::float3(t_3, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 Triangle load_triangle(
@@ -1098,8 +1098,8 @@ float shadow_query(
     }
     metal::float3 _e11 = n_4;
     metal::float3 _e12 = offset_origin(position, _e11, frame, nodes, _buffer_sizes);
-    Ray ray_23 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
-    Candidate _e23 = intersect_scene(ray_23, true, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+    Ray ray_24 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
+    Candidate _e23 = intersect_scene(ray_24, true, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
     return (_e23.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
@@ -1363,10 +1363,18 @@ Lambert load_Lambert(
     return Lambert {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17))};
 }
 
+metal::float3 shading_normal(
+    Ray ray_16,
+    Hit hit_4
+) {
+    metal::float3 ng = metal::faceforward(hit_4.geometric_normal, ray_16.dir, hit_4.geometric_normal);
+    return metal::faceforward(hit_4.normal, -(ng), hit_4.normal);
+}
+
 metal::float3 lambert_shade(
     Lambert m_4,
-    Ray ray_16,
-    Hit hit_4,
+    Ray ray_17,
+    Hit hit_5,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1380,10 +1388,9 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_4 = {};
-    metal::float3 ng = metal::faceforward(hit_4.geometric_normal, ray_16.dir, hit_4.geometric_normal);
-    metal::float3 n_8 = metal::faceforward(hit_4.normal, -(ng), hit_4.normal);
+    metal::float3 _e3 = shading_normal(ray_17, hit_5);
     color = metal::float3(0.0);
-    uint _e15 = light_count_query(frame);
+    uint _e8 = light_count_query(frame);
     i_4 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_3 = true;
@@ -1391,28 +1398,28 @@ metal::float3 lambert_shade(
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e37 = i_4;
-            i_4 = _e37 + 1u;
+            uint _e30 = i_4;
+            i_4 = _e30 + 1u;
         }
         loop_init_3 = false;
-        uint _e17 = i_4;
-        if (_e17 >= _e15) {
+        uint _e10 = i_4;
+        if (_e10 >= _e8) {
             break;
         }
-        uint _e19 = i_4;
-        LightSample _e22 = sample_light_query(_e19, hit_4.position, hit_4.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
-        metal::float3 _e23 = color;
-        color = _e23 + (((m_4.albedo * metal::float3(INV_PI)) * _e22.radiance) * metal::float3(metal::max(metal::dot(n_8, _e22.dir), 0.0)));
+        uint _e12 = i_4;
+        LightSample _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e16 = color;
+        color = _e16 + (((m_4.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
     }
-    metal::float3 _e40 = color;
-    return _e40;
+    metal::float3 _e33 = color;
+    return _e33;
 }
 
 metal::float3 dispatch_closest_hit(
     uint type_id_5,
     uint offset_9,
-    Ray ray_17,
-    Hit hit_5,
+    Ray ray_18,
+    Hit hit_6,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1428,12 +1435,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_5) {
         case 0u: {
             Fog _e5 = load_Fog(offset_9, params, _buffer_sizes);
-            metal::float3 _e6 = fog_shade(_e5, ray_17, hit_5, secondary_1);
+            metal::float3 _e6 = fog_shade(_e5, ray_18, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_9, params, _buffer_sizes);
-            metal::float3 _e8 = lambert_shade(_e7, ray_17, hit_5, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e8 = lambert_shade(_e7, ray_18, hit_6, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
             return _e8;
         }
         default: {
@@ -1444,7 +1451,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_18,
+    Ray ray_19,
     Candidate c_2,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1458,8 +1465,8 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_18, c_2, instances, triangles, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_19, c_2, instances, triangles, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e11;
 }
 
@@ -1480,21 +1487,21 @@ void rt_spawn(
 
 void fog_rays(
     Fog m_5,
-    Ray ray_19,
-    Hit hit_6,
+    Ray ray_20,
+    Hit hit_7,
     thread type_15& spawn_dirs,
     thread type_15& spawn_weights,
     thread uint& spawn_count
 ) {
-    rt_spawn(ray_19.dir, metal::float3(1.0), spawn_dirs, spawn_weights, spawn_count);
+    rt_spawn(ray_20.dir, metal::float3(1.0), spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_10,
-    Ray ray_20,
-    Hit hit_7,
+    Ray ray_21,
+    Hit hit_8,
     device type_4 const& params,
     thread type_15& spawn_dirs,
     thread type_15& spawn_weights,
@@ -1502,26 +1509,26 @@ void dispatch_secondary_rays(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Fog _e3 = load_Fog(offset_10, params, _buffer_sizes);
-    fog_rays(_e3, ray_20, hit_7, spawn_dirs, spawn_weights, spawn_count);
+    fog_rays(_e3, ray_21, hit_8, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
 metal::float3 spawn_origin(
-    Hit hit_8,
+    Hit hit_9,
     metal::float3 dir_3,
     constant FrameUniforms& frame,
     device type_9 const& nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 n_5 = {};
-    n_5 = hit_8.geometric_normal;
+    n_5 = hit_9.geometric_normal;
     metal::float3 _e4 = n_5;
     if (metal::dot(dir_3, _e4) < 0.0) {
         metal::float3 _e8 = n_5;
         n_5 = -(_e8);
     }
     metal::float3 _e11 = n_5;
-    metal::float3 _e12 = offset_origin(hit_8.position, _e11, frame, nodes, _buffer_sizes);
+    metal::float3 _e12 = offset_origin(hit_9.position, _e11, frame, nodes, _buffer_sizes);
     return _e12;
 }
 
@@ -1544,7 +1551,7 @@ metal::float3 trace(
 ) {
     type_16 stack = {};
     uint depth = {};
-    Ray ray_21 = {};
+    Ray ray_22 = {};
     metal::float3 value = {};
     bool have_value = {};
     bool pushed = {};
@@ -1567,7 +1574,7 @@ metal::float3 trace(
     }
     stack = type_16 {};
     depth = 0u;
-    ray_21 = camera_ray;
+    ray_22 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     uint2 loop_bound_6 = uint2(4294967295u);
@@ -1576,32 +1583,32 @@ metal::float3 trace(
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_21;
+            Ray _e28 = ray_22;
             Candidate _e30 = intersect_scene(_e28, false, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
             if (_e30.slot == NO_HIT) {
-                Ray _e34 = ray_21;
+                Ray _e34 = ray_22;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_21;
+                Ray _e38 = ray_22;
                 metal::float3 _e39 = miss(_e38, frame);
                 metal::float3 _e40 = through_medium(_e34, as_type<float>(_e36), _e39, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = instances[_e30.slot];
-                Ray _e46 = ray_21;
+                Ray _e46 = ray_22;
                 Hit _e47 = finish_hit(_e46, _e30, instances, triangles, attributes, _buffer_sizes);
                 pushed = false;
-                uint _e56 = ray_21.depth;
+                uint _e56 = ray_22.depth;
                 uint _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_21;
+                    Ray _e68 = ray_22;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
                     uint _e70 = spawn_count;
-                    uint n_9 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
-                    if (n_9 > 0u) {
-                        Ray _e77 = ray_21;
-                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_9, 0u};
+                    uint n_8 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
+                    if (n_8 > 0u) {
+                        Ray _e77 = ray_22;
+                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_8, 0u};
                         i_5 = 0u;
                         uint2 loop_bound_7 = uint2(4294967295u);
                         bool loop_init_4 = true;
@@ -1614,7 +1621,7 @@ metal::float3 trace(
                             }
                             loop_init_4 = false;
                             uint _e88 = i_5;
-                            if (_e88 >= n_9) {
+                            if (_e88 >= n_8) {
                                 break;
                             }
                             uint _e91 = i_5;
@@ -1636,9 +1643,9 @@ metal::float3 trace(
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_21;
+                    Ray _e124 = ray_22;
                     metal::float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
-                    Ray _e128 = ray_21;
+                    Ray _e128 = ray_22;
                     metal::float3 _e130 = through_medium(_e128, _e30.t, _e127, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
                     value = _e130;
                     have_value = true;
@@ -1670,10 +1677,10 @@ metal::float3 trace(
             uint i_6 = stack.inner[metal::min(top_1, 2u)].next;
             stack.inner[metal::min(top_1, 2u)].next = i_6 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 2u)].ray;
-            Hit hit_10 = stack.inner[metal::min(top_1, 2u)].hit;
+            Hit hit_11 = stack.inner[metal::min(top_1, 2u)].hit;
             metal::float3 dir_5 = stack.inner[metal::min(top_1, 2u)].dirs.inner[metal::min(i_6, 0u)];
             medium = parent.medium;
-            if (metal::dot(dir_5, hit_10.geometric_normal) < 0.0) {
+            if (metal::dot(dir_5, hit_11.geometric_normal) < 0.0) {
                 uint _e217 = stack.inner[metal::min(top_1, 2u)].slot;
                 medium = _e217 + 1u;
             } else {
@@ -1709,17 +1716,17 @@ metal::float3 trace(
                     }
                     bool _e281 = found;
                     if (!(_e281)) {
-                        metal::float3 _e283 = spawn_origin(hit_10, dir_5, frame, nodes, _buffer_sizes);
+                        metal::float3 _e283 = spawn_origin(hit_11, dir_5, frame, nodes, _buffer_sizes);
                         uint _e288 = stack.inner[metal::min(top_1, 2u)].slot;
                         uint _e289 = medium_at(_e283, _e288, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, _buffer_sizes);
                         medium = _e289;
                     }
                 }
             }
-            metal::float3 _e290 = spawn_origin(hit_10, dir_5, frame, nodes, _buffer_sizes);
+            metal::float3 _e290 = spawn_origin(hit_11, dir_5, frame, nodes, _buffer_sizes);
             uint _e293 = F32_INF;
             uint _e299 = medium;
-            ray_21 = Ray {_e290, 0.0, dir_5, as_type<float>(_e293), parent.depth + 1u, RAY_SECONDARY, _e299};
+            ray_22 = Ray {_e290, 0.0, dir_5, as_type<float>(_e293), parent.depth + 1u, RAY_SECONDARY, _e299};
         } else {
             uint _e305 = stack.inner[metal::min(top_1, 2u)].slot;
             GpuInstance inst_10 = instances[_e305];
@@ -1774,7 +1781,7 @@ void render_pixel(
     metal::float3 sum = {};
     uint bad = {};
     uint s_1 = {};
-    Ray ray_22 = {};
+    Ray ray_23 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
     sum = metal::float3(0.0);
@@ -1799,13 +1806,13 @@ void render_pixel(
         uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_22.origin;
+        ray_23 = _e23;
+        ray_23.depth = 0u;
+        ray_23.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_23.origin;
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, _buffer_sizes);
-        ray_22.medium = _e33;
-        Ray _e34 = ray_22;
+        ray_23.medium = _e33;
+        Ray _e34 = ray_23;
         metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {

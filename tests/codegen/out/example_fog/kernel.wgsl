@@ -363,9 +363,9 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
     let t_3 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
-    let hit_9 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
+    let hit_10 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_3, (v_1 * rcp), (w * rcp)), hit_9);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_3, (v_1 * rcp), (w * rcp)), hit_10);
 }
 
 fn load_triangle(slot_1: u32) -> Triangle {
@@ -846,8 +846,8 @@ fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f3
     }
     let _e11 = n_4;
     let _e12 = offset_origin(position, _e11);
-    let ray_23 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
-    let _e23 = intersect_scene(ray_23, true);
+    let ray_24 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
+    let _e23 = intersect_scene(ray_24, true);
     return select(1f, 0f, (_e23.slot != NO_HIT));
 }
 
@@ -989,43 +989,47 @@ fn load_Lambert(offset_8: u32) -> Lambert {
     return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn lambert_shade(m_4: Lambert, ray_16: Ray, hit_4: Hit) -> vec3<f32> {
+fn shading_normal(ray_16: Ray, hit_4: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_4.geometric_normal, ray_16.dir, hit_4.geometric_normal);
+    return faceForward(hit_4.normal, -(ng), hit_4.normal);
+}
+
+fn lambert_shade(m_4: Lambert, ray_17: Ray, hit_5: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_4: u32;
 
-    let ng = faceForward(hit_4.geometric_normal, ray_16.dir, hit_4.geometric_normal);
-    let n_8 = faceForward(hit_4.normal, -(ng), hit_4.normal);
+    let _e3 = shading_normal(ray_17, hit_5);
     color = vec3(0f);
-    let _e15 = light_count_query();
+    let _e8 = light_count_query();
     i_4 = 0u;
     loop {
-        let _e17 = i_4;
-        if (_e17 >= _e15) {
+        let _e10 = i_4;
+        if (_e10 >= _e8) {
             break;
         }
-        let _e19 = i_4;
-        let _e22 = sample_light_query(_e19, hit_4.position, hit_4.geometric_normal);
-        let _e23 = color;
-        color = (_e23 + (((m_4.albedo * vec3(INV_PI)) * _e22.radiance) * vec3(max(dot(n_8, _e22.dir), 0f))));
+        let _e12 = i_4;
+        let _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal);
+        let _e16 = color;
+        color = (_e16 + (((m_4.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0f))));
         continuing {
-            let _e37 = i_4;
-            i_4 = (_e37 + 1u);
+            let _e30 = i_4;
+            i_4 = (_e30 + 1u);
         }
     }
-    let _e40 = color;
-    return _e40;
+    let _e33 = color;
+    return _e33;
 }
 
-fn dispatch_closest_hit(type_id_5: u32, offset_9: u32, ray_17: Ray, hit_5: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_5: u32, offset_9: u32, ray_18: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     switch type_id_5 {
         case 0u: {
             let _e5 = load_Fog(offset_9);
-            let _e6 = fog_shade(_e5, ray_17, hit_5, secondary_1);
+            let _e6 = fog_shade(_e5, ray_18, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             let _e7 = load_Lambert(offset_9);
-            let _e8 = lambert_shade(_e7, ray_17, hit_5);
+            let _e8 = lambert_shade(_e7, ray_18, hit_6);
             return _e8;
         }
         default: {
@@ -1034,10 +1038,10 @@ fn dispatch_closest_hit(type_id_5: u32, offset_9: u32, ray_17: Ray, hit_5: Hit, 
     return vec3<f32>();
 }
 
-fn shade_direct(ray_18: Ray, c_2: Candidate) -> vec3<f32> {
+fn shade_direct(ray_19: Ray, c_2: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_2.slot];
-    let _e6 = finish_hit(ray_18, c_2);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_19, c_2);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, vec3(0f));
     return _e11;
 }
 
@@ -1050,35 +1054,35 @@ fn rt_spawn(dir_2: vec3<f32>, weight: vec3<f32>) {
     }
 }
 
-fn fog_rays(m_5: Fog, ray_19: Ray, hit_6: Hit) {
-    rt_spawn(ray_19.dir, vec3(1f));
+fn fog_rays(m_5: Fog, ray_20: Ray, hit_7: Hit) {
+    rt_spawn(ray_20.dir, vec3(1f));
     return;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_10: u32, ray_20: Ray, hit_7: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_10: u32, ray_21: Ray, hit_8: Hit) {
     let _e3 = load_Fog(offset_10);
-    fog_rays(_e3, ray_20, hit_7);
+    fog_rays(_e3, ray_21, hit_8);
     return;
 }
 
-fn spawn_origin(hit_8: Hit, dir_3: vec3<f32>) -> vec3<f32> {
+fn spawn_origin(hit_9: Hit, dir_3: vec3<f32>) -> vec3<f32> {
     var n_5: vec3<f32>;
 
-    n_5 = hit_8.geometric_normal;
+    n_5 = hit_9.geometric_normal;
     let _e4 = n_5;
     if (dot(dir_3, _e4) < 0f) {
         let _e8 = n_5;
         n_5 = -(_e8);
     }
     let _e11 = n_5;
-    let _e12 = offset_origin(hit_8.position, _e11);
+    let _e12 = offset_origin(hit_9.position, _e11);
     return _e12;
 }
 
 fn trace(camera_ray: Ray) -> vec3<f32> {
     var stack: array<Frame, 3>;
     var depth: u32;
-    var ray_21: Ray;
+    var ray_22: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var pushed: bool;
@@ -1102,42 +1106,42 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 3>();
     depth = 0u;
-    ray_21 = camera_ray;
+    ray_22 = camera_ray;
     value = vec3(0f);
     have_value = false;
     loop {
         let _e26 = have_value;
         if !(_e26) {
-            let _e28 = ray_21;
+            let _e28 = ray_22;
             let _e30 = intersect_scene(_e28, false);
             if (_e30.slot == NO_HIT) {
-                let _e34 = ray_21;
+                let _e34 = ray_22;
                 let _e36 = F32_INF;
-                let _e38 = ray_21;
+                let _e38 = ray_22;
                 let _e39 = miss(_e38);
                 let _e40 = through_medium(_e34, bitcast<f32>(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 let inst_9 = instances[_e30.slot];
-                let _e46 = ray_21;
+                let _e46 = ray_22;
                 let _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                let _e56 = ray_21.depth;
+                let _e56 = ray_22.depth;
                 let _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    let _e68 = ray_21;
+                    let _e68 = ray_22;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     let _e70 = spawn_count;
-                    let n_9 = min(min(_e70, 1u), MAX_SPAWN);
-                    if (n_9 > 0u) {
-                        let _e77 = ray_21;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_9, 0u);
+                    let n_8 = min(min(_e70, 1u), MAX_SPAWN);
+                    if (n_8 > 0u) {
+                        let _e77 = ray_22;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
                         i_5 = 0u;
                         loop {
                             let _e88 = i_5;
-                            if (_e88 >= n_9) {
+                            if (_e88 >= n_8) {
                                 break;
                             }
                             let _e91 = i_5;
@@ -1163,9 +1167,9 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 }
                 let _e120 = pushed;
                 if !(_e120) {
-                    let _e124 = ray_21;
+                    let _e124 = ray_22;
                     let _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0f));
-                    let _e128 = ray_21;
+                    let _e128 = ray_22;
                     let _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1197,10 +1201,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let i_6 = stack[min(top_1, 2u)].next;
             stack[min(top_1, 2u)].next = (i_6 + 1u);
             let parent = stack[min(top_1, 2u)].ray;
-            let hit_10 = stack[min(top_1, 2u)].hit;
+            let hit_11 = stack[min(top_1, 2u)].hit;
             let dir_5 = stack[min(top_1, 2u)].dirs[min(i_6, 0u)];
             medium = parent.medium;
-            if (dot(dir_5, hit_10.geometric_normal) < 0f) {
+            if (dot(dir_5, hit_11.geometric_normal) < 0f) {
                 let _e217 = stack[min(top_1, 2u)].slot;
                 medium = (_e217 + 1u);
             } else {
@@ -1233,17 +1237,17 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                     }
                     let _e281 = found;
                     if !(_e281) {
-                        let _e283 = spawn_origin(hit_10, dir_5);
+                        let _e283 = spawn_origin(hit_11, dir_5);
                         let _e288 = stack[min(top_1, 2u)].slot;
                         let _e289 = medium_at(_e283, _e288);
                         medium = _e289;
                     }
                 }
             }
-            let _e290 = spawn_origin(hit_10, dir_5);
+            let _e290 = spawn_origin(hit_11, dir_5);
             let _e293 = F32_INF;
             let _e299 = medium;
-            ray_21 = Ray(_e290, 0f, dir_5, bitcast<f32>(_e293), (parent.depth + 1u), RAY_SECONDARY, _e299);
+            ray_22 = Ray(_e290, 0f, dir_5, bitcast<f32>(_e293), (parent.depth + 1u), RAY_SECONDARY, _e299);
         } else {
             let _e305 = stack[min(top_1, 2u)].slot;
             let inst_10 = instances[_e305];
@@ -1275,7 +1279,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s_1: u32;
-    var ray_22: Ray;
+    var ray_23: Ray;
 
     let frame_5 = frame;
     let tile_1 = tile;
@@ -1292,13 +1296,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
         let sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        let _e31 = ray_22.origin;
+        ray_23 = _e23;
+        ray_23.depth = 0u;
+        ray_23.kind = RAY_CAMERA;
+        let _e31 = ray_23.origin;
         let _e33 = medium_at(_e31, NO_HIT);
-        ray_22.medium = _e33;
-        let _e34 = ray_22;
+        ray_23.medium = _e33;
+        let _e34 = ray_23;
         let _e35 = trace(_e34);
         let _e36 = is_finite_vec3f(_e35);
         if all(_e36) {

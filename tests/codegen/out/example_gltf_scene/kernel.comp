@@ -384,9 +384,9 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
     float t_4 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_9 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
+    bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_9 ? vec3(t_4, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_10 ? vec3(t_4, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 Triangle load_triangle(uint slot_1) {
@@ -942,6 +942,11 @@ vec3 through_medium(Ray ray_14, float t_3, vec3 radiance_1) {
     return _e21;
 }
 
+vec3 shading_normal(Ray ray_15, Hit hit_3) {
+    vec3 ng = faceforward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
+    return faceforward(hit_3.normal, -(ng), hit_3.normal);
+}
+
 uint light_count_query() {
     FrameUniforms _e1 = _group_0_binding_0_cs;
     return _e1.light_count;
@@ -977,8 +982,8 @@ float shadow_query(vec3 position, vec3 normal, vec3 dir, float dist) {
     }
     vec3 _e11 = n_4;
     vec3 _e12 = offset_origin(position, _e11);
-    Ray ray_23 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    Candidate _e23 = intersect_scene(ray_23, true);
+    Ray ray_24 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    Candidate _e23 = intersect_scene(ray_24, true);
     return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
@@ -1100,51 +1105,50 @@ LightSample sample_light_query(uint i_1, vec3 position_5, vec3 normal_5) {
     return _e27;
 }
 
-vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, vec3 emissive, Ray ray_15, Hit hit_3) {
+vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, vec3 emissive, Ray ray_16, Hit hit_4) {
     vec3 color = vec3(0.0);
     uint i_2 = 0u;
-    vec3 ng = faceforward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
-    vec3 n_8 = faceforward(hit_3.normal, -(ng), hit_3.normal);
-    vec3 _e15 = normalize_vec3f(ray_15.dir);
-    vec3 v_2 = -(_e15);
+    vec3 _e6 = shading_normal(ray_16, hit_4);
+    vec3 _e8 = normalize_vec3f(ray_16.dir);
+    vec3 v_2 = -(_e8);
     float metal = clamp(metallic, 0.0, 1.0);
     float a2_ = max(pow(clamp(roughness, 0.0, 1.0), 4.0), 4e-6);
     vec3 f0_ = mix(vec3(0.04), c_3, vec3(metal));
-    float ndv = max(dot(n_8, v_2), 0.0001);
+    float ndv = max(dot(_e6, v_2), 0.0001);
     color = emissive;
-    uint _e32 = light_count_query();
+    uint _e25 = light_count_query();
     i_2 = 0u;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e111 = i_2;
-            i_2 = (_e111 + 1u);
+            uint _e104 = i_2;
+            i_2 = (_e104 + 1u);
         }
         loop_init_2 = false;
-        uint _e34 = i_2;
-        if ((_e34 >= _e32)) {
+        uint _e27 = i_2;
+        if ((_e27 >= _e25)) {
             break;
         }
-        uint _e36 = i_2;
-        LightSample _e39 = sample_light_query(_e36, hit_3.position, hit_3.geometric_normal);
-        float ndl = max(dot(n_8, _e39.dir), 0.0);
-        vec3 _e46 = normalize_vec3f((_e39.dir + v_2));
-        float ndh = max(dot(n_8, _e46), 0.0);
+        uint _e29 = i_2;
+        LightSample _e32 = sample_light_query(_e29, hit_4.position, hit_4.geometric_normal);
+        float ndl = max(dot(_e6, _e32.dir), 0.0);
+        vec3 _e39 = normalize_vec3f((_e32.dir + v_2));
+        float ndh = max(dot(_e6, _e39), 0.0);
         float d_3 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
         float ggx = ((a2_ * INV_PI) / max((d_3 * d_3), 1e-8));
         float vis = (0.5 / max(((ndl * sqrt((((ndv * ndv) * (1.0 - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1.0 - a2_)) + a2_)))), 1e-8));
-        vec3 fresnel = (f0_ + ((vec3(1.0) - f0_) * vec3(pow((1.0 - max(dot(v_2, _e46), 0.0)), 5.0))));
-        vec3 _e94 = color;
-        color = (_e94 + ((_e39.radiance * vec3(ndl)) * (((c_3 * vec3((1.0 - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))));
+        vec3 fresnel = (f0_ + ((vec3(1.0) - f0_) * vec3(pow((1.0 - max(dot(v_2, _e39), 0.0)), 5.0))));
+        vec3 _e87 = color;
+        color = (_e87 + ((_e32.radiance * vec3(ndl)) * (((c_3 * vec3((1.0 - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))));
     }
-    vec3 _e114 = color;
-    return _e114;
+    vec3 _e107 = color;
+    return _e107;
 }
 
-vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_16, Hit hit_4) {
-    vec4 _e7 = sample_texture(m_1.base_texture, hit_4.uv);
+vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_17, Hit hit_5) {
+    vec4 _e7 = sample_texture(m_1.base_texture, hit_5.uv);
     vec3 c_9 = (m_1.base_color.xyz * _e7.xyz);
-    vec3 _e13 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, m_1.emissive, ray_16, hit_4);
+    vec3 _e13 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, m_1.emissive, ray_17, hit_5);
     return _e13;
 }
 
@@ -1162,23 +1166,23 @@ GltfMaterial load_GltfMaterial(uint offset_11) {
     return GltfMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), vec3(uintBitsToFloat(_e47), uintBitsToFloat(_e53), uintBitsToFloat(_e59)));
 }
 
-vec3 gltf_shade(GltfMaterial m_2, Ray ray_17, Hit hit_5) {
-    vec4 _e7 = sample_texture(m_2.base_texture, hit_5.uv);
+vec3 gltf_shade(GltfMaterial m_2, Ray ray_18, Hit hit_6) {
+    vec4 _e7 = sample_texture(m_2.base_texture, hit_6.uv);
     vec3 c_10 = (m_2.base_color.xyz * _e7.xyz);
-    vec3 _e13 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, m_2.emissive, ray_17, hit_5);
+    vec3 _e13 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, m_2.emissive, ray_18, hit_6);
     return _e13;
 }
 
-vec3 dispatch_closest_hit(uint type_id_5, uint offset_12, Ray ray_18, Hit hit_6, vec3 secondary) {
+vec3 dispatch_closest_hit(uint type_id_5, uint offset_12, Ray ray_19, Hit hit_7, vec3 secondary) {
     switch(type_id_5) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_12);
-            vec3 _e5 = gltf_masked_shade(_e4, ray_18, hit_6);
+            vec3 _e5 = gltf_masked_shade(_e4, ray_19, hit_7);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_12);
-            vec3 _e7 = gltf_shade(_e6, ray_18, hit_6);
+            vec3 _e7 = gltf_shade(_e6, ray_19, hit_7);
             return _e7;
         }
         default: {
@@ -1188,34 +1192,34 @@ vec3 dispatch_closest_hit(uint type_id_5, uint offset_12, Ray ray_18, Hit hit_6,
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_19, Candidate c_4) {
+vec3 shade_direct(Ray ray_20, Candidate c_4) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_4.slot];
-    Hit _e6 = finish_hit(ray_19, c_4);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_20, c_4);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, vec3(0.0));
     return _e11;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_13, Ray ray_20, Hit hit_7) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_13, Ray ray_21, Hit hit_8) {
     return;
 }
 
-vec3 spawn_origin(Hit hit_8, vec3 dir_1) {
+vec3 spawn_origin(Hit hit_9, vec3 dir_1) {
     vec3 n_5 = vec3(0.0);
-    n_5 = hit_8.geometric_normal;
+    n_5 = hit_9.geometric_normal;
     vec3 _e4 = n_5;
     if ((dot(dir_1, _e4) < 0.0)) {
         vec3 _e8 = n_5;
         n_5 = -(_e8);
     }
     vec3 _e11 = n_5;
-    vec3 _e12 = offset_origin(hit_8.position, _e11);
+    vec3 _e12 = offset_origin(hit_9.position, _e11);
     return _e12;
 }
 
 vec3 trace(Ray camera_ray) {
     Frame stack[4] = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_21 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_22 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     bool pushed = false;
@@ -1236,38 +1240,38 @@ vec3 trace(Ray camera_ray) {
     }
     stack = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_21 = camera_ray;
+    ray_22 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     while(true) {
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_21;
+            Ray _e28 = ray_22;
             Candidate _e30 = intersect_scene(_e28, false);
             if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_21;
+                Ray _e34 = ray_22;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_21;
+                Ray _e38 = ray_22;
                 vec3 _e39 = miss(_e38);
                 vec3 _e40 = through_medium(_e34, uintBitsToFloat(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = _group_0_binding_3_cs[_e30.slot];
-                Ray _e46 = ray_21;
+                Ray _e46 = ray_22;
                 Hit _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                uint _e56 = ray_21.depth;
+                uint _e56 = ray_22.depth;
                 uint _e60 = depth;
                 if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_21;
+                    Ray _e68 = ray_22;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_9 = min(min(_e70, 1u), MAX_SPAWN);
-                    if ((n_9 > 0u)) {
-                        Ray _e77 = ray_21;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_9, 0u);
+                    uint n_8 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_8 > 0u)) {
+                        Ray _e77 = ray_22;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_8, 0u);
                         i_3 = 0u;
                         bool loop_init_3 = true;
                         while(true) {
@@ -1277,7 +1281,7 @@ vec3 trace(Ray camera_ray) {
                             }
                             loop_init_3 = false;
                             uint _e88 = i_3;
-                            if ((_e88 >= n_9)) {
+                            if ((_e88 >= n_8)) {
                                 break;
                             }
                             uint _e91 = i_3;
@@ -1299,9 +1303,9 @@ vec3 trace(Ray camera_ray) {
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_21;
+                    Ray _e124 = ray_22;
                     vec3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0.0));
-                    Ray _e128 = ray_21;
+                    Ray _e128 = ray_22;
                     vec3 _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1333,13 +1337,13 @@ vec3 trace(Ray camera_ray) {
             uint i_4 = stack[min(top_1, 3u)].next;
             stack[min(top_1, 3u)].next = (i_4 + 1u);
             Ray parent = stack[min(top_1, 3u)].ray;
-            Hit hit_10 = stack[min(top_1, 3u)].hit;
+            Hit hit_11 = stack[min(top_1, 3u)].hit;
             vec3 dir_5 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
             medium = parent.medium;
-            vec3 _e209 = spawn_origin(hit_10, dir_5);
+            vec3 _e209 = spawn_origin(hit_11, dir_5);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_21 = Ray(_e209, 0.0, dir_5, uintBitsToFloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_22 = Ray(_e209, 0.0, dir_5, uintBitsToFloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             uint _e224 = stack[min(top_1, 3u)].slot;
             GpuInstance inst_10 = _group_0_binding_3_cs[_e224];
@@ -1371,7 +1375,7 @@ void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s = 0u;
-    Ray ray_22 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_23 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_1 = _group_0_binding_1_cs;
     sum = vec3(0.0);
@@ -1393,13 +1397,13 @@ void render_pixel(uvec2 pixel_3) {
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        vec3 _e31 = ray_22.origin;
+        ray_23 = _e23;
+        ray_23.depth = 0u;
+        ray_23.kind = RAY_CAMERA;
+        vec3 _e31 = ray_23.origin;
         uint _e33 = medium_at(_e31, NO_HIT);
-        ray_22.medium = _e33;
-        Ray _e34 = ray_22;
+        ray_23.medium = _e33;
+        Ray _e34 = ray_23;
         vec3 _e35 = trace(_e34);
         bvec3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

@@ -405,16 +405,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
     float aspect = (size.x / size.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_23 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_23;
+    const Ray ray_24 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_24;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
-    const Ray ray_24 = _e4;
-    return ray_24;
+    const Ray ray_25 = _e4;
+    return ray_25;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -443,8 +443,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_25 = _e25;
-    return ray_25;
+    const Ray ray_26 = _e25;
+    return ray_26;
 }
 
 float3 safe_inverse(float3 d)
@@ -505,9 +505,9 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
     float t_4 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_6[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_9 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
+    bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_9 ? float3(t_4, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_10 ? float3(t_4, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 Triangle ConstructTriangle(float3 arg0, float3 arg1, float3 arg2) {
@@ -640,8 +640,8 @@ Hit finish_hit(Ray ray_2, Candidate c)
     float3 _e135 = hit.geometric_normal;
     hit.front_face = (dot(ray_2.dir, _e135) < 0.0);
     Hit _e139 = hit;
-    const Hit hit_10 = _e139;
-    return hit_10;
+    const Hit hit_11 = _e139;
+    return hit_11;
 }
 
 GltfMaskedMaterial ConstructGltfMaskedMaterial(float4 arg0, uint arg1, float arg2, float arg3, float3 arg4, float arg5) {
@@ -1207,6 +1207,12 @@ float3 through_medium(Ray ray_14, float t_3, float3 radiance_1)
     return _e21;
 }
 
+float3 shading_normal(Ray ray_15, Hit hit_3)
+{
+    float3 ng = faceforward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
+    return faceforward(hit_3.normal, -(ng), hit_3.normal);
+}
+
 uint light_count_query()
 {
     FrameUniforms _e1 = frame;
@@ -1256,8 +1262,8 @@ float shadow_query(float3 position, float3 normal, float3 dir, float dist)
     }
     float3 _e11 = n_4;
     const float3 _e12 = offset_origin(position, _e11);
-    Ray ray_26 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    const Candidate _e23 = intersect_scene(ray_26, true);
+    Ray ray_27 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    const Candidate _e23 = intersect_scene(ray_27, true);
     return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
@@ -1435,21 +1441,20 @@ LightSample sample_light_query(uint i_1, float3 position_5, float3 normal_5)
     return lightsample_10;
 }
 
-float3 gltf_radiance(float3 c_3, float metallic, float roughness, float3 emissive, Ray ray_15, Hit hit_3)
+float3 gltf_radiance(float3 c_3, float metallic, float roughness, float3 emissive, Ray ray_16, Hit hit_4)
 {
     float3 color = (float3)0;
     uint i_2 = (uint)0;
 
-    float3 ng = faceforward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
-    float3 n_8 = faceforward(hit_3.normal, -(ng), hit_3.normal);
-    const float3 _e15 = normalize_vec3f(ray_15.dir);
-    float3 v_2 = -(_e15);
+    const float3 _e6 = shading_normal(ray_16, hit_4);
+    const float3 _e8 = normalize_vec3f(ray_16.dir);
+    float3 v_2 = -(_e8);
     float metal = saturate(metallic);
     float a2_ = max(pow(saturate(roughness), 4.0), 4e-6);
     float3 f0_ = lerp((0.04).xxx, c_3, (metal).xxx);
-    float ndv = max(dot(n_8, v_2), 0.0001);
+    float ndv = max(dot(_e6, v_2), 0.0001);
     color = emissive;
-    const uint _e32 = light_count_query();
+    const uint _e25 = light_count_query();
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
@@ -1457,35 +1462,35 @@ float3 gltf_radiance(float3 c_3, float metallic, float roughness, float3 emissiv
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e111 = i_2;
-            i_2 = (_e111 + 1u);
+            uint _e104 = i_2;
+            i_2 = (_e104 + 1u);
         }
         loop_init_2 = false;
-        uint _e34 = i_2;
-        if ((_e34 >= _e32)) {
+        uint _e27 = i_2;
+        if ((_e27 >= _e25)) {
             break;
         }
-        uint _e36 = i_2;
-        const LightSample _e39 = sample_light_query(_e36, hit_3.position, hit_3.geometric_normal);
-        float ndl = max(dot(n_8, _e39.dir), 0.0);
-        const float3 _e46 = normalize_vec3f((_e39.dir + v_2));
-        float ndh = max(dot(n_8, _e46), 0.0);
+        uint _e29 = i_2;
+        const LightSample _e32 = sample_light_query(_e29, hit_4.position, hit_4.geometric_normal);
+        float ndl = max(dot(_e6, _e32.dir), 0.0);
+        const float3 _e39 = normalize_vec3f((_e32.dir + v_2));
+        float ndh = max(dot(_e6, _e39), 0.0);
         float d_3 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
         float ggx = ((a2_ * INV_PI) / max((d_3 * d_3), 1e-8));
         float vis = (0.5 / max(((ndl * sqrt((((ndv * ndv) * (1.0 - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1.0 - a2_)) + a2_)))), 1e-8));
-        float3 fresnel = (f0_ + (((1.0).xxx - f0_) * (pow((1.0 - max(dot(v_2, _e46), 0.0)), 5.0)).xxx));
-        float3 _e94 = color;
-        color = (_e94 + ((_e39.radiance * (ndl).xxx) * (((c_3 * ((1.0 - metal)).xxx) * (INV_PI).xxx) + (fresnel * ((ggx * vis)).xxx))));
+        float3 fresnel = (f0_ + (((1.0).xxx - f0_) * (pow((1.0 - max(dot(v_2, _e39), 0.0)), 5.0)).xxx));
+        float3 _e87 = color;
+        color = (_e87 + ((_e32.radiance * (ndl).xxx) * (((c_3 * ((1.0 - metal)).xxx) * (INV_PI).xxx) + (fresnel * ((ggx * vis)).xxx))));
     }
-    float3 _e114 = color;
-    return _e114;
+    float3 _e107 = color;
+    return _e107;
 }
 
-float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_16, Hit hit_4)
+float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_17, Hit hit_5)
 {
-    const float4 _e7 = sample_texture(m_1.base_texture, hit_4.uv);
+    const float4 _e7 = sample_texture(m_1.base_texture, hit_5.uv);
     float3 c_9 = (m_1.base_color.xyz * _e7.xyz);
-    const float3 _e13 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, m_1.emissive, ray_16, hit_4);
+    const float3 _e13 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, m_1.emissive, ray_17, hit_5);
     return _e13;
 }
 
@@ -1515,25 +1520,25 @@ GltfMaterial load_GltfMaterial(uint offset_11)
     return gltfmaterial;
 }
 
-float3 gltf_shade(GltfMaterial m_2, Ray ray_17, Hit hit_5)
+float3 gltf_shade(GltfMaterial m_2, Ray ray_18, Hit hit_6)
 {
-    const float4 _e7 = sample_texture(m_2.base_texture, hit_5.uv);
+    const float4 _e7 = sample_texture(m_2.base_texture, hit_6.uv);
     float3 c_10 = (m_2.base_color.xyz * _e7.xyz);
-    const float3 _e13 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, m_2.emissive, ray_17, hit_5);
+    const float3 _e13 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, m_2.emissive, ray_18, hit_6);
     return _e13;
 }
 
-float3 dispatch_closest_hit(uint type_id_5, uint offset_12, Ray ray_18, Hit hit_6, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_5, uint offset_12, Ray ray_19, Hit hit_7, float3 secondary)
 {
     switch(type_id_5) {
         case 0u: {
             const GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_12);
-            const float3 _e5 = gltf_masked_shade(_e4, ray_18, hit_6);
+            const float3 _e5 = gltf_masked_shade(_e4, ray_19, hit_7);
             return _e5;
         }
         case 1u: {
             const GltfMaterial _e6 = load_GltfMaterial(offset_12);
-            const float3 _e7 = gltf_shade(_e6, ray_18, hit_6);
+            const float3 _e7 = gltf_shade(_e6, ray_19, hit_7);
             return _e7;
         }
         default: {
@@ -1543,31 +1548,31 @@ float3 dispatch_closest_hit(uint type_id_5, uint offset_12, Ray ray_18, Hit hit_
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_19, Candidate c_4)
+float3 shade_direct(Ray ray_20, Candidate c_4)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_4.slot*128+0)), asfloat(instances.Load4(c_4.slot*128+16)), asfloat(instances.Load4(c_4.slot*128+32)), asfloat(instances.Load4(c_4.slot*128+48)), asfloat(instances.Load4(c_4.slot*128+64)), asfloat(instances.Load4(c_4.slot*128+80)), asuint(instances.Load(c_4.slot*128+96)), asuint(instances.Load(c_4.slot*128+100)), asuint(instances.Load(c_4.slot*128+104)), asuint(instances.Load(c_4.slot*128+108)), asuint(instances.Load(c_4.slot*128+112)), asuint(instances.Load(c_4.slot*128+116)), asuint(instances.Load(c_4.slot*128+120)), asuint(instances.Load(c_4.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_19, c_4);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_20, c_4);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, (0.0).xxx);
     return _e11;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_13, Ray ray_20, Hit hit_7)
+void dispatch_secondary_rays(uint type_id_6, uint offset_13, Ray ray_21, Hit hit_8)
 {
     return;
 }
 
-float3 spawn_origin(Hit hit_8, float3 dir_1)
+float3 spawn_origin(Hit hit_9, float3 dir_1)
 {
     float3 n_5 = (float3)0;
 
-    n_5 = hit_8.geometric_normal;
+    n_5 = hit_9.geometric_normal;
     float3 _e4 = n_5;
     if ((dot(dir_1, _e4) < 0.0)) {
         float3 _e8 = n_5;
         n_5 = -(_e8);
     }
     float3 _e11 = n_5;
-    const float3 _e12 = offset_origin(hit_8.position, _e11);
+    const float3 _e12 = offset_origin(hit_9.position, _e11);
     return _e12;
 }
 
@@ -1598,7 +1603,7 @@ float3 trace(Ray camera_ray)
 {
     Frame stack[4] = (Frame[4])0;
     uint depth = (uint)0;
-    Ray ray_21 = (Ray)0;
+    Ray ray_22 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     bool pushed = (bool)0;
@@ -1620,7 +1625,7 @@ float3 trace(Ray camera_ray)
     }
     stack = ZeroValuearray4_Frame_();
     depth = 0u;
-    ray_21 = camera_ray;
+    ray_22 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
@@ -1629,32 +1634,32 @@ float3 trace(Ray camera_ray)
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_21;
+            Ray _e28 = ray_22;
             const Candidate _e30 = intersect_scene(_e28, false);
             if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_21;
+                Ray _e34 = ray_22;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_21;
+                Ray _e38 = ray_22;
                 const float3 _e39 = miss(_e38);
                 const float3 _e40 = through_medium(_e34, asfloat(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(_e30.slot*128+0)), asfloat(instances.Load4(_e30.slot*128+16)), asfloat(instances.Load4(_e30.slot*128+32)), asfloat(instances.Load4(_e30.slot*128+48)), asfloat(instances.Load4(_e30.slot*128+64)), asfloat(instances.Load4(_e30.slot*128+80)), asuint(instances.Load(_e30.slot*128+96)), asuint(instances.Load(_e30.slot*128+100)), asuint(instances.Load(_e30.slot*128+104)), asuint(instances.Load(_e30.slot*128+108)), asuint(instances.Load(_e30.slot*128+112)), asuint(instances.Load(_e30.slot*128+116)), asuint(instances.Load(_e30.slot*128+120)), asuint(instances.Load(_e30.slot*128+124)));
-                Ray _e46 = ray_21;
+                Ray _e46 = ray_22;
                 const Hit _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                uint _e56 = ray_21.depth;
+                uint _e56 = ray_22.depth;
                 uint _e60 = depth;
                 if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_21;
+                    Ray _e68 = ray_22;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_9 = min(min(_e70, 1u), MAX_SPAWN);
-                    if ((n_9 > 0u)) {
-                        Ray _e77 = ray_21;
-                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_9, 0u);
+                    uint n_8 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_8 > 0u)) {
+                        Ray _e77 = ray_22;
+                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_8, 0u);
                         i_3 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
                         bool loop_init_3 = true;
@@ -1667,7 +1672,7 @@ float3 trace(Ray camera_ray)
                             }
                             loop_init_3 = false;
                             uint _e88 = i_3;
-                            if ((_e88 >= n_9)) {
+                            if ((_e88 >= n_8)) {
                                 break;
                             }
                             uint _e91 = i_3;
@@ -1689,9 +1694,9 @@ float3 trace(Ray camera_ray)
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_21;
+                    Ray _e124 = ray_22;
                     const float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, (0.0).xxx);
-                    Ray _e128 = ray_21;
+                    Ray _e128 = ray_22;
                     const float3 _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1723,13 +1728,13 @@ float3 trace(Ray camera_ray)
             uint i_4 = stack[min(uint(min(top_1, 3u)), 3u)].next;
             stack[min(uint(min(top_1, 3u)), 3u)].next = (i_4 + 1u);
             Ray parent = stack[min(uint(min(top_1, 3u)), 3u)].ray;
-            Hit hit_11 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
+            Hit hit_12 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
             float3 dir_5 = stack[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_4, 0u)), 0u)];
             medium = parent.medium;
-            const float3 _e209 = spawn_origin(hit_11, dir_5);
+            const float3 _e209 = spawn_origin(hit_12, dir_5);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_21 = ConstructRay(_e209, 0.0, dir_5, asfloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_22 = ConstructRay(_e209, 0.0, dir_5, asfloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             uint _e224 = stack[min(uint(min(top_1, 3u)), 3u)].slot;
             GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e224*128+0)), asfloat(instances.Load4(_e224*128+16)), asfloat(instances.Load4(_e224*128+32)), asfloat(instances.Load4(_e224*128+48)), asfloat(instances.Load4(_e224*128+64)), asfloat(instances.Load4(_e224*128+80)), asuint(instances.Load(_e224*128+96)), asuint(instances.Load(_e224*128+100)), asuint(instances.Load(_e224*128+104)), asuint(instances.Load(_e224*128+108)), asuint(instances.Load(_e224*128+112)), asuint(instances.Load(_e224*128+116)), asuint(instances.Load(_e224*128+120)), asuint(instances.Load(_e224*128+124)));
@@ -1764,7 +1769,7 @@ void render_pixel(uint2 pixel_3)
     float3 sum = (float3)0;
     uint bad = (uint)0;
     uint s = (uint)0;
-    Ray ray_22 = (Ray)0;
+    Ray ray_23 = (Ray)0;
 
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
@@ -1790,13 +1795,13 @@ void render_pixel(uint2 pixel_3)
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        float3 _e31 = ray_22.origin;
+        ray_23 = _e23;
+        ray_23.depth = 0u;
+        ray_23.kind = RAY_CAMERA;
+        float3 _e31 = ray_23.origin;
         const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_22.medium = _e33;
-        Ray _e34 = ray_22;
+        ray_23.medium = _e33;
+        Ray _e34 = ray_23;
         const float3 _e35 = trace(_e34);
         const bool3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

@@ -474,9 +474,9 @@ metal::float3 hit_triangle(
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
     float t_4 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_6[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_9 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1);
+    bool hit_10 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_9 ? metal::float3(t_4, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_10 ? metal::float3(t_4, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 Triangle load_triangle(
@@ -1237,6 +1237,14 @@ metal::float3 through_medium(
     return _e21;
 }
 
+metal::float3 shading_normal(
+    Ray ray_15,
+    Hit hit_3
+) {
+    metal::float3 ng = metal::faceforward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
+    return metal::faceforward(hit_3.normal, -(ng), hit_3.normal);
+}
+
 uint light_count_query(
     constant FrameUniforms& frame
 ) {
@@ -1300,8 +1308,8 @@ float shadow_query(
     }
     metal::float3 _e11 = n_4;
     metal::float3 _e12 = offset_origin(position, _e11, frame, nodes, _buffer_sizes);
-    Ray ray_23 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
-    Candidate _e23 = intersect_scene(ray_23, true, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    Ray ray_24 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
+    Candidate _e23 = intersect_scene(ray_24, true, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return (_e23.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
@@ -1512,65 +1520,6 @@ metal::float3 gltf_radiance(
     float metallic,
     float roughness,
     metal::float3 emissive,
-    Ray ray_15,
-    Hit hit_3,
-    constant FrameUniforms& frame,
-    device type_4 const& params,
-    thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
-    thread uint& ray_count,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    metal::float3 color = {};
-    uint i_2 = {};
-    metal::float3 ng = metal::faceforward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
-    metal::float3 n_8 = metal::faceforward(hit_3.normal, -(ng), hit_3.normal);
-    metal::float3 _e15 = normalize_vec3f(ray_15.dir);
-    metal::float3 v_2 = -(_e15);
-    float metal_ = metal::saturate(metallic);
-    float a2_ = metal::max(metal::pow(metal::saturate(roughness), 4.0), 0.000004);
-    metal::float3 f0_ = metal::mix(metal::float3(0.04), c_3, metal::float3(metal_));
-    float ndv = metal::max(metal::dot(n_8, v_2), 0.0001);
-    color = emissive;
-    uint _e32 = light_count_query(frame);
-    i_2 = 0u;
-    uint2 loop_bound_4 = uint2(4294967295u);
-    bool loop_init_2 = true;
-    while(true) {
-        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e111 = i_2;
-            i_2 = _e111 + 1u;
-        }
-        loop_init_2 = false;
-        uint _e34 = i_2;
-        if (_e34 >= _e32) {
-            break;
-        }
-        uint _e36 = i_2;
-        LightSample _e39 = sample_light_query(_e36, hit_3.position, hit_3.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-        float ndl = metal::max(metal::dot(n_8, _e39.dir), 0.0);
-        metal::float3 _e46 = normalize_vec3f(_e39.dir + v_2);
-        float ndh = metal::max(metal::dot(n_8, _e46), 0.0);
-        float d_3 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
-        float ggx = (a2_ * INV_PI) / metal::max(d_3 * d_3, 0.00000001);
-        float vis = 0.5 / metal::max((ndl * metal::sqrt(((ndv * ndv) * (1.0 - a2_)) + a2_)) + (ndv * metal::sqrt(((ndl * ndl) * (1.0 - a2_)) + a2_)), 0.00000001);
-        metal::float3 fresnel = f0_ + ((metal::float3(1.0) - f0_) * metal::float3(metal::pow(1.0 - metal::max(metal::dot(v_2, _e46), 0.0), 5.0)));
-        metal::float3 _e94 = color;
-        color = _e94 + ((_e39.radiance * metal::float3(ndl)) * (((c_3 * metal::float3(1.0 - metal_)) * metal::float3(INV_PI)) + (fresnel * metal::float3(ggx * vis))));
-    }
-    metal::float3 _e114 = color;
-    return _e114;
-}
-
-metal::float3 gltf_masked_shade(
-    GltfMaskedMaterial m_1,
     Ray ray_16,
     Hit hit_4,
     constant FrameUniforms& frame,
@@ -1585,9 +1534,67 @@ metal::float3 gltf_masked_shade(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 _e7 = sample_texture(m_1.base_texture, hit_4.uv, params, texels, _buffer_sizes);
+    metal::float3 color = {};
+    uint i_2 = {};
+    metal::float3 _e6 = shading_normal(ray_16, hit_4);
+    metal::float3 _e8 = normalize_vec3f(ray_16.dir);
+    metal::float3 v_2 = -(_e8);
+    float metal_ = metal::saturate(metallic);
+    float a2_ = metal::max(metal::pow(metal::saturate(roughness), 4.0), 0.000004);
+    metal::float3 f0_ = metal::mix(metal::float3(0.04), c_3, metal::float3(metal_));
+    float ndv = metal::max(metal::dot(_e6, v_2), 0.0001);
+    color = emissive;
+    uint _e25 = light_count_query(frame);
+    i_2 = 0u;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e104 = i_2;
+            i_2 = _e104 + 1u;
+        }
+        loop_init_2 = false;
+        uint _e27 = i_2;
+        if (_e27 >= _e25) {
+            break;
+        }
+        uint _e29 = i_2;
+        LightSample _e32 = sample_light_query(_e29, hit_4.position, hit_4.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+        float ndl = metal::max(metal::dot(_e6, _e32.dir), 0.0);
+        metal::float3 _e39 = normalize_vec3f(_e32.dir + v_2);
+        float ndh = metal::max(metal::dot(_e6, _e39), 0.0);
+        float d_3 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
+        float ggx = (a2_ * INV_PI) / metal::max(d_3 * d_3, 0.00000001);
+        float vis = 0.5 / metal::max((ndl * metal::sqrt(((ndv * ndv) * (1.0 - a2_)) + a2_)) + (ndv * metal::sqrt(((ndl * ndl) * (1.0 - a2_)) + a2_)), 0.00000001);
+        metal::float3 fresnel = f0_ + ((metal::float3(1.0) - f0_) * metal::float3(metal::pow(1.0 - metal::max(metal::dot(v_2, _e39), 0.0), 5.0)));
+        metal::float3 _e87 = color;
+        color = _e87 + ((_e32.radiance * metal::float3(ndl)) * (((c_3 * metal::float3(1.0 - metal_)) * metal::float3(INV_PI)) + (fresnel * metal::float3(ggx * vis))));
+    }
+    metal::float3 _e107 = color;
+    return _e107;
+}
+
+metal::float3 gltf_masked_shade(
+    GltfMaskedMaterial m_1,
+    Ray ray_17,
+    Hit hit_5,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    device type_12 const& attributes,
+    device type_4 const& texels,
+    thread type_15& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float4 _e7 = sample_texture(m_1.base_texture, hit_5.uv, params, texels, _buffer_sizes);
     metal::float3 c_9 = m_1.base_color.xyz * _e7.xyz;
-    metal::float3 _e13 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, m_1.emissive, ray_16, hit_4, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e13 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, m_1.emissive, ray_17, hit_5, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e13;
 }
 
@@ -1611,8 +1618,8 @@ GltfMaterial load_GltfMaterial(
 
 metal::float3 gltf_shade(
     GltfMaterial m_2,
-    Ray ray_17,
-    Hit hit_5,
+    Ray ray_18,
+    Hit hit_6,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1625,17 +1632,17 @@ metal::float3 gltf_shade(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 _e7 = sample_texture(m_2.base_texture, hit_5.uv, params, texels, _buffer_sizes);
+    metal::float4 _e7 = sample_texture(m_2.base_texture, hit_6.uv, params, texels, _buffer_sizes);
     metal::float3 c_10 = m_2.base_color.xyz * _e7.xyz;
-    metal::float3 _e13 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, m_2.emissive, ray_17, hit_5, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e13 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, m_2.emissive, ray_18, hit_6, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e13;
 }
 
 metal::float3 dispatch_closest_hit(
     uint type_id_5,
     uint offset_12,
-    Ray ray_18,
-    Hit hit_6,
+    Ray ray_19,
+    Hit hit_7,
     metal::float3 secondary,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1652,12 +1659,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_5) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_12, params, _buffer_sizes);
-            metal::float3 _e5 = gltf_masked_shade(_e4, ray_18, hit_6, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e5 = gltf_masked_shade(_e4, ray_19, hit_7, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_12, params, _buffer_sizes);
-            metal::float3 _e7 = gltf_shade(_e6, ray_18, hit_6, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e7 = gltf_shade(_e6, ray_19, hit_7, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e7;
         }
         default: {
@@ -1668,7 +1675,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_19,
+    Ray ray_20,
     Candidate c_4,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1683,36 +1690,36 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_4.slot];
-    Hit _e6 = finish_hit(ray_19, c_4, instances, triangles, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_20, c_4, instances, triangles, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e11;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_13,
-    Ray ray_20,
-    Hit hit_7
+    Ray ray_21,
+    Hit hit_8
 ) {
     return;
 }
 
 metal::float3 spawn_origin(
-    Hit hit_8,
+    Hit hit_9,
     metal::float3 dir_1,
     constant FrameUniforms& frame,
     device type_9 const& nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 n_5 = {};
-    n_5 = hit_8.geometric_normal;
+    n_5 = hit_9.geometric_normal;
     metal::float3 _e4 = n_5;
     if (metal::dot(dir_1, _e4) < 0.0) {
         metal::float3 _e8 = n_5;
         n_5 = -(_e8);
     }
     metal::float3 _e11 = n_5;
-    metal::float3 _e12 = offset_origin(hit_8.position, _e11, frame, nodes, _buffer_sizes);
+    metal::float3 _e12 = offset_origin(hit_9.position, _e11, frame, nodes, _buffer_sizes);
     return _e12;
 }
 
@@ -1735,7 +1742,7 @@ metal::float3 trace(
 ) {
     type_17 stack = {};
     uint depth = {};
-    Ray ray_21 = {};
+    Ray ray_22 = {};
     metal::float3 value = {};
     bool have_value = {};
     bool pushed = {};
@@ -1756,7 +1763,7 @@ metal::float3 trace(
     }
     stack = type_17 {};
     depth = 0u;
-    ray_21 = camera_ray;
+    ray_22 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     uint2 loop_bound_5 = uint2(4294967295u);
@@ -1765,32 +1772,32 @@ metal::float3 trace(
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_21;
+            Ray _e28 = ray_22;
             Candidate _e30 = intersect_scene(_e28, false, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             if (_e30.slot == NO_HIT) {
-                Ray _e34 = ray_21;
+                Ray _e34 = ray_22;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_21;
+                Ray _e38 = ray_22;
                 metal::float3 _e39 = miss(_e38, frame, params, _buffer_sizes);
                 metal::float3 _e40 = through_medium(_e34, as_type<float>(_e36), _e39, instances, _buffer_sizes);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = instances[_e30.slot];
-                Ray _e46 = ray_21;
+                Ray _e46 = ray_22;
                 Hit _e47 = finish_hit(_e46, _e30, instances, triangles, attributes, _buffer_sizes);
                 pushed = false;
-                uint _e56 = ray_21.depth;
+                uint _e56 = ray_22.depth;
                 uint _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_21;
+                    Ray _e68 = ray_22;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_9 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
-                    if (n_9 > 0u) {
-                        Ray _e77 = ray_21;
-                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_9, 0u};
+                    uint n_8 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
+                    if (n_8 > 0u) {
+                        Ray _e77 = ray_22;
+                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_8, 0u};
                         i_3 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u);
                         bool loop_init_3 = true;
@@ -1803,7 +1810,7 @@ metal::float3 trace(
                             }
                             loop_init_3 = false;
                             uint _e88 = i_3;
-                            if (_e88 >= n_9) {
+                            if (_e88 >= n_8) {
                                 break;
                             }
                             uint _e91 = i_3;
@@ -1825,9 +1832,9 @@ metal::float3 trace(
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_21;
+                    Ray _e124 = ray_22;
                     metal::float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-                    Ray _e128 = ray_21;
+                    Ray _e128 = ray_22;
                     metal::float3 _e130 = through_medium(_e128, _e30.t, _e127, instances, _buffer_sizes);
                     value = _e130;
                     have_value = true;
@@ -1859,13 +1866,13 @@ metal::float3 trace(
             uint i_4 = stack.inner[metal::min(top_1, 3u)].next;
             stack.inner[metal::min(top_1, 3u)].next = i_4 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 3u)].ray;
-            Hit hit_10 = stack.inner[metal::min(top_1, 3u)].hit;
+            Hit hit_11 = stack.inner[metal::min(top_1, 3u)].hit;
             metal::float3 dir_5 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_4, 0u)];
             medium = parent.medium;
-            metal::float3 _e209 = spawn_origin(hit_10, dir_5, frame, nodes, _buffer_sizes);
+            metal::float3 _e209 = spawn_origin(hit_11, dir_5, frame, nodes, _buffer_sizes);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_21 = Ray {_e209, 0.0, dir_5, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
+            ray_22 = Ray {_e209, 0.0, dir_5, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
         } else {
             uint _e224 = stack.inner[metal::min(top_1, 3u)].slot;
             GpuInstance inst_10 = instances[_e224];
@@ -1921,7 +1928,7 @@ void render_pixel(
     metal::float3 sum = {};
     uint bad = {};
     uint s = {};
-    Ray ray_22 = {};
+    Ray ray_23 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
     sum = metal::float3(0.0);
@@ -1946,13 +1953,13 @@ void render_pixel(
         uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_22.origin;
+        ray_23 = _e23;
+        ray_23.depth = 0u;
+        ray_23.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_23.origin;
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, _buffer_sizes);
-        ray_22.medium = _e33;
-        Ray _e34 = ray_22;
+        ray_23.medium = _e33;
+        Ray _e34 = ray_23;
         metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, attributes, texels, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {

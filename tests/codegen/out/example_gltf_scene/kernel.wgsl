@@ -393,9 +393,9 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
     let t_4 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
-    let hit_9 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
+    let hit_10 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_1 * rcp), (w * rcp)), hit_9);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_1 * rcp), (w * rcp)), hit_10);
 }
 
 fn load_triangle(slot_1: u32) -> Triangle {
@@ -953,6 +953,11 @@ fn through_medium(ray_14: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     return _e21;
 }
 
+fn shading_normal(ray_15: Ray, hit_3: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
+    return faceForward(hit_3.normal, -(ng), hit_3.normal);
+}
+
 fn light_count_query() -> u32 {
     let _e1 = frame;
     return _e1.light_count;
@@ -989,8 +994,8 @@ fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f3
     }
     let _e11 = n_4;
     let _e12 = offset_origin(position, _e11);
-    let ray_23 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
-    let _e23 = intersect_scene(ray_23, true);
+    let ray_24 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
+    let _e23 = intersect_scene(ray_24, true);
     return select(1f, 0f, (_e23.slot != NO_HIT));
 }
 
@@ -1113,50 +1118,49 @@ fn sample_light_query(i_1: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> L
     return _e27;
 }
 
-fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, emissive: vec3<f32>, ray_15: Ray, hit_3: Hit) -> vec3<f32> {
+fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, emissive: vec3<f32>, ray_16: Ray, hit_4: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_2: u32;
 
-    let ng = faceForward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
-    let n_8 = faceForward(hit_3.normal, -(ng), hit_3.normal);
-    let _e15 = normalize_vec3f(ray_15.dir);
-    let v_2 = -(_e15);
+    let _e6 = shading_normal(ray_16, hit_4);
+    let _e8 = normalize_vec3f(ray_16.dir);
+    let v_2 = -(_e8);
     let metal = saturate(metallic);
     let a2_ = max(pow(saturate(roughness), 4f), 0.000004f);
     let f0_ = mix(vec3(0.04f), c_3, vec3(metal));
-    let ndv = max(dot(n_8, v_2), 0.0001f);
+    let ndv = max(dot(_e6, v_2), 0.0001f);
     color = emissive;
-    let _e32 = light_count_query();
+    let _e25 = light_count_query();
     i_2 = 0u;
     loop {
-        let _e34 = i_2;
-        if (_e34 >= _e32) {
+        let _e27 = i_2;
+        if (_e27 >= _e25) {
             break;
         }
-        let _e36 = i_2;
-        let _e39 = sample_light_query(_e36, hit_3.position, hit_3.geometric_normal);
-        let ndl = max(dot(n_8, _e39.dir), 0f);
-        let _e46 = normalize_vec3f((_e39.dir + v_2));
-        let ndh = max(dot(n_8, _e46), 0f);
+        let _e29 = i_2;
+        let _e32 = sample_light_query(_e29, hit_4.position, hit_4.geometric_normal);
+        let ndl = max(dot(_e6, _e32.dir), 0f);
+        let _e39 = normalize_vec3f((_e32.dir + v_2));
+        let ndh = max(dot(_e6, _e39), 0f);
         let d_3 = (((ndh * ndh) * (a2_ - 1f)) + 1f);
         let ggx = ((a2_ * INV_PI) / max((d_3 * d_3), 0.00000001f));
         let vis = (0.5f / max(((ndl * sqrt((((ndv * ndv) * (1f - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1f - a2_)) + a2_)))), 0.00000001f));
-        let fresnel = (f0_ + ((vec3(1f) - f0_) * vec3(pow((1f - max(dot(v_2, _e46), 0f)), 5f))));
-        let _e94 = color;
-        color = (_e94 + ((_e39.radiance * vec3(ndl)) * (((c_3 * vec3((1f - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))));
+        let fresnel = (f0_ + ((vec3(1f) - f0_) * vec3(pow((1f - max(dot(v_2, _e39), 0f)), 5f))));
+        let _e87 = color;
+        color = (_e87 + ((_e32.radiance * vec3(ndl)) * (((c_3 * vec3((1f - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))));
         continuing {
-            let _e111 = i_2;
-            i_2 = (_e111 + 1u);
+            let _e104 = i_2;
+            i_2 = (_e104 + 1u);
         }
     }
-    let _e114 = color;
-    return _e114;
+    let _e107 = color;
+    return _e107;
 }
 
-fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_16: Ray, hit_4: Hit) -> vec3<f32> {
-    let _e7 = sample_texture(m_1.base_texture, hit_4.uv);
+fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_17: Ray, hit_5: Hit) -> vec3<f32> {
+    let _e7 = sample_texture(m_1.base_texture, hit_5.uv);
     let c_9 = (m_1.base_color.xyz * _e7.xyz);
-    let _e13 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, m_1.emissive, ray_16, hit_4);
+    let _e13 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, m_1.emissive, ray_17, hit_5);
     return _e13;
 }
 
@@ -1174,23 +1178,23 @@ fn load_GltfMaterial(offset_11: u32) -> GltfMaterial {
     return GltfMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), vec3<f32>(bitcast<f32>(_e47), bitcast<f32>(_e53), bitcast<f32>(_e59)));
 }
 
-fn gltf_shade(m_2: GltfMaterial, ray_17: Ray, hit_5: Hit) -> vec3<f32> {
-    let _e7 = sample_texture(m_2.base_texture, hit_5.uv);
+fn gltf_shade(m_2: GltfMaterial, ray_18: Ray, hit_6: Hit) -> vec3<f32> {
+    let _e7 = sample_texture(m_2.base_texture, hit_6.uv);
     let c_10 = (m_2.base_color.xyz * _e7.xyz);
-    let _e13 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, m_2.emissive, ray_17, hit_5);
+    let _e13 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, m_2.emissive, ray_18, hit_6);
     return _e13;
 }
 
-fn dispatch_closest_hit(type_id_5: u32, offset_12: u32, ray_18: Ray, hit_6: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_5: u32, offset_12: u32, ray_19: Ray, hit_7: Hit, secondary: vec3<f32>) -> vec3<f32> {
     switch type_id_5 {
         case 0u: {
             let _e4 = load_GltfMaskedMaterial(offset_12);
-            let _e5 = gltf_masked_shade(_e4, ray_18, hit_6);
+            let _e5 = gltf_masked_shade(_e4, ray_19, hit_7);
             return _e5;
         }
         case 1u: {
             let _e6 = load_GltfMaterial(offset_12);
-            let _e7 = gltf_shade(_e6, ray_18, hit_6);
+            let _e7 = gltf_shade(_e6, ray_19, hit_7);
             return _e7;
         }
         default: {
@@ -1199,35 +1203,35 @@ fn dispatch_closest_hit(type_id_5: u32, offset_12: u32, ray_18: Ray, hit_6: Hit,
     return vec3<f32>();
 }
 
-fn shade_direct(ray_19: Ray, c_4: Candidate) -> vec3<f32> {
+fn shade_direct(ray_20: Ray, c_4: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_4.slot];
-    let _e6 = finish_hit(ray_19, c_4);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_20, c_4);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_13: u32, ray_20: Ray, hit_7: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_13: u32, ray_21: Ray, hit_8: Hit) {
     return;
 }
 
-fn spawn_origin(hit_8: Hit, dir_1: vec3<f32>) -> vec3<f32> {
+fn spawn_origin(hit_9: Hit, dir_1: vec3<f32>) -> vec3<f32> {
     var n_5: vec3<f32>;
 
-    n_5 = hit_8.geometric_normal;
+    n_5 = hit_9.geometric_normal;
     let _e4 = n_5;
     if (dot(dir_1, _e4) < 0f) {
         let _e8 = n_5;
         n_5 = -(_e8);
     }
     let _e11 = n_5;
-    let _e12 = offset_origin(hit_8.position, _e11);
+    let _e12 = offset_origin(hit_9.position, _e11);
     return _e12;
 }
 
 fn trace(camera_ray: Ray) -> vec3<f32> {
     var stack: array<Frame, 4>;
     var depth: u32;
-    var ray_21: Ray;
+    var ray_22: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var pushed: bool;
@@ -1249,42 +1253,42 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 4>();
     depth = 0u;
-    ray_21 = camera_ray;
+    ray_22 = camera_ray;
     value = vec3(0f);
     have_value = false;
     loop {
         let _e26 = have_value;
         if !(_e26) {
-            let _e28 = ray_21;
+            let _e28 = ray_22;
             let _e30 = intersect_scene(_e28, false);
             if (_e30.slot == NO_HIT) {
-                let _e34 = ray_21;
+                let _e34 = ray_22;
                 let _e36 = F32_INF;
-                let _e38 = ray_21;
+                let _e38 = ray_22;
                 let _e39 = miss(_e38);
                 let _e40 = through_medium(_e34, bitcast<f32>(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 let inst_9 = instances[_e30.slot];
-                let _e46 = ray_21;
+                let _e46 = ray_22;
                 let _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                let _e56 = ray_21.depth;
+                let _e56 = ray_22.depth;
                 let _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    let _e68 = ray_21;
+                    let _e68 = ray_22;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     let _e70 = spawn_count;
-                    let n_9 = min(min(_e70, 1u), MAX_SPAWN);
-                    if (n_9 > 0u) {
-                        let _e77 = ray_21;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_9, 0u);
+                    let n_8 = min(min(_e70, 1u), MAX_SPAWN);
+                    if (n_8 > 0u) {
+                        let _e77 = ray_22;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
                         i_3 = 0u;
                         loop {
                             let _e88 = i_3;
-                            if (_e88 >= n_9) {
+                            if (_e88 >= n_8) {
                                 break;
                             }
                             let _e91 = i_3;
@@ -1310,9 +1314,9 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 }
                 let _e120 = pushed;
                 if !(_e120) {
-                    let _e124 = ray_21;
+                    let _e124 = ray_22;
                     let _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0f));
-                    let _e128 = ray_21;
+                    let _e128 = ray_22;
                     let _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1344,13 +1348,13 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let i_4 = stack[min(top_1, 3u)].next;
             stack[min(top_1, 3u)].next = (i_4 + 1u);
             let parent = stack[min(top_1, 3u)].ray;
-            let hit_10 = stack[min(top_1, 3u)].hit;
+            let hit_11 = stack[min(top_1, 3u)].hit;
             let dir_5 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
             medium = parent.medium;
-            let _e209 = spawn_origin(hit_10, dir_5);
+            let _e209 = spawn_origin(hit_11, dir_5);
             let _e212 = F32_INF;
             let _e218 = medium;
-            ray_21 = Ray(_e209, 0f, dir_5, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_22 = Ray(_e209, 0f, dir_5, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             let _e224 = stack[min(top_1, 3u)].slot;
             let inst_10 = instances[_e224];
@@ -1382,7 +1386,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s: u32;
-    var ray_22: Ray;
+    var ray_23: Ray;
 
     let frame_5 = frame;
     let tile_1 = tile;
@@ -1399,13 +1403,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
         let sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        let _e31 = ray_22.origin;
+        ray_23 = _e23;
+        ray_23.depth = 0u;
+        ray_23.kind = RAY_CAMERA;
+        let _e31 = ray_23.origin;
         let _e33 = medium_at(_e31, NO_HIT);
-        ray_22.medium = _e33;
-        let _e34 = ray_22;
+        ray_23.medium = _e33;
+        let _e34 = ray_23;
         let _e35 = trace(_e34);
         let _e36 = is_finite_vec3f(_e35);
         if all(_e36) {

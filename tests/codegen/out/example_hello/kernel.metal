@@ -446,9 +446,9 @@ metal::float3 hit_triangle(
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
     float t_2 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1);
+    bool hit_8 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_7 ? metal::float3(t_2, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_8 ? metal::float3(t_2, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -1060,6 +1060,14 @@ Lambert load_Lambert(
     return Lambert {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17))};
 }
 
+metal::float3 shading_normal(
+    Ray ray_13,
+    Hit hit_1
+) {
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    return metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
+}
+
 uint light_count_query(
     constant FrameUniforms& frame
 ) {
@@ -1122,8 +1130,8 @@ float shadow_query(
     }
     metal::float3 _e11 = n_4;
     metal::float3 _e12 = offset_origin(position, _e11, frame, nodes, _buffer_sizes);
-    Ray ray_21 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
-    Candidate _e23 = intersect_scene(ray_21, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    Ray ray_22 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
+    Candidate _e23 = intersect_scene(ray_22, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
     return (_e23.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
@@ -1201,8 +1209,8 @@ LightSample sample_light_query(
 
 metal::float3 lambert_shade(
     Lambert m,
-    Ray ray_13,
-    Hit hit_1,
+    Ray ray_14,
+    Hit hit_2,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1215,10 +1223,9 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_2 = {};
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
-    metal::float3 n_8 = metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
+    metal::float3 _e3 = shading_normal(ray_14, hit_2);
     color = metal::float3(0.0);
-    uint _e15 = light_count_query(frame);
+    uint _e8 = light_count_query(frame);
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
@@ -1226,21 +1233,21 @@ metal::float3 lambert_shade(
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e37 = i_2;
-            i_2 = _e37 + 1u;
+            uint _e30 = i_2;
+            i_2 = _e30 + 1u;
         }
         loop_init_2 = false;
-        uint _e17 = i_2;
-        if (_e17 >= _e15) {
+        uint _e10 = i_2;
+        if (_e10 >= _e8) {
             break;
         }
-        uint _e19 = i_2;
-        LightSample _e22 = sample_light_query(_e19, hit_1.position, hit_1.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        metal::float3 _e23 = color;
-        color = _e23 + (((m.albedo * metal::float3(INV_PI)) * _e22.radiance) * metal::float3(metal::max(metal::dot(n_8, _e22.dir), 0.0)));
+        uint _e12 = i_2;
+        LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e16 = color;
+        color = _e16 + (((m.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
     }
-    metal::float3 _e40 = color;
-    return _e40;
+    metal::float3 _e33 = color;
+    return _e33;
 }
 
 Mirror load_Mirror(
@@ -1256,8 +1263,8 @@ Mirror load_Mirror(
 
 metal::float3 mirror_shade(
     Mirror m_1,
-    Ray ray_14,
-    Hit hit_2,
+    Ray ray_15,
+    Hit hit_3,
     metal::float3 secondary
 ) {
     return secondary;
@@ -1266,8 +1273,8 @@ metal::float3 mirror_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_9,
-    Ray ray_15,
-    Hit hit_3,
+    Ray ray_16,
+    Hit hit_4,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1282,12 +1289,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             Lambert _e5 = load_Lambert(offset_9, params, _buffer_sizes);
-            metal::float3 _e6 = lambert_shade(_e5, ray_15, hit_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e6 = lambert_shade(_e5, ray_16, hit_4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
             return _e6;
         }
         case 1u: {
             Mirror _e7 = load_Mirror(offset_9, params, _buffer_sizes);
-            metal::float3 _e8 = mirror_shade(_e7, ray_15, hit_3, secondary_1);
+            metal::float3 _e8 = mirror_shade(_e7, ray_16, hit_4, secondary_1);
             return _e8;
         }
         default: {
@@ -1298,7 +1305,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_16,
+    Ray ray_17,
     Candidate c_2,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1312,8 +1319,8 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_16, c_2, instances, triangles, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_17, c_2, instances, triangles, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
     return _e11;
 }
 
@@ -1334,22 +1341,22 @@ void rt_spawn(
 
 void mirror_rays(
     Mirror m_2,
-    Ray ray_17,
-    Hit hit_4,
+    Ray ray_18,
+    Hit hit_5,
     thread type_15& spawn_dirs,
     thread type_15& spawn_weights,
     thread uint& spawn_count
 ) {
-    metal::float3 _e4 = normalize_vec3f(ray_17.dir);
-    rt_spawn(metal::reflect(_e4, hit_4.normal), m_2.tint, spawn_dirs, spawn_weights, spawn_count);
+    metal::float3 _e4 = normalize_vec3f(ray_18.dir);
+    rt_spawn(metal::reflect(_e4, hit_5.normal), m_2.tint, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
 void dispatch_secondary_rays(
     uint type_id_5,
     uint offset_10,
-    Ray ray_18,
-    Hit hit_5,
+    Ray ray_19,
+    Hit hit_6,
     device type_4 const& params,
     thread type_15& spawn_dirs,
     thread type_15& spawn_weights,
@@ -1357,26 +1364,26 @@ void dispatch_secondary_rays(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Mirror _e3 = load_Mirror(offset_10, params, _buffer_sizes);
-    mirror_rays(_e3, ray_18, hit_5, spawn_dirs, spawn_weights, spawn_count);
+    mirror_rays(_e3, ray_19, hit_6, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
 metal::float3 spawn_origin(
-    Hit hit_6,
+    Hit hit_7,
     metal::float3 dir_2,
     constant FrameUniforms& frame,
     device type_9 const& nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 n_5 = {};
-    n_5 = hit_6.geometric_normal;
+    n_5 = hit_7.geometric_normal;
     metal::float3 _e4 = n_5;
     if (metal::dot(dir_2, _e4) < 0.0) {
         metal::float3 _e8 = n_5;
         n_5 = -(_e8);
     }
     metal::float3 _e11 = n_5;
-    metal::float3 _e12 = offset_origin(hit_6.position, _e11, frame, nodes, _buffer_sizes);
+    metal::float3 _e12 = offset_origin(hit_7.position, _e11, frame, nodes, _buffer_sizes);
     return _e12;
 }
 
@@ -1398,7 +1405,7 @@ metal::float3 trace(
 ) {
     type_16 stack = {};
     uint depth = {};
-    Ray ray_19 = {};
+    Ray ray_20 = {};
     metal::float3 value = {};
     bool have_value = {};
     bool pushed = {};
@@ -1419,7 +1426,7 @@ metal::float3 trace(
     }
     stack = type_16 {};
     depth = 0u;
-    ray_19 = camera_ray;
+    ray_20 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     uint2 loop_bound_5 = uint2(4294967295u);
@@ -1428,32 +1435,32 @@ metal::float3 trace(
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_19;
+            Ray _e28 = ray_20;
             Candidate _e30 = intersect_scene(_e28, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
             if (_e30.slot == NO_HIT) {
-                Ray _e34 = ray_19;
+                Ray _e34 = ray_20;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_19;
+                Ray _e38 = ray_20;
                 metal::float3 _e39 = miss(_e38, frame, params, _buffer_sizes);
                 metal::float3 _e40 = through_medium(_e34, as_type<float>(_e36), _e39, instances, _buffer_sizes);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = instances[_e30.slot];
-                Ray _e46 = ray_19;
+                Ray _e46 = ray_20;
                 Hit _e47 = finish_hit(_e46, _e30, instances, triangles, attributes, _buffer_sizes);
                 pushed = false;
-                uint _e56 = ray_19.depth;
+                uint _e56 = ray_20.depth;
                 uint _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_19;
+                    Ray _e68 = ray_20;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
                     uint _e70 = spawn_count;
-                    uint n_9 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
-                    if (n_9 > 0u) {
-                        Ray _e77 = ray_19;
-                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_9, 0u};
+                    uint n_8 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
+                    if (n_8 > 0u) {
+                        Ray _e77 = ray_20;
+                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_8, 0u};
                         i_3 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u);
                         bool loop_init_3 = true;
@@ -1466,7 +1473,7 @@ metal::float3 trace(
                             }
                             loop_init_3 = false;
                             uint _e88 = i_3;
-                            if (_e88 >= n_9) {
+                            if (_e88 >= n_8) {
                                 break;
                             }
                             uint _e91 = i_3;
@@ -1488,9 +1495,9 @@ metal::float3 trace(
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_19;
+                    Ray _e124 = ray_20;
                     metal::float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-                    Ray _e128 = ray_19;
+                    Ray _e128 = ray_20;
                     metal::float3 _e130 = through_medium(_e128, _e30.t, _e127, instances, _buffer_sizes);
                     value = _e130;
                     have_value = true;
@@ -1522,13 +1529,13 @@ metal::float3 trace(
             uint i_4 = stack.inner[metal::min(top_1, 2u)].next;
             stack.inner[metal::min(top_1, 2u)].next = i_4 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 2u)].ray;
-            Hit hit_8 = stack.inner[metal::min(top_1, 2u)].hit;
+            Hit hit_9 = stack.inner[metal::min(top_1, 2u)].hit;
             metal::float3 dir_4 = stack.inner[metal::min(top_1, 2u)].dirs.inner[metal::min(i_4, 0u)];
             medium = parent.medium;
-            metal::float3 _e209 = spawn_origin(hit_8, dir_4, frame, nodes, _buffer_sizes);
+            metal::float3 _e209 = spawn_origin(hit_9, dir_4, frame, nodes, _buffer_sizes);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_19 = Ray {_e209, 0.0, dir_4, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
+            ray_20 = Ray {_e209, 0.0, dir_4, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
         } else {
             uint _e224 = stack.inner[metal::min(top_1, 2u)].slot;
             GpuInstance inst_10 = instances[_e224];
@@ -1583,7 +1590,7 @@ void render_pixel(
     metal::float3 sum = {};
     uint bad = {};
     uint s = {};
-    Ray ray_20 = {};
+    Ray ray_21 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
     sum = metal::float3(0.0);
@@ -1608,13 +1615,13 @@ void render_pixel(
         uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
-        ray_20 = _e23;
-        ray_20.depth = 0u;
-        ray_20.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_20.origin;
+        ray_21 = _e23;
+        ray_21.depth = 0u;
+        ray_21.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_21.origin;
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, _buffer_sizes);
-        ray_20.medium = _e33;
-        Ray _e34 = ray_20;
+        ray_21.medium = _e33;
+        Ray _e34 = ray_21;
         metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {

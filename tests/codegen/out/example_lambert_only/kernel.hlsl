@@ -364,16 +364,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
     float aspect = (size.x / size.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_19 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_19;
+    const Ray ray_20 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_20;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
-    const Ray ray_20 = _e4;
-    return ray_20;
+    const Ray ray_21 = _e4;
+    return ray_21;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -402,8 +402,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_21 = _e25;
-    return ray_21;
+    const Ray ray_22 = _e25;
+    return ray_22;
 }
 
 float3 safe_inverse(float3 d)
@@ -464,9 +464,9 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
     float t_2 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_5 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
+    bool hit_6 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_5 ? float3(t_2, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_6 ? float3(t_2, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -800,8 +800,8 @@ Hit finish_hit(Ray ray_6, Candidate c_1)
     float3 _e135 = hit.geometric_normal;
     hit.front_face = (dot(ray_6.dir, _e135) < 0.0);
     Hit _e139 = hit;
-    const Hit hit_6 = _e139;
-    return hit_6;
+    const Hit hit_7 = _e139;
+    return hit_7;
 }
 
 uint medium_at(float3 p_3, uint exclude)
@@ -1044,6 +1044,12 @@ Lambert load_Lambert(uint offset_5)
     return lambert;
 }
 
+float3 shading_normal(Ray ray_13, Hit hit_1)
+{
+    float3 ng = faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    return faceforward(hit_1.normal, -(ng), hit_1.normal);
+}
+
 uint light_count_query()
 {
     FrameUniforms _e1 = frame;
@@ -1097,8 +1103,8 @@ float shadow_query(float3 position, float3 normal, float3 dir, float dist)
     }
     float3 _e11 = n_4;
     const float3 _e12 = offset_origin(position, _e11);
-    Ray ray_22 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    const Candidate _e23 = intersect_scene(ray_22, true);
+    Ray ray_23 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    const Candidate _e23 = intersect_scene(ray_23, true);
     return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
@@ -1151,15 +1157,14 @@ LightSample sample_light_query(uint i_1, float3 position_3, float3 normal_3)
     return lightsample_3;
 }
 
-float3 lambert_shade(Lambert m, Ray ray_13, Hit hit_1)
+float3 lambert_shade(Lambert m, Ray ray_14, Hit hit_2)
 {
     float3 color = (float3)0;
     uint i_2 = (uint)0;
 
-    float3 ng = faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
-    float3 n_8 = faceforward(hit_1.normal, -(ng), hit_1.normal);
+    const float3 _e3 = shading_normal(ray_14, hit_2);
     color = (0.0).xxx;
-    const uint _e15 = light_count_query();
+    const uint _e8 = light_count_query();
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
@@ -1167,55 +1172,55 @@ float3 lambert_shade(Lambert m, Ray ray_13, Hit hit_1)
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e37 = i_2;
-            i_2 = (_e37 + 1u);
+            uint _e30 = i_2;
+            i_2 = (_e30 + 1u);
         }
         loop_init_2 = false;
-        uint _e17 = i_2;
-        if ((_e17 >= _e15)) {
+        uint _e10 = i_2;
+        if ((_e10 >= _e8)) {
             break;
         }
-        uint _e19 = i_2;
-        const LightSample _e22 = sample_light_query(_e19, hit_1.position, hit_1.geometric_normal);
-        float3 _e23 = color;
-        color = (_e23 + (((m.albedo * (INV_PI).xxx) * _e22.radiance) * (max(dot(n_8, _e22.dir), 0.0)).xxx));
+        uint _e12 = i_2;
+        const LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
+        float3 _e16 = color;
+        color = (_e16 + (((m.albedo * (INV_PI).xxx) * _e15.radiance) * (max(dot(_e3, _e15.dir), 0.0)).xxx));
     }
-    float3 _e40 = color;
-    return _e40;
+    float3 _e33 = color;
+    return _e33;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_14, Hit hit_2, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_15, Hit hit_3, float3 secondary)
 {
     const Lambert _e3 = load_Lambert(offset_8);
-    const float3 _e4 = lambert_shade(_e3, ray_14, hit_2);
+    const float3 _e4 = lambert_shade(_e3, ray_15, hit_3);
     return _e4;
 }
 
-float3 shade_direct(Ray ray_15, Candidate c_2)
+float3 shade_direct(Ray ray_16, Candidate c_2)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_15, c_2);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_16, c_2);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, (0.0).xxx);
     return _e11;
 }
 
-void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_16, Hit hit_3)
+void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_17, Hit hit_4)
 {
     return;
 }
 
-float3 spawn_origin(Hit hit_4, float3 dir_1)
+float3 spawn_origin(Hit hit_5, float3 dir_1)
 {
     float3 n_5 = (float3)0;
 
-    n_5 = hit_4.geometric_normal;
+    n_5 = hit_5.geometric_normal;
     float3 _e4 = n_5;
     if ((dot(dir_1, _e4) < 0.0)) {
         float3 _e8 = n_5;
         n_5 = -(_e8);
     }
     float3 _e11 = n_5;
-    const float3 _e12 = offset_origin(hit_4.position, _e11);
+    const float3 _e12 = offset_origin(hit_5.position, _e11);
     return _e12;
 }
 
@@ -1246,7 +1251,7 @@ float3 trace(Ray camera_ray)
 {
     Frame stack[4] = (Frame[4])0;
     uint depth = (uint)0;
-    Ray ray_17 = (Ray)0;
+    Ray ray_18 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     bool pushed = (bool)0;
@@ -1268,7 +1273,7 @@ float3 trace(Ray camera_ray)
     }
     stack = ZeroValuearray4_Frame_();
     depth = 0u;
-    ray_17 = camera_ray;
+    ray_18 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
@@ -1277,32 +1282,32 @@ float3 trace(Ray camera_ray)
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_17;
+            Ray _e28 = ray_18;
             const Candidate _e30 = intersect_scene(_e28, false);
             if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_17;
+                Ray _e34 = ray_18;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_17;
+                Ray _e38 = ray_18;
                 const float3 _e39 = miss(_e38);
                 const float3 _e40 = through_medium(_e34, asfloat(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(_e30.slot*128+0)), asfloat(instances.Load4(_e30.slot*128+16)), asfloat(instances.Load4(_e30.slot*128+32)), asfloat(instances.Load4(_e30.slot*128+48)), asfloat(instances.Load4(_e30.slot*128+64)), asfloat(instances.Load4(_e30.slot*128+80)), asuint(instances.Load(_e30.slot*128+96)), asuint(instances.Load(_e30.slot*128+100)), asuint(instances.Load(_e30.slot*128+104)), asuint(instances.Load(_e30.slot*128+108)), asuint(instances.Load(_e30.slot*128+112)), asuint(instances.Load(_e30.slot*128+116)), asuint(instances.Load(_e30.slot*128+120)), asuint(instances.Load(_e30.slot*128+124)));
-                Ray _e46 = ray_17;
+                Ray _e46 = ray_18;
                 const Hit _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                uint _e56 = ray_17.depth;
+                uint _e56 = ray_18.depth;
                 uint _e60 = depth;
                 if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_17;
+                    Ray _e68 = ray_18;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_9 = min(min(_e70, 1u), MAX_SPAWN);
-                    if ((n_9 > 0u)) {
-                        Ray _e77 = ray_17;
-                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_9, 0u);
+                    uint n_8 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_8 > 0u)) {
+                        Ray _e77 = ray_18;
+                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_8, 0u);
                         i_3 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
                         bool loop_init_3 = true;
@@ -1315,7 +1320,7 @@ float3 trace(Ray camera_ray)
                             }
                             loop_init_3 = false;
                             uint _e88 = i_3;
-                            if ((_e88 >= n_9)) {
+                            if ((_e88 >= n_8)) {
                                 break;
                             }
                             uint _e91 = i_3;
@@ -1337,9 +1342,9 @@ float3 trace(Ray camera_ray)
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_17;
+                    Ray _e124 = ray_18;
                     const float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, (0.0).xxx);
-                    Ray _e128 = ray_17;
+                    Ray _e128 = ray_18;
                     const float3 _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1371,13 +1376,13 @@ float3 trace(Ray camera_ray)
             uint i_4 = stack[min(uint(min(top_1, 3u)), 3u)].next;
             stack[min(uint(min(top_1, 3u)), 3u)].next = (i_4 + 1u);
             Ray parent = stack[min(uint(min(top_1, 3u)), 3u)].ray;
-            Hit hit_7 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
+            Hit hit_8 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
             float3 dir_3 = stack[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_4, 0u)), 0u)];
             medium = parent.medium;
-            const float3 _e209 = spawn_origin(hit_7, dir_3);
+            const float3 _e209 = spawn_origin(hit_8, dir_3);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_17 = ConstructRay(_e209, 0.0, dir_3, asfloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_18 = ConstructRay(_e209, 0.0, dir_3, asfloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             uint _e224 = stack[min(uint(min(top_1, 3u)), 3u)].slot;
             GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e224*128+0)), asfloat(instances.Load4(_e224*128+16)), asfloat(instances.Load4(_e224*128+32)), asfloat(instances.Load4(_e224*128+48)), asfloat(instances.Load4(_e224*128+64)), asfloat(instances.Load4(_e224*128+80)), asuint(instances.Load(_e224*128+96)), asuint(instances.Load(_e224*128+100)), asuint(instances.Load(_e224*128+104)), asuint(instances.Load(_e224*128+108)), asuint(instances.Load(_e224*128+112)), asuint(instances.Load(_e224*128+116)), asuint(instances.Load(_e224*128+120)), asuint(instances.Load(_e224*128+124)));
@@ -1412,7 +1417,7 @@ void render_pixel(uint2 pixel_3)
     float3 sum = (float3)0;
     uint bad = (uint)0;
     uint s = (uint)0;
-    Ray ray_18 = (Ray)0;
+    Ray ray_19 = (Ray)0;
 
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
@@ -1438,13 +1443,13 @@ void render_pixel(uint2 pixel_3)
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_18 = _e23;
-        ray_18.depth = 0u;
-        ray_18.kind = RAY_CAMERA;
-        float3 _e31 = ray_18.origin;
+        ray_19 = _e23;
+        ray_19.depth = 0u;
+        ray_19.kind = RAY_CAMERA;
+        float3 _e31 = ray_19.origin;
         const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_18.medium = _e33;
-        Ray _e34 = ray_18;
+        ray_19.medium = _e33;
+        Ray _e34 = ray_19;
         const float3 _e35 = trace(_e34);
         const bool3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

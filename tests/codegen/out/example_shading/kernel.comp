@@ -374,9 +374,9 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
     float t_4 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_9 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
+    bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_9 ? vec3(t_4, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_10 ? vec3(t_4, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
@@ -853,6 +853,11 @@ BlinnPhong load_BlinnPhong(uint offset_5) {
     return BlinnPhong(_e5, vec3(uintBitsToFloat(_e10), uintBitsToFloat(_e16), uintBitsToFloat(_e22)), vec3(uintBitsToFloat(_e29), uintBitsToFloat(_e35), uintBitsToFloat(_e41)), uintBitsToFloat(_e48), vec3(uintBitsToFloat(_e54), uintBitsToFloat(_e60), uintBitsToFloat(_e66)), vec2(uintBitsToFloat(_e73), uintBitsToFloat(_e79)));
 }
 
+vec3 shading_normal(Ray ray_13, Hit hit_1) {
+    vec3 ng = faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    return faceforward(hit_1.normal, -(ng), hit_1.normal);
+}
+
 int i32_from_f32_(float x_1) {
     return (((floatBitsToUint(x_1) & 2147483647u) > 2139095040u) ? 0 : int(min(max(x_1, -2147483600.0), 2147483500.0)));
 }
@@ -955,8 +960,8 @@ float shadow_query(vec3 position, vec3 normal, vec3 dir, float dist) {
     }
     vec3 _e11 = n_4;
     vec3 _e12 = offset_origin(position, _e11);
-    Ray ray_23 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    Candidate _e23 = intersect_scene(ray_23, true);
+    Ray ray_24 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    Candidate _e23 = intersect_scene(ray_24, true);
     return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
@@ -993,41 +998,40 @@ LightSample sample_light_query(uint i_1, vec3 position_3, vec3 normal_3) {
     return _e27;
 }
 
-vec3 blinn_phong_shade(BlinnPhong m, Ray ray_13, Hit hit_1) {
+vec3 blinn_phong_shade(BlinnPhong m, Ray ray_14, Hit hit_2) {
     vec3 color = vec3(0.0);
     uint i_2 = 0u;
-    vec3 ng = faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
-    vec3 n_8 = faceforward(hit_1.normal, -(ng), hit_1.normal);
-    vec3 _e12 = normalize_vec3f(ray_13.dir);
-    vec3 v_2 = -(_e12);
-    vec4 _e19 = sample_texture(m.texture_, (hit_1.uv * m.uv_scale));
-    vec3 kd = (m.diffuse * _e19.xyz);
+    vec3 _e3 = shading_normal(ray_14, hit_2);
+    vec3 _e5 = normalize_vec3f(ray_14.dir);
+    vec3 v_2 = -(_e5);
+    vec4 _e12 = sample_texture(m.texture_, (hit_2.uv * m.uv_scale));
+    vec3 kd = (m.diffuse * _e12.xyz);
     float s_4 = max(m.shininess, 0.0);
     float norm = ((s_4 + 8.0) * (INV_PI / 8.0));
     color = (m.ambient * kd);
-    uint _e35 = light_count_query();
+    uint _e28 = light_count_query();
     i_2 = 0u;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e68 = i_2;
-            i_2 = (_e68 + 1u);
+            uint _e61 = i_2;
+            i_2 = (_e61 + 1u);
         }
         loop_init_2 = false;
-        uint _e37 = i_2;
-        if ((_e37 >= _e35)) {
+        uint _e30 = i_2;
+        if ((_e30 >= _e28)) {
             break;
         }
-        uint _e39 = i_2;
-        LightSample _e42 = sample_light_query(_e39, hit_1.position, hit_1.geometric_normal);
-        float ndl = max(dot(n_8, _e42.dir), 0.0);
-        vec3 _e49 = normalize_vec3f((_e42.dir + v_2));
-        float highlight = (pow(max(dot(n_8, _e49), 0.0), s_4) * norm);
-        vec3 _e55 = color;
-        color = (_e55 + ((_e42.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m.specular * vec3(highlight)))));
+        uint _e32 = i_2;
+        LightSample _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal);
+        float ndl = max(dot(_e3, _e35.dir), 0.0);
+        vec3 _e42 = normalize_vec3f((_e35.dir + v_2));
+        float highlight = (pow(max(dot(_e3, _e42), 0.0), s_4) * norm);
+        vec3 _e48 = color;
+        color = (_e48 + ((_e35.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m.specular * vec3(highlight)))));
     }
-    vec3 _e71 = color;
-    return _e71;
+    vec3 _e64 = color;
+    return _e64;
 }
 
 Lambert load_Lambert(uint offset_8) {
@@ -1037,32 +1041,31 @@ Lambert load_Lambert(uint offset_8) {
     return Lambert(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 lambert_shade(Lambert m_1, Ray ray_14, Hit hit_2) {
+vec3 lambert_shade(Lambert m_1, Ray ray_15, Hit hit_3) {
     vec3 color_1 = vec3(0.0);
     uint i_3 = 0u;
-    vec3 ng_1 = faceforward(hit_2.geometric_normal, ray_14.dir, hit_2.geometric_normal);
-    vec3 n_9 = faceforward(hit_2.normal, -(ng_1), hit_2.normal);
+    vec3 _e3 = shading_normal(ray_15, hit_3);
     color_1 = vec3(0.0);
-    uint _e15 = light_count_query();
+    uint _e8 = light_count_query();
     i_3 = 0u;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e37 = i_3;
-            i_3 = (_e37 + 1u);
+            uint _e30 = i_3;
+            i_3 = (_e30 + 1u);
         }
         loop_init_3 = false;
-        uint _e17 = i_3;
-        if ((_e17 >= _e15)) {
+        uint _e10 = i_3;
+        if ((_e10 >= _e8)) {
             break;
         }
-        uint _e19 = i_3;
-        LightSample _e22 = sample_light_query(_e19, hit_2.position, hit_2.geometric_normal);
-        vec3 _e23 = color_1;
-        color_1 = (_e23 + (((m_1.albedo * vec3(INV_PI)) * _e22.radiance) * vec3(max(dot(n_9, _e22.dir), 0.0))));
+        uint _e12 = i_3;
+        LightSample _e15 = sample_light_query(_e12, hit_3.position, hit_3.geometric_normal);
+        vec3 _e16 = color_1;
+        color_1 = (_e16 + (((m_1.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0.0))));
     }
-    vec3 _e40 = color_1;
-    return _e40;
+    vec3 _e33 = color_1;
+    return _e33;
 }
 
 Mirror load_Mirror(uint offset_9) {
@@ -1072,7 +1075,7 @@ Mirror load_Mirror(uint offset_9) {
     return Mirror(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 mirror_shade(Mirror m_2, Ray ray_15, Hit hit_3, vec3 secondary) {
+vec3 mirror_shade(Mirror m_2, Ray ray_16, Hit hit_4, vec3 secondary) {
     return secondary;
 }
 
@@ -1087,37 +1090,37 @@ UnlitTexture load_UnlitTexture(uint offset_10) {
     return UnlitTexture(_e5, vec3(uintBitsToFloat(_e10), uintBitsToFloat(_e16), uintBitsToFloat(_e22)), vec2(uintBitsToFloat(_e29), uintBitsToFloat(_e35)), _e42);
 }
 
-vec3 unlit_texture_shade(UnlitTexture m_3, Ray ray_16, Hit hit_4) {
+vec3 unlit_texture_shade(UnlitTexture m_3, Ray ray_17, Hit hit_5) {
     vec2 uv_1 = vec2(0.0);
-    uv_1 = hit_4.uv;
+    uv_1 = hit_5.uv;
     if ((m_3.planar == 1u)) {
-        uv_1 = vec2(hit_4.position.x, -(hit_4.position.y));
+        uv_1 = vec2(hit_5.position.x, -(hit_5.position.y));
     }
     vec2 _e14 = uv_1;
     vec4 _e17 = sample_texture(m_3.texture_, (_e14 * m_3.uv_scale));
     return (_e17.xyz * m_3.tint);
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_11, Ray ray_17, Hit hit_5, vec3 secondary_1) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_11, Ray ray_18, Hit hit_6, vec3 secondary_1) {
     switch(type_id_4) {
         case 0u: {
             BlinnPhong _e5 = load_BlinnPhong(offset_11);
-            vec3 _e6 = blinn_phong_shade(_e5, ray_17, hit_5);
+            vec3 _e6 = blinn_phong_shade(_e5, ray_18, hit_6);
             return _e6;
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_11);
-            vec3 _e8 = lambert_shade(_e7, ray_17, hit_5);
+            vec3 _e8 = lambert_shade(_e7, ray_18, hit_6);
             return _e8;
         }
         case 2u: {
             Mirror _e9 = load_Mirror(offset_11);
-            vec3 _e10 = mirror_shade(_e9, ray_17, hit_5, secondary_1);
+            vec3 _e10 = mirror_shade(_e9, ray_18, hit_6, secondary_1);
             return _e10;
         }
         case 3u: {
             UnlitTexture _e11 = load_UnlitTexture(offset_11);
-            vec3 _e12 = unlit_texture_shade(_e11, ray_17, hit_5);
+            vec3 _e12 = unlit_texture_shade(_e11, ray_18, hit_6);
             return _e12;
         }
         default: {
@@ -1127,10 +1130,10 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_11, Ray ray_17, Hit hit_5,
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_18, Candidate c_3) {
+vec3 shade_direct(Ray ray_19, Candidate c_3) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_3.slot];
-    Hit _e6 = finish_hit(ray_18, c_3);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_19, c_3);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, vec3(0.0));
     return _e11;
 }
 
@@ -1143,35 +1146,35 @@ void rt_spawn(vec3 dir_1, vec3 weight) {
     }
 }
 
-void mirror_rays(Mirror m_4, Ray ray_19, Hit hit_6) {
-    vec3 _e4 = normalize_vec3f(ray_19.dir);
-    rt_spawn(reflect(_e4, hit_6.normal), m_4.tint);
+void mirror_rays(Mirror m_4, Ray ray_20, Hit hit_7) {
+    vec3 _e4 = normalize_vec3f(ray_20.dir);
+    rt_spawn(reflect(_e4, hit_7.normal), m_4.tint);
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_5, uint offset_12, Ray ray_20, Hit hit_7) {
+void dispatch_secondary_rays(uint type_id_5, uint offset_12, Ray ray_21, Hit hit_8) {
     Mirror _e3 = load_Mirror(offset_12);
-    mirror_rays(_e3, ray_20, hit_7);
+    mirror_rays(_e3, ray_21, hit_8);
     return;
 }
 
-vec3 spawn_origin(Hit hit_8, vec3 dir_2) {
+vec3 spawn_origin(Hit hit_9, vec3 dir_2) {
     vec3 n_5 = vec3(0.0);
-    n_5 = hit_8.geometric_normal;
+    n_5 = hit_9.geometric_normal;
     vec3 _e4 = n_5;
     if ((dot(dir_2, _e4) < 0.0)) {
         vec3 _e8 = n_5;
         n_5 = -(_e8);
     }
     vec3 _e11 = n_5;
-    vec3 _e12 = offset_origin(hit_8.position, _e11);
+    vec3 _e12 = offset_origin(hit_9.position, _e11);
     return _e12;
 }
 
 vec3 trace(Ray camera_ray) {
     Frame stack[3] = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_21 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_22 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     bool pushed = false;
@@ -1192,38 +1195,38 @@ vec3 trace(Ray camera_ray) {
     }
     stack = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_21 = camera_ray;
+    ray_22 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     while(true) {
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_21;
+            Ray _e28 = ray_22;
             Candidate _e30 = intersect_scene(_e28, false);
             if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_21;
+                Ray _e34 = ray_22;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_21;
+                Ray _e38 = ray_22;
                 vec3 _e39 = miss(_e38);
                 vec3 _e40 = through_medium(_e34, uintBitsToFloat(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = _group_0_binding_3_cs[_e30.slot];
-                Ray _e46 = ray_21;
+                Ray _e46 = ray_22;
                 Hit _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                uint _e56 = ray_21.depth;
+                uint _e56 = ray_22.depth;
                 uint _e60 = depth;
                 if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_21;
+                    Ray _e68 = ray_22;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_10 = min(min(_e70, 1u), MAX_SPAWN);
-                    if ((n_10 > 0u)) {
-                        Ray _e77 = ray_21;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_10, 0u);
+                    uint n_8 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_8 > 0u)) {
+                        Ray _e77 = ray_22;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_8, 0u);
                         i_4 = 0u;
                         bool loop_init_4 = true;
                         while(true) {
@@ -1233,7 +1236,7 @@ vec3 trace(Ray camera_ray) {
                             }
                             loop_init_4 = false;
                             uint _e88 = i_4;
-                            if ((_e88 >= n_10)) {
+                            if ((_e88 >= n_8)) {
                                 break;
                             }
                             uint _e91 = i_4;
@@ -1255,9 +1258,9 @@ vec3 trace(Ray camera_ray) {
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_21;
+                    Ray _e124 = ray_22;
                     vec3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0.0));
-                    Ray _e128 = ray_21;
+                    Ray _e128 = ray_22;
                     vec3 _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1289,13 +1292,13 @@ vec3 trace(Ray camera_ray) {
             uint i_5 = stack[min(top_1, 2u)].next;
             stack[min(top_1, 2u)].next = (i_5 + 1u);
             Ray parent = stack[min(top_1, 2u)].ray;
-            Hit hit_10 = stack[min(top_1, 2u)].hit;
+            Hit hit_11 = stack[min(top_1, 2u)].hit;
             vec3 dir_4 = stack[min(top_1, 2u)].dirs[min(i_5, 0u)];
             medium = parent.medium;
-            vec3 _e209 = spawn_origin(hit_10, dir_4);
+            vec3 _e209 = spawn_origin(hit_11, dir_4);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_21 = Ray(_e209, 0.0, dir_4, uintBitsToFloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_22 = Ray(_e209, 0.0, dir_4, uintBitsToFloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             uint _e224 = stack[min(top_1, 2u)].slot;
             GpuInstance inst_10 = _group_0_binding_3_cs[_e224];
@@ -1327,7 +1330,7 @@ void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s = 0u;
-    Ray ray_22 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_23 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_1 = _group_0_binding_1_cs;
     sum = vec3(0.0);
@@ -1349,13 +1352,13 @@ void render_pixel(uvec2 pixel_3) {
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        vec3 _e31 = ray_22.origin;
+        ray_23 = _e23;
+        ray_23.depth = 0u;
+        ray_23.kind = RAY_CAMERA;
+        vec3 _e31 = ray_23.origin;
         uint _e33 = medium_at(_e31, NO_HIT);
-        ray_22.medium = _e33;
-        Ray _e34 = ray_22;
+        ray_23.medium = _e33;
+        Ray _e34 = ray_23;
         vec3 _e35 = trace(_e34);
         bvec3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

@@ -402,16 +402,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
     float aspect = (size.x / size.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_23 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_23;
+    const Ray ray_24 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_24;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
-    const Ray ray_24 = _e4;
-    return ray_24;
+    const Ray ray_25 = _e4;
+    return ray_25;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -440,8 +440,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_25 = _e25;
-    return ray_25;
+    const Ray ray_26 = _e25;
+    return ray_26;
 }
 
 float3 safe_inverse(float3 d)
@@ -502,9 +502,9 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
     float t_4 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_9 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
+    bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_9 ? float3(t_4, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_10 ? float3(t_4, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -838,8 +838,8 @@ Hit finish_hit(Ray ray_6, Candidate c_1)
     float3 _e135 = hit.geometric_normal;
     hit.front_face = (dot(ray_6.dir, _e135) < 0.0);
     Hit _e139 = hit;
-    const Hit hit_10 = _e139;
-    return hit_10;
+    const Hit hit_11 = _e139;
+    return hit_11;
 }
 
 uint medium_at(float3 p_3, uint exclude)
@@ -1110,6 +1110,12 @@ BlinnPhong load_BlinnPhong(uint offset_5)
     return blinnphong;
 }
 
+float3 shading_normal(Ray ray_13, Hit hit_1)
+{
+    float3 ng = faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    return faceforward(hit_1.normal, -(ng), hit_1.normal);
+}
+
 int naga_f2i32(float value) {
     return int(clamp(value, -2147483600.0, 2147483500.0));
 }
@@ -1241,8 +1247,8 @@ float shadow_query(float3 position, float3 normal, float3 dir, float dist)
     }
     float3 _e11 = n_4;
     const float3 _e12 = offset_origin(position, _e11);
-    Ray ray_26 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    const Candidate _e23 = intersect_scene(ray_26, true);
+    Ray ray_27 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    const Candidate _e23 = intersect_scene(ray_27, true);
     return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
@@ -1295,21 +1301,20 @@ LightSample sample_light_query(uint i_1, float3 position_3, float3 normal_3)
     return lightsample_3;
 }
 
-float3 blinn_phong_shade(BlinnPhong m, Ray ray_13, Hit hit_1)
+float3 blinn_phong_shade(BlinnPhong m, Ray ray_14, Hit hit_2)
 {
     float3 color = (float3)0;
     uint i_2 = (uint)0;
 
-    float3 ng = faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
-    float3 n_8 = faceforward(hit_1.normal, -(ng), hit_1.normal);
-    const float3 _e12 = normalize_vec3f(ray_13.dir);
-    float3 v_2 = -(_e12);
-    const float4 _e19 = sample_texture(m.texture_, (hit_1.uv * m.uv_scale));
-    float3 kd = (m.diffuse * _e19.xyz);
+    const float3 _e3 = shading_normal(ray_14, hit_2);
+    const float3 _e5 = normalize_vec3f(ray_14.dir);
+    float3 v_2 = -(_e5);
+    const float4 _e12 = sample_texture(m.texture_, (hit_2.uv * m.uv_scale));
+    float3 kd = (m.diffuse * _e12.xyz);
     float s_4 = max(m.shininess, 0.0);
     float norm = ((s_4 + 8.0) * (INV_PI / 8.0));
     color = (m.ambient * kd);
-    const uint _e35 = light_count_query();
+    const uint _e28 = light_count_query();
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
@@ -1317,24 +1322,24 @@ float3 blinn_phong_shade(BlinnPhong m, Ray ray_13, Hit hit_1)
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e68 = i_2;
-            i_2 = (_e68 + 1u);
+            uint _e61 = i_2;
+            i_2 = (_e61 + 1u);
         }
         loop_init_2 = false;
-        uint _e37 = i_2;
-        if ((_e37 >= _e35)) {
+        uint _e30 = i_2;
+        if ((_e30 >= _e28)) {
             break;
         }
-        uint _e39 = i_2;
-        const LightSample _e42 = sample_light_query(_e39, hit_1.position, hit_1.geometric_normal);
-        float ndl = max(dot(n_8, _e42.dir), 0.0);
-        const float3 _e49 = normalize_vec3f((_e42.dir + v_2));
-        float highlight = (pow(max(dot(n_8, _e49), 0.0), s_4) * norm);
-        float3 _e55 = color;
-        color = (_e55 + ((_e42.radiance * (ndl).xxx) * ((kd * (INV_PI).xxx) + (m.specular * (highlight).xxx))));
+        uint _e32 = i_2;
+        const LightSample _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal);
+        float ndl = max(dot(_e3, _e35.dir), 0.0);
+        const float3 _e42 = normalize_vec3f((_e35.dir + v_2));
+        float highlight = (pow(max(dot(_e3, _e42), 0.0), s_4) * norm);
+        float3 _e48 = color;
+        color = (_e48 + ((_e35.radiance * (ndl).xxx) * ((kd * (INV_PI).xxx) + (m.specular * (highlight).xxx))));
     }
-    float3 _e71 = color;
-    return _e71;
+    float3 _e64 = color;
+    return _e64;
 }
 
 Lambert ConstructLambert(float3 arg0) {
@@ -1352,15 +1357,14 @@ Lambert load_Lambert(uint offset_8)
     return lambert;
 }
 
-float3 lambert_shade(Lambert m_1, Ray ray_14, Hit hit_2)
+float3 lambert_shade(Lambert m_1, Ray ray_15, Hit hit_3)
 {
     float3 color_1 = (float3)0;
     uint i_3 = (uint)0;
 
-    float3 ng_1 = faceforward(hit_2.geometric_normal, ray_14.dir, hit_2.geometric_normal);
-    float3 n_9 = faceforward(hit_2.normal, -(ng_1), hit_2.normal);
+    const float3 _e3 = shading_normal(ray_15, hit_3);
     color_1 = (0.0).xxx;
-    const uint _e15 = light_count_query();
+    const uint _e8 = light_count_query();
     i_3 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
@@ -1368,21 +1372,21 @@ float3 lambert_shade(Lambert m_1, Ray ray_14, Hit hit_2)
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e37 = i_3;
-            i_3 = (_e37 + 1u);
+            uint _e30 = i_3;
+            i_3 = (_e30 + 1u);
         }
         loop_init_3 = false;
-        uint _e17 = i_3;
-        if ((_e17 >= _e15)) {
+        uint _e10 = i_3;
+        if ((_e10 >= _e8)) {
             break;
         }
-        uint _e19 = i_3;
-        const LightSample _e22 = sample_light_query(_e19, hit_2.position, hit_2.geometric_normal);
-        float3 _e23 = color_1;
-        color_1 = (_e23 + (((m_1.albedo * (INV_PI).xxx) * _e22.radiance) * (max(dot(n_9, _e22.dir), 0.0)).xxx));
+        uint _e12 = i_3;
+        const LightSample _e15 = sample_light_query(_e12, hit_3.position, hit_3.geometric_normal);
+        float3 _e16 = color_1;
+        color_1 = (_e16 + (((m_1.albedo * (INV_PI).xxx) * _e15.radiance) * (max(dot(_e3, _e15.dir), 0.0)).xxx));
     }
-    float3 _e40 = color_1;
-    return _e40;
+    float3 _e33 = color_1;
+    return _e33;
 }
 
 Mirror ConstructMirror(float3 arg0) {
@@ -1400,7 +1404,7 @@ Mirror load_Mirror(uint offset_9)
     return mirror;
 }
 
-float3 mirror_shade(Mirror m_2, Ray ray_15, Hit hit_3, float3 secondary)
+float3 mirror_shade(Mirror m_2, Ray ray_16, Hit hit_4, float3 secondary)
 {
     return secondary;
 }
@@ -1427,40 +1431,40 @@ UnlitTexture load_UnlitTexture(uint offset_10)
     return unlittexture;
 }
 
-float3 unlit_texture_shade(UnlitTexture m_3, Ray ray_16, Hit hit_4)
+float3 unlit_texture_shade(UnlitTexture m_3, Ray ray_17, Hit hit_5)
 {
     float2 uv_1 = (float2)0;
 
-    uv_1 = hit_4.uv;
+    uv_1 = hit_5.uv;
     if ((m_3.planar == 1u)) {
-        uv_1 = float2(hit_4.position.x, -(hit_4.position.y));
+        uv_1 = float2(hit_5.position.x, -(hit_5.position.y));
     }
     float2 _e14 = uv_1;
     const float4 _e17 = sample_texture(m_3.texture_, (_e14 * m_3.uv_scale));
     return (_e17.xyz * m_3.tint);
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_11, Ray ray_17, Hit hit_5, float3 secondary_1)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_11, Ray ray_18, Hit hit_6, float3 secondary_1)
 {
     switch(type_id_4) {
         case 0u: {
             const BlinnPhong _e5 = load_BlinnPhong(offset_11);
-            const float3 _e6 = blinn_phong_shade(_e5, ray_17, hit_5);
+            const float3 _e6 = blinn_phong_shade(_e5, ray_18, hit_6);
             return _e6;
         }
         case 1u: {
             const Lambert _e7 = load_Lambert(offset_11);
-            const float3 _e8 = lambert_shade(_e7, ray_17, hit_5);
+            const float3 _e8 = lambert_shade(_e7, ray_18, hit_6);
             return _e8;
         }
         case 2u: {
             const Mirror _e9 = load_Mirror(offset_11);
-            const float3 _e10 = mirror_shade(_e9, ray_17, hit_5, secondary_1);
+            const float3 _e10 = mirror_shade(_e9, ray_18, hit_6, secondary_1);
             return _e10;
         }
         case 3u: {
             const UnlitTexture _e11 = load_UnlitTexture(offset_11);
-            const float3 _e12 = unlit_texture_shade(_e11, ray_17, hit_5);
+            const float3 _e12 = unlit_texture_shade(_e11, ray_18, hit_6);
             return _e12;
         }
         default: {
@@ -1470,11 +1474,11 @@ float3 dispatch_closest_hit(uint type_id_4, uint offset_11, Ray ray_17, Hit hit_
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_18, Candidate c_3)
+float3 shade_direct(Ray ray_19, Candidate c_3)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_3.slot*128+0)), asfloat(instances.Load4(c_3.slot*128+16)), asfloat(instances.Load4(c_3.slot*128+32)), asfloat(instances.Load4(c_3.slot*128+48)), asfloat(instances.Load4(c_3.slot*128+64)), asfloat(instances.Load4(c_3.slot*128+80)), asuint(instances.Load(c_3.slot*128+96)), asuint(instances.Load(c_3.slot*128+100)), asuint(instances.Load(c_3.slot*128+104)), asuint(instances.Load(c_3.slot*128+108)), asuint(instances.Load(c_3.slot*128+112)), asuint(instances.Load(c_3.slot*128+116)), asuint(instances.Load(c_3.slot*128+120)), asuint(instances.Load(c_3.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_18, c_3);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_19, c_3);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, (0.0).xxx);
     return _e11;
 }
 
@@ -1488,32 +1492,32 @@ void rt_spawn(float3 dir_1, float3 weight)
     }
 }
 
-void mirror_rays(Mirror m_4, Ray ray_19, Hit hit_6)
+void mirror_rays(Mirror m_4, Ray ray_20, Hit hit_7)
 {
-    const float3 _e4 = normalize_vec3f(ray_19.dir);
-    rt_spawn(reflect(_e4, hit_6.normal), m_4.tint);
+    const float3 _e4 = normalize_vec3f(ray_20.dir);
+    rt_spawn(reflect(_e4, hit_7.normal), m_4.tint);
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_5, uint offset_12, Ray ray_20, Hit hit_7)
+void dispatch_secondary_rays(uint type_id_5, uint offset_12, Ray ray_21, Hit hit_8)
 {
     const Mirror _e3 = load_Mirror(offset_12);
-    mirror_rays(_e3, ray_20, hit_7);
+    mirror_rays(_e3, ray_21, hit_8);
     return;
 }
 
-float3 spawn_origin(Hit hit_8, float3 dir_2)
+float3 spawn_origin(Hit hit_9, float3 dir_2)
 {
     float3 n_5 = (float3)0;
 
-    n_5 = hit_8.geometric_normal;
+    n_5 = hit_9.geometric_normal;
     float3 _e4 = n_5;
     if ((dot(dir_2, _e4) < 0.0)) {
         float3 _e8 = n_5;
         n_5 = -(_e8);
     }
     float3 _e11 = n_5;
-    const float3 _e12 = offset_origin(hit_8.position, _e11);
+    const float3 _e12 = offset_origin(hit_9.position, _e11);
     return _e12;
 }
 
@@ -1544,7 +1548,7 @@ float3 trace(Ray camera_ray)
 {
     Frame stack[3] = (Frame[3])0;
     uint depth = (uint)0;
-    Ray ray_21 = (Ray)0;
+    Ray ray_22 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     bool pushed = (bool)0;
@@ -1566,7 +1570,7 @@ float3 trace(Ray camera_ray)
     }
     stack = ZeroValuearray3_Frame_();
     depth = 0u;
-    ray_21 = camera_ray;
+    ray_22 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
@@ -1575,32 +1579,32 @@ float3 trace(Ray camera_ray)
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_21;
+            Ray _e28 = ray_22;
             const Candidate _e30 = intersect_scene(_e28, false);
             if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_21;
+                Ray _e34 = ray_22;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_21;
+                Ray _e38 = ray_22;
                 const float3 _e39 = miss(_e38);
                 const float3 _e40 = through_medium(_e34, asfloat(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(_e30.slot*128+0)), asfloat(instances.Load4(_e30.slot*128+16)), asfloat(instances.Load4(_e30.slot*128+32)), asfloat(instances.Load4(_e30.slot*128+48)), asfloat(instances.Load4(_e30.slot*128+64)), asfloat(instances.Load4(_e30.slot*128+80)), asuint(instances.Load(_e30.slot*128+96)), asuint(instances.Load(_e30.slot*128+100)), asuint(instances.Load(_e30.slot*128+104)), asuint(instances.Load(_e30.slot*128+108)), asuint(instances.Load(_e30.slot*128+112)), asuint(instances.Load(_e30.slot*128+116)), asuint(instances.Load(_e30.slot*128+120)), asuint(instances.Load(_e30.slot*128+124)));
-                Ray _e46 = ray_21;
+                Ray _e46 = ray_22;
                 const Hit _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                uint _e56 = ray_21.depth;
+                uint _e56 = ray_22.depth;
                 uint _e60 = depth;
                 if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_21;
+                    Ray _e68 = ray_22;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_10 = min(min(_e70, 1u), MAX_SPAWN);
-                    if ((n_10 > 0u)) {
-                        Ray _e77 = ray_21;
-                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_10, 0u);
+                    uint n_8 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_8 > 0u)) {
+                        Ray _e77 = ray_22;
+                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_8, 0u);
                         i_4 = 0u;
                         uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
                         bool loop_init_4 = true;
@@ -1613,7 +1617,7 @@ float3 trace(Ray camera_ray)
                             }
                             loop_init_4 = false;
                             uint _e88 = i_4;
-                            if ((_e88 >= n_10)) {
+                            if ((_e88 >= n_8)) {
                                 break;
                             }
                             uint _e91 = i_4;
@@ -1635,9 +1639,9 @@ float3 trace(Ray camera_ray)
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_21;
+                    Ray _e124 = ray_22;
                     const float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, (0.0).xxx);
-                    Ray _e128 = ray_21;
+                    Ray _e128 = ray_22;
                     const float3 _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1669,13 +1673,13 @@ float3 trace(Ray camera_ray)
             uint i_5 = stack[min(uint(min(top_1, 2u)), 2u)].next;
             stack[min(uint(min(top_1, 2u)), 2u)].next = (i_5 + 1u);
             Ray parent = stack[min(uint(min(top_1, 2u)), 2u)].ray;
-            Hit hit_11 = stack[min(uint(min(top_1, 2u)), 2u)].hit;
+            Hit hit_12 = stack[min(uint(min(top_1, 2u)), 2u)].hit;
             float3 dir_4 = stack[min(uint(min(top_1, 2u)), 2u)].dirs[min(uint(min(i_5, 0u)), 0u)];
             medium = parent.medium;
-            const float3 _e209 = spawn_origin(hit_11, dir_4);
+            const float3 _e209 = spawn_origin(hit_12, dir_4);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_21 = ConstructRay(_e209, 0.0, dir_4, asfloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_22 = ConstructRay(_e209, 0.0, dir_4, asfloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             uint _e224 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
             GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e224*128+0)), asfloat(instances.Load4(_e224*128+16)), asfloat(instances.Load4(_e224*128+32)), asfloat(instances.Load4(_e224*128+48)), asfloat(instances.Load4(_e224*128+64)), asfloat(instances.Load4(_e224*128+80)), asuint(instances.Load(_e224*128+96)), asuint(instances.Load(_e224*128+100)), asuint(instances.Load(_e224*128+104)), asuint(instances.Load(_e224*128+108)), asuint(instances.Load(_e224*128+112)), asuint(instances.Load(_e224*128+116)), asuint(instances.Load(_e224*128+120)), asuint(instances.Load(_e224*128+124)));
@@ -1710,7 +1714,7 @@ void render_pixel(uint2 pixel_3)
     float3 sum = (float3)0;
     uint bad = (uint)0;
     uint s = (uint)0;
-    Ray ray_22 = (Ray)0;
+    Ray ray_23 = (Ray)0;
 
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
@@ -1736,13 +1740,13 @@ void render_pixel(uint2 pixel_3)
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        float3 _e31 = ray_22.origin;
+        ray_23 = _e23;
+        ray_23.depth = 0u;
+        ray_23.kind = RAY_CAMERA;
+        float3 _e31 = ray_23.origin;
         const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_22.medium = _e33;
-        Ray _e34 = ray_22;
+        ray_23.medium = _e33;
+        Ray _e34 = ray_23;
         const float3 _e35 = trace(_e34);
         const bool3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

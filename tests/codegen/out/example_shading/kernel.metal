@@ -465,9 +465,9 @@ metal::float3 hit_triangle(
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
     float t_4 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_9 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1);
+    bool hit_10 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_9 ? metal::float3(t_4, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_10 ? metal::float3(t_4, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -1089,6 +1089,14 @@ BlinnPhong load_BlinnPhong(
     return BlinnPhong {_e5, {}, metal::float3(as_type<float>(_e10), as_type<float>(_e16), as_type<float>(_e22)), metal::float3(as_type<float>(_e29), as_type<float>(_e35), as_type<float>(_e41)), as_type<float>(_e48), metal::float3(as_type<float>(_e54), as_type<float>(_e60), as_type<float>(_e66)), metal::float2(as_type<float>(_e73), as_type<float>(_e79))};
 }
 
+metal::float3 shading_normal(
+    Ray ray_13,
+    Hit hit_1
+) {
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    return metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
+}
+
 int naga_f2i32(float value) {
     return static_cast<int>(metal::clamp(value, -2147483600.0, 2147483500.0));
 }
@@ -1244,8 +1252,8 @@ float shadow_query(
     }
     metal::float3 _e11 = n_4;
     metal::float3 _e12 = offset_origin(position, _e11, frame, nodes, _buffer_sizes);
-    Ray ray_23 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
-    Candidate _e23 = intersect_scene(ray_23, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    Ray ray_24 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
+    Candidate _e23 = intersect_scene(ray_24, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
     return (_e23.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
@@ -1323,8 +1331,8 @@ LightSample sample_light_query(
 
 metal::float3 blinn_phong_shade(
     BlinnPhong m,
-    Ray ray_13,
-    Hit hit_1,
+    Ray ray_14,
+    Hit hit_2,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1338,16 +1346,15 @@ metal::float3 blinn_phong_shade(
 ) {
     metal::float3 color = {};
     uint i_2 = {};
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
-    metal::float3 n_8 = metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
-    metal::float3 _e12 = normalize_vec3f(ray_13.dir);
-    metal::float3 v_2 = -(_e12);
-    metal::float4 _e19 = sample_texture(m.texture, hit_1.uv * m.uv_scale, params, texels, _buffer_sizes);
-    metal::float3 kd = m.diffuse * _e19.xyz;
+    metal::float3 _e3 = shading_normal(ray_14, hit_2);
+    metal::float3 _e5 = normalize_vec3f(ray_14.dir);
+    metal::float3 v_2 = -(_e5);
+    metal::float4 _e12 = sample_texture(m.texture, hit_2.uv * m.uv_scale, params, texels, _buffer_sizes);
+    metal::float3 kd = m.diffuse * _e12.xyz;
     float s_4 = metal::max(m.shininess, 0.0);
     float norm = (s_4 + 8.0) * (INV_PI / 8.0);
     color = m.ambient * kd;
-    uint _e35 = light_count_query(frame);
+    uint _e28 = light_count_query(frame);
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
@@ -1355,24 +1362,24 @@ metal::float3 blinn_phong_shade(
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e68 = i_2;
-            i_2 = _e68 + 1u;
+            uint _e61 = i_2;
+            i_2 = _e61 + 1u;
         }
         loop_init_2 = false;
-        uint _e37 = i_2;
-        if (_e37 >= _e35) {
+        uint _e30 = i_2;
+        if (_e30 >= _e28) {
             break;
         }
-        uint _e39 = i_2;
-        LightSample _e42 = sample_light_query(_e39, hit_1.position, hit_1.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        float ndl = metal::max(metal::dot(n_8, _e42.dir), 0.0);
-        metal::float3 _e49 = normalize_vec3f(_e42.dir + v_2);
-        float highlight = metal::pow(metal::max(metal::dot(n_8, _e49), 0.0), s_4) * norm;
-        metal::float3 _e55 = color;
-        color = _e55 + ((_e42.radiance * metal::float3(ndl)) * ((kd * metal::float3(INV_PI)) + (m.specular * metal::float3(highlight))));
+        uint _e32 = i_2;
+        LightSample _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        float ndl = metal::max(metal::dot(_e3, _e35.dir), 0.0);
+        metal::float3 _e42 = normalize_vec3f(_e35.dir + v_2);
+        float highlight = metal::pow(metal::max(metal::dot(_e3, _e42), 0.0), s_4) * norm;
+        metal::float3 _e48 = color;
+        color = _e48 + ((_e35.radiance * metal::float3(ndl)) * ((kd * metal::float3(INV_PI)) + (m.specular * metal::float3(highlight))));
     }
-    metal::float3 _e71 = color;
-    return _e71;
+    metal::float3 _e64 = color;
+    return _e64;
 }
 
 Lambert load_Lambert(
@@ -1388,8 +1395,8 @@ Lambert load_Lambert(
 
 metal::float3 lambert_shade(
     Lambert m_1,
-    Ray ray_14,
-    Hit hit_2,
+    Ray ray_15,
+    Hit hit_3,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1402,10 +1409,9 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color_1 = {};
     uint i_3 = {};
-    metal::float3 ng_1 = metal::faceforward(hit_2.geometric_normal, ray_14.dir, hit_2.geometric_normal);
-    metal::float3 n_9 = metal::faceforward(hit_2.normal, -(ng_1), hit_2.normal);
+    metal::float3 _e3 = shading_normal(ray_15, hit_3);
     color_1 = metal::float3(0.0);
-    uint _e15 = light_count_query(frame);
+    uint _e8 = light_count_query(frame);
     i_3 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_3 = true;
@@ -1413,21 +1419,21 @@ metal::float3 lambert_shade(
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e37 = i_3;
-            i_3 = _e37 + 1u;
+            uint _e30 = i_3;
+            i_3 = _e30 + 1u;
         }
         loop_init_3 = false;
-        uint _e17 = i_3;
-        if (_e17 >= _e15) {
+        uint _e10 = i_3;
+        if (_e10 >= _e8) {
             break;
         }
-        uint _e19 = i_3;
-        LightSample _e22 = sample_light_query(_e19, hit_2.position, hit_2.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        metal::float3 _e23 = color_1;
-        color_1 = _e23 + (((m_1.albedo * metal::float3(INV_PI)) * _e22.radiance) * metal::float3(metal::max(metal::dot(n_9, _e22.dir), 0.0)));
+        uint _e12 = i_3;
+        LightSample _e15 = sample_light_query(_e12, hit_3.position, hit_3.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e16 = color_1;
+        color_1 = _e16 + (((m_1.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
     }
-    metal::float3 _e40 = color_1;
-    return _e40;
+    metal::float3 _e33 = color_1;
+    return _e33;
 }
 
 Mirror load_Mirror(
@@ -1443,8 +1449,8 @@ Mirror load_Mirror(
 
 metal::float3 mirror_shade(
     Mirror m_2,
-    Ray ray_15,
-    Hit hit_3,
+    Ray ray_16,
+    Hit hit_4,
     metal::float3 secondary
 ) {
     return secondary;
@@ -1467,16 +1473,16 @@ UnlitTexture load_UnlitTexture(
 
 metal::float3 unlit_texture_shade(
     UnlitTexture m_3,
-    Ray ray_16,
-    Hit hit_4,
+    Ray ray_17,
+    Hit hit_5,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float2 uv_1 = {};
-    uv_1 = hit_4.uv;
+    uv_1 = hit_5.uv;
     if (m_3.planar == 1u) {
-        uv_1 = metal::float2(hit_4.position[0], -(hit_4.position[1]));
+        uv_1 = metal::float2(hit_5.position[0], -(hit_5.position[1]));
     }
     metal::float2 _e14 = uv_1;
     metal::float4 _e17 = sample_texture(m_3.texture, _e14 * m_3.uv_scale, params, texels, _buffer_sizes);
@@ -1486,8 +1492,8 @@ metal::float3 unlit_texture_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_11,
-    Ray ray_17,
-    Hit hit_5,
+    Ray ray_18,
+    Hit hit_6,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1503,22 +1509,22 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             BlinnPhong _e5 = load_BlinnPhong(offset_11, params, _buffer_sizes);
-            metal::float3 _e6 = blinn_phong_shade(_e5, ray_17, hit_5, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, texels, _buffer_sizes);
+            metal::float3 _e6 = blinn_phong_shade(_e5, ray_18, hit_6, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, texels, _buffer_sizes);
             return _e6;
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_11, params, _buffer_sizes);
-            metal::float3 _e8 = lambert_shade(_e7, ray_17, hit_5, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e8 = lambert_shade(_e7, ray_18, hit_6, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
             return _e8;
         }
         case 2u: {
             Mirror _e9 = load_Mirror(offset_11, params, _buffer_sizes);
-            metal::float3 _e10 = mirror_shade(_e9, ray_17, hit_5, secondary_1);
+            metal::float3 _e10 = mirror_shade(_e9, ray_18, hit_6, secondary_1);
             return _e10;
         }
         case 3u: {
             UnlitTexture _e11 = load_UnlitTexture(offset_11, params, _buffer_sizes);
-            metal::float3 _e12 = unlit_texture_shade(_e11, ray_17, hit_5, params, texels, _buffer_sizes);
+            metal::float3 _e12 = unlit_texture_shade(_e11, ray_18, hit_6, params, texels, _buffer_sizes);
             return _e12;
         }
         default: {
@@ -1529,7 +1535,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_18,
+    Ray ray_19,
     Candidate c_3,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1544,8 +1550,8 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_3.slot];
-    Hit _e6 = finish_hit(ray_18, c_3, instances, triangles, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, texels, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_19, c_3, instances, triangles, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, texels, _buffer_sizes);
     return _e11;
 }
 
@@ -1566,22 +1572,22 @@ void rt_spawn(
 
 void mirror_rays(
     Mirror m_4,
-    Ray ray_19,
-    Hit hit_6,
+    Ray ray_20,
+    Hit hit_7,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
     thread uint& spawn_count
 ) {
-    metal::float3 _e4 = normalize_vec3f(ray_19.dir);
-    rt_spawn(metal::reflect(_e4, hit_6.normal), m_4.tint, spawn_dirs, spawn_weights, spawn_count);
+    metal::float3 _e4 = normalize_vec3f(ray_20.dir);
+    rt_spawn(metal::reflect(_e4, hit_7.normal), m_4.tint, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
 void dispatch_secondary_rays(
     uint type_id_5,
     uint offset_12,
-    Ray ray_20,
-    Hit hit_7,
+    Ray ray_21,
+    Hit hit_8,
     device type_4 const& params,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
@@ -1589,26 +1595,26 @@ void dispatch_secondary_rays(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Mirror _e3 = load_Mirror(offset_12, params, _buffer_sizes);
-    mirror_rays(_e3, ray_20, hit_7, spawn_dirs, spawn_weights, spawn_count);
+    mirror_rays(_e3, ray_21, hit_8, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
 metal::float3 spawn_origin(
-    Hit hit_8,
+    Hit hit_9,
     metal::float3 dir_2,
     constant FrameUniforms& frame,
     device type_9 const& nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 n_5 = {};
-    n_5 = hit_8.geometric_normal;
+    n_5 = hit_9.geometric_normal;
     metal::float3 _e4 = n_5;
     if (metal::dot(dir_2, _e4) < 0.0) {
         metal::float3 _e8 = n_5;
         n_5 = -(_e8);
     }
     metal::float3 _e11 = n_5;
-    metal::float3 _e12 = offset_origin(hit_8.position, _e11, frame, nodes, _buffer_sizes);
+    metal::float3 _e12 = offset_origin(hit_9.position, _e11, frame, nodes, _buffer_sizes);
     return _e12;
 }
 
@@ -1631,7 +1637,7 @@ metal::float3 trace(
 ) {
     type_17 stack = {};
     uint depth = {};
-    Ray ray_21 = {};
+    Ray ray_22 = {};
     metal::float3 value = {};
     bool have_value = {};
     bool pushed = {};
@@ -1652,7 +1658,7 @@ metal::float3 trace(
     }
     stack = type_17 {};
     depth = 0u;
-    ray_21 = camera_ray;
+    ray_22 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     uint2 loop_bound_6 = uint2(4294967295u);
@@ -1661,32 +1667,32 @@ metal::float3 trace(
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_21;
+            Ray _e28 = ray_22;
             Candidate _e30 = intersect_scene(_e28, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
             if (_e30.slot == NO_HIT) {
-                Ray _e34 = ray_21;
+                Ray _e34 = ray_22;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_21;
+                Ray _e38 = ray_22;
                 metal::float3 _e39 = miss(_e38, frame, params, _buffer_sizes);
                 metal::float3 _e40 = through_medium(_e34, as_type<float>(_e36), _e39, instances, _buffer_sizes);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = instances[_e30.slot];
-                Ray _e46 = ray_21;
+                Ray _e46 = ray_22;
                 Hit _e47 = finish_hit(_e46, _e30, instances, triangles, attributes, _buffer_sizes);
                 pushed = false;
-                uint _e56 = ray_21.depth;
+                uint _e56 = ray_22.depth;
                 uint _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_21;
+                    Ray _e68 = ray_22;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
                     uint _e70 = spawn_count;
-                    uint n_10 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
-                    if (n_10 > 0u) {
-                        Ray _e77 = ray_21;
-                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_10, 0u};
+                    uint n_8 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
+                    if (n_8 > 0u) {
+                        Ray _e77 = ray_22;
+                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_8, 0u};
                         i_4 = 0u;
                         uint2 loop_bound_7 = uint2(4294967295u);
                         bool loop_init_4 = true;
@@ -1699,7 +1705,7 @@ metal::float3 trace(
                             }
                             loop_init_4 = false;
                             uint _e88 = i_4;
-                            if (_e88 >= n_10) {
+                            if (_e88 >= n_8) {
                                 break;
                             }
                             uint _e91 = i_4;
@@ -1721,9 +1727,9 @@ metal::float3 trace(
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_21;
+                    Ray _e124 = ray_22;
                     metal::float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, texels, _buffer_sizes);
-                    Ray _e128 = ray_21;
+                    Ray _e128 = ray_22;
                     metal::float3 _e130 = through_medium(_e128, _e30.t, _e127, instances, _buffer_sizes);
                     value = _e130;
                     have_value = true;
@@ -1755,13 +1761,13 @@ metal::float3 trace(
             uint i_5 = stack.inner[metal::min(top_1, 2u)].next;
             stack.inner[metal::min(top_1, 2u)].next = i_5 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 2u)].ray;
-            Hit hit_10 = stack.inner[metal::min(top_1, 2u)].hit;
+            Hit hit_11 = stack.inner[metal::min(top_1, 2u)].hit;
             metal::float3 dir_4 = stack.inner[metal::min(top_1, 2u)].dirs.inner[metal::min(i_5, 0u)];
             medium = parent.medium;
-            metal::float3 _e209 = spawn_origin(hit_10, dir_4, frame, nodes, _buffer_sizes);
+            metal::float3 _e209 = spawn_origin(hit_11, dir_4, frame, nodes, _buffer_sizes);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_21 = Ray {_e209, 0.0, dir_4, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
+            ray_22 = Ray {_e209, 0.0, dir_4, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
         } else {
             uint _e224 = stack.inner[metal::min(top_1, 2u)].slot;
             GpuInstance inst_10 = instances[_e224];
@@ -1817,7 +1823,7 @@ void render_pixel(
     metal::float3 sum = {};
     uint bad = {};
     uint s = {};
-    Ray ray_22 = {};
+    Ray ray_23 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
     sum = metal::float3(0.0);
@@ -1842,13 +1848,13 @@ void render_pixel(
         uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_22.origin;
+        ray_23 = _e23;
+        ray_23.depth = 0u;
+        ray_23.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_23.origin;
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, _buffer_sizes);
-        ray_22.medium = _e33;
-        Ray _e34 = ray_22;
+        ray_23.medium = _e33;
+        Ray _e34 = ray_23;
         metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {

@@ -383,9 +383,9 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
     let t_4 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
-    let hit_9 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
+    let hit_10 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_1 * rcp), (w * rcp)), hit_9);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_1 * rcp), (w * rcp)), hit_10);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -864,6 +864,11 @@ fn load_BlinnPhong(offset_5: u32) -> BlinnPhong {
     return BlinnPhong(_e5, vec3<f32>(bitcast<f32>(_e10), bitcast<f32>(_e16), bitcast<f32>(_e22)), vec3<f32>(bitcast<f32>(_e29), bitcast<f32>(_e35), bitcast<f32>(_e41)), bitcast<f32>(_e48), vec3<f32>(bitcast<f32>(_e54), bitcast<f32>(_e60), bitcast<f32>(_e66)), vec2<f32>(bitcast<f32>(_e73), bitcast<f32>(_e79)));
 }
 
+fn shading_normal(ray_13: Ray, hit_1: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    return faceForward(hit_1.normal, -(ng), hit_1.normal);
+}
+
 fn i32_from_f32_(x_1: f32) -> i32 {
     return select(i32(min(max(x_1, -2147483600f), 2147483500f)), 0i, ((bitcast<u32>(x_1) & 2147483647u) > 2139095040u));
 }
@@ -967,8 +972,8 @@ fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f3
     }
     let _e11 = n_4;
     let _e12 = offset_origin(position, _e11);
-    let ray_23 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
-    let _e23 = intersect_scene(ray_23, true);
+    let ray_24 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
+    let _e23 = intersect_scene(ray_24, true);
     return select(1f, 0f, (_e23.slot != NO_HIT));
 }
 
@@ -1006,40 +1011,39 @@ fn sample_light_query(i_1: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> L
     return _e27;
 }
 
-fn blinn_phong_shade(m: BlinnPhong, ray_13: Ray, hit_1: Hit) -> vec3<f32> {
+fn blinn_phong_shade(m: BlinnPhong, ray_14: Ray, hit_2: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_2: u32;
 
-    let ng = faceForward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
-    let n_8 = faceForward(hit_1.normal, -(ng), hit_1.normal);
-    let _e12 = normalize_vec3f(ray_13.dir);
-    let v_2 = -(_e12);
-    let _e19 = sample_texture(m.texture, (hit_1.uv * m.uv_scale));
-    let kd = (m.diffuse * _e19.xyz);
+    let _e3 = shading_normal(ray_14, hit_2);
+    let _e5 = normalize_vec3f(ray_14.dir);
+    let v_2 = -(_e5);
+    let _e12 = sample_texture(m.texture, (hit_2.uv * m.uv_scale));
+    let kd = (m.diffuse * _e12.xyz);
     let s_4 = max(m.shininess, 0f);
     let norm = ((s_4 + 8f) * (INV_PI / 8f));
     color = (m.ambient * kd);
-    let _e35 = light_count_query();
+    let _e28 = light_count_query();
     i_2 = 0u;
     loop {
-        let _e37 = i_2;
-        if (_e37 >= _e35) {
+        let _e30 = i_2;
+        if (_e30 >= _e28) {
             break;
         }
-        let _e39 = i_2;
-        let _e42 = sample_light_query(_e39, hit_1.position, hit_1.geometric_normal);
-        let ndl = max(dot(n_8, _e42.dir), 0f);
-        let _e49 = normalize_vec3f((_e42.dir + v_2));
-        let highlight = (pow(max(dot(n_8, _e49), 0f), s_4) * norm);
-        let _e55 = color;
-        color = (_e55 + ((_e42.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m.specular * vec3(highlight)))));
+        let _e32 = i_2;
+        let _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal);
+        let ndl = max(dot(_e3, _e35.dir), 0f);
+        let _e42 = normalize_vec3f((_e35.dir + v_2));
+        let highlight = (pow(max(dot(_e3, _e42), 0f), s_4) * norm);
+        let _e48 = color;
+        color = (_e48 + ((_e35.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m.specular * vec3(highlight)))));
         continuing {
-            let _e68 = i_2;
-            i_2 = (_e68 + 1u);
+            let _e61 = i_2;
+            i_2 = (_e61 + 1u);
         }
     }
-    let _e71 = color;
-    return _e71;
+    let _e64 = color;
+    return _e64;
 }
 
 fn load_Lambert(offset_8: u32) -> Lambert {
@@ -1049,31 +1053,30 @@ fn load_Lambert(offset_8: u32) -> Lambert {
     return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn lambert_shade(m_1: Lambert, ray_14: Ray, hit_2: Hit) -> vec3<f32> {
+fn lambert_shade(m_1: Lambert, ray_15: Ray, hit_3: Hit) -> vec3<f32> {
     var color_1: vec3<f32>;
     var i_3: u32;
 
-    let ng_1 = faceForward(hit_2.geometric_normal, ray_14.dir, hit_2.geometric_normal);
-    let n_9 = faceForward(hit_2.normal, -(ng_1), hit_2.normal);
+    let _e3 = shading_normal(ray_15, hit_3);
     color_1 = vec3(0f);
-    let _e15 = light_count_query();
+    let _e8 = light_count_query();
     i_3 = 0u;
     loop {
-        let _e17 = i_3;
-        if (_e17 >= _e15) {
+        let _e10 = i_3;
+        if (_e10 >= _e8) {
             break;
         }
-        let _e19 = i_3;
-        let _e22 = sample_light_query(_e19, hit_2.position, hit_2.geometric_normal);
-        let _e23 = color_1;
-        color_1 = (_e23 + (((m_1.albedo * vec3(INV_PI)) * _e22.radiance) * vec3(max(dot(n_9, _e22.dir), 0f))));
+        let _e12 = i_3;
+        let _e15 = sample_light_query(_e12, hit_3.position, hit_3.geometric_normal);
+        let _e16 = color_1;
+        color_1 = (_e16 + (((m_1.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0f))));
         continuing {
-            let _e37 = i_3;
-            i_3 = (_e37 + 1u);
+            let _e30 = i_3;
+            i_3 = (_e30 + 1u);
         }
     }
-    let _e40 = color_1;
-    return _e40;
+    let _e33 = color_1;
+    return _e33;
 }
 
 fn load_Mirror(offset_9: u32) -> Mirror {
@@ -1083,7 +1086,7 @@ fn load_Mirror(offset_9: u32) -> Mirror {
     return Mirror(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn mirror_shade(m_2: Mirror, ray_15: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn mirror_shade(m_2: Mirror, ray_16: Ray, hit_4: Hit, secondary: vec3<f32>) -> vec3<f32> {
     return secondary;
 }
 
@@ -1098,38 +1101,38 @@ fn load_UnlitTexture(offset_10: u32) -> UnlitTexture {
     return UnlitTexture(_e5, vec3<f32>(bitcast<f32>(_e10), bitcast<f32>(_e16), bitcast<f32>(_e22)), vec2<f32>(bitcast<f32>(_e29), bitcast<f32>(_e35)), _e42);
 }
 
-fn unlit_texture_shade(m_3: UnlitTexture, ray_16: Ray, hit_4: Hit) -> vec3<f32> {
+fn unlit_texture_shade(m_3: UnlitTexture, ray_17: Ray, hit_5: Hit) -> vec3<f32> {
     var uv_1: vec2<f32>;
 
-    uv_1 = hit_4.uv;
+    uv_1 = hit_5.uv;
     if (m_3.planar == 1u) {
-        uv_1 = vec2<f32>(hit_4.position.x, -(hit_4.position.y));
+        uv_1 = vec2<f32>(hit_5.position.x, -(hit_5.position.y));
     }
     let _e14 = uv_1;
     let _e17 = sample_texture(m_3.texture, (_e14 * m_3.uv_scale));
     return (_e17.xyz * m_3.tint);
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_11: u32, ray_17: Ray, hit_5: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_11: u32, ray_18: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e5 = load_BlinnPhong(offset_11);
-            let _e6 = blinn_phong_shade(_e5, ray_17, hit_5);
+            let _e6 = blinn_phong_shade(_e5, ray_18, hit_6);
             return _e6;
         }
         case 1u: {
             let _e7 = load_Lambert(offset_11);
-            let _e8 = lambert_shade(_e7, ray_17, hit_5);
+            let _e8 = lambert_shade(_e7, ray_18, hit_6);
             return _e8;
         }
         case 2u: {
             let _e9 = load_Mirror(offset_11);
-            let _e10 = mirror_shade(_e9, ray_17, hit_5, secondary_1);
+            let _e10 = mirror_shade(_e9, ray_18, hit_6, secondary_1);
             return _e10;
         }
         case 3u: {
             let _e11 = load_UnlitTexture(offset_11);
-            let _e12 = unlit_texture_shade(_e11, ray_17, hit_5);
+            let _e12 = unlit_texture_shade(_e11, ray_18, hit_6);
             return _e12;
         }
         default: {
@@ -1138,10 +1141,10 @@ fn dispatch_closest_hit(type_id_4: u32, offset_11: u32, ray_17: Ray, hit_5: Hit,
     return vec3<f32>();
 }
 
-fn shade_direct(ray_18: Ray, c_3: Candidate) -> vec3<f32> {
+fn shade_direct(ray_19: Ray, c_3: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_3.slot];
-    let _e6 = finish_hit(ray_18, c_3);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_19, c_3);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, vec3(0f));
     return _e11;
 }
 
@@ -1154,36 +1157,36 @@ fn rt_spawn(dir_1: vec3<f32>, weight: vec3<f32>) {
     }
 }
 
-fn mirror_rays(m_4: Mirror, ray_19: Ray, hit_6: Hit) {
-    let _e4 = normalize_vec3f(ray_19.dir);
-    rt_spawn(reflect(_e4, hit_6.normal), m_4.tint);
+fn mirror_rays(m_4: Mirror, ray_20: Ray, hit_7: Hit) {
+    let _e4 = normalize_vec3f(ray_20.dir);
+    rt_spawn(reflect(_e4, hit_7.normal), m_4.tint);
     return;
 }
 
-fn dispatch_secondary_rays(type_id_5: u32, offset_12: u32, ray_20: Ray, hit_7: Hit) {
+fn dispatch_secondary_rays(type_id_5: u32, offset_12: u32, ray_21: Ray, hit_8: Hit) {
     let _e3 = load_Mirror(offset_12);
-    mirror_rays(_e3, ray_20, hit_7);
+    mirror_rays(_e3, ray_21, hit_8);
     return;
 }
 
-fn spawn_origin(hit_8: Hit, dir_2: vec3<f32>) -> vec3<f32> {
+fn spawn_origin(hit_9: Hit, dir_2: vec3<f32>) -> vec3<f32> {
     var n_5: vec3<f32>;
 
-    n_5 = hit_8.geometric_normal;
+    n_5 = hit_9.geometric_normal;
     let _e4 = n_5;
     if (dot(dir_2, _e4) < 0f) {
         let _e8 = n_5;
         n_5 = -(_e8);
     }
     let _e11 = n_5;
-    let _e12 = offset_origin(hit_8.position, _e11);
+    let _e12 = offset_origin(hit_9.position, _e11);
     return _e12;
 }
 
 fn trace(camera_ray: Ray) -> vec3<f32> {
     var stack: array<Frame, 3>;
     var depth: u32;
-    var ray_21: Ray;
+    var ray_22: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var pushed: bool;
@@ -1205,42 +1208,42 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 3>();
     depth = 0u;
-    ray_21 = camera_ray;
+    ray_22 = camera_ray;
     value = vec3(0f);
     have_value = false;
     loop {
         let _e26 = have_value;
         if !(_e26) {
-            let _e28 = ray_21;
+            let _e28 = ray_22;
             let _e30 = intersect_scene(_e28, false);
             if (_e30.slot == NO_HIT) {
-                let _e34 = ray_21;
+                let _e34 = ray_22;
                 let _e36 = F32_INF;
-                let _e38 = ray_21;
+                let _e38 = ray_22;
                 let _e39 = miss(_e38);
                 let _e40 = through_medium(_e34, bitcast<f32>(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 let inst_9 = instances[_e30.slot];
-                let _e46 = ray_21;
+                let _e46 = ray_22;
                 let _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                let _e56 = ray_21.depth;
+                let _e56 = ray_22.depth;
                 let _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    let _e68 = ray_21;
+                    let _e68 = ray_22;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     let _e70 = spawn_count;
-                    let n_10 = min(min(_e70, 1u), MAX_SPAWN);
-                    if (n_10 > 0u) {
-                        let _e77 = ray_21;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_10, 0u);
+                    let n_8 = min(min(_e70, 1u), MAX_SPAWN);
+                    if (n_8 > 0u) {
+                        let _e77 = ray_22;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
                         i_4 = 0u;
                         loop {
                             let _e88 = i_4;
-                            if (_e88 >= n_10) {
+                            if (_e88 >= n_8) {
                                 break;
                             }
                             let _e91 = i_4;
@@ -1266,9 +1269,9 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 }
                 let _e120 = pushed;
                 if !(_e120) {
-                    let _e124 = ray_21;
+                    let _e124 = ray_22;
                     let _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0f));
-                    let _e128 = ray_21;
+                    let _e128 = ray_22;
                     let _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1300,13 +1303,13 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let i_5 = stack[min(top_1, 2u)].next;
             stack[min(top_1, 2u)].next = (i_5 + 1u);
             let parent = stack[min(top_1, 2u)].ray;
-            let hit_10 = stack[min(top_1, 2u)].hit;
+            let hit_11 = stack[min(top_1, 2u)].hit;
             let dir_4 = stack[min(top_1, 2u)].dirs[min(i_5, 0u)];
             medium = parent.medium;
-            let _e209 = spawn_origin(hit_10, dir_4);
+            let _e209 = spawn_origin(hit_11, dir_4);
             let _e212 = F32_INF;
             let _e218 = medium;
-            ray_21 = Ray(_e209, 0f, dir_4, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_22 = Ray(_e209, 0f, dir_4, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             let _e224 = stack[min(top_1, 2u)].slot;
             let inst_10 = instances[_e224];
@@ -1338,7 +1341,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s: u32;
-    var ray_22: Ray;
+    var ray_23: Ray;
 
     let frame_5 = frame;
     let tile_1 = tile;
@@ -1355,13 +1358,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
         let sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        let _e31 = ray_22.origin;
+        ray_23 = _e23;
+        ray_23.depth = 0u;
+        ray_23.kind = RAY_CAMERA;
+        let _e31 = ray_23.origin;
         let _e33 = medium_at(_e31, NO_HIT);
-        ray_22.medium = _e33;
-        let _e34 = ray_22;
+        ray_23.medium = _e33;
+        let _e34 = ray_23;
         let _e35 = trace(_e34);
         let _e36 = is_finite_vec3f(_e35);
         if all(_e36) {

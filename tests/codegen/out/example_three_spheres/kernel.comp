@@ -373,9 +373,9 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
     float t_5 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_5 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
+    bool hit_6 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_5 ? vec3(t_5, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_6 ? vec3(t_5, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
@@ -652,10 +652,10 @@ Intersection intersect_triangle(Ray ray_7, Triangle tri) {
     float det_1 = ((u_1 + v_2) + w_1);
     float _e112 = (1.0 / det_1);
     float t_6 = ((((u_1 * (sz * _e62[kz_1])) + (v_2 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
-    bool hit_6 = (((((all(lessThan((floatBitsToUint(ray_7.origin) & uvec3(2147483647u)), _e10)) && all(lessThan((floatBitsToUint(ray_7.dir) & uvec3(2147483647u)), _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_6 >= ray_7.tmin) && (t_6 <= ray_7.tmax)));
+    bool hit_7 = (((((all(lessThan((floatBitsToUint(ray_7.origin) & uvec3(2147483647u)), _e10)) && all(lessThan((floatBitsToUint(ray_7.dir) & uvec3(2147483647u)), _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_6 >= ray_7.tmin) && (t_6 <= ray_7.tmax)));
     vec3 _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     uint _e137 = F32_INF;
-    return Intersection((hit_6 ? t_6 : uintBitsToFloat(_e137)), (hit_6 ? _e132 : vec3(0.0, 0.0, 1.0)), (hit_6 ? vec2((v_2 * _e112), (w_1 * _e112)) : vec2(0.0)));
+    return Intersection((hit_7 ? t_6 : uintBitsToFloat(_e137)), (hit_7 ? _e132 : vec3(0.0, 0.0, 1.0)), (hit_7 ? vec2((v_2 * _e112), (w_1 * _e112)) : vec2(0.0)));
 }
 
 Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_8) {
@@ -1203,6 +1203,11 @@ Lambert load_Lambert(uint offset_8) {
     return Lambert(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
+vec3 shading_normal(Ray ray_19, Hit hit_1) {
+    vec3 ng = faceforward(hit_1.geometric_normal, ray_19.dir, hit_1.geometric_normal);
+    return faceforward(hit_1.normal, -(ng), hit_1.normal);
+}
+
 uint light_count_query() {
     FrameUniforms _e1 = _group_0_binding_0_cs;
     return _e1.light_count;
@@ -1240,8 +1245,8 @@ float shadow_query(vec3 position, vec3 normal, vec3 dir, float dist) {
     }
     vec3 _e11 = n_5;
     vec3 _e12 = offset_origin(position, _e11);
-    Ray ray_25 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    Candidate _e23 = intersect_scene(ray_25, true);
+    Ray ray_26 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    Candidate _e23 = intersect_scene(ray_26, true);
     return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
@@ -1278,68 +1283,67 @@ LightSample sample_light_query(uint i_3, vec3 position_3, vec3 normal_3) {
     return _e27;
 }
 
-vec3 lambert_shade(Lambert m_2, Ray ray_19, Hit hit_1) {
+vec3 lambert_shade(Lambert m_2, Ray ray_20, Hit hit_2) {
     vec3 color = vec3(0.0);
     uint i_4 = 0u;
-    vec3 ng = faceforward(hit_1.geometric_normal, ray_19.dir, hit_1.geometric_normal);
-    vec3 n_10 = faceforward(hit_1.normal, -(ng), hit_1.normal);
+    vec3 _e3 = shading_normal(ray_20, hit_2);
     color = vec3(0.0);
-    uint _e15 = light_count_query();
+    uint _e8 = light_count_query();
     i_4 = 0u;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e37 = i_4;
-            i_4 = (_e37 + 1u);
+            uint _e30 = i_4;
+            i_4 = (_e30 + 1u);
         }
         loop_init_3 = false;
-        uint _e17 = i_4;
-        if ((_e17 >= _e15)) {
+        uint _e10 = i_4;
+        if ((_e10 >= _e8)) {
             break;
         }
-        uint _e19 = i_4;
-        LightSample _e22 = sample_light_query(_e19, hit_1.position, hit_1.geometric_normal);
-        vec3 _e23 = color;
-        color = (_e23 + (((m_2.albedo * vec3(INV_PI)) * _e22.radiance) * vec3(max(dot(n_10, _e22.dir), 0.0))));
+        uint _e12 = i_4;
+        LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
+        vec3 _e16 = color;
+        color = (_e16 + (((m_2.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0.0))));
     }
-    vec3 _e40 = color;
-    return _e40;
+    vec3 _e33 = color;
+    return _e33;
 }
 
-vec3 dispatch_closest_hit(uint type_id_5, uint offset_11, Ray ray_20, Hit hit_2, vec3 secondary) {
+vec3 dispatch_closest_hit(uint type_id_5, uint offset_11, Ray ray_21, Hit hit_3, vec3 secondary) {
     Lambert _e3 = load_Lambert(offset_11);
-    vec3 _e4 = lambert_shade(_e3, ray_20, hit_2);
+    vec3 _e4 = lambert_shade(_e3, ray_21, hit_3);
     return _e4;
 }
 
-vec3 shade_direct(Ray ray_21, Candidate c_3) {
+vec3 shade_direct(Ray ray_22, Candidate c_3) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_3.slot];
-    Hit _e6 = finish_hit(ray_21, c_3);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_22, c_3);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, vec3(0.0));
     return _e11;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_22, Hit hit_3) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_23, Hit hit_4) {
     return;
 }
 
-vec3 spawn_origin(Hit hit_4, vec3 dir_1) {
+vec3 spawn_origin(Hit hit_5, vec3 dir_1) {
     vec3 n_6 = vec3(0.0);
-    n_6 = hit_4.geometric_normal;
+    n_6 = hit_5.geometric_normal;
     vec3 _e4 = n_6;
     if ((dot(dir_1, _e4) < 0.0)) {
         vec3 _e8 = n_6;
         n_6 = -(_e8);
     }
     vec3 _e11 = n_6;
-    vec3 _e12 = offset_origin(hit_4.position, _e11);
+    vec3 _e12 = offset_origin(hit_5.position, _e11);
     return _e12;
 }
 
 vec3 trace(Ray camera_ray) {
     Frame stack_1[4] = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_23 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_24 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     bool pushed = false;
@@ -1360,38 +1364,38 @@ vec3 trace(Ray camera_ray) {
     }
     stack_1 = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_23 = camera_ray;
+    ray_24 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     while(true) {
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_23;
+            Ray _e28 = ray_24;
             Candidate _e30 = intersect_scene(_e28, false);
             if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_23;
+                Ray _e34 = ray_24;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_23;
+                Ray _e38 = ray_24;
                 vec3 _e39 = miss(_e38);
                 vec3 _e40 = through_medium(_e34, uintBitsToFloat(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = _group_0_binding_3_cs[_e30.slot];
-                Ray _e46 = ray_23;
+                Ray _e46 = ray_24;
                 Hit _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                uint _e56 = ray_23.depth;
+                uint _e56 = ray_24.depth;
                 uint _e60 = depth;
                 if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_23;
+                    Ray _e68 = ray_24;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_11 = min(min(_e70, 1u), MAX_SPAWN);
-                    if ((n_11 > 0u)) {
-                        Ray _e77 = ray_23;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_11, 0u);
+                    uint n_10 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_10 > 0u)) {
+                        Ray _e77 = ray_24;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_10, 0u);
                         i_5 = 0u;
                         bool loop_init_4 = true;
                         while(true) {
@@ -1401,7 +1405,7 @@ vec3 trace(Ray camera_ray) {
                             }
                             loop_init_4 = false;
                             uint _e88 = i_5;
-                            if ((_e88 >= n_11)) {
+                            if ((_e88 >= n_10)) {
                                 break;
                             }
                             uint _e91 = i_5;
@@ -1423,9 +1427,9 @@ vec3 trace(Ray camera_ray) {
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_23;
+                    Ray _e124 = ray_24;
                     vec3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0.0));
-                    Ray _e128 = ray_23;
+                    Ray _e128 = ray_24;
                     vec3 _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1457,13 +1461,13 @@ vec3 trace(Ray camera_ray) {
             uint i_6 = stack_1[min(top_1, 3u)].next;
             stack_1[min(top_1, 3u)].next = (i_6 + 1u);
             Ray parent = stack_1[min(top_1, 3u)].ray;
-            Hit hit_7 = stack_1[min(top_1, 3u)].hit;
+            Hit hit_8 = stack_1[min(top_1, 3u)].hit;
             vec3 dir_4 = stack_1[min(top_1, 3u)].dirs[min(i_6, 0u)];
             medium = parent.medium;
-            vec3 _e209 = spawn_origin(hit_7, dir_4);
+            vec3 _e209 = spawn_origin(hit_8, dir_4);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_23 = Ray(_e209, 0.0, dir_4, uintBitsToFloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_24 = Ray(_e209, 0.0, dir_4, uintBitsToFloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             uint _e224 = stack_1[min(top_1, 3u)].slot;
             GpuInstance inst_10 = _group_0_binding_3_cs[_e224];
@@ -1495,7 +1499,7 @@ void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s_1 = 0u;
-    Ray ray_24 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_25 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_1 = _group_0_binding_1_cs;
     sum = vec3(0.0);
@@ -1517,13 +1521,13 @@ void render_pixel(uvec2 pixel_3) {
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_24 = _e23;
-        ray_24.depth = 0u;
-        ray_24.kind = RAY_CAMERA;
-        vec3 _e31 = ray_24.origin;
+        ray_25 = _e23;
+        ray_25.depth = 0u;
+        ray_25.kind = RAY_CAMERA;
+        vec3 _e31 = ray_25.origin;
         uint _e33 = medium_at(_e31, NO_HIT);
-        ray_24.medium = _e33;
-        Ray _e34 = ray_24;
+        ray_25.medium = _e33;
+        Ray _e34 = ray_25;
         vec3 _e35 = trace(_e34);
         bvec3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

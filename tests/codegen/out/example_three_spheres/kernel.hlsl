@@ -393,16 +393,16 @@ Ray supersampled_ray(SupersampledPinhole cam, uint2 pixel_1, uint sample_1)
     float aspect = (size.x / size.y);
     const float3 _e58 = normalize_vec3f(((_e34 + (_e37 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
     uint _e62 = F32_INF;
-    const Ray ray_25 = ConstructRay(cam.position, 0.0, _e58, asfloat(_e62), 0u, 0u, 0u);
-    return ray_25;
+    const Ray ray_26 = ConstructRay(cam.position, 0.0, _e58, asfloat(_e62), 0u, 0u, 0u);
+    return ray_26;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
 {
     const SupersampledPinhole _e3 = load_SupersampledPinhole(offset_1);
     const Ray _e4 = supersampled_ray(_e3, pixel_2, sample_2);
-    const Ray ray_26 = _e4;
-    return ray_26;
+    const Ray ray_27 = _e4;
+    return ray_27;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -431,8 +431,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_27 = _e25;
-    return ray_27;
+    const Ray ray_28 = _e25;
+    return ray_28;
 }
 
 float3 safe_inverse(float3 d)
@@ -493,9 +493,9 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
     float t_5 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_5 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
+    bool hit_6 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_5 ? float3(t_5, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_6 ? float3(t_5, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -842,10 +842,10 @@ Intersection intersect_triangle(Ray ray_7, Triangle tri)
     float det_1 = ((u_1 + v_2) + w_1);
     float _e112 = (1.0 / det_1);
     float t_6 = ((((u_1 * (sz * _e62[min(uint(kz_1), 2u)])) + (v_2 * (sz * _e71[min(uint(kz_1), 2u)]))) + (w_1 * (sz * _e80[min(uint(kz_1), 2u)]))) * _e112);
-    bool hit_6 = (((((all(((asuint(ray_7.origin) & (2147483647u).xxx) < _e10)) && all(((asuint(ray_7.dir) & (2147483647u).xxx) < _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_6 >= ray_7.tmin) && (t_6 <= ray_7.tmax)));
+    bool hit_7 = (((((all(((asuint(ray_7.origin) & (2147483647u).xxx) < _e10)) && all(((asuint(ray_7.dir) & (2147483647u).xxx) < _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_6 >= ray_7.tmin) && (t_6 <= ray_7.tmax)));
     const float3 _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     uint _e137 = F32_INF;
-    const Intersection intersection = ConstructIntersection((hit_6 ? t_6 : asfloat(_e137)), (hit_6 ? _e132 : float3(0.0, 0.0, 1.0)), (hit_6 ? float2((v_2 * _e112), (w_1 * _e112)) : (0.0).xx));
+    const Intersection intersection = ConstructIntersection((hit_7 ? t_6 : asfloat(_e137)), (hit_7 ? _e132 : float3(0.0, 0.0, 1.0)), (hit_7 ? float2((v_2 * _e112), (w_1 * _e112)) : (0.0).xx));
     return intersection;
 }
 
@@ -1222,8 +1222,8 @@ Hit finish_hit(Ray ray_12, Candidate c_1)
     float3 _e135 = hit.geometric_normal;
     hit.front_face = (dot(ray_12.dir, _e135) < 0.0);
     Hit _e139 = hit;
-    const Hit hit_7 = _e139;
-    return hit_7;
+    const Hit hit_8 = _e139;
+    return hit_8;
 }
 
 uint medium_at(float3 p_3, uint exclude)
@@ -1546,6 +1546,12 @@ Lambert load_Lambert(uint offset_8)
     return lambert;
 }
 
+float3 shading_normal(Ray ray_19, Hit hit_1)
+{
+    float3 ng = faceforward(hit_1.geometric_normal, ray_19.dir, hit_1.geometric_normal);
+    return faceforward(hit_1.normal, -(ng), hit_1.normal);
+}
+
 uint light_count_query()
 {
     FrameUniforms _e1 = frame;
@@ -1599,8 +1605,8 @@ float shadow_query(float3 position, float3 normal, float3 dir, float dist)
     }
     float3 _e11 = n_5;
     const float3 _e12 = offset_origin(position, _e11);
-    Ray ray_28 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    const Candidate _e23 = intersect_scene(ray_28, true);
+    Ray ray_29 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
+    const Candidate _e23 = intersect_scene(ray_29, true);
     return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
@@ -1653,15 +1659,14 @@ LightSample sample_light_query(uint i_3, float3 position_3, float3 normal_3)
     return lightsample_3;
 }
 
-float3 lambert_shade(Lambert m_2, Ray ray_19, Hit hit_1)
+float3 lambert_shade(Lambert m_2, Ray ray_20, Hit hit_2)
 {
     float3 color = (float3)0;
     uint i_4 = (uint)0;
 
-    float3 ng = faceforward(hit_1.geometric_normal, ray_19.dir, hit_1.geometric_normal);
-    float3 n_10 = faceforward(hit_1.normal, -(ng), hit_1.normal);
+    const float3 _e3 = shading_normal(ray_20, hit_2);
     color = (0.0).xxx;
-    const uint _e15 = light_count_query();
+    const uint _e8 = light_count_query();
     i_4 = 0u;
     uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
@@ -1669,55 +1674,55 @@ float3 lambert_shade(Lambert m_2, Ray ray_19, Hit hit_1)
         if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e37 = i_4;
-            i_4 = (_e37 + 1u);
+            uint _e30 = i_4;
+            i_4 = (_e30 + 1u);
         }
         loop_init_3 = false;
-        uint _e17 = i_4;
-        if ((_e17 >= _e15)) {
+        uint _e10 = i_4;
+        if ((_e10 >= _e8)) {
             break;
         }
-        uint _e19 = i_4;
-        const LightSample _e22 = sample_light_query(_e19, hit_1.position, hit_1.geometric_normal);
-        float3 _e23 = color;
-        color = (_e23 + (((m_2.albedo * (INV_PI).xxx) * _e22.radiance) * (max(dot(n_10, _e22.dir), 0.0)).xxx));
+        uint _e12 = i_4;
+        const LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
+        float3 _e16 = color;
+        color = (_e16 + (((m_2.albedo * (INV_PI).xxx) * _e15.radiance) * (max(dot(_e3, _e15.dir), 0.0)).xxx));
     }
-    float3 _e40 = color;
-    return _e40;
+    float3 _e33 = color;
+    return _e33;
 }
 
-float3 dispatch_closest_hit(uint type_id_5, uint offset_11, Ray ray_20, Hit hit_2, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_5, uint offset_11, Ray ray_21, Hit hit_3, float3 secondary)
 {
     const Lambert _e3 = load_Lambert(offset_11);
-    const float3 _e4 = lambert_shade(_e3, ray_20, hit_2);
+    const float3 _e4 = lambert_shade(_e3, ray_21, hit_3);
     return _e4;
 }
 
-float3 shade_direct(Ray ray_21, Candidate c_3)
+float3 shade_direct(Ray ray_22, Candidate c_3)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_3.slot*128+0)), asfloat(instances.Load4(c_3.slot*128+16)), asfloat(instances.Load4(c_3.slot*128+32)), asfloat(instances.Load4(c_3.slot*128+48)), asfloat(instances.Load4(c_3.slot*128+64)), asfloat(instances.Load4(c_3.slot*128+80)), asuint(instances.Load(c_3.slot*128+96)), asuint(instances.Load(c_3.slot*128+100)), asuint(instances.Load(c_3.slot*128+104)), asuint(instances.Load(c_3.slot*128+108)), asuint(instances.Load(c_3.slot*128+112)), asuint(instances.Load(c_3.slot*128+116)), asuint(instances.Load(c_3.slot*128+120)), asuint(instances.Load(c_3.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_21, c_3);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_22, c_3);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, (0.0).xxx);
     return _e11;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_22, Hit hit_3)
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_23, Hit hit_4)
 {
     return;
 }
 
-float3 spawn_origin(Hit hit_4, float3 dir_1)
+float3 spawn_origin(Hit hit_5, float3 dir_1)
 {
     float3 n_6 = (float3)0;
 
-    n_6 = hit_4.geometric_normal;
+    n_6 = hit_5.geometric_normal;
     float3 _e4 = n_6;
     if ((dot(dir_1, _e4) < 0.0)) {
         float3 _e8 = n_6;
         n_6 = -(_e8);
     }
     float3 _e11 = n_6;
-    const float3 _e12 = offset_origin(hit_4.position, _e11);
+    const float3 _e12 = offset_origin(hit_5.position, _e11);
     return _e12;
 }
 
@@ -1748,7 +1753,7 @@ float3 trace(Ray camera_ray)
 {
     Frame stack_1[4] = (Frame[4])0;
     uint depth = (uint)0;
-    Ray ray_23 = (Ray)0;
+    Ray ray_24 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     bool pushed = (bool)0;
@@ -1770,7 +1775,7 @@ float3 trace(Ray camera_ray)
     }
     stack_1 = ZeroValuearray4_Frame_();
     depth = 0u;
-    ray_23 = camera_ray;
+    ray_24 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
@@ -1779,32 +1784,32 @@ float3 trace(Ray camera_ray)
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_23;
+            Ray _e28 = ray_24;
             const Candidate _e30 = intersect_scene(_e28, false);
             if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_23;
+                Ray _e34 = ray_24;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_23;
+                Ray _e38 = ray_24;
                 const float3 _e39 = miss(_e38);
                 const float3 _e40 = through_medium(_e34, asfloat(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(_e30.slot*128+0)), asfloat(instances.Load4(_e30.slot*128+16)), asfloat(instances.Load4(_e30.slot*128+32)), asfloat(instances.Load4(_e30.slot*128+48)), asfloat(instances.Load4(_e30.slot*128+64)), asfloat(instances.Load4(_e30.slot*128+80)), asuint(instances.Load(_e30.slot*128+96)), asuint(instances.Load(_e30.slot*128+100)), asuint(instances.Load(_e30.slot*128+104)), asuint(instances.Load(_e30.slot*128+108)), asuint(instances.Load(_e30.slot*128+112)), asuint(instances.Load(_e30.slot*128+116)), asuint(instances.Load(_e30.slot*128+120)), asuint(instances.Load(_e30.slot*128+124)));
-                Ray _e46 = ray_23;
+                Ray _e46 = ray_24;
                 const Hit _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                uint _e56 = ray_23.depth;
+                uint _e56 = ray_24.depth;
                 uint _e60 = depth;
                 if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_23;
+                    Ray _e68 = ray_24;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_11 = min(min(_e70, 1u), MAX_SPAWN);
-                    if ((n_11 > 0u)) {
-                        Ray _e77 = ray_23;
-                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_11, 0u);
+                    uint n_10 = min(min(_e70, 1u), MAX_SPAWN);
+                    if ((n_10 > 0u)) {
+                        Ray _e77 = ray_24;
+                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_10, 0u);
                         i_5 = 0u;
                         uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
                         bool loop_init_4 = true;
@@ -1817,7 +1822,7 @@ float3 trace(Ray camera_ray)
                             }
                             loop_init_4 = false;
                             uint _e88 = i_5;
-                            if ((_e88 >= n_11)) {
+                            if ((_e88 >= n_10)) {
                                 break;
                             }
                             uint _e91 = i_5;
@@ -1839,9 +1844,9 @@ float3 trace(Ray camera_ray)
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_23;
+                    Ray _e124 = ray_24;
                     const float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, (0.0).xxx);
-                    Ray _e128 = ray_23;
+                    Ray _e128 = ray_24;
                     const float3 _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1873,13 +1878,13 @@ float3 trace(Ray camera_ray)
             uint i_6 = stack_1[min(uint(min(top_1, 3u)), 3u)].next;
             stack_1[min(uint(min(top_1, 3u)), 3u)].next = (i_6 + 1u);
             Ray parent = stack_1[min(uint(min(top_1, 3u)), 3u)].ray;
-            Hit hit_8 = stack_1[min(uint(min(top_1, 3u)), 3u)].hit;
+            Hit hit_9 = stack_1[min(uint(min(top_1, 3u)), 3u)].hit;
             float3 dir_4 = stack_1[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_6, 0u)), 0u)];
             medium = parent.medium;
-            const float3 _e209 = spawn_origin(hit_8, dir_4);
+            const float3 _e209 = spawn_origin(hit_9, dir_4);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_23 = ConstructRay(_e209, 0.0, dir_4, asfloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_24 = ConstructRay(_e209, 0.0, dir_4, asfloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             uint _e224 = stack_1[min(uint(min(top_1, 3u)), 3u)].slot;
             GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e224*128+0)), asfloat(instances.Load4(_e224*128+16)), asfloat(instances.Load4(_e224*128+32)), asfloat(instances.Load4(_e224*128+48)), asfloat(instances.Load4(_e224*128+64)), asfloat(instances.Load4(_e224*128+80)), asuint(instances.Load(_e224*128+96)), asuint(instances.Load(_e224*128+100)), asuint(instances.Load(_e224*128+104)), asuint(instances.Load(_e224*128+108)), asuint(instances.Load(_e224*128+112)), asuint(instances.Load(_e224*128+116)), asuint(instances.Load(_e224*128+120)), asuint(instances.Load(_e224*128+124)));
@@ -1914,7 +1919,7 @@ void render_pixel(uint2 pixel_3)
     float3 sum = (float3)0;
     uint bad = (uint)0;
     uint s_1 = (uint)0;
-    Ray ray_24 = (Ray)0;
+    Ray ray_25 = (Ray)0;
 
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
@@ -1940,13 +1945,13 @@ void render_pixel(uint2 pixel_3)
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_24 = _e23;
-        ray_24.depth = 0u;
-        ray_24.kind = RAY_CAMERA;
-        float3 _e31 = ray_24.origin;
+        ray_25 = _e23;
+        ray_25.depth = 0u;
+        ray_25.kind = RAY_CAMERA;
+        float3 _e31 = ray_25.origin;
         const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_24.medium = _e33;
-        Ray _e34 = ray_24;
+        ray_25.medium = _e33;
+        Ray _e34 = ray_25;
         const float3 _e35 = trace(_e34);
         const bool3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

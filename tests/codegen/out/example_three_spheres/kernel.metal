@@ -463,9 +463,9 @@ metal::float3 hit_triangle(
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
     float t_5 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_5 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1);
+    bool hit_6 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_5 ? metal::float3(t_5, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_6 ? metal::float3(t_5, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -826,10 +826,10 @@ Intersection intersect_triangle(
     float det_1 = (u_1 + v_2) + w_1;
     float _e112 = 1.0 / det_1;
     float t_6 = (((u_1 * (sz * _e62[kz_1])) + (v_2 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112;
-    bool hit_6 = ((((metal::all((as_type<metal::uint3>(ray_7.origin) & metal::uint3(2147483647u)) < _e10) && metal::all((as_type<metal::uint3>(ray_7.dir) & metal::uint3(2147483647u)) < _e10)) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_6 >= ray_7.tmin) && (t_6 <= ray_7.tmax));
+    bool hit_7 = ((((metal::all((as_type<metal::uint3>(ray_7.origin) & metal::uint3(2147483647u)) < _e10) && metal::all((as_type<metal::uint3>(ray_7.dir) & metal::uint3(2147483647u)) < _e10)) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_6 >= ray_7.tmin) && (t_6 <= ray_7.tmax));
     metal::float3 _e132 = normalize_vec3f(metal::cross(tri.v1_ - tri.v0_, tri.v2_ - tri.v0_));
     uint _e137 = F32_INF;
-    return Intersection {hit_6 ? t_6 : as_type<float>(_e137), {}, hit_6 ? _e132 : metal::float3(0.0, 0.0, 1.0), hit_6 ? metal::float2(v_2 * _e112, w_1 * _e112) : metal::float2(0.0)};
+    return Intersection {hit_7 ? t_6 : as_type<float>(_e137), {}, hit_7 ? _e132 : metal::float3(0.0, 0.0, 1.0), hit_7 ? metal::float2(v_2 * _e112, w_1 * _e112) : metal::float2(0.0)};
 }
 
 Intersection bvh_mesh_intersect(
@@ -1544,6 +1544,14 @@ Lambert load_Lambert(
     return Lambert {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17))};
 }
 
+metal::float3 shading_normal(
+    Ray ray_19,
+    Hit hit_1
+) {
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_19.dir, hit_1.geometric_normal);
+    return metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
+}
+
 uint light_count_query(
     constant FrameUniforms& frame
 ) {
@@ -1608,8 +1616,8 @@ float shadow_query(
     }
     metal::float3 _e11 = n_5;
     metal::float3 _e12 = offset_origin(position, _e11, frame, nodes, _buffer_sizes);
-    Ray ray_25 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
-    Candidate _e23 = intersect_scene(ray_25, true, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    Ray ray_26 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
+    Candidate _e23 = intersect_scene(ray_26, true, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
     return (_e23.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
@@ -1691,8 +1699,8 @@ LightSample sample_light_query(
 
 metal::float3 lambert_shade(
     Lambert m_2,
-    Ray ray_19,
-    Hit hit_1,
+    Ray ray_20,
+    Hit hit_2,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1706,10 +1714,9 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_4 = {};
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_19.dir, hit_1.geometric_normal);
-    metal::float3 n_10 = metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
+    metal::float3 _e3 = shading_normal(ray_20, hit_2);
     color = metal::float3(0.0);
-    uint _e15 = light_count_query(frame);
+    uint _e8 = light_count_query(frame);
     i_4 = 0u;
     uint2 loop_bound_7 = uint2(4294967295u);
     bool loop_init_3 = true;
@@ -1717,28 +1724,28 @@ metal::float3 lambert_shade(
         if (metal::all(loop_bound_7 == uint2(0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e37 = i_4;
-            i_4 = _e37 + 1u;
+            uint _e30 = i_4;
+            i_4 = _e30 + 1u;
         }
         loop_init_3 = false;
-        uint _e17 = i_4;
-        if (_e17 >= _e15) {
+        uint _e10 = i_4;
+        if (_e10 >= _e8) {
             break;
         }
-        uint _e19 = i_4;
-        LightSample _e22 = sample_light_query(_e19, hit_1.position, hit_1.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
-        metal::float3 _e23 = color;
-        color = _e23 + (((m_2.albedo * metal::float3(INV_PI)) * _e22.radiance) * metal::float3(metal::max(metal::dot(n_10, _e22.dir), 0.0)));
+        uint _e12 = i_4;
+        LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+        metal::float3 _e16 = color;
+        color = _e16 + (((m_2.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
     }
-    metal::float3 _e40 = color;
-    return _e40;
+    metal::float3 _e33 = color;
+    return _e33;
 }
 
 metal::float3 dispatch_closest_hit(
     uint type_id_5,
     uint offset_11,
-    Ray ray_20,
-    Hit hit_2,
+    Ray ray_21,
+    Hit hit_3,
     metal::float3 secondary,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1752,12 +1759,12 @@ metal::float3 dispatch_closest_hit(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Lambert _e3 = load_Lambert(offset_11, params, _buffer_sizes);
-    metal::float3 _e4 = lambert_shade(_e3, ray_20, hit_2, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    metal::float3 _e4 = lambert_shade(_e3, ray_21, hit_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
     return _e4;
 }
 
 metal::float3 shade_direct(
-    Ray ray_21,
+    Ray ray_22,
     Candidate c_3,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1772,36 +1779,36 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_3.slot];
-    Hit _e6 = finish_hit(ray_21, c_3, instances, triangles, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_22, c_3, instances, triangles, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
     return _e11;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_12,
-    Ray ray_22,
-    Hit hit_3
+    Ray ray_23,
+    Hit hit_4
 ) {
     return;
 }
 
 metal::float3 spawn_origin(
-    Hit hit_4,
+    Hit hit_5,
     metal::float3 dir_1,
     constant FrameUniforms& frame,
     device type_9 const& nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 n_6 = {};
-    n_6 = hit_4.geometric_normal;
+    n_6 = hit_5.geometric_normal;
     metal::float3 _e4 = n_6;
     if (metal::dot(dir_1, _e4) < 0.0) {
         metal::float3 _e8 = n_6;
         n_6 = -(_e8);
     }
     metal::float3 _e11 = n_6;
-    metal::float3 _e12 = offset_origin(hit_4.position, _e11, frame, nodes, _buffer_sizes);
+    metal::float3 _e12 = offset_origin(hit_5.position, _e11, frame, nodes, _buffer_sizes);
     return _e12;
 }
 
@@ -1825,7 +1832,7 @@ metal::float3 trace(
 ) {
     type_19 stack_1 = {};
     uint depth = {};
-    Ray ray_23 = {};
+    Ray ray_24 = {};
     metal::float3 value = {};
     bool have_value = {};
     bool pushed = {};
@@ -1846,7 +1853,7 @@ metal::float3 trace(
     }
     stack_1 = type_19 {};
     depth = 0u;
-    ray_23 = camera_ray;
+    ray_24 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     uint2 loop_bound_8 = uint2(4294967295u);
@@ -1855,32 +1862,32 @@ metal::float3 trace(
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         bool _e26 = have_value;
         if (!(_e26)) {
-            Ray _e28 = ray_23;
+            Ray _e28 = ray_24;
             Candidate _e30 = intersect_scene(_e28, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
             if (_e30.slot == NO_HIT) {
-                Ray _e34 = ray_23;
+                Ray _e34 = ray_24;
                 uint _e36 = F32_INF;
-                Ray _e38 = ray_23;
+                Ray _e38 = ray_24;
                 metal::float3 _e39 = miss(_e38, frame, params, texels, _buffer_sizes);
                 metal::float3 _e40 = through_medium(_e34, as_type<float>(_e36), _e39, instances, _buffer_sizes);
                 value = _e40;
                 have_value = true;
             } else {
                 GpuInstance inst_9 = instances[_e30.slot];
-                Ray _e46 = ray_23;
+                Ray _e46 = ray_24;
                 Hit _e47 = finish_hit(_e46, _e30, instances, triangles, attributes, _buffer_sizes);
                 pushed = false;
-                uint _e56 = ray_23.depth;
+                uint _e56 = ray_24.depth;
                 uint _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_23;
+                    Ray _e68 = ray_24;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     uint _e70 = spawn_count;
-                    uint n_11 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
-                    if (n_11 > 0u) {
-                        Ray _e77 = ray_23;
-                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_18 {}, type_18 {}, n_11, 0u};
+                    uint n_10 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
+                    if (n_10 > 0u) {
+                        Ray _e77 = ray_24;
+                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_18 {}, type_18 {}, n_10, 0u};
                         i_5 = 0u;
                         uint2 loop_bound_9 = uint2(4294967295u);
                         bool loop_init_4 = true;
@@ -1893,7 +1900,7 @@ metal::float3 trace(
                             }
                             loop_init_4 = false;
                             uint _e88 = i_5;
-                            if (_e88 >= n_11) {
+                            if (_e88 >= n_10) {
                                 break;
                             }
                             uint _e91 = i_5;
@@ -1915,9 +1922,9 @@ metal::float3 trace(
                 }
                 bool _e120 = pushed;
                 if (!(_e120)) {
-                    Ray _e124 = ray_23;
+                    Ray _e124 = ray_24;
                     metal::float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
-                    Ray _e128 = ray_23;
+                    Ray _e128 = ray_24;
                     metal::float3 _e130 = through_medium(_e128, _e30.t, _e127, instances, _buffer_sizes);
                     value = _e130;
                     have_value = true;
@@ -1949,13 +1956,13 @@ metal::float3 trace(
             uint i_6 = stack_1.inner[metal::min(top_1, 3u)].next;
             stack_1.inner[metal::min(top_1, 3u)].next = i_6 + 1u;
             Ray parent = stack_1.inner[metal::min(top_1, 3u)].ray;
-            Hit hit_7 = stack_1.inner[metal::min(top_1, 3u)].hit;
+            Hit hit_8 = stack_1.inner[metal::min(top_1, 3u)].hit;
             metal::float3 dir_4 = stack_1.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_6, 0u)];
             medium = parent.medium;
-            metal::float3 _e209 = spawn_origin(hit_7, dir_4, frame, nodes, _buffer_sizes);
+            metal::float3 _e209 = spawn_origin(hit_8, dir_4, frame, nodes, _buffer_sizes);
             uint _e212 = F32_INF;
             uint _e218 = medium;
-            ray_23 = Ray {_e209, 0.0, dir_4, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
+            ray_24 = Ray {_e209, 0.0, dir_4, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
         } else {
             uint _e224 = stack_1.inner[metal::min(top_1, 3u)].slot;
             GpuInstance inst_10 = instances[_e224];
@@ -2012,7 +2019,7 @@ void render_pixel(
     metal::float3 sum = {};
     uint bad = {};
     uint s_1 = {};
-    Ray ray_24 = {};
+    Ray ray_25 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
     sum = metal::float3(0.0);
@@ -2037,13 +2044,13 @@ void render_pixel(
         uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, rng_state, params, F32_INF, _buffer_sizes);
-        ray_24 = _e23;
-        ray_24.depth = 0u;
-        ray_24.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_24.origin;
+        ray_25 = _e23;
+        ray_25.depth = 0u;
+        ray_25.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_25.origin;
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, _buffer_sizes);
-        ray_24.medium = _e33;
-        Ray _e34 = ray_24;
+        ray_25.medium = _e33;
+        Ray _e34 = ray_25;
         metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {

@@ -381,9 +381,9 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
     let t_5 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
-    let hit_5 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
+    let hit_6 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_5, (v_1 * rcp), (w * rcp)), hit_5);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_5, (v_1 * rcp), (w * rcp)), hit_6);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -660,10 +660,10 @@ fn intersect_triangle(ray_7: Ray, tri: Triangle) -> Intersection {
     let det_1 = ((u_1 + v_2) + w_1);
     let _e112 = (1f / det_1);
     let t_6 = ((((u_1 * (sz * _e62[kz_1])) + (v_2 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
-    let hit_6 = (((((all(((bitcast<vec3<u32>>(ray_7.origin) & vec3(2147483647u)) < _e10)) && all(((bitcast<vec3<u32>>(ray_7.dir) & vec3(2147483647u)) < _e10))) && (dz_1 != 0f)) && !(((((u_1 < 0f) || (v_2 < 0f)) || (w_1 < 0f)) && (((u_1 > 0f) || (v_2 > 0f)) || (w_1 > 0f))))) && !((det_1 == 0f))) && ((t_6 >= ray_7.tmin) && (t_6 <= ray_7.tmax)));
+    let hit_7 = (((((all(((bitcast<vec3<u32>>(ray_7.origin) & vec3(2147483647u)) < _e10)) && all(((bitcast<vec3<u32>>(ray_7.dir) & vec3(2147483647u)) < _e10))) && (dz_1 != 0f)) && !(((((u_1 < 0f) || (v_2 < 0f)) || (w_1 < 0f)) && (((u_1 > 0f) || (v_2 > 0f)) || (w_1 > 0f))))) && !((det_1 == 0f))) && ((t_6 >= ray_7.tmin) && (t_6 <= ray_7.tmax)));
     let _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     let _e137 = F32_INF;
-    return Intersection(select(bitcast<f32>(_e137), t_6, hit_6), select(vec3<f32>(0f, 0f, 1f), _e132, hit_6), select(vec2(0f), vec2<f32>((v_2 * _e112), (w_1 * _e112)), hit_6));
+    return Intersection(select(bitcast<f32>(_e137), t_6, hit_7), select(vec3<f32>(0f, 0f, 1f), _e132, hit_7), select(vec2(0f), vec2<f32>((v_2 * _e112), (w_1 * _e112)), hit_7));
 }
 
 fn bvh_mesh_intersect(g: BvhMesh, ray_8: Ray) -> Intersection {
@@ -1213,6 +1213,11 @@ fn load_Lambert(offset_8: u32) -> Lambert {
     return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
+fn shading_normal(ray_19: Ray, hit_1: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_1.geometric_normal, ray_19.dir, hit_1.geometric_normal);
+    return faceForward(hit_1.normal, -(ng), hit_1.normal);
+}
+
 fn light_count_query() -> u32 {
     let _e1 = frame;
     return _e1.light_count;
@@ -1251,8 +1256,8 @@ fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f3
     }
     let _e11 = n_5;
     let _e12 = offset_origin(position, _e11);
-    let ray_25 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
-    let _e23 = intersect_scene(ray_25, true);
+    let ray_26 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
+    let _e23 = intersect_scene(ray_26, true);
     return select(1f, 0f, (_e23.slot != NO_HIT));
 }
 
@@ -1290,68 +1295,67 @@ fn sample_light_query(i_3: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> L
     return _e27;
 }
 
-fn lambert_shade(m_2: Lambert, ray_19: Ray, hit_1: Hit) -> vec3<f32> {
+fn lambert_shade(m_2: Lambert, ray_20: Ray, hit_2: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_4: u32;
 
-    let ng = faceForward(hit_1.geometric_normal, ray_19.dir, hit_1.geometric_normal);
-    let n_10 = faceForward(hit_1.normal, -(ng), hit_1.normal);
+    let _e3 = shading_normal(ray_20, hit_2);
     color = vec3(0f);
-    let _e15 = light_count_query();
+    let _e8 = light_count_query();
     i_4 = 0u;
     loop {
-        let _e17 = i_4;
-        if (_e17 >= _e15) {
+        let _e10 = i_4;
+        if (_e10 >= _e8) {
             break;
         }
-        let _e19 = i_4;
-        let _e22 = sample_light_query(_e19, hit_1.position, hit_1.geometric_normal);
-        let _e23 = color;
-        color = (_e23 + (((m_2.albedo * vec3(INV_PI)) * _e22.radiance) * vec3(max(dot(n_10, _e22.dir), 0f))));
+        let _e12 = i_4;
+        let _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
+        let _e16 = color;
+        color = (_e16 + (((m_2.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0f))));
         continuing {
-            let _e37 = i_4;
-            i_4 = (_e37 + 1u);
+            let _e30 = i_4;
+            i_4 = (_e30 + 1u);
         }
     }
-    let _e40 = color;
-    return _e40;
+    let _e33 = color;
+    return _e33;
 }
 
-fn dispatch_closest_hit(type_id_5: u32, offset_11: u32, ray_20: Ray, hit_2: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_5: u32, offset_11: u32, ray_21: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
     let _e3 = load_Lambert(offset_11);
-    let _e4 = lambert_shade(_e3, ray_20, hit_2);
+    let _e4 = lambert_shade(_e3, ray_21, hit_3);
     return _e4;
 }
 
-fn shade_direct(ray_21: Ray, c_3: Candidate) -> vec3<f32> {
+fn shade_direct(ray_22: Ray, c_3: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_3.slot];
-    let _e6 = finish_hit(ray_21, c_3);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_22, c_3);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_22: Ray, hit_3: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_23: Ray, hit_4: Hit) {
     return;
 }
 
-fn spawn_origin(hit_4: Hit, dir_1: vec3<f32>) -> vec3<f32> {
+fn spawn_origin(hit_5: Hit, dir_1: vec3<f32>) -> vec3<f32> {
     var n_6: vec3<f32>;
 
-    n_6 = hit_4.geometric_normal;
+    n_6 = hit_5.geometric_normal;
     let _e4 = n_6;
     if (dot(dir_1, _e4) < 0f) {
         let _e8 = n_6;
         n_6 = -(_e8);
     }
     let _e11 = n_6;
-    let _e12 = offset_origin(hit_4.position, _e11);
+    let _e12 = offset_origin(hit_5.position, _e11);
     return _e12;
 }
 
 fn trace(camera_ray: Ray) -> vec3<f32> {
     var stack_1: array<Frame, 4>;
     var depth: u32;
-    var ray_23: Ray;
+    var ray_24: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var pushed: bool;
@@ -1373,42 +1377,42 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack_1 = array<Frame, 4>();
     depth = 0u;
-    ray_23 = camera_ray;
+    ray_24 = camera_ray;
     value = vec3(0f);
     have_value = false;
     loop {
         let _e26 = have_value;
         if !(_e26) {
-            let _e28 = ray_23;
+            let _e28 = ray_24;
             let _e30 = intersect_scene(_e28, false);
             if (_e30.slot == NO_HIT) {
-                let _e34 = ray_23;
+                let _e34 = ray_24;
                 let _e36 = F32_INF;
-                let _e38 = ray_23;
+                let _e38 = ray_24;
                 let _e39 = miss(_e38);
                 let _e40 = through_medium(_e34, bitcast<f32>(_e36), _e39);
                 value = _e40;
                 have_value = true;
             } else {
                 let inst_9 = instances[_e30.slot];
-                let _e46 = ray_23;
+                let _e46 = ray_24;
                 let _e47 = finish_hit(_e46, _e30);
                 pushed = false;
-                let _e56 = ray_23.depth;
+                let _e56 = ray_24.depth;
                 let _e60 = depth;
                 if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    let _e68 = ray_23;
+                    let _e68 = ray_24;
                     dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
                     let _e70 = spawn_count;
-                    let n_11 = min(min(_e70, 1u), MAX_SPAWN);
-                    if (n_11 > 0u) {
-                        let _e77 = ray_23;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_11, 0u);
+                    let n_10 = min(min(_e70, 1u), MAX_SPAWN);
+                    if (n_10 > 0u) {
+                        let _e77 = ray_24;
+                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_10, 0u);
                         i_5 = 0u;
                         loop {
                             let _e88 = i_5;
-                            if (_e88 >= n_11) {
+                            if (_e88 >= n_10) {
                                 break;
                             }
                             let _e91 = i_5;
@@ -1434,9 +1438,9 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 }
                 let _e120 = pushed;
                 if !(_e120) {
-                    let _e124 = ray_23;
+                    let _e124 = ray_24;
                     let _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0f));
-                    let _e128 = ray_23;
+                    let _e128 = ray_24;
                     let _e130 = through_medium(_e128, _e30.t, _e127);
                     value = _e130;
                     have_value = true;
@@ -1468,13 +1472,13 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let i_6 = stack_1[min(top_1, 3u)].next;
             stack_1[min(top_1, 3u)].next = (i_6 + 1u);
             let parent = stack_1[min(top_1, 3u)].ray;
-            let hit_7 = stack_1[min(top_1, 3u)].hit;
+            let hit_8 = stack_1[min(top_1, 3u)].hit;
             let dir_4 = stack_1[min(top_1, 3u)].dirs[min(i_6, 0u)];
             medium = parent.medium;
-            let _e209 = spawn_origin(hit_7, dir_4);
+            let _e209 = spawn_origin(hit_8, dir_4);
             let _e212 = F32_INF;
             let _e218 = medium;
-            ray_23 = Ray(_e209, 0f, dir_4, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            ray_24 = Ray(_e209, 0f, dir_4, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
         } else {
             let _e224 = stack_1[min(top_1, 3u)].slot;
             let inst_10 = instances[_e224];
@@ -1506,7 +1510,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s_1: u32;
-    var ray_24: Ray;
+    var ray_25: Ray;
 
     let frame_5 = frame;
     let tile_1 = tile;
@@ -1523,13 +1527,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
         let sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_24 = _e23;
-        ray_24.depth = 0u;
-        ray_24.kind = RAY_CAMERA;
-        let _e31 = ray_24.origin;
+        ray_25 = _e23;
+        ray_25.depth = 0u;
+        ray_25.kind = RAY_CAMERA;
+        let _e31 = ray_25.origin;
         let _e33 = medium_at(_e31, NO_HIT);
-        ray_24.medium = _e33;
-        let _e34 = ray_24;
+        ray_25.medium = _e33;
+        let _e34 = ray_25;
         let _e35 = trace(_e34);
         let _e36 = is_finite_vec3f(_e35);
         if all(_e36) {
