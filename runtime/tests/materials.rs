@@ -262,10 +262,11 @@ scene fog {{
             let p = img.get(x, y).expect("pixel");
             for c in 0..3 {
                 let want = ahead[c] * tr;
-                // The kernel offsets a spawned ray's origin off the surface by 2^-16 of the scene's
-                // extent (4 here) at each face, so the path in the fog may be up to 1.3e-4 shorter:
-                // a relative error of at most σ · 1.3e-4, allowed on top of 1e-3 (f32 `exp`); for
-                // σ >= 100, e^(-σd) is below 2e-22 and the absolute bound decides.
+                // The kernel offsets a spawned ray's origin off the surface at each face by twice
+                // a bound of the hit point's rounding error (about 20 ulps of the extent, 4 here,
+                // since issue 21; 2^-16 of it before), so the path in the fog is at most 1.3e-4
+                // shorter: a relative error of at most σ · 1.3e-4, allowed on top of 1e-3 (f32
+                // `exp`); for σ >= 100, e^(-σd) is below 2e-22 and the absolute bound decides.
                 let tol = (1e-3 + sigma * 1.3e-4) * want + 1e-7;
                 assert!(
                     (f64::from(p[c]) - want).abs() <= tol,

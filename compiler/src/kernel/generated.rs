@@ -58,6 +58,8 @@ pub const INTRINSICS: &[(&str, &str, &str)] = &[
     ),
     ("rng_load", "", "u32"),
     ("rng_store", "state: u32", ""),
+    ("hit_error_load", "", "f32"),
+    ("hit_error_store", "error: f32", ""),
     ("spawn_reset", "", ""),
     ("spawned_count", "", "u32"),
     ("spawned_dir", "i: u32", "vec3f"),

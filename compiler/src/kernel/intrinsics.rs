@@ -2,9 +2,10 @@
 //!
 //! - **Framework intrinsics** are the functions of the generated `rtc:abi` module. Their bodies are
 //!   placeholders; every call is replaced ([`Intrinsics::lower_call`]): `load_*` read the kernel's
-//!   buffers, `rng_*`, the spawn queue, the traversal stack (`stack_load`, `stack_store`), the ray
-//!   count (`count_ray`, flushed to counter 1 by `flush_ray_count`) and a debug kernel's counters
-//!   (`debug_count`, `debug_counts`) use private globals, `accumulate` and `write_bounds` write
+//!   buffers, `rng_*`, the shaded hit's position error (`hit_error_*`, read by `shadow`), the spawn
+//!   queue, the traversal stack (`stack_load`, `stack_store`), the ray count (`count_ray`, flushed
+//!   to counter 1 by `flush_ray_count`) and a debug kernel's counters (`debug_count`,
+//!   `debug_counts`) use private globals, `accumulate` and `write_bounds` write
 //!   results, and `call_<kind>` calls the generated dispatcher of that program kind.
 //! - **User intrinsics** (spec/programs.md) become calls of the kernel's own functions written in the
 //!   language (`rand()` → `rand_next`, `shadow(…)` → `shadow_query`, …), except `spawn`, which appends to
@@ -282,6 +283,16 @@ impl KernelHooks<'_> {
                 let g = self.generated.private(cx, "rng_state", u);
                 let p = fb.expr(Expression::GlobalVariable(g), span);
                 if name == "rng_store" {
+                    fb.store(p, arg(0)?, span);
+                    return Ok(None);
+                }
+                fb.load(p, span)
+            }
+            "hit_error_load" | "hit_error_store" => {
+                let f = TypeCache::scalar(cx.module_mut(), Scalar::F32);
+                let g = self.generated.private(cx, "hit_error", f);
+                let p = fb.expr(Expression::GlobalVariable(g), span);
+                if name == "hit_error_store" {
                     fb.store(p, arg(0)?, span);
                     return Ok(None);
                 }

@@ -125,6 +125,7 @@ struct QuadLight {
 struct Frame {
     ray: Ray,
     hit: Hit,
+    error: f32,
     slot: u32,
     sum: vec3<f32>,
     dirs: array<vec3<f32>, 1>,
@@ -146,9 +147,14 @@ const NODE_COUNT_MASK: u32 = 15u;
 const NODE_FIRST_MASK: u32 = 134217727u;
 const BLAS_STACK: u32 = 64u;
 const TLAS_STACK: u32 = 7u;
+const POINT_ERROR: f32 = 0.0000019073486f;
+const GAMMA_1_: f32 = 0.00000005960465f;
+const GAMMA_6_: f32 = 0.0000003576281f;
+const GAMMA_4_: f32 = 0.00000023841864f;
 const HAS_SECONDARY_RAYS: bool = true;
 const HAS_BACKGROUND: bool = false;
 const FLAG_MEDIUM: u32 = 4u;
+const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
 const INV_PI: f32 = 0.31830987f;
 const FLAG_SECONDARY: u32 = 2u;
@@ -173,6 +179,7 @@ var<storage> nodes: array<GpuNode>;
 @group(0) @binding(4) 
 var<storage> triangles: array<vec4<f32>>;
 var<private> traversal_stack: array<u32, 71>;
+var<private> hit_error: f32;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
 var<private> ray_count: u32;
@@ -258,9 +265,9 @@ fn samples_per_pixel_query() -> u32 {
 
 fn rand_next() -> f32 {
     let _e1 = rng_state;
-    let s_1 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_1;
-    let word_1 = (((s_1 >> (((s_1 >> 28u) + 4u) & 31u)) ^ s_1) * 277803737u);
+    let s_2 = ((_e1 * 747796405u) + 2891336453u);
+    rng_state = s_2;
+    let word_1 = (((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u);
     let r_3 = ((word_1 >> 22u) ^ word_1);
     return (f32((r_3 >> 8u)) * (1f / 16777216f));
 }
@@ -322,8 +329,8 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_2 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_2 * tiny), (abs(d) < tiny));
+    let s_3 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_3 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
@@ -435,7 +442,7 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
     let _e9 = prepare_triangle_ray(ray_4);
     let base_1 = inst_2.blas_root;
     let header_1 = nodes[base_1];
-    let origin_3 = header_1.min;
+    let origin_4 = header_1.min;
     let scale_2 = header_1.max;
     sp_1 = 0u;
     child = header_1.a;
@@ -477,7 +484,7 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
             let _e62 = child;
             let n_8 = nodes[(base_1 + _e62)];
             let _e68 = best.t;
-            let _e69 = children_entry(n_8, origin_3, scale_2, ray_4, _e8, _e68);
+            let _e69 = children_entry(n_8, origin_4, scale_2, ray_4, _e8, _e68);
             let tl = _e69.x;
             let tr = _e69.y;
             let _e73 = F32_INF;
@@ -527,23 +534,28 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
 fn intersect_object(slot_2: u32, ray_5: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
-    let inst_5 = instances[slot_2];
-    let _e7 = to_object(inst_5, ray_5);
+    let inst_6 = instances[slot_2];
+    let _e7 = to_object(inst_6, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
-    if (inst_5.geometry_type == MESH_GEOMETRY) {
+    if (inst_6.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_5, slot_2, ray_5, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_6, slot_2, ray_5, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
 }
 
+fn point_error(origin_3: vec3<f32>, along: vec3<f32>) -> f32 {
+    let a_5 = (abs(origin_3) + abs(along));
+    return (POINT_ERROR * max(max(a_5.x, a_5.y), a_5.z));
+}
+
 fn load_triangle(slot_3: u32) -> Triangle {
-    let v0_ = triangles[(slot_3 * 3u)];
+    let v0_1 = triangles[(slot_3 * 3u)];
     let v1_ = triangles[((slot_3 * 3u) + 1u)];
     let v2_ = triangles[((slot_3 * 3u) + 2u)];
-    return Triangle(v0_.xyz, v1_.xyz, v2_.xyz);
+    return Triangle(v0_1.xyz, v1_.xyz, v2_.xyz);
 }
 
 fn point_to_world(inst_3: GpuInstance, p_2: vec3<f32>) -> vec3<f32> {
@@ -551,17 +563,29 @@ fn point_to_world(inst_3: GpuInstance, p_2: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(dot(inst_3.object_to_world_0_, q_1), dot(inst_3.object_to_world_1_, q_1), dot(inst_3.object_to_world_2_, q_1));
 }
 
+fn mesh_error(inst_4: GpuInstance, v0_: vec3<f32>, db1_: vec3<f32>, db2_: vec3<f32>, p_3: vec3<f32>) -> f32 {
+    let obj = ((vec3(GAMMA_1_) * abs(v0_)) + (vec3(GAMMA_6_) * (abs(db1_) + abs(db2_))));
+    let q_2 = vec4<f32>(abs(p_3), 1f);
+    let r0_ = abs(inst_4.object_to_world_0_);
+    let r1_ = abs(inst_4.object_to_world_1_);
+    let r2_ = abs(inst_4.object_to_world_2_);
+    let rounding = (vec3(GAMMA_4_) * vec3<f32>(dot(r0_, q_2), dot(r1_, q_2), dot(r2_, q_2)));
+    let carried = (vec3((1f + GAMMA_4_)) * vec3<f32>(dot(r0_.xyz, obj), dot(r1_.xyz, obj), dot(r2_.xyz, obj)));
+    let e = (rounding + carried);
+    return max(max(e.x, e.y), e.z);
+}
+
 fn decode_octahedral(bits: u32) -> vec3<f32> {
     var n_1: vec3<f32>;
 
-    let e = unpack2x16snorm(bits);
-    n_1 = vec3<f32>(e.x, e.y, ((1f - abs(e.x)) - abs(e.y)));
+    let e_1 = unpack2x16snorm(bits);
+    n_1 = vec3<f32>(e_1.x, e_1.y, ((1f - abs(e_1.x)) - abs(e_1.y)));
     let _e14 = n_1.z;
     if (_e14 < 0f) {
         let _e21 = n_1;
-        let s_3 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_4 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n_1;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_3);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_4);
         let _e37 = n_1.z;
         n_1 = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -570,8 +594,8 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     return _e40;
 }
 
-fn normal_to_world(inst_4: GpuInstance, n_2: vec3<f32>) -> vec3<f32> {
-    let w_1 = (((inst_4.world_to_object_0_.xyz * vec3(n_2.x)) + (inst_4.world_to_object_1_.xyz * vec3(n_2.y))) + (inst_4.world_to_object_2_.xyz * vec3(n_2.z)));
+fn normal_to_world(inst_5: GpuInstance, n_2: vec3<f32>) -> vec3<f32> {
+    let w_1 = (((inst_5.world_to_object_0_.xyz * vec3(n_2.x)) + (inst_5.world_to_object_1_.xyz * vec3(n_2.y))) + (inst_5.world_to_object_2_.xyz * vec3(n_2.z)));
     let _e19 = normalize_vec3f(w_1);
     return _e19;
 }
@@ -581,49 +605,56 @@ fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
-    let inst_6 = instances[c_1.slot];
-    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_6.object, c_1.primitive);
+    let inst_7 = instances[c_1.slot];
+    let _e11 = point_error(ray_6.origin, (ray_6.dir * vec3(c_1.t)));
+    hit_error = _e11;
+    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
-    if (inst_6.geometry_type == MESH_GEOMETRY) {
-        let _e35 = load_triangle(c_1.primitive);
+    if (inst_7.geometry_type == MESH_GEOMETRY) {
+        let _e42 = load_triangle(c_1.primitive);
         let b_5 = c_1.uv;
         let w_2 = ((1f - b_5.x) - b_5.y);
-        let _e56 = point_to_world(inst_6, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_5.x))) + (_e35.v2_ * vec3(b_5.y))));
-        hit.position = _e56;
-        n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
+        let e1_ = (_e42.v1_ - _e42.v0_);
+        let e2_ = (_e42.v2_ - _e42.v0_);
+        let p_6 = (_e42.v0_ + ((e1_ * vec3(b_5.x)) + (e2_ * vec3(b_5.y))));
+        let _e65 = point_to_world(inst_7, p_6);
+        hit.position = _e65;
+        let _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_5.x)), (e2_ * vec3(b_5.y)), p_6);
+        hit_error = _e73;
+        n_geo = cross(e1_, e2_);
         let a0_ = attributes[(c_1.primitive * 2u)];
         let a1_ = attributes[((c_1.primitive * 2u) + 1u)];
-        let _e79 = decode_octahedral(a0_.x);
-        let _e83 = decode_octahedral(a0_.y);
-        let _e89 = decode_octahedral(a0_.z);
-        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_5.x))) + (_e89 * vec3(b_5.y)));
-        let _e94 = n_shade;
-        let _e95 = n_shade;
-        if (dot(_e94, _e95) < 0.000000000001f) {
-            let _e99 = n_geo;
-            n_shade = _e99;
+        let _e91 = decode_octahedral(a0_.x);
+        let _e95 = decode_octahedral(a0_.y);
+        let _e101 = decode_octahedral(a0_.z);
+        n_shade = (((_e91 * vec3(w_2)) + (_e95 * vec3(b_5.x))) + (_e101 * vec3(b_5.y)));
+        let _e106 = n_shade;
+        let _e107 = n_shade;
+        if (dot(_e106, _e107) < 0.000000000001f) {
+            let _e111 = n_geo;
+            n_shade = _e111;
         }
         let uv0_ = unpack2x16float(a0_.w);
         let uv1_ = unpack2x16float(a1_.x);
         let uv2_ = unpack2x16float(a1_.y);
         hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_5.x))) + (uv2_ * vec2(b_5.y)));
-        let _e123 = triangles[(c_1.primitive * 3u)];
-        hit.primitive = bitcast<u32>(_e123.w);
+        let _e135 = triangles[(c_1.primitive * 3u)];
+        hit.primitive = bitcast<u32>(_e135.w);
     }
-    let _e127 = n_geo;
-    let _e128 = normal_to_world(inst_6, _e127);
-    hit.geometric_normal = _e128;
-    let _e130 = n_shade;
-    let _e131 = normal_to_world(inst_6, _e130);
-    hit.normal = _e131;
-    let _e135 = hit.geometric_normal;
-    hit.front_face = (dot(ray_6.dir, _e135) < 0f);
-    let _e139 = hit;
-    return _e139;
+    let _e139 = n_geo;
+    let _e140 = normal_to_world(inst_7, _e139);
+    hit.geometric_normal = _e140;
+    let _e142 = n_shade;
+    let _e143 = normal_to_world(inst_7, _e142);
+    hit.normal = _e143;
+    let _e147 = hit.geometric_normal;
+    hit.front_face = (dot(ray_6.dir, _e147) < 0f);
+    let _e151 = hit;
+    return _e151;
 }
 
-fn medium_at(p_3: vec3<f32>, exclude: u32) -> u32 {
+fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     var inside: u32;
     var nearest: f32;
     var i: u32;
@@ -634,7 +665,7 @@ fn medium_at(p_3: vec3<f32>, exclude: u32) -> u32 {
     let frame_1 = frame;
     let _e12 = normalize_vec3f(vec3<f32>(0.5773f, 0.5774f, 0.5775f));
     let _e14 = F32_INF;
-    let probe = Ray(p_3, 0f, _e12, bitcast<f32>(_e14), 0u, 0u, 0u);
+    let probe = Ray(p_4, 0f, _e12, bitcast<f32>(_e14), 0u, 0u, 0u);
     inside = 0u;
     let _e23 = F32_INF;
     nearest = bitcast<f32>(_e23);
@@ -693,11 +724,11 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
     let _e16 = safe_inverse(ray_7.dir);
     let base_2 = frame_2.tlas_root;
     let header_2 = nodes[base_2];
-    let origin_4 = header_2.min;
+    let origin_5 = header_2.min;
     let scale_3 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_4, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
+    let _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
@@ -724,7 +755,7 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
             let _e63 = child_1;
             let n_9 = nodes[(base_2 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_9, origin_4, scale_3, ray_7, _e16, _e69);
+            let _e70 = children_entry(n_9, origin_5, scale_3, ray_7, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
@@ -795,11 +826,11 @@ fn through_medium(ray_11: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if (ray_11.medium == 0u) {
         return radiance_1;
     }
-    let inst_7 = instances[(ray_11.medium - 1u)];
-    if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
+    let inst_8 = instances[(ray_11.medium - 1u)];
+    if ((inst_8.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_11, t_1, radiance_1);
+    let _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_11, t_1, radiance_1);
     return _e21;
 }
 
@@ -854,17 +885,25 @@ fn load_QuadLight(offset_6: u32) -> QuadLight {
     return QuadLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)), vec3<f32>(bitcast<f32>(_e62), bitcast<f32>(_e68), bitcast<f32>(_e74)), bitcast<f32>(_e81));
 }
 
-fn offset_origin(p_4: vec3<f32>, n_3: vec3<f32>) -> vec3<f32> {
-    let _e3 = frame;
-    let header_3 = nodes[_e3.tlas_root];
-    let _e11 = node_frame_hi(header_3);
-    let a_5 = max(abs(p_4), max(abs(header_3.min), abs(_e11)));
-    let m_3 = max(max(a_5.x, a_5.y), a_5.z);
-    return (p_4 + (n_3 * vec3((m_3 * (1f / 65536f)))));
+fn step_toward(x_1: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
+    let bits_1 = bitcast<vec3<u32>>(x_1);
+    let up_1 = ((sign(x_1) * sign(s)) > vec3(0f));
+    let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
+    let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s > vec3(0f)));
+    let moved = select(stepped, from_zero, (x_1 == vec3(0f)));
+    return select(x_1, moved, !((s == vec3(0f))));
+}
+
+fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
+    let d_3 = ((2f * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
+    let offset_10 = (n_3 * vec3(d_3));
+    let _e17 = step_toward((p_5 + offset_10), offset_10);
+    return _e17;
 }
 
 fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
     var n_4: vec3<f32>;
+    var tmax_4: f32;
 
     n_4 = normal;
     let _e5 = n_4;
@@ -872,11 +911,25 @@ fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f3
         let _e9 = n_4;
         n_4 = -(_e9);
     }
-    let _e11 = n_4;
-    let _e12 = offset_origin(position, _e11);
-    let ray_21 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
-    let _e23 = intersect_scene(ray_21, true);
-    return select(1f, 0f, (_e23.slot != NO_HIT));
+    let a_6 = abs(position);
+    let _e13 = hit_error;
+    let error_2 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
+    let _e22 = n_4;
+    let _e23 = offset_origin(position, _e22, error_2);
+    let _e25 = F32_INF;
+    tmax_4 = bitcast<f32>(_e25);
+    let _e29 = F32_INF;
+    if (dist < bitcast<f32>(_e29)) {
+        let light = (position + (dir * vec3(dist)));
+        let dd_1 = dot(dir, dir);
+        let along_1 = (dot((light - _e23), dir) / dd_1);
+        let l_1 = (abs(position) + abs((dir * vec3(dist))));
+        tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
+    }
+    let _e59 = tmax_4;
+    let ray_21 = Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
+    let _e65 = intersect_scene(ray_21, true);
+    return select(1f, 0f, (_e65.slot != NO_HIT));
 }
 
 fn quad_light(l: QuadLight, position_1: vec3<f32>, normal_1: vec3<f32>) -> LightSample {
@@ -959,18 +1012,18 @@ fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_15: Ray, hit_3: Hit, 
 }
 
 fn shade_direct(ray_16: Ray, c_2: Candidate) -> vec3<f32> {
-    let inst_8 = instances[c_2.slot];
+    let inst_9 = instances[c_2.slot];
     let _e6 = finish_hit(ray_16, c_2);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, vec3(0f));
+    let _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_16, _e6, vec3(0f));
     return _e11;
 }
 
 fn orthonormal_basis(n_5: vec3<f32>) -> mat3x3<f32> {
     let sign_ = select(1f, -1f, ((bitcast<u32>(n_5.z) & 2147483648u) != 0u));
-    let a_6 = (-1f / (sign_ + n_5.z));
-    let b_6 = ((n_5.x * n_5.y) * a_6);
+    let a_7 = (-1f / (sign_ + n_5.z));
+    let b_6 = ((n_5.x * n_5.y) * a_7);
     let _e16 = (sign_ * n_5.x);
-    return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_5.x) * a_6)), (sign_ * b_6), -(_e16)), vec3<f32>(b_6, (sign_ + ((n_5.y * n_5.y) * a_6)), -(n_5.y)), n_5);
+    return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_5.x) * a_7)), (sign_ * b_6), -(_e16)), vec3<f32>(b_6, (sign_ + ((n_5.y * n_5.y) * a_7)), -(n_5.y)), n_5);
 }
 
 fn sample_cosine_hemisphere(n_6: vec3<f32>, u: vec2<f32>) -> vec3<f32> {
@@ -1003,12 +1056,12 @@ fn path_diffuse_rays(m_2: PathDiffuse, ray_17: Ray, hit_4: Hit) {
     let _e13 = sample_cosine_hemisphere(n_11, _e12);
     weight_1 = m_2.albedo;
     if (ray_17.depth >= m_2.roulette_depth) {
-        let q_2 = saturate(max(m_2.albedo.x, max(m_2.albedo.y, m_2.albedo.z)));
+        let q_3 = saturate(max(m_2.albedo.x, max(m_2.albedo.y, m_2.albedo.z)));
         let _e28 = rand_next();
-        if (_e28 >= q_2) {
+        if (_e28 >= q_3) {
             return;
         }
-        weight_1 = (m_2.albedo / vec3(q_2));
+        weight_1 = (m_2.albedo / vec3(q_3));
     }
     if (dot(_e13, ng) > 0f) {
         let _e36 = nee_bounce_dir(_e13);
@@ -1024,18 +1077,18 @@ fn dispatch_secondary_rays(type_id_5: u32, offset_9: u32, ray_18: Ray, hit_5: Hi
     return;
 }
 
-fn spawn_origin(hit_6: Hit, dir_3: vec3<f32>) -> vec3<f32> {
+fn spawn_origin(hit_6: Hit, error_1: f32, dir_3: vec3<f32>) -> vec3<f32> {
     var n_7: vec3<f32>;
 
     n_7 = hit_6.geometric_normal;
-    let _e4 = n_7;
-    if (dot(dir_3, _e4) < 0f) {
-        let _e8 = n_7;
-        n_7 = -(_e8);
+    let _e5 = n_7;
+    if (dot(dir_3, _e5) < 0f) {
+        let _e9 = n_7;
+        n_7 = -(_e9);
     }
-    let _e11 = n_7;
-    let _e12 = offset_origin(hit_6.position, _e11);
-    return _e12;
+    let _e12 = n_7;
+    let _e13 = offset_origin(hit_6.position, _e12, error_1);
+    return _e13;
 }
 
 fn trace(camera_ray: Ray) -> vec3<f32> {
@@ -1052,14 +1105,15 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     if !(HAS_SECONDARY_RAYS) {
         let _e4 = intersect_scene(camera_ray, false);
         if (_e4.slot == NO_HIT) {
-            let _e9 = F32_INF;
-            let _e11 = miss(camera_ray);
-            let _e12 = through_medium(camera_ray, bitcast<f32>(_e9), _e11);
-            return _e12;
+            hit_error = 0f;
+            let _e11 = F32_INF;
+            let _e13 = miss(camera_ray);
+            let _e14 = through_medium(camera_ray, bitcast<f32>(_e11), _e13);
+            return _e14;
         }
-        let _e14 = shade_direct(camera_ray, _e4);
-        let _e15 = through_medium(camera_ray, _e4.t, _e14);
-        return _e15;
+        let _e16 = shade_direct(camera_ray, _e4);
+        let _e17 = through_medium(camera_ray, _e4.t, _e16);
+        return _e17;
     }
     stack = array<Frame, 6>();
     depth = 0u;
@@ -1067,115 +1121,120 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     value = vec3(0f);
     have_value = false;
     loop {
-        let _e26 = have_value;
-        if !(_e26) {
-            let _e28 = ray_19;
-            let _e30 = intersect_scene(_e28, false);
-            if (_e30.slot == NO_HIT) {
-                let _e34 = ray_19;
-                let _e36 = F32_INF;
+        let _e28 = have_value;
+        if !(_e28) {
+            let _e30 = ray_19;
+            let _e32 = intersect_scene(_e30, false);
+            if (_e32.slot == NO_HIT) {
+                hit_error = 0f;
                 let _e38 = ray_19;
-                let _e39 = miss(_e38);
-                let _e40 = through_medium(_e34, bitcast<f32>(_e36), _e39);
-                value = _e40;
+                let _e40 = F32_INF;
+                let _e42 = ray_19;
+                let _e43 = miss(_e42);
+                let _e44 = through_medium(_e38, bitcast<f32>(_e40), _e43);
+                value = _e44;
                 have_value = true;
             } else {
-                let inst_9 = instances[_e30.slot];
-                let _e46 = ray_19;
-                let _e47 = finish_hit(_e46, _e30);
+                let inst_10 = instances[_e32.slot];
+                let _e50 = ray_19;
+                let _e51 = finish_hit(_e50, _e32);
+                let error_3 = hit_error;
                 pushed = false;
-                let _e56 = ray_19.depth;
-                let _e60 = depth;
-                if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
+                let _e62 = ray_19.depth;
+                let _e66 = depth;
+                if ((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    let _e68 = ray_19;
-                    dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
-                    let _e70 = spawn_count;
-                    let n_12 = min(min(_e70, 1u), MAX_SPAWN);
+                    let _e74 = ray_19;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);
+                    let _e76 = spawn_count;
+                    let n_12 = min(min(_e76, 1u), MAX_SPAWN);
                     if (n_12 > 0u) {
-                        let _e77 = ray_19;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_12, 0u);
+                        let _e83 = ray_19;
+                        f = Frame(_e83, _e51, error_3, _e32.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_12, 0u);
                         i_3 = 0u;
                         loop {
-                            let _e88 = i_3;
-                            if (_e88 >= n_12) {
+                            let _e94 = i_3;
+                            if (_e94 >= n_12) {
                                 break;
                             }
-                            let _e91 = i_3;
-                            let _e95 = i_3;
-                            let _e98 = spawn_dirs[_e95];
-                            f.dirs[min(_e91, 0u)] = _e98;
-                            let _e100 = i_3;
-                            let _e104 = i_3;
-                            let _e107 = spawn_weights[_e104];
-                            f.weights[min(_e100, 0u)] = _e107;
+                            let _e97 = i_3;
+                            let _e101 = i_3;
+                            let _e104 = spawn_dirs[_e101];
+                            f.dirs[min(_e97, 0u)] = _e104;
+                            let _e106 = i_3;
+                            let _e110 = i_3;
+                            let _e113 = spawn_weights[_e110];
+                            f.weights[min(_e106, 0u)] = _e113;
                             continuing {
-                                let _e108 = i_3;
-                                i_3 = (_e108 + 1u);
+                                let _e114 = i_3;
+                                i_3 = (_e114 + 1u);
                             }
                         }
-                        let _e111 = depth;
-                        let _e115 = f;
-                        stack[min(_e111, 5u)] = _e115;
-                        let _e116 = depth;
-                        depth = (_e116 + 1u);
+                        let _e117 = depth;
+                        let _e121 = f;
+                        stack[min(_e117, 5u)] = _e121;
+                        let _e122 = depth;
+                        depth = (_e122 + 1u);
                         pushed = true;
                     }
                 }
-                let _e120 = pushed;
-                if !(_e120) {
-                    let _e124 = ray_19;
-                    let _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0f));
-                    let _e128 = ray_19;
-                    let _e130 = through_medium(_e128, _e30.t, _e127);
-                    value = _e130;
+                let _e126 = pushed;
+                if !(_e126) {
+                    let _e130 = ray_19;
+                    let _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, vec3(0f));
+                    let _e134 = ray_19;
+                    let _e136 = through_medium(_e134, _e32.t, _e133);
+                    value = _e136;
                     have_value = true;
                 }
             }
         }
-        let _e132 = have_value;
-        if _e132 {
-            let _e133 = depth;
-            if (_e133 == 0u) {
-                let _e136 = value;
-                return _e136;
+        let _e138 = have_value;
+        if _e138 {
+            let _e139 = depth;
+            if (_e139 == 0u) {
+                let _e142 = value;
+                return _e142;
             }
-            let _e137 = depth;
-            let top = (_e137 - 1u);
-            let _e144 = stack[min(top, 5u)].next;
-            let child_2 = (_e144 - 1u);
-            let _e151 = stack[min(top, 5u)].sum;
-            let _e159 = stack[min(top, 5u)].weights[min(child_2, 0u)];
-            let _e160 = value;
-            stack[min(top, 5u)].sum = (_e151 + (_e159 * _e160));
+            let _e143 = depth;
+            let top = (_e143 - 1u);
+            let _e150 = stack[min(top, 5u)].next;
+            let child_2 = (_e150 - 1u);
+            let _e157 = stack[min(top, 5u)].sum;
+            let _e165 = stack[min(top, 5u)].weights[min(child_2, 0u)];
+            let _e166 = value;
+            stack[min(top, 5u)].sum = (_e157 + (_e165 * _e166));
             have_value = false;
         }
-        let _e164 = depth;
-        let top_1 = (_e164 - 1u);
-        let _e171 = stack[min(top_1, 5u)].next;
-        let _e176 = stack[min(top_1, 5u)].count;
-        if (_e171 < _e176) {
+        let _e170 = depth;
+        let top_1 = (_e170 - 1u);
+        let _e177 = stack[min(top_1, 5u)].next;
+        let _e182 = stack[min(top_1, 5u)].count;
+        if (_e177 < _e182) {
             let i_4 = stack[min(top_1, 5u)].next;
             stack[min(top_1, 5u)].next = (i_4 + 1u);
             let parent = stack[min(top_1, 5u)].ray;
             let hit_8 = stack[min(top_1, 5u)].hit;
             let dir_5 = stack[min(top_1, 5u)].dirs[min(i_4, 0u)];
             medium = parent.medium;
-            let _e209 = spawn_origin(hit_8, dir_5);
-            let _e212 = F32_INF;
-            let _e218 = medium;
-            ray_19 = Ray(_e209, 0f, dir_5, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            let _e219 = stack[min(top_1, 5u)].error;
+            let _e220 = spawn_origin(hit_8, _e219, dir_5);
+            let _e223 = F32_INF;
+            let _e229 = medium;
+            ray_19 = Ray(_e220, 0f, dir_5, bitcast<f32>(_e223), (parent.depth + 1u), RAY_SECONDARY, _e229);
         } else {
-            let _e224 = stack[min(top_1, 5u)].slot;
-            let inst_10 = instances[_e224];
-            let _e234 = stack[min(top_1, 5u)].ray;
-            let _e239 = stack[min(top_1, 5u)].hit;
-            let _e244 = stack[min(top_1, 5u)].sum;
-            let _e245 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e234, _e239, _e244);
-            let _e250 = stack[min(top_1, 5u)].ray;
-            let _e256 = stack[min(top_1, 5u)].hit.t;
-            let _e257 = through_medium(_e250, _e256, _e245);
-            value = _e257;
+            let _e235 = stack[min(top_1, 5u)].slot;
+            let inst_11 = instances[_e235];
+            let _e243 = stack[min(top_1, 5u)].error;
+            hit_error = _e243;
+            let _e251 = stack[min(top_1, 5u)].ray;
+            let _e256 = stack[min(top_1, 5u)].hit;
+            let _e261 = stack[min(top_1, 5u)].sum;
+            let _e262 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e251, _e256, _e261);
+            let _e267 = stack[min(top_1, 5u)].ray;
+            let _e273 = stack[min(top_1, 5u)].hit.t;
+            let _e274 = through_medium(_e267, _e273, _e262);
+            value = _e274;
             depth = top_1;
             have_value = true;
         }
@@ -1183,8 +1242,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn is_finite_vec3f(x_1: vec3<f32>) -> vec3<bool> {
-    return ((bitcast<vec3<u32>>(x_1) & vec3(2147483647u)) < vec3(2139095040u));
+fn is_finite_vec3f(x_2: vec3<f32>) -> vec3<bool> {
+    return ((bitcast<vec3<u32>>(x_2) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
 fn finite_or_zero(c_3: vec3<f32>) -> vec3<f32> {
@@ -1195,7 +1254,7 @@ fn finite_or_zero(c_3: vec3<f32>) -> vec3<f32> {
 fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
-    var s: u32;
+    var s_1: u32;
     var ray_20: Ray;
 
     let frame_5 = frame;
@@ -1203,13 +1262,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
     sum = vec3(0f);
     bad = 0u;
     let end_1 = frame_5.samples_per_pass;
-    s = 0u;
+    s_1 = 0u;
     loop {
-        let _e13 = s;
+        let _e13 = s_1;
         if (_e13 >= end_1) {
             break;
         }
-        let _e18 = s;
+        let _e18 = s_1;
         let sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
@@ -1233,8 +1292,8 @@ fn render_pixel(pixel_3: vec2<u32>) {
             bad = (_e43 + 1u);
         }
         continuing {
-            let _e46 = s;
-            s = (_e46 + 1u);
+            let _e46 = s_1;
+            s_1 = (_e46 + 1u);
         }
     }
     let _e50 = ray_count;

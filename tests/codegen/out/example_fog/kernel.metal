@@ -9,9 +9,9 @@ struct _mslBufferSizes {
     uint size5;
     uint size6;
     uint size7;
-    uint size8;
-    uint size14;
+    uint size9;
     uint size15;
+    uint size16;
 };
 
 struct TileParams {
@@ -146,14 +146,15 @@ struct type_15 {
 struct Frame {
     Ray ray;
     Hit hit;
+    float error;
     uint slot;
-    char _pad3[12];
+    char _pad4[8];
     metal::float3 sum;
     type_15 dirs;
     type_15 weights;
     uint count;
     uint next;
-    char _pad8[8];
+    char _pad9[8];
 };
 struct type_16 {
     Frame inner[3];
@@ -171,12 +172,17 @@ constant uint NODE_COUNT_SHIFT = 27u;
 constant uint NODE_COUNT_MASK = 15u;
 constant uint NODE_FIRST_MASK = 134217727u;
 constant uint FLAG_ANY_HIT = 1u;
+constant float POINT_ERROR = 0.0000019073486;
+constant float GAMMA_1_ = 0.00000005960465;
+constant float GAMMA_6_ = 0.0000003576281;
+constant float GAMMA_4_ = 0.00000023841864;
 constant uint RAY_SHADOW = 2u;
 constant uint BLAS_STACK = 64u;
 constant uint TLAS_STACK = 10u;
 constant bool HAS_SECONDARY_RAYS = true;
 constant bool HAS_BACKGROUND = false;
 constant uint FLAG_MEDIUM = 4u;
+constant float LIGHT_ERROR = 0.00000047683716;
 constant float PI = 3.1415927;
 constant float INV_PI = 0.31830987;
 constant uint FLAG_SECONDARY = 2u;
@@ -303,9 +309,9 @@ float rand_next(
     thread uint& rng_state
 ) {
     uint _e1 = rng_state;
-    uint s_2 = (_e1 * 747796405u) + 2891336453u;
-    rng_state = s_2;
-    uint word_1 = ((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u;
+    uint s_3 = (_e1 * 747796405u) + 2891336453u;
+    rng_state = s_3;
+    uint word_1 = ((s_3 >> (((s_3 >> 28u) + 4u) & 31u)) ^ s_3) * 277803737u;
     uint r_3 = (word_1 >> 22u) ^ word_1;
     return static_cast<float>(r_3 >> 8u) * (1.0 / 16777216.0);
 }
@@ -395,8 +401,8 @@ metal::float3 safe_inverse(
     metal::float3 d
 ) {
     metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_3 * tiny, metal::abs(d) < tiny);
+    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_4 * tiny, metal::abs(d) < tiny);
     return metal::float3(1.0) / dd;
 }
 
@@ -451,15 +457,23 @@ metal::float3 hit_triangle(
     return hit_10 ? metal::float3(t_3, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
+float point_error(
+    metal::float3 origin,
+    metal::float3 along
+) {
+    metal::float3 a_5 = metal::abs(origin) + metal::abs(along);
+    return POINT_ERROR * metal::max(metal::max(a_5.x, a_5.y), a_5.z);
+}
+
 Triangle load_triangle(
     uint slot_1,
     device type_10 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 v0_ = triangles[slot_1 * 3u];
+    metal::float4 v0_1 = triangles[slot_1 * 3u];
     metal::float4 v1_ = triangles[(slot_1 * 3u) + 1u];
     metal::float4 v2_ = triangles[(slot_1 * 3u) + 2u];
-    return Triangle {v0_.xyz, v1_.xyz, v2_.xyz};
+    return Triangle {v0_1.xyz, v1_.xyz, v2_.xyz};
 }
 
 metal::float3 point_to_world(
@@ -470,18 +484,36 @@ metal::float3 point_to_world(
     return metal::float3(metal::dot(inst_1.object_to_world_0_, q_1), metal::dot(inst_1.object_to_world_1_, q_1), metal::dot(inst_1.object_to_world_2_, q_1));
 }
 
+float mesh_error(
+    GpuInstance inst_2,
+    metal::float3 v0_,
+    metal::float3 db1_,
+    metal::float3 db2_,
+    metal::float3 p_1
+) {
+    metal::float3 obj = (metal::float3(GAMMA_1_) * metal::abs(v0_)) + (metal::float3(GAMMA_6_) * (metal::abs(db1_) + metal::abs(db2_)));
+    metal::float4 q_2 = metal::float4(metal::abs(p_1), 1.0);
+    metal::float4 r0_ = metal::abs(inst_2.object_to_world_0_);
+    metal::float4 r1_ = metal::abs(inst_2.object_to_world_1_);
+    metal::float4 r2_ = metal::abs(inst_2.object_to_world_2_);
+    metal::float3 rounding = metal::float3(GAMMA_4_) * metal::float3(metal::dot(r0_, q_2), metal::dot(r1_, q_2), metal::dot(r2_, q_2));
+    metal::float3 carried = metal::float3(1.0 + GAMMA_4_) * metal::float3(metal::dot(r0_.xyz, obj), metal::dot(r1_.xyz, obj), metal::dot(r2_.xyz, obj));
+    metal::float3 e = rounding + carried;
+    return metal::max(metal::max(e.x, e.y), e.z);
+}
+
 metal::float3 decode_octahedral(
     uint bits
 ) {
     metal::float3 n = {};
-    metal::float2 e = metal::unpack_snorm2x16_to_float(bits);
-    n = metal::float3(e.x, e.y, (1.0 - metal::abs(e.x)) - metal::abs(e.y));
+    metal::float2 e_1 = metal::unpack_snorm2x16_to_float(bits);
+    n = metal::float3(e_1.x, e_1.y, (1.0 - metal::abs(e_1.x)) - metal::abs(e_1.y));
     float _e14 = n.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n;
-        metal::float2 s_4 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float2 s_5 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
         metal::float3 _e29 = n;
-        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_4;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_5;
         float _e37 = n.z;
         n = metal::float3(xy.x, xy.y, _e37);
     }
@@ -491,10 +523,10 @@ metal::float3 decode_octahedral(
 }
 
 metal::float3 normal_to_world(
-    GpuInstance inst_2,
+    GpuInstance inst_3,
     metal::float3 n_1
 ) {
-    metal::float3 w_1 = ((inst_2.world_to_object_0_.xyz * metal::float3(n_1.x)) + (inst_2.world_to_object_1_.xyz * metal::float3(n_1.y))) + (inst_2.world_to_object_2_.xyz * metal::float3(n_1.z));
+    metal::float3 w_1 = ((inst_3.world_to_object_0_.xyz * metal::float3(n_1.x)) + (inst_3.world_to_object_1_.xyz * metal::float3(n_1.y))) + (inst_3.world_to_object_2_.xyz * metal::float3(n_1.z));
     metal::float3 _e19 = normalize_vec3f(w_1);
     return _e19;
 }
@@ -504,52 +536,60 @@ Hit finish_hit(
     Candidate c,
     device type_8 const& instances,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Hit hit = {};
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
-    GpuInstance inst_5 = instances[c.slot];
-    hit = Hit {ray_2.origin + (ray_2.dir * metal::float3(c.t)), c.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c.uv, true, {}, inst_5.object, c.primitive};
+    GpuInstance inst_6 = instances[c.slot];
+    float _e11 = point_error(ray_2.origin, ray_2.dir * metal::float3(c.t));
+    hit_error = _e11;
+    hit = Hit {ray_2.origin + (ray_2.dir * metal::float3(c.t)), c.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c.uv, true, {}, inst_6.object, c.primitive};
     n_geo = c.normal;
     n_shade = c.normal;
-    if (inst_5.geometry_type == MESH_GEOMETRY) {
-        Triangle _e35 = load_triangle(c.primitive, triangles, _buffer_sizes);
+    if (inst_6.geometry_type == MESH_GEOMETRY) {
+        Triangle _e42 = load_triangle(c.primitive, triangles, _buffer_sizes);
         metal::float2 b_5 = c.uv;
         float w_2 = (1.0 - c.uv.x) - c.uv.y;
-        metal::float3 _e56 = point_to_world(inst_5, ((_e35.v0_ * metal::float3(w_2)) + (_e35.v1_ * metal::float3(c.uv.x))) + (_e35.v2_ * metal::float3(c.uv.y)));
-        hit.position = _e56;
-        n_geo = metal::cross(_e35.v1_ - _e35.v0_, _e35.v2_ - _e35.v0_);
+        metal::float3 e1_ = _e42.v1_ - _e42.v0_;
+        metal::float3 e2_ = _e42.v2_ - _e42.v0_;
+        metal::float3 p_6 = _e42.v0_ + ((e1_ * metal::float3(c.uv.x)) + (e2_ * metal::float3(c.uv.y)));
+        metal::float3 _e65 = point_to_world(inst_6, p_6);
+        hit.position = _e65;
+        float _e73 = mesh_error(inst_6, _e42.v0_, e1_ * metal::float3(c.uv.x), e2_ * metal::float3(c.uv.y), p_6);
+        hit_error = _e73;
+        n_geo = metal::cross(e1_, e2_);
         metal::uint4 a0_ = attributes[c.primitive * 2u];
         metal::uint4 a1_ = attributes[(c.primitive * 2u) + 1u];
-        metal::float3 _e79 = decode_octahedral(a0_.x);
-        metal::float3 _e83 = decode_octahedral(a0_.y);
-        metal::float3 _e89 = decode_octahedral(a0_.z);
-        n_shade = ((_e79 * metal::float3(w_2)) + (_e83 * metal::float3(c.uv.x))) + (_e89 * metal::float3(c.uv.y));
-        metal::float3 _e94 = n_shade;
-        metal::float3 _e95 = n_shade;
-        if (metal::dot(_e94, _e95) < 0.000000000001) {
-            metal::float3 _e99 = n_geo;
-            n_shade = _e99;
+        metal::float3 _e91 = decode_octahedral(a0_.x);
+        metal::float3 _e95 = decode_octahedral(a0_.y);
+        metal::float3 _e101 = decode_octahedral(a0_.z);
+        n_shade = ((_e91 * metal::float3(w_2)) + (_e95 * metal::float3(c.uv.x))) + (_e101 * metal::float3(c.uv.y));
+        metal::float3 _e106 = n_shade;
+        metal::float3 _e107 = n_shade;
+        if (metal::dot(_e106, _e107) < 0.000000000001) {
+            metal::float3 _e111 = n_geo;
+            n_shade = _e111;
         }
         metal::float2 uv0_ = float2(as_type<half2>(a0_.w));
         metal::float2 uv1_ = float2(as_type<half2>(a1_.x));
         metal::float2 uv2_ = float2(as_type<half2>(a1_.y));
         hit.uv = ((uv0_ * metal::float2(w_2)) + (uv1_ * metal::float2(c.uv.x))) + (uv2_ * metal::float2(c.uv.y));
-        metal::float4 _e123 = triangles[c.primitive * 3u];
-        hit.primitive = as_type<uint>(_e123.w);
+        metal::float4 _e135 = triangles[c.primitive * 3u];
+        hit.primitive = as_type<uint>(_e135.w);
     }
-    metal::float3 _e127 = n_geo;
-    metal::float3 _e128 = normal_to_world(inst_5, _e127);
-    hit.geometric_normal = _e128;
-    metal::float3 _e130 = n_shade;
-    metal::float3 _e131 = normal_to_world(inst_5, _e130);
-    hit.normal = _e131;
-    metal::float3 _e135 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_2.dir, _e135) < 0.0;
-    Hit _e139 = hit;
-    return _e139;
+    metal::float3 _e139 = n_geo;
+    metal::float3 _e140 = normal_to_world(inst_6, _e139);
+    hit.geometric_normal = _e140;
+    metal::float3 _e142 = n_shade;
+    metal::float3 _e143 = normal_to_world(inst_6, _e142);
+    hit.normal = _e143;
+    metal::float3 _e147 = hit.geometric_normal;
+    hit.front_face = metal::dot(ray_2.dir, _e147) < 0.0;
+    Hit _e151 = hit;
+    return _e151;
 }
 
 Fog load_Fog(
@@ -587,54 +627,57 @@ bool dispatch_any_hit(
 }
 
 bool accept(
-    GpuInstance inst_3,
+    GpuInstance inst_4,
     Ray ray_5,
     Candidate c_1,
     device type_4 const& params,
     device type_8 const& instances,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    if ((inst_3.flags & FLAG_ANY_HIT) != 0u) {
-        Hit _e8 = finish_hit(ray_5, c_1, instances, triangles, attributes, _buffer_sizes);
-        bool _e11 = dispatch_any_hit(inst_3.material_type, inst_3.material_offset, ray_5, _e8, params, _buffer_sizes);
-        return _e11;
+    if ((inst_4.flags & FLAG_ANY_HIT) != 0u) {
+        float shaded = hit_error;
+        Hit _e10 = finish_hit(ray_5, c_1, instances, triangles, hit_error, attributes, _buffer_sizes);
+        hit_error = shaded;
+        bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10, params, _buffer_sizes);
+        return _e14;
     }
     return true;
 }
 
 metal::uint3 node_box_lo(
-    metal::uint3 p_1
+    metal::uint3 p_2
 ) {
-    return metal::uint3(p_1.x & 65535u, p_1.x >> 16u, p_1.y & 65535u);
+    return metal::uint3(p_2.x & 65535u, p_2.x >> 16u, p_2.y & 65535u);
 }
 
 metal::float3 node_point(
-    metal::float3 origin,
+    metal::float3 origin_1,
     metal::float3 scale,
     metal::uint3 q
 ) {
-    return origin + (static_cast<metal::float3>(q) * scale);
+    return origin_1 + (static_cast<metal::float3>(q) * scale);
 }
 
 metal::uint3 node_box_hi(
-    metal::uint3 p_2
+    metal::uint3 p_3
 ) {
-    return metal::uint3(p_2.y >> 16u, p_2.z & 65535u, p_2.z >> 16u);
+    return metal::uint3(p_3.y >> 16u, p_3.z & 65535u, p_3.z >> 16u);
 }
 
 float slab(
     metal::float3 lo,
     metal::float3 hi,
-    metal::float3 origin_1,
+    metal::float3 origin_2,
     metal::float3 inv_dir,
     float tmin_1,
     float tmax_2,
     thread uint& F32_INF
 ) {
-    metal::float3 t0_ = (lo - origin_1) * inv_dir;
-    metal::float3 t1_ = (hi - origin_1) * inv_dir;
+    metal::float3 t0_ = (lo - origin_2) * inv_dir;
+    metal::float3 t1_ = (hi - origin_2) * inv_dir;
     metal::float3 near_2 = metal::min(t0_, t1_);
     metal::float3 far_2 = metal::max(t0_, t1_);
     float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, tmin_1));
@@ -648,7 +691,7 @@ float slab(
 
 metal::float2 children_entry(
     GpuNode n_2,
-    metal::float3 origin_2,
+    metal::float3 origin_3,
     metal::float3 scale_1,
     Ray ray_6,
     metal::float3 inv,
@@ -658,14 +701,14 @@ metal::float2 children_entry(
     metal::uint3 lq = as_type<metal::uint3>(n_2.min);
     metal::uint3 rq = as_type<metal::uint3>(n_2.max);
     metal::uint3 _e10 = node_box_lo(lq);
-    metal::float3 _e11 = node_point(origin_2, scale_1, _e10);
+    metal::float3 _e11 = node_point(origin_3, scale_1, _e10);
     metal::uint3 _e12 = node_box_hi(lq);
-    metal::float3 _e13 = node_point(origin_2, scale_1, _e12);
+    metal::float3 _e13 = node_point(origin_3, scale_1, _e12);
     float _e16 = slab(_e11, _e13, ray_6.origin, inv, ray_6.tmin, tmax_3, F32_INF);
     metal::uint3 _e17 = node_box_lo(rq);
-    metal::float3 _e18 = node_point(origin_2, scale_1, _e17);
+    metal::float3 _e18 = node_point(origin_3, scale_1, _e17);
     metal::uint3 _e19 = node_box_hi(rq);
-    metal::float3 _e20 = node_point(origin_2, scale_1, _e19);
+    metal::float3 _e20 = node_point(origin_3, scale_1, _e19);
     float _e23 = slab(_e18, _e20, ray_6.origin, inv, ray_6.tmin, tmax_3, F32_INF);
     return metal::float2(_e16, _e23);
 }
@@ -683,7 +726,7 @@ metal::uint2 pop(
 }
 
 Candidate intersect_mesh(
-    GpuInstance inst_4,
+    GpuInstance inst_5,
     uint slot_2,
     Ray world_ray,
     Ray ray_7,
@@ -694,6 +737,7 @@ Candidate intersect_mesh(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
@@ -707,9 +751,9 @@ Candidate intersect_mesh(
     best = best_in;
     metal::float3 _e8 = safe_inverse(ray_7.dir);
     TriangleRay _e9 = prepare_triangle_ray(ray_7);
-    uint base_1 = inst_4.blas_root;
+    uint base_1 = inst_5.blas_root;
     GpuNode header_1 = nodes[base_1];
-    metal::float3 origin_3 = header_1.min;
+    metal::float3 origin_4 = header_1.min;
     metal::float3 scale_2 = header_1.max;
     sp_1 = 0u;
     child = header_1.a;
@@ -739,13 +783,13 @@ Candidate intersect_mesh(
                     break;
                 }
                 uint _e41 = k;
-                uint prim = (inst_4.triangle_offset + first) + _e41;
+                uint prim = (inst_5.triangle_offset + first) + _e41;
                 float _e45 = best.t;
                 metal::float3 _e46 = hit_triangle(_e9, prim, ray_7.tmin, _e45, F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     Candidate c_5 = Candidate {_e46.x, slot_2, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e57 = accept(inst_4, world_ray, c_5, params, instances, triangles, attributes, _buffer_sizes);
+                    bool _e57 = accept(inst_5, world_ray, c_5, params, instances, triangles, hit_error, attributes, _buffer_sizes);
                     if (_e57) {
                         best = c_5;
                         if (shadow) {
@@ -759,7 +803,7 @@ Candidate intersect_mesh(
             uint _e62 = child;
             GpuNode n_6 = nodes[base_1 + _e62];
             float _e68 = best.t;
-            metal::float2 _e69 = children_entry(n_6, origin_3, scale_2, ray_7, _e8, _e68, F32_INF);
+            metal::float2 _e69 = children_entry(n_6, origin_4, scale_2, ray_7, _e8, _e68, F32_INF);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
@@ -816,25 +860,26 @@ Candidate intersect_object(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray r_2 = {};
-    GpuInstance inst_6 = instances[slot_3];
-    Ray _e7 = to_object(inst_6, ray_8);
+    GpuInstance inst_7 = instances[slot_3];
+    Ray _e7 = to_object(inst_7, ray_8);
     r_2 = _e7;
     r_2.tmax = best_1.t;
-    if (inst_6.geometry_type == MESH_GEOMETRY) {
+    if (inst_7.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_6, slot_3, ray_8, _e14, best_1, shadow_1, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
 }
 
 uint medium_at(
-    metal::float3 p_3,
+    metal::float3 p_4,
     uint exclude,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -842,6 +887,7 @@ uint medium_at(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
@@ -855,7 +901,7 @@ uint medium_at(
     FrameUniforms frame_1 = frame;
     metal::float3 _e12 = normalize_vec3f(metal::float3(0.5773, 0.5774, 0.5775));
     uint _e14 = F32_INF;
-    Ray probe = Ray {p_3, 0.0, _e12, as_type<float>(_e14), 0u, 0u, 0u};
+    Ray probe = Ray {p_4, 0.0, _e12, as_type<float>(_e14), 0u, 0u, 0u};
     inside = 0u;
     uint _e23 = F32_INF;
     nearest = as_type<float>(_e23);
@@ -880,10 +926,10 @@ uint medium_at(
         if (slot_4 != exclude) {
             uint _e39 = F32_INF;
             Candidate _e41 = no_candidate(as_type<float>(_e39));
-            Candidate _e43 = intersect_object(slot_4, probe, _e41, false, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, _buffer_sizes);
+            Candidate _e43 = intersect_object(slot_4, probe, _e41, false, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
             float _e48 = nearest;
             if ((_e43.slot != NO_HIT) && (_e43.t < _e48)) {
-                Hit _e51 = finish_hit(probe, _e43, instances, triangles, attributes, _buffer_sizes);
+                Hit _e51 = finish_hit(probe, _e43, instances, triangles, hit_error, attributes, _buffer_sizes);
                 if (!(_e51.front_face)) {
                     inside = slot_4 + 1u;
                     nearest = _e43.t;
@@ -911,6 +957,7 @@ Candidate intersect_scene(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     thread uint& ray_count,
@@ -933,11 +980,11 @@ Candidate intersect_scene(
     metal::float3 _e16 = safe_inverse(ray_9.dir);
     uint base_2 = frame_2.tlas_root;
     GpuNode header_2 = nodes[base_2];
-    metal::float3 origin_4 = header_2.min;
+    metal::float3 origin_5 = header_2.min;
     metal::float3 scale_3 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_4, _e23, ray_9.origin, _e16, ray_9.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
@@ -955,7 +1002,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_9, _e55, shadow_2, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_9, _e55, shadow_2, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -967,7 +1014,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_7 = nodes[base_2 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_7, origin_4, scale_3, ray_9, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_9, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1058,19 +1105,27 @@ PointLight load_PointLight(
     return PointLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)};
 }
 
-metal::float3 offset_origin(
-    metal::float3 p_4,
-    metal::float3 n_3,
-    constant FrameUniforms& frame,
-    device type_9 const& nodes,
-    constant _mslBufferSizes& _buffer_sizes
+metal::float3 step_toward(
+    metal::float3 x_1,
+    metal::float3 s
 ) {
-    FrameUniforms _e3 = frame;
-    GpuNode header_3 = nodes[_e3.tlas_root];
-    metal::float3 _e11 = node_frame_hi(header_3);
-    metal::float3 a_5 = metal::max(metal::abs(p_4), metal::max(metal::abs(header_3.min), metal::abs(_e11)));
-    float m_6 = metal::max(metal::max(a_5.x, a_5.y), a_5.z);
-    return p_4 + (n_3 * metal::float3(m_6 * (1.0 / 65536.0)));
+    metal::uint3 bits_1 = as_type<metal::uint3>(x_1);
+    metal::bool3 up_1 = (metal::sign(x_1) * metal::sign(s)) > metal::float3(0.0);
+    metal::float3 stepped = as_type<metal::float3>(metal::select(bits_1 - metal::uint3(1u), bits_1 + metal::uint3(1u), up_1));
+    metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s > metal::float3(0.0));
+    metal::float3 moved = metal::select(stepped, from_zero, x_1 == metal::float3(0.0));
+    return metal::select(x_1, moved, !((s == metal::float3(0.0))));
+}
+
+metal::float3 offset_origin(
+    metal::float3 p_5,
+    metal::float3 n_3,
+    float error
+) {
+    float d_4 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
+    metal::float3 offset_11 = n_3 * metal::float3(d_4);
+    metal::float3 _e17 = step_toward(p_5 + offset_11, offset_11);
+    return _e17;
 }
 
 float shadow_query(
@@ -1084,23 +1139,39 @@ float shadow_query(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 n_4 = {};
+    float tmax_4 = {};
     n_4 = normal;
     metal::float3 _e5 = n_4;
     if (metal::dot(dir, _e5) < 0.0) {
         metal::float3 _e9 = n_4;
         n_4 = -(_e9);
     }
-    metal::float3 _e11 = n_4;
-    metal::float3 _e12 = offset_origin(position, _e11, frame, nodes, _buffer_sizes);
-    Ray ray_24 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
-    Candidate _e23 = intersect_scene(ray_24, true, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
-    return (_e23.slot != NO_HIT) ? 0.0 : 1.0;
+    metal::float3 a_6 = metal::abs(position);
+    float _e13 = hit_error;
+    float error_2 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_6.x, a_6.y), a_6.z));
+    metal::float3 _e22 = n_4;
+    metal::float3 _e23 = offset_origin(position, _e22, error_2);
+    uint _e25 = F32_INF;
+    tmax_4 = as_type<float>(_e25);
+    uint _e29 = F32_INF;
+    if (dist < as_type<float>(_e29)) {
+        metal::float3 light_1 = position + (dir * metal::float3(dist));
+        float dd_1 = metal::dot(dir, dir);
+        float along_1 = metal::dot(light_1 - _e23, dir) / dd_1;
+        metal::float3 l_1 = metal::abs(position) + metal::abs(dir * metal::float3(dist));
+        tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_1.x, l_1.y), l_1.z)) / metal::sqrt(dd_1));
+    }
+    float _e59 = tmax_4;
+    Ray ray_24 = Ray {_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u};
+    Candidate _e65 = intersect_scene(ray_24, true, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    return (_e65.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
 LightSample point_light(
@@ -1113,6 +1184,7 @@ LightSample point_light(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     thread uint& ray_count,
@@ -1127,7 +1199,7 @@ LightSample point_light(
         float _e19 = strength;
         strength = _e19 * (1.0 - metal::smoothstep(l.inner_range, l.range, dist_1));
     }
-    float _e26 = shadow_query(position_1, normal_1, dir_4, dist_1, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+    float _e26 = shadow_query(position_1, normal_1, dir_4, dist_1, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     float _e28 = strength;
     return LightSample {dir_4, dist_1, (l.color * metal::float3(_e28)) * metal::float3(_e26)};
 }
@@ -1143,13 +1215,14 @@ LightSample dispatch_light(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PointLight _e3 = load_PointLight(offset_6, params, _buffer_sizes);
-    LightSample _e4 = point_light(_e3, position_2, normal_2, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e4 = point_light(_e3, position_2, normal_2, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e4;
 }
 
@@ -1163,6 +1236,7 @@ LightSample sample_light_query(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     thread uint& ray_count,
@@ -1175,14 +1249,14 @@ LightSample sample_light_query(
     uint entry = frame_4.light_table + (i_1 * 2u);
     uint _e21 = params[entry];
     uint _e26 = params[entry + 1u];
-    LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e27;
 }
 
 bool is_finite_f32_(
-    float x_1
+    float x_2
 ) {
-    return (as_type<uint>(x_1) & 2147483647u) < 2139095040u;
+    return (as_type<uint>(x_2) & 2147483647u) < 2139095040u;
 }
 
 metal::float3 fog_inscatter(
@@ -1199,15 +1273,16 @@ metal::float3 fog_inscatter(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float s = {};
+    float s_1 = {};
     float sigma = m_1.density;
     bool tiny_1 = (sigma * d_1) < 0.001;
-    LightSample _e12 = sample_light_query(i_2, o, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e12 = sample_light_query(i_2, o, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     metal::float3 c_6 = _e12.dir * metal::float3(_e12.dist);
     float delta = metal::dot(c_6, dir_1);
     float h_2 = metal::length(c_6 - (dir_1 * metal::float3(delta)));
@@ -1218,25 +1293,25 @@ metal::float3 fog_inscatter(
     float tb = (d_1 == as_type<float>(_e34)) ? (0.5 * PI) : metal::atan2(d_1 - delta, h_2);
     float w_3 = equi ? 0.5 : 0.0;
     metal::float2 _e41 = rand2_next(rng_state);
-    s = -(metal::log(1.0 - (_e41.y * (1.0 - trans)))) / sigma;
+    s_1 = -(metal::log(1.0 - (_e41.y * (1.0 - trans)))) / sigma;
     if (tiny_1) {
-        s = _e41.y * d_1;
+        s_1 = _e41.y * d_1;
     }
     if (_e41.x < w_3) {
-        s = delta + (h_2 * metal::tan(metal::mix(ta, tb, _e41.y)));
+        s_1 = delta + (h_2 * metal::tan(metal::mix(ta, tb, _e41.y)));
     }
-    float _e61 = s;
-    s = metal::min(metal::max(_e61, 0.0), d_1);
-    float _e66 = s;
-    float e_1 = metal::exp(-(sigma) * _e66);
-    float p_free = tiny_1 ? (1.0 / d_1) : ((sigma * e_1) / (1.0 - trans));
-    float _e76 = s;
+    float _e61 = s_1;
+    s_1 = metal::min(metal::max(_e61, 0.0), d_1);
+    float _e66 = s_1;
+    float e_2 = metal::exp(-(sigma) * _e66);
+    float p_free = tiny_1 ? (1.0 / d_1) : ((sigma * e_2) / (1.0 - trans));
+    float _e76 = s_1;
     float r_4 = _e76 - delta;
     float pdf = ((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_2) / ((tb - ta) * ((h_2 * h_2) + (r_4 * r_4)))) : 0.0);
-    float _e91 = s;
-    LightSample _e97 = sample_light_query(i_2, o + (dir_1 * metal::float3(_e91)), metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+    float _e91 = s_1;
+    LightSample _e97 = sample_light_query(i_2, o + (dir_1 * metal::float3(_e91)), metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     float att = (m_1.lights_inside == 1u) ? metal::exp(-(sigma) * _e97.dist) : 1.0;
-    return _e97.radiance * metal::float3(((att * sigma) * e_1) / pdf);
+    return _e97.radiance * metal::float3(((att * sigma) * e_2) / pdf);
 }
 
 metal::float3 fog_medium(
@@ -1251,6 +1326,7 @@ metal::float3 fog_medium(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     thread uint& ray_count,
@@ -1262,8 +1338,8 @@ metal::float3 fog_medium(
     if (!((m_2.density > 0.0)) || !((len > 0.0))) {
         return radiance;
     }
-    float d_4 = t * len;
-    float trans_1 = metal::exp(-(m_2.density) * d_4);
+    float d_5 = t * len;
+    float trans_1 = metal::exp(-(m_2.density) * d_5);
     light = metal::float3(0.0);
     uint _e23 = light_count_query(frame);
     i_3 = 0u;
@@ -1283,7 +1359,7 @@ metal::float3 fog_medium(
         }
         metal::float3 _e27 = light;
         uint _e28 = i_3;
-        metal::float3 _e33 = fog_inscatter(m_2, _e28, ray_12.origin, ray_12.dir / metal::float3(len), d_4, trans_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e33 = fog_inscatter(m_2, _e28, ray_12.origin, ray_12.dir / metal::float3(len), d_5, trans_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
         light = _e27 + _e33;
     }
     metal::float3 _e46 = light;
@@ -1303,13 +1379,14 @@ metal::float3 dispatch_medium(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Fog _e4 = load_Fog(offset_7, params, _buffer_sizes);
-    metal::float3 _e5 = fog_medium(_e4, ray_13, t_1, radiance_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e5 = fog_medium(_e4, ray_13, t_1, radiance_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e5;
 }
 
@@ -1324,6 +1401,7 @@ metal::float3 through_medium(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     thread uint& ray_count,
@@ -1335,11 +1413,11 @@ metal::float3 through_medium(
     if (ray_14.medium == 0u) {
         return radiance_2;
     }
-    GpuInstance inst_7 = instances[ray_14.medium - 1u];
-    if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
+    GpuInstance inst_8 = instances[ray_14.medium - 1u];
+    if ((inst_8.flags & FLAG_MEDIUM) == 0u) {
         return radiance_2;
     }
-    metal::float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_14, t_2, radiance_2, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_14, t_2, radiance_2, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e21;
 }
 
@@ -1381,6 +1459,7 @@ metal::float3 lambert_shade(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     thread uint& ray_count,
@@ -1407,7 +1486,7 @@ metal::float3 lambert_shade(
             break;
         }
         uint _e12 = i_4;
-        LightSample _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+        LightSample _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
         metal::float3 _e16 = color;
         color = _e16 + (((m_4.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
     }
@@ -1427,6 +1506,7 @@ metal::float3 dispatch_closest_hit(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     thread uint& ray_count,
@@ -1440,7 +1520,7 @@ metal::float3 dispatch_closest_hit(
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_9, params, _buffer_sizes);
-            metal::float3 _e8 = lambert_shade(_e7, ray_18, hit_6, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e8 = lambert_shade(_e7, ray_18, hit_6, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
             return _e8;
         }
         default: {
@@ -1459,14 +1539,15 @@ metal::float3 shade_direct(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuInstance inst_8 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_19, c_2, instances, triangles, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+    GpuInstance inst_9 = instances[c_2.slot];
+    Hit _e6 = finish_hit(ray_19, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_19, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e11;
 }
 
@@ -1515,21 +1596,19 @@ void dispatch_secondary_rays(
 
 metal::float3 spawn_origin(
     Hit hit_9,
-    metal::float3 dir_3,
-    constant FrameUniforms& frame,
-    device type_9 const& nodes,
-    constant _mslBufferSizes& _buffer_sizes
+    float error_1,
+    metal::float3 dir_3
 ) {
     metal::float3 n_5 = {};
     n_5 = hit_9.geometric_normal;
-    metal::float3 _e4 = n_5;
-    if (metal::dot(dir_3, _e4) < 0.0) {
-        metal::float3 _e8 = n_5;
-        n_5 = -(_e8);
+    metal::float3 _e5 = n_5;
+    if (metal::dot(dir_3, _e5) < 0.0) {
+        metal::float3 _e9 = n_5;
+        n_5 = -(_e9);
     }
-    metal::float3 _e11 = n_5;
-    metal::float3 _e12 = offset_origin(hit_9.position, _e11, frame, nodes, _buffer_sizes);
-    return _e12;
+    metal::float3 _e12 = n_5;
+    metal::float3 _e13 = offset_origin(hit_9.position, _e12, error_1);
+    return _e13;
 }
 
 metal::float3 trace(
@@ -1541,6 +1620,7 @@ metal::float3 trace(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     thread uint& ray_count,
@@ -1561,16 +1641,17 @@ metal::float3 trace(
     bool found = {};
     uint k_1 = {};
     if (!(HAS_SECONDARY_RAYS)) {
-        Candidate _e4 = intersect_scene(camera_ray, false, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
+        Candidate _e4 = intersect_scene(camera_ray, false, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
         if (_e4.slot == NO_HIT) {
-            uint _e9 = F32_INF;
-            metal::float3 _e11 = miss(camera_ray, frame);
-            metal::float3 _e12 = through_medium(camera_ray, as_type<float>(_e9), _e11, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
-            return _e12;
+            hit_error = 0.0;
+            uint _e11 = F32_INF;
+            metal::float3 _e13 = miss(camera_ray, frame);
+            metal::float3 _e14 = through_medium(camera_ray, as_type<float>(_e11), _e13, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+            return _e14;
         }
-        metal::float3 _e14 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
-        metal::float3 _e15 = through_medium(camera_ray, _e4.t, _e14, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
-        return _e15;
+        metal::float3 _e16 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e17 = through_medium(camera_ray, _e4.t, _e16, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+        return _e17;
     }
     stack = type_16 {};
     depth = 0u;
@@ -1581,34 +1662,36 @@ metal::float3 trace(
     while(true) {
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        bool _e26 = have_value;
-        if (!(_e26)) {
-            Ray _e28 = ray_22;
-            Candidate _e30 = intersect_scene(_e28, false, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
-            if (_e30.slot == NO_HIT) {
-                Ray _e34 = ray_22;
-                uint _e36 = F32_INF;
+        bool _e28 = have_value;
+        if (!(_e28)) {
+            Ray _e30 = ray_22;
+            Candidate _e32 = intersect_scene(_e30, false, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+            if (_e32.slot == NO_HIT) {
+                hit_error = 0.0;
                 Ray _e38 = ray_22;
-                metal::float3 _e39 = miss(_e38, frame);
-                metal::float3 _e40 = through_medium(_e34, as_type<float>(_e36), _e39, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
-                value = _e40;
+                uint _e40 = F32_INF;
+                Ray _e42 = ray_22;
+                metal::float3 _e43 = miss(_e42, frame);
+                metal::float3 _e44 = through_medium(_e38, as_type<float>(_e40), _e43, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+                value = _e44;
                 have_value = true;
             } else {
-                GpuInstance inst_9 = instances[_e30.slot];
-                Ray _e46 = ray_22;
-                Hit _e47 = finish_hit(_e46, _e30, instances, triangles, attributes, _buffer_sizes);
+                GpuInstance inst_10 = instances[_e32.slot];
+                Ray _e50 = ray_22;
+                Hit _e51 = finish_hit(_e50, _e32, instances, triangles, hit_error, attributes, _buffer_sizes);
+                float error_3 = hit_error;
                 pushed = false;
-                uint _e56 = ray_22.depth;
-                uint _e60 = depth;
-                if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
+                uint _e62 = ray_22.depth;
+                uint _e66 = depth;
+                if ((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_22;
-                    dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-                    uint _e70 = spawn_count;
-                    uint n_8 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
+                    Ray _e74 = ray_22;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+                    uint _e76 = spawn_count;
+                    uint n_8 = metal::min(metal::min(_e76, 1u), MAX_SPAWN);
                     if (n_8 > 0u) {
-                        Ray _e77 = ray_22;
-                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_8, 0u};
+                        Ray _e83 = ray_22;
+                        f = Frame {_e83, _e51, error_3, _e32.slot, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_8, 0u};
                         i_5 = 0u;
                         uint2 loop_bound_7 = uint2(4294967295u);
                         bool loop_init_4 = true;
@@ -1616,64 +1699,64 @@ metal::float3 trace(
                             if (metal::all(loop_bound_7 == uint2(0u))) { break; }
                             loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                             if (!loop_init_4) {
-                                uint _e108 = i_5;
-                                i_5 = _e108 + 1u;
+                                uint _e114 = i_5;
+                                i_5 = _e114 + 1u;
                             }
                             loop_init_4 = false;
-                            uint _e88 = i_5;
-                            if (_e88 >= n_8) {
+                            uint _e94 = i_5;
+                            if (_e94 >= n_8) {
                                 break;
                             }
-                            uint _e91 = i_5;
-                            uint _e95 = i_5;
-                            metal::float3 _e98 = spawn_dirs.inner[_e95];
-                            f.dirs.inner[metal::min(_e91, 0u)] = _e98;
-                            uint _e100 = i_5;
-                            uint _e104 = i_5;
-                            metal::float3 _e107 = spawn_weights.inner[_e104];
-                            f.weights.inner[metal::min(_e100, 0u)] = _e107;
+                            uint _e97 = i_5;
+                            uint _e101 = i_5;
+                            metal::float3 _e104 = spawn_dirs.inner[_e101];
+                            f.dirs.inner[metal::min(_e97, 0u)] = _e104;
+                            uint _e106 = i_5;
+                            uint _e110 = i_5;
+                            metal::float3 _e113 = spawn_weights.inner[_e110];
+                            f.weights.inner[metal::min(_e106, 0u)] = _e113;
                         }
-                        uint _e111 = depth;
-                        Frame _e115 = f;
-                        stack.inner[metal::min(_e111, 2u)] = _e115;
-                        uint _e116 = depth;
-                        depth = _e116 + 1u;
+                        uint _e117 = depth;
+                        Frame _e121 = f;
+                        stack.inner[metal::min(_e117, 2u)] = _e121;
+                        uint _e122 = depth;
+                        depth = _e122 + 1u;
                         pushed = true;
                     }
                 }
-                bool _e120 = pushed;
-                if (!(_e120)) {
-                    Ray _e124 = ray_22;
-                    metal::float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
-                    Ray _e128 = ray_22;
-                    metal::float3 _e130 = through_medium(_e128, _e30.t, _e127, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
-                    value = _e130;
+                bool _e126 = pushed;
+                if (!(_e126)) {
+                    Ray _e130 = ray_22;
+                    metal::float3 _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+                    Ray _e134 = ray_22;
+                    metal::float3 _e136 = through_medium(_e134, _e32.t, _e133, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+                    value = _e136;
                     have_value = true;
                 }
             }
         }
-        bool _e132 = have_value;
-        if (_e132) {
-            uint _e133 = depth;
-            if (_e133 == 0u) {
-                metal::float3 _e136 = value;
-                return _e136;
+        bool _e138 = have_value;
+        if (_e138) {
+            uint _e139 = depth;
+            if (_e139 == 0u) {
+                metal::float3 _e142 = value;
+                return _e142;
             }
-            uint _e137 = depth;
-            uint top = _e137 - 1u;
-            uint _e144 = stack.inner[metal::min(top, 2u)].next;
-            uint child_2 = _e144 - 1u;
-            metal::float3 _e151 = stack.inner[metal::min(top, 2u)].sum;
-            metal::float3 _e159 = stack.inner[metal::min(top, 2u)].weights.inner[metal::min(child_2, 0u)];
-            metal::float3 _e160 = value;
-            stack.inner[metal::min(top, 2u)].sum = _e151 + (_e159 * _e160);
+            uint _e143 = depth;
+            uint top = _e143 - 1u;
+            uint _e150 = stack.inner[metal::min(top, 2u)].next;
+            uint child_2 = _e150 - 1u;
+            metal::float3 _e157 = stack.inner[metal::min(top, 2u)].sum;
+            metal::float3 _e165 = stack.inner[metal::min(top, 2u)].weights.inner[metal::min(child_2, 0u)];
+            metal::float3 _e166 = value;
+            stack.inner[metal::min(top, 2u)].sum = _e157 + (_e165 * _e166);
             have_value = false;
         }
-        uint _e164 = depth;
-        uint top_1 = _e164 - 1u;
-        uint _e171 = stack.inner[metal::min(top_1, 2u)].next;
-        uint _e176 = stack.inner[metal::min(top_1, 2u)].count;
-        if (_e171 < _e176) {
+        uint _e170 = depth;
+        uint top_1 = _e170 - 1u;
+        uint _e177 = stack.inner[metal::min(top_1, 2u)].next;
+        uint _e182 = stack.inner[metal::min(top_1, 2u)].count;
+        if (_e177 < _e182) {
             uint i_6 = stack.inner[metal::min(top_1, 2u)].next;
             stack.inner[metal::min(top_1, 2u)].next = i_6 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 2u)].ray;
@@ -1681,11 +1764,11 @@ metal::float3 trace(
             metal::float3 dir_5 = stack.inner[metal::min(top_1, 2u)].dirs.inner[metal::min(i_6, 0u)];
             medium = parent.medium;
             if (metal::dot(dir_5, hit_11.geometric_normal) < 0.0) {
-                uint _e217 = stack.inner[metal::min(top_1, 2u)].slot;
-                medium = _e217 + 1u;
+                uint _e223 = stack.inner[metal::min(top_1, 2u)].slot;
+                medium = _e223 + 1u;
             } else {
-                uint _e225 = stack.inner[metal::min(top_1, 2u)].slot;
-                if (parent.medium == (_e225 + 1u)) {
+                uint _e231 = stack.inner[metal::min(top_1, 2u)].slot;
+                if (parent.medium == (_e231 + 1u)) {
                     found = false;
                     medium = 0u;
                     k_1 = top_1;
@@ -1693,51 +1776,55 @@ metal::float3 trace(
                     while(true) {
                         if (metal::all(loop_bound_8 == uint2(0u))) { break; }
                         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-                        uint _e233 = k_1;
-                        if (_e233 == 0u) {
+                        uint _e239 = k_1;
+                        if (_e239 == 0u) {
                             break;
                         }
-                        uint _e236 = k_1;
-                        k_1 = _e236 - 1u;
-                        uint _e239 = k_1;
-                        uint _e244 = stack.inner[metal::min(_e239, 2u)].slot;
-                        uint _e249 = stack.inner[metal::min(top_1, 2u)].slot;
-                        uint _e251 = k_1;
-                        uint _e257 = stack.inner[metal::min(_e251, 2u)].ray.medium;
-                        uint _e261 = k_1;
-                        uint _e269 = stack.inner[metal::min(_e261 + 1u, 2u)].ray.medium;
-                        if (((_e244 == _e249) && (_e257 != parent.medium)) && (_e269 == parent.medium)) {
-                            uint _e273 = k_1;
-                            uint _e279 = stack.inner[metal::min(_e273, 2u)].ray.medium;
-                            medium = _e279;
+                        uint _e242 = k_1;
+                        k_1 = _e242 - 1u;
+                        uint _e245 = k_1;
+                        uint _e250 = stack.inner[metal::min(_e245, 2u)].slot;
+                        uint _e255 = stack.inner[metal::min(top_1, 2u)].slot;
+                        uint _e257 = k_1;
+                        uint _e263 = stack.inner[metal::min(_e257, 2u)].ray.medium;
+                        uint _e267 = k_1;
+                        uint _e275 = stack.inner[metal::min(_e267 + 1u, 2u)].ray.medium;
+                        if (((_e250 == _e255) && (_e263 != parent.medium)) && (_e275 == parent.medium)) {
+                            uint _e279 = k_1;
+                            uint _e285 = stack.inner[metal::min(_e279, 2u)].ray.medium;
+                            medium = _e285;
                             found = true;
                             break;
                         }
                     }
-                    bool _e281 = found;
-                    if (!(_e281)) {
-                        metal::float3 _e283 = spawn_origin(hit_11, dir_5, frame, nodes, _buffer_sizes);
-                        uint _e288 = stack.inner[metal::min(top_1, 2u)].slot;
-                        uint _e289 = medium_at(_e283, _e288, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, _buffer_sizes);
-                        medium = _e289;
+                    bool _e287 = found;
+                    if (!(_e287)) {
+                        float _e293 = stack.inner[metal::min(top_1, 2u)].error;
+                        metal::float3 _e294 = spawn_origin(hit_11, _e293, dir_5);
+                        uint _e299 = stack.inner[metal::min(top_1, 2u)].slot;
+                        uint _e300 = medium_at(_e294, _e299, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
+                        medium = _e300;
                     }
                 }
             }
-            metal::float3 _e290 = spawn_origin(hit_11, dir_5, frame, nodes, _buffer_sizes);
-            uint _e293 = F32_INF;
-            uint _e299 = medium;
-            ray_22 = Ray {_e290, 0.0, dir_5, as_type<float>(_e293), parent.depth + 1u, RAY_SECONDARY, _e299};
+            float _e305 = stack.inner[metal::min(top_1, 2u)].error;
+            metal::float3 _e306 = spawn_origin(hit_11, _e305, dir_5);
+            uint _e309 = F32_INF;
+            uint _e315 = medium;
+            ray_22 = Ray {_e306, 0.0, dir_5, as_type<float>(_e309), parent.depth + 1u, RAY_SECONDARY, _e315};
         } else {
-            uint _e305 = stack.inner[metal::min(top_1, 2u)].slot;
-            GpuInstance inst_10 = instances[_e305];
-            Ray _e315 = stack.inner[metal::min(top_1, 2u)].ray;
-            Hit _e320 = stack.inner[metal::min(top_1, 2u)].hit;
-            metal::float3 _e325 = stack.inner[metal::min(top_1, 2u)].sum;
-            metal::float3 _e326 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e315, _e320, _e325, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
-            Ray _e331 = stack.inner[metal::min(top_1, 2u)].ray;
-            float _e337 = stack.inner[metal::min(top_1, 2u)].hit.t;
-            metal::float3 _e338 = through_medium(_e331, _e337, _e326, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, _buffer_sizes);
-            value = _e338;
+            uint _e321 = stack.inner[metal::min(top_1, 2u)].slot;
+            GpuInstance inst_11 = instances[_e321];
+            float _e329 = stack.inner[metal::min(top_1, 2u)].error;
+            hit_error = _e329;
+            Ray _e337 = stack.inner[metal::min(top_1, 2u)].ray;
+            Hit _e342 = stack.inner[metal::min(top_1, 2u)].hit;
+            metal::float3 _e347 = stack.inner[metal::min(top_1, 2u)].sum;
+            metal::float3 _e348 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e337, _e342, _e347, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+            Ray _e353 = stack.inner[metal::min(top_1, 2u)].ray;
+            float _e359 = stack.inner[metal::min(top_1, 2u)].hit.t;
+            metal::float3 _e360 = through_medium(_e353, _e359, _e348, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+            value = _e360;
             depth = top_1;
             have_value = true;
         }
@@ -1746,9 +1833,9 @@ metal::float3 trace(
 }
 
 metal::bool3 is_finite_vec3f(
-    metal::float3 x_2
+    metal::float3 x_3
 ) {
-    return (as_type<metal::uint3>(x_2) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+    return (as_type<metal::uint3>(x_3) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
 }
 
 metal::float3 finite_or_zero(
@@ -1768,6 +1855,7 @@ void render_pixel(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     thread uint& ray_count,
@@ -1780,29 +1868,29 @@ void render_pixel(
 ) {
     metal::float3 sum = {};
     uint bad = {};
-    uint s_1 = {};
+    uint s_2 = {};
     Ray ray_23 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
     sum = metal::float3(0.0);
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
-    s_1 = 0u;
+    s_2 = 0u;
     uint2 loop_bound_9 = uint2(4294967295u);
     bool loop_init_5 = true;
     while(true) {
         if (metal::all(loop_bound_9 == uint2(0u))) { break; }
         loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e46 = s_1;
-            s_1 = _e46 + 1u;
+            uint _e46 = s_2;
+            s_2 = _e46 + 1u;
         }
         loop_init_5 = false;
-        uint _e13 = s_1;
+        uint _e13 = s_2;
         if (_e13 >= end_1) {
             break;
         }
-        uint _e18 = s_1;
+        uint _e18 = s_2;
         uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
@@ -1810,10 +1898,10 @@ void render_pixel(
         ray_23.depth = 0u;
         ray_23.kind = RAY_CAMERA;
         metal::float3 _e31 = ray_23.origin;
-        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, _buffer_sizes);
+        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
         ray_23.medium = _e33;
         Ray _e34 = ray_23;
-        metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {
             metal::float3 _e38 = sum;
@@ -1853,6 +1941,7 @@ void render_invocation(
     device type_8 const& instances,
     device type_9 const& nodes,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_12 const& attributes,
     thread type_14& traversal_stack,
     thread uint& ray_count,
@@ -1881,7 +1970,7 @@ void render_invocation(
     if (metal::any(local >= tile_2.extent)) {
         return;
     }
-    render_pixel(tile_2.origin + local, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_pixel(tile_2.origin + local, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }
 
@@ -1902,11 +1991,12 @@ struct renderInput {
 ) {
     uint rng_state = {};
     uint F32_INF = 2139095040u;
+    float hit_error = {};
     type_14 traversal_stack = {};
     uint ray_count = {};
     type_15 spawn_dirs = {};
     type_15 spawn_weights = {};
     uint spawn_count = {};
-    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }

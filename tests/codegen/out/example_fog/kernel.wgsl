@@ -124,6 +124,7 @@ struct Lambert {
 struct Frame {
     ray: Ray,
     hit: Hit,
+    error: f32,
     slot: u32,
     sum: vec3<f32>,
     dirs: array<vec3<f32>, 1>,
@@ -144,12 +145,17 @@ const NODE_COUNT_SHIFT: u32 = 27u;
 const NODE_COUNT_MASK: u32 = 15u;
 const NODE_FIRST_MASK: u32 = 134217727u;
 const FLAG_ANY_HIT: u32 = 1u;
+const POINT_ERROR: f32 = 0.0000019073486f;
+const GAMMA_1_: f32 = 0.00000005960465f;
+const GAMMA_6_: f32 = 0.0000003576281f;
+const GAMMA_4_: f32 = 0.00000023841864f;
 const RAY_SHADOW: u32 = 2u;
 const BLAS_STACK: u32 = 64u;
 const TLAS_STACK: u32 = 10u;
 const HAS_SECONDARY_RAYS: bool = true;
 const HAS_BACKGROUND: bool = false;
 const FLAG_MEDIUM: u32 = 4u;
+const LIGHT_ERROR: f32 = 0.00000047683716f;
 const PI: f32 = 3.1415927f;
 const INV_PI: f32 = 0.31830987f;
 const FLAG_SECONDARY: u32 = 2u;
@@ -172,6 +178,7 @@ var<storage> instances: array<GpuInstance>;
 var<storage> nodes: array<GpuNode>;
 @group(0) @binding(4) 
 var<storage> triangles: array<vec4<f32>>;
+var<private> hit_error: f32;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
 var<private> traversal_stack: array<u32, 74>;
@@ -258,9 +265,9 @@ fn samples_per_pixel_query() -> u32 {
 
 fn rand_next() -> f32 {
     let _e1 = rng_state;
-    let s_2 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_2;
-    let word_1 = (((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u);
+    let s_3 = ((_e1 * 747796405u) + 2891336453u);
+    rng_state = s_3;
+    let word_1 = (((s_3 >> (((s_3 >> 28u) + 4u) & 31u)) ^ s_3) * 277803737u);
     let r_3 = ((word_1 >> 22u) ^ word_1);
     return (f32((r_3 >> 8u)) * (1f / 16777216f));
 }
@@ -322,8 +329,8 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_3 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_3 * tiny), (abs(d) < tiny));
+    let s_4 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_4 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
@@ -368,11 +375,16 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_3, (v_1 * rcp), (w * rcp)), hit_10);
 }
 
+fn point_error(origin: vec3<f32>, along: vec3<f32>) -> f32 {
+    let a_5 = (abs(origin) + abs(along));
+    return (POINT_ERROR * max(max(a_5.x, a_5.y), a_5.z));
+}
+
 fn load_triangle(slot_1: u32) -> Triangle {
-    let v0_ = triangles[(slot_1 * 3u)];
+    let v0_1 = triangles[(slot_1 * 3u)];
     let v1_ = triangles[((slot_1 * 3u) + 1u)];
     let v2_ = triangles[((slot_1 * 3u) + 2u)];
-    return Triangle(v0_.xyz, v1_.xyz, v2_.xyz);
+    return Triangle(v0_1.xyz, v1_.xyz, v2_.xyz);
 }
 
 fn point_to_world(inst_1: GpuInstance, p: vec3<f32>) -> vec3<f32> {
@@ -380,17 +392,29 @@ fn point_to_world(inst_1: GpuInstance, p: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(dot(inst_1.object_to_world_0_, q_1), dot(inst_1.object_to_world_1_, q_1), dot(inst_1.object_to_world_2_, q_1));
 }
 
+fn mesh_error(inst_2: GpuInstance, v0_: vec3<f32>, db1_: vec3<f32>, db2_: vec3<f32>, p_1: vec3<f32>) -> f32 {
+    let obj = ((vec3(GAMMA_1_) * abs(v0_)) + (vec3(GAMMA_6_) * (abs(db1_) + abs(db2_))));
+    let q_2 = vec4<f32>(abs(p_1), 1f);
+    let r0_ = abs(inst_2.object_to_world_0_);
+    let r1_ = abs(inst_2.object_to_world_1_);
+    let r2_ = abs(inst_2.object_to_world_2_);
+    let rounding = (vec3(GAMMA_4_) * vec3<f32>(dot(r0_, q_2), dot(r1_, q_2), dot(r2_, q_2)));
+    let carried = (vec3((1f + GAMMA_4_)) * vec3<f32>(dot(r0_.xyz, obj), dot(r1_.xyz, obj), dot(r2_.xyz, obj)));
+    let e = (rounding + carried);
+    return max(max(e.x, e.y), e.z);
+}
+
 fn decode_octahedral(bits: u32) -> vec3<f32> {
     var n: vec3<f32>;
 
-    let e = unpack2x16snorm(bits);
-    n = vec3<f32>(e.x, e.y, ((1f - abs(e.x)) - abs(e.y)));
+    let e_1 = unpack2x16snorm(bits);
+    n = vec3<f32>(e_1.x, e_1.y, ((1f - abs(e_1.x)) - abs(e_1.y)));
     let _e14 = n.z;
     if (_e14 < 0f) {
         let _e21 = n;
-        let s_4 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_5 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_4);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_5);
         let _e37 = n.z;
         n = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -399,8 +423,8 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     return _e40;
 }
 
-fn normal_to_world(inst_2: GpuInstance, n_1: vec3<f32>) -> vec3<f32> {
-    let w_1 = (((inst_2.world_to_object_0_.xyz * vec3(n_1.x)) + (inst_2.world_to_object_1_.xyz * vec3(n_1.y))) + (inst_2.world_to_object_2_.xyz * vec3(n_1.z)));
+fn normal_to_world(inst_3: GpuInstance, n_1: vec3<f32>) -> vec3<f32> {
+    let w_1 = (((inst_3.world_to_object_0_.xyz * vec3(n_1.x)) + (inst_3.world_to_object_1_.xyz * vec3(n_1.y))) + (inst_3.world_to_object_2_.xyz * vec3(n_1.z)));
     let _e19 = normalize_vec3f(w_1);
     return _e19;
 }
@@ -410,46 +434,53 @@ fn finish_hit(ray_2: Ray, c: Candidate) -> Hit {
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
-    let inst_5 = instances[c.slot];
-    hit = Hit((ray_2.origin + (ray_2.dir * vec3(c.t))), c.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c.uv, true, inst_5.object, c.primitive);
+    let inst_6 = instances[c.slot];
+    let _e11 = point_error(ray_2.origin, (ray_2.dir * vec3(c.t)));
+    hit_error = _e11;
+    hit = Hit((ray_2.origin + (ray_2.dir * vec3(c.t))), c.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c.uv, true, inst_6.object, c.primitive);
     n_geo = c.normal;
     n_shade = c.normal;
-    if (inst_5.geometry_type == MESH_GEOMETRY) {
-        let _e35 = load_triangle(c.primitive);
+    if (inst_6.geometry_type == MESH_GEOMETRY) {
+        let _e42 = load_triangle(c.primitive);
         let b_5 = c.uv;
         let w_2 = ((1f - b_5.x) - b_5.y);
-        let _e56 = point_to_world(inst_5, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_5.x))) + (_e35.v2_ * vec3(b_5.y))));
-        hit.position = _e56;
-        n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
+        let e1_ = (_e42.v1_ - _e42.v0_);
+        let e2_ = (_e42.v2_ - _e42.v0_);
+        let p_6 = (_e42.v0_ + ((e1_ * vec3(b_5.x)) + (e2_ * vec3(b_5.y))));
+        let _e65 = point_to_world(inst_6, p_6);
+        hit.position = _e65;
+        let _e73 = mesh_error(inst_6, _e42.v0_, (e1_ * vec3(b_5.x)), (e2_ * vec3(b_5.y)), p_6);
+        hit_error = _e73;
+        n_geo = cross(e1_, e2_);
         let a0_ = attributes[(c.primitive * 2u)];
         let a1_ = attributes[((c.primitive * 2u) + 1u)];
-        let _e79 = decode_octahedral(a0_.x);
-        let _e83 = decode_octahedral(a0_.y);
-        let _e89 = decode_octahedral(a0_.z);
-        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_5.x))) + (_e89 * vec3(b_5.y)));
-        let _e94 = n_shade;
-        let _e95 = n_shade;
-        if (dot(_e94, _e95) < 0.000000000001f) {
-            let _e99 = n_geo;
-            n_shade = _e99;
+        let _e91 = decode_octahedral(a0_.x);
+        let _e95 = decode_octahedral(a0_.y);
+        let _e101 = decode_octahedral(a0_.z);
+        n_shade = (((_e91 * vec3(w_2)) + (_e95 * vec3(b_5.x))) + (_e101 * vec3(b_5.y)));
+        let _e106 = n_shade;
+        let _e107 = n_shade;
+        if (dot(_e106, _e107) < 0.000000000001f) {
+            let _e111 = n_geo;
+            n_shade = _e111;
         }
         let uv0_ = unpack2x16float(a0_.w);
         let uv1_ = unpack2x16float(a1_.x);
         let uv2_ = unpack2x16float(a1_.y);
         hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_5.x))) + (uv2_ * vec2(b_5.y)));
-        let _e123 = triangles[(c.primitive * 3u)];
-        hit.primitive = bitcast<u32>(_e123.w);
+        let _e135 = triangles[(c.primitive * 3u)];
+        hit.primitive = bitcast<u32>(_e135.w);
     }
-    let _e127 = n_geo;
-    let _e128 = normal_to_world(inst_5, _e127);
-    hit.geometric_normal = _e128;
-    let _e130 = n_shade;
-    let _e131 = normal_to_world(inst_5, _e130);
-    hit.normal = _e131;
-    let _e135 = hit.geometric_normal;
-    hit.front_face = (dot(ray_2.dir, _e135) < 0f);
-    let _e139 = hit;
-    return _e139;
+    let _e139 = n_geo;
+    let _e140 = normal_to_world(inst_6, _e139);
+    hit.geometric_normal = _e140;
+    let _e142 = n_shade;
+    let _e143 = normal_to_world(inst_6, _e142);
+    hit.normal = _e143;
+    let _e147 = hit.geometric_normal;
+    hit.front_face = (dot(ray_2.dir, _e147) < 0f);
+    let _e151 = hit;
+    return _e151;
 }
 
 fn load_Fog(offset_2: u32) -> Fog {
@@ -471,30 +502,32 @@ fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_4: Ray, hit_2: Hit) -> bo
     return _e4;
 }
 
-fn accept(inst_3: GpuInstance, ray_5: Ray, c_1: Candidate) -> bool {
-    if ((inst_3.flags & FLAG_ANY_HIT) != 0u) {
-        let _e8 = finish_hit(ray_5, c_1);
-        let _e11 = dispatch_any_hit(inst_3.material_type, inst_3.material_offset, ray_5, _e8);
-        return _e11;
+fn accept(inst_4: GpuInstance, ray_5: Ray, c_1: Candidate) -> bool {
+    if ((inst_4.flags & FLAG_ANY_HIT) != 0u) {
+        let shaded = hit_error;
+        let _e10 = finish_hit(ray_5, c_1);
+        hit_error = shaded;
+        let _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
+        return _e14;
     }
     return true;
 }
 
-fn node_box_lo(p_1: vec3<u32>) -> vec3<u32> {
-    return vec3<u32>((p_1.x & 65535u), (p_1.x >> 16u), (p_1.y & 65535u));
+fn node_box_lo(p_2: vec3<u32>) -> vec3<u32> {
+    return vec3<u32>((p_2.x & 65535u), (p_2.x >> 16u), (p_2.y & 65535u));
 }
 
-fn node_point(origin: vec3<f32>, scale: vec3<f32>, q: vec3<u32>) -> vec3<f32> {
-    return (origin + (vec3<f32>(q) * scale));
+fn node_point(origin_1: vec3<f32>, scale: vec3<f32>, q: vec3<u32>) -> vec3<f32> {
+    return (origin_1 + (vec3<f32>(q) * scale));
 }
 
-fn node_box_hi(p_2: vec3<u32>) -> vec3<u32> {
-    return vec3<u32>((p_2.y >> 16u), (p_2.z & 65535u), (p_2.z >> 16u));
+fn node_box_hi(p_3: vec3<u32>) -> vec3<u32> {
+    return vec3<u32>((p_3.y >> 16u), (p_3.z & 65535u), (p_3.z >> 16u));
 }
 
-fn slab(lo: vec3<f32>, hi: vec3<f32>, origin_1: vec3<f32>, inv_dir: vec3<f32>, tmin_1: f32, tmax_2: f32) -> f32 {
-    let t0_ = ((lo - origin_1) * inv_dir);
-    let t1_ = ((hi - origin_1) * inv_dir);
+fn slab(lo: vec3<f32>, hi: vec3<f32>, origin_2: vec3<f32>, inv_dir: vec3<f32>, tmin_1: f32, tmax_2: f32) -> f32 {
+    let t0_ = ((lo - origin_2) * inv_dir);
+    let t1_ = ((hi - origin_2) * inv_dir);
     let near_2 = min(t0_, t1_);
     let far_2 = max(t0_, t1_);
     let enter = max(max(near_2.x, near_2.y), max(near_2.z, tmin_1));
@@ -506,18 +539,18 @@ fn slab(lo: vec3<f32>, hi: vec3<f32>, origin_1: vec3<f32>, inv_dir: vec3<f32>, t
     return bitcast<f32>(_e30);
 }
 
-fn children_entry(n_2: GpuNode, origin_2: vec3<f32>, scale_1: vec3<f32>, ray_6: Ray, inv: vec3<f32>, tmax_3: f32) -> vec2<f32> {
+fn children_entry(n_2: GpuNode, origin_3: vec3<f32>, scale_1: vec3<f32>, ray_6: Ray, inv: vec3<f32>, tmax_3: f32) -> vec2<f32> {
     let lq = bitcast<vec3<u32>>(n_2.min);
     let rq = bitcast<vec3<u32>>(n_2.max);
     let _e10 = node_box_lo(lq);
-    let _e11 = node_point(origin_2, scale_1, _e10);
+    let _e11 = node_point(origin_3, scale_1, _e10);
     let _e12 = node_box_hi(lq);
-    let _e13 = node_point(origin_2, scale_1, _e12);
+    let _e13 = node_point(origin_3, scale_1, _e12);
     let _e16 = slab(_e11, _e13, ray_6.origin, inv, ray_6.tmin, tmax_3);
     let _e17 = node_box_lo(rq);
-    let _e18 = node_point(origin_2, scale_1, _e17);
+    let _e18 = node_point(origin_3, scale_1, _e17);
     let _e19 = node_box_hi(rq);
-    let _e20 = node_point(origin_2, scale_1, _e19);
+    let _e20 = node_point(origin_3, scale_1, _e19);
     let _e23 = slab(_e18, _e20, ray_6.origin, inv, ray_6.tmin, tmax_3);
     return vec2<f32>(_e16, _e23);
 }
@@ -530,7 +563,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_4: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -541,9 +574,9 @@ fn intersect_mesh(inst_4: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, 
     best = best_in;
     let _e8 = safe_inverse(ray_7.dir);
     let _e9 = prepare_triangle_ray(ray_7);
-    let base_1 = inst_4.blas_root;
+    let base_1 = inst_5.blas_root;
     let header_1 = nodes[base_1];
-    let origin_3 = header_1.min;
+    let origin_4 = header_1.min;
     let scale_2 = header_1.max;
     sp_1 = 0u;
     child = header_1.a;
@@ -561,13 +594,13 @@ fn intersect_mesh(inst_4: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, 
                     break;
                 }
                 let _e41 = k;
-                let prim = ((inst_4.triangle_offset + first) + _e41);
+                let prim = ((inst_5.triangle_offset + first) + _e41);
                 let _e45 = best.t;
                 let _e46 = hit_triangle(_e9, prim, ray_7.tmin, _e45);
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
                     let c_5 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0f));
-                    let _e57 = accept(inst_4, world_ray, c_5);
+                    let _e57 = accept(inst_5, world_ray, c_5);
                     if _e57 {
                         best = c_5;
                         if shadow {
@@ -585,7 +618,7 @@ fn intersect_mesh(inst_4: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, 
             let _e62 = child;
             let n_6 = nodes[(base_1 + _e62)];
             let _e68 = best.t;
-            let _e69 = children_entry(n_6, origin_3, scale_2, ray_7, _e8, _e68);
+            let _e69 = children_entry(n_6, origin_4, scale_2, ray_7, _e8, _e68);
             let tl = _e69.x;
             let tr = _e69.y;
             let _e73 = F32_INF;
@@ -635,19 +668,19 @@ fn intersect_mesh(inst_4: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, 
 fn intersect_object(slot_3: u32, ray_8: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
-    let inst_6 = instances[slot_3];
-    let _e7 = to_object(inst_6, ray_8);
+    let inst_7 = instances[slot_3];
+    let _e7 = to_object(inst_7, ray_8);
     r_2 = _e7;
     r_2.tmax = best_1.t;
-    if (inst_6.geometry_type == MESH_GEOMETRY) {
+    if (inst_7.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_6, slot_3, ray_8, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
 }
 
-fn medium_at(p_3: vec3<f32>, exclude: u32) -> u32 {
+fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     var inside: u32;
     var nearest: f32;
     var i: u32;
@@ -658,7 +691,7 @@ fn medium_at(p_3: vec3<f32>, exclude: u32) -> u32 {
     let frame_1 = frame;
     let _e12 = normalize_vec3f(vec3<f32>(0.5773f, 0.5774f, 0.5775f));
     let _e14 = F32_INF;
-    let probe = Ray(p_3, 0f, _e12, bitcast<f32>(_e14), 0u, 0u, 0u);
+    let probe = Ray(p_4, 0f, _e12, bitcast<f32>(_e14), 0u, 0u, 0u);
     inside = 0u;
     let _e23 = F32_INF;
     nearest = bitcast<f32>(_e23);
@@ -717,11 +750,11 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
     let _e16 = safe_inverse(ray_9.dir);
     let base_2 = frame_2.tlas_root;
     let header_2 = nodes[base_2];
-    let origin_4 = header_2.min;
+    let origin_5 = header_2.min;
     let scale_3 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_4, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
+    let _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
@@ -748,7 +781,7 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
             let _e63 = child_1;
             let n_7 = nodes[(base_2 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_7, origin_4, scale_3, ray_9, _e16, _e69);
+            let _e70 = children_entry(n_7, origin_5, scale_3, ray_9, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
@@ -826,17 +859,25 @@ fn load_PointLight(offset_5: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn offset_origin(p_4: vec3<f32>, n_3: vec3<f32>) -> vec3<f32> {
-    let _e3 = frame;
-    let header_3 = nodes[_e3.tlas_root];
-    let _e11 = node_frame_hi(header_3);
-    let a_5 = max(abs(p_4), max(abs(header_3.min), abs(_e11)));
-    let m_6 = max(max(a_5.x, a_5.y), a_5.z);
-    return (p_4 + (n_3 * vec3((m_6 * (1f / 65536f)))));
+fn step_toward(x_1: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
+    let bits_1 = bitcast<vec3<u32>>(x_1);
+    let up_1 = ((sign(x_1) * sign(s)) > vec3(0f));
+    let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
+    let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s > vec3(0f)));
+    let moved = select(stepped, from_zero, (x_1 == vec3(0f)));
+    return select(x_1, moved, !((s == vec3(0f))));
+}
+
+fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
+    let d_4 = ((2f * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
+    let offset_11 = (n_3 * vec3(d_4));
+    let _e17 = step_toward((p_5 + offset_11), offset_11);
+    return _e17;
 }
 
 fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
     var n_4: vec3<f32>;
+    var tmax_4: f32;
 
     n_4 = normal;
     let _e5 = n_4;
@@ -844,11 +885,25 @@ fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f3
         let _e9 = n_4;
         n_4 = -(_e9);
     }
-    let _e11 = n_4;
-    let _e12 = offset_origin(position, _e11);
-    let ray_24 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
-    let _e23 = intersect_scene(ray_24, true);
-    return select(1f, 0f, (_e23.slot != NO_HIT));
+    let a_6 = abs(position);
+    let _e13 = hit_error;
+    let error_2 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
+    let _e22 = n_4;
+    let _e23 = offset_origin(position, _e22, error_2);
+    let _e25 = F32_INF;
+    tmax_4 = bitcast<f32>(_e25);
+    let _e29 = F32_INF;
+    if (dist < bitcast<f32>(_e29)) {
+        let light_1 = (position + (dir * vec3(dist)));
+        let dd_1 = dot(dir, dir);
+        let along_1 = (dot((light_1 - _e23), dir) / dd_1);
+        let l_1 = (abs(position) + abs((dir * vec3(dist))));
+        tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
+    }
+    let _e59 = tmax_4;
+    let ray_24 = Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
+    let _e65 = intersect_scene(ray_24, true);
+    return select(1f, 0f, (_e65.slot != NO_HIT));
 }
 
 fn point_light(l: PointLight, position_1: vec3<f32>, normal_1: vec3<f32>) -> LightSample {
@@ -885,12 +940,12 @@ fn sample_light_query(i_1: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> L
     return _e27;
 }
 
-fn is_finite_f32_(x_1: f32) -> bool {
-    return ((bitcast<u32>(x_1) & 2147483647u) < 2139095040u);
+fn is_finite_f32_(x_2: f32) -> bool {
+    return ((bitcast<u32>(x_2) & 2147483647u) < 2139095040u);
 }
 
 fn fog_inscatter(m_1: Fog, i_2: u32, o: vec3<f32>, dir_1: vec3<f32>, d_1: f32, trans: f32) -> vec3<f32> {
-    var s: f32;
+    var s_1: f32;
 
     let sigma = m_1.density;
     let tiny_1 = ((sigma * d_1) < 0.001f);
@@ -905,25 +960,25 @@ fn fog_inscatter(m_1: Fog, i_2: u32, o: vec3<f32>, dir_1: vec3<f32>, d_1: f32, t
     let tb = select(atan2((d_1 - delta), h_2), (0.5f * PI), (d_1 == bitcast<f32>(_e34)));
     let w_3 = select(0f, 0.5f, equi);
     let _e41 = rand2_next();
-    s = (-(log((1f - (_e41.y * (1f - trans))))) / sigma);
+    s_1 = (-(log((1f - (_e41.y * (1f - trans))))) / sigma);
     if tiny_1 {
-        s = (_e41.y * d_1);
+        s_1 = (_e41.y * d_1);
     }
     if (_e41.x < w_3) {
-        s = (delta + (h_2 * tan(mix(ta, tb, _e41.y))));
+        s_1 = (delta + (h_2 * tan(mix(ta, tb, _e41.y))));
     }
-    let _e61 = s;
-    s = min(max(_e61, 0f), d_1);
-    let _e66 = s;
-    let e_1 = exp((-(sigma) * _e66));
-    let p_free = select(((sigma * e_1) / (1f - trans)), (1f / d_1), tiny_1);
-    let _e76 = s;
+    let _e61 = s_1;
+    s_1 = min(max(_e61, 0f), d_1);
+    let _e66 = s_1;
+    let e_2 = exp((-(sigma) * _e66));
+    let p_free = select(((sigma * e_2) / (1f - trans)), (1f / d_1), tiny_1);
+    let _e76 = s_1;
     let r_4 = (_e76 - delta);
     let pdf = (((1f - w_3) * p_free) + select(0f, ((w_3 * h_2) / ((tb - ta) * ((h_2 * h_2) + (r_4 * r_4)))), equi));
-    let _e91 = s;
+    let _e91 = s_1;
     let _e97 = sample_light_query(i_2, (o + (dir_1 * vec3(_e91))), vec3(0f));
     let att = select(1f, exp((-(sigma) * _e97.dist)), (m_1.lights_inside == 1u));
-    return (_e97.radiance * vec3((((att * sigma) * e_1) / pdf)));
+    return (_e97.radiance * vec3((((att * sigma) * e_2) / pdf)));
 }
 
 fn fog_medium(m_2: Fog, ray_12: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
@@ -934,8 +989,8 @@ fn fog_medium(m_2: Fog, ray_12: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     if (!((m_2.density > 0f)) || !((len > 0f))) {
         return radiance;
     }
-    let d_4 = (t * len);
-    let trans_1 = exp((-(m_2.density) * d_4));
+    let d_5 = (t * len);
+    let trans_1 = exp((-(m_2.density) * d_5));
     light = vec3(0f);
     let _e23 = light_count_query();
     i_3 = 0u;
@@ -946,7 +1001,7 @@ fn fog_medium(m_2: Fog, ray_12: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
         }
         let _e27 = light;
         let _e28 = i_3;
-        let _e33 = fog_inscatter(m_2, _e28, ray_12.origin, (ray_12.dir / vec3(len)), d_4, trans_1);
+        let _e33 = fog_inscatter(m_2, _e28, ray_12.origin, (ray_12.dir / vec3(len)), d_5, trans_1);
         light = (_e27 + _e33);
         continuing {
             let _e35 = i_3;
@@ -970,11 +1025,11 @@ fn through_medium(ray_14: Ray, t_2: f32, radiance_2: vec3<f32>) -> vec3<f32> {
     if (ray_14.medium == 0u) {
         return radiance_2;
     }
-    let inst_7 = instances[(ray_14.medium - 1u)];
-    if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
+    let inst_8 = instances[(ray_14.medium - 1u)];
+    if ((inst_8.flags & FLAG_MEDIUM) == 0u) {
         return radiance_2;
     }
-    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_14, t_2, radiance_2);
+    let _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_14, t_2, radiance_2);
     return _e21;
 }
 
@@ -1039,9 +1094,9 @@ fn dispatch_closest_hit(type_id_5: u32, offset_9: u32, ray_18: Ray, hit_6: Hit, 
 }
 
 fn shade_direct(ray_19: Ray, c_2: Candidate) -> vec3<f32> {
-    let inst_8 = instances[c_2.slot];
+    let inst_9 = instances[c_2.slot];
     let _e6 = finish_hit(ray_19, c_2);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, vec3(0f));
+    let _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_19, _e6, vec3(0f));
     return _e11;
 }
 
@@ -1065,18 +1120,18 @@ fn dispatch_secondary_rays(type_id_6: u32, offset_10: u32, ray_21: Ray, hit_8: H
     return;
 }
 
-fn spawn_origin(hit_9: Hit, dir_3: vec3<f32>) -> vec3<f32> {
+fn spawn_origin(hit_9: Hit, error_1: f32, dir_3: vec3<f32>) -> vec3<f32> {
     var n_5: vec3<f32>;
 
     n_5 = hit_9.geometric_normal;
-    let _e4 = n_5;
-    if (dot(dir_3, _e4) < 0f) {
-        let _e8 = n_5;
-        n_5 = -(_e8);
+    let _e5 = n_5;
+    if (dot(dir_3, _e5) < 0f) {
+        let _e9 = n_5;
+        n_5 = -(_e9);
     }
-    let _e11 = n_5;
-    let _e12 = offset_origin(hit_9.position, _e11);
-    return _e12;
+    let _e12 = n_5;
+    let _e13 = offset_origin(hit_9.position, _e12, error_1);
+    return _e13;
 }
 
 fn trace(camera_ray: Ray) -> vec3<f32> {
@@ -1095,14 +1150,15 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     if !(HAS_SECONDARY_RAYS) {
         let _e4 = intersect_scene(camera_ray, false);
         if (_e4.slot == NO_HIT) {
-            let _e9 = F32_INF;
-            let _e11 = miss(camera_ray);
-            let _e12 = through_medium(camera_ray, bitcast<f32>(_e9), _e11);
-            return _e12;
+            hit_error = 0f;
+            let _e11 = F32_INF;
+            let _e13 = miss(camera_ray);
+            let _e14 = through_medium(camera_ray, bitcast<f32>(_e11), _e13);
+            return _e14;
         }
-        let _e14 = shade_direct(camera_ray, _e4);
-        let _e15 = through_medium(camera_ray, _e4.t, _e14);
-        return _e15;
+        let _e16 = shade_direct(camera_ray, _e4);
+        let _e17 = through_medium(camera_ray, _e4.t, _e16);
+        return _e17;
     }
     stack = array<Frame, 3>();
     depth = 0u;
@@ -1110,94 +1166,96 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     value = vec3(0f);
     have_value = false;
     loop {
-        let _e26 = have_value;
-        if !(_e26) {
-            let _e28 = ray_22;
-            let _e30 = intersect_scene(_e28, false);
-            if (_e30.slot == NO_HIT) {
-                let _e34 = ray_22;
-                let _e36 = F32_INF;
+        let _e28 = have_value;
+        if !(_e28) {
+            let _e30 = ray_22;
+            let _e32 = intersect_scene(_e30, false);
+            if (_e32.slot == NO_HIT) {
+                hit_error = 0f;
                 let _e38 = ray_22;
-                let _e39 = miss(_e38);
-                let _e40 = through_medium(_e34, bitcast<f32>(_e36), _e39);
-                value = _e40;
+                let _e40 = F32_INF;
+                let _e42 = ray_22;
+                let _e43 = miss(_e42);
+                let _e44 = through_medium(_e38, bitcast<f32>(_e40), _e43);
+                value = _e44;
                 have_value = true;
             } else {
-                let inst_9 = instances[_e30.slot];
-                let _e46 = ray_22;
-                let _e47 = finish_hit(_e46, _e30);
+                let inst_10 = instances[_e32.slot];
+                let _e50 = ray_22;
+                let _e51 = finish_hit(_e50, _e32);
+                let error_3 = hit_error;
                 pushed = false;
-                let _e56 = ray_22.depth;
-                let _e60 = depth;
-                if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
+                let _e62 = ray_22.depth;
+                let _e66 = depth;
+                if ((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    let _e68 = ray_22;
-                    dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
-                    let _e70 = spawn_count;
-                    let n_8 = min(min(_e70, 1u), MAX_SPAWN);
+                    let _e74 = ray_22;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);
+                    let _e76 = spawn_count;
+                    let n_8 = min(min(_e76, 1u), MAX_SPAWN);
                     if (n_8 > 0u) {
-                        let _e77 = ray_22;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
+                        let _e83 = ray_22;
+                        f = Frame(_e83, _e51, error_3, _e32.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
                         i_5 = 0u;
                         loop {
-                            let _e88 = i_5;
-                            if (_e88 >= n_8) {
+                            let _e94 = i_5;
+                            if (_e94 >= n_8) {
                                 break;
                             }
-                            let _e91 = i_5;
-                            let _e95 = i_5;
-                            let _e98 = spawn_dirs[_e95];
-                            f.dirs[min(_e91, 0u)] = _e98;
-                            let _e100 = i_5;
-                            let _e104 = i_5;
-                            let _e107 = spawn_weights[_e104];
-                            f.weights[min(_e100, 0u)] = _e107;
+                            let _e97 = i_5;
+                            let _e101 = i_5;
+                            let _e104 = spawn_dirs[_e101];
+                            f.dirs[min(_e97, 0u)] = _e104;
+                            let _e106 = i_5;
+                            let _e110 = i_5;
+                            let _e113 = spawn_weights[_e110];
+                            f.weights[min(_e106, 0u)] = _e113;
                             continuing {
-                                let _e108 = i_5;
-                                i_5 = (_e108 + 1u);
+                                let _e114 = i_5;
+                                i_5 = (_e114 + 1u);
                             }
                         }
-                        let _e111 = depth;
-                        let _e115 = f;
-                        stack[min(_e111, 2u)] = _e115;
-                        let _e116 = depth;
-                        depth = (_e116 + 1u);
+                        let _e117 = depth;
+                        let _e121 = f;
+                        stack[min(_e117, 2u)] = _e121;
+                        let _e122 = depth;
+                        depth = (_e122 + 1u);
                         pushed = true;
                     }
                 }
-                let _e120 = pushed;
-                if !(_e120) {
-                    let _e124 = ray_22;
-                    let _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0f));
-                    let _e128 = ray_22;
-                    let _e130 = through_medium(_e128, _e30.t, _e127);
-                    value = _e130;
+                let _e126 = pushed;
+                if !(_e126) {
+                    let _e130 = ray_22;
+                    let _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, vec3(0f));
+                    let _e134 = ray_22;
+                    let _e136 = through_medium(_e134, _e32.t, _e133);
+                    value = _e136;
                     have_value = true;
                 }
             }
         }
-        let _e132 = have_value;
-        if _e132 {
-            let _e133 = depth;
-            if (_e133 == 0u) {
-                let _e136 = value;
-                return _e136;
+        let _e138 = have_value;
+        if _e138 {
+            let _e139 = depth;
+            if (_e139 == 0u) {
+                let _e142 = value;
+                return _e142;
             }
-            let _e137 = depth;
-            let top = (_e137 - 1u);
-            let _e144 = stack[min(top, 2u)].next;
-            let child_2 = (_e144 - 1u);
-            let _e151 = stack[min(top, 2u)].sum;
-            let _e159 = stack[min(top, 2u)].weights[min(child_2, 0u)];
-            let _e160 = value;
-            stack[min(top, 2u)].sum = (_e151 + (_e159 * _e160));
+            let _e143 = depth;
+            let top = (_e143 - 1u);
+            let _e150 = stack[min(top, 2u)].next;
+            let child_2 = (_e150 - 1u);
+            let _e157 = stack[min(top, 2u)].sum;
+            let _e165 = stack[min(top, 2u)].weights[min(child_2, 0u)];
+            let _e166 = value;
+            stack[min(top, 2u)].sum = (_e157 + (_e165 * _e166));
             have_value = false;
         }
-        let _e164 = depth;
-        let top_1 = (_e164 - 1u);
-        let _e171 = stack[min(top_1, 2u)].next;
-        let _e176 = stack[min(top_1, 2u)].count;
-        if (_e171 < _e176) {
+        let _e170 = depth;
+        let top_1 = (_e170 - 1u);
+        let _e177 = stack[min(top_1, 2u)].next;
+        let _e182 = stack[min(top_1, 2u)].count;
+        if (_e177 < _e182) {
             let i_6 = stack[min(top_1, 2u)].next;
             stack[min(top_1, 2u)].next = (i_6 + 1u);
             let parent = stack[min(top_1, 2u)].ray;
@@ -1205,60 +1263,64 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let dir_5 = stack[min(top_1, 2u)].dirs[min(i_6, 0u)];
             medium = parent.medium;
             if (dot(dir_5, hit_11.geometric_normal) < 0f) {
-                let _e217 = stack[min(top_1, 2u)].slot;
-                medium = (_e217 + 1u);
+                let _e223 = stack[min(top_1, 2u)].slot;
+                medium = (_e223 + 1u);
             } else {
-                let _e225 = stack[min(top_1, 2u)].slot;
-                if (parent.medium == (_e225 + 1u)) {
+                let _e231 = stack[min(top_1, 2u)].slot;
+                if (parent.medium == (_e231 + 1u)) {
                     found = false;
                     medium = 0u;
                     k_1 = top_1;
                     loop {
-                        let _e233 = k_1;
-                        if (_e233 == 0u) {
+                        let _e239 = k_1;
+                        if (_e239 == 0u) {
                             break;
                         }
-                        let _e236 = k_1;
-                        k_1 = (_e236 - 1u);
-                        let _e239 = k_1;
-                        let _e244 = stack[min(_e239, 2u)].slot;
-                        let _e249 = stack[min(top_1, 2u)].slot;
-                        let _e251 = k_1;
-                        let _e257 = stack[min(_e251, 2u)].ray.medium;
-                        let _e261 = k_1;
-                        let _e269 = stack[min((_e261 + 1u), 2u)].ray.medium;
-                        if (((_e244 == _e249) && (_e257 != parent.medium)) && (_e269 == parent.medium)) {
-                            let _e273 = k_1;
-                            let _e279 = stack[min(_e273, 2u)].ray.medium;
-                            medium = _e279;
+                        let _e242 = k_1;
+                        k_1 = (_e242 - 1u);
+                        let _e245 = k_1;
+                        let _e250 = stack[min(_e245, 2u)].slot;
+                        let _e255 = stack[min(top_1, 2u)].slot;
+                        let _e257 = k_1;
+                        let _e263 = stack[min(_e257, 2u)].ray.medium;
+                        let _e267 = k_1;
+                        let _e275 = stack[min((_e267 + 1u), 2u)].ray.medium;
+                        if (((_e250 == _e255) && (_e263 != parent.medium)) && (_e275 == parent.medium)) {
+                            let _e279 = k_1;
+                            let _e285 = stack[min(_e279, 2u)].ray.medium;
+                            medium = _e285;
                             found = true;
                             break;
                         }
                     }
-                    let _e281 = found;
-                    if !(_e281) {
-                        let _e283 = spawn_origin(hit_11, dir_5);
-                        let _e288 = stack[min(top_1, 2u)].slot;
-                        let _e289 = medium_at(_e283, _e288);
-                        medium = _e289;
+                    let _e287 = found;
+                    if !(_e287) {
+                        let _e293 = stack[min(top_1, 2u)].error;
+                        let _e294 = spawn_origin(hit_11, _e293, dir_5);
+                        let _e299 = stack[min(top_1, 2u)].slot;
+                        let _e300 = medium_at(_e294, _e299);
+                        medium = _e300;
                     }
                 }
             }
-            let _e290 = spawn_origin(hit_11, dir_5);
-            let _e293 = F32_INF;
-            let _e299 = medium;
-            ray_22 = Ray(_e290, 0f, dir_5, bitcast<f32>(_e293), (parent.depth + 1u), RAY_SECONDARY, _e299);
+            let _e305 = stack[min(top_1, 2u)].error;
+            let _e306 = spawn_origin(hit_11, _e305, dir_5);
+            let _e309 = F32_INF;
+            let _e315 = medium;
+            ray_22 = Ray(_e306, 0f, dir_5, bitcast<f32>(_e309), (parent.depth + 1u), RAY_SECONDARY, _e315);
         } else {
-            let _e305 = stack[min(top_1, 2u)].slot;
-            let inst_10 = instances[_e305];
-            let _e315 = stack[min(top_1, 2u)].ray;
-            let _e320 = stack[min(top_1, 2u)].hit;
-            let _e325 = stack[min(top_1, 2u)].sum;
-            let _e326 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e315, _e320, _e325);
-            let _e331 = stack[min(top_1, 2u)].ray;
-            let _e337 = stack[min(top_1, 2u)].hit.t;
-            let _e338 = through_medium(_e331, _e337, _e326);
-            value = _e338;
+            let _e321 = stack[min(top_1, 2u)].slot;
+            let inst_11 = instances[_e321];
+            let _e329 = stack[min(top_1, 2u)].error;
+            hit_error = _e329;
+            let _e337 = stack[min(top_1, 2u)].ray;
+            let _e342 = stack[min(top_1, 2u)].hit;
+            let _e347 = stack[min(top_1, 2u)].sum;
+            let _e348 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e337, _e342, _e347);
+            let _e353 = stack[min(top_1, 2u)].ray;
+            let _e359 = stack[min(top_1, 2u)].hit.t;
+            let _e360 = through_medium(_e353, _e359, _e348);
+            value = _e360;
             depth = top_1;
             have_value = true;
         }
@@ -1266,8 +1328,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn is_finite_vec3f(x_2: vec3<f32>) -> vec3<bool> {
-    return ((bitcast<vec3<u32>>(x_2) & vec3(2147483647u)) < vec3(2139095040u));
+fn is_finite_vec3f(x_3: vec3<f32>) -> vec3<bool> {
+    return ((bitcast<vec3<u32>>(x_3) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
 fn finite_or_zero(c_3: vec3<f32>) -> vec3<f32> {
@@ -1278,7 +1340,7 @@ fn finite_or_zero(c_3: vec3<f32>) -> vec3<f32> {
 fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
-    var s_1: u32;
+    var s_2: u32;
     var ray_23: Ray;
 
     let frame_5 = frame;
@@ -1286,13 +1348,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
     sum = vec3(0f);
     bad = 0u;
     let end_1 = frame_5.samples_per_pass;
-    s_1 = 0u;
+    s_2 = 0u;
     loop {
-        let _e13 = s_1;
+        let _e13 = s_2;
         if (_e13 >= end_1) {
             break;
         }
-        let _e18 = s_1;
+        let _e18 = s_2;
         let sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
@@ -1316,8 +1378,8 @@ fn render_pixel(pixel_3: vec2<u32>) {
             bad = (_e43 + 1u);
         }
         continuing {
-            let _e46 = s_1;
-            s_1 = (_e46 + 1u);
+            let _e46 = s_2;
+            s_2 = (_e46 + 1u);
         }
     }
     let _e50 = ray_count;

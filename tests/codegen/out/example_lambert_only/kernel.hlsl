@@ -145,16 +145,16 @@ struct PointLight {
 struct Frame {
     Ray ray;
     Hit hit;
+    float error;
     uint slot;
-    int _pad3_0;
-    int _pad3_1;
-    int _pad3_2;
-    float3 sum;
     int _pad4_0;
-    float3 dirs[1];
+    int _pad4_1;
+    float3 sum;
     int _pad5_0;
-    float3 weights[1];
+    float3 dirs[1];
     int _pad6_0;
+    float3 weights[1];
+    int _pad7_0;
     uint count;
     uint next;
     int _end_pad_0;
@@ -174,9 +174,14 @@ static const uint NODE_COUNT_MASK = 15u;
 static const uint NODE_FIRST_MASK = 134217727u;
 static const uint BLAS_STACK = 64u;
 static const uint TLAS_STACK = 2u;
+static const float POINT_ERROR = 1.9073486e-6;
+static const float GAMMA_1_ = 5.960465e-8;
+static const float GAMMA_6_ = 3.576281e-7;
+static const float GAMMA_4_ = 2.3841864e-7;
 static const bool HAS_SECONDARY_RAYS = false;
 static const bool HAS_BACKGROUND = true;
 static const uint FLAG_MEDIUM = 4u;
+static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
 static const float INV_PI = 0.31830987;
 static const uint FLAG_SECONDARY = 2u;
@@ -194,6 +199,7 @@ ByteAddressBuffer instances : register(t3);
 ByteAddressBuffer nodes : register(t2);
 ByteAddressBuffer triangles : register(t4);
 static uint traversal_stack[66] = (uint[66])0;
+static float hit_error = (float)0;
 ByteAddressBuffer attributes : register(t5);
 static uint ray_count = (uint)0;
 static float3 spawn_dirs[1] = (float3[1])0;
@@ -312,9 +318,9 @@ uint samples_per_pixel_query()
 float rand_next()
 {
     uint _e1 = rng_state;
-    uint s_1 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_1;
-    uint word_1 = (((s_1 >> (((s_1 >> 28u) + 4u) & 31u)) ^ s_1) * 277803737u);
+    uint s_2 = ((_e1 * 747796405u) + 2891336453u);
+    rng_state = s_2;
+    uint word_1 = (((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u);
     uint r_3 = ((word_1 >> 22u) ^ word_1);
     return (float((r_3 >> 8u)) * (1.0 / 16777216.0));
 }
@@ -409,8 +415,8 @@ Ray to_object(GpuInstance inst, Ray ray)
 float3 safe_inverse(float3 d)
 {
     float3 tiny = (1.1754944e-38).xxx;
-    float3 s_2 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny) ? (s_2 * tiny) : d);
+    float3 s_3 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 dd = ((abs(d) < tiny) ? (s_3 * tiny) : d);
     return ((1.0).xxx / dd);
 }
 
@@ -553,7 +559,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     const TriangleRay _e9 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_1 = ConstructGpuNode(asfloat(nodes.Load3(base_1*32+0)), asuint(nodes.Load(base_1*32+12)), asfloat(nodes.Load3(base_1*32+16)), asuint(nodes.Load(base_1*32+28)));
-    float3 origin_3 = header_1.min_;
+    float3 origin_4 = header_1.min_;
     float3 scale_2 = header_1.max_;
     sp_1 = 0u;
     child = header_1.a;
@@ -604,7 +610,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             uint _e62 = child;
             GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e62)*32+0)), asuint(nodes.Load((base_1 + _e62)*32+12)), asfloat(nodes.Load3((base_1 + _e62)*32+16)), asuint(nodes.Load((base_1 + _e62)*32+28)));
             float _e68 = best.t;
-            const float2 _e69 = children_entry(n_6, origin_3, scale_2, ray_4, _e8, _e68);
+            const float2 _e69 = children_entry(n_6, origin_4, scale_2, ray_4, _e8, _e68);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
@@ -675,18 +681,24 @@ Candidate intersect_object(uint slot_2, Ray ray_5, Candidate best_1, bool shadow
 {
     Ray r_2 = (Ray)0;
 
-    GpuInstance inst_5 = ConstructGpuInstance(asfloat(instances.Load4(slot_2*128+0)), asfloat(instances.Load4(slot_2*128+16)), asfloat(instances.Load4(slot_2*128+32)), asfloat(instances.Load4(slot_2*128+48)), asfloat(instances.Load4(slot_2*128+64)), asfloat(instances.Load4(slot_2*128+80)), asuint(instances.Load(slot_2*128+96)), asuint(instances.Load(slot_2*128+100)), asuint(instances.Load(slot_2*128+104)), asuint(instances.Load(slot_2*128+108)), asuint(instances.Load(slot_2*128+112)), asuint(instances.Load(slot_2*128+116)), asuint(instances.Load(slot_2*128+120)), asuint(instances.Load(slot_2*128+124)));
-    const Ray _e7 = to_object(inst_5, ray_5);
+    GpuInstance inst_6 = ConstructGpuInstance(asfloat(instances.Load4(slot_2*128+0)), asfloat(instances.Load4(slot_2*128+16)), asfloat(instances.Load4(slot_2*128+32)), asfloat(instances.Load4(slot_2*128+48)), asfloat(instances.Load4(slot_2*128+64)), asfloat(instances.Load4(slot_2*128+80)), asuint(instances.Load(slot_2*128+96)), asuint(instances.Load(slot_2*128+100)), asuint(instances.Load(slot_2*128+104)), asuint(instances.Load(slot_2*128+108)), asuint(instances.Load(slot_2*128+112)), asuint(instances.Load(slot_2*128+116)), asuint(instances.Load(slot_2*128+120)), asuint(instances.Load(slot_2*128+124)));
+    const Ray _e7 = to_object(inst_6, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
-    if ((inst_5.geometry_type == MESH_GEOMETRY)) {
+    if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        const Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_5, _e14, best_1, shadow_1);
+        const Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_5, _e14, best_1, shadow_1);
         const Candidate candidate_3 = _e15;
         return candidate_3;
     }
     const Candidate candidate_4 = best_1;
     return candidate_4;
+}
+
+float point_error(float3 origin_3, float3 along)
+{
+    float3 a_5 = (abs(origin_3) + abs(along));
+    return (POINT_ERROR * max(max(a_5.x, a_5.y), a_5.z));
 }
 
 Triangle ConstructTriangle(float3 arg0, float3 arg1, float3 arg2) {
@@ -699,10 +711,10 @@ Triangle ConstructTriangle(float3 arg0, float3 arg1, float3 arg2) {
 
 Triangle load_triangle(uint slot_3)
 {
-    float4 v0_ = asfloat(triangles.Load4((slot_3 * 3u)*16));
+    float4 v0_1 = asfloat(triangles.Load4((slot_3 * 3u)*16));
     float4 v1_ = asfloat(triangles.Load4(((slot_3 * 3u) + 1u)*16));
     float4 v2_ = asfloat(triangles.Load4(((slot_3 * 3u) + 2u)*16));
-    const Triangle triangle_ = ConstructTriangle(v0_.xyz, v1_.xyz, v2_.xyz);
+    const Triangle triangle_ = ConstructTriangle(v0_1.xyz, v1_.xyz, v2_.xyz);
     return triangle_;
 }
 
@@ -712,18 +724,31 @@ float3 point_to_world(GpuInstance inst_3, float3 p_2)
     return float3(dot(inst_3.object_to_world_0_, q_1), dot(inst_3.object_to_world_1_, q_1), dot(inst_3.object_to_world_2_, q_1));
 }
 
+float mesh_error(GpuInstance inst_4, float3 v0_, float3 db1_, float3 db2_, float3 p_3)
+{
+    float3 obj = (((GAMMA_1_).xxx * abs(v0_)) + ((GAMMA_6_).xxx * (abs(db1_) + abs(db2_))));
+    float4 q_2 = float4(abs(p_3), 1.0);
+    float4 r0_ = abs(inst_4.object_to_world_0_);
+    float4 r1_ = abs(inst_4.object_to_world_1_);
+    float4 r2_ = abs(inst_4.object_to_world_2_);
+    float3 rounding = ((GAMMA_4_).xxx * float3(dot(r0_, q_2), dot(r1_, q_2), dot(r2_, q_2)));
+    float3 carried = (((1.0 + GAMMA_4_)).xxx * float3(dot(r0_.xyz, obj), dot(r1_.xyz, obj), dot(r2_.xyz, obj)));
+    float3 e = (rounding + carried);
+    return max(max(e.x, e.y), e.z);
+}
+
 float3 decode_octahedral(uint bits)
 {
     float3 n_1 = (float3)0;
 
-    float2 e = (float2(int2(bits << 16, bits) >> 16) / 32767.0);
-    n_1 = float3(e.x, e.y, ((1.0 - abs(e.x)) - abs(e.y)));
+    float2 e_1 = (float2(int2(bits << 16, bits) >> 16) / 32767.0);
+    n_1 = float3(e_1.x, e_1.y, ((1.0 - abs(e_1.x)) - abs(e_1.y)));
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         float3 _e21 = n_1;
-        float2 s_3 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
+        float2 s_4 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
         float3 _e29 = n_1;
-        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_3);
+        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_4);
         float _e37 = n_1.z;
         n_1 = float3(xy.x, xy.y, _e37);
     }
@@ -732,9 +757,9 @@ float3 decode_octahedral(uint bits)
     return _e40;
 }
 
-float3 normal_to_world(GpuInstance inst_4, float3 n_2)
+float3 normal_to_world(GpuInstance inst_5, float3 n_2)
 {
-    float3 w_1 = (((inst_4.world_to_object_0_.xyz * (n_2.x).xxx) + (inst_4.world_to_object_1_.xyz * (n_2.y).xxx)) + (inst_4.world_to_object_2_.xyz * (n_2.z).xxx));
+    float3 w_1 = (((inst_5.world_to_object_0_.xyz * (n_2.x).xxx) + (inst_5.world_to_object_1_.xyz * (n_2.y).xxx)) + (inst_5.world_to_object_2_.xyz * (n_2.z).xxx));
     const float3 _e19 = normalize_vec3f(w_1);
     return _e19;
 }
@@ -758,53 +783,60 @@ Hit finish_hit(Ray ray_6, Candidate c_1)
     float3 n_geo = (float3)0;
     float3 n_shade = (float3)0;
 
-    GpuInstance inst_6 = ConstructGpuInstance(asfloat(instances.Load4(c_1.slot*128+0)), asfloat(instances.Load4(c_1.slot*128+16)), asfloat(instances.Load4(c_1.slot*128+32)), asfloat(instances.Load4(c_1.slot*128+48)), asfloat(instances.Load4(c_1.slot*128+64)), asfloat(instances.Load4(c_1.slot*128+80)), asuint(instances.Load(c_1.slot*128+96)), asuint(instances.Load(c_1.slot*128+100)), asuint(instances.Load(c_1.slot*128+104)), asuint(instances.Load(c_1.slot*128+108)), asuint(instances.Load(c_1.slot*128+112)), asuint(instances.Load(c_1.slot*128+116)), asuint(instances.Load(c_1.slot*128+120)), asuint(instances.Load(c_1.slot*128+124)));
-    hit = ConstructHit((ray_6.origin + (ray_6.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_6.object, c_1.primitive);
+    GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4(c_1.slot*128+0)), asfloat(instances.Load4(c_1.slot*128+16)), asfloat(instances.Load4(c_1.slot*128+32)), asfloat(instances.Load4(c_1.slot*128+48)), asfloat(instances.Load4(c_1.slot*128+64)), asfloat(instances.Load4(c_1.slot*128+80)), asuint(instances.Load(c_1.slot*128+96)), asuint(instances.Load(c_1.slot*128+100)), asuint(instances.Load(c_1.slot*128+104)), asuint(instances.Load(c_1.slot*128+108)), asuint(instances.Load(c_1.slot*128+112)), asuint(instances.Load(c_1.slot*128+116)), asuint(instances.Load(c_1.slot*128+120)), asuint(instances.Load(c_1.slot*128+124)));
+    const float _e11 = point_error(ray_6.origin, (ray_6.dir * (c_1.t).xxx));
+    hit_error = _e11;
+    hit = ConstructHit((ray_6.origin + (ray_6.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
-    if ((inst_6.geometry_type == MESH_GEOMETRY)) {
-        const Triangle _e35 = load_triangle(c_1.primitive);
+    if ((inst_7.geometry_type == MESH_GEOMETRY)) {
+        const Triangle _e42 = load_triangle(c_1.primitive);
         float2 b_6 = c_1.uv;
         float w_2 = ((1.0 - b_6.x) - b_6.y);
-        const float3 _e56 = point_to_world(inst_6, (((_e35.v0_ * (w_2).xxx) + (_e35.v1_ * (b_6.x).xxx)) + (_e35.v2_ * (b_6.y).xxx)));
-        hit.position = _e56;
-        n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
+        float3 e1_ = (_e42.v1_ - _e42.v0_);
+        float3 e2_ = (_e42.v2_ - _e42.v0_);
+        float3 p_6 = (_e42.v0_ + ((e1_ * (b_6.x).xxx) + (e2_ * (b_6.y).xxx)));
+        const float3 _e65 = point_to_world(inst_7, p_6);
+        hit.position = _e65;
+        const float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * (b_6.x).xxx), (e2_ * (b_6.y).xxx), p_6);
+        hit_error = _e73;
+        n_geo = cross(e1_, e2_);
         uint4 a0_ = asuint(attributes.Load4((c_1.primitive * 2u)*16));
         uint4 a1_ = asuint(attributes.Load4(((c_1.primitive * 2u) + 1u)*16));
-        const float3 _e79 = decode_octahedral(a0_.x);
-        const float3 _e83 = decode_octahedral(a0_.y);
-        const float3 _e89 = decode_octahedral(a0_.z);
-        n_shade = (((_e79 * (w_2).xxx) + (_e83 * (b_6.x).xxx)) + (_e89 * (b_6.y).xxx));
-        float3 _e94 = n_shade;
-        float3 _e95 = n_shade;
-        if ((dot(_e94, _e95) < 1e-12)) {
-            float3 _e99 = n_geo;
-            n_shade = _e99;
+        const float3 _e91 = decode_octahedral(a0_.x);
+        const float3 _e95 = decode_octahedral(a0_.y);
+        const float3 _e101 = decode_octahedral(a0_.z);
+        n_shade = (((_e91 * (w_2).xxx) + (_e95 * (b_6.x).xxx)) + (_e101 * (b_6.y).xxx));
+        float3 _e106 = n_shade;
+        float3 _e107 = n_shade;
+        if ((dot(_e106, _e107) < 1e-12)) {
+            float3 _e111 = n_geo;
+            n_shade = _e111;
         }
-        uint _e100 = a0_.w;
-        float2 uv0_ = float2(f16tof32(_e100), f16tof32((_e100) >> 16));
-        uint _e102 = a1_.x;
-        float2 uv1_ = float2(f16tof32(_e102), f16tof32((_e102) >> 16));
-        uint _e104 = a1_.y;
-        float2 uv2_ = float2(f16tof32(_e104), f16tof32((_e104) >> 16));
+        uint _e112 = a0_.w;
+        float2 uv0_ = float2(f16tof32(_e112), f16tof32((_e112) >> 16));
+        uint _e114 = a1_.x;
+        float2 uv1_ = float2(f16tof32(_e114), f16tof32((_e114) >> 16));
+        uint _e116 = a1_.y;
+        float2 uv2_ = float2(f16tof32(_e116), f16tof32((_e116) >> 16));
         hit.uv = (((uv0_ * (w_2).xx) + (uv1_ * (b_6.x).xx)) + (uv2_ * (b_6.y).xx));
-        float4 _e123 = asfloat(triangles.Load4((c_1.primitive * 3u)*16));
-        hit.primitive = asuint(_e123.w);
+        float4 _e135 = asfloat(triangles.Load4((c_1.primitive * 3u)*16));
+        hit.primitive = asuint(_e135.w);
     }
-    float3 _e127 = n_geo;
-    const float3 _e128 = normal_to_world(inst_6, _e127);
-    hit.geometric_normal = _e128;
-    float3 _e130 = n_shade;
-    const float3 _e131 = normal_to_world(inst_6, _e130);
-    hit.normal = _e131;
-    float3 _e135 = hit.geometric_normal;
-    hit.front_face = (dot(ray_6.dir, _e135) < 0.0);
-    Hit _e139 = hit;
-    const Hit hit_7 = _e139;
+    float3 _e139 = n_geo;
+    const float3 _e140 = normal_to_world(inst_7, _e139);
+    hit.geometric_normal = _e140;
+    float3 _e142 = n_shade;
+    const float3 _e143 = normal_to_world(inst_7, _e142);
+    hit.normal = _e143;
+    float3 _e147 = hit.geometric_normal;
+    hit.front_face = (dot(ray_6.dir, _e147) < 0.0);
+    Hit _e151 = hit;
+    const Hit hit_7 = _e151;
     return hit_7;
 }
 
-uint medium_at(float3 p_3, uint exclude)
+uint medium_at(float3 p_4, uint exclude)
 {
     uint inside = (uint)0;
     float nearest = (float)0;
@@ -816,7 +848,7 @@ uint medium_at(float3 p_3, uint exclude)
     FrameUniforms frame_1 = frame;
     const float3 _e12 = normalize_vec3f(float3(0.5773, 0.5774, 0.5775));
     uint _e14 = F32_INF;
-    Ray probe = ConstructRay(p_3, 0.0, _e12, asfloat(_e14), 0u, 0u, 0u);
+    Ray probe = ConstructRay(p_4, 0.0, _e12, asfloat(_e14), 0u, 0u, 0u);
     inside = 0u;
     uint _e23 = F32_INF;
     nearest = asfloat(_e23);
@@ -883,11 +915,11 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2)
     const float3 _e16 = safe_inverse(ray_7.dir);
     uint base_2 = frame_2.tlas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
-    float3 origin_4 = header_2.min_;
+    float3 origin_5 = header_2.min_;
     float3 scale_3 = header_2.max_;
     const float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    const float _e28 = slab(origin_4, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
+    const float _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == asfloat(_e30))) {
         Candidate _e33 = best_2;
@@ -919,7 +951,7 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2)
             uint _e63 = child_1;
             GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e63)*32+0)), asuint(nodes.Load((base_2 + _e63)*32+12)), asfloat(nodes.Load3((base_2 + _e63)*32+16)), asuint(nodes.Load((base_2 + _e63)*32+28)));
             float _e69 = best_2.t;
-            const float2 _e70 = children_entry(n_7, origin_4, scale_3, ray_7, _e16, _e69);
+            const float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_7, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1021,11 +1053,11 @@ float3 through_medium(Ray ray_12, float t_1, float3 radiance_1)
     if ((ray_12.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4((ray_12.medium - 1u)*128+0)), asfloat(instances.Load4((ray_12.medium - 1u)*128+16)), asfloat(instances.Load4((ray_12.medium - 1u)*128+32)), asfloat(instances.Load4((ray_12.medium - 1u)*128+48)), asfloat(instances.Load4((ray_12.medium - 1u)*128+64)), asfloat(instances.Load4((ray_12.medium - 1u)*128+80)), asuint(instances.Load((ray_12.medium - 1u)*128+96)), asuint(instances.Load((ray_12.medium - 1u)*128+100)), asuint(instances.Load((ray_12.medium - 1u)*128+104)), asuint(instances.Load((ray_12.medium - 1u)*128+108)), asuint(instances.Load((ray_12.medium - 1u)*128+112)), asuint(instances.Load((ray_12.medium - 1u)*128+116)), asuint(instances.Load((ray_12.medium - 1u)*128+120)), asuint(instances.Load((ray_12.medium - 1u)*128+124)));
-    if (((inst_7.flags & FLAG_MEDIUM) == 0u)) {
+    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4((ray_12.medium - 1u)*128+0)), asfloat(instances.Load4((ray_12.medium - 1u)*128+16)), asfloat(instances.Load4((ray_12.medium - 1u)*128+32)), asfloat(instances.Load4((ray_12.medium - 1u)*128+48)), asfloat(instances.Load4((ray_12.medium - 1u)*128+64)), asfloat(instances.Load4((ray_12.medium - 1u)*128+80)), asuint(instances.Load((ray_12.medium - 1u)*128+96)), asuint(instances.Load((ray_12.medium - 1u)*128+100)), asuint(instances.Load((ray_12.medium - 1u)*128+104)), asuint(instances.Load((ray_12.medium - 1u)*128+108)), asuint(instances.Load((ray_12.medium - 1u)*128+112)), asuint(instances.Load((ray_12.medium - 1u)*128+116)), asuint(instances.Load((ray_12.medium - 1u)*128+120)), asuint(instances.Load((ray_12.medium - 1u)*128+124)));
+    if (((inst_8.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_12, t_1, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_12, t_1, radiance_1);
     return _e21;
 }
 
@@ -1081,19 +1113,28 @@ PointLight load_PointLight(uint offset_6)
     return pointlight;
 }
 
-float3 offset_origin(float3 p_4, float3 n_3)
+float3 step_toward(float3 x_1, float3 s)
 {
-    FrameUniforms _e3 = frame;
-    GpuNode header_3 = ConstructGpuNode(asfloat(nodes.Load3(_e3.tlas_root*32+0)), asuint(nodes.Load(_e3.tlas_root*32+12)), asfloat(nodes.Load3(_e3.tlas_root*32+16)), asuint(nodes.Load(_e3.tlas_root*32+28)));
-    const float3 _e11 = node_frame_hi(header_3);
-    float3 a_5 = max(abs(p_4), max(abs(header_3.min_), abs(_e11)));
-    float m_1 = max(max(a_5.x, a_5.y), a_5.z);
-    return (p_4 + (n_3 * ((m_1 * (1.0 / 65536.0))).xxx));
+    uint3 bits_1 = asuint(x_1);
+    bool3 up_1 = ((sign(x_1) * sign(s)) > (0.0).xxx);
+    float3 stepped = asfloat((up_1 ? (bits_1 + (1u).xxx) : (bits_1 - (1u).xxx)));
+    float3 from_zero = ((s > (0.0).xxx) ? (1.1754944e-38).xxx : (-1.1754944e-38).xxx);
+    float3 moved = ((x_1 == (0.0).xxx) ? from_zero : stepped);
+    return (!((s == (0.0).xxx)) ? moved : x_1);
+}
+
+float3 offset_origin(float3 p_5, float3 n_3, float error)
+{
+    float d_3 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
+    float3 offset_10 = (n_3 * (d_3).xxx);
+    const float3 _e17 = step_toward((p_5 + offset_10), offset_10);
+    return _e17;
 }
 
 float shadow_query(float3 position, float3 normal, float3 dir, float dist)
 {
     float3 n_4 = (float3)0;
+    float tmax_4 = (float)0;
 
     n_4 = normal;
     float3 _e5 = n_4;
@@ -1101,11 +1142,25 @@ float shadow_query(float3 position, float3 normal, float3 dir, float dist)
         float3 _e9 = n_4;
         n_4 = -(_e9);
     }
-    float3 _e11 = n_4;
-    const float3 _e12 = offset_origin(position, _e11);
-    Ray ray_23 = ConstructRay(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    const Candidate _e23 = intersect_scene(ray_23, true);
-    return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
+    float3 a_6 = abs(position);
+    float _e13 = hit_error;
+    float error_2 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
+    float3 _e22 = n_4;
+    const float3 _e23 = offset_origin(position, _e22, error_2);
+    uint _e25 = F32_INF;
+    tmax_4 = asfloat(_e25);
+    uint _e29 = F32_INF;
+    if ((dist < asfloat(_e29))) {
+        float3 light = (position + (dir * (dist).xxx));
+        float dd_1 = dot(dir, dir);
+        float along_1 = (dot((light - _e23), dir) / dd_1);
+        float3 l_1 = (abs(position) + abs((dir * (dist).xxx)));
+        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
+    }
+    float _e59 = tmax_4;
+    Ray ray_23 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    const Candidate _e65 = intersect_scene(ray_23, true);
+    return ((_e65.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
 LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2) {
@@ -1198,9 +1253,9 @@ float3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_15, Hit hit_3
 
 float3 shade_direct(Ray ray_16, Candidate c_2)
 {
-    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
+    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
     const Hit _e6 = finish_hit(ray_16, c_2);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, (0.0).xxx);
+    const float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_16, _e6, (0.0).xxx);
     return _e11;
 }
 
@@ -1209,31 +1264,32 @@ void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_17, Hit hit_
     return;
 }
 
-float3 spawn_origin(Hit hit_5, float3 dir_1)
+float3 spawn_origin(Hit hit_5, float error_1, float3 dir_1)
 {
     float3 n_5 = (float3)0;
 
     n_5 = hit_5.geometric_normal;
-    float3 _e4 = n_5;
-    if ((dot(dir_1, _e4) < 0.0)) {
-        float3 _e8 = n_5;
-        n_5 = -(_e8);
+    float3 _e5 = n_5;
+    if ((dot(dir_1, _e5) < 0.0)) {
+        float3 _e9 = n_5;
+        n_5 = -(_e9);
     }
-    float3 _e11 = n_5;
-    const float3 _e12 = offset_origin(hit_5.position, _e11);
-    return _e12;
+    float3 _e12 = n_5;
+    const float3 _e13 = offset_origin(hit_5.position, _e12, error_1);
+    return _e13;
 }
 
-Frame ConstructFrame(Ray arg0, Hit arg1, uint arg2, float3 arg3, float3 arg4[1], float3 arg5[1], uint arg6, uint arg7) {
+Frame ConstructFrame(Ray arg0, Hit arg1, float arg2, uint arg3, float3 arg4, float3 arg5[1], float3 arg6[1], uint arg7, uint arg8) {
     Frame ret = (Frame)0;
     ret.ray = arg0;
     ret.hit = arg1;
-    ret.slot = arg2;
-    ret.sum = arg3;
-    ret.dirs = arg4;
-    ret.weights = arg5;
-    ret.count = arg6;
-    ret.next = arg7;
+    ret.error = arg2;
+    ret.slot = arg3;
+    ret.sum = arg4;
+    ret.dirs = arg5;
+    ret.weights = arg6;
+    ret.count = arg7;
+    ret.next = arg8;
     return ret;
 }
 
@@ -1262,14 +1318,15 @@ float3 trace(Ray camera_ray)
     if (!(HAS_SECONDARY_RAYS)) {
         const Candidate _e4 = intersect_scene(camera_ray, false);
         if ((_e4.slot == NO_HIT)) {
-            uint _e9 = F32_INF;
-            const float3 _e11 = miss(camera_ray);
-            const float3 _e12 = through_medium(camera_ray, asfloat(_e9), _e11);
-            return _e12;
+            hit_error = 0.0;
+            uint _e11 = F32_INF;
+            const float3 _e13 = miss(camera_ray);
+            const float3 _e14 = through_medium(camera_ray, asfloat(_e11), _e13);
+            return _e14;
         }
-        const float3 _e14 = shade_direct(camera_ray, _e4);
-        const float3 _e15 = through_medium(camera_ray, _e4.t, _e14);
-        return _e15;
+        const float3 _e16 = shade_direct(camera_ray, _e4);
+        const float3 _e17 = through_medium(camera_ray, _e4.t, _e16);
+        return _e17;
     }
     stack = ZeroValuearray4_Frame_();
     depth = 0u;
@@ -1280,34 +1337,36 @@ float3 trace(Ray camera_ray)
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        bool _e26 = have_value;
-        if (!(_e26)) {
-            Ray _e28 = ray_18;
-            const Candidate _e30 = intersect_scene(_e28, false);
-            if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_18;
-                uint _e36 = F32_INF;
+        bool _e28 = have_value;
+        if (!(_e28)) {
+            Ray _e30 = ray_18;
+            const Candidate _e32 = intersect_scene(_e30, false);
+            if ((_e32.slot == NO_HIT)) {
+                hit_error = 0.0;
                 Ray _e38 = ray_18;
-                const float3 _e39 = miss(_e38);
-                const float3 _e40 = through_medium(_e34, asfloat(_e36), _e39);
-                value = _e40;
+                uint _e40 = F32_INF;
+                Ray _e42 = ray_18;
+                const float3 _e43 = miss(_e42);
+                const float3 _e44 = through_medium(_e38, asfloat(_e40), _e43);
+                value = _e44;
                 have_value = true;
             } else {
-                GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(_e30.slot*128+0)), asfloat(instances.Load4(_e30.slot*128+16)), asfloat(instances.Load4(_e30.slot*128+32)), asfloat(instances.Load4(_e30.slot*128+48)), asfloat(instances.Load4(_e30.slot*128+64)), asfloat(instances.Load4(_e30.slot*128+80)), asuint(instances.Load(_e30.slot*128+96)), asuint(instances.Load(_e30.slot*128+100)), asuint(instances.Load(_e30.slot*128+104)), asuint(instances.Load(_e30.slot*128+108)), asuint(instances.Load(_e30.slot*128+112)), asuint(instances.Load(_e30.slot*128+116)), asuint(instances.Load(_e30.slot*128+120)), asuint(instances.Load(_e30.slot*128+124)));
-                Ray _e46 = ray_18;
-                const Hit _e47 = finish_hit(_e46, _e30);
+                GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e32.slot*128+0)), asfloat(instances.Load4(_e32.slot*128+16)), asfloat(instances.Load4(_e32.slot*128+32)), asfloat(instances.Load4(_e32.slot*128+48)), asfloat(instances.Load4(_e32.slot*128+64)), asfloat(instances.Load4(_e32.slot*128+80)), asuint(instances.Load(_e32.slot*128+96)), asuint(instances.Load(_e32.slot*128+100)), asuint(instances.Load(_e32.slot*128+104)), asuint(instances.Load(_e32.slot*128+108)), asuint(instances.Load(_e32.slot*128+112)), asuint(instances.Load(_e32.slot*128+116)), asuint(instances.Load(_e32.slot*128+120)), asuint(instances.Load(_e32.slot*128+124)));
+                Ray _e50 = ray_18;
+                const Hit _e51 = finish_hit(_e50, _e32);
+                float error_3 = hit_error;
                 pushed = false;
-                uint _e56 = ray_18.depth;
-                uint _e60 = depth;
-                if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
+                uint _e62 = ray_18.depth;
+                uint _e66 = depth;
+                if (((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_18;
-                    dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
-                    uint _e70 = spawn_count;
-                    uint n_8 = min(min(_e70, 1u), MAX_SPAWN);
+                    Ray _e74 = ray_18;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);
+                    uint _e76 = spawn_count;
+                    uint n_8 = min(min(_e76, 1u), MAX_SPAWN);
                     if ((n_8 > 0u)) {
-                        Ray _e77 = ray_18;
-                        f = ConstructFrame(_e77, _e47, _e30.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_8, 0u);
+                        Ray _e83 = ray_18;
+                        f = ConstructFrame(_e83, _e51, error_3, _e32.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_8, 0u);
                         i_3 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
                         bool loop_init_3 = true;
@@ -1315,85 +1374,88 @@ float3 trace(Ray camera_ray)
                             if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
                             loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                             if (!loop_init_3) {
-                                uint _e108 = i_3;
-                                i_3 = (_e108 + 1u);
+                                uint _e114 = i_3;
+                                i_3 = (_e114 + 1u);
                             }
                             loop_init_3 = false;
-                            uint _e88 = i_3;
-                            if ((_e88 >= n_8)) {
+                            uint _e94 = i_3;
+                            if ((_e94 >= n_8)) {
                                 break;
                             }
-                            uint _e91 = i_3;
-                            uint _e95 = i_3;
-                            float3 _e98 = spawn_dirs[min(uint(_e95), 0u)];
-                            f.dirs[min(uint(min(_e91, 0u)), 0u)] = _e98;
-                            uint _e100 = i_3;
-                            uint _e104 = i_3;
-                            float3 _e107 = spawn_weights[min(uint(_e104), 0u)];
-                            f.weights[min(uint(min(_e100, 0u)), 0u)] = _e107;
+                            uint _e97 = i_3;
+                            uint _e101 = i_3;
+                            float3 _e104 = spawn_dirs[min(uint(_e101), 0u)];
+                            f.dirs[min(uint(min(_e97, 0u)), 0u)] = _e104;
+                            uint _e106 = i_3;
+                            uint _e110 = i_3;
+                            float3 _e113 = spawn_weights[min(uint(_e110), 0u)];
+                            f.weights[min(uint(min(_e106, 0u)), 0u)] = _e113;
                         }
-                        uint _e111 = depth;
-                        Frame _e115 = f;
-                        stack[min(uint(min(_e111, 3u)), 3u)] = _e115;
-                        uint _e116 = depth;
-                        depth = (_e116 + 1u);
+                        uint _e117 = depth;
+                        Frame _e121 = f;
+                        stack[min(uint(min(_e117, 3u)), 3u)] = _e121;
+                        uint _e122 = depth;
+                        depth = (_e122 + 1u);
                         pushed = true;
                     }
                 }
-                bool _e120 = pushed;
-                if (!(_e120)) {
-                    Ray _e124 = ray_18;
-                    const float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, (0.0).xxx);
-                    Ray _e128 = ray_18;
-                    const float3 _e130 = through_medium(_e128, _e30.t, _e127);
-                    value = _e130;
+                bool _e126 = pushed;
+                if (!(_e126)) {
+                    Ray _e130 = ray_18;
+                    const float3 _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, (0.0).xxx);
+                    Ray _e134 = ray_18;
+                    const float3 _e136 = through_medium(_e134, _e32.t, _e133);
+                    value = _e136;
                     have_value = true;
                 }
             }
         }
-        bool _e132 = have_value;
-        if (_e132) {
-            uint _e133 = depth;
-            if ((_e133 == 0u)) {
-                float3 _e136 = value;
-                return _e136;
+        bool _e138 = have_value;
+        if (_e138) {
+            uint _e139 = depth;
+            if ((_e139 == 0u)) {
+                float3 _e142 = value;
+                return _e142;
             }
-            uint _e137 = depth;
-            uint top = (_e137 - 1u);
-            uint _e144 = stack[min(uint(min(top, 3u)), 3u)].next;
-            uint child_2 = (_e144 - 1u);
-            float3 _e151 = stack[min(uint(min(top, 3u)), 3u)].sum;
-            float3 _e159 = stack[min(uint(min(top, 3u)), 3u)].weights[min(uint(min(child_2, 0u)), 0u)];
-            float3 _e160 = value;
-            stack[min(uint(min(top, 3u)), 3u)].sum = (_e151 + (_e159 * _e160));
+            uint _e143 = depth;
+            uint top = (_e143 - 1u);
+            uint _e150 = stack[min(uint(min(top, 3u)), 3u)].next;
+            uint child_2 = (_e150 - 1u);
+            float3 _e157 = stack[min(uint(min(top, 3u)), 3u)].sum;
+            float3 _e165 = stack[min(uint(min(top, 3u)), 3u)].weights[min(uint(min(child_2, 0u)), 0u)];
+            float3 _e166 = value;
+            stack[min(uint(min(top, 3u)), 3u)].sum = (_e157 + (_e165 * _e166));
             have_value = false;
         }
-        uint _e164 = depth;
-        uint top_1 = (_e164 - 1u);
-        uint _e171 = stack[min(uint(min(top_1, 3u)), 3u)].next;
-        uint _e176 = stack[min(uint(min(top_1, 3u)), 3u)].count;
-        if ((_e171 < _e176)) {
+        uint _e170 = depth;
+        uint top_1 = (_e170 - 1u);
+        uint _e177 = stack[min(uint(min(top_1, 3u)), 3u)].next;
+        uint _e182 = stack[min(uint(min(top_1, 3u)), 3u)].count;
+        if ((_e177 < _e182)) {
             uint i_4 = stack[min(uint(min(top_1, 3u)), 3u)].next;
             stack[min(uint(min(top_1, 3u)), 3u)].next = (i_4 + 1u);
             Ray parent = stack[min(uint(min(top_1, 3u)), 3u)].ray;
             Hit hit_8 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
             float3 dir_3 = stack[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_4, 0u)), 0u)];
             medium = parent.medium;
-            const float3 _e209 = spawn_origin(hit_8, dir_3);
-            uint _e212 = F32_INF;
-            uint _e218 = medium;
-            ray_18 = ConstructRay(_e209, 0.0, dir_3, asfloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            float _e219 = stack[min(uint(min(top_1, 3u)), 3u)].error;
+            const float3 _e220 = spawn_origin(hit_8, _e219, dir_3);
+            uint _e223 = F32_INF;
+            uint _e229 = medium;
+            ray_18 = ConstructRay(_e220, 0.0, dir_3, asfloat(_e223), (parent.depth + 1u), RAY_SECONDARY, _e229);
         } else {
-            uint _e224 = stack[min(uint(min(top_1, 3u)), 3u)].slot;
-            GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e224*128+0)), asfloat(instances.Load4(_e224*128+16)), asfloat(instances.Load4(_e224*128+32)), asfloat(instances.Load4(_e224*128+48)), asfloat(instances.Load4(_e224*128+64)), asfloat(instances.Load4(_e224*128+80)), asuint(instances.Load(_e224*128+96)), asuint(instances.Load(_e224*128+100)), asuint(instances.Load(_e224*128+104)), asuint(instances.Load(_e224*128+108)), asuint(instances.Load(_e224*128+112)), asuint(instances.Load(_e224*128+116)), asuint(instances.Load(_e224*128+120)), asuint(instances.Load(_e224*128+124)));
-            Ray _e234 = stack[min(uint(min(top_1, 3u)), 3u)].ray;
-            Hit _e239 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
-            float3 _e244 = stack[min(uint(min(top_1, 3u)), 3u)].sum;
-            const float3 _e245 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e234, _e239, _e244);
-            Ray _e250 = stack[min(uint(min(top_1, 3u)), 3u)].ray;
-            float _e256 = stack[min(uint(min(top_1, 3u)), 3u)].hit.t;
-            const float3 _e257 = through_medium(_e250, _e256, _e245);
-            value = _e257;
+            uint _e235 = stack[min(uint(min(top_1, 3u)), 3u)].slot;
+            GpuInstance inst_11 = ConstructGpuInstance(asfloat(instances.Load4(_e235*128+0)), asfloat(instances.Load4(_e235*128+16)), asfloat(instances.Load4(_e235*128+32)), asfloat(instances.Load4(_e235*128+48)), asfloat(instances.Load4(_e235*128+64)), asfloat(instances.Load4(_e235*128+80)), asuint(instances.Load(_e235*128+96)), asuint(instances.Load(_e235*128+100)), asuint(instances.Load(_e235*128+104)), asuint(instances.Load(_e235*128+108)), asuint(instances.Load(_e235*128+112)), asuint(instances.Load(_e235*128+116)), asuint(instances.Load(_e235*128+120)), asuint(instances.Load(_e235*128+124)));
+            float _e243 = stack[min(uint(min(top_1, 3u)), 3u)].error;
+            hit_error = _e243;
+            Ray _e251 = stack[min(uint(min(top_1, 3u)), 3u)].ray;
+            Hit _e256 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
+            float3 _e261 = stack[min(uint(min(top_1, 3u)), 3u)].sum;
+            const float3 _e262 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e251, _e256, _e261);
+            Ray _e267 = stack[min(uint(min(top_1, 3u)), 3u)].ray;
+            float _e273 = stack[min(uint(min(top_1, 3u)), 3u)].hit.t;
+            const float3 _e274 = through_medium(_e267, _e273, _e262);
+            value = _e274;
             depth = top_1;
             have_value = true;
         }
@@ -1401,9 +1463,9 @@ float3 trace(Ray camera_ray)
     return ZeroValuefloat3();
 }
 
-bool3 is_finite_vec3f(float3 x_1)
+bool3 is_finite_vec3f(float3 x_2)
 {
-    return ((asuint(x_1) & (2147483647u).xxx) < (2139095040u).xxx);
+    return ((asuint(x_2) & (2147483647u).xxx) < (2139095040u).xxx);
 }
 
 float3 finite_or_zero(float3 c_3)
@@ -1416,7 +1478,7 @@ void render_pixel(uint2 pixel_3)
 {
     float3 sum = (float3)0;
     uint bad = (uint)0;
-    uint s = (uint)0;
+    uint s_1 = (uint)0;
     Ray ray_19 = (Ray)0;
 
     FrameUniforms frame_5 = frame;
@@ -1424,22 +1486,22 @@ void render_pixel(uint2 pixel_3)
     sum = (0.0).xxx;
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
-    s = 0u;
+    s_1 = 0u;
     uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
     bool loop_init_4 = true;
     while(true) {
         if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e46 = s;
-            s = (_e46 + 1u);
+            uint _e46 = s_1;
+            s_1 = (_e46 + 1u);
         }
         loop_init_4 = false;
-        uint _e13 = s;
+        uint _e13 = s_1;
         if ((_e13 >= end_1)) {
             break;
         }
-        uint _e18 = s;
+        uint _e18 = s_1;
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);

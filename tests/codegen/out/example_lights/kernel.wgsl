@@ -161,6 +161,7 @@ struct SpotLight {
 struct Frame {
     ray: Ray,
     hit: Hit,
+    error: f32,
     slot: u32,
     sum: vec3<f32>,
     dirs: array<vec3<f32>, 1>,
@@ -184,9 +185,14 @@ const BLAS_STACK: u32 = 64u;
 const TLAS_STACK: u32 = 6u;
 const TAU: f32 = 6.2831855f;
 const INV_PI: f32 = 0.31830987f;
+const POINT_ERROR: f32 = 0.0000019073486f;
+const GAMMA_1_: f32 = 0.00000005960465f;
+const GAMMA_6_: f32 = 0.0000003576281f;
+const GAMMA_4_: f32 = 0.00000023841864f;
 const HAS_SECONDARY_RAYS: bool = false;
 const HAS_BACKGROUND: bool = true;
 const FLAG_MEDIUM: u32 = 4u;
+const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
 const FLAG_SECONDARY: u32 = 2u;
 const MAX_DEPTH: u32 = 4u;
@@ -209,6 +215,7 @@ var<storage> nodes: array<GpuNode>;
 @group(0) @binding(4) 
 var<storage> triangles: array<vec4<f32>>;
 var<private> traversal_stack: array<u32, 70>;
+var<private> hit_error: f32;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
 var<private> ray_count: u32;
@@ -294,9 +301,9 @@ fn samples_per_pixel_query() -> u32 {
 
 fn rand_next() -> f32 {
     let _e1 = rng_state;
-    let s_2 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_2;
-    let word_1 = (((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u);
+    let s_3 = ((_e1 * 747796405u) + 2891336453u);
+    rng_state = s_3;
+    let word_1 = (((s_3 >> (((s_3 >> 28u) + 4u) & 31u)) ^ s_3) * 277803737u);
     let r_3 = ((word_1 >> 22u) ^ word_1);
     return (f32((r_3 >> 8u)) * (1f / 16777216f));
 }
@@ -358,8 +365,8 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_3 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_3 * tiny), (abs(d) < tiny));
+    let s_4 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_4 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
@@ -471,7 +478,7 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
     let _e9 = prepare_triangle_ray(ray_4);
     let base_1 = inst_2.blas_root;
     let header_1 = nodes[base_1];
-    let origin_3 = header_1.min;
+    let origin_4 = header_1.min;
     let scale_2 = header_1.max;
     sp_1 = 0u;
     child = header_1.a;
@@ -513,7 +520,7 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
             let _e62 = child;
             let n_8 = nodes[(base_1 + _e62)];
             let _e68 = best.t;
-            let _e69 = children_entry(n_8, origin_3, scale_2, ray_4, _e8, _e68);
+            let _e69 = children_entry(n_8, origin_4, scale_2, ray_4, _e8, _e68);
             let tl = _e69.x;
             let tr = _e69.y;
             let _e73 = F32_INF;
@@ -681,23 +688,23 @@ fn dispatch_intersection(type_id_1: u32, offset_4: u32, ray_7: Ray) -> Intersect
 fn intersect_object(slot_2: u32, ray_8: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
-    let inst_5 = instances[slot_2];
-    let _e7 = to_object(inst_5, ray_8);
+    let inst_6 = instances[slot_2];
+    let _e7 = to_object(inst_6, ray_8);
     r_2 = _e7;
     r_2.tmax = best_1.t;
-    if (inst_5.geometry_type == MESH_GEOMETRY) {
+    if (inst_6.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_5, slot_2, ray_8, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_6, slot_2, ray_8, _e14, best_1, shadow_1);
         return _e15;
     }
     let _e18 = r_2;
-    let _e19 = dispatch_intersection(inst_5.geometry_type, inst_5.geometry_offset, _e18);
+    let _e19 = dispatch_intersection(inst_6.geometry_type, inst_6.geometry_offset, _e18);
     let _e22 = r_2.tmin;
     let _e26 = r_2.tmax;
     let _e31 = F32_INF;
     if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < bitcast<f32>(_e31))) {
         let c_6 = Candidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        let _e40 = accept(inst_5, ray_8, c_6);
+        let _e40 = accept(inst_6, ray_8, c_6);
         if _e40 {
             return c_6;
         }
@@ -705,11 +712,16 @@ fn intersect_object(slot_2: u32, ray_8: Ray, best_1: Candidate, shadow_1: bool) 
     return best_1;
 }
 
+fn point_error(origin_3: vec3<f32>, along: vec3<f32>) -> f32 {
+    let a_6 = (abs(origin_3) + abs(along));
+    return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
+}
+
 fn load_triangle(slot_3: u32) -> Triangle {
-    let v0_ = triangles[(slot_3 * 3u)];
+    let v0_1 = triangles[(slot_3 * 3u)];
     let v1_ = triangles[((slot_3 * 3u) + 1u)];
     let v2_ = triangles[((slot_3 * 3u) + 2u)];
-    return Triangle(v0_.xyz, v1_.xyz, v2_.xyz);
+    return Triangle(v0_1.xyz, v1_.xyz, v2_.xyz);
 }
 
 fn point_to_world(inst_3: GpuInstance, p_2: vec3<f32>) -> vec3<f32> {
@@ -717,17 +729,29 @@ fn point_to_world(inst_3: GpuInstance, p_2: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(dot(inst_3.object_to_world_0_, q_2), dot(inst_3.object_to_world_1_, q_2), dot(inst_3.object_to_world_2_, q_2));
 }
 
+fn mesh_error(inst_4: GpuInstance, v0_: vec3<f32>, db1_: vec3<f32>, db2_: vec3<f32>, p_3: vec3<f32>) -> f32 {
+    let obj = ((vec3(GAMMA_1_) * abs(v0_)) + (vec3(GAMMA_6_) * (abs(db1_) + abs(db2_))));
+    let q_3 = vec4<f32>(abs(p_3), 1f);
+    let r0_ = abs(inst_4.object_to_world_0_);
+    let r1_ = abs(inst_4.object_to_world_1_);
+    let r2_1 = abs(inst_4.object_to_world_2_);
+    let rounding = (vec3(GAMMA_4_) * vec3<f32>(dot(r0_, q_3), dot(r1_, q_3), dot(r2_1, q_3)));
+    let carried = (vec3((1f + GAMMA_4_)) * vec3<f32>(dot(r0_.xyz, obj), dot(r1_.xyz, obj), dot(r2_1.xyz, obj)));
+    let e = (rounding + carried);
+    return max(max(e.x, e.y), e.z);
+}
+
 fn decode_octahedral(bits: u32) -> vec3<f32> {
     var n_2: vec3<f32>;
 
-    let e = unpack2x16snorm(bits);
-    n_2 = vec3<f32>(e.x, e.y, ((1f - abs(e.x)) - abs(e.y)));
+    let e_1 = unpack2x16snorm(bits);
+    n_2 = vec3<f32>(e_1.x, e_1.y, ((1f - abs(e_1.x)) - abs(e_1.y)));
     let _e14 = n_2.z;
     if (_e14 < 0f) {
         let _e21 = n_2;
-        let s_4 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_5 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n_2;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_4);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_5);
         let _e37 = n_2.z;
         n_2 = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -736,8 +760,8 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     return _e40;
 }
 
-fn normal_to_world(inst_4: GpuInstance, n_3: vec3<f32>) -> vec3<f32> {
-    let w_1 = (((inst_4.world_to_object_0_.xyz * vec3(n_3.x)) + (inst_4.world_to_object_1_.xyz * vec3(n_3.y))) + (inst_4.world_to_object_2_.xyz * vec3(n_3.z)));
+fn normal_to_world(inst_5: GpuInstance, n_3: vec3<f32>) -> vec3<f32> {
+    let w_1 = (((inst_5.world_to_object_0_.xyz * vec3(n_3.x)) + (inst_5.world_to_object_1_.xyz * vec3(n_3.y))) + (inst_5.world_to_object_2_.xyz * vec3(n_3.z)));
     let _e19 = normalize_vec3f(w_1);
     return _e19;
 }
@@ -747,49 +771,56 @@ fn finish_hit(ray_9: Ray, c_1: Candidate) -> Hit {
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
-    let inst_6 = instances[c_1.slot];
-    hit = Hit((ray_9.origin + (ray_9.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_6.object, c_1.primitive);
+    let inst_7 = instances[c_1.slot];
+    let _e11 = point_error(ray_9.origin, (ray_9.dir * vec3(c_1.t)));
+    hit_error = _e11;
+    hit = Hit((ray_9.origin + (ray_9.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
-    if (inst_6.geometry_type == MESH_GEOMETRY) {
-        let _e35 = load_triangle(c_1.primitive);
+    if (inst_7.geometry_type == MESH_GEOMETRY) {
+        let _e42 = load_triangle(c_1.primitive);
         let b_8 = c_1.uv;
         let w_2 = ((1f - b_8.x) - b_8.y);
-        let _e56 = point_to_world(inst_6, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_8.x))) + (_e35.v2_ * vec3(b_8.y))));
-        hit.position = _e56;
-        n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
+        let e1_ = (_e42.v1_ - _e42.v0_);
+        let e2_ = (_e42.v2_ - _e42.v0_);
+        let p_6 = (_e42.v0_ + ((e1_ * vec3(b_8.x)) + (e2_ * vec3(b_8.y))));
+        let _e65 = point_to_world(inst_7, p_6);
+        hit.position = _e65;
+        let _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_8.x)), (e2_ * vec3(b_8.y)), p_6);
+        hit_error = _e73;
+        n_geo = cross(e1_, e2_);
         let a0_ = attributes[(c_1.primitive * 2u)];
         let a1_ = attributes[((c_1.primitive * 2u) + 1u)];
-        let _e79 = decode_octahedral(a0_.x);
-        let _e83 = decode_octahedral(a0_.y);
-        let _e89 = decode_octahedral(a0_.z);
-        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_8.x))) + (_e89 * vec3(b_8.y)));
-        let _e94 = n_shade;
-        let _e95 = n_shade;
-        if (dot(_e94, _e95) < 0.000000000001f) {
-            let _e99 = n_geo;
-            n_shade = _e99;
+        let _e91 = decode_octahedral(a0_.x);
+        let _e95 = decode_octahedral(a0_.y);
+        let _e101 = decode_octahedral(a0_.z);
+        n_shade = (((_e91 * vec3(w_2)) + (_e95 * vec3(b_8.x))) + (_e101 * vec3(b_8.y)));
+        let _e106 = n_shade;
+        let _e107 = n_shade;
+        if (dot(_e106, _e107) < 0.000000000001f) {
+            let _e111 = n_geo;
+            n_shade = _e111;
         }
         let uv0_ = unpack2x16float(a0_.w);
         let uv1_ = unpack2x16float(a1_.x);
         let uv2_ = unpack2x16float(a1_.y);
         hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_8.x))) + (uv2_ * vec2(b_8.y)));
-        let _e123 = triangles[(c_1.primitive * 3u)];
-        hit.primitive = bitcast<u32>(_e123.w);
+        let _e135 = triangles[(c_1.primitive * 3u)];
+        hit.primitive = bitcast<u32>(_e135.w);
     }
-    let _e127 = n_geo;
-    let _e128 = normal_to_world(inst_6, _e127);
-    hit.geometric_normal = _e128;
-    let _e130 = n_shade;
-    let _e131 = normal_to_world(inst_6, _e130);
-    hit.normal = _e131;
-    let _e135 = hit.geometric_normal;
-    hit.front_face = (dot(ray_9.dir, _e135) < 0f);
-    let _e139 = hit;
-    return _e139;
+    let _e139 = n_geo;
+    let _e140 = normal_to_world(inst_7, _e139);
+    hit.geometric_normal = _e140;
+    let _e142 = n_shade;
+    let _e143 = normal_to_world(inst_7, _e142);
+    hit.normal = _e143;
+    let _e147 = hit.geometric_normal;
+    hit.front_face = (dot(ray_9.dir, _e147) < 0f);
+    let _e151 = hit;
+    return _e151;
 }
 
-fn medium_at(p_3: vec3<f32>, exclude: u32) -> u32 {
+fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     var inside: u32;
     var nearest: f32;
     var i: u32;
@@ -800,7 +831,7 @@ fn medium_at(p_3: vec3<f32>, exclude: u32) -> u32 {
     let frame_1 = frame;
     let _e12 = normalize_vec3f(vec3<f32>(0.5773f, 0.5774f, 0.5775f));
     let _e14 = F32_INF;
-    let probe = Ray(p_3, 0f, _e12, bitcast<f32>(_e14), 0u, 0u, 0u);
+    let probe = Ray(p_4, 0f, _e12, bitcast<f32>(_e14), 0u, 0u, 0u);
     inside = 0u;
     let _e23 = F32_INF;
     nearest = bitcast<f32>(_e23);
@@ -859,11 +890,11 @@ fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
     let _e16 = safe_inverse(ray_10.dir);
     let base_2 = frame_2.tlas_root;
     let header_2 = nodes[base_2];
-    let origin_4 = header_2.min;
+    let origin_5 = header_2.min;
     let scale_3 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_4, _e23, ray_10.origin, _e16, ray_10.tmin, _e27);
+    let _e28 = slab(origin_5, _e23, ray_10.origin, _e16, ray_10.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
@@ -890,7 +921,7 @@ fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
             let _e63 = child_1;
             let n_9 = nodes[(base_2 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_9, origin_4, scale_3, ray_10, _e16, _e69);
+            let _e70 = children_entry(n_9, origin_5, scale_3, ray_10, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
@@ -974,11 +1005,11 @@ fn through_medium(ray_15: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if (ray_15.medium == 0u) {
         return radiance_1;
     }
-    let inst_7 = instances[(ray_15.medium - 1u)];
-    if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
+    let inst_8 = instances[(ray_15.medium - 1u)];
+    if ((inst_8.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_15, t_3, radiance_1);
+    let _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_15, t_3, radiance_1);
     return _e21;
 }
 
@@ -1010,17 +1041,25 @@ fn load_DirectionalLight(offset_9: u32) -> DirectionalLight {
     return DirectionalLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43));
 }
 
-fn offset_origin(p_4: vec3<f32>, n_4: vec3<f32>) -> vec3<f32> {
-    let _e3 = frame;
-    let header_3 = nodes[_e3.tlas_root];
-    let _e11 = node_frame_hi(header_3);
-    let a_6 = max(abs(p_4), max(abs(header_3.min), abs(_e11)));
-    let m_1 = max(max(a_6.x, a_6.y), a_6.z);
-    return (p_4 + (n_4 * vec3((m_1 * (1f / 65536f)))));
+fn step_toward(x_1: vec3<f32>, s_1: vec3<f32>) -> vec3<f32> {
+    let bits_1 = bitcast<vec3<u32>>(x_1);
+    let up_1 = ((sign(x_1) * sign(s_1)) > vec3(0f));
+    let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
+    let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s_1 > vec3(0f)));
+    let moved = select(stepped, from_zero, (x_1 == vec3(0f)));
+    return select(x_1, moved, !((s_1 == vec3(0f))));
+}
+
+fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
+    let d_3 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    let offset_16 = (n_4 * vec3(d_3));
+    let _e17 = step_toward((p_5 + offset_16), offset_16);
+    return _e17;
 }
 
 fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
     var n_5: vec3<f32>;
+    var tmax_4: f32;
 
     n_5 = normal;
     let _e5 = n_5;
@@ -1028,11 +1067,25 @@ fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f3
         let _e9 = n_5;
         n_5 = -(_e9);
     }
-    let _e11 = n_5;
-    let _e12 = offset_origin(position, _e11);
-    let ray_23 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
-    let _e23 = intersect_scene(ray_23, true);
-    return select(1f, 0f, (_e23.slot != NO_HIT));
+    let a_7 = abs(position);
+    let _e13 = hit_error;
+    let error_2 = max(_e13, (GAMMA_4_ * max(max(a_7.x, a_7.y), a_7.z)));
+    let _e22 = n_5;
+    let _e23 = offset_origin(position, _e22, error_2);
+    let _e25 = F32_INF;
+    tmax_4 = bitcast<f32>(_e25);
+    let _e29 = F32_INF;
+    if (dist < bitcast<f32>(_e29)) {
+        let light = (position + (dir * vec3(dist)));
+        let dd_1 = dot(dir, dir);
+        let along_1 = (dot((light - _e23), dir) / dd_1);
+        let l_5 = (abs(position) + abs((dir * vec3(dist))));
+        tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_5.x, l_5.y), l_5.z)) / sqrt(dd_1)));
+    }
+    let _e59 = tmax_4;
+    let ray_23 = Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
+    let _e65 = intersect_scene(ray_23, true);
+    return select(1f, 0f, (_e65.slot != NO_HIT));
 }
 
 fn directional_light(l: DirectionalLight, position_1: vec3<f32>, normal_1: vec3<f32>) -> LightSample {
@@ -1091,21 +1144,21 @@ fn load_SphereLight(offset_11: u32) -> SphereLight {
 
 fn orthonormal_basis(n_6: vec3<f32>) -> mat3x3<f32> {
     let sign_1 = select(1f, -1f, ((bitcast<u32>(n_6.z) & 2147483648u) != 0u));
-    let a_7 = (-1f / (sign_1 + n_6.z));
-    let b_9 = ((n_6.x * n_6.y) * a_7);
+    let a_8 = (-1f / (sign_1 + n_6.z));
+    let b_9 = ((n_6.x * n_6.y) * a_8);
     let _e16 = (sign_1 * n_6.x);
-    return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_6.x) * a_7)), (sign_1 * b_9), -(_e16)), vec3<f32>(b_9, (sign_1 + ((n_6.y * n_6.y) * a_7)), -(n_6.y)), n_6);
+    return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_6.x) * a_8)), (sign_1 * b_9), -(_e16)), vec3<f32>(b_9, (sign_1 + ((n_6.y * n_6.y) * a_8)), -(n_6.y)), n_6);
 }
 
 fn sphere_light(l_2: SphereLight, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
     let to_center = (l_2.position - position_3);
     let d2_ = dot(to_center, to_center);
-    let r2_1 = max((l_2.radius * l_2.radius), 0.00000000000000000001f);
-    if (d2_ <= r2_1) {
+    let r2_2 = max((l_2.radius * l_2.radius), 0.00000000000000000001f);
+    if (d2_ <= r2_2) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f));
     }
     let w_3 = (to_center * vec3(inverseSqrt(d2_)));
-    let s2_ = (r2_1 / d2_);
+    let s2_ = (r2_2 / d2_);
     let cos_max = sqrt((1f - s2_));
     let one_minus_cos_max = (s2_ / (1f + cos_max));
     let _e30 = rand2_next();
@@ -1114,9 +1167,9 @@ fn sphere_light(l_2: SphereLight, position_3: vec3<f32>, normal_3: vec3<f32>) ->
     let phi = (TAU * _e30.y);
     let _e44 = orthonormal_basis(w_3);
     let _e51 = normalize_vec3f((_e44 * vec3<f32>((cos(phi) * sin_t), (sin(phi) * sin_t), cos_t)));
-    let along = dot(to_center, _e51);
-    let dist_2 = max((along - sqrt(max((r2_1 - (d2_ - (along * along))), 0f))), 0f);
-    let weight = (((l_2.intensity * 2f) * one_minus_cos_max) / r2_1);
+    let along_2 = dot(to_center, _e51);
+    let dist_2 = max((along_2 - sqrt(max((r2_2 - (d2_ - (along_2 * along_2))), 0f))), 0f);
+    let weight = (((l_2.intensity * 2f) * one_minus_cos_max) / r2_2);
     let _e67 = shadow_query(position_3, normal_3, _e51, dist_2);
     return LightSample(_e51, dist_2, ((l_2.color * vec3(weight)) * vec3(_e67)));
 }
@@ -1236,9 +1289,9 @@ fn dispatch_closest_hit(type_id_5: u32, offset_14: u32, ray_18: Ray, hit_3: Hit,
 }
 
 fn shade_direct(ray_19: Ray, c_2: Candidate) -> vec3<f32> {
-    let inst_8 = instances[c_2.slot];
+    let inst_9 = instances[c_2.slot];
     let _e6 = finish_hit(ray_19, c_2);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, vec3(0f));
+    let _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_19, _e6, vec3(0f));
     return _e11;
 }
 
@@ -1246,18 +1299,18 @@ fn dispatch_secondary_rays(type_id_6: u32, offset_15: u32, ray_20: Ray, hit_4: H
     return;
 }
 
-fn spawn_origin(hit_5: Hit, dir_1: vec3<f32>) -> vec3<f32> {
+fn spawn_origin(hit_5: Hit, error_1: f32, dir_1: vec3<f32>) -> vec3<f32> {
     var n_7: vec3<f32>;
 
     n_7 = hit_5.geometric_normal;
-    let _e4 = n_7;
-    if (dot(dir_1, _e4) < 0f) {
-        let _e8 = n_7;
-        n_7 = -(_e8);
+    let _e5 = n_7;
+    if (dot(dir_1, _e5) < 0f) {
+        let _e9 = n_7;
+        n_7 = -(_e9);
     }
-    let _e11 = n_7;
-    let _e12 = offset_origin(hit_5.position, _e11);
-    return _e12;
+    let _e12 = n_7;
+    let _e13 = offset_origin(hit_5.position, _e12, error_1);
+    return _e13;
 }
 
 fn trace(camera_ray: Ray) -> vec3<f32> {
@@ -1274,14 +1327,15 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     if !(HAS_SECONDARY_RAYS) {
         let _e4 = intersect_scene(camera_ray, false);
         if (_e4.slot == NO_HIT) {
-            let _e9 = F32_INF;
-            let _e11 = miss(camera_ray);
-            let _e12 = through_medium(camera_ray, bitcast<f32>(_e9), _e11);
-            return _e12;
+            hit_error = 0f;
+            let _e11 = F32_INF;
+            let _e13 = miss(camera_ray);
+            let _e14 = through_medium(camera_ray, bitcast<f32>(_e11), _e13);
+            return _e14;
         }
-        let _e14 = shade_direct(camera_ray, _e4);
-        let _e15 = through_medium(camera_ray, _e4.t, _e14);
-        return _e15;
+        let _e16 = shade_direct(camera_ray, _e4);
+        let _e17 = through_medium(camera_ray, _e4.t, _e16);
+        return _e17;
     }
     stack = array<Frame, 4>();
     depth = 0u;
@@ -1289,115 +1343,120 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     value = vec3(0f);
     have_value = false;
     loop {
-        let _e26 = have_value;
-        if !(_e26) {
-            let _e28 = ray_21;
-            let _e30 = intersect_scene(_e28, false);
-            if (_e30.slot == NO_HIT) {
-                let _e34 = ray_21;
-                let _e36 = F32_INF;
+        let _e28 = have_value;
+        if !(_e28) {
+            let _e30 = ray_21;
+            let _e32 = intersect_scene(_e30, false);
+            if (_e32.slot == NO_HIT) {
+                hit_error = 0f;
                 let _e38 = ray_21;
-                let _e39 = miss(_e38);
-                let _e40 = through_medium(_e34, bitcast<f32>(_e36), _e39);
-                value = _e40;
+                let _e40 = F32_INF;
+                let _e42 = ray_21;
+                let _e43 = miss(_e42);
+                let _e44 = through_medium(_e38, bitcast<f32>(_e40), _e43);
+                value = _e44;
                 have_value = true;
             } else {
-                let inst_9 = instances[_e30.slot];
-                let _e46 = ray_21;
-                let _e47 = finish_hit(_e46, _e30);
+                let inst_10 = instances[_e32.slot];
+                let _e50 = ray_21;
+                let _e51 = finish_hit(_e50, _e32);
+                let error_3 = hit_error;
                 pushed = false;
-                let _e56 = ray_21.depth;
-                let _e60 = depth;
-                if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
+                let _e62 = ray_21.depth;
+                let _e66 = depth;
+                if ((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    let _e68 = ray_21;
-                    dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
-                    let _e70 = spawn_count;
-                    let n_10 = min(min(_e70, 1u), MAX_SPAWN);
+                    let _e74 = ray_21;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);
+                    let _e76 = spawn_count;
+                    let n_10 = min(min(_e76, 1u), MAX_SPAWN);
                     if (n_10 > 0u) {
-                        let _e77 = ray_21;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_10, 0u);
+                        let _e83 = ray_21;
+                        f = Frame(_e83, _e51, error_3, _e32.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_10, 0u);
                         i_3 = 0u;
                         loop {
-                            let _e88 = i_3;
-                            if (_e88 >= n_10) {
+                            let _e94 = i_3;
+                            if (_e94 >= n_10) {
                                 break;
                             }
-                            let _e91 = i_3;
-                            let _e95 = i_3;
-                            let _e98 = spawn_dirs[_e95];
-                            f.dirs[min(_e91, 0u)] = _e98;
-                            let _e100 = i_3;
-                            let _e104 = i_3;
-                            let _e107 = spawn_weights[_e104];
-                            f.weights[min(_e100, 0u)] = _e107;
+                            let _e97 = i_3;
+                            let _e101 = i_3;
+                            let _e104 = spawn_dirs[_e101];
+                            f.dirs[min(_e97, 0u)] = _e104;
+                            let _e106 = i_3;
+                            let _e110 = i_3;
+                            let _e113 = spawn_weights[_e110];
+                            f.weights[min(_e106, 0u)] = _e113;
                             continuing {
-                                let _e108 = i_3;
-                                i_3 = (_e108 + 1u);
+                                let _e114 = i_3;
+                                i_3 = (_e114 + 1u);
                             }
                         }
-                        let _e111 = depth;
-                        let _e115 = f;
-                        stack[min(_e111, 3u)] = _e115;
-                        let _e116 = depth;
-                        depth = (_e116 + 1u);
+                        let _e117 = depth;
+                        let _e121 = f;
+                        stack[min(_e117, 3u)] = _e121;
+                        let _e122 = depth;
+                        depth = (_e122 + 1u);
                         pushed = true;
                     }
                 }
-                let _e120 = pushed;
-                if !(_e120) {
-                    let _e124 = ray_21;
-                    let _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0f));
-                    let _e128 = ray_21;
-                    let _e130 = through_medium(_e128, _e30.t, _e127);
-                    value = _e130;
+                let _e126 = pushed;
+                if !(_e126) {
+                    let _e130 = ray_21;
+                    let _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, vec3(0f));
+                    let _e134 = ray_21;
+                    let _e136 = through_medium(_e134, _e32.t, _e133);
+                    value = _e136;
                     have_value = true;
                 }
             }
         }
-        let _e132 = have_value;
-        if _e132 {
-            let _e133 = depth;
-            if (_e133 == 0u) {
-                let _e136 = value;
-                return _e136;
+        let _e138 = have_value;
+        if _e138 {
+            let _e139 = depth;
+            if (_e139 == 0u) {
+                let _e142 = value;
+                return _e142;
             }
-            let _e137 = depth;
-            let top = (_e137 - 1u);
-            let _e144 = stack[min(top, 3u)].next;
-            let child_2 = (_e144 - 1u);
-            let _e151 = stack[min(top, 3u)].sum;
-            let _e159 = stack[min(top, 3u)].weights[min(child_2, 0u)];
-            let _e160 = value;
-            stack[min(top, 3u)].sum = (_e151 + (_e159 * _e160));
+            let _e143 = depth;
+            let top = (_e143 - 1u);
+            let _e150 = stack[min(top, 3u)].next;
+            let child_2 = (_e150 - 1u);
+            let _e157 = stack[min(top, 3u)].sum;
+            let _e165 = stack[min(top, 3u)].weights[min(child_2, 0u)];
+            let _e166 = value;
+            stack[min(top, 3u)].sum = (_e157 + (_e165 * _e166));
             have_value = false;
         }
-        let _e164 = depth;
-        let top_1 = (_e164 - 1u);
-        let _e171 = stack[min(top_1, 3u)].next;
-        let _e176 = stack[min(top_1, 3u)].count;
-        if (_e171 < _e176) {
+        let _e170 = depth;
+        let top_1 = (_e170 - 1u);
+        let _e177 = stack[min(top_1, 3u)].next;
+        let _e182 = stack[min(top_1, 3u)].count;
+        if (_e177 < _e182) {
             let i_4 = stack[min(top_1, 3u)].next;
             stack[min(top_1, 3u)].next = (i_4 + 1u);
             let parent = stack[min(top_1, 3u)].ray;
             let hit_7 = stack[min(top_1, 3u)].hit;
             let dir_5 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
             medium = parent.medium;
-            let _e209 = spawn_origin(hit_7, dir_5);
-            let _e212 = F32_INF;
-            let _e218 = medium;
-            ray_21 = Ray(_e209, 0f, dir_5, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            let _e219 = stack[min(top_1, 3u)].error;
+            let _e220 = spawn_origin(hit_7, _e219, dir_5);
+            let _e223 = F32_INF;
+            let _e229 = medium;
+            ray_21 = Ray(_e220, 0f, dir_5, bitcast<f32>(_e223), (parent.depth + 1u), RAY_SECONDARY, _e229);
         } else {
-            let _e224 = stack[min(top_1, 3u)].slot;
-            let inst_10 = instances[_e224];
-            let _e234 = stack[min(top_1, 3u)].ray;
-            let _e239 = stack[min(top_1, 3u)].hit;
-            let _e244 = stack[min(top_1, 3u)].sum;
-            let _e245 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e234, _e239, _e244);
-            let _e250 = stack[min(top_1, 3u)].ray;
-            let _e256 = stack[min(top_1, 3u)].hit.t;
-            let _e257 = through_medium(_e250, _e256, _e245);
-            value = _e257;
+            let _e235 = stack[min(top_1, 3u)].slot;
+            let inst_11 = instances[_e235];
+            let _e243 = stack[min(top_1, 3u)].error;
+            hit_error = _e243;
+            let _e251 = stack[min(top_1, 3u)].ray;
+            let _e256 = stack[min(top_1, 3u)].hit;
+            let _e261 = stack[min(top_1, 3u)].sum;
+            let _e262 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e251, _e256, _e261);
+            let _e267 = stack[min(top_1, 3u)].ray;
+            let _e273 = stack[min(top_1, 3u)].hit.t;
+            let _e274 = through_medium(_e267, _e273, _e262);
+            value = _e274;
             depth = top_1;
             have_value = true;
         }
@@ -1405,8 +1464,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn is_finite_vec3f(x_1: vec3<f32>) -> vec3<bool> {
-    return ((bitcast<vec3<u32>>(x_1) & vec3(2147483647u)) < vec3(2139095040u));
+fn is_finite_vec3f(x_2: vec3<f32>) -> vec3<bool> {
+    return ((bitcast<vec3<u32>>(x_2) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
 fn finite_or_zero(c_3: vec3<f32>) -> vec3<f32> {
@@ -1417,7 +1476,7 @@ fn finite_or_zero(c_3: vec3<f32>) -> vec3<f32> {
 fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
-    var s_1: u32;
+    var s_2: u32;
     var ray_22: Ray;
 
     let frame_5 = frame;
@@ -1425,13 +1484,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
     sum = vec3(0f);
     bad = 0u;
     let end_1 = frame_5.samples_per_pass;
-    s_1 = 0u;
+    s_2 = 0u;
     loop {
-        let _e13 = s_1;
+        let _e13 = s_2;
         if (_e13 >= end_1) {
             break;
         }
-        let _e18 = s_1;
+        let _e18 = s_2;
         let sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
@@ -1455,8 +1514,8 @@ fn render_pixel(pixel_3: vec2<u32>) {
             bad = (_e43 + 1u);
         }
         continuing {
-            let _e46 = s_1;
-            s_1 = (_e46 + 1u);
+            let _e46 = s_2;
+            s_2 = (_e46 + 1u);
         }
     }
     let _e50 = ray_count;

@@ -132,6 +132,7 @@ struct UnlitTexture {
 struct Frame {
     Ray ray;
     Hit hit;
+    float error;
     uint slot;
     vec3 sum;
     vec3 dirs[1];
@@ -152,10 +153,15 @@ const uint NODE_COUNT_MASK = 15u;
 const uint NODE_FIRST_MASK = 134217727u;
 const uint BLAS_STACK = 64u;
 const uint TLAS_STACK = 3u;
+const float POINT_ERROR = 1.9073486e-6;
+const float GAMMA_1_ = 5.960465e-8;
+const float GAMMA_6_ = 3.576281e-7;
+const float GAMMA_4_ = 2.3841864e-7;
 const bool HAS_SECONDARY_RAYS = true;
 const bool HAS_BACKGROUND = true;
 const uint FLAG_MEDIUM = 4u;
 const float INV_PI = 0.31830987;
+const float LIGHT_ERROR = 4.7683716e-7;
 const uint RAY_SHADOW = 2u;
 const uint FLAG_SECONDARY = 2u;
 const uint MAX_DEPTH = 3u;
@@ -180,6 +186,8 @@ layout(std430, binding = 2) readonly buffer type_9_block_4Compute { GpuNode _gro
 layout(std430, binding = 4) readonly buffer type_10_block_5Compute { vec4 _group_0_binding_4_cs[]; };
 
 uint traversal_stack[67] = uint[67](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+
+float hit_error = 0.0;
 
 layout(std430, binding = 5) readonly buffer type_14_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
 
@@ -271,9 +279,9 @@ uint samples_per_pixel_query() {
 
 float rand_next() {
     uint _e1 = rng_state;
-    uint s_1 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_1;
-    uint word_1 = (((s_1 >> (((s_1 >> 28u) + 4u) & 31u)) ^ s_1) * 277803737u);
+    uint s_2 = ((_e1 * 747796405u) + 2891336453u);
+    rng_state = s_2;
+    uint word_1 = (((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u);
     uint r_3 = ((word_1 >> 22u) ^ word_1);
     return (float((r_3 >> 8u)) * (1.0 / 16777216.0));
 }
@@ -333,8 +341,8 @@ Ray to_object(GpuInstance inst, Ray ray) {
 
 vec3 safe_inverse(vec3 d) {
     vec3 tiny = vec3(1.1754944e-38);
-    vec3 s_2 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
-    vec3 dd = mix(d, (s_2 * tiny), lessThan(abs(d), tiny));
+    vec3 s_3 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
+    vec3 dd = mix(d, (s_3 * tiny), lessThan(abs(d), tiny));
     return (vec3(1.0) / dd);
 }
 
@@ -445,7 +453,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
     TriangleRay _e9 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_1 = _group_0_binding_2_cs[base_1];
-    vec3 origin_3 = header_1.min_;
+    vec3 origin_4 = header_1.min_;
     vec3 scale_2 = header_1.max_;
     sp_1 = 0u;
     child = header_1.a;
@@ -489,7 +497,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             uint _e62 = child;
             GpuNode n_6 = _group_0_binding_2_cs[(base_1 + _e62)];
             float _e68 = best.t;
-            vec2 _e69 = children_entry(n_6, origin_3, scale_2, ray_4, _e8, _e68);
+            vec2 _e69 = children_entry(n_6, origin_4, scale_2, ray_4, _e8, _e68);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
@@ -538,23 +546,28 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
 
 Candidate intersect_object(uint slot_2, Ray ray_5, Candidate best_1, bool shadow_1) {
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
-    GpuInstance inst_5 = _group_0_binding_3_cs[slot_2];
-    Ray _e7 = to_object(inst_5, ray_5);
+    GpuInstance inst_6 = _group_0_binding_3_cs[slot_2];
+    Ray _e7 = to_object(inst_6, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
-    if ((inst_5.geometry_type == MESH_GEOMETRY)) {
+    if ((inst_6.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_5, _e14, best_1, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_5, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
 }
 
+float point_error(vec3 origin_3, vec3 along) {
+    vec3 a_6 = (abs(origin_3) + abs(along));
+    return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
+}
+
 Triangle load_triangle(uint slot_3) {
-    vec4 v0_ = _group_0_binding_4_cs[(slot_3 * 3u)];
+    vec4 v0_1 = _group_0_binding_4_cs[(slot_3 * 3u)];
     vec4 v1_ = _group_0_binding_4_cs[((slot_3 * 3u) + 1u)];
     vec4 v2_ = _group_0_binding_4_cs[((slot_3 * 3u) + 2u)];
-    return Triangle(v0_.xyz, v1_.xyz, v2_.xyz);
+    return Triangle(v0_1.xyz, v1_.xyz, v2_.xyz);
 }
 
 vec3 point_to_world(GpuInstance inst_3, vec3 p_2) {
@@ -562,16 +575,28 @@ vec3 point_to_world(GpuInstance inst_3, vec3 p_2) {
     return vec3(dot(inst_3.object_to_world_0_, q_1), dot(inst_3.object_to_world_1_, q_1), dot(inst_3.object_to_world_2_, q_1));
 }
 
+float mesh_error(GpuInstance inst_4, vec3 v0_, vec3 db1_, vec3 db2_, vec3 p_3) {
+    vec3 obj = ((vec3(GAMMA_1_) * abs(v0_)) + (vec3(GAMMA_6_) * (abs(db1_) + abs(db2_))));
+    vec4 q_2 = vec4(abs(p_3), 1.0);
+    vec4 r0_ = abs(inst_4.object_to_world_0_);
+    vec4 r1_ = abs(inst_4.object_to_world_1_);
+    vec4 r2_ = abs(inst_4.object_to_world_2_);
+    vec3 rounding = (vec3(GAMMA_4_) * vec3(dot(r0_, q_2), dot(r1_, q_2), dot(r2_, q_2)));
+    vec3 carried = (vec3((1.0 + GAMMA_4_)) * vec3(dot(r0_.xyz, obj), dot(r1_.xyz, obj), dot(r2_.xyz, obj)));
+    vec3 e = (rounding + carried);
+    return max(max(e.x, e.y), e.z);
+}
+
 vec3 decode_octahedral(uint bits) {
     vec3 n_1 = vec3(0.0);
-    vec2 e = unpackSnorm2x16(bits);
-    n_1 = vec3(e.x, e.y, ((1.0 - abs(e.x)) - abs(e.y)));
+    vec2 e_1 = unpackSnorm2x16(bits);
+    n_1 = vec3(e_1.x, e_1.y, ((1.0 - abs(e_1.x)) - abs(e_1.y)));
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n_1;
-        vec2 s_3 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
+        vec2 s_4 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
         vec3 _e29 = n_1;
-        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_3);
+        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_4);
         float _e37 = n_1.z;
         n_1 = vec3(xy.x, xy.y, _e37);
     }
@@ -580,8 +605,8 @@ vec3 decode_octahedral(uint bits) {
     return _e40;
 }
 
-vec3 normal_to_world(GpuInstance inst_4, vec3 n_2) {
-    vec3 w_1 = (((inst_4.world_to_object_0_.xyz * vec3(n_2.x)) + (inst_4.world_to_object_1_.xyz * vec3(n_2.y))) + (inst_4.world_to_object_2_.xyz * vec3(n_2.z)));
+vec3 normal_to_world(GpuInstance inst_5, vec3 n_2) {
+    vec3 w_1 = (((inst_5.world_to_object_0_.xyz * vec3(n_2.x)) + (inst_5.world_to_object_1_.xyz * vec3(n_2.y))) + (inst_5.world_to_object_2_.xyz * vec3(n_2.z)));
     vec3 _e19 = normalize_vec3f(w_1);
     return _e19;
 }
@@ -590,49 +615,56 @@ Hit finish_hit(Ray ray_6, Candidate c_1) {
     Hit hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     vec3 n_geo = vec3(0.0);
     vec3 n_shade = vec3(0.0);
-    GpuInstance inst_6 = _group_0_binding_3_cs[c_1.slot];
-    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_6.object, c_1.primitive);
+    GpuInstance inst_7 = _group_0_binding_3_cs[c_1.slot];
+    float _e11 = point_error(ray_6.origin, (ray_6.dir * vec3(c_1.t)));
+    hit_error = _e11;
+    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
-    if ((inst_6.geometry_type == MESH_GEOMETRY)) {
-        Triangle _e35 = load_triangle(c_1.primitive);
+    if ((inst_7.geometry_type == MESH_GEOMETRY)) {
+        Triangle _e42 = load_triangle(c_1.primitive);
         vec2 b_7 = c_1.uv;
         float w_2 = ((1.0 - b_7.x) - b_7.y);
-        vec3 _e56 = point_to_world(inst_6, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_7.x))) + (_e35.v2_ * vec3(b_7.y))));
-        hit.position = _e56;
-        n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
+        vec3 e1_ = (_e42.v1_ - _e42.v0_);
+        vec3 e2_ = (_e42.v2_ - _e42.v0_);
+        vec3 p_6 = (_e42.v0_ + ((e1_ * vec3(b_7.x)) + (e2_ * vec3(b_7.y))));
+        vec3 _e65 = point_to_world(inst_7, p_6);
+        hit.position = _e65;
+        float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_7.x)), (e2_ * vec3(b_7.y)), p_6);
+        hit_error = _e73;
+        n_geo = cross(e1_, e2_);
         uvec4 a0_ = _group_0_binding_5_cs[(c_1.primitive * 2u)];
         uvec4 a1_ = _group_0_binding_5_cs[((c_1.primitive * 2u) + 1u)];
-        vec3 _e79 = decode_octahedral(a0_.x);
-        vec3 _e83 = decode_octahedral(a0_.y);
-        vec3 _e89 = decode_octahedral(a0_.z);
-        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_7.x))) + (_e89 * vec3(b_7.y)));
-        vec3 _e94 = n_shade;
-        vec3 _e95 = n_shade;
-        if ((dot(_e94, _e95) < 1e-12)) {
-            vec3 _e99 = n_geo;
-            n_shade = _e99;
+        vec3 _e91 = decode_octahedral(a0_.x);
+        vec3 _e95 = decode_octahedral(a0_.y);
+        vec3 _e101 = decode_octahedral(a0_.z);
+        n_shade = (((_e91 * vec3(w_2)) + (_e95 * vec3(b_7.x))) + (_e101 * vec3(b_7.y)));
+        vec3 _e106 = n_shade;
+        vec3 _e107 = n_shade;
+        if ((dot(_e106, _e107) < 1e-12)) {
+            vec3 _e111 = n_geo;
+            n_shade = _e111;
         }
         vec2 uv0_ = unpackHalf2x16(a0_.w);
         vec2 uv1_ = unpackHalf2x16(a1_.x);
         vec2 uv2_ = unpackHalf2x16(a1_.y);
         hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_7.x))) + (uv2_ * vec2(b_7.y)));
-        vec4 _e123 = _group_0_binding_4_cs[(c_1.primitive * 3u)];
-        hit.primitive = floatBitsToUint(_e123.w);
+        vec4 _e135 = _group_0_binding_4_cs[(c_1.primitive * 3u)];
+        hit.primitive = floatBitsToUint(_e135.w);
     }
-    vec3 _e127 = n_geo;
-    vec3 _e128 = normal_to_world(inst_6, _e127);
-    hit.geometric_normal = _e128;
-    vec3 _e130 = n_shade;
-    vec3 _e131 = normal_to_world(inst_6, _e130);
-    hit.normal = _e131;
-    vec3 _e135 = hit.geometric_normal;
-    hit.front_face = (dot(ray_6.dir, _e135) < 0.0);
-    Hit _e139 = hit;
-    return _e139;
+    vec3 _e139 = n_geo;
+    vec3 _e140 = normal_to_world(inst_7, _e139);
+    hit.geometric_normal = _e140;
+    vec3 _e142 = n_shade;
+    vec3 _e143 = normal_to_world(inst_7, _e142);
+    hit.normal = _e143;
+    vec3 _e147 = hit.geometric_normal;
+    hit.front_face = (dot(ray_6.dir, _e147) < 0.0);
+    Hit _e151 = hit;
+    return _e151;
 }
 
-uint medium_at(vec3 p_3, uint exclude) {
+uint medium_at(vec3 p_4, uint exclude) {
     uint inside = 0u;
     float nearest = 0.0;
     uint i = 0u;
@@ -642,7 +674,7 @@ uint medium_at(vec3 p_3, uint exclude) {
     FrameUniforms frame_1 = _group_0_binding_0_cs;
     vec3 _e12 = normalize_vec3f(vec3(0.5773, 0.5774, 0.5775));
     uint _e14 = F32_INF;
-    Ray probe = Ray(p_3, 0.0, _e12, uintBitsToFloat(_e14), 0u, 0u, 0u);
+    Ray probe = Ray(p_4, 0.0, _e12, uintBitsToFloat(_e14), 0u, 0u, 0u);
     inside = 0u;
     uint _e23 = F32_INF;
     nearest = uintBitsToFloat(_e23);
@@ -702,11 +734,11 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2) {
     vec3 _e16 = safe_inverse(ray_7.dir);
     uint base_2 = frame_2.tlas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_2];
-    vec3 origin_4 = header_2.min_;
+    vec3 origin_5 = header_2.min_;
     vec3 scale_3 = header_2.max_;
     vec3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_4, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
+    float _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == uintBitsToFloat(_e30))) {
         Candidate _e33 = best_2;
@@ -733,7 +765,7 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2) {
             uint _e63 = child_1;
             GpuNode n_7 = _group_0_binding_2_cs[(base_2 + _e63)];
             float _e69 = best_2.t;
-            vec2 _e70 = children_entry(n_7, origin_4, scale_3, ray_7, _e16, _e69);
+            vec2 _e70 = children_entry(n_7, origin_5, scale_3, ray_7, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -828,11 +860,11 @@ vec3 through_medium(Ray ray_12, float t_1, vec3 radiance_1) {
     if ((ray_12.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_7 = _group_0_binding_3_cs[(ray_12.medium - 1u)];
-    if (((inst_7.flags & FLAG_MEDIUM) == 0u)) {
+    GpuInstance inst_8 = _group_0_binding_3_cs[(ray_12.medium - 1u)];
+    if (((inst_8.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_12, t_1, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_12, t_1, radiance_1);
     return _e21;
 }
 
@@ -909,18 +941,18 @@ vec4 sample_texture(uint t_3, vec2 uv) {
     float w_4 = float(max(_e6, 1u));
     uint _e14 = _group_0_binding_6_cs[(t_3 + 2u)];
     float h_3 = float(max(_e14, 1u));
-    vec2 p_5 = ((uv * vec2(w_4, h_3)) - vec2(0.5));
-    vec2 f_1 = floor(p_5);
-    vec2 fr = (p_5 - f_1);
+    vec2 p_7 = ((uv * vec2(w_4, h_3)) - vec2(0.5));
+    vec2 f_1 = floor(p_7);
+    vec2 fr = (p_7 - f_1);
     int _e26 = i32_from_f32_(f_1.x);
     int _e28 = i32_from_f32_(f_1.y);
     vec4 _e29 = texel_at(t_3, _e26, _e28);
     vec4 _e32 = texel_at(t_3, (_e26 + 1), _e28);
-    vec4 a_6 = mix(_e29, _e32, vec4(fr.x));
+    vec4 a_7 = mix(_e29, _e32, vec4(fr.x));
     vec4 _e38 = texel_at(t_3, _e26, (_e28 + 1));
     vec4 _e43 = texel_at(t_3, (_e26 + 1), (_e28 + 1));
     vec4 b_8 = mix(_e38, _e43, vec4(fr.x));
-    return mix(a_6, b_8, vec4(fr.y));
+    return mix(a_7, b_8, vec4(fr.y));
 }
 
 uint light_count_query() {
@@ -941,28 +973,50 @@ PointLight load_PointLight(uint offset_6) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
-vec3 offset_origin(vec3 p_4, vec3 n_3) {
-    FrameUniforms _e3 = _group_0_binding_0_cs;
-    GpuNode header_3 = _group_0_binding_2_cs[_e3.tlas_root];
-    vec3 _e11 = node_frame_hi(header_3);
-    vec3 a_7 = max(abs(p_4), max(abs(header_3.min_), abs(_e11)));
-    float m_5 = max(max(a_7.x, a_7.y), a_7.z);
-    return (p_4 + (n_3 * vec3((m_5 * (1.0 / 65536.0)))));
+vec3 step_toward(vec3 x_3, vec3 s) {
+    uvec3 bits_1 = floatBitsToUint(x_3);
+    bvec3 up_1 = greaterThan((sign(x_3) * sign(s)), vec3(0.0));
+    vec3 stepped = uintBitsToFloat(mix((bits_1 - uvec3(1u)), (bits_1 + uvec3(1u)), up_1));
+    vec3 from_zero = mix(vec3(-1.1754944e-38), vec3(1.1754944e-38), greaterThan(s, vec3(0.0)));
+    vec3 moved = mix(stepped, from_zero, equal(x_3, vec3(0.0)));
+    return mix(x_3, moved, not(equal(s, vec3(0.0))));
+}
+
+vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
+    float d_3 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
+    vec3 offset_13 = (n_3 * vec3(d_3));
+    vec3 _e17 = step_toward((p_5 + offset_13), offset_13);
+    return _e17;
 }
 
 float shadow_query(vec3 position, vec3 normal, vec3 dir, float dist) {
     vec3 n_4 = vec3(0.0);
+    float tmax_4 = 0.0;
     n_4 = normal;
     vec3 _e5 = n_4;
     if ((dot(dir, _e5) < 0.0)) {
         vec3 _e9 = n_4;
         n_4 = -(_e9);
     }
-    vec3 _e11 = n_4;
-    vec3 _e12 = offset_origin(position, _e11);
-    Ray ray_24 = Ray(_e12, 0.0, dir, (dist * (1.0 - 1e-5)), 0u, RAY_SHADOW, 0u);
-    Candidate _e23 = intersect_scene(ray_24, true);
-    return ((_e23.slot != NO_HIT) ? 0.0 : 1.0);
+    vec3 a_8 = abs(position);
+    float _e13 = hit_error;
+    float error_2 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
+    vec3 _e22 = n_4;
+    vec3 _e23 = offset_origin(position, _e22, error_2);
+    uint _e25 = F32_INF;
+    tmax_4 = uintBitsToFloat(_e25);
+    uint _e29 = F32_INF;
+    if ((dist < uintBitsToFloat(_e29))) {
+        vec3 light = (position + (dir * vec3(dist)));
+        float dd_1 = dot(dir, dir);
+        float along_1 = (dot((light - _e23), dir) / dd_1);
+        vec3 l_1 = (abs(position) + abs((dir * vec3(dist))));
+        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
+    }
+    float _e59 = tmax_4;
+    Ray ray_24 = Ray(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    Candidate _e65 = intersect_scene(ray_24, true);
+    return ((_e65.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
 LightSample point_light(PointLight l, vec3 position_1, vec3 normal_1) {
@@ -1006,8 +1060,8 @@ vec3 blinn_phong_shade(BlinnPhong m, Ray ray_14, Hit hit_2) {
     vec3 v_2 = -(_e5);
     vec4 _e12 = sample_texture(m.texture_, (hit_2.uv * m.uv_scale));
     vec3 kd = (m.diffuse * _e12.xyz);
-    float s_4 = max(m.shininess, 0.0);
-    float norm = ((s_4 + 8.0) * (INV_PI / 8.0));
+    float s_5 = max(m.shininess, 0.0);
+    float norm = ((s_5 + 8.0) * (INV_PI / 8.0));
     color = (m.ambient * kd);
     uint _e28 = light_count_query();
     i_2 = 0u;
@@ -1026,7 +1080,7 @@ vec3 blinn_phong_shade(BlinnPhong m, Ray ray_14, Hit hit_2) {
         LightSample _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal);
         float ndl = max(dot(_e3, _e35.dir), 0.0);
         vec3 _e42 = normalize_vec3f((_e35.dir + v_2));
-        float highlight = (pow(max(dot(_e3, _e42), 0.0), s_4) * norm);
+        float highlight = (pow(max(dot(_e3, _e42), 0.0), s_5) * norm);
         vec3 _e48 = color;
         color = (_e48 + ((_e35.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m.specular * vec3(highlight)))));
     }
@@ -1131,9 +1185,9 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_11, Ray ray_18, Hit hit_6,
 }
 
 vec3 shade_direct(Ray ray_19, Candidate c_3) {
-    GpuInstance inst_8 = _group_0_binding_3_cs[c_3.slot];
+    GpuInstance inst_9 = _group_0_binding_3_cs[c_3.slot];
     Hit _e6 = finish_hit(ray_19, c_3);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, vec3(0.0));
+    vec3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_19, _e6, vec3(0.0));
     return _e11;
 }
 
@@ -1158,158 +1212,164 @@ void dispatch_secondary_rays(uint type_id_5, uint offset_12, Ray ray_21, Hit hit
     return;
 }
 
-vec3 spawn_origin(Hit hit_9, vec3 dir_2) {
+vec3 spawn_origin(Hit hit_9, float error_1, vec3 dir_2) {
     vec3 n_5 = vec3(0.0);
     n_5 = hit_9.geometric_normal;
-    vec3 _e4 = n_5;
-    if ((dot(dir_2, _e4) < 0.0)) {
-        vec3 _e8 = n_5;
-        n_5 = -(_e8);
+    vec3 _e5 = n_5;
+    if ((dot(dir_2, _e5) < 0.0)) {
+        vec3 _e9 = n_5;
+        n_5 = -(_e9);
     }
-    vec3 _e11 = n_5;
-    vec3 _e12 = offset_origin(hit_9.position, _e11);
-    return _e12;
+    vec3 _e12 = n_5;
+    vec3 _e13 = offset_origin(hit_9.position, _e12, error_1);
+    return _e13;
 }
 
 vec3 trace(Ray camera_ray) {
-    Frame stack[3] = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
+    Frame stack[3] = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
     Ray ray_22 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     bool pushed = false;
-    Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
+    Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
     uint i_4 = 0u;
     uint medium = 0u;
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false);
         if ((_e4.slot == NO_HIT)) {
-            uint _e9 = F32_INF;
-            vec3 _e11 = miss(camera_ray);
-            vec3 _e12 = through_medium(camera_ray, uintBitsToFloat(_e9), _e11);
-            return _e12;
+            hit_error = 0.0;
+            uint _e11 = F32_INF;
+            vec3 _e13 = miss(camera_ray);
+            vec3 _e14 = through_medium(camera_ray, uintBitsToFloat(_e11), _e13);
+            return _e14;
         }
-        vec3 _e14 = shade_direct(camera_ray, _e4);
-        vec3 _e15 = through_medium(camera_ray, _e4.t, _e14);
-        return _e15;
+        vec3 _e16 = shade_direct(camera_ray, _e4);
+        vec3 _e17 = through_medium(camera_ray, _e4.t, _e16);
+        return _e17;
     }
-    stack = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
+    stack = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
     ray_22 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     while(true) {
-        bool _e26 = have_value;
-        if (!(_e26)) {
-            Ray _e28 = ray_22;
-            Candidate _e30 = intersect_scene(_e28, false);
-            if ((_e30.slot == NO_HIT)) {
-                Ray _e34 = ray_22;
-                uint _e36 = F32_INF;
+        bool _e28 = have_value;
+        if (!(_e28)) {
+            Ray _e30 = ray_22;
+            Candidate _e32 = intersect_scene(_e30, false);
+            if ((_e32.slot == NO_HIT)) {
+                hit_error = 0.0;
                 Ray _e38 = ray_22;
-                vec3 _e39 = miss(_e38);
-                vec3 _e40 = through_medium(_e34, uintBitsToFloat(_e36), _e39);
-                value = _e40;
+                uint _e40 = F32_INF;
+                Ray _e42 = ray_22;
+                vec3 _e43 = miss(_e42);
+                vec3 _e44 = through_medium(_e38, uintBitsToFloat(_e40), _e43);
+                value = _e44;
                 have_value = true;
             } else {
-                GpuInstance inst_9 = _group_0_binding_3_cs[_e30.slot];
-                Ray _e46 = ray_22;
-                Hit _e47 = finish_hit(_e46, _e30);
+                GpuInstance inst_10 = _group_0_binding_3_cs[_e32.slot];
+                Ray _e50 = ray_22;
+                Hit _e51 = finish_hit(_e50, _e32);
+                float error_3 = hit_error;
                 pushed = false;
-                uint _e56 = ray_22.depth;
-                uint _e60 = depth;
-                if (((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE))) {
+                uint _e62 = ray_22.depth;
+                uint _e66 = depth;
+                if (((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_22;
-                    dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
-                    uint _e70 = spawn_count;
-                    uint n_8 = min(min(_e70, 1u), MAX_SPAWN);
+                    Ray _e74 = ray_22;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);
+                    uint _e76 = spawn_count;
+                    uint n_8 = min(min(_e76, 1u), MAX_SPAWN);
                     if ((n_8 > 0u)) {
-                        Ray _e77 = ray_22;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_8, 0u);
+                        Ray _e83 = ray_22;
+                        f = Frame(_e83, _e51, error_3, _e32.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_8, 0u);
                         i_4 = 0u;
                         bool loop_init_4 = true;
                         while(true) {
                             if (!loop_init_4) {
-                                uint _e108 = i_4;
-                                i_4 = (_e108 + 1u);
+                                uint _e114 = i_4;
+                                i_4 = (_e114 + 1u);
                             }
                             loop_init_4 = false;
-                            uint _e88 = i_4;
-                            if ((_e88 >= n_8)) {
+                            uint _e94 = i_4;
+                            if ((_e94 >= n_8)) {
                                 break;
                             }
-                            uint _e91 = i_4;
-                            uint _e95 = i_4;
-                            vec3 _e98 = spawn_dirs[_e95];
-                            f.dirs[min(_e91, 0u)] = _e98;
-                            uint _e100 = i_4;
-                            uint _e104 = i_4;
-                            vec3 _e107 = spawn_weights[_e104];
-                            f.weights[min(_e100, 0u)] = _e107;
+                            uint _e97 = i_4;
+                            uint _e101 = i_4;
+                            vec3 _e104 = spawn_dirs[_e101];
+                            f.dirs[min(_e97, 0u)] = _e104;
+                            uint _e106 = i_4;
+                            uint _e110 = i_4;
+                            vec3 _e113 = spawn_weights[_e110];
+                            f.weights[min(_e106, 0u)] = _e113;
                         }
-                        uint _e111 = depth;
-                        Frame _e115 = f;
-                        stack[min(_e111, 2u)] = _e115;
-                        uint _e116 = depth;
-                        depth = (_e116 + 1u);
+                        uint _e117 = depth;
+                        Frame _e121 = f;
+                        stack[min(_e117, 2u)] = _e121;
+                        uint _e122 = depth;
+                        depth = (_e122 + 1u);
                         pushed = true;
                     }
                 }
-                bool _e120 = pushed;
-                if (!(_e120)) {
-                    Ray _e124 = ray_22;
-                    vec3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0.0));
-                    Ray _e128 = ray_22;
-                    vec3 _e130 = through_medium(_e128, _e30.t, _e127);
-                    value = _e130;
+                bool _e126 = pushed;
+                if (!(_e126)) {
+                    Ray _e130 = ray_22;
+                    vec3 _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, vec3(0.0));
+                    Ray _e134 = ray_22;
+                    vec3 _e136 = through_medium(_e134, _e32.t, _e133);
+                    value = _e136;
                     have_value = true;
                 }
             }
         }
-        bool _e132 = have_value;
-        if (_e132) {
-            uint _e133 = depth;
-            if ((_e133 == 0u)) {
-                vec3 _e136 = value;
-                return _e136;
+        bool _e138 = have_value;
+        if (_e138) {
+            uint _e139 = depth;
+            if ((_e139 == 0u)) {
+                vec3 _e142 = value;
+                return _e142;
             }
-            uint _e137 = depth;
-            uint top = (_e137 - 1u);
-            uint _e144 = stack[min(top, 2u)].next;
-            uint child_2 = (_e144 - 1u);
-            vec3 _e151 = stack[min(top, 2u)].sum;
-            vec3 _e159 = stack[min(top, 2u)].weights[min(child_2, 0u)];
-            vec3 _e160 = value;
-            stack[min(top, 2u)].sum = (_e151 + (_e159 * _e160));
+            uint _e143 = depth;
+            uint top = (_e143 - 1u);
+            uint _e150 = stack[min(top, 2u)].next;
+            uint child_2 = (_e150 - 1u);
+            vec3 _e157 = stack[min(top, 2u)].sum;
+            vec3 _e165 = stack[min(top, 2u)].weights[min(child_2, 0u)];
+            vec3 _e166 = value;
+            stack[min(top, 2u)].sum = (_e157 + (_e165 * _e166));
             have_value = false;
         }
-        uint _e164 = depth;
-        uint top_1 = (_e164 - 1u);
-        uint _e171 = stack[min(top_1, 2u)].next;
-        uint _e176 = stack[min(top_1, 2u)].count;
-        if ((_e171 < _e176)) {
+        uint _e170 = depth;
+        uint top_1 = (_e170 - 1u);
+        uint _e177 = stack[min(top_1, 2u)].next;
+        uint _e182 = stack[min(top_1, 2u)].count;
+        if ((_e177 < _e182)) {
             uint i_5 = stack[min(top_1, 2u)].next;
             stack[min(top_1, 2u)].next = (i_5 + 1u);
             Ray parent = stack[min(top_1, 2u)].ray;
             Hit hit_11 = stack[min(top_1, 2u)].hit;
             vec3 dir_4 = stack[min(top_1, 2u)].dirs[min(i_5, 0u)];
             medium = parent.medium;
-            vec3 _e209 = spawn_origin(hit_11, dir_4);
-            uint _e212 = F32_INF;
-            uint _e218 = medium;
-            ray_22 = Ray(_e209, 0.0, dir_4, uintBitsToFloat(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            float _e219 = stack[min(top_1, 2u)].error;
+            vec3 _e220 = spawn_origin(hit_11, _e219, dir_4);
+            uint _e223 = F32_INF;
+            uint _e229 = medium;
+            ray_22 = Ray(_e220, 0.0, dir_4, uintBitsToFloat(_e223), (parent.depth + 1u), RAY_SECONDARY, _e229);
         } else {
-            uint _e224 = stack[min(top_1, 2u)].slot;
-            GpuInstance inst_10 = _group_0_binding_3_cs[_e224];
-            Ray _e234 = stack[min(top_1, 2u)].ray;
-            Hit _e239 = stack[min(top_1, 2u)].hit;
-            vec3 _e244 = stack[min(top_1, 2u)].sum;
-            vec3 _e245 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e234, _e239, _e244);
-            Ray _e250 = stack[min(top_1, 2u)].ray;
-            float _e256 = stack[min(top_1, 2u)].hit.t;
-            vec3 _e257 = through_medium(_e250, _e256, _e245);
-            value = _e257;
+            uint _e235 = stack[min(top_1, 2u)].slot;
+            GpuInstance inst_11 = _group_0_binding_3_cs[_e235];
+            float _e243 = stack[min(top_1, 2u)].error;
+            hit_error = _e243;
+            Ray _e251 = stack[min(top_1, 2u)].ray;
+            Hit _e256 = stack[min(top_1, 2u)].hit;
+            vec3 _e261 = stack[min(top_1, 2u)].sum;
+            vec3 _e262 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e251, _e256, _e261);
+            Ray _e267 = stack[min(top_1, 2u)].ray;
+            float _e273 = stack[min(top_1, 2u)].hit.t;
+            vec3 _e274 = through_medium(_e267, _e273, _e262);
+            value = _e274;
             depth = top_1;
             have_value = true;
         }
@@ -1317,8 +1377,8 @@ vec3 trace(Ray camera_ray) {
     return vec3(0.0);
 }
 
-bvec3 is_finite_vec3f(vec3 x_3) {
-    return lessThan((floatBitsToUint(x_3) & uvec3(2147483647u)), uvec3(2139095040u));
+bvec3 is_finite_vec3f(vec3 x_4) {
+    return lessThan((floatBitsToUint(x_4) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
 vec3 finite_or_zero(vec3 c_4) {
@@ -1329,26 +1389,26 @@ vec3 finite_or_zero(vec3 c_4) {
 void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
-    uint s = 0u;
+    uint s_1 = 0u;
     Ray ray_23 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_1 = _group_0_binding_1_cs;
     sum = vec3(0.0);
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
-    s = 0u;
+    s_1 = 0u;
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
-            uint _e46 = s;
-            s = (_e46 + 1u);
+            uint _e46 = s_1;
+            s_1 = (_e46 + 1u);
         }
         loop_init_5 = false;
-        uint _e13 = s;
+        uint _e13 = s_1;
         if ((_e13 >= end_1)) {
             break;
         }
-        uint _e18 = s;
+        uint _e18 = s_1;
         uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);

@@ -9,10 +9,10 @@ struct _mslBufferSizes {
     uint size5;
     uint size6;
     uint size7;
-    uint size9;
-    uint size11;
-    uint size15;
+    uint size10;
+    uint size12;
     uint size16;
+    uint size17;
 };
 
 struct TileParams {
@@ -167,14 +167,15 @@ struct type_16 {
 struct Frame {
     Ray ray;
     Hit hit;
+    float error;
     uint slot;
-    char _pad3[12];
+    char _pad4[8];
     metal::float3 sum;
     type_16 dirs;
     type_16 weights;
     uint count;
     uint next;
-    char _pad8[8];
+    char _pad9[8];
 };
 struct type_17 {
     Frame inner[3];
@@ -193,10 +194,15 @@ constant uint NODE_COUNT_MASK = 15u;
 constant uint NODE_FIRST_MASK = 134217727u;
 constant uint BLAS_STACK = 64u;
 constant uint TLAS_STACK = 3u;
+constant float POINT_ERROR = 0.0000019073486;
+constant float GAMMA_1_ = 0.00000005960465;
+constant float GAMMA_6_ = 0.0000003576281;
+constant float GAMMA_4_ = 0.00000023841864;
 constant bool HAS_SECONDARY_RAYS = true;
 constant bool HAS_BACKGROUND = true;
 constant uint FLAG_MEDIUM = 4u;
 constant float INV_PI = 0.31830987;
+constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
 constant uint FLAG_SECONDARY = 2u;
 constant uint MAX_DEPTH = 3u;
@@ -322,9 +328,9 @@ float rand_next(
     thread uint& rng_state
 ) {
     uint _e1 = rng_state;
-    uint s_1 = (_e1 * 747796405u) + 2891336453u;
-    rng_state = s_1;
-    uint word_1 = ((s_1 >> (((s_1 >> 28u) + 4u) & 31u)) ^ s_1) * 277803737u;
+    uint s_2 = (_e1 * 747796405u) + 2891336453u;
+    rng_state = s_2;
+    uint word_1 = ((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u;
     uint r_3 = (word_1 >> 22u) ^ word_1;
     return static_cast<float>(r_3 >> 8u) * (1.0 / 16777216.0);
 }
@@ -414,8 +420,8 @@ metal::float3 safe_inverse(
     metal::float3 d
 ) {
     metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_2 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_2 * tiny, metal::abs(d) < tiny);
+    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_3 * tiny, metal::abs(d) < tiny);
     return metal::float3(1.0) / dd;
 }
 
@@ -580,7 +586,7 @@ Candidate intersect_mesh(
     TriangleRay _e9 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_1 = nodes[base_1];
-    metal::float3 origin_3 = header_1.min;
+    metal::float3 origin_4 = header_1.min;
     metal::float3 scale_2 = header_1.max;
     sp_1 = 0u;
     child = header_1.a;
@@ -630,7 +636,7 @@ Candidate intersect_mesh(
             uint _e62 = child;
             GpuNode n_6 = nodes[base_1 + _e62];
             float _e68 = best.t;
-            metal::float2 _e69 = children_entry(n_6, origin_3, scale_2, ray_4, _e8, _e68, F32_INF);
+            metal::float2 _e69 = children_entry(n_6, origin_4, scale_2, ray_4, _e8, _e68, F32_INF);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
@@ -690,16 +696,24 @@ Candidate intersect_object(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray r_2 = {};
-    GpuInstance inst_5 = instances[slot_2];
-    Ray _e7 = to_object(inst_5, ray_5);
+    GpuInstance inst_6 = instances[slot_2];
+    Ray _e7 = to_object(inst_6, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
-    if (inst_5.geometry_type == MESH_GEOMETRY) {
+    if (inst_6.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_5, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_5, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
+}
+
+float point_error(
+    metal::float3 origin_3,
+    metal::float3 along
+) {
+    metal::float3 a_6 = metal::abs(origin_3) + metal::abs(along);
+    return POINT_ERROR * metal::max(metal::max(a_6.x, a_6.y), a_6.z);
 }
 
 Triangle load_triangle(
@@ -707,10 +721,10 @@ Triangle load_triangle(
     device type_10 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 v0_ = triangles[slot_3 * 3u];
+    metal::float4 v0_1 = triangles[slot_3 * 3u];
     metal::float4 v1_ = triangles[(slot_3 * 3u) + 1u];
     metal::float4 v2_ = triangles[(slot_3 * 3u) + 2u];
-    return Triangle {v0_.xyz, v1_.xyz, v2_.xyz};
+    return Triangle {v0_1.xyz, v1_.xyz, v2_.xyz};
 }
 
 metal::float3 point_to_world(
@@ -721,18 +735,36 @@ metal::float3 point_to_world(
     return metal::float3(metal::dot(inst_3.object_to_world_0_, q_1), metal::dot(inst_3.object_to_world_1_, q_1), metal::dot(inst_3.object_to_world_2_, q_1));
 }
 
+float mesh_error(
+    GpuInstance inst_4,
+    metal::float3 v0_,
+    metal::float3 db1_,
+    metal::float3 db2_,
+    metal::float3 p_3
+) {
+    metal::float3 obj = (metal::float3(GAMMA_1_) * metal::abs(v0_)) + (metal::float3(GAMMA_6_) * (metal::abs(db1_) + metal::abs(db2_)));
+    metal::float4 q_2 = metal::float4(metal::abs(p_3), 1.0);
+    metal::float4 r0_ = metal::abs(inst_4.object_to_world_0_);
+    metal::float4 r1_ = metal::abs(inst_4.object_to_world_1_);
+    metal::float4 r2_ = metal::abs(inst_4.object_to_world_2_);
+    metal::float3 rounding = metal::float3(GAMMA_4_) * metal::float3(metal::dot(r0_, q_2), metal::dot(r1_, q_2), metal::dot(r2_, q_2));
+    metal::float3 carried = metal::float3(1.0 + GAMMA_4_) * metal::float3(metal::dot(r0_.xyz, obj), metal::dot(r1_.xyz, obj), metal::dot(r2_.xyz, obj));
+    metal::float3 e = rounding + carried;
+    return metal::max(metal::max(e.x, e.y), e.z);
+}
+
 metal::float3 decode_octahedral(
     uint bits
 ) {
     metal::float3 n_1 = {};
-    metal::float2 e = metal::unpack_snorm2x16_to_float(bits);
-    n_1 = metal::float3(e.x, e.y, (1.0 - metal::abs(e.x)) - metal::abs(e.y));
+    metal::float2 e_1 = metal::unpack_snorm2x16_to_float(bits);
+    n_1 = metal::float3(e_1.x, e_1.y, (1.0 - metal::abs(e_1.x)) - metal::abs(e_1.y));
     float _e14 = n_1.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n_1;
-        metal::float2 s_3 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float2 s_4 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
         metal::float3 _e29 = n_1;
-        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_3;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_4;
         float _e37 = n_1.z;
         n_1 = metal::float3(xy.x, xy.y, _e37);
     }
@@ -742,10 +774,10 @@ metal::float3 decode_octahedral(
 }
 
 metal::float3 normal_to_world(
-    GpuInstance inst_4,
+    GpuInstance inst_5,
     metal::float3 n_2
 ) {
-    metal::float3 w_1 = ((inst_4.world_to_object_0_.xyz * metal::float3(n_2.x)) + (inst_4.world_to_object_1_.xyz * metal::float3(n_2.y))) + (inst_4.world_to_object_2_.xyz * metal::float3(n_2.z));
+    metal::float3 w_1 = ((inst_5.world_to_object_0_.xyz * metal::float3(n_2.x)) + (inst_5.world_to_object_1_.xyz * metal::float3(n_2.y))) + (inst_5.world_to_object_2_.xyz * metal::float3(n_2.z));
     metal::float3 _e19 = normalize_vec3f(w_1);
     return _e19;
 }
@@ -755,56 +787,64 @@ Hit finish_hit(
     Candidate c_1,
     device type_8 const& instances,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_14 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Hit hit = {};
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
-    GpuInstance inst_6 = instances[c_1.slot];
-    hit = Hit {ray_6.origin + (ray_6.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_6.object, c_1.primitive};
+    GpuInstance inst_7 = instances[c_1.slot];
+    float _e11 = point_error(ray_6.origin, ray_6.dir * metal::float3(c_1.t));
+    hit_error = _e11;
+    hit = Hit {ray_6.origin + (ray_6.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
-    if (inst_6.geometry_type == MESH_GEOMETRY) {
-        Triangle _e35 = load_triangle(c_1.primitive, triangles, _buffer_sizes);
+    if (inst_7.geometry_type == MESH_GEOMETRY) {
+        Triangle _e42 = load_triangle(c_1.primitive, triangles, _buffer_sizes);
         metal::float2 b_7 = c_1.uv;
         float w_2 = (1.0 - c_1.uv.x) - c_1.uv.y;
-        metal::float3 _e56 = point_to_world(inst_6, ((_e35.v0_ * metal::float3(w_2)) + (_e35.v1_ * metal::float3(c_1.uv.x))) + (_e35.v2_ * metal::float3(c_1.uv.y)));
-        hit.position = _e56;
-        n_geo = metal::cross(_e35.v1_ - _e35.v0_, _e35.v2_ - _e35.v0_);
+        metal::float3 e1_ = _e42.v1_ - _e42.v0_;
+        metal::float3 e2_ = _e42.v2_ - _e42.v0_;
+        metal::float3 p_6 = _e42.v0_ + ((e1_ * metal::float3(c_1.uv.x)) + (e2_ * metal::float3(c_1.uv.y)));
+        metal::float3 _e65 = point_to_world(inst_7, p_6);
+        hit.position = _e65;
+        float _e73 = mesh_error(inst_7, _e42.v0_, e1_ * metal::float3(c_1.uv.x), e2_ * metal::float3(c_1.uv.y), p_6);
+        hit_error = _e73;
+        n_geo = metal::cross(e1_, e2_);
         metal::uint4 a0_ = attributes[c_1.primitive * 2u];
         metal::uint4 a1_ = attributes[(c_1.primitive * 2u) + 1u];
-        metal::float3 _e79 = decode_octahedral(a0_.x);
-        metal::float3 _e83 = decode_octahedral(a0_.y);
-        metal::float3 _e89 = decode_octahedral(a0_.z);
-        n_shade = ((_e79 * metal::float3(w_2)) + (_e83 * metal::float3(c_1.uv.x))) + (_e89 * metal::float3(c_1.uv.y));
-        metal::float3 _e94 = n_shade;
-        metal::float3 _e95 = n_shade;
-        if (metal::dot(_e94, _e95) < 0.000000000001) {
-            metal::float3 _e99 = n_geo;
-            n_shade = _e99;
+        metal::float3 _e91 = decode_octahedral(a0_.x);
+        metal::float3 _e95 = decode_octahedral(a0_.y);
+        metal::float3 _e101 = decode_octahedral(a0_.z);
+        n_shade = ((_e91 * metal::float3(w_2)) + (_e95 * metal::float3(c_1.uv.x))) + (_e101 * metal::float3(c_1.uv.y));
+        metal::float3 _e106 = n_shade;
+        metal::float3 _e107 = n_shade;
+        if (metal::dot(_e106, _e107) < 0.000000000001) {
+            metal::float3 _e111 = n_geo;
+            n_shade = _e111;
         }
         metal::float2 uv0_ = float2(as_type<half2>(a0_.w));
         metal::float2 uv1_ = float2(as_type<half2>(a1_.x));
         metal::float2 uv2_ = float2(as_type<half2>(a1_.y));
         hit.uv = ((uv0_ * metal::float2(w_2)) + (uv1_ * metal::float2(c_1.uv.x))) + (uv2_ * metal::float2(c_1.uv.y));
-        metal::float4 _e123 = triangles[c_1.primitive * 3u];
-        hit.primitive = as_type<uint>(_e123.w);
+        metal::float4 _e135 = triangles[c_1.primitive * 3u];
+        hit.primitive = as_type<uint>(_e135.w);
     }
-    metal::float3 _e127 = n_geo;
-    metal::float3 _e128 = normal_to_world(inst_6, _e127);
-    hit.geometric_normal = _e128;
-    metal::float3 _e130 = n_shade;
-    metal::float3 _e131 = normal_to_world(inst_6, _e130);
-    hit.normal = _e131;
-    metal::float3 _e135 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_6.dir, _e135) < 0.0;
-    Hit _e139 = hit;
-    return _e139;
+    metal::float3 _e139 = n_geo;
+    metal::float3 _e140 = normal_to_world(inst_7, _e139);
+    hit.geometric_normal = _e140;
+    metal::float3 _e142 = n_shade;
+    metal::float3 _e143 = normal_to_world(inst_7, _e142);
+    hit.normal = _e143;
+    metal::float3 _e147 = hit.geometric_normal;
+    hit.front_face = metal::dot(ray_6.dir, _e147) < 0.0;
+    Hit _e151 = hit;
+    return _e151;
 }
 
 uint medium_at(
-    metal::float3 p_3,
+    metal::float3 p_4,
     uint exclude,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -813,6 +853,7 @@ uint medium_at(
     device type_9 const& nodes,
     device type_10 const& triangles,
     thread type_12& traversal_stack,
+    thread float& hit_error,
     device type_14 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -825,7 +866,7 @@ uint medium_at(
     FrameUniforms frame_1 = frame;
     metal::float3 _e12 = normalize_vec3f(metal::float3(0.5773, 0.5774, 0.5775));
     uint _e14 = F32_INF;
-    Ray probe = Ray {p_3, 0.0, _e12, as_type<float>(_e14), 0u, 0u, 0u};
+    Ray probe = Ray {p_4, 0.0, _e12, as_type<float>(_e14), 0u, 0u, 0u};
     inside = 0u;
     uint _e23 = F32_INF;
     nearest = as_type<float>(_e23);
@@ -853,7 +894,7 @@ uint medium_at(
             Candidate _e43 = intersect_object(slot_4, probe, _e41, false, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
             float _e48 = nearest;
             if ((_e43.slot != NO_HIT) && (_e43.t < _e48)) {
-                Hit _e51 = finish_hit(probe, _e43, instances, triangles, attributes, _buffer_sizes);
+                Hit _e51 = finish_hit(probe, _e43, instances, triangles, hit_error, attributes, _buffer_sizes);
                 if (!(_e51.front_face)) {
                     inside = slot_4 + 1u;
                     nearest = _e43.t;
@@ -901,11 +942,11 @@ Candidate intersect_scene(
     metal::float3 _e16 = safe_inverse(ray_7.dir);
     uint base_2 = frame_2.tlas_root;
     GpuNode header_2 = nodes[base_2];
-    metal::float3 origin_4 = header_2.min;
+    metal::float3 origin_5 = header_2.min;
     metal::float3 scale_3 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_4, _e23, ray_7.origin, _e16, ray_7.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
@@ -935,7 +976,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_7 = nodes[base_2 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_7, origin_4, scale_3, ray_7, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_7, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1060,11 +1101,11 @@ metal::float3 through_medium(
     if (ray_12.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_7 = instances[ray_12.medium - 1u];
-    if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
+    GpuInstance inst_8 = instances[ray_12.medium - 1u];
+    if ((inst_8.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_12, t_1, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_12, t_1, radiance_1);
     return _e21;
 }
 
@@ -1176,18 +1217,18 @@ metal::float4 sample_texture(
     float w_4 = static_cast<float>(metal::max(_e6, 1u));
     uint _e14 = params[t_3 + 2u];
     float h_3 = static_cast<float>(metal::max(_e14, 1u));
-    metal::float2 p_5 = (uv * metal::float2(w_4, h_3)) - metal::float2(0.5);
-    metal::float2 f_1 = metal::floor(p_5);
-    metal::float2 fr = p_5 - f_1;
+    metal::float2 p_7 = (uv * metal::float2(w_4, h_3)) - metal::float2(0.5);
+    metal::float2 f_1 = metal::floor(p_7);
+    metal::float2 fr = p_7 - f_1;
     int _e26 = i32_from_f32_(f_1.x);
     int _e28 = i32_from_f32_(f_1.y);
     metal::float4 _e29 = texel_at(t_3, _e26, _e28, params, texels, _buffer_sizes);
     metal::float4 _e32 = texel_at(t_3, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), _e28, params, texels, _buffer_sizes);
-    metal::float4 a_6 = metal::mix(_e29, _e32, metal::float4(fr.x));
+    metal::float4 a_7 = metal::mix(_e29, _e32, metal::float4(fr.x));
     metal::float4 _e38 = texel_at(t_3, _e26, as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
     metal::float4 _e43 = texel_at(t_3, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
     metal::float4 b_8 = metal::mix(_e38, _e43, metal::float4(fr.x));
-    return metal::mix(a_6, b_8, metal::float4(fr.y));
+    return metal::mix(a_7, b_8, metal::float4(fr.y));
 }
 
 uint light_count_query(
@@ -1214,19 +1255,27 @@ PointLight load_PointLight(
     return PointLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)};
 }
 
-metal::float3 offset_origin(
-    metal::float3 p_4,
-    metal::float3 n_3,
-    constant FrameUniforms& frame,
-    device type_9 const& nodes,
-    constant _mslBufferSizes& _buffer_sizes
+metal::float3 step_toward(
+    metal::float3 x_3,
+    metal::float3 s
 ) {
-    FrameUniforms _e3 = frame;
-    GpuNode header_3 = nodes[_e3.tlas_root];
-    metal::float3 _e11 = node_frame_hi(header_3);
-    metal::float3 a_7 = metal::max(metal::abs(p_4), metal::max(metal::abs(header_3.min), metal::abs(_e11)));
-    float m_5 = metal::max(metal::max(a_7.x, a_7.y), a_7.z);
-    return p_4 + (n_3 * metal::float3(m_5 * (1.0 / 65536.0)));
+    metal::uint3 bits_1 = as_type<metal::uint3>(x_3);
+    metal::bool3 up_1 = (metal::sign(x_3) * metal::sign(s)) > metal::float3(0.0);
+    metal::float3 stepped = as_type<metal::float3>(metal::select(bits_1 - metal::uint3(1u), bits_1 + metal::uint3(1u), up_1));
+    metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s > metal::float3(0.0));
+    metal::float3 moved = metal::select(stepped, from_zero, x_3 == metal::float3(0.0));
+    return metal::select(x_3, moved, !((s == metal::float3(0.0))));
+}
+
+metal::float3 offset_origin(
+    metal::float3 p_5,
+    metal::float3 n_3,
+    float error
+) {
+    float d_3 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
+    metal::float3 offset_13 = n_3 * metal::float3(d_3);
+    metal::float3 _e17 = step_toward(p_5 + offset_13, offset_13);
+    return _e17;
 }
 
 float shadow_query(
@@ -1240,21 +1289,37 @@ float shadow_query(
     device type_9 const& nodes,
     device type_10 const& triangles,
     thread type_12& traversal_stack,
+    thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 n_4 = {};
+    float tmax_4 = {};
     n_4 = normal;
     metal::float3 _e5 = n_4;
     if (metal::dot(dir, _e5) < 0.0) {
         metal::float3 _e9 = n_4;
         n_4 = -(_e9);
     }
-    metal::float3 _e11 = n_4;
-    metal::float3 _e12 = offset_origin(position, _e11, frame, nodes, _buffer_sizes);
-    Ray ray_24 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
-    Candidate _e23 = intersect_scene(ray_24, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-    return (_e23.slot != NO_HIT) ? 0.0 : 1.0;
+    metal::float3 a_8 = metal::abs(position);
+    float _e13 = hit_error;
+    float error_2 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_8.x, a_8.y), a_8.z));
+    metal::float3 _e22 = n_4;
+    metal::float3 _e23 = offset_origin(position, _e22, error_2);
+    uint _e25 = F32_INF;
+    tmax_4 = as_type<float>(_e25);
+    uint _e29 = F32_INF;
+    if (dist < as_type<float>(_e29)) {
+        metal::float3 light = position + (dir * metal::float3(dist));
+        float dd_1 = metal::dot(dir, dir);
+        float along_1 = metal::dot(light - _e23, dir) / dd_1;
+        metal::float3 l_1 = metal::abs(position) + metal::abs(dir * metal::float3(dist));
+        tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_1.x, l_1.y), l_1.z)) / metal::sqrt(dd_1));
+    }
+    float _e59 = tmax_4;
+    Ray ray_24 = Ray {_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u};
+    Candidate _e65 = intersect_scene(ray_24, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return (_e65.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
 LightSample point_light(
@@ -1267,6 +1332,7 @@ LightSample point_light(
     device type_9 const& nodes,
     device type_10 const& triangles,
     thread type_12& traversal_stack,
+    thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1279,7 +1345,7 @@ LightSample point_light(
         float _e19 = strength;
         strength = _e19 * (1.0 - metal::smoothstep(l.inner_range, l.range, dist_1));
     }
-    float _e26 = shadow_query(position_1, normal_1, dir_3, dist_1, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    float _e26 = shadow_query(position_1, normal_1, dir_3, dist_1, frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     float _e28 = strength;
     return LightSample {dir_3, dist_1, (l.color * metal::float3(_e28)) * metal::float3(_e26)};
 }
@@ -1296,11 +1362,12 @@ LightSample dispatch_light(
     device type_9 const& nodes,
     device type_10 const& triangles,
     thread type_12& traversal_stack,
+    thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PointLight _e3 = load_PointLight(offset_7, params, _buffer_sizes);
-    LightSample _e4 = point_light(_e3, position_2, normal_2, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e4 = point_light(_e3, position_2, normal_2, frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e4;
 }
 
@@ -1315,6 +1382,7 @@ LightSample sample_light_query(
     device type_9 const& nodes,
     device type_10 const& triangles,
     thread type_12& traversal_stack,
+    thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1325,7 +1393,7 @@ LightSample sample_light_query(
     uint entry = frame_4.light_table + (i_1 * 2u);
     uint _e21 = params[entry];
     uint _e26 = params[entry + 1u];
-    LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e27;
 }
 
@@ -1340,6 +1408,7 @@ metal::float3 blinn_phong_shade(
     device type_9 const& nodes,
     device type_10 const& triangles,
     thread type_12& traversal_stack,
+    thread float& hit_error,
     thread uint& ray_count,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
@@ -1351,8 +1420,8 @@ metal::float3 blinn_phong_shade(
     metal::float3 v_2 = -(_e5);
     metal::float4 _e12 = sample_texture(m.texture, hit_2.uv * m.uv_scale, params, texels, _buffer_sizes);
     metal::float3 kd = m.diffuse * _e12.xyz;
-    float s_4 = metal::max(m.shininess, 0.0);
-    float norm = (s_4 + 8.0) * (INV_PI / 8.0);
+    float s_5 = metal::max(m.shininess, 0.0);
+    float norm = (s_5 + 8.0) * (INV_PI / 8.0);
     color = m.ambient * kd;
     uint _e28 = light_count_query(frame);
     i_2 = 0u;
@@ -1371,10 +1440,10 @@ metal::float3 blinn_phong_shade(
             break;
         }
         uint _e32 = i_2;
-        LightSample _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        LightSample _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
         float ndl = metal::max(metal::dot(_e3, _e35.dir), 0.0);
         metal::float3 _e42 = normalize_vec3f(_e35.dir + v_2);
-        float highlight = metal::pow(metal::max(metal::dot(_e3, _e42), 0.0), s_4) * norm;
+        float highlight = metal::pow(metal::max(metal::dot(_e3, _e42), 0.0), s_5) * norm;
         metal::float3 _e48 = color;
         color = _e48 + ((_e35.radiance * metal::float3(ndl)) * ((kd * metal::float3(INV_PI)) + (m.specular * metal::float3(highlight))));
     }
@@ -1404,6 +1473,7 @@ metal::float3 lambert_shade(
     device type_9 const& nodes,
     device type_10 const& triangles,
     thread type_12& traversal_stack,
+    thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1428,7 +1498,7 @@ metal::float3 lambert_shade(
             break;
         }
         uint _e12 = i_3;
-        LightSample _e15 = sample_light_query(_e12, hit_3.position, hit_3.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        LightSample _e15 = sample_light_query(_e12, hit_3.position, hit_3.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
         metal::float3 _e16 = color_1;
         color_1 = _e16 + (((m_1.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
     }
@@ -1502,6 +1572,7 @@ metal::float3 dispatch_closest_hit(
     device type_9 const& nodes,
     device type_10 const& triangles,
     thread type_12& traversal_stack,
+    thread float& hit_error,
     thread uint& ray_count,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
@@ -1509,12 +1580,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             BlinnPhong _e5 = load_BlinnPhong(offset_11, params, _buffer_sizes);
-            metal::float3 _e6 = blinn_phong_shade(_e5, ray_18, hit_6, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, texels, _buffer_sizes);
+            metal::float3 _e6 = blinn_phong_shade(_e5, ray_18, hit_6, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
             return _e6;
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_11, params, _buffer_sizes);
-            metal::float3 _e8 = lambert_shade(_e7, ray_18, hit_6, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e8 = lambert_shade(_e7, ray_18, hit_6, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
             return _e8;
         }
         case 2u: {
@@ -1544,14 +1615,15 @@ metal::float3 shade_direct(
     device type_9 const& nodes,
     device type_10 const& triangles,
     thread type_12& traversal_stack,
+    thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuInstance inst_8 = instances[c_3.slot];
-    Hit _e6 = finish_hit(ray_19, c_3, instances, triangles, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, texels, _buffer_sizes);
+    GpuInstance inst_9 = instances[c_3.slot];
+    Hit _e6 = finish_hit(ray_19, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_19, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
     return _e11;
 }
 
@@ -1601,21 +1673,19 @@ void dispatch_secondary_rays(
 
 metal::float3 spawn_origin(
     Hit hit_9,
-    metal::float3 dir_2,
-    constant FrameUniforms& frame,
-    device type_9 const& nodes,
-    constant _mslBufferSizes& _buffer_sizes
+    float error_1,
+    metal::float3 dir_2
 ) {
     metal::float3 n_5 = {};
     n_5 = hit_9.geometric_normal;
-    metal::float3 _e4 = n_5;
-    if (metal::dot(dir_2, _e4) < 0.0) {
-        metal::float3 _e8 = n_5;
-        n_5 = -(_e8);
+    metal::float3 _e5 = n_5;
+    if (metal::dot(dir_2, _e5) < 0.0) {
+        metal::float3 _e9 = n_5;
+        n_5 = -(_e9);
     }
-    metal::float3 _e11 = n_5;
-    metal::float3 _e12 = offset_origin(hit_9.position, _e11, frame, nodes, _buffer_sizes);
-    return _e12;
+    metal::float3 _e12 = n_5;
+    metal::float3 _e13 = offset_origin(hit_9.position, _e12, error_1);
+    return _e13;
 }
 
 metal::float3 trace(
@@ -1627,6 +1697,7 @@ metal::float3 trace(
     device type_9 const& nodes,
     device type_10 const& triangles,
     thread type_12& traversal_stack,
+    thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
     device type_4 const& texels,
@@ -1647,14 +1718,15 @@ metal::float3 trace(
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
         if (_e4.slot == NO_HIT) {
-            uint _e9 = F32_INF;
-            metal::float3 _e11 = miss(camera_ray, frame, params, _buffer_sizes);
-            metal::float3 _e12 = through_medium(camera_ray, as_type<float>(_e9), _e11, instances, _buffer_sizes);
-            return _e12;
+            hit_error = 0.0;
+            uint _e11 = F32_INF;
+            metal::float3 _e13 = miss(camera_ray, frame, params, _buffer_sizes);
+            metal::float3 _e14 = through_medium(camera_ray, as_type<float>(_e11), _e13, instances, _buffer_sizes);
+            return _e14;
         }
-        metal::float3 _e14 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, texels, _buffer_sizes);
-        metal::float3 _e15 = through_medium(camera_ray, _e4.t, _e14, instances, _buffer_sizes);
-        return _e15;
+        metal::float3 _e16 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, _buffer_sizes);
+        metal::float3 _e17 = through_medium(camera_ray, _e4.t, _e16, instances, _buffer_sizes);
+        return _e17;
     }
     stack = type_17 {};
     depth = 0u;
@@ -1665,34 +1737,36 @@ metal::float3 trace(
     while(true) {
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        bool _e26 = have_value;
-        if (!(_e26)) {
-            Ray _e28 = ray_22;
-            Candidate _e30 = intersect_scene(_e28, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-            if (_e30.slot == NO_HIT) {
-                Ray _e34 = ray_22;
-                uint _e36 = F32_INF;
+        bool _e28 = have_value;
+        if (!(_e28)) {
+            Ray _e30 = ray_22;
+            Candidate _e32 = intersect_scene(_e30, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+            if (_e32.slot == NO_HIT) {
+                hit_error = 0.0;
                 Ray _e38 = ray_22;
-                metal::float3 _e39 = miss(_e38, frame, params, _buffer_sizes);
-                metal::float3 _e40 = through_medium(_e34, as_type<float>(_e36), _e39, instances, _buffer_sizes);
-                value = _e40;
+                uint _e40 = F32_INF;
+                Ray _e42 = ray_22;
+                metal::float3 _e43 = miss(_e42, frame, params, _buffer_sizes);
+                metal::float3 _e44 = through_medium(_e38, as_type<float>(_e40), _e43, instances, _buffer_sizes);
+                value = _e44;
                 have_value = true;
             } else {
-                GpuInstance inst_9 = instances[_e30.slot];
-                Ray _e46 = ray_22;
-                Hit _e47 = finish_hit(_e46, _e30, instances, triangles, attributes, _buffer_sizes);
+                GpuInstance inst_10 = instances[_e32.slot];
+                Ray _e50 = ray_22;
+                Hit _e51 = finish_hit(_e50, _e32, instances, triangles, hit_error, attributes, _buffer_sizes);
+                float error_3 = hit_error;
                 pushed = false;
-                uint _e56 = ray_22.depth;
-                uint _e60 = depth;
-                if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
+                uint _e62 = ray_22.depth;
+                uint _e66 = depth;
+                if ((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_22;
-                    dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-                    uint _e70 = spawn_count;
-                    uint n_8 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
+                    Ray _e74 = ray_22;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+                    uint _e76 = spawn_count;
+                    uint n_8 = metal::min(metal::min(_e76, 1u), MAX_SPAWN);
                     if (n_8 > 0u) {
-                        Ray _e77 = ray_22;
-                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_8, 0u};
+                        Ray _e83 = ray_22;
+                        f = Frame {_e83, _e51, error_3, _e32.slot, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_8, 0u};
                         i_4 = 0u;
                         uint2 loop_bound_7 = uint2(4294967295u);
                         bool loop_init_4 = true;
@@ -1700,85 +1774,88 @@ metal::float3 trace(
                             if (metal::all(loop_bound_7 == uint2(0u))) { break; }
                             loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                             if (!loop_init_4) {
-                                uint _e108 = i_4;
-                                i_4 = _e108 + 1u;
+                                uint _e114 = i_4;
+                                i_4 = _e114 + 1u;
                             }
                             loop_init_4 = false;
-                            uint _e88 = i_4;
-                            if (_e88 >= n_8) {
+                            uint _e94 = i_4;
+                            if (_e94 >= n_8) {
                                 break;
                             }
-                            uint _e91 = i_4;
-                            uint _e95 = i_4;
-                            metal::float3 _e98 = spawn_dirs.inner[_e95];
-                            f.dirs.inner[metal::min(_e91, 0u)] = _e98;
-                            uint _e100 = i_4;
-                            uint _e104 = i_4;
-                            metal::float3 _e107 = spawn_weights.inner[_e104];
-                            f.weights.inner[metal::min(_e100, 0u)] = _e107;
+                            uint _e97 = i_4;
+                            uint _e101 = i_4;
+                            metal::float3 _e104 = spawn_dirs.inner[_e101];
+                            f.dirs.inner[metal::min(_e97, 0u)] = _e104;
+                            uint _e106 = i_4;
+                            uint _e110 = i_4;
+                            metal::float3 _e113 = spawn_weights.inner[_e110];
+                            f.weights.inner[metal::min(_e106, 0u)] = _e113;
                         }
-                        uint _e111 = depth;
-                        Frame _e115 = f;
-                        stack.inner[metal::min(_e111, 2u)] = _e115;
-                        uint _e116 = depth;
-                        depth = _e116 + 1u;
+                        uint _e117 = depth;
+                        Frame _e121 = f;
+                        stack.inner[metal::min(_e117, 2u)] = _e121;
+                        uint _e122 = depth;
+                        depth = _e122 + 1u;
                         pushed = true;
                     }
                 }
-                bool _e120 = pushed;
-                if (!(_e120)) {
-                    Ray _e124 = ray_22;
-                    metal::float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, texels, _buffer_sizes);
-                    Ray _e128 = ray_22;
-                    metal::float3 _e130 = through_medium(_e128, _e30.t, _e127, instances, _buffer_sizes);
-                    value = _e130;
+                bool _e126 = pushed;
+                if (!(_e126)) {
+                    Ray _e130 = ray_22;
+                    metal::float3 _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
+                    Ray _e134 = ray_22;
+                    metal::float3 _e136 = through_medium(_e134, _e32.t, _e133, instances, _buffer_sizes);
+                    value = _e136;
                     have_value = true;
                 }
             }
         }
-        bool _e132 = have_value;
-        if (_e132) {
-            uint _e133 = depth;
-            if (_e133 == 0u) {
-                metal::float3 _e136 = value;
-                return _e136;
+        bool _e138 = have_value;
+        if (_e138) {
+            uint _e139 = depth;
+            if (_e139 == 0u) {
+                metal::float3 _e142 = value;
+                return _e142;
             }
-            uint _e137 = depth;
-            uint top = _e137 - 1u;
-            uint _e144 = stack.inner[metal::min(top, 2u)].next;
-            uint child_2 = _e144 - 1u;
-            metal::float3 _e151 = stack.inner[metal::min(top, 2u)].sum;
-            metal::float3 _e159 = stack.inner[metal::min(top, 2u)].weights.inner[metal::min(child_2, 0u)];
-            metal::float3 _e160 = value;
-            stack.inner[metal::min(top, 2u)].sum = _e151 + (_e159 * _e160);
+            uint _e143 = depth;
+            uint top = _e143 - 1u;
+            uint _e150 = stack.inner[metal::min(top, 2u)].next;
+            uint child_2 = _e150 - 1u;
+            metal::float3 _e157 = stack.inner[metal::min(top, 2u)].sum;
+            metal::float3 _e165 = stack.inner[metal::min(top, 2u)].weights.inner[metal::min(child_2, 0u)];
+            metal::float3 _e166 = value;
+            stack.inner[metal::min(top, 2u)].sum = _e157 + (_e165 * _e166);
             have_value = false;
         }
-        uint _e164 = depth;
-        uint top_1 = _e164 - 1u;
-        uint _e171 = stack.inner[metal::min(top_1, 2u)].next;
-        uint _e176 = stack.inner[metal::min(top_1, 2u)].count;
-        if (_e171 < _e176) {
+        uint _e170 = depth;
+        uint top_1 = _e170 - 1u;
+        uint _e177 = stack.inner[metal::min(top_1, 2u)].next;
+        uint _e182 = stack.inner[metal::min(top_1, 2u)].count;
+        if (_e177 < _e182) {
             uint i_5 = stack.inner[metal::min(top_1, 2u)].next;
             stack.inner[metal::min(top_1, 2u)].next = i_5 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 2u)].ray;
             Hit hit_11 = stack.inner[metal::min(top_1, 2u)].hit;
             metal::float3 dir_4 = stack.inner[metal::min(top_1, 2u)].dirs.inner[metal::min(i_5, 0u)];
             medium = parent.medium;
-            metal::float3 _e209 = spawn_origin(hit_11, dir_4, frame, nodes, _buffer_sizes);
-            uint _e212 = F32_INF;
-            uint _e218 = medium;
-            ray_22 = Ray {_e209, 0.0, dir_4, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
+            float _e219 = stack.inner[metal::min(top_1, 2u)].error;
+            metal::float3 _e220 = spawn_origin(hit_11, _e219, dir_4);
+            uint _e223 = F32_INF;
+            uint _e229 = medium;
+            ray_22 = Ray {_e220, 0.0, dir_4, as_type<float>(_e223), parent.depth + 1u, RAY_SECONDARY, _e229};
         } else {
-            uint _e224 = stack.inner[metal::min(top_1, 2u)].slot;
-            GpuInstance inst_10 = instances[_e224];
-            Ray _e234 = stack.inner[metal::min(top_1, 2u)].ray;
-            Hit _e239 = stack.inner[metal::min(top_1, 2u)].hit;
-            metal::float3 _e244 = stack.inner[metal::min(top_1, 2u)].sum;
-            metal::float3 _e245 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e234, _e239, _e244, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, texels, _buffer_sizes);
-            Ray _e250 = stack.inner[metal::min(top_1, 2u)].ray;
-            float _e256 = stack.inner[metal::min(top_1, 2u)].hit.t;
-            metal::float3 _e257 = through_medium(_e250, _e256, _e245, instances, _buffer_sizes);
-            value = _e257;
+            uint _e235 = stack.inner[metal::min(top_1, 2u)].slot;
+            GpuInstance inst_11 = instances[_e235];
+            float _e243 = stack.inner[metal::min(top_1, 2u)].error;
+            hit_error = _e243;
+            Ray _e251 = stack.inner[metal::min(top_1, 2u)].ray;
+            Hit _e256 = stack.inner[metal::min(top_1, 2u)].hit;
+            metal::float3 _e261 = stack.inner[metal::min(top_1, 2u)].sum;
+            metal::float3 _e262 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e251, _e256, _e261, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
+            Ray _e267 = stack.inner[metal::min(top_1, 2u)].ray;
+            float _e273 = stack.inner[metal::min(top_1, 2u)].hit.t;
+            metal::float3 _e274 = through_medium(_e267, _e273, _e262, instances, _buffer_sizes);
+            value = _e274;
             depth = top_1;
             have_value = true;
         }
@@ -1787,9 +1864,9 @@ metal::float3 trace(
 }
 
 metal::bool3 is_finite_vec3f(
-    metal::float3 x_3
+    metal::float3 x_4
 ) {
-    return (as_type<metal::uint3>(x_3) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+    return (as_type<metal::uint3>(x_4) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
 }
 
 metal::float3 finite_or_zero(
@@ -1810,6 +1887,7 @@ void render_pixel(
     device type_9 const& nodes,
     device type_10 const& triangles,
     thread type_12& traversal_stack,
+    thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
     device type_4 const& texels,
@@ -1822,29 +1900,29 @@ void render_pixel(
 ) {
     metal::float3 sum = {};
     uint bad = {};
-    uint s = {};
+    uint s_1 = {};
     Ray ray_23 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
     sum = metal::float3(0.0);
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
-    s = 0u;
+    s_1 = 0u;
     uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_5 = true;
     while(true) {
         if (metal::all(loop_bound_8 == uint2(0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e46 = s;
-            s = _e46 + 1u;
+            uint _e46 = s_1;
+            s_1 = _e46 + 1u;
         }
         loop_init_5 = false;
-        uint _e13 = s;
+        uint _e13 = s_1;
         if (_e13 >= end_1) {
             break;
         }
-        uint _e18 = s;
+        uint _e18 = s_1;
         uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
@@ -1852,10 +1930,10 @@ void render_pixel(
         ray_23.depth = 0u;
         ray_23.kind = RAY_CAMERA;
         metal::float3 _e31 = ray_23.origin;
-        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, _buffer_sizes);
+        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
         ray_23.medium = _e33;
         Ray _e34 = ray_23;
-        metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {
             metal::float3 _e38 = sum;
@@ -1896,6 +1974,7 @@ void render_invocation(
     device type_9 const& nodes,
     device type_10 const& triangles,
     thread type_12& traversal_stack,
+    thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
     device type_4 const& texels,
@@ -1924,7 +2003,7 @@ void render_invocation(
     if (metal::any(local >= tile_2.extent)) {
         return;
     }
-    render_pixel(tile_2.origin + local, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_pixel(tile_2.origin + local, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }
 
@@ -1947,10 +2026,11 @@ struct renderInput {
     uint rng_state = {};
     uint F32_INF = 2139095040u;
     type_12 traversal_stack = {};
+    float hit_error = {};
     uint ray_count = {};
     type_16 spawn_dirs = {};
     type_16 spawn_weights = {};
     uint spawn_count = {};
-    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }

@@ -127,6 +127,7 @@ struct PointLight {
 struct Frame {
     ray: Ray,
     hit: Hit,
+    error: f32,
     slot: u32,
     sum: vec3<f32>,
     dirs: array<vec3<f32>, 1>,
@@ -148,10 +149,15 @@ const NODE_COUNT_MASK: u32 = 15u;
 const NODE_FIRST_MASK: u32 = 134217727u;
 const BLAS_STACK: u32 = 64u;
 const TLAS_STACK: u32 = 17u;
+const POINT_ERROR: f32 = 0.0000019073486f;
+const GAMMA_1_: f32 = 0.00000005960465f;
+const GAMMA_6_: f32 = 0.0000003576281f;
+const GAMMA_4_: f32 = 0.00000023841864f;
 const HAS_SECONDARY_RAYS: bool = false;
 const HAS_BACKGROUND: bool = true;
 const FLAG_MEDIUM: u32 = 4u;
 const INV_PI: f32 = 0.31830987f;
+const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
 const FLAG_SECONDARY: u32 = 2u;
 const MAX_DEPTH: u32 = 0u;
@@ -174,6 +180,7 @@ var<storage> nodes: array<GpuNode>;
 @group(0) @binding(4) 
 var<storage> triangles: array<vec4<f32>>;
 var<private> traversal_stack: array<u32, 81>;
+var<private> hit_error: f32;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
 var<private> ray_count: u32;
@@ -261,9 +268,9 @@ fn samples_per_pixel_query() -> u32 {
 
 fn rand_next() -> f32 {
     let _e1 = rng_state;
-    let s_1 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_1;
-    let word_1 = (((s_1 >> (((s_1 >> 28u) + 4u) & 31u)) ^ s_1) * 277803737u);
+    let s_2 = ((_e1 * 747796405u) + 2891336453u);
+    rng_state = s_2;
+    let word_1 = (((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u);
     let r_3 = ((word_1 >> 22u) ^ word_1);
     return (f32((r_3 >> 8u)) * (1f / 16777216f));
 }
@@ -325,8 +332,8 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_2 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_2 * tiny), (abs(d) < tiny));
+    let s_3 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_3 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
@@ -438,7 +445,7 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
     let _e9 = prepare_triangle_ray(ray_4);
     let base_1 = inst_2.blas_root;
     let header_1 = nodes[base_1];
-    let origin_3 = header_1.min;
+    let origin_4 = header_1.min;
     let scale_2 = header_1.max;
     sp_1 = 0u;
     child = header_1.a;
@@ -480,7 +487,7 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
             let _e62 = child;
             let n_6 = nodes[(base_1 + _e62)];
             let _e68 = best.t;
-            let _e69 = children_entry(n_6, origin_3, scale_2, ray_4, _e8, _e68);
+            let _e69 = children_entry(n_6, origin_4, scale_2, ray_4, _e8, _e68);
             let tl = _e69.x;
             let tr = _e69.y;
             let _e73 = F32_INF;
@@ -530,23 +537,28 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
 fn intersect_object(slot_2: u32, ray_5: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
-    let inst_5 = instances[slot_2];
-    let _e7 = to_object(inst_5, ray_5);
+    let inst_6 = instances[slot_2];
+    let _e7 = to_object(inst_6, ray_5);
     r_2 = _e7;
     r_2.tmax = best_1.t;
-    if (inst_5.geometry_type == MESH_GEOMETRY) {
+    if (inst_6.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_5, slot_2, ray_5, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_6, slot_2, ray_5, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
 }
 
+fn point_error(origin_3: vec3<f32>, along: vec3<f32>) -> f32 {
+    let a_6 = (abs(origin_3) + abs(along));
+    return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
+}
+
 fn load_triangle(slot_3: u32) -> Triangle {
-    let v0_ = triangles[(slot_3 * 3u)];
+    let v0_1 = triangles[(slot_3 * 3u)];
     let v1_ = triangles[((slot_3 * 3u) + 1u)];
     let v2_ = triangles[((slot_3 * 3u) + 2u)];
-    return Triangle(v0_.xyz, v1_.xyz, v2_.xyz);
+    return Triangle(v0_1.xyz, v1_.xyz, v2_.xyz);
 }
 
 fn point_to_world(inst_3: GpuInstance, p_2: vec3<f32>) -> vec3<f32> {
@@ -554,17 +566,29 @@ fn point_to_world(inst_3: GpuInstance, p_2: vec3<f32>) -> vec3<f32> {
     return vec3<f32>(dot(inst_3.object_to_world_0_, q_1), dot(inst_3.object_to_world_1_, q_1), dot(inst_3.object_to_world_2_, q_1));
 }
 
+fn mesh_error(inst_4: GpuInstance, v0_: vec3<f32>, db1_: vec3<f32>, db2_: vec3<f32>, p_3: vec3<f32>) -> f32 {
+    let obj = ((vec3(GAMMA_1_) * abs(v0_)) + (vec3(GAMMA_6_) * (abs(db1_) + abs(db2_))));
+    let q_2 = vec4<f32>(abs(p_3), 1f);
+    let r0_ = abs(inst_4.object_to_world_0_);
+    let r1_ = abs(inst_4.object_to_world_1_);
+    let r2_ = abs(inst_4.object_to_world_2_);
+    let rounding = (vec3(GAMMA_4_) * vec3<f32>(dot(r0_, q_2), dot(r1_, q_2), dot(r2_, q_2)));
+    let carried = (vec3((1f + GAMMA_4_)) * vec3<f32>(dot(r0_.xyz, obj), dot(r1_.xyz, obj), dot(r2_.xyz, obj)));
+    let e = (rounding + carried);
+    return max(max(e.x, e.y), e.z);
+}
+
 fn decode_octahedral(bits: u32) -> vec3<f32> {
     var n_1: vec3<f32>;
 
-    let e = unpack2x16snorm(bits);
-    n_1 = vec3<f32>(e.x, e.y, ((1f - abs(e.x)) - abs(e.y)));
+    let e_1 = unpack2x16snorm(bits);
+    n_1 = vec3<f32>(e_1.x, e_1.y, ((1f - abs(e_1.x)) - abs(e_1.y)));
     let _e14 = n_1.z;
     if (_e14 < 0f) {
         let _e21 = n_1;
-        let s_3 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_4 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n_1;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_3);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_4);
         let _e37 = n_1.z;
         n_1 = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -573,8 +597,8 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     return _e40;
 }
 
-fn normal_to_world(inst_4: GpuInstance, n_2: vec3<f32>) -> vec3<f32> {
-    let w_1 = (((inst_4.world_to_object_0_.xyz * vec3(n_2.x)) + (inst_4.world_to_object_1_.xyz * vec3(n_2.y))) + (inst_4.world_to_object_2_.xyz * vec3(n_2.z)));
+fn normal_to_world(inst_5: GpuInstance, n_2: vec3<f32>) -> vec3<f32> {
+    let w_1 = (((inst_5.world_to_object_0_.xyz * vec3(n_2.x)) + (inst_5.world_to_object_1_.xyz * vec3(n_2.y))) + (inst_5.world_to_object_2_.xyz * vec3(n_2.z)));
     let _e19 = normalize_vec3f(w_1);
     return _e19;
 }
@@ -584,49 +608,56 @@ fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
-    let inst_6 = instances[c_1.slot];
-    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_6.object, c_1.primitive);
+    let inst_7 = instances[c_1.slot];
+    let _e11 = point_error(ray_6.origin, (ray_6.dir * vec3(c_1.t)));
+    hit_error = _e11;
+    hit = Hit((ray_6.origin + (ray_6.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
-    if (inst_6.geometry_type == MESH_GEOMETRY) {
-        let _e35 = load_triangle(c_1.primitive);
+    if (inst_7.geometry_type == MESH_GEOMETRY) {
+        let _e42 = load_triangle(c_1.primitive);
         let b_7 = c_1.uv;
         let w_2 = ((1f - b_7.x) - b_7.y);
-        let _e56 = point_to_world(inst_6, (((_e35.v0_ * vec3(w_2)) + (_e35.v1_ * vec3(b_7.x))) + (_e35.v2_ * vec3(b_7.y))));
-        hit.position = _e56;
-        n_geo = cross((_e35.v1_ - _e35.v0_), (_e35.v2_ - _e35.v0_));
+        let e1_ = (_e42.v1_ - _e42.v0_);
+        let e2_ = (_e42.v2_ - _e42.v0_);
+        let p_6 = (_e42.v0_ + ((e1_ * vec3(b_7.x)) + (e2_ * vec3(b_7.y))));
+        let _e65 = point_to_world(inst_7, p_6);
+        hit.position = _e65;
+        let _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_7.x)), (e2_ * vec3(b_7.y)), p_6);
+        hit_error = _e73;
+        n_geo = cross(e1_, e2_);
         let a0_ = attributes[(c_1.primitive * 2u)];
         let a1_ = attributes[((c_1.primitive * 2u) + 1u)];
-        let _e79 = decode_octahedral(a0_.x);
-        let _e83 = decode_octahedral(a0_.y);
-        let _e89 = decode_octahedral(a0_.z);
-        n_shade = (((_e79 * vec3(w_2)) + (_e83 * vec3(b_7.x))) + (_e89 * vec3(b_7.y)));
-        let _e94 = n_shade;
-        let _e95 = n_shade;
-        if (dot(_e94, _e95) < 0.000000000001f) {
-            let _e99 = n_geo;
-            n_shade = _e99;
+        let _e91 = decode_octahedral(a0_.x);
+        let _e95 = decode_octahedral(a0_.y);
+        let _e101 = decode_octahedral(a0_.z);
+        n_shade = (((_e91 * vec3(w_2)) + (_e95 * vec3(b_7.x))) + (_e101 * vec3(b_7.y)));
+        let _e106 = n_shade;
+        let _e107 = n_shade;
+        if (dot(_e106, _e107) < 0.000000000001f) {
+            let _e111 = n_geo;
+            n_shade = _e111;
         }
         let uv0_ = unpack2x16float(a0_.w);
         let uv1_ = unpack2x16float(a1_.x);
         let uv2_ = unpack2x16float(a1_.y);
         hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_7.x))) + (uv2_ * vec2(b_7.y)));
-        let _e123 = triangles[(c_1.primitive * 3u)];
-        hit.primitive = bitcast<u32>(_e123.w);
+        let _e135 = triangles[(c_1.primitive * 3u)];
+        hit.primitive = bitcast<u32>(_e135.w);
     }
-    let _e127 = n_geo;
-    let _e128 = normal_to_world(inst_6, _e127);
-    hit.geometric_normal = _e128;
-    let _e130 = n_shade;
-    let _e131 = normal_to_world(inst_6, _e130);
-    hit.normal = _e131;
-    let _e135 = hit.geometric_normal;
-    hit.front_face = (dot(ray_6.dir, _e135) < 0f);
-    let _e139 = hit;
-    return _e139;
+    let _e139 = n_geo;
+    let _e140 = normal_to_world(inst_7, _e139);
+    hit.geometric_normal = _e140;
+    let _e142 = n_shade;
+    let _e143 = normal_to_world(inst_7, _e142);
+    hit.normal = _e143;
+    let _e147 = hit.geometric_normal;
+    hit.front_face = (dot(ray_6.dir, _e147) < 0f);
+    let _e151 = hit;
+    return _e151;
 }
 
-fn medium_at(p_3: vec3<f32>, exclude: u32) -> u32 {
+fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     var inside: u32;
     var nearest: f32;
     var i: u32;
@@ -637,7 +668,7 @@ fn medium_at(p_3: vec3<f32>, exclude: u32) -> u32 {
     let frame_1 = frame;
     let _e12 = normalize_vec3f(vec3<f32>(0.5773f, 0.5774f, 0.5775f));
     let _e14 = F32_INF;
-    let probe = Ray(p_3, 0f, _e12, bitcast<f32>(_e14), 0u, 0u, 0u);
+    let probe = Ray(p_4, 0f, _e12, bitcast<f32>(_e14), 0u, 0u, 0u);
     inside = 0u;
     let _e23 = F32_INF;
     nearest = bitcast<f32>(_e23);
@@ -696,11 +727,11 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
     let _e16 = safe_inverse(ray_7.dir);
     let base_2 = frame_2.tlas_root;
     let header_2 = nodes[base_2];
-    let origin_4 = header_2.min;
+    let origin_5 = header_2.min;
     let scale_3 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_4, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
+    let _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
@@ -727,7 +758,7 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
             let _e63 = child_1;
             let n_7 = nodes[(base_2 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_7, origin_4, scale_3, ray_7, _e16, _e69);
+            let _e70 = children_entry(n_7, origin_5, scale_3, ray_7, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
@@ -811,11 +842,11 @@ fn through_medium(ray_12: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if (ray_12.medium == 0u) {
         return radiance_1;
     }
-    let inst_7 = instances[(ray_12.medium - 1u)];
-    if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
+    let inst_8 = instances[(ray_12.medium - 1u)];
+    if ((inst_8.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_12, t_1, radiance_1);
+    let _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_12, t_1, radiance_1);
     return _e21;
 }
 
@@ -892,18 +923,18 @@ fn sample_texture(t_3: u32, uv: vec2<f32>) -> vec4<f32> {
     let w_4 = f32(max(_e6, 1u));
     let _e14 = params[(t_3 + 2u)];
     let h_3 = f32(max(_e14, 1u));
-    let p_5 = ((uv * vec2<f32>(w_4, h_3)) - vec2(0.5f));
-    let f_1 = floor(p_5);
-    let fr = (p_5 - f_1);
+    let p_7 = ((uv * vec2<f32>(w_4, h_3)) - vec2(0.5f));
+    let f_1 = floor(p_7);
+    let fr = (p_7 - f_1);
     let _e26 = i32_from_f32_(f_1.x);
     let _e28 = i32_from_f32_(f_1.y);
     let _e29 = texel_at(t_3, _e26, _e28);
     let _e32 = texel_at(t_3, (_e26 + 1i), _e28);
-    let a_6 = mix(_e29, _e32, vec4(fr.x));
+    let a_7 = mix(_e29, _e32, vec4(fr.x));
     let _e38 = texel_at(t_3, _e26, (_e28 + 1i));
     let _e43 = texel_at(t_3, (_e26 + 1i), (_e28 + 1i));
     let b_8 = mix(_e38, _e43, vec4(fr.x));
-    return mix(a_6, b_8, vec4(fr.y));
+    return mix(a_7, b_8, vec4(fr.y));
 }
 
 fn light_count_query() -> u32 {
@@ -924,17 +955,25 @@ fn load_PointLight(offset_6: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn offset_origin(p_4: vec3<f32>, n_3: vec3<f32>) -> vec3<f32> {
-    let _e3 = frame;
-    let header_3 = nodes[_e3.tlas_root];
-    let _e11 = node_frame_hi(header_3);
-    let a_7 = max(abs(p_4), max(abs(header_3.min), abs(_e11)));
-    let m_1 = max(max(a_7.x, a_7.y), a_7.z);
-    return (p_4 + (n_3 * vec3((m_1 * (1f / 65536f)))));
+fn step_toward(x_3: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
+    let bits_1 = bitcast<vec3<u32>>(x_3);
+    let up_1 = ((sign(x_3) * sign(s)) > vec3(0f));
+    let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
+    let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s > vec3(0f)));
+    let moved = select(stepped, from_zero, (x_3 == vec3(0f)));
+    return select(x_3, moved, !((s == vec3(0f))));
+}
+
+fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
+    let d_3 = ((2f * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
+    let offset_10 = (n_3 * vec3(d_3));
+    let _e17 = step_toward((p_5 + offset_10), offset_10);
+    return _e17;
 }
 
 fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
     var n_4: vec3<f32>;
+    var tmax_4: f32;
 
     n_4 = normal;
     let _e5 = n_4;
@@ -942,11 +981,25 @@ fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f3
         let _e9 = n_4;
         n_4 = -(_e9);
     }
-    let _e11 = n_4;
-    let _e12 = offset_origin(position, _e11);
-    let ray_20 = Ray(_e12, 0f, dir, (dist * (1f - 0.00001f)), 0u, RAY_SHADOW, 0u);
-    let _e23 = intersect_scene(ray_20, true);
-    return select(1f, 0f, (_e23.slot != NO_HIT));
+    let a_8 = abs(position);
+    let _e13 = hit_error;
+    let error_2 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
+    let _e22 = n_4;
+    let _e23 = offset_origin(position, _e22, error_2);
+    let _e25 = F32_INF;
+    tmax_4 = bitcast<f32>(_e25);
+    let _e29 = F32_INF;
+    if (dist < bitcast<f32>(_e29)) {
+        let light = (position + (dir * vec3(dist)));
+        let dd_1 = dot(dir, dir);
+        let along_1 = (dot((light - _e23), dir) / dd_1);
+        let l_1 = (abs(position) + abs((dir * vec3(dist))));
+        tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
+    }
+    let _e59 = tmax_4;
+    let ray_20 = Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
+    let _e65 = intersect_scene(ray_20, true);
+    return select(1f, 0f, (_e65.slot != NO_HIT));
 }
 
 fn point_light(l: PointLight, position_1: vec3<f32>, normal_1: vec3<f32>) -> LightSample {
@@ -992,8 +1045,8 @@ fn blinn_phong_shade(m: BlinnPhong, ray_14: Ray, hit_2: Hit) -> vec3<f32> {
     let v_2 = -(_e5);
     let _e12 = sample_texture(m.texture, (hit_2.uv * m.uv_scale));
     let kd = (m.diffuse * _e12.xyz);
-    let s_4 = max(m.shininess, 0f);
-    let norm = ((s_4 + 8f) * (INV_PI / 8f));
+    let s_5 = max(m.shininess, 0f);
+    let norm = ((s_5 + 8f) * (INV_PI / 8f));
     color = (m.ambient * kd);
     let _e28 = light_count_query();
     i_2 = 0u;
@@ -1006,7 +1059,7 @@ fn blinn_phong_shade(m: BlinnPhong, ray_14: Ray, hit_2: Hit) -> vec3<f32> {
         let _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal);
         let ndl = max(dot(_e3, _e35.dir), 0f);
         let _e42 = normalize_vec3f((_e35.dir + v_2));
-        let highlight = (pow(max(dot(_e3, _e42), 0f), s_4) * norm);
+        let highlight = (pow(max(dot(_e3, _e42), 0f), s_5) * norm);
         let _e48 = color;
         color = (_e48 + ((_e35.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m.specular * vec3(highlight)))));
         continuing {
@@ -1025,9 +1078,9 @@ fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_15: Ray, hit_3: Hit, 
 }
 
 fn shade_direct(ray_16: Ray, c_3: Candidate) -> vec3<f32> {
-    let inst_8 = instances[c_3.slot];
+    let inst_9 = instances[c_3.slot];
     let _e6 = finish_hit(ray_16, c_3);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, vec3(0f));
+    let _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_16, _e6, vec3(0f));
     return _e11;
 }
 
@@ -1035,18 +1088,18 @@ fn dispatch_secondary_rays(type_id_5: u32, offset_9: u32, ray_17: Ray, hit_4: Hi
     return;
 }
 
-fn spawn_origin(hit_5: Hit, dir_1: vec3<f32>) -> vec3<f32> {
+fn spawn_origin(hit_5: Hit, error_1: f32, dir_1: vec3<f32>) -> vec3<f32> {
     var n_5: vec3<f32>;
 
     n_5 = hit_5.geometric_normal;
-    let _e4 = n_5;
-    if (dot(dir_1, _e4) < 0f) {
-        let _e8 = n_5;
-        n_5 = -(_e8);
+    let _e5 = n_5;
+    if (dot(dir_1, _e5) < 0f) {
+        let _e9 = n_5;
+        n_5 = -(_e9);
     }
-    let _e11 = n_5;
-    let _e12 = offset_origin(hit_5.position, _e11);
-    return _e12;
+    let _e12 = n_5;
+    let _e13 = offset_origin(hit_5.position, _e12, error_1);
+    return _e13;
 }
 
 fn trace(camera_ray: Ray) -> vec3<f32> {
@@ -1063,14 +1116,15 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     if !(HAS_SECONDARY_RAYS) {
         let _e4 = intersect_scene(camera_ray, false);
         if (_e4.slot == NO_HIT) {
-            let _e9 = F32_INF;
-            let _e11 = miss(camera_ray);
-            let _e12 = through_medium(camera_ray, bitcast<f32>(_e9), _e11);
-            return _e12;
+            hit_error = 0f;
+            let _e11 = F32_INF;
+            let _e13 = miss(camera_ray);
+            let _e14 = through_medium(camera_ray, bitcast<f32>(_e11), _e13);
+            return _e14;
         }
-        let _e14 = shade_direct(camera_ray, _e4);
-        let _e15 = through_medium(camera_ray, _e4.t, _e14);
-        return _e15;
+        let _e16 = shade_direct(camera_ray, _e4);
+        let _e17 = through_medium(camera_ray, _e4.t, _e16);
+        return _e17;
     }
     stack = array<Frame, 1>();
     depth = 0u;
@@ -1078,115 +1132,120 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     value = vec3(0f);
     have_value = false;
     loop {
-        let _e26 = have_value;
-        if !(_e26) {
-            let _e28 = ray_18;
-            let _e30 = intersect_scene(_e28, false);
-            if (_e30.slot == NO_HIT) {
-                let _e34 = ray_18;
-                let _e36 = F32_INF;
+        let _e28 = have_value;
+        if !(_e28) {
+            let _e30 = ray_18;
+            let _e32 = intersect_scene(_e30, false);
+            if (_e32.slot == NO_HIT) {
+                hit_error = 0f;
                 let _e38 = ray_18;
-                let _e39 = miss(_e38);
-                let _e40 = through_medium(_e34, bitcast<f32>(_e36), _e39);
-                value = _e40;
+                let _e40 = F32_INF;
+                let _e42 = ray_18;
+                let _e43 = miss(_e42);
+                let _e44 = through_medium(_e38, bitcast<f32>(_e40), _e43);
+                value = _e44;
                 have_value = true;
             } else {
-                let inst_9 = instances[_e30.slot];
-                let _e46 = ray_18;
-                let _e47 = finish_hit(_e46, _e30);
+                let inst_10 = instances[_e32.slot];
+                let _e50 = ray_18;
+                let _e51 = finish_hit(_e50, _e32);
+                let error_3 = hit_error;
                 pushed = false;
-                let _e56 = ray_18.depth;
-                let _e60 = depth;
-                if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
+                let _e62 = ray_18.depth;
+                let _e66 = depth;
+                if ((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    let _e68 = ray_18;
-                    dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
-                    let _e70 = spawn_count;
-                    let n_8 = min(min(_e70, 1u), MAX_SPAWN);
+                    let _e74 = ray_18;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);
+                    let _e76 = spawn_count;
+                    let n_8 = min(min(_e76, 1u), MAX_SPAWN);
                     if (n_8 > 0u) {
-                        let _e77 = ray_18;
-                        f = Frame(_e77, _e47, _e30.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
+                        let _e83 = ray_18;
+                        f = Frame(_e83, _e51, error_3, _e32.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
                         i_3 = 0u;
                         loop {
-                            let _e88 = i_3;
-                            if (_e88 >= n_8) {
+                            let _e94 = i_3;
+                            if (_e94 >= n_8) {
                                 break;
                             }
-                            let _e91 = i_3;
-                            let _e95 = i_3;
-                            let _e98 = spawn_dirs[_e95];
-                            f.dirs[min(_e91, 0u)] = _e98;
-                            let _e100 = i_3;
-                            let _e104 = i_3;
-                            let _e107 = spawn_weights[_e104];
-                            f.weights[min(_e100, 0u)] = _e107;
+                            let _e97 = i_3;
+                            let _e101 = i_3;
+                            let _e104 = spawn_dirs[_e101];
+                            f.dirs[min(_e97, 0u)] = _e104;
+                            let _e106 = i_3;
+                            let _e110 = i_3;
+                            let _e113 = spawn_weights[_e110];
+                            f.weights[min(_e106, 0u)] = _e113;
                             continuing {
-                                let _e108 = i_3;
-                                i_3 = (_e108 + 1u);
+                                let _e114 = i_3;
+                                i_3 = (_e114 + 1u);
                             }
                         }
-                        let _e111 = depth;
-                        let _e115 = f;
-                        stack[min(_e111, 0u)] = _e115;
-                        let _e116 = depth;
-                        depth = (_e116 + 1u);
+                        let _e117 = depth;
+                        let _e121 = f;
+                        stack[min(_e117, 0u)] = _e121;
+                        let _e122 = depth;
+                        depth = (_e122 + 1u);
                         pushed = true;
                     }
                 }
-                let _e120 = pushed;
-                if !(_e120) {
-                    let _e124 = ray_18;
-                    let _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, vec3(0f));
-                    let _e128 = ray_18;
-                    let _e130 = through_medium(_e128, _e30.t, _e127);
-                    value = _e130;
+                let _e126 = pushed;
+                if !(_e126) {
+                    let _e130 = ray_18;
+                    let _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, vec3(0f));
+                    let _e134 = ray_18;
+                    let _e136 = through_medium(_e134, _e32.t, _e133);
+                    value = _e136;
                     have_value = true;
                 }
             }
         }
-        let _e132 = have_value;
-        if _e132 {
-            let _e133 = depth;
-            if (_e133 == 0u) {
-                let _e136 = value;
-                return _e136;
+        let _e138 = have_value;
+        if _e138 {
+            let _e139 = depth;
+            if (_e139 == 0u) {
+                let _e142 = value;
+                return _e142;
             }
-            let _e137 = depth;
-            let top = (_e137 - 1u);
-            let _e144 = stack[min(top, 0u)].next;
-            let child_2 = (_e144 - 1u);
-            let _e151 = stack[min(top, 0u)].sum;
-            let _e159 = stack[min(top, 0u)].weights[min(child_2, 0u)];
-            let _e160 = value;
-            stack[min(top, 0u)].sum = (_e151 + (_e159 * _e160));
+            let _e143 = depth;
+            let top = (_e143 - 1u);
+            let _e150 = stack[min(top, 0u)].next;
+            let child_2 = (_e150 - 1u);
+            let _e157 = stack[min(top, 0u)].sum;
+            let _e165 = stack[min(top, 0u)].weights[min(child_2, 0u)];
+            let _e166 = value;
+            stack[min(top, 0u)].sum = (_e157 + (_e165 * _e166));
             have_value = false;
         }
-        let _e164 = depth;
-        let top_1 = (_e164 - 1u);
-        let _e171 = stack[min(top_1, 0u)].next;
-        let _e176 = stack[min(top_1, 0u)].count;
-        if (_e171 < _e176) {
+        let _e170 = depth;
+        let top_1 = (_e170 - 1u);
+        let _e177 = stack[min(top_1, 0u)].next;
+        let _e182 = stack[min(top_1, 0u)].count;
+        if (_e177 < _e182) {
             let i_4 = stack[min(top_1, 0u)].next;
             stack[min(top_1, 0u)].next = (i_4 + 1u);
             let parent = stack[min(top_1, 0u)].ray;
             let hit_7 = stack[min(top_1, 0u)].hit;
             let dir_3 = stack[min(top_1, 0u)].dirs[min(i_4, 0u)];
             medium = parent.medium;
-            let _e209 = spawn_origin(hit_7, dir_3);
-            let _e212 = F32_INF;
-            let _e218 = medium;
-            ray_18 = Ray(_e209, 0f, dir_3, bitcast<f32>(_e212), (parent.depth + 1u), RAY_SECONDARY, _e218);
+            let _e219 = stack[min(top_1, 0u)].error;
+            let _e220 = spawn_origin(hit_7, _e219, dir_3);
+            let _e223 = F32_INF;
+            let _e229 = medium;
+            ray_18 = Ray(_e220, 0f, dir_3, bitcast<f32>(_e223), (parent.depth + 1u), RAY_SECONDARY, _e229);
         } else {
-            let _e224 = stack[min(top_1, 0u)].slot;
-            let inst_10 = instances[_e224];
-            let _e234 = stack[min(top_1, 0u)].ray;
-            let _e239 = stack[min(top_1, 0u)].hit;
-            let _e244 = stack[min(top_1, 0u)].sum;
-            let _e245 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e234, _e239, _e244);
-            let _e250 = stack[min(top_1, 0u)].ray;
-            let _e256 = stack[min(top_1, 0u)].hit.t;
-            let _e257 = through_medium(_e250, _e256, _e245);
-            value = _e257;
+            let _e235 = stack[min(top_1, 0u)].slot;
+            let inst_11 = instances[_e235];
+            let _e243 = stack[min(top_1, 0u)].error;
+            hit_error = _e243;
+            let _e251 = stack[min(top_1, 0u)].ray;
+            let _e256 = stack[min(top_1, 0u)].hit;
+            let _e261 = stack[min(top_1, 0u)].sum;
+            let _e262 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e251, _e256, _e261);
+            let _e267 = stack[min(top_1, 0u)].ray;
+            let _e273 = stack[min(top_1, 0u)].hit.t;
+            let _e274 = through_medium(_e267, _e273, _e262);
+            value = _e274;
             depth = top_1;
             have_value = true;
         }
@@ -1194,8 +1253,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn is_finite_vec3f(x_3: vec3<f32>) -> vec3<bool> {
-    return ((bitcast<vec3<u32>>(x_3) & vec3(2147483647u)) < vec3(2139095040u));
+fn is_finite_vec3f(x_4: vec3<f32>) -> vec3<bool> {
+    return ((bitcast<vec3<u32>>(x_4) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
 fn finite_or_zero(c_4: vec3<f32>) -> vec3<f32> {
@@ -1206,7 +1265,7 @@ fn finite_or_zero(c_4: vec3<f32>) -> vec3<f32> {
 fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
-    var s: u32;
+    var s_1: u32;
     var ray_19: Ray;
 
     let frame_5 = frame;
@@ -1214,13 +1273,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
     sum = vec3(0f);
     bad = 0u;
     let end_1 = frame_5.samples_per_pass;
-    s = 0u;
+    s_1 = 0u;
     loop {
-        let _e13 = s;
+        let _e13 = s_1;
         if (_e13 >= end_1) {
             break;
         }
-        let _e18 = s;
+        let _e18 = s_1;
         let sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
@@ -1244,8 +1303,8 @@ fn render_pixel(pixel_3: vec2<u32>) {
             bad = (_e43 + 1u);
         }
         continuing {
-            let _e46 = s;
-            s = (_e46 + 1u);
+            let _e46 = s_1;
+            s_1 = (_e46 + 1u);
         }
     }
     let _e50 = ray_count;

@@ -9,10 +9,10 @@ struct _mslBufferSizes {
     uint size5;
     uint size6;
     uint size7;
-    uint size10;
-    uint size12;
-    uint size16;
+    uint size11;
+    uint size13;
     uint size17;
+    uint size18;
 };
 
 struct TileParams {
@@ -173,14 +173,15 @@ struct type_18 {
 struct Frame {
     Ray ray;
     Hit hit;
+    float error;
     uint slot;
-    char _pad3[12];
+    char _pad4[8];
     metal::float3 sum;
     type_18 dirs;
     type_18 weights;
     uint count;
     uint next;
-    char _pad8[8];
+    char _pad9[8];
 };
 struct type_19 {
     Frame inner[4];
@@ -203,9 +204,14 @@ constant uint TLAS_STACK = 3u;
 constant uint BVH_MESH_STACK = 64u;
 constant float TAU = 6.2831855;
 constant float INV_PI = 0.31830987;
+constant float POINT_ERROR = 0.0000019073486;
+constant float GAMMA_1_ = 0.00000005960465;
+constant float GAMMA_6_ = 0.0000003576281;
+constant float GAMMA_4_ = 0.00000023841864;
 constant bool HAS_SECONDARY_RAYS = false;
 constant bool HAS_BACKGROUND = true;
 constant uint FLAG_MEDIUM = 4u;
+constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
 constant uint FLAG_SECONDARY = 2u;
 constant uint MAX_DEPTH = 4u;
@@ -324,9 +330,9 @@ float rand_next(
     thread uint& rng_state
 ) {
     uint _e1 = rng_state;
-    uint s_2 = (_e1 * 747796405u) + 2891336453u;
-    rng_state = s_2;
-    uint word_1 = ((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u;
+    uint s_3 = (_e1 * 747796405u) + 2891336453u;
+    rng_state = s_3;
+    uint word_1 = ((s_3 >> (((s_3 >> 28u) + 4u) & 31u)) ^ s_3) * 277803737u;
     uint r_4 = (word_1 >> 22u) ^ word_1;
     return static_cast<float>(r_4 >> 8u) * (1.0 / 16777216.0);
 }
@@ -412,8 +418,8 @@ metal::float3 safe_inverse(
     metal::float3 d
 ) {
     metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_3 * tiny, metal::abs(d) < tiny);
+    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_4 * tiny, metal::abs(d) < tiny);
     return metal::float3(1.0) / dd;
 }
 
@@ -578,7 +584,7 @@ Candidate intersect_mesh(
     TriangleRay _e9 = prepare_triangle_ray(ray_4);
     uint base_1 = inst_2.blas_root;
     GpuNode header_1 = nodes[base_1];
-    metal::float3 origin_3 = header_1.min;
+    metal::float3 origin_4 = header_1.min;
     metal::float3 scale_2 = header_1.max;
     sp_1 = 0u;
     child = header_1.a;
@@ -628,7 +634,7 @@ Candidate intersect_mesh(
             uint _e62 = child;
             GpuNode n_7 = nodes[base_1 + _e62];
             float _e68 = best.t;
-            metal::float2 _e69 = children_entry(n_7, origin_3, scale_2, ray_4, _e8, _e68, F32_INF);
+            metal::float2 _e69 = children_entry(n_7, origin_4, scale_2, ray_4, _e8, _e68, F32_INF);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
@@ -1054,23 +1060,23 @@ Candidate intersect_object(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray r_3 = {};
-    GpuInstance inst_5 = instances[slot_2];
-    Ray _e7 = to_object(inst_5, ray_11);
+    GpuInstance inst_6 = instances[slot_2];
+    Ray _e7 = to_object(inst_6, ray_11);
     r_3 = _e7;
     r_3.tmax = best_2.t;
-    if (inst_5.geometry_type == MESH_GEOMETRY) {
+    if (inst_6.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_3;
-        Candidate _e15 = intersect_mesh(inst_5, slot_2, ray_11, _e14, best_2, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_11, _e14, best_2, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
         return _e15;
     }
     Ray _e18 = r_3;
-    Intersection _e19 = dispatch_intersection(inst_5.geometry_type, inst_5.geometry_offset, _e18, params, F32_INF, nodes, triangles, F32_NEG_INF, _buffer_sizes);
+    Intersection _e19 = dispatch_intersection(inst_6.geometry_type, inst_6.geometry_offset, _e18, params, F32_INF, nodes, triangles, F32_NEG_INF, _buffer_sizes);
     float _e22 = r_3.tmin;
     float _e26 = r_3.tmax;
     uint _e31 = F32_INF;
     if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < as_type<float>(_e31))) {
         Candidate c_7 = Candidate {_e19.t, slot_2, 0u, {}, _e19.uv, {}, _e19.normal};
-        bool _e40 = accept(inst_5, ray_11, c_7);
+        bool _e40 = accept(inst_6, ray_11, c_7);
         if (_e40) {
             return c_7;
         }
@@ -1078,15 +1084,23 @@ Candidate intersect_object(
     return best_2;
 }
 
+float point_error(
+    metal::float3 origin_3,
+    metal::float3 along
+) {
+    metal::float3 a_7 = metal::abs(origin_3) + metal::abs(along);
+    return POINT_ERROR * metal::max(metal::max(a_7.x, a_7.y), a_7.z);
+}
+
 Triangle load_triangle(
     uint slot_3,
     device type_10 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 v0_ = triangles[slot_3 * 3u];
+    metal::float4 v0_1 = triangles[slot_3 * 3u];
     metal::float4 v1_ = triangles[(slot_3 * 3u) + 1u];
     metal::float4 v2_ = triangles[(slot_3 * 3u) + 2u];
-    return Triangle {v0_.xyz, v1_.xyz, v2_.xyz};
+    return Triangle {v0_1.xyz, v1_.xyz, v2_.xyz};
 }
 
 metal::float3 point_to_world(
@@ -1097,18 +1111,36 @@ metal::float3 point_to_world(
     return metal::float3(metal::dot(inst_3.object_to_world_0_, q_3), metal::dot(inst_3.object_to_world_1_, q_3), metal::dot(inst_3.object_to_world_2_, q_3));
 }
 
+float mesh_error(
+    GpuInstance inst_4,
+    metal::float3 v0_,
+    metal::float3 db1_,
+    metal::float3 db2_,
+    metal::float3 p_3
+) {
+    metal::float3 obj = (metal::float3(GAMMA_1_) * metal::abs(v0_)) + (metal::float3(GAMMA_6_) * (metal::abs(db1_) + metal::abs(db2_)));
+    metal::float4 q_4 = metal::float4(metal::abs(p_3), 1.0);
+    metal::float4 r0_ = metal::abs(inst_4.object_to_world_0_);
+    metal::float4 r1_ = metal::abs(inst_4.object_to_world_1_);
+    metal::float4 r2_1 = metal::abs(inst_4.object_to_world_2_);
+    metal::float3 rounding = metal::float3(GAMMA_4_) * metal::float3(metal::dot(r0_, q_4), metal::dot(r1_, q_4), metal::dot(r2_1, q_4));
+    metal::float3 carried = metal::float3(1.0 + GAMMA_4_) * metal::float3(metal::dot(r0_.xyz, obj), metal::dot(r1_.xyz, obj), metal::dot(r2_1.xyz, obj));
+    metal::float3 e = rounding + carried;
+    return metal::max(metal::max(e.x, e.y), e.z);
+}
+
 metal::float3 decode_octahedral(
     uint bits
 ) {
     metal::float3 n_2 = {};
-    metal::float2 e = metal::unpack_snorm2x16_to_float(bits);
-    n_2 = metal::float3(e.x, e.y, (1.0 - metal::abs(e.x)) - metal::abs(e.y));
+    metal::float2 e_1 = metal::unpack_snorm2x16_to_float(bits);
+    n_2 = metal::float3(e_1.x, e_1.y, (1.0 - metal::abs(e_1.x)) - metal::abs(e_1.y));
     float _e14 = n_2.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n_2;
-        metal::float2 s_4 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float2 s_5 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
         metal::float3 _e29 = n_2;
-        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_4;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_5;
         float _e37 = n_2.z;
         n_2 = metal::float3(xy.x, xy.y, _e37);
     }
@@ -1118,10 +1150,10 @@ metal::float3 decode_octahedral(
 }
 
 metal::float3 normal_to_world(
-    GpuInstance inst_4,
+    GpuInstance inst_5,
     metal::float3 n_3
 ) {
-    metal::float3 w_2 = ((inst_4.world_to_object_0_.xyz * metal::float3(n_3.x)) + (inst_4.world_to_object_1_.xyz * metal::float3(n_3.y))) + (inst_4.world_to_object_2_.xyz * metal::float3(n_3.z));
+    metal::float3 w_2 = ((inst_5.world_to_object_0_.xyz * metal::float3(n_3.x)) + (inst_5.world_to_object_1_.xyz * metal::float3(n_3.y))) + (inst_5.world_to_object_2_.xyz * metal::float3(n_3.z));
     metal::float3 _e19 = normalize_vec3f(w_2);
     return _e19;
 }
@@ -1131,56 +1163,64 @@ Hit finish_hit(
     Candidate c_1,
     device type_8 const& instances,
     device type_10 const& triangles,
+    thread float& hit_error,
     device type_16 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Hit hit = {};
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
-    GpuInstance inst_6 = instances[c_1.slot];
-    hit = Hit {ray_12.origin + (ray_12.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_6.object, c_1.primitive};
+    GpuInstance inst_7 = instances[c_1.slot];
+    float _e11 = point_error(ray_12.origin, ray_12.dir * metal::float3(c_1.t));
+    hit_error = _e11;
+    hit = Hit {ray_12.origin + (ray_12.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
-    if (inst_6.geometry_type == MESH_GEOMETRY) {
-        Triangle _e35 = load_triangle(c_1.primitive, triangles, _buffer_sizes);
+    if (inst_7.geometry_type == MESH_GEOMETRY) {
+        Triangle _e42 = load_triangle(c_1.primitive, triangles, _buffer_sizes);
         metal::float2 b_8 = c_1.uv;
         float w_3 = (1.0 - c_1.uv.x) - c_1.uv.y;
-        metal::float3 _e56 = point_to_world(inst_6, ((_e35.v0_ * metal::float3(w_3)) + (_e35.v1_ * metal::float3(c_1.uv.x))) + (_e35.v2_ * metal::float3(c_1.uv.y)));
-        hit.position = _e56;
-        n_geo = metal::cross(_e35.v1_ - _e35.v0_, _e35.v2_ - _e35.v0_);
+        metal::float3 e1_ = _e42.v1_ - _e42.v0_;
+        metal::float3 e2_ = _e42.v2_ - _e42.v0_;
+        metal::float3 p_6 = _e42.v0_ + ((e1_ * metal::float3(c_1.uv.x)) + (e2_ * metal::float3(c_1.uv.y)));
+        metal::float3 _e65 = point_to_world(inst_7, p_6);
+        hit.position = _e65;
+        float _e73 = mesh_error(inst_7, _e42.v0_, e1_ * metal::float3(c_1.uv.x), e2_ * metal::float3(c_1.uv.y), p_6);
+        hit_error = _e73;
+        n_geo = metal::cross(e1_, e2_);
         metal::uint4 a0_ = attributes[c_1.primitive * 2u];
         metal::uint4 a1_ = attributes[(c_1.primitive * 2u) + 1u];
-        metal::float3 _e79 = decode_octahedral(a0_.x);
-        metal::float3 _e83 = decode_octahedral(a0_.y);
-        metal::float3 _e89 = decode_octahedral(a0_.z);
-        n_shade = ((_e79 * metal::float3(w_3)) + (_e83 * metal::float3(c_1.uv.x))) + (_e89 * metal::float3(c_1.uv.y));
-        metal::float3 _e94 = n_shade;
-        metal::float3 _e95 = n_shade;
-        if (metal::dot(_e94, _e95) < 0.000000000001) {
-            metal::float3 _e99 = n_geo;
-            n_shade = _e99;
+        metal::float3 _e91 = decode_octahedral(a0_.x);
+        metal::float3 _e95 = decode_octahedral(a0_.y);
+        metal::float3 _e101 = decode_octahedral(a0_.z);
+        n_shade = ((_e91 * metal::float3(w_3)) + (_e95 * metal::float3(c_1.uv.x))) + (_e101 * metal::float3(c_1.uv.y));
+        metal::float3 _e106 = n_shade;
+        metal::float3 _e107 = n_shade;
+        if (metal::dot(_e106, _e107) < 0.000000000001) {
+            metal::float3 _e111 = n_geo;
+            n_shade = _e111;
         }
         metal::float2 uv0_ = float2(as_type<half2>(a0_.w));
         metal::float2 uv1_ = float2(as_type<half2>(a1_.x));
         metal::float2 uv2_ = float2(as_type<half2>(a1_.y));
         hit.uv = ((uv0_ * metal::float2(w_3)) + (uv1_ * metal::float2(c_1.uv.x))) + (uv2_ * metal::float2(c_1.uv.y));
-        metal::float4 _e123 = triangles[c_1.primitive * 3u];
-        hit.primitive = as_type<uint>(_e123.w);
+        metal::float4 _e135 = triangles[c_1.primitive * 3u];
+        hit.primitive = as_type<uint>(_e135.w);
     }
-    metal::float3 _e127 = n_geo;
-    metal::float3 _e128 = normal_to_world(inst_6, _e127);
-    hit.geometric_normal = _e128;
-    metal::float3 _e130 = n_shade;
-    metal::float3 _e131 = normal_to_world(inst_6, _e130);
-    hit.normal = _e131;
-    metal::float3 _e135 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_12.dir, _e135) < 0.0;
-    Hit _e139 = hit;
-    return _e139;
+    metal::float3 _e139 = n_geo;
+    metal::float3 _e140 = normal_to_world(inst_7, _e139);
+    hit.geometric_normal = _e140;
+    metal::float3 _e142 = n_shade;
+    metal::float3 _e143 = normal_to_world(inst_7, _e142);
+    hit.normal = _e143;
+    metal::float3 _e147 = hit.geometric_normal;
+    hit.front_face = metal::dot(ray_12.dir, _e147) < 0.0;
+    Hit _e151 = hit;
+    return _e151;
 }
 
 uint medium_at(
-    metal::float3 p_3,
+    metal::float3 p_4,
     uint exclude,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1190,6 +1230,7 @@ uint medium_at(
     device type_10 const& triangles,
     thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
+    thread float& hit_error,
     device type_16 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1202,7 +1243,7 @@ uint medium_at(
     FrameUniforms frame_1 = frame;
     metal::float3 _e12 = normalize_vec3f(metal::float3(0.5773, 0.5774, 0.5775));
     uint _e14 = F32_INF;
-    Ray probe = Ray {p_3, 0.0, _e12, as_type<float>(_e14), 0u, 0u, 0u};
+    Ray probe = Ray {p_4, 0.0, _e12, as_type<float>(_e14), 0u, 0u, 0u};
     inside = 0u;
     uint _e23 = F32_INF;
     nearest = as_type<float>(_e23);
@@ -1230,7 +1271,7 @@ uint medium_at(
             Candidate _e43 = intersect_object(slot_5, probe, _e41, false, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, _buffer_sizes);
             float _e48 = nearest;
             if ((_e43.slot != NO_HIT) && (_e43.t < _e48)) {
-                Hit _e51 = finish_hit(probe, _e43, instances, triangles, attributes, _buffer_sizes);
+                Hit _e51 = finish_hit(probe, _e43, instances, triangles, hit_error, attributes, _buffer_sizes);
                 if (!(_e51.front_face)) {
                     inside = slot_5 + 1u;
                     nearest = _e43.t;
@@ -1273,11 +1314,11 @@ Candidate intersect_scene(
     metal::float3 _e16 = safe_inverse(ray_13.dir);
     uint base_3 = frame_2.tlas_root;
     GpuNode header_3 = nodes[base_3];
-    metal::float3 origin_4 = header_3.min;
+    metal::float3 origin_5 = header_3.min;
     metal::float3 scale_3 = header_3.max;
     metal::float3 _e23 = node_frame_hi(header_3);
     float _e27 = best_3.t;
-    float _e28 = slab(origin_4, _e23, ray_13.origin, _e16, ray_13.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_13.origin, _e16, ray_13.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_3;
@@ -1307,7 +1348,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_9 = nodes[base_3 + _e63];
             float _e69 = best_3.t;
-            metal::float2 _e70 = children_entry(n_9, origin_4, scale_3, ray_13, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_9, origin_5, scale_3, ray_13, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1444,18 +1485,18 @@ metal::float4 sample_texture(
     float w_5 = static_cast<float>(metal::max(_e6, 1u));
     uint _e14 = params[t_2 + 2u];
     float h_3 = static_cast<float>(metal::max(_e14, 1u));
-    metal::float2 p_5 = (uv * metal::float2(w_5, h_3)) - metal::float2(0.5);
-    metal::float2 f_2 = metal::floor(p_5);
-    metal::float2 fr = p_5 - f_2;
+    metal::float2 p_7 = (uv * metal::float2(w_5, h_3)) - metal::float2(0.5);
+    metal::float2 f_2 = metal::floor(p_7);
+    metal::float2 fr = p_7 - f_2;
     int _e26 = i32_from_f32_(f_2.x);
     int _e28 = i32_from_f32_(f_2.y);
     metal::float4 _e29 = texel_at(t_2, _e26, _e28, params, texels, _buffer_sizes);
     metal::float4 _e32 = texel_at(t_2, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), _e28, params, texels, _buffer_sizes);
-    metal::float4 a_7 = metal::mix(_e29, _e32, metal::float4(fr.x));
+    metal::float4 a_8 = metal::mix(_e29, _e32, metal::float4(fr.x));
     metal::float4 _e38 = texel_at(t_2, _e26, as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
     metal::float4 _e43 = texel_at(t_2, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
     metal::float4 b_9 = metal::mix(_e38, _e43, metal::float4(fr.x));
-    return metal::mix(a_7, b_9, metal::float4(fr.y));
+    return metal::mix(a_8, b_9, metal::float4(fr.y));
 }
 
 metal::float3 skybox(
@@ -1525,11 +1566,11 @@ metal::float3 through_medium(
     if (ray_18.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_7 = instances[ray_18.medium - 1u];
-    if ((inst_7.flags & FLAG_MEDIUM) == 0u) {
+    GpuInstance inst_8 = instances[ray_18.medium - 1u];
+    if ((inst_8.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_7.material_type, inst_7.material_offset, ray_18, t_4, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_18, t_4, radiance_1);
     return _e21;
 }
 
@@ -1576,19 +1617,27 @@ PointLight load_PointLight(
     return PointLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)};
 }
 
-metal::float3 offset_origin(
-    metal::float3 p_4,
-    metal::float3 n_4,
-    constant FrameUniforms& frame,
-    device type_9 const& nodes,
-    constant _mslBufferSizes& _buffer_sizes
+metal::float3 step_toward(
+    metal::float3 x_3,
+    metal::float3 s_1
 ) {
-    FrameUniforms _e3 = frame;
-    GpuNode header_4 = nodes[_e3.tlas_root];
-    metal::float3 _e11 = node_frame_hi(header_4);
-    metal::float3 a_8 = metal::max(metal::abs(p_4), metal::max(metal::abs(header_4.min), metal::abs(_e11)));
-    float m_3 = metal::max(metal::max(a_8.x, a_8.y), a_8.z);
-    return p_4 + (n_4 * metal::float3(m_3 * (1.0 / 65536.0)));
+    metal::uint3 bits_1 = as_type<metal::uint3>(x_3);
+    metal::bool3 up_1 = (metal::sign(x_3) * metal::sign(s_1)) > metal::float3(0.0);
+    metal::float3 stepped = as_type<metal::float3>(metal::select(bits_1 - metal::uint3(1u), bits_1 + metal::uint3(1u), up_1));
+    metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s_1 > metal::float3(0.0));
+    metal::float3 moved = metal::select(stepped, from_zero, x_3 == metal::float3(0.0));
+    return metal::select(x_3, moved, !((s_1 == metal::float3(0.0))));
+}
+
+metal::float3 offset_origin(
+    metal::float3 p_5,
+    metal::float3 n_4,
+    float error
+) {
+    float d_3 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
+    metal::float3 offset_14 = n_4 * metal::float3(d_3);
+    metal::float3 _e17 = step_toward(p_5 + offset_14, offset_14);
+    return _e17;
 }
 
 float shadow_query(
@@ -1604,21 +1653,37 @@ float shadow_query(
     device type_10 const& triangles,
     thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
+    thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 n_5 = {};
+    float tmax_5 = {};
     n_5 = normal;
     metal::float3 _e5 = n_5;
     if (metal::dot(dir, _e5) < 0.0) {
         metal::float3 _e9 = n_5;
         n_5 = -(_e9);
     }
-    metal::float3 _e11 = n_5;
-    metal::float3 _e12 = offset_origin(position, _e11, frame, nodes, _buffer_sizes);
-    Ray ray_26 = Ray {_e12, 0.0, dir, dist * (1.0 - 0.00001), 0u, RAY_SHADOW, 0u};
-    Candidate _e23 = intersect_scene(ray_26, true, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
-    return (_e23.slot != NO_HIT) ? 0.0 : 1.0;
+    metal::float3 a_9 = metal::abs(position);
+    float _e13 = hit_error;
+    float error_2 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_9.x, a_9.y), a_9.z));
+    metal::float3 _e22 = n_5;
+    metal::float3 _e23 = offset_origin(position, _e22, error_2);
+    uint _e25 = F32_INF;
+    tmax_5 = as_type<float>(_e25);
+    uint _e29 = F32_INF;
+    if (dist < as_type<float>(_e29)) {
+        metal::float3 light = position + (dir * metal::float3(dist));
+        float dd_1 = metal::dot(dir, dir);
+        float along_1 = metal::dot(light - _e23, dir) / dd_1;
+        metal::float3 l_2 = metal::abs(position) + metal::abs(dir * metal::float3(dist));
+        tmax_5 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_2.x, l_2.y), l_2.z)) / metal::sqrt(dd_1));
+    }
+    float _e59 = tmax_5;
+    Ray ray_26 = Ray {_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u};
+    Candidate _e65 = intersect_scene(ray_26, true, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    return (_e65.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
 LightSample point_light(
@@ -1633,6 +1698,7 @@ LightSample point_light(
     device type_10 const& triangles,
     thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
+    thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1645,7 +1711,7 @@ LightSample point_light(
         float _e19 = strength;
         strength = _e19 * (1.0 - metal::smoothstep(l.inner_range, l.range, dist_1));
     }
-    float _e26 = shadow_query(position_1, normal_1, dir_3, dist_1, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    float _e26 = shadow_query(position_1, normal_1, dir_3, dist_1, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
     float _e28 = strength;
     return LightSample {dir_3, dist_1, (l.color * metal::float3(_e28)) * metal::float3(_e26)};
 }
@@ -1663,11 +1729,12 @@ LightSample dispatch_light(
     device type_10 const& triangles,
     thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
+    thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PointLight _e3 = load_PointLight(offset_10, params, _buffer_sizes);
-    LightSample _e4 = point_light(_e3, position_2, normal_2, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    LightSample _e4 = point_light(_e3, position_2, normal_2, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
     return _e4;
 }
 
@@ -1683,6 +1750,7 @@ LightSample sample_light_query(
     device type_10 const& triangles,
     thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
+    thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1693,7 +1761,7 @@ LightSample sample_light_query(
     uint entry = frame_4.light_table + (i_3 * 2u);
     uint _e21 = params[entry];
     uint _e26 = params[entry + 1u];
-    LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
     return _e27;
 }
 
@@ -1709,6 +1777,7 @@ metal::float3 lambert_shade(
     device type_10 const& triangles,
     thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
+    thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1733,7 +1802,7 @@ metal::float3 lambert_shade(
             break;
         }
         uint _e12 = i_4;
-        LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+        LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
         metal::float3 _e16 = color;
         color = _e16 + (((m_2.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
     }
@@ -1755,11 +1824,12 @@ metal::float3 dispatch_closest_hit(
     device type_10 const& triangles,
     thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
+    thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Lambert _e3 = load_Lambert(offset_11, params, _buffer_sizes);
-    metal::float3 _e4 = lambert_shade(_e3, ray_21, hit_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    metal::float3 _e4 = lambert_shade(_e3, ray_21, hit_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
     return _e4;
 }
 
@@ -1774,13 +1844,14 @@ metal::float3 shade_direct(
     device type_10 const& triangles,
     thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
+    thread float& hit_error,
     device type_16 const& attributes,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuInstance inst_8 = instances[c_3.slot];
-    Hit _e6 = finish_hit(ray_22, c_3, instances, triangles, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+    GpuInstance inst_9 = instances[c_3.slot];
+    Hit _e6 = finish_hit(ray_22, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_22, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
     return _e11;
 }
 
@@ -1795,21 +1866,19 @@ void dispatch_secondary_rays(
 
 metal::float3 spawn_origin(
     Hit hit_5,
-    metal::float3 dir_1,
-    constant FrameUniforms& frame,
-    device type_9 const& nodes,
-    constant _mslBufferSizes& _buffer_sizes
+    float error_1,
+    metal::float3 dir_1
 ) {
     metal::float3 n_6 = {};
     n_6 = hit_5.geometric_normal;
-    metal::float3 _e4 = n_6;
-    if (metal::dot(dir_1, _e4) < 0.0) {
-        metal::float3 _e8 = n_6;
-        n_6 = -(_e8);
+    metal::float3 _e5 = n_6;
+    if (metal::dot(dir_1, _e5) < 0.0) {
+        metal::float3 _e9 = n_6;
+        n_6 = -(_e9);
     }
-    metal::float3 _e11 = n_6;
-    metal::float3 _e12 = offset_origin(hit_5.position, _e11, frame, nodes, _buffer_sizes);
-    return _e12;
+    metal::float3 _e12 = n_6;
+    metal::float3 _e13 = offset_origin(hit_5.position, _e12, error_1);
+    return _e13;
 }
 
 metal::float3 trace(
@@ -1822,6 +1891,7 @@ metal::float3 trace(
     device type_10 const& triangles,
     thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
+    thread float& hit_error,
     device type_16 const& attributes,
     thread uint& ray_count,
     device type_4 const& texels,
@@ -1842,14 +1912,15 @@ metal::float3 trace(
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
         if (_e4.slot == NO_HIT) {
-            uint _e9 = F32_INF;
-            metal::float3 _e11 = miss(camera_ray, frame, params, texels, _buffer_sizes);
-            metal::float3 _e12 = through_medium(camera_ray, as_type<float>(_e9), _e11, instances, _buffer_sizes);
-            return _e12;
+            hit_error = 0.0;
+            uint _e11 = F32_INF;
+            metal::float3 _e13 = miss(camera_ray, frame, params, texels, _buffer_sizes);
+            metal::float3 _e14 = through_medium(camera_ray, as_type<float>(_e11), _e13, instances, _buffer_sizes);
+            return _e14;
         }
-        metal::float3 _e14 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, ray_count, _buffer_sizes);
-        metal::float3 _e15 = through_medium(camera_ray, _e4.t, _e14, instances, _buffer_sizes);
-        return _e15;
+        metal::float3 _e16 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, ray_count, _buffer_sizes);
+        metal::float3 _e17 = through_medium(camera_ray, _e4.t, _e16, instances, _buffer_sizes);
+        return _e17;
     }
     stack_1 = type_19 {};
     depth = 0u;
@@ -1860,34 +1931,36 @@ metal::float3 trace(
     while(true) {
         if (metal::all(loop_bound_8 == uint2(0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        bool _e26 = have_value;
-        if (!(_e26)) {
-            Ray _e28 = ray_24;
-            Candidate _e30 = intersect_scene(_e28, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
-            if (_e30.slot == NO_HIT) {
-                Ray _e34 = ray_24;
-                uint _e36 = F32_INF;
+        bool _e28 = have_value;
+        if (!(_e28)) {
+            Ray _e30 = ray_24;
+            Candidate _e32 = intersect_scene(_e30, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
+            if (_e32.slot == NO_HIT) {
+                hit_error = 0.0;
                 Ray _e38 = ray_24;
-                metal::float3 _e39 = miss(_e38, frame, params, texels, _buffer_sizes);
-                metal::float3 _e40 = through_medium(_e34, as_type<float>(_e36), _e39, instances, _buffer_sizes);
-                value = _e40;
+                uint _e40 = F32_INF;
+                Ray _e42 = ray_24;
+                metal::float3 _e43 = miss(_e42, frame, params, texels, _buffer_sizes);
+                metal::float3 _e44 = through_medium(_e38, as_type<float>(_e40), _e43, instances, _buffer_sizes);
+                value = _e44;
                 have_value = true;
             } else {
-                GpuInstance inst_9 = instances[_e30.slot];
-                Ray _e46 = ray_24;
-                Hit _e47 = finish_hit(_e46, _e30, instances, triangles, attributes, _buffer_sizes);
+                GpuInstance inst_10 = instances[_e32.slot];
+                Ray _e50 = ray_24;
+                Hit _e51 = finish_hit(_e50, _e32, instances, triangles, hit_error, attributes, _buffer_sizes);
+                float error_3 = hit_error;
                 pushed = false;
-                uint _e56 = ray_24.depth;
-                uint _e60 = depth;
-                if ((((inst_9.flags & FLAG_SECONDARY) != 0u) && (_e56 < MAX_DEPTH)) && (_e60 < STACK_SIZE)) {
+                uint _e62 = ray_24.depth;
+                uint _e66 = depth;
+                if ((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    Ray _e68 = ray_24;
-                    dispatch_secondary_rays(inst_9.material_type, inst_9.material_offset, _e68, _e47);
-                    uint _e70 = spawn_count;
-                    uint n_10 = metal::min(metal::min(_e70, 1u), MAX_SPAWN);
+                    Ray _e74 = ray_24;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);
+                    uint _e76 = spawn_count;
+                    uint n_10 = metal::min(metal::min(_e76, 1u), MAX_SPAWN);
                     if (n_10 > 0u) {
-                        Ray _e77 = ray_24;
-                        f = Frame {_e77, _e47, _e30.slot, {}, metal::float3(0.0), type_18 {}, type_18 {}, n_10, 0u};
+                        Ray _e83 = ray_24;
+                        f = Frame {_e83, _e51, error_3, _e32.slot, {}, metal::float3(0.0), type_18 {}, type_18 {}, n_10, 0u};
                         i_5 = 0u;
                         uint2 loop_bound_9 = uint2(4294967295u);
                         bool loop_init_4 = true;
@@ -1895,85 +1968,88 @@ metal::float3 trace(
                             if (metal::all(loop_bound_9 == uint2(0u))) { break; }
                             loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                             if (!loop_init_4) {
-                                uint _e108 = i_5;
-                                i_5 = _e108 + 1u;
+                                uint _e114 = i_5;
+                                i_5 = _e114 + 1u;
                             }
                             loop_init_4 = false;
-                            uint _e88 = i_5;
-                            if (_e88 >= n_10) {
+                            uint _e94 = i_5;
+                            if (_e94 >= n_10) {
                                 break;
                             }
-                            uint _e91 = i_5;
-                            uint _e95 = i_5;
-                            metal::float3 _e98 = spawn_dirs.inner[_e95];
-                            f.dirs.inner[metal::min(_e91, 0u)] = _e98;
-                            uint _e100 = i_5;
-                            uint _e104 = i_5;
-                            metal::float3 _e107 = spawn_weights.inner[_e104];
-                            f.weights.inner[metal::min(_e100, 0u)] = _e107;
+                            uint _e97 = i_5;
+                            uint _e101 = i_5;
+                            metal::float3 _e104 = spawn_dirs.inner[_e101];
+                            f.dirs.inner[metal::min(_e97, 0u)] = _e104;
+                            uint _e106 = i_5;
+                            uint _e110 = i_5;
+                            metal::float3 _e113 = spawn_weights.inner[_e110];
+                            f.weights.inner[metal::min(_e106, 0u)] = _e113;
                         }
-                        uint _e111 = depth;
-                        Frame _e115 = f;
-                        stack_1.inner[metal::min(_e111, 3u)] = _e115;
-                        uint _e116 = depth;
-                        depth = _e116 + 1u;
+                        uint _e117 = depth;
+                        Frame _e121 = f;
+                        stack_1.inner[metal::min(_e117, 3u)] = _e121;
+                        uint _e122 = depth;
+                        depth = _e122 + 1u;
                         pushed = true;
                     }
                 }
-                bool _e120 = pushed;
-                if (!(_e120)) {
-                    Ray _e124 = ray_24;
-                    metal::float3 _e127 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, _e124, _e47, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
-                    Ray _e128 = ray_24;
-                    metal::float3 _e130 = through_medium(_e128, _e30.t, _e127, instances, _buffer_sizes);
-                    value = _e130;
+                bool _e126 = pushed;
+                if (!(_e126)) {
+                    Ray _e130 = ray_24;
+                    metal::float3 _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
+                    Ray _e134 = ray_24;
+                    metal::float3 _e136 = through_medium(_e134, _e32.t, _e133, instances, _buffer_sizes);
+                    value = _e136;
                     have_value = true;
                 }
             }
         }
-        bool _e132 = have_value;
-        if (_e132) {
-            uint _e133 = depth;
-            if (_e133 == 0u) {
-                metal::float3 _e136 = value;
-                return _e136;
+        bool _e138 = have_value;
+        if (_e138) {
+            uint _e139 = depth;
+            if (_e139 == 0u) {
+                metal::float3 _e142 = value;
+                return _e142;
             }
-            uint _e137 = depth;
-            uint top = _e137 - 1u;
-            uint _e144 = stack_1.inner[metal::min(top, 3u)].next;
-            uint child_2 = _e144 - 1u;
-            metal::float3 _e151 = stack_1.inner[metal::min(top, 3u)].sum;
-            metal::float3 _e159 = stack_1.inner[metal::min(top, 3u)].weights.inner[metal::min(child_2, 0u)];
-            metal::float3 _e160 = value;
-            stack_1.inner[metal::min(top, 3u)].sum = _e151 + (_e159 * _e160);
+            uint _e143 = depth;
+            uint top = _e143 - 1u;
+            uint _e150 = stack_1.inner[metal::min(top, 3u)].next;
+            uint child_2 = _e150 - 1u;
+            metal::float3 _e157 = stack_1.inner[metal::min(top, 3u)].sum;
+            metal::float3 _e165 = stack_1.inner[metal::min(top, 3u)].weights.inner[metal::min(child_2, 0u)];
+            metal::float3 _e166 = value;
+            stack_1.inner[metal::min(top, 3u)].sum = _e157 + (_e165 * _e166);
             have_value = false;
         }
-        uint _e164 = depth;
-        uint top_1 = _e164 - 1u;
-        uint _e171 = stack_1.inner[metal::min(top_1, 3u)].next;
-        uint _e176 = stack_1.inner[metal::min(top_1, 3u)].count;
-        if (_e171 < _e176) {
+        uint _e170 = depth;
+        uint top_1 = _e170 - 1u;
+        uint _e177 = stack_1.inner[metal::min(top_1, 3u)].next;
+        uint _e182 = stack_1.inner[metal::min(top_1, 3u)].count;
+        if (_e177 < _e182) {
             uint i_6 = stack_1.inner[metal::min(top_1, 3u)].next;
             stack_1.inner[metal::min(top_1, 3u)].next = i_6 + 1u;
             Ray parent = stack_1.inner[metal::min(top_1, 3u)].ray;
             Hit hit_8 = stack_1.inner[metal::min(top_1, 3u)].hit;
             metal::float3 dir_4 = stack_1.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_6, 0u)];
             medium = parent.medium;
-            metal::float3 _e209 = spawn_origin(hit_8, dir_4, frame, nodes, _buffer_sizes);
-            uint _e212 = F32_INF;
-            uint _e218 = medium;
-            ray_24 = Ray {_e209, 0.0, dir_4, as_type<float>(_e212), parent.depth + 1u, RAY_SECONDARY, _e218};
+            float _e219 = stack_1.inner[metal::min(top_1, 3u)].error;
+            metal::float3 _e220 = spawn_origin(hit_8, _e219, dir_4);
+            uint _e223 = F32_INF;
+            uint _e229 = medium;
+            ray_24 = Ray {_e220, 0.0, dir_4, as_type<float>(_e223), parent.depth + 1u, RAY_SECONDARY, _e229};
         } else {
-            uint _e224 = stack_1.inner[metal::min(top_1, 3u)].slot;
-            GpuInstance inst_10 = instances[_e224];
-            Ray _e234 = stack_1.inner[metal::min(top_1, 3u)].ray;
-            Hit _e239 = stack_1.inner[metal::min(top_1, 3u)].hit;
-            metal::float3 _e244 = stack_1.inner[metal::min(top_1, 3u)].sum;
-            metal::float3 _e245 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e234, _e239, _e244, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
-            Ray _e250 = stack_1.inner[metal::min(top_1, 3u)].ray;
-            float _e256 = stack_1.inner[metal::min(top_1, 3u)].hit.t;
-            metal::float3 _e257 = through_medium(_e250, _e256, _e245, instances, _buffer_sizes);
-            value = _e257;
+            uint _e235 = stack_1.inner[metal::min(top_1, 3u)].slot;
+            GpuInstance inst_11 = instances[_e235];
+            float _e243 = stack_1.inner[metal::min(top_1, 3u)].error;
+            hit_error = _e243;
+            Ray _e251 = stack_1.inner[metal::min(top_1, 3u)].ray;
+            Hit _e256 = stack_1.inner[metal::min(top_1, 3u)].hit;
+            metal::float3 _e261 = stack_1.inner[metal::min(top_1, 3u)].sum;
+            metal::float3 _e262 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e251, _e256, _e261, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
+            Ray _e267 = stack_1.inner[metal::min(top_1, 3u)].ray;
+            float _e273 = stack_1.inner[metal::min(top_1, 3u)].hit.t;
+            metal::float3 _e274 = through_medium(_e267, _e273, _e262, instances, _buffer_sizes);
+            value = _e274;
             depth = top_1;
             have_value = true;
         }
@@ -1982,9 +2058,9 @@ metal::float3 trace(
 }
 
 metal::bool3 is_finite_vec3f(
-    metal::float3 x_3
+    metal::float3 x_4
 ) {
-    return (as_type<metal::uint3>(x_3) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+    return (as_type<metal::uint3>(x_4) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
 }
 
 metal::float3 finite_or_zero(
@@ -2006,6 +2082,7 @@ void render_pixel(
     device type_10 const& triangles,
     thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
+    thread float& hit_error,
     device type_16 const& attributes,
     thread uint& ray_count,
     device type_4 const& texels,
@@ -2018,29 +2095,29 @@ void render_pixel(
 ) {
     metal::float3 sum = {};
     uint bad = {};
-    uint s_1 = {};
+    uint s_2 = {};
     Ray ray_25 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_1 = tile;
     sum = metal::float3(0.0);
     bad = 0u;
     uint end_2 = frame_5.samples_per_pass;
-    s_1 = 0u;
+    s_2 = 0u;
     uint2 loop_bound_10 = uint2(4294967295u);
     bool loop_init_5 = true;
     while(true) {
         if (metal::all(loop_bound_10 == uint2(0u))) { break; }
         loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e46 = s_1;
-            s_1 = _e46 + 1u;
+            uint _e46 = s_2;
+            s_2 = _e46 + 1u;
         }
         loop_init_5 = false;
-        uint _e13 = s_1;
+        uint _e13 = s_2;
         if (_e13 >= end_2) {
             break;
         }
-        uint _e18 = s_1;
+        uint _e18 = s_2;
         uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, rng_state, params, F32_INF, _buffer_sizes);
@@ -2048,10 +2125,10 @@ void render_pixel(
         ray_25.depth = 0u;
         ray_25.kind = RAY_CAMERA;
         metal::float3 _e31 = ray_25.origin;
-        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, _buffer_sizes);
+        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, _buffer_sizes);
         ray_25.medium = _e33;
         Ray _e34 = ray_25;
-        metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {
             metal::float3 _e38 = sum;
@@ -2093,6 +2170,7 @@ void render_invocation(
     device type_10 const& triangles,
     thread type_12& traversal_stack,
     thread uint& F32_NEG_INF,
+    thread float& hit_error,
     device type_16 const& attributes,
     thread uint& ray_count,
     device type_4 const& texels,
@@ -2121,7 +2199,7 @@ void render_invocation(
     if (metal::any(local >= tile_2.extent)) {
         return;
     }
-    render_pixel(tile_2.origin + local, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_pixel(tile_2.origin + local, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }
 
@@ -2145,10 +2223,11 @@ struct renderInput {
     uint F32_INF = 2139095040u;
     type_12 traversal_stack = {};
     uint F32_NEG_INF = 4286578688u;
+    float hit_error = {};
     uint ray_count = {};
     type_18 spawn_dirs = {};
     type_18 spawn_weights = {};
     uint spawn_count = {};
-    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }
