@@ -4,6 +4,7 @@
 
 mod confine;
 mod fuzz;
+mod fuzz_files;
 mod gltf;
 mod gltf_builder;
 mod gltf_scene;
