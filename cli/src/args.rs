@@ -33,6 +33,32 @@ pub struct GlobalArgs {
     pub debug_force_ice: bool,
 }
 
+/// `--asset-root DIR`, shared by the commands that load a scene's assets (`render`, `bench`,
+/// `bvh`, `view`, `watch`).
+#[derive(Clone, Debug, Default, Args)]
+pub struct AssetArgs {
+    /// A folder the scene's meshes, images and glTF files (and the files a glTF file names) may
+    /// also come from, besides the scene's own folder; repeatable, searched in order after it.
+    /// Paths in scenes stay relative: `--asset-root models` lets a scene write
+    /// `load_mesh("bunny.obj")` for `models/bunny.obj`.
+    #[arg(long = "asset-root", value_name = "DIR")]
+    pub asset_roots: Vec<PathBuf>,
+}
+
+impl AssetArgs {
+    /// The folders, each checked to be an existing folder (else a message for a usage error).
+    pub fn roots(&self) -> Result<rtc_runtime::assets::AssetRoots, String> {
+        for dir in &self.asset_roots {
+            if !dir.is_dir() {
+                return Err(format!("--asset-root `{}`: no such folder", dir.display()));
+            }
+        }
+        Ok(rtc_runtime::assets::AssetRoots::new(
+            self.asset_roots.iter().cloned(),
+        ))
+    }
+}
+
 /// `--color`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum ColorChoice {

@@ -2,6 +2,8 @@
 //! exists): a bare glTF file (the example's model without its camera and lights) renders with the
 //! defaults it prints, the model in the middle of the image and the sky at the top; a file with a
 //! camera and lights keeps them; a truncated file and `--scene` are clear errors, never a panic.
+//! Also the asset confinement seen from the command line: `--asset-root` must name a folder, and a
+//! scene path leading out of the scene's folder is E0903 with a help line naming `--asset-root`.
 
 mod common;
 
@@ -167,4 +169,56 @@ fn broken_models_are_clear_errors() {
     ]);
     assert_eq!(out.status.code(), Some(2), "{}", text(&out));
     assert!(text(&out).contains("--scene"), "{}", text(&out));
+}
+
+#[test]
+fn asset_roots_must_be_folders() {
+    let dir = scratch("model-test", "roots");
+    let scene = dir.join("scene.rt");
+    std::fs::write(&scene, "scene s {}\n").unwrap();
+    for command in ["render", "bvh"] {
+        let out = rtc(&[
+            command,
+            s(&scene),
+            "-o",
+            s(&dir.join("x.png")),
+            "--asset-root",
+            s(&dir.join("no-such-folder")),
+        ]);
+        assert_eq!(out.status.code(), Some(2), "{command}: {}", text(&out));
+        assert!(
+            text(&out).contains("--asset-root") && text(&out).contains("no such folder"),
+            "{command}: {}",
+            text(&out)
+        );
+    }
+}
+
+#[test]
+fn a_scene_path_leaving_its_folder_is_e0903() {
+    let dir = scratch("model-test", "escape");
+    std::fs::create_dir_all(dir.join("scene")).unwrap();
+    std::fs::write(
+        dir.join("secret.obj"),
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+    )
+    .unwrap();
+    let scene = dir.join("scene/scene.rt");
+    std::fs::write(
+        &scene,
+        "import \"std/cameras/pinhole.rt\";\nimport \"std/materials/lambert.rt\";\n\
+         scene s {\n    camera Pinhole {}\n    \
+         object o { geometry: load_mesh(\"../secret.obj\"), material: Lambert {} }\n}\n",
+    )
+    .unwrap();
+    let out = rtc(&["render", s(&scene), "-o", s(&dir.join("x.png"))]);
+    if no_gpu(&out) {
+        return;
+    }
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(1), "{t}");
+    assert!(t.contains("E0903"), "{t}");
+    assert!(t.contains("../secret.obj"), "{t}");
+    assert!(t.contains("--asset-root"), "{t}");
+    assert!(!dir.join("x.png").exists());
 }

@@ -48,6 +48,7 @@ pub use rtc_bvh::BuildPreset;
 use rtc_compiler::abi;
 use rtc_compiler::kernel::{CompiledScene, BOUNDS_ENTRY, BOUNDS_WORKGROUP, RENDER_ENTRY};
 
+use crate::assets::AssetRoots;
 use crate::gpu::{
     create_kernel, dispatch_once, plan_tiles, BufferLimits, DispatchError, Gpu, Kernel, KernelDesc,
     KernelSource, PipelineError, TileConfig, TileDispatcher,
@@ -56,7 +57,7 @@ use crate::image_out::{ImageError, LinearImage};
 use crate::scene::{Entities, EntityOptions, GpuScene, ObjectGeometry, SceneError, UploadReport};
 
 /// What to change from the scene's own settings, and how to run.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct RenderOptions {
     /// Image size `[width, height]` instead of the scene's.
     pub size: Option<[u32; 2]>,
@@ -68,6 +69,8 @@ pub struct RenderOptions {
     pub bvh: BuildPreset,
     /// Buffer limits to enforce instead of the device's (tests fake tiny ones).
     pub limits: Option<BufferLimits>,
+    /// Folders besides the scene's own that its assets may come from (`--asset-root`).
+    pub asset_roots: AssetRoots,
 }
 
 /// Why a scene could not be rendered.
@@ -280,7 +283,10 @@ impl<'g> Renderer<'g> {
             program,
             desc,
             &compiled.linked,
-            &EntityOptions { bvh: options.bvh },
+            &EntityOptions {
+                bvh: options.bvh,
+                asset_roots: options.asset_roots.clone(),
+            },
         )?;
         let es = entities.stats();
         setup.load_ms = es.load_ms;

@@ -27,7 +27,7 @@
 
 use super::render::{fail, render_failure, warn, BvhPreset, Size};
 use super::Context;
-use crate::args::MessageFormat;
+use crate::args::{AssetArgs, MessageFormat};
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::kernel::{compile_scene_with, CompiledScene, KernelOptions};
@@ -91,6 +91,9 @@ pub struct Args {
     /// Samples per pixel of the `--bvh-presets` renders.
     #[arg(long, value_name = "N", default_value_t = 16, value_parser = clap::value_parser!(u32).range(1..))]
     pub preset_spp: u32,
+    /// Where else the scene's assets may come from.
+    #[command(flatten)]
+    pub assets: AssetArgs,
 }
 
 /// One measured level.
@@ -234,6 +237,10 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Ok(c) => c,
         Err(e) => return report::usage_error(&e.to_string(), ctx.color),
     };
+    let roots = match args.assets.roots() {
+        Ok(r) => r,
+        Err(e) => return report::usage_error(&e, ctx.color),
+    };
     let mut levels = args.spp_list.clone();
     levels.sort_unstable();
     levels.dedup();
@@ -274,6 +281,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     let base = RenderOptions {
         size: args.size.map(|s| [s.width, s.height]),
         bvh: args.bvh.into(),
+        asset_roots: roots,
         ..RenderOptions::default()
     };
 
@@ -282,7 +290,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Some(image) => {
             let size = match (base.size, scene_size(&compiled)) {
                 (Some(size), _) | (None, Some(size)) => size,
-                (None, None) => match Renderer::new(&gpu, &compiled, base) {
+                (None, None) => match Renderer::new(&gpu, &compiled, base.clone()) {
                     Ok(r) => r.size(),
                     Err(e) => return render_failure(&e, &compiled.checked.sources, ctx),
                 },
@@ -310,7 +318,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             term::eprint(&format!("rendering the reference at {spp} spp...\n"));
             let options = RenderOptions {
                 samples: Some(spp),
-                ..base
+                ..base.clone()
             };
             match render_once(&gpu, &compiled, options) {
                 Ok((r, _)) => {
@@ -338,7 +346,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     for &spp in &levels {
         let options = RenderOptions {
             samples: Some(spp),
-            ..base
+            ..base.clone()
         };
         let r = match render_once(&gpu, &compiled, options) {
             Ok((r, _)) => r,
@@ -405,7 +413,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             let options = RenderOptions {
                 samples: Some(args.preset_spp),
                 bvh: preset.into(),
-                ..base
+                ..base.clone()
             };
             let (r, renderer) = match render_once(&gpu, &compiled, options) {
                 Ok(x) => x,

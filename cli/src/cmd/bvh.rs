@@ -21,6 +21,7 @@
 use super::bench::{compile, print_warnings};
 use super::render::{fail, output_format, render_failure, warn, write_image, BvhPreset, Size};
 use super::Context;
+use crate::args::AssetArgs;
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::kernel::{CompiledScene, DebugMode, KernelOptions};
@@ -77,6 +78,9 @@ pub struct Args {
     /// BVH builder preset.
     #[arg(long, value_enum, default_value_t = BvhPreset::Fast)]
     pub bvh: BvhPreset,
+    /// Where else the scene's assets may come from.
+    #[command(flatten)]
+    pub assets: AssetArgs,
 }
 
 /// Runs `rtc bvh`.
@@ -100,6 +104,10 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Ok(c) => c,
         Err(e) => return report::usage_error(&e.to_string(), ctx.color),
     };
+    let roots = match args.assets.roots() {
+        Ok(r) => r,
+        Err(e) => return report::usage_error(&e, ctx.color),
+    };
     let debug = |mode| KernelOptions { debug: Some(mode) };
     let scene = args.scene.as_deref();
     let normal = match compile(&args.path, scene, &KernelOptions::default(), ctx, "draw") {
@@ -116,6 +124,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         size: args.size.map(|s| [s.width, s.height]),
         samples: args.spp,
         bvh: args.bvh.into(),
+        asset_roots: roots,
         ..RenderOptions::default()
     };
 
@@ -144,7 +153,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     }
 
     // The boxes first (an unknown object or level is reported before anything is rendered).
-    let mut renderer = match Renderer::new(&gpu, &normal, options) {
+    let mut renderer = match Renderer::new(&gpu, &normal, options.clone()) {
         Ok(r) => r,
         Err(e) => return render_failure(&e, &normal.checked.sources, ctx),
     };
@@ -203,7 +212,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             Ok(c) => c,
             Err(exit) => return exit,
         };
-        match debug_pass(&gpu, &compiled, options) {
+        match debug_pass(&gpu, &compiled, options.clone()) {
             Ok((values, _)) => rays.push(values),
             Err(e) => return render_failure(&e, &compiled.checked.sources, ctx),
         }

@@ -19,11 +19,12 @@
 pub mod model;
 
 use super::Context;
-use crate::args::MessageFormat;
+use crate::args::{AssetArgs, MessageFormat};
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::kernel::compile_scene;
 use rtc_compiler::link::LinkOptions;
+use rtc_runtime::assets::AssetRoots;
 use rtc_runtime::gpu::{AdapterChoice, Gpu};
 use rtc_runtime::image_out::{write_exr, write_png, ToneMap};
 use rtc_runtime::render::{BuildPreset, RenderError, RenderOptions, RenderStats, Renderer};
@@ -59,6 +60,9 @@ pub struct Args {
     /// BVH builder preset: `fast` builds quickly; `quality` traces faster on large triangles.
     #[arg(long, value_enum, default_value_t = BvhPreset::Fast)]
     pub bvh: BvhPreset,
+    /// Where else the scene's assets may come from.
+    #[command(flatten)]
+    pub assets: AssetArgs,
 }
 
 /// `--bvh`.
@@ -143,6 +147,10 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Ok(c) => c,
         Err(e) => return report::usage_error(&e.to_string(), ctx.color),
     };
+    let roots = match args.assets.roots() {
+        Ok(r) => r,
+        Err(e) => return report::usage_error(&e, ctx.color),
+    };
 
     // A bare glTF file: render a scene written for it, saying which defaults it got.
     let synth = if model::is_model(&args.path) {
@@ -152,7 +160,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
                 ctx.color,
             );
         }
-        match model::synthesize(&args.path) {
+        match model::synthesize(&args.path, &roots) {
             Ok(s) => {
                 for d in &s.defaults {
                     term::print(&format!("default {d}\n"));
@@ -207,10 +215,18 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Err(e) => return fail(&e.to_string(), ctx),
     };
 
+    // A bare glTF file's scene names it relative to its folder, searched first.
+    let asset_roots = match &synth {
+        Some(s) => AssetRoots::new(
+            std::iter::once(s.model_dir.clone()).chain(roots.folders().iter().cloned()),
+        ),
+        None => roots,
+    };
     let options = RenderOptions {
         size: args.size.map(|s| [s.width, s.height]),
         samples: args.spp,
         bvh: args.bvh.into(),
+        asset_roots,
         ..RenderOptions::default()
     };
     let rendered = Renderer::new(&gpu, &compiled, options).and_then(|mut renderer| {

@@ -29,10 +29,12 @@ mod present;
 use super::render::{output_format, write_image, Format, Size};
 use super::watch::{describe, update_dirs, Session, Status};
 use super::Context;
+use crate::args::AssetArgs;
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::kernel::CompiledScene;
 use rtc_compiler::sema::hir::{ConstValue, Scalar};
+use rtc_runtime::assets::AssetRoots;
 use rtc_runtime::gpu::{AdapterChoice, Gpu};
 use rtc_runtime::image_out::{srgb_to_linear, LinearImage};
 use rtc_runtime::render::{RenderOptions, Renderer};
@@ -71,6 +73,9 @@ pub struct Args {
     /// Close the window after this many frames (for tests).
     #[arg(long, value_name = "N", hide = true)]
     pub exit_after_frames: Option<u32>,
+    /// Where else the scene's assets may come from.
+    #[command(flatten)]
+    pub assets: AssetArgs,
 }
 
 /// What the file watcher and the Ctrl-C handler send to the event loop.
@@ -343,6 +348,8 @@ impl App<'_> {
         let options = RenderOptions {
             size: self.args.size.map(|s| [s.width, s.height]),
             samples: Some(spp),
+            // Checked to be folders in `run`.
+            asset_roots: AssetRoots::new(self.args.assets.asset_roots.iter().cloned()),
             ..RenderOptions::default()
         };
         let t = Instant::now();
@@ -624,6 +631,10 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     let choice = match AdapterChoice::from_str(&args.adapter) {
         Ok(c) => c,
         Err(e) => return report::usage_error(&e.to_string(), ctx.color),
+    };
+    let _roots = match args.assets.roots() {
+        Ok(r) => r,
+        Err(e) => return report::usage_error(&e, ctx.color),
     };
     if !args.path.is_file() {
         return report::usage_error(

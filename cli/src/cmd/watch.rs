@@ -28,6 +28,7 @@
 use super::compile::{parse_target, write_outputs, OutputError};
 use super::render::{output_format, write_image, Format, Size};
 use super::Context;
+use crate::args::AssetArgs;
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::back::Target;
@@ -38,6 +39,7 @@ use rtc_compiler::kernel::{compile_scene, save_registry, CompiledScene};
 use rtc_compiler::link::LinkOptions;
 use rtc_compiler::sema::hir::{ConstValue, Geometry, MeshAsset, SceneDesc, TextureAsset};
 use rtc_compiler::SourceMap;
+use rtc_runtime::assets::AssetRoots;
 use rtc_runtime::gpu::{AdapterChoice, Gpu};
 use rtc_runtime::render::{RenderOptions, Renderer};
 use std::collections::{BTreeMap, BTreeSet};
@@ -80,6 +82,9 @@ pub struct Args {
     /// Stop after this many builds, counting the first (for tests and benchmarks).
     #[arg(long, value_name = "N", hide = true)]
     pub exit_after: Option<u32>,
+    /// Where else the scene's assets may come from.
+    #[command(flatten)]
+    pub assets: AssetArgs,
 }
 
 /// The preview a session renders after each good build.
@@ -95,6 +100,8 @@ pub struct Preview {
     pub samples: Option<u32>,
     /// The adapter to render on.
     pub adapter: AdapterChoice,
+    /// Where else the scene's assets may come from (`--asset-root`).
+    pub asset_roots: AssetRoots,
 }
 
 /// The GPU of the previews: made at the first preview, kept for the next ones.
@@ -453,6 +460,7 @@ impl Session {
         let options = RenderOptions {
             size: preview.size,
             samples: preview.samples,
+            asset_roots: preview.asset_roots.clone(),
             ..RenderOptions::default()
         };
         let mut prepare_ms = 0.0;
@@ -691,6 +699,10 @@ enum Msg {
 
 /// Runs `rtc watch`.
 pub fn run(args: &Args, ctx: &Context) -> Exit {
+    let asset_roots = match args.assets.roots() {
+        Ok(r) => r,
+        Err(e) => return report::usage_error(&e, ctx.color),
+    };
     let preview = match &args.output {
         None => None,
         Some(path) => {
@@ -713,6 +725,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
                 size: args.size.map(|s| [s.width, s.height]),
                 samples: args.spp,
                 adapter,
+                asset_roots,
             })
         }
     };

@@ -105,6 +105,7 @@ codes! {
     // ---- linking a scene ----
     E0901 => "a scene object whose material or geometry type has no program of a kind it needs",
     E0902 => "an asset (mesh, image, glTF file) that cannot be read",
+    E0903 => "an asset path that leads outside the scene's folder and the asset roots",
 
     // ---- warnings ----
     W0001 => "an unused variable",

@@ -105,6 +105,19 @@ pub enum AssetError {
         /// What is wrong.
         problem: UriProblem,
     },
+    /// A path a scene or glTF file names leads outside the folders assets may be read from
+    /// (see `confine.rs`).
+    #[error("{}", EscapeMessage { path, item: *item, written, problem })]
+    Escape {
+        /// The referring file (the glTF file, or the scene file for `load_mesh`/`load_image`/`model`).
+        path: PathBuf,
+        /// The glTF buffer or image with the URI; `None` for a scene path.
+        item: Option<GltfItem>,
+        /// The path or URI as written (shortened to 200 characters).
+        written: String,
+        /// What is wrong (boxed: it is the largest part of the error).
+        problem: Box<PathProblem>,
+    },
     /// A glTF buffer holds fewer bytes than its `byteLength`.
     #[error("{}: {item} declares {declared} bytes but has {actual}", path.display())]
     BufferTooShort {
@@ -128,6 +141,17 @@ pub enum AssetError {
         needed: u64,
         /// The bytes available.
         available: u64,
+    },
+    /// A glTF accessor's element counts do not fit: a sparse count above the accessor's count, a
+    /// sparse index past its last element, or a view-less accessor with too many elements.
+    #[error("{}: {item}: {problem}", path.display())]
+    AccessorCount {
+        /// The file.
+        path: PathBuf,
+        /// The accessor.
+        item: GltfItem,
+        /// What does not fit.
+        problem: CountProblem,
     },
     /// A glTF accessor has the wrong element type for its use.
     #[error("{}: {item} used as {usage} has elements of type {found}, expected {expected}", path.display())]
@@ -177,8 +201,12 @@ pub enum AssetError {
         /// The limit.
         max: u32,
     },
-    /// An image could not be decoded.
-    #[error("{}: cannot decode the image: {source}", path.display())]
+    /// An image could not be decoded (the codec's error, in words: never its debug text).
+    #[error(
+        "{}: cannot decode the image: {}",
+        path.display(),
+        super::texture::describe_image_error(source)
+    )]
     ImageDecode {
         /// The file (for images inside a glTF file, `file.glb#images[i]`).
         path: PathBuf,
@@ -200,8 +228,10 @@ impl AssetError {
             | Self::InvalidGltf { path, .. }
             | Self::Glb { path, .. }
             | Self::Uri { path, .. }
+            | Self::Escape { path, .. }
             | Self::BufferTooShort { path, .. }
             | Self::AccessorOutOfRange { path, .. }
+            | Self::AccessorCount { path, .. }
             | Self::AccessorFormat { path, .. }
             | Self::IndexOutOfRange { path, .. }
             | Self::Mesh { path, .. }
@@ -315,6 +345,42 @@ pub enum GlbProblem {
     NoJsonChunk,
 }
 
+/// What is wrong with the element counts of a glTF accessor (counts of elements, not bytes).
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum CountProblem {
+    /// `sparse.count` is larger than the accessor's `count`.
+    #[error("sparse.count is {sparse} elements, more than the accessor's {count} elements")]
+    SparseCount {
+        /// `sparse.count`.
+        sparse: u64,
+        /// The accessor's `count`.
+        count: u64,
+    },
+    /// A sparse index names an element past the accessor's end.
+    #[error(
+        "sparse index {index} is past the accessor's last element (it has {count} elements, \
+         indices 0 to {})",
+        count.saturating_sub(1)
+    )]
+    SparseIndex {
+        /// The index.
+        index: u64,
+        /// The accessor's `count`.
+        count: u64,
+    },
+    /// An accessor without a `bufferView` (all zeros) with more elements than allowed.
+    #[error(
+        "it has no bufferView (all zeros) and {count} elements, more than the {max} such an \
+         accessor may have"
+    )]
+    ViewlessTooLarge {
+        /// The accessor's `count`.
+        count: u64,
+        /// The limit.
+        max: u64,
+    },
+}
+
 /// What is wrong with a glTF URI.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum UriProblem {
@@ -330,6 +396,102 @@ pub enum UriProblem {
     /// A `.gltf` buffer without a URI (only `.glb` files have an embedded binary chunk).
     #[error("no URI and no .glb binary chunk to take the data from")]
     NoData,
+}
+
+/// Why a path named by a scene or a glTF file may not be read (see `confine.rs`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum PathProblem {
+    /// An empty path.
+    Empty,
+    /// An absolute path (`/etc/passwd`).
+    Absolute,
+    /// A Windows drive letter (`C:`).
+    DriveLetter,
+    /// A backslash (`..\x`): folders are separated by `/`.
+    Backslash,
+    /// A URI with a scheme other than `data:` (`file:///…`, `http://…`).
+    Uri,
+    /// The file found lies outside every allowed folder (after `..` and symlinks are followed).
+    Outside {
+        /// The file, canonicalised.
+        resolved: PathBuf,
+        /// The folders it may be in: the referring file's, then the asset roots.
+        allowed: Vec<PathBuf>,
+    },
+}
+
+impl fmt::Display for PathProblem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Empty => f.write_str("is empty"),
+            Self::Absolute => f.write_str("is an absolute path"),
+            Self::DriveLetter => f.write_str("starts with a drive letter"),
+            Self::Backslash => f.write_str("contains a backslash (separate folders with `/`)"),
+            Self::Uri => f.write_str("is a URI (only relative paths and data: URIs are read)"),
+            Self::Outside { resolved, .. } => write!(
+                f,
+                "leads to `{}` (following `..` and symbolic links), outside the allowed folders",
+                resolved.display()
+            ),
+        }
+    }
+}
+
+impl PathProblem {
+    /// The folders a path must stay in, for a help line (empty for problems of the path's form).
+    pub fn allowed(&self) -> &[PathBuf] {
+        match self {
+            Self::Outside { allowed, .. } => allowed,
+            _ => &[],
+        }
+    }
+}
+
+/// How [`AssetError::Escape`] reads.
+struct EscapeMessage<'a> {
+    path: &'a PathBuf,
+    item: Option<GltfItem>,
+    written: &'a str,
+    problem: &'a PathProblem,
+}
+
+impl fmt::Display for EscapeMessage<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: ", self.path.display())?;
+        if let Some(item) = self.item {
+            write!(f, "{item} ")?;
+        }
+        write!(
+            f,
+            "names `{}`, which {}; assets must be inside ",
+            self.written, self.problem
+        )?;
+        let allowed = self.problem.allowed();
+        if allowed.is_empty() {
+            write!(
+                f,
+                "the folder of `{}` or a folder given with --asset-root",
+                self.path.display()
+            )
+        } else {
+            for (i, a) in allowed.iter().enumerate() {
+                if i > 0 {
+                    f.write_str(if i + 1 == allowed.len() { " or " } else { ", " })?;
+                }
+                write!(f, "`{}`", display_folder(a))?;
+            }
+            Ok(())
+        }
+    }
+}
+
+/// A folder for messages (`.` for the empty path).
+pub(crate) fn display_folder(p: &std::path::Path) -> String {
+    if p.as_os_str().is_empty() {
+        ".".to_owned()
+    } else {
+        p.display().to_string()
+    }
 }
 
 /// Why a [`MeshData`](super::MeshData) is invalid.

@@ -38,6 +38,9 @@
 //!   and byte offsets from files are computed with checked arithmetic. Third-party parsers are
 //!   only handed input they are known to survive (see `obj.rs` and `model/document.rs`).
 //! - Errors name the file they are about; the runtime never exits the process.
+//! - **Assets stay inside the folders they were given** ([`confine`]): a path in a scene or a
+//!   glTF file is relative and resolves (symlinks followed) inside the referring file's folder or
+//!   an [`AssetRoots`] folder; anything else is [`AssetError::Escape`].
 //! - What a loader skips (an unsupported glTF primitive mode, an ignored texture) is a warning in
 //!   [`ModelScene::warnings`], never silent and never fatal.
 
@@ -54,6 +57,7 @@
 )]
 
 mod bounds;
+pub mod confine;
 mod error;
 mod mesh;
 pub mod model;
@@ -65,11 +69,15 @@ pub mod texture;
 mod tests;
 
 pub use bounds::Bounds;
-pub use error::{AssetError, GlbProblem, GltfItem, MeshError, UriProblem};
+pub use confine::AssetRoots;
+pub(crate) use error::display_folder;
+pub use error::{
+    AssetError, CountProblem, GlbProblem, GltfItem, MeshError, PathProblem, UriProblem,
+};
 pub use mesh::{MeshData, MeshReport};
 pub use model::{
-    load_gltf, AlphaMode, GltfCamera, GltfLight, GltfMaterial, LightKind, MeshInstance, ModelScene,
-    Projection,
+    load_gltf, load_gltf_with, AlphaMode, GltfCamera, GltfLight, GltfMaterial, LightKind,
+    MeshInstance, ModelScene, Projection,
 };
 pub use obj::load_obj;
 pub use procedural::{cube_mesh, quad_mesh, sphere_mesh, MAX_SPHERE_SUBDIVISIONS};

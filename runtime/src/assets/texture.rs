@@ -15,7 +15,9 @@
 //!   `f16(b) | f16(a) << 16` (IEEE binary16 bit patterns), so `unpack2x16float(word0)` is
 //!   `(r, g)` and `unpack2x16float(word1)` is `(b, a)`. Values are linear. On packing, NaN
 //!   becomes 0 and values beyond ±65504 (the largest f16) are clamped to it, so no texel is ever
-//!   NaN or infinite.
+//!   NaN or infinite. A decoded image's NaN and infinite channels are replaced by 0 before
+//!   packing and counted in [`TextureData::nonfinite_texels`], which the scene stage reports as
+//!   a warning naming the file.
 //!
 //! # Which format an image gets
 //!
@@ -73,6 +75,8 @@ pub struct TextureData {
     pub format: TextureFormat,
     /// The packed texels, row-major, top row first.
     pub words: Vec<u32>,
+    /// How many texels of the decoded file had a NaN or infinite channel (replaced by 0).
+    pub nonfinite_texels: u64,
 }
 
 impl TextureData {
@@ -148,6 +152,7 @@ pub fn solid_texture(color: [f32; 4]) -> TextureData {
         height: 1,
         format: TextureFormat::Rgba16F,
         words: vec![pack_f16x2(r, g), pack_f16x2(b, a)],
+        nonfinite_texels: 0,
     }
 }
 
@@ -209,11 +214,19 @@ fn from_dynamic(image: DynamicImage) -> TextureData {
     );
     if float {
         let rgba = image.into_rgba32f();
+        let mut nonfinite_texels = 0u64;
+        let finite = |x: f32| if x.is_finite() { x } else { 0.0 };
         let words = rgba
             .pixels()
             .flat_map(|p| {
                 let [r, g, b, a] = p.0;
-                [pack_f16x2(r, g), pack_f16x2(b, a)]
+                if !p.0.iter().all(|c| c.is_finite()) {
+                    nonfinite_texels += 1;
+                }
+                [
+                    pack_f16x2(finite(r), finite(g)),
+                    pack_f16x2(finite(b), finite(a)),
+                ]
             })
             .collect();
         TextureData {
@@ -221,6 +234,7 @@ fn from_dynamic(image: DynamicImage) -> TextureData {
             height,
             format: TextureFormat::Rgba16F,
             words,
+            nonfinite_texels,
         }
     } else {
         let rgba = image.into_rgba8();
@@ -235,6 +249,87 @@ fn from_dynamic(image: DynamicImage) -> TextureData {
             height,
             format: TextureFormat::Rgba8Srgb,
             words,
+            nonfinite_texels: 0,
         }
     }
+}
+
+/// A codec's error in words for a user: the format, what is wrong, and the codec's detail only
+/// when it is a sentence (some codecs print Rust debug text such as
+/// `ChunkType { type: IDAT, critical: true, … }` or `Corrupt deflate stream. BadZlibHeader`).
+pub(crate) fn describe_image_error(e: &image::ImageError) -> String {
+    use image::error::ImageFormatHint;
+    use image::ImageError as E;
+    let format_name = |hint: ImageFormatHint| match hint {
+        ImageFormatHint::Exact(ImageFormat::Png) => "PNG".to_owned(),
+        ImageFormatHint::Exact(ImageFormat::Jpeg) => "JPEG".to_owned(),
+        ImageFormatHint::Exact(ImageFormat::Hdr) => "Radiance HDR".to_owned(),
+        ImageFormatHint::Exact(ImageFormat::OpenExr) => "OpenEXR".to_owned(),
+        ImageFormatHint::Exact(f) => f
+            .extensions_str()
+            .first()
+            .map_or_else(|| "image".to_owned(), |ext| ext.to_ascii_uppercase()),
+        _ => "image".to_owned(),
+    };
+    match e {
+        E::Decoding(d) => {
+            let format = format_name(d.format_hint());
+            let detail = std::error::Error::source(d).map(|s| s.to_string());
+            match detail.as_deref().and_then(humanize_codec_detail) {
+                Some(detail) => format!("the {format} data is corrupt: {detail}"),
+                None => format!("the {format} data is corrupt or truncated"),
+            }
+        }
+        E::Limits(_) => format!(
+            "decoding it would need more memory than the {} MiB allowed for one image",
+            MAX_DECODE_BYTES >> 20
+        ),
+        E::Unsupported(u) => {
+            let text = u.to_string();
+            if text.contains('{') {
+                format!(
+                    "it uses a feature of the {} format that is not supported",
+                    format_name(u.format_hint())
+                )
+            } else {
+                format!("not supported: {text}")
+            }
+        }
+        E::IoError(io) if io.kind() == std::io::ErrorKind::UnexpectedEof => {
+            "the file ends before the image does (truncated?)".to_owned()
+        }
+        E::IoError(io) => format!("the image data cannot be read: {io}"),
+        E::Parameter(p) => format!("bad image parameters: {p}"),
+        E::Encoding(_) => "the image could not be encoded".to_owned(),
+    }
+}
+
+/// A codec's detail message as a sentence, or `None` when it is (or holds) Rust debug text.
+fn humanize_codec_detail(detail: &str) -> Option<String> {
+    let detail = detail.trim();
+    if detail.starts_with("Corrupt deflate stream") {
+        return Some("its compressed pixel data is damaged".to_owned());
+    }
+    // `ChunkType { type: IDAT, critical: true, … }` → `IDAT`.
+    let mut text = detail.to_owned();
+    while let Some(start) = text.find("ChunkType {") {
+        let Some(rest) = text.get(start..) else { break };
+        let name = rest
+            .split_once("type: ")
+            .and_then(|(_, after)| after.split([',', ' ']).next())
+            .unwrap_or("a")
+            .to_owned();
+        let Some(end) = rest.find('}') else { break };
+        text.replace_range(start..start + end + 1, &name);
+    }
+    if text.starts_with("CRC error") {
+        return Some(format!(
+            "a checksum does not match, the file is damaged ({})",
+            text.trim_end_matches('.')
+        ));
+    }
+    if text.is_empty() || text.contains(['{', '}']) {
+        return None;
+    }
+    Some(text.trim_end_matches('.').to_owned())
 }

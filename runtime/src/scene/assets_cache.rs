@@ -6,15 +6,20 @@
 //! [`AssetCache::insert_texture`]); a model image is keyed by the path `file.glb#images[i]`, which
 //! is also what the model's material instances name it by.
 //!
-//! Invariant: the n-th distinct asset gets index n, in order of first use, so ids are deterministic.
+//! Invariants: the n-th distinct asset gets index n, in order of first use, so ids are
+//! deterministic. A file is only read once its path passed `assets::confine` (inside the scene's
+//! folder or an asset root); a refused path is [`AssetError::Escape`](crate::assets::AssetError)
+//! at the scene's string (E0903). A texture whose texels held NaN or infinities (replaced by 0 on
+//! load) adds a warning naming the file and the count.
 
 use std::collections::HashMap;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use rtc_compiler::sema::hir::{ConstValue, MeshAsset, TextureAsset};
 
 use super::SceneError;
-use crate::assets::{self, MeshData, TextureData};
+use crate::assets::confine::resolve_scene_path;
+use crate::assets::{self, AssetError, AssetRoots, MeshData, TextureData};
 
 /// What identifies a mesh (the span of the string that named it does not).
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
@@ -23,10 +28,12 @@ pub(super) enum MeshKey {
     Quad,
     Cube,
     Sphere(u32),
-    /// Primitive `mesh` (in `ModelScene::meshes` order) of a glTF file.
+    /// Primitive `mesh` (in `ModelScene::meshes` order) of a glTF file; `label` says which
+    /// (`meshes[2].primitives[0]`, from `ModelScene::mesh_labels`).
     Model {
         path: PathBuf,
         mesh: usize,
+        label: String,
     },
 }
 
@@ -47,7 +54,7 @@ impl MeshKey {
             MeshKey::Quad => "quad_mesh()".into(),
             MeshKey::Cube => "cube_mesh()".into(),
             MeshKey::Sphere(n) => format!("sphere_mesh({n})"),
-            MeshKey::Model { path, mesh } => format!("{}#mesh {mesh}", path.display()),
+            MeshKey::Model { path, label, .. } => format!("{}#{label}", path.display()),
         }
     }
 }
@@ -80,11 +87,46 @@ impl TextureKey {
 pub(super) struct AssetCache {
     pub meshes: Vec<(MeshKey, MeshData)>,
     pub textures: Vec<(TextureKey, TextureData)>,
+    /// What loading found and repaired (non-finite texels), one sentence each.
+    pub warnings: Vec<String>,
     mesh_index: HashMap<MeshKey, usize>,
     texture_index: HashMap<TextureKey, usize>,
+    /// The scene file (for errors) and its folder.
+    scene_file: PathBuf,
+    scene_dir: PathBuf,
+    /// Where else assets may come from.
+    pub roots: AssetRoots,
 }
 
 impl AssetCache {
+    /// An empty cache for the scene in `scene_file` (its folder is where paths are resolved);
+    /// `roots` are the other folders assets may come from.
+    pub fn new(scene_file: Option<&Path>, roots: AssetRoots) -> AssetCache {
+        let scene_file = scene_file.map(Path::to_path_buf).unwrap_or_default();
+        let scene_dir = scene_file
+            .parent()
+            .map(Path::to_path_buf)
+            .unwrap_or_default();
+        AssetCache {
+            scene_file,
+            scene_dir,
+            roots,
+            ..AssetCache::default()
+        }
+    }
+
+    /// The file to read for a path the scene names, checked to stay inside the allowed folders.
+    pub fn confined(&self, compiled: &Path) -> Result<PathBuf, AssetError> {
+        resolve_scene_path(compiled, &self.scene_dir, &self.roots).map_err(|(written, problem)| {
+            AssetError::Escape {
+                path: self.scene_file.clone(),
+                item: None,
+                written,
+                problem: Box::new(problem),
+            }
+        })
+    }
+
     /// The index of a mesh, loading it on first use.
     pub fn mesh(&mut self, asset: &MeshAsset) -> Result<usize, SceneError> {
         let key = MeshKey::of(asset);
@@ -92,12 +134,13 @@ impl AssetCache {
             return Ok(i);
         }
         let mut data = match asset {
-            MeshAsset::File { path, span } => {
-                assets::load_obj(path).map_err(|source| SceneError::Asset {
+            MeshAsset::File { path, span } => self
+                .confined(path)
+                .and_then(assets::load_obj)
+                .map_err(|source| SceneError::Asset {
                     span: Some(*span),
                     source,
-                })?
-            }
+                })?,
             MeshAsset::Quad => assets::quad_mesh(),
             MeshAsset::Cube => assets::cube_mesh(),
             MeshAsset::Sphere { subdivisions } => assets::sphere_mesh(*subdivisions),
@@ -143,10 +186,17 @@ impl AssetCache {
         }
         let data = match asset {
             TextureAsset::File { path, span } => {
-                assets::load_image(path).map_err(|source| SceneError::Asset {
-                    span: Some(*span),
-                    source,
-                })?
+                let data = self
+                    .confined(path)
+                    .and_then(assets::load_image)
+                    .map_err(|source| SceneError::Asset {
+                        span: Some(*span),
+                        source,
+                    })?;
+                if data.nonfinite_texels > 0 {
+                    self.warnings.push(nonfinite_warning(path, &data));
+                }
+                data
             }
             TextureAsset::Solid(c) => assets::solid_texture(*c),
         };
@@ -166,4 +216,14 @@ impl AssetCache {
             _ => Ok(()),
         }
     }
+}
+
+/// The warning for a texture whose NaN or infinite texels were replaced by 0.
+pub(super) fn nonfinite_warning(path: &Path, data: &TextureData) -> String {
+    format!(
+        "{}: {} of {} texels hold NaN or infinite values; they were replaced by 0",
+        path.display(),
+        data.nonfinite_texels,
+        data.texel_count()
+    )
 }

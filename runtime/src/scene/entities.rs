@@ -42,13 +42,15 @@ use super::gpu_types::{FrameUniforms, GpuInstance};
 use super::models;
 use super::params::ParamsBuilder;
 use super::SceneError;
-use crate::assets::TextureFormat;
+use crate::assets::{AssetRoots, TextureFormat};
 
 /// Options of the entity stage.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct EntityOptions {
     /// The BVH builder preset, for every BLAS and the TLAS.
     pub bvh: BuildPreset,
+    /// Folders besides the scene's own that its assets may come from (`--asset-root`).
+    pub asset_roots: AssetRoots,
 }
 
 /// A type id and the word offset of an instance in `params`.
@@ -330,7 +332,11 @@ impl Entities {
 
         // 2. Assets, each once.
         let start = Instant::now();
-        let mut cache = AssetCache::default();
+        let scene_file = program
+            .modules
+            .get(scene.module.index())
+            .and_then(|m| m.path.as_deref());
+        let mut cache = AssetCache::new(scene_file, options.asset_roots.clone());
         let mut object_meshes = Vec::with_capacity(scene.objects.len());
         for obj in &scene.objects {
             object_meshes.push(match &obj.geometry {
@@ -355,6 +361,7 @@ impl Entities {
                 scene: scene.name.clone(),
             });
         };
+        warnings.append(&mut cache.warnings);
         stats.load_ms = ms_since(start);
 
         // 3. One BLAS per distinct mesh, triangles in leaf order.

@@ -97,6 +97,12 @@ mod upload;
 #[cfg(test)]
 mod tests;
 
+/// The naming of a too-large binding's largest part, for the asset tests.
+#[cfg(test)]
+pub(crate) mod upload_for_tests {
+    pub(crate) use super::upload::name_the_largest_part;
+}
+
 pub use encode::{decode_octahedral, octahedral, pack_snorm2x16, unpack_snorm2x16};
 pub use entities::{
     Entities, EntityOptions, EntityStats, LightEntity, MeshEntity, ObjectEntity, ObjectGeometry,
@@ -116,7 +122,8 @@ use crate::gpu::{BufferError, DispatchError};
 /// Why a scene could not be turned into entities or GPU buffers.
 #[derive(Debug, thiserror::Error)]
 pub enum SceneError {
-    /// An asset the scene names cannot be loaded (E0902).
+    /// An asset the scene names cannot be loaded (E0902), or its path leads outside the allowed
+    /// folders (E0903).
     #[error("{source}")]
     Asset {
         /// The string in the scene that names it, when known.
@@ -198,6 +205,15 @@ pub enum SceneError {
     /// A buffer could not be created or written (including data above a device limit).
     #[error(transparent)]
     Buffer(#[from] BufferError),
+    /// A binding holding meshes or textures exceeds a device limit; names the largest part.
+    #[error("{source}; the largest part of it is {part}")]
+    BindingTooLarge {
+        /// The buffer error (it names the binding, the size and the limit).
+        source: BufferError,
+        /// The largest mesh (its file, and for a glTF model `file.glb#meshes[m].primitives[p]`) or
+        /// texture in it.
+        part: String,
+    },
     /// Reading a buffer back failed.
     #[error(transparent)]
     ReadBack(#[from] DispatchError),
@@ -212,9 +228,47 @@ fn object_label(index: usize, name: Option<&str>) -> String {
 
 impl SceneError {
     /// The error as a diagnostic at the scene's source, when it is about something written there
-    /// (an asset that cannot be read: E0902). Render it with the compile's source map.
+    /// (an asset that cannot be read: E0902; an asset path leading outside the allowed folders:
+    /// E0903). Render it with the compile's source map.
     pub fn to_diagnostic(&self) -> Option<Diagnostic> {
         match self {
+            SceneError::Asset {
+                span: Some(span),
+                source:
+                    source @ AssetError::Escape {
+                        item,
+                        written,
+                        problem,
+                        ..
+                    },
+            } => {
+                let what = match item {
+                    Some(item) => format!("{item} of `{}`", source.path().display()),
+                    None => "the path".to_owned(),
+                };
+                let allowed = problem.allowed();
+                let help = if allowed.is_empty() {
+                    "write a path relative to the scene's (or the glTF file's) folder, with `/` \
+                     between folders; files elsewhere need their folder named with \
+                     `--asset-root DIR`"
+                        .to_owned()
+                } else {
+                    format!(
+                        "move the file into {}, or name its folder with `--asset-root DIR`",
+                        allowed
+                            .iter()
+                            .map(|a| format!("`{}`", crate::assets::display_folder(a)))
+                            .collect::<Vec<_>>()
+                            .join(" or ")
+                    )
+                };
+                Some(
+                    Diagnostic::error(codes::E0903, format!("{what} `{written}` {problem}"), *span)
+                        .with_label("named here")
+                        .with_note(source.to_string())
+                        .with_help(help),
+                )
+            }
             SceneError::Asset {
                 span: Some(span),
                 source,

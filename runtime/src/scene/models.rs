@@ -19,7 +19,8 @@
 //! - the first perspective camera of the first model that has one → a `Pinhole`, when the scene
 //!   has no `camera` entry (`fov` = `yfov` in degrees, looking along the camera's -z).
 //!
-//! Invariants: the entry's span is the span of every instance made here (errors point at the
+//! Invariants: the file and everything it refers to stay inside the scene's folder or an asset
+//! root (`assets::confine`); the entry's span is the span of every instance made here (errors point at the
 //! `model` string); a glTF file named by several entries is read once; what the import skips or
 //! approximates is a warning (the file's own, prefixed with its name), never silent.
 
@@ -36,7 +37,7 @@ use rtc_compiler::Span;
 use super::assets_cache::{AssetCache, MeshKey, TextureKey};
 use super::SceneError;
 use crate::assets::model::{AlphaMode, LightKind, ModelScene, Projection};
-use crate::assets::{load_gltf, solid_texture};
+use crate::assets::{load_gltf_with, solid_texture};
 
 /// An object a model brings.
 pub(super) struct ModelObject {
@@ -76,10 +77,13 @@ pub(super) fn import(
     let mut loaded: HashMap<PathBuf, ModelScene> = HashMap::new();
     for model in &scene.models {
         if !loaded.contains_key(&model.path) {
-            let data = load_gltf(&model.path).map_err(|source| SceneError::Asset {
-                span: Some(model.span),
-                source,
-            })?;
+            let data = cache
+                .confined(&model.path)
+                .and_then(|file| load_gltf_with(file, &cache.roots))
+                .map_err(|source| SceneError::Asset {
+                    span: Some(model.span),
+                    source,
+                })?;
             let name = model.path.display();
             parts
                 .warnings
@@ -181,6 +185,11 @@ fn import_one(
         let key = MeshKey::Model {
             path: model.path.clone(),
             mesh: i,
+            label: data
+                .mesh_labels
+                .get(i)
+                .cloned()
+                .unwrap_or_else(|| format!("mesh {i}")),
         };
         meshes.push(cache.insert_mesh(key, || mesh.clone()));
     }

@@ -45,7 +45,15 @@ fn compile(text: &str) -> (Program, Linked) {
 }
 
 fn build_with(p: &Program, l: &Linked, bvh: BuildPreset) -> Result<Entities, SceneError> {
-    Entities::build(p, &p.scenes[l.scene], l, &EntityOptions { bvh })
+    Entities::build(
+        p,
+        &p.scenes[l.scene],
+        l,
+        &EntityOptions {
+            bvh,
+            ..EntityOptions::default()
+        },
+    )
 }
 
 fn build_entities(p: &Program, l: &Linked) -> Entities {

@@ -10,7 +10,8 @@
 //!
 //! Invariants: only bindings in the list given to [`GpuScene::new`] get buffers; data above a
 //! device limit is refused with `BufferError::TooLarge` naming the binding, before anything is
-//! written; `accum` and `counters` are zeroed by [`GpuScene::clear_accumulation`], never by an
+//! written (for the mesh and texture bindings, [`SceneError::BindingTooLarge`] also names the
+//! largest mesh or texture in it: its file, and for a glTF mesh the mesh); `accum` and `counters` are zeroed by [`GpuScene::clear_accumulation`], never by an
 //! upload of scene data.
 
 use rtc_compiler::abi;
@@ -20,8 +21,8 @@ use super::entities::Entities;
 use super::gpu_types::{element_size, FrameUniforms, GpuInstance};
 use super::SceneError;
 use crate::gpu::{
-    read_buffer, read_vec4_f32, BindingDesc, BindingKind, BufferLimits, BufferSet, Gpu, TileParams,
-    UploadOutcome, UploadStats,
+    read_buffer, read_vec4_f32, BindingDesc, BindingKind, BufferError, BufferLimits, BufferSet,
+    Gpu, TileParams, UploadOutcome, UploadStats,
 };
 
 /// The runtime's description of an ABI binding (kind and one element as the minimum size).
@@ -157,41 +158,51 @@ impl GpuScene {
         let mut outcomes = Vec::with_capacity(self.bindings.len());
         for (abi_desc, desc) in &self.bindings {
             let set = &mut self.buffers;
+            let binding = abi_desc.name;
+            let named = |e: BufferError| name_the_largest_part(e, binding, entities);
             let outcome = match abi_desc.name {
                 "frame" => set.upload(gpu, desc, bytemuck::bytes_of(frame))?,
                 // Only for a bounds kernel that reads it; the tile dispatcher binds its own.
                 "tile" => set.upload(gpu, desc, bytemuck::bytes_of(&TileParams::default()))?,
-                "nodes" => set.upload_generation(
-                    gpu,
-                    desc,
-                    bytemuck::cast_slice(entities.nodes()),
-                    versions.nodes,
-                )?,
+                "nodes" => set
+                    .upload_generation(
+                        gpu,
+                        desc,
+                        bytemuck::cast_slice(entities.nodes()),
+                        versions.nodes,
+                    )
+                    .map_err(named)?,
                 "instances" => set.upload(gpu, desc, bytemuck::cast_slice(instances))?,
-                "triangles" => set.upload_generation(
-                    gpu,
-                    desc,
-                    bytemuck::cast_slice(entities.triangles()),
-                    versions.triangles,
-                )?,
-                "attributes" => set.upload_generation(
-                    gpu,
-                    desc,
-                    bytemuck::cast_slice(entities.attributes()),
-                    versions.attributes,
-                )?,
+                "triangles" => set
+                    .upload_generation(
+                        gpu,
+                        desc,
+                        bytemuck::cast_slice(entities.triangles()),
+                        versions.triangles,
+                    )
+                    .map_err(named)?,
+                "attributes" => set
+                    .upload_generation(
+                        gpu,
+                        desc,
+                        bytemuck::cast_slice(entities.attributes()),
+                        versions.attributes,
+                    )
+                    .map_err(named)?,
                 "params" => set.upload_generation(
                     gpu,
                     desc,
                     bytemuck::cast_slice(entities.params()),
                     versions.params,
                 )?,
-                "texels" => set.upload_generation(
-                    gpu,
-                    desc,
-                    bytemuck::cast_slice(entities.texels()),
-                    versions.texels,
-                )?,
+                "texels" => set
+                    .upload_generation(
+                        gpu,
+                        desc,
+                        bytemuck::cast_slice(entities.texels()),
+                        versions.texels,
+                    )
+                    .map_err(named)?,
                 "accum" => set.ensure_zeroed(gpu, desc, accum_entries.max(1) * 16)?,
                 "counters" => set.ensure_zeroed(gpu, desc, 16)?,
                 // A binding this runtime does not know: nothing to put in it.
@@ -241,5 +252,62 @@ impl GpuScene {
             }
         }
         Ok(out)
+    }
+}
+
+/// A [`BufferError::TooLarge`] of a binding that holds meshes (`nodes`, `triangles`,
+/// `attributes`) or textures (`texels`), with the largest mesh or texture in it named (its file,
+/// and for a glTF file the mesh), since that is what the user can change.
+pub(crate) fn name_the_largest_part(
+    error: BufferError,
+    binding: &str,
+    entities: &Entities,
+) -> SceneError {
+    if !matches!(error, BufferError::TooLarge { .. }) {
+        return SceneError::Buffer(error);
+    }
+    // Bytes per triangle slot and per BVH record, as the GPU layouts hold them.
+    let part = match binding {
+        "triangles" | "attributes" | "nodes" => {
+            let bytes = |m: &super::MeshEntity| match binding {
+                "triangles" => u64::from(m.slots) * 48,
+                "attributes" => u64::from(m.slots) * 32,
+                _ => u64::from(m.node_count) * 32,
+            };
+            entities.meshes().iter().max_by_key(|m| bytes(m)).map(|m| {
+                format!(
+                    "the mesh `{}` ({} triangles, {} bytes of `{binding}`)",
+                    m.source,
+                    m.triangles,
+                    bytes(m)
+                )
+            })
+        }
+        "texels" => {
+            let bytes = |t: &super::TextureEntity| {
+                u64::from(t.width) * u64::from(t.height) * t.format.words_per_texel() as u64 * 4
+            };
+            entities
+                .textures()
+                .iter()
+                .max_by_key(|t| bytes(t))
+                .map(|t| {
+                    format!(
+                        "the texture `{}` ({}x{} texels, {} bytes)",
+                        t.source,
+                        t.width,
+                        t.height,
+                        bytes(t)
+                    )
+                })
+        }
+        _ => None,
+    };
+    match part {
+        Some(part) => SceneError::BindingTooLarge {
+            source: error,
+            part,
+        },
+        None => SceneError::Buffer(error),
     }
 }

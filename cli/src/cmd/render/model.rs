@@ -1,9 +1,10 @@
 //! `rtc render model.gltf|model.glb`: a bare glTF file rendered through a scene written for it.
 //!
 //! The file is read once here to see what it lacks; then a scene is synthesised as `.rt` text with
-//! one `model` entry (the file, by absolute path) plus the defaults it needs, and written to a fresh
+//! one `model` entry (the file, by its name) plus the defaults it needs, and written to a fresh
 //! temporary folder ([`SynthScene`], removed on drop) so it goes through the normal compile and
-//! render path:
+//! render path, with the model's folder as the first asset root ([`SynthScene::model_dir`]), so the
+//! model and the files it names are confined to its folder as in any scene:
 //! - **camera**: the file's first perspective camera if it has one, else a `Pinhole` framing the
 //!   model's world-space bounds (from the front, [`ELEVATION_DEG`] above the centre, at the distance
 //!   where the bounding sphere fills [`FRAME_FILL`] of a [`FOV_DEG`] vertical field of view);
@@ -18,7 +19,7 @@
 //! `rtc render` prints. A file that cannot be read is an error naming it (the loader's message).
 
 use rtc_runtime::assets::model::{ModelScene, Projection};
-use rtc_runtime::assets::{load_gltf, AssetError};
+use rtc_runtime::assets::{load_gltf_with, AssetError, AssetRoots};
 use std::path::{Path, PathBuf};
 
 /// Vertical field of view of the framing camera, degrees.
@@ -65,6 +66,9 @@ pub struct SynthScene {
     pub path: PathBuf,
     /// The defaults chosen, one sentence each.
     pub defaults: Vec<String>,
+    /// The model's folder (absolute): the scene names the model relative to it, so it must be
+    /// the first asset root of the render.
+    pub model_dir: PathBuf,
     dir: PathBuf,
 }
 
@@ -184,13 +188,16 @@ fn fmt3(v: glam::Vec3) -> String {
     format!("({:.3}, {:.3}, {:.3})", v.x, v.y, v.z)
 }
 
-/// Reads the model at `path` and writes a scene for it into a fresh temporary folder.
-pub fn synthesize(path: &Path) -> Result<SynthScene, ModelError> {
-    let data = load_gltf(path)?;
+/// Reads the model at `path` (its buffers and images from its folder or `roots`) and writes a
+/// scene for it into a fresh temporary folder.
+pub fn synthesize(path: &Path, roots: &AssetRoots) -> Result<SynthScene, ModelError> {
+    let data = load_gltf_with(path, roots)?;
     let absolute = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
     let model = absolute
-        .to_str()
+        .file_name()
+        .and_then(|n| n.to_str())
         .ok_or_else(|| ModelError::Path(absolute.clone()))?;
+    let model_dir = absolute.parent().map(Path::to_path_buf).unwrap_or_default();
     let (text, defaults) = scene_text(model, &data);
     let dir = unique_dir();
     let scene = dir.join("scene.rt");
@@ -198,6 +205,7 @@ pub fn synthesize(path: &Path) -> Result<SynthScene, ModelError> {
     let synth = SynthScene {
         path: scene,
         defaults,
+        model_dir,
         dir,
     };
     match written {

@@ -140,6 +140,7 @@ fn soak_20_edits_with_previews() {
             size: Some([32, 32]),
             samples: Some(1),
             adapter: AdapterChoice::default(),
+            asset_roots: Default::default(),
         }),
         false,
     );

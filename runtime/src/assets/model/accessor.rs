@@ -15,7 +15,7 @@ use gltf::json::validation::Checked;
 
 use super::buffers::{dangling, view_bytes};
 use super::Ctx;
-use crate::assets::{AssetError, GltfItem};
+use crate::assets::{AssetError, CountProblem, GltfItem};
 
 /// The largest `count` of an accessor that has no buffer view.
 pub(super) const MAX_VIEWLESS_ELEMENTS: u64 = 1 << 24;
@@ -68,6 +68,11 @@ pub(super) fn read<T: Copy + Default, const N: usize>(
         needed,
         available,
     };
+    let bad_count = |problem| AssetError::AccessorCount {
+        path: ctx.path.to_owned(),
+        item,
+        problem,
+    };
     let count = accessor.count.0;
     let component_size = component.size();
     let element_size = component_size * N;
@@ -110,7 +115,10 @@ pub(super) fn read<T: Copy + Default, const N: usize>(
         }
         None => {
             if count > MAX_VIEWLESS_ELEMENTS {
-                return Err(out_of_range(count.saturating_mul(element_size as u64), 0));
+                return Err(bad_count(CountProblem::ViewlessTooLarge {
+                    count,
+                    max: MAX_VIEWLESS_ELEMENTS,
+                }));
             }
             vec![[T::default(); N]; count as usize]
         }
@@ -119,7 +127,7 @@ pub(super) fn read<T: Copy + Default, const N: usize>(
     if let Some(sparse) = &accessor.sparse {
         let n = sparse.count.0;
         if n > count {
-            return Err(out_of_range(n, count));
+            return Err(bad_count(CountProblem::SparseCount { sparse: n, count }));
         }
         let Checked::Valid(index_type) = &sparse.indices.component_type else {
             return Err(dangling(ctx, item));
@@ -150,7 +158,12 @@ pub(super) fn read<T: Copy + Default, const N: usize>(
             let slot = elements
                 .get_mut(target as usize)
                 .filter(|_| target >= 0.0 && target < count as f64)
-                .ok_or_else(|| out_of_range(target as u64, count))?;
+                .ok_or_else(|| {
+                    bad_count(CountProblem::SparseIndex {
+                        index: target as u64,
+                        count,
+                    })
+                })?;
             *slot = decode(vb);
         }
     }

@@ -4,7 +4,9 @@
 //! Invariants: buffer `i` of [`load`]'s result holds at least `buffers[i].byteLength` bytes;
 //! [`view_bytes`] only returns ranges that lie inside their buffer. A referenced file that cannot
 //! be read is [`AssetError::MissingFile`] naming it. Only relative paths (percent-decoded) and
-//! `data:` URIs are followed; other schemes (`http:`, `file:`) are refused.
+//! `data:` URIs are followed; other schemes (`http:`, `file:`) are refused, and a path must stay
+//! inside the glTF file's folder or an asset root (`assets::confine`: no absolute paths, drive
+//! letters, backslashes, `..` or symlinks leading out), else [`AssetError::Escape`].
 
 use std::borrow::Cow;
 use std::path::{Path, PathBuf};
@@ -12,6 +14,7 @@ use std::path::{Path, PathBuf};
 use gltf::json;
 
 use super::Ctx;
+use crate::assets::confine::{self, AssetRoots, Search};
 use crate::assets::{AssetError, GltfItem, UriProblem};
 
 /// Loads every buffer of the document. The first buffer without a URI takes the `.glb` binary
@@ -20,12 +23,13 @@ pub(super) fn load(
     root: &json::Root,
     mut blob: Option<Vec<u8>>,
     path: &Path,
+    roots: &AssetRoots,
 ) -> Result<Vec<Vec<u8>>, AssetError> {
     let mut buffers = Vec::with_capacity(root.buffers.len());
     for (i, buffer) in root.buffers.iter().enumerate() {
         let item = GltfItem::Buffer(i);
         let data = match &buffer.uri {
-            Some(uri) => read_uri(uri, path, item)?.0,
+            Some(uri) => read_uri(uri, path, roots, item)?.0,
             None => blob.take().ok_or_else(|| AssetError::Uri {
                 path: path.to_owned(),
                 item,
@@ -101,7 +105,7 @@ pub(super) fn image_bytes<'a>(
             problems: vec![(format!("images[{index}]"), json::validation::Error::Missing)],
         });
     };
-    let (bytes, file) = read_uri(uri, ctx.path, item)?;
+    let (bytes, file) = read_uri(uri, ctx.path, ctx.roots, item)?;
     Ok((Cow::Owned(bytes), file.unwrap_or_else(embedded_label)))
 }
 
@@ -117,6 +121,7 @@ pub(super) fn dangling(ctx: &Ctx<'_>, item: GltfItem) -> AssetError {
 fn read_uri(
     uri: &str,
     gltf_path: &Path,
+    roots: &AssetRoots,
     item: GltfItem,
 ) -> Result<(Vec<u8>, Option<PathBuf>), AssetError> {
     let fail = |problem| AssetError::Uri {
@@ -135,14 +140,25 @@ fn read_uri(
         let bytes = decode_base64(data).ok_or_else(|| fail(UriProblem::BadBase64))?;
         return Ok((bytes, None));
     }
-    if has_scheme(uri) {
+    // `file:` URIs and drive letters are paths trying to leave the folder: `confine` refuses
+    // them as escapes; any other scheme is one we do not fetch.
+    let file_like = uri
+        .get(..5)
+        .is_some_and(|s| s.eq_ignore_ascii_case("file:"))
+        || matches!(uri.as_bytes(), [d, b':', ..] if d.is_ascii_alphabetic());
+    if confine::has_scheme(uri) && !file_like {
         return Err(fail(UriProblem::UnsupportedScheme));
     }
     let relative = percent_decode(uri).ok_or_else(|| fail(UriProblem::BadPercentEncoding))?;
-    let file = gltf_path
-        .parent()
-        .unwrap_or_else(|| Path::new(""))
-        .join(relative);
+    let folder = gltf_path.parent().unwrap_or_else(|| Path::new(""));
+    let file = confine::resolve(&relative, folder, roots, Search::BaseOnly).map_err(|problem| {
+        AssetError::Escape {
+            path: gltf_path.to_owned(),
+            item: Some(item),
+            written: uri.chars().take(200).collect(),
+            problem: Box::new(problem),
+        }
+    })?;
     match std::fs::read(&file) {
         Ok(bytes) => Ok((bytes, Some(file))),
         Err(source) => Err(AssetError::MissingFile {
@@ -152,16 +168,6 @@ fn read_uri(
             source,
         }),
     }
-}
-
-/// Whether a URI starts with a scheme (`[A-Za-z][A-Za-z0-9+.-]*:`).
-fn has_scheme(uri: &str) -> bool {
-    let Some((scheme, _)) = uri.split_once(':') else {
-        return false;
-    };
-    let mut chars = scheme.chars();
-    chars.next().is_some_and(|c| c.is_ascii_alphabetic())
-        && chars.all(|c| c.is_ascii_alphanumeric() || matches!(c, '+' | '.' | '-'))
 }
 
 /// Decodes `%xx` escapes; `None` for a malformed escape or a result that is not UTF-8.

@@ -3,6 +3,9 @@
 //! Invariants of the returned root: it passed `gltf-json`'s validator, so every index in it is in
 //! range, every `Checked` value is `Valid`, and every required extension is one we enabled.
 //!
+//! One rule of `gltf-json`'s validator is relaxed to the specification's: an accessor without a
+//! `bufferView` and without `sparse` is all zeros, not an error (`viewless_accessor`).
+//!
 //! Two things are done here and not left to the `gltf` crate, because it would panic:
 //! - The `.glb` container is split by [`split_glb`], which checks every length against the file
 //!   (`gltf`'s `Glb::from_slice` subtracts the header size from the declared length unchecked).
@@ -52,7 +55,12 @@ pub(super) fn parse(
     let mut problems = precheck(&root);
     if problems.is_empty() {
         root.validate(&root, json::Path::new, &mut |at, error| {
-            problems.push((at().to_string(), error));
+            let at = at().to_string();
+            // `gltf-json` requires a `bufferView` on an accessor without `sparse`, but the
+            // specification says such an accessor is zeros (`accessor.rs` reads it so).
+            if !viewless_accessor(&at, &error) {
+                problems.push((at, error));
+            }
         });
     }
     if !problems.is_empty() {
@@ -62,6 +70,17 @@ pub(super) fn parse(
         });
     }
     Ok((root, blob.map(<[u8]>::to_vec)))
+}
+
+/// Whether a validation problem is `gltf-json`'s refusal of an accessor without a `bufferView`
+/// (`accessors[i].bufferView` missing), which glTF 2.0 allows: "When undefined, the accessor
+/// MUST be initialized with zeros".
+fn viewless_accessor(at: &str, error: &ValidationError) -> bool {
+    matches!(error, ValidationError::Missing)
+        && at
+            .strip_prefix("accessors[")
+            .and_then(|rest| rest.strip_suffix("].bufferView"))
+            .is_some_and(|index| index.bytes().all(|b| b.is_ascii_digit()))
 }
 
 /// The problems `gltf-json`'s validator would panic on instead of reporting.

@@ -105,7 +105,7 @@ impl Materials {
                     .get(info.index.value())
                     .ok_or_else(|| dangling(ctx, GltfItem::Texture(info.index.value())))?;
                 let image = texture.source.value();
-                Some(self.texture(ctx, image).map_err(|e| match e {
+                Some(self.texture(ctx, image, warnings).map_err(|e| match e {
                     // Name the material too: that is what the user knows the texture by.
                     AssetError::MissingFile {
                         path, file, source, ..
@@ -114,6 +114,17 @@ impl Materials {
                         item: GltfItem::BaseColorImage { material: m, image },
                         file,
                         source,
+                    },
+                    AssetError::Escape {
+                        path,
+                        written,
+                        problem,
+                        ..
+                    } => AssetError::Escape {
+                        path,
+                        item: Some(GltfItem::BaseColorImage { material: m, image }),
+                        written,
+                        problem,
                     },
                     other => other,
                 })?)
@@ -145,12 +156,27 @@ impl Materials {
     }
 
     /// The index in `textures` of glTF image `image`, decoding it on first use.
-    fn texture(&mut self, ctx: &Ctx<'_>, image: usize) -> Result<usize, AssetError> {
+    /// A texture whose texels held NaN or infinities (replaced by 0) adds a warning.
+    fn texture(
+        &mut self,
+        ctx: &Ctx<'_>,
+        image: usize,
+        warnings: &mut Vec<String>,
+    ) -> Result<usize, AssetError> {
         if let Some(&index) = self.image_index.get(&image) {
             return Ok(index);
         }
         let (bytes, label) = image_bytes(ctx, image)?;
         let texture = decode_image(&bytes, &label)?;
+        if texture.nonfinite_texels > 0 {
+            warnings.push(format!(
+                "images[{image}] (`{}`): {} of {} texels hold NaN or infinite values; they were \
+                 replaced by 0",
+                label.display(),
+                texture.nonfinite_texels,
+                texture.texel_count()
+            ));
+        }
         self.textures.push(texture);
         let index = self.textures.len() - 1;
         self.image_index.insert(image, index);

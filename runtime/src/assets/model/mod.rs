@@ -8,7 +8,8 @@
 //!    the validator (every index in range, required properties present, required extensions
 //!    supported).
 //! 2. `buffers::load`: every buffer's bytes (the `.glb` binary chunk, a `data:` URI, or a file
-//!    relative to the glTF file), each at least its declared length.
+//!    relative to the glTF file, which must stay inside its folder or an asset root:
+//!    `assets::confine`), each at least its declared length.
 //! 3. `nodes::walk`: the default scene (or the first; without scenes, every parentless node),
 //!    depth first, children in order, accumulating world transforms. Each node with a mesh adds
 //!    one [`MeshInstance`] per primitive; each camera and `KHR_lights_punctual` light is placed
@@ -53,13 +54,15 @@ use std::path::Path;
 
 use glam::{Mat4, Vec3};
 
-use super::{AssetError, Bounds, MeshData, TextureData};
+use super::{AssetError, AssetRoots, Bounds, MeshData, TextureData};
 
 /// Everything a glTF file contributes to a scene.
 #[derive(Clone, Debug, Default)]
 pub struct ModelScene {
     /// One mesh per used glTF primitive.
     pub meshes: Vec<MeshData>,
+    /// What each of `meshes` is in the file, for messages: `meshes[2].primitives[0] (`Wheel`)`.
+    pub mesh_labels: Vec<String>,
     /// Placed meshes; several may share a mesh.
     pub instances: Vec<MeshInstance>,
     /// The used materials (glTF's default material last, when a primitive has none).
@@ -253,24 +256,45 @@ pub struct GltfLight {
 
 /// Reads a glTF 2.0 file (`.gltf` or `.glb`, told apart by content) and everything it refers to.
 /// See the [module docs](self) for what is imported and what is skipped.
+/// The files its buffers and images name must lie inside the file's own folder.
 pub fn load_gltf(path: impl AsRef<Path>) -> Result<ModelScene, AssetError> {
+    load_gltf_with(path, &AssetRoots::none())
+}
+
+/// [`load_gltf`], also letting buffers and images come from the folders `roots` (`--asset-root`).
+pub fn load_gltf_with(
+    path: impl AsRef<Path>,
+    roots: &AssetRoots,
+) -> Result<ModelScene, AssetError> {
     let path = path.as_ref();
     let bytes = std::fs::read(path).map_err(|source| AssetError::Read {
         path: path.to_owned(),
         source,
     })?;
-    parse_gltf(&bytes, path)
+    parse_gltf_with(&bytes, path, roots)
 }
 
 /// [`load_gltf`] on the file's bytes; `path` names the file in errors and its folder is where
-/// relative URIs are resolved.
+/// relative URIs are resolved (and must stay).
+#[cfg(test)]
 pub(crate) fn parse_gltf(bytes: &[u8], path: &Path) -> Result<ModelScene, AssetError> {
+    parse_gltf_with(bytes, path, &AssetRoots::none())
+}
+
+/// [`load_gltf_with`] on the file's bytes; `path` names the file in errors and its folder is where
+/// relative URIs are resolved (and must stay, or in one of `roots`).
+pub(crate) fn parse_gltf_with(
+    bytes: &[u8],
+    path: &Path,
+    roots: &AssetRoots,
+) -> Result<ModelScene, AssetError> {
     let (root, blob) = document::parse(bytes, path)?;
-    let buffers = buffers::load(&root, blob, path)?;
+    let buffers = buffers::load(&root, blob, path, roots)?;
     let ctx = Ctx {
         path,
         root: &root,
         buffers: &buffers,
+        roots,
     };
     nodes::build(&ctx)
 }
@@ -278,6 +302,7 @@ pub(crate) fn parse_gltf(bytes: &[u8], path: &Path) -> Result<ModelScene, AssetE
 /// What every conversion step reads: the file's name, its validated JSON and its buffers.
 struct Ctx<'a> {
     path: &'a Path,
+    roots: &'a AssetRoots,
     root: &'a gltf::json::Root,
     buffers: &'a [Vec<u8>],
 }

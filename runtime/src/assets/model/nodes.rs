@@ -175,6 +175,10 @@ fn convert_mesh(
     for (p, prim) in mesh.primitives.iter().enumerate() {
         if let Some(data) = primitive::convert(ctx, m, p, prim, &mut scene.warnings)? {
             scene.meshes.push(data);
+            scene.mesh_labels.push(match &mesh.name {
+                Some(name) => format!("meshes[{m}].primitives[{p}] (`{name}`)"),
+                None => format!("meshes[{m}].primitives[{p}]"),
+            });
             converted.push((scene.meshes.len() - 1, prim.material.map(|i| i.value())));
         }
     }

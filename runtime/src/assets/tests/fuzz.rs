@@ -23,7 +23,7 @@ fn all_loaders(bytes: &[u8]) {
 
 /// A `.glb` that exercises most of the importer: sparse accessor, strided u8 uvs, an embedded
 /// PNG, a material, a camera, a light and a node hierarchy.
-fn rich_glb() -> Vec<u8> {
+pub(super) fn rich_glb() -> Vec<u8> {
     let (mut b, pos, idx) = triangle();
     let sparse_indices = b.view(&[1u8, 2], None);
     let sparse_values = b.view(&[0u8; 24], None);

@@ -13,8 +13,8 @@ use super::gltf_builder::{
 use super::{assert_close3, TempDir};
 use crate::assets::model::parse_gltf;
 use crate::assets::{
-    load_gltf, AlphaMode, AssetError, GlbProblem, GltfItem, LightKind, ModelScene, Projection,
-    UriProblem,
+    load_gltf, AlphaMode, AssetError, CountProblem, GlbProblem, GltfItem, LightKind, ModelScene,
+    Projection, UriProblem,
 };
 
 fn parse(bytes: &[u8]) -> Result<ModelScene, AssetError> {
@@ -773,10 +773,21 @@ fn large_counts_without_data_are_refused() {
         one_node(json!([{ "attributes": { "POSITION": pos } }])),
     );
     let result = parse_doc(&doc);
-    assert!(
-        matches!(result, Err(AssetError::AccessorOutOfRange { .. })),
-        "{result:?}"
-    );
+    match &result {
+        Err(
+            e @ AssetError::AccessorCount {
+                problem: CountProblem::ViewlessTooLarge { count, max },
+                ..
+            },
+        ) => {
+            assert_eq!((*count, *max), (4_000_000_000, 1 << 24));
+            // Element counts are called elements, never bytes.
+            let message = e.to_string();
+            assert!(message.contains("4000000000 elements"), "{message}");
+            assert!(!message.contains("bytes"), "{message}");
+        }
+        other => panic!("{other:?}"),
+    }
 }
 
 #[test]

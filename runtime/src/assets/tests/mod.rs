@@ -2,11 +2,14 @@
 //! never panics). Files are written to a fresh folder under the system temp dir ([`TempDir`])
 //! that is removed afterwards; nothing outside the repository is read.
 
+mod confine;
 mod fuzz;
+mod fuzz_files;
 mod gltf;
 mod gltf_builder;
 mod gltf_scene;
 mod mesh;
+mod messages;
 mod obj;
 mod procedural;
 mod texture;

@@ -137,6 +137,7 @@ fn solid_texture_is_one_linear_texel() {
             height: 1,
             format: TextureFormat::Rgba16F,
             words: vec![pack_f16x2(0.25, 0.5), pack_f16x2(2.0, 1.0)],
+            nonfinite_texels: 0,
         }
     );
     assert_eq!(tex.texel(0, 0), Some([0.25, 0.5, 2.0, 1.0]));
