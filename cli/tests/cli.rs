@@ -348,31 +348,38 @@ fn outputs_are_checked_before_rendering() {
     let dir = scratch("outputs");
     let scene = good_scene(&dir);
     let missing = dir.join("no/such/dir/x.png");
+    let (csv_missing, json_txt) = (dir.join("no/t.csv"), dir.join("t.txt"));
+    let folder = dir.join("folder.png");
+    std::fs::create_dir_all(&folder).unwrap();
+    let (csv_json, svg_missing) = (dir.join("t.json"), dir.join("none/p.svg"));
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (
             vec!["render", s(&scene), "-o", s(&missing)],
             "does not exist",
         ),
-        (vec!["render", s(&scene), "-o", s(&dir)], "it is a folder"),
+        (
+            vec!["render", s(&scene), "-o", s(&folder)],
+            "it is a folder",
+        ),
         (
             vec!["render", s(&scene), "-o", "x.jpg"],
             "must end in `.png` or `.exr`",
         ),
         (vec!["bvh", s(&scene), "-o", s(&missing)], "does not exist"),
         (
-            vec!["bench", s(&scene), "--csv", s(&dir.join("no/t.csv"))],
+            vec!["bench", s(&scene), "--csv", s(&csv_missing)],
             "does not exist",
         ),
         (
-            vec!["bench", s(&scene), "--json", s(&dir.join("t.txt"))],
+            vec!["bench", s(&scene), "--json", s(&json_txt)],
             "must end in `.json`",
         ),
         (
-            vec!["bench", s(&scene), "--csv", s(&dir.join("t.json"))],
+            vec!["bench", s(&scene), "--csv", s(&csv_json)],
             "must end in `.csv`",
         ),
         (
-            vec!["bench", s(&scene), "--plot", s(&dir.join("none/p.svg"))],
+            vec!["bench", s(&scene), "--plot", s(&svg_missing)],
             "does not exist",
         ),
         (
