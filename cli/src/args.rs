@@ -89,3 +89,61 @@ impl GlobalArgs {
         options
     }
 }
+
+/// Parses a samples-per-pixel count (`--spp`, bench's lists), bounded like a scene's `samples`:
+/// from 1 to [`MAX_SAMPLES`](rtc_compiler::sema::scenes::MAX_SAMPLES), so an absurd count is
+/// refused at once instead of rendering for hours.
+pub fn parse_spp(text: &str) -> Result<u32, String> {
+    let max = rtc_compiler::sema::scenes::MAX_SAMPLES;
+    match text.trim().parse::<u64>() {
+        Ok(n) if (1..=u64::from(max)).contains(&n) => Ok(n as u32),
+        Ok(0) => Err("the samples per pixel must be at least 1".to_string()),
+        Ok(_) => Err(format!(
+            "`{text}` samples per pixel is more than rtc renders: at most {max}, the limit of a \
+             scene's `samples`"
+        )),
+        Err(_) => Err(format!(
+            "`{text}` is not a sample count; write a whole number from 1 to {max}"
+        )),
+    }
+}
+
+/// Checks, before any work, that `path` can be written as an output file: its folder exists and
+/// is a folder, and `path` itself is not a folder. `what` names the option in the message
+/// (e.g. "`-o`"). The extension is the caller's business.
+pub fn check_output_path(path: &std::path::Path, what: &str) -> Result<(), String> {
+    let shown = path.display();
+    if path.as_os_str().is_empty() {
+        return Err(format!("{what} is empty: name the file to write"));
+    }
+    if path.is_dir() {
+        return Err(format!(
+            "cannot write {what} `{shown}`: it is a folder; name a file in it"
+        ));
+    }
+    let parent = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => std::path::Path::new("."),
+    };
+    match std::fs::metadata(parent) {
+        Ok(m) if m.is_dir() => {
+            if m.permissions().readonly() {
+                Err(format!(
+                    "cannot write {what} `{shown}`: the folder `{}` is read-only",
+                    parent.display()
+                ))
+            } else {
+                Ok(())
+            }
+        }
+        Ok(_) => Err(format!(
+            "cannot write {what} `{shown}`: `{}` is not a folder",
+            parent.display()
+        )),
+        Err(_) => Err(format!(
+            "cannot write {what} `{shown}`: the folder `{}` does not exist (rtc does not create \
+             it)",
+            parent.display()
+        )),
+    }
+}

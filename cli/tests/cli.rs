@@ -281,3 +281,163 @@ fn compile_reports_a_missing_program() {
         "{err}"
     );
 }
+
+/// A scene in a scratch folder that checks (for tests that must fail on their arguments only).
+fn good_scene(dir: &Path) -> PathBuf {
+    let file = dir.join("scene.rt");
+    std::fs::write(
+        &file,
+        "import \"std/cameras/pinhole.rt\";\nimport \"std/materials/lambert.rt\";\n\
+         scene a { camera Pinhole {} object o { geometry: cube_mesh(), material: Lambert {} } }\n",
+    )
+    .unwrap();
+    file
+}
+
+/// `--spp` above a scene's `samples` limit (2^20), 0 or not a number is a usage error (exit 2) at
+/// once, in every command that takes it, before anything is compiled or rendered; so are bench's
+/// sample lists and a `--size` side above 16384.
+#[test]
+fn sample_counts_and_sizes_are_bounded_like_the_scene_settings() {
+    let dir = scratch("spp-bounds");
+    let scene = good_scene(&dir);
+    let png = dir.join("x.png");
+    let cases: Vec<Vec<&str>> = vec![
+        vec!["render", s(&scene), "-o", s(&png), "--spp", "1048577"],
+        vec!["bvh", s(&scene), "-o", s(&png), "--spp", "1048577"],
+        vec!["view", s(&scene), "--spp", "1048577"],
+        vec!["watch", s(&scene), "--spp", "1048577"],
+        vec!["bench", s(&scene), "--spp-list", "1,4,1048577"],
+        vec!["bench", s(&scene), "--reference-spp", "1048577"],
+        vec![
+            "bench",
+            s(&scene),
+            "--bvh-presets",
+            "--preset-spp",
+            "1048577",
+        ],
+    ];
+    for args in &cases {
+        let started = std::time::Instant::now();
+        let out = rtc(args);
+        let err = stderr(&out);
+        assert_eq!(code(&out), 2, "{args:?}: {err}");
+        assert!(
+            err.contains("`1048577` samples per pixel is more than rtc renders: at most 1048576"),
+            "{args:?}: {err}"
+        );
+        // Refused from the arguments alone: nothing was compiled (a compile takes seconds).
+        assert!(started.elapsed().as_secs() < 30, "{args:?}");
+    }
+    for bad in ["0", "-1", "lots"] {
+        let out = rtc(&["render", s(&scene), "-o", s(&png), "--spp", bad]);
+        assert_eq!(code(&out), 2, "--spp {bad}: {}", stderr(&out));
+    }
+    let out = rtc(&["render", s(&scene), "-o", s(&png), "--size", "16385x16"]);
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    assert!(stderr(&out).contains("from 1 to 16384"), "{}", stderr(&out));
+    let out = rtc(&["watch", s(&scene), "--debounce-ms", "86400000"]);
+    assert_eq!(code(&out), 2, "{}", stderr(&out));
+    assert!(!png.exists());
+}
+
+/// An output that cannot be written (a missing folder, a folder, a wrong extension) is a usage
+/// error before anything is compiled or rendered: render, bvh, bench's --csv/--json/--plot.
+#[test]
+fn outputs_are_checked_before_rendering() {
+    let dir = scratch("outputs");
+    let scene = good_scene(&dir);
+    let missing = dir.join("no/such/dir/x.png");
+    let (csv_missing, json_txt) = (dir.join("no/t.csv"), dir.join("t.txt"));
+    let folder = dir.join("folder.png");
+    std::fs::create_dir_all(&folder).unwrap();
+    let (csv_json, svg_missing) = (dir.join("t.json"), dir.join("none/p.svg"));
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (
+            vec!["render", s(&scene), "-o", s(&missing)],
+            "does not exist",
+        ),
+        (
+            vec!["render", s(&scene), "-o", s(&folder)],
+            "it is a folder",
+        ),
+        (
+            vec!["render", s(&scene), "-o", "x.jpg"],
+            "must end in `.png` or `.exr`",
+        ),
+        (vec!["bvh", s(&scene), "-o", s(&missing)], "does not exist"),
+        (
+            vec!["bench", s(&scene), "--csv", s(&csv_missing)],
+            "does not exist",
+        ),
+        (
+            vec!["bench", s(&scene), "--json", s(&json_txt)],
+            "must end in `.json`",
+        ),
+        (
+            vec!["bench", s(&scene), "--csv", s(&csv_json)],
+            "must end in `.csv`",
+        ),
+        (
+            vec!["bench", s(&scene), "--plot", s(&svg_missing)],
+            "does not exist",
+        ),
+        (
+            vec!["watch", s(&scene), "-o", s(&missing)],
+            "does not exist",
+        ),
+    ];
+    for (args, expected) in &cases {
+        let started = std::time::Instant::now();
+        let out = rtc(args);
+        let err = stderr(&out);
+        assert_eq!(code(&out), 2, "{args:?}: {err}");
+        assert!(err.contains(expected), "{args:?}: {err}");
+        assert!(started.elapsed().as_secs() < 30, "{args:?}");
+    }
+    assert!(!dir.join("no").exists());
+}
+
+/// An unknown `--scene` and a folder without a scene are reported in the user's files (never at
+/// `std/prelude.rt`), naming the scenes there are.
+#[test]
+fn scene_choice_errors_point_at_the_users_files() {
+    let dir = scratch("scene-choice");
+    let scene = good_scene(&dir);
+    let out = rtc(&[
+        "compile",
+        s(&scene),
+        "--scene",
+        "nope",
+        "--out",
+        s(&dir.join("out")),
+    ]);
+    let err = stderr(&out);
+    assert_eq!(code(&out), 1, "{err}");
+    assert!(err.contains("error[E0706]: no scene named `nope`"), "{err}");
+    assert!(err.contains("scene.rt:3:7"), "{err}");
+    assert!(err.contains("the scenes are `a`"), "{err}");
+    assert!(!err.contains("prelude"), "{err}");
+
+    let lib = dir.join("lib");
+    std::fs::create_dir_all(&lib).unwrap();
+    std::fs::write(lib.join("util.rt"), "fn f() -> f32 { return 1.0; }\n").unwrap();
+    let out = rtc(&["compile", s(&lib), "--out", s(&dir.join("out"))]);
+    let err = stderr(&out);
+    assert_eq!(code(&out), 1, "{err}");
+    assert!(
+        err.contains("error[E0703]: there is no scene to compile"),
+        "{err}"
+    );
+    assert!(err.contains("util.rt:1:1"), "{err}");
+    assert!(!err.contains("prelude"), "{err}");
+
+    let empty = dir.join("empty");
+    std::fs::create_dir_all(&empty).unwrap();
+    let out = rtc(&["compile", s(&empty), "--out", s(&dir.join("out"))]);
+    let err = stderr(&out);
+    assert_eq!(code(&out), 1, "{err}");
+    assert!(err.contains("holds no `.rt` file"), "{err}");
+    assert!(err.contains(s(&empty)), "{err}");
+    assert!(!err.contains("prelude"), "{err}");
+}

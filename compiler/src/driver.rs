@@ -152,6 +152,7 @@ fn check(roots: Vec<Root>, options: &Options) -> Checked {
     // declarations) are not the user's business.
     diagnostics
         .retain(|d| d.is_error() || !l.sources.get(d.primary.span.file).name.starts_with("rtc:"));
+    suppress_follow_ons(&mut diagnostics, &l.modules);
     diag::sort(&mut diagnostics);
     let ok = !diag::has_errors(&diagnostics);
     if let Some(cache) = &options.cache {
@@ -162,6 +163,43 @@ fn check(roots: Vec<Root>, options: &Options) -> Checked {
         diagnostics,
         program: ok.then_some(program),
     }
+}
+
+/// Drops what a parse error causes in the item it broke: warnings (a variable whose use was in
+/// the unparsed text is not unused), a missing scene entry (E0703: the entry may be the text that
+/// failed to parse) and a missing `return` (E0503). An error between items counts against the item
+/// before it. Other errors in a broken item are kept: they are real whatever the parse did.
+fn suppress_follow_ons(diags: &mut Vec<Diagnostic>, modules: &[SourceModule]) {
+    let mut broken: Vec<Span> = Vec::new();
+    for d in diags.iter().filter(|d| diag::is_syntax_error(d)) {
+        let at = d.primary.span;
+        let Some(m) = modules.iter().find(|m| m.ast.file == at.file) else {
+            continue;
+        };
+        let item = m
+            .ast
+            .items
+            .iter()
+            .rev()
+            .find(|i| i.span.lo <= at.lo)
+            .or_else(|| m.ast.items.first());
+        if let Some(i) = item {
+            broken.push(i.span);
+        }
+    }
+    if broken.is_empty() {
+        return;
+    }
+    let follows = |d: &Diagnostic| {
+        let s = d.primary.span;
+        let inside = broken
+            .iter()
+            .any(|b| b.file == s.file && b.lo <= s.lo && s.lo <= b.hi);
+        inside
+            && !diag::is_syntax_error(d)
+            && (!d.is_error() || d.code == diag::codes::E0703 || d.code == diag::codes::E0503)
+    };
+    diags.retain(|d| !follows(d));
 }
 
 struct Loader<'o> {

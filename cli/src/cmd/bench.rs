@@ -53,7 +53,7 @@ pub struct Args {
     #[arg(long, value_name = "FILE", conflicts_with = "reference_spp")]
     pub reference: Option<PathBuf>,
     /// Render the reference from the scene at this many samples per pixel (default 1024).
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, value_name = "N", value_parser = crate::args::parse_spp)]
     pub reference_spp: Option<u32>,
     /// The sample counts to measure, comma-separated.
     #[arg(
@@ -61,7 +61,7 @@ pub struct Args {
         value_name = "LIST",
         value_delimiter = ',',
         default_value = "1,4,16,64,256",
-        value_parser = clap::value_parser!(u32).range(1..)
+        value_parser = crate::args::parse_spp
     )]
     pub spp_list: Vec<u32>,
     /// Image size instead of the scene's `width` and `height`, as `WIDTHxHEIGHT`.
@@ -89,7 +89,7 @@ pub struct Args {
     #[arg(long)]
     pub bvh_presets: bool,
     /// Samples per pixel of the `--bvh-presets` renders.
-    #[arg(long, value_name = "N", default_value_t = 16, value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, value_name = "N", default_value_t = 16, value_parser = crate::args::parse_spp)]
     pub preset_spp: u32,
     /// Where else the scene's assets may come from.
     #[command(flatten)]
@@ -218,19 +218,30 @@ fn setup_of(r: &RenderResult) -> Setup {
 
 /// Runs `rtc bench`.
 pub fn run(args: &Args, ctx: &Context) -> Exit {
-    if let Some(plot) = &args.plot {
-        let ext = plot
+    // Every output is checked before anything is compiled or rendered.
+    let outputs = [
+        (&args.csv, "--csv", "csv", "CSV"),
+        (&args.json, "--json", "json", "JSON"),
+        (&args.plot, "--plot", "svg", "SVG"),
+    ];
+    for (path, option, extension, format) in outputs {
+        let Some(path) = path else { continue };
+        let ext = path
             .extension()
             .and_then(|e| e.to_str())
             .map(str::to_ascii_lowercase);
-        if ext.as_deref() != Some("svg") {
+        if ext.as_deref() != Some(extension) {
             return report::usage_error(
                 &format!(
-                    "cannot draw `{}`: the plot is written as SVG, so its name must end in `.svg`",
-                    plot.display()
+                    "cannot write {option} `{}`: it is written as {format}, so its name must end \
+                     in `.{extension}`",
+                    path.display()
                 ),
                 ctx.color,
             );
+        }
+        if let Err(e) = crate::args::check_output_path(path, option) {
+            return report::usage_error(&e, ctx.color);
         }
     }
     let choice = match AdapterChoice::from_str(&args.adapter) {

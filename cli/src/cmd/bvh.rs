@@ -64,7 +64,7 @@ pub struct Args {
     #[arg(long, value_name = "PX", default_value_t = 1.5)]
     pub line_width: f32,
     /// Samples per pixel of the render under the boxes (default: the scene's).
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, value_name = "N", value_parser = crate::args::parse_spp)]
     pub spp: Option<u32>,
     /// Image size instead of the scene's, as `WIDTHxHEIGHT`.
     #[arg(long, value_name = "WxH")]
@@ -94,6 +94,9 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             ctx.color,
         );
     };
+    if let Err(e) = crate::args::check_output_path(&args.output, "the image") {
+        return report::usage_error(&e, ctx.color);
+    }
     if !(args.line_width.is_finite() && args.line_width > 0.0) {
         return report::usage_error(
             "--line-width must be a positive number of pixels",

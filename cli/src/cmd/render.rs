@@ -24,6 +24,7 @@ use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::kernel::compile_scene;
 use rtc_compiler::link::LinkOptions;
+use rtc_compiler::sema::scenes::MAX_IMAGE_SIDE;
 use rtc_runtime::assets::AssetRoots;
 use rtc_runtime::gpu::{AdapterChoice, Gpu};
 use rtc_runtime::image_out::{write_exr, write_png, ToneMap};
@@ -48,7 +49,7 @@ pub struct Args {
     #[arg(long, value_name = "WxH")]
     pub size: Option<Size>,
     /// Samples per pixel instead of the scene's `samples`.
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, value_name = "N", value_parser = crate::args::parse_spp)]
     pub spp: Option<u32>,
     /// Which scene to render when the file declares several.
     #[arg(long, value_name = "NAME")]
@@ -102,12 +103,12 @@ impl FromStr for Size {
             s.trim()
                 .parse::<u32>()
                 .ok()
-                .filter(|&n| (1..=16384).contains(&n))
+                .filter(|&n| (1..=MAX_IMAGE_SIDE).contains(&n))
         };
         match (parse(w), parse(h)) {
             (Some(width), Some(height)) => Ok(Size { width, height }),
             _ => Err(format!(
-                "`{text}`: width and height must be whole numbers from 1 to 16384"
+                "`{text}`: width and height must be whole numbers from 1 to {MAX_IMAGE_SIDE}"
             )),
         }
     }
@@ -143,6 +144,9 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             ctx.color,
         );
     };
+    if let Err(e) = crate::args::check_output_path(&args.output, "the image") {
+        return report::usage_error(&e, ctx.color);
+    }
     let choice = match AdapterChoice::from_str(&args.adapter) {
         Ok(c) => c,
         Err(e) => return report::usage_error(&e.to_string(), ctx.color),

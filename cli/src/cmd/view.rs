@@ -59,7 +59,7 @@ pub struct Args {
     #[arg(long, value_name = "WxH")]
     pub size: Option<Size>,
     /// Samples per pixel to refine to, instead of the scene's `samples`.
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, value_name = "N", value_parser = crate::args::parse_spp)]
     pub spp: Option<u32>,
     /// Which scene, when the file declares several.
     #[arg(long, value_name = "NAME")]
@@ -626,6 +626,9 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
                 ),
                 ctx.color,
             );
+        }
+        if let Err(e) = crate::args::check_output_path(path, "the screenshot") {
+            return report::usage_error(&e, ctx.color);
         }
     }
     let choice = match AdapterChoice::from_str(&args.adapter) {

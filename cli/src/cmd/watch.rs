@@ -68,7 +68,7 @@ pub struct Args {
     #[arg(long, value_name = "WxH")]
     pub size: Option<Size>,
     /// Preview samples per pixel instead of the scene's `samples`.
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, value_name = "N", value_parser = crate::args::parse_spp)]
     pub spp: Option<u32>,
     /// Which scene, when the file declares several.
     #[arg(long, value_name = "NAME")]
@@ -77,7 +77,7 @@ pub struct Args {
     #[arg(long, value_name = "CHOICE", default_value = "auto")]
     pub adapter: String,
     /// A reload starts once no file event came for this long.
-    #[arg(long, value_name = "MS", default_value_t = 15)]
+    #[arg(long, value_name = "MS", default_value_t = 15, value_parser = clap::value_parser!(u64).range(0..=60_000))]
     pub debounce_ms: u64,
     /// Stop after this many builds, counting the first (for tests and benchmarks).
     #[arg(long, value_name = "N", hide = true)]
@@ -715,6 +715,9 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
                     ctx.color,
                 );
             };
+            if let Err(e) = crate::args::check_output_path(path, "the preview") {
+                return report::usage_error(&e, ctx.color);
+            }
             let adapter = match AdapterChoice::from_str(&args.adapter) {
                 Ok(c) => c,
                 Err(e) => return report::usage_error(&e.to_string(), ctx.color),

@@ -71,6 +71,7 @@ codes! {
     E0412 => "an expression that is not constant where a constant is required",
     E0413 => "a type that cannot be used here",
     E0414 => "a call to something that is not a function",
+    E0415 => "a constant operation on finite values whose `f32` result is infinite or NaN",
 
     // ---- statements and control flow ----
     E0501 => "assignment to an immutable binding",
@@ -97,6 +98,9 @@ codes! {
     E0704 => "a scene setting out of range",
     E0705 => "a scene entry given twice",
     E0706 => "more than one scene where one is expected",
+    E0707 => "a procedural mesh parameter out of range (`sphere_mesh` subdivisions)",
+    E0708 => "a transform that cannot be inverted in single precision (not affine, singular, or a scale whose inverse overflows `f32`)",
+    E0709 => "a camera parameter that makes every ray invalid (a field of view, size or distance out of range, a zero-length view direction, `up` along the view direction)",
 
     // ---- call graph and static limits ----
     E0801 => "recursion (GPUs have no call stack)",
@@ -111,6 +115,7 @@ codes! {
     W0001 => "an unused variable",
     W0002 => "an expression statement whose value is unused",
     W0003 => "unreachable code",
+    W0004 => "`max_rays_per_hit` below the spawn bound of a `@secondary_rays` program the scene uses: rays are dropped",
 
     // ---- internal ----
     ICE => "internal compiler error: a bug in rtc, please report it",

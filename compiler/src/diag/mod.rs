@@ -122,17 +122,25 @@ pub fn has_errors(diags: &[Diagnostic]) -> bool {
     diags.iter().any(Diagnostic::is_error)
 }
 
-/// Sorts diagnostics by file, position and code, so output is stable.
+/// Whether `d` is a lexical or syntax error (E01xx, E02xx): a cause of what follows it.
+pub fn is_syntax_error(d: &Diagnostic) -> bool {
+    d.is_error() && (d.code.0.starts_with("E01") || d.code.0.starts_with("E02"))
+}
+
+/// Sorts diagnostics by file, then lexical and syntax errors before the others (a cause before
+/// its consequences), then position and code, so output is stable.
 pub fn sort(diags: &mut [Diagnostic]) {
     diags.sort_by(|a, b| {
         (
             a.primary.span.file,
+            !is_syntax_error(a),
             a.primary.span.lo,
             a.primary.span.hi,
             a.code.0,
         )
             .cmp(&(
                 b.primary.span.file,
+                !is_syntax_error(b),
                 b.primary.span.lo,
                 b.primary.span.hi,
                 b.code.0,

@@ -140,7 +140,8 @@ pub fn check_with_kernel_timed(
     let scene_id = match program.select_scene(scene) {
         Ok(s) => s,
         Err(e) => {
-            let d = vec![scene_choice_diagnostic(&e, &first)];
+            let mut first = first;
+            let d = vec![scene_choice_diagnostic(&e, &mut first, paths)];
             return Err(fail(first, d));
         }
     };
@@ -170,7 +171,8 @@ pub fn check_with_kernel_timed(
     let scene_id = match program.select_scene(scene) {
         Ok(s) => s,
         Err(e) => {
-            let d = vec![scene_choice_diagnostic(&e, &second)];
+            let mut second = second;
+            let d = vec![scene_choice_diagnostic(&e, &mut second, paths)];
             return Err(fail(second, d));
         }
     };
@@ -182,24 +184,80 @@ pub fn check_with_kernel_timed(
 }
 
 /// E0706 for an ambiguous or unknown scene name; E0703 when the files declare no scene at all.
+/// Both are located in the user's files: an unknown name at the scenes there are, no scene at the
+/// start of the (first) user file, or, when `paths` held no `.rt` file at all (an empty folder),
+/// at an empty source named after `paths`, added to `checked`'s sources for the purpose.
 fn scene_choice_diagnostic(
     e: &crate::sema::hir::SceneChoiceError,
-    checked: &Checked,
+    checked: &mut Checked,
+    paths: &[PathBuf],
 ) -> Diagnostic {
-    e.to_diagnostic().unwrap_or_else(|| {
-        let file = checked
-            .program
-            .as_ref()
-            .and_then(|p| p.modules.iter().find(|m| m.is_root))
-            .map(|m| m.file)
-            .unwrap_or_default();
-        Diagnostic::error(
-            crate::diag::codes::E0703,
-            "there is no scene to compile",
-            crate::source::Span::new(file, 0, 0),
-        )
-        .with_help("declare one: `scene name { camera …  object … }` (see spec/scenes.md)")
-    })
+    use crate::sema::hir::SceneChoiceError as C;
+    let program = checked.program.as_ref();
+    let root_file = program.and_then(|p| p.modules.iter().find(|m| m.is_root).map(|m| m.file));
+    let scenes: Vec<crate::source::Span> = program
+        .map(|p| {
+            p.scenes
+                .iter()
+                .filter(|(_, s)| p.modules[s.module.index()].is_root)
+                .map(|(_, s)| s.span)
+                .collect()
+        })
+        .unwrap_or_default();
+    let shown: Vec<String> = paths.iter().map(|p| format!("`{}`", p.display())).collect();
+    let shown = shown.join(", ");
+    match e {
+        C::NotFound { name, available } => {
+            let names: Vec<String> = available.iter().map(|n| format!("`{n}`")).collect();
+            let message = format!("no scene named `{name}` in {shown}");
+            match scenes.split_first() {
+                Some((first, rest)) => {
+                    let mut d = Diagnostic::error(crate::diag::codes::E0706, message, *first)
+                        .with_label(format!("a scene, not `{name}`"));
+                    for s in rest {
+                        d = d.with_secondary(*s, "another scene");
+                    }
+                    d.with_help(format!(
+                        "the scenes are {}; choose one with `--scene NAME`",
+                        names.join(", ")
+                    ))
+                }
+                None => no_scene(checked, root_file, &shown, message),
+            }
+        }
+        _ => e.to_diagnostic().unwrap_or_else(|| {
+            let message = format!("there is no scene to compile in {shown}");
+            no_scene(checked, root_file, &shown, message)
+        }),
+    }
+}
+
+/// E0703 (no scene) at the start of `file`, or of an empty source named `shown` when the paths
+/// gave no file.
+fn no_scene(
+    checked: &mut Checked,
+    file: Option<crate::source::FileId>,
+    shown: &str,
+    message: String,
+) -> Diagnostic {
+    let (file, help) = match file {
+        Some(f) => (
+            f,
+            "declare one: `scene name { camera …  object … }` (see spec/scenes.md)".to_string(),
+        ),
+        None => (
+            checked
+                .sources
+                .add(shown.trim_matches('`').to_string(), None, String::new()),
+            format!("{shown} holds no `.rt` file; give a scene file, or a folder of them"),
+        ),
+    };
+    Diagnostic::error(
+        crate::diag::codes::E0703,
+        message,
+        crate::source::Span::new(file, 0, 0),
+    )
+    .with_help(help)
 }
 
 /// Writes the scene's program registry (its part of `rtc.registry.json` beside its file) if it

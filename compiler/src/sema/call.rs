@@ -9,7 +9,7 @@
 use super::builtins::{self, Builtin, Resolution};
 use super::error::{CtorError, NameKind, SemaError};
 use super::expr::{is_abstract, Checker, Hint, Mode};
-use super::hir::{ExprId, ExprKind, FnId};
+use super::hir::{ConstValue, ExprId, ExprKind, FnId, Scalar};
 use super::types::{ScalarKind, Type, TypeId, TypeTable};
 use super::{Def, Found, TypeCtor};
 use crate::source::Span;
@@ -185,6 +185,17 @@ impl<'a> Checker<'_, 'a> {
         let fw = self.cx.p.framework;
         match builtins::resolve(b, &tys, &fw, &mut self.cx.p.types) {
             Resolution::Match { ret, .. } => {
+                if b == Builtin::SphereMesh {
+                    if let (Some(&arg), true) = (ids.first(), self.mode == Mode::Scene) {
+                        if let Ok(ConstValue::Scalar(Scalar::U32(n))) = self.try_eval(arg) {
+                            let at = self.span(arg);
+                            if let Some(e) = super::limits::sphere_subdivisions(n, at) {
+                                self.err(e);
+                                return self.error_expr(span);
+                            }
+                        }
+                    }
+                }
                 self.alloc(ExprKind::Builtin { func: b, args: ids }, ret, span)
             }
             Resolution::Arity => {

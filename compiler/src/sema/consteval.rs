@@ -13,6 +13,11 @@
 //! - Conversions: float to int truncates toward zero and saturates (NaN gives 0); int to float rounds
 //!   to nearest; `bool(x)` is `x != 0`.
 //!
+//! An operation on finite `f32` operands whose result is infinite or NaN (`1e30 * 1e30`, `0.0 / 0.0`,
+//! `sqrt(-1.0)`) stops evaluation with [`EvalError::NonFinite`] at that operation (E0415): such a
+//! value would reach the GPU as a NaN sample. An infinity written on purpose (the prelude's `INF`,
+//! a `bitcast`) is kept, and so is arithmetic on it.
+//!
 //! Invariant: evaluation never panics, whatever HIR it is given; ill-typed input (which the checker
 //! never produces) yields [`EvalError::Silent`].
 
@@ -48,8 +53,47 @@ pub enum EvalError {
         /// What it is.
         what: NotConst,
     },
+    /// An operation on finite operands gave an infinite or NaN `f32` (E0415).
+    NonFinite {
+        /// The operation.
+        span: Span,
+        /// NaN rather than infinite.
+        nan: bool,
+    },
     /// Something already reported (an error expression or constant).
     Silent,
+}
+
+/// Whether `v` holds an infinite or NaN `f32` anywhere (components, fields, elements, a solid
+/// texture's colour).
+pub fn has_nonfinite(v: &ConstValue) -> bool {
+    any_f32(v, &|x| !x.is_finite())
+}
+
+fn any_f32(v: &ConstValue, f: &dyn Fn(f32) -> bool) -> bool {
+    let scalar = |s: &Scalar| matches!(s, Scalar::F32(x) if f(*x));
+    match v {
+        ConstValue::Scalar(s) => scalar(s),
+        ConstValue::Vector { len, comps } => comps.iter().take(usize::from(*len)).any(scalar),
+        ConstValue::Matrix { data, .. } => data.iter().flatten().any(|x| f(*x)),
+        ConstValue::Array(items) | ConstValue::Struct { fields: items, .. } => {
+            items.iter().any(|i| any_f32(i, f))
+        }
+        ConstValue::Texture(super::hir::TextureAsset::Solid(c)) => c.iter().any(|x| f(*x)),
+        _ => false,
+    }
+}
+
+/// `result`, unless finite operands gave a non-finite value there ([`EvalError::NonFinite`]).
+fn finite(span: Span, operands_finite: bool, result: ConstValue) -> Res {
+    if operands_finite && has_nonfinite(&result) {
+        Err(EvalError::NonFinite {
+            span,
+            nan: any_f32(&result, &f32::is_nan),
+        })
+    } else {
+        Ok(result)
+    }
 }
 
 /// The kinds of non-constant expressions.
@@ -88,7 +132,11 @@ pub fn eval(body: &Body, expr: ExprId, env: &Env) -> Res {
             ConstValue::Error => Err(EvalError::Silent),
             v => Ok(v.clone()),
         },
-        ExprKind::Unary { op, operand } => unary(*op, eval(body, *operand, env)?),
+        ExprKind::Unary { op, operand } => {
+            let a = eval(body, *operand, env)?;
+            let ok = !has_nonfinite(&a);
+            finite(e.span, ok, unary(*op, a)?)
+        }
         ExprKind::Binary { op, lhs, rhs } => {
             let a = eval(body, *lhs, env)?;
             // `&&` and `||` short-circuit, as at run time.
@@ -97,7 +145,9 @@ pub fn eval(body: &Body, expr: ExprId, env: &Env) -> Res {
                 | (BinaryOp::Or, ConstValue::Scalar(Scalar::Bool(true))) => return Ok(a),
                 _ => {}
             }
-            binary(*op, a, eval(body, *rhs, env)?)
+            let b = eval(body, *rhs, env)?;
+            let ok = !has_nonfinite(&a) && !has_nonfinite(&b);
+            finite(e.span, ok, binary(*op, a, b)?)
         }
         ExprKind::Call { .. } => Err(EvalError::NotConst {
             span: e.span,
@@ -115,8 +165,10 @@ pub fn eval(body: &Body, expr: ExprId, env: &Env) -> Res {
                 vals.push(eval(body, *a, env)?);
             }
             let arg_span = |i: usize| args.get(i).map(|a| body.exprs[*a].span);
-            constmath::call(*func, &vals, env.base_dir, arg_span(0).unwrap_or(e.span))
-                .ok_or(EvalError::Silent)
+            let ok = !vals.iter().any(has_nonfinite);
+            let v = constmath::call(*func, &vals, env.base_dir, arg_span(0).unwrap_or(e.span))
+                .ok_or(EvalError::Silent)?;
+            finite(e.span, ok, v)
         }
         ExprKind::Compose { components } => {
             let mut vals = Vec::with_capacity(components.len());

@@ -326,6 +326,10 @@ impl<'c, 'a> Checker<'c, 'a> {
         match self.try_eval(id) {
             Ok(v) => v,
             Err(EvalError::Silent) => ConstValue::Error,
+            Err(EvalError::NonFinite { span, nan }) => {
+                self.err(super::limits::non_finite(span, nan));
+                ConstValue::Error
+            }
             Err(EvalError::NotConst { span, what }) => {
                 let context = match self.mode {
                     Mode::Const(c) => c,

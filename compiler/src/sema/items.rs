@@ -482,7 +482,9 @@ impl<'a> Ctx<'a> {
                 match ck.try_eval(id) {
                     Ok(v) => (span, ty, v),
                     Err(EvalError::Silent) => return None,
-                    Err(EvalError::NotConst { .. }) => (span, ty, ConstValue::Error),
+                    Err(EvalError::NotConst { .. } | EvalError::NonFinite { .. }) => {
+                        (span, ty, ConstValue::Error)
+                    }
                 }
             }
         };

@@ -33,6 +33,7 @@ pub mod error;
 mod expr;
 pub mod hir;
 mod items;
+pub mod limits;
 mod programs;
 pub mod scenes;
 mod stmt;

@@ -29,6 +29,11 @@ const SETTINGS: &[&str] = &[
     "max_rays_per_hit",
     "seed",
 ];
+/// The largest image side, in pixels, of a scene's `width`/`height` and of the command line's `--size`.
+pub const MAX_IMAGE_SIDE: u32 = 16384;
+/// The most samples per pixel of a scene's `samples` and of the command line's `--spp`.
+pub const MAX_SAMPLES: u32 = 1 << 20;
+
 const OBJECT_FIELDS: &[&str] = &["geometry", "material", "transform"];
 const MODEL_FIELDS: &[&str] = &["transform"];
 
@@ -75,6 +80,8 @@ fn check_scene<'a>(
     let mut ck = Checker::new(cx, module, Mode::Scene);
     ck.base_dir = base_dir;
     let (mut settings, mut camera, mut background) = (None, None, None);
+    // Where `max_rays_per_hit` was written, if it was.
+    let mut spawn_setting = None;
     let mut names: Vec<(&str, Span)> = Vec::new();
     for entry in &decl.entries {
         if let ast::SceneEntryKind::Let { name, .. } = &entry.kind {
@@ -91,7 +98,7 @@ fn check_scene<'a>(
                     entry_head(entry.span, 8),
                     "`settings`",
                 ) {
-                    desc.settings = check_settings(&mut ck, fields);
+                    (desc.settings, spawn_setting) = check_settings(&mut ck, fields);
                 }
             }
             ast::SceneEntryKind::Camera(e) => {
@@ -102,6 +109,13 @@ fn check_scene<'a>(
                     "the camera",
                 ) {
                     desc.camera = instance(&mut ck, *e, Role::Camera);
+                    if let Some(cam) = &desc.camera {
+                        let ast = ck.ast;
+                        let field_span = |name: &str| struct_field_span(ast, *e, name);
+                        for err in super::limits::camera(&ck.cx.p, cam, &field_span) {
+                            ck.err(err);
+                        }
+                    }
                 }
             }
             ast::SceneEntryKind::Background(e) => {
@@ -163,6 +177,21 @@ fn check_scene<'a>(
             ast::SceneEntryKind::Error => {}
         }
     }
+    if desc.settings.max_depth > 0 {
+        let mut warned = Vec::new();
+        for o in &desc.objects {
+            let m = o.material.struct_id;
+            if warned.contains(&m) {
+                continue;
+            }
+            warned.push(m);
+            let s = desc.settings.max_rays_per_hit;
+            let w = super::limits::spawn_over_limit(&ck.cx.p, m, s, o.material.span, spawn_setting);
+            if let Some(w) = w {
+                ck.err(w);
+            }
+        }
+    }
     if camera.is_none() && desc.models.is_empty() {
         ck.err(SemaError::MissingEntry {
             span: decl.name.span,
@@ -217,8 +246,23 @@ fn known_fields_counting<'a>(
     (out, unknown)
 }
 
-fn check_settings(ck: &mut Checker, fields: &[ast::FieldInit]) -> Settings {
+/// The span of the value of field `name` in the struct literal `e` (through parentheses), if it
+/// is one and the field is written.
+fn struct_field_span(ast: &ast::Module, e: ast::ExprId, name: &str) -> Option<Span> {
+    match &ast.exprs[e].kind {
+        ast::ExprKind::Paren(inner) => struct_field_span(ast, *inner, name),
+        ast::ExprKind::StructLit { fields, .. } => fields
+            .iter()
+            .find(|f| f.name.name == name)
+            .map(|f| ast.exprs[f.value].span),
+        _ => None,
+    }
+}
+
+/// The settings, and where `max_rays_per_hit` was written (for W0004).
+fn check_settings(ck: &mut Checker, fields: &[ast::FieldInit]) -> (Settings, Option<Span>) {
     let mut s = Settings::default();
+    let mut spawn_setting = None;
     for f in known_fields(ck, fields, "setting", SETTINGS) {
         let id = ck.expect(f.value, TypeTable::U32);
         let v = match ck.eval_const(id) {
@@ -226,9 +270,9 @@ fn check_settings(ck: &mut Checker, fields: &[ast::FieldInit]) -> Settings {
             _ => continue,
         };
         let (key, lo, hi, slot): (&'static str, u32, u32, &mut u32) = match f.name.name.as_str() {
-            "width" => ("width", 1, 16384, &mut s.width),
-            "height" => ("height", 1, 16384, &mut s.height),
-            "samples" => ("samples", 1, 1 << 20, &mut s.samples),
+            "width" => ("width", 1, MAX_IMAGE_SIDE, &mut s.width),
+            "height" => ("height", 1, MAX_IMAGE_SIDE, &mut s.height),
+            "samples" => ("samples", 1, MAX_SAMPLES, &mut s.samples),
             "max_depth" => ("max_depth", 0, 64, &mut s.max_depth),
             "max_rays_per_hit" => ("max_rays_per_hit", 1, 64, &mut s.max_rays_per_hit),
             _ => ("seed", 0, u32::MAX, &mut s.seed),
@@ -244,9 +288,12 @@ fn check_settings(ck: &mut Checker, fields: &[ast::FieldInit]) -> Settings {
             });
         } else {
             *slot = v;
+            if key == "max_rays_per_hit" {
+                spawn_setting = Some(ck.span(id));
+            }
         }
     }
-    s
+    (s, spawn_setting)
 }
 
 /// An instance of a struct with `role` (E0702 for another role or a non-struct).
@@ -281,10 +328,17 @@ fn to_instance(v: ConstValue, span: Span) -> Option<Instance> {
     }
 }
 
+/// A transform, which the runtime must be able to invert in `f32` (E0708).
 fn check_transform(ck: &mut Checker, e: ast::ExprId) -> Option<[[f32; 4]; 4]> {
     let id = ck.expect(e, TypeTable::MAT4);
     match ck.eval_const(id) {
-        ConstValue::Matrix { data, .. } => Some(data),
+        ConstValue::Matrix { data, .. } => {
+            if let Some(err) = super::limits::transform(&data, ck.span(id)) {
+                ck.err(err);
+                return None;
+            }
+            Some(data)
+        }
         _ => None,
     }
 }

@@ -13,10 +13,11 @@ use glam::Vec3;
 
 use super::MeshData;
 
-/// The largest `sphere_mesh` subdivision level; larger requests are clamped to it. Level 8 is
+/// The largest `sphere_mesh` subdivision level, the compiler's (which refuses larger ones in a
+/// scene, E0707); larger requests that reach this function anyway are clamped to it. Level 8 is
 /// 1,310,720 triangles and about 660k vertices (≈ 30 MB on the CPU), already far finer than any
 /// image needs.
-pub const MAX_SPHERE_SUBDIVISIONS: u32 = 8;
+pub const MAX_SPHERE_SUBDIVISIONS: u32 = rtc_compiler::sema::limits::MAX_SPHERE_SUBDIVISIONS;
 
 /// The square [-1, 1]² in the xz-plane (y = 0), normal +y: 4 vertices, 2 triangles.
 ///

@@ -267,7 +267,8 @@ fn material_flags(linked: &Linked, s: StructId) -> u32 {
     })
 }
 
-/// Checks an object-to-world matrix and returns its inverse.
+/// Checks an object-to-world matrix and returns its inverse. (The compiler refuses such
+/// transforms in a scene with a located E0708; this catches those of glTF nodes and models.)
 fn invert_transform(m: &Mat4) -> Result<Mat4, &'static str> {
     if !m.is_finite() {
         return Err("has a NaN or infinite entry");
@@ -277,9 +278,12 @@ fn invert_transform(m: &Mat4) -> Result<Mat4, &'static str> {
     }
     let det = m.determinant();
     if det == 0.0 || !det.is_finite() {
-        return Err(
-            "is singular (it flattens the object), so rays cannot be moved into object space",
-        );
+        return Err(if m.as_dmat4().determinant() == 0.0 {
+            "is singular (it flattens the object), so rays cannot be moved into object space"
+        } else {
+            "scales the object too far for single precision (its determinant under- or \
+             overflows f32), so rays cannot be moved into object space"
+        });
     }
     let inverse = m.inverse();
     if !inverse.is_finite() {

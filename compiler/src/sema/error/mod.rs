@@ -422,6 +422,9 @@ pub enum SemaError {
         span: Span,
         cause: Span,
     },
+    /// A diagnostic built where it was found (the scene value checks of `sema::limits`), error or
+    /// warning by its severity.
+    Built(Box<crate::diag::Diagnostic>),
 }
 
 pub(super) fn list(items: &[String]) -> String {
@@ -526,12 +529,15 @@ impl R<'_> {
 impl SemaError {
     /// Whether this is a warning.
     pub fn is_warning(&self) -> bool {
-        matches!(
-            self,
-            SemaError::UnusedVariable { .. }
-                | SemaError::UnusedValue { .. }
-                | SemaError::Unreachable { .. }
-        )
+        match self {
+            SemaError::Built(d) => !d.is_error(),
+            _ => matches!(
+                self,
+                SemaError::UnusedVariable { .. }
+                    | SemaError::UnusedValue { .. }
+                    | SemaError::Unreachable { .. }
+            ),
+        }
     }
 
     /// The diagnostic shown to the user.

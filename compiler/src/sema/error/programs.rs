@@ -369,6 +369,7 @@ impl SemaError {
                     .with_label("never executed")
                     .with_secondary(*cause, "any code after this is unreachable")
             }
+            E::Built(d) => (**d).clone(),
             _ => Diagnostic::error(
                 codes::ICE,
                 "internal compiler error: unrendered error",
