@@ -17,8 +17,10 @@ use super::render::{self, model};
 use super::Context;
 use crate::args::MessageFormat;
 use crate::exit::Exit;
+use crate::args::AssetArgs;
 use crate::report;
 use rtc_compiler::link::LinkOptions;
+use rtc_runtime::assets::AssetRoots;
 use rtc_runtime::scene::{Entities, EntityOptions};
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
@@ -36,6 +38,9 @@ pub struct Args {
     /// as `rtc render` would, without a GPU.
     #[arg(long)]
     pub assets: bool,
+    /// Where assets may come from besides each scene's folder (with `--assets`).
+    #[command(flatten)]
+    pub roots: AssetArgs,
 }
 
 /// Runs `rtc check`.
@@ -60,9 +65,13 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
 /// `rtc check --assets`: each root on its own (a glTF file through its written scene), then each of
 /// its scenes linked and its assets loaded. Stops at the first root with errors.
 fn check_assets(roots: &[PathBuf], args: &Args, ctx: &Context) -> Exit {
+    let folders = match args.roots.roots() {
+        Ok(r) => r,
+        Err(e) => return report::usage_error(&e, ctx.color),
+    };
     for root in roots {
         let synth = if model::is_model(root) {
-            match model::synthesize(root) {
+            match model::synthesize(root, &folders) {
                 Ok(s) => Some(s),
                 Err(e) => return render::fail(&e.to_string(), ctx),
             }
@@ -94,8 +103,15 @@ fn check_assets(roots: &[PathBuf], args: &Args, ctx: &Context) -> Exit {
             ctx.color,
             "check",
         );
+        // A bare glTF file's scene names it relative to its folder, searched first (as in render).
+        let asset_roots = match &synth {
+            Some(s) => AssetRoots::new(
+                std::iter::once(s.model_dir.clone()).chain(folders.folders().iter().cloned()),
+            ),
+            None => folders.clone(),
+        };
         for name in &names {
-            let exit = load_scene_assets(path, name, args, ctx);
+            let exit = load_scene_assets(path, name, &asset_roots, args, ctx);
             if exit != Exit::Success {
                 return exit;
             }
@@ -105,7 +121,13 @@ fn check_assets(roots: &[PathBuf], args: &Args, ctx: &Context) -> Exit {
 }
 
 /// Links the scene `name` of `path` and loads its assets; reports what goes wrong.
-fn load_scene_assets(path: &Path, name: &str, args: &Args, ctx: &Context) -> Exit {
+fn load_scene_assets(
+    path: &Path,
+    name: &str,
+    asset_roots: &AssetRoots,
+    args: &Args,
+    ctx: &Context,
+) -> Exit {
     let compiled = match rtc_compiler::kernel::compile_scene(
         &[path.to_path_buf()],
         Some(name),
@@ -127,7 +149,11 @@ fn load_scene_assets(path: &Path, name: &str, args: &Args, ctx: &Context) -> Exi
         return render::fail(&format!("`{}` could not be linked", path.display()), ctx);
     };
     let desc = &program.scenes[compiled.scene];
-    match Entities::build(program, desc, &compiled.linked, &EntityOptions::default()) {
+    let options = EntityOptions {
+        asset_roots: asset_roots.clone(),
+        ..EntityOptions::default()
+    };
+    match Entities::build(program, desc, &compiled.linked, &options) {
         Ok(entities) => {
             for w in entities.warnings() {
                 render::warn(w, ctx);
