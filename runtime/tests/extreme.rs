@@ -731,10 +731,13 @@ const CB_LIGHT_GAP: f64 = 10.0;
 const CB_CAMERA: [i64; 3] = [0, 0, 218];
 const CB_SIZE: u32 = 128;
 
+/// A mesh with integer vertex coordinates: positions and (zero-based) triangles.
+type IntMesh = (Vec<[i64; 3]>, Vec<[u32; 3]>);
+
 /// The Cornell box's meshes as integer-coordinate triangles, by material: white (floor, ceiling,
 /// back wall, two boxes), red (left wall), green (right wall). The boxes are rotated about y by
 /// atan(1/3) (their corners are `c ± a ± b` with integer `a`, `b`), closed, standing on the floor.
-fn cornell_meshes() -> [(Vec<[i64; 3]>, Vec<[u32; 3]>); 3] {
+fn cornell_meshes() -> [IntMesh; 3] {
     let h = CB_HALF;
     let quad = |pos: &mut Vec<[i64; 3]>, tris: &mut Vec<[u32; 3]>, q: [[i64; 3]; 4]| {
         let base = pos.len() as u32;
