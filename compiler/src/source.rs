@@ -8,6 +8,9 @@
 //! - `Span::lo <= Span::hi <= len(file)`, and both fall on UTF-8 character boundaries of the file's text
 //!   (the lexer only produces such spans; [`SourceMap::line_col`] tolerates any value anyway).
 //! - A `FileId` is an index into the map that created it and is never reused.
+//! - Line and column lookups take time independent of the file's size (a binary search over line
+//!   starts, and a character count of at most [`CHAR_BLOCK`] bytes), so reporting many diagnostics
+//!   on one very long line stays linear.
 
 use std::path::{Path, PathBuf};
 
@@ -59,6 +62,9 @@ impl Span {
     }
 }
 
+/// Characters are counted from checkpoints this many bytes apart (see [`SourceFile::char_index`]).
+pub const CHAR_BLOCK: usize = 512;
+
 /// One source file: its display name, its path on disk (if any) and its text.
 #[derive(Clone, Debug)]
 pub struct SourceFile {
@@ -69,6 +75,9 @@ pub struct SourceFile {
     /// The text.
     pub text: String,
     line_starts: Vec<u32>,
+    /// `char_starts[k]`: the number of characters that start in the first `k * CHAR_BLOCK` bytes
+    /// (empty for an ASCII text, where characters are bytes).
+    char_starts: Vec<u32>,
     /// Where the file starts in the one address space shared by all files of the map (see
     /// [`SourceMap::to_global`]).
     base: u32,
@@ -79,6 +88,43 @@ impl SourceFile {
     pub fn line_starts(&self) -> &[u32] {
         &self.line_starts
     }
+
+    /// The number of characters that start before byte `offset` (clamped to the text), counted from
+    /// the nearest checkpoint: at most [`CHAR_BLOCK`] bytes are looked at.
+    pub fn char_index(&self, offset: usize) -> usize {
+        let offset = offset.min(self.text.len());
+        if self.char_starts.is_empty() {
+            return offset;
+        }
+        let block = offset / CHAR_BLOCK;
+        let before = self.char_starts.get(block).copied().unwrap_or(0) as usize;
+        before + count_char_starts(&self.text.as_bytes()[block * CHAR_BLOCK..offset])
+    }
+
+    /// The 0-based line of byte `offset` (clamped to the text).
+    pub fn line_index(&self, offset: usize) -> usize {
+        let offset = offset.min(self.text.len()) as u32;
+        match self.line_starts.binary_search(&offset) {
+            Ok(l) => l,
+            Err(l) => l - 1,
+        }
+    }
+
+    /// The byte range of 0-based line `line`, with its line break; `None` past the last line.
+    pub fn line_range(&self, line: usize) -> Option<std::ops::Range<usize>> {
+        let start = *self.line_starts.get(line)? as usize;
+        let end = self
+            .line_starts
+            .get(line + 1)
+            .map(|&e| e as usize)
+            .unwrap_or(self.text.len());
+        Some(start..end)
+    }
+}
+
+/// Bytes that start a UTF-8 character (all but continuation bytes `0b10xx_xxxx`).
+fn count_char_starts(bytes: &[u8]) -> usize {
+    bytes.iter().filter(|&&b| (b & 0xC0) != 0x80).count()
 }
 
 /// All files of one compilation.
@@ -107,6 +153,18 @@ impl SourceMap {
                 line_starts.push(i as u32 + 1);
             }
         }
+        let char_starts = if text.is_ascii() {
+            Vec::new()
+        } else {
+            text.as_bytes()
+                .chunks(CHAR_BLOCK)
+                .scan(0u32, |n, chunk| {
+                    let before = *n;
+                    *n += count_char_starts(chunk) as u32;
+                    Some(before)
+                })
+                .collect()
+        };
         let id = FileId(self.files.len() as u32);
         let base = self
             .files
@@ -118,6 +176,7 @@ impl SourceMap {
             path,
             text,
             line_starts,
+            char_starts,
             base,
         });
         id
@@ -160,16 +219,13 @@ impl SourceMap {
     pub fn line_col(&self, file: FileId, offset: u32) -> (usize, usize) {
         let f = self.get(file);
         let offset = (offset as usize).min(f.text.len());
-        let line = match f.line_starts.binary_search(&(offset as u32)) {
-            Ok(l) => l,
-            Err(l) => l - 1,
-        };
+        let line = f.line_index(offset);
         let start = f.line_starts[line] as usize;
         let mut col_start = offset;
         while col_start > start && !f.text.is_char_boundary(col_start) {
             col_start -= 1;
         }
-        let col = f.text[start..col_start].chars().count();
+        let col = f.char_index(col_start) - f.char_index(start);
         (line + 1, col + 1)
     }
 
@@ -223,6 +279,23 @@ mod tests {
         assert_eq!(map.line_col(f, 3), (2, 1));
         assert_eq!(map.line_col(f, 5), (2, 2)); // after the two-byte 'ç'
         assert_eq!(map.line_col(f, 100), (3, 1));
+    }
+
+    #[test]
+    fn columns_on_a_long_line_agree_with_a_plain_count() {
+        // Multi-byte characters straddle the checkpoint blocks.
+        let text: String = "aé€😀".repeat(3 * CHAR_BLOCK / 5) + "\nxé";
+        let mut map = SourceMap::new();
+        let f = map.add("a.rt", None, text.clone());
+        for (offset, _) in text.char_indices().step_by(97).chain([(text.len(), ' ')]) {
+            let line_start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
+            let expected = text[line_start..offset].chars().count() + 1;
+            assert_eq!(
+                map.line_col(f, offset as u32).1,
+                expected,
+                "offset {offset}"
+            );
+        }
     }
 
     #[test]

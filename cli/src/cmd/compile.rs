@@ -114,6 +114,15 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     match write_outputs(&compiled, &targets, &args.out) {
         Ok(_) => {}
         Err(OutputError::Backend(e)) => {
+            if let Some(d) = e.limit_diagnostic(&compiled.checked.sources) {
+                return report::diagnostics(
+                    &compiled.checked.sources,
+                    &[d],
+                    args.message_format,
+                    ctx.color,
+                    "compile",
+                );
+            }
             term::eprint(&format!(
                 "error[ICE]: {e}\nnote: this is a bug in rtc; please report it\n"
             ));
@@ -142,8 +151,9 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
 /// Why [`write_outputs`] stopped.
 #[derive(Debug)]
 pub enum OutputError {
-    /// A backend could not write a module (a bug in rtc: the module was validated).
-    Backend(String),
+    /// A backend could not write a module: a bug in rtc (the module was validated), or a
+    /// function too large for a target ([`back::BackendError::TooLarge`], a user error).
+    Backend(back::BackendError),
     /// A file could not be written; the message names it.
     Write(String),
 }
@@ -172,8 +182,8 @@ pub fn write_outputs(
             .map(|&(&(stem, module, entry), t)| {
                 let resources = &resources;
                 scope.spawn(move || {
-                    let bytes = back::write(module, t, entry, resources)
-                        .map_err(|e| OutputError::Backend(e.to_string()))?;
+                    let bytes =
+                        back::write(module, t, entry, resources).map_err(OutputError::Backend)?;
                     let ext = t.file_name().rsplit('.').next().unwrap_or("out");
                     let path = out.join(format!("{stem}.{ext}"));
                     std::fs::write(&path, bytes).map_err(|e| {

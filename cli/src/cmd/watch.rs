@@ -360,6 +360,9 @@ impl Session {
                 .push((format!("write {} targets", self.targets.len()), ms_since(t)));
             if let Err(e) = written {
                 let text = match e {
+                    OutputError::Backend(e @ rtc_compiler::back::BackendError::TooLarge { .. }) => {
+                        e.to_string()
+                    }
                     OutputError::Backend(e) => {
                         format!("internal compiler error: {e} (a bug in rtc; please report it)")
                     }

@@ -101,9 +101,32 @@ pub struct Resource {
     pub kind: ResourceKind,
 }
 
+/// The most values one function may give names to for the MSL target (see
+/// [`BackendError::TooLarge`]).
+///
+/// naga 30's Metal writer forgets the names of a block's values at the block's end with
+/// `IndexMap::shift_remove`, first name first, which moves every later entry: time quadratic in
+/// the number of named values of one function (at 30,000 about 3 s in a debug build, at 100,000
+/// minutes). Up to this bound the writer takes well under a second in a release build.
+pub const MSL_MAX_NAMED_VALUES: usize = 32_768;
+
 /// Why a target could not be written.
 #[derive(Clone, Debug, PartialEq)]
 pub enum BackendError {
+    /// A function is too large for this target's writer (a user limit, not a bug: reported as
+    /// E0806 at `span`).
+    TooLarge {
+        /// The target.
+        target: Target,
+        /// The function's name.
+        function: String,
+        /// The number of named values the writer would keep for it.
+        values: usize,
+        /// The most it accepts.
+        limit: usize,
+        /// The naga span of the function's first value with a span (maps back to DSL source).
+        span: Option<naga::Span>,
+    },
     /// The module is invalid, or uses something this target cannot express.
     Validation {
         /// The target being validated for.
@@ -132,6 +155,18 @@ pub enum BackendError {
 impl std::fmt::Display for BackendError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
+            BackendError::TooLarge {
+                target,
+                function,
+                values,
+                limit,
+                ..
+            } => write!(
+                f,
+                "function `{function}` names {values} values, more than the {} writer handles \
+                 ({limit})",
+                target.name()
+            ),
             BackendError::Validation {
                 target, message, ..
             } => {
@@ -222,6 +257,9 @@ pub fn write(
     resources: &[Resource],
 ) -> Result<Vec<u8>, BackendError> {
     let info = validate(module, target, target.capabilities())?;
+    if target == Target::Msl {
+        check_named_values(module, &info, target, MSL_MAX_NAMED_VALUES)?;
+    }
     guarded(target, || match target {
         Target::Wgsl => write_wgsl(module, &info),
         Target::SpirV => write_spirv(module, &info, entry_point),
@@ -229,6 +267,91 @@ pub fn write(
         Target::Msl => write_msl(module, &info, entry_point, resources),
         Target::Glsl => write_glsl(module, &info, entry_point, resources),
     })
+}
+
+impl BackendError {
+    /// The located diagnostic (E0806) of a user limit; `None` for an internal error (a bug in rtc)
+    /// or a span that maps to no file of `sources`.
+    pub fn limit_diagnostic(&self, sources: &crate::SourceMap) -> Option<crate::Diagnostic> {
+        let BackendError::TooLarge {
+            target,
+            function,
+            values,
+            limit,
+            span,
+        } = self
+        else {
+            return None;
+        };
+        let r = span.as_ref()?.to_range()?;
+        let at = sources.from_global(r.start as u32, r.end as u32)?;
+        Some(
+            crate::Diagnostic::error(
+                crate::diag::codes::E0806,
+                format!(
+                    "function `{function}` is too large for the {} target",
+                    target.name()
+                ),
+                at,
+            )
+            .with_label(format!(
+                "the function's {values} named values start here; the {} writer takes at most \
+                 {limit}",
+                target.name()
+            ))
+            .with_help(
+                "split the function into smaller functions, or leave this target out with \
+                 `--target`",
+            ),
+        )
+    }
+}
+
+/// [`BackendError::TooLarge`] for the first function (or entry point) in which more than `limit`
+/// values would get a name in the written code: the emitted values the lowering named (`let`s) and
+/// those the writers store in a temporary because they are used more than once.
+pub fn check_named_values(
+    module: &naga::Module,
+    info: &ModuleInfo,
+    target: Target,
+    limit: usize,
+) -> Result<(), BackendError> {
+    let functions = module.functions.iter().map(|(h, f)| (f, &info[h])).chain(
+        module
+            .entry_points
+            .iter()
+            .enumerate()
+            .map(|(i, ep)| (&ep.function, info.get_entry_point(i))),
+    );
+    for (f, fi) in functions {
+        if f.expressions.len() <= limit {
+            continue;
+        }
+        let values = f
+            .expressions
+            .iter()
+            .filter(|(h, e)| {
+                !e.needs_pre_emit()
+                    && (f.named_expressions.contains_key(h)
+                        || fi[*h].ref_count >= e.bake_ref_count())
+            })
+            .count();
+        if values > limit {
+            let span = f
+                .expressions
+                .iter()
+                .map(|(h, _)| f.expressions.get_span(h))
+                .find(|s| s.is_defined());
+            return Err(BackendError::TooLarge {
+                target,
+                function: f.name.clone().unwrap_or_default(),
+                values,
+                limit,
+                span,
+            });
+        }
+    }
+    Ok(())
 }
 
 fn write_wgsl(module: &naga::Module, info: &ModuleInfo) -> Result<Vec<u8>, BackendError> {

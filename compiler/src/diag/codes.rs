@@ -105,6 +105,10 @@ codes! {
     // ---- call graph and static limits ----
     E0801 => "recursion (GPUs have no call stack)",
     E0802 => "a secondary-ray program whose number of spawned rays cannot be bounded",
+    E0803 => "a type larger than the largest buffer binding (128 MiB)",
+    E0804 => "a function's local values exceed the private-memory budget of one invocation",
+    E0805 => "a constant array too large to evaluate",
+    E0806 => "a function too large for a target's code writer",
 
     // ---- linking a scene ----
     E0901 => "a scene object whose material or geometry type has no program of a kind it needs",

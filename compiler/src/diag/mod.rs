@@ -197,14 +197,19 @@ impl<'a> codespan_reporting::files::Files<'a> for Files<'a> {
         id: usize,
         byte_index: usize,
     ) -> Result<usize, codespan_reporting::files::Error> {
+        Ok(self.file(id)?.line_index(byte_index))
+    }
+
+    fn column_number(
+        &'a self,
+        id: usize,
+        line_index: usize,
+        byte_index: usize,
+    ) -> Result<usize, codespan_reporting::files::Error> {
         let f = self.file(id)?;
-        let starts = f.line_starts();
-        Ok(
-            match starts.binary_search(&(byte_index.min(f.text.len()) as u32)) {
-                Ok(l) => l,
-                Err(l) => l - 1,
-            },
-        )
+        let range = self.line_range(id, line_index)?;
+        let end = byte_index.clamp(range.start, range.end);
+        Ok(f.char_index(end) - f.char_index(range.start) + 1)
     }
 
     fn line_range(
@@ -213,19 +218,11 @@ impl<'a> codespan_reporting::files::Files<'a> for Files<'a> {
         line_index: usize,
     ) -> Result<std::ops::Range<usize>, codespan_reporting::files::Error> {
         let f = self.file(id)?;
-        let starts = f.line_starts();
-        let start =
-            *starts
-                .get(line_index)
-                .ok_or(codespan_reporting::files::Error::LineTooLarge {
-                    given: line_index,
-                    max: starts.len() - 1,
-                })? as usize;
-        let end = starts
-            .get(line_index + 1)
-            .map(|&e| e as usize)
-            .unwrap_or(f.text.len());
-        Ok(start..end)
+        f.line_range(line_index)
+            .ok_or(codespan_reporting::files::Error::LineTooLarge {
+                given: line_index,
+                max: f.line_starts().len() - 1,
+            })
     }
 }
 
@@ -249,6 +246,10 @@ pub fn render_human(map: &SourceMap, diags: &[Diagnostic], color: bool) -> Strin
     let files = Files(map);
     let mut out = Vec::new();
     for d in diags {
+        if shows_a_long_line(map, d) {
+            out.extend_from_slice(render_excerpt(map, d).as_bytes());
+            continue;
+        }
         let cd = to_codespan(d);
         let res = if color {
             let mut w = term::termcolor::Ansi::new(&mut out);
@@ -271,6 +272,123 @@ pub fn render_human(map: &SourceMap, diags: &[Diagnostic], color: bool) -> Strin
         }
     }
     String::from_utf8_lossy(&out).into_owned()
+}
+
+/// A source line longer than this many bytes is shown as an excerpt around each label.
+const LONG_LINE: usize = 400;
+/// Bytes of context shown on either side of a label on a long line.
+const CONTEXT: usize = 40;
+/// At most this many bytes of a label are underlined on a long line.
+const MAX_MARK: usize = 160;
+
+/// Whether the human rendering of `d` would quote a line longer than [`LONG_LINE`] (a label's
+/// first and last lines and the context lines codespan adds to a multi-line label).
+fn shows_a_long_line(map: &SourceMap, d: &Diagnostic) -> bool {
+    std::iter::once(&d.primary).chain(&d.secondary).any(|l| {
+        if l.span.file.0 as usize >= map.len() {
+            return false;
+        }
+        let f = map.get(l.span.file);
+        let (first, last) = (
+            f.line_index(l.span.lo as usize),
+            f.line_index(l.span.hi as usize),
+        );
+        let long = |i: usize| f.line_range(i).is_some_and(|r| r.len() > LONG_LINE);
+        (first..=last.min(first + 3)).any(long)
+            || (last.saturating_sub(1).max(first)..=last).any(long)
+    })
+}
+
+/// The rendering of a diagnostic that quotes a very long line (generated code on one line): like
+/// codespan's, but each label shows only [`CONTEXT`] bytes around it, so the output and the time
+/// taken grow with the number of diagnostics, not with their product with the line's length. Plain
+/// text (no colours).
+fn render_excerpt(map: &SourceMap, d: &Diagnostic) -> String {
+    use std::fmt::Write;
+    let sev = match d.severity {
+        Severity::Error => "error",
+        Severity::Warning => "warning",
+        Severity::Note => "note",
+    };
+    let mut labels: Vec<(&Label, bool)> = std::iter::once((&d.primary, true))
+        .chain(d.secondary.iter().map(|l| (l, false)))
+        .filter(|(l, _)| (l.span.file.0 as usize) < map.len())
+        .collect();
+    let line_of = |l: &Label| map.line_col(l.span.file, l.span.lo).0;
+    let width = labels
+        .iter()
+        .map(|(l, _)| line_of(l).to_string().len())
+        .max()
+        .unwrap_or(1);
+    let pad = " ".repeat(width + 1);
+    let mut out = String::new();
+    let _ = writeln!(out, "{sev}[{}]: {}", d.code.0, d.message);
+    let loc = |l: &Label| {
+        let (line, col) = map.line_col(l.span.file, l.span.lo);
+        format!("{}:{line}:{col}", map.get(l.span.file).name)
+    };
+    let _ = writeln!(out, "{pad}┌─ {}", loc(&d.primary));
+    let _ = writeln!(out, "{pad}│");
+    labels.sort_by_key(|(l, _)| (l.span.file, l.span.lo, l.span.hi));
+    let mut previous: Option<(crate::source::FileId, usize)> = None;
+    for (l, primary) in labels {
+        let f = map.get(l.span.file);
+        let line = f.line_index(l.span.lo as usize);
+        match previous {
+            Some((file, _)) if file != l.span.file => {
+                let _ = writeln!(out, "{pad}·");
+                let _ = writeln!(out, "{pad}┌─ {}", loc(l));
+                let _ = writeln!(out, "{pad}│");
+            }
+            Some((_, prev)) if line > prev + 1 => {
+                let _ = writeln!(out, "{pad}·");
+            }
+            _ => {}
+        }
+        previous = Some((l.span.file, line));
+        let range = f.line_range(line).unwrap_or(0..0);
+        let text = &f.text;
+        let end = range.start + text[range.clone()].trim_end_matches(['\n', '\r']).len();
+        let lo = (l.span.lo as usize).clamp(range.start, end);
+        let mark_end = (l.span.hi as usize).clamp(lo, end).min(lo + MAX_MARK);
+        let mut ws = lo.saturating_sub(CONTEXT).max(range.start);
+        while !text.is_char_boundary(ws) {
+            ws -= 1;
+        }
+        let mut we = (mark_end + CONTEXT).min(end);
+        while !text.is_char_boundary(we) {
+            we += 1;
+        }
+        let mut mark_end = mark_end;
+        while !text.is_char_boundary(mark_end) {
+            mark_end += 1;
+        }
+        let (open, close) = (
+            if ws > range.start { "…" } else { "" },
+            if we < end { "…" } else { "" },
+        );
+        let _ = writeln!(out, "{:>width$} │ {open}{}{close}", line + 1, &text[ws..we]);
+        let indent = f.char_index(lo) - f.char_index(ws) + usize::from(!open.is_empty());
+        let marks = (f.char_index(mark_end) - f.char_index(lo)).max(1);
+        let mark = if primary { "^" } else { "-" }.repeat(marks);
+        let message = if l.message.is_empty() {
+            String::new()
+        } else {
+            format!(" {}", l.message)
+        };
+        let _ = writeln!(out, "{pad}│ {}{mark}{message}", " ".repeat(indent));
+    }
+    if !d.notes.is_empty() || d.help.is_some() {
+        let _ = writeln!(out, "{pad}│");
+    }
+    for n in &d.notes {
+        let _ = writeln!(out, "{pad}= note: {n}");
+    }
+    if let Some(h) = &d.help {
+        let _ = writeln!(out, "{pad}= help: {h}");
+    }
+    out.push('\n');
+    out
 }
 
 #[derive(Serialize)]
@@ -332,4 +450,47 @@ pub fn render_json(map: &SourceMap, diags: &[Diagnostic]) -> String {
         out.push('\n');
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diag::codes;
+
+    /// A warning on a line of 100,000 bytes quotes 40 bytes either side of its label, with the
+    /// right line and column, in codespan's layout.
+    #[test]
+    fn a_long_line_is_quoted_as_an_excerpt() {
+        let mut map = SourceMap::new();
+        let line: String = (0..10_000).map(|i| format!("let v{i:04} = 1;")).collect();
+        let text = format!("// first\n{line}\n");
+        let f = map.add("long.rt", None, text.clone());
+        let lo = text.find("v5000").unwrap() as u32;
+        let d = Diagnostic::warning(
+            codes::W0001,
+            "unused variable `v5000`",
+            Span::new(f, lo, lo + 5),
+        )
+        .with_label("never read")
+        .with_help("prefix it with an underscore");
+        let out = render_human(&map, &[d], false);
+        let col = lo as usize - text.find('\n').unwrap();
+        let expected = format!(
+            "warning[W0001]: unused variable `v5000`\n  ┌─ long.rt:2:{col}\n  │\n\
+             2 │ …{}…\n  │ {}^^^^^ never read\n  │\n  = help: prefix it with an underscore\n\n",
+            &text[lo as usize - 40..lo as usize + 45],
+            " ".repeat(41),
+        );
+        assert_eq!(out, expected);
+    }
+
+    /// Short lines still go through codespan unchanged.
+    #[test]
+    fn short_lines_are_rendered_by_codespan() {
+        let mut map = SourceMap::new();
+        let f = map.add("a.rt", None, "let x = 1;\n");
+        let d = Diagnostic::warning(codes::W0001, "unused variable `x`", Span::new(f, 4, 5));
+        let out = render_human(&map, &[d], false);
+        assert!(out.contains("1 │ let x = 1;\n"), "{out}");
+    }
 }

@@ -494,7 +494,13 @@ impl<'a> Checker<'_, 'a> {
                 let elem = self.generic_ty(t);
                 let len = self.cx.array_size(self.module, n);
                 match (elem, len) {
-                    (Some(e), Some(l)) => (Some(e), Some(l)),
+                    (Some(e), Some(l)) if TypeTable::is_error(e) => (Some(e), Some(l)),
+                    (Some(e), Some(l)) => {
+                        if !self.cx.check_array_size(e, l, span) {
+                            return self.args_then_error(args, span);
+                        }
+                        (Some(e), Some(l))
+                    }
                     (None, _) => {
                         self.bad_generics(
                             func,

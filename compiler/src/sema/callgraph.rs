@@ -47,6 +47,7 @@ pub(crate) fn analyze(cx: &mut Ctx) {
     let order = order_and_cycles(cx, &edges);
     check_intrinsics(cx, &edges, &intrinsics);
     spawn_bounds(cx, &order);
+    super::sizes::private_memory(cx, &order, &edges);
     cx.p.fn_order = order;
 }
 

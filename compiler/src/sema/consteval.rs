@@ -62,6 +62,56 @@ pub enum EvalError {
     },
     /// Something already reported (an error expression or constant).
     Silent,
+    /// An array value with more than [`MAX_CONST_SCALARS`] scalars (E0805).
+    TooLarge {
+        /// The expression that builds it.
+        span: Span,
+        /// Its number of scalars.
+        scalars: u64,
+    },
+}
+
+/// The most scalars (numbers and booleans, counting every vector, matrix, array and struct
+/// component) a constant value may have. Evaluation refuses a larger array value before building
+/// any of it, so a constant never allocates more than this many elements (each a few dozen bytes),
+/// and the constants lowered into the kernel stay small.
+pub const MAX_CONST_SCALARS: u64 = 65_536;
+
+/// The number of scalars in a value of type `ty` (saturating; handles count as one; a struct
+/// that contains itself, an error of its own, counts as empty inside itself).
+pub fn scalar_count(env: &Env, ty: TypeId) -> u64 {
+    count_in(env, ty, &mut Vec::new())
+}
+
+fn count_in(env: &Env, ty: TypeId, open: &mut Vec<super::hir::StructId>) -> u64 {
+    match env.types.get(ty) {
+        Type::Vector { size, .. } => u64::from(size),
+        Type::Matrix { cols, rows } => u64::from(cols) * u64::from(rows),
+        Type::Array { elem, len } => count_in(env, elem, open).saturating_mul(u64::from(len)),
+        Type::Struct(s) if open.contains(&s) => 0,
+        Type::Struct(s) => {
+            open.push(s);
+            let n = env.structs[s]
+                .fields
+                .iter()
+                .fold(0u64, |n, f| n.saturating_add(count_in(env, f.ty, open)));
+            open.pop();
+            n
+        }
+        _ => 1,
+    }
+}
+
+/// [`EvalError::TooLarge`] if a value of array or struct type `ty` has more than
+/// [`MAX_CONST_SCALARS`].
+fn bounded(env: &Env, ty: TypeId, span: Span) -> Result<(), EvalError> {
+    if !matches!(env.types.get(ty), Type::Array { .. } | Type::Struct(_)) {
+        return Ok(());
+    }
+    match scalar_count(env, ty) {
+        n if n > MAX_CONST_SCALARS => Err(EvalError::TooLarge { span, scalars: n }),
+        _ => Ok(()),
+    }
 }
 
 /// Whether `v` holds an infinite or NaN `f32` anywhere (components, fields, elements, a solid
@@ -171,6 +221,7 @@ pub fn eval(body: &Body, expr: ExprId, env: &Env) -> Res {
             finite(e.span, ok, v)
         }
         ExprKind::Compose { components } => {
+            bounded(env, e.ty, e.span)?;
             let mut vals = Vec::with_capacity(components.len());
             for c in components {
                 vals.push(eval(body, *c, env)?);
@@ -187,7 +238,10 @@ pub fn eval(body: &Body, expr: ExprId, env: &Env) -> Res {
                 _ => Err(EvalError::Silent),
             }
         }
-        ExprKind::Zero => zero(env, e.ty).ok_or(EvalError::Silent),
+        ExprKind::Zero => {
+            bounded(env, e.ty, e.span)?;
+            zero(env, e.ty).ok_or(EvalError::Silent)
+        }
         ExprKind::Convert { arg } => {
             let to = env.types.scalar_kind(e.ty).ok_or(EvalError::Silent)?;
             map1(&eval(body, *arg, env)?, |s| Some(convert(s, to)))

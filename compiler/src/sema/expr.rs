@@ -22,6 +22,7 @@ use super::types::{ScalarKind, Type, TypeId, TypeTable};
 use super::{ix, Ctx, Def, Found, TypeCtor};
 use crate::source::Span;
 use crate::syntax::ast;
+use std::collections::HashMap;
 use std::path::Path;
 
 /// What an expression is checked for.
@@ -44,6 +45,50 @@ pub(crate) enum Binding {
     Value(TypeId, ConstValue),
 }
 
+/// The block scopes of a body: the bindings in declaration order (a block ends by truncating to
+/// its start) and, per name, the positions of its bindings, so a lookup takes constant time
+/// however many locals are in scope.
+#[derive(Default)]
+pub(crate) struct Scopes<'a> {
+    stack: Vec<(&'a str, Binding)>,
+    by_name: HashMap<&'a str, Vec<usize>>,
+}
+
+impl<'a> Scopes<'a> {
+    /// Binds `name` (shadowing any earlier binding of it).
+    pub fn push(&mut self, name: &'a str, b: Binding) {
+        self.by_name.entry(name).or_default().push(self.stack.len());
+        self.stack.push((name, b));
+    }
+
+    /// The number of bindings, a mark for [`Scopes::truncate`].
+    pub fn len(&self) -> usize {
+        self.stack.len()
+    }
+
+    /// Removes the bindings made since `mark`.
+    pub fn truncate(&mut self, mark: usize) {
+        while self.stack.len() > mark {
+            if let Some((name, _)) = self.stack.pop() {
+                if let Some(v) = self.by_name.get_mut(name) {
+                    v.pop();
+                }
+            }
+        }
+    }
+
+    /// The innermost binding of `name`.
+    pub fn get(&self, name: &str) -> Option<&Binding> {
+        let &i = self.by_name.get(name)?.last()?;
+        self.stack.get(i).map(|(_, b)| b)
+    }
+
+    /// The names in scope, innermost first.
+    pub fn names(&self) -> impl Iterator<Item = &'a str> + '_ {
+        self.stack.iter().rev().map(|(n, _)| *n)
+    }
+}
+
 /// The literal-type hint of an expression's context.
 pub(crate) type Hint = Option<ScalarKind>;
 
@@ -54,7 +99,7 @@ pub(crate) struct Checker<'c, 'a> {
     pub ast: &'a ast::Module,
     pub body: Body,
     pub mode: Mode,
-    pub scopes: Vec<(&'a str, Binding)>,
+    pub scopes: Scopes<'a>,
     /// Reads of each local (indexed by local).
     pub uses: Vec<u32>,
     /// Asset paths in scenes are relative to this folder.
@@ -254,7 +299,7 @@ impl<'c, 'a> Checker<'c, 'a> {
             ast,
             body: Body::default(),
             mode,
-            scopes: Vec::new(),
+            scopes: Scopes::default(),
             uses: Vec::new(),
             base_dir: None,
             ret: TypeTable::VOID,
@@ -330,6 +375,10 @@ impl<'c, 'a> Checker<'c, 'a> {
                 self.err(super::limits::non_finite(span, nan));
                 ConstValue::Error
             }
+            Err(EvalError::TooLarge { span, scalars }) => {
+                self.err(SemaError::ConstTooLarge { span, scalars });
+                ConstValue::Error
+            }
             Err(EvalError::NotConst { span, what }) => {
                 let context = match self.mode {
                     Mode::Const(c) => c,
@@ -347,11 +396,7 @@ impl<'c, 'a> Checker<'c, 'a> {
 
     /// The innermost binding of `name` in the block scopes.
     pub fn lookup_local(&self, name: &str) -> Option<&Binding> {
-        self.scopes
-            .iter()
-            .rev()
-            .find(|(n, _)| *n == name)
-            .map(|(_, b)| b)
+        self.scopes.get(name)
     }
 
     /// Declares a local in the innermost scope.
@@ -362,7 +407,7 @@ impl<'c, 'a> Checker<'c, 'a> {
             kind,
             span: name.span,
         });
-        self.scopes.push((name.name.as_str(), Binding::Local(id)));
+        self.scopes.push(name.name.as_str(), Binding::Local(id));
         id
     }
 
@@ -512,7 +557,9 @@ impl<'c, 'a> Checker<'c, 'a> {
                         def,
                     });
                 } else if let Found::None = found {
-                    let locals: Vec<&str> = self.scopes.iter().map(|(n, _)| *n).collect();
+                    // The innermost names only: suggestions stay cheap in a body of any length.
+                    let mut locals: Vec<&str> = self.scopes.names().take(1024).collect();
+                    locals.reverse();
                     self.cx.undefined(self.module, ident, &locals);
                 } else {
                     self.cx.report_lookup(self.module, ident, found);

@@ -433,7 +433,9 @@ impl<'a> Ctx<'a> {
                 };
                 let len = self.array_size(module, size);
                 match len {
-                    Some(len) if !TypeTable::is_error(elem) => {
+                    Some(len)
+                        if !TypeTable::is_error(elem) && self.check_array_size(elem, len, span) =>
+                    {
                         self.p.types.intern(Type::Array { elem, len })
                     }
                     _ => TypeTable::ERROR,
@@ -482,6 +484,10 @@ impl<'a> Ctx<'a> {
                 match ck.try_eval(id) {
                     Ok(v) => (span, ty, v),
                     Err(EvalError::Silent) => return None,
+                    Err(EvalError::TooLarge { span, scalars }) => {
+                        ck.err(SemaError::ConstTooLarge { span, scalars });
+                        return None;
+                    }
                     Err(EvalError::NotConst { .. } | EvalError::NonFinite { .. }) => {
                         (span, ty, ConstValue::Error)
                     }
@@ -539,6 +545,12 @@ impl<'a> Ctx<'a> {
         }
         self.p.structs[s].fields = fields;
         self.fields_state[i] = State::Done;
+        let ty = self.p.types.intern(Type::Struct(s));
+        let bytes = self.type_size(ty);
+        if bytes > super::sizes::MAX_TYPE_BYTES {
+            let span = self.p.structs[s].span;
+            self.err(SemaError::TypeTooLarge { span, ty, bytes });
+        }
     }
 
     /// The type of constant `c`, evaluating it first if needed. `use_span` is where it is used (for

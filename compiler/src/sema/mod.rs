@@ -5,7 +5,7 @@
 //!
 //! 1. [`items::collect`]: every module's items get ids; module scopes are built (E0304).
 //! 2. [`items::resolve_structs`]: struct field types (array sizes are constants), struct containment
-//!    cycles (E0801).
+//!    cycles (E0801), type sizes ([`limits`], E0803).
 //! 3. [`items::resolve_consts`] and [`items::resolve_defaults`]: constants and field defaults,
 //!    evaluated (E0412, E0801 for cycles). Both are also computed on demand, in whatever order uses
 //!    need them; the states in [`Ctx`] make each computed once and detect cycles.
@@ -13,7 +13,7 @@
 //! 5. [`programs::check_attributes`]: struct roles, program attributes and signatures (E06xx).
 //! 6. [`stmt::check_bodies`]: every function body to HIR (E04xx, E05xx, warnings).
 //! 7. [`callgraph::analyze`]: recursion (E0801), callee-first order, intrinsics by program kind
-//!    (E0604), spawn bounds (E0802).
+//!    (E0604), spawn bounds (E0802), private memory per call chain ([`limits`], E0804).
 //! 8. [`scenes::check_scenes`]: scenes to evaluated [`hir::SceneDesc`]s (E07xx).
 //!
 //! Name lookup follows spec/modules.md: block scopes, then the module's own items, then the items of
@@ -34,6 +34,7 @@ mod expr;
 pub mod hir;
 mod items;
 pub mod limits;
+pub mod sizes;
 mod programs;
 pub mod scenes;
 mod stmt;

@@ -133,7 +133,7 @@ fn check_scene<'a>(
                 let id = ck.expr(*value, None);
                 let ty = ck.ty(id);
                 let v = ck.eval_const(id);
-                ck.scopes.push((name.name.as_str(), Binding::Value(ty, v)));
+                ck.scopes.push(name.name.as_str(), Binding::Value(ty, v));
             }
             ast::SceneEntryKind::Object { name, fields } => {
                 if let Some(n) = name {

@@ -41,7 +41,7 @@ pub(crate) fn check_bodies(cx: &mut Ctx) {
         ck.body = body;
         ck.ret = ret;
         for (p, pd) in params.iter().zip(&decl.params) {
-            ck.scopes.push((pd.name.name.as_str(), Binding::Local(*p)));
+            ck.scopes.push(pd.name.name.as_str(), Binding::Local(*p));
         }
         let (block, flow) = ck.block(&decl.body);
         if !flow.returns && ret != TypeTable::VOID && !TypeTable::is_error(ret) {

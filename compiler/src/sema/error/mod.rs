@@ -410,6 +410,27 @@ pub enum SemaError {
         loop_span: Span,
         program: String,
     },
+    // ---- static limits ----
+    /// A type larger than [`crate::sema::sizes::MAX_TYPE_BYTES`].
+    TypeTooLarge {
+        span: Span,
+        ty: TypeId,
+        bytes: u64,
+    },
+    /// Aggregate locals (with those of the callees, deepest chain) over the private-memory budget.
+    PrivateMemory {
+        /// The local that crosses the budget, or the call that does.
+        span: Span,
+        function: String,
+        bytes: u64,
+        /// The callee whose chain is added, when the call crosses the budget.
+        callee: Option<(String, u64)>,
+    },
+    /// A constant value with more scalars than [`crate::sema::consteval::MAX_CONST_SCALARS`].
+    ConstTooLarge {
+        span: Span,
+        scalars: u64,
+    },
     // ---- warnings ----
     UnusedVariable {
         span: Span,

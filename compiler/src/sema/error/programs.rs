@@ -351,6 +351,61 @@ impl SemaError {
                 .with_secondary(*loop_span, "this loop has no constant trip count")
                 .with_help("spawn in a `for` loop with constant bounds, e.g. `for i in 0u..4u`")
             }
+            E::TypeTooLarge { span, ty, bytes } => err(
+                codes::E0803,
+                format!("the type {} is too large", r.ty(*ty)),
+                *span,
+            )
+            .with_label(format!("this type takes {}", bytes_text(*bytes)))
+            .with_note(format!(
+                "no value may exceed {}: the largest storage buffer binding WebGPU guarantees, \
+                 which holds the scene's parameters",
+                bytes_text(crate::sema::sizes::MAX_TYPE_BYTES)
+            ))
+            .with_help("use fewer or smaller elements"),
+            E::PrivateMemory {
+                span,
+                function,
+                bytes,
+                callee,
+            } => {
+                let budget = bytes_text(crate::sema::sizes::PRIVATE_MEMORY_BUDGET);
+                let label = match callee {
+                    None => format!(
+                        "the arrays and structs of `{function}` take {} up to here",
+                        bytes_text(*bytes)
+                    ),
+                    Some((c, cb)) => format!(
+                        "with this call to `{c}` ({} with its callees), `{function}` needs {}",
+                        bytes_text(*cb),
+                        bytes_text(*bytes)
+                    ),
+                };
+                err(
+                    codes::E0804,
+                    format!(
+                        "`{function}` needs more than the {budget} of private memory one invocation has"
+                    ),
+                    *span,
+                )
+                .with_label(label)
+                .with_note(format!(
+                    "each GPU thread keeps its local arrays and structs in private memory; user \
+                     functions get {budget}, with their callees (spec/types.md, \"Size limits\")"
+                ))
+                .with_help("use smaller arrays, or keep large data in the scene (a `mesh` or `texture`)")
+            }
+            E::ConstTooLarge { span, scalars } => err(
+                codes::E0805,
+                "this constant is too large to evaluate",
+                *span,
+            )
+            .with_label(format!("a value of {scalars} scalars"))
+            .with_note(format!(
+                "constant values have at most {} scalars (numbers and booleans)",
+                crate::sema::consteval::MAX_CONST_SCALARS
+            ))
+            .with_help("build large arrays in a function at run time instead of as a constant"),
             E::UnusedVariable { span, name } => {
                 Diagnostic::warning(codes::W0001, format!("unused variable `{name}`"), *span)
                     .with_label("never read")
@@ -415,5 +470,18 @@ impl crate::sema::hir::SceneChoiceError {
                 .with_help(format!("the scenes are {}", list(available))),
             ),
         }
+    }
+}
+
+/// A byte count as "N bytes", or in KiB/MiB/GiB when exact enough to be readable.
+fn bytes_text(b: u64) -> String {
+    const KIB: u64 = 1024;
+    match b {
+        b if b >= KIB * KIB * KIB => {
+            format!("{:.1} GiB ({b} bytes)", b as f64 / (KIB * KIB * KIB) as f64)
+        }
+        b if b >= KIB * KIB => format!("{:.1} MiB ({b} bytes)", b as f64 / (KIB * KIB) as f64),
+        b if b >= KIB => format!("{:.1} KiB ({b} bytes)", b as f64 / KIB as f64),
+        b => format!("{b} bytes"),
     }
 }
