@@ -74,26 +74,32 @@ pub(super) fn import(
     cache: &mut AssetCache,
 ) -> Result<ModelParts, SceneError> {
     let mut parts = ModelParts::default();
-    let mut loaded: HashMap<PathBuf, ModelScene> = HashMap::new();
+    // Each file once, with the name messages give it: the file read, which may lie in an asset
+    // root rather than next to the scene.
+    let mut loaded: HashMap<PathBuf, (ModelScene, String)> = HashMap::new();
     for model in &scene.models {
         if !loaded.contains_key(&model.path) {
-            let data = cache
+            let file = cache
                 .confined(&model.path)
-                .and_then(|file| load_gltf_with(file, &cache.roots))
                 .map_err(|source| SceneError::Asset {
                     span: Some(model.span),
                     source,
                 })?;
-            let name = model.path.display();
+            let data = load_gltf_with(&file, &cache.roots).map_err(|source| SceneError::Asset {
+                span: Some(model.span),
+                source,
+            })?;
+            let name = file.display().to_string();
             parts
                 .warnings
                 .extend(data.warnings.iter().map(|w| format!("{name}: {w}")));
-            loaded.insert(model.path.clone(), data);
+            loaded.insert(model.path.clone(), (data, name));
         }
-        if let Some(data) = loaded.get(&model.path) {
+        if let Some((data, name)) = loaded.get(&model.path) {
             import_one(
                 program,
                 model,
+                name,
                 data,
                 scene.camera.is_none(),
                 cache,
@@ -171,6 +177,7 @@ fn image_path(file: &Path, image: usize) -> PathBuf {
 fn import_one(
     program: &Program,
     model: &Model,
+    name: &str,
     data: &ModelScene,
     wants_camera: bool,
     cache: &mut AssetCache,
@@ -178,7 +185,6 @@ fn import_one(
 ) -> Result<(), SceneError> {
     let entry = Mat4::from_cols_array_2d(&model.transform);
     let span = model.span;
-    let name = model.path.display().to_string();
 
     let mut meshes = Vec::with_capacity(data.meshes.len());
     for (i, mesh) in data.meshes.iter().enumerate() {

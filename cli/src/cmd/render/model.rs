@@ -49,6 +49,21 @@ pub enum ModelError {
     /// The path cannot be written in a scene's string.
     #[error("`{}`: the path is not valid UTF-8, so it cannot be named in a scene", .0.display())]
     Path(PathBuf),
+    /// The model has no camera and bounds too large to frame in `f32`.
+    #[error(
+        "`{}`: the model's bounds (from {min} to {max}) are too large to frame with a default \
+         camera in `f32`; give the file a perspective camera, or render it from a scene with a \
+         `camera` entry and a `transform` that scales the model down",
+        path.display()
+    )]
+    Unframeable {
+        /// The model file.
+        path: PathBuf,
+        /// The bounds' low corner, as text.
+        min: String,
+        /// The bounds' high corner, as text.
+        max: String,
+    },
     /// The temporary scene could not be written.
     #[error("cannot write the scene for the model to `{}`: {source}", path.display())]
     Write {
@@ -192,6 +207,20 @@ fn fmt3(v: glam::Vec3) -> String {
 /// scene for it into a fresh temporary folder.
 pub fn synthesize(path: &Path, roots: &AssetRoots) -> Result<SynthScene, ModelError> {
     let data = load_gltf_with(path, roots)?;
+    let has_camera = data
+        .cameras
+        .iter()
+        .any(|c| matches!(c.projection, Projection::Perspective { .. }));
+    let bounds = data.bounds();
+    // The default camera stands back by the bounds' diagonal: it must stay finite.
+    let reach = bounds.center().abs().max_element() + bounds.size().length() * 4.0;
+    if !has_camera && !bounds.is_empty() && !reach.is_finite() {
+        return Err(ModelError::Unframeable {
+            path: path.to_path_buf(),
+            min: format!("{:?}", bounds.min),
+            max: format!("{:?}", bounds.max),
+        });
+    }
     let absolute = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
     let model = absolute
         .file_name()
