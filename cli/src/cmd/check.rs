@@ -15,9 +15,9 @@
 
 use super::render::{self, model};
 use super::Context;
+use crate::args::AssetArgs;
 use crate::args::MessageFormat;
 use crate::exit::Exit;
-use crate::args::AssetArgs;
 use crate::report;
 use rtc_compiler::link::LinkOptions;
 use rtc_runtime::assets::AssetRoots;

@@ -34,9 +34,9 @@ mod expr;
 pub mod hir;
 mod items;
 pub mod limits;
-pub mod sizes;
 mod programs;
 pub mod scenes;
+pub mod sizes;
 mod stmt;
 pub mod types;
 
