@@ -175,21 +175,29 @@ fn data_above_a_binding_limit_is_a_typed_error_naming_it() {
     let err = scene
         .upload(&gpu, &e, &e.frame_uniforms(1, 1), 16)
         .expect_err("too large");
+    // The binding holds meshes, so the error also names the largest of them.
     match &err {
-        SceneError::Buffer(BufferError::TooLarge {
-            name,
-            limit: l,
-            size,
-            ..
-        }) => {
+        SceneError::BindingTooLarge {
+            source:
+                BufferError::TooLarge {
+                    name,
+                    limit: l,
+                    size,
+                    ..
+                },
+            part,
+        } => {
             assert_eq!(name, "triangles");
             assert_eq!((*l, *size), (limit, triangles));
+            assert!(part.contains("sphere_mesh(2)"), "{part}");
         }
         other => panic!("unexpected error {other}"),
     }
     let text = err.to_string();
     assert!(
-        text.contains("`triangles`") && text.contains(&limit.to_string()),
+        text.contains("`triangles`")
+            && text.contains(&limit.to_string())
+            && text.contains("the mesh `sphere_mesh(2)`"),
         "{text}"
     );
 }
