@@ -2,7 +2,7 @@
 //! glTF file (buffer and image URIs) names are confined to the referring file's folder and the
 //! folders the user names (`--asset-root DIR`, [`AssetRoots`]).
 //!
-//! # Rules ([`resolve`])
+//! # Rules (`resolve`)
 //!
 //! - The path as written must be relative, with `/` between folders: an absolute path, a drive
 //!   letter (`C:`), a URI scheme (`file:`, …), a backslash or an empty path is refused before
