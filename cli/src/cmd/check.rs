@@ -104,12 +104,9 @@ fn check_assets(roots: &[PathBuf], args: &Args, ctx: &Context) -> Exit {
             "check",
         );
         // A bare glTF file's scene names it relative to its folder, searched first (as in render).
-        let asset_roots = match &synth {
-            Some(s) => AssetRoots::new(
-                std::iter::once(s.model_dir.clone()).chain(folders.folders().iter().cloned()),
-            ),
-            None => folders.clone(),
-        };
+        let asset_roots = synth
+            .as_ref()
+            .map_or_else(|| folders.clone(), |s| s.asset_roots(&folders));
         for name in &names {
             let exit = load_scene_assets(path, name, &asset_roots, args, ctx);
             if exit != Exit::Success {

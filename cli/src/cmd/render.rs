@@ -25,7 +25,6 @@ use crate::{report, term};
 use rtc_compiler::kernel::compile_scene;
 use rtc_compiler::link::LinkOptions;
 use rtc_compiler::sema::scenes::MAX_IMAGE_SIDE;
-use rtc_runtime::assets::AssetRoots;
 use rtc_runtime::gpu::{AdapterChoice, Gpu};
 use rtc_runtime::image_out::{write_exr, write_png, ToneMap};
 use rtc_runtime::render::{BuildPreset, RenderError, RenderOptions, RenderStats, Renderer};
@@ -221,9 +220,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
 
     // A bare glTF file's scene names it relative to its folder, searched first.
     let asset_roots = match &synth {
-        Some(s) => AssetRoots::new(
-            std::iter::once(s.model_dir.clone()).chain(roots.folders().iter().cloned()),
-        ),
+        Some(s) => s.asset_roots(&roots),
         None => roots,
     };
     let options = RenderOptions {

@@ -635,10 +635,10 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Ok(c) => c,
         Err(e) => return report::usage_error(&e.to_string(), ctx.color),
     };
-    let _roots = match args.assets.roots() {
-        Ok(r) => r,
-        Err(e) => return report::usage_error(&e, ctx.color),
-    };
+    // The roots are made again for each render (`App::render`); here they are only checked.
+    if let Err(e) = args.assets.roots() {
+        return report::usage_error(&e, ctx.color);
+    }
     if !args.path.is_file() {
         return report::usage_error(
             &format!("cannot read `{}`: no such file", args.path.display()),

@@ -87,6 +87,16 @@ pub struct SynthScene {
     dir: PathBuf,
 }
 
+impl SynthScene {
+    /// The asset roots of its render: the model's folder first (the scene names the model
+    /// relative to it), then `roots`.
+    pub fn asset_roots(&self, roots: &AssetRoots) -> AssetRoots {
+        AssetRoots::new(
+            std::iter::once(self.model_dir.clone()).chain(roots.folders().iter().cloned()),
+        )
+    }
+}
+
 impl Drop for SynthScene {
     fn drop(&mut self) {
         let _ = std::fs::remove_dir_all(&self.dir);
