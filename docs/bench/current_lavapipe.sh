@@ -10,7 +10,7 @@
 #
 # Debian 12 packages Mesa 25.0 at best (bookworm-backports). lavapipe's shader compiler got much
 # faster at what ray tracing kernels do in later releases (storage-buffer loads under divergent
-# control flow; see ARCHITECTURE.md, "Performance on lavapipe"), and those releases are built for
+# control flow; see docs/bench/lavapipe.md), and those releases are built for
 # newer C libraries. This script unpacks Debian 13 ("trixie") backports' mesa-vulkan-drivers and
 # the trixie libraries it needs (C library and loader included, about 60 packages) into a folder,
 # without root and without touching the system, then runs the command under trixie's dynamic

@@ -1,7 +1,7 @@
 //! What a storage-buffer load costs on the chosen adapter: a chain of 64 dependent, divergent loads
 //! per invocation from a 512 KiB buffer, by load shape (scalars, `vec3`, `vec4`), printed as
 //! nanoseconds per step of one 8-lane SIMD batch. A performance aid for kernel layout decisions
-//! (ARCHITECTURE.md, "Performance on lavapipe"), not a test:
+//! (docs/bench/lavapipe.md), not a test:
 //! `cargo run --release -p rtc-runtime --example load_costs`.
 //!
 //! On Mesa 22.3's lavapipe every load becomes a loop over the lanes with a bounds check per

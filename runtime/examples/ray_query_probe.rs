@@ -3,8 +3,8 @@
 //! camera as `examples/thesis_scene/scene.rt`, 1920x1080 camera rays, and for each hit one
 //! occlusion ray to each of the scene's two point lights, on the flattened 105,980-triangle
 //! scene of `../shared/models/thesis-scene-106k.obj` (one BLAS, one instance), as Embree traces it.
-//! A performance aid for the traversal backend decision (ARCHITECTURE.md, "Performance on
-//! lavapipe"), not a test; the kernel does no shading, so its time is traversal only:
+//! A performance aid for the traversal backend decision (docs/bench/lavapipe.md), not a test;
+//! the kernel does no shading, so its time is traversal only:
 //! `cargo run --release -p rtc-runtime --example ray_query_probe [path/to/scene.obj]`.
 //!
 //! wgpu gates ray queries behind `ExperimentalFeatures`, whose constructor is `unsafe` (the API

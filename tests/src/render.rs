@@ -40,8 +40,8 @@ pub fn relative_map(map: &SourceMap) -> SourceMap {
     out
 }
 
-/// Removes the absolute path of the repository from `text` (`/…/rtc/tests/x.rt` → `tests/x.rt`),
-/// together with any extra slashes in front of it (`//…/rtc/tests/x.rt` → `tests/x.rt`).
+/// Removes the absolute path of the repository from `text` (`/…/rtc/tests/NAME.rt` → `tests/NAME.rt`),
+/// together with any extra slashes in front of it (`//…/rtc/tests/NAME.rt` → `tests/NAME.rt`).
 pub fn scrub(text: &str) -> String {
     let mut roots = vec![repo_root().to_string_lossy().into_owned()];
     if let Some(raw) = Path::new(env!("CARGO_MANIFEST_DIR")).parent() {

@@ -173,7 +173,7 @@ pub enum Range {
 }
 
 /// The `f32` fields of `@camera` structs that are checked, by name, with their range and what
-/// they are (spec/scenes.md, "Camera values").
+/// they are (spec/scenes.md, "Checked values").
 pub const CAMERA_RANGES: &[(&str, Range, &str)] = &[
     (
         "fov",

@@ -20,7 +20,7 @@
 //!            closest_hit_quantized, any_hit_quantized}
 //! ```
 //!
-//! Building, converting and traversing are kept apart (STYLE rule 8): builders know nothing of
+//! Building, converting and traversing are kept apart: builders know nothing of
 //! the GPU layouts, [`flatten`] and [`quantized::quantize`] are the only converters, and the
 //! traversal reads only the converted nodes. Builder settings exist only as named presets ([`BuildPreset::Fast`], the
 //! default, and [`BuildPreset::Quality`]).

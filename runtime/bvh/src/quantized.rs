@@ -11,8 +11,7 @@
 //! references), and there is one record per inner node instead of one per node, so the nodes take
 //! half the memory. Leaves need no record at all: a child reference holds a leaf's whole range.
 //! On the thesis frame the mesh records alone took lavapipe from 821 to 782 ms, and both levels
-//! with a first-pass change to the accumulation 802 to 722 ms (ARCHITECTURE.md, "Performance on
-//! lavapipe").
+//! with a first-pass change to the accumulation 802 to 722 ms (docs/bench/lavapipe.md).
 //!
 //! # Records of one BVH (32 bytes each, 16-byte aligned, contiguous from the BVH's base)
 //!

@@ -1,6 +1,6 @@
 //! The asset stage: file formats in, plain CPU-side scene entities out.
 //!
-//! This is the middle stage of ARCHITECTURE.md's invariant 10 (scene description → **scene
+//! This is the middle stage of ARCHITECTURE invariant 7 (scene description → **scene
 //! entities** → GPU objects). It reads Wavefront OBJ, glTF 2.0 and images, builds the scene-only
 //! built-in meshes of `spec/scenes.md`, and returns plain data: [`MeshData`], [`TextureData`] and
 //! [`ModelScene`]. It knows nothing of GPUs, buffers or BVHs; the GPU stage knows nothing of file

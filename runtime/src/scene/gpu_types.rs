@@ -6,7 +6,7 @@
 //! storage-buffer layout (scalars aligned to 4, `vec2` to 8, `vec3` and `vec4` to 16; a struct's size
 //! rounded up to its largest alignment) straight from [`abi::StructDesc`], and compile-time asserts tie
 //! every field of the Rust mirrors to it. A unit test builds the same structs as naga types and checks
-//! sizes and offsets with `naga::proc::Layouter` (STYLE rule 7), and the mirror of the tile uniform,
+//! sizes and offsets with `naga::proc::Layouter`, and the mirror of the tile uniform,
 //! `gpu::TileParams`, is checked against [`abi::TILE`] the same way.
 //!
 //! Invariants: the mirrors are `#[repr(C)]` + `bytemuck::Pod`, without implicit padding; a change to

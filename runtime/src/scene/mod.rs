@@ -1,6 +1,6 @@
 //! Scenes on the GPU: from the compiler's scene description to the buffers the kernel reads.
 //!
-//! Three stages, kept apart (ARCHITECTURE invariant 10, STYLE rule 9):
+//! Three stages, kept apart (ARCHITECTURE invariant 7):
 //!
 //! 1. **Scene description**: the compiler's checked, evaluated [`SceneDesc`] (with the program it
 //!    belongs to and the link plan [`Linked`] that gives every used type its id). Nothing here parses.

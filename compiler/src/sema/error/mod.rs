@@ -1,5 +1,5 @@
 //! The errors and warnings of module loading and semantic analysis, and their conversion to
-//! [`Diagnostic`]s, in one place (STYLE rule 4).
+//! [`Diagnostic`]s, in one place: each phase has its own error enum, rendered once, at the edge.
 //!
 //! Variants carry spans and typed data (types as [`TypeId`]s, built-ins as [`Builtin`]s, program kinds,
 //! names); all wording, labels, notes and help lines are decided here, in [`SemaError::to_diagnostic`],

@@ -271,7 +271,7 @@ fn gltf_image_uris_cannot_leave_the_files_folder() {
 const HEADER: &str =
     "import \"std/cameras/pinhole.rt\";\nimport \"std/materials/unlit_texture.rt\";\n";
 
-/// Builds the entities of a scene file `inside/scene.rt` holding `entry`, with `roots`.
+/// Builds the entities of a scene file `scene.rt` in the layout's `inside` folder holding `entry`, with `roots`.
 fn build_scene(layout: &Layout, entry: &str, roots: AssetRoots) -> Result<Entities, SceneError> {
     let text = format!("{HEADER}scene s {{\n    camera Pinhole {{}}\n    {entry}\n}}\n");
     let file = layout.inside().join("scene.rt");

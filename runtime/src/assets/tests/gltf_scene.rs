@@ -17,7 +17,7 @@ use super::{assert_close, assert_close3, TempDir};
 use crate::assets::{AssetError, GltfItem};
 use crate::scene::{Entities, EntityOptions, GpuInstance, SceneError, TypedOffset};
 
-/// Checks, links and builds the entities of the only scene of `text`, written as `dir/scene.rt`.
+/// Checks, links and builds the entities of the only scene of `text`, written as `scene.rt` in `dir`.
 fn build(dir: &TempDir, text: &str) -> (Program, Linked, Result<Entities, SceneError>) {
     let name = dir.path().join("scene.rt");
     let checked = check_text(&name.display().to_string(), text, &Options::default());
