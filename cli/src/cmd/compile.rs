@@ -5,7 +5,9 @@
 //! command only writes its outputs to files.
 //!
 //! `--all-programs` builds the unspecialised kernel (every program of the loaded modules, every
-//! feature) for comparison. `--emit ast|hir|naga` prints an intermediate form instead of writing files.
+//! feature) for comparison. `--emit ast|hir|naga` prints an intermediate form instead of writing files:
+//! the syntax tree, the typed HIR as source-like text (`rtc_compiler::sema::hir::print`), or the
+//! render kernel as WGSL with naga handles (`rtc_compiler::back::naga_listing`).
 
 use super::Context;
 use crate::args::MessageFormat;
@@ -20,11 +22,14 @@ use std::path::PathBuf;
 /// An intermediate form `--emit` prints.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Emit {
-    /// The parsed syntax tree of each root file.
+    /// The parsed syntax tree of each root file (Rust debug form).
     Ast,
-    /// The typed high-level IR of the whole program.
+    /// The typed high-level IR of the whole program (user files, standard library, kernel) as
+    /// source-like text: every local with its type, literals typed, conversions and defaults
+    /// explicit, scenes evaluated.
     Hir,
-    /// The naga IR module of the render kernel.
+    /// The render kernel's naga module as WGSL, each struct, constant, global and function under
+    /// a `// kind [i]` comment naming its naga handle.
     Naga,
 }
 
@@ -107,12 +112,24 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     );
     match args.emit {
         Some(Emit::Hir) => {
-            term::print(&format!("{:#?}\n", compiled.checked.program));
+            if let Some(program) = &compiled.checked.program {
+                term::print(&rtc_compiler::sema::hir::print::program(program));
+            }
             return Exit::Success;
         }
         Some(Emit::Naga) => {
-            term::print(&format!("{:#?}\n", compiled.render));
-            return Exit::Success;
+            return match back::naga_listing(&compiled.render) {
+                Ok(text) => {
+                    term::print(&text);
+                    Exit::Success
+                }
+                Err(e) => {
+                    term::eprint(&format!(
+                        "error[ICE]: {e}\nnote: this is a bug in rtc; please report it\n"
+                    ));
+                    Exit::Failure
+                }
+            };
         }
         _ => {}
     }
