@@ -175,3 +175,63 @@ fn example_kernels_match_their_snapshots() {
     }
     assert!(problems.is_empty(), "{}", problems.join("\n"));
 }
+
+/// The listings of `rtc compile --emit hir` and `--emit naga` (`rtc_compiler::sema::hir::print`,
+/// `back::naga_listing`), against golden files: for every small case, its module's HIR
+/// (`out/<name>/program.hir`) and its test kernel's naga listing (`out/<name>/kernel.naga`); for the
+/// hello example, its scene file's HIR (`out/example_hello/scene.hir`: a scene, evaluated). Files are
+/// named relative to this crate's folder (the tests' working folder), so module names in the
+/// listings do not depend on where the repository is. `RTC_BLESS=1` rewrites them.
+#[test]
+fn listings_match_their_goldens() {
+    use rtc_compiler::sema::hir::{print, ModuleId, Program};
+    use rtc_tests::golden::check_golden;
+    let out = root().join("tests/codegen/out");
+    let root_module = |p: &Program| {
+        let i = p.modules.iter().position(|m| m.is_root).unwrap_or(0);
+        print::module(p, ModuleId(i as u32))
+    };
+    let mut problems = Vec::new();
+    for path in rt_cases() {
+        let name = path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let file = Path::new("codegen").join(path.file_name().unwrap_or_default());
+        let checked = rtc_compiler::driver::check_paths(&[file], &Options::default());
+        let Some(program) = checked.program.as_ref() else {
+            problems.push(format!("{name}: does not check"));
+            continue;
+        };
+        problems.extend(check_golden(
+            &out.join(&name).join("program.hir"),
+            &root_module(program),
+        ));
+        let Some((f, _)) = program.functions.iter().find(|(_, f)| f.name == "test_fn") else {
+            problems.push(format!("{name}: no `test_fn`"));
+            continue;
+        };
+        match testgen::test_entry(program, &checked.sources, f, &mut NoIntrinsics) {
+            Ok(mut kernel) => {
+                naga::compact::compact(&mut kernel.module, naga::compact::KeepUnused::No);
+                match back::naga_listing(&kernel.module) {
+                    Ok(text) => {
+                        problems.extend(check_golden(&out.join(&name).join("kernel.naga"), &text))
+                    }
+                    Err(e) => problems.push(format!("{name}: {e}")),
+                }
+            }
+            Err(e) => problems.push(format!("{name}: lowering failed: {e:?}")),
+        }
+    }
+    let hello = PathBuf::from("../examples/hello/scene.rt");
+    let checked = rtc_compiler::driver::check_paths(&[hello], &Options::default());
+    match checked.program.as_ref() {
+        Some(p) => problems.extend(check_golden(
+            &out.join("example_hello/scene.hir"),
+            &root_module(p),
+        )),
+        None => problems.push("examples/hello does not check".to_string()),
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}

@@ -441,3 +441,53 @@ fn scene_choice_errors_point_at_the_users_files() {
     assert!(err.contains(s(&empty)), "{err}");
     assert!(!err.contains("prelude"), "{err}");
 }
+
+/// `--emit hir` prints the whole checked program as typed text and `--emit naga` the render kernel
+/// as the WGSL `--target wgsl` writes, with handle comments; neither writes files.
+#[test]
+fn emit_prints_readable_listings() {
+    let dir = scratch("emit");
+    let scene = repo().join("examples/hello/scene.rt");
+    let out_dir = dir.join("out");
+    let emit = |what: &str| {
+        let out = rtc(&["compile", s(&scene), "--emit", what, "--out", s(&out_dir)]);
+        assert_eq!(code(&out), 0, "{}", stderr(&out));
+        String::from_utf8(out.stdout).expect("UTF-8")
+    };
+    let hir = emit("hir");
+    assert!(
+        hir.starts_with("// module std/prelude.rt (prelude)\n"),
+        "{hir}"
+    );
+    assert!(hir.contains("\nscene hello {\n"), "{hir}");
+    assert!(
+        hir.contains("\nfn render_invocation("),
+        "the kernel is listed"
+    );
+    let naga = emit("naga");
+    assert!(naga.starts_with("// naga module: types "), "{naga}");
+    assert!(naga.contains("\n// entry point [0]\n@compute"), "{naga}");
+    assert!(!out_dir.exists(), "--emit writes no files");
+
+    let out = rtc(&[
+        "compile",
+        s(&scene),
+        "--target",
+        "wgsl",
+        "--out",
+        s(&out_dir),
+    ]);
+    assert_eq!(code(&out), 0, "{}", stderr(&out));
+    let wgsl = std::fs::read_to_string(out_dir.join("kernel.wgsl")).expect("kernel.wgsl");
+    let code_only: Vec<&str> = naga
+        .lines()
+        .skip(3)
+        .filter(|l| !l.starts_with("// "))
+        .collect();
+    let wgsl_lines: Vec<&str> = wgsl.lines().collect();
+    assert_eq!(
+        code_only, wgsl_lines,
+        "the listing is the WGSL output plus comments"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -1,4 +1,7 @@
-//! The compiler driver: the phases in order, as one list.
+//! The compiler driver: loading and checking, the phases of [`check`] in order, as one list.
+//!
+//! This is phases 1 and 3 of the whole compile; the complete list, from sources to the five target
+//! outputs, is [`crate::pipeline::compile`].
 //!
 //! `check_*` loads the root files and everything they import (plus the prelude), parses each file once,
 //! and runs semantic analysis over the module graph. It returns the source map (for rendering

@@ -1,9 +1,9 @@
 //! `rtc-compiler`: the rtc language from source text to GPU code, without a GPU.
 //!
-//! The pipeline, one entry function per phase (see [`driver`] for the list in order):
+//! The pipeline, one entry function per phase ([`pipeline::compile`] calls them in order):
 //! `source` files → `syntax` (lexer, parser, AST) → `sema` (modules and imports, name resolution,
-//! types, program signatures, scenes, recursion) → typed HIR → (later) `link` → `lower` to naga IR →
-//! back ends. Every phase returns data plus [`diag::Diagnostic`]s; nothing here prints, exits or panics on
+//! types, program signatures, scenes, recursion) → typed HIR → `link` (the scene's programs and kernel
+//! configuration) → `kernel` + `lower` to naga IR → `back` ends (WGSL, SPIR-V, HLSL, MSL, GLSL). Every phase returns data plus [`diag::Diagnostic`]s; nothing here prints, exits or panics on
 //! user input.
 //!
 //! Guarantees:
@@ -35,6 +35,7 @@ pub mod kernel;
 pub mod layout;
 pub mod link;
 pub mod lower;
+pub mod pipeline;
 pub mod sema;
 pub mod source;
 pub mod syntax;

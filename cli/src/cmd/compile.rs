@@ -1,28 +1,35 @@
 //! `rtc compile <scene.rt> [--target wgsl,spirv,hlsl,msl,glsl] [--out DIR]`: compiles one scene's
 //! specialised kernel to every requested target and writes `kernel.wgsl`, `kernel.spv`, `kernel.hlsl`,
 //! `kernel.metal`, `kernel.comp` (and `bounds.*` when the scene has custom geometry) plus
-//! `manifest.json`.
+//! `manifest.json`. The compile, targets included, is `rtc_compiler::pipeline::compile`; this
+//! command only writes its outputs to files.
 //!
 //! `--all-programs` builds the unspecialised kernel (every program of the loaded modules, every
-//! feature) for comparison. `--emit ast|hir|naga` prints an intermediate form instead of writing files.
+//! feature) for comparison. `--emit ast|hir|naga` prints an intermediate form instead of writing files:
+//! the syntax tree, the typed HIR as source-like text (`rtc_compiler::sema::hir::print`), or the
+//! render kernel as WGSL with naga handles (`rtc_compiler::back::naga_listing`).
 
 use super::Context;
 use crate::args::MessageFormat;
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::back::{self, Target};
-use rtc_compiler::kernel::{self, manifest, BOUNDS_ENTRY, RENDER_ENTRY};
+use rtc_compiler::kernel::{self, KernelOptions};
 use rtc_compiler::link::LinkOptions;
+use rtc_compiler::pipeline::{self, Compiled};
 use std::path::PathBuf;
 
 /// An intermediate form `--emit` prints.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Emit {
-    /// The parsed syntax tree of each root file.
+    /// The parsed syntax tree of each root file (Rust debug form).
     Ast,
-    /// The typed high-level IR of the whole program.
+    /// The typed high-level IR of the whole program (user files, standard library, kernel) as
+    /// source-like text: every local with its type, literals typed, conversions and defaults
+    /// explicit, scenes evaluated.
     Hir,
-    /// The naga IR module of the render kernel.
+    /// The render kernel's naga module as WGSL, each struct, constant, global and function under
+    /// a `// kind [i]` comment naming its naga handle.
     Naga,
 }
 
@@ -65,19 +72,36 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     let link = LinkOptions {
         all_programs: args.all_programs,
     };
-    let compiled =
-        match kernel::compile_scene(&args.paths, args.scene.as_deref(), &ctx.options, &link) {
-            Ok(c) => c,
-            Err(f) => {
-                return report::diagnostics(
-                    &f.checked.sources,
-                    &f.diagnostics,
-                    args.message_format,
-                    ctx.color,
-                    "compile",
-                )
-            }
-        };
+    let targets = if args.emit.is_some() {
+        Vec::new()
+    } else if args.target.is_empty() {
+        Target::ALL.to_vec()
+    } else {
+        args.target.clone()
+    };
+    let request = pipeline::Request {
+        paths: &args.paths,
+        scene: args.scene.as_deref(),
+        options: &ctx.options,
+        link: &link,
+        kernel: &KernelOptions::default(),
+        targets: &targets,
+    };
+    let Compiled {
+        scene: compiled,
+        outputs,
+    } = match pipeline::compile(&request) {
+        Ok(c) => c,
+        Err(f) => {
+            return report::diagnostics(
+                &f.checked.sources,
+                &f.diagnostics,
+                args.message_format,
+                ctx.color,
+                "compile",
+            )
+        }
+    };
     // Warnings of a successful compile are still shown.
     let _ = report::diagnostics(
         &compiled.checked.sources,
@@ -88,30 +112,40 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     );
     match args.emit {
         Some(Emit::Hir) => {
-            term::print(&format!("{:#?}\n", compiled.checked.program));
+            if let Some(program) = &compiled.checked.program {
+                term::print(&rtc_compiler::sema::hir::print::program(program));
+            }
             return Exit::Success;
         }
         Some(Emit::Naga) => {
-            term::print(&format!("{:#?}\n", compiled.render));
-            return Exit::Success;
+            return match back::naga_listing(&compiled.render) {
+                Ok(text) => {
+                    term::print(&text);
+                    Exit::Success
+                }
+                Err(e) => {
+                    term::eprint(&format!(
+                        "error[ICE]: {e}\nnote: this is a bug in rtc; please report it\n"
+                    ));
+                    Exit::Failure
+                }
+            };
         }
         _ => {}
     }
     if let Err(e) = kernel::save_registry(&compiled) {
         term::eprint(&format!("warning: cannot save the program registry: {e}\n"));
     }
-    let targets = if args.target.is_empty() {
-        Target::ALL.to_vec()
-    } else {
-        args.target.clone()
-    };
     if let Err(e) = std::fs::create_dir_all(&args.out) {
         return report::usage_error(
             &format!("cannot create `{}`: {e}", args.out.display()),
             ctx.color,
         );
     }
-    match write_outputs(&compiled, &targets, &args.out) {
+    match outputs
+        .map_err(OutputError::Backend)
+        .and_then(|outputs| write_files(&outputs, &args.out))
+    {
         Ok(_) => {}
         Err(OutputError::Backend(e)) => {
             if let Some(d) = e.limit_diagnostic(&compiled.checked.sources) {
@@ -159,55 +193,29 @@ pub enum OutputError {
 }
 
 /// Writes the kernel (and the bounds kernel, if any) for every target, then `manifest.json`, into
-/// `out` (which must exist). Returns the files written, in order. Shared by `rtc compile` and
-/// `rtc watch`.
+/// `out` (which must exist): phase 7 of the pipeline ([`pipeline::write_targets`]), then the files.
+/// Returns the files written, in order. Used by `rtc watch`.
 pub fn write_outputs(
     compiled: &kernel::CompiledScene,
     targets: &[Target],
     out: &std::path::Path,
 ) -> Result<Vec<PathBuf>, OutputError> {
-    let resources = rtc_compiler::abi::resources(compiled.bindings.iter().copied());
-    let mut modules = vec![("kernel", &compiled.render, RENDER_ENTRY)];
-    if let Some(b) = &compiled.bounds {
-        modules.push(("bounds", b, BOUNDS_ENTRY));
-    }
-    let jobs: Vec<_> = modules
-        .iter()
-        .flat_map(|m| targets.iter().map(move |&t| (m, t)))
-        .collect();
-    // The backends are independent: each target is written on its own thread.
-    let results: Vec<Result<PathBuf, OutputError>> = std::thread::scope(|scope| {
-        let handles: Vec<_> = jobs
-            .iter()
-            .map(|&(&(stem, module, entry), t)| {
-                let resources = &resources;
-                scope.spawn(move || {
-                    let bytes =
-                        back::write(module, t, entry, resources).map_err(OutputError::Backend)?;
-                    let ext = t.file_name().rsplit('.').next().unwrap_or("out");
-                    let path = out.join(format!("{stem}.{ext}"));
-                    std::fs::write(&path, bytes).map_err(|e| {
-                        OutputError::Write(format!("cannot write `{}`: {e}", path.display()))
-                    })?;
-                    Ok(path)
-                })
-            })
-            .collect();
-        handles
-            .into_iter()
-            // A panic in a backend is a bug: it goes on as the panic it is (an ICE, exit code 101).
-            .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
-            .collect()
-    });
+    let outputs = pipeline::write_targets(compiled, targets).map_err(OutputError::Backend)?;
+    write_files(&outputs, out)
+}
+
+/// Writes each output into `out` under its name; returns the paths, in order.
+fn write_files(
+    outputs: &[pipeline::Output],
+    out: &std::path::Path,
+) -> Result<Vec<PathBuf>, OutputError> {
     let mut written = Vec::new();
-    for r in results {
-        written.push(r?);
+    for o in outputs {
+        let path = out.join(&o.name);
+        std::fs::write(&path, &o.bytes)
+            .map_err(|e| OutputError::Write(format!("cannot write `{}`: {e}", path.display())))?;
+        written.push(path);
     }
-    let manifest_path = out.join("manifest.json");
-    std::fs::write(&manifest_path, manifest::manifest_json(compiled)).map_err(|e| {
-        OutputError::Write(format!("cannot write `{}`: {e}", manifest_path.display()))
-    })?;
-    written.push(manifest_path);
     Ok(written)
 }
 

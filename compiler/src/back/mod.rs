@@ -11,6 +11,10 @@
 //! Invariants: the outputs are deterministic (the same module gives byte-identical code), and a
 //! failure is always a [`BackendError`] naming the target.
 
+mod listing;
+
+pub use listing::naga_listing;
+
 use naga::valid::{Capabilities, ModuleInfo, ValidationFlags, Validator};
 use std::collections::BTreeMap;
 use std::panic::AssertUnwindSafe;

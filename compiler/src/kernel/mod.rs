@@ -1,15 +1,11 @@
-//! Kernel assembly: from checked sources and a scene to the scene's specialised `naga::Module`.
+//! Kernel assembly: from a checked program with the framework kernel and a link plan to the scene's
+//! specialised `naga::Module`s.
 //!
-//! [`compile_scene`] is the whole compile of one scene, as a list of phases:
-//! 1. check the user's files (`driver::check_paths`);
-//! 2. choose the scene and link it (`link::link`): used types with registry ids, kernel configuration;
-//! 3. check again with the framework kernel (`stdlib/kernel/`) and the generated modules `rtc:abi` and
-//!    `rtc:config` (see [`generated`]), so the kernel's array sizes and feature switches are the scene's;
-//! 4. lower the kernel's entry points, which pulls in exactly the programs, dispatchers, loaders and
-//!    bindings the scene reaches;
-//! 5. validate.
-//!
-//! The result, [`CompiledScene`], is what `rtc compile` writes out and what the runtime runs.
+//! The phases of a whole compile, in order, are [`crate::pipeline::compile`]; this module provides
+//! the kernel's parts of it: the generated modules `rtc:abi` and `rtc:config` ([`generated`]), the
+//! lowering of one kernel entry point with its intrinsics, dispatchers and loaders ([`lower_kernel`]),
+//! the scene's registry file, and the result, [`CompiledScene`], which is what `rtc compile` writes
+//! out and what the runtime runs. [`compile_scene`] is the pipeline without targets.
 
 pub mod dispatch;
 mod entry;
@@ -21,8 +17,8 @@ use crate::abi::BindingDesc;
 use crate::diag::Diagnostic;
 use crate::driver::{Checked, Options};
 use crate::link::{LinkOptions, Linked};
-use crate::lower::{LowerError, Lowerer};
-use crate::sema::hir::{Program, ProgramKind, SceneId};
+use crate::lower::LowerError;
+use crate::sema::hir::{Program, SceneId};
 use intrinsics::KernelHooks;
 use std::path::PathBuf;
 
@@ -45,10 +41,6 @@ pub struct CompiledScene {
     pub samples_per_pass: u32,
     /// How long each phase of the compile took, in milliseconds, in order.
     pub timings: Vec<(&'static str, f64)>,
-}
-
-fn ms_since(t: std::time::Instant) -> f64 {
-    t.elapsed().as_secs_f64() * 1e3
 }
 
 /// The render kernel's entry point.
@@ -97,97 +89,11 @@ pub struct CompileFailure {
 /// The framework kernel's files, checked with every scene.
 pub const KERNEL_ROOTS: &[&str] = &["std/kernel/trace.rt"];
 
-/// Phases 1–3: checks the user's files, links the scene and checks again with the kernel.
-pub fn check_with_kernel(
-    paths: &[PathBuf],
-    scene: Option<&str>,
-    options: &Options,
-    link_options: &LinkOptions,
-) -> Result<(Checked, SceneId, Linked), Box<CompileFailure>> {
-    check_with_kernel_timed(
-        paths,
-        scene,
-        options,
-        link_options,
-        &KernelOptions::default(),
-        &mut Vec::new(),
-    )
-}
-
-/// [`check_with_kernel`], recording the time of each phase in `timings`.
-pub fn check_with_kernel_timed(
-    paths: &[PathBuf],
-    scene: Option<&str>,
-    options: &Options,
-    link_options: &LinkOptions,
-    kernel_options: &KernelOptions,
-    timings: &mut Vec<(&'static str, f64)>,
-) -> Result<(Checked, SceneId, Linked), Box<CompileFailure>> {
-    let t = std::time::Instant::now();
-    let fail = |checked: Checked, diagnostics: Vec<Diagnostic>| {
-        Box::new(CompileFailure {
-            checked,
-            diagnostics,
-        })
-    };
-    let first = crate::driver::check_paths(paths, options);
-    timings.push(("check the user's files", ms_since(t)));
-    let t = std::time::Instant::now();
-    let Some(program) = first.program.as_ref() else {
-        let d = first.diagnostics.clone();
-        return Err(fail(first, d));
-    };
-    let scene_id = match program.select_scene(scene) {
-        Ok(s) => s,
-        Err(e) => {
-            let mut first = first;
-            let d = vec![scene_choice_diagnostic(&e, &mut first, paths)];
-            return Err(fail(first, d));
-        }
-    };
-    let registry_path = registry_path(program, scene_id);
-    let (mut registry, _) =
-        crate::link::registry::load_scene(&registry_path, &registry_key(program, scene_id));
-    let linked = match crate::link::link(program, scene_id, &mut registry, link_options) {
-        Ok(l) => l,
-        Err(d) => return Err(fail(first, d)),
-    };
-    timings.push(("link", ms_since(t)));
-    let t = std::time::Instant::now();
-    let mut opts = options.clone();
-    opts.generated
-        .insert(generated::ABI_MODULE.to_string(), generated::abi_module());
-    opts.generated.insert(
-        generated::CONFIG_MODULE.to_string(),
-        generated::config_module_with(&linked.config, kernel_options.debug),
-    );
-    let second = crate::driver::check_paths_with_std(paths, KERNEL_ROOTS, &opts);
-    timings.push(("check with the kernel", ms_since(t)));
-    let Some(program) = second.program.as_ref() else {
-        let d = second.diagnostics.clone();
-        return Err(fail(second, d));
-    };
-    // Ids are the same (same keys, same registry); struct and function handles are the second check's.
-    let scene_id = match program.select_scene(scene) {
-        Ok(s) => s,
-        Err(e) => {
-            let mut second = second;
-            let d = vec![scene_choice_diagnostic(&e, &mut second, paths)];
-            return Err(fail(second, d));
-        }
-    };
-    let linked = match crate::link::link(program, scene_id, &mut registry, link_options) {
-        Ok(l) => l,
-        Err(d) => return Err(fail(second, d)),
-    };
-    Ok((second, scene_id, linked))
-}
-
 /// E0706 for an ambiguous or unknown scene name; E0703 when the files declare no scene at all.
 /// Both are located in the user's files: an unknown name at the scenes there are, no scene at the
 /// start of the (first) user file, or, when `paths` held no `.rt` file at all (an empty folder),
 /// at an empty source named after `paths`, added to `checked`'s sources for the purpose.
-fn scene_choice_diagnostic(
+pub(crate) fn scene_choice_diagnostic(
     e: &crate::sema::hir::SceneChoiceError,
     checked: &mut Checked,
     paths: &[PathBuf],
@@ -297,7 +203,8 @@ pub fn registry_path(program: &crate::sema::hir::Program, scene: SceneId) -> Pat
         .join(crate::link::registry::FILE_NAME)
 }
 
-/// Compiles the scene `scene` (or the only scene) of the given root files.
+/// Compiles the scene `scene` (or the only scene) of the given root files: the pipeline
+/// ([`crate::pipeline::compile`]) without targets.
 pub fn compile_scene(
     paths: &[PathBuf],
     scene: Option<&str>,
@@ -321,199 +228,74 @@ pub fn compile_scene_with(
     link_options: &LinkOptions,
     kernel_options: &KernelOptions,
 ) -> Result<CompiledScene, Box<CompileFailure>> {
-    let mut timings = Vec::new();
-    let (checked, scene_id, linked) = check_with_kernel_timed(
+    let request = crate::pipeline::Request {
         paths,
         scene,
         options,
-        link_options,
-        kernel_options,
-        &mut timings,
-    )?;
-    let built = match checked.program.as_ref() {
-        Some(program) => lower_kernels(program, &checked.sources, &linked, &mut timings),
-        None => Err(dispatch::kernel_error("the checked program is missing")),
+        link: link_options,
+        kernel: kernel_options,
+        targets: &[],
     };
-    match built {
-        Ok((render, bounds, bindings)) => {
-            let samples_per_pass = checked
-                .program
-                .as_ref()
-                .and_then(|p| {
-                    let cam = p.scenes[scene_id].camera.as_ref()?;
-                    p.program_for(cam.struct_id, ProgramKind::RayGeneration)
-                        .map(|e| e.samples.max(1))
-                })
-                .unwrap_or(1);
-            Ok(CompiledScene {
-                checked,
-                scene: scene_id,
-                linked,
-                render,
-                bounds,
-                bindings,
-                samples_per_pass,
-                timings,
-            })
+    crate::pipeline::compile(&request).map(|c| c.scene)
+}
+
+/// The bindings a kernel declares, in binding order.
+pub type Bindings = Vec<&'static BindingDesc>;
+
+/// Phases 5 and 6 of the pipeline: lowers the kernel function `root` (`render_invocation` or
+/// `compute_bounds` of `stdlib/kernel/`) and everything it reaches, which pulls in exactly the
+/// programs, dispatchers, loaders and bindings the scene uses, wraps it in the compute entry point
+/// `entry` ([`RENDER_ENTRY`] or [`BOUNDS_ENTRY`]), validates and compacts the module. Returns it with
+/// the bindings it declares; a failure is an internal error, as a diagnostic.
+pub fn lower_kernel(
+    checked: &Checked,
+    linked: &Linked,
+    root: &str,
+    entry: &str,
+) -> Result<(naga::Module, Bindings), Box<Diagnostic>> {
+    let Some(program) = checked.program.as_ref() else {
+        return Err(Box::new(Diagnostic::error(
+            crate::diag::codes::ICE,
+            "the checked program is missing",
+            crate::source::Span::default(),
+        )));
+    };
+    let lowered = lower_entry(program, &checked.sources, linked, root, entry);
+    match lowered {
+        Ok((mut module, bindings)) => {
+            // Compaction drops types and constants nothing uses, so outputs (and their snapshots)
+            // change only when the code does.
+            naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+            Ok((module, bindings))
         }
-        Err(e) => {
-            let d = match checked.program.as_ref() {
-                Some(p) => e.to_diagnostic(p),
-                None => Diagnostic::error(
-                    crate::diag::codes::ICE,
-                    e.to_string(),
-                    crate::source::Span::default(),
-                ),
-            };
-            Err(Box::new(CompileFailure {
-                checked,
-                diagnostics: vec![d],
-            }))
-        }
+        Err(e) => Err(Box::new(e.to_diagnostic(program))),
     }
 }
 
-/// Phases 4 and 5: lowers the render kernel (and the bounds kernel when the scene has custom geometry)
-/// and validates them.
-/// The modules [`lower_kernels`] builds: render, bounds (if any), and the render kernel's bindings.
-type Kernels = (
-    naga::Module,
-    Option<naga::Module>,
-    Vec<&'static BindingDesc>,
-);
-
-fn lower_kernels(
+fn lower_entry(
     program: &Program,
     sources: &crate::source::SourceMap,
     linked: &Linked,
-    timings: &mut Vec<(&'static str, f64)>,
-) -> Result<Kernels, LowerError> {
-    let t = std::time::Instant::now();
-    let render_invocation = intrinsics::kernel_fn(program, "render_invocation")?;
+    root: &str,
+    entry: &str,
+) -> Result<(naga::Module, Bindings), LowerError> {
+    let root = intrinsics::kernel_fn(program, root)?;
     let mut hooks = KernelHooks {
         program,
         linked,
         config: linked.config,
         generated: dispatch::Generated::default(),
     };
-    let mut cx = Lowerer::new(program, sources);
-    let f = cx.ensure_function(render_invocation, &mut hooks)?;
-    entry::render_entry(&mut cx, f)?;
-    let bindings = hooks.generated.used_bindings();
-    let mut render = cx.into_module();
-    timings.push(("lower to naga IR", ms_since(t)));
-    let t = std::time::Instant::now();
-    crate::lower::validate(&render, sources)?;
-    // Compaction drops types and constants nothing uses, so outputs (and their snapshots) change only
-    // when the code does.
-    naga::compact::compact(&mut render, naga::compact::KeepUnused::No);
-    timings.push(("validate and compact", ms_since(t)));
-    let t = std::time::Instant::now();
-
-    let bounds = if linked.config.has_custom_geometry {
-        let compute_bounds = intrinsics::kernel_fn(program, "compute_bounds")?;
-        let mut hooks = KernelHooks {
-            program,
-            linked,
-            config: linked.config,
-            generated: dispatch::Generated::default(),
-        };
-        let mut cx = Lowerer::new(program, sources);
-        let f = cx.ensure_function(compute_bounds, &mut hooks)?;
-        entry::bounds_entry(&mut cx, f)?;
-        let mut module = cx.into_module();
-        crate::lower::validate(&module, sources)?;
-        naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
-        Some(module)
-    } else {
-        None
+    let build_entry = |cx: &mut crate::lower::Lowerer<'_>,
+                       roots: &[naga::Handle<naga::Function>]| {
+        match (entry, roots) {
+            (RENDER_ENTRY, [f]) => entry::render_entry(cx, *f),
+            (BOUNDS_ENTRY, [f]) => entry::bounds_entry(cx, *f),
+            _ => Err(dispatch::kernel_error(format!(
+                "no kernel entry point `{entry}`"
+            ))),
+        }
     };
-    if bounds.is_some() {
-        timings.push(("bounds kernel", ms_since(t)));
-    }
-    Ok((render, bounds, bindings))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn example(name: &str) -> PathBuf {
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("../examples")
-            .join(name)
-            .join("scene.rt")
-    }
-
-    #[test]
-    fn the_kernel_checks_with_a_scene() {
-        let r = check_with_kernel(
-            &[example("hello")],
-            None,
-            &Options::default(),
-            &LinkOptions::default(),
-        );
-        match r {
-            Ok((checked, _, linked)) => {
-                assert!(checked.program.is_some());
-                assert!(linked.config.has_secondary_rays);
-                assert_eq!(linked.config.max_spawn, 1);
-            }
-            Err(f) => panic!(
-                "{}",
-                crate::diag::render_human(&f.checked.sources, &f.diagnostics, false)
-            ),
-        }
-    }
-
-    /// The scene-level traversal stack holds one entry per object but one (a binary BVH over `n`
-    /// objects has at most `n - 1` inner nodes on a path); a scene whose glTF models bring objects
-    /// the compiler cannot count gets the builder's depth bound.
-    #[test]
-    fn the_scene_level_stack_is_sized_by_the_object_count() {
-        let config = |name: &str| match check_with_kernel(
-            &[example(name)],
-            None,
-            &Options::default(),
-            &LinkOptions::default(),
-        ) {
-            Ok((_, _, linked)) => linked.config,
-            Err(f) => panic!(
-                "{}",
-                crate::diag::render_human(&f.checked.sources, &f.diagnostics, false)
-            ),
-        };
-        // 17 bunnies and a floor.
-        assert_eq!(config("thesis_scene").tlas_stack, 17);
-        assert_eq!(
-            config("thesis_scene").blas_stack,
-            crate::link::MAX_BVH_DEPTH
-        );
-        assert_eq!(config("gltf_scene").tlas_stack, crate::link::MAX_BVH_DEPTH);
-    }
-}
-
-#[cfg(test)]
-mod compile_tests {
-    use super::*;
-    use crate::back::Target;
-
-    #[test]
-    fn hello_compiles_to_every_target() {
-        let path =
-            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/hello/scene.rt");
-        let c = match compile_scene(&[path], None, &Options::default(), &LinkOptions::default()) {
-            Ok(c) => c,
-            Err(f) => panic!(
-                "{}",
-                crate::diag::render_human(&f.checked.sources, &f.diagnostics, false)
-            ),
-        };
-        let resources = crate::abi::resources(c.bindings.iter().copied());
-        for t in Target::ALL {
-            if let Err(e) = crate::back::write(&c.render, t, RENDER_ENTRY, &resources) {
-                panic!("{}: {e}", t.name());
-            }
-        }
-    }
+    let lowered = crate::lower::lower(program, sources, &[root], &mut hooks, build_entry)?;
+    Ok((lowered.module, hooks.generated.used_bindings()))
 }

@@ -1,9 +1,9 @@
 //! Lowering: typed HIR straight to one `naga::Module`, without WGSL text.
 //!
-//! The entry is [`lower`] (the functions reachable from some roots), or a [`Lowerer`] for callers that
-//! assemble more around the user code (the kernel: a prelude module to start from, dispatchers and the
-//! entry point built after). All IR construction goes through [`builder::FnBuilder`], the one place that
-//! handles `Statement::Emit`.
+//! The one entry is [`lower`]: it lowers the functions reachable from some roots into a new module,
+//! lets the caller build what surrounds them (an entry point: the kernel's `render` and `bounds`, the
+//! test entry point of [`testgen`]) through the [`Lowerer`], and validates the result. All IR
+//! construction goes through [`builder::FnBuilder`], the one place that handles `Statement::Emit`.
 //!
 //! # Invariants
 //!
@@ -176,26 +176,34 @@ pub struct Lowerer<'p> {
 
 /// What [`lower`] returns.
 #[derive(Debug)]
-pub struct Lowered {
+pub struct Lowered<T> {
     /// The module (validated).
     pub module: naga::Module,
     /// naga's analysis of it.
     pub info: naga::valid::ModuleInfo,
     /// The naga function of every lowered HIR function, callees first.
     pub functions: IndexMap<FnId, Handle<Function>>,
+    /// What `finish` returned.
+    pub finished: T,
 }
 
-/// Lowers `roots` and everything they call into a new module, and validates it.
-pub fn lower(
+/// Lowers `roots` and everything they call into a new module, then lets `finish` add what surrounds
+/// them (it gets the roots' naga functions, in order; an entry point calling them, say), and validates
+/// the module. This is the only way into lowering: every caller (the kernel, the test entry point,
+/// tests) goes through it.
+pub fn lower<T>(
     program: &Program,
     sources: &SourceMap,
     roots: &[FnId],
     intrinsics: &mut dyn Intrinsics,
-) -> Result<Lowered, LowerError> {
+    finish: impl FnOnce(&mut Lowerer<'_>, &[Handle<Function>]) -> Result<T, LowerError>,
+) -> Result<Lowered<T>, LowerError> {
     let mut cx = Lowerer::new(program, sources);
+    let mut handles = Vec::with_capacity(roots.len());
     for &f in roots {
-        cx.ensure_function(f, intrinsics)?;
+        handles.push(cx.ensure_function(f, intrinsics)?);
     }
+    let finished = finish(&mut cx, &handles)?;
     let functions = cx.functions.clone();
     let module = cx.into_module();
     let info = validate(&module, sources)?;
@@ -203,26 +211,17 @@ pub fn lower(
         module,
         info,
         functions,
+        finished,
     })
 }
 
 impl<'p> Lowerer<'p> {
-    /// A lowerer building a new, empty module.
-    pub fn new(program: &'p Program, sources: &'p SourceMap) -> Lowerer<'p> {
-        Lowerer::with_module(program, sources, naga::Module::default())
-    }
-
-    /// A lowerer appending to `module` (e.g. a prelude parsed from WGSL: everything lowered comes after
-    /// its items, as naga's ordering rule requires).
-    pub fn with_module(
-        program: &'p Program,
-        sources: &'p SourceMap,
-        module: naga::Module,
-    ) -> Lowerer<'p> {
+    /// A lowerer building a new, empty module (private: [`lower`] is the entry).
+    fn new(program: &'p Program, sources: &'p SourceMap) -> Lowerer<'p> {
         Lowerer {
             program,
             sources,
-            module,
+            module: naga::Module::default(),
             layouter: naga::proc::Layouter::default(),
             types: HashMap::new(),
             functions: IndexMap::new(),
@@ -254,8 +253,8 @@ impl<'p> Lowerer<'p> {
         &mut self.module
     }
 
-    /// The finished module (not validated; see [`validate`]).
-    pub fn into_module(self) -> naga::Module {
+    /// The finished module (not validated; [`lower`] validates it).
+    fn into_module(self) -> naga::Module {
         self.module
     }
 

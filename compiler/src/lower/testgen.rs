@@ -27,7 +27,7 @@
 
 use super::builder::{FnBuilder, TypeCache};
 use super::types::vector_size;
-use super::{validate, Intrinsics, LowerError, Lowerer, Unsupported};
+use super::{lower, Intrinsics, LowerError, Lowerer, Unsupported};
 use crate::back::{Resource, ResourceKind};
 use crate::sema::hir::{FnId, Program};
 use crate::sema::types::{ScalarKind, Type, TypeId};
@@ -112,9 +112,36 @@ pub fn test_entry(
     f: FnId,
     intrinsics: &mut dyn Intrinsics,
 ) -> Result<TestKernel, LowerError> {
+    let lowered = lower(
+        program,
+        sources,
+        &[f],
+        intrinsics,
+        |lw, roots| match roots {
+            [callee] => entry_point(lw, f, *callee),
+            _ => Err(LowerError::InvalidHir {
+                what: "a test entry point for other than one function",
+                span: program.functions[f].span,
+            }),
+        },
+    )?;
+    let (input, output) = lowered.finished;
+    Ok(TestKernel {
+        module: lowered.module,
+        input,
+        output,
+    })
+}
+
+/// Builds the entry point calling `callee` (the naga function of `f`) and the two buffers; returns
+/// the input and output element layouts.
+fn entry_point(
+    lw: &mut Lowerer<'_>,
+    f: FnId,
+    callee: Handle<naga::Function>,
+) -> Result<(IoLayout, IoLayout), LowerError> {
+    let program = lw.program;
     let func = &program.functions[f];
-    let mut lw = Lowerer::new(program, sources);
-    let callee = lw.ensure_function(f, intrinsics)?;
 
     let mut params = Vec::new();
     for &p in &func.params {
@@ -122,7 +149,7 @@ pub fn test_entry(
         params.push((
             local.name.clone(),
             local.ty,
-            io_type(&mut lw, local.ty, local.span)?,
+            io_type(lw, local.ty, local.span)?,
         ));
     }
     if params.is_empty() {
@@ -136,7 +163,7 @@ pub fn test_entry(
             span: func.span,
         });
     }
-    let ret_io = io_type(&mut lw, ret_ty, func.span)?;
+    let ret_io = io_type(lw, ret_ty, func.span)?;
     let input_t = lw.layout_struct(
         Some("Input"),
         params.iter().map(|(n, _, t)| (n.as_str(), *t)),
@@ -159,14 +186,14 @@ pub fn test_entry(
         )
     };
     let input_g = global(
-        &mut lw,
+        lw,
         "input",
         input_arr,
         INPUT_BINDING,
         naga::StorageAccess::LOAD,
     );
     let output_g = global(
-        &mut lw,
+        lw,
         "output",
         output_arr,
         OUTPUT_BINDING,
@@ -200,7 +227,7 @@ pub fn test_entry(
         let ty = func.body.locals[p].ty;
         let member = fb.access_index(element, k as u32, u);
         let raw = fb.load(member, u);
-        args.push(from_io(&mut lw, &mut fb, raw, ty)?);
+        args.push(from_io(lw, &mut fb, raw, ty)?);
     }
     let result = fb
         .call(callee, args, true, u)
@@ -208,7 +235,7 @@ pub fn test_entry(
             what: "a test function without a result",
             span: func.span,
         })?;
-    let stored = to_io(&mut lw, &mut fb, result, ret_ty)?;
+    let stored = to_io(lw, &mut fb, result, ret_ty)?;
     let out_element = fb.access(output_ptr, index, u);
     let out_member = fb.access_index(out_element, 0, u);
     fb.store(out_member, stored, u);
@@ -228,19 +255,9 @@ pub fn test_entry(
         incoming_ray_payload: None,
     });
 
-    let input = io_layout(
-        &mut lw,
-        input_t,
-        params.iter().map(|(_, t, _)| *t).collect(),
-    );
-    let output = io_layout(&mut lw, output_t, vec![ret_ty]);
-    let module = lw.into_module();
-    validate(&module, sources)?;
-    Ok(TestKernel {
-        module,
-        input,
-        output,
-    })
+    let input = io_layout(lw, input_t, params.iter().map(|(_, t, _)| *t).collect());
+    let output = io_layout(lw, output_t, vec![ret_ty]);
+    Ok((input, output))
 }
 
 /// The naga type a value of HIR type `ty` has in a buffer: `bool` becomes `u32`.

@@ -78,7 +78,14 @@ fn f(x: f32) -> f32 { return helper(x) + helper(2.0 * x); }
 ";
     let c = checked(src);
     let p = c.program.as_ref().expect("program");
-    let lowered = lower(p, &c.sources, &[fn_id(p, "f")], &mut NoIntrinsics).expect("lowers");
+    let lowered = lower(
+        p,
+        &c.sources,
+        &[fn_id(p, "f")],
+        &mut NoIntrinsics,
+        |_, _| Ok(()),
+    )
+    .expect("lowers");
     let names: Vec<&str> = lowered
         .module
         .functions
@@ -96,7 +103,14 @@ fn an_intrinsic_without_a_kernel_is_an_internal_error_at_the_call() {
     let src = "fn f(x: f32) -> f32 {\n    return x * rand();\n}\n";
     let c = checked(src);
     let p = c.program.as_ref().expect("program");
-    let err = lower(p, &c.sources, &[fn_id(p, "f")], &mut NoIntrinsics).expect_err("no rand");
+    let err = lower(
+        p,
+        &c.sources,
+        &[fn_id(p, "f")],
+        &mut NoIntrinsics,
+        |_, _| Ok(()),
+    )
+    .expect_err("no rand");
     assert!(
         matches!(
             err,
@@ -148,7 +162,14 @@ fn f(x: f32) -> f32 { return placeholder(g(x)); }
 ";
     let c = checked(src);
     let p = c.program.as_ref().expect("program");
-    let lowered = lower(p, &c.sources, &[fn_id(p, "f")], &mut TestHook).expect("lowers");
+    let lowered = lower(
+        p,
+        &c.sources,
+        &[fn_id(p, "f")],
+        &mut TestHook,
+        |_, _| Ok(()),
+    )
+    .expect("lowers");
     let names: Vec<&str> = lowered
         .module
         .functions

@@ -47,6 +47,7 @@ use crate::source::{FileId, Span};
 use la_arena::{Arena, Idx};
 use std::path::PathBuf;
 
+pub mod print;
 mod scene;
 pub use scene::*;
 
