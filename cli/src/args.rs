@@ -1,10 +1,17 @@
 //! The command line's clap definitions: the top-level [`Cli`], the options every subcommand shares
-//! ([`GlobalArgs`]) and the choice of colour. Each subcommand's own arguments live in its module under
-//! `cmd/`.
+//! ([`GlobalArgs`]), the choice of colour, and the option groups several subcommands flatten into
+//! their own arguments, so that each such option is declared once with one name, help text, default
+//! and validation: [`SceneArgs`] (`--scene`, `--size`), [`SppArgs`] (`--spp`), [`AdapterArgs`]
+//! (`--adapter`), [`BvhArgs`] (`--bvh`) and [`AssetArgs`] (`--asset-root`). Each subcommand's own
+//! arguments live in its module under `cmd/`.
 
 use crate::cmd::Command;
 use clap::{Args, Parser, ValueEnum};
+use rtc_compiler::sema::scenes::MAX_IMAGE_SIDE;
+use rtc_runtime::gpu::AdapterChoice;
+use rtc_runtime::render::BuildPreset;
 use std::path::PathBuf;
+use std::str::FromStr;
 
 /// rtc: a compiler and runtime for programmable ray tracing on any GPU.
 #[derive(Debug, Parser)]
@@ -56,6 +63,114 @@ impl AssetArgs {
         Ok(rtc_runtime::assets::AssetRoots::new(
             self.asset_roots.iter().cloned(),
         ))
+    }
+}
+
+/// `--scene` and `--size`, shared by the commands that render a scene (`render`, `bench`, `bvh`,
+/// `view`, `watch`).
+#[derive(Clone, Debug, Default, Args)]
+pub struct SceneArgs {
+    /// Which scene, when the file declares several.
+    #[arg(id = "scene", long = "scene", value_name = "NAME")]
+    pub name: Option<String>,
+    /// Image size instead of the scene's `width` and `height`, as `WIDTHxHEIGHT`.
+    #[arg(long, value_name = "WxH")]
+    pub size: Option<Size>,
+}
+
+impl SceneArgs {
+    /// `--size` as `[width, height]`, the runtime's form.
+    pub fn image_size(&self) -> Option<[u32; 2]> {
+        self.size.map(|s| [s.width, s.height])
+    }
+}
+
+/// `--spp`, shared by `render`, `bvh`, `view` and `watch` (`bench` measures lists of counts
+/// instead).
+#[derive(Clone, Copy, Debug, Default, Args)]
+pub struct SppArgs {
+    /// Samples per pixel instead of the scene's `samples`.
+    #[arg(id = "spp", long = "spp", value_name = "N", value_parser = parse_spp)]
+    pub samples: Option<u32>,
+}
+
+/// `--adapter`, shared by the commands that render on a GPU (`render`, `bench`, `bvh`, `view`,
+/// `watch`).
+#[derive(Clone, Debug, Args)]
+pub struct AdapterArgs {
+    /// The GPU: `auto`, `cpu`, a backend (`vulkan`, `metal`, `dx12`, `gl`) and/or part of the
+    /// adapter's name, comma-separated (e.g. `gl,llvmpipe`).
+    #[arg(long, value_name = "CHOICE", default_value = "auto")]
+    pub adapter: String,
+}
+
+impl AdapterArgs {
+    /// The adapter asked for, else a message for a usage error. Parsed here rather than by clap so
+    /// that each command checks it at its own step (`watch` only when it renders a preview).
+    pub fn choice(&self) -> Result<AdapterChoice, String> {
+        AdapterChoice::from_str(&self.adapter).map_err(|e| e.to_string())
+    }
+}
+
+/// `--bvh`, shared by the commands that build BVHs for a render (`render`, `bench`, `bvh`).
+#[derive(Clone, Copy, Debug, Args)]
+pub struct BvhArgs {
+    /// BVH builder preset: `fast` builds quickly; `quality` traces faster on large triangles.
+    #[arg(
+        id = "bvh",
+        long = "bvh",
+        value_name = "BVH",
+        value_enum,
+        default_value_t = BvhPreset::Fast
+    )]
+    pub preset: BvhPreset,
+}
+
+/// A `--bvh` value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum BvhPreset {
+    /// Binned SAH.
+    Fast,
+    /// Finer binning and spatial splits.
+    Quality,
+}
+
+impl From<BvhPreset> for BuildPreset {
+    fn from(p: BvhPreset) -> Self {
+        match p {
+            BvhPreset::Fast => BuildPreset::Fast,
+            BvhPreset::Quality => BuildPreset::Quality,
+        }
+    }
+}
+
+/// `--size WxH`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Size {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+}
+
+impl FromStr for Size {
+    type Err = String;
+
+    fn from_str(text: &str) -> Result<Size, String> {
+        let bad = || format!("`{text}` is not a size; write WIDTHxHEIGHT, e.g. 640x480");
+        let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
+        let parse = |s: &str| {
+            s.trim()
+                .parse::<u32>()
+                .ok()
+                .filter(|&n| (1..=MAX_IMAGE_SIDE).contains(&n))
+        };
+        match (parse(w), parse(h)) {
+            (Some(width), Some(height)) => Ok(Size { width, height }),
+            _ => Err(format!(
+                "`{text}`: width and height must be whole numbers from 1 to {MAX_IMAGE_SIDE}"
+            )),
+        }
     }
 }
 
@@ -145,5 +260,28 @@ pub fn check_output_path(path: &std::path::Path, what: &str) -> Result<(), Strin
              it)",
             parent.display()
         )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_parse_and_bad_ones_say_why() {
+        assert_eq!(
+            "640x480".parse::<Size>(),
+            Ok(Size {
+                width: 640,
+                height: 480
+            })
+        );
+        assert_eq!(
+            "2X3".parse::<Size>().map(|s| (s.width, s.height)),
+            Ok((2, 3))
+        );
+        assert!("640".parse::<Size>().unwrap_err().contains("WIDTHxHEIGHT"));
+        assert!("0x5".parse::<Size>().unwrap_err().contains("1 to 16384"));
+        assert!("axb".parse::<Size>().is_err());
     }
 }

@@ -19,7 +19,7 @@
 
 use crate::cache::ModuleCache;
 use crate::diag::{self, suggest, Diagnostic};
-use crate::sema::error::SemaError;
+use crate::sema::error::{ModuleError, SemaError};
 use crate::sema::hir::{self, ModuleId};
 use crate::sema::{self, SourceModule};
 use crate::source::{FileId, SourceMap, Span};
@@ -231,10 +231,13 @@ impl Loader<'_> {
         let file = self.sources.add(name.clone(), path.clone(), text);
         let ast = match bad {
             Some(at) => {
-                self.errors.push(SemaError::InvalidUtf8 {
-                    file,
-                    offset: at as u32,
-                });
+                self.errors.push(
+                    ModuleError::InvalidUtf8 {
+                        file,
+                        offset: at as u32,
+                    }
+                    .into(),
+                );
                 syntax::ast::Module {
                     file,
                     ..Default::default()
@@ -266,11 +269,14 @@ impl Loader<'_> {
     /// A file that could not be read, as an empty module whose name says so (for the diagnostic).
     fn unreadable(&mut self, name: String, reason: String) {
         let file: FileId = self.sources.add(name.clone(), None, String::new());
-        self.errors.push(SemaError::Unreadable {
-            span: Span::new(file, 0, 0),
-            path: name,
-            reason,
-        });
+        self.errors.push(
+            ModuleError::Unreadable {
+                span: Span::new(file, 0, 0),
+                path: name,
+                reason,
+            }
+            .into(),
+        );
     }
 
     /// Loads `path` once (by canonical path).
@@ -394,11 +400,14 @@ impl Loader<'_> {
                 .cloned()
                 .or_else(|| default_generated(path));
             let Some(text) = text else {
-                self.errors.push(SemaError::ImportNotFound {
-                    span,
-                    path: path.to_string(),
-                    close: Vec::new(),
-                });
+                self.errors.push(
+                    ModuleError::ImportNotFound {
+                        span,
+                        path: path.to_string(),
+                        close: Vec::new(),
+                    }
+                    .into(),
+                );
                 return None;
             };
             let id = self.add(path.to_string(), None, text.into_bytes());
@@ -425,21 +434,27 @@ impl Loader<'_> {
         };
         if !file.is_file() {
             let close = close_files(&file);
-            self.errors.push(SemaError::ImportNotFound {
-                span,
-                path: path.to_string(),
-                close,
-            });
+            self.errors.push(
+                ModuleError::ImportNotFound {
+                    span,
+                    path: path.to_string(),
+                    close,
+                }
+                .into(),
+            );
             return None;
         }
         match self.load_file(name, &file) {
             Ok(id) => Some(id),
             Err(e) => {
-                self.errors.push(SemaError::Unreadable {
-                    span,
-                    path: path.to_string(),
-                    reason: e.to_string(),
-                });
+                self.errors.push(
+                    ModuleError::Unreadable {
+                        span,
+                        path: path.to_string(),
+                        reason: e.to_string(),
+                    }
+                    .into(),
+                );
                 None
             }
         }
@@ -472,7 +487,8 @@ impl Loader<'_> {
                                     .map(|(x, _)| self.modules[*x].name.clone())
                                     .collect();
                                 chain.push(self.modules[t].name.clone());
-                                self.errors.push(SemaError::ImportCycle { span, chain });
+                                self.errors
+                                    .push(ModuleError::ImportCycle { span, chain }.into());
                             }
                             _ => {}
                         }

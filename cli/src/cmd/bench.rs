@@ -25,20 +25,19 @@
 //! are one `error:` line and exit code 1 (2 for usage errors), found before the long renders
 //! where possible; nothing here panics on user input.
 
-use super::render::{fail, render_failure, warn, BvhPreset, Size};
+use super::render::{fail, render_failure, warn};
 use super::Context;
-use crate::args::{AssetArgs, MessageFormat};
+use crate::args::{AdapterArgs, AssetArgs, BvhArgs, BvhPreset, MessageFormat, SceneArgs};
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::kernel::{compile_scene_with, CompiledScene, KernelOptions};
 use rtc_compiler::link::LinkOptions;
 use rtc_runtime::bvh_view::sah_cost;
-use rtc_runtime::gpu::{AdapterChoice, Gpu};
+use rtc_runtime::gpu::Gpu;
 use rtc_runtime::image_out::{compare, read_image};
 use rtc_runtime::render::{RenderError, RenderOptions, RenderResult, Renderer};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-use std::str::FromStr;
 
 /// The reference's sample count when neither `--reference` nor `--reference-spp` is given.
 pub const DEFAULT_REFERENCE_SPP: u32 = 1024;
@@ -64,18 +63,15 @@ pub struct Args {
         value_parser = crate::args::parse_spp
     )]
     pub spp_list: Vec<u32>,
-    /// Image size instead of the scene's `width` and `height`, as `WIDTHxHEIGHT`.
-    #[arg(long, value_name = "WxH")]
-    pub size: Option<Size>,
-    /// Which scene to render when the file declares several.
-    #[arg(long, value_name = "NAME")]
-    pub scene: Option<String>,
-    /// The GPU (as for `rtc render`).
-    #[arg(long, value_name = "CHOICE", default_value = "auto")]
-    pub adapter: String,
-    /// BVH builder preset of the measured renders.
-    #[arg(long, value_enum, default_value_t = BvhPreset::Fast)]
-    pub bvh: BvhPreset,
+    /// Which scene, and its image size.
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// The GPU.
+    #[command(flatten)]
+    pub adapter: AdapterArgs,
+    /// The BVH builder.
+    #[command(flatten)]
+    pub bvh: BvhArgs,
     /// Write the table as CSV.
     #[arg(long, value_name = "FILE")]
     pub csv: Option<PathBuf>,
@@ -244,9 +240,9 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             return report::usage_error(&e, ctx.color);
         }
     }
-    let choice = match AdapterChoice::from_str(&args.adapter) {
+    let choice = match args.adapter.choice() {
         Ok(c) => c,
-        Err(e) => return report::usage_error(&e.to_string(), ctx.color),
+        Err(e) => return report::usage_error(&e, ctx.color),
     };
     let roots = match args.assets.roots() {
         Ok(r) => r,
@@ -275,7 +271,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
 
     let compiled = match compile(
         &args.path,
-        args.scene.as_deref(),
+        args.scene.name.as_deref(),
         &KernelOptions::default(),
         ctx,
         "bench",
@@ -290,8 +286,8 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     };
     term::print(&format!("adapter: {}\n", gpu.description()));
     let base = RenderOptions {
-        size: args.size.map(|s| [s.width, s.height]),
-        bvh: args.bvh.into(),
+        size: args.scene.image_size(),
+        bvh: args.bvh.preset.into(),
         asset_roots: roots,
         ..RenderOptions::default()
     };

@@ -19,19 +19,18 @@
 //! input.
 
 use super::bench::{compile, print_warnings};
-use super::render::{fail, output_format, render_failure, warn, write_image, BvhPreset, Size};
+use super::render::{fail, output_format, render_failure, warn, write_image};
 use super::Context;
-use crate::args::AssetArgs;
+use crate::args::{AdapterArgs, AssetArgs, BvhArgs, SceneArgs, SppArgs};
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::kernel::{CompiledScene, DebugMode, KernelOptions};
 use rtc_runtime::bvh_view::{
     collect_boxes, heatmap, level_colour_name, overlay, wireframe, CameraRays, HeatStats, Levels,
 };
-use rtc_runtime::gpu::{AdapterChoice, Gpu};
+use rtc_runtime::gpu::Gpu;
 use rtc_runtime::render::{RenderError, RenderOptions, Renderer};
 use std::path::PathBuf;
-use std::str::FromStr;
 
 /// The most boxes one picture draws (the drawing tests each box against each pixel's ray).
 const MAX_BOXES: usize = 8192;
@@ -63,21 +62,18 @@ pub struct Args {
     /// Line width of the box edges, pixels.
     #[arg(long, value_name = "PX", default_value_t = 1.5)]
     pub line_width: f32,
-    /// Samples per pixel of the render under the boxes (default: the scene's).
-    #[arg(long, value_name = "N", value_parser = crate::args::parse_spp)]
-    pub spp: Option<u32>,
-    /// Image size instead of the scene's, as `WIDTHxHEIGHT`.
-    #[arg(long, value_name = "WxH")]
-    pub size: Option<Size>,
-    /// Which scene to draw when the file declares several.
-    #[arg(long, value_name = "NAME")]
-    pub scene: Option<String>,
-    /// The GPU (as for `rtc render`).
-    #[arg(long, value_name = "CHOICE", default_value = "auto")]
-    pub adapter: String,
-    /// BVH builder preset.
-    #[arg(long, value_enum, default_value_t = BvhPreset::Fast)]
-    pub bvh: BvhPreset,
+    /// Which scene, and its image size.
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// Samples per pixel.
+    #[command(flatten)]
+    pub spp: SppArgs,
+    /// The GPU.
+    #[command(flatten)]
+    pub adapter: AdapterArgs,
+    /// The BVH builder.
+    #[command(flatten)]
+    pub bvh: BvhArgs,
     /// Where else the scene's assets may come from.
     #[command(flatten)]
     pub assets: AssetArgs,
@@ -103,16 +99,16 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             ctx.color,
         );
     }
-    let choice = match AdapterChoice::from_str(&args.adapter) {
+    let choice = match args.adapter.choice() {
         Ok(c) => c,
-        Err(e) => return report::usage_error(&e.to_string(), ctx.color),
+        Err(e) => return report::usage_error(&e, ctx.color),
     };
     let roots = match args.assets.roots() {
         Ok(r) => r,
         Err(e) => return report::usage_error(&e, ctx.color),
     };
     let debug = |mode| KernelOptions { debug: Some(mode) };
-    let scene = args.scene.as_deref();
+    let scene = args.scene.name.as_deref();
     let normal = match compile(&args.path, scene, &KernelOptions::default(), ctx, "draw") {
         Ok(c) => c,
         Err(exit) => return exit,
@@ -124,9 +120,9 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     };
     term::print(&format!("adapter: {}\n", gpu.description()));
     let options = RenderOptions {
-        size: args.size.map(|s| [s.width, s.height]),
-        samples: args.spp,
-        bvh: args.bvh.into(),
+        size: args.scene.image_size(),
+        samples: args.spp.samples,
+        bvh: args.bvh.preset.into(),
         asset_roots: roots,
         ..RenderOptions::default()
     };

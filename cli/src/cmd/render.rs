@@ -19,17 +19,15 @@
 pub mod model;
 
 use super::Context;
-use crate::args::{AssetArgs, MessageFormat};
+use crate::args::{AdapterArgs, AssetArgs, BvhArgs, MessageFormat, SceneArgs, SppArgs};
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::kernel::compile_scene;
 use rtc_compiler::link::LinkOptions;
-use rtc_compiler::sema::scenes::MAX_IMAGE_SIDE;
-use rtc_runtime::gpu::{AdapterChoice, Gpu};
+use rtc_runtime::gpu::Gpu;
 use rtc_runtime::image_out::{write_exr, write_png, ToneMap};
-use rtc_runtime::render::{BuildPreset, RenderError, RenderOptions, RenderStats, Renderer};
+use rtc_runtime::render::{RenderError, RenderOptions, RenderStats, Renderer};
 use std::path::{Path, PathBuf};
-use std::str::FromStr;
 
 /// More tiles than this get a progress bar.
 const PROGRESS_MIN_TILES: u64 = 4;
@@ -44,73 +42,21 @@ pub struct Args {
     /// The image to write: `.png` (8-bit sRGB, values clipped to 1) or `.exr` (linear float).
     #[arg(short, long, value_name = "FILE")]
     pub output: PathBuf,
-    /// Image size instead of the scene's `width` and `height`, as `WIDTHxHEIGHT`.
-    #[arg(long, value_name = "WxH")]
-    pub size: Option<Size>,
-    /// Samples per pixel instead of the scene's `samples`.
-    #[arg(long, value_name = "N", value_parser = crate::args::parse_spp)]
-    pub spp: Option<u32>,
-    /// Which scene to render when the file declares several.
-    #[arg(long, value_name = "NAME")]
-    pub scene: Option<String>,
-    /// The GPU: `auto`, `cpu`, a backend (`vulkan`, `metal`, `dx12`, `gl`) and/or part of the
-    /// adapter's name, comma-separated (e.g. `gl,llvmpipe`).
-    #[arg(long, value_name = "CHOICE", default_value = "auto")]
-    pub adapter: String,
-    /// BVH builder preset: `fast` builds quickly; `quality` traces faster on large triangles.
-    #[arg(long, value_enum, default_value_t = BvhPreset::Fast)]
-    pub bvh: BvhPreset,
+    /// Which scene, and its image size.
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// Samples per pixel.
+    #[command(flatten)]
+    pub spp: SppArgs,
+    /// The GPU.
+    #[command(flatten)]
+    pub adapter: AdapterArgs,
+    /// The BVH builder.
+    #[command(flatten)]
+    pub bvh: BvhArgs,
     /// Where else the scene's assets may come from.
     #[command(flatten)]
     pub assets: AssetArgs,
-}
-
-/// `--bvh`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum BvhPreset {
-    /// Binned SAH.
-    Fast,
-    /// Finer binning and spatial splits.
-    Quality,
-}
-
-impl From<BvhPreset> for BuildPreset {
-    fn from(p: BvhPreset) -> Self {
-        match p {
-            BvhPreset::Fast => BuildPreset::Fast,
-            BvhPreset::Quality => BuildPreset::Quality,
-        }
-    }
-}
-
-/// `--size WxH`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Size {
-    /// Width in pixels.
-    pub width: u32,
-    /// Height in pixels.
-    pub height: u32,
-}
-
-impl FromStr for Size {
-    type Err = String;
-
-    fn from_str(text: &str) -> Result<Size, String> {
-        let bad = || format!("`{text}` is not a size; write WIDTHxHEIGHT, e.g. 640x480");
-        let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
-        let parse = |s: &str| {
-            s.trim()
-                .parse::<u32>()
-                .ok()
-                .filter(|&n| (1..=MAX_IMAGE_SIDE).contains(&n))
-        };
-        match (parse(w), parse(h)) {
-            (Some(width), Some(height)) => Ok(Size { width, height }),
-            _ => Err(format!(
-                "`{text}`: width and height must be whole numbers from 1 to {MAX_IMAGE_SIDE}"
-            )),
-        }
-    }
 }
 
 /// The output formats, by extension.
@@ -146,9 +92,9 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     if let Err(e) = crate::args::check_output_path(&args.output, "the image") {
         return report::usage_error(&e, ctx.color);
     }
-    let choice = match AdapterChoice::from_str(&args.adapter) {
+    let choice = match args.adapter.choice() {
         Ok(c) => c,
-        Err(e) => return report::usage_error(&e.to_string(), ctx.color),
+        Err(e) => return report::usage_error(&e, ctx.color),
     };
     let roots = match args.assets.roots() {
         Ok(r) => r,
@@ -157,7 +103,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
 
     // A bare glTF file: render a scene written for it, saying which defaults it got.
     let synth = if model::is_model(&args.path) {
-        if args.scene.is_some() {
+        if args.scene.name.is_some() {
             return report::usage_error(
                 "--scene chooses among the scenes of a .rt file; a glTF file has one",
                 ctx.color,
@@ -179,7 +125,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
 
     let compiled = match compile_scene(
         std::slice::from_ref(scene_path),
-        args.scene.as_deref(),
+        args.scene.name.as_deref(),
         &ctx.options,
         &LinkOptions::default(),
     ) {
@@ -224,9 +170,9 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         None => roots,
     };
     let options = RenderOptions {
-        size: args.size.map(|s| [s.width, s.height]),
-        samples: args.spp,
-        bvh: args.bvh.into(),
+        size: args.scene.image_size(),
+        samples: args.spp.samples,
+        bvh: args.bvh.preset.into(),
         asset_roots,
         ..RenderOptions::default()
     };
@@ -386,24 +332,6 @@ pub fn render_failure(e: &RenderError, sources: &rtc_compiler::SourceMap, ctx: &
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn sizes_parse_and_bad_ones_say_why() {
-        assert_eq!(
-            "640x480".parse::<Size>(),
-            Ok(Size {
-                width: 640,
-                height: 480
-            })
-        );
-        assert_eq!(
-            "2X3".parse::<Size>().map(|s| (s.width, s.height)),
-            Ok((2, 3))
-        );
-        assert!("640".parse::<Size>().unwrap_err().contains("WIDTHxHEIGHT"));
-        assert!("0x5".parse::<Size>().unwrap_err().contains("1 to 16384"));
-        assert!("axb".parse::<Size>().is_err());
-    }
 
     #[test]
     fn output_formats_by_extension() {

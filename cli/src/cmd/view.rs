@@ -26,21 +26,20 @@
 
 mod present;
 
-use super::render::{output_format, write_image, Format, Size};
+use super::render::{output_format, write_image, Format};
 use super::watch::{describe, update_dirs, Session, Status};
 use super::Context;
-use crate::args::AssetArgs;
+use crate::args::{AdapterArgs, AssetArgs, SceneArgs, SppArgs};
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::kernel::CompiledScene;
 use rtc_compiler::sema::hir::{ConstValue, Scalar};
 use rtc_runtime::assets::AssetRoots;
-use rtc_runtime::gpu::{AdapterChoice, Gpu};
+use rtc_runtime::gpu::Gpu;
 use rtc_runtime::image_out::{srgb_to_linear, LinearImage};
 use rtc_runtime::render::{RenderOptions, Renderer};
 use std::collections::BTreeSet;
 use std::path::PathBuf;
-use std::str::FromStr;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 use winit::application::ApplicationHandler;
@@ -55,18 +54,15 @@ pub struct Args {
     /// The scene file (its imports and assets are watched and reloaded).
     #[arg(value_name = "SCENE.rt")]
     pub path: PathBuf,
-    /// Image size instead of the scene's `width` and `height`, as `WIDTHxHEIGHT`.
-    #[arg(long, value_name = "WxH")]
-    pub size: Option<Size>,
-    /// Samples per pixel to refine to, instead of the scene's `samples`.
-    #[arg(long, value_name = "N", value_parser = crate::args::parse_spp)]
-    pub spp: Option<u32>,
-    /// Which scene, when the file declares several.
-    #[arg(long, value_name = "NAME")]
-    pub scene: Option<String>,
-    /// The GPU that renders (as for `rtc render`).
-    #[arg(long, value_name = "CHOICE", default_value = "auto")]
-    pub adapter: String,
+    /// Which scene, and its image size.
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// Samples per pixel.
+    #[command(flatten)]
+    pub spp: SppArgs,
+    /// The GPU.
+    #[command(flatten)]
+    pub adapter: AdapterArgs,
     /// Write the image shown to this `.png` or `.exr` after every frame (for tests).
     #[arg(long, value_name = "FILE", hide = true)]
     pub screenshot: Option<PathBuf>,
@@ -302,7 +298,7 @@ impl App<'_> {
 
     /// The scene's own sample count (or `--spp`).
     fn wanted_spp(&self) -> u32 {
-        self.args.spp.unwrap_or_else(|| {
+        self.args.spp.samples.unwrap_or_else(|| {
             self.session
                 .last()
                 .and_then(|c| {
@@ -346,7 +342,7 @@ impl App<'_> {
             write_orbit(compiled, orbit);
         }
         let options = RenderOptions {
-            size: self.args.size.map(|s| [s.width, s.height]),
+            size: self.args.scene.image_size(),
             samples: Some(spp),
             // Checked to be folders in `run`.
             asset_roots: AssetRoots::new(self.args.assets.asset_roots.iter().cloned()),
@@ -445,8 +441,8 @@ impl ApplicationHandler<UserEvent> for App<'_> {
         if self.window.is_some() {
             return;
         }
-        let [w, h] = match (self.args.size, self.session.last()) {
-            (Some(s), _) => [s.width, s.height],
+        let [w, h] = match (self.args.scene.image_size(), self.session.last()) {
+            (Some(s), _) => s,
             (None, Some(c)) => c
                 .checked
                 .program
@@ -631,9 +627,9 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             return report::usage_error(&e, ctx.color);
         }
     }
-    let choice = match AdapterChoice::from_str(&args.adapter) {
+    let choice = match args.adapter.choice() {
         Ok(c) => c,
-        Err(e) => return report::usage_error(&e.to_string(), ctx.color),
+        Err(e) => return report::usage_error(&e, ctx.color),
     };
     // The roots are made again for each render (`App::render`); here they are only checked.
     if let Err(e) = args.assets.roots() {
@@ -650,7 +646,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     }
     let mut session = Session::new(
         &args.path,
-        args.scene.clone(),
+        args.scene.name.clone(),
         &ctx.options,
         Vec::new(),
         None,

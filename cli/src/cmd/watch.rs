@@ -26,9 +26,9 @@
 //! (with an error line), not the watch.
 
 use super::compile::{parse_target, write_outputs, OutputError};
-use super::render::{output_format, write_image, Format, Size};
+use super::render::{output_format, write_image, Format};
 use super::Context;
-use crate::args::AssetArgs;
+use crate::args::{AdapterArgs, AssetArgs, SceneArgs, SppArgs};
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::back::Target;
@@ -44,7 +44,6 @@ use rtc_runtime::gpu::{AdapterChoice, Gpu};
 use rtc_runtime::render::{RenderOptions, Renderer};
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
-use std::str::FromStr;
 use std::sync::mpsc;
 use std::sync::Arc;
 use std::time::{Duration, Instant, SystemTime};
@@ -58,24 +57,22 @@ pub struct Args {
     /// Output folder of the kernel code and `manifest.json` (created if missing).
     #[arg(long, default_value = "out", value_name = "DIR")]
     pub out: PathBuf,
-    /// Also render a preview to this `.png` or `.exr` after every good build.
+    /// Also render a preview to this `.png` or `.exr` after every good build (`--size`, `--spp`
+    /// and `--adapter` apply to it).
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
     /// Targets, comma-separated: wgsl, spirv, hlsl, msl, glsl (default: all).
     #[arg(long, value_delimiter = ',', value_parser = parse_target)]
     pub target: Vec<Target>,
-    /// Preview size instead of the scene's `width` and `height`, as `WIDTHxHEIGHT`.
-    #[arg(long, value_name = "WxH")]
-    pub size: Option<Size>,
-    /// Preview samples per pixel instead of the scene's `samples`.
-    #[arg(long, value_name = "N", value_parser = crate::args::parse_spp)]
-    pub spp: Option<u32>,
-    /// Which scene, when the file declares several.
-    #[arg(long, value_name = "NAME")]
-    pub scene: Option<String>,
-    /// The GPU of the preview (as for `rtc render`).
-    #[arg(long, value_name = "CHOICE", default_value = "auto")]
-    pub adapter: String,
+    /// Which scene, and its image size.
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// Samples per pixel.
+    #[command(flatten)]
+    pub spp: SppArgs,
+    /// The GPU.
+    #[command(flatten)]
+    pub adapter: AdapterArgs,
     /// A reload starts once no file event came for this long.
     #[arg(long, value_name = "MS", default_value_t = 15, value_parser = clap::value_parser!(u64).range(0..=60_000))]
     pub debounce_ms: u64,
@@ -721,15 +718,15 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             if let Err(e) = crate::args::check_output_path(path, "the preview") {
                 return report::usage_error(&e, ctx.color);
             }
-            let adapter = match AdapterChoice::from_str(&args.adapter) {
+            let adapter = match args.adapter.choice() {
                 Ok(c) => c,
-                Err(e) => return report::usage_error(&e.to_string(), ctx.color),
+                Err(e) => return report::usage_error(&e, ctx.color),
             };
             Some(Preview {
                 path: path.clone(),
                 format,
-                size: args.size.map(|s| [s.width, s.height]),
-                samples: args.spp,
+                size: args.scene.image_size(),
+                samples: args.spp.samples,
                 adapter,
                 asset_roots,
             })
@@ -748,7 +745,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     };
     let mut session = Session::new(
         &args.path,
-        args.scene.clone(),
+        args.scene.name.clone(),
         &ctx.options,
         targets,
         Some(args.out.clone()),

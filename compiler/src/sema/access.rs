@@ -5,7 +5,7 @@
 //! after E0307/E0407/E0408; a constant index is checked against the length (E0406); a swizzle of one
 //! component has the scalar type.
 
-use super::error::{NameKind, SemaError};
+use super::error::{ExprError, NameError, NameKind};
 use super::expr::{parse_swizzle, Checker};
 use super::hir::{ConstValue, ExprId, ExprKind};
 use super::types::{ScalarKind, Type, TypeTable};
@@ -42,7 +42,7 @@ impl<'a> Checker<'_, 'a> {
                         )
                         .map(str::to_string);
                         let decl = Some(st.span);
-                        self.err(SemaError::UnknownField {
+                        self.err(NameError::UnknownField {
                             span: field.span,
                             ty,
                             field: field.name.clone(),
@@ -67,7 +67,7 @@ impl<'a> Checker<'_, 'a> {
                     )
                 }
                 None => {
-                    self.err(SemaError::BadSwizzle {
+                    self.err(ExprError::BadSwizzle {
                         span: field.span,
                         ty,
                         swizzle: field.name.clone(),
@@ -76,7 +76,7 @@ impl<'a> Checker<'_, 'a> {
                 }
             },
             _ => {
-                self.err(SemaError::UnknownField {
+                self.err(NameError::UnknownField {
                     span: field.span,
                     ty,
                     field: field.name.clone(),
@@ -103,7 +103,7 @@ impl<'a> Checker<'_, 'a> {
                 u32::from(cols),
             ),
             _ => {
-                self.err(SemaError::NotIndexable {
+                self.err(ExprError::NotIndexable {
                     span: self.span(b),
                     ty: bt,
                 });
@@ -124,7 +124,7 @@ impl<'a> Checker<'_, 'a> {
                 _ => 0,
             };
             if idx < 0 || idx >= i64::from(len) {
-                self.err(SemaError::IndexOutOfRange {
+                self.err(ExprError::IndexOutOfRange {
                     span: self.span(i),
                     index: idx,
                     len,
@@ -155,7 +155,7 @@ impl<'a> Checker<'_, 'a> {
                     _ => None,
                 };
                 match kind {
-                    Some(kind) => self.err(SemaError::NotAStruct {
+                    Some(kind) => self.err(NameError::NotAStruct {
                         span: name.span,
                         name: name.name.clone(),
                         kind,
@@ -186,7 +186,7 @@ impl<'a> Checker<'_, 'a> {
                     suggest::closest(&f.name.name, st.fields.iter().map(|x| x.name.as_str()))
                         .map(str::to_string);
                 let decl = Some(st.span);
-                self.err(SemaError::UnknownField {
+                self.err(NameError::UnknownField {
                     span: f.name.span,
                     ty,
                     field: f.name.name.clone(),
@@ -203,7 +203,7 @@ impl<'a> Checker<'_, 'a> {
                 ok = false;
             }
             if let Some((_, first)) = given[i] {
-                self.err(SemaError::DuplicateField {
+                self.err(ExprError::DuplicateField {
                     span: f.name.span,
                     first,
                     name: f.name.name.clone(),
@@ -228,7 +228,7 @@ impl<'a> Checker<'_, 'a> {
         }
         if !missing.is_empty() {
             let decl = self.cx.p.structs[s].span;
-            self.err(SemaError::MissingFields {
+            self.err(ExprError::MissingFields {
                 span: name.span.to(span),
                 ty,
                 missing,

@@ -7,7 +7,7 @@
 //! more and has the error type.
 
 use super::builtins::{self, Builtin, Resolution};
-use super::error::{CtorError, NameKind, SemaError};
+use super::error::{CtorError, ExprError, NameError, NameKind};
 use super::expr::{is_abstract, Checker, Hint, Mode};
 use super::hir::{ConstValue, ExprId, ExprKind, FnId, Scalar};
 use super::types::{ScalarKind, Type, TypeId, TypeTable};
@@ -67,7 +67,7 @@ impl<'a> Checker<'_, 'a> {
                 let l = *l;
                 self.use_local(l);
             }
-            self.err(SemaError::NotCallable {
+            self.err(ExprError::NotCallable {
                 span: func.span,
                 name: func.name.clone(),
                 kind: NameKind::Local,
@@ -79,7 +79,7 @@ impl<'a> Checker<'_, 'a> {
             Found::Def(Def::Fn(f)) => self.user_call(f, func, generics, args, span),
             Found::Def(Def::Struct(s)) => {
                 let ty = self.cx.p.types.intern(Type::Struct(s));
-                self.err(SemaError::BadConstructor {
+                self.err(ExprError::BadConstructor {
                     span: func.span,
                     ty,
                     reason: CtorError::Struct,
@@ -92,7 +92,7 @@ impl<'a> Checker<'_, 'a> {
                 } else {
                     NameKind::Scene
                 };
-                self.err(SemaError::NotCallable {
+                self.err(ExprError::NotCallable {
                     span: func.span,
                     name: func.name.clone(),
                     kind,
@@ -114,7 +114,7 @@ impl<'a> Checker<'_, 'a> {
     }
 
     fn bad_generics(&mut self, func: &ast::Ident, expected: &'static str) {
-        self.err(SemaError::BadGenerics {
+        self.err(NameError::BadGenerics {
             span: func.span,
             name: func.name.clone(),
             expected,
@@ -145,7 +145,7 @@ impl<'a> Checker<'_, 'a> {
             });
         }
         if args.len() != params.len() {
-            self.err(SemaError::Arity {
+            self.err(ExprError::Arity {
                 span,
                 name: func.name.clone(),
                 expected: vec![params.len()],
@@ -172,7 +172,7 @@ impl<'a> Checker<'_, 'a> {
             builtins::literal_hint(b, n, i, known, &ck.cx.p.types)
         });
         if b.info().allowed == builtins::Allowed::SceneOnly && self.mode != Mode::Scene {
-            self.err(SemaError::SceneOnly {
+            self.err(ExprError::SceneOnly {
                 span: func.span,
                 func: b,
             });
@@ -203,7 +203,7 @@ impl<'a> Checker<'_, 'a> {
                     b.info().overloads.iter().map(|o| o.params.len()).collect();
                 expected.sort_unstable();
                 expected.dedup();
-                self.err(SemaError::Arity {
+                self.err(ExprError::Arity {
                     span,
                     name: func.name.clone(),
                     expected,
@@ -213,7 +213,7 @@ impl<'a> Checker<'_, 'a> {
                 self.error_expr(span)
             }
             Resolution::NoMatch => {
-                self.err(SemaError::NoOverload {
+                self.err(ExprError::NoOverload {
                     span,
                     func: b,
                     args: tys,
@@ -224,7 +224,7 @@ impl<'a> Checker<'_, 'a> {
     }
 
     fn ctor_error(&mut self, span: Span, ty: TypeId, reason: CtorError) -> ExprId {
-        self.err(SemaError::BadConstructor { span, ty, reason });
+        self.err(ExprError::BadConstructor { span, ty, reason });
         self.error_expr(span)
     }
 

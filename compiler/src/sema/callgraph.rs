@@ -14,7 +14,7 @@
 
 use super::builtins::Builtin;
 use super::consteval::{self, Env};
-use super::error::{SemaError, Unbounded};
+use super::error::{CallGraphError, ProgramError, Unbounded};
 use super::hir::{Block, Body, ExprId, ExprKind, FnId, ProgramKind, StmtKind};
 use super::stmt::const_trip_count;
 use super::{ix, Ctx};
@@ -83,7 +83,7 @@ fn order_and_cycles(cx: &mut Ctx, edges: &[Vec<(FnId, Span)>]) -> Vec<FnId> {
                             .map(|(x, _)| cx.p.functions[fn_id(*x)].name.clone())
                             .collect();
                         cycle.push(cx.p.functions[callee].name.clone());
-                        cx.err(SemaError::Recursion {
+                        cx.err(CallGraphError::Recursion {
                             span,
                             cycle,
                             what: "function",
@@ -152,7 +152,7 @@ fn visit_intrinsics(
             .map(|(x, _)| cx.p.functions[fn_id(*x)].name.clone())
             .collect();
         let program = cx.p.functions[root].span;
-        cx.err(SemaError::IntrinsicNotAllowed {
+        cx.err(ProgramError::IntrinsicNotAllowed {
             span,
             func: b,
             kind,
@@ -335,7 +335,7 @@ fn spawn_bounds(cx: &mut Ctx, order: &[FnId]) {
         let program = cx.p.functions[entry.func].name.clone();
         for &(span, why, loop_span) in &info.sites {
             if reported.insert(span) {
-                cx.errors.push(SemaError::UnboundedSpawn {
+                cx.err(CallGraphError::UnboundedSpawn {
                     span,
                     why,
                     loop_span,

@@ -14,7 +14,7 @@
 //! - A scalar operand of a vector operator is wrapped in an explicit [`ExprKind::Splat`].
 
 use super::consteval::{self, EvalError};
-use super::error::{NameKind, SemaError};
+use super::error::{ExprError, LimitError, NameError, NameKind, SemaError};
 use super::hir::{
     BinaryOp, Body, ConstValue, ExprId, ExprKind, Literal, LocalId, LocalKind, ModuleId, UnaryOp,
 };
@@ -324,7 +324,7 @@ impl<'c, 'a> Checker<'c, 'a> {
         self.alloc(ExprKind::Error, TypeTable::ERROR, span)
     }
 
-    pub fn err(&mut self, e: SemaError) {
+    pub fn err(&mut self, e: impl Into<SemaError>) {
         self.cx.err(e);
     }
 
@@ -347,7 +347,7 @@ impl<'c, 'a> Checker<'c, 'a> {
             return true;
         }
         let span = self.span(id);
-        self.err(SemaError::Mismatch {
+        self.err(ExprError::Mismatch {
             span,
             expected: ty,
             found,
@@ -376,7 +376,7 @@ impl<'c, 'a> Checker<'c, 'a> {
                 ConstValue::Error
             }
             Err(EvalError::TooLarge { span, scalars }) => {
-                self.err(SemaError::ConstTooLarge { span, scalars });
+                self.err(LimitError::ConstTooLarge { span, scalars });
                 ConstValue::Error
             }
             Err(EvalError::NotConst { span, what }) => {
@@ -384,7 +384,7 @@ impl<'c, 'a> Checker<'c, 'a> {
                     Mode::Const(c) => c,
                     _ => "a scene value",
                 };
-                self.err(SemaError::NotConst {
+                self.err(ExprError::NotConst {
                     span,
                     what,
                     context,
@@ -452,7 +452,7 @@ impl<'c, 'a> Checker<'c, 'a> {
     /// A literal, negated if `neg` (`-1` is one literal, so `-2147483648` fits `i32`).
     fn literal(&mut self, lit: &ast::Literal, neg: bool, hint: Hint, span: Span) -> ExprId {
         let out_of_range = |ck: &mut Self, ty: TypeId| {
-            ck.err(SemaError::LiteralRange { span, ty });
+            ck.err(ExprError::LiteralRange { span, ty });
             ck.error_expr(span)
         };
         match lit {
@@ -461,7 +461,7 @@ impl<'c, 'a> Checker<'c, 'a> {
             }
             ast::Literal::String(s) => {
                 if self.mode != Mode::Scene {
-                    self.err(SemaError::TypeNotAllowed {
+                    self.err(ExprError::TypeNotAllowed {
                         span,
                         ty: TypeTable::STRING,
                         context: "outside scenes (strings are only asset paths)",
@@ -551,7 +551,7 @@ impl<'c, 'a> Checker<'c, 'a> {
             Found::None | Found::Ambiguous(_) => {
                 if let Some((_, def)) = self.later.iter().find(|(n, _)| *n == ident.name) {
                     let def = *def;
-                    self.err(SemaError::DefinedLater {
+                    self.err(NameError::DefinedLater {
                         span,
                         name: ident.name.clone(),
                         def,
@@ -567,7 +567,7 @@ impl<'c, 'a> Checker<'c, 'a> {
                 return self.error_expr(span);
             }
         };
-        self.err(SemaError::NotAValue {
+        self.err(NameError::NotAValue {
             span,
             name: ident.name.clone(),
             kind,
@@ -600,7 +600,7 @@ impl<'c, 'a> Checker<'c, 'a> {
             _ => false,
         };
         if !ok {
-            self.err(SemaError::BadUnary {
+            self.err(ExprError::BadUnary {
                 span,
                 op: op.as_str(),
                 ty,
@@ -694,7 +694,7 @@ impl<'c, 'a> Checker<'c, 'a> {
             }
             None => {
                 let (lhs_span, rhs_span) = (self.span(l), self.span(r));
-                self.err(SemaError::BadOperands {
+                self.err(ExprError::BadOperands {
                     span,
                     op: op.as_str(),
                     lhs: lt,

@@ -9,7 +9,7 @@
 //! - Lookups never allocate on success; suggestions are computed only when a name is missing.
 
 use super::consteval::EvalError;
-use super::error::{NameKind, SemaError};
+use super::error::{CallGraphError, ExprError, LimitError, NameError, NameKind};
 use super::expr::{Checker, Mode};
 use super::hir::{self, ConstValue, Field, ModuleId, StructId};
 use super::types::{ScalarKind, Type, TypeId, TypeTable};
@@ -110,7 +110,7 @@ pub(crate) fn collect(cx: &mut Ctx) {
                 ast::ItemKind::Error => continue,
             };
             if let Some((_, first)) = scope.items.get(name.name.as_str()) {
-                cx.errors.push(SemaError::Duplicate {
+                cx.err(NameError::Duplicate {
                     span: name.span,
                     first: *first,
                     name: name.name.clone(),
@@ -271,7 +271,7 @@ impl<'a> Ctx<'a> {
     pub fn report_lookup(&mut self, module: ModuleId, ident: &ast::Ident, found: Found) {
         match found {
             Found::Ambiguous([(m1, s1), (m2, s2)]) => {
-                let err = SemaError::Ambiguous {
+                let err = NameError::Ambiguous {
                     span: ident.span,
                     name: ident.name.clone(),
                     modules: [
@@ -294,7 +294,7 @@ impl<'a> Ctx<'a> {
             .iter()
             .position(|s| s.items.contains_key(ident.name.as_str()))
             .map(|m| self.src[m].name.clone());
-        self.err(SemaError::Undefined {
+        self.err(NameError::Undefined {
             span: ident.span,
             name: ident.name.clone(),
             suggestion,
@@ -323,7 +323,7 @@ impl<'a> Ctx<'a> {
                     Def::Const(_) => NameKind::Const,
                     _ => NameKind::Scene,
                 };
-                self.err(SemaError::NotAType {
+                self.err(NameError::NotAType {
                     span: name.span,
                     name: name.name.clone(),
                     kind,
@@ -331,7 +331,7 @@ impl<'a> Ctx<'a> {
                 TypeTable::ERROR
             }
             Found::Builtin(_) | Found::Type(TypeCtor::Bitcast) => {
-                self.err(SemaError::NotAType {
+                self.err(NameError::NotAType {
                     span: name.span,
                     name: name.name.clone(),
                     kind: NameKind::Builtin,
@@ -347,7 +347,7 @@ impl<'a> Ctx<'a> {
     }
 
     fn bad_generics(&mut self, span: Span, name: &str, expected: &'static str) {
-        self.err(SemaError::BadGenerics {
+        self.err(NameError::BadGenerics {
             span,
             name: name.to_string(),
             expected,
@@ -466,7 +466,7 @@ impl<'a> Ctx<'a> {
                     _ => {
                         let ty = self.resolve_type(module, *t);
                         if !TypeTable::is_error(ty) {
-                            self.err(SemaError::BadArraySize {
+                            self.err(ExprError::BadArraySize {
                                 span: te.span,
                                 found: ty,
                                 value: None,
@@ -485,7 +485,7 @@ impl<'a> Ctx<'a> {
                     Ok(v) => (span, ty, v),
                     Err(EvalError::Silent) => return None,
                     Err(EvalError::TooLarge { span, scalars }) => {
-                        ck.err(SemaError::ConstTooLarge { span, scalars });
+                        ck.err(LimitError::ConstTooLarge { span, scalars });
                         return None;
                     }
                     Err(EvalError::NotConst { .. } | EvalError::NonFinite { .. }) => {
@@ -505,7 +505,7 @@ impl<'a> Ctx<'a> {
         match v {
             Some(n) if n > 0 => Some(n as u32),
             _ => {
-                self.err(SemaError::BadArraySize {
+                self.err(ExprError::BadArraySize {
                     span,
                     found: ty,
                     value: v,
@@ -527,7 +527,7 @@ impl<'a> Ctx<'a> {
         for f in &decl.fields {
             if let Some(first) = fields.iter().find(|x| x.name == f.name.name) {
                 let first = first.span;
-                self.err(SemaError::Duplicate {
+                self.err(NameError::Duplicate {
                     span: f.name.span,
                     first,
                     name: f.name.name.clone(),
@@ -549,7 +549,7 @@ impl<'a> Ctx<'a> {
         let bytes = self.type_size(ty);
         if bytes > super::sizes::MAX_TYPE_BYTES {
             let span = self.p.structs[s].span;
-            self.err(SemaError::TypeTooLarge { span, ty, bytes });
+            self.err(LimitError::TypeTooLarge { span, ty, bytes });
         }
     }
 
@@ -566,7 +566,7 @@ impl<'a> Ctx<'a> {
                     .map(|x| self.p.consts[*x].name.clone())
                     .collect();
                 cycle.push(self.p.consts[c].name.clone());
-                self.err(SemaError::Recursion {
+                self.err(CallGraphError::Recursion {
                     span: use_span,
                     cycle,
                     what: "constant",
@@ -607,7 +607,7 @@ impl<'a> Ctx<'a> {
             State::Done => return true,
             State::InProgress => {
                 let name = self.p.structs[s].name.clone();
-                self.err(SemaError::Recursion {
+                self.err(CallGraphError::Recursion {
                     span: use_span,
                     cycle: vec![name.clone(), name],
                     what: "struct",
@@ -640,7 +640,7 @@ impl<'a> Ctx<'a> {
     /// E0413 for `string` outside scenes.
     pub fn forbid_string(&mut self, ty: TypeId, span: Span) {
         if self.contains_string(ty) {
-            self.err(SemaError::TypeNotAllowed {
+            self.err(ExprError::TypeNotAllowed {
                 span,
                 ty,
                 context: "outside scenes (strings are only asset paths)",
@@ -717,7 +717,7 @@ fn containment_dfs(cx: &mut Ctx, s: StructId, state: &mut [State], stack: &mut V
                     .map(|x| cx.p.structs[*x].name.clone())
                     .collect();
                 cycle.push(cx.p.structs[inner].name.clone());
-                cx.err(SemaError::Recursion {
+                cx.err(CallGraphError::Recursion {
                     span,
                     cycle,
                     what: "struct",
@@ -779,7 +779,7 @@ impl Ctx<'_> {
                 .iter()
                 .find(|q| q.name.name == p.name.name)
             {
-                self.err(SemaError::Duplicate {
+                self.err(NameError::Duplicate {
                     span: p.name.span,
                     first: first.name.span,
                     name: p.name.name.clone(),

@@ -21,7 +21,7 @@
 //! types and functions.
 //!
 //! Invariant: an expression of the error type never produces a further diagnostic; every diagnostic
-//! comes from a [`error::SemaError`] rendered in `error.rs`.
+//! comes from a [`error::SemaError`] rendered in `error/`.
 
 mod access;
 pub mod builtins;
@@ -156,8 +156,8 @@ pub(crate) fn ix<T>(id: Idx<T>) -> usize {
 }
 
 impl<'a> Ctx<'a> {
-    pub fn err(&mut self, e: SemaError) {
-        self.errors.push(e);
+    pub fn err(&mut self, e: impl Into<SemaError>) {
+        self.errors.push(e.into());
     }
 
     pub fn module_ast(&self, m: ModuleId) -> &'a ast::Module {

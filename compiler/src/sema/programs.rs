@@ -10,7 +10,7 @@
 //! Invariant: a [`ProgramEntry`] is recorded only for a program whose signature is exactly right, so
 //! lowering can rely on the parameter and return types of every entry.
 
-use super::error::{AttrArgError, SemaError};
+use super::error::{AttrArgError, ProgramError};
 use super::expr::{Checker, Mode};
 use super::hir::{self, ConstValue, FnId, ProgramEntry, ProgramKind, Role, Scalar, StructId};
 use super::types::{ScalarKind, Type, TypeId, TypeTable};
@@ -34,7 +34,7 @@ pub(crate) fn check_attributes(cx: &mut Ctx) {
         for (f, fd) in cx.p.structs[id].fields.clone().iter().zip(&decl.fields) {
             if !storable(&cx.p, f.ty) {
                 let span = cx.module_ast(module).types[fd.ty].span;
-                cx.err(SemaError::NotStorable {
+                cx.err(ProgramError::NotStorable {
                     span,
                     ty: f.ty,
                     role,
@@ -68,7 +68,7 @@ fn misplaced(cx: &mut Ctx, a: &ast::Attribute, item: &'static str, hint: Option<
     if !is_known_attr(&a.name.name) {
         return; // the parser reported it (E0203)
     }
-    cx.err(SemaError::MisplacedAttribute {
+    cx.err(ProgramError::MisplacedAttribute {
         span: a.span,
         attr: a.name.name.clone(),
         item,
@@ -78,7 +78,7 @@ fn misplaced(cx: &mut Ctx, a: &ast::Attribute, item: &'static str, hint: Option<
 
 fn no_args(cx: &mut Ctx, a: &ast::Attribute) {
     if let Some(arg) = a.args.first() {
-        cx.err(SemaError::BadAttributeArg {
+        cx.err(ProgramError::BadAttributeArg {
             span: arg.span,
             attr: a.name.name.clone(),
             reason: AttrArgError::NoArgs,
@@ -93,7 +93,7 @@ fn struct_attrs(cx: &mut Ctx, id: StructId, item: &ast::Item) {
             Some(role) => {
                 no_args(cx, a);
                 match first {
-                    Some(f) => cx.err(SemaError::TwoRoles {
+                    Some(f) => cx.err(ProgramError::TwoRoles {
                         span: a.span,
                         first: f,
                     }),
@@ -152,7 +152,7 @@ fn samples_arg(cx: &mut Ctx, module: hir::ModuleId, a: &ast::Attribute) -> u32 {
         match &arg.name {
             Some(n) if n.name == "samples" => {}
             Some(n) => {
-                cx.err(SemaError::BadAttributeArg {
+                cx.err(ProgramError::BadAttributeArg {
                     span: n.span,
                     attr: a.name.name.clone(),
                     reason: AttrArgError::Unknown(n.name.clone()),
@@ -160,7 +160,7 @@ fn samples_arg(cx: &mut Ctx, module: hir::ModuleId, a: &ast::Attribute) -> u32 {
                 continue;
             }
             None => {
-                cx.err(SemaError::BadAttributeArg {
+                cx.err(ProgramError::BadAttributeArg {
                     span: arg.span,
                     attr: a.name.name.clone(),
                     reason: AttrArgError::Samples,
@@ -177,7 +177,7 @@ fn samples_arg(cx: &mut Ctx, module: hir::ModuleId, a: &ast::Attribute) -> u32 {
             ConstValue::Error if TypeTable::is_error(ty) => {}
             _ => {
                 let span = cx.module_ast(module).exprs[arg.value].span;
-                cx.err(SemaError::BadAttributeArg {
+                cx.err(ProgramError::BadAttributeArg {
                     span,
                     attr: a.name.name.clone(),
                     reason: AttrArgError::Samples,
@@ -265,7 +265,7 @@ fn check_signature(
         Some(_) => {
             let t = first.unwrap_or(TypeTable::ERROR);
             let found_role = cx.p.struct_of(t).and_then(|s| cx.p.structs[s].role);
-            cx.err(SemaError::NotRoleStruct {
+            cx.err(ProgramError::NotRoleStruct {
                 span: ast.types[decl.params[0].ty].span,
                 kind,
                 found: t,
@@ -297,7 +297,7 @@ fn check_signature(
     };
     let (Some(s), Some(alt)) = (struct_id, matched) else {
         let found = render_signature(cx, decl, &params, ret);
-        cx.err(SemaError::Signature {
+        cx.err(ProgramError::Signature {
             span: decl.name.span,
             kind,
             struct_name,
@@ -308,7 +308,7 @@ fn check_signature(
     if let Some(prev) = cx.p.structs[s].program(kind) {
         let first = cx.p.functions[prev].span;
         let ty = cx.p.types.intern(Type::Struct(s));
-        cx.err(SemaError::DuplicateProgram {
+        cx.err(ProgramError::DuplicateProgram {
             span: decl.name.span,
             first,
             kind,

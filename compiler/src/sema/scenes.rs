@@ -9,7 +9,7 @@
 //! instances of structs of the right role with every field evaluated; settings are in range; object
 //! names are unique; the camera is present unless a `model` is expected to bring one.
 
-use super::error::{Expected, SemaError};
+use super::error::{Expected, ExprError, SceneError};
 use super::expr::{Binding, Checker, Mode};
 use super::hir::{
     ConstValue, Geometry, Instance, Model, Object, Program, Role, SceneChoiceError, SceneDesc,
@@ -51,7 +51,7 @@ pub(crate) fn check_scenes(cx: &mut Ctx) {
 fn once(ck: &mut Checker, slot: &mut Option<Span>, span: Span, what: &str) -> bool {
     match slot {
         Some(first) => {
-            ck.err(SemaError::DuplicateEntry {
+            ck.err(SceneError::DuplicateEntry {
                 span,
                 first: *first,
                 what: what.to_string(),
@@ -138,7 +138,7 @@ fn check_scene<'a>(
             ast::SceneEntryKind::Object { name, fields } => {
                 if let Some(n) = name {
                     match names.iter().find(|(x, _)| *x == n.name) {
-                        Some((_, first)) => ck.err(SemaError::DuplicateEntry {
+                        Some((_, first)) => ck.err(SceneError::DuplicateEntry {
                             span: n.span,
                             first: *first,
                             what: format!("object `{}`", n.name),
@@ -193,7 +193,7 @@ fn check_scene<'a>(
         }
     }
     if camera.is_none() && desc.models.is_empty() {
-        ck.err(SemaError::MissingEntry {
+        ck.err(SceneError::MissingEntry {
             span: decl.name.span,
             what: "camera",
             place: format!("scene `{}`", decl.name.name),
@@ -223,7 +223,7 @@ fn known_fields_counting<'a>(
     let mut unknown = false;
     for f in fields {
         if !known.contains(&f.name.name.as_str()) {
-            ck.err(SemaError::UnknownEntry {
+            ck.err(SceneError::UnknownEntry {
                 span: f.name.span,
                 name: f.name.name.clone(),
                 place,
@@ -234,7 +234,7 @@ fn known_fields_counting<'a>(
             continue;
         }
         if let Some(first) = out.iter().find(|x| x.name.name == f.name.name) {
-            ck.err(SemaError::DuplicateField {
+            ck.err(ExprError::DuplicateField {
                 span: f.name.span,
                 first: first.name.span,
                 name: f.name.name.clone(),
@@ -279,7 +279,7 @@ fn check_settings(ck: &mut Checker, fields: &[ast::FieldInit]) -> (Settings, Opt
         };
         if v < lo || v > hi {
             let span = ck.span(id);
-            ck.err(SemaError::SettingRange {
+            ck.err(SceneError::SettingRange {
                 span,
                 key,
                 value: v,
@@ -306,7 +306,7 @@ fn instance(ck: &mut Checker, e: ast::ExprId, role: Role) -> Option<Instance> {
     let found_role = ck.cx.p.struct_of(ty).and_then(|s| ck.cx.p.structs[s].role);
     if found_role != Some(role) {
         let span = ck.span(id);
-        ck.err(SemaError::WrongRole {
+        ck.err(SceneError::WrongRole {
             span,
             expected: Expected::Role(role),
             found: ty,
@@ -373,7 +373,7 @@ fn object(
     for (has, what) in [(has_geometry, "geometry"), (has_material, "material")] {
         // After a misspelt field, the missing one is most likely that typo: say it once.
         if !has && !typo {
-            ck.err(SemaError::MissingEntry {
+            ck.err(SceneError::MissingEntry {
                 span: at,
                 what,
                 place: place.clone(),
@@ -404,7 +404,7 @@ fn geometry_value(ck: &mut Checker, e: ast::ExprId) -> Option<Geometry> {
         }
         _ => {
             let found_role = ck.cx.p.struct_of(ty).and_then(|s| ck.cx.p.structs[s].role);
-            ck.err(SemaError::WrongRole {
+            ck.err(SceneError::WrongRole {
                 span,
                 expected: Expected::Geometry,
                 found: ty,

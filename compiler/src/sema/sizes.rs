@@ -106,7 +106,7 @@ impl Ctx<'_> {
         let ty = self.p.types.intern(Type::Array { elem, len });
         let bytes = self.type_size(ty);
         if bytes > MAX_TYPE_BYTES {
-            self.err(super::error::SemaError::TypeTooLarge { span, ty, bytes });
+            self.err(super::error::LimitError::TypeTooLarge { span, ty, bytes });
             return false;
         }
         true
@@ -161,13 +161,13 @@ pub(crate) fn private_memory(cx: &mut Ctx, order: &[FnId], calls: &[Vec<(FnId, S
         }
         let function = cx.p.functions[f].name.clone();
         errors.push(match (crossing, worst) {
-            (Some((span, bytes)), _) => super::error::SemaError::PrivateMemory {
+            (Some((span, bytes)), _) => super::error::LimitError::PrivateMemory {
                 span,
                 function,
                 bytes,
                 callee: None,
             },
-            (None, Some((c, span, t))) => super::error::SemaError::PrivateMemory {
+            (None, Some((c, span, t))) => super::error::LimitError::PrivateMemory {
                 span,
                 function,
                 bytes: total[i],
@@ -176,5 +176,5 @@ pub(crate) fn private_memory(cx: &mut Ctx, order: &[FnId], calls: &[Vec<(FnId, S
             (None, None) => continue,
         });
     }
-    cx.errors.extend(errors);
+    cx.errors.extend(errors.into_iter().map(Into::into));
 }

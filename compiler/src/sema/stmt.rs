@@ -11,7 +11,7 @@
 //! Invariant: parameters and locals live in the function's [`Body`](crate::sema::hir::Body); a local is in scope from the
 //! statement after its declaration to the end of its block.
 
-use super::error::SemaError;
+use super::error::{ExprError, StmtError, Warning};
 use super::expr::{binary_type, is_abstract, Binding, Checker, Mode, Splat};
 use super::hir::{self, BinaryOp, ExprId, ExprKind, FnId, LocalId, LocalKind, Stmt, StmtKind};
 use super::types::{TypeId, TypeTable};
@@ -47,7 +47,7 @@ pub(crate) fn check_bodies(cx: &mut Ctx) {
         if !flow.returns && ret != TypeTable::VOID && !TypeTable::is_error(ret) {
             let end = decl.body.span.end();
             let end = Span::new(end.file, end.lo.saturating_sub(1), end.hi);
-            ck.err(SemaError::MissingReturn {
+            ck.err(StmtError::MissingReturn {
                 span: decl.name.span,
                 ret,
                 end,
@@ -95,7 +95,7 @@ impl<'a> Checker<'_, 'a> {
                 && !l.name.starts_with('_')
                 && !TypeTable::is_error(l.ty)
             {
-                warns.push(SemaError::UnusedVariable {
+                warns.push(Warning::UnusedVariable {
                     span: l.span,
                     name: l.name.clone(),
                 });
@@ -115,7 +115,7 @@ impl<'a> Checker<'_, 'a> {
         for s in &b.stmts {
             if let (Some(c), false) = (cause, warned) {
                 if !matches!(s.kind, ast::StmtKind::Error) {
-                    self.err(SemaError::Unreachable {
+                    self.err(Warning::Unreachable {
                         span: s.span,
                         cause: c,
                     });
@@ -164,7 +164,7 @@ impl<'a> Checker<'_, 'a> {
         };
         if ty == TypeTable::VOID {
             let span = v.map(|v| self.span(v)).unwrap_or_default();
-            self.err(SemaError::TypeNotAllowed {
+            self.err(ExprError::TypeNotAllowed {
                 span,
                 ty,
                 context: "as a value (the function returns nothing)",
@@ -196,7 +196,7 @@ impl<'a> Checker<'_, 'a> {
                 let ty = self.ty(id);
                 let is_call = matches!(self.ast.exprs[*e].kind, ast::ExprKind::Call { .. });
                 if !is_call && ty != TypeTable::VOID && !TypeTable::is_error(ty) {
-                    self.err(SemaError::UnusedValue {
+                    self.err(Warning::UnusedValue {
                         span: self.span(id),
                     });
                 }
@@ -259,7 +259,7 @@ impl<'a> Checker<'_, 'a> {
                 let is_break = matches!(s.kind, ast::StmtKind::Break);
                 match self.loops.last_mut() {
                     Some(b) => *b |= is_break,
-                    None => self.err(SemaError::OutsideLoop {
+                    None => self.err(StmtError::OutsideLoop {
                         span: s.span,
                         keyword: if is_break { "break" } else { "continue" },
                     }),
@@ -282,7 +282,7 @@ impl<'a> Checker<'_, 'a> {
                 let value = match (v, ret == TypeTable::VOID) {
                     (Some(v), true) => {
                         let id = self.expr(*v, None);
-                        self.err(SemaError::ReturnMismatch {
+                        self.err(StmtError::ReturnMismatch {
                             span: self.span(id),
                             expected: None,
                         });
@@ -291,7 +291,7 @@ impl<'a> Checker<'_, 'a> {
                     (Some(v), false) => Some(self.expect(*v, ret)),
                     (None, false) => {
                         if !TypeTable::is_error(ret) {
-                            self.err(SemaError::ReturnMismatch {
+                            self.err(StmtError::ReturnMismatch {
                                 span: s.span,
                                 expected: Some(ret),
                             });
@@ -322,7 +322,7 @@ impl<'a> Checker<'_, 'a> {
         let id = self.expr(e, None);
         let ty = self.ty(id);
         if ty != TypeTable::BOOL && !TypeTable::is_error(ty) {
-            self.err(SemaError::ConditionNotBool {
+            self.err(StmtError::ConditionNotBool {
                 span: self.span(id),
                 found: ty,
             });
@@ -357,7 +357,7 @@ impl<'a> Checker<'_, 'a> {
             st
         } else {
             if !TypeTable::is_error(st) && !TypeTable::is_error(et) {
-                self.err(SemaError::BadRange {
+                self.err(StmtError::BadRange {
                     span: self.span(s).to(self.span(e)),
                     start: st,
                     end: et,
@@ -414,7 +414,7 @@ impl<'a> Checker<'_, 'a> {
                 }
                 let local = &self.body.locals[l];
                 if local.kind != LocalKind::Var {
-                    let err = SemaError::AssignImmutable {
+                    let err = StmtError::AssignImmutable {
                         span: pspan,
                         name: local.name.clone(),
                         kind: Some(local.kind),
@@ -426,7 +426,7 @@ impl<'a> Checker<'_, 'a> {
             Ok(None) => {}
             Err(NotPlace::Const(c)) => {
                 let k = &self.cx.p.consts[c];
-                let err = SemaError::AssignImmutable {
+                let err = StmtError::AssignImmutable {
                     span: pspan,
                     name: k.name.clone(),
                     kind: None,
@@ -434,11 +434,11 @@ impl<'a> Checker<'_, 'a> {
                 };
                 self.err(err);
             }
-            Err(NotPlace::Multi) => self.err(SemaError::BadAssignTarget {
+            Err(NotPlace::Multi) => self.err(StmtError::BadAssignTarget {
                 span: pspan,
                 multi_swizzle: true,
             }),
-            Err(NotPlace::Other) => self.err(SemaError::BadAssignTarget {
+            Err(NotPlace::Other) => self.err(StmtError::BadAssignTarget {
                 span: pspan,
                 multi_swizzle: false,
             }),
@@ -456,7 +456,7 @@ impl<'a> Checker<'_, 'a> {
                     Some((ty, Splat::Rhs)) if ty == pt => v = self.splat(v, pt),
                     _ => {
                         let rhs_span = self.span(v);
-                        self.err(SemaError::BadOperands {
+                        self.err(ExprError::BadOperands {
                             span,
                             op: compound_str(op),
                             lhs: pt,

@@ -1,16 +1,17 @@
-//! Rendering the errors of modules, imports, names, types and expressions (E0108, E03xx, E04xx).
+//! Rendering the errors of modules and imports ([`ModuleError`]: E0108, E0301, E0302), of names
+//! ([`NameError`]: E0203, E0303–E0307, E0413) and of types and expressions ([`ExprError`]: E04xx),
+//! one exhaustive match per group.
 
-use super::{err, list, CtorError, NameKind, SemaError, R};
+use super::{err, list, CtorError, ExprError, ModuleError, NameError, NameKind, R};
 use crate::diag::{codes, Diagnostic};
 use crate::sema::builtins;
 use crate::sema::consteval::NotConst;
 use crate::sema::types::{ScalarKind, Type, TypeId};
 use crate::source::Span;
 
-impl SemaError {
-    #[allow(clippy::too_many_lines)]
-    pub(super) fn render(&self, r: &R) -> Diagnostic {
-        use SemaError as E;
+impl ModuleError {
+    pub(super) fn render(&self) -> Diagnostic {
+        use ModuleError as E;
         match self {
             E::InvalidUtf8 { file, offset } => err(
                 codes::E0108,
@@ -44,6 +45,14 @@ impl SemaError {
                 .with_label("this import closes a cycle")
                 .with_note(format!("the imports form a cycle: {}", chain.join(" → ")))
                 .with_help("move what both modules need into a third module that both import"),
+        }
+    }
+}
+
+impl NameError {
+    pub(super) fn render(&self, r: &R) -> Diagnostic {
+        use NameError as E;
+        match self {
             E::UnknownAttribute { span, name } => {
                 err(codes::E0203, format!("unknown attribute `@{name}`"), *span).with_help(
                     "the attributes are the struct roles `@camera`, `@geometry`, `@material`, \
@@ -117,7 +126,7 @@ impl SemaError {
                     NameKind::Function | NameKind::Builtin => {
                         d.with_note("functions are not values; call it with `(…)`")
                     }
-                    _ => d,
+                    NameKind::Type | NameKind::Const | NameKind::Local | NameKind::Scene => d,
                 }
             }
             E::NotAType { span, name, kind } => err(
@@ -163,6 +172,14 @@ impl SemaError {
                     None => d,
                 }
             }
+        }
+    }
+}
+
+impl ExprError {
+    pub(super) fn render(&self, r: &R) -> Diagnostic {
+        use ExprError as E;
+        match self {
             E::Mismatch {
                 span,
                 expected,
@@ -379,7 +396,6 @@ impl SemaError {
                 *span,
             )
             .with_label("called here"),
-            _ => self.render_rest(r),
         }
     }
 }

@@ -6,12 +6,18 @@
 //! which renders types through the program's type table and reads source snippets for help lines such
 //! as "convert with `f32(b)`".
 //!
-//! Layout: this file holds the error types and the shared rendering helpers; [`expressions`] renders
-//! the errors of modules, names, types and expressions (E01xx–E04xx), [`programs`] those of statements,
-//! programs, scenes and the call graph, and the warnings.
+//! Layout: [`SemaError`] has one variant per group of errors, each group an enum of its own
+//! ([`ModuleError`], [`NameError`], [`ExprError`], [`StmtError`], [`ProgramError`], [`SceneError`],
+//! [`CallGraphError`], [`LimitError`], [`Warning`]) with a `From` impl, so a check reports
+//! `cx.err(ExprError::Mismatch { … })`. This file holds the types, the shared rendering helpers and
+//! the match over the groups; [`expressions`] renders the groups of modules, names and expressions
+//! (E0108–E04xx), [`programs`] those of statements, programs, scenes, the call graph and the static
+//! limits, and the warnings.
 //!
-//! Invariant: every variant maps to exactly one code of `diag::codes`; an error variant is never
-//! created for an operand of the error type (the checker suppresses cascades before it gets here).
+//! Invariants: every variant maps to exactly one code of `diag::codes`; every match from an error
+//! variant to its rendering is exhaustive, with no catch-all arm, so a new variant does not compile
+//! until it is rendered; an error variant is never created for an operand of the error type (the
+//! checker suppresses cascades before it gets here).
 
 mod expressions;
 mod programs;
@@ -122,11 +128,10 @@ pub enum Expected {
     Geometry,
 }
 
-/// An error or warning of loading or semantic analysis.
+/// An error of loading a module: reading a file or following its imports (E0108, E0301, E0302).
 #[derive(Clone, Debug, PartialEq)]
 #[allow(missing_docs)]
-pub enum SemaError {
-    // ---- modules ----
+pub enum ModuleError {
     InvalidUtf8 {
         file: FileId,
         offset: u32,
@@ -145,7 +150,12 @@ pub enum SemaError {
         span: Span,
         chain: Vec<String>,
     },
-    // ---- names ----
+}
+
+/// An error of name resolution: attributes, scopes, imports, generics and fields (E0203, E0303–E0307, E0413).
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub enum NameError {
     UnknownAttribute {
         span: Span,
         name: String,
@@ -199,7 +209,12 @@ pub enum SemaError {
         suggestion: Option<String>,
         decl: Option<Span>,
     },
-    // ---- types and expressions ----
+}
+
+/// An error of typing an expression (E04xx).
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub enum ExprError {
     Mismatch {
         span: Span,
         expected: TypeId,
@@ -289,7 +304,12 @@ pub enum SemaError {
         name: String,
         kind: NameKind,
     },
-    // ---- statements ----
+}
+
+/// An error of a statement (E0205, E05xx).
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub enum StmtError {
     AssignImmutable {
         span: Span,
         name: String,
@@ -322,7 +342,12 @@ pub enum SemaError {
         start: TypeId,
         end: TypeId,
     },
-    // ---- programs ----
+}
+
+/// An error of a program or a role struct declaration (E06xx).
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub enum ProgramError {
     Signature {
         span: Span,
         kind: ProgramKind,
@@ -368,7 +393,12 @@ pub enum SemaError {
         span: Span,
         first: Span,
     },
-    // ---- scenes ----
+}
+
+/// An error of a scene (E0701–E0705).
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub enum SceneError {
     UnknownEntry {
         span: Span,
         name: String,
@@ -398,7 +428,12 @@ pub enum SemaError {
         first: Span,
         what: String,
     },
-    // ---- call graph ----
+}
+
+/// An error found on the call graph: recursion and unbounded spawns (E0801, E0802).
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub enum CallGraphError {
     Recursion {
         span: Span,
         cycle: Vec<String>,
@@ -410,13 +445,14 @@ pub enum SemaError {
         loop_span: Span,
         program: String,
     },
-    // ---- static limits ----
+}
+
+/// A static size limit exceeded (E0803–E0805).
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub enum LimitError {
     /// A type larger than [`crate::sema::sizes::MAX_TYPE_BYTES`].
-    TypeTooLarge {
-        span: Span,
-        ty: TypeId,
-        bytes: u64,
-    },
+    TypeTooLarge { span: Span, ty: TypeId, bytes: u64 },
     /// Aggregate locals (with those of the callees, deepest chain) over the private-memory budget.
     PrivateMemory {
         /// The local that crosses the budget, or the call that does.
@@ -427,25 +463,66 @@ pub enum SemaError {
         callee: Option<(String, u64)>,
     },
     /// A constant value with more scalars than [`crate::sema::consteval::MAX_CONST_SCALARS`].
-    ConstTooLarge {
-        span: Span,
-        scalars: u64,
-    },
-    // ---- warnings ----
-    UnusedVariable {
-        span: Span,
-        name: String,
-    },
-    UnusedValue {
-        span: Span,
-    },
-    Unreachable {
-        span: Span,
-        cause: Span,
-    },
+    ConstTooLarge { span: Span, scalars: u64 },
+}
+
+/// A warning of semantic analysis (W0001–W0003).
+#[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)]
+pub enum Warning {
+    UnusedVariable { span: Span, name: String },
+    UnusedValue { span: Span },
+    Unreachable { span: Span, cause: Span },
+}
+
+/// An error or warning of loading or semantic analysis: one variant per group, each group an enum
+/// with its own exhaustive rendering.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SemaError {
+    /// An error of loading a module: reading a file or following its imports (E0108, E0301, E0302).
+    Module(ModuleError),
+    /// An error of name resolution: attributes, scopes, imports, generics and fields (E0203, E0303–E0307, E0413).
+    Name(NameError),
+    /// An error of typing an expression (E04xx).
+    Expr(ExprError),
+    /// An error of a statement (E0205, E05xx).
+    Stmt(StmtError),
+    /// An error of a program or a role struct declaration (E06xx).
+    Program(ProgramError),
+    /// An error of a scene (E0701–E0705).
+    Scene(SceneError),
+    /// An error found on the call graph: recursion and unbounded spawns (E0801, E0802).
+    CallGraph(CallGraphError),
+    /// A static size limit exceeded (E0803–E0805).
+    Limit(LimitError),
+    /// A warning of semantic analysis (W0001–W0003).
+    Warning(Warning),
     /// A diagnostic built where it was found (the scene value checks of `sema::limits`), error or
     /// warning by its severity.
     Built(Box<crate::diag::Diagnostic>),
+}
+
+/// `impl From<Group> for SemaError`, so that a check writes `cx.err(ExprError::Mismatch { … })`.
+macro_rules! from_group {
+    ($($group:ident => $variant:ident),* $(,)?) => {$(
+        impl From<$group> for SemaError {
+            fn from(e: $group) -> Self {
+                SemaError::$variant(e)
+            }
+        }
+    )*};
+}
+
+from_group! {
+    ModuleError => Module,
+    NameError => Name,
+    ExprError => Expr,
+    StmtError => Stmt,
+    ProgramError => Program,
+    SceneError => Scene,
+    CallGraphError => CallGraph,
+    LimitError => Limit,
+    Warning => Warning,
 }
 
 pub(super) fn list(items: &[String]) -> String {
@@ -551,19 +628,34 @@ impl SemaError {
     /// Whether this is a warning.
     pub fn is_warning(&self) -> bool {
         match self {
+            SemaError::Warning(_) => true,
             SemaError::Built(d) => !d.is_error(),
-            _ => matches!(
-                self,
-                SemaError::UnusedVariable { .. }
-                    | SemaError::UnusedValue { .. }
-                    | SemaError::Unreachable { .. }
-            ),
+            SemaError::Module(_)
+            | SemaError::Name(_)
+            | SemaError::Expr(_)
+            | SemaError::Stmt(_)
+            | SemaError::Program(_)
+            | SemaError::Scene(_)
+            | SemaError::CallGraph(_)
+            | SemaError::Limit(_) => false,
         }
     }
 
-    /// The diagnostic shown to the user.
+    /// The diagnostic shown to the user: each group renders its own variants, with one exhaustive
+    /// match per group and no catch-all, so a new variant does not compile until it has a rendering.
     pub fn to_diagnostic(&self, p: &Program, src: &SourceMap) -> Diagnostic {
-        let r = R { p, src };
-        self.render(&r)
+        let r = &R { p, src };
+        match self {
+            SemaError::Module(e) => e.render(),
+            SemaError::Name(e) => e.render(r),
+            SemaError::Expr(e) => e.render(r),
+            SemaError::Stmt(e) => e.render(r),
+            SemaError::Program(e) => e.render(r),
+            SemaError::Scene(e) => e.render(r),
+            SemaError::CallGraph(e) => e.render(),
+            SemaError::Limit(e) => e.render(r),
+            SemaError::Warning(e) => e.render(),
+            SemaError::Built(d) => (**d).clone(),
+        }
     }
 }

@@ -1,17 +1,21 @@
-//! Rendering the errors of statements, programs, scenes and the call graph (E05xx–E08xx), the
-//! warnings, and the scene choice (E0706).
+//! Rendering the errors of statements ([`StmtError`]: E0205, E05xx), programs ([`ProgramError`]:
+//! E06xx), scenes ([`SceneError`]: E0701–E0705), the call graph ([`CallGraphError`]: E0801, E0802)
+//! and the static limits ([`LimitError`]: E0803–E0805), the warnings ([`Warning`]: W0001–W0003), and
+//! the scene choice (E0706); one exhaustive match per group.
 
-use super::{err, expected_signature, list, AttrArgError, Expected, SemaError, Unbounded, R};
+use super::{
+    err, expected_signature, list, AttrArgError, CallGraphError, Expected, LimitError,
+    ProgramError, SceneError, StmtError, Unbounded, Warning, R,
+};
 use crate::diag::{codes, Diagnostic};
 use crate::sema::builtins::Builtin;
 use crate::sema::hir::{LocalKind, ProgramKind};
 use crate::sema::types::{ScalarKind, Type};
 use crate::source::Span;
 
-impl SemaError {
-    #[allow(clippy::too_many_lines)]
-    pub(super) fn render_rest(&self, r: &R) -> Diagnostic {
-        use SemaError as E;
+impl StmtError {
+    pub(super) fn render(&self, r: &R) -> Diagnostic {
+        use StmtError as E;
         match self {
             E::AssignImmutable {
                 span,
@@ -22,7 +26,7 @@ impl SemaError {
                 let what = match kind {
                     Some(LocalKind::Param) => "parameter",
                     Some(LocalKind::For) => "loop variable",
-                    Some(_) => "immutable binding",
+                    Some(LocalKind::Let | LocalKind::Var) => "immutable binding",
                     None => "constant",
                 };
                 let d = err(
@@ -39,7 +43,7 @@ impl SemaError {
                     Some(LocalKind::Param) => d.with_help(format!(
                         "copy it into a variable first: `var {name}_ = {name};`"
                     )),
-                    _ => d,
+                    Some(LocalKind::Var | LocalKind::For) | None => d,
                 }
             }
             E::BadAssignTarget {
@@ -97,7 +101,7 @@ impl SemaError {
                         match k {
                             ScalarKind::F32 => "0.0",
                             ScalarKind::U32 => "0u",
-                            _ => "0",
+                            ScalarKind::I32 | ScalarKind::Bool => "0",
                         }
                     )),
                     Type::Vector {
@@ -117,6 +121,14 @@ impl SemaError {
                 *span,
             )
             .with_label("invalid range"),
+        }
+    }
+}
+
+impl ProgramError {
+    pub(super) fn render(&self, r: &R) -> Diagnostic {
+        use ProgramError as E;
+        match self {
             E::Signature {
                 span,
                 kind,
@@ -256,6 +268,14 @@ impl SemaError {
                     .with_label("second role")
                     .with_secondary(*first, "first role")
             }
+        }
+    }
+}
+
+impl SceneError {
+    pub(super) fn render(&self, r: &R) -> Diagnostic {
+        use SceneError as E;
+        match self {
             E::UnknownEntry {
                 span,
                 name,
@@ -309,6 +329,14 @@ impl SemaError {
                     .with_label("given again here")
                     .with_secondary(*first, "first given here")
             }
+        }
+    }
+}
+
+impl CallGraphError {
+    pub(super) fn render(&self) -> Diagnostic {
+        use CallGraphError as E;
+        match self {
             E::Recursion { span, cycle, what } => err(
                 codes::E0801,
                 format!(
@@ -351,6 +379,14 @@ impl SemaError {
                 .with_secondary(*loop_span, "this loop has no constant trip count")
                 .with_help("spawn in a `for` loop with constant bounds, e.g. `for i in 0u..4u`")
             }
+        }
+    }
+}
+
+impl LimitError {
+    pub(super) fn render(&self, r: &R) -> Diagnostic {
+        use LimitError as E;
+        match self {
             E::TypeTooLarge { span, ty, bytes } => err(
                 codes::E0803,
                 format!("the type {} is too large", r.ty(*ty)),
@@ -406,6 +442,14 @@ impl SemaError {
                 crate::sema::consteval::MAX_CONST_SCALARS
             ))
             .with_help("build large arrays in a function at run time instead of as a constant"),
+        }
+    }
+}
+
+impl Warning {
+    pub(super) fn render(&self) -> Diagnostic {
+        use Warning as E;
+        match self {
             E::UnusedVariable { span, name } => {
                 Diagnostic::warning(codes::W0001, format!("unused variable `{name}`"), *span)
                     .with_label("never read")
@@ -424,12 +468,6 @@ impl SemaError {
                     .with_label("never executed")
                     .with_secondary(*cause, "any code after this is unreachable")
             }
-            E::Built(d) => (**d).clone(),
-            _ => Diagnostic::error(
-                codes::ICE,
-                "internal compiler error: unrendered error",
-                Span::default(),
-            ),
         }
     }
 }
