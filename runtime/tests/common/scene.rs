@@ -197,3 +197,19 @@ pub fn exact(x: f32) -> String {
 pub fn exact_vec3f(v: [f32; 3]) -> String {
     format!("vec3f({}, {}, {})", exact(v[0]), exact(v[1]), exact(v[2]))
 }
+
+/// An `array<vec3f, N>(…)` of [`exact_vec3f`]s, one a line.
+pub fn exact_vec3f_array(vs: impl IntoIterator<Item = [f32; 3]>) -> String {
+    let items: Vec<String> = vs.into_iter().map(exact_vec3f).collect();
+    format!(
+        "array<vec3f, {}>(\n    {},\n)",
+        items.len(),
+        items.join(",\n    ")
+    )
+}
+
+/// An `array<f32, N>(…)` of [`exact`] literals.
+pub fn exact_f32_array(xs: impl IntoIterator<Item = f32>) -> String {
+    let items: Vec<String> = xs.into_iter().map(exact).collect();
+    format!("array<f32, {}>({})", items.len(), items.join(", "))
+}
