@@ -86,6 +86,12 @@ impl SceneFile {
         self
     }
 
+    /// Whether the file declares `const name: …` (tests that set a numbered family of constants
+    /// check where it ends).
+    pub fn declares(&self, name: &str) -> bool {
+        const_value_range(&self.text, name).is_some()
+    }
+
     /// The scene text, overrides applied.
     pub fn text(&self) -> &str {
         &self.text
@@ -196,6 +202,17 @@ pub fn exact(x: f32) -> String {
 /// A `vec3f(…)` of three [`exact`] literals.
 pub fn exact_vec3f(v: [f32; 3]) -> String {
     format!("vec3f({}, {}, {})", exact(v[0]), exact(v[1]), exact(v[2]))
+}
+
+/// A `Ray { … }` literal with exactly these floats.
+pub fn exact_ray(origin: [f32; 3], tmin: f32, dir: [f32; 3], tmax: f32) -> String {
+    format!(
+        "Ray {{ origin: {}, tmin: {}, dir: {}, tmax: {} }}",
+        exact_vec3f(origin),
+        exact(tmin),
+        exact_vec3f(dir),
+        exact(tmax)
+    )
 }
 
 /// An `array<vec3f, N>(…)` of [`exact_vec3f`]s, one a line.
