@@ -92,6 +92,16 @@ impl SceneFile {
         const_value_range(&self.text, name).is_some()
     }
 
+    /// The scene [`SceneFile::scene`] picked, if any.
+    pub fn scene_name(&self) -> Option<&str> {
+        self.scene.as_deref()
+    }
+
+    /// The file's path, for messages and source maps.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
     /// The scene text, overrides applied.
     pub fn text(&self) -> &str {
         &self.text
