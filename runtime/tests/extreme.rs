@@ -773,8 +773,6 @@ fn the_cornell_box_matches_at_every_translation_and_scale() {
 // triangles, tangent and nested spheres
 // ---------------------------------------------------------------------------------------------
 
-/// An `f32` literal with exactly these bits.
-
 /// `Probe::want`'s object when either object 0 or object 1 is right (a tie).
 const TIE_A_B: u32 = u32::MAX;
 

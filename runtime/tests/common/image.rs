@@ -102,8 +102,9 @@ impl PixelCheck {
             self.worst_rel = (rel, (x, y), channel);
         }
         let allowed = tol.allowed(want);
-        // Written so that a NaN on either side fails.
-        if !(diff <= allowed) {
+        // A NaN on either side fails.
+        let within = diff <= allowed;
+        if !within {
             self.over += 1;
             if self.misses.len() < LISTED {
                 self.misses.push(Miss {
