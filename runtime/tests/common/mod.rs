@@ -1,4 +1,5 @@
-//! The harness shared by the runtime's GPU test suites (each suite includes it with `mod common;`):
+//! The harness shared by the GPU test suites (each of `runtime/tests/` includes it with
+//! `mod common;`, `tests/examples.rs` with a `#[path]` to this file):
 //! the adapter ([`gpu_or_skip`]), a temporary folder per test ([`temp_dir`]), test scene files with
 //! constant overrides, compiled and rendered ([`scene`]), and image assertions ([`image`]).
 //!
