@@ -80,6 +80,9 @@ fn every_scene_folder_is_named_after_a_test_suite() {
         .expect("runtime/tests/scenes")
         .flatten()
     {
+        if !entry.path().is_dir() {
+            continue; // README.md
+        }
         let suite = entry.file_name().to_string_lossy().into_owned();
         assert!(
             tests.join(format!("{suite}.rs")).is_file(),
