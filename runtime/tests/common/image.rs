@@ -5,7 +5,8 @@
 //! [`PixelCheck`] collects every comparison, then [`PixelCheck::assert`] fails when more channels are
 //! over than allowed (none unless [`PixelCheck::allow_over`] says otherwise), and the message states
 //! the tolerance, how many channels were checked and over, the worst absolute and relative errors
-//! and where, and the first few failures with their values.
+//! (relative to `|want|`; the absolute error where `want` is 0) and where, and the first few
+//! failures with their values.
 
 use std::fmt::Write as _;
 
