@@ -33,13 +33,18 @@
 //!
 //! Every test skips only when there is no GPU adapter at all, and then says so on stderr.
 
+/// The GPU test harness the runtime's suites share (adapter, scene files, pixel checks).
+#[path = "../runtime/tests/common/mod.rs"]
+mod common;
+
+use common::gpu_or_skip;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use rtc_compiler::driver::{check_paths, Options};
 use rtc_compiler::kernel::compile_scene;
 use rtc_compiler::link::LinkOptions;
-use rtc_runtime::gpu::{AdapterChoice, AdapterError, Gpu};
+use rtc_runtime::gpu::Gpu;
 use rtc_runtime::image_out::{read_image, to_srgb8, write_png, ToneMap};
 use rtc_runtime::render::{RenderOptions, Renderer};
 use rtc_tests::paths::{display_relative, repo_root};
@@ -54,20 +59,6 @@ const MIN_PSNR_DB: f64 = 40.0;
 const OUTLIER_LEVELS: u8 = 16;
 /// Largest fraction of channels that may be outliers.
 const MAX_OUTLIER_FRACTION: f64 = 0.002;
-
-fn gpu_or_skip(test: &str) -> Option<Gpu> {
-    match Gpu::new(&AdapterChoice::default()) {
-        Ok(gpu) => {
-            eprintln!("{test}: running on {}", gpu.description());
-            Some(gpu)
-        }
-        Err(error @ AdapterError::NoAdapter { .. }) => {
-            eprintln!("SKIPPED {test}: no GPU adapter at all: {error}");
-            None
-        }
-        Err(error) => panic!("{test}: {error}"),
-    }
-}
 
 fn bless() -> bool {
     std::env::var_os("RTC_BLESS").is_some_and(|v| v != "0" && !v.is_empty())

@@ -2,9 +2,9 @@
 //! visualizer: per pixel, the BVH nodes a camera ray visits and the primitives it tests, and the
 //! camera rays themselves.
 //!
-//! The scene is five unit cubes (`cube_mesh()`, 12 triangles each) in a row along x, with a camera
-//! whose `@ray_generation` returns one hand-written ray per pixel (every float written as its exact
-//! bits). The expected counts come from a CPU copy of the kernel's traversal order (`intersect_scene`
+//! The scene (`scenes/debug/row.rt`) is five unit cubes (`cube_mesh()`, 12 triangles each) in a row
+//! along x, with a camera whose `@ray_generation` returns one hand-written ray per pixel from a
+//! constant table the test sets to [`RAYS`] (every float written as its exact bits). The expected counts come from a CPU copy of the kernel's traversal order (`intersect_scene`
 //! and `intersect_mesh` in `stdlib/kernel/trace.rt`, over the quantised mesh records of
 //! `rtc_bvh::quantized`: near child first, far child deferred, a
 //! deferred node visited when popped even if the closest hit lies before it) run over the
@@ -16,25 +16,14 @@
 
 mod common;
 
+use common::scene::{exact_f32_array, exact_vec3f_array, SceneFile};
 use common::{gpu_or_skip, temp_dir};
-use std::fmt::Write as _;
 
 use rtc_bvh::quantized::{Child, QuantizedBvh};
 use rtc_bvh::Aabb;
-use rtc_compiler::driver::Options;
-use rtc_compiler::kernel::{compile_scene_with, CompiledScene, DebugMode, KernelOptions};
-use rtc_compiler::link::LinkOptions;
+use rtc_compiler::kernel::{CompiledScene, DebugMode, KernelOptions};
 use rtc_runtime::render::{RenderOptions, Renderer};
 use rtc_runtime::scene::{Entities, GpuInstance};
-
-/// An `f32` literal with exactly these bits.
-fn lit(x: f32) -> String {
-    format!("bitcast<f32>(0x{:08x}u)", x.to_bits())
-}
-
-fn v3(v: [f32; 3]) -> String {
-    format!("vec3f({}, {}, {})", lit(v[0]), lit(v[1]), lit(v[2]))
-}
 
 /// `(origin, direction)` of each pixel's ray.
 const RAYS: [([f32; 3], [f32; 3]); 7] = [
@@ -57,72 +46,17 @@ const RAYS: [([f32; 3], [f32; 3]); 7] = [
 /// The x of each cube's centre (objects `c0` … `c4`).
 const CUBES: [f32; 5] = [0.0, 4.0, 8.0, 12.0, 16.0];
 
-fn scene_text() -> String {
-    let mut table = String::new();
-    for (i, (o, d)) in RAYS.iter().enumerate() {
-        let _ = writeln!(
-            table,
-            "    if pixel.y == 0u && pixel.x == {i}u {{ return Ray {{ origin: {}, dir: {} }}; }}",
-            v3(*o),
-            v3(*d)
-        );
-    }
-    let mut objects = String::new();
-    for (i, x) in CUBES.iter().enumerate() {
-        let _ = writeln!(
-            objects,
-            "    object c{i} {{ geometry: cube_mesh(), material: flat, transform: translate(vec3f({x:?}, 0.0, 0.0)) }}"
-        );
-    }
-    format!(
-        r#"
-/// Returns the test ray of `pixel.x`.
-@camera
-struct RayTable {{
-    unused: f32 = 0.0,
-}}
-
-@ray_generation
-fn table_ray(c: RayTable, pixel: vec2u, sample: u32) -> Ray {{
-{table}    return Ray {{ origin: vec3f(0.0, 100.0, 0.0), dir: vec3f(0.0, 1.0, 0.0) }};
-}}
-
-@material
-struct Flat {{
-    unused: f32 = 0.0,
-}}
-
-@closest_hit
-fn flat(m: Flat, ray: Ray, hit: Hit) -> vec3f {{
-    return vec3f(1.0);
-}}
-
-scene debug_row {{
-    settings {{ width: {w}, height: 2, samples: 1 }}
-    camera RayTable {{}}
-    let flat = Flat {{}};
-{objects}}}
-"#,
-        w = RAYS.len()
-    )
+/// `scenes/debug/row.rt` with [`RAYS`] and [`CUBES`], every float as its exact bits.
+fn scene_file() -> SceneFile {
+    SceneFile::open("debug/row.rt")
+        .set("RAY_COUNT", format!("{}u", RAYS.len()))
+        .set("ORIGINS", exact_vec3f_array(RAYS.iter().map(|r| r.0)))
+        .set("DIRS", exact_vec3f_array(RAYS.iter().map(|r| r.1)))
+        .set("CUBES", exact_f32_array(CUBES))
 }
 
 fn compile(dir: &std::path::Path, debug: DebugMode) -> CompiledScene {
-    let path = dir.join("scene.rt");
-    std::fs::write(&path, scene_text()).expect("scene file");
-    match compile_scene_with(
-        std::slice::from_ref(&path),
-        None,
-        &Options::default(),
-        &LinkOptions::default(),
-        &KernelOptions { debug: Some(debug) },
-    ) {
-        Ok(c) => c,
-        Err(f) => panic!(
-            "compile failed:\n{}",
-            rtc_compiler::diag::render_human(&f.checked.sources, &f.diagnostics, false)
-        ),
-    }
+    scene_file().compile_with(dir, &KernelOptions { debug: Some(debug) })
 }
 
 /// The kernel's `safe_inverse`.

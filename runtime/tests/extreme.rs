@@ -1,4 +1,5 @@
-//! Extreme cases of the ray tracer (issue 8, part 1): each test renders a scene written here, on
+//! Extreme cases of the ray tracer (issue 8, part 1): each test renders a scene of
+//! `scenes/extreme/` (its numbers set by the test through the file's named constants), on
 //! whatever adapter exists (lavapipe on CI), and checks every pixel against an answer computed in
 //! Rust, with the tolerance stated at the test. Every render is also checked free of NaN and
 //! infinities, twice: the kernel's own counter of non-finite samples (which it replaces by zero)
@@ -20,33 +21,24 @@
 
 mod common;
 
+use common::scene::{exact_vec3f, SceneFile};
 use common::{gpu_or_skip, temp_dir};
 use std::fmt::Write as _;
 use std::path::Path;
 
-use rtc_compiler::driver::Options;
-use rtc_compiler::kernel::{compile_scene, CompiledScene};
-use rtc_compiler::link::LinkOptions;
+use rtc_compiler::kernel::CompiledScene;
 use rtc_runtime::gpu::Gpu;
 use rtc_runtime::image_out::LinearImage;
 use rtc_runtime::render::{RenderOptions, RenderStats, Renderer};
 
-/// Writes `text` as `scene.rt` in `dir` and compiles it.
-fn compile(dir: &Path, text: &str) -> CompiledScene {
-    let path = dir.join("scene.rt");
-    std::fs::write(&path, text).expect("scene file");
-    match compile_scene(
-        std::slice::from_ref(&path),
-        None,
-        &Options::default(),
-        &LinkOptions::default(),
-    ) {
-        Ok(c) => c,
-        Err(f) => panic!(
-            "compile failed:\n{}",
-            rtc_compiler::diag::render_human(&f.checked.sources, &f.diagnostics, false)
-        ),
-    }
+/// Writes `file` (overrides applied) into `dir` and compiles it.
+fn compile(dir: &Path, file: &SceneFile) -> CompiledScene {
+    file.compile(dir)
+}
+
+/// A scene file of `scenes/extreme/`.
+fn scene(name: &str) -> SceneFile {
+    SceneFile::open(&format!("extreme/{name}.rt"))
 }
 
 /// Renders `compiled` with the scene's settings and checks the image free of NaN and infinities.
@@ -159,134 +151,15 @@ const WT_GRID: u32 = 16;
 /// x of the four objects' centres: icosphere, fan bipyramid, cube, grid box.
 const WT_CENTRES: [f32; 4] = [-30.0, -10.0, 10.0, 30.0];
 
-fn watertight_scene() -> String {
-    format!(
-        r#"
-/// Pixel i < {axis_start} aims at a vertex or an edge point of a triangle of object i % 4, from
-/// outside, toward a point inside the (convex) object: the point p is reached at t = 2/3. Pixels
-/// from {axis_start} on trace axis-parallel rays at exact grid points of the grid box (object 3).
-@camera
-struct EdgeAimer {{
-    m0: mesh,
-    m1: mesh,
-    m2: mesh,
-    m3: mesh,
-}}
-
-fn mix_bits(x: u32) -> u32 {{
-    let s = x * 747796405u + 2891336453u;
-    let w = ((s >> ((s >> 28u) + 4u)) ^ s) * 277803737u;
-    return (w >> 22u) ^ w;
-}}
-
-fn unit(h: u32) -> f32 {{
-    return f32(h >> 8u) * (1.0 / 16777216.0);
-}}
-
-fn on_feature(t: Triangle, f: u32, s: f32) -> vec3f {{
-    if f == 0u {{ return t.v0; }}
-    if f == 1u {{ return t.v1; }}
-    if f == 2u {{ return t.v2; }}
-    if f == 3u {{ return t.v0 + (t.v1 - t.v0) * 0.5; }}
-    if f == 4u {{ return t.v1 + (t.v2 - t.v1) * s; }}
-    return t.v2 + (t.v0 - t.v2) * s;
-}}
-
-fn aimed(tri: Triangle, count: u32, k: u32, centre: vec3f) -> Ray {{
-    let h = mix_bits(k);
-    let p = on_feature(tri, (k / count) % 6u, unit(h));
-    let q = vec3f(unit(mix_bits(h)), unit(mix_bits(h + 1u)), unit(mix_bits(h + 2u))) * 0.6 - 0.3;
-    let o = p + (p - q) * 2.0;
-    return Ray {{ origin: o + centre, dir: q - o }};
-}}
-
-fn axis_ray(k: u32) -> Ray {{
-    let a = k % 6u;
-    let rest = k / 6u;
-    let u = -1.0 + f32(rest % 31u + 1u) / 16.0;
-    let v = -1.0 + f32((rest / 31u) % 31u + 1u) / 16.0;
-    let d = 1.0 + f32(rest / 961u);
-    var n = vec3f(1.0, 0.0, 0.0);
-    var r = vec3f(0.0, 0.0, -1.0);
-    var up = vec3f(0.0, 1.0, 0.0);
-    if a == 1u {{ n = vec3f(-1.0, 0.0, 0.0); r = vec3f(0.0, 0.0, 1.0); }}
-    if a == 2u {{ n = vec3f(0.0, 1.0, 0.0); r = vec3f(1.0, 0.0, 0.0); up = vec3f(0.0, 0.0, -1.0); }}
-    if a == 3u {{ n = vec3f(0.0, -1.0, 0.0); r = vec3f(1.0, 0.0, 0.0); up = vec3f(0.0, 0.0, 1.0); }}
-    if a == 4u {{ n = vec3f(0.0, 0.0, 1.0); r = vec3f(1.0, 0.0, 0.0); }}
-    if a == 5u {{ n = vec3f(0.0, 0.0, -1.0); r = vec3f(-1.0, 0.0, 0.0); }}
-    let centre = vec3f({c3:?}, 0.0, 0.0);
-    return Ray {{ origin: centre + n * (1.0 + d) + r * u + up * v, dir: -n }};
-}}
-
-@ray_generation
-fn edge_ray(c: EdgeAimer, pixel: vec2u, sample: u32) -> Ray {{
-    let i = pixel.y * {size}u + pixel.x;
-    if i >= {axis_start}u {{
-        return axis_ray(i - {axis_start}u);
-    }}
-    let o = i % 4u;
-    let k = i / 4u;
-    if o == 0u {{
-        let n = mesh_triangle_count(c.m0);
-        return aimed(mesh_triangle(c.m0, k % n), n, k, vec3f({c0:?}, 0.0, 0.0));
-    }}
-    if o == 1u {{
-        let n = mesh_triangle_count(c.m1);
-        return aimed(mesh_triangle(c.m1, k % n), n, k, vec3f({c1:?}, 0.0, 0.0));
-    }}
-    if o == 2u {{
-        let n = mesh_triangle_count(c.m2);
-        return aimed(mesh_triangle(c.m2, k % n), n, k, vec3f({c2:?}, 0.0, 0.0));
-    }}
-    let n = mesh_triangle_count(c.m3);
-    return aimed(mesh_triangle(c.m3, k % n), n, k, vec3f({c3:?}, 0.0, 0.0));
-}}
-
-/// Distance and object of the hit.
-@material
-struct HitProbe {{
-    unused: f32 = 0.0,
-}}
-
-@closest_hit
-fn hit_probe(m: HitProbe, ray: Ray, hit: Hit) -> vec3f {{
-    return vec3f(hit.t, f32(hit.instance), 1.0);
-}}
-
-/// A leak reports -1.
-@background
-struct Sentinel {{
-    unused: f32 = 0.0,
-}}
-
-@miss
-fn sentinel(b: Sentinel, ray: Ray) -> vec3f {{
-    return vec3f(-1.0);
-}}
-
-scene watertight {{
-    settings {{ width: {size}, height: {size}, samples: 1 }}
-    camera EdgeAimer {{
-        m0: sphere_mesh(4u),
-        m1: load_mesh("fan.obj"),
-        m2: cube_mesh(),
-        m3: load_mesh("grid.obj"),
-    }}
-    background Sentinel {{}}
-    let probe = HitProbe {{}};
-    object sphere {{ geometry: sphere_mesh(4u), material: probe, transform: translate(vec3f({c0:?}, 0.0, 0.0)) }}
-    object fan {{ geometry: load_mesh("fan.obj"), material: probe, transform: translate(vec3f({c1:?}, 0.0, 0.0)) }}
-    object cube {{ geometry: cube_mesh(), material: probe, transform: translate(vec3f({c2:?}, 0.0, 0.0)) }}
-    object grid {{ geometry: load_mesh("grid.obj"), material: probe, transform: translate(vec3f({c3:?}, 0.0, 0.0)) }}
-}}
-"#,
-        size = WT_SIZE,
-        axis_start = WT_AXIS_ROW * WT_SIZE,
-        c0 = WT_CENTRES[0],
-        c1 = WT_CENTRES[1],
-        c2 = WT_CENTRES[2],
-        c3 = WT_CENTRES[3],
-    )
+/// `scenes/extreme/watertight.rt` with this file's sizes and centres.
+fn watertight_scene() -> SceneFile {
+    scene("watertight")
+        .set("SIZE", format!("{WT_SIZE}u"))
+        .set("AXIS_START", format!("{}u", WT_AXIS_ROW * WT_SIZE))
+        .set("C0", format!("{:?}", WT_CENTRES[0]))
+        .set("C1", format!("{:?}", WT_CENTRES[1]))
+        .set("C2", format!("{:?}", WT_CENTRES[2]))
+        .set("C3", format!("{:?}", WT_CENTRES[3]))
 }
 
 /// Watertightness (Woop, Benthin and Wald, JCGT 2013): 1,048,576 rays, each aimed exactly at a
@@ -396,9 +269,10 @@ const SI_LID: ([f64; 2], f64, f64) = ([0.5, -0.5], 0.05, 0.1);
 /// The lights: high above the scene, and low (grazing the plane at 4 to 9 degrees).
 const SI_LIGHTS: [[f64; 3]; 2] = [[0.0, 2.0, 0.0], [-3.0, 0.3, 0.0]];
 
-/// The scene `s` times the local one, moved by `offset`: a lit plane, a sphere resting on it, a
-/// high occluder and a low lid, seen straight from above by an orthographic camera.
-fn self_intersection_scene(s: f64, offset: [f64; 3]) -> String {
+/// The scene `s` times the local one, moved by `offset` (`scenes/extreme/self_intersection.rt`): a
+/// lit plane, a sphere resting on it, a high occluder and a low lid, seen straight from above by an
+/// orthographic camera.
+fn self_intersection_scene(s: f64, offset: [f64; 3]) -> SceneFile {
     let w = |p: [f64; 3]| {
         format!(
             "vec3f({:?}, {:?}, {:?})",
@@ -409,83 +283,21 @@ fn self_intersection_scene(s: f64, offset: [f64; 3]) -> String {
     };
     let (hc, hy, hh) = SI_HIGH;
     let (lc, ly, lh) = SI_LID;
-    format!(
-        r#"
-/// Looks straight down (-y) at the square of half side `half` around `centre`.
-@camera
-struct Ortho {{
-    centre: vec3f,
-    half: f32,
-}}
-
-@ray_generation
-fn ortho_ray(c: Ortho, pixel: vec2u, sample: u32) -> Ray {{
-    let ndc = (vec2f(pixel) + 0.5) / vec2f(image_size()) * 2.0 - 1.0;
-    return Ray {{ origin: c.centre + vec3f(ndc.x * c.half, 0.0, ndc.y * c.half), dir: vec3f(0.0, -1.0, 0.0) }};
-}}
-
-/// Visibility of the two lights from the hit, by shadow rays and by spawned rays: red is
-/// 4 * object + 2 * (high light visible) + (low light visible); green and blue are the spawned
-/// rays toward the high and the low light (1 if they escape, 0 if they hit anything).
-@material
-struct ShadowProbe {{
-    high: vec3f,
-    low: vec3f,
-}}
-
-@secondary_rays
-fn probe_rays(m: ShadowProbe, ray: Ray, hit: Hit) {{
-    spawn(normalize(m.high - hit.position), vec3f(1.0, 0.0, 0.0));
-    spawn(normalize(m.low - hit.position), vec3f(0.0, 1.0, 0.0));
-}}
-
-@closest_hit
-fn probe_shade(m: ShadowProbe, ray: Ray, hit: Hit, secondary: vec3f) -> vec3f {{
-    if ray.depth > 0u {{
-        return vec3f(0.0);
-    }}
-    let a = m.high - hit.position;
-    let b = m.low - hit.position;
-    let sa = shadow(hit.position, hit.geometric_normal, normalize(a), length(a));
-    let sb = shadow(hit.position, hit.geometric_normal, normalize(b), length(b));
-    return vec3f(f32(hit.instance) * 4.0 + sa * 2.0 + sb, secondary.x, secondary.y);
-}}
-
-/// Camera rays that miss see -1, escaping spawned rays 1.
-@background
-struct Escape {{
-    unused: f32 = 0.0,
-}}
-
-@miss
-fn escape(b: Escape, ray: Ray) -> vec3f {{
-    return select(vec3f(1.0), vec3f(-1.0), ray.depth == 0u);
-}}
-
-scene self_intersection {{
-    settings {{ width: {SI_SIZE}, height: {SI_SIZE}, samples: 1, max_depth: 1, max_rays_per_hit: 2 }}
-    camera Ortho {{ centre: {cam}, half: {half:?} }}
-    background Escape {{}}
-    let probe = ShadowProbe {{ high: {l0}, low: {l1} }};
-    object plane {{ geometry: quad_mesh(), material: probe, transform: translate({origin}) * scale({s:?}) }}
-    object sphere {{ geometry: sphere_mesh(4u), material: probe, transform: translate({sc}) * scale({sr:?}) }}
-    object high {{ geometry: quad_mesh(), material: probe, transform: translate({hc}) * scale({hs:?}) }}
-    object lid {{ geometry: quad_mesh(), material: probe, transform: translate({lc}) * scale({ls:?}) }}
-}}
-"#,
-        cam = w([0.0, 3.0, 0.0]),
-        half = (SI_HALF * s) as f32,
-        l0 = w(SI_LIGHTS[0]),
-        l1 = w(SI_LIGHTS[1]),
-        origin = w([0.0; 3]),
-        s = s as f32,
-        sc = w(SI_CENTRE),
-        sr = (SI_RADIUS * s) as f32,
-        hc = w([hc[0], hy, hc[1]]),
-        hs = (hh * s) as f32,
-        lc = w([lc[0], ly, lc[1]]),
-        ls = (lh * s) as f32,
-    )
+    let f = |x: f64| format!("{:?}", x as f32);
+    scene("self_intersection")
+        .set("SIZE", format!("{SI_SIZE}u"))
+        .set("CAMERA", w([0.0, 3.0, 0.0]))
+        .set("HALF", f(SI_HALF * s))
+        .set("HIGH_LIGHT", w(SI_LIGHTS[0]))
+        .set("LOW_LIGHT", w(SI_LIGHTS[1]))
+        .set("ORIGIN", w([0.0; 3]))
+        .set("SCALE", f(s))
+        .set("SPHERE_CENTRE", w(SI_CENTRE))
+        .set("SPHERE_RADIUS", f(SI_RADIUS * s))
+        .set("HIGH_CENTRE", w([hc[0], hy, hc[1]]))
+        .set("HIGH_SCALE", f(hh * s))
+        .set("LID_CENTRE", w([lc[0], ly, lc[1]]))
+        .set("LID_SCALE", f(lh * s))
 }
 
 fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
@@ -796,8 +608,9 @@ fn cornell_meshes() -> [IntMesh; 3] {
 }
 
 /// The Cornell box scaled by `s` and moved by `(t, t, t)`, camera and light along (the light's
-/// intensity times `s²`, so the image does not change), written to `dir`.
-fn cornell_scene(dir: &Path, s: f64, t: f64) -> String {
+/// intensity times `s²`, so the image does not change): `scenes/extreme/cornell.rt`, its meshes
+/// written to `dir`.
+fn cornell_scene(dir: &Path, s: f64, t: f64) -> SceneFile {
     let w = |p: [i64; 3]| p.map(|c| (t + s * c as f64) as f32);
     let names = ["white", "red", "green"];
     for ((pos, tris), name) in cornell_meshes().iter().zip(names) {
@@ -805,26 +618,15 @@ fn cornell_scene(dir: &Path, s: f64, t: f64) -> String {
         write_obj(&dir.join(format!("{name}.obj")), &world, tris);
     }
     let v = |p: [f32; 3]| format!("vec3f({:?}, {:?}, {:?})", p[0], p[1], p[2]);
-    format!(
-        r#"
-import "std/cameras/pinhole.rt";
-import "std/materials/lambert.rt";
-import "std/lights/point.rt";
-
-scene cornell_far {{
-    settings {{ width: {CB_SIZE}, height: {CB_SIZE}, samples: 4, max_depth: 0 }}
-    camera Pinhole {{ position: {cam}, look_at: {at}, fov: 38.0 }}
-    object white {{ geometry: load_mesh("white.obj"), material: Lambert {{ albedo: vec3f(0.73) }} }}
-    object red {{ geometry: load_mesh("red.obj"), material: Lambert {{ albedo: vec3f(0.63, 0.065, 0.05) }} }}
-    object green {{ geometry: load_mesh("green.obj"), material: Lambert {{ albedo: vec3f(0.14, 0.45, 0.091) }} }}
-    light PointLight {{ position: {light}, color: vec3f(1.0, 0.85, 0.65), intensity: {intensity:?} }}
-}}
-"#,
-        cam = v(w(CB_CAMERA)),
-        at = v(w([0, 0, 0])),
-        light = v(w(CB_LIGHT)),
-        intensity = (3.0 * 64.0 * 64.0 * s * s) as f32,
-    )
+    scene("cornell")
+        .set("SIZE", format!("{CB_SIZE}u"))
+        .set("CAMERA", v(w(CB_CAMERA)))
+        .set("LOOK_AT", v(w([0, 0, 0])))
+        .set("LIGHT", v(w(CB_LIGHT)))
+        .set(
+            "INTENSITY",
+            format!("{:?}", (3.0 * 64.0 * 64.0 * s * s) as f32),
+        )
 }
 
 /// The pixels of `img` within `r` pixels (Chebyshev) of `(x, y)`, itself included.
@@ -971,15 +773,6 @@ fn the_cornell_box_matches_at_every_translation_and_scale() {
 // triangles, tangent and nested spheres
 // ---------------------------------------------------------------------------------------------
 
-/// An `f32` literal with exactly these bits.
-fn lit(x: f32) -> String {
-    format!("bitcast<f32>(0x{:08x}u)", x.to_bits())
-}
-
-fn v3(v: [f32; 3]) -> String {
-    format!("vec3f({}, {}, {})", lit(v[0]), lit(v[1]), lit(v[2]))
-}
-
 /// `Probe::want`'s object when either object 0 or object 1 is right (a tie).
 const TIE_A_B: u32 = u32::MAX;
 
@@ -1005,65 +798,32 @@ fn probe(
     }
 }
 
-/// The ray-table camera (pixel x traces ray x), the hit probe material (t, object, 1) and a
-/// background of -1, followed by a scene with `objects` (entries using `probe` as material).
-fn probe_scene(rays: &[Probe], extra: &str, objects: &str) -> String {
-    let mut table = String::new();
+/// The probe scene `name` of `scenes/extreme/` (the ray-table camera: pixel x traces `RAY_x`; the
+/// hit probe material (t, object, 1) and a background of -1) with its rays set to `rays`, every
+/// float as its exact bits. The file must declare exactly as many.
+fn probe_scene(name: &str, rays: &[Probe]) -> SceneFile {
+    let mut file = scene(name);
     for (i, r) in rays.iter().enumerate() {
-        let _ = writeln!(
-            table,
-            "    if i == {i}u {{ return Ray {{ origin: {}, dir: {} }}; }}",
-            v3(r.origin),
-            v3(r.dir)
+        file = file.set(
+            &format!("RAY_{i}"),
+            format!(
+                "Ray {{ origin: {}, dir: {} }}",
+                exact_vec3f(r.origin),
+                exact_vec3f(r.dir)
+            ),
         );
     }
-    format!(
-        r#"
-@camera
-struct RayTable {{
-    unused: f32 = 0.0,
-}}
-
-@ray_generation
-fn table_ray(c: RayTable, pixel: vec2u, sample: u32) -> Ray {{
-    let i = pixel.x;
-{table}    return Ray {{ origin: vec3f(0.0), dir: vec3f(0.0, 0.0, 1.0) }};
-}}
-
-@material
-struct HitProbe {{
-    unused: f32 = 0.0,
-}}
-
-@closest_hit
-fn hit_probe(m: HitProbe, ray: Ray, hit: Hit) -> vec3f {{
-    return vec3f(hit.t, f32(hit.instance), 1.0);
-}}
-
-@background
-struct Sentinel {{
-    unused: f32 = 0.0,
-}}
-
-@miss
-fn sentinel(b: Sentinel, ray: Ray) -> vec3f {{
-    return vec3f(-1.0);
-}}
-{extra}
-scene probes {{
-    settings {{ width: {n}, height: 1, samples: 1 }}
-    camera RayTable {{}}
-    background Sentinel {{}}
-    let probe = HitProbe {{}};
-{objects}}}
-"#,
-        n = rays.len()
-    )
+    let n = rays.len();
+    assert!(
+        !file.declares(&format!("RAY_{n}")),
+        "scenes/extreme/{name}.rt has more rays than the test's {n}"
+    );
+    file
 }
 
 /// Renders the probe scene and checks every ray; returns (hits, misses) checked.
-fn check_probes(gpu: &Gpu, name: &str, dir: &Path, rays: &[Probe], extra: &str, objects: &str) {
-    let compiled = compile(dir, &probe_scene(rays, extra, objects));
+fn check_probes(gpu: &Gpu, name: &str, dir: &Path, file: &str, rays: &[Probe]) {
+    let compiled = compile(dir, &probe_scene(file, rays));
     let (img, _) = render(gpu, &compiled, name);
     let mut failures = Vec::new();
     let (mut hits, mut misses) = (0, 0);
@@ -1226,54 +986,9 @@ fn degenerate_directions_grazing_rays_and_degenerate_triangles() {
             want: Some((1, t, tol)),
         });
     }
-    check_probes(
-        &gpu,
-        test,
-        &dir,
-        &rays,
-        "",
-        r#"    object box { geometry: cube_mesh(), material: probe, transform: translate(vec3f(0.0, 0.0, -10.0)) }
-    object floor { geometry: quad_mesh(), material: probe, transform: translate(vec3f(0.0, -5.0, 0.0)) * scale(1e4) }
-    object degenerate { geometry: load_mesh("degenerate.obj"), material: probe }
-"#,
-    );
+    check_probes(&gpu, test, &dir, "degenerate", &rays);
     let _ = std::fs::remove_dir_all(&dir);
 }
-
-/// An analytic sphere written as custom geometry (the robust quadratic: no cancellation).
-const BALL: &str = r#"
-@geometry
-struct Ball {
-    radius: f32 = 1.0,
-}
-
-@intersection
-fn ball_hit(b: Ball, ray: Ray) -> Intersection {
-    let a = dot(ray.dir, ray.dir);
-    let hb = dot(ray.origin, ray.dir);
-    let c = dot(ray.origin, ray.origin) - b.radius * b.radius;
-    let disc = hb * hb - a * c;
-    if !(disc >= 0.0) || !(a > 0.0) {
-        return Intersection {};
-    }
-    let q = -(hb + select(-1.0, 1.0, hb >= 0.0) * sqrt(disc));
-    let t0 = min(q / a, c / q);
-    let t1 = max(q / a, c / q);
-    var t = t0;
-    if t < ray.tmin {
-        t = t1;
-    }
-    if t < ray.tmin || t > ray.tmax {
-        return Intersection {};
-    }
-    return Intersection { t: t, normal: (ray.origin + ray.dir * t) / b.radius };
-}
-
-@bounds
-fn ball_bounds(b: Ball) -> Aabb {
-    return Aabb { min: vec3f(-b.radius), max: vec3f(b.radius) };
-}
-"#;
 
 /// Tangent spheres (radius 1 at x = ±1, touching at the origin of their pair) and nested ones
 /// (radii 2 and 1 around one centre, and an icosphere inside an icosphere), analytic and mesh: the
@@ -1378,20 +1093,7 @@ fn tangent_and_nested_spheres() {
             mesh(5, 1.0),
         ),
     ];
-    check_probes(
-        &gpu,
-        test,
-        &dir,
-        &rays,
-        BALL,
-        r#"    object a { geometry: Ball {}, material: probe, transform: translate(vec3f(-1.0, 0.0, -10.0)) }
-    object b { geometry: Ball {}, material: probe, transform: translate(vec3f(1.0, 0.0, -10.0)) }
-    object outer { geometry: Ball { radius: 2.0 }, material: probe, transform: translate(vec3f(0.0, 0.0, -30.0)) }
-    object inner { geometry: Ball {}, material: probe, transform: translate(vec3f(0.0, 0.0, -30.0)) }
-    object mesh_outer { geometry: sphere_mesh(4u), material: probe, transform: translate(vec3f(0.0, 0.0, -50.0)) * scale(2.0) }
-    object mesh_inner { geometry: sphere_mesh(4u), material: probe, transform: translate(vec3f(0.0, 0.0, -50.0)) }
-"#,
-    );
+    check_probes(&gpu, test, &dir, "spheres", &rays);
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -1413,21 +1115,10 @@ fn a_camera_inside_fog_sees_the_transmittance_to_the_wall() {
     const SIZE: u32 = 32;
     const SIGMA: f64 = 0.5;
     let dir = temp_dir("extreme", "inside-fog");
-    let text = format!(
-        r#"
-import "std/cameras/pinhole.rt";
-import "std/materials/fog.rt";
-import "std/miss/constant.rt";
-
-scene inside_fog {{
-    settings {{ width: {SIZE}, height: {SIZE}, samples: 1 }}
-    camera Pinhole {{ position: vec3f(0.25, -0.5, 0.125), look_at: vec3f(0.25, -0.5, -1.0), fov: 90.0 }}
-    background ConstantBackground {{ color: vec3f(1.0) }}
-    object fog {{ geometry: cube_mesh(), material: Fog {{ density: {SIGMA:?} }}, transform: scale(2.0) }}
-}}
-"#
-    );
-    let compiled = compile(&dir, &text);
+    let file = scene("inside_fog")
+        .set("SIZE", format!("{SIZE}u"))
+        .set("SIGMA", format!("{SIGMA:?}"));
+    let compiled = compile(&dir, &file);
     let (img, _) = render(&gpu, &compiled, test);
     let cam = [0.25f64, -0.5, 0.125];
     let mut worst = 0.0f64;
@@ -1488,34 +1179,6 @@ fn wedge() -> (Vec<[f32; 3]>, Vec<[u32; 3]>) {
     (pos, tris)
 }
 
-/// An orthographic camera looking along -z at x ∈ [-hx, hx], y ∈ [-hy, hy] (from z = 2), a white
-/// background, stdlib `Fog`, and `objects`.
-fn fog_scene(w: u32, h: u32, hx: f32, hy: f32, objects: &str) -> String {
-    format!(
-        r#"
-import "std/materials/fog.rt";
-import "std/miss/constant.rt";
-
-@camera
-struct OrthoZ {{
-    half: vec2f,
-}}
-
-@ray_generation
-fn ortho_z(c: OrthoZ, pixel: vec2u, sample: u32) -> Ray {{
-    let p = (vec2f(pixel) + 0.5) / vec2f(image_size()) * 2.0 - 1.0;
-    return Ray {{ origin: vec3f(p.x * c.half.x, -p.y * c.half.y, 2.0), dir: vec3f(0.0, 0.0, -1.0) }};
-}}
-
-scene stiff {{
-    settings {{ width: {w}, height: {h}, samples: 1 }}
-    camera OrthoZ {{ half: vec2f({hx:?}, {hy:?}) }}
-    background ConstantBackground {{ color: vec3f(1.0) }}
-{objects}}}
-"#
-    )
-}
-
 /// Whether `got` is the transmittance `exp(-σ d)` of a segment whose length the kernel knows to
 /// within `2h` (each of the two surface crossings may shorten it by one ray offset, at most `h`),
 /// widened by 1e-4 relative and 1e-6 absolute.
@@ -1541,17 +1204,20 @@ fn stiff_fog_slabs_match_exp_minus_sigma_d() {
     const H: u32 = 32;
     let densities: Vec<f64> = (-3..=4).map(|e| 10f64.powi(e)).collect();
     let dir = temp_dir("extreme", "stiff-slabs");
-    let mut objects = String::new();
-    for (j, sigma) in densities.iter().enumerate() {
-        let _ = writeln!(
-            objects,
-            "    object slab{j} {{ geometry: cube_mesh(), material: Fog {{ density: {:?} }}, \
-             transform: translate(vec3f({:?}, 0.0, 0.0)) * scale(0.5) }}",
-            *sigma as f32,
-            j as f32 - 3.5
+    // `stiff_slabs.rt`: slab j (density `densities[j]`) is the cube of half side 0.5 at x = j - 3.5,
+    // seen by an orthographic camera over x ∈ [-4, 4], y ∈ [-0.5, 0.5].
+    let list: Vec<String> = densities
+        .iter()
+        .map(|d| format!("{:?}", *d as f32))
+        .collect();
+    let file = scene("stiff_slabs")
+        .set("W", format!("{W}u"))
+        .set("H", format!("{H}u"))
+        .set(
+            "DENSITIES",
+            format!("array<f32, {}>({})", list.len(), list.join(", ")),
         );
-    }
-    let compiled = compile(&dir, &fog_scene(W, H, 4.0, 0.5, &objects));
+    let compiled = compile(&dir, &file);
     let (img, _) = render(&gpu, &compiled, test);
     let h = offset_bound(4.0, 1.0);
     let px = |x: u32| (f64::from(x) + 0.5) / f64::from(W) * 8.0 - 4.0;
@@ -1617,18 +1283,18 @@ fn stiff_fog_ramps_have_no_banding() {
     let dir = temp_dir("extreme", "stiff-ramps");
     let (p, t) = wedge();
     write_obj(&dir.join("wedge.obj"), &p, &t);
-    let mut objects = String::new();
-    for (j, (sigma, depth)) in ramps.iter().enumerate() {
-        let _ = writeln!(
-            objects,
-            "    object ramp{j} {{ geometry: load_mesh(\"wedge.obj\"), material: Fog {{ density: {:?} }}, \
-             transform: translate(vec3f(-0.05, {:?}, 0.0)) * scale(vec3f(0.1, 0.05, {:?})) }}",
-            *sigma as f32,
-            0.05 * j as f32 - 0.05,
-            *depth as f32
-        );
-    }
-    let compiled = compile(&dir, &fog_scene(W, H, 0.05, 0.05, &objects));
+    // `stiff_ramps.rt`: ramp j is the wedge scaled to (0.1, 0.05, depth) at (-0.05, 0.05 j - 0.05),
+    // seen by an orthographic camera over x, y ∈ [-0.05, 0.05].
+    let f32s = |xs: Vec<f64>| {
+        let list: Vec<String> = xs.iter().map(|x| format!("{:?}", *x as f32)).collect();
+        format!("array<f32, {}>({})", list.len(), list.join(", "))
+    };
+    let file = scene("stiff_ramps")
+        .set("W", format!("{W}u"))
+        .set("H", format!("{H}u"))
+        .set("DENSITIES", f32s(ramps.iter().map(|r| r.0).collect()))
+        .set("DEPTHS", f32s(ramps.iter().map(|r| r.1).collect()));
+    let compiled = compile(&dir, &file);
     let (img, _) = render(&gpu, &compiled, test);
     let h = offset_bound(0.12, 0.12);
     let px = |x: u32| (f64::from(x) + 0.5) / f64::from(W) * 0.1 - 0.05;
@@ -1705,57 +1371,19 @@ fn total_internal_reflection_in_glass() {
         return;
     };
     let angles = [10.0f64, 30.0, 41.5, 42.0, 45.0, 60.0, 80.0, 89.0];
-    let mut table = String::new();
+    // `tir.rt`: pixel i traces a ray from the origin along `DIR_i`.
+    let mut file = scene("tir");
     for (i, a) in angles.iter().enumerate() {
         let d = [
             a.to_radians().sin() as f32,
             a.to_radians().cos() as f32,
             0.0,
         ];
-        let _ = writeln!(
-            table,
-            "    if pixel.x == {i}u {{ return Ray {{ origin: vec3f(0.0), dir: {} }}; }}",
-            v3(d)
-        );
+        file = file.set(&format!("DIR_{i}"), exact_vec3f(d));
     }
-    let text = format!(
-        r#"
-import "std/materials/glass.rt";
-import "std/miss/constant.rt";
-
-@camera
-struct Angles {{
-    unused: f32 = 0.0,
-}}
-
-@ray_generation
-fn angle_ray(c: Angles, pixel: vec2u, sample: u32) -> Ray {{
-{table}    return Ray {{ origin: vec3f(0.0), dir: vec3f(0.0, 1.0, 0.0) }};
-}}
-
-/// Emits `color`.
-@material
-struct Plate {{
-    color: vec3f = vec3f(0.0, 1.0, 0.0),
-}}
-
-@closest_hit
-fn plate(m: Plate, ray: Ray, hit: Hit) -> vec3f {{
-    return m.color;
-}}
-
-scene tir {{
-    settings {{ width: {n}, height: 1, samples: 1, max_depth: 4 }}
-    camera Angles {{}}
-    background ConstantBackground {{ color: vec3f(1.0, 0.0, 0.0) }}
-    object block {{ geometry: cube_mesh(), material: Glass {{ ior: 1.5 }}, transform: translate(vec3f(0.0, -45.0, 0.0)) * scale(vec3f(3000.0, 55.0, 3000.0)) }}
-    object plate {{ geometry: quad_mesh(), material: Plate {{}}, transform: translate(vec3f(0.0, -5.0, 0.0)) * scale(2500.0) }}
-}}
-"#,
-        n = angles.len()
-    );
+    assert!(!file.declares(&format!("DIR_{}", angles.len())));
     let dir = temp_dir("extreme", "tir");
-    let compiled = compile(&dir, &text);
+    let compiled = compile(&dir, &file);
     let (img, _) = render(&gpu, &compiled, test);
     let critical = (1.0f64 / 1.5).asin().to_degrees();
     for (x, a) in (0u32..).zip(angles) {
@@ -1810,56 +1438,16 @@ fn mirror_chains(test: &str, depths: &[u32]) {
         [0.3, -1.0, 0.2],
         [-0.25, 1.0, 0.1],
     ];
-    let mut table = String::new();
+    // `mirrors.rt`: pixel i traces a ray from (0, 0.5, 0) along `DIR_i`.
+    let mut base = scene("mirrors");
     for (i, d) in dirs.iter().enumerate() {
-        let _ = writeln!(
-            table,
-            "    if pixel.x == {i}u {{ return Ray {{ origin: vec3f(0.0, 0.5, 0.0), dir: {} }}; }}",
-            v3(*d)
-        );
+        base = base.set(&format!("DIR_{i}"), exact_vec3f(*d));
     }
+    assert!(!base.declares(&format!("DIR_{}", dirs.len())));
     for &depth in depths {
-        let text = format!(
-            r#"
-@camera
-struct Dirs {{
-    unused: f32 = 0.0,
-}}
-
-@ray_generation
-fn dir_ray(c: Dirs, pixel: vec2u, sample: u32) -> Ray {{
-{table}    return Ray {{ origin: vec3f(0.0, 0.5, 0.0), dir: vec3f(0.0, 1.0, 0.0) }};
-}}
-
-/// A mirror that also emits.
-@material
-struct GlowMirror {{
-    emit: vec3f = vec3f(0.1),
-    tint: vec3f = vec3f(0.9),
-}}
-
-@secondary_rays
-fn glow_rays(m: GlowMirror, ray: Ray, hit: Hit) {{
-    spawn(reflect(normalize(ray.dir), hit.normal), m.tint);
-}}
-
-@closest_hit
-fn glow_shade(m: GlowMirror, ray: Ray, hit: Hit, secondary: vec3f) -> vec3f {{
-    return m.emit + secondary;
-}}
-
-scene mirrors {{
-    settings {{ width: {n}, height: 1, samples: 1, max_depth: {depth}, max_rays_per_hit: 1 }}
-    camera Dirs {{}}
-    let m = GlowMirror {{}};
-    object floor {{ geometry: quad_mesh(), material: m, transform: scale(100.0) }}
-    object ceiling {{ geometry: quad_mesh(), material: m, transform: translate(vec3f(0.0, 1.0, 0.0)) * rotate_x(180.0) * scale(100.0) }}
-}}
-"#,
-            n = dirs.len()
-        );
+        let file = base.clone().set("MAX_DEPTH", format!("{depth}u"));
         let dir = temp_dir("extreme", "mirrors");
-        let compiled = compile(&dir, &text);
+        let compiled = compile(&dir, &file);
         let (img, _) = render(&gpu, &compiled, &format!("{test}, max_depth {depth}"));
         let want = 0.1 * (1.0 - 0.9f64.powi(depth as i32 + 1)) / (1.0 - 0.9);
         for x in 0..dirs.len() as u32 {
@@ -1892,50 +1480,21 @@ fn icosphere_row(test: &str, n: u32) {
         return;
     };
     const PER: u32 = 64;
-    let mut objects = String::new();
     let centre = |i: u32| 2.5 * (f64::from(i) - f64::from(n - 1) / 2.0);
+    // `icosphere_row.rt`: sphere i at x = `X_i`, eight of them.
+    let mut file = scene("icosphere_row")
+        .set("PER", format!("{PER}u"))
+        .set("W", format!("{}u", PER * n))
+        .set("HX", format!("{:?}", 1.25 * n as f32));
     for i in 0..n {
-        let _ = writeln!(
-            objects,
-            "    object s{i} {{ geometry: sphere_mesh(8u), material: probe, transform: translate(vec3f({:?}, 0.0, 0.0)) }}",
-            centre(i) as f32
-        );
+        file = file.set(&format!("X_{i}"), format!("{:?}", centre(i) as f32));
     }
-    let text = format!(
-        r#"
-/// Looks down -y from y = 3 at x ∈ [-hx, hx], z ∈ [-1.25, 1.25].
-@camera
-struct OrthoDown {{
-    hx: f32,
-}}
-
-@ray_generation
-fn ortho_down(c: OrthoDown, pixel: vec2u, sample: u32) -> Ray {{
-    let p = (vec2f(pixel) + 0.5) / vec2f(image_size()) * 2.0 - 1.0;
-    return Ray {{ origin: vec3f(p.x * c.hx, 3.0, p.y * 1.25), dir: vec3f(0.0, -1.0, 0.0) }};
-}}
-
-@material
-struct HitProbe {{
-    unused: f32 = 0.0,
-}}
-
-@closest_hit
-fn hit_probe(m: HitProbe, ray: Ray, hit: Hit) -> vec3f {{
-    return vec3f(hit.t, f32(hit.instance), 1.0);
-}}
-
-scene large {{
-    settings {{ width: {w}, height: {PER}, samples: 1 }}
-    camera OrthoDown {{ hx: {hx:?} }}
-    let probe = HitProbe {{}};
-{objects}}}
-"#,
-        w = PER * n,
-        hx = 1.25 * n as f32,
+    assert!(
+        !file.declares(&format!("X_{n}")),
+        "icosphere_row.rt has more spheres than {n}"
     );
     let dir = temp_dir("extreme", "large");
-    let compiled = compile(&dir, &text);
+    let compiled = compile(&dir, &file);
     let (img, stats) = render(&gpu, &compiled, test);
     assert_eq!(stats.triangles, 1_310_720);
     assert_eq!(stats.instanced_triangles, 1_310_720 * u64::from(n));
@@ -2014,34 +1573,7 @@ fn a_single_ten_million_triangle_mesh_is_refused_by_the_binding_limit() {
             }
         }
     }
-    let text = r#"
-@camera
-struct Down {
-    unused: f32 = 0.0,
-}
-
-@ray_generation
-fn down(c: Down, pixel: vec2u, sample: u32) -> Ray {
-    return Ray { origin: vec3f(0.1, 1.0, 0.1), dir: vec3f(0.0, -1.0, 0.0) };
-}
-
-@material
-struct Flat {
-    unused: f32 = 0.0,
-}
-
-@closest_hit
-fn flat(m: Flat, ray: Ray, hit: Hit) -> vec3f {
-    return vec3f(hit.t);
-}
-
-scene big {
-    settings { width: 4, height: 4, samples: 1 }
-    camera Down {}
-    object grid { geometry: load_mesh("grid.obj"), material: Flat {} }
-}
-"#;
-    let compiled = compile(&dir, text);
+    let compiled = compile(&dir, &scene("big_grid"));
     let started = std::time::Instant::now();
     let result = Renderer::new(&gpu, &compiled, RenderOptions::default())
         .and_then(|mut r| r.render(&mut |_, _| {}));

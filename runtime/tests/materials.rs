@@ -1,7 +1,7 @@
 //! Analytic checks of the standard-library materials and of the path-tracing program set, rendered on
 //! whatever adapter exists (lavapipe on CI).
 //!
-//! The scenes use a test camera that shoots parallel rays along -z through the pixel centres
+//! The scenes are files of `scenes/materials/`, their varied numbers set by the tests. They use a test camera that shoots parallel rays along -z through the pixel centres
 //! (`Ortho`), so every ray meets the slabs below at exactly normal incidence, and a test background
 //! (`Split`) that shows one colour to rays going -z (through the slab) and another to rays going +z
 //! (reflected back). The expectations, each derived in the test's doc:
@@ -27,100 +27,39 @@
 
 mod common;
 
-use common::gpu_or_skip;
-use std::path::PathBuf;
+use common::image::{PixelCheck, Tolerance};
+use common::scene::{float, SceneFile};
+use common::{gpu_or_skip, temp_dir};
 
-use rtc_compiler::driver::Options;
-use rtc_compiler::kernel::{compile_scene, CompiledScene};
-use rtc_compiler::link::LinkOptions;
 use rtc_runtime::gpu::Gpu;
 use rtc_runtime::image_out::LinearImage;
-use rtc_runtime::render::{RenderOptions, Renderer};
+use rtc_runtime::render::RenderOptions;
 
-/// Writes `text` as `scene.rt` in a fresh folder and compiles it.
-fn compile(name: &str, text: &str) -> (CompiledScene, PathBuf) {
-    let dir = std::env::temp_dir().join(format!("rtc-materials-{name}-{}", std::process::id()));
+/// Compiles `file` (a scene of `scenes/materials/`, which import its test camera and background from
+/// `ortho_split.rt`) and renders it at `samples` samples per pixel; asserts that no sample was NaN or
+/// infinite.
+fn render(gpu: &Gpu, name: &str, file: &SceneFile, samples: u32) -> LinearImage {
+    let dir = temp_dir("materials", name);
+    let compiled = file.compile(&dir);
+    let options = RenderOptions {
+        samples: Some(samples),
+        ..RenderOptions::default()
+    };
+    let (image, _) = common::scene::render(gpu, &compiled, options, name);
     let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let path = dir.join("scene.rt");
-    std::fs::write(&path, text).expect("scene file");
-    match compile_scene(
-        std::slice::from_ref(&path),
-        None,
-        &Options::default(),
-        &LinkOptions::default(),
-    ) {
-        Ok(c) => (c, dir),
-        Err(f) => panic!(
-            "compile failed:\n{}",
-            rtc_compiler::diag::render_human(&f.checked.sources, &f.diagnostics, false)
-        ),
-    }
+    image
 }
 
-/// Compiles and renders `scene` (the test prelude below prepended) at `samples` samples per pixel;
-/// asserts that no sample was NaN or infinite.
-fn render(gpu: &Gpu, name: &str, scene: &str, samples: u32) -> LinearImage {
-    let text = format!("{PRELUDE}\n{scene}");
-    let (compiled, dir) = compile(name, &text);
-    let mut renderer = Renderer::new(
-        gpu,
-        &compiled,
-        RenderOptions {
-            samples: Some(samples),
-            ..RenderOptions::default()
-        },
-    )
-    .expect("renderer");
-    let result = renderer.render(&mut |_, _| {}).expect("render");
-    let s = &result.stats;
-    eprintln!(
-        "{name}: {}x{} at {} spp, render {:.1} ms, pipelines {:.0} ms",
-        s.width, s.height, s.samples, s.render_ms, s.pipeline_ms
-    );
-    assert_eq!(s.nonfinite_samples, 0, "{name}: NaN or infinite samples");
-    let _ = std::fs::remove_dir_all(&dir);
-    result.image
+/// A scene file of `scenes/materials/`.
+fn scene(name: &str) -> SceneFile {
+    SceneFile::open(&format!("materials/{name}.rt"))
 }
 
-/// The test camera and background, and the imports every scene here uses.
-const PRELUDE: &str = r#"
-import "std/materials/glass.rt";
-import "std/materials/mirror.rt";
-import "std/materials/fog.rt";
-import "std/materials/translucent.rt";
-import "std/materials/emissive.rt";
-import "std/materials/unlit_texture.rt";
-import "std/materials/blinn_phong.rt";
-import "std/path/diffuse.rt";
-import "std/lights/quad_area.rt";
-import "std/lights/point.rt";
-
-/// Parallel rays along -z through the pixel centres of the rectangle `half` around (x, y) = 0.
-@camera
-struct Ortho {
-    z: f32 = 5.0,
-    half: vec2f = vec2f(1.0),
+/// The densities of the fog checks, one per column of the image, as the `SIGMAS` of a scene.
+fn sigmas() -> String {
+    let list: Vec<String> = SIGMAS.iter().map(|s| float(*s)).collect();
+    format!("array<f32, {}>({})", SIGMAS.len(), list.join(", "))
 }
-
-@ray_generation
-fn ortho_ray(c: Ortho, pixel: vec2u, sample: u32) -> Ray {
-    let ndc = (vec2f(pixel) + 0.5) / vec2f(image_size()) * 2.0 - 1.0;
-    return Ray { origin: vec3f(ndc.x * c.half.x, -ndc.y * c.half.y, c.z), dir: vec3f(0.0, 0.0, -1.0) };
-}
-
-/// `ahead` for rays going -z, `behind` for the others.
-@background
-struct Split {
-    ahead: vec3f,
-    behind: vec3f,
-}
-
-@miss
-fn split_miss(b: Split, ray: Ray) -> vec3f {
-    return select(b.behind, b.ahead, ray.dir.z < 0.0);
-}
-"#;
 
 fn assert_finite_and_bounded(name: &str, img: &LinearImage, max: f32) {
     for (i, p) in img.pixels().iter().enumerate() {
@@ -167,29 +106,25 @@ fn a_glass_slab_at_normal_incidence_matches_the_fresnel_series() {
     let r = fresnel_normal(ior);
     // Red shows what came through the slab, green what came back from it.
     for depth in [2u32, 5, 16] {
-        let scene = format!(
-            r#"
-scene slab {{
-    settings {{ width: 8, height: 8, samples: 1, max_depth: {depth} }}
-    camera Ortho {{ half: vec2f(0.5) }}
-    background Split {{ ahead: vec3f(1.0, 0.0, 0.0), behind: vec3f(0.0, 1.0, 0.0) }}
-    object slab {{ geometry: cube_mesh(), material: Glass {{ ior: {ior:?} }}, transform: scale(vec3f(2.0, 2.0, 0.1)) }}
-}}
-"#
-        );
-        let img = render(&gpu, &format!("glass-d{depth}"), &scene, 1);
+        let file = scene("glass_slab")
+            .set("MAX_DEPTH", format!("{depth}u"))
+            .set("IOR", float(ior));
+        let img = render(&gpu, &format!("glass-d{depth}"), &file, 1);
         let (t, refl) = slab_series(r, depth);
         eprintln!(
             "glass slab, max_depth {depth}: want T = {t:.7}, R = {refl:.7}, T + R = {:.7}",
             t + refl
         );
-        for p in img.pixels() {
-            let (gt, gr) = (f64::from(p[0]), f64::from(p[1]));
-            assert!(
-                (gt - t).abs() < 2e-6 && (gr - refl).abs() < 2e-6 && p[2] == 0.0,
-                "max_depth {depth}: got T = {gt}, R = {gr}, want {t}, {refl} (2e-6 tolerance: f32 sums)"
-            );
+        // 2e-6 absolute: f32 sums; blue exactly 0.
+        let mut check = PixelCheck::new(format!("glass slab, max_depth {depth}: (T, R, 0)"));
+        for y in 0..img.height() {
+            for x in 0..img.width() {
+                let p = img.get(x, y).expect("pixel");
+                check.pixel((x, y), p, &[t, refl], Tolerance::abs(2e-6));
+                check.channel((x, y), 2, f64::from(p[2]), 0.0, Tolerance::EXACT);
+            }
         }
+        check.assert();
     }
     // With many generations the series reach the closed forms of the infinite slab.
     let (t, refl) = slab_series(r, 16);
@@ -203,25 +138,17 @@ fn a_mirror_reflects_its_tint_times_what_it_sees() {
     let Some(gpu) = gpu_or_skip("a_mirror_reflects_its_tint_times_what_it_sees") else {
         return;
     };
-    let scene = r#"
-scene mirror {
-    settings { width: 8, height: 8, samples: 1, max_depth: 1 }
-    camera Ortho { half: vec2f(0.5) }
-    background Split { ahead: vec3f(0.1, 0.2, 0.3), behind: vec3f(0.3, 0.6, 0.9) }
-    object m { geometry: cube_mesh(), material: Mirror { tint: vec3f(0.5, 0.7, 0.9) }, transform: scale(vec3f(2.0, 2.0, 0.1)) }
-}
-"#;
-    let img = render(&gpu, "mirror", scene, 1);
-    let want = [0.5f32 * 0.3, 0.7 * 0.6, 0.9 * 0.9];
-    for p in img.pixels() {
-        for c in 0..3 {
-            assert!(
-                (p[c] - want[c]).abs() <= 1e-6 * want[c],
-                "got {:?}, want {want:?} (relative 1e-6: one f32 product)",
-                &p[..3]
-            );
+    let img = render(&gpu, "mirror", &scene("mirror"), 1);
+    let want = [0.5f32 * 0.3, 0.7 * 0.6, 0.9 * 0.9].map(f64::from);
+    // Relative 1e-6: one f32 product.
+    let mut check = PixelCheck::new("mirror: tint × background");
+    for y in 0..img.height() {
+        for x in 0..img.width() {
+            let p = img.get(x, y).expect("pixel");
+            check.pixel((x, y), p, &want, Tolerance::rel(1e-6));
         }
     }
+    check.assert();
 }
 
 /// The densities of the fog checks, one per column of the image.
@@ -234,51 +161,34 @@ fn a_fog_slab_transmits_exp_minus_sigma_d_for_densities_from_1e_minus_3_to_1e4()
     };
     // Eight slabs of thickness 0.5 side by side (x in [i - 4, i - 3]), each seen by 4 columns.
     let thickness = 0.5;
-    let mut objects = String::new();
-    for (i, s) in SIGMAS.iter().enumerate() {
-        objects += &format!(
-            "    object f{i} {{ geometry: cube_mesh(), material: Fog {{ density: {s:?} }}, \
-             transform: translate(vec3f({:?}, 0.0, 0.0)) * scale(vec3f(0.5, 2.0, {:?})) }}\n",
-            i as f64 - 3.5,
-            thickness / 2.0
-        );
-    }
-    let scene = format!(
-        r#"
-scene fog {{
-    settings {{ width: 32, height: 4, samples: 1, max_depth: 3 }}
-    camera Ortho {{ half: vec2f(4.0, 0.5) }}
-    background Split {{ ahead: vec3f(1.0, 0.5, 0.25), behind: vec3f(0.0) }}
-{objects}}}
-"#
-    );
-    let img = render(&gpu, "fog-slabs", &scene, 2);
+    let file = scene("fog_slabs")
+        .set("SIGMAS", sigmas())
+        .set("HALF_THICKNESS", float(thickness / 2.0));
+    let img = render(&gpu, "fog-slabs", &file, 2);
     let ahead = [1.0, 0.5, 0.25];
+    let mut check = PixelCheck::new("fog slabs: e^(-σd) × background");
     for y in 0..4 {
         let mut previous = f32::INFINITY;
         for x in 0..32u32 {
             let sigma = SIGMAS[(x / 4) as usize];
             let tr = (-sigma * thickness).exp();
             let p = img.get(x, y).expect("pixel");
-            for c in 0..3 {
-                let want = ahead[c] * tr;
-                // The kernel offsets a spawned ray's origin off the surface at each face by twice
-                // a bound of the hit point's rounding error (about 20 ulps of the extent, 4 here,
-                // since issue 21; 2^-16 of it before), so the path in the fog is at most 1.3e-4
-                // shorter: a relative error of at most σ · 1.3e-4, allowed on top of 1e-3 (f32
-                // `exp`); for σ >= 100, e^(-σd) is below 2e-22 and the absolute bound decides.
-                let tol = (1e-3 + sigma * 1.3e-4) * want + 1e-7;
-                assert!(
-                    (f64::from(p[c]) - want).abs() <= tol,
-                    "σ = {sigma:e}, pixel ({x}, {y}) channel {c}: got {}, want {want:e}",
-                    p[c]
-                );
-            }
+            // The kernel offsets a spawned ray's origin off the surface at each face by twice a
+            // bound of the hit point's rounding error (about 20 ulps of the extent, 4 here, since
+            // issue 21; 2^-16 of it before), so the path in the fog is at most 1.3e-4 shorter: a
+            // relative error of at most σ · 1.3e-4, allowed on top of 1e-3 (f32 `exp`); for
+            // σ >= 100, e^(-σd) is below 2e-22 and the absolute bound decides.
+            let tol = Tolerance {
+                abs: 1e-7,
+                rel: 1e-3 + sigma * 1.3e-4,
+            };
+            check.pixel((x, y), p, &ahead.map(|a| a * tr), tol);
             // No banding: the transmitted red never grows with σ along a row.
             assert!(p[0] <= previous, "σ = {sigma:e}: {} after {previous}", p[0]);
             previous = p[0];
         }
     }
+    check.assert();
 }
 
 #[test]
@@ -288,33 +198,14 @@ fn fog_that_never_ends_stays_finite_and_lit_fog_stays_bounded() {
     };
     // One-sided fog boundaries (quads facing the camera): a ray that crosses one is inside fog with
     // nothing to leave it by, so the medium program sees t = INF. A point light sits in the fog.
-    let mut objects = String::new();
-    for (i, s) in SIGMAS.iter().enumerate() {
-        objects += &format!(
-            "    object f{i} {{ geometry: quad_mesh(), material: Fog {{ density: {s:?} }}, \
-             transform: translate(vec3f({:?}, 0.0, 0.0)) * rotate_x(90.0) * scale(vec3f(0.5, 1.0, 2.0)) }}\n",
-            i as f64 - 3.5
-        );
-    }
-    let scene = format!(
-        r#"
-scene endless {{
-    settings {{ width: 32, height: 4, samples: 1, max_depth: 3 }}
-    camera Ortho {{ half: vec2f(4.0, 0.5) }}
-    background Split {{ ahead: vec3f(1.0), behind: vec3f(1.0) }}
-{objects}    light PointLight {{ position: vec3f(0.0, 0.0, -1.0), intensity: 1.0 }}
-}}
-"#
-    );
-    let img = render(&gpu, "fog-endless", &scene, 8);
+    let file = scene("fog_endless").set("SIGMAS", sigmas());
+    let img = render(&gpu, "fog-endless", &file.clone().scene("endless"), 8);
     // With t = INF nothing of the background comes through; what remains is the light scattered
     // from the point light, one sample of `(1 - T) I e^(-σr) / (4π r²)` with `r >= 0.14` on every
     // ray (the rows pass at least that far from the light), so below 1 / (4π · 0.0196) ≈ 4.1.
     assert_finite_and_bounded("fog-endless", &img, 4.1);
-    let light = "    light PointLight { position: vec3f(0.0, 0.0, -1.0), intensity: 1.0 }\n";
-    assert!(scene.contains(light));
-    let dark = scene.replace(light, "");
-    let img = render(&gpu, "fog-endless-dark", &dark, 1);
+    // The same scene without the light (`endless_dark` in the same file).
+    let img = render(&gpu, "fog-endless-dark", &file.scene("endless_dark"), 1);
     for p in img.pixels() {
         assert_eq!(
             &p[..3],
@@ -332,27 +223,7 @@ fn nothing_returns_more_than_it_receives_under_a_white_sky() {
     // Columns: glass, a perfect mirror, translucent (weights summing to 1), fog, and two diffuse
     // planes of the path-tracing set in front of everything (albedo 1 and 0.6: under a uniform white
     // sky a convex diffuse surface returns exactly its albedo, the furnace test).
-    let scene = r#"
-scene furnace {
-    settings { width: 48, height: 4, samples: 1, max_depth: 12 }
-    camera Ortho { half: vec2f(3.0, 0.25) }
-    background Split { ahead: vec3f(1.0), behind: vec3f(1.0) }
-    object glass { geometry: cube_mesh(), material: Glass { ior: 1.7 },
-        transform: translate(vec3f(-2.5, 0.0, 0.0)) * rotate_y(20.0) * scale(vec3f(0.4, 1.0, 0.3)) }
-    object mirror { geometry: cube_mesh(), material: Mirror { tint: vec3f(1.0) },
-        transform: translate(vec3f(-1.5, 0.0, 0.0)) * rotate_y(30.0) * scale(vec3f(0.4, 1.0, 0.3)) }
-    object translucent { geometry: cube_mesh(),
-        material: Translucent { reflectivity: 0.3, transparency: 0.7, secondary_effect: 1.0 },
-        transform: translate(vec3f(-0.5, 0.0, 0.0)) * scale(vec3f(0.45, 1.0, 0.3)) }
-    object fog { geometry: cube_mesh(), material: Fog { density: 2.0 },
-        transform: translate(vec3f(0.5, 0.0, 0.0)) * scale(vec3f(0.45, 1.0, 0.3)) }
-    object white { geometry: quad_mesh(), material: PathDiffuse { albedo: vec3f(1.0) },
-        transform: translate(vec3f(1.5, 0.0, 1.0)) * rotate_x(90.0) * scale(vec3f(0.45, 1.0, 1.0)) }
-    object grey { geometry: quad_mesh(), material: PathDiffuse { albedo: vec3f(0.6) },
-        transform: translate(vec3f(2.5, 0.0, 1.0)) * rotate_x(90.0) * scale(vec3f(0.45, 1.0, 1.0)) }
-}
-"#;
-    let img = render(&gpu, "furnace", scene, 16);
+    let img = render(&gpu, "furnace", &scene("furnace"), 16);
     // f32 sums of 16 samples of weights at most 1: 1 + 1e-5.
     assert_finite_and_bounded("furnace", &img, 1.0 + 1e-5);
     for y in 0..4 {
@@ -408,25 +279,11 @@ fn the_path_tracer_converges_to_the_analytic_light_of_a_quad() {
     // (an `Emissive` quad just behind the light) that the plane's bounce rays hit: counting it would
     // add about the same again. The camera starts between the plane and the lamp.
     let (albedo, radiance, h, size) = (0.5, 2.0, 0.5, 16u32);
-    let scene = format!(
-        r#"
-scene quad_light {{
-    settings {{ width: {size}, height: {size}, samples: 1, max_depth: 4 }}
-    camera Ortho {{ z: 0.25, half: vec2f(1.0) }}
-    background Split {{ ahead: vec3f(0.0), behind: vec3f(0.0) }}
-    object plane {{ geometry: quad_mesh(), material: PathDiffuse {{ albedo: vec3f({albedo:?}) }},
-        transform: rotate_x(90.0) * scale(2.0) }}
-    object lamp {{ geometry: quad_mesh(), material: Emissive {{ intensity: {radiance:?} }},
-        transform: translate(vec3f(0.0, 0.0, 0.5005)) * rotate_x(-90.0) * scale(0.5) }}
-    light QuadLight {{
-        corner: vec3f(-0.5, -0.5, {h:?}),
-        edge_u: vec3f(0.0, 1.0, 0.0),
-        edge_v: vec3f(1.0, 0.0, 0.0),
-        intensity: {radiance:?},
-    }}
-}}
-"#
-    );
+    let file = scene("quad_light")
+        .set("SIZE", format!("{size}u"))
+        .set("ALBEDO", float(albedo))
+        .set("RADIANCE", float(radiance))
+        .set("LIGHT_Z", float(h));
     // Pixel (x, y) sees the plane at (ndc.x, -ndc.y); its radiance is albedo / π · E with
     // E = π L F, i.e. albedo · L · F.
     let mut want = Vec::new();
@@ -439,7 +296,7 @@ scene quad_light {{
     }
     let mut rmse = Vec::new();
     for spp in [4u32, 64] {
-        let img = render(&gpu, &format!("quad-light-{spp}"), &scene, spp);
+        let img = render(&gpu, &format!("quad-light-{spp}"), &file, spp);
         let (e, ratio) = errors(&img, &want);
         eprintln!("quad light at {spp} spp: RMSE {e:.5}, mean got/want {ratio:.5}");
         rmse.push((spp, e, ratio));
@@ -487,18 +344,11 @@ fn fog_around_a_point_light_scatters_the_analytic_amount() {
     // only. Pixel centres pass at least 1/16 from the light, where the integrand peaks at 256 times
     // its value a unit away: the equiangular half of the sampling keeps this converging.
     let (sigma, intensity, size) = (0.5, 1.0, 16u32);
-    let scene = format!(
-        r#"
-scene glow {{
-    settings {{ width: {size}, height: {size}, samples: 1, max_depth: 3 }}
-    camera Ortho {{ half: vec2f(1.0) }}
-    background Split {{ ahead: vec3f(0.0), behind: vec3f(0.0) }}
-    object air {{ geometry: cube_mesh(), material: Fog {{ density: {sigma:?} }}, transform: scale(vec3f(2.0, 2.0, 1.0)) }}
-    light PointLight {{ position: vec3f(0.0), intensity: {intensity:?} }}
-}}
-"#
-    );
-    let img = render(&gpu, "fog-glow", &scene, 64);
+    let file = scene("fog_glow")
+        .set("SIZE", format!("{size}u"))
+        .set("SIGMA", float(sigma))
+        .set("INTENSITY", float(intensity));
+    let img = render(&gpu, "fog-glow", &file, 64);
     let ndc = |i: u32| (f64::from(i) + 0.5) / f64::from(size) * 2.0 - 1.0;
     let mut want = Vec::new();
     for y in 0..size {
@@ -539,31 +389,10 @@ fn the_simple_materials_match_their_formulas() {
     // Five columns, 1.6 wide, centred on x = -4, -2, 0, 2, 4 (4 pixels per unit). Texture values are
     // exact in the half floats `solid_texture` stores. A point light at (4, 0, 1) lights them all;
     // only Blinn-Phong (and the translucent's weight-0 direct term) uses it.
-    let scene = r#"
-scene simple {
-    settings { width: 40, height: 4, samples: 1, max_depth: 2 }
-    camera Ortho { half: vec2f(5.0, 0.5) }
-    background Split { ahead: vec3f(1.0, 0.0, 0.0), behind: vec3f(0.0, 1.0, 0.0) }
-    object unlit { geometry: quad_mesh(),
-        material: UnlitTexture { texture: solid_texture(vec4f(0.25, 0.5, 0.75, 1.0)), tint: vec3f(2.0, 1.0, 0.5) },
-        transform: translate(vec3f(-4.0, 0.0, 0.0)) * rotate_x(90.0) * scale(vec3f(0.8, 1.0, 1.0)) }
-    object lamp { geometry: quad_mesh(), material: Emissive { color: vec3f(0.25, 0.5, 1.0), intensity: 2.0 },
-        transform: translate(vec3f(-2.0, 0.0, 0.0)) * rotate_x(90.0) * scale(vec3f(0.8, 1.0, 1.0)) }
-    object lamp_back { geometry: quad_mesh(), material: Emissive { intensity: 5.0 },
-        transform: rotate_x(-90.0) * scale(vec3f(0.8, 1.0, 1.0)) }
-    object translucent { geometry: cube_mesh(),
-        material: Translucent { reflectivity: 0.3, transparency: 0.6, secondary_effect: 1.0 },
-        transform: translate(vec3f(2.0, 0.0, 0.0)) * scale(vec3f(0.8, 1.0, 0.1)) }
-    object phong { geometry: quad_mesh(),
-        material: BlinnPhong { texture: solid_texture(vec4f(0.5, 0.5, 0.5, 1.0)), diffuse: vec3f(1.0),
-            specular: vec3f(0.25), shininess: 16.0 },
-        transform: translate(vec3f(4.0, 0.0, 0.0)) * rotate_x(90.0) * scale(vec3f(0.8, 1.0, 1.0)) }
-    light PointLight { position: vec3f(4.0, 0.0, 1.0), intensity: 1.0 }
-}
-"#;
-    let img = render(&gpu, "simple", scene, 1);
+    let img = render(&gpu, "simple", &scene("simple"), 1);
     let pi = std::f64::consts::PI;
     let mut checked = [0usize; 5];
+    let mut check = PixelCheck::new("simple materials (columns of 10 pixels from the left)");
     for y in 0..4u32 {
         for x in 0..40u32 {
             let px = (f64::from(x) + 0.5) / 4.0 - 5.0;
@@ -594,19 +423,16 @@ scene simple {
                 }
             };
             let got = img.get(x, y).expect("pixel");
-            for c in 0..3 {
-                // Relative 2e-4 (f32 `pow` and normalisations) or 1e-6 absolute.
-                let tol = 2e-4 * want[c] + 1e-6;
-                assert!(
-                    (f64::from(got[c]) - want[c]).abs() <= tol,
-                    "column {column}, pixel ({x}, {y}) channel {c}: got {}, want {}",
-                    got[c],
-                    want[c]
-                );
-            }
+            // Relative 2e-4 (f32 `pow` and normalisations) or 1e-6 absolute.
+            let tol = Tolerance {
+                abs: 1e-6,
+                rel: 2e-4,
+            };
+            check.pixel((x, y), got, &want, tol);
             checked[column] += 1;
         }
     }
+    check.assert();
     assert!(
         checked.iter().all(|&n| n >= 16),
         "pixels checked per column: {checked:?}"

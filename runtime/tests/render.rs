@@ -1,6 +1,6 @@
-//! End-to-end renders: a scene written in the language, compiled by `compile_scene`, rendered by
-//! the runtime on whatever adapter exists (lavapipe on CI), checked against numbers computed by
-//! hand.
+//! End-to-end renders: a scene written in the language (`scenes/render/*.rt`, its constants set to
+//! this file's values), compiled by `compile_scene`, rendered by the runtime on whatever adapter
+//! exists (lavapipe on CI), checked against numbers computed by hand.
 //!
 //! The scene is a quad lit by a point light, seen straight from above through a 90° pinhole with
 //! one sample per pixel (so the ray goes through the pixel centre, no jitter). For a pixel whose
@@ -13,35 +13,12 @@
 
 mod common;
 
-use common::gpu_or_skip;
-use std::path::PathBuf;
+use common::image::{PixelCheck, Tolerance};
+use common::scene::{float, vec3f, SceneFile};
+use common::{gpu_or_skip, temp_dir};
 
-use rtc_compiler::driver::Options;
-use rtc_compiler::kernel::{compile_scene, CompiledScene};
-use rtc_compiler::link::LinkOptions;
 use rtc_runtime::gpu::TileConfig;
 use rtc_runtime::render::{RenderOptions, Renderer};
-
-/// Writes `text` as `scene.rt` in a fresh folder and compiles it.
-fn compile(name: &str, text: &str) -> (CompiledScene, PathBuf) {
-    let dir = std::env::temp_dir().join(format!("rtc-render-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let path = dir.join("scene.rt");
-    std::fs::write(&path, text).expect("scene file");
-    match compile_scene(
-        std::slice::from_ref(&path),
-        None,
-        &Options::default(),
-        &LinkOptions::default(),
-    ) {
-        Ok(c) => (c, dir),
-        Err(f) => panic!(
-            "compile failed:\n{}",
-            rtc_compiler::diag::render_human(&f.checked.sources, &f.diagnostics, false)
-        ),
-    }
-}
 
 const SIZE: u32 = 33;
 const ALBEDO: [f64; 3] = [0.5, 0.25, 1.0];
@@ -50,29 +27,20 @@ const LIGHT_Y: f64 = 2.0;
 const INTENSITY: f64 = 4.0;
 const CAMERA_Y: f64 = 3.0;
 
-fn lit_quad() -> String {
-    format!(
-        r#"
-import "std/cameras/pinhole.rt";
-import "std/materials/lambert.rt";
-import "std/lights/point.rt";
-import "std/miss/constant.rt";
+/// `render/lit_quad.rt` with this file's constants.
+fn lit_quad() -> SceneFile {
+    with_constants(SceneFile::open("render/lit_quad.rt"))
+}
 
-scene lit_quad {{
-    settings {{ width: {SIZE}, height: {SIZE}, samples: 1 }}
-    camera Pinhole {{
-        position: vec3f(0.0, {CAMERA_Y:?}, 0.0),
-        look_at: vec3f(0.0),
-        up: vec3f(0.0, 0.0, -1.0),
-        fov: 90.0,
-    }}
-    background ConstantBackground {{ color: vec3f({:?}, {:?}, {:?}) }}
-    object floor {{ geometry: quad_mesh(), material: Lambert {{ albedo: vec3f({:?}, {:?}, {:?}) }} }}
-    light PointLight {{ position: vec3f(0.0, {LIGHT_Y:?}, 0.0), intensity: {INTENSITY:?} }}
-}}
-"#,
-        BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], ALBEDO[0], ALBEDO[1], ALBEDO[2]
-    )
+/// Sets the constants both scenes share to this file's values, so the analytic expectations and
+/// the scenes cannot drift apart.
+fn with_constants(file: SceneFile) -> SceneFile {
+    file.set("SIZE", format!("{SIZE}u"))
+        .set("CAMERA_Y", float(CAMERA_Y))
+        .set("LIGHT_Y", float(LIGHT_Y))
+        .set("INTENSITY", float(INTENSITY))
+        .set("ALBEDO", vec3f(ALBEDO))
+        .set("BACKGROUND", vec3f(BACKGROUND.map(f64::from)))
 }
 
 /// Where the centre ray of pixel `(x, y)` meets the plane y = 0, by the pinhole's formula: with
@@ -95,7 +63,8 @@ fn a_lit_quad_matches_the_analytic_lambert_value() {
     let Some(gpu) = gpu_or_skip("a_lit_quad_matches_the_analytic_lambert_value") else {
         return;
     };
-    let (compiled, dir) = compile("lit-quad", &lit_quad());
+    let dir = temp_dir("render", "lit-quad");
+    let compiled = lit_quad().compile(&dir);
     let mut renderer = Renderer::new(
         &gpu,
         &compiled,
@@ -129,6 +98,7 @@ fn a_lit_quad_matches_the_analytic_lambert_value() {
     let img = &result.image;
     let mut checked_hits = 0;
     let mut checked_misses = 0;
+    let mut check = PixelCheck::new("lit quad: Lambert (relative 1e-4) and background (exact)");
     for y in 0..SIZE {
         for x in 0..SIZE {
             let (px, pz) = ground_point(x, y);
@@ -136,23 +106,15 @@ fn a_lit_quad_matches_the_analytic_lambert_value() {
             // Keep clear of the quad's edge, where a pixel centre could fall either way.
             let inside = px.abs().max(pz.abs());
             if inside < 0.95 {
-                let want = lambert(px, pz);
-                for c in 0..3 {
-                    let rel = (f64::from(got[c]) - want[c]).abs() / want[c];
-                    assert!(
-                        rel < 1e-4,
-                        "pixel ({x}, {y}) channel {c}: got {}, want {} (relative error {rel:e})",
-                        got[c],
-                        want[c]
-                    );
-                }
+                check.pixel((x, y), got, &lambert(px, pz), Tolerance::rel(1e-4));
                 checked_hits += 1;
             } else if inside > 1.05 {
-                assert_eq!(got[..3], BACKGROUND, "pixel ({x}, {y}) misses the quad");
+                check.pixel((x, y), got, &BACKGROUND.map(f64::from), Tolerance::EXACT);
                 checked_misses += 1;
             }
         }
     }
+    check.assert();
     // The centre pixel looks straight down at the point under the light: albedo / π · I / 4.
     let centre = img.get(SIZE / 2, SIZE / 2).expect("centre");
     let want = ALBEDO.map(|a| a / std::f64::consts::PI);
@@ -183,7 +145,8 @@ fn every_tile_shape_renders_every_pixel_once() {
     let Some(gpu) = gpu_or_skip("every_tile_shape_renders_every_pixel_once") else {
         return;
     };
-    let (compiled, dir) = compile("tile-shapes", &lit_quad());
+    let dir = temp_dir("render", "tile-shapes");
+    let compiled = lit_quad().compile(&dir);
     let render = |tile_width, tile_height, tiles_per_batch| {
         let tiles = TileConfig {
             tile_width,
@@ -226,66 +189,11 @@ fn every_tile_shape_renders_every_pixel_once() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// A custom geometry (an analytic ball written in the test) goes through the compiler's bounds
+/// A custom geometry (an analytic ball written in the scene file) goes through the compiler's bounds
 /// kernel: if its box were lost or wrong, the ball would be missing from the scene-level BVH and
 /// the pixels would show the background.
-fn lit_ball() -> String {
-    format!(
-        r#"
-import "std/cameras/pinhole.rt";
-import "std/materials/lambert.rt";
-import "std/lights/point.rt";
-import "std/miss/constant.rt";
-
-/// A sphere of radius `radius` around the object-space origin.
-@geometry
-struct Ball {{
-    radius: f32 = 1.0,
-}}
-
-@intersection
-fn ball_hit(b: Ball, ray: Ray) -> Intersection {{
-    let a = dot(ray.dir, ray.dir);
-    let h = dot(ray.origin, ray.dir);
-    let c = dot(ray.origin, ray.origin) - b.radius * b.radius;
-    let disc = h * h - a * c;
-    if disc < 0.0 {{
-        return Intersection {{}};
-    }}
-    var t = (-h - sqrt(disc)) / a;
-    if t < ray.tmin {{
-        t = (-h + sqrt(disc)) / a;
-    }}
-    if t < ray.tmin || t > ray.tmax {{
-        return Intersection {{}};
-    }}
-    return Intersection {{ t: t, normal: (ray.origin + ray.dir * t) / b.radius }};
-}}
-
-@bounds
-fn ball_bounds(b: Ball) -> Aabb {{
-    return Aabb {{ min: vec3f(-b.radius), max: vec3f(b.radius) }};
-}}
-
-scene lit_ball {{
-    settings {{ width: {SIZE}, height: {SIZE}, samples: 1 }}
-    camera Pinhole {{
-        position: vec3f(0.0, {CAMERA_Y:?}, 0.0),
-        look_at: vec3f(0.0),
-        up: vec3f(0.0, 0.0, -1.0),
-        fov: 90.0,
-    }}
-    background ConstantBackground {{ color: vec3f({:?}, {:?}, {:?}) }}
-    object ball {{
-        geometry: Ball {{ radius: 0.25 }},
-        material: Lambert {{ albedo: vec3f({:?}, {:?}, {:?}) }},
-        transform: translate(vec3f(0.0, 0.5, 0.0)) * scale(2.0),
-    }}
-    light PointLight {{ position: vec3f(0.0, {LIGHT_Y:?}, 0.0), intensity: {INTENSITY:?} }}
-}}
-"#,
-        BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], ALBEDO[0], ALBEDO[1], ALBEDO[2]
-    )
+fn lit_ball() -> SceneFile {
+    with_constants(SceneFile::open("render/lit_ball.rt"))
 }
 
 #[test]
@@ -293,7 +201,8 @@ fn a_custom_geometry_goes_through_the_bounds_kernel() {
     let Some(gpu) = gpu_or_skip("a_custom_geometry_goes_through_the_bounds_kernel") else {
         return;
     };
-    let (compiled, dir) = compile("lit-ball", &lit_ball());
+    let dir = temp_dir("render", "lit-ball");
+    let compiled = lit_ball().compile(&dir);
     assert!(
         compiled.bounds.is_some(),
         "a bounds kernel for custom geometry"
@@ -320,6 +229,7 @@ fn a_custom_geometry_goes_through_the_bounds_kernel() {
     let (cy, r) = (0.5f64, 0.5f64);
     let mut hits = 0;
     let mut misses_in_box = 0usize;
+    let mut check = PixelCheck::new("lit ball: Lambert (relative 1e-4) and background (exact)");
     for y in 0..SIZE {
         for x in 0..SIZE {
             let (gx, gz) = ground_point(x, y);
@@ -334,7 +244,7 @@ fn a_custom_geometry_goes_through_the_bounds_kernel() {
             if disc < -1e-3 {
                 // A ray that misses the ball sees the background, inside its box or not (an
                 // `@intersection` miss, `t = INF`, never counts as a hit).
-                assert_eq!(got[..3], BACKGROUND, "pixel ({x}, {y}) misses the ball");
+                check.pixel((x, y), got, &BACKGROUND.map(f64::from), Tolerance::EXACT);
                 misses_in_box += usize::from(in_box(x, y));
                 continue;
             }
@@ -351,18 +261,11 @@ fn a_custom_geometry_goes_through_the_bounds_kernel() {
                 continue; // near the terminator, shadow-ray offsets decide
             }
             let e = INTENSITY / dist2 * cos / std::f64::consts::PI;
-            for ch in 0..3 {
-                let want = ALBEDO[ch] * e;
-                let rel = (f64::from(got[ch]) - want).abs() / want;
-                assert!(
-                    rel < 1e-4,
-                    "pixel ({x}, {y}) channel {ch}: got {}, want {want} (relative {rel:e})",
-                    got[ch]
-                );
-            }
+            check.pixel((x, y), got, &ALBEDO.map(|a| a * e), Tolerance::rel(1e-4));
             hits += 1;
         }
     }
+    check.assert();
     assert!(hits > 25, "{hits} pixels on the ball checked");
     assert!(
         misses_in_box > 10,

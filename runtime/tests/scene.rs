@@ -1,5 +1,5 @@
 //! GPU tests of the scene's GPU stage and of the renderer's plumbing, on whatever adapter exists
-//! (lavapipe on CI). Scenes are written in the language and checked and linked by the compiler.
+//! (lavapipe on CI). Scenes are files of `scenes/scene/`, checked and linked by the compiler.
 //!
 //! - buffers hold exactly the entities' bytes (read back and compared);
 //! - moving an object re-uploads `nodes` and `instances` only (per-binding outcomes and bytes);
@@ -13,6 +13,7 @@
 mod common;
 
 use common::gpu_or_skip;
+use common::scene::SceneFile;
 use glam::{Mat4, Vec3};
 use rtc_bvh::quantized::QuantizedBvh;
 use rtc_compiler::abi::{self, FieldType, StructDesc};
@@ -25,15 +26,17 @@ use rtc_runtime::gpu::{read_buffer, BufferError, BufferLimits, Gpu, TileConfig, 
 use rtc_runtime::render::{RenderError, RenderOptions, Renderer};
 use rtc_runtime::scene::{Entities, EntityOptions, GpuScene, SceneError};
 
-fn checked(text: &str) -> (Checked, Linked) {
-    let checked = check_text("scene_gpu_test.rt", text, &Options::default());
+/// Checks and links `file` (its text as is: it imports only the standard library).
+fn checked(file: &SceneFile) -> (Checked, Linked) {
+    let name = file.path().display().to_string();
+    let checked = check_text(&name, file.text(), &Options::default());
     assert!(
         !checked.has_errors(),
         "{}",
         rtc_compiler::diag::render_human(&checked.sources, &checked.diagnostics, false)
     );
     let program = checked.program.as_ref().expect("program");
-    let scene = program.select_scene(None).expect("one scene");
+    let scene = program.select_scene(file.scene_name()).expect("the scene");
     let linked = link(
         program,
         scene,
@@ -54,25 +57,9 @@ fn entities(program: &Program, linked: &Linked) -> Entities {
     .expect("entities")
 }
 
-const HEADER: &str = r#"
-import "std/cameras/pinhole.rt";
-import "std/materials/lambert.rt";
-import "std/lights/point.rt";
-import "std/miss/constant.rt";
-"#;
-
-fn row_scene(n: usize) -> String {
-    let mut objects = String::new();
-    for i in 0..n {
-        objects.push_str(&format!(
-            "    object o{i} {{ geometry: sphere_mesh(2u), material: Lambert {{}}, \
-             transform: translate(vec3f({}.0, 0.0, 0.0)) }}\n",
-            3 * i
-        ));
-    }
-    format!(
-        "{HEADER}\nscene row {{\n    camera Pinhole {{}}\n    background ConstantBackground {{ color: vec3f(0.25, 0.5, 0.75) }}\n    light PointLight {{ position: vec3f(0.0, 5.0, 0.0) }}\n{objects}}}"
-    )
+/// A scene file of `scenes/scene/`.
+fn scene_file(name: &str) -> SceneFile {
+    SceneFile::open(&format!("scene/{name}.rt"))
 }
 
 fn all_bindings() -> Vec<&'static abi::BindingDesc> {
@@ -90,7 +77,7 @@ fn buffers_hold_the_entities_and_moves_reupload_only_nodes_and_instances() {
     let Some(gpu) = gpu_or_skip("moves_reupload_only_nodes_and_instances") else {
         return;
     };
-    let (c, l) = checked(&row_scene(8));
+    let (c, l) = checked(&scene_file("rows").scene("row"));
     let program = c.program.as_ref().expect("program");
     let mut e = entities(program, &l);
     let mut scene = GpuScene::new(&gpu, &all_bindings());
@@ -156,7 +143,7 @@ fn data_above_a_binding_limit_is_a_typed_error_naming_it() {
     let Some(gpu) = gpu_or_skip("data_above_a_binding_limit") else {
         return;
     };
-    let (c, l) = checked(&row_scene(2));
+    let (c, l) = checked(&scene_file("rows").scene("pair"));
     let program = c.program.as_ref().expect("program");
     let e = entities(program, &l);
     let triangles = std::mem::size_of_val(e.triangles()) as u64;
@@ -274,27 +261,10 @@ fn bounds(@builtin(global_invocation_id) gid: vec3<u32>) {{
     )
 }
 
-const BALL: &str = r#"
-@geometry
-struct Ball {
-    radius: f32 = 1.0,
-}
-
-@intersection
-fn ball_hit(b: Ball, ray: Ray) -> Intersection {
-    return Intersection {};
-}
-
-@bounds
-fn ball_bounds(b: Ball) -> Aabb {
-    return Aabb { min: vec3f(-b.radius), max: vec3f(b.radius) };
-}
-"#;
-
 /// A `CompiledScene` around hand-written kernels (what `compile_scene` returns, minus the
 /// compiler's kernels).
-fn stand_in(text: &str, samples_per_pass: u32) -> CompiledScene {
-    let (checked, linked) = checked(text);
+fn stand_in(file: &SceneFile, samples_per_pass: u32) -> CompiledScene {
+    let (checked, linked) = checked(file);
     let parse = |src: &str| naga::front::wgsl::parse_str(src).expect("stand-in kernel parses");
     let render = parse(&render_wgsl());
     let bounds = linked
@@ -322,18 +292,7 @@ fn renderer_runs_passes_of_tiles_and_averages() {
     let Some(gpu) = gpu_or_skip("renderer_runs_passes_of_tiles_and_averages") else {
         return;
     };
-    let text = format!(
-        "{HEADER}{BALL}
-scene s {{
-    settings {{ width: 37, height: 23, samples: 7 }}
-    camera Pinhole {{}}
-    background ConstantBackground {{ color: vec3f(0.25, 0.5, 0.75) }}
-    object ball {{ geometry: Ball {{ radius: 2.0 }}, material: Lambert {{}}, transform: translate(vec3f(10.0, 0.0, 0.0)) }}
-    object floor {{ geometry: quad_mesh(), material: Lambert {{}} }}
-    object lost {{ geometry: Ball {{ radius: -1.0 }}, material: Lambert {{}} }}
-}}"
-    );
-    let compiled = stand_in(&text, 2);
+    let compiled = stand_in(&scene_file("ball"), 2);
     let tiles = TileConfig {
         tile_width: 16,
         tile_height: 16,
@@ -411,9 +370,8 @@ fn renderer_errors_are_typed() {
     let Some(gpu) = gpu_or_skip("renderer_errors_are_typed") else {
         return;
     };
-    let text =
-        format!("{HEADER}\nscene s {{ camera Pinhole {{}} background ConstantBackground {{}} }}");
-    let compiled = stand_in(&text, 1);
+    let file = scene_file("empty");
+    let compiled = stand_in(&file, 1);
     let zero = RenderOptions {
         size: Some([0, 5]),
         ..RenderOptions::default()
@@ -434,14 +392,14 @@ fn renderer_errors_are_typed() {
         Err(RenderError::NoSamples)
     ));
     // A kernel without the tile uniform cannot be dispatched in tiles.
-    let mut no_tile = stand_in(&text, 1);
+    let mut no_tile = stand_in(&file, 1);
     no_tile.bindings.retain(|b| b.name != "tile");
     assert!(matches!(
         Renderer::new(&gpu, &no_tile, RenderOptions::default()),
         Err(RenderError::NoTileBinding)
     ));
     // A binding list that lacks one the kernel uses is the pipeline's typed error.
-    let mut missing = stand_in(&text, 1);
+    let mut missing = stand_in(&file, 1);
     missing.bindings.retain(|b| b.name != "params");
     assert!(matches!(
         Renderer::new(&gpu, &missing, RenderOptions::default()),

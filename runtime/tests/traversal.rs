@@ -2,9 +2,9 @@
 //! triangles and instances, rendered on whatever adapter exists (lavapipe on CI) and compared pixel by
 //! pixel with a reference computed here in `f64`.
 //!
-//! The scenes are written by the tests: a `@camera` whose `@ray_generation` program returns the test
-//! ray of `pixel.x` (origins, directions, `tmin` and `tmax` are constant arrays in the program, every
-//! float written as its exact bits), a `@material` whose `@closest_hit` returns
+//! The scenes are `scenes/traversal/rays.rt` and `dispatch.rt`, their ray tables set by the tests: a
+//! `@camera` whose `@ray_generation` program returns the test ray of `pixel.x` (each hand-written ray
+//! a constant `RAY_i` of the file, every float written as its exact bits), a `@material` whose `@closest_hit` returns
 //! `vec3f(hit.t, f32(hit.instance), f32(hit.primitive))`, and a `@background` whose `@miss` returns
 //! the sentinel `vec3f(-1.0)`. The image is one row, one ray per pixel, one sample per pixel; it is
 //! written as a 32-bit float EXR and read back before the comparison.
@@ -20,34 +20,14 @@
 
 mod common;
 
+use common::scene::{exact_ray, SceneFile};
 use common::{gpu_or_skip, temp_dir};
-use std::fmt::Write as _;
 
 use glam::{DMat4, DVec3};
-use rtc_compiler::driver::Options;
-use rtc_compiler::kernel::{compile_scene, CompiledScene};
-use rtc_compiler::link::LinkOptions;
+use rtc_compiler::kernel::CompiledScene;
 use rtc_runtime::gpu::Gpu;
 use rtc_runtime::image_out::{read_image, write_exr, LinearImage};
 use rtc_runtime::render::{RenderOptions, Renderer};
-
-/// Writes `text` as `scene.rt` in `dir` and compiles it.
-fn compile(dir: &std::path::Path, text: &str) -> CompiledScene {
-    let path = dir.join("scene.rt");
-    std::fs::write(&path, text).expect("scene file");
-    match compile_scene(
-        std::slice::from_ref(&path),
-        None,
-        &Options::default(),
-        &LinkOptions::default(),
-    ) {
-        Ok(c) => c,
-        Err(f) => panic!(
-            "compile failed:\n{}",
-            rtc_compiler::diag::render_human(&f.checked.sources, &f.diagnostics, false)
-        ),
-    }
-}
 
 /// Renders `compiled` (one sample per pixel), round-trips the image through an EXR file in `dir`.
 fn render(gpu: &Gpu, compiled: &CompiledScene, dir: &std::path::Path) -> LinearImage {
@@ -74,15 +54,6 @@ fn render(gpu: &Gpu, compiled: &CompiledScene, dir: &std::path::Path) -> LinearI
     back
 }
 
-/// An `f32` literal with exactly these bits.
-fn lit(x: f32) -> String {
-    format!("bitcast<f32>(0x{:08x}u)", x.to_bits())
-}
-
-fn v3(v: [f32; 3]) -> String {
-    format!("vec3f({}, {}, {})", lit(v[0]), lit(v[1]), lit(v[2]))
-}
-
 /// One test ray.
 #[derive(Clone, Copy, Debug)]
 struct TestRay {
@@ -103,103 +74,21 @@ fn ray(what: &'static str, origin: [f32; 3], dir: [f32; 3]) -> TestRay {
     }
 }
 
-/// The probe camera, material and background. Pixel `i < hand.len()` traces `hand[i]` (an `if` per
-/// ray: a dynamically indexed constant array costs lavapipe seconds of pipeline compilation);
-/// the next `random` pixels trace [`random_ray`]'s rays, computed in the program.
-fn probe_programs(hand: &[TestRay], random: u32) -> String {
-    let mut table = String::new();
+/// `file` (`scenes/traversal/rays.rt` or `dispatch.rt`) with its rays `RAY_0`, `RAY_1`, … set to
+/// `hand`, every float as its exact bits. The file must declare exactly as many.
+fn with_rays(mut file: SceneFile, hand: &[TestRay]) -> SceneFile {
     for (i, r) in hand.iter().enumerate() {
-        let _ = writeln!(
-            table,
-            "    if i == {i}u {{ return Ray {{ origin: {}, tmin: {}, dir: {}, tmax: {} }}; }}",
-            v3(r.origin),
-            lit(r.tmin),
-            v3(r.dir),
-            lit(r.tmax)
+        file = file.set(
+            &format!("RAY_{i}"),
+            exact_ray(r.origin, r.tmin, r.dir, r.tmax),
         );
     }
     let n = hand.len();
-    format!(
-        r#"
-/// Returns test ray `pixel.x`.
-@camera
-struct RayTable {{
-    unused: f32 = 0.0,
-}}
-
-fn hand_ray(i: u32) -> Ray {{
-{table}    return Ray {{ origin: vec3f(0.0), dir: vec3f(0.0, 0.0, 1.0) }};
-}}
-
-fn mix_bits(x: u32) -> u32 {{
-    var h = x * 747796405u + 2891336453u;
-    h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
-    return (h >> 22u) ^ h;
-}}
-
-/// A multiple of 1/8 in `[lo, lo + (steps - 1) / 8]`: exact in `f32`.
-fn grid(key: u32, lo: f32, steps: u32) -> f32 {{
-    return f32(mix_bits(key) % steps) * 0.125 + lo;
-}}
-
-fn centre(j: u32) -> vec3f {{
-{centres}    return vec3f(0.0, -5.0, 0.0);
-}}
-
-fn random_ray(i: u32) -> Ray {{
-    let k = i * 8u;
-    let origin = vec3f(grid(k, -12.0, 193u), grid(k + 1u, -8.0, 145u), grid(k + 2u, -14.0, 209u));
-    let jitter = vec3f(grid(k + 3u, -1.25, 21u), grid(k + 4u, -1.25, 21u), grid(k + 5u, -1.25, 21u));
-    var dir = centre(i % {objects}u) + jitter - origin;
-    if i % 4u == 3u {{
-        let axis = (i / 4u) % 3u;
-        if axis == 0u {{ dir.x = 0.0; }}
-        if axis == 1u {{ dir.y = 0.0; }}
-        if axis == 2u {{ dir.z = 0.0; }}
-    }}
-    return Ray {{ origin: origin, dir: dir }};
-}}
-
-@ray_generation
-fn table_ray(c: RayTable, pixel: vec2u, sample: u32) -> Ray {{
-    if pixel.x < {n}u {{
-        return hand_ray(pixel.x);
-    }}
-    return random_ray(pixel.x - {n}u);
-}}
-
-/// Reports the hit: distance, object index, triangle index.
-@material
-struct HitProbe {{
-    unused: f32 = 0.0,
-}}
-
-@closest_hit
-fn hit_probe(m: HitProbe, ray: Ray, hit: Hit) -> vec3f {{
-    return vec3f(hit.t, f32(hit.instance), f32(hit.primitive));
-}}
-
-/// Rays that hit nothing report -1.
-@background
-struct Sentinel {{
-    unused: f32 = 0.0,
-}}
-
-@miss
-fn sentinel(b: Sentinel, ray: Ray) -> vec3f {{
-    return vec3f(-1.0);
-}}
-"#,
-        centres = CENTRES
-            .iter()
-            .enumerate()
-            .map(|(j, c)| format!(
-                "    if j == {j}u {{ return vec3f({:?}, {:?}, {:?}); }}\n",
-                c[0], c[1], c[2]
-            ))
-            .collect::<String>(),
-        objects = CENTRES.len(),
-    ) + &format!("\n// {random} pseudo-random rays\n")
+    assert!(
+        !file.declares(&format!("RAY_{n}")),
+        "the scene file has more hand rays than the test's {n}"
+    );
+    file
 }
 
 /// The centres of [`objects`], which the pseudo-random rays aim at (integers: exact).
@@ -316,29 +205,34 @@ fn objects() -> Vec<Object> {
     ]
 }
 
-fn scene_text(hand: &[TestRay], random: u32, objects: &[Object]) -> String {
-    let mut s = probe_programs(hand, random);
-    let _ = writeln!(
-        s,
-        "scene traversal {{\n    settings {{ width: {}, height: 1, samples: 1 }}",
-        hand.len() as u32 + random
-    );
-    s.push_str(
-        "    camera RayTable {}\n    background Sentinel {}\n    let probe = HitProbe {};\n",
-    );
+/// `scenes/traversal/rays.rt` with `hand`, `random` pseudo-random rays aimed at [`CENTRES`]; asserts
+/// that the file's objects are `objects`, in order, with the same transforms.
+fn rays_scene(hand: &[TestRay], random: u32, objects: &[Object]) -> SceneFile {
+    let mut file = with_rays(SceneFile::open("traversal/rays.rt"), hand)
+        .set("RANDOM_RAYS", format!("{random}u"));
+    for (j, c) in CENTRES.iter().enumerate() {
+        file = file.set(
+            &format!("CENTRE_{j}"),
+            format!("vec3f({:?}, {:?}, {:?})", c[0], c[1], c[2]),
+        );
+    }
+    assert!(!file.declares(&format!("CENTRE_{}", CENTRES.len())));
+    let mut at = 0;
     for o in objects {
         let geometry = match o.shape {
             Shape::Cube => "cube_mesh()",
             Shape::Quad => "quad_mesh()",
         };
-        let _ = writeln!(
-            s,
-            "    object {} {{ geometry: {geometry}, material: probe, transform: {} }}",
+        let line = format!(
+            "    object {} {{ geometry: {geometry}, material: probe, transform: {} }}\n",
             o.name, o.source
         );
+        let found = file.text()[at..].find(&line).unwrap_or_else(|| {
+            panic!("scenes/traversal/rays.rt lacks, after the objects before it:\n{line}")
+        });
+        at += found + line.len();
     }
-    s.push_str("}\n");
-    s
+    file
 }
 
 /// (outward normal, image right, image up) of the cube's faces, as `cube_mesh()` builds them.
@@ -639,7 +533,7 @@ fn known_rays_hit_what_the_reference_hits() {
     let objects = objects();
     let hand = hand_rays();
     let dir = temp_dir("traversal", "rays");
-    let compiled = compile(&dir, &scene_text(&hand, RANDOM_RAYS, &objects));
+    let compiled = rays_scene(&hand, RANDOM_RAYS, &objects).compile(&dir);
     let img = render(&gpu, &compiled, &dir);
     let (hits, misses) = check(&img, &hand, 0, &objects, true);
     eprintln!("hand-written rays: {hits} hits and {misses} misses checked");
@@ -651,7 +545,7 @@ fn known_rays_hit_what_the_reference_hits() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// Dispatch: three material types declared only in the test's text (no Rust code knows them), one
+/// Dispatch (`scenes/traversal/dispatch.rt`): three material types declared only in the scene file (no Rust code knows them), one
 /// of them used twice with different parameters, and the probe material; each object covers its
 /// own pixel, and every pixel shows exactly its object's constant.
 #[test]
@@ -668,54 +562,8 @@ fn each_material_id_reaches_its_program() {
         ray("probe", [10.0, 0.3, 0.0], down),
         ray("nothing", [14.0, 0.3, 0.0], down),
     ];
-    let mut text = probe_programs(&hand, 0);
-    text.push_str(
-        r#"
-@material
-struct Red {
-    k: f32 = 1.0,
-}
-
-@closest_hit
-fn red_shade(m: Red, ray: Ray, hit: Hit) -> vec3f {
-    return vec3f(m.k, 0.0, 0.0);
-}
-
-@material
-struct Green {
-    a: vec3f = vec3f(0.0, 1.0, 0.0),
-    b: f32 = 0.0,
-}
-
-@closest_hit
-fn green_shade(m: Green, ray: Ray, hit: Hit) -> vec3f {
-    return m.a + vec3f(0.0, 0.0, m.b);
-}
-
-@material
-struct Blue {
-    unused: u32 = 0u,
-}
-
-@closest_hit
-fn blue_shade(m: Blue, ray: Ray, hit: Hit) -> vec3f {
-    return vec3f(0.0, 0.0, 7.0);
-}
-
-scene dispatch {
-    settings { width: 6, height: 1, samples: 1 }
-    camera RayTable {}
-    background Sentinel {}
-    object a { geometry: cube_mesh(), material: Red { k: 3.0 }, transform: translate(vec3f(-6.0, 0.0, -10.0)) }
-    object b { geometry: cube_mesh(), material: Green { a: vec3f(0.0, 5.0, 0.0), b: 0.5 }, transform: translate(vec3f(-2.0, 0.0, -10.0)) }
-    object c { geometry: cube_mesh(), material: Blue {}, transform: translate(vec3f(2.0, 0.0, -10.0)) }
-    object d { geometry: cube_mesh(), material: Red { k: 9.0 }, transform: translate(vec3f(6.0, 0.0, -10.0)) }
-    object e { geometry: cube_mesh(), material: HitProbe {}, transform: translate(vec3f(10.0, 0.0, -10.0)) }
-}
-"#,
-    );
     let dir = temp_dir("traversal", "dispatch");
-    let compiled = compile(&dir, &text);
+    let compiled = with_rays(SceneFile::open("traversal/dispatch.rt"), &hand).compile(&dir);
     let materials = compiled
         .linked
         .types

@@ -1,9 +1,15 @@
-//! Helpers shared by the runtime's GPU test suites (each suite includes this with `mod common;`).
+//! The harness shared by the GPU test suites (each of `runtime/tests/` includes it with
+//! `mod common;`, `tests/examples.rs` with a `#[path]` to this file):
+//! the adapter ([`gpu_or_skip`]), a temporary folder per test ([`temp_dir`]), test scene files with
+//! constant overrides, compiled and rendered ([`scene`]), and image assertions ([`image`]).
 //!
 //! A GPU test skips only when there is no adapter at all, and says so on stderr; any other adapter
 //! error fails the test.
 
 #![allow(dead_code)] // each suite uses some of these
+
+pub mod image;
+pub mod scene;
 
 use std::path::PathBuf;
 
