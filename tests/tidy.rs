@@ -218,10 +218,10 @@ fn resolves(root: &Path, file: &Path, cited: &str) -> bool {
         let p = root.join("stdlib").join(rest);
         return p.exists() || p.with_extension("rt").exists();
     }
-    if cited.contains('*') {
-        let dir = &cited[..cited.find('*').unwrap()];
-        let dir = &dir[..dir.rfind('/').map_or(0, |i| i + 1)];
-        return root.join(dir).is_dir() || dir.is_empty();
+    // A glob: its folder must exist.
+    if let Some(star) = cited.find('*') {
+        let dir = &cited[..cited[..star].rfind('/').map_or(0, |i| i + 1)];
+        return dir.is_empty() || resolves(root, file, dir);
     }
     if root.join(cited).exists() {
         return true;

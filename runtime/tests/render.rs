@@ -27,7 +27,7 @@ const LIGHT_Y: f64 = 2.0;
 const INTENSITY: f64 = 4.0;
 const CAMERA_Y: f64 = 3.0;
 
-/// `render/lit_quad.rt` with this file's constants.
+/// `scenes/render/lit_quad.rt` with this file's constants.
 fn lit_quad() -> SceneFile {
     with_constants(SceneFile::open("render/lit_quad.rt"))
 }

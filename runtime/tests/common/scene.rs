@@ -63,7 +63,8 @@ pub struct SceneFile {
 }
 
 impl SceneFile {
-    /// Reads `runtime/tests/scenes/<relative>` (`"render/lit_quad.rt"`).
+    /// Reads `runtime/tests/scenes/<relative>`: `relative` is a suite folder and a file name, as
+    /// `render.rs` opens its `lit_quad.rt`.
     pub fn open(relative: &str) -> SceneFile {
         let path = scenes_dir().join(relative);
         let text = std::fs::read_to_string(&path)
