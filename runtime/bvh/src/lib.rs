@@ -68,3 +68,4 @@ pub use bvh::{Bvh, BvhNode, BvhStats, LayoutError, NodeKind, MAX_DEPTH};
 pub use gpu::{flatten, GpuNode};
 pub use input::MAX_COORD;
 pub use preset::{BuildParams, BuildPreset, SahCost, SpatialSplits};
+pub use quantized::NodeRecord;

@@ -18,7 +18,11 @@ use rtc_compiler::abi;
 use rtc_compiler::back::ResourceKind;
 
 use super::entities::Entities;
-use super::gpu_types::{element_size, FrameUniforms, GpuInstance};
+
+/// Words of the `counters` binding ([`abi::COUNTER_WORDS`]).
+pub const COUNTER_WORDS: usize = abi::COUNTER_WORDS as usize;
+const COUNTER_BYTES: u64 = abi::COUNTER_WORDS as u64 * 4;
+use super::gpu_types::{element_size, record, struct_size, FrameUniforms, GpuInstance};
 use super::SceneError;
 use crate::gpu::{
     read_buffer, read_vec4_f32, BindingDesc, BindingKind, BufferError, BufferLimits, BufferSet,
@@ -204,7 +208,7 @@ impl GpuScene {
                     )
                     .map_err(named)?,
                 "accum" => set.ensure_zeroed(gpu, desc, accum_entries.max(1) * 16)?,
-                "counters" => set.ensure_zeroed(gpu, desc, 16)?,
+                "counters" => set.ensure_zeroed(gpu, desc, COUNTER_BYTES)?,
                 // A binding this runtime does not know: nothing to put in it.
                 _ => continue,
             };
@@ -237,15 +241,15 @@ impl GpuScene {
     }
 
     /// Reads the 4 `counters` back (zeros when the kernel has none).
-    pub fn read_counters(&self, gpu: &Gpu) -> Result<[u32; 4], SceneError> {
+    pub fn read_counters(&self, gpu: &Gpu) -> Result<[u32; COUNTER_WORDS], SceneError> {
         let buffer = abi::binding("counters")
             .filter(|_| self.has("counters"))
             .and_then(|b| self.buffers.buffer(b.binding));
         let Some(buffer) = buffer else {
-            return Ok([0; 4]);
+            return Ok([0; COUNTER_WORDS]);
         };
-        let bytes = read_buffer(gpu, buffer, 16)?;
-        let mut out = [0u32; 4];
+        let bytes = read_buffer(gpu, buffer, COUNTER_BYTES)?;
+        let mut out = [0u32; COUNTER_WORDS];
         for (word, chunk) in out.iter_mut().zip(bytes.chunks_exact(4)) {
             if let Ok(b) = <[u8; 4]>::try_from(chunk) {
                 *word = u32::from_le_bytes(b);
@@ -266,13 +270,13 @@ pub(crate) fn name_the_largest_part(
     if !matches!(error, BufferError::TooLarge { .. }) {
         return SceneError::Buffer(error);
     }
-    // Bytes per triangle slot and per BVH record, as the GPU layouts hold them.
+    // Bytes per triangle slot and per BVH record, as the ABI table lays them out.
     let part = match binding {
         "triangles" | "attributes" | "nodes" => {
             let bytes = |m: &super::MeshEntity| match binding {
-                "triangles" => u64::from(m.slots) * 48,
-                "attributes" => u64::from(m.slots) * 32,
-                _ => u64::from(m.node_count) * 32,
+                "triangles" => u64::from(m.slots) * record::bytes(&abi::TRIANGLE),
+                "attributes" => u64::from(m.slots) * record::bytes(&abi::ATTRIBUTE),
+                _ => u64::from(m.node_count) * struct_size(&abi::NODE) as u64,
             };
             entities.meshes().iter().max_by_key(|m| bytes(m)).map(|m| {
                 format!(
