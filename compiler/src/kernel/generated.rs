@@ -402,3 +402,228 @@ pub fn config_module_with(c: &KernelConfig, debug: Option<super::DebugMode>) -> 
     }
     out
 }
+
+/// Reading the generated `rtc:abi` text back: its `u32` constants and its record accessors, for the
+/// tests that compare them with the ABI table (here) and with the runtime's encoders
+/// (`rtc-runtime`'s `gpu_types`).
+pub mod parse {
+    /// Every `const NAME: u32 = Vu;` of `text`, in order.
+    pub fn constants(text: &str) -> Vec<(String, u32)> {
+        text.lines()
+            .filter_map(|l| {
+                let rest = l.strip_prefix("const ")?;
+                let (name, value) = rest.split_once(": u32 = ")?;
+                let value = value.strip_suffix("u;")?.parse().ok()?;
+                Some((name.to_string(), value))
+            })
+            .collect()
+    }
+
+    /// A record accessor as written: `fn NAME(r: u32) -> TYPE { return LOAD(r [* STRIDE] [+ OFFSET]); }`.
+    #[derive(Clone, Debug, PartialEq, Eq)]
+    pub struct AccessorText {
+        /// The function's name.
+        pub name: String,
+        /// Its result type.
+        pub ty: String,
+        /// The load intrinsic it calls.
+        pub load: String,
+        /// The multiplier of `r` (1 when there is none).
+        pub stride: u32,
+        /// The constant added (0 when there is none).
+        pub offset: u32,
+    }
+
+    /// Every function of `text` taking `r: u32` whose body is one load of `r`'s element.
+    pub fn accessors(text: &str) -> Vec<AccessorText> {
+        let lines: Vec<&str> = text.lines().collect();
+        let mut out = Vec::new();
+        for pair in lines.windows(2) {
+            let Some(head) = pair[0].strip_prefix("fn ") else {
+                continue;
+            };
+            let Some((name, ty)) = head.split_once("(r: u32) -> ") else {
+                continue;
+            };
+            let Some(ty) = ty.strip_suffix(" {") else {
+                continue;
+            };
+            let Some(body) = pair[1]
+                .trim()
+                .strip_prefix("return ")
+                .and_then(|b| b.strip_suffix(");"))
+            else {
+                continue;
+            };
+            let Some((load, index)) = body.split_once('(') else {
+                continue;
+            };
+            let (product, offset) = match index.split_once(" + ") {
+                Some((p, o)) => (p, o.strip_suffix('u').and_then(|o| o.parse().ok())),
+                None => (index, Some(0)),
+            };
+            let stride = match product.split_once(" * ") {
+                Some(("r", s)) => s.strip_suffix('u').and_then(|s| s.parse().ok()),
+                None if product == "r" => Some(1),
+                _ => None,
+            };
+            if let (Some(stride), Some(offset)) = (stride, offset) {
+                out.push(AccessorText {
+                    name: name.to_string(),
+                    ty: ty.to_string(),
+                    load: load.to_string(),
+                    stride,
+                    offset,
+                });
+            }
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::abi;
+
+    #[test]
+    fn every_abi_constant_is_generated_with_its_value_and_nothing_else() {
+        let text = abi_module();
+        let got = parse::constants(&text);
+        let mut want: Vec<(String, u32)> = abi::CONSTANTS
+            .iter()
+            .map(|c| (c.name.to_string(), c.value))
+            .collect();
+        want.extend(RECORDS.iter().map(|r| (r.stride_const(), r.stride)));
+        assert_eq!(got, want);
+    }
+
+    #[test]
+    fn every_record_field_has_an_accessor_reading_its_element() {
+        let text = abi_module();
+        let got = parse::accessors(&text);
+        let want: Vec<parse::AccessorText> = accessors()
+            .map(|a| parse::AccessorText {
+                name: a.name(),
+                ty: a.field.ty.name().to_string(),
+                load: load_intrinsic_of(a.record.binding)
+                    .expect("a load intrinsic")
+                    .name()
+                    .to_string(),
+                stride: match a.record.addressing {
+                    Addressing::WordOffset => 1,
+                    Addressing::Slot => a.record.stride,
+                },
+                offset: a.field.offset,
+            })
+            .collect();
+        assert_eq!(got, want);
+        // Each binding's load intrinsic returns the binding's element type.
+        for a in &got {
+            let i = Intrinsic::from_name(&a.load).expect("an intrinsic");
+            assert_eq!(i.signature().2, a.ty, "{}", a.name);
+        }
+    }
+
+    #[test]
+    fn every_function_is_an_intrinsic_an_accessor_or_a_node_decoder() {
+        let text = abi_module();
+        let decoders = ["node_point", "node_frame_hi", "node_box_lo", "node_box_hi"];
+        let mut intrinsics = 0;
+        for name in text
+            .lines()
+            .filter_map(|l| l.strip_prefix("fn "))
+            .filter_map(|l| l.split_once('(').map(|(n, _)| n))
+        {
+            if Intrinsic::from_name(name).is_some() {
+                intrinsics += 1;
+            } else {
+                assert!(
+                    abi::accessor(name).is_some() || decoders.contains(&name),
+                    "`{name}` is in rtc:abi but in no table"
+                );
+            }
+        }
+        assert_eq!(intrinsics, Intrinsic::ALL.len());
+        for i in Intrinsic::ALL {
+            assert_eq!(Intrinsic::from_name(i.name()), Some(i));
+        }
+    }
+
+    #[test]
+    fn the_node_decoders_use_the_table_numbers() {
+        let text = abi_module();
+        let max = format!("& {}u", abi::NODE_BOUND_MAX);
+        let shift = format!(">> {}u", abi::NODE_BOUND_BITS);
+        assert_eq!(text.matches(&max).count(), 3);
+        assert_eq!(text.matches(&shift).count(), 3);
+        assert_eq!(abi::NODE_BOUND_MAX, 0xffff);
+        assert_eq!(abi::NODE_BOUND_BITS, 16);
+    }
+
+    /// `stdlib/kernel/*.rt` without `//` comments.
+    fn kernel_sources() -> Vec<(String, String)> {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../stdlib/kernel");
+        let mut out = Vec::new();
+        for entry in std::fs::read_dir(&dir).expect("stdlib/kernel") {
+            let path = entry.expect("an entry").path();
+            if path.extension().is_some_and(|e| e == "rt") {
+                let text = std::fs::read_to_string(&path).expect("a kernel file");
+                let code: Vec<&str> = text
+                    .lines()
+                    .map(|l| l.split_once("//").map_or(l, |(code, _)| code))
+                    .collect();
+                out.push((path.display().to_string(), code.join("\n")));
+            }
+        }
+        assert!(out.len() >= 2, "trace.rt and support.rt");
+        out
+    }
+
+    /// No number the ABI defines is written in the framework kernel: records are read through the
+    /// accessors (no raw `load_param`/`load_triangle_vertex`/`load_attribute`, whose index would be
+    /// a hand-written offset or stride), no ABI constant is redefined, and the distinctive values
+    /// (node bits and masks, the bound mask, shifts by a field position) appear nowhere. Small values
+    /// like the flags (1, 2, 4) are too common to search for; they are covered by the first two
+    /// rules, since a flag is only ever tested on `GpuInstance.flags` by name. `0xffffffff` is
+    /// also the kernel's own `NO_HIT`, so `MESH_GEOMETRY` is covered by the redefinition rule only.
+    #[test]
+    fn no_abi_number_is_written_in_the_kernel() {
+        for (file, code) in kernel_sources() {
+            for raw in ["load_param(", "load_triangle_vertex(", "load_attribute("] {
+                assert!(
+                    !code.contains(raw),
+                    "{file} calls `{raw}…)`: read the record through its rtc:abi accessor"
+                );
+            }
+            for c in abi::CONSTANTS {
+                assert!(
+                    !code.contains(&format!("const {}:", c.name)),
+                    "{file} redefines {}",
+                    c.name
+                );
+            }
+            for r in RECORDS {
+                assert!(!code.contains(&format!("const {}:", r.stride_const())));
+            }
+            let mut forbidden = Vec::new();
+            for v in [
+                abi::NODE_LEAF_BIT,
+                abi::NODE_FIRST_MASK,
+                abi::NODE_BOUND_MAX,
+            ] {
+                forbidden.push(format!("{v}u"));
+                forbidden.push(format!("0x{v:x}u"));
+            }
+            forbidden.push(format!(">> {}u", abi::NODE_COUNT_SHIFT));
+            forbidden.push(format!(">> {}u", abi::NODE_BOUND_BITS));
+            forbidden.push(format!("& {}u", abi::NODE_COUNT_MASK));
+            for f in &forbidden {
+                assert!(
+                    !code.contains(f.as_str()),
+                    "{file} writes `{f}`, a number of the ABI"
+                );
+            }
+        }
+    }
+}

@@ -386,7 +386,7 @@ impl Entities {
             );
             stats.blas_builds += 1;
             let node_base = to_u32("BVH nodes", nodes.len())?;
-            let triangle_base = to_u32("triangle slots", triangles.len() / 3)?;
+            let triangle_base = to_u32("triangle slots", triangles.len() / record::TRIANGLE_VEC4S)?;
             let records = quantize(&bvh).map_err(|source| SceneError::MeshLayout {
                 mesh: key.describe(),
                 source,

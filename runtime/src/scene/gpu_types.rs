@@ -504,4 +504,124 @@ mod tests {
         assert_eq!(size("accum"), 16);
         assert_eq!(size("counters"), 4);
     }
+
+    /// Every `u32` constant and record accessor of the generated `rtc:abi` module (what the kernel
+    /// reads) against the values and offsets the runtime encodes with.
+    #[test]
+    fn generated_rtc_abi_matches_the_runtime_encoders() {
+        use rtc_compiler::kernel::generated::{abi_module, parse};
+        let text = abi_module();
+        let runtime: Vec<(&str, u32)> = vec![
+            ("NODE_LEAF_BIT", rtc_bvh::quantized::LEAF_BIT),
+            ("NODE_COUNT_SHIFT", rtc_bvh::quantized::COUNT_SHIFT),
+            ("NODE_COUNT_MASK", rtc_bvh::quantized::MAX_LEAF_COUNT),
+            ("NODE_FIRST_MASK", rtc_bvh::quantized::MAX_FIRST),
+            ("NODE_BOUND_BITS", 16),
+            ("NODE_BOUND_MAX", 0xffff),
+            ("MESH_GEOMETRY", GpuInstance::MESH_GEOMETRY),
+            ("FLAG_ANY_HIT", GpuInstance::FLAG_ANY_HIT),
+            ("FLAG_SECONDARY_RAYS", GpuInstance::FLAG_SECONDARY_RAYS),
+            ("FLAG_MEDIUM", GpuInstance::FLAG_MEDIUM),
+            ("TEXTURE_FORMAT_RGBA8_SRGB", 0),
+            ("TEXTURE_FORMAT_RGBA16F", 1),
+            (
+                "RGBA16F_TEXEL_WORDS",
+                crate::assets::TextureFormat::Rgba16F.words_per_texel() as u32,
+            ),
+            ("COUNTER_NONFINITE", 0),
+            ("COUNTER_RAYS", 1),
+            (
+                "COUNTER_WORDS",
+                crate::scene::upload_for_tests::COUNTER_WORDS as u32,
+            ),
+            ("MESH_STRIDE", record::MESH_WORDS as u32),
+            ("TEXTURE_STRIDE", record::TEXTURE_WORDS as u32),
+            ("LIGHT_ENTRY_STRIDE", record::LIGHT_ENTRY_WORDS as u32),
+            ("MEDIUM_ENTRY_STRIDE", record::MEDIUM_ENTRY_WORDS as u32),
+            ("TRIANGLE_STRIDE", record::TRIANGLE_VEC4S as u32),
+            ("ATTRIBUTE_STRIDE", record::ATTRIBUTE_VEC4S as u32),
+        ];
+        let generated = parse::constants(&text);
+        let as_owned: Vec<(String, u32)> =
+            runtime.iter().map(|(n, v)| (n.to_string(), *v)).collect();
+        assert_eq!(generated, as_owned);
+        // Which format word the texture encoder writes for each format, as the kernel tests it.
+        assert_eq!(abi::TEXTURE_FORMAT_RGBA8_SRGB, 0);
+        assert_eq!(abi::TEXTURE_FORMAT_RGBA16F, 1);
+
+        // Accessors: (name, load, stride, offset) as the encoders lay the records out.
+        let want: Vec<(&str, &str, usize, usize)> = vec![
+            ("mesh_node_base", "load_param", 1, record::MESH_NODE_BASE),
+            ("mesh_slot_base", "load_param", 1, record::MESH_SLOT_BASE),
+            ("mesh_slot_count", "load_param", 1, record::MESH_SLOT_COUNT),
+            ("mesh_reserved", "load_param", 1, 3),
+            (
+                "texture_texel_base",
+                "load_param",
+                1,
+                record::TEXTURE_TEXEL_BASE,
+            ),
+            ("texture_width", "load_param", 1, record::TEXTURE_WIDTH),
+            ("texture_height", "load_param", 1, record::TEXTURE_HEIGHT),
+            ("texture_format", "load_param", 1, record::TEXTURE_FORMAT),
+            (
+                "light_entry_type_id",
+                "load_param",
+                1,
+                record::LIGHT_ENTRY_TYPE_ID,
+            ),
+            (
+                "light_entry_offset",
+                "load_param",
+                1,
+                record::LIGHT_ENTRY_OFFSET,
+            ),
+            (
+                "medium_entry_slot",
+                "load_param",
+                1,
+                record::MEDIUM_ENTRY_SLOT,
+            ),
+            // `encode.rs` pushes v0, v1, v2 per slot, then the two attribute words.
+            (
+                "triangle_v0",
+                "load_triangle_vertex",
+                record::TRIANGLE_VEC4S,
+                0,
+            ),
+            (
+                "triangle_v1",
+                "load_triangle_vertex",
+                record::TRIANGLE_VEC4S,
+                1,
+            ),
+            (
+                "triangle_v2",
+                "load_triangle_vertex",
+                record::TRIANGLE_VEC4S,
+                2,
+            ),
+            (
+                "attribute_normals_uv0",
+                "load_attribute",
+                record::ATTRIBUTE_VEC4S,
+                0,
+            ),
+            (
+                "attribute_uv12",
+                "load_attribute",
+                record::ATTRIBUTE_VEC4S,
+                1,
+            ),
+        ];
+        let got: Vec<(String, String, usize, usize)> = parse::accessors(&text)
+            .into_iter()
+            .map(|a| (a.name, a.load, a.stride as usize, a.offset as usize))
+            .collect();
+        let want: Vec<(String, String, usize, usize)> = want
+            .into_iter()
+            .map(|(n, l, s, o)| (n.to_string(), l.to_string(), s, o))
+            .collect();
+        assert_eq!(got, want);
+    }
 }
