@@ -156,6 +156,21 @@ pub mod record {
     }
 }
 
+// Every record offset the encoders use names a field of the table (`offset_of` is `u32::MAX` for
+// a name it lacks).
+const _: () = {
+    use record::*;
+    assert!(MESH_NODE_BASE < MESH_WORDS);
+    assert!(MESH_SLOT_BASE < MESH_WORDS);
+    assert!(MESH_SLOT_COUNT < MESH_WORDS);
+    assert!(TEXTURE_TEXEL_BASE < TEXTURE_WORDS);
+    assert!(TEXTURE_WIDTH < TEXTURE_WORDS);
+    assert!(TEXTURE_HEIGHT < TEXTURE_WORDS);
+    assert!(TEXTURE_FORMAT < TEXTURE_WORDS);
+    assert!(LIGHT_ENTRY_TYPE_ID < LIGHT_ENTRY_WORDS && LIGHT_ENTRY_OFFSET < LIGHT_ENTRY_WORDS);
+    assert!(MEDIUM_ENTRY_SLOT < MEDIUM_ENTRY_WORDS);
+};
+
 // The encoders write the triangle and attribute slots field by field in this order (`encode.rs`).
 const _: () = assert!(abi::TRIANGLE.offset_of("v0") == 0);
 const _: () = assert!(abi::TRIANGLE.offset_of("v1") == 1);
@@ -532,7 +547,7 @@ mod tests {
             ("COUNTER_RAYS", 1),
             (
                 "COUNTER_WORDS",
-                crate::scene::upload_for_tests::COUNTER_WORDS as u32,
+                (crate::scene::upload_for_tests::COUNTER_BYTES / 4) as u32,
             ),
             ("MESH_STRIDE", record::MESH_WORDS as u32),
             ("TEXTURE_STRIDE", record::TEXTURE_WORDS as u32),

@@ -101,7 +101,7 @@ mod tests;
 /// The naming of a too-large binding's largest part, for the asset tests.
 #[cfg(test)]
 pub(crate) mod upload_for_tests {
-    pub(crate) use super::upload::{name_the_largest_part, COUNTER_WORDS};
+    pub(crate) use super::upload::{name_the_largest_part, COUNTER_BYTES};
 }
 
 pub use encode::{decode_octahedral, octahedral, pack_snorm2x16, unpack_snorm2x16};
@@ -112,7 +112,7 @@ pub use entities::{
 pub use gpu_types::{
     element_size, field_offset, struct_align, struct_size, FrameUniforms, GpuInstance,
 };
-pub use upload::{runtime_binding, GpuScene, UploadReport};
+pub use upload::{runtime_binding, Counters, GpuScene, UploadReport};
 
 use rtc_compiler::diag::{codes, Diagnostic};
 use rtc_compiler::Span;

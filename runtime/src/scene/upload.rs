@@ -19,9 +19,17 @@ use rtc_compiler::back::ResourceKind;
 
 use super::entities::Entities;
 
-/// Words of the `counters` binding ([`abi::COUNTER_WORDS`]).
-pub const COUNTER_WORDS: usize = abi::COUNTER_WORDS as usize;
-const COUNTER_BYTES: u64 = abi::COUNTER_WORDS as u64 * 4;
+/// Bytes of the `counters` binding ([`abi::COUNTER_WORDS`] words).
+pub(crate) const COUNTER_BYTES: u64 = abi::COUNTER_WORDS as u64 * 4;
+
+/// The kernel's counters, read back (indices from the ABI table).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Counters {
+    /// `COUNTER_NONFINITE`: samples that were not finite and were replaced by zero.
+    pub nonfinite: u32,
+    /// `COUNTER_RAYS`: rays traced (camera, secondary and shadow), wrapping.
+    pub rays: u32,
+}
 use super::gpu_types::{element_size, record, struct_size, FrameUniforms, GpuInstance};
 use super::SceneError;
 use crate::gpu::{
@@ -240,22 +248,26 @@ impl GpuScene {
         Ok(read_vec4_f32(gpu, &self.buffers, b.binding)?)
     }
 
-    /// Reads the 4 `counters` back (zeros when the kernel has none).
-    pub fn read_counters(&self, gpu: &Gpu) -> Result<[u32; COUNTER_WORDS], SceneError> {
+    /// Reads the kernel's counters back (zeros when the kernel declares no `counters`).
+    pub fn read_counters(&self, gpu: &Gpu) -> Result<Counters, SceneError> {
         let buffer = abi::binding("counters")
             .filter(|_| self.has("counters"))
             .and_then(|b| self.buffers.buffer(b.binding));
         let Some(buffer) = buffer else {
-            return Ok([0; COUNTER_WORDS]);
+            return Ok(Counters::default());
         };
         let bytes = read_buffer(gpu, buffer, COUNTER_BYTES)?;
-        let mut out = [0u32; COUNTER_WORDS];
-        for (word, chunk) in out.iter_mut().zip(bytes.chunks_exact(4)) {
-            if let Ok(b) = <[u8; 4]>::try_from(chunk) {
-                *word = u32::from_le_bytes(b);
-            }
-        }
-        Ok(out)
+        let word = |index: u32| {
+            let at = index as usize * 4;
+            bytes
+                .get(at..at + 4)
+                .and_then(|b| <[u8; 4]>::try_from(b).ok())
+                .map_or(0, u32::from_le_bytes)
+        };
+        Ok(Counters {
+            nonfinite: word(abi::COUNTER_NONFINITE),
+            rays: word(abi::COUNTER_RAYS),
+        })
     }
 }
 
