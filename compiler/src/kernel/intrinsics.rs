@@ -1,14 +1,15 @@
 //! Lowering of intrinsics for one scene's kernel: the [`KernelHooks`] given to the lowerer.
 //!
-//! - **Framework intrinsics** ([`Intrinsic`]) are functions of the generated `rtc:abi` module. Their
-//!   bodies are placeholders; every call is replaced ([`Intrinsics::lower_call`]): `load_*` read the kernel's
-//!   buffers, `rng_*`, the shaded hit's position error (`hit_error_*`, read by `shadow`), the spawn
+//! - **Framework intrinsics** ([`Intrinsic`]) are functions of the generated `rtc:abi` module.
+//!   Their bodies are placeholders; every call is replaced ([`Intrinsics::lower_call`]): `load_*`
+//!   read the kernel's buffers, `rng_*`, the shaded hit's position error (`hit_error_*`, read by `shadow`), the spawn
 //!   queue, the traversal stack (`stack_load`, `stack_store`), the ray count (`count_ray`, flushed
 //!   to counter `COUNTER_RAYS` by `flush_ray_count`) and a debug kernel's counters (`debug_count`,
 //!   `debug_counts`) use private globals, `accumulate` and `write_bounds` write
 //!   results, and `call_<kind>` calls the generated dispatcher of that program kind.
-//! - **Record accessors** (`mesh_slot_base(m)`, `triangle_v1(slot)`, …, [`abi::accessor`]), the other
-//!   functions of `rtc:abi`, are expanded into the one load of their generated body, with no call.
+//! - **Record accessors** of `rtc:abi` (`mesh_slot_base(m)`, `triangle_v1(slot)`, …,
+//!   [`abi::accessor`]) are expanded into the one load of their generated body, with no call. Its
+//!   remaining functions, the quantised-box decoders (`node_box_lo`, …), are lowered as written.
 //! - **User intrinsics** (spec/programs.md) become calls of the kernel's own functions written in the
 //!   language (`rand()` → `rand_next`, `shadow(…)` → `shadow_query`, …), except `spawn`, which appends to
 //!   the spawn queue.
