@@ -1,4 +1,10 @@
-//! The ABI between the generated kernel and any host: every binding and every GPU struct layout, once.
+//! The ABI between the generated kernel and any host: every binding, every GPU struct layout, every
+//! record the host packs into an array binding and every flag and bit constant, once.
+//!
+//! Structs and bindings are here; records (mesh, texture, light and medium table entries in `params`,
+//! triangle and attribute slots), the BVH node views and bit fields, and the constants are in
+//! [`records`] (re-exported). The role structs' packing in `params` is the language's type layout,
+//! `crate::layout`.
 //!
 //! The kernel assembly reads this table to create naga global variables and struct types; the runtime
 //! reads it to create wgpu bind group layouts and to pack buffers; `manifest.json` carries the same
@@ -18,6 +24,9 @@
 
 use crate::back::{Resource, ResourceKind};
 
+pub mod records;
+pub use records::*;
+
 /// The type of a field of an ABI struct.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FieldType {
@@ -29,10 +38,27 @@ pub enum FieldType {
     Vec2U32,
     /// `vec3<f32>`
     Vec3F32,
+    /// `vec3<u32>`
+    Vec3U32,
     /// `vec4<f32>`
     Vec4F32,
     /// `vec4<u32>`
     Vec4U32,
+}
+
+impl FieldType {
+    /// Its name in the language (and WGSL's short alias): `u32`, `vec3f`, …
+    pub const fn name(self) -> &'static str {
+        match self {
+            FieldType::U32 => "u32",
+            FieldType::F32 => "f32",
+            FieldType::Vec2U32 => "vec2u",
+            FieldType::Vec3F32 => "vec3f",
+            FieldType::Vec3U32 => "vec3u",
+            FieldType::Vec4F32 => "vec4f",
+            FieldType::Vec4U32 => "vec4u",
+        }
+    }
 }
 
 /// A field of an ABI struct.
@@ -95,7 +121,8 @@ pub const FRAME: StructDesc = StructDesc {
     ],
 };
 
-/// A BVH record, scene or object level (32 bytes; the layout is `rtc_bvh::quantized`'s).
+/// A BVH record, scene or object level (32 bytes; the layout is `rtc_bvh::quantized`'s): read as
+/// [`NODE_HEADER`] (record 0 of a BVH) or [`NODE_INNER`] (records 1..) with `bitcast`.
 pub const NODE: StructDesc = StructDesc {
     name: "GpuNode",
     doc: "BVH record: a header (quantisation origin in `min`, root reference in `a`, step size in `max`) or an \
@@ -153,6 +180,9 @@ pub struct BindingDesc {
     /// What it holds, for the manifest.
     pub doc: &'static str,
 }
+
+/// Every struct of the ABI: the bindings' structs and the two views of a BVH record.
+pub const STRUCTS: &[&StructDesc] = &[&FRAME, &TILE, &NODE, &NODE_HEADER, &NODE_INNER, &INSTANCE];
 
 /// Every binding the kernel can have, in binding order.
 pub const BINDINGS: &[BindingDesc] = &[
@@ -228,6 +258,103 @@ pub const BINDINGS: &[BindingDesc] = &[
     },
 ];
 
+// Layout under WGSL's storage-buffer rules, computed from the table (the runtime's unit test checks it
+// against `naga::proc::Layouter`).
+
+/// Size and alignment in bytes of an ABI field type under WGSL's storage layout.
+pub const fn field_layout(ty: FieldType) -> (usize, usize) {
+    match ty {
+        FieldType::U32 | FieldType::F32 => (4, 4),
+        FieldType::Vec2U32 => (8, 8),
+        FieldType::Vec3F32 | FieldType::Vec3U32 => (12, 16),
+        FieldType::Vec4F32 | FieldType::Vec4U32 => (16, 16),
+    }
+}
+
+const fn round_up(x: usize, align: usize) -> usize {
+    x.div_ceil(align) * align
+}
+
+/// Byte offset of field `index` of `s` (the struct's size for `index == fields.len()` before the
+/// final rounding; `usize::MAX` beyond that).
+pub const fn field_offset_at(s: &StructDesc, index: usize) -> usize {
+    if index > s.fields.len() {
+        return usize::MAX;
+    }
+    let mut offset = 0;
+    let mut i = 0;
+    let mut rest = s.fields;
+    while let Some((field, tail)) = rest.split_first() {
+        let (size, align) = field_layout(field.ty);
+        offset = round_up(offset, align);
+        if i == index {
+            return offset;
+        }
+        offset += size;
+        i += 1;
+        rest = tail;
+    }
+    offset
+}
+
+/// Byte offset of the field called `name` in `s`, or `usize::MAX` when there is none (so a
+/// compile-time assert against a Rust offset fails).
+pub const fn field_offset(s: &StructDesc, name: &str) -> usize {
+    let mut i = 0;
+    let mut rest = s.fields;
+    while let Some((field, tail)) = rest.split_first() {
+        if same_name(field.name, name) {
+            return field_offset_at(s, i);
+        }
+        i += 1;
+        rest = tail;
+    }
+    usize::MAX
+}
+
+/// Alignment of `s` in bytes (its largest field alignment, at least 4).
+pub const fn struct_align(s: &StructDesc) -> usize {
+    let mut align = 4;
+    let mut rest = s.fields;
+    while let Some((field, tail)) = rest.split_first() {
+        let (_, a) = field_layout(field.ty);
+        if a > align {
+            align = a;
+        }
+        rest = tail;
+    }
+    align
+}
+
+/// Size of `s` in bytes (the end of its last field, rounded up to its alignment).
+pub const fn struct_size(s: &StructDesc) -> usize {
+    round_up(field_offset_at(s, s.fields.len()), struct_align(s))
+}
+
+/// Size in bytes of one element of a binding (the struct of a uniform, one array element).
+pub const fn element_size(e: Element) -> usize {
+    match e {
+        Element::Struct(s) | Element::StructArray(s) => struct_size(s),
+        Element::Array(t) => field_layout(t).0,
+        Element::Atomics => 4,
+    }
+}
+
+/// Byte-wise string equality in `const` contexts.
+pub(crate) const fn same_name(a: &str, b: &str) -> bool {
+    let (mut a, mut b) = (a.as_bytes(), b.as_bytes());
+    loop {
+        match (a.split_first(), b.split_first()) {
+            (None, None) => return true,
+            (Some((x, at)), Some((y, bt))) if *x == *y => {
+                a = at;
+                b = bt;
+            }
+            _ => return false,
+        }
+    }
+}
+
 /// The back ends' view of a set of bindings.
 pub fn resources<'a>(bindings: impl IntoIterator<Item = &'a BindingDesc>) -> Vec<Resource> {
     bindings
@@ -241,8 +368,15 @@ pub fn resources<'a>(bindings: impl IntoIterator<Item = &'a BindingDesc>) -> Vec
 }
 
 /// The binding with this name.
-pub fn binding(name: &str) -> Option<&'static BindingDesc> {
-    BINDINGS.iter().find(|b| b.name == name)
+pub const fn binding(name: &str) -> Option<&'static BindingDesc> {
+    let mut rest = BINDINGS;
+    while let Some((b, tail)) = rest.split_first() {
+        if same_name(b.name, name) {
+            return Some(b);
+        }
+        rest = tail;
+    }
+    None
 }
 
 #[cfg(test)]

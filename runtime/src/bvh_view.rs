@@ -27,7 +27,7 @@
 
 use glam::Vec3;
 use rtc_bvh::quantized::{Child, QuantizedHeader, QuantizedNode};
-use rtc_bvh::{Aabb, GpuNode};
+use rtc_bvh::{Aabb, NodeRecord};
 
 use crate::image_out::{srgb_to_linear, LinearImage};
 use crate::scene::{Entities, GpuInstance};
@@ -141,7 +141,7 @@ struct NodeView {
 /// union of its children's (a leaf root gets the header's whole quantisation frame). Inner
 /// children lie at larger records than their parent; anything else is a broken buffer and is not
 /// followed.
-fn walk(nodes: &[GpuNode], base: u32, mut visit: impl FnMut(NodeView)) {
+fn walk(nodes: &[NodeRecord], base: u32, mut visit: impl FnMut(NodeView)) {
     let Some(&header) = nodes.get(base as usize) else {
         return;
     };
@@ -264,7 +264,7 @@ pub fn collect_boxes(
 /// plus the sum over leaves of `count · A(n)`, divided by `A(root)` (traversal and intersection
 /// cost 1 each, `rtc_bvh::SahCost::STANDARD`). A root of zero area weighs each node by 1; an empty
 /// tree costs 0.
-pub fn sah_cost(nodes: &[GpuNode], base: u32) -> f64 {
+pub fn sah_cost(nodes: &[NodeRecord], base: u32) -> f64 {
     let mut root_area = None;
     let mut total = 0.0f64;
     walk(nodes, base, |n| {

@@ -485,7 +485,7 @@ impl<'g> Renderer<'g> {
             flush_ms += d.flush_ms;
             tiles += u64::from(d.tiles);
             if passes > 1 {
-                let rays = self.scene.read_counters(gpu)?[1];
+                let rays = self.scene.read_counters(gpu)?.rays;
                 rays_traced += u64::from(rays.wrapping_sub(last_rays));
                 last_rays = rays;
             }
@@ -494,7 +494,7 @@ impl<'g> Renderer<'g> {
         let start = Instant::now();
         let accum = self.scene.read_accumulation(gpu)?;
         let counters = self.scene.read_counters(gpu)?;
-        rays_traced += u64::from(counters[1].wrapping_sub(last_rays));
+        rays_traced += u64::from(counters.rays.wrapping_sub(last_rays));
         let image = LinearImage::from_accumulation(width, height, &accum)?;
         let readback_ms = ms_since(start);
         let messages = gpu.take_uncaptured_errors();
@@ -535,7 +535,7 @@ impl<'g> Renderer<'g> {
             } else {
                 0.0
             },
-            nonfinite_samples: counters[0],
+            nonfinite_samples: counters.nonfinite,
             triangles: es.triangles,
             instanced_triangles: es.instanced_triangles,
             meshes: self.entities.meshes().len() as u32,

@@ -195,6 +195,7 @@ fn wgsl_struct(s: &StructDesc) -> String {
         FieldType::U32 => "u32",
         FieldType::F32 => "f32",
         FieldType::Vec2U32 => "vec2<u32>",
+        FieldType::Vec3U32 => "vec3<u32>",
         FieldType::Vec3F32 => "vec3<f32>",
         FieldType::Vec4F32 => "vec4<f32>",
         FieldType::Vec4U32 => "vec4<u32>",

@@ -53,6 +53,7 @@ fn naga_scalar(t: FieldType) -> (Option<naga::VectorSize>, Scalar) {
         FieldType::F32 => (None, Scalar::F32),
         FieldType::Vec2U32 => (Some(naga::VectorSize::Bi), Scalar::U32),
         FieldType::Vec3F32 => (Some(naga::VectorSize::Tri), Scalar::F32),
+        FieldType::Vec3U32 => (Some(naga::VectorSize::Tri), Scalar::U32),
         FieldType::Vec4F32 => (Some(naga::VectorSize::Quad), Scalar::F32),
         FieldType::Vec4U32 => (Some(naga::VectorSize::Quad), Scalar::U32),
     }

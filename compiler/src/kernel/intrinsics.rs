@@ -1,12 +1,15 @@
 //! Lowering of intrinsics for one scene's kernel: the [`KernelHooks`] given to the lowerer.
 //!
-//! - **Framework intrinsics** are the functions of the generated `rtc:abi` module. Their bodies are
-//!   placeholders; every call is replaced ([`Intrinsics::lower_call`]): `load_*` read the kernel's
-//!   buffers, `rng_*`, the shaded hit's position error (`hit_error_*`, read by `shadow`), the spawn
+//! - **Framework intrinsics** ([`Intrinsic`]) are functions of the generated `rtc:abi` module.
+//!   Their bodies are placeholders; every call is replaced ([`Intrinsics::lower_call`]): `load_*`
+//!   read the kernel's buffers, `rng_*`, the shaded hit's position error (`hit_error_*`, read by `shadow`), the spawn
 //!   queue, the traversal stack (`stack_load`, `stack_store`), the ray count (`count_ray`, flushed
-//!   to counter 1 by `flush_ray_count`) and a debug kernel's counters (`debug_count`,
+//!   to counter `COUNTER_RAYS` by `flush_ray_count`) and a debug kernel's counters (`debug_count`,
 //!   `debug_counts`) use private globals, `accumulate` and `write_bounds` write
 //!   results, and `call_<kind>` calls the generated dispatcher of that program kind.
+//! - **Record accessors** of `rtc:abi` (`mesh_slot_base(m)`, `triangle_v1(slot)`, …,
+//!   [`abi::accessor`]) are expanded into the one load of their generated body, with no call. Its
+//!   remaining functions, the quantised-box decoders (`node_box_lo`, …), are lowered as written.
 //! - **User intrinsics** (spec/programs.md) become calls of the kernel's own functions written in the
 //!   language (`rand()` → `rand_next`, `shadow(…)` → `shadow_query`, …), except `spawn`, which appends to
 //!   the spawn queue.
@@ -15,7 +18,8 @@
 //! it; traversal stack indices are clamped to the stack; a dispatcher is built once per kind, after the programs and loaders it calls.
 
 use super::dispatch::{abi_binding, kernel_error, Generated, LowerCx};
-use super::generated::ABI_MODULE;
+use super::generated::{Intrinsic, ABI_MODULE};
+use crate::abi;
 use crate::link::{KernelConfig, Linked};
 use crate::lower::builder::{FnBuilder, TypeCache};
 use crate::lower::{CallLowering, FunctionCall, IntrinsicCall, Intrinsics, LowerError};
@@ -113,8 +117,23 @@ impl Intrinsics for KernelHooks<'_> {
         if self.program.modules[func.module.index()].name != ABI_MODULE {
             return Ok(CallLowering::Default);
         }
-        self.framework_call(cx, fb, call.callee, call.args, call.span)
-            .map(CallLowering::Done)
+        if let Some(intrinsic) = Intrinsic::from_name(&func.name) {
+            return self
+                .framework_call(cx, fb, intrinsic, call.callee, call.args, call.span)
+                .map(CallLowering::Done);
+        }
+        if let Some(a) = abi::accessor(&func.name) {
+            let r = call
+                .args
+                .first()
+                .copied()
+                .ok_or_else(|| kernel_error(format!("`{}` lacks its argument", func.name)))?;
+            return self
+                .record_field(cx, fb, a, r, call.span)
+                .map(|v| CallLowering::Done(Some(v)));
+        }
+        // The node decoders (`node_box_lo`, …): ordinary functions.
+        Ok(CallLowering::Default)
     }
 }
 
@@ -242,63 +261,88 @@ impl KernelHooks<'_> {
         Ok(fb.load(ptr, span))
     }
 
+    /// A record accessor of `rtc:abi` (`texture_width(t)`, `triangle_v1(slot)`, …): the one load
+    /// its generated body makes, built as the lowering of that body's expression would build it
+    /// (`r + offset` or `r * stride + offset`, literals only where not 0), so the kernel's code is
+    /// the same as with the load written out.
+    fn record_field(
+        &mut self,
+        cx: &mut LowerCx<'_>,
+        fb: &mut FnBuilder,
+        a: abi::Accessor,
+        r: Handle<Expression>,
+        span: Span,
+    ) -> Result<Handle<Expression>, LowerError> {
+        let rec = a.record;
+        let mut index = r;
+        if rec.addressing == abi::Addressing::Slot {
+            let stride = lit_u32(fb, rec.stride);
+            index = fb.binary(BinaryOperator::Multiply, index, stride, span);
+        }
+        if a.field.offset != 0 {
+            let offset = lit_u32(fb, a.field.offset);
+            index = fb.binary(BinaryOperator::Add, index, offset, span);
+        }
+        self.load_binding(cx, fb, rec.binding, Some(index), span)
+    }
+
     /// Lowers a call of a framework intrinsic (a function of `rtc:abi`).
     fn framework_call(
         &mut self,
         cx: &mut LowerCx<'_>,
         fb: &mut FnBuilder,
+        intrinsic: Intrinsic,
         callee: FnId,
         args: &[Handle<Expression>],
         span: Span,
     ) -> Result<Option<Handle<Expression>>, LowerError> {
         let program = self.program;
         let func = &program.functions[callee];
-        let name = func.name.as_str();
+        let name = intrinsic.name();
         let arg = |i: usize| {
             args.get(i)
                 .copied()
                 .ok_or_else(|| kernel_error(format!("`{name}` lacks argument {i}")))
         };
-        let value = match name {
-            "load_frame" => self.load_binding(cx, fb, "frame", None, span)?,
-            "load_tile" => self.load_binding(cx, fb, "tile", None, span)?,
-            "load_node" => self.load_binding(cx, fb, "nodes", Some(arg(0)?), span)?,
-            "load_instance" => self.load_binding(cx, fb, "instances", Some(arg(0)?), span)?,
-            "load_triangle_vertex" => {
-                self.load_binding(cx, fb, "triangles", Some(arg(0)?), span)?
-            }
-            "load_attribute" => self.load_binding(cx, fb, "attributes", Some(arg(0)?), span)?,
-            "load_param" => self.load_binding(cx, fb, "params", Some(arg(0)?), span)?,
-            "load_texel" => self.load_binding(cx, fb, "texels", Some(arg(0)?), span)?,
-            "accumulate" => {
+        use Intrinsic as I;
+        let value = match intrinsic {
+            I::LoadFrame => self.load_binding(cx, fb, "frame", None, span)?,
+            I::LoadTile => self.load_binding(cx, fb, "tile", None, span)?,
+            I::LoadNode => self.load_binding(cx, fb, "nodes", Some(arg(0)?), span)?,
+            I::LoadInstance => self.load_binding(cx, fb, "instances", Some(arg(0)?), span)?,
+            I::LoadTriangleVertex => self.load_binding(cx, fb, "triangles", Some(arg(0)?), span)?,
+            I::LoadAttribute => self.load_binding(cx, fb, "attributes", Some(arg(0)?), span)?,
+            I::LoadParam => self.load_binding(cx, fb, "params", Some(arg(0)?), span)?,
+            I::LoadTexel => self.load_binding(cx, fb, "texels", Some(arg(0)?), span)?,
+            I::Accumulate => {
                 self.accumulate(cx, fb, [arg(0)?, arg(1)?, arg(2)?, arg(3)?], span)?;
                 return Ok(None);
             }
-            "write_bounds" => {
+            I::WriteBounds => {
                 self.write_bounds(cx, fb, arg(0)?, arg(1)?, arg(2)?, span)?;
                 return Ok(None);
             }
-            "rng_load" | "rng_store" => {
+            I::RngLoad | I::RngStore => {
                 let u = TypeCache::scalar(cx.module_mut(), Scalar::U32);
                 let g = self.generated.private(cx, "rng_state", u);
                 let p = fb.expr(Expression::GlobalVariable(g), span);
-                if name == "rng_store" {
+                if intrinsic == I::RngStore {
                     fb.store(p, arg(0)?, span);
                     return Ok(None);
                 }
                 fb.load(p, span)
             }
-            "hit_error_load" | "hit_error_store" => {
+            I::HitErrorLoad | I::HitErrorStore => {
                 let f = TypeCache::scalar(cx.module_mut(), Scalar::F32);
                 let g = self.generated.private(cx, "hit_error", f);
                 let p = fb.expr(Expression::GlobalVariable(g), span);
-                if name == "hit_error_store" {
+                if intrinsic == I::HitErrorStore {
                     fb.store(p, arg(0)?, span);
                     return Ok(None);
                 }
                 fb.load(p, span)
             }
-            "stack_load" | "stack_store" => {
+            I::StackLoad | I::StackStore => {
                 let g = self.traversal_stack(cx);
                 let base = fb.expr(Expression::GlobalVariable(g), span);
                 // Clamped like every array index of the language: never outside the stack.
@@ -314,13 +358,13 @@ impl KernelHooks<'_> {
                     span,
                 );
                 let p = fb.expr(Expression::Access { base, index: i }, span);
-                if name == "stack_store" {
+                if intrinsic == I::StackStore {
                     fb.store(p, arg(1)?, span);
                     return Ok(None);
                 }
                 fb.load(p, span)
             }
-            "count_ray" => {
+            I::CountRay => {
                 let g = self.ray_count(cx);
                 let p = fb.expr(Expression::GlobalVariable(g), span);
                 let old = fb.load(p, span);
@@ -336,7 +380,7 @@ impl KernelHooks<'_> {
                 fb.store(p, new, span);
                 return Ok(None);
             }
-            "flush_ray_count" => {
+            I::FlushRayCount => {
                 let program = self.program;
                 let g = self.ray_count(cx);
                 let p = fb.expr(Expression::GlobalVariable(g), span);
@@ -345,7 +389,13 @@ impl KernelHooks<'_> {
                     .generated
                     .binding(cx, program, abi_binding("counters")?)?;
                 let c = fb.expr(Expression::GlobalVariable(counters), span);
-                let second = fb.expr(Expression::AccessIndex { base: c, index: 1 }, span);
+                let second = fb.expr(
+                    Expression::AccessIndex {
+                        base: c,
+                        index: abi::COUNTER_RAYS,
+                    },
+                    span,
+                );
                 fb.stmt(
                     Statement::Atomic {
                         pointer: second,
@@ -357,7 +407,7 @@ impl KernelHooks<'_> {
                 );
                 return Ok(None);
             }
-            "debug_count" => {
+            I::DebugCount => {
                 let (nodes, prims) = self.debug_counters(cx);
                 for (g, i) in [(nodes, 0), (prims, 1)] {
                     let p = fb.expr(Expression::GlobalVariable(g), span);
@@ -374,7 +424,7 @@ impl KernelHooks<'_> {
                 }
                 return Ok(None);
             }
-            "debug_counts" => {
+            I::DebugCounts => {
                 let (nodes, prims) = self.debug_counters(cx);
                 let pn = fb.expr(Expression::GlobalVariable(nodes), span);
                 let n = fb.load(pn, span);
@@ -389,14 +439,14 @@ impl KernelHooks<'_> {
                     span,
                 )
             }
-            "spawn_reset" => {
+            I::SpawnReset => {
                 let (_, _, count) = self.spawn_queue(cx);
                 let p = fb.expr(Expression::GlobalVariable(count), span);
                 let zero = lit_u32(fb, 0);
                 fb.store(p, zero, span);
                 return Ok(None);
             }
-            "spawned_count" => {
+            I::SpawnedCount => {
                 let (_, _, count) = self.spawn_queue(cx);
                 let p = fb.expr(Expression::GlobalVariable(count), span);
                 let n = fb.load(p, span);
@@ -412,9 +462,13 @@ impl KernelHooks<'_> {
                     span,
                 )
             }
-            "spawned_dir" | "spawned_weight" => {
+            I::SpawnedDir | I::SpawnedWeight => {
                 let (dirs, weights, _) = self.spawn_queue(cx);
-                let g = if name == "spawned_dir" { dirs } else { weights };
+                let g = if intrinsic == I::SpawnedDir {
+                    dirs
+                } else {
+                    weights
+                };
                 let p = fb.expr(Expression::GlobalVariable(g), span);
                 let e = fb.expr(
                     Expression::Access {
@@ -425,12 +479,7 @@ impl KernelHooks<'_> {
                 );
                 fb.load(e, span)
             }
-            _ => {
-                let Some(kind) = name.strip_prefix("call_").and_then(ProgramKind::from_name) else {
-                    return Err(kernel_error(format!(
-                        "unknown framework intrinsic `{name}`"
-                    )));
-                };
+            I::Call(kind) => {
                 let params: Vec<(String, TypeId)> = func
                     .params
                     .iter()
@@ -596,7 +645,13 @@ impl KernelHooks<'_> {
         );
         fb.push_block();
         let c = fb.expr(Expression::GlobalVariable(counters), span);
-        let first = fb.expr(Expression::AccessIndex { base: c, index: 0 }, span);
+        let first = fb.expr(
+            Expression::AccessIndex {
+                base: c,
+                index: abi::COUNTER_NONFINITE,
+            },
+            span,
+        );
         fb.stmt(
             Statement::Atomic {
                 pointer: first,

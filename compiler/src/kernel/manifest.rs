@@ -4,7 +4,15 @@
 //! binding, name, kind, and the element layout with member offsets and sizes as naga's layouter computes
 //! them for the emitted code), every linked type and program with its kind, name and dispatch id, the
 //! layouts of the role structs in `params`, the kernel's constants, the workgroup sizes, and a
-//! `left_out` list: programs, features and bindings the scene does not need, each with the reason.
+//! `left_out` list: programs, features and bindings the scene does not need, each with the reason;
+//! last, `abi`: the whole ABI table ([`crate::abi`]): every struct (size, alignment, field offsets in
+//! bytes), every record the host packs into an array binding (binding, addressing, stride, field
+//! offsets in elements), the bit fields of BVH child references and quantised boxes, and every
+//! constant (flags, `MESH_GEOMETRY`, texture formats, counter indices). With it and the
+//! `params_layouts`, a host in another language fills every buffer without rtc's runtime (the test
+//! `runtime/tests/manifest_decode.rs` decodes a scene's buffers from it alone).
+//!
+//! Format 2 added `abi`.
 //!
 //! Invariant: the manifest is deterministic (sorted, no hash-map order), so it can be a golden file.
 
@@ -66,6 +74,160 @@ struct Kernel {
 }
 
 #[derive(Serialize)]
+struct AbiField {
+    name: &'static str,
+    /// Bytes (structs) or elements of the binding (records).
+    offset: u32,
+    #[serde(rename = "type")]
+    ty: &'static str,
+    size: u32,
+    #[serde(skip_serializing_if = "str::is_empty")]
+    doc: &'static str,
+}
+
+#[derive(Serialize)]
+struct AbiStruct {
+    name: &'static str,
+    size: u32,
+    align: u32,
+    fields: Vec<AbiField>,
+    doc: &'static str,
+}
+
+#[derive(Serialize)]
+struct AbiRecord {
+    name: &'static str,
+    binding: &'static str,
+    /// `word_offset` (`params` records: addressed by their first word) or `slot`.
+    addressing: &'static str,
+    /// Elements of the binding per record.
+    stride: u32,
+    element_type: &'static str,
+    element_size: u32,
+    fields: Vec<AbiField>,
+    doc: &'static str,
+}
+
+#[derive(Serialize)]
+struct AbiBits {
+    name: &'static str,
+    shift: u32,
+    mask: u32,
+    doc: &'static str,
+}
+
+#[derive(Serialize)]
+struct AbiBitFields {
+    name: &'static str,
+    fields: Vec<AbiBits>,
+    doc: &'static str,
+}
+
+#[derive(Serialize)]
+struct AbiConstant {
+    name: &'static str,
+    value: u32,
+    doc: &'static str,
+}
+
+/// The whole ABI table: what a host needs to fill the buffers, whatever the scene.
+#[derive(Serialize)]
+struct Abi {
+    structs: Vec<AbiStruct>,
+    records: Vec<AbiRecord>,
+    bit_fields: Vec<AbiBitFields>,
+    constants: Vec<AbiConstant>,
+}
+
+fn abi_table() -> Abi {
+    let structs = abi::STRUCTS
+        .iter()
+        .map(|s| AbiStruct {
+            name: s.name,
+            size: abi::struct_size(s) as u32,
+            align: abi::struct_align(s) as u32,
+            fields: s
+                .fields
+                .iter()
+                .enumerate()
+                .map(|(i, f)| AbiField {
+                    name: f.name,
+                    offset: abi::field_offset_at(s, i) as u32,
+                    ty: f.ty.name(),
+                    size: abi::field_layout(f.ty).0 as u32,
+                    doc: "",
+                })
+                .collect(),
+            doc: s.doc,
+        })
+        .collect();
+    let records = abi::RECORDS
+        .iter()
+        .map(|r| {
+            let element = abi::binding(r.binding).map_or(abi::Element::Atomics, |b| b.element);
+            let element_type = match element {
+                abi::Element::Array(t) => t.name(),
+                _ => "",
+            };
+            AbiRecord {
+                name: r.name,
+                binding: r.binding,
+                addressing: match r.addressing {
+                    abi::Addressing::WordOffset => "word_offset",
+                    abi::Addressing::Slot => "slot",
+                },
+                stride: r.stride,
+                element_type,
+                element_size: abi::element_size(element) as u32,
+                fields: r
+                    .fields
+                    .iter()
+                    .map(|f| AbiField {
+                        name: f.name,
+                        offset: f.offset,
+                        ty: f.ty.name(),
+                        size: abi::field_layout(f.ty).0 as u32,
+                        doc: f.doc,
+                    })
+                    .collect(),
+                doc: r.doc,
+            }
+        })
+        .collect();
+    let bit_fields = abi::BIT_FIELDS
+        .iter()
+        .map(|d| AbiBitFields {
+            name: d.name,
+            fields: d
+                .fields
+                .iter()
+                .map(|f| AbiBits {
+                    name: f.name,
+                    shift: f.shift,
+                    mask: f.mask,
+                    doc: f.doc,
+                })
+                .collect(),
+            doc: d.doc,
+        })
+        .collect();
+    let constants = abi::CONSTANTS
+        .iter()
+        .map(|c| AbiConstant {
+            name: c.name,
+            value: c.value,
+            doc: c.doc,
+        })
+        .collect();
+    Abi {
+        structs,
+        records,
+        bit_fields,
+        constants,
+    }
+}
+
+#[derive(Serialize)]
 struct Manifest {
     format: u32,
     scene: String,
@@ -74,6 +236,7 @@ struct Manifest {
     params_layouts: Vec<ParamLayout>,
     constants: std::collections::BTreeMap<&'static str, serde_json::Value>,
     left_out: Vec<LeftOut>,
+    abi: Abi,
 }
 
 fn kind_name(k: ResourceKind) -> &'static str {
@@ -221,13 +384,14 @@ pub fn manifest_json(c: &CompiledScene) -> String {
         }
     }
     let m = Manifest {
-        format: 1,
+        format: 2,
         scene: program.scenes[c.scene].name.clone(),
         kernels,
         programs,
         params_layouts,
         constants,
         left_out,
+        abi: abi_table(),
     };
     let mut s = serde_json::to_string_pretty(&m).unwrap_or_default();
     s.push('\n');

@@ -1,8 +1,8 @@
 //! The full-precision node layout, [`GpuNode`], and [`flatten`], the only converter from the
 //! canonical [`Bvh`] to it. The CPU reference in [`crate::traverse`] reads any BVH in it. The GPU
 //! kernel reads every BVH (scene and object level) in the quantised layout of
-//! [`crate::quantized`], whose 32-byte records the node buffer declares as `GpuNode`s (same size,
-//! alignment and field offsets).
+//! [`crate::quantized`], whose 32-byte records ([`crate::NodeRecord`]) the kernel's node buffer
+//! declares as its `GpuNode` struct (same size, alignment and field offsets as this one).
 //!
 //! # Layout of the node buffer
 //!

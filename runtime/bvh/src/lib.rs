@@ -13,8 +13,8 @@
 //!  Bvh   canonical: nodes in depth-first sibling-pair order + primitive index list
 //!      │  stats, sah_cost, max_depth, validate, reorder
 //!      ▼
-//!  flatten(&Bvh) → Vec<GpuNode>        32-byte #[repr(C)] nodes, every bit documented (scene level)
-//!  quantized::quantize(&Bvh)           meshes: one 32-byte record per inner node, 16-bit child boxes
+//!  flatten(&Bvh) → Vec<GpuNode>        32-byte #[repr(C)] full-precision nodes (CPU reference)
+//!  quantized::quantize(&Bvh)           the GPU layout: one 32-byte NodeRecord per inner node, 16-bit child boxes
 //!      ▼
 //!  traverse::{closest_hit, any_hit,    CPU reference of the GPU kernel, over either layout
 //!            closest_hit_quantized, any_hit_quantized}
@@ -68,3 +68,4 @@ pub use bvh::{Bvh, BvhNode, BvhStats, LayoutError, NodeKind, MAX_DEPTH};
 pub use gpu::{flatten, GpuNode};
 pub use input::MAX_COORD;
 pub use preset::{BuildParams, BuildPreset, SahCost, SpatialSplits};
+pub use quantized::NodeRecord;

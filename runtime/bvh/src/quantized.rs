@@ -44,8 +44,11 @@
 //! would be a leaf of 15 slots from slot `MAX_FIRST`, past the `MAX_FIRST + 1` slots a BVH may
 //! have ([`QuantizeError::TooManySlots`]).
 //!
-//! In WGSL the records are read as the node buffer's `GpuNode` (same size, alignment and
-//! offsets), with `bitcast<vec3u>` of `min` and `max` for the quantised boxes.
+//! A record of either kind is a [`NodeRecord`] (the element of the node buffer). In WGSL the
+//! records are read as the node buffer's `GpuNode` (same size, alignment and offsets), with
+//! `bitcast<vec3u>` of `min` and `max` for the quantised boxes. The ABI table
+//! (`rtc_compiler::abi::{NODE_HEADER, NODE_INNER, NODE_REFERENCE}`) describes the same layout and
+//! bits for the kernel and other hosts; the runtime asserts that the two agree.
 
 use bytemuck::{Pod, Zeroable};
 use glam::{Vec3, Vec3A};
@@ -54,6 +57,15 @@ use rayon::prelude::*;
 use crate::aabb::Aabb;
 use crate::bvh::{Bvh, NodeKind};
 use crate::gpu::GpuNode;
+
+/// One 32-byte record of the node buffer: a [`QuantizedHeader`] or a [`QuantizedNode`] (which one
+/// depends on its index relative to its BVH's base). The buffer holds nothing else.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Pod, Zeroable)]
+#[repr(C, align(16))]
+pub struct NodeRecord {
+    /// The record's words.
+    pub words: [u32; 8],
+}
 
 /// Bit 31 of a child reference: a leaf.
 pub const LEAF_BIT: u32 = 1 << 31;
@@ -97,6 +109,8 @@ pub struct QuantizedNode {
 
 static_assertions::assert_eq_size!(QuantizedHeader, GpuNode);
 static_assertions::assert_eq_size!(QuantizedNode, GpuNode);
+static_assertions::assert_eq_size!(NodeRecord, GpuNode);
+static_assertions::const_assert_eq!(std::mem::align_of::<NodeRecord>(), 16);
 static_assertions::const_assert_eq!(std::mem::align_of::<QuantizedHeader>(), 16);
 static_assertions::const_assert_eq!(std::mem::align_of::<QuantizedNode>(), 16);
 static_assertions::const_assert_eq!(std::mem::offset_of!(QuantizedHeader, origin), 0);
@@ -213,14 +227,14 @@ impl QuantizedHeader {
 
 impl QuantizedBvh {
     /// The records as the GPU node buffer holds them (header first).
-    pub fn to_gpu_nodes(&self) -> Vec<GpuNode> {
+    pub fn to_gpu_nodes(&self) -> Vec<NodeRecord> {
         let mut out = Vec::with_capacity(self.record_count());
         self.append_gpu_nodes(&mut out);
         out
     }
 
     /// Appends the records to a GPU node buffer (header first).
-    pub fn append_gpu_nodes(&self, out: &mut Vec<GpuNode>) {
+    pub fn append_gpu_nodes(&self, out: &mut Vec<NodeRecord>) {
         out.push(bytemuck::cast(self.header));
         out.extend_from_slice(bytemuck::cast_slice(&self.nodes));
     }
@@ -231,7 +245,7 @@ impl QuantizedBvh {
     }
 
     /// Reads the records back from a GPU node buffer slice (header first).
-    pub fn from_gpu_nodes(records: &[GpuNode]) -> Option<Self> {
+    pub fn from_gpu_nodes(records: &[NodeRecord]) -> Option<Self> {
         let (&header, rest) = records.split_first()?;
         Some(Self {
             header: bytemuck::cast(header),

@@ -1,6 +1,8 @@
 //! Encoding a mesh's triangles for the GPU: positions in BVH leaf order (`triangles`), and normals
 //! and uvs compressed to 8 words per triangle (`attributes`).
 //!
+//! The records are the ABI's `TRIANGLE` and `ATTRIBUTE` (`rtc_compiler::abi`); `gpu_types.rs`
+//! asserts at compile time that their strides and field offsets are the order written here.
 //! Per triangle slot `s` of a mesh (slot `s` holds triangle `t = bvh.prim_indices()[s]` of the mesh):
 //! - `triangles[3s..3s+3]`: `[v0.xyz, f32::from_bits(t)]`, `[v1.xyz, 0]`, `[v2.xyz, 0]`, object space;
 //! - `attributes[2s]`: `[oct(n0), oct(n1), oct(n2), f16x2(uv0)]`, `attributes[2s+1]`:
@@ -19,6 +21,8 @@ use rtc_bvh::Bvh;
 
 use crate::assets::texture::pack_f16x2;
 use crate::assets::MeshData;
+
+use super::gpu_types::record;
 
 /// Packs two values in `[-1, 1]` like WGSL's `pack2x16snorm` (the first in the low 16 bits).
 pub fn pack_snorm2x16(a: f32, b: f32) -> u32 {
@@ -86,8 +90,8 @@ pub fn encode_mesh(
         .as_deref()
         .filter(|u| u.len() == mesh.positions.len());
     let slots = bvh.prim_indices();
-    triangles.reserve(slots.len() * 3);
-    attributes.reserve(slots.len() * 2);
+    triangles.reserve(slots.len() * record::TRIANGLE_VEC4S);
+    attributes.reserve(slots.len() * record::ATTRIBUTE_VEC4S);
     for &t in slots {
         let idx = mesh
             .indices

@@ -29,7 +29,8 @@ use std::time::Instant;
 
 use glam::{Mat4, Vec3, Vec4};
 use rtc_bvh::quantized::quantize;
-use rtc_bvh::{build, build_with_params, Aabb, BuildInput, BuildPreset, GpuNode};
+use rtc_bvh::{build, build_with_params, Aabb, BuildInput, BuildPreset, NodeRecord};
+use rtc_compiler::abi;
 use rtc_compiler::link::Linked;
 use rtc_compiler::sema::hir::{
     Geometry, Instance, Program, ProgramKind, SceneDesc, Settings, StructId,
@@ -38,7 +39,7 @@ use rtc_compiler::Span;
 
 use super::assets_cache::AssetCache;
 use super::encode::encode_mesh;
-use super::gpu_types::{FrameUniforms, GpuInstance};
+use super::gpu_types::{record, FrameUniforms, GpuInstance};
 use super::models;
 use super::params::ParamsBuilder;
 use super::SceneError;
@@ -209,7 +210,7 @@ pub struct Entities {
     light_table: u32,
     medium_table: u32,
     medium_count: u32,
-    nodes: Vec<GpuNode>,
+    nodes: Vec<NodeRecord>,
     blas_nodes: u32,
     triangles: Vec<[f32; 4]>,
     attributes: Vec<[u32; 4]>,
@@ -370,7 +371,7 @@ impl Entities {
 
         // 3. One BLAS per distinct mesh, triangles in leaf order.
         let start = Instant::now();
-        let mut nodes: Vec<GpuNode> = Vec::new();
+        let mut nodes: Vec<NodeRecord> = Vec::new();
         let mut triangles = Vec::new();
         let mut attributes = Vec::new();
         let mut meshes = Vec::with_capacity(cache.meshes.len());
@@ -385,7 +386,7 @@ impl Entities {
             );
             stats.blas_builds += 1;
             let node_base = to_u32("BVH nodes", nodes.len())?;
-            let triangle_base = to_u32("triangle slots", triangles.len() / 3)?;
+            let triangle_base = to_u32("triangle slots", triangles.len() / record::TRIANGLE_VEC4S)?;
             let records = quantize(&bvh).map_err(|source| SceneError::MeshLayout {
                 mesh: key.describe(),
                 source,
@@ -437,15 +438,23 @@ impl Entities {
         let start = Instant::now();
         let mut params = ParamsBuilder::default();
         for ((key, _), mesh) in cache.meshes.iter().zip(&meshes) {
-            let at = params.push_record([mesh.node_base, mesh.triangle_base, mesh.slots, 0])?;
+            let mut record = [0; record::MESH_WORDS];
+            record[record::MESH_NODE_BASE] = mesh.node_base;
+            record[record::MESH_SLOT_BASE] = mesh.triangle_base;
+            record[record::MESH_SLOT_COUNT] = mesh.slots;
+            let at = params.push_words(&record)?;
             params.mesh_records.insert(key.clone(), at);
         }
         for ((key, _), tex) in cache.textures.iter().zip(&textures) {
-            let format = match tex.format {
-                TextureFormat::Rgba8Srgb => 0,
-                TextureFormat::Rgba16F => 1,
+            let mut record = [0; record::TEXTURE_WORDS];
+            record[record::TEXTURE_TEXEL_BASE] = tex.texel_base;
+            record[record::TEXTURE_WIDTH] = tex.width;
+            record[record::TEXTURE_HEIGHT] = tex.height;
+            record[record::TEXTURE_FORMAT] = match tex.format {
+                TextureFormat::Rgba8Srgb => abi::TEXTURE_FORMAT_RGBA8_SRGB,
+                TextureFormat::Rgba16F => abi::TEXTURE_FORMAT_RGBA16F,
             };
-            let at = params.push_record([tex.texel_base, tex.width, tex.height, format])?;
+            let at = params.push_words(&record)?;
             params.texture_records.insert(key.clone(), at);
         }
         let typed =
@@ -516,7 +525,15 @@ impl Entities {
         for light in scene.lights.iter().chain(&models.lights) {
             lights.push(typed(&mut params, light)?);
         }
-        let table: Vec<u32> = lights.iter().flat_map(|l| [l.type_id, l.offset]).collect();
+        let table: Vec<u32> = lights
+            .iter()
+            .flat_map(|l| {
+                let mut entry = [0; record::LIGHT_ENTRY_WORDS];
+                entry[record::LIGHT_ENTRY_TYPE_ID] = l.type_id;
+                entry[record::LIGHT_ENTRY_OFFSET] = l.offset;
+                entry
+            })
+            .collect();
         let light_table = params.push_words(&table)?;
         let medium_table = params.offset()?;
         stats.pack_ms = ms_since(start);
@@ -687,7 +704,11 @@ impl Entities {
             .iter()
             .zip(&slot_of)
             .filter(|(o, &slot)| o.flags & GpuInstance::FLAG_MEDIUM != 0 && slot != u32::MAX)
-            .map(|(_, &slot)| slot)
+            .flat_map(|(_, &slot)| {
+                let mut entry = [0; record::MEDIUM_ENTRY_WORDS];
+                entry[record::MEDIUM_ENTRY_SLOT] = slot;
+                entry
+            })
             .collect();
         let table_start = self.medium_table as usize;
         if self.params.get(table_start..) != Some(&media[..]) {
@@ -696,7 +717,7 @@ impl Entities {
             to_u32("parameter words", self.params.len())?;
             self.versions.params = next_version();
         }
-        self.medium_count = media.len() as u32;
+        self.medium_count = (media.len() / record::MEDIUM_ENTRY_WORDS) as u32;
 
         if self.stats.tlas_depth > self.stacks.0 {
             let warning = format!(
@@ -781,7 +802,7 @@ impl Entities {
     }
 
     /// Every BVH node: the BLASes, then the TLAS from [`tlas_root`](Self::tlas_root).
-    pub fn nodes(&self) -> &[GpuNode] {
+    pub fn nodes(&self) -> &[NodeRecord] {
         &self.nodes
     }
 

@@ -1,112 +1,26 @@
-//! Host mirrors of the ABI's GPU structs ([`FrameUniforms`], [`GpuInstance`]) and the layout of any
-//! [`abi`] struct computed from the table itself.
+//! Host mirrors of the ABI's GPU structs ([`FrameUniforms`], [`GpuInstance`]), the layout of any
+//! [`abi`] struct computed from the table itself, and the record offsets ([`record`]) and constants
+//! the encoders use, taken from the table.
 //!
 //! The ABI table (`rtc_compiler::abi`) is the one definition of every struct the kernel and the host
-//! share. This file does not restate it: [`struct_size`] and [`field_offset`] compute the WGSL
-//! storage-buffer layout (scalars aligned to 4, `vec2` to 8, `vec3` and `vec4` to 16; a struct's size
-//! rounded up to its largest alignment) straight from [`abi::StructDesc`], and compile-time asserts tie
+//! share. This file does not restate it: [`struct_size`] and [`field_offset`] (the table's own
+//! `const fn`s, re-exported) compute the WGSL storage-buffer layout (scalars aligned to 4, `vec2` to
+//! 8, `vec3` and `vec4` to 16; a struct's size rounded up to its largest alignment) straight from
+//! [`abi::StructDesc`], and compile-time asserts tie
 //! every field of the Rust mirrors to it. A unit test builds the same structs as naga types and checks
 //! sizes and offsets with `naga::proc::Layouter`, and the mirror of the tile uniform,
 //! `gpu::TileParams`, is checked against [`abi::TILE`] the same way.
 //!
+//! Compile-time asserts also tie `rtc_bvh::quantized`'s records and reference bits, the texel
+//! formats and the slot encoders to the table.
+//!
 //! Invariants: the mirrors are `#[repr(C)]` + `bytemuck::Pod`, without implicit padding; a change to
-//! `abi.rs` that the mirrors do not follow fails to compile.
+//! the ABI table that the mirrors or encoders do not follow fails to compile.
 
 use bytemuck::{Pod, Zeroable};
-use rtc_compiler::abi::{self, Element, FieldType, StructDesc};
+use rtc_compiler::abi;
 
-/// Size and alignment in bytes of an ABI field type under WGSL's storage layout.
-pub const fn field_layout(ty: FieldType) -> (usize, usize) {
-    match ty {
-        FieldType::U32 | FieldType::F32 => (4, 4),
-        FieldType::Vec2U32 => (8, 8),
-        FieldType::Vec3F32 => (12, 16),
-        FieldType::Vec4F32 | FieldType::Vec4U32 => (16, 16),
-    }
-}
-
-const fn round_up(x: usize, align: usize) -> usize {
-    x.div_ceil(align) * align
-}
-
-/// Byte offset of field `index` of `s` (the struct's size for `index == fields.len()` before the
-/// final rounding; `usize::MAX` beyond that).
-pub const fn field_offset_at(s: &StructDesc, index: usize) -> usize {
-    if index > s.fields.len() {
-        return usize::MAX;
-    }
-    let mut offset = 0;
-    let mut i = 0;
-    let mut rest = s.fields;
-    while let Some((field, tail)) = rest.split_first() {
-        let (size, align) = field_layout(field.ty);
-        offset = round_up(offset, align);
-        if i == index {
-            return offset;
-        }
-        offset += size;
-        i += 1;
-        rest = tail;
-    }
-    offset
-}
-
-const fn same_name(a: &str, b: &str) -> bool {
-    let (mut a, mut b) = (a.as_bytes(), b.as_bytes());
-    loop {
-        match (a.split_first(), b.split_first()) {
-            (None, None) => return true,
-            (Some((x, at)), Some((y, bt))) if *x == *y => {
-                a = at;
-                b = bt;
-            }
-            _ => return false,
-        }
-    }
-}
-
-/// Byte offset of the field called `name` in `s`, or `usize::MAX` when there is none (so a
-/// compile-time assert against a Rust offset fails).
-pub const fn field_offset(s: &StructDesc, name: &str) -> usize {
-    let mut i = 0;
-    let mut rest = s.fields;
-    while let Some((field, tail)) = rest.split_first() {
-        if same_name(field.name, name) {
-            return field_offset_at(s, i);
-        }
-        i += 1;
-        rest = tail;
-    }
-    usize::MAX
-}
-
-/// Alignment of `s` in bytes (its largest field alignment, at least 4).
-pub const fn struct_align(s: &StructDesc) -> usize {
-    let mut align = 4;
-    let mut rest = s.fields;
-    while let Some((field, tail)) = rest.split_first() {
-        let (_, a) = field_layout(field.ty);
-        if a > align {
-            align = a;
-        }
-        rest = tail;
-    }
-    align
-}
-
-/// Size of `s` in bytes (the end of its last field, rounded up to its alignment).
-pub const fn struct_size(s: &StructDesc) -> usize {
-    round_up(field_offset_at(s, s.fields.len()), struct_align(s))
-}
-
-/// Size in bytes of one element of a binding (the struct of a uniform, one array element).
-pub const fn element_size(e: Element) -> usize {
-    match e {
-        Element::Struct(s) | Element::StructArray(s) => struct_size(s),
-        Element::Array(t) => field_layout(t).0,
-        Element::Atomics => 4,
-    }
-}
+pub use rtc_compiler::abi::{element_size, field_offset, struct_align, struct_size};
 
 /// `FrameUniforms` ([`abi::FRAME`]): per-scene constants, one uniform buffer.
 ///
@@ -184,15 +98,104 @@ pub struct GpuInstance {
 }
 
 impl GpuInstance {
-    /// `geometry_type` of a built-in triangle mesh.
-    pub const MESH_GEOMETRY: u32 = 0xffff_ffff;
-    /// `flags`: the material has an `@any_hit` program.
-    pub const FLAG_ANY_HIT: u32 = 1;
-    /// `flags`: the material has a `@secondary_rays` program.
-    pub const FLAG_SECONDARY_RAYS: u32 = 2;
-    /// `flags`: the material has a `@medium` program.
-    pub const FLAG_MEDIUM: u32 = 4;
+    /// `geometry_type` of a built-in triangle mesh ([`abi::MESH_GEOMETRY`]).
+    pub const MESH_GEOMETRY: u32 = abi::MESH_GEOMETRY;
+    /// `flags`: the material has an `@any_hit` program ([`abi::FLAG_ANY_HIT`]).
+    pub const FLAG_ANY_HIT: u32 = abi::FLAG_ANY_HIT;
+    /// `flags`: the material has a `@secondary_rays` program ([`abi::FLAG_SECONDARY_RAYS`]).
+    pub const FLAG_SECONDARY_RAYS: u32 = abi::FLAG_SECONDARY_RAYS;
+    /// `flags`: the material has a `@medium` program ([`abi::FLAG_MEDIUM`]).
+    pub const FLAG_MEDIUM: u32 = abi::FLAG_MEDIUM;
 }
+
+/// Element offsets of the ABI's records ([`abi::records`]) for the encoders, each looked up in the
+/// table at compile time (a field the table lacks fails to compile).
+pub mod record {
+    use rtc_compiler::abi;
+
+    /// Words of a mesh record.
+    pub const MESH_WORDS: usize = abi::MESH.stride as usize;
+    /// `mesh.node_base`
+    pub const MESH_NODE_BASE: usize = abi::MESH.offset_of("node_base") as usize;
+    /// `mesh.slot_base`
+    pub const MESH_SLOT_BASE: usize = abi::MESH.offset_of("slot_base") as usize;
+    /// `mesh.slot_count`
+    pub const MESH_SLOT_COUNT: usize = abi::MESH.offset_of("slot_count") as usize;
+    /// Words of a texture record.
+    pub const TEXTURE_WORDS: usize = abi::TEXTURE.stride as usize;
+    /// `texture.texel_base`
+    pub const TEXTURE_TEXEL_BASE: usize = abi::TEXTURE.offset_of("texel_base") as usize;
+    /// `texture.width`
+    pub const TEXTURE_WIDTH: usize = abi::TEXTURE.offset_of("width") as usize;
+    /// `texture.height`
+    pub const TEXTURE_HEIGHT: usize = abi::TEXTURE.offset_of("height") as usize;
+    /// `texture.format`
+    pub const TEXTURE_FORMAT: usize = abi::TEXTURE.offset_of("format") as usize;
+    /// Words of a light table entry.
+    pub const LIGHT_ENTRY_WORDS: usize = abi::LIGHT_ENTRY.stride as usize;
+    /// `light_entry.type_id`
+    pub const LIGHT_ENTRY_TYPE_ID: usize = abi::LIGHT_ENTRY.offset_of("type_id") as usize;
+    /// `light_entry.offset`
+    pub const LIGHT_ENTRY_OFFSET: usize = abi::LIGHT_ENTRY.offset_of("offset") as usize;
+    /// Words of a medium table entry.
+    pub const MEDIUM_ENTRY_WORDS: usize = abi::MEDIUM_ENTRY.stride as usize;
+    /// `medium_entry.slot`
+    pub const MEDIUM_ENTRY_SLOT: usize = abi::MEDIUM_ENTRY.offset_of("slot") as usize;
+    /// `vec4f`s of a triangle slot in `triangles`.
+    pub const TRIANGLE_VEC4S: usize = abi::TRIANGLE.stride as usize;
+    /// `vec4u`s of a triangle slot in `attributes`.
+    pub const ATTRIBUTE_VEC4S: usize = abi::ATTRIBUTE.stride as usize;
+
+    /// Bytes of one record of `desc` (its stride times its binding's element size).
+    pub const fn bytes(desc: &abi::RecordDesc) -> u64 {
+        let element = match abi::binding(desc.binding) {
+            Some(b) => super::element_size(b.element),
+            None => 0,
+        };
+        desc.stride as u64 * element as u64
+    }
+}
+
+// Every record offset the encoders use names a field of the table (`offset_of` is `u32::MAX` for
+// a name it lacks).
+const _: () = {
+    use record::*;
+    assert!(MESH_NODE_BASE < MESH_WORDS);
+    assert!(MESH_SLOT_BASE < MESH_WORDS);
+    assert!(MESH_SLOT_COUNT < MESH_WORDS);
+    assert!(TEXTURE_TEXEL_BASE < TEXTURE_WORDS);
+    assert!(TEXTURE_WIDTH < TEXTURE_WORDS);
+    assert!(TEXTURE_HEIGHT < TEXTURE_WORDS);
+    assert!(TEXTURE_FORMAT < TEXTURE_WORDS);
+    assert!(LIGHT_ENTRY_TYPE_ID < LIGHT_ENTRY_WORDS && LIGHT_ENTRY_OFFSET < LIGHT_ENTRY_WORDS);
+    assert!(MEDIUM_ENTRY_SLOT < MEDIUM_ENTRY_WORDS);
+};
+
+// The encoders write the triangle and attribute slots field by field in this order (`encode.rs`).
+const _: () = assert!(abi::TRIANGLE.offset_of("v0") == 0);
+const _: () = assert!(abi::TRIANGLE.offset_of("v1") == 1);
+const _: () = assert!(abi::TRIANGLE.offset_of("v2") == 2);
+const _: () = assert!(record::TRIANGLE_VEC4S == 3);
+const _: () = assert!(abi::ATTRIBUTE.offset_of("normals_uv0") == 0);
+const _: () = assert!(abi::ATTRIBUTE.offset_of("uv12") == 1);
+const _: () = assert!(record::ATTRIBUTE_VEC4S == 2);
+const _: () = assert!(record::bytes(&abi::TRIANGLE) == 48);
+const _: () = assert!(record::bytes(&abi::ATTRIBUTE) == 32);
+// The texel words of each format (`assets::texture`).
+const _: () = assert!(
+    crate::assets::TextureFormat::Rgba16F.words_per_texel() == abi::RGBA16F_TEXEL_WORDS as usize
+);
+const _: () = assert!(crate::assets::TextureFormat::Rgba8Srgb.words_per_texel() == 1);
+
+// The node records and reference bits of `rtc_bvh::quantized` are the ABI's.
+const _: () = assert!(rtc_bvh::quantized::LEAF_BIT == abi::NODE_LEAF_BIT);
+const _: () = assert!(rtc_bvh::quantized::COUNT_SHIFT == abi::NODE_COUNT_SHIFT);
+const _: () = assert!(rtc_bvh::quantized::MAX_LEAF_COUNT == abi::NODE_COUNT_MASK);
+const _: () = assert!(rtc_bvh::quantized::MAX_FIRST == abi::NODE_FIRST_MASK);
+const _: () = assert!(std::mem::size_of::<rtc_bvh::NodeRecord>() == struct_size(&abi::NODE));
+const _: () = assert!(std::mem::align_of::<rtc_bvh::NodeRecord>() == struct_align(&abi::NODE));
+const _: () = assert!(struct_size(&abi::NODE_HEADER) == struct_size(&abi::NODE));
+const _: () = assert!(struct_size(&abi::NODE_INNER) == struct_size(&abi::NODE));
 
 macro_rules! assert_field {
     ($ty:ty, $field:ident, $desc:expr, $name:literal) => {
@@ -275,11 +278,24 @@ assert_field!(
 assert_field!(GpuInstance, flags, abi::INSTANCE, "flags");
 assert_field!(GpuInstance, object, abi::INSTANCE, "object");
 
-const _: () = assert!(std::mem::size_of::<rtc_bvh::GpuNode>() == struct_size(&abi::NODE));
-assert_field!(rtc_bvh::GpuNode, min, abi::NODE, "min");
-assert_field!(rtc_bvh::GpuNode, a, abi::NODE, "a");
-assert_field!(rtc_bvh::GpuNode, max, abi::NODE, "max");
-assert_field!(rtc_bvh::GpuNode, b, abi::NODE, "b");
+use rtc_bvh::quantized::{QuantizedHeader, QuantizedNode};
+const _: () = assert!(std::mem::size_of::<QuantizedHeader>() == struct_size(&abi::NODE_HEADER));
+assert_field!(QuantizedHeader, origin, abi::NODE_HEADER, "origin");
+assert_field!(QuantizedHeader, root, abi::NODE_HEADER, "root");
+assert_field!(QuantizedHeader, scale, abi::NODE_HEADER, "scale");
+assert_field!(QuantizedHeader, reserved, abi::NODE_HEADER, "reserved");
+const _: () = assert!(std::mem::size_of::<QuantizedNode>() == struct_size(&abi::NODE_INNER));
+assert_field!(QuantizedNode, left_box, abi::NODE_INNER, "left_box");
+assert_field!(QuantizedNode, left, abi::NODE_INNER, "left");
+assert_field!(QuantizedNode, right_box, abi::NODE_INNER, "right_box");
+assert_field!(QuantizedNode, right, abi::NODE_INNER, "right");
+// The header's and inner node's fields overlay the kernel's `GpuNode` view.
+const _: () = assert!(field_offset(&abi::NODE, "a") == field_offset(&abi::NODE_HEADER, "root"));
+const _: () = assert!(field_offset(&abi::NODE, "max") == field_offset(&abi::NODE_HEADER, "scale"));
+const _: () = assert!(field_offset(&abi::NODE, "a") == field_offset(&abi::NODE_INNER, "left"));
+const _: () = assert!(field_offset(&abi::NODE, "b") == field_offset(&abi::NODE_INNER, "right"));
+const _: () =
+    assert!(field_offset(&abi::NODE, "max") == field_offset(&abi::NODE_INNER, "right_box"));
 
 const _: () = assert!(std::mem::size_of::<crate::gpu::TileParams>() == struct_size(&abi::TILE));
 assert_field!(crate::gpu::TileParams, origin, abi::TILE, "origin");
@@ -292,6 +308,7 @@ assert_field!(crate::gpu::TileParams, frame, abi::TILE, "frame");
 mod tests {
     use super::*;
     use naga::{Scalar, Span, StructMember, Type, TypeInner, VectorSize};
+    use rtc_compiler::abi::{FieldType, StructDesc};
 
     /// Builds `s` as a naga struct, members placed with the Layouter's alignments (as any naga front
     /// end does), and returns `(size, [(name, offset)])` as the Layouter sees them.
@@ -306,6 +323,7 @@ mod tests {
                     FieldType::F32 => (None, Scalar::F32),
                     FieldType::Vec2U32 => (Some(VectorSize::Bi), Scalar::U32),
                     FieldType::Vec3F32 => (Some(VectorSize::Tri), Scalar::F32),
+                    FieldType::Vec3U32 => (Some(VectorSize::Tri), Scalar::U32),
                     FieldType::Vec4F32 => (Some(VectorSize::Quad), Scalar::F32),
                     FieldType::Vec4U32 => (Some(VectorSize::Quad), Scalar::U32),
                 };
@@ -430,14 +448,25 @@ mod tests {
                 ("object", offset_of!(GpuInstance, object)),
             ],
         );
+        check(&abi::NODE, size_of::<rtc_bvh::NodeRecord>(), &[]);
         check(
-            &abi::NODE,
-            size_of::<rtc_bvh::GpuNode>(),
+            &abi::NODE_HEADER,
+            size_of::<QuantizedHeader>(),
             &[
-                ("min", offset_of!(rtc_bvh::GpuNode, min)),
-                ("a", offset_of!(rtc_bvh::GpuNode, a)),
-                ("max", offset_of!(rtc_bvh::GpuNode, max)),
-                ("b", offset_of!(rtc_bvh::GpuNode, b)),
+                ("origin", offset_of!(QuantizedHeader, origin)),
+                ("root", offset_of!(QuantizedHeader, root)),
+                ("scale", offset_of!(QuantizedHeader, scale)),
+                ("reserved", offset_of!(QuantizedHeader, reserved)),
+            ],
+        );
+        check(
+            &abi::NODE_INNER,
+            size_of::<QuantizedNode>(),
+            &[
+                ("left_box", offset_of!(QuantizedNode, left_box)),
+                ("left", offset_of!(QuantizedNode, left)),
+                ("right_box", offset_of!(QuantizedNode, right_box)),
+                ("right", offset_of!(QuantizedNode, right)),
             ],
         );
     }
@@ -489,5 +518,125 @@ mod tests {
         assert_eq!(size("texels"), 4);
         assert_eq!(size("accum"), 16);
         assert_eq!(size("counters"), 4);
+    }
+
+    /// Every `u32` constant and record accessor of the generated `rtc:abi` module (what the kernel
+    /// reads) against the values and offsets the runtime encodes with.
+    #[test]
+    fn generated_rtc_abi_matches_the_runtime_encoders() {
+        use rtc_compiler::kernel::generated::{abi_module, parse};
+        let text = abi_module();
+        let runtime: Vec<(&str, u32)> = vec![
+            ("NODE_LEAF_BIT", rtc_bvh::quantized::LEAF_BIT),
+            ("NODE_COUNT_SHIFT", rtc_bvh::quantized::COUNT_SHIFT),
+            ("NODE_COUNT_MASK", rtc_bvh::quantized::MAX_LEAF_COUNT),
+            ("NODE_FIRST_MASK", rtc_bvh::quantized::MAX_FIRST),
+            ("NODE_BOUND_BITS", 16),
+            ("NODE_BOUND_MAX", 0xffff),
+            ("MESH_GEOMETRY", GpuInstance::MESH_GEOMETRY),
+            ("FLAG_ANY_HIT", GpuInstance::FLAG_ANY_HIT),
+            ("FLAG_SECONDARY_RAYS", GpuInstance::FLAG_SECONDARY_RAYS),
+            ("FLAG_MEDIUM", GpuInstance::FLAG_MEDIUM),
+            ("TEXTURE_FORMAT_RGBA8_SRGB", 0),
+            ("TEXTURE_FORMAT_RGBA16F", 1),
+            (
+                "RGBA16F_TEXEL_WORDS",
+                crate::assets::TextureFormat::Rgba16F.words_per_texel() as u32,
+            ),
+            ("COUNTER_NONFINITE", 0),
+            ("COUNTER_RAYS", 1),
+            (
+                "COUNTER_WORDS",
+                (crate::scene::upload_for_tests::COUNTER_BYTES / 4) as u32,
+            ),
+            ("MESH_STRIDE", record::MESH_WORDS as u32),
+            ("TEXTURE_STRIDE", record::TEXTURE_WORDS as u32),
+            ("LIGHT_ENTRY_STRIDE", record::LIGHT_ENTRY_WORDS as u32),
+            ("MEDIUM_ENTRY_STRIDE", record::MEDIUM_ENTRY_WORDS as u32),
+            ("TRIANGLE_STRIDE", record::TRIANGLE_VEC4S as u32),
+            ("ATTRIBUTE_STRIDE", record::ATTRIBUTE_VEC4S as u32),
+        ];
+        let generated = parse::constants(&text);
+        let as_owned: Vec<(String, u32)> =
+            runtime.iter().map(|(n, v)| (n.to_string(), *v)).collect();
+        assert_eq!(generated, as_owned);
+        // Which format word the texture encoder writes for each format, as the kernel tests it.
+        assert_eq!(abi::TEXTURE_FORMAT_RGBA8_SRGB, 0);
+        assert_eq!(abi::TEXTURE_FORMAT_RGBA16F, 1);
+
+        // Accessors: (name, load, stride, offset) as the encoders lay the records out.
+        let want: Vec<(&str, &str, usize, usize)> = vec![
+            ("mesh_node_base", "load_param", 1, record::MESH_NODE_BASE),
+            ("mesh_slot_base", "load_param", 1, record::MESH_SLOT_BASE),
+            ("mesh_slot_count", "load_param", 1, record::MESH_SLOT_COUNT),
+            ("mesh_reserved", "load_param", 1, 3),
+            (
+                "texture_texel_base",
+                "load_param",
+                1,
+                record::TEXTURE_TEXEL_BASE,
+            ),
+            ("texture_width", "load_param", 1, record::TEXTURE_WIDTH),
+            ("texture_height", "load_param", 1, record::TEXTURE_HEIGHT),
+            ("texture_format", "load_param", 1, record::TEXTURE_FORMAT),
+            (
+                "light_entry_type_id",
+                "load_param",
+                1,
+                record::LIGHT_ENTRY_TYPE_ID,
+            ),
+            (
+                "light_entry_offset",
+                "load_param",
+                1,
+                record::LIGHT_ENTRY_OFFSET,
+            ),
+            (
+                "medium_entry_slot",
+                "load_param",
+                1,
+                record::MEDIUM_ENTRY_SLOT,
+            ),
+            // `encode.rs` pushes v0, v1, v2 per slot, then the two attribute words.
+            (
+                "triangle_v0",
+                "load_triangle_vertex",
+                record::TRIANGLE_VEC4S,
+                0,
+            ),
+            (
+                "triangle_v1",
+                "load_triangle_vertex",
+                record::TRIANGLE_VEC4S,
+                1,
+            ),
+            (
+                "triangle_v2",
+                "load_triangle_vertex",
+                record::TRIANGLE_VEC4S,
+                2,
+            ),
+            (
+                "attribute_normals_uv0",
+                "load_attribute",
+                record::ATTRIBUTE_VEC4S,
+                0,
+            ),
+            (
+                "attribute_uv12",
+                "load_attribute",
+                record::ATTRIBUTE_VEC4S,
+                1,
+            ),
+        ];
+        let got: Vec<(String, String, usize, usize)> = parse::accessors(&text)
+            .into_iter()
+            .map(|a| (a.name, a.load, a.stride as usize, a.offset as usize))
+            .collect();
+        let want: Vec<(String, String, usize, usize)> = want
+            .into_iter()
+            .map(|(n, l, s, o)| (n.to_string(), l.to_string(), s, o))
+            .collect();
+        assert_eq!(got, want);
     }
 }

@@ -20,11 +20,17 @@
 //!
 //! # The GPU scene format (the contract with the kernel, `stdlib/kernel/`)
 //!
-//! Bindings, struct layouts and their docs are in `rtc_compiler::abi`; this is what the runtime puts
-//! in them.
+//! Every layout is defined once, in the ABI table `rtc_compiler::abi`: bindings and structs
+//! (`FRAME`, `TILE`, `NODE` with its views `NODE_HEADER`/`NODE_INNER`, `INSTANCE`), the records in
+//! array bindings (`MESH`, `TEXTURE`, `LIGHT_ENTRY`, `MEDIUM_ENTRY` in `params`; `TRIANGLE`,
+//! `ATTRIBUTE` slots), the BVH reference bits (`NODE_REFERENCE`) and every constant (instance
+//! flags, `MESH_GEOMETRY`, texture formats, counter indices). The kernel reads them through the
+//! generated `rtc:abi` module, `manifest.json` lists them for other hosts, and the encoders here
+//! write them with `gpu_types::record` offsets and constants taken from the table (compile-time
+//! asserts in `gpu_types.rs`). What follows is what the runtime puts where, not the layouts.
 //!
-//! - **`nodes`** (32-byte records, declared as `GpuNode`; bits in `rtc_bvh::quantized`): every
-//!   BVH converted with `rtc_bvh::quantized::quantize`, concatenated: first one object-level BVH
+//! - **`nodes`** ([`rtc_bvh::NodeRecord`]s; bits in `rtc_bvh::quantized`): every BVH converted
+//!   with `rtc_bvh::quantized::quantize`, concatenated: first one object-level BVH
 //!   (BLAS) per distinct mesh, in order of first use, **built once per mesh and shared by all
 //!   objects using it**; then the scene-level BVH (TLAS) over the objects' world-space boxes, **one
 //!   object per leaf** (built with `BuildPreset::single_leaf_params`; the kernel tests a TLAS
@@ -32,29 +38,24 @@
 //!   (quantisation frame and root reference) at `base` and its inner-node record `r` at
 //!   `base + r`. The TLAS comes last so that rebuilding it (its record count may change) never
 //!   moves a BLAS. `FrameUniforms.tlas_root` is the TLAS's header.
-//! - **`instances`** ([`GpuInstance`], 128 bytes): one per object in the TLAS, **in TLAS leaf
+//! - **`instances`** ([`GpuInstance`]): one per object in the TLAS, **in TLAS leaf
 //!   order**: a TLAS leaf's slots index this array directly, and slot `s` holds the object
-//!   `tlas.prim_indices()[s]`. Fields: world-to-object and object-to-world affine rows (translation
-//!   in `w`), `geometry_type` ([`GpuInstance::MESH_GEOMETRY`] for a mesh, else the custom geometry
-//!   type's id), `geometry_offset`, `material_type`, `material_offset`, `blas_root` (the mesh BVH's
-//!   header record: meshes use the quantised layout of `rtc_bvh::quantized`), `triangle_offset` (the mesh's first triangle slot), `flags` (1: `@any_hit`, 2:
-//!   `@secondary_rays`, 4: `@medium`), `object` (scene `object` entries in order, then model
-//!   instances). An object whose world box is empty or not finite (an empty mesh, invalid custom
-//!   bounds) is left out of the TLAS and therefore of this array; `object` keeps its index.
-//! - **`triangles`**: 3 `vec4f` per triangle slot, object space, per mesh in BLAS leaf order from the
-//!   mesh's `triangle_offset`: `[v0, bits(t)]`, `[v1, 0]`, `[v2, 0]` where `t` is the triangle's index
-//!   in its mesh. Slots, not triangles: with the `quality` preset's spatial splits a triangle may
-//!   occupy several slots.
-//! - **`attributes`**: 2 `vec4u` per triangle slot: `[oct(n0), oct(n1), oct(n2), f16x2(uv0)]`,
-//!   `[f16x2(uv1), f16x2(uv2), 0, 0]` (see `encode.rs`).
-//! - **`params`** (`u32` words), in this order: mesh records `[node_base, triangle_base,
-//!   slot_count, 0]` and texture records `[texel_base, width, height, format]` (format 0 = rgba8
-//!   sRGB, 1 = rgba16f) for every `mesh`/`texture` value of the scene, whose word offsets are what
+//!   `tlas.prim_indices()[s]`. `geometry_type` is `MESH_GEOMETRY` for a mesh, else the custom
+//!   geometry type's id; `blas_root` is the mesh BVH's header record; `triangle_offset` the mesh's
+//!   first triangle slot; `flags` the material's `FLAG_*`; `object` the scene `object` entries in
+//!   order, then model instances. An object whose world box is empty or not finite (an empty mesh,
+//!   invalid custom bounds) is left out of the TLAS and therefore of this array; `object` keeps its
+//!   index.
+//! - **`triangles`** and **`attributes`**: one `TRIANGLE` and one `ATTRIBUTE` record per triangle
+//!   slot, per mesh in BLAS leaf order from the mesh's `slot_base` (see `encode.rs`). Slots, not
+//!   triangles: with the `quality` preset's spatial splits a triangle may occupy several slots.
+//! - **`params`** (`u32` words), in this order: a `MESH` record for every `mesh` value and a
+//!   `TEXTURE` record for every `texture` value of the scene, whose word offsets are what
 //!   `layout::Handles` gives the packer; then every role-struct instance (camera, background,
 //!   custom geometries, materials, lights), packed with `rtc_compiler::layout::pack_into`, each
 //!   starting at a multiple of 4 words (identical instances of one type share one copy); then the
-//!   light table (`light_count` pairs `[type_id, offset]`, scene order); last the medium table
-//!   (`medium_count` instance slots of objects whose material has `@medium`, in object order), last
+//!   light table (`light_count` `LIGHT_ENTRY`s, scene order); last the medium table
+//!   (`medium_count` `MEDIUM_ENTRY`s: objects whose material has `@medium`, in object order), last
 //!   because it follows the TLAS order. Type ids are `Linked::type_of(struct).id`.
 //! - **`texels`**: every texture's words ([`TextureData`](crate::assets::TextureData)) concatenated;
 //!   a texture record's `texel_base` is its first word.
@@ -63,8 +64,8 @@
 //!   tables, camera and background type ids and offsets (background 0/0 without one).
 //! - **`tile`**: `gpu::TileParams`, written by the tile dispatcher; `frame` is the pass index.
 //! - **`accum`**: `width * height` `vec4f` (rgb = radiance sum, a = sample count), zeroed before the
-//!   first pass of a render. **`counters`**: 4 `u32`, zeroed with it; counter 0 counts non-finite
-//!   samples the kernel replaced by zero.
+//!   first pass of a render. **`counters`**: `COUNTER_WORDS` `u32`, zeroed with it (indices
+//!   `COUNTER_NONFINITE`, `COUNTER_RAYS`).
 //! - **Custom geometry bounds**: when the scene has custom geometry, `instances` is first uploaded
 //!   in object order (slot `i` = object `i`, `instance_count` = the object count) and the compiler's
 //!   `bounds` kernel runs one invocation per object, writing the object-space box of custom-geometry
@@ -100,7 +101,7 @@ mod tests;
 /// The naming of a too-large binding's largest part, for the asset tests.
 #[cfg(test)]
 pub(crate) mod upload_for_tests {
-    pub(crate) use super::upload::name_the_largest_part;
+    pub(crate) use super::upload::{name_the_largest_part, COUNTER_BYTES};
 }
 
 pub use encode::{decode_octahedral, octahedral, pack_snorm2x16, unpack_snorm2x16};
@@ -111,7 +112,7 @@ pub use entities::{
 pub use gpu_types::{
     element_size, field_offset, struct_align, struct_size, FrameUniforms, GpuInstance,
 };
-pub use upload::{runtime_binding, GpuScene, UploadReport};
+pub use upload::{runtime_binding, Counters, GpuScene, UploadReport};
 
 use rtc_compiler::diag::{codes, Diagnostic};
 use rtc_compiler::Span;

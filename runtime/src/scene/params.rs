@@ -68,14 +68,8 @@ impl ParamsBuilder {
         })
     }
 
-    /// Appends a record of 4 words; returns its offset.
-    pub fn push_record(&mut self, record: [u32; 4]) -> Result<u32, SceneError> {
-        let at = self.offset()?;
-        self.words.extend_from_slice(&record);
-        Ok(at)
-    }
-
-    /// Appends raw words (a table); returns their offset.
+    /// Appends raw words (a record or a table, laid out by `gpu_types::record`); returns their
+    /// offset.
     pub fn push_words(&mut self, words: &[u32]) -> Result<u32, SceneError> {
         let at = self.offset()?;
         self.words.extend_from_slice(words);

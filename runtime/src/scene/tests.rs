@@ -9,7 +9,7 @@
 use glam::{Mat4, Vec3, Vec4};
 use rtc_bvh::quantized::QuantizedBvh;
 use rtc_bvh::traverse::{closest_hit_quantized_with, intersect_triangle, Hit, Ray};
-use rtc_bvh::{Aabb, BuildPreset, GpuNode};
+use rtc_bvh::{Aabb, BuildPreset, NodeRecord};
 use rtc_compiler::driver::{check_text, Options};
 use rtc_compiler::layout;
 use rtc_compiler::link::registry::Registry;
@@ -455,8 +455,8 @@ fn moving_an_object_rebuilds_only_the_tlas() {
     assert_eq!(e.stats().tlas_builds, tlas_builds + 1);
     // Compared as bits: quantised records hold integers in their float fields.
     assert_eq!(
-        bytemuck::cast_slice::<GpuNode, u32>(&e.nodes()[..e.tlas_root() as usize]),
-        bytemuck::cast_slice::<GpuNode, u32>(&blas),
+        bytemuck::cast_slice::<NodeRecord, u32>(&e.nodes()[..e.tlas_root() as usize]),
+        bytemuck::cast_slice::<NodeRecord, u32>(&blas),
         "BLASes untouched"
     );
     let after = e.versions();

@@ -18,7 +18,19 @@ use rtc_compiler::abi;
 use rtc_compiler::back::ResourceKind;
 
 use super::entities::Entities;
-use super::gpu_types::{element_size, FrameUniforms, GpuInstance};
+
+/// Bytes of the `counters` binding ([`abi::COUNTER_WORDS`] words).
+pub(crate) const COUNTER_BYTES: u64 = abi::COUNTER_WORDS as u64 * 4;
+
+/// The kernel's counters, read back (indices from the ABI table).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Counters {
+    /// `COUNTER_NONFINITE`: samples that were not finite and were replaced by zero.
+    pub nonfinite: u32,
+    /// `COUNTER_RAYS`: rays traced (camera, secondary and shadow), wrapping.
+    pub rays: u32,
+}
+use super::gpu_types::{element_size, record, struct_size, FrameUniforms, GpuInstance};
 use super::SceneError;
 use crate::gpu::{
     read_buffer, read_vec4_f32, BindingDesc, BindingKind, BufferError, BufferLimits, BufferSet,
@@ -204,7 +216,7 @@ impl GpuScene {
                     )
                     .map_err(named)?,
                 "accum" => set.ensure_zeroed(gpu, desc, accum_entries.max(1) * 16)?,
-                "counters" => set.ensure_zeroed(gpu, desc, 16)?,
+                "counters" => set.ensure_zeroed(gpu, desc, COUNTER_BYTES)?,
                 // A binding this runtime does not know: nothing to put in it.
                 _ => continue,
             };
@@ -236,22 +248,26 @@ impl GpuScene {
         Ok(read_vec4_f32(gpu, &self.buffers, b.binding)?)
     }
 
-    /// Reads the 4 `counters` back (zeros when the kernel has none).
-    pub fn read_counters(&self, gpu: &Gpu) -> Result<[u32; 4], SceneError> {
+    /// Reads the kernel's counters back (zeros when the kernel declares no `counters`).
+    pub fn read_counters(&self, gpu: &Gpu) -> Result<Counters, SceneError> {
         let buffer = abi::binding("counters")
             .filter(|_| self.has("counters"))
             .and_then(|b| self.buffers.buffer(b.binding));
         let Some(buffer) = buffer else {
-            return Ok([0; 4]);
+            return Ok(Counters::default());
         };
-        let bytes = read_buffer(gpu, buffer, 16)?;
-        let mut out = [0u32; 4];
-        for (word, chunk) in out.iter_mut().zip(bytes.chunks_exact(4)) {
-            if let Ok(b) = <[u8; 4]>::try_from(chunk) {
-                *word = u32::from_le_bytes(b);
-            }
-        }
-        Ok(out)
+        let bytes = read_buffer(gpu, buffer, COUNTER_BYTES)?;
+        let word = |index: u32| {
+            let at = index as usize * 4;
+            bytes
+                .get(at..at + 4)
+                .and_then(|b| <[u8; 4]>::try_from(b).ok())
+                .map_or(0, u32::from_le_bytes)
+        };
+        Ok(Counters {
+            nonfinite: word(abi::COUNTER_NONFINITE),
+            rays: word(abi::COUNTER_RAYS),
+        })
     }
 }
 
@@ -266,13 +282,13 @@ pub(crate) fn name_the_largest_part(
     if !matches!(error, BufferError::TooLarge { .. }) {
         return SceneError::Buffer(error);
     }
-    // Bytes per triangle slot and per BVH record, as the GPU layouts hold them.
+    // Bytes per triangle slot and per BVH record, as the ABI table lays them out.
     let part = match binding {
         "triangles" | "attributes" | "nodes" => {
             let bytes = |m: &super::MeshEntity| match binding {
-                "triangles" => u64::from(m.slots) * 48,
-                "attributes" => u64::from(m.slots) * 32,
-                _ => u64::from(m.node_count) * 32,
+                "triangles" => u64::from(m.slots) * record::bytes(&abi::TRIANGLE),
+                "attributes" => u64::from(m.slots) * record::bytes(&abi::ATTRIBUTE),
+                _ => u64::from(m.node_count) * struct_size(&abi::NODE) as u64,
             };
             entities.meshes().iter().max_by_key(|m| bytes(m)).map(|m| {
                 format!(

@@ -171,6 +171,7 @@ static const uint SCATTER = 1000003u;
 static const uint RAY_CAMERA = 0u;
 static const uint NO_HIT = 4294967295u;
 static const bool HAS_MEDIA = false;
+static const uint MEDIUM_ENTRY_STRIDE = 1u;
 static const uint MESH_GEOMETRY = 4294967295u;
 static const uint NODE_LEAF_BIT = 2147483648u;
 static const uint NODE_COUNT_SHIFT = 27u;
@@ -185,10 +186,11 @@ static const float GAMMA_4_ = 2.3841864e-7;
 static const bool HAS_SECONDARY_RAYS = false;
 static const bool HAS_BACKGROUND = true;
 static const uint FLAG_MEDIUM = 4u;
+static const uint LIGHT_ENTRY_STRIDE = 2u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
 static const float INV_PI = 0.31830987;
-static const uint FLAG_SECONDARY = 2u;
+static const uint FLAG_SECONDARY_RAYS = 2u;
 static const uint MAX_DEPTH = 4u;
 static const uint STACK_SIZE = 4u;
 static const uint MAX_SPAWN = 1u;
@@ -864,8 +866,8 @@ uint medium_at(float3 p_4, uint exclude)
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e57 = i;
-            i = (_e57 + 1u);
+            uint _e59 = i;
+            i = (_e59 + 1u);
         }
         loop_init_1 = false;
         uint _e29 = i;
@@ -873,23 +875,23 @@ uint medium_at(float3 p_4, uint exclude)
             break;
         }
         uint _e32 = i;
-        uint slot_4 = asuint(params.Load((frame_1.medium_table + _e32)*4));
+        uint slot_4 = asuint(params.Load((frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))*4));
         if ((slot_4 != exclude)) {
-            uint _e39 = F32_INF;
-            const Candidate _e41 = no_candidate(asfloat(_e39));
-            const Candidate _e43 = intersect_object(slot_4, probe, _e41, false);
-            float _e48 = nearest;
-            if (((_e43.slot != NO_HIT) && (_e43.t < _e48))) {
-                const Hit _e51 = finish_hit(probe, _e43);
-                if (!(_e51.front_face)) {
+            uint _e41 = F32_INF;
+            const Candidate _e43 = no_candidate(asfloat(_e41));
+            const Candidate _e45 = intersect_object(slot_4, probe, _e43, false);
+            float _e50 = nearest;
+            if (((_e45.slot != NO_HIT) && (_e45.t < _e50))) {
+                const Hit _e53 = finish_hit(probe, _e45);
+                if (!(_e53.front_face)) {
                     inside = (slot_4 + 1u);
-                    nearest = _e43.t;
+                    nearest = _e45.t;
                 }
             }
         }
     }
-    uint _e60 = inside;
-    return _e60;
+    uint _e62 = inside;
+    return _e62;
 }
 
 float3 node_frame_hi(GpuNode header)
@@ -1221,7 +1223,7 @@ LightSample sample_light_query(uint i_1, float3 position_3, float3 normal_3)
         const LightSample lightsample_2 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx);
         return lightsample_2;
     }
-    uint entry = (frame_4.light_table + (i_1 * 2u));
+    uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
     uint _e21 = asuint(params.Load(entry*4));
     uint _e26 = asuint(params.Load((entry + 1u)*4));
     const LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3);
@@ -1375,7 +1377,7 @@ float3 trace(Ray camera_ray)
                 pushed = false;
                 uint _e62 = ray_18.depth;
                 uint _e66 = depth;
-                if (((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE))) {
+                if (((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE))) {
                     spawn_count = 0u;
                     Ray _e74 = ray_18;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);

@@ -166,6 +166,7 @@ constant uint SCATTER = 1000003u;
 constant uint RAY_CAMERA = 0u;
 constant uint NO_HIT = 4294967295u;
 constant bool HAS_MEDIA = true;
+constant uint MEDIUM_ENTRY_STRIDE = 1u;
 constant uint MESH_GEOMETRY = 4294967295u;
 constant uint NODE_LEAF_BIT = 2147483648u;
 constant uint NODE_COUNT_SHIFT = 27u;
@@ -182,10 +183,11 @@ constant uint TLAS_STACK = 10u;
 constant bool HAS_SECONDARY_RAYS = true;
 constant bool HAS_BACKGROUND = false;
 constant uint FLAG_MEDIUM = 4u;
+constant uint LIGHT_ENTRY_STRIDE = 2u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant float PI = 3.1415927;
 constant float INV_PI = 0.31830987;
-constant uint FLAG_SECONDARY = 2u;
+constant uint FLAG_SECONDARY_RAYS = 2u;
 constant uint MAX_DEPTH = 3u;
 constant uint STACK_SIZE = 3u;
 constant uint MAX_SPAWN = 1u;
@@ -913,8 +915,8 @@ uint medium_at(
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e57 = i;
-            i = _e57 + 1u;
+            uint _e59 = i;
+            i = _e59 + 1u;
         }
         loop_init_1 = false;
         uint _e29 = i;
@@ -922,23 +924,23 @@ uint medium_at(
             break;
         }
         uint _e32 = i;
-        uint slot_4 = params[frame_1.medium_table + _e32];
+        uint slot_4 = params[frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE)];
         if (slot_4 != exclude) {
-            uint _e39 = F32_INF;
-            Candidate _e41 = no_candidate(as_type<float>(_e39));
-            Candidate _e43 = intersect_object(slot_4, probe, _e41, false, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
-            float _e48 = nearest;
-            if ((_e43.slot != NO_HIT) && (_e43.t < _e48)) {
-                Hit _e51 = finish_hit(probe, _e43, instances, triangles, hit_error, attributes, _buffer_sizes);
-                if (!(_e51.front_face)) {
+            uint _e41 = F32_INF;
+            Candidate _e43 = no_candidate(as_type<float>(_e41));
+            Candidate _e45 = intersect_object(slot_4, probe, _e43, false, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
+            float _e50 = nearest;
+            if ((_e45.slot != NO_HIT) && (_e45.t < _e50)) {
+                Hit _e53 = finish_hit(probe, _e45, instances, triangles, hit_error, attributes, _buffer_sizes);
+                if (!(_e53.front_face)) {
                     inside = slot_4 + 1u;
-                    nearest = _e43.t;
+                    nearest = _e45.t;
                 }
             }
         }
     }
-    uint _e60 = inside;
-    return _e60;
+    uint _e62 = inside;
+    return _e62;
 }
 
 metal::float3 node_frame_hi(
@@ -1246,7 +1248,7 @@ LightSample sample_light_query(
     if (i_1 >= frame_4.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0)};
     }
-    uint entry = frame_4.light_table + (i_1 * 2u);
+    uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
     uint _e21 = params[entry];
     uint _e26 = params[entry + 1u];
     LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
@@ -1683,7 +1685,7 @@ metal::float3 trace(
                 pushed = false;
                 uint _e62 = ray_22.depth;
                 uint _e66 = depth;
-                if ((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
+                if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
                     spawn_count = 0u;
                     Ray _e74 = ray_22;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);

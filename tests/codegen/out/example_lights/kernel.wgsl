@@ -176,6 +176,7 @@ const SCATTER: u32 = 1000003u;
 const RAY_CAMERA: u32 = 0u;
 const NO_HIT: u32 = 4294967295u;
 const HAS_MEDIA: bool = false;
+const MEDIUM_ENTRY_STRIDE: u32 = 1u;
 const MESH_GEOMETRY: u32 = 4294967295u;
 const NODE_LEAF_BIT: u32 = 2147483648u;
 const NODE_COUNT_SHIFT: u32 = 27u;
@@ -192,9 +193,10 @@ const GAMMA_4_: f32 = 0.00000023841864f;
 const HAS_SECONDARY_RAYS: bool = false;
 const HAS_BACKGROUND: bool = true;
 const FLAG_MEDIUM: u32 = 4u;
+const LIGHT_ENTRY_STRIDE: u32 = 2u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
-const FLAG_SECONDARY: u32 = 2u;
+const FLAG_SECONDARY_RAYS: u32 = 2u;
 const MAX_DEPTH: u32 = 4u;
 const STACK_SIZE: u32 = 4u;
 const MAX_SPAWN: u32 = 1u;
@@ -843,27 +845,27 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
             break;
         }
         let _e32 = i;
-        let slot_4 = params[(frame_1.medium_table + _e32)];
+        let slot_4 = params[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if (slot_4 != exclude) {
-            let _e39 = F32_INF;
-            let _e41 = no_candidate(bitcast<f32>(_e39));
-            let _e43 = intersect_object(slot_4, probe, _e41, false);
-            let _e48 = nearest;
-            if ((_e43.slot != NO_HIT) && (_e43.t < _e48)) {
-                let _e51 = finish_hit(probe, _e43);
-                if !(_e51.front_face) {
+            let _e41 = F32_INF;
+            let _e43 = no_candidate(bitcast<f32>(_e41));
+            let _e45 = intersect_object(slot_4, probe, _e43, false);
+            let _e50 = nearest;
+            if ((_e45.slot != NO_HIT) && (_e45.t < _e50)) {
+                let _e53 = finish_hit(probe, _e45);
+                if !(_e53.front_face) {
                     inside = (slot_4 + 1u);
-                    nearest = _e43.t;
+                    nearest = _e45.t;
                 }
             }
         }
         continuing {
-            let _e57 = i;
-            i = (_e57 + 1u);
+            let _e59 = i;
+            i = (_e59 + 1u);
         }
     }
-    let _e60 = inside;
-    return _e60;
+    let _e62 = inside;
+    return _e62;
 }
 
 fn node_frame_hi(header: GpuNode) -> vec3<f32> {
@@ -1249,7 +1251,7 @@ fn sample_light_query(i_1: u32, position_6: vec3<f32>, normal_6: vec3<f32>) -> L
     if (i_1 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f));
     }
-    let entry_1 = (frame_4.light_table + (i_1 * 2u));
+    let entry_1 = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
     let _e21 = params[entry_1];
     let _e26 = params[(entry_1 + 1u)];
     let _e27 = dispatch_light(_e21, _e26, position_6, normal_6);
@@ -1364,7 +1366,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 pushed = false;
                 let _e62 = ray_21.depth;
                 let _e66 = depth;
-                if ((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
+                if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
                     spawn_count = 0u;
                     let _e74 = ray_21;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);

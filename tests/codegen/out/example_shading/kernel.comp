@@ -146,6 +146,7 @@ const uint SCATTER = 1000003u;
 const uint RAY_CAMERA = 0u;
 const uint NO_HIT = 4294967295u;
 const bool HAS_MEDIA = false;
+const uint MEDIUM_ENTRY_STRIDE = 1u;
 const uint MESH_GEOMETRY = 4294967295u;
 const uint NODE_LEAF_BIT = 2147483648u;
 const uint NODE_COUNT_SHIFT = 27u;
@@ -160,10 +161,13 @@ const float GAMMA_4_ = 2.3841864e-7;
 const bool HAS_SECONDARY_RAYS = true;
 const bool HAS_BACKGROUND = true;
 const uint FLAG_MEDIUM = 4u;
+const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
+const uint RGBA16F_TEXEL_WORDS = 2u;
 const float INV_PI = 0.31830987;
+const uint LIGHT_ENTRY_STRIDE = 2u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const uint RAY_SHADOW = 2u;
-const uint FLAG_SECONDARY = 2u;
+const uint FLAG_SECONDARY_RAYS = 2u;
 const uint MAX_DEPTH = 3u;
 const uint STACK_SIZE = 3u;
 const uint MAX_SPAWN = 1u;
@@ -683,8 +687,8 @@ uint medium_at(vec3 p_4, uint exclude) {
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e57 = i;
-            i = (_e57 + 1u);
+            uint _e59 = i;
+            i = (_e59 + 1u);
         }
         loop_init_1 = false;
         uint _e29 = i;
@@ -692,23 +696,23 @@ uint medium_at(vec3 p_4, uint exclude) {
             break;
         }
         uint _e32 = i;
-        uint slot_4 = _group_0_binding_6_cs[(frame_1.medium_table + _e32)];
+        uint slot_4 = _group_0_binding_6_cs[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if ((slot_4 != exclude)) {
-            uint _e39 = F32_INF;
-            Candidate _e41 = no_candidate(uintBitsToFloat(_e39));
-            Candidate _e43 = intersect_object(slot_4, probe, _e41, false);
-            float _e48 = nearest;
-            if (((_e43.slot != NO_HIT) && (_e43.t < _e48))) {
-                Hit _e51 = finish_hit(probe, _e43);
-                if (!(_e51.front_face)) {
+            uint _e41 = F32_INF;
+            Candidate _e43 = no_candidate(uintBitsToFloat(_e41));
+            Candidate _e45 = intersect_object(slot_4, probe, _e43, false);
+            float _e50 = nearest;
+            if (((_e45.slot != NO_HIT) && (_e45.t < _e50))) {
+                Hit _e53 = finish_hit(probe, _e45);
+                if (!(_e53.front_face)) {
                     inside = (slot_4 + 1u);
-                    nearest = _e43.t;
+                    nearest = _e45.t;
                 }
             }
         }
     }
-    uint _e60 = inside;
-    return _e60;
+    uint _e62 = inside;
+    return _e62;
 }
 
 vec3 node_frame_hi(GpuNode header) {
@@ -921,7 +925,7 @@ vec4 texel_at(uint t_2, int x_2, int y) {
     int _e37 = rem_i32_((_e33 + int(h_2)), int(h_2));
     uint yi = uint(_e37);
     uint index = ((yi * w_3) + xi);
-    if ((format == 0u)) {
+    if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
         uint _e46 = _group_0_binding_7_cs[(base_3 + index)];
         vec4 c_7 = unpackUnorm4x8(_e46);
         float _e49 = srgb_channel(c_7.x);
@@ -929,9 +933,9 @@ vec4 texel_at(uint t_2, int x_2, int y) {
         float _e53 = srgb_channel(c_7.z);
         return vec4(_e49, _e51, _e53, c_7.w);
     }
-    uint _e61 = _group_0_binding_7_cs[(base_3 + (index * 2u))];
+    uint _e61 = _group_0_binding_7_cs[(base_3 + (index * RGBA16F_TEXEL_WORDS))];
     vec2 rg = unpackHalf2x16(_e61);
-    uint _e70 = _group_0_binding_7_cs[((base_3 + (index * 2u)) + 1u)];
+    uint _e70 = _group_0_binding_7_cs[((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
     vec2 ba = unpackHalf2x16(_e70);
     return vec4(rg, ba);
 }
@@ -1045,7 +1049,7 @@ LightSample sample_light_query(uint i_1, vec3 position_3, vec3 normal_3) {
     if ((i_1 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0));
     }
-    uint entry = (frame_4.light_table + (i_1 * 2u));
+    uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
     uint _e21 = _group_0_binding_6_cs[entry];
     uint _e26 = _group_0_binding_6_cs[(entry + 1u)];
     LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3);
@@ -1275,7 +1279,7 @@ vec3 trace(Ray camera_ray) {
                 pushed = false;
                 uint _e62 = ray_22.depth;
                 uint _e66 = depth;
-                if (((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE))) {
+                if (((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE))) {
                     spawn_count = 0u;
                     Ray _e74 = ray_22;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);

@@ -171,6 +171,7 @@ constant uint SCATTER = 1000003u;
 constant uint RAY_CAMERA = 0u;
 constant uint NO_HIT = 4294967295u;
 constant bool HAS_MEDIA = false;
+constant uint MEDIUM_ENTRY_STRIDE = 1u;
 constant uint MESH_GEOMETRY = 4294967295u;
 constant uint NODE_LEAF_BIT = 2147483648u;
 constant uint NODE_COUNT_SHIFT = 27u;
@@ -185,10 +186,13 @@ constant float GAMMA_4_ = 0.00000023841864;
 constant bool HAS_SECONDARY_RAYS = false;
 constant bool HAS_BACKGROUND = true;
 constant uint FLAG_MEDIUM = 4u;
+constant uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
+constant uint RGBA16F_TEXEL_WORDS = 2u;
 constant float INV_PI = 0.31830987;
+constant uint LIGHT_ENTRY_STRIDE = 2u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
-constant uint FLAG_SECONDARY = 2u;
+constant uint FLAG_SECONDARY_RAYS = 2u;
 constant uint MAX_DEPTH = 0u;
 constant uint STACK_SIZE = 1u;
 constant uint MAX_SPAWN = 1u;
@@ -862,8 +866,8 @@ uint medium_at(
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e57 = i;
-            i = _e57 + 1u;
+            uint _e59 = i;
+            i = _e59 + 1u;
         }
         loop_init_1 = false;
         uint _e29 = i;
@@ -871,23 +875,23 @@ uint medium_at(
             break;
         }
         uint _e32 = i;
-        uint slot_4 = params[frame_1.medium_table + _e32];
+        uint slot_4 = params[frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE)];
         if (slot_4 != exclude) {
-            uint _e39 = F32_INF;
-            Candidate _e41 = no_candidate(as_type<float>(_e39));
-            Candidate _e43 = intersect_object(slot_4, probe, _e41, false, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
-            float _e48 = nearest;
-            if ((_e43.slot != NO_HIT) && (_e43.t < _e48)) {
-                Hit _e51 = finish_hit(probe, _e43, instances, triangles, hit_error, attributes, _buffer_sizes);
-                if (!(_e51.front_face)) {
+            uint _e41 = F32_INF;
+            Candidate _e43 = no_candidate(as_type<float>(_e41));
+            Candidate _e45 = intersect_object(slot_4, probe, _e43, false, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+            float _e50 = nearest;
+            if ((_e45.slot != NO_HIT) && (_e45.t < _e50)) {
+                Hit _e53 = finish_hit(probe, _e45, instances, triangles, hit_error, attributes, _buffer_sizes);
+                if (!(_e53.front_face)) {
                     inside = slot_4 + 1u;
-                    nearest = _e43.t;
+                    nearest = _e45.t;
                 }
             }
         }
     }
-    uint _e60 = inside;
-    return _e60;
+    uint _e62 = inside;
+    return _e62;
 }
 
 metal::float3 node_frame_hi(
@@ -1164,7 +1168,7 @@ metal::float4 texel_at(
     int _e37 = rem_i32_(as_type<int>(as_type<uint>(_e33) + as_type<uint>(static_cast<int>(h_2))), static_cast<int>(h_2));
     uint yi = static_cast<uint>(_e37);
     uint index = (yi * w_3) + xi;
-    if (format == 0u) {
+    if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
         uint _e46 = texels[base_3 + index];
         metal::float4 c_7 = metal::unpack_unorm4x8_to_float(_e46);
         float _e49 = srgb_channel(c_7.x);
@@ -1172,9 +1176,9 @@ metal::float4 texel_at(
         float _e53 = srgb_channel(c_7.z);
         return metal::float4(_e49, _e51, _e53, c_7.w);
     }
-    uint _e61 = texels[base_3 + (index * 2u)];
+    uint _e61 = texels[base_3 + (index * RGBA16F_TEXEL_WORDS)];
     metal::float2 rg = float2(as_type<half2>(_e61));
-    uint _e70 = texels[(base_3 + (index * 2u)) + 1u];
+    uint _e70 = texels[(base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
     metal::float2 ba = float2(as_type<half2>(_e70));
     return metal::float4(rg, ba);
 }
@@ -1363,7 +1367,7 @@ LightSample sample_light_query(
     if (i_1 >= frame_4.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0)};
     }
-    uint entry = frame_4.light_table + (i_1 * 2u);
+    uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
     uint _e21 = params[entry];
     uint _e26 = params[entry + 1u];
     LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
@@ -1565,7 +1569,7 @@ metal::float3 trace(
                 pushed = false;
                 uint _e62 = ray_18.depth;
                 uint _e66 = depth;
-                if ((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
+                if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
                     spawn_count = 0u;
                     Ray _e74 = ray_18;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);

@@ -148,6 +148,7 @@ const uint SUPERSAMPLING_GRID = 2u;
 const uint RAY_CAMERA = 0u;
 const uint NO_HIT = 4294967295u;
 const bool HAS_MEDIA = false;
+const uint MEDIUM_ENTRY_STRIDE = 1u;
 const uint MESH_GEOMETRY = 4294967295u;
 const uint NODE_LEAF_BIT = 2147483648u;
 const uint NODE_COUNT_SHIFT = 27u;
@@ -164,10 +165,13 @@ const float GAMMA_6_ = 3.576281e-7;
 const float GAMMA_4_ = 2.3841864e-7;
 const bool HAS_SECONDARY_RAYS = false;
 const bool HAS_BACKGROUND = true;
+const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
+const uint RGBA16F_TEXEL_WORDS = 2u;
 const uint FLAG_MEDIUM = 4u;
+const uint LIGHT_ENTRY_STRIDE = 2u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const uint RAY_SHADOW = 2u;
-const uint FLAG_SECONDARY = 2u;
+const uint FLAG_SECONDARY_RAYS = 2u;
 const uint MAX_DEPTH = 4u;
 const uint STACK_SIZE = 4u;
 const uint MAX_SPAWN = 1u;
@@ -623,11 +627,11 @@ float bvh_mesh_enter(Ray ray_6, BvhNode n_1, float tmax_4) {
 
 Triangle mesh_triangle_query(uint m_1, uint i_1) {
     uint _e6 = _group_0_binding_6_cs[(m_1 + 1u)];
-    uint slot_4 = ((_e6 + i_1) * 3u);
-    vec4 _e12 = _group_0_binding_4_cs[slot_4];
-    vec4 _e18 = _group_0_binding_4_cs[(slot_4 + 1u)];
-    vec4 _e24 = _group_0_binding_4_cs[(slot_4 + 2u)];
-    return Triangle(_e12.xyz, _e18.xyz, _e24.xyz);
+    uint slot_4 = (_e6 + i_1);
+    vec4 _e12 = _group_0_binding_4_cs[(slot_4 * 3u)];
+    vec4 _e20 = _group_0_binding_4_cs[((slot_4 * 3u) + 1u)];
+    vec4 _e28 = _group_0_binding_4_cs[((slot_4 * 3u) + 2u)];
+    return Triangle(_e12.xyz, _e20.xyz, _e28.xyz);
 }
 
 Intersection intersect_triangle(Ray ray_7, Triangle tri) {
@@ -988,8 +992,8 @@ uint medium_at(vec3 p_4, uint exclude) {
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e57 = i_2;
-            i_2 = (_e57 + 1u);
+            uint _e59 = i_2;
+            i_2 = (_e59 + 1u);
         }
         loop_init_2 = false;
         uint _e29 = i_2;
@@ -997,23 +1001,23 @@ uint medium_at(vec3 p_4, uint exclude) {
             break;
         }
         uint _e32 = i_2;
-        uint slot_5 = _group_0_binding_6_cs[(frame_1.medium_table + _e32)];
+        uint slot_5 = _group_0_binding_6_cs[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if ((slot_5 != exclude)) {
-            uint _e39 = F32_INF;
-            Candidate _e41 = no_candidate(uintBitsToFloat(_e39));
-            Candidate _e43 = intersect_object(slot_5, probe, _e41, false);
-            float _e48 = nearest;
-            if (((_e43.slot != NO_HIT) && (_e43.t < _e48))) {
-                Hit _e51 = finish_hit(probe, _e43);
-                if (!(_e51.front_face)) {
+            uint _e41 = F32_INF;
+            Candidate _e43 = no_candidate(uintBitsToFloat(_e41));
+            Candidate _e45 = intersect_object(slot_5, probe, _e43, false);
+            float _e50 = nearest;
+            if (((_e45.slot != NO_HIT) && (_e45.t < _e50))) {
+                Hit _e53 = finish_hit(probe, _e45);
+                if (!(_e53.front_face)) {
                     inside = (slot_5 + 1u);
-                    nearest = _e43.t;
+                    nearest = _e45.t;
                 }
             }
         }
     }
-    uint _e60 = inside;
-    return _e60;
+    uint _e62 = inside;
+    return _e62;
 }
 
 Candidate intersect_scene(Ray ray_13, bool shadow_2) {
@@ -1150,7 +1154,7 @@ vec4 texel_at(uint t_1, int x_2, int y) {
     int _e37 = rem_i32_((_e33 + int(h_2)), int(h_2));
     uint yi = uint(_e37);
     uint index = ((yi * w_4) + xi);
-    if ((format == 0u)) {
+    if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
         uint _e46 = _group_0_binding_7_cs[(base_4 + index)];
         vec4 c_8 = unpackUnorm4x8(_e46);
         float _e49 = srgb_channel(c_8.x);
@@ -1158,9 +1162,9 @@ vec4 texel_at(uint t_1, int x_2, int y) {
         float _e53 = srgb_channel(c_8.z);
         return vec4(_e49, _e51, _e53, c_8.w);
     }
-    uint _e61 = _group_0_binding_7_cs[(base_4 + (index * 2u))];
+    uint _e61 = _group_0_binding_7_cs[(base_4 + (index * RGBA16F_TEXEL_WORDS))];
     vec2 rg = unpackHalf2x16(_e61);
-    uint _e70 = _group_0_binding_7_cs[((base_4 + (index * 2u)) + 1u)];
+    uint _e70 = _group_0_binding_7_cs[((base_4 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
     vec2 ba = unpackHalf2x16(_e70);
     return vec4(rg, ba);
 }
@@ -1330,7 +1334,7 @@ LightSample sample_light_query(uint i_3, vec3 position_3, vec3 normal_3) {
     if ((i_3 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0));
     }
-    uint entry = (frame_4.light_table + (i_3 * 2u));
+    uint entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
     uint _e21 = _group_0_binding_6_cs[entry];
     uint _e26 = _group_0_binding_6_cs[(entry + 1u)];
     LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3);
@@ -1444,7 +1448,7 @@ vec3 trace(Ray camera_ray) {
                 pushed = false;
                 uint _e62 = ray_24.depth;
                 uint _e66 = depth;
-                if (((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE))) {
+                if (((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE))) {
                     spawn_count = 0u;
                     Ray _e74 = ray_24;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);

@@ -201,6 +201,7 @@ static const uint SUPERSAMPLING_GRID = 2u;
 static const uint RAY_CAMERA = 0u;
 static const uint NO_HIT = 4294967295u;
 static const bool HAS_MEDIA = false;
+static const uint MEDIUM_ENTRY_STRIDE = 1u;
 static const uint MESH_GEOMETRY = 4294967295u;
 static const uint NODE_LEAF_BIT = 2147483648u;
 static const uint NODE_COUNT_SHIFT = 27u;
@@ -217,10 +218,13 @@ static const float GAMMA_6_ = 3.576281e-7;
 static const float GAMMA_4_ = 2.3841864e-7;
 static const bool HAS_SECONDARY_RAYS = false;
 static const bool HAS_BACKGROUND = true;
+static const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
+static const uint RGBA16F_TEXEL_WORDS = 2u;
 static const uint FLAG_MEDIUM = 4u;
+static const uint LIGHT_ENTRY_STRIDE = 2u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
-static const uint FLAG_SECONDARY = 2u;
+static const uint FLAG_SECONDARY_RAYS = 2u;
 static const uint MAX_DEPTH = 4u;
 static const uint STACK_SIZE = 4u;
 static const uint MAX_SPAWN = 1u;
@@ -801,11 +805,11 @@ Triangle ConstructTriangle(float3 arg0, float3 arg1, float3 arg2) {
 Triangle mesh_triangle_query(uint m_1, uint i_1)
 {
     uint _e6 = asuint(params.Load((m_1 + 1u)*4));
-    uint slot_4 = ((_e6 + i_1) * 3u);
-    float4 _e12 = asfloat(triangles.Load4(slot_4*16));
-    float4 _e18 = asfloat(triangles.Load4((slot_4 + 1u)*16));
-    float4 _e24 = asfloat(triangles.Load4((slot_4 + 2u)*16));
-    const Triangle triangle_ = ConstructTriangle(_e12.xyz, _e18.xyz, _e24.xyz);
+    uint slot_4 = (_e6 + i_1);
+    float4 _e12 = asfloat(triangles.Load4((slot_4 * 3u)*16));
+    float4 _e20 = asfloat(triangles.Load4(((slot_4 * 3u) + 1u)*16));
+    float4 _e28 = asfloat(triangles.Load4(((slot_4 * 3u) + 2u)*16));
+    const Triangle triangle_ = ConstructTriangle(_e12.xyz, _e20.xyz, _e28.xyz);
     return triangle_;
 }
 
@@ -1282,8 +1286,8 @@ uint medium_at(float3 p_4, uint exclude)
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e57 = i_2;
-            i_2 = (_e57 + 1u);
+            uint _e59 = i_2;
+            i_2 = (_e59 + 1u);
         }
         loop_init_2 = false;
         uint _e29 = i_2;
@@ -1291,23 +1295,23 @@ uint medium_at(float3 p_4, uint exclude)
             break;
         }
         uint _e32 = i_2;
-        uint slot_5 = asuint(params.Load((frame_1.medium_table + _e32)*4));
+        uint slot_5 = asuint(params.Load((frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))*4));
         if ((slot_5 != exclude)) {
-            uint _e39 = F32_INF;
-            const Candidate _e41 = no_candidate(asfloat(_e39));
-            const Candidate _e43 = intersect_object(slot_5, probe, _e41, false);
-            float _e48 = nearest;
-            if (((_e43.slot != NO_HIT) && (_e43.t < _e48))) {
-                const Hit _e51 = finish_hit(probe, _e43);
-                if (!(_e51.front_face)) {
+            uint _e41 = F32_INF;
+            const Candidate _e43 = no_candidate(asfloat(_e41));
+            const Candidate _e45 = intersect_object(slot_5, probe, _e43, false);
+            float _e50 = nearest;
+            if (((_e45.slot != NO_HIT) && (_e45.t < _e50))) {
+                const Hit _e53 = finish_hit(probe, _e45);
+                if (!(_e53.front_face)) {
                     inside = (slot_5 + 1u);
-                    nearest = _e43.t;
+                    nearest = _e45.t;
                 }
             }
         }
     }
-    uint _e60 = inside;
-    return _e60;
+    uint _e62 = inside;
+    return _e62;
 }
 
 Candidate intersect_scene(Ray ray_13, bool shadow_2)
@@ -1475,7 +1479,7 @@ float4 texel_at(uint t_1, int x_2, int y)
     const int _e37 = rem_i32_(asint(asuint(_e33) + asuint(int(h_2))), int(h_2));
     uint yi = uint(_e37);
     uint index = ((yi * w_4) + xi);
-    if ((format == 0u)) {
+    if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
         uint _e46 = asuint(texels.Load((base_4 + index)*4));
         float4 c_8 = (float4(_e46 & 0xFF, _e46 >> 8 & 0xFF, _e46 >> 16 & 0xFF, _e46 >> 24) / 255.0);
         const float _e49 = srgb_channel(c_8.x);
@@ -1483,9 +1487,9 @@ float4 texel_at(uint t_1, int x_2, int y)
         const float _e53 = srgb_channel(c_8.z);
         return float4(_e49, _e51, _e53, c_8.w);
     }
-    uint _e61 = asuint(texels.Load((base_4 + (index * 2u))*4));
+    uint _e61 = asuint(texels.Load((base_4 + (index * RGBA16F_TEXEL_WORDS))*4));
     float2 rg = float2(f16tof32(_e61), f16tof32((_e61) >> 16));
-    uint _e70 = asuint(texels.Load(((base_4 + (index * 2u)) + 1u)*4));
+    uint _e70 = asuint(texels.Load(((base_4 + (index * RGBA16F_TEXEL_WORDS)) + 1u)*4));
     float2 ba = float2(f16tof32(_e70), f16tof32((_e70) >> 16));
     return float4(rg, ba);
 }
@@ -1706,7 +1710,7 @@ LightSample sample_light_query(uint i_3, float3 position_3, float3 normal_3)
         const LightSample lightsample_2 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx);
         return lightsample_2;
     }
-    uint entry = (frame_4.light_table + (i_3 * 2u));
+    uint entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
     uint _e21 = asuint(params.Load(entry*4));
     uint _e26 = asuint(params.Load((entry + 1u)*4));
     const LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3);
@@ -1860,7 +1864,7 @@ float3 trace(Ray camera_ray)
                 pushed = false;
                 uint _e62 = ray_24.depth;
                 uint _e66 = depth;
-                if (((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE))) {
+                if (((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE))) {
                     spawn_count = 0u;
                     Ray _e74 = ray_24;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);

@@ -194,6 +194,7 @@ constant uint SUPERSAMPLING_GRID = 2u;
 constant uint RAY_CAMERA = 0u;
 constant uint NO_HIT = 4294967295u;
 constant bool HAS_MEDIA = false;
+constant uint MEDIUM_ENTRY_STRIDE = 1u;
 constant uint MESH_GEOMETRY = 4294967295u;
 constant uint NODE_LEAF_BIT = 2147483648u;
 constant uint NODE_COUNT_SHIFT = 27u;
@@ -210,10 +211,13 @@ constant float GAMMA_6_ = 0.0000003576281;
 constant float GAMMA_4_ = 0.00000023841864;
 constant bool HAS_SECONDARY_RAYS = false;
 constant bool HAS_BACKGROUND = true;
+constant uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
+constant uint RGBA16F_TEXEL_WORDS = 2u;
 constant uint FLAG_MEDIUM = 4u;
+constant uint LIGHT_ENTRY_STRIDE = 2u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
-constant uint FLAG_SECONDARY = 2u;
+constant uint FLAG_SECONDARY_RAYS = 2u;
 constant uint MAX_DEPTH = 4u;
 constant uint STACK_SIZE = 4u;
 constant uint MAX_SPAWN = 1u;
@@ -791,11 +795,11 @@ Triangle mesh_triangle_query(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e6 = params[m_1 + 1u];
-    uint slot_4 = (_e6 + i_1) * 3u;
-    metal::float4 _e12 = triangles[slot_4];
-    metal::float4 _e18 = triangles[slot_4 + 1u];
-    metal::float4 _e24 = triangles[slot_4 + 2u];
-    return Triangle {_e12.xyz, _e18.xyz, _e24.xyz};
+    uint slot_4 = _e6 + i_1;
+    metal::float4 _e12 = triangles[slot_4 * 3u];
+    metal::float4 _e20 = triangles[(slot_4 * 3u) + 1u];
+    metal::float4 _e28 = triangles[(slot_4 * 3u) + 2u];
+    return Triangle {_e12.xyz, _e20.xyz, _e28.xyz};
 }
 
 Intersection intersect_triangle(
@@ -1255,8 +1259,8 @@ uint medium_at(
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e57 = i_2;
-            i_2 = _e57 + 1u;
+            uint _e59 = i_2;
+            i_2 = _e59 + 1u;
         }
         loop_init_2 = false;
         uint _e29 = i_2;
@@ -1264,23 +1268,23 @@ uint medium_at(
             break;
         }
         uint _e32 = i_2;
-        uint slot_5 = params[frame_1.medium_table + _e32];
+        uint slot_5 = params[frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE)];
         if (slot_5 != exclude) {
-            uint _e39 = F32_INF;
-            Candidate _e41 = no_candidate(as_type<float>(_e39));
-            Candidate _e43 = intersect_object(slot_5, probe, _e41, false, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, _buffer_sizes);
-            float _e48 = nearest;
-            if ((_e43.slot != NO_HIT) && (_e43.t < _e48)) {
-                Hit _e51 = finish_hit(probe, _e43, instances, triangles, hit_error, attributes, _buffer_sizes);
-                if (!(_e51.front_face)) {
+            uint _e41 = F32_INF;
+            Candidate _e43 = no_candidate(as_type<float>(_e41));
+            Candidate _e45 = intersect_object(slot_5, probe, _e43, false, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, _buffer_sizes);
+            float _e50 = nearest;
+            if ((_e45.slot != NO_HIT) && (_e45.t < _e50)) {
+                Hit _e53 = finish_hit(probe, _e45, instances, triangles, hit_error, attributes, _buffer_sizes);
+                if (!(_e53.front_face)) {
                     inside = slot_5 + 1u;
-                    nearest = _e43.t;
+                    nearest = _e45.t;
                 }
             }
         }
     }
-    uint _e60 = inside;
-    return _e60;
+    uint _e62 = inside;
+    return _e62;
 }
 
 Candidate intersect_scene(
@@ -1459,7 +1463,7 @@ metal::float4 texel_at(
     int _e37 = rem_i32_(as_type<int>(as_type<uint>(_e33) + as_type<uint>(static_cast<int>(h_2))), static_cast<int>(h_2));
     uint yi = static_cast<uint>(_e37);
     uint index = (yi * w_4) + xi;
-    if (format == 0u) {
+    if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
         uint _e46 = texels[base_4 + index];
         metal::float4 c_8 = metal::unpack_unorm4x8_to_float(_e46);
         float _e49 = srgb_channel(c_8.x);
@@ -1467,9 +1471,9 @@ metal::float4 texel_at(
         float _e53 = srgb_channel(c_8.z);
         return metal::float4(_e49, _e51, _e53, c_8.w);
     }
-    uint _e61 = texels[base_4 + (index * 2u)];
+    uint _e61 = texels[base_4 + (index * RGBA16F_TEXEL_WORDS)];
     metal::float2 rg = float2(as_type<half2>(_e61));
-    uint _e70 = texels[(base_4 + (index * 2u)) + 1u];
+    uint _e70 = texels[(base_4 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
     metal::float2 ba = float2(as_type<half2>(_e70));
     return metal::float4(rg, ba);
 }
@@ -1758,7 +1762,7 @@ LightSample sample_light_query(
     if (i_3 >= frame_4.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0)};
     }
-    uint entry = frame_4.light_table + (i_3 * 2u);
+    uint entry = frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE);
     uint _e21 = params[entry];
     uint _e26 = params[entry + 1u];
     LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
@@ -1952,7 +1956,7 @@ metal::float3 trace(
                 pushed = false;
                 uint _e62 = ray_24.depth;
                 uint _e66 = depth;
-                if ((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
+                if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
                     spawn_count = 0u;
                     Ray _e74 = ray_24;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);

@@ -162,6 +162,7 @@ const SUPERSAMPLING_GRID: u32 = 2u;
 const RAY_CAMERA: u32 = 0u;
 const NO_HIT: u32 = 4294967295u;
 const HAS_MEDIA: bool = false;
+const MEDIUM_ENTRY_STRIDE: u32 = 1u;
 const MESH_GEOMETRY: u32 = 4294967295u;
 const NODE_LEAF_BIT: u32 = 2147483648u;
 const NODE_COUNT_SHIFT: u32 = 27u;
@@ -178,10 +179,13 @@ const GAMMA_6_: f32 = 0.0000003576281f;
 const GAMMA_4_: f32 = 0.00000023841864f;
 const HAS_SECONDARY_RAYS: bool = false;
 const HAS_BACKGROUND: bool = true;
+const TEXTURE_FORMAT_RGBA8_SRGB: u32 = 0u;
+const RGBA16F_TEXEL_WORDS: u32 = 2u;
 const FLAG_MEDIUM: u32 = 4u;
+const LIGHT_ENTRY_STRIDE: u32 = 2u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
-const FLAG_SECONDARY: u32 = 2u;
+const FLAG_SECONDARY_RAYS: u32 = 2u;
 const MAX_DEPTH: u32 = 4u;
 const STACK_SIZE: u32 = 4u;
 const MAX_SPAWN: u32 = 1u;
@@ -630,11 +634,11 @@ fn bvh_mesh_enter(ray_6: Ray, n_1: BvhNode, tmax_4: f32) -> f32 {
 
 fn mesh_triangle_query(m_1: u32, i_1: u32) -> Triangle {
     let _e6 = params[(m_1 + 1u)];
-    let slot_4 = ((_e6 + i_1) * 3u);
-    let _e12 = triangles[slot_4];
-    let _e18 = triangles[(slot_4 + 1u)];
-    let _e24 = triangles[(slot_4 + 2u)];
-    return Triangle(_e12.xyz, _e18.xyz, _e24.xyz);
+    let slot_4 = (_e6 + i_1);
+    let _e12 = triangles[(slot_4 * 3u)];
+    let _e20 = triangles[((slot_4 * 3u) + 1u)];
+    let _e28 = triangles[((slot_4 * 3u) + 2u)];
+    return Triangle(_e12.xyz, _e20.xyz, _e28.xyz);
 }
 
 fn intersect_triangle(ray_7: Ray, tri: Triangle) -> Intersection {
@@ -1001,27 +1005,27 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
             break;
         }
         let _e32 = i_2;
-        let slot_5 = params[(frame_1.medium_table + _e32)];
+        let slot_5 = params[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if (slot_5 != exclude) {
-            let _e39 = F32_INF;
-            let _e41 = no_candidate(bitcast<f32>(_e39));
-            let _e43 = intersect_object(slot_5, probe, _e41, false);
-            let _e48 = nearest;
-            if ((_e43.slot != NO_HIT) && (_e43.t < _e48)) {
-                let _e51 = finish_hit(probe, _e43);
-                if !(_e51.front_face) {
+            let _e41 = F32_INF;
+            let _e43 = no_candidate(bitcast<f32>(_e41));
+            let _e45 = intersect_object(slot_5, probe, _e43, false);
+            let _e50 = nearest;
+            if ((_e45.slot != NO_HIT) && (_e45.t < _e50)) {
+                let _e53 = finish_hit(probe, _e45);
+                if !(_e53.front_face) {
                     inside = (slot_5 + 1u);
-                    nearest = _e43.t;
+                    nearest = _e45.t;
                 }
             }
         }
         continuing {
-            let _e57 = i_2;
-            i_2 = (_e57 + 1u);
+            let _e59 = i_2;
+            i_2 = (_e59 + 1u);
         }
     }
-    let _e60 = inside;
-    return _e60;
+    let _e62 = inside;
+    return _e62;
 }
 
 fn intersect_scene(ray_13: Ray, shadow_2: bool) -> Candidate {
@@ -1159,7 +1163,7 @@ fn texel_at(t_1: u32, x_2: i32, y: i32) -> vec4<f32> {
     let _e37 = rem_i32_((_e33 + i32(h_2)), i32(h_2));
     let yi = u32(_e37);
     let index = ((yi * w_4) + xi);
-    if (format == 0u) {
+    if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
         let _e46 = texels[(base_4 + index)];
         let c_8 = unpack4x8unorm(_e46);
         let _e49 = srgb_channel(c_8.x);
@@ -1167,9 +1171,9 @@ fn texel_at(t_1: u32, x_2: i32, y: i32) -> vec4<f32> {
         let _e53 = srgb_channel(c_8.z);
         return vec4<f32>(_e49, _e51, _e53, c_8.w);
     }
-    let _e61 = texels[(base_4 + (index * 2u))];
+    let _e61 = texels[(base_4 + (index * RGBA16F_TEXEL_WORDS))];
     let rg = unpack2x16float(_e61);
-    let _e70 = texels[((base_4 + (index * 2u)) + 1u)];
+    let _e70 = texels[((base_4 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
     let ba = unpack2x16float(_e70);
     return vec4<f32>(rg, ba);
 }
@@ -1341,7 +1345,7 @@ fn sample_light_query(i_3: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> L
     if (i_3 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f));
     }
-    let entry = (frame_4.light_table + (i_3 * 2u));
+    let entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
     let _e21 = params[entry];
     let _e26 = params[(entry + 1u)];
     let _e27 = dispatch_light(_e21, _e26, position_3, normal_3);
@@ -1456,7 +1460,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 pushed = false;
                 let _e62 = ray_24.depth;
                 let _e66 = depth;
-                if ((((inst_10.flags & FLAG_SECONDARY) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
+                if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
                     spawn_count = 0u;
                     let _e74 = ray_24;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);
