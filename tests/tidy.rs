@@ -5,7 +5,7 @@
 //! - a path in a comment or a Markdown file that starts at a top-level folder (`compiler/…`,
 //!   `runtime/…`, `stdlib/…`, `docs/…`, …) or that names a source file relative to an enclosing
 //!   folder (`sema/consteval.rs` from inside `compiler/src/`);
-//! - a section of a Markdown file named as `FILE.md, "Heading"`;
+//! - a section of a Markdown file named as `FILE.md, "Heading"` or linked as `FILE.md#anchor`;
 //! - "ARCHITECTURE invariant N" (N within the numbered list of ARCHITECTURE.md's "Invariants");
 //! - no numbered rule of a style guide the repository does not hold.
 //!
@@ -187,7 +187,7 @@ fn cites_a_path(token: &str, ignored: &[String]) -> bool {
     if !token.contains('/') || token.starts_with('/') || token.contains("//") {
         return false;
     }
-    if token.starts_with("../") || token.starts_with("shared/") {
+    if token.starts_with("shared/") {
         return false;
     }
     if ignored.iter().any(|i| token.starts_with(i.as_str())) {
@@ -199,6 +199,27 @@ fn cites_a_path(token: &str, ignored: &[String]) -> bool {
     let last = token.rsplit('/').next().unwrap_or("");
     last.rsplit_once('.')
         .is_some_and(|(stem, ext)| !stem.is_empty() && CITED_EXTENSIONS.contains(&ext))
+}
+
+/// A `../` path cited by `file`, as a path from the repository root, or `None` when it leaves the
+/// repository (the project's sibling `shared/` folder, for instance).
+fn within_repo(root: &Path, file: &Path, token: &str) -> Option<String> {
+    let mut parts: Vec<String> = rel(file.parent()?)
+        .split('/')
+        .filter(|p| !p.is_empty())
+        .map(String::from)
+        .collect();
+    for seg in token.split('/') {
+        match seg {
+            ".." => {
+                parts.pop()?;
+            }
+            "." | "" => {}
+            s => parts.push(s.to_string()),
+        }
+    }
+    let _ = root;
+    Some(parts.join("/"))
 }
 
 /// Whether a path that does not exist is a placeholder (`examples/NAME/`, `FILE.md`).
@@ -263,6 +284,31 @@ fn headings(md: &str) -> Vec<String> {
             !fenced && l.starts_with('#')
         })
         .map(|l| normalise(l.trim_start_matches('#')))
+        .collect()
+}
+
+/// The file a cited Markdown path names: from the citing file's folder, else from the root.
+fn target_of(root: &Path, file: &Path, cited: &str) -> PathBuf {
+    let beside = file.parent().unwrap_or(root).join(cited);
+    if beside.exists() {
+        beside
+    } else {
+        root.join(cited)
+    }
+}
+
+/// A heading's anchor as GitHub makes it: lower case, punctuation dropped, spaces as hyphens.
+fn slug(heading: &str) -> String {
+    heading
+        .chars()
+        .filter(|c| c.is_alphanumeric() || *c == ' ' || *c == '-' || *c == '_')
+        .map(|c| {
+            if c == ' ' {
+                '-'
+            } else {
+                c.to_ascii_lowercase()
+            }
+        })
         .collect()
 }
 
@@ -337,10 +383,27 @@ fn every_reference_in_the_documentation_exists() {
                     start = None;
                     let token = joined[s..i].trim_end_matches(['.', ',']);
                     let after_url = joined[..s].ends_with(':');
-                    if after_url || joined[..s].ends_with('$') || !cites_a_path(token, &ignored) {
+                    // A relative import in an example (`import "../shared/fog.rt";`) names the
+                    // reader's files, not ours; `std/…` imports are checked.
+                    let example_import =
+                        joined[..s].ends_with("import \"") && !token.starts_with("std/");
+                    if after_url
+                        || example_import
+                        || joined[..s].ends_with('$')
+                        || !cites_a_path(token, &ignored)
+                    {
                         continue;
                     }
-                    for cited in expand_braces(token) {
+                    // `../…`: relative to the citing file; outside the repository is not ours.
+                    let token = if token.starts_with("../") {
+                        match within_repo(&root, &file, token) {
+                            Some(t) => t,
+                            None => continue,
+                        }
+                    } else {
+                        token.to_string()
+                    };
+                    for cited in expand_braces(&token) {
                         checked += 1;
                         if !resolves(&root, &file, &cited) {
                             if has_placeholder(&cited) {
@@ -349,18 +412,30 @@ fn every_reference_in_the_documentation_exists() {
                             broken.push(format!("{here}:{}: `{cited}` does not exist", line_of(s)));
                             continue;
                         }
+                        // `[text](FILE.md#anchor)`: the anchor must be one of its headings'.
+                        if cited.ends_with(".md") && joined[i..].starts_with('#') {
+                            let anchor: String = joined[i + 1..]
+                                .chars()
+                                .take_while(|c| c.is_ascii_alphanumeric() || *c == '-' || *c == '_')
+                                .collect();
+                            let md = std::fs::read_to_string(target_of(&root, &file, &cited))
+                                .unwrap_or_default();
+                            if !headings(&md).iter().any(|h| slug(h) == anchor) {
+                                broken.push(format!(
+                                    "{here}:{}: `{cited}` has no heading for #{anchor}",
+                                    line_of(s)
+                                ));
+                            }
+                        }
                         // `FILE.md, "Heading"`: the section must exist.
                         if cited.ends_with(".md") {
                             let rest = joined[i..].trim_start_matches([',', ' ', '(', '\'', 's']);
                             if let Some(q) = rest.strip_prefix('"') {
                                 if let Some(end) = q.find('"') {
                                     let heading = normalise(&q[..end]);
-                                    let target = if root.join(&cited).exists() {
-                                        root.join(&cited)
-                                    } else {
-                                        file.parent().unwrap().join(&cited)
-                                    };
-                                    let md = std::fs::read_to_string(&target).unwrap_or_default();
+                                    let md =
+                                        std::fs::read_to_string(target_of(&root, &file, &cited))
+                                            .unwrap_or_default();
                                     if !headings(&md).iter().any(|h| *h == heading) {
                                         broken.push(format!(
                                             "{here}:{}: `{cited}` has no section \"{}\"",
