@@ -203,7 +203,7 @@ fn cites_a_path(token: &str, ignored: &[String]) -> bool {
 
 /// A `../` path cited by `file`, as a path from the repository root, or `None` when it leaves the
 /// repository (the project's sibling `shared/` folder, for instance).
-fn within_repo(root: &Path, file: &Path, token: &str) -> Option<String> {
+fn within_repo(file: &Path, token: &str) -> Option<String> {
     let mut parts: Vec<String> = rel(file.parent()?)
         .split('/')
         .filter(|p| !p.is_empty())
@@ -218,7 +218,6 @@ fn within_repo(root: &Path, file: &Path, token: &str) -> Option<String> {
             s => parts.push(s.to_string()),
         }
     }
-    let _ = root;
     Some(parts.join("/"))
 }
 
@@ -396,7 +395,7 @@ fn every_reference_in_the_documentation_exists() {
                     }
                     // `../…`: relative to the citing file; outside the repository is not ours.
                     let token = if token.starts_with("../") {
-                        match within_repo(&root, &file, token) {
+                        match within_repo(&file, token) {
                             Some(t) => t,
                             None => continue,
                         }
@@ -436,7 +435,7 @@ fn every_reference_in_the_documentation_exists() {
                                     let md =
                                         std::fs::read_to_string(target_of(&root, &file, &cited))
                                             .unwrap_or_default();
-                                    if !headings(&md).iter().any(|h| *h == heading) {
+                                    if !headings(&md).contains(&heading) {
                                         broken.push(format!(
                                             "{here}:{}: `{cited}` has no section \"{}\"",
                                             line_of(s),
