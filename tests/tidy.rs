@@ -1,6 +1,6 @@
 //! Tidy checks over the whole repository (after rust-analyzer's `tidy` tests): every Rust file of
-//! every crate and every `.rt` file of the standard library and examples starts with a `//!` module
-//! doc, and every intra-repository reference the documentation names exists:
+//! every crate and every `.rt` file of the standard library, the examples and the GPU test scenes
+//! starts with a `//!` module doc, and every intra-repository reference the documentation names exists:
 //!
 //! - a path in a comment or a Markdown file that starts at a top-level folder (`compiler/…`,
 //!   `runtime/…`, `stdlib/…`, `docs/…`, …) or that names a source file relative to an enclosing
@@ -98,7 +98,9 @@ fn every_source_file_starts_with_a_module_doc() {
             let r = rel(p);
             extension(p) == "rs"
                 || (extension(p) == "rt"
-                    && (r.starts_with("stdlib/") || r.starts_with("examples/")))
+                    && ["stdlib/", "examples/", "runtime/tests/scenes/"]
+                        .iter()
+                        .any(|d| r.starts_with(d)))
         })
         .collect();
     assert!(
