@@ -66,6 +66,25 @@ impl AssetArgs {
     }
 }
 
+/// The options of every command that renders a scene file to pixels (`render`, `bvh`, `view`,
+/// `watch`): which scene and its size, samples per pixel, the GPU, and where assets may come from.
+/// (`bench` renders lists of sample counts, so it flattens these groups without [`SppArgs`].)
+#[derive(Clone, Debug, Args)]
+pub struct RenderArgs {
+    /// Which scene, and its image size.
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// Samples per pixel.
+    #[command(flatten)]
+    pub spp: SppArgs,
+    /// The GPU.
+    #[command(flatten)]
+    pub adapter: AdapterArgs,
+    /// Where else the scene's assets may come from.
+    #[command(flatten)]
+    pub assets: AssetArgs,
+}
+
 /// `--scene` and `--size`, shared by the commands that render a scene (`render`, `bench`, `bvh`,
 /// `view`, `watch`).
 #[derive(Clone, Debug, Default, Args)]
@@ -221,6 +240,23 @@ pub fn parse_spp(text: &str) -> Result<u32, String> {
             "`{text}` is not a sample count; write a whole number from 1 to {max}"
         )),
     }
+}
+
+/// The format of the image `path` names, checked before any work: it ends in `.png` or `.exr` and
+/// [`check_output_path`] accepts it (else a message for a usage error). `what` names it in the
+/// message ("the image", "the screenshot", "the preview").
+pub fn image_output(
+    path: &std::path::Path,
+    what: &str,
+) -> Result<crate::cmd::render::Format, String> {
+    let Some(format) = crate::cmd::render::output_format(path) else {
+        return Err(format!(
+            "cannot write `{}`: {what} must end in `.png` or `.exr`",
+            path.display()
+        ));
+    };
+    check_output_path(path, what)?;
+    Ok(format)
 }
 
 /// Checks, before any work, that `path` can be written as an output file: its folder exists and

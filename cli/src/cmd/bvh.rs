@@ -19,9 +19,9 @@
 //! input.
 
 use super::bench::{compile, print_warnings};
-use super::render::{fail, output_format, render_failure, warn, write_image};
+use super::render::{fail, render_failure, warn, write_image};
 use super::Context;
-use crate::args::{AdapterArgs, AssetArgs, BvhArgs, SceneArgs, SppArgs};
+use crate::args::{BvhArgs, RenderArgs};
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::kernel::{CompiledScene, DebugMode, KernelOptions};
@@ -62,53 +62,36 @@ pub struct Args {
     /// Line width of the box edges, pixels.
     #[arg(long, value_name = "PX", default_value_t = 1.5)]
     pub line_width: f32,
-    /// Which scene, and its image size.
+    /// Scene, size, samples, GPU and asset folders.
     #[command(flatten)]
-    pub scene: SceneArgs,
-    /// Samples per pixel.
-    #[command(flatten)]
-    pub spp: SppArgs,
-    /// The GPU.
-    #[command(flatten)]
-    pub adapter: AdapterArgs,
+    pub render: RenderArgs,
     /// The BVH builder.
     #[command(flatten)]
     pub bvh: BvhArgs,
-    /// Where else the scene's assets may come from.
-    #[command(flatten)]
-    pub assets: AssetArgs,
 }
 
 /// Runs `rtc bvh`.
 pub fn run(args: &Args, ctx: &Context) -> Exit {
-    let Some(format) = output_format(&args.output) else {
-        return report::usage_error(
-            &format!(
-                "cannot write `{}`: the output must end in `.png` or `.exr`",
-                args.output.display()
-            ),
-            ctx.color,
-        );
+    let format = match crate::args::image_output(&args.output, "the image") {
+        Ok(f) => f,
+        Err(e) => return report::usage_error(&e, ctx.color),
     };
-    if let Err(e) = crate::args::check_output_path(&args.output, "the image") {
-        return report::usage_error(&e, ctx.color);
-    }
     if !(args.line_width.is_finite() && args.line_width > 0.0) {
         return report::usage_error(
             "--line-width must be a positive number of pixels",
             ctx.color,
         );
     }
-    let choice = match args.adapter.choice() {
+    let choice = match args.render.adapter.choice() {
         Ok(c) => c,
         Err(e) => return report::usage_error(&e, ctx.color),
     };
-    let roots = match args.assets.roots() {
+    let roots = match args.render.assets.roots() {
         Ok(r) => r,
         Err(e) => return report::usage_error(&e, ctx.color),
     };
     let debug = |mode| KernelOptions { debug: Some(mode) };
-    let scene = args.scene.name.as_deref();
+    let scene = args.render.scene.name.as_deref();
     let normal = match compile(&args.path, scene, &KernelOptions::default(), ctx, "draw") {
         Ok(c) => c,
         Err(exit) => return exit,
@@ -120,8 +103,8 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     };
     term::print(&format!("adapter: {}\n", gpu.description()));
     let options = RenderOptions {
-        size: args.scene.image_size(),
-        samples: args.spp.samples,
+        size: args.render.scene.image_size(),
+        samples: args.render.spp.samples,
         bvh: args.bvh.preset.into(),
         asset_roots: roots,
         ..RenderOptions::default()

@@ -19,7 +19,7 @@
 pub mod model;
 
 use super::Context;
-use crate::args::{AdapterArgs, AssetArgs, BvhArgs, MessageFormat, SceneArgs, SppArgs};
+use crate::args::{BvhArgs, MessageFormat, RenderArgs};
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::kernel::compile_scene;
@@ -42,21 +42,12 @@ pub struct Args {
     /// The image to write: `.png` (8-bit sRGB, values clipped to 1) or `.exr` (linear float).
     #[arg(short, long, value_name = "FILE")]
     pub output: PathBuf,
-    /// Which scene, and its image size.
+    /// Scene, size, samples, GPU and asset folders.
     #[command(flatten)]
-    pub scene: SceneArgs,
-    /// Samples per pixel.
-    #[command(flatten)]
-    pub spp: SppArgs,
-    /// The GPU.
-    #[command(flatten)]
-    pub adapter: AdapterArgs,
+    pub render: RenderArgs,
     /// The BVH builder.
     #[command(flatten)]
     pub bvh: BvhArgs,
-    /// Where else the scene's assets may come from.
-    #[command(flatten)]
-    pub assets: AssetArgs,
 }
 
 /// The output formats, by extension.
@@ -80,30 +71,22 @@ pub fn output_format(path: &Path) -> Option<Format> {
 
 /// Runs `rtc render`.
 pub fn run(args: &Args, ctx: &Context) -> Exit {
-    let Some(format) = output_format(&args.output) else {
-        return report::usage_error(
-            &format!(
-                "cannot write `{}`: the output must end in `.png` or `.exr`",
-                args.output.display()
-            ),
-            ctx.color,
-        );
+    let format = match crate::args::image_output(&args.output, "the image") {
+        Ok(f) => f,
+        Err(e) => return report::usage_error(&e, ctx.color),
     };
-    if let Err(e) = crate::args::check_output_path(&args.output, "the image") {
-        return report::usage_error(&e, ctx.color);
-    }
-    let choice = match args.adapter.choice() {
+    let choice = match args.render.adapter.choice() {
         Ok(c) => c,
         Err(e) => return report::usage_error(&e, ctx.color),
     };
-    let roots = match args.assets.roots() {
+    let roots = match args.render.assets.roots() {
         Ok(r) => r,
         Err(e) => return report::usage_error(&e, ctx.color),
     };
 
     // A bare glTF file: render a scene written for it, saying which defaults it got.
     let synth = if model::is_model(&args.path) {
-        if args.scene.name.is_some() {
+        if args.render.scene.name.is_some() {
             return report::usage_error(
                 "--scene chooses among the scenes of a .rt file; a glTF file has one",
                 ctx.color,
@@ -125,7 +108,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
 
     let compiled = match compile_scene(
         std::slice::from_ref(scene_path),
-        args.scene.name.as_deref(),
+        args.render.scene.name.as_deref(),
         &ctx.options,
         &LinkOptions::default(),
     ) {
@@ -170,8 +153,8 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         None => roots,
     };
     let options = RenderOptions {
-        size: args.scene.image_size(),
-        samples: args.spp.samples,
+        size: args.render.scene.image_size(),
+        samples: args.render.spp.samples,
         bvh: args.bvh.preset.into(),
         asset_roots,
         ..RenderOptions::default()

@@ -29,7 +29,7 @@ mod present;
 use super::render::{output_format, write_image, Format};
 use super::watch::{describe, update_dirs, Session, Status};
 use super::Context;
-use crate::args::{AdapterArgs, AssetArgs, SceneArgs, SppArgs};
+use crate::args::RenderArgs;
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::kernel::CompiledScene;
@@ -54,24 +54,15 @@ pub struct Args {
     /// The scene file (its imports and assets are watched and reloaded).
     #[arg(value_name = "SCENE.rt")]
     pub path: PathBuf,
-    /// Which scene, and its image size.
+    /// Scene, size, samples, GPU and asset folders.
     #[command(flatten)]
-    pub scene: SceneArgs,
-    /// Samples per pixel.
-    #[command(flatten)]
-    pub spp: SppArgs,
-    /// The GPU.
-    #[command(flatten)]
-    pub adapter: AdapterArgs,
+    pub render: RenderArgs,
     /// Write the image shown to this `.png` or `.exr` after every frame (for tests).
     #[arg(long, value_name = "FILE", hide = true)]
     pub screenshot: Option<PathBuf>,
     /// Close the window after this many frames (for tests).
     #[arg(long, value_name = "N", hide = true)]
     pub exit_after_frames: Option<u32>,
-    /// Where else the scene's assets may come from.
-    #[command(flatten)]
-    pub assets: AssetArgs,
 }
 
 /// What the file watcher and the Ctrl-C handler send to the event loop.
@@ -298,7 +289,7 @@ impl App<'_> {
 
     /// The scene's own sample count (or `--spp`).
     fn wanted_spp(&self) -> u32 {
-        self.args.spp.samples.unwrap_or_else(|| {
+        self.args.render.spp.samples.unwrap_or_else(|| {
             self.session
                 .last()
                 .and_then(|c| {
@@ -342,10 +333,10 @@ impl App<'_> {
             write_orbit(compiled, orbit);
         }
         let options = RenderOptions {
-            size: self.args.scene.image_size(),
+            size: self.args.render.scene.image_size(),
             samples: Some(spp),
             // Checked to be folders in `run`.
-            asset_roots: AssetRoots::new(self.args.assets.asset_roots.iter().cloned()),
+            asset_roots: AssetRoots::new(self.args.render.assets.asset_roots.iter().cloned()),
             ..RenderOptions::default()
         };
         let t = Instant::now();
@@ -441,7 +432,7 @@ impl ApplicationHandler<UserEvent> for App<'_> {
         if self.window.is_some() {
             return;
         }
-        let [w, h] = match (self.args.scene.image_size(), self.session.last()) {
+        let [w, h] = match (self.args.render.scene.image_size(), self.session.last()) {
             (Some(s), _) => s,
             (None, Some(c)) => c
                 .checked
@@ -614,25 +605,16 @@ fn event_loop() -> Result<EventLoop<UserEvent>, winit::error::EventLoopError> {
 /// Runs `rtc view`.
 pub fn run(args: &Args, ctx: &Context) -> Exit {
     if let Some(path) = &args.screenshot {
-        if output_format(path).is_none() {
-            return report::usage_error(
-                &format!(
-                    "cannot write `{}`: the screenshot must end in `.png` or `.exr`",
-                    path.display()
-                ),
-                ctx.color,
-            );
-        }
-        if let Err(e) = crate::args::check_output_path(path, "the screenshot") {
+        if let Err(e) = crate::args::image_output(path, "the screenshot") {
             return report::usage_error(&e, ctx.color);
         }
     }
-    let choice = match args.adapter.choice() {
+    let choice = match args.render.adapter.choice() {
         Ok(c) => c,
         Err(e) => return report::usage_error(&e, ctx.color),
     };
     // The roots are made again for each render (`App::render`); here they are only checked.
-    if let Err(e) = args.assets.roots() {
+    if let Err(e) = args.render.assets.roots() {
         return report::usage_error(&e, ctx.color);
     }
     if !args.path.is_file() {
@@ -646,7 +628,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     }
     let mut session = Session::new(
         &args.path,
-        args.scene.name.clone(),
+        args.render.scene.name.clone(),
         &ctx.options,
         Vec::new(),
         None,

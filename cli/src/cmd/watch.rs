@@ -26,9 +26,9 @@
 //! (with an error line), not the watch.
 
 use super::compile::{parse_target, write_outputs, OutputError};
-use super::render::{output_format, write_image, Format};
+use super::render::{write_image, Format};
 use super::Context;
-use crate::args::{AdapterArgs, AssetArgs, SceneArgs, SppArgs};
+use crate::args::RenderArgs;
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::back::Target;
@@ -64,24 +64,15 @@ pub struct Args {
     /// Targets, comma-separated: wgsl, spirv, hlsl, msl, glsl (default: all).
     #[arg(long, value_delimiter = ',', value_parser = parse_target)]
     pub target: Vec<Target>,
-    /// Which scene, and its image size.
+    /// Scene, size, samples, GPU and asset folders.
     #[command(flatten)]
-    pub scene: SceneArgs,
-    /// Samples per pixel.
-    #[command(flatten)]
-    pub spp: SppArgs,
-    /// The GPU.
-    #[command(flatten)]
-    pub adapter: AdapterArgs,
+    pub render: RenderArgs,
     /// A reload starts once no file event came for this long.
     #[arg(long, value_name = "MS", default_value_t = 15, value_parser = clap::value_parser!(u64).range(0..=60_000))]
     pub debounce_ms: u64,
     /// Stop after this many builds, counting the first (for tests and benchmarks).
     #[arg(long, value_name = "N", hide = true)]
     pub exit_after: Option<u32>,
-    /// Where else the scene's assets may come from.
-    #[command(flatten)]
-    pub assets: AssetArgs,
 }
 
 /// The preview a session renders after each good build.
@@ -699,34 +690,26 @@ enum Msg {
 
 /// Runs `rtc watch`.
 pub fn run(args: &Args, ctx: &Context) -> Exit {
-    let asset_roots = match args.assets.roots() {
+    let asset_roots = match args.render.assets.roots() {
         Ok(r) => r,
         Err(e) => return report::usage_error(&e, ctx.color),
     };
     let preview = match &args.output {
         None => None,
         Some(path) => {
-            let Some(format) = output_format(path) else {
-                return report::usage_error(
-                    &format!(
-                        "cannot write `{}`: the preview must end in `.png` or `.exr`",
-                        path.display()
-                    ),
-                    ctx.color,
-                );
+            let format = match crate::args::image_output(path, "the preview") {
+                Ok(f) => f,
+                Err(e) => return report::usage_error(&e, ctx.color),
             };
-            if let Err(e) = crate::args::check_output_path(path, "the preview") {
-                return report::usage_error(&e, ctx.color);
-            }
-            let adapter = match args.adapter.choice() {
+            let adapter = match args.render.adapter.choice() {
                 Ok(c) => c,
                 Err(e) => return report::usage_error(&e, ctx.color),
             };
             Some(Preview {
                 path: path.clone(),
                 format,
-                size: args.scene.image_size(),
-                samples: args.spp.samples,
+                size: args.render.scene.image_size(),
+                samples: args.render.spp.samples,
                 adapter,
                 asset_roots,
             })
@@ -745,7 +728,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     };
     let mut session = Session::new(
         &args.path,
-        args.scene.name.clone(),
+        args.render.scene.name.clone(),
         &ctx.options,
         targets,
         Some(args.out.clone()),
