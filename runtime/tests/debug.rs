@@ -185,8 +185,7 @@ fn reference(e: &Entities, origin: [f32; 3], dir: [f32; 3]) -> Counts {
     };
     let mut best = f32::INFINITY;
     let inv = safe_inverse(dir);
-    let tlas =
-        QuantizedBvh::from_gpu_nodes(&nodes[e.tlas_root() as usize..]).expect("a TLAS header");
+    let tlas = QuantizedBvh::from_records(&nodes[e.tlas_root() as usize..]).expect("a TLAS header");
     // The kernel first tests the TLAS's whole quantisation frame.
     let frame = tlas.header.frame();
     if slab_box(frame.min.into(), frame.max.into(), origin, inv, 0.0, best).is_none() {
@@ -204,7 +203,7 @@ fn reference(e: &Entities, origin: [f32; 3], dir: [f32; 3]) -> Counts {
                 assert_eq!(inst.geometry_type, GpuInstance::MESH_GEOMETRY);
                 let o = transform(&inst.world_to_object, origin, 1.0);
                 let d = transform(&inst.world_to_object, dir, 0.0);
-                let blas = QuantizedBvh::from_gpu_nodes(&nodes[inst.blas_root as usize..])
+                let blas = QuantizedBvh::from_records(&nodes[inst.blas_root as usize..])
                     .expect("a BLAS header");
                 traverse(
                     &blas,

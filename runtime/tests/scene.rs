@@ -83,7 +83,7 @@ fn buffers_hold_the_entities_and_moves_reupload_only_nodes_and_instances() {
     let mut scene = GpuScene::new(&gpu, &all_bindings());
     // The scene-level BVH (the last nodes) has one object per leaf: the kernel tests a leaf's
     // object `a` without a loop.
-    let tlas = QuantizedBvh::from_gpu_nodes(&e.nodes()[e.tlas_root() as usize..]).unwrap();
+    let tlas = QuantizedBvh::from_records(&e.nodes()[e.tlas_root() as usize..]).unwrap();
     let leaves: Vec<u32> = tlas.leaves().iter().map(|&(_, _, count)| count).collect();
     assert_eq!(leaves, vec![1; 8]);
 

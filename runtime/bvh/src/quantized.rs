@@ -227,14 +227,14 @@ impl QuantizedHeader {
 
 impl QuantizedBvh {
     /// The records as the GPU node buffer holds them (header first).
-    pub fn to_gpu_nodes(&self) -> Vec<NodeRecord> {
+    pub fn to_records(&self) -> Vec<NodeRecord> {
         let mut out = Vec::with_capacity(self.record_count());
-        self.append_gpu_nodes(&mut out);
+        self.append_records(&mut out);
         out
     }
 
     /// Appends the records to a GPU node buffer (header first).
-    pub fn append_gpu_nodes(&self, out: &mut Vec<NodeRecord>) {
+    pub fn append_records(&self, out: &mut Vec<NodeRecord>) {
         out.push(bytemuck::cast(self.header));
         out.extend_from_slice(bytemuck::cast_slice(&self.nodes));
     }
@@ -245,7 +245,7 @@ impl QuantizedBvh {
     }
 
     /// Reads the records back from a GPU node buffer slice (header first).
-    pub fn from_gpu_nodes(records: &[NodeRecord]) -> Option<Self> {
+    pub fn from_records(records: &[NodeRecord]) -> Option<Self> {
         let (&header, rest) = records.split_first()?;
         Some(Self {
             header: bytemuck::cast(header),

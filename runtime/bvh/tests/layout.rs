@@ -293,9 +293,9 @@ fn builds_are_deterministic_across_thread_counts() {
 /// boxes that contain the exact ones whichever way the kernel rounds `origin + q * scale`.
 fn check_quantized(bvh: &Bvh, name: &str) {
     let q = quantize(bvh).unwrap_or_else(|e| panic!("{name}: {e}"));
-    assert_eq!(q.to_gpu_nodes().len(), q.nodes.len() + 1);
+    assert_eq!(q.to_records().len(), q.nodes.len() + 1);
     assert_eq!(
-        QuantizedBvh::from_gpu_nodes(&q.to_gpu_nodes()).as_ref(),
+        QuantizedBvh::from_records(&q.to_records()).as_ref(),
         Some(&q)
     );
     let nodes = bvh.nodes();

@@ -405,7 +405,7 @@ impl Entities {
                 bounds: bvh.root_aabb(),
                 depth,
             });
-            records.append_gpu_nodes(&mut nodes);
+            records.append_records(&mut nodes);
             encode_mesh(data, &bvh, &mut triangles, &mut attributes);
         }
         let blas_nodes = to_u32("BVH nodes", nodes.len())?;
@@ -685,7 +685,7 @@ impl Entities {
             self.blas_nodes as usize + records.record_count(),
         )?;
         self.nodes.truncate(self.blas_nodes as usize);
-        records.append_gpu_nodes(&mut self.nodes);
+        records.append_records(&mut self.nodes);
         let order = tlas.prim_indices().to_vec();
         self.instances = order
             .iter()

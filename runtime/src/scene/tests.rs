@@ -254,7 +254,7 @@ scene s {{
         // node_base is the BLAS's header: its quantisation frame starts at the mesh box's
         // minimum and covers its maximum.
         let records = &e.nodes()[me.node_base as usize..][..me.node_count as usize];
-        let blas = QuantizedBvh::from_gpu_nodes(records).expect("header");
+        let blas = QuantizedBvh::from_records(records).expect("header");
         assert_eq!(Vec3::from(blas.header.origin), Vec3::from(me.bounds.min));
         assert!(blas
             .header
@@ -295,7 +295,7 @@ fn world_to_object(inst: &GpuInstance) -> Mat4 {
 /// Two-level closest hit over the buffers only: `(object, triangle, t)`.
 fn trace(e: &Entities, origin: Vec3, dir: Vec3) -> Option<(u32, u32, f32)> {
     let nodes = e.nodes();
-    let tlas = QuantizedBvh::from_gpu_nodes(&nodes[e.tlas_root() as usize..]).expect("header");
+    let tlas = QuantizedBvh::from_records(&nodes[e.tlas_root() as usize..]).expect("header");
     let tris = e.triangles();
     // The closest triangle found in each object (by object index).
     let mut triangle_of = vec![0u32; e.objects().len()];
@@ -314,7 +314,7 @@ fn trace(e: &Entities, origin: Vec3, dir: Vec3) -> Option<(u32, u32, f32)> {
             .find(|m| m.node_base == inst.blas_root)
             .expect("the instance's mesh");
         let records = &nodes[inst.blas_root as usize..][..mesh.node_count as usize];
-        let blas = QuantizedBvh::from_gpu_nodes(records).expect("header");
+        let blas = QuantizedBvh::from_records(records).expect("header");
         let h = closest_hit_quantized_with(&blas, &ray, |s, r, tm| {
             let k = (inst.triangle_offset + s) as usize * 3;
             let v = |i: usize| Vec3::from_slice(&tris[k + i][..3]);
@@ -376,7 +376,7 @@ fn instance_slots_follow_the_tlas_leaf_order() {
             );
         }
         // Every leaf's slots lie inside the leaf's box.
-        let tlas = QuantizedBvh::from_gpu_nodes(&e.nodes()[e.tlas_root() as usize..]).unwrap();
+        let tlas = QuantizedBvh::from_records(&e.nodes()[e.tlas_root() as usize..]).unwrap();
         for (b, first, count) in tlas.leaves() {
             for slot in first..first + count {
                 let x = 4.0 * e.instances()[slot as usize].object as f32;

@@ -222,7 +222,7 @@ fn bench_scene(scene: &Scene, o: &Options) -> SceneResult {
         let (build, (bvh, _records)) = measure(&label, o, o.runs, || {
             let bvh = build(input, preset);
             // What the runtime does with a mesh's BVH: its quantised node records.
-            let records = quantize(&bvh).map(|q| q.to_gpu_nodes());
+            let records = quantize(&bvh).map(|q| q.to_records());
             (bvh, records)
         });
         rows.push(Row {
