@@ -26,18 +26,22 @@
 //! message says where.
 //!
 //! **The stdlib programs the examples use** are also checked against values computed by hand, on
-//! small scenes written by the tests (see the section at the end): a sphere light lights like a point
-//! light of the same intensity, a spot light is a point light inside its cone and dark outside, a
-//! directional light and an analytic box give the cosine law and the exact shadow, a sphere is hit
-//! from inside, and `BvhMesh` finds the same nearest hits as the built-in mesh geometry.
+//! small scenes in `tests/scenes/examples/` (see the section at the end): a sphere light lights like a
+//! point light of the same intensity, a spot light is a point light inside its cone and dark outside,
+//! a directional light and an analytic box give the cosine law and the exact shadow, a sphere is hit
+//! from inside, and `BvhMesh` finds the same nearest hits as the built-in mesh geometry. They are
+//! compiled and rendered by the runtime's test harness (`runtime/tests/common/`), which also checks
+//! every file of `tests/scenes/` without a GPU, as the runtime's `scene_files` test does its own.
 //!
-//! Every test skips only when there is no GPU adapter at all, and then says so on stderr.
+//! Every GPU test skips only when there is no GPU adapter at all, and then says so on stderr.
 
-/// The GPU test harness the runtime's suites share (adapter, scene files, pixel checks).
+/// The GPU test harness the runtime's suites share (adapter, scene files, pixel checks); its scene
+/// files here are those of `tests/scenes/` (see `runtime/tests/common/scene.rs`).
 #[path = "../runtime/tests/common/mod.rs"]
 mod common;
 
-use common::gpu_or_skip;
+use common::scene::{const_value_range, SceneFile};
+use common::{gpu_or_skip, temp_dir};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -45,7 +49,7 @@ use rtc_compiler::driver::{check_paths, Options};
 use rtc_compiler::kernel::compile_scene;
 use rtc_compiler::link::LinkOptions;
 use rtc_runtime::gpu::Gpu;
-use rtc_runtime::image_out::{read_image, to_srgb8, write_png, ToneMap};
+use rtc_runtime::image_out::{read_image, to_srgb8, write_png, LinearImage, ToneMap};
 use rtc_runtime::render::{RenderOptions, Renderer};
 use rtc_tests::paths::{display_relative, repo_root};
 
@@ -327,86 +331,63 @@ fn the_difference_measures_psnr_and_outliers() {
 // ---------------------------------------------------------------------------------------------------
 // The standard-library programs the examples use, against values computed by hand.
 //
-// Each scene is 33 × 33 pixels seen straight down from `(0, CAM_Y, 0)` through a 90° `Pinhole` whose
-// image-up is -z, so the ray of pixel `(x, y)` at offset `(u, v)` inside it is `(ndc_x, -1, ndc_y)`
-// with `ndc = (pixel + offset) / 33 · 2 - 1`, and meets the floor `y = 0` at `CAM_Y · (ndc_x, ndc_y)`.
-// With one sample per pixel the offset is ½ (the centre); with more it is random, and the expected
-// value is the mean over the pixel, computed here on an 8 × 8 grid. The floor is a Lambert quad of
-// albedo 1, so a lit floor point shows `E / π` for irradiance `E`.
+// Each scene is a file of `tests/scenes/examples/` that imports `looking_down.rt`: 33 × 33 pixels seen
+// straight down from `(0, CAM_Y, 0)` through a 90° `Pinhole` whose image-up is -z, so the ray of pixel
+// `(x, y)` at offset `(u, v)` inside it is `(ndc_x, -1, ndc_y)` with `ndc = (pixel + offset) / 33 · 2
+// - 1`, and meets the floor `y = 0` at `CAM_Y · (ndc_x, ndc_y)`. With one sample per pixel the offset
+// is ½ (the centre); with more it is random, and the expected value is the mean over the pixel,
+// computed here on an 8 × 8 grid. The floor is a Lambert quad of albedo 1, so a lit floor point shows
+// `E / π` for irradiance `E`. The meshes a scene loads are written by its test next to it.
 
+/// The image side, as `looking_down.rt` declares it.
 const SIZE: u32 = 33;
+/// The camera's height, as `looking_down.rt` declares it.
 const CAM_Y: f64 = 3.0;
 
-/// The header of every analytic scene: imports, settings, the camera looking down.
-fn analytic_scene(name: &str, samples: u32, body: &str) -> String {
-    format!(
-        r#"
-import "std/cameras/pinhole.rt";
-import "std/geometry/sphere.rt";
-import "std/geometry/box.rt";
-import "std/geometry/bvh_mesh.rt";
-import "std/materials/lambert.rt";
-import "std/lights/point.rt";
-import "std/lights/directional.rt";
-import "std/lights/spot.rt";
-import "std/lights/sphere_area.rt";
-import "std/miss/constant.rt";
-
-scene {name} {{
-    settings {{ width: {SIZE}, height: {SIZE}, samples: {samples} }}
-    camera Pinhole {{
-        position: vec3f(0.0, {CAM_Y:?}, 0.0),
-        look_at: vec3f(0.0),
-        up: vec3f(0.0, 0.0, -1.0),
-        fov: 90.0,
-    }}
-{body}
-}}
-"#
-    )
+/// The scene file `tests/scenes/examples/<name>.rt`.
+fn analytic_scene(name: &str) -> SceneFile {
+    SceneFile::open(&format!("examples/{name}.rt"))
 }
 
-/// Compiles and renders `text` (written as `NAME.rt` in a fresh folder); panics with the diagnostics
-/// or the runtime's error.
-fn render_text(gpu: &Gpu, name: &str, text: &str) -> rtc_runtime::image_out::LinearImage {
-    render_with_files(gpu, name, text, &[])
-}
-
-/// [`render_text`], with `files` (`(name, contents)`) written next to the scene.
-fn render_with_files(
-    gpu: &Gpu,
-    name: &str,
-    text: &str,
-    files: &[(&str, &str)],
-) -> rtc_runtime::image_out::LinearImage {
-    let dir = std::env::temp_dir().join(format!("rtc-examples-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    for (file, contents) in files {
-        std::fs::write(dir.join(file), contents).expect("asset file");
+/// Compiles `file` in a fresh folder named after `name`, next to the `assets` (`(file name,
+/// contents)`) its scene loads, and renders it as its settings say; panics with the diagnostics or
+/// the runtime's error, and on any NaN or infinite sample.
+fn render(gpu: &Gpu, name: &str, file: &SceneFile, assets: &[(&str, &str)]) -> LinearImage {
+    let dir = temp_dir("examples", name);
+    for (asset, contents) in assets {
+        std::fs::write(dir.join(asset), contents).expect("asset file");
     }
-    let path = dir.join(format!("{name}.rt"));
-    std::fs::write(&path, text).expect("scene file");
-    let compiled = match compile_scene(
-        std::slice::from_ref(&path),
-        None,
-        &Options::default(),
-        &LinkOptions::default(),
-    ) {
-        Ok(c) => c,
-        Err(f) => panic!(
-            "{name}: compile failed:\n{}",
-            rtc_compiler::diag::render_human(&f.checked.sources, &f.diagnostics, false)
-        ),
-    };
-    let result = Renderer::new(gpu, &compiled, RenderOptions::default())
-        .and_then(|mut r| r.render(&mut |_, _| {}))
-        .unwrap_or_else(|e| panic!("{name}: {e}"));
-    assert_eq!(
-        result.stats.nonfinite_samples, 0,
-        "{name}: NaN or infinite samples"
-    );
+    let compiled = file.compile(&dir);
+    let (image, _) = common::scene::render(gpu, &compiled, RenderOptions::default(), name);
     let _ = std::fs::remove_dir_all(&dir);
-    result.image
+    image
+}
+
+/// Every scene file of `tests/scenes/` checks as `rtc check` would, before the tests set any of its
+/// constants. Needs no GPU.
+#[test]
+fn every_test_scene_file_checks() {
+    common::scene::assert_every_scene_file_checks(7);
+}
+
+/// Each folder of `tests/scenes/` belongs to a suite of this crate (`examples/` to this file).
+#[test]
+fn every_scene_folder_is_named_after_a_test_suite() {
+    common::scene::assert_every_scene_folder_is_a_suite();
+}
+
+/// The image side and camera height the checks below compute with are those of the scenes' shared
+/// camera file.
+#[test]
+fn the_analytic_scenes_look_down_as_the_checks_assume() {
+    let camera = analytic_scene("looking_down");
+    let value = |name: &str| {
+        let (start, end) = const_value_range(camera.text(), name)
+            .unwrap_or_else(|| panic!("looking_down.rt declares no {name}"));
+        camera.text()[start..end].trim().to_owned()
+    };
+    assert_eq!(value("SIZE"), format!("{SIZE}u"));
+    assert_eq!(value("CAM_Y"), format!("{CAM_Y:?}"));
 }
 
 /// The floor point seen at offset `(u, v)` of pixel `(x, y)`.
@@ -438,7 +419,7 @@ fn point_irradiance(p: [f64; 3], l: [f64; 3], i: f64) -> f64 {
     i * (d[1] / d2.sqrt()).max(0.0) / d2
 }
 
-fn red(img: &rtc_runtime::image_out::LinearImage, x: u32, y: u32) -> f64 {
+fn red(img: &LinearImage, x: u32, y: u32) -> f64 {
     f64::from(img.get(x, y).expect("pixel")[0])
 }
 
@@ -453,14 +434,8 @@ fn a_sphere_light_lights_like_a_point_light_of_the_same_intensity() {
         return;
     };
     let spp = 256;
-    let body = r#"
-    object floor { geometry: quad_mesh(), material: Lambert { albedo: vec3f(1.0) } }
-    light SphereLight { position: vec3f(0.0, 2.0, 0.0), radius: 1.0, intensity: 4.0 }"#;
-    let img = render_text(
-        &gpu,
-        "sphere_light",
-        &analytic_scene("sphere_light", spp, body),
-    );
+    let file = analytic_scene("sphere_light").set("SAMPLES", format!("{spp}u"));
+    let img = render(&gpu, "sphere_light", &file, &[]);
     let (mut sum_got, mut sum_want, mut checked) = (0.0, 0.0, 0);
     for y in 0..SIZE {
         for x in 0..SIZE {
@@ -496,16 +471,7 @@ fn a_spot_light_is_a_point_light_inside_its_cone_and_dark_outside() {
     else {
         return;
     };
-    let body = r#"
-    object floor { geometry: quad_mesh(), material: Lambert { albedo: vec3f(1.0) }, transform: scale(4.0) }
-    light SpotLight {
-        position: vec3f(0.0, 2.0, 0.0),
-        direction: vec3f(0.0, -1.0, 0.0),
-        intensity: 4.0,
-        inner_angle: 20.0,
-        outer_angle: 30.0,
-    }"#;
-    let img = render_text(&gpu, "spot_light", &analytic_scene("spot_light", 1, body));
+    let img = render(&gpu, "spot_light", &analytic_scene("spot_light"), &[]);
     let (mut inside, mut outside, mut between) = (0, 0, 0);
     for y in 0..SIZE {
         for x in 0..SIZE {
@@ -570,14 +536,7 @@ fn a_directional_light_and_a_box_cast_the_analytic_shadow() {
     let Some(gpu) = gpu_or_skip("a_directional_light_and_a_box_cast_the_analytic_shadow") else {
         return;
     };
-    let body = r#"
-    object floor { geometry: quad_mesh(), material: Lambert { albedo: vec3f(1.0) }, transform: scale(4.0) }
-    object block {
-        geometry: Box { min: vec3f(-0.5, 0.75, -0.5), max: vec3f(0.5, 1.25, 0.5) },
-        material: Lambert { albedo: vec3f(1.0) },
-    }
-    light DirectionalLight { direction: vec3f(1.0, -1.0, 0.0), intensity: 2.0 }"#;
-    let img = render_text(&gpu, "directional", &analytic_scene("directional", 1, body));
+    let img = render(&gpu, "directional", &analytic_scene("directional"), &[]);
     let (lo, hi) = ([-0.5, 0.75, -0.5], [0.5, 1.25, 0.5]);
     let to_light = [
         -std::f64::consts::FRAC_1_SQRT_2,
@@ -649,11 +608,7 @@ fn a_sphere_is_hit_from_inside() {
     let Some(gpu) = gpu_or_skip("a_sphere_is_hit_from_inside") else {
         return;
     };
-    let body = r#"
-    background ConstantBackground { color: vec3f(1.0, 0.0, 0.0) }
-    object shell { geometry: Sphere { center: vec3f(0.0, 3.0, 0.0), radius: 5.0 }, material: Lambert { albedo: vec3f(1.0) } }
-    light PointLight { position: vec3f(0.0, 3.0, 0.0), intensity: 25.0 }"#;
-    let img = render_text(&gpu, "inside", &analytic_scene("inside", 1, body));
+    let img = render(&gpu, "inside", &analytic_scene("inside"), &[]);
     let want = 1.0 / std::f64::consts::PI;
     for y in 0..SIZE {
         for x in 0..SIZE {
@@ -723,31 +678,10 @@ fn a_bvh_mesh_finds_the_hits_of_the_built_in_mesh() {
         return;
     };
     let soup = triangle_soup();
-    let scene = |name: &str, custom: bool| {
-        let wrap = |m: &str| {
-            if custom {
-                format!("BvhMesh {{ mesh: {m} }}")
-            } else {
-                m.to_owned()
-            }
-        };
-        analytic_scene(
-            name,
-            1,
-            &format!(
-                r#"
-    background ConstantBackground {{ color: vec3f(1.0) }}
-    object soup {{ geometry: {}, material: Lambert {{}}, transform: translate(vec3f(0.6, 0.0, 0.0)) }}
-    object ball {{ geometry: {}, material: Lambert {{}}, transform: translate(vec3f(-1.6, 0.0, 1.2)) * scale(0.8) }}
-    light PointLight {{ position: vec3f(0.5, 2.5, 0.5), intensity: 6.0 }}"#,
-                wrap("load_mesh(\"soup.obj\")"),
-                wrap("sphere_mesh(3u)")
-            ),
-        )
-    };
-    let files = [("soup.obj", soup.as_str())];
-    let built_in = render_with_files(&gpu, "mesh", &scene("mesh", false), &files);
-    let custom = render_with_files(&gpu, "bvh_mesh", &scene("bvh_mesh", true), &files);
+    let assets = [("soup.obj", soup.as_str())];
+    let file = analytic_scene("bvh_mesh");
+    let built_in = render(&gpu, "mesh", &file.clone().scene("mesh"), &assets);
+    let custom = render(&gpu, "bvh_mesh", &file.scene("bvh_mesh"), &assets);
     let (mut soup_pixels, mut ball_pixels, mut hits) = (0, 0, 0);
     for y in 0..SIZE {
         for x in 0..SIZE {
@@ -793,13 +727,10 @@ fn a_shading_normal_leaning_away_from_the_viewer_is_still_lit() {
     };
     let quad =
         "v -4 0 -4\nv -4 0 4\nv 4 0 4\nv 4 0 -4\nvn 1 0.2 0\nf 1//1 2//1 3//1\nf 1//1 3//1 4//1\n";
-    let body = r#"
-    object floor { geometry: load_mesh("leaning.obj"), material: Lambert { albedo: vec3f(1.0) } }
-    light PointLight { position: vec3f(4.0, 1.0, 0.0), intensity: 5.0 }"#;
-    let img = render_with_files(
+    let img = render(
         &gpu,
         "leaning_normals",
-        &analytic_scene("leaning_normals", 1, body),
+        &analytic_scene("leaning_normals"),
         &[("leaning.obj", quad)],
     );
     let len = (1.0f64 + 0.04).sqrt();

@@ -98,9 +98,14 @@ fn every_source_file_starts_with_a_module_doc() {
             let r = rel(p);
             extension(p) == "rs"
                 || (extension(p) == "rt"
-                    && ["stdlib/", "examples/", "runtime/tests/scenes/"]
-                        .iter()
-                        .any(|d| r.starts_with(d)))
+                    && [
+                        "stdlib/",
+                        "examples/",
+                        "runtime/tests/scenes/",
+                        "tests/scenes/",
+                    ]
+                    .iter()
+                    .any(|d| r.starts_with(d)))
         })
         .collect();
     assert!(

@@ -1,64 +1,18 @@
-//! Every test scene file (`runtime/tests/**/*.rt`) checks without errors, as `rtc check` would check
-//! it, so a scene a GPU test renders is a valid `.rt` file as it stands, before the test overrides
-//! any of its constants (see `common/scene.rs` for the convention). Needs no GPU.
+//! Every test scene file (`runtime/tests/scenes/**/*.rt`) checks without errors, as `rtc check` would
+//! check it, so a scene a GPU test renders is a valid `.rt` file as it stands, before the test
+//! overrides any of its constants, and each scene folder belongs to a suite (see `common/scene.rs`
+//! for the convention; `tests/examples.rs` runs the same checks on `tests/scenes/`). Needs no GPU.
 //!
 //! Also checks the harness on its own: constant substitution and pixel checks.
 
 mod common;
 
-use std::path::{Path, PathBuf};
-
 use common::image::{PixelCheck, Tolerance};
-use common::scene::{const_value_range, scenes_dir, SceneFile};
-use rtc_compiler::driver::{check_paths, Options};
-
-/// The `.rt` files under `dir`, recursively, sorted.
-fn rt_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)
-        .unwrap_or_else(|e| panic!("cannot read {}: {e}", dir.display()))
-        .flatten()
-        .map(|e| e.path())
-        .collect();
-    entries.sort();
-    for path in entries {
-        if path.is_dir() {
-            rt_files(&path, out);
-        } else if path.extension().is_some_and(|e| e == "rt") {
-            out.push(path);
-        }
-    }
-}
+use common::scene::{const_value_range, SceneFile};
 
 #[test]
 fn every_test_scene_file_checks() {
-    let mut files = Vec::new();
-    rt_files(
-        &Path::new(env!("CARGO_MANIFEST_DIR")).join("tests"),
-        &mut files,
-    );
-    assert!(
-        files.len() >= 10,
-        "only {} test scene files found under runtime/tests",
-        files.len()
-    );
-    let mut failures = Vec::new();
-    for file in &files {
-        let checked = check_paths(std::slice::from_ref(file), &Options::default());
-        let rendered =
-            rtc_compiler::diag::render_human(&checked.sources, &checked.diagnostics, false);
-        if checked.has_errors() || checked.program.is_none() {
-            failures.push(format!("{}:\n{rendered}", file.display()));
-        } else if !checked.diagnostics.is_empty() {
-            eprintln!("{}: warnings:\n{rendered}", file.display());
-        }
-    }
-    assert!(
-        failures.is_empty(),
-        "{} of {} test scene files do not check:\n{}",
-        failures.len(),
-        files.len(),
-        failures.join("\n")
-    );
+    common::scene::assert_every_scene_file_checks(10);
 }
 
 #[test]
@@ -75,20 +29,7 @@ fn a_constant_override_replaces_only_that_constants_value() {
 
 #[test]
 fn every_scene_folder_is_named_after_a_test_suite() {
-    let tests = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests");
-    for entry in std::fs::read_dir(scenes_dir())
-        .expect("runtime/tests/scenes")
-        .flatten()
-    {
-        if !entry.path().is_dir() {
-            continue; // README.md
-        }
-        let suite = entry.file_name().to_string_lossy().into_owned();
-        assert!(
-            tests.join(format!("{suite}.rs")).is_file(),
-            "runtime/tests/scenes/{suite}/ belongs to no test suite runtime/tests/{suite}.rs"
-        );
-    }
+    common::scene::assert_every_scene_folder_is_a_suite();
 }
 
 #[test]

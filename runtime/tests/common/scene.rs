@@ -1,12 +1,22 @@
-//! Test scenes as `.rt` files: reading one from `runtime/tests/scenes/`, overriding its named
-//! constants, compiling it and rendering it.
+//! Test scenes as `.rt` files: reading one from the including crate's scenes folder, overriding its
+//! named constants, compiling it and rendering it; and checking every scene file without a GPU.
+//!
+//! # Where the scenes are
+//!
+//! Every scene a GPU test renders is a file `<suites>/scenes/<suite>/<name>.rt`, where `<suites>` is
+//! the folder of the including crate's test suites ([`suites_dir`]) and `<suite>` the stem of the
+//! test file that renders it: `runtime/tests/scenes/materials/` belongs to `runtime/tests/materials.rs`
+//! (rtc-runtime, whose suites are in Cargo's `tests/`), `tests/scenes/examples/` to `tests/examples.rs`
+//! (rtc-tests, whose suites sit next to its `Cargo.toml`). [`SceneFile::open`] takes the path below
+//! [`scenes_dir`], the same call in either crate. Each crate runs [`assert_every_scene_file_checks`]
+//! and [`assert_every_scene_folder_is_a_suite`] in a test that needs no GPU (`scene_files.rs` in
+//! rtc-runtime, `examples.rs` in rtc-tests), and `.ci/run example` runs `rtc check` on both folders.
 //!
 //! # The scene-file convention
 //!
-//! Every scene a GPU test renders is a file `runtime/tests/scenes/<suite>/<name>.rt` (the suite is
-//! the test file's stem), a valid scene as it stands: the `scene_files` test checks every `.rt` file
-//! under `runtime/tests/` as `rtc check` does. A number the test varies (a translation, a scale, a
-//! sample depth, a table of rays) is a named `const` in the file, written with its default value:
+//! Each file is a valid scene as it stands: it checks as `rtc check` checks it, before any override.
+//! A number the test varies (a translation, a scale, a sample depth, a table of rays) is a named
+//! `const` in the file, written with its default value:
 //!
 //! ```text
 //! const MAX_DEPTH: u32 = 5u;
@@ -34,21 +44,27 @@
 use std::fmt::Display;
 use std::path::{Path, PathBuf};
 
-use rtc_compiler::driver::Options;
+use rtc_compiler::driver::{check_paths, Options};
 use rtc_compiler::kernel::{compile_scene_with, CompiledScene, KernelOptions};
 use rtc_compiler::link::LinkOptions;
 use rtc_runtime::gpu::Gpu;
 use rtc_runtime::image_out::LinearImage;
 use rtc_runtime::render::{RenderOptions, RenderStats, Renderer};
 
-/// The folder that holds the test scenes (`runtime/tests/scenes`), from whichever crate of the
-/// workspace includes this module (every crate's folder is a child of the repository's root).
-pub fn scenes_dir() -> PathBuf {
+/// The folder of the including crate's test suites: Cargo's `tests/` for rtc-runtime, the crate's
+/// own folder for rtc-tests, whose `[[test]]` targets sit next to its `Cargo.toml`.
+pub fn suites_dir() -> PathBuf {
     let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
-    manifest
-        .parent()
-        .unwrap_or(manifest)
-        .join("runtime/tests/scenes")
+    match env!("CARGO_PKG_NAME") {
+        "rtc-tests" => manifest.to_path_buf(),
+        _ => manifest.join("tests"),
+    }
+}
+
+/// The folder that holds the including crate's test scenes, one folder per suite:
+/// `runtime/tests/scenes` for rtc-runtime, `tests/scenes` for rtc-tests (see the module docs).
+pub fn scenes_dir() -> PathBuf {
+    suites_dir().join("scenes")
 }
 
 /// One test scene file, with the constant overrides set so far.
@@ -63,8 +79,8 @@ pub struct SceneFile {
 }
 
 impl SceneFile {
-    /// Reads `runtime/tests/scenes/<relative>`: `relative` is a suite folder and a file name, as
-    /// `render.rs` opens its `lit_quad.rt`.
+    /// Reads `<relative>` under [`scenes_dir`]: `relative` is a suite folder and a file name, as
+    /// `render.rs` opens `runtime/tests/scenes/render/lit_quad.rt`.
     pub fn open(relative: &str) -> SceneFile {
         let path = scenes_dir().join(relative);
         let text = std::fs::read_to_string(&path)
@@ -163,6 +179,78 @@ impl SceneFile {
                 rtc_compiler::diag::render_human(&f.checked.sources, &f.diagnostics, false)
             ),
         }
+    }
+}
+
+/// The `.rt` files under `dir`, recursively, sorted.
+pub fn rt_files(dir: &Path) -> Vec<PathBuf> {
+    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("cannot read {}: {e}", dir.display()))
+        .flatten()
+        .map(|e| e.path())
+        .collect();
+    entries.sort();
+    let mut files = Vec::new();
+    for path in entries {
+        if path.is_dir() {
+            files.extend(rt_files(&path));
+        } else if path.extension().is_some_and(|e| e == "rt") {
+            files.push(path);
+        }
+    }
+    files
+}
+
+/// Checks every `.rt` file under [`scenes_dir`] as `rtc check` would (each on its own, imports
+/// resolved from its folder), printing warnings; fails listing every file with errors, or when
+/// fewer than `at_least` files are found (so a moved folder cannot pass by holding nothing).
+pub fn assert_every_scene_file_checks(at_least: usize) {
+    let dir = scenes_dir();
+    let files = rt_files(&dir);
+    assert!(
+        files.len() >= at_least,
+        "only {} test scene files found under {} (expected at least {at_least})",
+        files.len(),
+        dir.display()
+    );
+    let mut failures = Vec::new();
+    for file in &files {
+        let checked = check_paths(std::slice::from_ref(file), &Options::default());
+        let rendered =
+            rtc_compiler::diag::render_human(&checked.sources, &checked.diagnostics, false);
+        if checked.has_errors() || checked.program.is_none() {
+            failures.push(format!("{}:\n{rendered}", file.display()));
+        } else if !checked.diagnostics.is_empty() {
+            eprintln!("{}: warnings:\n{rendered}", file.display());
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} of {} test scene files do not check:\n{}",
+        failures.len(),
+        files.len(),
+        failures.join("\n")
+    );
+}
+
+/// Every folder of [`scenes_dir`] is named after a test suite of [`suites_dir`] (`scenes/render/`
+/// after `render.rs`); other files there (a README) are left alone.
+pub fn assert_every_scene_folder_is_a_suite() {
+    let (scenes, suites) = (scenes_dir(), suites_dir());
+    for entry in std::fs::read_dir(&scenes)
+        .unwrap_or_else(|e| panic!("cannot read {}: {e}", scenes.display()))
+        .flatten()
+    {
+        if !entry.path().is_dir() {
+            continue;
+        }
+        let suite = entry.file_name().to_string_lossy().into_owned();
+        assert!(
+            suites.join(format!("{suite}.rs")).is_file(),
+            "{} belongs to no test suite {}",
+            entry.path().display(),
+            suites.join(format!("{suite}.rs")).display()
+        );
     }
 }
 
