@@ -303,6 +303,31 @@ fn target_of(root: &Path, file: &Path, cited: &str) -> PathBuf {
     }
 }
 
+/// What is wrong with the section a Markdown citation names, if anything: `after` is the text
+/// right after the cited path, `#anchor` (a link) or `, "Heading"` (prose).
+fn section_problem(target: &Path, after: &str) -> Option<String> {
+    let anchor = after.strip_prefix('#').map(|a| {
+        a.chars()
+            .take_while(|c| c.is_ascii_alphanumeric() || *c == '-' || *c == '_')
+            .collect::<String>()
+    });
+    let quoted = after
+        .trim_start_matches([',', ' ', '(', '\'', 's'])
+        .strip_prefix('"')
+        .and_then(|q| q.find('"').map(|end| &q[..end]));
+    if anchor.is_none() && quoted.is_none() {
+        return None;
+    }
+    let headings = headings(&std::fs::read_to_string(target).unwrap_or_default());
+    if let Some(anchor) = anchor {
+        if !headings.iter().any(|h| slug(h) == anchor) {
+            return Some(format!("has no heading for #{anchor}"));
+        }
+    }
+    let heading = quoted?;
+    (!headings.contains(&normalise(heading))).then(|| format!("has no section \"{heading}\""))
+}
+
 /// A heading's anchor as GitHub makes it: lower case, punctuation dropped, spaces as hyphens.
 fn slug(heading: &str) -> String {
     heading
@@ -418,38 +443,10 @@ fn every_reference_in_the_documentation_exists() {
                             broken.push(format!("{here}:{}: `{cited}` does not exist", line_of(s)));
                             continue;
                         }
-                        // `[text](FILE.md#anchor)`: the anchor must be one of its headings'.
-                        if cited.ends_with(".md") && joined[i..].starts_with('#') {
-                            let anchor: String = joined[i + 1..]
-                                .chars()
-                                .take_while(|c| c.is_ascii_alphanumeric() || *c == '-' || *c == '_')
-                                .collect();
-                            let md = std::fs::read_to_string(target_of(&root, &file, &cited))
-                                .unwrap_or_default();
-                            if !headings(&md).iter().any(|h| slug(h) == anchor) {
-                                broken.push(format!(
-                                    "{here}:{}: `{cited}` has no heading for #{anchor}",
-                                    line_of(s)
-                                ));
-                            }
-                        }
-                        // `FILE.md, "Heading"`: the section must exist.
                         if cited.ends_with(".md") {
-                            let rest = joined[i..].trim_start_matches([',', ' ', '(', '\'', 's']);
-                            if let Some(q) = rest.strip_prefix('"') {
-                                if let Some(end) = q.find('"') {
-                                    let heading = normalise(&q[..end]);
-                                    let md =
-                                        std::fs::read_to_string(target_of(&root, &file, &cited))
-                                            .unwrap_or_default();
-                                    if !headings(&md).contains(&heading) {
-                                        broken.push(format!(
-                                            "{here}:{}: `{cited}` has no section \"{}\"",
-                                            line_of(s),
-                                            &q[..end]
-                                        ));
-                                    }
-                                }
+                            let target = target_of(&root, &file, &cited);
+                            if let Some(problem) = section_problem(&target, &joined[i..]) {
+                                broken.push(format!("{here}:{}: `{cited}` {problem}", line_of(s)));
                             }
                         }
                     }

@@ -16,7 +16,7 @@ use common::gpu_or_skip;
 use common::scene::SceneFile;
 use glam::{Mat4, Vec3};
 use rtc_bvh::quantized::QuantizedBvh;
-use rtc_compiler::abi::{self, FieldType, StructDesc};
+use rtc_compiler::abi::{self, StructDesc};
 use rtc_compiler::driver::{check_text, Checked, Options};
 use rtc_compiler::kernel::CompiledScene;
 use rtc_compiler::link::registry::Registry;
@@ -191,19 +191,10 @@ fn data_above_a_binding_limit_is_a_typed_error_naming_it() {
 
 /// WGSL for an ABI struct, generated from the table (no layout written twice).
 fn wgsl_struct(s: &StructDesc) -> String {
-    let ty = |t: FieldType| match t {
-        FieldType::U32 => "u32",
-        FieldType::F32 => "f32",
-        FieldType::Vec2U32 => "vec2<u32>",
-        FieldType::Vec3U32 => "vec3<u32>",
-        FieldType::Vec3F32 => "vec3<f32>",
-        FieldType::Vec4F32 => "vec4<f32>",
-        FieldType::Vec4U32 => "vec4<u32>",
-    };
     let fields: Vec<String> = s
         .fields
         .iter()
-        .map(|f| format!("    {}: {},", f.name, ty(f.ty)))
+        .map(|f| format!("    {}: {},", f.name, f.ty.name()))
         .collect();
     format!("struct {} {{\n{}\n}}\n", s.name, fields.join("\n"))
 }

@@ -257,7 +257,7 @@ pub const NODE_INNER: StructDesc = StructDesc {
 };
 
 /// One bit field of a 32-bit word: `(word >> shift) & mask`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct BitField {
     /// Its name.
     pub name: &'static str,
@@ -270,7 +270,7 @@ pub struct BitField {
 }
 
 /// A 32-bit word made of bit fields.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct BitFieldsDesc {
     /// Its name.
     pub name: &'static str,
@@ -368,7 +368,7 @@ pub const COUNTER_RAYS: u32 = 1;
 pub const COUNTER_WORDS: u32 = 4;
 
 /// A named `u32` constant of the ABI.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct Constant {
     /// Its name in `rtc:abi` and the manifest.
     pub name: &'static str,

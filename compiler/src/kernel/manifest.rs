@@ -108,35 +108,14 @@ struct AbiRecord {
     doc: &'static str,
 }
 
-#[derive(Serialize)]
-struct AbiBits {
-    name: &'static str,
-    shift: u32,
-    mask: u32,
-    doc: &'static str,
-}
-
-#[derive(Serialize)]
-struct AbiBitFields {
-    name: &'static str,
-    fields: Vec<AbiBits>,
-    doc: &'static str,
-}
-
-#[derive(Serialize)]
-struct AbiConstant {
-    name: &'static str,
-    value: u32,
-    doc: &'static str,
-}
-
 /// The whole ABI table: what a host needs to fill the buffers, whatever the scene.
 #[derive(Serialize)]
 struct Abi {
     structs: Vec<AbiStruct>,
     records: Vec<AbiRecord>,
-    bit_fields: Vec<AbiBitFields>,
-    constants: Vec<AbiConstant>,
+    /// The table's own descriptors (they serialise as they are).
+    bit_fields: &'static [&'static abi::BitFieldsDesc],
+    constants: &'static [abi::Constant],
 }
 
 fn abi_table() -> Abi {
@@ -194,36 +173,11 @@ fn abi_table() -> Abi {
             }
         })
         .collect();
-    let bit_fields = abi::BIT_FIELDS
-        .iter()
-        .map(|d| AbiBitFields {
-            name: d.name,
-            fields: d
-                .fields
-                .iter()
-                .map(|f| AbiBits {
-                    name: f.name,
-                    shift: f.shift,
-                    mask: f.mask,
-                    doc: f.doc,
-                })
-                .collect(),
-            doc: d.doc,
-        })
-        .collect();
-    let constants = abi::CONSTANTS
-        .iter()
-        .map(|c| AbiConstant {
-            name: c.name,
-            value: c.value,
-            doc: c.doc,
-        })
-        .collect();
     Abi {
         structs,
         records,
-        bit_fields,
-        constants,
+        bit_fields: abi::BIT_FIELDS,
+        constants: abi::CONSTANTS,
     }
 }
 
