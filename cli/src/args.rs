@@ -145,6 +145,34 @@ pub struct BvhArgs {
     pub preset: BvhPreset,
 }
 
+/// `--exec`, shared by the commands that render (`render`, `bench`, `view`, `watch`).
+#[derive(Clone, Copy, Debug, Default, Args)]
+pub struct ExecArgs {
+    /// Execution model: `megakernel` traces each pixel's samples in one kernel; `wavefront` runs
+    /// stage kernels (camera, trace, shade, shadow, finish) in rounds over each tile.
+    #[arg(long = "exec", value_name = "MODEL", value_enum)]
+    pub exec: Option<ExecChoice>,
+}
+
+impl ExecArgs {
+    /// The model to compile and run.
+    pub fn model(&self) -> rtc_compiler::kernel::ExecModel {
+        match self.exec {
+            Some(ExecChoice::Wavefront) => rtc_compiler::kernel::ExecModel::Wavefront,
+            Some(ExecChoice::Megakernel) | None => rtc_compiler::kernel::ExecModel::Megakernel,
+        }
+    }
+}
+
+/// An `--exec` value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum ExecChoice {
+    /// One kernel per pixel's samples.
+    Megakernel,
+    /// Stage kernels in rounds.
+    Wavefront,
+}
+
 /// A `--bvh` value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum BvhPreset {

@@ -31,7 +31,8 @@ use crate::back::{self, BackendError, Target};
 use crate::diag::Diagnostic;
 use crate::driver::{self, Checked, Options};
 use crate::kernel::{
-    self, generated, CompileFailure, CompiledScene, KernelOptions, BOUNDS_ENTRY, KERNEL_ROOTS,
+    self, generated, wavefront, CompileFailure, CompiledScene, ExecModel, KernelOptions,
+    StageKernel, BOUNDS_ENTRY, KERNEL_ROOTS,
     RENDER_ENTRY,
 };
 use crate::link::{registry::Registry, LinkOptions, Linked};
@@ -120,6 +121,30 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
     } else {
         None
     };
+    // 6b. Lower the wavefront model's stage kernels, when asked for (not for debug kernels).
+    let stages = if request.kernel.exec == ExecModel::Wavefront && request.kernel.debug.is_none() {
+        let lowered = timings.time("lower the stage kernels", || {
+            wavefront::STAGES
+                .iter()
+                .map(|&stage| {
+                    kernel::lower_kernel(&checked, &linked, stage.root(), stage.entry()).map(
+                        |(module, bindings)| StageKernel {
+                            stage,
+                            module,
+                            bindings,
+                        },
+                    )
+                })
+                .collect::<Result<Vec<_>, _>>()
+        });
+        match lowered {
+            Ok(s) => Some(s),
+            Err(d) => return Err(failure(checked, vec![*d])),
+        }
+    } else {
+        None
+    };
+    let path_words = wavefront::path_words(&linked.config);
     let samples_per_pass = checked
         .program
         .as_ref()
@@ -137,6 +162,8 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
         bounds,
         bindings,
         samples_per_pass,
+        stages,
+        path_words,
         timings: Vec::new(),
     };
 

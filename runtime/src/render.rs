@@ -46,12 +46,15 @@ use rtc_bvh::Aabb;
 /// The BVH builder presets ([`RenderOptions::bvh`]), re-exported for callers without `rtc-bvh`.
 pub use rtc_bvh::BuildPreset;
 use rtc_compiler::abi;
+use rtc_compiler::kernel::wavefront::Stage;
+/// The execution models ([`RenderOptions::exec`]), re-exported for callers.
+pub use rtc_compiler::kernel::ExecModel;
 use rtc_compiler::kernel::{CompiledScene, BOUNDS_ENTRY, BOUNDS_WORKGROUP, RENDER_ENTRY};
 
 use crate::assets::AssetRoots;
 use crate::gpu::{
-    create_kernel, dispatch_once, plan_tiles, BufferLimits, DispatchError, Gpu, Kernel, KernelDesc,
-    KernelSource, PipelineError, TileConfig, TileDispatcher,
+    create_kernel, dispatch_once, plan_tiles, BindingDesc, BufferLimits, DispatchError, Gpu,
+    Kernel, KernelDesc, KernelSource, PipelineError, RoundKernels, TileConfig, TileDispatcher,
 };
 use crate::image_out::{ImageError, LinearImage};
 use crate::scene::{Entities, EntityOptions, GpuScene, ObjectGeometry, SceneError, UploadReport};
@@ -71,6 +74,9 @@ pub struct RenderOptions {
     pub limits: Option<BufferLimits>,
     /// Folders besides the scene's own that its assets may come from (`--asset-root`).
     pub asset_roots: AssetRoots,
+    /// How samples are executed; [`ExecModel::Wavefront`] needs a scene compiled with its stage
+    /// kernels (`KernelOptions::exec`).
+    pub exec: ExecModel,
 }
 
 /// Why a scene could not be rendered.
@@ -112,6 +118,12 @@ pub enum RenderError {
         /// Its binding.
         binding: u32,
     },
+    /// A debug pass was asked of a renderer running the wavefront model.
+    #[error("internal error: debug passes run on the megakernel only")]
+    DebugNeedsMegakernel,
+    /// The wavefront model was asked for, but the scene was compiled without its stage kernels.
+    #[error("internal error: the wavefront model needs the scene compiled with its stage kernels (KernelOptions::exec)")]
+    NoStageKernels,
     /// The scene has custom geometry but the compile produced no bounds kernel.
     #[error("internal error: the scene has custom geometry but no bounds kernel was compiled")]
     NoBoundsKernel,
@@ -189,6 +201,10 @@ pub struct RenderStats {
     pub tlas_builds: u32,
     /// Problems that did not stop the render.
     pub warnings: Vec<String>,
+    /// The execution model that ran.
+    pub exec: ExecModel,
+    /// Wavefront rounds run over all tiles and passes (0 for the megakernel).
+    pub rounds: u64,
 }
 
 /// An image and how it was made.
@@ -216,13 +232,77 @@ pub struct Renderer<'g> {
     gpu: &'g Gpu,
     entities: Entities,
     scene: GpuScene,
-    kernel: Kernel,
+    kernels: Kernels,
     dispatcher: TileDispatcher,
     size: [u32; 2],
     samples_per_pass: u32,
     total_samples: u32,
     setup: Setup,
     written_at_setup: Vec<&'static str>,
+}
+
+/// The render kernel, or the wavefront model's stage kernels (in `wavefront::STAGES` order).
+#[derive(Debug)]
+enum Kernels {
+    Mega(Kernel),
+    Wavefront {
+        stages: Vec<Kernel>,
+        /// The most rounds one tile may take.
+        max_rounds: u32,
+    },
+}
+
+impl Kernels {
+    /// The dispatch of a wavefront pass: a round is camera, trace, shade, shadow, shade.
+    fn rounds(stages: &[Kernel], max_rounds: u32) -> Option<RoundKernels<'_>> {
+        let [camera, trace, shade, shadow, finish] = stages else {
+            return None;
+        };
+        Some(RoundKernels {
+            round: vec![camera, trace, shade, shadow, shade],
+            finish,
+            counters: abi::binding("counters")?.binding,
+            active_word: abi::COUNTER_ACTIVE,
+            max_rounds,
+        })
+    }
+}
+
+/// Rounds one tile of the wavefront model may take: each of a sample's rays needs a round (the
+/// tree of a sample holds at most `sum of max_spawn^d` rays for `d <= max_depth`), a shading step
+/// whose shadow queries depend on each other up to `SHADOW_QUERIES` more, and the pass one more to
+/// find that nothing runs.
+fn max_rounds(compiled: &CompiledScene) -> u32 {
+    let c = &compiled.linked.config;
+    let mut rays: u64 = 1;
+    let mut level: u64 = 1;
+    if c.has_secondary_rays {
+        for _ in 0..c.max_depth {
+            level = level.saturating_mul(u64::from(c.max_spawn.max(1)));
+            rays = rays.saturating_add(level);
+        }
+    }
+    let per_sample = rays.saturating_mul(1 + u64::from(rtc_compiler::kernel::wavefront::SHADOW_QUERIES));
+    let rounds = per_sample
+        .saturating_mul(u64::from(compiled.samples_per_pass.max(1)))
+        .saturating_add(2);
+    u32::try_from(rounds.min(1 << 24)).unwrap_or(1 << 24)
+}
+
+/// The wavefront model's tiles: the adapter's tiles, halved along their longer side until one
+/// tile's path records (`path_words` words a pixel) fit one storage binding of at most
+/// `max_binding` bytes.
+fn wavefront_tiles(mut tiles: TileConfig, path_words: u32, max_binding: u64) -> TileConfig {
+    let bytes = |t: &TileConfig| u64::from(t.tile_width) * u64::from(t.tile_height) * u64::from(path_words) * 4;
+    while bytes(&tiles) > max_binding && (tiles.tile_width > 8 || tiles.tile_height > 8) {
+        if tiles.tile_width >= tiles.tile_height {
+            tiles.tile_width = (tiles.tile_width / 2).max(8);
+        } else {
+            tiles.tile_height = (tiles.tile_height / 2).max(8);
+        }
+    }
+    tiles.tiles_per_batch = 1;
+    tiles
 }
 
 fn ms_since(start: Instant) -> f64 {
@@ -303,17 +383,56 @@ impl<'g> Renderer<'g> {
         if !compiled.bindings.iter().any(|b| b.binding == tile.binding) {
             return Err(RenderError::NoTileBinding);
         }
-        let render_bindings = GpuScene::runtime_bindings(&compiled.bindings);
-        let kernel = create_kernel(
-            gpu,
-            KernelDesc {
-                label: "rtc render",
-                source: KernelSource::Naga(Box::new(compiled.render.clone())),
-                entry_point: RENDER_ENTRY,
-                bindings: &render_bindings,
-                tile_binding: Some(tile.binding),
-            },
-        )?;
+        let (kernels, mut all) = match options.exec {
+            ExecModel::Megakernel => {
+                let render_bindings = GpuScene::runtime_bindings(&compiled.bindings);
+                let kernel = create_kernel(
+                    gpu,
+                    KernelDesc {
+                        label: "rtc render",
+                        source: KernelSource::Naga(Box::new(compiled.render.clone())),
+                        entry_point: RENDER_ENTRY,
+                        bindings: &render_bindings,
+                        tile_binding: Some(tile.binding),
+                    },
+                )?;
+                (Kernels::Mega(kernel), compiled.bindings.clone())
+            }
+            ExecModel::Wavefront => {
+                let stages = compiled
+                    .stages
+                    .as_ref()
+                    .ok_or(RenderError::NoStageKernels)?;
+                let mut kernels = Vec::with_capacity(stages.len());
+                let mut all: Vec<&'static abi::BindingDesc> = Vec::new();
+                for s in stages {
+                    let bindings: Vec<BindingDesc> = GpuScene::runtime_bindings(&s.bindings);
+                    let label = format!("rtc {}", s.stage.entry());
+                    kernels.push(create_kernel(
+                        gpu,
+                        KernelDesc {
+                            label: &label,
+                            source: KernelSource::Naga(Box::new(s.module.clone())),
+                            entry_point: s.stage.entry(),
+                            bindings: &bindings,
+                            tile_binding: Some(tile.binding),
+                        },
+                    )?);
+                    all.extend(s.bindings.iter().copied());
+                }
+                debug_assert_eq!(
+                    stages.iter().map(|s| s.stage).collect::<Vec<Stage>>(),
+                    rtc_compiler::kernel::wavefront::STAGES.to_vec()
+                );
+                (
+                    Kernels::Wavefront {
+                        stages: kernels,
+                        max_rounds: max_rounds(compiled),
+                    },
+                    all,
+                )
+            }
+        };
         let bounds = match (&compiled.bounds, entities.needs_bounds()) {
             (Some(module), true) => {
                 let declared = declared_bindings(module, "bounds")?;
@@ -335,11 +454,24 @@ impl<'g> Renderer<'g> {
         };
         setup.pipeline_ms = ms_since(start);
 
-        let mut all: Vec<&'static abi::BindingDesc> = compiled.bindings.clone();
         if let Some((_, declared)) = &bounds {
             all.extend(declared.iter().copied());
         }
+        let mut tiles = options
+            .tiles
+            .unwrap_or_else(|| TileConfig::for_adapter(gpu.description()));
         let mut scene = GpuScene::new(gpu, &all);
+        if let Kernels::Wavefront { .. } = kernels {
+            // One tile's path records in one binding, within WebGPU's default 128 MiB.
+            let max = gpu.limits().max_storage_buffer_binding_size.min(128 << 20);
+            tiles = wavefront_tiles(tiles, compiled.path_words, max);
+            scene.set_path_bytes(
+                u64::from(tiles.tile_width)
+                    * u64::from(tiles.tile_height)
+                    * u64::from(compiled.path_words)
+                    * 4,
+            );
+        }
         if let Some(limits) = options.limits {
             scene = scene.with_limits(limits);
         }
@@ -374,21 +506,33 @@ impl<'g> Renderer<'g> {
             }
         }
 
-        let tiles = options
-            .tiles
-            .unwrap_or_else(|| TileConfig::for_adapter(gpu.description()));
         let mut dispatcher = TileDispatcher::new(tiles);
         // Some drivers (lavapipe) compile a pipeline at its first dispatch, which took seconds
         // for the full kernel: one 1×1 dispatch here keeps that out of the render time. What it
-        // writes to `accum` is cleared before the first pass.
+        // writes to `accum` (and `paths`) is cleared before the first pass.
         let start = Instant::now();
-        dispatcher.dispatch(gpu, &kernel, scene.buffers(), [1, 1], 0, &mut |_, _| {})?;
+        match &kernels {
+            Kernels::Mega(kernel) => {
+                dispatcher.dispatch(gpu, kernel, scene.buffers(), [1, 1], 0, &mut |_, _| {})?;
+            }
+            Kernels::Wavefront { stages, max_rounds } => {
+                if std::env::var_os("RTC_TMP_STAGE_TIMES").is_some() {
+                    for k in stages {
+                        let t = Instant::now();
+                        dispatcher.dispatch(gpu, k, scene.buffers(), [1, 1], 0, &mut |_, _| {})?;
+                        eprintln!("{}: {:.0} ms", k.label(), ms_since(t));
+                    }
+                }
+                let rounds = Kernels::rounds(stages, *max_rounds).ok_or(RenderError::NoStageKernels)?;
+                dispatcher.dispatch_rounds(gpu, &rounds, scene.buffers(), [1, 1], 0, &mut |_, _| {})?;
+            }
+        }
         setup.pipeline_ms += ms_since(start);
         Ok(Self {
             gpu,
             entities,
             scene,
-            kernel,
+            kernels,
             dispatcher,
             size: [width, height],
             samples_per_pass,
@@ -471,16 +615,34 @@ impl<'g> Renderer<'g> {
         let mut tiles = 0u64;
         let mut rays_traced = 0u64;
         let mut last_rays = 0u32;
+        let mut rounds = 0u64;
         for pass in 0..passes {
             let base = u64::from(pass) * per_pass;
-            let d = self.dispatcher.dispatch(
-                gpu,
-                &self.kernel,
-                self.scene.buffers(),
-                self.size,
-                pass,
-                &mut |done, _| progress(base + u64::from(done), total),
-            )?;
+            let mut report = |done: u32, _| progress(base + u64::from(done), total);
+            let d = match &self.kernels {
+                Kernels::Mega(kernel) => self.dispatcher.dispatch(
+                    gpu,
+                    kernel,
+                    self.scene.buffers(),
+                    self.size,
+                    pass,
+                    &mut report,
+                )?,
+                Kernels::Wavefront { stages, max_rounds } => {
+                    let kernels =
+                        Kernels::rounds(stages, *max_rounds).ok_or(RenderError::NoStageKernels)?;
+                    let r = self.dispatcher.dispatch_rounds(
+                        gpu,
+                        &kernels,
+                        self.scene.buffers(),
+                        self.size,
+                        pass,
+                        &mut report,
+                    )?;
+                    rounds += r.rounds;
+                    r.dispatch
+                }
+            };
             render_ms += d.dispatch_ms;
             flush_ms += d.flush_ms;
             tiles += u64::from(d.tiles);
@@ -503,6 +665,14 @@ impl<'g> Renderer<'g> {
         }
 
         let es = self.entities.stats();
+        let mut warnings = self.entities.warnings().to_vec();
+        if counters.shadow_overflow > 0 {
+            warnings.push(format!(
+                "{} shadow queries were answered \"unoccluded\" without tracing: a shading step of the wavefront model records at most {} (render with the megakernel for this scene)",
+                counters.shadow_overflow,
+                rtc_compiler::kernel::wavefront::SHADOW_QUERIES
+            ));
+        }
         let samples = passes.saturating_mul(self.samples_per_pass);
         let primary_rays = pixels * u64::from(samples);
         let objects = self.entities.objects().len() as u32;
@@ -544,7 +714,12 @@ impl<'g> Renderer<'g> {
             lights: self.entities.lights().len() as u32,
             blas_builds: es.blas_builds,
             tlas_builds: es.tlas_builds,
-            warnings: self.entities.warnings().to_vec(),
+            warnings,
+            exec: match self.kernels {
+                Kernels::Mega(_) => ExecModel::Megakernel,
+                Kernels::Wavefront { .. } => ExecModel::Wavefront,
+            },
+            rounds,
         };
         Ok(RenderResult { image, stats })
     }
@@ -570,9 +745,12 @@ impl Renderer<'_> {
             .frame_uniforms(self.samples_per_pass, self.total_samples);
         self.scene.upload(gpu, &self.entities, &frame, pixels)?;
         self.scene.clear_accumulation(gpu)?;
+        let Kernels::Mega(kernel) = &self.kernels else {
+            return Err(RenderError::DebugNeedsMegakernel);
+        };
         self.dispatcher.dispatch(
             gpu,
-            &self.kernel,
+            kernel,
             self.scene.buffers(),
             self.size,
             0,

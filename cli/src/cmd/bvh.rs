@@ -90,7 +90,10 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Ok(r) => r,
         Err(e) => return report::usage_error(&e, ctx.color),
     };
-    let debug = |mode| KernelOptions { debug: Some(mode) };
+    let debug = |mode| KernelOptions {
+        debug: Some(mode),
+        ..KernelOptions::default()
+    };
     let scene = args.render.scene.name.as_deref();
     let normal = match compile(&args.path, scene, &KernelOptions::default(), ctx, "draw") {
         Ok(c) => c,

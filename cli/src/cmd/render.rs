@@ -19,10 +19,10 @@
 pub mod model;
 
 use super::Context;
-use crate::args::{BvhArgs, MessageFormat, RenderArgs};
+use crate::args::{BvhArgs, ExecArgs, MessageFormat, RenderArgs};
 use crate::exit::Exit;
 use crate::{report, term};
-use rtc_compiler::kernel::compile_scene;
+use rtc_compiler::kernel::{compile_scene_with, KernelOptions};
 use rtc_compiler::link::LinkOptions;
 use rtc_runtime::gpu::Gpu;
 use rtc_runtime::image_out::{write_exr, write_png, ToneMap};
@@ -48,6 +48,9 @@ pub struct Args {
     /// The BVH builder.
     #[command(flatten)]
     pub bvh: BvhArgs,
+    /// The execution model.
+    #[command(flatten)]
+    pub exec: ExecArgs,
 }
 
 /// The output formats, by extension.
@@ -106,11 +109,13 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     };
     let scene_path = synth.as_ref().map_or(&args.path, |s| &s.path);
 
-    let compiled = match compile_scene(
+    let exec = args.exec.model();
+    let compiled = match compile_scene_with(
         std::slice::from_ref(scene_path),
         args.render.scene.name.as_deref(),
         &ctx.options,
         &LinkOptions::default(),
+        &KernelOptions { debug: None, exec },
     ) {
         Ok(c) => c,
         Err(failure) => {
@@ -157,6 +162,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         samples: args.render.spp.samples,
         bvh: args.bvh.preset.into(),
         asset_roots,
+        exec,
         ..RenderOptions::default()
     };
     let rendered = Renderer::new(&gpu, &compiled, options).and_then(|mut renderer| {

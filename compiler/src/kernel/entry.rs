@@ -3,6 +3,9 @@
 //!
 //! - `render` (`@workgroup_size(8, 8)`): one invocation per pixel of the dispatch's tile; calls
 //!   `render_invocation(gid.xy)` (`stdlib/kernel/trace.rt`), which picks the pixel.
+//! - `wf_camera`, `wf_trace`, `wf_shade`, `wf_shadow`, `wf_finish` (`@workgroup_size(8, 8)`): the
+//!   wavefront model's stages (`kernel::wavefront`), one invocation per pixel of the tile, each
+//!   calling its `wf_*_invocation(gid.xy)`.
 //! - `bounds` (`@workgroup_size(64)`): one invocation per object; calls `compute_bounds(gid.x)`, which
 //!   checks the object count itself.
 
@@ -41,8 +44,27 @@ pub fn render_entry(
     cx: &mut LowerCx<'_>,
     render_invocation: Handle<naga::Function>,
 ) -> Result<(), LowerError> {
+    pixel_entry(cx, RENDER_ENTRY, render_invocation)
+}
+
+/// A wavefront stage's entry point `name` (`wf_trace`, …) calling its `wf_*_invocation(gid.xy)`,
+/// with the render kernel's workgroup size: one invocation per pixel of the tile.
+pub fn stage_entry(
+    cx: &mut LowerCx<'_>,
+    name: &str,
+    invocation: Handle<naga::Function>,
+) -> Result<(), LowerError> {
+    pixel_entry(cx, name, invocation)
+}
+
+/// An entry point `name` calling `invocation(gid.xy)`, `@workgroup_size(8, 8)`.
+fn pixel_entry(
+    cx: &mut LowerCx<'_>,
+    name: &str,
+    render_invocation: Handle<naga::Function>,
+) -> Result<(), LowerError> {
     let v2u = TypeCache::vector(cx.module_mut(), VectorSize::Bi, Scalar::U32);
-    let mut fb = compute_fn(cx, RENDER_ENTRY);
+    let mut fb = compute_fn(cx, name);
     let s = Span::UNDEFINED;
     let gid = fb.arg(0);
     let gx = fb.expr(
@@ -70,7 +92,7 @@ pub fn render_entry(
     fb.stmt(Statement::Return { value: None }, s);
     push_entry(
         cx,
-        RENDER_ENTRY,
+        name,
         fb,
         [RENDER_WORKGROUP[0], RENDER_WORKGROUP[1], 1],
     );

@@ -95,11 +95,21 @@ pub enum Intrinsic {
     DebugCount,
     /// `debug_counts() -> vec2u`
     DebugCounts,
+    /// `path_load(i) -> u32` (word `i` of `paths`, the wavefront model's path state)
+    PathLoad,
+    /// `path_store(i, value)`
+    PathStore,
+    /// `scratch_load(i) -> u32` (a private register of the invocation, `i < SCRATCH_WORDS`)
+    ScratchLoad,
+    /// `scratch_store(i, value)`
+    ScratchStore,
+    /// `counter_add(i, value)`: atomic add to `counters[i]`
+    CounterAdd,
 }
 
 impl Intrinsic {
     /// Every intrinsic, in the order `rtc:abi` declares them.
-    pub const ALL: [Intrinsic; 33] = [
+    pub const ALL: [Intrinsic; 38] = [
         Intrinsic::LoadFrame,
         Intrinsic::LoadTile,
         Intrinsic::LoadNode,
@@ -133,6 +143,11 @@ impl Intrinsic {
         Intrinsic::FlushRayCount,
         Intrinsic::DebugCount,
         Intrinsic::DebugCounts,
+        Intrinsic::PathLoad,
+        Intrinsic::PathStore,
+        Intrinsic::ScratchLoad,
+        Intrinsic::ScratchStore,
+        Intrinsic::CounterAdd,
     ];
 
     /// `(name, parameters, result)` as declared in `rtc:abi` (result `""`: none).
@@ -206,6 +221,11 @@ impl Intrinsic {
             Intrinsic::FlushRayCount => ("flush_ray_count", "", ""),
             Intrinsic::DebugCount => ("debug_count", "nodes: u32, primitives: u32", ""),
             Intrinsic::DebugCounts => ("debug_counts", "", "vec2u"),
+            Intrinsic::PathLoad => ("path_load", "i: u32", "u32"),
+            Intrinsic::PathStore => ("path_store", "i: u32, value: u32", ""),
+            Intrinsic::ScratchLoad => ("scratch_load", "i: u32", "u32"),
+            Intrinsic::ScratchStore => ("scratch_store", "i: u32, value: u32", ""),
+            Intrinsic::CounterAdd => ("counter_add", "i: u32, value: u32", ""),
         }
     }
 
@@ -376,7 +396,10 @@ pub fn config_module_with(c: &KernelConfig, debug: Option<super::DebugMode>) -> 
         ("WORKGROUP_WIDTH", super::RENDER_WORKGROUP[0]),
         ("WORKGROUP_HEIGHT", super::RENDER_WORKGROUP[1]),
     ];
-    for (name, v) in u {
+    for (name, v) in u
+        .into_iter()
+        .chain(super::wavefront::config_constants(c))
+    {
         let _ = writeln!(out, "const {name}: u32 = {v}u;");
     }
     let b = [

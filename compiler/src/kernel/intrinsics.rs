@@ -41,7 +41,13 @@ pub struct KernelHooks<'a> {
     pub config: KernelConfig,
     /// Generated globals and functions.
     pub generated: Generated,
+    /// `shadow(…)` is replayed rather than traced (the wavefront model's shade stage:
+    /// `shadow_replay` instead of `shadow_query`, see `kernel::wavefront`).
+    pub replay_shadows: bool,
 }
+
+/// Words of the private scratch registers (`scratch_load`, `scratch_store`).
+pub const SCRATCH_WORDS: u32 = 8;
 
 /// The kernel function (from `stdlib/kernel/`) named `name`.
 pub fn kernel_fn(program: &Program, name: &str) -> Result<FnId, LowerError> {
@@ -95,7 +101,12 @@ impl Intrinsics for KernelHooks<'_> {
             fb.call(f, call.args.to_vec(), false, call.span);
             return Ok(None);
         }
-        let name = user_intrinsic_fn(call.builtin).ok_or_else(|| {
+        let name = if call.builtin == Builtin::Shadow && self.replay_shadows {
+            Some("shadow_replay")
+        } else {
+            user_intrinsic_fn(call.builtin)
+        };
+        let name = name.ok_or_else(|| {
             kernel_error(format!(
                 "`{:?}` is not an intrinsic of the kernel",
                 call.builtin
@@ -363,6 +374,75 @@ impl KernelHooks<'_> {
                     return Ok(None);
                 }
                 fb.load(p, span)
+            }
+            I::PathLoad => self.load_binding(cx, fb, "paths", Some(arg(0)?), span)?,
+            I::PathStore => {
+                let program = self.program;
+                let paths = self
+                    .generated
+                    .binding(cx, program, abi_binding("paths")?)?;
+                let g = fb.expr(Expression::GlobalVariable(paths), span);
+                let p = fb.expr(
+                    Expression::Access {
+                        base: g,
+                        index: arg(0)?,
+                    },
+                    span,
+                );
+                fb.store(p, arg(1)?, span);
+                return Ok(None);
+            }
+            I::ScratchLoad | I::ScratchStore => {
+                let u = TypeCache::scalar(cx.module_mut(), Scalar::U32);
+                let arr = TypeCache::array(cx.module_mut(), u, SCRATCH_WORDS);
+                let g = self.generated.private(cx, "scratch", arr);
+                let base = fb.expr(Expression::GlobalVariable(g), span);
+                let last = lit_u32(fb, SCRATCH_WORDS - 1);
+                let i = fb.expr(
+                    Expression::Math {
+                        fun: naga::MathFunction::Min,
+                        arg: arg(0)?,
+                        arg1: Some(last),
+                        arg2: None,
+                        arg3: None,
+                    },
+                    span,
+                );
+                let p = fb.expr(Expression::Access { base, index: i }, span);
+                if intrinsic == I::ScratchStore {
+                    fb.store(p, arg(1)?, span);
+                    return Ok(None);
+                }
+                fb.load(p, span)
+            }
+            I::CounterAdd => {
+                let program = self.program;
+                let counters = self
+                    .generated
+                    .binding(cx, program, abi_binding("counters")?)?;
+                let c = fb.expr(Expression::GlobalVariable(counters), span);
+                let last = lit_u32(fb, abi::COUNTER_WORDS - 1);
+                let i = fb.expr(
+                    Expression::Math {
+                        fun: naga::MathFunction::Min,
+                        arg: arg(0)?,
+                        arg1: Some(last),
+                        arg2: None,
+                        arg3: None,
+                    },
+                    span,
+                );
+                let p = fb.expr(Expression::Access { base: c, index: i }, span);
+                fb.stmt(
+                    Statement::Atomic {
+                        pointer: p,
+                        fun: AtomicFunction::Add,
+                        value: arg(1)?,
+                        result: None,
+                    },
+                    span,
+                );
+                return Ok(None);
             }
             I::CountRay => {
                 let g = self.ray_count(cx);

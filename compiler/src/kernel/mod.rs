@@ -12,6 +12,7 @@ mod entry;
 pub mod generated;
 pub mod intrinsics;
 pub mod manifest;
+pub mod wavefront;
 
 use crate::abi::BindingDesc;
 use crate::diag::Diagnostic;
@@ -39,8 +40,45 @@ pub struct CompiledScene {
     pub bindings: Vec<&'static BindingDesc>,
     /// Samples per pixel one pass of the render kernel takes (the camera program's `samples`).
     pub samples_per_pass: u32,
+    /// The wavefront model's stage kernels ([`wavefront::STAGES`], in that order), when the
+    /// options asked for them ([`KernelOptions::exec`]).
+    pub stages: Option<Vec<StageKernel>>,
+    /// Words of one path slot of the wavefront model (`PATH_WORDS`).
+    pub path_words: u32,
     /// How long each phase of the compile took, in milliseconds, in order.
     pub timings: Vec<(&'static str, f64)>,
+}
+
+/// One stage kernel of the wavefront model.
+#[derive(Debug)]
+pub struct StageKernel {
+    /// Which stage.
+    pub stage: wavefront::Stage,
+    /// The module (entry point [`wavefront::Stage::entry`]).
+    pub module: naga::Module,
+    /// The bindings it declares, in binding order.
+    pub bindings: Vec<&'static BindingDesc>,
+}
+
+/// How a scene's samples are executed on the device.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum ExecModel {
+    /// One kernel traces each pixel's samples to completion (`render`).
+    #[default]
+    Megakernel,
+    /// Stage kernels run in rounds over a tile, through path state in `paths`
+    /// ([`wavefront`]).
+    Wavefront,
+}
+
+impl ExecModel {
+    /// Its name on the command line and in scene settings.
+    pub fn name(self) -> &'static str {
+        match self {
+            ExecModel::Megakernel => "megakernel",
+            ExecModel::Wavefront => "wavefront",
+        }
+    }
 }
 
 /// The render kernel's entry point.
@@ -75,6 +113,8 @@ pub enum DebugMode {
 pub struct KernelOptions {
     /// Build a debug kernel that writes [`DebugMode`] values instead of radiance.
     pub debug: Option<DebugMode>,
+    /// Also build the wavefront model's stage kernels ([`CompiledScene::stages`]).
+    pub exec: ExecModel,
 }
 
 /// Why a scene could not be compiled: the diagnostics (with the sources to render them).
@@ -87,7 +127,7 @@ pub struct CompileFailure {
 }
 
 /// The framework kernel's files, checked with every scene.
-pub const KERNEL_ROOTS: &[&str] = &["std/kernel/trace.rt"];
+pub const KERNEL_ROOTS: &[&str] = &["std/kernel/trace.rt", "std/kernel/wavefront.rt"];
 
 /// E0706 for an ambiguous or unknown scene name; E0703 when the files declare no scene at all.
 /// Both are located in the user's files: an unknown name at the scenes there are, no scene at the
@@ -285,12 +325,16 @@ fn lower_entry(
         linked,
         config: linked.config,
         generated: dispatch::Generated::default(),
+        replay_shadows: entry == wavefront::Stage::Shade.entry(),
     };
     let build_entry = |cx: &mut crate::lower::Lowerer<'_>,
                        roots: &[naga::Handle<naga::Function>]| {
         match (entry, roots) {
             (RENDER_ENTRY, [f]) => entry::render_entry(cx, *f),
             (BOUNDS_ENTRY, [f]) => entry::bounds_entry(cx, *f),
+            (name, [f]) if wavefront::Stage::from_entry(name).is_some() => {
+                entry::stage_entry(cx, name, *f)
+            }
             _ => Err(dispatch::kernel_error(format!(
                 "no kernel entry point `{entry}`"
             ))),

@@ -20,12 +20,16 @@
 //! grows; wgpu errors inside a batch come back as [`DispatchError::Wgpu`]; read-back never panics
 //! (`map_async` is waited for with a channel and a blocking poll).
 
+
 use std::sync::mpsc;
 use std::time::Instant;
 
 use super::buffers::{BufferError, BufferSet};
 use super::pipeline::{BindingKind, Kernel};
 use super::{elapsed_ms, error_chain, Gpu};
+
+mod rounds;
+pub use rounds::{RoundKernels, RoundsReport};
 
 /// Per-tile parameters, one 32-byte uniform record per tile.
 ///
@@ -197,6 +201,12 @@ pub enum DispatchError {
     Poll {
         /// wgpu's message.
         message: String,
+    },
+    /// A wavefront tile still had running paths after the most rounds it may take.
+    #[error("internal error: a tile's paths were still running after {rounds} rounds of the wavefront kernels")]
+    TooManyRounds {
+        /// The limit.
+        rounds: u32,
     },
     /// Mapping a read-back buffer failed.
     #[error("reading back {size} bytes failed: {message}")]

@@ -26,7 +26,7 @@ pub use adapter::{list_adapters, AdapterChoice, AdapterChoiceParseError, Adapter
 pub use buffers::{BufferError, BufferLimits, BufferSet, UploadOutcome, UploadStats};
 pub use dispatch::{
     dispatch_once, plan_tiles, read_buffer, read_vec4_f32, DispatchError, DispatchReport,
-    TileConfig, TileDispatcher, TileParams, TILE_PARAMS_WGSL,
+    RoundKernels, RoundsReport, TileConfig, TileDispatcher, TileParams, TILE_PARAMS_WGSL,
 };
 pub use pipeline::{
     create_kernel, BindingDesc, BindingKind, Kernel, KernelDesc, KernelSource, PipelineError,

@@ -12,7 +12,8 @@
 //! device limit is refused with `BufferError::TooLarge` naming the binding, before anything is
 //! written (for the mesh and texture bindings, [`SceneError::BindingTooLarge`] also names the
 //! largest mesh or texture in it: its file, and for a glTF mesh the mesh); `accum` and `counters` are zeroed by [`GpuScene::clear_accumulation`], never by an
-//! upload of scene data.
+//! upload of scene data; so is the wavefront model's `paths`, which is sized by
+//! [`GpuScene::set_path_bytes`].
 
 use rtc_compiler::abi;
 use rtc_compiler::back::ResourceKind;
@@ -29,6 +30,9 @@ pub struct Counters {
     pub nonfinite: u32,
     /// `COUNTER_RAYS`: rays traced (camera, secondary and shadow), wrapping.
     pub rays: u32,
+    /// `COUNTER_SHADOW_OVERFLOW`: the wavefront model's shadow queries beyond what a shading
+    /// step records, answered "unoccluded".
+    pub shadow_overflow: u32,
 }
 use super::gpu_types::{element_size, record, struct_size, FrameUniforms, GpuInstance};
 use super::SceneError;
@@ -87,6 +91,8 @@ enum InstanceOrder {
 pub struct GpuScene {
     buffers: BufferSet,
     bindings: Vec<(&'static abi::BindingDesc, BindingDesc)>,
+    /// Bytes of the wavefront model's `paths` binding (see [`GpuScene::set_path_bytes`]).
+    path_bytes: u64,
 }
 
 impl GpuScene {
@@ -102,7 +108,14 @@ impl GpuScene {
         Self {
             buffers: BufferSet::new(gpu, "rtc scene"),
             bindings: list,
+            path_bytes: 4,
         }
+    }
+
+    /// Sizes the wavefront model's `paths` binding (one tile's path records) for the next
+    /// upload; it is zeroed when (re)allocated and by [`GpuScene::clear_accumulation`].
+    pub fn set_path_bytes(&mut self, bytes: u64) {
+        self.path_bytes = bytes.max(4);
     }
 
     /// Replaces the enforced limits (tests fake tiny ones).
@@ -217,6 +230,7 @@ impl GpuScene {
                     .map_err(named)?,
                 "accum" => set.ensure_zeroed(gpu, desc, accum_entries.max(1) * 16)?,
                 "counters" => set.ensure_zeroed(gpu, desc, COUNTER_BYTES)?,
+                "paths" => set.ensure_zeroed(gpu, desc, self.path_bytes)?,
                 // A binding this runtime does not know: nothing to put in it.
                 _ => continue,
             };
@@ -228,9 +242,10 @@ impl GpuScene {
         })
     }
 
-    /// Zeroes `accum` and `counters` (before the first pass of a render).
+    /// Zeroes `accum`, `counters` and the wavefront model's `paths` (before the first pass of a
+    /// render).
     pub fn clear_accumulation(&mut self, gpu: &Gpu) -> Result<(), SceneError> {
-        for name in ["accum", "counters"] {
+        for name in ["accum", "counters", "paths"] {
             if let Some(b) = abi::binding(name).filter(|_| self.has(name)) {
                 if self.buffers.buffer(b.binding).is_some() {
                     self.buffers.clear(gpu, b.binding)?;
@@ -267,6 +282,7 @@ impl GpuScene {
         Ok(Counters {
             nonfinite: word(abi::COUNTER_NONFINITE),
             rays: word(abi::COUNTER_RAYS),
+            shadow_overflow: word(abi::COUNTER_SHADOW_OVERFLOW),
         })
     }
 }

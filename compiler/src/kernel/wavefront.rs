@@ -1,0 +1,236 @@
+//! The wavefront execution model's stage kernels and the layout of its per-path state.
+//!
+//! Beside the megakernel (`render`: one invocation traces a pixel's samples to completion), a scene
+//! can be compiled to five stage kernels (`stdlib/kernel/wavefront.rt`) that a host runs in rounds
+//! over one tile of pixels, each pixel owning one *path slot* in the `paths` binding:
+//!
+//! | stage | entry | does | traversal code |
+//! |---|---|---|---|
+//! | camera | `wf_camera` | starts the slot's next sample: seeds, calls the camera, finds the medium | only for media |
+//! | trace | `wf_trace` | closest hit of the slot's pending ray (with `@intersection` and `@any_hit`) | one copy |
+//! | shade | `wf_shade` | one shading step: miss, `@secondary_rays`, `@closest_hit`, `@medium`, `@light`; the next ray or the finished sample | only for media |
+//! | shadow | `wf_shadow` | the shadow queries the last shading step recorded | one copy |
+//! | finish | `wf_finish` | adds the pass's samples to `accum` and resets the slot | none |
+//!
+//! A round is camera, trace, shade, shadow, shade. `shadow(…)` in the shade stage does not trace:
+//! it is *replayed* (`shadow_replay` in `stdlib/kernel/paths.rt`). The first run of a shading step
+//! records each query it makes and answers "unoccluded"; the shadow stage traces the recorded
+//! queries; the step then runs again from the same saved state (same random numbers), and each query
+//! that equals a recorded one bit for bit gets its traced answer. Only a step whose every query was
+//! answered commits its results, so the outcome is the megakernel's. A step whose later queries
+//! depend on the answers of earlier ones records the changed ones and goes round again.
+//!
+//! Guarantees: the layout below is the one source of the path record's word offsets (they reach
+//! the kernel as `rtc:config` constants, [`config_constants`]); every stage kernel is a separate
+//! module with its own bindings, each at most WebGPU's default 8 storage buffers (tested for every
+//! example); `paths` holds `PATH_WORDS` words per slot.
+
+use crate::link::KernelConfig;
+
+/// The stage kernels, in the order a round runs them (the shade stage runs twice a round) and
+/// their kernel functions in `stdlib/kernel/wavefront.rt`.
+pub const STAGES: [Stage; 5] = [
+    Stage::Camera,
+    Stage::Trace,
+    Stage::Shade,
+    Stage::Shadow,
+    Stage::Finish,
+];
+
+/// One stage kernel of the wavefront model.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Stage {
+    /// Starts a sample: the camera ray.
+    Camera,
+    /// Closest hits of pending rays.
+    Trace,
+    /// One shading step per path.
+    Shade,
+    /// Recorded shadow queries.
+    Shadow,
+    /// Accumulation and slot reset.
+    Finish,
+}
+
+impl Stage {
+    /// The entry point's name (also the stage's name in summaries and outputs).
+    pub fn entry(self) -> &'static str {
+        match self {
+            Stage::Camera => "wf_camera",
+            Stage::Trace => "wf_trace",
+            Stage::Shade => "wf_shade",
+            Stage::Shadow => "wf_shadow",
+            Stage::Finish => "wf_finish",
+        }
+    }
+
+    /// The kernel function the entry point calls with the invocation's id.
+    pub fn root(self) -> &'static str {
+        match self {
+            Stage::Camera => "wf_camera_invocation",
+            Stage::Trace => "wf_trace_invocation",
+            Stage::Shade => "wf_shade_invocation",
+            Stage::Shadow => "wf_shadow_invocation",
+            Stage::Finish => "wf_finish_invocation",
+        }
+    }
+
+    /// The stage whose entry point is `entry`.
+    pub fn from_entry(entry: &str) -> Option<Stage> {
+        STAGES.into_iter().find(|s| s.entry() == entry)
+    }
+}
+
+/// Shadow queries one shading step records (a step's further queries are answered "unoccluded"
+/// and counted in `COUNTER_SHADOW_OVERFLOW`). At most 32: the answers are bits of one word.
+pub const SHADOW_QUERIES: u32 = 8;
+/// Words of a ray in the path record: origin, tmin, dir, tmax, depth, kind, medium.
+pub const RAY_WORDS: u32 = 11;
+/// Words of a traversal candidate: t, slot, primitive, uv, normal.
+pub const CANDIDATE_WORDS: u32 = 8;
+/// Words of a recorded shadow query: origin, dir, tmax.
+pub const QUERY_WORDS: u32 = 7;
+
+/// Words of one secondary-ray frame: ray, candidate, sum (3), count, next, then `max_spawn`
+/// directions and weights (3 words each).
+pub fn frame_words(c: &KernelConfig) -> u32 {
+    RAY_WORDS + CANDIDATE_WORDS + 5 + 6 * c.max_spawn
+}
+
+/// The named word offsets of the path record and its size, as `(name, value)`: the constants
+/// `rtc:config` declares for `stdlib/kernel/`.
+pub fn config_constants(c: &KernelConfig) -> Vec<(&'static str, u32)> {
+    let mut out = Vec::new();
+    let mut at = 0u32;
+    let mut field = |name: &'static str, words: u32, out: &mut Vec<(&'static str, u32)>| {
+        out.push((name, at));
+        at += words;
+    };
+    field("PATH_STATUS", 1, &mut out);
+    field("PATH_SAMPLE", 1, &mut out);
+    field("PATH_RNG", 1, &mut out);
+    field("PATH_DEPTH", 1, &mut out);
+    field("PATH_SUM", 3, &mut out);
+    field("PATH_BAD", 1, &mut out);
+    field("PATH_RAY", RAY_WORDS, &mut out);
+    field("PATH_CANDIDATE", CANDIDATE_WORDS, &mut out);
+    field("PATH_SQ_RESOLVED", 1, &mut out);
+    field("PATH_SQ_RECORDED", 1, &mut out);
+    field("PATH_SQ_BITS", 1, &mut out);
+    field("PATH_SQ", SHADOW_QUERIES * QUERY_WORDS, &mut out);
+    let frames = if c.has_secondary_rays {
+        c.stack_size * frame_words(c)
+    } else {
+        0
+    };
+    field("PATH_FRAMES", frames, &mut out);
+    out.push(("PATH_WORDS", at));
+    out.push(("FRAME_WORDS", frame_words(c)));
+    out.push(("SHADOW_QUERIES", SHADOW_QUERIES));
+    out.push(("RAY_WORDS", RAY_WORDS));
+    out.push(("CANDIDATE_WORDS", CANDIDATE_WORDS));
+    out.push(("QUERY_WORDS", QUERY_WORDS));
+    out
+}
+
+/// Words of one path slot for a kernel configured by `c`.
+pub fn path_words(c: &KernelConfig) -> u32 {
+    config_constants(c)
+        .iter()
+        .find(|(n, _)| *n == "PATH_WORDS")
+        .map_or(0, |&(_, v)| v)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::back::ResourceKind;
+    use crate::driver::Options;
+    use crate::kernel::{compile_scene_with, ExecModel, KernelOptions};
+    use crate::link::LinkOptions;
+
+    /// Every example's stage kernels: lowered and validated, each within WebGPU's default 8
+    /// storage buffers; only the trace and shadow stages (and, for scenes with media, the camera
+    /// and shade stages, whose medium lookup probes objects) read BVH nodes; the shade stage never
+    /// declares `accum`, and only the finish stage does.
+    #[test]
+    fn every_example_has_stage_kernels_within_the_default_limits() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples");
+        let mut names: Vec<_> = std::fs::read_dir(&root)
+            .unwrap()
+            .filter_map(|e| {
+                let p = e.ok()?.path().join("scene.rt");
+                p.exists().then_some(p)
+            })
+            .collect();
+        names.sort();
+        assert!(names.len() >= 10, "{names:?}");
+        for path in names {
+            let compiled = compile_scene_with(
+                std::slice::from_ref(&path),
+                None,
+                &Options::default(),
+                &LinkOptions::default(),
+                &KernelOptions {
+                    debug: None,
+                    exec: ExecModel::Wavefront,
+                },
+            )
+            .unwrap_or_else(|f| {
+                panic!(
+                    "{}: {}",
+                    path.display(),
+                    crate::diag::render_human(&f.checked.sources, &f.diagnostics, false)
+                )
+            });
+            let stages = compiled.stages.as_ref().expect("stage kernels");
+            assert_eq!(
+                stages.iter().map(|s| s.stage).collect::<Vec<_>>(),
+                STAGES.to_vec()
+            );
+            let media = compiled.linked.config.has_media;
+            for s in stages {
+                let names: Vec<&str> = s.bindings.iter().map(|b| b.name).collect();
+                let storage = s
+                    .bindings
+                    .iter()
+                    .filter(|b| b.kind != ResourceKind::Uniform)
+                    .count();
+                assert!(
+                    storage <= 8,
+                    "{}: {:?} has {storage} storage buffers: {names:?}",
+                    path.display(),
+                    s.stage
+                );
+                assert!(names.contains(&"paths"), "{:?}: {names:?}", s.stage);
+                let nodes = names.contains(&"nodes");
+                match s.stage {
+                    Stage::Trace | Stage::Shadow => assert!(nodes),
+                    Stage::Camera | Stage::Shade => assert_eq!(nodes, media, "{:?}", s.stage),
+                    Stage::Finish => assert!(!nodes),
+                }
+                assert_eq!(names.contains(&"accum"), s.stage == Stage::Finish);
+                assert_eq!(s.module.entry_points.len(), 1);
+                assert_eq!(s.module.entry_points[0].name, s.stage.entry());
+            }
+        }
+    }
+
+    #[test]
+    fn the_layout_is_dense_and_counts_frames_only_with_secondary_rays() {
+        let mut c = KernelConfig::unspecialised();
+        let with = path_words(&c);
+        c.has_secondary_rays = false;
+        let without = path_words(&c);
+        assert_eq!(with - without, c.stack_size * frame_words(&c));
+        // 8 single words, the sum, the ray, the candidate and the queries.
+        assert_eq!(
+            without,
+            8 + 3 + RAY_WORDS + CANDIDATE_WORDS + SHADOW_QUERIES * QUERY_WORDS
+        );
+        assert!(SHADOW_QUERIES <= 32);
+        for stage in STAGES {
+            assert_eq!(Stage::from_entry(stage.entry()), Some(stage));
+        }
+    }
+}

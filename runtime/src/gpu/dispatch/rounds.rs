@@ -1,0 +1,245 @@
+//! Rounds of stage kernels over each tile: the wavefront model's dispatch.
+//!
+//! For each tile, a round is one command buffer: the active-path counter is zeroed, the round's
+//! kernels are dispatched in order over the tile (same tile parameters, each with its own bind
+//! group), and the counter is copied to a mapped buffer and read. A round that found no path
+//! running ends the tile's rounds; the finish kernel then runs once over the tile. Tiles run one
+//! after the other, so one tile's path state is all the state buffer has to hold.
+//!
+//! Invariants: a tile never runs more than the caller's `max_rounds` rounds (more is an error,
+//! [`DispatchError::TooManyRounds`], not a hang); every wgpu call runs in an error scope.
+
+use super::*;
+
+/// The kernels of a wavefront dispatch.
+pub struct RoundKernels<'a> {
+    /// The kernels of one round, dispatched in this order (a kernel may appear twice).
+    pub round: Vec<&'a Kernel>,
+    /// The kernel run once over a tile after its last round.
+    pub finish: &'a Kernel,
+    /// The binding of the atomic counters buffer.
+    pub counters: u32,
+    /// The word of that buffer counting the paths still running, which the first kernel of a
+    /// round increments.
+    pub active_word: u32,
+    /// Rounds a tile may take before the dispatch gives up.
+    pub max_rounds: u32,
+}
+
+/// What a wavefront dispatch did.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RoundsReport {
+    /// Tiles, batches (one per tile) and times, as for a plain dispatch.
+    pub dispatch: DispatchReport,
+    /// Rounds run over all tiles (each tile's last round found nothing to do).
+    pub rounds: u64,
+}
+
+impl TileDispatcher {
+    /// Runs `kernels` over a `width × height` image, tile after tile: rounds until no path is
+    /// running, then the finish kernel. `frame` goes to [`TileParams::frame`]; `progress(done,
+    /// total)` is called before the first tile and after each.
+    pub fn dispatch_rounds(
+        &mut self,
+        gpu: &Gpu,
+        kernels: &RoundKernels<'_>,
+        buffers: &BufferSet,
+        [width, height]: [u32; 2],
+        frame: u32,
+        progress: &mut dyn FnMut(u32, u32),
+    ) -> Result<RoundsReport, DispatchError> {
+        let config = self.config;
+        check_config(&config)?;
+        let mut all: Vec<&Kernel> = kernels.round.clone();
+        all.push(kernels.finish);
+        let mut tile_binding = None;
+        for k in &all {
+            match k.tile_binding() {
+                Some(b) if tile_binding.is_none_or(|t| t == b) => tile_binding = Some(b),
+                _ => {
+                    return Err(DispatchError::NoTileBinding {
+                        kernel: k.label().to_string(),
+                    })
+                }
+            }
+        }
+        let Some(tile_binding) = tile_binding else {
+            return Ok(RoundsReport::default());
+        };
+        let tiles = plan_tiles(width, height, config.tile_width, config.tile_height, frame);
+        let total = u32::try_from(tiles.len()).unwrap_or(u32::MAX);
+        let mut report = RoundsReport {
+            dispatch: DispatchReport {
+                tiles: total,
+                ..DispatchReport::default()
+            },
+            rounds: 0,
+        };
+        progress(0, total);
+        if tiles.is_empty() {
+            return Ok(report);
+        }
+        let limits = gpu.limits();
+        let workgroups = |k: &Kernel, tile: &TileParams| {
+            let [wx, wy, _] = k.workgroup_size();
+            [
+                tile.extent[0].div_ceil(wx.max(1)),
+                tile.extent[1].div_ceil(wy.max(1)),
+            ]
+        };
+        for k in &all {
+            let [wx, wy, _] = k.workgroup_size();
+            for count in [
+                config.tile_width.div_ceil(wx.max(1)),
+                config.tile_height.div_ceil(wy.max(1)),
+            ] {
+                if count > limits.max_compute_workgroups_per_dimension {
+                    return Err(DispatchError::TooManyWorkgroups {
+                        kernel: k.label().to_string(),
+                        count,
+                        limit: limits.max_compute_workgroups_per_dimension,
+                    });
+                }
+            }
+        }
+
+        let stride = (std::mem::size_of::<TileParams>() as u64)
+            .next_multiple_of(u64::from(limits.min_uniform_buffer_offset_alignment.max(1)));
+        let params = self.params_buffer(gpu, stride * tiles.len() as u64)?;
+        let mut bytes = vec![0u8; (stride * tiles.len() as u64) as usize];
+        for (chunk, tile) in bytes.chunks_exact_mut(stride as usize).zip(&tiles) {
+            chunk[..std::mem::size_of::<TileParams>()].copy_from_slice(bytemuck::bytes_of(tile));
+        }
+        let tile_resource = || {
+            wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                buffer: params,
+                offset: 0,
+                size: wgpu::BufferSize::new(std::mem::size_of::<TileParams>() as u64),
+            })
+        };
+        let groups: Vec<wgpu::BindGroup> = all
+            .iter()
+            .map(|k| bind_group(gpu, k, buffers, Some((tile_binding, tile_resource()))))
+            .collect::<Result<_, _>>()?;
+        let ((), error) = gpu.scoped(|| gpu.queue().write_buffer(params, 0, &bytes));
+        wgpu_result("tile parameter upload", error)?;
+        let counters = buffers
+            .buffer(kernels.counters)
+            .ok_or_else(|| BufferError::Missing {
+                set: buffers.label().to_string(),
+                binding: kernels.counters,
+            })?;
+        let active_offset = u64::from(kernels.active_word) * 4;
+        let (staging, error) = gpu.scoped(|| {
+            gpu.device().create_buffer(&wgpu::BufferDescriptor {
+                label: Some("rtc active paths"),
+                size: 4,
+                usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            })
+        });
+        wgpu_result("read-back allocation", error)?;
+
+        let start = Instant::now();
+        let ((), error) = gpu.scoped(|| {
+            gpu.queue().submit([]);
+        });
+        wgpu_result("upload flush", error)?;
+        wait(gpu)?;
+        report.dispatch.flush_ms = elapsed_ms(start);
+
+        let start = Instant::now();
+        let finish_group = groups.len() - 1;
+        for (done, tile) in tiles.iter().enumerate() {
+            // Fits: the buffer size was checked against u32 offsets in params_buffer.
+            let offset = (u64::from(tile.tile_index) * stride) as u32;
+            let mut finished = false;
+            for _ in 0..kernels.max_rounds {
+                let ((), error) = gpu.scoped(|| {
+                    let mut encoder =
+                        gpu.device()
+                            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                                label: Some("rtc wavefront round"),
+                            });
+                    encoder.clear_buffer(counters, active_offset, Some(4));
+                    {
+                        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                            label: Some("rtc wavefront round"),
+                            timestamp_writes: None,
+                        });
+                        for (k, group) in kernels.round.iter().zip(&groups) {
+                            let [x, y] = workgroups(k, tile);
+                            pass.set_pipeline(k.pipeline());
+                            pass.set_bind_group(0, group, &[offset]);
+                            pass.dispatch_workgroups(x, y, 1);
+                        }
+                    }
+                    encoder.copy_buffer_to_buffer(counters, active_offset, &staging, 0, Some(4));
+                    gpu.queue().submit([encoder.finish()]);
+                });
+                wgpu_result("wavefront round", error)?;
+                report.rounds += 1;
+                let active = read_active(gpu, &staging)?;
+                if active == 0 {
+                    finished = true;
+                    break;
+                }
+            }
+            if !finished {
+                return Err(DispatchError::TooManyRounds {
+                    rounds: kernels.max_rounds,
+                });
+            }
+            let ((), error) = gpu.scoped(|| {
+                let mut encoder =
+                    gpu.device()
+                        .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                            label: Some(kernels.finish.label()),
+                        });
+                {
+                    let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                        label: Some(kernels.finish.label()),
+                        timestamp_writes: None,
+                    });
+                    let [x, y] = workgroups(kernels.finish, tile);
+                    pass.set_pipeline(kernels.finish.pipeline());
+                    pass.set_bind_group(0, &groups[finish_group], &[offset]);
+                    pass.dispatch_workgroups(x, y, 1);
+                }
+                gpu.queue().submit([encoder.finish()]);
+            });
+            wgpu_result("wavefront finish", error)?;
+            wait(gpu)?;
+            report.dispatch.batches += 1;
+            progress(done as u32 + 1, total);
+        }
+        report.dispatch.dispatch_ms = elapsed_ms(start);
+        Ok(report)
+    }
+}
+
+/// Waits for the submitted round and reads the active-path count from `staging`.
+fn read_active(gpu: &Gpu, staging: &wgpu::Buffer) -> Result<u32, DispatchError> {
+    let (sender, receiver) = mpsc::channel();
+    staging.map_async(wgpu::MapMode::Read, .., move |result| {
+        // The receiver outlives the wait below; a send error only means nobody listens.
+        let _ = sender.send(result);
+    });
+    wait(gpu)?;
+    let map_error = |message: String| DispatchError::Map { size: 4, message };
+    match receiver.recv() {
+        Ok(Ok(())) => {}
+        Ok(Err(e)) => return Err(map_error(error_chain(&e))),
+        Err(e) => return Err(map_error(e.to_string())),
+    }
+    let value = {
+        let view = staging
+            .get_mapped_range(..)
+            .map_err(|e| map_error(error_chain(&e)))?;
+        let mut word = [0u8; 4];
+        word.copy_from_slice(&view[..4]);
+        u32::from_le_bytes(word)
+    };
+    staging.unmap();
+    Ok(value)
+}
