@@ -6,8 +6,9 @@
 //! `reference-STEM.png` for another file `STEM.rt` with one scene (`examples/cameras/orthographic.rt`
 //! → `reference-orthographic.png`); `reference-STEM-SCENE.png` for each scene of a file with several.
 //!
-//! **How.** Each scene is compiled by `compile_scene` and rendered by the runtime's `Renderer`, exactly
-//! as `rtc render --size WxH --spp N` does (the same `RenderOptions::size` and `samples` overrides), at
+//! **How.** Each scene is compiled by `compile_scene_with` (with the wavefront model's stage kernels)
+//! and rendered by the runtime's `Renderer` with both execution models, megakernel and wavefront,
+//! exactly as `rtc render --size WxH --spp N --exec MODEL` does (the same `RenderOptions::size` and `samples` overrides), at
 //! [`WIDTH`] pixels wide, the height keeping the scene's aspect ratio, with the scene's samples per
 //! pixel capped at [`MAX_SPP`] (the seed is the scene's, so the noise is the same every run). The image
 //! is encoded as the PNG writer does (clamp, sRGB, 8 bits) and compared with the reference's bytes.
@@ -18,7 +19,9 @@
 //! channel off; measured by rendering every example twice), so the tolerance only leaves room for other
 //! drivers' float rounding (a shadow ray flipping at an edge changes a few pixels a lot, hence the
 //! outlier fraction rather than a maximum). Every render must also be free of NaN and infinity: the
-//! kernel's count of non-finite samples and the image's non-finite pixels must both be zero.
+//! kernel's count of non-finite samples and the image's non-finite pixels must both be zero. The two
+//! execution models' renders are also compared with each other under the same metric (on lavapipe
+//! they are bit-identical for every example).
 //!
 //! **Blessing.** `RTC_BLESS=1 cargo test -p rtc-tests --test examples` writes every reference anew (a
 //! missing reference fails with that command). `RTC_EXAMPLES=a,b` limits the run (and the blessing) to
@@ -46,7 +49,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use rtc_compiler::driver::{check_paths, Options};
-use rtc_compiler::kernel::compile_scene;
+use rtc_compiler::kernel::{compile_scene_with, ExecModel, KernelOptions};
 use rtc_compiler::link::LinkOptions;
 use rtc_runtime::gpu::Gpu;
 use rtc_runtime::image_out::{read_image, to_srgb8, write_png, LinearImage, ToneMap};
@@ -174,15 +177,19 @@ fn difference(test: &[u8], reference: &[u8]) -> Difference {
     }
 }
 
-/// Renders one case and compares it (or blesses it); an error message on failure.
+/// Renders one case with both execution models, compares each render with the reference (or
+/// blesses the megakernel's) and the two renders with each other; an error message on failure.
 fn run_case(gpu: &Gpu, case: &Case, out_dir: &Path) -> Result<String, String> {
     let what = format!("{} (scene `{}`)", display_relative(&case.file), case.scene);
-    let start = Instant::now();
-    let compiled = compile_scene(
+    let compiled = compile_scene_with(
         std::slice::from_ref(&case.file),
         Some(&case.scene),
         &Options::default(),
         &LinkOptions::default(),
+        &KernelOptions {
+            debug: None,
+            exec: Some(ExecModel::Wavefront),
+        },
     )
     .map_err(|f| {
         format!(
@@ -200,12 +207,51 @@ fn run_case(gpu: &Gpu, case: &Case, out_dir: &Path) -> Result<String, String> {
         / u64::from(settings.width.max(1)))
     .max(1) as u32;
     let spp = settings.samples.min(MAX_SPP);
-    let options = RenderOptions {
-        size: Some([WIDTH, height]),
-        samples: Some(spp),
-        ..RenderOptions::default()
-    };
-    let result = Renderer::new(gpu, &compiled, options)
+    let mut lines = Vec::new();
+    let mut images = Vec::new();
+    for exec in [ExecModel::Megakernel, ExecModel::Wavefront] {
+        let what = format!("{what} [{}]", exec.name());
+        let options = RenderOptions {
+            size: Some([WIDTH, height]),
+            samples: Some(spp),
+            exec: Some(exec),
+            ..RenderOptions::default()
+        };
+        let (line, image) = render_case(gpu, case, &compiled, options, &what, out_dir)?;
+        lines.push(line);
+        images.push(image);
+    }
+    if let [mega, wave] = &images[..] {
+        let tone = ToneMap::default();
+        let d = difference(&to_srgb8(mega, &tone).0, &to_srgb8(wave, &tone).0);
+        let outlier_fraction = d.outliers as f64 / d.channels.max(1) as f64;
+        let line = format!(
+            "{what}: wavefront against megakernel: PSNR {:.1} dB, {} channels off by more than {OUTLIER_LEVELS}",
+            d.psnr, d.outliers
+        );
+        if d.psnr < MIN_PSNR_DB || outlier_fraction > MAX_OUTLIER_FRACTION {
+            return Err(format!("{line}: the execution models disagree"));
+        }
+        lines.push(line);
+    }
+    Ok(lines.join("\n"))
+}
+
+/// Renders one case with `options` and compares it with the reference (or blesses it, the
+/// megakernel's render only); the summary line and the image.
+fn render_case(
+    gpu: &Gpu,
+    case: &Case,
+    compiled: &rtc_compiler::kernel::CompiledScene,
+    options: RenderOptions,
+    what: &str,
+    out_dir: &Path,
+) -> Result<(String, LinearImage), String> {
+    let start = Instant::now();
+    let [width, height] = options.size.unwrap_or([WIDTH, WIDTH]);
+    debug_assert_eq!(width, WIDTH);
+    let exec = options.exec.unwrap_or_default();
+    let result = Renderer::new(gpu, compiled, options)
         .and_then(|mut r| r.render(&mut |_, _| {}))
         .map_err(|e| format!("{what}: does not render: {e}"))?;
     let nonfinite_pixels = result.image.count_nonfinite();
@@ -222,9 +268,11 @@ fn run_case(gpu: &Gpu, case: &Case, out_dir: &Path) -> Result<String, String> {
         start.elapsed().as_secs_f64()
     );
     if bless() {
-        write_png(&case.reference, &result.image, &tone)
-            .map_err(|e| format!("{what}: cannot bless: {e}"))?;
-        return Ok(format!("{summary}, blessed"));
+        if exec == ExecModel::Megakernel {
+            write_png(&case.reference, &result.image, &tone)
+                .map_err(|e| format!("{what}: cannot bless: {e}"))?;
+        }
+        return Ok((format!("{summary}, blessed"), result.image));
     }
     let bless_help = format!(
         "RTC_BLESS=1 RTC_EXAMPLES={} cargo test -p rtc-tests --test examples",
@@ -268,7 +316,7 @@ fn run_case(gpu: &Gpu, case: &Case, out_dir: &Path) -> Result<String, String> {
             .and_then(|p| p.file_name())
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
-        let actual = out_dir.join(format!("{example}-{stem}-actual.png"));
+        let actual = out_dir.join(format!("{example}-{stem}-{}-actual.png", exec.name()));
         let _ = write_png(&actual, &result.image, &tone);
         return Err(format!(
             "{summary}: differs from {} (need PSNR ≥ {MIN_PSNR_DB} dB and at most {:.1}% outliers); \
@@ -278,7 +326,7 @@ fn run_case(gpu: &Gpu, case: &Case, out_dir: &Path) -> Result<String, String> {
             actual.display()
         ));
     }
-    Ok(summary)
+    Ok((summary, result.image))
 }
 
 #[test]

@@ -155,12 +155,12 @@ pub struct ExecArgs {
 }
 
 impl ExecArgs {
-    /// The model to compile and run.
-    pub fn model(&self) -> rtc_compiler::kernel::ExecModel {
-        match self.exec {
-            Some(ExecChoice::Wavefront) => rtc_compiler::kernel::ExecModel::Wavefront,
-            Some(ExecChoice::Megakernel) | None => rtc_compiler::kernel::ExecModel::Megakernel,
-        }
+    /// The model asked for (`None`: the scene's `exec` setting decides).
+    pub fn model(&self) -> Option<rtc_compiler::kernel::ExecModel> {
+        self.exec.map(|e| match e {
+            ExecChoice::Wavefront => rtc_compiler::kernel::ExecModel::Wavefront,
+            ExecChoice::Megakernel => rtc_compiler::kernel::ExecModel::Megakernel,
+        })
     }
 }
 

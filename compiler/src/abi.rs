@@ -118,6 +118,7 @@ pub const FRAME: StructDesc = StructDesc {
         f("camera_offset", FieldType::U32),
         f("background_type", FieldType::U32),
         f("background_offset", FieldType::U32),
+        f("path_slots", FieldType::U32),
     ],
 };
 

@@ -32,8 +32,7 @@ use crate::diag::Diagnostic;
 use crate::driver::{self, Checked, Options};
 use crate::kernel::{
     self, generated, wavefront, CompileFailure, CompiledScene, ExecModel, KernelOptions,
-    StageKernel, BOUNDS_ENTRY, KERNEL_ROOTS,
-    RENDER_ENTRY,
+    StageKernel, BOUNDS_ENTRY, KERNEL_ROOTS, RENDER_ENTRY,
 };
 use crate::link::{registry::Registry, LinkOptions, Linked};
 use crate::sema::hir::{ProgramKind, SceneId};
@@ -122,7 +121,12 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
         None
     };
     // 6b. Lower the wavefront model's stage kernels, when asked for (not for debug kernels).
-    let stages = if request.kernel.exec == ExecModel::Wavefront && request.kernel.debug.is_none() {
+    let setting = checked
+        .program
+        .as_ref()
+        .map_or(0, |p| p.scenes[scene].settings.exec);
+    let exec = ExecModel::resolve(request.kernel.exec, setting);
+    let stages = if exec == ExecModel::Wavefront && request.kernel.debug.is_none() {
         let lowered = timings.time("lower the stage kernels", || {
             wavefront::STAGES
                 .iter()
@@ -164,6 +168,7 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
         samples_per_pass,
         stages,
         path_words,
+        exec,
         timings: Vec::new(),
     };
 
@@ -229,7 +234,8 @@ pub fn link_scene(
     }
 }
 
-/// Phase 7: the render kernel (and the bounds kernel, if any) for every target in `targets`, then
+/// Phase 7: the render kernel (and the bounds kernel and the wavefront stage kernels, if any:
+/// `wf_trace.wgsl`, …) for every target in `targets`, then
 /// `manifest.json`, in that order. The back ends are independent: each output is written on its own
 /// thread; the result does not depend on it.
 pub fn write_targets(
@@ -237,9 +243,13 @@ pub fn write_targets(
     targets: &[Target],
 ) -> Result<Vec<Output>, BackendError> {
     let resources = crate::abi::resources(compiled.bindings.iter().copied());
-    let mut modules = vec![("kernel", &compiled.render, RENDER_ENTRY)];
+    let mut modules = vec![("kernel", &compiled.render, RENDER_ENTRY, resources.clone())];
     if let Some(b) = &compiled.bounds {
-        modules.push(("bounds", b, BOUNDS_ENTRY));
+        modules.push(("bounds", b, BOUNDS_ENTRY, resources));
+    }
+    for s in compiled.stages.iter().flatten() {
+        let resources = crate::abi::resources(s.bindings.iter().copied());
+        modules.push((s.stage.entry(), &s.module, s.stage.entry(), resources));
     }
     let jobs: Vec<_> = modules
         .iter()
@@ -248,8 +258,7 @@ pub fn write_targets(
     let results: Vec<Result<Output, BackendError>> = std::thread::scope(|scope| {
         let handles: Vec<_> = jobs
             .iter()
-            .map(|&(&(stem, module, entry), t)| {
-                let resources = &resources;
+            .map(|&((stem, module, entry, resources), t)| {
                 scope.spawn(move || {
                     let bytes = back::write(module, t, entry, resources)?;
                     let ext = t.file_name().rsplit('.').next().unwrap_or("out");

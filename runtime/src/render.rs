@@ -57,7 +57,9 @@ use crate::gpu::{
     Kernel, KernelDesc, KernelSource, PipelineError, RoundKernels, TileConfig, TileDispatcher,
 };
 use crate::image_out::{ImageError, LinearImage};
-use crate::scene::{Entities, EntityOptions, GpuScene, ObjectGeometry, SceneError, UploadReport};
+use crate::scene::{
+    Entities, EntityOptions, FrameUniforms, GpuScene, ObjectGeometry, SceneError, UploadReport,
+};
 
 /// What to change from the scene's own settings, and how to run.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -74,9 +76,9 @@ pub struct RenderOptions {
     pub limits: Option<BufferLimits>,
     /// Folders besides the scene's own that its assets may come from (`--asset-root`).
     pub asset_roots: AssetRoots,
-    /// How samples are executed; [`ExecModel::Wavefront`] needs a scene compiled with its stage
-    /// kernels (`KernelOptions::exec`).
-    pub exec: ExecModel,
+    /// How samples are executed (`None`: as compiled, `CompiledScene::exec`);
+    /// [`ExecModel::Wavefront`] needs a scene compiled with its stage kernels.
+    pub exec: Option<ExecModel>,
 }
 
 /// Why a scene could not be rendered.
@@ -233,6 +235,8 @@ pub struct Renderer<'g> {
     entities: Entities,
     scene: GpuScene,
     kernels: Kernels,
+    /// `FrameUniforms::path_slots`: one tile's path slots (wavefront), else 0.
+    path_slots: u32,
     dispatcher: TileDispatcher,
     size: [u32; 2],
     samples_per_pass: u32,
@@ -282,7 +286,8 @@ fn max_rounds(compiled: &CompiledScene) -> u32 {
             rays = rays.saturating_add(level);
         }
     }
-    let per_sample = rays.saturating_mul(1 + u64::from(rtc_compiler::kernel::wavefront::SHADOW_QUERIES));
+    let per_sample =
+        rays.saturating_mul(1 + u64::from(rtc_compiler::kernel::wavefront::SHADOW_QUERIES));
     let rounds = per_sample
         .saturating_mul(u64::from(compiled.samples_per_pass.max(1)))
         .saturating_add(2);
@@ -293,7 +298,9 @@ fn max_rounds(compiled: &CompiledScene) -> u32 {
 /// tile's path records (`path_words` words a pixel) fit one storage binding of at most
 /// `max_binding` bytes.
 fn wavefront_tiles(mut tiles: TileConfig, path_words: u32, max_binding: u64) -> TileConfig {
-    let bytes = |t: &TileConfig| u64::from(t.tile_width) * u64::from(t.tile_height) * u64::from(path_words) * 4;
+    let bytes = |t: &TileConfig| {
+        u64::from(t.tile_width) * u64::from(t.tile_height) * u64::from(path_words) * 4
+    };
     while bytes(&tiles) > max_binding && (tiles.tile_width > 8 || tiles.tile_height > 8) {
         if tiles.tile_width >= tiles.tile_height {
             tiles.tile_width = (tiles.tile_width / 2).max(8);
@@ -383,7 +390,7 @@ impl<'g> Renderer<'g> {
         if !compiled.bindings.iter().any(|b| b.binding == tile.binding) {
             return Err(RenderError::NoTileBinding);
         }
-        let (kernels, mut all) = match options.exec {
+        let (kernels, mut all) = match options.exec.unwrap_or(compiled.exec) {
             ExecModel::Megakernel => {
                 let render_bindings = GpuScene::runtime_bindings(&compiled.bindings);
                 let kernel = create_kernel(
@@ -494,7 +501,14 @@ impl<'g> Renderer<'g> {
             written_at_setup = report.written();
         }
 
-        let frame = entities.frame_uniforms(samples_per_pass, total_samples);
+        let path_slots = match kernels {
+            Kernels::Wavefront { .. } => tiles.tile_width * tiles.tile_height,
+            Kernels::Mega(_) => 0,
+        };
+        let frame = FrameUniforms {
+            path_slots,
+            ..entities.frame_uniforms(samples_per_pass, total_samples)
+        };
         let report = scene.upload(gpu, &entities, &frame, u64::from(width) * u64::from(height))?;
         setup.upload = Some((
             upload.0 + report.stats.upload_ms,
@@ -523,8 +537,16 @@ impl<'g> Renderer<'g> {
                         eprintln!("{}: {:.0} ms", k.label(), ms_since(t));
                     }
                 }
-                let rounds = Kernels::rounds(stages, *max_rounds).ok_or(RenderError::NoStageKernels)?;
-                dispatcher.dispatch_rounds(gpu, &rounds, scene.buffers(), [1, 1], 0, &mut |_, _| {})?;
+                let rounds =
+                    Kernels::rounds(stages, *max_rounds).ok_or(RenderError::NoStageKernels)?;
+                dispatcher.dispatch_rounds(
+                    gpu,
+                    &rounds,
+                    scene.buffers(),
+                    [1, 1],
+                    0,
+                    &mut |_, _| {},
+                )?;
             }
         }
         setup.pipeline_ms += ms_since(start);
@@ -533,6 +555,7 @@ impl<'g> Renderer<'g> {
             entities,
             scene,
             kernels,
+            path_slots,
             dispatcher,
             size: [width, height],
             samples_per_pass,
@@ -594,9 +617,12 @@ impl<'g> Renderer<'g> {
         }
         let [width, height] = self.size;
         let pixels = u64::from(width) * u64::from(height);
-        let frame = self
-            .entities
-            .frame_uniforms(self.samples_per_pass, self.total_samples);
+        let frame = FrameUniforms {
+            path_slots: self.path_slots,
+            ..self
+                .entities
+                .frame_uniforms(self.samples_per_pass, self.total_samples)
+        };
         let report: UploadReport = self.scene.upload(gpu, &self.entities, &frame, pixels)?;
         let mut written = std::mem::take(&mut self.written_at_setup);
         for name in report.written() {

@@ -15,6 +15,10 @@
 //!   `t` within 1e-5 relative, geometric normal within 1e-5 except at most 1% of the pixels, where
 //!   a ray through a shared edge may take either triangle).
 //!
+//! - the wavefront execution model against the megakernel, on every scene of the suite in small
+//!   tiles (bit-identical on lavapipe), on a shading step whose second shadow query depends on the
+//!   first answer (replayed until exact), and past the shadow queries one step records (warned).
+//!
 //! A test skips only when there is no adapter at all, and then says so on stderr.
 
 mod common;
@@ -189,4 +193,158 @@ fn custom_geometry_walking_its_mesh_bvh_sees_what_the_mesh_geometry_sees() {
         normal_mismatches * 100 <= hits,
         "{normal_mismatches} of {hits} normals differ"
     );
+}
+
+/// Renders `file` with both execution models, in 16 × 16 tiles (so a size that is not a multiple
+/// of 16 has smaller edge tiles, whose path records must not see the state a larger tile left),
+/// and returns (megakernel, wavefront) images and the wavefront render's statistics.
+fn both_models(
+    gpu: &Gpu,
+    name: &str,
+    file: &SceneFile,
+    size: [u32; 2],
+) -> (LinearImage, LinearImage, rtc_runtime::render::RenderStats) {
+    use rtc_compiler::kernel::{ExecModel, KernelOptions};
+    use rtc_runtime::gpu::TileConfig;
+    let dir = temp_dir("features", name);
+    let compiled = file.compile_with(
+        &dir,
+        &KernelOptions {
+            debug: None,
+            exec: Some(ExecModel::Wavefront),
+        },
+    );
+    let options = |exec| RenderOptions {
+        size: Some(size),
+        samples: Some(1),
+        tiles: Some(TileConfig {
+            tile_width: 16,
+            tile_height: 16,
+            tiles_per_batch: 1,
+        }),
+        exec: Some(exec),
+        ..RenderOptions::default()
+    };
+    let (mega, _) = common::scene::render(
+        gpu,
+        &compiled,
+        options(ExecModel::Megakernel),
+        &format!("{name} (megakernel)"),
+    );
+    let (wave, stats) = common::scene::render(
+        gpu,
+        &compiled,
+        options(ExecModel::Wavefront),
+        &format!("{name} (wavefront)"),
+    );
+    assert_eq!(stats.exec, ExecModel::Wavefront);
+    assert!(stats.rounds > 0, "{name}: no wavefront round ran");
+    let _ = std::fs::remove_dir_all(&dir);
+    (mega, wave, stats)
+}
+
+/// Pixels where two images differ by more than `tolerance` in some channel.
+fn differing(a: &LinearImage, b: &LinearImage, tolerance: f32) -> Vec<(u32, u32)> {
+    assert_eq!((a.width(), a.height()), (b.width(), b.height()));
+    let mut out = Vec::new();
+    for y in 0..a.height() {
+        for x in 0..a.width() {
+            let (p, q) = (px(a, x, y), px(b, x, y));
+            if (0..3).any(|c| (p[c] - q[c]).abs() > tolerance) {
+                out.push((x, y));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn the_wavefront_model_renders_what_the_megakernel_renders() {
+    let Some(gpu) = gpu_or_skip("the_wavefront_model_renders_what_the_megakernel_renders") else {
+        return;
+    };
+    // Every feature scene of this suite (any-hit cut-outs and shadows, nested media with a camera
+    // inside, custom geometry walking its BVH) at 40 x 28 in 16 x 16 tiles. The two models run
+    // the same operations in the same order, so on lavapipe the images are bit-identical; the
+    // tolerance (1e-5 absolute on values of order 1) leaves room for another driver contracting
+    // differently in two kernels.
+    for (name, file) in [
+        ("cut_out", scene("cut_out").set("SIDE", "40u")),
+        ("shadows", scene("shadows").set("SIDE", "40u")),
+        ("nested_media", scene("nested_media")),
+        ("walker_builtin", scene("walker").scene("walker_builtin")),
+        ("walker_custom", scene("walker").scene("walker_custom")),
+        ("dependent_shadows", scene("dependent_shadows")),
+    ] {
+        let (mega, wave, _) = both_models(&gpu, name, &file, [40, 28]);
+        let off = differing(&mega, &wave, 1e-5);
+        assert!(
+            off.is_empty(),
+            "{name}: {} pixels differ between the models, first {:?}",
+            off.len(),
+            &off[..off.len().min(8)]
+        );
+    }
+}
+
+#[test]
+fn a_shading_step_whose_queries_depend_on_answers_is_replayed_until_exact() {
+    let Some(gpu) =
+        gpu_or_skip("a_shading_step_whose_queries_depend_on_answers_is_replayed_until_exact")
+    else {
+        return;
+    };
+    // `dependent_shadows.rt`: the second query's direction depends on the first answer, so a
+    // pixel whose way up is blocked records a query on the first run that the replay does not make
+    // again; its colours (red where the way up is clear, blue 0.5 or 1 where it is blocked) must
+    // come out as the megakernel's, pixel for pixel, and both branches must occur.
+    let file = scene("dependent_shadows").set("SIDE", "24u");
+    let (mega, wave, stats) = both_models(&gpu, "dependent_shadows", &file, [SIDE, SIDE]);
+    let off = differing(&mega, &wave, 1e-5);
+    assert!(off.is_empty(), "{} pixels differ: {:?}", off.len(), off);
+    let mut branches = [0usize; 2];
+    for y in 0..SIDE {
+        for x in 0..SIDE {
+            let p = px(&wave, x, y);
+            if p[2] == 1.0 && p[0] == 0.0 && p[1] == 0.0 {
+                continue; // the background
+            }
+            branches[usize::from(p[0] == 0.0)] += 1;
+        }
+    }
+    assert!(
+        branches[0] > 0 && branches[1] > 0,
+        "both branches must occur: {branches:?}"
+    );
+    assert!(
+        stats.warnings.is_empty(),
+        "no query overflowed: {:?}",
+        stats.warnings
+    );
+}
+
+#[test]
+fn shadow_queries_beyond_what_a_step_records_are_warned_about() {
+    let Some(gpu) = gpu_or_skip("shadow_queries_beyond_what_a_step_records_are_warned_about")
+    else {
+        return;
+    };
+    let limit = rtc_compiler::kernel::wavefront::SHADOW_QUERIES;
+    // At the limit: no warning, and the image is the megakernel's.
+    let file = scene("many_shadows").set("QUERIES", format!("{limit}u"));
+    let (mega, wave, stats) = both_models(&gpu, "many_shadows_at_limit", &file, [16, 16]);
+    assert!(stats.warnings.is_empty(), "{:?}", stats.warnings);
+    assert!(differing(&mega, &wave, 1e-5).is_empty());
+    // Over it: every query past the limit is answered "unoccluded", counted and named in a
+    // warning (the slab shadows some of the later directions, so the image may be brighter).
+    let file = scene("many_shadows").set("QUERIES", format!("{}u", limit + 4));
+    let (_, wave, stats) = both_models(&gpu, "many_shadows_over_limit", &file, [16, 16]);
+    let warning = stats
+        .warnings
+        .iter()
+        .find(|w| w.contains("answered \"unoccluded\""))
+        .unwrap_or_else(|| panic!("no overflow warning: {:?}", stats.warnings));
+    // 4 extra queries for each floor pixel of each of the replays of its one shading step.
+    assert!(warning.contains(&limit.to_string()), "{warning}");
+    assert_eq!(wave.count_nonfinite(), 0);
 }

@@ -51,6 +51,9 @@ pub struct Args {
     /// Build the unspecialised kernel: every program and feature, not only what the scene uses.
     #[arg(long)]
     pub all_programs: bool,
+    /// Also write the wavefront model's stage kernels (`--exec wavefront`: `wf_camera.wgsl`, …).
+    #[command(flatten)]
+    pub exec: crate::args::ExecArgs,
     /// Print an intermediate form instead of writing the outputs.
     #[arg(long, value_enum)]
     pub emit: Option<Emit>,
@@ -84,7 +87,10 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         scene: args.scene.as_deref(),
         options: &ctx.options,
         link: &link,
-        kernel: &KernelOptions::default(),
+        kernel: &KernelOptions {
+            debug: None,
+            exec: args.exec.model(),
+        },
         targets: &targets,
     };
     let Compiled {

@@ -90,12 +90,7 @@ fn pixel_entry(
     );
     fb.call(render_invocation, vec![id], false, s);
     fb.stmt(Statement::Return { value: None }, s);
-    push_entry(
-        cx,
-        name,
-        fb,
-        [RENDER_WORKGROUP[0], RENDER_WORKGROUP[1], 1],
-    );
+    push_entry(cx, name, fb, [RENDER_WORKGROUP[0], RENDER_WORKGROUP[1], 1]);
     Ok(())
 }
 

@@ -396,10 +396,7 @@ pub fn config_module_with(c: &KernelConfig, debug: Option<super::DebugMode>) -> 
         ("WORKGROUP_WIDTH", super::RENDER_WORKGROUP[0]),
         ("WORKGROUP_HEIGHT", super::RENDER_WORKGROUP[1]),
     ];
-    for (name, v) in u
-        .into_iter()
-        .chain(super::wavefront::config_constants(c))
-    {
+    for (name, v) in u.into_iter().chain(super::wavefront::config_constants(c)) {
         let _ = writeln!(out, "const {name}: u32 = {v}u;");
     }
     let b = [

@@ -378,9 +378,7 @@ impl KernelHooks<'_> {
             I::PathLoad => self.load_binding(cx, fb, "paths", Some(arg(0)?), span)?,
             I::PathStore => {
                 let program = self.program;
-                let paths = self
-                    .generated
-                    .binding(cx, program, abi_binding("paths")?)?;
+                let paths = self.generated.binding(cx, program, abi_binding("paths")?)?;
                 let g = fb.expr(Expression::GlobalVariable(paths), span);
                 let p = fb.expr(
                     Expression::Access {

@@ -45,6 +45,8 @@ pub struct CompiledScene {
     pub stages: Option<Vec<StageKernel>>,
     /// Words of one path slot of the wavefront model (`PATH_WORDS`).
     pub path_words: u32,
+    /// The execution model the scene runs with ([`ExecModel::resolve`]).
+    pub exec: ExecModel,
     /// How long each phase of the compile took, in milliseconds, in order.
     pub timings: Vec<(&'static str, f64)>,
 }
@@ -72,6 +74,19 @@ pub enum ExecModel {
 }
 
 impl ExecModel {
+    /// The model a scene runs with: `choice` (the command line's `--exec`) if given, else the
+    /// scene's `exec` setting (`EXEC_MEGAKERNEL` 1, `EXEC_WAVEFRONT` 2), else, for `EXEC_AUTO`,
+    /// the megakernel: on lavapipe it renders every example faster per frame and its kernel
+    /// compiles in time comparable to the wavefront model's largest stage (ARCHITECTURE.md,
+    /// "Execution models", has the figures).
+    pub fn resolve(choice: Option<ExecModel>, setting: u32) -> ExecModel {
+        match (choice, setting) {
+            (Some(m), _) => m,
+            (None, 2) => ExecModel::Wavefront,
+            (None, _) => ExecModel::Megakernel,
+        }
+    }
+
     /// Its name on the command line and in scene settings.
     pub fn name(self) -> &'static str {
         match self {
@@ -113,8 +128,10 @@ pub enum DebugMode {
 pub struct KernelOptions {
     /// Build a debug kernel that writes [`DebugMode`] values instead of radiance.
     pub debug: Option<DebugMode>,
-    /// Also build the wavefront model's stage kernels ([`CompiledScene::stages`]).
-    pub exec: ExecModel,
+    /// The execution model, overriding the scene's `exec` setting (`None`: the setting's, see
+    /// [`ExecModel::resolve`]). The wavefront model's stage kernels are built
+    /// ([`CompiledScene::stages`]) when the model resolved is the wavefront.
+    pub exec: Option<ExecModel>,
 }
 
 /// Why a scene could not be compiled: the diagnostics (with the sources to render them).

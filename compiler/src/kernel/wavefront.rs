@@ -91,10 +91,11 @@ pub const CANDIDATE_WORDS: u32 = 8;
 /// Words of a recorded shadow query: origin, dir, tmax.
 pub const QUERY_WORDS: u32 = 7;
 
-/// Words of one secondary-ray frame: ray, candidate, sum (3), count, next, then `max_spawn`
-/// directions and weights (3 words each).
+/// Words of one secondary-ray frame: ray, candidate, the hit's position and geometric normal and
+/// its position error (7), sum (3), count, next, then `max_spawn` directions and weights (3 words
+/// each).
 pub fn frame_words(c: &KernelConfig) -> u32 {
-    RAY_WORDS + CANDIDATE_WORDS + 5 + 6 * c.max_spawn
+    RAY_WORDS + CANDIDATE_WORDS + 12 + 6 * c.max_spawn
 }
 
 /// The named word offsets of the path record and its size, as `(name, value)`: the constants
@@ -173,7 +174,7 @@ mod tests {
                 &LinkOptions::default(),
                 &KernelOptions {
                     debug: None,
-                    exec: ExecModel::Wavefront,
+                    exec: Some(ExecModel::Wavefront),
                 },
             )
             .unwrap_or_else(|f| {

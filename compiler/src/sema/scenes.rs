@@ -28,6 +28,7 @@ const SETTINGS: &[&str] = &[
     "max_depth",
     "max_rays_per_hit",
     "seed",
+    "exec",
 ];
 /// The largest image side, in pixels, of a scene's `width`/`height` and of the command line's `--size`.
 pub const MAX_IMAGE_SIDE: u32 = 16384;
@@ -275,6 +276,7 @@ fn check_settings(ck: &mut Checker, fields: &[ast::FieldInit]) -> (Settings, Opt
             "samples" => ("samples", 1, MAX_SAMPLES, &mut s.samples),
             "max_depth" => ("max_depth", 0, 64, &mut s.max_depth),
             "max_rays_per_hit" => ("max_rays_per_hit", 1, 64, &mut s.max_rays_per_hit),
+            "exec" => ("exec", 0, 2, &mut s.exec),
             _ => ("seed", 0, u32::MAX, &mut s.seed),
         };
         if v < lo || v > hi {

@@ -20,7 +20,6 @@
 //! grows; wgpu errors inside a batch come back as [`DispatchError::Wgpu`]; read-back never panics
 //! (`map_async` is waited for with a channel and a blocking poll).
 
-
 use std::sync::mpsc;
 use std::time::Instant;
 

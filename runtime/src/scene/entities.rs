@@ -865,6 +865,7 @@ impl Entities {
             camera_offset: self.camera.offset,
             background_type: background.type_id,
             background_offset: background.offset,
+            path_slots: 0,
         }
     }
 

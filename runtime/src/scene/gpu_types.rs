@@ -56,6 +56,9 @@ pub struct FrameUniforms {
     pub background_type: u32,
     /// Word offset of the background instance (0 without one).
     pub background_offset: u32,
+    /// Path slots of the wavefront model's `paths` per tile (the stride of its word-major
+    /// records, the same for every tile; 0 for the megakernel, which has none).
+    pub path_slots: u32,
 }
 
 /// `GpuInstance` ([`abi::INSTANCE`]): one object of the scene, 128 bytes.
@@ -204,7 +207,7 @@ macro_rules! assert_field {
 }
 
 const _: () = assert!(std::mem::size_of::<FrameUniforms>() == struct_size(&abi::FRAME));
-const _: () = assert!(abi::FRAME.fields.len() == 13);
+const _: () = assert!(abi::FRAME.fields.len() == 14);
 assert_field!(
     FrameUniforms,
     samples_per_pass,
@@ -233,6 +236,7 @@ assert_field!(
     abi::FRAME,
     "background_offset"
 );
+assert_field!(FrameUniforms, path_slots, abi::FRAME, "path_slots");
 
 const _: () = assert!(std::mem::size_of::<GpuInstance>() == struct_size(&abi::INSTANCE));
 const _: () = assert!(std::mem::size_of::<GpuInstance>() == 128);

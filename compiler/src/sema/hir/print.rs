@@ -429,8 +429,8 @@ impl Printer<'_> {
         let st = &s.settings;
         self.line(&format!(
             "settings {{ width: {}, height: {}, samples: {}, max_depth: {}, max_rays_per_hit: {}, \
-             seed: {} }}",
-            st.width, st.height, st.samples, st.max_depth, st.max_rays_per_hit, st.seed
+             seed: {}, exec: {} }}",
+            st.width, st.height, st.samples, st.max_depth, st.max_rays_per_hit, st.seed, st.exec
         ));
         if let Some(c) = &s.camera {
             let text = format!("camera {}", self.instance(c));

@@ -35,6 +35,9 @@ pub struct Settings {
     pub max_rays_per_hit: u32,
     /// Seed of the random numbers.
     pub seed: u32,
+    /// The execution model: `EXEC_AUTO` (0), `EXEC_MEGAKERNEL` (1) or `EXEC_WAVEFRONT` (2), the
+    /// prelude's constants.
+    pub exec: u32,
 }
 
 impl Default for Settings {
@@ -46,6 +49,7 @@ impl Default for Settings {
             max_depth: 4,
             max_rays_per_hit: 4,
             seed: 0,
+            exec: 0,
         }
     }
 }

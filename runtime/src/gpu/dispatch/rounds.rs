@@ -155,6 +155,49 @@ impl TileDispatcher {
             let offset = (u64::from(tile.tile_index) * stride) as u32;
             let mut finished = false;
             for _ in 0..kernels.max_rounds {
+                if std::env::var_os("RTC_TMP_STAGE_PROFILE").is_some() {
+                    for (i, (k, group)) in kernels.round.iter().zip(&groups).enumerate() {
+                        let t = Instant::now();
+                        let mut encoder =
+                            gpu.device()
+                                .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                                    label: None,
+                                });
+                        if i == 0 {
+                            encoder.clear_buffer(counters, active_offset, Some(4));
+                        }
+                        {
+                            let mut pass =
+                                encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                                    label: None,
+                                    timestamp_writes: None,
+                                });
+                            let [x, y] = workgroups(k, tile);
+                            pass.set_pipeline(k.pipeline());
+                            pass.set_bind_group(0, group, &[offset]);
+                            pass.dispatch_workgroups(x, y, 1);
+                        }
+                        gpu.queue().submit([encoder.finish()]);
+                        wait(gpu)?;
+                        eprintln!(
+                            "tile {} stage {i} {}: {:.1} ms",
+                            tile.tile_index,
+                            k.label(),
+                            elapsed_ms(t)
+                        );
+                    }
+                    let mut encoder = gpu
+                        .device()
+                        .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+                    encoder.copy_buffer_to_buffer(counters, active_offset, &staging, 0, Some(4));
+                    gpu.queue().submit([encoder.finish()]);
+                    report.rounds += 1;
+                    if read_active(gpu, &staging)? == 0 {
+                        finished = true;
+                        break;
+                    }
+                    continue;
+                }
                 let ((), error) = gpu.scoped(|| {
                     let mut encoder =
                         gpu.device()
