@@ -70,7 +70,10 @@ fn compile(name: &str, text: &str, all_programs: bool) -> CompiledScene {
         std::slice::from_ref(&path),
         None,
         &Options::default(),
-        &LinkOptions { all_programs },
+        &LinkOptions {
+            all_programs,
+            ..LinkOptions::default()
+        },
     );
     let _ = std::fs::remove_dir_all(&dir);
     match c {

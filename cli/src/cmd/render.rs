@@ -105,12 +105,22 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         None
     };
     let scene_path = synth.as_ref().map_or(&args.path, |s| &s.path);
+    // A bare glTF file's scene names it relative to its folder, searched first. The link step
+    // reads the scene's model files with the same roots, to link only what they hold.
+    let asset_roots = match &synth {
+        Some(s) => s.asset_roots(&roots),
+        None => roots,
+    };
+    let link = LinkOptions {
+        asset_roots: asset_roots.clone(),
+        ..LinkOptions::default()
+    };
 
     let compiled = match compile_scene(
         std::slice::from_ref(scene_path),
         args.render.scene.name.as_deref(),
         &ctx.options,
-        &LinkOptions::default(),
+        &link,
     ) {
         Ok(c) => c,
         Err(failure) => {
@@ -147,11 +157,6 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Err(e) => return fail(&e.to_string(), ctx),
     };
 
-    // A bare glTF file's scene names it relative to its folder, searched first.
-    let asset_roots = match &synth {
-        Some(s) => s.asset_roots(&roots),
-        None => roots,
-    };
     let options = RenderOptions {
         size: args.render.scene.image_size(),
         samples: args.render.spp.samples,
