@@ -23,7 +23,7 @@ use super::{CompiledScene, BOUNDS_ENTRY, BOUNDS_WORKGROUP, RENDER_ENTRY, RENDER_
 use crate::abi;
 use crate::back::ResourceKind;
 use crate::layout;
-use crate::link::{ModelRead, MODEL_TYPES};
+use crate::link::ModelRead;
 use serde::Serialize;
 
 #[derive(Serialize)]
@@ -386,14 +386,7 @@ pub fn manifest_json(c: &CompiledScene) -> String {
                 },
             })
             .collect(),
-        linked: MODEL_TYPES
-            .iter()
-            .filter(|t| {
-                crate::link::model_type(program, t.module, t.name)
-                    .is_some_and(|s| c.linked.type_of(s).is_some())
-            })
-            .map(|t| t.name)
-            .collect(),
+        linked: c.linked.model_types.clone(),
     });
     let m = Manifest {
         format: 2,

@@ -144,6 +144,9 @@ pub struct Linked {
     /// The scene's `model` entries and what their files hold (what decided the model types
     /// linked).
     pub models: Vec<ModelLink>,
+    /// The model types linked because of those entries, in [`MODEL_TYPES`] order (a type the
+    /// scene also names in an entry of its own is linked either way).
+    pub model_types: Vec<&'static str>,
 }
 
 impl Linked {
@@ -242,6 +245,7 @@ pub fn link_again(
     // file that could not be read), at the first such entry; the camera only for a scene without
     // a `camera` entry.
     let models = model::read_models(program, desc, &options.asset_roots, known);
+    let mut model_types = Vec::new();
     for t in MODEL_TYPES {
         if t.part == ModelPart::PerspectiveCamera && desc.camera.is_some() {
             continue;
@@ -251,6 +255,7 @@ pub fn link_again(
         };
         if let Some(s) = model_type(program, t.module, t.name) {
             note(s, first.span);
+            model_types.push(t.name);
         }
     }
     if options.all_programs {
@@ -409,6 +414,7 @@ pub fn link_again(
         config,
         left_out,
         models,
+        model_types,
     })
 }
 
