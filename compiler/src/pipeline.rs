@@ -7,9 +7,9 @@
 //! | # | phase | function | data in → data out |
 //! |---|---|---|---|
 //! | 1 | check the user's files | [`driver::check_paths`] | paths → [`Checked`] (sources, HIR, diagnostics) |
-//! | 2 | choose the scene, link it | [`link_scene`] | HIR → [`SceneId`], [`Linked`] (kernel configuration) |
+//! | 2 | choose the scene, link it | [`link_scene`] | HIR (+ the JSON of the scene's glTF `model` files) → [`SceneId`], [`Linked`] (kernel configuration) |
 //! | 3 | check again, with the kernel | [`driver::check_paths_with_std`] | paths + `std/kernel/` + `rtc:abi`, `rtc:config` → [`Checked`] |
-//! | 4 | link again | [`link_scene`] | the second HIR → [`SceneId`], [`Linked`] |
+//! | 4 | link again | [`link_scene`] | the second HIR (model files not read again) → [`SceneId`], [`Linked`] |
 //! | 5 | lower the render kernel | [`kernel::lower_kernel`] | HIR + link plan → validated, compacted `naga::Module`, bindings |
 //! | 6 | lower the bounds kernel (custom geometry only) | [`kernel::lower_kernel`] | the same → `naga::Module` |
 //! | 7 | write the targets asked for | [`write_targets`] | modules → WGSL, SPIR-V, HLSL, MSL, GLSL, `manifest.json` |

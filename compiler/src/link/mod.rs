@@ -4,17 +4,20 @@
 //! Input: a checked [`hir::Program`] and one of its scenes. Output: a [`Linked`] plan that lowering
 //! follows to build the scene's kernel:
 //! - the **used types** per role (the scene's camera and background, its objects' custom geometries and
-//!   materials, its lights), each with its id from the [`registry`] and its programs;
+//!   materials, its lights, and the standard-library types its glTF `model` files hold: [`model`]
+//!   reads each file's JSON), each with its id from the [`registry`] and its programs;
 //! - the **kernel configuration** ([`KernelConfig`]): stack depth from the scene's `max_depth`, the
 //!   per-hit ray array size from the largest spawn bound of the used `@secondary_rays` programs (clamped
 //!   by `max_rays_per_hit`), and which features the scene uses at all (secondary rays, any-hit, custom
 //!   geometry, triangle meshes, media, a background);
-//! - what was **left out** and why, for `manifest.json`.
+//! - what was **left out** and why, and what each model file held, for `manifest.json`.
 //!
 //! With [`LinkOptions::all_programs`], every role struct of the program is linked (the unspecialised
 //! kernel, for comparison) and every feature is on.
 //!
-//! Invariants: the plan is deterministic (types sorted by registry id); every used type has every
+//! Invariants: the plan is deterministic (types sorted by registry id; for the same model files);
+//! the model types linked cover what the runtime makes of the files as they were read (a file not
+//! read links them all); every used type has every
 //! program its role requires, otherwise linking reports E0901 at the scene entry that uses it.
 
 pub mod model;
