@@ -24,6 +24,7 @@
 use std::collections::BTreeSet;
 use std::path::Path;
 
+use gltf::json::extensions::scene::khr_lights_punctual::Type;
 use gltf::json::{self, validation::Checked};
 
 use crate::confine::{resolve_scene_path, AssetRoots};
@@ -240,7 +241,6 @@ pub fn parts_of_root(root: &json::Root) -> BTreeSet<ModelPart> {
         .and_then(|e| e.khr_lights_punctual.as_ref())
         .map(|l| l.lights.as_slice())
         .unwrap_or(&[]);
-    use json::extensions::scene::khr_lights_punctual::Type;
     for light in lights {
         match light.type_ {
             Checked::Valid(Type::Point) => parts.insert(ModelPart::PointLight),
