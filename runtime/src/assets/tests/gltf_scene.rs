@@ -605,8 +605,7 @@ fn a_file_that_changed_after_linking_is_an_internal_error_naming_file_and_type()
         &linked,
         &EntityOptions::default(),
     )
-    .err()
-    .expect("an internal error");
+    .expect_err("an internal error");
     assert!(
         matches!(&err, SceneError::ModelUnlinked { name, model } if name == "SpotLight" && model.ends_with("model.glb")),
         "{err}"
@@ -631,7 +630,7 @@ fn a_file_the_link_step_cannot_read_links_every_model_type_and_fails_at_its_stri
         "{:?}",
         l.models
     );
-    let err = e.err().expect("a missing file");
+    let err = e.expect_err("a missing file");
     let diag = err.to_diagnostic().expect("a located diagnostic");
     assert_eq!(diag.code.0, "E0902");
     assert!(diag.message.contains("missing.glb"), "{}", diag.message);
