@@ -433,3 +433,23 @@ fn a_model_the_compiler_cannot_read_links_every_model_type_and_says_why() {
         ])
     );
 }
+
+#[test]
+fn a_model_without_lights_links_no_light_type() {
+    let c = compile_with("gltf-dark", MODEL_SCENE, &model_files(&[], "OPAQUE"), false);
+    let names = function_names(&c);
+    for f in ["point_light", "spot_light", "directional_light"] {
+        assert!(
+            !names.iter().any(|n| n == f),
+            "{f} is a function: {names:?}"
+        );
+    }
+    assert!(!c
+        .linked
+        .types
+        .contains_key(&rtc_compiler::sema::hir::Role::Light));
+    assert_eq!(
+        manifest_value(&c)["models"]["linked"],
+        serde_json::json!(["GltfMaterial"])
+    );
+}
