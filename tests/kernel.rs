@@ -3,7 +3,8 @@
 //! `left_out`; `LinkOptions { all_programs: true }` (the CLI's `--all-programs`) keeps them.
 //!
 //! The scenes import several stdlib materials and backgrounds and declare a textured material of
-//! their own, then use only some of them.
+//! their own, then use only some of them. Scenes with a glTF `model` entry link only the model
+//! types the file holds (light types, alpha modes): the link step reads the file's metadata.
 
 use rtc_compiler::back::{self, Target};
 use rtc_compiler::driver::Options;
@@ -61,16 +62,32 @@ scene specialised {{
 }
 
 fn compile(name: &str, text: &str, all_programs: bool) -> CompiledScene {
+    compile_with(name, text, &[], all_programs)
+}
+
+/// [`compile`] with other files (name, contents) next to the scene.
+fn compile_with(
+    name: &str,
+    text: &str,
+    files: &[(&str, Vec<u8>)],
+    all_programs: bool,
+) -> CompiledScene {
     let dir = std::env::temp_dir().join(format!("rtc-kernel-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("temp dir");
     let path = dir.join("scene.rt");
     std::fs::write(&path, text).expect("scene file");
+    for (file, bytes) in files {
+        std::fs::write(dir.join(file), bytes).expect("a file next to the scene");
+    }
     let c = kernel::compile_scene(
         std::slice::from_ref(&path),
         None,
         &Options::default(),
-        &LinkOptions { all_programs },
+        &LinkOptions {
+            all_programs,
+            ..LinkOptions::default()
+        },
     );
     let _ = std::fs::remove_dir_all(&dir);
     match c {
@@ -232,4 +249,207 @@ fn all_programs_keeps_every_program_and_binding() {
             }
         }
     }
+}
+
+/// A `.gltf` file (with its `model.bin`) holding one triangle whose material has `alpha_mode`, and
+/// one light of each type in `lights` on its own node.
+fn model_files(lights: &[&str], alpha_mode: &str) -> Vec<(&'static str, Vec<u8>)> {
+    let bin: Vec<u8> = [0.0f32, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]
+        .iter()
+        .flat_map(|x| x.to_le_bytes())
+        .collect();
+    let light_list: Vec<String> = lights
+        .iter()
+        .map(|t| match *t {
+            "spot" => r#"{"type": "spot", "spot": {}}"#.to_owned(),
+            t => format!(r#"{{"type": "{t}"}}"#),
+        })
+        .collect();
+    let mut nodes = vec![r#"{"mesh": 0}"#.to_owned()];
+    nodes.extend((0..lights.len()).map(|i| {
+        format!(r#"{{"translation": [0, 2, 0], "extensions": {{"KHR_lights_punctual": {{"light": {i}}}}}}}"#)
+    }));
+    let gltf = format!(
+        r#"{{
+  "asset": {{"version": "2.0"}},
+  "extensionsUsed": ["KHR_lights_punctual"],
+  "extensions": {{"KHR_lights_punctual": {{"lights": [{lights}]}}}},
+  "buffers": [{{"uri": "model.bin", "byteLength": 36}}],
+  "bufferViews": [{{"buffer": 0, "byteLength": 36}}],
+  "accessors": [{{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                  "min": [0, 0, 0], "max": [1, 1, 0]}}],
+  "materials": [{{"alphaMode": "{alpha_mode}"}}],
+  "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}, "material": 0}}]}}],
+  "nodes": [{nodes}],
+  "scenes": [{{"nodes": [{indices}]}}],
+  "scene": 0
+}}"#,
+        lights = light_list.join(", "),
+        nodes = nodes.join(", "),
+        indices = (0..nodes.len())
+            .map(|i| i.to_string())
+            .collect::<Vec<_>>()
+            .join(", "),
+    );
+    vec![("model.gltf", gltf.into_bytes()), ("model.bin", bin)]
+}
+
+const MODEL_SCENE: &str = r#"
+import "std/cameras/pinhole.rt";
+
+scene with_model {
+    settings { width: 16, height: 16, samples: 1 }
+    camera Pinhole {}
+    model "model.gltf" {}
+}
+"#;
+
+/// The manifest as JSON.
+fn manifest_value(c: &CompiledScene) -> serde_json::Value {
+    serde_json::from_str(&manifest_json(c)).expect("manifest.json is JSON")
+}
+
+#[test]
+fn a_model_with_only_a_point_light_links_no_other_light_and_no_any_hit() {
+    let c = compile_with(
+        "gltf-point",
+        MODEL_SCENE,
+        &model_files(&["point"], "OPAQUE"),
+        false,
+    );
+    let names = function_names(&c);
+    assert!(names.iter().any(|n| n == "point_light"), "{names:?}");
+    assert!(names.iter().any(|n| n == "gltf_shade"), "{names:?}");
+    let absent = [
+        "spot_light",
+        "directional_light",
+        "gltf_masked_any_hit",
+        "gltf_masked_shade",
+        "dispatch_any_hit",
+    ];
+    for f in absent {
+        assert!(
+            !names.iter().any(|n| n == f),
+            "{f} is a function: {names:?}"
+        );
+    }
+    for (t, bytes) in outputs(&c) {
+        for f in absent {
+            assert!(!contains(&bytes, f), "{f} is in the {} output", t.name());
+        }
+    }
+    assert!(!c.linked.config.has_any_hit);
+
+    let m = manifest_value(&c);
+    assert_eq!(
+        m["models"],
+        serde_json::json!({
+            "entries": [{
+                "path": "model.gltf",
+                "read": true,
+                "holds": ["opaque or blended material", "point light"],
+            }],
+            "linked": ["GltfMaterial", "PointLight"],
+        })
+    );
+    assert_eq!(m["constants"]["has_any_hit"], false);
+    let left = m["left_out"].as_array().expect("left_out");
+    for (program, part) in [
+        ("@light spot_light", "spot light"),
+        ("@light directional_light", "directional light"),
+        ("@any_hit gltf_masked_any_hit", "alpha-masked material"),
+    ] {
+        let entry = left
+            .iter()
+            .find(|e| e["name"] == program)
+            .unwrap_or_else(|| panic!("{program} not left out: {left:?}"));
+        assert_eq!(
+            entry["reason"],
+            format!("no model file of the scene holds a {part}")
+        );
+    }
+}
+
+#[test]
+fn a_masked_material_brings_the_any_hit_path_and_each_light_type_its_program() {
+    let c = compile_with(
+        "gltf-mask",
+        MODEL_SCENE,
+        &model_files(&["spot", "directional"], "MASK"),
+        false,
+    );
+    let names = function_names(&c);
+    for f in [
+        "gltf_masked_any_hit",
+        "dispatch_any_hit",
+        "spot_light",
+        "directional_light",
+    ] {
+        assert!(names.iter().any(|n| n == f), "{f} missing: {names:?}");
+    }
+    for f in ["point_light", "gltf_shade"] {
+        assert!(
+            !names.iter().any(|n| n == f),
+            "{f} is a function: {names:?}"
+        );
+    }
+    assert!(c.linked.config.has_any_hit);
+    let m = manifest_value(&c);
+    assert_eq!(
+        m["models"]["linked"],
+        serde_json::json!(["GltfMaskedMaterial", "DirectionalLight", "SpotLight"])
+    );
+}
+
+#[test]
+fn a_model_the_compiler_cannot_read_links_every_model_type_and_says_why() {
+    let c = compile_with("gltf-missing", MODEL_SCENE, &[], false);
+    let names = function_names(&c);
+    for f in [
+        "point_light",
+        "spot_light",
+        "directional_light",
+        "gltf_masked_any_hit",
+    ] {
+        assert!(names.iter().any(|n| n == f), "{f} missing: {names:?}");
+    }
+    let m = manifest_value(&c);
+    let entry = &m["models"]["entries"][0];
+    assert_eq!(entry["read"], false);
+    let why = entry["not_read"].as_str().expect("a reason");
+    assert!(
+        why.contains("model.gltf") && why.contains("cannot be read"),
+        "{why}"
+    );
+    // The scene has a camera entry, so the model camera type is not linked even then.
+    assert_eq!(
+        m["models"]["linked"],
+        serde_json::json!([
+            "GltfMaterial",
+            "GltfMaskedMaterial",
+            "PointLight",
+            "DirectionalLight",
+            "SpotLight"
+        ])
+    );
+}
+
+#[test]
+fn a_model_without_lights_links_no_light_type() {
+    let c = compile_with("gltf-dark", MODEL_SCENE, &model_files(&[], "OPAQUE"), false);
+    let names = function_names(&c);
+    for f in ["point_light", "spot_light", "directional_light"] {
+        assert!(
+            !names.iter().any(|n| n == f),
+            "{f} is a function: {names:?}"
+        );
+    }
+    assert!(!c
+        .linked
+        .types
+        .contains_key(&rtc_compiler::sema::hir::Role::Light));
+    assert_eq!(
+        manifest_value(&c)["models"]["linked"],
+        serde_json::json!(["GltfMaterial"])
+    );
 }

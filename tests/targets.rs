@@ -180,7 +180,10 @@ fn compile(paths: &[PathBuf], all: bool) -> CompiledScene {
         paths,
         None,
         &Options::default(),
-        &LinkOptions { all_programs: all },
+        &LinkOptions {
+            all_programs: all,
+            ..LinkOptions::default()
+        },
     ) {
         Ok(c) => c,
         Err(f) => panic!(

@@ -1,6 +1,6 @@
 //! `rtc watch` as a user runs it: a subprocess watching a scene in a temporary folder, driven
-//! through edits (valid, invalid, fixed again, an import added and then removed) and stopped with
-//! SIGINT, the way Ctrl-C stops it. Each step waits for the reload's report line (generous timeouts:
+//! through edits (valid, invalid, fixed again, an import added and then removed; a glTF `model`
+//! file gaining a light type) and stopped with SIGINT, the way Ctrl-C stops it. Each step waits for the reload's report line (generous timeouts:
 //! the machines that run this are slow and shared) and then checks the files and the messages.
 
 use std::io::{BufRead, BufReader, Read};
@@ -333,5 +333,79 @@ fn bad_arguments_are_usage_errors() {
         .expect("run");
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains(".png"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A `.gltf` (with its buffer as a `data:` URI) of one triangle and one light of each `lights` type.
+fn model_gltf(lights: &[&str]) -> String {
+    // The triangle (0,0,0), (1,0,0), (0,1,0) as 36 bytes of little-endian f32, in base64.
+    const POSITIONS: &str = "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA";
+    let list: Vec<String> = lights
+        .iter()
+        .map(|t| match *t {
+            "spot" => r#"{"type": "spot", "spot": {}}"#.to_owned(),
+            t => format!(r#"{{"type": "{t}"}}"#),
+        })
+        .collect();
+    let mut nodes = vec![r#"{"mesh": 0}"#.to_owned()];
+    nodes.extend((0..lights.len()).map(|i| {
+        format!(r#"{{"translation": [0, 2, 1], "extensions": {{"KHR_lights_punctual": {{"light": {i}}}}}}}"#)
+    }));
+    format!(
+        r#"{{"asset": {{"version": "2.0"}},
+  "extensionsUsed": ["KHR_lights_punctual"],
+  "extensions": {{"KHR_lights_punctual": {{"lights": [{lights}]}}}},
+  "buffers": [{{"uri": "data:application/octet-stream;base64,{POSITIONS}", "byteLength": 36}}],
+  "bufferViews": [{{"buffer": 0, "byteLength": 36}}],
+  "accessors": [{{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                  "min": [0, 0, 0], "max": [1, 1, 0]}}],
+  "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}}}]}}],
+  "nodes": [{nodes}],
+  "scenes": [{{"nodes": [{indices}]}}],
+  "scene": 0}}"#,
+        lights = list.join(", "),
+        nodes = nodes.join(", "),
+        indices = (0..nodes.len())
+            .map(|i| i.to_string())
+            .collect::<Vec<_>>()
+            .join(", "),
+    )
+}
+
+/// The link step reads which light types a model file holds, so an edit to the file compiles again
+/// (it is not an "assets only" reload) and the new light type's program is emitted.
+#[test]
+fn a_model_file_gaining_a_light_type_compiles_again() {
+    let dir = temp_dir("model");
+    let file = dir.join("scene.rt");
+    let out = dir.join("out");
+    let model = dir.join("m.gltf");
+    std::fs::write(&model, model_gltf(&["point"])).expect("write");
+    std::fs::write(
+        &file,
+        "import \"std/cameras/pinhole.rt\";\n\
+         scene s {\n    camera Pinhole { position: vec3f(0.3, 0.3, 3.0), look_at: vec3f(0.3, 0.3, 0.0) }\n    model \"m.gltf\" {}\n}\n",
+    )
+    .expect("write");
+    let mut w = Watch::start(&file, &out, &dir.join("p.png"));
+    let text = w.wait_for(0, "Ctrl-C to stop");
+    assert!(text.contains("[watch] #1 ok"), "{text}");
+    let wgsl = out.join("kernel.wgsl");
+    let first = std::fs::read_to_string(&wgsl).expect("kernel.wgsl");
+    assert!(
+        first.contains("point_light") && !first.contains("spot_light"),
+        "only the point light is linked"
+    );
+
+    let from = w.count();
+    edit(&model, &model_gltf(&["point", "spot"]));
+    let text = w.wait_for(from, "[watch] #2 ok");
+    assert!(!text.contains("only assets changed"), "{text}");
+    assert!(!text.contains("internal error"), "{text}");
+    let second = std::fs::read_to_string(&wgsl).expect("kernel.wgsl");
+    assert!(
+        second.contains("spot_light"),
+        "the spot light is linked now"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }

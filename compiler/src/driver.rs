@@ -348,7 +348,7 @@ impl Loader<'_> {
             return;
         }
         let first = self.modules.len();
-        let mut files: Vec<&str> = crate::link::MODEL_TYPES.iter().map(|t| t.0).collect();
+        let mut files: Vec<&str> = crate::link::MODEL_TYPES.iter().map(|t| t.module).collect();
         files.dedup();
         for module in files {
             let rest = module.strip_prefix("std/").unwrap_or(module);

@@ -29,6 +29,7 @@
 pub mod abi;
 pub mod back;
 pub mod cache;
+pub mod confine;
 pub mod diag;
 pub mod driver;
 pub mod kernel;

@@ -7,9 +7,9 @@
 //! | # | phase | function | data in → data out |
 //! |---|---|---|---|
 //! | 1 | check the user's files | [`driver::check_paths`] | paths → [`Checked`] (sources, HIR, diagnostics) |
-//! | 2 | choose the scene, link it | [`link_scene`] | HIR → [`SceneId`], [`Linked`] (kernel configuration) |
+//! | 2 | choose the scene, link it | [`link_scene`] | HIR (+ the JSON of the scene's glTF `model` files) → [`SceneId`], [`Linked`] (kernel configuration) |
 //! | 3 | check again, with the kernel | [`driver::check_paths_with_std`] | paths + `std/kernel/` + `rtc:abi`, `rtc:config` → [`Checked`] |
-//! | 4 | link again | [`link_scene`] | the second HIR → [`SceneId`], [`Linked`] |
+//! | 4 | link again | [`link_scene`] | the second HIR (model files not read again) → [`SceneId`], [`Linked`] |
 //! | 5 | lower the render kernel | [`kernel::lower_kernel`] | HIR + link plan → validated, compacted `naga::Module`, bindings |
 //! | 6 | lower the bounds kernel (custom geometry only) | [`kernel::lower_kernel`] | the same → `naga::Module` |
 //! | 7 | write the targets asked for | [`write_targets`] | modules → WGSL, SPIR-V, HLSL, MSL, GLSL, `manifest.json` |
@@ -87,7 +87,7 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
     // 2. Choose the scene and link it: the kernel configuration the kernel is checked with.
     let t = Instant::now();
     let mut registry = Registry::default();
-    let (first, _, linked) = link_scene(first, request, &mut registry, true)?;
+    let (first, _, linked) = link_scene(first, request, &mut registry, None)?;
     timings.push("link", t);
 
     // 3. Check again, with the kernel and the modules generated from the link plan (why twice: see
@@ -98,7 +98,7 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
         driver::check_paths_with_std(paths, KERNEL_ROOTS, &kernel_options)
     });
     // 4. Link again: the same plan in the second program's handles.
-    let (checked, scene, linked) = link_scene(second, request, &mut registry, false)?;
+    let (checked, scene, linked) = link_scene(second, request, &mut registry, Some(&linked))?;
 
     // 5. Lower the render kernel (validated, compacted).
     let render = timings.time("lower the render kernel", || {
@@ -203,13 +203,15 @@ impl Request<'_> {
 }
 
 /// Phases 2 and 4: chooses the scene of a checked program and links it. `registry` is loaded from
-/// the scene's registry file when `load` (phase 2) and reused as it is otherwise (phase 4), so both
-/// links give the same ids. A failure keeps `checked` for rendering the diagnostics.
+/// the scene's registry file in phase 2 (`earlier` is `None`) and reused as it is in phase 4, so
+/// both links give the same ids; phase 4 also reuses what phase 2 read from the scene's glTF
+/// `model` files (`earlier`'s [`Linked::models`]). A failure keeps `checked` for rendering the
+/// diagnostics.
 pub fn link_scene(
     checked: Checked,
     request: &Request<'_>,
     registry: &mut Registry,
-    load: bool,
+    earlier: Option<&Linked>,
 ) -> Result<(Checked, SceneId, Linked), Box<CompileFailure>> {
     let Some(program) = checked.program.as_ref() else {
         let d = checked.diagnostics.clone();
@@ -223,12 +225,13 @@ pub fn link_scene(
             return Err(failure(checked, vec![d]));
         }
     };
-    if load {
+    if earlier.is_none() {
         let path = kernel::registry_path(program, scene);
         let key = kernel::registry_key(program, scene);
         *registry = crate::link::registry::load_scene(&path, &key).0;
     }
-    match crate::link::link(program, scene, registry, request.link) {
+    let known = earlier.map_or(&[][..], |l| l.models.as_slice());
+    match crate::link::link_again(program, scene, registry, request.link, known) {
         Ok(linked) => Ok((checked, scene, linked)),
         Err(d) => Err(failure(checked, d)),
     }

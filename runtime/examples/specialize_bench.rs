@@ -41,7 +41,10 @@ fn measure(gpu: &Gpu, path: &PathBuf, all_programs: bool) -> Result<Row, String>
         std::slice::from_ref(path),
         None,
         &Options::default(),
-        &LinkOptions { all_programs },
+        &LinkOptions {
+            all_programs,
+            ..LinkOptions::default()
+        },
     )
     .map_err(|f| rtc_compiler::diag::render_human(&f.checked.sources, &f.diagnostics, false))?;
     let (wgsl_lines, spirv_words) = sizes(&c)?;

@@ -129,7 +129,10 @@ fn load_scene_assets(
         &[path.to_path_buf()],
         Some(name),
         &ctx.options,
-        &LinkOptions::default(),
+        &LinkOptions {
+            asset_roots: asset_roots.clone(),
+            ..LinkOptions::default()
+        },
     ) {
         Ok(c) => c,
         Err(f) => {

@@ -74,6 +74,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     }
     let link = LinkOptions {
         all_programs: args.all_programs,
+        ..LinkOptions::default()
     };
     let targets = if args.emit.is_some() {
         Vec::new()

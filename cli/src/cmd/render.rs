@@ -108,13 +108,23 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         None
     };
     let scene_path = synth.as_ref().map_or(&args.path, |s| &s.path);
+    // A bare glTF file's scene names it relative to its folder, searched first. The link step
+    // reads the scene's model files with the same roots, to link only what they hold.
+    let asset_roots = match &synth {
+        Some(s) => s.asset_roots(&roots),
+        None => roots,
+    };
+    let link = LinkOptions {
+        asset_roots: asset_roots.clone(),
+        ..LinkOptions::default()
+    };
 
     let exec = args.exec.model();
     let compiled = match compile_scene_with(
         std::slice::from_ref(scene_path),
         args.render.scene.name.as_deref(),
         &ctx.options,
-        &LinkOptions::default(),
+        &link,
         &KernelOptions { debug: None, exec },
     ) {
         Ok(c) => c,
@@ -152,11 +162,6 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Err(e) => return fail(&e.to_string(), ctx),
     };
 
-    // A bare glTF file's scene names it relative to its folder, searched first.
-    let asset_roots = match &synth {
-        Some(s) => s.asset_roots(&roots),
-        None => roots,
-    };
     let options = RenderOptions {
         size: args.render.scene.image_size(),
         samples: args.render.spp.samples,

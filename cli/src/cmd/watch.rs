@@ -12,7 +12,8 @@
 //! 1. hash every watched file; when no content changed (a `touch`, an editor writing the same text),
 //!    nothing else happens;
 //! 2. when only assets changed, the compile is skipped and only the preview is rendered again (the
-//!    kernel code does not depend on the contents of meshes and images);
+//!    kernel code does not depend on the contents of meshes and images; a glTF `model` file counts
+//!    as a source, since the link step reads which light types and alpha modes it holds);
 //! 3. otherwise the scene is compiled, with parsed modules cached by content hash
 //!    ([`rtc_compiler::cache`]): only the files whose text changed are parsed again;
 //! 4. the targets and `manifest.json` are written (the same code as `rtc compile`);
@@ -293,7 +294,14 @@ impl Session {
             &self.roots,
             self.scene.as_deref(),
             &self.options,
-            &LinkOptions::default(),
+            &LinkOptions {
+                asset_roots: self
+                    .preview
+                    .as_ref()
+                    .map(|p| p.asset_roots.clone())
+                    .unwrap_or_default(),
+                ..LinkOptions::default()
+            },
         );
         let stats = self.cache.take_stats();
         reload.parsed = (stats.misses, stats.hits);
@@ -365,10 +373,14 @@ impl Session {
             reload.edit_to_code_ms = edit_time.map(since_edit);
         }
         let (sources, assets) = match compiled.checked.program.as_ref() {
-            Some(p) => (
-                source_files(&compiled.checked.sources).0,
-                Some(asset_paths(&p.scenes[compiled.scene])),
-            ),
+            Some(p) => {
+                // A glTF `model` file decides what the kernel links (the link step reads it), so
+                // an edit to it compiles again, like an edit to a source.
+                let desc = &p.scenes[compiled.scene];
+                let mut sources = source_files(&compiled.checked.sources).0;
+                sources.extend(desc.models.iter().map(|m| canonical(&m.path)));
+                (sources, Some(asset_paths(desc)))
+            }
             None => (BTreeSet::new(), None),
         };
         self.update_watched(reload, sources, assets);

@@ -3,8 +3,10 @@
 //! For the render kernel (and the bounds kernel, when there is one): every binding it declares (group,
 //! binding, name, kind, and the element layout with member offsets and sizes as naga's layouter computes
 //! them for the emitted code), every linked type and program with its kind, name and dispatch id, the
-//! layouts of the role structs in `params`, the kernel's constants, the workgroup sizes, and a
-//! `left_out` list: programs, features and bindings the scene does not need, each with the reason;
+//! layouts of the role structs in `params`, the kernel's constants, the workgroup sizes, for a
+//! scene with glTF `model` entries a `models` object (each entry's path as written, whether the
+//! link step read its file and what it holds: light types, alpha modes, a perspective camera; and
+//! the model types linked because of them), and a `left_out` list: programs, features and bindings the scene does not need, each with the reason;
 //! last, `abi`: the whole ABI table ([`crate::abi`]): every struct (size, alignment, field offsets in
 //! bytes), every record the host packs into an array binding (binding, addressing, stride, field
 //! offsets in elements), the bit fields of BVH child references and quantised boxes, and every
@@ -12,7 +14,8 @@
 //! `params_layouts`, a host in another language fills every buffer without rtc's runtime (the test
 //! `runtime/tests/manifest_decode.rs` decodes a scene's buffers from it alone).
 //!
-//! Format 2 added `abi`.
+//! Format 2 added `abi`; `models` was added later without a new format number, as a member that
+//! only scenes with `model` entries have and that readers of format 2 may ignore.
 //!
 //! Invariant: the manifest is deterministic (sorted, no hash-map order), so it can be a golden file.
 
@@ -20,6 +23,7 @@ use super::{CompiledScene, BOUNDS_ENTRY, BOUNDS_WORKGROUP, RENDER_ENTRY, RENDER_
 use crate::abi;
 use crate::back::ResourceKind;
 use crate::layout;
+use crate::link::ModelRead;
 use serde::Serialize;
 
 #[derive(Serialize)]
@@ -64,6 +68,28 @@ struct LeftOut {
     kind: &'static str,
     name: String,
     reason: String,
+}
+
+/// A glTF `model` entry of the scene and what the link step found in its file.
+#[derive(Serialize)]
+struct ModelEntry {
+    /// The path as the scene wrote it.
+    path: String,
+    /// Whether the file's metadata was read at compile time.
+    read: bool,
+    /// Why not (then every model type was linked for it).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    not_read: Option<String>,
+    /// What the file holds ([`crate::link::ModelPart::name`]), when read.
+    holds: Vec<&'static str>,
+}
+
+/// The scene's models and the model types linked for them.
+#[derive(Serialize)]
+struct Models {
+    entries: Vec<ModelEntry>,
+    /// The standard-library types linked because of the models (their programs are in `programs`).
+    linked: Vec<&'static str>,
 }
 
 #[derive(Serialize)]
@@ -189,6 +215,9 @@ struct Manifest {
     programs: Vec<Program>,
     params_layouts: Vec<ParamLayout>,
     constants: std::collections::BTreeMap<&'static str, serde_json::Value>,
+    /// Only for a scene with `model` entries.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    models: Option<Models>,
     left_out: Vec<LeftOut>,
     abi: Abi,
 }
@@ -337,6 +366,28 @@ pub fn manifest_json(c: &CompiledScene) -> String {
             });
         }
     }
+    let models = (!c.linked.models.is_empty()).then(|| Models {
+        entries: c
+            .linked
+            .models
+            .iter()
+            .map(|m| match &m.read {
+                ModelRead::Read(parts) => ModelEntry {
+                    path: m.path.clone(),
+                    read: true,
+                    not_read: None,
+                    holds: parts.iter().map(|p| p.name()).collect(),
+                },
+                ModelRead::NotRead(why) => ModelEntry {
+                    path: m.path.clone(),
+                    read: false,
+                    not_read: Some(why.clone()),
+                    holds: Vec::new(),
+                },
+            })
+            .collect(),
+        linked: c.linked.model_types.clone(),
+    });
     let m = Manifest {
         format: 2,
         scene: program.scenes[c.scene].name.clone(),
@@ -344,6 +395,7 @@ pub fn manifest_json(c: &CompiledScene) -> String {
         programs,
         params_layouts,
         constants,
+        models,
         left_out,
         abi: abi_table(),
     };

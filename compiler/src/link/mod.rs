@@ -4,21 +4,28 @@
 //! Input: a checked [`hir::Program`] and one of its scenes. Output: a [`Linked`] plan that lowering
 //! follows to build the scene's kernel:
 //! - the **used types** per role (the scene's camera and background, its objects' custom geometries and
-//!   materials, its lights), each with its id from the [`registry`] and its programs;
+//!   materials, its lights, and the standard-library types its glTF `model` files hold: [`model`]
+//!   reads each file's JSON), each with its id from the [`registry`] and its programs;
 //! - the **kernel configuration** ([`KernelConfig`]): stack depth from the scene's `max_depth`, the
 //!   per-hit ray array size from the largest spawn bound of the used `@secondary_rays` programs (clamped
 //!   by `max_rays_per_hit`), and which features the scene uses at all (secondary rays, any-hit, custom
 //!   geometry, triangle meshes, media, a background);
-//! - what was **left out** and why, for `manifest.json`.
+//! - what was **left out** and why, and what each model file held, for `manifest.json`.
 //!
 //! With [`LinkOptions::all_programs`], every role struct of the program is linked (the unspecialised
 //! kernel, for comparison) and every feature is on.
 //!
-//! Invariants: the plan is deterministic (types sorted by registry id); every used type has every
+//! Invariants: the plan is deterministic (types sorted by registry id; for the same model files);
+//! the model types linked cover what the runtime makes of the files as they were read (a file not
+//! read links them all); every used type has every
 //! program its role requires, otherwise linking reports E0901 at the scene entry that uses it.
 
+pub mod model;
 pub mod registry;
 
+pub use model::{ModelLink, ModelPart, ModelRead, ModelType, MODEL_TYPES};
+
+use crate::confine::AssetRoots;
 use crate::diag::{codes, Diagnostic};
 use crate::sema::hir::{self, ConstValue, ProgramKind, Role, SceneId, StructId};
 use crate::source::Span;
@@ -30,6 +37,10 @@ use std::collections::BTreeMap;
 pub struct LinkOptions {
     /// Link every role struct and program of the program, not only what the scene uses.
     pub all_programs: bool,
+    /// The folders besides the scene's own that a `model` file may be read from (the runtime's
+    /// `--asset-root`s): the link step reads each model file's glTF metadata with the runtime's
+    /// rules ([`model`]), so a render must pass the roots it renders with.
+    pub asset_roots: AssetRoots,
 }
 
 /// A type the kernel dispatches on.
@@ -133,6 +144,12 @@ pub struct Linked {
     pub config: KernelConfig,
     /// What was left out.
     pub left_out: Vec<LeftOut>,
+    /// The scene's `model` entries and what their files hold (what decided the model types
+    /// linked).
+    pub models: Vec<ModelLink>,
+    /// The model types linked because of those entries, in [`MODEL_TYPES`] order (a type the
+    /// scene also names in an entry of its own is linked either way).
+    pub model_types: Vec<&'static str>,
 }
 
 impl Linked {
@@ -163,21 +180,6 @@ pub fn type_key(program: &hir::Program, s: StructId) -> String {
     format!("{role}:{module}::{}", st.name)
 }
 
-/// The standard-library role structs a scene's `model` entries become, as (module, struct): the
-/// glTF materials (opaque, and alpha-masked with an `@any_hit` program, so a scene with a model has
-/// any-hit filtering on; opaque instances skip it by their flag), the `KHR_lights_punctual` lights,
-/// and the camera (used only when the scene has no
-/// `camera` entry). The driver loads these modules for any scene with a `model` entry, and [`link`]
-/// links these types for it: what a glTF file holds is only known when the runtime reads it.
-pub const MODEL_TYPES: &[(&str, &str)] = &[
-    ("std/materials/gltf.rt", "GltfMaterial"),
-    ("std/materials/gltf.rt", "GltfMaskedMaterial"),
-    ("std/lights/point.rt", "PointLight"),
-    ("std/lights/directional.rt", "DirectionalLight"),
-    ("std/lights/spot.rt", "SpotLight"),
-    ("std/cameras/pinhole.rt", "Pinhole"),
-];
-
 /// The struct of one of [`MODEL_TYPES`] in `program`, if its module was loaded.
 pub fn model_type(program: &hir::Program, module: &str, name: &str) -> Option<StructId> {
     program.structs.iter().find_map(|(s, st)| {
@@ -202,6 +204,18 @@ pub fn link(
     scene: SceneId,
     registry: &mut Registry,
     options: &LinkOptions,
+) -> Result<Linked, Vec<Diagnostic>> {
+    link_again(program, scene, registry, options, &[])
+}
+
+/// [`link`], reusing what an earlier link of the same scene read from its model files (`known`,
+/// that link's [`Linked::models`]), so a file is read once per compile.
+pub fn link_again(
+    program: &hir::Program,
+    scene: SceneId,
+    registry: &mut Registry,
+    options: &LinkOptions,
+    known: &[ModelLink],
 ) -> Result<Linked, Vec<Diagnostic>> {
     let desc = &program.scenes[scene];
     // Used structs, each with the span of the first scene entry that uses it.
@@ -230,15 +244,21 @@ pub fn link(
     for light in &desc.lights {
         note(light.struct_id, light.span);
     }
-    if let Some(model) = desc.models.first() {
-        for &(module, name) in MODEL_TYPES {
-            let is_camera = module.starts_with("std/cameras/");
-            if is_camera && desc.camera.is_some() {
-                continue;
-            }
-            if let Some(s) = model_type(program, module, name) {
-                note(s, model.span);
-            }
+    // A model type is linked when some model file of the scene brings its part (every one, for a
+    // file that could not be read), at the first such entry; the camera only for a scene without
+    // a `camera` entry.
+    let models = model::read_models(program, desc, &options.asset_roots, known);
+    let mut model_types = Vec::new();
+    for t in MODEL_TYPES {
+        if t.part == ModelPart::PerspectiveCamera && desc.camera.is_some() {
+            continue;
+        }
+        let Some(first) = models.iter().find(|m| m.read.brings(t.part)) else {
+            continue;
+        };
+        if let Some(s) = model_type(program, t.module, t.name) {
+            note(s, first.span);
+            model_types.push(t.name);
         }
     }
     if options.all_programs {
@@ -339,11 +359,13 @@ pub fn link(
     let mut left_out = Vec::new();
     for (s, st) in program.structs.iter() {
         if st.role.is_some() && !used.contains_key(&s) {
+            let reason = model_absence(program, s, desc, &models)
+                .unwrap_or_else(|| format!("the scene uses no `{}`", st.name));
             for (kind, f) in &st.programs {
                 left_out.push(LeftOut {
                     kind: "program",
                     name: format!("@{} {}", kind.name(), program.functions[*f].name),
-                    reason: format!("the scene uses no `{}`", st.name),
+                    reason: reason.clone(),
                 });
             }
         }
@@ -394,7 +416,32 @@ pub fn link(
         types,
         config,
         left_out,
+        models,
+        model_types,
     })
+}
+
+/// Why a model type was not linked for a scene with `model` entries (`None` for other structs
+/// and scenes).
+fn model_absence(
+    program: &hir::Program,
+    s: StructId,
+    desc: &hir::SceneDesc,
+    models: &[ModelLink],
+) -> Option<String> {
+    if models.is_empty() {
+        return None;
+    }
+    let t = MODEL_TYPES
+        .iter()
+        .find(|t| model_type(program, t.module, t.name) == Some(s))?;
+    Some(
+        if t.part == ModelPart::PerspectiveCamera && desc.camera.is_some() {
+            "the scene has a `camera` entry, so no model camera is used".to_owned()
+        } else {
+            format!("no model file of the scene holds a {}", t.part.name())
+        },
+    )
 }
 
 /// Every instance of the scene that lowering and the runtime pack into `params`, in a fixed order.

@@ -9,6 +9,7 @@ use std::fmt;
 use std::path::PathBuf;
 
 use gltf::json::validation::Error as ValidationError;
+pub use rtc_compiler::confine::PathProblem;
 
 /// Why an asset could not be loaded.
 #[derive(Debug, thiserror::Error)]
@@ -396,55 +397,6 @@ pub enum UriProblem {
     /// A `.gltf` buffer without a URI (only `.glb` files have an embedded binary chunk).
     #[error("no URI and no .glb binary chunk to take the data from")]
     NoData,
-}
-
-/// Why a path named by a scene or a glTF file may not be read (see `confine.rs`).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum PathProblem {
-    /// An empty path.
-    Empty,
-    /// An absolute path (`/etc/passwd`).
-    Absolute,
-    /// A Windows drive letter (`C:`).
-    DriveLetter,
-    /// A backslash (`..\x`): folders are separated by `/`.
-    Backslash,
-    /// A URI with a scheme other than `data:` (`file:///…`, `http://…`).
-    Uri,
-    /// The file found lies outside every allowed folder (after `..` and symlinks are followed).
-    Outside {
-        /// The file, canonicalised.
-        resolved: PathBuf,
-        /// The folders it may be in: the referring file's, then the asset roots.
-        allowed: Vec<PathBuf>,
-    },
-}
-
-impl fmt::Display for PathProblem {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Self::Empty => f.write_str("is empty"),
-            Self::Absolute => f.write_str("is an absolute path"),
-            Self::DriveLetter => f.write_str("starts with a drive letter"),
-            Self::Backslash => f.write_str("contains a backslash (separate folders with `/`)"),
-            Self::Uri => f.write_str("is a URI (only relative paths and data: URIs are read)"),
-            Self::Outside { resolved, .. } => write!(
-                f,
-                "leads to `{}` (following `..` and symbolic links), outside the allowed folders",
-                resolved.display()
-            ),
-        }
-    }
-}
-
-impl PathProblem {
-    /// The folders a path must stay in, for a help line (empty for problems of the path's form).
-    pub fn allowed(&self) -> &[PathBuf] {
-        match self {
-            Self::Outside { allowed, .. } => allowed,
-            _ => &[],
-        }
-    }
 }
 
 /// How [`AssetError::Escape`] reads.

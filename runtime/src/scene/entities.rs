@@ -349,7 +349,7 @@ impl Entities {
                 Geometry::Custom(_) => None,
             });
         }
-        let models = models::import(program, scene, &mut cache)?;
+        let models = models::import(program, linked, scene, &mut cache)?;
         warnings.extend(models.warnings.iter().cloned());
         let model_materials = models.objects.iter().map(|o| &o.material);
         for inst in all_instances(scene)

@@ -151,6 +151,19 @@ pub enum SceneError {
         /// The struct's name.
         name: String,
     },
+    /// A glTF `model` file needs a type the link step did not link: the file changed between
+    /// the compile, which read its metadata, and the render (or the link step has a bug).
+    #[error(
+        "internal error: `{model}` needs `{name}`, which the scene's kernel was not linked with \
+         (the link step links what the file held when the scene was compiled; did the file \
+         change since? compile the scene again)"
+    )]
+    ModelUnlinked {
+        /// The model file.
+        model: String,
+        /// The struct it needs.
+        name: String,
+    },
     /// A struct the scene uses has no type in the program's type table (a compiler bug).
     #[error("internal error: `{name}` has no type in the program's type table")]
     NoStructType {

@@ -1,5 +1,6 @@
 //! A scene's `model "file.glb" { transform: … }` entries → objects, lights and a camera made of the
-//! standard-library role structs the compiler linked for them (`rtc_compiler::link::MODEL_TYPES`).
+//! standard-library role structs the compiler linked for them (`rtc_compiler::link::MODEL_TYPES`;
+//! the link step read the file's metadata and linked only the types it holds).
 //!
 //! What each part of a glTF file becomes:
 //! - every triangle primitive → one mesh in the [`AssetCache`] (key [`MeshKey::Model`]), so it gets
@@ -19,7 +20,10 @@
 //! - the first perspective camera of the first model that has one → a `Pinhole`, when the scene
 //!   has no `camera` entry (`fov` = `yfov` in degrees, looking along the camera's -z).
 //!
-//! Invariants: the file and everything it refers to stay inside the scene's folder or an asset
+//! Invariants: an instance is only made of a type the link plan holds; a file that needs another
+//! (it changed after the scene was compiled) is [`SceneError::ModelUnlinked`], an internal error
+//! naming the file and the type, before anything refers to the type's id. The file and everything
+//! it refers to stay inside the scene's folder or an asset
 //! root (`assets::confine`); the entry's span is the span of every instance made here (errors point at the
 //! `model` string); a glTF file named by several entries is read once; what the import skips or
 //! approximates is a warning (the file's own, prefixed with its name), never silent.
@@ -28,7 +32,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use glam::{Mat4, Vec3};
-use rtc_compiler::link::{model_type, MODEL_TYPES};
+use rtc_compiler::link::{model_type, Linked, MODEL_TYPES};
 use rtc_compiler::sema::hir::{
     ConstValue, Instance, Model, Program, Scalar, SceneDesc, StructId, TextureAsset,
 };
@@ -67,9 +71,18 @@ pub(super) struct ModelParts {
     pub warnings: Vec<String>,
 }
 
-/// Reads every model of `scene` into `cache` and makes its instances.
+/// The program and link plan instances are made for.
+#[derive(Clone, Copy)]
+struct Types<'a> {
+    program: &'a Program,
+    linked: &'a Linked,
+}
+
+/// Reads every model of `scene` (a scene of `program`, linked as `linked`) into `cache` and makes
+/// its instances.
 pub(super) fn import(
     program: &Program,
+    linked: &Linked,
     scene: &SceneDesc,
     cache: &mut AssetCache,
 ) -> Result<ModelParts, SceneError> {
@@ -97,7 +110,7 @@ pub(super) fn import(
         }
         if let Some((data, name)) = loaded.get(&model.path) {
             import_one(
-                program,
+                Types { program, linked },
                 model,
                 name,
                 data,
@@ -110,15 +123,20 @@ pub(super) fn import(
     Ok(parts)
 }
 
-/// The struct of a model type, by name (the compiler links them for any scene with a model).
-fn struct_of(program: &Program, name: &str) -> Result<StructId, SceneError> {
-    MODEL_TYPES
+/// The struct of a model type, by name, which model `file` needs: it must be in the link plan
+/// (the link step linked it when it read the file), else [`SceneError::ModelUnlinked`].
+fn struct_of(types: Types<'_>, file: &str, name: &str) -> Result<StructId, SceneError> {
+    let unlinked = || SceneError::ModelUnlinked {
+        model: file.to_owned(),
+        name: name.to_owned(),
+    };
+    let t = MODEL_TYPES
         .iter()
-        .find(|(_, n)| *n == name)
-        .and_then(|(module, n)| model_type(program, module, n))
-        .ok_or_else(|| SceneError::Unlinked {
-            name: name.to_owned(),
-        })
+        .find(|t| t.name == name)
+        .ok_or_else(unlinked)?;
+    model_type(types.program, t.module, t.name)
+        .filter(|&s| types.linked.type_of(s).is_some())
+        .ok_or_else(unlinked)
 }
 
 fn f32_value(x: f32) -> ConstValue {
@@ -136,15 +154,17 @@ fn vec_value<const N: usize>(v: [f32; N]) -> ConstValue {
     }
 }
 
-/// An instance of struct `name` with the given fields, the others at their declared defaults.
+/// An instance of struct `name`, which model `file` needs, with the given fields, the others at
+/// their declared defaults.
 fn instance(
-    program: &Program,
+    types: Types<'_>,
+    file: &str,
     name: &str,
     span: Span,
     fields: &[(&str, ConstValue)],
 ) -> Result<Instance, SceneError> {
-    let struct_id = struct_of(program, name)?;
-    let decl = &program.structs[struct_id];
+    let struct_id = struct_of(types, file, name)?;
+    let decl = &types.program.structs[struct_id];
     let values = decl
         .fields
         .iter()
@@ -175,7 +195,7 @@ fn image_path(file: &Path, image: usize) -> PathBuf {
 }
 
 fn import_one(
-    program: &Program,
+    types: Types<'_>,
     model: &Model,
     name: &str,
     data: &ModelScene,
@@ -235,7 +255,7 @@ fn import_one(
             }
             AlphaMode::Opaque => "GltfMaterial",
         };
-        materials.push(instance(program, kind, span, &fields)?);
+        materials.push(instance(types, name, kind, span, &fields)?);
     }
     if blended > 0 {
         parts.warnings.push(format!(
@@ -274,12 +294,12 @@ fn import_one(
                     ("range", range),
                 ];
                 fields.extend(common.iter().cloned());
-                instance(program, "PointLight", span, &fields)?
+                instance(types, name, "PointLight", span, &fields)?
             }
             LightKind::Directional => {
                 let mut fields = vec![("direction", vec_value(direction.to_array()))];
                 fields.extend(common.iter().cloned());
-                instance(program, "DirectionalLight", span, &fields)?
+                instance(types, name, "DirectionalLight", span, &fields)?
             }
             LightKind::Spot {
                 inner_cone_angle,
@@ -293,7 +313,7 @@ fn import_one(
                     ("outer_angle", f32_value(outer_cone_angle.to_degrees())),
                 ];
                 fields.extend(common.iter().cloned());
-                instance(program, "SpotLight", span, &fields)?
+                instance(types, name, "SpotLight", span, &fields)?
             }
         };
         parts.lights.push(made);
@@ -311,7 +331,8 @@ fn import_one(
                 .normalize_or(Vec3::NEG_Z);
             let up = entry.transform_vector3(camera.up()).normalize_or(Vec3::Y);
             parts.camera = Some(instance(
-                program,
+                types,
+                name,
                 "Pinhole",
                 span,
                 &[

@@ -296,3 +296,95 @@ mod tests {
         assert_eq!(defaults.len(), 3, "{defaults:?}");
     }
 }
+
+#[cfg(test)]
+mod link_tests {
+    //! A bare glTF file's written scene is specialised like any other: compiled with the roots
+    //! `rtc render` passes ([`SynthScene::asset_roots`]), the link step reads the file and links
+    //! only what it holds plus the defaults the scene adds.
+    use super::*;
+    use rtc_compiler::driver::Options;
+    use rtc_compiler::kernel::compile_scene;
+    use rtc_compiler::link::{LinkOptions, ModelRead};
+
+    /// A folder with `m.gltf` (one opaque triangle, no light, no camera) and its `m.bin`.
+    fn model_dir() -> PathBuf {
+        let dir = unique_dir();
+        std::fs::create_dir_all(&dir).expect("a temporary folder");
+        let bin: Vec<u8> = [0.0f32, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]
+            .iter()
+            .flat_map(|x| x.to_le_bytes())
+            .collect();
+        std::fs::write(dir.join("m.bin"), bin).expect("m.bin");
+        let gltf = r#"{
+            "asset": {"version": "2.0"},
+            "buffers": [{"uri": "m.bin", "byteLength": 36}],
+            "bufferViews": [{"buffer": 0, "byteLength": 36}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                           "min": [0, 0, 0], "max": [1, 1, 0]}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+            "nodes": [{"mesh": 0}],
+            "scenes": [{"nodes": [0]}],
+            "scene": 0
+        }"#;
+        std::fs::write(dir.join("m.gltf"), gltf).expect("m.gltf");
+        dir
+    }
+
+    /// The names of the linked types whose role is `role`.
+    fn linked(c: &rtc_compiler::kernel::CompiledScene, role: &str) -> Vec<String> {
+        let p = c.checked.program.as_ref().expect("a program");
+        let mut names: Vec<String> = c
+            .linked
+            .types
+            .iter()
+            .filter(|(r, _)| r.name() == role)
+            .flat_map(|(_, ts)| ts.iter().map(|t| p.structs[t.struct_id].name.clone()))
+            .collect();
+        names.sort();
+        names
+    }
+
+    #[test]
+    fn a_file_without_lights_links_the_default_light_and_nothing_else_it_lacks() {
+        let dir = model_dir();
+        let synth = synthesize(&dir.join("m.gltf"), &AssetRoots::none()).expect("a scene");
+        let link = LinkOptions {
+            asset_roots: synth.asset_roots(&AssetRoots::none()),
+            ..LinkOptions::default()
+        };
+        let compiled = compile_scene(
+            std::slice::from_ref(&synth.path),
+            None,
+            &Options::default(),
+            &link,
+        );
+        let unlinked = compile_scene(
+            std::slice::from_ref(&synth.path),
+            None,
+            &Options::default(),
+            &LinkOptions::default(),
+        );
+        let _ = std::fs::remove_dir_all(&dir);
+        let c = compiled.unwrap_or_else(|_| panic!("compile"));
+        assert_eq!(linked(&c, "light"), ["DirectionalLight"]);
+        assert_eq!(linked(&c, "material"), ["GltfMaterial"]);
+        assert_eq!(linked(&c, "camera"), ["Pinhole"]);
+        assert!(!c.linked.config.has_any_hit);
+        assert!(
+            matches!(&c.linked.models[0].read, ModelRead::Read(_)),
+            "{:?}",
+            c.linked.models
+        );
+        assert_eq!(c.linked.model_types, ["GltfMaterial"]);
+
+        // Without the model's folder as a root the written scene's model is not found from the
+        // temporary folder: everything a model may bring is linked.
+        let u = unlinked.unwrap_or_else(|_| panic!("compile"));
+        assert!(matches!(&u.linked.models[0].read, ModelRead::NotRead(_)));
+        assert_eq!(
+            linked(&u, "light"),
+            ["DirectionalLight", "PointLight", "SpotLight"]
+        );
+    }
+}

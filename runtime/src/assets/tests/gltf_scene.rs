@@ -523,3 +523,115 @@ fn masked_materials_get_the_any_hit_material_and_only_they_are_flagged() {
     assert_ne!(cut.flags & GpuInstance::FLAG_ANY_HIT, 0);
     assert!(l.config.has_any_hit);
 }
+
+/// The names of the linked types of role-namespace `role` (`light`, `material`, …).
+fn linked_names(p: &Program, l: &Linked, role: &str) -> Vec<String> {
+    l.types
+        .iter()
+        .filter(|(r, _)| r.name() == role)
+        .flat_map(|(_, ts)| ts.iter().map(|t| p.structs[t.struct_id].name.clone()))
+        .collect()
+}
+
+/// A `.glb` with one opaque triangle and one light of each `lights` type (`point`, `spot`,
+/// `directional`), each on its own node.
+fn lights_glb(lights: &[&str]) -> Vec<u8> {
+    let (b, pos, idx) = triangle();
+    let mut doc = one_node(json!([{ "attributes": { "POSITION": pos }, "indices": idx }]));
+    let list: Vec<Value> = lights
+        .iter()
+        .map(|&t| match t {
+            "spot" => json!({ "type": t, "spot": {} }),
+            _ => json!({ "type": t }),
+        })
+        .collect();
+    let mut nodes = vec![json!({ "mesh": 0 })];
+    nodes.extend((0..lights.len()).map(|i| {
+        json!({ "translation": [0.0, 2.0, 0.0], "extensions": { "KHR_lights_punctual": { "light": i } } })
+    }));
+    doc["nodes"] = json!(nodes);
+    doc["scenes"] = json!([{ "nodes": (0..nodes.len()).collect::<Vec<_>>() }]);
+    doc["extensionsUsed"] = json!(["KHR_lights_punctual"]);
+    doc["extensions"] = json!({ "KHR_lights_punctual": { "lights": list } });
+    b.glb(doc)
+}
+
+const WITH_CAMERA: &str = "import \"std/cameras/pinhole.rt\";\nscene s {\n    camera Pinhole {}\n    model \"model.glb\" {}\n}\n";
+
+#[test]
+fn the_link_step_links_only_the_model_types_the_file_holds() {
+    let dir = TempDir::new("gltf-scene");
+    dir.write("model.glb", lights_glb(&["point"]));
+    let (p, l, e) = build(&dir, WITH_CAMERA);
+    let e = e.expect("entities");
+    assert_eq!(linked_names(&p, &l, "light"), ["PointLight"]);
+    assert_eq!(linked_names(&p, &l, "material"), ["GltfMaterial"]);
+    assert!(!l.config.has_any_hit);
+    assert_eq!(e.lights().len(), 1);
+    assert_eq!(e.lights()[0].type_id, id_of(&p, &l, "PointLight"));
+    // The reasons in `left_out` name the file's contents.
+    let spot = l
+        .left_out
+        .iter()
+        .find(|o| o.name == "@light spot_light")
+        .expect("spot_light left out");
+    assert_eq!(spot.reason, "no model file of the scene holds a spot light");
+}
+
+#[test]
+fn a_file_that_changed_after_linking_is_an_internal_error_naming_file_and_type() {
+    let dir = TempDir::new("gltf-scene");
+    let path = dir.write("model.glb", lights_glb(&["point"]));
+    let name = dir.path().join("scene.rt");
+    let checked = check_text(
+        &name.display().to_string(),
+        WITH_CAMERA,
+        &Options::default(),
+    );
+    let program = checked.program.expect("a program");
+    let scene = program.select_scene(None).expect("one scene");
+    let linked = link(
+        &program,
+        scene,
+        &mut Registry::new(),
+        &LinkOptions::default(),
+    )
+    .expect("link");
+    // The file gains a spot light between the compile and the render.
+    std::fs::write(&path, lights_glb(&["point", "spot"])).expect("rewrite");
+    let err = Entities::build(
+        &program,
+        &program.scenes[linked.scene],
+        &linked,
+        &EntityOptions::default(),
+    )
+    .expect_err("an internal error");
+    assert!(
+        matches!(&err, SceneError::ModelUnlinked { name, model } if name == "SpotLight" && model.ends_with("model.glb")),
+        "{err}"
+    );
+    let text = err.to_string();
+    assert!(text.starts_with("internal error: "), "{text}");
+    assert!(text.contains("compile the scene again"), "{text}");
+}
+
+#[test]
+fn a_file_the_link_step_cannot_read_links_every_model_type_and_fails_at_its_string() {
+    let dir = TempDir::new("gltf-scene");
+    let text = "scene s {\n    model \"missing.glb\" {}\n}\n";
+    let (p, l, e) = build(&dir, text);
+    let mut lights = linked_names(&p, &l, "light");
+    lights.sort();
+    assert_eq!(lights, ["DirectionalLight", "PointLight", "SpotLight"]);
+    assert!(linked_names(&p, &l, "camera").contains(&"Pinhole".to_owned()));
+    assert!(l.config.has_any_hit);
+    assert!(
+        matches!(&l.models[0].read, rtc_compiler::link::ModelRead::NotRead(why) if why.contains("missing.glb")),
+        "{:?}",
+        l.models
+    );
+    let err = e.expect_err("a missing file");
+    let diag = err.to_diagnostic().expect("a located diagnostic");
+    assert_eq!(diag.code.0, "E0902");
+    assert!(diag.message.contains("missing.glb"), "{}", diag.message);
+}

@@ -122,15 +122,6 @@ struct PointLight {
     float range;
     float inner_range;
 };
-struct SpotLight {
-    vec3 position;
-    vec3 direction;
-    vec3 color;
-    float intensity;
-    float range;
-    float inner_angle;
-    float outer_angle;
-};
 struct GltfMaterial {
     vec4 base_color;
     uint base_texture;
@@ -1012,8 +1003,8 @@ vec3 step_toward(vec3 x_3, vec3 s) {
 
 vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
     float d_3 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    vec3 offset_14 = (n_3 * vec3(d_3));
-    vec3 _e17 = step_toward((p_5 + offset_14), offset_14);
+    vec3 offset_13 = (n_3 * vec3(d_3));
+    vec3 _e17 = step_toward((p_5 + offset_13), offset_13);
     return _e17;
 }
 
@@ -1038,8 +1029,8 @@ float shadow_query(vec3 position, vec3 normal, vec3 dir, float dist) {
         vec3 light = (position + (dir * vec3(dist)));
         float dd_1 = dot(dir, dir);
         float along_1 = (dot((light - _e23), dir) / dd_1);
-        vec3 l_3 = (abs(position) + abs((dir * vec3(dist))));
-        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_3.x, l_3.y), l_3.z)) / sqrt(dd_1)));
+        vec3 l_2 = (abs(position) + abs((dir * vec3(dist))));
+        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
     Ray ray_24 = Ray(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
@@ -1088,63 +1079,17 @@ LightSample point_light(PointLight l_1, vec3 position_2, vec3 normal_2) {
     return LightSample(dir_3, dist_1, ((l_1.color * vec3(_e28)) * vec3(_e26)));
 }
 
-SpotLight load_SpotLight(uint offset_9) {
-    uint _e5 = _group_0_binding_6_cs[(offset_9 + 0u)];
-    uint _e11 = _group_0_binding_6_cs[(offset_9 + 1u)];
-    uint _e17 = _group_0_binding_6_cs[(offset_9 + 2u)];
-    uint _e24 = _group_0_binding_6_cs[(offset_9 + 4u)];
-    uint _e30 = _group_0_binding_6_cs[(offset_9 + 5u)];
-    uint _e36 = _group_0_binding_6_cs[(offset_9 + 6u)];
-    uint _e43 = _group_0_binding_6_cs[(offset_9 + 8u)];
-    uint _e49 = _group_0_binding_6_cs[(offset_9 + 9u)];
-    uint _e55 = _group_0_binding_6_cs[(offset_9 + 10u)];
-    uint _e62 = _group_0_binding_6_cs[(offset_9 + 11u)];
-    uint _e68 = _group_0_binding_6_cs[(offset_9 + 12u)];
-    uint _e74 = _group_0_binding_6_cs[(offset_9 + 13u)];
-    uint _e80 = _group_0_binding_6_cs[(offset_9 + 14u)];
-    return SpotLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)), uintBitsToFloat(_e62), uintBitsToFloat(_e68), uintBitsToFloat(_e74), uintBitsToFloat(_e80));
-}
-
-LightSample spot_light(SpotLight l_2, vec3 position_3, vec3 normal_3) {
-    float strength_1 = 0.0;
-    vec3 to_light_1 = (l_2.position - position_3);
-    float dist_2 = length(to_light_1);
-    vec3 dir_4 = (to_light_1 / vec3(max(dist_2, 1e-20)));
-    strength_1 = (l_2.intensity / max((dist_2 * dist_2), 1e-20));
-    if ((l_2.range > 0.0)) {
-        float _e19 = strength_1;
-        strength_1 = (_e19 * (1.0 - smoothstep(0.0, l_2.range, dist_2)));
-    }
-    float cos_inner = cos(radians(min(max(l_2.inner_angle, 0.0), 180.0)));
-    float cos_outer = min(cos(radians(min(max(l_2.outer_angle, 0.0), 180.0))), (cos_inner - 0.0001));
-    float _e43 = strength_1;
-    vec3 _e46 = normalize_vec3f(l_2.direction);
-    strength_1 = (_e43 * smoothstep(cos_outer, cos_inner, dot(-(dir_4), _e46)));
-    float _e50 = strength_1;
-    if ((_e50 <= 0.0)) {
-        return LightSample(dir_4, dist_2, vec3(0.0));
-    }
-    float _e56 = shadow_query(position_3, normal_3, dir_4, dist_2);
-    float _e58 = strength_1;
-    return LightSample(dir_4, dist_2, ((l_2.color * vec3(_e58)) * vec3(_e56)));
-}
-
-LightSample dispatch_light(uint type_id_4, uint offset_10, vec3 position_4, vec3 normal_4) {
+LightSample dispatch_light(uint type_id_4, uint offset_9, vec3 position_3, vec3 normal_3) {
     switch(type_id_4) {
         case 0u: {
-            DirectionalLight _e4 = load_DirectionalLight(offset_10);
-            LightSample _e5 = directional_light(_e4, position_4, normal_4);
+            DirectionalLight _e4 = load_DirectionalLight(offset_9);
+            LightSample _e5 = directional_light(_e4, position_3, normal_3);
             return _e5;
         }
         case 1u: {
-            PointLight _e6 = load_PointLight(offset_10);
-            LightSample _e7 = point_light(_e6, position_4, normal_4);
+            PointLight _e6 = load_PointLight(offset_9);
+            LightSample _e7 = point_light(_e6, position_3, normal_3);
             return _e7;
-        }
-        case 2u: {
-            SpotLight _e8 = load_SpotLight(offset_10);
-            LightSample _e9 = spot_light(_e8, position_4, normal_4);
-            return _e9;
         }
         default: {
             break;
@@ -1153,7 +1098,7 @@ LightSample dispatch_light(uint type_id_4, uint offset_10, vec3 position_4, vec3
     return LightSample(vec3(0.0), 0.0, vec3(0.0));
 }
 
-LightSample sample_light_query(uint i_1, vec3 position_5, vec3 normal_5) {
+LightSample sample_light_query(uint i_1, vec3 position_4, vec3 normal_4) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
     if ((i_1 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0));
@@ -1161,7 +1106,7 @@ LightSample sample_light_query(uint i_1, vec3 position_5, vec3 normal_5) {
     uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
     uint _e21 = _group_0_binding_6_cs[entry];
     uint _e26 = _group_0_binding_6_cs[(entry + 1u)];
-    LightSample _e27 = dispatch_light(_e21, _e26, position_5, normal_5);
+    LightSample _e27 = dispatch_light(_e21, _e26, position_4, normal_4);
     return _e27;
 }
 
@@ -1212,17 +1157,17 @@ vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_17, Hit hit_5) {
     return _e13;
 }
 
-GltfMaterial load_GltfMaterial(uint offset_11) {
-    uint _e5 = _group_0_binding_6_cs[(offset_11 + 0u)];
-    uint _e11 = _group_0_binding_6_cs[(offset_11 + 1u)];
-    uint _e17 = _group_0_binding_6_cs[(offset_11 + 2u)];
-    uint _e23 = _group_0_binding_6_cs[(offset_11 + 3u)];
-    uint _e30 = _group_0_binding_6_cs[(offset_11 + 4u)];
-    uint _e35 = _group_0_binding_6_cs[(offset_11 + 5u)];
-    uint _e41 = _group_0_binding_6_cs[(offset_11 + 6u)];
-    uint _e47 = _group_0_binding_6_cs[(offset_11 + 8u)];
-    uint _e53 = _group_0_binding_6_cs[(offset_11 + 9u)];
-    uint _e59 = _group_0_binding_6_cs[(offset_11 + 10u)];
+GltfMaterial load_GltfMaterial(uint offset_10) {
+    uint _e5 = _group_0_binding_6_cs[(offset_10 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_10 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_10 + 2u)];
+    uint _e23 = _group_0_binding_6_cs[(offset_10 + 3u)];
+    uint _e30 = _group_0_binding_6_cs[(offset_10 + 4u)];
+    uint _e35 = _group_0_binding_6_cs[(offset_10 + 5u)];
+    uint _e41 = _group_0_binding_6_cs[(offset_10 + 6u)];
+    uint _e47 = _group_0_binding_6_cs[(offset_10 + 8u)];
+    uint _e53 = _group_0_binding_6_cs[(offset_10 + 9u)];
+    uint _e59 = _group_0_binding_6_cs[(offset_10 + 10u)];
     return GltfMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), vec3(uintBitsToFloat(_e47), uintBitsToFloat(_e53), uintBitsToFloat(_e59)));
 }
 
@@ -1233,15 +1178,15 @@ vec3 gltf_shade(GltfMaterial m_2, Ray ray_18, Hit hit_6) {
     return _e13;
 }
 
-vec3 dispatch_closest_hit(uint type_id_5, uint offset_12, Ray ray_19, Hit hit_7, vec3 secondary) {
+vec3 dispatch_closest_hit(uint type_id_5, uint offset_11, Ray ray_19, Hit hit_7, vec3 secondary) {
     switch(type_id_5) {
         case 0u: {
-            GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_12);
+            GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_11);
             vec3 _e5 = gltf_masked_shade(_e4, ray_19, hit_7);
             return _e5;
         }
         case 1u: {
-            GltfMaterial _e6 = load_GltfMaterial(offset_12);
+            GltfMaterial _e6 = load_GltfMaterial(offset_11);
             vec3 _e7 = gltf_shade(_e6, ray_19, hit_7);
             return _e7;
         }
@@ -1259,7 +1204,7 @@ vec3 shade_direct(Ray ray_20, Candidate c_4) {
     return _e11;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_13, Ray ray_21, Hit hit_8) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_21, Hit hit_8) {
     return;
 }
 
@@ -1401,13 +1346,13 @@ vec3 trace(Ray camera_ray) {
             stack[min(top_1, 3u)].next = (i_4 + 1u);
             Ray parent = stack[min(top_1, 3u)].ray;
             Hit hit_11 = stack[min(top_1, 3u)].hit;
-            vec3 dir_5 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
+            vec3 dir_4 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
             medium = parent.medium;
             float _e219 = stack[min(top_1, 3u)].error;
-            vec3 _e220 = spawn_origin(hit_11, _e219, dir_5);
+            vec3 _e220 = spawn_origin(hit_11, _e219, dir_4);
             uint _e223 = F32_INF;
             uint _e229 = medium;
-            ray_22 = Ray(_e220, 0.0, dir_5, uintBitsToFloat(_e223), (parent.depth + 1u), RAY_SECONDARY, _e229);
+            ray_22 = Ray(_e220, 0.0, dir_4, uintBitsToFloat(_e223), (parent.depth + 1u), RAY_SECONDARY, _e229);
         } else {
             uint _e235 = stack[min(top_1, 3u)].slot;
             GpuInstance inst_11 = _group_0_binding_3_cs[_e235];

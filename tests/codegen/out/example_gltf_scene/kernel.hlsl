@@ -158,19 +158,6 @@ struct PointLight {
     int _end_pad_1;
 };
 
-struct SpotLight {
-    float3 position;
-    int _pad1_0;
-    float3 direction;
-    int _pad2_0;
-    float3 color;
-    float intensity;
-    float range;
-    float inner_angle;
-    float outer_angle;
-    int _end_pad_0;
-};
-
 struct GltfMaterial {
     float4 base_color;
     uint base_texture;
@@ -1291,8 +1278,8 @@ float3 step_toward(float3 x_3, float3 s)
 float3 offset_origin(float3 p_5, float3 n_3, float error)
 {
     float d_3 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    float3 offset_14 = (n_3 * (d_3).xxx);
-    const float3 _e17 = step_toward((p_5 + offset_14), offset_14);
+    float3 offset_13 = (n_3 * (d_3).xxx);
+    const float3 _e17 = step_toward((p_5 + offset_13), offset_13);
     return _e17;
 }
 
@@ -1319,8 +1306,8 @@ float shadow_query(float3 position, float3 normal, float3 dir, float dist)
         float3 light = (position + (dir * (dist).xxx));
         float dd_1 = dot(dir, dir);
         float along_1 = (dot((light - _e23), dir) / dd_1);
-        float3 l_3 = (abs(position) + abs((dir * (dist).xxx)));
-        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_3.x, l_3.y), l_3.z)) / sqrt(dd_1)));
+        float3 l_2 = (abs(position) + abs((dir * (dist).xxx)));
+        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
     Ray ray_27 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
@@ -1395,111 +1382,46 @@ LightSample point_light(PointLight l_1, float3 position_2, float3 normal_2)
     return lightsample_2;
 }
 
-SpotLight ConstructSpotLight(float3 arg0, float3 arg1, float3 arg2, float arg3, float arg4, float arg5, float arg6) {
-    SpotLight ret = (SpotLight)0;
-    ret.position = arg0;
-    ret.direction = arg1;
-    ret.color = arg2;
-    ret.intensity = arg3;
-    ret.range = arg4;
-    ret.inner_angle = arg5;
-    ret.outer_angle = arg6;
-    return ret;
-}
-
-SpotLight load_SpotLight(uint offset_9)
-{
-    uint _e5 = asuint(params.Load((offset_9 + 0u)*4));
-    uint _e11 = asuint(params.Load((offset_9 + 1u)*4));
-    uint _e17 = asuint(params.Load((offset_9 + 2u)*4));
-    uint _e24 = asuint(params.Load((offset_9 + 4u)*4));
-    uint _e30 = asuint(params.Load((offset_9 + 5u)*4));
-    uint _e36 = asuint(params.Load((offset_9 + 6u)*4));
-    uint _e43 = asuint(params.Load((offset_9 + 8u)*4));
-    uint _e49 = asuint(params.Load((offset_9 + 9u)*4));
-    uint _e55 = asuint(params.Load((offset_9 + 10u)*4));
-    uint _e62 = asuint(params.Load((offset_9 + 11u)*4));
-    uint _e68 = asuint(params.Load((offset_9 + 12u)*4));
-    uint _e74 = asuint(params.Load((offset_9 + 13u)*4));
-    uint _e80 = asuint(params.Load((offset_9 + 14u)*4));
-    const SpotLight spotlight = ConstructSpotLight(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), float3(asfloat(_e24), asfloat(_e30), asfloat(_e36)), float3(asfloat(_e43), asfloat(_e49), asfloat(_e55)), asfloat(_e62), asfloat(_e68), asfloat(_e74), asfloat(_e80));
-    return spotlight;
-}
-
-LightSample spot_light(SpotLight l_2, float3 position_3, float3 normal_3)
-{
-    float strength_1 = (float)0;
-
-    float3 to_light_1 = (l_2.position - position_3);
-    float dist_2 = length(to_light_1);
-    float3 dir_4 = (to_light_1 / (max(dist_2, 1e-20)).xxx);
-    strength_1 = (l_2.intensity / max((dist_2 * dist_2), 1e-20));
-    if ((l_2.range > 0.0)) {
-        float _e19 = strength_1;
-        strength_1 = (_e19 * (1.0 - smoothstep(0.0, l_2.range, dist_2)));
-    }
-    float cos_inner = cos(radians(min(max(l_2.inner_angle, 0.0), 180.0)));
-    float cos_outer = min(cos(radians(min(max(l_2.outer_angle, 0.0), 180.0))), (cos_inner - 0.0001));
-    float _e43 = strength_1;
-    const float3 _e46 = normalize_vec3f(l_2.direction);
-    strength_1 = (_e43 * smoothstep(cos_outer, cos_inner, dot(-(dir_4), _e46)));
-    float _e50 = strength_1;
-    if ((_e50 <= 0.0)) {
-        const LightSample lightsample_3 = ConstructLightSample(dir_4, dist_2, (0.0).xxx);
-        return lightsample_3;
-    }
-    const float _e56 = shadow_query(position_3, normal_3, dir_4, dist_2);
-    float _e58 = strength_1;
-    const LightSample lightsample_4 = ConstructLightSample(dir_4, dist_2, ((l_2.color * (_e58).xxx) * (_e56).xxx));
-    return lightsample_4;
-}
-
 LightSample ZeroValueLightSample() {
     return (LightSample)0;
 }
 
-LightSample dispatch_light(uint type_id_4, uint offset_10, float3 position_4, float3 normal_4)
+LightSample dispatch_light(uint type_id_4, uint offset_9, float3 position_3, float3 normal_3)
 {
     switch(type_id_4) {
         case 0u: {
-            const DirectionalLight _e4 = load_DirectionalLight(offset_10);
-            const LightSample _e5 = directional_light(_e4, position_4, normal_4);
-            const LightSample lightsample_5 = _e5;
-            return lightsample_5;
+            const DirectionalLight _e4 = load_DirectionalLight(offset_9);
+            const LightSample _e5 = directional_light(_e4, position_3, normal_3);
+            const LightSample lightsample_3 = _e5;
+            return lightsample_3;
         }
         case 1u: {
-            const PointLight _e6 = load_PointLight(offset_10);
-            const LightSample _e7 = point_light(_e6, position_4, normal_4);
-            const LightSample lightsample_6 = _e7;
-            return lightsample_6;
-        }
-        case 2u: {
-            const SpotLight _e8 = load_SpotLight(offset_10);
-            const LightSample _e9 = spot_light(_e8, position_4, normal_4);
-            const LightSample lightsample_7 = _e9;
-            return lightsample_7;
+            const PointLight _e6 = load_PointLight(offset_9);
+            const LightSample _e7 = point_light(_e6, position_3, normal_3);
+            const LightSample lightsample_4 = _e7;
+            return lightsample_4;
         }
         default: {
             break;
         }
     }
-    const LightSample lightsample_8 = ZeroValueLightSample();
-    return lightsample_8;
+    const LightSample lightsample_5 = ZeroValueLightSample();
+    return lightsample_5;
 }
 
-LightSample sample_light_query(uint i_1, float3 position_5, float3 normal_5)
+LightSample sample_light_query(uint i_1, float3 position_4, float3 normal_4)
 {
     FrameUniforms frame_4 = frame;
     if ((i_1 >= frame_4.light_count)) {
-        const LightSample lightsample_9 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx);
-        return lightsample_9;
+        const LightSample lightsample_6 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx);
+        return lightsample_6;
     }
     uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
     uint _e21 = asuint(params.Load(entry*4));
     uint _e26 = asuint(params.Load((entry + 1u)*4));
-    const LightSample _e27 = dispatch_light(_e21, _e26, position_5, normal_5);
-    const LightSample lightsample_10 = _e27;
-    return lightsample_10;
+    const LightSample _e27 = dispatch_light(_e21, _e26, position_4, normal_4);
+    const LightSample lightsample_7 = _e27;
+    return lightsample_7;
 }
 
 float3 gltf_radiance(float3 c_3, float metallic, float roughness, float3 emissive, Ray ray_16, Hit hit_4)
@@ -1565,18 +1487,18 @@ GltfMaterial ConstructGltfMaterial(float4 arg0, uint arg1, float arg2, float arg
     return ret;
 }
 
-GltfMaterial load_GltfMaterial(uint offset_11)
+GltfMaterial load_GltfMaterial(uint offset_10)
 {
-    uint _e5 = asuint(params.Load((offset_11 + 0u)*4));
-    uint _e11 = asuint(params.Load((offset_11 + 1u)*4));
-    uint _e17 = asuint(params.Load((offset_11 + 2u)*4));
-    uint _e23 = asuint(params.Load((offset_11 + 3u)*4));
-    uint _e30 = asuint(params.Load((offset_11 + 4u)*4));
-    uint _e35 = asuint(params.Load((offset_11 + 5u)*4));
-    uint _e41 = asuint(params.Load((offset_11 + 6u)*4));
-    uint _e47 = asuint(params.Load((offset_11 + 8u)*4));
-    uint _e53 = asuint(params.Load((offset_11 + 9u)*4));
-    uint _e59 = asuint(params.Load((offset_11 + 10u)*4));
+    uint _e5 = asuint(params.Load((offset_10 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_10 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_10 + 2u)*4));
+    uint _e23 = asuint(params.Load((offset_10 + 3u)*4));
+    uint _e30 = asuint(params.Load((offset_10 + 4u)*4));
+    uint _e35 = asuint(params.Load((offset_10 + 5u)*4));
+    uint _e41 = asuint(params.Load((offset_10 + 6u)*4));
+    uint _e47 = asuint(params.Load((offset_10 + 8u)*4));
+    uint _e53 = asuint(params.Load((offset_10 + 9u)*4));
+    uint _e59 = asuint(params.Load((offset_10 + 10u)*4));
     const GltfMaterial gltfmaterial = ConstructGltfMaterial(float4(asfloat(_e5), asfloat(_e11), asfloat(_e17), asfloat(_e23)), _e30, asfloat(_e35), asfloat(_e41), float3(asfloat(_e47), asfloat(_e53), asfloat(_e59)));
     return gltfmaterial;
 }
@@ -1589,16 +1511,16 @@ float3 gltf_shade(GltfMaterial m_2, Ray ray_18, Hit hit_6)
     return _e13;
 }
 
-float3 dispatch_closest_hit(uint type_id_5, uint offset_12, Ray ray_19, Hit hit_7, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_5, uint offset_11, Ray ray_19, Hit hit_7, float3 secondary)
 {
     switch(type_id_5) {
         case 0u: {
-            const GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_12);
+            const GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_11);
             const float3 _e5 = gltf_masked_shade(_e4, ray_19, hit_7);
             return _e5;
         }
         case 1u: {
-            const GltfMaterial _e6 = load_GltfMaterial(offset_12);
+            const GltfMaterial _e6 = load_GltfMaterial(offset_11);
             const float3 _e7 = gltf_shade(_e6, ray_19, hit_7);
             return _e7;
         }
@@ -1617,7 +1539,7 @@ float3 shade_direct(Ray ray_20, Candidate c_4)
     return _e11;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_13, Ray ray_21, Hit hit_8)
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_21, Hit hit_8)
 {
     return;
 }
@@ -1794,13 +1716,13 @@ float3 trace(Ray camera_ray)
             stack[min(uint(min(top_1, 3u)), 3u)].next = (i_4 + 1u);
             Ray parent = stack[min(uint(min(top_1, 3u)), 3u)].ray;
             Hit hit_12 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
-            float3 dir_5 = stack[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_4, 0u)), 0u)];
+            float3 dir_4 = stack[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_4, 0u)), 0u)];
             medium = parent.medium;
             float _e219 = stack[min(uint(min(top_1, 3u)), 3u)].error;
-            const float3 _e220 = spawn_origin(hit_12, _e219, dir_5);
+            const float3 _e220 = spawn_origin(hit_12, _e219, dir_4);
             uint _e223 = F32_INF;
             uint _e229 = medium;
-            ray_22 = ConstructRay(_e220, 0.0, dir_5, asfloat(_e223), (parent.depth + 1u), RAY_SECONDARY, _e229);
+            ray_22 = ConstructRay(_e220, 0.0, dir_4, asfloat(_e223), (parent.depth + 1u), RAY_SECONDARY, _e229);
         } else {
             uint _e235 = stack[min(uint(min(top_1, 3u)), 3u)].slot;
             GpuInstance inst_11 = ConstructGpuInstance(asfloat(instances.Load4(_e235*128+0)), asfloat(instances.Load4(_e235*128+16)), asfloat(instances.Load4(_e235*128+32)), asfloat(instances.Load4(_e235*128+48)), asfloat(instances.Load4(_e235*128+64)), asfloat(instances.Load4(_e235*128+80)), asuint(instances.Load(_e235*128+96)), asuint(instances.Load(_e235*128+100)), asuint(instances.Load(_e235*128+104)), asuint(instances.Load(_e235*128+108)), asuint(instances.Load(_e235*128+112)), asuint(instances.Load(_e235*128+116)), asuint(instances.Load(_e235*128+120)), asuint(instances.Load(_e235*128+124)));

@@ -151,16 +151,6 @@ struct PointLight {
     float inner_range;
     char _pad5[8];
 };
-struct SpotLight {
-    metal::float3 position;
-    metal::float3 direction;
-    metal::packed_float3 color;
-    float intensity;
-    float range;
-    float inner_angle;
-    float outer_angle;
-    char _pad7[4];
-};
 struct GltfMaterial {
     metal::float4 base_color;
     uint base_texture;
@@ -1336,8 +1326,8 @@ metal::float3 offset_origin(
     float error
 ) {
     float d_3 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
-    metal::float3 offset_14 = n_3 * metal::float3(d_3);
-    metal::float3 _e17 = step_toward(p_5 + offset_14, offset_14);
+    metal::float3 offset_13 = n_3 * metal::float3(d_3);
+    metal::float3 _e17 = step_toward(p_5 + offset_13, offset_13);
     return _e17;
 }
 
@@ -1379,8 +1369,8 @@ float shadow_query(
         metal::float3 light = position + (dir * metal::float3(dist));
         float dd_1 = metal::dot(dir, dir);
         float along_1 = metal::dot(light - _e23, dir) / dd_1;
-        metal::float3 l_3 = metal::abs(position) + metal::abs(dir * metal::float3(dist));
-        tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_3.x, l_3.y), l_3.z)) / metal::sqrt(dd_1));
+        metal::float3 l_2 = metal::abs(position) + metal::abs(dir * metal::float3(dist));
+        tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_2.x, l_2.y), l_2.z)) / metal::sqrt(dd_1));
     }
     float _e59 = tmax_4;
     Ray ray_24 = Ray {_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u};
@@ -1465,29 +1455,9 @@ LightSample point_light(
     return LightSample {dir_3, dist_1, (l_1.color * metal::float3(_e28)) * metal::float3(_e26)};
 }
 
-SpotLight load_SpotLight(
+LightSample dispatch_light(
+    uint type_id_4,
     uint offset_9,
-    device type_4 const& params,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint _e5 = params[offset_9 + 0u];
-    uint _e11 = params[offset_9 + 1u];
-    uint _e17 = params[offset_9 + 2u];
-    uint _e24 = params[offset_9 + 4u];
-    uint _e30 = params[offset_9 + 5u];
-    uint _e36 = params[offset_9 + 6u];
-    uint _e43 = params[offset_9 + 8u];
-    uint _e49 = params[offset_9 + 9u];
-    uint _e55 = params[offset_9 + 10u];
-    uint _e62 = params[offset_9 + 11u];
-    uint _e68 = params[offset_9 + 12u];
-    uint _e74 = params[offset_9 + 13u];
-    uint _e80 = params[offset_9 + 14u];
-    return SpotLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), metal::float3(as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)), as_type<float>(_e62), as_type<float>(_e68), as_type<float>(_e74), as_type<float>(_e80)};
-}
-
-LightSample spot_light(
-    SpotLight l_2,
     metal::float3 position_3,
     metal::float3 normal_3,
     constant FrameUniforms& frame,
@@ -1503,62 +1473,16 @@ LightSample spot_light(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float strength_1 = {};
-    metal::float3 to_light_1 = l_2.position - position_3;
-    float dist_2 = metal::length(to_light_1);
-    metal::float3 dir_4 = to_light_1 / metal::float3(metal::max(dist_2, 0.00000000000000000001));
-    strength_1 = l_2.intensity / metal::max(dist_2 * dist_2, 0.00000000000000000001);
-    if (l_2.range > 0.0) {
-        float _e19 = strength_1;
-        strength_1 = _e19 * (1.0 - metal::smoothstep(0.0, l_2.range, dist_2));
-    }
-    float cos_inner = metal::cos(((metal::min(metal::max(l_2.inner_angle, 0.0), 180.0)) * 0.017453292519943295474));
-    float cos_outer = metal::min(metal::cos(((metal::min(metal::max(l_2.outer_angle, 0.0), 180.0)) * 0.017453292519943295474)), cos_inner - 0.0001);
-    float _e43 = strength_1;
-    metal::float3 _e46 = normalize_vec3f(l_2.direction);
-    strength_1 = _e43 * metal::smoothstep(cos_outer, cos_inner, metal::dot(-(dir_4), _e46));
-    float _e50 = strength_1;
-    if (_e50 <= 0.0) {
-        return LightSample {dir_4, dist_2, metal::float3(0.0)};
-    }
-    float _e56 = shadow_query(position_3, normal_3, dir_4, dist_2, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-    float _e58 = strength_1;
-    return LightSample {dir_4, dist_2, (l_2.color * metal::float3(_e58)) * metal::float3(_e56)};
-}
-
-LightSample dispatch_light(
-    uint type_id_4,
-    uint offset_10,
-    metal::float3 position_4,
-    metal::float3 normal_4,
-    constant FrameUniforms& frame,
-    device type_4 const& params,
-    thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
-    thread uint& ray_count,
-    constant _mslBufferSizes& _buffer_sizes
-) {
     switch(type_id_4) {
         case 0u: {
-            DirectionalLight _e4 = load_DirectionalLight(offset_10, params, _buffer_sizes);
-            LightSample _e5 = directional_light(_e4, position_4, normal_4, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            DirectionalLight _e4 = load_DirectionalLight(offset_9, params, _buffer_sizes);
+            LightSample _e5 = directional_light(_e4, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e5;
         }
         case 1u: {
-            PointLight _e6 = load_PointLight(offset_10, params, _buffer_sizes);
-            LightSample _e7 = point_light(_e6, position_4, normal_4, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            PointLight _e6 = load_PointLight(offset_9, params, _buffer_sizes);
+            LightSample _e7 = point_light(_e6, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e7;
-        }
-        case 2u: {
-            SpotLight _e8 = load_SpotLight(offset_10, params, _buffer_sizes);
-            LightSample _e9 = spot_light(_e8, position_4, normal_4, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-            return _e9;
         }
         default: {
             break;
@@ -1569,8 +1493,8 @@ LightSample dispatch_light(
 
 LightSample sample_light_query(
     uint i_1,
-    metal::float3 position_5,
-    metal::float3 normal_5,
+    metal::float3 position_4,
+    metal::float3 normal_4,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1591,7 +1515,7 @@ LightSample sample_light_query(
     uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
     uint _e21 = params[entry];
     uint _e26 = params[entry + 1u];
-    LightSample _e27 = dispatch_light(_e21, _e26, position_5, normal_5, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e27 = dispatch_light(_e21, _e26, position_4, normal_4, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e27;
 }
 
@@ -1681,20 +1605,20 @@ metal::float3 gltf_masked_shade(
 }
 
 GltfMaterial load_GltfMaterial(
-    uint offset_11,
+    uint offset_10,
     device type_4 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e5 = params[offset_11 + 0u];
-    uint _e11 = params[offset_11 + 1u];
-    uint _e17 = params[offset_11 + 2u];
-    uint _e23 = params[offset_11 + 3u];
-    uint _e30 = params[offset_11 + 4u];
-    uint _e35 = params[offset_11 + 5u];
-    uint _e41 = params[offset_11 + 6u];
-    uint _e47 = params[offset_11 + 8u];
-    uint _e53 = params[offset_11 + 9u];
-    uint _e59 = params[offset_11 + 10u];
+    uint _e5 = params[offset_10 + 0u];
+    uint _e11 = params[offset_10 + 1u];
+    uint _e17 = params[offset_10 + 2u];
+    uint _e23 = params[offset_10 + 3u];
+    uint _e30 = params[offset_10 + 4u];
+    uint _e35 = params[offset_10 + 5u];
+    uint _e41 = params[offset_10 + 6u];
+    uint _e47 = params[offset_10 + 8u];
+    uint _e53 = params[offset_10 + 9u];
+    uint _e59 = params[offset_10 + 10u];
     return GltfMaterial {metal::float4(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17), as_type<float>(_e23)), _e30, as_type<float>(_e35), as_type<float>(_e41), {}, metal::float3(as_type<float>(_e47), as_type<float>(_e53), as_type<float>(_e59))};
 }
 
@@ -1723,7 +1647,7 @@ metal::float3 gltf_shade(
 
 metal::float3 dispatch_closest_hit(
     uint type_id_5,
-    uint offset_12,
+    uint offset_11,
     Ray ray_19,
     Hit hit_7,
     metal::float3 secondary,
@@ -1742,12 +1666,12 @@ metal::float3 dispatch_closest_hit(
 ) {
     switch(type_id_5) {
         case 0u: {
-            GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_12, params, _buffer_sizes);
+            GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_11, params, _buffer_sizes);
             metal::float3 _e5 = gltf_masked_shade(_e4, ray_19, hit_7, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e5;
         }
         case 1u: {
-            GltfMaterial _e6 = load_GltfMaterial(offset_12, params, _buffer_sizes);
+            GltfMaterial _e6 = load_GltfMaterial(offset_11, params, _buffer_sizes);
             metal::float3 _e7 = gltf_shade(_e6, ray_19, hit_7, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e7;
         }
@@ -1782,7 +1706,7 @@ metal::float3 shade_direct(
 
 void dispatch_secondary_rays(
     uint type_id_6,
-    uint offset_13,
+    uint offset_12,
     Ray ray_21,
     Hit hit_8
 ) {
@@ -1954,13 +1878,13 @@ metal::float3 trace(
             stack.inner[metal::min(top_1, 3u)].next = i_4 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 3u)].ray;
             Hit hit_11 = stack.inner[metal::min(top_1, 3u)].hit;
-            metal::float3 dir_5 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_4, 0u)];
+            metal::float3 dir_4 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_4, 0u)];
             medium = parent.medium;
             float _e219 = stack.inner[metal::min(top_1, 3u)].error;
-            metal::float3 _e220 = spawn_origin(hit_11, _e219, dir_5);
+            metal::float3 _e220 = spawn_origin(hit_11, _e219, dir_4);
             uint _e223 = F32_INF;
             uint _e229 = medium;
-            ray_22 = Ray {_e220, 0.0, dir_5, as_type<float>(_e223), parent.depth + 1u, RAY_SECONDARY, _e229};
+            ray_22 = Ray {_e220, 0.0, dir_4, as_type<float>(_e223), parent.depth + 1u, RAY_SECONDARY, _e229};
         } else {
             uint _e235 = stack.inner[metal::min(top_1, 3u)].slot;
             GpuInstance inst_11 = instances[_e235];

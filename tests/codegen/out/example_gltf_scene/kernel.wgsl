@@ -132,16 +132,6 @@ struct PointLight {
     inner_range: f32,
 }
 
-struct SpotLight {
-    position: vec3<f32>,
-    direction: vec3<f32>,
-    color: vec3<f32>,
-    intensity: f32,
-    range: f32,
-    inner_angle: f32,
-    outer_angle: f32,
-}
-
 struct GltfMaterial {
     base_color: vec4<f32>,
     base_texture: u32,
@@ -1022,8 +1012,8 @@ fn step_toward(x_3: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
 
 fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
     let d_3 = ((2f * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    let offset_14 = (n_3 * vec3(d_3));
-    let _e17 = step_toward((p_5 + offset_14), offset_14);
+    let offset_13 = (n_3 * vec3(d_3));
+    let _e17 = step_toward((p_5 + offset_13), offset_13);
     return _e17;
 }
 
@@ -1049,8 +1039,8 @@ fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f3
         let light = (position + (dir * vec3(dist)));
         let dd_1 = dot(dir, dir);
         let along_1 = (dot((light - _e23), dir) / dd_1);
-        let l_3 = (abs(position) + abs((dir * vec3(dist))));
-        tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_3.x, l_3.y), l_3.z)) / sqrt(dd_1)));
+        let l_2 = (abs(position) + abs((dir * vec3(dist))));
+        tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     let _e59 = tmax_4;
     let ray_24 = Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
@@ -1100,64 +1090,17 @@ fn point_light(l_1: PointLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> L
     return LightSample(dir_3, dist_1, ((l_1.color * vec3(_e28)) * vec3(_e26)));
 }
 
-fn load_SpotLight(offset_9: u32) -> SpotLight {
-    let _e5 = params[(offset_9 + 0u)];
-    let _e11 = params[(offset_9 + 1u)];
-    let _e17 = params[(offset_9 + 2u)];
-    let _e24 = params[(offset_9 + 4u)];
-    let _e30 = params[(offset_9 + 5u)];
-    let _e36 = params[(offset_9 + 6u)];
-    let _e43 = params[(offset_9 + 8u)];
-    let _e49 = params[(offset_9 + 9u)];
-    let _e55 = params[(offset_9 + 10u)];
-    let _e62 = params[(offset_9 + 11u)];
-    let _e68 = params[(offset_9 + 12u)];
-    let _e74 = params[(offset_9 + 13u)];
-    let _e80 = params[(offset_9 + 14u)];
-    return SpotLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)), bitcast<f32>(_e62), bitcast<f32>(_e68), bitcast<f32>(_e74), bitcast<f32>(_e80));
-}
-
-fn spot_light(l_2: SpotLight, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
-    var strength_1: f32;
-
-    let to_light_1 = (l_2.position - position_3);
-    let dist_2 = length(to_light_1);
-    let dir_4 = (to_light_1 / vec3(max(dist_2, 0.00000000000000000001f)));
-    strength_1 = (l_2.intensity / max((dist_2 * dist_2), 0.00000000000000000001f));
-    if (l_2.range > 0f) {
-        let _e19 = strength_1;
-        strength_1 = (_e19 * (1f - smoothstep(0f, l_2.range, dist_2)));
-    }
-    let cos_inner = cos(radians(min(max(l_2.inner_angle, 0f), 180f)));
-    let cos_outer = min(cos(radians(min(max(l_2.outer_angle, 0f), 180f))), (cos_inner - 0.0001f));
-    let _e43 = strength_1;
-    let _e46 = normalize_vec3f(l_2.direction);
-    strength_1 = (_e43 * smoothstep(cos_outer, cos_inner, dot(-(dir_4), _e46)));
-    let _e50 = strength_1;
-    if (_e50 <= 0f) {
-        return LightSample(dir_4, dist_2, vec3(0f));
-    }
-    let _e56 = shadow_query(position_3, normal_3, dir_4, dist_2);
-    let _e58 = strength_1;
-    return LightSample(dir_4, dist_2, ((l_2.color * vec3(_e58)) * vec3(_e56)));
-}
-
-fn dispatch_light(type_id_4: u32, offset_10: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
+fn dispatch_light(type_id_4: u32, offset_9: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
     switch type_id_4 {
         case 0u: {
-            let _e4 = load_DirectionalLight(offset_10);
-            let _e5 = directional_light(_e4, position_4, normal_4);
+            let _e4 = load_DirectionalLight(offset_9);
+            let _e5 = directional_light(_e4, position_3, normal_3);
             return _e5;
         }
         case 1u: {
-            let _e6 = load_PointLight(offset_10);
-            let _e7 = point_light(_e6, position_4, normal_4);
+            let _e6 = load_PointLight(offset_9);
+            let _e7 = point_light(_e6, position_3, normal_3);
             return _e7;
-        }
-        case 2u: {
-            let _e8 = load_SpotLight(offset_10);
-            let _e9 = spot_light(_e8, position_4, normal_4);
-            return _e9;
         }
         default: {
         }
@@ -1165,7 +1108,7 @@ fn dispatch_light(type_id_4: u32, offset_10: u32, position_4: vec3<f32>, normal_
     return LightSample();
 }
 
-fn sample_light_query(i_1: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
+fn sample_light_query(i_1: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let frame_4 = frame;
     if (i_1 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f));
@@ -1173,7 +1116,7 @@ fn sample_light_query(i_1: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> L
     let entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
     let _e21 = params[entry];
     let _e26 = params[(entry + 1u)];
-    let _e27 = dispatch_light(_e21, _e26, position_5, normal_5);
+    let _e27 = dispatch_light(_e21, _e26, position_4, normal_4);
     return _e27;
 }
 
@@ -1223,17 +1166,17 @@ fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_17: Ray, hit_5: Hit) -> vec3<f
     return _e13;
 }
 
-fn load_GltfMaterial(offset_11: u32) -> GltfMaterial {
-    let _e5 = params[(offset_11 + 0u)];
-    let _e11 = params[(offset_11 + 1u)];
-    let _e17 = params[(offset_11 + 2u)];
-    let _e23 = params[(offset_11 + 3u)];
-    let _e30 = params[(offset_11 + 4u)];
-    let _e35 = params[(offset_11 + 5u)];
-    let _e41 = params[(offset_11 + 6u)];
-    let _e47 = params[(offset_11 + 8u)];
-    let _e53 = params[(offset_11 + 9u)];
-    let _e59 = params[(offset_11 + 10u)];
+fn load_GltfMaterial(offset_10: u32) -> GltfMaterial {
+    let _e5 = params[(offset_10 + 0u)];
+    let _e11 = params[(offset_10 + 1u)];
+    let _e17 = params[(offset_10 + 2u)];
+    let _e23 = params[(offset_10 + 3u)];
+    let _e30 = params[(offset_10 + 4u)];
+    let _e35 = params[(offset_10 + 5u)];
+    let _e41 = params[(offset_10 + 6u)];
+    let _e47 = params[(offset_10 + 8u)];
+    let _e53 = params[(offset_10 + 9u)];
+    let _e59 = params[(offset_10 + 10u)];
     return GltfMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), vec3<f32>(bitcast<f32>(_e47), bitcast<f32>(_e53), bitcast<f32>(_e59)));
 }
 
@@ -1244,15 +1187,15 @@ fn gltf_shade(m_2: GltfMaterial, ray_18: Ray, hit_6: Hit) -> vec3<f32> {
     return _e13;
 }
 
-fn dispatch_closest_hit(type_id_5: u32, offset_12: u32, ray_19: Ray, hit_7: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_5: u32, offset_11: u32, ray_19: Ray, hit_7: Hit, secondary: vec3<f32>) -> vec3<f32> {
     switch type_id_5 {
         case 0u: {
-            let _e4 = load_GltfMaskedMaterial(offset_12);
+            let _e4 = load_GltfMaskedMaterial(offset_11);
             let _e5 = gltf_masked_shade(_e4, ray_19, hit_7);
             return _e5;
         }
         case 1u: {
-            let _e6 = load_GltfMaterial(offset_12);
+            let _e6 = load_GltfMaterial(offset_11);
             let _e7 = gltf_shade(_e6, ray_19, hit_7);
             return _e7;
         }
@@ -1269,7 +1212,7 @@ fn shade_direct(ray_20: Ray, c_4: Candidate) -> vec3<f32> {
     return _e11;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_13: u32, ray_21: Ray, hit_8: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_21: Ray, hit_8: Hit) {
     return;
 }
 
@@ -1411,13 +1354,13 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             stack[min(top_1, 3u)].next = (i_4 + 1u);
             let parent = stack[min(top_1, 3u)].ray;
             let hit_11 = stack[min(top_1, 3u)].hit;
-            let dir_5 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
+            let dir_4 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
             medium = parent.medium;
             let _e219 = stack[min(top_1, 3u)].error;
-            let _e220 = spawn_origin(hit_11, _e219, dir_5);
+            let _e220 = spawn_origin(hit_11, _e219, dir_4);
             let _e223 = F32_INF;
             let _e229 = medium;
-            ray_22 = Ray(_e220, 0f, dir_5, bitcast<f32>(_e223), (parent.depth + 1u), RAY_SECONDARY, _e229);
+            ray_22 = Ray(_e220, 0f, dir_4, bitcast<f32>(_e223), (parent.depth + 1u), RAY_SECONDARY, _e229);
         } else {
             let _e235 = stack[min(top_1, 3u)].slot;
             let inst_11 = instances[_e235];
