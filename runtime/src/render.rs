@@ -2,15 +2,18 @@
 //!
 //! [`Renderer::new`] does the one-time work, in order:
 //! 1. the scene entities ([`Entities::build`]: assets, one BVH per mesh, `params`);
-//! 2. the render kernel's pipeline ([`create_kernel`] from the compiled `naga::Module`, with exactly
-//!    the bindings the compiler lists and the tile uniform at the `tile` binding);
+//! 2. the render kernel's pipeline (from the compiled `naga::Module`, with exactly the bindings the
+//!    compiler lists and the tile uniform at the `tile` binding), created with the bounds kernel
+//!    of step 3 as one set by [`Gpu::create_kernels`] (memory and disk caches, parallel compile,
+//!    per-kernel accounting in [`RenderStats::kernels`]);
 //! 3. for scenes with custom geometry, the bounds kernel: instances uploaded in object order, one
 //!    invocation per object, boxes read back from `accum` and handed to the entities, which then
 //!    build the scene-level BVH;
 //! 4. the first upload of every buffer ([`GpuScene::upload`]), so data above a device limit fails
 //!    here with the buffer set's typed error naming the binding;
-//! 5. a one-pixel warm-up dispatch of the render kernel: lavapipe compiles a pipeline at its first
-//!    dispatch (seconds for the full kernel), which belongs to the setup, not to the render time.
+//! 5. nothing more for the pipelines: [`Gpu::create_kernels`] (step 2 and 3's kernels, created as
+//!    one set) already ran the warm-up dispatch in which lavapipe compiles a pipeline (seconds for
+//!    the full kernel), so that belongs to the setup, not to the render time.
 //!
 //! [`Renderer::render`] then renders the whole image: it rebuilds the scene-level BVH if an object
 //! moved ([`Renderer::set_transform`]), uploads what changed, zeroes the accumulation buffer and the
@@ -50,8 +53,8 @@ use rtc_compiler::kernel::{CompiledScene, BOUNDS_ENTRY, BOUNDS_WORKGROUP, RENDER
 
 use crate::assets::AssetRoots;
 use crate::gpu::{
-    create_kernel, dispatch_once, plan_tiles, BufferLimits, DispatchError, Gpu, Kernel, KernelDesc,
-    KernelSource, PipelineError, TileConfig, TileDispatcher,
+    dispatch_once, plan_tiles, BufferLimits, DispatchError, Gpu, Kernel, KernelDesc, KernelReport,
+    KernelSource, PipelineCacheStatus, PipelineError, TileConfig, TileDispatcher,
 };
 use crate::image_out::{ImageError, LinearImage};
 use crate::scene::{Entities, EntityOptions, GpuScene, ObjectGeometry, SceneError, UploadReport};
@@ -112,6 +115,9 @@ pub enum RenderError {
         /// Its binding.
         binding: u32,
     },
+    /// The kernel set came back shorter than asked for.
+    #[error("internal error: a kernel of the set was not created")]
+    KernelSet,
     /// The scene has custom geometry but the compile produced no bounds kernel.
     #[error("internal error: the scene has custom geometry but no bounds kernel was compiled")]
     NoBoundsKernel,
@@ -147,9 +153,13 @@ pub struct RenderStats {
     pub load_ms: f64,
     /// Milliseconds running the bounds kernel (first render of a scene with custom geometry).
     pub bounds_ms: f64,
-    /// Milliseconds creating the kernel pipelines, including a one-pixel warm-up dispatch that
-    /// absorbs drivers' compile-at-first-dispatch (first render only).
+    /// Milliseconds creating the kernel pipelines, including the warm-up dispatches that absorb
+    /// drivers' compile-at-first-dispatch (first render only).
     pub pipeline_ms: f64,
+    /// Each kernel of the scene: compiled or reused, and its cost (first render only).
+    pub kernels: Vec<KernelReport>,
+    /// The on-disk pipeline cache (first render only).
+    pub pipeline_cache: Option<PipelineCacheStatus>,
     /// Milliseconds uploading: CPU staging plus the transfer before the first pass.
     pub upload_ms: f64,
     /// Bytes uploaded.
@@ -201,8 +211,10 @@ pub struct RenderResult {
 }
 
 /// One-time costs, reported with the first render.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Debug, Default)]
 struct Setup {
+    kernels: Vec<KernelReport>,
+    pipeline_cache: Option<PipelineCacheStatus>,
     bvh_ms: f64,
     load_ms: f64,
     bounds_ms: f64,
@@ -297,42 +309,52 @@ impl<'g> Renderer<'g> {
                 es.tlas_ms
             };
 
-        // Pipelines.
+        // Pipelines: the render kernel and, for custom geometry, the bounds kernel, created as
+        // one set (reused from the caches where possible, compiled in parallel otherwise).
         let start = Instant::now();
         let tile = abi::binding("tile").ok_or(RenderError::NoTileBinding)?;
         if !compiled.bindings.iter().any(|b| b.binding == tile.binding) {
             return Err(RenderError::NoTileBinding);
         }
         let render_bindings = GpuScene::runtime_bindings(&compiled.bindings);
-        let kernel = create_kernel(
-            gpu,
-            KernelDesc {
-                label: "rtc render",
-                source: KernelSource::Naga(Box::new(compiled.render.clone())),
-                entry_point: RENDER_ENTRY,
-                bindings: &render_bindings,
-                tile_binding: Some(tile.binding),
-            },
-        )?;
-        let bounds = match (&compiled.bounds, entities.needs_bounds()) {
+        let bounds_module = match (&compiled.bounds, entities.needs_bounds()) {
             (Some(module), true) => {
                 let declared = declared_bindings(module, "bounds")?;
                 let bindings = GpuScene::runtime_bindings(&declared);
-                let kernel = create_kernel(
-                    gpu,
-                    KernelDesc {
-                        label: "rtc bounds",
-                        source: KernelSource::Naga(Box::new(module.clone())),
-                        entry_point: BOUNDS_ENTRY,
-                        bindings: &bindings,
-                        tile_binding: None,
-                    },
-                )?;
-                Some((kernel, declared))
+                Some((module, declared, bindings))
             }
             (None, true) => return Err(RenderError::NoBoundsKernel),
             (_, false) => None,
         };
+        let mut descs = vec![KernelDesc {
+            label: "rtc render",
+            source: KernelSource::Naga(Box::new(compiled.render.clone())),
+            entry_point: RENDER_ENTRY,
+            bindings: &render_bindings,
+            tile_binding: Some(tile.binding),
+        }];
+        if let Some((module, _, bindings)) = &bounds_module {
+            descs.push(KernelDesc {
+                label: "rtc bounds",
+                source: KernelSource::Naga(Box::new((*module).clone())),
+                entry_point: BOUNDS_ENTRY,
+                bindings,
+                tile_binding: None,
+            });
+        }
+        let mut kernels = gpu.create_kernels(descs).into_iter();
+        let kernel = kernels.next().ok_or(RenderError::KernelSet)??;
+        let bounds = match bounds_module {
+            Some((_, declared, _)) => {
+                Some((kernels.next().ok_or(RenderError::KernelSet)??, declared))
+            }
+            None => None,
+        };
+        setup.kernels = std::iter::once(&kernel)
+            .chain(bounds.as_ref().map(|(k, _)| k))
+            .map(Kernel::report)
+            .collect();
+        setup.pipeline_cache = Some(gpu.pipeline_cache_status());
         setup.pipeline_ms = ms_since(start);
 
         let mut all: Vec<&'static abi::BindingDesc> = compiled.bindings.clone();
@@ -377,13 +399,7 @@ impl<'g> Renderer<'g> {
         let tiles = options
             .tiles
             .unwrap_or_else(|| TileConfig::for_adapter(gpu.description()));
-        let mut dispatcher = TileDispatcher::new(tiles);
-        // Some drivers (lavapipe) compile a pipeline at its first dispatch, which took seconds
-        // for the full kernel: one 1×1 dispatch here keeps that out of the render time. What it
-        // writes to `accum` is cleared before the first pass.
-        let start = Instant::now();
-        dispatcher.dispatch(gpu, &kernel, scene.buffers(), [1, 1], 0, &mut |_, _| {})?;
-        setup.pipeline_ms += ms_since(start);
+        let dispatcher = TileDispatcher::new(tiles);
         Ok(Self {
             gpu,
             entities,
@@ -518,6 +534,8 @@ impl<'g> Renderer<'g> {
             load_ms: setup.load_ms,
             bounds_ms: setup.bounds_ms,
             pipeline_ms: setup.pipeline_ms,
+            kernels: setup.kernels,
+            pipeline_cache: setup.pipeline_cache,
             upload_ms: setup_upload_ms + report.stats.upload_ms + flush_ms,
             bytes_uploaded: setup_bytes + report.stats.bytes_uploaded,
             buffers_written: written,
@@ -544,7 +562,13 @@ impl<'g> Renderer<'g> {
             lights: self.entities.lights().len() as u32,
             blas_builds: es.blas_builds,
             tlas_builds: es.tlas_builds,
-            warnings: self.entities.warnings().to_vec(),
+            warnings: self
+                .entities
+                .warnings()
+                .iter()
+                .cloned()
+                .chain(gpu.take_warnings())
+                .collect(),
         };
         Ok(RenderResult { image, stats })
     }
