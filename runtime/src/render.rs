@@ -265,6 +265,63 @@ fn declared_bindings(
     Ok(out)
 }
 
+/// The kernels of a compiled scene, as [`create_scene_kernels`] made them.
+#[derive(Debug)]
+pub struct SceneKernels {
+    /// The render kernel.
+    pub render: Kernel,
+    /// The bounds kernel and the ABI bindings it declares, when it was asked for.
+    pub bounds: Option<(Kernel, Vec<&'static abi::BindingDesc>)>,
+}
+
+/// Creates the kernels of `compiled` as one set with [`Gpu::create_kernels`] (memory and disk
+/// caches, parallel compile, warm-up, per-kernel accounting in [`Kernel::report`]): the render
+/// kernel, and the bounds kernel when `with_bounds` (a scene with custom geometry). Used by
+/// [`Renderer::new`] and by `rtc compile --timings driver`.
+pub fn create_scene_kernels(
+    gpu: &Gpu,
+    compiled: &CompiledScene,
+    with_bounds: bool,
+) -> Result<SceneKernels, RenderError> {
+    let tile = abi::binding("tile").ok_or(RenderError::NoTileBinding)?;
+    if !compiled.bindings.iter().any(|b| b.binding == tile.binding) {
+        return Err(RenderError::NoTileBinding);
+    }
+    let render_bindings = GpuScene::runtime_bindings(&compiled.bindings);
+    let bounds_module = match (&compiled.bounds, with_bounds) {
+        (Some(module), true) => {
+            let declared = declared_bindings(module, "bounds")?;
+            let bindings = GpuScene::runtime_bindings(&declared);
+            Some((module, declared, bindings))
+        }
+        (None, true) => return Err(RenderError::NoBoundsKernel),
+        (_, false) => None,
+    };
+    let mut descs = vec![KernelDesc {
+        label: "rtc render",
+        source: KernelSource::Naga(Box::new(compiled.render.clone())),
+        entry_point: RENDER_ENTRY,
+        bindings: &render_bindings,
+        tile_binding: Some(tile.binding),
+    }];
+    if let Some((module, _, bindings)) = &bounds_module {
+        descs.push(KernelDesc {
+            label: "rtc bounds",
+            source: KernelSource::Naga(Box::new((*module).clone())),
+            entry_point: BOUNDS_ENTRY,
+            bindings,
+            tile_binding: None,
+        });
+    }
+    let mut kernels = gpu.create_kernels(descs).into_iter();
+    let render = kernels.next().ok_or(RenderError::KernelSet)??;
+    let bounds = match bounds_module {
+        Some((_, declared, _)) => Some((kernels.next().ok_or(RenderError::KernelSet)??, declared)),
+        None => None,
+    };
+    Ok(SceneKernels { render, bounds })
+}
+
 impl<'g> Renderer<'g> {
     /// Prepares `compiled` for rendering on `gpu` (see the module docs for the steps).
     pub fn new(
@@ -309,47 +366,12 @@ impl<'g> Renderer<'g> {
                 es.tlas_ms
             };
 
-        // Pipelines: the render kernel and, for custom geometry, the bounds kernel, created as
-        // one set (reused from the caches where possible, compiled in parallel otherwise).
+        // Pipelines: the render kernel and, for custom geometry, the bounds kernel.
         let start = Instant::now();
-        let tile = abi::binding("tile").ok_or(RenderError::NoTileBinding)?;
-        if !compiled.bindings.iter().any(|b| b.binding == tile.binding) {
-            return Err(RenderError::NoTileBinding);
-        }
-        let render_bindings = GpuScene::runtime_bindings(&compiled.bindings);
-        let bounds_module = match (&compiled.bounds, entities.needs_bounds()) {
-            (Some(module), true) => {
-                let declared = declared_bindings(module, "bounds")?;
-                let bindings = GpuScene::runtime_bindings(&declared);
-                Some((module, declared, bindings))
-            }
-            (None, true) => return Err(RenderError::NoBoundsKernel),
-            (_, false) => None,
-        };
-        let mut descs = vec![KernelDesc {
-            label: "rtc render",
-            source: KernelSource::Naga(Box::new(compiled.render.clone())),
-            entry_point: RENDER_ENTRY,
-            bindings: &render_bindings,
-            tile_binding: Some(tile.binding),
-        }];
-        if let Some((module, _, bindings)) = &bounds_module {
-            descs.push(KernelDesc {
-                label: "rtc bounds",
-                source: KernelSource::Naga(Box::new((*module).clone())),
-                entry_point: BOUNDS_ENTRY,
-                bindings,
-                tile_binding: None,
-            });
-        }
-        let mut kernels = gpu.create_kernels(descs).into_iter();
-        let kernel = kernels.next().ok_or(RenderError::KernelSet)??;
-        let bounds = match bounds_module {
-            Some((_, declared, _)) => {
-                Some((kernels.next().ok_or(RenderError::KernelSet)??, declared))
-            }
-            None => None,
-        };
+        let SceneKernels {
+            render: kernel,
+            bounds,
+        } = create_scene_kernels(gpu, compiled, entities.needs_bounds())?;
         setup.kernels = std::iter::once(&kernel)
             .chain(bounds.as_ref().map(|(k, _)| k))
             .map(Kernel::report)
