@@ -292,7 +292,7 @@ pub fn kernel_lines(kernels: &[KernelReport], indent: &str) -> String {
     let mut out = String::new();
     for k in kernels {
         out.push_str(&format!(
-            "{indent}{:<width$}  {:<21} {:>10.2} ms  (driver {:.2} ms)\n",
+            "{indent}{:<width$}  {:<21}  {:>10.2} ms  (driver {:.2} ms)\n",
             k.label,
             k.origin.to_string(),
             k.total_ms(),
