@@ -322,10 +322,12 @@ fn run_edit(
         let wait = deadline.saturating_duration_since(Instant::now());
         match rx.recv_timeout(wait) {
             Ok(line) => {
-                if !edited && line.starts_with("[watch] #1 ") {
-                    if !line.contains(" ok") {
-                        break;
-                    }
+                if !edited && line.starts_with("[watch] #1 failed") {
+                    lines.push(line);
+                    let _ = proc.kill();
+                    break;
+                }
+                if !edited && line.starts_with("[watch] #1 ok") {
                     // A later modification time than the first build's files.
                     std::thread::sleep(Duration::from_millis(50));
                     let material = dir.join("blinn_phong.rt");
