@@ -187,7 +187,7 @@ fn last_line(text: &str, fallback: &str) -> String {
 /// The figure of a summary's `  pipelines   123.45 ms  (...)` line.
 pub fn pipelines_ms(line: &str) -> Option<f64> {
     let rest = line.trim_start().strip_prefix("pipelines")?;
-    rest.trim_start().split_whitespace().next()?.parse().ok()
+    rest.split_whitespace().next()?.parse().ok()
 }
 
 /// A kernel line of `rtc render`'s or `rtc watch`'s report (`render::kernel_lines`).
