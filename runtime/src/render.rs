@@ -4,16 +4,15 @@
 //! 1. the scene entities ([`Entities::build`]: assets, one BVH per mesh, `params`);
 //! 2. the render kernel's pipeline (from the compiled `naga::Module`, with exactly the bindings the
 //!    compiler lists and the tile uniform at the `tile` binding), created with the bounds kernel
-//!    of step 3 as one set by [`Gpu::create_kernels`] (memory and disk caches, parallel compile,
-//!    per-kernel accounting in [`RenderStats::kernels`]);
+//!    of step 3 as one set by [`create_scene_kernels`] (memory and disk caches, parallel compile,
+//!    per-kernel accounting in [`RenderStats::kernels`]). Each new pipeline's warm-up dispatch,
+//!    where lavapipe compiles it (seconds for the full kernel), runs there, so the compile belongs
+//!    to the setup, not to the render time;
 //! 3. for scenes with custom geometry, the bounds kernel: instances uploaded in object order, one
 //!    invocation per object, boxes read back from `accum` and handed to the entities, which then
 //!    build the scene-level BVH;
 //! 4. the first upload of every buffer ([`GpuScene::upload`]), so data above a device limit fails
-//!    here with the buffer set's typed error naming the binding;
-//! 5. nothing more for the pipelines: [`Gpu::create_kernels`] (step 2 and 3's kernels, created as
-//!    one set) already ran the warm-up dispatch in which lavapipe compiles a pipeline (seconds for
-//!    the full kernel), so that belongs to the setup, not to the render time.
+//!    here with the buffer set's typed error naming the binding.
 //!
 //! [`Renderer::render`] then renders the whole image: it rebuilds the scene-level BVH if an object
 //! moved ([`Renderer::set_transform`]), uploads what changed, zeroes the accumulation buffer and the

@@ -1,6 +1,8 @@
 //! The language-independent GPU core of the runtime: one [`Gpu`] context (instance, adapter,
-//! device, queue), compute [`Kernel`]s with explicit bind group layouts, a persistent
-//! [`BufferSet`] keyed by binding, and tiled dispatch with read-back ([`TileDispatcher`]).
+//! device, queue), compute [`Kernel`]s with explicit bind group layouts, created one at a time or
+//! as a set ([`Gpu::create_kernels`]: memory cache, parallel creation, warm-up, accounting, the
+//! on-disk pipeline cache of `pipeline_cache.rs`), a persistent [`BufferSet`] keyed by binding,
+//! and tiled dispatch with read-back ([`TileDispatcher`]).
 //!
 //! The layer knows nothing of the rtc language: a kernel is a compute entry point plus a list of
 //! [`BindingDesc`]s in bind group 0, exactly what the compiler's manifest describes.
