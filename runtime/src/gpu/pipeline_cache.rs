@@ -20,7 +20,9 @@
 //!   renamed over the old one, so a reader sees the old file or the new one, never a mix.
 //! - The keys say which kernels the data was written for; a kernel whose key is in the loaded
 //!   file is reported as coming from the disk cache. Whether the driver then skips its compile is
-//!   the driver's business: the accounting reports the time it took either way.
+//!   the driver's business: the accounting reports the time it took either way. The keys are the
+//!   memory cache's hashes (std's `DefaultHasher` over the module's `Debug` form), which another
+//!   build of rtc may compute differently; that only makes a kernel count as compiled.
 //! - A driver may accept the cache and store nothing in it: lavapipe (Mesa 25.0) returns only
 //!   the headers however many pipelines were created with it (measured: docs/bench/compile.md).
 //!   The size of an empty cache's data is measured when the cache is opened; data no larger than
