@@ -1,7 +1,11 @@
 //! `rtc watch` as a user runs it: a subprocess watching a scene in a temporary folder, driven
+//! `rtc watch` as a user runs it: a subprocess watching a scene in a temporary folder, driven
 //! through edits (valid, invalid, fixed again, an import added and then removed; a glTF `model`
-//! file gaining a light type) and stopped with SIGINT, the way Ctrl-C stops it. Each step waits for the reload's report line (generous timeouts:
-//! the machines that run this are slow and shared) and then checks the files and the messages.
+//! file gaining a light type) and stopped with SIGINT, the way Ctrl-C stops it. Each step waits for
+//! the reload's report line (generous timeouts: the machines that run this are slow and shared) and
+//! then checks the files and the messages. With an adapter, each report's kernel lines say whether
+//! the preview's kernel was compiled or reused (the scene of the first build again reuses its
+//! kernel).
 
 use std::io::{BufRead, BufReader, Read};
 use std::path::{Path, PathBuf};
@@ -53,6 +57,7 @@ impl Watch {
             .arg(preview)
             .args(["--size", "32x32", "--spp", "1", "--target", "wgsl,spirv"])
             .env("XDG_RUNTIME_DIR", std::env::temp_dir())
+            .env("RTC_PIPELINE_CACHE", "off")
             .stdout(Stdio::piped())
             .stderr(Stdio::piped())
             .spawn()
@@ -107,6 +112,13 @@ fn collect(stream: impl Read + Send + 'static, lines: Arc<Mutex<Vec<String>>>) {
             lines.lock().expect("lines").push(line);
         }
     });
+}
+
+/// The report's line for the render kernel (`rtc render  compiled  …  (driver … ms)`).
+fn kernel_line(text: &str) -> &str {
+    text.lines()
+        .find(|l| l.trim_start().starts_with("rtc render") && l.contains("(driver "))
+        .unwrap_or_else(|| panic!("no kernel line in {text}"))
 }
 
 /// `N` and `M` of the report's `parse: N module(s) parsed, M from the cache`.
@@ -170,6 +182,8 @@ fn watch_follows_edits_keeps_good_outputs_and_tracks_imports() {
     let has_gpu = text.contains("preview adapter:");
     if has_gpu {
         assert!(preview.is_file(), "{text}");
+        assert!(text.contains("  kernels: 1 compiled, 0 reused"), "{text}");
+        assert!(kernel_line(&text).contains("compiled"), "{text}");
     } else {
         eprintln!("no adapter here: the preview is not checked\n{text}");
         assert!(text.contains("no preview"), "{text}");
@@ -200,6 +214,7 @@ fn watch_follows_edits_keeps_good_outputs_and_tracks_imports() {
             "the preview was rendered again"
         );
         assert!(text.contains("edit to preview"), "{text}");
+        assert!(text.contains("  kernels: 1 compiled, 0 reused"), "{text}");
     }
 
     // 2. An invalid edit: diagnostics, and the outputs of #2 are left alone.
@@ -231,6 +246,14 @@ fn watch_follows_edits_keeps_good_outputs_and_tracks_imports() {
         fixed_code == first_code,
         "the scene of #1 again, but other code: first difference {diff:?}\n{text}"
     );
+    if has_gpu {
+        // The kernel of #1 again: its pipeline is reused, not compiled.
+        assert!(text.contains("  kernels: 0 compiled, 1 reused"), "{text}");
+        assert!(
+            kernel_line(&text).contains("reused (memory cache)"),
+            "{text}"
+        );
+    }
 
     // 4. An import added: the new file is watched, and editing it alone reloads.
     let from = w.count();

@@ -2,15 +2,17 @@
 //!
 //! [`Renderer::new`] does the one-time work, in order:
 //! 1. the scene entities ([`Entities::build`]: assets, one BVH per mesh, `params`);
-//! 2. the render kernel's pipeline ([`create_kernel`] from the compiled `naga::Module`, with exactly
-//!    the bindings the compiler lists and the tile uniform at the `tile` binding);
+//! 2. the render kernel's pipeline (from the compiled `naga::Module`, with exactly the bindings the
+//!    compiler lists and the tile uniform at the `tile` binding), created with the bounds kernel
+//!    of step 3 as one set by [`create_scene_kernels`] (memory and disk caches, parallel compile,
+//!    per-kernel accounting in [`RenderStats::kernels`]). Each new pipeline's warm-up dispatch,
+//!    where lavapipe compiles it (seconds for the full kernel), runs there, so the compile belongs
+//!    to the setup, not to the render time;
 //! 3. for scenes with custom geometry, the bounds kernel: instances uploaded in object order, one
 //!    invocation per object, boxes read back from `accum` and handed to the entities, which then
 //!    build the scene-level BVH;
 //! 4. the first upload of every buffer ([`GpuScene::upload`]), so data above a device limit fails
-//!    here with the buffer set's typed error naming the binding;
-//! 5. a one-pixel warm-up dispatch of the render kernel: lavapipe compiles a pipeline at its first
-//!    dispatch (seconds for the full kernel), which belongs to the setup, not to the render time.
+//!    here with the buffer set's typed error naming the binding.
 //!
 //! [`Renderer::render`] then renders the whole image: it rebuilds the scene-level BVH if an object
 //! moved ([`Renderer::set_transform`]), uploads what changed, zeroes the accumulation buffer and the
@@ -46,15 +48,15 @@ use rtc_bvh::Aabb;
 /// The BVH builder presets ([`RenderOptions::bvh`]), re-exported for callers without `rtc-bvh`.
 pub use rtc_bvh::BuildPreset;
 use rtc_compiler::abi;
-use rtc_compiler::kernel::wavefront::Stage;
+use rtc_compiler::kernel::wavefront::STAGES;
 /// The execution models ([`RenderOptions::exec`]), re-exported for callers.
 pub use rtc_compiler::kernel::ExecModel;
 use rtc_compiler::kernel::{CompiledScene, BOUNDS_ENTRY, BOUNDS_WORKGROUP, RENDER_ENTRY};
 
 use crate::assets::AssetRoots;
 use crate::gpu::{
-    create_kernel, dispatch_once, plan_tiles, BindingDesc, BufferLimits, DispatchError, Gpu,
-    Kernel, KernelDesc, KernelSource, PipelineError, RoundKernels, TileConfig, TileDispatcher,
+    dispatch_once, plan_tiles, BufferLimits, DispatchError, Gpu, Kernel, KernelDesc, KernelReport,
+    KernelSource, PipelineCacheStatus, PipelineError, RoundKernels, TileConfig, TileDispatcher,
 };
 use crate::image_out::{ImageError, LinearImage};
 use crate::scene::{
@@ -126,6 +128,9 @@ pub enum RenderError {
     /// The wavefront model was asked for, but the scene was compiled without its stage kernels.
     #[error("internal error: the wavefront model needs the scene compiled with its stage kernels (KernelOptions::exec)")]
     NoStageKernels,
+    /// The kernel set came back shorter than asked for.
+    #[error("internal error: a kernel of the set was not created")]
+    KernelSet,
     /// The scene has custom geometry but the compile produced no bounds kernel.
     #[error("internal error: the scene has custom geometry but no bounds kernel was compiled")]
     NoBoundsKernel,
@@ -161,9 +166,13 @@ pub struct RenderStats {
     pub load_ms: f64,
     /// Milliseconds running the bounds kernel (first render of a scene with custom geometry).
     pub bounds_ms: f64,
-    /// Milliseconds creating the kernel pipelines, including a one-pixel warm-up dispatch that
-    /// absorbs drivers' compile-at-first-dispatch (first render only).
+    /// Milliseconds creating the kernel pipelines, including the warm-up dispatches that absorb
+    /// drivers' compile-at-first-dispatch (first render only).
     pub pipeline_ms: f64,
+    /// Each kernel of the scene: compiled or reused, and its cost (first render only).
+    pub kernels: Vec<KernelReport>,
+    /// The on-disk pipeline cache (first render only).
+    pub pipeline_cache: Option<PipelineCacheStatus>,
     /// Milliseconds uploading: CPU staging plus the transfer before the first pass.
     pub upload_ms: f64,
     /// Bytes uploaded.
@@ -219,8 +228,10 @@ pub struct RenderResult {
 }
 
 /// One-time costs, reported with the first render.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Debug, Default)]
 struct Setup {
+    kernels: Vec<KernelReport>,
+    pipeline_cache: Option<PipelineCacheStatus>,
     bvh_ms: f64,
     load_ms: f64,
     bounds_ms: f64,
@@ -294,10 +305,17 @@ fn max_rounds(compiled: &CompiledScene) -> u32 {
     u32::try_from(rounds.min(1 << 24)).unwrap_or(1 << 24)
 }
 
-/// The wavefront model's tiles: the adapter's tiles, halved along their longer side until one
-/// tile's path records (`path_words` words a pixel) fit one storage binding of at most
-/// `max_binding` bytes.
-fn wavefront_tiles(mut tiles: TileConfig, path_words: u32, max_binding: u64) -> TileConfig {
+/// The wavefront model's tiles: the adapter's tiles, no larger than the image (rounded up to
+/// whole 8 x 8 workgroups), halved along their longer side until one tile's path records
+/// (`path_words` words a pixel) fit one storage binding of at most `max_binding` bytes.
+fn wavefront_tiles(
+    mut tiles: TileConfig,
+    [width, height]: [u32; 2],
+    path_words: u32,
+    max_binding: u64,
+) -> TileConfig {
+    tiles.tile_width = tiles.tile_width.min(width.next_multiple_of(8)).max(8);
+    tiles.tile_height = tiles.tile_height.min(height.next_multiple_of(8)).max(8);
     let bytes = |t: &TileConfig| {
         u64::from(t.tile_width) * u64::from(t.tile_height) * u64::from(path_words) * 4
     };
@@ -338,6 +356,125 @@ fn declared_bindings(
     }
     out.sort_by_key(|b| b.binding);
     Ok(out)
+}
+
+/// A scene's kernels, created as one set ([`create_scene_kernels`]).
+#[derive(Debug)]
+pub struct SceneKernels {
+    /// The render kernel (megakernel), or the stage kernels in `wavefront::STAGES` order.
+    pub render: Vec<Kernel>,
+    /// The execution model `render` is for.
+    pub exec: ExecModel,
+    /// The bounds kernel and the ABI bindings it declares, when it was asked for.
+    pub bounds: Option<(Kernel, Vec<&'static abi::BindingDesc>)>,
+    /// Every ABI binding the render or stage kernels declare (the bounds kernel's are in
+    /// `bounds`).
+    pub bindings: Vec<&'static abi::BindingDesc>,
+}
+
+/// Creates the kernels of `compiled` for `exec` as one set with [`Gpu::create_kernels`] (memory
+/// and disk caches, parallel creation, warm-up, per-kernel accounting in [`Kernel::report`]): the
+/// render kernel or the wavefront model's five stage kernels, and the bounds kernel when
+/// `with_bounds` (a scene with custom geometry). Used by [`Renderer::new`] and by `rtc compile
+/// --timings driver`.
+pub fn create_scene_kernels(
+    gpu: &Gpu,
+    compiled: &CompiledScene,
+    exec: ExecModel,
+    with_bounds: bool,
+) -> Result<SceneKernels, RenderError> {
+    let tile = abi::binding("tile").ok_or(RenderError::NoTileBinding)?;
+    if !compiled.bindings.iter().any(|b| b.binding == tile.binding) {
+        return Err(RenderError::NoTileBinding);
+    }
+    // (label, module, entry point, ABI bindings) of each render or stage kernel.
+    let mut parts: Vec<(
+        String,
+        &naga::Module,
+        &'static str,
+        Vec<&'static abi::BindingDesc>,
+    )> = Vec::new();
+    match exec {
+        ExecModel::Megakernel => parts.push((
+            "rtc render".to_string(),
+            &compiled.render,
+            RENDER_ENTRY,
+            compiled.bindings.clone(),
+        )),
+        ExecModel::Wavefront => {
+            let stages = compiled
+                .stages
+                .as_ref()
+                .ok_or(RenderError::NoStageKernels)?;
+            if stages.iter().map(|s| s.stage).ne(STAGES) {
+                return Err(RenderError::NoStageKernels);
+            }
+            for s in stages {
+                parts.push((
+                    format!("rtc {}", s.stage.entry()),
+                    &s.module,
+                    s.stage.entry(),
+                    s.bindings.clone(),
+                ));
+            }
+        }
+    }
+    let runtime: Vec<Vec<crate::gpu::BindingDesc>> = parts
+        .iter()
+        .map(|(_, _, _, b)| GpuScene::runtime_bindings(b))
+        .collect();
+    let bounds_module = match (&compiled.bounds, with_bounds) {
+        (Some(module), true) => {
+            let declared = declared_bindings(module, "bounds")?;
+            let bindings = GpuScene::runtime_bindings(&declared);
+            Some((module, declared, bindings))
+        }
+        (None, true) => return Err(RenderError::NoBoundsKernel),
+        (_, false) => None,
+    };
+    let mut descs: Vec<KernelDesc<'_>> = parts
+        .iter()
+        .zip(&runtime)
+        .map(|((label, module, entry, _), bindings)| KernelDesc {
+            label,
+            source: KernelSource::Naga(Box::new((*module).clone())),
+            entry_point: entry,
+            bindings,
+            tile_binding: Some(tile.binding),
+        })
+        .collect();
+    if let Some((module, _, bindings)) = &bounds_module {
+        descs.push(KernelDesc {
+            label: "rtc bounds",
+            source: KernelSource::Naga(Box::new((*module).clone())),
+            entry_point: BOUNDS_ENTRY,
+            bindings,
+            tile_binding: None,
+        });
+    }
+    let mut kernels = gpu.create_kernels(descs).into_iter();
+    let mut render = Vec::with_capacity(parts.len());
+    for _ in 0..parts.len() {
+        render.push(kernels.next().ok_or(RenderError::KernelSet)??);
+    }
+    let bounds = match bounds_module {
+        Some((_, declared, _)) => Some((kernels.next().ok_or(RenderError::KernelSet)??, declared)),
+        None => None,
+    };
+    let mut bindings = Vec::new();
+    for (_, _, _, b) in &parts {
+        for &d in b {
+            if !bindings.contains(&d) {
+                bindings.push(d);
+            }
+        }
+    }
+    Ok(SceneKernels {
+        render,
+        exec,
+        bounds,
+        bindings,
+    })
 }
 
 impl<'g> Renderer<'g> {
@@ -384,80 +521,29 @@ impl<'g> Renderer<'g> {
                 es.tlas_ms
             };
 
-        // Pipelines.
+        // Pipelines: the render kernel and, for custom geometry, the bounds kernel.
         let start = Instant::now();
-        let tile = abi::binding("tile").ok_or(RenderError::NoTileBinding)?;
-        if !compiled.bindings.iter().any(|b| b.binding == tile.binding) {
-            return Err(RenderError::NoTileBinding);
-        }
-        let (kernels, mut all) = match options.exec.unwrap_or(compiled.exec) {
+        let exec = options.exec.unwrap_or(compiled.exec);
+        let SceneKernels {
+            render,
+            bounds,
+            bindings: mut all,
+            ..
+        } = create_scene_kernels(gpu, compiled, exec, entities.needs_bounds())?;
+        setup.kernels = render
+            .iter()
+            .chain(bounds.as_ref().map(|(k, _)| k))
+            .map(Kernel::report)
+            .collect();
+        setup.pipeline_cache = Some(gpu.pipeline_cache_status());
+        let kernels = match exec {
             ExecModel::Megakernel => {
-                let render_bindings = GpuScene::runtime_bindings(&compiled.bindings);
-                let kernel = create_kernel(
-                    gpu,
-                    KernelDesc {
-                        label: "rtc render",
-                        source: KernelSource::Naga(Box::new(compiled.render.clone())),
-                        entry_point: RENDER_ENTRY,
-                        bindings: &render_bindings,
-                        tile_binding: Some(tile.binding),
-                    },
-                )?;
-                (Kernels::Mega(kernel), compiled.bindings.clone())
+                Kernels::Mega(render.into_iter().next().ok_or(RenderError::KernelSet)?)
             }
-            ExecModel::Wavefront => {
-                let stages = compiled
-                    .stages
-                    .as_ref()
-                    .ok_or(RenderError::NoStageKernels)?;
-                let mut kernels = Vec::with_capacity(stages.len());
-                let mut all: Vec<&'static abi::BindingDesc> = Vec::new();
-                for s in stages {
-                    let bindings: Vec<BindingDesc> = GpuScene::runtime_bindings(&s.bindings);
-                    let label = format!("rtc {}", s.stage.entry());
-                    kernels.push(create_kernel(
-                        gpu,
-                        KernelDesc {
-                            label: &label,
-                            source: KernelSource::Naga(Box::new(s.module.clone())),
-                            entry_point: s.stage.entry(),
-                            bindings: &bindings,
-                            tile_binding: Some(tile.binding),
-                        },
-                    )?);
-                    all.extend(s.bindings.iter().copied());
-                }
-                debug_assert_eq!(
-                    stages.iter().map(|s| s.stage).collect::<Vec<Stage>>(),
-                    rtc_compiler::kernel::wavefront::STAGES.to_vec()
-                );
-                (
-                    Kernels::Wavefront {
-                        stages: kernels,
-                        max_rounds: max_rounds(compiled),
-                    },
-                    all,
-                )
-            }
-        };
-        let bounds = match (&compiled.bounds, entities.needs_bounds()) {
-            (Some(module), true) => {
-                let declared = declared_bindings(module, "bounds")?;
-                let bindings = GpuScene::runtime_bindings(&declared);
-                let kernel = create_kernel(
-                    gpu,
-                    KernelDesc {
-                        label: "rtc bounds",
-                        source: KernelSource::Naga(Box::new(module.clone())),
-                        entry_point: BOUNDS_ENTRY,
-                        bindings: &bindings,
-                        tile_binding: None,
-                    },
-                )?;
-                Some((kernel, declared))
-            }
-            (None, true) => return Err(RenderError::NoBoundsKernel),
-            (_, false) => None,
+            ExecModel::Wavefront => Kernels::Wavefront {
+                stages: render,
+                max_rounds: max_rounds(compiled),
+            },
         };
         setup.pipeline_ms = ms_since(start);
 
@@ -471,7 +557,7 @@ impl<'g> Renderer<'g> {
         if let Kernels::Wavefront { .. } = kernels {
             // One tile's path records in one binding, within WebGPU's default 128 MiB.
             let max = gpu.limits().max_storage_buffer_binding_size.min(128 << 20);
-            tiles = wavefront_tiles(tiles, compiled.path_words, max);
+            tiles = wavefront_tiles(tiles, [width, height], compiled.path_words, max);
             scene.set_path_bytes(
                 u64::from(tiles.tile_width)
                     * u64::from(tiles.tile_height)
@@ -520,36 +606,7 @@ impl<'g> Renderer<'g> {
             }
         }
 
-        let mut dispatcher = TileDispatcher::new(tiles);
-        // Some drivers (lavapipe) compile a pipeline at its first dispatch, which took seconds
-        // for the full kernel: one 1×1 dispatch here keeps that out of the render time. What it
-        // writes to `accum` (and `paths`) is cleared before the first pass.
-        let start = Instant::now();
-        match &kernels {
-            Kernels::Mega(kernel) => {
-                dispatcher.dispatch(gpu, kernel, scene.buffers(), [1, 1], 0, &mut |_, _| {})?;
-            }
-            Kernels::Wavefront { stages, max_rounds } => {
-                if std::env::var_os("RTC_TMP_STAGE_TIMES").is_some() {
-                    for k in stages {
-                        let t = Instant::now();
-                        dispatcher.dispatch(gpu, k, scene.buffers(), [1, 1], 0, &mut |_, _| {})?;
-                        eprintln!("{}: {:.0} ms", k.label(), ms_since(t));
-                    }
-                }
-                let rounds =
-                    Kernels::rounds(stages, *max_rounds).ok_or(RenderError::NoStageKernels)?;
-                dispatcher.dispatch_rounds(
-                    gpu,
-                    &rounds,
-                    scene.buffers(),
-                    [1, 1],
-                    0,
-                    &mut |_, _| {},
-                )?;
-            }
-        }
-        setup.pipeline_ms += ms_since(start);
+        let dispatcher = TileDispatcher::new(tiles);
         Ok(Self {
             gpu,
             entities,
@@ -691,7 +748,13 @@ impl<'g> Renderer<'g> {
         }
 
         let es = self.entities.stats();
-        let mut warnings = self.entities.warnings().to_vec();
+        let mut warnings: Vec<String> = self
+            .entities
+            .warnings()
+            .iter()
+            .cloned()
+            .chain(gpu.take_warnings())
+            .collect();
         if counters.shadow_overflow > 0 {
             warnings.push(format!(
                 "{} shadow queries were answered \"unoccluded\" without tracing: a shading step of the wavefront model records at most {} (render with the megakernel for this scene)",
@@ -714,6 +777,8 @@ impl<'g> Renderer<'g> {
             load_ms: setup.load_ms,
             bounds_ms: setup.bounds_ms,
             pipeline_ms: setup.pipeline_ms,
+            kernels: setup.kernels,
+            pipeline_cache: setup.pipeline_cache,
             upload_ms: setup_upload_ms + report.stats.upload_ms + flush_ms,
             bytes_uploaded: setup_bytes + report.stats.bytes_uploaded,
             buffers_written: written,

@@ -21,6 +21,9 @@
 //! SAH cost of the scene-level BVH and of the object-level BVHs (their mean weighted by
 //! triangles).
 //!
+//! `--compile` measures compile times instead (time to first pixel of every example with a cold
+//! driver cache, and a material edit under `rtc watch`): [`compile_time`].
+//!
 //! Errors (a missing or unreadable reference, a reference of another size, a bad output name)
 //! are one `error:` line and exit code 1 (2 for usage errors), found before the long renders
 //! where possible; nothing here panics on user input.
@@ -42,12 +45,23 @@ use std::path::{Path, PathBuf};
 /// The reference's sample count when neither `--reference` nor `--reference-spp` is given.
 pub const DEFAULT_REFERENCE_SPP: u32 = 1024;
 
+pub mod compile_time;
+
 /// Arguments of `rtc bench`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// The scene file.
-    #[arg(value_name = "SCENE")]
-    pub path: PathBuf,
+    /// The scene file (with `--compile`: a scene file, or a folder of examples each holding a
+    /// `scene.rt`; default `examples`).
+    #[arg(value_name = "SCENE", required_unless_present = "compile")]
+    pub path: Option<PathBuf>,
+    /// Measure compile times instead: time to first pixel of every example with a cold driver
+    /// cache, and a material edit's time to the new preview (see `compile_time`).
+    #[arg(long)]
+    pub compile: bool,
+    /// With `--compile`: the execution models to measure, comma-separated (default: all).
+    #[arg(long, value_name = "MODEL", value_delimiter = ',', requires = "compile",
+          value_parser = clap::builder::PossibleValuesParser::new(compile_time::EXEC_MODELS))]
+    pub exec: Vec<String>,
     /// The reference image (EXR for linear values; a PNG is decoded from sRGB).
     #[arg(long, value_name = "FILE", conflicts_with = "reference_spp")]
     pub reference: Option<PathBuf>,
@@ -214,6 +228,12 @@ fn setup_of(r: &RenderResult) -> Setup {
 
 /// Runs `rtc bench`.
 pub fn run(args: &Args, ctx: &Context) -> Exit {
+    if args.compile {
+        return compile_time::run(args, ctx);
+    }
+    let Some(path) = &args.path else {
+        return report::usage_error("a scene file is required", ctx.color);
+    };
     // Every output is checked before anything is compiled or rendered.
     let outputs = [
         (&args.csv, "--csv", "csv", "CSV"),
@@ -270,7 +290,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     };
 
     let compiled = match compile(
-        &args.path,
+        path,
         args.scene.name.as_deref(),
         &KernelOptions::default(),
         ctx,
@@ -451,7 +471,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     }
     if let Some(p) = &args.json {
         let value = json(
-            &args.path,
+            path,
             size,
             &reference_desc,
             setup,
@@ -462,7 +482,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         outputs.push((p, format!("{value:#}\n")));
     }
     if let Some(p) = &args.plot {
-        outputs.push((p, svg_plot(&rows, &args.path, size, &reference_desc)));
+        outputs.push((p, svg_plot(&rows, path, size, &reference_desc)));
     }
     for (path, text) in outputs {
         if let Err(e) = std::fs::write(path, text) {

@@ -4,19 +4,26 @@
 //! `manifest.json`. The compile, targets included, is `rtc_compiler::pipeline::compile`; this
 //! command only writes its outputs to files.
 //!
+//! `--timings` prints how long each phase of the compiler took (`CompiledScene::timings`);
+//! `--timings driver` then creates the scene's kernels on the GPU (`--adapter`) as `rtc render`
+//! does and prints, per kernel, whether it was compiled or reused and the driver's compile time.
+//! Without an adapter it says so and still exits 0.
+//!
 //! `--all-programs` builds the unspecialised kernel (every program of the loaded modules, every
 //! feature) for comparison. `--emit ast|hir|naga` prints an intermediate form instead of writing files:
 //! the syntax tree, the typed HIR as source-like text (`rtc_compiler::sema::hir::print`), or the
 //! render kernel as WGSL with naga handles (`rtc_compiler::back::naga_listing`).
 
 use super::Context;
-use crate::args::MessageFormat;
+use crate::args::{AdapterArgs, MessageFormat};
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::back::{self, Target};
 use rtc_compiler::kernel::{self, KernelOptions};
 use rtc_compiler::link::LinkOptions;
 use rtc_compiler::pipeline::{self, Compiled};
+use rtc_runtime::gpu::{Gpu, KernelReport};
+use rtc_runtime::render::create_scene_kernels;
 use std::path::PathBuf;
 
 /// An intermediate form `--emit` prints.
@@ -31,6 +38,16 @@ pub enum Emit {
     /// The render kernel's naga module as WGSL, each struct, constant, global and function under
     /// a `// kind [i]` comment naming its naga handle.
     Naga,
+}
+
+/// What `--timings` prints.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Timings {
+    /// The compiler's phases.
+    Compiler,
+    /// The compiler's phases, then each kernel created on the GPU (`--adapter`): compiled or
+    /// reused, and the driver's compile time.
+    Driver,
 }
 
 /// Arguments of `rtc compile`.
@@ -60,6 +77,13 @@ pub struct Args {
     /// How to print diagnostics.
     #[arg(long, value_enum, default_value_t = MessageFormat::Human)]
     pub message_format: MessageFormat,
+    /// Print how long each phase of the compile took (`--timings` alone: `compiler`); `driver`
+    /// also creates the kernels on the GPU and prints each one's driver compile time.
+    #[arg(long, value_enum, value_name = "WHAT", num_args = 0..=1, default_missing_value = "compiler")]
+    pub timings: Option<Timings>,
+    /// The GPU for `--timings driver`.
+    #[command(flatten)]
+    pub adapter: AdapterArgs,
 }
 
 pub fn parse_target(s: &str) -> Result<Target, String> {
@@ -186,6 +210,63 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             .join(", "),
         args.out.display()
     ));
+    if let Some(what) = args.timings {
+        term::print(&compiler_timings(&compiled.timings));
+        if what == Timings::Driver {
+            return driver_timings(&compiled, &args.adapter, ctx);
+        }
+    }
+    Exit::Success
+}
+
+/// The compiler's phases, one per line, and their sum.
+fn compiler_timings(phases: &[(&'static str, f64)]) -> String {
+    let mut out = String::from("compiler phases:\n");
+    for (name, ms) in phases {
+        out.push_str(&format!("  {name:<32} {ms:>10.2} ms\n"));
+    }
+    let total: f64 = phases.iter().map(|(_, ms)| ms).sum();
+    out.push_str(&format!("  {:<32} {total:>10.2} ms\n", "total"));
+    out
+}
+
+/// Creates the scene's kernels on the chosen adapter and prints what each cost; without an
+/// adapter, says so (and still succeeds: the compile did).
+fn driver_timings(compiled: &kernel::CompiledScene, adapter: &AdapterArgs, ctx: &Context) -> Exit {
+    let choice = match adapter.choice() {
+        Ok(c) => c,
+        Err(e) => return report::usage_error(&e, ctx.color),
+    };
+    let gpu = match Gpu::new(&choice) {
+        Ok(gpu) => gpu,
+        Err(e) => {
+            term::print(&format!(
+                "driver: no per-kernel compile times: no GPU adapter could be had ({e})\n"
+            ));
+            return Exit::Success;
+        }
+    };
+    let kernels =
+        match create_scene_kernels(&gpu, compiled, compiled.exec, compiled.bounds.is_some()) {
+            Ok(k) => k,
+            Err(e) => return super::render::fail(&e.to_string(), ctx),
+        };
+    let reports: Vec<KernelReport> = kernels
+        .render
+        .iter()
+        .chain(kernels.bounds.as_ref().map(|(k, _)| k))
+        .map(|k| k.report())
+        .collect();
+    let mut out = format!("driver ({}):\n", gpu.description());
+    out.push_str(&super::render::kernel_lines(&reports, "  "));
+    out.push_str(&format!(
+        "  pipeline cache: {}\n",
+        gpu.pipeline_cache_status()
+    ));
+    term::print(&out);
+    for w in gpu.take_warnings() {
+        super::render::warn(&w, ctx);
+    }
     Exit::Success
 }
 

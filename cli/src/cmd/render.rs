@@ -6,7 +6,8 @@
 //! without touching the GPU); then the adapter is chosen and printed; then the runtime builds the
 //! scene (assets, BVHs, uploads, pipelines) and renders, with a progress bar on stderr when there
 //! are more than a few tiles. At the end it prints the adapter, BVH build, upload and render times
-//! and rays per second (primary rays, and every ray traced) on stdout.
+//! and rays per second (primary rays, and every ray traced) on stdout, with one line per kernel
+//! (compiled or reused, and its driver compile time) and the state of the on-disk pipeline cache.
 //!
 //! A `.gltf` or `.glb` file instead of a scene is rendered through a scene written for it with
 //! sensible defaults (a camera framing it, a light, a background; see [`model`]), and the defaults
@@ -24,7 +25,7 @@ use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::kernel::{compile_scene_with, KernelOptions};
 use rtc_compiler::link::LinkOptions;
-use rtc_runtime::gpu::Gpu;
+use rtc_runtime::gpu::{Gpu, KernelReport};
 use rtc_runtime::image_out::{write_exr, write_png, ToneMap};
 use rtc_runtime::render::{RenderError, RenderOptions, RenderStats, Renderer};
 use std::path::{Path, PathBuf};
@@ -275,6 +276,10 @@ pub fn summary(s: &RenderStats, output: &Path) -> String {
         "  pipelines {:>10.2} ms  (kernel creation and the driver's compile)\n",
         s.pipeline_ms
     ));
+    out.push_str(&kernel_lines(&s.kernels, "    "));
+    if let Some(cache) = &s.pipeline_cache {
+        out.push_str(&format!("    pipeline cache: {cache}\n"));
+    }
     out.push_str(&format!(
         "  upload    {:>10.2} ms  ({:.2} MB)\n",
         s.upload_ms,
@@ -287,6 +292,24 @@ pub fn summary(s: &RenderStats, output: &Path) -> String {
         s.traced_rays_per_second / 1e6,
         s.rays_traced
     ));
+    out
+}
+
+/// One line per kernel: its name, compiled or reused, and milliseconds in all and of the driver
+/// (`create_compute_pipeline` and the warm-up dispatch where lavapipe compiles). Shared by
+/// `rtc render`, `rtc watch` and `rtc compile --timings`.
+pub fn kernel_lines(kernels: &[KernelReport], indent: &str) -> String {
+    let width = kernels.iter().map(|k| k.label.len()).max().unwrap_or(0);
+    let mut out = String::new();
+    for k in kernels {
+        out.push_str(&format!(
+            "{indent}{:<width$}  {:<21}  {:>10.2} ms  (driver {:.2} ms)\n",
+            k.label,
+            k.origin.to_string(),
+            k.total_ms(),
+            k.driver_ms(),
+        ));
+    }
     out
 }
 

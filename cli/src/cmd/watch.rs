@@ -23,7 +23,8 @@
 //! goes on; the outputs of the last good build are left as they were (nothing is written before the
 //! compile succeeded). Each reload prints what changed, how long each phase took and the latency
 //! from the edit (the newest modification time of the changed files) to the emitted code and to the
-//! new preview. Ctrl-C ends the watch with exit code 0. A GPU that cannot be had disables the preview
+//! new preview, and which of the preview's kernels were compiled and which reused. Ctrl-C ends
+//! the watch with exit code 0. A GPU that cannot be had disables the preview
 //! (with an error line), not the watch.
 
 use super::compile::{parse_target, write_outputs, OutputError};
@@ -41,7 +42,7 @@ use rtc_compiler::link::LinkOptions;
 use rtc_compiler::sema::hir::{ConstValue, Geometry, MeshAsset, SceneDesc, TextureAsset};
 use rtc_compiler::SourceMap;
 use rtc_runtime::assets::AssetRoots;
-use rtc_runtime::gpu::{AdapterChoice, Gpu};
+use rtc_runtime::gpu::{AdapterChoice, Gpu, KernelOrigin, KernelReport};
 use rtc_runtime::render::{RenderOptions, Renderer};
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -137,6 +138,8 @@ pub struct Reload {
     pub edit_to_preview_ms: Option<f64>,
     /// Modules parsed again and modules taken from the cache.
     pub parsed: (u32, u32),
+    /// The preview's kernels: compiled or reused, and their cost.
+    pub kernels: Vec<KernelReport>,
 }
 
 /// A watched scene: what the last build read and produced. Used by `rtc watch` and `rtc view`.
@@ -250,6 +253,7 @@ impl Session {
             edit_to_code_ms: None,
             edit_to_preview_ms: None,
             parsed: (0, 0),
+            kernels: Vec::new(),
         };
         if !first && reload.changed.is_empty() {
             return reload;
@@ -496,6 +500,13 @@ impl Session {
         reload
             .phases
             .push(("prepare preview (scene, pipelines)".to_owned(), prepare_ms));
+        reload.kernels = result.stats.kernels.clone();
+        for w in gpu.take_warnings().iter().chain(&result.stats.warnings) {
+            reload.messages.push_str(&format!(
+                "{}: {w}\n",
+                term::paint("warning", 33, self.color)
+            ));
+        }
         reload.phases.push((
             format!(
                 "render preview {}x{} at {} spp",
@@ -656,6 +667,18 @@ pub fn describe(r: &Reload, color: bool) -> String {
     }
     for (name, ms) in &r.phases {
         out.push_str(&format!("  {name:<32} {ms:>9.2} ms\n"));
+    }
+    if !r.kernels.is_empty() {
+        let compiled = r
+            .kernels
+            .iter()
+            .filter(|k| k.origin == KernelOrigin::Compiled)
+            .count();
+        out.push_str(&format!(
+            "  kernels: {compiled} compiled, {} reused\n",
+            r.kernels.len() - compiled
+        ));
+        out.push_str(&super::render::kernel_lines(&r.kernels, "    "));
     }
     match r.status {
         Status::Built | Status::Rerendered => {

@@ -1,6 +1,8 @@
 //! The language-independent GPU core of the runtime: one [`Gpu`] context (instance, adapter,
-//! device, queue), compute [`Kernel`]s with explicit bind group layouts, a persistent
-//! [`BufferSet`] keyed by binding, and tiled dispatch with read-back ([`TileDispatcher`]).
+//! device, queue), compute [`Kernel`]s with explicit bind group layouts, created one at a time or
+//! as a set ([`Gpu::create_kernels`]: memory cache, parallel creation, warm-up, accounting, the
+//! on-disk pipeline cache of `pipeline_cache.rs`), a persistent [`BufferSet`] keyed by binding,
+//! and tiled dispatch with read-back ([`TileDispatcher`]).
 //!
 //! The layer knows nothing of the rtc language: a kernel is a compute entry point plus a list of
 //! [`BindingDesc`]s in bind group 0, exactly what the compiler's manifest describes.
@@ -17,8 +19,11 @@
 mod adapter;
 mod buffers;
 mod dispatch;
+mod kernels;
 mod pipeline;
+mod pipeline_cache;
 
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, PoisonError};
 use std::time::Instant;
 
@@ -28,10 +33,12 @@ pub use dispatch::{
     dispatch_once, plan_tiles, read_buffer, read_vec4_f32, DispatchError, DispatchReport,
     RoundKernels, RoundsReport, TileConfig, TileDispatcher, TileParams, TILE_PARAMS_WGSL,
 };
+pub use kernels::{pipelines_created, KernelOrigin, KernelReport};
 pub use pipeline::{
     create_kernel, BindingDesc, BindingKind, Kernel, KernelDesc, KernelSource, PipelineError,
     PipelineTimings,
 };
+pub use pipeline_cache::{PipelineCacheConfig, PipelineCacheStatus, PIPELINE_CACHE_ENV};
 
 /// Why no GPU context could be created.
 #[derive(Debug, thiserror::Error)]
@@ -128,23 +135,66 @@ pub struct Gpu {
     uncaptured: Arc<Mutex<Vec<String>>>,
     /// Recently created kernels by [`pipeline`]'s key, most recent last (at most [`KERNEL_CACHE`]).
     kernels: Mutex<Vec<(u64, Kernel)>>,
+    /// Pipelines this context created.
+    pipelines_created: AtomicU64,
+    /// The on-disk pipeline cache, where enabled and supported.
+    disk_cache: Option<pipeline_cache::DiskCache>,
+    pipeline_cache_status: PipelineCacheStatus,
+    /// Problems that did not stop anything (an ignored cache file), until taken.
+    warnings: Mutex<Vec<String>>,
 }
 
-/// How many kernels a [`Gpu`] keeps for reuse.
-const KERNEL_CACHE: usize = 8;
+/// How many kernels a [`Gpu`] keeps for reuse (a wavefront scene has a dozen stage kernels).
+const KERNEL_CACHE: usize = 32;
+
+/// How to set up a [`Gpu`] besides the adapter.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct GpuOptions {
+    /// The on-disk pipeline cache.
+    pub pipeline_cache: PipelineCacheConfig,
+}
+
+impl GpuOptions {
+    /// The options the environment asks for ([`PipelineCacheConfig::from_env`]).
+    pub fn from_env() -> Self {
+        Self {
+            pipeline_cache: PipelineCacheConfig::from_env(),
+        }
+    }
+}
 
 impl Gpu {
     /// Chooses an adapter (see [`AdapterChoice`] for the rules) and creates a device with the
-    /// adapter's own limits.
+    /// adapter's own limits; the pipeline cache is configured from the environment
+    /// ([`GpuOptions::from_env`]).
     pub fn new(choice: &AdapterChoice) -> Result<Self, AdapterError> {
+        Self::with_options(choice, &GpuOptions::from_env())
+    }
+
+    /// [`Gpu::new`] with explicit options.
+    pub fn with_options(
+        choice: &AdapterChoice,
+        options: &GpuOptions,
+    ) -> Result<Self, AdapterError> {
         let (adapter, mut init_timings) = adapter::select(choice)?;
         let info = adapter.get_info();
         let description = AdapterDescription::from_info(&info);
 
+        let cache_dir = match &options.pipeline_cache {
+            PipelineCacheConfig::Off => Err(PipelineCacheStatus::Off),
+            PipelineCacheConfig::Dir(dir) => match pipeline_cache::DiskCache::supported(&adapter) {
+                Ok(()) => Ok(dir.clone()),
+                Err(reason) => Err(PipelineCacheStatus::Unsupported { reason }),
+            },
+        };
         let start = Instant::now();
         let descriptor = wgpu::DeviceDescriptor {
             label: Some("rtc device"),
-            required_features: wgpu::Features::empty(),
+            required_features: if cache_dir.is_ok() {
+                wgpu::Features::PIPELINE_CACHE
+            } else {
+                wgpu::Features::empty()
+            },
             required_limits: adapter.limits(),
             experimental_features: wgpu::ExperimentalFeatures::disabled(),
             memory_hints: wgpu::MemoryHints::Performance,
@@ -168,6 +218,13 @@ impl Gpu {
         }));
 
         let limits = GpuLimits::from_wgpu(&device.limits());
+        let (disk_cache, pipeline_cache_status, warnings) = match cache_dir {
+            Ok(dir) => {
+                let opened = pipeline_cache::DiskCache::open(&device, &adapter, &dir);
+                (opened.cache, opened.status, opened.warnings)
+            }
+            Err(status) => (None, status, Vec::new()),
+        };
         Ok(Self {
             adapter,
             device,
@@ -177,7 +234,47 @@ impl Gpu {
             init_timings,
             uncaptured,
             kernels: Mutex::new(Vec::new()),
+            pipelines_created: AtomicU64::new(0),
+            disk_cache,
+            pipeline_cache_status,
+            warnings: Mutex::new(warnings),
         })
+    }
+
+    /// How many compute pipelines this context has created (memory-cache hits do not count).
+    pub fn pipelines_created(&self) -> u64 {
+        self.pipelines_created.load(Ordering::Relaxed)
+    }
+
+    fn count_pipeline_creation(&self) {
+        self.pipelines_created.fetch_add(1, Ordering::Relaxed);
+        kernels::count_global();
+    }
+
+    /// What became of the on-disk pipeline cache (updated when a write shows that the driver
+    /// keeps nothing in it).
+    pub fn pipeline_cache_status(&self) -> PipelineCacheStatus {
+        match (&self.disk_cache, &self.pipeline_cache_status) {
+            (Some(disk), PipelineCacheStatus::Active { bytes, .. }) => disk.status(*bytes),
+            (_, status) => status.clone(),
+        }
+    }
+
+    fn disk_cache(&self) -> Option<&pipeline_cache::DiskCache> {
+        self.disk_cache.as_ref()
+    }
+
+    /// Problems since the last call that did not stop anything (an ignored or unwritable
+    /// pipeline cache file), one sentence each.
+    pub fn take_warnings(&self) -> Vec<String> {
+        std::mem::take(&mut *self.warnings.lock().unwrap_or_else(PoisonError::into_inner))
+    }
+
+    fn warn(&self, message: String) {
+        self.warnings
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .push(message);
     }
 
     /// A kernel created earlier on this device from the same module and bindings, if kept.
@@ -243,18 +340,9 @@ impl Gpu {
 
     /// Runs `f` inside validation, out-of-memory and internal error scopes and returns its value
     /// with the first error raised, rendered with its source chain.
+    /// Error scopes are per thread in wgpu, so kernels may be created on several threads at once.
     pub fn scoped<T>(&self, f: impl FnOnce() -> T) -> (T, Option<String>) {
-        let internal = self.device.push_error_scope(wgpu::ErrorFilter::Internal);
-        let oom = self.device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
-        let validation = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let value = f();
-        let errors = [
-            pollster::block_on(validation.pop()),
-            pollster::block_on(oom.pop()),
-            pollster::block_on(internal.pop()),
-        ];
-        let first = errors.into_iter().flatten().next().map(|e| error_chain(&e));
-        (value, first)
+        scoped_on(&self.device, f)
     }
 
     /// Blocks until all submitted work is done.
@@ -263,6 +351,21 @@ impl Gpu {
             .poll(wgpu::PollType::wait_indefinitely())
             .map(|_| ())
     }
+}
+
+/// [`Gpu::scoped`] on a bare device (while the `Gpu` is being built).
+fn scoped_on<T>(device: &wgpu::Device, f: impl FnOnce() -> T) -> (T, Option<String>) {
+    let internal = device.push_error_scope(wgpu::ErrorFilter::Internal);
+    let oom = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+    let validation = device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let value = f();
+    let errors = [
+        pollster::block_on(validation.pop()),
+        pollster::block_on(oom.pop()),
+        pollster::block_on(internal.pop()),
+    ];
+    let first = errors.into_iter().flatten().next().map(|e| error_chain(&e));
+    (value, first)
 }
 
 /// Renders an error and all its sources on one line (wgpu's `Display` often hides the detail).

@@ -14,6 +14,8 @@
 //! - An optional *tile binding* is a uniform with a dynamic offset holding [`TileParams`]; the
 //!   tiled dispatcher sets one offset per tile.
 //! - Creation time is measured per phase ([`PipelineTimings`]).
+//! - [`prepare`] (CPU work: parse, hash, memory cache, validation) and [`build`] (wgpu and the
+//!   driver) are separate so that `kernels.rs` can run them for a set of kernels on threads.
 //!
 //! `create_shader_module_trusted` (no bounds checks, no loop bounding) is deliberately not used: it
 //! needs `unsafe`, which the workspace denies, it is only sound for kernels proven in bounds, and
@@ -27,6 +29,7 @@ use std::num::NonZeroU64;
 use std::time::Instant;
 
 use super::dispatch::TileParams;
+use super::kernels::{KernelOrigin, KernelReport};
 use super::{elapsed_ms, Gpu};
 
 /// How a binding is accessed by the shader.
@@ -269,6 +272,8 @@ pub struct Kernel {
     tile_binding: Option<u32>,
     workgroup_size: [u32; 3],
     timings: PipelineTimings,
+    origin: KernelOrigin,
+    warm_up_ms: f64,
 }
 
 impl Kernel {
@@ -302,15 +307,72 @@ impl Kernel {
         self.workgroup_size
     }
 
-    /// How long creation took, per phase.
+    /// How long creation took, per phase (for a reused kernel: the look-up only).
     pub fn timings(&self) -> PipelineTimings {
         self.timings
+    }
+
+    /// Whether this kernel was compiled now or reused, and from which cache.
+    pub fn origin(&self) -> KernelOrigin {
+        self.origin
+    }
+
+    /// What creating this kernel cost, for the render summary and `rtc compile --timings`.
+    pub fn report(&self) -> KernelReport {
+        KernelReport {
+            label: self.label.clone(),
+            origin: self.origin,
+            timings: self.timings,
+            warm_up_ms: self.warm_up_ms,
+        }
+    }
+
+    pub(super) fn set_warm_up_ms(&mut self, ms: f64) {
+        self.warm_up_ms = ms;
+    }
+
+    pub(super) fn set_origin(&mut self, origin: KernelOrigin) {
+        self.origin = origin;
     }
 }
 
 /// Creates a compute kernel: parse (WGSL), validate and reflect, check the bindings, build the
-/// explicit layout, create the shader module and the pipeline.
+/// explicit layout, create the shader module and the pipeline, and warm it up. A kernel this
+/// [`Gpu`] created before from the same module and bindings is reused. This is
+/// [`Gpu::create_kernels`] for one kernel.
 pub fn create_kernel(gpu: &Gpu, desc: KernelDesc<'_>) -> Result<Kernel, PipelineError> {
+    gpu.create_kernels(vec![desc]).pop().unwrap_or_else(|| {
+        Err(PipelineError::Wgpu {
+            label: String::new(),
+            stage: "kernel set",
+            message: "no kernel came back".to_string(),
+        })
+    })
+}
+
+/// A kernel after the CPU-side work: reused from the memory cache, or validated and ready for
+/// the driver.
+pub(super) enum Prepared<'a> {
+    /// The memory cache held it (its timings say how long the look-up took).
+    Cached(Kernel),
+    /// Validated; the shader module and pipeline are still to be created.
+    New(Box<Job<'a>>),
+}
+
+/// What [`build`] needs.
+pub(super) struct Job<'a> {
+    pub(super) key: u64,
+    label: String,
+    entry_point: &'a str,
+    module: naga::Module,
+    bindings: BTreeMap<u32, BindingDesc>,
+    tile_binding: Option<u32>,
+    workgroup_size: [u32; 3],
+    timings: PipelineTimings,
+}
+
+/// Parses, hashes, looks up the memory cache, validates and reflects: everything before wgpu.
+pub(super) fn prepare<'a>(gpu: &Gpu, desc: KernelDesc<'a>) -> Result<Prepared<'a>, PipelineError> {
     let label = desc.label.to_string();
     let mut timings = PipelineTimings::default();
 
@@ -338,10 +400,13 @@ pub fn create_kernel(gpu: &Gpu, desc: KernelDesc<'_>) -> Result<Kernel, Pipeline
     );
     if let Some(mut kernel) = gpu.cached_kernel(key) {
         kernel.timings = PipelineTimings {
+            parse_ms: timings.parse_ms,
             validate_ms: elapsed_ms(start),
             ..PipelineTimings::default()
         };
-        return Ok(kernel);
+        kernel.origin = KernelOrigin::MemoryCache;
+        kernel.warm_up_ms = 0.0;
+        return Ok(Prepared::Cached(kernel));
     }
     let key_ms = elapsed_ms(start);
 
@@ -364,12 +429,41 @@ pub fn create_kernel(gpu: &Gpu, desc: KernelDesc<'_>) -> Result<Kernel, Pipeline
         }
     }
     timings.validate_ms = elapsed_ms(start) + key_ms;
+    Ok(Prepared::New(Box::new(Job {
+        key,
+        label,
+        entry_point: desc.entry_point,
+        module,
+        bindings,
+        tile_binding: desc.tile_binding,
+        workgroup_size,
+        timings,
+    })))
+}
+
+/// Creates the shader module, the layouts and the pipeline (with the driver's pipeline cache
+/// when given), counts the creation and keeps the kernel in the memory cache.
+pub(super) fn build(
+    gpu: &Gpu,
+    job: Job<'_>,
+    cache: Option<&wgpu::PipelineCache>,
+) -> Result<Kernel, PipelineError> {
+    let Job {
+        key,
+        label,
+        entry_point,
+        module,
+        bindings,
+        tile_binding,
+        workgroup_size,
+        mut timings,
+    } = job;
 
     let start = Instant::now();
     let (shader, error) = gpu.scoped(|| {
         gpu.device()
             .create_shader_module(wgpu::ShaderModuleDescriptor {
-                label: Some(desc.label),
+                label: Some(&label),
                 source: wgpu::ShaderSource::Naga(Cow::Owned(module)),
             })
     });
@@ -385,26 +479,26 @@ pub fn create_kernel(gpu: &Gpu, desc: KernelDesc<'_>) -> Result<Kernel, Pipeline
     let start = Instant::now();
     let entries: Vec<wgpu::BindGroupLayoutEntry> = bindings
         .values()
-        .map(|b| layout_entry(b, desc.tile_binding == Some(b.binding)))
+        .map(|b| layout_entry(b, tile_binding == Some(b.binding)))
         .collect();
     let ((bind_group_layout, pipeline), error) = gpu.scoped(|| {
         let device = gpu.device();
         let bind_group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some(desc.label),
+            label: Some(&label),
             entries: &entries,
         });
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some(desc.label),
+            label: Some(&label),
             bind_group_layouts: &[Some(&bind_group_layout)],
             immediate_size: 0,
         });
         let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-            label: Some(desc.label),
+            label: Some(&label),
             layout: Some(&layout),
             module: &shader,
-            entry_point: Some(desc.entry_point),
+            entry_point: Some(entry_point),
             compilation_options: wgpu::PipelineCompilationOptions::default(),
-            cache: None,
+            cache,
         });
         (bind_group_layout, pipeline)
     });
@@ -416,15 +510,18 @@ pub fn create_kernel(gpu: &Gpu, desc: KernelDesc<'_>) -> Result<Kernel, Pipeline
         });
     }
     timings.pipeline_ms = elapsed_ms(start);
+    gpu.count_pipeline_creation();
 
     let kernel = Kernel {
         label,
         pipeline,
         bind_group_layout,
         bindings: bindings.into_values().collect(),
-        tile_binding: desc.tile_binding,
+        tile_binding,
         workgroup_size,
         timings,
+        origin: KernelOrigin::Compiled,
+        warm_up_ms: 0.0,
     };
     gpu.cache_kernel(key, kernel.clone());
     Ok(kernel)

@@ -13,11 +13,22 @@ pub mod scene;
 
 use std::path::PathBuf;
 
-use rtc_runtime::gpu::{AdapterChoice, AdapterError, Gpu};
+use rtc_runtime::gpu::{AdapterChoice, AdapterError, Gpu, GpuOptions, PipelineCacheConfig};
 
 /// The default adapter, or `None` (with a `SKIPPED` line naming `test`) when there is none at all.
+/// Its on-disk pipeline cache is off, so tests leave nothing in the user's cache folder.
 pub fn gpu_or_skip(test: &str) -> Option<Gpu> {
-    match Gpu::new(&AdapterChoice::default()) {
+    gpu_with_or_skip(
+        test,
+        &GpuOptions {
+            pipeline_cache: PipelineCacheConfig::Off,
+        },
+    )
+}
+
+/// [`gpu_or_skip`] with explicit options (a pipeline cache in a temporary folder).
+pub fn gpu_with_or_skip(test: &str, options: &GpuOptions) -> Option<Gpu> {
+    match Gpu::with_options(&AdapterChoice::default(), options) {
         Ok(gpu) => {
             eprintln!("{test}: running on {}", gpu.description());
             Some(gpu)

@@ -1,0 +1,193 @@
+//! Pipeline accounting end to end (skipped, saying so, where no adapter exists): `rtc render`
+//! prints one line per kernel and the state of the on-disk pipeline cache, and a second process
+//! with the same cache folder either takes the kernel from the disk cache or says the cache is
+//! unsupported (lavapipe keeps nothing in it); `rtc compile --timings` prints the compiler's phases
+//! and the driver's per-kernel time; `rtc bench --compile` measures a scene in a child process and
+//! writes JSON that parses.
+
+mod common;
+
+use common::{no_gpu, s, scratch, text};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+const SCENE: &str = r#"import "std/cameras/pinhole.rt";
+import "std/materials/lambert.rt";
+import "std/lights/point.rt";
+import "std/miss/gradient.rt";
+
+scene small {
+    settings { width: 16, height: 16, samples: 1, max_depth: 1 }
+    camera Pinhole { position: vec3f(0.0, 1.5, 5.0), look_at: vec3f(0.0, 0.5, 0.0), fov: 40.0 }
+    background SkyGradient {}
+    let grey = Lambert { albedo: vec3f(0.5) };
+    object floor { geometry: quad_mesh(), material: grey, transform: scale(10.0) }
+    light key PointLight { position: vec3f(2.0, 4.0, 3.0), color: vec3f(1.0), intensity: 30.0 }
+}
+"#;
+
+fn scene(dir: &Path) -> PathBuf {
+    let path = dir.join("small.rt");
+    std::fs::write(&path, SCENE).expect("write the scene");
+    path
+}
+
+/// `rtc` with the pipeline cache in `cache`.
+fn rtc_cached(args: &[&str], cache: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rtc"))
+        .args(args)
+        .env("XDG_RUNTIME_DIR", std::env::temp_dir())
+        .env("NO_COLOR", "1")
+        .env("RTC_PIPELINE_CACHE", cache)
+        .output()
+        .expect("run rtc")
+}
+
+/// The kernel line of `label` in a summary.
+fn kernel_line<'a>(summary: &'a str, label: &str) -> &'a str {
+    summary
+        .lines()
+        .find(|l| l.trim_start().starts_with(label) && l.contains("(driver "))
+        .unwrap_or_else(|| panic!("no kernel line for {label}:\n{summary}"))
+}
+
+#[test]
+fn render_reports_kernels_and_the_disk_cache_on_a_second_run() {
+    let dir = scratch("pipelines", "render");
+    let cache = dir.join("cache");
+    let scene = scene(&dir);
+    let png = dir.join("out.png");
+    let args = ["render", s(&scene), "-o", s(&png)];
+    let first = rtc_cached(&args, &cache);
+    if no_gpu(&first) {
+        return;
+    }
+    let t1 = text(&first);
+    assert!(first.status.success(), "{t1}");
+    assert!(kernel_line(&t1, "rtc render").contains("compiled"), "{t1}");
+    assert!(t1.contains("    pipeline cache: "), "{t1}");
+
+    let second = rtc_cached(&args, &cache);
+    let t2 = text(&second);
+    assert!(second.status.success(), "{t2}");
+    let line = kernel_line(&t2, "rtc render");
+    if t2.contains("pipeline cache: unsupported") {
+        // Vulkan drivers that keep nothing in VkPipelineCache (lavapipe), or another backend.
+        assert!(
+            t2.contains("keeps no pipelines") || t2.contains("Vulkan only"),
+            "{t2}"
+        );
+        assert!(line.contains("compiled"), "{t2}");
+    } else {
+        assert!(line.contains("reused (disk cache)"), "{t2}");
+        assert!(t2.contains("1 kernel and"), "{t2}");
+    }
+    // No temporary file is left beside the cache file.
+    let files: Vec<_> = std::fs::read_dir(&cache)
+        .map(|d| d.filter_map(Result::ok).map(|e| e.path()).collect())
+        .unwrap_or_default();
+    assert!(files.len() <= 1, "{files:?}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn compile_timings_print_phases_and_driver_times() {
+    let dir = scratch("pipelines", "timings");
+    let scene = scene(&dir);
+    let out_dir = dir.join("out");
+    let off = Path::new("off");
+    let phases = rtc_cached(
+        &[
+            "compile",
+            s(&scene),
+            "--out",
+            s(&out_dir),
+            "--target",
+            "wgsl",
+            "--timings",
+        ],
+        off,
+    );
+    let t = text(&phases);
+    assert!(phases.status.success(), "{t}");
+    assert!(t.contains("compiler phases:\n"), "{t}");
+    assert!(t.contains("  lower the render kernel "), "{t}");
+    assert!(t.contains("  total "), "{t}");
+    assert!(!t.contains("driver ("), "{t}");
+
+    let driver = rtc_cached(
+        &[
+            "compile",
+            s(&scene),
+            "--out",
+            s(&out_dir),
+            "--target",
+            "wgsl",
+            "--timings",
+            "driver",
+        ],
+        off,
+    );
+    let t = text(&driver);
+    assert!(driver.status.success(), "{t}");
+    assert!(t.contains("compiler phases:\n"), "{t}");
+    if t.contains("no GPU adapter could be had") {
+        eprintln!("SKIPPED the driver part: no adapter\n{t}");
+    } else {
+        assert!(kernel_line(&t, "rtc render").contains("compiled"), "{t}");
+        assert!(t.contains("pipeline cache: off"), "{t}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn bench_compile_measures_a_scene_in_a_child() {
+    let dir = scratch("pipelines", "bench");
+    let scene = scene(&dir);
+    let json = dir.join("compile.json");
+    let out = rtc_cached(
+        &["bench", "--compile", s(&scene), "--json", s(&json)],
+        Path::new("off"),
+    );
+    let t = text(&out);
+    if t.contains("no GPU adapter found") {
+        eprintln!("SKIPPED: no GPU adapter at all\n{t}");
+        return;
+    }
+    assert!(out.status.success(), "{t}");
+    assert!(
+        t.contains("cold compile (MESA_SHADER_CACHE_DISABLE=true"),
+        "{t}"
+    );
+    let value: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).expect("JSON written"))
+            .expect("JSON parses");
+    let cold = value["cold"].as_array().expect("cold rows");
+    assert_eq!(cold.len(), 1, "{value}");
+    assert_eq!(cold[0]["example"], "small");
+    assert_eq!(cold[0]["exec"], "megakernel");
+    let first_pixel = cold[0]["first_pixel_ms"].as_f64().expect("a time");
+    let pipelines = cold[0]["pipelines_ms"].as_f64().expect("pipelines parsed");
+    assert!(pipelines > 0.0 && pipelines < first_pixel, "{value}");
+    let kernels = cold[0]["kernels"].as_array().expect("kernels");
+    assert_eq!(kernels.len(), 1, "{value}");
+    assert_eq!(kernels[0]["label"], "rtc render");
+    assert_eq!(kernels[0]["origin"], "compiled");
+    // A single file has no thesis scene to edit.
+    assert_eq!(value["material_edit"].as_array().map(Vec::len), Some(0));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn bench_compile_usage_errors() {
+    let off = Path::new("off");
+    let out = rtc_cached(&["bench", "--compile", "--exec", "sideways"], off);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    let out = rtc_cached(&["bench"], off);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    let out = rtc_cached(&["bench", "--exec", "megakernel", "x.rt"], off);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    let out = rtc_cached(&["bench", "--compile", "/no/such/folder"], off);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out));
+    assert!(text(&out).contains("/no/such/folder"), "{}", text(&out));
+}
