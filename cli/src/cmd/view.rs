@@ -57,6 +57,9 @@ pub struct Args {
     /// Scene, size, samples, GPU and asset folders.
     #[command(flatten)]
     pub render: RenderArgs,
+    /// The execution model.
+    #[command(flatten)]
+    pub exec: crate::args::ExecArgs,
     /// Write the image shown to this `.png` or `.exr` after every frame (for tests).
     #[arg(long, value_name = "FILE", hide = true)]
     pub screenshot: Option<PathBuf>,
@@ -634,7 +637,8 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         None,
         None,
         ctx.color,
-    );
+    )
+    .with_exec(args.exec.model());
     let first = session.reload(&[]);
     term::eprint(&first.messages);
     if first.status != Status::Built {

@@ -37,7 +37,9 @@ use rtc_compiler::back::Target;
 use rtc_compiler::cache::{content_hash, ModuleCache};
 use rtc_compiler::diag::{self, Diagnostic, Severity};
 use rtc_compiler::driver::Options;
-use rtc_compiler::kernel::{compile_scene, save_registry, CompiledScene};
+use rtc_compiler::kernel::{
+    compile_scene_with, save_registry, CompiledScene, ExecModel, KernelOptions,
+};
 use rtc_compiler::link::LinkOptions;
 use rtc_compiler::sema::hir::{ConstValue, Geometry, MeshAsset, SceneDesc, TextureAsset};
 use rtc_compiler::SourceMap;
@@ -69,6 +71,9 @@ pub struct Args {
     /// Scene, size, samples, GPU and asset folders.
     #[command(flatten)]
     pub render: RenderArgs,
+    /// The execution model of the preview (and of the kernels written).
+    #[command(flatten)]
+    pub exec: crate::args::ExecArgs,
     /// A reload starts once no file event came for this long.
     #[arg(long, value_name = "MS", default_value_t = 15, value_parser = clap::value_parser!(u64).range(0..=60_000))]
     pub debounce_ms: u64,
@@ -163,6 +168,8 @@ pub struct Session {
     /// Whether the last build failed.
     failing: bool,
     builds: u32,
+    /// The execution model asked for (`--exec`); `None` leaves it to the scene's `exec` setting.
+    exec: Option<ExecModel>,
 }
 
 impl Session {
@@ -194,7 +201,14 @@ impl Session {
             last: None,
             failing: false,
             builds: 0,
+            exec: None,
         }
+    }
+
+    /// The session with the execution model `exec` (`--exec`) instead of the scene's setting.
+    pub fn with_exec(mut self, exec: Option<ExecModel>) -> Session {
+        self.exec = exec;
+        self
     }
 
     /// The files to watch (canonical paths).
@@ -294,7 +308,7 @@ impl Session {
     /// Phases 3 and 4. Returns whether the build succeeded.
     fn compile_and_emit(&mut self, reload: &mut Reload, edit_time: Option<SystemTime>) -> bool {
         let t = Instant::now();
-        let compiled = compile_scene(
+        let compiled = compile_scene_with(
             &self.roots,
             self.scene.as_deref(),
             &self.options,
@@ -305,6 +319,10 @@ impl Session {
                     .map(|p| p.asset_roots.clone())
                     .unwrap_or_default(),
                 ..LinkOptions::default()
+            },
+            &KernelOptions {
+                debug: None,
+                exec: self.exec,
             },
         );
         let stats = self.cache.take_stats();
@@ -769,7 +787,8 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Some(args.out.clone()),
         preview,
         ctx.color,
-    );
+    )
+    .with_exec(args.exec.model());
 
     let (tx, rx) = mpsc::channel::<Msg>();
     let stop = tx.clone();

@@ -14,9 +14,9 @@
 //!   `INV_PI / 9.0`), and the watch reports the edit-to-preview time and which kernels it
 //!   compiled and which it reused.
 //!
-//! `--exec` is passed through to `rtc render --exec` (the default, `megakernel`, is not passed, so
-//! this runs with an `rtc render` without the flag). Prints a table; `--json FILE` writes every
-//! figure. No figure is invented: a child that fails is a row with its error.
+//! Each measurement runs once per execution model (`--exec`, default both), passed to the child
+//! `rtc render --exec` / `rtc watch --exec`. Prints a table; `--json FILE` writes every figure. No
+//! figure is invented: a child that fails is a row with its error.
 
 use super::super::Context;
 use crate::exit::Exit;
@@ -27,9 +27,8 @@ use std::process::{Command, Stdio};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
-/// The execution models `--exec` accepts; the first is `rtc render`'s default. A model `rtc render
-/// --exec` gains is one more entry here.
-pub const EXEC_MODELS: &[&str] = &["megakernel"];
+/// The execution models `--exec` accepts (`rtc render --exec`'s values).
+pub const EXEC_MODELS: &[&str] = &["megakernel", "wavefront"];
 
 /// The preview size of every measurement.
 const SIZE: &str = "64x48";
@@ -132,13 +131,9 @@ fn child(exe: &Path) -> Command {
     cmd
 }
 
-/// `--exec MODEL` for a child `rtc render`/`watch`, nothing for the default model.
+/// `--exec MODEL` for a child `rtc render`/`watch`.
 fn exec_args(exec: &str) -> Vec<&str> {
-    if EXEC_MODELS.first() == Some(&exec) {
-        Vec::new()
-    } else {
-        vec!["--exec", exec]
-    }
+    vec!["--exec", exec]
 }
 
 /// Renders `scene` in a child and reads its summary.
