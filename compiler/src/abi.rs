@@ -255,14 +255,14 @@ pub const BINDINGS: &[BindingDesc] = &[
         name: "counters",
         kind: ResourceKind::StorageReadWrite,
         element: Element::Atomics,
-        doc: "atomic counters: [0] = samples that were not finite (NaN or infinite) and were replaced by zero, [1] = rays traced (camera, secondary and shadow), [2] = paths still running when a wavefront round began, [3] = wavefront shadow queries beyond a shading step's record",
+        doc: "atomic counters: [0] = samples that were not finite (NaN or infinite) and were replaced by zero, [1] = rays traced (camera, secondary and shadow), [3] = wavefront shadow queries beyond what a shading step records",
     },
     BindingDesc {
         binding: 10,
         name: "paths",
         kind: ResourceKind::StorageReadWrite,
         element: Element::Array(FieldType::U32),
-        doc: "the wavefront model's path state, one record of `PATH_WORDS` words per pixel of the tile, stored word-major (word `w` of slot `i` at `w * slots + i`)",
+        doc: "the wavefront model's path state: one record of `PATH_WORDS` words per pixel of the tile, stored word-major (word `w` of slot `i` at `w * path_slots + i`), then one word the stages set while a path runs",
     },
 ];
 

@@ -248,6 +248,8 @@ pub struct Renderer<'g> {
     kernels: Kernels,
     /// `FrameUniforms::path_slots`: one tile's path slots (wavefront), else 0.
     path_slots: u32,
+    /// Byte offset in `paths` of the word the wavefront rounds set while a path runs.
+    path_flag_offset: u64,
     dispatcher: TileDispatcher,
     size: [u32; 2],
     samples_per_pass: u32,
@@ -269,15 +271,15 @@ enum Kernels {
 
 impl Kernels {
     /// The dispatch of a wavefront pass: a round is camera, trace, shade, shadow, shade.
-    fn rounds(stages: &[Kernel], max_rounds: u32) -> Option<RoundKernels<'_>> {
+    fn rounds(stages: &[Kernel], max_rounds: u32, flag_offset: u64) -> Option<RoundKernels<'_>> {
         let [camera, trace, shade, shadow, finish] = stages else {
             return None;
         };
         Some(RoundKernels {
             round: vec![camera, trace, shade, shadow, shade],
             finish,
-            counters: abi::binding("counters")?.binding,
-            active_word: abi::COUNTER_ACTIVE,
+            flag_binding: abi::binding("paths")?.binding,
+            flag_offset,
             max_rounds,
         })
     }
@@ -558,11 +560,13 @@ impl<'g> Renderer<'g> {
             // One tile's path records in one binding, within WebGPU's default 128 MiB.
             let max = gpu.limits().max_storage_buffer_binding_size.min(128 << 20);
             tiles = wavefront_tiles(tiles, [width, height], compiled.path_words, max);
+            // The records, then the *running* word the rounds read.
             scene.set_path_bytes(
                 u64::from(tiles.tile_width)
                     * u64::from(tiles.tile_height)
                     * u64::from(compiled.path_words)
-                    * 4,
+                    * 4
+                    + 4,
             );
         }
         if let Some(limits) = options.limits {
@@ -591,6 +595,7 @@ impl<'g> Renderer<'g> {
             Kernels::Wavefront { .. } => tiles.tile_width * tiles.tile_height,
             Kernels::Mega(_) => 0,
         };
+        let path_flag_offset = u64::from(path_slots) * u64::from(compiled.path_words) * 4;
         let frame = FrameUniforms {
             path_slots,
             ..entities.frame_uniforms(samples_per_pass, total_samples)
@@ -613,6 +618,7 @@ impl<'g> Renderer<'g> {
             scene,
             kernels,
             path_slots,
+            path_flag_offset,
             dispatcher,
             size: [width, height],
             samples_per_pass,
@@ -712,8 +718,8 @@ impl<'g> Renderer<'g> {
                     &mut report,
                 )?,
                 Kernels::Wavefront { stages, max_rounds } => {
-                    let kernels =
-                        Kernels::rounds(stages, *max_rounds).ok_or(RenderError::NoStageKernels)?;
+                    let kernels = Kernels::rounds(stages, *max_rounds, self.path_flag_offset)
+                        .ok_or(RenderError::NoStageKernels)?;
                     let r = self.dispatcher.dispatch_rounds(
                         gpu,
                         &kernels,

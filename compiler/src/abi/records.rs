@@ -364,9 +364,6 @@ pub const RGBA16F_TEXEL_WORDS: u32 = 2;
 pub const COUNTER_NONFINITE: u32 = 0;
 /// Index in `counters` of the count of rays traced (camera, secondary and shadow).
 pub const COUNTER_RAYS: u32 = 1;
-/// Index in `counters` of the wavefront model's count of paths still running when a round of
-/// stage kernels began (the host stops a tile's rounds when it reads 0).
-pub const COUNTER_ACTIVE: u32 = 2;
 /// Index in `counters` of the wavefront model's count of shadow queries beyond the
 /// `SHADOW_QUERIES` one shading step can record (each was answered "unoccluded").
 pub const COUNTER_SHADOW_OVERFLOW: u32 = 3;
@@ -464,11 +461,6 @@ pub const CONSTANTS: &[Constant] = &[
         "COUNTER_RAYS",
         COUNTER_RAYS,
         "counters index: rays traced (camera, secondary and shadow)",
-    ),
-    c(
-        "COUNTER_ACTIVE",
-        COUNTER_ACTIVE,
-        "counters index (wavefront): paths still running when a round of stage kernels began",
     ),
     c(
         "COUNTER_SHADOW_OVERFLOW",

@@ -105,11 +105,13 @@ pub enum Intrinsic {
     ScratchStore,
     /// `counter_add(i, value)`: atomic add to `counters[i]`
     CounterAdd,
+    /// `ray_count_load() -> u32`: the rays this invocation traced so far (`count_ray`)
+    RayCountLoad,
 }
 
 impl Intrinsic {
     /// Every intrinsic, in the order `rtc:abi` declares them.
-    pub const ALL: [Intrinsic; 38] = [
+    pub const ALL: [Intrinsic; 39] = [
         Intrinsic::LoadFrame,
         Intrinsic::LoadTile,
         Intrinsic::LoadNode,
@@ -148,6 +150,7 @@ impl Intrinsic {
         Intrinsic::ScratchLoad,
         Intrinsic::ScratchStore,
         Intrinsic::CounterAdd,
+        Intrinsic::RayCountLoad,
     ];
 
     /// `(name, parameters, result)` as declared in `rtc:abi` (result `""`: none).
@@ -226,6 +229,7 @@ impl Intrinsic {
             Intrinsic::ScratchLoad => ("scratch_load", "i: u32", "u32"),
             Intrinsic::ScratchStore => ("scratch_store", "i: u32, value: u32", ""),
             Intrinsic::CounterAdd => ("counter_add", "i: u32, value: u32", ""),
+            Intrinsic::RayCountLoad => ("ray_count_load", "", "u32"),
         }
     }
 

@@ -442,6 +442,11 @@ impl KernelHooks<'_> {
                 );
                 return Ok(None);
             }
+            I::RayCountLoad => {
+                let g = self.ray_count(cx);
+                let p = fb.expr(Expression::GlobalVariable(g), span);
+                fb.load(p, span)
+            }
             I::CountRay => {
                 let g = self.ray_count(cx);
                 let p = fb.expr(Expression::GlobalVariable(g), span);

@@ -20,6 +20,13 @@
 //! answered commits its results, so the outcome is the megakernel's. A step whose later queries
 //! depend on the answers of earlier ones records the changed ones and goes round again.
 //!
+//! Termination: the camera stage, first of a round, stores 1 (a plain store: every writer writes
+//! the same value) into the word after the tile's records, `PATH_WORDS * path_slots`, for every
+//! slot still running; the host zeroes that word before a round and ends the tile's rounds when it
+//! reads 0 after one. Rays are counted per slot (`PATH_RAYS`) and added to `COUNTER_RAYS` once a
+//! pixel by the finish stage: one atomic a pixel, as in the megakernel, instead of one per stage
+//! (atomics on one address from every lane serialise the CPU's threads).
+//!
 //! Guarantees: the layout below is the one source of the path record's word offsets (they reach
 //! the kernel as `rtc:config` constants, [`config_constants`]); every stage kernel is a separate
 //! module with its own bindings, each at most WebGPU's default 8 storage buffers (tested for every
@@ -113,6 +120,7 @@ pub fn config_constants(c: &KernelConfig) -> Vec<(&'static str, u32)> {
     field("PATH_DEPTH", 1, &mut out);
     field("PATH_SUM", 3, &mut out);
     field("PATH_BAD", 1, &mut out);
+    field("PATH_RAYS", 1, &mut out);
     field("PATH_RAY", RAY_WORDS, &mut out);
     field("PATH_CANDIDATE", CANDIDATE_WORDS, &mut out);
     field("PATH_SQ_RESOLVED", 1, &mut out);
@@ -224,10 +232,10 @@ mod tests {
         c.has_secondary_rays = false;
         let without = path_words(&c);
         assert_eq!(with - without, c.stack_size * frame_words(&c));
-        // 8 single words, the sum, the ray, the candidate and the queries.
+        // 9 single words, the sum, the ray, the candidate and the queries.
         assert_eq!(
             without,
-            8 + 3 + RAY_WORDS + CANDIDATE_WORDS + SHADOW_QUERIES * QUERY_WORDS
+            9 + 3 + RAY_WORDS + CANDIDATE_WORDS + SHADOW_QUERIES * QUERY_WORDS
         );
         assert!(SHADOW_QUERIES <= 32);
         for stage in STAGES {

@@ -1,8 +1,8 @@
 //! Rounds of stage kernels over each tile: the wavefront model's dispatch.
 //!
-//! For each tile, a round is one command buffer: the active-path counter is zeroed, the round's
+//! For each tile, a round is one command buffer: the *running* word is zeroed, the round's
 //! kernels are dispatched in order over the tile (same tile parameters, each with its own bind
-//! group), and the counter is copied to a mapped buffer and read. A round that found no path
+//! group), and the word is copied to a mapped buffer and read. A round that found no path
 //! running ends the tile's rounds; the finish kernel then runs once over the tile. Tiles run one
 //! after the other, so one tile's path state is all the state buffer has to hold.
 //!
@@ -17,11 +17,11 @@ pub struct RoundKernels<'a> {
     pub round: Vec<&'a Kernel>,
     /// The kernel run once over a tile after its last round.
     pub finish: &'a Kernel,
-    /// The binding of the atomic counters buffer.
-    pub counters: u32,
-    /// The word of that buffer counting the paths still running, which the first kernel of a
-    /// round increments.
-    pub active_word: u32,
+    /// The binding of the buffer holding the *running* word: zeroed before each round, set to a
+    /// non-zero value by the round's kernels while some path still runs.
+    pub flag_binding: u32,
+    /// The byte offset of that word (a multiple of 4).
+    pub flag_offset: u64,
     /// Rounds a tile may take before the dispatch gives up.
     pub max_rounds: u32,
 }
@@ -123,13 +123,14 @@ impl TileDispatcher {
             .collect::<Result<_, _>>()?;
         let ((), error) = gpu.scoped(|| gpu.queue().write_buffer(params, 0, &bytes));
         wgpu_result("tile parameter upload", error)?;
-        let counters = buffers
-            .buffer(kernels.counters)
-            .ok_or_else(|| BufferError::Missing {
-                set: buffers.label().to_string(),
-                binding: kernels.counters,
-            })?;
-        let active_offset = u64::from(kernels.active_word) * 4;
+        let counters =
+            buffers
+                .buffer(kernels.flag_binding)
+                .ok_or_else(|| BufferError::Missing {
+                    set: buffers.label().to_string(),
+                    binding: kernels.flag_binding,
+                })?;
+        let active_offset = kernels.flag_offset;
         let (staging, error) = gpu.scoped(|| {
             gpu.device().create_buffer(&wgpu::BufferDescriptor {
                 label: Some("rtc active paths"),
@@ -155,49 +156,6 @@ impl TileDispatcher {
             let offset = (u64::from(tile.tile_index) * stride) as u32;
             let mut finished = false;
             for _ in 0..kernels.max_rounds {
-                if std::env::var_os("RTC_TMP_STAGE_PROFILE").is_some() {
-                    for (i, (k, group)) in kernels.round.iter().zip(&groups).enumerate() {
-                        let t = Instant::now();
-                        let mut encoder =
-                            gpu.device()
-                                .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                                    label: None,
-                                });
-                        if i == 0 {
-                            encoder.clear_buffer(counters, active_offset, Some(4));
-                        }
-                        {
-                            let mut pass =
-                                encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                                    label: None,
-                                    timestamp_writes: None,
-                                });
-                            let [x, y] = workgroups(k, tile);
-                            pass.set_pipeline(k.pipeline());
-                            pass.set_bind_group(0, group, &[offset]);
-                            pass.dispatch_workgroups(x, y, 1);
-                        }
-                        gpu.queue().submit([encoder.finish()]);
-                        wait(gpu)?;
-                        eprintln!(
-                            "tile {} stage {i} {}: {:.1} ms",
-                            tile.tile_index,
-                            k.label(),
-                            elapsed_ms(t)
-                        );
-                    }
-                    let mut encoder = gpu
-                        .device()
-                        .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
-                    encoder.copy_buffer_to_buffer(counters, active_offset, &staging, 0, Some(4));
-                    gpu.queue().submit([encoder.finish()]);
-                    report.rounds += 1;
-                    if read_active(gpu, &staging)? == 0 {
-                        finished = true;
-                        break;
-                    }
-                    continue;
-                }
                 let ((), error) = gpu.scoped(|| {
                     let mut encoder =
                         gpu.device()
