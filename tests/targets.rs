@@ -1,5 +1,6 @@
 //! Cross-target checks: every example, and a scene that links every standard-library program, is
-//! compiled to all five targets, and each output is given to an independent validator:
+//! compiled to all five targets (the megakernel, the bounds kernel and the wavefront model's five
+//! stage kernels), and each output is given to an independent validator:
 //!
 //! | target | check |
 //! |---|---|
@@ -72,11 +73,15 @@ fn check_all_targets(name: &str, c: &CompiledScene, dir: &Path) -> Vec<String> {
     let mut failures = Vec::new();
     let resources = rtc_compiler::abi::resources(c.bindings.iter().copied());
     std::fs::create_dir_all(dir).expect("temp dir");
-    let mut modules = vec![("kernel", &c.render, RENDER_ENTRY)];
+    let mut modules = vec![("kernel", &c.render, RENDER_ENTRY, resources.clone())];
     if let Some(b) = &c.bounds {
-        modules.push(("bounds", b, kernel::BOUNDS_ENTRY));
+        modules.push(("bounds", b, kernel::BOUNDS_ENTRY, resources));
     }
-    for (stem, module, entry) in modules {
+    for s in c.stages.iter().flatten() {
+        let resources = rtc_compiler::abi::resources(s.bindings.iter().copied());
+        modules.push((s.stage.entry(), &s.module, s.stage.entry(), resources));
+    }
+    for (stem, module, entry, resources) in modules {
         for t in Target::ALL {
             let bytes = match back::write(module, t, entry, &resources) {
                 Ok(b) => b,
@@ -175,14 +180,19 @@ fn check_all_targets(name: &str, c: &CompiledScene, dir: &Path) -> Vec<String> {
     failures
 }
 
+/// Compiles with the wavefront model's stage kernels too, so every stage is validated.
 fn compile(paths: &[PathBuf], all: bool) -> CompiledScene {
-    match kernel::compile_scene(
+    match kernel::compile_scene_with(
         paths,
         None,
         &Options::default(),
         &LinkOptions {
             all_programs: all,
             ..LinkOptions::default()
+        },
+        &kernel::KernelOptions {
+            debug: None,
+            exec: Some(kernel::ExecModel::Wavefront),
         },
     ) {
         Ok(c) => c,
