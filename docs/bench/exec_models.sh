@@ -7,6 +7,7 @@
 #
 #   bash docs/bench/exec_models.sh [--current-lavapipe] [RUNS] [EXAMPLE...]
 #
+# `SIZE=WxH` renders every example at that size instead of its own (for the long path-traced ones).
 # Prints the CPU (model, AVX2 / AVX-512), the adapter and driver, then one line per example, and
 # writes the table as JSON to `exec_models.json` in the working directory.
 set -euo pipefail
@@ -32,11 +33,12 @@ flags=$(grep -m1 '^flags' /proc/cpuinfo)
 features=AVX2
 [[ $flags == *avx512f* ]] && features="AVX2 AVX-512"
 [[ $flags == *avx2* ]] || features="no AVX2"
-echo "cpu: $cpu ($features, $(nproc) threads)"
+echo "cpu: $cpu ($features, $(nproc) threads)${SIZE:+; every example at $SIZE}"
 "${runner[@]}" target/release/rtc render examples/hello/scene.rt --size 8x8 -o "$out/probe.png" 2>&1 |
     grep '^adapter' || true
 render_ms() {
-    "${runner[@]}" target/release/rtc render "examples/$1/scene.rt" -o "$out/$1-$2.png" --exec "$2" 2>&1 |
+    "${runner[@]}" target/release/rtc render "examples/$1/scene.rt" -o "$out/$1-$2.png" --exec "$2" \
+        ${SIZE:+--size "$SIZE"} 2>&1 |
         awk '$1 == "render" { print $2 }'
 }
 median() { printf '%s\n' "$@" | sort -g | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }

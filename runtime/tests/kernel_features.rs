@@ -348,3 +348,51 @@ fn shadow_queries_beyond_what_a_step_records_are_warned_about() {
     assert!(warning.contains(&limit.to_string()), "{warning}");
     assert_eq!(wave.count_nonfinite(), 0);
 }
+
+#[test]
+fn a_material_edit_recompiles_only_the_shade_stage() {
+    use rtc_compiler::kernel::{ExecModel, KernelOptions};
+    let Some(gpu) = gpu_or_skip("a_material_edit_recompiles_only_the_shade_stage") else {
+        return;
+    };
+    // The same scene twice, the second with one constant of its material's closest-hit code
+    // changed: of the five stage kernels only the shade stage holds closest-hit programs, so only
+    // it is created again; the other four come from the kernel set's memory cache (counted by
+    // this `Gpu`'s pipeline-creation counter, exact while other tests run).
+    let options = KernelOptions {
+        debug: None,
+        exec: Some(ExecModel::Wavefront),
+    };
+    let dir = temp_dir("features", "material_edit");
+    let first = scene("dependent_shadows").compile_with(&dir, &options);
+    let before = gpu.pipelines_created();
+    let kernels =
+        rtc_runtime::render::create_scene_kernels(&gpu, &first, ExecModel::Wavefront, false)
+            .expect("stage kernels");
+    assert_eq!(kernels.render.len(), 5);
+    assert_eq!(
+        gpu.pipelines_created() - before,
+        5,
+        "a cold set compiles every stage"
+    );
+    let edited = scene("dependent_shadows")
+        .set("TINT", "0.25")
+        .compile_with(&dir, &options);
+    let before = gpu.pipelines_created();
+    let again =
+        rtc_runtime::render::create_scene_kernels(&gpu, &edited, ExecModel::Wavefront, false)
+            .expect("stage kernels");
+    assert_eq!(
+        gpu.pipelines_created() - before,
+        1,
+        "only the shade stage holds the edited material"
+    );
+    let compiled: Vec<&str> = again
+        .render
+        .iter()
+        .filter(|k| k.report().origin == rtc_runtime::gpu::KernelOrigin::Compiled)
+        .map(|k| k.label())
+        .collect();
+    assert_eq!(compiled, ["rtc wf_shade"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
