@@ -318,12 +318,19 @@ impl SceneError {
                 value,
                 lo,
                 hi,
-            } => err(
-                codes::E0704,
-                format!("`{key}` must be in {lo} ..= {hi}"),
-                *span,
-            )
-            .with_label(format!("this is {value}")),
+            } => {
+                let d = err(
+                    codes::E0704,
+                    format!("`{key}` must be in {lo} ..= {hi}"),
+                    *span,
+                )
+                .with_label(format!("this is {value}"));
+                if *key == "exec" {
+                    d.with_help("write `EXEC_AUTO`, `EXEC_MEGAKERNEL` or `EXEC_WAVEFRONT`")
+                } else {
+                    d
+                }
+            }
             E::DuplicateEntry { span, first, what } => {
                 err(codes::E0705, format!("{what} is given twice"), *span)
                     .with_label("given again here")
