@@ -187,8 +187,8 @@ fn run_case(gpu: &Gpu, case: &Case, out_dir: &Path) -> Result<String, String> {
         &Options::default(),
         &LinkOptions::default(),
         &KernelOptions {
-            debug: None,
             exec: Some(ExecModel::Wavefront),
+            ..KernelOptions::default()
         },
     )
     .map_err(|f| {

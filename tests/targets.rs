@@ -191,8 +191,8 @@ fn compile(paths: &[PathBuf], all: bool) -> CompiledScene {
             ..LinkOptions::default()
         },
         &kernel::KernelOptions {
-            debug: None,
             exec: Some(kernel::ExecModel::Wavefront),
+            ..kernel::KernelOptions::default()
         },
     ) {
         Ok(c) => c,

@@ -125,7 +125,7 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
         .program
         .as_ref()
         .map_or(0, |p| p.scenes[scene].settings.exec);
-    let exec = ExecModel::resolve(request.kernel.exec, setting);
+    let exec = ExecModel::resolve(request.kernel.exec, setting, request.kernel.auto);
     let stages = if exec == ExecModel::Wavefront && request.kernel.debug.is_none() {
         let lowered = timings.time("lower the stage kernels", || {
             wavefront::STAGES

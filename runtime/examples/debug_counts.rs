@@ -27,6 +27,7 @@ fn main() {
         &LinkOptions::default(),
         &KernelOptions {
             debug: Some(DebugMode::Counts),
+            ..KernelOptions::default()
         },
     ) {
         Ok(c) => c,

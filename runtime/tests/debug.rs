@@ -56,7 +56,13 @@ fn scene_file() -> SceneFile {
 }
 
 fn compile(dir: &std::path::Path, debug: DebugMode) -> CompiledScene {
-    scene_file().compile_with(dir, &KernelOptions { debug: Some(debug) })
+    scene_file().compile_with(
+        dir,
+        &KernelOptions {
+            debug: Some(debug),
+            ..KernelOptions::default()
+        },
+    )
 }
 
 /// The kernel's `safe_inverse`.

@@ -210,8 +210,8 @@ fn both_models(
     let compiled = file.compile_with(
         &dir,
         &KernelOptions {
-            debug: None,
             exec: Some(ExecModel::Wavefront),
+            ..KernelOptions::default()
         },
     );
     let options = |exec| RenderOptions {
@@ -360,8 +360,8 @@ fn a_material_edit_recompiles_only_the_shade_stage() {
     // it is created again; the other four come from the kernel set's memory cache (counted by
     // this `Gpu`'s pipeline-creation counter, exact while other tests run).
     let options = KernelOptions {
-        debug: None,
         exec: Some(ExecModel::Wavefront),
+        ..KernelOptions::default()
     };
     let dir = temp_dir("features", "material_edit");
     let first = scene("dependent_shadows").compile_with(&dir, &options);

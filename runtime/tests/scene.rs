@@ -275,6 +275,9 @@ fn stand_in(file: &SceneFile, samples_per_pass: u32) -> CompiledScene {
             .map(|n| abi::binding(n).expect("ABI binding"))
             .collect(),
         samples_per_pass,
+        stages: None,
+        path_words: 0,
+        exec: rtc_compiler::kernel::ExecModel::Megakernel,
         timings: Vec::new(),
     }
 }

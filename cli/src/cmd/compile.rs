@@ -113,8 +113,8 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         options: &ctx.options,
         link: &link,
         kernel: &KernelOptions {
-            debug: None,
             exec: args.exec.model(),
+            ..KernelOptions::default()
         },
         targets: &targets,
     };

@@ -126,7 +126,10 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         args.render.scene.name.as_deref(),
         &ctx.options,
         &link,
-        &KernelOptions { debug: None, exec },
+        &KernelOptions {
+            exec,
+            ..KernelOptions::default()
+        },
     ) {
         Ok(c) => c,
         Err(failure) => {

@@ -321,8 +321,11 @@ impl Session {
                 ..LinkOptions::default()
             },
             &KernelOptions {
-                debug: None,
                 exec: self.exec,
+                // Under `rtc watch` a scene left at `EXEC_AUTO` runs the wavefront model: an
+                // edit to a material recompiles only the shade stage.
+                auto: ExecModel::Wavefront,
+                ..KernelOptions::default()
             },
         );
         let stats = self.cache.take_stats();

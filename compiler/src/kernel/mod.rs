@@ -76,14 +76,14 @@ pub enum ExecModel {
 impl ExecModel {
     /// The model a scene runs with: `choice` (the command line's `--exec`) if given, else the
     /// scene's `exec` setting (`EXEC_MEGAKERNEL` 1, `EXEC_WAVEFRONT` 2), else, for `EXEC_AUTO`,
-    /// the megakernel: on lavapipe it renders every example faster per frame and its kernel
-    /// compiles in time comparable to the wavefront model's largest stage (ARCHITECTURE.md,
-    /// "Execution models", has the figures).
-    pub fn resolve(choice: Option<ExecModel>, setting: u32) -> ExecModel {
+    /// `auto` (`KernelOptions::auto`: the megakernel, except under `rtc watch`). ARCHITECTURE.md,
+    /// "Execution models", has the figures that decided it.
+    pub fn resolve(choice: Option<ExecModel>, setting: u32, auto: ExecModel) -> ExecModel {
         match (choice, setting) {
             (Some(m), _) => m,
+            (None, 1) => ExecModel::Megakernel,
             (None, 2) => ExecModel::Wavefront,
-            (None, _) => ExecModel::Megakernel,
+            (None, _) => auto,
         }
     }
 
@@ -132,6 +132,10 @@ pub struct KernelOptions {
     /// [`ExecModel::resolve`]). The wavefront model's stage kernels are built
     /// ([`CompiledScene::stages`]) when the model resolved is the wavefront.
     pub exec: Option<ExecModel>,
+    /// What the scene setting `EXEC_AUTO` means for this compile: the megakernel (the default:
+    /// faster frames) or, for `rtc watch`, the wavefront model (a material edit recompiles one
+    /// stage kernel).
+    pub auto: ExecModel,
 }
 
 /// Why a scene could not be compiled: the diagnostics (with the sources to render them).

@@ -91,6 +91,7 @@ impl Stage {
 /// Shadow queries one shading step records (a step's further queries are answered "unoccluded"
 /// and counted in `COUNTER_SHADOW_OVERFLOW`). At most 32: the answers are bits of one word.
 pub const SHADOW_QUERIES: u32 = 8;
+const _: () = assert!(SHADOW_QUERIES <= 32);
 /// Words of a ray in the path record: origin, tmin, dir, tmax, depth, kind, medium.
 pub const RAY_WORDS: u32 = 11;
 /// Words of a traversal candidate: t, slot, primitive, uv, normal.
@@ -181,8 +182,8 @@ mod tests {
                 &Options::default(),
                 &LinkOptions::default(),
                 &KernelOptions {
-                    debug: None,
                     exec: Some(ExecModel::Wavefront),
+                    ..KernelOptions::default()
                 },
             )
             .unwrap_or_else(|f| {
@@ -237,7 +238,6 @@ mod tests {
             without,
             9 + 3 + RAY_WORDS + CANDIDATE_WORDS + SHADOW_QUERIES * QUERY_WORDS
         );
-        assert!(SHADOW_QUERIES <= 32);
         for stage in STAGES {
             assert_eq!(Stage::from_entry(stage.entry()), Some(stage));
         }

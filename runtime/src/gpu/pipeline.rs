@@ -568,18 +568,6 @@ fn without_spans(text: &str) -> String {
     out
 }
 
-#[cfg(test)]
-mod span_tests {
-    #[test]
-    fn spans_are_left_out_of_the_key_text() {
-        assert_eq!(
-            super::without_spans("Block { body: [Return], span_info: [Span { start: 3, end: 9 }, Span { start: 10, end: 12 }] }"),
-            "Block { body: [Return], span_info: [Span, Span] }"
-        );
-        assert_eq!(super::without_spans("no spans"), "no spans");
-    }
-}
-
 fn sorted_bindings(
     label: &str,
     bindings: &[BindingDesc],
@@ -740,5 +728,17 @@ fn layout_entry(binding: &BindingDesc, is_tile: bool) -> wgpu::BindGroupLayoutEn
             min_binding_size: NonZeroU64::new(min_size),
         },
         count: None,
+    }
+}
+
+#[cfg(test)]
+mod span_tests {
+    #[test]
+    fn spans_are_left_out_of_the_key_text() {
+        assert_eq!(
+            super::without_spans("Block { body: [Return], span_info: [Span { start: 3, end: 9 }, Span { start: 10, end: 12 }] }"),
+            "Block { body: [Return], span_info: [Span, Span] }"
+        );
+        assert_eq!(super::without_spans("no spans"), "no spans");
     }
 }

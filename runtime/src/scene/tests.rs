@@ -170,6 +170,7 @@ scene s {{
             camera_offset: c as u32,
             background_type: bg.type_id,
             background_offset: bg.offset,
+            path_slots: 0,
         }
     );
     assert_eq!(e.settings().width, 64);
