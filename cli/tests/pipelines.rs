@@ -162,17 +162,35 @@ fn bench_compile_measures_a_scene_in_a_child() {
     let value: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&json).expect("JSON written"))
             .expect("JSON parses");
+    // One row per execution model: the megakernel's one kernel, the wavefront model's five stages.
     let cold = value["cold"].as_array().expect("cold rows");
-    assert_eq!(cold.len(), 1, "{value}");
-    assert_eq!(cold[0]["example"], "small");
-    assert_eq!(cold[0]["exec"], "megakernel");
-    let first_pixel = cold[0]["first_pixel_ms"].as_f64().expect("a time");
-    let pipelines = cold[0]["pipelines_ms"].as_f64().expect("pipelines parsed");
-    assert!(pipelines > 0.0 && pipelines < first_pixel, "{value}");
-    let kernels = cold[0]["kernels"].as_array().expect("kernels");
-    assert_eq!(kernels.len(), 1, "{value}");
-    assert_eq!(kernels[0]["label"], "rtc render");
-    assert_eq!(kernels[0]["origin"], "compiled");
+    assert_eq!(cold.len(), 2, "{value}");
+    for (row, (exec, labels)) in cold.iter().zip([
+        ("megakernel", &["rtc render"][..]),
+        (
+            "wavefront",
+            &[
+                "rtc wf_camera",
+                "rtc wf_trace",
+                "rtc wf_shade",
+                "rtc wf_shadow",
+                "rtc wf_finish",
+            ][..],
+        ),
+    ]) {
+        assert_eq!(row["example"], "small");
+        assert_eq!(row["exec"], exec);
+        let first_pixel = row["first_pixel_ms"].as_f64().expect("a time");
+        let pipelines = row["pipelines_ms"].as_f64().expect("pipelines parsed");
+        assert!(pipelines > 0.0 && pipelines < first_pixel, "{value}");
+        let kernels = row["kernels"].as_array().expect("kernels");
+        let got: Vec<&str> = kernels
+            .iter()
+            .map(|k| k["label"].as_str().unwrap_or(""))
+            .collect();
+        assert_eq!(got, labels, "{value}");
+        assert!(kernels.iter().all(|k| k["origin"] == "compiled"), "{value}");
+    }
     // A single file has no thesis scene to edit.
     assert_eq!(value["material_edit"].as_array().map(Vec::len), Some(0));
     let _ = std::fs::remove_dir_all(&dir);

@@ -1,11 +1,10 @@
 //! `rtc watch` as a user runs it: a subprocess watching a scene in a temporary folder, driven
-//! `rtc watch` as a user runs it: a subprocess watching a scene in a temporary folder, driven
 //! through edits (valid, invalid, fixed again, an import added and then removed; a glTF `model`
 //! file gaining a light type) and stopped with SIGINT, the way Ctrl-C stops it. Each step waits for
 //! the reload's report line (generous timeouts: the machines that run this are slow and shared) and
 //! then checks the files and the messages. With an adapter, each report's kernel lines say whether
-//! the preview's kernel was compiled or reused (the scene of the first build again reuses its
-//! kernel).
+//! the preview's kernels were compiled or reused (the scene of the first build again reuses its
+//! kernels; a scene left at `EXEC_AUTO` runs the wavefront model's five stage kernels here).
 
 use std::io::{BufRead, BufReader, Read};
 use std::path::{Path, PathBuf};
@@ -114,11 +113,31 @@ fn collect(stream: impl Read + Send + 'static, lines: Arc<Mutex<Vec<String>>>) {
     });
 }
 
-/// The report's line for the render kernel (`rtc render  compiled  …  (driver … ms)`).
-fn kernel_line(text: &str) -> &str {
-    text.lines()
-        .find(|l| l.trim_start().starts_with("rtc render") && l.contains("(driver "))
-        .unwrap_or_else(|| panic!("no kernel line in {text}"))
+/// The report's kernel lines (`rtc wf_shade  compiled  …  (driver … ms)`): under `rtc watch` a
+/// scene left at `EXEC_AUTO` runs the wavefront model, five stage kernels.
+fn kernel_lines(text: &str) -> Vec<&str> {
+    let lines: Vec<&str> = text
+        .lines()
+        .filter(|l| l.trim_start().starts_with("rtc wf_") && l.contains("(driver "))
+        .collect();
+    assert!(!lines.is_empty(), "no kernel line in {text}");
+    lines
+}
+
+/// `N` and `M` of the report's `kernels: N compiled, M reused`.
+fn kernel_counts(text: &str) -> (u32, u32) {
+    let line = text
+        .lines()
+        .find_map(|l| l.trim().strip_prefix("kernels: "))
+        .unwrap_or_else(|| panic!("no kernels line in {text}"));
+    let numbers: Vec<u32> = line
+        .split(|c: char| !c.is_ascii_digit())
+        .filter_map(|n| n.parse().ok())
+        .collect();
+    match numbers[..] {
+        [compiled, reused, ..] => (compiled, reused),
+        _ => panic!("unreadable kernels line: {line}"),
+    }
 }
 
 /// `N` and `M` of the report's `parse: N module(s) parsed, M from the cache`.
@@ -182,8 +201,11 @@ fn watch_follows_edits_keeps_good_outputs_and_tracks_imports() {
     let has_gpu = text.contains("preview adapter:");
     if has_gpu {
         assert!(preview.is_file(), "{text}");
-        assert!(text.contains("  kernels: 1 compiled, 0 reused"), "{text}");
-        assert!(kernel_line(&text).contains("compiled"), "{text}");
+        assert_eq!(kernel_counts(&text), (5, 0), "{text}");
+        assert!(
+            kernel_lines(&text).iter().all(|l| l.contains("compiled")),
+            "{text}"
+        );
     } else {
         eprintln!("no adapter here: the preview is not checked\n{text}");
         assert!(text.contains("no preview"), "{text}");
@@ -214,7 +236,8 @@ fn watch_follows_edits_keeps_good_outputs_and_tracks_imports() {
             "the preview was rendered again"
         );
         assert!(text.contains("edit to preview"), "{text}");
-        assert!(text.contains("  kernels: 1 compiled, 0 reused"), "{text}");
+        let (compiled, reused) = kernel_counts(&text);
+        assert!(compiled >= 1 && compiled + reused == 5, "{text}");
     }
 
     // 2. An invalid edit: diagnostics, and the outputs of #2 are left alone.
@@ -247,10 +270,12 @@ fn watch_follows_edits_keeps_good_outputs_and_tracks_imports() {
         "the scene of #1 again, but other code: first difference {diff:?}\n{text}"
     );
     if has_gpu {
-        // The kernel of #1 again: its pipeline is reused, not compiled.
-        assert!(text.contains("  kernels: 0 compiled, 1 reused"), "{text}");
+        // The kernels of #1 again: their pipelines are reused, not compiled.
+        assert_eq!(kernel_counts(&text), (0, 5), "{text}");
         assert!(
-            kernel_line(&text).contains("reused (memory cache)"),
+            kernel_lines(&text)
+                .iter()
+                .all(|l| l.contains("reused (memory cache)")),
             "{text}"
         );
     }
