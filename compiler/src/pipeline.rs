@@ -120,13 +120,17 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
     } else {
         None
     };
-    // 6b. Lower the wavefront model's stage kernels, when asked for (not for debug kernels).
+    // 6b. Lower the wavefront model's stage kernels, when the scene runs with it.
     let setting = checked
         .program
         .as_ref()
         .map_or(0, |p| p.scenes[scene].settings.exec);
-    let exec = ExecModel::resolve(request.kernel.exec, setting, request.kernel.auto);
-    let stages = if exec == ExecModel::Wavefront && request.kernel.debug.is_none() {
+    // A debug kernel is a megakernel (`rtc bvh`'s passes), whatever the scene asks for.
+    let exec = match request.kernel.debug {
+        Some(_) => ExecModel::Megakernel,
+        None => ExecModel::resolve(request.kernel.exec, setting, request.kernel.auto),
+    };
+    let stages = if exec == ExecModel::Wavefront {
         let lowered = timings.time("lower the stage kernels", || {
             wavefront::STAGES
                 .iter()
