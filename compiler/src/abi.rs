@@ -396,9 +396,12 @@ mod tests {
         for (i, b) in BINDINGS.iter().enumerate() {
             assert_eq!(b.binding as usize, i, "{} is out of order", b.name);
         }
+        // The megakernel can declare every binding but the wavefront model's `paths`; each
+        // wavefront stage declares its own subset, at most 8 storage buffers too (checked for every
+        // example in `kernel::wavefront`'s tests).
         let storage = BINDINGS
             .iter()
-            .filter(|b| b.kind != ResourceKind::Uniform)
+            .filter(|b| b.kind != ResourceKind::Uniform && b.name != "paths")
             .count();
         assert!(
             storage <= 8,

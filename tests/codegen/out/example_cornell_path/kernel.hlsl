@@ -20,6 +20,7 @@ struct FrameUniforms {
     uint camera_offset;
     uint background_type;
     uint background_offset;
+    uint path_slots;
 };
 
 struct Ray {
@@ -167,9 +168,9 @@ struct Frame {
 
 static const uint WORKGROUP_WIDTH = 8u;
 static const uint WORKGROUP_HEIGHT = 8u;
+static const uint NO_HIT = 4294967295u;
 static const uint SCATTER = 1000003u;
 static const uint RAY_CAMERA = 0u;
-static const uint NO_HIT = 4294967295u;
 static const bool HAS_MEDIA = false;
 static const uint MEDIUM_ENTRY_STRIDE = 1u;
 static const uint MESH_GEOMETRY = 4294967295u;
@@ -185,11 +186,11 @@ static const float GAMMA_6_ = 3.576281e-7;
 static const float GAMMA_4_ = 2.3841864e-7;
 static const bool HAS_SECONDARY_RAYS = true;
 static const bool HAS_BACKGROUND = false;
-static const uint FLAG_MEDIUM = 4u;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
 static const float INV_PI = 0.31830987;
+static const uint FLAG_MEDIUM = 4u;
 static const uint FLAG_SECONDARY_RAYS = 2u;
 static const uint MAX_DEPTH = 6u;
 static const uint STACK_SIZE = 6u;
@@ -258,6 +259,25 @@ uint2 rem_vec2u(uint2 a_3, uint2 b_3)
     bool2 by_zero_3 = (b_3 == _e3);
     uint2 divisor_3 = (by_zero_3 ? (1u).xx : b_3);
     return (by_zero_3 ? _e3 : naga_mod(a_3, divisor_3));
+}
+
+uint2 scattered_local(uint2 id)
+{
+    TileParams tile_1 = tile;
+    uint2 size = uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    const uint2 _e11 = div_vec2u(((tile_1.extent + size) - (1u).xx), size);
+    uint count = (_e11.x * _e11.y);
+    if ((count == 0u)) {
+        return (NO_HIT).xx;
+    }
+    const uint2 _e19 = div_vec2u(id, size);
+    uint order = ((_e19.y * _e11.x) + _e19.x);
+    const uint _e26 = rem_u32_(SCATTER, count);
+    const uint _e28 = rem_u32_((order * _e26), count);
+    const uint _e30 = rem_u32_(_e28, _e11.x);
+    const uint _e32 = div_u32_(_e28, _e11.x);
+    const uint2 _e35 = rem_vec2u(id, size);
+    return ((uint2(_e30, _e32) * size) + _e35);
 }
 
 uint pcg_hash(uint x)
@@ -361,7 +381,7 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
     float2 jitter = (float2)0;
 
     const uint2 _e2 = image_size_query();
-    float2 size = float2(_e2);
+    float2 size_1 = float2(_e2);
     jitter = (0.5).xx;
     const uint _e7 = samples_per_pixel_query();
     if ((_e7 > 1u)) {
@@ -369,12 +389,12 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
         jitter = _e10;
     }
     float2 _e12 = jitter;
-    float2 ndc = ((((float2(pixel_1) + _e12) / size) * (2.0).xx) - (1.0).xx);
+    float2 ndc = ((((float2(pixel_1) + _e12) / size_1) * (2.0).xx) - (1.0).xx);
     const float3 _e24 = normalize_vec3f((cam.look_at - cam.position));
     const float3 _e27 = normalize_vec3f(cross(_e24, cam.up));
     float3 up = cross(_e27, _e24);
     float h_1 = tan((radians(cam.fov) * 0.5));
-    float aspect = (size.x / size.y);
+    float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
     uint _e52 = F32_INF;
     const Ray ray_21 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
@@ -476,10 +496,10 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     bool outside = ((((u_1 < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u_1 > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u_1 + v_1) + w);
     float rcp_ = (1.0 / det);
-    float t_2 = ((((u_1 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_4[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
+    float t_4 = ((((u_1 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_4[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_7 ? float3(t_2, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_8 ? float3(t_4, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -577,7 +597,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
         uint _e20 = child;
         if (((_e20 & NODE_LEAF_BIT) != 0u)) {
             uint _e25 = child;
-            uint count = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            uint count_1 = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
             uint _e32 = child;
             uint first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
@@ -592,7 +612,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 }
                 loop_init = false;
                 uint _e37 = k;
-                if ((_e37 >= count)) {
+                if ((_e37 >= count_1)) {
                     break;
                 }
                 uint _e41 = k;
@@ -839,8 +859,8 @@ Hit finish_hit(Ray ray_6, Candidate c_1)
     float3 _e147 = hit.geometric_normal;
     hit.front_face = (dot(ray_6.dir, _e147) < 0.0);
     Hit _e151 = hit;
-    const Hit hit_8 = _e151;
-    return hit_8;
+    const Hit hit_9 = _e151;
+    return hit_9;
 }
 
 uint medium_at(float3 p_4, uint exclude)
@@ -1025,27 +1045,6 @@ float3 miss(Ray ray_9)
     return _e9;
 }
 
-float3 dispatch_medium(uint type_id_2, uint offset_3, Ray ray_10, float t, float3 radiance)
-{
-    return ZeroValuefloat3();
-}
-
-float3 through_medium(Ray ray_11, float t_1, float3 radiance_1)
-{
-    if (!(HAS_MEDIA)) {
-        return radiance_1;
-    }
-    if ((ray_11.medium == 0u)) {
-        return radiance_1;
-    }
-    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4((ray_11.medium - 1u)*128+0)), asfloat(instances.Load4((ray_11.medium - 1u)*128+16)), asfloat(instances.Load4((ray_11.medium - 1u)*128+32)), asfloat(instances.Load4((ray_11.medium - 1u)*128+48)), asfloat(instances.Load4((ray_11.medium - 1u)*128+64)), asfloat(instances.Load4((ray_11.medium - 1u)*128+80)), asuint(instances.Load((ray_11.medium - 1u)*128+96)), asuint(instances.Load((ray_11.medium - 1u)*128+100)), asuint(instances.Load((ray_11.medium - 1u)*128+104)), asuint(instances.Load((ray_11.medium - 1u)*128+108)), asuint(instances.Load((ray_11.medium - 1u)*128+112)), asuint(instances.Load((ray_11.medium - 1u)*128+116)), asuint(instances.Load((ray_11.medium - 1u)*128+120)), asuint(instances.Load((ray_11.medium - 1u)*128+124)));
-    if (((inst_8.flags & FLAG_MEDIUM) == 0u)) {
-        return radiance_1;
-    }
-    const float3 _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_11, t_1, radiance_1);
-    return _e21;
-}
-
 Emissive ConstructEmissive(float3 arg0, float arg1, uint arg2) {
     Emissive ret = (Emissive)0;
     ret.color = arg0;
@@ -1054,25 +1053,25 @@ Emissive ConstructEmissive(float3 arg0, float arg1, uint arg2) {
     return ret;
 }
 
-Emissive load_Emissive(uint offset_4)
+Emissive load_Emissive(uint offset_3)
 {
-    uint _e5 = asuint(params.Load((offset_4 + 0u)*4));
-    uint _e11 = asuint(params.Load((offset_4 + 1u)*4));
-    uint _e17 = asuint(params.Load((offset_4 + 2u)*4));
-    uint _e24 = asuint(params.Load((offset_4 + 3u)*4));
-    uint _e30 = asuint(params.Load((offset_4 + 4u)*4));
+    uint _e5 = asuint(params.Load((offset_3 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_3 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_3 + 2u)*4));
+    uint _e24 = asuint(params.Load((offset_3 + 3u)*4));
+    uint _e30 = asuint(params.Load((offset_3 + 4u)*4));
     const Emissive emissive = ConstructEmissive(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), asfloat(_e24), _e30);
     return emissive;
 }
 
-bool after_nee_bounce(Ray ray_12)
+bool after_nee_bounce(Ray ray_10)
 {
-    return (dot(ray_12.dir, ray_12.dir) > 2.0);
+    return (dot(ray_10.dir, ray_10.dir) > 2.0);
 }
 
-float3 emissive_shade(Emissive m, Ray ray_13, Hit hit_1)
+float3 emissive_shade(Emissive m, Ray ray_11, Hit hit_1)
 {
-    const bool _e3 = after_nee_bounce(ray_13);
+    const bool _e3 = after_nee_bounce(ray_11);
     if ((_e3 || (!(hit_1.front_face) && (m.two_sided == 0u)))) {
         return (0.0).xxx;
     }
@@ -1086,12 +1085,12 @@ PathDiffuse ConstructPathDiffuse(float3 arg0, uint arg1) {
     return ret;
 }
 
-PathDiffuse load_PathDiffuse(uint offset_5)
+PathDiffuse load_PathDiffuse(uint offset_4)
 {
-    uint _e5 = asuint(params.Load((offset_5 + 0u)*4));
-    uint _e11 = asuint(params.Load((offset_5 + 1u)*4));
-    uint _e17 = asuint(params.Load((offset_5 + 2u)*4));
-    uint _e24 = asuint(params.Load((offset_5 + 3u)*4));
+    uint _e5 = asuint(params.Load((offset_4 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_4 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_4 + 2u)*4));
+    uint _e24 = asuint(params.Load((offset_4 + 3u)*4));
     const PathDiffuse pathdiffuse = ConstructPathDiffuse(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), _e24);
     return pathdiffuse;
 }
@@ -1112,21 +1111,21 @@ QuadLight ConstructQuadLight(float3 arg0, float3 arg1, float3 arg2, float3 arg3,
     return ret;
 }
 
-QuadLight load_QuadLight(uint offset_6)
+QuadLight load_QuadLight(uint offset_5)
 {
-    uint _e5 = asuint(params.Load((offset_6 + 0u)*4));
-    uint _e11 = asuint(params.Load((offset_6 + 1u)*4));
-    uint _e17 = asuint(params.Load((offset_6 + 2u)*4));
-    uint _e24 = asuint(params.Load((offset_6 + 4u)*4));
-    uint _e30 = asuint(params.Load((offset_6 + 5u)*4));
-    uint _e36 = asuint(params.Load((offset_6 + 6u)*4));
-    uint _e43 = asuint(params.Load((offset_6 + 8u)*4));
-    uint _e49 = asuint(params.Load((offset_6 + 9u)*4));
-    uint _e55 = asuint(params.Load((offset_6 + 10u)*4));
-    uint _e62 = asuint(params.Load((offset_6 + 12u)*4));
-    uint _e68 = asuint(params.Load((offset_6 + 13u)*4));
-    uint _e74 = asuint(params.Load((offset_6 + 14u)*4));
-    uint _e81 = asuint(params.Load((offset_6 + 15u)*4));
+    uint _e5 = asuint(params.Load((offset_5 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_5 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_5 + 2u)*4));
+    uint _e24 = asuint(params.Load((offset_5 + 4u)*4));
+    uint _e30 = asuint(params.Load((offset_5 + 5u)*4));
+    uint _e36 = asuint(params.Load((offset_5 + 6u)*4));
+    uint _e43 = asuint(params.Load((offset_5 + 8u)*4));
+    uint _e49 = asuint(params.Load((offset_5 + 9u)*4));
+    uint _e55 = asuint(params.Load((offset_5 + 10u)*4));
+    uint _e62 = asuint(params.Load((offset_5 + 12u)*4));
+    uint _e68 = asuint(params.Load((offset_5 + 13u)*4));
+    uint _e74 = asuint(params.Load((offset_5 + 14u)*4));
+    uint _e81 = asuint(params.Load((offset_5 + 15u)*4));
     const QuadLight quadlight = ConstructQuadLight(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), float3(asfloat(_e24), asfloat(_e30), asfloat(_e36)), float3(asfloat(_e43), asfloat(_e49), asfloat(_e55)), float3(asfloat(_e62), asfloat(_e68), asfloat(_e74)), asfloat(_e81));
     return quadlight;
 }
@@ -1149,7 +1148,7 @@ float3 offset_origin(float3 p_5, float3 n_3, float error)
     return _e17;
 }
 
-float shadow_query(float3 position, float3 normal, float3 dir, float dist)
+Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
 {
     float3 n_4 = (float3)0;
     float tmax_4 = (float)0;
@@ -1162,9 +1161,9 @@ float shadow_query(float3 position, float3 normal, float3 dir, float dist)
     }
     float3 a_6 = abs(position);
     float _e13 = hit_error;
-    float error_2 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
+    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
     float3 _e22 = n_4;
-    const float3 _e23 = offset_origin(position, _e22, error_2);
+    const float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = asfloat(_e25);
     uint _e29 = F32_INF;
@@ -1176,9 +1175,15 @@ float shadow_query(float3 position, float3 normal, float3 dir, float dist)
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    Ray ray_24 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
-    const Candidate _e65 = intersect_scene(ray_24, true);
-    return ((_e65.slot != NO_HIT) ? 0.0 : 1.0);
+    const Ray ray_24 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_24;
+}
+
+float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
+{
+    const Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
+    const Candidate _e6 = intersect_scene(_e4, true);
+    return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
 LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2) {
@@ -1189,35 +1194,35 @@ LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2) {
     return ret;
 }
 
-LightSample quad_light(QuadLight l, float3 position_1, float3 normal_1)
+LightSample quad_light(QuadLight l, float3 position_2, float3 normal_2)
 {
     float3 c_6 = cross(l.edge_u, l.edge_v);
     float area = length(c_6);
     const float2 _e7 = rand2_next();
-    float3 to_light = (((l.corner + (l.edge_u * (_e7.x).xxx)) + (l.edge_v * (_e7.y).xxx)) - position_1);
+    float3 to_light = (((l.corner + (l.edge_u * (_e7.x).xxx)) + (l.edge_v * (_e7.y).xxx)) - position_2);
     float dist2_ = dot(to_light, to_light);
-    float dist_1 = sqrt(dist2_);
-    float3 dir_4 = (to_light / (max(dist_1, 1e-20)).xxx);
-    float cos_light = (-(dot(dir_4, c_6)) / max(area, 1e-30));
+    float dist_2 = sqrt(dist2_);
+    float3 dir_6 = (to_light / (max(dist_2, 1e-20)).xxx);
+    float cos_light = (-(dot(dir_6, c_6)) / max(area, 1e-30));
     if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
-        const LightSample lightsample = ConstructLightSample(dir_4, dist_1, (0.0).xxx);
+        const LightSample lightsample = ConstructLightSample(dir_6, dist_2, (0.0).xxx);
         return lightsample;
     }
-    const float _e41 = shadow_query(position_1, normal_1, dir_4, dist_1);
+    const float _e41 = shadow_query(position_2, normal_2, dir_6, dist_2);
     float strength = (((l.intensity * cos_light) * area) / dist2_);
-    const LightSample lightsample_1 = ConstructLightSample(dir_4, dist_1, ((l.color * (strength).xxx) * (_e41).xxx));
+    const LightSample lightsample_1 = ConstructLightSample(dir_6, dist_2, ((l.color * (strength).xxx) * (_e41).xxx));
     return lightsample_1;
 }
 
-LightSample dispatch_light(uint type_id_3, uint offset_7, float3 position_2, float3 normal_2)
+LightSample dispatch_light(uint type_id_2, uint offset_6, float3 position_3, float3 normal_3)
 {
-    const QuadLight _e3 = load_QuadLight(offset_7);
-    const LightSample _e4 = quad_light(_e3, position_2, normal_2);
+    const QuadLight _e3 = load_QuadLight(offset_6);
+    const LightSample _e4 = quad_light(_e3, position_3, normal_3);
     const LightSample lightsample_2 = _e4;
     return lightsample_2;
 }
 
-LightSample sample_light_query(uint i_1, float3 position_3, float3 normal_3)
+LightSample sample_light_query(uint i_1, float3 position_4, float3 normal_4)
 {
     FrameUniforms frame_4 = frame;
     if ((i_1 >= frame_4.light_count)) {
@@ -1227,17 +1232,17 @@ LightSample sample_light_query(uint i_1, float3 position_3, float3 normal_3)
     uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
     uint _e21 = asuint(params.Load(entry*4));
     uint _e26 = asuint(params.Load((entry + 1u)*4));
-    const LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3);
+    const LightSample _e27 = dispatch_light(_e21, _e26, position_4, normal_4);
     const LightSample lightsample_4 = _e27;
     return lightsample_4;
 }
 
-float3 path_diffuse_shade(PathDiffuse m_1, Ray ray_14, Hit hit_2, float3 secondary)
+float3 path_diffuse_shade(PathDiffuse m_1, Ray ray_12, Hit hit_2, float3 secondary)
 {
     float3 direct = (float3)0;
     uint i_2 = (uint)0;
 
-    float3 n_10 = faceforward(hit_2.normal, ray_14.dir, hit_2.geometric_normal);
+    float3 n_10 = faceforward(hit_2.normal, ray_12.dir, hit_2.geometric_normal);
     direct = (0.0).xxx;
     const uint _e12 = light_count_query();
     i_2 = 0u;
@@ -1264,17 +1269,17 @@ float3 path_diffuse_shade(PathDiffuse m_1, Ray ray_14, Hit hit_2, float3 seconda
     return (((m_1.albedo * (INV_PI).xxx) * _e36) + secondary);
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_15, Hit hit_3, float3 secondary_1)
+float3 dispatch_closest_hit(uint type_id_3, uint offset_7, Ray ray_13, Hit hit_3, float3 secondary_1)
 {
-    switch(type_id_4) {
+    switch(type_id_3) {
         case 0u: {
-            const Emissive _e5 = load_Emissive(offset_8);
-            const float3 _e6 = emissive_shade(_e5, ray_15, hit_3);
+            const Emissive _e5 = load_Emissive(offset_7);
+            const float3 _e6 = emissive_shade(_e5, ray_13, hit_3);
             return _e6;
         }
         case 1u: {
-            const PathDiffuse _e7 = load_PathDiffuse(offset_8);
-            const float3 _e8 = path_diffuse_shade(_e7, ray_15, hit_3, secondary_1);
+            const PathDiffuse _e7 = load_PathDiffuse(offset_7);
+            const float3 _e8 = path_diffuse_shade(_e7, ray_13, hit_3, secondary_1);
             return _e8;
         }
         default: {
@@ -1284,12 +1289,33 @@ float3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_15, Hit hit_3
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_16, Candidate c_2)
+float3 shade_direct(Ray ray_14, Candidate c_2)
 {
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_16, c_2);
-    const float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_16, _e6, (0.0).xxx);
+    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
+    const Hit _e6 = finish_hit(ray_14, c_2);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, (0.0).xxx);
     return _e11;
+}
+
+float3 dispatch_medium(uint type_id_4, uint offset_8, Ray ray_15, float t, float3 radiance)
+{
+    return ZeroValuefloat3();
+}
+
+float3 through_medium(Ray ray_16, float t_1, float3 radiance_1)
+{
+    if (!(HAS_MEDIA)) {
+        return radiance_1;
+    }
+    if ((ray_16.medium == 0u)) {
+        return radiance_1;
+    }
+    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_16.medium - 1u)*128+0)), asfloat(instances.Load4((ray_16.medium - 1u)*128+16)), asfloat(instances.Load4((ray_16.medium - 1u)*128+32)), asfloat(instances.Load4((ray_16.medium - 1u)*128+48)), asfloat(instances.Load4((ray_16.medium - 1u)*128+64)), asfloat(instances.Load4((ray_16.medium - 1u)*128+80)), asuint(instances.Load((ray_16.medium - 1u)*128+96)), asuint(instances.Load((ray_16.medium - 1u)*128+100)), asuint(instances.Load((ray_16.medium - 1u)*128+104)), asuint(instances.Load((ray_16.medium - 1u)*128+108)), asuint(instances.Load((ray_16.medium - 1u)*128+112)), asuint(instances.Load((ray_16.medium - 1u)*128+116)), asuint(instances.Load((ray_16.medium - 1u)*128+120)), asuint(instances.Load((ray_16.medium - 1u)*128+124)));
+    if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
+        return radiance_1;
+    }
+    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_16, t_1, radiance_1);
+    return _e21;
 }
 
 float3x3 orthonormal_basis(float3 n_5)
@@ -1310,16 +1336,16 @@ float3 sample_cosine_hemisphere(float3 n_6, float2 u)
     return mul(local, _e17);
 }
 
-float3 nee_bounce_dir(float3 dir_1)
+float3 nee_bounce_dir(float3 dir_2)
 {
-    return (dir_1 * (NEE_BOUNCE_LENGTH).xxx);
+    return (dir_2 * (NEE_BOUNCE_LENGTH).xxx);
 }
 
-void rt_spawn(float3 dir_2, float3 weight)
+void rt_spawn(float3 dir_3, float3 weight)
 {
     uint _e3 = spawn_count;
     if ((_e3 < 1u)) {
-        spawn_dirs[min(uint(_e3), 0u)] = dir_2;
+        spawn_dirs[min(uint(_e3), 0u)] = dir_3;
         spawn_weights[min(uint(_e3), 0u)] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1357,19 +1383,25 @@ void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_18, Hit hit_
     return;
 }
 
-float3 spawn_origin(Hit hit_6, float error_1, float3 dir_3)
+float3 spawn_origin_at(float3 position_5, float3 normal_5, float error_1, float3 dir_4)
 {
     float3 n_7 = (float3)0;
 
-    n_7 = hit_6.geometric_normal;
+    n_7 = normal_5;
     float3 _e5 = n_7;
-    if ((dot(dir_3, _e5) < 0.0)) {
+    if ((dot(dir_4, _e5) < 0.0)) {
         float3 _e9 = n_7;
         n_7 = -(_e9);
     }
-    float3 _e12 = n_7;
-    const float3 _e13 = offset_origin(hit_6.position, _e12, error_1);
-    return _e13;
+    float3 _e11 = n_7;
+    const float3 _e12 = offset_origin(position_5, _e11, error_1);
+    return _e12;
+}
+
+float3 spawn_origin(Hit hit_6, float error_2, float3 dir_5)
+{
+    const float3 _e5 = spawn_origin_at(hit_6.position, hit_6.geometric_normal, error_2, dir_5);
+    return _e5;
 }
 
 Frame ConstructFrame(Ray arg0, Hit arg1, float arg2, uint arg3, float3 arg4, float3 arg5[1], float3 arg6[1], uint arg7, uint arg8) {
@@ -1398,68 +1430,125 @@ ret_ZeroValuearray1_float3_ ZeroValuearray1_float3_() {
 
 float3 trace(Ray camera_ray)
 {
+    float3 radiance_2 = (float3)0;
+    float t_2 = (float)0;
     Frame stack[6] = (Frame[6])0;
     uint depth = (uint)0;
     Ray ray_19 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
+    Ray s_ray = (Ray)0;
+    Candidate s_c = (Candidate)0;
+    Hit s_hit = (Hit)0;
+    float s_error = (float)0;
+    float3 s_sum = (float3)0;
+    bool fresh = (bool)0;
+    bool waiting = (bool)0;
     bool pushed = (bool)0;
+    float3 radiance_3 = (float3)0;
+    float t_3 = (float)0;
+    Hit hit_7 = (Hit)0;
     Frame f = (Frame)0;
     uint i_3 = (uint)0;
     uint medium = (uint)0;
 
     if (!(HAS_SECONDARY_RAYS)) {
         const Candidate _e4 = intersect_scene(camera_ray, false);
+        radiance_2 = (0.0).xxx;
+        uint _e9 = F32_INF;
+        t_2 = asfloat(_e9);
         if ((_e4.slot == NO_HIT)) {
             hit_error = 0.0;
-            uint _e11 = F32_INF;
-            const float3 _e13 = miss(camera_ray);
-            const float3 _e14 = through_medium(camera_ray, asfloat(_e11), _e13);
-            return _e14;
+            const float3 _e17 = miss(camera_ray);
+            radiance_2 = _e17;
+        } else {
+            const float3 _e18 = shade_direct(camera_ray, _e4);
+            radiance_2 = _e18;
+            t_2 = _e4.t;
         }
-        const float3 _e16 = shade_direct(camera_ray, _e4);
-        const float3 _e17 = through_medium(camera_ray, _e4.t, _e16);
-        return _e17;
+        float _e20 = t_2;
+        float3 _e21 = radiance_2;
+        const float3 _e22 = through_medium(camera_ray, _e20, _e21);
+        return _e22;
     }
     stack = ZeroValuearray6_Frame_();
     depth = 0u;
     ray_19 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
+    s_ray = camera_ray;
+    uint _e35 = F32_INF;
+    const Candidate _e37 = no_candidate(asfloat(_e35));
+    s_c = _e37;
+    s_hit = ConstructHit((0.0).xxx, 0.0, (0.0).xxx, (0.0).xxx, (0.0).xx, true, 0u, 0u);
+    s_error = 0.0;
+    s_sum = (0.0).xxx;
+    fresh = false;
+    waiting = false;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        bool _e28 = have_value;
-        if (!(_e28)) {
-            Ray _e30 = ray_19;
-            const Candidate _e32 = intersect_scene(_e30, false);
-            if ((_e32.slot == NO_HIT)) {
+        bool _e62 = have_value;
+        bool _e64 = waiting;
+        if ((!(_e62) && !(_e64))) {
+            Ray _e67 = ray_19;
+            const Candidate _e69 = intersect_scene(_e67, false);
+            s_c = _e69;
+            Ray _e70 = ray_19;
+            s_ray = _e70;
+            s_sum = (0.0).xxx;
+            fresh = true;
+            waiting = true;
+        }
+        bool _e75 = waiting;
+        if (_e75) {
+            waiting = false;
+            pushed = false;
+            radiance_3 = (0.0).xxx;
+            uint _e83 = F32_INF;
+            t_3 = asfloat(_e83);
+            uint _e87 = s_c.slot;
+            if ((_e87 == NO_HIT)) {
                 hit_error = 0.0;
-                Ray _e38 = ray_19;
-                uint _e40 = F32_INF;
-                Ray _e42 = ray_19;
-                const float3 _e43 = miss(_e42);
-                const float3 _e44 = through_medium(_e38, asfloat(_e40), _e43);
-                value = _e44;
-                have_value = true;
+                Ray _e92 = s_ray;
+                const float3 _e93 = miss(_e92);
+                radiance_3 = _e93;
             } else {
-                GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e32.slot*128+0)), asfloat(instances.Load4(_e32.slot*128+16)), asfloat(instances.Load4(_e32.slot*128+32)), asfloat(instances.Load4(_e32.slot*128+48)), asfloat(instances.Load4(_e32.slot*128+64)), asfloat(instances.Load4(_e32.slot*128+80)), asuint(instances.Load(_e32.slot*128+96)), asuint(instances.Load(_e32.slot*128+100)), asuint(instances.Load(_e32.slot*128+104)), asuint(instances.Load(_e32.slot*128+108)), asuint(instances.Load(_e32.slot*128+112)), asuint(instances.Load(_e32.slot*128+116)), asuint(instances.Load(_e32.slot*128+120)), asuint(instances.Load(_e32.slot*128+124)));
-                Ray _e50 = ray_19;
-                const Hit _e51 = finish_hit(_e50, _e32);
-                float error_3 = hit_error;
-                pushed = false;
-                uint _e62 = ray_19.depth;
-                uint _e66 = depth;
-                if (((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE))) {
+                uint _e95 = s_c.slot;
+                GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e95*128+0)), asfloat(instances.Load4(_e95*128+16)), asfloat(instances.Load4(_e95*128+32)), asfloat(instances.Load4(_e95*128+48)), asfloat(instances.Load4(_e95*128+64)), asfloat(instances.Load4(_e95*128+80)), asuint(instances.Load(_e95*128+96)), asuint(instances.Load(_e95*128+100)), asuint(instances.Load(_e95*128+104)), asuint(instances.Load(_e95*128+108)), asuint(instances.Load(_e95*128+112)), asuint(instances.Load(_e95*128+116)), asuint(instances.Load(_e95*128+120)), asuint(instances.Load(_e95*128+124)));
+                Hit _e99 = s_hit;
+                hit_7 = _e99;
+                bool _e101 = fresh;
+                if (_e101) {
+                    Ray _e102 = s_ray;
+                    Candidate _e103 = s_c;
+                    const Hit _e104 = finish_hit(_e102, _e103);
+                    hit_7 = _e104;
+                    float _e106 = hit_error;
+                    s_error = _e106;
+                } else {
+                    float _e107 = s_error;
+                    hit_error = _e107;
+                }
+                float _e110 = hit_7.t;
+                t_3 = _e110;
+                bool _e111 = fresh;
+                uint _e119 = s_ray.depth;
+                uint _e123 = depth;
+                if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e74 = ray_19;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);
-                    uint _e76 = spawn_count;
-                    uint n_12 = min(min(_e76, 1u), MAX_SPAWN);
+                    Ray _e131 = s_ray;
+                    Hit _e132 = hit_7;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
+                    uint _e134 = spawn_count;
+                    uint n_12 = min(min(_e134, 1u), MAX_SPAWN);
                     if ((n_12 > 0u)) {
-                        Ray _e83 = ray_19;
-                        f = ConstructFrame(_e83, _e51, error_3, _e32.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_12, 0u);
+                        Ray _e141 = s_ray;
+                        Hit _e142 = hit_7;
+                        float _e143 = s_error;
+                        uint _e145 = s_c.slot;
+                        f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_12, 0u);
                         i_3 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
                         bool loop_init_3 = true;
@@ -1467,90 +1556,97 @@ float3 trace(Ray camera_ray)
                             if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
                             loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                             if (!loop_init_3) {
-                                uint _e114 = i_3;
-                                i_3 = (_e114 + 1u);
+                                uint _e175 = i_3;
+                                i_3 = (_e175 + 1u);
                             }
                             loop_init_3 = false;
-                            uint _e94 = i_3;
-                            if ((_e94 >= n_12)) {
+                            uint _e155 = i_3;
+                            if ((_e155 >= n_12)) {
                                 break;
                             }
-                            uint _e97 = i_3;
-                            uint _e101 = i_3;
-                            float3 _e104 = spawn_dirs[min(uint(_e101), 0u)];
-                            f.dirs[min(uint(min(_e97, 0u)), 0u)] = _e104;
-                            uint _e106 = i_3;
-                            uint _e110 = i_3;
-                            float3 _e113 = spawn_weights[min(uint(_e110), 0u)];
-                            f.weights[min(uint(min(_e106, 0u)), 0u)] = _e113;
+                            uint _e158 = i_3;
+                            uint _e162 = i_3;
+                            float3 _e165 = spawn_dirs[min(uint(_e162), 0u)];
+                            f.dirs[min(uint(min(_e158, 0u)), 0u)] = _e165;
+                            uint _e167 = i_3;
+                            uint _e171 = i_3;
+                            float3 _e174 = spawn_weights[min(uint(_e171), 0u)];
+                            f.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
                         }
-                        uint _e117 = depth;
-                        Frame _e121 = f;
-                        stack[min(uint(min(_e117, 5u)), 5u)] = _e121;
-                        uint _e122 = depth;
-                        depth = (_e122 + 1u);
+                        uint _e178 = depth;
+                        Frame _e182 = f;
+                        stack[min(uint(min(_e178, 5u)), 5u)] = _e182;
+                        uint _e183 = depth;
+                        depth = (_e183 + 1u);
                         pushed = true;
                     }
                 }
-                bool _e126 = pushed;
-                if (!(_e126)) {
-                    Ray _e130 = ray_19;
-                    const float3 _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, (0.0).xxx);
-                    Ray _e134 = ray_19;
-                    const float3 _e136 = through_medium(_e134, _e32.t, _e133);
-                    value = _e136;
-                    have_value = true;
+                bool _e187 = pushed;
+                if (!(_e187)) {
+                    Ray _e191 = s_ray;
+                    Hit _e192 = hit_7;
+                    float3 _e193 = s_sum;
+                    const float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
+                    radiance_3 = _e194;
                 }
             }
-        }
-        bool _e138 = have_value;
-        if (_e138) {
-            uint _e139 = depth;
-            if ((_e139 == 0u)) {
-                float3 _e142 = value;
-                return _e142;
+            bool _e195 = pushed;
+            if (!(_e195)) {
+                Ray _e197 = s_ray;
+                float _e198 = t_3;
+                float3 _e199 = radiance_3;
+                const float3 _e200 = through_medium(_e197, _e198, _e199);
+                value = _e200;
+                have_value = true;
             }
-            uint _e143 = depth;
-            uint top = (_e143 - 1u);
-            uint _e150 = stack[min(uint(min(top, 5u)), 5u)].next;
-            uint child_2 = (_e150 - 1u);
-            float3 _e157 = stack[min(uint(min(top, 5u)), 5u)].sum;
-            float3 _e165 = stack[min(uint(min(top, 5u)), 5u)].weights[min(uint(min(child_2, 0u)), 0u)];
-            float3 _e166 = value;
-            stack[min(uint(min(top, 5u)), 5u)].sum = (_e157 + (_e165 * _e166));
+        }
+        bool _e202 = have_value;
+        if (_e202) {
+            uint _e203 = depth;
+            if ((_e203 == 0u)) {
+                float3 _e206 = value;
+                return _e206;
+            }
+            uint _e207 = depth;
+            uint top = (_e207 - 1u);
+            uint _e214 = stack[min(uint(min(top, 5u)), 5u)].next;
+            uint child_2 = (_e214 - 1u);
+            float3 _e221 = stack[min(uint(min(top, 5u)), 5u)].sum;
+            float3 _e229 = stack[min(uint(min(top, 5u)), 5u)].weights[min(uint(min(child_2, 0u)), 0u)];
+            float3 _e230 = value;
+            stack[min(uint(min(top, 5u)), 5u)].sum = (_e221 + (_e229 * _e230));
             have_value = false;
         }
-        uint _e170 = depth;
-        uint top_1 = (_e170 - 1u);
-        uint _e177 = stack[min(uint(min(top_1, 5u)), 5u)].next;
-        uint _e182 = stack[min(uint(min(top_1, 5u)), 5u)].count;
-        if ((_e177 < _e182)) {
+        uint _e234 = depth;
+        uint top_1 = (_e234 - 1u);
+        uint _e241 = stack[min(uint(min(top_1, 5u)), 5u)].next;
+        uint _e246 = stack[min(uint(min(top_1, 5u)), 5u)].count;
+        if ((_e241 < _e246)) {
             uint i_4 = stack[min(uint(min(top_1, 5u)), 5u)].next;
             stack[min(uint(min(top_1, 5u)), 5u)].next = (i_4 + 1u);
             Ray parent = stack[min(uint(min(top_1, 5u)), 5u)].ray;
-            Hit hit_9 = stack[min(uint(min(top_1, 5u)), 5u)].hit;
-            float3 dir_5 = stack[min(uint(min(top_1, 5u)), 5u)].dirs[min(uint(min(i_4, 0u)), 0u)];
+            Hit hit_10 = stack[min(uint(min(top_1, 5u)), 5u)].hit;
+            float3 dir_7 = stack[min(uint(min(top_1, 5u)), 5u)].dirs[min(uint(min(i_4, 0u)), 0u)];
             medium = parent.medium;
-            float _e219 = stack[min(uint(min(top_1, 5u)), 5u)].error;
-            const float3 _e220 = spawn_origin(hit_9, _e219, dir_5);
-            uint _e223 = F32_INF;
-            uint _e229 = medium;
-            ray_19 = ConstructRay(_e220, 0.0, dir_5, asfloat(_e223), (parent.depth + 1u), RAY_SECONDARY, _e229);
+            float _e283 = stack[min(uint(min(top_1, 5u)), 5u)].error;
+            const float3 _e284 = spawn_origin(hit_10, _e283, dir_7);
+            uint _e287 = F32_INF;
+            uint _e293 = medium;
+            ray_19 = ConstructRay(_e284, 0.0, dir_7, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
-            uint _e235 = stack[min(uint(min(top_1, 5u)), 5u)].slot;
-            GpuInstance inst_11 = ConstructGpuInstance(asfloat(instances.Load4(_e235*128+0)), asfloat(instances.Load4(_e235*128+16)), asfloat(instances.Load4(_e235*128+32)), asfloat(instances.Load4(_e235*128+48)), asfloat(instances.Load4(_e235*128+64)), asfloat(instances.Load4(_e235*128+80)), asuint(instances.Load(_e235*128+96)), asuint(instances.Load(_e235*128+100)), asuint(instances.Load(_e235*128+104)), asuint(instances.Load(_e235*128+108)), asuint(instances.Load(_e235*128+112)), asuint(instances.Load(_e235*128+116)), asuint(instances.Load(_e235*128+120)), asuint(instances.Load(_e235*128+124)));
-            float _e243 = stack[min(uint(min(top_1, 5u)), 5u)].error;
-            hit_error = _e243;
-            Ray _e251 = stack[min(uint(min(top_1, 5u)), 5u)].ray;
-            Hit _e256 = stack[min(uint(min(top_1, 5u)), 5u)].hit;
-            float3 _e261 = stack[min(uint(min(top_1, 5u)), 5u)].sum;
-            const float3 _e262 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e251, _e256, _e261);
-            Ray _e267 = stack[min(uint(min(top_1, 5u)), 5u)].ray;
-            float _e273 = stack[min(uint(min(top_1, 5u)), 5u)].hit.t;
-            const float3 _e274 = through_medium(_e267, _e273, _e262);
-            value = _e274;
+            Ray _e299 = stack[min(uint(min(top_1, 5u)), 5u)].ray;
+            s_ray = _e299;
+            Hit _e304 = stack[min(uint(min(top_1, 5u)), 5u)].hit;
+            s_hit = _e304;
+            float _e309 = stack[min(uint(min(top_1, 5u)), 5u)].error;
+            s_error = _e309;
+            uint _e315 = stack[min(uint(min(top_1, 5u)), 5u)].slot;
+            s_c.slot = _e315;
+            float3 _e320 = stack[min(uint(min(top_1, 5u)), 5u)].sum;
+            s_sum = _e320;
+            fresh = false;
+            waiting = true;
             depth = top_1;
-            have_value = true;
         }
     }
     return ZeroValuefloat3();
@@ -1575,7 +1671,7 @@ void render_pixel(uint2 pixel_3)
     Ray ray_20 = (Ray)0;
 
     FrameUniforms frame_5 = frame;
-    TileParams tile_1 = tile;
+    TileParams tile_2 = tile;
     sum = (0.0).xxx;
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
@@ -1595,7 +1691,7 @@ void render_pixel(uint2 pixel_3)
             break;
         }
         uint _e18 = s_1;
-        uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
+        uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
         ray_20 = _e23;
@@ -1623,11 +1719,11 @@ void render_pixel(uint2 pixel_3)
     float3 _e59 = sum;
     float4 _e62 = float4(_e59, float(frame_5.samples_per_pass));
     uint _e63 = bad;
-    if ((tile_1.frame == 0u)) {
-        accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint(_e62));
+    if ((tile_2.frame == 0u)) {
+        accum.Store4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16, asuint(_e62));
     } else {
-        float4 _e69 = asfloat(accum.Load4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16));
-        accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint((_e69 + _e62)));
+        float4 _e69 = asfloat(accum.Load4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16));
+        accum.Store4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16, asuint((_e69 + _e62)));
     }
     if ((_e63 > 0u)) {
         counters.InterlockedAdd(0, _e63);
@@ -1635,27 +1731,14 @@ void render_pixel(uint2 pixel_3)
     return;
 }
 
-void render_invocation(uint2 id)
+void render_invocation(uint2 id_1)
 {
-    TileParams tile_2 = tile;
-    uint2 size_1 = uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
-    const uint2 _e11 = div_vec2u(((tile_2.extent + size_1) - (1u).xx), size_1);
-    uint count_1 = (_e11.x * _e11.y);
-    if ((count_1 == 0u)) {
+    TileParams tile_3 = tile;
+    const uint2 _e3 = scattered_local(id_1);
+    if (any((_e3 >= tile_3.extent))) {
         return;
     }
-    const uint2 _e17 = div_vec2u(id, size_1);
-    uint order = ((_e17.y * _e11.x) + _e17.x);
-    const uint _e24 = rem_u32_(SCATTER, count_1);
-    const uint _e26 = rem_u32_((order * _e24), count_1);
-    const uint _e28 = rem_u32_(_e26, _e11.x);
-    const uint _e30 = div_u32_(_e26, _e11.x);
-    const uint2 _e33 = rem_vec2u(id, size_1);
-    uint2 local_1 = ((uint2(_e28, _e30) * size_1) + _e33);
-    if (any((local_1 >= tile_2.extent))) {
-        return;
-    }
-    render_pixel((tile_2.origin + local_1));
+    render_pixel((tile_3.origin + _e3));
     return;
 }
 

@@ -24,6 +24,7 @@ struct FrameUniforms {
     uint camera_offset;
     uint background_type;
     uint background_offset;
+    uint path_slots;
 };
 struct Ray {
     vec3 origin;
@@ -97,6 +98,9 @@ struct Fog {
     vec3 albedo;
     uint lights_inside;
 };
+struct Lambert {
+    vec3 albedo;
+};
 struct LightSample {
     vec3 dir;
     float dist;
@@ -108,9 +112,6 @@ struct PointLight {
     float intensity;
     float range;
     float inner_range;
-};
-struct Lambert {
-    vec3 albedo;
 };
 struct Frame {
     Ray ray;
@@ -125,9 +126,9 @@ struct Frame {
 };
 const uint WORKGROUP_WIDTH = 8u;
 const uint WORKGROUP_HEIGHT = 8u;
+const uint NO_HIT = 4294967295u;
 const uint SCATTER = 1000003u;
 const uint RAY_CAMERA = 0u;
-const uint NO_HIT = 4294967295u;
 const bool HAS_MEDIA = true;
 const uint MEDIUM_ENTRY_STRIDE = 1u;
 const uint MESH_GEOMETRY = 4294967295u;
@@ -145,11 +146,11 @@ const uint BLAS_STACK = 64u;
 const uint TLAS_STACK = 10u;
 const bool HAS_SECONDARY_RAYS = true;
 const bool HAS_BACKGROUND = false;
-const uint FLAG_MEDIUM = 4u;
 const uint LIGHT_ENTRY_STRIDE = 2u;
 const float LIGHT_ERROR = 4.7683716e-7;
-const float PI = 3.1415927;
 const float INV_PI = 0.31830987;
+const uint FLAG_MEDIUM = 4u;
+const float PI = 3.1415927;
 const uint FLAG_SECONDARY_RAYS = 2u;
 const uint MAX_DEPTH = 3u;
 const uint STACK_SIZE = 3u;
@@ -214,6 +215,24 @@ uvec2 rem_vec2u(uvec2 a_3, uvec2 b_3) {
     bvec2 by_zero_3 = equal(b_3, _e3);
     uvec2 divisor_3 = mix(b_3, uvec2(1u), by_zero_3);
     return mix((a_3 % divisor_3), _e3, by_zero_3);
+}
+
+uvec2 scattered_local(uvec2 id) {
+    TileParams tile_1 = _group_0_binding_1_cs;
+    uvec2 size = uvec2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    uvec2 _e11 = div_vec2u(((tile_1.extent + size) - uvec2(1u)), size);
+    uint count = (_e11.x * _e11.y);
+    if ((count == 0u)) {
+        return uvec2(NO_HIT);
+    }
+    uvec2 _e19 = div_vec2u(id, size);
+    uint order = ((_e19.y * _e11.x) + _e19.x);
+    uint _e26 = rem_u32_(SCATTER, count);
+    uint _e28 = rem_u32_((order * _e26), count);
+    uint _e30 = rem_u32_(_e28, _e11.x);
+    uint _e32 = div_u32_(_e28, _e11.x);
+    uvec2 _e35 = rem_vec2u(id, size);
+    return ((uvec2(_e30, _e32) * size) + _e35);
 }
 
 uint pcg_hash(uint x) {
@@ -284,7 +303,7 @@ vec3 normalize_vec3f(vec3 v) {
 Ray pinhole_ray(Pinhole cam, uvec2 pixel_1, uint sample_1) {
     vec2 jitter = vec2(0.0);
     uvec2 _e2 = image_size_query();
-    vec2 size = vec2(_e2);
+    vec2 size_1 = vec2(_e2);
     jitter = vec2(0.5);
     uint _e7 = samples_per_pixel_query();
     if ((_e7 > 1u)) {
@@ -292,12 +311,12 @@ Ray pinhole_ray(Pinhole cam, uvec2 pixel_1, uint sample_1) {
         jitter = _e10;
     }
     vec2 _e12 = jitter;
-    vec2 ndc = ((((vec2(pixel_1) + _e12) / size) * vec2(2.0)) - vec2(1.0));
+    vec2 ndc = ((((vec2(pixel_1) + _e12) / size_1) * vec2(2.0)) - vec2(1.0));
     vec3 _e24 = normalize_vec3f((cam.look_at - cam.position));
     vec3 _e27 = normalize_vec3f(cross(_e24, cam.up));
     vec3 up = cross(_e27, _e24);
     float h_1 = tan((radians(cam.fov) * 0.5));
-    float aspect = (size.x / size.y);
+    float aspect = (size_1.x / size_1.y);
     vec3 _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
     uint _e52 = F32_INF;
     return Ray(cam.position, 0.0, _e48, uintBitsToFloat(_e52), 0u, 0u, 0u);
@@ -366,10 +385,10 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
-    float t_3 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
+    float t_5 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    bool hit_11 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_10 ? vec3(t_3, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_11 ? vec3(t_5, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 float point_error(vec3 origin, vec3 along) {
@@ -578,7 +597,7 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
         uint _e20 = child;
         if (((_e20 & NODE_LEAF_BIT) != 0u)) {
             uint _e25 = child;
-            uint count = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            uint count_1 = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
             uint _e32 = child;
             uint first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
@@ -590,7 +609,7 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
                 }
                 loop_init = false;
                 uint _e37 = k;
-                if ((_e37 >= count)) {
+                if ((_e37 >= count_1)) {
                     break;
                 }
                 uint _e41 = k;
@@ -836,21 +855,37 @@ vec3 miss(Ray ray_11) {
     return _e9;
 }
 
+vec3 fog_shade(Fog m_1, Ray ray_12, Hit hit_3, vec3 secondary) {
+    return secondary;
+}
+
+Lambert load_Lambert(uint offset_5) {
+    uint _e5 = _group_0_binding_6_cs[(offset_5 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_5 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_5 + 2u)];
+    return Lambert(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
+}
+
+vec3 shading_normal(Ray ray_13, Hit hit_4) {
+    vec3 ng = faceforward(hit_4.geometric_normal, ray_13.dir, hit_4.geometric_normal);
+    return faceforward(hit_4.normal, -(ng), hit_4.normal);
+}
+
 uint light_count_query() {
     FrameUniforms _e1 = _group_0_binding_0_cs;
     return _e1.light_count;
 }
 
-PointLight load_PointLight(uint offset_5) {
-    uint _e5 = _group_0_binding_6_cs[(offset_5 + 0u)];
-    uint _e11 = _group_0_binding_6_cs[(offset_5 + 1u)];
-    uint _e17 = _group_0_binding_6_cs[(offset_5 + 2u)];
-    uint _e24 = _group_0_binding_6_cs[(offset_5 + 4u)];
-    uint _e30 = _group_0_binding_6_cs[(offset_5 + 5u)];
-    uint _e36 = _group_0_binding_6_cs[(offset_5 + 6u)];
-    uint _e43 = _group_0_binding_6_cs[(offset_5 + 7u)];
-    uint _e49 = _group_0_binding_6_cs[(offset_5 + 8u)];
-    uint _e55 = _group_0_binding_6_cs[(offset_5 + 9u)];
+PointLight load_PointLight(uint offset_6) {
+    uint _e5 = _group_0_binding_6_cs[(offset_6 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_6 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_6 + 2u)];
+    uint _e24 = _group_0_binding_6_cs[(offset_6 + 4u)];
+    uint _e30 = _group_0_binding_6_cs[(offset_6 + 5u)];
+    uint _e36 = _group_0_binding_6_cs[(offset_6 + 6u)];
+    uint _e43 = _group_0_binding_6_cs[(offset_6 + 7u)];
+    uint _e49 = _group_0_binding_6_cs[(offset_6 + 8u)];
+    uint _e55 = _group_0_binding_6_cs[(offset_6 + 9u)];
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
@@ -870,7 +905,7 @@ vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
     return _e17;
 }
 
-float shadow_query(vec3 position, vec3 normal, vec3 dir, float dist) {
+Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
     vec3 n_4 = vec3(0.0);
     float tmax_4 = 0.0;
     n_4 = normal;
@@ -881,9 +916,9 @@ float shadow_query(vec3 position, vec3 normal, vec3 dir, float dist) {
     }
     vec3 a_6 = abs(position);
     float _e13 = hit_error;
-    float error_2 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
+    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
     vec3 _e22 = n_4;
-    vec3 _e23 = offset_origin(position, _e22, error_2);
+    vec3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = uintBitsToFloat(_e25);
     uint _e29 = F32_INF;
@@ -895,33 +930,37 @@ float shadow_query(vec3 position, vec3 normal, vec3 dir, float dist) {
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    Ray ray_24 = Ray(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
-    Candidate _e65 = intersect_scene(ray_24, true);
-    return ((_e65.slot != NO_HIT) ? 0.0 : 1.0);
+    return Ray(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-LightSample point_light(PointLight l, vec3 position_1, vec3 normal_1) {
+float shadow_query(vec3 position_1, vec3 normal_1, vec3 dir_1, float dist_1) {
+    Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
+    Candidate _e6 = intersect_scene(_e4, true);
+    return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
+}
+
+LightSample point_light(PointLight l, vec3 position_2, vec3 normal_2) {
     float strength = 0.0;
-    vec3 to_light = (l.position - position_1);
-    float dist_1 = length(to_light);
-    vec3 dir_4 = (to_light / vec3(max(dist_1, 1e-20)));
-    strength = (l.intensity / max((dist_1 * dist_1), 1e-20));
+    vec3 to_light = (l.position - position_2);
+    float dist_2 = length(to_light);
+    vec3 dir_6 = (to_light / vec3(max(dist_2, 1e-20)));
+    strength = (l.intensity / max((dist_2 * dist_2), 1e-20));
     if ((l.range > 0.0)) {
         float _e19 = strength;
-        strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_1)));
+        strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_2)));
     }
-    float _e26 = shadow_query(position_1, normal_1, dir_4, dist_1);
+    float _e26 = shadow_query(position_2, normal_2, dir_6, dist_2);
     float _e28 = strength;
-    return LightSample(dir_4, dist_1, ((l.color * vec3(_e28)) * vec3(_e26)));
+    return LightSample(dir_6, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)));
 }
 
-LightSample dispatch_light(uint type_id_3, uint offset_6, vec3 position_2, vec3 normal_2) {
-    PointLight _e3 = load_PointLight(offset_6);
-    LightSample _e4 = point_light(_e3, position_2, normal_2);
+LightSample dispatch_light(uint type_id_3, uint offset_7, vec3 position_3, vec3 normal_3) {
+    PointLight _e3 = load_PointLight(offset_7);
+    LightSample _e4 = point_light(_e3, position_3, normal_3);
     return _e4;
 }
 
-LightSample sample_light_query(uint i_1, vec3 position_3, vec3 normal_3) {
+LightSample sample_light_query(uint i_1, vec3 position_4, vec3 normal_4) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
     if ((i_1 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0));
@@ -929,22 +968,75 @@ LightSample sample_light_query(uint i_1, vec3 position_3, vec3 normal_3) {
     uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
     uint _e21 = _group_0_binding_6_cs[entry];
     uint _e26 = _group_0_binding_6_cs[(entry + 1u)];
-    LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3);
+    LightSample _e27 = dispatch_light(_e21, _e26, position_4, normal_4);
     return _e27;
+}
+
+vec3 lambert_shade(Lambert m_2, Ray ray_14, Hit hit_5) {
+    vec3 color = vec3(0.0);
+    uint i_2 = 0u;
+    vec3 _e3 = shading_normal(ray_14, hit_5);
+    color = vec3(0.0);
+    uint _e8 = light_count_query();
+    i_2 = 0u;
+    bool loop_init_2 = true;
+    while(true) {
+        if (!loop_init_2) {
+            uint _e30 = i_2;
+            i_2 = (_e30 + 1u);
+        }
+        loop_init_2 = false;
+        uint _e10 = i_2;
+        if ((_e10 >= _e8)) {
+            break;
+        }
+        uint _e12 = i_2;
+        LightSample _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal);
+        vec3 _e16 = color;
+        color = (_e16 + (((m_2.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0.0))));
+    }
+    vec3 _e33 = color;
+    return _e33;
+}
+
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_15, Hit hit_6, vec3 secondary_1) {
+    switch(type_id_4) {
+        case 0u: {
+            Fog _e5 = load_Fog(offset_8);
+            vec3 _e6 = fog_shade(_e5, ray_15, hit_6, secondary_1);
+            return _e6;
+        }
+        case 1u: {
+            Lambert _e7 = load_Lambert(offset_8);
+            vec3 _e8 = lambert_shade(_e7, ray_15, hit_6);
+            return _e8;
+        }
+        default: {
+            break;
+        }
+    }
+    return vec3(0.0);
+}
+
+vec3 shade_direct(Ray ray_16, Candidate c_2) {
+    GpuInstance inst_8 = _group_0_binding_3_cs[c_2.slot];
+    Hit _e6 = finish_hit(ray_16, c_2);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, vec3(0.0));
+    return _e11;
 }
 
 bool is_finite_f32_(float x_2) {
     return ((floatBitsToUint(x_2) & 2147483647u) < 2139095040u);
 }
 
-vec3 fog_inscatter(Fog m_1, uint i_2, vec3 o, vec3 dir_1, float d_1, float trans) {
+vec3 fog_inscatter(Fog m_3, uint i_3, vec3 o, vec3 dir_2, float d_1, float trans) {
     float s_1 = 0.0;
-    float sigma = m_1.density;
+    float sigma = m_3.density;
     bool tiny_1 = ((sigma * d_1) < 0.001);
-    LightSample _e12 = sample_light_query(i_2, o, vec3(0.0));
+    LightSample _e12 = sample_light_query(i_3, o, vec3(0.0));
     vec3 c_6 = (_e12.dir * vec3(_e12.dist));
-    float delta = dot(c_6, dir_1);
-    float h_2 = length((c_6 - (dir_1 * vec3(delta))));
+    float delta = dot(c_6, dir_2);
+    float h_2 = length((c_6 - (dir_2 * vec3(delta))));
     bool _e22 = is_finite_f32_(h_2);
     bool equi = (_e22 && (h_2 > 1e-20));
     float ta = atan(-(delta), h_2);
@@ -968,137 +1060,68 @@ vec3 fog_inscatter(Fog m_1, uint i_2, vec3 o, vec3 dir_1, float d_1, float trans
     float r_4 = (_e76 - delta);
     float pdf = (((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_2) / ((tb - ta) * ((h_2 * h_2) + (r_4 * r_4)))) : 0.0));
     float _e91 = s_1;
-    LightSample _e97 = sample_light_query(i_2, (o + (dir_1 * vec3(_e91))), vec3(0.0));
-    float att = ((m_1.lights_inside == 1u) ? exp((-(sigma) * _e97.dist)) : 1.0);
+    LightSample _e97 = sample_light_query(i_3, (o + (dir_2 * vec3(_e91))), vec3(0.0));
+    float att = ((m_3.lights_inside == 1u) ? exp((-(sigma) * _e97.dist)) : 1.0);
     return (_e97.radiance * vec3((((att * sigma) * e_2) / pdf)));
 }
 
-vec3 fog_medium(Fog m_2, Ray ray_12, float t, vec3 radiance) {
+vec3 fog_medium(Fog m_4, Ray ray_17, float t, vec3 radiance) {
     vec3 light = vec3(0.0);
-    uint i_3 = 0u;
-    float len = length(ray_12.dir);
-    if ((!((m_2.density > 0.0)) || !((len > 0.0)))) {
+    uint i_4 = 0u;
+    float len = length(ray_17.dir);
+    if ((!((m_4.density > 0.0)) || !((len > 0.0)))) {
         return radiance;
     }
     float d_5 = (t * len);
-    float trans_1 = exp((-(m_2.density) * d_5));
+    float trans_1 = exp((-(m_4.density) * d_5));
     light = vec3(0.0);
     uint _e23 = light_count_query();
-    i_3 = 0u;
-    bool loop_init_2 = true;
-    while(true) {
-        if (!loop_init_2) {
-            uint _e35 = i_3;
-            i_3 = (_e35 + 1u);
-        }
-        loop_init_2 = false;
-        uint _e25 = i_3;
-        if ((_e25 >= _e23)) {
-            break;
-        }
-        vec3 _e27 = light;
-        uint _e28 = i_3;
-        vec3 _e33 = fog_inscatter(m_2, _e28, ray_12.origin, (ray_12.dir / vec3(len)), d_5, trans_1);
-        light = (_e27 + _e33);
-    }
-    vec3 _e46 = light;
-    return ((radiance * vec3(trans_1)) + ((m_2.albedo * vec3((0.25 * INV_PI))) * _e46));
-}
-
-vec3 dispatch_medium(uint type_id_4, uint offset_7, Ray ray_13, float t_1, vec3 radiance_1) {
-    Fog _e4 = load_Fog(offset_7);
-    vec3 _e5 = fog_medium(_e4, ray_13, t_1, radiance_1);
-    return _e5;
-}
-
-vec3 through_medium(Ray ray_14, float t_2, vec3 radiance_2) {
-    if (!(HAS_MEDIA)) {
-        return radiance_2;
-    }
-    if ((ray_14.medium == 0u)) {
-        return radiance_2;
-    }
-    GpuInstance inst_8 = _group_0_binding_3_cs[(ray_14.medium - 1u)];
-    if (((inst_8.flags & FLAG_MEDIUM) == 0u)) {
-        return radiance_2;
-    }
-    vec3 _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_14, t_2, radiance_2);
-    return _e21;
-}
-
-vec3 fog_shade(Fog m_3, Ray ray_15, Hit hit_3, vec3 secondary) {
-    return secondary;
-}
-
-Lambert load_Lambert(uint offset_8) {
-    uint _e5 = _group_0_binding_6_cs[(offset_8 + 0u)];
-    uint _e11 = _group_0_binding_6_cs[(offset_8 + 1u)];
-    uint _e17 = _group_0_binding_6_cs[(offset_8 + 2u)];
-    return Lambert(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
-}
-
-vec3 shading_normal(Ray ray_16, Hit hit_4) {
-    vec3 ng = faceforward(hit_4.geometric_normal, ray_16.dir, hit_4.geometric_normal);
-    return faceforward(hit_4.normal, -(ng), hit_4.normal);
-}
-
-vec3 lambert_shade(Lambert m_4, Ray ray_17, Hit hit_5) {
-    vec3 color = vec3(0.0);
-    uint i_4 = 0u;
-    vec3 _e3 = shading_normal(ray_17, hit_5);
-    color = vec3(0.0);
-    uint _e8 = light_count_query();
     i_4 = 0u;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e30 = i_4;
-            i_4 = (_e30 + 1u);
+            uint _e35 = i_4;
+            i_4 = (_e35 + 1u);
         }
         loop_init_3 = false;
-        uint _e10 = i_4;
-        if ((_e10 >= _e8)) {
+        uint _e25 = i_4;
+        if ((_e25 >= _e23)) {
             break;
         }
-        uint _e12 = i_4;
-        LightSample _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal);
-        vec3 _e16 = color;
-        color = (_e16 + (((m_4.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0.0))));
+        vec3 _e27 = light;
+        uint _e28 = i_4;
+        vec3 _e33 = fog_inscatter(m_4, _e28, ray_17.origin, (ray_17.dir / vec3(len)), d_5, trans_1);
+        light = (_e27 + _e33);
     }
-    vec3 _e33 = color;
-    return _e33;
+    vec3 _e46 = light;
+    return ((radiance * vec3(trans_1)) + ((m_4.albedo * vec3((0.25 * INV_PI))) * _e46));
 }
 
-vec3 dispatch_closest_hit(uint type_id_5, uint offset_9, Ray ray_18, Hit hit_6, vec3 secondary_1) {
-    switch(type_id_5) {
-        case 0u: {
-            Fog _e5 = load_Fog(offset_9);
-            vec3 _e6 = fog_shade(_e5, ray_18, hit_6, secondary_1);
-            return _e6;
-        }
-        case 1u: {
-            Lambert _e7 = load_Lambert(offset_9);
-            vec3 _e8 = lambert_shade(_e7, ray_18, hit_6);
-            return _e8;
-        }
-        default: {
-            break;
-        }
+vec3 dispatch_medium(uint type_id_5, uint offset_9, Ray ray_18, float t_1, vec3 radiance_1) {
+    Fog _e4 = load_Fog(offset_9);
+    vec3 _e5 = fog_medium(_e4, ray_18, t_1, radiance_1);
+    return _e5;
+}
+
+vec3 through_medium(Ray ray_19, float t_2, vec3 radiance_2) {
+    if (!(HAS_MEDIA)) {
+        return radiance_2;
     }
-    return vec3(0.0);
+    if ((ray_19.medium == 0u)) {
+        return radiance_2;
+    }
+    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_19.medium - 1u)];
+    if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
+        return radiance_2;
+    }
+    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_19, t_2, radiance_2);
+    return _e21;
 }
 
-vec3 shade_direct(Ray ray_19, Candidate c_2) {
-    GpuInstance inst_9 = _group_0_binding_3_cs[c_2.slot];
-    Hit _e6 = finish_hit(ray_19, c_2);
-    vec3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_19, _e6, vec3(0.0));
-    return _e11;
-}
-
-void rt_spawn(vec3 dir_2, vec3 weight) {
+void rt_spawn(vec3 dir_3, vec3 weight) {
     uint _e3 = spawn_count;
     if ((_e3 < 1u)) {
-        spawn_dirs[_e3] = dir_2;
+        spawn_dirs[_e3] = dir_3;
         spawn_weights[_e3] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1115,26 +1138,43 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_21, Hit hit
     return;
 }
 
-vec3 spawn_origin(Hit hit_9, float error_1, vec3 dir_3) {
+vec3 spawn_origin_at(vec3 position_5, vec3 normal_5, float error_1, vec3 dir_4) {
     vec3 n_5 = vec3(0.0);
-    n_5 = hit_9.geometric_normal;
+    n_5 = normal_5;
     vec3 _e5 = n_5;
-    if ((dot(dir_3, _e5) < 0.0)) {
+    if ((dot(dir_4, _e5) < 0.0)) {
         vec3 _e9 = n_5;
         n_5 = -(_e9);
     }
-    vec3 _e12 = n_5;
-    vec3 _e13 = offset_origin(hit_9.position, _e12, error_1);
-    return _e13;
+    vec3 _e11 = n_5;
+    vec3 _e12 = offset_origin(position_5, _e11, error_1);
+    return _e12;
+}
+
+vec3 spawn_origin(Hit hit_9, float error_2, vec3 dir_5) {
+    vec3 _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_5);
+    return _e5;
 }
 
 vec3 trace(Ray camera_ray) {
+    vec3 radiance_3 = vec3(0.0);
+    float t_3 = 0.0;
     Frame stack[3] = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
     Ray ray_22 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
+    Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Candidate s_c = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
+    Hit s_hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
+    float s_error = 0.0;
+    vec3 s_sum = vec3(0.0);
+    bool fresh = false;
+    bool waiting = false;
     bool pushed = false;
+    vec3 radiance_4 = vec3(0.0);
+    float t_4 = 0.0;
+    Hit hit_10 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
     uint i_5 = 0u;
     uint medium = 0u;
@@ -1142,182 +1182,234 @@ vec3 trace(Ray camera_ray) {
     uint k_1 = 0u;
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false);
+        radiance_3 = vec3(0.0);
+        uint _e9 = F32_INF;
+        t_3 = uintBitsToFloat(_e9);
         if ((_e4.slot == NO_HIT)) {
             hit_error = 0.0;
-            uint _e11 = F32_INF;
-            vec3 _e13 = miss(camera_ray);
-            vec3 _e14 = through_medium(camera_ray, uintBitsToFloat(_e11), _e13);
-            return _e14;
+            vec3 _e17 = miss(camera_ray);
+            radiance_3 = _e17;
+        } else {
+            vec3 _e18 = shade_direct(camera_ray, _e4);
+            radiance_3 = _e18;
+            t_3 = _e4.t;
         }
-        vec3 _e16 = shade_direct(camera_ray, _e4);
-        vec3 _e17 = through_medium(camera_ray, _e4.t, _e16);
-        return _e17;
+        float _e20 = t_3;
+        vec3 _e21 = radiance_3;
+        vec3 _e22 = through_medium(camera_ray, _e20, _e21);
+        return _e22;
     }
     stack = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
     ray_22 = camera_ray;
     value = vec3(0.0);
     have_value = false;
+    s_ray = camera_ray;
+    uint _e35 = F32_INF;
+    Candidate _e37 = no_candidate(uintBitsToFloat(_e35));
+    s_c = _e37;
+    s_hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), true, 0u, 0u);
+    s_error = 0.0;
+    s_sum = vec3(0.0);
+    fresh = false;
+    waiting = false;
     while(true) {
-        bool _e28 = have_value;
-        if (!(_e28)) {
-            Ray _e30 = ray_22;
-            Candidate _e32 = intersect_scene(_e30, false);
-            if ((_e32.slot == NO_HIT)) {
+        bool _e62 = have_value;
+        bool _e64 = waiting;
+        if ((!(_e62) && !(_e64))) {
+            Ray _e67 = ray_22;
+            Candidate _e69 = intersect_scene(_e67, false);
+            s_c = _e69;
+            Ray _e70 = ray_22;
+            s_ray = _e70;
+            s_sum = vec3(0.0);
+            fresh = true;
+            waiting = true;
+        }
+        bool _e75 = waiting;
+        if (_e75) {
+            waiting = false;
+            pushed = false;
+            radiance_4 = vec3(0.0);
+            uint _e83 = F32_INF;
+            t_4 = uintBitsToFloat(_e83);
+            uint _e87 = s_c.slot;
+            if ((_e87 == NO_HIT)) {
                 hit_error = 0.0;
-                Ray _e38 = ray_22;
-                uint _e40 = F32_INF;
-                Ray _e42 = ray_22;
-                vec3 _e43 = miss(_e42);
-                vec3 _e44 = through_medium(_e38, uintBitsToFloat(_e40), _e43);
-                value = _e44;
-                have_value = true;
+                Ray _e92 = s_ray;
+                vec3 _e93 = miss(_e92);
+                radiance_4 = _e93;
             } else {
-                GpuInstance inst_10 = _group_0_binding_3_cs[_e32.slot];
-                Ray _e50 = ray_22;
-                Hit _e51 = finish_hit(_e50, _e32);
-                float error_3 = hit_error;
-                pushed = false;
-                uint _e62 = ray_22.depth;
-                uint _e66 = depth;
-                if (((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE))) {
+                uint _e95 = s_c.slot;
+                GpuInstance inst_10 = _group_0_binding_3_cs[_e95];
+                Hit _e99 = s_hit;
+                hit_10 = _e99;
+                bool _e101 = fresh;
+                if (_e101) {
+                    Ray _e102 = s_ray;
+                    Candidate _e103 = s_c;
+                    Hit _e104 = finish_hit(_e102, _e103);
+                    hit_10 = _e104;
+                    float _e106 = hit_error;
+                    s_error = _e106;
+                } else {
+                    float _e107 = s_error;
+                    hit_error = _e107;
+                }
+                float _e110 = hit_10.t;
+                t_4 = _e110;
+                bool _e111 = fresh;
+                uint _e119 = s_ray.depth;
+                uint _e123 = depth;
+                if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e74 = ray_22;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);
-                    uint _e76 = spawn_count;
-                    uint n_8 = min(min(_e76, 1u), MAX_SPAWN);
+                    Ray _e131 = s_ray;
+                    Hit _e132 = hit_10;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
+                    uint _e134 = spawn_count;
+                    uint n_8 = min(min(_e134, 1u), MAX_SPAWN);
                     if ((n_8 > 0u)) {
-                        Ray _e83 = ray_22;
-                        f = Frame(_e83, _e51, error_3, _e32.slot, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_8, 0u);
+                        Ray _e141 = s_ray;
+                        Hit _e142 = hit_10;
+                        float _e143 = s_error;
+                        uint _e145 = s_c.slot;
+                        f = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_8, 0u);
                         i_5 = 0u;
                         bool loop_init_4 = true;
                         while(true) {
                             if (!loop_init_4) {
-                                uint _e114 = i_5;
-                                i_5 = (_e114 + 1u);
+                                uint _e175 = i_5;
+                                i_5 = (_e175 + 1u);
                             }
                             loop_init_4 = false;
-                            uint _e94 = i_5;
-                            if ((_e94 >= n_8)) {
+                            uint _e155 = i_5;
+                            if ((_e155 >= n_8)) {
                                 break;
                             }
-                            uint _e97 = i_5;
-                            uint _e101 = i_5;
-                            vec3 _e104 = spawn_dirs[_e101];
-                            f.dirs[min(_e97, 0u)] = _e104;
-                            uint _e106 = i_5;
-                            uint _e110 = i_5;
-                            vec3 _e113 = spawn_weights[_e110];
-                            f.weights[min(_e106, 0u)] = _e113;
+                            uint _e158 = i_5;
+                            uint _e162 = i_5;
+                            vec3 _e165 = spawn_dirs[_e162];
+                            f.dirs[min(_e158, 0u)] = _e165;
+                            uint _e167 = i_5;
+                            uint _e171 = i_5;
+                            vec3 _e174 = spawn_weights[_e171];
+                            f.weights[min(_e167, 0u)] = _e174;
                         }
-                        uint _e117 = depth;
-                        Frame _e121 = f;
-                        stack[min(_e117, 2u)] = _e121;
-                        uint _e122 = depth;
-                        depth = (_e122 + 1u);
+                        uint _e178 = depth;
+                        Frame _e182 = f;
+                        stack[min(_e178, 2u)] = _e182;
+                        uint _e183 = depth;
+                        depth = (_e183 + 1u);
                         pushed = true;
                     }
                 }
-                bool _e126 = pushed;
-                if (!(_e126)) {
-                    Ray _e130 = ray_22;
-                    vec3 _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, vec3(0.0));
-                    Ray _e134 = ray_22;
-                    vec3 _e136 = through_medium(_e134, _e32.t, _e133);
-                    value = _e136;
-                    have_value = true;
+                bool _e187 = pushed;
+                if (!(_e187)) {
+                    Ray _e191 = s_ray;
+                    Hit _e192 = hit_10;
+                    vec3 _e193 = s_sum;
+                    vec3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
+                    radiance_4 = _e194;
                 }
             }
-        }
-        bool _e138 = have_value;
-        if (_e138) {
-            uint _e139 = depth;
-            if ((_e139 == 0u)) {
-                vec3 _e142 = value;
-                return _e142;
+            bool _e195 = pushed;
+            if (!(_e195)) {
+                Ray _e197 = s_ray;
+                float _e198 = t_4;
+                vec3 _e199 = radiance_4;
+                vec3 _e200 = through_medium(_e197, _e198, _e199);
+                value = _e200;
+                have_value = true;
             }
-            uint _e143 = depth;
-            uint top = (_e143 - 1u);
-            uint _e150 = stack[min(top, 2u)].next;
-            uint child_2 = (_e150 - 1u);
-            vec3 _e157 = stack[min(top, 2u)].sum;
-            vec3 _e165 = stack[min(top, 2u)].weights[min(child_2, 0u)];
-            vec3 _e166 = value;
-            stack[min(top, 2u)].sum = (_e157 + (_e165 * _e166));
+        }
+        bool _e202 = have_value;
+        if (_e202) {
+            uint _e203 = depth;
+            if ((_e203 == 0u)) {
+                vec3 _e206 = value;
+                return _e206;
+            }
+            uint _e207 = depth;
+            uint top = (_e207 - 1u);
+            uint _e214 = stack[min(top, 2u)].next;
+            uint child_2 = (_e214 - 1u);
+            vec3 _e221 = stack[min(top, 2u)].sum;
+            vec3 _e229 = stack[min(top, 2u)].weights[min(child_2, 0u)];
+            vec3 _e230 = value;
+            stack[min(top, 2u)].sum = (_e221 + (_e229 * _e230));
             have_value = false;
         }
-        uint _e170 = depth;
-        uint top_1 = (_e170 - 1u);
-        uint _e177 = stack[min(top_1, 2u)].next;
-        uint _e182 = stack[min(top_1, 2u)].count;
-        if ((_e177 < _e182)) {
+        uint _e234 = depth;
+        uint top_1 = (_e234 - 1u);
+        uint _e241 = stack[min(top_1, 2u)].next;
+        uint _e246 = stack[min(top_1, 2u)].count;
+        if ((_e241 < _e246)) {
             uint i_6 = stack[min(top_1, 2u)].next;
             stack[min(top_1, 2u)].next = (i_6 + 1u);
             Ray parent = stack[min(top_1, 2u)].ray;
-            Hit hit_11 = stack[min(top_1, 2u)].hit;
-            vec3 dir_5 = stack[min(top_1, 2u)].dirs[min(i_6, 0u)];
+            Hit hit_12 = stack[min(top_1, 2u)].hit;
+            vec3 dir_7 = stack[min(top_1, 2u)].dirs[min(i_6, 0u)];
             medium = parent.medium;
-            if ((dot(dir_5, hit_11.geometric_normal) < 0.0)) {
-                uint _e223 = stack[min(top_1, 2u)].slot;
-                medium = (_e223 + 1u);
+            if ((dot(dir_7, hit_12.geometric_normal) < 0.0)) {
+                uint _e287 = stack[min(top_1, 2u)].slot;
+                medium = (_e287 + 1u);
             } else {
-                uint _e231 = stack[min(top_1, 2u)].slot;
-                if ((parent.medium == (_e231 + 1u))) {
+                uint _e295 = stack[min(top_1, 2u)].slot;
+                if ((parent.medium == (_e295 + 1u))) {
                     found = false;
                     medium = 0u;
                     k_1 = top_1;
                     while(true) {
-                        uint _e239 = k_1;
-                        if ((_e239 == 0u)) {
+                        uint _e303 = k_1;
+                        if ((_e303 == 0u)) {
                             break;
                         }
-                        uint _e242 = k_1;
-                        k_1 = (_e242 - 1u);
-                        uint _e245 = k_1;
-                        uint _e250 = stack[min(_e245, 2u)].slot;
-                        uint _e255 = stack[min(top_1, 2u)].slot;
-                        uint _e257 = k_1;
-                        uint _e263 = stack[min(_e257, 2u)].ray.medium;
-                        uint _e267 = k_1;
-                        uint _e275 = stack[min((_e267 + 1u), 2u)].ray.medium;
-                        if ((((_e250 == _e255) && (_e263 != parent.medium)) && (_e275 == parent.medium))) {
-                            uint _e279 = k_1;
-                            uint _e285 = stack[min(_e279, 2u)].ray.medium;
-                            medium = _e285;
+                        uint _e306 = k_1;
+                        k_1 = (_e306 - 1u);
+                        uint _e309 = k_1;
+                        uint _e314 = stack[min(_e309, 2u)].slot;
+                        uint _e319 = stack[min(top_1, 2u)].slot;
+                        uint _e321 = k_1;
+                        uint _e327 = stack[min(_e321, 2u)].ray.medium;
+                        uint _e331 = k_1;
+                        uint _e339 = stack[min((_e331 + 1u), 2u)].ray.medium;
+                        if ((((_e314 == _e319) && (_e327 != parent.medium)) && (_e339 == parent.medium))) {
+                            uint _e343 = k_1;
+                            uint _e349 = stack[min(_e343, 2u)].ray.medium;
+                            medium = _e349;
                             found = true;
                             break;
                         }
                     }
-                    bool _e287 = found;
-                    if (!(_e287)) {
-                        float _e293 = stack[min(top_1, 2u)].error;
-                        vec3 _e294 = spawn_origin(hit_11, _e293, dir_5);
-                        uint _e299 = stack[min(top_1, 2u)].slot;
-                        uint _e300 = medium_at(_e294, _e299);
-                        medium = _e300;
+                    bool _e351 = found;
+                    if (!(_e351)) {
+                        float _e357 = stack[min(top_1, 2u)].error;
+                        vec3 _e358 = spawn_origin(hit_12, _e357, dir_7);
+                        uint _e363 = stack[min(top_1, 2u)].slot;
+                        uint _e364 = medium_at(_e358, _e363);
+                        medium = _e364;
                     }
                 }
             }
-            float _e305 = stack[min(top_1, 2u)].error;
-            vec3 _e306 = spawn_origin(hit_11, _e305, dir_5);
-            uint _e309 = F32_INF;
-            uint _e315 = medium;
-            ray_22 = Ray(_e306, 0.0, dir_5, uintBitsToFloat(_e309), (parent.depth + 1u), RAY_SECONDARY, _e315);
+            float _e369 = stack[min(top_1, 2u)].error;
+            vec3 _e370 = spawn_origin(hit_12, _e369, dir_7);
+            uint _e373 = F32_INF;
+            uint _e379 = medium;
+            ray_22 = Ray(_e370, 0.0, dir_7, uintBitsToFloat(_e373), (parent.depth + 1u), RAY_SECONDARY, _e379);
         } else {
-            uint _e321 = stack[min(top_1, 2u)].slot;
-            GpuInstance inst_11 = _group_0_binding_3_cs[_e321];
-            float _e329 = stack[min(top_1, 2u)].error;
-            hit_error = _e329;
-            Ray _e337 = stack[min(top_1, 2u)].ray;
-            Hit _e342 = stack[min(top_1, 2u)].hit;
-            vec3 _e347 = stack[min(top_1, 2u)].sum;
-            vec3 _e348 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e337, _e342, _e347);
-            Ray _e353 = stack[min(top_1, 2u)].ray;
-            float _e359 = stack[min(top_1, 2u)].hit.t;
-            vec3 _e360 = through_medium(_e353, _e359, _e348);
-            value = _e360;
+            Ray _e385 = stack[min(top_1, 2u)].ray;
+            s_ray = _e385;
+            Hit _e390 = stack[min(top_1, 2u)].hit;
+            s_hit = _e390;
+            float _e395 = stack[min(top_1, 2u)].error;
+            s_error = _e395;
+            uint _e401 = stack[min(top_1, 2u)].slot;
+            s_c.slot = _e401;
+            vec3 _e406 = stack[min(top_1, 2u)].sum;
+            s_sum = _e406;
+            fresh = false;
+            waiting = true;
             depth = top_1;
-            have_value = true;
         }
     }
     return vec3(0.0);
@@ -1338,7 +1430,7 @@ void render_pixel(uvec2 pixel_3) {
     uint s_2 = 0u;
     Ray ray_23 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
-    TileParams tile_1 = _group_0_binding_1_cs;
+    TileParams tile_2 = _group_0_binding_1_cs;
     sum = vec3(0.0);
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
@@ -1355,7 +1447,7 @@ void render_pixel(uvec2 pixel_3) {
             break;
         }
         uint _e18 = s_2;
-        uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
+        uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
         ray_23 = _e23;
@@ -1383,11 +1475,11 @@ void render_pixel(uvec2 pixel_3) {
     vec3 _e59 = sum;
     vec4 _e62 = vec4(_e59, float(frame_5.samples_per_pass));
     uint _e63 = bad;
-    if ((tile_1.frame == 0u)) {
-        _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = _e62;
+    if ((tile_2.frame == 0u)) {
+        _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = _e62;
     } else {
-        vec4 _e69 = _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
-        _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e69 + _e62);
+        vec4 _e69 = _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)];
+        _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = (_e69 + _e62);
     }
     if ((_e63 > 0u)) {
         atomicAdd(_group_0_binding_9_cs[0], _e63);
@@ -1395,26 +1487,13 @@ void render_pixel(uvec2 pixel_3) {
     return;
 }
 
-void render_invocation(uvec2 id) {
-    TileParams tile_2 = _group_0_binding_1_cs;
-    uvec2 size_1 = uvec2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
-    uvec2 _e11 = div_vec2u(((tile_2.extent + size_1) - uvec2(1u)), size_1);
-    uint count_1 = (_e11.x * _e11.y);
-    if ((count_1 == 0u)) {
+void render_invocation(uvec2 id_1) {
+    TileParams tile_3 = _group_0_binding_1_cs;
+    uvec2 _e3 = scattered_local(id_1);
+    if (any(greaterThanEqual(_e3, tile_3.extent))) {
         return;
     }
-    uvec2 _e17 = div_vec2u(id, size_1);
-    uint order = ((_e17.y * _e11.x) + _e17.x);
-    uint _e24 = rem_u32_(SCATTER, count_1);
-    uint _e26 = rem_u32_((order * _e24), count_1);
-    uint _e28 = rem_u32_(_e26, _e11.x);
-    uint _e30 = div_u32_(_e26, _e11.x);
-    uvec2 _e33 = rem_vec2u(id, size_1);
-    uvec2 local = ((uvec2(_e28, _e30) * size_1) + _e33);
-    if (any(greaterThanEqual(local, tile_2.extent))) {
-        return;
-    }
-    render_pixel((tile_2.origin + local));
+    render_pixel((tile_3.origin + _e3));
     return;
 }
 

@@ -20,6 +20,7 @@ struct FrameUniforms {
     camera_offset: u32,
     background_type: u32,
     background_offset: u32,
+    path_slots: u32,
 }
 
 struct Ray {
@@ -103,6 +104,10 @@ struct Fog {
     lights_inside: u32,
 }
 
+struct Lambert {
+    albedo: vec3<f32>,
+}
+
 struct LightSample {
     dir: vec3<f32>,
     dist: f32,
@@ -115,10 +120,6 @@ struct PointLight {
     intensity: f32,
     range: f32,
     inner_range: f32,
-}
-
-struct Lambert {
-    albedo: vec3<f32>,
 }
 
 struct Frame {
@@ -135,9 +136,9 @@ struct Frame {
 
 const WORKGROUP_WIDTH: u32 = 8u;
 const WORKGROUP_HEIGHT: u32 = 8u;
+const NO_HIT: u32 = 4294967295u;
 const SCATTER: u32 = 1000003u;
 const RAY_CAMERA: u32 = 0u;
-const NO_HIT: u32 = 4294967295u;
 const HAS_MEDIA: bool = true;
 const MEDIUM_ENTRY_STRIDE: u32 = 1u;
 const MESH_GEOMETRY: u32 = 4294967295u;
@@ -155,11 +156,11 @@ const BLAS_STACK: u32 = 64u;
 const TLAS_STACK: u32 = 10u;
 const HAS_SECONDARY_RAYS: bool = true;
 const HAS_BACKGROUND: bool = false;
-const FLAG_MEDIUM: u32 = 4u;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
-const PI: f32 = 3.1415927f;
 const INV_PI: f32 = 0.31830987f;
+const FLAG_MEDIUM: u32 = 4u;
+const PI: f32 = 3.1415927f;
 const FLAG_SECONDARY_RAYS: u32 = 2u;
 const MAX_DEPTH: u32 = 3u;
 const STACK_SIZE: u32 = 3u;
@@ -216,6 +217,24 @@ fn rem_vec2u(a_3: vec2<u32>, b_3: vec2<u32>) -> vec2<u32> {
     let by_zero_3 = (b_3 == _e3);
     let divisor_3 = select(b_3, vec2(1u), by_zero_3);
     return select((a_3 % divisor_3), _e3, by_zero_3);
+}
+
+fn scattered_local(id: vec2<u32>) -> vec2<u32> {
+    let tile_1 = tile;
+    let size = vec2<u32>(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    let _e11 = div_vec2u(((tile_1.extent + size) - vec2(1u)), size);
+    let count = (_e11.x * _e11.y);
+    if (count == 0u) {
+        return vec2(NO_HIT);
+    }
+    let _e19 = div_vec2u(id, size);
+    let order = ((_e19.y * _e11.x) + _e19.x);
+    let _e26 = rem_u32_(SCATTER, count);
+    let _e28 = rem_u32_((order * _e26), count);
+    let _e30 = rem_u32_(_e28, _e11.x);
+    let _e32 = div_u32_(_e28, _e11.x);
+    let _e35 = rem_vec2u(id, size);
+    return ((vec2<u32>(_e30, _e32) * size) + _e35);
 }
 
 fn pcg_hash(x: u32) -> u32 {
@@ -288,7 +307,7 @@ fn pinhole_ray(cam: Pinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
     var jitter: vec2<f32>;
 
     let _e2 = image_size_query();
-    let size = vec2<f32>(_e2);
+    let size_1 = vec2<f32>(_e2);
     jitter = vec2(0.5f);
     let _e7 = samples_per_pixel_query();
     if (_e7 > 1u) {
@@ -296,12 +315,12 @@ fn pinhole_ray(cam: Pinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
         jitter = _e10;
     }
     let _e12 = jitter;
-    let ndc = ((((vec2<f32>(pixel_1) + _e12) / size) * vec2(2f)) - vec2(1f));
+    let ndc = ((((vec2<f32>(pixel_1) + _e12) / size_1) * vec2(2f)) - vec2(1f));
     let _e24 = normalize_vec3f((cam.look_at - cam.position));
     let _e27 = normalize_vec3f(cross(_e24, cam.up));
     let up = cross(_e27, _e24);
     let h_1 = tan((radians(cam.fov) * 0.5f));
-    let aspect = (size.x / size.y);
+    let aspect = (size_1.x / size_1.y);
     let _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
     let _e52 = F32_INF;
     return Ray(cam.position, 0f, _e48, bitcast<f32>(_e52), 0u, 0u, 0u);
@@ -371,10 +390,10 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
-    let t_3 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
-    let hit_10 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
+    let t_5 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    let hit_11 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_3, (v_1 * rcp), (w * rcp)), hit_10);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_5, (v_1 * rcp), (w * rcp)), hit_11);
 }
 
 fn point_error(origin: vec3<f32>, along: vec3<f32>) -> f32 {
@@ -586,13 +605,13 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, 
         let _e20 = child;
         if ((_e20 & NODE_LEAF_BIT) != 0u) {
             let _e25 = child;
-            let count = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            let count_1 = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
             let _e32 = child;
             let first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
             loop {
                 let _e37 = k;
-                if (_e37 >= count) {
+                if (_e37 >= count_1) {
                     break;
                 }
                 let _e41 = k;
@@ -843,21 +862,37 @@ fn miss(ray_11: Ray) -> vec3<f32> {
     return _e9;
 }
 
+fn fog_shade(m_1: Fog, ray_12: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
+    return secondary;
+}
+
+fn load_Lambert(offset_5: u32) -> Lambert {
+    let _e5 = params[(offset_5 + 0u)];
+    let _e11 = params[(offset_5 + 1u)];
+    let _e17 = params[(offset_5 + 2u)];
+    return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
+}
+
+fn shading_normal(ray_13: Ray, hit_4: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_4.geometric_normal, ray_13.dir, hit_4.geometric_normal);
+    return faceForward(hit_4.normal, -(ng), hit_4.normal);
+}
+
 fn light_count_query() -> u32 {
     let _e1 = frame;
     return _e1.light_count;
 }
 
-fn load_PointLight(offset_5: u32) -> PointLight {
-    let _e5 = params[(offset_5 + 0u)];
-    let _e11 = params[(offset_5 + 1u)];
-    let _e17 = params[(offset_5 + 2u)];
-    let _e24 = params[(offset_5 + 4u)];
-    let _e30 = params[(offset_5 + 5u)];
-    let _e36 = params[(offset_5 + 6u)];
-    let _e43 = params[(offset_5 + 7u)];
-    let _e49 = params[(offset_5 + 8u)];
-    let _e55 = params[(offset_5 + 9u)];
+fn load_PointLight(offset_6: u32) -> PointLight {
+    let _e5 = params[(offset_6 + 0u)];
+    let _e11 = params[(offset_6 + 1u)];
+    let _e17 = params[(offset_6 + 2u)];
+    let _e24 = params[(offset_6 + 4u)];
+    let _e30 = params[(offset_6 + 5u)];
+    let _e36 = params[(offset_6 + 6u)];
+    let _e43 = params[(offset_6 + 7u)];
+    let _e49 = params[(offset_6 + 8u)];
+    let _e55 = params[(offset_6 + 9u)];
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
@@ -877,7 +912,7 @@ fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
     return _e17;
 }
 
-fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
+fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> Ray {
     var n_4: vec3<f32>;
     var tmax_4: f32;
 
@@ -889,9 +924,9 @@ fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f3
     }
     let a_6 = abs(position);
     let _e13 = hit_error;
-    let error_2 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
+    let error_3 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
     let _e22 = n_4;
-    let _e23 = offset_origin(position, _e22, error_2);
+    let _e23 = offset_origin(position, _e22, error_3);
     let _e25 = F32_INF;
     tmax_4 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
@@ -903,34 +938,38 @@ fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f3
         tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     let _e59 = tmax_4;
-    let ray_24 = Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
-    let _e65 = intersect_scene(ray_24, true);
-    return select(1f, 0f, (_e65.slot != NO_HIT));
+    return Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-fn point_light(l: PointLight, position_1: vec3<f32>, normal_1: vec3<f32>) -> LightSample {
+fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
+    let _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
+    let _e6 = intersect_scene(_e4, true);
+    return select(1f, 0f, (_e6.slot != NO_HIT));
+}
+
+fn point_light(l: PointLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
     var strength: f32;
 
-    let to_light = (l.position - position_1);
-    let dist_1 = length(to_light);
-    let dir_4 = (to_light / vec3(max(dist_1, 0.00000000000000000001f)));
-    strength = (l.intensity / max((dist_1 * dist_1), 0.00000000000000000001f));
+    let to_light = (l.position - position_2);
+    let dist_2 = length(to_light);
+    let dir_6 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
+    strength = (l.intensity / max((dist_2 * dist_2), 0.00000000000000000001f));
     if (l.range > 0f) {
         let _e19 = strength;
-        strength = (_e19 * (1f - smoothstep(l.inner_range, l.range, dist_1)));
+        strength = (_e19 * (1f - smoothstep(l.inner_range, l.range, dist_2)));
     }
-    let _e26 = shadow_query(position_1, normal_1, dir_4, dist_1);
+    let _e26 = shadow_query(position_2, normal_2, dir_6, dist_2);
     let _e28 = strength;
-    return LightSample(dir_4, dist_1, ((l.color * vec3(_e28)) * vec3(_e26)));
+    return LightSample(dir_6, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)));
 }
 
-fn dispatch_light(type_id_3: u32, offset_6: u32, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
-    let _e3 = load_PointLight(offset_6);
-    let _e4 = point_light(_e3, position_2, normal_2);
+fn dispatch_light(type_id_3: u32, offset_7: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
+    let _e3 = load_PointLight(offset_7);
+    let _e4 = point_light(_e3, position_3, normal_3);
     return _e4;
 }
 
-fn sample_light_query(i_1: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
+fn sample_light_query(i_1: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let frame_4 = frame;
     if (i_1 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f));
@@ -938,23 +977,74 @@ fn sample_light_query(i_1: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> L
     let entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
     let _e21 = params[entry];
     let _e26 = params[(entry + 1u)];
-    let _e27 = dispatch_light(_e21, _e26, position_3, normal_3);
+    let _e27 = dispatch_light(_e21, _e26, position_4, normal_4);
     return _e27;
+}
+
+fn lambert_shade(m_2: Lambert, ray_14: Ray, hit_5: Hit) -> vec3<f32> {
+    var color: vec3<f32>;
+    var i_2: u32;
+
+    let _e3 = shading_normal(ray_14, hit_5);
+    color = vec3(0f);
+    let _e8 = light_count_query();
+    i_2 = 0u;
+    loop {
+        let _e10 = i_2;
+        if (_e10 >= _e8) {
+            break;
+        }
+        let _e12 = i_2;
+        let _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal);
+        let _e16 = color;
+        color = (_e16 + (((m_2.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0f))));
+        continuing {
+            let _e30 = i_2;
+            i_2 = (_e30 + 1u);
+        }
+    }
+    let _e33 = color;
+    return _e33;
+}
+
+fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_15: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+    switch type_id_4 {
+        case 0u: {
+            let _e5 = load_Fog(offset_8);
+            let _e6 = fog_shade(_e5, ray_15, hit_6, secondary_1);
+            return _e6;
+        }
+        case 1u: {
+            let _e7 = load_Lambert(offset_8);
+            let _e8 = lambert_shade(_e7, ray_15, hit_6);
+            return _e8;
+        }
+        default: {
+        }
+    }
+    return vec3<f32>();
+}
+
+fn shade_direct(ray_16: Ray, c_2: Candidate) -> vec3<f32> {
+    let inst_8 = instances[c_2.slot];
+    let _e6 = finish_hit(ray_16, c_2);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, vec3(0f));
+    return _e11;
 }
 
 fn is_finite_f32_(x_2: f32) -> bool {
     return ((bitcast<u32>(x_2) & 2147483647u) < 2139095040u);
 }
 
-fn fog_inscatter(m_1: Fog, i_2: u32, o: vec3<f32>, dir_1: vec3<f32>, d_1: f32, trans: f32) -> vec3<f32> {
+fn fog_inscatter(m_3: Fog, i_3: u32, o: vec3<f32>, dir_2: vec3<f32>, d_1: f32, trans: f32) -> vec3<f32> {
     var s_1: f32;
 
-    let sigma = m_1.density;
+    let sigma = m_3.density;
     let tiny_1 = ((sigma * d_1) < 0.001f);
-    let _e12 = sample_light_query(i_2, o, vec3(0f));
+    let _e12 = sample_light_query(i_3, o, vec3(0f));
     let c_6 = (_e12.dir * vec3(_e12.dist));
-    let delta = dot(c_6, dir_1);
-    let h_2 = length((c_6 - (dir_1 * vec3(delta))));
+    let delta = dot(c_6, dir_2);
+    let h_2 = length((c_6 - (dir_2 * vec3(delta))));
     let _e22 = is_finite_f32_(h_2);
     let equi = (_e22 && (h_2 > 0.00000000000000000001f));
     let ta = atan2(-(delta), h_2);
@@ -978,134 +1068,67 @@ fn fog_inscatter(m_1: Fog, i_2: u32, o: vec3<f32>, dir_1: vec3<f32>, d_1: f32, t
     let r_4 = (_e76 - delta);
     let pdf = (((1f - w_3) * p_free) + select(0f, ((w_3 * h_2) / ((tb - ta) * ((h_2 * h_2) + (r_4 * r_4)))), equi));
     let _e91 = s_1;
-    let _e97 = sample_light_query(i_2, (o + (dir_1 * vec3(_e91))), vec3(0f));
-    let att = select(1f, exp((-(sigma) * _e97.dist)), (m_1.lights_inside == 1u));
+    let _e97 = sample_light_query(i_3, (o + (dir_2 * vec3(_e91))), vec3(0f));
+    let att = select(1f, exp((-(sigma) * _e97.dist)), (m_3.lights_inside == 1u));
     return (_e97.radiance * vec3((((att * sigma) * e_2) / pdf)));
 }
 
-fn fog_medium(m_2: Fog, ray_12: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn fog_medium(m_4: Fog, ray_17: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     var light: vec3<f32>;
-    var i_3: u32;
+    var i_4: u32;
 
-    let len = length(ray_12.dir);
-    if (!((m_2.density > 0f)) || !((len > 0f))) {
+    let len = length(ray_17.dir);
+    if (!((m_4.density > 0f)) || !((len > 0f))) {
         return radiance;
     }
     let d_5 = (t * len);
-    let trans_1 = exp((-(m_2.density) * d_5));
+    let trans_1 = exp((-(m_4.density) * d_5));
     light = vec3(0f);
     let _e23 = light_count_query();
-    i_3 = 0u;
+    i_4 = 0u;
     loop {
-        let _e25 = i_3;
+        let _e25 = i_4;
         if (_e25 >= _e23) {
             break;
         }
         let _e27 = light;
-        let _e28 = i_3;
-        let _e33 = fog_inscatter(m_2, _e28, ray_12.origin, (ray_12.dir / vec3(len)), d_5, trans_1);
+        let _e28 = i_4;
+        let _e33 = fog_inscatter(m_4, _e28, ray_17.origin, (ray_17.dir / vec3(len)), d_5, trans_1);
         light = (_e27 + _e33);
         continuing {
-            let _e35 = i_3;
-            i_3 = (_e35 + 1u);
+            let _e35 = i_4;
+            i_4 = (_e35 + 1u);
         }
     }
     let _e46 = light;
-    return ((radiance * vec3(trans_1)) + ((m_2.albedo * vec3((0.25f * INV_PI))) * _e46));
+    return ((radiance * vec3(trans_1)) + ((m_4.albedo * vec3((0.25f * INV_PI))) * _e46));
 }
 
-fn dispatch_medium(type_id_4: u32, offset_7: u32, ray_13: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
-    let _e4 = load_Fog(offset_7);
-    let _e5 = fog_medium(_e4, ray_13, t_1, radiance_1);
+fn dispatch_medium(type_id_5: u32, offset_9: u32, ray_18: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+    let _e4 = load_Fog(offset_9);
+    let _e5 = fog_medium(_e4, ray_18, t_1, radiance_1);
     return _e5;
 }
 
-fn through_medium(ray_14: Ray, t_2: f32, radiance_2: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_19: Ray, t_2: f32, radiance_2: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_2;
     }
-    if (ray_14.medium == 0u) {
+    if (ray_19.medium == 0u) {
         return radiance_2;
     }
-    let inst_8 = instances[(ray_14.medium - 1u)];
-    if ((inst_8.flags & FLAG_MEDIUM) == 0u) {
+    let inst_9 = instances[(ray_19.medium - 1u)];
+    if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_2;
     }
-    let _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_14, t_2, radiance_2);
+    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_19, t_2, radiance_2);
     return _e21;
 }
 
-fn fog_shade(m_3: Fog, ray_15: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
-    return secondary;
-}
-
-fn load_Lambert(offset_8: u32) -> Lambert {
-    let _e5 = params[(offset_8 + 0u)];
-    let _e11 = params[(offset_8 + 1u)];
-    let _e17 = params[(offset_8 + 2u)];
-    return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
-}
-
-fn shading_normal(ray_16: Ray, hit_4: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_4.geometric_normal, ray_16.dir, hit_4.geometric_normal);
-    return faceForward(hit_4.normal, -(ng), hit_4.normal);
-}
-
-fn lambert_shade(m_4: Lambert, ray_17: Ray, hit_5: Hit) -> vec3<f32> {
-    var color: vec3<f32>;
-    var i_4: u32;
-
-    let _e3 = shading_normal(ray_17, hit_5);
-    color = vec3(0f);
-    let _e8 = light_count_query();
-    i_4 = 0u;
-    loop {
-        let _e10 = i_4;
-        if (_e10 >= _e8) {
-            break;
-        }
-        let _e12 = i_4;
-        let _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal);
-        let _e16 = color;
-        color = (_e16 + (((m_4.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0f))));
-        continuing {
-            let _e30 = i_4;
-            i_4 = (_e30 + 1u);
-        }
-    }
-    let _e33 = color;
-    return _e33;
-}
-
-fn dispatch_closest_hit(type_id_5: u32, offset_9: u32, ray_18: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
-    switch type_id_5 {
-        case 0u: {
-            let _e5 = load_Fog(offset_9);
-            let _e6 = fog_shade(_e5, ray_18, hit_6, secondary_1);
-            return _e6;
-        }
-        case 1u: {
-            let _e7 = load_Lambert(offset_9);
-            let _e8 = lambert_shade(_e7, ray_18, hit_6);
-            return _e8;
-        }
-        default: {
-        }
-    }
-    return vec3<f32>();
-}
-
-fn shade_direct(ray_19: Ray, c_2: Candidate) -> vec3<f32> {
-    let inst_9 = instances[c_2.slot];
-    let _e6 = finish_hit(ray_19, c_2);
-    let _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_19, _e6, vec3(0f));
-    return _e11;
-}
-
-fn rt_spawn(dir_2: vec3<f32>, weight: vec3<f32>) {
+fn rt_spawn(dir_3: vec3<f32>, weight: vec3<f32>) {
     let _e3 = spawn_count;
     if (_e3 < 1u) {
-        spawn_dirs[_e3] = dir_2;
+        spawn_dirs[_e3] = dir_3;
         spawn_weights[_e3] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1122,27 +1145,44 @@ fn dispatch_secondary_rays(type_id_6: u32, offset_10: u32, ray_21: Ray, hit_8: H
     return;
 }
 
-fn spawn_origin(hit_9: Hit, error_1: f32, dir_3: vec3<f32>) -> vec3<f32> {
+fn spawn_origin_at(position_5: vec3<f32>, normal_5: vec3<f32>, error_1: f32, dir_4: vec3<f32>) -> vec3<f32> {
     var n_5: vec3<f32>;
 
-    n_5 = hit_9.geometric_normal;
+    n_5 = normal_5;
     let _e5 = n_5;
-    if (dot(dir_3, _e5) < 0f) {
+    if (dot(dir_4, _e5) < 0f) {
         let _e9 = n_5;
         n_5 = -(_e9);
     }
-    let _e12 = n_5;
-    let _e13 = offset_origin(hit_9.position, _e12, error_1);
-    return _e13;
+    let _e11 = n_5;
+    let _e12 = offset_origin(position_5, _e11, error_1);
+    return _e12;
+}
+
+fn spawn_origin(hit_9: Hit, error_2: f32, dir_5: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_5);
+    return _e5;
 }
 
 fn trace(camera_ray: Ray) -> vec3<f32> {
+    var radiance_3: vec3<f32>;
+    var t_3: f32;
     var stack: array<Frame, 3>;
     var depth: u32;
     var ray_22: Ray;
     var value: vec3<f32>;
     var have_value: bool;
+    var s_ray: Ray;
+    var s_c: Candidate;
+    var s_hit: Hit;
+    var s_error: f32;
+    var s_sum: vec3<f32>;
+    var fresh: bool;
+    var waiting: bool;
     var pushed: bool;
+    var radiance_4: vec3<f32>;
+    var t_4: f32;
+    var hit_10: Hit;
     var f: Frame;
     var i_5: u32;
     var medium: u32;
@@ -1151,180 +1191,232 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
 
     if !(HAS_SECONDARY_RAYS) {
         let _e4 = intersect_scene(camera_ray, false);
+        radiance_3 = vec3(0f);
+        let _e9 = F32_INF;
+        t_3 = bitcast<f32>(_e9);
         if (_e4.slot == NO_HIT) {
             hit_error = 0f;
-            let _e11 = F32_INF;
-            let _e13 = miss(camera_ray);
-            let _e14 = through_medium(camera_ray, bitcast<f32>(_e11), _e13);
-            return _e14;
+            let _e17 = miss(camera_ray);
+            radiance_3 = _e17;
+        } else {
+            let _e18 = shade_direct(camera_ray, _e4);
+            radiance_3 = _e18;
+            t_3 = _e4.t;
         }
-        let _e16 = shade_direct(camera_ray, _e4);
-        let _e17 = through_medium(camera_ray, _e4.t, _e16);
-        return _e17;
+        let _e20 = t_3;
+        let _e21 = radiance_3;
+        let _e22 = through_medium(camera_ray, _e20, _e21);
+        return _e22;
     }
     stack = array<Frame, 3>();
     depth = 0u;
     ray_22 = camera_ray;
     value = vec3(0f);
     have_value = false;
+    s_ray = camera_ray;
+    let _e35 = F32_INF;
+    let _e37 = no_candidate(bitcast<f32>(_e35));
+    s_c = _e37;
+    s_hit = Hit(vec3(0f), 0f, vec3(0f), vec3(0f), vec2(0f), true, 0u, 0u);
+    s_error = 0f;
+    s_sum = vec3(0f);
+    fresh = false;
+    waiting = false;
     loop {
-        let _e28 = have_value;
-        if !(_e28) {
-            let _e30 = ray_22;
-            let _e32 = intersect_scene(_e30, false);
-            if (_e32.slot == NO_HIT) {
+        let _e62 = have_value;
+        let _e64 = waiting;
+        if (!(_e62) && !(_e64)) {
+            let _e67 = ray_22;
+            let _e69 = intersect_scene(_e67, false);
+            s_c = _e69;
+            let _e70 = ray_22;
+            s_ray = _e70;
+            s_sum = vec3(0f);
+            fresh = true;
+            waiting = true;
+        }
+        let _e75 = waiting;
+        if _e75 {
+            waiting = false;
+            pushed = false;
+            radiance_4 = vec3(0f);
+            let _e83 = F32_INF;
+            t_4 = bitcast<f32>(_e83);
+            let _e87 = s_c.slot;
+            if (_e87 == NO_HIT) {
                 hit_error = 0f;
-                let _e38 = ray_22;
-                let _e40 = F32_INF;
-                let _e42 = ray_22;
-                let _e43 = miss(_e42);
-                let _e44 = through_medium(_e38, bitcast<f32>(_e40), _e43);
-                value = _e44;
-                have_value = true;
+                let _e92 = s_ray;
+                let _e93 = miss(_e92);
+                radiance_4 = _e93;
             } else {
-                let inst_10 = instances[_e32.slot];
-                let _e50 = ray_22;
-                let _e51 = finish_hit(_e50, _e32);
-                let error_3 = hit_error;
-                pushed = false;
-                let _e62 = ray_22.depth;
-                let _e66 = depth;
-                if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
+                let _e95 = s_c.slot;
+                let inst_10 = instances[_e95];
+                let _e99 = s_hit;
+                hit_10 = _e99;
+                let _e101 = fresh;
+                if _e101 {
+                    let _e102 = s_ray;
+                    let _e103 = s_c;
+                    let _e104 = finish_hit(_e102, _e103);
+                    hit_10 = _e104;
+                    let _e106 = hit_error;
+                    s_error = _e106;
+                } else {
+                    let _e107 = s_error;
+                    hit_error = _e107;
+                }
+                let _e110 = hit_10.t;
+                t_4 = _e110;
+                let _e111 = fresh;
+                let _e119 = s_ray.depth;
+                let _e123 = depth;
+                if (((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    let _e74 = ray_22;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);
-                    let _e76 = spawn_count;
-                    let n_8 = min(min(_e76, 1u), MAX_SPAWN);
+                    let _e131 = s_ray;
+                    let _e132 = hit_10;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
+                    let _e134 = spawn_count;
+                    let n_8 = min(min(_e134, 1u), MAX_SPAWN);
                     if (n_8 > 0u) {
-                        let _e83 = ray_22;
-                        f = Frame(_e83, _e51, error_3, _e32.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
+                        let _e141 = s_ray;
+                        let _e142 = hit_10;
+                        let _e143 = s_error;
+                        let _e145 = s_c.slot;
+                        f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
                         i_5 = 0u;
                         loop {
-                            let _e94 = i_5;
-                            if (_e94 >= n_8) {
+                            let _e155 = i_5;
+                            if (_e155 >= n_8) {
                                 break;
                             }
-                            let _e97 = i_5;
-                            let _e101 = i_5;
-                            let _e104 = spawn_dirs[_e101];
-                            f.dirs[min(_e97, 0u)] = _e104;
-                            let _e106 = i_5;
-                            let _e110 = i_5;
-                            let _e113 = spawn_weights[_e110];
-                            f.weights[min(_e106, 0u)] = _e113;
+                            let _e158 = i_5;
+                            let _e162 = i_5;
+                            let _e165 = spawn_dirs[_e162];
+                            f.dirs[min(_e158, 0u)] = _e165;
+                            let _e167 = i_5;
+                            let _e171 = i_5;
+                            let _e174 = spawn_weights[_e171];
+                            f.weights[min(_e167, 0u)] = _e174;
                             continuing {
-                                let _e114 = i_5;
-                                i_5 = (_e114 + 1u);
+                                let _e175 = i_5;
+                                i_5 = (_e175 + 1u);
                             }
                         }
-                        let _e117 = depth;
-                        let _e121 = f;
-                        stack[min(_e117, 2u)] = _e121;
-                        let _e122 = depth;
-                        depth = (_e122 + 1u);
+                        let _e178 = depth;
+                        let _e182 = f;
+                        stack[min(_e178, 2u)] = _e182;
+                        let _e183 = depth;
+                        depth = (_e183 + 1u);
                         pushed = true;
                     }
                 }
-                let _e126 = pushed;
-                if !(_e126) {
-                    let _e130 = ray_22;
-                    let _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, vec3(0f));
-                    let _e134 = ray_22;
-                    let _e136 = through_medium(_e134, _e32.t, _e133);
-                    value = _e136;
-                    have_value = true;
+                let _e187 = pushed;
+                if !(_e187) {
+                    let _e191 = s_ray;
+                    let _e192 = hit_10;
+                    let _e193 = s_sum;
+                    let _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
+                    radiance_4 = _e194;
                 }
             }
-        }
-        let _e138 = have_value;
-        if _e138 {
-            let _e139 = depth;
-            if (_e139 == 0u) {
-                let _e142 = value;
-                return _e142;
+            let _e195 = pushed;
+            if !(_e195) {
+                let _e197 = s_ray;
+                let _e198 = t_4;
+                let _e199 = radiance_4;
+                let _e200 = through_medium(_e197, _e198, _e199);
+                value = _e200;
+                have_value = true;
             }
-            let _e143 = depth;
-            let top = (_e143 - 1u);
-            let _e150 = stack[min(top, 2u)].next;
-            let child_2 = (_e150 - 1u);
-            let _e157 = stack[min(top, 2u)].sum;
-            let _e165 = stack[min(top, 2u)].weights[min(child_2, 0u)];
-            let _e166 = value;
-            stack[min(top, 2u)].sum = (_e157 + (_e165 * _e166));
+        }
+        let _e202 = have_value;
+        if _e202 {
+            let _e203 = depth;
+            if (_e203 == 0u) {
+                let _e206 = value;
+                return _e206;
+            }
+            let _e207 = depth;
+            let top = (_e207 - 1u);
+            let _e214 = stack[min(top, 2u)].next;
+            let child_2 = (_e214 - 1u);
+            let _e221 = stack[min(top, 2u)].sum;
+            let _e229 = stack[min(top, 2u)].weights[min(child_2, 0u)];
+            let _e230 = value;
+            stack[min(top, 2u)].sum = (_e221 + (_e229 * _e230));
             have_value = false;
         }
-        let _e170 = depth;
-        let top_1 = (_e170 - 1u);
-        let _e177 = stack[min(top_1, 2u)].next;
-        let _e182 = stack[min(top_1, 2u)].count;
-        if (_e177 < _e182) {
+        let _e234 = depth;
+        let top_1 = (_e234 - 1u);
+        let _e241 = stack[min(top_1, 2u)].next;
+        let _e246 = stack[min(top_1, 2u)].count;
+        if (_e241 < _e246) {
             let i_6 = stack[min(top_1, 2u)].next;
             stack[min(top_1, 2u)].next = (i_6 + 1u);
             let parent = stack[min(top_1, 2u)].ray;
-            let hit_11 = stack[min(top_1, 2u)].hit;
-            let dir_5 = stack[min(top_1, 2u)].dirs[min(i_6, 0u)];
+            let hit_12 = stack[min(top_1, 2u)].hit;
+            let dir_7 = stack[min(top_1, 2u)].dirs[min(i_6, 0u)];
             medium = parent.medium;
-            if (dot(dir_5, hit_11.geometric_normal) < 0f) {
-                let _e223 = stack[min(top_1, 2u)].slot;
-                medium = (_e223 + 1u);
+            if (dot(dir_7, hit_12.geometric_normal) < 0f) {
+                let _e287 = stack[min(top_1, 2u)].slot;
+                medium = (_e287 + 1u);
             } else {
-                let _e231 = stack[min(top_1, 2u)].slot;
-                if (parent.medium == (_e231 + 1u)) {
+                let _e295 = stack[min(top_1, 2u)].slot;
+                if (parent.medium == (_e295 + 1u)) {
                     found = false;
                     medium = 0u;
                     k_1 = top_1;
                     loop {
-                        let _e239 = k_1;
-                        if (_e239 == 0u) {
+                        let _e303 = k_1;
+                        if (_e303 == 0u) {
                             break;
                         }
-                        let _e242 = k_1;
-                        k_1 = (_e242 - 1u);
-                        let _e245 = k_1;
-                        let _e250 = stack[min(_e245, 2u)].slot;
-                        let _e255 = stack[min(top_1, 2u)].slot;
-                        let _e257 = k_1;
-                        let _e263 = stack[min(_e257, 2u)].ray.medium;
-                        let _e267 = k_1;
-                        let _e275 = stack[min((_e267 + 1u), 2u)].ray.medium;
-                        if (((_e250 == _e255) && (_e263 != parent.medium)) && (_e275 == parent.medium)) {
-                            let _e279 = k_1;
-                            let _e285 = stack[min(_e279, 2u)].ray.medium;
-                            medium = _e285;
+                        let _e306 = k_1;
+                        k_1 = (_e306 - 1u);
+                        let _e309 = k_1;
+                        let _e314 = stack[min(_e309, 2u)].slot;
+                        let _e319 = stack[min(top_1, 2u)].slot;
+                        let _e321 = k_1;
+                        let _e327 = stack[min(_e321, 2u)].ray.medium;
+                        let _e331 = k_1;
+                        let _e339 = stack[min((_e331 + 1u), 2u)].ray.medium;
+                        if (((_e314 == _e319) && (_e327 != parent.medium)) && (_e339 == parent.medium)) {
+                            let _e343 = k_1;
+                            let _e349 = stack[min(_e343, 2u)].ray.medium;
+                            medium = _e349;
                             found = true;
                             break;
                         }
                     }
-                    let _e287 = found;
-                    if !(_e287) {
-                        let _e293 = stack[min(top_1, 2u)].error;
-                        let _e294 = spawn_origin(hit_11, _e293, dir_5);
-                        let _e299 = stack[min(top_1, 2u)].slot;
-                        let _e300 = medium_at(_e294, _e299);
-                        medium = _e300;
+                    let _e351 = found;
+                    if !(_e351) {
+                        let _e357 = stack[min(top_1, 2u)].error;
+                        let _e358 = spawn_origin(hit_12, _e357, dir_7);
+                        let _e363 = stack[min(top_1, 2u)].slot;
+                        let _e364 = medium_at(_e358, _e363);
+                        medium = _e364;
                     }
                 }
             }
-            let _e305 = stack[min(top_1, 2u)].error;
-            let _e306 = spawn_origin(hit_11, _e305, dir_5);
-            let _e309 = F32_INF;
-            let _e315 = medium;
-            ray_22 = Ray(_e306, 0f, dir_5, bitcast<f32>(_e309), (parent.depth + 1u), RAY_SECONDARY, _e315);
+            let _e369 = stack[min(top_1, 2u)].error;
+            let _e370 = spawn_origin(hit_12, _e369, dir_7);
+            let _e373 = F32_INF;
+            let _e379 = medium;
+            ray_22 = Ray(_e370, 0f, dir_7, bitcast<f32>(_e373), (parent.depth + 1u), RAY_SECONDARY, _e379);
         } else {
-            let _e321 = stack[min(top_1, 2u)].slot;
-            let inst_11 = instances[_e321];
-            let _e329 = stack[min(top_1, 2u)].error;
-            hit_error = _e329;
-            let _e337 = stack[min(top_1, 2u)].ray;
-            let _e342 = stack[min(top_1, 2u)].hit;
-            let _e347 = stack[min(top_1, 2u)].sum;
-            let _e348 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e337, _e342, _e347);
-            let _e353 = stack[min(top_1, 2u)].ray;
-            let _e359 = stack[min(top_1, 2u)].hit.t;
-            let _e360 = through_medium(_e353, _e359, _e348);
-            value = _e360;
+            let _e385 = stack[min(top_1, 2u)].ray;
+            s_ray = _e385;
+            let _e390 = stack[min(top_1, 2u)].hit;
+            s_hit = _e390;
+            let _e395 = stack[min(top_1, 2u)].error;
+            s_error = _e395;
+            let _e401 = stack[min(top_1, 2u)].slot;
+            s_c.slot = _e401;
+            let _e406 = stack[min(top_1, 2u)].sum;
+            s_sum = _e406;
+            fresh = false;
+            waiting = true;
             depth = top_1;
-            have_value = true;
         }
     }
     return vec3<f32>();
@@ -1346,7 +1438,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
     var ray_23: Ray;
 
     let frame_5 = frame;
-    let tile_1 = tile;
+    let tile_2 = tile;
     sum = vec3(0f);
     bad = 0u;
     let end_1 = frame_5.samples_per_pass;
@@ -1357,7 +1449,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
             break;
         }
         let _e18 = s_2;
-        let sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
+        let sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
         ray_23 = _e23;
@@ -1389,11 +1481,11 @@ fn render_pixel(pixel_3: vec2<u32>) {
     let _e59 = sum;
     let _e62 = vec4<f32>(_e59, f32(frame_5.samples_per_pass));
     let _e63 = bad;
-    if (tile_1.frame == 0u) {
-        accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = _e62;
+    if (tile_2.frame == 0u) {
+        accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = _e62;
     } else {
-        let _e69 = accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
-        accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e69 + _e62);
+        let _e69 = accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)];
+        accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = (_e69 + _e62);
     }
     if (_e63 > 0u) {
         atomicAdd((&counters[0]), _e63);
@@ -1401,26 +1493,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
     return;
 }
 
-fn render_invocation(id: vec2<u32>) {
-    let tile_2 = tile;
-    let size_1 = vec2<u32>(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
-    let _e11 = div_vec2u(((tile_2.extent + size_1) - vec2(1u)), size_1);
-    let count_1 = (_e11.x * _e11.y);
-    if (count_1 == 0u) {
+fn render_invocation(id_1: vec2<u32>) {
+    let tile_3 = tile;
+    let _e3 = scattered_local(id_1);
+    if any((_e3 >= tile_3.extent)) {
         return;
     }
-    let _e17 = div_vec2u(id, size_1);
-    let order = ((_e17.y * _e11.x) + _e17.x);
-    let _e24 = rem_u32_(SCATTER, count_1);
-    let _e26 = rem_u32_((order * _e24), count_1);
-    let _e28 = rem_u32_(_e26, _e11.x);
-    let _e30 = div_u32_(_e26, _e11.x);
-    let _e33 = rem_vec2u(id, size_1);
-    let local = ((vec2<u32>(_e28, _e30) * size_1) + _e33);
-    if any((local >= tile_2.extent)) {
-        return;
-    }
-    render_pixel((tile_2.origin + local));
+    render_pixel((tile_3.origin + _e3));
     return;
 }
 

@@ -24,6 +24,7 @@ struct FrameUniforms {
     uint camera_offset;
     uint background_type;
     uint background_offset;
+    uint path_slots;
 };
 struct Ray {
     vec3 origin;
@@ -117,9 +118,9 @@ struct Frame {
 };
 const uint WORKGROUP_WIDTH = 8u;
 const uint WORKGROUP_HEIGHT = 8u;
+const uint NO_HIT = 4294967295u;
 const uint SCATTER = 1000003u;
 const uint RAY_CAMERA = 0u;
-const uint NO_HIT = 4294967295u;
 const bool HAS_MEDIA = false;
 const uint MEDIUM_ENTRY_STRIDE = 1u;
 const uint MESH_GEOMETRY = 4294967295u;
@@ -202,6 +203,24 @@ uvec2 rem_vec2u(uvec2 a_3, uvec2 b_3) {
     return mix((a_3 % divisor_3), _e3, by_zero_3);
 }
 
+uvec2 scattered_local(uvec2 id) {
+    TileParams tile_1 = _group_0_binding_1_cs;
+    uvec2 size = uvec2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    uvec2 _e11 = div_vec2u(((tile_1.extent + size) - uvec2(1u)), size);
+    uint count = (_e11.x * _e11.y);
+    if ((count == 0u)) {
+        return uvec2(NO_HIT);
+    }
+    uvec2 _e19 = div_vec2u(id, size);
+    uint order = ((_e19.y * _e11.x) + _e19.x);
+    uint _e26 = rem_u32_(SCATTER, count);
+    uint _e28 = rem_u32_((order * _e26), count);
+    uint _e30 = rem_u32_(_e28, _e11.x);
+    uint _e32 = div_u32_(_e28, _e11.x);
+    uvec2 _e35 = rem_vec2u(id, size);
+    return ((uvec2(_e30, _e32) * size) + _e35);
+}
+
 uint pcg_hash(uint x) {
     uint state = ((x * 747796405u) + 2891336453u);
     uint word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
@@ -270,7 +289,7 @@ vec3 normalize_vec3f(vec3 v) {
 Ray pinhole_ray(Pinhole cam, uvec2 pixel_1, uint sample_1) {
     vec2 jitter = vec2(0.0);
     uvec2 _e2 = image_size_query();
-    vec2 size = vec2(_e2);
+    vec2 size_1 = vec2(_e2);
     jitter = vec2(0.5);
     uint _e7 = samples_per_pixel_query();
     if ((_e7 > 1u)) {
@@ -278,12 +297,12 @@ Ray pinhole_ray(Pinhole cam, uvec2 pixel_1, uint sample_1) {
         jitter = _e10;
     }
     vec2 _e12 = jitter;
-    vec2 ndc = ((((vec2(pixel_1) + _e12) / size) * vec2(2.0)) - vec2(1.0));
+    vec2 ndc = ((((vec2(pixel_1) + _e12) / size_1) * vec2(2.0)) - vec2(1.0));
     vec3 _e24 = normalize_vec3f((cam.look_at - cam.position));
     vec3 _e27 = normalize_vec3f(cross(_e24, cam.up));
     vec3 up = cross(_e27, _e24);
     float h_1 = tan((radians(cam.fov) * 0.5));
-    float aspect = (size.x / size.y);
+    float aspect = (size_1.x / size_1.y);
     vec3 _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
     uint _e52 = F32_INF;
     return Ray(cam.position, 0.0, _e48, uintBitsToFloat(_e52), 0u, 0u, 0u);
@@ -352,10 +371,10 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
-    float t_2 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
+    float t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    bool hit_9 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_8 ? vec3(t_2, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_9 ? vec3(t_4, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
@@ -432,7 +451,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
         uint _e20 = child;
         if (((_e20 & NODE_LEAF_BIT) != 0u)) {
             uint _e25 = child;
-            uint count = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            uint count_1 = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
             uint _e32 = child;
             uint first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
@@ -444,7 +463,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 }
                 loop_init = false;
                 uint _e37 = k;
-                if ((_e37 >= count)) {
+                if ((_e37 >= count_1)) {
                     break;
                 }
                 uint _e41 = k;
@@ -820,58 +839,39 @@ vec3 miss(Ray ray_10) {
     return _e9;
 }
 
-vec3 dispatch_medium(uint type_id_2, uint offset_4, Ray ray_11, float t, vec3 radiance) {
-    return vec3(0.0);
-}
-
-vec3 through_medium(Ray ray_12, float t_1, vec3 radiance_1) {
-    if (!(HAS_MEDIA)) {
-        return radiance_1;
-    }
-    if ((ray_12.medium == 0u)) {
-        return radiance_1;
-    }
-    GpuInstance inst_8 = _group_0_binding_3_cs[(ray_12.medium - 1u)];
-    if (((inst_8.flags & FLAG_MEDIUM) == 0u)) {
-        return radiance_1;
-    }
-    vec3 _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_12, t_1, radiance_1);
-    return _e21;
-}
-
-Glass load_Glass(uint offset_5) {
-    uint _e5 = _group_0_binding_6_cs[(offset_5 + 0u)];
-    uint _e11 = _group_0_binding_6_cs[(offset_5 + 4u)];
-    uint _e17 = _group_0_binding_6_cs[(offset_5 + 5u)];
-    uint _e23 = _group_0_binding_6_cs[(offset_5 + 6u)];
+Glass load_Glass(uint offset_4) {
+    uint _e5 = _group_0_binding_6_cs[(offset_4 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_4 + 4u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_4 + 5u)];
+    uint _e23 = _group_0_binding_6_cs[(offset_4 + 6u)];
     return Glass(uintBitsToFloat(_e5), vec3(uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)));
 }
 
-vec3 glass_shade(Glass m, Ray ray_13, Hit hit_1, vec3 secondary) {
+vec3 glass_shade(Glass m, Ray ray_11, Hit hit_1, vec3 secondary) {
     return secondary;
 }
 
-Mirror load_Mirror(uint offset_6) {
-    uint _e5 = _group_0_binding_6_cs[(offset_6 + 0u)];
-    uint _e11 = _group_0_binding_6_cs[(offset_6 + 1u)];
-    uint _e17 = _group_0_binding_6_cs[(offset_6 + 2u)];
+Mirror load_Mirror(uint offset_5) {
+    uint _e5 = _group_0_binding_6_cs[(offset_5 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_5 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_5 + 2u)];
     return Mirror(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 mirror_shade(Mirror m_1, Ray ray_14, Hit hit_2, vec3 secondary_1) {
+vec3 mirror_shade(Mirror m_1, Ray ray_12, Hit hit_2, vec3 secondary_1) {
     return secondary_1;
 }
 
-vec3 dispatch_closest_hit(uint type_id_3, uint offset_7, Ray ray_15, Hit hit_3, vec3 secondary_2) {
-    switch(type_id_3) {
+vec3 dispatch_closest_hit(uint type_id_2, uint offset_6, Ray ray_13, Hit hit_3, vec3 secondary_2) {
+    switch(type_id_2) {
         case 0u: {
-            Glass _e5 = load_Glass(offset_7);
-            vec3 _e6 = glass_shade(_e5, ray_15, hit_3, secondary_2);
+            Glass _e5 = load_Glass(offset_6);
+            vec3 _e6 = glass_shade(_e5, ray_13, hit_3, secondary_2);
             return _e6;
         }
         case 1u: {
-            Mirror _e7 = load_Mirror(offset_7);
-            vec3 _e8 = mirror_shade(_e7, ray_15, hit_3, secondary_2);
+            Mirror _e7 = load_Mirror(offset_6);
+            vec3 _e8 = mirror_shade(_e7, ray_13, hit_3, secondary_2);
             return _e8;
         }
         default: {
@@ -881,11 +881,30 @@ vec3 dispatch_closest_hit(uint type_id_3, uint offset_7, Ray ray_15, Hit hit_3, 
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_16, Candidate c_2) {
-    GpuInstance inst_9 = _group_0_binding_3_cs[c_2.slot];
-    Hit _e6 = finish_hit(ray_16, c_2);
-    vec3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_16, _e6, vec3(0.0));
+vec3 shade_direct(Ray ray_14, Candidate c_2) {
+    GpuInstance inst_8 = _group_0_binding_3_cs[c_2.slot];
+    Hit _e6 = finish_hit(ray_14, c_2);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, vec3(0.0));
     return _e11;
+}
+
+vec3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_15, float t, vec3 radiance) {
+    return vec3(0.0);
+}
+
+vec3 through_medium(Ray ray_16, float t_1, vec3 radiance_1) {
+    if (!(HAS_MEDIA)) {
+        return radiance_1;
+    }
+    if ((ray_16.medium == 0u)) {
+        return radiance_1;
+    }
+    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_16.medium - 1u)];
+    if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
+        return radiance_1;
+    }
+    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_16, t_1, radiance_1);
+    return _e21;
 }
 
 float schlick(float c_3, float eta) {
@@ -918,16 +937,16 @@ void glass_rays(Glass m_2, Ray ray_17, Hit hit_4) {
     float c_7 = min(dot(-(_e4), _e17), 1.0);
     vec3 _e21 = n_3;
     float _e22 = eta_1;
-    vec3 t_3 = refract(_e4, _e21, _e22);
+    vec3 t_5 = refract(_e4, _e21, _e22);
     float _e24 = eta_1;
     float _e25 = schlick(c_7, _e24);
-    if ((dot(t_3, t_3) == 0.0)) {
+    if ((dot(t_5, t_5) == 0.0)) {
         vec3 _e29 = n_3;
         rt_spawn(reflect(_e4, _e29), m_2.tint);
     } else {
         vec3 _e32 = n_3;
         rt_spawn(reflect(_e4, _e32), vec3(_e25));
-        rt_spawn(t_3, (m_2.tint * vec3((1.0 - _e25))));
+        rt_spawn(t_5, (m_2.tint * vec3((1.0 - _e25))));
     }
     return;
 }
@@ -973,166 +992,235 @@ vec3 offset_origin(vec3 p_5, vec3 n_4, float error) {
     return _e17;
 }
 
-vec3 spawn_origin(Hit hit_7, float error_1, vec3 dir_1) {
+vec3 spawn_origin_at(vec3 position, vec3 normal, float error_1, vec3 dir_1) {
     vec3 n_5 = vec3(0.0);
-    n_5 = hit_7.geometric_normal;
+    n_5 = normal;
     vec3 _e5 = n_5;
     if ((dot(dir_1, _e5) < 0.0)) {
         vec3 _e9 = n_5;
         n_5 = -(_e9);
     }
-    vec3 _e12 = n_5;
-    vec3 _e13 = offset_origin(hit_7.position, _e12, error_1);
-    return _e13;
+    vec3 _e11 = n_5;
+    vec3 _e12 = offset_origin(position, _e11, error_1);
+    return _e12;
+}
+
+vec3 spawn_origin(Hit hit_7, float error_2, vec3 dir_2) {
+    vec3 _e5 = spawn_origin_at(hit_7.position, hit_7.geometric_normal, error_2, dir_2);
+    return _e5;
 }
 
 vec3 trace(Ray camera_ray) {
+    vec3 radiance_2 = vec3(0.0);
+    float t_2 = 0.0;
     Frame stack[6] = Frame[6](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u));
     uint depth = 0u;
     Ray ray_20 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
+    Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Candidate s_c = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
+    Hit s_hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
+    float s_error = 0.0;
+    vec3 s_sum = vec3(0.0);
+    bool fresh = false;
+    bool waiting = false;
     bool pushed = false;
+    vec3 radiance_3 = vec3(0.0);
+    float t_3 = 0.0;
+    Hit hit_8 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u);
     uint i_1 = 0u;
     uint medium = 0u;
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false);
+        radiance_2 = vec3(0.0);
+        uint _e9 = F32_INF;
+        t_2 = uintBitsToFloat(_e9);
         if ((_e4.slot == NO_HIT)) {
             hit_error = 0.0;
-            uint _e11 = F32_INF;
-            vec3 _e13 = miss(camera_ray);
-            vec3 _e14 = through_medium(camera_ray, uintBitsToFloat(_e11), _e13);
-            return _e14;
+            vec3 _e17 = miss(camera_ray);
+            radiance_2 = _e17;
+        } else {
+            vec3 _e18 = shade_direct(camera_ray, _e4);
+            radiance_2 = _e18;
+            t_2 = _e4.t;
         }
-        vec3 _e16 = shade_direct(camera_ray, _e4);
-        vec3 _e17 = through_medium(camera_ray, _e4.t, _e16);
-        return _e17;
+        float _e20 = t_2;
+        vec3 _e21 = radiance_2;
+        vec3 _e22 = through_medium(camera_ray, _e20, _e21);
+        return _e22;
     }
     stack = Frame[6](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u));
     depth = 0u;
     ray_20 = camera_ray;
     value = vec3(0.0);
     have_value = false;
+    s_ray = camera_ray;
+    uint _e35 = F32_INF;
+    Candidate _e37 = no_candidate(uintBitsToFloat(_e35));
+    s_c = _e37;
+    s_hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), true, 0u, 0u);
+    s_error = 0.0;
+    s_sum = vec3(0.0);
+    fresh = false;
+    waiting = false;
     while(true) {
-        bool _e28 = have_value;
-        if (!(_e28)) {
-            Ray _e30 = ray_20;
-            Candidate _e32 = intersect_scene(_e30, false);
-            if ((_e32.slot == NO_HIT)) {
+        bool _e62 = have_value;
+        bool _e64 = waiting;
+        if ((!(_e62) && !(_e64))) {
+            Ray _e67 = ray_20;
+            Candidate _e69 = intersect_scene(_e67, false);
+            s_c = _e69;
+            Ray _e70 = ray_20;
+            s_ray = _e70;
+            s_sum = vec3(0.0);
+            fresh = true;
+            waiting = true;
+        }
+        bool _e75 = waiting;
+        if (_e75) {
+            waiting = false;
+            pushed = false;
+            radiance_3 = vec3(0.0);
+            uint _e83 = F32_INF;
+            t_3 = uintBitsToFloat(_e83);
+            uint _e87 = s_c.slot;
+            if ((_e87 == NO_HIT)) {
                 hit_error = 0.0;
-                Ray _e38 = ray_20;
-                uint _e40 = F32_INF;
-                Ray _e42 = ray_20;
-                vec3 _e43 = miss(_e42);
-                vec3 _e44 = through_medium(_e38, uintBitsToFloat(_e40), _e43);
-                value = _e44;
-                have_value = true;
+                Ray _e92 = s_ray;
+                vec3 _e93 = miss(_e92);
+                radiance_3 = _e93;
             } else {
-                GpuInstance inst_10 = _group_0_binding_3_cs[_e32.slot];
-                Ray _e50 = ray_20;
-                Hit _e51 = finish_hit(_e50, _e32);
-                float error_2 = hit_error;
-                pushed = false;
-                uint _e62 = ray_20.depth;
-                uint _e66 = depth;
-                if (((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE))) {
+                uint _e95 = s_c.slot;
+                GpuInstance inst_10 = _group_0_binding_3_cs[_e95];
+                Hit _e99 = s_hit;
+                hit_8 = _e99;
+                bool _e101 = fresh;
+                if (_e101) {
+                    Ray _e102 = s_ray;
+                    Candidate _e103 = s_c;
+                    Hit _e104 = finish_hit(_e102, _e103);
+                    hit_8 = _e104;
+                    float _e106 = hit_error;
+                    s_error = _e106;
+                } else {
+                    float _e107 = s_error;
+                    hit_error = _e107;
+                }
+                float _e110 = hit_8.t;
+                t_3 = _e110;
+                bool _e111 = fresh;
+                uint _e119 = s_ray.depth;
+                uint _e123 = depth;
+                if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e74 = ray_20;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);
-                    uint _e76 = spawn_count;
-                    uint n_8 = min(min(_e76, 2u), MAX_SPAWN);
+                    Ray _e131 = s_ray;
+                    Hit _e132 = hit_8;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
+                    uint _e134 = spawn_count;
+                    uint n_8 = min(min(_e134, 2u), MAX_SPAWN);
                     if ((n_8 > 0u)) {
-                        Ray _e83 = ray_20;
-                        f = Frame(_e83, _e51, error_2, _e32.slot, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), n_8, 0u);
+                        Ray _e141 = s_ray;
+                        Hit _e142 = hit_8;
+                        float _e143 = s_error;
+                        uint _e145 = s_c.slot;
+                        f = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), n_8, 0u);
                         i_1 = 0u;
                         bool loop_init_2 = true;
                         while(true) {
                             if (!loop_init_2) {
-                                uint _e114 = i_1;
-                                i_1 = (_e114 + 1u);
+                                uint _e175 = i_1;
+                                i_1 = (_e175 + 1u);
                             }
                             loop_init_2 = false;
-                            uint _e94 = i_1;
-                            if ((_e94 >= n_8)) {
+                            uint _e155 = i_1;
+                            if ((_e155 >= n_8)) {
                                 break;
                             }
-                            uint _e97 = i_1;
-                            uint _e101 = i_1;
-                            vec3 _e104 = spawn_dirs[_e101];
-                            f.dirs[min(_e97, 1u)] = _e104;
-                            uint _e106 = i_1;
-                            uint _e110 = i_1;
-                            vec3 _e113 = spawn_weights[_e110];
-                            f.weights[min(_e106, 1u)] = _e113;
+                            uint _e158 = i_1;
+                            uint _e162 = i_1;
+                            vec3 _e165 = spawn_dirs[_e162];
+                            f.dirs[min(_e158, 1u)] = _e165;
+                            uint _e167 = i_1;
+                            uint _e171 = i_1;
+                            vec3 _e174 = spawn_weights[_e171];
+                            f.weights[min(_e167, 1u)] = _e174;
                         }
-                        uint _e117 = depth;
-                        Frame _e121 = f;
-                        stack[min(_e117, 5u)] = _e121;
-                        uint _e122 = depth;
-                        depth = (_e122 + 1u);
+                        uint _e178 = depth;
+                        Frame _e182 = f;
+                        stack[min(_e178, 5u)] = _e182;
+                        uint _e183 = depth;
+                        depth = (_e183 + 1u);
                         pushed = true;
                     }
                 }
-                bool _e126 = pushed;
-                if (!(_e126)) {
-                    Ray _e130 = ray_20;
-                    vec3 _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, vec3(0.0));
-                    Ray _e134 = ray_20;
-                    vec3 _e136 = through_medium(_e134, _e32.t, _e133);
-                    value = _e136;
-                    have_value = true;
+                bool _e187 = pushed;
+                if (!(_e187)) {
+                    Ray _e191 = s_ray;
+                    Hit _e192 = hit_8;
+                    vec3 _e193 = s_sum;
+                    vec3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
+                    radiance_3 = _e194;
                 }
             }
-        }
-        bool _e138 = have_value;
-        if (_e138) {
-            uint _e139 = depth;
-            if ((_e139 == 0u)) {
-                vec3 _e142 = value;
-                return _e142;
+            bool _e195 = pushed;
+            if (!(_e195)) {
+                Ray _e197 = s_ray;
+                float _e198 = t_3;
+                vec3 _e199 = radiance_3;
+                vec3 _e200 = through_medium(_e197, _e198, _e199);
+                value = _e200;
+                have_value = true;
             }
-            uint _e143 = depth;
-            uint top = (_e143 - 1u);
-            uint _e150 = stack[min(top, 5u)].next;
-            uint child_2 = (_e150 - 1u);
-            vec3 _e157 = stack[min(top, 5u)].sum;
-            vec3 _e165 = stack[min(top, 5u)].weights[min(child_2, 1u)];
-            vec3 _e166 = value;
-            stack[min(top, 5u)].sum = (_e157 + (_e165 * _e166));
+        }
+        bool _e202 = have_value;
+        if (_e202) {
+            uint _e203 = depth;
+            if ((_e203 == 0u)) {
+                vec3 _e206 = value;
+                return _e206;
+            }
+            uint _e207 = depth;
+            uint top = (_e207 - 1u);
+            uint _e214 = stack[min(top, 5u)].next;
+            uint child_2 = (_e214 - 1u);
+            vec3 _e221 = stack[min(top, 5u)].sum;
+            vec3 _e229 = stack[min(top, 5u)].weights[min(child_2, 1u)];
+            vec3 _e230 = value;
+            stack[min(top, 5u)].sum = (_e221 + (_e229 * _e230));
             have_value = false;
         }
-        uint _e170 = depth;
-        uint top_1 = (_e170 - 1u);
-        uint _e177 = stack[min(top_1, 5u)].next;
-        uint _e182 = stack[min(top_1, 5u)].count;
-        if ((_e177 < _e182)) {
+        uint _e234 = depth;
+        uint top_1 = (_e234 - 1u);
+        uint _e241 = stack[min(top_1, 5u)].next;
+        uint _e246 = stack[min(top_1, 5u)].count;
+        if ((_e241 < _e246)) {
             uint i_2 = stack[min(top_1, 5u)].next;
             stack[min(top_1, 5u)].next = (i_2 + 1u);
             Ray parent = stack[min(top_1, 5u)].ray;
-            Hit hit_9 = stack[min(top_1, 5u)].hit;
-            vec3 dir_2 = stack[min(top_1, 5u)].dirs[min(i_2, 1u)];
+            Hit hit_10 = stack[min(top_1, 5u)].hit;
+            vec3 dir_3 = stack[min(top_1, 5u)].dirs[min(i_2, 1u)];
             medium = parent.medium;
-            float _e219 = stack[min(top_1, 5u)].error;
-            vec3 _e220 = spawn_origin(hit_9, _e219, dir_2);
-            uint _e223 = F32_INF;
-            uint _e229 = medium;
-            ray_20 = Ray(_e220, 0.0, dir_2, uintBitsToFloat(_e223), (parent.depth + 1u), RAY_SECONDARY, _e229);
+            float _e283 = stack[min(top_1, 5u)].error;
+            vec3 _e284 = spawn_origin(hit_10, _e283, dir_3);
+            uint _e287 = F32_INF;
+            uint _e293 = medium;
+            ray_20 = Ray(_e284, 0.0, dir_3, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
-            uint _e235 = stack[min(top_1, 5u)].slot;
-            GpuInstance inst_11 = _group_0_binding_3_cs[_e235];
-            float _e243 = stack[min(top_1, 5u)].error;
-            hit_error = _e243;
-            Ray _e251 = stack[min(top_1, 5u)].ray;
-            Hit _e256 = stack[min(top_1, 5u)].hit;
-            vec3 _e261 = stack[min(top_1, 5u)].sum;
-            vec3 _e262 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e251, _e256, _e261);
-            Ray _e267 = stack[min(top_1, 5u)].ray;
-            float _e273 = stack[min(top_1, 5u)].hit.t;
-            vec3 _e274 = through_medium(_e267, _e273, _e262);
-            value = _e274;
+            Ray _e299 = stack[min(top_1, 5u)].ray;
+            s_ray = _e299;
+            Hit _e304 = stack[min(top_1, 5u)].hit;
+            s_hit = _e304;
+            float _e309 = stack[min(top_1, 5u)].error;
+            s_error = _e309;
+            uint _e315 = stack[min(top_1, 5u)].slot;
+            s_c.slot = _e315;
+            vec3 _e320 = stack[min(top_1, 5u)].sum;
+            s_sum = _e320;
+            fresh = false;
+            waiting = true;
             depth = top_1;
-            have_value = true;
         }
     }
     return vec3(0.0);
@@ -1153,7 +1241,7 @@ void render_pixel(uvec2 pixel_3) {
     uint s_1 = 0u;
     Ray ray_21 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    TileParams tile_1 = _group_0_binding_1_cs;
+    TileParams tile_2 = _group_0_binding_1_cs;
     sum = vec3(0.0);
     bad = 0u;
     uint end_1 = frame_4.samples_per_pass;
@@ -1170,7 +1258,7 @@ void render_pixel(uvec2 pixel_3) {
             break;
         }
         uint _e18 = s_1;
-        uint sample_3 = ((tile_1.frame * frame_4.samples_per_pass) + _e18);
+        uint sample_3 = ((tile_2.frame * frame_4.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_4.seed);
         Ray _e23 = dispatch_ray_generation(frame_4.camera_type, frame_4.camera_offset, pixel_3, sample_3);
         ray_21 = _e23;
@@ -1198,11 +1286,11 @@ void render_pixel(uvec2 pixel_3) {
     vec3 _e59 = sum;
     vec4 _e62 = vec4(_e59, float(frame_4.samples_per_pass));
     uint _e63 = bad;
-    if ((tile_1.frame == 0u)) {
-        _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = _e62;
+    if ((tile_2.frame == 0u)) {
+        _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = _e62;
     } else {
-        vec4 _e69 = _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
-        _group_0_binding_8_cs[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e69 + _e62);
+        vec4 _e69 = _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)];
+        _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = (_e69 + _e62);
     }
     if ((_e63 > 0u)) {
         atomicAdd(_group_0_binding_9_cs[0], _e63);
@@ -1210,26 +1298,13 @@ void render_pixel(uvec2 pixel_3) {
     return;
 }
 
-void render_invocation(uvec2 id) {
-    TileParams tile_2 = _group_0_binding_1_cs;
-    uvec2 size_1 = uvec2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
-    uvec2 _e11 = div_vec2u(((tile_2.extent + size_1) - uvec2(1u)), size_1);
-    uint count_1 = (_e11.x * _e11.y);
-    if ((count_1 == 0u)) {
+void render_invocation(uvec2 id_1) {
+    TileParams tile_3 = _group_0_binding_1_cs;
+    uvec2 _e3 = scattered_local(id_1);
+    if (any(greaterThanEqual(_e3, tile_3.extent))) {
         return;
     }
-    uvec2 _e17 = div_vec2u(id, size_1);
-    uint order = ((_e17.y * _e11.x) + _e17.x);
-    uint _e24 = rem_u32_(SCATTER, count_1);
-    uint _e26 = rem_u32_((order * _e24), count_1);
-    uint _e28 = rem_u32_(_e26, _e11.x);
-    uint _e30 = div_u32_(_e26, _e11.x);
-    uvec2 _e33 = rem_vec2u(id, size_1);
-    uvec2 local = ((uvec2(_e28, _e30) * size_1) + _e33);
-    if (any(greaterThanEqual(local, tile_2.extent))) {
-        return;
-    }
-    render_pixel((tile_2.origin + local));
+    render_pixel((tile_3.origin + _e3));
     return;
 }
 

@@ -20,6 +20,7 @@ struct FrameUniforms {
     uint camera_offset;
     uint background_type;
     uint background_offset;
+    uint path_slots;
 };
 
 struct Ray {
@@ -158,9 +159,9 @@ struct Frame {
 
 static const uint WORKGROUP_WIDTH = 8u;
 static const uint WORKGROUP_HEIGHT = 8u;
+static const uint NO_HIT = 4294967295u;
 static const uint SCATTER = 1000003u;
 static const uint RAY_CAMERA = 0u;
-static const uint NO_HIT = 4294967295u;
 static const bool HAS_MEDIA = false;
 static const uint MEDIUM_ENTRY_STRIDE = 1u;
 static const uint MESH_GEOMETRY = 4294967295u;
@@ -244,6 +245,25 @@ uint2 rem_vec2u(uint2 a_3, uint2 b_3)
     bool2 by_zero_3 = (b_3 == _e3);
     uint2 divisor_3 = (by_zero_3 ? (1u).xx : b_3);
     return (by_zero_3 ? _e3 : naga_mod(a_3, divisor_3));
+}
+
+uint2 scattered_local(uint2 id)
+{
+    TileParams tile_1 = tile;
+    uint2 size = uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    const uint2 _e11 = div_vec2u(((tile_1.extent + size) - (1u).xx), size);
+    uint count = (_e11.x * _e11.y);
+    if ((count == 0u)) {
+        return (NO_HIT).xx;
+    }
+    const uint2 _e19 = div_vec2u(id, size);
+    uint order = ((_e19.y * _e11.x) + _e19.x);
+    const uint _e26 = rem_u32_(SCATTER, count);
+    const uint _e28 = rem_u32_((order * _e26), count);
+    const uint _e30 = rem_u32_(_e28, _e11.x);
+    const uint _e32 = div_u32_(_e28, _e11.x);
+    const uint2 _e35 = rem_vec2u(id, size);
+    return ((uint2(_e30, _e32) * size) + _e35);
 }
 
 uint pcg_hash(uint x)
@@ -347,7 +367,7 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
     float2 jitter = (float2)0;
 
     const uint2 _e2 = image_size_query();
-    float2 size = float2(_e2);
+    float2 size_1 = float2(_e2);
     jitter = (0.5).xx;
     const uint _e7 = samples_per_pixel_query();
     if ((_e7 > 1u)) {
@@ -355,12 +375,12 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
         jitter = _e10;
     }
     float2 _e12 = jitter;
-    float2 ndc = ((((float2(pixel_1) + _e12) / size) * (2.0).xx) - (1.0).xx);
+    float2 ndc = ((((float2(pixel_1) + _e12) / size_1) * (2.0).xx) - (1.0).xx);
     const float3 _e24 = normalize_vec3f((cam.look_at - cam.position));
     const float3 _e27 = normalize_vec3f(cross(_e24, cam.up));
     float3 up = cross(_e27, _e24);
     float h_1 = tan((radians(cam.fov) * 0.5));
-    float aspect = (size.x / size.y);
+    float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
     uint _e52 = F32_INF;
     const Ray ray_22 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
@@ -462,10 +482,10 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
-    float t_2 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
+    float t_4 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    bool hit_9 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_8 ? float3(t_2, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_9 ? float3(t_4, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -563,7 +583,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
         uint _e20 = child;
         if (((_e20 & NODE_LEAF_BIT) != 0u)) {
             uint _e25 = child;
-            uint count = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            uint count_1 = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
             uint _e32 = child;
             uint first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
@@ -578,7 +598,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 }
                 loop_init = false;
                 uint _e37 = k;
-                if ((_e37 >= count)) {
+                if ((_e37 >= count_1)) {
                     break;
                 }
                 uint _e41 = k;
@@ -825,8 +845,8 @@ Hit finish_hit(Ray ray_6, Candidate c_1)
     float3 _e147 = hit.geometric_normal;
     hit.front_face = (dot(ray_6.dir, _e147) < 0.0);
     Hit _e151 = hit;
-    const Hit hit_9 = _e151;
-    return hit_9;
+    const Hit hit_10 = _e151;
+    return hit_10;
 }
 
 uint medium_at(float3 p_4, uint exclude)
@@ -1042,31 +1062,6 @@ float3 miss(Ray ray_10)
     return _e9;
 }
 
-float3 ZeroValuefloat3() {
-    return (float3)0;
-}
-
-float3 dispatch_medium(uint type_id_2, uint offset_4, Ray ray_11, float t, float3 radiance)
-{
-    return ZeroValuefloat3();
-}
-
-float3 through_medium(Ray ray_12, float t_1, float3 radiance_1)
-{
-    if (!(HAS_MEDIA)) {
-        return radiance_1;
-    }
-    if ((ray_12.medium == 0u)) {
-        return radiance_1;
-    }
-    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4((ray_12.medium - 1u)*128+0)), asfloat(instances.Load4((ray_12.medium - 1u)*128+16)), asfloat(instances.Load4((ray_12.medium - 1u)*128+32)), asfloat(instances.Load4((ray_12.medium - 1u)*128+48)), asfloat(instances.Load4((ray_12.medium - 1u)*128+64)), asfloat(instances.Load4((ray_12.medium - 1u)*128+80)), asuint(instances.Load((ray_12.medium - 1u)*128+96)), asuint(instances.Load((ray_12.medium - 1u)*128+100)), asuint(instances.Load((ray_12.medium - 1u)*128+104)), asuint(instances.Load((ray_12.medium - 1u)*128+108)), asuint(instances.Load((ray_12.medium - 1u)*128+112)), asuint(instances.Load((ray_12.medium - 1u)*128+116)), asuint(instances.Load((ray_12.medium - 1u)*128+120)), asuint(instances.Load((ray_12.medium - 1u)*128+124)));
-    if (((inst_8.flags & FLAG_MEDIUM) == 0u)) {
-        return radiance_1;
-    }
-    const float3 _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_12, t_1, radiance_1);
-    return _e21;
-}
-
 Glass ConstructGlass(float arg0, float3 arg1) {
     Glass ret = (Glass)0;
     ret.ior = arg0;
@@ -1074,17 +1069,17 @@ Glass ConstructGlass(float arg0, float3 arg1) {
     return ret;
 }
 
-Glass load_Glass(uint offset_5)
+Glass load_Glass(uint offset_4)
 {
-    uint _e5 = asuint(params.Load((offset_5 + 0u)*4));
-    uint _e11 = asuint(params.Load((offset_5 + 4u)*4));
-    uint _e17 = asuint(params.Load((offset_5 + 5u)*4));
-    uint _e23 = asuint(params.Load((offset_5 + 6u)*4));
+    uint _e5 = asuint(params.Load((offset_4 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_4 + 4u)*4));
+    uint _e17 = asuint(params.Load((offset_4 + 5u)*4));
+    uint _e23 = asuint(params.Load((offset_4 + 6u)*4));
     const Glass glass = ConstructGlass(asfloat(_e5), float3(asfloat(_e11), asfloat(_e17), asfloat(_e23)));
     return glass;
 }
 
-float3 glass_shade(Glass m, Ray ray_13, Hit hit_1, float3 secondary)
+float3 glass_shade(Glass m, Ray ray_11, Hit hit_1, float3 secondary)
 {
     return secondary;
 }
@@ -1095,31 +1090,35 @@ Mirror ConstructMirror(float3 arg0) {
     return ret;
 }
 
-Mirror load_Mirror(uint offset_6)
+Mirror load_Mirror(uint offset_5)
 {
-    uint _e5 = asuint(params.Load((offset_6 + 0u)*4));
-    uint _e11 = asuint(params.Load((offset_6 + 1u)*4));
-    uint _e17 = asuint(params.Load((offset_6 + 2u)*4));
+    uint _e5 = asuint(params.Load((offset_5 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_5 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_5 + 2u)*4));
     const Mirror mirror = ConstructMirror(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)));
     return mirror;
 }
 
-float3 mirror_shade(Mirror m_1, Ray ray_14, Hit hit_2, float3 secondary_1)
+float3 mirror_shade(Mirror m_1, Ray ray_12, Hit hit_2, float3 secondary_1)
 {
     return secondary_1;
 }
 
-float3 dispatch_closest_hit(uint type_id_3, uint offset_7, Ray ray_15, Hit hit_3, float3 secondary_2)
+float3 ZeroValuefloat3() {
+    return (float3)0;
+}
+
+float3 dispatch_closest_hit(uint type_id_2, uint offset_6, Ray ray_13, Hit hit_3, float3 secondary_2)
 {
-    switch(type_id_3) {
+    switch(type_id_2) {
         case 0u: {
-            const Glass _e5 = load_Glass(offset_7);
-            const float3 _e6 = glass_shade(_e5, ray_15, hit_3, secondary_2);
+            const Glass _e5 = load_Glass(offset_6);
+            const float3 _e6 = glass_shade(_e5, ray_13, hit_3, secondary_2);
             return _e6;
         }
         case 1u: {
-            const Mirror _e7 = load_Mirror(offset_7);
-            const float3 _e8 = mirror_shade(_e7, ray_15, hit_3, secondary_2);
+            const Mirror _e7 = load_Mirror(offset_6);
+            const float3 _e8 = mirror_shade(_e7, ray_13, hit_3, secondary_2);
             return _e8;
         }
         default: {
@@ -1129,12 +1128,33 @@ float3 dispatch_closest_hit(uint type_id_3, uint offset_7, Ray ray_15, Hit hit_3
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_16, Candidate c_2)
+float3 shade_direct(Ray ray_14, Candidate c_2)
 {
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_16, c_2);
-    const float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_16, _e6, (0.0).xxx);
+    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
+    const Hit _e6 = finish_hit(ray_14, c_2);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, (0.0).xxx);
     return _e11;
+}
+
+float3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_15, float t, float3 radiance)
+{
+    return ZeroValuefloat3();
+}
+
+float3 through_medium(Ray ray_16, float t_1, float3 radiance_1)
+{
+    if (!(HAS_MEDIA)) {
+        return radiance_1;
+    }
+    if ((ray_16.medium == 0u)) {
+        return radiance_1;
+    }
+    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_16.medium - 1u)*128+0)), asfloat(instances.Load4((ray_16.medium - 1u)*128+16)), asfloat(instances.Load4((ray_16.medium - 1u)*128+32)), asfloat(instances.Load4((ray_16.medium - 1u)*128+48)), asfloat(instances.Load4((ray_16.medium - 1u)*128+64)), asfloat(instances.Load4((ray_16.medium - 1u)*128+80)), asuint(instances.Load((ray_16.medium - 1u)*128+96)), asuint(instances.Load((ray_16.medium - 1u)*128+100)), asuint(instances.Load((ray_16.medium - 1u)*128+104)), asuint(instances.Load((ray_16.medium - 1u)*128+108)), asuint(instances.Load((ray_16.medium - 1u)*128+112)), asuint(instances.Load((ray_16.medium - 1u)*128+116)), asuint(instances.Load((ray_16.medium - 1u)*128+120)), asuint(instances.Load((ray_16.medium - 1u)*128+124)));
+    if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
+        return radiance_1;
+    }
+    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_16, t_1, radiance_1);
+    return _e21;
 }
 
 float schlick(float c_3, float eta)
@@ -1171,16 +1191,16 @@ void glass_rays(Glass m_2, Ray ray_17, Hit hit_4)
     float c_7 = min(dot(-(_e4), _e17), 1.0);
     float3 _e21 = n_3;
     float _e22 = eta_1;
-    float3 t_3 = refract(_e4, _e21, _e22);
+    float3 t_5 = refract(_e4, _e21, _e22);
     float _e24 = eta_1;
     const float _e25 = schlick(c_7, _e24);
-    if ((dot(t_3, t_3) == 0.0)) {
+    if ((dot(t_5, t_5) == 0.0)) {
         float3 _e29 = n_3;
         rt_spawn(reflect(_e4, _e29), m_2.tint);
     } else {
         float3 _e32 = n_3;
         rt_spawn(reflect(_e4, _e32), (_e25).xxx);
-        rt_spawn(t_3, (m_2.tint * ((1.0 - _e25)).xxx));
+        rt_spawn(t_5, (m_2.tint * ((1.0 - _e25)).xxx));
     }
     return;
 }
@@ -1230,19 +1250,25 @@ float3 offset_origin(float3 p_5, float3 n_4, float error)
     return _e17;
 }
 
-float3 spawn_origin(Hit hit_7, float error_1, float3 dir_1)
+float3 spawn_origin_at(float3 position, float3 normal, float error_1, float3 dir_1)
 {
     float3 n_5 = (float3)0;
 
-    n_5 = hit_7.geometric_normal;
+    n_5 = normal;
     float3 _e5 = n_5;
     if ((dot(dir_1, _e5) < 0.0)) {
         float3 _e9 = n_5;
         n_5 = -(_e9);
     }
-    float3 _e12 = n_5;
-    const float3 _e13 = offset_origin(hit_7.position, _e12, error_1);
-    return _e13;
+    float3 _e11 = n_5;
+    const float3 _e12 = offset_origin(position, _e11, error_1);
+    return _e12;
+}
+
+float3 spawn_origin(Hit hit_7, float error_2, float3 dir_2)
+{
+    const float3 _e5 = spawn_origin_at(hit_7.position, hit_7.geometric_normal, error_2, dir_2);
+    return _e5;
 }
 
 Frame ConstructFrame(Ray arg0, Hit arg1, float arg2, uint arg3, float3 arg4, float3 arg5[2], float3 arg6[2], uint arg7, uint arg8) {
@@ -1271,68 +1297,125 @@ ret_ZeroValuearray2_float3_ ZeroValuearray2_float3_() {
 
 float3 trace(Ray camera_ray)
 {
+    float3 radiance_2 = (float3)0;
+    float t_2 = (float)0;
     Frame stack[6] = (Frame[6])0;
     uint depth = (uint)0;
     Ray ray_20 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
+    Ray s_ray = (Ray)0;
+    Candidate s_c = (Candidate)0;
+    Hit s_hit = (Hit)0;
+    float s_error = (float)0;
+    float3 s_sum = (float3)0;
+    bool fresh = (bool)0;
+    bool waiting = (bool)0;
     bool pushed = (bool)0;
+    float3 radiance_3 = (float3)0;
+    float t_3 = (float)0;
+    Hit hit_8 = (Hit)0;
     Frame f = (Frame)0;
     uint i_1 = (uint)0;
     uint medium = (uint)0;
 
     if (!(HAS_SECONDARY_RAYS)) {
         const Candidate _e4 = intersect_scene(camera_ray, false);
+        radiance_2 = (0.0).xxx;
+        uint _e9 = F32_INF;
+        t_2 = asfloat(_e9);
         if ((_e4.slot == NO_HIT)) {
             hit_error = 0.0;
-            uint _e11 = F32_INF;
-            const float3 _e13 = miss(camera_ray);
-            const float3 _e14 = through_medium(camera_ray, asfloat(_e11), _e13);
-            return _e14;
+            const float3 _e17 = miss(camera_ray);
+            radiance_2 = _e17;
+        } else {
+            const float3 _e18 = shade_direct(camera_ray, _e4);
+            radiance_2 = _e18;
+            t_2 = _e4.t;
         }
-        const float3 _e16 = shade_direct(camera_ray, _e4);
-        const float3 _e17 = through_medium(camera_ray, _e4.t, _e16);
-        return _e17;
+        float _e20 = t_2;
+        float3 _e21 = radiance_2;
+        const float3 _e22 = through_medium(camera_ray, _e20, _e21);
+        return _e22;
     }
     stack = ZeroValuearray6_Frame_();
     depth = 0u;
     ray_20 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
+    s_ray = camera_ray;
+    uint _e35 = F32_INF;
+    const Candidate _e37 = no_candidate(asfloat(_e35));
+    s_c = _e37;
+    s_hit = ConstructHit((0.0).xxx, 0.0, (0.0).xxx, (0.0).xxx, (0.0).xx, true, 0u, 0u);
+    s_error = 0.0;
+    s_sum = (0.0).xxx;
+    fresh = false;
+    waiting = false;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        bool _e28 = have_value;
-        if (!(_e28)) {
-            Ray _e30 = ray_20;
-            const Candidate _e32 = intersect_scene(_e30, false);
-            if ((_e32.slot == NO_HIT)) {
+        bool _e62 = have_value;
+        bool _e64 = waiting;
+        if ((!(_e62) && !(_e64))) {
+            Ray _e67 = ray_20;
+            const Candidate _e69 = intersect_scene(_e67, false);
+            s_c = _e69;
+            Ray _e70 = ray_20;
+            s_ray = _e70;
+            s_sum = (0.0).xxx;
+            fresh = true;
+            waiting = true;
+        }
+        bool _e75 = waiting;
+        if (_e75) {
+            waiting = false;
+            pushed = false;
+            radiance_3 = (0.0).xxx;
+            uint _e83 = F32_INF;
+            t_3 = asfloat(_e83);
+            uint _e87 = s_c.slot;
+            if ((_e87 == NO_HIT)) {
                 hit_error = 0.0;
-                Ray _e38 = ray_20;
-                uint _e40 = F32_INF;
-                Ray _e42 = ray_20;
-                const float3 _e43 = miss(_e42);
-                const float3 _e44 = through_medium(_e38, asfloat(_e40), _e43);
-                value = _e44;
-                have_value = true;
+                Ray _e92 = s_ray;
+                const float3 _e93 = miss(_e92);
+                radiance_3 = _e93;
             } else {
-                GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e32.slot*128+0)), asfloat(instances.Load4(_e32.slot*128+16)), asfloat(instances.Load4(_e32.slot*128+32)), asfloat(instances.Load4(_e32.slot*128+48)), asfloat(instances.Load4(_e32.slot*128+64)), asfloat(instances.Load4(_e32.slot*128+80)), asuint(instances.Load(_e32.slot*128+96)), asuint(instances.Load(_e32.slot*128+100)), asuint(instances.Load(_e32.slot*128+104)), asuint(instances.Load(_e32.slot*128+108)), asuint(instances.Load(_e32.slot*128+112)), asuint(instances.Load(_e32.slot*128+116)), asuint(instances.Load(_e32.slot*128+120)), asuint(instances.Load(_e32.slot*128+124)));
-                Ray _e50 = ray_20;
-                const Hit _e51 = finish_hit(_e50, _e32);
-                float error_2 = hit_error;
-                pushed = false;
-                uint _e62 = ray_20.depth;
-                uint _e66 = depth;
-                if (((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE))) {
+                uint _e95 = s_c.slot;
+                GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e95*128+0)), asfloat(instances.Load4(_e95*128+16)), asfloat(instances.Load4(_e95*128+32)), asfloat(instances.Load4(_e95*128+48)), asfloat(instances.Load4(_e95*128+64)), asfloat(instances.Load4(_e95*128+80)), asuint(instances.Load(_e95*128+96)), asuint(instances.Load(_e95*128+100)), asuint(instances.Load(_e95*128+104)), asuint(instances.Load(_e95*128+108)), asuint(instances.Load(_e95*128+112)), asuint(instances.Load(_e95*128+116)), asuint(instances.Load(_e95*128+120)), asuint(instances.Load(_e95*128+124)));
+                Hit _e99 = s_hit;
+                hit_8 = _e99;
+                bool _e101 = fresh;
+                if (_e101) {
+                    Ray _e102 = s_ray;
+                    Candidate _e103 = s_c;
+                    const Hit _e104 = finish_hit(_e102, _e103);
+                    hit_8 = _e104;
+                    float _e106 = hit_error;
+                    s_error = _e106;
+                } else {
+                    float _e107 = s_error;
+                    hit_error = _e107;
+                }
+                float _e110 = hit_8.t;
+                t_3 = _e110;
+                bool _e111 = fresh;
+                uint _e119 = s_ray.depth;
+                uint _e123 = depth;
+                if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e74 = ray_20;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);
-                    uint _e76 = spawn_count;
-                    uint n_8 = min(min(_e76, 2u), MAX_SPAWN);
+                    Ray _e131 = s_ray;
+                    Hit _e132 = hit_8;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
+                    uint _e134 = spawn_count;
+                    uint n_8 = min(min(_e134, 2u), MAX_SPAWN);
                     if ((n_8 > 0u)) {
-                        Ray _e83 = ray_20;
-                        f = ConstructFrame(_e83, _e51, error_2, _e32.slot, (0.0).xxx, ZeroValuearray2_float3_(), ZeroValuearray2_float3_(), n_8, 0u);
+                        Ray _e141 = s_ray;
+                        Hit _e142 = hit_8;
+                        float _e143 = s_error;
+                        uint _e145 = s_c.slot;
+                        f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray2_float3_(), ZeroValuearray2_float3_(), n_8, 0u);
                         i_1 = 0u;
                         uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
                         bool loop_init_2 = true;
@@ -1340,90 +1423,97 @@ float3 trace(Ray camera_ray)
                             if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
                             loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
                             if (!loop_init_2) {
-                                uint _e114 = i_1;
-                                i_1 = (_e114 + 1u);
+                                uint _e175 = i_1;
+                                i_1 = (_e175 + 1u);
                             }
                             loop_init_2 = false;
-                            uint _e94 = i_1;
-                            if ((_e94 >= n_8)) {
+                            uint _e155 = i_1;
+                            if ((_e155 >= n_8)) {
                                 break;
                             }
-                            uint _e97 = i_1;
-                            uint _e101 = i_1;
-                            float3 _e104 = spawn_dirs[min(uint(_e101), 1u)];
-                            f.dirs[min(uint(min(_e97, 1u)), 1u)] = _e104;
-                            uint _e106 = i_1;
-                            uint _e110 = i_1;
-                            float3 _e113 = spawn_weights[min(uint(_e110), 1u)];
-                            f.weights[min(uint(min(_e106, 1u)), 1u)] = _e113;
+                            uint _e158 = i_1;
+                            uint _e162 = i_1;
+                            float3 _e165 = spawn_dirs[min(uint(_e162), 1u)];
+                            f.dirs[min(uint(min(_e158, 1u)), 1u)] = _e165;
+                            uint _e167 = i_1;
+                            uint _e171 = i_1;
+                            float3 _e174 = spawn_weights[min(uint(_e171), 1u)];
+                            f.weights[min(uint(min(_e167, 1u)), 1u)] = _e174;
                         }
-                        uint _e117 = depth;
-                        Frame _e121 = f;
-                        stack[min(uint(min(_e117, 5u)), 5u)] = _e121;
-                        uint _e122 = depth;
-                        depth = (_e122 + 1u);
+                        uint _e178 = depth;
+                        Frame _e182 = f;
+                        stack[min(uint(min(_e178, 5u)), 5u)] = _e182;
+                        uint _e183 = depth;
+                        depth = (_e183 + 1u);
                         pushed = true;
                     }
                 }
-                bool _e126 = pushed;
-                if (!(_e126)) {
-                    Ray _e130 = ray_20;
-                    const float3 _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, (0.0).xxx);
-                    Ray _e134 = ray_20;
-                    const float3 _e136 = through_medium(_e134, _e32.t, _e133);
-                    value = _e136;
-                    have_value = true;
+                bool _e187 = pushed;
+                if (!(_e187)) {
+                    Ray _e191 = s_ray;
+                    Hit _e192 = hit_8;
+                    float3 _e193 = s_sum;
+                    const float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
+                    radiance_3 = _e194;
                 }
             }
-        }
-        bool _e138 = have_value;
-        if (_e138) {
-            uint _e139 = depth;
-            if ((_e139 == 0u)) {
-                float3 _e142 = value;
-                return _e142;
+            bool _e195 = pushed;
+            if (!(_e195)) {
+                Ray _e197 = s_ray;
+                float _e198 = t_3;
+                float3 _e199 = radiance_3;
+                const float3 _e200 = through_medium(_e197, _e198, _e199);
+                value = _e200;
+                have_value = true;
             }
-            uint _e143 = depth;
-            uint top = (_e143 - 1u);
-            uint _e150 = stack[min(uint(min(top, 5u)), 5u)].next;
-            uint child_2 = (_e150 - 1u);
-            float3 _e157 = stack[min(uint(min(top, 5u)), 5u)].sum;
-            float3 _e165 = stack[min(uint(min(top, 5u)), 5u)].weights[min(uint(min(child_2, 1u)), 1u)];
-            float3 _e166 = value;
-            stack[min(uint(min(top, 5u)), 5u)].sum = (_e157 + (_e165 * _e166));
+        }
+        bool _e202 = have_value;
+        if (_e202) {
+            uint _e203 = depth;
+            if ((_e203 == 0u)) {
+                float3 _e206 = value;
+                return _e206;
+            }
+            uint _e207 = depth;
+            uint top = (_e207 - 1u);
+            uint _e214 = stack[min(uint(min(top, 5u)), 5u)].next;
+            uint child_2 = (_e214 - 1u);
+            float3 _e221 = stack[min(uint(min(top, 5u)), 5u)].sum;
+            float3 _e229 = stack[min(uint(min(top, 5u)), 5u)].weights[min(uint(min(child_2, 1u)), 1u)];
+            float3 _e230 = value;
+            stack[min(uint(min(top, 5u)), 5u)].sum = (_e221 + (_e229 * _e230));
             have_value = false;
         }
-        uint _e170 = depth;
-        uint top_1 = (_e170 - 1u);
-        uint _e177 = stack[min(uint(min(top_1, 5u)), 5u)].next;
-        uint _e182 = stack[min(uint(min(top_1, 5u)), 5u)].count;
-        if ((_e177 < _e182)) {
+        uint _e234 = depth;
+        uint top_1 = (_e234 - 1u);
+        uint _e241 = stack[min(uint(min(top_1, 5u)), 5u)].next;
+        uint _e246 = stack[min(uint(min(top_1, 5u)), 5u)].count;
+        if ((_e241 < _e246)) {
             uint i_2 = stack[min(uint(min(top_1, 5u)), 5u)].next;
             stack[min(uint(min(top_1, 5u)), 5u)].next = (i_2 + 1u);
             Ray parent = stack[min(uint(min(top_1, 5u)), 5u)].ray;
-            Hit hit_10 = stack[min(uint(min(top_1, 5u)), 5u)].hit;
-            float3 dir_2 = stack[min(uint(min(top_1, 5u)), 5u)].dirs[min(uint(min(i_2, 1u)), 1u)];
+            Hit hit_11 = stack[min(uint(min(top_1, 5u)), 5u)].hit;
+            float3 dir_3 = stack[min(uint(min(top_1, 5u)), 5u)].dirs[min(uint(min(i_2, 1u)), 1u)];
             medium = parent.medium;
-            float _e219 = stack[min(uint(min(top_1, 5u)), 5u)].error;
-            const float3 _e220 = spawn_origin(hit_10, _e219, dir_2);
-            uint _e223 = F32_INF;
-            uint _e229 = medium;
-            ray_20 = ConstructRay(_e220, 0.0, dir_2, asfloat(_e223), (parent.depth + 1u), RAY_SECONDARY, _e229);
+            float _e283 = stack[min(uint(min(top_1, 5u)), 5u)].error;
+            const float3 _e284 = spawn_origin(hit_11, _e283, dir_3);
+            uint _e287 = F32_INF;
+            uint _e293 = medium;
+            ray_20 = ConstructRay(_e284, 0.0, dir_3, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
-            uint _e235 = stack[min(uint(min(top_1, 5u)), 5u)].slot;
-            GpuInstance inst_11 = ConstructGpuInstance(asfloat(instances.Load4(_e235*128+0)), asfloat(instances.Load4(_e235*128+16)), asfloat(instances.Load4(_e235*128+32)), asfloat(instances.Load4(_e235*128+48)), asfloat(instances.Load4(_e235*128+64)), asfloat(instances.Load4(_e235*128+80)), asuint(instances.Load(_e235*128+96)), asuint(instances.Load(_e235*128+100)), asuint(instances.Load(_e235*128+104)), asuint(instances.Load(_e235*128+108)), asuint(instances.Load(_e235*128+112)), asuint(instances.Load(_e235*128+116)), asuint(instances.Load(_e235*128+120)), asuint(instances.Load(_e235*128+124)));
-            float _e243 = stack[min(uint(min(top_1, 5u)), 5u)].error;
-            hit_error = _e243;
-            Ray _e251 = stack[min(uint(min(top_1, 5u)), 5u)].ray;
-            Hit _e256 = stack[min(uint(min(top_1, 5u)), 5u)].hit;
-            float3 _e261 = stack[min(uint(min(top_1, 5u)), 5u)].sum;
-            const float3 _e262 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e251, _e256, _e261);
-            Ray _e267 = stack[min(uint(min(top_1, 5u)), 5u)].ray;
-            float _e273 = stack[min(uint(min(top_1, 5u)), 5u)].hit.t;
-            const float3 _e274 = through_medium(_e267, _e273, _e262);
-            value = _e274;
+            Ray _e299 = stack[min(uint(min(top_1, 5u)), 5u)].ray;
+            s_ray = _e299;
+            Hit _e304 = stack[min(uint(min(top_1, 5u)), 5u)].hit;
+            s_hit = _e304;
+            float _e309 = stack[min(uint(min(top_1, 5u)), 5u)].error;
+            s_error = _e309;
+            uint _e315 = stack[min(uint(min(top_1, 5u)), 5u)].slot;
+            s_c.slot = _e315;
+            float3 _e320 = stack[min(uint(min(top_1, 5u)), 5u)].sum;
+            s_sum = _e320;
+            fresh = false;
+            waiting = true;
             depth = top_1;
-            have_value = true;
         }
     }
     return ZeroValuefloat3();
@@ -1448,7 +1538,7 @@ void render_pixel(uint2 pixel_3)
     Ray ray_21 = (Ray)0;
 
     FrameUniforms frame_4 = frame;
-    TileParams tile_1 = tile;
+    TileParams tile_2 = tile;
     sum = (0.0).xxx;
     bad = 0u;
     uint end_1 = frame_4.samples_per_pass;
@@ -1468,7 +1558,7 @@ void render_pixel(uint2 pixel_3)
             break;
         }
         uint _e18 = s_1;
-        uint sample_3 = ((tile_1.frame * frame_4.samples_per_pass) + _e18);
+        uint sample_3 = ((tile_2.frame * frame_4.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_4.seed);
         const Ray _e23 = dispatch_ray_generation(frame_4.camera_type, frame_4.camera_offset, pixel_3, sample_3);
         ray_21 = _e23;
@@ -1496,11 +1586,11 @@ void render_pixel(uint2 pixel_3)
     float3 _e59 = sum;
     float4 _e62 = float4(_e59, float(frame_4.samples_per_pass));
     uint _e63 = bad;
-    if ((tile_1.frame == 0u)) {
-        accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint(_e62));
+    if ((tile_2.frame == 0u)) {
+        accum.Store4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16, asuint(_e62));
     } else {
-        float4 _e69 = asfloat(accum.Load4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16));
-        accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint((_e69 + _e62)));
+        float4 _e69 = asfloat(accum.Load4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16));
+        accum.Store4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16, asuint((_e69 + _e62)));
     }
     if ((_e63 > 0u)) {
         counters.InterlockedAdd(0, _e63);
@@ -1508,27 +1598,14 @@ void render_pixel(uint2 pixel_3)
     return;
 }
 
-void render_invocation(uint2 id)
+void render_invocation(uint2 id_1)
 {
-    TileParams tile_2 = tile;
-    uint2 size_1 = uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
-    const uint2 _e11 = div_vec2u(((tile_2.extent + size_1) - (1u).xx), size_1);
-    uint count_1 = (_e11.x * _e11.y);
-    if ((count_1 == 0u)) {
+    TileParams tile_3 = tile;
+    const uint2 _e3 = scattered_local(id_1);
+    if (any((_e3 >= tile_3.extent))) {
         return;
     }
-    const uint2 _e17 = div_vec2u(id, size_1);
-    uint order = ((_e17.y * _e11.x) + _e17.x);
-    const uint _e24 = rem_u32_(SCATTER, count_1);
-    const uint _e26 = rem_u32_((order * _e24), count_1);
-    const uint _e28 = rem_u32_(_e26, _e11.x);
-    const uint _e30 = div_u32_(_e26, _e11.x);
-    const uint2 _e33 = rem_vec2u(id, size_1);
-    uint2 local = ((uint2(_e28, _e30) * size_1) + _e33);
-    if (any((local >= tile_2.extent))) {
-        return;
-    }
-    render_pixel((tile_2.origin + local));
+    render_pixel((tile_3.origin + _e3));
     return;
 }
 

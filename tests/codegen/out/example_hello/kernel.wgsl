@@ -20,6 +20,7 @@ struct FrameUniforms {
     camera_offset: u32,
     background_type: u32,
     background_offset: u32,
+    path_slots: u32,
 }
 
 struct Ray {
@@ -139,9 +140,9 @@ struct Frame {
 
 const WORKGROUP_WIDTH: u32 = 8u;
 const WORKGROUP_HEIGHT: u32 = 8u;
+const NO_HIT: u32 = 4294967295u;
 const SCATTER: u32 = 1000003u;
 const RAY_CAMERA: u32 = 0u;
-const NO_HIT: u32 = 4294967295u;
 const HAS_MEDIA: bool = false;
 const MEDIUM_ENTRY_STRIDE: u32 = 1u;
 const MESH_GEOMETRY: u32 = 4294967295u;
@@ -157,11 +158,11 @@ const GAMMA_6_: f32 = 0.0000003576281f;
 const GAMMA_4_: f32 = 0.00000023841864f;
 const HAS_SECONDARY_RAYS: bool = true;
 const HAS_BACKGROUND: bool = true;
-const FLAG_MEDIUM: u32 = 4u;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
 const INV_PI: f32 = 0.31830987f;
+const FLAG_MEDIUM: u32 = 4u;
 const FLAG_SECONDARY_RAYS: u32 = 2u;
 const MAX_DEPTH: u32 = 3u;
 const STACK_SIZE: u32 = 3u;
@@ -218,6 +219,24 @@ fn rem_vec2u(a_3: vec2<u32>, b_3: vec2<u32>) -> vec2<u32> {
     let by_zero_3 = (b_3 == _e3);
     let divisor_3 = select(b_3, vec2(1u), by_zero_3);
     return select((a_3 % divisor_3), _e3, by_zero_3);
+}
+
+fn scattered_local(id: vec2<u32>) -> vec2<u32> {
+    let tile_1 = tile;
+    let size = vec2<u32>(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    let _e11 = div_vec2u(((tile_1.extent + size) - vec2(1u)), size);
+    let count = (_e11.x * _e11.y);
+    if (count == 0u) {
+        return vec2(NO_HIT);
+    }
+    let _e19 = div_vec2u(id, size);
+    let order = ((_e19.y * _e11.x) + _e19.x);
+    let _e26 = rem_u32_(SCATTER, count);
+    let _e28 = rem_u32_((order * _e26), count);
+    let _e30 = rem_u32_(_e28, _e11.x);
+    let _e32 = div_u32_(_e28, _e11.x);
+    let _e35 = rem_vec2u(id, size);
+    return ((vec2<u32>(_e30, _e32) * size) + _e35);
 }
 
 fn pcg_hash(x: u32) -> u32 {
@@ -290,7 +309,7 @@ fn pinhole_ray(cam: Pinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
     var jitter: vec2<f32>;
 
     let _e2 = image_size_query();
-    let size = vec2<f32>(_e2);
+    let size_1 = vec2<f32>(_e2);
     jitter = vec2(0.5f);
     let _e7 = samples_per_pixel_query();
     if (_e7 > 1u) {
@@ -298,12 +317,12 @@ fn pinhole_ray(cam: Pinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
         jitter = _e10;
     }
     let _e12 = jitter;
-    let ndc = ((((vec2<f32>(pixel_1) + _e12) / size) * vec2(2f)) - vec2(1f));
+    let ndc = ((((vec2<f32>(pixel_1) + _e12) / size_1) * vec2(2f)) - vec2(1f));
     let _e24 = normalize_vec3f((cam.look_at - cam.position));
     let _e27 = normalize_vec3f(cross(_e24, cam.up));
     let up = cross(_e27, _e24);
     let h_1 = tan((radians(cam.fov) * 0.5f));
-    let aspect = (size.x / size.y);
+    let aspect = (size_1.x / size_1.y);
     let _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
     let _e52 = F32_INF;
     return Ray(cam.position, 0f, _e48, bitcast<f32>(_e52), 0u, 0u, 0u);
@@ -373,10 +392,10 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
-    let t_2 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
-    let hit_8 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
+    let t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    let hit_9 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_2, (v_1 * rcp), (w * rcp)), hit_8);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_1 * rcp), (w * rcp)), hit_9);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -454,13 +473,13 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
         let _e20 = child;
         if ((_e20 & NODE_LEAF_BIT) != 0u) {
             let _e25 = child;
-            let count = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            let count_1 = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
             let _e32 = child;
             let first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
             loop {
                 let _e37 = k;
-                if (_e37 >= count) {
+                if (_e37 >= count_1) {
                     break;
                 }
                 let _e41 = k;
@@ -843,34 +862,15 @@ fn miss(ray_10: Ray) -> vec3<f32> {
     return _e9;
 }
 
-fn dispatch_medium(type_id_2: u32, offset_4: u32, ray_11: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
-    return vec3<f32>();
-}
-
-fn through_medium(ray_12: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
-    if !(HAS_MEDIA) {
-        return radiance_1;
-    }
-    if (ray_12.medium == 0u) {
-        return radiance_1;
-    }
-    let inst_8 = instances[(ray_12.medium - 1u)];
-    if ((inst_8.flags & FLAG_MEDIUM) == 0u) {
-        return radiance_1;
-    }
-    let _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_12, t_1, radiance_1);
-    return _e21;
-}
-
-fn load_Lambert(offset_5: u32) -> Lambert {
-    let _e5 = params[(offset_5 + 0u)];
-    let _e11 = params[(offset_5 + 1u)];
-    let _e17 = params[(offset_5 + 2u)];
+fn load_Lambert(offset_4: u32) -> Lambert {
+    let _e5 = params[(offset_4 + 0u)];
+    let _e11 = params[(offset_4 + 1u)];
+    let _e17 = params[(offset_4 + 2u)];
     return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn shading_normal(ray_13: Ray, hit_1: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+fn shading_normal(ray_11: Ray, hit_1: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_1.geometric_normal, ray_11.dir, hit_1.geometric_normal);
     return faceForward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -879,16 +879,16 @@ fn light_count_query() -> u32 {
     return _e1.light_count;
 }
 
-fn load_PointLight(offset_6: u32) -> PointLight {
-    let _e5 = params[(offset_6 + 0u)];
-    let _e11 = params[(offset_6 + 1u)];
-    let _e17 = params[(offset_6 + 2u)];
-    let _e24 = params[(offset_6 + 4u)];
-    let _e30 = params[(offset_6 + 5u)];
-    let _e36 = params[(offset_6 + 6u)];
-    let _e43 = params[(offset_6 + 7u)];
-    let _e49 = params[(offset_6 + 8u)];
-    let _e55 = params[(offset_6 + 9u)];
+fn load_PointLight(offset_5: u32) -> PointLight {
+    let _e5 = params[(offset_5 + 0u)];
+    let _e11 = params[(offset_5 + 1u)];
+    let _e17 = params[(offset_5 + 2u)];
+    let _e24 = params[(offset_5 + 4u)];
+    let _e30 = params[(offset_5 + 5u)];
+    let _e36 = params[(offset_5 + 6u)];
+    let _e43 = params[(offset_5 + 7u)];
+    let _e49 = params[(offset_5 + 8u)];
+    let _e55 = params[(offset_5 + 9u)];
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
@@ -908,7 +908,7 @@ fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
     return _e17;
 }
 
-fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
+fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> Ray {
     var n_4: vec3<f32>;
     var tmax_4: f32;
 
@@ -920,9 +920,9 @@ fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f3
     }
     let a_6 = abs(position);
     let _e13 = hit_error;
-    let error_2 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
+    let error_3 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
     let _e22 = n_4;
-    let _e23 = offset_origin(position, _e22, error_2);
+    let _e23 = offset_origin(position, _e22, error_3);
     let _e25 = F32_INF;
     tmax_4 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
@@ -934,34 +934,38 @@ fn shadow_query(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f3
         tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     let _e59 = tmax_4;
-    let ray_22 = Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
-    let _e65 = intersect_scene(ray_22, true);
-    return select(1f, 0f, (_e65.slot != NO_HIT));
+    return Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-fn point_light(l: PointLight, position_1: vec3<f32>, normal_1: vec3<f32>) -> LightSample {
+fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
+    let _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
+    let _e6 = intersect_scene(_e4, true);
+    return select(1f, 0f, (_e6.slot != NO_HIT));
+}
+
+fn point_light(l: PointLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
     var strength: f32;
 
-    let to_light = (l.position - position_1);
-    let dist_1 = length(to_light);
-    let dir_3 = (to_light / vec3(max(dist_1, 0.00000000000000000001f)));
-    strength = (l.intensity / max((dist_1 * dist_1), 0.00000000000000000001f));
+    let to_light = (l.position - position_2);
+    let dist_2 = length(to_light);
+    let dir_5 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
+    strength = (l.intensity / max((dist_2 * dist_2), 0.00000000000000000001f));
     if (l.range > 0f) {
         let _e19 = strength;
-        strength = (_e19 * (1f - smoothstep(l.inner_range, l.range, dist_1)));
+        strength = (_e19 * (1f - smoothstep(l.inner_range, l.range, dist_2)));
     }
-    let _e26 = shadow_query(position_1, normal_1, dir_3, dist_1);
+    let _e26 = shadow_query(position_2, normal_2, dir_5, dist_2);
     let _e28 = strength;
-    return LightSample(dir_3, dist_1, ((l.color * vec3(_e28)) * vec3(_e26)));
+    return LightSample(dir_5, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)));
 }
 
-fn dispatch_light(type_id_3: u32, offset_7: u32, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
-    let _e3 = load_PointLight(offset_7);
-    let _e4 = point_light(_e3, position_2, normal_2);
+fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
+    let _e3 = load_PointLight(offset_6);
+    let _e4 = point_light(_e3, position_3, normal_3);
     return _e4;
 }
 
-fn sample_light_query(i_1: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
+fn sample_light_query(i_1: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let frame_4 = frame;
     if (i_1 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f));
@@ -969,15 +973,15 @@ fn sample_light_query(i_1: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> L
     let entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
     let _e21 = params[entry];
     let _e26 = params[(entry + 1u)];
-    let _e27 = dispatch_light(_e21, _e26, position_3, normal_3);
+    let _e27 = dispatch_light(_e21, _e26, position_4, normal_4);
     return _e27;
 }
 
-fn lambert_shade(m: Lambert, ray_14: Ray, hit_2: Hit) -> vec3<f32> {
+fn lambert_shade(m: Lambert, ray_12: Ray, hit_2: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_2: u32;
 
-    let _e3 = shading_normal(ray_14, hit_2);
+    let _e3 = shading_normal(ray_12, hit_2);
     color = vec3(0f);
     let _e8 = light_count_query();
     i_2 = 0u;
@@ -999,27 +1003,27 @@ fn lambert_shade(m: Lambert, ray_14: Ray, hit_2: Hit) -> vec3<f32> {
     return _e33;
 }
 
-fn load_Mirror(offset_8: u32) -> Mirror {
-    let _e5 = params[(offset_8 + 0u)];
-    let _e11 = params[(offset_8 + 1u)];
-    let _e17 = params[(offset_8 + 2u)];
+fn load_Mirror(offset_7: u32) -> Mirror {
+    let _e5 = params[(offset_7 + 0u)];
+    let _e11 = params[(offset_7 + 1u)];
+    let _e17 = params[(offset_7 + 2u)];
     return Mirror(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn mirror_shade(m_1: Mirror, ray_15: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn mirror_shade(m_1: Mirror, ray_13: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
     return secondary;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_9: u32, ray_16: Ray, hit_4: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
-    switch type_id_4 {
+fn dispatch_closest_hit(type_id_3: u32, offset_8: u32, ray_14: Ray, hit_4: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+    switch type_id_3 {
         case 0u: {
-            let _e5 = load_Lambert(offset_9);
-            let _e6 = lambert_shade(_e5, ray_16, hit_4);
+            let _e5 = load_Lambert(offset_8);
+            let _e6 = lambert_shade(_e5, ray_14, hit_4);
             return _e6;
         }
         case 1u: {
-            let _e7 = load_Mirror(offset_9);
-            let _e8 = mirror_shade(_e7, ray_16, hit_4, secondary_1);
+            let _e7 = load_Mirror(offset_8);
+            let _e8 = mirror_shade(_e7, ray_14, hit_4, secondary_1);
             return _e8;
         }
         default: {
@@ -1028,17 +1032,36 @@ fn dispatch_closest_hit(type_id_4: u32, offset_9: u32, ray_16: Ray, hit_4: Hit, 
     return vec3<f32>();
 }
 
-fn shade_direct(ray_17: Ray, c_2: Candidate) -> vec3<f32> {
-    let inst_9 = instances[c_2.slot];
-    let _e6 = finish_hit(ray_17, c_2);
-    let _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_17, _e6, vec3(0f));
+fn shade_direct(ray_15: Ray, c_2: Candidate) -> vec3<f32> {
+    let inst_8 = instances[c_2.slot];
+    let _e6 = finish_hit(ray_15, c_2);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, vec3(0f));
     return _e11;
 }
 
-fn rt_spawn(dir_1: vec3<f32>, weight: vec3<f32>) {
+fn dispatch_medium(type_id_4: u32, offset_9: u32, ray_16: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>();
+}
+
+fn through_medium(ray_17: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+    if !(HAS_MEDIA) {
+        return radiance_1;
+    }
+    if (ray_17.medium == 0u) {
+        return radiance_1;
+    }
+    let inst_9 = instances[(ray_17.medium - 1u)];
+    if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
+        return radiance_1;
+    }
+    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_17, t_1, radiance_1);
+    return _e21;
+}
+
+fn rt_spawn(dir_2: vec3<f32>, weight: vec3<f32>) {
     let _e3 = spawn_count;
     if (_e3 < 1u) {
-        spawn_dirs[_e3] = dir_1;
+        spawn_dirs[_e3] = dir_2;
         spawn_weights[_e3] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1056,166 +1079,235 @@ fn dispatch_secondary_rays(type_id_5: u32, offset_10: u32, ray_19: Ray, hit_6: H
     return;
 }
 
-fn spawn_origin(hit_7: Hit, error_1: f32, dir_2: vec3<f32>) -> vec3<f32> {
+fn spawn_origin_at(position_5: vec3<f32>, normal_5: vec3<f32>, error_1: f32, dir_3: vec3<f32>) -> vec3<f32> {
     var n_5: vec3<f32>;
 
-    n_5 = hit_7.geometric_normal;
+    n_5 = normal_5;
     let _e5 = n_5;
-    if (dot(dir_2, _e5) < 0f) {
+    if (dot(dir_3, _e5) < 0f) {
         let _e9 = n_5;
         n_5 = -(_e9);
     }
-    let _e12 = n_5;
-    let _e13 = offset_origin(hit_7.position, _e12, error_1);
-    return _e13;
+    let _e11 = n_5;
+    let _e12 = offset_origin(position_5, _e11, error_1);
+    return _e12;
+}
+
+fn spawn_origin(hit_7: Hit, error_2: f32, dir_4: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_7.position, hit_7.geometric_normal, error_2, dir_4);
+    return _e5;
 }
 
 fn trace(camera_ray: Ray) -> vec3<f32> {
+    var radiance_2: vec3<f32>;
+    var t_2: f32;
     var stack: array<Frame, 3>;
     var depth: u32;
     var ray_20: Ray;
     var value: vec3<f32>;
     var have_value: bool;
+    var s_ray: Ray;
+    var s_c: Candidate;
+    var s_hit: Hit;
+    var s_error: f32;
+    var s_sum: vec3<f32>;
+    var fresh: bool;
+    var waiting: bool;
     var pushed: bool;
+    var radiance_3: vec3<f32>;
+    var t_3: f32;
+    var hit_8: Hit;
     var f: Frame;
     var i_3: u32;
     var medium: u32;
 
     if !(HAS_SECONDARY_RAYS) {
         let _e4 = intersect_scene(camera_ray, false);
+        radiance_2 = vec3(0f);
+        let _e9 = F32_INF;
+        t_2 = bitcast<f32>(_e9);
         if (_e4.slot == NO_HIT) {
             hit_error = 0f;
-            let _e11 = F32_INF;
-            let _e13 = miss(camera_ray);
-            let _e14 = through_medium(camera_ray, bitcast<f32>(_e11), _e13);
-            return _e14;
+            let _e17 = miss(camera_ray);
+            radiance_2 = _e17;
+        } else {
+            let _e18 = shade_direct(camera_ray, _e4);
+            radiance_2 = _e18;
+            t_2 = _e4.t;
         }
-        let _e16 = shade_direct(camera_ray, _e4);
-        let _e17 = through_medium(camera_ray, _e4.t, _e16);
-        return _e17;
+        let _e20 = t_2;
+        let _e21 = radiance_2;
+        let _e22 = through_medium(camera_ray, _e20, _e21);
+        return _e22;
     }
     stack = array<Frame, 3>();
     depth = 0u;
     ray_20 = camera_ray;
     value = vec3(0f);
     have_value = false;
+    s_ray = camera_ray;
+    let _e35 = F32_INF;
+    let _e37 = no_candidate(bitcast<f32>(_e35));
+    s_c = _e37;
+    s_hit = Hit(vec3(0f), 0f, vec3(0f), vec3(0f), vec2(0f), true, 0u, 0u);
+    s_error = 0f;
+    s_sum = vec3(0f);
+    fresh = false;
+    waiting = false;
     loop {
-        let _e28 = have_value;
-        if !(_e28) {
-            let _e30 = ray_20;
-            let _e32 = intersect_scene(_e30, false);
-            if (_e32.slot == NO_HIT) {
+        let _e62 = have_value;
+        let _e64 = waiting;
+        if (!(_e62) && !(_e64)) {
+            let _e67 = ray_20;
+            let _e69 = intersect_scene(_e67, false);
+            s_c = _e69;
+            let _e70 = ray_20;
+            s_ray = _e70;
+            s_sum = vec3(0f);
+            fresh = true;
+            waiting = true;
+        }
+        let _e75 = waiting;
+        if _e75 {
+            waiting = false;
+            pushed = false;
+            radiance_3 = vec3(0f);
+            let _e83 = F32_INF;
+            t_3 = bitcast<f32>(_e83);
+            let _e87 = s_c.slot;
+            if (_e87 == NO_HIT) {
                 hit_error = 0f;
-                let _e38 = ray_20;
-                let _e40 = F32_INF;
-                let _e42 = ray_20;
-                let _e43 = miss(_e42);
-                let _e44 = through_medium(_e38, bitcast<f32>(_e40), _e43);
-                value = _e44;
-                have_value = true;
+                let _e92 = s_ray;
+                let _e93 = miss(_e92);
+                radiance_3 = _e93;
             } else {
-                let inst_10 = instances[_e32.slot];
-                let _e50 = ray_20;
-                let _e51 = finish_hit(_e50, _e32);
-                let error_3 = hit_error;
-                pushed = false;
-                let _e62 = ray_20.depth;
-                let _e66 = depth;
-                if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
+                let _e95 = s_c.slot;
+                let inst_10 = instances[_e95];
+                let _e99 = s_hit;
+                hit_8 = _e99;
+                let _e101 = fresh;
+                if _e101 {
+                    let _e102 = s_ray;
+                    let _e103 = s_c;
+                    let _e104 = finish_hit(_e102, _e103);
+                    hit_8 = _e104;
+                    let _e106 = hit_error;
+                    s_error = _e106;
+                } else {
+                    let _e107 = s_error;
+                    hit_error = _e107;
+                }
+                let _e110 = hit_8.t;
+                t_3 = _e110;
+                let _e111 = fresh;
+                let _e119 = s_ray.depth;
+                let _e123 = depth;
+                if (((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    let _e74 = ray_20;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);
-                    let _e76 = spawn_count;
-                    let n_8 = min(min(_e76, 1u), MAX_SPAWN);
+                    let _e131 = s_ray;
+                    let _e132 = hit_8;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
+                    let _e134 = spawn_count;
+                    let n_8 = min(min(_e134, 1u), MAX_SPAWN);
                     if (n_8 > 0u) {
-                        let _e83 = ray_20;
-                        f = Frame(_e83, _e51, error_3, _e32.slot, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
+                        let _e141 = s_ray;
+                        let _e142 = hit_8;
+                        let _e143 = s_error;
+                        let _e145 = s_c.slot;
+                        f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
                         i_3 = 0u;
                         loop {
-                            let _e94 = i_3;
-                            if (_e94 >= n_8) {
+                            let _e155 = i_3;
+                            if (_e155 >= n_8) {
                                 break;
                             }
-                            let _e97 = i_3;
-                            let _e101 = i_3;
-                            let _e104 = spawn_dirs[_e101];
-                            f.dirs[min(_e97, 0u)] = _e104;
-                            let _e106 = i_3;
-                            let _e110 = i_3;
-                            let _e113 = spawn_weights[_e110];
-                            f.weights[min(_e106, 0u)] = _e113;
+                            let _e158 = i_3;
+                            let _e162 = i_3;
+                            let _e165 = spawn_dirs[_e162];
+                            f.dirs[min(_e158, 0u)] = _e165;
+                            let _e167 = i_3;
+                            let _e171 = i_3;
+                            let _e174 = spawn_weights[_e171];
+                            f.weights[min(_e167, 0u)] = _e174;
                             continuing {
-                                let _e114 = i_3;
-                                i_3 = (_e114 + 1u);
+                                let _e175 = i_3;
+                                i_3 = (_e175 + 1u);
                             }
                         }
-                        let _e117 = depth;
-                        let _e121 = f;
-                        stack[min(_e117, 2u)] = _e121;
-                        let _e122 = depth;
-                        depth = (_e122 + 1u);
+                        let _e178 = depth;
+                        let _e182 = f;
+                        stack[min(_e178, 2u)] = _e182;
+                        let _e183 = depth;
+                        depth = (_e183 + 1u);
                         pushed = true;
                     }
                 }
-                let _e126 = pushed;
-                if !(_e126) {
-                    let _e130 = ray_20;
-                    let _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, vec3(0f));
-                    let _e134 = ray_20;
-                    let _e136 = through_medium(_e134, _e32.t, _e133);
-                    value = _e136;
-                    have_value = true;
+                let _e187 = pushed;
+                if !(_e187) {
+                    let _e191 = s_ray;
+                    let _e192 = hit_8;
+                    let _e193 = s_sum;
+                    let _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
+                    radiance_3 = _e194;
                 }
             }
-        }
-        let _e138 = have_value;
-        if _e138 {
-            let _e139 = depth;
-            if (_e139 == 0u) {
-                let _e142 = value;
-                return _e142;
+            let _e195 = pushed;
+            if !(_e195) {
+                let _e197 = s_ray;
+                let _e198 = t_3;
+                let _e199 = radiance_3;
+                let _e200 = through_medium(_e197, _e198, _e199);
+                value = _e200;
+                have_value = true;
             }
-            let _e143 = depth;
-            let top = (_e143 - 1u);
-            let _e150 = stack[min(top, 2u)].next;
-            let child_2 = (_e150 - 1u);
-            let _e157 = stack[min(top, 2u)].sum;
-            let _e165 = stack[min(top, 2u)].weights[min(child_2, 0u)];
-            let _e166 = value;
-            stack[min(top, 2u)].sum = (_e157 + (_e165 * _e166));
+        }
+        let _e202 = have_value;
+        if _e202 {
+            let _e203 = depth;
+            if (_e203 == 0u) {
+                let _e206 = value;
+                return _e206;
+            }
+            let _e207 = depth;
+            let top = (_e207 - 1u);
+            let _e214 = stack[min(top, 2u)].next;
+            let child_2 = (_e214 - 1u);
+            let _e221 = stack[min(top, 2u)].sum;
+            let _e229 = stack[min(top, 2u)].weights[min(child_2, 0u)];
+            let _e230 = value;
+            stack[min(top, 2u)].sum = (_e221 + (_e229 * _e230));
             have_value = false;
         }
-        let _e170 = depth;
-        let top_1 = (_e170 - 1u);
-        let _e177 = stack[min(top_1, 2u)].next;
-        let _e182 = stack[min(top_1, 2u)].count;
-        if (_e177 < _e182) {
+        let _e234 = depth;
+        let top_1 = (_e234 - 1u);
+        let _e241 = stack[min(top_1, 2u)].next;
+        let _e246 = stack[min(top_1, 2u)].count;
+        if (_e241 < _e246) {
             let i_4 = stack[min(top_1, 2u)].next;
             stack[min(top_1, 2u)].next = (i_4 + 1u);
             let parent = stack[min(top_1, 2u)].ray;
-            let hit_9 = stack[min(top_1, 2u)].hit;
-            let dir_4 = stack[min(top_1, 2u)].dirs[min(i_4, 0u)];
+            let hit_10 = stack[min(top_1, 2u)].hit;
+            let dir_6 = stack[min(top_1, 2u)].dirs[min(i_4, 0u)];
             medium = parent.medium;
-            let _e219 = stack[min(top_1, 2u)].error;
-            let _e220 = spawn_origin(hit_9, _e219, dir_4);
-            let _e223 = F32_INF;
-            let _e229 = medium;
-            ray_20 = Ray(_e220, 0f, dir_4, bitcast<f32>(_e223), (parent.depth + 1u), RAY_SECONDARY, _e229);
+            let _e283 = stack[min(top_1, 2u)].error;
+            let _e284 = spawn_origin(hit_10, _e283, dir_6);
+            let _e287 = F32_INF;
+            let _e293 = medium;
+            ray_20 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
-            let _e235 = stack[min(top_1, 2u)].slot;
-            let inst_11 = instances[_e235];
-            let _e243 = stack[min(top_1, 2u)].error;
-            hit_error = _e243;
-            let _e251 = stack[min(top_1, 2u)].ray;
-            let _e256 = stack[min(top_1, 2u)].hit;
-            let _e261 = stack[min(top_1, 2u)].sum;
-            let _e262 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e251, _e256, _e261);
-            let _e267 = stack[min(top_1, 2u)].ray;
-            let _e273 = stack[min(top_1, 2u)].hit.t;
-            let _e274 = through_medium(_e267, _e273, _e262);
-            value = _e274;
+            let _e299 = stack[min(top_1, 2u)].ray;
+            s_ray = _e299;
+            let _e304 = stack[min(top_1, 2u)].hit;
+            s_hit = _e304;
+            let _e309 = stack[min(top_1, 2u)].error;
+            s_error = _e309;
+            let _e315 = stack[min(top_1, 2u)].slot;
+            s_c.slot = _e315;
+            let _e320 = stack[min(top_1, 2u)].sum;
+            s_sum = _e320;
+            fresh = false;
+            waiting = true;
             depth = top_1;
-            have_value = true;
         }
     }
     return vec3<f32>();
@@ -1237,7 +1329,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
     var ray_21: Ray;
 
     let frame_5 = frame;
-    let tile_1 = tile;
+    let tile_2 = tile;
     sum = vec3(0f);
     bad = 0u;
     let end_1 = frame_5.samples_per_pass;
@@ -1248,7 +1340,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
             break;
         }
         let _e18 = s_1;
-        let sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
+        let sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
         ray_21 = _e23;
@@ -1280,11 +1372,11 @@ fn render_pixel(pixel_3: vec2<u32>) {
     let _e59 = sum;
     let _e62 = vec4<f32>(_e59, f32(frame_5.samples_per_pass));
     let _e63 = bad;
-    if (tile_1.frame == 0u) {
-        accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = _e62;
+    if (tile_2.frame == 0u) {
+        accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = _e62;
     } else {
-        let _e69 = accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)];
-        accum[((pixel_3.y * tile_1.image_size.x) + pixel_3.x)] = (_e69 + _e62);
+        let _e69 = accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)];
+        accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = (_e69 + _e62);
     }
     if (_e63 > 0u) {
         atomicAdd((&counters[0]), _e63);
@@ -1292,26 +1384,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
     return;
 }
 
-fn render_invocation(id: vec2<u32>) {
-    let tile_2 = tile;
-    let size_1 = vec2<u32>(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
-    let _e11 = div_vec2u(((tile_2.extent + size_1) - vec2(1u)), size_1);
-    let count_1 = (_e11.x * _e11.y);
-    if (count_1 == 0u) {
+fn render_invocation(id_1: vec2<u32>) {
+    let tile_3 = tile;
+    let _e3 = scattered_local(id_1);
+    if any((_e3 >= tile_3.extent)) {
         return;
     }
-    let _e17 = div_vec2u(id, size_1);
-    let order = ((_e17.y * _e11.x) + _e17.x);
-    let _e24 = rem_u32_(SCATTER, count_1);
-    let _e26 = rem_u32_((order * _e24), count_1);
-    let _e28 = rem_u32_(_e26, _e11.x);
-    let _e30 = div_u32_(_e26, _e11.x);
-    let _e33 = rem_vec2u(id, size_1);
-    let local = ((vec2<u32>(_e28, _e30) * size_1) + _e33);
-    if any((local >= tile_2.extent)) {
-        return;
-    }
-    render_pixel((tile_2.origin + local));
+    render_pixel((tile_3.origin + _e3));
     return;
 }
 

@@ -36,6 +36,7 @@ struct FrameUniforms {
     uint camera_offset;
     uint background_type;
     uint background_offset;
+    uint path_slots;
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -167,9 +168,9 @@ struct type_17 {
 typedef metal::atomic_uint type_20[1];
 constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
+constant uint NO_HIT = 4294967295u;
 constant uint SCATTER = 1000003u;
 constant uint RAY_CAMERA = 0u;
-constant uint NO_HIT = 4294967295u;
 constant bool HAS_MEDIA = false;
 constant uint MEDIUM_ENTRY_STRIDE = 1u;
 constant uint MESH_GEOMETRY = 4294967295u;
@@ -185,13 +186,13 @@ constant float GAMMA_6_ = 0.0000003576281;
 constant float GAMMA_4_ = 0.00000023841864;
 constant bool HAS_SECONDARY_RAYS = false;
 constant bool HAS_BACKGROUND = true;
-constant uint FLAG_MEDIUM = 4u;
 constant uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
 constant uint RGBA16F_TEXEL_WORDS = 2u;
 constant float INV_PI = 0.31830987;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
+constant uint FLAG_MEDIUM = 4u;
 constant uint FLAG_SECONDARY_RAYS = 2u;
 constant uint MAX_DEPTH = 0u;
 constant uint STACK_SIZE = 1u;
@@ -249,6 +250,27 @@ metal::uint2 rem_vec2u(
     metal::bool2 by_zero_3 = b_3 == _e3;
     metal::uint2 divisor_3 = metal::select(b_3, metal::uint2(1u), by_zero_3);
     return metal::select(naga_mod(a_3, divisor_3), _e3, by_zero_3);
+}
+
+metal::uint2 scattered_local(
+    metal::uint2 id,
+    constant TileParams& tile
+) {
+    TileParams tile_1 = tile;
+    metal::uint2 size = metal::uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    metal::uint2 _e11 = div_vec2u((tile_1.extent + size) - metal::uint2(1u), size);
+    uint count = _e11.x * _e11.y;
+    if (count == 0u) {
+        return metal::uint2(NO_HIT);
+    }
+    metal::uint2 _e19 = div_vec2u(id, size);
+    uint order = (_e19.y * _e11.x) + _e19.x;
+    uint _e26 = rem_u32_(SCATTER, count);
+    uint _e28 = rem_u32_(order * _e26, count);
+    uint _e30 = rem_u32_(_e28, _e11.x);
+    uint _e32 = div_u32_(_e28, _e11.x);
+    metal::uint2 _e35 = rem_vec2u(id, size);
+    return (metal::uint2(_e30, _e32) * size) + _e35;
 }
 
 uint pcg_hash(
@@ -348,7 +370,7 @@ Ray pinhole_ray(
 ) {
     metal::float2 jitter = {};
     metal::uint2 _e2 = image_size_query(tile);
-    metal::float2 size = static_cast<metal::float2>(_e2);
+    metal::float2 size_1 = static_cast<metal::float2>(_e2);
     jitter = metal::float2(0.5);
     uint _e7 = samples_per_pixel_query(frame);
     if (_e7 > 1u) {
@@ -356,12 +378,12 @@ Ray pinhole_ray(
         jitter = _e10;
     }
     metal::float2 _e12 = jitter;
-    metal::float2 ndc = (((static_cast<metal::float2>(pixel_1) + _e12) / size) * metal::float2(2.0)) - metal::float2(1.0);
+    metal::float2 ndc = (((static_cast<metal::float2>(pixel_1) + _e12) / size_1) * metal::float2(2.0)) - metal::float2(1.0);
     metal::float3 _e24 = normalize_vec3f(cam.look_at - cam.position);
     metal::float3 _e27 = normalize_vec3f(metal::cross(_e24, cam.up));
     metal::float3 up = metal::cross(_e27, _e24);
     float h_1 = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
-    float aspect = size.x / size.y;
+    float aspect = size_1.x / size_1.y;
     metal::float3 _e48 = normalize_vec3f((_e24 + (_e27 * metal::float3((ndc.x * h_1) * aspect))) - (up * metal::float3(ndc.y * h_1)));
     uint _e52 = F32_INF;
     return Ray {cam.position, 0.0, _e48, as_type<float>(_e52), 0u, 0u, 0u};
@@ -458,10 +480,10 @@ metal::float3 hit_triangle(
     bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
-    float t_4 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_6 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1);
+    float t_6 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
+    bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_6 ? metal::float3(t_4, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_7 ? metal::float3(t_6, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -585,7 +607,7 @@ Candidate intersect_mesh(
         uint _e20 = child;
         if ((_e20 & NODE_LEAF_BIT) != 0u) {
             uint _e25 = child;
-            uint count = (_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
+            uint count_1 = (_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
             uint _e32 = child;
             uint first = _e32 & NODE_FIRST_MASK;
             k = 0u;
@@ -600,7 +622,7 @@ Candidate intersect_mesh(
                 }
                 loop_init = false;
                 uint _e37 = k;
-                if (_e37 >= count) {
+                if (_e37 >= count_1) {
                     break;
                 }
                 uint _e41 = k;
@@ -1055,63 +1077,32 @@ metal::float3 miss(
     return _e9;
 }
 
-metal::float3 dispatch_medium(
-    uint type_id_2,
-    uint offset_4,
-    Ray ray_11,
-    float t,
-    metal::float3 radiance
-) {
-    return metal::float3 {};
-}
-
-metal::float3 through_medium(
-    Ray ray_12,
-    float t_1,
-    metal::float3 radiance_1,
-    device type_8 const& instances,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    if (!(HAS_MEDIA)) {
-        return radiance_1;
-    }
-    if (ray_12.medium == 0u) {
-        return radiance_1;
-    }
-    GpuInstance inst_8 = instances[ray_12.medium - 1u];
-    if ((inst_8.flags & FLAG_MEDIUM) == 0u) {
-        return radiance_1;
-    }
-    metal::float3 _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_12, t_1, radiance_1);
-    return _e21;
-}
-
 BlinnPhong load_BlinnPhong(
-    uint offset_5,
+    uint offset_4,
     device type_4 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e5 = params[offset_5 + 0u];
-    uint _e10 = params[offset_5 + 4u];
-    uint _e16 = params[offset_5 + 5u];
-    uint _e22 = params[offset_5 + 6u];
-    uint _e29 = params[offset_5 + 8u];
-    uint _e35 = params[offset_5 + 9u];
-    uint _e41 = params[offset_5 + 10u];
-    uint _e48 = params[offset_5 + 11u];
-    uint _e54 = params[offset_5 + 12u];
-    uint _e60 = params[offset_5 + 13u];
-    uint _e66 = params[offset_5 + 14u];
-    uint _e73 = params[offset_5 + 16u];
-    uint _e79 = params[offset_5 + 17u];
+    uint _e5 = params[offset_4 + 0u];
+    uint _e10 = params[offset_4 + 4u];
+    uint _e16 = params[offset_4 + 5u];
+    uint _e22 = params[offset_4 + 6u];
+    uint _e29 = params[offset_4 + 8u];
+    uint _e35 = params[offset_4 + 9u];
+    uint _e41 = params[offset_4 + 10u];
+    uint _e48 = params[offset_4 + 11u];
+    uint _e54 = params[offset_4 + 12u];
+    uint _e60 = params[offset_4 + 13u];
+    uint _e66 = params[offset_4 + 14u];
+    uint _e73 = params[offset_4 + 16u];
+    uint _e79 = params[offset_4 + 17u];
     return BlinnPhong {_e5, {}, metal::float3(as_type<float>(_e10), as_type<float>(_e16), as_type<float>(_e22)), metal::float3(as_type<float>(_e29), as_type<float>(_e35), as_type<float>(_e41)), as_type<float>(_e48), metal::float3(as_type<float>(_e54), as_type<float>(_e60), as_type<float>(_e66)), metal::float2(as_type<float>(_e73), as_type<float>(_e79))};
 }
 
 metal::float3 shading_normal(
-    Ray ray_13,
+    Ray ray_11,
     Hit hit_1
 ) {
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_11.dir, hit_1.geometric_normal);
     return metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1148,19 +1139,19 @@ float srgb_channel(
 }
 
 metal::float4 texel_at(
-    uint t_2,
+    uint t,
     int x_2,
     int y,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint base_3 = params[t_2];
-    uint _e10 = params[t_2 + 1u];
+    uint base_3 = params[t];
+    uint _e10 = params[t + 1u];
     uint w_3 = metal::max(_e10, 1u);
-    uint _e17 = params[t_2 + 2u];
+    uint _e17 = params[t + 2u];
     uint h_2 = metal::max(_e17, 1u);
-    uint format = params[t_2 + 3u];
+    uint format = params[t + 3u];
     int _e26 = rem_i32_(x_2, static_cast<int>(w_3));
     int _e30 = rem_i32_(as_type<int>(as_type<uint>(_e26) + as_type<uint>(static_cast<int>(w_3))), static_cast<int>(w_3));
     uint xi = static_cast<uint>(_e30);
@@ -1184,26 +1175,26 @@ metal::float4 texel_at(
 }
 
 metal::float4 sample_texture(
-    uint t_3,
+    uint t_1,
     metal::float2 uv,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e6 = params[t_3 + 1u];
+    uint _e6 = params[t_1 + 1u];
     float w_4 = static_cast<float>(metal::max(_e6, 1u));
-    uint _e14 = params[t_3 + 2u];
+    uint _e14 = params[t_1 + 2u];
     float h_3 = static_cast<float>(metal::max(_e14, 1u));
     metal::float2 p_7 = (uv * metal::float2(w_4, h_3)) - metal::float2(0.5);
     metal::float2 f_1 = metal::floor(p_7);
     metal::float2 fr = p_7 - f_1;
     int _e26 = i32_from_f32_(f_1.x);
     int _e28 = i32_from_f32_(f_1.y);
-    metal::float4 _e29 = texel_at(t_3, _e26, _e28, params, texels, _buffer_sizes);
-    metal::float4 _e32 = texel_at(t_3, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), _e28, params, texels, _buffer_sizes);
+    metal::float4 _e29 = texel_at(t_1, _e26, _e28, params, texels, _buffer_sizes);
+    metal::float4 _e32 = texel_at(t_1, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), _e28, params, texels, _buffer_sizes);
     metal::float4 a_7 = metal::mix(_e29, _e32, metal::float4(fr.x));
-    metal::float4 _e38 = texel_at(t_3, _e26, as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
-    metal::float4 _e43 = texel_at(t_3, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
+    metal::float4 _e38 = texel_at(t_1, _e26, as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
+    metal::float4 _e43 = texel_at(t_1, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
     metal::float4 b_8 = metal::mix(_e38, _e43, metal::float4(fr.x));
     return metal::mix(a_7, b_8, metal::float4(fr.y));
 }
@@ -1216,19 +1207,19 @@ uint light_count_query(
 }
 
 PointLight load_PointLight(
-    uint offset_6,
+    uint offset_5,
     device type_4 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e5 = params[offset_6 + 0u];
-    uint _e11 = params[offset_6 + 1u];
-    uint _e17 = params[offset_6 + 2u];
-    uint _e24 = params[offset_6 + 4u];
-    uint _e30 = params[offset_6 + 5u];
-    uint _e36 = params[offset_6 + 6u];
-    uint _e43 = params[offset_6 + 7u];
-    uint _e49 = params[offset_6 + 8u];
-    uint _e55 = params[offset_6 + 9u];
+    uint _e5 = params[offset_5 + 0u];
+    uint _e11 = params[offset_5 + 1u];
+    uint _e17 = params[offset_5 + 2u];
+    uint _e24 = params[offset_5 + 4u];
+    uint _e30 = params[offset_5 + 5u];
+    uint _e36 = params[offset_5 + 6u];
+    uint _e43 = params[offset_5 + 7u];
+    uint _e49 = params[offset_5 + 8u];
+    uint _e55 = params[offset_5 + 9u];
     return PointLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)};
 }
 
@@ -1255,20 +1246,13 @@ metal::float3 offset_origin(
     return _e17;
 }
 
-float shadow_query(
+Ray shadow_ray(
     metal::float3 position,
     metal::float3 normal,
     metal::float3 dir,
     float dist,
-    constant FrameUniforms& frame,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
-    thread float& hit_error,
-    thread uint& ray_count,
-    constant _mslBufferSizes& _buffer_sizes
+    thread float& hit_error
 ) {
     metal::float3 n_4 = {};
     float tmax_4 = {};
@@ -1280,9 +1264,9 @@ float shadow_query(
     }
     metal::float3 a_8 = metal::abs(position);
     float _e13 = hit_error;
-    float error_2 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_8.x, a_8.y), a_8.z));
+    float error_3 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_8.x, a_8.y), a_8.z));
     metal::float3 _e22 = n_4;
-    metal::float3 _e23 = offset_origin(position, _e22, error_2);
+    metal::float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = as_type<float>(_e25);
     uint _e29 = F32_INF;
@@ -1294,15 +1278,33 @@ float shadow_query(
         tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_1.x, l_1.y), l_1.z)) / metal::sqrt(dd_1));
     }
     float _e59 = tmax_4;
-    Ray ray_20 = Ray {_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u};
-    Candidate _e65 = intersect_scene(ray_20, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-    return (_e65.slot != NO_HIT) ? 0.0 : 1.0;
+    return Ray {_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u};
+}
+
+float shadow_query(
+    metal::float3 position_1,
+    metal::float3 normal_1,
+    metal::float3 dir_1,
+    float dist_1,
+    constant FrameUniforms& frame,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
+    Candidate _e6 = intersect_scene(_e4, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return (_e6.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
 LightSample point_light(
     PointLight l,
-    metal::float3 position_1,
-    metal::float3 normal_1,
+    metal::float3 position_2,
+    metal::float3 normal_2,
     constant FrameUniforms& frame,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1314,24 +1316,24 @@ LightSample point_light(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float strength = {};
-    metal::float3 to_light = l.position - position_1;
-    float dist_1 = metal::length(to_light);
-    metal::float3 dir_2 = to_light / metal::float3(metal::max(dist_1, 0.00000000000000000001));
-    strength = l.intensity / metal::max(dist_1 * dist_1, 0.00000000000000000001);
+    metal::float3 to_light = l.position - position_2;
+    float dist_2 = metal::length(to_light);
+    metal::float3 dir_4 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
+    strength = l.intensity / metal::max(dist_2 * dist_2, 0.00000000000000000001);
     if (l.range > 0.0) {
         float _e19 = strength;
-        strength = _e19 * (1.0 - metal::smoothstep(l.inner_range, l.range, dist_1));
+        strength = _e19 * (1.0 - metal::smoothstep(l.inner_range, l.range, dist_2));
     }
-    float _e26 = shadow_query(position_1, normal_1, dir_2, dist_1, frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    float _e26 = shadow_query(position_2, normal_2, dir_4, dist_2, frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     float _e28 = strength;
-    return LightSample {dir_2, dist_1, (l.color * metal::float3(_e28)) * metal::float3(_e26)};
+    return LightSample {dir_4, dist_2, (l.color * metal::float3(_e28)) * metal::float3(_e26)};
 }
 
 LightSample dispatch_light(
-    uint type_id_3,
-    uint offset_7,
-    metal::float3 position_2,
-    metal::float3 normal_2,
+    uint type_id_2,
+    uint offset_6,
+    metal::float3 position_3,
+    metal::float3 normal_3,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1343,15 +1345,15 @@ LightSample dispatch_light(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    PointLight _e3 = load_PointLight(offset_7, params, _buffer_sizes);
-    LightSample _e4 = point_light(_e3, position_2, normal_2, frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    PointLight _e3 = load_PointLight(offset_6, params, _buffer_sizes);
+    LightSample _e4 = point_light(_e3, position_3, normal_3, frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e4;
 }
 
 LightSample sample_light_query(
     uint i_1,
-    metal::float3 position_3,
-    metal::float3 normal_3,
+    metal::float3 position_4,
+    metal::float3 normal_4,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1370,13 +1372,13 @@ LightSample sample_light_query(
     uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
     uint _e21 = params[entry];
     uint _e26 = params[entry + 1u];
-    LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    LightSample _e27 = dispatch_light(_e21, _e26, position_4, normal_4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e27;
 }
 
 metal::float3 blinn_phong_shade(
     BlinnPhong m,
-    Ray ray_14,
+    Ray ray_12,
     Hit hit_2,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1392,8 +1394,8 @@ metal::float3 blinn_phong_shade(
 ) {
     metal::float3 color = {};
     uint i_2 = {};
-    metal::float3 _e3 = shading_normal(ray_14, hit_2);
-    metal::float3 _e5 = normalize_vec3f(ray_14.dir);
+    metal::float3 _e3 = shading_normal(ray_12, hit_2);
+    metal::float3 _e5 = normalize_vec3f(ray_12.dir);
     metal::float3 v_2 = -(_e5);
     metal::float4 _e12 = sample_texture(m.texture, hit_2.uv * m.uv_scale, params, texels, _buffer_sizes);
     metal::float3 kd = m.diffuse * _e12.xyz;
@@ -1429,9 +1431,9 @@ metal::float3 blinn_phong_shade(
 }
 
 metal::float3 dispatch_closest_hit(
-    uint type_id_4,
-    uint offset_8,
-    Ray ray_15,
+    uint type_id_3,
+    uint offset_7,
+    Ray ray_13,
     Hit hit_3,
     metal::float3 secondary,
     constant FrameUniforms& frame,
@@ -1446,13 +1448,13 @@ metal::float3 dispatch_closest_hit(
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    BlinnPhong _e3 = load_BlinnPhong(offset_8, params, _buffer_sizes);
-    metal::float3 _e4 = blinn_phong_shade(_e3, ray_15, hit_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
+    BlinnPhong _e3 = load_BlinnPhong(offset_7, params, _buffer_sizes);
+    metal::float3 _e4 = blinn_phong_shade(_e3, ray_13, hit_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
     return _e4;
 }
 
 metal::float3 shade_direct(
-    Ray ray_16,
+    Ray ray_14,
     Candidate c_3,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1467,10 +1469,41 @@ metal::float3 shade_direct(
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuInstance inst_9 = instances[c_3.slot];
-    Hit _e6 = finish_hit(ray_16, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_16, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
+    GpuInstance inst_8 = instances[c_3.slot];
+    Hit _e6 = finish_hit(ray_14, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
     return _e11;
+}
+
+metal::float3 dispatch_medium(
+    uint type_id_4,
+    uint offset_8,
+    Ray ray_15,
+    float t_2,
+    metal::float3 radiance
+) {
+    return metal::float3 {};
+}
+
+metal::float3 through_medium(
+    Ray ray_16,
+    float t_3,
+    metal::float3 radiance_1,
+    device type_8 const& instances,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!(HAS_MEDIA)) {
+        return radiance_1;
+    }
+    if (ray_16.medium == 0u) {
+        return radiance_1;
+    }
+    GpuInstance inst_9 = instances[ray_16.medium - 1u];
+    if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
+        return radiance_1;
+    }
+    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_16, t_3, radiance_1);
+    return _e21;
 }
 
 void dispatch_secondary_rays(
@@ -1482,21 +1515,31 @@ void dispatch_secondary_rays(
     return;
 }
 
-metal::float3 spawn_origin(
-    Hit hit_5,
+metal::float3 spawn_origin_at(
+    metal::float3 position_5,
+    metal::float3 normal_5,
     float error_1,
-    metal::float3 dir_1
+    metal::float3 dir_2
 ) {
     metal::float3 n_5 = {};
-    n_5 = hit_5.geometric_normal;
+    n_5 = normal_5;
     metal::float3 _e5 = n_5;
-    if (metal::dot(dir_1, _e5) < 0.0) {
+    if (metal::dot(dir_2, _e5) < 0.0) {
         metal::float3 _e9 = n_5;
         n_5 = -(_e9);
     }
-    metal::float3 _e12 = n_5;
-    metal::float3 _e13 = offset_origin(hit_5.position, _e12, error_1);
-    return _e13;
+    metal::float3 _e11 = n_5;
+    metal::float3 _e12 = offset_origin(position_5, _e11, error_1);
+    return _e12;
+}
+
+metal::float3 spawn_origin(
+    Hit hit_5,
+    float error_2,
+    metal::float3 dir_3
+) {
+    metal::float3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_3);
+    return _e5;
 }
 
 metal::float3 trace(
@@ -1517,67 +1560,124 @@ metal::float3 trace(
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    metal::float3 radiance_2 = {};
+    float t_4 = {};
     type_17 stack = {};
     uint depth = {};
     Ray ray_18 = {};
     metal::float3 value = {};
     bool have_value = {};
+    Ray s_ray = {};
+    Candidate s_c = {};
+    Hit s_hit = {};
+    float s_error = {};
+    metal::float3 s_sum = {};
+    bool fresh = {};
+    bool waiting = {};
     bool pushed = {};
+    metal::float3 radiance_3 = {};
+    float t_5 = {};
+    Hit hit_6 = {};
     Frame f = {};
     uint i_3 = {};
     uint medium = {};
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        radiance_2 = metal::float3(0.0);
+        uint _e9 = F32_INF;
+        t_4 = as_type<float>(_e9);
         if (_e4.slot == NO_HIT) {
             hit_error = 0.0;
-            uint _e11 = F32_INF;
-            metal::float3 _e13 = miss(camera_ray, frame, params, _buffer_sizes);
-            metal::float3 _e14 = through_medium(camera_ray, as_type<float>(_e11), _e13, instances, _buffer_sizes);
-            return _e14;
+            metal::float3 _e17 = miss(camera_ray, frame, params, _buffer_sizes);
+            radiance_2 = _e17;
+        } else {
+            metal::float3 _e18 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, _buffer_sizes);
+            radiance_2 = _e18;
+            t_4 = _e4.t;
         }
-        metal::float3 _e16 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, _buffer_sizes);
-        metal::float3 _e17 = through_medium(camera_ray, _e4.t, _e16, instances, _buffer_sizes);
-        return _e17;
+        float _e20 = t_4;
+        metal::float3 _e21 = radiance_2;
+        metal::float3 _e22 = through_medium(camera_ray, _e20, _e21, instances, _buffer_sizes);
+        return _e22;
     }
     stack = type_17 {};
     depth = 0u;
     ray_18 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
+    s_ray = camera_ray;
+    uint _e35 = F32_INF;
+    Candidate _e37 = no_candidate(as_type<float>(_e35));
+    s_c = _e37;
+    s_hit = Hit {metal::float3(0.0), 0.0, metal::float3(0.0), metal::float3(0.0), metal::float2(0.0), true, {}, 0u, 0u};
+    s_error = 0.0;
+    s_sum = metal::float3(0.0);
+    fresh = false;
+    waiting = false;
     uint2 loop_bound_5 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        bool _e28 = have_value;
-        if (!(_e28)) {
-            Ray _e30 = ray_18;
-            Candidate _e32 = intersect_scene(_e30, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-            if (_e32.slot == NO_HIT) {
+        bool _e62 = have_value;
+        bool _e64 = waiting;
+        if (!(_e62) && !(_e64)) {
+            Ray _e67 = ray_18;
+            Candidate _e69 = intersect_scene(_e67, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+            s_c = _e69;
+            Ray _e70 = ray_18;
+            s_ray = _e70;
+            s_sum = metal::float3(0.0);
+            fresh = true;
+            waiting = true;
+        }
+        bool _e75 = waiting;
+        if (_e75) {
+            waiting = false;
+            pushed = false;
+            radiance_3 = metal::float3(0.0);
+            uint _e83 = F32_INF;
+            t_5 = as_type<float>(_e83);
+            uint _e87 = s_c.slot;
+            if (_e87 == NO_HIT) {
                 hit_error = 0.0;
-                Ray _e38 = ray_18;
-                uint _e40 = F32_INF;
-                Ray _e42 = ray_18;
-                metal::float3 _e43 = miss(_e42, frame, params, _buffer_sizes);
-                metal::float3 _e44 = through_medium(_e38, as_type<float>(_e40), _e43, instances, _buffer_sizes);
-                value = _e44;
-                have_value = true;
+                Ray _e92 = s_ray;
+                metal::float3 _e93 = miss(_e92, frame, params, _buffer_sizes);
+                radiance_3 = _e93;
             } else {
-                GpuInstance inst_10 = instances[_e32.slot];
-                Ray _e50 = ray_18;
-                Hit _e51 = finish_hit(_e50, _e32, instances, triangles, hit_error, attributes, _buffer_sizes);
-                float error_3 = hit_error;
-                pushed = false;
-                uint _e62 = ray_18.depth;
-                uint _e66 = depth;
-                if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE)) {
+                uint _e95 = s_c.slot;
+                GpuInstance inst_10 = instances[_e95];
+                Hit _e99 = s_hit;
+                hit_6 = _e99;
+                bool _e101 = fresh;
+                if (_e101) {
+                    Ray _e102 = s_ray;
+                    Candidate _e103 = s_c;
+                    Hit _e104 = finish_hit(_e102, _e103, instances, triangles, hit_error, attributes, _buffer_sizes);
+                    hit_6 = _e104;
+                    float _e106 = hit_error;
+                    s_error = _e106;
+                } else {
+                    float _e107 = s_error;
+                    hit_error = _e107;
+                }
+                float _e110 = hit_6.t;
+                t_5 = _e110;
+                bool _e111 = fresh;
+                uint _e119 = s_ray.depth;
+                uint _e123 = depth;
+                if (((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
                     spawn_count = 0u;
-                    Ray _e74 = ray_18;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);
-                    uint _e76 = spawn_count;
-                    uint n_8 = metal::min(metal::min(_e76, 1u), MAX_SPAWN);
+                    Ray _e131 = s_ray;
+                    Hit _e132 = hit_6;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
+                    uint _e134 = spawn_count;
+                    uint n_8 = metal::min(metal::min(_e134, 1u), MAX_SPAWN);
                     if (n_8 > 0u) {
-                        Ray _e83 = ray_18;
-                        f = Frame {_e83, _e51, error_3, _e32.slot, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_8, 0u};
+                        Ray _e141 = s_ray;
+                        Hit _e142 = hit_6;
+                        float _e143 = s_error;
+                        uint _e145 = s_c.slot;
+                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_8, 0u};
                         i_3 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u);
                         bool loop_init_3 = true;
@@ -1585,90 +1685,97 @@ metal::float3 trace(
                             if (metal::all(loop_bound_6 == uint2(0u))) { break; }
                             loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                             if (!loop_init_3) {
-                                uint _e114 = i_3;
-                                i_3 = _e114 + 1u;
+                                uint _e175 = i_3;
+                                i_3 = _e175 + 1u;
                             }
                             loop_init_3 = false;
-                            uint _e94 = i_3;
-                            if (_e94 >= n_8) {
+                            uint _e155 = i_3;
+                            if (_e155 >= n_8) {
                                 break;
                             }
-                            uint _e97 = i_3;
-                            uint _e101 = i_3;
-                            metal::float3 _e104 = spawn_dirs.inner[_e101];
-                            f.dirs.inner[metal::min(_e97, 0u)] = _e104;
-                            uint _e106 = i_3;
-                            uint _e110 = i_3;
-                            metal::float3 _e113 = spawn_weights.inner[_e110];
-                            f.weights.inner[metal::min(_e106, 0u)] = _e113;
+                            uint _e158 = i_3;
+                            uint _e162 = i_3;
+                            metal::float3 _e165 = spawn_dirs.inner[_e162];
+                            f.dirs.inner[metal::min(_e158, 0u)] = _e165;
+                            uint _e167 = i_3;
+                            uint _e171 = i_3;
+                            metal::float3 _e174 = spawn_weights.inner[_e171];
+                            f.weights.inner[metal::min(_e167, 0u)] = _e174;
                         }
-                        uint _e117 = depth;
-                        Frame _e121 = f;
-                        stack.inner[metal::min(_e117, 0u)] = _e121;
-                        uint _e122 = depth;
-                        depth = _e122 + 1u;
+                        uint _e178 = depth;
+                        Frame _e182 = f;
+                        stack.inner[metal::min(_e178, 0u)] = _e182;
+                        uint _e183 = depth;
+                        depth = _e183 + 1u;
                         pushed = true;
                     }
                 }
-                bool _e126 = pushed;
-                if (!(_e126)) {
-                    Ray _e130 = ray_18;
-                    metal::float3 _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
-                    Ray _e134 = ray_18;
-                    metal::float3 _e136 = through_medium(_e134, _e32.t, _e133, instances, _buffer_sizes);
-                    value = _e136;
-                    have_value = true;
+                bool _e187 = pushed;
+                if (!(_e187)) {
+                    Ray _e191 = s_ray;
+                    Hit _e192 = hit_6;
+                    metal::float3 _e193 = s_sum;
+                    metal::float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
+                    radiance_3 = _e194;
                 }
             }
-        }
-        bool _e138 = have_value;
-        if (_e138) {
-            uint _e139 = depth;
-            if (_e139 == 0u) {
-                metal::float3 _e142 = value;
-                return _e142;
+            bool _e195 = pushed;
+            if (!(_e195)) {
+                Ray _e197 = s_ray;
+                float _e198 = t_5;
+                metal::float3 _e199 = radiance_3;
+                metal::float3 _e200 = through_medium(_e197, _e198, _e199, instances, _buffer_sizes);
+                value = _e200;
+                have_value = true;
             }
-            uint _e143 = depth;
-            uint top = _e143 - 1u;
-            uint _e150 = stack.inner[metal::min(top, 0u)].next;
-            uint child_2 = _e150 - 1u;
-            metal::float3 _e157 = stack.inner[metal::min(top, 0u)].sum;
-            metal::float3 _e165 = stack.inner[metal::min(top, 0u)].weights.inner[metal::min(child_2, 0u)];
-            metal::float3 _e166 = value;
-            stack.inner[metal::min(top, 0u)].sum = _e157 + (_e165 * _e166);
+        }
+        bool _e202 = have_value;
+        if (_e202) {
+            uint _e203 = depth;
+            if (_e203 == 0u) {
+                metal::float3 _e206 = value;
+                return _e206;
+            }
+            uint _e207 = depth;
+            uint top = _e207 - 1u;
+            uint _e214 = stack.inner[metal::min(top, 0u)].next;
+            uint child_2 = _e214 - 1u;
+            metal::float3 _e221 = stack.inner[metal::min(top, 0u)].sum;
+            metal::float3 _e229 = stack.inner[metal::min(top, 0u)].weights.inner[metal::min(child_2, 0u)];
+            metal::float3 _e230 = value;
+            stack.inner[metal::min(top, 0u)].sum = _e221 + (_e229 * _e230);
             have_value = false;
         }
-        uint _e170 = depth;
-        uint top_1 = _e170 - 1u;
-        uint _e177 = stack.inner[metal::min(top_1, 0u)].next;
-        uint _e182 = stack.inner[metal::min(top_1, 0u)].count;
-        if (_e177 < _e182) {
+        uint _e234 = depth;
+        uint top_1 = _e234 - 1u;
+        uint _e241 = stack.inner[metal::min(top_1, 0u)].next;
+        uint _e246 = stack.inner[metal::min(top_1, 0u)].count;
+        if (_e241 < _e246) {
             uint i_4 = stack.inner[metal::min(top_1, 0u)].next;
             stack.inner[metal::min(top_1, 0u)].next = i_4 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 0u)].ray;
-            Hit hit_7 = stack.inner[metal::min(top_1, 0u)].hit;
-            metal::float3 dir_3 = stack.inner[metal::min(top_1, 0u)].dirs.inner[metal::min(i_4, 0u)];
+            Hit hit_8 = stack.inner[metal::min(top_1, 0u)].hit;
+            metal::float3 dir_5 = stack.inner[metal::min(top_1, 0u)].dirs.inner[metal::min(i_4, 0u)];
             medium = parent.medium;
-            float _e219 = stack.inner[metal::min(top_1, 0u)].error;
-            metal::float3 _e220 = spawn_origin(hit_7, _e219, dir_3);
-            uint _e223 = F32_INF;
-            uint _e229 = medium;
-            ray_18 = Ray {_e220, 0.0, dir_3, as_type<float>(_e223), parent.depth + 1u, RAY_SECONDARY, _e229};
+            float _e283 = stack.inner[metal::min(top_1, 0u)].error;
+            metal::float3 _e284 = spawn_origin(hit_8, _e283, dir_5);
+            uint _e287 = F32_INF;
+            uint _e293 = medium;
+            ray_18 = Ray {_e284, 0.0, dir_5, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
-            uint _e235 = stack.inner[metal::min(top_1, 0u)].slot;
-            GpuInstance inst_11 = instances[_e235];
-            float _e243 = stack.inner[metal::min(top_1, 0u)].error;
-            hit_error = _e243;
-            Ray _e251 = stack.inner[metal::min(top_1, 0u)].ray;
-            Hit _e256 = stack.inner[metal::min(top_1, 0u)].hit;
-            metal::float3 _e261 = stack.inner[metal::min(top_1, 0u)].sum;
-            metal::float3 _e262 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e251, _e256, _e261, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
-            Ray _e267 = stack.inner[metal::min(top_1, 0u)].ray;
-            float _e273 = stack.inner[metal::min(top_1, 0u)].hit.t;
-            metal::float3 _e274 = through_medium(_e267, _e273, _e262, instances, _buffer_sizes);
-            value = _e274;
+            Ray _e299 = stack.inner[metal::min(top_1, 0u)].ray;
+            s_ray = _e299;
+            Hit _e304 = stack.inner[metal::min(top_1, 0u)].hit;
+            s_hit = _e304;
+            float _e309 = stack.inner[metal::min(top_1, 0u)].error;
+            s_error = _e309;
+            uint _e315 = stack.inner[metal::min(top_1, 0u)].slot;
+            s_c.slot = _e315;
+            metal::float3 _e320 = stack.inner[metal::min(top_1, 0u)].sum;
+            s_sum = _e320;
+            fresh = false;
+            waiting = true;
             depth = top_1;
-            have_value = true;
         }
     }
     return metal::float3 {};
@@ -1714,7 +1821,7 @@ void render_pixel(
     uint s_1 = {};
     Ray ray_19 = {};
     FrameUniforms frame_5 = frame;
-    TileParams tile_1 = tile;
+    TileParams tile_2 = tile;
     sum = metal::float3(0.0);
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
@@ -1734,7 +1841,7 @@ void render_pixel(
             break;
         }
         uint _e18 = s_1;
-        uint sample_3 = (tile_1.frame * frame_5.samples_per_pass) + _e18;
+        uint sample_3 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
         ray_19 = _e23;
@@ -1762,11 +1869,11 @@ void render_pixel(
     metal::float3 _e59 = sum;
     metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
     uint _e63 = bad;
-    if (tile_1.frame == 0u) {
-        accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e62;
+    if (tile_2.frame == 0u) {
+        accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x] = _e62;
     } else {
-        metal::float4 _e69 = accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x];
-        accum[(pixel_3.y * tile_1.image_size.x) + pixel_3.x] = _e69 + _e62;
+        metal::float4 _e69 = accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x];
+        accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x] = _e69 + _e62;
     }
     if (_e63 > 0u) {
         metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
@@ -1775,7 +1882,7 @@ void render_pixel(
 }
 
 void render_invocation(
-    metal::uint2 id,
+    metal::uint2 id_1,
     constant TileParams& tile,
     constant FrameUniforms& frame,
     thread uint& rng_state,
@@ -1796,25 +1903,12 @@ void render_invocation(
     device type_10& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    TileParams tile_2 = tile;
-    metal::uint2 size_1 = metal::uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
-    metal::uint2 _e11 = div_vec2u((tile_2.extent + size_1) - metal::uint2(1u), size_1);
-    uint count_1 = _e11.x * _e11.y;
-    if (count_1 == 0u) {
+    TileParams tile_3 = tile;
+    metal::uint2 _e3 = scattered_local(id_1, tile);
+    if (metal::any(_e3 >= tile_3.extent)) {
         return;
     }
-    metal::uint2 _e17 = div_vec2u(id, size_1);
-    uint order = (_e17.y * _e11.x) + _e17.x;
-    uint _e24 = rem_u32_(SCATTER, count_1);
-    uint _e26 = rem_u32_(order * _e24, count_1);
-    uint _e28 = rem_u32_(_e26, _e11.x);
-    uint _e30 = div_u32_(_e26, _e11.x);
-    metal::uint2 _e33 = rem_vec2u(id, size_1);
-    metal::uint2 local = (metal::uint2(_e28, _e30) * size_1) + _e33;
-    if (metal::any(local >= tile_2.extent)) {
-        return;
-    }
-    render_pixel(tile_2.origin + local, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }
 

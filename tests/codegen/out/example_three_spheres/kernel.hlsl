@@ -20,6 +20,7 @@ struct FrameUniforms {
     uint camera_offset;
     uint background_type;
     uint background_offset;
+    uint path_slots;
 };
 
 struct Ray {
@@ -196,10 +197,10 @@ struct Frame {
 
 static const uint WORKGROUP_WIDTH = 8u;
 static const uint WORKGROUP_HEIGHT = 8u;
+static const uint NO_HIT = 4294967295u;
 static const uint SCATTER = 1000003u;
 static const uint SUPERSAMPLING_GRID = 2u;
 static const uint RAY_CAMERA = 0u;
-static const uint NO_HIT = 4294967295u;
 static const bool HAS_MEDIA = false;
 static const uint MEDIUM_ENTRY_STRIDE = 1u;
 static const uint MESH_GEOMETRY = 4294967295u;
@@ -220,10 +221,10 @@ static const bool HAS_SECONDARY_RAYS = false;
 static const bool HAS_BACKGROUND = true;
 static const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
 static const uint RGBA16F_TEXEL_WORDS = 2u;
-static const uint FLAG_MEDIUM = 4u;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
+static const uint FLAG_MEDIUM = 4u;
 static const uint FLAG_SECONDARY_RAYS = 2u;
 static const uint MAX_DEPTH = 4u;
 static const uint STACK_SIZE = 4u;
@@ -293,6 +294,25 @@ uint2 rem_vec2u(uint2 a_3, uint2 b_3)
     bool2 by_zero_3 = (b_3 == _e3);
     uint2 divisor_3 = (by_zero_3 ? (1u).xx : b_3);
     return (by_zero_3 ? _e3 : naga_mod(a_3, divisor_3));
+}
+
+uint2 scattered_local(uint2 id)
+{
+    TileParams tile_1 = tile;
+    uint2 size = uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    const uint2 _e11 = div_vec2u(((tile_1.extent + size) - (1u).xx), size);
+    uint count = (_e11.x * _e11.y);
+    if ((count == 0u)) {
+        return (NO_HIT).xx;
+    }
+    const uint2 _e19 = div_vec2u(id, size);
+    uint order = ((_e19.y * _e11.x) + _e19.x);
+    const uint _e26 = rem_u32_(SCATTER, count);
+    const uint _e28 = rem_u32_((order * _e26), count);
+    const uint _e30 = rem_u32_(_e28, _e11.x);
+    const uint _e32 = div_u32_(_e28, _e11.x);
+    const uint2 _e35 = rem_vec2u(id, size);
+    return ((uint2(_e30, _e32) * size) + _e35);
 }
 
 uint pcg_hash(uint x)
@@ -388,19 +408,19 @@ Ray ConstructRay(float3 arg0, float arg1, float3 arg2, float arg3, uint arg4, ui
 Ray supersampled_ray(SupersampledPinhole cam, uint2 pixel_1, uint sample_1)
 {
     const uint2 _e3 = image_size_query();
-    float2 size = float2(_e3);
+    float2 size_1 = float2(_e3);
     const uint _e8 = rem_u32_(sample_1, (SUPERSAMPLING_GRID * SUPERSAMPLING_GRID));
     const uint _e10 = rem_u32_(_e8, SUPERSAMPLING_GRID);
     const uint _e13 = div_u32_(_e8, SUPERSAMPLING_GRID);
     float2 stratum = float2(float(_e10), float(_e13));
     const float2 _e16 = rand2_next();
     float2 offset_13 = ((stratum + _e16) / (float(SUPERSAMPLING_GRID)).xx);
-    float2 ndc = ((((float2(pixel_1) + offset_13) / size) * (2.0).xx) - (1.0).xx);
+    float2 ndc = ((((float2(pixel_1) + offset_13) / size_1) * (2.0).xx) - (1.0).xx);
     const float3 _e34 = normalize_vec3f((cam.look_at - cam.position));
     const float3 _e37 = normalize_vec3f(cross(_e34, cam.up));
     float3 up = cross(_e37, _e34);
     float h_1 = tan((radians(cam.fov) * 0.5));
-    float aspect = (size.x / size.y);
+    float aspect = (size_1.x / size_1.y);
     const float3 _e58 = normalize_vec3f(((_e34 + (_e37 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
     uint _e62 = F32_INF;
     const Ray ray_26 = ConstructRay(cam.position, 0.0, _e58, asfloat(_e62), 0u, 0u, 0u);
@@ -502,10 +522,10 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
-    float t_5 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_6 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
+    float t_7 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_7 >= tmin)) && (t_7 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_6 ? float3(t_5, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_7 ? float3(t_7, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -603,7 +623,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
         uint _e20 = child;
         if (((_e20 & NODE_LEAF_BIT) != 0u)) {
             uint _e25 = child;
-            uint count = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+            uint count_1 = ((_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
             uint _e32 = child;
             uint first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
@@ -618,7 +638,7 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 }
                 loop_init = false;
                 uint _e37 = k;
-                if ((_e37 >= count)) {
+                if ((_e37 >= count_1)) {
                     break;
                 }
                 uint _e41 = k;
@@ -758,15 +778,15 @@ BvhNode mesh_node_query(uint m, uint i)
         return bvhnode;
     }
     uint _e55 = reference;
-    uint count_1 = ((_e55 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
-    if ((count_1 == 0u)) {
+    uint count_2 = ((_e55 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK);
+    if ((count_2 == 0u)) {
         const BvhNode bvhnode_1 = ConstructBvhNode(asfloat((2139095039u).xxx), asfloat((4286578687u).xxx), 0u, 0u);
         return bvhnode_1;
     }
     float3 _e73 = lo_1;
     float3 _e74 = hi_1;
     uint _e75 = reference;
-    const BvhNode bvhnode_2 = ConstructBvhNode(_e73, _e74, (_e75 & NODE_FIRST_MASK), count_1);
+    const BvhNode bvhnode_2 = ConstructBvhNode(_e73, _e74, (_e75 & NODE_FIRST_MASK), count_2);
     return bvhnode_2;
 }
 
@@ -824,18 +844,18 @@ Intersection ConstructIntersection(float arg0, float3 arg1, float2 arg2) {
 Intersection intersect_triangle(Ray ray_7, Triangle tri)
 {
     uint3 _e10 = (2139095040u).xxx;
-    float3 dir_2 = ((abs(ray_7.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_7.dir);
-    float3 _e31 = abs(dir_2);
+    float3 dir_4 = ((abs(ray_7.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_7.dir);
+    float3 _e31 = abs(dir_4);
     bool _e38 = (_e31.y > _e31.x);
     uint kz_1 = ((_e31.z > (_e38 ? _e31.y : _e31.x)) ? 2u : (_e38 ? 1u : 0u));
     uint _e45 = ((kz_1 == 2u) ? 0u : (kz_1 + 1u));
     uint _e49 = ((kz_1 >= 1u) ? (kz_1 - 1u) : (kz_1 + 2u));
-    float dz_1 = dir_2[min(uint(kz_1), 2u)];
+    float dz_1 = dir_4[min(uint(kz_1), 2u)];
     bool _e52 = (dz_1 < 0.0);
     uint kx_1 = (_e52 ? _e49 : _e45);
     uint ky_1 = (_e52 ? _e45 : _e49);
-    float sx = (dir_2[min(uint(kx_1), 2u)] / dz_1);
-    float sy = (dir_2[min(uint(ky_1), 2u)] / dz_1);
+    float sx = (dir_4[min(uint(kx_1), 2u)] / dz_1);
+    float sy = (dir_4[min(uint(ky_1), 2u)] / dz_1);
     float sz = (1.0 / dz_1);
     float3 _e62 = (tri.v0_ - ray_7.origin);
     float _e68 = (_e62[min(uint(kx_1), 2u)] - (sx * _e62[min(uint(kz_1), 2u)]));
@@ -851,11 +871,11 @@ Intersection intersect_triangle(Ray ray_7, Triangle tri)
     float w_1 = ((_e77 * _e69) - (_e78 * _e68));
     float det_1 = ((u_1 + v_2) + w_1);
     float _e112 = (1.0 / det_1);
-    float t_6 = ((((u_1 * (sz * _e62[min(uint(kz_1), 2u)])) + (v_2 * (sz * _e71[min(uint(kz_1), 2u)]))) + (w_1 * (sz * _e80[min(uint(kz_1), 2u)]))) * _e112);
-    bool hit_7 = (((((all(((asuint(ray_7.origin) & (2147483647u).xxx) < _e10)) && all(((asuint(ray_7.dir) & (2147483647u).xxx) < _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_6 >= ray_7.tmin) && (t_6 <= ray_7.tmax)));
+    float t_8 = ((((u_1 * (sz * _e62[min(uint(kz_1), 2u)])) + (v_2 * (sz * _e71[min(uint(kz_1), 2u)]))) + (w_1 * (sz * _e80[min(uint(kz_1), 2u)]))) * _e112);
+    bool hit_8 = (((((all(((asuint(ray_7.origin) & (2147483647u).xxx) < _e10)) && all(((asuint(ray_7.dir) & (2147483647u).xxx) < _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_8 >= ray_7.tmin) && (t_8 <= ray_7.tmax)));
     const float3 _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     uint _e137 = F32_INF;
-    const Intersection intersection = ConstructIntersection((hit_7 ? t_6 : asfloat(_e137)), (hit_7 ? _e132 : float3(0.0, 0.0, 1.0)), (hit_7 ? float2((v_2 * _e112), (w_1 * _e112)) : (0.0).xx));
+    const Intersection intersection = ConstructIntersection((hit_8 ? t_8 : asfloat(_e137)), (hit_8 ? _e132 : float3(0.0, 0.0, 1.0)), (hit_8 ? float2((v_2 * _e112), (w_1 * _e112)) : (0.0).xx));
     return intersection;
 }
 
@@ -1258,8 +1278,8 @@ Hit finish_hit(Ray ray_12, Candidate c_1)
     float3 _e147 = hit.geometric_normal;
     hit.front_face = (dot(ray_12.dir, _e147) < 0.0);
     Hit _e151 = hit;
-    const Hit hit_8 = _e151;
-    return hit_8;
+    const Hit hit_9 = _e151;
+    return hit_9;
 }
 
 uint medium_at(float3 p_4, uint exclude)
@@ -1542,49 +1562,24 @@ float3 miss(Ray ray_16)
     return _e9;
 }
 
-float3 ZeroValuefloat3() {
-    return (float3)0;
-}
-
-float3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_17, float t_3, float3 radiance)
-{
-    return ZeroValuefloat3();
-}
-
-float3 through_medium(Ray ray_18, float t_4, float3 radiance_1)
-{
-    if (!(HAS_MEDIA)) {
-        return radiance_1;
-    }
-    if ((ray_18.medium == 0u)) {
-        return radiance_1;
-    }
-    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4((ray_18.medium - 1u)*128+0)), asfloat(instances.Load4((ray_18.medium - 1u)*128+16)), asfloat(instances.Load4((ray_18.medium - 1u)*128+32)), asfloat(instances.Load4((ray_18.medium - 1u)*128+48)), asfloat(instances.Load4((ray_18.medium - 1u)*128+64)), asfloat(instances.Load4((ray_18.medium - 1u)*128+80)), asuint(instances.Load((ray_18.medium - 1u)*128+96)), asuint(instances.Load((ray_18.medium - 1u)*128+100)), asuint(instances.Load((ray_18.medium - 1u)*128+104)), asuint(instances.Load((ray_18.medium - 1u)*128+108)), asuint(instances.Load((ray_18.medium - 1u)*128+112)), asuint(instances.Load((ray_18.medium - 1u)*128+116)), asuint(instances.Load((ray_18.medium - 1u)*128+120)), asuint(instances.Load((ray_18.medium - 1u)*128+124)));
-    if (((inst_8.flags & FLAG_MEDIUM) == 0u)) {
-        return radiance_1;
-    }
-    const float3 _e21 = dispatch_medium(inst_8.material_type, inst_8.material_offset, ray_18, t_4, radiance_1);
-    return _e21;
-}
-
 Lambert ConstructLambert(float3 arg0) {
     Lambert ret = (Lambert)0;
     ret.albedo = arg0;
     return ret;
 }
 
-Lambert load_Lambert(uint offset_8)
+Lambert load_Lambert(uint offset_7)
 {
-    uint _e5 = asuint(params.Load((offset_8 + 0u)*4));
-    uint _e11 = asuint(params.Load((offset_8 + 1u)*4));
-    uint _e17 = asuint(params.Load((offset_8 + 2u)*4));
+    uint _e5 = asuint(params.Load((offset_7 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_7 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_7 + 2u)*4));
     const Lambert lambert = ConstructLambert(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)));
     return lambert;
 }
 
-float3 shading_normal(Ray ray_19, Hit hit_1)
+float3 shading_normal(Ray ray_17, Hit hit_1)
 {
-    float3 ng = faceforward(hit_1.geometric_normal, ray_19.dir, hit_1.geometric_normal);
+    float3 ng = faceforward(hit_1.geometric_normal, ray_17.dir, hit_1.geometric_normal);
     return faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1604,17 +1599,17 @@ PointLight ConstructPointLight(float3 arg0, float3 arg1, float arg2, float arg3,
     return ret;
 }
 
-PointLight load_PointLight(uint offset_9)
+PointLight load_PointLight(uint offset_8)
 {
-    uint _e5 = asuint(params.Load((offset_9 + 0u)*4));
-    uint _e11 = asuint(params.Load((offset_9 + 1u)*4));
-    uint _e17 = asuint(params.Load((offset_9 + 2u)*4));
-    uint _e24 = asuint(params.Load((offset_9 + 4u)*4));
-    uint _e30 = asuint(params.Load((offset_9 + 5u)*4));
-    uint _e36 = asuint(params.Load((offset_9 + 6u)*4));
-    uint _e43 = asuint(params.Load((offset_9 + 7u)*4));
-    uint _e49 = asuint(params.Load((offset_9 + 8u)*4));
-    uint _e55 = asuint(params.Load((offset_9 + 9u)*4));
+    uint _e5 = asuint(params.Load((offset_8 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_8 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_8 + 2u)*4));
+    uint _e24 = asuint(params.Load((offset_8 + 4u)*4));
+    uint _e30 = asuint(params.Load((offset_8 + 5u)*4));
+    uint _e36 = asuint(params.Load((offset_8 + 6u)*4));
+    uint _e43 = asuint(params.Load((offset_8 + 7u)*4));
+    uint _e49 = asuint(params.Load((offset_8 + 8u)*4));
+    uint _e55 = asuint(params.Load((offset_8 + 9u)*4));
     const PointLight pointlight = ConstructPointLight(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), float3(asfloat(_e24), asfloat(_e30), asfloat(_e36)), asfloat(_e43), asfloat(_e49), asfloat(_e55));
     return pointlight;
 }
@@ -1637,7 +1632,7 @@ float3 offset_origin(float3 p_5, float3 n_4, float error)
     return _e17;
 }
 
-float shadow_query(float3 position, float3 normal, float3 dir, float dist)
+Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
 {
     float3 n_5 = (float3)0;
     float tmax_5 = (float)0;
@@ -1650,9 +1645,9 @@ float shadow_query(float3 position, float3 normal, float3 dir, float dist)
     }
     float3 a_9 = abs(position);
     float _e13 = hit_error;
-    float error_2 = max(_e13, (GAMMA_4_ * max(max(a_9.x, a_9.y), a_9.z)));
+    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_9.x, a_9.y), a_9.z)));
     float3 _e22 = n_5;
-    const float3 _e23 = offset_origin(position, _e22, error_2);
+    const float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_5 = asfloat(_e25);
     uint _e29 = F32_INF;
@@ -1664,9 +1659,15 @@ float shadow_query(float3 position, float3 normal, float3 dir, float dist)
         tmax_5 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_5;
-    Ray ray_29 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
-    const Candidate _e65 = intersect_scene(ray_29, true);
-    return ((_e65.slot != NO_HIT) ? 0.0 : 1.0);
+    const Ray ray_29 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_29;
+}
+
+float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
+{
+    const Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
+    const Candidate _e6 = intersect_scene(_e4, true);
+    return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
 LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2) {
@@ -1677,33 +1678,33 @@ LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2) {
     return ret;
 }
 
-LightSample point_light(PointLight l, float3 position_1, float3 normal_1)
+LightSample point_light(PointLight l, float3 position_2, float3 normal_2)
 {
     float strength = (float)0;
 
-    float3 to_light = (l.position - position_1);
-    float dist_1 = length(to_light);
-    float3 dir_3 = (to_light / (max(dist_1, 1e-20)).xxx);
-    strength = (l.intensity / max((dist_1 * dist_1), 1e-20));
+    float3 to_light = (l.position - position_2);
+    float dist_2 = length(to_light);
+    float3 dir_5 = (to_light / (max(dist_2, 1e-20)).xxx);
+    strength = (l.intensity / max((dist_2 * dist_2), 1e-20));
     if ((l.range > 0.0)) {
         float _e19 = strength;
-        strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_1)));
+        strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_2)));
     }
-    const float _e26 = shadow_query(position_1, normal_1, dir_3, dist_1);
+    const float _e26 = shadow_query(position_2, normal_2, dir_5, dist_2);
     float _e28 = strength;
-    const LightSample lightsample = ConstructLightSample(dir_3, dist_1, ((l.color * (_e28).xxx) * (_e26).xxx));
+    const LightSample lightsample = ConstructLightSample(dir_5, dist_2, ((l.color * (_e28).xxx) * (_e26).xxx));
     return lightsample;
 }
 
-LightSample dispatch_light(uint type_id_4, uint offset_10, float3 position_2, float3 normal_2)
+LightSample dispatch_light(uint type_id_3, uint offset_9, float3 position_3, float3 normal_3)
 {
-    const PointLight _e3 = load_PointLight(offset_10);
-    const LightSample _e4 = point_light(_e3, position_2, normal_2);
+    const PointLight _e3 = load_PointLight(offset_9);
+    const LightSample _e4 = point_light(_e3, position_3, normal_3);
     const LightSample lightsample_1 = _e4;
     return lightsample_1;
 }
 
-LightSample sample_light_query(uint i_3, float3 position_3, float3 normal_3)
+LightSample sample_light_query(uint i_3, float3 position_4, float3 normal_4)
 {
     FrameUniforms frame_4 = frame;
     if ((i_3 >= frame_4.light_count)) {
@@ -1713,17 +1714,17 @@ LightSample sample_light_query(uint i_3, float3 position_3, float3 normal_3)
     uint entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
     uint _e21 = asuint(params.Load(entry*4));
     uint _e26 = asuint(params.Load((entry + 1u)*4));
-    const LightSample _e27 = dispatch_light(_e21, _e26, position_3, normal_3);
+    const LightSample _e27 = dispatch_light(_e21, _e26, position_4, normal_4);
     const LightSample lightsample_3 = _e27;
     return lightsample_3;
 }
 
-float3 lambert_shade(Lambert m_2, Ray ray_20, Hit hit_2)
+float3 lambert_shade(Lambert m_2, Ray ray_18, Hit hit_2)
 {
     float3 color = (float3)0;
     uint i_4 = (uint)0;
 
-    const float3 _e3 = shading_normal(ray_20, hit_2);
+    const float3 _e3 = shading_normal(ray_18, hit_2);
     color = (0.0).xxx;
     const uint _e8 = light_count_query();
     i_4 = 0u;
@@ -1750,19 +1751,44 @@ float3 lambert_shade(Lambert m_2, Ray ray_20, Hit hit_2)
     return _e33;
 }
 
-float3 dispatch_closest_hit(uint type_id_5, uint offset_11, Ray ray_21, Hit hit_3, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_19, Hit hit_3, float3 secondary)
 {
-    const Lambert _e3 = load_Lambert(offset_11);
-    const float3 _e4 = lambert_shade(_e3, ray_21, hit_3);
+    const Lambert _e3 = load_Lambert(offset_10);
+    const float3 _e4 = lambert_shade(_e3, ray_19, hit_3);
     return _e4;
 }
 
-float3 shade_direct(Ray ray_22, Candidate c_3)
+float3 shade_direct(Ray ray_20, Candidate c_3)
 {
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(c_3.slot*128+0)), asfloat(instances.Load4(c_3.slot*128+16)), asfloat(instances.Load4(c_3.slot*128+32)), asfloat(instances.Load4(c_3.slot*128+48)), asfloat(instances.Load4(c_3.slot*128+64)), asfloat(instances.Load4(c_3.slot*128+80)), asuint(instances.Load(c_3.slot*128+96)), asuint(instances.Load(c_3.slot*128+100)), asuint(instances.Load(c_3.slot*128+104)), asuint(instances.Load(c_3.slot*128+108)), asuint(instances.Load(c_3.slot*128+112)), asuint(instances.Load(c_3.slot*128+116)), asuint(instances.Load(c_3.slot*128+120)), asuint(instances.Load(c_3.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_22, c_3);
-    const float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_22, _e6, (0.0).xxx);
+    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_3.slot*128+0)), asfloat(instances.Load4(c_3.slot*128+16)), asfloat(instances.Load4(c_3.slot*128+32)), asfloat(instances.Load4(c_3.slot*128+48)), asfloat(instances.Load4(c_3.slot*128+64)), asfloat(instances.Load4(c_3.slot*128+80)), asuint(instances.Load(c_3.slot*128+96)), asuint(instances.Load(c_3.slot*128+100)), asuint(instances.Load(c_3.slot*128+104)), asuint(instances.Load(c_3.slot*128+108)), asuint(instances.Load(c_3.slot*128+112)), asuint(instances.Load(c_3.slot*128+116)), asuint(instances.Load(c_3.slot*128+120)), asuint(instances.Load(c_3.slot*128+124)));
+    const Hit _e6 = finish_hit(ray_20, c_3);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, (0.0).xxx);
     return _e11;
+}
+
+float3 ZeroValuefloat3() {
+    return (float3)0;
+}
+
+float3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_21, float t_3, float3 radiance)
+{
+    return ZeroValuefloat3();
+}
+
+float3 through_medium(Ray ray_22, float t_4, float3 radiance_1)
+{
+    if (!(HAS_MEDIA)) {
+        return radiance_1;
+    }
+    if ((ray_22.medium == 0u)) {
+        return radiance_1;
+    }
+    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_22.medium - 1u)*128+0)), asfloat(instances.Load4((ray_22.medium - 1u)*128+16)), asfloat(instances.Load4((ray_22.medium - 1u)*128+32)), asfloat(instances.Load4((ray_22.medium - 1u)*128+48)), asfloat(instances.Load4((ray_22.medium - 1u)*128+64)), asfloat(instances.Load4((ray_22.medium - 1u)*128+80)), asuint(instances.Load((ray_22.medium - 1u)*128+96)), asuint(instances.Load((ray_22.medium - 1u)*128+100)), asuint(instances.Load((ray_22.medium - 1u)*128+104)), asuint(instances.Load((ray_22.medium - 1u)*128+108)), asuint(instances.Load((ray_22.medium - 1u)*128+112)), asuint(instances.Load((ray_22.medium - 1u)*128+116)), asuint(instances.Load((ray_22.medium - 1u)*128+120)), asuint(instances.Load((ray_22.medium - 1u)*128+124)));
+    if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
+        return radiance_1;
+    }
+    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_22, t_4, radiance_1);
+    return _e21;
 }
 
 void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_23, Hit hit_4)
@@ -1770,19 +1796,25 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_23, Hit hit
     return;
 }
 
-float3 spawn_origin(Hit hit_5, float error_1, float3 dir_1)
+float3 spawn_origin_at(float3 position_5, float3 normal_5, float error_1, float3 dir_2)
 {
     float3 n_6 = (float3)0;
 
-    n_6 = hit_5.geometric_normal;
+    n_6 = normal_5;
     float3 _e5 = n_6;
-    if ((dot(dir_1, _e5) < 0.0)) {
+    if ((dot(dir_2, _e5) < 0.0)) {
         float3 _e9 = n_6;
         n_6 = -(_e9);
     }
-    float3 _e12 = n_6;
-    const float3 _e13 = offset_origin(hit_5.position, _e12, error_1);
-    return _e13;
+    float3 _e11 = n_6;
+    const float3 _e12 = offset_origin(position_5, _e11, error_1);
+    return _e12;
+}
+
+float3 spawn_origin(Hit hit_5, float error_2, float3 dir_3)
+{
+    const float3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_3);
+    return _e5;
 }
 
 Frame ConstructFrame(Ray arg0, Hit arg1, float arg2, uint arg3, float3 arg4, float3 arg5[1], float3 arg6[1], uint arg7, uint arg8) {
@@ -1811,68 +1843,125 @@ ret_ZeroValuearray1_float3_ ZeroValuearray1_float3_() {
 
 float3 trace(Ray camera_ray)
 {
+    float3 radiance_2 = (float3)0;
+    float t_5 = (float)0;
     Frame stack_1[4] = (Frame[4])0;
     uint depth = (uint)0;
     Ray ray_24 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
+    Ray s_ray = (Ray)0;
+    Candidate s_c = (Candidate)0;
+    Hit s_hit = (Hit)0;
+    float s_error = (float)0;
+    float3 s_sum = (float3)0;
+    bool fresh = (bool)0;
+    bool waiting = (bool)0;
     bool pushed = (bool)0;
+    float3 radiance_3 = (float3)0;
+    float t_6 = (float)0;
+    Hit hit_6 = (Hit)0;
     Frame f = (Frame)0;
     uint i_5 = (uint)0;
     uint medium = (uint)0;
 
     if (!(HAS_SECONDARY_RAYS)) {
         const Candidate _e4 = intersect_scene(camera_ray, false);
+        radiance_2 = (0.0).xxx;
+        uint _e9 = F32_INF;
+        t_5 = asfloat(_e9);
         if ((_e4.slot == NO_HIT)) {
             hit_error = 0.0;
-            uint _e11 = F32_INF;
-            const float3 _e13 = miss(camera_ray);
-            const float3 _e14 = through_medium(camera_ray, asfloat(_e11), _e13);
-            return _e14;
+            const float3 _e17 = miss(camera_ray);
+            radiance_2 = _e17;
+        } else {
+            const float3 _e18 = shade_direct(camera_ray, _e4);
+            radiance_2 = _e18;
+            t_5 = _e4.t;
         }
-        const float3 _e16 = shade_direct(camera_ray, _e4);
-        const float3 _e17 = through_medium(camera_ray, _e4.t, _e16);
-        return _e17;
+        float _e20 = t_5;
+        float3 _e21 = radiance_2;
+        const float3 _e22 = through_medium(camera_ray, _e20, _e21);
+        return _e22;
     }
     stack_1 = ZeroValuearray4_Frame_();
     depth = 0u;
     ray_24 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
+    s_ray = camera_ray;
+    uint _e35 = F32_INF;
+    const Candidate _e37 = no_candidate(asfloat(_e35));
+    s_c = _e37;
+    s_hit = ConstructHit((0.0).xxx, 0.0, (0.0).xxx, (0.0).xxx, (0.0).xx, true, 0u, 0u);
+    s_error = 0.0;
+    s_sum = (0.0).xxx;
+    fresh = false;
+    waiting = false;
     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        bool _e28 = have_value;
-        if (!(_e28)) {
-            Ray _e30 = ray_24;
-            const Candidate _e32 = intersect_scene(_e30, false);
-            if ((_e32.slot == NO_HIT)) {
+        bool _e62 = have_value;
+        bool _e64 = waiting;
+        if ((!(_e62) && !(_e64))) {
+            Ray _e67 = ray_24;
+            const Candidate _e69 = intersect_scene(_e67, false);
+            s_c = _e69;
+            Ray _e70 = ray_24;
+            s_ray = _e70;
+            s_sum = (0.0).xxx;
+            fresh = true;
+            waiting = true;
+        }
+        bool _e75 = waiting;
+        if (_e75) {
+            waiting = false;
+            pushed = false;
+            radiance_3 = (0.0).xxx;
+            uint _e83 = F32_INF;
+            t_6 = asfloat(_e83);
+            uint _e87 = s_c.slot;
+            if ((_e87 == NO_HIT)) {
                 hit_error = 0.0;
-                Ray _e38 = ray_24;
-                uint _e40 = F32_INF;
-                Ray _e42 = ray_24;
-                const float3 _e43 = miss(_e42);
-                const float3 _e44 = through_medium(_e38, asfloat(_e40), _e43);
-                value = _e44;
-                have_value = true;
+                Ray _e92 = s_ray;
+                const float3 _e93 = miss(_e92);
+                radiance_3 = _e93;
             } else {
-                GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e32.slot*128+0)), asfloat(instances.Load4(_e32.slot*128+16)), asfloat(instances.Load4(_e32.slot*128+32)), asfloat(instances.Load4(_e32.slot*128+48)), asfloat(instances.Load4(_e32.slot*128+64)), asfloat(instances.Load4(_e32.slot*128+80)), asuint(instances.Load(_e32.slot*128+96)), asuint(instances.Load(_e32.slot*128+100)), asuint(instances.Load(_e32.slot*128+104)), asuint(instances.Load(_e32.slot*128+108)), asuint(instances.Load(_e32.slot*128+112)), asuint(instances.Load(_e32.slot*128+116)), asuint(instances.Load(_e32.slot*128+120)), asuint(instances.Load(_e32.slot*128+124)));
-                Ray _e50 = ray_24;
-                const Hit _e51 = finish_hit(_e50, _e32);
-                float error_3 = hit_error;
-                pushed = false;
-                uint _e62 = ray_24.depth;
-                uint _e66 = depth;
-                if (((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e62 < MAX_DEPTH)) && (_e66 < STACK_SIZE))) {
+                uint _e95 = s_c.slot;
+                GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e95*128+0)), asfloat(instances.Load4(_e95*128+16)), asfloat(instances.Load4(_e95*128+32)), asfloat(instances.Load4(_e95*128+48)), asfloat(instances.Load4(_e95*128+64)), asfloat(instances.Load4(_e95*128+80)), asuint(instances.Load(_e95*128+96)), asuint(instances.Load(_e95*128+100)), asuint(instances.Load(_e95*128+104)), asuint(instances.Load(_e95*128+108)), asuint(instances.Load(_e95*128+112)), asuint(instances.Load(_e95*128+116)), asuint(instances.Load(_e95*128+120)), asuint(instances.Load(_e95*128+124)));
+                Hit _e99 = s_hit;
+                hit_6 = _e99;
+                bool _e101 = fresh;
+                if (_e101) {
+                    Ray _e102 = s_ray;
+                    Candidate _e103 = s_c;
+                    const Hit _e104 = finish_hit(_e102, _e103);
+                    hit_6 = _e104;
+                    float _e106 = hit_error;
+                    s_error = _e106;
+                } else {
+                    float _e107 = s_error;
+                    hit_error = _e107;
+                }
+                float _e110 = hit_6.t;
+                t_6 = _e110;
+                bool _e111 = fresh;
+                uint _e119 = s_ray.depth;
+                uint _e123 = depth;
+                if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
                     spawn_count = 0u;
-                    Ray _e74 = ray_24;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e74, _e51);
-                    uint _e76 = spawn_count;
-                    uint n_10 = min(min(_e76, 1u), MAX_SPAWN);
+                    Ray _e131 = s_ray;
+                    Hit _e132 = hit_6;
+                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
+                    uint _e134 = spawn_count;
+                    uint n_10 = min(min(_e134, 1u), MAX_SPAWN);
                     if ((n_10 > 0u)) {
-                        Ray _e83 = ray_24;
-                        f = ConstructFrame(_e83, _e51, error_3, _e32.slot, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_10, 0u);
+                        Ray _e141 = s_ray;
+                        Hit _e142 = hit_6;
+                        float _e143 = s_error;
+                        uint _e145 = s_c.slot;
+                        f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_10, 0u);
                         i_5 = 0u;
                         uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
                         bool loop_init_4 = true;
@@ -1880,90 +1969,97 @@ float3 trace(Ray camera_ray)
                             if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
                             loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                             if (!loop_init_4) {
-                                uint _e114 = i_5;
-                                i_5 = (_e114 + 1u);
+                                uint _e175 = i_5;
+                                i_5 = (_e175 + 1u);
                             }
                             loop_init_4 = false;
-                            uint _e94 = i_5;
-                            if ((_e94 >= n_10)) {
+                            uint _e155 = i_5;
+                            if ((_e155 >= n_10)) {
                                 break;
                             }
-                            uint _e97 = i_5;
-                            uint _e101 = i_5;
-                            float3 _e104 = spawn_dirs[min(uint(_e101), 0u)];
-                            f.dirs[min(uint(min(_e97, 0u)), 0u)] = _e104;
-                            uint _e106 = i_5;
-                            uint _e110 = i_5;
-                            float3 _e113 = spawn_weights[min(uint(_e110), 0u)];
-                            f.weights[min(uint(min(_e106, 0u)), 0u)] = _e113;
+                            uint _e158 = i_5;
+                            uint _e162 = i_5;
+                            float3 _e165 = spawn_dirs[min(uint(_e162), 0u)];
+                            f.dirs[min(uint(min(_e158, 0u)), 0u)] = _e165;
+                            uint _e167 = i_5;
+                            uint _e171 = i_5;
+                            float3 _e174 = spawn_weights[min(uint(_e171), 0u)];
+                            f.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
                         }
-                        uint _e117 = depth;
-                        Frame _e121 = f;
-                        stack_1[min(uint(min(_e117, 3u)), 3u)] = _e121;
-                        uint _e122 = depth;
-                        depth = (_e122 + 1u);
+                        uint _e178 = depth;
+                        Frame _e182 = f;
+                        stack_1[min(uint(min(_e178, 3u)), 3u)] = _e182;
+                        uint _e183 = depth;
+                        depth = (_e183 + 1u);
                         pushed = true;
                     }
                 }
-                bool _e126 = pushed;
-                if (!(_e126)) {
-                    Ray _e130 = ray_24;
-                    const float3 _e133 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e130, _e51, (0.0).xxx);
-                    Ray _e134 = ray_24;
-                    const float3 _e136 = through_medium(_e134, _e32.t, _e133);
-                    value = _e136;
-                    have_value = true;
+                bool _e187 = pushed;
+                if (!(_e187)) {
+                    Ray _e191 = s_ray;
+                    Hit _e192 = hit_6;
+                    float3 _e193 = s_sum;
+                    const float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
+                    radiance_3 = _e194;
                 }
             }
-        }
-        bool _e138 = have_value;
-        if (_e138) {
-            uint _e139 = depth;
-            if ((_e139 == 0u)) {
-                float3 _e142 = value;
-                return _e142;
+            bool _e195 = pushed;
+            if (!(_e195)) {
+                Ray _e197 = s_ray;
+                float _e198 = t_6;
+                float3 _e199 = radiance_3;
+                const float3 _e200 = through_medium(_e197, _e198, _e199);
+                value = _e200;
+                have_value = true;
             }
-            uint _e143 = depth;
-            uint top = (_e143 - 1u);
-            uint _e150 = stack_1[min(uint(min(top, 3u)), 3u)].next;
-            uint child_2 = (_e150 - 1u);
-            float3 _e157 = stack_1[min(uint(min(top, 3u)), 3u)].sum;
-            float3 _e165 = stack_1[min(uint(min(top, 3u)), 3u)].weights[min(uint(min(child_2, 0u)), 0u)];
-            float3 _e166 = value;
-            stack_1[min(uint(min(top, 3u)), 3u)].sum = (_e157 + (_e165 * _e166));
+        }
+        bool _e202 = have_value;
+        if (_e202) {
+            uint _e203 = depth;
+            if ((_e203 == 0u)) {
+                float3 _e206 = value;
+                return _e206;
+            }
+            uint _e207 = depth;
+            uint top = (_e207 - 1u);
+            uint _e214 = stack_1[min(uint(min(top, 3u)), 3u)].next;
+            uint child_2 = (_e214 - 1u);
+            float3 _e221 = stack_1[min(uint(min(top, 3u)), 3u)].sum;
+            float3 _e229 = stack_1[min(uint(min(top, 3u)), 3u)].weights[min(uint(min(child_2, 0u)), 0u)];
+            float3 _e230 = value;
+            stack_1[min(uint(min(top, 3u)), 3u)].sum = (_e221 + (_e229 * _e230));
             have_value = false;
         }
-        uint _e170 = depth;
-        uint top_1 = (_e170 - 1u);
-        uint _e177 = stack_1[min(uint(min(top_1, 3u)), 3u)].next;
-        uint _e182 = stack_1[min(uint(min(top_1, 3u)), 3u)].count;
-        if ((_e177 < _e182)) {
+        uint _e234 = depth;
+        uint top_1 = (_e234 - 1u);
+        uint _e241 = stack_1[min(uint(min(top_1, 3u)), 3u)].next;
+        uint _e246 = stack_1[min(uint(min(top_1, 3u)), 3u)].count;
+        if ((_e241 < _e246)) {
             uint i_6 = stack_1[min(uint(min(top_1, 3u)), 3u)].next;
             stack_1[min(uint(min(top_1, 3u)), 3u)].next = (i_6 + 1u);
             Ray parent = stack_1[min(uint(min(top_1, 3u)), 3u)].ray;
-            Hit hit_9 = stack_1[min(uint(min(top_1, 3u)), 3u)].hit;
-            float3 dir_4 = stack_1[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_6, 0u)), 0u)];
+            Hit hit_10 = stack_1[min(uint(min(top_1, 3u)), 3u)].hit;
+            float3 dir_6 = stack_1[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_6, 0u)), 0u)];
             medium = parent.medium;
-            float _e219 = stack_1[min(uint(min(top_1, 3u)), 3u)].error;
-            const float3 _e220 = spawn_origin(hit_9, _e219, dir_4);
-            uint _e223 = F32_INF;
-            uint _e229 = medium;
-            ray_24 = ConstructRay(_e220, 0.0, dir_4, asfloat(_e223), (parent.depth + 1u), RAY_SECONDARY, _e229);
+            float _e283 = stack_1[min(uint(min(top_1, 3u)), 3u)].error;
+            const float3 _e284 = spawn_origin(hit_10, _e283, dir_6);
+            uint _e287 = F32_INF;
+            uint _e293 = medium;
+            ray_24 = ConstructRay(_e284, 0.0, dir_6, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
-            uint _e235 = stack_1[min(uint(min(top_1, 3u)), 3u)].slot;
-            GpuInstance inst_11 = ConstructGpuInstance(asfloat(instances.Load4(_e235*128+0)), asfloat(instances.Load4(_e235*128+16)), asfloat(instances.Load4(_e235*128+32)), asfloat(instances.Load4(_e235*128+48)), asfloat(instances.Load4(_e235*128+64)), asfloat(instances.Load4(_e235*128+80)), asuint(instances.Load(_e235*128+96)), asuint(instances.Load(_e235*128+100)), asuint(instances.Load(_e235*128+104)), asuint(instances.Load(_e235*128+108)), asuint(instances.Load(_e235*128+112)), asuint(instances.Load(_e235*128+116)), asuint(instances.Load(_e235*128+120)), asuint(instances.Load(_e235*128+124)));
-            float _e243 = stack_1[min(uint(min(top_1, 3u)), 3u)].error;
-            hit_error = _e243;
-            Ray _e251 = stack_1[min(uint(min(top_1, 3u)), 3u)].ray;
-            Hit _e256 = stack_1[min(uint(min(top_1, 3u)), 3u)].hit;
-            float3 _e261 = stack_1[min(uint(min(top_1, 3u)), 3u)].sum;
-            const float3 _e262 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e251, _e256, _e261);
-            Ray _e267 = stack_1[min(uint(min(top_1, 3u)), 3u)].ray;
-            float _e273 = stack_1[min(uint(min(top_1, 3u)), 3u)].hit.t;
-            const float3 _e274 = through_medium(_e267, _e273, _e262);
-            value = _e274;
+            Ray _e299 = stack_1[min(uint(min(top_1, 3u)), 3u)].ray;
+            s_ray = _e299;
+            Hit _e304 = stack_1[min(uint(min(top_1, 3u)), 3u)].hit;
+            s_hit = _e304;
+            float _e309 = stack_1[min(uint(min(top_1, 3u)), 3u)].error;
+            s_error = _e309;
+            uint _e315 = stack_1[min(uint(min(top_1, 3u)), 3u)].slot;
+            s_c.slot = _e315;
+            float3 _e320 = stack_1[min(uint(min(top_1, 3u)), 3u)].sum;
+            s_sum = _e320;
+            fresh = false;
+            waiting = true;
             depth = top_1;
-            have_value = true;
         }
     }
     return ZeroValuefloat3();
@@ -1988,7 +2084,7 @@ void render_pixel(uint2 pixel_3)
     Ray ray_25 = (Ray)0;
 
     FrameUniforms frame_5 = frame;
-    TileParams tile_1 = tile;
+    TileParams tile_2 = tile;
     sum = (0.0).xxx;
     bad = 0u;
     uint end_2 = frame_5.samples_per_pass;
@@ -2008,7 +2104,7 @@ void render_pixel(uint2 pixel_3)
             break;
         }
         uint _e18 = s_2;
-        uint sample_3 = ((tile_1.frame * frame_5.samples_per_pass) + _e18);
+        uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
         ray_25 = _e23;
@@ -2036,11 +2132,11 @@ void render_pixel(uint2 pixel_3)
     float3 _e59 = sum;
     float4 _e62 = float4(_e59, float(frame_5.samples_per_pass));
     uint _e63 = bad;
-    if ((tile_1.frame == 0u)) {
-        accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint(_e62));
+    if ((tile_2.frame == 0u)) {
+        accum.Store4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16, asuint(_e62));
     } else {
-        float4 _e69 = asfloat(accum.Load4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16));
-        accum.Store4(((pixel_3.y * tile_1.image_size.x) + pixel_3.x)*16, asuint((_e69 + _e62)));
+        float4 _e69 = asfloat(accum.Load4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16));
+        accum.Store4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16, asuint((_e69 + _e62)));
     }
     if ((_e63 > 0u)) {
         counters.InterlockedAdd(0, _e63);
@@ -2048,27 +2144,14 @@ void render_pixel(uint2 pixel_3)
     return;
 }
 
-void render_invocation(uint2 id)
+void render_invocation(uint2 id_1)
 {
-    TileParams tile_2 = tile;
-    uint2 size_1 = uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
-    const uint2 _e11 = div_vec2u(((tile_2.extent + size_1) - (1u).xx), size_1);
-    uint count_2 = (_e11.x * _e11.y);
-    if ((count_2 == 0u)) {
+    TileParams tile_3 = tile;
+    const uint2 _e3 = scattered_local(id_1);
+    if (any((_e3 >= tile_3.extent))) {
         return;
     }
-    const uint2 _e17 = div_vec2u(id, size_1);
-    uint order = ((_e17.y * _e11.x) + _e17.x);
-    const uint _e24 = rem_u32_(SCATTER, count_2);
-    const uint _e26 = rem_u32_((order * _e24), count_2);
-    const uint _e28 = rem_u32_(_e26, _e11.x);
-    const uint _e30 = div_u32_(_e26, _e11.x);
-    const uint2 _e33 = rem_vec2u(id, size_1);
-    uint2 local = ((uint2(_e28, _e30) * size_1) + _e33);
-    if (any((local >= tile_2.extent))) {
-        return;
-    }
-    render_pixel((tile_2.origin + local));
+    render_pixel((tile_3.origin + _e3));
     return;
 }
 
