@@ -77,7 +77,7 @@ impl ExecModel {
     /// The model a scene runs with: `choice` (the command line's `--exec`) if given, else the
     /// scene's `exec` setting (`EXEC_MEGAKERNEL` 1, `EXEC_WAVEFRONT` 2), else, for `EXEC_AUTO`,
     /// `auto` (`KernelOptions::auto`: the megakernel, except under `rtc watch`). ARCHITECTURE.md,
-    /// "Execution models", has the figures that decided it.
+    /// "Decisions", has the figures that decided it.
     pub fn resolve(choice: Option<ExecModel>, setting: u32, auto: ExecModel) -> ExecModel {
         match (choice, setting) {
             (Some(m), _) => m,
