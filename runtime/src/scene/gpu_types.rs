@@ -512,7 +512,7 @@ mod tests {
     #[test]
     fn element_sizes() {
         let size = |name: &str| element_size(abi::binding(name).expect("binding").element);
-        assert_eq!(size("frame"), 52);
+        assert_eq!(size("frame"), 56);
         assert_eq!(size("tile"), 32);
         assert_eq!(size("nodes"), 32);
         assert_eq!(size("instances"), 128);
@@ -549,6 +549,7 @@ mod tests {
             ),
             ("COUNTER_NONFINITE", 0),
             ("COUNTER_RAYS", 1),
+            ("COUNTER_SHADOW_OVERFLOW", 3),
             (
                 "COUNTER_WORDS",
                 (crate::scene::upload_for_tests::COUNTER_BYTES / 4) as u32,
