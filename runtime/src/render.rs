@@ -307,7 +307,8 @@ fn max_rounds(compiled: &CompiledScene) -> u32 {
     u32::try_from(rounds.min(1 << 24)).unwrap_or(1 << 24)
 }
 
-/// The wavefront model's tiles: the adapter's tiles, no larger than the image (rounded up to
+/// The wavefront model's tiles (dispatched one at a time, whatever `tiles_per_batch` says): the
+/// adapter's tiles, no larger than the image (rounded up to
 /// whole 8 x 8 workgroups), halved along their longer side until one tile's path records
 /// (`path_words` words a pixel) fit one storage binding of at most `max_binding` bytes.
 fn wavefront_tiles(
@@ -328,7 +329,6 @@ fn wavefront_tiles(
             tiles.tile_height = (tiles.tile_height / 2).max(8);
         }
     }
-    tiles.tiles_per_batch = 1;
     tiles
 }
 
@@ -365,8 +365,6 @@ fn declared_bindings(
 pub struct SceneKernels {
     /// The render kernel (megakernel), or the stage kernels in `wavefront::STAGES` order.
     pub render: Vec<Kernel>,
-    /// The execution model `render` is for.
-    pub exec: ExecModel,
     /// The bounds kernel and the ABI bindings it declares, when it was asked for.
     pub bounds: Option<(Kernel, Vec<&'static abi::BindingDesc>)>,
     /// Every ABI binding the render or stage kernels declare (the bounds kernel's are in
@@ -473,7 +471,6 @@ pub fn create_scene_kernels(
     }
     Ok(SceneKernels {
         render,
-        exec,
         bounds,
         bindings,
     })

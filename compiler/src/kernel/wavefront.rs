@@ -99,43 +99,73 @@ pub const CANDIDATE_WORDS: u32 = 8;
 /// Words of a recorded shadow query: origin, dir, tmax.
 pub const QUERY_WORDS: u32 = 7;
 
-/// Words of one secondary-ray frame: ray, candidate, the hit's position and geometric normal and
-/// its position error (7), sum (3), count, next, then `max_spawn` directions and weights (3 words
-/// each).
-pub fn frame_words(c: &KernelConfig) -> u32 {
-    RAY_WORDS + CANDIDATE_WORDS + 12 + 6 * c.max_spawn
+/// Lays out `fields` (name, words) one after another: each name with its word offset, and the
+/// total.
+fn layout(fields: &[(&'static str, u32)]) -> (Vec<(&'static str, u32)>, u32) {
+    let mut at = 0;
+    let offsets = fields
+        .iter()
+        .map(|&(name, words)| {
+            let offset = at;
+            at += words;
+            (name, offset)
+        })
+        .collect();
+    (offsets, at)
 }
 
-/// The named word offsets of the path record and its size, as `(name, value)`: the constants
-/// `rtc:config` declares for `stdlib/kernel/`.
+/// The word offsets of one secondary-ray frame and its size: ray, candidate, the hit's position,
+/// geometric normal and position error (what launching a spawned ray needs), the children's
+/// weighted sum, the spawned-ray count, the next one to launch, then `max_spawn` directions and
+/// `max_spawn` weights (3 words each).
+fn frame_layout(c: &KernelConfig) -> (Vec<(&'static str, u32)>, u32) {
+    layout(&[
+        ("FRAME_RAY", RAY_WORDS),
+        ("FRAME_CANDIDATE", CANDIDATE_WORDS),
+        ("FRAME_POSITION", 3),
+        ("FRAME_NORMAL", 3),
+        ("FRAME_ERROR", 1),
+        ("FRAME_SUM", 3),
+        ("FRAME_COUNT", 1),
+        ("FRAME_NEXT", 1),
+        ("FRAME_DIRS", 3 * c.max_spawn),
+        ("FRAME_WEIGHTS", 3 * c.max_spawn),
+    ])
+}
+
+/// Words of one secondary-ray frame ([`frame_layout`]).
+pub fn frame_words(c: &KernelConfig) -> u32 {
+    frame_layout(c).1
+}
+
+/// The named word offsets of the path record and of a stack frame in it, and their sizes, as
+/// `(name, value)`: the constants `rtc:config` declares for `stdlib/kernel/`.
 pub fn config_constants(c: &KernelConfig) -> Vec<(&'static str, u32)> {
-    let mut out = Vec::new();
-    let mut at = 0u32;
-    let mut field = |name: &'static str, words: u32, out: &mut Vec<(&'static str, u32)>| {
-        out.push((name, at));
-        at += words;
-    };
-    field("PATH_STATUS", 1, &mut out);
-    field("PATH_SAMPLE", 1, &mut out);
-    field("PATH_RNG", 1, &mut out);
-    field("PATH_DEPTH", 1, &mut out);
-    field("PATH_SUM", 3, &mut out);
-    field("PATH_BAD", 1, &mut out);
-    field("PATH_RAYS", 1, &mut out);
-    field("PATH_RAY", RAY_WORDS, &mut out);
-    field("PATH_CANDIDATE", CANDIDATE_WORDS, &mut out);
-    field("PATH_SQ_RESOLVED", 1, &mut out);
-    field("PATH_SQ_RECORDED", 1, &mut out);
-    field("PATH_SQ_BITS", 1, &mut out);
-    field("PATH_SQ", SHADOW_QUERIES * QUERY_WORDS, &mut out);
+    let (frame, frame_words) = frame_layout(c);
     let frames = if c.has_secondary_rays {
-        c.stack_size * frame_words(c)
+        c.stack_size * frame_words
     } else {
         0
     };
-    field("PATH_FRAMES", frames, &mut out);
-    out.push(("PATH_WORDS", at));
-    out.push(("FRAME_WORDS", frame_words(c)));
+    let (mut out, path_words) = layout(&[
+        ("PATH_STATUS", 1),
+        ("PATH_SAMPLE", 1),
+        ("PATH_RNG", 1),
+        ("PATH_DEPTH", 1),
+        ("PATH_SUM", 3),
+        ("PATH_BAD", 1),
+        ("PATH_RAYS", 1),
+        ("PATH_RAY", RAY_WORDS),
+        ("PATH_CANDIDATE", CANDIDATE_WORDS),
+        ("PATH_SQ_RESOLVED", 1),
+        ("PATH_SQ_RECORDED", 1),
+        ("PATH_SQ_BITS", 1),
+        ("PATH_SQ", SHADOW_QUERIES * QUERY_WORDS),
+        ("PATH_FRAMES", frames),
+    ]);
+    out.push(("PATH_WORDS", path_words));
+    out.extend(frame);
+    out.push(("FRAME_WORDS", frame_words));
     out.push(("SHADOW_QUERIES", SHADOW_QUERIES));
     out.push(("RAY_WORDS", RAY_WORDS));
     out.push(("CANDIDATE_WORDS", CANDIDATE_WORDS));

@@ -304,44 +304,16 @@ impl TileDispatcher {
             return Ok(report);
         }
 
-        let limits = gpu.limits();
-        let [wx, wy, _] = kernel.workgroup_size();
-        let groups_x = config.tile_width.div_ceil(wx.max(1));
-        let groups_y = config.tile_height.div_ceil(wy.max(1));
-        for count in [groups_x, groups_y] {
-            if count > limits.max_compute_workgroups_per_dimension {
-                return Err(DispatchError::TooManyWorkgroups {
-                    kernel: kernel.label().to_string(),
-                    count,
-                    limit: limits.max_compute_workgroups_per_dimension,
-                });
-            }
-        }
-
-        let stride = (std::mem::size_of::<TileParams>() as u64)
-            .next_multiple_of(u64::from(limits.min_uniform_buffer_offset_alignment.max(1)));
-        let params = self.params_buffer(gpu, stride * tiles.len() as u64)?;
-        let mut bytes = vec![0u8; (stride * tiles.len() as u64) as usize];
-        for (chunk, tile) in bytes.chunks_exact_mut(stride as usize).zip(&tiles) {
-            chunk[..std::mem::size_of::<TileParams>()].copy_from_slice(bytemuck::bytes_of(tile));
-        }
-        let tile_resource = wgpu::BindingResource::Buffer(wgpu::BufferBinding {
-            buffer: params,
-            offset: 0,
-            size: wgpu::BufferSize::new(std::mem::size_of::<TileParams>() as u64),
-        });
-        let bind_group = bind_group(gpu, kernel, buffers, Some((tile_binding, tile_resource)))?;
-        let ((), error) = gpu.scoped(|| gpu.queue().write_buffer(params, 0, &bytes));
-        wgpu_result("tile parameter upload", error)?;
-
+        check_workgroups(gpu, kernel, &config)?;
+        let (params, stride) = self.upload_tiles(gpu, &tiles)?;
+        let bind_group = bind_group(
+            gpu,
+            kernel,
+            buffers,
+            Some((tile_binding, tile_resource(params))),
+        )?;
         // Flush the pending uploads first so their cost is not counted as dispatch time.
-        let start = Instant::now();
-        let ((), error) = gpu.scoped(|| {
-            gpu.queue().submit([]);
-        });
-        wgpu_result("upload flush", error)?;
-        wait(gpu)?;
-        report.flush_ms = elapsed_ms(start);
+        report.flush_ms = flush_uploads(gpu)?;
 
         let start = Instant::now();
         let mut done = 0u32;
@@ -362,11 +334,8 @@ impl TileDispatcher {
                         // Fits: the buffer size was checked against u32 offsets in params_buffer.
                         let offset = (u64::from(tile.tile_index) * stride) as u32;
                         pass.set_bind_group(0, &bind_group, &[offset]);
-                        pass.dispatch_workgroups(
-                            tile.extent[0].div_ceil(wx.max(1)),
-                            tile.extent[1].div_ceil(wy.max(1)),
-                            1,
-                        );
+                        let [x, y] = tile_workgroups(kernel, tile);
+                        pass.dispatch_workgroups(x, y, 1);
                     }
                 }
                 gpu.queue().submit([encoder.finish()]);
@@ -379,6 +348,27 @@ impl TileDispatcher {
         }
         report.dispatch_ms = elapsed_ms(start);
         Ok(report)
+    }
+
+    /// Writes the parameters of `tiles` into the tile uniform buffer, one record every `stride`
+    /// bytes (the device's uniform offset alignment), so tile `i` is bound at offset
+    /// `i * stride`; returns the buffer and the stride.
+    fn upload_tiles(
+        &mut self,
+        gpu: &Gpu,
+        tiles: &[TileParams],
+    ) -> Result<(&wgpu::Buffer, u64), DispatchError> {
+        let stride = (std::mem::size_of::<TileParams>() as u64).next_multiple_of(u64::from(
+            gpu.limits().min_uniform_buffer_offset_alignment.max(1),
+        ));
+        let params = self.params_buffer(gpu, stride * tiles.len() as u64)?;
+        let mut bytes = vec![0u8; (stride * tiles.len() as u64) as usize];
+        for (chunk, tile) in bytes.chunks_exact_mut(stride as usize).zip(tiles) {
+            chunk[..std::mem::size_of::<TileParams>()].copy_from_slice(bytemuck::bytes_of(tile));
+        }
+        let ((), error) = gpu.scoped(|| gpu.queue().write_buffer(params, 0, &bytes));
+        wgpu_result("tile parameter upload", error)?;
+        Ok((params, stride))
     }
 
     /// The tile uniform buffer, grown (reallocated) only when `size` exceeds it.
@@ -515,7 +505,17 @@ fn read_mapped<T>(
         staging
     });
     wgpu_result("read-back copy", error)?;
+    map_read(gpu, &staging, size, consume)
+}
 
+/// Waits for the submitted work, maps the `MAP_READ` buffer `staging` and hands its first `size`
+/// bytes to `consume`, then unmaps it.
+fn map_read<T>(
+    gpu: &Gpu,
+    staging: &wgpu::Buffer,
+    size: u64,
+    consume: impl FnOnce(&[u8]) -> T,
+) -> Result<T, DispatchError> {
     let (sender, receiver) = mpsc::channel();
     staging.map_async(wgpu::MapMode::Read, .., move |result| {
         // The receiver outlives the wait below; a send error only means nobody listens.
@@ -552,6 +552,57 @@ fn check_config(config: &TileConfig) -> Result<(), DispatchError> {
         config: *config,
         reason,
     })
+}
+
+/// Refuses `kernel` when `config`'s tiles need more workgroups in one dimension than the device
+/// allows.
+fn check_workgroups(gpu: &Gpu, kernel: &Kernel, config: &TileConfig) -> Result<(), DispatchError> {
+    let limit = gpu.limits().max_compute_workgroups_per_dimension;
+    let [wx, wy, _] = kernel.workgroup_size();
+    for count in [
+        config.tile_width.div_ceil(wx.max(1)),
+        config.tile_height.div_ceil(wy.max(1)),
+    ] {
+        if count > limit {
+            return Err(DispatchError::TooManyWorkgroups {
+                kernel: kernel.label().to_string(),
+                count,
+                limit,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The workgroups (x, y) that cover `tile` with `kernel`'s workgroup size.
+fn tile_workgroups(kernel: &Kernel, tile: &TileParams) -> [u32; 2] {
+    let [wx, wy, _] = kernel.workgroup_size();
+    [
+        tile.extent[0].div_ceil(wx.max(1)),
+        tile.extent[1].div_ceil(wy.max(1)),
+    ]
+}
+
+/// One tile's record of the tile uniform buffer `params`, for a bind group entry (bound with a
+/// dynamic offset per tile).
+fn tile_resource(params: &wgpu::Buffer) -> wgpu::BindingResource<'_> {
+    wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+        buffer: params,
+        offset: 0,
+        size: wgpu::BufferSize::new(std::mem::size_of::<TileParams>() as u64),
+    })
+}
+
+/// Submits the pending buffer uploads and waits for them, so their cost is not counted as
+/// dispatch time; returns the milliseconds it took.
+fn flush_uploads(gpu: &Gpu) -> Result<f64, DispatchError> {
+    let start = Instant::now();
+    let ((), error) = gpu.scoped(|| {
+        gpu.queue().submit([]);
+    });
+    wgpu_result("upload flush", error)?;
+    wait(gpu)?;
+    Ok(elapsed_ms(start))
 }
 
 /// Bind group 0 for `kernel`: every listed binding from `buffers`, except the tile binding.

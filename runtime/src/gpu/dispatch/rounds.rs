@@ -79,61 +79,24 @@ impl TileDispatcher {
         if tiles.is_empty() {
             return Ok(report);
         }
-        let limits = gpu.limits();
-        let workgroups = |k: &Kernel, tile: &TileParams| {
-            let [wx, wy, _] = k.workgroup_size();
-            [
-                tile.extent[0].div_ceil(wx.max(1)),
-                tile.extent[1].div_ceil(wy.max(1)),
-            ]
-        };
         for k in &all {
-            let [wx, wy, _] = k.workgroup_size();
-            for count in [
-                config.tile_width.div_ceil(wx.max(1)),
-                config.tile_height.div_ceil(wy.max(1)),
-            ] {
-                if count > limits.max_compute_workgroups_per_dimension {
-                    return Err(DispatchError::TooManyWorkgroups {
-                        kernel: k.label().to_string(),
-                        count,
-                        limit: limits.max_compute_workgroups_per_dimension,
-                    });
-                }
-            }
+            check_workgroups(gpu, k, &config)?;
         }
-
-        let stride = (std::mem::size_of::<TileParams>() as u64)
-            .next_multiple_of(u64::from(limits.min_uniform_buffer_offset_alignment.max(1)));
-        let params = self.params_buffer(gpu, stride * tiles.len() as u64)?;
-        let mut bytes = vec![0u8; (stride * tiles.len() as u64) as usize];
-        for (chunk, tile) in bytes.chunks_exact_mut(stride as usize).zip(&tiles) {
-            chunk[..std::mem::size_of::<TileParams>()].copy_from_slice(bytemuck::bytes_of(tile));
-        }
-        let tile_resource = || {
-            wgpu::BindingResource::Buffer(wgpu::BufferBinding {
-                buffer: params,
-                offset: 0,
-                size: wgpu::BufferSize::new(std::mem::size_of::<TileParams>() as u64),
-            })
-        };
+        let (params, stride) = self.upload_tiles(gpu, &tiles)?;
         let groups: Vec<wgpu::BindGroup> = all
             .iter()
-            .map(|k| bind_group(gpu, k, buffers, Some((tile_binding, tile_resource()))))
+            .map(|k| bind_group(gpu, k, buffers, Some((tile_binding, tile_resource(params)))))
             .collect::<Result<_, _>>()?;
-        let ((), error) = gpu.scoped(|| gpu.queue().write_buffer(params, 0, &bytes));
-        wgpu_result("tile parameter upload", error)?;
-        let counters =
-            buffers
-                .buffer(kernels.flag_binding)
-                .ok_or_else(|| BufferError::Missing {
-                    set: buffers.label().to_string(),
-                    binding: kernels.flag_binding,
-                })?;
-        let active_offset = kernels.flag_offset;
+        let flag = buffers
+            .buffer(kernels.flag_binding)
+            .ok_or_else(|| BufferError::Missing {
+                set: buffers.label().to_string(),
+                binding: kernels.flag_binding,
+            })?;
+        let flag_offset = kernels.flag_offset;
         let (staging, error) = gpu.scoped(|| {
             gpu.device().create_buffer(&wgpu::BufferDescriptor {
-                label: Some("rtc active paths"),
+                label: Some("rtc running paths"),
                 size: 4,
                 usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
                 mapped_at_creation: false,
@@ -141,13 +104,7 @@ impl TileDispatcher {
         });
         wgpu_result("read-back allocation", error)?;
 
-        let start = Instant::now();
-        let ((), error) = gpu.scoped(|| {
-            gpu.queue().submit([]);
-        });
-        wgpu_result("upload flush", error)?;
-        wait(gpu)?;
-        report.dispatch.flush_ms = elapsed_ms(start);
+        report.dispatch.flush_ms = flush_uploads(gpu)?;
 
         let start = Instant::now();
         let finish_group = groups.len() - 1;
@@ -162,26 +119,26 @@ impl TileDispatcher {
                             .create_command_encoder(&wgpu::CommandEncoderDescriptor {
                                 label: Some("rtc wavefront round"),
                             });
-                    encoder.clear_buffer(counters, active_offset, Some(4));
+                    encoder.clear_buffer(flag, flag_offset, Some(4));
                     {
                         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
                             label: Some("rtc wavefront round"),
                             timestamp_writes: None,
                         });
                         for (k, group) in kernels.round.iter().zip(&groups) {
-                            let [x, y] = workgroups(k, tile);
+                            let [x, y] = tile_workgroups(k, tile);
                             pass.set_pipeline(k.pipeline());
                             pass.set_bind_group(0, group, &[offset]);
                             pass.dispatch_workgroups(x, y, 1);
                         }
                     }
-                    encoder.copy_buffer_to_buffer(counters, active_offset, &staging, 0, Some(4));
+                    encoder.copy_buffer_to_buffer(flag, flag_offset, &staging, 0, Some(4));
                     gpu.queue().submit([encoder.finish()]);
                 });
                 wgpu_result("wavefront round", error)?;
                 report.rounds += 1;
-                let active = read_active(gpu, &staging)?;
-                if active == 0 {
+                let running = map_read(gpu, &staging, 4, |bytes| bytes.iter().any(|&b| b != 0))?;
+                if !running {
                     finished = true;
                     break;
                 }
@@ -202,7 +159,7 @@ impl TileDispatcher {
                         label: Some(kernels.finish.label()),
                         timestamp_writes: None,
                     });
-                    let [x, y] = workgroups(kernels.finish, tile);
+                    let [x, y] = tile_workgroups(kernels.finish, tile);
                     pass.set_pipeline(kernels.finish.pipeline());
                     pass.set_bind_group(0, &groups[finish_group], &[offset]);
                     pass.dispatch_workgroups(x, y, 1);
@@ -217,30 +174,4 @@ impl TileDispatcher {
         report.dispatch.dispatch_ms = elapsed_ms(start);
         Ok(report)
     }
-}
-
-/// Waits for the submitted round and reads the active-path count from `staging`.
-fn read_active(gpu: &Gpu, staging: &wgpu::Buffer) -> Result<u32, DispatchError> {
-    let (sender, receiver) = mpsc::channel();
-    staging.map_async(wgpu::MapMode::Read, .., move |result| {
-        // The receiver outlives the wait below; a send error only means nobody listens.
-        let _ = sender.send(result);
-    });
-    wait(gpu)?;
-    let map_error = |message: String| DispatchError::Map { size: 4, message };
-    match receiver.recv() {
-        Ok(Ok(())) => {}
-        Ok(Err(e)) => return Err(map_error(error_chain(&e))),
-        Err(e) => return Err(map_error(e.to_string())),
-    }
-    let value = {
-        let view = staging
-            .get_mapped_range(..)
-            .map_err(|e| map_error(error_chain(&e)))?;
-        let mut word = [0u8; 4];
-        word.copy_from_slice(&view[..4]);
-        u32::from_le_bytes(word)
-    };
-    staging.unmap();
-    Ok(value)
 }
