@@ -101,6 +101,9 @@ codes! {
     E0707 => "a procedural mesh parameter out of range (`sphere_mesh` subdivisions)",
     E0708 => "a transform that cannot be inverted in single precision (not affine, singular, or a scale whose inverse overflows `f32`)",
     E0709 => "a camera parameter that makes every ray invalid (a field of view, size or distance out of range, a zero-length view direction, `up` along the view direction)",
+    E0710 => "an animation target that is not known (no such object, light or field)",
+    E0711 => "animation keys that are missing, out of order, repeated or at a negative time",
+    E0712 => "an animation value of the wrong type for its target, or a motion the target cannot take",
 
     // ---- call graph and static limits ----
     E0801 => "recursion (GPUs have no call stack)",

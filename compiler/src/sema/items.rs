@@ -102,6 +102,7 @@ pub(crate) fn collect(cx: &mut Ctx) {
                         objects: Vec::new(),
                         lights: Vec::new(),
                         models: Vec::new(),
+                        animation: Vec::new(),
                     });
                     cx.scenes_ast.push((module, s));
                     info.scenes.push(id);

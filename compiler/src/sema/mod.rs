@@ -24,6 +24,7 @@
 //! comes from a [`error::SemaError`] rendered in `error/`.
 
 mod access;
+mod animation;
 pub mod builtins;
 mod call;
 mod callgraph;

@@ -29,11 +29,17 @@ const SETTINGS: &[&str] = &[
     "max_rays_per_hit",
     "seed",
     "exec",
+    "fps",
+    "frames",
 ];
 /// The largest image side, in pixels, of a scene's `width`/`height` and of the command line's `--size`.
 pub const MAX_IMAGE_SIDE: u32 = 16384;
 /// The most samples per pixel of a scene's `samples` and of the command line's `--spp`.
 pub const MAX_SAMPLES: u32 = 1 << 20;
+/// The most frames per second of a scene's `fps` and of the command line's `--fps`.
+pub const MAX_FPS: u32 = 1000;
+/// The most frames of a scene's `frames` (and of a derived frame count).
+pub const MAX_FRAMES: u32 = 1_000_000;
 
 const OBJECT_FIELDS: &[&str] = &["geometry", "material", "transform"];
 const MODEL_FIELDS: &[&str] = &["transform"];
@@ -84,6 +90,13 @@ fn check_scene<'a>(
     // Where `max_rays_per_hit` was written, if it was.
     let mut spawn_setting = None;
     let mut names: Vec<(&str, Span)> = Vec::new();
+    // Parallel to `desc.lights`: each light's name, if given.
+    let mut light_names: Vec<Option<String>> = Vec::new();
+    let mut animate = Vec::new();
+    // Names of objects and lights that could not be evaluated (already reported).
+    let mut broken: Vec<&str> = Vec::new();
+    // Whether `frames` was written (else it is derived from the keys).
+    let mut frames_written = false;
     for entry in &decl.entries {
         if let ast::SceneEntryKind::Let { name, .. } = &entry.kind {
             ck.later.push((name.name.as_str(), name.span));
@@ -100,6 +113,7 @@ fn check_scene<'a>(
                     "`settings`",
                 ) {
                     (desc.settings, spawn_setting) = check_settings(&mut ck, fields);
+                    frames_written = fields.iter().any(|f| f.name.name == "frames");
                 }
             }
             ast::SceneEntryKind::Camera(e) => {
@@ -147,14 +161,36 @@ fn check_scene<'a>(
                         None => names.push((n.name.as_str(), n.span)),
                     }
                 }
-                if let Some(o) = object(&mut ck, name.as_ref(), fields, entry.span) {
-                    desc.objects.push(o);
+                match object(&mut ck, name.as_ref(), fields, entry.span) {
+                    Some(o) => desc.objects.push(o),
+                    None => broken.extend(name.as_ref().map(|n| n.name.as_str())),
                 }
             }
-            ast::SceneEntryKind::Light { value, .. } => {
-                if let Some(l) = instance(&mut ck, *value, Role::Light) {
-                    desc.lights.push(l);
+            ast::SceneEntryKind::Light { name, value } => {
+                if let Some(n) = name {
+                    match names.iter().find(|(x, _)| *x == n.name) {
+                        Some((_, first)) => ck.err(SceneError::DuplicateEntry {
+                            span: n.span,
+                            first: *first,
+                            what: format!("the name `{}`", n.name),
+                        }),
+                        None => names.push((n.name.as_str(), n.span)),
+                    }
                 }
+                match instance(&mut ck, *value, Role::Light) {
+                    Some(l) => {
+                        desc.lights.push(l);
+                        light_names.push(name.as_ref().map(|n| n.name.clone()));
+                    }
+                    None => broken.extend(name.as_ref().map(|n| n.name.as_str())),
+                }
+            }
+            ast::SceneEntryKind::Animate { target, motion } => {
+                animate.push(super::animation::Entry {
+                    target,
+                    motion,
+                    span: entry.span,
+                });
             }
             ast::SceneEntryKind::Model {
                 path,
@@ -177,6 +213,14 @@ fn check_scene<'a>(
             }
             ast::SceneEntryKind::Error => {}
         }
+    }
+    let names = super::animation::Names {
+        lights: &light_names,
+        broken: &broken,
+    };
+    super::animation::check(&mut ck, &mut desc, &names, &animate);
+    if !frames_written {
+        desc.settings.frames = super::animation::derived_frames(&desc);
     }
     if desc.settings.max_depth > 0 {
         let mut warned = Vec::new();
@@ -277,6 +321,8 @@ fn check_settings(ck: &mut Checker, fields: &[ast::FieldInit]) -> (Settings, Opt
             "max_depth" => ("max_depth", 0, 64, &mut s.max_depth),
             "max_rays_per_hit" => ("max_rays_per_hit", 1, 64, &mut s.max_rays_per_hit),
             "exec" => ("exec", 0, 2, &mut s.exec),
+            "fps" => ("fps", 1, MAX_FPS, &mut s.fps),
+            "frames" => ("frames", 1, MAX_FRAMES, &mut s.frames),
             _ => ("seed", 0, u32::MAX, &mut s.seed),
         };
         if v < lo || v > hi {

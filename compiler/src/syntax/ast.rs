@@ -569,6 +569,48 @@ pub enum SceneEntryKind {
         /// Its fields (`transform`, …).
         fields: Vec<FieldInit>,
     },
+    /// `animate target motion` (spec/animation.md): `target` is `object`, `camera.field`,
+    /// `background.field` or `light.field`, by name.
+    Animate {
+        /// One name, or two with a `.` between them.
+        target: Vec<Ident>,
+        /// The motion.
+        motion: AnimMotion,
+    },
     /// An entry the parser could not make sense of (already reported).
     Error,
+}
+
+/// The motion of an `animate` entry.
+#[derive(Clone, Debug, PartialEq)]
+pub enum AnimMotion {
+    /// `keys interp? { time: value, … }`
+    Keys {
+        /// The word before the block, `keys` when well written (sema reports another).
+        word: Ident,
+        /// The interpolation's name, if written.
+        interp: Option<Ident>,
+        /// The keys in source order.
+        keys: Vec<Keyframe>,
+        /// The word `keys` through the closing `}`.
+        span: Span,
+    },
+    /// `name(args)`: a motion over time such as `spin(axis, degrees_per_second)`.
+    Over {
+        /// The motion's name.
+        name: Ident,
+        /// Its arguments.
+        args: Vec<ExprId>,
+        /// The whole call.
+        span: Span,
+    },
+}
+
+/// `time: value` in a `keys { … }` block.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Keyframe {
+    /// Seconds.
+    pub time: ExprId,
+    /// The value at that time.
+    pub value: ExprId,
 }

@@ -15,8 +15,9 @@
 //! depend on where the sources live. The text is for reading; it is not meant to be parsed again.
 
 use super::{
-    Block, Body, ConstValue, ExprId, ExprKind, FnId, Geometry, Instance, Literal, MeshAsset,
-    ModuleId, Program, Scalar, SceneDesc, Stmt, StmtKind, Struct, TextureAsset,
+    Block, Body, ConstValue, ExprId, ExprKind, FnId, Geometry, Instance, Interp, Literal,
+    MeshAsset, ModuleId, Motion, Program, Scalar, SceneDesc, Stmt, StmtKind, Struct, TextureAsset,
+    TrackTarget,
 };
 use crate::sema::types::{Type, TypeId};
 use std::fmt::Write;
@@ -474,6 +475,61 @@ impl Printer<'_> {
                 self.path(&m.path),
                 matrix4(&m.transform)
             );
+            self.line(&text);
+        }
+        if !s.animation.is_empty() {
+            let text = format!(
+                "animation {{ fps: {}, frames: {} }}",
+                s.settings.fps, s.settings.frames
+            );
+            self.line(&text);
+        }
+        for t in &s.animation {
+            let target = match &t.target {
+                TrackTarget::Object(i) => match &s.objects[*i].name {
+                    Some(n) => n.clone(),
+                    None => format!("object#{i}"),
+                },
+                TrackTarget::Camera { name, .. } => format!("camera.{name}"),
+                TrackTarget::Background { name, .. } => format!("background.{name}"),
+                TrackTarget::Light { light, name, .. } => format!("light#{light}.{name}"),
+            };
+            let motion = match &t.motion {
+                Motion::Keys {
+                    times,
+                    values,
+                    interp,
+                } => {
+                    let keys: Vec<String> = times
+                        .iter()
+                        .zip(values)
+                        .map(|(t, v)| format!("{}: {}", float(*t), self.value(v)))
+                        .collect();
+                    let interp = match interp {
+                        Interp::Linear => "linear",
+                        Interp::Step => "step",
+                        Interp::Smooth => "smooth",
+                    };
+                    format!("keys {interp} {{ {} }}", keys.join(", "))
+                }
+                Motion::Spin {
+                    axis,
+                    degrees_per_second,
+                } => format!(
+                    "spin(vec3f({}, {}, {}), {})",
+                    float(axis[0]),
+                    float(axis[1]),
+                    float(axis[2]),
+                    float(*degrees_per_second)
+                ),
+                Motion::Move { velocity } => format!(
+                    "move(vec3f({}, {}, {}))",
+                    float(velocity[0]),
+                    float(velocity[1]),
+                    float(velocity[2])
+                ),
+            };
+            let text = format!("animate {target} {motion}");
             self.line(&text);
         }
         self.indent -= 1;

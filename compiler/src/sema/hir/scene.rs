@@ -38,6 +38,10 @@ pub struct Settings {
     /// The execution model: `EXEC_AUTO` (0), `EXEC_MEGAKERNEL` (1) or `EXEC_WAVEFRONT` (2), the
     /// prelude's constants.
     pub exec: u32,
+    /// Frames per second of the scene's animation (spec/animation.md).
+    pub fps: u32,
+    /// Frames of the animation: as written, else enough to reach its last key (at least 1).
+    pub frames: u32,
 }
 
 impl Default for Settings {
@@ -50,6 +54,8 @@ impl Default for Settings {
             max_rays_per_hit: 4,
             seed: 0,
             exec: 0,
+            fps: 24,
+            frames: 1,
         }
     }
 }
@@ -110,6 +116,89 @@ pub struct SceneDesc {
     pub lights: Vec<Instance>,
     /// glTF models in order.
     pub models: Vec<Model>,
+    /// The animation's tracks, in the order of the `animate` entries (spec/animation.md).
+    pub animation: Vec<Track>,
+}
+
+/// What a [`Track`] moves or changes.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TrackTarget {
+    /// Object `objects[i]`'s transform.
+    Object(usize),
+    /// A field of the camera, by index in its struct.
+    Camera {
+        /// The field's index.
+        field: usize,
+        /// Its name.
+        name: String,
+    },
+    /// A field of the background, by index in its struct.
+    Background {
+        /// The field's index.
+        field: usize,
+        /// Its name.
+        name: String,
+    },
+    /// A field of `lights[light]`.
+    Light {
+        /// The light's index.
+        light: usize,
+        /// The field's index.
+        field: usize,
+        /// Its name.
+        name: String,
+    },
+}
+
+/// How a keyed track goes from one key to the next.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Interp {
+    /// Straight lines (transforms: translation and scale lerped, rotation slerped).
+    Linear,
+    /// Each key's value holds until the next key.
+    Step,
+    /// Catmull-Rom curves through the keys (transforms: the rotation slerped on an eased
+    /// parameter).
+    Smooth,
+}
+
+/// A track's change over time.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Motion {
+    /// Values at times: at least one key, times finite, `>= 0` and strictly increasing; every
+    /// value of the target's type (a `mat4x4f` motion for an object). Before the first key the
+    /// first value holds, after the last the last.
+    Keys {
+        /// Seconds.
+        times: Vec<f32>,
+        /// One value per time.
+        values: Vec<ConstValue>,
+        /// Between keys.
+        interp: Interp,
+    },
+    /// Turning about `axis` (unit length) through the object's origin: `degrees_per_second × t`.
+    Spin {
+        /// Unit axis, world space.
+        axis: [f32; 3],
+        /// Degrees per second.
+        degrees_per_second: f32,
+    },
+    /// Moving by `velocity × t` (an object's position, or a `vec3f` field's value).
+    Move {
+        /// Units per second.
+        velocity: [f32; 3],
+    },
+}
+
+/// One `animate` entry: a target and its motion.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Track {
+    /// What it changes.
+    pub target: TrackTarget,
+    /// How.
+    pub motion: Motion,
+    /// The entry.
+    pub span: Span,
 }
 
 /// The identity transform.

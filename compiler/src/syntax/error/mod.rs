@@ -43,6 +43,7 @@ pub const SCENE_ENTRIES: &[&str] = &[
     "object",
     "light",
     "model",
+    "animate",
 ];
 
 /// The token the parser found where it expected something else.
@@ -94,6 +95,8 @@ pub enum Expected {
     Statement,
     /// A scene entry.
     SceneEntry,
+    /// A motion after an `animate` target.
+    Motion,
     /// A string literal (an import or model path).
     Path,
 }
@@ -119,6 +122,7 @@ impl Expected {
             Expected::Item => "an item".to_string(),
             Expected::Statement => "a statement".to_string(),
             Expected::SceneEntry => "a scene entry".to_string(),
+            Expected::Motion => "a motion (`keys { … }`, `spin(…)` or `move(…)`)".to_string(),
             Expected::Path => "a string literal".to_string(),
         }
     }

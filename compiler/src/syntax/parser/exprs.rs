@@ -439,7 +439,7 @@ impl Parser<'_> {
     }
 
     /// `( args )`, at the `(`.
-    fn call_args(&mut self) -> Vec<ExprId> {
+    pub(super) fn call_args(&mut self) -> Vec<ExprId> {
         let open = self.bump();
         let stop = TokenSet::new(&[TokenKind::Semi, TokenKind::RBrace]).union(STMT_KEYWORDS);
         let args = self.list(TokenKind::RParen, stop, None, |p| {

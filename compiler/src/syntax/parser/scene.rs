@@ -9,16 +9,20 @@
 //! - `light a B { … }` names the light `a`; `light B { … }` is unnamed: a light is named exactly when
 //!   two identifiers follow `light`.
 //! - `object a { … }` is named, `object { … }` is not.
+//! - `animate a.b keys { … }` / `animate a spin(…)`: the target is one or two names; the motion is
+//!   a word followed by `(` (a motion over time) or by an optional interpolation word and `{` (keys,
+//!   `time: value` pairs separated by commas).
 //!
 //! Recovery: an unknown word at the start of an entry is `E0701` (with the closest entry keyword as
 //! help); other junk is `E0201`. Either way the parser skips to the next entry keyword, `let` or `}`
 //! outside any group.
 
 use super::{Parser, Restrict, ITEM_START};
-use crate::syntax::ast::{ItemKind, SceneDecl, SceneEntry, SceneEntryKind};
+use crate::syntax::ast::{AnimMotion, ItemKind, Keyframe, SceneDecl, SceneEntry, SceneEntryKind};
 use crate::syntax::error::{Expected, Hint, Place, SyntaxError, SCENE_ENTRIES};
 use crate::syntax::lexer;
 use crate::syntax::token::TokenKind;
+use crate::syntax::token::TokenSet;
 
 impl Parser<'_> {
     /// `scene name { entries }`
@@ -93,6 +97,7 @@ impl Parser<'_> {
                     SceneEntryKind::Light { name, value }
                 }
                 "model" => self.model()?,
+                "animate" => self.animate()?,
                 word => {
                     let suggestion =
                         crate::diag::suggest::closest(word, SCENE_ENTRIES.iter().copied());
@@ -155,6 +160,65 @@ impl Parser<'_> {
             path_span,
             fields,
         })
+    }
+
+    /// `animate name(.name)? (keys interp? { time: value, … } | name(args))`
+    fn animate(&mut self) -> Option<SceneEntryKind> {
+        self.bump();
+        let mut target = vec![self.expect_ident().or_else(|| {
+            self.recover_entry();
+            None
+        })?];
+        if self.eat(TokenKind::Dot).is_some() {
+            match self.expect_ident() {
+                Some(field) => target.push(field),
+                None => {
+                    self.recover_entry();
+                    return None;
+                }
+            }
+        }
+        if !self.at(TokenKind::Ident) {
+            self.expected(Expected::Motion, None);
+            self.recover_entry();
+            return None;
+        }
+        let lo = self.span();
+        let name = self.ident();
+        let motion = if self.at(TokenKind::LParen) {
+            let args = self.call_args();
+            AnimMotion::Over {
+                name,
+                args,
+                span: self.since(lo),
+            }
+        } else {
+            let interp = self.at(TokenKind::Ident).then(|| self.ident());
+            if !self.at(TokenKind::LBrace) {
+                self.expected(Expected::Token(TokenKind::LBrace), None);
+                self.recover_entry();
+                return None;
+            }
+            let open = self.bump();
+            let stop = TokenSet::new(&[TokenKind::Semi]);
+            let keys = self.list(TokenKind::RBrace, stop, None, |p| {
+                let time = p.expr(Restrict::NONE);
+                if !p.expect(TokenKind::Colon) {
+                    return None;
+                }
+                let value = p.expr(Restrict::NONE);
+                Some(Keyframe { time, value })
+            });
+            self.expect_close(TokenKind::RBrace, open);
+            // `kees { … }` is parsed as keys; sema reports the unknown word.
+            AnimMotion::Keys {
+                word: name,
+                interp,
+                keys,
+                span: self.since(lo),
+            }
+        };
+        Some(SceneEntryKind::Animate { target, motion })
     }
 
     /// `{ field_inits }` after `settings` or `object`.
