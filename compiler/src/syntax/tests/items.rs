@@ -161,6 +161,8 @@ scene two {
     light PointLight {}
     model "a.glb" { transform: identity() }
     model "b.gltf"
+    animate floor keys smooth { 0.0: identity(), 1.5: scale(2.0), }
+    animate camera.fov spin(a, 2.0)
 }
 "#;
     let (m, diags) = parse(src);
@@ -192,6 +194,26 @@ scene two {
                 )
             }
             SceneEntryKind::Model { path, fields, .. } => format!("model {path} {}", fields.len()),
+            SceneEntryKind::Animate { target, motion } => {
+                let t: Vec<&str> = target.iter().map(|i| i.name.as_str()).collect();
+                let m = match motion {
+                    AnimMotion::Keys {
+                        word, interp, keys, ..
+                    } => {
+                        let keys: Vec<String> = keys
+                            .iter()
+                            .map(|k| format!("{}: {}", p.expr(k.time), p.expr(k.value)))
+                            .collect();
+                        let interp = interp.as_ref().map(|i| i.name.as_str());
+                        format!("{} {interp:?} {}", word.name, keys.join(", "))
+                    }
+                    AnimMotion::Over { name, args, .. } => {
+                        let args: Vec<String> = args.iter().map(|a| p.expr(*a)).collect();
+                        format!("{}({})", name.name, args.join(", "))
+                    }
+                };
+                format!("animate {} {m}", t.join("."))
+            }
             SceneEntryKind::Error => "ERR".to_string(),
         })
         .collect();
@@ -208,6 +230,8 @@ scene two {
             "light None (struct PointLight)",
             "model a.glb 1",
             "model b.gltf 0",
+            "animate floor keys Some(\"smooth\") 0.0: (call identity), 1.5: (call scale 2.0)",
+            "animate camera.fov spin(a, 2.0)",
         ]
     );
     // Contextual keywords are ordinary names elsewhere.
