@@ -18,6 +18,7 @@
 //! failures; every fallible operation returns a typed error (`thiserror` enums, one per module).
 //! It contains no `unsafe` code (the workspace denies it).
 
+pub mod animation;
 pub mod assets;
 pub mod bvh_view;
 pub mod gpu;

@@ -142,6 +142,20 @@ pub enum RenderError {
     },
 }
 
+/// The instance whose field [`Renderer::set_field_shim`] sets (shim: the session core's
+/// `FieldTarget`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FieldTarget {
+    /// The camera.
+    Camera,
+    /// The background.
+    Background,
+    /// Light `i`, in scene order.
+    Light(usize),
+    /// Object `i`'s material.
+    Material(usize),
+}
+
 /// Figures of one render (and of the setup it needed).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct RenderStats {
@@ -644,6 +658,29 @@ impl<'g> Renderer<'g> {
     /// scene-level BVH and uploads only `nodes` and `instances`.
     pub fn set_transform(&mut self, object: usize, transform: Mat4) -> Result<(), RenderError> {
         Ok(self.entities.set_transform(object, transform)?)
+    }
+
+    /// Shim until the session core's `set_field` lands: sets field `index` of the instance
+    /// `target` (of struct `sid`) to `value`.
+    pub fn set_field_shim(
+        &mut self,
+        program: &rtc_compiler::sema::hir::Program,
+        target: FieldTarget,
+        sid: rtc_compiler::sema::hir::StructId,
+        index: usize,
+        value: &rtc_compiler::sema::hir::ConstValue,
+    ) -> Result<(), RenderError> {
+        let at = match target {
+            FieldTarget::Camera => Some(self.entities.camera()),
+            FieldTarget::Background => self.entities.background(),
+            FieldTarget::Light(i) => self.entities.lights().get(i).copied(),
+            FieldTarget::Material(_) => None,
+        };
+        if let Some(at) = at {
+            self.entities
+                .write_field_shim(program, at.offset, sid, index, value)?;
+        }
+        Ok(())
     }
 
     /// Total tiles the next render dispatches (all passes), for sizing a progress display.

@@ -9,6 +9,11 @@
 //! and rays per second (primary rays, and every ray traced) on stdout, with one line per kernel
 //! (compiled or reused, and its driver compile time) and the state of the on-disk pipeline cache.
 //!
+//! `--frames A..B` renders frames of the scene's animation through one renderer (built once; per
+//! frame the animation's state at `frame / fps` is applied, then the frame is rendered and written
+//! to `-o` with its number in place of `%04d`); `--shard I/N` renders every N-th of them (see
+//! [`frames`] and docs/animation.md). A still image of an animated scene is its frame 0.
+//!
 //! A `.gltf` or `.glb` file instead of a scene is rendered through a scene written for it with
 //! sensible defaults (a camera framing it, a light, a background; see [`model`]), and the defaults
 //! chosen are printed before rendering.
@@ -17,14 +22,17 @@
 //! as one `error:` line (an unreadable asset as an E0902 diagnostic at the scene's string) and exit
 //! with code 1. Nothing here panics on bad input; the process is never exited from here.
 
+pub mod frames;
 pub mod model;
 
 use super::Context;
 use crate::args::{BvhArgs, ExecArgs, MessageFormat, RenderArgs};
 use crate::exit::Exit;
 use crate::{report, term};
-use rtc_compiler::kernel::{compile_scene_with, KernelOptions};
+use rtc_compiler::kernel::{compile_scene_with, CompiledScene, KernelOptions};
 use rtc_compiler::link::LinkOptions;
+use rtc_compiler::sema::hir::{Program, SceneDesc};
+use rtc_runtime::animation;
 use rtc_runtime::gpu::{Gpu, KernelReport};
 use rtc_runtime::image_out::{write_exr, write_png, ToneMap};
 use rtc_runtime::render::{RenderError, RenderOptions, RenderStats, Renderer};
@@ -52,6 +60,54 @@ pub struct Args {
     /// The execution model.
     #[command(flatten)]
     pub exec: ExecArgs,
+    /// Render frames of the scene's animation: `A..B` (A to B-1), `A..=B`, `N` or `all` (the
+    /// scene's `frames`); `-o` then names each frame with `%d` or `%04d`.
+    #[arg(long, value_name = "RANGE")]
+    pub frames: Option<String>,
+    /// Frames per second of the animation instead of the scene's `fps`: frame `n` is at
+    /// `n / fps` seconds.
+    #[arg(long, value_name = "F", value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub fps: Option<u32>,
+    /// Render only frames I, I+N, I+2N, … of the range (frames are identical to an unsharded
+    /// run's); `auto/N` reads I from JOB_COMPLETION_INDEX (Kubernetes Indexed Jobs) or
+    /// SLURM_ARRAY_TASK_ID (Slurm job arrays).
+    #[arg(long, value_name = "I/N")]
+    pub shard: Option<String>,
+}
+
+/// What `--frames`, `--fps` and `--shard` asked for, checked before compiling.
+struct FrameArgs {
+    range: frames::FrameRange,
+    shard: frames::Shard,
+    fps: Option<u32>,
+}
+
+/// `--frames`/`--shard`/`--fps`, or `None` for a still image (usage errors as messages).
+fn frame_args(args: &Args) -> Result<Option<FrameArgs>, String> {
+    if args.frames.is_none() && args.shard.is_none() && args.fps.is_none() {
+        return Ok(None);
+    }
+    let range = match &args.frames {
+        Some(f) => frames::parse_frames(f)?,
+        None => frames::FrameRange::All,
+    };
+    let shard = match &args.shard {
+        Some(s) => frames::parse_shard(s, &|v| std::env::var(v).ok())?,
+        None => frames::Shard { index: 0, count: 1 },
+    };
+    let single = matches!(range, frames::FrameRange::Span { start, end } if end - start == 1);
+    if !single && !frames::has_placeholder(&args.output) {
+        return Err(format!(
+            "-o `{}` has no frame number: with several frames, write `%d` or `%04d` in the \
+             file name (e.g. `out/frame_%04d.png`)",
+            args.output.display()
+        ));
+    }
+    Ok(Some(FrameArgs {
+        range,
+        shard,
+        fps: args.fps,
+    }))
 }
 
 /// The output formats, by extension.
@@ -85,6 +141,10 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     };
     let roots = match args.render.assets.roots() {
         Ok(r) => r,
+        Err(e) => return report::usage_error(&e, ctx.color),
+    };
+    let animate = match frame_args(args) {
+        Ok(a) => a,
         Err(e) => return report::usage_error(&e, ctx.color),
     };
 
@@ -174,7 +234,15 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         exec,
         ..RenderOptions::default()
     };
+    if let Some(frame_args) = animate {
+        return render_frames(args, format, &frame_args, &gpu, &compiled, options, ctx);
+    }
     let rendered = Renderer::new(&gpu, &compiled, options).and_then(|mut renderer| {
+        // An animated scene's still image is its frame 0.
+        if let Some((program, desc)) = scene_of(&compiled) {
+            let state = animation::evaluate(desc, 0.0);
+            animation::apply(&mut renderer, program, &state)?;
+        }
         let total = renderer.total_tiles();
         let bar = progress_bar(total);
         let result = renderer.render(&mut |done, total| {
@@ -220,6 +288,141 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     }
     term::print(&summary(&result.stats, &args.output));
     Exit::Success
+}
+
+/// The program and scene description of a compiled scene.
+fn scene_of(compiled: &CompiledScene) -> Option<(&Program, &SceneDesc)> {
+    let program = compiled.checked.program.as_ref()?;
+    Some((program, &program.scenes[compiled.scene]))
+}
+
+/// `rtc render --frames`: every frame of the shard through one renderer, built once; each frame
+/// sets the animation's state at its time, renders and writes its image.
+fn render_frames(
+    args: &Args,
+    format: Format,
+    fa: &FrameArgs,
+    gpu: &Gpu,
+    compiled: &CompiledScene,
+    options: RenderOptions,
+    ctx: &Context,
+) -> Exit {
+    let Some((program, desc)) = scene_of(compiled) else {
+        return fail("the scene was not compiled", ctx);
+    };
+    let fps = fa.fps.unwrap_or(desc.settings.fps);
+    let (start, end) = match fa.range {
+        frames::FrameRange::All => (0, desc.settings.frames.max(1)),
+        frames::FrameRange::Span { start, end } => (start, end),
+    };
+    if end - start > 1 && !frames::has_placeholder(&args.output) {
+        return report::usage_error(
+            &format!(
+                "-o `{}` has no frame number: the scene has {} frames; write `%d` or `%04d` in \
+                 the file name (e.g. `out/frame_%04d.png`)",
+                args.output.display(),
+                end - start
+            ),
+            ctx.color,
+        );
+    }
+    let list = frames::shard_frames(start, end, fa.shard);
+    if !animation::is_animated(desc) {
+        warn(
+            "the scene has no `animate` entry: every frame is the same image",
+            ctx,
+        );
+    }
+    let started = std::time::Instant::now();
+    let mut renderer = match Renderer::new(gpu, compiled, options) {
+        Ok(r) => r,
+        Err(e) => return render_failure(&e, &compiled.checked.sources, ctx),
+    };
+    let bar = frame_bar(list.len() as u64);
+    let mut first: Option<RenderStats> = None;
+    let mut last: Option<RenderStats> = None;
+    let loop_start = std::time::Instant::now();
+    for (n, &frame) in list.iter().enumerate() {
+        let state = animation::evaluate(desc, animation::frame_time(frame, fps));
+        let result = animation::apply(&mut renderer, program, &state)
+            .and_then(|()| renderer.render(&mut |_, _| {}));
+        let result = match result {
+            Ok(r) => r,
+            Err(e) => {
+                if let Some(bar) = &bar {
+                    bar.finish_and_clear();
+                }
+                return render_failure(&e, &compiled.checked.sources, ctx);
+            }
+        };
+        let path = frames::frame_path(&args.output, frame);
+        if let Err(e) = write_image(&path, format, &result.image) {
+            if let Some(bar) = &bar {
+                bar.finish_and_clear();
+            }
+            return fail(&e.to_string(), ctx);
+        }
+        if let Some(bar) = &bar {
+            bar.set_position(n as u64 + 1);
+        }
+        if first.is_none() {
+            for w in &result.stats.warnings {
+                warn(w, ctx);
+            }
+            first = Some(result.stats.clone());
+        }
+        last = Some(result.stats);
+    }
+    if let Some(bar) = bar {
+        bar.finish_and_clear();
+    }
+    let (Some(first), Some(last)) = (first, last) else {
+        term::print(&format!(
+            "shard {}/{} of frames {start}..{end}: no frame to render\n",
+            fa.shard.index, fa.shard.count
+        ));
+        return Exit::Success;
+    };
+    let secs = loop_start.elapsed().as_secs_f64();
+    let mut out = summary(&first, &frames::frame_path(&args.output, list[0]));
+    out.push_str(&format!(
+        "frames: {} of {start}..{end} (shard {}/{}) at {fps} fps to {}\n",
+        list.len(),
+        fa.shard.index,
+        fa.shard.count,
+        args.output.display()
+    ));
+    out.push_str(&format!(
+        "  frames    {:>10.2} ms  ({:.2} frames/s; {:.2} s with setup)\n",
+        secs * 1e3,
+        list.len() as f64 / secs.max(1e-9),
+        started.elapsed().as_secs_f64()
+    ));
+    out.push_str(&format!(
+        "  bvh       {} BLAS builds at setup, {} over the frames after it; {} TLAS builds\n",
+        first.blas_builds,
+        last.blas_builds - first.blas_builds,
+        last.tlas_builds
+    ));
+    term::print(&out);
+    Exit::Success
+}
+
+/// A progress bar over frames on stderr (hidden when stderr is not a terminal, by indicatif).
+fn frame_bar(total: u64) -> Option<indicatif::ProgressBar> {
+    if total <= 1 {
+        return None;
+    }
+    let bar = indicatif::ProgressBar::with_draw_target(
+        Some(total),
+        indicatif::ProgressDrawTarget::stderr(),
+    );
+    if let Ok(style) = indicatif::ProgressStyle::with_template(
+        "rendering {bar:40} {pos}/{len} frames  {elapsed_precise} (eta {eta})",
+    ) {
+        bar.set_style(style);
+    }
+    Some(bar)
 }
 
 /// Writes `image` to `path` in `format` (PNG with the default tone map, or EXR). Shared by

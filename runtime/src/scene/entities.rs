@@ -645,6 +645,36 @@ impl Entities {
         Ok(())
     }
 
+    /// Shim until the session core's `Renderer::set_field` lands: packs `value` as field `index`
+    /// of the instance of struct `sid` at word `offset` of `params` (no handle fields) and marks
+    /// `params` changed (uploaded whole).
+    pub fn write_field_shim(
+        &mut self,
+        program: &Program,
+        offset: u32,
+        sid: rtc_compiler::sema::hir::StructId,
+        index: usize,
+        value: &rtc_compiler::sema::hir::ConstValue,
+    ) -> Result<(), SceneError> {
+        let ty = super::params::struct_type(program, sid)?;
+        let offsets = rtc_compiler::layout::field_offsets(program, ty);
+        let (Some(field), Some(off)) = (program.structs[sid].fields.get(index), offsets.get(index))
+        else {
+            return Ok(());
+        };
+        let base = offset as usize + (*off / 4) as usize;
+        rtc_compiler::layout::pack_into(
+            program,
+            field.ty,
+            value,
+            &mut self.params,
+            base,
+            &mut rtc_compiler::layout::NoHandles,
+        );
+        self.versions.params = next_version();
+        Ok(())
+    }
+
     /// Rebuilds the TLAS if an object moved or bounds changed since the last build; returns
     /// whether it did.
     pub fn refresh(&mut self) -> Result<bool, SceneError> {

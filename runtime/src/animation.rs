@@ -1,0 +1,305 @@
+//! Scene animation at run time (spec/animation.md): what a scene's tracks give at a time, and
+//! applying it to a [`Renderer`].
+//!
+//! [`evaluate`] is pure: the same scene and time give the same [`FrameState`], bit for bit, on any
+//! machine and whatever was evaluated before (no state is carried from frame to frame), which is
+//! what lets `rtc render --shard` split an animation across processes and still write the frames an
+//! unsharded run writes. [`apply`] moves objects with [`Renderer::set_transform`] (the scene-level
+//! BVH is rebuilt on the next render; object BVHs never are) and sets camera, background and light
+//! fields with [`Renderer::set_field`].
+//!
+//! An object's transform at time `t` is `T · D(t) · L`, where `T` is the translation of its static
+//! `transform` and `L` the rest of it, and `D(t)` the product of its tracks' motions, later
+//! `animate` entries outermost: motions act at the object's own origin, along world axes, so a
+//! `spin` turns an object in place whatever its static rotation and scale. Keyed transforms are
+//! decomposed into translation, rotation and scale: translation and scale are interpolated
+//! (linearly or on Catmull-Rom curves), rotation by slerp, so a turning object stays rigid.
+
+use crate::render::{FieldTarget, RenderError, Renderer};
+use glam::{Mat4, Quat, Vec3};
+use rtc_compiler::sema::hir::{
+    ConstValue, Instance, Interp, Motion, Program, Scalar, SceneDesc, StructId, TrackTarget,
+};
+
+/// The animated part of a scene at one time.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FrameState {
+    /// Object index and its object-to-world matrix (column-major), for each animated object.
+    pub transforms: Vec<(usize, [[f32; 4]; 4])>,
+    /// Each animated field and its value.
+    pub fields: Vec<FieldValue>,
+}
+
+/// A field's value at one time.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FieldValue {
+    /// The instance holding it.
+    pub target: FieldTarget,
+    /// The field's name.
+    pub name: String,
+    /// Its index in the instance's struct.
+    pub index: usize,
+    /// The instance's struct.
+    pub struct_id: StructId,
+    /// The value.
+    pub value: ConstValue,
+}
+
+/// The time of frame `frame` at `fps` frames per second, in seconds (computed in `f64`, so that
+/// every process gets the same `f32`).
+pub fn frame_time(frame: u32, fps: u32) -> f32 {
+    (f64::from(frame) / f64::from(fps.max(1))) as f32
+}
+
+/// Whether the scene has anything to animate.
+pub fn is_animated(desc: &SceneDesc) -> bool {
+    !desc.animation.is_empty()
+}
+
+/// The state of every animated object and field of `desc` at `t` seconds.
+pub fn evaluate(desc: &SceneDesc, t: f32) -> FrameState {
+    let mut motions: Vec<(usize, Mat4)> = Vec::new();
+    let mut fields = Vec::new();
+    for track in &desc.animation {
+        match &track.target {
+            TrackTarget::Object(i) => {
+                let d = object_motion(&track.motion, t);
+                match motions.iter_mut().find(|(o, _)| o == i) {
+                    Some((_, m)) => *m = d * *m,
+                    None => motions.push((*i, d)),
+                }
+            }
+            target => {
+                let (field_target, inst, index, name): (_, Option<&Instance>, _, _) = match target {
+                    TrackTarget::Camera { field, name } => {
+                        (FieldTarget::Camera, desc.camera.as_ref(), *field, name)
+                    }
+                    TrackTarget::Background { field, name } => (
+                        FieldTarget::Background,
+                        desc.background.as_ref(),
+                        *field,
+                        name,
+                    ),
+                    TrackTarget::Light { light, field, name } => (
+                        FieldTarget::Light(*light),
+                        desc.lights.get(*light),
+                        *field,
+                        name,
+                    ),
+                    TrackTarget::Object(_) => continue,
+                };
+                let Some(inst) = inst else { continue };
+                let base = inst.fields.get(index);
+                if let Some(value) = field_value(&track.motion, base, t) {
+                    fields.push(FieldValue {
+                        target: field_target,
+                        name: name.clone(),
+                        index,
+                        struct_id: inst.struct_id,
+                        value,
+                    });
+                }
+            }
+        }
+    }
+    let transforms = motions
+        .into_iter()
+        .filter_map(|(i, d)| {
+            let m = Mat4::from_cols_array_2d(&desc.objects.get(i)?.transform);
+            let t = Mat4::from_translation(m.w_axis.truncate());
+            let mut l = m;
+            l.w_axis = glam::Vec4::W;
+            Some((i, (t * d * l).to_cols_array_2d()))
+        })
+        .collect();
+    FrameState { transforms, fields }
+}
+
+/// Applies `state` to `renderer`: objects moved, fields set. `program` is the scene's program
+/// (the field values' types and layout).
+pub fn apply(
+    renderer: &mut Renderer,
+    program: &Program,
+    state: &FrameState,
+) -> Result<(), RenderError> {
+    for (i, m) in &state.transforms {
+        renderer.set_transform(*i, Mat4::from_cols_array_2d(m))?;
+    }
+    for f in &state.fields {
+        renderer.set_field_shim(program, f.target, f.struct_id, f.index, &f.value)?;
+    }
+    Ok(())
+}
+
+/// The index of the key segment holding `t` and the fraction of the way through it (0 before
+/// the first key and from the last key on, where the segment is that key).
+fn segment(times: &[f32], t: f32) -> (usize, f32) {
+    let n = times.len();
+    if n == 0 || t <= times[0] {
+        return (0, 0.0);
+    }
+    if t >= times[n - 1] {
+        return (n - 1, 0.0);
+    }
+    let k = times.partition_point(|&x| x <= t) - 1;
+    let u = (t - times[k]) / (times[k + 1] - times[k]);
+    (k, u.clamp(0.0, 1.0))
+}
+
+/// Catmull-Rom slope (per second) at key `k` of `p` (component `c`), one-sided at the ends.
+fn slope(times: &[f32], p: &[Vec<f32>], k: usize, c: usize) -> f32 {
+    let n = times.len();
+    let (a, b) = (k.saturating_sub(1), (k + 1).min(n - 1));
+    if a == b {
+        return 0.0;
+    }
+    (p[b][c] - p[a][c]) / (times[b] - times[a])
+}
+
+/// Values at `t` of component vectors `p` keyed at `times`.
+fn interpolate(times: &[f32], p: &[Vec<f32>], interp: Interp, t: f32) -> Vec<f32> {
+    let (k, u) = segment(times, t);
+    if u == 0.0 || interp == Interp::Step || k + 1 >= p.len() {
+        return p[k].clone();
+    }
+    let (a, b) = (&p[k], &p[k + 1]);
+    match interp {
+        Interp::Smooth => {
+            let dt = times[k + 1] - times[k];
+            let (u2, u3) = (u * u, u * u * u);
+            let h00 = 2.0 * u3 - 3.0 * u2 + 1.0;
+            let h10 = u3 - 2.0 * u2 + u;
+            let h01 = -2.0 * u3 + 3.0 * u2;
+            let h11 = u3 - u2;
+            (0..a.len())
+                .map(|c| {
+                    h00 * a[c]
+                        + h10 * dt * slope(times, p, k, c)
+                        + h01 * b[c]
+                        + h11 * dt * slope(times, p, k + 1, c)
+                })
+                .collect()
+        }
+        _ => a.iter().zip(b).map(|(x, y)| x + (y - x) * u).collect(),
+    }
+}
+
+/// The motion matrix `D(t)` of one object track.
+fn object_motion(motion: &Motion, t: f32) -> Mat4 {
+    match motion {
+        Motion::Spin {
+            axis,
+            degrees_per_second,
+        } => {
+            let degrees = (f64::from(*degrees_per_second) * f64::from(t)) % 360.0;
+            Mat4::from_axis_angle(Vec3::from(*axis), (degrees as f32).to_radians())
+        }
+        Motion::Move { velocity } => Mat4::from_translation(Vec3::from(*velocity) * t),
+        Motion::Keys {
+            times,
+            values,
+            interp,
+        } => keyed_transform(times, values, *interp, t),
+    }
+}
+
+/// A keyed transform at `t`: the key's matrix itself at a key (and under `step`), else the
+/// decomposed keys interpolated.
+fn keyed_transform(times: &[f32], values: &[ConstValue], interp: Interp, t: f32) -> Mat4 {
+    let mats: Vec<Mat4> = values.iter().map(matrix).collect();
+    let (k, u) = segment(times, t);
+    if mats.is_empty() {
+        return Mat4::IDENTITY;
+    }
+    if u == 0.0 || interp == Interp::Step || k + 1 >= mats.len() {
+        return mats[k];
+    }
+    let parts: Vec<(Vec3, Quat, Vec3)> = mats
+        .iter()
+        .map(|m| m.to_scale_rotation_translation())
+        .collect();
+    let scales: Vec<Vec<f32>> = parts.iter().map(|p| p.0.to_array().to_vec()).collect();
+    let moves: Vec<Vec<f32>> = parts.iter().map(|p| p.2.to_array().to_vec()).collect();
+    let s = interpolate(times, &scales, interp, t);
+    let tr = interpolate(times, &moves, interp, t);
+    let eased = match interp {
+        Interp::Smooth => u * u * (3.0 - 2.0 * u),
+        _ => u,
+    };
+    let r = parts[k].1.slerp(parts[k + 1].1, eased);
+    Mat4::from_scale_rotation_translation(
+        Vec3::new(s[0], s[1], s[2]),
+        r,
+        Vec3::new(tr[0], tr[1], tr[2]),
+    )
+}
+
+fn matrix(v: &ConstValue) -> Mat4 {
+    match v {
+        ConstValue::Matrix { data, .. } => Mat4::from_cols_array_2d(data),
+        _ => Mat4::IDENTITY,
+    }
+}
+
+/// The `f32` components of a float scalar or vector, else `None`.
+fn floats(v: &ConstValue) -> Option<Vec<f32>> {
+    let f = |s: &Scalar| match s {
+        Scalar::F32(x) => Some(*x),
+        _ => None,
+    };
+    match v {
+        ConstValue::Scalar(s) => Some(vec![f(s)?]),
+        ConstValue::Vector { len, comps } => comps[..usize::from(*len)].iter().map(f).collect(),
+        _ => None,
+    }
+}
+
+/// `like` with its float components replaced by `c`.
+fn with_floats(like: &ConstValue, c: &[f32]) -> ConstValue {
+    match like {
+        ConstValue::Scalar(_) => ConstValue::Scalar(Scalar::F32(c[0])),
+        ConstValue::Vector { len, .. } => {
+            let mut comps = [Scalar::F32(0.0); 4];
+            for (i, x) in c.iter().take(usize::from(*len)).enumerate() {
+                comps[i] = Scalar::F32(*x);
+            }
+            ConstValue::Vector { len: *len, comps }
+        }
+        other => other.clone(),
+    }
+}
+
+/// A field track's value at `t`; `base` is the field's static value (for `move`).
+fn field_value(motion: &Motion, base: Option<&ConstValue>, t: f32) -> Option<ConstValue> {
+    match motion {
+        Motion::Keys {
+            times,
+            values,
+            interp,
+        } => {
+            let first = values.first()?;
+            if let ConstValue::Matrix { cols, rows, .. } = first {
+                let m = keyed_transform(times, values, *interp, t);
+                return Some(ConstValue::Matrix {
+                    cols: *cols,
+                    rows: *rows,
+                    data: m.to_cols_array_2d(),
+                });
+            }
+            let (k, u) = segment(times, t);
+            if *interp == Interp::Step || u == 0.0 {
+                return values.get(k).cloned();
+            }
+            let comps: Option<Vec<Vec<f32>>> = values.iter().map(floats).collect();
+            let comps = comps?;
+            Some(with_floats(first, &interpolate(times, &comps, *interp, t)))
+        }
+        Motion::Move { velocity } => {
+            let base = base?;
+            let b = floats(base)?;
+            let c: Vec<f32> = b.iter().zip(velocity).map(|(x, v)| x + v * t).collect();
+            Some(with_floats(base, &c))
+        }
+        Motion::Spin { .. } => None,
+    }
+}
