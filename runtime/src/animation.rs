@@ -8,10 +8,11 @@
 //! BVH is rebuilt on the next render; object BVHs never are) and sets camera, background and light
 //! fields with [`Renderer::set_field`].
 //!
-//! An object's transform at time `t` is `T · D(t) · L`, where `T` is the translation of its static
-//! `transform` and `L` the rest of it, and `D(t)` the product of its tracks' motions, later
-//! `animate` entries outermost: motions act at the object's own origin, along world axes, so a
-//! `spin` turns an object in place whatever its static rotation and scale. Keyed transforms are
+//! An object's transform at time `t` is `W(t) · M`, where `M` is its static `transform` and `W(t)`
+//! the product of its tracks' world-space motions, later `animate` entries outermost; each motion
+//! acts about the world position of the object's origin (or of a `spin`'s pivot, given in object
+//! space), along world axes, so a `spin` turns an object in place whatever its static rotation and
+//! scale. Keyed transforms are
 //! decomposed into translation, rotation and scale: translation and scale are interpolated
 //! (linearly or on Catmull-Rom curves), rotation by slerp, so a turning object stays rigid.
 
@@ -63,10 +64,14 @@ pub fn evaluate(desc: &SceneDesc, t: f32) -> FrameState {
     for track in &desc.animation {
         match &track.target {
             TrackTarget::Object(i) => {
-                let d = object_motion(&track.motion, t);
+                let Some(object) = desc.objects.get(*i) else {
+                    continue;
+                };
+                let m = Mat4::from_cols_array_2d(&object.transform);
+                let w = world_motion(&track.motion, m, t);
                 match motions.iter_mut().find(|(o, _)| o == i) {
-                    Some((_, m)) => *m = d * *m,
-                    None => motions.push((*i, d)),
+                    Some((_, d)) => *d = w * *d,
+                    None => motions.push((*i, w)),
                 }
             }
             target => {
@@ -104,12 +109,9 @@ pub fn evaluate(desc: &SceneDesc, t: f32) -> FrameState {
     }
     let transforms = motions
         .into_iter()
-        .filter_map(|(i, d)| {
+        .filter_map(|(i, w)| {
             let m = Mat4::from_cols_array_2d(&desc.objects.get(i)?.transform);
-            let t = Mat4::from_translation(m.w_axis.truncate());
-            let mut l = m;
-            l.w_axis = glam::Vec4::W;
-            Some((i, (t * d * l).to_cols_array_2d()))
+            Some((i, (w * m).to_cols_array_2d()))
         })
         .collect();
     FrameState { transforms, fields }
@@ -184,23 +186,31 @@ fn interpolate(times: &[f32], p: &[Vec<f32>], interp: Interp, t: f32) -> Vec<f32
     }
 }
 
-/// The motion matrix `D(t)` of one object track.
-fn object_motion(motion: &Motion, t: f32) -> Mat4 {
-    match motion {
+/// The world-space motion `W(t)` of one track of an object whose static transform is `m`: its
+/// motion `D(t)` about the pivot's world position `p`, `Tr(p) · D(t) · Tr(-p)` (the pivot is the
+/// object's origin except for a `spin` given one).
+fn world_motion(motion: &Motion, m: Mat4, t: f32) -> Mat4 {
+    let (d, pivot) = match motion {
         Motion::Spin {
             axis,
             degrees_per_second,
+            pivot,
         } => {
             let degrees = (f64::from(*degrees_per_second) * f64::from(t)) % 360.0;
-            Mat4::from_axis_angle(Vec3::from(*axis), (degrees as f32).to_radians())
+            let r = Mat4::from_axis_angle(Vec3::from(*axis), (degrees as f32).to_radians());
+            (r, Vec3::from(*pivot))
         }
-        Motion::Move { velocity } => Mat4::from_translation(Vec3::from(*velocity) * t),
+        Motion::Move { velocity } => {
+            return Mat4::from_translation(Vec3::from(*velocity) * t);
+        }
         Motion::Keys {
             times,
             values,
             interp,
-        } => keyed_transform(times, values, *interp, t),
-    }
+        } => (keyed_transform(times, values, *interp, t), Vec3::ZERO),
+    };
+    let p = m.transform_point3(pivot);
+    Mat4::from_translation(p) * d * Mat4::from_translation(-p)
 }
 
 /// A keyed transform at `t`: the key's matrix itself at a key (and under `step`), else the
@@ -358,6 +368,24 @@ import "std/lights/point.rt";
             Mat4::from_cols_array_2d(&d.objects[0].transform)
         ));
         assert_eq!(frame_time(6, 4), 1.5);
+    }
+
+    #[test]
+    fn spin_about_a_pivot_keeps_the_pivot_still() {
+        let d = scene(&format!(
+            "{HEAD}scene s {{ camera Pinhole {{}}
+                object b {{ geometry: cube_mesh(), material: Lambert {{}},
+                    transform: translate(vec3f(1.0, 0.0, 0.0)) * rotate_y(90.0) * translate(vec3f(0.2, 0.0, 0.0)) }}
+                animate b spin(vec3f(0.0, 1.0, 0.0), 30.0, vec3f(-0.2, 0.0, 0.0)) }}"
+        ));
+        let m0 = Mat4::from_cols_array_2d(&d.objects[0].transform);
+        for t in [0.5, 1.0, 3.0] {
+            let m = Mat4::from_cols_array_2d(&evaluate(&d, t).transforms[0].1);
+            let pivot = Vec3::new(-0.2, 0.0, 0.0);
+            let (a, b) = (m.transform_point3(pivot), m0.transform_point3(pivot));
+            assert!(a.abs_diff_eq(b, 1e-6), "{a} != {b}");
+            assert!(a.abs_diff_eq(Vec3::new(1.0, 0.0, 0.0), 1e-6));
+        }
     }
 
     #[test]

@@ -483,7 +483,7 @@ fn over(
 ) -> Option<Motion> {
     let n = name.name.as_str();
     let params: &[_] = match n {
-        "spin" => &[TypeTable::VEC3F, TypeTable::F32],
+        "spin" => &[TypeTable::VEC3F, TypeTable::F32, TypeTable::VEC3F],
         "move" => &[TypeTable::VEC3F],
         _ => {
             ck.err(SceneError::UnknownEntry {
@@ -527,11 +527,12 @@ fn over(
         }
         return None;
     }
-    if args.len() != params.len() {
+    let counts = if n == "spin" { vec![2, 3] } else { vec![1] };
+    if !counts.contains(&args.len()) {
         ck.err(ExprError::Arity {
             span,
             name: n.to_string(),
-            expected: vec![params.len()],
+            expected: counts,
             found: args.len(),
             decl: None,
         });
@@ -561,9 +562,14 @@ fn over(
                 ConstValue::Scalar(Scalar::F32(d)) => d,
                 _ => return None,
             };
+            let pivot = match values.get(2) {
+                Some((v, _)) => vec3(v)?,
+                None => [0.0; 3],
+            };
             Some(Motion::Spin {
                 axis: [v0[0] / len, v0[1] / len, v0[2] / len],
                 degrees_per_second,
+                pivot,
             })
         }
         _ => Some(Motion::Move { velocity: v0 }),

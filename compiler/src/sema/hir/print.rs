@@ -515,12 +515,16 @@ impl Printer<'_> {
                 Motion::Spin {
                     axis,
                     degrees_per_second,
+                    pivot,
                 } => format!(
-                    "spin(vec3f({}, {}, {}), {})",
+                    "spin(vec3f({}, {}, {}), {}, vec3f({}, {}, {}))",
                     float(axis[0]),
                     float(axis[1]),
                     float(axis[2]),
-                    float(*degrees_per_second)
+                    float(*degrees_per_second),
+                    float(pivot[0]),
+                    float(pivot[1]),
+                    float(pivot[2])
                 ),
                 Motion::Move { velocity } => format!(
                     "move(vec3f({}, {}, {}))",

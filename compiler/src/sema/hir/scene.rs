@@ -176,12 +176,14 @@ pub enum Motion {
         /// Between keys.
         interp: Interp,
     },
-    /// Turning about `axis` (unit length) through the object's origin: `degrees_per_second × t`.
+    /// Turning about `axis` (unit length) through the object's `pivot`: `degrees_per_second × t`.
     Spin {
         /// Unit axis, world space.
         axis: [f32; 3],
         /// Degrees per second.
         degrees_per_second: f32,
+        /// The point the axis goes through, in object space (the origin unless given).
+        pivot: [f32; 3],
     },
     /// Moving by `velocity × t` (an object's position, or a `vec3f` field's value).
     Move {
