@@ -816,6 +816,11 @@ impl<'g> Renderer<'g> {
         self.passes_done.saturating_mul(self.samples_per_pass)
     }
 
+    /// Samples per pixel a [`render`](Self::render) takes (the scene's, or the override).
+    pub fn total_samples(&self) -> u32 {
+        self.total_samples
+    }
+
     /// Samples per pixel one pass adds.
     pub fn samples_per_pass(&self) -> u32 {
         self.samples_per_pass
