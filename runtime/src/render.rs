@@ -799,6 +799,16 @@ impl<'g> Renderer<'g> {
         }
     }
 
+    /// The index of the object called `name` (a scene `object NAME`, or a model node's
+    /// `file.glb#nodes[i]`), for [`set_transform`](Self::set_transform) and
+    /// [`FieldTarget::Material`].
+    pub fn object_index(&self, name: &str) -> Option<usize> {
+        self.entities
+            .objects()
+            .iter()
+            .position(|o| o.name.as_deref() == Some(name))
+    }
+
     /// The assets and object-level BVHs kept across kernel replacements, and its counters.
     pub fn store(&self) -> &AssetStore {
         &self.store

@@ -229,6 +229,7 @@ fn moving_objects_rebuilds_only_the_scene_level() {
         let spin = Mat4::from_translation(Vec3::new(0.0, 0.5, -0.5))
             * Mat4::from_rotation_y(angle)
             * Mat4::from_scale(Vec3::splat(0.5));
+        assert_eq!(r.object_index("ball"), Some(3));
         r.set_transform(3, spin).expect("move the ball");
         r.set_transform(
             1,
@@ -286,7 +287,14 @@ fn replacing_the_kernel_reads_no_file_and_builds_no_blas() {
         &after.image,
         &fresh(&gpu, &edited, 4),
     );
-    // A changed file is read again (its stamp differs).
+    // A file saved again with the same content is hashed, not loaded: nothing is rebuilt.
+    std::thread::sleep(std::time::Duration::from_millis(20));
+    std::fs::write(dir.join("tri.obj"), TRI_OBJ).expect("save again");
+    r.replace_kernel(&edited).expect("replace");
+    let same = r.render(&mut |_, _| {}).expect("render").stats;
+    assert_eq!(same.files_read, 1, "same content: not loaded again");
+    assert_eq!(same.blas_builds, first.blas_builds, "same content: no BLAS");
+    // A changed file is loaded again, and only its BLAS is built.
     std::fs::write(dir.join("tri.obj"), format!("{TRI_OBJ}# edited\n")).expect("edit");
     r.replace_kernel(&edited).expect("replace");
     let third = r.render(&mut |_, _| {}).expect("render").stats;

@@ -18,7 +18,7 @@ use std::sync::Arc;
 
 use rtc_compiler::sema::hir::{ConstValue, MeshAsset, TextureAsset};
 
-use super::store::{AssetStore, Stamp};
+use super::store::{AssetStore, Stamp, Version};
 use super::SceneError;
 use crate::assets::confine::resolve_scene_path;
 use crate::assets::model::ModelScene;
@@ -89,7 +89,7 @@ impl TextureKey {
 /// came from; what is not in `store` yet is loaded and put there.
 #[derive(Default)]
 pub(super) struct AssetCache {
-    pub meshes: Vec<(MeshKey, Arc<MeshData>, Stamp)>,
+    pub meshes: Vec<(MeshKey, Arc<MeshData>, Version)>,
     pub textures: Vec<(TextureKey, Arc<TextureData>)>,
     /// Assets and BVHs kept across builds (the caller's, moved in for the build).
     pub store: AssetStore,
@@ -149,8 +149,8 @@ impl AssetCache {
             _ => None,
         };
         let stamp = file.as_deref().map_or(Stamp::NONE, Stamp::of);
-        let data = match self.store.mesh(&key, stamp) {
-            Some(data) => data,
+        let (version, data) = match self.store.mesh(&key, stamp, file.as_deref()) {
+            Some(hit) => hit,
             None => {
                 let mut data = match (asset, &file) {
                     (MeshAsset::File { span, .. }, Some(file)) => {
@@ -166,75 +166,77 @@ impl AssetCache {
                 };
                 data.ensure_normals();
                 let data = Arc::new(data);
-                self.store
-                    .put_mesh(key.clone(), stamp, Arc::clone(&data), file.is_some());
-                data
+                let version =
+                    self.store
+                        .put_mesh(key.clone(), stamp, file.as_deref(), Arc::clone(&data));
+                (version, data)
             }
         };
         let i = self.meshes.len();
-        self.meshes.push((key.clone(), data, stamp));
+        self.meshes.push((key.clone(), data, version));
         self.mesh_index.insert(key, i);
         Ok(i)
     }
 
-    /// The index of a mesh that does not come from the scene's text (a glTF model's, stamped
-    /// with the model file's `stamp`), made by `make` on first use unless the store has it.
+    /// The index of a mesh that does not come from the scene's text (a glTF model's, made from
+    /// the model file of `version`), made by `make` on first use unless the store has it.
     pub fn insert_mesh(
         &mut self,
         key: MeshKey,
-        stamp: Stamp,
+        version: Version,
         make: impl FnOnce() -> MeshData,
     ) -> usize {
         if let Some(&i) = self.mesh_index.get(&key) {
             return i;
         }
-        let data = match self.store.mesh(&key, stamp) {
+        let data = match self.store.derived_mesh(&key, version) {
             Some(data) => data,
             None => {
                 let mut data = make();
                 data.ensure_normals();
                 let data = Arc::new(data);
                 self.store
-                    .put_mesh(key.clone(), stamp, Arc::clone(&data), false);
+                    .put_derived_mesh(key.clone(), version, Arc::clone(&data));
                 data
             }
         };
         let i = self.meshes.len();
-        self.meshes.push((key.clone(), data, stamp));
+        self.meshes.push((key.clone(), data, version));
         self.mesh_index.insert(key, i);
         i
     }
 
-    /// A glTF file (confined already), read once per stamp.
-    pub fn model(&mut self, file: &Path) -> Result<Arc<ModelScene>, AssetError> {
+    /// A glTF file (confined already), read once per content, and its version.
+    pub fn model(&mut self, file: &Path) -> Result<(Version, Arc<ModelScene>), AssetError> {
         let stamp = Stamp::of(file);
-        if let Some(model) = self.store.model(file, stamp) {
-            return Ok(model);
+        if let Some(hit) = self.store.model(file, stamp) {
+            return Ok(hit);
         }
         let model = Arc::new(load_gltf_with(file, &self.roots)?);
-        self.store
+        let version = self
+            .store
             .put_model(file.to_path_buf(), stamp, Arc::clone(&model));
-        Ok(model)
+        Ok((version, model))
     }
 
     /// The index of a texture that does not come from the scene's text (a glTF model's image,
-    /// keyed `file.glb#images[i]`, stamped with the model file's `stamp`), made by `make` on first
-    /// use unless the store has it.
+    /// keyed `file.glb#images[i]`, made from the model file of `version`), made by `make` on
+    /// first use unless the store has it.
     pub fn insert_texture(
         &mut self,
         key: TextureKey,
-        stamp: Stamp,
+        version: Version,
         make: impl FnOnce() -> TextureData,
     ) -> usize {
         if let Some(&i) = self.texture_index.get(&key) {
             return i;
         }
-        let data = match self.store.texture(&key, stamp) {
+        let data = match self.store.derived_texture(&key, version) {
             Some(data) => data,
             None => {
                 let data = Arc::new(make());
                 self.store
-                    .put_texture(key.clone(), stamp, Arc::clone(&data), false);
+                    .put_derived_texture(key.clone(), version, Arc::clone(&data));
                 data
             }
         };
@@ -260,7 +262,7 @@ impl AssetCache {
             TextureAsset::Solid(_) => None,
         };
         let stamp = file.as_deref().map_or(Stamp::NONE, Stamp::of);
-        let data = match self.store.texture(&key, stamp) {
+        let data = match self.store.texture(&key, stamp, file.as_deref()) {
             Some(data) => data,
             None => {
                 let data = match (asset, &file) {
@@ -280,7 +282,7 @@ impl AssetCache {
                 };
                 let data = Arc::new(data);
                 self.store
-                    .put_texture(key.clone(), stamp, Arc::clone(&data), file.is_some());
+                    .put_texture(key.clone(), stamp, file.as_deref(), Arc::clone(&data));
                 data
             }
         };

@@ -479,15 +479,15 @@ impl Entities {
         let mut triangles = Vec::new();
         let mut attributes = Vec::new();
         let mut meshes = Vec::with_capacity(cache.meshes.len());
-        for (key, data, stamp) in &cache.meshes {
-            let built = match cache.store.blas(key, options.bvh, *stamp) {
+        for (key, data, version) in &cache.meshes {
+            let built = match cache.store.blas(key, options.bvh, *version) {
                 Some(built) => built,
                 None => {
                     let built = Arc::new(build_mesh(key, data, options.bvh)?);
                     stats.blas_builds += 1;
                     cache
                         .store
-                        .put_blas(key.clone(), options.bvh, *stamp, Arc::clone(&built));
+                        .put_blas(key.clone(), options.bvh, *version, Arc::clone(&built));
                     built
                 }
             };

@@ -114,7 +114,7 @@ pub use entities::{
 pub use gpu_types::{
     element_size, field_offset, struct_align, struct_size, FrameUniforms, GpuInstance,
 };
-pub use store::{AssetStore, BuiltMesh, Stamp, StoreCounters};
+pub use store::{AssetStore, BuiltMesh, Stamp, StoreCounters, Version};
 pub use upload::{runtime_binding, Counters, GpuScene, UploadReport};
 
 use rtc_compiler::diag::{codes, Diagnostic};

@@ -40,7 +40,7 @@ use rtc_compiler::sema::hir::{
 use rtc_compiler::Span;
 
 use super::assets_cache::{AssetCache, MeshKey, TextureKey};
-use super::store::Stamp;
+use super::store::Version;
 use super::SceneError;
 use crate::assets::model::{AlphaMode, LightKind, ModelScene, Projection};
 use crate::assets::solid_texture;
@@ -91,7 +91,7 @@ pub(super) fn import(
     let mut parts = ModelParts::default();
     // Each file once, with the name messages give it: the file read, which may lie in an asset
     // root rather than next to the scene.
-    let mut loaded: HashMap<PathBuf, (Arc<ModelScene>, String, Stamp)> = HashMap::new();
+    let mut loaded: HashMap<PathBuf, (Arc<ModelScene>, String, Version)> = HashMap::new();
     for model in &scene.models {
         if !loaded.contains_key(&model.path) {
             let file = cache
@@ -100,11 +100,10 @@ pub(super) fn import(
                     span: Some(model.span),
                     source,
                 })?;
-            let data = cache.model(&file).map_err(|source| SceneError::Asset {
+            let (stamp, data) = cache.model(&file).map_err(|source| SceneError::Asset {
                 span: Some(model.span),
                 source,
             })?;
-            let stamp = Stamp::of(&file);
             let name = file.display().to_string();
             parts
                 .warnings
@@ -199,7 +198,7 @@ fn image_path(file: &Path, image: usize) -> PathBuf {
 fn import_one(
     types: Types<'_>,
     model: &Model,
-    (name, data, stamp): (&str, &ModelScene, Stamp),
+    (name, data, stamp): (&str, &ModelScene, Version),
     wants_camera: bool,
     cache: &mut AssetCache,
     parts: &mut ModelParts,
@@ -229,7 +228,7 @@ fn import_one(
     let white = [1.0f32; 4];
     cache.insert_texture(
         TextureKey::Solid(white.map(f32::to_bits)),
-        Stamp::NONE,
+        Version::NONE,
         || solid_texture(white),
     );
 
