@@ -301,3 +301,56 @@ fn replacing_the_kernel_reads_no_file_and_builds_no_blas() {
     assert_eq!(third.files_read, 2, "the edited tri.obj");
     assert_eq!(third.blas_builds, first.blas_builds + 1, "its BLAS only");
 }
+
+#[test]
+fn a_kernel_replacement_of_a_custom_geometry_scene_runs_the_bounds_kernel_again() {
+    let Some(gpu) =
+        gpu_or_skip("a_kernel_replacement_of_a_custom_geometry_scene_runs_the_bounds_kernel_again")
+    else {
+        return;
+    };
+    let dir = temp_dir("session", "custom");
+    let ball = |albedo: [f64; 3]| {
+        SceneFile::open("render/lit_ball.rt")
+            .set("SIZE", "17u")
+            .set("ALBEDO", vec3f(albedo))
+            .compile(&dir)
+    };
+    let mut r =
+        Renderer::new(&gpu, &ball([0.5, 0.25, 1.0]), RenderOptions::default()).expect("renderer");
+    r.render(&mut |_, _| {}).expect("render");
+    let edited = ball([1.0, 0.5, 0.0]);
+    r.replace_kernel(&edited).expect("replace");
+    let after = r.render(&mut |_, _| {}).expect("render").image;
+    assert_same(
+        "a custom-geometry scene after a kernel replacement",
+        &after,
+        &fresh(&gpu, &edited, 1),
+    );
+    // A light's field written in place equals the scene compiled with it.
+    r.set_field(
+        FieldTarget::Light(0),
+        "intensity",
+        &ConstValue::Scalar(Scalar::F32(9.0)),
+    )
+    .expect("set intensity");
+    r.render(&mut |_, _| {}).expect("render");
+    let brighter = SceneFile::open("render/lit_ball.rt")
+        .set("SIZE", "17u")
+        .set("ALBEDO", vec3f([1.0, 0.5, 0.0]))
+        .set("INTENSITY", "9.0")
+        .compile(&dir);
+    assert_same(
+        "a light's intensity written in place",
+        &r.image().expect("image"),
+        &fresh(&gpu, &brighter, 1),
+    );
+    // A move of the ball: the scene level only.
+    r.set_transform(
+        0,
+        Mat4::from_translation(Vec3::new(0.3, 0.5, 0.0)) * Mat4::from_scale(Vec3::splat(2.0)),
+    )
+    .expect("move");
+    let moved = r.render(&mut |_, _| {}).expect("render");
+    assert!(moved.image.pixels() != after.pixels(), "the ball moved");
+}
