@@ -640,6 +640,13 @@ impl<'g> Renderer<'g> {
         self.size
     }
 
+    /// The `accum` storage buffer the kernel adds samples to: per pixel a `vec4<f32>` (rgb sums,
+    /// a = sample count), row-major, `width * height` entries (the buffer may be longer). `None`
+    /// when the kernel declares no `accum`.
+    pub fn accumulation_buffer(&self) -> Option<&wgpu::Buffer> {
+        self.scene.buffers().buffer(abi::binding("accum")?.binding)
+    }
+
     /// Moves object `object` (its new object-to-world matrix); the next render rebuilds the
     /// scene-level BVH and uploads only `nodes` and `instances`.
     pub fn set_transform(&mut self, object: usize, transform: Mat4) -> Result<(), RenderError> {
