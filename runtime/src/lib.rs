@@ -13,6 +13,8 @@
 //!   format.
 //! - [`render`]: from a `CompiledScene` to an image: entities, uploads, pipelines, passes of tiled
 //!   dispatch, read-back, statistics.
+//! - [`resolve`]: the accumulation buffer to a texture or buffer a host application owns, on the
+//!   GPU (tone-mapped sRGB bytes as in the PNG, or linear floats), recorded into the host's encoder.
 //!
 //! Invariants of the whole crate: it never exits the process and never panics on run-time
 //! failures; every fallible operation returns a typed error (`thiserror` enums, one per module).
@@ -23,4 +25,5 @@ pub mod bvh_view;
 pub mod gpu;
 pub mod image_out;
 pub mod render;
+pub mod resolve;
 pub mod scene;

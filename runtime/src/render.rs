@@ -58,7 +58,8 @@ use crate::gpu::{
     dispatch_once, plan_tiles, BufferLimits, DispatchError, Gpu, Kernel, KernelDesc, KernelReport,
     KernelSource, PipelineCacheStatus, PipelineError, RoundKernels, TileConfig, TileDispatcher,
 };
-use crate::image_out::{ImageError, LinearImage};
+use crate::image_out::{ImageError, LinearImage, ToneMap};
+use crate::resolve::{ResolveError, ResolveTarget, Resolver};
 use crate::scene::{
     Entities, EntityOptions, FrameUniforms, GpuScene, ObjectGeometry, SceneError, UploadReport,
 };
@@ -98,6 +99,9 @@ pub enum RenderError {
     /// The accumulation could not be turned into an image.
     #[error(transparent)]
     Image(#[from] ImageError),
+    /// The accumulation could not be resolved into the host's target.
+    #[error(transparent)]
+    Resolve(#[from] ResolveError),
     /// The image size is zero.
     #[error("cannot render a {width}x{height} image: both sides must be at least 1")]
     BadSize {
@@ -256,6 +260,8 @@ pub struct Renderer<'g> {
     total_samples: u32,
     setup: Setup,
     written_at_setup: Vec<&'static str>,
+    /// The resolve pass ([`Renderer::resolve_into`]), its pipelines created on first use.
+    resolver: Resolver,
 }
 
 /// The render kernel, or the wavefront model's stage kernels (in `wavefront::STAGES` order).
@@ -622,6 +628,7 @@ impl<'g> Renderer<'g> {
             total_samples,
             setup,
             written_at_setup,
+            resolver: Resolver::new(),
         })
     }
 
@@ -645,6 +652,44 @@ impl<'g> Renderer<'g> {
     /// when the kernel declares no `accum`.
     pub fn accumulation_buffer(&self) -> Option<&wgpu::Buffer> {
         self.scene.buffers().buffer(abi::binding("accum")?.binding)
+    }
+
+    /// Records the resolve of the current accumulation (the running average, as
+    /// [`Renderer::render`] left it) into `target`, a texture or buffer the caller owns: the
+    /// PNG's sRGB bytes (tone-mapped with `tone`) or linear floats, by the target's format (see
+    /// [`crate::resolve`]). With `encoder` the pass is recorded there and the caller submits it,
+    /// ordered after this renderer's own submissions; without, it is submitted at once on the
+    /// queue. Neither blocks nor reads back.
+    pub fn resolve_into(
+        &self,
+        target: ResolveTarget<'_>,
+        tone: &ToneMap,
+        encoder: Option<&mut wgpu::CommandEncoder>,
+    ) -> Result<(), RenderError> {
+        let accum = self
+            .accumulation_buffer()
+            .ok_or(ResolveError::NoAccumulation)?;
+        match encoder {
+            Some(encoder) => {
+                self.resolver
+                    .encode(self.gpu, encoder, accum, self.size, target, tone)?;
+            }
+            None => {
+                let device = self.gpu.device();
+                let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                    label: Some("rtc resolve"),
+                });
+                self.resolver
+                    .encode(self.gpu, &mut encoder, accum, self.size, target, tone)?;
+                let ((), error) = self.gpu.scoped(|| {
+                    self.gpu.queue().submit([encoder.finish()]);
+                });
+                if let Some(message) = error {
+                    return Err(ResolveError::Wgpu(message).into());
+                }
+            }
+        }
+        Ok(())
     }
 
     /// Moves object `object` (its new object-to-world matrix); the next render rebuilds the
