@@ -3,10 +3,10 @@
 //! against them ([`missing_capabilities`]), and the typed error naming every shortfall
 //! ([`FromDeviceError`]).
 //!
-//! Guarantees: the check compares exactly the limits listed in `CHECKED`, each against the value
-//! [`required_limits`] requests, so a device created with `required_limits()` (or with its
-//! adapter's own limits, when they are at least as good) always passes; every failing limit is
-//! reported, not only the first. Scene-dependent limits (the size of one storage binding) are not
+//! Guarantees: the check compares exactly the limits listed in `CHECKED`, each against what
+//! rtc's kernels need (tested against the ABI table), all within WebGPU's defaults, so a device
+//! created with `required_limits()` (WebGPU's defaults) or with its adapter's own limits always
+//! passes; every failing limit is reported, not only the first. Scene-dependent limits (the size of one storage binding) are not
 //! checked here: the buffer set reports them per binding when a scene exceeds them.
 
 use std::fmt;
@@ -56,50 +56,75 @@ pub enum FromDeviceError {
     },
 }
 
-/// The limits rtc checks on a host's device: the name and how to read it.
-type LimitField = (&'static str, fn(&wgpu::Limits) -> u64);
+/// A limit rtc checks on a host's device: its name, how to read it, and the least rtc needs.
+type LimitNeed = (&'static str, fn(&wgpu::Limits) -> u64, u64);
 
-/// Every limit [`missing_capabilities`] checks (all "higher is better").
-const CHECKED: &[LimitField] = &[
-    ("max_bind_groups", |l| l.max_bind_groups.into()),
-    ("max_bindings_per_bind_group", |l| {
-        l.max_bindings_per_bind_group.into()
-    }),
-    ("max_storage_buffers_per_shader_stage", |l| {
-        l.max_storage_buffers_per_shader_stage.into()
-    }),
-    ("max_uniform_buffers_per_shader_stage", |l| {
-        l.max_uniform_buffers_per_shader_stage.into()
-    }),
-    ("max_dynamic_uniform_buffers_per_pipeline_layout", |l| {
-        l.max_dynamic_uniform_buffers_per_pipeline_layout.into()
-    }),
-    ("max_storage_textures_per_shader_stage", |l| {
-        l.max_storage_textures_per_shader_stage.into()
-    }),
-    ("max_compute_workgroup_size_x", |l| {
-        l.max_compute_workgroup_size_x.into()
-    }),
-    ("max_compute_workgroup_size_y", |l| {
-        l.max_compute_workgroup_size_y.into()
-    }),
-    ("max_compute_invocations_per_workgroup", |l| {
-        l.max_compute_invocations_per_workgroup.into()
-    }),
+/// Storage buffers one rtc kernel binds at most: every storage binding of the ABI but the
+/// wavefront model's `paths` (the megakernel), or one wavefront stage's subset (tested in the
+/// compiler), within WebGPU's default of 8.
+pub const KERNEL_STORAGE_BUFFERS: u32 = 8;
+
+/// Every limit [`missing_capabilities`] checks (all "higher is better"), with what rtc's kernels
+/// (group 0 only, 11 dense bindings, 8 x 8 and 64 x 1 workgroups, a dynamic-offset tile uniform
+/// and the frame uniform) and its resolve pass (one storage texture) need.
+const CHECKED: &[LimitNeed] = &[
+    ("max_bind_groups", |l| l.max_bind_groups.into(), 1),
+    (
+        "max_bindings_per_bind_group",
+        |l| l.max_bindings_per_bind_group.into(),
+        11,
+    ),
+    (
+        "max_storage_buffers_per_shader_stage",
+        |l| l.max_storage_buffers_per_shader_stage.into(),
+        KERNEL_STORAGE_BUFFERS as u64,
+    ),
+    (
+        "max_uniform_buffers_per_shader_stage",
+        |l| l.max_uniform_buffers_per_shader_stage.into(),
+        2,
+    ),
+    (
+        "max_buffers_and_acceleration_structures_per_shader_stage",
+        |l| {
+            l.max_buffers_and_acceleration_structures_per_shader_stage
+                .into()
+        },
+        KERNEL_STORAGE_BUFFERS as u64 + 2,
+    ),
+    (
+        "max_dynamic_uniform_buffers_per_pipeline_layout",
+        |l| l.max_dynamic_uniform_buffers_per_pipeline_layout.into(),
+        1,
+    ),
+    (
+        "max_storage_textures_per_shader_stage",
+        |l| l.max_storage_textures_per_shader_stage.into(),
+        1,
+    ),
+    (
+        "max_compute_workgroup_size_x",
+        |l| l.max_compute_workgroup_size_x.into(),
+        64,
+    ),
+    (
+        "max_compute_workgroup_size_y",
+        |l| l.max_compute_workgroup_size_y.into(),
+        8,
+    ),
+    (
+        "max_compute_invocations_per_workgroup",
+        |l| l.max_compute_invocations_per_workgroup.into(),
+        64,
+    ),
 ];
 
-/// Storage buffers one rtc kernel binds: every storage binding of the ABI (`nodes` … `paths`).
-pub const KERNEL_STORAGE_BUFFERS: u32 = 9;
-
-/// The limits to request when creating a device for rtc: WebGPU's defaults, with room for the
-/// [`KERNEL_STORAGE_BUFFERS`] storage buffers of a kernel (the default allows 8). Every native
-/// Vulkan, Metal and DX12 adapter offers them. A storage binding is then at most 128 MiB (the
-/// WebGPU default); request `adapter.limits()` instead for scenes with larger buffers.
+/// The limits to request when creating a device for rtc: WebGPU's defaults, which cover every
+/// limit rtc checks. A storage binding is then at most 128 MiB; request `adapter.limits()` (or at
+/// least its `max_storage_buffer_binding_size` and `max_buffer_size`) for scenes with larger
+/// buffers.
 pub fn required_limits() -> wgpu::Limits {
-    wgpu::Limits {
-        max_storage_buffers_per_shader_stage: KERNEL_STORAGE_BUFFERS,
-        ..wgpu::Limits::default()
-    }
+    wgpu::Limits::default()
 }
 
 /// What `limits` (a device's) and `downlevel` (its adapter's) lack for rtc, empty when nothing.
@@ -107,11 +132,10 @@ pub fn missing_capabilities(
     limits: &wgpu::Limits,
     downlevel: &wgpu::DownlevelCapabilities,
 ) -> Vec<MissingCapability> {
-    let required = required_limits();
     let mut missing: Vec<MissingCapability> = CHECKED
         .iter()
-        .filter_map(|(name, get)| {
-            let (have, need) = (get(limits), get(&required));
+        .filter_map(|&(name, get, need)| {
+            let have = get(limits);
             (have < need).then_some(MissingCapability::Limit { name, have, need })
         })
         .collect();
@@ -129,39 +153,52 @@ mod tests {
     use super::*;
 
     #[test]
-    fn required_limits_cover_the_kernel_abi() {
+    fn the_checked_limits_cover_the_kernel_abi() {
         use rtc_compiler::abi::BINDINGS;
         use rtc_compiler::back::ResourceKind;
+        let need = |name: &str| {
+            CHECKED
+                .iter()
+                .find(|c| c.0 == name)
+                .map(|c| c.2)
+                .unwrap_or_else(|| panic!("{name} is not checked"))
+        };
         let storage = BINDINGS
             .iter()
-            .filter(|b| {
-                matches!(
-                    b.kind,
-                    ResourceKind::StorageRead | ResourceKind::StorageReadWrite
-                )
-            })
-            .count();
-        assert_eq!(storage as u32, KERNEL_STORAGE_BUFFERS);
-        let highest = BINDINGS.iter().map(|b| b.binding).max().unwrap_or(0);
-        assert!(required_limits().max_bindings_per_bind_group > highest);
+            .filter(|b| b.kind != ResourceKind::Uniform && b.name != "paths")
+            .count() as u64;
+        assert_eq!(storage, u64::from(KERNEL_STORAGE_BUFFERS));
+        assert_eq!(need("max_storage_buffers_per_shader_stage"), storage);
+        let uniforms = BINDINGS
+            .iter()
+            .filter(|b| b.kind == ResourceKind::Uniform)
+            .count() as u64;
+        assert_eq!(need("max_uniform_buffers_per_shader_stage"), uniforms);
+        assert_eq!(need("max_bindings_per_bind_group"), BINDINGS.len() as u64);
         let [x, y] = rtc_compiler::kernel::RENDER_WORKGROUP;
-        let l = required_limits();
-        assert!(l.max_compute_workgroup_size_x >= x.max(rtc_compiler::kernel::BOUNDS_WORKGROUP));
-        assert!(l.max_compute_workgroup_size_y >= y);
-        assert!(l.max_compute_invocations_per_workgroup >= x * y);
+        let bounds = rtc_compiler::kernel::BOUNDS_WORKGROUP;
+        assert_eq!(
+            need("max_compute_workgroup_size_x"),
+            u64::from(x.max(bounds))
+        );
+        assert_eq!(need("max_compute_workgroup_size_y"), u64::from(y));
+        assert_eq!(
+            need("max_compute_invocations_per_workgroup"),
+            u64::from((x * y).max(bounds))
+        );
     }
 
     #[test]
-    fn required_limits_pass_and_defaults_name_what_is_missing() {
+    fn webgpu_defaults_pass_and_lower_limits_name_what_is_missing() {
         let downlevel = wgpu::DownlevelCapabilities::default();
         assert_eq!(missing_capabilities(&required_limits(), &downlevel), []);
-        let missing = missing_capabilities(&wgpu::Limits::default(), &downlevel);
+        let missing = missing_capabilities(&wgpu::Limits::downlevel_defaults(), &downlevel);
         assert_eq!(
             missing,
             [MissingCapability::Limit {
                 name: "max_storage_buffers_per_shader_stage",
-                have: 8,
-                need: u64::from(KERNEL_STORAGE_BUFFERS),
+                have: 4,
+                need: 8,
             }]
         );
         let none = wgpu::DownlevelCapabilities {
@@ -179,7 +216,10 @@ mod tests {
             missing,
         };
         let text = error.to_string();
-        assert!(text.contains("`max_storage_buffers_per_shader_stage` is 0, rtc needs at least 9"));
-        assert!(text.contains("help: create the device with"));
+        assert!(
+            text.contains("`max_storage_buffers_per_shader_stage` is 0, rtc needs at least 8"),
+            "{text}"
+        );
+        assert!(text.contains("help: create the device with"), "{text}");
     }
 }
