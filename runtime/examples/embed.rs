@@ -3,19 +3,23 @@
 //! ([`Gpu::from_device`]), builds one [`Renderer`] for a scene, and each frame renders into the
 //! accumulation buffer, which the host resolves into a texture it owns ([`Renderer::resolve_into`],
 //! recorded into the host's encoder) and draws over the window with its own fullscreen-triangle
-//! pipeline. Each frame the camera orbits the scene's look-at point and the objects spin in place
-//! (every object but those named `floor` or `ground`), so every frame is a fresh one-sample image
-//! (a moved object or camera resets the accumulation); the example prints the frame pacing.
+//! pipeline. Each frame the camera orbits the scene's look-at point (`Renderer::set_field` on the
+//! camera's `position`) and the objects spin in place (`Renderer::set_transform` on every object
+//! but those named `floor` or `ground`: the scene-level BVH is rebuilt, no object's), then one pass
+//! is added (`Renderer::accumulate(1)`), so every frame is a fresh one-sample image (a change
+//! restarts the accumulation); the example prints the frame pacing.
 //!
 //! ```text
 //! cargo run --release -p rtc-runtime --example embed -- [SCENE.rt] [--size WxH] [--frames N]
-//!     [--headless] [--report-every N] [--save PNG]
+//!     [--headless] [--still] [--report-every N] [--save PNG]
 //! ```
 //!
 //! - `SCENE.rt`: the scene (default: `examples/thesis_scene/scene.rt`, its 17 bunnies);
 //! - `--size WxH`: the image size (default 320x180; the window opens at this size);
 //! - `--frames N`: stop after N frames (default: until the window is closed; 60 headless);
 //! - `--headless`: no window: draw into an offscreen texture, as a test or CI without a display;
+//! - `--still`: move nothing: each frame adds one sample per pixel to the running accumulation
+//!   (progressive refinement in the host's texture);
 //! - `--report-every N`: print min/mean/max milliseconds per frame every N frames (default 10);
 //! - `--save PNG`: write the last frame drawn (headless only) to a PNG file.
 //!
@@ -34,7 +38,7 @@ use rtc_compiler::link::LinkOptions;
 use rtc_compiler::sema::hir::{ConstValue, Scalar};
 use rtc_runtime::gpu::{required_limits, Gpu, GpuOptions};
 use rtc_runtime::image_out::ToneMap;
-use rtc_runtime::render::{RenderOptions, Renderer};
+use rtc_runtime::render::{FieldTarget, RenderOptions, Renderer};
 use rtc_runtime::resolve::ResolveTarget;
 use winit::application::ApplicationHandler;
 use winit::event::WindowEvent;
@@ -49,9 +53,10 @@ struct Args {
     headless: bool,
     report_every: u64,
     save: Option<PathBuf>,
+    still: bool,
 }
 
-const USAGE: &str = "usage: embed [SCENE.rt] [--size WxH] [--frames N] [--headless] \
+const USAGE: &str = "usage: embed [SCENE.rt] [--size WxH] [--frames N] [--headless] [--still] \
                      [--report-every N] [--save PNG]";
 
 fn parse_args() -> Result<Args, String> {
@@ -62,12 +67,14 @@ fn parse_args() -> Result<Args, String> {
         headless: false,
         report_every: 10,
         save: None,
+        still: false,
     };
     let mut it = std::env::args().skip(1);
     while let Some(arg) = it.next() {
         let mut value = |name: &str| it.next().ok_or(format!("{name} needs a value\n{USAGE}"));
         match arg.as_str() {
             "--headless" => args.headless = true,
+            "--still" => args.still = true,
             "--frames" => {
                 let v = value("--frames")?;
                 args.frames = Some(
@@ -143,13 +150,15 @@ fn camera_vec3(compiled: &CompiledScene, field: &str) -> Option<Vec3> {
 
 /// What moves: the camera around `center`, and the objects `spinning` about their own up axis.
 struct Motion {
+    /// `--still`: nothing moves, and each frame adds a sample to the running accumulation.
+    still: bool,
     center: Vec3,
     start: Vec3,
     spinning: Vec<(usize, Mat4)>,
 }
 
 impl Motion {
-    fn new(compiled: &CompiledScene, renderer: &Renderer<'_>) -> Motion {
+    fn new(compiled: &CompiledScene, renderer: &Renderer<'_>, still: bool) -> Motion {
         let start = camera_vec3(compiled, "position").unwrap_or(Vec3::new(0.0, 1.0, 3.0));
         let center = camera_vec3(compiled, "look_at").unwrap_or(Vec3::ZERO);
         let objects = renderer.entities().objects();
@@ -163,6 +172,7 @@ impl Motion {
             spinning.extend(objects.first().map(|o| (0, o.transform)));
         }
         Motion {
+            still,
             center,
             start,
             spinning,
@@ -174,8 +184,19 @@ impl Motion {
         let t = frame as f32;
         // A full orbit every 360 frames, a full turn of each object every 120.
         let orbit = Mat4::from_rotation_y(t.to_radians());
-        let _position = self.center + orbit.transform_vector3(self.start - self.center);
-        // TODO(after merging main): renderer.set_field(FieldTarget::Camera, "position", ...).
+        let p = self.center + orbit.transform_vector3(self.start - self.center);
+        let position = ConstValue::Vector {
+            len: 3,
+            comps: [
+                Scalar::F32(p.x),
+                Scalar::F32(p.y),
+                Scalar::F32(p.z),
+                Scalar::F32(0.0),
+            ],
+        };
+        renderer
+            .set_field(FieldTarget::Camera, "position", &position)
+            .map_err(|e| e.to_string())?;
         for (i, (object, base)) in self.spinning.iter().enumerate() {
             let phase = i as f32 * 0.7;
             let spin = Mat4::from_rotation_y(t * 3.0_f32.to_radians() + phase);
@@ -187,13 +208,18 @@ impl Motion {
     }
 }
 
-/// Milliseconds per frame, reported every `every` frames.
+/// Milliseconds per frame, reported every `every` frames, with the parts rtc's figures name.
 struct Pacing {
     every: u64,
     frames: u64,
     window: Vec<f64>,
     all: Vec<f64>,
     last: Option<Instant>,
+    /// Over the window: the passes' GPU time, the scene-level BVH rebuilds, the uploads (ms).
+    parts: [f64; 3],
+    /// The last frame's accumulated samples per pixel and BLAS builds so far.
+    spp: u32,
+    blas_builds: u32,
 }
 
 impl Pacing {
@@ -204,6 +230,9 @@ impl Pacing {
             window: Vec::new(),
             all: Vec::new(),
             last: None,
+            parts: [0.0; 3],
+            spp: 0,
+            blas_builds: 0,
         }
     }
 
@@ -214,7 +243,12 @@ impl Pacing {
 
     /// Records the end of a frame (the time since the previous frame's end, or since
     /// [`Pacing::start`]).
-    fn frame_done(&mut self) {
+    fn frame_done(&mut self, stats: &FrameStats) {
+        self.parts[0] += stats.render_ms;
+        self.parts[1] += stats.bvh_ms;
+        self.parts[2] += stats.upload_ms;
+        self.spp = stats.spp;
+        self.blas_builds = stats.blas_builds;
         let now = Instant::now();
         if let Some(last) = self.last {
             let ms = (now - last).as_secs_f64() * 1e3;
@@ -224,8 +258,20 @@ impl Pacing {
         self.last = Some(now);
         self.frames += 1;
         if self.window.len() as u64 >= self.every {
-            println!("frames {:>5}: {}", self.frames, summary(&self.window));
+            let n = self.window.len() as f64;
+            println!(
+                "frames {:>5}: {}; means: pass {:.1} ms, scene BVH {:.2} ms, upload {:.2} ms; \
+                 {} spp accumulated, {} BLAS builds",
+                self.frames,
+                summary(&self.window),
+                self.parts[0] / n,
+                self.parts[1] / n,
+                self.parts[2] / n,
+                self.spp,
+                self.blas_builds
+            );
             self.window.clear();
+            self.parts = [0.0; 3];
         }
     }
 
@@ -244,6 +290,15 @@ fn summary(ms: &[f64]) -> String {
         "ms per frame min {min:.1} mean {mean:.1} max {max:.1} ({:.1} fps)",
         1e3 / mean
     )
+}
+
+/// What one frame's pass cost, from rtc's figures.
+struct FrameStats {
+    render_ms: f64,
+    bvh_ms: f64,
+    upload_ms: f64,
+    spp: u32,
+    blas_builds: u32,
 }
 
 /// The host's draw: a fullscreen triangle sampling the resolved texture.
@@ -368,10 +423,14 @@ impl Host {
         motion: &Motion,
         frame: u64,
         target: &wgpu::TextureView,
-    ) -> Result<(), String> {
-        motion.apply(renderer, frame)?;
-        // TODO(after merging main): renderer.accumulate(1, ...) instead of a fresh 1-spp render.
-        renderer.render(&mut |_, _| {}).map_err(|e| e.to_string())?;
+    ) -> Result<FrameStats, String> {
+        if !motion.still {
+            motion.apply(renderer, frame)?;
+        }
+        // One pass: a fresh image after the moves above, one more sample per pixel when still.
+        let stats = renderer
+            .accumulate(1, &mut |_, _| {})
+            .map_err(|e| e.to_string())?;
         let mut encoder = gpu
             .device()
             .create_command_encoder(&wgpu::CommandEncoderDescriptor {
@@ -406,7 +465,13 @@ impl Host {
             pass.draw(0..3, 0..1);
         }
         gpu.queue().submit([encoder.finish()]);
-        Ok(())
+        Ok(FrameStats {
+            render_ms: stats.render_ms,
+            bvh_ms: stats.bvh_build_ms,
+            upload_ms: stats.upload_ms,
+            spp: renderer.accumulated_samples(),
+            blas_builds: stats.blas_builds,
+        })
     }
 }
 
@@ -447,11 +512,10 @@ fn setup(
     let gpu: &'static Gpu = Box::leak(Box::new(gpu));
     let options = RenderOptions {
         size: Some(args.size),
-        samples: Some(1),
         ..RenderOptions::default()
     };
     let renderer = Renderer::new(gpu, &compiled, options).map_err(|e| e.to_string())?;
-    let motion = Motion::new(&compiled, &renderer);
+    let motion = Motion::new(&compiled, &renderer, args.still);
     println!(
         "{} on {}: {}x{}, {} objects ({} spinning), set up in {:.0} ms",
         args.scene.display(),
@@ -495,9 +559,9 @@ fn run_headless(args: &Args) -> Result<(), String> {
     let mut pacing = Pacing::new(args.report_every);
     pacing.start();
     for frame in 0..args.frames.unwrap_or(60) {
-        host.frame(gpu, &mut renderer, &motion, frame, &view)?;
+        let stats = host.frame(gpu, &mut renderer, &motion, frame, &view)?;
         gpu.wait_idle().map_err(|e| e.to_string())?;
-        pacing.frame_done();
+        pacing.frame_done(&stats);
     }
     pacing.finish();
     if let Some(path) = &args.save {
@@ -625,7 +689,7 @@ impl Windowed {
         let view = frame
             .texture
             .create_view(&wgpu::TextureViewDescriptor::default());
-        self.host.frame(
+        let stats = self.host.frame(
             self.gpu,
             &mut self.renderer,
             &self.motion,
@@ -635,7 +699,7 @@ impl Windowed {
         self.window.pre_present_notify();
         self.gpu.queue().present(frame);
         self.frame += 1;
-        self.pacing.frame_done();
+        self.pacing.frame_done(&stats);
         Ok(())
     }
 }

@@ -14,9 +14,10 @@ mod common;
 use common::image::{PixelCheck, Tolerance};
 use common::scene::SceneFile;
 use common::temp_dir;
+use rtc_compiler::sema::hir::{ConstValue, Scalar};
 use rtc_runtime::gpu::{required_limits, FromDeviceError, Gpu, GpuOptions, PipelineCacheConfig};
 use rtc_runtime::image_out::{to_srgb8, LinearImage, ToneCurve, ToneMap};
-use rtc_runtime::render::{RenderError, RenderOptions, Renderer};
+use rtc_runtime::render::{FieldTarget, RenderError, RenderOptions, Renderer};
 use rtc_runtime::resolve::{BufferFormat, ResolveError, ResolveTarget, Resolver};
 
 /// The host's side: an adapter, and a device created with `limits`; `None` (with a `SKIPPED`
@@ -292,6 +293,49 @@ fn a_render_resolves_into_host_textures_and_buffers_as_the_cpu_path_writes_it() 
         }
     }
     assert!(gpu.take_uncaptured_errors().is_empty());
+}
+
+/// The resolve reads the running accumulation: after a camera move and two `accumulate(1)` calls
+/// it shows the same two-sample average that `image()` reads back.
+#[test]
+fn the_resolve_follows_the_running_accumulation() {
+    let Some(gpu) = host_gpu("running accumulation") else {
+        return;
+    };
+    let dir = temp_dir("embed", "running");
+    let compiled = SceneFile::open("embed/lit_quad.rt").compile(&dir);
+    let mut renderer = Renderer::new(&gpu, &compiled, RenderOptions::default()).expect("renderer");
+    renderer.accumulate(1, &mut |_, _| {}).expect("first pass");
+    let before = renderer.image().expect("image");
+    let moved = ConstValue::Vector {
+        len: 3,
+        comps: [
+            Scalar::F32(0.4),
+            Scalar::F32(1.8),
+            Scalar::F32(0.3),
+            Scalar::F32(0.0),
+        ],
+    };
+    renderer
+        .set_field(FieldTarget::Camera, "position", &moved)
+        .expect("move the camera");
+    for _ in 0..2 {
+        renderer.accumulate(1, &mut |_, _| {}).expect("pass");
+    }
+    assert_eq!(renderer.accumulated_samples(), 2);
+    let image = renderer.image().expect("image");
+    assert_ne!(image, before, "the camera move changed nothing");
+    let texture = target_texture(&gpu, renderer.size(), wgpu::TextureFormat::Rgba32Float);
+    let mut enc = encoder(&gpu);
+    renderer
+        .resolve_into(
+            ResolveTarget::Texture(&texture),
+            &ToneMap::default(),
+            Some(&mut enc),
+        )
+        .expect("resolve");
+    let got = f32s(&read_texture(&gpu, enc, &texture, 16));
+    assert_linear("running accumulation", &got, &image, SINGLE);
 }
 
 /// Accumulation values the scene cannot make: no samples, NaN and infinite sums, a NaN count,
