@@ -21,7 +21,8 @@
 //! - `--still`: move nothing: each frame adds one sample per pixel to the running accumulation
 //!   (progressive refinement in the host's texture);
 //! - `--report-every N`: print min/mean/max milliseconds per frame every N frames (default 10);
-//! - `--save PNG`: write the last frame drawn (headless only) to a PNG file.
+//! - `--save PNG`: write the last frame drawn to a PNG file (in a window, read from the surface
+//!   itself when it allows copies, so it shows what the window shows).
 //!
 //! A frame's time covers the host's whole frame: moving the camera and the objects, the render
 //! (which waits for the GPU), recording and submitting the resolve and the draw, and (headless)
@@ -571,8 +572,12 @@ fn run_headless(args: &Args) -> Result<(), String> {
     Ok(())
 }
 
-/// Writes `texture` (Rgba8UnormSrgb) to a PNG.
+/// Writes `texture` (8-bit RGBA or BGRA, sRGB-encoded) to a PNG.
 fn save(gpu: &Gpu, texture: &wgpu::Texture, path: &Path) -> Result<(), String> {
+    let bgra = matches!(
+        texture.format(),
+        wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Bgra8UnormSrgb
+    );
     let (width, height) = (texture.width(), texture.height());
     let row = (4 * width).next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
     let buffer = gpu.device().create_buffer(&wgpu::BufferDescriptor {
@@ -603,10 +608,13 @@ fn save(gpu: &Gpu, texture: &wgpu::Texture, path: &Path) -> Result<(), String> {
         .slice(..)
         .get_mapped_range()
         .map_err(|e| e.to_string())?;
-    let rgba: Vec<u8> = mapped
+    let mut rgba: Vec<u8> = mapped
         .chunks(row as usize)
         .flat_map(|r| r[..4 * width as usize].to_vec())
         .collect();
+    if bgra {
+        rgba.chunks_exact_mut(4).for_each(|px| px.swap(0, 2));
+    }
     image::save_buffer(path, &rgba, width, height, image::ExtendedColorType::Rgba8)
         .map_err(|e| e.to_string())
 }
@@ -628,6 +636,9 @@ struct Windowed {
     host: Host,
     frame: u64,
     pacing: Pacing,
+    /// `--frames` and `--save`.
+    args_frames: Option<u64>,
+    save: Option<PathBuf>,
 }
 
 impl App {
@@ -653,9 +664,20 @@ impl App {
         .map_err(|e| format!("no adapter can draw to this window: {e}"))?;
         let (device, queue) = host_device(&adapter)?;
         let size = window.inner_size();
-        let config = surface
+        let mut config = surface
             .get_default_config(&adapter, size.width.max(1), size.height.max(1))
             .ok_or("the adapter cannot present to this window")?;
+        let copyable = surface
+            .get_capabilities(&adapter)
+            .usages
+            .contains(wgpu::TextureUsages::COPY_SRC);
+        if self.args.save.is_some() {
+            if copyable {
+                config.usage |= wgpu::TextureUsages::COPY_SRC;
+            } else {
+                eprintln!("embed: this surface cannot be copied from; --save is ignored");
+            }
+        }
         surface.configure(&device, &config);
         let (gpu, renderer, motion) = setup(&self.args, &adapter, &device, &queue)?;
         let host = Host::new(&device, self.args.size, config.format);
@@ -671,6 +693,8 @@ impl App {
             host,
             frame: 0,
             pacing,
+            args_frames: self.args.frames,
+            save: self.args.save.clone(),
         })
     }
 }
@@ -696,10 +720,18 @@ impl Windowed {
             self.frame,
             &view,
         )?;
+        // Timed here: the interval between frames still holds the previous present.
+        self.pacing.frame_done(&stats);
+        let last = self.args_frames.is_some_and(|n| self.frame + 1 >= n);
+        if let (true, Some(path)) = (last, &self.save) {
+            if self.config.usage.contains(wgpu::TextureUsages::COPY_SRC) {
+                save(self.gpu, &frame.texture, path)?;
+                println!("last frame written to {}", path.display());
+            }
+        }
         self.window.pre_present_notify();
         self.gpu.queue().present(frame);
         self.frame += 1;
-        self.pacing.frame_done(&stats);
         Ok(())
     }
 }
