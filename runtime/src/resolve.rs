@@ -25,8 +25,18 @@
 //! everything stays within WebGPU's default limits (one uniform, one storage buffer read, one
 //! storage texture or buffer written).
 
+#![cfg_attr(
+    not(test),
+    deny(
+        clippy::unwrap_used,
+        clippy::expect_used,
+        clippy::panic,
+        clippy::indexing_slicing
+    )
+)]
+
 use std::num::NonZeroU64;
-use std::sync::{Mutex, PoisonError};
+use std::sync::{Arc, Mutex, PoisonError};
 
 use wgpu::util::DeviceExt;
 
@@ -91,11 +101,13 @@ pub enum ResolveError {
         /// The usage flag, as wgpu names it.
         usage: &'static str,
     },
-    /// The texture is not a 2D texture.
-    #[error("cannot resolve into a {dimension:?} texture: it must be 2D")]
+    /// The texture is not a single-sampled 2D texture.
+    #[error("cannot resolve into a {dimension:?} texture with {samples} samples: it must be 2D with 1 sample")]
     NotTwoDimensional {
         /// Its dimension.
         dimension: wgpu::TextureDimension,
+        /// Its sample count.
+        samples: u32,
     },
     /// The texture's size is not the image's.
     #[error(
@@ -328,7 +340,7 @@ struct Pipeline {
 /// The resolve pass: one small compute pipeline per target kind, created on first use and kept.
 #[derive(Debug, Default)]
 pub struct Resolver {
-    pipelines: Mutex<[Option<std::sync::Arc<Pipeline>>; 5]>,
+    pipelines: Mutex<[Option<Arc<Pipeline>>; 5]>,
 }
 
 impl Resolver {
@@ -470,11 +482,7 @@ impl Resolver {
     }
 
     /// The pipeline for `output`, created on first use.
-    fn pipeline(
-        &self,
-        gpu: &Gpu,
-        output: Output,
-    ) -> Result<std::sync::Arc<Pipeline>, ResolveError> {
+    fn pipeline(&self, gpu: &Gpu, output: Output) -> Result<Arc<Pipeline>, ResolveError> {
         let mut pipelines = self
             .pipelines
             .lock()
@@ -483,7 +491,7 @@ impl Resolver {
             .get_mut(output.index())
             .ok_or_else(|| ResolveError::Wgpu("no pipeline slot".into()))?;
         if let Some(p) = slot {
-            return Ok(std::sync::Arc::clone(p));
+            return Ok(Arc::clone(p));
         }
         let (decl, store) = output.wgsl();
         let source = SHADER.replace("{OUTPUT}", decl).replace("{STORE}", store);
@@ -539,8 +547,8 @@ impl Resolver {
         if let Some(message) = error {
             return Err(ResolveError::Wgpu(message));
         }
-        let created = std::sync::Arc::new(created);
-        *slot = Some(std::sync::Arc::clone(&created));
+        let created = Arc::new(created);
+        *slot = Some(Arc::clone(&created));
         Ok(created)
     }
 }
@@ -553,9 +561,10 @@ fn texture_output(texture: &wgpu::Texture, image: [u32; 2]) -> Result<Output, Re
         wgpu::TextureFormat::Rgba32Float => Output::Rgba32FloatTexture,
         format => return Err(ResolveError::UnsupportedFormat { format }),
     };
-    if texture.dimension() != wgpu::TextureDimension::D2 {
+    if texture.dimension() != wgpu::TextureDimension::D2 || texture.sample_count() != 1 {
         return Err(ResolveError::NotTwoDimensional {
             dimension: texture.dimension(),
+            samples: texture.sample_count(),
         });
     }
     if !texture
