@@ -533,3 +533,42 @@ fn a_device_below_the_required_limits_is_refused_with_what_it_lacks() {
         Ok(_) => panic!("a device with 4 storage buffers per stage was accepted"),
     }
 }
+
+/// wgpu keeps one uncaptured-error handler per device and cannot chain them: `from_device` leaves
+/// the host's in place (errors outside any scope reach the host, not rtc), and
+/// `record_uncaptured_errors` replaces it with rtc's recording one when the host asks.
+#[test]
+fn the_hosts_uncaptured_error_handler_stays_until_the_host_opts_in() {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    use std::sync::Arc;
+    let Some((adapter, device, queue)) = host_device("uncaptured errors", required_limits()) else {
+        return;
+    };
+    let host_errors = Arc::new(AtomicUsize::new(0));
+    let sink = Arc::clone(&host_errors);
+    device.on_uncaptured_error(Arc::new(move |_| {
+        sink.fetch_add(1, Ordering::SeqCst);
+    }));
+    let options = GpuOptions {
+        pipeline_cache: PipelineCacheConfig::Off,
+    };
+    let gpu = Gpu::from_device(adapter, device.clone(), queue, &options).expect("from_device");
+    // An invalid buffer (MAP_READ may only go with COPY_DST), outside any error scope.
+    let invalid = |label| {
+        device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some(label),
+            size: 16,
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::STORAGE,
+            mapped_at_creation: false,
+        })
+    };
+    let _first = invalid("invalid, for the host");
+    assert_eq!(host_errors.load(Ordering::SeqCst), 1);
+    assert!(gpu.take_uncaptured_errors().is_empty());
+
+    gpu.record_uncaptured_errors();
+    let _second = invalid("invalid, for rtc");
+    assert_eq!(host_errors.load(Ordering::SeqCst), 1);
+    let recorded = gpu.take_uncaptured_errors();
+    assert_eq!(recorded.len(), 1, "{recorded:?}");
+}
