@@ -268,12 +268,15 @@ pub fn summary(s: &RenderStats, output: &Path) -> String {
         output.display()
     ));
     out.push_str(&format!(
-        "  bvh build {:>10.2} ms  ({} mesh{}, {} triangles, {} objects)\n",
+        "  bvh build {:>10.2} ms  ({} mesh{}, {} triangles, {} objects; {} object BVH{} built, {} scene-level)\n",
         s.bvh_build_ms,
         s.meshes,
         if s.meshes == 1 { "" } else { "es" },
         s.triangles,
-        s.objects
+        s.objects,
+        s.blas_builds,
+        if s.blas_builds == 1 { "" } else { "s" },
+        s.tlas_builds
     ));
     out.push_str(&format!(
         "  pipelines {:>10.2} ms  (kernel creation and the driver's compile)\n",

@@ -427,6 +427,14 @@ impl App<'_> {
         };
         if std::mem::take(&mut self.fresh) {
             r.reset_accumulation();
+            if let Some(o) = orbit {
+                let v = |a: [f32; 3]| format!("({:.3}, {:.3}, {:.3})", a[0], a[1], a[2]);
+                term::print(&format!(
+                    "[view] camera at {} looking at {}\n",
+                    v(o.position),
+                    v(o.look_at)
+                ));
+            }
         }
         let stats = r.accumulate(1, &mut |_, _| {})?;
         let image = r.image()?;
