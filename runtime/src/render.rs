@@ -69,7 +69,8 @@ use crate::gpu::{
     dispatch_once, plan_tiles, BufferLimits, DispatchError, Gpu, Kernel, KernelDesc, KernelReport,
     KernelSource, PipelineCacheStatus, PipelineError, RoundKernels, TileConfig, TileDispatcher,
 };
-use crate::image_out::{ImageError, LinearImage};
+use crate::image_out::{ImageError, LinearImage, ToneMap};
+use crate::resolve::{ResolveError, ResolveTarget, Resolver};
 /// Which instance a field write goes to ([`Renderer::set_field`]), re-exported.
 pub use crate::scene::FieldTarget;
 use crate::scene::{
@@ -113,6 +114,9 @@ pub enum RenderError {
     /// The accumulation could not be turned into an image.
     #[error(transparent)]
     Image(#[from] ImageError),
+    /// The accumulation could not be resolved into the host's target.
+    #[error(transparent)]
+    Resolve(#[from] ResolveError),
     /// The image size is zero.
     #[error("cannot render a {width}x{height} image: both sides must be at least 1")]
     BadSize {
@@ -276,6 +280,8 @@ pub struct Renderer<'g> {
     total_samples: u32,
     setup: Setup,
     written_at_setup: Vec<&'static str>,
+    /// The resolve pass ([`Renderer::resolve_into`]), its pipelines created on first use.
+    resolver: Resolver,
     /// The program the entities were built from (field writes pack with it).
     program: Program,
     /// What the renderer was made with (a kernel replacement keeps it).
@@ -681,6 +687,7 @@ impl<'g> Renderer<'g> {
             total_samples,
             setup,
             written_at_setup,
+            resolver: Resolver::new(),
             program: layout_program(program),
             options,
             store,
@@ -701,6 +708,45 @@ impl<'g> Renderer<'g> {
     /// The image size.
     pub fn size(&self) -> [u32; 2] {
         self.size
+    }
+
+    /// Records the resolve of the running accumulation (the average as the last
+    /// [`accumulate`](Self::accumulate) or [`render`](Self::render) left it; after a change,
+    /// accumulate first) into `target`, a texture or buffer the caller owns: the
+    /// PNG's sRGB bytes (tone-mapped with `tone`) or linear floats, by the target's format (see
+    /// [`crate::resolve`]). With `encoder` the pass is recorded there and the caller submits it,
+    /// ordered after this renderer's own submissions; without, it is submitted at once on the
+    /// queue. Neither blocks nor reads back.
+    pub fn resolve_into(
+        &self,
+        target: ResolveTarget<'_>,
+        tone: &ToneMap,
+        encoder: Option<&mut wgpu::CommandEncoder>,
+    ) -> Result<(), RenderError> {
+        let accum = self
+            .accumulation_buffer()
+            .ok_or(ResolveError::NoAccumulation)?;
+        match encoder {
+            Some(encoder) => {
+                self.resolver
+                    .encode(self.gpu, encoder, accum, self.size, target, tone)?;
+            }
+            None => {
+                let device = self.gpu.device();
+                let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                    label: Some("rtc resolve"),
+                });
+                self.resolver
+                    .encode(self.gpu, &mut encoder, accum, self.size, target, tone)?;
+                let ((), error) = self.gpu.scoped(|| {
+                    self.gpu.queue().submit([encoder.finish()]);
+                });
+                if let Some(message) = error {
+                    return Err(ResolveError::Wgpu(message).into());
+                }
+            }
+        }
+        Ok(())
     }
 
     /// Moves object `object` (its new object-to-world matrix); the next pass rebuilds the
