@@ -1,10 +1,13 @@
 //! `rtc view` under a virtual X display (Xvfb) on the machine's adapter (lavapipe in CI): the window
-//! opens, the image shown is written after every frame (`--screenshot`), a save of the scene reloads
-//! it and the next screenshot shows the change; Ctrl-C (SIGINT) closes it with code 0. Without a
-//! display it must say so and exit with code 1.
+//! opens, the image shown is written after every frame (`--screenshot`), each frame adds one pass
+//! to the same accumulation (1, 2, 3 spp), a mouse drag (xdotool) moves the camera and restarts at
+//! 1 spp, a save of the scene reloads it keeping the moved camera and the next screenshot shows the
+//! change; Ctrl-C (SIGINT) closes it with code 0. Without a display it must say so and exit with
+//! code 1.
 //!
-//! The test starts its own Xvfb (`-displayfd` picks a free display). Where Xvfb or a GPU adapter is
-//! missing it is skipped with the reason printed, except in CI (`CI=true`), where that fails.
+//! The test starts its own Xvfb (`-displayfd` picks a free display). Where Xvfb, xdotool or a GPU
+//! adapter is missing it is skipped with the reason printed, except in CI (`CI=true`), where that
+//! fails.
 
 use rtc_runtime::gpu::{AdapterChoice, Gpu};
 use rtc_runtime::image_out::read_image;
@@ -24,7 +27,7 @@ import "std/lights/point.rt";
 import "std/miss/constant.rt";
 
 scene viewed {{
-    settings {{ width: 48, height: 48, samples: 2, max_depth: 1 }}
+    settings {{ width: 48, height: 48, samples: 3, max_depth: 1 }}
     camera Pinhole {{ position: vec3f(0.0, 1.0, 6.0), look_at: vec3f(0.0, 0.5, 0.0), fov: 30.0 }}
     background ConstantBackground {{ color: {background} }}
     object ball {{ geometry: sphere_mesh(1u), material: Lambert {{ albedo: vec3f(0.5) }} }}
@@ -166,28 +169,94 @@ fn view_shows_the_scene_and_a_reload_changes_the_screenshot() {
     collect(child.stderr.take().expect("stderr"), Arc::clone(&lines));
     let mut child = Killed(child);
 
-    // Refined to the scene's 2 samples per pixel: blue background.
+    // Refined to the scene's 3 samples per pixel, one pass a frame: blue background.
+    let at = wait_for(&mut child.0, &lines, 0, "[view] frame 1: 1 spp");
+    let at = wait_for(&mut child.0, &lines, at, "[view] frame 2: 2 spp");
     let at = wait_for(
         &mut child.0,
         &lines,
-        0,
-        "[view] screenshot 2 of the window: 2 spp",
+        at,
+        "[view] screenshot 3 of the window: 3 spp",
     );
     let (r, b) = red_blue(&shot);
     assert!(
         b > 0.3 && r < 0.5 * b,
         "expected mostly blue, got red {r}, blue {b}"
     );
+    let file_camera = "[view] camera at (0.000, 1.000, 6.000) looking at (0.000, 0.500, 0.000)";
+    assert!(
+        lines.lock().expect("lines")[..at]
+            .iter()
+            .any(|l| l == file_camera),
+        "the file's camera first"
+    );
 
-    // A save: the background turns red; the next frames show it.
+    // A drag orbits the camera: the accumulation restarts at one pass from the moved camera.
+    let xdotool = |args: &[&str]| {
+        Command::new("xdotool")
+            .args(args)
+            .env("DISPLAY", &display)
+            .stdout(Stdio::null())
+            .status()
+            .is_ok_and(|s| s.success())
+    };
+    if !xdotool(&["search", "--sync", "--name", "rtc view"]) {
+        skip("xdotool is not installed or found no window (apt-get install xdotool)");
+        return;
+    }
+    for step in [
+        &["mousemove", "--sync", "24", "24"][..],
+        &["mousedown", "1"],
+        &["mousemove", "--sync", "34", "24"],
+        &["mousemove", "--sync", "44", "26"],
+        &["mouseup", "1"],
+    ] {
+        assert!(xdotool(step), "xdotool {step:?}");
+    }
+    // Each drag event restarts from its camera; settle on the last one, refined to 3 spp.
+    let mut camera_at = wait_for(&mut child.0, &lines, at, "[view] camera at");
+    let at = loop {
+        let done = wait_for(&mut child.0, &lines, camera_at, "3 spp");
+        std::thread::sleep(Duration::from_millis(300));
+        let last = lines.lock().expect("lines")[..]
+            .iter()
+            .rposition(|l| l.starts_with("[view] camera at"))
+            .expect("a camera line");
+        if last == camera_at {
+            break done;
+        }
+        camera_at = last;
+    };
+    let moved_camera = lines.lock().expect("lines")[camera_at].clone();
+    assert_ne!(moved_camera, file_camera, "the drag moved the camera");
+    let restarted = lines.lock().expect("lines")[camera_at..at].join("\n");
+    assert!(
+        restarted.contains(": 1 spp") && restarted.contains(": 2 spp"),
+        "after a move the accumulation starts again at one pass:\n{restarted}"
+    );
+
+    // A save: the background turns red; the next frames show it, from the moved camera.
     std::fs::write(&file, scene("vec3f(1.0, 0.0, 0.0)")).expect("edit");
     let at = wait_for(&mut child.0, &lines, at, "[watch] #2 ok");
-    let at = wait_for(&mut child.0, &lines, at, "[view] frame 4: 2 spp");
+    let camera_at = wait_for(&mut child.0, &lines, at, "[view] camera at");
+    assert_eq!(
+        lines.lock().expect("lines")[camera_at],
+        moved_camera,
+        "a reload keeps the moved camera"
+    );
+    let at = wait_for(&mut child.0, &lines, camera_at, ": 3 spp");
+    let shot_line = lines.lock().expect("lines")[at].clone();
+    let frame: u32 = shot_line
+        .trim_start_matches("[view] frame ")
+        .split(':')
+        .next()
+        .and_then(|n| n.parse().ok())
+        .expect("frame number");
     let at = wait_for(
         &mut child.0,
         &lines,
         at,
-        "[view] screenshot 4 of the window",
+        &format!("[view] screenshot {frame} of the window"),
     );
     let (r, b) = red_blue(&shot);
     assert!(

@@ -19,7 +19,7 @@
 use crate::render::{FieldTarget, RenderError, Renderer};
 use glam::{Mat4, Quat, Vec3};
 use rtc_compiler::sema::hir::{
-    ConstValue, Instance, Interp, Motion, Program, Scalar, SceneDesc, StructId, TrackTarget,
+    ConstValue, Instance, Interp, Motion, Scalar, SceneDesc, TrackTarget,
 };
 
 /// The animated part of a scene at one time.
@@ -40,8 +40,6 @@ pub struct FieldValue {
     pub name: String,
     /// Its index in the instance's struct.
     pub index: usize,
-    /// The instance's struct.
-    pub struct_id: StructId,
     /// The value.
     pub value: ConstValue,
 }
@@ -100,7 +98,6 @@ pub fn evaluate(desc: &SceneDesc, t: f32) -> FrameState {
                         target: field_target,
                         name: name.clone(),
                         index,
-                        struct_id: inst.struct_id,
                         value,
                     });
                 }
@@ -117,18 +114,14 @@ pub fn evaluate(desc: &SceneDesc, t: f32) -> FrameState {
     FrameState { transforms, fields }
 }
 
-/// Applies `state` to `renderer`: objects moved, fields set. `program` is the scene's program
-/// (the field values' types and layout).
-pub fn apply(
-    renderer: &mut Renderer,
-    program: &Program,
-    state: &FrameState,
-) -> Result<(), RenderError> {
+/// Applies `state` to `renderer`: objects moved, fields set (each uploads only what changed on
+/// the next render).
+pub fn apply(renderer: &mut Renderer, state: &FrameState) -> Result<(), RenderError> {
     for (i, m) in &state.transforms {
         renderer.set_transform(*i, Mat4::from_cols_array_2d(m))?;
     }
     for f in &state.fields {
-        renderer.set_field_shim(program, f.target, f.struct_id, f.index, &f.value)?;
+        renderer.set_field(f.target, &f.name, &f.value)?;
     }
     Ok(())
 }

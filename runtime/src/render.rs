@@ -20,6 +20,17 @@
 //! `TileParams.frame` = the pass index), reports progress over all tiles of all passes, reads the
 //! accumulation back and averages it (rgb / a).
 //!
+//! A renderer is also the **live session** of a scene (the thesis's CPU render pipeline, 3.2.3):
+//! built once, it keeps entities, buffers and kernels across frames and edits.
+//! [`Renderer::accumulate`] adds passes to a running accumulation ([`Renderer::image`] reads it);
+//! [`Renderer::set_field`] / [`Renderer::set_camera`] write an instance's fields in place and
+//! [`Renderer::set_transform`] moves an object, each uploading only the words that changed (the
+//! scene-level BVH's nodes and the instance records for a move; no object-level BVH is rebuilt)
+//! and restarting the accumulation; [`Renderer::replace_kernel`] swaps in a recompile and keeps
+//! every asset and object-level BVH whose file did not change ([`AssetStore`]) and every buffer
+//! whose contents did not change. [`RenderStats::blas_builds`] and [`RenderStats::files_read`]
+//! count over the session's life.
+//!
 //! Samples: every pass takes the camera's `samples_per_pass`, so the samples per pixel actually
 //! taken are `total_samples` rounded up to a multiple of it ([`RenderStats::samples`]); the average
 //! is exact whatever the count, because `accum.a` counts the samples.
@@ -58,10 +69,15 @@ use crate::gpu::{
     dispatch_once, plan_tiles, BufferLimits, DispatchError, Gpu, Kernel, KernelDesc, KernelReport,
     KernelSource, PipelineCacheStatus, PipelineError, RoundKernels, TileConfig, TileDispatcher,
 };
-use crate::image_out::{ImageError, LinearImage};
+use crate::image_out::{ImageError, LinearImage, ToneMap};
+use crate::resolve::{ResolveError, ResolveTarget, Resolver};
+/// Which instance a field write goes to ([`Renderer::set_field`]), re-exported.
+pub use crate::scene::FieldTarget;
 use crate::scene::{
-    Entities, EntityOptions, FrameUniforms, GpuScene, ObjectGeometry, SceneError, UploadReport,
+    AssetStore, Entities, EntityOptions, FrameUniforms, GpuScene, ObjectGeometry, SceneError,
+    UploadReport,
 };
+use rtc_compiler::sema::hir::{ConstValue, Instance, Program};
 
 /// What to change from the scene's own settings, and how to run.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -98,6 +114,9 @@ pub enum RenderError {
     /// The accumulation could not be turned into an image.
     #[error(transparent)]
     Image(#[from] ImageError),
+    /// The accumulation could not be resolved into the host's target.
+    #[error(transparent)]
+    Resolve(#[from] ResolveError),
     /// The image size is zero.
     #[error("cannot render a {width}x{height} image: both sides must be at least 1")]
     BadSize {
@@ -140,20 +159,6 @@ pub enum RenderError {
         /// The messages.
         messages: Vec<String>,
     },
-}
-
-/// The instance whose field [`Renderer::set_field_shim`] sets (shim: the session core's
-/// `FieldTarget`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum FieldTarget {
-    /// The camera.
-    Camera,
-    /// The background.
-    Background,
-    /// Light `i`, in scene order.
-    Light(usize),
-    /// Object `i`'s material.
-    Material(usize),
 }
 
 /// Figures of one render (and of the setup it needed).
@@ -220,8 +225,13 @@ pub struct RenderStats {
     pub instances: u32,
     /// Lights.
     pub lights: u32,
-    /// BLAS builds so far.
+    /// Object-level BVH (BLAS) builds so far in this renderer's life, kernel replacements
+    /// included (moving objects builds none).
     pub blas_builds: u32,
+    /// Asset files (meshes, images, glTF files) read so far in this renderer's life.
+    pub files_read: u32,
+    /// Samples per pixel in the accumulation after these passes.
+    pub accumulated_samples: u32,
     /// TLAS builds so far.
     pub tlas_builds: u32,
     /// Problems that did not stop the render.
@@ -270,6 +280,16 @@ pub struct Renderer<'g> {
     total_samples: u32,
     setup: Setup,
     written_at_setup: Vec<&'static str>,
+    /// The resolve pass ([`Renderer::resolve_into`]), its pipelines created on first use.
+    resolver: Resolver,
+    /// The program the entities were built from (field writes pack with it).
+    program: Program,
+    /// What the renderer was made with (a kernel replacement keeps it).
+    options: RenderOptions,
+    /// Assets and object-level BVHs, kept across kernel replacements.
+    store: AssetStore,
+    /// Passes in the running accumulation (0: it starts afresh at the next pass).
+    passes_done: u32,
 }
 
 /// The render kernel, or the wavefront model's stage kernels (in `wavefront::STAGES` order).
@@ -344,6 +364,16 @@ fn wavefront_tiles(
         }
     }
     tiles
+}
+
+/// The part of `program` that field writes need (types and structs, for layouts and packing),
+/// without the function bodies.
+fn layout_program(program: &Program) -> Program {
+    Program {
+        types: program.types.clone(),
+        structs: program.structs.clone(),
+        ..Program::default()
+    }
 }
 
 fn ms_since(start: Instant) -> f64 {
@@ -497,6 +527,18 @@ impl<'g> Renderer<'g> {
         compiled: &CompiledScene,
         options: RenderOptions,
     ) -> Result<Self, RenderError> {
+        Self::build(gpu, compiled, options, AssetStore::new(), None)
+    }
+
+    /// [`new`](Self::new) with what a previous renderer of the scene leaves: its asset store and,
+    /// from its GPU scene, every buffer whose contents are unchanged.
+    fn build(
+        gpu: &'g Gpu,
+        compiled: &CompiledScene,
+        options: RenderOptions,
+        mut store: AssetStore,
+        previous: Option<(GpuScene, &Entities)>,
+    ) -> Result<Self, RenderError> {
         let program = compiled
             .checked
             .program
@@ -516,7 +558,7 @@ impl<'g> Renderer<'g> {
         let samples_per_pass = compiled.samples_per_pass.max(1);
         let mut setup = Setup::default();
 
-        let mut entities = Entities::build(
+        let mut entities = Entities::build_with_store(
             program,
             desc,
             &compiled.linked,
@@ -524,6 +566,7 @@ impl<'g> Renderer<'g> {
                 bvh: options.bvh,
                 asset_roots: options.asset_roots.clone(),
             },
+            &mut store,
         )?;
         let es = entities.stats();
         setup.load_ms = es.load_ms;
@@ -566,7 +609,14 @@ impl<'g> Renderer<'g> {
         let mut tiles = options
             .tiles
             .unwrap_or_else(|| TileConfig::for_adapter(gpu.description()));
-        let mut scene = GpuScene::new(gpu, &all);
+        let mut scene = match previous {
+            Some((mut scene, old)) => {
+                scene.rebind(&all);
+                entities.inherit_versions(old);
+                scene
+            }
+            None => GpuScene::new(gpu, &all),
+        };
         if let Kernels::Wavefront { .. } = kernels {
             // One tile's path records in one binding, within WebGPU's default 128 MiB.
             let max = gpu.limits().max_storage_buffer_binding_size.min(128 << 20);
@@ -612,6 +662,7 @@ impl<'g> Renderer<'g> {
             ..entities.frame_uniforms(samples_per_pass, total_samples)
         };
         let report = scene.upload(gpu, &entities, &frame, u64::from(width) * u64::from(height))?;
+        entities.clear_dirty();
         setup.upload = Some((
             upload.0 + report.stats.upload_ms,
             upload.1 + report.stats.bytes_uploaded,
@@ -636,6 +687,11 @@ impl<'g> Renderer<'g> {
             total_samples,
             setup,
             written_at_setup,
+            resolver: Resolver::new(),
+            program: layout_program(program),
+            options,
+            store,
+            passes_done: 0,
         })
     }
 
@@ -654,58 +710,238 @@ impl<'g> Renderer<'g> {
         self.size
     }
 
-    /// Moves object `object` (its new object-to-world matrix); the next render rebuilds the
-    /// scene-level BVH and uploads only `nodes` and `instances`.
-    pub fn set_transform(&mut self, object: usize, transform: Mat4) -> Result<(), RenderError> {
-        Ok(self.entities.set_transform(object, transform)?)
-    }
-
-    /// Shim until the session core's `set_field` lands: sets field `index` of the instance
-    /// `target` (of struct `sid`) to `value`.
-    pub fn set_field_shim(
-        &mut self,
-        program: &rtc_compiler::sema::hir::Program,
-        target: FieldTarget,
-        sid: rtc_compiler::sema::hir::StructId,
-        index: usize,
-        value: &rtc_compiler::sema::hir::ConstValue,
+    /// Records the resolve of the running accumulation (the average as the last
+    /// [`accumulate`](Self::accumulate) or [`render`](Self::render) left it; after a change,
+    /// accumulate first) into `target`, a texture or buffer the caller owns: the
+    /// PNG's sRGB bytes (tone-mapped with `tone`) or linear floats, by the target's format (see
+    /// [`crate::resolve`]). With `encoder` the pass is recorded there and the caller submits it,
+    /// ordered after this renderer's own submissions; without, it is submitted at once on the
+    /// queue. Neither blocks nor reads back.
+    pub fn resolve_into(
+        &self,
+        target: ResolveTarget<'_>,
+        tone: &ToneMap,
+        encoder: Option<&mut wgpu::CommandEncoder>,
     ) -> Result<(), RenderError> {
-        let at = match target {
-            FieldTarget::Camera => Some(self.entities.camera()),
-            FieldTarget::Background => self.entities.background(),
-            FieldTarget::Light(i) => self.entities.lights().get(i).copied(),
-            FieldTarget::Material(_) => None,
-        };
-        if let Some(at) = at {
-            self.entities
-                .write_field_shim(program, at.offset, sid, index, value)?;
+        let accum = self
+            .accumulation_buffer()
+            .ok_or(ResolveError::NoAccumulation)?;
+        match encoder {
+            Some(encoder) => {
+                self.resolver
+                    .encode(self.gpu, encoder, accum, self.size, target, tone)?;
+            }
+            None => {
+                let device = self.gpu.device();
+                let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                    label: Some("rtc resolve"),
+                });
+                self.resolver
+                    .encode(self.gpu, &mut encoder, accum, self.size, target, tone)?;
+                let ((), error) = self.gpu.scoped(|| {
+                    self.gpu.queue().submit([encoder.finish()]);
+                });
+                if let Some(message) = error {
+                    return Err(ResolveError::Wgpu(message).into());
+                }
+            }
         }
         Ok(())
     }
 
+    /// Moves object `object` (its new object-to-world matrix); the next pass rebuilds the
+    /// scene-level BVH (never an object's) and uploads only the instance records and the
+    /// scene-level BVH's nodes. Restarts the accumulation.
+    pub fn set_transform(&mut self, object: usize, transform: Mat4) -> Result<(), RenderError> {
+        self.entities.set_transform(object, transform)?;
+        self.passes_done = 0;
+        Ok(())
+    }
+
+    /// Sets field `field` of `target`'s instance (the camera's `position`, a light's
+    /// `intensity`, an object's material `color`) to `value`, which must have the field's type;
+    /// the next pass uploads only the words that changed. An instance several targets shared is
+    /// first given to `target` alone. Restarts the accumulation.
+    pub fn set_field(
+        &mut self,
+        target: FieldTarget,
+        field: &str,
+        value: &ConstValue,
+    ) -> Result<(), RenderError> {
+        self.entities
+            .set_field(&self.program, target, field, value)?;
+        self.passes_done = 0;
+        Ok(())
+    }
+
+    /// Replaces the camera's fields with those of `camera`, an instance of the same camera
+    /// struct (every field but asset handles). Restarts the accumulation.
+    pub fn set_camera(&mut self, camera: &Instance) -> Result<(), RenderError> {
+        let target = self.entities.instance(FieldTarget::Camera)?;
+        let program = &self.program;
+        if target.struct_id != Some(camera.struct_id) {
+            return Err(SceneError::FieldValue {
+                ty: target
+                    .struct_id
+                    .map_or_else(String::new, |s| program.structs[s].name.clone()),
+                field: "*".into(),
+                expected: "the scene's camera struct".into(),
+                problem: format!(
+                    "the new camera is a `{}`; a kernel holds one camera type, so a camera of \
+                     another type needs a recompile",
+                    program.structs[camera.struct_id].name
+                ),
+            }
+            .into());
+        }
+        let fields = &program.structs[camera.struct_id].fields;
+        for (f, v) in fields.iter().zip(&camera.fields) {
+            if matches!(
+                program.types.get(f.ty),
+                rtc_compiler::sema::types::Type::Mesh | rtc_compiler::sema::types::Type::Texture
+            ) {
+                continue;
+            }
+            self.entities
+                .set_field(program, FieldTarget::Camera, &f.name, v)?;
+        }
+        self.passes_done = 0;
+        Ok(())
+    }
+
+    /// Replaces the kernels with those of `compiled`, a recompile of the same scene (its program
+    /// or scene file edited): entities are rebuilt from the new description, but every asset
+    /// and object-level BVH whose file did not change comes from the store (no file is read, no
+    /// BLAS built), and every GPU buffer whose contents did not change stays as it is. Camera,
+    /// transforms and fields come from `compiled` (edits made with [`set_field`](Self::set_field)
+    /// or [`set_transform`](Self::set_transform) are not carried over). Restarts the
+    /// accumulation. On an error this renderer keeps its kernels and entities, and re-uploads
+    /// its buffers at the next pass.
+    pub fn replace_kernel(&mut self, compiled: &CompiledScene) -> Result<(), RenderError> {
+        let store = std::mem::take(&mut self.store);
+        let empty = self.scene.emptied(self.gpu);
+        let scene = std::mem::replace(&mut self.scene, empty);
+        let mut options = self.options.clone();
+        options.size = Some(self.size);
+        let samples = self.total_samples;
+        options.samples = Some(samples);
+        let rebuilt = Self::build(
+            self.gpu,
+            compiled,
+            options,
+            store,
+            Some((scene, &self.entities)),
+        );
+        match rebuilt {
+            Ok(mut new) => {
+                new.options = std::mem::take(&mut self.options);
+                *self = new;
+                Ok(())
+            }
+            Err(e) => {
+                self.entities.force_full_upload();
+                Err(e)
+            }
+        }
+    }
+
+    /// The index of the object called `name` (a scene `object NAME`, or a model node's
+    /// `file.glb#nodes[i]`), for [`set_transform`](Self::set_transform) and
+    /// [`FieldTarget::Material`].
+    pub fn object_index(&self, name: &str) -> Option<usize> {
+        self.entities
+            .objects()
+            .iter()
+            .position(|o| o.name.as_deref() == Some(name))
+    }
+
+    /// The assets and object-level BVHs kept across kernel replacements, and its counters.
+    pub fn store(&self) -> &AssetStore {
+        &self.store
+    }
+
+    /// The accumulation buffer (`accum`: per pixel a `vec4<f32>` of rgb sums and the sample
+    /// count in `a`, row-major, `width × height` entries), for a host that resolves it itself.
+    pub fn accumulation_buffer(&self) -> Option<&wgpu::Buffer> {
+        let b = abi::binding("accum")?;
+        self.scene.buffers().buffer(b.binding)
+    }
+
+    /// Samples per pixel in the running accumulation.
+    pub fn accumulated_samples(&self) -> u32 {
+        self.passes_done.saturating_mul(self.samples_per_pass)
+    }
+
+    /// Samples per pixel a [`render`](Self::render) takes (the scene's, or the override).
+    pub fn total_samples(&self) -> u32 {
+        self.total_samples
+    }
+
+    /// Samples per pixel one pass adds.
+    pub fn samples_per_pass(&self) -> u32 {
+        self.samples_per_pass
+    }
+
+    /// Makes the next pass start a new accumulation.
+    pub fn reset_accumulation(&mut self) {
+        self.passes_done = 0;
+    }
+
     /// Total tiles the next render dispatches (all passes), for sizing a progress display.
     pub fn total_tiles(&self) -> u64 {
+        self.tiles_per_pass() * u64::from(self.passes())
+    }
+
+    fn tiles_per_pass(&self) -> u64 {
         let cfg = self.dispatcher.config();
-        let tiles = plan_tiles(
+        plan_tiles(
             self.size[0],
             self.size[1],
             cfg.tile_width,
             cfg.tile_height,
             0,
         )
-        .len();
-        tiles as u64 * u64::from(self.passes())
+        .len() as u64
     }
 
     fn passes(&self) -> u32 {
         self.total_samples.div_ceil(self.samples_per_pass)
     }
 
-    /// Renders the image. `progress(done, total)` is called with tiles done over all passes.
+    /// Renders the image afresh: the scene's samples (or the override), in passes.
+    /// `progress(done, total)` is called with tiles done over all passes.
     pub fn render(
         &mut self,
         progress: &mut dyn FnMut(u64, u64),
     ) -> Result<RenderResult, RenderError> {
+        self.passes_done = 0;
+        let passes = self.passes();
+        let mut stats = self.accumulate(passes, progress)?;
+        let start = Instant::now();
+        let image = self.image()?;
+        stats.readback_ms += ms_since(start);
+        Ok(RenderResult { image, stats })
+    }
+
+    /// The running accumulation's mean radiance per pixel (read back from the GPU).
+    pub fn image(&self) -> Result<LinearImage, RenderError> {
+        let [width, height] = self.size;
+        let accum = self.scene.read_accumulation(self.gpu)?;
+        Ok(LinearImage::from_accumulation(width, height, &accum)?)
+    }
+
+    /// Adds `passes` passes (each [`samples_per_pass`](Self::samples_per_pass) samples per
+    /// pixel) to the running accumulation, after uploading what changed (rebuilding the
+    /// scene-level BVH first if an object moved); a change since the last pass (camera,
+    /// transform, field, kernel) or [`reset_accumulation`](Self::reset_accumulation) starts it
+    /// afresh. Pass `k` of an accumulation draws the random numbers of pass `k` of a
+    /// [`render`](Self::render), so `accumulate(1)` four times gives the image of a 4-pass
+    /// render. The figures are of these passes (and, on the first call, of the setup).
+    pub fn accumulate(
+        &mut self,
+        passes: u32,
+        progress: &mut dyn FnMut(u64, u64),
+    ) -> Result<RenderStats, RenderError> {
         let gpu = self.gpu;
         let setup = std::mem::take(&mut self.setup);
         let mut bvh_ms = setup.bvh_ms;
@@ -721,6 +957,7 @@ impl<'g> Renderer<'g> {
                 .frame_uniforms(self.samples_per_pass, self.total_samples)
         };
         let report: UploadReport = self.scene.upload(gpu, &self.entities, &frame, pixels)?;
+        self.entities.clear_dirty();
         let mut written = std::mem::take(&mut self.written_at_setup);
         for name in report.written() {
             if !written.contains(&name) {
@@ -728,19 +965,23 @@ impl<'g> Renderer<'g> {
             }
         }
         let (setup_upload_ms, setup_bytes) = setup.upload.unwrap_or_default();
-        self.scene.clear_accumulation(gpu)?;
+        if self.passes_done == 0 {
+            self.scene.clear_accumulation(gpu)?;
+        } else {
+            self.scene.clear_counters(gpu)?;
+        }
 
-        let passes = self.passes();
-        let total = self.total_tiles();
-        let per_pass = total / u64::from(passes.max(1));
+        let per_pass = self.tiles_per_pass();
+        let total = per_pass * u64::from(passes);
         let mut render_ms = 0.0;
         let mut flush_ms = 0.0;
         let mut tiles = 0u64;
         let mut rays_traced = 0u64;
         let mut last_rays = 0u32;
         let mut rounds = 0u64;
-        for pass in 0..passes {
-            let base = u64::from(pass) * per_pass;
+        for i in 0..passes {
+            let pass = self.passes_done.saturating_add(i);
+            let base = u64::from(i) * per_pass;
             let mut report = |done: u32, _| progress(base + u64::from(done), total);
             let d = match &self.kernels {
                 Kernels::Mega(kernel) => self.dispatcher.dispatch(
@@ -775,12 +1016,11 @@ impl<'g> Renderer<'g> {
                 last_rays = rays;
             }
         }
+        self.passes_done = self.passes_done.saturating_add(passes);
 
         let start = Instant::now();
-        let accum = self.scene.read_accumulation(gpu)?;
         let counters = self.scene.read_counters(gpu)?;
         rays_traced += u64::from(counters.rays.wrapping_sub(last_rays));
-        let image = LinearImage::from_accumulation(width, height, &accum)?;
         let readback_ms = ms_since(start);
         let messages = gpu.take_uncaptured_errors();
         if !messages.is_empty() {
@@ -805,7 +1045,8 @@ impl<'g> Renderer<'g> {
         let samples = passes.saturating_mul(self.samples_per_pass);
         let primary_rays = pixels * u64::from(samples);
         let objects = self.entities.objects().len() as u32;
-        let stats = RenderStats {
+        let store = self.store.counters();
+        Ok(RenderStats {
             adapter: gpu.description().to_string(),
             width,
             height,
@@ -843,16 +1084,17 @@ impl<'g> Renderer<'g> {
             objects,
             instances: self.entities.instances().len() as u32,
             lights: self.entities.lights().len() as u32,
-            blas_builds: es.blas_builds,
+            blas_builds: store.blas_builds,
             tlas_builds: es.tlas_builds,
+            files_read: store.meshes_read + store.images_read + store.models_read,
+            accumulated_samples: self.accumulated_samples(),
             warnings,
             exec: match self.kernels {
                 Kernels::Mega(_) => ExecModel::Megakernel,
                 Kernels::Wavefront { .. } => ExecModel::Wavefront,
             },
             rounds,
-        };
-        Ok(RenderResult { image, stats })
+        })
     }
 }
 
@@ -915,6 +1157,7 @@ fn run_bounds(
     })?;
     frame.tlas_root = 0;
     let report = scene.upload_for_bounds(gpu, entities, &frame)?;
+    entities.clear_dirty();
     scene.clear_accumulation(gpu)?;
     let groups = frame.instance_count.div_ceil(BOUNDS_WORKGROUP).max(1);
     dispatch_once(gpu, kernel, scene.buffers(), [groups, 1, 1])?;

@@ -31,7 +31,7 @@ use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::kernel::{compile_scene_with, CompiledScene, KernelOptions};
 use rtc_compiler::link::LinkOptions;
-use rtc_compiler::sema::hir::{Program, SceneDesc};
+use rtc_compiler::sema::hir::SceneDesc;
 use rtc_runtime::animation;
 use rtc_runtime::gpu::{Gpu, KernelReport};
 use rtc_runtime::image_out::{write_exr, write_png, ToneMap};
@@ -239,9 +239,9 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     }
     let rendered = Renderer::new(&gpu, &compiled, options).and_then(|mut renderer| {
         // An animated scene's still image is its frame 0.
-        if let Some((program, desc)) = scene_of(&compiled) {
+        if let Some(desc) = scene_of(&compiled) {
             let state = animation::evaluate(desc, 0.0);
-            animation::apply(&mut renderer, program, &state)?;
+            animation::apply(&mut renderer, &state)?;
         }
         let total = renderer.total_tiles();
         let bar = progress_bar(total);
@@ -290,10 +290,10 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     Exit::Success
 }
 
-/// The program and scene description of a compiled scene.
-fn scene_of(compiled: &CompiledScene) -> Option<(&Program, &SceneDesc)> {
+/// The scene description of a compiled scene.
+fn scene_of(compiled: &CompiledScene) -> Option<&SceneDesc> {
     let program = compiled.checked.program.as_ref()?;
-    Some((program, &program.scenes[compiled.scene]))
+    Some(&program.scenes[compiled.scene])
 }
 
 /// `rtc render --frames`: every frame of the shard through one renderer, built once; each frame
@@ -307,7 +307,7 @@ fn render_frames(
     options: RenderOptions,
     ctx: &Context,
 ) -> Exit {
-    let Some((program, desc)) = scene_of(compiled) else {
+    let Some(desc) = scene_of(compiled) else {
         return fail("the scene was not compiled", ctx);
     };
     let fps = fa.fps.unwrap_or(desc.settings.fps);
@@ -344,8 +344,8 @@ fn render_frames(
     let loop_start = std::time::Instant::now();
     for (n, &frame) in list.iter().enumerate() {
         let state = animation::evaluate(desc, animation::frame_time(frame, fps));
-        let result = animation::apply(&mut renderer, program, &state)
-            .and_then(|()| renderer.render(&mut |_, _| {}));
+        let result =
+            animation::apply(&mut renderer, &state).and_then(|()| renderer.render(&mut |_, _| {}));
         let result = match result {
             Ok(r) => r,
             Err(e) => {
@@ -471,12 +471,15 @@ pub fn summary(s: &RenderStats, output: &Path) -> String {
         output.display()
     ));
     out.push_str(&format!(
-        "  bvh build {:>10.2} ms  ({} mesh{}, {} triangles, {} objects)\n",
+        "  bvh build {:>10.2} ms  ({} mesh{}, {} triangles, {} objects; {} object BVH{} built, {} scene-level)\n",
         s.bvh_build_ms,
         s.meshes,
         if s.meshes == 1 { "" } else { "es" },
         s.triangles,
-        s.objects
+        s.objects,
+        s.blas_builds,
+        if s.blas_builds == 1 { "" } else { "s" },
+        s.tlas_builds
     ));
     out.push_str(&format!(
         "  pipelines {:>10.2} ms  (kernel creation and the driver's compile)\n",

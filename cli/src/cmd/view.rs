@@ -4,16 +4,19 @@
 //! How it works:
 //! - the scene is compiled and watched by the same [`Session`] as `rtc watch` (no code is written);
 //!   a save reloads it, prints what changed and each phase's time, and keeps the camera;
-//! - the image is rendered by the runtime on its compute device ([`Gpu`]), as `rtc render` does,
-//!   progressively: 1 sample per pixel, then 2, 4, … up to the scene's `samples` (or `--spp`), each
-//!   step a full render shown as soon as it is done; a camera move or a reload starts again at 1;
+//! - the image is rendered by one long-lived [`Renderer`] (the runtime's live session) on its
+//!   compute device ([`Gpu`]), progressively: each step adds one pass (the camera program's
+//!   samples per pixel) to the running accumulation and shows the average, until the scene's
+//!   `samples` (or `--spp`); a camera move writes the camera's fields in place and starts the
+//!   accumulation again at one pass; a reload replaces the renderer's kernels, keeping every
+//!   asset, object-level BVH and unchanged buffer, and the camera the user set;
 //! - the window (winit) is drawn through a wgpu surface ([`present::Presenter`]): the last image is
 //!   uploaded to a texture and drawn over the whole window;
 //! - the camera: drag with the left button to orbit around the point looked at, with the right or
 //!   middle button to pan, scroll to zoom. It works on cameras with `position` and `look_at` fields
 //!   (the standard library's pinhole and thin-lens cameras); for others the window only shows;
-//! - the title shows the samples per pixel reached, the frame time (the last step's render) and the
-//!   primary rays per second.
+//! - the title shows the samples per pixel accumulated, the time of the last step (one pass,
+//!   its read-back and display) and the primary rays per second of its pass.
 //!
 //! Without a display (neither `DISPLAY` nor `WAYLAND_DISPLAY` set, or one that cannot be opened) it
 //! says so and exits with code 1; a scene with errors exits with code 1 after its diagnostics; errors
@@ -37,7 +40,7 @@ use rtc_compiler::sema::hir::{ConstValue, Scalar};
 use rtc_runtime::assets::AssetRoots;
 use rtc_runtime::gpu::Gpu;
 use rtc_runtime::image_out::{srgb_to_linear, LinearImage};
-use rtc_runtime::render::{RenderOptions, Renderer};
+use rtc_runtime::render::{FieldTarget, RenderOptions, Renderer};
 use std::collections::BTreeSet;
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -248,7 +251,14 @@ struct App<'a> {
     args: &'a Args,
     ctx: &'a Context,
     session: Session,
-    gpu: Gpu,
+    /// The compute device, for the life of the process (the renderer borrows it).
+    gpu: &'static Gpu,
+    /// The scene's renderer, built at the first step and kept.
+    renderer: Option<Renderer<'static>>,
+    /// Whether the session compiled again since the renderer's kernels were made.
+    stale_kernel: bool,
+    /// Whether the next step starts a new accumulation (the camera moved, or a reload).
+    fresh: bool,
     watcher: Option<notify::RecommendedWatcher>,
     dirs: BTreeSet<PathBuf>,
     window: Option<Arc<Window>>,
@@ -285,9 +295,10 @@ impl App<'_> {
         event_loop.exit();
     }
 
-    /// Starts refining again from 1 sample per pixel.
+    /// Starts refining again from one pass.
     fn restart(&mut self) {
         self.next_spp = Some(1);
+        self.fresh = true;
     }
 
     /// The scene's own sample count (or `--spp`).
@@ -320,33 +331,20 @@ impl App<'_> {
             let from_file = self.session.last().and_then(read_orbit);
             self.orbit = camera_after_reload(self.moved, self.orbit, from_file);
             self.target_spp = self.wanted_spp();
+            self.stale_kernel = true;
             self.restart();
         }
     }
 
-    /// Renders the next refinement step and shows it.
+    /// Adds one pass to the accumulation (after bringing the renderer up to date) and shows it.
     fn step(&mut self, event_loop: &ActiveEventLoop) {
-        let Some(spp) = self.next_spp else { return };
-        let orbit = self.orbit;
-        let Some(compiled) = self.session.last_mut() else {
-            self.next_spp = None;
+        if self.next_spp.is_none() {
             return;
-        };
-        if let Some(orbit) = orbit {
-            write_orbit(compiled, orbit);
         }
-        let options = RenderOptions {
-            size: self.args.render.scene.image_size(),
-            samples: Some(spp),
-            // Checked to be folders in `run`.
-            asset_roots: AssetRoots::new(self.args.render.assets.asset_roots.iter().cloned()),
-            ..RenderOptions::default()
-        };
         let t = Instant::now();
-        let result =
-            Renderer::new(&self.gpu, compiled, options).and_then(|mut r| r.render(&mut |_, _| {}));
+        let result = self.advance();
         let frame_ms = t.elapsed().as_secs_f64() * 1e3;
-        let result = match result {
+        let (stats, image) = match result {
             Ok(r) => r,
             Err(e) => {
                 term::eprint(&format!(
@@ -357,15 +355,15 @@ impl App<'_> {
                 return;
             }
         };
-        self.next_spp = (spp < self.target_spp).then(|| (spp * 2).min(self.target_spp));
+        let spp = stats.accumulated_samples;
+        self.next_spp = (spp < self.target_spp).then_some(spp + stats.samples_per_pass);
         self.frames += 1;
         self.status = format!(
-            "{} spp, frame {frame_ms:.0} ms, {:.2} M rays/s",
-            result.stats.samples,
-            result.stats.rays_per_second / 1e6
+            "{spp} spp, {frame_ms:.0} ms/frame, {:.2} M rays/s",
+            stats.rays_per_second / 1e6
         );
         if let (Some(p), Some(w)) = (&mut self.presenter, &self.window) {
-            if let Err(e) = p.upload(&result.image) {
+            if let Err(e) = p.upload(&image) {
                 term::eprint(&format!(
                     "{}: cannot show the image: {e}\n",
                     term::paint("error", 31, self.ctx.color)
@@ -379,11 +377,68 @@ impl App<'_> {
             w.request_redraw();
         }
         term::print(&format!("[view] frame {}: {}\n", self.frames, self.status));
-        self.image = Some(result.image);
+        self.image = Some(image);
         self.undrawn = true;
         if self.window.is_none() {
             self.after_draw(event_loop, None);
         }
+    }
+
+    /// Brings the renderer up to date (built at the first step, kernels replaced after a
+    /// reload, the camera written after a move), adds one pass and reads the image back.
+    fn advance(
+        &mut self,
+    ) -> Result<(rtc_runtime::render::RenderStats, LinearImage), rtc_runtime::render::RenderError>
+    {
+        let orbit = self.orbit;
+        let target = self.target_spp;
+        let Some(compiled) = self.session.last_mut() else {
+            return Err(rtc_runtime::render::RenderError::KernelSet);
+        };
+        if let Some(orbit) = orbit {
+            write_orbit(compiled, orbit);
+        }
+        let compiled = &*compiled;
+        match &mut self.renderer {
+            Some(r) if self.stale_kernel => r.replace_kernel(compiled)?,
+            Some(r) if self.fresh => {
+                if let Some(orbit) = orbit {
+                    r.set_field(FieldTarget::Camera, "position", &const_vec3(orbit.position))?;
+                    r.set_field(FieldTarget::Camera, "look_at", &const_vec3(orbit.look_at))?;
+                }
+            }
+            Some(_) => {}
+            None => {
+                let options = RenderOptions {
+                    size: self.args.render.scene.image_size(),
+                    samples: Some(target),
+                    // Checked to be folders in `run`.
+                    asset_roots: AssetRoots::new(
+                        self.args.render.assets.asset_roots.iter().cloned(),
+                    ),
+                    ..RenderOptions::default()
+                };
+                self.renderer = Some(Renderer::new(self.gpu, compiled, options)?);
+            }
+        }
+        self.stale_kernel = false;
+        let Some(r) = self.renderer.as_mut() else {
+            return Err(rtc_runtime::render::RenderError::KernelSet);
+        };
+        if std::mem::take(&mut self.fresh) {
+            r.reset_accumulation();
+            if let Some(o) = orbit {
+                let v = |a: [f32; 3]| format!("({:.3}, {:.3}, {:.3})", a[0], a[1], a[2]);
+                term::print(&format!(
+                    "[view] camera at {} looking at {}\n",
+                    v(o.position),
+                    v(o.look_at)
+                ));
+            }
+        }
+        let stats = r.accumulate(1, &mut |_, _| {})?;
+        let image = r.image()?;
+        Ok((stats, image))
     }
 
     /// After a new frame was drawn: the screenshot, and the end after `--exit-after-frames`.
@@ -650,8 +705,8 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Ok(l) => l,
         Err(e) => return no_display(&e.to_string(), ctx),
     };
-    let gpu = match Gpu::new(&choice) {
-        Ok(g) => g,
+    let gpu: &'static Gpu = match Gpu::new(&choice) {
+        Ok(g) => Box::leak(Box::new(g)),
         Err(e) => {
             term::eprint(&format!("{}: {e}\n", term::paint("error", 31, ctx.color)));
             return Exit::Failure;
@@ -694,6 +749,9 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         target_spp: 1,
         session,
         gpu,
+        renderer: None,
+        stale_kernel: false,
+        fresh: true,
         watcher,
         dirs: BTreeSet::new(),
         window: None,

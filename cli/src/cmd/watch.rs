@@ -99,10 +99,11 @@ pub struct Preview {
     pub asset_roots: AssetRoots,
 }
 
-/// The GPU of the previews: made at the first preview, kept for the next ones.
+/// The GPU of the previews: made at the first preview, kept for the next ones (for the life of
+/// the process, so the preview's renderer can borrow it across reloads).
 enum GpuSlot {
     NotYet,
-    Ready(Box<Gpu>),
+    Ready(&'static Gpu),
     /// It could not be had (the reason was printed once); previews are off.
     Failed,
 }
@@ -170,6 +171,9 @@ pub struct Session {
     builds: u32,
     /// The execution model asked for (`--exec`); `None` leaves it to the scene's `exec` setting.
     exec: Option<ExecModel>,
+    /// The preview's renderer, kept across reloads: a reload replaces its kernels and keeps every
+    /// asset, object-level BVH and buffer that did not change.
+    renderer: Option<Renderer<'static>>,
 }
 
 impl Session {
@@ -202,6 +206,7 @@ impl Session {
             failing: false,
             builds: 0,
             exec: None,
+            renderer: None,
         }
     }
 
@@ -469,7 +474,7 @@ impl Session {
                     reload
                         .messages
                         .push_str(&format!("preview adapter: {}\n", gpu.description()));
-                    GpuSlot::Ready(Box::new(gpu))
+                    GpuSlot::Ready(Box::leak(Box::new(gpu)))
                 }
                 Err(e) => {
                     reload.messages.push_str(&format!(
@@ -481,7 +486,7 @@ impl Session {
             };
             reload.phases.push(("open the GPU".to_owned(), ms_since(t)));
         }
-        let GpuSlot::Ready(gpu) = &self.gpu else {
+        let GpuSlot::Ready(gpu) = self.gpu else {
             return true;
         };
         let t = Instant::now();
@@ -491,10 +496,32 @@ impl Session {
             asset_roots: preview.asset_roots.clone(),
             ..RenderOptions::default()
         };
-        let mut prepare_ms = 0.0;
-        let result = Renderer::new(gpu, compiled, options).and_then(|mut r| {
-            prepare_ms = ms_since(t);
-            r.render(&mut |_, _| {})
+        // The first preview builds the renderer; later ones replace its kernels, which keeps
+        // assets, BLASes and unchanged buffers (the scene's size or samples may have changed:
+        // then it is built afresh).
+        let reusable = self.renderer.as_ref().is_some_and(|r| {
+            let settings = compiled
+                .checked
+                .program
+                .as_ref()
+                .map(|p| p.scenes[compiled.scene].settings);
+            let size = preview
+                .size
+                .or(settings.map(|s| [s.width, s.height]))
+                .unwrap_or_default();
+            size == r.size()
+                && preview.samples.or(settings.map(|s| s.samples)) == Some(r.total_samples())
+        });
+        let prepared = match (&mut self.renderer, reusable) {
+            (Some(r), true) => r.replace_kernel(compiled),
+            _ => Renderer::new(gpu, compiled, options).map(|r| {
+                self.renderer = Some(r);
+            }),
+        };
+        let prepare_ms = ms_since(t);
+        let result = prepared.and_then(|()| match &mut self.renderer {
+            Some(r) => r.render(&mut |_, _| {}),
+            None => Err(rtc_runtime::render::RenderError::KernelSet),
         });
         let result = match result {
             Ok(r) => r,

@@ -226,6 +226,72 @@ impl BufferSet {
         result
     }
 
+    /// Like [`upload_generation`](Self::upload_generation), but when the buffer holds exactly
+    /// generation `base` of data of the same length, writes only the byte `ranges` of `data`
+    /// (widened to 4-byte boundaries, merged where they touch) that changed since `base`, and
+    /// records `generation`. Otherwise it uploads the whole of `data`.
+    pub fn upload_ranges(
+        &mut self,
+        gpu: &Gpu,
+        desc: &BindingDesc,
+        data: &[u8],
+        generation: u64,
+        base: u64,
+        ranges: &[std::ops::Range<u64>],
+    ) -> Result<UploadOutcome, BufferError> {
+        let len = data.len() as u64;
+        let holds_base = self.entries.get(&desc.binding).is_some_and(|e| {
+            e.kind == desc.kind
+                && e.version
+                    == Version::Generation {
+                        generation: base,
+                        len,
+                    }
+                && e.bound_size == padded_size(desc, len)
+        });
+        if !holds_base {
+            return self.upload_generation(gpu, desc, data, generation);
+        }
+        let start = Instant::now();
+        let mut spans: Vec<std::ops::Range<u64>> = ranges
+            .iter()
+            .map(|r| (r.start & !3)..(r.end.min(len).next_multiple_of(4)).min(len))
+            .filter(|r| r.start < r.end)
+            .collect();
+        spans.sort_by_key(|r| r.start);
+        let mut merged: Vec<std::ops::Range<u64>> = Vec::with_capacity(spans.len());
+        for r in spans {
+            match merged.last_mut() {
+                Some(last) if r.start <= last.end => last.end = last.end.max(r.end),
+                _ => merged.push(r),
+            }
+        }
+        let Some(entry) = self.entries.get_mut(&desc.binding) else {
+            return Err(self.missing(desc.binding));
+        };
+        let mut written = 0;
+        let ((), error) = gpu.scoped(|| {
+            for r in &merged {
+                if let Some(bytes) = data.get(r.start as usize..r.end as usize) {
+                    gpu.queue().write_buffer(&entry.buffer, r.start, bytes);
+                    written += r.end - r.start;
+                }
+            }
+        });
+        if let Some(message) = error {
+            return Err(BufferError::Wgpu {
+                binding: desc.binding,
+                name: desc.name.clone(),
+                message,
+            });
+        }
+        entry.version = Version::Generation { generation, len };
+        self.stats.bytes_uploaded += written;
+        self.stats.buffers_uploaded += u32::from(written > 0);
+        self.stats.upload_ms += elapsed_ms(start);
+        Ok(UploadOutcome::Uploaded)
+    }
+
     /// Makes sure `desc.binding` has a buffer of (padded) `size` bytes for the GPU to write,
     /// such as an accumulation target. A new or grown buffer starts zeroed; an existing buffer of
     /// the same size keeps its contents (so accumulation continues across frames).

@@ -7,18 +7,24 @@
 //! The layer knows nothing of the rtc language: a kernel is a compute entry point plus a list of
 //! [`BindingDesc`]s in bind group 0, exactly what the compiler's manifest describes.
 //!
+//! A `Gpu` either owns its device ([`Gpu::new`]) or runs on a host application's adapter, device
+//! and queue ([`Gpu::from_device`], checked against [`required_limits`] by `host.rs`).
+//!
 //! Invariants:
 //! - Every wgpu call that can raise a validation, out-of-memory or internal error runs inside
 //!   error scopes ([`Gpu::scoped`]), so wgpu's default uncaptured-error handler (which panics) is
-//!   never reached by our own calls. A last-resort handler is installed anyway; it records the
-//!   message instead of panicking ([`Gpu::take_uncaptured_errors`]).
-//! - The device is created with the adapter's own limits (not wgpu's small defaults), so big
+//!   never reached by our own calls. A last-resort handler is installed anyway on a device we
+//!   create; it records the message instead of panicking ([`Gpu::take_uncaptured_errors`]). On a
+//!   host's device the host's handler stays (wgpu cannot chain handlers; see
+//!   [`Gpu::from_device`]).
+//! - A device we create has the adapter's own limits (not wgpu's small defaults), so big
 //!   scenes fit; [`GpuLimits`] records the ones the runtime checks against.
 //! - Nothing here exits the process or panics on a run-time failure; errors are typed.
 
 mod adapter;
 mod buffers;
 mod dispatch;
+mod host;
 mod kernels;
 mod pipeline;
 mod pipeline_cache;
@@ -32,6 +38,10 @@ pub use buffers::{BufferError, BufferLimits, BufferSet, UploadOutcome, UploadSta
 pub use dispatch::{
     dispatch_once, plan_tiles, read_buffer, read_vec4_f32, DispatchError, DispatchReport,
     RoundKernels, RoundsReport, TileConfig, TileDispatcher, TileParams, TILE_PARAMS_WGSL,
+};
+pub use host::{
+    missing_capabilities, required_limits, FromDeviceError, MissingCapability,
+    KERNEL_STORAGE_BUFFERS,
 };
 pub use kernels::{pipelines_created, KernelOrigin, KernelReport};
 pub use pipeline::{
@@ -209,14 +219,79 @@ impl Gpu {
             })?;
         init_timings.device_ms = elapsed_ms(start);
 
-        let uncaptured = Arc::new(Mutex::new(Vec::new()));
-        let sink = Arc::clone(&uncaptured);
-        device.on_uncaptured_error(Arc::new(move |error: wgpu::Error| {
-            sink.lock()
-                .unwrap_or_else(PoisonError::into_inner)
-                .push(error.to_string());
-        }));
+        let gpu = Self::assemble(adapter, device, queue, description, init_timings, cache_dir);
+        gpu.record_uncaptured_errors();
+        Ok(gpu)
+    }
 
+    /// A context on a host application's own adapter, device and queue (owned clones of wgpu's
+    /// handles: the host keeps using its own), for embedding rtc: no instance, adapter or device
+    /// is created. rtc records its commands on `queue` and creates its buffers and pipelines on
+    /// `device`; the host's resources are untouched.
+    ///
+    /// The device must offer what rtc's kernels need ([`required_limits`], and compute shaders);
+    /// otherwise this fails with [`FromDeviceError::Unsupported`], listing every shortfall.
+    /// Requesting `required_limits()` (or `adapter.limits()`, for scenes whose buffers exceed
+    /// WebGPU's default 128 MiB binding) when creating the device satisfies it. No feature is
+    /// required; the on-disk pipeline cache of `options` is used only when the device was
+    /// created with `Features::PIPELINE_CACHE` (its status says why not otherwise).
+    ///
+    /// **Uncaptured errors.** wgpu keeps one uncaptured-error handler per device and offers no
+    /// way to read the current one, so a handler cannot be chained. This constructor therefore
+    /// leaves the host's handler in place: rtc runs each of its own wgpu calls inside error
+    /// scopes and reports failures as typed errors, so its calls do not reach that handler, and
+    /// [`Gpu::take_uncaptured_errors`] stays empty. A host that wants rtc's recording handler
+    /// instead (errors collected rather than wgpu's default panic) calls
+    /// [`Gpu::record_uncaptured_errors`], which replaces the device's handler.
+    pub fn from_device(
+        adapter: wgpu::Adapter,
+        device: wgpu::Device,
+        queue: wgpu::Queue,
+        options: &GpuOptions,
+    ) -> Result<Self, FromDeviceError> {
+        let info = adapter.get_info();
+        let missing = missing_capabilities(&device.limits(), &adapter.get_downlevel_capabilities());
+        if !missing.is_empty() {
+            return Err(FromDeviceError::Unsupported {
+                adapter: info.name,
+                missing,
+            });
+        }
+        let description = AdapterDescription::from_info(&info);
+        let cache_dir = match &options.pipeline_cache {
+            PipelineCacheConfig::Off => Err(PipelineCacheStatus::Off),
+            PipelineCacheConfig::Dir(dir) => match pipeline_cache::DiskCache::supported(&adapter) {
+                Err(reason) => Err(PipelineCacheStatus::Unsupported { reason }),
+                Ok(()) if !device.features().contains(wgpu::Features::PIPELINE_CACHE) => {
+                    Err(PipelineCacheStatus::Unsupported {
+                        reason: "the host's device was created without wgpu's PIPELINE_CACHE \
+                                 feature"
+                            .to_string(),
+                    })
+                }
+                Ok(()) => Ok(dir.clone()),
+            },
+        };
+        Ok(Self::assemble(
+            adapter,
+            device,
+            queue,
+            description,
+            InitTimings::default(),
+            cache_dir,
+        ))
+    }
+
+    /// The context around a device, with the on-disk pipeline cache opened from `cache_dir`
+    /// (or its status, when there is none).
+    fn assemble(
+        adapter: wgpu::Adapter,
+        device: wgpu::Device,
+        queue: wgpu::Queue,
+        description: AdapterDescription,
+        init_timings: InitTimings,
+        cache_dir: Result<std::path::PathBuf, PipelineCacheStatus>,
+    ) -> Self {
         let limits = GpuLimits::from_wgpu(&device.limits());
         let (disk_cache, pipeline_cache_status, warnings) = match cache_dir {
             Ok(dir) => {
@@ -225,20 +300,34 @@ impl Gpu {
             }
             Err(status) => (None, status, Vec::new()),
         };
-        Ok(Self {
+        Self {
             adapter,
             device,
             queue,
             description,
             limits,
             init_timings,
-            uncaptured,
+            uncaptured: Arc::new(Mutex::new(Vec::new())),
             kernels: Mutex::new(Vec::new()),
             pipelines_created: AtomicU64::new(0),
             disk_cache,
             pipeline_cache_status,
             warnings: Mutex::new(warnings),
-        })
+        }
+    }
+
+    /// Installs rtc's uncaptured-error handler on the device, replacing the current one: errors
+    /// raised outside any error scope are recorded for [`Gpu::take_uncaptured_errors`] instead of
+    /// reaching wgpu's default handler (which panics). [`Gpu::new`] does this itself;
+    /// [`Gpu::from_device`] leaves the choice to the host.
+    pub fn record_uncaptured_errors(&self) {
+        let sink = Arc::clone(&self.uncaptured);
+        self.device
+            .on_uncaptured_error(Arc::new(move |error: wgpu::Error| {
+                sink.lock()
+                    .unwrap_or_else(PoisonError::into_inner)
+                    .push(error.to_string());
+            }));
     }
 
     /// How many compute pipelines this context has created (memory-cache hits do not count).
@@ -329,6 +418,7 @@ impl Gpu {
 
     /// Errors wgpu reported outside any error scope since the last call (normally none: the
     /// runtime scopes its own calls; this catches errors from callers using the raw device).
+    /// Always empty on a host's device unless [`Gpu::record_uncaptured_errors`] was called.
     pub fn take_uncaptured_errors(&self) -> Vec<String> {
         std::mem::take(
             &mut *self

@@ -14,12 +14,15 @@
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use rtc_compiler::sema::hir::{ConstValue, MeshAsset, TextureAsset};
 
+use super::store::{AssetStore, Stamp, Version};
 use super::SceneError;
 use crate::assets::confine::resolve_scene_path;
-use crate::assets::{self, AssetError, AssetRoots, MeshData, TextureData};
+use crate::assets::model::ModelScene;
+use crate::assets::{self, load_gltf_with, AssetError, AssetRoots, MeshData, TextureData};
 
 /// What identifies a mesh (the span of the string that named it does not).
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
@@ -82,11 +85,14 @@ impl TextureKey {
     }
 }
 
-/// Meshes and textures loaded so far, in order of first use.
+/// Meshes and textures loaded so far, in order of first use, each with the stamp of the file it
+/// came from; what is not in `store` yet is loaded and put there.
 #[derive(Default)]
 pub(super) struct AssetCache {
-    pub meshes: Vec<(MeshKey, MeshData)>,
-    pub textures: Vec<(TextureKey, TextureData)>,
+    pub meshes: Vec<(MeshKey, Arc<MeshData>, Version)>,
+    pub textures: Vec<(TextureKey, Arc<TextureData>)>,
+    /// Assets and BVHs kept across builds (the caller's, moved in for the build).
+    pub store: AssetStore,
     /// What loading found and repaired (non-finite texels), one sentence each.
     pub warnings: Vec<String>,
     mesh_index: HashMap<MeshKey, usize>,
@@ -127,78 +133,158 @@ impl AssetCache {
         })
     }
 
-    /// The index of a mesh, loading it on first use.
+    /// The index of a mesh, loading it on first use (or taking it from the store).
     pub fn mesh(&mut self, asset: &MeshAsset) -> Result<usize, SceneError> {
         let key = MeshKey::of(asset);
         if let Some(&i) = self.mesh_index.get(&key) {
             return Ok(i);
         }
-        let mut data = match asset {
-            MeshAsset::File { path, span } => self
-                .confined(path)
-                .and_then(assets::load_obj)
-                .map_err(|source| SceneError::Asset {
+        let file = match asset {
+            MeshAsset::File { path, span } => {
+                Some(self.confined(path).map_err(|source| SceneError::Asset {
                     span: Some(*span),
                     source,
-                })?,
-            MeshAsset::Quad => assets::quad_mesh(),
-            MeshAsset::Cube => assets::cube_mesh(),
-            MeshAsset::Sphere { subdivisions } => assets::sphere_mesh(*subdivisions),
+                })?)
+            }
+            _ => None,
         };
-        data.ensure_normals();
+        let stamp = file.as_deref().map_or(Stamp::NONE, Stamp::of);
+        let (version, data) = match self.store.mesh(&key, stamp, file.as_deref()) {
+            Some(hit) => hit,
+            None => {
+                let mut data = match (asset, &file) {
+                    (MeshAsset::File { span, .. }, Some(file)) => {
+                        assets::load_obj(file).map_err(|source| SceneError::Asset {
+                            span: Some(*span),
+                            source,
+                        })?
+                    }
+                    (MeshAsset::Quad, _) => assets::quad_mesh(),
+                    (MeshAsset::Cube, _) => assets::cube_mesh(),
+                    (MeshAsset::Sphere { subdivisions }, _) => assets::sphere_mesh(*subdivisions),
+                    (MeshAsset::File { .. }, None) => MeshData::default(),
+                };
+                data.ensure_normals();
+                let data = Arc::new(data);
+                let version =
+                    self.store
+                        .put_mesh(key.clone(), stamp, file.as_deref(), Arc::clone(&data));
+                (version, data)
+            }
+        };
         let i = self.meshes.len();
-        self.meshes.push((key.clone(), data));
+        self.meshes.push((key.clone(), data, version));
         self.mesh_index.insert(key, i);
         Ok(i)
     }
 
-    /// The index of a mesh that does not come from the scene's text (a glTF model's), made by
-    /// `make` on first use.
-    pub fn insert_mesh(&mut self, key: MeshKey, make: impl FnOnce() -> MeshData) -> usize {
+    /// The index of a mesh that does not come from the scene's text (a glTF model's, made from
+    /// the model file of `version`), made by `make` on first use unless the store has it.
+    pub fn insert_mesh(
+        &mut self,
+        key: MeshKey,
+        version: Version,
+        make: impl FnOnce() -> MeshData,
+    ) -> usize {
         if let Some(&i) = self.mesh_index.get(&key) {
             return i;
         }
-        let mut data = make();
-        data.ensure_normals();
+        let data = match self.store.derived_mesh(&key, version) {
+            Some(data) => data,
+            None => {
+                let mut data = make();
+                data.ensure_normals();
+                let data = Arc::new(data);
+                self.store
+                    .put_derived_mesh(key.clone(), version, Arc::clone(&data));
+                data
+            }
+        };
         let i = self.meshes.len();
-        self.meshes.push((key.clone(), data));
+        self.meshes.push((key.clone(), data, version));
         self.mesh_index.insert(key, i);
         i
     }
 
+    /// A glTF file (confined already), read once per content, and its version.
+    pub fn model(&mut self, file: &Path) -> Result<(Version, Arc<ModelScene>), AssetError> {
+        let stamp = Stamp::of(file);
+        if let Some(hit) = self.store.model(file, stamp) {
+            return Ok(hit);
+        }
+        let model = Arc::new(load_gltf_with(file, &self.roots)?);
+        let version = self
+            .store
+            .put_model(file.to_path_buf(), stamp, Arc::clone(&model));
+        Ok((version, model))
+    }
+
     /// The index of a texture that does not come from the scene's text (a glTF model's image,
-    /// keyed `file.glb#images[i]`), made by `make` on first use.
-    pub fn insert_texture(&mut self, key: TextureKey, make: impl FnOnce() -> TextureData) -> usize {
+    /// keyed `file.glb#images[i]`, made from the model file of `version`), made by `make` on
+    /// first use unless the store has it.
+    pub fn insert_texture(
+        &mut self,
+        key: TextureKey,
+        version: Version,
+        make: impl FnOnce() -> TextureData,
+    ) -> usize {
         if let Some(&i) = self.texture_index.get(&key) {
             return i;
         }
+        let data = match self.store.derived_texture(&key, version) {
+            Some(data) => data,
+            None => {
+                let data = Arc::new(make());
+                self.store
+                    .put_derived_texture(key.clone(), version, Arc::clone(&data));
+                data
+            }
+        };
         let i = self.textures.len();
-        self.textures.push((key.clone(), make()));
+        self.textures.push((key.clone(), data));
         self.texture_index.insert(key, i);
         i
     }
 
-    /// The index of a texture, loading it on first use.
+    /// The index of a texture, loading it on first use (or taking it from the store).
     pub fn texture(&mut self, asset: &TextureAsset) -> Result<usize, SceneError> {
         let key = TextureKey::of(asset);
         if let Some(&i) = self.texture_index.get(&key) {
             return Ok(i);
         }
-        let data = match asset {
+        let file = match asset {
             TextureAsset::File { path, span } => {
-                let data = self
-                    .confined(path)
-                    .and_then(assets::load_image)
-                    .map_err(|source| SceneError::Asset {
-                        span: Some(*span),
-                        source,
-                    })?;
-                if data.nonfinite_texels > 0 {
-                    self.warnings.push(nonfinite_warning(path, &data));
-                }
+                Some(self.confined(path).map_err(|source| SceneError::Asset {
+                    span: Some(*span),
+                    source,
+                })?)
+            }
+            TextureAsset::Solid(_) => None,
+        };
+        let stamp = file.as_deref().map_or(Stamp::NONE, Stamp::of);
+        let data = match self.store.texture(&key, stamp, file.as_deref()) {
+            Some(data) => data,
+            None => {
+                let data = match (asset, &file) {
+                    (TextureAsset::File { path, span }, Some(file)) => {
+                        let data =
+                            assets::load_image(file).map_err(|source| SceneError::Asset {
+                                span: Some(*span),
+                                source,
+                            })?;
+                        if data.nonfinite_texels > 0 {
+                            self.warnings.push(nonfinite_warning(path, &data));
+                        }
+                        data
+                    }
+                    (TextureAsset::Solid(c), _) => assets::solid_texture(*c),
+                    (TextureAsset::File { .. }, None) => assets::solid_texture([0.0; 4]),
+                };
+                let data = Arc::new(data);
+                self.store
+                    .put_texture(key.clone(), stamp, file.as_deref(), Arc::clone(&data));
                 data
             }
-            TextureAsset::Solid(c) => assets::solid_texture(*c),
         };
         let i = self.textures.len();
         self.textures.push((key.clone(), data));

@@ -25,6 +25,7 @@
 //! order; versions come from one process-wide counter, so two `Entities` never share a version.
 
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Arc;
 use std::time::Instant;
 
 use glam::{Mat4, Vec3, Vec4};
@@ -37,13 +38,14 @@ use rtc_compiler::sema::hir::{
 };
 use rtc_compiler::Span;
 
-use super::assets_cache::AssetCache;
+use super::assets_cache::{AssetCache, MeshKey};
 use super::encode::encode_mesh;
 use super::gpu_types::{record, FrameUniforms, GpuInstance};
 use super::models;
-use super::params::ParamsBuilder;
+use super::params::{struct_type, ParamsBuilder};
+use super::store::{AssetStore, BuiltMesh};
 use super::SceneError;
-use crate::assets::{AssetRoots, TextureFormat};
+use crate::assets::{AssetRoots, MeshData, TextureFormat};
 
 /// Options of the entity stage.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -61,6 +63,36 @@ pub struct TypedOffset {
     pub type_id: u32,
     /// Word offset in `params`.
     pub offset: u32,
+    /// Its struct (for field writes).
+    pub struct_id: Option<StructId>,
+    /// Its words in `params`.
+    pub words: u32,
+}
+
+/// Which role-struct instance of the scene a field write goes to
+/// ([`Entities::set_field`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum FieldTarget {
+    /// The camera.
+    Camera,
+    /// The background.
+    Background,
+    /// Light `i` (scene `light` entries in order, then the models' lights).
+    Light(usize),
+    /// The material of object `i` (scene `object` entries in order, then model instances).
+    Material(usize),
+}
+
+/// What changed in place since the GPU copy was last brought up to date (the caller clears it
+/// after each upload, [`Entities::clear_dirty`]), so that an upload can write ranges, not whole
+/// buffers. Each part holds the version its ranges are relative to; an upload may use them only
+/// when the GPU holds exactly that version, and writes the whole buffer otherwise.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Dirty {
+    /// `params` word ranges written since version `.0`.
+    pub params: Option<(u64, Vec<std::ops::Range<usize>>)>,
+    /// `nodes` records from `.1` on changed since version `.0` (the ones before did not).
+    pub nodes: Option<(u64, usize)>,
 }
 
 /// A distinct mesh with its BLAS (quantised into [`Entities::nodes`]).
@@ -224,6 +256,7 @@ pub struct Entities {
     stats: EntityStats,
     stacks: (u32, u32),
     warnings: Vec<String>,
+    dirty: Dirty,
 }
 
 static NEXT_VERSION: AtomicU64 = AtomicU64::new(1);
@@ -324,6 +357,52 @@ pub(super) fn transform_box(b: &Aabb, m: &Mat4) -> Aabb {
     out
 }
 
+/// The ranges where two word slices of the same length differ (runs closer than 16 words
+/// merged).
+fn changed_ranges(old: &[u32], new: &[u32]) -> Vec<std::ops::Range<usize>> {
+    let mut out: Vec<std::ops::Range<usize>> = Vec::new();
+    for (i, _) in old.iter().zip(new).enumerate().filter(|(_, (a, b))| a != b) {
+        match out.last_mut() {
+            Some(last) if i <= last.end + 16 => last.end = i + 1,
+            _ => out.push(i..i + 1),
+        }
+    }
+    out
+}
+
+/// Builds, quantises and encodes the object-level BVH of one mesh.
+fn build_mesh(
+    key: &MeshKey,
+    data: &MeshData,
+    preset: BuildPreset,
+) -> Result<BuiltMesh, SceneError> {
+    let vertices: &[Vec3] = bytemuck::cast_slice(&data.positions);
+    let bvh = build(
+        BuildInput::Indexed {
+            vertices,
+            indices: &data.indices,
+        },
+        preset,
+    );
+    let quantized = quantize(&bvh).map_err(|source| SceneError::MeshLayout {
+        mesh: key.describe(),
+        source,
+    })?;
+    let mut records = Vec::with_capacity(quantized.record_count());
+    quantized.append_records(&mut records);
+    let mut triangles = Vec::new();
+    let mut attributes = Vec::new();
+    encode_mesh(data, &bvh, &mut triangles, &mut attributes);
+    Ok(BuiltMesh {
+        records,
+        triangles,
+        attributes,
+        slots: to_u32("triangle slots", bvh.prim_indices().len())?,
+        bounds: bvh.root_aabb(),
+        depth: bvh.max_depth(),
+    })
+}
+
 impl Entities {
     /// Builds the entities of `scene` (a scene of `program`, linked as `linked`).
     pub fn build(
@@ -332,16 +411,41 @@ impl Entities {
         linked: &Linked,
         options: &EntityOptions,
     ) -> Result<Entities, SceneError> {
-        let mut stats = EntityStats::default();
-        let mut warnings = Vec::new();
+        Self::build_with_store(program, scene, linked, options, &mut AssetStore::new())
+    }
 
-        // 2. Assets, each once.
-        let start = Instant::now();
+    /// [`build`](Self::build), taking assets and object-level BVHs from `store` where their
+    /// inputs did not change and putting there what it had to load or build.
+    pub fn build_with_store(
+        program: &Program,
+        scene: &SceneDesc,
+        linked: &Linked,
+        options: &EntityOptions,
+        store: &mut AssetStore,
+    ) -> Result<Entities, SceneError> {
         let scene_file = program
             .modules
             .get(scene.module.index())
             .and_then(|m| m.path.as_deref());
         let mut cache = AssetCache::new(scene_file, options.asset_roots.clone());
+        cache.store = std::mem::take(store);
+        let built = Self::build_in(program, scene, linked, options, &mut cache);
+        *store = std::mem::take(&mut cache.store);
+        built
+    }
+
+    fn build_in(
+        program: &Program,
+        scene: &SceneDesc,
+        linked: &Linked,
+        options: &EntityOptions,
+        cache: &mut AssetCache,
+    ) -> Result<Entities, SceneError> {
+        let mut stats = EntityStats::default();
+        let mut warnings = Vec::new();
+
+        // 2. Assets, each once.
+        let start = Instant::now();
         let mut object_meshes = Vec::with_capacity(scene.objects.len());
         for obj in &scene.objects {
             object_meshes.push(match &obj.geometry {
@@ -349,7 +453,7 @@ impl Entities {
                 Geometry::Custom(_) => None,
             });
         }
-        let models = models::import(program, linked, scene, &mut cache)?;
+        let models = models::import(program, linked, scene, cache)?;
         warnings.extend(models.warnings.iter().cloned());
         let model_materials = models.objects.iter().map(|o| &o.material);
         for inst in all_instances(scene)
@@ -375,38 +479,36 @@ impl Entities {
         let mut triangles = Vec::new();
         let mut attributes = Vec::new();
         let mut meshes = Vec::with_capacity(cache.meshes.len());
-        for (key, data) in &cache.meshes {
-            let vertices: &[Vec3] = bytemuck::cast_slice(&data.positions);
-            let bvh = build(
-                BuildInput::Indexed {
-                    vertices,
-                    indices: &data.indices,
-                },
-                options.bvh,
-            );
-            stats.blas_builds += 1;
+        for (key, data, version) in &cache.meshes {
+            let built = match cache.store.blas(key, options.bvh, *version) {
+                Some(built) => built,
+                None => {
+                    let built = Arc::new(build_mesh(key, data, options.bvh)?);
+                    stats.blas_builds += 1;
+                    cache
+                        .store
+                        .put_blas(key.clone(), options.bvh, *version, Arc::clone(&built));
+                    built
+                }
+            };
             let node_base = to_u32("BVH nodes", nodes.len())?;
             let triangle_base = to_u32("triangle slots", triangles.len() / record::TRIANGLE_VEC4S)?;
-            let records = quantize(&bvh).map_err(|source| SceneError::MeshLayout {
-                mesh: key.describe(),
-                source,
-            })?;
-            let depth = bvh.max_depth();
-            stats.max_blas_depth = stats.max_blas_depth.max(depth);
+            stats.max_blas_depth = stats.max_blas_depth.max(built.depth);
             stats.triangles += data.indices.len() as u64;
             meshes.push(MeshEntity {
                 source: key.describe(),
                 vertices: to_u32("vertices", data.positions.len())?,
                 triangles: to_u32("triangles", data.indices.len())?,
-                slots: to_u32("triangle slots", bvh.prim_indices().len())?,
+                slots: built.slots,
                 node_base,
-                node_count: to_u32("BVH nodes", records.record_count())?,
+                node_count: to_u32("BVH nodes", built.records.len())?,
                 triangle_base,
-                bounds: bvh.root_aabb(),
-                depth,
+                bounds: built.bounds,
+                depth: built.depth,
             });
-            records.append_records(&mut nodes);
-            encode_mesh(data, &bvh, &mut triangles, &mut attributes);
+            nodes.extend_from_slice(&built.records);
+            triangles.extend_from_slice(&built.triangles);
+            attributes.extend_from_slice(&built.attributes);
         }
         let blas_nodes = to_u32("BVH nodes", nodes.len())?;
         to_u32("triangle slots", triangles.len())?;
@@ -437,7 +539,7 @@ impl Entities {
         // 5. params: records, instances, light table.
         let start = Instant::now();
         let mut params = ParamsBuilder::default();
-        for ((key, _), mesh) in cache.meshes.iter().zip(&meshes) {
+        for ((key, _, _), mesh) in cache.meshes.iter().zip(&meshes) {
             let mut record = [0; record::MESH_WORDS];
             record[record::MESH_NODE_BASE] = mesh.node_base;
             record[record::MESH_SLOT_BASE] = mesh.triangle_base;
@@ -459,9 +561,12 @@ impl Entities {
         }
         let typed =
             |params: &mut ParamsBuilder, inst: &Instance| -> Result<TypedOffset, SceneError> {
+                let ty = struct_type(program, inst.struct_id)?;
                 Ok(TypedOffset {
                     type_id: type_id(program, linked, inst.struct_id)?,
                     offset: params.push_instance(program, inst)?,
+                    struct_id: Some(inst.struct_id),
+                    words: rtc_compiler::layout::layout(program, ty).size / 4,
                 })
             };
         let camera = typed(&mut params, camera)?;
@@ -573,6 +678,7 @@ impl Entities {
             stats,
             stacks: (linked.config.tlas_stack, linked.config.blas_stack),
             warnings,
+            dirty: Dirty::default(),
         };
         if !entities.needs_bounds() {
             entities.rebuild_tlas()?;
@@ -645,34 +751,198 @@ impl Entities {
         Ok(())
     }
 
-    /// Shim until the session core's `Renderer::set_field` lands: packs `value` as field `index`
-    /// of the instance of struct `sid` at word `offset` of `params` (no handle fields) and marks
-    /// `params` changed (uploaded whole).
-    pub fn write_field_shim(
-        &mut self,
-        program: &Program,
-        offset: u32,
-        sid: rtc_compiler::sema::hir::StructId,
-        index: usize,
-        value: &rtc_compiler::sema::hir::ConstValue,
-    ) -> Result<(), SceneError> {
-        let ty = super::params::struct_type(program, sid)?;
-        let offsets = rtc_compiler::layout::field_offsets(program, ty);
-        let (Some(field), Some(off)) = (program.structs[sid].fields.get(index), offsets.get(index))
-        else {
-            return Ok(());
+    /// Takes over the versions of `old` (the entities this rebuild replaces, whose data is on
+    /// the GPU) for every buffer whose data is the same, so that nothing unchanged is uploaded
+    /// again; when only the scene-level BVH's records differ and the node count is the same,
+    /// marks just those for upload.
+    pub fn inherit_versions(&mut self, old: &Entities) {
+        let ov = old.versions;
+        if self.triangles == old.triangles {
+            self.versions.triangles = ov.triangles;
+        }
+        if self.attributes == old.attributes {
+            self.versions.attributes = ov.attributes;
+        }
+        if self.texels == old.texels {
+            self.versions.texels = ov.texels;
+        }
+        if self.params == old.params {
+            self.versions.params = ov.params;
+        } else if self.params.len() == old.params.len() {
+            let changed = changed_ranges(&old.params, &self.params);
+            self.dirty.params = Some((ov.params, changed));
+        }
+        let blas = self.blas_nodes as usize;
+        if self.nodes == old.nodes {
+            self.versions.nodes = ov.nodes;
+        } else if self.nodes.len() == old.nodes.len()
+            && self.blas_nodes == old.blas_nodes
+            && self.nodes.get(..blas) == old.nodes.get(..blas)
+        {
+            self.dirty.nodes = Some((ov.nodes, blas));
+        }
+    }
+
+    /// Forgets the range bookkeeping and gives every buffer a new version (after the GPU copy
+    /// was lost, everything is uploaded again).
+    pub fn force_full_upload(&mut self) {
+        let v = next_version();
+        self.versions = Versions {
+            nodes: v,
+            instances: v,
+            triangles: v,
+            attributes: v,
+            params: v,
+            texels: v,
         };
-        let base = offset as usize + (*off / 4) as usize;
-        rtc_compiler::layout::pack_into(
-            program,
-            field.ty,
-            value,
-            &mut self.params,
-            base,
-            &mut rtc_compiler::layout::NoHandles,
-        );
+        self.dirty = Dirty::default();
+    }
+
+    /// The changes since the last [`clear_dirty`](Self::clear_dirty).
+    pub fn dirty(&self) -> &Dirty {
+        &self.dirty
+    }
+
+    /// Forgets the changes (the GPU copy is up to date).
+    pub fn clear_dirty(&mut self) {
+        self.dirty = Dirty::default();
+    }
+
+    /// Bumps the `params` version after a change: `range` when only those words changed in
+    /// place, `None` when more did (the next upload writes it all).
+    fn params_changed(&mut self, range: Option<std::ops::Range<usize>>) {
+        let old = self.versions.params;
         self.versions.params = next_version();
+        self.dirty.params = match (range, self.dirty.params.take()) {
+            (Some(r), Some((base, mut ranges))) => {
+                ranges.push(r);
+                Some((base, ranges))
+            }
+            (Some(r), None) => Some((old, vec![r])),
+            (None, _) => None,
+        };
+    }
+
+    /// The instance a field write to `target` goes to.
+    pub fn instance(&self, target: FieldTarget) -> Result<TypedOffset, SceneError> {
+        let missing = |what: String| SceneError::NoSuchInstance { what };
+        match target {
+            FieldTarget::Camera => Ok(self.camera),
+            FieldTarget::Background => self.background.ok_or_else(|| missing("background".into())),
+            FieldTarget::Light(i) => self
+                .lights
+                .get(i)
+                .copied()
+                .ok_or_else(|| missing(format!("light {i} (it has {})", self.lights.len()))),
+            FieldTarget::Material(i) => self
+                .objects
+                .get(i)
+                .map(|o| o.material)
+                .ok_or_else(|| missing(format!("object {i} (it has {})", self.objects.len()))),
+        }
+    }
+
+    /// Writes `words` at word `at` of `target`'s instance in `params`. An instance shared with
+    /// another target (identical instances are stored once) is first copied, so the write
+    /// changes `target` alone. Only the words written are marked for upload (plus, after a copy,
+    /// the whole of `params` once).
+    pub fn write_instance(
+        &mut self,
+        target: FieldTarget,
+        at: u32,
+        words: &[u32],
+    ) -> Result<(), SceneError> {
+        let inst = self.instance(target)?;
+        let end = at as usize + words.len();
+        if end > inst.words as usize {
+            return Err(SceneError::TooLarge {
+                what: "instance words",
+                count: end as u64,
+            });
+        }
+        let offset = if self.users_of(inst.offset) > 1 {
+            self.unshare(target, inst)?
+        } else {
+            inst.offset
+        };
+        let start = offset as usize + at as usize;
+        let Some(slot) = self.params.get_mut(start..start + words.len()) else {
+            return Err(SceneError::TooLarge {
+                what: "parameter words",
+                count: (start + words.len()) as u64,
+            });
+        };
+        if slot != words {
+            slot.copy_from_slice(words);
+            self.params_changed(Some(start..start + words.len()));
+        }
         Ok(())
+    }
+
+    /// How many targets (camera, background, lights, materials, custom geometries) use the
+    /// instance at `offset`.
+    fn users_of(&self, offset: u32) -> usize {
+        let custom = self.objects.iter().filter_map(|o| match o.geometry {
+            ObjectGeometry::Custom { geometry, .. } => Some(geometry),
+            ObjectGeometry::Mesh { .. } => None,
+        });
+        std::iter::once(self.camera)
+            .chain(self.background)
+            .chain(self.lights.iter().copied())
+            .chain(self.objects.iter().map(|o| o.material))
+            .chain(custom)
+            .filter(|t| t.offset == offset)
+            .count()
+    }
+
+    /// Gives `target` its own copy of `inst`, placed before the medium table (which moves up);
+    /// returns the copy's offset.
+    fn unshare(&mut self, target: FieldTarget, inst: TypedOffset) -> Result<u32, SceneError> {
+        let words: Vec<u32> = self
+            .params
+            .get(inst.offset as usize..(inst.offset + inst.words) as usize)
+            .map(<[u32]>::to_vec)
+            .unwrap_or_default();
+        let media = self.params.split_off(self.medium_table as usize);
+        let at = self.params.len().next_multiple_of(4);
+        self.params.resize(at, 0);
+        self.params.extend_from_slice(&words);
+        self.medium_table = to_u32("parameter words", self.params.len())?;
+        self.params.extend_from_slice(&media);
+        to_u32("parameter words", self.params.len())?;
+        let at = to_u32("parameter words", at)?;
+        match target {
+            FieldTarget::Camera => self.camera.offset = at,
+            FieldTarget::Background => {
+                if let Some(b) = &mut self.background {
+                    b.offset = at;
+                }
+            }
+            FieldTarget::Light(i) => {
+                if let Some(l) = self.lights.get_mut(i) {
+                    l.offset = at;
+                }
+                let entry = self.light_table as usize
+                    + i * record::LIGHT_ENTRY_WORDS
+                    + record::LIGHT_ENTRY_OFFSET;
+                if let Some(w) = self.params.get_mut(entry) {
+                    *w = at;
+                }
+            }
+            FieldTarget::Material(i) => {
+                if let Some(o) = self.objects.get_mut(i) {
+                    o.material.offset = at;
+                }
+                for slot in &mut self.instances {
+                    if slot.object as usize == i {
+                        slot.material_offset = at;
+                    }
+                }
+                self.versions.instances = next_version();
+            }
+        }
+        self.params_changed(None);
+        Ok(at)
     }
 
     /// Rebuilds the TLAS if an object moved or bounds changed since the last build; returns
@@ -714,8 +984,18 @@ impl Entities {
             "BVH nodes",
             self.blas_nodes as usize + records.record_count(),
         )?;
+        let (old_len, old_version) = (self.nodes.len(), self.versions.nodes);
         self.nodes.truncate(self.blas_nodes as usize);
         records.append_records(&mut self.nodes);
+        self.dirty.nodes = if self.nodes.len() == old_len {
+            let from = self.blas_nodes as usize;
+            Some(match self.dirty.nodes {
+                Some((base, f)) => (base, f.min(from)),
+                None => (old_version, from),
+            })
+        } else {
+            None
+        };
         let order = tlas.prim_indices().to_vec();
         self.instances = order
             .iter()
@@ -742,10 +1022,12 @@ impl Entities {
             .collect();
         let table_start = self.medium_table as usize;
         if self.params.get(table_start..) != Some(&media[..]) {
+            let same_len = self.params.len() == table_start + media.len();
             self.params.truncate(table_start);
             self.params.extend_from_slice(&media);
             to_u32("parameter words", self.params.len())?;
-            self.versions.params = next_version();
+            let range = table_start..self.params.len();
+            self.params_changed(same_len.then_some(range));
         }
         self.medium_count = (media.len() / record::MEDIUM_ENTRY_WORDS) as u32;
 

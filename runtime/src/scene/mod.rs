@@ -90,9 +90,11 @@
 mod assets_cache;
 mod encode;
 mod entities;
+mod fields;
 mod gpu_types;
 mod models;
 mod params;
+mod store;
 mod upload;
 
 #[cfg(test)]
@@ -106,12 +108,13 @@ pub(crate) mod upload_for_tests {
 
 pub use encode::{decode_octahedral, octahedral, pack_snorm2x16, unpack_snorm2x16};
 pub use entities::{
-    Entities, EntityOptions, EntityStats, LightEntity, MeshEntity, ObjectEntity, ObjectGeometry,
-    TextureEntity, TypedOffset, Versions,
+    Dirty, Entities, EntityOptions, EntityStats, FieldTarget, LightEntity, MeshEntity,
+    ObjectEntity, ObjectGeometry, TextureEntity, TypedOffset, Versions,
 };
 pub use gpu_types::{
     element_size, field_offset, struct_align, struct_size, FrameUniforms, GpuInstance,
 };
+pub use store::{AssetStore, BuiltMesh, Stamp, StoreCounters, Version};
 pub use upload::{runtime_binding, Counters, GpuScene, UploadReport};
 
 use rtc_compiler::diag::{codes, Diagnostic};
@@ -231,6 +234,35 @@ pub enum SceneError {
     /// Reading a buffer back failed.
     #[error(transparent)]
     ReadBack(#[from] DispatchError),
+    /// A field write named an instance the scene does not have.
+    #[error("the scene has no {what}")]
+    NoSuchInstance {
+        /// `background`, `light 3`, `object 7`.
+        what: String,
+    },
+    /// A field write named a field the instance's struct does not have.
+    #[error("`{ty}` has no field `{field}`; its fields are {}", fields.join(", "))]
+    NoSuchField {
+        /// The struct.
+        ty: String,
+        /// The field asked for.
+        field: String,
+        /// Its fields.
+        fields: Vec<String>,
+    },
+    /// A field write's value is not of the field's type (or is an asset handle, which only a
+    /// rebuild can change).
+    #[error("`{ty}.{field}` is a `{expected}`: {problem}")]
+    FieldValue {
+        /// The struct.
+        ty: String,
+        /// The field.
+        field: String,
+        /// The field's type.
+        expected: String,
+        /// What is wrong with the value.
+        problem: String,
+    },
 }
 
 fn object_label(index: usize, name: Option<&str>) -> String {

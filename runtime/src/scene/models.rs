@@ -30,6 +30,7 @@
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use glam::{Mat4, Vec3};
 use rtc_compiler::link::{model_type, Linked, MODEL_TYPES};
@@ -39,9 +40,10 @@ use rtc_compiler::sema::hir::{
 use rtc_compiler::Span;
 
 use super::assets_cache::{AssetCache, MeshKey, TextureKey};
+use super::store::Version;
 use super::SceneError;
 use crate::assets::model::{AlphaMode, LightKind, ModelScene, Projection};
-use crate::assets::{load_gltf_with, solid_texture};
+use crate::assets::solid_texture;
 
 /// An object a model brings.
 pub(super) struct ModelObject {
@@ -89,7 +91,7 @@ pub(super) fn import(
     let mut parts = ModelParts::default();
     // Each file once, with the name messages give it: the file read, which may lie in an asset
     // root rather than next to the scene.
-    let mut loaded: HashMap<PathBuf, (ModelScene, String)> = HashMap::new();
+    let mut loaded: HashMap<PathBuf, (Arc<ModelScene>, String, Version)> = HashMap::new();
     for model in &scene.models {
         if !loaded.contains_key(&model.path) {
             let file = cache
@@ -98,7 +100,7 @@ pub(super) fn import(
                     span: Some(model.span),
                     source,
                 })?;
-            let data = load_gltf_with(&file, &cache.roots).map_err(|source| SceneError::Asset {
+            let (stamp, data) = cache.model(&file).map_err(|source| SceneError::Asset {
                 span: Some(model.span),
                 source,
             })?;
@@ -106,14 +108,13 @@ pub(super) fn import(
             parts
                 .warnings
                 .extend(data.warnings.iter().map(|w| format!("{name}: {w}")));
-            loaded.insert(model.path.clone(), (data, name));
+            loaded.insert(model.path.clone(), (data, name, stamp));
         }
-        if let Some((data, name)) = loaded.get(&model.path) {
+        if let Some((data, name, stamp)) = loaded.get(&model.path) {
             import_one(
                 Types { program, linked },
                 model,
-                name,
-                data,
+                (name, data, *stamp),
                 scene.camera.is_none(),
                 cache,
                 &mut parts,
@@ -197,8 +198,7 @@ fn image_path(file: &Path, image: usize) -> PathBuf {
 fn import_one(
     types: Types<'_>,
     model: &Model,
-    name: &str,
-    data: &ModelScene,
+    (name, data, stamp): (&str, &ModelScene, Version),
     wants_camera: bool,
     cache: &mut AssetCache,
     parts: &mut ModelParts,
@@ -217,18 +217,20 @@ fn import_one(
                 .cloned()
                 .unwrap_or_else(|| format!("mesh {i}")),
         };
-        meshes.push(cache.insert_mesh(key, || mesh.clone()));
+        meshes.push(cache.insert_mesh(key, stamp, || mesh.clone()));
     }
     let mut textures = Vec::with_capacity(data.textures.len());
     for (i, texture) in data.textures.iter().enumerate() {
         let path = image_path(&model.path, i);
-        cache.insert_texture(TextureKey::File(path.clone()), || texture.clone());
+        cache.insert_texture(TextureKey::File(path.clone()), stamp, || texture.clone());
         textures.push(ConstValue::Texture(TextureAsset::File { path, span }));
     }
     let white = [1.0f32; 4];
-    cache.insert_texture(TextureKey::Solid(white.map(f32::to_bits)), || {
-        solid_texture(white)
-    });
+    cache.insert_texture(
+        TextureKey::Solid(white.map(f32::to_bits)),
+        Version::NONE,
+        || solid_texture(white),
+    );
 
     let mut materials = Vec::with_capacity(data.materials.len());
     let mut blended = 0usize;

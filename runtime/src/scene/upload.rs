@@ -112,6 +112,44 @@ impl GpuScene {
         }
     }
 
+    /// Makes the set hold exactly `bindings` (a replaced kernel's): buffers of bindings it
+    /// keeps stay, with their contents; the others are dropped.
+    pub fn rebind(&mut self, bindings: &[&'static abi::BindingDesc]) {
+        let mut list: Vec<(&'static abi::BindingDesc, BindingDesc)> = Vec::new();
+        for &b in bindings {
+            if !list.iter().any(|(have, _)| have.binding == b.binding) {
+                list.push((b, runtime_binding(b)));
+            }
+        }
+        list.sort_by_key(|(b, _)| b.binding);
+        for (old, _) in &self.bindings {
+            if !list.iter().any(|(b, _)| b.binding == old.binding) {
+                self.buffers.remove(old.binding);
+            }
+        }
+        self.bindings = list;
+    }
+
+    /// A set with the same bindings, limits and `paths` size but no buffers yet (its first
+    /// upload writes everything).
+    pub fn emptied(&self, gpu: &Gpu) -> GpuScene {
+        GpuScene {
+            buffers: BufferSet::new(gpu, "rtc scene").with_limits(self.buffers.limits()),
+            bindings: self.bindings.clone(),
+            path_bytes: self.path_bytes,
+        }
+    }
+
+    /// Zeroes the kernel's counters only (between calls that continue an accumulation).
+    pub fn clear_counters(&mut self, gpu: &Gpu) -> Result<(), SceneError> {
+        if let Some(b) = abi::binding("counters").filter(|_| self.has("counters")) {
+            if self.buffers.buffer(b.binding).is_some() {
+                self.buffers.clear(gpu, b.binding)?;
+            }
+        }
+        Ok(())
+    }
+
     /// Sizes the wavefront model's `paths` binding (one tile's path records) for the next
     /// upload; it is zeroed when (re)allocated and by [`GpuScene::clear_accumulation`].
     pub fn set_path_bytes(&mut self, bytes: u64) {
@@ -172,6 +210,7 @@ impl GpuScene {
     ) -> Result<UploadReport, SceneError> {
         self.buffers.begin_frame();
         let versions = entities.versions();
+        let dirty = entities.dirty();
         let object_order;
         let instances: &[GpuInstance] = match order {
             InstanceOrder::Tlas => entities.instances(),
@@ -189,14 +228,22 @@ impl GpuScene {
                 "frame" => set.upload(gpu, desc, bytemuck::bytes_of(frame))?,
                 // Only for a bounds kernel that reads it; the tile dispatcher binds its own.
                 "tile" => set.upload(gpu, desc, bytemuck::bytes_of(&TileParams::default()))?,
-                "nodes" => set
-                    .upload_generation(
-                        gpu,
-                        desc,
-                        bytemuck::cast_slice(entities.nodes()),
-                        versions.nodes,
-                    )
-                    .map_err(named)?,
+                "nodes" => {
+                    let record = std::mem::size_of::<rtc_bvh::NodeRecord>() as u64;
+                    let data: &[u8] = bytemuck::cast_slice(entities.nodes());
+                    match dirty.nodes {
+                        Some((base, from)) => set.upload_ranges(
+                            gpu,
+                            desc,
+                            data,
+                            versions.nodes,
+                            base,
+                            std::slice::from_ref(&(from as u64 * record..data.len() as u64)),
+                        ),
+                        None => set.upload_generation(gpu, desc, data, versions.nodes),
+                    }
+                    .map_err(named)?
+                }
                 "instances" => set.upload(gpu, desc, bytemuck::cast_slice(instances))?,
                 "triangles" => set
                     .upload_generation(
@@ -214,12 +261,19 @@ impl GpuScene {
                         versions.attributes,
                     )
                     .map_err(named)?,
-                "params" => set.upload_generation(
-                    gpu,
-                    desc,
-                    bytemuck::cast_slice(entities.params()),
-                    versions.params,
-                )?,
+                "params" => {
+                    let data: &[u8] = bytemuck::cast_slice(entities.params());
+                    match &dirty.params {
+                        Some((base, ranges)) => {
+                            let bytes: Vec<_> = ranges
+                                .iter()
+                                .map(|r| r.start as u64 * 4..r.end as u64 * 4)
+                                .collect();
+                            set.upload_ranges(gpu, desc, data, versions.params, *base, &bytes)?
+                        }
+                        None => set.upload_generation(gpu, desc, data, versions.params)?,
+                    }
+                }
                 "texels" => set
                     .upload_generation(
                         gpu,

@@ -476,6 +476,45 @@ fn unknown_material_fields_warn_or_fail_as_stated() {
 }
 
 #[test]
+fn a_rebuild_with_the_store_reads_no_model_and_builds_no_blas_until_the_file_changes() {
+    let dir = TempDir::new("gltf-store");
+    dir.write("model.glb", hierarchy_glb());
+    let name = dir.path().join("scene.rt");
+    let checked = check_text(&name.display().to_string(), NO_CAMERA, &Options::default());
+    let program = checked.program.expect("a program");
+    let scene = program.select_scene(None).expect("one scene");
+    let linked = link(
+        &program,
+        scene,
+        &mut Registry::new(),
+        &LinkOptions::default(),
+    )
+    .unwrap_or_else(|d| panic!("link: {d:?}"));
+    let desc = &program.scenes[linked.scene];
+    let mut store = crate::scene::AssetStore::new();
+    let options = EntityOptions::default();
+    let first = Entities::build_with_store(&program, desc, &linked, &options, &mut store)
+        .expect("entities");
+    let after_first = store.counters();
+    assert_eq!((after_first.models_read, after_first.blas_builds), (1, 1));
+    let second = Entities::build_with_store(&program, desc, &linked, &options, &mut store)
+        .expect("entities");
+    assert_eq!(store.counters().models_read, 1, "not read again");
+    assert_eq!(store.counters().blas_builds, 1, "no BLAS built again");
+    assert_eq!(second.stats().blas_builds, 0);
+    assert_eq!(first.nodes(), second.nodes());
+    assert_eq!(first.params(), second.params());
+    assert_eq!(first.texels(), second.texels());
+    // A changed file is read again and its mesh's BLAS built again.
+    let mut changed = hierarchy_glb();
+    changed.extend_from_slice(&[0x20; 4]);
+    dir.write("model.glb", changed);
+    Entities::build_with_store(&program, desc, &linked, &options, &mut store).expect("entities");
+    assert_eq!(store.counters().models_read, 2);
+    assert_eq!(store.counters().blas_builds, 2);
+}
+
+#[test]
 fn a_model_file_named_twice_is_read_once_and_shares_its_blas() {
     let dir = TempDir::new("gltf-scene");
     dir.write("model.glb", hierarchy_glb());

@@ -1,0 +1,327 @@
+//! The asset store: what loading and BVH building produced, kept across rebuilds of a scene's
+//! entities so that a recompiled program (`Renderer::replace_kernel`) or a reloaded scene reuses
+//! every mesh, texture, glTF file and object-level BVH whose inputs did not change.
+//!
+//! An entry is keyed by what the scene names (the same keys as the per-build [`AssetCache`]: a
+//! file's resolved path, a procedural mesh's parameters, a solid colour) and identified by the
+//! file's **content hash**; its length and modification time ([`Stamp`]) decide, without reading
+//! the file, whether the hash can have changed. A file whose stamp changed is hashed again: same
+//! content, and the entry (and its object-level BVH) is kept under the new stamp; new content,
+//! and it is loaded again. Object-level BVHs are keyed by mesh, content and builder preset.
+//!
+//! Invariants: the store never holds data of a file whose current stamp differs from the one it
+//! was read with (every lookup compares stamps first); counters only grow, so a caller can tell
+//! "nothing was read, nothing was built" by comparing two snapshots ([`StoreCounters`]).
+//!
+//! [`AssetCache`]: super::assets_cache::AssetCache
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::time::SystemTime;
+
+use rtc_bvh::{Aabb, BuildPreset, NodeRecord};
+
+use super::assets_cache::{MeshKey, TextureKey};
+use crate::assets::model::ModelScene;
+use crate::assets::{MeshData, TextureData};
+
+/// What identifies a file's version without reading it: its length and modification time
+/// (`None` for data that comes from no file, such as a procedural mesh).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Stamp(Option<(u64, Option<SystemTime>)>);
+
+/// A file's content hash (0 for data that comes from no file or a file that cannot be read,
+/// which then never matches a stored entry's).
+pub(super) fn content_hash(path: &Path) -> Option<u64> {
+    use std::hash::{BuildHasher, Hasher};
+    let bytes = std::fs::read(path).ok()?;
+    let mut h = foldhash::quality::FixedState::with_seed(0x7274_635f_6173_7365).build_hasher();
+    h.write(&bytes);
+    Some(h.finish())
+}
+
+impl Stamp {
+    /// The stamp of data that comes from no file.
+    pub const NONE: Stamp = Stamp(None);
+
+    /// The stamp of the file at `path` now (a file that cannot be read gets a stamp no read
+    /// file has, so it is never taken from the store).
+    pub fn of(path: &Path) -> Stamp {
+        match std::fs::metadata(path) {
+            Ok(m) => Stamp(Some((m.len(), m.modified().ok()))),
+            Err(_) => Stamp(Some((u64::MAX, None))),
+        }
+    }
+}
+
+/// One mesh's object-level BVH, quantised, with its triangle slots encoded.
+#[derive(Debug)]
+pub struct BuiltMesh {
+    /// The BVH records (header first), relative to the BVH's own base.
+    pub records: Vec<NodeRecord>,
+    /// `TRIANGLE` records of its slots.
+    pub triangles: Vec<[f32; 4]>,
+    /// `ATTRIBUTE` records of its slots.
+    pub attributes: Vec<[u32; 4]>,
+    /// Triangle slots.
+    pub slots: u32,
+    /// Its object-space box.
+    pub bounds: Aabb,
+    /// Depth of the BVH.
+    pub depth: u32,
+}
+
+/// Running totals of the store's work, for reports and tests.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct StoreCounters {
+    /// Mesh files (OBJ) read.
+    pub meshes_read: u32,
+    /// Image files read.
+    pub images_read: u32,
+    /// glTF files read.
+    pub models_read: u32,
+    /// Object-level BVHs built.
+    pub blas_builds: u32,
+    /// Lookups answered from the store.
+    pub reused: u32,
+}
+
+/// Assets and object-level BVHs kept across entity builds (see the module docs).
+#[derive(Debug, Default)]
+pub struct AssetStore {
+    meshes: HashMap<MeshKey, Entry<MeshData>>,
+    textures: HashMap<TextureKey, Entry<TextureData>>,
+    models: HashMap<PathBuf, Entry<ModelScene>>,
+    /// Object-level BVHs by mesh and preset, with the content they were built from.
+    blas: HashMap<(MeshKey, BuildPreset), (Version, Arc<BuiltMesh>)>,
+    counters: StoreCounters,
+}
+
+/// What a stored entry was made from: the stamp it was last seen with and its content hash.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Version {
+    stamp: Stamp,
+    hash: Option<u64>,
+}
+
+impl Version {
+    /// The version of data that comes from no file.
+    pub const NONE: Version = Version {
+        stamp: Stamp::NONE,
+        hash: None,
+    };
+
+    /// Whether two versions name the same content: equal hashes, or (without a hash) equal
+    /// stamps.
+    fn same_content(&self, other: &Version) -> bool {
+        match (self.hash, other.hash) {
+            (Some(a), Some(b)) => a == b,
+            (None, None) => self.stamp == other.stamp,
+            _ => false,
+        }
+    }
+}
+
+#[derive(Debug)]
+struct Entry<T> {
+    version: Version,
+    data: Arc<T>,
+}
+
+/// The entry of `key` if it is still current for `file` (`None`: no file, the stamp alone
+/// decides): same stamp, or a new stamp over the same content (then the stamp is updated).
+fn current<K: std::hash::Hash + Eq, T>(
+    map: &mut HashMap<K, Entry<T>>,
+    key: &K,
+    stamp: Stamp,
+    file: Option<&Path>,
+) -> Option<(Version, Arc<T>)> {
+    let entry = map.get_mut(key)?;
+    if entry.version.stamp != stamp {
+        let hash = content_hash(file?);
+        if hash.is_none() || hash != entry.version.hash {
+            return None;
+        }
+        entry.version.stamp = stamp;
+    }
+    Some((entry.version, Arc::clone(&entry.data)))
+}
+
+impl AssetStore {
+    /// An empty store.
+    pub fn new() -> AssetStore {
+        AssetStore::default()
+    }
+
+    /// What the store has done so far.
+    pub fn counters(&self) -> StoreCounters {
+        self.counters
+    }
+
+    /// Drops everything kept (the counters stay).
+    pub fn clear(&mut self) {
+        let counters = self.counters;
+        *self = AssetStore {
+            counters,
+            ..AssetStore::default()
+        };
+    }
+
+    /// The stored mesh of `key` if still current (see [`current`]).
+    pub(super) fn mesh(
+        &mut self,
+        key: &MeshKey,
+        stamp: Stamp,
+        file: Option<&Path>,
+    ) -> Option<(Version, Arc<MeshData>)> {
+        let hit = current(&mut self.meshes, key, stamp, file);
+        self.counters.reused += u32::from(hit.is_some());
+        hit
+    }
+
+    /// Stores a mesh just made (`file`: read from it); returns its version.
+    pub(super) fn put_mesh(
+        &mut self,
+        key: MeshKey,
+        stamp: Stamp,
+        file: Option<&Path>,
+        data: Arc<MeshData>,
+    ) -> Version {
+        self.counters.meshes_read += u32::from(file.is_some());
+        let version = Version {
+            stamp,
+            hash: file.and_then(content_hash),
+        };
+        self.meshes.insert(key, Entry { version, data });
+        version
+    }
+
+    /// The stored mesh of `key` made from a file of `version` (a glTF file's primitive).
+    pub(super) fn derived_mesh(
+        &mut self,
+        key: &MeshKey,
+        version: Version,
+    ) -> Option<Arc<MeshData>> {
+        let hit = self
+            .meshes
+            .get(key)
+            .filter(|e| e.version.same_content(&version))
+            .map(|e| Arc::clone(&e.data));
+        self.counters.reused += u32::from(hit.is_some());
+        hit
+    }
+
+    /// Stores a mesh made from a file of `version`.
+    pub(super) fn put_derived_mesh(&mut self, key: MeshKey, version: Version, data: Arc<MeshData>) {
+        self.meshes.insert(key, Entry { version, data });
+    }
+
+    /// The stored texture of `key` made from a file of `version` (a glTF file's image).
+    pub(super) fn derived_texture(
+        &mut self,
+        key: &TextureKey,
+        version: Version,
+    ) -> Option<Arc<TextureData>> {
+        let hit = self
+            .textures
+            .get(key)
+            .filter(|e| e.version.same_content(&version))
+            .map(|e| Arc::clone(&e.data));
+        self.counters.reused += u32::from(hit.is_some());
+        hit
+    }
+
+    /// Stores a texture made from a file of `version`.
+    pub(super) fn put_derived_texture(
+        &mut self,
+        key: TextureKey,
+        version: Version,
+        data: Arc<TextureData>,
+    ) {
+        self.textures.insert(key, Entry { version, data });
+    }
+
+    /// The stored texture of `key` if still current.
+    pub(super) fn texture(
+        &mut self,
+        key: &TextureKey,
+        stamp: Stamp,
+        file: Option<&Path>,
+    ) -> Option<Arc<TextureData>> {
+        let hit = current(&mut self.textures, key, stamp, file).map(|(_, d)| d);
+        self.counters.reused += u32::from(hit.is_some());
+        hit
+    }
+
+    /// Stores a texture just made (`file`: read from it).
+    pub(super) fn put_texture(
+        &mut self,
+        key: TextureKey,
+        stamp: Stamp,
+        file: Option<&Path>,
+        data: Arc<TextureData>,
+    ) {
+        self.counters.images_read += u32::from(file.is_some());
+        let version = Version {
+            stamp,
+            hash: file.and_then(content_hash),
+        };
+        self.textures.insert(key, Entry { version, data });
+    }
+
+    /// The stored glTF file at `path` if still current.
+    pub(super) fn model(
+        &mut self,
+        path: &Path,
+        stamp: Stamp,
+    ) -> Option<(Version, Arc<ModelScene>)> {
+        let hit = current(&mut self.models, &path.to_path_buf(), stamp, Some(path));
+        self.counters.reused += u32::from(hit.is_some());
+        hit
+    }
+
+    /// Stores a glTF file just read; returns its version.
+    pub(super) fn put_model(
+        &mut self,
+        path: PathBuf,
+        stamp: Stamp,
+        data: Arc<ModelScene>,
+    ) -> Version {
+        self.counters.models_read += 1;
+        let version = Version {
+            stamp,
+            hash: content_hash(&path),
+        };
+        self.models.insert(path, Entry { version, data });
+        version
+    }
+
+    /// The object-level BVH of `key` built with `preset` from the mesh of `version`.
+    pub(super) fn blas(
+        &mut self,
+        key: &MeshKey,
+        preset: BuildPreset,
+        version: Version,
+    ) -> Option<Arc<BuiltMesh>> {
+        let hit = self
+            .blas
+            .get(&(key.clone(), preset))
+            .filter(|(v, _)| v.same_content(&version))
+            .map(|(_, b)| Arc::clone(b));
+        self.counters.reused += u32::from(hit.is_some());
+        hit
+    }
+
+    /// Stores an object-level BVH just built.
+    pub(super) fn put_blas(
+        &mut self,
+        key: MeshKey,
+        preset: BuildPreset,
+        version: Version,
+        built: Arc<BuiltMesh>,
+    ) {
+        self.counters.blas_builds += 1;
+        self.blas.insert((key, preset), (version, built));
+    }
+}

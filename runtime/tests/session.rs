@@ -1,0 +1,356 @@
+//! The long-lived renderer as a session (issue 17): accumulation that continues across calls,
+//! field writes and moves that upload only what changed, and kernel replacements that keep every
+//! asset and object-level BVH. Scenes: `scenes/session/`. Images are compared exactly (the same
+//! passes draw the same random numbers and add in the same order) unless a tolerance is stated.
+
+mod common;
+
+use common::scene::{vec3f, SceneFile};
+use common::{gpu_or_skip, temp_dir};
+use glam::{Mat4, Vec3};
+use rtc_compiler::kernel::CompiledScene;
+use rtc_compiler::sema::hir::{ConstValue, Scalar};
+use rtc_runtime::image_out::LinearImage;
+use rtc_runtime::render::{FieldTarget, RenderOptions, Renderer};
+
+const TRI_OBJ: &str = "v -0.4 0 0\nv 0.4 0 0\nv 0 0.9 0.1\nf 1 2 3\n";
+
+/// The stage compiled in `dir` (with `tri.obj` written next to it the first time), constants
+/// overridden.
+fn stage(dir: &std::path::Path, set: &[(&str, [f64; 3])]) -> CompiledScene {
+    let obj = dir.join("tri.obj");
+    if !obj.exists() {
+        std::fs::write(obj, TRI_OBJ).expect("write tri.obj");
+    }
+    let mut file = SceneFile::open("session/stage.rt");
+    for (name, v) in set {
+        file = file.set(name, vec3f(*v));
+    }
+    file.compile(dir)
+}
+
+fn vec3(v: [f32; 3]) -> ConstValue {
+    ConstValue::Vector {
+        len: 3,
+        comps: [
+            Scalar::F32(v[0]),
+            Scalar::F32(v[1]),
+            Scalar::F32(v[2]),
+            Scalar::F32(0.0),
+        ],
+    }
+}
+
+fn fresh(gpu: &rtc_runtime::gpu::Gpu, compiled: &CompiledScene, samples: u32) -> LinearImage {
+    let options = RenderOptions {
+        samples: Some(samples),
+        ..RenderOptions::default()
+    };
+    let mut r = Renderer::new(gpu, compiled, options).expect("renderer");
+    r.render(&mut |_, _| {}).expect("render").image
+}
+
+fn assert_same(what: &str, a: &LinearImage, b: &LinearImage) {
+    assert_eq!(
+        (a.width(), a.height()),
+        (b.width(), b.height()),
+        "{what}: size"
+    );
+    let differ = a
+        .pixels()
+        .iter()
+        .zip(b.pixels())
+        .filter(|(x, y)| x != y)
+        .count();
+    assert_eq!(differ, 0, "{what}: {differ} pixels differ");
+}
+
+#[test]
+fn four_single_passes_accumulate_to_the_four_pass_render() {
+    let Some(gpu) = gpu_or_skip("four_single_passes_accumulate_to_the_four_pass_render") else {
+        return;
+    };
+    let dir = temp_dir("session", "accumulate");
+    let compiled = stage(&dir, &[]);
+    let mut r = Renderer::new(&gpu, &compiled, RenderOptions::default()).expect("renderer");
+    let whole = r.render(&mut |_, _| {}).expect("render");
+    assert_eq!(whole.stats.samples, 4);
+    r.reset_accumulation();
+    for k in 1..=4 {
+        let stats = r.accumulate(1, &mut |_, _| {}).expect("accumulate");
+        assert_eq!(stats.samples, 1);
+        assert_eq!(stats.accumulated_samples, k);
+        assert_eq!(r.accumulated_samples(), k);
+    }
+    let image = r.image().expect("image");
+    assert_same(
+        "accumulate(1) x 4 against render at 4 spp",
+        &image,
+        &whole.image,
+    );
+    // One pass is not the 4-pass image: the passes draw different numbers.
+    r.reset_accumulation();
+    r.accumulate(1, &mut |_, _| {}).expect("accumulate");
+    let one = r.image().expect("image");
+    assert!(
+        one.pixels() != whole.image.pixels(),
+        "a thin lens and an area light make passes differ"
+    );
+}
+
+#[test]
+fn a_camera_write_restarts_the_accumulation_and_moves_the_view() {
+    let Some(gpu) = gpu_or_skip("a_camera_write_restarts_the_accumulation_and_moves_the_view")
+    else {
+        return;
+    };
+    let dir = temp_dir("session", "camera");
+    let compiled = stage(&dir, &[]);
+    let mut r = Renderer::new(&gpu, &compiled, RenderOptions::default()).expect("renderer");
+    r.accumulate(3, &mut |_, _| {}).expect("accumulate");
+    assert_eq!(r.accumulated_samples(), 3);
+    r.set_field(FieldTarget::Camera, "position", &vec3([1.0, 1.5, 3.5]))
+        .expect("set the camera");
+    assert_eq!(r.accumulated_samples(), 0, "a camera write restarts");
+    let stats = r.accumulate(2, &mut |_, _| {}).expect("accumulate");
+    assert_eq!(stats.accumulated_samples, 2);
+    assert_eq!(
+        stats.buffers_written,
+        vec!["params"],
+        "only the camera's words"
+    );
+    assert_eq!(stats.bytes_uploaded, 12, "one vec3f");
+    let moved = stage(&dir, &[("CAMERA", [1.0, 1.5, 3.5])]);
+    assert_same(
+        "camera written in place against a scene compiled with it",
+        &r.image().expect("image"),
+        &fresh(&gpu, &moved, 2),
+    );
+}
+
+#[test]
+fn a_material_write_changes_one_object_and_uploads_only_its_words() {
+    let Some(gpu) = gpu_or_skip("a_material_write_changes_one_object_and_uploads_only_its_words")
+    else {
+        return;
+    };
+    let dir = temp_dir("session", "material");
+    let compiled = stage(&dir, &[]);
+    let mut r = Renderer::new(&gpu, &compiled, RenderOptions::default()).expect("renderer");
+    r.render(&mut |_, _| {}).expect("render");
+    // `left` and `right` share one instance (identical values): the first write gives `left` its
+    // own copy, which moves the medium table and writes `params` whole once.
+    r.set_field(FieldTarget::Material(1), "albedo", &vec3([0.2, 0.3, 0.9]))
+        .expect("set albedo");
+    let first = r.accumulate(4, &mut |_, _| {}).expect("accumulate");
+    assert!(first.buffers_written.contains(&"params"));
+    assert_same(
+        "left's albedo written in place against a scene compiled with it",
+        &r.image().expect("image"),
+        &fresh(&gpu, &stage(&dir, &[("LEFT", [0.2, 0.3, 0.9])]), 4),
+    );
+    // Now the instance is its own: a second write uploads its three words and nothing else.
+    r.set_field(FieldTarget::Material(1), "albedo", &vec3([0.9, 0.1, 0.1]))
+        .expect("set albedo");
+    let second = r.accumulate(4, &mut |_, _| {}).expect("accumulate");
+    assert_eq!(second.buffers_written, vec!["params"]);
+    assert_eq!(second.bytes_uploaded, 12, "one vec3f");
+    assert_same(
+        "a second write",
+        &r.image().expect("image"),
+        &fresh(&gpu, &stage(&dir, &[("LEFT", [0.9, 0.1, 0.1])]), 4),
+    );
+}
+
+#[test]
+fn bad_field_writes_are_errors_that_change_nothing() {
+    let Some(gpu) = gpu_or_skip("bad_field_writes_are_errors_that_change_nothing") else {
+        return;
+    };
+    let dir = temp_dir("session", "bad_fields");
+    let compiled = stage(&dir, &[]);
+    let mut r = Renderer::new(&gpu, &compiled, RenderOptions::default()).expect("renderer");
+    let before = r.render(&mut |_, _| {}).expect("render").image;
+    let cases: Vec<(FieldTarget, &str, ConstValue, &str)> = vec![
+        (
+            FieldTarget::Camera,
+            "zoom",
+            vec3([0.0; 3]),
+            "has no field `zoom`",
+        ),
+        (
+            FieldTarget::Camera,
+            "fov",
+            vec3([0.0; 3]),
+            "`ThinLens.fov` is a `f32`",
+        ),
+        (
+            FieldTarget::Light(3),
+            "intensity",
+            vec3([0.0; 3]),
+            "no light 3",
+        ),
+        (
+            FieldTarget::Material(9),
+            "albedo",
+            vec3([0.0; 3]),
+            "no object 9",
+        ),
+    ];
+    for (target, field, value, want) in cases {
+        let err = r
+            .set_field(target, field, &value)
+            .expect_err("a bad write fails")
+            .to_string();
+        assert!(err.contains(want), "{target:?}.{field}: {err}");
+    }
+    let after = r.render(&mut |_, _| {}).expect("render").image;
+    assert_same("after refused writes", &after, &before);
+}
+
+#[test]
+fn moving_objects_rebuilds_only_the_scene_level() {
+    let Some(gpu) = gpu_or_skip("moving_objects_rebuilds_only_the_scene_level") else {
+        return;
+    };
+    let dir = temp_dir("session", "motion");
+    let compiled = stage(&dir, &[]);
+    let mut r = Renderer::new(&gpu, &compiled, RenderOptions::default()).expect("renderer");
+    let first = r.accumulate(1, &mut |_, _| {}).expect("accumulate");
+    let builds = first.blas_builds;
+    assert_eq!(builds, 3, "tri.obj, the quad and the sphere");
+    let nodes_bytes = r
+        .gpu_scene()
+        .buffers()
+        .bound_size(rtc_compiler::abi::binding("nodes").expect("nodes").binding)
+        .expect("nodes bound");
+    for frame in 0..8 {
+        let angle = frame as f32 * 0.3;
+        let spin = Mat4::from_translation(Vec3::new(0.0, 0.5, -0.5))
+            * Mat4::from_rotation_y(angle)
+            * Mat4::from_scale(Vec3::splat(0.5));
+        assert_eq!(r.object_index("ball"), Some(3));
+        r.set_transform(3, spin).expect("move the ball");
+        r.set_transform(
+            1,
+            Mat4::from_translation(Vec3::new(-0.8, 0.1 * frame as f32, 0.0)),
+        )
+        .expect("move left");
+        let s = r.accumulate(1, &mut |_, _| {}).expect("accumulate");
+        assert_eq!(
+            s.blas_builds, builds,
+            "frame {frame}: no object-level BVH rebuilt"
+        );
+        assert_eq!(s.accumulated_samples, 1, "a move restarts the accumulation");
+        for name in &s.buffers_written {
+            assert!(
+                ["nodes", "instances"].contains(name),
+                "frame {frame}: {name} uploaded"
+            );
+        }
+        assert!(
+            s.bytes_uploaded < nodes_bytes / 2,
+            "frame {frame}: {} bytes uploaded, the nodes are {nodes_bytes}",
+            s.bytes_uploaded
+        );
+    }
+    assert_eq!(r.store().counters().blas_builds, builds);
+}
+
+#[test]
+fn replacing_the_kernel_reads_no_file_and_builds_no_blas() {
+    let Some(gpu) = gpu_or_skip("replacing_the_kernel_reads_no_file_and_builds_no_blas") else {
+        return;
+    };
+    let dir = temp_dir("session", "replace");
+    let compiled = stage(&dir, &[]);
+    let mut r = Renderer::new(&gpu, &compiled, RenderOptions::default()).expect("renderer");
+    let first = r.render(&mut |_, _| {}).expect("render").stats;
+    assert_eq!(first.files_read, 1, "tri.obj");
+    let edited = stage(&dir, &[("RIGHT", [0.1, 0.2, 0.9])]);
+    r.replace_kernel(&edited).expect("replace");
+    let after = r.render(&mut |_, _| {}).expect("render");
+    assert_eq!(after.stats.files_read, 1, "no mesh read again");
+    assert_eq!(
+        after.stats.blas_builds, first.blas_builds,
+        "no BLAS built again"
+    );
+    for name in ["triangles", "attributes", "nodes"] {
+        assert!(
+            !after.stats.buffers_written.contains(&name),
+            "{name} was uploaded again: {:?}",
+            after.stats.buffers_written
+        );
+    }
+    assert_same(
+        "after a kernel replacement against a fresh renderer",
+        &after.image,
+        &fresh(&gpu, &edited, 4),
+    );
+    // A file saved again with the same content is hashed, not loaded: nothing is rebuilt.
+    std::thread::sleep(std::time::Duration::from_millis(20));
+    std::fs::write(dir.join("tri.obj"), TRI_OBJ).expect("save again");
+    r.replace_kernel(&edited).expect("replace");
+    let same = r.render(&mut |_, _| {}).expect("render").stats;
+    assert_eq!(same.files_read, 1, "same content: not loaded again");
+    assert_eq!(same.blas_builds, first.blas_builds, "same content: no BLAS");
+    // A changed file is loaded again, and only its BLAS is built.
+    std::fs::write(dir.join("tri.obj"), format!("{TRI_OBJ}# edited\n")).expect("edit");
+    r.replace_kernel(&edited).expect("replace");
+    let third = r.render(&mut |_, _| {}).expect("render").stats;
+    assert_eq!(third.files_read, 2, "the edited tri.obj");
+    assert_eq!(third.blas_builds, first.blas_builds + 1, "its BLAS only");
+}
+
+#[test]
+fn a_kernel_replacement_of_a_custom_geometry_scene_runs_the_bounds_kernel_again() {
+    let Some(gpu) =
+        gpu_or_skip("a_kernel_replacement_of_a_custom_geometry_scene_runs_the_bounds_kernel_again")
+    else {
+        return;
+    };
+    let dir = temp_dir("session", "custom");
+    let ball = |albedo: [f64; 3]| {
+        SceneFile::open("render/lit_ball.rt")
+            .set("SIZE", "17u")
+            .set("ALBEDO", vec3f(albedo))
+            .compile(&dir)
+    };
+    let mut r =
+        Renderer::new(&gpu, &ball([0.5, 0.25, 1.0]), RenderOptions::default()).expect("renderer");
+    r.render(&mut |_, _| {}).expect("render");
+    let edited = ball([1.0, 0.5, 0.0]);
+    r.replace_kernel(&edited).expect("replace");
+    let after = r.render(&mut |_, _| {}).expect("render").image;
+    assert_same(
+        "a custom-geometry scene after a kernel replacement",
+        &after,
+        &fresh(&gpu, &edited, 1),
+    );
+    // A light's field written in place equals the scene compiled with it.
+    r.set_field(
+        FieldTarget::Light(0),
+        "intensity",
+        &ConstValue::Scalar(Scalar::F32(9.0)),
+    )
+    .expect("set intensity");
+    r.render(&mut |_, _| {}).expect("render");
+    let brighter = SceneFile::open("render/lit_ball.rt")
+        .set("SIZE", "17u")
+        .set("ALBEDO", vec3f([1.0, 0.5, 0.0]))
+        .set("INTENSITY", "9.0")
+        .compile(&dir);
+    assert_same(
+        "a light's intensity written in place",
+        &r.image().expect("image"),
+        &fresh(&gpu, &brighter, 1),
+    );
+    // A move of the ball: the scene level only.
+    r.set_transform(
+        0,
+        Mat4::from_translation(Vec3::new(0.3, 0.5, 0.0)) * Mat4::from_scale(Vec3::splat(2.0)),
+    )
+    .expect("move");
+    let moved = r.render(&mut |_, _| {}).expect("render");
+    assert!(moved.image.pixels() != after.pixels(), "the ball moved");
+}
