@@ -431,7 +431,11 @@ def cli():
      "render_a_folder": "render sub -o x.png",
      "render_an_image_as_scene": "render picture.png -o x.png",
      "watch_missing_file": "watch nope.rt -o x.png",
-     "unknown_flag": "render scene.rt -o x.png --frames 0..10",
+     "unknown_flag": "render scene.rt -o x.png --loop 0..10",
+     "frames_without_number": "render scene.rt -o x.png --frames 0..10",
+     "frames_backwards": "render scene.rt -o x_%04d.png --frames 5..2",
+     "shard_index_too_large": "render scene.rt -o x_%04d.png --frames 0..4 --shard 4/4",
+     "shard_count_zero": "render scene.rt -o x_%04d.png --shard 0/0",
      "color_bad_value": "check scene.rt --color purple",
      "stdlib_folder_missing": "check scene.rt --stdlib no/such/std",
     }
