@@ -29,10 +29,12 @@ fn an_animation_builds_no_blas_and_frames_do_not_depend_on_the_ones_before() {
     let compiled = SceneFile::open("animation/turntable.rt").compile(&dir);
     let program = compiled.checked.program.as_ref().expect("program");
     let desc = &program.scenes[compiled.scene];
-    assert_eq!(desc.settings.frames, 9, "1 s at 8 fps, the last key's frame included");
+    assert_eq!(
+        desc.settings.frames, 9,
+        "1 s at 8 fps, the last key's frame included"
+    );
 
-    let mut renderer =
-        Renderer::new(&gpu, &compiled, RenderOptions::default()).expect("renderer");
+    let mut renderer = Renderer::new(&gpu, &compiled, RenderOptions::default()).expect("renderer");
     let mut frames = Vec::new();
     let mut setup_builds = None;
     for frame in 0..desc.settings.frames {
@@ -42,16 +44,32 @@ fn an_animation_builds_no_blas_and_frames_do_not_depend_on_the_ones_before() {
         apply(&mut renderer, &state).expect("apply");
         let result = renderer.render(&mut |_, _| {}).expect("render");
         let builds = *setup_builds.get_or_insert(result.stats.blas_builds);
-        assert_eq!(result.stats.blas_builds, builds, "frame {frame} built a BLAS");
+        assert_eq!(
+            result.stats.blas_builds, builds,
+            "frame {frame} built a BLAS"
+        );
         frames.push(bits(&result.image));
     }
     assert_eq!(setup_builds, Some(3), "quad, cube and sphere, once");
     for f in 1..frames.len() {
-        assert_ne!(frames[f], frames[f - 1], "frames {f} and {} are one image", f - 1);
+        assert_ne!(
+            frames[f],
+            frames[f - 1],
+            "frames {f} and {} are one image",
+            f - 1
+        );
     }
     // Frame 5 first, in a renderer of its own: the same bits as after frames 0..=4.
     let mut fresh = Renderer::new(&gpu, &compiled, RenderOptions::default()).expect("renderer");
-    apply(&mut fresh, &evaluate(desc, frame_time(5, desc.settings.fps))).expect("apply");
+    apply(
+        &mut fresh,
+        &evaluate(desc, frame_time(5, desc.settings.fps)),
+    )
+    .expect("apply");
     let image = fresh.render(&mut |_, _| {}).expect("render").image;
-    assert_eq!(bits(&image), frames[5], "frame 5 depends on the frames before it");
+    assert_eq!(
+        bits(&image),
+        frames[5],
+        "frame 5 depends on the frames before it"
+    );
 }

@@ -4,8 +4,8 @@
 
 use crate::driver::{check_paths, check_text, Checked, Options};
 use crate::sema::hir::{
-    ConstValue, ExprKind, Function, Geometry, Literal, MeshAsset, Program, ProgramKind, Scalar,
-    SceneChoiceError,
+    ConstValue, ExprKind, Function, Geometry, Interp, Literal, MeshAsset, Motion, Program,
+    ProgramKind, Scalar, SceneChoiceError, TrackTarget,
 };
 use crate::sema::types::{Type, TypeTable};
 
@@ -335,6 +335,71 @@ fn scenes_are_evaluated() {
             name: "t".to_string(),
             available: vec!["s".to_string()]
         })
+    );
+}
+
+#[test]
+fn animate_entries_become_tracks() {
+    let p = program(
+        "import \"std/cameras/pinhole.rt\";
+         import \"std/materials/lambert.rt\";
+         import \"std/lights/point.rt\";
+         scene s {
+             settings { fps: 10 }
+             animate ball spin(vec3f(0.0, 2.0, 0.0), 90.0)
+             camera Pinhole {}
+             object floor { geometry: quad_mesh(), material: Lambert {} }
+             object ball { geometry: cube_mesh(), material: Lambert {} }
+             light PointLight { position: vec3f(0.0, 3.0, 0.0) }
+             light key PointLight { position: vec3f(0.0, 3.0, 0.0) }
+             animate key.intensity keys step { 0.0: 1.0, 2.5: 2.0 }
+             animate camera.fov keys smooth { 0.5: 40.0, 1.0: 50.0 }
+         }",
+    );
+    let s = &p.scenes[p.select_scene(None).expect("one scene")];
+    assert_eq!(s.settings.frames, 26, "2.5 s at 10 fps, frame 25 included");
+    let targets: Vec<&TrackTarget> = s.animation.iter().map(|t| &t.target).collect();
+    let pinhole = s.camera.as_ref().expect("camera").struct_id;
+    let fov = p.structs[pinhole].field_index("fov").expect("fov");
+    assert!(matches!(targets[0], TrackTarget::Object(1)), "{targets:?}");
+    assert!(
+        matches!(targets[1], TrackTarget::Light { light: 1, name, .. } if name == "intensity"),
+        "{targets:?}"
+    );
+    assert!(
+        matches!(targets[2], TrackTarget::Camera { field, .. } if *field == fov),
+        "{targets:?}"
+    );
+    assert_eq!(
+        s.animation[0].motion,
+        Motion::Spin {
+            axis: [0.0, 1.0, 0.0],
+            degrees_per_second: 90.0,
+            pivot: [0.0; 3]
+        }
+    );
+    match &s.animation[2].motion {
+        Motion::Keys {
+            times,
+            values,
+            interp,
+        } => {
+            assert_eq!(
+                (times.as_slice(), *interp),
+                (&[0.5, 1.0][..], Interp::Smooth)
+            );
+            assert_eq!(values[1], ConstValue::Scalar(Scalar::F32(50.0)));
+        }
+        m => panic!("unexpected motion {m:?}"),
+    }
+    let listing = crate::sema::hir::print::program(&p);
+    assert!(
+        listing.contains("animation { fps: 10, frames: 26 }"),
+        "{listing}"
+    );
+    assert!(
+        listing.contains("animate light#1.intensity keys step { 0.0: 1.0, 2.5: 2.0 }"),
+        "{listing}"
     );
 }
 
