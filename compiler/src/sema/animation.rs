@@ -388,8 +388,13 @@ fn keyed(
         };
         if let Some(t) = t {
             if !t.is_finite() || t < 0.0 {
+                let message = if t.is_finite() {
+                    "a key at a negative time"
+                } else {
+                    "a key at a time that is not a finite number"
+                };
                 ck.err(built(
-                    Diagnostic::error(codes::E0711, "a key at a negative time", tspan)
+                    Diagnostic::error(codes::E0711, message, tspan)
                         .with_label(format!("{t} s"))
                         .with_help("times are seconds from the start of the animation, 0 or more"),
                 ));
