@@ -354,3 +354,44 @@ fn a_kernel_replacement_of_a_custom_geometry_scene_runs_the_bounds_kernel_again(
     let moved = r.render(&mut |_, _| {}).expect("render");
     assert!(moved.image.pixels() != after.pixels(), "the ball moved");
 }
+
+#[test]
+fn the_wavefront_model_accumulates_and_takes_edits_like_the_megakernel() {
+    let Some(gpu) =
+        gpu_or_skip("the_wavefront_model_accumulates_and_takes_edits_like_the_megakernel")
+    else {
+        return;
+    };
+    let dir = temp_dir("session", "wavefront");
+    std::fs::write(dir.join("tri.obj"), TRI_OBJ).expect("write tri.obj");
+    let wavefront = rtc_compiler::kernel::KernelOptions {
+        exec: Some(rtc_compiler::kernel::ExecModel::Wavefront),
+        ..Default::default()
+    };
+    let compiled = SceneFile::open("session/stage.rt").compile_with(&dir, &wavefront);
+    assert_eq!(compiled.exec, rtc_compiler::kernel::ExecModel::Wavefront);
+    let mut r = Renderer::new(&gpu, &compiled, RenderOptions::default()).expect("renderer");
+    let whole = r.render(&mut |_, _| {}).expect("render");
+    r.reset_accumulation();
+    for _ in 0..4 {
+        r.accumulate(1, &mut |_, _| {}).expect("accumulate");
+    }
+    assert_same(
+        "wavefront: accumulate(1) x 4 against render at 4 spp",
+        &r.image().expect("image"),
+        &whole.image,
+    );
+    assert_same(
+        "wavefront against the megakernel",
+        &whole.image,
+        &fresh(&gpu, &stage(&dir, &[]), 4),
+    );
+    r.set_field(FieldTarget::Camera, "position", &vec3([1.0, 1.5, 3.5]))
+        .expect("set the camera");
+    r.accumulate(2, &mut |_, _| {}).expect("accumulate");
+    assert_same(
+        "wavefront: camera written in place",
+        &r.image().expect("image"),
+        &fresh(&gpu, &stage(&dir, &[("CAMERA", [1.0, 1.5, 3.5])]), 2),
+    );
+}
