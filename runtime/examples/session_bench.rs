@@ -2,17 +2,20 @@
 //!
 //! 1. **camera move**: a 1-spp frame after moving the camera through one long-lived renderer
 //!    (`set_field` + `accumulate(1)` + `image`) against what `rtc view` did before, a fresh
-//!    `Renderer::new` + `render` at 1 spp (assets read, every BVH built, every buffer uploaded;
-//!    the pipelines come from the process's kernel cache either way);
+//!    `Renderer::new` + `render` at 1 spp of the scene with the same camera written into its
+//!    description (assets read, every BVH built, every buffer uploaded; the pipelines come from
+//!    the process's kernel cache either way); `RTC_BENCH_DETAIL=1` prints each run's parts;
 //! 2. **moving objects**: a 1-spp frame after `set_transform` on every object against a static
 //!    1-spp frame (nothing changed), both through the session;
 //! 3. **scene level**: `N` instances (default 10,000) of one mesh in a generated scene, all moved,
 //!    then the scene-level rebuild (TLAS build and instance records) and its upload, without a
 //!    render.
 //!
-//! `cargo run --release -p rtc-runtime --example session_bench -- [SCENE.rt] [--size WxH]
-//! [--runs N] [--instances N]` (default: `examples/thesis_scene/scene.rt` at 960x540, 7 runs,
-//! alternating the two sides of each ratio; medians reported). Prints a table and a JSON line.
+//! `cargo run --release -p rtc-runtime --example session_bench -- [SCENE.rt | --mesh FILE.obj]
+//! [--size WxH] [--runs N] [--instances N]` (default: `examples/thesis_scene/scene.rt` at 960x540,
+//! 7 runs, alternating the two sides of each ratio; medians reported; `--mesh` renders one OBJ
+//! mesh on a floor instead, e.g. `../shared/models/stanford-dragon.obj`, where rebuilding means
+//! parsing the file and building its BVH again). Prints a table and a JSON line.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -47,6 +50,25 @@ fn vec3(v: Vec3) -> ConstValue {
     }
 }
 
+/// Writes `position` into the compiled scene's camera (what a fresh renderer reads).
+fn set_camera_position(compiled: &mut CompiledScene, position: Vec3) -> Result<(), String> {
+    let scene = compiled.scene;
+    let program = compiled.checked.program.as_mut().ok_or("no program")?;
+    let camera = program.scenes[scene]
+        .camera
+        .as_ref()
+        .ok_or("the scene has no camera entry")?;
+    let index = program.structs[camera.struct_id]
+        .field_index("position")
+        .ok_or("the camera has no `position`")?;
+    if let Some(camera) = program.scenes[scene].camera.as_mut() {
+        if let Some(f) = camera.fields.get_mut(index) {
+            *f = vec3(position);
+        }
+    }
+    Ok(())
+}
+
 fn median(mut v: Vec<f64>) -> f64 {
     v.sort_by(f64::total_cmp);
     v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
@@ -58,6 +80,7 @@ fn ms(t: Instant) -> f64 {
 
 struct Args {
     scene: PathBuf,
+    mesh: Option<PathBuf>,
     size: [u32; 2],
     runs: usize,
     instances: usize,
@@ -66,6 +89,7 @@ struct Args {
 fn args() -> Result<Args, String> {
     let mut a = Args {
         scene: PathBuf::from("examples/thesis_scene/scene.rt"),
+        mesh: None,
         size: [960, 540],
         runs: 7,
         instances: 10_000,
@@ -83,6 +107,7 @@ fn args() -> Result<Args, String> {
                 ];
             }
             "--runs" => a.runs = value("--runs")?.parse().map_err(|_| "--runs N")?,
+            "--mesh" => a.mesh = Some(PathBuf::from(value("--mesh")?)),
             "--instances" => {
                 a.instances = value("--instances")?.parse().map_err(|_| "--instances N")?
             }
@@ -90,6 +115,41 @@ fn args() -> Result<Args, String> {
         }
     }
     Ok(a)
+}
+
+/// A scene of one OBJ mesh (copied into a temporary folder) on a floor, seen from the front of
+/// its box, lit by a point light.
+fn one_mesh(mesh: &Path) -> Result<PathBuf, String> {
+    let data = rtc_runtime::assets::load_obj(mesh).map_err(|e| e.to_string())?;
+    let (mut lo, mut hi) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
+    for p in &data.positions {
+        lo = lo.min(Vec3::from(*p));
+        hi = hi.max(Vec3::from(*p));
+    }
+    let (c, r) = ((lo + hi) * 0.5, (hi - lo).length() * 0.5);
+    let dir = std::env::temp_dir().join(format!("rtc-session-mesh-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).map_err(|e| e.to_string())?;
+    std::fs::copy(mesh, dir.join("mesh.obj")).map_err(|e| e.to_string())?;
+    let v = |v: Vec3| format!("vec3f({:.5}, {:.5}, {:.5})", v.x, v.y, v.z);
+    let text = format!(
+        "import \"std/cameras/pinhole.rt\";\nimport \"std/materials/lambert.rt\";\n\
+         import \"std/lights/point.rt\";\nimport \"std/miss/constant.rt\";\n\
+         scene one_mesh {{\n    settings {{ width: 960, height: 540, samples: 1, max_depth: 0 }}\n\
+         camera Pinhole {{ position: {}, look_at: {}, fov: 40.0 }}\n\
+         background ConstantBackground {{ color: vec3f(0.1) }}\n\
+         object floor {{ geometry: quad_mesh(), material: Lambert {{}}, transform: translate({}) * scale({:.5}) }}\n\
+         object model {{ geometry: load_mesh(\"mesh.obj\"), material: Lambert {{ albedo: vec3f(0.7, 0.6, 0.5) }} }}\n\
+         light PointLight {{ position: {}, intensity: {:.5} }}\n}}\n",
+        v(c + Vec3::new(0.0, 0.6 * r, 2.8 * r)),
+        v(c),
+        v(Vec3::new(c.x, lo.y, c.z)),
+        4.0 * r,
+        v(c + Vec3::new(r, 3.0 * r, 2.0 * r)),
+        20.0 * r * r
+    );
+    let path = dir.join("one_mesh.rt");
+    std::fs::write(&path, text).map_err(|e| e.to_string())?;
+    Ok(path)
 }
 
 /// A scene of `n` spheres on a grid, one mesh, written into a temporary folder.
@@ -122,7 +182,11 @@ fn run() -> Result<(), String> {
     let a = args()?;
     let gpu = Gpu::new(&AdapterChoice::default()).map_err(|e| e.to_string())?;
     println!("adapter: {}", gpu.description());
-    let compiled = compile(&a.scene)?;
+    let scene = match &a.mesh {
+        Some(mesh) => one_mesh(mesh)?,
+        None => a.scene.clone(),
+    };
+    let mut compiled = compile(&scene)?;
     let one = RenderOptions {
         size: Some(a.size),
         samples: Some(1),
@@ -142,14 +206,37 @@ fn run() -> Result<(), String> {
         session
             .set_field(FieldTarget::Camera, "position", &vec3(position))
             .map_err(|e| e.to_string())?;
-        session
+        let s = session
             .accumulate(1, &mut |_, _| {})
             .map_err(|e| e.to_string())?;
+        let t2 = Instant::now();
         session.image().map_err(|e| e.to_string())?;
+        if std::env::var_os("RTC_BENCH_DETAIL").is_some() {
+            eprintln!(
+                "session: render {:.1} upload {:.1} readback(image) {:.1} total {:.1}",
+                s.render_ms,
+                s.upload_ms,
+                ms(t2),
+                ms(t)
+            );
+        }
         moved.push(ms(t));
+        // The fresh renderer gets the same camera, written into the scene description.
+        set_camera_position(&mut compiled, position)?;
         let t = Instant::now();
         let mut r = Renderer::new(&gpu, &compiled, one.clone()).map_err(|e| e.to_string())?;
-        r.render(&mut |_, _| {}).map_err(|e| e.to_string())?;
+        let t3 = Instant::now();
+        let f = r.render(&mut |_, _| {}).map_err(|e| e.to_string())?;
+        if std::env::var_os("RTC_BENCH_DETAIL").is_some() {
+            eprintln!(
+                "fresh: new {:.1} render {:.1} upload {:.1} readback {:.1} total {:.1}",
+                t3.duration_since(t).as_secs_f64() * 1e3,
+                f.stats.render_ms,
+                f.stats.upload_ms,
+                f.stats.readback_ms,
+                ms(t)
+            );
+        }
         fresh.push(ms(t));
     }
     let (moved, fresh) = (median(moved), median(fresh));
@@ -215,6 +302,9 @@ fn run() -> Result<(), String> {
     }
     let (rebuild, upload) = (median(rebuild), median(upload));
     let _ = std::fs::remove_dir_all(many_path.parent().unwrap_or(Path::new("/nonexistent")));
+    if a.mesh.is_some() {
+        let _ = std::fs::remove_dir_all(scene.parent().unwrap_or(Path::new("/nonexistent")));
+    }
 
     let [w, h] = a.size;
     println!(
@@ -238,7 +328,7 @@ fn run() -> Result<(), String> {
     );
     println!(
         "{{\"scene\":\"{}\",\"size\":[{w},{h}],\"camera_move_ms\":{moved:.2},\"fresh_ms\":{fresh:.2},\"moving_ms\":{moving:.2},\"static_ms\":{still:.2},\"tlas_ms\":{tlas:.3},\"blas_builds_in_motion\":{},\"instances\":{},\"scene_level_rebuild_ms\":{rebuild:.3},\"scene_level_upload_ms\":{upload:.3}}}",
-        a.scene.display(),
+        a.mesh.as_ref().unwrap_or(&a.scene).display(),
         blas_after - blas_before,
         a.instances
     );
