@@ -309,7 +309,7 @@ fn run() -> Result<(), String> {
     let [w, h] = a.size;
     println!(
         "scene: {} at {w}x{h}, {} runs, medians",
-        a.scene.display(),
+        a.mesh.as_ref().unwrap_or(&a.scene).display(),
         a.runs
     );
     println!(
