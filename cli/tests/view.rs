@@ -294,6 +294,91 @@ fn view_shows_the_scene_and_a_reload_changes_the_screenshot() {
 }
 
 #[test]
+fn an_animated_scene_plays_and_space_pauses_it_to_refine() {
+    if let Err(e) = Gpu::new(&AdapterChoice::default()) {
+        skip(&format!("no GPU adapter ({e})"));
+        return;
+    }
+    let Some((_xvfb, display)) = start_xvfb() else {
+        skip("Xvfb is not installed (apt-get install xvfb)");
+        return;
+    };
+    let dir = temp_dir("animated");
+    let file = dir.join("scene.rt");
+    let animated = scene("vec3f(0.0, 0.0, 1.0)").replace(
+        "    light key",
+        "    animate ball move(vec3f(0.5, 0.0, 0.0))\n    light key",
+    );
+    let animated = animated.replace("samples: 3,", "samples: 3, fps: 24, frames: 48,");
+    std::fs::write(&file, animated).expect("write");
+    let runtime_dir = dir.join("xdg");
+    std::fs::create_dir_all(&runtime_dir).expect("xdg dir");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rtc"))
+        .args(["--color", "never", "view"])
+        .arg(&file)
+        .env("DISPLAY", &display)
+        .env_remove("WAYLAND_DISPLAY")
+        .env("XDG_RUNTIME_DIR", &runtime_dir)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start rtc view");
+    let lines = Arc::new(Mutex::new(Vec::new()));
+    collect(child.stdout.take().expect("stdout"), Arc::clone(&lines));
+    collect(child.stderr.take().expect("stderr"), Arc::clone(&lines));
+    let mut child = Killed(child);
+
+    let at = wait_for(
+        &mut child.0,
+        &lines,
+        0,
+        "[view] the scene is animated: playing its 2.00 s",
+    );
+    // Playing: every frame is a fresh pass at a later time, never more than 1 spp.
+    let at = wait_for(&mut child.0, &lines, at, "[view] frame 5:");
+    let played = lines.lock().expect("lines")[..=at].join("\n");
+    for n in 1..=5 {
+        let line = played
+            .lines()
+            .find(|l| l.starts_with(&format!("[view] frame {n}:")))
+            .expect("frame line");
+        assert!(
+            line.contains(": 1 spp,") && line.contains("playing at"),
+            "{line}"
+        );
+    }
+    // Space pauses: the paused frame refines to the scene's 3 spp.
+    let key = Command::new("xdotool")
+        .args([
+            "search",
+            "--sync",
+            "--name",
+            "rtc view",
+            "windowfocus",
+            "--sync",
+        ])
+        .env("DISPLAY", &display)
+        .stdout(Stdio::null())
+        .status()
+        .and_then(|_| {
+            // Without a window manager the window gets the keyboard by an explicit focus.
+            Command::new("xdotool")
+                .args(["mousemove", "--sync", "24", "24", "key", "space"])
+                .env("DISPLAY", &display)
+                .stdout(Stdio::null())
+                .status()
+        });
+    if !key.is_ok_and(|s| s.success()) {
+        skip("xdotool is not installed or found no window (apt-get install xdotool)");
+        return;
+    }
+    let at = wait_for(&mut child.0, &lines, at, "[view] paused at");
+    let at = wait_for(&mut child.0, &lines, at, ": 3 spp,");
+    assert!(lines.lock().expect("lines")[at].contains("paused at"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
 fn view_without_a_display_says_so() {
     let dir = temp_dir("nodisplay");
     let file = dir.join("scene.rt");

@@ -15,6 +15,9 @@
 //! - the camera: drag with the left button to orbit around the point looked at, with the right or
 //!   middle button to pan, scroll to zoom. It works on cameras with `position` and `look_at` fields
 //!   (the standard library's pinhole and thin-lens cameras); for others the window only shows;
+//! - an animated scene (spec/animation.md) plays in a loop of its `frames` at its `fps`, one fresh
+//!   pass a step at the time the clock shows; space pauses it (the paused frame then refines like
+//!   a still scene) and plays it again; a camera the user moved stays where they put it;
 //! - the title shows the samples per pixel accumulated, the time of the last step (one pass,
 //!   its read-back and display) and the primary rays per second of its pass.
 //!
@@ -259,6 +262,8 @@ struct App<'a> {
     stale_kernel: bool,
     /// Whether the next step starts a new accumulation (the camera moved, or a reload).
     fresh: bool,
+    /// Scene time of an animated scene.
+    clock: Clock,
     watcher: Option<notify::RecommendedWatcher>,
     dirs: BTreeSet<PathBuf>,
     window: Option<Arc<Window>>,
@@ -284,6 +289,61 @@ struct App<'a> {
 }
 
 const DEBOUNCE: Duration = Duration::from_millis(15);
+
+/// The animation clock: scene time in seconds, playing or paused, looping over the scene's
+/// `frames / fps` seconds.
+#[derive(Clone, Copy, Debug)]
+struct Clock {
+    playing: bool,
+    /// When playing: the instant scene time `at` was read.
+    since: Instant,
+    /// Scene time at `since` (the paused time while paused).
+    at: f32,
+}
+
+impl Clock {
+    fn new(playing: bool) -> Clock {
+        Clock {
+            playing,
+            since: Instant::now(),
+            at: 0.0,
+        }
+    }
+
+    /// Scene time now, wrapped into `[0, length)` when `length` is positive.
+    fn now(&self, length: f32) -> f32 {
+        let t = if self.playing {
+            self.at + self.since.elapsed().as_secs_f32()
+        } else {
+            self.at
+        };
+        if length > 0.0 {
+            t.rem_euclid(length)
+        } else {
+            t
+        }
+    }
+
+    /// Pauses at the current time, or plays on from it.
+    fn toggle(&mut self, length: f32) {
+        self.at = self.now(length);
+        self.since = Instant::now();
+        self.playing = !self.playing;
+    }
+}
+
+/// The loop length of a scene's animation in seconds (`frames / fps`), 0 without one.
+fn animation_length(compiled: &CompiledScene) -> f32 {
+    compiled
+        .checked
+        .program
+        .as_ref()
+        .map(|p| &p.scenes[compiled.scene])
+        .filter(|d| rtc_runtime::animation::is_animated(d))
+        .map_or(0.0, |d| {
+            d.settings.frames as f32 / d.settings.fps.max(1) as f32
+        })
+}
 
 impl App<'_> {
     fn fail(&mut self, event_loop: &ActiveEventLoop, message: &str) {
@@ -356,12 +416,19 @@ impl App<'_> {
             }
         };
         let spp = stats.accumulated_samples;
-        self.next_spp = (spp < self.target_spp).then_some(spp + stats.samples_per_pass);
+        let length = self.session.last().map_or(0.0, animation_length);
+        let playing = length > 0.0 && self.clock.playing;
+        self.next_spp = (playing || spp < self.target_spp).then_some(spp + stats.samples_per_pass);
         self.frames += 1;
         self.status = format!(
             "{spp} spp, {frame_ms:.0} ms/frame, {:.2} M rays/s",
             stats.rays_per_second / 1e6
         );
+        if length > 0.0 {
+            let t = self.clock.now(length);
+            let state = if playing { "playing" } else { "paused" };
+            self.status.push_str(&format!(", {state} at {t:.2} s"));
+        }
         if let (Some(p), Some(w)) = (&mut self.presenter, &self.window) {
             if let Err(e) = p.upload(&image) {
                 term::eprint(&format!(
@@ -425,6 +492,18 @@ impl App<'_> {
         let Some(r) = self.renderer.as_mut() else {
             return Err(rtc_runtime::render::RenderError::KernelSet);
         };
+        let length = animation_length(compiled);
+        if length > 0.0 && (self.clock.playing || self.fresh) {
+            if let Some(program) = compiled.checked.program.as_ref() {
+                let desc = &program.scenes[compiled.scene];
+                let t = self.clock.now(length);
+                rtc_runtime::animation::apply(r, &rtc_runtime::animation::evaluate(desc, t))?;
+                if let (true, Some(orbit)) = (self.moved, orbit) {
+                    r.set_field(FieldTarget::Camera, "position", &const_vec3(orbit.position))?;
+                    r.set_field(FieldTarget::Camera, "look_at", &const_vec3(orbit.look_at))?;
+                }
+            }
+        }
         if std::mem::take(&mut self.fresh) {
             r.reset_accumulation();
             if let Some(o) = orbit {
@@ -554,13 +633,33 @@ impl ApplicationHandler<UserEvent> for App<'_> {
                     )),
                 }
             }
-            WindowEvent::KeyboardInput { event, .. } if event.state == ElementState::Pressed => {
-                match event.logical_key {
-                    Key::Named(NamedKey::Escape) => event_loop.exit(),
-                    Key::Character(c) if c.as_str() == "q" => event_loop.exit(),
-                    _ => {}
+            // Presses only: not the repeats of a held key, nor the presses winit makes up for
+            // keys already down when the window gains focus.
+            WindowEvent::KeyboardInput {
+                event,
+                is_synthetic: false,
+                ..
+            } if event.state == ElementState::Pressed && !event.repeat => match event.logical_key {
+                Key::Named(NamedKey::Escape) => event_loop.exit(),
+                Key::Character(c) if c.as_str() == "q" => event_loop.exit(),
+                Key::Named(NamedKey::Space) => {
+                    let length = self.session.last().map_or(0.0, animation_length);
+                    if length > 0.0 {
+                        self.clock.toggle(length);
+                        let state = if self.clock.playing {
+                            "playing"
+                        } else {
+                            "paused"
+                        };
+                        term::print(&format!(
+                            "[view] {state} at {:.2} s\n",
+                            self.clock.now(length)
+                        ));
+                        self.restart();
+                    }
                 }
-            }
+                _ => {}
+            },
             WindowEvent::MouseInput { state, button, .. } => {
                 self.drag = match (state, button) {
                     (ElementState::Pressed, MouseButton::Left) => Some(Drag::Orbit),
@@ -752,6 +851,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         renderer: None,
         stale_kernel: false,
         fresh: true,
+        clock: Clock::new(true),
         watcher,
         dirs: BTreeSet::new(),
         window: None,
@@ -777,6 +877,16 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         term::print(
             "[view] this camera has no `position` and `look_at`: the mouse does not move it\n",
         );
+    }
+    if let Some(length) = app
+        .session
+        .last()
+        .map(animation_length)
+        .filter(|&l| l > 0.0)
+    {
+        term::print(&format!(
+            "[view] the scene is animated: playing its {length:.2} s in a loop (space pauses and refines)\n"
+        ));
     }
     if let Err(e) = event_loop.run_app(&mut app) {
         term::eprint(&format!(
