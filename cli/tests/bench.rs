@@ -223,7 +223,12 @@ fn a_bad_against_curve_is_a_clear_error_before_rendering() {
         t.contains("cannot use the curve") && t.contains("no time column"),
         "{t}"
     );
-    let out = rtc(&["bench", s(&cornell()), "--against", s(&dir.join("none.csv"))]);
+    let out = rtc(&[
+        "bench",
+        s(&cornell()),
+        "--against",
+        s(&dir.join("none.csv")),
+    ]);
     assert_eq!(out.status.code(), Some(1), "{}", text(&out));
     assert!(!text(&out).contains("panicked"));
 }

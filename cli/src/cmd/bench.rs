@@ -104,6 +104,7 @@ pub struct Args {
     /// `seconds`, optionally `spp`; or JSON rows with those keys, as `--json` writes): prints the
     /// equal-error time ratio (rtc's time over the other's at the same RMSE, interpolated on the
     /// log-log curves) and draws the curve in `--plot`. Measure both against the same reference.
+    /// The format: docs/bench/README.md, "The `--against` curve format".
     #[arg(long, value_name = "FILE")]
     pub against: Option<PathBuf>,
     /// Also report BVH build ms against trace ms and SAH cost for each builder preset.
