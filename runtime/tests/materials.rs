@@ -15,7 +15,8 @@
 //!   included), `fresnel_schlick` against Schlick's;
 //! - a glass ball (analytic sphere) against an independent f64 ray tree of the same ball with exact
 //!   Fresnel: the mean of the ball's pixels within 0.2 % per channel (Schlick's Fresnel, which glass
-//!   used before, is 3.6 % off in red and 37 % in green);
+//!   used before, is 3.6 % off in red and 37 % in green), and `PathGlass` (`std/path/glass.rt`, one
+//!   sampled lobe per hit) on the same ball within 4 standard errors at 256 spp;
 //! - mirror: exactly `tint × background`;
 //! - fog (`std/materials/fog.rt`, no lights): a slab of density σ and thickness d transmits `e^(-σd)`
 //!   of the background, for σ from 1e-3 to 1e4, monotone in σ (no banding), never NaN;
@@ -248,13 +249,9 @@ fn ball_ray(
     [0, 1, 2].map(|i| f * a[i] + (1.0 - f) * b[i])
 }
 
-#[test]
-fn a_glass_ball_converges_to_the_exact_fresnel_reference() {
-    let Some(gpu) = gpu_or_skip("a_glass_ball_converges_to_the_exact_fresnel_reference") else {
-        return;
-    };
-    let (size, max_depth) = (32u32, 8u32);
-    let img = render(&gpu, "glass-ball", &scene("glass_ball"), 1);
+/// The mean over the ball's pixels of `img` and of the exact-Fresnel ray tree (`ball_ray`), the
+/// number of those pixels, and the largest difference of one channel inside `r² < 0.9`.
+fn ball_means(img: &LinearImage, size: u32, max_depth: u32) -> ([f64; 3], [f64; 3], u32, f64) {
     let mut got = [0.0f64; 3];
     let mut want = [0.0f64; 3];
     let mut n = 0;
@@ -278,8 +275,21 @@ fn a_glass_ball_converges_to_the_exact_fresnel_reference() {
             n += 1;
         }
     }
-    let got = got.map(|s| s / f64::from(n));
-    let want = want.map(|s| s / f64::from(n));
+    (
+        got.map(|s| s / f64::from(n)),
+        want.map(|s| s / f64::from(n)),
+        n,
+        worst,
+    )
+}
+
+#[test]
+fn a_glass_ball_converges_to_the_exact_fresnel_reference() {
+    let Some(gpu) = gpu_or_skip("a_glass_ball_converges_to_the_exact_fresnel_reference") else {
+        return;
+    };
+    let img = render(&gpu, "glass-ball", &scene("glass_ball"), 1);
+    let (got, want, n, worst) = ball_means(&img, 32, 8);
     eprintln!("glass ball, {n} pixels: mean {got:?}, exact-Fresnel reference {want:?}, worst pixel inside r² < 0.9 off by {worst:.2e}");
     assert_eq!(n, 812, "pixels on the ball");
     for c in 0..3 {
@@ -294,6 +304,37 @@ fn a_glass_ball_converges_to_the_exact_fresnel_reference() {
     }
     // Away from the rim each pixel agrees to f32 precision of the ray tree.
     assert!(worst < 1e-3, "a pixel inside r² < 0.9 is off by {worst}");
+}
+
+/// `PathGlass` (one lobe sampled per hit) on the same ball at 256 spp converges to the same means:
+/// each sample's channel lies in [0, 1], so its standard deviation is at most `√(m (1 - m))` for a
+/// mean `m`; the mean of the ball's 812 × 256 samples must lie within 4 such standard errors (about
+/// 0.3 % of the red mean, 3 % of the green one; Schlick's Fresnel is 3.6 % and 37 % off).
+#[test]
+fn path_glass_with_one_sampled_lobe_converges_to_the_same_ball() {
+    let Some(gpu) = gpu_or_skip("path_glass_with_one_sampled_lobe_converges_to_the_same_ball")
+    else {
+        return;
+    };
+    let spp = 256u32;
+    let file = scene("path_glass_ball").set("SPP", format!("{spp}u"));
+    let img = render(&gpu, "path-glass-ball", &file, spp);
+    let (got, want, n, _) = ball_means(&img, 32, 8);
+    eprintln!(
+        "path glass ball, {n} pixels at {spp} spp: mean {got:?}, exact-Fresnel reference {want:?}"
+    );
+    assert_eq!(n, 812, "pixels on the ball");
+    let samples = f64::from(n * spp);
+    for c in 0..3 {
+        let sigma = (want[c] * (1.0 - want[c])).max(0.0).sqrt() / samples.sqrt();
+        assert!(
+            (got[c] - want[c]).abs() < 4.0 * sigma,
+            "channel {c}: mean {} against the exact-Fresnel reference {} (allowed ±{:.2e}, 4 standard errors)",
+            got[c],
+            want[c],
+            4.0 * sigma
+        );
+    }
 }
 
 #[test]
