@@ -1,7 +1,8 @@
 //! End-to-end tests of `rtc bench` on lavapipe (skipped, saying so, where no adapter exists): on
 //! the path-traced Cornell box at 32x32 the table has one row per level, the error falls with the
 //! sample count, the CSV, JSON and SVG files are written and parse; a missing or wrong-sized
-//! reference is a clear error, never a panic.
+//! reference is a clear error, never a panic; `--against` prints the checked equal-error time ratio
+//! against a synthetic curve, and a malformed curve is a clear error.
 
 mod common;
 
@@ -139,4 +140,95 @@ fn bad_references_are_clear_errors() {
     let out = rtc(&["bench", s(&cornell()), "--plot", s(&dir.join("p.png"))]);
     assert_eq!(out.status.code(), Some(2), "{}", text(&out));
     assert!(text(&out).contains("must end in `.svg`"));
+}
+
+/// `--against`: a synthetic curve in Mitsuba-style CSV (`spp,seconds,rmse`) on the exact power law
+/// `t = 10 ms / e²`, a straight line in log-log, so the interpolated time at rtc's RMSE `e` is exactly
+/// `10 / e²` ms and the ratio at each level is `ms · e² / 10`. The test recomputes that from the
+/// run's own CSV and checks the JSON's ratios, their geometric mean and the printed summary.
+#[test]
+fn against_prints_the_equal_error_time_ratio_of_a_synthetic_curve() {
+    let dir = scratch("bench", "against");
+    let curve = dir.join("other.csv");
+    let mut text_in = String::from("# synthetic: t = 10 ms / e^2\nspp,seconds,rmse\n");
+    for (spp, e) in [(1, 1.0f64), (4, 0.3), (16, 0.1), (64, 0.03), (256, 0.01)] {
+        text_in.push_str(&format!("{spp},{},{e}\n", 0.01 / (e * e)));
+    }
+    std::fs::write(&curve, text_in).expect("write curve");
+    let (csv, json, svg) = (dir.join("a.csv"), dir.join("a.json"), dir.join("a.svg"));
+    let out = rtc(&[
+        "bench",
+        s(&cornell()),
+        "--size",
+        "32x32",
+        "--reference-spp",
+        "64",
+        "--spp-list",
+        "1,4",
+        "--against",
+        s(&curve),
+        "--csv",
+        s(&csv),
+        "--json",
+        s(&json),
+        "--plot",
+        s(&svg),
+    ]);
+    if no_gpu(&out) {
+        return;
+    }
+    let t = text(&out);
+    assert!(out.status.success(), "{t}");
+    let csv_text = std::fs::read_to_string(&csv).expect("csv written");
+    let want: Vec<f64> = csv_text
+        .lines()
+        .skip(1)
+        .map(|l| {
+            let v: Vec<f64> = l.split(',').map(|x| x.parse().expect("number")).collect();
+            v[1] * v[2] * v[2] / 10.0
+        })
+        .collect();
+    assert_eq!(want.len(), 2, "{csv_text}");
+    let value: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).expect("json written"))
+            .expect("valid JSON");
+    let levels = value["against"]["levels"].as_array().expect("levels");
+    assert_eq!(value["against"]["label"], "other");
+    assert_eq!(levels.len(), 2);
+    for (level, w) in levels.iter().zip(&want) {
+        let got = level["ratio"].as_f64().expect("in range");
+        // The CSV rounds ms to 3 decimals and the RMSE to 8: 1e-3 relative is ample.
+        assert!((got / w - 1.0).abs() < 1e-3, "ratio {got}, want {w}: {t}");
+    }
+    let geo = (want[0] * want[1]).sqrt();
+    let got = value["against"]["ratio_geomean"].as_f64().expect("geomean");
+    assert!((got / geo - 1.0).abs() < 1e-3, "geomean {got}, want {geo}");
+    assert!(
+        t.contains(&format!("equal-error time ratio rtc / other: {got:.3}")),
+        "{t}"
+    );
+    let svg_text = std::fs::read_to_string(&svg).expect("svg written");
+    assert_eq!(svg_text.matches("<polyline").count(), 2, "{svg_text}");
+}
+
+#[test]
+fn a_bad_against_curve_is_a_clear_error_before_rendering() {
+    let dir = scratch("bench", "against-bad");
+    let curve = dir.join("bad.csv");
+    std::fs::write(&curve, "spp,rmse\n1,0.1\n4,0.05\n").expect("write");
+    let out = rtc(&["bench", s(&cornell()), "--against", s(&curve)]);
+    let t = text(&out);
+    assert_eq!(out.status.code(), Some(1), "{t}");
+    assert!(
+        t.contains("cannot use the curve") && t.contains("no time column"),
+        "{t}"
+    );
+    let out = rtc(&[
+        "bench",
+        s(&cornell()),
+        "--against",
+        s(&dir.join("none.csv")),
+    ]);
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    assert!(!text(&out).contains("panicked"));
 }

@@ -16,6 +16,10 @@
 //! measured MSE is `σ²(1/n − 1/N)` rather than `σ²/n` (`N` the reference's samples); the output
 //! says so. An independent reference file has no such bias.
 //!
+//! `--against FILE` reads another renderer's error-against-time curve (CSV or JSON; the format is
+//! in [`against`]) and prints the equal-error time ratio, rtc's time over the other's at the same
+//! RMSE, interpolated on the log-log curves; `--plot` draws both curves.
+//!
 //! `--bvh-presets` adds the BVH knob: for each builder preset (`fast`, `quality`) it builds the
 //! scene and renders `--preset-spp` samples, and reports BVH build ms, trace (render) ms, and the
 //! SAH cost of the scene-level BVH and of the object-level BVHs (their mean weighted by
@@ -45,6 +49,7 @@ use std::path::{Path, PathBuf};
 /// The reference's sample count when neither `--reference` nor `--reference-spp` is given.
 pub const DEFAULT_REFERENCE_SPP: u32 = 1024;
 
+pub mod against;
 pub mod compile_time;
 
 /// Arguments of `rtc bench`.
@@ -95,6 +100,13 @@ pub struct Args {
     /// Draw RMSE against render time (log-log) as SVG.
     #[arg(long, value_name = "FILE.svg")]
     pub plot: Option<PathBuf>,
+    /// Another renderer's error-against-time curve (CSV with a header naming `rmse` and `ms` or
+    /// `seconds`, optionally `spp`; or JSON rows with those keys, as `--json` writes): prints the
+    /// equal-error time ratio (rtc's time over the other's at the same RMSE, interpolated on the
+    /// log-log curves) and draws the curve in `--plot`. Measure both against the same reference.
+    /// The format: docs/bench/README.md, "The `--against` curve format".
+    #[arg(long, value_name = "FILE")]
+    pub against: Option<PathBuf>,
     /// Also report BVH build ms against trace ms and SAH cost for each builder preset.
     #[arg(long)]
     pub bvh_presets: bool,
@@ -289,6 +301,19 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         None => None,
     };
 
+    let against = match &args.against {
+        Some(file) => match against::read(file) {
+            Ok(c) => Some(c),
+            Err(e) => {
+                return fail(
+                    &format!("cannot use the curve `{}` (--against): {e}", file.display()),
+                    ctx,
+                )
+            }
+        },
+        None => None,
+    };
+
     let compiled = match compile(
         path,
         args.scene.name.as_deref(),
@@ -430,6 +455,13 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         ));
     }
 
+    let compared = against.as_ref().map(|curve| {
+        let ours: Vec<(u32, f64, f64)> = rows.iter().map(|r| (r.samples, r.ms, r.rmse)).collect();
+        let levels = against::levels(curve, &ours);
+        term::print(&against::report(curve, &levels));
+        (curve, levels)
+    });
+
     let mut presets = Vec::new();
     if args.bvh_presets {
         term::print(&format!(
@@ -470,7 +502,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         outputs.push((p, csv(&rows)));
     }
     if let Some(p) = &args.json {
-        let value = json(
+        let mut value = json(
             path,
             size,
             &reference_desc,
@@ -479,10 +511,16 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             &presets,
             args.preset_spp,
         );
+        if let Some((curve, levels)) = &compared {
+            value["against"] = against::json(curve, levels);
+        }
         outputs.push((p, format!("{value:#}\n")));
     }
     if let Some(p) = &args.plot {
-        outputs.push((p, svg_plot(&rows, path, size, &reference_desc)));
+        outputs.push((
+            p,
+            svg_plot(&rows, path, size, &reference_desc, against.as_ref()),
+        ));
     }
     for (path, text) in outputs {
         if let Err(e) = std::fs::write(path, text) {
@@ -616,12 +654,20 @@ fn decades(lo: f64, hi: f64) -> (f64, f64) {
 }
 
 /// RMSE against ms on log-log axes, points labelled with their spp, and a dashed `ms^-1/2` line
-/// through the first point (the Monte Carlo rate), as a standalone SVG document.
-pub fn svg_plot(rows: &[Row], scene: &Path, size: [u32; 2], reference: &str) -> String {
+/// through the first point (the Monte Carlo rate), as a standalone SVG document; with `other`,
+/// that renderer's curve too (blue, with a legend).
+pub fn svg_plot(
+    rows: &[Row],
+    scene: &Path,
+    size: [u32; 2],
+    reference: &str,
+    other: Option<&against::Curve>,
+) -> String {
     let pts: Vec<&Row> = rows
         .iter()
         .filter(|r| r.ms > 0.0 && r.rmse > 0.0 && r.ms.is_finite() && r.rmse.is_finite())
         .collect();
+    let other_pts: &[against::Point] = other.map_or(&[], |c| &c.points);
     let (w, h) = (640.0, 440.0);
     let (left, right, top, bottom) = (80.0, 20.0, 50.0, 60.0);
     let mut s = String::new();
@@ -657,13 +703,23 @@ pub fn svg_plot(rows: &[Row], scene: &Path, size: [u32; 2], reference: &str) -> 
         s.push_str("</svg>\n");
         return s;
     }
+    let all_ms = || {
+        pts.iter()
+            .map(|r| r.ms)
+            .chain(other_pts.iter().map(|p| p.ms))
+    };
+    let all_rmse = || {
+        pts.iter()
+            .map(|r| r.rmse)
+            .chain(other_pts.iter().map(|p| p.rmse))
+    };
     let (x0, x1) = decades(
-        pts.iter().map(|r| r.ms).fold(f64::INFINITY, f64::min),
-        pts.iter().map(|r| r.ms).fold(0.0, f64::max),
+        all_ms().fold(f64::INFINITY, f64::min),
+        all_ms().fold(0.0, f64::max),
     );
     let (y0, y1) = decades(
-        pts.iter().map(|r| r.rmse).fold(f64::INFINITY, f64::min),
-        pts.iter().map(|r| r.rmse).fold(0.0, f64::max),
+        all_rmse().fold(f64::INFINITY, f64::min),
+        all_rmse().fold(0.0, f64::max),
     );
     let (pw, ph) = (w - left - right, h - top - bottom);
     let px = |ms: f64| left + (ms.log10() - x0) / (x1 - x0) * pw;
@@ -747,6 +803,49 @@ pub fn svg_plot(rows: &[Row], scene: &Path, size: [u32; 2], reference: &str) -> 
             r.samples
         );
     }
+    if let Some(c) = other {
+        let line: Vec<String> = other_pts
+            .iter()
+            .map(|p| format!("{:.1},{:.1}", px(p.ms), py(p.rmse)))
+            .collect();
+        let _ = writeln!(
+            s,
+            "<polyline points=\"{}\" fill=\"none\" stroke=\"#2e6da4\" stroke-width=\"2\"/>",
+            line.join(" ")
+        );
+        for p in other_pts {
+            let label = p.spp.map_or(String::new(), |n| format!("{n} spp"));
+            let _ = writeln!(
+                s,
+                "<rect x=\"{:.1}\" y=\"{:.1}\" width=\"7\" height=\"7\" fill=\"#2e6da4\"/>\
+                 <text x=\"{:.1}\" y=\"{:.1}\" fill=\"#2e6da4\">{label}</text>",
+                px(p.ms) - 3.5,
+                py(p.rmse) - 3.5,
+                px(p.ms) + 7.0,
+                py(p.rmse) + 16.0
+            );
+        }
+        let _ = writeln!(
+            s,
+            "<line x1=\"{:.1}\" y1=\"{:.1}\" x2=\"{:.1}\" y2=\"{:.1}\" stroke=\"#c0392b\" \
+             stroke-width=\"2\"/><text x=\"{:.1}\" y=\"{:.1}\">rtc</text>\
+             <line x1=\"{:.1}\" y1=\"{:.1}\" x2=\"{:.1}\" y2=\"{:.1}\" stroke=\"#2e6da4\" \
+             stroke-width=\"2\"/><text x=\"{:.1}\" y=\"{:.1}\">{}</text>",
+            left + pw - 190.0,
+            top + 34.0,
+            left + pw - 160.0,
+            top + 34.0,
+            left + pw - 154.0,
+            top + 38.0,
+            left + pw - 190.0,
+            top + 52.0,
+            left + pw - 160.0,
+            top + 52.0,
+            left + pw - 154.0,
+            top + 56.0,
+            escape(&c.label)
+        );
+    }
     let _ = writeln!(
         s,
         "<line x1=\"{:.1}\" y1=\"{:.1}\" x2=\"{:.1}\" y2=\"{:.1}\" stroke=\"#888\" \
@@ -795,7 +894,7 @@ mod tests {
         let text = csv(&rows);
         assert_eq!(text.lines().count(), 3);
         assert!(text.starts_with("spp,ms,rmse,rel_mse,psnr_db\n1,10.000,0.2"));
-        let svg = svg_plot(&rows, Path::new("a<b>.rt"), [8, 8], "scene at 64 spp");
+        let svg = svg_plot(&rows, Path::new("a<b>.rt"), [8, 8], "scene at 64 spp", None);
         assert_eq!(svg.matches("<circle").count(), 2);
         assert!(svg.contains("a&lt;b&gt;.rt"));
         assert!(svg.trim_end().ends_with("</svg>"));

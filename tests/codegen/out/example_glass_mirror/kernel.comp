@@ -358,20 +358,20 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
     vec3 b_5 = (_e18.xyz - r_1.origin);
     vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
-    vec3 c_5 = (_e28.xyz - r_1.origin);
+    vec3 c_4 = (_e28.xyz - r_1.origin);
     float ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
     float ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
     float bx = (b_5[min(r_1.kx, 2u)] - (r_1.shear.x * b_5[min(r_1.kz, 2u)]));
     float by = (b_5[min(r_1.ky, 2u)] - (r_1.shear.y * b_5[min(r_1.kz, 2u)]));
-    float cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
-    float cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
+    float cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
+    float cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
     float v_1 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
-    float t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    float t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
     bool hit_9 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_9 ? vec3(t_4, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
@@ -472,10 +472,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 vec3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
-                    Candidate c_6 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0.0));
-                    bool _e57 = accept(inst_2, world_ray, c_6);
+                    Candidate c_5 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0.0));
+                    bool _e57 = accept(inst_2, world_ray, c_5);
                     if (_e57) {
-                        best = c_6;
+                        best = c_5;
                         if (shadow) {
                             Candidate _e58 = best;
                             return _e58;
@@ -907,10 +907,16 @@ vec3 through_medium(Ray ray_16, float t_1, vec3 radiance_1) {
     return _e21;
 }
 
-float schlick(float c_3, float eta) {
-    float r0_1 = ((1.0 - eta) / (1.0 + eta));
-    float r_4 = (r0_1 * r0_1);
-    return (r_4 + ((1.0 - r_4) * pow((1.0 - c_3), 5.0)));
+float fresnel_dielectric(float cos_i, float eta) {
+    float ci = min(max(cos_i, 0.0), 1.0);
+    float sin2_t = ((eta * eta) * max((1.0 - (ci * ci)), 0.0));
+    if ((sin2_t >= 1.0)) {
+        return 1.0;
+    }
+    float ct = sqrt((1.0 - sin2_t));
+    float rs = (((eta * ci) - ct) / ((eta * ci) + ct));
+    float rp = ((ci - (eta * ct)) / (ci + (eta * ct)));
+    return (0.5 * ((rs * rs) + (rp * rp)));
 }
 
 void rt_spawn(vec3 dir, vec3 weight) {
@@ -934,18 +940,18 @@ void glass_rays(Glass m_2, Ray ray_17, Hit hit_4) {
         eta_1 = m_2.ior;
     }
     vec3 _e17 = n_3;
-    float c_7 = min(dot(-(_e4), _e17), 1.0);
+    float c_6 = min(dot(-(_e4), _e17), 1.0);
     vec3 _e21 = n_3;
     float _e22 = eta_1;
     vec3 t_5 = refract(_e4, _e21, _e22);
     float _e24 = eta_1;
-    float _e25 = schlick(c_7, _e24);
-    if ((dot(t_5, t_5) == 0.0)) {
-        vec3 _e29 = n_3;
-        rt_spawn(reflect(_e4, _e29), m_2.tint);
-    } else {
+    float _e25 = fresnel_dielectric(c_6, _e24);
+    if (((dot(t_5, t_5) == 0.0) || (_e25 >= 1.0))) {
         vec3 _e32 = n_3;
-        rt_spawn(reflect(_e4, _e32), vec3(_e25));
+        rt_spawn(reflect(_e4, _e32), m_2.tint);
+    } else {
+        vec3 _e35 = n_3;
+        rt_spawn(reflect(_e4, _e35), vec3(_e25));
         rt_spawn(t_5, (m_2.tint * vec3((1.0 - _e25))));
     }
     return;
@@ -1230,9 +1236,9 @@ bvec3 is_finite_vec3f(vec3 x_2) {
     return lessThan((floatBitsToUint(x_2) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
-vec3 finite_or_zero(vec3 c_4) {
-    bvec3 _e3 = is_finite_vec3f(c_4);
-    return mix(vec3(0.0), c_4, _e3);
+vec3 finite_or_zero(vec3 c_3) {
+    bvec3 _e3 = is_finite_vec3f(c_3);
+    return mix(vec3(0.0), c_3, _e3);
 }
 
 void render_pixel(uvec2 pixel_3) {

@@ -469,20 +469,20 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
     float3 b_5 = (_e18.xyz - r_1.origin);
     float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
-    float3 c_5 = (_e28.xyz - r_1.origin);
+    float3 c_4 = (_e28.xyz - r_1.origin);
     float ax = (a_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float ay = (a_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float bx = (b_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float by = (b_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * b_5[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float cx = (c_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float cy = (c_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cx = (c_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_4[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cy = (c_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u = ((cx * by) - (cy * bx));
     float v_1 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
-    float t_4 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_4 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_9 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_9 ? float3(t_4, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
@@ -607,10 +607,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 const float3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < asfloat(_e49))) {
-                    Candidate c_6 = ConstructCandidate(_e46.x, slot_1, prim, _e46.yz, (0.0).xxx);
-                    const bool _e57 = accept(inst_2, world_ray, c_6);
+                    Candidate c_5 = ConstructCandidate(_e46.x, slot_1, prim, _e46.yz, (0.0).xxx);
+                    const bool _e57 = accept(inst_2, world_ray, c_5);
                     if (_e57) {
-                        best = c_6;
+                        best = c_5;
                         if (shadow) {
                             Candidate _e58 = best;
                             const Candidate candidate_1 = _e58;
@@ -1157,11 +1157,17 @@ float3 through_medium(Ray ray_16, float t_1, float3 radiance_1)
     return _e21;
 }
 
-float schlick(float c_3, float eta)
+float fresnel_dielectric(float cos_i, float eta)
 {
-    float r0_1 = ((1.0 - eta) / (1.0 + eta));
-    float r_4 = (r0_1 * r0_1);
-    return (r_4 + ((1.0 - r_4) * pow((1.0 - c_3), 5.0)));
+    float ci = min(max(cos_i, 0.0), 1.0);
+    float sin2_t = ((eta * eta) * max((1.0 - (ci * ci)), 0.0));
+    if ((sin2_t >= 1.0)) {
+        return 1.0;
+    }
+    float ct = sqrt((1.0 - sin2_t));
+    float rs = (((eta * ci) - ct) / ((eta * ci) + ct));
+    float rp = ((ci - (eta * ct)) / (ci + (eta * ct)));
+    return (0.5 * ((rs * rs) + (rp * rp)));
 }
 
 void rt_spawn(float3 dir, float3 weight)
@@ -1188,18 +1194,18 @@ void glass_rays(Glass m_2, Ray ray_17, Hit hit_4)
         eta_1 = m_2.ior;
     }
     float3 _e17 = n_3;
-    float c_7 = min(dot(-(_e4), _e17), 1.0);
+    float c_6 = min(dot(-(_e4), _e17), 1.0);
     float3 _e21 = n_3;
     float _e22 = eta_1;
     float3 t_5 = refract(_e4, _e21, _e22);
     float _e24 = eta_1;
-    const float _e25 = schlick(c_7, _e24);
-    if ((dot(t_5, t_5) == 0.0)) {
-        float3 _e29 = n_3;
-        rt_spawn(reflect(_e4, _e29), m_2.tint);
-    } else {
+    const float _e25 = fresnel_dielectric(c_6, _e24);
+    if (((dot(t_5, t_5) == 0.0) || (_e25 >= 1.0))) {
         float3 _e32 = n_3;
-        rt_spawn(reflect(_e4, _e32), (_e25).xxx);
+        rt_spawn(reflect(_e4, _e32), m_2.tint);
+    } else {
+        float3 _e35 = n_3;
+        rt_spawn(reflect(_e4, _e35), (_e25).xxx);
         rt_spawn(t_5, (m_2.tint * ((1.0 - _e25)).xxx));
     }
     return;
@@ -1524,10 +1530,10 @@ bool3 is_finite_vec3f(float3 x_2)
     return ((asuint(x_2) & (2147483647u).xxx) < (2139095040u).xxx);
 }
 
-float3 finite_or_zero(float3 c_4)
+float3 finite_or_zero(float3 c_3)
 {
-    const bool3 _e3 = is_finite_vec3f(c_4);
-    return (_e3 ? c_4 : (0.0).xxx);
+    const bool3 _e3 = is_finite_vec3f(c_3);
+    return (_e3 ? c_3 : (0.0).xxx);
 }
 
 void render_pixel(uint2 pixel_3)

@@ -447,20 +447,20 @@ metal::float3 hit_triangle(
     metal::float4 _e18 = triangles[(slot * 3u) + 1u];
     metal::float3 b_5 = _e18.xyz - r_1.origin;
     metal::float4 _e28 = triangles[(slot * 3u) + 2u];
-    metal::float3 c_5 = _e28.xyz - r_1.origin;
+    metal::float3 c_4 = _e28.xyz - r_1.origin;
     float ax = a_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_4[metal::min(r_1.kz, 2u)]);
     float ay = a_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_4[metal::min(r_1.kz, 2u)]);
     float bx = b_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_5[metal::min(r_1.kz, 2u)]);
     float by = b_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_5[metal::min(r_1.kz, 2u)]);
-    float cx = c_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_5[metal::min(r_1.kz, 2u)]);
-    float cy = c_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_5[metal::min(r_1.kz, 2u)]);
+    float cx = c_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_4[metal::min(r_1.kz, 2u)]);
+    float cy = c_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_4[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
     float v_1 = (ax * cy) - (ay * cx);
     float w = (bx * ay) - (by * ax);
     bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
-    float t_4 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_4 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_9 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1);
     uint _e173 = F32_INF;
     return hit_9 ? metal::float3(t_4, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
@@ -611,10 +611,10 @@ Candidate intersect_mesh(
                 metal::float3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45, F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
-                    Candidate c_6 = Candidate {_e46.x, slot_1, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e57 = accept(inst_2, world_ray, c_6);
+                    Candidate c_5 = Candidate {_e46.x, slot_1, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e57 = accept(inst_2, world_ray, c_5);
                     if (_e57) {
-                        best = c_6;
+                        best = c_5;
                         if (shadow) {
                             Candidate _e58 = best;
                             return _e58;
@@ -1183,13 +1183,19 @@ metal::float3 through_medium(
     return _e21;
 }
 
-float schlick(
-    float c_3,
+float fresnel_dielectric(
+    float cos_i,
     float eta
 ) {
-    float r0_1 = (1.0 - eta) / (1.0 + eta);
-    float r_4 = r0_1 * r0_1;
-    return r_4 + ((1.0 - r_4) * metal::pow(1.0 - c_3, 5.0));
+    float ci = metal::min(metal::max(cos_i, 0.0), 1.0);
+    float sin2_t = (eta * eta) * metal::max(1.0 - (ci * ci), 0.0);
+    if (sin2_t >= 1.0) {
+        return 1.0;
+    }
+    float ct = metal::sqrt(1.0 - sin2_t);
+    float rs = ((eta * ci) - ct) / ((eta * ci) + ct);
+    float rp = (ci - (eta * ct)) / (ci + (eta * ct));
+    return 0.5 * ((rs * rs) + (rp * rp));
 }
 
 void rt_spawn(
@@ -1226,18 +1232,18 @@ void glass_rays(
         eta_1 = m_2.ior;
     }
     metal::float3 _e17 = n_3;
-    float c_7 = metal::min(metal::dot(-(_e4), _e17), 1.0);
+    float c_6 = metal::min(metal::dot(-(_e4), _e17), 1.0);
     metal::float3 _e21 = n_3;
     float _e22 = eta_1;
     metal::float3 t_5 = metal::refract(_e4, _e21, _e22);
     float _e24 = eta_1;
-    float _e25 = schlick(c_7, _e24);
-    if (metal::dot(t_5, t_5) == 0.0) {
-        metal::float3 _e29 = n_3;
-        rt_spawn(metal::reflect(_e4, _e29), m_2.tint, spawn_dirs, spawn_weights, spawn_count);
-    } else {
+    float _e25 = fresnel_dielectric(c_6, _e24);
+    if ((metal::dot(t_5, t_5) == 0.0) || (_e25 >= 1.0)) {
         metal::float3 _e32 = n_3;
-        rt_spawn(metal::reflect(_e4, _e32), metal::float3(_e25), spawn_dirs, spawn_weights, spawn_count);
+        rt_spawn(metal::reflect(_e4, _e32), m_2.tint, spawn_dirs, spawn_weights, spawn_count);
+    } else {
+        metal::float3 _e35 = n_3;
+        rt_spawn(metal::reflect(_e4, _e35), metal::float3(_e25), spawn_dirs, spawn_weights, spawn_count);
         rt_spawn(t_5, m_2.tint * metal::float3(1.0 - _e25), spawn_dirs, spawn_weights, spawn_count);
     }
     return;
@@ -1580,10 +1586,10 @@ metal::bool3 is_finite_vec3f(
 }
 
 metal::float3 finite_or_zero(
-    metal::float3 c_4
+    metal::float3 c_3
 ) {
-    metal::bool3 _e3 = is_finite_vec3f(c_4);
-    return metal::select(metal::float3(0.0), c_4, _e3);
+    metal::bool3 _e3 = is_finite_vec3f(c_3);
+    return metal::select(metal::float3(0.0), c_3, _e3);
 }
 
 void render_pixel(

@@ -362,20 +362,20 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let _e18 = triangles[((slot * 3u) + 1u)];
     let b_5 = (_e18.xyz - r_1.origin);
     let _e28 = triangles[((slot * 3u) + 2u)];
-    let c_5 = (_e28.xyz - r_1.origin);
+    let c_4 = (_e28.xyz - r_1.origin);
     let ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
     let ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
     let bx = (b_5[min(r_1.kx, 2u)] - (r_1.shear.x * b_5[min(r_1.kz, 2u)]));
     let by = (b_5[min(r_1.ky, 2u)] - (r_1.shear.y * b_5[min(r_1.kz, 2u)]));
-    let cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
-    let cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
+    let cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
+    let cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
     let v_1 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
     let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
-    let t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    let t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
     let hit_9 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     let _e173 = F32_INF;
     return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_1 * rcp), (w * rcp)), hit_9);
@@ -471,10 +471,10 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
                 let _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
-                    let c_6 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0f));
-                    let _e57 = accept(inst_2, world_ray, c_6);
+                    let c_5 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0f));
+                    let _e57 = accept(inst_2, world_ray, c_5);
                     if _e57 {
-                        best = c_6;
+                        best = c_5;
                         if shadow {
                             let _e58 = best;
                             return _e58;
@@ -912,10 +912,16 @@ fn through_medium(ray_16: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     return _e21;
 }
 
-fn schlick(c_3: f32, eta: f32) -> f32 {
-    let r0_1 = ((1f - eta) / (1f + eta));
-    let r_4 = (r0_1 * r0_1);
-    return (r_4 + ((1f - r_4) * pow((1f - c_3), 5f)));
+fn fresnel_dielectric(cos_i: f32, eta: f32) -> f32 {
+    let ci = min(max(cos_i, 0f), 1f);
+    let sin2_t = ((eta * eta) * max((1f - (ci * ci)), 0f));
+    if (sin2_t >= 1f) {
+        return 1f;
+    }
+    let ct = sqrt((1f - sin2_t));
+    let rs = (((eta * ci) - ct) / ((eta * ci) + ct));
+    let rp = ((ci - (eta * ct)) / (ci + (eta * ct)));
+    return (0.5f * ((rs * rs) + (rp * rp)));
 }
 
 fn rt_spawn(dir: vec3<f32>, weight: vec3<f32>) {
@@ -940,18 +946,18 @@ fn glass_rays(m_2: Glass, ray_17: Ray, hit_4: Hit) {
         eta_1 = m_2.ior;
     }
     let _e17 = n_3;
-    let c_7 = min(dot(-(_e4), _e17), 1f);
+    let c_6 = min(dot(-(_e4), _e17), 1f);
     let _e21 = n_3;
     let _e22 = eta_1;
     let t_5 = refract(_e4, _e21, _e22);
     let _e24 = eta_1;
-    let _e25 = schlick(c_7, _e24);
-    if (dot(t_5, t_5) == 0f) {
-        let _e29 = n_3;
-        rt_spawn(reflect(_e4, _e29), m_2.tint);
-    } else {
+    let _e25 = fresnel_dielectric(c_6, _e24);
+    if ((dot(t_5, t_5) == 0f) || (_e25 >= 1f)) {
         let _e32 = n_3;
-        rt_spawn(reflect(_e4, _e32), vec3(_e25));
+        rt_spawn(reflect(_e4, _e32), m_2.tint);
+    } else {
+        let _e35 = n_3;
+        rt_spawn(reflect(_e4, _e35), vec3(_e25));
         rt_spawn(t_5, (m_2.tint * vec3((1f - _e25))));
     }
     return;
@@ -1235,9 +1241,9 @@ fn is_finite_vec3f(x_2: vec3<f32>) -> vec3<bool> {
     return ((bitcast<vec3<u32>>(x_2) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
-fn finite_or_zero(c_4: vec3<f32>) -> vec3<f32> {
-    let _e3 = is_finite_vec3f(c_4);
-    return select(vec3(0f), c_4, _e3);
+fn finite_or_zero(c_3: vec3<f32>) -> vec3<f32> {
+    let _e3 = is_finite_vec3f(c_3);
+    return select(vec3(0f), c_3, _e3);
 }
 
 fn render_pixel(pixel_3: vec2<u32>) {
