@@ -131,7 +131,8 @@ fn a_glb_with_camera_and_lights_keeps_them() {
         "{printed}"
     );
     assert!(
-        printed.contains("(6 meshes, 2896 triangles, 7 objects)"),
+        printed
+            .contains("(6 meshes, 2896 triangles, 7 objects; 6 object BVHs built, 1 scene-level)"),
         "{printed}"
     );
 }
