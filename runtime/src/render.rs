@@ -661,8 +661,12 @@ impl<'g> Renderer<'g> {
             path_slots,
             ..entities.frame_uniforms(samples_per_pass, total_samples)
         };
-        let report = scene.upload(gpu, &entities, &frame, u64::from(width) * u64::from(height))?;
-        entities.clear_dirty();
+        let report = scene.upload(
+            gpu,
+            &mut entities,
+            &frame,
+            u64::from(width) * u64::from(height),
+        )?;
         setup.upload = Some((
             upload.0 + report.stats.upload_ms,
             upload.1 + report.stats.bytes_uploaded,
@@ -777,34 +781,8 @@ impl<'g> Renderer<'g> {
     /// Replaces the camera's fields with those of `camera`, an instance of the same camera
     /// struct (every field but asset handles). Restarts the accumulation.
     pub fn set_camera(&mut self, camera: &Instance) -> Result<(), RenderError> {
-        let target = self.entities.instance(FieldTarget::Camera)?;
-        let program = &self.program;
-        if target.struct_id != Some(camera.struct_id) {
-            return Err(SceneError::FieldValue {
-                ty: target
-                    .struct_id
-                    .map_or_else(String::new, |s| program.structs[s].name.clone()),
-                field: "*".into(),
-                expected: "the scene's camera struct".into(),
-                problem: format!(
-                    "the new camera is a `{}`; a kernel holds one camera type, so a camera of \
-                     another type needs a recompile",
-                    program.structs[camera.struct_id].name
-                ),
-            }
-            .into());
-        }
-        let fields = &program.structs[camera.struct_id].fields;
-        for (f, v) in fields.iter().zip(&camera.fields) {
-            if matches!(
-                program.types.get(f.ty),
-                rtc_compiler::sema::types::Type::Mesh | rtc_compiler::sema::types::Type::Texture
-            ) {
-                continue;
-            }
-            self.entities
-                .set_field(program, FieldTarget::Camera, &f.name, v)?;
-        }
+        self.entities
+            .set_instance(&self.program, FieldTarget::Camera, camera)?;
         self.passes_done = 0;
         Ok(())
     }
@@ -814,7 +792,8 @@ impl<'g> Renderer<'g> {
     /// and object-level BVH whose file did not change comes from the store (no file is read, no
     /// BLAS built), and every GPU buffer whose contents did not change stays as it is. Camera,
     /// transforms and fields come from `compiled` (edits made with [`set_field`](Self::set_field)
-    /// or [`set_transform`](Self::set_transform) are not carried over). Restarts the
+    /// or [`set_transform`](Self::set_transform) are not carried over); the image size and
+    /// the samples of a [`render`](Self::render) stay this renderer's. Restarts the
     /// accumulation. On an error this renderer keeps its kernels and entities, and re-uploads
     /// its buffers at the next pass.
     pub fn replace_kernel(&mut self, compiled: &CompiledScene) -> Result<(), RenderError> {
@@ -956,8 +935,7 @@ impl<'g> Renderer<'g> {
                 .entities
                 .frame_uniforms(self.samples_per_pass, self.total_samples)
         };
-        let report: UploadReport = self.scene.upload(gpu, &self.entities, &frame, pixels)?;
-        self.entities.clear_dirty();
+        let report: UploadReport = self.scene.upload(gpu, &mut self.entities, &frame, pixels)?;
         let mut written = std::mem::take(&mut self.written_at_setup);
         for name in report.written() {
             if !written.contains(&name) {
@@ -1116,7 +1094,7 @@ impl Renderer<'_> {
         let frame = self
             .entities
             .frame_uniforms(self.samples_per_pass, self.total_samples);
-        self.scene.upload(gpu, &self.entities, &frame, pixels)?;
+        self.scene.upload(gpu, &mut self.entities, &frame, pixels)?;
         self.scene.clear_accumulation(gpu)?;
         let Kernels::Mega(kernel) = &self.kernels else {
             return Err(RenderError::DebugNeedsMegakernel);
@@ -1157,7 +1135,6 @@ fn run_bounds(
     })?;
     frame.tlas_root = 0;
     let report = scene.upload_for_bounds(gpu, entities, &frame)?;
-    entities.clear_dirty();
     scene.clear_accumulation(gpu)?;
     let groups = frame.instance_count.div_ceil(BOUNDS_WORKGROUP).max(1);
     dispatch_once(gpu, kernel, scene.buffers(), [groups, 1, 1])?;

@@ -88,7 +88,7 @@ fn buffers_hold_the_entities_and_moves_reupload_only_nodes_and_instances() {
     assert_eq!(leaves, vec![1; 8]);
 
     let frame = e.frame_uniforms(1, 4);
-    let first = scene.upload(&gpu, &e, &frame, 64 * 64).expect("upload");
+    let first = scene.upload(&gpu, &mut e, &frame, 64 * 64).expect("upload");
     for (name, outcome) in &first.outcomes {
         assert_eq!(*outcome, UploadOutcome::Reallocated, "{name} is new");
     }
@@ -107,7 +107,7 @@ fn buffers_hold_the_entities_and_moves_reupload_only_nodes_and_instances() {
     };
     check(&scene, &e);
 
-    let again = scene.upload(&gpu, &e, &frame, 64 * 64).expect("upload");
+    let again = scene.upload(&gpu, &mut e, &frame, 64 * 64).expect("upload");
     assert!(
         again.written().is_empty(),
         "nothing changed: {:?}",
@@ -121,7 +121,7 @@ fn buffers_hold_the_entities_and_moves_reupload_only_nodes_and_instances() {
     e.refresh().expect("TLAS");
     assert_eq!(e.stats().blas_builds, before);
     let frame = e.frame_uniforms(1, 4);
-    let moved = scene.upload(&gpu, &e, &frame, 64 * 64).expect("upload");
+    let moved = scene.upload(&gpu, &mut e, &frame, 64 * 64).expect("upload");
     assert_eq!(moved.written(), ["nodes", "instances"]);
     for name in ["triangles", "attributes", "params", "texels", "frame"] {
         assert_eq!(
@@ -145,7 +145,7 @@ fn data_above_a_binding_limit_is_a_typed_error_naming_it() {
     };
     let (c, l) = checked(&scene_file("rows").scene("pair"));
     let program = c.program.as_ref().expect("program");
-    let e = entities(program, &l);
+    let mut e = entities(program, &l);
     let triangles = std::mem::size_of_val(e.triangles()) as u64;
     let nodes = std::mem::size_of_val(e.nodes()) as u64;
     // Room for everything but the triangles.
@@ -159,8 +159,9 @@ fn data_above_a_binding_limit_is_a_typed_error_naming_it() {
         max_uniform_buffer_binding_size: 1 << 16,
         max_buffer_size: 1 << 30,
     });
+    let frame = e.frame_uniforms(1, 1);
     let err = scene
-        .upload(&gpu, &e, &e.frame_uniforms(1, 1), 16)
+        .upload(&gpu, &mut e, &frame, 16)
         .expect_err("too large");
     // The binding holds meshes, so the error also names the largest of them.
     match &err {

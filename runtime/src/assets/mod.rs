@@ -80,5 +80,6 @@ pub use model::{
     MeshInstance, ModelScene, Projection,
 };
 pub use obj::load_obj;
+pub(crate) use obj::parse_obj;
 pub use procedural::{cube_mesh, quad_mesh, sphere_mesh, MAX_SPHERE_SUBDIVISIONS};
 pub use texture::{load_image, solid_texture, TextureData, TextureFormat, MAX_TEXTURE_SIZE};

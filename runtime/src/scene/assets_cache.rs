@@ -21,8 +21,18 @@ use rtc_compiler::sema::hir::{ConstValue, MeshAsset, TextureAsset};
 use super::store::{AssetStore, Stamp, Version};
 use super::SceneError;
 use crate::assets::confine::resolve_scene_path;
+use crate::assets::model::parse_gltf_with;
 use crate::assets::model::ModelScene;
-use crate::assets::{self, load_gltf_with, AssetError, AssetRoots, MeshData, TextureData};
+use crate::assets::texture::decode_image;
+use crate::assets::{self, parse_obj, AssetError, AssetRoots, MeshData, TextureData};
+
+/// A file's bytes, read once: the loaders parse them and the store hashes them.
+fn read(file: &Path) -> Result<Vec<u8>, AssetError> {
+    std::fs::read(file).map_err(|source| AssetError::Read {
+        path: file.to_owned(),
+        source,
+    })
+}
 
 /// What identifies a mesh (the span of the string that named it does not).
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
@@ -152,23 +162,27 @@ impl AssetCache {
         let (version, data) = match self.store.mesh(&key, stamp, file.as_deref()) {
             Some(hit) => hit,
             None => {
-                let mut data = match (asset, &file) {
+                let (mut data, version) = match (asset, &file) {
                     (MeshAsset::File { span, .. }, Some(file)) => {
-                        assets::load_obj(file).map_err(|source| SceneError::Asset {
+                        let at_span = |source| SceneError::Asset {
                             span: Some(*span),
                             source,
-                        })?
+                        };
+                        let bytes = read(file).map_err(at_span)?;
+                        let data = parse_obj(&bytes, file).map_err(at_span)?;
+                        (data, Version::of_bytes(stamp, &bytes))
                     }
-                    (MeshAsset::Quad, _) => assets::quad_mesh(),
-                    (MeshAsset::Cube, _) => assets::cube_mesh(),
-                    (MeshAsset::Sphere { subdivisions }, _) => assets::sphere_mesh(*subdivisions),
-                    (MeshAsset::File { .. }, None) => MeshData::default(),
+                    (MeshAsset::Quad, _) => (assets::quad_mesh(), Version::NONE),
+                    (MeshAsset::Cube, _) => (assets::cube_mesh(), Version::NONE),
+                    (MeshAsset::Sphere { subdivisions }, _) => {
+                        (assets::sphere_mesh(*subdivisions), Version::NONE)
+                    }
+                    (MeshAsset::File { .. }, None) => (MeshData::default(), Version::NONE),
                 };
                 data.ensure_normals();
                 let data = Arc::new(data);
-                let version =
-                    self.store
-                        .put_mesh(key.clone(), stamp, file.as_deref(), Arc::clone(&data));
+                self.store
+                    .put_mesh(key.clone(), version, Arc::clone(&data), file.is_some());
                 (version, data)
             }
         };
@@ -196,7 +210,7 @@ impl AssetCache {
                 data.ensure_normals();
                 let data = Arc::new(data);
                 self.store
-                    .put_derived_mesh(key.clone(), version, Arc::clone(&data));
+                    .put_mesh(key.clone(), version, Arc::clone(&data), false);
                 data
             }
         };
@@ -212,10 +226,11 @@ impl AssetCache {
         if let Some(hit) = self.store.model(file, stamp) {
             return Ok(hit);
         }
-        let model = Arc::new(load_gltf_with(file, &self.roots)?);
-        let version = self
-            .store
-            .put_model(file.to_path_buf(), stamp, Arc::clone(&model));
+        let bytes = read(file)?;
+        let model = Arc::new(parse_gltf_with(&bytes, file, &self.roots)?);
+        let version = Version::of_bytes(stamp, &bytes);
+        self.store
+            .put_model(file.to_path_buf(), version, Arc::clone(&model));
         Ok((version, model))
     }
 
@@ -236,7 +251,7 @@ impl AssetCache {
             None => {
                 let data = Arc::new(make());
                 self.store
-                    .put_derived_texture(key.clone(), version, Arc::clone(&data));
+                    .put_texture(key.clone(), version, Arc::clone(&data), false);
                 data
             }
         };
@@ -265,24 +280,27 @@ impl AssetCache {
         let data = match self.store.texture(&key, stamp, file.as_deref()) {
             Some(data) => data,
             None => {
-                let data = match (asset, &file) {
+                let (data, version) = match (asset, &file) {
                     (TextureAsset::File { path, span }, Some(file)) => {
-                        let data =
-                            assets::load_image(file).map_err(|source| SceneError::Asset {
-                                span: Some(*span),
-                                source,
-                            })?;
+                        let at_span = |source| SceneError::Asset {
+                            span: Some(*span),
+                            source,
+                        };
+                        let bytes = read(file).map_err(at_span)?;
+                        let data = decode_image(&bytes, file).map_err(at_span)?;
                         if data.nonfinite_texels > 0 {
                             self.warnings.push(nonfinite_warning(path, &data));
                         }
-                        data
+                        (data, Version::of_bytes(stamp, &bytes))
                     }
-                    (TextureAsset::Solid(c), _) => assets::solid_texture(*c),
-                    (TextureAsset::File { .. }, None) => assets::solid_texture([0.0; 4]),
+                    (TextureAsset::Solid(c), _) => (assets::solid_texture(*c), Version::NONE),
+                    (TextureAsset::File { .. }, None) => {
+                        (assets::solid_texture([0.0; 4]), Version::NONE)
+                    }
                 };
                 let data = Arc::new(data);
                 self.store
-                    .put_texture(key.clone(), stamp, file.as_deref(), Arc::clone(&data));
+                    .put_texture(key.clone(), version, Arc::clone(&data), file.is_some());
                 data
             }
         };

@@ -42,7 +42,7 @@ use super::assets_cache::{AssetCache, MeshKey};
 use super::encode::encode_mesh;
 use super::gpu_types::{record, FrameUniforms, GpuInstance};
 use super::models;
-use super::params::{struct_type, ParamsBuilder};
+use super::params::ParamsBuilder;
 use super::store::{AssetStore, BuiltMesh};
 use super::SceneError;
 use crate::assets::{AssetRoots, MeshData, TextureFormat};
@@ -83,8 +83,8 @@ pub enum FieldTarget {
     Material(usize),
 }
 
-/// What changed in place since the GPU copy was last brought up to date (the caller clears it
-/// after each upload, [`Entities::clear_dirty`]), so that an upload can write ranges, not whole
+/// What changed in place since the GPU copy was last brought up to date (`GpuScene::upload`
+/// clears it, [`Entities::clear_dirty`]), so that an upload can write ranges, not whole
 /// buffers. Each part holds the version its ranges are relative to; an upload may use them only
 /// when the GPU holds exactly that version, and writes the whole buffer otherwise.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -561,12 +561,12 @@ impl Entities {
         }
         let typed =
             |params: &mut ParamsBuilder, inst: &Instance| -> Result<TypedOffset, SceneError> {
-                let ty = struct_type(program, inst.struct_id)?;
+                let (offset, words) = params.push_instance(program, inst)?;
                 Ok(TypedOffset {
                     type_id: type_id(program, linked, inst.struct_id)?,
-                    offset: params.push_instance(program, inst)?,
+                    offset,
                     struct_id: Some(inst.struct_id),
-                    words: rtc_compiler::layout::layout(program, ty).size / 4,
+                    words,
                 })
             };
         let camera = typed(&mut params, camera)?;

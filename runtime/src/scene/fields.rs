@@ -9,7 +9,7 @@
 //! error.
 
 use rtc_compiler::layout::{self, Handles};
-use rtc_compiler::sema::hir::{ConstValue, MeshAsset, Program, Scalar, TextureAsset};
+use rtc_compiler::sema::hir::{ConstValue, Instance, MeshAsset, Program, Scalar, TextureAsset};
 use rtc_compiler::sema::types::{ScalarKind, Type, TypeId};
 
 use super::entities::{Entities, FieldTarget};
@@ -137,5 +137,40 @@ impl Entities {
             / 4;
         let words = layout::pack(program, f.ty, value, &mut NoHandles);
         self.write_instance(target, at, &words)
+    }
+
+    /// Sets every field of `target`'s instance that holds no asset handle to `inst`'s, which
+    /// must be of the same struct (a kernel holds the types it was compiled with).
+    pub fn set_instance(
+        &mut self,
+        program: &Program,
+        target: FieldTarget,
+        inst: &Instance,
+    ) -> Result<(), SceneError> {
+        let current = self.instance(target)?;
+        if current.struct_id != Some(inst.struct_id) {
+            return Err(SceneError::FieldValue {
+                ty: current
+                    .struct_id
+                    .map_or_else(String::new, |s| program.structs[s].name.clone()),
+                field: "*".into(),
+                expected: "the same struct".into(),
+                problem: format!(
+                    "the new instance is a `{}`; a kernel holds the types it was compiled with, so \
+                     another type needs a recompile",
+                    program.structs[inst.struct_id].name
+                ),
+            });
+        }
+        for (f, v) in program.structs[inst.struct_id]
+            .fields
+            .iter()
+            .zip(&inst.fields)
+        {
+            if !holds_handle(program, f.ty) {
+                self.set_field(program, target, &f.name, v)?;
+            }
+        }
+        Ok(())
     }
 }

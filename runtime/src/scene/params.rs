@@ -76,19 +76,25 @@ impl ParamsBuilder {
         Ok(at)
     }
 
-    /// Packs `inst` (at a 4-word boundary, or where an identical one already is); returns its offset.
-    pub fn push_instance(&mut self, program: &Program, inst: &Instance) -> Result<u32, SceneError> {
+    /// Packs `inst` (at a 4-word boundary, or where an identical one already is); returns its
+    /// offset and its length in words.
+    pub fn push_instance(
+        &mut self,
+        program: &Program,
+        inst: &Instance,
+    ) -> Result<(u32, u32), SceneError> {
         let words = pack_instance(program, inst, &self.mesh_records, &self.texture_records)?;
+        let len = words.len() as u32;
         let key = (inst.struct_id, words);
         if let Some(&at) = self.dedup.get(&key) {
-            return Ok(at);
+            return Ok((at, len));
         }
         let aligned = self.words.len().next_multiple_of(INSTANCE_ALIGN_WORDS);
         self.words.resize(aligned, 0);
         let at = self.offset()?;
         self.words.extend_from_slice(&key.1);
         self.dedup.insert(key, at);
-        Ok(at)
+        Ok((at, len))
     }
 }
 

@@ -31,14 +31,18 @@ use crate::assets::{MeshData, TextureData};
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Stamp(Option<(u64, Option<SystemTime>)>);
 
-/// A file's content hash (0 for data that comes from no file or a file that cannot be read,
-/// which then never matches a stored entry's).
-pub(super) fn content_hash(path: &Path) -> Option<u64> {
+/// The content hash of bytes read from a file.
+fn hash_bytes(bytes: &[u8]) -> u64 {
     use std::hash::{BuildHasher, Hasher};
-    let bytes = std::fs::read(path).ok()?;
     let mut h = foldhash::quality::FixedState::with_seed(0x7274_635f_6173_7365).build_hasher();
-    h.write(&bytes);
-    Some(h.finish())
+    h.write(bytes);
+    h.finish()
+}
+
+/// A file's content hash (`None` for a file that cannot be read, which then never matches a
+/// stored entry's).
+fn content_hash(path: &Path) -> Option<u64> {
+    std::fs::read(path).ok().map(|bytes| hash_bytes(&bytes))
 }
 
 impl Stamp {
@@ -112,6 +116,14 @@ impl Version {
         hash: None,
     };
 
+    /// The version of `bytes`, read from a file whose stamp was `stamp`.
+    pub(super) fn of_bytes(stamp: Stamp, bytes: &[u8]) -> Version {
+        Version {
+            stamp,
+            hash: Some(hash_bytes(bytes)),
+        }
+    }
+
     /// Whether two versions name the same content: equal hashes, or (without a hash) equal
     /// stamps.
     fn same_content(&self, other: &Version) -> bool {
@@ -180,21 +192,16 @@ impl AssetStore {
         hit
     }
 
-    /// Stores a mesh just made (`file`: read from it); returns its version.
+    /// Stores a mesh of `version` (`read`: just read from its file).
     pub(super) fn put_mesh(
         &mut self,
         key: MeshKey,
-        stamp: Stamp,
-        file: Option<&Path>,
+        version: Version,
         data: Arc<MeshData>,
-    ) -> Version {
-        self.counters.meshes_read += u32::from(file.is_some());
-        let version = Version {
-            stamp,
-            hash: file.and_then(content_hash),
-        };
+        read: bool,
+    ) {
+        self.counters.meshes_read += u32::from(read);
         self.meshes.insert(key, Entry { version, data });
-        version
     }
 
     /// The stored mesh of `key` made from a file of `version` (a glTF file's primitive).
@@ -212,11 +219,6 @@ impl AssetStore {
         hit
     }
 
-    /// Stores a mesh made from a file of `version`.
-    pub(super) fn put_derived_mesh(&mut self, key: MeshKey, version: Version, data: Arc<MeshData>) {
-        self.meshes.insert(key, Entry { version, data });
-    }
-
     /// The stored texture of `key` made from a file of `version` (a glTF file's image).
     pub(super) fn derived_texture(
         &mut self,
@@ -232,16 +234,6 @@ impl AssetStore {
         hit
     }
 
-    /// Stores a texture made from a file of `version`.
-    pub(super) fn put_derived_texture(
-        &mut self,
-        key: TextureKey,
-        version: Version,
-        data: Arc<TextureData>,
-    ) {
-        self.textures.insert(key, Entry { version, data });
-    }
-
     /// The stored texture of `key` if still current.
     pub(super) fn texture(
         &mut self,
@@ -254,19 +246,15 @@ impl AssetStore {
         hit
     }
 
-    /// Stores a texture just made (`file`: read from it).
+    /// Stores a texture of `version` (`read`: just read from its file).
     pub(super) fn put_texture(
         &mut self,
         key: TextureKey,
-        stamp: Stamp,
-        file: Option<&Path>,
+        version: Version,
         data: Arc<TextureData>,
+        read: bool,
     ) {
-        self.counters.images_read += u32::from(file.is_some());
-        let version = Version {
-            stamp,
-            hash: file.and_then(content_hash),
-        };
+        self.counters.images_read += u32::from(read);
         self.textures.insert(key, Entry { version, data });
     }
 
@@ -281,20 +269,10 @@ impl AssetStore {
         hit
     }
 
-    /// Stores a glTF file just read; returns its version.
-    pub(super) fn put_model(
-        &mut self,
-        path: PathBuf,
-        stamp: Stamp,
-        data: Arc<ModelScene>,
-    ) -> Version {
+    /// Stores a glTF file just read, of `version`.
+    pub(super) fn put_model(&mut self, path: PathBuf, version: Version, data: Arc<ModelScene>) {
         self.counters.models_read += 1;
-        let version = Version {
-            stamp,
-            hash: content_hash(&path),
-        };
         self.models.insert(path, Entry { version, data });
-        version
     }
 
     /// The object-level BVH of `key` built with `preset` from the mesh of `version`.

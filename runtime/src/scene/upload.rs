@@ -95,19 +95,26 @@ pub struct GpuScene {
     path_bytes: u64,
 }
 
+/// `bindings` once each, with their runtime descriptions, in binding order.
+fn binding_list(
+    bindings: &[&'static abi::BindingDesc],
+) -> Vec<(&'static abi::BindingDesc, BindingDesc)> {
+    let mut list: Vec<(&'static abi::BindingDesc, BindingDesc)> = Vec::new();
+    for &b in bindings {
+        if !list.iter().any(|(have, _)| have.binding == b.binding) {
+            list.push((b, runtime_binding(b)));
+        }
+    }
+    list.sort_by_key(|(b, _)| b.binding);
+    list
+}
+
 impl GpuScene {
     /// Buffers for exactly these bindings (duplicates are kept once), with `gpu`'s limits.
     pub fn new(gpu: &Gpu, bindings: &[&'static abi::BindingDesc]) -> Self {
-        let mut list: Vec<(&'static abi::BindingDesc, BindingDesc)> = Vec::new();
-        for &b in bindings {
-            if !list.iter().any(|(have, _)| have.binding == b.binding) {
-                list.push((b, runtime_binding(b)));
-            }
-        }
-        list.sort_by_key(|(b, _)| b.binding);
         Self {
             buffers: BufferSet::new(gpu, "rtc scene"),
-            bindings: list,
+            bindings: binding_list(bindings),
             path_bytes: 4,
         }
     }
@@ -115,13 +122,7 @@ impl GpuScene {
     /// Makes the set hold exactly `bindings` (a replaced kernel's): buffers of bindings it
     /// keeps stay, with their contents; the others are dropped.
     pub fn rebind(&mut self, bindings: &[&'static abi::BindingDesc]) {
-        let mut list: Vec<(&'static abi::BindingDesc, BindingDesc)> = Vec::new();
-        for &b in bindings {
-            if !list.iter().any(|(have, _)| have.binding == b.binding) {
-                list.push((b, runtime_binding(b)));
-            }
-        }
-        list.sort_by_key(|(b, _)| b.binding);
+        let list = binding_list(bindings);
         for (old, _) in &self.bindings {
             if !list.iter().any(|(b, _)| b.binding == old.binding) {
                 self.buffers.remove(old.binding);
@@ -142,12 +143,7 @@ impl GpuScene {
 
     /// Zeroes the kernel's counters only (between calls that continue an accumulation).
     pub fn clear_counters(&mut self, gpu: &Gpu) -> Result<(), SceneError> {
-        if let Some(b) = abi::binding("counters").filter(|_| self.has("counters")) {
-            if self.buffers.buffer(b.binding).is_some() {
-                self.buffers.clear(gpu, b.binding)?;
-            }
-        }
-        Ok(())
+        self.clear(gpu, &["counters"])
     }
 
     /// Sizes the wavefront model's `paths` binding (one tile's path records) for the next
@@ -178,10 +174,12 @@ impl GpuScene {
 
     /// Uploads what changed for rendering: instances in TLAS order, `accum` sized for `pixels`
     /// pixels (zeroed if new or resized; see [`clear_accumulation`](Self::clear_accumulation)).
+    /// The entities' in-place changes are then cleared ([`Entities::clear_dirty`]): the GPU
+    /// holds them.
     pub fn upload(
         &mut self,
         gpu: &Gpu,
-        entities: &Entities,
+        entities: &mut Entities,
         frame: &FrameUniforms,
         pixels: u64,
     ) -> Result<UploadReport, SceneError> {
@@ -193,7 +191,7 @@ impl GpuScene {
     pub fn upload_for_bounds(
         &mut self,
         gpu: &Gpu,
-        entities: &Entities,
+        entities: &mut Entities,
         frame: &FrameUniforms,
     ) -> Result<UploadReport, SceneError> {
         let entries = 2 * entities.objects().len() as u64;
@@ -203,7 +201,7 @@ impl GpuScene {
     fn write(
         &mut self,
         gpu: &Gpu,
-        entities: &Entities,
+        entities: &mut Entities,
         frame: &FrameUniforms,
         order: InstanceOrder,
         accum_entries: u64,
@@ -290,6 +288,7 @@ impl GpuScene {
             };
             outcomes.push((abi_desc.name, outcome));
         }
+        entities.clear_dirty();
         Ok(UploadReport {
             outcomes,
             stats: self.buffers.stats(),
@@ -299,7 +298,12 @@ impl GpuScene {
     /// Zeroes `accum`, `counters` and the wavefront model's `paths` (before the first pass of a
     /// render).
     pub fn clear_accumulation(&mut self, gpu: &Gpu) -> Result<(), SceneError> {
-        for name in ["accum", "counters", "paths"] {
+        self.clear(gpu, &["accum", "counters", "paths"])
+    }
+
+    /// Zeroes the named bindings that exist.
+    fn clear(&mut self, gpu: &Gpu, names: &[&str]) -> Result<(), SceneError> {
+        for &name in names {
             if let Some(b) = abi::binding(name).filter(|_| self.has(name)) {
                 if self.buffers.buffer(b.binding).is_some() {
                     self.buffers.clear(gpu, b.binding)?;
