@@ -396,6 +396,7 @@ pub fn config_module_with(c: &KernelConfig, debug: Option<super::DebugMode>) -> 
         ("STACK_SIZE", c.stack_size),
         ("TLAS_STACK", c.tlas_stack),
         ("BLAS_STACK", c.blas_stack),
+        ("ROULETTE_DEPTH", c.roulette_depth),
         ("TRAVERSAL_STACK", c.tlas_stack + c.blas_stack),
         ("WORKGROUP_WIDTH", super::RENDER_WORKGROUP[0]),
         ("WORKGROUP_HEIGHT", super::RENDER_WORKGROUP[1]),
@@ -405,6 +406,7 @@ pub fn config_module_with(c: &KernelConfig, debug: Option<super::DebugMode>) -> 
     }
     let b = [
         ("HAS_SECONDARY_RAYS", c.has_secondary_rays),
+        ("PATH_LOOP", c.path_loop),
         ("HAS_ANY_HIT", c.has_any_hit),
         ("HAS_CUSTOM_GEOMETRY", c.has_custom_geometry),
         ("HAS_MESHES", c.has_meshes),

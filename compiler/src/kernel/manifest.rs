@@ -333,12 +333,14 @@ pub fn manifest_json(c: &CompiledScene) -> String {
         ("stack_size", cfg.stack_size),
         ("tlas_stack", cfg.tlas_stack),
         ("blas_stack", cfg.blas_stack),
+        ("roulette_depth", cfg.roulette_depth),
         ("samples_per_pass", c.samples_per_pass),
     ] {
         constants.insert(k, serde_json::json!(v));
     }
     for (k, v) in [
         ("has_secondary_rays", cfg.has_secondary_rays),
+        ("path_loop", cfg.path_loop),
         ("has_any_hit", cfg.has_any_hit),
         ("has_custom_geometry", cfg.has_custom_geometry),
         ("has_meshes", cfg.has_meshes),

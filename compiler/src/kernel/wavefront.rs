@@ -142,10 +142,14 @@ pub fn frame_words(c: &KernelConfig) -> u32 {
 /// `(name, value)`: the constants `rtc:config` declares for `stdlib/kernel/`.
 pub fn config_constants(c: &KernelConfig) -> Vec<(&'static str, u32)> {
     let (frame, frame_words) = frame_layout(c);
-    let frames = if c.has_secondary_rays {
-        c.stack_size * frame_words
+    // A path loop carries its throughput and radiance so far (`PATH_BETA`, `PATH_RADIANCE`,
+    // 3 words each) instead of a stack of frames.
+    let (frames, carried) = if c.path_loop {
+        (0, 3)
+    } else if c.has_secondary_rays {
+        (c.stack_size * frame_words, 0)
     } else {
-        0
+        (0, 0)
     };
     let (mut out, path_words) = layout(&[
         ("PATH_STATUS", 1),
@@ -161,6 +165,8 @@ pub fn config_constants(c: &KernelConfig) -> Vec<(&'static str, u32)> {
         ("PATH_SQ_RECORDED", 1),
         ("PATH_SQ_BITS", 1),
         ("PATH_SQ", SHADOW_QUERIES * QUERY_WORDS),
+        ("PATH_BETA", carried),
+        ("PATH_RADIANCE", carried),
         ("PATH_FRAMES", frames),
     ]);
     out.push(("PATH_WORDS", path_words));
@@ -268,6 +274,10 @@ mod tests {
             without,
             9 + 3 + RAY_WORDS + CANDIDATE_WORDS + SHADOW_QUERIES * QUERY_WORDS
         );
+        // A path loop carries a throughput and a radiance (3 words each) instead of frames.
+        c.has_secondary_rays = true;
+        c.path_loop = true;
+        assert_eq!(path_words(&c), without + 6);
         for stage in STAGES {
             assert_eq!(Stage::from_entry(stage.entry()), Some(stage));
         }

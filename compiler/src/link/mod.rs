@@ -73,6 +73,15 @@ pub struct KernelConfig {
     pub blas_stack: u32,
     /// Some used material has a `@secondary_rays` program (and `max_depth > 0`).
     pub has_secondary_rays: bool,
+    /// Secondary rays run as an iterative path loop instead of the back-tracking stack: every
+    /// `@secondary_rays` program spawns at most one ray, every such material's `@closest_hit` is
+    /// additive in `secondary` (`ProgramEntry::additive_secondary`), and no material has a
+    /// `@medium`. A hit is then shaded before its ray is traced, and the ray's weight is carried
+    /// as the path's throughput (no frames); the result is the same estimator.
+    pub path_loop: bool,
+    /// With `path_loop`: depth of the first ray Russian roulette may end (the scene's
+    /// `roulette_depth`; 0: never).
+    pub roulette_depth: u32,
     /// Some used material has an `@any_hit` program.
     pub has_any_hit: bool,
     /// Some object has a custom (`@geometry`) geometry.
@@ -96,6 +105,8 @@ impl KernelConfig {
             tlas_stack: MAX_BVH_DEPTH,
             blas_stack: MAX_BVH_DEPTH,
             has_secondary_rays: true,
+            path_loop: false,
+            roulette_depth: 2,
             has_any_hit: true,
             has_custom_geometry: true,
             has_meshes: true,
@@ -342,6 +353,17 @@ pub fn link_again(
     let has_secondary_rays =
         (has(ProgramKind::SecondaryRays) && max_depth > 0) || options.all_programs;
     let max_spawn = spawn_bound.min(desc.settings.max_rays_per_hit).max(1);
+    let has_media = has(ProgramKind::Medium) || options.all_programs;
+    // Every material that spawns rays folds their radiance in additively.
+    let additive = materials.iter().all(|t| {
+        program
+            .program_for(t.struct_id, ProgramKind::SecondaryRays)
+            .is_none()
+            || program
+                .program_for(t.struct_id, ProgramKind::ClosestHit)
+                .is_some_and(|p| p.additive_secondary)
+    });
+    let path_loop = has_secondary_rays && max_spawn == 1 && !has_media && additive;
     let config = KernelConfig {
         max_depth,
         max_spawn,
@@ -349,10 +371,12 @@ pub fn link_again(
         tlas_stack: tlas_stack_bound(desc),
         blas_stack: MAX_BVH_DEPTH,
         has_secondary_rays,
+        path_loop,
+        roulette_depth: desc.settings.roulette_depth,
         has_any_hit: has(ProgramKind::AnyHit) || options.all_programs,
         has_custom_geometry: has_custom || options.all_programs,
         has_meshes: has_meshes || options.all_programs,
-        has_media: has(ProgramKind::Medium) || options.all_programs,
+        has_media,
         has_background: desc.background.is_some() || options.all_programs,
     };
 

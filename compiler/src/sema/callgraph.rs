@@ -15,7 +15,7 @@
 use super::builtins::Builtin;
 use super::consteval::{self, Env};
 use super::error::{CallGraphError, ProgramError, Unbounded};
-use super::hir::{Block, Body, ExprId, ExprKind, FnId, ProgramKind, StmtKind};
+use super::hir::{BinaryOp, Block, Body, ExprId, ExprKind, FnId, LocalId, ProgramKind, StmtKind};
 use super::stmt::const_trip_count;
 use super::{ix, Ctx};
 use crate::source::Span;
@@ -47,6 +47,7 @@ pub(crate) fn analyze(cx: &mut Ctx) {
     let order = order_and_cycles(cx, &edges);
     check_intrinsics(cx, &edges, &intrinsics);
     spawn_bounds(cx, &order);
+    additive_secondaries(cx);
     super::sizes::private_memory(cx, &order, &edges);
     cx.p.fn_order = order;
 }
@@ -342,6 +343,73 @@ fn spawn_bounds(cx: &mut Ctx, order: &[FnId]) {
                     program: program.clone(),
                 });
             }
+        }
+    }
+}
+
+/// Sets `ProgramEntry::additive_secondary` of every `@closest_hit` that takes `secondary`.
+fn additive_secondaries(cx: &mut Ctx) {
+    for i in 0..cx.p.programs.len() {
+        let entry = cx.p.programs[i];
+        if entry.kind != ProgramKind::ClosestHit || !entry.wants_secondary {
+            continue;
+        }
+        let func = &cx.p.functions[entry.func];
+        let Some(&secondary) = func.params.get(3) else {
+            continue;
+        };
+        cx.p.programs[i].additive_secondary = is_additive(func, secondary);
+    }
+}
+
+/// Whether every `return` of `func` is `E + secondary`, `secondary + E` or `secondary`, and those
+/// are the only reads of the local `secondary` (so no `E` reads it).
+fn is_additive(func: &super::hir::Function, secondary: LocalId) -> bool {
+    let reads = |e: ExprId| matches!(func.body.exprs[e].kind, ExprKind::Local(l) if l == secondary);
+    let mut returns = Vec::new();
+    collect_returns(&func.block, &mut returns);
+    let mut matched = 0usize;
+    for r in returns {
+        let Some(e) = r else {
+            return false;
+        };
+        if reads(e) {
+            matched += 1;
+            continue;
+        }
+        match func.body.exprs[e].kind {
+            ExprKind::Binary {
+                op: BinaryOp::Add,
+                lhs,
+                rhs,
+            } if reads(lhs) || reads(rhs) => matched += 1,
+            _ => return false,
+        }
+    }
+    let total = func.body.exprs.iter().filter(|(id, _)| reads(*id)).count();
+    matched > 0 && matched == total
+}
+
+/// The values of every `return` in `b`, nested blocks included.
+fn collect_returns(b: &Block, out: &mut Vec<Option<ExprId>>) {
+    for s in &b.stmts {
+        match &s.kind {
+            StmtKind::Return(v) => out.push(*v),
+            StmtKind::If {
+                then_block,
+                else_block,
+                ..
+            } => {
+                collect_returns(then_block, out);
+                if let Some(e) = else_block {
+                    collect_returns(e, out);
+                }
+            }
+            StmtKind::For { body, .. } | StmtKind::While { body, .. } | StmtKind::Loop { body } => {
+                collect_returns(body, out);
+            }
+            StmtKind::Block(b) => collect_returns(b, out),
+            _ => {}
         }
     }
 }

@@ -690,6 +690,12 @@ pub struct ProgramEntry {
     pub spawn_bound: u32,
     /// For `@closest_hit`: whether it takes the `secondary: vec3f` parameter.
     pub wants_secondary: bool,
+    /// For a `@closest_hit` that takes `secondary`: whether its result is `E + secondary` with `E`
+    /// independent of `secondary` (every `return` is `E + secondary`, `secondary + E` or
+    /// `secondary`, and `secondary` is read nowhere else). The kernel may then shade such a hit
+    /// before its secondary ray is traced and carry the ray's weight as a path throughput
+    /// (`KernelConfig::path_loop`).
+    pub additive_secondary: bool,
 }
 
 impl Program {

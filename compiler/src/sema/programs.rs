@@ -324,6 +324,7 @@ fn check_signature(
         samples,
         spawn_bound: 0,
         wants_secondary: kind == ProgramKind::ClosestHit && alt == 1,
+        additive_secondary: false,
     });
 }
 

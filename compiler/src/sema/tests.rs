@@ -481,3 +481,44 @@ fn the_stdlib_is_typed_and_ordered() {
     }
     assert!(p.programs.len() >= 9);
 }
+
+#[test]
+fn closest_hits_additive_in_secondary_are_recognised() {
+    // `E + secondary`, `secondary + E` and `secondary` on every return are additive; scaling it,
+    // reading it in `E`, passing it on or a return without it are not.
+    let mut src = String::new();
+    let cases = [
+        ("plus", "return m.a + secondary;", true),
+        (
+            "plus_left",
+            "if ray.depth > 0u { return secondary + m.a; } return vec3f(1.0) + secondary;",
+            true,
+        ),
+        ("alone", "return secondary;", true),
+        ("scaled", "return m.a * secondary;", false),
+        ("read_twice", "return secondary.x * m.a + secondary;", false),
+        ("passed", "return id(secondary);", false),
+        (
+            "one_return_without",
+            "if ray.depth > 0u { return m.a; } return m.a + secondary;",
+            false,
+        ),
+        ("let_first", "let s = secondary; return m.a + s;", false),
+    ];
+    src.push_str("fn id(v: vec3f) -> vec3f { return v; }\n");
+    for (name, body, _) in cases {
+        src.push_str(&format!(
+            "@material struct M_{name} {{ a: vec3f = vec3f(0.5) }}
+             @closest_hit fn {name}(m: M_{name}, ray: Ray, hit: Hit, secondary: vec3f) -> vec3f {{ {body} }}\n"
+        ));
+    }
+    let p = program(&src);
+    for (name, _, want) in cases {
+        let entry = p
+            .programs
+            .iter()
+            .find(|e| p.functions[e.func].name == name)
+            .expect("program");
+        assert_eq!(entry.additive_secondary, want, "{name}");
+    }
+}

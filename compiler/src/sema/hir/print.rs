@@ -428,9 +428,14 @@ impl Printer<'_> {
         self.line(&format!("scene {} {{", s.name));
         self.indent += 1;
         let st = &s.settings;
+        let roulette = if st.roulette_depth == super::Settings::default().roulette_depth {
+            String::new()
+        } else {
+            format!("roulette_depth: {}, ", st.roulette_depth)
+        };
         self.line(&format!(
             "settings {{ width: {}, height: {}, samples: {}, max_depth: {}, max_rays_per_hit: {}, \
-             seed: {}, exec: {} }}",
+             {roulette}seed: {}, exec: {} }}",
             st.width, st.height, st.samples, st.max_depth, st.max_rays_per_hit, st.seed, st.exec
         ));
         if let Some(c) = &s.camera {

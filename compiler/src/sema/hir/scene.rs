@@ -33,6 +33,8 @@ pub struct Settings {
     pub max_depth: u32,
     /// Rays one `@secondary_rays` call may spawn.
     pub max_rays_per_hit: u32,
+    /// Depth of the first ray that the path loop's Russian roulette may end (0: never).
+    pub roulette_depth: u32,
     /// Seed of the random numbers.
     pub seed: u32,
     /// The execution model: `EXEC_AUTO` (0), `EXEC_MEGAKERNEL` (1) or `EXEC_WAVEFRONT` (2), the
@@ -52,6 +54,7 @@ impl Default for Settings {
             samples: 1,
             max_depth: 4,
             max_rays_per_hit: 4,
+            roulette_depth: 2,
             seed: 0,
             exec: 0,
             fps: 24,

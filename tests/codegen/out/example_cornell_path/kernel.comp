@@ -114,17 +114,6 @@ struct QuadLight {
     vec3 color;
     float intensity;
 };
-struct Frame {
-    Ray ray;
-    Hit hit;
-    float error;
-    uint slot;
-    vec3 sum;
-    vec3 dirs[1];
-    vec3 weights[1];
-    uint count;
-    uint next;
-};
 const uint WORKGROUP_WIDTH = 8u;
 const uint WORKGROUP_HEIGHT = 8u;
 const uint NO_HIT = 4294967295u;
@@ -152,9 +141,8 @@ const float INV_PI = 0.31830987;
 const uint FLAG_MEDIUM = 4u;
 const uint FLAG_SECONDARY_RAYS = 2u;
 const uint MAX_DEPTH = 6u;
-const uint STACK_SIZE = 6u;
 const float NEE_BOUNCE_LENGTH = 2.0;
-const uint MAX_SPAWN = 1u;
+const uint ROULETTE_DEPTH = 2u;
 const uint RAY_SECONDARY = 1u;
 
 layout(std140, binding = 1) uniform TileParams_block_0Compute { TileParams _group_0_binding_1_cs; };
@@ -187,7 +175,7 @@ vec3 spawn_weights[1] = vec3[1](vec3(0.0));
 
 uint spawn_count = 0u;
 
-layout(std430, binding = 9) buffer type_20_block_7Compute { uint _group_0_binding_9_cs[]; };
+layout(std430, binding = 9) buffer type_19_block_7Compute { uint _group_0_binding_9_cs[]; };
 
 layout(std430, binding = 8) buffer type_10_block_8Compute { vec4 _group_0_binding_8_cs[]; };
 
@@ -385,10 +373,10 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     bool outside = ((((u_1 < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u_1 > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u_1 + v_1) + w);
     float rcp = (1.0 / det);
-    float t_4 = ((((u_1 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
+    float t_3 = ((((u_1 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_8 ? vec3(t_4, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_7 ? vec3(t_3, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
@@ -937,14 +925,14 @@ LightSample quad_light(QuadLight l, vec3 position_2, vec3 normal_2) {
     vec3 to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_2);
     float dist2_ = dot(to_light, to_light);
     float dist_2 = sqrt(dist2_);
-    vec3 dir_6 = (to_light / vec3(max(dist_2, 1e-20)));
-    float cos_light = (-(dot(dir_6, c_6)) / max(area, 1e-30));
+    vec3 dir_7 = (to_light / vec3(max(dist_2, 1e-20)));
+    float cos_light = (-(dot(dir_7, c_6)) / max(area, 1e-30));
     if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
-        return LightSample(dir_6, dist_2, vec3(0.0));
+        return LightSample(dir_7, dist_2, vec3(0.0));
     }
-    float _e41 = shadow_query(position_2, normal_2, dir_6, dist_2);
+    float _e41 = shadow_query(position_2, normal_2, dir_7, dist_2);
     float strength = (((l.intensity * cos_light) * area) / dist2_);
-    return LightSample(dir_6, dist_2, ((l.color * vec3(strength)) * vec3(_e41)));
+    return LightSample(dir_7, dist_2, ((l.color * vec3(strength)) * vec3(_e41)));
 }
 
 LightSample dispatch_light(uint type_id_2, uint offset_6, vec3 position_3, vec3 normal_3) {
@@ -1113,220 +1101,114 @@ vec3 spawn_origin(Hit hit_6, float error_2, vec3 dir_5) {
     return _e5;
 }
 
-vec3 trace(Ray camera_ray) {
-    vec3 radiance_2 = vec3(0.0);
-    float t_2 = 0.0;
-    Frame stack[6] = Frame[6](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
-    uint depth = 0u;
+vec3 trace_path(Ray camera_ray) {
     Ray ray_19 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
-    vec3 value = vec3(0.0);
-    bool have_value = false;
-    Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
-    Candidate s_c = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
-    Hit s_hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
-    float s_error = 0.0;
-    vec3 s_sum = vec3(0.0);
-    bool fresh = false;
-    bool waiting = false;
-    bool pushed = false;
+    vec3 beta = vec3(0.0);
+    vec3 radiance_2 = vec3(0.0);
+    bool spawned = false;
+    vec3 dir_6 = vec3(0.0);
+    vec3 weight_2 = vec3(0.0);
+    ray_19 = camera_ray;
+    beta = vec3(1.0);
+    radiance_2 = vec3(0.0);
+    while(true) {
+        Ray _e8 = ray_19;
+        Candidate _e10 = intersect_scene(_e8, false);
+        if ((_e10.slot == NO_HIT)) {
+            hit_error = 0.0;
+            vec3 _e16 = radiance_2;
+            vec3 _e17 = beta;
+            Ray _e18 = ray_19;
+            vec3 _e19 = miss(_e18);
+            return (_e16 + (_e17 * _e19));
+        }
+        GpuInstance inst_10 = _group_0_binding_3_cs[_e10.slot];
+        Ray _e26 = ray_19;
+        Hit _e27 = finish_hit(_e26, _e10);
+        float error_4 = hit_error;
+        spawned = false;
+        dir_6 = vec3(0.0);
+        weight_2 = vec3(0.0);
+        uint _e44 = ray_19.depth;
+        if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e44 < MAX_DEPTH))) {
+            spawn_count = 0u;
+            Ray _e52 = ray_19;
+            dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e52, _e27);
+            uint _e54 = spawn_count;
+            if ((min(_e54, 1u) > 0u)) {
+                spawned = true;
+                vec3 _e63 = spawn_dirs[0u];
+                dir_6 = _e63;
+                vec3 _e67 = spawn_weights[0u];
+                weight_2 = _e67;
+            }
+        }
+        vec3 _e68 = radiance_2;
+        vec3 _e69 = beta;
+        Ray _e72 = ray_19;
+        vec3 _e75 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e72, _e27, vec3(0.0));
+        radiance_2 = (_e68 + (_e69 * _e75));
+        bool _e78 = spawned;
+        if (!(_e78)) {
+            vec3 _e80 = radiance_2;
+            return _e80;
+        }
+        vec3 _e81 = beta;
+        vec3 _e82 = weight_2;
+        beta = (_e81 * _e82);
+        float _e85 = beta.x;
+        float _e87 = beta.y;
+        float _e89 = beta.z;
+        float q_4 = max(_e85, max(_e87, _e89));
+        if (!((q_4 > 0.0))) {
+            vec3 _e95 = radiance_2;
+            return _e95;
+        }
+        uint _e100 = ray_19.depth;
+        if ((((ROULETTE_DEPTH > 0u) && ((_e100 + 1u) >= ROULETTE_DEPTH)) && (q_4 < 1.0))) {
+            float _e109 = rand_next();
+            if ((_e109 >= q_4)) {
+                vec3 _e111 = radiance_2;
+                return _e111;
+            }
+            vec3 _e112 = beta;
+            beta = (_e112 / vec3(q_4));
+        }
+        vec3 _e115 = dir_6;
+        vec3 _e116 = spawn_origin(_e27, error_4, _e115);
+        vec3 _e118 = dir_6;
+        uint _e120 = F32_INF;
+        uint _e123 = ray_19.depth;
+        uint _e128 = ray_19.medium;
+        ray_19 = Ray(_e116, 0.0, _e118, uintBitsToFloat(_e120), (_e123 + 1u), RAY_SECONDARY, _e128);
+    }
+    return vec3(0.0);
+}
+
+vec3 trace(Ray camera_ray_1) {
     vec3 radiance_3 = vec3(0.0);
-    float t_3 = 0.0;
-    Hit hit_7 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
-    Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
-    uint i_3 = 0u;
-    uint medium = 0u;
+    float t_2 = 0.0;
     if (!(HAS_SECONDARY_RAYS)) {
-        Candidate _e4 = intersect_scene(camera_ray, false);
-        radiance_2 = vec3(0.0);
+        Candidate _e4 = intersect_scene(camera_ray_1, false);
+        radiance_3 = vec3(0.0);
         uint _e9 = F32_INF;
         t_2 = uintBitsToFloat(_e9);
         if ((_e4.slot == NO_HIT)) {
             hit_error = 0.0;
-            vec3 _e17 = miss(camera_ray);
-            radiance_2 = _e17;
+            vec3 _e17 = miss(camera_ray_1);
+            radiance_3 = _e17;
         } else {
-            vec3 _e18 = shade_direct(camera_ray, _e4);
-            radiance_2 = _e18;
+            vec3 _e18 = shade_direct(camera_ray_1, _e4);
+            radiance_3 = _e18;
             t_2 = _e4.t;
         }
         float _e20 = t_2;
-        vec3 _e21 = radiance_2;
-        vec3 _e22 = through_medium(camera_ray, _e20, _e21);
+        vec3 _e21 = radiance_3;
+        vec3 _e22 = through_medium(camera_ray_1, _e20, _e21);
         return _e22;
     }
-    stack = Frame[6](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
-    depth = 0u;
-    ray_19 = camera_ray;
-    value = vec3(0.0);
-    have_value = false;
-    s_ray = camera_ray;
-    uint _e35 = F32_INF;
-    Candidate _e37 = no_candidate(uintBitsToFloat(_e35));
-    s_c = _e37;
-    s_hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), true, 0u, 0u);
-    s_error = 0.0;
-    s_sum = vec3(0.0);
-    fresh = false;
-    waiting = false;
-    while(true) {
-        bool _e62 = have_value;
-        bool _e64 = waiting;
-        if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_19;
-            Candidate _e69 = intersect_scene(_e67, false);
-            s_c = _e69;
-            Ray _e70 = ray_19;
-            s_ray = _e70;
-            s_sum = vec3(0.0);
-            fresh = true;
-            waiting = true;
-        }
-        bool _e75 = waiting;
-        if (_e75) {
-            waiting = false;
-            pushed = false;
-            radiance_3 = vec3(0.0);
-            uint _e83 = F32_INF;
-            t_3 = uintBitsToFloat(_e83);
-            uint _e87 = s_c.slot;
-            if ((_e87 == NO_HIT)) {
-                hit_error = 0.0;
-                Ray _e92 = s_ray;
-                vec3 _e93 = miss(_e92);
-                radiance_3 = _e93;
-            } else {
-                uint _e95 = s_c.slot;
-                GpuInstance inst_10 = _group_0_binding_3_cs[_e95];
-                Hit _e99 = s_hit;
-                hit_7 = _e99;
-                bool _e101 = fresh;
-                if (_e101) {
-                    Ray _e102 = s_ray;
-                    Candidate _e103 = s_c;
-                    Hit _e104 = finish_hit(_e102, _e103);
-                    hit_7 = _e104;
-                    float _e106 = hit_error;
-                    s_error = _e106;
-                } else {
-                    float _e107 = s_error;
-                    hit_error = _e107;
-                }
-                float _e110 = hit_7.t;
-                t_3 = _e110;
-                bool _e111 = fresh;
-                uint _e119 = s_ray.depth;
-                uint _e123 = depth;
-                if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
-                    spawn_count = 0u;
-                    Ray _e131 = s_ray;
-                    Hit _e132 = hit_7;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
-                    uint _e134 = spawn_count;
-                    uint n_12 = min(min(_e134, 1u), MAX_SPAWN);
-                    if ((n_12 > 0u)) {
-                        Ray _e141 = s_ray;
-                        Hit _e142 = hit_7;
-                        float _e143 = s_error;
-                        uint _e145 = s_c.slot;
-                        f = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_12, 0u);
-                        i_3 = 0u;
-                        bool loop_init_3 = true;
-                        while(true) {
-                            if (!loop_init_3) {
-                                uint _e175 = i_3;
-                                i_3 = (_e175 + 1u);
-                            }
-                            loop_init_3 = false;
-                            uint _e155 = i_3;
-                            if ((_e155 >= n_12)) {
-                                break;
-                            }
-                            uint _e158 = i_3;
-                            uint _e162 = i_3;
-                            vec3 _e165 = spawn_dirs[_e162];
-                            f.dirs[min(_e158, 0u)] = _e165;
-                            uint _e167 = i_3;
-                            uint _e171 = i_3;
-                            vec3 _e174 = spawn_weights[_e171];
-                            f.weights[min(_e167, 0u)] = _e174;
-                        }
-                        uint _e178 = depth;
-                        Frame _e182 = f;
-                        stack[min(_e178, 5u)] = _e182;
-                        uint _e183 = depth;
-                        depth = (_e183 + 1u);
-                        pushed = true;
-                    }
-                }
-                bool _e187 = pushed;
-                if (!(_e187)) {
-                    Ray _e191 = s_ray;
-                    Hit _e192 = hit_7;
-                    vec3 _e193 = s_sum;
-                    vec3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
-                    radiance_3 = _e194;
-                }
-            }
-            bool _e195 = pushed;
-            if (!(_e195)) {
-                Ray _e197 = s_ray;
-                float _e198 = t_3;
-                vec3 _e199 = radiance_3;
-                vec3 _e200 = through_medium(_e197, _e198, _e199);
-                value = _e200;
-                have_value = true;
-            }
-        }
-        bool _e202 = have_value;
-        if (_e202) {
-            uint _e203 = depth;
-            if ((_e203 == 0u)) {
-                vec3 _e206 = value;
-                return _e206;
-            }
-            uint _e207 = depth;
-            uint top = (_e207 - 1u);
-            uint _e214 = stack[min(top, 5u)].next;
-            uint child_2 = (_e214 - 1u);
-            vec3 _e221 = stack[min(top, 5u)].sum;
-            vec3 _e229 = stack[min(top, 5u)].weights[min(child_2, 0u)];
-            vec3 _e230 = value;
-            stack[min(top, 5u)].sum = (_e221 + (_e229 * _e230));
-            have_value = false;
-        }
-        uint _e234 = depth;
-        uint top_1 = (_e234 - 1u);
-        uint _e241 = stack[min(top_1, 5u)].next;
-        uint _e246 = stack[min(top_1, 5u)].count;
-        if ((_e241 < _e246)) {
-            uint i_4 = stack[min(top_1, 5u)].next;
-            stack[min(top_1, 5u)].next = (i_4 + 1u);
-            Ray parent = stack[min(top_1, 5u)].ray;
-            Hit hit_9 = stack[min(top_1, 5u)].hit;
-            vec3 dir_7 = stack[min(top_1, 5u)].dirs[min(i_4, 0u)];
-            medium = parent.medium;
-            float _e283 = stack[min(top_1, 5u)].error;
-            vec3 _e284 = spawn_origin(hit_9, _e283, dir_7);
-            uint _e287 = F32_INF;
-            uint _e293 = medium;
-            ray_19 = Ray(_e284, 0.0, dir_7, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
-        } else {
-            Ray _e299 = stack[min(top_1, 5u)].ray;
-            s_ray = _e299;
-            Hit _e304 = stack[min(top_1, 5u)].hit;
-            s_hit = _e304;
-            float _e309 = stack[min(top_1, 5u)].error;
-            s_error = _e309;
-            uint _e315 = stack[min(top_1, 5u)].slot;
-            s_c.slot = _e315;
-            vec3 _e320 = stack[min(top_1, 5u)].sum;
-            s_sum = _e320;
-            fresh = false;
-            waiting = true;
-            depth = top_1;
-        }
-    }
-    return vec3(0.0);
+    vec3 _e23 = trace_path(camera_ray_1);
+    return _e23;
 }
 
 bvec3 is_finite_vec3f(vec3 x_2) {
@@ -1349,13 +1231,13 @@ void render_pixel(uvec2 pixel_3) {
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_1 = 0u;
-    bool loop_init_4 = true;
+    bool loop_init_3 = true;
     while(true) {
-        if (!loop_init_4) {
+        if (!loop_init_3) {
             uint _e46 = s_1;
             s_1 = (_e46 + 1u);
         }
-        loop_init_4 = false;
+        loop_init_3 = false;
         uint _e13 = s_1;
         if ((_e13 >= end_1)) {
             break;

@@ -147,25 +147,6 @@ struct QuadLight {
     float intensity;
 };
 
-struct Frame {
-    Ray ray;
-    Hit hit;
-    float error;
-    uint slot;
-    int _pad4_0;
-    int _pad4_1;
-    float3 sum;
-    int _pad5_0;
-    float3 dirs[1];
-    int _pad6_0;
-    float3 weights[1];
-    int _pad7_0;
-    uint count;
-    uint next;
-    int _end_pad_0;
-    int _end_pad_1;
-};
-
 static const uint WORKGROUP_WIDTH = 8u;
 static const uint WORKGROUP_HEIGHT = 8u;
 static const uint NO_HIT = 4294967295u;
@@ -193,9 +174,8 @@ static const float INV_PI = 0.31830987;
 static const uint FLAG_MEDIUM = 4u;
 static const uint FLAG_SECONDARY_RAYS = 2u;
 static const uint MAX_DEPTH = 6u;
-static const uint STACK_SIZE = 6u;
 static const float NEE_BOUNCE_LENGTH = 2.0;
-static const uint MAX_SPAWN = 1u;
+static const uint ROULETTE_DEPTH = 2u;
 static const uint RAY_SECONDARY = 1u;
 
 cbuffer tile : register(b1) { TileParams tile; }
@@ -496,10 +476,10 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     bool outside = ((((u_1 < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u_1 > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u_1 + v_1) + w);
     float rcp_ = (1.0 / det);
-    float t_4 = ((((u_1 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_4[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
+    float t_3 = ((((u_1 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_4[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_8 ? float3(t_4, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_7 ? float3(t_3, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -859,8 +839,8 @@ Hit finish_hit(Ray ray_6, Candidate c_1)
     float3 _e147 = hit.geometric_normal;
     hit.front_face = (dot(ray_6.dir, _e147) < 0.0);
     Hit _e151 = hit;
-    const Hit hit_9 = _e151;
-    return hit_9;
+    const Hit hit_8 = _e151;
+    return hit_8;
 }
 
 uint medium_at(float3 p_4, uint exclude)
@@ -1202,15 +1182,15 @@ LightSample quad_light(QuadLight l, float3 position_2, float3 normal_2)
     float3 to_light = (((l.corner + (l.edge_u * (_e7.x).xxx)) + (l.edge_v * (_e7.y).xxx)) - position_2);
     float dist2_ = dot(to_light, to_light);
     float dist_2 = sqrt(dist2_);
-    float3 dir_6 = (to_light / (max(dist_2, 1e-20)).xxx);
-    float cos_light = (-(dot(dir_6, c_6)) / max(area, 1e-30));
+    float3 dir_7 = (to_light / (max(dist_2, 1e-20)).xxx);
+    float cos_light = (-(dot(dir_7, c_6)) / max(area, 1e-30));
     if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
-        const LightSample lightsample = ConstructLightSample(dir_6, dist_2, (0.0).xxx);
+        const LightSample lightsample = ConstructLightSample(dir_7, dist_2, (0.0).xxx);
         return lightsample;
     }
-    const float _e41 = shadow_query(position_2, normal_2, dir_6, dist_2);
+    const float _e41 = shadow_query(position_2, normal_2, dir_7, dist_2);
     float strength = (((l.intensity * cos_light) * area) / dist2_);
-    const LightSample lightsample_1 = ConstructLightSample(dir_6, dist_2, ((l.color * (strength).xxx) * (_e41).xxx));
+    const LightSample lightsample_1 = ConstructLightSample(dir_7, dist_2, ((l.color * (strength).xxx) * (_e41).xxx));
     return lightsample_1;
 }
 
@@ -1404,252 +1384,121 @@ float3 spawn_origin(Hit hit_6, float error_2, float3 dir_5)
     return _e5;
 }
 
-Frame ConstructFrame(Ray arg0, Hit arg1, float arg2, uint arg3, float3 arg4, float3 arg5[1], float3 arg6[1], uint arg7, uint arg8) {
-    Frame ret = (Frame)0;
-    ret.ray = arg0;
-    ret.hit = arg1;
-    ret.error = arg2;
-    ret.slot = arg3;
-    ret.sum = arg4;
-    ret.dirs = arg5;
-    ret.weights = arg6;
-    ret.count = arg7;
-    ret.next = arg8;
-    return ret;
-}
-
-typedef Frame ret_ZeroValuearray6_Frame_[6];
-ret_ZeroValuearray6_Frame_ ZeroValuearray6_Frame_() {
-    return (Frame[6])0;
-}
-
-typedef float3 ret_ZeroValuearray1_float3_[1];
-ret_ZeroValuearray1_float3_ ZeroValuearray1_float3_() {
-    return (float3[1])0;
-}
-
-float3 trace(Ray camera_ray)
+float3 trace_path(Ray camera_ray)
 {
-    float3 radiance_2 = (float3)0;
-    float t_2 = (float)0;
-    Frame stack[6] = (Frame[6])0;
-    uint depth = (uint)0;
     Ray ray_19 = (Ray)0;
-    float3 value = (float3)0;
-    bool have_value = (bool)0;
-    Ray s_ray = (Ray)0;
-    Candidate s_c = (Candidate)0;
-    Hit s_hit = (Hit)0;
-    float s_error = (float)0;
-    float3 s_sum = (float3)0;
-    bool fresh = (bool)0;
-    bool waiting = (bool)0;
-    bool pushed = (bool)0;
-    float3 radiance_3 = (float3)0;
-    float t_3 = (float)0;
-    Hit hit_7 = (Hit)0;
-    Frame f = (Frame)0;
-    uint i_3 = (uint)0;
-    uint medium = (uint)0;
+    float3 beta = (float3)0;
+    float3 radiance_2 = (float3)0;
+    bool spawned = (bool)0;
+    float3 dir_6 = (float3)0;
+    float3 weight_2 = (float3)0;
 
-    if (!(HAS_SECONDARY_RAYS)) {
-        const Candidate _e4 = intersect_scene(camera_ray, false);
-        radiance_2 = (0.0).xxx;
-        uint _e9 = F32_INF;
-        t_2 = asfloat(_e9);
-        if ((_e4.slot == NO_HIT)) {
-            hit_error = 0.0;
-            const float3 _e17 = miss(camera_ray);
-            radiance_2 = _e17;
-        } else {
-            const float3 _e18 = shade_direct(camera_ray, _e4);
-            radiance_2 = _e18;
-            t_2 = _e4.t;
-        }
-        float _e20 = t_2;
-        float3 _e21 = radiance_2;
-        const float3 _e22 = through_medium(camera_ray, _e20, _e21);
-        return _e22;
-    }
-    stack = ZeroValuearray6_Frame_();
-    depth = 0u;
     ray_19 = camera_ray;
-    value = (0.0).xxx;
-    have_value = false;
-    s_ray = camera_ray;
-    uint _e35 = F32_INF;
-    const Candidate _e37 = no_candidate(asfloat(_e35));
-    s_c = _e37;
-    s_hit = ConstructHit((0.0).xxx, 0.0, (0.0).xxx, (0.0).xxx, (0.0).xx, true, 0u, 0u);
-    s_error = 0.0;
-    s_sum = (0.0).xxx;
-    fresh = false;
-    waiting = false;
+    beta = (1.0).xxx;
+    radiance_2 = (0.0).xxx;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        bool _e62 = have_value;
-        bool _e64 = waiting;
-        if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_19;
-            const Candidate _e69 = intersect_scene(_e67, false);
-            s_c = _e69;
-            Ray _e70 = ray_19;
-            s_ray = _e70;
-            s_sum = (0.0).xxx;
-            fresh = true;
-            waiting = true;
+        Ray _e8 = ray_19;
+        const Candidate _e10 = intersect_scene(_e8, false);
+        if ((_e10.slot == NO_HIT)) {
+            hit_error = 0.0;
+            float3 _e16 = radiance_2;
+            float3 _e17 = beta;
+            Ray _e18 = ray_19;
+            const float3 _e19 = miss(_e18);
+            return (_e16 + (_e17 * _e19));
         }
-        bool _e75 = waiting;
-        if (_e75) {
-            waiting = false;
-            pushed = false;
-            radiance_3 = (0.0).xxx;
-            uint _e83 = F32_INF;
-            t_3 = asfloat(_e83);
-            uint _e87 = s_c.slot;
-            if ((_e87 == NO_HIT)) {
-                hit_error = 0.0;
-                Ray _e92 = s_ray;
-                const float3 _e93 = miss(_e92);
-                radiance_3 = _e93;
-            } else {
-                uint _e95 = s_c.slot;
-                GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e95*128+0)), asfloat(instances.Load4(_e95*128+16)), asfloat(instances.Load4(_e95*128+32)), asfloat(instances.Load4(_e95*128+48)), asfloat(instances.Load4(_e95*128+64)), asfloat(instances.Load4(_e95*128+80)), asuint(instances.Load(_e95*128+96)), asuint(instances.Load(_e95*128+100)), asuint(instances.Load(_e95*128+104)), asuint(instances.Load(_e95*128+108)), asuint(instances.Load(_e95*128+112)), asuint(instances.Load(_e95*128+116)), asuint(instances.Load(_e95*128+120)), asuint(instances.Load(_e95*128+124)));
-                Hit _e99 = s_hit;
-                hit_7 = _e99;
-                bool _e101 = fresh;
-                if (_e101) {
-                    Ray _e102 = s_ray;
-                    Candidate _e103 = s_c;
-                    const Hit _e104 = finish_hit(_e102, _e103);
-                    hit_7 = _e104;
-                    float _e106 = hit_error;
-                    s_error = _e106;
-                } else {
-                    float _e107 = s_error;
-                    hit_error = _e107;
-                }
-                float _e110 = hit_7.t;
-                t_3 = _e110;
-                bool _e111 = fresh;
-                uint _e119 = s_ray.depth;
-                uint _e123 = depth;
-                if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
-                    spawn_count = 0u;
-                    Ray _e131 = s_ray;
-                    Hit _e132 = hit_7;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
-                    uint _e134 = spawn_count;
-                    uint n_12 = min(min(_e134, 1u), MAX_SPAWN);
-                    if ((n_12 > 0u)) {
-                        Ray _e141 = s_ray;
-                        Hit _e142 = hit_7;
-                        float _e143 = s_error;
-                        uint _e145 = s_c.slot;
-                        f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_12, 0u);
-                        i_3 = 0u;
-                        uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-                        bool loop_init_3 = true;
-                        while(true) {
-                            if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-                            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                            if (!loop_init_3) {
-                                uint _e175 = i_3;
-                                i_3 = (_e175 + 1u);
-                            }
-                            loop_init_3 = false;
-                            uint _e155 = i_3;
-                            if ((_e155 >= n_12)) {
-                                break;
-                            }
-                            uint _e158 = i_3;
-                            uint _e162 = i_3;
-                            float3 _e165 = spawn_dirs[min(uint(_e162), 0u)];
-                            f.dirs[min(uint(min(_e158, 0u)), 0u)] = _e165;
-                            uint _e167 = i_3;
-                            uint _e171 = i_3;
-                            float3 _e174 = spawn_weights[min(uint(_e171), 0u)];
-                            f.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
-                        }
-                        uint _e178 = depth;
-                        Frame _e182 = f;
-                        stack[min(uint(min(_e178, 5u)), 5u)] = _e182;
-                        uint _e183 = depth;
-                        depth = (_e183 + 1u);
-                        pushed = true;
-                    }
-                }
-                bool _e187 = pushed;
-                if (!(_e187)) {
-                    Ray _e191 = s_ray;
-                    Hit _e192 = hit_7;
-                    float3 _e193 = s_sum;
-                    const float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
-                    radiance_3 = _e194;
-                }
-            }
-            bool _e195 = pushed;
-            if (!(_e195)) {
-                Ray _e197 = s_ray;
-                float _e198 = t_3;
-                float3 _e199 = radiance_3;
-                const float3 _e200 = through_medium(_e197, _e198, _e199);
-                value = _e200;
-                have_value = true;
+        GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e10.slot*128+0)), asfloat(instances.Load4(_e10.slot*128+16)), asfloat(instances.Load4(_e10.slot*128+32)), asfloat(instances.Load4(_e10.slot*128+48)), asfloat(instances.Load4(_e10.slot*128+64)), asfloat(instances.Load4(_e10.slot*128+80)), asuint(instances.Load(_e10.slot*128+96)), asuint(instances.Load(_e10.slot*128+100)), asuint(instances.Load(_e10.slot*128+104)), asuint(instances.Load(_e10.slot*128+108)), asuint(instances.Load(_e10.slot*128+112)), asuint(instances.Load(_e10.slot*128+116)), asuint(instances.Load(_e10.slot*128+120)), asuint(instances.Load(_e10.slot*128+124)));
+        Ray _e26 = ray_19;
+        const Hit _e27 = finish_hit(_e26, _e10);
+        float error_4 = hit_error;
+        spawned = false;
+        dir_6 = (0.0).xxx;
+        weight_2 = (0.0).xxx;
+        uint _e44 = ray_19.depth;
+        if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e44 < MAX_DEPTH))) {
+            spawn_count = 0u;
+            Ray _e52 = ray_19;
+            dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e52, _e27);
+            uint _e54 = spawn_count;
+            if ((min(_e54, 1u) > 0u)) {
+                spawned = true;
+                float3 _e63 = spawn_dirs[0u];
+                dir_6 = _e63;
+                float3 _e67 = spawn_weights[0u];
+                weight_2 = _e67;
             }
         }
-        bool _e202 = have_value;
-        if (_e202) {
-            uint _e203 = depth;
-            if ((_e203 == 0u)) {
-                float3 _e206 = value;
-                return _e206;
+        float3 _e68 = radiance_2;
+        float3 _e69 = beta;
+        Ray _e72 = ray_19;
+        const float3 _e75 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e72, _e27, (0.0).xxx);
+        radiance_2 = (_e68 + (_e69 * _e75));
+        bool _e78 = spawned;
+        if (!(_e78)) {
+            float3 _e80 = radiance_2;
+            return _e80;
+        }
+        float3 _e81 = beta;
+        float3 _e82 = weight_2;
+        beta = (_e81 * _e82);
+        float _e85 = beta.x;
+        float _e87 = beta.y;
+        float _e89 = beta.z;
+        float q_4 = max(_e85, max(_e87, _e89));
+        if (!((q_4 > 0.0))) {
+            float3 _e95 = radiance_2;
+            return _e95;
+        }
+        uint _e100 = ray_19.depth;
+        if ((((ROULETTE_DEPTH > 0u) && ((_e100 + 1u) >= ROULETTE_DEPTH)) && (q_4 < 1.0))) {
+            const float _e109 = rand_next();
+            if ((_e109 >= q_4)) {
+                float3 _e111 = radiance_2;
+                return _e111;
             }
-            uint _e207 = depth;
-            uint top = (_e207 - 1u);
-            uint _e214 = stack[min(uint(min(top, 5u)), 5u)].next;
-            uint child_2 = (_e214 - 1u);
-            float3 _e221 = stack[min(uint(min(top, 5u)), 5u)].sum;
-            float3 _e229 = stack[min(uint(min(top, 5u)), 5u)].weights[min(uint(min(child_2, 0u)), 0u)];
-            float3 _e230 = value;
-            stack[min(uint(min(top, 5u)), 5u)].sum = (_e221 + (_e229 * _e230));
-            have_value = false;
+            float3 _e112 = beta;
+            beta = (_e112 / (q_4).xxx);
         }
-        uint _e234 = depth;
-        uint top_1 = (_e234 - 1u);
-        uint _e241 = stack[min(uint(min(top_1, 5u)), 5u)].next;
-        uint _e246 = stack[min(uint(min(top_1, 5u)), 5u)].count;
-        if ((_e241 < _e246)) {
-            uint i_4 = stack[min(uint(min(top_1, 5u)), 5u)].next;
-            stack[min(uint(min(top_1, 5u)), 5u)].next = (i_4 + 1u);
-            Ray parent = stack[min(uint(min(top_1, 5u)), 5u)].ray;
-            Hit hit_10 = stack[min(uint(min(top_1, 5u)), 5u)].hit;
-            float3 dir_7 = stack[min(uint(min(top_1, 5u)), 5u)].dirs[min(uint(min(i_4, 0u)), 0u)];
-            medium = parent.medium;
-            float _e283 = stack[min(uint(min(top_1, 5u)), 5u)].error;
-            const float3 _e284 = spawn_origin(hit_10, _e283, dir_7);
-            uint _e287 = F32_INF;
-            uint _e293 = medium;
-            ray_19 = ConstructRay(_e284, 0.0, dir_7, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
-        } else {
-            Ray _e299 = stack[min(uint(min(top_1, 5u)), 5u)].ray;
-            s_ray = _e299;
-            Hit _e304 = stack[min(uint(min(top_1, 5u)), 5u)].hit;
-            s_hit = _e304;
-            float _e309 = stack[min(uint(min(top_1, 5u)), 5u)].error;
-            s_error = _e309;
-            uint _e315 = stack[min(uint(min(top_1, 5u)), 5u)].slot;
-            s_c.slot = _e315;
-            float3 _e320 = stack[min(uint(min(top_1, 5u)), 5u)].sum;
-            s_sum = _e320;
-            fresh = false;
-            waiting = true;
-            depth = top_1;
-        }
+        float3 _e115 = dir_6;
+        const float3 _e116 = spawn_origin(_e27, error_4, _e115);
+        float3 _e118 = dir_6;
+        uint _e120 = F32_INF;
+        uint _e123 = ray_19.depth;
+        uint _e128 = ray_19.medium;
+        ray_19 = ConstructRay(_e116, 0.0, _e118, asfloat(_e120), (_e123 + 1u), RAY_SECONDARY, _e128);
     }
     return ZeroValuefloat3();
+}
+
+float3 trace(Ray camera_ray_1)
+{
+    float3 radiance_3 = (float3)0;
+    float t_2 = (float)0;
+
+    if (!(HAS_SECONDARY_RAYS)) {
+        const Candidate _e4 = intersect_scene(camera_ray_1, false);
+        radiance_3 = (0.0).xxx;
+        uint _e9 = F32_INF;
+        t_2 = asfloat(_e9);
+        if ((_e4.slot == NO_HIT)) {
+            hit_error = 0.0;
+            const float3 _e17 = miss(camera_ray_1);
+            radiance_3 = _e17;
+        } else {
+            const float3 _e18 = shade_direct(camera_ray_1, _e4);
+            radiance_3 = _e18;
+            t_2 = _e4.t;
+        }
+        float _e20 = t_2;
+        float3 _e21 = radiance_3;
+        const float3 _e22 = through_medium(camera_ray_1, _e20, _e21);
+        return _e22;
+    }
+    const float3 _e23 = trace_path(camera_ray_1);
+    return _e23;
 }
 
 bool3 is_finite_vec3f(float3 x_2)
@@ -1676,16 +1525,16 @@ void render_pixel(uint2 pixel_3)
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_1 = 0u;
-    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-    bool loop_init_4 = true;
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_4) {
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_3) {
             uint _e46 = s_1;
             s_1 = (_e46 + 1u);
         }
-        loop_init_4 = false;
+        loop_init_3 = false;
         uint _e13 = s_1;
         if ((_e13 >= end_1)) {
             break;

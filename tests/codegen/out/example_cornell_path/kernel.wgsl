@@ -123,18 +123,6 @@ struct QuadLight {
     intensity: f32,
 }
 
-struct Frame {
-    ray: Ray,
-    hit: Hit,
-    error: f32,
-    slot: u32,
-    sum: vec3<f32>,
-    dirs: array<vec3<f32>, 1>,
-    weights: array<vec3<f32>, 1>,
-    count: u32,
-    next: u32,
-}
-
 const WORKGROUP_WIDTH: u32 = 8u;
 const WORKGROUP_HEIGHT: u32 = 8u;
 const NO_HIT: u32 = 4294967295u;
@@ -162,9 +150,8 @@ const INV_PI: f32 = 0.31830987f;
 const FLAG_MEDIUM: u32 = 4u;
 const FLAG_SECONDARY_RAYS: u32 = 2u;
 const MAX_DEPTH: u32 = 6u;
-const STACK_SIZE: u32 = 6u;
 const NEE_BOUNCE_LENGTH: f32 = 2f;
-const MAX_SPAWN: u32 = 1u;
+const ROULETTE_DEPTH: u32 = 2u;
 const RAY_SECONDARY: u32 = 1u;
 
 @group(0) @binding(1) 
@@ -390,10 +377,10 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let outside = ((((u_1 < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u_1 > 0f) || (v_1 > 0f)) || (w > 0f)));
     let det = ((u_1 + v_1) + w);
     let rcp = (1f / det);
-    let t_4 = ((((u_1 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
-    let hit_8 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
+    let t_3 = ((((u_1 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    let hit_7 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_1 * rcp), (w * rcp)), hit_8);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_3, (v_1 * rcp), (w * rcp)), hit_7);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -945,14 +932,14 @@ fn quad_light(l: QuadLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> Light
     let to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_2);
     let dist2_ = dot(to_light, to_light);
     let dist_2 = sqrt(dist2_);
-    let dir_6 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
-    let cos_light = (-(dot(dir_6, c_6)) / max(area, 0.000000000000000000000000000001f));
+    let dir_7 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
+    let cos_light = (-(dot(dir_7, c_6)) / max(area, 0.000000000000000000000000000001f));
     if (!((cos_light > 0f)) || !((dist2_ > 0f))) {
-        return LightSample(dir_6, dist_2, vec3(0f));
+        return LightSample(dir_7, dist_2, vec3(0f));
     }
-    let _e41 = shadow_query(position_2, normal_2, dir_6, dist_2);
+    let _e41 = shadow_query(position_2, normal_2, dir_7, dist_2);
     let strength = (((l.intensity * cos_light) * area) / dist2_);
-    return LightSample(dir_6, dist_2, ((l.color * vec3(strength)) * vec3(_e41)));
+    return LightSample(dir_7, dist_2, ((l.color * vec3(strength)) * vec3(_e41)));
 }
 
 fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
@@ -1121,219 +1108,116 @@ fn spawn_origin(hit_6: Hit, error_2: f32, dir_5: vec3<f32>) -> vec3<f32> {
     return _e5;
 }
 
-fn trace(camera_ray: Ray) -> vec3<f32> {
-    var radiance_2: vec3<f32>;
-    var t_2: f32;
-    var stack: array<Frame, 6>;
-    var depth: u32;
+fn trace_path(camera_ray: Ray) -> vec3<f32> {
     var ray_19: Ray;
-    var value: vec3<f32>;
-    var have_value: bool;
-    var s_ray: Ray;
-    var s_c: Candidate;
-    var s_hit: Hit;
-    var s_error: f32;
-    var s_sum: vec3<f32>;
-    var fresh: bool;
-    var waiting: bool;
-    var pushed: bool;
+    var beta: vec3<f32>;
+    var radiance_2: vec3<f32>;
+    var spawned: bool;
+    var dir_6: vec3<f32>;
+    var weight_2: vec3<f32>;
+
+    ray_19 = camera_ray;
+    beta = vec3(1f);
+    radiance_2 = vec3(0f);
+    loop {
+        let _e8 = ray_19;
+        let _e10 = intersect_scene(_e8, false);
+        if (_e10.slot == NO_HIT) {
+            hit_error = 0f;
+            let _e16 = radiance_2;
+            let _e17 = beta;
+            let _e18 = ray_19;
+            let _e19 = miss(_e18);
+            return (_e16 + (_e17 * _e19));
+        }
+        let inst_10 = instances[_e10.slot];
+        let _e26 = ray_19;
+        let _e27 = finish_hit(_e26, _e10);
+        let error_4 = hit_error;
+        spawned = false;
+        dir_6 = vec3(0f);
+        weight_2 = vec3(0f);
+        let _e44 = ray_19.depth;
+        if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e44 < MAX_DEPTH)) {
+            spawn_count = 0u;
+            let _e52 = ray_19;
+            dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e52, _e27);
+            let _e54 = spawn_count;
+            if (min(_e54, 1u) > 0u) {
+                spawned = true;
+                let _e63 = spawn_dirs[0u];
+                dir_6 = _e63;
+                let _e67 = spawn_weights[0u];
+                weight_2 = _e67;
+            }
+        }
+        let _e68 = radiance_2;
+        let _e69 = beta;
+        let _e72 = ray_19;
+        let _e75 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e72, _e27, vec3(0f));
+        radiance_2 = (_e68 + (_e69 * _e75));
+        let _e78 = spawned;
+        if !(_e78) {
+            let _e80 = radiance_2;
+            return _e80;
+        }
+        let _e81 = beta;
+        let _e82 = weight_2;
+        beta = (_e81 * _e82);
+        let _e85 = beta.x;
+        let _e87 = beta.y;
+        let _e89 = beta.z;
+        let q_4 = max(_e85, max(_e87, _e89));
+        if !((q_4 > 0f)) {
+            let _e95 = radiance_2;
+            return _e95;
+        }
+        let _e100 = ray_19.depth;
+        if (((ROULETTE_DEPTH > 0u) && ((_e100 + 1u) >= ROULETTE_DEPTH)) && (q_4 < 1f)) {
+            let _e109 = rand_next();
+            if (_e109 >= q_4) {
+                let _e111 = radiance_2;
+                return _e111;
+            }
+            let _e112 = beta;
+            beta = (_e112 / vec3(q_4));
+        }
+        let _e115 = dir_6;
+        let _e116 = spawn_origin(_e27, error_4, _e115);
+        let _e118 = dir_6;
+        let _e120 = F32_INF;
+        let _e123 = ray_19.depth;
+        let _e128 = ray_19.medium;
+        ray_19 = Ray(_e116, 0f, _e118, bitcast<f32>(_e120), (_e123 + 1u), RAY_SECONDARY, _e128);
+    }
+    return vec3<f32>();
+}
+
+fn trace(camera_ray_1: Ray) -> vec3<f32> {
     var radiance_3: vec3<f32>;
-    var t_3: f32;
-    var hit_7: Hit;
-    var f: Frame;
-    var i_3: u32;
-    var medium: u32;
+    var t_2: f32;
 
     if !(HAS_SECONDARY_RAYS) {
-        let _e4 = intersect_scene(camera_ray, false);
-        radiance_2 = vec3(0f);
+        let _e4 = intersect_scene(camera_ray_1, false);
+        radiance_3 = vec3(0f);
         let _e9 = F32_INF;
         t_2 = bitcast<f32>(_e9);
         if (_e4.slot == NO_HIT) {
             hit_error = 0f;
-            let _e17 = miss(camera_ray);
-            radiance_2 = _e17;
+            let _e17 = miss(camera_ray_1);
+            radiance_3 = _e17;
         } else {
-            let _e18 = shade_direct(camera_ray, _e4);
-            radiance_2 = _e18;
+            let _e18 = shade_direct(camera_ray_1, _e4);
+            radiance_3 = _e18;
             t_2 = _e4.t;
         }
         let _e20 = t_2;
-        let _e21 = radiance_2;
-        let _e22 = through_medium(camera_ray, _e20, _e21);
+        let _e21 = radiance_3;
+        let _e22 = through_medium(camera_ray_1, _e20, _e21);
         return _e22;
     }
-    stack = array<Frame, 6>();
-    depth = 0u;
-    ray_19 = camera_ray;
-    value = vec3(0f);
-    have_value = false;
-    s_ray = camera_ray;
-    let _e35 = F32_INF;
-    let _e37 = no_candidate(bitcast<f32>(_e35));
-    s_c = _e37;
-    s_hit = Hit(vec3(0f), 0f, vec3(0f), vec3(0f), vec2(0f), true, 0u, 0u);
-    s_error = 0f;
-    s_sum = vec3(0f);
-    fresh = false;
-    waiting = false;
-    loop {
-        let _e62 = have_value;
-        let _e64 = waiting;
-        if (!(_e62) && !(_e64)) {
-            let _e67 = ray_19;
-            let _e69 = intersect_scene(_e67, false);
-            s_c = _e69;
-            let _e70 = ray_19;
-            s_ray = _e70;
-            s_sum = vec3(0f);
-            fresh = true;
-            waiting = true;
-        }
-        let _e75 = waiting;
-        if _e75 {
-            waiting = false;
-            pushed = false;
-            radiance_3 = vec3(0f);
-            let _e83 = F32_INF;
-            t_3 = bitcast<f32>(_e83);
-            let _e87 = s_c.slot;
-            if (_e87 == NO_HIT) {
-                hit_error = 0f;
-                let _e92 = s_ray;
-                let _e93 = miss(_e92);
-                radiance_3 = _e93;
-            } else {
-                let _e95 = s_c.slot;
-                let inst_10 = instances[_e95];
-                let _e99 = s_hit;
-                hit_7 = _e99;
-                let _e101 = fresh;
-                if _e101 {
-                    let _e102 = s_ray;
-                    let _e103 = s_c;
-                    let _e104 = finish_hit(_e102, _e103);
-                    hit_7 = _e104;
-                    let _e106 = hit_error;
-                    s_error = _e106;
-                } else {
-                    let _e107 = s_error;
-                    hit_error = _e107;
-                }
-                let _e110 = hit_7.t;
-                t_3 = _e110;
-                let _e111 = fresh;
-                let _e119 = s_ray.depth;
-                let _e123 = depth;
-                if (((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
-                    spawn_count = 0u;
-                    let _e131 = s_ray;
-                    let _e132 = hit_7;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
-                    let _e134 = spawn_count;
-                    let n_12 = min(min(_e134, 1u), MAX_SPAWN);
-                    if (n_12 > 0u) {
-                        let _e141 = s_ray;
-                        let _e142 = hit_7;
-                        let _e143 = s_error;
-                        let _e145 = s_c.slot;
-                        f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_12, 0u);
-                        i_3 = 0u;
-                        loop {
-                            let _e155 = i_3;
-                            if (_e155 >= n_12) {
-                                break;
-                            }
-                            let _e158 = i_3;
-                            let _e162 = i_3;
-                            let _e165 = spawn_dirs[_e162];
-                            f.dirs[min(_e158, 0u)] = _e165;
-                            let _e167 = i_3;
-                            let _e171 = i_3;
-                            let _e174 = spawn_weights[_e171];
-                            f.weights[min(_e167, 0u)] = _e174;
-                            continuing {
-                                let _e175 = i_3;
-                                i_3 = (_e175 + 1u);
-                            }
-                        }
-                        let _e178 = depth;
-                        let _e182 = f;
-                        stack[min(_e178, 5u)] = _e182;
-                        let _e183 = depth;
-                        depth = (_e183 + 1u);
-                        pushed = true;
-                    }
-                }
-                let _e187 = pushed;
-                if !(_e187) {
-                    let _e191 = s_ray;
-                    let _e192 = hit_7;
-                    let _e193 = s_sum;
-                    let _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
-                    radiance_3 = _e194;
-                }
-            }
-            let _e195 = pushed;
-            if !(_e195) {
-                let _e197 = s_ray;
-                let _e198 = t_3;
-                let _e199 = radiance_3;
-                let _e200 = through_medium(_e197, _e198, _e199);
-                value = _e200;
-                have_value = true;
-            }
-        }
-        let _e202 = have_value;
-        if _e202 {
-            let _e203 = depth;
-            if (_e203 == 0u) {
-                let _e206 = value;
-                return _e206;
-            }
-            let _e207 = depth;
-            let top = (_e207 - 1u);
-            let _e214 = stack[min(top, 5u)].next;
-            let child_2 = (_e214 - 1u);
-            let _e221 = stack[min(top, 5u)].sum;
-            let _e229 = stack[min(top, 5u)].weights[min(child_2, 0u)];
-            let _e230 = value;
-            stack[min(top, 5u)].sum = (_e221 + (_e229 * _e230));
-            have_value = false;
-        }
-        let _e234 = depth;
-        let top_1 = (_e234 - 1u);
-        let _e241 = stack[min(top_1, 5u)].next;
-        let _e246 = stack[min(top_1, 5u)].count;
-        if (_e241 < _e246) {
-            let i_4 = stack[min(top_1, 5u)].next;
-            stack[min(top_1, 5u)].next = (i_4 + 1u);
-            let parent = stack[min(top_1, 5u)].ray;
-            let hit_9 = stack[min(top_1, 5u)].hit;
-            let dir_7 = stack[min(top_1, 5u)].dirs[min(i_4, 0u)];
-            medium = parent.medium;
-            let _e283 = stack[min(top_1, 5u)].error;
-            let _e284 = spawn_origin(hit_9, _e283, dir_7);
-            let _e287 = F32_INF;
-            let _e293 = medium;
-            ray_19 = Ray(_e284, 0f, dir_7, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
-        } else {
-            let _e299 = stack[min(top_1, 5u)].ray;
-            s_ray = _e299;
-            let _e304 = stack[min(top_1, 5u)].hit;
-            s_hit = _e304;
-            let _e309 = stack[min(top_1, 5u)].error;
-            s_error = _e309;
-            let _e315 = stack[min(top_1, 5u)].slot;
-            s_c.slot = _e315;
-            let _e320 = stack[min(top_1, 5u)].sum;
-            s_sum = _e320;
-            fresh = false;
-            waiting = true;
-            depth = top_1;
-        }
-    }
-    return vec3<f32>();
+    let _e23 = trace_path(camera_ray_1);
+    return _e23;
 }
 
 fn is_finite_vec3f(x_2: vec3<f32>) -> vec3<bool> {

@@ -146,23 +146,7 @@ struct Mirror {
 struct type_15 {
     metal::float3 inner[1];
 };
-struct Frame {
-    Ray ray;
-    Hit hit;
-    float error;
-    uint slot;
-    char _pad4[8];
-    metal::float3 sum;
-    type_15 dirs;
-    type_15 weights;
-    uint count;
-    uint next;
-    char _pad9[8];
-};
-struct type_16 {
-    Frame inner[3];
-};
-typedef metal::atomic_uint type_19[1];
+typedef metal::atomic_uint type_18[1];
 constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint NO_HIT = 4294967295u;
@@ -190,8 +174,7 @@ constant float INV_PI = 0.31830987;
 constant uint FLAG_MEDIUM = 4u;
 constant uint FLAG_SECONDARY_RAYS = 2u;
 constant uint MAX_DEPTH = 3u;
-constant uint STACK_SIZE = 3u;
-constant uint MAX_SPAWN = 1u;
+constant uint ROULETTE_DEPTH = 2u;
 constant uint RAY_SECONDARY = 1u;
 
 metal::uint2 naga_div(metal::uint2 lhs, metal::uint2 rhs) {
@@ -475,10 +458,10 @@ metal::float3 hit_triangle(
     bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
-    float t_4 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_9 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1);
+    float t_3 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
+    bool hit_8 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_9 ? metal::float3(t_4, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_8 ? metal::float3(t_3, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -1221,15 +1204,15 @@ LightSample point_light(
     float strength = {};
     metal::float3 to_light = l.position - position_2;
     float dist_2 = metal::length(to_light);
-    metal::float3 dir_5 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
+    metal::float3 dir_6 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
     strength = l.intensity / metal::max(dist_2 * dist_2, 0.00000000000000000001);
     if (l.range > 0.0) {
         float _e19 = strength;
         strength = _e19 * (1.0 - metal::smoothstep(l.inner_range, l.range, dist_2));
     }
-    float _e26 = shadow_query(position_2, normal_2, dir_5, dist_2, frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    float _e26 = shadow_query(position_2, normal_2, dir_6, dist_2, frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     float _e28 = strength;
-    return LightSample {dir_5, dist_2, (l.color * metal::float3(_e28)) * metal::float3(_e26)};
+    return LightSample {dir_6, dist_2, (l.color * metal::float3(_e28)) * metal::float3(_e26)};
 }
 
 LightSample dispatch_light(
@@ -1501,9 +1484,10 @@ metal::float3 spawn_origin(
     return _e5;
 }
 
-metal::float3 trace(
+metal::float3 trace_path(
     Ray camera_ray,
     constant FrameUniforms& frame,
+    thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1518,225 +1502,133 @@ metal::float3 trace(
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 radiance_2 = {};
-    float t_2 = {};
-    type_16 stack = {};
-    uint depth = {};
     Ray ray_20 = {};
-    metal::float3 value = {};
-    bool have_value = {};
-    Ray s_ray = {};
-    Candidate s_c = {};
-    Hit s_hit = {};
-    float s_error = {};
-    metal::float3 s_sum = {};
-    bool fresh = {};
-    bool waiting = {};
-    bool pushed = {};
-    metal::float3 radiance_3 = {};
-    float t_3 = {};
-    Hit hit_8 = {};
-    Frame f = {};
-    uint i_3 = {};
-    uint medium = {};
-    if (!(HAS_SECONDARY_RAYS)) {
-        Candidate _e4 = intersect_scene(camera_ray, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        radiance_2 = metal::float3(0.0);
-        uint _e9 = F32_INF;
-        t_2 = as_type<float>(_e9);
-        if (_e4.slot == NO_HIT) {
-            hit_error = 0.0;
-            metal::float3 _e17 = miss(camera_ray, frame, params, _buffer_sizes);
-            radiance_2 = _e17;
-        } else {
-            metal::float3 _e18 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, _buffer_sizes);
-            radiance_2 = _e18;
-            t_2 = _e4.t;
-        }
-        float _e20 = t_2;
-        metal::float3 _e21 = radiance_2;
-        metal::float3 _e22 = through_medium(camera_ray, _e20, _e21, instances, _buffer_sizes);
-        return _e22;
-    }
-    stack = type_16 {};
-    depth = 0u;
+    metal::float3 beta = {};
+    metal::float3 radiance_2 = {};
+    bool spawned = {};
+    metal::float3 dir_5 = {};
+    metal::float3 weight_1 = {};
     ray_20 = camera_ray;
-    value = metal::float3(0.0);
-    have_value = false;
-    s_ray = camera_ray;
-    uint _e35 = F32_INF;
-    Candidate _e37 = no_candidate(as_type<float>(_e35));
-    s_c = _e37;
-    s_hit = Hit {metal::float3(0.0), 0.0, metal::float3(0.0), metal::float3(0.0), metal::float2(0.0), true, {}, 0u, 0u};
-    s_error = 0.0;
-    s_sum = metal::float3(0.0);
-    fresh = false;
-    waiting = false;
+    beta = metal::float3(1.0);
+    radiance_2 = metal::float3(0.0);
     uint2 loop_bound_5 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        bool _e62 = have_value;
-        bool _e64 = waiting;
-        if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_20;
-            Candidate _e69 = intersect_scene(_e67, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-            s_c = _e69;
-            Ray _e70 = ray_20;
-            s_ray = _e70;
-            s_sum = metal::float3(0.0);
-            fresh = true;
-            waiting = true;
+        Ray _e8 = ray_20;
+        Candidate _e10 = intersect_scene(_e8, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        if (_e10.slot == NO_HIT) {
+            hit_error = 0.0;
+            metal::float3 _e16 = radiance_2;
+            metal::float3 _e17 = beta;
+            Ray _e18 = ray_20;
+            metal::float3 _e19 = miss(_e18, frame, params, _buffer_sizes);
+            return _e16 + (_e17 * _e19);
         }
-        bool _e75 = waiting;
-        if (_e75) {
-            waiting = false;
-            pushed = false;
-            radiance_3 = metal::float3(0.0);
-            uint _e83 = F32_INF;
-            t_3 = as_type<float>(_e83);
-            uint _e87 = s_c.slot;
-            if (_e87 == NO_HIT) {
-                hit_error = 0.0;
-                Ray _e92 = s_ray;
-                metal::float3 _e93 = miss(_e92, frame, params, _buffer_sizes);
-                radiance_3 = _e93;
-            } else {
-                uint _e95 = s_c.slot;
-                GpuInstance inst_10 = instances[_e95];
-                Hit _e99 = s_hit;
-                hit_8 = _e99;
-                bool _e101 = fresh;
-                if (_e101) {
-                    Ray _e102 = s_ray;
-                    Candidate _e103 = s_c;
-                    Hit _e104 = finish_hit(_e102, _e103, instances, triangles, hit_error, attributes, _buffer_sizes);
-                    hit_8 = _e104;
-                    float _e106 = hit_error;
-                    s_error = _e106;
-                } else {
-                    float _e107 = s_error;
-                    hit_error = _e107;
-                }
-                float _e110 = hit_8.t;
-                t_3 = _e110;
-                bool _e111 = fresh;
-                uint _e119 = s_ray.depth;
-                uint _e123 = depth;
-                if (((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
-                    spawn_count = 0u;
-                    Ray _e131 = s_ray;
-                    Hit _e132 = hit_8;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-                    uint _e134 = spawn_count;
-                    uint n_8 = metal::min(metal::min(_e134, 1u), MAX_SPAWN);
-                    if (n_8 > 0u) {
-                        Ray _e141 = s_ray;
-                        Hit _e142 = hit_8;
-                        float _e143 = s_error;
-                        uint _e145 = s_c.slot;
-                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_8, 0u};
-                        i_3 = 0u;
-                        uint2 loop_bound_6 = uint2(4294967295u);
-                        bool loop_init_3 = true;
-                        while(true) {
-                            if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-                            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-                            if (!loop_init_3) {
-                                uint _e175 = i_3;
-                                i_3 = _e175 + 1u;
-                            }
-                            loop_init_3 = false;
-                            uint _e155 = i_3;
-                            if (_e155 >= n_8) {
-                                break;
-                            }
-                            uint _e158 = i_3;
-                            uint _e162 = i_3;
-                            metal::float3 _e165 = spawn_dirs.inner[_e162];
-                            f.dirs.inner[metal::min(_e158, 0u)] = _e165;
-                            uint _e167 = i_3;
-                            uint _e171 = i_3;
-                            metal::float3 _e174 = spawn_weights.inner[_e171];
-                            f.weights.inner[metal::min(_e167, 0u)] = _e174;
-                        }
-                        uint _e178 = depth;
-                        Frame _e182 = f;
-                        stack.inner[metal::min(_e178, 2u)] = _e182;
-                        uint _e183 = depth;
-                        depth = _e183 + 1u;
-                        pushed = true;
-                    }
-                }
-                bool _e187 = pushed;
-                if (!(_e187)) {
-                    Ray _e191 = s_ray;
-                    Hit _e192 = hit_8;
-                    metal::float3 _e193 = s_sum;
-                    metal::float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
-                    radiance_3 = _e194;
-                }
-            }
-            bool _e195 = pushed;
-            if (!(_e195)) {
-                Ray _e197 = s_ray;
-                float _e198 = t_3;
-                metal::float3 _e199 = radiance_3;
-                metal::float3 _e200 = through_medium(_e197, _e198, _e199, instances, _buffer_sizes);
-                value = _e200;
-                have_value = true;
+        GpuInstance inst_10 = instances[_e10.slot];
+        Ray _e26 = ray_20;
+        Hit _e27 = finish_hit(_e26, _e10, instances, triangles, hit_error, attributes, _buffer_sizes);
+        float error_4 = hit_error;
+        spawned = false;
+        dir_5 = metal::float3(0.0);
+        weight_1 = metal::float3(0.0);
+        uint _e44 = ray_20.depth;
+        if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e44 < MAX_DEPTH)) {
+            spawn_count = 0u;
+            Ray _e52 = ray_20;
+            dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e52, _e27, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+            uint _e54 = spawn_count;
+            if (metal::min(_e54, 1u) > 0u) {
+                spawned = true;
+                metal::float3 _e63 = spawn_dirs.inner[0u];
+                dir_5 = _e63;
+                metal::float3 _e67 = spawn_weights.inner[0u];
+                weight_1 = _e67;
             }
         }
-        bool _e202 = have_value;
-        if (_e202) {
-            uint _e203 = depth;
-            if (_e203 == 0u) {
-                metal::float3 _e206 = value;
-                return _e206;
+        metal::float3 _e68 = radiance_2;
+        metal::float3 _e69 = beta;
+        Ray _e72 = ray_20;
+        metal::float3 _e75 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e72, _e27, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+        radiance_2 = _e68 + (_e69 * _e75);
+        bool _e78 = spawned;
+        if (!(_e78)) {
+            metal::float3 _e80 = radiance_2;
+            return _e80;
+        }
+        metal::float3 _e81 = beta;
+        metal::float3 _e82 = weight_1;
+        beta = _e81 * _e82;
+        float _e85 = beta.x;
+        float _e87 = beta.y;
+        float _e89 = beta.z;
+        float q_3 = metal::max(_e85, metal::max(_e87, _e89));
+        if (!((q_3 > 0.0))) {
+            metal::float3 _e95 = radiance_2;
+            return _e95;
+        }
+        uint _e100 = ray_20.depth;
+        if (((ROULETTE_DEPTH > 0u) && ((_e100 + 1u) >= ROULETTE_DEPTH)) && (q_3 < 1.0)) {
+            float _e109 = rand_next(rng_state);
+            if (_e109 >= q_3) {
+                metal::float3 _e111 = radiance_2;
+                return _e111;
             }
-            uint _e207 = depth;
-            uint top = _e207 - 1u;
-            uint _e214 = stack.inner[metal::min(top, 2u)].next;
-            uint child_2 = _e214 - 1u;
-            metal::float3 _e221 = stack.inner[metal::min(top, 2u)].sum;
-            metal::float3 _e229 = stack.inner[metal::min(top, 2u)].weights.inner[metal::min(child_2, 0u)];
-            metal::float3 _e230 = value;
-            stack.inner[metal::min(top, 2u)].sum = _e221 + (_e229 * _e230);
-            have_value = false;
+            metal::float3 _e112 = beta;
+            beta = _e112 / metal::float3(q_3);
         }
-        uint _e234 = depth;
-        uint top_1 = _e234 - 1u;
-        uint _e241 = stack.inner[metal::min(top_1, 2u)].next;
-        uint _e246 = stack.inner[metal::min(top_1, 2u)].count;
-        if (_e241 < _e246) {
-            uint i_4 = stack.inner[metal::min(top_1, 2u)].next;
-            stack.inner[metal::min(top_1, 2u)].next = i_4 + 1u;
-            Ray parent = stack.inner[metal::min(top_1, 2u)].ray;
-            Hit hit_10 = stack.inner[metal::min(top_1, 2u)].hit;
-            metal::float3 dir_6 = stack.inner[metal::min(top_1, 2u)].dirs.inner[metal::min(i_4, 0u)];
-            medium = parent.medium;
-            float _e283 = stack.inner[metal::min(top_1, 2u)].error;
-            metal::float3 _e284 = spawn_origin(hit_10, _e283, dir_6);
-            uint _e287 = F32_INF;
-            uint _e293 = medium;
-            ray_20 = Ray {_e284, 0.0, dir_6, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
-        } else {
-            Ray _e299 = stack.inner[metal::min(top_1, 2u)].ray;
-            s_ray = _e299;
-            Hit _e304 = stack.inner[metal::min(top_1, 2u)].hit;
-            s_hit = _e304;
-            float _e309 = stack.inner[metal::min(top_1, 2u)].error;
-            s_error = _e309;
-            uint _e315 = stack.inner[metal::min(top_1, 2u)].slot;
-            s_c.slot = _e315;
-            metal::float3 _e320 = stack.inner[metal::min(top_1, 2u)].sum;
-            s_sum = _e320;
-            fresh = false;
-            waiting = true;
-            depth = top_1;
-        }
+        metal::float3 _e115 = dir_5;
+        metal::float3 _e116 = spawn_origin(_e27, error_4, _e115);
+        metal::float3 _e118 = dir_5;
+        uint _e120 = F32_INF;
+        uint _e123 = ray_20.depth;
+        uint _e128 = ray_20.medium;
+        ray_20 = Ray {_e116, 0.0, _e118, as_type<float>(_e120), _e123 + 1u, RAY_SECONDARY, _e128};
     }
     return metal::float3 {};
+}
+
+metal::float3 trace(
+    Ray camera_ray_1,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    device type_14 const& attributes,
+    thread uint& ray_count,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
+    thread uint& spawn_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 radiance_3 = {};
+    float t_2 = {};
+    if (!(HAS_SECONDARY_RAYS)) {
+        Candidate _e4 = intersect_scene(camera_ray_1, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        radiance_3 = metal::float3(0.0);
+        uint _e9 = F32_INF;
+        t_2 = as_type<float>(_e9);
+        if (_e4.slot == NO_HIT) {
+            hit_error = 0.0;
+            metal::float3 _e17 = miss(camera_ray_1, frame, params, _buffer_sizes);
+            radiance_3 = _e17;
+        } else {
+            metal::float3 _e18 = shade_direct(camera_ray_1, _e4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, _buffer_sizes);
+            radiance_3 = _e18;
+            t_2 = _e4.t;
+        }
+        float _e20 = t_2;
+        metal::float3 _e21 = radiance_3;
+        metal::float3 _e22 = through_medium(camera_ray_1, _e20, _e21, instances, _buffer_sizes);
+        return _e22;
+    }
+    metal::float3 _e23 = trace_path(camera_ray_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+    return _e23;
 }
 
 metal::bool3 is_finite_vec3f(
@@ -1769,7 +1661,7 @@ void render_pixel(
     thread type_15& spawn_dirs,
     thread type_15& spawn_weights,
     thread uint& spawn_count,
-    device type_19& counters,
+    device type_18& counters,
     device type_10& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1783,16 +1675,16 @@ void render_pixel(
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_1 = 0u;
-    uint2 loop_bound_7 = uint2(4294967295u);
-    bool loop_init_4 = true;
+    uint2 loop_bound_6 = uint2(4294967295u);
+    bool loop_init_3 = true;
     while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_4) {
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (!loop_init_3) {
             uint _e46 = s_1;
             s_1 = _e46 + 1u;
         }
-        loop_init_4 = false;
+        loop_init_3 = false;
         uint _e13 = s_1;
         if (_e13 >= end_1) {
             break;
@@ -1808,7 +1700,7 @@ void render_pixel(
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
         ray_21.medium = _e33;
         Ray _e34 = ray_21;
-        metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {
             metal::float3 _e38 = sum;
@@ -1855,7 +1747,7 @@ void render_invocation(
     thread type_15& spawn_dirs,
     thread type_15& spawn_weights,
     thread uint& spawn_count,
-    device type_19& counters,
+    device type_18& counters,
     device type_10& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1879,7 +1771,7 @@ struct renderInput {
 , device type_9 const& nodes [[buffer(2)]]
 , device type_10 const& triangles [[buffer(4)]]
 , device type_14 const& attributes [[buffer(5)]]
-, device type_19& counters [[buffer(9)]]
+, device type_18& counters [[buffer(9)]]
 , device type_10& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {

@@ -130,17 +130,6 @@ struct UnlitTexture {
     vec2 uv_scale;
     uint planar;
 };
-struct Frame {
-    Ray ray;
-    Hit hit;
-    float error;
-    uint slot;
-    vec3 sum;
-    vec3 dirs[1];
-    vec3 weights[1];
-    uint count;
-    uint next;
-};
 const uint WORKGROUP_WIDTH = 8u;
 const uint WORKGROUP_HEIGHT = 8u;
 const uint NO_HIT = 4294967295u;
@@ -170,8 +159,7 @@ const uint RAY_SHADOW = 2u;
 const uint FLAG_MEDIUM = 4u;
 const uint FLAG_SECONDARY_RAYS = 2u;
 const uint MAX_DEPTH = 3u;
-const uint STACK_SIZE = 3u;
-const uint MAX_SPAWN = 1u;
+const uint ROULETTE_DEPTH = 2u;
 const uint RAY_SECONDARY = 1u;
 
 layout(std140, binding = 1) uniform TileParams_block_0Compute { TileParams _group_0_binding_1_cs; };
@@ -206,7 +194,7 @@ vec3 spawn_weights[1] = vec3[1](vec3(0.0));
 
 uint spawn_count = 0u;
 
-layout(std430, binding = 9) buffer type_20_block_8Compute { uint _group_0_binding_9_cs[]; };
+layout(std430, binding = 9) buffer type_19_block_8Compute { uint _group_0_binding_9_cs[]; };
 
 layout(std430, binding = 8) buffer type_10_block_9Compute { vec4 _group_0_binding_8_cs[]; };
 
@@ -404,10 +392,10 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
-    float t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_11 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
+    float t_5 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_11 ? vec3(t_6, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_10 ? vec3(t_5, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
@@ -946,10 +934,10 @@ vec4 sample_texture(uint t_1, vec2 uv) {
     uint _e14 = _group_0_binding_6_cs[(t_1 + 2u)];
     float h_3 = float(max(_e14, 1u));
     vec2 p_7 = ((uv * vec2(w_4, h_3)) - vec2(0.5));
-    vec2 f_1 = floor(p_7);
-    vec2 fr = (p_7 - f_1);
-    int _e26 = i32_from_f32_(f_1.x);
-    int _e28 = i32_from_f32_(f_1.y);
+    vec2 f = floor(p_7);
+    vec2 fr = (p_7 - f);
+    int _e26 = i32_from_f32_(f.x);
+    int _e28 = i32_from_f32_(f.y);
     vec4 _e29 = texel_at(t_1, _e26, _e28);
     vec4 _e32 = texel_at(t_1, (_e26 + 1), _e28);
     vec4 a_7 = mix(_e29, _e32, vec4(fr.x));
@@ -1031,15 +1019,15 @@ LightSample point_light(PointLight l, vec3 position_2, vec3 normal_2) {
     float strength = 0.0;
     vec3 to_light = (l.position - position_2);
     float dist_2 = length(to_light);
-    vec3 dir_5 = (to_light / vec3(max(dist_2, 1e-20)));
+    vec3 dir_6 = (to_light / vec3(max(dist_2, 1e-20)));
     strength = (l.intensity / max((dist_2 * dist_2), 1e-20));
     if ((l.range > 0.0)) {
         float _e19 = strength;
         strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_2)));
     }
-    float _e26 = shadow_query(position_2, normal_2, dir_5, dist_2);
+    float _e26 = shadow_query(position_2, normal_2, dir_6, dist_2);
     float _e28 = strength;
-    return LightSample(dir_5, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)));
+    return LightSample(dir_6, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)));
 }
 
 LightSample dispatch_light(uint type_id_2, uint offset_6, vec3 position_3, vec3 normal_3) {
@@ -1257,220 +1245,114 @@ vec3 spawn_origin(Hit hit_9, float error_2, vec3 dir_4) {
     return _e5;
 }
 
-vec3 trace(Ray camera_ray) {
-    vec3 radiance_2 = vec3(0.0);
-    float t_4 = 0.0;
-    Frame stack[3] = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
-    uint depth = 0u;
+vec3 trace_path(Ray camera_ray) {
     Ray ray_22 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
-    vec3 value = vec3(0.0);
-    bool have_value = false;
-    Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
-    Candidate s_c = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
-    Hit s_hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
-    float s_error = 0.0;
-    vec3 s_sum = vec3(0.0);
-    bool fresh = false;
-    bool waiting = false;
-    bool pushed = false;
+    vec3 beta = vec3(0.0);
+    vec3 radiance_2 = vec3(0.0);
+    bool spawned = false;
+    vec3 dir_5 = vec3(0.0);
+    vec3 weight_1 = vec3(0.0);
+    ray_22 = camera_ray;
+    beta = vec3(1.0);
+    radiance_2 = vec3(0.0);
+    while(true) {
+        Ray _e8 = ray_22;
+        Candidate _e10 = intersect_scene(_e8, false);
+        if ((_e10.slot == NO_HIT)) {
+            hit_error = 0.0;
+            vec3 _e16 = radiance_2;
+            vec3 _e17 = beta;
+            Ray _e18 = ray_22;
+            vec3 _e19 = miss(_e18);
+            return (_e16 + (_e17 * _e19));
+        }
+        GpuInstance inst_10 = _group_0_binding_3_cs[_e10.slot];
+        Ray _e26 = ray_22;
+        Hit _e27 = finish_hit(_e26, _e10);
+        float error_4 = hit_error;
+        spawned = false;
+        dir_5 = vec3(0.0);
+        weight_1 = vec3(0.0);
+        uint _e44 = ray_22.depth;
+        if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e44 < MAX_DEPTH))) {
+            spawn_count = 0u;
+            Ray _e52 = ray_22;
+            dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e52, _e27);
+            uint _e54 = spawn_count;
+            if ((min(_e54, 1u) > 0u)) {
+                spawned = true;
+                vec3 _e63 = spawn_dirs[0u];
+                dir_5 = _e63;
+                vec3 _e67 = spawn_weights[0u];
+                weight_1 = _e67;
+            }
+        }
+        vec3 _e68 = radiance_2;
+        vec3 _e69 = beta;
+        Ray _e72 = ray_22;
+        vec3 _e75 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e72, _e27, vec3(0.0));
+        radiance_2 = (_e68 + (_e69 * _e75));
+        bool _e78 = spawned;
+        if (!(_e78)) {
+            vec3 _e80 = radiance_2;
+            return _e80;
+        }
+        vec3 _e81 = beta;
+        vec3 _e82 = weight_1;
+        beta = (_e81 * _e82);
+        float _e85 = beta.x;
+        float _e87 = beta.y;
+        float _e89 = beta.z;
+        float q_3 = max(_e85, max(_e87, _e89));
+        if (!((q_3 > 0.0))) {
+            vec3 _e95 = radiance_2;
+            return _e95;
+        }
+        uint _e100 = ray_22.depth;
+        if ((((ROULETTE_DEPTH > 0u) && ((_e100 + 1u) >= ROULETTE_DEPTH)) && (q_3 < 1.0))) {
+            float _e109 = rand_next();
+            if ((_e109 >= q_3)) {
+                vec3 _e111 = radiance_2;
+                return _e111;
+            }
+            vec3 _e112 = beta;
+            beta = (_e112 / vec3(q_3));
+        }
+        vec3 _e115 = dir_5;
+        vec3 _e116 = spawn_origin(_e27, error_4, _e115);
+        vec3 _e118 = dir_5;
+        uint _e120 = F32_INF;
+        uint _e123 = ray_22.depth;
+        uint _e128 = ray_22.medium;
+        ray_22 = Ray(_e116, 0.0, _e118, uintBitsToFloat(_e120), (_e123 + 1u), RAY_SECONDARY, _e128);
+    }
+    return vec3(0.0);
+}
+
+vec3 trace(Ray camera_ray_1) {
     vec3 radiance_3 = vec3(0.0);
-    float t_5 = 0.0;
-    Hit hit_10 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
-    Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
-    uint i_4 = 0u;
-    uint medium = 0u;
+    float t_4 = 0.0;
     if (!(HAS_SECONDARY_RAYS)) {
-        Candidate _e4 = intersect_scene(camera_ray, false);
-        radiance_2 = vec3(0.0);
+        Candidate _e4 = intersect_scene(camera_ray_1, false);
+        radiance_3 = vec3(0.0);
         uint _e9 = F32_INF;
         t_4 = uintBitsToFloat(_e9);
         if ((_e4.slot == NO_HIT)) {
             hit_error = 0.0;
-            vec3 _e17 = miss(camera_ray);
-            radiance_2 = _e17;
+            vec3 _e17 = miss(camera_ray_1);
+            radiance_3 = _e17;
         } else {
-            vec3 _e18 = shade_direct(camera_ray, _e4);
-            radiance_2 = _e18;
+            vec3 _e18 = shade_direct(camera_ray_1, _e4);
+            radiance_3 = _e18;
             t_4 = _e4.t;
         }
         float _e20 = t_4;
-        vec3 _e21 = radiance_2;
-        vec3 _e22 = through_medium(camera_ray, _e20, _e21);
+        vec3 _e21 = radiance_3;
+        vec3 _e22 = through_medium(camera_ray_1, _e20, _e21);
         return _e22;
     }
-    stack = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
-    depth = 0u;
-    ray_22 = camera_ray;
-    value = vec3(0.0);
-    have_value = false;
-    s_ray = camera_ray;
-    uint _e35 = F32_INF;
-    Candidate _e37 = no_candidate(uintBitsToFloat(_e35));
-    s_c = _e37;
-    s_hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), true, 0u, 0u);
-    s_error = 0.0;
-    s_sum = vec3(0.0);
-    fresh = false;
-    waiting = false;
-    while(true) {
-        bool _e62 = have_value;
-        bool _e64 = waiting;
-        if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_22;
-            Candidate _e69 = intersect_scene(_e67, false);
-            s_c = _e69;
-            Ray _e70 = ray_22;
-            s_ray = _e70;
-            s_sum = vec3(0.0);
-            fresh = true;
-            waiting = true;
-        }
-        bool _e75 = waiting;
-        if (_e75) {
-            waiting = false;
-            pushed = false;
-            radiance_3 = vec3(0.0);
-            uint _e83 = F32_INF;
-            t_5 = uintBitsToFloat(_e83);
-            uint _e87 = s_c.slot;
-            if ((_e87 == NO_HIT)) {
-                hit_error = 0.0;
-                Ray _e92 = s_ray;
-                vec3 _e93 = miss(_e92);
-                radiance_3 = _e93;
-            } else {
-                uint _e95 = s_c.slot;
-                GpuInstance inst_10 = _group_0_binding_3_cs[_e95];
-                Hit _e99 = s_hit;
-                hit_10 = _e99;
-                bool _e101 = fresh;
-                if (_e101) {
-                    Ray _e102 = s_ray;
-                    Candidate _e103 = s_c;
-                    Hit _e104 = finish_hit(_e102, _e103);
-                    hit_10 = _e104;
-                    float _e106 = hit_error;
-                    s_error = _e106;
-                } else {
-                    float _e107 = s_error;
-                    hit_error = _e107;
-                }
-                float _e110 = hit_10.t;
-                t_5 = _e110;
-                bool _e111 = fresh;
-                uint _e119 = s_ray.depth;
-                uint _e123 = depth;
-                if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
-                    spawn_count = 0u;
-                    Ray _e131 = s_ray;
-                    Hit _e132 = hit_10;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
-                    uint _e134 = spawn_count;
-                    uint n_8 = min(min(_e134, 1u), MAX_SPAWN);
-                    if ((n_8 > 0u)) {
-                        Ray _e141 = s_ray;
-                        Hit _e142 = hit_10;
-                        float _e143 = s_error;
-                        uint _e145 = s_c.slot;
-                        f = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_8, 0u);
-                        i_4 = 0u;
-                        bool loop_init_4 = true;
-                        while(true) {
-                            if (!loop_init_4) {
-                                uint _e175 = i_4;
-                                i_4 = (_e175 + 1u);
-                            }
-                            loop_init_4 = false;
-                            uint _e155 = i_4;
-                            if ((_e155 >= n_8)) {
-                                break;
-                            }
-                            uint _e158 = i_4;
-                            uint _e162 = i_4;
-                            vec3 _e165 = spawn_dirs[_e162];
-                            f.dirs[min(_e158, 0u)] = _e165;
-                            uint _e167 = i_4;
-                            uint _e171 = i_4;
-                            vec3 _e174 = spawn_weights[_e171];
-                            f.weights[min(_e167, 0u)] = _e174;
-                        }
-                        uint _e178 = depth;
-                        Frame _e182 = f;
-                        stack[min(_e178, 2u)] = _e182;
-                        uint _e183 = depth;
-                        depth = (_e183 + 1u);
-                        pushed = true;
-                    }
-                }
-                bool _e187 = pushed;
-                if (!(_e187)) {
-                    Ray _e191 = s_ray;
-                    Hit _e192 = hit_10;
-                    vec3 _e193 = s_sum;
-                    vec3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
-                    radiance_3 = _e194;
-                }
-            }
-            bool _e195 = pushed;
-            if (!(_e195)) {
-                Ray _e197 = s_ray;
-                float _e198 = t_5;
-                vec3 _e199 = radiance_3;
-                vec3 _e200 = through_medium(_e197, _e198, _e199);
-                value = _e200;
-                have_value = true;
-            }
-        }
-        bool _e202 = have_value;
-        if (_e202) {
-            uint _e203 = depth;
-            if ((_e203 == 0u)) {
-                vec3 _e206 = value;
-                return _e206;
-            }
-            uint _e207 = depth;
-            uint top = (_e207 - 1u);
-            uint _e214 = stack[min(top, 2u)].next;
-            uint child_2 = (_e214 - 1u);
-            vec3 _e221 = stack[min(top, 2u)].sum;
-            vec3 _e229 = stack[min(top, 2u)].weights[min(child_2, 0u)];
-            vec3 _e230 = value;
-            stack[min(top, 2u)].sum = (_e221 + (_e229 * _e230));
-            have_value = false;
-        }
-        uint _e234 = depth;
-        uint top_1 = (_e234 - 1u);
-        uint _e241 = stack[min(top_1, 2u)].next;
-        uint _e246 = stack[min(top_1, 2u)].count;
-        if ((_e241 < _e246)) {
-            uint i_5 = stack[min(top_1, 2u)].next;
-            stack[min(top_1, 2u)].next = (i_5 + 1u);
-            Ray parent = stack[min(top_1, 2u)].ray;
-            Hit hit_12 = stack[min(top_1, 2u)].hit;
-            vec3 dir_6 = stack[min(top_1, 2u)].dirs[min(i_5, 0u)];
-            medium = parent.medium;
-            float _e283 = stack[min(top_1, 2u)].error;
-            vec3 _e284 = spawn_origin(hit_12, _e283, dir_6);
-            uint _e287 = F32_INF;
-            uint _e293 = medium;
-            ray_22 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
-        } else {
-            Ray _e299 = stack[min(top_1, 2u)].ray;
-            s_ray = _e299;
-            Hit _e304 = stack[min(top_1, 2u)].hit;
-            s_hit = _e304;
-            float _e309 = stack[min(top_1, 2u)].error;
-            s_error = _e309;
-            uint _e315 = stack[min(top_1, 2u)].slot;
-            s_c.slot = _e315;
-            vec3 _e320 = stack[min(top_1, 2u)].sum;
-            s_sum = _e320;
-            fresh = false;
-            waiting = true;
-            depth = top_1;
-        }
-    }
-    return vec3(0.0);
+    vec3 _e23 = trace_path(camera_ray_1);
+    return _e23;
 }
 
 bvec3 is_finite_vec3f(vec3 x_4) {
@@ -1493,13 +1375,13 @@ void render_pixel(uvec2 pixel_3) {
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_1 = 0u;
-    bool loop_init_5 = true;
+    bool loop_init_4 = true;
     while(true) {
-        if (!loop_init_5) {
+        if (!loop_init_4) {
             uint _e46 = s_1;
             s_1 = (_e46 + 1u);
         }
-        loop_init_5 = false;
+        loop_init_4 = false;
         uint _e13 = s_1;
         if ((_e13 >= end_1)) {
             break;

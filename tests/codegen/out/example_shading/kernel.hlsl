@@ -180,25 +180,6 @@ struct UnlitTexture {
     int _end_pad_0;
 };
 
-struct Frame {
-    Ray ray;
-    Hit hit;
-    float error;
-    uint slot;
-    int _pad4_0;
-    int _pad4_1;
-    float3 sum;
-    int _pad5_0;
-    float3 dirs[1];
-    int _pad6_0;
-    float3 weights[1];
-    int _pad7_0;
-    uint count;
-    uint next;
-    int _end_pad_0;
-    int _end_pad_1;
-};
-
 static const uint WORKGROUP_WIDTH = 8u;
 static const uint WORKGROUP_HEIGHT = 8u;
 static const uint NO_HIT = 4294967295u;
@@ -228,8 +209,7 @@ static const uint RAY_SHADOW = 2u;
 static const uint FLAG_MEDIUM = 4u;
 static const uint FLAG_SECONDARY_RAYS = 2u;
 static const uint MAX_DEPTH = 3u;
-static const uint STACK_SIZE = 3u;
-static const uint MAX_SPAWN = 1u;
+static const uint ROULETTE_DEPTH = 2u;
 static const uint RAY_SECONDARY = 1u;
 
 cbuffer tile : register(b1) { TileParams tile; }
@@ -531,10 +511,10 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
-    float t_6 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_11 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
+    float t_5 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_11 ? float3(t_6, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_10 ? float3(t_5, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -894,8 +874,8 @@ Hit finish_hit(Ray ray_6, Candidate c_1)
     float3 _e147 = hit.geometric_normal;
     hit.front_face = (dot(ray_6.dir, _e147) < 0.0);
     Hit _e151 = hit;
-    const Hit hit_12 = _e151;
-    return hit_12;
+    const Hit hit_11 = _e151;
+    return hit_11;
 }
 
 uint medium_at(float3 p_4, uint exclude)
@@ -1212,10 +1192,10 @@ float4 sample_texture(uint t_1, float2 uv)
     uint _e14 = asuint(params.Load((t_1 + 2u)*4));
     float h_3 = float(max(_e14, 1u));
     float2 p_7 = ((uv * float2(w_4, h_3)) - (0.5).xx);
-    float2 f_1 = floor(p_7);
-    float2 fr = (p_7 - f_1);
-    const int _e26 = i32_from_f32_(f_1.x);
-    const int _e28 = i32_from_f32_(f_1.y);
+    float2 f = floor(p_7);
+    float2 fr = (p_7 - f);
+    const int _e26 = i32_from_f32_(f.x);
+    const int _e28 = i32_from_f32_(f.y);
     const float4 _e29 = texel_at(t_1, _e26, _e28);
     const float4 _e32 = texel_at(t_1, asint(asuint(_e26) + asuint(int(1))), _e28);
     float4 a_7 = lerp(_e29, _e32, (fr.x).xxxx);
@@ -1326,15 +1306,15 @@ LightSample point_light(PointLight l, float3 position_2, float3 normal_2)
 
     float3 to_light = (l.position - position_2);
     float dist_2 = length(to_light);
-    float3 dir_5 = (to_light / (max(dist_2, 1e-20)).xxx);
+    float3 dir_6 = (to_light / (max(dist_2, 1e-20)).xxx);
     strength = (l.intensity / max((dist_2 * dist_2), 1e-20));
     if ((l.range > 0.0)) {
         float _e19 = strength;
         strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_2)));
     }
-    const float _e26 = shadow_query(position_2, normal_2, dir_5, dist_2);
+    const float _e26 = shadow_query(position_2, normal_2, dir_6, dist_2);
     float _e28 = strength;
-    const LightSample lightsample = ConstructLightSample(dir_5, dist_2, ((l.color * (_e28).xxx) * (_e26).xxx));
+    const LightSample lightsample = ConstructLightSample(dir_6, dist_2, ((l.color * (_e28).xxx) * (_e26).xxx));
     return lightsample;
 }
 
@@ -1612,252 +1592,121 @@ float3 spawn_origin(Hit hit_9, float error_2, float3 dir_4)
     return _e5;
 }
 
-Frame ConstructFrame(Ray arg0, Hit arg1, float arg2, uint arg3, float3 arg4, float3 arg5[1], float3 arg6[1], uint arg7, uint arg8) {
-    Frame ret = (Frame)0;
-    ret.ray = arg0;
-    ret.hit = arg1;
-    ret.error = arg2;
-    ret.slot = arg3;
-    ret.sum = arg4;
-    ret.dirs = arg5;
-    ret.weights = arg6;
-    ret.count = arg7;
-    ret.next = arg8;
-    return ret;
-}
-
-typedef Frame ret_ZeroValuearray3_Frame_[3];
-ret_ZeroValuearray3_Frame_ ZeroValuearray3_Frame_() {
-    return (Frame[3])0;
-}
-
-typedef float3 ret_ZeroValuearray1_float3_[1];
-ret_ZeroValuearray1_float3_ ZeroValuearray1_float3_() {
-    return (float3[1])0;
-}
-
-float3 trace(Ray camera_ray)
+float3 trace_path(Ray camera_ray)
 {
-    float3 radiance_2 = (float3)0;
-    float t_4 = (float)0;
-    Frame stack[3] = (Frame[3])0;
-    uint depth = (uint)0;
     Ray ray_22 = (Ray)0;
-    float3 value = (float3)0;
-    bool have_value = (bool)0;
-    Ray s_ray = (Ray)0;
-    Candidate s_c = (Candidate)0;
-    Hit s_hit = (Hit)0;
-    float s_error = (float)0;
-    float3 s_sum = (float3)0;
-    bool fresh = (bool)0;
-    bool waiting = (bool)0;
-    bool pushed = (bool)0;
-    float3 radiance_3 = (float3)0;
-    float t_5 = (float)0;
-    Hit hit_10 = (Hit)0;
-    Frame f = (Frame)0;
-    uint i_4 = (uint)0;
-    uint medium = (uint)0;
+    float3 beta = (float3)0;
+    float3 radiance_2 = (float3)0;
+    bool spawned = (bool)0;
+    float3 dir_5 = (float3)0;
+    float3 weight_1 = (float3)0;
 
-    if (!(HAS_SECONDARY_RAYS)) {
-        const Candidate _e4 = intersect_scene(camera_ray, false);
-        radiance_2 = (0.0).xxx;
-        uint _e9 = F32_INF;
-        t_4 = asfloat(_e9);
-        if ((_e4.slot == NO_HIT)) {
-            hit_error = 0.0;
-            const float3 _e17 = miss(camera_ray);
-            radiance_2 = _e17;
-        } else {
-            const float3 _e18 = shade_direct(camera_ray, _e4);
-            radiance_2 = _e18;
-            t_4 = _e4.t;
-        }
-        float _e20 = t_4;
-        float3 _e21 = radiance_2;
-        const float3 _e22 = through_medium(camera_ray, _e20, _e21);
-        return _e22;
-    }
-    stack = ZeroValuearray3_Frame_();
-    depth = 0u;
     ray_22 = camera_ray;
-    value = (0.0).xxx;
-    have_value = false;
-    s_ray = camera_ray;
-    uint _e35 = F32_INF;
-    const Candidate _e37 = no_candidate(asfloat(_e35));
-    s_c = _e37;
-    s_hit = ConstructHit((0.0).xxx, 0.0, (0.0).xxx, (0.0).xxx, (0.0).xx, true, 0u, 0u);
-    s_error = 0.0;
-    s_sum = (0.0).xxx;
-    fresh = false;
-    waiting = false;
+    beta = (1.0).xxx;
+    radiance_2 = (0.0).xxx;
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        bool _e62 = have_value;
-        bool _e64 = waiting;
-        if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_22;
-            const Candidate _e69 = intersect_scene(_e67, false);
-            s_c = _e69;
-            Ray _e70 = ray_22;
-            s_ray = _e70;
-            s_sum = (0.0).xxx;
-            fresh = true;
-            waiting = true;
+        Ray _e8 = ray_22;
+        const Candidate _e10 = intersect_scene(_e8, false);
+        if ((_e10.slot == NO_HIT)) {
+            hit_error = 0.0;
+            float3 _e16 = radiance_2;
+            float3 _e17 = beta;
+            Ray _e18 = ray_22;
+            const float3 _e19 = miss(_e18);
+            return (_e16 + (_e17 * _e19));
         }
-        bool _e75 = waiting;
-        if (_e75) {
-            waiting = false;
-            pushed = false;
-            radiance_3 = (0.0).xxx;
-            uint _e83 = F32_INF;
-            t_5 = asfloat(_e83);
-            uint _e87 = s_c.slot;
-            if ((_e87 == NO_HIT)) {
-                hit_error = 0.0;
-                Ray _e92 = s_ray;
-                const float3 _e93 = miss(_e92);
-                radiance_3 = _e93;
-            } else {
-                uint _e95 = s_c.slot;
-                GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e95*128+0)), asfloat(instances.Load4(_e95*128+16)), asfloat(instances.Load4(_e95*128+32)), asfloat(instances.Load4(_e95*128+48)), asfloat(instances.Load4(_e95*128+64)), asfloat(instances.Load4(_e95*128+80)), asuint(instances.Load(_e95*128+96)), asuint(instances.Load(_e95*128+100)), asuint(instances.Load(_e95*128+104)), asuint(instances.Load(_e95*128+108)), asuint(instances.Load(_e95*128+112)), asuint(instances.Load(_e95*128+116)), asuint(instances.Load(_e95*128+120)), asuint(instances.Load(_e95*128+124)));
-                Hit _e99 = s_hit;
-                hit_10 = _e99;
-                bool _e101 = fresh;
-                if (_e101) {
-                    Ray _e102 = s_ray;
-                    Candidate _e103 = s_c;
-                    const Hit _e104 = finish_hit(_e102, _e103);
-                    hit_10 = _e104;
-                    float _e106 = hit_error;
-                    s_error = _e106;
-                } else {
-                    float _e107 = s_error;
-                    hit_error = _e107;
-                }
-                float _e110 = hit_10.t;
-                t_5 = _e110;
-                bool _e111 = fresh;
-                uint _e119 = s_ray.depth;
-                uint _e123 = depth;
-                if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
-                    spawn_count = 0u;
-                    Ray _e131 = s_ray;
-                    Hit _e132 = hit_10;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
-                    uint _e134 = spawn_count;
-                    uint n_8 = min(min(_e134, 1u), MAX_SPAWN);
-                    if ((n_8 > 0u)) {
-                        Ray _e141 = s_ray;
-                        Hit _e142 = hit_10;
-                        float _e143 = s_error;
-                        uint _e145 = s_c.slot;
-                        f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_8, 0u);
-                        i_4 = 0u;
-                        uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-                        bool loop_init_4 = true;
-                        while(true) {
-                            if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-                            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-                            if (!loop_init_4) {
-                                uint _e175 = i_4;
-                                i_4 = (_e175 + 1u);
-                            }
-                            loop_init_4 = false;
-                            uint _e155 = i_4;
-                            if ((_e155 >= n_8)) {
-                                break;
-                            }
-                            uint _e158 = i_4;
-                            uint _e162 = i_4;
-                            float3 _e165 = spawn_dirs[min(uint(_e162), 0u)];
-                            f.dirs[min(uint(min(_e158, 0u)), 0u)] = _e165;
-                            uint _e167 = i_4;
-                            uint _e171 = i_4;
-                            float3 _e174 = spawn_weights[min(uint(_e171), 0u)];
-                            f.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
-                        }
-                        uint _e178 = depth;
-                        Frame _e182 = f;
-                        stack[min(uint(min(_e178, 2u)), 2u)] = _e182;
-                        uint _e183 = depth;
-                        depth = (_e183 + 1u);
-                        pushed = true;
-                    }
-                }
-                bool _e187 = pushed;
-                if (!(_e187)) {
-                    Ray _e191 = s_ray;
-                    Hit _e192 = hit_10;
-                    float3 _e193 = s_sum;
-                    const float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
-                    radiance_3 = _e194;
-                }
-            }
-            bool _e195 = pushed;
-            if (!(_e195)) {
-                Ray _e197 = s_ray;
-                float _e198 = t_5;
-                float3 _e199 = radiance_3;
-                const float3 _e200 = through_medium(_e197, _e198, _e199);
-                value = _e200;
-                have_value = true;
+        GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e10.slot*128+0)), asfloat(instances.Load4(_e10.slot*128+16)), asfloat(instances.Load4(_e10.slot*128+32)), asfloat(instances.Load4(_e10.slot*128+48)), asfloat(instances.Load4(_e10.slot*128+64)), asfloat(instances.Load4(_e10.slot*128+80)), asuint(instances.Load(_e10.slot*128+96)), asuint(instances.Load(_e10.slot*128+100)), asuint(instances.Load(_e10.slot*128+104)), asuint(instances.Load(_e10.slot*128+108)), asuint(instances.Load(_e10.slot*128+112)), asuint(instances.Load(_e10.slot*128+116)), asuint(instances.Load(_e10.slot*128+120)), asuint(instances.Load(_e10.slot*128+124)));
+        Ray _e26 = ray_22;
+        const Hit _e27 = finish_hit(_e26, _e10);
+        float error_4 = hit_error;
+        spawned = false;
+        dir_5 = (0.0).xxx;
+        weight_1 = (0.0).xxx;
+        uint _e44 = ray_22.depth;
+        if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e44 < MAX_DEPTH))) {
+            spawn_count = 0u;
+            Ray _e52 = ray_22;
+            dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e52, _e27);
+            uint _e54 = spawn_count;
+            if ((min(_e54, 1u) > 0u)) {
+                spawned = true;
+                float3 _e63 = spawn_dirs[0u];
+                dir_5 = _e63;
+                float3 _e67 = spawn_weights[0u];
+                weight_1 = _e67;
             }
         }
-        bool _e202 = have_value;
-        if (_e202) {
-            uint _e203 = depth;
-            if ((_e203 == 0u)) {
-                float3 _e206 = value;
-                return _e206;
+        float3 _e68 = radiance_2;
+        float3 _e69 = beta;
+        Ray _e72 = ray_22;
+        const float3 _e75 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e72, _e27, (0.0).xxx);
+        radiance_2 = (_e68 + (_e69 * _e75));
+        bool _e78 = spawned;
+        if (!(_e78)) {
+            float3 _e80 = radiance_2;
+            return _e80;
+        }
+        float3 _e81 = beta;
+        float3 _e82 = weight_1;
+        beta = (_e81 * _e82);
+        float _e85 = beta.x;
+        float _e87 = beta.y;
+        float _e89 = beta.z;
+        float q_3 = max(_e85, max(_e87, _e89));
+        if (!((q_3 > 0.0))) {
+            float3 _e95 = radiance_2;
+            return _e95;
+        }
+        uint _e100 = ray_22.depth;
+        if ((((ROULETTE_DEPTH > 0u) && ((_e100 + 1u) >= ROULETTE_DEPTH)) && (q_3 < 1.0))) {
+            const float _e109 = rand_next();
+            if ((_e109 >= q_3)) {
+                float3 _e111 = radiance_2;
+                return _e111;
             }
-            uint _e207 = depth;
-            uint top = (_e207 - 1u);
-            uint _e214 = stack[min(uint(min(top, 2u)), 2u)].next;
-            uint child_2 = (_e214 - 1u);
-            float3 _e221 = stack[min(uint(min(top, 2u)), 2u)].sum;
-            float3 _e229 = stack[min(uint(min(top, 2u)), 2u)].weights[min(uint(min(child_2, 0u)), 0u)];
-            float3 _e230 = value;
-            stack[min(uint(min(top, 2u)), 2u)].sum = (_e221 + (_e229 * _e230));
-            have_value = false;
+            float3 _e112 = beta;
+            beta = (_e112 / (q_3).xxx);
         }
-        uint _e234 = depth;
-        uint top_1 = (_e234 - 1u);
-        uint _e241 = stack[min(uint(min(top_1, 2u)), 2u)].next;
-        uint _e246 = stack[min(uint(min(top_1, 2u)), 2u)].count;
-        if ((_e241 < _e246)) {
-            uint i_5 = stack[min(uint(min(top_1, 2u)), 2u)].next;
-            stack[min(uint(min(top_1, 2u)), 2u)].next = (i_5 + 1u);
-            Ray parent = stack[min(uint(min(top_1, 2u)), 2u)].ray;
-            Hit hit_13 = stack[min(uint(min(top_1, 2u)), 2u)].hit;
-            float3 dir_6 = stack[min(uint(min(top_1, 2u)), 2u)].dirs[min(uint(min(i_5, 0u)), 0u)];
-            medium = parent.medium;
-            float _e283 = stack[min(uint(min(top_1, 2u)), 2u)].error;
-            const float3 _e284 = spawn_origin(hit_13, _e283, dir_6);
-            uint _e287 = F32_INF;
-            uint _e293 = medium;
-            ray_22 = ConstructRay(_e284, 0.0, dir_6, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
-        } else {
-            Ray _e299 = stack[min(uint(min(top_1, 2u)), 2u)].ray;
-            s_ray = _e299;
-            Hit _e304 = stack[min(uint(min(top_1, 2u)), 2u)].hit;
-            s_hit = _e304;
-            float _e309 = stack[min(uint(min(top_1, 2u)), 2u)].error;
-            s_error = _e309;
-            uint _e315 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
-            s_c.slot = _e315;
-            float3 _e320 = stack[min(uint(min(top_1, 2u)), 2u)].sum;
-            s_sum = _e320;
-            fresh = false;
-            waiting = true;
-            depth = top_1;
-        }
+        float3 _e115 = dir_5;
+        const float3 _e116 = spawn_origin(_e27, error_4, _e115);
+        float3 _e118 = dir_5;
+        uint _e120 = F32_INF;
+        uint _e123 = ray_22.depth;
+        uint _e128 = ray_22.medium;
+        ray_22 = ConstructRay(_e116, 0.0, _e118, asfloat(_e120), (_e123 + 1u), RAY_SECONDARY, _e128);
     }
     return ZeroValuefloat3();
+}
+
+float3 trace(Ray camera_ray_1)
+{
+    float3 radiance_3 = (float3)0;
+    float t_4 = (float)0;
+
+    if (!(HAS_SECONDARY_RAYS)) {
+        const Candidate _e4 = intersect_scene(camera_ray_1, false);
+        radiance_3 = (0.0).xxx;
+        uint _e9 = F32_INF;
+        t_4 = asfloat(_e9);
+        if ((_e4.slot == NO_HIT)) {
+            hit_error = 0.0;
+            const float3 _e17 = miss(camera_ray_1);
+            radiance_3 = _e17;
+        } else {
+            const float3 _e18 = shade_direct(camera_ray_1, _e4);
+            radiance_3 = _e18;
+            t_4 = _e4.t;
+        }
+        float _e20 = t_4;
+        float3 _e21 = radiance_3;
+        const float3 _e22 = through_medium(camera_ray_1, _e20, _e21);
+        return _e22;
+    }
+    const float3 _e23 = trace_path(camera_ray_1);
+    return _e23;
 }
 
 bool3 is_finite_vec3f(float3 x_4)
@@ -1884,16 +1733,16 @@ void render_pixel(uint2 pixel_3)
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_1 = 0u;
-    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
-    bool loop_init_5 = true;
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    bool loop_init_4 = true;
     while(true) {
-        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        if (!loop_init_5) {
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_4) {
             uint _e46 = s_1;
             s_1 = (_e46 + 1u);
         }
-        loop_init_5 = false;
+        loop_init_4 = false;
         uint _e13 = s_1;
         if ((_e13 >= end_1)) {
             break;
