@@ -248,9 +248,9 @@ fn rmse(a: &LinearImage, b: &[f64]) -> (f64, f64, f64) {
     ((se / n).sqrt(), ma / n, mb / n)
 }
 
-/// Renders the `mis` and `light_only` scenes named (of `mis_lamp.rt`) at `spp` and a 2048-spp
-/// reference of each with seeds of their own; prints and returns (MIS RMSE, light-only RMSE) against
-/// the MIS reference, after checking that both strategies converge to the same mean.
+/// Renders the MIS scene and the single-strategy scene named (of `mis_lamp.rt`) at `spp` and a
+/// 2048-spp reference of each with seeds of their own; prints and returns (MIS RMSE, single-strategy
+/// RMSE) against the MIS reference, after checking that both converge to the same mean.
 fn mis_against_light_only(gpu: &Gpu, mis_scene: &str, light_scene: &str, spp: u32) -> (f64, f64) {
     let file = SceneFile::open("materials/mis_lamp.rt");
     let run = |scene: &str, seed: &str, spp: u32| {
@@ -271,8 +271,8 @@ fn mis_against_light_only(gpu: &Gpu, mis_scene: &str, light_scene: &str, spp: u3
     let (_, m_light_ref, _) = rmse(&light_ref, &reference);
     eprintln!(
         "{mis_scene} vs {light_scene} at {spp} spp: RMSE {e_mis:.5} vs {e_light:.5} (ratio {:.2}); \
-         means: reference {m_ref:.5}, MIS {m_mis:.5}, light-only {m_light:.5}, light-only 2048 spp \
-         {m_light_ref:.5}",
+         means: reference {m_ref:.5}, MIS {m_mis:.5}, {light_scene} {m_light:.5}, {light_scene} at \
+         2048 spp {m_light_ref:.5}",
         e_light / e_mis
     );
     // Unbiased, both ways: the light-only image converges to the MIS reference's mean within 2 %
@@ -305,4 +305,10 @@ fn mis_beats_light_sampling_alone_on_a_glossy_plane_under_a_small_bright_light()
             "{mis}: RMSE at 16 spp: MIS {e_mis}, light only {e_light}"
         );
     }
+    // And against the BSDF's sampling alone (the lamp is emissive geometry that no light samples).
+    let (e_mis, e_bsdf) = mis_against_light_only(&gpu, "mis", "bsdf_only", 16);
+    assert!(
+        e_mis < e_bsdf,
+        "RMSE at 16 spp: MIS {e_mis}, BSDF sampling only {e_bsdf}"
+    );
 }
