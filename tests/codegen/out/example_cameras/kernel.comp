@@ -105,6 +105,7 @@ struct LightSample {
     vec3 dir;
     float dist;
     vec3 radiance;
+    float pdf;
 };
 struct PointLight {
     vec3 position;
@@ -943,7 +944,7 @@ LightSample point_light(PointLight l, vec3 position_2, vec3 normal_2) {
     }
     float _e26 = shadow_query(position_2, normal_2, dir_4, dist_2);
     float _e28 = strength;
-    return LightSample(dir_4, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)));
+    return LightSample(dir_4, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0.0);
 }
 
 LightSample dispatch_light(uint type_id_2, uint offset_6, vec3 position_3, vec3 normal_3) {
@@ -955,13 +956,13 @@ LightSample dispatch_light(uint type_id_2, uint offset_6, vec3 position_3, vec3 
 LightSample sample_light_query(uint i_1, vec3 position_4, vec3 normal_4) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
     if ((i_1 >= frame_4.light_count)) {
-        return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0));
+        return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
     uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    uint _e21 = _group_0_binding_6_cs[entry];
-    uint _e26 = _group_0_binding_6_cs[(entry + 1u)];
-    LightSample _e27 = dispatch_light(_e21, _e26, position_4, normal_4);
-    return _e27;
+    uint _e22 = _group_0_binding_6_cs[entry];
+    uint _e27 = _group_0_binding_6_cs[(entry + 1u)];
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    return _e28;
 }
 
 vec3 lambert_shade(Lambert m, Ray ray_12, Hit hit_2) {

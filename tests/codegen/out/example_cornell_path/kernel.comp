@@ -106,6 +106,7 @@ struct LightSample {
     vec3 dir;
     float dist;
     vec3 radiance;
+    float pdf;
 };
 struct QuadLight {
     vec3 corner;
@@ -113,6 +114,7 @@ struct QuadLight {
     vec3 edge_v;
     vec3 color;
     float intensity;
+    uint lamp;
 };
 const uint WORKGROUP_WIDTH = 8u;
 const uint WORKGROUP_HEIGHT = 8u;
@@ -141,7 +143,7 @@ const float INV_PI = 0.31830987;
 const uint FLAG_MEDIUM = 4u;
 const uint FLAG_SECONDARY_RAYS = 2u;
 const uint MAX_DEPTH = 6u;
-const float NEE_BOUNCE_LENGTH = 2.0;
+const float MIS_BOUNCE_LENGTH = 3.0;
 const uint ROULETTE_DEPTH = 2u;
 const uint RAY_SECONDARY = 1u;
 
@@ -619,10 +621,10 @@ Hit finish_hit(Ray ray_6, Candidate c_1) {
         float w_2 = ((1.0 - b_5.x) - b_5.y);
         vec3 e1_ = (_e42.v1_ - _e42.v0_);
         vec3 e2_ = (_e42.v2_ - _e42.v0_);
-        vec3 p_6 = (_e42.v0_ + ((e1_ * vec3(b_5.x)) + (e2_ * vec3(b_5.y))));
-        vec3 _e65 = point_to_world(inst_7, p_6);
+        vec3 p_7 = (_e42.v0_ + ((e1_ * vec3(b_5.x)) + (e2_ * vec3(b_5.y))));
+        vec3 _e65 = point_to_world(inst_7, p_7);
         hit.position = _e65;
-        float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_5.x)), (e2_ * vec3(b_5.y)), p_6);
+        float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_5.x)), (e2_ * vec3(b_5.y)), p_7);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
         uvec4 a0_ = _group_0_binding_5_cs[(c_1.primitive * 2u)];
@@ -865,7 +867,8 @@ QuadLight load_QuadLight(uint offset_5) {
     uint _e68 = _group_0_binding_6_cs[(offset_5 + 13u)];
     uint _e74 = _group_0_binding_6_cs[(offset_5 + 14u)];
     uint _e81 = _group_0_binding_6_cs[(offset_5 + 15u)];
-    return QuadLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)), vec3(uintBitsToFloat(_e62), uintBitsToFloat(_e68), uintBitsToFloat(_e74)), uintBitsToFloat(_e81));
+    uint _e87 = _group_0_binding_6_cs[(offset_5 + 16u)];
+    return QuadLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)), vec3(uintBitsToFloat(_e62), uintBitsToFloat(_e68), uintBitsToFloat(_e74)), uintBitsToFloat(_e81), _e87);
 }
 
 vec3 step_toward(vec3 x_1, vec3 s) {
@@ -905,8 +908,8 @@ Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
         vec3 light = (position + (dir * vec3(dist)));
         float dd_1 = dot(dir, dir);
         float along_1 = (dot((light - _e23), dir) / dd_1);
-        vec3 l_1 = (abs(position) + abs((dir * vec3(dist))));
-        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
+        vec3 l_2 = (abs(position) + abs((dir * vec3(dist))));
+        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
     return Ray(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
@@ -928,11 +931,12 @@ LightSample quad_light(QuadLight l, vec3 position_2, vec3 normal_2) {
     vec3 dir_7 = (to_light / vec3(max(dist_2, 1e-20)));
     float cos_light = (-(dot(dir_7, c_6)) / max(area, 1e-30));
     if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
-        return LightSample(dir_7, dist_2, vec3(0.0));
+        return LightSample(dir_7, dist_2, vec3(0.0), 0.0);
     }
-    float _e41 = shadow_query(position_2, normal_2, dir_7, dist_2);
+    float _e42 = shadow_query(position_2, normal_2, dir_7, dist_2);
     float strength = (((l.intensity * cos_light) * area) / dist2_);
-    return LightSample(dir_7, dist_2, ((l.color * vec3(strength)) * vec3(_e41)));
+    float pdf_1 = ((l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0);
+    return LightSample(dir_7, dist_2, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
 }
 
 LightSample dispatch_light(uint type_id_2, uint offset_6, vec3 position_3, vec3 normal_3) {
@@ -944,13 +948,34 @@ LightSample dispatch_light(uint type_id_2, uint offset_6, vec3 position_3, vec3 
 LightSample sample_light_query(uint i_1, vec3 position_4, vec3 normal_4) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
     if ((i_1 >= frame_4.light_count)) {
-        return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0));
+        return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
     uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    uint _e21 = _group_0_binding_6_cs[entry];
-    uint _e26 = _group_0_binding_6_cs[(entry + 1u)];
-    LightSample _e27 = dispatch_light(_e21, _e26, position_4, normal_4);
-    return _e27;
+    uint _e22 = _group_0_binding_6_cs[entry];
+    uint _e27 = _group_0_binding_6_cs[(entry + 1u)];
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    return _e28;
+}
+
+float mis_weight(float p_6, float other) {
+    if (!((p_6 > 0.0))) {
+        return 0.0;
+    }
+    float r_4 = (max(other, 0.0) / p_6);
+    if (!((r_4 < 1e18))) {
+        uint _e15 = F32_INF;
+        uint _e19 = F32_INF;
+        return (((p_6 == uintBitsToFloat(_e15)) && (other < uintBitsToFloat(_e19))) ? 1.0 : 0.0);
+    }
+    return (1.0 / (1.0 + (r_4 * r_4)));
+}
+
+float mis_light_weight(LightSample l_1, float bsdf_pdf) {
+    if (!((l_1.pdf > 0.0))) {
+        return 1.0;
+    }
+    float _e8 = mis_weight(l_1.pdf, bsdf_pdf);
+    return _e8;
 }
 
 vec3 path_diffuse_shade(PathDiffuse m_1, Ray ray_12, Hit hit_2, vec3 secondary) {
@@ -963,8 +988,8 @@ vec3 path_diffuse_shade(PathDiffuse m_1, Ray ray_12, Hit hit_2, vec3 secondary) 
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e29 = i_2;
-            i_2 = (_e29 + 1u);
+            uint _e33 = i_2;
+            i_2 = (_e33 + 1u);
         }
         loop_init_2 = false;
         uint _e14 = i_2;
@@ -973,11 +998,13 @@ vec3 path_diffuse_shade(PathDiffuse m_1, Ray ray_12, Hit hit_2, vec3 secondary) 
         }
         uint _e16 = i_2;
         LightSample _e19 = sample_light_query(_e16, hit_2.position, hit_2.geometric_normal);
-        vec3 _e20 = direct;
-        direct = (_e20 + (_e19.radiance * vec3(max(dot(n_10, _e19.dir), 0.0))));
+        float c_7 = max(dot(n_10, _e19.dir), 0.0);
+        vec3 _e24 = direct;
+        float _e28 = mis_light_weight(_e19, (c_7 * INV_PI));
+        direct = (_e24 + (_e19.radiance * vec3((c_7 * _e28))));
     }
-    vec3 _e36 = direct;
-    return (((m_1.albedo * vec3(INV_PI)) * _e36) + secondary);
+    vec3 _e40 = direct;
+    return (((m_1.albedo * vec3(INV_PI)) * _e40) + secondary);
 }
 
 vec3 dispatch_closest_hit(uint type_id_3, uint offset_7, Ray ray_13, Hit hit_3, vec3 secondary_1) {
@@ -1034,15 +1061,16 @@ mat3x3 orthonormal_basis(vec3 n_5) {
 }
 
 vec3 sample_cosine_hemisphere(vec3 n_6, vec2 u) {
-    float r_4 = sqrt(u.x);
+    float r_5 = sqrt(u.x);
     float phi = (6.2831855 * u.y);
-    vec3 local = vec3((r_4 * cos(phi)), (r_4 * sin(phi)), sqrt(max((1.0 - u.x), 0.0)));
+    vec3 local = vec3((r_5 * cos(phi)), (r_5 * sin(phi)), sqrt(max((1.0 - u.x), 0.0)));
     mat3x3 _e17 = orthonormal_basis(n_6);
     return (_e17 * local);
 }
 
-vec3 nee_bounce_dir(vec3 dir_2) {
-    return (dir_2 * vec3(NEE_BOUNCE_LENGTH));
+vec3 mis_bounce_dir(vec3 dir_2, float pdf) {
+    float x_3 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
+    return (dir_2 * vec3((MIS_BOUNCE_LENGTH + x_3)));
 }
 
 void rt_spawn(vec3 dir_3, vec3 weight) {
@@ -1070,9 +1098,9 @@ void path_diffuse_rays(PathDiffuse m_2, Ray ray_17, Hit hit_4) {
         weight_1 = (m_2.albedo / vec3(q_3));
     }
     if ((dot(_e13, ng) > 0.0)) {
-        vec3 _e36 = nee_bounce_dir(_e13);
-        vec3 _e37 = weight_1;
-        rt_spawn(_e36, _e37);
+        vec3 _e41 = mis_bounce_dir(_e13, (max(dot(n_11, _e13), 0.0) * INV_PI));
+        vec3 _e42 = weight_1;
+        rt_spawn(_e41, _e42);
     }
     return;
 }

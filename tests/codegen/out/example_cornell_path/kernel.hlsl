@@ -133,7 +133,7 @@ struct LightSample {
     float3 dir;
     float dist;
     float3 radiance;
-    int _end_pad_0;
+    float pdf;
 };
 
 struct QuadLight {
@@ -145,6 +145,10 @@ struct QuadLight {
     int _pad3_0;
     float3 color;
     float intensity;
+    uint lamp;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
 };
 
 static const uint WORKGROUP_WIDTH = 8u;
@@ -174,7 +178,7 @@ static const float INV_PI = 0.31830987;
 static const uint FLAG_MEDIUM = 4u;
 static const uint FLAG_SECONDARY_RAYS = 2u;
 static const uint MAX_DEPTH = 6u;
-static const float NEE_BOUNCE_LENGTH = 2.0;
+static const float MIS_BOUNCE_LENGTH = 3.0;
 static const uint ROULETTE_DEPTH = 2u;
 static const uint RAY_SECONDARY = 1u;
 
@@ -802,10 +806,10 @@ Hit finish_hit(Ray ray_6, Candidate c_1)
         float w_2 = ((1.0 - b_5.x) - b_5.y);
         float3 e1_ = (_e42.v1_ - _e42.v0_);
         float3 e2_ = (_e42.v2_ - _e42.v0_);
-        float3 p_6 = (_e42.v0_ + ((e1_ * (b_5.x).xxx) + (e2_ * (b_5.y).xxx)));
-        const float3 _e65 = point_to_world(inst_7, p_6);
+        float3 p_7 = (_e42.v0_ + ((e1_ * (b_5.x).xxx) + (e2_ * (b_5.y).xxx)));
+        const float3 _e65 = point_to_world(inst_7, p_7);
         hit.position = _e65;
-        const float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * (b_5.x).xxx), (e2_ * (b_5.y).xxx), p_6);
+        const float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * (b_5.x).xxx), (e2_ * (b_5.y).xxx), p_7);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
         uint4 a0_ = asuint(attributes.Load4((c_1.primitive * 2u)*16));
@@ -1081,13 +1085,14 @@ uint light_count_query()
     return _e1.light_count;
 }
 
-QuadLight ConstructQuadLight(float3 arg0, float3 arg1, float3 arg2, float3 arg3, float arg4) {
+QuadLight ConstructQuadLight(float3 arg0, float3 arg1, float3 arg2, float3 arg3, float arg4, uint arg5) {
     QuadLight ret = (QuadLight)0;
     ret.corner = arg0;
     ret.edge_u = arg1;
     ret.edge_v = arg2;
     ret.color = arg3;
     ret.intensity = arg4;
+    ret.lamp = arg5;
     return ret;
 }
 
@@ -1106,7 +1111,8 @@ QuadLight load_QuadLight(uint offset_5)
     uint _e68 = asuint(params.Load((offset_5 + 13u)*4));
     uint _e74 = asuint(params.Load((offset_5 + 14u)*4));
     uint _e81 = asuint(params.Load((offset_5 + 15u)*4));
-    const QuadLight quadlight = ConstructQuadLight(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), float3(asfloat(_e24), asfloat(_e30), asfloat(_e36)), float3(asfloat(_e43), asfloat(_e49), asfloat(_e55)), float3(asfloat(_e62), asfloat(_e68), asfloat(_e74)), asfloat(_e81));
+    uint _e87 = asuint(params.Load((offset_5 + 16u)*4));
+    const QuadLight quadlight = ConstructQuadLight(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), float3(asfloat(_e24), asfloat(_e30), asfloat(_e36)), float3(asfloat(_e43), asfloat(_e49), asfloat(_e55)), float3(asfloat(_e62), asfloat(_e68), asfloat(_e74)), asfloat(_e81), _e87);
     return quadlight;
 }
 
@@ -1151,8 +1157,8 @@ Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
         float3 light = (position + (dir * (dist).xxx));
         float dd_1 = dot(dir, dir);
         float along_1 = (dot((light - _e23), dir) / dd_1);
-        float3 l_1 = (abs(position) + abs((dir * (dist).xxx)));
-        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
+        float3 l_2 = (abs(position) + abs((dir * (dist).xxx)));
+        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
     const Ray ray_24 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
@@ -1166,11 +1172,12 @@ float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_
     return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2) {
+LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
     LightSample ret = (LightSample)0;
     ret.dir = arg0;
     ret.dist = arg1;
     ret.radiance = arg2;
+    ret.pdf = arg3;
     return ret;
 }
 
@@ -1185,12 +1192,13 @@ LightSample quad_light(QuadLight l, float3 position_2, float3 normal_2)
     float3 dir_7 = (to_light / (max(dist_2, 1e-20)).xxx);
     float cos_light = (-(dot(dir_7, c_6)) / max(area, 1e-30));
     if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
-        const LightSample lightsample = ConstructLightSample(dir_7, dist_2, (0.0).xxx);
+        const LightSample lightsample = ConstructLightSample(dir_7, dist_2, (0.0).xxx, 0.0);
         return lightsample;
     }
-    const float _e41 = shadow_query(position_2, normal_2, dir_7, dist_2);
+    const float _e42 = shadow_query(position_2, normal_2, dir_7, dist_2);
     float strength = (((l.intensity * cos_light) * area) / dist2_);
-    const LightSample lightsample_1 = ConstructLightSample(dir_7, dist_2, ((l.color * (strength).xxx) * (_e41).xxx));
+    float pdf_1 = ((l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0);
+    const LightSample lightsample_1 = ConstructLightSample(dir_7, dist_2, ((l.color * (strength).xxx) * (_e42).xxx), pdf_1);
     return lightsample_1;
 }
 
@@ -1206,15 +1214,38 @@ LightSample sample_light_query(uint i_1, float3 position_4, float3 normal_4)
 {
     FrameUniforms frame_4 = frame;
     if ((i_1 >= frame_4.light_count)) {
-        const LightSample lightsample_3 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx);
+        const LightSample lightsample_3 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_3;
     }
     uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    uint _e21 = asuint(params.Load(entry*4));
-    uint _e26 = asuint(params.Load((entry + 1u)*4));
-    const LightSample _e27 = dispatch_light(_e21, _e26, position_4, normal_4);
-    const LightSample lightsample_4 = _e27;
+    uint _e22 = asuint(params.Load(entry*4));
+    uint _e27 = asuint(params.Load((entry + 1u)*4));
+    const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    const LightSample lightsample_4 = _e28;
     return lightsample_4;
+}
+
+float mis_weight(float p_6, float other)
+{
+    if (!((p_6 > 0.0))) {
+        return 0.0;
+    }
+    float r_4 = (max(other, 0.0) / p_6);
+    if (!((r_4 < 1e18))) {
+        uint _e15 = F32_INF;
+        uint _e19 = F32_INF;
+        return (((p_6 == asfloat(_e15)) && (other < asfloat(_e19))) ? 1.0 : 0.0);
+    }
+    return (1.0 / (1.0 + (r_4 * r_4)));
+}
+
+float mis_light_weight(LightSample l_1, float bsdf_pdf)
+{
+    if (!((l_1.pdf > 0.0))) {
+        return 1.0;
+    }
+    const float _e8 = mis_weight(l_1.pdf, bsdf_pdf);
+    return _e8;
 }
 
 float3 path_diffuse_shade(PathDiffuse m_1, Ray ray_12, Hit hit_2, float3 secondary)
@@ -1232,8 +1263,8 @@ float3 path_diffuse_shade(PathDiffuse m_1, Ray ray_12, Hit hit_2, float3 seconda
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e29 = i_2;
-            i_2 = (_e29 + 1u);
+            uint _e33 = i_2;
+            i_2 = (_e33 + 1u);
         }
         loop_init_2 = false;
         uint _e14 = i_2;
@@ -1242,11 +1273,13 @@ float3 path_diffuse_shade(PathDiffuse m_1, Ray ray_12, Hit hit_2, float3 seconda
         }
         uint _e16 = i_2;
         const LightSample _e19 = sample_light_query(_e16, hit_2.position, hit_2.geometric_normal);
-        float3 _e20 = direct;
-        direct = (_e20 + (_e19.radiance * (max(dot(n_10, _e19.dir), 0.0)).xxx));
+        float c_7 = max(dot(n_10, _e19.dir), 0.0);
+        float3 _e24 = direct;
+        const float _e28 = mis_light_weight(_e19, (c_7 * INV_PI));
+        direct = (_e24 + (_e19.radiance * ((c_7 * _e28)).xxx));
     }
-    float3 _e36 = direct;
-    return (((m_1.albedo * (INV_PI).xxx) * _e36) + secondary);
+    float3 _e40 = direct;
+    return (((m_1.albedo * (INV_PI).xxx) * _e40) + secondary);
 }
 
 float3 dispatch_closest_hit(uint type_id_3, uint offset_7, Ray ray_13, Hit hit_3, float3 secondary_1)
@@ -1309,16 +1342,17 @@ float3x3 orthonormal_basis(float3 n_5)
 
 float3 sample_cosine_hemisphere(float3 n_6, float2 u)
 {
-    float r_4 = sqrt(u.x);
+    float r_5 = sqrt(u.x);
     float phi = (6.2831855 * u.y);
-    float3 local = float3((r_4 * cos(phi)), (r_4 * sin(phi)), sqrt(max((1.0 - u.x), 0.0)));
+    float3 local = float3((r_5 * cos(phi)), (r_5 * sin(phi)), sqrt(max((1.0 - u.x), 0.0)));
     const float3x3 _e17 = orthonormal_basis(n_6);
     return mul(local, _e17);
 }
 
-float3 nee_bounce_dir(float3 dir_2)
+float3 mis_bounce_dir(float3 dir_2, float pdf)
 {
-    return (dir_2 * (NEE_BOUNCE_LENGTH).xxx);
+    float x_3 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
+    return (dir_2 * ((MIS_BOUNCE_LENGTH + x_3)).xxx);
 }
 
 void rt_spawn(float3 dir_3, float3 weight)
@@ -1349,9 +1383,9 @@ void path_diffuse_rays(PathDiffuse m_2, Ray ray_17, Hit hit_4)
         weight_1 = (m_2.albedo / (q_3).xxx);
     }
     if ((dot(_e13, ng) > 0.0)) {
-        const float3 _e36 = nee_bounce_dir(_e13);
-        float3 _e37 = weight_1;
-        rt_spawn(_e36, _e37);
+        const float3 _e41 = mis_bounce_dir(_e13, (max(dot(n_11, _e13), 0.0) * INV_PI));
+        float3 _e42 = weight_1;
+        rt_spawn(_e41, _e42);
     }
     return;
 }

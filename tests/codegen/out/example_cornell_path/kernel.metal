@@ -132,7 +132,8 @@ struct PathDiffuse {
 struct LightSample {
     metal::packed_float3 dir;
     float dist;
-    metal::float3 radiance;
+    metal::packed_float3 radiance;
+    float pdf;
 };
 struct QuadLight {
     metal::float3 corner;
@@ -140,6 +141,8 @@ struct QuadLight {
     metal::float3 edge_v;
     metal::packed_float3 color;
     float intensity;
+    uint lamp;
+    char _pad6[12];
 };
 struct type_15 {
     metal::float3 inner[1];
@@ -172,7 +175,7 @@ constant float INV_PI = 0.31830987;
 constant uint FLAG_MEDIUM = 4u;
 constant uint FLAG_SECONDARY_RAYS = 2u;
 constant uint MAX_DEPTH = 6u;
-constant float NEE_BOUNCE_LENGTH = 2.0;
+constant float MIS_BOUNCE_LENGTH = 3.0;
 constant uint ROULETTE_DEPTH = 2u;
 constant uint RAY_SECONDARY = 1u;
 
@@ -793,10 +796,10 @@ Hit finish_hit(
         float w_2 = (1.0 - c_1.uv.x) - c_1.uv.y;
         metal::float3 e1_ = _e42.v1_ - _e42.v0_;
         metal::float3 e2_ = _e42.v2_ - _e42.v0_;
-        metal::float3 p_6 = _e42.v0_ + ((e1_ * metal::float3(c_1.uv.x)) + (e2_ * metal::float3(c_1.uv.y)));
-        metal::float3 _e65 = point_to_world(inst_7, p_6);
+        metal::float3 p_7 = _e42.v0_ + ((e1_ * metal::float3(c_1.uv.x)) + (e2_ * metal::float3(c_1.uv.y)));
+        metal::float3 _e65 = point_to_world(inst_7, p_7);
         hit.position = _e65;
-        float _e73 = mesh_error(inst_7, _e42.v0_, e1_ * metal::float3(c_1.uv.x), e2_ * metal::float3(c_1.uv.y), p_6);
+        float _e73 = mesh_error(inst_7, _e42.v0_, e1_ * metal::float3(c_1.uv.x), e2_ * metal::float3(c_1.uv.y), p_7);
         hit_error = _e73;
         n_geo = metal::cross(e1_, e2_);
         metal::uint4 a0_ = attributes[c_1.primitive * 2u];
@@ -1098,7 +1101,8 @@ QuadLight load_QuadLight(
     uint _e68 = params[offset_5 + 13u];
     uint _e74 = params[offset_5 + 14u];
     uint _e81 = params[offset_5 + 15u];
-    return QuadLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), metal::float3(as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)), metal::float3(as_type<float>(_e62), as_type<float>(_e68), as_type<float>(_e74)), as_type<float>(_e81)};
+    uint _e87 = params[offset_5 + 16u];
+    return QuadLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), metal::float3(as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)), metal::float3(as_type<float>(_e62), as_type<float>(_e68), as_type<float>(_e74)), as_type<float>(_e81), _e87};
 }
 
 metal::float3 step_toward(
@@ -1152,8 +1156,8 @@ Ray shadow_ray(
         metal::float3 light = position + (dir * metal::float3(dist));
         float dd_1 = metal::dot(dir, dir);
         float along_1 = metal::dot(light - _e23, dir) / dd_1;
-        metal::float3 l_1 = metal::abs(position) + metal::abs(dir * metal::float3(dist));
-        tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_1.x, l_1.y), l_1.z)) / metal::sqrt(dd_1));
+        metal::float3 l_2 = metal::abs(position) + metal::abs(dir * metal::float3(dist));
+        tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_2.x, l_2.y), l_2.z)) / metal::sqrt(dd_1));
     }
     float _e59 = tmax_4;
     return Ray {_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u};
@@ -1203,11 +1207,12 @@ LightSample quad_light(
     metal::float3 dir_7 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
     float cos_light = -(metal::dot(dir_7, c_6)) / metal::max(area, 0.000000000000000000000000000001);
     if (!((cos_light > 0.0)) || !((dist2_ > 0.0))) {
-        return LightSample {dir_7, dist_2, metal::float3(0.0)};
+        return LightSample {dir_7, dist_2, metal::float3(0.0), 0.0};
     }
-    float _e41 = shadow_query(position_2, normal_2, dir_7, dist_2, frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    float _e42 = shadow_query(position_2, normal_2, dir_7, dist_2, frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     float strength = ((l.intensity * cos_light) * area) / dist2_;
-    return LightSample {dir_7, dist_2, (l.color * metal::float3(strength)) * metal::float3(_e41)};
+    float pdf_1 = (l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0;
+    return LightSample {dir_7, dist_2, (l.color * metal::float3(strength)) * metal::float3(_e42), pdf_1};
 }
 
 LightSample dispatch_light(
@@ -1250,13 +1255,42 @@ LightSample sample_light_query(
 ) {
     FrameUniforms frame_4 = frame;
     if (i_1 >= frame_4.light_count) {
-        return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0)};
+        return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
     uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
-    uint _e21 = params[entry];
-    uint _e26 = params[entry + 1u];
-    LightSample _e27 = dispatch_light(_e21, _e26, position_4, normal_4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
-    return _e27;
+    uint _e22 = params[entry];
+    uint _e27 = params[entry + 1u];
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    return _e28;
+}
+
+float mis_weight(
+    float p_6,
+    float other,
+    thread uint& F32_INF
+) {
+    if (!((p_6 > 0.0))) {
+        return 0.0;
+    }
+    float r_4 = metal::max(other, 0.0) / p_6;
+    if (!((r_4 < 1000000000000000000.0))) {
+        uint _e15 = F32_INF;
+        uint _e19 = F32_INF;
+        return ((p_6 == as_type<float>(_e15)) && (other < as_type<float>(_e19))) ? 1.0 : 0.0;
+    }
+    return 1.0 / (1.0 + (r_4 * r_4));
+}
+
+float mis_light_weight(
+    LightSample l_1,
+    float bsdf_pdf,
+    thread uint& F32_INF
+) {
+    if (!((l_1.pdf > 0.0))) {
+        return 1.0;
+    }
+    float _e8 = mis_weight(l_1.pdf, bsdf_pdf, F32_INF);
+    return _e8;
 }
 
 metal::float3 path_diffuse_shade(
@@ -1288,8 +1322,8 @@ metal::float3 path_diffuse_shade(
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e29 = i_2;
-            i_2 = _e29 + 1u;
+            uint _e33 = i_2;
+            i_2 = _e33 + 1u;
         }
         loop_init_2 = false;
         uint _e14 = i_2;
@@ -1298,11 +1332,13 @@ metal::float3 path_diffuse_shade(
         }
         uint _e16 = i_2;
         LightSample _e19 = sample_light_query(_e16, hit_2.position, hit_2.geometric_normal, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
-        metal::float3 _e20 = direct;
-        direct = _e20 + (_e19.radiance * metal::float3(metal::max(metal::dot(n_10, _e19.dir), 0.0)));
+        float c_7 = metal::max(metal::dot(n_10, _e19.dir), 0.0);
+        metal::float3 _e24 = direct;
+        float _e28 = mis_light_weight(_e19, c_7 * INV_PI, F32_INF);
+        direct = _e24 + (_e19.radiance * metal::float3(c_7 * _e28));
     }
-    metal::float3 _e36 = direct;
-    return ((m_1.albedo * metal::float3(INV_PI)) * _e36) + secondary;
+    metal::float3 _e40 = direct;
+    return ((m_1.albedo * metal::float3(INV_PI)) * _e40) + secondary;
 }
 
 metal::float3 dispatch_closest_hit(
@@ -1408,17 +1444,19 @@ metal::float3 sample_cosine_hemisphere(
     metal::float3 n_6,
     metal::float2 u
 ) {
-    float r_4 = metal::sqrt(u.x);
+    float r_5 = metal::sqrt(u.x);
     float phi = 6.2831855 * u.y;
-    metal::float3 local = metal::float3(r_4 * metal::cos(phi), r_4 * metal::sin(phi), metal::sqrt(metal::max(1.0 - u.x, 0.0)));
+    metal::float3 local = metal::float3(r_5 * metal::cos(phi), r_5 * metal::sin(phi), metal::sqrt(metal::max(1.0 - u.x, 0.0)));
     metal::float3x3 _e17 = orthonormal_basis(n_6);
     return _e17 * local;
 }
 
-metal::float3 nee_bounce_dir(
-    metal::float3 dir_2
+metal::float3 mis_bounce_dir(
+    metal::float3 dir_2,
+    float pdf
 ) {
-    return dir_2 * metal::float3(NEE_BOUNCE_LENGTH);
+    float x_3 = metal::min(metal::log(1.0 + metal::max(pdf, 0.0)) * (1.0 / 90.0), 0.999);
+    return dir_2 * metal::float3(MIS_BOUNCE_LENGTH + x_3);
 }
 
 void rt_spawn(
@@ -1460,9 +1498,9 @@ void path_diffuse_rays(
         weight_1 = m_2.albedo / metal::float3(q_3);
     }
     if (metal::dot(_e13, ng) > 0.0) {
-        metal::float3 _e36 = nee_bounce_dir(_e13);
-        metal::float3 _e37 = weight_1;
-        rt_spawn(_e36, _e37, spawn_dirs, spawn_weights, spawn_count);
+        metal::float3 _e41 = mis_bounce_dir(_e13, metal::max(metal::dot(n_11, _e13), 0.0) * INV_PI);
+        metal::float3 _e42 = weight_1;
+        rt_spawn(_e41, _e42, spawn_dirs, spawn_weights, spawn_count);
     }
     return;
 }

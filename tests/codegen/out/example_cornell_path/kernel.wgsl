@@ -113,6 +113,7 @@ struct LightSample {
     dir: vec3<f32>,
     dist: f32,
     radiance: vec3<f32>,
+    pdf: f32,
 }
 
 struct QuadLight {
@@ -121,6 +122,7 @@ struct QuadLight {
     edge_v: vec3<f32>,
     color: vec3<f32>,
     intensity: f32,
+    lamp: u32,
 }
 
 const WORKGROUP_WIDTH: u32 = 8u;
@@ -150,7 +152,7 @@ const INV_PI: f32 = 0.31830987f;
 const FLAG_MEDIUM: u32 = 4u;
 const FLAG_SECONDARY_RAYS: u32 = 2u;
 const MAX_DEPTH: u32 = 6u;
-const NEE_BOUNCE_LENGTH: f32 = 2f;
+const MIS_BOUNCE_LENGTH: f32 = 3f;
 const ROULETTE_DEPTH: u32 = 2u;
 const RAY_SECONDARY: u32 = 1u;
 
@@ -625,10 +627,10 @@ fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
         let w_2 = ((1f - b_5.x) - b_5.y);
         let e1_ = (_e42.v1_ - _e42.v0_);
         let e2_ = (_e42.v2_ - _e42.v0_);
-        let p_6 = (_e42.v0_ + ((e1_ * vec3(b_5.x)) + (e2_ * vec3(b_5.y))));
-        let _e65 = point_to_world(inst_7, p_6);
+        let p_7 = (_e42.v0_ + ((e1_ * vec3(b_5.x)) + (e2_ * vec3(b_5.y))));
+        let _e65 = point_to_world(inst_7, p_7);
         hit.position = _e65;
-        let _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_5.x)), (e2_ * vec3(b_5.y)), p_6);
+        let _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_5.x)), (e2_ * vec3(b_5.y)), p_7);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
         let a0_ = attributes[(c_1.primitive * 2u)];
@@ -871,7 +873,8 @@ fn load_QuadLight(offset_5: u32) -> QuadLight {
     let _e68 = params[(offset_5 + 13u)];
     let _e74 = params[(offset_5 + 14u)];
     let _e81 = params[(offset_5 + 15u)];
-    return QuadLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)), vec3<f32>(bitcast<f32>(_e62), bitcast<f32>(_e68), bitcast<f32>(_e74)), bitcast<f32>(_e81));
+    let _e87 = params[(offset_5 + 16u)];
+    return QuadLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)), vec3<f32>(bitcast<f32>(_e62), bitcast<f32>(_e68), bitcast<f32>(_e74)), bitcast<f32>(_e81), _e87);
 }
 
 fn step_toward(x_1: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
@@ -912,8 +915,8 @@ fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32)
         let light = (position + (dir * vec3(dist)));
         let dd_1 = dot(dir, dir);
         let along_1 = (dot((light - _e23), dir) / dd_1);
-        let l_1 = (abs(position) + abs((dir * vec3(dist))));
-        tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
+        let l_2 = (abs(position) + abs((dir * vec3(dist))));
+        tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     let _e59 = tmax_4;
     return Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
@@ -935,11 +938,12 @@ fn quad_light(l: QuadLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> Light
     let dir_7 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
     let cos_light = (-(dot(dir_7, c_6)) / max(area, 0.000000000000000000000000000001f));
     if (!((cos_light > 0f)) || !((dist2_ > 0f))) {
-        return LightSample(dir_7, dist_2, vec3(0f));
+        return LightSample(dir_7, dist_2, vec3(0f), 0f);
     }
-    let _e41 = shadow_query(position_2, normal_2, dir_7, dist_2);
+    let _e42 = shadow_query(position_2, normal_2, dir_7, dist_2);
     let strength = (((l.intensity * cos_light) * area) / dist2_);
-    return LightSample(dir_7, dist_2, ((l.color * vec3(strength)) * vec3(_e41)));
+    let pdf_1 = select(0f, (dist2_ / (cos_light * area)), (l.lamp == 1u));
+    return LightSample(dir_7, dist_2, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
 }
 
 fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
@@ -951,13 +955,34 @@ fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_3
 fn sample_light_query(i_1: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let frame_4 = frame;
     if (i_1 >= frame_4.light_count) {
-        return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f));
+        return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
     let entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    let _e21 = params[entry];
-    let _e26 = params[(entry + 1u)];
-    let _e27 = dispatch_light(_e21, _e26, position_4, normal_4);
-    return _e27;
+    let _e22 = params[entry];
+    let _e27 = params[(entry + 1u)];
+    let _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    return _e28;
+}
+
+fn mis_weight(p_6: f32, other: f32) -> f32 {
+    if !((p_6 > 0f)) {
+        return 0f;
+    }
+    let r_4 = (max(other, 0f) / p_6);
+    if !((r_4 < 1000000000000000000f)) {
+        let _e15 = F32_INF;
+        let _e19 = F32_INF;
+        return select(0f, 1f, ((p_6 == bitcast<f32>(_e15)) && (other < bitcast<f32>(_e19))));
+    }
+    return (1f / (1f + (r_4 * r_4)));
+}
+
+fn mis_light_weight(l_1: LightSample, bsdf_pdf: f32) -> f32 {
+    if !((l_1.pdf > 0f)) {
+        return 1f;
+    }
+    let _e8 = mis_weight(l_1.pdf, bsdf_pdf);
+    return _e8;
 }
 
 fn path_diffuse_shade(m_1: PathDiffuse, ray_12: Ray, hit_2: Hit, secondary: vec3<f32>) -> vec3<f32> {
@@ -975,15 +1000,17 @@ fn path_diffuse_shade(m_1: PathDiffuse, ray_12: Ray, hit_2: Hit, secondary: vec3
         }
         let _e16 = i_2;
         let _e19 = sample_light_query(_e16, hit_2.position, hit_2.geometric_normal);
-        let _e20 = direct;
-        direct = (_e20 + (_e19.radiance * vec3(max(dot(n_10, _e19.dir), 0f))));
+        let c_7 = max(dot(n_10, _e19.dir), 0f);
+        let _e24 = direct;
+        let _e28 = mis_light_weight(_e19, (c_7 * INV_PI));
+        direct = (_e24 + (_e19.radiance * vec3((c_7 * _e28))));
         continuing {
-            let _e29 = i_2;
-            i_2 = (_e29 + 1u);
+            let _e33 = i_2;
+            i_2 = (_e33 + 1u);
         }
     }
-    let _e36 = direct;
-    return (((m_1.albedo * vec3(INV_PI)) * _e36) + secondary);
+    let _e40 = direct;
+    return (((m_1.albedo * vec3(INV_PI)) * _e40) + secondary);
 }
 
 fn dispatch_closest_hit(type_id_3: u32, offset_7: u32, ray_13: Ray, hit_3: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
@@ -1039,15 +1066,16 @@ fn orthonormal_basis(n_5: vec3<f32>) -> mat3x3<f32> {
 }
 
 fn sample_cosine_hemisphere(n_6: vec3<f32>, u: vec2<f32>) -> vec3<f32> {
-    let r_4 = sqrt(u.x);
+    let r_5 = sqrt(u.x);
     let phi = (6.2831855f * u.y);
-    let local = vec3<f32>((r_4 * cos(phi)), (r_4 * sin(phi)), sqrt(max((1f - u.x), 0f)));
+    let local = vec3<f32>((r_5 * cos(phi)), (r_5 * sin(phi)), sqrt(max((1f - u.x), 0f)));
     let _e17 = orthonormal_basis(n_6);
     return (_e17 * local);
 }
 
-fn nee_bounce_dir(dir_2: vec3<f32>) -> vec3<f32> {
-    return (dir_2 * vec3(NEE_BOUNCE_LENGTH));
+fn mis_bounce_dir(dir_2: vec3<f32>, pdf: f32) -> vec3<f32> {
+    let x_3 = min((log((1f + max(pdf, 0f))) * (1f / 90f)), 0.999f);
+    return (dir_2 * vec3((MIS_BOUNCE_LENGTH + x_3)));
 }
 
 fn rt_spawn(dir_3: vec3<f32>, weight: vec3<f32>) {
@@ -1076,9 +1104,9 @@ fn path_diffuse_rays(m_2: PathDiffuse, ray_17: Ray, hit_4: Hit) {
         weight_1 = (m_2.albedo / vec3(q_3));
     }
     if (dot(_e13, ng) > 0f) {
-        let _e36 = nee_bounce_dir(_e13);
-        let _e37 = weight_1;
-        rt_spawn(_e36, _e37);
+        let _e41 = mis_bounce_dir(_e13, (max(dot(n_11, _e13), 0f) * INV_PI));
+        let _e42 = weight_1;
+        rt_spawn(_e41, _e42);
     }
     return;
 }

@@ -131,7 +131,8 @@ struct Lambert {
 struct LightSample {
     metal::packed_float3 dir;
     float dist;
-    metal::float3 radiance;
+    metal::packed_float3 radiance;
+    float pdf;
 };
 struct PointLight {
     metal::float3 position;
@@ -1264,7 +1265,7 @@ LightSample point_light(
     }
     float _e26 = shadow_query(position_2, normal_2, dir_6, dist_2, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     float _e28 = strength;
-    return LightSample {dir_6, dist_2, (l.color * metal::float3(_e28)) * metal::float3(_e26)};
+    return LightSample {dir_6, dist_2, (l.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
 }
 
 LightSample dispatch_light(
@@ -1307,13 +1308,13 @@ LightSample sample_light_query(
 ) {
     FrameUniforms frame_4 = frame;
     if (i_1 >= frame_4.light_count) {
-        return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0)};
+        return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
     uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
-    uint _e21 = params[entry];
-    uint _e26 = params[entry + 1u];
-    LightSample _e27 = dispatch_light(_e21, _e26, position_4, normal_4, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
-    return _e27;
+    uint _e22 = params[entry];
+    uint _e27 = params[entry + 1u];
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    return _e28;
 }
 
 metal::float3 lambert_shade(

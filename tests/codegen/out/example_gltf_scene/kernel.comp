@@ -110,6 +110,7 @@ struct LightSample {
     vec3 dir;
     float dist;
     vec3 radiance;
+    float pdf;
 };
 struct DirectionalLight {
     vec3 direction;
@@ -1047,12 +1048,12 @@ LightSample directional_light(DirectionalLight l, vec3 position_2, vec3 normal_2
     vec3 dir_4 = -(_e4);
     if ((dot(dir_4, dir_4) == 0.0)) {
         uint _e14 = F32_INF;
-        return LightSample(vec3(0.0, 1.0, 0.0), uintBitsToFloat(_e14), vec3(0.0));
+        return LightSample(vec3(0.0, 1.0, 0.0), uintBitsToFloat(_e14), vec3(0.0), 0.0);
     }
-    uint _e20 = F32_INF;
-    float _e22 = shadow_query(position_2, normal_2, dir_4, uintBitsToFloat(_e20));
-    uint _e24 = F32_INF;
-    return LightSample(dir_4, uintBitsToFloat(_e24), ((l.color * vec3(l.intensity)) * vec3(_e22)));
+    uint _e21 = F32_INF;
+    float _e23 = shadow_query(position_2, normal_2, dir_4, uintBitsToFloat(_e21));
+    uint _e25 = F32_INF;
+    return LightSample(dir_4, uintBitsToFloat(_e25), ((l.color * vec3(l.intensity)) * vec3(_e23)), 0.0);
 }
 
 PointLight load_PointLight(uint offset_7) {
@@ -1080,7 +1081,7 @@ LightSample point_light(PointLight l_1, vec3 position_3, vec3 normal_3) {
     }
     float _e26 = shadow_query(position_3, normal_3, dir_5, dist_2);
     float _e28 = strength;
-    return LightSample(dir_5, dist_2, ((l_1.color * vec3(_e28)) * vec3(_e26)));
+    return LightSample(dir_5, dist_2, ((l_1.color * vec3(_e28)) * vec3(_e26)), 0.0);
 }
 
 LightSample dispatch_light(uint type_id_3, uint offset_8, vec3 position_4, vec3 normal_4) {
@@ -1099,19 +1100,19 @@ LightSample dispatch_light(uint type_id_3, uint offset_8, vec3 position_4, vec3 
             break;
         }
     }
-    return LightSample(vec3(0.0), 0.0, vec3(0.0));
+    return LightSample(vec3(0.0), 0.0, vec3(0.0), 0.0);
 }
 
 LightSample sample_light_query(uint i_1, vec3 position_5, vec3 normal_5) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
     if ((i_1 >= frame_4.light_count)) {
-        return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0));
+        return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
     uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    uint _e21 = _group_0_binding_6_cs[entry];
-    uint _e26 = _group_0_binding_6_cs[(entry + 1u)];
-    LightSample _e27 = dispatch_light(_e21, _e26, position_5, normal_5);
-    return _e27;
+    uint _e22 = _group_0_binding_6_cs[entry];
+    uint _e27 = _group_0_binding_6_cs[(entry + 1u)];
+    LightSample _e28 = dispatch_light(_e22, _e27, position_5, normal_5);
+    return _e28;
 }
 
 vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, vec3 emissive, Ray ray_14, Hit hit_4) {

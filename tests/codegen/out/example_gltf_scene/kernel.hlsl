@@ -138,7 +138,7 @@ struct LightSample {
     float3 dir;
     float dist;
     float3 radiance;
-    int _end_pad_0;
+    float pdf;
 };
 
 struct DirectionalLight {
@@ -1316,11 +1316,12 @@ float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_
     return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2) {
+LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
     LightSample ret = (LightSample)0;
     ret.dir = arg0;
     ret.dist = arg1;
     ret.radiance = arg2;
+    ret.pdf = arg3;
     return ret;
 }
 
@@ -1330,13 +1331,13 @@ LightSample directional_light(DirectionalLight l, float3 position_2, float3 norm
     float3 dir_4 = -(_e4);
     if ((dot(dir_4, dir_4) == 0.0)) {
         uint _e14 = F32_INF;
-        const LightSample lightsample = ConstructLightSample(float3(0.0, 1.0, 0.0), asfloat(_e14), (0.0).xxx);
+        const LightSample lightsample = ConstructLightSample(float3(0.0, 1.0, 0.0), asfloat(_e14), (0.0).xxx, 0.0);
         return lightsample;
     }
-    uint _e20 = F32_INF;
-    const float _e22 = shadow_query(position_2, normal_2, dir_4, asfloat(_e20));
-    uint _e24 = F32_INF;
-    const LightSample lightsample_1 = ConstructLightSample(dir_4, asfloat(_e24), ((l.color * (l.intensity).xxx) * (_e22).xxx));
+    uint _e21 = F32_INF;
+    const float _e23 = shadow_query(position_2, normal_2, dir_4, asfloat(_e21));
+    uint _e25 = F32_INF;
+    const LightSample lightsample_1 = ConstructLightSample(dir_4, asfloat(_e25), ((l.color * (l.intensity).xxx) * (_e23).xxx), 0.0);
     return lightsample_1;
 }
 
@@ -1379,7 +1380,7 @@ LightSample point_light(PointLight l_1, float3 position_3, float3 normal_3)
     }
     const float _e26 = shadow_query(position_3, normal_3, dir_5, dist_2);
     float _e28 = strength;
-    const LightSample lightsample_2 = ConstructLightSample(dir_5, dist_2, ((l_1.color * (_e28).xxx) * (_e26).xxx));
+    const LightSample lightsample_2 = ConstructLightSample(dir_5, dist_2, ((l_1.color * (_e28).xxx) * (_e26).xxx), 0.0);
     return lightsample_2;
 }
 
@@ -1414,14 +1415,14 @@ LightSample sample_light_query(uint i_1, float3 position_5, float3 normal_5)
 {
     FrameUniforms frame_4 = frame;
     if ((i_1 >= frame_4.light_count)) {
-        const LightSample lightsample_6 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx);
+        const LightSample lightsample_6 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_6;
     }
     uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    uint _e21 = asuint(params.Load(entry*4));
-    uint _e26 = asuint(params.Load((entry + 1u)*4));
-    const LightSample _e27 = dispatch_light(_e21, _e26, position_5, normal_5);
-    const LightSample lightsample_7 = _e27;
+    uint _e22 = asuint(params.Load(entry*4));
+    uint _e27 = asuint(params.Load((entry + 1u)*4));
+    const LightSample _e28 = dispatch_light(_e22, _e27, position_5, normal_5);
+    const LightSample lightsample_7 = _e28;
     return lightsample_7;
 }
 

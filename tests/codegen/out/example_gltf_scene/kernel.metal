@@ -137,7 +137,8 @@ struct SkyGradient {
 struct LightSample {
     metal::packed_float3 dir;
     float dist;
-    metal::float3 radiance;
+    metal::packed_float3 radiance;
+    float pdf;
 };
 struct DirectionalLight {
     metal::float3 direction;
@@ -1401,12 +1402,12 @@ LightSample directional_light(
     metal::float3 dir_4 = -(_e4);
     if (metal::dot(dir_4, dir_4) == 0.0) {
         uint _e14 = F32_INF;
-        return LightSample {metal::float3(0.0, 1.0, 0.0), as_type<float>(_e14), metal::float3(0.0)};
+        return LightSample {metal::float3(0.0, 1.0, 0.0), as_type<float>(_e14), metal::float3(0.0), 0.0};
     }
-    uint _e20 = F32_INF;
-    float _e22 = shadow_query(position_2, normal_2, dir_4, as_type<float>(_e20), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-    uint _e24 = F32_INF;
-    return LightSample {dir_4, as_type<float>(_e24), (l.color * metal::float3(l.intensity)) * metal::float3(_e22)};
+    uint _e21 = F32_INF;
+    float _e23 = shadow_query(position_2, normal_2, dir_4, as_type<float>(_e21), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    uint _e25 = F32_INF;
+    return LightSample {dir_4, as_type<float>(_e25), (l.color * metal::float3(l.intensity)) * metal::float3(_e23), 0.0};
 }
 
 PointLight load_PointLight(
@@ -1454,7 +1455,7 @@ LightSample point_light(
     }
     float _e26 = shadow_query(position_3, normal_3, dir_5, dist_2, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     float _e28 = strength;
-    return LightSample {dir_5, dist_2, (l_1.color * metal::float3(_e28)) * metal::float3(_e26)};
+    return LightSample {dir_5, dist_2, (l_1.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
 }
 
 LightSample dispatch_light(
@@ -1512,13 +1513,13 @@ LightSample sample_light_query(
 ) {
     FrameUniforms frame_4 = frame;
     if (i_1 >= frame_4.light_count) {
-        return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0)};
+        return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
     uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
-    uint _e21 = params[entry];
-    uint _e26 = params[entry + 1u];
-    LightSample _e27 = dispatch_light(_e21, _e26, position_5, normal_5, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-    return _e27;
+    uint _e22 = params[entry];
+    uint _e27 = params[entry + 1u];
+    LightSample _e28 = dispatch_light(_e22, _e27, position_5, normal_5, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    return _e28;
 }
 
 metal::float3 gltf_radiance(

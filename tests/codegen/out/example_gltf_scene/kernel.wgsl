@@ -117,6 +117,7 @@ struct LightSample {
     dir: vec3<f32>,
     dist: f32,
     radiance: vec3<f32>,
+    pdf: f32,
 }
 
 struct DirectionalLight {
@@ -1057,12 +1058,12 @@ fn directional_light(l: DirectionalLight, position_2: vec3<f32>, normal_2: vec3<
     let dir_4 = -(_e4);
     if (dot(dir_4, dir_4) == 0f) {
         let _e14 = F32_INF;
-        return LightSample(vec3<f32>(0f, 1f, 0f), bitcast<f32>(_e14), vec3(0f));
+        return LightSample(vec3<f32>(0f, 1f, 0f), bitcast<f32>(_e14), vec3(0f), 0f);
     }
-    let _e20 = F32_INF;
-    let _e22 = shadow_query(position_2, normal_2, dir_4, bitcast<f32>(_e20));
-    let _e24 = F32_INF;
-    return LightSample(dir_4, bitcast<f32>(_e24), ((l.color * vec3(l.intensity)) * vec3(_e22)));
+    let _e21 = F32_INF;
+    let _e23 = shadow_query(position_2, normal_2, dir_4, bitcast<f32>(_e21));
+    let _e25 = F32_INF;
+    return LightSample(dir_4, bitcast<f32>(_e25), ((l.color * vec3(l.intensity)) * vec3(_e23)), 0f);
 }
 
 fn load_PointLight(offset_7: u32) -> PointLight {
@@ -1091,7 +1092,7 @@ fn point_light(l_1: PointLight, position_3: vec3<f32>, normal_3: vec3<f32>) -> L
     }
     let _e26 = shadow_query(position_3, normal_3, dir_5, dist_2);
     let _e28 = strength;
-    return LightSample(dir_5, dist_2, ((l_1.color * vec3(_e28)) * vec3(_e26)));
+    return LightSample(dir_5, dist_2, ((l_1.color * vec3(_e28)) * vec3(_e26)), 0f);
 }
 
 fn dispatch_light(type_id_3: u32, offset_8: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
@@ -1115,13 +1116,13 @@ fn dispatch_light(type_id_3: u32, offset_8: u32, position_4: vec3<f32>, normal_4
 fn sample_light_query(i_1: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
     let frame_4 = frame;
     if (i_1 >= frame_4.light_count) {
-        return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f));
+        return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
     let entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    let _e21 = params[entry];
-    let _e26 = params[(entry + 1u)];
-    let _e27 = dispatch_light(_e21, _e26, position_5, normal_5);
-    return _e27;
+    let _e22 = params[entry];
+    let _e27 = params[(entry + 1u)];
+    let _e28 = dispatch_light(_e22, _e27, position_5, normal_5);
+    return _e28;
 }
 
 fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, emissive: vec3<f32>, ray_14: Ray, hit_4: Hit) -> vec3<f32> {

@@ -112,6 +112,7 @@ struct LightSample {
     dir: vec3<f32>,
     dist: f32,
     radiance: vec3<f32>,
+    pdf: f32,
 }
 
 struct PointLight {
@@ -943,7 +944,7 @@ fn point_light(l: PointLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> Lig
     }
     let _e26 = shadow_query(position_2, normal_2, dir_6, dist_2);
     let _e28 = strength;
-    return LightSample(dir_6, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)));
+    return LightSample(dir_6, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0f);
 }
 
 fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
@@ -955,13 +956,13 @@ fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_3
 fn sample_light_query(i_1: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let frame_4 = frame;
     if (i_1 >= frame_4.light_count) {
-        return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f));
+        return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
     let entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    let _e21 = params[entry];
-    let _e26 = params[(entry + 1u)];
-    let _e27 = dispatch_light(_e21, _e26, position_4, normal_4);
-    return _e27;
+    let _e22 = params[entry];
+    let _e27 = params[(entry + 1u)];
+    let _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    return _e28;
 }
 
 fn lambert_shade(m: Lambert, ray_12: Ray, hit_2: Hit) -> vec3<f32> {

@@ -116,6 +116,7 @@ struct LightSample {
     vec3 dir;
     float dist;
     vec3 radiance;
+    float pdf;
 };
 struct DirectionalLight {
     vec3 direction;
@@ -134,6 +135,7 @@ struct SphereLight {
     float radius;
     vec3 color;
     float intensity;
+    uint lamp;
 };
 struct SpotLight {
     vec3 position;
@@ -1084,12 +1086,12 @@ LightSample directional_light(DirectionalLight l, vec3 position_2, vec3 normal_2
     vec3 dir_4 = -(_e4);
     if ((dot(dir_4, dir_4) == 0.0)) {
         uint _e14 = F32_INF;
-        return LightSample(vec3(0.0, 1.0, 0.0), uintBitsToFloat(_e14), vec3(0.0));
+        return LightSample(vec3(0.0, 1.0, 0.0), uintBitsToFloat(_e14), vec3(0.0), 0.0);
     }
-    uint _e20 = F32_INF;
-    float _e22 = shadow_query(position_2, normal_2, dir_4, uintBitsToFloat(_e20));
-    uint _e24 = F32_INF;
-    return LightSample(dir_4, uintBitsToFloat(_e24), ((l.color * vec3(l.intensity)) * vec3(_e22)));
+    uint _e21 = F32_INF;
+    float _e23 = shadow_query(position_2, normal_2, dir_4, uintBitsToFloat(_e21));
+    uint _e25 = F32_INF;
+    return LightSample(dir_4, uintBitsToFloat(_e25), ((l.color * vec3(l.intensity)) * vec3(_e23)), 0.0);
 }
 
 PointLight load_PointLight(uint offset_9) {
@@ -1117,7 +1119,7 @@ LightSample point_light(PointLight l_1, vec3 position_3, vec3 normal_3) {
     }
     float _e26 = shadow_query(position_3, normal_3, dir_5, dist_2);
     float _e28 = strength;
-    return LightSample(dir_5, dist_2, ((l_1.color * vec3(_e28)) * vec3(_e26)));
+    return LightSample(dir_5, dist_2, ((l_1.color * vec3(_e28)) * vec3(_e26)), 0.0);
 }
 
 SphereLight load_SphereLight(uint offset_10) {
@@ -1129,7 +1131,8 @@ SphereLight load_SphereLight(uint offset_10) {
     uint _e36 = _group_0_binding_6_cs[(offset_10 + 5u)];
     uint _e42 = _group_0_binding_6_cs[(offset_10 + 6u)];
     uint _e49 = _group_0_binding_6_cs[(offset_10 + 7u)];
-    return SphereLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24), vec3(uintBitsToFloat(_e30), uintBitsToFloat(_e36), uintBitsToFloat(_e42)), uintBitsToFloat(_e49));
+    uint _e55 = _group_0_binding_6_cs[(offset_10 + 8u)];
+    return SphereLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24), vec3(uintBitsToFloat(_e30), uintBitsToFloat(_e36), uintBitsToFloat(_e42)), uintBitsToFloat(_e49), _e55);
 }
 
 mat3x3 orthonormal_basis(vec3 n_6) {
@@ -1145,23 +1148,24 @@ LightSample sphere_light(SphereLight l_2, vec3 position_4, vec3 normal_4) {
     float d2_ = dot(to_center, to_center);
     float r2_2 = max((l_2.radius * l_2.radius), 1e-20);
     if ((d2_ <= r2_2)) {
-        return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0));
+        return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
     vec3 w_3 = (to_center * vec3(inversesqrt(d2_)));
     float s2_ = (r2_2 / d2_);
     float cos_max = sqrt((1.0 - s2_));
     float one_minus_cos_max = (s2_ / (1.0 + cos_max));
-    vec2 _e30 = rand2_next();
-    float cos_t = (1.0 - (_e30.x * one_minus_cos_max));
+    vec2 _e31 = rand2_next();
+    float cos_t = (1.0 - (_e31.x * one_minus_cos_max));
     float sin_t = sqrt(max((1.0 - (cos_t * cos_t)), 0.0));
-    float phi = (TAU * _e30.y);
-    mat3x3 _e44 = orthonormal_basis(w_3);
-    vec3 _e51 = normalize_vec3f((_e44 * vec3((cos(phi) * sin_t), (sin(phi) * sin_t), cos_t)));
-    float along_2 = dot(to_center, _e51);
+    float phi = (TAU * _e31.y);
+    mat3x3 _e45 = orthonormal_basis(w_3);
+    vec3 _e52 = normalize_vec3f((_e45 * vec3((cos(phi) * sin_t), (sin(phi) * sin_t), cos_t)));
+    float along_2 = dot(to_center, _e52);
     float dist_3 = max((along_2 - sqrt(max((r2_2 - (d2_ - (along_2 * along_2))), 0.0))), 0.0);
     float weight = (((l_2.intensity * 2.0) * one_minus_cos_max) / r2_2);
-    float _e67 = shadow_query(position_4, normal_4, _e51, dist_3);
-    return LightSample(_e51, dist_3, ((l_2.color * vec3(weight)) * vec3(_e67)));
+    float _e68 = shadow_query(position_4, normal_4, _e52, dist_3);
+    float pdf = ((l_2.lamp == 1u) ? (1.0 / (TAU * one_minus_cos_max)) : 0.0);
+    return LightSample(_e52, dist_3, ((l_2.color * vec3(weight)) * vec3(_e68)), pdf);
 }
 
 SpotLight load_SpotLight(uint offset_11) {
@@ -1198,11 +1202,11 @@ LightSample spot_light(SpotLight l_3, vec3 position_5, vec3 normal_5) {
     strength_1 = (_e43 * smoothstep(cos_outer, cos_inner, dot(-(dir_6), _e46)));
     float _e50 = strength_1;
     if ((_e50 <= 0.0)) {
-        return LightSample(dir_6, dist_4, vec3(0.0));
+        return LightSample(dir_6, dist_4, vec3(0.0), 0.0);
     }
-    float _e56 = shadow_query(position_5, normal_5, dir_6, dist_4);
-    float _e58 = strength_1;
-    return LightSample(dir_6, dist_4, ((l_3.color * vec3(_e58)) * vec3(_e56)));
+    float _e57 = shadow_query(position_5, normal_5, dir_6, dist_4);
+    float _e59 = strength_1;
+    return LightSample(dir_6, dist_4, ((l_3.color * vec3(_e59)) * vec3(_e57)), 0.0);
 }
 
 LightSample dispatch_light(uint type_id_3, uint offset_12, vec3 position_6, vec3 normal_6) {
@@ -1231,19 +1235,19 @@ LightSample dispatch_light(uint type_id_3, uint offset_12, vec3 position_6, vec3
             break;
         }
     }
-    return LightSample(vec3(0.0), 0.0, vec3(0.0));
+    return LightSample(vec3(0.0), 0.0, vec3(0.0), 0.0);
 }
 
 LightSample sample_light_query(uint i_1, vec3 position_7, vec3 normal_7) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
     if ((i_1 >= frame_4.light_count)) {
-        return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0));
+        return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
     uint entry_1 = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    uint _e21 = _group_0_binding_6_cs[entry_1];
-    uint _e26 = _group_0_binding_6_cs[(entry_1 + 1u)];
-    LightSample _e27 = dispatch_light(_e21, _e26, position_7, normal_7);
-    return _e27;
+    uint _e22 = _group_0_binding_6_cs[entry_1];
+    uint _e27 = _group_0_binding_6_cs[(entry_1 + 1u)];
+    LightSample _e28 = dispatch_light(_e22, _e27, position_7, normal_7);
+    return _e28;
 }
 
 vec3 lambert_shade(Lambert m, Ray ray_15, Hit hit_2) {

@@ -153,7 +153,7 @@ struct LightSample {
     float3 dir;
     float dist;
     float3 radiance;
-    int _end_pad_0;
+    float pdf;
 };
 
 struct DirectionalLight {
@@ -179,6 +179,10 @@ struct SphereLight {
     float radius;
     float3 color;
     float intensity;
+    uint lamp;
+    int _end_pad_0;
+    int _end_pad_1;
+    int _end_pad_2;
 };
 
 struct SpotLight {
@@ -1392,11 +1396,12 @@ float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_
     return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2) {
+LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
     LightSample ret = (LightSample)0;
     ret.dir = arg0;
     ret.dist = arg1;
     ret.radiance = arg2;
+    ret.pdf = arg3;
     return ret;
 }
 
@@ -1406,13 +1411,13 @@ LightSample directional_light(DirectionalLight l, float3 position_2, float3 norm
     float3 dir_4 = -(_e4);
     if ((dot(dir_4, dir_4) == 0.0)) {
         uint _e14 = F32_INF;
-        const LightSample lightsample = ConstructLightSample(float3(0.0, 1.0, 0.0), asfloat(_e14), (0.0).xxx);
+        const LightSample lightsample = ConstructLightSample(float3(0.0, 1.0, 0.0), asfloat(_e14), (0.0).xxx, 0.0);
         return lightsample;
     }
-    uint _e20 = F32_INF;
-    const float _e22 = shadow_query(position_2, normal_2, dir_4, asfloat(_e20));
-    uint _e24 = F32_INF;
-    const LightSample lightsample_1 = ConstructLightSample(dir_4, asfloat(_e24), ((l.color * (l.intensity).xxx) * (_e22).xxx));
+    uint _e21 = F32_INF;
+    const float _e23 = shadow_query(position_2, normal_2, dir_4, asfloat(_e21));
+    uint _e25 = F32_INF;
+    const LightSample lightsample_1 = ConstructLightSample(dir_4, asfloat(_e25), ((l.color * (l.intensity).xxx) * (_e23).xxx), 0.0);
     return lightsample_1;
 }
 
@@ -1455,16 +1460,17 @@ LightSample point_light(PointLight l_1, float3 position_3, float3 normal_3)
     }
     const float _e26 = shadow_query(position_3, normal_3, dir_5, dist_2);
     float _e28 = strength;
-    const LightSample lightsample_2 = ConstructLightSample(dir_5, dist_2, ((l_1.color * (_e28).xxx) * (_e26).xxx));
+    const LightSample lightsample_2 = ConstructLightSample(dir_5, dist_2, ((l_1.color * (_e28).xxx) * (_e26).xxx), 0.0);
     return lightsample_2;
 }
 
-SphereLight ConstructSphereLight(float3 arg0, float arg1, float3 arg2, float arg3) {
+SphereLight ConstructSphereLight(float3 arg0, float arg1, float3 arg2, float arg3, uint arg4) {
     SphereLight ret = (SphereLight)0;
     ret.position = arg0;
     ret.radius = arg1;
     ret.color = arg2;
     ret.intensity = arg3;
+    ret.lamp = arg4;
     return ret;
 }
 
@@ -1478,7 +1484,8 @@ SphereLight load_SphereLight(uint offset_10)
     uint _e36 = asuint(params.Load((offset_10 + 5u)*4));
     uint _e42 = asuint(params.Load((offset_10 + 6u)*4));
     uint _e49 = asuint(params.Load((offset_10 + 7u)*4));
-    const SphereLight spherelight = ConstructSphereLight(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), asfloat(_e24), float3(asfloat(_e30), asfloat(_e36), asfloat(_e42)), asfloat(_e49));
+    uint _e55 = asuint(params.Load((offset_10 + 8u)*4));
+    const SphereLight spherelight = ConstructSphereLight(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), asfloat(_e24), float3(asfloat(_e30), asfloat(_e36), asfloat(_e42)), asfloat(_e49), _e55);
     return spherelight;
 }
 
@@ -1497,24 +1504,25 @@ LightSample sphere_light(SphereLight l_2, float3 position_4, float3 normal_4)
     float d2_ = dot(to_center, to_center);
     float r2_2 = max((l_2.radius * l_2.radius), 1e-20);
     if ((d2_ <= r2_2)) {
-        const LightSample lightsample_3 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx);
+        const LightSample lightsample_3 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_3;
     }
     float3 w_3 = (to_center * (rsqrt(d2_)).xxx);
     float s2_ = (r2_2 / d2_);
     float cos_max = sqrt((1.0 - s2_));
     float one_minus_cos_max = (s2_ / (1.0 + cos_max));
-    const float2 _e30 = rand2_next();
-    float cos_t = (1.0 - (_e30.x * one_minus_cos_max));
+    const float2 _e31 = rand2_next();
+    float cos_t = (1.0 - (_e31.x * one_minus_cos_max));
     float sin_t = sqrt(max((1.0 - (cos_t * cos_t)), 0.0));
-    float phi = (TAU * _e30.y);
-    const float3x3 _e44 = orthonormal_basis(w_3);
-    const float3 _e51 = normalize_vec3f(mul(float3((cos(phi) * sin_t), (sin(phi) * sin_t), cos_t), _e44));
-    float along_2 = dot(to_center, _e51);
+    float phi = (TAU * _e31.y);
+    const float3x3 _e45 = orthonormal_basis(w_3);
+    const float3 _e52 = normalize_vec3f(mul(float3((cos(phi) * sin_t), (sin(phi) * sin_t), cos_t), _e45));
+    float along_2 = dot(to_center, _e52);
     float dist_3 = max((along_2 - sqrt(max((r2_2 - (d2_ - (along_2 * along_2))), 0.0))), 0.0);
     float weight = (((l_2.intensity * 2.0) * one_minus_cos_max) / r2_2);
-    const float _e67 = shadow_query(position_4, normal_4, _e51, dist_3);
-    const LightSample lightsample_4 = ConstructLightSample(_e51, dist_3, ((l_2.color * (weight).xxx) * (_e67).xxx));
+    const float _e68 = shadow_query(position_4, normal_4, _e52, dist_3);
+    float pdf = ((l_2.lamp == 1u) ? (1.0 / (TAU * one_minus_cos_max)) : 0.0);
+    const LightSample lightsample_4 = ConstructLightSample(_e52, dist_3, ((l_2.color * (weight).xxx) * (_e68).xxx), pdf);
     return lightsample_4;
 }
 
@@ -1568,12 +1576,12 @@ LightSample spot_light(SpotLight l_3, float3 position_5, float3 normal_5)
     strength_1 = (_e43 * smoothstep(cos_outer, cos_inner, dot(-(dir_6), _e46)));
     float _e50 = strength_1;
     if ((_e50 <= 0.0)) {
-        const LightSample lightsample_5 = ConstructLightSample(dir_6, dist_4, (0.0).xxx);
+        const LightSample lightsample_5 = ConstructLightSample(dir_6, dist_4, (0.0).xxx, 0.0);
         return lightsample_5;
     }
-    const float _e56 = shadow_query(position_5, normal_5, dir_6, dist_4);
-    float _e58 = strength_1;
-    const LightSample lightsample_6 = ConstructLightSample(dir_6, dist_4, ((l_3.color * (_e58).xxx) * (_e56).xxx));
+    const float _e57 = shadow_query(position_5, normal_5, dir_6, dist_4);
+    float _e59 = strength_1;
+    const LightSample lightsample_6 = ConstructLightSample(dir_6, dist_4, ((l_3.color * (_e59).xxx) * (_e57).xxx), 0.0);
     return lightsample_6;
 }
 
@@ -1620,14 +1628,14 @@ LightSample sample_light_query(uint i_1, float3 position_7, float3 normal_7)
 {
     FrameUniforms frame_4 = frame;
     if ((i_1 >= frame_4.light_count)) {
-        const LightSample lightsample_12 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx);
+        const LightSample lightsample_12 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_12;
     }
     uint entry_1 = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    uint _e21 = asuint(params.Load(entry_1*4));
-    uint _e26 = asuint(params.Load((entry_1 + 1u)*4));
-    const LightSample _e27 = dispatch_light(_e21, _e26, position_7, normal_7);
-    const LightSample lightsample_13 = _e27;
+    uint _e22 = asuint(params.Load(entry_1*4));
+    uint _e27 = asuint(params.Load((entry_1 + 1u)*4));
+    const LightSample _e28 = dispatch_light(_e22, _e27, position_7, normal_7);
+    const LightSample lightsample_13 = _e28;
     return lightsample_13;
 }
 

@@ -143,7 +143,8 @@ struct Lambert {
 struct LightSample {
     metal::packed_float3 dir;
     float dist;
-    metal::float3 radiance;
+    metal::packed_float3 radiance;
+    float pdf;
 };
 struct DirectionalLight {
     metal::float3 direction;
@@ -163,6 +164,8 @@ struct SphereLight {
     float radius;
     metal::packed_float3 color;
     float intensity;
+    uint lamp;
+    char _pad5[12];
 };
 struct SpotLight {
     metal::float3 position;
@@ -1397,12 +1400,12 @@ LightSample directional_light(
     metal::float3 dir_4 = -(_e4);
     if (metal::dot(dir_4, dir_4) == 0.0) {
         uint _e14 = F32_INF;
-        return LightSample {metal::float3(0.0, 1.0, 0.0), as_type<float>(_e14), metal::float3(0.0)};
+        return LightSample {metal::float3(0.0, 1.0, 0.0), as_type<float>(_e14), metal::float3(0.0), 0.0};
     }
-    uint _e20 = F32_INF;
-    float _e22 = shadow_query(position_2, normal_2, dir_4, as_type<float>(_e20), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
-    uint _e24 = F32_INF;
-    return LightSample {dir_4, as_type<float>(_e24), (l.color * metal::float3(l.intensity)) * metal::float3(_e22)};
+    uint _e21 = F32_INF;
+    float _e23 = shadow_query(position_2, normal_2, dir_4, as_type<float>(_e21), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    uint _e25 = F32_INF;
+    return LightSample {dir_4, as_type<float>(_e25), (l.color * metal::float3(l.intensity)) * metal::float3(_e23), 0.0};
 }
 
 PointLight load_PointLight(
@@ -1448,7 +1451,7 @@ LightSample point_light(
     }
     float _e26 = shadow_query(position_3, normal_3, dir_5, dist_2, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     float _e28 = strength;
-    return LightSample {dir_5, dist_2, (l_1.color * metal::float3(_e28)) * metal::float3(_e26)};
+    return LightSample {dir_5, dist_2, (l_1.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
 }
 
 SphereLight load_SphereLight(
@@ -1464,7 +1467,8 @@ SphereLight load_SphereLight(
     uint _e36 = params[offset_10 + 5u];
     uint _e42 = params[offset_10 + 6u];
     uint _e49 = params[offset_10 + 7u];
-    return SphereLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), as_type<float>(_e24), metal::float3(as_type<float>(_e30), as_type<float>(_e36), as_type<float>(_e42)), as_type<float>(_e49)};
+    uint _e55 = params[offset_10 + 8u];
+    return SphereLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), as_type<float>(_e24), metal::float3(as_type<float>(_e30), as_type<float>(_e36), as_type<float>(_e42)), as_type<float>(_e49), _e55};
 }
 
 metal::float3x3 orthonormal_basis(
@@ -1497,23 +1501,24 @@ LightSample sphere_light(
     float d2_ = metal::dot(to_center, to_center);
     float r2_2 = metal::max(l_2.radius * l_2.radius, 0.00000000000000000001);
     if (d2_ <= r2_2) {
-        return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0)};
+        return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
     metal::float3 w_3 = to_center * metal::float3(metal::rsqrt(d2_));
     float s2_ = r2_2 / d2_;
     float cos_max = metal::sqrt(1.0 - s2_);
     float one_minus_cos_max = s2_ / (1.0 + cos_max);
-    metal::float2 _e30 = rand2_next(rng_state);
-    float cos_t = 1.0 - (_e30.x * one_minus_cos_max);
+    metal::float2 _e31 = rand2_next(rng_state);
+    float cos_t = 1.0 - (_e31.x * one_minus_cos_max);
     float sin_t = metal::sqrt(metal::max(1.0 - (cos_t * cos_t), 0.0));
-    float phi = TAU * _e30.y;
-    metal::float3x3 _e44 = orthonormal_basis(w_3);
-    metal::float3 _e51 = normalize_vec3f(_e44 * metal::float3(metal::cos(phi) * sin_t, metal::sin(phi) * sin_t, cos_t));
-    float along_2 = metal::dot(to_center, _e51);
+    float phi = TAU * _e31.y;
+    metal::float3x3 _e45 = orthonormal_basis(w_3);
+    metal::float3 _e52 = normalize_vec3f(_e45 * metal::float3(metal::cos(phi) * sin_t, metal::sin(phi) * sin_t, cos_t));
+    float along_2 = metal::dot(to_center, _e52);
     float dist_3 = metal::max(along_2 - metal::sqrt(metal::max(r2_2 - (d2_ - (along_2 * along_2)), 0.0)), 0.0);
     float weight = ((l_2.intensity * 2.0) * one_minus_cos_max) / r2_2;
-    float _e67 = shadow_query(position_4, normal_4, _e51, dist_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
-    return LightSample {_e51, dist_3, (l_2.color * metal::float3(weight)) * metal::float3(_e67)};
+    float _e68 = shadow_query(position_4, normal_4, _e52, dist_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    float pdf = (l_2.lamp == 1u) ? (1.0 / (TAU * one_minus_cos_max)) : 0.0;
+    return LightSample {_e52, dist_3, (l_2.color * metal::float3(weight)) * metal::float3(_e68), pdf};
 }
 
 SpotLight load_SpotLight(
@@ -1568,11 +1573,11 @@ LightSample spot_light(
     strength_1 = _e43 * metal::smoothstep(cos_outer, cos_inner, metal::dot(-(dir_6), _e46));
     float _e50 = strength_1;
     if (_e50 <= 0.0) {
-        return LightSample {dir_6, dist_4, metal::float3(0.0)};
+        return LightSample {dir_6, dist_4, metal::float3(0.0), 0.0};
     }
-    float _e56 = shadow_query(position_5, normal_5, dir_6, dist_4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
-    float _e58 = strength_1;
-    return LightSample {dir_6, dist_4, (l_3.color * metal::float3(_e58)) * metal::float3(_e56)};
+    float _e57 = shadow_query(position_5, normal_5, dir_6, dist_4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    float _e59 = strength_1;
+    return LightSample {dir_6, dist_4, (l_3.color * metal::float3(_e59)) * metal::float3(_e57), 0.0};
 }
 
 LightSample dispatch_light(
@@ -1638,13 +1643,13 @@ LightSample sample_light_query(
 ) {
     FrameUniforms frame_4 = frame;
     if (i_1 >= frame_4.light_count) {
-        return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0)};
+        return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
     uint entry_1 = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
-    uint _e21 = params[entry_1];
-    uint _e26 = params[entry_1 + 1u];
-    LightSample _e27 = dispatch_light(_e21, _e26, position_7, normal_7, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
-    return _e27;
+    uint _e22 = params[entry_1];
+    uint _e27 = params[entry_1 + 1u];
+    LightSample _e28 = dispatch_light(_e22, _e27, position_7, normal_7, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    return _e28;
 }
 
 metal::float3 lambert_shade(

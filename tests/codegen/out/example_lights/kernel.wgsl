@@ -126,6 +126,7 @@ struct LightSample {
     dir: vec3<f32>,
     dist: f32,
     radiance: vec3<f32>,
+    pdf: f32,
 }
 
 struct DirectionalLight {
@@ -147,6 +148,7 @@ struct SphereLight {
     radius: f32,
     color: vec3<f32>,
     intensity: f32,
+    lamp: u32,
 }
 
 struct SpotLight {
@@ -1099,12 +1101,12 @@ fn directional_light(l: DirectionalLight, position_2: vec3<f32>, normal_2: vec3<
     let dir_4 = -(_e4);
     if (dot(dir_4, dir_4) == 0f) {
         let _e14 = F32_INF;
-        return LightSample(vec3<f32>(0f, 1f, 0f), bitcast<f32>(_e14), vec3(0f));
+        return LightSample(vec3<f32>(0f, 1f, 0f), bitcast<f32>(_e14), vec3(0f), 0f);
     }
-    let _e20 = F32_INF;
-    let _e22 = shadow_query(position_2, normal_2, dir_4, bitcast<f32>(_e20));
-    let _e24 = F32_INF;
-    return LightSample(dir_4, bitcast<f32>(_e24), ((l.color * vec3(l.intensity)) * vec3(_e22)));
+    let _e21 = F32_INF;
+    let _e23 = shadow_query(position_2, normal_2, dir_4, bitcast<f32>(_e21));
+    let _e25 = F32_INF;
+    return LightSample(dir_4, bitcast<f32>(_e25), ((l.color * vec3(l.intensity)) * vec3(_e23)), 0f);
 }
 
 fn load_PointLight(offset_9: u32) -> PointLight {
@@ -1133,7 +1135,7 @@ fn point_light(l_1: PointLight, position_3: vec3<f32>, normal_3: vec3<f32>) -> L
     }
     let _e26 = shadow_query(position_3, normal_3, dir_5, dist_2);
     let _e28 = strength;
-    return LightSample(dir_5, dist_2, ((l_1.color * vec3(_e28)) * vec3(_e26)));
+    return LightSample(dir_5, dist_2, ((l_1.color * vec3(_e28)) * vec3(_e26)), 0f);
 }
 
 fn load_SphereLight(offset_10: u32) -> SphereLight {
@@ -1145,7 +1147,8 @@ fn load_SphereLight(offset_10: u32) -> SphereLight {
     let _e36 = params[(offset_10 + 5u)];
     let _e42 = params[(offset_10 + 6u)];
     let _e49 = params[(offset_10 + 7u)];
-    return SphereLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), bitcast<f32>(_e24), vec3<f32>(bitcast<f32>(_e30), bitcast<f32>(_e36), bitcast<f32>(_e42)), bitcast<f32>(_e49));
+    let _e55 = params[(offset_10 + 8u)];
+    return SphereLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), bitcast<f32>(_e24), vec3<f32>(bitcast<f32>(_e30), bitcast<f32>(_e36), bitcast<f32>(_e42)), bitcast<f32>(_e49), _e55);
 }
 
 fn orthonormal_basis(n_6: vec3<f32>) -> mat3x3<f32> {
@@ -1161,23 +1164,24 @@ fn sphere_light(l_2: SphereLight, position_4: vec3<f32>, normal_4: vec3<f32>) ->
     let d2_ = dot(to_center, to_center);
     let r2_2 = max((l_2.radius * l_2.radius), 0.00000000000000000001f);
     if (d2_ <= r2_2) {
-        return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f));
+        return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
     let w_3 = (to_center * vec3(inverseSqrt(d2_)));
     let s2_ = (r2_2 / d2_);
     let cos_max = sqrt((1f - s2_));
     let one_minus_cos_max = (s2_ / (1f + cos_max));
-    let _e30 = rand2_next();
-    let cos_t = (1f - (_e30.x * one_minus_cos_max));
+    let _e31 = rand2_next();
+    let cos_t = (1f - (_e31.x * one_minus_cos_max));
     let sin_t = sqrt(max((1f - (cos_t * cos_t)), 0f));
-    let phi = (TAU * _e30.y);
-    let _e44 = orthonormal_basis(w_3);
-    let _e51 = normalize_vec3f((_e44 * vec3<f32>((cos(phi) * sin_t), (sin(phi) * sin_t), cos_t)));
-    let along_2 = dot(to_center, _e51);
+    let phi = (TAU * _e31.y);
+    let _e45 = orthonormal_basis(w_3);
+    let _e52 = normalize_vec3f((_e45 * vec3<f32>((cos(phi) * sin_t), (sin(phi) * sin_t), cos_t)));
+    let along_2 = dot(to_center, _e52);
     let dist_3 = max((along_2 - sqrt(max((r2_2 - (d2_ - (along_2 * along_2))), 0f))), 0f);
     let weight = (((l_2.intensity * 2f) * one_minus_cos_max) / r2_2);
-    let _e67 = shadow_query(position_4, normal_4, _e51, dist_3);
-    return LightSample(_e51, dist_3, ((l_2.color * vec3(weight)) * vec3(_e67)));
+    let _e68 = shadow_query(position_4, normal_4, _e52, dist_3);
+    let pdf = select(0f, (1f / (TAU * one_minus_cos_max)), (l_2.lamp == 1u));
+    return LightSample(_e52, dist_3, ((l_2.color * vec3(weight)) * vec3(_e68)), pdf);
 }
 
 fn load_SpotLight(offset_11: u32) -> SpotLight {
@@ -1215,11 +1219,11 @@ fn spot_light(l_3: SpotLight, position_5: vec3<f32>, normal_5: vec3<f32>) -> Lig
     strength_1 = (_e43 * smoothstep(cos_outer, cos_inner, dot(-(dir_6), _e46)));
     let _e50 = strength_1;
     if (_e50 <= 0f) {
-        return LightSample(dir_6, dist_4, vec3(0f));
+        return LightSample(dir_6, dist_4, vec3(0f), 0f);
     }
-    let _e56 = shadow_query(position_5, normal_5, dir_6, dist_4);
-    let _e58 = strength_1;
-    return LightSample(dir_6, dist_4, ((l_3.color * vec3(_e58)) * vec3(_e56)));
+    let _e57 = shadow_query(position_5, normal_5, dir_6, dist_4);
+    let _e59 = strength_1;
+    return LightSample(dir_6, dist_4, ((l_3.color * vec3(_e59)) * vec3(_e57)), 0f);
 }
 
 fn dispatch_light(type_id_3: u32, offset_12: u32, position_6: vec3<f32>, normal_6: vec3<f32>) -> LightSample {
@@ -1253,13 +1257,13 @@ fn dispatch_light(type_id_3: u32, offset_12: u32, position_6: vec3<f32>, normal_
 fn sample_light_query(i_1: u32, position_7: vec3<f32>, normal_7: vec3<f32>) -> LightSample {
     let frame_4 = frame;
     if (i_1 >= frame_4.light_count) {
-        return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f));
+        return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
     let entry_1 = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    let _e21 = params[entry_1];
-    let _e26 = params[(entry_1 + 1u)];
-    let _e27 = dispatch_light(_e21, _e26, position_7, normal_7);
-    return _e27;
+    let _e22 = params[entry_1];
+    let _e27 = params[(entry_1 + 1u)];
+    let _e28 = dispatch_light(_e22, _e27, position_7, normal_7);
+    return _e28;
 }
 
 fn lambert_shade(m: Lambert, ray_15: Ray, hit_2: Hit) -> vec3<f32> {

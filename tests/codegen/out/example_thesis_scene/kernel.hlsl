@@ -140,7 +140,7 @@ struct LightSample {
     float3 dir;
     float dist;
     float3 radiance;
-    int _end_pad_0;
+    float pdf;
 };
 
 struct PointLight {
@@ -1273,11 +1273,12 @@ float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_
     return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2) {
+LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
     LightSample ret = (LightSample)0;
     ret.dir = arg0;
     ret.dist = arg1;
     ret.radiance = arg2;
+    ret.pdf = arg3;
     return ret;
 }
 
@@ -1295,7 +1296,7 @@ LightSample point_light(PointLight l, float3 position_2, float3 normal_2)
     }
     const float _e26 = shadow_query(position_2, normal_2, dir_4, dist_2);
     float _e28 = strength;
-    const LightSample lightsample = ConstructLightSample(dir_4, dist_2, ((l.color * (_e28).xxx) * (_e26).xxx));
+    const LightSample lightsample = ConstructLightSample(dir_4, dist_2, ((l.color * (_e28).xxx) * (_e26).xxx), 0.0);
     return lightsample;
 }
 
@@ -1311,14 +1312,14 @@ LightSample sample_light_query(uint i_1, float3 position_4, float3 normal_4)
 {
     FrameUniforms frame_4 = frame;
     if ((i_1 >= frame_4.light_count)) {
-        const LightSample lightsample_2 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx);
+        const LightSample lightsample_2 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_2;
     }
     uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    uint _e21 = asuint(params.Load(entry*4));
-    uint _e26 = asuint(params.Load((entry + 1u)*4));
-    const LightSample _e27 = dispatch_light(_e21, _e26, position_4, normal_4);
-    const LightSample lightsample_3 = _e27;
+    uint _e22 = asuint(params.Load(entry*4));
+    uint _e27 = asuint(params.Load((entry + 1u)*4));
+    const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    const LightSample lightsample_3 = _e28;
     return lightsample_3;
 }
 
