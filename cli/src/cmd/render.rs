@@ -311,8 +311,13 @@ fn render_frames(
         return fail("the scene was not compiled", ctx);
     };
     let fps = fa.fps.unwrap_or(desc.settings.fps);
+    let started = std::time::Instant::now();
+    let mut renderer = match Renderer::new(gpu, compiled, options) {
+        Ok(r) => r,
+        Err(e) => return render_failure(&e, &compiled.checked.sources, ctx),
+    };
     let (start, end) = match fa.range {
-        frames::FrameRange::All => (0, desc.settings.frames.max(1)),
+        frames::FrameRange::All => (0, animation::frame_count(desc, &renderer, fps)),
         frames::FrameRange::Span { start, end } => (start, end),
     };
     if end - start > 1 && !frames::has_placeholder(&args.output) {
@@ -327,17 +332,12 @@ fn render_frames(
         );
     }
     let list = frames::shard_frames(start, end, fa.shard);
-    if !animation::is_animated(desc) {
+    if !animation::is_animated_with(desc, &renderer) {
         warn(
-            "the scene has no `animate` entry: every frame is the same image",
+            "the scene has no `animate` entry and its models no animation: every frame is the same image",
             ctx,
         );
     }
-    let started = std::time::Instant::now();
-    let mut renderer = match Renderer::new(gpu, compiled, options) {
-        Ok(r) => r,
-        Err(e) => return render_failure(&e, &compiled.checked.sources, ctx),
-    };
     let bar = frame_bar(list.len() as u64);
     let mut first: Option<RenderStats> = None;
     let mut last: Option<RenderStats> = None;

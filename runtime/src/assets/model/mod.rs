@@ -13,7 +13,8 @@
 //! 3. `nodes::walk`: the default scene (or the first; without scenes, every parentless node),
 //!    depth first, children in order, accumulating world transforms. Each node with a mesh adds
 //!    one [`MeshInstance`] per primitive; each camera and `KHR_lights_punctual` light is placed
-//!    in world space.
+//!    in world space. Then `animation::read` reads the first animation's channels
+//!    ([`NodeAnimation`], evaluated per frame as rigid node motion).
 //! 4. On first use, `primitive::convert` turns a glTF primitive into a [`MeshData`] through the
 //!    checked accessor reader (`accessor.rs`), and `materials::convert` a glTF material into a
 //!    [`GltfMaterial`], decoding its base-colour image into a [`TextureData`].
@@ -26,7 +27,7 @@
 //!
 //! - One [`MeshData`] per *used* glTF primitive of mode `TRIANGLES`, converted once however many
 //!   nodes use it: instancing is [`MeshInstance`]s sharing a `mesh` index. Other modes, morph
-//!   targets, skins, animations and extensions other than `KHR_lights_punctual` and
+//!   targets, skins, animations after the first, `weights` channels and extensions other than `KHR_lights_punctual` and
 //!   `KHR_materials_emissive_strength` are skipped with a warning (an unsupported extension the
 //!   file *requires* is an error).
 //! - Every `MeshInstance::mesh` and `::material` and every `GltfMaterial::base_color_texture` is
@@ -38,6 +39,7 @@
 //!   top-left), so no coordinate is changed on import.
 
 mod accessor;
+pub mod animation;
 mod buffers;
 mod document;
 mod materials;
@@ -51,8 +53,11 @@ pub(crate) mod buffers_for_tests {
 }
 
 use std::path::Path;
+use std::sync::Arc;
 
 use glam::{Mat4, Vec3};
+
+pub use animation::NodeAnimation;
 
 use super::{AssetError, AssetRoots, Bounds, MeshData, TextureData};
 
@@ -73,6 +78,8 @@ pub struct ModelScene {
     pub cameras: Vec<GltfCamera>,
     /// The `KHR_lights_punctual` lights of the scene's nodes, in node order.
     pub lights: Vec<GltfLight>,
+    /// The file's first animation (rigid node motion), if it has one with a usable channel.
+    pub animation: Option<Arc<NodeAnimation>>,
     /// What was skipped or approximated, one sentence each.
     pub warnings: Vec<String>,
 }

@@ -7,11 +7,13 @@
 //! converted once (`mesh_cache` in [`build`]), so nodes sharing a mesh share its `MeshData`.
 
 use std::collections::hash_map::{Entry, HashMap};
+use std::sync::Arc;
 
 use glam::{Mat4, Quat, Vec3};
 use gltf::json;
 use gltf::json::validation::Checked;
 
+use super::animation;
 use super::materials::Materials;
 use super::{
     primitive, Ctx, GltfCamera, GltfLight, LightKind, MeshInstance, ModelScene, Projection,
@@ -42,26 +44,51 @@ pub(super) fn build(ctx: &Ctx<'_>) -> Result<ModelScene, AssetError> {
             ignored.join(", ")
         ));
     }
-    if !root.skins.is_empty() {
-        scene
-            .warnings
-            .push("skins are ignored: skinned meshes are placed by their node, unposed".to_owned());
-    }
-    if !root.animations.is_empty() {
-        scene
-            .warnings
-            .push("animations are ignored: the static pose is used".to_owned());
+    for (i, skin) in root.skins.iter().enumerate() {
+        let users: Vec<String> = root
+            .nodes
+            .iter()
+            .enumerate()
+            .filter(|(_, node)| node.skin.is_some_and(|s| s.value() == i))
+            .map(|(n, _)| format!("nodes[{n}]"))
+            .collect();
+        let name = skin
+            .name
+            .as_ref()
+            .map(|n| format!(" (`{n}`)"))
+            .unwrap_or_default();
+        scene.warnings.push(if users.is_empty() {
+            format!("skins[{i}]{name} is not imported (no node uses it)")
+        } else {
+            format!(
+                "skins[{i}]{name} is not imported: the mesh(es) of {} are drawn unposed, placed by their node",
+                users.join(", ")
+            )
+        });
     }
 
     let roots = scene_roots(root, &mut scene.warnings);
     let mut visited = vec![false; root.nodes.len()];
-    let mut stack: Vec<(usize, Mat4)> = roots.iter().rev().map(|&n| (n, Mat4::IDENTITY)).collect();
-    while let Some((n, parent)) = stack.pop() {
+    // Each scene node's parent, as the walk reached it (for the animation).
+    let mut parents: Vec<Option<usize>> = vec![None; root.nodes.len()];
+    let mut order: Vec<usize> = Vec::new();
+    let mut stack: Vec<(usize, Mat4, Option<usize>)> = roots
+        .iter()
+        .rev()
+        .map(|&n| (n, Mat4::IDENTITY, None))
+        .collect();
+    while let Some((n, parent, parent_node)) = stack.pop() {
         let Some(node) = root.nodes.get(n) else {
             continue; // validated: cannot happen
         };
         match visited.get_mut(n) {
-            Some(seen) if !*seen => *seen = true,
+            Some(seen) if !*seen => {
+                *seen = true;
+                order.push(n);
+                if let Some(slot) = parents.get_mut(n) {
+                    *slot = parent_node;
+                }
+            }
             _ => {
                 scene.warnings.push(format!(
                     "nodes[{n}] is reached more than once (a cycle or a shared child), skipped there"
@@ -107,9 +134,10 @@ pub(super) fn build(ctx: &Ctx<'_>) -> Result<ModelScene, AssetError> {
             }
         }
         for child in node.children.iter().flatten().rev() {
-            stack.push((child.value(), world));
+            stack.push((child.value(), world, Some(n)));
         }
     }
+    scene.animation = animation::read(ctx, &parents, &order, &mut scene.warnings).map(Arc::new);
     scene.materials = materials.materials;
     scene.textures = materials.textures;
     Ok(scene)

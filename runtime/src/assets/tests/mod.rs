@@ -6,6 +6,7 @@ mod confine;
 mod fuzz;
 mod fuzz_files;
 mod gltf;
+mod gltf_animation;
 mod gltf_builder;
 mod gltf_scene;
 mod mesh;
