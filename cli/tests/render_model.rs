@@ -223,3 +223,120 @@ fn a_scene_path_leaving_its_folder_is_e0903() {
     assert!(t.contains("--asset-root"), "{t}");
     assert!(!dir.join("x.png").exists());
 }
+
+#[test]
+fn report_lists_what_the_model_brought() {
+    let dir = scratch("model-test", "report");
+    let out = rtc(&[
+        "render",
+        s(&example_glb()),
+        "-o",
+        s(&dir.join("r.png")),
+        "--size",
+        "16x12",
+        "--spp",
+        "1",
+        "--report",
+    ]);
+    if no_gpu(&out) {
+        return;
+    }
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    let printed = stdout(&out);
+    for line in [
+        "import report of model.glb\n",
+        "  meshes: 6 triangle mesh(es), 2896 triangle(s), placed 7 time(s)\n",
+        "  lights: 2\n",
+        "  cameras: 1\n",
+        "  animation: none\n",
+    ] {
+        assert!(printed.contains(line), "missing `{line}` in\n{printed}");
+    }
+}
+
+/// A glTF quad whose node a LINEAR translation channel moves from x = -1 at 0 s to +1 at 1 s
+/// (`anim.gltf` and `anim.bin` in `dir`).
+fn animated_gltf(dir: &Path) -> PathBuf {
+    let mut bin: Vec<u8> = Vec::new();
+    let floats = [
+        -0.5f32, -0.5, 0.0, 0.5, -0.5, 0.0, 0.5, 0.5, 0.0, -0.5, 0.5, 0.0,
+    ];
+    bin.extend(floats.iter().flat_map(|x| x.to_le_bytes()));
+    bin.extend([0u16, 1, 2, 0, 2, 3].iter().flat_map(|i| i.to_le_bytes()));
+    bin.extend([0.0f32, 1.0].iter().flat_map(|x| x.to_le_bytes()));
+    bin.extend(
+        [-1.0f32, 0.0, 0.0, 1.0, 0.0, 0.0]
+            .iter()
+            .flat_map(|x| x.to_le_bytes()),
+    );
+    std::fs::write(dir.join("anim.bin"), &bin).unwrap();
+    let gltf = serde_json::json!({
+        "asset": {"version": "2.0"},
+        "buffers": [{"uri": "anim.bin", "byteLength": 92}],
+        "bufferViews": [
+            {"buffer": 0, "byteOffset": 0, "byteLength": 48},
+            {"buffer": 0, "byteOffset": 48, "byteLength": 12},
+            {"buffer": 0, "byteOffset": 60, "byteLength": 8},
+            {"buffer": 0, "byteOffset": 68, "byteLength": 24}
+        ],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+             "min": [-0.5, -0.5, 0.0], "max": [0.5, 0.5, 0.0]},
+            {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"},
+            {"bufferView": 2, "componentType": 5126, "count": 2, "type": "SCALAR",
+             "min": [0.0], "max": [1.0]},
+            {"bufferView": 3, "componentType": 5126, "count": 2, "type": "VEC3"}
+        ],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "nodes": [{"mesh": 0}],
+        "scenes": [{"nodes": [0]}],
+        "animations": [{
+            "samplers": [{"input": 2, "output": 3}],
+            "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}}]
+        }]
+    });
+    let path = dir.join("anim.gltf");
+    std::fs::write(&path, serde_json::to_vec(&gltf).unwrap()).unwrap();
+    path
+}
+
+#[test]
+fn frames_all_of_an_animated_gltf_cover_its_animation_without_blas_builds() {
+    let dir = scratch("model-test", "animated");
+    let model = animated_gltf(&dir);
+    let out = rtc(&[
+        "render",
+        s(&model),
+        "-o",
+        s(&dir.join("f_%d.png")),
+        "--size",
+        "16x12",
+        "--spp",
+        "1",
+        "--frames",
+        "all",
+        "--fps",
+        "2",
+    ]);
+    if no_gpu(&out) {
+        return;
+    }
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    let printed = stdout(&out);
+    assert!(
+        printed.contains("frames: 3 of 0..3"),
+        "1 s at 2 fps, the last key's frame included:\n{printed}"
+    );
+    assert!(
+        printed.contains("1 BLAS builds at setup, 0 over the frames after it"),
+        "{printed}"
+    );
+    assert!(
+        !text(&out).contains("every frame is the same image"),
+        "{}",
+        text(&out)
+    );
+    for f in 0..3 {
+        assert!(dir.join(format!("f_{f}.png")).is_file(), "frame {f}");
+    }
+}

@@ -45,6 +45,9 @@ mod document;
 mod materials;
 mod nodes;
 mod primitive;
+mod report;
+
+pub use report::report;
 
 /// The URI decoders, for the tests.
 #[cfg(test)]
@@ -72,6 +75,9 @@ pub struct ModelScene {
     pub instances: Vec<MeshInstance>,
     /// The used materials (glTF's default material last, when a primitive has none).
     pub materials: Vec<GltfMaterial>,
+    /// What each of `materials` is in the file, for messages and the report: `materials[3]
+    /// (`Red`)`, or `glTF's default material`.
+    pub material_labels: Vec<String>,
     /// The decoded base-colour images of the materials.
     pub textures: Vec<TextureData>,
     /// The cameras of the scene's nodes, in node order; the first is the default camera.

@@ -109,8 +109,13 @@ pub(super) fn build(ctx: &Ctx<'_>) -> Result<ModelScene, AssetError> {
                 Entry::Occupied(e) => e.into_mut(),
                 Entry::Vacant(e) => e.insert(convert_mesh(ctx, m, &mut scene)?),
             };
-            for &(mesh, material) in converted.iter() {
-                let material = materials.get(ctx, material, &mut scene.warnings)?;
+            for &(mesh, gltf_material) in converted.iter() {
+                let material = materials.get(ctx, gltf_material, &mut scene.warnings)?;
+                if material == scene.material_labels.len() {
+                    scene
+                        .material_labels
+                        .push(material_label(root, gltf_material));
+                }
                 scene.instances.push(MeshInstance {
                     mesh,
                     material,
@@ -141,6 +146,17 @@ pub(super) fn build(ctx: &Ctx<'_>) -> Result<ModelScene, AssetError> {
     scene.materials = materials.materials;
     scene.textures = materials.textures;
     Ok(scene)
+}
+
+/// How a material is named in messages: `materials[3] (`Red`)`, or glTF's default material.
+fn material_label(root: &json::Root, m: Option<usize>) -> String {
+    match m {
+        None => "glTF's default material".to_owned(),
+        Some(m) => match root.materials.get(m).and_then(|x| x.name.as_ref()) {
+            Some(name) => format!("materials[{m}] (`{name}`)"),
+            None => format!("materials[{m}]"),
+        },
+    }
 }
 
 /// The root nodes to render: the default scene's, else the first scene's, else every node that

@@ -8,6 +8,7 @@ mod fuzz_files;
 mod gltf;
 mod gltf_animation;
 mod gltf_builder;
+mod gltf_report;
 mod gltf_scene;
 mod mesh;
 mod messages;
