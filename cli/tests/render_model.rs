@@ -1,7 +1,9 @@
 //! End-to-end tests of `rtc render model.glb` on lavapipe (skipped, saying so, where no adapter
 //! exists): a bare glTF file (the example's model without its camera and lights) renders with the
 //! defaults it prints, the model in the middle of the image and the sky at the top; a file with a
-//! camera and lights keeps them; a truncated file and `--scene` are clear errors, never a panic.
+//! camera and lights keeps them; the default light rig lights the side the file's camera sees;
+//! `--report` lists what was imported; `--frames all` of an animated file covers its animation
+//! without BLAS builds; a truncated file and `--scene` are clear errors, never a panic.
 //! Also the asset confinement seen from the command line: `--asset-root` must name a folder, and a
 //! scene path leading out of the scene's folder is E0903 with a help line naming `--asset-root`.
 
@@ -339,4 +341,91 @@ fn frames_all_of_an_animated_gltf_cover_its_animation_without_blas_builds() {
     for f in 0..3 {
         assert!(dir.join(format!("f_{f}.png")).is_file(), "frame {f}");
     }
+}
+
+/// A grey quad (`back.gltf`) facing -z, seen by the file's camera from (0, 0, -3) looking along
+/// +z: the side the old default light (from above, on the +z side) left black.
+fn back_lit_gltf(dir: &Path) -> PathBuf {
+    let mut bin: Vec<u8> = Vec::new();
+    // Positions wound counter-clockwise seen from -z, then normals (0, 0, -1).
+    let positions = [
+        1.0f32, -1.0, 0.0, -1.0, -1.0, 0.0, -1.0, 1.0, 0.0, 1.0, 1.0, 0.0,
+    ];
+    bin.extend(positions.iter().flat_map(|x| x.to_le_bytes()));
+    let normals = [0.0f32, 0.0, -1.0].repeat(4);
+    bin.extend(normals.iter().flat_map(|x| x.to_le_bytes()));
+    bin.extend([0u16, 1, 2, 0, 2, 3].iter().flat_map(|i| i.to_le_bytes()));
+    std::fs::write(dir.join("back.bin"), &bin).unwrap();
+    let gltf = serde_json::json!({
+        "asset": {"version": "2.0"},
+        "buffers": [{"uri": "back.bin", "byteLength": 108}],
+        "bufferViews": [
+            {"buffer": 0, "byteOffset": 0, "byteLength": 48},
+            {"buffer": 0, "byteOffset": 48, "byteLength": 48},
+            {"buffer": 0, "byteOffset": 96, "byteLength": 12}
+        ],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+             "min": [-1.0, -1.0, 0.0], "max": [1.0, 1.0, 0.0]},
+            {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
+            {"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}
+        ],
+        "materials": [{"pbrMetallicRoughness": {
+            "baseColorFactor": [0.8, 0.8, 0.8, 1.0], "metallicFactor": 0.0, "roughnessFactor": 1.0}}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2, "material": 0}]}],
+        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.6, "znear": 0.1}}],
+        "nodes": [
+            {"mesh": 0},
+            {"camera": 0, "translation": [0.0, 0.0, -3.0], "rotation": [0.0, 1.0, 0.0, 0.0]}
+        ],
+        "scenes": [{"nodes": [0, 1]}]
+    });
+    let path = dir.join("back.gltf");
+    std::fs::write(&path, serde_json::to_vec(&gltf).unwrap()).unwrap();
+    path
+}
+
+/// The mean Rec. 709 luminance of the linear image's central quarter.
+fn centre_luminance(png: &Path) -> f64 {
+    let image = read_image(png).expect("the image");
+    let (w, h) = (image.width(), image.height());
+    let (mut sum, mut n) = (0.0f64, 0.0f64);
+    for y in h / 4..3 * h / 4 {
+        for x in w / 4..3 * w / 4 {
+            let p = image.get(x, y).unwrap();
+            sum += 0.2126 * f64::from(p[0]) + 0.7152 * f64::from(p[1]) + 0.0722 * f64::from(p[2]);
+            n += 1.0;
+        }
+    }
+    sum / n
+}
+
+#[test]
+fn the_default_light_lights_what_the_files_camera_sees() {
+    let dir = scratch("model-test", "headlight");
+    let model = back_lit_gltf(&dir);
+    let exr = dir.join("back.exr");
+    let out = rtc(&[
+        "render",
+        s(&model),
+        "-o",
+        s(&exr),
+        "--size",
+        "32x24",
+        "--spp",
+        "1",
+    ]);
+    if no_gpu(&out) {
+        return;
+    }
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    let lum = centre_luminance(&exr);
+    eprintln!("centre luminance {lum}");
+    // The quad fills the centre. Under the headlight (intensity π, at cos ≈ 0.889 to the quad)
+    // a diffuse albedo of 0.8 gives 0.8 × 0.889 ≈ 0.71, plus a little specular; the sky fill
+    // grazes the vertical quad. The old rig (one light from the +z side) gave exactly 0 here.
+    assert!(
+        lum > 0.5 && lum < 1.0,
+        "the side the camera sees is not lit as the rig says: {lum}"
+    );
 }
