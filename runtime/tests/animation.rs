@@ -143,7 +143,7 @@ scene s {
     camera Pinhole { position: vec3f(0.0, 0.75, 5.0), look_at: vec3f(0.0, 0.75, 0.0) }
     background ConstantBackground { color: vec3f(0.0) }
     light sun DirectionalLight { direction: vec3f(0.0, 0.0, -1.0), intensity: 3.0 }
-    model "anim.gltf" {}
+    model "anim.gltf" { transform: translate(vec3f(0.0, 0.0, -1.0)) }
 }
 "#,
     )
@@ -173,6 +173,32 @@ scene s {
         5,
         "1 s at 4 fps, the last key's frame included"
     );
+
+    // At 0.5 s node 0 is at x = 0 (halfway from -1 to +1), under the entry's translation, and
+    // node 1 (its child) 1.5 above it: exact matrices (tolerance 1e-6).
+    apply(&mut renderer, &evaluate(desc, 0.5)).expect("apply");
+    let moved: Vec<(String, glam::Vec3)> = renderer
+        .entities()
+        .objects()
+        .iter()
+        .map(|o| {
+            (
+                o.name.clone().unwrap_or_default(),
+                o.transform.w_axis.truncate(),
+            )
+        })
+        .collect();
+    assert_eq!(moved.len(), 2, "{moved:?}");
+    for (name, want) in [
+        ("#nodes[0]", glam::Vec3::new(0.0, 0.0, -1.0)),
+        ("#nodes[1]", glam::Vec3::new(0.0, 1.5, -1.0)),
+    ] {
+        let (_, got) = moved
+            .iter()
+            .find(|(n, _)| n.ends_with(name))
+            .unwrap_or_else(|| panic!("no object {name} in {moved:?}"));
+        assert!(got.abs_diff_eq(want, 1e-6), "{name}: {got} != {want}");
+    }
 
     let mut images = Vec::new();
     let mut stats = Vec::new();
