@@ -303,8 +303,15 @@ pub(crate) fn parse_gltf_with(
 ) -> Result<ModelScene, AssetError> {
     let (root, blob) = document::parse(bytes, path)?;
     let buffers = buffers::load(&root, blob, path, roots)?;
+    // The JSON text (a `.glb`'s first chunk; the container was checked by `document::parse`).
+    let json = if bytes.starts_with(b"glTF") {
+        document::split_glb(bytes).map_or(&[][..], |(json, _)| json)
+    } else {
+        bytes
+    };
     let ctx = Ctx {
         path,
+        json,
         root: &root,
         buffers: &buffers,
         roots,
@@ -315,6 +322,8 @@ pub(crate) fn parse_gltf_with(
 /// What every conversion step reads: the file's name, its validated JSON and its buffers.
 struct Ctx<'a> {
     path: &'a Path,
+    /// The JSON text, for what `gltf-json` does not keep (extensions it does not know).
+    json: &'a [u8],
     roots: &'a AssetRoots,
     root: &'a gltf::json::Root,
     buffers: &'a [Vec<u8>],

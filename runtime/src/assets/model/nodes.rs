@@ -39,10 +39,26 @@ pub(super) fn build(ctx: &Ctx<'_>) -> Result<ModelScene, AssetError> {
         .filter(|e| !SUPPORTED_EXTENSIONS.contains(e))
         .collect();
     if !ignored.is_empty() {
-        scene.warnings.push(format!(
-            "extension(s) {} ignored (the file does not require them)",
-            ignored.join(", ")
-        ));
+        // Name what each ignored extension is on (read from the JSON text: `gltf-json` drops
+        // extensions it does not know); those found on nothing are listed together.
+        let users = extension_users(ctx.json, &ignored);
+        let mut unplaced = Vec::new();
+        for (ext, on) in ignored.iter().zip(&users) {
+            if on.is_empty() {
+                unplaced.push(*ext);
+            } else {
+                scene.warnings.push(format!(
+                    "extension {ext} ignored (the file does not require it): on {}",
+                    on.join(", ")
+                ));
+            }
+        }
+        if !unplaced.is_empty() {
+            scene.warnings.push(format!(
+                "extension(s) {} ignored (the file does not require them)",
+                unplaced.join(", ")
+            ));
+        }
     }
     for (i, skin) in root.skins.iter().enumerate() {
         let users: Vec<String> = root
@@ -146,6 +162,63 @@ pub(super) fn build(ctx: &Ctx<'_>) -> Result<ModelScene, AssetError> {
     scene.materials = materials.materials;
     scene.textures = materials.textures;
     Ok(scene)
+}
+
+/// For each of `extensions`, the parts of the glTF JSON text `json` whose `extensions` object
+/// (anywhere inside them, e.g. a material's texture reference) holds it: `materials[2]
+/// (`Glass`)`, `meshes[0].primitives[1]`, or `the file` for the root's own. Empty lists when the
+/// text cannot be parsed (it was parsed before, so it can).
+fn extension_users(json: &[u8], extensions: &[&str]) -> Vec<Vec<String>> {
+    use serde_json::Value;
+    let mut users = vec![Vec::new(); extensions.len()];
+    let Ok(Value::Object(root)) = serde_json::from_slice::<Value>(json) else {
+        return users;
+    };
+    // Whether `v` or anything inside it has an `extensions` object holding `ext` (bounded
+    // depth: glTF nests a handful of levels; deeper is someone's `extras`).
+    fn holds(v: &Value, ext: &str, depth: u32) -> bool {
+        if depth > 8 {
+            return false;
+        }
+        match v {
+            Value::Object(map) => map.iter().any(|(k, x)| {
+                (k == "extensions" && x.get(ext).is_some())
+                    || (k != "extras" && holds(x, ext, depth + 1))
+            }),
+            Value::Array(items) => items.iter().any(|x| holds(x, ext, depth + 1)),
+            _ => false,
+        }
+    }
+    let label = |kind: &str, i: usize, item: &Value| match item.get("name").and_then(Value::as_str)
+    {
+        Some(name) => format!("{kind}[{i}] (`{name}`)"),
+        None => format!("{kind}[{i}]"),
+    };
+    for (e, ext) in extensions.iter().enumerate() {
+        let Some(on) = users.get_mut(e) else { continue };
+        if root
+            .get("extensions")
+            .is_some_and(|x| x.get(*ext).is_some())
+        {
+            on.push("the file".to_owned());
+        }
+        for (kind, items) in &root {
+            let Value::Array(items) = items else { continue };
+            for (i, item) in items.iter().enumerate() {
+                if kind == "meshes" {
+                    let prims = item.get("primitives").and_then(Value::as_array);
+                    for (p, prim) in prims.into_iter().flatten().enumerate() {
+                        if holds(prim, ext, 0) {
+                            on.push(format!("meshes[{i}].primitives[{p}]"));
+                        }
+                    }
+                } else if holds(item, ext, 0) {
+                    on.push(label(kind, i, item));
+                }
+            }
+        }
+    }
+    users
 }
 
 /// How a material is named in messages: `materials[3] (`Red`)`, or glTF's default material.

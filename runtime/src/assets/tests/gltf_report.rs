@@ -35,7 +35,7 @@ fn report_of_a_generated_file_matches_its_golden_file() {
         &dir,
         "report",
         json!({
-            "extensionsUsed": ["KHR_lights_punctual", "KHR_materials_clearcoat"],
+            "extensionsUsed": ["KHR_lights_punctual", "KHR_materials_clearcoat", "EXT_unused"],
             "extensions": { "KHR_lights_punctual": { "lights": [
                 { "type": "point", "name": "bulb", "color": [1.0, 0.5, 0.25], "intensity": 20.0 },
                 { "type": "spot", "spot": { "innerConeAngle": 0.2, "outerConeAngle": 0.5 } },
@@ -59,6 +59,7 @@ fn report_of_a_generated_file_matches_its_golden_file() {
                     "roughnessFactor": 0.5,
                 },
                 "doubleSided": true,
+                "extensions": { "KHR_materials_clearcoat": { "clearcoatFactor": 1.0 } },
             }],
             "textures": [{ "source": 0 }],
             "images": [{ "uri": "albedo.png" }],
