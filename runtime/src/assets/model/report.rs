@@ -12,7 +12,7 @@
 use std::fmt::Write;
 
 use super::animation::{Interp, Path as Target};
-use super::{AlphaMode, LightKind, ModelScene, Projection};
+use super::{AlphaMode, GltfMaterial, LightKind, ModelScene, Projection};
 
 /// The import report of `scene`, read from the file called `name`.
 pub fn report(name: &str, scene: &ModelScene) -> String {
@@ -55,10 +55,16 @@ pub fn report(name: &str, scene: &ModelScene) -> String {
     let _ = writeln!(out, "  materials: {}", scene.materials.len());
     for (i, m) in scene.materials.iter().enumerate() {
         let label = scene.material_labels.get(i).map_or("?", String::as_str);
-        let texture = match m.base_color_texture.and_then(|t| scene.textures.get(t)) {
-            Some(t) => format!(" × texture {}×{} (TEXCOORD_0)", t.width, t.height),
-            None => String::new(),
-        };
+        let texture = textures_of(m)
+            .into_iter()
+            .filter_map(|(what, t)| {
+                let t = scene.textures.get(t?)?;
+                Some(format!(
+                    ", {what} texture {}×{} (TEXCOORD_0)",
+                    t.width, t.height
+                ))
+            })
+            .collect::<String>();
         let alpha = match m.alpha_mode {
             AlphaMode::Opaque => "OPAQUE".to_owned(),
             AlphaMode::Mask => format!("MASK below {:.3}", m.alpha_cutoff),
@@ -66,7 +72,7 @@ pub fn report(name: &str, scene: &ModelScene) -> String {
         };
         let _ = writeln!(
             out,
-            "    {label}: base colour {}{texture}, metallic {:.3}, roughness {:.3}, emissive {}, \
+            "    {label}: base colour {}, metallic {:.3}, roughness {:.3}, emissive {}{texture}, \
              alpha {alpha}, {}",
             fmt(&m.base_color),
             m.metallic,
@@ -188,6 +194,12 @@ pub fn report(name: &str, scene: &ModelScene) -> String {
         }
     }
     out
+}
+
+/// Each texture slot of a material the import fills, by name, and its index into
+/// [`ModelScene::textures`] (the report lists the filled ones, in this order).
+fn textures_of(m: &GltfMaterial) -> Vec<(&'static str, Option<usize>)> {
+    vec![("base colour", m.base_color_texture)]
 }
 
 /// `(a, b, c)` with 3 decimals.
