@@ -45,7 +45,6 @@ use super::models;
 use super::params::ParamsBuilder;
 use super::store::{AssetStore, BuiltMesh};
 use super::SceneError;
-use crate::assets::model::NodeAnimation;
 use crate::assets::{AssetRoots, MeshData, TextureFormat};
 
 /// Options of the entity stage.
@@ -780,7 +779,7 @@ impl Entities {
     /// The object-to-world matrix at `t` seconds of each object a glTF node animation moves
     /// (each file's animation evaluated once). Pure: the same `t` gives the same matrices.
     pub fn model_transforms_at(&self, t: f32) -> Vec<(usize, Mat4)> {
-        let mut evaluated: Vec<(&Arc<NodeAnimation>, Vec<Mat4>)> = Vec::new();
+        let mut evaluated: Vec<(&Arc<crate::assets::model::NodeAnimation>, Vec<Mat4>)> = Vec::new();
         let mut out = Vec::with_capacity(self.motions.len());
         for m in &self.motions {
             if !evaluated.iter().any(|(k, _)| Arc::ptr_eq(k, &m.animation)) {

@@ -14,7 +14,8 @@
 //!    depth first, children in order, accumulating world transforms. Each node with a mesh adds
 //!    one [`MeshInstance`] per primitive; each camera and `KHR_lights_punctual` light is placed
 //!    in world space. Then `animation::read` reads the first animation's channels
-//!    ([`NodeAnimation`], evaluated per frame as rigid node motion).
+//!    ([`NodeAnimation`], evaluated per frame as rigid node motion; animations after the first
+//!    and `weights` channels are skipped with a warning).
 //! 4. On first use, `primitive::convert` turns a glTF primitive into a [`MeshData`] through the
 //!    checked accessor reader (`accessor.rs`), and `materials::convert` a glTF material into a
 //!    [`GltfMaterial`], decoding its base-colour image into a [`TextureData`].
@@ -27,7 +28,7 @@
 //!
 //! - One [`MeshData`] per *used* glTF primitive of mode `TRIANGLES`, converted once however many
 //!   nodes use it: instancing is [`MeshInstance`]s sharing a `mesh` index. Other modes, morph
-//!   targets, skins, animations after the first, `weights` channels and extensions other than `KHR_lights_punctual` and
+//!   targets, skins, animations and extensions other than `KHR_lights_punctual` and
 //!   `KHR_materials_emissive_strength` are skipped with a warning (an unsupported extension the
 //!   file *requires* is an error).
 //! - Every `MeshInstance::mesh` and `::material` and every `GltfMaterial::base_color_texture` is
@@ -71,13 +72,13 @@ pub struct ModelScene {
     pub meshes: Vec<MeshData>,
     /// What each of `meshes` is in the file, for messages: `meshes[2].primitives[0] (`Wheel`)`.
     pub mesh_labels: Vec<String>,
+    /// What each of `materials` is in the file, for messages and the report: `materials[3]
+    /// (`Red`)`, or `glTF's default material`.
+    pub material_labels: Vec<String>,
     /// Placed meshes; several may share a mesh.
     pub instances: Vec<MeshInstance>,
     /// The used materials (glTF's default material last, when a primitive has none).
     pub materials: Vec<GltfMaterial>,
-    /// What each of `materials` is in the file, for messages and the report: `materials[3]
-    /// (`Red`)`, or `glTF's default material`.
-    pub material_labels: Vec<String>,
     /// The decoded base-colour images of the materials.
     pub textures: Vec<TextureData>,
     /// The cameras of the scene's nodes, in node order; the first is the default camera.
