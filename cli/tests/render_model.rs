@@ -1,7 +1,9 @@
 //! End-to-end tests of `rtc render model.glb` on lavapipe (skipped, saying so, where no adapter
 //! exists): a bare glTF file (the example's model without its camera and lights) renders with the
 //! defaults it prints, the model in the middle of the image and the sky at the top; a file with a
-//! camera and lights keeps them; a truncated file and `--scene` are clear errors, never a panic.
+//! camera and lights keeps them; the default light rig lights the side the file's camera sees;
+//! `--report` lists what was imported; `--frames all` of an animated file covers its animation
+//! without BLAS builds; a truncated file and `--scene` are clear errors, never a panic.
 //! Also the asset confinement seen from the command line: `--asset-root` must name a folder, and a
 //! scene path leading out of the scene's folder is E0903 with a help line naming `--asset-root`.
 
@@ -222,4 +224,208 @@ fn a_scene_path_leaving_its_folder_is_e0903() {
     assert!(t.contains("../secret.obj"), "{t}");
     assert!(t.contains("--asset-root"), "{t}");
     assert!(!dir.join("x.png").exists());
+}
+
+#[test]
+fn report_lists_what_the_model_brought() {
+    let dir = scratch("model-test", "report");
+    let out = rtc(&[
+        "render",
+        s(&example_glb()),
+        "-o",
+        s(&dir.join("r.png")),
+        "--size",
+        "16x12",
+        "--spp",
+        "1",
+        "--report",
+    ]);
+    if no_gpu(&out) {
+        return;
+    }
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    let printed = stdout(&out);
+    for line in [
+        "import report of model.glb\n",
+        "  meshes: 6 triangle mesh(es), 2896 triangle(s), placed 7 time(s)\n",
+        "  lights: 2\n",
+        "  cameras: 1\n",
+        "  animation: none\n",
+    ] {
+        assert!(printed.contains(line), "missing `{line}` in\n{printed}");
+    }
+}
+
+/// A glTF quad whose node a LINEAR translation channel moves from x = -1 at 0 s to +1 at 1 s
+/// (`anim.gltf` and `anim.bin` in `dir`).
+fn animated_gltf(dir: &Path) -> PathBuf {
+    let mut bin: Vec<u8> = Vec::new();
+    let floats = [
+        -0.5f32, -0.5, 0.0, 0.5, -0.5, 0.0, 0.5, 0.5, 0.0, -0.5, 0.5, 0.0,
+    ];
+    bin.extend(floats.iter().flat_map(|x| x.to_le_bytes()));
+    bin.extend([0u16, 1, 2, 0, 2, 3].iter().flat_map(|i| i.to_le_bytes()));
+    bin.extend([0.0f32, 1.0].iter().flat_map(|x| x.to_le_bytes()));
+    bin.extend(
+        [-1.0f32, 0.0, 0.0, 1.0, 0.0, 0.0]
+            .iter()
+            .flat_map(|x| x.to_le_bytes()),
+    );
+    std::fs::write(dir.join("anim.bin"), &bin).unwrap();
+    let gltf = serde_json::json!({
+        "asset": {"version": "2.0"},
+        "buffers": [{"uri": "anim.bin", "byteLength": 92}],
+        "bufferViews": [
+            {"buffer": 0, "byteOffset": 0, "byteLength": 48},
+            {"buffer": 0, "byteOffset": 48, "byteLength": 12},
+            {"buffer": 0, "byteOffset": 60, "byteLength": 8},
+            {"buffer": 0, "byteOffset": 68, "byteLength": 24}
+        ],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+             "min": [-0.5, -0.5, 0.0], "max": [0.5, 0.5, 0.0]},
+            {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"},
+            {"bufferView": 2, "componentType": 5126, "count": 2, "type": "SCALAR",
+             "min": [0.0], "max": [1.0]},
+            {"bufferView": 3, "componentType": 5126, "count": 2, "type": "VEC3"}
+        ],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "nodes": [{"mesh": 0}],
+        "scenes": [{"nodes": [0]}],
+        "animations": [{
+            "samplers": [{"input": 2, "output": 3}],
+            "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}}]
+        }]
+    });
+    let path = dir.join("anim.gltf");
+    std::fs::write(&path, serde_json::to_vec(&gltf).unwrap()).unwrap();
+    path
+}
+
+#[test]
+fn frames_all_of_an_animated_gltf_cover_its_animation_without_blas_builds() {
+    let dir = scratch("model-test", "animated");
+    let model = animated_gltf(&dir);
+    let out = rtc(&[
+        "render",
+        s(&model),
+        "-o",
+        s(&dir.join("f_%d.png")),
+        "--size",
+        "16x12",
+        "--spp",
+        "1",
+        "--frames",
+        "all",
+        "--fps",
+        "2",
+    ]);
+    if no_gpu(&out) {
+        return;
+    }
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    let printed = stdout(&out);
+    assert!(
+        printed.contains("frames: 3 of 0..3"),
+        "1 s at 2 fps, the last key's frame included:\n{printed}"
+    );
+    assert!(
+        printed.contains("1 BLAS builds at setup, 0 over the frames after it"),
+        "{printed}"
+    );
+    assert!(
+        !text(&out).contains("every frame is the same image"),
+        "{}",
+        text(&out)
+    );
+    for f in 0..3 {
+        assert!(dir.join(format!("f_{f}.png")).is_file(), "frame {f}");
+    }
+}
+
+/// A grey quad (`back.gltf`) facing -z, seen by the file's camera from (0, 0, -3) looking along
+/// +z: the side the old default light (from above, on the +z side) left black.
+fn back_lit_gltf(dir: &Path) -> PathBuf {
+    let mut bin: Vec<u8> = Vec::new();
+    // Positions wound counter-clockwise seen from -z, then normals (0, 0, -1).
+    let positions = [
+        1.0f32, -1.0, 0.0, -1.0, -1.0, 0.0, -1.0, 1.0, 0.0, 1.0, 1.0, 0.0,
+    ];
+    bin.extend(positions.iter().flat_map(|x| x.to_le_bytes()));
+    let normals = [0.0f32, 0.0, -1.0].repeat(4);
+    bin.extend(normals.iter().flat_map(|x| x.to_le_bytes()));
+    bin.extend([0u16, 1, 2, 0, 2, 3].iter().flat_map(|i| i.to_le_bytes()));
+    std::fs::write(dir.join("back.bin"), &bin).unwrap();
+    let gltf = serde_json::json!({
+        "asset": {"version": "2.0"},
+        "buffers": [{"uri": "back.bin", "byteLength": 108}],
+        "bufferViews": [
+            {"buffer": 0, "byteOffset": 0, "byteLength": 48},
+            {"buffer": 0, "byteOffset": 48, "byteLength": 48},
+            {"buffer": 0, "byteOffset": 96, "byteLength": 12}
+        ],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+             "min": [-1.0, -1.0, 0.0], "max": [1.0, 1.0, 0.0]},
+            {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"},
+            {"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}
+        ],
+        "materials": [{"pbrMetallicRoughness": {
+            "baseColorFactor": [0.8, 0.8, 0.8, 1.0], "metallicFactor": 0.0, "roughnessFactor": 1.0}}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2, "material": 0}]}],
+        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.6, "znear": 0.1}}],
+        "nodes": [
+            {"mesh": 0},
+            {"camera": 0, "translation": [0.0, 0.0, -3.0], "rotation": [0.0, 1.0, 0.0, 0.0]}
+        ],
+        "scenes": [{"nodes": [0, 1]}]
+    });
+    let path = dir.join("back.gltf");
+    std::fs::write(&path, serde_json::to_vec(&gltf).unwrap()).unwrap();
+    path
+}
+
+/// The mean Rec. 709 luminance of the linear image's central quarter.
+fn centre_luminance(png: &Path) -> f64 {
+    let image = read_image(png).expect("the image");
+    let (w, h) = (image.width(), image.height());
+    let (mut sum, mut n) = (0.0f64, 0.0f64);
+    for y in h / 4..3 * h / 4 {
+        for x in w / 4..3 * w / 4 {
+            let p = image.get(x, y).unwrap();
+            sum += 0.2126 * f64::from(p[0]) + 0.7152 * f64::from(p[1]) + 0.0722 * f64::from(p[2]);
+            n += 1.0;
+        }
+    }
+    sum / n
+}
+
+#[test]
+fn the_default_light_lights_what_the_files_camera_sees() {
+    let dir = scratch("model-test", "headlight");
+    let model = back_lit_gltf(&dir);
+    let exr = dir.join("back.exr");
+    let out = rtc(&[
+        "render",
+        s(&model),
+        "-o",
+        s(&exr),
+        "--size",
+        "32x24",
+        "--spp",
+        "1",
+    ]);
+    if no_gpu(&out) {
+        return;
+    }
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    let lum = centre_luminance(&exr);
+    eprintln!("centre luminance {lum}");
+    // The quad fills the centre. Under the headlight (intensity π, at cos ≈ 0.889 to the quad)
+    // a diffuse albedo of 0.8 gives 0.8 × 0.889 ≈ 0.71, plus a little specular; the sky fill
+    // grazes the vertical quad. The old rig (one light from the +z side) gave exactly 0 here.
+    assert!(
+        lum > 0.5 && lum < 1.0,
+        "the side the camera sees is not lit as the rig says: {lum}"
+    );
 }

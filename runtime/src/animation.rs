@@ -12,7 +12,10 @@
 //! the product of its tracks' world-space motions, later `animate` entries outermost; each motion
 //! acts about the world position of the object's origin (or of a `spin`'s pivot, given in object
 //! space), along world axes, so a `spin` turns an object in place whatever its static rotation and
-//! scale. Keyed transforms are
+//! scale. glTF node animations of the scene's models (`assets::model::animation`) are applied
+//! by [`apply`] too, at the state's [`time`](FrameState::time), through
+//! [`Renderer::set_model_time`]; [`is_animated_with`] and [`frame_count`] count them. Keyed
+//! transforms are
 //! decomposed into translation, rotation and scale: translation and scale are interpolated
 //! (linearly or on Catmull-Rom curves), rotation by slerp, so a turning object stays rigid.
 
@@ -25,6 +28,8 @@ use rtc_compiler::sema::hir::{
 /// The animated part of a scene at one time.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FrameState {
+    /// The time evaluated, in seconds (glTF node animations are evaluated at it by [`apply`]).
+    pub time: f32,
     /// Object index and its object-to-world matrix (column-major), for each animated object.
     pub transforms: Vec<(usize, [[f32; 4]; 4])>,
     /// Each animated field and its value.
@@ -111,12 +116,35 @@ pub fn evaluate(desc: &SceneDesc, t: f32) -> FrameState {
             Some((i, (w * m).to_cols_array_2d()))
         })
         .collect();
-    FrameState { transforms, fields }
+    FrameState {
+        time: t,
+        transforms,
+        fields,
+    }
 }
 
-/// Applies `state` to `renderer`: objects moved, fields set (each uploads only what changed on
-/// the next render).
+/// Whether the scene has anything to animate, its models' glTF node animations included
+/// (`renderer` renders `desc`).
+pub fn is_animated_with(desc: &SceneDesc, renderer: &Renderer) -> bool {
+    is_animated(desc) || renderer.has_model_animation()
+}
+
+/// The frames of the scene's animation at `fps`: the scene's own count when it has `animate`
+/// entries or sets `frames`, else enough to reach the last key of its models' glTF animations
+/// (the last key's frame included), at least 1.
+pub fn frame_count(desc: &SceneDesc, renderer: &Renderer, fps: u32) -> u32 {
+    if is_animated(desc) || desc.settings.frames > 1 || !renderer.has_model_animation() {
+        return desc.settings.frames.max(1);
+    }
+    let length = f64::from(renderer.model_animation_length());
+    let frames = (length * f64::from(fps.max(1))).floor() + 1.0;
+    frames.clamp(1.0, f64::from(rtc_compiler::sema::scenes::MAX_FRAMES)) as u32
+}
+
+/// Applies `state` to `renderer`: objects moved (the scene's and its models' animated nodes),
+/// fields set (each uploads only what changed on the next render).
 pub fn apply(renderer: &mut Renderer, state: &FrameState) -> Result<(), RenderError> {
+    renderer.set_model_time(state.time)?;
     for (i, m) in &state.transforms {
         renderer.set_transform(*i, Mat4::from_cols_array_2d(m))?;
     }

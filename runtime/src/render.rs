@@ -762,6 +762,28 @@ impl<'g> Renderer<'g> {
         Ok(())
     }
 
+    /// Whether a glTF model's node animation moves some object of the scene (the scene's own
+    /// `animate` entries are in its description: [`crate::animation::is_animated`]).
+    pub fn has_model_animation(&self) -> bool {
+        self.entities.has_model_animation()
+    }
+
+    /// The length in seconds of the longest glTF node animation (0 without one, or when it has
+    /// a single key).
+    pub fn model_animation_length(&self) -> f32 {
+        self.entities.model_animation_length()
+    }
+
+    /// Moves every object a glTF node animation moves to its pose at `t` seconds, with
+    /// [`set_transform`](Self::set_transform) (the next pass rebuilds the scene-level BVH, never
+    /// an object's). Does nothing, and keeps the accumulation, in a scene without one.
+    pub fn set_model_time(&mut self, t: f32) -> Result<(), RenderError> {
+        for (object, transform) in self.entities.model_transforms_at(t) {
+            self.set_transform(object, transform)?;
+        }
+        Ok(())
+    }
+
     /// Sets field `field` of `target`'s instance (the camera's `position`, a light's
     /// `intensity`, an object's material `color`) to `value`, which must have the field's type;
     /// the next pass uploads only the words that changed. An instance several targets shared is

@@ -16,7 +16,8 @@
 //!
 //! A `.gltf` or `.glb` file instead of a scene is rendered through a scene written for it with
 //! sensible defaults (a camera framing it, a light, a background; see [`model`]), and the defaults
-//! chosen are printed before rendering.
+//! chosen are printed before rendering. `--report` prints, before rendering, the import report of
+//! each glTF file (`rtc_runtime::assets::model::report`): what was imported and what was not.
 //!
 //! Failures of the runtime (no adapter, an asset that cannot be loaded, a device limit) are printed
 //! as one `error:` line (an unreadable asset as an E0902 diagnostic at the scene's string) and exit
@@ -33,6 +34,9 @@ use rtc_compiler::kernel::{compile_scene_with, CompiledScene, KernelOptions};
 use rtc_compiler::link::LinkOptions;
 use rtc_compiler::sema::hir::SceneDesc;
 use rtc_runtime::animation;
+use rtc_runtime::assets::confine::resolve_scene_path;
+use rtc_runtime::assets::model::report;
+use rtc_runtime::assets::{load_gltf_with, AssetRoots};
 use rtc_runtime::gpu::{Gpu, KernelReport};
 use rtc_runtime::image_out::{write_exr, write_png, ToneMap};
 use rtc_runtime::render::{RenderError, RenderOptions, RenderStats, Renderer};
@@ -73,6 +77,11 @@ pub struct Args {
     /// SLURM_ARRAY_TASK_ID (Slurm job arrays).
     #[arg(long, value_name = "I/N")]
     pub shard: Option<String>,
+    /// Before rendering, print the import report of each glTF model (the file itself, or the
+    /// scene's `model` entries): its meshes, materials and their textures, lights, cameras and
+    /// animation, and everything it holds that was not imported, named with what it affects.
+    #[arg(long)]
+    pub report: bool,
 }
 
 /// What `--frames`, `--fps` and `--shard` asked for, checked before compiling.
@@ -221,6 +230,12 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         );
     }
 
+    if args.report {
+        if let Some(desc) = scene_of(&compiled) {
+            print_model_reports(desc, scene_path, &asset_roots, ctx);
+        }
+    }
+
     let gpu = match Gpu::new(&choice) {
         Ok(gpu) => gpu,
         Err(e) => return fail(&e.to_string(), ctx),
@@ -290,6 +305,44 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     Exit::Success
 }
 
+/// `--report`: the import report of each glTF file the scene's `model` entries name (each once),
+/// found as the render finds it (next to the scene file `scene_path`, else in `roots`); a file
+/// that cannot be read is a warning here (the render then fails on it with its diagnostic).
+fn print_model_reports(desc: &SceneDesc, scene_path: &Path, roots: &AssetRoots, ctx: &Context) {
+    if desc.models.is_empty() {
+        warn(
+            "--report: the scene has no `model` entry; nothing to report",
+            ctx,
+        );
+        return;
+    }
+    let scene_dir = scene_path.parent().unwrap_or(Path::new(""));
+    let mut seen: Vec<&Path> = Vec::new();
+    for model in &desc.models {
+        if seen.contains(&model.path.as_path()) {
+            continue;
+        }
+        seen.push(&model.path);
+        let file = match resolve_scene_path(&model.path, scene_dir, roots) {
+            Ok(f) => f,
+            Err((written, problem)) => {
+                warn(&format!("--report: `{written}`: {problem}"), ctx);
+                continue;
+            }
+        };
+        match load_gltf_with(&file, roots) {
+            Ok(scene) => {
+                let name = file.file_name().map_or_else(
+                    || file.display().to_string(),
+                    |n| n.to_string_lossy().into_owned(),
+                );
+                term::print(&report(&name, &scene));
+            }
+            Err(e) => warn(&format!("--report: {e}"), ctx),
+        }
+    }
+}
+
 /// The scene description of a compiled scene.
 fn scene_of(compiled: &CompiledScene) -> Option<&SceneDesc> {
     let program = compiled.checked.program.as_ref()?;
@@ -311,8 +364,13 @@ fn render_frames(
         return fail("the scene was not compiled", ctx);
     };
     let fps = fa.fps.unwrap_or(desc.settings.fps);
+    let started = std::time::Instant::now();
+    let mut renderer = match Renderer::new(gpu, compiled, options) {
+        Ok(r) => r,
+        Err(e) => return render_failure(&e, &compiled.checked.sources, ctx),
+    };
     let (start, end) = match fa.range {
-        frames::FrameRange::All => (0, desc.settings.frames.max(1)),
+        frames::FrameRange::All => (0, animation::frame_count(desc, &renderer, fps)),
         frames::FrameRange::Span { start, end } => (start, end),
     };
     if end - start > 1 && !frames::has_placeholder(&args.output) {
@@ -327,17 +385,12 @@ fn render_frames(
         );
     }
     let list = frames::shard_frames(start, end, fa.shard);
-    if !animation::is_animated(desc) {
+    if !animation::is_animated_with(desc, &renderer) {
         warn(
-            "the scene has no `animate` entry: every frame is the same image",
+            "the scene has no `animate` entry and its models no animation: every frame is the same image",
             ctx,
         );
     }
-    let started = std::time::Instant::now();
-    let mut renderer = match Renderer::new(gpu, compiled, options) {
-        Ok(r) => r,
-        Err(e) => return render_failure(&e, &compiled.checked.sources, ctx),
-    };
     let bar = frame_bar(list.len() as u64);
     let mut first: Option<RenderStats> = None;
     let mut last: Option<RenderStats> = None;

@@ -264,6 +264,9 @@ struct App<'a> {
     fresh: bool,
     /// Scene time of an animated scene.
     clock: Clock,
+    /// The length of the glTF node animations of the scene's models (seconds; known once the
+    /// renderer is built).
+    model_length: f32,
     watcher: Option<notify::RecommendedWatcher>,
     dirs: BTreeSet<PathBuf>,
     window: Option<Arc<Window>>,
@@ -332,7 +335,8 @@ impl Clock {
     }
 }
 
-/// The loop length of a scene's animation in seconds (`frames / fps`), 0 without one.
+/// The loop length of a scene's animation in seconds (`frames / fps`), 0 without one (its
+/// models' glTF animations are the renderer's: `App::model_length`).
 fn animation_length(compiled: &CompiledScene) -> f32 {
     compiled
         .checked
@@ -416,7 +420,11 @@ impl App<'_> {
             }
         };
         let spp = stats.accumulated_samples;
-        let length = self.session.last().map_or(0.0, animation_length);
+        let length = self
+            .session
+            .last()
+            .map_or(0.0, animation_length)
+            .max(self.model_length);
         let playing = length > 0.0 && self.clock.playing;
         self.next_spp = (playing || spp < self.target_spp).then_some(spp + stats.samples_per_pass);
         self.frames += 1;
@@ -492,8 +500,15 @@ impl App<'_> {
         let Some(r) = self.renderer.as_mut() else {
             return Err(rtc_runtime::render::RenderError::KernelSet);
         };
-        let length = animation_length(compiled);
-        if length > 0.0 && (self.clock.playing || self.fresh) {
+        let model_length = r.model_animation_length();
+        if model_length > 0.0 && self.model_length == 0.0 && animation_length(compiled) == 0.0 {
+            term::print(&format!(
+                "[view] the model is animated: playing its {model_length:.2} s in a loop (space pauses and refines)\n"
+            ));
+        }
+        self.model_length = model_length;
+        let length = animation_length(compiled).max(model_length);
+        if (length > 0.0 || r.has_model_animation()) && (self.clock.playing || self.fresh) {
             if let Some(program) = compiled.checked.program.as_ref() {
                 let desc = &program.scenes[compiled.scene];
                 let t = self.clock.now(length);
@@ -643,7 +658,11 @@ impl ApplicationHandler<UserEvent> for App<'_> {
                 Key::Named(NamedKey::Escape) => event_loop.exit(),
                 Key::Character(c) if c.as_str() == "q" => event_loop.exit(),
                 Key::Named(NamedKey::Space) => {
-                    let length = self.session.last().map_or(0.0, animation_length);
+                    let length = self
+                        .session
+                        .last()
+                        .map_or(0.0, animation_length)
+                        .max(self.model_length);
                     if length > 0.0 {
                         self.clock.toggle(length);
                         let state = if self.clock.playing {
@@ -852,6 +871,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         stale_kernel: false,
         fresh: true,
         clock: Clock::new(true),
+        model_length: 0.0,
         watcher,
         dirs: BTreeSet::new(),
         window: None,

@@ -257,6 +257,8 @@ pub struct Entities {
     stacks: (u32, u32),
     warnings: Vec<String>,
     dirty: Dirty,
+    /// The objects glTF node animations move (object indices into `objects`).
+    motions: Vec<models::ModelMotion>,
 }
 
 static NEXT_VERSION: AtomicU64 = AtomicU64::new(1);
@@ -625,6 +627,15 @@ impl Entities {
                 inverse,
             });
         }
+        // Model objects follow the scene's own, so their motions' indices shift by those.
+        let motions: Vec<models::ModelMotion> = models
+            .motions
+            .iter()
+            .map(|m| models::ModelMotion {
+                object: m.object + scene.objects.len(),
+                ..m.clone()
+            })
+            .collect();
         to_u32("objects", objects.len())?;
         let mut lights = Vec::with_capacity(scene.lights.len() + models.lights.len());
         for light in scene.lights.iter().chain(&models.lights) {
@@ -679,6 +690,7 @@ impl Entities {
             stacks: (linked.config.tlas_stack, linked.config.blas_stack),
             warnings,
             dirty: Dirty::default(),
+            motions,
         };
         if !entities.needs_bounds() {
             entities.rebuild_tlas()?;
@@ -749,6 +761,39 @@ impl Entities {
         obj.inverse = inverse;
         self.tlas_stale = true;
         Ok(())
+    }
+
+    /// Whether a glTF model's node animation moves some object.
+    pub fn has_model_animation(&self) -> bool {
+        !self.motions.is_empty()
+    }
+
+    /// The longest glTF node animation of the scene's models, in seconds (0 without one).
+    pub fn model_animation_length(&self) -> f32 {
+        self.motions
+            .iter()
+            .map(|m| m.animation.duration)
+            .fold(0.0, f32::max)
+    }
+
+    /// The object-to-world matrix at `t` seconds of each object a glTF node animation moves
+    /// (each file's animation evaluated once). Pure: the same `t` gives the same matrices.
+    pub fn model_transforms_at(&self, t: f32) -> Vec<(usize, Mat4)> {
+        let mut evaluated: Vec<(&Arc<crate::assets::model::NodeAnimation>, Vec<Mat4>)> = Vec::new();
+        let mut out = Vec::with_capacity(self.motions.len());
+        for m in &self.motions {
+            if !evaluated.iter().any(|(k, _)| Arc::ptr_eq(k, &m.animation)) {
+                evaluated.push((&m.animation, m.animation.evaluate(t)));
+            }
+            let world = evaluated
+                .iter()
+                .find(|(k, _)| Arc::ptr_eq(k, &m.animation))
+                .and_then(|(_, w)| w.get(m.node));
+            if let Some(w) = world {
+                out.push((m.object, m.entry * *w));
+            }
+        }
+        out
     }
 
     /// Takes over the versions of `old` (the entities this rebuild replaces, whose data is on

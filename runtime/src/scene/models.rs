@@ -42,7 +42,7 @@ use rtc_compiler::Span;
 use super::assets_cache::{AssetCache, MeshKey, TextureKey};
 use super::store::Version;
 use super::SceneError;
-use crate::assets::model::{AlphaMode, LightKind, ModelScene, Projection};
+use crate::assets::model::{AlphaMode, LightKind, ModelScene, NodeAnimation, Projection};
 use crate::assets::solid_texture;
 
 /// An object a model brings.
@@ -69,8 +69,25 @@ pub(super) struct ModelParts {
     /// A `Pinhole` from the first model's first perspective camera (only looked for when the
     /// scene has no camera).
     pub camera: Option<Instance>,
+    /// The objects a glTF animation moves.
+    pub motions: Vec<ModelMotion>,
     /// What was skipped or approximated.
     pub warnings: Vec<String>,
+}
+
+/// An object a model's node animation moves: at time `t` its object-to-world matrix is
+/// `entry × animation.evaluate(t)[node]` (rigid motion: its mesh and BVH stay as they are).
+#[derive(Clone, Debug)]
+pub(crate) struct ModelMotion {
+    /// The object: an index into [`ModelParts::objects`] here, into the scene's objects once
+    /// the entities hold it.
+    pub object: usize,
+    /// The glTF node.
+    pub node: usize,
+    /// The `model` entry's transform.
+    pub entry: Mat4,
+    /// The file's animation.
+    pub animation: Arc<NodeAnimation>,
 }
 
 /// The program and link plan instances are made for.
@@ -270,6 +287,14 @@ fn import_one(
         else {
             continue; // guaranteed by ModelScene's invariants
         };
+        if let Some(animation) = data.animation.as_ref().filter(|a| a.moves(inst.node)) {
+            parts.motions.push(ModelMotion {
+                object: parts.objects.len(),
+                node: inst.node,
+                entry,
+                animation: Arc::clone(animation),
+            });
+        }
         parts.objects.push(ModelObject {
             name: format!("{name}#nodes[{}]", inst.node),
             span,

@@ -8,9 +8,10 @@
 //! - **camera**: the file's first perspective camera if it has one, else a `Pinhole` framing the
 //!   model's world-space bounds (from the front, [`ELEVATION_DEG`] above the centre, at the distance
 //!   where the bounding sphere fills [`FRAME_FILL`] of a [`FOV_DEG`] vertical field of view);
-//! - **light**: the file's `KHR_lights_punctual` lights if it has any, else one `DirectionalLight`
-//!   from above, behind the camera's left shoulder, of intensity π (a white diffuse surface facing it
-//!   shows its albedo);
+//! - **light**: the file's `KHR_lights_punctual` lights if it has any, else a rig that lights what
+//!   the camera sees ([`light_rig`]): a `DirectionalLight` headlight from just above and left of
+//!   the camera (intensity π: a white diffuse surface facing it shows its albedo), and a dim one
+//!   from straight above as sky fill (π/4), whichever side of the model the camera is on;
 //! - **background**: always a `SkyGradient`;
 //! - **settings**: [`DEFAULT_SIZE`] at [`DEFAULT_SAMPLES`] samples per pixel (`--size`, `--spp`
 //!   override them as for any scene).
@@ -177,16 +178,32 @@ pub fn scene_text(model: &str, data: &ModelScene) -> (String, Vec<String>) {
     }
     if data.lights.is_empty() {
         imports.push("std/lights/directional.rt");
-        // From above, behind the viewer's left shoulder.
-        let from = glam::Vec3::new(-0.5, 1.0, 0.6).normalize();
+        // The camera the scene will use: the file's first perspective one, else the framing one.
+        let (eye_forward, eye_up) = match data
+            .cameras
+            .iter()
+            .find(|c| matches!(c.projection, Projection::Perspective { .. }))
+        {
+            Some(c) => (c.forward(), c.up()),
+            None => (-toward_camera, glam::Vec3::Y),
+        };
+        let (key, fill) = light_rig(eye_forward, eye_up);
         entries.push(format!(
             "    light key DirectionalLight {{ direction: {}, intensity: {:?} }}",
-            vec3(-from),
-            std::f32::consts::PI
+            vec3(key),
+            KEY_INTENSITY
+        ));
+        entries.push(format!(
+            "    light fill DirectionalLight {{ direction: {}, intensity: {:?} }}",
+            vec3(fill),
+            FILL_INTENSITY
         ));
         defaults.push(format!(
-            "light: the file has none; a DirectionalLight shining along {} (intensity π)",
-            fmt3(-from)
+            "light: the file has none; a DirectionalLight headlight from just above and left of \
+             the camera, shining along {} (intensity π), and a dim DirectionalLight from above \
+             as sky fill, shining along {} (intensity π/4)",
+            fmt3(key),
+            fmt3(fill)
         ));
     } else {
         defaults.push(format!(
@@ -207,6 +224,27 @@ pub fn scene_text(model: &str, data: &ModelScene) -> (String, Vec<String>) {
     }
     text.push_str("}\n");
     (text, defaults)
+}
+
+/// The default rig's headlight intensity: π, so a white diffuse surface facing it shows its albedo.
+pub const KEY_INTENSITY: f32 = std::f32::consts::PI;
+/// The default rig's sky fill intensity: a quarter of the headlight's.
+pub const FILL_INTENSITY: f32 = std::f32::consts::FRAC_PI_4;
+/// How far the headlight sits above and to the left of the camera's view direction, degrees.
+pub const KEY_OFFSET_DEG: f32 = 20.0;
+
+/// The default light rig for a camera looking along `forward` with `up` as its up: the
+/// directions (of travel) of a headlight coming from [`KEY_OFFSET_DEG`] above and to the left of
+/// the view direction, so that everything the camera sees faces it and shading still shows the
+/// shape, and of a fill from straight above (the sky), so that what faces up is never black.
+pub fn light_rig(forward: glam::Vec3, up: glam::Vec3) -> (glam::Vec3, glam::Vec3) {
+    let forward = forward.normalize_or(glam::Vec3::NEG_Z);
+    let right = forward.cross(up).normalize_or(glam::Vec3::X);
+    let up = right.cross(forward);
+    let offset = KEY_OFFSET_DEG.to_radians();
+    // Toward the light: back toward the camera, tilted up and to the left.
+    let toward = (-forward + (up - right) * offset.tan()).normalize();
+    (-toward, glam::Vec3::NEG_Y)
 }
 
 fn fmt3(v: glam::Vec3) -> String {
@@ -292,8 +330,40 @@ mod tests {
         let (text, defaults) = scene_text("/m.glb", &ModelScene::default());
         assert!(text.contains("camera Pinhole"), "{text}");
         assert!(text.contains("light key DirectionalLight"), "{text}");
+        assert!(text.contains("light fill DirectionalLight"), "{text}");
         assert!(text.contains("model \"/m.glb\" {}"), "{text}");
         assert_eq!(defaults.len(), 3, "{defaults:?}");
+    }
+}
+
+#[cfg(test)]
+mod rig_tests {
+    use super::*;
+    use glam::Vec3;
+
+    #[test]
+    fn the_headlight_faces_what_the_camera_sees_from_any_side() {
+        for (forward, up) in [
+            (Vec3::NEG_Z, Vec3::Y),
+            (Vec3::Z, Vec3::Y),
+            (Vec3::new(1.0, -1.0, 0.5), Vec3::Y),
+            (Vec3::NEG_Y, Vec3::Z),
+        ] {
+            let (key, fill) = light_rig(forward, up);
+            let f = forward.normalize();
+            // A surface facing the camera (normal -forward) gets cos = dot(normal, -key).
+            // The light comes from -forward tilted by tan(20°) up and tan(20°) left:
+            // cos = 1 / sqrt(1 + 2 tan²(20°)) ≈ 0.889, whatever the view.
+            let cos = (-f).dot(-key);
+            let tan = KEY_OFFSET_DEG.to_radians().tan();
+            let want = 1.0 / (1.0 + 2.0 * tan * tan).sqrt();
+            assert!(
+                (cos - want).abs() < 1e-5,
+                "{forward}: cos {cos}, want {want}"
+            );
+            assert!((key.length() - 1.0).abs() < 1e-5);
+            assert_eq!(fill, Vec3::NEG_Y);
+        }
     }
 }
 

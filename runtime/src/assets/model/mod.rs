@@ -13,7 +13,9 @@
 //! 3. `nodes::walk`: the default scene (or the first; without scenes, every parentless node),
 //!    depth first, children in order, accumulating world transforms. Each node with a mesh adds
 //!    one [`MeshInstance`] per primitive; each camera and `KHR_lights_punctual` light is placed
-//!    in world space.
+//!    in world space. Then `animation::read` reads the first animation's channels
+//!    ([`NodeAnimation`], evaluated per frame as rigid node motion; animations after the first
+//!    and `weights` channels are skipped with a warning).
 //! 4. On first use, `primitive::convert` turns a glTF primitive into a [`MeshData`] through the
 //!    checked accessor reader (`accessor.rs`), and `materials::convert` a glTF material into a
 //!    [`GltfMaterial`], decoding its base-colour image into a [`TextureData`].
@@ -38,11 +40,15 @@
 //!   top-left), so no coordinate is changed on import.
 
 mod accessor;
+pub mod animation;
 mod buffers;
 mod document;
 mod materials;
 mod nodes;
 mod primitive;
+mod report;
+
+pub use report::report;
 
 /// The URI decoders, for the tests.
 #[cfg(test)]
@@ -51,8 +57,11 @@ pub(crate) mod buffers_for_tests {
 }
 
 use std::path::Path;
+use std::sync::Arc;
 
 use glam::{Mat4, Vec3};
+
+pub use animation::NodeAnimation;
 
 use super::{AssetError, AssetRoots, Bounds, MeshData, TextureData};
 
@@ -63,6 +72,9 @@ pub struct ModelScene {
     pub meshes: Vec<MeshData>,
     /// What each of `meshes` is in the file, for messages: `meshes[2].primitives[0] (`Wheel`)`.
     pub mesh_labels: Vec<String>,
+    /// What each of `materials` is in the file, for messages and the report: `materials[3]
+    /// (`Red`)`, or `glTF's default material`.
+    pub material_labels: Vec<String>,
     /// Placed meshes; several may share a mesh.
     pub instances: Vec<MeshInstance>,
     /// The used materials (glTF's default material last, when a primitive has none).
@@ -73,6 +85,8 @@ pub struct ModelScene {
     pub cameras: Vec<GltfCamera>,
     /// The `KHR_lights_punctual` lights of the scene's nodes, in node order.
     pub lights: Vec<GltfLight>,
+    /// The file's first animation (rigid node motion), if it has one with a usable channel.
+    pub animation: Option<Arc<NodeAnimation>>,
     /// What was skipped or approximated, one sentence each.
     pub warnings: Vec<String>,
 }
@@ -290,8 +304,15 @@ pub(crate) fn parse_gltf_with(
 ) -> Result<ModelScene, AssetError> {
     let (root, blob) = document::parse(bytes, path)?;
     let buffers = buffers::load(&root, blob, path, roots)?;
+    // The JSON text (a `.glb`'s first chunk; the container was checked by `document::parse`).
+    let json = if bytes.starts_with(b"glTF") {
+        document::split_glb(bytes).map_or(&[][..], |(json, _)| json)
+    } else {
+        bytes
+    };
     let ctx = Ctx {
         path,
+        json,
         root: &root,
         buffers: &buffers,
         roots,
@@ -302,6 +323,8 @@ pub(crate) fn parse_gltf_with(
 /// What every conversion step reads: the file's name, its validated JSON and its buffers.
 struct Ctx<'a> {
     path: &'a Path,
+    /// The JSON text, for what `gltf-json` does not keep (extensions it does not know).
+    json: &'a [u8],
     roots: &'a AssetRoots,
     root: &'a gltf::json::Root,
     buffers: &'a [Vec<u8>],

@@ -7,11 +7,13 @@
 //! converted once (`mesh_cache` in [`build`]), so nodes sharing a mesh share its `MeshData`.
 
 use std::collections::hash_map::{Entry, HashMap};
+use std::sync::Arc;
 
 use glam::{Mat4, Quat, Vec3};
 use gltf::json;
 use gltf::json::validation::Checked;
 
+use super::animation;
 use super::materials::Materials;
 use super::{
     primitive, Ctx, GltfCamera, GltfLight, LightKind, MeshInstance, ModelScene, Projection,
@@ -37,31 +39,72 @@ pub(super) fn build(ctx: &Ctx<'_>) -> Result<ModelScene, AssetError> {
         .filter(|e| !SUPPORTED_EXTENSIONS.contains(e))
         .collect();
     if !ignored.is_empty() {
-        scene.warnings.push(format!(
-            "extension(s) {} ignored (the file does not require them)",
-            ignored.join(", ")
-        ));
+        // Name what each ignored extension is on (read from the JSON text: `gltf-json` drops
+        // extensions it does not know); those found on nothing are listed together.
+        let users = extension_users(ctx.json, &ignored);
+        let mut unplaced = Vec::new();
+        for (ext, on) in ignored.iter().zip(&users) {
+            if on.is_empty() {
+                unplaced.push(*ext);
+            } else {
+                scene.warnings.push(format!(
+                    "extension {ext} ignored (the file does not require it): on {}",
+                    on.join(", ")
+                ));
+            }
+        }
+        if !unplaced.is_empty() {
+            scene.warnings.push(format!(
+                "extension(s) {} ignored (the file does not require them)",
+                unplaced.join(", ")
+            ));
+        }
     }
-    if !root.skins.is_empty() {
-        scene
-            .warnings
-            .push("skins are ignored: skinned meshes are placed by their node, unposed".to_owned());
-    }
-    if !root.animations.is_empty() {
-        scene
-            .warnings
-            .push("animations are ignored: the static pose is used".to_owned());
+    for (i, skin) in root.skins.iter().enumerate() {
+        let users: Vec<String> = root
+            .nodes
+            .iter()
+            .enumerate()
+            .filter(|(_, node)| node.skin.is_some_and(|s| s.value() == i))
+            .map(|(n, _)| format!("nodes[{n}]"))
+            .collect();
+        let name = skin
+            .name
+            .as_ref()
+            .map(|n| format!(" (`{n}`)"))
+            .unwrap_or_default();
+        scene.warnings.push(if users.is_empty() {
+            format!("skins[{i}]{name} is not imported (no node uses it)")
+        } else {
+            format!(
+                "skins[{i}]{name} is not imported: the mesh(es) of {} are drawn unposed, placed by their node",
+                users.join(", ")
+            )
+        });
     }
 
     let roots = scene_roots(root, &mut scene.warnings);
     let mut visited = vec![false; root.nodes.len()];
-    let mut stack: Vec<(usize, Mat4)> = roots.iter().rev().map(|&n| (n, Mat4::IDENTITY)).collect();
-    while let Some((n, parent)) = stack.pop() {
+    // Each scene node's parent, as the walk reached it (for the animation).
+    let mut parents: Vec<Option<usize>> = vec![None; root.nodes.len()];
+    let mut order: Vec<usize> = Vec::new();
+    let mut stack: Vec<(usize, Mat4, Option<usize>)> = roots
+        .iter()
+        .rev()
+        .map(|&n| (n, Mat4::IDENTITY, None))
+        .collect();
+    while let Some((n, parent, parent_node)) = stack.pop() {
         let Some(node) = root.nodes.get(n) else {
             continue; // validated: cannot happen
         };
         match visited.get_mut(n) {
-            Some(seen) if !*seen => *seen = true,
+            Some(seen) if !*seen => {
+                *seen = true;
+                order.push(n);
+                if let Some(slot) = parents.get_mut(n) {
+                    *slot = parent_node;
+                }
+            }
             _ => {
                 scene.warnings.push(format!(
                     "nodes[{n}] is reached more than once (a cycle or a shared child), skipped there"
@@ -82,8 +125,13 @@ pub(super) fn build(ctx: &Ctx<'_>) -> Result<ModelScene, AssetError> {
                 Entry::Occupied(e) => e.into_mut(),
                 Entry::Vacant(e) => e.insert(convert_mesh(ctx, m, &mut scene)?),
             };
-            for &(mesh, material) in converted.iter() {
-                let material = materials.get(ctx, material, &mut scene.warnings)?;
+            for &(mesh, gltf_material) in converted.iter() {
+                let material = materials.get(ctx, gltf_material, &mut scene.warnings)?;
+                if material == scene.material_labels.len() {
+                    scene
+                        .material_labels
+                        .push(material_label(root, gltf_material));
+                }
                 scene.instances.push(MeshInstance {
                     mesh,
                     material,
@@ -107,12 +155,81 @@ pub(super) fn build(ctx: &Ctx<'_>) -> Result<ModelScene, AssetError> {
             }
         }
         for child in node.children.iter().flatten().rev() {
-            stack.push((child.value(), world));
+            stack.push((child.value(), world, Some(n)));
         }
     }
+    scene.animation = animation::read(ctx, &parents, &order, &mut scene.warnings).map(Arc::new);
     scene.materials = materials.materials;
     scene.textures = materials.textures;
     Ok(scene)
+}
+
+/// For each of `extensions`, the parts of the glTF JSON text `json` whose `extensions` object
+/// (anywhere inside them, e.g. a material's texture reference) holds it: `materials[2]
+/// (`Glass`)`, `meshes[0].primitives[1]`, or `the file` for the root's own. Empty lists when the
+/// text cannot be parsed (it was parsed before, so it can).
+fn extension_users(json: &[u8], extensions: &[&str]) -> Vec<Vec<String>> {
+    use serde_json::Value;
+    let mut users = vec![Vec::new(); extensions.len()];
+    let Ok(Value::Object(root)) = serde_json::from_slice::<Value>(json) else {
+        return users;
+    };
+    // Whether `v` or anything inside it has an `extensions` object holding `ext` (bounded
+    // depth: glTF nests a handful of levels; deeper is someone's `extras`).
+    fn holds(v: &Value, ext: &str, depth: u32) -> bool {
+        if depth > 8 {
+            return false;
+        }
+        match v {
+            Value::Object(map) => map.iter().any(|(k, x)| {
+                (k == "extensions" && x.get(ext).is_some())
+                    || (k != "extras" && holds(x, ext, depth + 1))
+            }),
+            Value::Array(items) => items.iter().any(|x| holds(x, ext, depth + 1)),
+            _ => false,
+        }
+    }
+    let label = |kind: &str, i: usize, item: &Value| match item.get("name").and_then(Value::as_str)
+    {
+        Some(name) => format!("{kind}[{i}] (`{name}`)"),
+        None => format!("{kind}[{i}]"),
+    };
+    for (e, ext) in extensions.iter().enumerate() {
+        let Some(on) = users.get_mut(e) else { continue };
+        if root
+            .get("extensions")
+            .is_some_and(|x| x.get(*ext).is_some())
+        {
+            on.push("the file".to_owned());
+        }
+        for (kind, items) in &root {
+            let Value::Array(items) = items else { continue };
+            for (i, item) in items.iter().enumerate() {
+                if kind == "meshes" {
+                    let prims = item.get("primitives").and_then(Value::as_array);
+                    for (p, prim) in prims.into_iter().flatten().enumerate() {
+                        if holds(prim, ext, 0) {
+                            on.push(format!("meshes[{i}].primitives[{p}]"));
+                        }
+                    }
+                } else if holds(item, ext, 0) {
+                    on.push(label(kind, i, item));
+                }
+            }
+        }
+    }
+    users
+}
+
+/// How a material is named in messages: `materials[3] (`Red`)`, or glTF's default material.
+fn material_label(root: &json::Root, m: Option<usize>) -> String {
+    match m {
+        None => "glTF's default material".to_owned(),
+        Some(m) => match root.materials.get(m).and_then(|x| x.name.as_ref()) {
+            Some(name) => format!("materials[{m}] (`{name}`)"),
+            None => format!("materials[{m}]"),
+        },
+    }
 }
 
 /// The root nodes to render: the default scene's, else the first scene's, else every node that
