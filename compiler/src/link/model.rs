@@ -34,9 +34,10 @@ use crate::source::Span;
 /// What one of [`MODEL_TYPES`] stands for in a glTF file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum ModelPart {
-    /// A material with `alphaMode` `OPAQUE` or `BLEND` (blending is rendered opaque).
+    /// A material with `alphaMode` `OPAQUE`.
     OpaqueMaterial,
-    /// A material with `alphaMode` `MASK` (the any-hit path).
+    /// A material with `alphaMode` `MASK` or `BLEND` (the any-hit path: a cutoff, or stochastic
+    /// coverage).
     MaskedMaterial,
     /// A `KHR_lights_punctual` point light.
     PointLight,
@@ -62,8 +63,8 @@ impl ModelPart {
     /// How `manifest.json` names it.
     pub fn name(self) -> &'static str {
         match self {
-            ModelPart::OpaqueMaterial => "opaque or blended material",
-            ModelPart::MaskedMaterial => "alpha-masked material",
+            ModelPart::OpaqueMaterial => "opaque material",
+            ModelPart::MaskedMaterial => "alpha-masked or blended material",
             ModelPart::PointLight => "point light",
             ModelPart::DirectionalLight => "directional light",
             ModelPart::SpotLight => "spot light",
@@ -84,7 +85,7 @@ pub struct ModelType {
 }
 
 /// The standard-library role structs a scene's `model` entries become: the glTF materials (opaque,
-/// and alpha-masked with an `@any_hit` program), the `KHR_lights_punctual` lights, and the camera
+/// and alpha-masked or blended with an `@any_hit` program), the `KHR_lights_punctual` lights, and the camera
 /// (used only when the scene has no `camera` entry). The driver loads these modules for any scene
 /// with a `model` entry; [`super::link`] links those whose part a file of the scene holds.
 pub const MODEL_TYPES: &[ModelType] = &[
@@ -231,7 +232,9 @@ pub fn parts_of_root(root: &json::Root) -> BTreeSet<ModelPart> {
             .and_then(|i| root.materials.get(i.value()))
             .map(|m| m.alpha_mode);
         parts.insert(match mode {
-            Some(Checked::Valid(json::material::AlphaMode::Mask)) => ModelPart::MaskedMaterial,
+            Some(Checked::Valid(
+                json::material::AlphaMode::Mask | json::material::AlphaMode::Blend,
+            )) => ModelPart::MaskedMaterial,
             _ => ModelPart::OpaqueMaterial,
         });
     }
@@ -298,7 +301,7 @@ mod tests {
             r#"{{ {ASSET},
             "extensionsUsed": ["KHR_lights_punctual"],
             "extensions": {{"KHR_lights_punctual": {{"lights": [{{"type": "point"}}, {{"type": "spot", "spot": {{}}}}]}}}},
-            "materials": [{{"alphaMode": "MASK"}}, {{"alphaMode": "BLEND"}}],
+            "materials": [{{"alphaMode": "MASK"}}, {{"alphaMode": "OPAQUE"}}],
             "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}, "material": 0}},
                                         {{"attributes": {{"POSITION": 0}}, "material": 1}}]}}],
             "cameras": [{{"type": "perspective", "perspective": {{"yfov": 1.0, "znear": 0.1}}}}]
@@ -314,6 +317,15 @@ mod tests {
                 ModelPart::PerspectiveCamera
             ]
         );
+    }
+
+    #[test]
+    fn a_blended_material_takes_the_any_hit_path() {
+        let text = format!(
+            r#"{{ {ASSET}, "materials": [{{"alphaMode": "BLEND"}}],
+            "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}, "material": 0}}]}}] }}"#
+        );
+        assert_eq!(parts(&text), [ModelPart::MaskedMaterial]);
     }
 
     #[test]

@@ -112,6 +112,7 @@ pub(super) fn build(ctx: &Ctx<'_>) -> Result<ModelScene, AssetError> {
     }
     scene.materials = materials.materials;
     scene.textures = materials.textures;
+    scene.texture_labels = materials.texture_labels;
     Ok(scene)
 }
 

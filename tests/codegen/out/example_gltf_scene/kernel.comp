@@ -98,8 +98,14 @@ struct GltfMaskedMaterial {
     uint base_texture;
     float metallic;
     float roughness;
+    uint metal_rough_texture;
     vec3 emissive;
+    uint emissive_texture;
+    uint occlusion_texture;
+    float occlusion_strength;
     float alpha_cutoff;
+    uint blend;
+    uint double_sided;
 };
 struct SkyGradient {
     vec3 zenith;
@@ -128,7 +134,11 @@ struct GltfMaterial {
     uint base_texture;
     float metallic;
     float roughness;
+    uint metal_rough_texture;
     vec3 emissive;
+    uint emissive_texture;
+    uint occlusion_texture;
+    float occlusion_strength;
 };
 struct Frame {
     Ray ray;
@@ -158,7 +168,13 @@ const float POINT_ERROR = 1.9073486e-6;
 const float GAMMA_1_ = 5.960465e-8;
 const float GAMMA_6_ = 3.576281e-7;
 const float GAMMA_4_ = 2.3841864e-7;
+const uint TEXTURE_NEAREST = 16u;
+const uint TEXTURE_WRAP_MASK = 3u;
+const uint TEXTURE_WRAP_CLAMP = 1u;
+const uint TEXTURE_WRAP_MIRROR = 2u;
+const uint TEXTURE_WRAP_V_SHIFT = 2u;
 const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
+const uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 const uint RGBA16F_TEXEL_WORDS = 2u;
 const uint BLAS_STACK = 64u;
 const uint TLAS_STACK = 64u;
@@ -335,9 +351,9 @@ Ray pinhole_ray(Pinhole cam, uvec2 pixel_1, uint sample_1) {
     vec3 _e24 = normalize_vec3f((cam.look_at - cam.position));
     vec3 _e27 = normalize_vec3f(cross(_e24, cam.up));
     vec3 up = cross(_e27, _e24);
-    float h_1 = tan((radians(cam.fov) * 0.5));
+    float h_2 = tan((radians(cam.fov) * 0.5));
     float aspect = (size_1.x / size_1.y);
-    vec3 _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
+    vec3 _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_2) * aspect)))) - (up * vec3((ndc.y * h_2)))));
     uint _e52 = F32_INF;
     return Ray(cam.position, 0.0, _e48, uintBitsToFloat(_e52), 0u, 0u, 0u);
 }
@@ -405,10 +421,10 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
-    float t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_11 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
+    float t_7 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
+    bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_7 >= tmin)) && (t_7 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_11 ? vec3(t_6, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_12 ? vec3(t_7, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 float point_error(vec3 origin, vec3 along) {
@@ -525,11 +541,17 @@ GltfMaskedMaterial load_GltfMaskedMaterial(uint offset_2) {
     uint _e30 = _group_0_binding_6_cs[(offset_2 + 4u)];
     uint _e35 = _group_0_binding_6_cs[(offset_2 + 5u)];
     uint _e41 = _group_0_binding_6_cs[(offset_2 + 6u)];
-    uint _e47 = _group_0_binding_6_cs[(offset_2 + 8u)];
-    uint _e53 = _group_0_binding_6_cs[(offset_2 + 9u)];
-    uint _e59 = _group_0_binding_6_cs[(offset_2 + 10u)];
-    uint _e66 = _group_0_binding_6_cs[(offset_2 + 11u)];
-    return GltfMaskedMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), vec3(uintBitsToFloat(_e47), uintBitsToFloat(_e53), uintBitsToFloat(_e59)), uintBitsToFloat(_e66));
+    uint _e47 = _group_0_binding_6_cs[(offset_2 + 7u)];
+    uint _e52 = _group_0_binding_6_cs[(offset_2 + 8u)];
+    uint _e58 = _group_0_binding_6_cs[(offset_2 + 9u)];
+    uint _e64 = _group_0_binding_6_cs[(offset_2 + 10u)];
+    uint _e71 = _group_0_binding_6_cs[(offset_2 + 11u)];
+    uint _e76 = _group_0_binding_6_cs[(offset_2 + 12u)];
+    uint _e81 = _group_0_binding_6_cs[(offset_2 + 13u)];
+    uint _e87 = _group_0_binding_6_cs[(offset_2 + 14u)];
+    uint _e93 = _group_0_binding_6_cs[(offset_2 + 15u)];
+    uint _e98 = _group_0_binding_6_cs[(offset_2 + 16u)];
+    return GltfMaskedMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), _e47, vec3(uintBitsToFloat(_e52), uintBitsToFloat(_e58), uintBitsToFloat(_e64)), _e71, _e76, uintBitsToFloat(_e81), uintBitsToFloat(_e87), _e93, _e98);
 }
 
 int i32_from_f32_(float x_1) {
@@ -542,6 +564,20 @@ int rem_i32_(int a_4, int b_4) {
     return (by_zero_4 ? 0 : (a_4 - (divisor_4 * (a_4 / divisor_4))));
 }
 
+int wrap_texel(int x_2, int n_2, uint mode) {
+    if ((mode == TEXTURE_WRAP_CLAMP)) {
+        return min(max(x_2, 0), (n_2 - 1));
+    }
+    if ((mode == TEXTURE_WRAP_MIRROR)) {
+        int _e14 = rem_i32_(x_2, (2 * n_2));
+        int _e20 = rem_i32_((_e14 + (2 * n_2)), (2 * n_2));
+        return ((_e20 >= n_2) ? (((2 * n_2) - 1) - _e20) : _e20);
+    }
+    int _e28 = rem_i32_(x_2, n_2);
+    int _e30 = rem_i32_((_e28 + n_2), n_2);
+    return _e30;
+}
+
 float srgb_channel(float c_1) {
     if ((c_1 <= 0.04045)) {
         return (c_1 / 12.92);
@@ -549,32 +585,35 @@ float srgb_channel(float c_1) {
     return pow(((c_1 + 0.055) / 1.055), 2.4);
 }
 
-vec4 texel_at(uint t, int x_2, int y) {
+vec4 texel_at(uint t, int x_3, int y) {
     uint base_1 = _group_0_binding_6_cs[t];
     uint _e10 = _group_0_binding_6_cs[(t + 1u)];
     uint w_3 = max(_e10, 1u);
     uint _e17 = _group_0_binding_6_cs[(t + 2u)];
-    uint h_2 = max(_e17, 1u);
+    uint h_3 = max(_e17, 1u);
     uint format = _group_0_binding_6_cs[(t + 3u)];
-    int _e26 = rem_i32_(x_2, int(w_3));
-    int _e30 = rem_i32_((_e26 + int(w_3)), int(w_3));
-    uint xi = uint(_e30);
-    int _e33 = rem_i32_(y, int(h_2));
-    int _e37 = rem_i32_((_e33 + int(h_2)), int(h_2));
-    uint yi = uint(_e37);
+    uint sampler_ = _group_0_binding_6_cs[(t + 4u)];
+    int _e33 = wrap_texel(x_3, int(w_3), (sampler_ & TEXTURE_WRAP_MASK));
+    uint xi = uint(_e33);
+    int _e42 = wrap_texel(y, int(h_3), ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK));
+    uint yi = uint(_e42);
     uint index = ((yi * w_3) + xi);
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
-        uint _e46 = _group_0_binding_7_cs[(base_1 + index)];
-        vec4 c_7 = unpackUnorm4x8(_e46);
-        float _e49 = srgb_channel(c_7.x);
-        float _e51 = srgb_channel(c_7.y);
-        float _e53 = srgb_channel(c_7.z);
-        return vec4(_e49, _e51, _e53, c_7.w);
+        uint _e51 = _group_0_binding_7_cs[(base_1 + index)];
+        vec4 c_7 = unpackUnorm4x8(_e51);
+        float _e54 = srgb_channel(c_7.x);
+        float _e56 = srgb_channel(c_7.y);
+        float _e58 = srgb_channel(c_7.z);
+        return vec4(_e54, _e56, _e58, c_7.w);
     }
-    uint _e61 = _group_0_binding_7_cs[(base_1 + (index * RGBA16F_TEXEL_WORDS))];
-    vec2 rg = unpackHalf2x16(_e61);
-    uint _e70 = _group_0_binding_7_cs[((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
-    vec2 ba = unpackHalf2x16(_e70);
+    if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
+        uint _e66 = _group_0_binding_7_cs[(base_1 + index)];
+        return unpackUnorm4x8(_e66);
+    }
+    uint _e73 = _group_0_binding_7_cs[(base_1 + (index * RGBA16F_TEXEL_WORDS))];
+    vec2 rg = unpackHalf2x16(_e73);
+    uint _e82 = _group_0_binding_7_cs[((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
+    vec2 ba = unpackHalf2x16(_e82);
     return vec4(rg, ba);
 }
 
@@ -582,38 +621,91 @@ vec4 sample_texture(uint t_1, vec2 uv) {
     uint _e6 = _group_0_binding_6_cs[(t_1 + 1u)];
     float w_4 = float(max(_e6, 1u));
     uint _e14 = _group_0_binding_6_cs[(t_1 + 2u)];
-    float h_3 = float(max(_e14, 1u));
-    vec2 p_7 = ((uv * vec2(w_4, h_3)) - vec2(0.5));
+    float h_4 = float(max(_e14, 1u));
+    uint _e22 = _group_0_binding_6_cs[(t_1 + 4u)];
+    if (((_e22 & TEXTURE_NEAREST) != 0u)) {
+        vec2 q_3 = floor((uv * vec2(w_4, h_4)));
+        int _e31 = i32_from_f32_(q_3.x);
+        int _e33 = i32_from_f32_(q_3.y);
+        vec4 _e34 = texel_at(t_1, _e31, _e33);
+        return _e34;
+    }
+    vec2 p_7 = ((uv * vec2(w_4, h_4)) - vec2(0.5));
     vec2 f_1 = floor(p_7);
     vec2 fr = (p_7 - f_1);
-    int _e26 = i32_from_f32_(f_1.x);
-    int _e28 = i32_from_f32_(f_1.y);
-    vec4 _e29 = texel_at(t_1, _e26, _e28);
-    vec4 _e32 = texel_at(t_1, (_e26 + 1), _e28);
-    vec4 a_7 = mix(_e29, _e32, vec4(fr.x));
-    vec4 _e38 = texel_at(t_1, _e26, (_e28 + 1));
-    vec4 _e43 = texel_at(t_1, (_e26 + 1), (_e28 + 1));
-    vec4 b_8 = mix(_e38, _e43, vec4(fr.x));
+    int _e43 = i32_from_f32_(f_1.x);
+    int _e45 = i32_from_f32_(f_1.y);
+    vec4 _e46 = texel_at(t_1, _e43, _e45);
+    vec4 _e49 = texel_at(t_1, (_e43 + 1), _e45);
+    vec4 a_7 = mix(_e46, _e49, vec4(fr.x));
+    vec4 _e55 = texel_at(t_1, _e43, (_e45 + 1));
+    vec4 _e60 = texel_at(t_1, (_e43 + 1), (_e45 + 1));
+    vec4 b_8 = mix(_e55, _e60, vec4(fr.x));
     return mix(a_7, b_8, vec4(fr.y));
 }
 
-bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_3, Hit hit_1) {
-    vec4 _e6 = sample_texture(m.base_texture, hit_1.uv);
-    return ((m.base_color.w * _e6.w) >= m.alpha_cutoff);
+uint frame_index_query() {
+    TileParams _e1 = _group_0_binding_1_cs;
+    return _e1.frame;
 }
 
-bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_4, Hit hit_2) {
+float gltf_coverage(Ray ray_3, Hit hit_1) {
+    uint h_1 = 0u;
+    uint i = 0u;
+    uvec3 o_1 = floatBitsToUint(ray_3.origin);
+    uvec3 d_3 = floatBitsToUint(ray_3.dir);
+    h_1 = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u));
+    uint _e20 = h_1;
+    h_1 = (((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
+    uint _e33 = h_1;
+    uint _e38 = frame_index_query();
+    h_1 = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
+    i = 0u;
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            uint _e65 = i;
+            i = (_e65 + 1u);
+        }
+        loop_init = false;
+        uint _e45 = i;
+        if ((_e45 >= 2u)) {
+            break;
+        }
+        uint _e47 = h_1;
+        uint state_1 = ((_e47 * 747796405u) + 2891336453u);
+        uint word_2 = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
+        h_1 = ((word_2 >> 22u) ^ word_2);
+    }
+    uint _e68 = h_1;
+    return (float((_e68 >> 8u)) * (1.0 / 16777216.0));
+}
+
+bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_4, Hit hit_2) {
+    if (((m.double_sided == 0u) && !(hit_2.front_face))) {
+        return false;
+    }
+    vec4 _e14 = sample_texture(m.base_texture, hit_2.uv);
+    float alpha = (m.base_color.w * _e14.w);
+    if ((m.blend != 0u)) {
+        float _e20 = gltf_coverage(ray_4, hit_2);
+        return (_e20 < alpha);
+    }
+    return (alpha >= m.alpha_cutoff);
+}
+
+bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_5, Hit hit_3) {
     GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3);
-    bool _e4 = gltf_masked_any_hit(_e3, ray_4, hit_2);
+    bool _e4 = gltf_masked_any_hit(_e3, ray_5, hit_3);
     return _e4;
 }
 
-bool accept(GpuInstance inst_4, Ray ray_5, Candidate c_2) {
+bool accept(GpuInstance inst_4, Ray ray_6, Candidate c_2) {
     if (((inst_4.flags & FLAG_ANY_HIT) != 0u)) {
         float shaded = hit_error;
-        Hit _e10 = finish_hit(ray_5, c_2);
+        Hit _e10 = finish_hit(ray_6, c_2);
         hit_error = shaded;
-        bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
+        bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_6, _e10);
         return _e14;
     }
     return true;
@@ -645,19 +737,19 @@ float slab(vec3 lo, vec3 hi, vec3 origin_2, vec3 inv_dir, float tmin_1, float tm
     return uintBitsToFloat(_e30);
 }
 
-vec2 children_entry(GpuNode n_2, vec3 origin_3, vec3 scale_1, Ray ray_6, vec3 inv, float tmax_3) {
-    uvec3 lq = floatBitsToUint(n_2.min_);
-    uvec3 rq = floatBitsToUint(n_2.max_);
+vec2 children_entry(GpuNode n_3, vec3 origin_3, vec3 scale_1, Ray ray_7, vec3 inv, float tmax_3) {
+    uvec3 lq = floatBitsToUint(n_3.min_);
+    uvec3 rq = floatBitsToUint(n_3.max_);
     uvec3 _e10 = node_box_lo(lq);
     vec3 _e11 = node_point(origin_3, scale_1, _e10);
     uvec3 _e12 = node_box_hi(lq);
     vec3 _e13 = node_point(origin_3, scale_1, _e12);
-    float _e16 = slab(_e11, _e13, ray_6.origin, inv, ray_6.tmin, tmax_3);
+    float _e16 = slab(_e11, _e13, ray_7.origin, inv, ray_7.tmin, tmax_3);
     uvec3 _e17 = node_box_lo(rq);
     vec3 _e18 = node_point(origin_3, scale_1, _e17);
     uvec3 _e19 = node_box_hi(rq);
     vec3 _e20 = node_point(origin_3, scale_1, _e19);
-    float _e23 = slab(_e18, _e20, ray_6.origin, inv, ray_6.tmin, tmax_3);
+    float _e23 = slab(_e18, _e20, ray_7.origin, inv, ray_7.tmin, tmax_3);
     return vec2(_e16, _e23);
 }
 
@@ -669,7 +761,7 @@ uvec2 pop(uint base, uint sp) {
     return uvec2(_e14, (sp - 1u));
 }
 
-Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray_7, Candidate best_in, bool shadow) {
+Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray_8, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
     uint child = 0u;
@@ -677,8 +769,8 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    vec3 _e8 = safe_inverse(ray_7.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_7);
+    vec3 _e8 = safe_inverse(ray_8.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_8);
     uint base_2 = inst_5.blas_root;
     GpuNode header_1 = _group_0_binding_2_cs[base_2];
     vec3 origin_4 = header_1.min_;
@@ -693,13 +785,13 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
             uint _e32 = child;
             uint first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
-            bool loop_init = true;
+            bool loop_init_1 = true;
             while(true) {
-                if (!loop_init) {
+                if (!loop_init_1) {
                     uint _e59 = k;
                     k = (_e59 + 1u);
                 }
-                loop_init = false;
+                loop_init_1 = false;
                 uint _e37 = k;
                 if ((_e37 >= count_1)) {
                     break;
@@ -707,7 +799,7 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
                 uint _e41 = k;
                 uint prim = ((inst_5.triangle_offset + first) + _e41);
                 float _e45 = best.t;
-                vec3 _e46 = hit_triangle(_e9, prim, ray_7.tmin, _e45);
+                vec3 _e46 = hit_triangle(_e9, prim, ray_8.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
                     Candidate c_8 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0.0));
@@ -723,19 +815,19 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
             }
         } else {
             uint _e62 = child;
-            GpuNode n_6 = _group_0_binding_2_cs[(base_2 + _e62)];
+            GpuNode n_7 = _group_0_binding_2_cs[(base_2 + _e62)];
             float _e68 = best.t;
-            vec2 _e69 = children_entry(n_6, origin_4, scale_2, ray_7, _e8, _e68);
+            vec2 _e69 = children_entry(n_7, origin_4, scale_2, ray_8, _e8, _e68);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
             uint _e77 = F32_INF;
             if (((tl < uintBitsToFloat(_e73)) && (tr < uintBitsToFloat(_e77)))) {
-                near = n_6.a;
-                far = n_6.b;
+                near = n_7.a;
+                far = n_7.b;
                 if (((tr < tl) != shadow)) {
-                    near = n_6.b;
-                    far = n_6.a;
+                    near = n_7.b;
+                    far = n_7.a;
                 }
                 uint _e89 = sp_1;
                 if ((_e89 < BLAS_STACK)) {
@@ -751,12 +843,12 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
             }
             uint _e105 = F32_INF;
             if ((tl < uintBitsToFloat(_e105))) {
-                child = n_6.a;
+                child = n_7.a;
                 continue;
             }
             uint _e110 = F32_INF;
             if ((tr < uintBitsToFloat(_e110))) {
-                child = n_6.b;
+                child = n_7.b;
                 continue;
             }
         }
@@ -772,15 +864,15 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     return _e122;
 }
 
-Candidate intersect_object(uint slot_3, Ray ray_8, Candidate best_1, bool shadow_1) {
+Candidate intersect_object(uint slot_3, Ray ray_9, Candidate best_1, bool shadow_1) {
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     GpuInstance inst_7 = _group_0_binding_3_cs[slot_3];
-    Ray _e7 = to_object(inst_7, ray_8);
+    Ray _e7 = to_object(inst_7, ray_9);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_9, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -789,7 +881,7 @@ Candidate intersect_object(uint slot_3, Ray ray_8, Candidate best_1, bool shadow
 uint medium_at(vec3 p_4, uint exclude) {
     uint inside = 0u;
     float nearest = 0.0;
-    uint i = 0u;
+    uint i_1 = 0u;
     if (!(HAS_MEDIA)) {
         return 0u;
     }
@@ -801,19 +893,19 @@ uint medium_at(vec3 p_4, uint exclude) {
     uint _e23 = F32_INF;
     nearest = uintBitsToFloat(_e23);
     uint end = frame_1.medium_count;
-    i = 0u;
-    bool loop_init_1 = true;
+    i_1 = 0u;
+    bool loop_init_2 = true;
     while(true) {
-        if (!loop_init_1) {
-            uint _e59 = i;
-            i = (_e59 + 1u);
+        if (!loop_init_2) {
+            uint _e59 = i_1;
+            i_1 = (_e59 + 1u);
         }
-        loop_init_1 = false;
-        uint _e29 = i;
+        loop_init_2 = false;
+        uint _e29 = i_1;
         if ((_e29 >= end)) {
             break;
         }
-        uint _e32 = i;
+        uint _e32 = i_1;
         uint slot_4 = _group_0_binding_6_cs[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if ((slot_4 != exclude)) {
             uint _e41 = F32_INF;
@@ -838,7 +930,7 @@ vec3 node_frame_hi(GpuNode header) {
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_9, bool shadow_2) {
+Candidate intersect_scene(Ray ray_10, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -846,21 +938,21 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_9.tmax);
+    Candidate _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = _group_0_binding_0_cs;
     if ((frame_2.instance_count == 0u)) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    vec3 _e16 = safe_inverse(ray_9.dir);
+    vec3 _e16 = safe_inverse(ray_10.dir);
     uint base_3 = frame_2.tlas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_3];
     vec3 origin_5 = header_2.min_;
     vec3 scale_3 = header_2.max_;
     vec3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
+    float _e28 = slab(origin_5, _e23, ray_10.origin, _e16, ray_10.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == uintBitsToFloat(_e30))) {
         Candidate _e33 = best_2;
@@ -875,7 +967,7 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_9, _e55, shadow_2);
+                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_10, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -885,19 +977,19 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
             }
         } else {
             uint _e63 = child_1;
-            GpuNode n_7 = _group_0_binding_2_cs[(base_3 + _e63)];
+            GpuNode n_8 = _group_0_binding_2_cs[(base_3 + _e63)];
             float _e69 = best_2.t;
-            vec2 _e70 = children_entry(n_7, origin_5, scale_3, ray_9, _e16, _e69);
+            vec2 _e70 = children_entry(n_8, origin_5, scale_3, ray_10, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
             uint _e78 = F32_INF;
             if (((tl_1 < uintBitsToFloat(_e74)) && (tr_1 < uintBitsToFloat(_e78)))) {
-                near_1 = n_7.a;
-                far_1 = n_7.b;
+                near_1 = n_8.a;
+                far_1 = n_8.b;
                 if ((tr_1 < tl_1)) {
-                    near_1 = n_7.b;
-                    far_1 = n_7.a;
+                    near_1 = n_8.b;
+                    far_1 = n_8.a;
                 }
                 uint _e89 = sp_2;
                 if ((_e89 < TLAS_STACK)) {
@@ -913,12 +1005,12 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
             }
             uint _e103 = F32_INF;
             if ((tl_1 < uintBitsToFloat(_e103))) {
-                child_1 = n_7.a;
+                child_1 = n_8.a;
                 continue;
             }
             uint _e108 = F32_INF;
             if ((tr_1 < uintBitsToFloat(_e108))) {
-                child_1 = n_7.b;
+                child_1 = n_8.b;
                 continue;
             }
         }
@@ -947,8 +1039,8 @@ SkyGradient load_SkyGradient(uint offset_4) {
     return SkyGradient(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)));
 }
 
-vec3 sky_gradient(SkyGradient b_5, Ray ray_10) {
-    vec3 _e3 = normalize_vec3f(ray_10.dir);
+vec3 sky_gradient(SkyGradient b_5, Ray ray_11) {
+    vec3 _e3 = normalize_vec3f(ray_11.dir);
     float y_1 = _e3.y;
     if ((y_1 < 0.0)) {
         return mix(b_5.horizon, b_5.ground, vec3(min((-(y_1) * 4.0), 1.0)));
@@ -956,24 +1048,29 @@ vec3 sky_gradient(SkyGradient b_5, Ray ray_10) {
     return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y_1)));
 }
 
-vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_11) {
+vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_12) {
     SkyGradient _e2 = load_SkyGradient(offset_5);
-    vec3 _e3 = sky_gradient(_e2, ray_11);
+    vec3 _e3 = sky_gradient(_e2, ray_12);
     return _e3;
 }
 
-vec3 miss(Ray ray_12) {
+vec3 miss(Ray ray_13) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_3 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_12);
+    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_13);
     return _e9;
 }
 
-vec3 shading_normal(Ray ray_13, Hit hit_3) {
-    vec3 ng = faceforward(hit_3.geometric_normal, ray_13.dir, hit_3.geometric_normal);
-    return faceforward(hit_3.normal, -(ng), hit_3.normal);
+float gltf_occlusion(uint t_2, float strength, vec2 uv_1) {
+    vec4 _e4 = sample_texture(t_2, uv_1);
+    return (1.0 + (strength * (_e4.x - 1.0)));
+}
+
+vec3 shading_normal(Ray ray_14, Hit hit_4) {
+    vec3 ng = faceforward(hit_4.geometric_normal, ray_14.dir, hit_4.geometric_normal);
+    return faceforward(hit_4.normal, -(ng), hit_4.normal);
 }
 
 uint light_count_query() {
@@ -992,35 +1089,35 @@ DirectionalLight load_DirectionalLight(uint offset_6) {
     return DirectionalLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43));
 }
 
-vec3 step_toward(vec3 x_3, vec3 s) {
-    uvec3 bits_1 = floatBitsToUint(x_3);
-    bvec3 up_1 = greaterThan((sign(x_3) * sign(s)), vec3(0.0));
+vec3 step_toward(vec3 x_4, vec3 s) {
+    uvec3 bits_1 = floatBitsToUint(x_4);
+    bvec3 up_1 = greaterThan((sign(x_4) * sign(s)), vec3(0.0));
     vec3 stepped = uintBitsToFloat(mix((bits_1 - uvec3(1u)), (bits_1 + uvec3(1u)), up_1));
     vec3 from_zero = mix(vec3(-1.1754944e-38), vec3(1.1754944e-38), greaterThan(s, vec3(0.0)));
-    vec3 moved = mix(stepped, from_zero, equal(x_3, vec3(0.0)));
-    return mix(x_3, moved, not(equal(s, vec3(0.0))));
+    vec3 moved = mix(stepped, from_zero, equal(x_4, vec3(0.0)));
+    return mix(x_4, moved, not(equal(s, vec3(0.0))));
 }
 
-vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
-    float d_3 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    vec3 offset_13 = (n_3 * vec3(d_3));
+vec3 offset_origin(vec3 p_5, vec3 n_4, float error) {
+    float d_4 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    vec3 offset_13 = (n_4 * vec3(d_4));
     vec3 _e17 = step_toward((p_5 + offset_13), offset_13);
     return _e17;
 }
 
 Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
-    vec3 n_4 = vec3(0.0);
+    vec3 n_5 = vec3(0.0);
     float tmax_4 = 0.0;
-    n_4 = normal;
-    vec3 _e5 = n_4;
+    n_5 = normal;
+    vec3 _e5 = n_5;
     if ((dot(dir, _e5) < 0.0)) {
-        vec3 _e9 = n_4;
-        n_4 = -(_e9);
+        vec3 _e9 = n_5;
+        n_5 = -(_e9);
     }
     vec3 a_8 = abs(position);
     float _e13 = hit_error;
     float error_3 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
-    vec3 _e22 = n_4;
+    vec3 _e22 = n_5;
     vec3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = uintBitsToFloat(_e25);
@@ -1069,17 +1166,17 @@ PointLight load_PointLight(uint offset_7) {
 }
 
 LightSample point_light(PointLight l_1, vec3 position_3, vec3 normal_3) {
-    float strength = 0.0;
+    float strength_1 = 0.0;
     vec3 to_light = (l_1.position - position_3);
     float dist_2 = length(to_light);
     vec3 dir_5 = (to_light / vec3(max(dist_2, 1e-20)));
-    strength = (l_1.intensity / max((dist_2 * dist_2), 1e-20));
+    strength_1 = (l_1.intensity / max((dist_2 * dist_2), 1e-20));
     if ((l_1.range > 0.0)) {
-        float _e19 = strength;
-        strength = (_e19 * (1.0 - smoothstep(l_1.inner_range, l_1.range, dist_2)));
+        float _e19 = strength_1;
+        strength_1 = (_e19 * (1.0 - smoothstep(l_1.inner_range, l_1.range, dist_2)));
     }
     float _e26 = shadow_query(position_3, normal_3, dir_5, dist_2);
-    float _e28 = strength;
+    float _e28 = strength_1;
     return LightSample(dir_5, dist_2, ((l_1.color * vec3(_e28)) * vec3(_e26)));
 }
 
@@ -1102,63 +1199,67 @@ LightSample dispatch_light(uint type_id_3, uint offset_8, vec3 position_4, vec3 
     return LightSample(vec3(0.0), 0.0, vec3(0.0));
 }
 
-LightSample sample_light_query(uint i_1, vec3 position_5, vec3 normal_5) {
+LightSample sample_light_query(uint i_2, vec3 position_5, vec3 normal_5) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    if ((i_1 >= frame_4.light_count)) {
+    if ((i_2 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0));
     }
-    uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     uint _e21 = _group_0_binding_6_cs[entry];
     uint _e26 = _group_0_binding_6_cs[(entry + 1u)];
     LightSample _e27 = dispatch_light(_e21, _e26, position_5, normal_5);
     return _e27;
 }
 
-vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, vec3 emissive, Ray ray_14, Hit hit_4) {
+vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, float occlusion, vec3 emissive, Ray ray_15, Hit hit_5) {
     vec3 color = vec3(0.0);
-    uint i_2 = 0u;
-    vec3 _e6 = shading_normal(ray_14, hit_4);
-    vec3 _e8 = normalize_vec3f(ray_14.dir);
-    vec3 v_2 = -(_e8);
+    uint i_3 = 0u;
+    vec3 _e7 = shading_normal(ray_15, hit_5);
+    vec3 _e9 = normalize_vec3f(ray_15.dir);
+    vec3 v_2 = -(_e9);
     float metal = clamp(metallic, 0.0, 1.0);
     float a2_ = max(pow(clamp(roughness, 0.0, 1.0), 4.0), 4e-6);
     vec3 f0_ = mix(vec3(0.04), c_3, vec3(metal));
-    float ndv = max(dot(_e6, v_2), 0.0001);
-    color = emissive;
-    uint _e25 = light_count_query();
-    i_2 = 0u;
-    bool loop_init_2 = true;
+    float ndv = max(dot(_e7, v_2), 0.0001);
+    color = vec3(0.0);
+    uint _e28 = light_count_query();
+    i_3 = 0u;
+    bool loop_init_3 = true;
     while(true) {
-        if (!loop_init_2) {
-            uint _e104 = i_2;
-            i_2 = (_e104 + 1u);
+        if (!loop_init_3) {
+            uint _e107 = i_3;
+            i_3 = (_e107 + 1u);
         }
-        loop_init_2 = false;
-        uint _e27 = i_2;
-        if ((_e27 >= _e25)) {
+        loop_init_3 = false;
+        uint _e30 = i_3;
+        if ((_e30 >= _e28)) {
             break;
         }
-        uint _e29 = i_2;
-        LightSample _e32 = sample_light_query(_e29, hit_4.position, hit_4.geometric_normal);
-        float ndl = max(dot(_e6, _e32.dir), 0.0);
-        vec3 _e39 = normalize_vec3f((_e32.dir + v_2));
-        float ndh = max(dot(_e6, _e39), 0.0);
-        float d_4 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
-        float ggx = ((a2_ * INV_PI) / max((d_4 * d_4), 1e-8));
+        uint _e32 = i_3;
+        LightSample _e35 = sample_light_query(_e32, hit_5.position, hit_5.geometric_normal);
+        float ndl = max(dot(_e7, _e35.dir), 0.0);
+        vec3 _e42 = normalize_vec3f((_e35.dir + v_2));
+        float ndh = max(dot(_e7, _e42), 0.0);
+        float d_5 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
+        float ggx = ((a2_ * INV_PI) / max((d_5 * d_5), 1e-8));
         float vis = (0.5 / max(((ndl * sqrt((((ndv * ndv) * (1.0 - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1.0 - a2_)) + a2_)))), 1e-8));
-        vec3 fresnel = (f0_ + ((vec3(1.0) - f0_) * vec3(pow((1.0 - max(dot(v_2, _e39), 0.0)), 5.0))));
-        vec3 _e87 = color;
-        color = (_e87 + ((_e32.radiance * vec3(ndl)) * (((c_3 * vec3((1.0 - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))));
+        vec3 fresnel = (f0_ + ((vec3(1.0) - f0_) * vec3(pow((1.0 - max(dot(v_2, _e42), 0.0)), 5.0))));
+        vec3 _e90 = color;
+        color = (_e90 + ((_e35.radiance * vec3(ndl)) * (((c_3 * vec3((1.0 - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))));
     }
-    vec3 _e107 = color;
-    return _e107;
+    vec3 _e111 = color;
+    return (emissive + (vec3(occlusion) * _e111));
 }
 
-vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_15, Hit hit_5) {
-    vec4 _e7 = sample_texture(m_1.base_texture, hit_5.uv);
+vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_16, Hit hit_6) {
+    vec4 _e7 = sample_texture(m_1.base_texture, hit_6.uv);
     vec3 c_9 = (m_1.base_color.xyz * _e7.xyz);
-    vec3 _e13 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, m_1.emissive, ray_15, hit_5);
-    return _e13;
+    vec4 _e12 = sample_texture(m_1.metal_rough_texture, hit_6.uv);
+    float _e16 = gltf_occlusion(m_1.occlusion_texture, m_1.occlusion_strength, hit_6.uv);
+    vec4 _e20 = sample_texture(m_1.emissive_texture, hit_6.uv);
+    vec3 e_2 = (m_1.emissive * _e20.xyz);
+    vec3 _e29 = gltf_radiance(c_9, (m_1.metallic * _e12.z), (m_1.roughness * _e12.y), _e16, e_2, ray_16, hit_6);
+    return _e29;
 }
 
 GltfMaterial load_GltfMaterial(uint offset_9) {
@@ -1169,29 +1270,37 @@ GltfMaterial load_GltfMaterial(uint offset_9) {
     uint _e30 = _group_0_binding_6_cs[(offset_9 + 4u)];
     uint _e35 = _group_0_binding_6_cs[(offset_9 + 5u)];
     uint _e41 = _group_0_binding_6_cs[(offset_9 + 6u)];
-    uint _e47 = _group_0_binding_6_cs[(offset_9 + 8u)];
-    uint _e53 = _group_0_binding_6_cs[(offset_9 + 9u)];
-    uint _e59 = _group_0_binding_6_cs[(offset_9 + 10u)];
-    return GltfMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), vec3(uintBitsToFloat(_e47), uintBitsToFloat(_e53), uintBitsToFloat(_e59)));
+    uint _e47 = _group_0_binding_6_cs[(offset_9 + 7u)];
+    uint _e52 = _group_0_binding_6_cs[(offset_9 + 8u)];
+    uint _e58 = _group_0_binding_6_cs[(offset_9 + 9u)];
+    uint _e64 = _group_0_binding_6_cs[(offset_9 + 10u)];
+    uint _e71 = _group_0_binding_6_cs[(offset_9 + 11u)];
+    uint _e76 = _group_0_binding_6_cs[(offset_9 + 12u)];
+    uint _e81 = _group_0_binding_6_cs[(offset_9 + 13u)];
+    return GltfMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), _e47, vec3(uintBitsToFloat(_e52), uintBitsToFloat(_e58), uintBitsToFloat(_e64)), _e71, _e76, uintBitsToFloat(_e81));
 }
 
-vec3 gltf_shade(GltfMaterial m_2, Ray ray_16, Hit hit_6) {
-    vec4 _e7 = sample_texture(m_2.base_texture, hit_6.uv);
+vec3 gltf_shade(GltfMaterial m_2, Ray ray_17, Hit hit_7) {
+    vec4 _e7 = sample_texture(m_2.base_texture, hit_7.uv);
     vec3 c_10 = (m_2.base_color.xyz * _e7.xyz);
-    vec3 _e13 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, m_2.emissive, ray_16, hit_6);
-    return _e13;
+    vec4 _e12 = sample_texture(m_2.metal_rough_texture, hit_7.uv);
+    float _e16 = gltf_occlusion(m_2.occlusion_texture, m_2.occlusion_strength, hit_7.uv);
+    vec4 _e20 = sample_texture(m_2.emissive_texture, hit_7.uv);
+    vec3 e_3 = (m_2.emissive * _e20.xyz);
+    vec3 _e29 = gltf_radiance(c_10, (m_2.metallic * _e12.z), (m_2.roughness * _e12.y), _e16, e_3, ray_17, hit_7);
+    return _e29;
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_17, Hit hit_7, vec3 secondary) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_18, Hit hit_8, vec3 secondary) {
     switch(type_id_4) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10);
-            vec3 _e5 = gltf_masked_shade(_e4, ray_17, hit_7);
+            vec3 _e5 = gltf_masked_shade(_e4, ray_18, hit_8);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_10);
-            vec3 _e7 = gltf_shade(_e6, ray_17, hit_7);
+            vec3 _e7 = gltf_shade(_e6, ray_18, hit_8);
             return _e7;
         }
         default: {
@@ -1201,60 +1310,60 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_17, Hit hit_7,
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_18, Candidate c_4) {
+vec3 shade_direct(Ray ray_19, Candidate c_4) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_4.slot];
-    Hit _e6 = finish_hit(ray_18, c_4);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_19, c_4);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, vec3(0.0));
     return _e11;
 }
 
-vec3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_19, float t_2, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_20, float t_3, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_20, float t_3, vec3 radiance_1) {
+vec3 through_medium(Ray ray_21, float t_4, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_20.medium == 0u)) {
+    if ((ray_21.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_20.medium - 1u)];
+    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_21.medium - 1u)];
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_20, t_3, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_21, t_4, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_21, Hit hit_8) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_22, Hit hit_9) {
     return;
 }
 
 vec3 spawn_origin_at(vec3 position_6, vec3 normal_6, float error_1, vec3 dir_2) {
-    vec3 n_5 = vec3(0.0);
-    n_5 = normal_6;
-    vec3 _e5 = n_5;
+    vec3 n_6 = vec3(0.0);
+    n_6 = normal_6;
+    vec3 _e5 = n_6;
     if ((dot(dir_2, _e5) < 0.0)) {
-        vec3 _e9 = n_5;
-        n_5 = -(_e9);
+        vec3 _e9 = n_6;
+        n_6 = -(_e9);
     }
-    vec3 _e11 = n_5;
+    vec3 _e11 = n_6;
     vec3 _e12 = offset_origin(position_6, _e11, error_1);
     return _e12;
 }
 
-vec3 spawn_origin(Hit hit_9, float error_2, vec3 dir_3) {
-    vec3 _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_3);
+vec3 spawn_origin(Hit hit_10, float error_2, vec3 dir_3) {
+    vec3 _e5 = spawn_origin_at(hit_10.position, hit_10.geometric_normal, error_2, dir_3);
     return _e5;
 }
 
 vec3 trace(Ray camera_ray) {
     vec3 radiance_2 = vec3(0.0);
-    float t_4 = 0.0;
+    float t_5 = 0.0;
     Frame stack[4] = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_22 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_23 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
@@ -1266,16 +1375,16 @@ vec3 trace(Ray camera_ray) {
     bool waiting = false;
     bool pushed = false;
     vec3 radiance_3 = vec3(0.0);
-    float t_5 = 0.0;
-    Hit hit_10 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
+    float t_6 = 0.0;
+    Hit hit_11 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
-    uint i_3 = 0u;
+    uint i_4 = 0u;
     uint medium = 0u;
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false);
         radiance_2 = vec3(0.0);
         uint _e9 = F32_INF;
-        t_4 = uintBitsToFloat(_e9);
+        t_5 = uintBitsToFloat(_e9);
         if ((_e4.slot == NO_HIT)) {
             hit_error = 0.0;
             vec3 _e17 = miss(camera_ray);
@@ -1283,16 +1392,16 @@ vec3 trace(Ray camera_ray) {
         } else {
             vec3 _e18 = shade_direct(camera_ray, _e4);
             radiance_2 = _e18;
-            t_4 = _e4.t;
+            t_5 = _e4.t;
         }
-        float _e20 = t_4;
+        float _e20 = t_5;
         vec3 _e21 = radiance_2;
         vec3 _e22 = through_medium(camera_ray, _e20, _e21);
         return _e22;
     }
     stack = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_22 = camera_ray;
+    ray_23 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1308,10 +1417,10 @@ vec3 trace(Ray camera_ray) {
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_22;
+            Ray _e67 = ray_23;
             Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_22;
+            Ray _e70 = ray_23;
             s_ray = _e70;
             s_sum = vec3(0.0);
             fresh = true;
@@ -1323,7 +1432,7 @@ vec3 trace(Ray camera_ray) {
             pushed = false;
             radiance_3 = vec3(0.0);
             uint _e83 = F32_INF;
-            t_5 = uintBitsToFloat(_e83);
+            t_6 = uintBitsToFloat(_e83);
             uint _e87 = s_c.slot;
             if ((_e87 == NO_HIT)) {
                 hit_error = 0.0;
@@ -1334,55 +1443,55 @@ vec3 trace(Ray camera_ray) {
                 uint _e95 = s_c.slot;
                 GpuInstance inst_10 = _group_0_binding_3_cs[_e95];
                 Hit _e99 = s_hit;
-                hit_10 = _e99;
+                hit_11 = _e99;
                 bool _e101 = fresh;
                 if (_e101) {
                     Ray _e102 = s_ray;
                     Candidate _e103 = s_c;
                     Hit _e104 = finish_hit(_e102, _e103);
-                    hit_10 = _e104;
+                    hit_11 = _e104;
                     float _e106 = hit_error;
                     s_error = _e106;
                 } else {
                     float _e107 = s_error;
                     hit_error = _e107;
                 }
-                float _e110 = hit_10.t;
-                t_5 = _e110;
+                float _e110 = hit_11.t;
+                t_6 = _e110;
                 bool _e111 = fresh;
                 uint _e119 = s_ray.depth;
                 uint _e123 = depth;
                 if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
                     spawn_count = 0u;
                     Ray _e131 = s_ray;
-                    Hit _e132 = hit_10;
+                    Hit _e132 = hit_11;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
                     uint _e134 = spawn_count;
-                    uint n_8 = min(min(_e134, 1u), MAX_SPAWN);
-                    if ((n_8 > 0u)) {
+                    uint n_9 = min(min(_e134, 1u), MAX_SPAWN);
+                    if ((n_9 > 0u)) {
                         Ray _e141 = s_ray;
-                        Hit _e142 = hit_10;
+                        Hit _e142 = hit_11;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_8, 0u);
-                        i_3 = 0u;
-                        bool loop_init_3 = true;
+                        f = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_9, 0u);
+                        i_4 = 0u;
+                        bool loop_init_4 = true;
                         while(true) {
-                            if (!loop_init_3) {
-                                uint _e175 = i_3;
-                                i_3 = (_e175 + 1u);
+                            if (!loop_init_4) {
+                                uint _e175 = i_4;
+                                i_4 = (_e175 + 1u);
                             }
-                            loop_init_3 = false;
-                            uint _e155 = i_3;
-                            if ((_e155 >= n_8)) {
+                            loop_init_4 = false;
+                            uint _e155 = i_4;
+                            if ((_e155 >= n_9)) {
                                 break;
                             }
-                            uint _e158 = i_3;
-                            uint _e162 = i_3;
+                            uint _e158 = i_4;
+                            uint _e162 = i_4;
                             vec3 _e165 = spawn_dirs[_e162];
                             f.dirs[min(_e158, 0u)] = _e165;
-                            uint _e167 = i_3;
-                            uint _e171 = i_3;
+                            uint _e167 = i_4;
+                            uint _e171 = i_4;
                             vec3 _e174 = spawn_weights[_e171];
                             f.weights[min(_e167, 0u)] = _e174;
                         }
@@ -1397,7 +1506,7 @@ vec3 trace(Ray camera_ray) {
                 bool _e187 = pushed;
                 if (!(_e187)) {
                     Ray _e191 = s_ray;
-                    Hit _e192 = hit_10;
+                    Hit _e192 = hit_11;
                     vec3 _e193 = s_sum;
                     vec3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
                     radiance_3 = _e194;
@@ -1406,7 +1515,7 @@ vec3 trace(Ray camera_ray) {
             bool _e195 = pushed;
             if (!(_e195)) {
                 Ray _e197 = s_ray;
-                float _e198 = t_5;
+                float _e198 = t_6;
                 vec3 _e199 = radiance_3;
                 vec3 _e200 = through_medium(_e197, _e198, _e199);
                 value = _e200;
@@ -1435,17 +1544,17 @@ vec3 trace(Ray camera_ray) {
         uint _e241 = stack[min(top_1, 3u)].next;
         uint _e246 = stack[min(top_1, 3u)].count;
         if ((_e241 < _e246)) {
-            uint i_4 = stack[min(top_1, 3u)].next;
-            stack[min(top_1, 3u)].next = (i_4 + 1u);
+            uint i_5 = stack[min(top_1, 3u)].next;
+            stack[min(top_1, 3u)].next = (i_5 + 1u);
             Ray parent = stack[min(top_1, 3u)].ray;
-            Hit hit_12 = stack[min(top_1, 3u)].hit;
-            vec3 dir_6 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
+            Hit hit_13 = stack[min(top_1, 3u)].hit;
+            vec3 dir_6 = stack[min(top_1, 3u)].dirs[min(i_5, 0u)];
             medium = parent.medium;
             float _e283 = stack[min(top_1, 3u)].error;
-            vec3 _e284 = spawn_origin(hit_12, _e283, dir_6);
+            vec3 _e284 = spawn_origin(hit_13, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_22 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_23 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -1465,8 +1574,8 @@ vec3 trace(Ray camera_ray) {
     return vec3(0.0);
 }
 
-bvec3 is_finite_vec3f(vec3 x_4) {
-    return lessThan((floatBitsToUint(x_4) & uvec3(2147483647u)), uvec3(2139095040u));
+bvec3 is_finite_vec3f(vec3 x_5) {
+    return lessThan((floatBitsToUint(x_5) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
 vec3 finite_or_zero(vec3 c_5) {
@@ -1478,20 +1587,20 @@ void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s_1 = 0u;
-    Ray ray_23 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_24 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_2 = _group_0_binding_1_cs;
     sum = vec3(0.0);
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_1 = 0u;
-    bool loop_init_4 = true;
+    bool loop_init_5 = true;
     while(true) {
-        if (!loop_init_4) {
+        if (!loop_init_5) {
             uint _e46 = s_1;
             s_1 = (_e46 + 1u);
         }
-        loop_init_4 = false;
+        loop_init_5 = false;
         uint _e13 = s_1;
         if ((_e13 >= end_1)) {
             break;
@@ -1500,13 +1609,13 @@ void render_pixel(uvec2 pixel_3) {
         uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_23 = _e23;
-        ray_23.depth = 0u;
-        ray_23.kind = RAY_CAMERA;
-        vec3 _e31 = ray_23.origin;
+        ray_24 = _e23;
+        ray_24.depth = 0u;
+        ray_24.kind = RAY_CAMERA;
+        vec3 _e31 = ray_24.origin;
         uint _e33 = medium_at(_e31, NO_HIT);
-        ray_23.medium = _e33;
-        Ray _e34 = ray_23;
+        ray_24.medium = _e33;
+        Ray _e34 = ray_24;
         vec3 _e35 = trace(_e34);
         bvec3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

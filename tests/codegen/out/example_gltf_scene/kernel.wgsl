@@ -103,8 +103,14 @@ struct GltfMaskedMaterial {
     base_texture: u32,
     metallic: f32,
     roughness: f32,
+    metal_rough_texture: u32,
     emissive: vec3<f32>,
+    emissive_texture: u32,
+    occlusion_texture: u32,
+    occlusion_strength: f32,
     alpha_cutoff: f32,
+    blend: u32,
+    double_sided: u32,
 }
 
 struct SkyGradient {
@@ -138,7 +144,11 @@ struct GltfMaterial {
     base_texture: u32,
     metallic: f32,
     roughness: f32,
+    metal_rough_texture: u32,
     emissive: vec3<f32>,
+    emissive_texture: u32,
+    occlusion_texture: u32,
+    occlusion_strength: f32,
 }
 
 struct Frame {
@@ -170,7 +180,13 @@ const POINT_ERROR: f32 = 0.0000019073486f;
 const GAMMA_1_: f32 = 0.00000005960465f;
 const GAMMA_6_: f32 = 0.0000003576281f;
 const GAMMA_4_: f32 = 0.00000023841864f;
+const TEXTURE_NEAREST: u32 = 16u;
+const TEXTURE_WRAP_MASK: u32 = 3u;
+const TEXTURE_WRAP_CLAMP: u32 = 1u;
+const TEXTURE_WRAP_MIRROR: u32 = 2u;
+const TEXTURE_WRAP_V_SHIFT: u32 = 2u;
 const TEXTURE_FORMAT_RGBA8_SRGB: u32 = 0u;
+const TEXTURE_FORMAT_RGBA8_UNORM: u32 = 2u;
 const RGBA16F_TEXEL_WORDS: u32 = 2u;
 const BLAS_STACK: u32 = 64u;
 const TLAS_STACK: u32 = 64u;
@@ -341,9 +357,9 @@ fn pinhole_ray(cam: Pinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
     let _e24 = normalize_vec3f((cam.look_at - cam.position));
     let _e27 = normalize_vec3f(cross(_e24, cam.up));
     let up = cross(_e27, _e24);
-    let h_1 = tan((radians(cam.fov) * 0.5f));
+    let h_2 = tan((radians(cam.fov) * 0.5f));
     let aspect = (size_1.x / size_1.y);
-    let _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
+    let _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_2) * aspect)))) - (up * vec3((ndc.y * h_2)))));
     let _e52 = F32_INF;
     return Ray(cam.position, 0f, _e48, bitcast<f32>(_e52), 0u, 0u, 0u);
 }
@@ -412,10 +428,10 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
-    let t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
-    let hit_11 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
+    let t_7 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
+    let hit_12 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_7 >= tmin)) && (t_7 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_6, (v_1 * rcp), (w * rcp)), hit_11);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_7, (v_1 * rcp), (w * rcp)), hit_12);
 }
 
 fn point_error(origin: vec3<f32>, along: vec3<f32>) -> f32 {
@@ -534,11 +550,17 @@ fn load_GltfMaskedMaterial(offset_2: u32) -> GltfMaskedMaterial {
     let _e30 = params[(offset_2 + 4u)];
     let _e35 = params[(offset_2 + 5u)];
     let _e41 = params[(offset_2 + 6u)];
-    let _e47 = params[(offset_2 + 8u)];
-    let _e53 = params[(offset_2 + 9u)];
-    let _e59 = params[(offset_2 + 10u)];
-    let _e66 = params[(offset_2 + 11u)];
-    return GltfMaskedMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), vec3<f32>(bitcast<f32>(_e47), bitcast<f32>(_e53), bitcast<f32>(_e59)), bitcast<f32>(_e66));
+    let _e47 = params[(offset_2 + 7u)];
+    let _e52 = params[(offset_2 + 8u)];
+    let _e58 = params[(offset_2 + 9u)];
+    let _e64 = params[(offset_2 + 10u)];
+    let _e71 = params[(offset_2 + 11u)];
+    let _e76 = params[(offset_2 + 12u)];
+    let _e81 = params[(offset_2 + 13u)];
+    let _e87 = params[(offset_2 + 14u)];
+    let _e93 = params[(offset_2 + 15u)];
+    let _e98 = params[(offset_2 + 16u)];
+    return GltfMaskedMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), _e47, vec3<f32>(bitcast<f32>(_e52), bitcast<f32>(_e58), bitcast<f32>(_e64)), _e71, _e76, bitcast<f32>(_e81), bitcast<f32>(_e87), _e93, _e98);
 }
 
 fn i32_from_f32_(x_1: f32) -> i32 {
@@ -551,6 +573,20 @@ fn rem_i32_(a_4: i32, b_4: i32) -> i32 {
     return select((a_4 - (divisor_4 * (a_4 / divisor_4))), 0i, by_zero_4);
 }
 
+fn wrap_texel(x_2: i32, n_2: i32, mode: u32) -> i32 {
+    if (mode == TEXTURE_WRAP_CLAMP) {
+        return min(max(x_2, 0i), (n_2 - 1i));
+    }
+    if (mode == TEXTURE_WRAP_MIRROR) {
+        let _e14 = rem_i32_(x_2, (2i * n_2));
+        let _e20 = rem_i32_((_e14 + (2i * n_2)), (2i * n_2));
+        return select(_e20, (((2i * n_2) - 1i) - _e20), (_e20 >= n_2));
+    }
+    let _e28 = rem_i32_(x_2, n_2);
+    let _e30 = rem_i32_((_e28 + n_2), n_2);
+    return _e30;
+}
+
 fn srgb_channel(c_1: f32) -> f32 {
     if (c_1 <= 0.04045f) {
         return (c_1 / 12.92f);
@@ -558,32 +594,35 @@ fn srgb_channel(c_1: f32) -> f32 {
     return pow(((c_1 + 0.055f) / 1.055f), 2.4f);
 }
 
-fn texel_at(t: u32, x_2: i32, y: i32) -> vec4<f32> {
+fn texel_at(t: u32, x_3: i32, y: i32) -> vec4<f32> {
     let base_1 = params[t];
     let _e10 = params[(t + 1u)];
     let w_3 = max(_e10, 1u);
     let _e17 = params[(t + 2u)];
-    let h_2 = max(_e17, 1u);
+    let h_3 = max(_e17, 1u);
     let format = params[(t + 3u)];
-    let _e26 = rem_i32_(x_2, i32(w_3));
-    let _e30 = rem_i32_((_e26 + i32(w_3)), i32(w_3));
-    let xi = u32(_e30);
-    let _e33 = rem_i32_(y, i32(h_2));
-    let _e37 = rem_i32_((_e33 + i32(h_2)), i32(h_2));
-    let yi = u32(_e37);
+    let sampler_ = params[(t + 4u)];
+    let _e33 = wrap_texel(x_3, i32(w_3), (sampler_ & TEXTURE_WRAP_MASK));
+    let xi = u32(_e33);
+    let _e42 = wrap_texel(y, i32(h_3), ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK));
+    let yi = u32(_e42);
     let index = ((yi * w_3) + xi);
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        let _e46 = texels[(base_1 + index)];
-        let c_7 = unpack4x8unorm(_e46);
-        let _e49 = srgb_channel(c_7.x);
-        let _e51 = srgb_channel(c_7.y);
-        let _e53 = srgb_channel(c_7.z);
-        return vec4<f32>(_e49, _e51, _e53, c_7.w);
+        let _e51 = texels[(base_1 + index)];
+        let c_7 = unpack4x8unorm(_e51);
+        let _e54 = srgb_channel(c_7.x);
+        let _e56 = srgb_channel(c_7.y);
+        let _e58 = srgb_channel(c_7.z);
+        return vec4<f32>(_e54, _e56, _e58, c_7.w);
     }
-    let _e61 = texels[(base_1 + (index * RGBA16F_TEXEL_WORDS))];
-    let rg = unpack2x16float(_e61);
-    let _e70 = texels[((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
-    let ba = unpack2x16float(_e70);
+    if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
+        let _e66 = texels[(base_1 + index)];
+        return unpack4x8unorm(_e66);
+    }
+    let _e73 = texels[(base_1 + (index * RGBA16F_TEXEL_WORDS))];
+    let rg = unpack2x16float(_e73);
+    let _e82 = texels[((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
+    let ba = unpack2x16float(_e82);
     return vec4<f32>(rg, ba);
 }
 
@@ -591,38 +630,90 @@ fn sample_texture(t_1: u32, uv: vec2<f32>) -> vec4<f32> {
     let _e6 = params[(t_1 + 1u)];
     let w_4 = f32(max(_e6, 1u));
     let _e14 = params[(t_1 + 2u)];
-    let h_3 = f32(max(_e14, 1u));
-    let p_7 = ((uv * vec2<f32>(w_4, h_3)) - vec2(0.5f));
+    let h_4 = f32(max(_e14, 1u));
+    let _e22 = params[(t_1 + 4u)];
+    if ((_e22 & TEXTURE_NEAREST) != 0u) {
+        let q_3 = floor((uv * vec2<f32>(w_4, h_4)));
+        let _e31 = i32_from_f32_(q_3.x);
+        let _e33 = i32_from_f32_(q_3.y);
+        let _e34 = texel_at(t_1, _e31, _e33);
+        return _e34;
+    }
+    let p_7 = ((uv * vec2<f32>(w_4, h_4)) - vec2(0.5f));
     let f_1 = floor(p_7);
     let fr = (p_7 - f_1);
-    let _e26 = i32_from_f32_(f_1.x);
-    let _e28 = i32_from_f32_(f_1.y);
-    let _e29 = texel_at(t_1, _e26, _e28);
-    let _e32 = texel_at(t_1, (_e26 + 1i), _e28);
-    let a_7 = mix(_e29, _e32, vec4(fr.x));
-    let _e38 = texel_at(t_1, _e26, (_e28 + 1i));
-    let _e43 = texel_at(t_1, (_e26 + 1i), (_e28 + 1i));
-    let b_8 = mix(_e38, _e43, vec4(fr.x));
+    let _e43 = i32_from_f32_(f_1.x);
+    let _e45 = i32_from_f32_(f_1.y);
+    let _e46 = texel_at(t_1, _e43, _e45);
+    let _e49 = texel_at(t_1, (_e43 + 1i), _e45);
+    let a_7 = mix(_e46, _e49, vec4(fr.x));
+    let _e55 = texel_at(t_1, _e43, (_e45 + 1i));
+    let _e60 = texel_at(t_1, (_e43 + 1i), (_e45 + 1i));
+    let b_8 = mix(_e55, _e60, vec4(fr.x));
     return mix(a_7, b_8, vec4(fr.y));
 }
 
-fn gltf_masked_any_hit(m: GltfMaskedMaterial, ray_3: Ray, hit_1: Hit) -> bool {
-    let _e6 = sample_texture(m.base_texture, hit_1.uv);
-    return ((m.base_color.w * _e6.w) >= m.alpha_cutoff);
+fn frame_index_query() -> u32 {
+    let _e1 = tile;
+    return _e1.frame;
 }
 
-fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_4: Ray, hit_2: Hit) -> bool {
+fn gltf_coverage(ray_3: Ray, hit_1: Hit) -> f32 {
+    var h_1: u32;
+    var i: u32;
+
+    let o_1 = bitcast<vec3<u32>>(ray_3.origin);
+    let d_3 = bitcast<vec3<u32>>(ray_3.dir);
+    h_1 = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u));
+    let _e20 = h_1;
+    h_1 = (((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
+    let _e33 = h_1;
+    let _e38 = frame_index_query();
+    h_1 = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
+    i = 0u;
+    loop {
+        let _e45 = i;
+        if (_e45 >= 2u) {
+            break;
+        }
+        let _e47 = h_1;
+        let state_1 = ((_e47 * 747796405u) + 2891336453u);
+        let word_2 = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
+        h_1 = ((word_2 >> 22u) ^ word_2);
+        continuing {
+            let _e65 = i;
+            i = (_e65 + 1u);
+        }
+    }
+    let _e68 = h_1;
+    return (f32((_e68 >> 8u)) * (1f / 16777216f));
+}
+
+fn gltf_masked_any_hit(m: GltfMaskedMaterial, ray_4: Ray, hit_2: Hit) -> bool {
+    if ((m.double_sided == 0u) && !(hit_2.front_face)) {
+        return false;
+    }
+    let _e14 = sample_texture(m.base_texture, hit_2.uv);
+    let alpha = (m.base_color.w * _e14.w);
+    if (m.blend != 0u) {
+        let _e20 = gltf_coverage(ray_4, hit_2);
+        return (_e20 < alpha);
+    }
+    return (alpha >= m.alpha_cutoff);
+}
+
+fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_5: Ray, hit_3: Hit) -> bool {
     let _e3 = load_GltfMaskedMaterial(offset_3);
-    let _e4 = gltf_masked_any_hit(_e3, ray_4, hit_2);
+    let _e4 = gltf_masked_any_hit(_e3, ray_5, hit_3);
     return _e4;
 }
 
-fn accept(inst_4: GpuInstance, ray_5: Ray, c_2: Candidate) -> bool {
+fn accept(inst_4: GpuInstance, ray_6: Ray, c_2: Candidate) -> bool {
     if ((inst_4.flags & FLAG_ANY_HIT) != 0u) {
         let shaded = hit_error;
-        let _e10 = finish_hit(ray_5, c_2);
+        let _e10 = finish_hit(ray_6, c_2);
         hit_error = shaded;
-        let _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
+        let _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_6, _e10);
         return _e14;
     }
     return true;
@@ -654,19 +745,19 @@ fn slab(lo: vec3<f32>, hi: vec3<f32>, origin_2: vec3<f32>, inv_dir: vec3<f32>, t
     return bitcast<f32>(_e30);
 }
 
-fn children_entry(n_2: GpuNode, origin_3: vec3<f32>, scale_1: vec3<f32>, ray_6: Ray, inv: vec3<f32>, tmax_3: f32) -> vec2<f32> {
-    let lq = bitcast<vec3<u32>>(n_2.min);
-    let rq = bitcast<vec3<u32>>(n_2.max);
+fn children_entry(n_3: GpuNode, origin_3: vec3<f32>, scale_1: vec3<f32>, ray_7: Ray, inv: vec3<f32>, tmax_3: f32) -> vec2<f32> {
+    let lq = bitcast<vec3<u32>>(n_3.min);
+    let rq = bitcast<vec3<u32>>(n_3.max);
     let _e10 = node_box_lo(lq);
     let _e11 = node_point(origin_3, scale_1, _e10);
     let _e12 = node_box_hi(lq);
     let _e13 = node_point(origin_3, scale_1, _e12);
-    let _e16 = slab(_e11, _e13, ray_6.origin, inv, ray_6.tmin, tmax_3);
+    let _e16 = slab(_e11, _e13, ray_7.origin, inv, ray_7.tmin, tmax_3);
     let _e17 = node_box_lo(rq);
     let _e18 = node_point(origin_3, scale_1, _e17);
     let _e19 = node_box_hi(rq);
     let _e20 = node_point(origin_3, scale_1, _e19);
-    let _e23 = slab(_e18, _e20, ray_6.origin, inv, ray_6.tmin, tmax_3);
+    let _e23 = slab(_e18, _e20, ray_7.origin, inv, ray_7.tmin, tmax_3);
     return vec2<f32>(_e16, _e23);
 }
 
@@ -678,7 +769,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_8: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -687,8 +778,8 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e8 = safe_inverse(ray_7.dir);
-    let _e9 = prepare_triangle_ray(ray_7);
+    let _e8 = safe_inverse(ray_8.dir);
+    let _e9 = prepare_triangle_ray(ray_8);
     let base_2 = inst_5.blas_root;
     let header_1 = nodes[base_2];
     let origin_4 = header_1.min;
@@ -711,7 +802,7 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, 
                 let _e41 = k;
                 let prim = ((inst_5.triangle_offset + first) + _e41);
                 let _e45 = best.t;
-                let _e46 = hit_triangle(_e9, prim, ray_7.tmin, _e45);
+                let _e46 = hit_triangle(_e9, prim, ray_8.tmin, _e45);
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
                     let c_8 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0f));
@@ -731,19 +822,19 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, 
             }
         } else {
             let _e62 = child;
-            let n_6 = nodes[(base_2 + _e62)];
+            let n_7 = nodes[(base_2 + _e62)];
             let _e68 = best.t;
-            let _e69 = children_entry(n_6, origin_4, scale_2, ray_7, _e8, _e68);
+            let _e69 = children_entry(n_7, origin_4, scale_2, ray_8, _e8, _e68);
             let tl = _e69.x;
             let tr = _e69.y;
             let _e73 = F32_INF;
             let _e77 = F32_INF;
             if ((tl < bitcast<f32>(_e73)) && (tr < bitcast<f32>(_e77))) {
-                near = n_6.a;
-                far = n_6.b;
+                near = n_7.a;
+                far = n_7.b;
                 if ((tr < tl) != shadow) {
-                    near = n_6.b;
-                    far = n_6.a;
+                    near = n_7.b;
+                    far = n_7.a;
                 }
                 let _e89 = sp_1;
                 if (_e89 < BLAS_STACK) {
@@ -759,12 +850,12 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, 
             }
             let _e105 = F32_INF;
             if (tl < bitcast<f32>(_e105)) {
-                child = n_6.a;
+                child = n_7.a;
                 continue;
             }
             let _e110 = F32_INF;
             if (tr < bitcast<f32>(_e110)) {
-                child = n_6.b;
+                child = n_7.b;
                 continue;
             }
         }
@@ -780,16 +871,16 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, 
     return _e122;
 }
 
-fn intersect_object(slot_3: u32, ray_8: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_3: u32, ray_9: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
     let inst_7 = instances[slot_3];
-    let _e7 = to_object(inst_7, ray_8);
+    let _e7 = to_object(inst_7, ray_9);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_7, slot_3, ray_9, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -798,7 +889,7 @@ fn intersect_object(slot_3: u32, ray_8: Ray, best_1: Candidate, shadow_1: bool) 
 fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     var inside: u32;
     var nearest: f32;
-    var i: u32;
+    var i_1: u32;
 
     if !(HAS_MEDIA) {
         return 0u;
@@ -811,13 +902,13 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     let _e23 = F32_INF;
     nearest = bitcast<f32>(_e23);
     let end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     loop {
-        let _e29 = i;
+        let _e29 = i_1;
         if (_e29 >= end) {
             break;
         }
-        let _e32 = i;
+        let _e32 = i_1;
         let slot_4 = params[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if (slot_4 != exclude) {
             let _e41 = F32_INF;
@@ -833,8 +924,8 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
             }
         }
         continuing {
-            let _e59 = i;
-            i = (_e59 + 1u);
+            let _e59 = i_1;
+            i_1 = (_e59 + 1u);
         }
     }
     let _e62 = inside;
@@ -846,7 +937,7 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     return _e5;
 }
 
-fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -855,21 +946,21 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_9.tmax);
+    let _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
     let frame_2 = frame;
     if (frame_2.instance_count == 0u) {
         let _e14 = best_2;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_9.dir);
+    let _e16 = safe_inverse(ray_10.dir);
     let base_3 = frame_2.tlas_root;
     let header_2 = nodes[base_3];
     let origin_5 = header_2.min;
     let scale_3 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
+    let _e28 = slab(origin_5, _e23, ray_10.origin, _e16, ray_10.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
@@ -884,7 +975,7 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e52 = child_1;
                 let _e55 = best_2;
-                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_9, _e55, shadow_2);
+                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_10, _e55, shadow_2);
                 best_2 = _e56;
                 let _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -894,19 +985,19 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
             }
         } else {
             let _e63 = child_1;
-            let n_7 = nodes[(base_3 + _e63)];
+            let n_8 = nodes[(base_3 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_7, origin_5, scale_3, ray_9, _e16, _e69);
+            let _e70 = children_entry(n_8, origin_5, scale_3, ray_10, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
             let _e78 = F32_INF;
             if ((tl_1 < bitcast<f32>(_e74)) && (tr_1 < bitcast<f32>(_e78))) {
-                near_1 = n_7.a;
-                far_1 = n_7.b;
+                near_1 = n_8.a;
+                far_1 = n_8.b;
                 if (tr_1 < tl_1) {
-                    near_1 = n_7.b;
-                    far_1 = n_7.a;
+                    near_1 = n_8.b;
+                    far_1 = n_8.a;
                 }
                 let _e89 = sp_2;
                 if (_e89 < TLAS_STACK) {
@@ -922,12 +1013,12 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
             }
             let _e103 = F32_INF;
             if (tl_1 < bitcast<f32>(_e103)) {
-                child_1 = n_7.a;
+                child_1 = n_8.a;
                 continue;
             }
             let _e108 = F32_INF;
             if (tr_1 < bitcast<f32>(_e108)) {
-                child_1 = n_7.b;
+                child_1 = n_8.b;
                 continue;
             }
         }
@@ -956,8 +1047,8 @@ fn load_SkyGradient(offset_4: u32) -> SkyGradient {
     return SkyGradient(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)));
 }
 
-fn sky_gradient(b_5: SkyGradient, ray_10: Ray) -> vec3<f32> {
-    let _e3 = normalize_vec3f(ray_10.dir);
+fn sky_gradient(b_5: SkyGradient, ray_11: Ray) -> vec3<f32> {
+    let _e3 = normalize_vec3f(ray_11.dir);
     let y_1 = _e3.y;
     if (y_1 < 0f) {
         return mix(b_5.horizon, b_5.ground, vec3(min((-(y_1) * 4f), 1f)));
@@ -965,24 +1056,29 @@ fn sky_gradient(b_5: SkyGradient, ray_10: Ray) -> vec3<f32> {
     return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y_1)));
 }
 
-fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_11: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_12: Ray) -> vec3<f32> {
     let _e2 = load_SkyGradient(offset_5);
-    let _e3 = sky_gradient(_e2, ray_11);
+    let _e3 = sky_gradient(_e2, ray_12);
     return _e3;
 }
 
-fn miss(ray_12: Ray) -> vec3<f32> {
+fn miss(ray_13: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_3 = frame;
-    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_12);
+    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_13);
     return _e9;
 }
 
-fn shading_normal(ray_13: Ray, hit_3: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_3.geometric_normal, ray_13.dir, hit_3.geometric_normal);
-    return faceForward(hit_3.normal, -(ng), hit_3.normal);
+fn gltf_occlusion(t_2: u32, strength: f32, uv_1: vec2<f32>) -> f32 {
+    let _e4 = sample_texture(t_2, uv_1);
+    return (1f + (strength * (_e4.x - 1f)));
+}
+
+fn shading_normal(ray_14: Ray, hit_4: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_4.geometric_normal, ray_14.dir, hit_4.geometric_normal);
+    return faceForward(hit_4.normal, -(ng), hit_4.normal);
 }
 
 fn light_count_query() -> u32 {
@@ -1001,36 +1097,36 @@ fn load_DirectionalLight(offset_6: u32) -> DirectionalLight {
     return DirectionalLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43));
 }
 
-fn step_toward(x_3: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
-    let bits_1 = bitcast<vec3<u32>>(x_3);
-    let up_1 = ((sign(x_3) * sign(s)) > vec3(0f));
+fn step_toward(x_4: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
+    let bits_1 = bitcast<vec3<u32>>(x_4);
+    let up_1 = ((sign(x_4) * sign(s)) > vec3(0f));
     let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
     let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s > vec3(0f)));
-    let moved = select(stepped, from_zero, (x_3 == vec3(0f)));
-    return select(x_3, moved, !((s == vec3(0f))));
+    let moved = select(stepped, from_zero, (x_4 == vec3(0f)));
+    return select(x_4, moved, !((s == vec3(0f))));
 }
 
-fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_3 = ((2f * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    let offset_13 = (n_3 * vec3(d_3));
+fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
+    let d_4 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    let offset_13 = (n_4 * vec3(d_4));
     let _e17 = step_toward((p_5 + offset_13), offset_13);
     return _e17;
 }
 
 fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> Ray {
-    var n_4: vec3<f32>;
+    var n_5: vec3<f32>;
     var tmax_4: f32;
 
-    n_4 = normal;
-    let _e5 = n_4;
+    n_5 = normal;
+    let _e5 = n_5;
     if (dot(dir, _e5) < 0f) {
-        let _e9 = n_4;
-        n_4 = -(_e9);
+        let _e9 = n_5;
+        n_5 = -(_e9);
     }
     let a_8 = abs(position);
     let _e13 = hit_error;
     let error_3 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
-    let _e22 = n_4;
+    let _e22 = n_5;
     let _e23 = offset_origin(position, _e22, error_3);
     let _e25 = F32_INF;
     tmax_4 = bitcast<f32>(_e25);
@@ -1079,18 +1175,18 @@ fn load_PointLight(offset_7: u32) -> PointLight {
 }
 
 fn point_light(l_1: PointLight, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
-    var strength: f32;
+    var strength_1: f32;
 
     let to_light = (l_1.position - position_3);
     let dist_2 = length(to_light);
     let dir_5 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
-    strength = (l_1.intensity / max((dist_2 * dist_2), 0.00000000000000000001f));
+    strength_1 = (l_1.intensity / max((dist_2 * dist_2), 0.00000000000000000001f));
     if (l_1.range > 0f) {
-        let _e19 = strength;
-        strength = (_e19 * (1f - smoothstep(l_1.inner_range, l_1.range, dist_2)));
+        let _e19 = strength_1;
+        strength_1 = (_e19 * (1f - smoothstep(l_1.inner_range, l_1.range, dist_2)));
     }
     let _e26 = shadow_query(position_3, normal_3, dir_5, dist_2);
-    let _e28 = strength;
+    let _e28 = strength_1;
     return LightSample(dir_5, dist_2, ((l_1.color * vec3(_e28)) * vec3(_e26)));
 }
 
@@ -1112,62 +1208,66 @@ fn dispatch_light(type_id_3: u32, offset_8: u32, position_4: vec3<f32>, normal_4
     return LightSample();
 }
 
-fn sample_light_query(i_1: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
+fn sample_light_query(i_2: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
     let frame_4 = frame;
-    if (i_1 >= frame_4.light_count) {
+    if (i_2 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f));
     }
-    let entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
+    let entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     let _e21 = params[entry];
     let _e26 = params[(entry + 1u)];
     let _e27 = dispatch_light(_e21, _e26, position_5, normal_5);
     return _e27;
 }
 
-fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, emissive: vec3<f32>, ray_14: Ray, hit_4: Hit) -> vec3<f32> {
+fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, occlusion: f32, emissive: vec3<f32>, ray_15: Ray, hit_5: Hit) -> vec3<f32> {
     var color: vec3<f32>;
-    var i_2: u32;
+    var i_3: u32;
 
-    let _e6 = shading_normal(ray_14, hit_4);
-    let _e8 = normalize_vec3f(ray_14.dir);
-    let v_2 = -(_e8);
+    let _e7 = shading_normal(ray_15, hit_5);
+    let _e9 = normalize_vec3f(ray_15.dir);
+    let v_2 = -(_e9);
     let metal = saturate(metallic);
     let a2_ = max(pow(saturate(roughness), 4f), 0.000004f);
     let f0_ = mix(vec3(0.04f), c_3, vec3(metal));
-    let ndv = max(dot(_e6, v_2), 0.0001f);
-    color = emissive;
-    let _e25 = light_count_query();
-    i_2 = 0u;
+    let ndv = max(dot(_e7, v_2), 0.0001f);
+    color = vec3(0f);
+    let _e28 = light_count_query();
+    i_3 = 0u;
     loop {
-        let _e27 = i_2;
-        if (_e27 >= _e25) {
+        let _e30 = i_3;
+        if (_e30 >= _e28) {
             break;
         }
-        let _e29 = i_2;
-        let _e32 = sample_light_query(_e29, hit_4.position, hit_4.geometric_normal);
-        let ndl = max(dot(_e6, _e32.dir), 0f);
-        let _e39 = normalize_vec3f((_e32.dir + v_2));
-        let ndh = max(dot(_e6, _e39), 0f);
-        let d_4 = (((ndh * ndh) * (a2_ - 1f)) + 1f);
-        let ggx = ((a2_ * INV_PI) / max((d_4 * d_4), 0.00000001f));
+        let _e32 = i_3;
+        let _e35 = sample_light_query(_e32, hit_5.position, hit_5.geometric_normal);
+        let ndl = max(dot(_e7, _e35.dir), 0f);
+        let _e42 = normalize_vec3f((_e35.dir + v_2));
+        let ndh = max(dot(_e7, _e42), 0f);
+        let d_5 = (((ndh * ndh) * (a2_ - 1f)) + 1f);
+        let ggx = ((a2_ * INV_PI) / max((d_5 * d_5), 0.00000001f));
         let vis = (0.5f / max(((ndl * sqrt((((ndv * ndv) * (1f - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1f - a2_)) + a2_)))), 0.00000001f));
-        let fresnel = (f0_ + ((vec3(1f) - f0_) * vec3(pow((1f - max(dot(v_2, _e39), 0f)), 5f))));
-        let _e87 = color;
-        color = (_e87 + ((_e32.radiance * vec3(ndl)) * (((c_3 * vec3((1f - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))));
+        let fresnel = (f0_ + ((vec3(1f) - f0_) * vec3(pow((1f - max(dot(v_2, _e42), 0f)), 5f))));
+        let _e90 = color;
+        color = (_e90 + ((_e35.radiance * vec3(ndl)) * (((c_3 * vec3((1f - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))));
         continuing {
-            let _e104 = i_2;
-            i_2 = (_e104 + 1u);
+            let _e107 = i_3;
+            i_3 = (_e107 + 1u);
         }
     }
-    let _e107 = color;
-    return _e107;
+    let _e111 = color;
+    return (emissive + (vec3(occlusion) * _e111));
 }
 
-fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_15: Ray, hit_5: Hit) -> vec3<f32> {
-    let _e7 = sample_texture(m_1.base_texture, hit_5.uv);
+fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_16: Ray, hit_6: Hit) -> vec3<f32> {
+    let _e7 = sample_texture(m_1.base_texture, hit_6.uv);
     let c_9 = (m_1.base_color.xyz * _e7.xyz);
-    let _e13 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, m_1.emissive, ray_15, hit_5);
-    return _e13;
+    let _e12 = sample_texture(m_1.metal_rough_texture, hit_6.uv);
+    let _e16 = gltf_occlusion(m_1.occlusion_texture, m_1.occlusion_strength, hit_6.uv);
+    let _e20 = sample_texture(m_1.emissive_texture, hit_6.uv);
+    let e_2 = (m_1.emissive * _e20.xyz);
+    let _e29 = gltf_radiance(c_9, (m_1.metallic * _e12.z), (m_1.roughness * _e12.y), _e16, e_2, ray_16, hit_6);
+    return _e29;
 }
 
 fn load_GltfMaterial(offset_9: u32) -> GltfMaterial {
@@ -1178,29 +1278,37 @@ fn load_GltfMaterial(offset_9: u32) -> GltfMaterial {
     let _e30 = params[(offset_9 + 4u)];
     let _e35 = params[(offset_9 + 5u)];
     let _e41 = params[(offset_9 + 6u)];
-    let _e47 = params[(offset_9 + 8u)];
-    let _e53 = params[(offset_9 + 9u)];
-    let _e59 = params[(offset_9 + 10u)];
-    return GltfMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), vec3<f32>(bitcast<f32>(_e47), bitcast<f32>(_e53), bitcast<f32>(_e59)));
+    let _e47 = params[(offset_9 + 7u)];
+    let _e52 = params[(offset_9 + 8u)];
+    let _e58 = params[(offset_9 + 9u)];
+    let _e64 = params[(offset_9 + 10u)];
+    let _e71 = params[(offset_9 + 11u)];
+    let _e76 = params[(offset_9 + 12u)];
+    let _e81 = params[(offset_9 + 13u)];
+    return GltfMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), _e47, vec3<f32>(bitcast<f32>(_e52), bitcast<f32>(_e58), bitcast<f32>(_e64)), _e71, _e76, bitcast<f32>(_e81));
 }
 
-fn gltf_shade(m_2: GltfMaterial, ray_16: Ray, hit_6: Hit) -> vec3<f32> {
-    let _e7 = sample_texture(m_2.base_texture, hit_6.uv);
+fn gltf_shade(m_2: GltfMaterial, ray_17: Ray, hit_7: Hit) -> vec3<f32> {
+    let _e7 = sample_texture(m_2.base_texture, hit_7.uv);
     let c_10 = (m_2.base_color.xyz * _e7.xyz);
-    let _e13 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, m_2.emissive, ray_16, hit_6);
-    return _e13;
+    let _e12 = sample_texture(m_2.metal_rough_texture, hit_7.uv);
+    let _e16 = gltf_occlusion(m_2.occlusion_texture, m_2.occlusion_strength, hit_7.uv);
+    let _e20 = sample_texture(m_2.emissive_texture, hit_7.uv);
+    let e_3 = (m_2.emissive * _e20.xyz);
+    let _e29 = gltf_radiance(c_10, (m_2.metallic * _e12.z), (m_2.roughness * _e12.y), _e16, e_3, ray_17, hit_7);
+    return _e29;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_17: Ray, hit_7: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_18: Ray, hit_8: Hit, secondary: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e4 = load_GltfMaskedMaterial(offset_10);
-            let _e5 = gltf_masked_shade(_e4, ray_17, hit_7);
+            let _e5 = gltf_masked_shade(_e4, ray_18, hit_8);
             return _e5;
         }
         case 1u: {
             let _e6 = load_GltfMaterial(offset_10);
-            let _e7 = gltf_shade(_e6, ray_17, hit_7);
+            let _e7 = gltf_shade(_e6, ray_18, hit_8);
             return _e7;
         }
         default: {
@@ -1209,61 +1317,61 @@ fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_17: Ray, hit_7: Hit,
     return vec3<f32>();
 }
 
-fn shade_direct(ray_18: Ray, c_4: Candidate) -> vec3<f32> {
+fn shade_direct(ray_19: Ray, c_4: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_4.slot];
-    let _e6 = finish_hit(ray_18, c_4);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_19, c_4);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_19: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_20: Ray, t_3: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_20: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_21: Ray, t_4: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_20.medium == 0u) {
+    if (ray_21.medium == 0u) {
         return radiance_1;
     }
-    let inst_9 = instances[(ray_20.medium - 1u)];
+    let inst_9 = instances[(ray_21.medium - 1u)];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_20, t_3, radiance_1);
+    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_21, t_4, radiance_1);
     return _e21;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_21: Ray, hit_8: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_22: Ray, hit_9: Hit) {
     return;
 }
 
 fn spawn_origin_at(position_6: vec3<f32>, normal_6: vec3<f32>, error_1: f32, dir_2: vec3<f32>) -> vec3<f32> {
-    var n_5: vec3<f32>;
+    var n_6: vec3<f32>;
 
-    n_5 = normal_6;
-    let _e5 = n_5;
+    n_6 = normal_6;
+    let _e5 = n_6;
     if (dot(dir_2, _e5) < 0f) {
-        let _e9 = n_5;
-        n_5 = -(_e9);
+        let _e9 = n_6;
+        n_6 = -(_e9);
     }
-    let _e11 = n_5;
+    let _e11 = n_6;
     let _e12 = offset_origin(position_6, _e11, error_1);
     return _e12;
 }
 
-fn spawn_origin(hit_9: Hit, error_2: f32, dir_3: vec3<f32>) -> vec3<f32> {
-    let _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_3);
+fn spawn_origin(hit_10: Hit, error_2: f32, dir_3: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_10.position, hit_10.geometric_normal, error_2, dir_3);
     return _e5;
 }
 
 fn trace(camera_ray: Ray) -> vec3<f32> {
     var radiance_2: vec3<f32>;
-    var t_4: f32;
+    var t_5: f32;
     var stack: array<Frame, 4>;
     var depth: u32;
-    var ray_22: Ray;
+    var ray_23: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1275,17 +1383,17 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var waiting: bool;
     var pushed: bool;
     var radiance_3: vec3<f32>;
-    var t_5: f32;
-    var hit_10: Hit;
+    var t_6: f32;
+    var hit_11: Hit;
     var f: Frame;
-    var i_3: u32;
+    var i_4: u32;
     var medium: u32;
 
     if !(HAS_SECONDARY_RAYS) {
         let _e4 = intersect_scene(camera_ray, false);
         radiance_2 = vec3(0f);
         let _e9 = F32_INF;
-        t_4 = bitcast<f32>(_e9);
+        t_5 = bitcast<f32>(_e9);
         if (_e4.slot == NO_HIT) {
             hit_error = 0f;
             let _e17 = miss(camera_ray);
@@ -1293,16 +1401,16 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         } else {
             let _e18 = shade_direct(camera_ray, _e4);
             radiance_2 = _e18;
-            t_4 = _e4.t;
+            t_5 = _e4.t;
         }
-        let _e20 = t_4;
+        let _e20 = t_5;
         let _e21 = radiance_2;
         let _e22 = through_medium(camera_ray, _e20, _e21);
         return _e22;
     }
     stack = array<Frame, 4>();
     depth = 0u;
-    ray_22 = camera_ray;
+    ray_23 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1318,10 +1426,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_22;
+            let _e67 = ray_23;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_22;
+            let _e70 = ray_23;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1333,7 +1441,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             pushed = false;
             radiance_3 = vec3(0f);
             let _e83 = F32_INF;
-            t_5 = bitcast<f32>(_e83);
+            t_6 = bitcast<f32>(_e83);
             let _e87 = s_c.slot;
             if (_e87 == NO_HIT) {
                 hit_error = 0f;
@@ -1344,54 +1452,54 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 let _e95 = s_c.slot;
                 let inst_10 = instances[_e95];
                 let _e99 = s_hit;
-                hit_10 = _e99;
+                hit_11 = _e99;
                 let _e101 = fresh;
                 if _e101 {
                     let _e102 = s_ray;
                     let _e103 = s_c;
                     let _e104 = finish_hit(_e102, _e103);
-                    hit_10 = _e104;
+                    hit_11 = _e104;
                     let _e106 = hit_error;
                     s_error = _e106;
                 } else {
                     let _e107 = s_error;
                     hit_error = _e107;
                 }
-                let _e110 = hit_10.t;
-                t_5 = _e110;
+                let _e110 = hit_11.t;
+                t_6 = _e110;
                 let _e111 = fresh;
                 let _e119 = s_ray.depth;
                 let _e123 = depth;
                 if (((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
                     spawn_count = 0u;
                     let _e131 = s_ray;
-                    let _e132 = hit_10;
+                    let _e132 = hit_11;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
                     let _e134 = spawn_count;
-                    let n_8 = min(min(_e134, 1u), MAX_SPAWN);
-                    if (n_8 > 0u) {
+                    let n_9 = min(min(_e134, 1u), MAX_SPAWN);
+                    if (n_9 > 0u) {
                         let _e141 = s_ray;
-                        let _e142 = hit_10;
+                        let _e142 = hit_11;
                         let _e143 = s_error;
                         let _e145 = s_c.slot;
-                        f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
-                        i_3 = 0u;
+                        f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_9, 0u);
+                        i_4 = 0u;
                         loop {
-                            let _e155 = i_3;
-                            if (_e155 >= n_8) {
+                            let _e155 = i_4;
+                            if (_e155 >= n_9) {
                                 break;
                             }
-                            let _e158 = i_3;
-                            let _e162 = i_3;
+                            let _e158 = i_4;
+                            let _e162 = i_4;
                             let _e165 = spawn_dirs[_e162];
                             f.dirs[min(_e158, 0u)] = _e165;
-                            let _e167 = i_3;
-                            let _e171 = i_3;
+                            let _e167 = i_4;
+                            let _e171 = i_4;
                             let _e174 = spawn_weights[_e171];
                             f.weights[min(_e167, 0u)] = _e174;
                             continuing {
-                                let _e175 = i_3;
-                                i_3 = (_e175 + 1u);
+                                let _e175 = i_4;
+                                i_4 = (_e175 + 1u);
                             }
                         }
                         let _e178 = depth;
@@ -1405,7 +1513,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 let _e187 = pushed;
                 if !(_e187) {
                     let _e191 = s_ray;
-                    let _e192 = hit_10;
+                    let _e192 = hit_11;
                     let _e193 = s_sum;
                     let _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
                     radiance_3 = _e194;
@@ -1414,7 +1522,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e195 = pushed;
             if !(_e195) {
                 let _e197 = s_ray;
-                let _e198 = t_5;
+                let _e198 = t_6;
                 let _e199 = radiance_3;
                 let _e200 = through_medium(_e197, _e198, _e199);
                 value = _e200;
@@ -1443,17 +1551,17 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e241 = stack[min(top_1, 3u)].next;
         let _e246 = stack[min(top_1, 3u)].count;
         if (_e241 < _e246) {
-            let i_4 = stack[min(top_1, 3u)].next;
-            stack[min(top_1, 3u)].next = (i_4 + 1u);
+            let i_5 = stack[min(top_1, 3u)].next;
+            stack[min(top_1, 3u)].next = (i_5 + 1u);
             let parent = stack[min(top_1, 3u)].ray;
-            let hit_12 = stack[min(top_1, 3u)].hit;
-            let dir_6 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
+            let hit_13 = stack[min(top_1, 3u)].hit;
+            let dir_6 = stack[min(top_1, 3u)].dirs[min(i_5, 0u)];
             medium = parent.medium;
             let _e283 = stack[min(top_1, 3u)].error;
-            let _e284 = spawn_origin(hit_12, _e283, dir_6);
+            let _e284 = spawn_origin(hit_13, _e283, dir_6);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_22 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_23 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -1473,8 +1581,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn is_finite_vec3f(x_4: vec3<f32>) -> vec3<bool> {
-    return ((bitcast<vec3<u32>>(x_4) & vec3(2147483647u)) < vec3(2139095040u));
+fn is_finite_vec3f(x_5: vec3<f32>) -> vec3<bool> {
+    return ((bitcast<vec3<u32>>(x_5) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
 fn finite_or_zero(c_5: vec3<f32>) -> vec3<f32> {
@@ -1486,7 +1594,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s_1: u32;
-    var ray_23: Ray;
+    var ray_24: Ray;
 
     let frame_5 = frame;
     let tile_2 = tile;
@@ -1503,13 +1611,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
         let sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_23 = _e23;
-        ray_23.depth = 0u;
-        ray_23.kind = RAY_CAMERA;
-        let _e31 = ray_23.origin;
+        ray_24 = _e23;
+        ray_24.depth = 0u;
+        ray_24.kind = RAY_CAMERA;
+        let _e31 = ray_24.origin;
         let _e33 = medium_at(_e31, NO_HIT);
-        ray_23.medium = _e33;
-        let _e34 = ray_23;
+        ray_24.medium = _e33;
+        let _e34 = ray_24;
         let _e35 = trace(_e34);
         let _e36 = is_finite_vec3f(_e35);
         if all(_e36) {

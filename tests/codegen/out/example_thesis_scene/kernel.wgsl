@@ -157,7 +157,13 @@ const GAMMA_6_: f32 = 0.0000003576281f;
 const GAMMA_4_: f32 = 0.00000023841864f;
 const HAS_SECONDARY_RAYS: bool = false;
 const HAS_BACKGROUND: bool = true;
+const TEXTURE_NEAREST: u32 = 16u;
+const TEXTURE_WRAP_MASK: u32 = 3u;
+const TEXTURE_WRAP_CLAMP: u32 = 1u;
+const TEXTURE_WRAP_MIRROR: u32 = 2u;
+const TEXTURE_WRAP_V_SHIFT: u32 = 2u;
 const TEXTURE_FORMAT_RGBA8_SRGB: u32 = 0u;
+const TEXTURE_FORMAT_RGBA8_UNORM: u32 = 2u;
 const RGBA16F_TEXEL_WORDS: u32 = 2u;
 const INV_PI: f32 = 0.31830987f;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
@@ -508,19 +514,19 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
             }
         } else {
             let _e62 = child;
-            let n_6 = nodes[(base_1 + _e62)];
+            let n_7 = nodes[(base_1 + _e62)];
             let _e68 = best.t;
-            let _e69 = children_entry(n_6, origin_4, scale_2, ray_4, _e8, _e68);
+            let _e69 = children_entry(n_7, origin_4, scale_2, ray_4, _e8, _e68);
             let tl = _e69.x;
             let tr = _e69.y;
             let _e73 = F32_INF;
             let _e77 = F32_INF;
             if ((tl < bitcast<f32>(_e73)) && (tr < bitcast<f32>(_e77))) {
-                near = n_6.a;
-                far = n_6.b;
+                near = n_7.a;
+                far = n_7.b;
                 if ((tr < tl) != shadow) {
-                    near = n_6.b;
-                    far = n_6.a;
+                    near = n_7.b;
+                    far = n_7.a;
                 }
                 let _e89 = sp_1;
                 if (_e89 < BLAS_STACK) {
@@ -536,12 +542,12 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
             }
             let _e105 = F32_INF;
             if (tl < bitcast<f32>(_e105)) {
-                child = n_6.a;
+                child = n_7.a;
                 continue;
             }
             let _e110 = F32_INF;
             if (tr < bitcast<f32>(_e110)) {
-                child = n_6.b;
+                child = n_7.b;
                 continue;
             }
         }
@@ -779,19 +785,19 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
             }
         } else {
             let _e63 = child_1;
-            let n_7 = nodes[(base_2 + _e63)];
+            let n_8 = nodes[(base_2 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_7, origin_5, scale_3, ray_7, _e16, _e69);
+            let _e70 = children_entry(n_8, origin_5, scale_3, ray_7, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
             let _e78 = F32_INF;
             if ((tl_1 < bitcast<f32>(_e74)) && (tr_1 < bitcast<f32>(_e78))) {
-                near_1 = n_7.a;
-                far_1 = n_7.b;
+                near_1 = n_8.a;
+                far_1 = n_8.b;
                 if (tr_1 < tl_1) {
-                    near_1 = n_7.b;
-                    far_1 = n_7.a;
+                    near_1 = n_8.b;
+                    far_1 = n_8.a;
                 }
                 let _e89 = sp_2;
                 if (_e89 < TLAS_STACK) {
@@ -807,12 +813,12 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
             }
             let _e103 = F32_INF;
             if (tl_1 < bitcast<f32>(_e103)) {
-                child_1 = n_7.a;
+                child_1 = n_8.a;
                 continue;
             }
             let _e108 = F32_INF;
             if (tr_1 < bitcast<f32>(_e108)) {
-                child_1 = n_7.b;
+                child_1 = n_8.b;
                 continue;
             }
         }
@@ -886,6 +892,20 @@ fn rem_i32_(a_4: i32, b_5: i32) -> i32 {
     return select((a_4 - (divisor_4 * (a_4 / divisor_4))), 0i, by_zero_4);
 }
 
+fn wrap_texel(x_2: i32, n_3: i32, mode: u32) -> i32 {
+    if (mode == TEXTURE_WRAP_CLAMP) {
+        return min(max(x_2, 0i), (n_3 - 1i));
+    }
+    if (mode == TEXTURE_WRAP_MIRROR) {
+        let _e14 = rem_i32_(x_2, (2i * n_3));
+        let _e20 = rem_i32_((_e14 + (2i * n_3)), (2i * n_3));
+        return select(_e20, (((2i * n_3) - 1i) - _e20), (_e20 >= n_3));
+    }
+    let _e28 = rem_i32_(x_2, n_3);
+    let _e30 = rem_i32_((_e28 + n_3), n_3);
+    return _e30;
+}
+
 fn srgb_channel(c_2: f32) -> f32 {
     if (c_2 <= 0.04045f) {
         return (c_2 / 12.92f);
@@ -893,32 +913,35 @@ fn srgb_channel(c_2: f32) -> f32 {
     return pow(((c_2 + 0.055f) / 1.055f), 2.4f);
 }
 
-fn texel_at(t: u32, x_2: i32, y: i32) -> vec4<f32> {
+fn texel_at(t: u32, x_3: i32, y: i32) -> vec4<f32> {
     let base_3 = params[t];
     let _e10 = params[(t + 1u)];
     let w_3 = max(_e10, 1u);
     let _e17 = params[(t + 2u)];
     let h_2 = max(_e17, 1u);
     let format = params[(t + 3u)];
-    let _e26 = rem_i32_(x_2, i32(w_3));
-    let _e30 = rem_i32_((_e26 + i32(w_3)), i32(w_3));
-    let xi = u32(_e30);
-    let _e33 = rem_i32_(y, i32(h_2));
-    let _e37 = rem_i32_((_e33 + i32(h_2)), i32(h_2));
-    let yi = u32(_e37);
+    let sampler_ = params[(t + 4u)];
+    let _e33 = wrap_texel(x_3, i32(w_3), (sampler_ & TEXTURE_WRAP_MASK));
+    let xi = u32(_e33);
+    let _e42 = wrap_texel(y, i32(h_2), ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK));
+    let yi = u32(_e42);
     let index = ((yi * w_3) + xi);
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        let _e46 = texels[(base_3 + index)];
-        let c_7 = unpack4x8unorm(_e46);
-        let _e49 = srgb_channel(c_7.x);
-        let _e51 = srgb_channel(c_7.y);
-        let _e53 = srgb_channel(c_7.z);
-        return vec4<f32>(_e49, _e51, _e53, c_7.w);
+        let _e51 = texels[(base_3 + index)];
+        let c_7 = unpack4x8unorm(_e51);
+        let _e54 = srgb_channel(c_7.x);
+        let _e56 = srgb_channel(c_7.y);
+        let _e58 = srgb_channel(c_7.z);
+        return vec4<f32>(_e54, _e56, _e58, c_7.w);
     }
-    let _e61 = texels[(base_3 + (index * RGBA16F_TEXEL_WORDS))];
-    let rg = unpack2x16float(_e61);
-    let _e70 = texels[((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
-    let ba = unpack2x16float(_e70);
+    if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
+        let _e66 = texels[(base_3 + index)];
+        return unpack4x8unorm(_e66);
+    }
+    let _e73 = texels[(base_3 + (index * RGBA16F_TEXEL_WORDS))];
+    let rg = unpack2x16float(_e73);
+    let _e82 = texels[((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
+    let ba = unpack2x16float(_e82);
     return vec4<f32>(rg, ba);
 }
 
@@ -927,17 +950,25 @@ fn sample_texture(t_1: u32, uv: vec2<f32>) -> vec4<f32> {
     let w_4 = f32(max(_e6, 1u));
     let _e14 = params[(t_1 + 2u)];
     let h_3 = f32(max(_e14, 1u));
+    let _e22 = params[(t_1 + 4u)];
+    if ((_e22 & TEXTURE_NEAREST) != 0u) {
+        let q_3 = floor((uv * vec2<f32>(w_4, h_3)));
+        let _e31 = i32_from_f32_(q_3.x);
+        let _e33 = i32_from_f32_(q_3.y);
+        let _e34 = texel_at(t_1, _e31, _e33);
+        return _e34;
+    }
     let p_7 = ((uv * vec2<f32>(w_4, h_3)) - vec2(0.5f));
     let f_1 = floor(p_7);
     let fr = (p_7 - f_1);
-    let _e26 = i32_from_f32_(f_1.x);
-    let _e28 = i32_from_f32_(f_1.y);
-    let _e29 = texel_at(t_1, _e26, _e28);
-    let _e32 = texel_at(t_1, (_e26 + 1i), _e28);
-    let a_7 = mix(_e29, _e32, vec4(fr.x));
-    let _e38 = texel_at(t_1, _e26, (_e28 + 1i));
-    let _e43 = texel_at(t_1, (_e26 + 1i), (_e28 + 1i));
-    let b_8 = mix(_e38, _e43, vec4(fr.x));
+    let _e43 = i32_from_f32_(f_1.x);
+    let _e45 = i32_from_f32_(f_1.y);
+    let _e46 = texel_at(t_1, _e43, _e45);
+    let _e49 = texel_at(t_1, (_e43 + 1i), _e45);
+    let a_7 = mix(_e46, _e49, vec4(fr.x));
+    let _e55 = texel_at(t_1, _e43, (_e45 + 1i));
+    let _e60 = texel_at(t_1, (_e43 + 1i), (_e45 + 1i));
+    let b_8 = mix(_e55, _e60, vec4(fr.x));
     return mix(a_7, b_8, vec4(fr.y));
 }
 
@@ -959,36 +990,36 @@ fn load_PointLight(offset_5: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn step_toward(x_3: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
-    let bits_1 = bitcast<vec3<u32>>(x_3);
-    let up_1 = ((sign(x_3) * sign(s)) > vec3(0f));
+fn step_toward(x_4: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
+    let bits_1 = bitcast<vec3<u32>>(x_4);
+    let up_1 = ((sign(x_4) * sign(s)) > vec3(0f));
     let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
     let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s > vec3(0f)));
-    let moved = select(stepped, from_zero, (x_3 == vec3(0f)));
-    return select(x_3, moved, !((s == vec3(0f))));
+    let moved = select(stepped, from_zero, (x_4 == vec3(0f)));
+    return select(x_4, moved, !((s == vec3(0f))));
 }
 
-fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_3 = ((2f * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    let offset_10 = (n_3 * vec3(d_3));
+fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
+    let d_3 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    let offset_10 = (n_4 * vec3(d_3));
     let _e17 = step_toward((p_5 + offset_10), offset_10);
     return _e17;
 }
 
 fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> Ray {
-    var n_4: vec3<f32>;
+    var n_5: vec3<f32>;
     var tmax_4: f32;
 
-    n_4 = normal;
-    let _e5 = n_4;
+    n_5 = normal;
+    let _e5 = n_5;
     if (dot(dir, _e5) < 0f) {
-        let _e9 = n_4;
-        n_4 = -(_e9);
+        let _e9 = n_5;
+        n_5 = -(_e9);
     }
     let a_8 = abs(position);
     let _e13 = hit_error;
     let error_3 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
-    let _e22 = n_4;
+    let _e22 = n_5;
     let _e23 = offset_origin(position, _e22, error_3);
     let _e25 = F32_INF;
     tmax_4 = bitcast<f32>(_e25);
@@ -1116,15 +1147,15 @@ fn dispatch_secondary_rays(type_id_5: u32, offset_9: u32, ray_17: Ray, hit_4: Hi
 }
 
 fn spawn_origin_at(position_5: vec3<f32>, normal_5: vec3<f32>, error_1: f32, dir_2: vec3<f32>) -> vec3<f32> {
-    var n_5: vec3<f32>;
+    var n_6: vec3<f32>;
 
-    n_5 = normal_5;
-    let _e5 = n_5;
+    n_6 = normal_5;
+    let _e5 = n_6;
     if (dot(dir_2, _e5) < 0f) {
-        let _e9 = n_5;
-        n_5 = -(_e9);
+        let _e9 = n_6;
+        n_6 = -(_e9);
     }
-    let _e11 = n_5;
+    let _e11 = n_6;
     let _e12 = offset_origin(position_5, _e11, error_1);
     return _e12;
 }
@@ -1244,17 +1275,17 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                     let _e132 = hit_6;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
                     let _e134 = spawn_count;
-                    let n_8 = min(min(_e134, 1u), MAX_SPAWN);
-                    if (n_8 > 0u) {
+                    let n_9 = min(min(_e134, 1u), MAX_SPAWN);
+                    if (n_9 > 0u) {
                         let _e141 = s_ray;
                         let _e142 = hit_6;
                         let _e143 = s_error;
                         let _e145 = s_c.slot;
-                        f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
+                        f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_9, 0u);
                         i_3 = 0u;
                         loop {
                             let _e155 = i_3;
-                            if (_e155 >= n_8) {
+                            if (_e155 >= n_9) {
                                 break;
                             }
                             let _e158 = i_3;
@@ -1349,8 +1380,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn is_finite_vec3f(x_4: vec3<f32>) -> vec3<bool> {
-    return ((bitcast<vec3<u32>>(x_4) & vec3(2147483647u)) < vec3(2139095040u));
+fn is_finite_vec3f(x_5: vec3<f32>) -> vec3<bool> {
+    return ((bitcast<vec3<u32>>(x_5) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
 fn finite_or_zero(c_4: vec3<f32>) -> vec3<f32> {

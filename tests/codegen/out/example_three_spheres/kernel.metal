@@ -212,7 +212,13 @@ constant float GAMMA_6_ = 0.0000003576281;
 constant float GAMMA_4_ = 0.00000023841864;
 constant bool HAS_SECONDARY_RAYS = false;
 constant bool HAS_BACKGROUND = true;
+constant uint TEXTURE_NEAREST = 16u;
+constant uint TEXTURE_WRAP_MASK = 3u;
+constant uint TEXTURE_WRAP_CLAMP = 1u;
+constant uint TEXTURE_WRAP_MIRROR = 2u;
+constant uint TEXTURE_WRAP_V_SHIFT = 2u;
 constant uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
+constant uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 constant uint RGBA16F_TEXEL_WORDS = 2u;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
 constant float LIGHT_ERROR = 0.00000047683716;
@@ -658,19 +664,19 @@ Candidate intersect_mesh(
             }
         } else {
             uint _e62 = child;
-            GpuNode n_7 = nodes[base_1 + _e62];
+            GpuNode n_8 = nodes[base_1 + _e62];
             float _e68 = best.t;
-            metal::float2 _e69 = children_entry(n_7, origin_4, scale_2, ray_4, _e8, _e68, F32_INF);
+            metal::float2 _e69 = children_entry(n_8, origin_4, scale_2, ray_4, _e8, _e68, F32_INF);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
             uint _e77 = F32_INF;
             if ((tl < as_type<float>(_e73)) && (tr < as_type<float>(_e77))) {
-                near = n_7.a;
-                far = n_7.b;
+                near = n_8.a;
+                far = n_8.b;
                 if ((tr < tl) != shadow) {
-                    near = n_7.b;
-                    far = n_7.a;
+                    near = n_8.b;
+                    far = n_8.a;
                 }
                 uint _e89 = sp_1;
                 if (_e89 < BLAS_STACK) {
@@ -686,12 +692,12 @@ Candidate intersect_mesh(
             }
             uint _e105 = F32_INF;
             if (tl < as_type<float>(_e105)) {
-                child = n_7.a;
+                child = n_8.a;
                 continue;
             }
             uint _e110 = F32_INF;
             if (tr < as_type<float>(_e110)) {
-                child = n_7.b;
+                child = n_8.b;
                 continue;
             }
         }
@@ -741,12 +747,12 @@ BvhNode mesh_node_query(
     hi_1 = _e10;
     reference = header_2.a;
     if (i >= 2u) {
-        GpuNode n_8 = nodes[base_2 + (i >> 1u)];
-        q_1 = as_type<metal::uint3>(n_8.min);
-        reference = n_8.a;
+        GpuNode n_9 = nodes[base_2 + (i >> 1u)];
+        q_1 = as_type<metal::uint3>(n_9.min);
+        reference = n_9.a;
         if ((i & 1u) != 0u) {
-            q_1 = as_type<metal::uint3>(n_8.max);
-            reference = n_8.b;
+            q_1 = as_type<metal::uint3>(n_9.max);
+            reference = n_9.b;
         }
         metal::uint3 _e35 = q_1;
         metal::uint3 _e36 = node_box_lo(_e35);
@@ -1372,19 +1378,19 @@ Candidate intersect_scene(
             }
         } else {
             uint _e63 = child_1;
-            GpuNode n_9 = nodes[base_3 + _e63];
+            GpuNode n_10 = nodes[base_3 + _e63];
             float _e69 = best_3.t;
-            metal::float2 _e70 = children_entry(n_9, origin_5, scale_3, ray_13, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_10, origin_5, scale_3, ray_13, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
             uint _e78 = F32_INF;
             if ((tl_1 < as_type<float>(_e74)) && (tr_1 < as_type<float>(_e78))) {
-                near_1 = n_9.a;
-                far_1 = n_9.b;
+                near_1 = n_10.a;
+                far_1 = n_10.b;
                 if (tr_1 < tl_1) {
-                    near_1 = n_9.b;
-                    far_1 = n_9.a;
+                    near_1 = n_10.b;
+                    far_1 = n_10.a;
                 }
                 uint _e89 = sp_3;
                 if (_e89 < TLAS_STACK) {
@@ -1400,12 +1406,12 @@ Candidate intersect_scene(
             }
             uint _e103 = F32_INF;
             if (tl_1 < as_type<float>(_e103)) {
-                child_1 = n_9.a;
+                child_1 = n_10.a;
                 continue;
             }
             uint _e108 = F32_INF;
             if (tr_1 < as_type<float>(_e108)) {
-                child_1 = n_9.b;
+                child_1 = n_10.b;
                 continue;
             }
         }
@@ -1455,6 +1461,24 @@ int rem_i32_(
     return by_zero_4 ? 0 : as_type<int>(as_type<uint>(a_4) - as_type<uint>(as_type<int>(as_type<uint>(divisor_4) * as_type<uint>(naga_div(a_4, divisor_4)))));
 }
 
+int wrap_texel(
+    int x_2,
+    int n_4,
+    uint mode
+) {
+    if (mode == TEXTURE_WRAP_CLAMP) {
+        return metal::min(metal::max(x_2, 0), as_type<int>(as_type<uint>(n_4) - as_type<uint>(1)));
+    }
+    if (mode == TEXTURE_WRAP_MIRROR) {
+        int _e14 = rem_i32_(x_2, as_type<int>(as_type<uint>(2) * as_type<uint>(n_4)));
+        int _e20 = rem_i32_(as_type<int>(as_type<uint>(_e14) + as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_4)))), as_type<int>(as_type<uint>(2) * as_type<uint>(n_4)));
+        return (_e20 >= n_4) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_4))) - as_type<uint>(1))) - as_type<uint>(_e20)) : _e20;
+    }
+    int _e28 = rem_i32_(x_2, n_4);
+    int _e30 = rem_i32_(as_type<int>(as_type<uint>(_e28) + as_type<uint>(n_4)), n_4);
+    return _e30;
+}
+
 float srgb_channel(
     float c_2
 ) {
@@ -1466,7 +1490,7 @@ float srgb_channel(
 
 metal::float4 texel_at(
     uint t_1,
-    int x_2,
+    int x_3,
     int y,
     device type_4 const& params,
     device type_4 const& texels,
@@ -1478,25 +1502,28 @@ metal::float4 texel_at(
     uint _e17 = params[t_1 + 2u];
     uint h_2 = metal::max(_e17, 1u);
     uint format = params[t_1 + 3u];
-    int _e26 = rem_i32_(x_2, static_cast<int>(w_4));
-    int _e30 = rem_i32_(as_type<int>(as_type<uint>(_e26) + as_type<uint>(static_cast<int>(w_4))), static_cast<int>(w_4));
-    uint xi = static_cast<uint>(_e30);
-    int _e33 = rem_i32_(y, static_cast<int>(h_2));
-    int _e37 = rem_i32_(as_type<int>(as_type<uint>(_e33) + as_type<uint>(static_cast<int>(h_2))), static_cast<int>(h_2));
-    uint yi = static_cast<uint>(_e37);
+    uint sampler = params[t_1 + 4u];
+    int _e33 = wrap_texel(x_3, static_cast<int>(w_4), sampler & TEXTURE_WRAP_MASK);
+    uint xi = static_cast<uint>(_e33);
+    int _e42 = wrap_texel(y, static_cast<int>(h_2), (sampler >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
+    uint yi = static_cast<uint>(_e42);
     uint index = (yi * w_4) + xi;
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        uint _e46 = texels[base_4 + index];
-        metal::float4 c_8 = metal::unpack_unorm4x8_to_float(_e46);
-        float _e49 = srgb_channel(c_8.x);
-        float _e51 = srgb_channel(c_8.y);
-        float _e53 = srgb_channel(c_8.z);
-        return metal::float4(_e49, _e51, _e53, c_8.w);
+        uint _e51 = texels[base_4 + index];
+        metal::float4 c_8 = metal::unpack_unorm4x8_to_float(_e51);
+        float _e54 = srgb_channel(c_8.x);
+        float _e56 = srgb_channel(c_8.y);
+        float _e58 = srgb_channel(c_8.z);
+        return metal::float4(_e54, _e56, _e58, c_8.w);
     }
-    uint _e61 = texels[base_4 + (index * RGBA16F_TEXEL_WORDS)];
-    metal::float2 rg = float2(as_type<half2>(_e61));
-    uint _e70 = texels[(base_4 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
-    metal::float2 ba = float2(as_type<half2>(_e70));
+    if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
+        uint _e66 = texels[base_4 + index];
+        return metal::unpack_unorm4x8_to_float(_e66);
+    }
+    uint _e73 = texels[base_4 + (index * RGBA16F_TEXEL_WORDS)];
+    metal::float2 rg = float2(as_type<half2>(_e73));
+    uint _e82 = texels[(base_4 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
+    metal::float2 ba = float2(as_type<half2>(_e82));
     return metal::float4(rg, ba);
 }
 
@@ -1511,17 +1538,25 @@ metal::float4 sample_texture(
     float w_5 = static_cast<float>(metal::max(_e6, 1u));
     uint _e14 = params[t_2 + 2u];
     float h_3 = static_cast<float>(metal::max(_e14, 1u));
+    uint _e22 = params[t_2 + 4u];
+    if ((_e22 & TEXTURE_NEAREST) != 0u) {
+        metal::float2 q_5 = metal::floor(uv * metal::float2(w_5, h_3));
+        int _e31 = i32_from_f32_(q_5.x);
+        int _e33 = i32_from_f32_(q_5.y);
+        metal::float4 _e34 = texel_at(t_2, _e31, _e33, params, texels, _buffer_sizes);
+        return _e34;
+    }
     metal::float2 p_7 = (uv * metal::float2(w_5, h_3)) - metal::float2(0.5);
     metal::float2 f_2 = metal::floor(p_7);
     metal::float2 fr = p_7 - f_2;
-    int _e26 = i32_from_f32_(f_2.x);
-    int _e28 = i32_from_f32_(f_2.y);
-    metal::float4 _e29 = texel_at(t_2, _e26, _e28, params, texels, _buffer_sizes);
-    metal::float4 _e32 = texel_at(t_2, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), _e28, params, texels, _buffer_sizes);
-    metal::float4 a_8 = metal::mix(_e29, _e32, metal::float4(fr.x));
-    metal::float4 _e38 = texel_at(t_2, _e26, as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
-    metal::float4 _e43 = texel_at(t_2, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
-    metal::float4 b_9 = metal::mix(_e38, _e43, metal::float4(fr.x));
+    int _e43 = i32_from_f32_(f_2.x);
+    int _e45 = i32_from_f32_(f_2.y);
+    metal::float4 _e46 = texel_at(t_2, _e43, _e45, params, texels, _buffer_sizes);
+    metal::float4 _e49 = texel_at(t_2, as_type<int>(as_type<uint>(_e43) + as_type<uint>(1)), _e45, params, texels, _buffer_sizes);
+    metal::float4 a_8 = metal::mix(_e46, _e49, metal::float4(fr.x));
+    metal::float4 _e55 = texel_at(t_2, _e43, as_type<int>(as_type<uint>(_e45) + as_type<uint>(1)), params, texels, _buffer_sizes);
+    metal::float4 _e60 = texel_at(t_2, as_type<int>(as_type<uint>(_e43) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e45) + as_type<uint>(1)), params, texels, _buffer_sizes);
+    metal::float4 b_9 = metal::mix(_e55, _e60, metal::float4(fr.x));
     return metal::mix(a_8, b_9, metal::float4(fr.y));
 }
 
@@ -1613,24 +1648,24 @@ PointLight load_PointLight(
 }
 
 metal::float3 step_toward(
-    metal::float3 x_3,
+    metal::float3 x_4,
     metal::float3 s_1
 ) {
-    metal::uint3 bits_1 = as_type<metal::uint3>(x_3);
-    metal::bool3 up_1 = (metal::sign(x_3) * metal::sign(s_1)) > metal::float3(0.0);
+    metal::uint3 bits_1 = as_type<metal::uint3>(x_4);
+    metal::bool3 up_1 = (metal::sign(x_4) * metal::sign(s_1)) > metal::float3(0.0);
     metal::float3 stepped = as_type<metal::float3>(metal::select(bits_1 - metal::uint3(1u), bits_1 + metal::uint3(1u), up_1));
     metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s_1 > metal::float3(0.0));
-    metal::float3 moved = metal::select(stepped, from_zero, x_3 == metal::float3(0.0));
-    return metal::select(x_3, moved, !((s_1 == metal::float3(0.0))));
+    metal::float3 moved = metal::select(stepped, from_zero, x_4 == metal::float3(0.0));
+    return metal::select(x_4, moved, !((s_1 == metal::float3(0.0))));
 }
 
 metal::float3 offset_origin(
     metal::float3 p_5,
-    metal::float3 n_4,
+    metal::float3 n_5,
     float error
 ) {
-    float d_3 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
-    metal::float3 offset_14 = n_4 * metal::float3(d_3);
+    float d_3 = (2.0 * error) * ((metal::abs(n_5.x) + metal::abs(n_5.y)) + metal::abs(n_5.z));
+    metal::float3 offset_14 = n_5 * metal::float3(d_3);
     metal::float3 _e17 = step_toward(p_5 + offset_14, offset_14);
     return _e17;
 }
@@ -1643,18 +1678,18 @@ Ray shadow_ray(
     thread uint& F32_INF,
     thread float& hit_error
 ) {
-    metal::float3 n_5 = {};
+    metal::float3 n_6 = {};
     float tmax_5 = {};
-    n_5 = normal;
-    metal::float3 _e5 = n_5;
+    n_6 = normal;
+    metal::float3 _e5 = n_6;
     if (metal::dot(dir, _e5) < 0.0) {
-        metal::float3 _e9 = n_5;
-        n_5 = -(_e9);
+        metal::float3 _e9 = n_6;
+        n_6 = -(_e9);
     }
     metal::float3 a_9 = metal::abs(position);
     float _e13 = hit_error;
     float error_3 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_9.x, a_9.y), a_9.z));
-    metal::float3 _e22 = n_5;
+    metal::float3 _e22 = n_6;
     metal::float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_5 = as_type<float>(_e25);
@@ -1907,14 +1942,14 @@ metal::float3 spawn_origin_at(
     float error_1,
     metal::float3 dir_2
 ) {
-    metal::float3 n_6 = {};
-    n_6 = normal_5;
-    metal::float3 _e5 = n_6;
+    metal::float3 n_7 = {};
+    n_7 = normal_5;
+    metal::float3 _e5 = n_7;
     if (metal::dot(dir_2, _e5) < 0.0) {
-        metal::float3 _e9 = n_6;
-        n_6 = -(_e9);
+        metal::float3 _e9 = n_7;
+        n_7 = -(_e9);
     }
-    metal::float3 _e11 = n_6;
+    metal::float3 _e11 = n_7;
     metal::float3 _e12 = offset_origin(position_5, _e11, error_1);
     return _e12;
 }
@@ -2058,13 +2093,13 @@ metal::float3 trace(
                     Hit _e132 = hit_6;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
                     uint _e134 = spawn_count;
-                    uint n_10 = metal::min(metal::min(_e134, 1u), MAX_SPAWN);
-                    if (n_10 > 0u) {
+                    uint n_11 = metal::min(metal::min(_e134, 1u), MAX_SPAWN);
+                    if (n_11 > 0u) {
                         Ray _e141 = s_ray;
                         Hit _e142 = hit_6;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_18 {}, type_18 {}, n_10, 0u};
+                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_18 {}, type_18 {}, n_11, 0u};
                         i_5 = 0u;
                         uint2 loop_bound_9 = uint2(4294967295u);
                         bool loop_init_4 = true;
@@ -2077,7 +2112,7 @@ metal::float3 trace(
                             }
                             loop_init_4 = false;
                             uint _e155 = i_5;
-                            if (_e155 >= n_10) {
+                            if (_e155 >= n_11) {
                                 break;
                             }
                             uint _e158 = i_5;
@@ -2169,9 +2204,9 @@ metal::float3 trace(
 }
 
 metal::bool3 is_finite_vec3f(
-    metal::float3 x_4
+    metal::float3 x_5
 ) {
-    return (as_type<metal::uint3>(x_4) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+    return (as_type<metal::uint3>(x_5) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
 }
 
 metal::float3 finite_or_zero(
