@@ -365,3 +365,73 @@ fn single_sided_materials_cull_back_faces_and_blending_is_stochastic_coverage() 
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `KHR_texture_transform` on the emissive texture (nearest, repeat): quad `k` has transform
+/// `TRANSFORMS[k]` (offset, rotation, scale); a pixel must show the texel at the transformed uv,
+/// computed here from the extension's GLSL (`translation × rotation × scale`, rotation
+/// `mat3(cos, sin, 0, -sin, cos, 0, 0, 0, 1)` column-major). No pixel centre maps to a texel
+/// edge (checked: at least 0.05 texels away), so nearest lookups are exact; tolerance 1e-4.
+#[test]
+fn texture_transforms_map_the_uvs_of_each_texture() {
+    const TRANSFORMS: [([f64; 2], f64, [f64; 2]); 4] = [
+        ([0.0, 0.0], 0.0, [1.0, 1.0]),
+        ([0.25, 0.5], 0.0, [1.0, 1.0]),
+        ([0.5, 0.25], std::f64::consts::FRAC_PI_2, [2.0, 3.0]),
+        ([0.0, 0.0], 0.0, [0.5, 2.0]),
+    ];
+    let Some(gpu) = gpu_or_skip("texture_transforms_map_the_uvs_of_each_texture") else {
+        return;
+    };
+    let dir = temp_dir("gltf_textures", "transform");
+    let materials: Vec<Value> = TRANSFORMS
+        .iter()
+        .map(|&(offset, rotation, scale)| {
+            json!({
+                "pbrMetallicRoughness": { "baseColorFactor": [0.0, 0.0, 0.0, 1.0], "metallicFactor": 0.0 },
+                "emissiveFactor": [1.0, 1.0, 1.0],
+                "emissiveTexture": { "index": 0, "extensions": { "KHR_texture_transform": {
+                    "offset": offset, "rotation": rotation, "scale": scale,
+                } } },
+            })
+        })
+        .collect();
+    write_quads(
+        &dir,
+        &materials,
+        &[false; 4],
+        vec![json!({ "magFilter": NEAREST })],
+    );
+    let image = render_quads(&gpu, &dir, 1, "transform");
+    let mut checked = 0;
+    for (k, &(offset, rotation, scale)) in TRANSFORMS.iter().enumerate() {
+        let (s, c) = rotation.sin_cos();
+        for py in 0..QUAD_PX {
+            for i in 0..QUAD_PX {
+                let (u, v) = (uv_at(i), uv_at(py));
+                let (su, sv) = (u * scale[0], v * scale[1]);
+                let uv = [c * su - s * sv + offset[0], s * su + c * sv + offset[1]];
+                let edge = uv
+                    .iter()
+                    .map(|x| ((x * 2.0) - (x * 2.0).round()).abs())
+                    .fold(1.0, f64::min);
+                assert!(
+                    edge > 0.05,
+                    "quad {k} pixel ({i}, {py}) lies on a texel edge"
+                );
+                let want = expected(uv, (REPEAT, REPEAT, NEAREST));
+                let got = image.get(k as u32 * QUAD_PX + i, py).unwrap();
+                for ch in 0..3 {
+                    assert!(
+                        (f64::from(got[ch]) - want[ch]).abs() <= 1e-4,
+                        "quad {k} pixel ({i}, {py}) uv' {uv:?} channel {ch}: got {} want {}",
+                        got[ch],
+                        want[ch]
+                    );
+                }
+                checked += 1;
+            }
+        }
+    }
+    eprintln!("{checked} pixels checked");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -259,6 +259,18 @@ fn import_one(
             ("occlusion_texture", texture(m.occlusion_texture)),
             ("occlusion_strength", f32_value(m.occlusion_strength)),
         ];
+        let slots = ["base", "metal_rough", "emissive", "occlusion"];
+        let rows: Vec<(String, ConstValue)> = slots
+            .iter()
+            .zip(&m.uv_transforms)
+            .flat_map(|(slot, [u, v])| {
+                [
+                    (format!("{slot}_uv_u"), vec_value(*u)),
+                    (format!("{slot}_uv_v"), vec_value(*v)),
+                ]
+            })
+            .collect();
+        fields.extend(rows.iter().map(|(n, v)| (n.as_str(), v.clone())));
         let sided = ConstValue::Scalar(Scalar::U32(u32::from(m.double_sided)));
         let kind = match m.alpha_mode {
             AlphaMode::Mask => {

@@ -16,7 +16,7 @@ use gltf::json;
 use gltf::json::validation::Checked;
 
 use super::buffers::{dangling, image_bytes};
-use super::{AlphaMode, Ctx, GltfMaterial};
+use super::{AlphaMode, Ctx, GltfMaterial, UvTransform, UV_IDENTITY};
 use crate::assets::texture::decode_image;
 use crate::assets::{AssetError, GltfItem, Sampler, TextureData, TextureSlot, Wrap};
 
@@ -80,6 +80,14 @@ impl Materials {
                 "{named}: its normal texture is not imported (shaded with the mesh normals)"
             ));
         }
+        let mut uv_transforms = [UV_IDENTITY; 4];
+        let transform_of = |info: Option<&json::texture::Info>| {
+            info.and_then(|i| texture_info(i).transform)
+                .unwrap_or(UV_IDENTITY)
+        };
+        uv_transforms[0] = transform_of(pbr.base_color_texture.as_ref());
+        uv_transforms[1] = transform_of(pbr.metallic_roughness_texture.as_ref());
+        uv_transforms[2] = transform_of(json.emissive_texture.as_ref());
         let base_color_texture = pbr
             .base_color_texture
             .as_ref()
@@ -123,11 +131,29 @@ impl Materials {
             .occlusion_texture
             .as_ref()
             .map(|o| {
+                // `gltf-json` has no typed field for the extension on an occlusion texture;
+                // it is among the `others`.
+                let transform = o
+                    .extensions
+                    .as_ref()
+                    .and_then(|e| e.others.get("KHR_texture_transform"))
+                    .and_then(|v| {
+                        serde_json::from_value::<json::extensions::texture::TextureTransform>(
+                            v.clone(),
+                        )
+                        .ok()
+                    });
                 let info = SlotInfo {
                     texture: o.index.value(),
-                    tex_coord: o.tex_coord,
-                    transformed: false,
+                    tex_coord: transform
+                        .as_ref()
+                        .and_then(|t| t.tex_coord)
+                        .unwrap_or(o.tex_coord),
+                    transform: transform
+                        .as_ref()
+                        .map(|t| uv_transform(t.offset.0, t.rotation.0, t.scale.0)),
                 };
+                uv_transforms[3] = info.transform.unwrap_or(UV_IDENTITY);
                 self.slot(ctx, (m, &named), Slot::Occlusion, info, warnings)
             })
             .transpose()?;
@@ -159,6 +185,7 @@ impl Materials {
             emissive_texture,
             occlusion_texture,
             occlusion_strength,
+            uv_transforms,
             alpha_mode,
             alpha_cutoff: json.alpha_cutoff.map_or(0.5, |c| c.0),
             double_sided: json.double_sided,
@@ -181,11 +208,6 @@ impl Materials {
                 "{named}: its {what} texture uses TEXCOORD_{}, sampled with TEXCOORD_0 (only one \
                  uv set is imported)",
                 info.tex_coord
-            ));
-        }
-        if info.transformed {
-            warnings.push(format!(
-                "{named}: the KHR_texture_transform of its {what} texture is ignored"
             ));
         }
         let texture = ctx
@@ -319,19 +341,40 @@ impl Slot {
 /// What a material says about one of its textures.
 struct SlotInfo {
     texture: usize,
+    /// The uv set (`KHR_texture_transform`'s `texCoord` overrides the texture info's).
     tex_coord: u32,
-    /// It has a `KHR_texture_transform`.
-    transformed: bool,
+    /// Its `KHR_texture_transform`, if any.
+    transform: Option<UvTransform>,
 }
 
 fn texture_info(info: &json::texture::Info) -> SlotInfo {
+    let transform = info
+        .extensions
+        .as_ref()
+        .and_then(|e| e.texture_transform.as_ref());
     SlotInfo {
         texture: info.index.value(),
-        tex_coord: info.tex_coord,
-        transformed: info
-            .extensions
-            .as_ref()
-            .is_some_and(|e| e.texture_transform.is_some()),
+        tex_coord: transform
+            .and_then(|t| t.tex_coord)
+            .unwrap_or(info.tex_coord),
+        transform: transform.map(|t| uv_transform(t.offset.0, t.rotation.0, t.scale.0)),
+    }
+}
+
+/// `KHR_texture_transform`'s `translation × rotation × scale` as rows (the extension's GLSL:
+/// `rotation = mat3(cos, sin, 0, -sin, cos, 0, 0, 0, 1)`, column-major), so
+/// `u' = cos·sx·u − sin·sy·v + ox` and `v' = sin·sx·u + cos·sy·v + oy`. Non-finite numbers
+/// (which the JSON cannot hold, but a reader might produce) give the identity.
+pub(super) fn uv_transform(offset: [f32; 2], rotation: f32, scale: [f32; 2]) -> UvTransform {
+    let (s, c) = rotation.sin_cos();
+    let rows = [
+        [c * scale[0], -s * scale[1], offset[0]],
+        [s * scale[0], c * scale[1], offset[1]],
+    ];
+    if rows.iter().flatten().all(|x| x.is_finite()) {
+        rows
+    } else {
+        UV_IDENTITY
     }
 }
 

@@ -124,6 +124,13 @@ pub enum AlphaMode {
     Blend,
 }
 
+/// An affine map of texture coordinates, as two rows: `u' = r0 · (u, v, 1)`,
+/// `v' = r1 · (u, v, 1)` (`KHR_texture_transform`: `translation × rotation × scale`).
+pub type UvTransform = [[f32; 3]; 2];
+
+/// The identity [`UvTransform`].
+pub const UV_IDENTITY: UvTransform = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+
 /// A glTF metallic-roughness material.
 #[derive(Clone, Debug, PartialEq)]
 pub struct GltfMaterial {
@@ -151,6 +158,9 @@ pub struct GltfMaterial {
     pub occlusion_texture: Option<usize>,
     /// How much the occlusion image darkens: `1 + strength (red - 1)`.
     pub occlusion_strength: f32,
+    /// The `KHR_texture_transform` of each texture: base colour, metallic-roughness, emissive,
+    /// occlusion, in that order ([`UV_IDENTITY`] without one).
+    pub uv_transforms: [UvTransform; 4],
     /// How alpha is used.
     pub alpha_mode: AlphaMode,
     /// The cutoff of [`AlphaMode::Mask`].
@@ -174,6 +184,7 @@ impl Default for GltfMaterial {
             emissive_texture: None,
             occlusion_texture: None,
             occlusion_strength: 1.0,
+            uv_transforms: [UV_IDENTITY; 4],
             alpha_mode: AlphaMode::Opaque,
             alpha_cutoff: 0.5,
             double_sided: false,

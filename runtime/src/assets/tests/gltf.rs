@@ -307,10 +307,15 @@ fn every_core_texture_with_its_sampler_and_what_is_not_imported_named() {
                     "metallicRoughnessTexture": { "index": 1, "texCoord": 1 },
                 },
                 "normalTexture": { "index": 1, "scale": 0.5 },
-                "occlusionTexture": { "index": 1, "strength": 0.25 },
+                "occlusionTexture": {
+                    "index": 1, "strength": 0.25,
+                    "extensions": { "KHR_texture_transform": { "offset": [1.0, 0.0], "texCoord": 1 } },
+                },
                 "emissiveTexture": {
                     "index": 0,
-                    "extensions": { "KHR_texture_transform": { "scale": [2.0, 2.0] } },
+                    "extensions": { "KHR_texture_transform": {
+                        "offset": [0.5, 0.25], "rotation": FRAC_PI_2, "scale": [2.0, 3.0],
+                    } },
                 },
                 "emissiveFactor": [1.0, 1.0, 1.0],
             }],
@@ -352,10 +357,21 @@ fn every_core_texture_with_its_sampler_and_what_is_not_imported_named() {
     for want in [
         "materials[0] (`helmet`): its normal texture is not imported",
         "materials[0] (`helmet`): its metallic-roughness texture uses TEXCOORD_1, sampled with TEXCOORD_0",
-        "materials[0] (`helmet`): the KHR_texture_transform of its emissive texture is ignored",
+        "materials[0] (`helmet`): its occlusion texture uses TEXCOORD_1",
     ] {
         assert!(warnings.contains(want), "{want:?} not in:\n{warnings}");
     }
+    assert!(!warnings.contains("KHR_texture_transform"), "{warnings}");
+    // KHR_texture_transform: u' = cos·sx·u − sin·sy·v + ox, v' = sin·sx·u + cos·sy·v + oy; at a
+    // quarter turn with scale (2, 3), offset (0.5, 0.25): u' = −3v + 0.5, v' = 2u + 0.25.
+    let [r0, r1] = m.uv_transforms[2];
+    let close = |a: [f32; 3], b: [f32; 3]| a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-6);
+    assert!(
+        close(r0, [0.0, -3.0, 0.5]) && close(r1, [2.0, 0.0, 0.25]),
+        "{r0:?} {r1:?}"
+    );
+    assert_eq!(m.uv_transforms[3], [[1.0, 0.0, 1.0], [0.0, 1.0, 0.0]]);
+    assert_eq!(m.uv_transforms[0], [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]);
     assert!(!warnings.contains("only base colour"), "{warnings}");
 }
 
@@ -803,12 +819,12 @@ fn unsupported_required_extension_is_invalid() {
     // Used but not required: a warning.
     let doc = json!({
         "asset": { "version": "2.0" },
-        "extensionsUsed": ["KHR_texture_transform", "KHR_lights_punctual"],
+        "extensionsUsed": ["KHR_materials_sheen", "KHR_lights_punctual", "KHR_texture_transform"],
     });
     let scene = parse_doc(&doc).unwrap();
     assert_eq!(
         scene.warnings,
-        ["extension(s) KHR_texture_transform ignored (the file does not require them)"]
+        ["extension(s) KHR_materials_sheen ignored (the file does not require them)"]
     );
 }
 

@@ -103,6 +103,14 @@ struct GltfMaskedMaterial {
     uint emissive_texture;
     uint occlusion_texture;
     float occlusion_strength;
+    vec3 base_uv_u;
+    vec3 base_uv_v;
+    vec3 metal_rough_uv_u;
+    vec3 metal_rough_uv_v;
+    vec3 emissive_uv_u;
+    vec3 emissive_uv_v;
+    vec3 occlusion_uv_u;
+    vec3 occlusion_uv_v;
     float alpha_cutoff;
     uint blend;
     uint double_sided;
@@ -139,6 +147,14 @@ struct GltfMaterial {
     uint emissive_texture;
     uint occlusion_texture;
     float occlusion_strength;
+    vec3 base_uv_u;
+    vec3 base_uv_v;
+    vec3 metal_rough_uv_u;
+    vec3 metal_rough_uv_v;
+    vec3 emissive_uv_u;
+    vec3 emissive_uv_v;
+    vec3 occlusion_uv_u;
+    vec3 occlusion_uv_v;
 };
 struct Frame {
     Ray ray;
@@ -548,10 +564,39 @@ GltfMaskedMaterial load_GltfMaskedMaterial(uint offset_2) {
     uint _e71 = _group_0_binding_6_cs[(offset_2 + 11u)];
     uint _e76 = _group_0_binding_6_cs[(offset_2 + 12u)];
     uint _e81 = _group_0_binding_6_cs[(offset_2 + 13u)];
-    uint _e87 = _group_0_binding_6_cs[(offset_2 + 14u)];
-    uint _e93 = _group_0_binding_6_cs[(offset_2 + 15u)];
-    uint _e98 = _group_0_binding_6_cs[(offset_2 + 16u)];
-    return GltfMaskedMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), _e47, vec3(uintBitsToFloat(_e52), uintBitsToFloat(_e58), uintBitsToFloat(_e64)), _e71, _e76, uintBitsToFloat(_e81), uintBitsToFloat(_e87), _e93, _e98);
+    uint _e87 = _group_0_binding_6_cs[(offset_2 + 16u)];
+    uint _e93 = _group_0_binding_6_cs[(offset_2 + 17u)];
+    uint _e99 = _group_0_binding_6_cs[(offset_2 + 18u)];
+    uint _e106 = _group_0_binding_6_cs[(offset_2 + 20u)];
+    uint _e112 = _group_0_binding_6_cs[(offset_2 + 21u)];
+    uint _e118 = _group_0_binding_6_cs[(offset_2 + 22u)];
+    uint _e125 = _group_0_binding_6_cs[(offset_2 + 24u)];
+    uint _e131 = _group_0_binding_6_cs[(offset_2 + 25u)];
+    uint _e137 = _group_0_binding_6_cs[(offset_2 + 26u)];
+    uint _e144 = _group_0_binding_6_cs[(offset_2 + 28u)];
+    uint _e150 = _group_0_binding_6_cs[(offset_2 + 29u)];
+    uint _e156 = _group_0_binding_6_cs[(offset_2 + 30u)];
+    uint _e163 = _group_0_binding_6_cs[(offset_2 + 32u)];
+    uint _e169 = _group_0_binding_6_cs[(offset_2 + 33u)];
+    uint _e175 = _group_0_binding_6_cs[(offset_2 + 34u)];
+    uint _e182 = _group_0_binding_6_cs[(offset_2 + 36u)];
+    uint _e188 = _group_0_binding_6_cs[(offset_2 + 37u)];
+    uint _e194 = _group_0_binding_6_cs[(offset_2 + 38u)];
+    uint _e201 = _group_0_binding_6_cs[(offset_2 + 40u)];
+    uint _e207 = _group_0_binding_6_cs[(offset_2 + 41u)];
+    uint _e213 = _group_0_binding_6_cs[(offset_2 + 42u)];
+    uint _e220 = _group_0_binding_6_cs[(offset_2 + 44u)];
+    uint _e226 = _group_0_binding_6_cs[(offset_2 + 45u)];
+    uint _e232 = _group_0_binding_6_cs[(offset_2 + 46u)];
+    uint _e239 = _group_0_binding_6_cs[(offset_2 + 47u)];
+    uint _e245 = _group_0_binding_6_cs[(offset_2 + 48u)];
+    uint _e250 = _group_0_binding_6_cs[(offset_2 + 49u)];
+    return GltfMaskedMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), _e47, vec3(uintBitsToFloat(_e52), uintBitsToFloat(_e58), uintBitsToFloat(_e64)), _e71, _e76, uintBitsToFloat(_e81), vec3(uintBitsToFloat(_e87), uintBitsToFloat(_e93), uintBitsToFloat(_e99)), vec3(uintBitsToFloat(_e106), uintBitsToFloat(_e112), uintBitsToFloat(_e118)), vec3(uintBitsToFloat(_e125), uintBitsToFloat(_e131), uintBitsToFloat(_e137)), vec3(uintBitsToFloat(_e144), uintBitsToFloat(_e150), uintBitsToFloat(_e156)), vec3(uintBitsToFloat(_e163), uintBitsToFloat(_e169), uintBitsToFloat(_e175)), vec3(uintBitsToFloat(_e182), uintBitsToFloat(_e188), uintBitsToFloat(_e194)), vec3(uintBitsToFloat(_e201), uintBitsToFloat(_e207), uintBitsToFloat(_e213)), vec3(uintBitsToFloat(_e220), uintBitsToFloat(_e226), uintBitsToFloat(_e232)), uintBitsToFloat(_e239), _e245, _e250);
+}
+
+vec2 gltf_uv(vec3 ru, vec3 rv, vec2 uv) {
+    vec3 p_7 = vec3(uv, 1.0);
+    return vec2(dot(ru, p_7), dot(rv, p_7));
 }
 
 int i32_from_f32_(float x_1) {
@@ -617,22 +662,22 @@ vec4 texel_at(uint t, int x_3, int y) {
     return vec4(rg, ba);
 }
 
-vec4 sample_texture(uint t_1, vec2 uv) {
+vec4 sample_texture(uint t_1, vec2 uv_1) {
     uint _e6 = _group_0_binding_6_cs[(t_1 + 1u)];
     float w_4 = float(max(_e6, 1u));
     uint _e14 = _group_0_binding_6_cs[(t_1 + 2u)];
     float h_4 = float(max(_e14, 1u));
     uint _e22 = _group_0_binding_6_cs[(t_1 + 4u)];
     if (((_e22 & TEXTURE_NEAREST) != 0u)) {
-        vec2 q_3 = floor((uv * vec2(w_4, h_4)));
+        vec2 q_3 = floor((uv_1 * vec2(w_4, h_4)));
         int _e31 = i32_from_f32_(q_3.x);
         int _e33 = i32_from_f32_(q_3.y);
         vec4 _e34 = texel_at(t_1, _e31, _e33);
         return _e34;
     }
-    vec2 p_7 = ((uv * vec2(w_4, h_4)) - vec2(0.5));
-    vec2 f_1 = floor(p_7);
-    vec2 fr = (p_7 - f_1);
+    vec2 p_8 = ((uv_1 * vec2(w_4, h_4)) - vec2(0.5));
+    vec2 f_1 = floor(p_8);
+    vec2 fr = (p_8 - f_1);
     int _e43 = i32_from_f32_(f_1.x);
     int _e45 = i32_from_f32_(f_1.y);
     vec4 _e46 = texel_at(t_1, _e43, _e45);
@@ -685,11 +730,12 @@ bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_4, Hit hit_2) {
     if (((m.double_sided == 0u) && !(hit_2.front_face))) {
         return false;
     }
-    vec4 _e14 = sample_texture(m.base_texture, hit_2.uv);
-    float alpha = (m.base_color.w * _e14.w);
+    vec2 _e16 = gltf_uv(m.base_uv_u, m.base_uv_v, hit_2.uv);
+    vec4 _e17 = sample_texture(m.base_texture, _e16);
+    float alpha = (m.base_color.w * _e17.w);
     if ((m.blend != 0u)) {
-        float _e20 = gltf_coverage(ray_4, hit_2);
-        return (_e20 < alpha);
+        float _e23 = gltf_coverage(ray_4, hit_2);
+        return (_e23 < alpha);
     }
     return (alpha >= m.alpha_cutoff);
 }
@@ -1063,8 +1109,8 @@ vec3 miss(Ray ray_13) {
     return _e9;
 }
 
-float gltf_occlusion(uint t_2, float strength, vec2 uv_1) {
-    vec4 _e4 = sample_texture(t_2, uv_1);
+float gltf_occlusion(uint t_2, float strength, vec2 uv_2) {
+    vec4 _e4 = sample_texture(t_2, uv_2);
     return (1.0 + (strength * (_e4.x - 1.0)));
 }
 
@@ -1252,14 +1298,18 @@ vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, float occlusion, v
 }
 
 vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_16, Hit hit_6) {
-    vec4 _e7 = sample_texture(m_1.base_texture, hit_6.uv);
-    vec3 c_9 = (m_1.base_color.xyz * _e7.xyz);
-    vec4 _e12 = sample_texture(m_1.metal_rough_texture, hit_6.uv);
-    float _e16 = gltf_occlusion(m_1.occlusion_texture, m_1.occlusion_strength, hit_6.uv);
-    vec4 _e20 = sample_texture(m_1.emissive_texture, hit_6.uv);
-    vec3 e_2 = (m_1.emissive * _e20.xyz);
-    vec3 _e29 = gltf_radiance(c_9, (m_1.metallic * _e12.z), (m_1.roughness * _e12.y), _e16, e_2, ray_16, hit_6);
-    return _e29;
+    vec2 _e9 = gltf_uv(m_1.base_uv_u, m_1.base_uv_v, hit_6.uv);
+    vec4 _e10 = sample_texture(m_1.base_texture, _e9);
+    vec3 c_9 = (m_1.base_color.xyz * _e10.xyz);
+    vec2 _e17 = gltf_uv(m_1.metal_rough_uv_u, m_1.metal_rough_uv_v, hit_6.uv);
+    vec4 _e18 = sample_texture(m_1.metal_rough_texture, _e17);
+    vec2 _e24 = gltf_uv(m_1.occlusion_uv_u, m_1.occlusion_uv_v, hit_6.uv);
+    float _e25 = gltf_occlusion(m_1.occlusion_texture, m_1.occlusion_strength, _e24);
+    vec2 _e31 = gltf_uv(m_1.emissive_uv_u, m_1.emissive_uv_v, hit_6.uv);
+    vec4 _e32 = sample_texture(m_1.emissive_texture, _e31);
+    vec3 e_2 = (m_1.emissive * _e32.xyz);
+    vec3 _e41 = gltf_radiance(c_9, (m_1.metallic * _e18.z), (m_1.roughness * _e18.y), _e25, e_2, ray_16, hit_6);
+    return _e41;
 }
 
 GltfMaterial load_GltfMaterial(uint offset_9) {
@@ -1277,18 +1327,46 @@ GltfMaterial load_GltfMaterial(uint offset_9) {
     uint _e71 = _group_0_binding_6_cs[(offset_9 + 11u)];
     uint _e76 = _group_0_binding_6_cs[(offset_9 + 12u)];
     uint _e81 = _group_0_binding_6_cs[(offset_9 + 13u)];
-    return GltfMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), _e47, vec3(uintBitsToFloat(_e52), uintBitsToFloat(_e58), uintBitsToFloat(_e64)), _e71, _e76, uintBitsToFloat(_e81));
+    uint _e87 = _group_0_binding_6_cs[(offset_9 + 16u)];
+    uint _e93 = _group_0_binding_6_cs[(offset_9 + 17u)];
+    uint _e99 = _group_0_binding_6_cs[(offset_9 + 18u)];
+    uint _e106 = _group_0_binding_6_cs[(offset_9 + 20u)];
+    uint _e112 = _group_0_binding_6_cs[(offset_9 + 21u)];
+    uint _e118 = _group_0_binding_6_cs[(offset_9 + 22u)];
+    uint _e125 = _group_0_binding_6_cs[(offset_9 + 24u)];
+    uint _e131 = _group_0_binding_6_cs[(offset_9 + 25u)];
+    uint _e137 = _group_0_binding_6_cs[(offset_9 + 26u)];
+    uint _e144 = _group_0_binding_6_cs[(offset_9 + 28u)];
+    uint _e150 = _group_0_binding_6_cs[(offset_9 + 29u)];
+    uint _e156 = _group_0_binding_6_cs[(offset_9 + 30u)];
+    uint _e163 = _group_0_binding_6_cs[(offset_9 + 32u)];
+    uint _e169 = _group_0_binding_6_cs[(offset_9 + 33u)];
+    uint _e175 = _group_0_binding_6_cs[(offset_9 + 34u)];
+    uint _e182 = _group_0_binding_6_cs[(offset_9 + 36u)];
+    uint _e188 = _group_0_binding_6_cs[(offset_9 + 37u)];
+    uint _e194 = _group_0_binding_6_cs[(offset_9 + 38u)];
+    uint _e201 = _group_0_binding_6_cs[(offset_9 + 40u)];
+    uint _e207 = _group_0_binding_6_cs[(offset_9 + 41u)];
+    uint _e213 = _group_0_binding_6_cs[(offset_9 + 42u)];
+    uint _e220 = _group_0_binding_6_cs[(offset_9 + 44u)];
+    uint _e226 = _group_0_binding_6_cs[(offset_9 + 45u)];
+    uint _e232 = _group_0_binding_6_cs[(offset_9 + 46u)];
+    return GltfMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), _e47, vec3(uintBitsToFloat(_e52), uintBitsToFloat(_e58), uintBitsToFloat(_e64)), _e71, _e76, uintBitsToFloat(_e81), vec3(uintBitsToFloat(_e87), uintBitsToFloat(_e93), uintBitsToFloat(_e99)), vec3(uintBitsToFloat(_e106), uintBitsToFloat(_e112), uintBitsToFloat(_e118)), vec3(uintBitsToFloat(_e125), uintBitsToFloat(_e131), uintBitsToFloat(_e137)), vec3(uintBitsToFloat(_e144), uintBitsToFloat(_e150), uintBitsToFloat(_e156)), vec3(uintBitsToFloat(_e163), uintBitsToFloat(_e169), uintBitsToFloat(_e175)), vec3(uintBitsToFloat(_e182), uintBitsToFloat(_e188), uintBitsToFloat(_e194)), vec3(uintBitsToFloat(_e201), uintBitsToFloat(_e207), uintBitsToFloat(_e213)), vec3(uintBitsToFloat(_e220), uintBitsToFloat(_e226), uintBitsToFloat(_e232)));
 }
 
 vec3 gltf_shade(GltfMaterial m_2, Ray ray_17, Hit hit_7) {
-    vec4 _e7 = sample_texture(m_2.base_texture, hit_7.uv);
-    vec3 c_10 = (m_2.base_color.xyz * _e7.xyz);
-    vec4 _e12 = sample_texture(m_2.metal_rough_texture, hit_7.uv);
-    float _e16 = gltf_occlusion(m_2.occlusion_texture, m_2.occlusion_strength, hit_7.uv);
-    vec4 _e20 = sample_texture(m_2.emissive_texture, hit_7.uv);
-    vec3 e_3 = (m_2.emissive * _e20.xyz);
-    vec3 _e29 = gltf_radiance(c_10, (m_2.metallic * _e12.z), (m_2.roughness * _e12.y), _e16, e_3, ray_17, hit_7);
-    return _e29;
+    vec2 _e9 = gltf_uv(m_2.base_uv_u, m_2.base_uv_v, hit_7.uv);
+    vec4 _e10 = sample_texture(m_2.base_texture, _e9);
+    vec3 c_10 = (m_2.base_color.xyz * _e10.xyz);
+    vec2 _e17 = gltf_uv(m_2.metal_rough_uv_u, m_2.metal_rough_uv_v, hit_7.uv);
+    vec4 _e18 = sample_texture(m_2.metal_rough_texture, _e17);
+    vec2 _e24 = gltf_uv(m_2.occlusion_uv_u, m_2.occlusion_uv_v, hit_7.uv);
+    float _e25 = gltf_occlusion(m_2.occlusion_texture, m_2.occlusion_strength, _e24);
+    vec2 _e31 = gltf_uv(m_2.emissive_uv_u, m_2.emissive_uv_v, hit_7.uv);
+    vec4 _e32 = sample_texture(m_2.emissive_texture, _e31);
+    vec3 e_3 = (m_2.emissive * _e32.xyz);
+    vec3 _e41 = gltf_radiance(c_10, (m_2.metallic * _e18.z), (m_2.roughness * _e18.y), _e25, e_3, ray_17, hit_7);
+    return _e41;
 }
 
 vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_18, Hit hit_8, vec3 secondary) {

@@ -125,12 +125,28 @@ struct GltfMaskedMaterial {
     uint emissive_texture;
     uint occlusion_texture;
     float occlusion_strength;
+    int _pad9_0;
+    int _pad9_1;
+    float3 base_uv_u;
+    int _pad10_0;
+    float3 base_uv_v;
+    int _pad11_0;
+    float3 metal_rough_uv_u;
+    int _pad12_0;
+    float3 metal_rough_uv_v;
+    int _pad13_0;
+    float3 emissive_uv_u;
+    int _pad14_0;
+    float3 emissive_uv_v;
+    int _pad15_0;
+    float3 occlusion_uv_u;
+    int _pad16_0;
+    float3 occlusion_uv_v;
     float alpha_cutoff;
     uint blend;
     uint double_sided;
     int _end_pad_0;
     int _end_pad_1;
-    int _end_pad_2;
 };
 
 struct SkyGradient {
@@ -177,8 +193,24 @@ struct GltfMaterial {
     uint emissive_texture;
     uint occlusion_texture;
     float occlusion_strength;
+    int _pad9_0;
+    int _pad9_1;
+    float3 base_uv_u;
+    int _pad10_0;
+    float3 base_uv_v;
+    int _pad11_0;
+    float3 metal_rough_uv_u;
+    int _pad12_0;
+    float3 metal_rough_uv_v;
+    int _pad13_0;
+    float3 emissive_uv_u;
+    int _pad14_0;
+    float3 emissive_uv_v;
+    int _pad15_0;
+    float3 occlusion_uv_u;
+    int _pad16_0;
+    float3 occlusion_uv_v;
     int _end_pad_0;
-    int _end_pad_1;
 };
 
 struct Frame {
@@ -705,7 +737,7 @@ Hit finish_hit(Ray ray_2, Candidate c)
     return hit_13;
 }
 
-GltfMaskedMaterial ConstructGltfMaskedMaterial(float4 arg0, uint arg1, float arg2, float arg3, uint arg4, float3 arg5, uint arg6, uint arg7, float arg8, float arg9, uint arg10, uint arg11) {
+GltfMaskedMaterial ConstructGltfMaskedMaterial(float4 arg0, uint arg1, float arg2, float arg3, uint arg4, float3 arg5, uint arg6, uint arg7, float arg8, float3 arg9, float3 arg10, float3 arg11, float3 arg12, float3 arg13, float3 arg14, float3 arg15, float3 arg16, float arg17, uint arg18, uint arg19) {
     GltfMaskedMaterial ret = (GltfMaskedMaterial)0;
     ret.base_color = arg0;
     ret.base_texture = arg1;
@@ -716,9 +748,17 @@ GltfMaskedMaterial ConstructGltfMaskedMaterial(float4 arg0, uint arg1, float arg
     ret.emissive_texture = arg6;
     ret.occlusion_texture = arg7;
     ret.occlusion_strength = arg8;
-    ret.alpha_cutoff = arg9;
-    ret.blend = arg10;
-    ret.double_sided = arg11;
+    ret.base_uv_u = arg9;
+    ret.base_uv_v = arg10;
+    ret.metal_rough_uv_u = arg11;
+    ret.metal_rough_uv_v = arg12;
+    ret.emissive_uv_u = arg13;
+    ret.emissive_uv_v = arg14;
+    ret.occlusion_uv_u = arg15;
+    ret.occlusion_uv_v = arg16;
+    ret.alpha_cutoff = arg17;
+    ret.blend = arg18;
+    ret.double_sided = arg19;
     return ret;
 }
 
@@ -738,11 +778,41 @@ GltfMaskedMaterial load_GltfMaskedMaterial(uint offset_2)
     uint _e71 = asuint(params.Load((offset_2 + 11u)*4));
     uint _e76 = asuint(params.Load((offset_2 + 12u)*4));
     uint _e81 = asuint(params.Load((offset_2 + 13u)*4));
-    uint _e87 = asuint(params.Load((offset_2 + 14u)*4));
-    uint _e93 = asuint(params.Load((offset_2 + 15u)*4));
-    uint _e98 = asuint(params.Load((offset_2 + 16u)*4));
-    const GltfMaskedMaterial gltfmaskedmaterial = ConstructGltfMaskedMaterial(float4(asfloat(_e5), asfloat(_e11), asfloat(_e17), asfloat(_e23)), _e30, asfloat(_e35), asfloat(_e41), _e47, float3(asfloat(_e52), asfloat(_e58), asfloat(_e64)), _e71, _e76, asfloat(_e81), asfloat(_e87), _e93, _e98);
+    uint _e87 = asuint(params.Load((offset_2 + 16u)*4));
+    uint _e93 = asuint(params.Load((offset_2 + 17u)*4));
+    uint _e99 = asuint(params.Load((offset_2 + 18u)*4));
+    uint _e106 = asuint(params.Load((offset_2 + 20u)*4));
+    uint _e112 = asuint(params.Load((offset_2 + 21u)*4));
+    uint _e118 = asuint(params.Load((offset_2 + 22u)*4));
+    uint _e125 = asuint(params.Load((offset_2 + 24u)*4));
+    uint _e131 = asuint(params.Load((offset_2 + 25u)*4));
+    uint _e137 = asuint(params.Load((offset_2 + 26u)*4));
+    uint _e144 = asuint(params.Load((offset_2 + 28u)*4));
+    uint _e150 = asuint(params.Load((offset_2 + 29u)*4));
+    uint _e156 = asuint(params.Load((offset_2 + 30u)*4));
+    uint _e163 = asuint(params.Load((offset_2 + 32u)*4));
+    uint _e169 = asuint(params.Load((offset_2 + 33u)*4));
+    uint _e175 = asuint(params.Load((offset_2 + 34u)*4));
+    uint _e182 = asuint(params.Load((offset_2 + 36u)*4));
+    uint _e188 = asuint(params.Load((offset_2 + 37u)*4));
+    uint _e194 = asuint(params.Load((offset_2 + 38u)*4));
+    uint _e201 = asuint(params.Load((offset_2 + 40u)*4));
+    uint _e207 = asuint(params.Load((offset_2 + 41u)*4));
+    uint _e213 = asuint(params.Load((offset_2 + 42u)*4));
+    uint _e220 = asuint(params.Load((offset_2 + 44u)*4));
+    uint _e226 = asuint(params.Load((offset_2 + 45u)*4));
+    uint _e232 = asuint(params.Load((offset_2 + 46u)*4));
+    uint _e239 = asuint(params.Load((offset_2 + 47u)*4));
+    uint _e245 = asuint(params.Load((offset_2 + 48u)*4));
+    uint _e250 = asuint(params.Load((offset_2 + 49u)*4));
+    const GltfMaskedMaterial gltfmaskedmaterial = ConstructGltfMaskedMaterial(float4(asfloat(_e5), asfloat(_e11), asfloat(_e17), asfloat(_e23)), _e30, asfloat(_e35), asfloat(_e41), _e47, float3(asfloat(_e52), asfloat(_e58), asfloat(_e64)), _e71, _e76, asfloat(_e81), float3(asfloat(_e87), asfloat(_e93), asfloat(_e99)), float3(asfloat(_e106), asfloat(_e112), asfloat(_e118)), float3(asfloat(_e125), asfloat(_e131), asfloat(_e137)), float3(asfloat(_e144), asfloat(_e150), asfloat(_e156)), float3(asfloat(_e163), asfloat(_e169), asfloat(_e175)), float3(asfloat(_e182), asfloat(_e188), asfloat(_e194)), float3(asfloat(_e201), asfloat(_e207), asfloat(_e213)), float3(asfloat(_e220), asfloat(_e226), asfloat(_e232)), asfloat(_e239), _e245, _e250);
     return gltfmaskedmaterial;
+}
+
+float2 gltf_uv(float3 ru, float3 rv, float2 uv)
+{
+    float3 p_7 = float3(uv, 1.0);
+    return float2(dot(ru, p_7), dot(rv, p_7));
 }
 
 int naga_f2i32(float value) {
@@ -821,7 +891,7 @@ float4 texel_at(uint t, int x_3, int y)
     return float4(rg, ba);
 }
 
-float4 sample_texture(uint t_1, float2 uv)
+float4 sample_texture(uint t_1, float2 uv_1)
 {
     uint _e6 = asuint(params.Load((t_1 + 1u)*4));
     float w_4 = float(max(_e6, 1u));
@@ -829,15 +899,15 @@ float4 sample_texture(uint t_1, float2 uv)
     float h_4 = float(max(_e14, 1u));
     uint _e22 = asuint(params.Load((t_1 + 4u)*4));
     if (((_e22 & TEXTURE_NEAREST) != 0u)) {
-        float2 q_3 = floor((uv * float2(w_4, h_4)));
+        float2 q_3 = floor((uv_1 * float2(w_4, h_4)));
         const int _e31 = i32_from_f32_(q_3.x);
         const int _e33 = i32_from_f32_(q_3.y);
         const float4 _e34 = texel_at(t_1, _e31, _e33);
         return _e34;
     }
-    float2 p_7 = ((uv * float2(w_4, h_4)) - (0.5).xx);
-    float2 f_1 = floor(p_7);
-    float2 fr = (p_7 - f_1);
+    float2 p_8 = ((uv_1 * float2(w_4, h_4)) - (0.5).xx);
+    float2 f_1 = floor(p_8);
+    float2 fr = (p_8 - f_1);
     const int _e43 = i32_from_f32_(f_1.x);
     const int _e45 = i32_from_f32_(f_1.y);
     const float4 _e46 = texel_at(t_1, _e43, _e45);
@@ -897,11 +967,12 @@ bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_4, Hit hit_2)
     if (((m.double_sided == 0u) && !(hit_2.front_face))) {
         return false;
     }
-    const float4 _e14 = sample_texture(m.base_texture, hit_2.uv);
-    float alpha = (m.base_color.w * _e14.w);
+    const float2 _e16 = gltf_uv(m.base_uv_u, m.base_uv_v, hit_2.uv);
+    const float4 _e17 = sample_texture(m.base_texture, _e16);
+    float alpha = (m.base_color.w * _e17.w);
     if ((m.blend != 0u)) {
-        const float _e20 = gltf_coverage(ray_4, hit_2);
-        return (_e20 < alpha);
+        const float _e23 = gltf_coverage(ray_4, hit_2);
+        return (_e23 < alpha);
     }
     return (alpha >= m.alpha_cutoff);
 }
@@ -1334,9 +1405,9 @@ float3 miss(Ray ray_13)
     return _e9;
 }
 
-float gltf_occlusion(uint t_2, float strength, float2 uv_1)
+float gltf_occlusion(uint t_2, float strength, float2 uv_2)
 {
-    const float4 _e4 = sample_texture(t_2, uv_1);
+    const float4 _e4 = sample_texture(t_2, uv_2);
     return (1.0 + (strength * (_e4.x - 1.0)));
 }
 
@@ -1585,17 +1656,21 @@ float3 gltf_radiance(float3 c_3, float metallic, float roughness, float occlusio
 
 float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_16, Hit hit_6)
 {
-    const float4 _e7 = sample_texture(m_1.base_texture, hit_6.uv);
-    float3 c_9 = (m_1.base_color.xyz * _e7.xyz);
-    const float4 _e12 = sample_texture(m_1.metal_rough_texture, hit_6.uv);
-    const float _e16 = gltf_occlusion(m_1.occlusion_texture, m_1.occlusion_strength, hit_6.uv);
-    const float4 _e20 = sample_texture(m_1.emissive_texture, hit_6.uv);
-    float3 e_2 = (m_1.emissive * _e20.xyz);
-    const float3 _e29 = gltf_radiance(c_9, (m_1.metallic * _e12.z), (m_1.roughness * _e12.y), _e16, e_2, ray_16, hit_6);
-    return _e29;
+    const float2 _e9 = gltf_uv(m_1.base_uv_u, m_1.base_uv_v, hit_6.uv);
+    const float4 _e10 = sample_texture(m_1.base_texture, _e9);
+    float3 c_9 = (m_1.base_color.xyz * _e10.xyz);
+    const float2 _e17 = gltf_uv(m_1.metal_rough_uv_u, m_1.metal_rough_uv_v, hit_6.uv);
+    const float4 _e18 = sample_texture(m_1.metal_rough_texture, _e17);
+    const float2 _e24 = gltf_uv(m_1.occlusion_uv_u, m_1.occlusion_uv_v, hit_6.uv);
+    const float _e25 = gltf_occlusion(m_1.occlusion_texture, m_1.occlusion_strength, _e24);
+    const float2 _e31 = gltf_uv(m_1.emissive_uv_u, m_1.emissive_uv_v, hit_6.uv);
+    const float4 _e32 = sample_texture(m_1.emissive_texture, _e31);
+    float3 e_2 = (m_1.emissive * _e32.xyz);
+    const float3 _e41 = gltf_radiance(c_9, (m_1.metallic * _e18.z), (m_1.roughness * _e18.y), _e25, e_2, ray_16, hit_6);
+    return _e41;
 }
 
-GltfMaterial ConstructGltfMaterial(float4 arg0, uint arg1, float arg2, float arg3, uint arg4, float3 arg5, uint arg6, uint arg7, float arg8) {
+GltfMaterial ConstructGltfMaterial(float4 arg0, uint arg1, float arg2, float arg3, uint arg4, float3 arg5, uint arg6, uint arg7, float arg8, float3 arg9, float3 arg10, float3 arg11, float3 arg12, float3 arg13, float3 arg14, float3 arg15, float3 arg16) {
     GltfMaterial ret = (GltfMaterial)0;
     ret.base_color = arg0;
     ret.base_texture = arg1;
@@ -1606,6 +1681,14 @@ GltfMaterial ConstructGltfMaterial(float4 arg0, uint arg1, float arg2, float arg
     ret.emissive_texture = arg6;
     ret.occlusion_texture = arg7;
     ret.occlusion_strength = arg8;
+    ret.base_uv_u = arg9;
+    ret.base_uv_v = arg10;
+    ret.metal_rough_uv_u = arg11;
+    ret.metal_rough_uv_v = arg12;
+    ret.emissive_uv_u = arg13;
+    ret.emissive_uv_v = arg14;
+    ret.occlusion_uv_u = arg15;
+    ret.occlusion_uv_v = arg16;
     return ret;
 }
 
@@ -1625,20 +1708,48 @@ GltfMaterial load_GltfMaterial(uint offset_9)
     uint _e71 = asuint(params.Load((offset_9 + 11u)*4));
     uint _e76 = asuint(params.Load((offset_9 + 12u)*4));
     uint _e81 = asuint(params.Load((offset_9 + 13u)*4));
-    const GltfMaterial gltfmaterial = ConstructGltfMaterial(float4(asfloat(_e5), asfloat(_e11), asfloat(_e17), asfloat(_e23)), _e30, asfloat(_e35), asfloat(_e41), _e47, float3(asfloat(_e52), asfloat(_e58), asfloat(_e64)), _e71, _e76, asfloat(_e81));
+    uint _e87 = asuint(params.Load((offset_9 + 16u)*4));
+    uint _e93 = asuint(params.Load((offset_9 + 17u)*4));
+    uint _e99 = asuint(params.Load((offset_9 + 18u)*4));
+    uint _e106 = asuint(params.Load((offset_9 + 20u)*4));
+    uint _e112 = asuint(params.Load((offset_9 + 21u)*4));
+    uint _e118 = asuint(params.Load((offset_9 + 22u)*4));
+    uint _e125 = asuint(params.Load((offset_9 + 24u)*4));
+    uint _e131 = asuint(params.Load((offset_9 + 25u)*4));
+    uint _e137 = asuint(params.Load((offset_9 + 26u)*4));
+    uint _e144 = asuint(params.Load((offset_9 + 28u)*4));
+    uint _e150 = asuint(params.Load((offset_9 + 29u)*4));
+    uint _e156 = asuint(params.Load((offset_9 + 30u)*4));
+    uint _e163 = asuint(params.Load((offset_9 + 32u)*4));
+    uint _e169 = asuint(params.Load((offset_9 + 33u)*4));
+    uint _e175 = asuint(params.Load((offset_9 + 34u)*4));
+    uint _e182 = asuint(params.Load((offset_9 + 36u)*4));
+    uint _e188 = asuint(params.Load((offset_9 + 37u)*4));
+    uint _e194 = asuint(params.Load((offset_9 + 38u)*4));
+    uint _e201 = asuint(params.Load((offset_9 + 40u)*4));
+    uint _e207 = asuint(params.Load((offset_9 + 41u)*4));
+    uint _e213 = asuint(params.Load((offset_9 + 42u)*4));
+    uint _e220 = asuint(params.Load((offset_9 + 44u)*4));
+    uint _e226 = asuint(params.Load((offset_9 + 45u)*4));
+    uint _e232 = asuint(params.Load((offset_9 + 46u)*4));
+    const GltfMaterial gltfmaterial = ConstructGltfMaterial(float4(asfloat(_e5), asfloat(_e11), asfloat(_e17), asfloat(_e23)), _e30, asfloat(_e35), asfloat(_e41), _e47, float3(asfloat(_e52), asfloat(_e58), asfloat(_e64)), _e71, _e76, asfloat(_e81), float3(asfloat(_e87), asfloat(_e93), asfloat(_e99)), float3(asfloat(_e106), asfloat(_e112), asfloat(_e118)), float3(asfloat(_e125), asfloat(_e131), asfloat(_e137)), float3(asfloat(_e144), asfloat(_e150), asfloat(_e156)), float3(asfloat(_e163), asfloat(_e169), asfloat(_e175)), float3(asfloat(_e182), asfloat(_e188), asfloat(_e194)), float3(asfloat(_e201), asfloat(_e207), asfloat(_e213)), float3(asfloat(_e220), asfloat(_e226), asfloat(_e232)));
     return gltfmaterial;
 }
 
 float3 gltf_shade(GltfMaterial m_2, Ray ray_17, Hit hit_7)
 {
-    const float4 _e7 = sample_texture(m_2.base_texture, hit_7.uv);
-    float3 c_10 = (m_2.base_color.xyz * _e7.xyz);
-    const float4 _e12 = sample_texture(m_2.metal_rough_texture, hit_7.uv);
-    const float _e16 = gltf_occlusion(m_2.occlusion_texture, m_2.occlusion_strength, hit_7.uv);
-    const float4 _e20 = sample_texture(m_2.emissive_texture, hit_7.uv);
-    float3 e_3 = (m_2.emissive * _e20.xyz);
-    const float3 _e29 = gltf_radiance(c_10, (m_2.metallic * _e12.z), (m_2.roughness * _e12.y), _e16, e_3, ray_17, hit_7);
-    return _e29;
+    const float2 _e9 = gltf_uv(m_2.base_uv_u, m_2.base_uv_v, hit_7.uv);
+    const float4 _e10 = sample_texture(m_2.base_texture, _e9);
+    float3 c_10 = (m_2.base_color.xyz * _e10.xyz);
+    const float2 _e17 = gltf_uv(m_2.metal_rough_uv_u, m_2.metal_rough_uv_v, hit_7.uv);
+    const float4 _e18 = sample_texture(m_2.metal_rough_texture, _e17);
+    const float2 _e24 = gltf_uv(m_2.occlusion_uv_u, m_2.occlusion_uv_v, hit_7.uv);
+    const float _e25 = gltf_occlusion(m_2.occlusion_texture, m_2.occlusion_strength, _e24);
+    const float2 _e31 = gltf_uv(m_2.emissive_uv_u, m_2.emissive_uv_v, hit_7.uv);
+    const float4 _e32 = sample_texture(m_2.emissive_texture, _e31);
+    float3 e_3 = (m_2.emissive * _e32.xyz);
+    const float3 _e41 = gltf_radiance(c_10, (m_2.metallic * _e18.z), (m_2.roughness * _e18.y), _e25, e_3, ray_17, hit_7);
+    return _e41;
 }
 
 float3 ZeroValuefloat3() {

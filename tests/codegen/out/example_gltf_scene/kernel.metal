@@ -127,10 +127,19 @@ struct GltfMaskedMaterial {
     uint emissive_texture;
     uint occlusion_texture;
     float occlusion_strength;
+    char _pad9[8];
+    metal::float3 base_uv_u;
+    metal::float3 base_uv_v;
+    metal::float3 metal_rough_uv_u;
+    metal::float3 metal_rough_uv_v;
+    metal::float3 emissive_uv_u;
+    metal::float3 emissive_uv_v;
+    metal::float3 occlusion_uv_u;
+    metal::packed_float3 occlusion_uv_v;
     float alpha_cutoff;
     uint blend;
     uint double_sided;
-    char _pad12[12];
+    char _pad20[8];
 };
 struct type_15 {
     uint inner[128];
@@ -169,6 +178,14 @@ struct GltfMaterial {
     uint occlusion_texture;
     float occlusion_strength;
     char _pad9[8];
+    metal::float3 base_uv_u;
+    metal::float3 base_uv_v;
+    metal::float3 metal_rough_uv_u;
+    metal::float3 metal_rough_uv_v;
+    metal::float3 emissive_uv_u;
+    metal::float3 emissive_uv_v;
+    metal::float3 occlusion_uv_u;
+    metal::float3 occlusion_uv_v;
 };
 struct type_16 {
     metal::float3 inner[1];
@@ -671,10 +688,43 @@ GltfMaskedMaterial load_GltfMaskedMaterial(
     uint _e71 = params[offset_2 + 11u];
     uint _e76 = params[offset_2 + 12u];
     uint _e81 = params[offset_2 + 13u];
-    uint _e87 = params[offset_2 + 14u];
-    uint _e93 = params[offset_2 + 15u];
-    uint _e98 = params[offset_2 + 16u];
-    return GltfMaskedMaterial {metal::float4(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17), as_type<float>(_e23)), _e30, as_type<float>(_e35), as_type<float>(_e41), _e47, metal::float3(as_type<float>(_e52), as_type<float>(_e58), as_type<float>(_e64)), _e71, _e76, as_type<float>(_e81), as_type<float>(_e87), _e93, _e98};
+    uint _e87 = params[offset_2 + 16u];
+    uint _e93 = params[offset_2 + 17u];
+    uint _e99 = params[offset_2 + 18u];
+    uint _e106 = params[offset_2 + 20u];
+    uint _e112 = params[offset_2 + 21u];
+    uint _e118 = params[offset_2 + 22u];
+    uint _e125 = params[offset_2 + 24u];
+    uint _e131 = params[offset_2 + 25u];
+    uint _e137 = params[offset_2 + 26u];
+    uint _e144 = params[offset_2 + 28u];
+    uint _e150 = params[offset_2 + 29u];
+    uint _e156 = params[offset_2 + 30u];
+    uint _e163 = params[offset_2 + 32u];
+    uint _e169 = params[offset_2 + 33u];
+    uint _e175 = params[offset_2 + 34u];
+    uint _e182 = params[offset_2 + 36u];
+    uint _e188 = params[offset_2 + 37u];
+    uint _e194 = params[offset_2 + 38u];
+    uint _e201 = params[offset_2 + 40u];
+    uint _e207 = params[offset_2 + 41u];
+    uint _e213 = params[offset_2 + 42u];
+    uint _e220 = params[offset_2 + 44u];
+    uint _e226 = params[offset_2 + 45u];
+    uint _e232 = params[offset_2 + 46u];
+    uint _e239 = params[offset_2 + 47u];
+    uint _e245 = params[offset_2 + 48u];
+    uint _e250 = params[offset_2 + 49u];
+    return GltfMaskedMaterial {metal::float4(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17), as_type<float>(_e23)), _e30, as_type<float>(_e35), as_type<float>(_e41), _e47, metal::float3(as_type<float>(_e52), as_type<float>(_e58), as_type<float>(_e64)), _e71, _e76, as_type<float>(_e81), {}, metal::float3(as_type<float>(_e87), as_type<float>(_e93), as_type<float>(_e99)), metal::float3(as_type<float>(_e106), as_type<float>(_e112), as_type<float>(_e118)), metal::float3(as_type<float>(_e125), as_type<float>(_e131), as_type<float>(_e137)), metal::float3(as_type<float>(_e144), as_type<float>(_e150), as_type<float>(_e156)), metal::float3(as_type<float>(_e163), as_type<float>(_e169), as_type<float>(_e175)), metal::float3(as_type<float>(_e182), as_type<float>(_e188), as_type<float>(_e194)), metal::float3(as_type<float>(_e201), as_type<float>(_e207), as_type<float>(_e213)), metal::float3(as_type<float>(_e220), as_type<float>(_e226), as_type<float>(_e232)), as_type<float>(_e239), _e245, _e250};
+}
+
+metal::float2 gltf_uv(
+    metal::float3 ru,
+    metal::float3 rv,
+    metal::float2 uv
+) {
+    metal::float3 p_7 = metal::float3(uv, 1.0);
+    return metal::float2(metal::dot(ru, p_7), metal::dot(rv, p_7));
 }
 
 int naga_f2i32(float value) {
@@ -768,7 +818,7 @@ metal::float4 texel_at(
 
 metal::float4 sample_texture(
     uint t_1,
-    metal::float2 uv,
+    metal::float2 uv_1,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
@@ -779,15 +829,15 @@ metal::float4 sample_texture(
     float h_4 = static_cast<float>(metal::max(_e14, 1u));
     uint _e22 = params[t_1 + 4u];
     if ((_e22 & TEXTURE_NEAREST) != 0u) {
-        metal::float2 q_3 = metal::floor(uv * metal::float2(w_4, h_4));
+        metal::float2 q_3 = metal::floor(uv_1 * metal::float2(w_4, h_4));
         int _e31 = i32_from_f32_(q_3.x);
         int _e33 = i32_from_f32_(q_3.y);
         metal::float4 _e34 = texel_at(t_1, _e31, _e33, params, texels, _buffer_sizes);
         return _e34;
     }
-    metal::float2 p_7 = (uv * metal::float2(w_4, h_4)) - metal::float2(0.5);
-    metal::float2 f_1 = metal::floor(p_7);
-    metal::float2 fr = p_7 - f_1;
+    metal::float2 p_8 = (uv_1 * metal::float2(w_4, h_4)) - metal::float2(0.5);
+    metal::float2 f_1 = metal::floor(p_8);
+    metal::float2 fr = p_8 - f_1;
     int _e43 = i32_from_f32_(f_1.x);
     int _e45 = i32_from_f32_(f_1.y);
     metal::float4 _e46 = texel_at(t_1, _e43, _e45, params, texels, _buffer_sizes);
@@ -857,11 +907,12 @@ bool gltf_masked_any_hit(
     if ((m.double_sided == 0u) && !(hit_2.front_face)) {
         return false;
     }
-    metal::float4 _e14 = sample_texture(m.base_texture, hit_2.uv, params, texels, _buffer_sizes);
-    float alpha = m.base_color.w * _e14.w;
+    metal::float2 _e16 = gltf_uv(m.base_uv_u, m.base_uv_v, hit_2.uv);
+    metal::float4 _e17 = sample_texture(m.base_texture, _e16, params, texels, _buffer_sizes);
+    float alpha = m.base_color.w * _e17.w;
     if (m.blend != 0u) {
-        float _e20 = gltf_coverage(ray_4, hit_2, tile);
-        return _e20 < alpha;
+        float _e23 = gltf_coverage(ray_4, hit_2, tile);
+        return _e23 < alpha;
     }
     return alpha >= m.alpha_cutoff;
 }
@@ -1384,12 +1435,12 @@ metal::float3 miss(
 float gltf_occlusion(
     uint t_2,
     float strength,
-    metal::float2 uv_1,
+    metal::float2 uv_2,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 _e4 = sample_texture(t_2, uv_1, params, texels, _buffer_sizes);
+    metal::float4 _e4 = sample_texture(t_2, uv_2, params, texels, _buffer_sizes);
     return 1.0 + (strength * (_e4.x - 1.0));
 }
 
@@ -1732,14 +1783,18 @@ metal::float3 gltf_masked_shade(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 _e7 = sample_texture(m_1.base_texture, hit_6.uv, params, texels, _buffer_sizes);
-    metal::float3 c_9 = m_1.base_color.xyz * _e7.xyz;
-    metal::float4 _e12 = sample_texture(m_1.metal_rough_texture, hit_6.uv, params, texels, _buffer_sizes);
-    float _e16 = gltf_occlusion(m_1.occlusion_texture, m_1.occlusion_strength, hit_6.uv, params, texels, _buffer_sizes);
-    metal::float4 _e20 = sample_texture(m_1.emissive_texture, hit_6.uv, params, texels, _buffer_sizes);
-    metal::float3 e_2 = m_1.emissive * _e20.xyz;
-    metal::float3 _e29 = gltf_radiance(c_9, m_1.metallic * _e12.z, m_1.roughness * _e12.y, _e16, e_2, ray_16, hit_6, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-    return _e29;
+    metal::float2 _e9 = gltf_uv(m_1.base_uv_u, m_1.base_uv_v, hit_6.uv);
+    metal::float4 _e10 = sample_texture(m_1.base_texture, _e9, params, texels, _buffer_sizes);
+    metal::float3 c_9 = m_1.base_color.xyz * _e10.xyz;
+    metal::float2 _e17 = gltf_uv(m_1.metal_rough_uv_u, m_1.metal_rough_uv_v, hit_6.uv);
+    metal::float4 _e18 = sample_texture(m_1.metal_rough_texture, _e17, params, texels, _buffer_sizes);
+    metal::float2 _e24 = gltf_uv(m_1.occlusion_uv_u, m_1.occlusion_uv_v, hit_6.uv);
+    float _e25 = gltf_occlusion(m_1.occlusion_texture, m_1.occlusion_strength, _e24, params, texels, _buffer_sizes);
+    metal::float2 _e31 = gltf_uv(m_1.emissive_uv_u, m_1.emissive_uv_v, hit_6.uv);
+    metal::float4 _e32 = sample_texture(m_1.emissive_texture, _e31, params, texels, _buffer_sizes);
+    metal::float3 e_2 = m_1.emissive * _e32.xyz;
+    metal::float3 _e41 = gltf_radiance(c_9, m_1.metallic * _e18.z, m_1.roughness * _e18.y, _e25, e_2, ray_16, hit_6, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    return _e41;
 }
 
 GltfMaterial load_GltfMaterial(
@@ -1761,7 +1816,31 @@ GltfMaterial load_GltfMaterial(
     uint _e71 = params[offset_9 + 11u];
     uint _e76 = params[offset_9 + 12u];
     uint _e81 = params[offset_9 + 13u];
-    return GltfMaterial {metal::float4(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17), as_type<float>(_e23)), _e30, as_type<float>(_e35), as_type<float>(_e41), _e47, metal::float3(as_type<float>(_e52), as_type<float>(_e58), as_type<float>(_e64)), _e71, _e76, as_type<float>(_e81)};
+    uint _e87 = params[offset_9 + 16u];
+    uint _e93 = params[offset_9 + 17u];
+    uint _e99 = params[offset_9 + 18u];
+    uint _e106 = params[offset_9 + 20u];
+    uint _e112 = params[offset_9 + 21u];
+    uint _e118 = params[offset_9 + 22u];
+    uint _e125 = params[offset_9 + 24u];
+    uint _e131 = params[offset_9 + 25u];
+    uint _e137 = params[offset_9 + 26u];
+    uint _e144 = params[offset_9 + 28u];
+    uint _e150 = params[offset_9 + 29u];
+    uint _e156 = params[offset_9 + 30u];
+    uint _e163 = params[offset_9 + 32u];
+    uint _e169 = params[offset_9 + 33u];
+    uint _e175 = params[offset_9 + 34u];
+    uint _e182 = params[offset_9 + 36u];
+    uint _e188 = params[offset_9 + 37u];
+    uint _e194 = params[offset_9 + 38u];
+    uint _e201 = params[offset_9 + 40u];
+    uint _e207 = params[offset_9 + 41u];
+    uint _e213 = params[offset_9 + 42u];
+    uint _e220 = params[offset_9 + 44u];
+    uint _e226 = params[offset_9 + 45u];
+    uint _e232 = params[offset_9 + 46u];
+    return GltfMaterial {metal::float4(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17), as_type<float>(_e23)), _e30, as_type<float>(_e35), as_type<float>(_e41), _e47, metal::float3(as_type<float>(_e52), as_type<float>(_e58), as_type<float>(_e64)), _e71, _e76, as_type<float>(_e81), {}, metal::float3(as_type<float>(_e87), as_type<float>(_e93), as_type<float>(_e99)), metal::float3(as_type<float>(_e106), as_type<float>(_e112), as_type<float>(_e118)), metal::float3(as_type<float>(_e125), as_type<float>(_e131), as_type<float>(_e137)), metal::float3(as_type<float>(_e144), as_type<float>(_e150), as_type<float>(_e156)), metal::float3(as_type<float>(_e163), as_type<float>(_e169), as_type<float>(_e175)), metal::float3(as_type<float>(_e182), as_type<float>(_e188), as_type<float>(_e194)), metal::float3(as_type<float>(_e201), as_type<float>(_e207), as_type<float>(_e213)), metal::float3(as_type<float>(_e220), as_type<float>(_e226), as_type<float>(_e232))};
 }
 
 metal::float3 gltf_shade(
@@ -1782,14 +1861,18 @@ metal::float3 gltf_shade(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 _e7 = sample_texture(m_2.base_texture, hit_7.uv, params, texels, _buffer_sizes);
-    metal::float3 c_10 = m_2.base_color.xyz * _e7.xyz;
-    metal::float4 _e12 = sample_texture(m_2.metal_rough_texture, hit_7.uv, params, texels, _buffer_sizes);
-    float _e16 = gltf_occlusion(m_2.occlusion_texture, m_2.occlusion_strength, hit_7.uv, params, texels, _buffer_sizes);
-    metal::float4 _e20 = sample_texture(m_2.emissive_texture, hit_7.uv, params, texels, _buffer_sizes);
-    metal::float3 e_3 = m_2.emissive * _e20.xyz;
-    metal::float3 _e29 = gltf_radiance(c_10, m_2.metallic * _e12.z, m_2.roughness * _e12.y, _e16, e_3, ray_17, hit_7, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-    return _e29;
+    metal::float2 _e9 = gltf_uv(m_2.base_uv_u, m_2.base_uv_v, hit_7.uv);
+    metal::float4 _e10 = sample_texture(m_2.base_texture, _e9, params, texels, _buffer_sizes);
+    metal::float3 c_10 = m_2.base_color.xyz * _e10.xyz;
+    metal::float2 _e17 = gltf_uv(m_2.metal_rough_uv_u, m_2.metal_rough_uv_v, hit_7.uv);
+    metal::float4 _e18 = sample_texture(m_2.metal_rough_texture, _e17, params, texels, _buffer_sizes);
+    metal::float2 _e24 = gltf_uv(m_2.occlusion_uv_u, m_2.occlusion_uv_v, hit_7.uv);
+    float _e25 = gltf_occlusion(m_2.occlusion_texture, m_2.occlusion_strength, _e24, params, texels, _buffer_sizes);
+    metal::float2 _e31 = gltf_uv(m_2.emissive_uv_u, m_2.emissive_uv_v, hit_7.uv);
+    metal::float4 _e32 = sample_texture(m_2.emissive_texture, _e31, params, texels, _buffer_sizes);
+    metal::float3 e_3 = m_2.emissive * _e32.xyz;
+    metal::float3 _e41 = gltf_radiance(c_10, m_2.metallic * _e18.z, m_2.roughness * _e18.y, _e25, e_3, ray_17, hit_7, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    return _e41;
 }
 
 metal::float3 dispatch_closest_hit(

@@ -108,6 +108,14 @@ struct GltfMaskedMaterial {
     emissive_texture: u32,
     occlusion_texture: u32,
     occlusion_strength: f32,
+    base_uv_u: vec3<f32>,
+    base_uv_v: vec3<f32>,
+    metal_rough_uv_u: vec3<f32>,
+    metal_rough_uv_v: vec3<f32>,
+    emissive_uv_u: vec3<f32>,
+    emissive_uv_v: vec3<f32>,
+    occlusion_uv_u: vec3<f32>,
+    occlusion_uv_v: vec3<f32>,
     alpha_cutoff: f32,
     blend: u32,
     double_sided: u32,
@@ -149,6 +157,14 @@ struct GltfMaterial {
     emissive_texture: u32,
     occlusion_texture: u32,
     occlusion_strength: f32,
+    base_uv_u: vec3<f32>,
+    base_uv_v: vec3<f32>,
+    metal_rough_uv_u: vec3<f32>,
+    metal_rough_uv_v: vec3<f32>,
+    emissive_uv_u: vec3<f32>,
+    emissive_uv_v: vec3<f32>,
+    occlusion_uv_u: vec3<f32>,
+    occlusion_uv_v: vec3<f32>,
 }
 
 struct Frame {
@@ -557,10 +573,39 @@ fn load_GltfMaskedMaterial(offset_2: u32) -> GltfMaskedMaterial {
     let _e71 = params[(offset_2 + 11u)];
     let _e76 = params[(offset_2 + 12u)];
     let _e81 = params[(offset_2 + 13u)];
-    let _e87 = params[(offset_2 + 14u)];
-    let _e93 = params[(offset_2 + 15u)];
-    let _e98 = params[(offset_2 + 16u)];
-    return GltfMaskedMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), _e47, vec3<f32>(bitcast<f32>(_e52), bitcast<f32>(_e58), bitcast<f32>(_e64)), _e71, _e76, bitcast<f32>(_e81), bitcast<f32>(_e87), _e93, _e98);
+    let _e87 = params[(offset_2 + 16u)];
+    let _e93 = params[(offset_2 + 17u)];
+    let _e99 = params[(offset_2 + 18u)];
+    let _e106 = params[(offset_2 + 20u)];
+    let _e112 = params[(offset_2 + 21u)];
+    let _e118 = params[(offset_2 + 22u)];
+    let _e125 = params[(offset_2 + 24u)];
+    let _e131 = params[(offset_2 + 25u)];
+    let _e137 = params[(offset_2 + 26u)];
+    let _e144 = params[(offset_2 + 28u)];
+    let _e150 = params[(offset_2 + 29u)];
+    let _e156 = params[(offset_2 + 30u)];
+    let _e163 = params[(offset_2 + 32u)];
+    let _e169 = params[(offset_2 + 33u)];
+    let _e175 = params[(offset_2 + 34u)];
+    let _e182 = params[(offset_2 + 36u)];
+    let _e188 = params[(offset_2 + 37u)];
+    let _e194 = params[(offset_2 + 38u)];
+    let _e201 = params[(offset_2 + 40u)];
+    let _e207 = params[(offset_2 + 41u)];
+    let _e213 = params[(offset_2 + 42u)];
+    let _e220 = params[(offset_2 + 44u)];
+    let _e226 = params[(offset_2 + 45u)];
+    let _e232 = params[(offset_2 + 46u)];
+    let _e239 = params[(offset_2 + 47u)];
+    let _e245 = params[(offset_2 + 48u)];
+    let _e250 = params[(offset_2 + 49u)];
+    return GltfMaskedMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), _e47, vec3<f32>(bitcast<f32>(_e52), bitcast<f32>(_e58), bitcast<f32>(_e64)), _e71, _e76, bitcast<f32>(_e81), vec3<f32>(bitcast<f32>(_e87), bitcast<f32>(_e93), bitcast<f32>(_e99)), vec3<f32>(bitcast<f32>(_e106), bitcast<f32>(_e112), bitcast<f32>(_e118)), vec3<f32>(bitcast<f32>(_e125), bitcast<f32>(_e131), bitcast<f32>(_e137)), vec3<f32>(bitcast<f32>(_e144), bitcast<f32>(_e150), bitcast<f32>(_e156)), vec3<f32>(bitcast<f32>(_e163), bitcast<f32>(_e169), bitcast<f32>(_e175)), vec3<f32>(bitcast<f32>(_e182), bitcast<f32>(_e188), bitcast<f32>(_e194)), vec3<f32>(bitcast<f32>(_e201), bitcast<f32>(_e207), bitcast<f32>(_e213)), vec3<f32>(bitcast<f32>(_e220), bitcast<f32>(_e226), bitcast<f32>(_e232)), bitcast<f32>(_e239), _e245, _e250);
+}
+
+fn gltf_uv(ru: vec3<f32>, rv: vec3<f32>, uv: vec2<f32>) -> vec2<f32> {
+    let p_7 = vec3<f32>(uv, 1f);
+    return vec2<f32>(dot(ru, p_7), dot(rv, p_7));
 }
 
 fn i32_from_f32_(x_1: f32) -> i32 {
@@ -626,22 +671,22 @@ fn texel_at(t: u32, x_3: i32, y: i32) -> vec4<f32> {
     return vec4<f32>(rg, ba);
 }
 
-fn sample_texture(t_1: u32, uv: vec2<f32>) -> vec4<f32> {
+fn sample_texture(t_1: u32, uv_1: vec2<f32>) -> vec4<f32> {
     let _e6 = params[(t_1 + 1u)];
     let w_4 = f32(max(_e6, 1u));
     let _e14 = params[(t_1 + 2u)];
     let h_4 = f32(max(_e14, 1u));
     let _e22 = params[(t_1 + 4u)];
     if ((_e22 & TEXTURE_NEAREST) != 0u) {
-        let q_3 = floor((uv * vec2<f32>(w_4, h_4)));
+        let q_3 = floor((uv_1 * vec2<f32>(w_4, h_4)));
         let _e31 = i32_from_f32_(q_3.x);
         let _e33 = i32_from_f32_(q_3.y);
         let _e34 = texel_at(t_1, _e31, _e33);
         return _e34;
     }
-    let p_7 = ((uv * vec2<f32>(w_4, h_4)) - vec2(0.5f));
-    let f_1 = floor(p_7);
-    let fr = (p_7 - f_1);
+    let p_8 = ((uv_1 * vec2<f32>(w_4, h_4)) - vec2(0.5f));
+    let f_1 = floor(p_8);
+    let fr = (p_8 - f_1);
     let _e43 = i32_from_f32_(f_1.x);
     let _e45 = i32_from_f32_(f_1.y);
     let _e46 = texel_at(t_1, _e43, _e45);
@@ -693,11 +738,12 @@ fn gltf_masked_any_hit(m: GltfMaskedMaterial, ray_4: Ray, hit_2: Hit) -> bool {
     if ((m.double_sided == 0u) && !(hit_2.front_face)) {
         return false;
     }
-    let _e14 = sample_texture(m.base_texture, hit_2.uv);
-    let alpha = (m.base_color.w * _e14.w);
+    let _e16 = gltf_uv(m.base_uv_u, m.base_uv_v, hit_2.uv);
+    let _e17 = sample_texture(m.base_texture, _e16);
+    let alpha = (m.base_color.w * _e17.w);
     if (m.blend != 0u) {
-        let _e20 = gltf_coverage(ray_4, hit_2);
-        return (_e20 < alpha);
+        let _e23 = gltf_coverage(ray_4, hit_2);
+        return (_e23 < alpha);
     }
     return (alpha >= m.alpha_cutoff);
 }
@@ -1071,8 +1117,8 @@ fn miss(ray_13: Ray) -> vec3<f32> {
     return _e9;
 }
 
-fn gltf_occlusion(t_2: u32, strength: f32, uv_1: vec2<f32>) -> f32 {
-    let _e4 = sample_texture(t_2, uv_1);
+fn gltf_occlusion(t_2: u32, strength: f32, uv_2: vec2<f32>) -> f32 {
+    let _e4 = sample_texture(t_2, uv_2);
     return (1f + (strength * (_e4.x - 1f)));
 }
 
@@ -1260,14 +1306,18 @@ fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, occlusion: f32, 
 }
 
 fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_16: Ray, hit_6: Hit) -> vec3<f32> {
-    let _e7 = sample_texture(m_1.base_texture, hit_6.uv);
-    let c_9 = (m_1.base_color.xyz * _e7.xyz);
-    let _e12 = sample_texture(m_1.metal_rough_texture, hit_6.uv);
-    let _e16 = gltf_occlusion(m_1.occlusion_texture, m_1.occlusion_strength, hit_6.uv);
-    let _e20 = sample_texture(m_1.emissive_texture, hit_6.uv);
-    let e_2 = (m_1.emissive * _e20.xyz);
-    let _e29 = gltf_radiance(c_9, (m_1.metallic * _e12.z), (m_1.roughness * _e12.y), _e16, e_2, ray_16, hit_6);
-    return _e29;
+    let _e9 = gltf_uv(m_1.base_uv_u, m_1.base_uv_v, hit_6.uv);
+    let _e10 = sample_texture(m_1.base_texture, _e9);
+    let c_9 = (m_1.base_color.xyz * _e10.xyz);
+    let _e17 = gltf_uv(m_1.metal_rough_uv_u, m_1.metal_rough_uv_v, hit_6.uv);
+    let _e18 = sample_texture(m_1.metal_rough_texture, _e17);
+    let _e24 = gltf_uv(m_1.occlusion_uv_u, m_1.occlusion_uv_v, hit_6.uv);
+    let _e25 = gltf_occlusion(m_1.occlusion_texture, m_1.occlusion_strength, _e24);
+    let _e31 = gltf_uv(m_1.emissive_uv_u, m_1.emissive_uv_v, hit_6.uv);
+    let _e32 = sample_texture(m_1.emissive_texture, _e31);
+    let e_2 = (m_1.emissive * _e32.xyz);
+    let _e41 = gltf_radiance(c_9, (m_1.metallic * _e18.z), (m_1.roughness * _e18.y), _e25, e_2, ray_16, hit_6);
+    return _e41;
 }
 
 fn load_GltfMaterial(offset_9: u32) -> GltfMaterial {
@@ -1285,18 +1335,46 @@ fn load_GltfMaterial(offset_9: u32) -> GltfMaterial {
     let _e71 = params[(offset_9 + 11u)];
     let _e76 = params[(offset_9 + 12u)];
     let _e81 = params[(offset_9 + 13u)];
-    return GltfMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), _e47, vec3<f32>(bitcast<f32>(_e52), bitcast<f32>(_e58), bitcast<f32>(_e64)), _e71, _e76, bitcast<f32>(_e81));
+    let _e87 = params[(offset_9 + 16u)];
+    let _e93 = params[(offset_9 + 17u)];
+    let _e99 = params[(offset_9 + 18u)];
+    let _e106 = params[(offset_9 + 20u)];
+    let _e112 = params[(offset_9 + 21u)];
+    let _e118 = params[(offset_9 + 22u)];
+    let _e125 = params[(offset_9 + 24u)];
+    let _e131 = params[(offset_9 + 25u)];
+    let _e137 = params[(offset_9 + 26u)];
+    let _e144 = params[(offset_9 + 28u)];
+    let _e150 = params[(offset_9 + 29u)];
+    let _e156 = params[(offset_9 + 30u)];
+    let _e163 = params[(offset_9 + 32u)];
+    let _e169 = params[(offset_9 + 33u)];
+    let _e175 = params[(offset_9 + 34u)];
+    let _e182 = params[(offset_9 + 36u)];
+    let _e188 = params[(offset_9 + 37u)];
+    let _e194 = params[(offset_9 + 38u)];
+    let _e201 = params[(offset_9 + 40u)];
+    let _e207 = params[(offset_9 + 41u)];
+    let _e213 = params[(offset_9 + 42u)];
+    let _e220 = params[(offset_9 + 44u)];
+    let _e226 = params[(offset_9 + 45u)];
+    let _e232 = params[(offset_9 + 46u)];
+    return GltfMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), _e47, vec3<f32>(bitcast<f32>(_e52), bitcast<f32>(_e58), bitcast<f32>(_e64)), _e71, _e76, bitcast<f32>(_e81), vec3<f32>(bitcast<f32>(_e87), bitcast<f32>(_e93), bitcast<f32>(_e99)), vec3<f32>(bitcast<f32>(_e106), bitcast<f32>(_e112), bitcast<f32>(_e118)), vec3<f32>(bitcast<f32>(_e125), bitcast<f32>(_e131), bitcast<f32>(_e137)), vec3<f32>(bitcast<f32>(_e144), bitcast<f32>(_e150), bitcast<f32>(_e156)), vec3<f32>(bitcast<f32>(_e163), bitcast<f32>(_e169), bitcast<f32>(_e175)), vec3<f32>(bitcast<f32>(_e182), bitcast<f32>(_e188), bitcast<f32>(_e194)), vec3<f32>(bitcast<f32>(_e201), bitcast<f32>(_e207), bitcast<f32>(_e213)), vec3<f32>(bitcast<f32>(_e220), bitcast<f32>(_e226), bitcast<f32>(_e232)));
 }
 
 fn gltf_shade(m_2: GltfMaterial, ray_17: Ray, hit_7: Hit) -> vec3<f32> {
-    let _e7 = sample_texture(m_2.base_texture, hit_7.uv);
-    let c_10 = (m_2.base_color.xyz * _e7.xyz);
-    let _e12 = sample_texture(m_2.metal_rough_texture, hit_7.uv);
-    let _e16 = gltf_occlusion(m_2.occlusion_texture, m_2.occlusion_strength, hit_7.uv);
-    let _e20 = sample_texture(m_2.emissive_texture, hit_7.uv);
-    let e_3 = (m_2.emissive * _e20.xyz);
-    let _e29 = gltf_radiance(c_10, (m_2.metallic * _e12.z), (m_2.roughness * _e12.y), _e16, e_3, ray_17, hit_7);
-    return _e29;
+    let _e9 = gltf_uv(m_2.base_uv_u, m_2.base_uv_v, hit_7.uv);
+    let _e10 = sample_texture(m_2.base_texture, _e9);
+    let c_10 = (m_2.base_color.xyz * _e10.xyz);
+    let _e17 = gltf_uv(m_2.metal_rough_uv_u, m_2.metal_rough_uv_v, hit_7.uv);
+    let _e18 = sample_texture(m_2.metal_rough_texture, _e17);
+    let _e24 = gltf_uv(m_2.occlusion_uv_u, m_2.occlusion_uv_v, hit_7.uv);
+    let _e25 = gltf_occlusion(m_2.occlusion_texture, m_2.occlusion_strength, _e24);
+    let _e31 = gltf_uv(m_2.emissive_uv_u, m_2.emissive_uv_v, hit_7.uv);
+    let _e32 = sample_texture(m_2.emissive_texture, _e31);
+    let e_3 = (m_2.emissive * _e32.xyz);
+    let _e41 = gltf_radiance(c_10, (m_2.metallic * _e18.z), (m_2.roughness * _e18.y), _e25, e_3, ray_17, hit_7);
+    return _e41;
 }
 
 fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_18: Ray, hit_8: Hit, secondary: vec3<f32>) -> vec3<f32> {
