@@ -429,6 +429,7 @@ fn a_model_the_compiler_cannot_read_links_every_model_type_and_says_why() {
         m["models"]["linked"],
         serde_json::json!([
             "GltfMaterial",
+            "GltfMappedMaterial",
             "GltfMaskedMaterial",
             "PointLight",
             "DirectionalLight",

@@ -34,8 +34,11 @@ use crate::source::Span;
 /// What one of [`MODEL_TYPES`] stands for in a glTF file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum ModelPart {
-    /// A material with `alphaMode` `OPAQUE`.
+    /// A material with `alphaMode` `OPAQUE` and no texture but the base colour's.
     OpaqueMaterial,
+    /// A material with `alphaMode` `OPAQUE` and a metallic-roughness, emissive or occlusion
+    /// texture, or a `KHR_texture_transform` on any texture.
+    MappedMaterial,
     /// A material with `alphaMode` `MASK` or `BLEND` (the any-hit path: a cutoff, or stochastic
     /// coverage).
     MaskedMaterial,
@@ -51,8 +54,9 @@ pub enum ModelPart {
 
 impl ModelPart {
     /// Every part, in order.
-    pub const ALL: [ModelPart; 6] = [
+    pub const ALL: [ModelPart; 7] = [
         ModelPart::OpaqueMaterial,
+        ModelPart::MappedMaterial,
         ModelPart::MaskedMaterial,
         ModelPart::PointLight,
         ModelPart::DirectionalLight,
@@ -64,6 +68,7 @@ impl ModelPart {
     pub fn name(self) -> &'static str {
         match self {
             ModelPart::OpaqueMaterial => "opaque material",
+            ModelPart::MappedMaterial => "opaque material with more textures",
             ModelPart::MaskedMaterial => "alpha-masked or blended material",
             ModelPart::PointLight => "point light",
             ModelPart::DirectionalLight => "directional light",
@@ -93,6 +98,11 @@ pub const MODEL_TYPES: &[ModelType] = &[
         module: "std/materials/gltf.rt",
         name: "GltfMaterial",
         part: ModelPart::OpaqueMaterial,
+    },
+    ModelType {
+        module: "std/materials/gltf.rt",
+        name: "GltfMappedMaterial",
+        part: ModelPart::MappedMaterial,
     },
     ModelType {
         module: "std/materials/gltf.rt",
@@ -223,18 +233,35 @@ pub fn parts_of(bytes: &[u8]) -> Result<BTreeSet<ModelPart>, String> {
     Ok(parts_of_root(&root))
 }
 
+/// Whether an opaque material needs `GltfMappedMaterial`: it has a metallic-roughness, emissive
+/// or occlusion texture, or a `KHR_texture_transform` on any of its textures. The runtime's
+/// import (`GltfMaterial::is_mapped`) decides the same way.
+pub fn is_mapped(m: &json::Material) -> bool {
+    let transformed = |e: Option<&json::extensions::texture::Info>| {
+        e.is_some_and(|e| e.texture_transform.is_some())
+    };
+    let pbr = &m.pbr_metallic_roughness;
+    pbr.metallic_roughness_texture.is_some()
+        || m.emissive_texture.is_some()
+        || m.occlusion_texture.is_some()
+        || pbr
+            .base_color_texture
+            .as_ref()
+            .is_some_and(|t| transformed(t.extensions.as_ref()))
+}
+
 /// The parts a parsed glTF document holds (see the module docs for what counts).
 pub fn parts_of_root(root: &json::Root) -> BTreeSet<ModelPart> {
     let mut parts = BTreeSet::new();
     for primitive in root.meshes.iter().flat_map(|m| &m.primitives) {
-        let mode = primitive
+        let material = primitive
             .material
-            .and_then(|i| root.materials.get(i.value()))
-            .map(|m| m.alpha_mode);
-        parts.insert(match mode {
+            .and_then(|i| root.materials.get(i.value()));
+        parts.insert(match material.map(|m| m.alpha_mode) {
             Some(Checked::Valid(
                 json::material::AlphaMode::Mask | json::material::AlphaMode::Blend,
             )) => ModelPart::MaskedMaterial,
+            _ if material.is_some_and(is_mapped) => ModelPart::MappedMaterial,
             _ => ModelPart::OpaqueMaterial,
         });
     }
@@ -316,6 +343,24 @@ mod tests {
                 ModelPart::SpotLight,
                 ModelPart::PerspectiveCamera
             ]
+        );
+    }
+
+    #[test]
+    fn an_opaque_material_with_more_textures_or_a_transform_is_mapped() {
+        let text = format!(
+            r#"{{ {ASSET}, "materials": [
+                {{"pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0}}}}}},
+                {{"emissiveTexture": {{"index": 0}}}},
+                {{"pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0,
+                    "extensions": {{"KHR_texture_transform": {{"offset": [0.5, 0]}}}}}}}}}}],
+            "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}, "material": 0}}]}},
+                       {{"primitives": [{{"attributes": {{"POSITION": 0}}, "material": 1}}]}},
+                       {{"primitives": [{{"attributes": {{"POSITION": 0}}, "material": 2}}]}}] }}"#
+        );
+        assert_eq!(
+            parts(&text),
+            [ModelPart::OpaqueMaterial, ModelPart::MappedMaterial]
         );
     }
 

@@ -291,7 +291,12 @@ fn import_one(
                         (None, _) => "the default material".to_owned(),
                     });
                 }
-                "GltfMaterial"
+                // The fields it lacks (other textures, transforms) are left out by `instance`.
+                if m.is_mapped() {
+                    "GltfMappedMaterial"
+                } else {
+                    "GltfMaterial"
+                }
             }
         };
         materials.push(instance(types, name, kind, span, &fields)?);

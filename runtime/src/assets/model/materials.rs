@@ -86,6 +86,10 @@ impl Materials {
                 .unwrap_or(UV_IDENTITY)
         };
         uv_transforms[0] = transform_of(pbr.base_color_texture.as_ref());
+        let base_color_transformed = pbr
+            .base_color_texture
+            .as_ref()
+            .is_some_and(|i| texture_info(i).transform.is_some());
         uv_transforms[1] = transform_of(pbr.metallic_roughness_texture.as_ref());
         uv_transforms[2] = transform_of(json.emissive_texture.as_ref());
         let base_color_texture = pbr
@@ -186,6 +190,7 @@ impl Materials {
             occlusion_texture,
             occlusion_strength,
             uv_transforms,
+            base_color_transformed,
             alpha_mode,
             alpha_cutoff: json.alpha_cutoff.map_or(0.5, |c| c.0),
             double_sided: json.double_sided,

@@ -161,12 +161,26 @@ pub struct GltfMaterial {
     /// The `KHR_texture_transform` of each texture: base colour, metallic-roughness, emissive,
     /// occlusion, in that order ([`UV_IDENTITY`] without one).
     pub uv_transforms: [UvTransform; 4],
+    /// Whether its base-colour texture has a `KHR_texture_transform` (even the identity).
+    pub base_color_transformed: bool,
     /// How alpha is used.
     pub alpha_mode: AlphaMode,
     /// The cutoff of [`AlphaMode::Mask`].
     pub alpha_cutoff: f32,
     /// Whether back faces are lit like front faces.
     pub double_sided: bool,
+}
+
+impl GltfMaterial {
+    /// Whether an opaque material of this kind needs `GltfMappedMaterial` (a texture besides the
+    /// base colour's, or a texture transform), decided as the link step's `is_mapped` decides
+    /// from the JSON, so the type it needs was linked.
+    pub fn is_mapped(&self) -> bool {
+        self.metallic_roughness_texture.is_some()
+            || self.emissive_texture.is_some()
+            || self.occlusion_texture.is_some()
+            || self.base_color_transformed
+    }
 }
 
 impl Default for GltfMaterial {
@@ -185,6 +199,7 @@ impl Default for GltfMaterial {
             occlusion_texture: None,
             occlusion_strength: 1.0,
             uv_transforms: [UV_IDENTITY; 4],
+            base_color_transformed: false,
             alpha_mode: AlphaMode::Opaque,
             alpha_cutoff: 0.5,
             double_sided: false,

@@ -142,19 +142,7 @@ struct GltfMaterial {
     uint base_texture;
     float metallic;
     float roughness;
-    uint metal_rough_texture;
     vec3 emissive;
-    uint emissive_texture;
-    uint occlusion_texture;
-    float occlusion_strength;
-    vec3 base_uv_u;
-    vec3 base_uv_v;
-    vec3 metal_rough_uv_u;
-    vec3 metal_rough_uv_v;
-    vec3 emissive_uv_u;
-    vec3 emissive_uv_v;
-    vec3 occlusion_uv_u;
-    vec3 occlusion_uv_v;
 };
 struct Frame {
     Ray ray;
@@ -1267,8 +1255,8 @@ vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, float occlusion, v
     float a2_ = max(pow(clamp(roughness, 0.0, 1.0), 4.0), 4e-6);
     vec3 f0_ = mix(vec3(0.04), c_3, vec3(metal));
     float ndv = max(dot(_e7, v_2), 0.0001);
-    color = vec3(0.0);
-    uint _e28 = light_count_query();
+    color = emissive;
+    uint _e26 = light_count_query();
     i_3 = 0u;
     bool loop_init_3 = true;
     while(true) {
@@ -1277,24 +1265,24 @@ vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, float occlusion, v
             i_3 = (_e107 + 1u);
         }
         loop_init_3 = false;
-        uint _e30 = i_3;
-        if ((_e30 >= _e28)) {
+        uint _e28 = i_3;
+        if ((_e28 >= _e26)) {
             break;
         }
-        uint _e32 = i_3;
-        LightSample _e35 = sample_light_query(_e32, hit_5.position, hit_5.geometric_normal);
-        float ndl = max(dot(_e7, _e35.dir), 0.0);
-        vec3 _e42 = normalize_vec3f((_e35.dir + v_2));
-        float ndh = max(dot(_e7, _e42), 0.0);
+        uint _e30 = i_3;
+        LightSample _e33 = sample_light_query(_e30, hit_5.position, hit_5.geometric_normal);
+        float ndl = max(dot(_e7, _e33.dir), 0.0);
+        vec3 _e40 = normalize_vec3f((_e33.dir + v_2));
+        float ndh = max(dot(_e7, _e40), 0.0);
         float d_5 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
         float ggx = ((a2_ * INV_PI) / max((d_5 * d_5), 1e-8));
         float vis = (0.5 / max(((ndl * sqrt((((ndv * ndv) * (1.0 - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1.0 - a2_)) + a2_)))), 1e-8));
-        vec3 fresnel = (f0_ + ((vec3(1.0) - f0_) * vec3(pow((1.0 - max(dot(v_2, _e42), 0.0)), 5.0))));
-        vec3 _e90 = color;
-        color = (_e90 + ((_e35.radiance * vec3(ndl)) * (((c_3 * vec3((1.0 - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))));
+        vec3 fresnel = (f0_ + ((vec3(1.0) - f0_) * vec3(pow((1.0 - max(dot(v_2, _e40), 0.0)), 5.0))));
+        vec3 _e88 = color;
+        color = (_e88 + (((_e33.radiance * vec3(ndl)) * (((c_3 * vec3((1.0 - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))) * vec3(occlusion)));
     }
-    vec3 _e111 = color;
-    return (emissive + (vec3(occlusion) * _e111));
+    vec3 _e110 = color;
+    return _e110;
 }
 
 vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_16, Hit hit_6) {
@@ -1320,53 +1308,17 @@ GltfMaterial load_GltfMaterial(uint offset_9) {
     uint _e30 = _group_0_binding_6_cs[(offset_9 + 4u)];
     uint _e35 = _group_0_binding_6_cs[(offset_9 + 5u)];
     uint _e41 = _group_0_binding_6_cs[(offset_9 + 6u)];
-    uint _e47 = _group_0_binding_6_cs[(offset_9 + 7u)];
-    uint _e52 = _group_0_binding_6_cs[(offset_9 + 8u)];
-    uint _e58 = _group_0_binding_6_cs[(offset_9 + 9u)];
-    uint _e64 = _group_0_binding_6_cs[(offset_9 + 10u)];
-    uint _e71 = _group_0_binding_6_cs[(offset_9 + 11u)];
-    uint _e76 = _group_0_binding_6_cs[(offset_9 + 12u)];
-    uint _e81 = _group_0_binding_6_cs[(offset_9 + 13u)];
-    uint _e87 = _group_0_binding_6_cs[(offset_9 + 16u)];
-    uint _e93 = _group_0_binding_6_cs[(offset_9 + 17u)];
-    uint _e99 = _group_0_binding_6_cs[(offset_9 + 18u)];
-    uint _e106 = _group_0_binding_6_cs[(offset_9 + 20u)];
-    uint _e112 = _group_0_binding_6_cs[(offset_9 + 21u)];
-    uint _e118 = _group_0_binding_6_cs[(offset_9 + 22u)];
-    uint _e125 = _group_0_binding_6_cs[(offset_9 + 24u)];
-    uint _e131 = _group_0_binding_6_cs[(offset_9 + 25u)];
-    uint _e137 = _group_0_binding_6_cs[(offset_9 + 26u)];
-    uint _e144 = _group_0_binding_6_cs[(offset_9 + 28u)];
-    uint _e150 = _group_0_binding_6_cs[(offset_9 + 29u)];
-    uint _e156 = _group_0_binding_6_cs[(offset_9 + 30u)];
-    uint _e163 = _group_0_binding_6_cs[(offset_9 + 32u)];
-    uint _e169 = _group_0_binding_6_cs[(offset_9 + 33u)];
-    uint _e175 = _group_0_binding_6_cs[(offset_9 + 34u)];
-    uint _e182 = _group_0_binding_6_cs[(offset_9 + 36u)];
-    uint _e188 = _group_0_binding_6_cs[(offset_9 + 37u)];
-    uint _e194 = _group_0_binding_6_cs[(offset_9 + 38u)];
-    uint _e201 = _group_0_binding_6_cs[(offset_9 + 40u)];
-    uint _e207 = _group_0_binding_6_cs[(offset_9 + 41u)];
-    uint _e213 = _group_0_binding_6_cs[(offset_9 + 42u)];
-    uint _e220 = _group_0_binding_6_cs[(offset_9 + 44u)];
-    uint _e226 = _group_0_binding_6_cs[(offset_9 + 45u)];
-    uint _e232 = _group_0_binding_6_cs[(offset_9 + 46u)];
-    return GltfMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), _e47, vec3(uintBitsToFloat(_e52), uintBitsToFloat(_e58), uintBitsToFloat(_e64)), _e71, _e76, uintBitsToFloat(_e81), vec3(uintBitsToFloat(_e87), uintBitsToFloat(_e93), uintBitsToFloat(_e99)), vec3(uintBitsToFloat(_e106), uintBitsToFloat(_e112), uintBitsToFloat(_e118)), vec3(uintBitsToFloat(_e125), uintBitsToFloat(_e131), uintBitsToFloat(_e137)), vec3(uintBitsToFloat(_e144), uintBitsToFloat(_e150), uintBitsToFloat(_e156)), vec3(uintBitsToFloat(_e163), uintBitsToFloat(_e169), uintBitsToFloat(_e175)), vec3(uintBitsToFloat(_e182), uintBitsToFloat(_e188), uintBitsToFloat(_e194)), vec3(uintBitsToFloat(_e201), uintBitsToFloat(_e207), uintBitsToFloat(_e213)), vec3(uintBitsToFloat(_e220), uintBitsToFloat(_e226), uintBitsToFloat(_e232)));
+    uint _e47 = _group_0_binding_6_cs[(offset_9 + 8u)];
+    uint _e53 = _group_0_binding_6_cs[(offset_9 + 9u)];
+    uint _e59 = _group_0_binding_6_cs[(offset_9 + 10u)];
+    return GltfMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), vec3(uintBitsToFloat(_e47), uintBitsToFloat(_e53), uintBitsToFloat(_e59)));
 }
 
 vec3 gltf_shade(GltfMaterial m_2, Ray ray_17, Hit hit_7) {
-    vec2 _e9 = gltf_uv(m_2.base_uv_u, m_2.base_uv_v, hit_7.uv);
-    vec4 _e10 = sample_texture(m_2.base_texture, _e9);
-    vec3 c_10 = (m_2.base_color.xyz * _e10.xyz);
-    vec2 _e17 = gltf_uv(m_2.metal_rough_uv_u, m_2.metal_rough_uv_v, hit_7.uv);
-    vec4 _e18 = sample_texture(m_2.metal_rough_texture, _e17);
-    vec2 _e24 = gltf_uv(m_2.occlusion_uv_u, m_2.occlusion_uv_v, hit_7.uv);
-    float _e25 = gltf_occlusion(m_2.occlusion_texture, m_2.occlusion_strength, _e24);
-    vec2 _e31 = gltf_uv(m_2.emissive_uv_u, m_2.emissive_uv_v, hit_7.uv);
-    vec4 _e32 = sample_texture(m_2.emissive_texture, _e31);
-    vec3 e_3 = (m_2.emissive * _e32.xyz);
-    vec3 _e41 = gltf_radiance(c_10, (m_2.metallic * _e18.z), (m_2.roughness * _e18.y), _e25, e_3, ray_17, hit_7);
-    return _e41;
+    vec4 _e7 = sample_texture(m_2.base_texture, hit_7.uv);
+    vec3 c_10 = (m_2.base_color.xyz * _e7.xyz);
+    vec3 _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_17, hit_7);
+    return _e14;
 }
 
 vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_18, Hit hit_8, vec3 secondary) {

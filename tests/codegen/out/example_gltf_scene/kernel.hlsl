@@ -188,28 +188,8 @@ struct GltfMaterial {
     uint base_texture;
     float metallic;
     float roughness;
-    uint metal_rough_texture;
+    int _pad4_0;
     float3 emissive;
-    uint emissive_texture;
-    uint occlusion_texture;
-    float occlusion_strength;
-    int _pad9_0;
-    int _pad9_1;
-    float3 base_uv_u;
-    int _pad10_0;
-    float3 base_uv_v;
-    int _pad11_0;
-    float3 metal_rough_uv_u;
-    int _pad12_0;
-    float3 metal_rough_uv_v;
-    int _pad13_0;
-    float3 emissive_uv_u;
-    int _pad14_0;
-    float3 emissive_uv_v;
-    int _pad15_0;
-    float3 occlusion_uv_u;
-    int _pad16_0;
-    float3 occlusion_uv_v;
     int _end_pad_0;
 };
 
@@ -1621,8 +1601,8 @@ float3 gltf_radiance(float3 c_3, float metallic, float roughness, float occlusio
     float a2_ = max(pow(saturate(roughness), 4.0), 4e-6);
     float3 f0_ = lerp((0.04).xxx, c_3, (metal).xxx);
     float ndv = max(dot(_e7, v_2), 0.0001);
-    color = (0.0).xxx;
-    const uint _e28 = light_count_query();
+    color = emissive;
+    const uint _e26 = light_count_query();
     i_3 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
@@ -1634,24 +1614,24 @@ float3 gltf_radiance(float3 c_3, float metallic, float roughness, float occlusio
             i_3 = (_e107 + 1u);
         }
         loop_init_3 = false;
-        uint _e30 = i_3;
-        if ((_e30 >= _e28)) {
+        uint _e28 = i_3;
+        if ((_e28 >= _e26)) {
             break;
         }
-        uint _e32 = i_3;
-        const LightSample _e35 = sample_light_query(_e32, hit_5.position, hit_5.geometric_normal);
-        float ndl = max(dot(_e7, _e35.dir), 0.0);
-        const float3 _e42 = normalize_vec3f((_e35.dir + v_2));
-        float ndh = max(dot(_e7, _e42), 0.0);
+        uint _e30 = i_3;
+        const LightSample _e33 = sample_light_query(_e30, hit_5.position, hit_5.geometric_normal);
+        float ndl = max(dot(_e7, _e33.dir), 0.0);
+        const float3 _e40 = normalize_vec3f((_e33.dir + v_2));
+        float ndh = max(dot(_e7, _e40), 0.0);
         float d_5 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
         float ggx = ((a2_ * INV_PI) / max((d_5 * d_5), 1e-8));
         float vis = (0.5 / max(((ndl * sqrt((((ndv * ndv) * (1.0 - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1.0 - a2_)) + a2_)))), 1e-8));
-        float3 fresnel = (f0_ + (((1.0).xxx - f0_) * (pow((1.0 - max(dot(v_2, _e42), 0.0)), 5.0)).xxx));
-        float3 _e90 = color;
-        color = (_e90 + ((_e35.radiance * (ndl).xxx) * (((c_3 * ((1.0 - metal)).xxx) * (INV_PI).xxx) + (fresnel * ((ggx * vis)).xxx))));
+        float3 fresnel = (f0_ + (((1.0).xxx - f0_) * (pow((1.0 - max(dot(v_2, _e40), 0.0)), 5.0)).xxx));
+        float3 _e88 = color;
+        color = (_e88 + (((_e33.radiance * (ndl).xxx) * (((c_3 * ((1.0 - metal)).xxx) * (INV_PI).xxx) + (fresnel * ((ggx * vis)).xxx))) * (occlusion).xxx));
     }
-    float3 _e111 = color;
-    return (emissive + ((occlusion).xxx * _e111));
+    float3 _e110 = color;
+    return _e110;
 }
 
 float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_16, Hit hit_6)
@@ -1670,25 +1650,13 @@ float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_16, Hit hit_6)
     return _e41;
 }
 
-GltfMaterial ConstructGltfMaterial(float4 arg0, uint arg1, float arg2, float arg3, uint arg4, float3 arg5, uint arg6, uint arg7, float arg8, float3 arg9, float3 arg10, float3 arg11, float3 arg12, float3 arg13, float3 arg14, float3 arg15, float3 arg16) {
+GltfMaterial ConstructGltfMaterial(float4 arg0, uint arg1, float arg2, float arg3, float3 arg4) {
     GltfMaterial ret = (GltfMaterial)0;
     ret.base_color = arg0;
     ret.base_texture = arg1;
     ret.metallic = arg2;
     ret.roughness = arg3;
-    ret.metal_rough_texture = arg4;
-    ret.emissive = arg5;
-    ret.emissive_texture = arg6;
-    ret.occlusion_texture = arg7;
-    ret.occlusion_strength = arg8;
-    ret.base_uv_u = arg9;
-    ret.base_uv_v = arg10;
-    ret.metal_rough_uv_u = arg11;
-    ret.metal_rough_uv_v = arg12;
-    ret.emissive_uv_u = arg13;
-    ret.emissive_uv_v = arg14;
-    ret.occlusion_uv_u = arg15;
-    ret.occlusion_uv_v = arg16;
+    ret.emissive = arg4;
     return ret;
 }
 
@@ -1701,55 +1669,19 @@ GltfMaterial load_GltfMaterial(uint offset_9)
     uint _e30 = asuint(params.Load((offset_9 + 4u)*4));
     uint _e35 = asuint(params.Load((offset_9 + 5u)*4));
     uint _e41 = asuint(params.Load((offset_9 + 6u)*4));
-    uint _e47 = asuint(params.Load((offset_9 + 7u)*4));
-    uint _e52 = asuint(params.Load((offset_9 + 8u)*4));
-    uint _e58 = asuint(params.Load((offset_9 + 9u)*4));
-    uint _e64 = asuint(params.Load((offset_9 + 10u)*4));
-    uint _e71 = asuint(params.Load((offset_9 + 11u)*4));
-    uint _e76 = asuint(params.Load((offset_9 + 12u)*4));
-    uint _e81 = asuint(params.Load((offset_9 + 13u)*4));
-    uint _e87 = asuint(params.Load((offset_9 + 16u)*4));
-    uint _e93 = asuint(params.Load((offset_9 + 17u)*4));
-    uint _e99 = asuint(params.Load((offset_9 + 18u)*4));
-    uint _e106 = asuint(params.Load((offset_9 + 20u)*4));
-    uint _e112 = asuint(params.Load((offset_9 + 21u)*4));
-    uint _e118 = asuint(params.Load((offset_9 + 22u)*4));
-    uint _e125 = asuint(params.Load((offset_9 + 24u)*4));
-    uint _e131 = asuint(params.Load((offset_9 + 25u)*4));
-    uint _e137 = asuint(params.Load((offset_9 + 26u)*4));
-    uint _e144 = asuint(params.Load((offset_9 + 28u)*4));
-    uint _e150 = asuint(params.Load((offset_9 + 29u)*4));
-    uint _e156 = asuint(params.Load((offset_9 + 30u)*4));
-    uint _e163 = asuint(params.Load((offset_9 + 32u)*4));
-    uint _e169 = asuint(params.Load((offset_9 + 33u)*4));
-    uint _e175 = asuint(params.Load((offset_9 + 34u)*4));
-    uint _e182 = asuint(params.Load((offset_9 + 36u)*4));
-    uint _e188 = asuint(params.Load((offset_9 + 37u)*4));
-    uint _e194 = asuint(params.Load((offset_9 + 38u)*4));
-    uint _e201 = asuint(params.Load((offset_9 + 40u)*4));
-    uint _e207 = asuint(params.Load((offset_9 + 41u)*4));
-    uint _e213 = asuint(params.Load((offset_9 + 42u)*4));
-    uint _e220 = asuint(params.Load((offset_9 + 44u)*4));
-    uint _e226 = asuint(params.Load((offset_9 + 45u)*4));
-    uint _e232 = asuint(params.Load((offset_9 + 46u)*4));
-    const GltfMaterial gltfmaterial = ConstructGltfMaterial(float4(asfloat(_e5), asfloat(_e11), asfloat(_e17), asfloat(_e23)), _e30, asfloat(_e35), asfloat(_e41), _e47, float3(asfloat(_e52), asfloat(_e58), asfloat(_e64)), _e71, _e76, asfloat(_e81), float3(asfloat(_e87), asfloat(_e93), asfloat(_e99)), float3(asfloat(_e106), asfloat(_e112), asfloat(_e118)), float3(asfloat(_e125), asfloat(_e131), asfloat(_e137)), float3(asfloat(_e144), asfloat(_e150), asfloat(_e156)), float3(asfloat(_e163), asfloat(_e169), asfloat(_e175)), float3(asfloat(_e182), asfloat(_e188), asfloat(_e194)), float3(asfloat(_e201), asfloat(_e207), asfloat(_e213)), float3(asfloat(_e220), asfloat(_e226), asfloat(_e232)));
+    uint _e47 = asuint(params.Load((offset_9 + 8u)*4));
+    uint _e53 = asuint(params.Load((offset_9 + 9u)*4));
+    uint _e59 = asuint(params.Load((offset_9 + 10u)*4));
+    const GltfMaterial gltfmaterial = ConstructGltfMaterial(float4(asfloat(_e5), asfloat(_e11), asfloat(_e17), asfloat(_e23)), _e30, asfloat(_e35), asfloat(_e41), float3(asfloat(_e47), asfloat(_e53), asfloat(_e59)));
     return gltfmaterial;
 }
 
 float3 gltf_shade(GltfMaterial m_2, Ray ray_17, Hit hit_7)
 {
-    const float2 _e9 = gltf_uv(m_2.base_uv_u, m_2.base_uv_v, hit_7.uv);
-    const float4 _e10 = sample_texture(m_2.base_texture, _e9);
-    float3 c_10 = (m_2.base_color.xyz * _e10.xyz);
-    const float2 _e17 = gltf_uv(m_2.metal_rough_uv_u, m_2.metal_rough_uv_v, hit_7.uv);
-    const float4 _e18 = sample_texture(m_2.metal_rough_texture, _e17);
-    const float2 _e24 = gltf_uv(m_2.occlusion_uv_u, m_2.occlusion_uv_v, hit_7.uv);
-    const float _e25 = gltf_occlusion(m_2.occlusion_texture, m_2.occlusion_strength, _e24);
-    const float2 _e31 = gltf_uv(m_2.emissive_uv_u, m_2.emissive_uv_v, hit_7.uv);
-    const float4 _e32 = sample_texture(m_2.emissive_texture, _e31);
-    float3 e_3 = (m_2.emissive * _e32.xyz);
-    const float3 _e41 = gltf_radiance(c_10, (m_2.metallic * _e18.z), (m_2.roughness * _e18.y), _e25, e_3, ray_17, hit_7);
-    return _e41;
+    const float4 _e7 = sample_texture(m_2.base_texture, hit_7.uv);
+    float3 c_10 = (m_2.base_color.xyz * _e7.xyz);
+    const float3 _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_17, hit_7);
+    return _e14;
 }
 
 float3 ZeroValuefloat3() {

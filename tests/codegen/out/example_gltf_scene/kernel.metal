@@ -172,20 +172,8 @@ struct GltfMaterial {
     uint base_texture;
     float metallic;
     float roughness;
-    uint metal_rough_texture;
-    metal::packed_float3 emissive;
-    uint emissive_texture;
-    uint occlusion_texture;
-    float occlusion_strength;
-    char _pad9[8];
-    metal::float3 base_uv_u;
-    metal::float3 base_uv_v;
-    metal::float3 metal_rough_uv_u;
-    metal::float3 metal_rough_uv_v;
-    metal::float3 emissive_uv_u;
-    metal::float3 emissive_uv_v;
-    metal::float3 occlusion_uv_u;
-    metal::float3 occlusion_uv_v;
+    char _pad4[4];
+    metal::float3 emissive;
 };
 struct type_16 {
     metal::float3 inner[1];
@@ -1732,8 +1720,8 @@ metal::float3 gltf_radiance(
     float a2_ = metal::max(metal::pow(metal::saturate(roughness), 4.0), 0.000004);
     metal::float3 f0_ = metal::mix(metal::float3(0.04), c_3, metal::float3(metal_));
     float ndv = metal::max(metal::dot(_e7, v_2), 0.0001);
-    color = metal::float3(0.0);
-    uint _e28 = light_count_query(frame);
+    color = emissive;
+    uint _e26 = light_count_query(frame);
     i_3 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_3 = true;
@@ -1745,24 +1733,24 @@ metal::float3 gltf_radiance(
             i_3 = _e107 + 1u;
         }
         loop_init_3 = false;
-        uint _e30 = i_3;
-        if (_e30 >= _e28) {
+        uint _e28 = i_3;
+        if (_e28 >= _e26) {
             break;
         }
-        uint _e32 = i_3;
-        LightSample _e35 = sample_light_query(_e32, hit_5.position, hit_5.geometric_normal, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-        float ndl = metal::max(metal::dot(_e7, _e35.dir), 0.0);
-        metal::float3 _e42 = normalize_vec3f(_e35.dir + v_2);
-        float ndh = metal::max(metal::dot(_e7, _e42), 0.0);
+        uint _e30 = i_3;
+        LightSample _e33 = sample_light_query(_e30, hit_5.position, hit_5.geometric_normal, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+        float ndl = metal::max(metal::dot(_e7, _e33.dir), 0.0);
+        metal::float3 _e40 = normalize_vec3f(_e33.dir + v_2);
+        float ndh = metal::max(metal::dot(_e7, _e40), 0.0);
         float d_5 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
         float ggx = (a2_ * INV_PI) / metal::max(d_5 * d_5, 0.00000001);
         float vis = 0.5 / metal::max((ndl * metal::sqrt(((ndv * ndv) * (1.0 - a2_)) + a2_)) + (ndv * metal::sqrt(((ndl * ndl) * (1.0 - a2_)) + a2_)), 0.00000001);
-        metal::float3 fresnel = f0_ + ((metal::float3(1.0) - f0_) * metal::float3(metal::pow(1.0 - metal::max(metal::dot(v_2, _e42), 0.0), 5.0)));
-        metal::float3 _e90 = color;
-        color = _e90 + ((_e35.radiance * metal::float3(ndl)) * (((c_3 * metal::float3(1.0 - metal_)) * metal::float3(INV_PI)) + (fresnel * metal::float3(ggx * vis))));
+        metal::float3 fresnel = f0_ + ((metal::float3(1.0) - f0_) * metal::float3(metal::pow(1.0 - metal::max(metal::dot(v_2, _e40), 0.0), 5.0)));
+        metal::float3 _e88 = color;
+        color = _e88 + (((_e33.radiance * metal::float3(ndl)) * (((c_3 * metal::float3(1.0 - metal_)) * metal::float3(INV_PI)) + (fresnel * metal::float3(ggx * vis)))) * metal::float3(occlusion));
     }
-    metal::float3 _e111 = color;
-    return emissive + (metal::float3(occlusion) * _e111);
+    metal::float3 _e110 = color;
+    return _e110;
 }
 
 metal::float3 gltf_masked_shade(
@@ -1809,38 +1797,10 @@ GltfMaterial load_GltfMaterial(
     uint _e30 = params[offset_9 + 4u];
     uint _e35 = params[offset_9 + 5u];
     uint _e41 = params[offset_9 + 6u];
-    uint _e47 = params[offset_9 + 7u];
-    uint _e52 = params[offset_9 + 8u];
-    uint _e58 = params[offset_9 + 9u];
-    uint _e64 = params[offset_9 + 10u];
-    uint _e71 = params[offset_9 + 11u];
-    uint _e76 = params[offset_9 + 12u];
-    uint _e81 = params[offset_9 + 13u];
-    uint _e87 = params[offset_9 + 16u];
-    uint _e93 = params[offset_9 + 17u];
-    uint _e99 = params[offset_9 + 18u];
-    uint _e106 = params[offset_9 + 20u];
-    uint _e112 = params[offset_9 + 21u];
-    uint _e118 = params[offset_9 + 22u];
-    uint _e125 = params[offset_9 + 24u];
-    uint _e131 = params[offset_9 + 25u];
-    uint _e137 = params[offset_9 + 26u];
-    uint _e144 = params[offset_9 + 28u];
-    uint _e150 = params[offset_9 + 29u];
-    uint _e156 = params[offset_9 + 30u];
-    uint _e163 = params[offset_9 + 32u];
-    uint _e169 = params[offset_9 + 33u];
-    uint _e175 = params[offset_9 + 34u];
-    uint _e182 = params[offset_9 + 36u];
-    uint _e188 = params[offset_9 + 37u];
-    uint _e194 = params[offset_9 + 38u];
-    uint _e201 = params[offset_9 + 40u];
-    uint _e207 = params[offset_9 + 41u];
-    uint _e213 = params[offset_9 + 42u];
-    uint _e220 = params[offset_9 + 44u];
-    uint _e226 = params[offset_9 + 45u];
-    uint _e232 = params[offset_9 + 46u];
-    return GltfMaterial {metal::float4(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17), as_type<float>(_e23)), _e30, as_type<float>(_e35), as_type<float>(_e41), _e47, metal::float3(as_type<float>(_e52), as_type<float>(_e58), as_type<float>(_e64)), _e71, _e76, as_type<float>(_e81), {}, metal::float3(as_type<float>(_e87), as_type<float>(_e93), as_type<float>(_e99)), metal::float3(as_type<float>(_e106), as_type<float>(_e112), as_type<float>(_e118)), metal::float3(as_type<float>(_e125), as_type<float>(_e131), as_type<float>(_e137)), metal::float3(as_type<float>(_e144), as_type<float>(_e150), as_type<float>(_e156)), metal::float3(as_type<float>(_e163), as_type<float>(_e169), as_type<float>(_e175)), metal::float3(as_type<float>(_e182), as_type<float>(_e188), as_type<float>(_e194)), metal::float3(as_type<float>(_e201), as_type<float>(_e207), as_type<float>(_e213)), metal::float3(as_type<float>(_e220), as_type<float>(_e226), as_type<float>(_e232))};
+    uint _e47 = params[offset_9 + 8u];
+    uint _e53 = params[offset_9 + 9u];
+    uint _e59 = params[offset_9 + 10u];
+    return GltfMaterial {metal::float4(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17), as_type<float>(_e23)), _e30, as_type<float>(_e35), as_type<float>(_e41), {}, metal::float3(as_type<float>(_e47), as_type<float>(_e53), as_type<float>(_e59))};
 }
 
 metal::float3 gltf_shade(
@@ -1861,18 +1821,10 @@ metal::float3 gltf_shade(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float2 _e9 = gltf_uv(m_2.base_uv_u, m_2.base_uv_v, hit_7.uv);
-    metal::float4 _e10 = sample_texture(m_2.base_texture, _e9, params, texels, _buffer_sizes);
-    metal::float3 c_10 = m_2.base_color.xyz * _e10.xyz;
-    metal::float2 _e17 = gltf_uv(m_2.metal_rough_uv_u, m_2.metal_rough_uv_v, hit_7.uv);
-    metal::float4 _e18 = sample_texture(m_2.metal_rough_texture, _e17, params, texels, _buffer_sizes);
-    metal::float2 _e24 = gltf_uv(m_2.occlusion_uv_u, m_2.occlusion_uv_v, hit_7.uv);
-    float _e25 = gltf_occlusion(m_2.occlusion_texture, m_2.occlusion_strength, _e24, params, texels, _buffer_sizes);
-    metal::float2 _e31 = gltf_uv(m_2.emissive_uv_u, m_2.emissive_uv_v, hit_7.uv);
-    metal::float4 _e32 = sample_texture(m_2.emissive_texture, _e31, params, texels, _buffer_sizes);
-    metal::float3 e_3 = m_2.emissive * _e32.xyz;
-    metal::float3 _e41 = gltf_radiance(c_10, m_2.metallic * _e18.z, m_2.roughness * _e18.y, _e25, e_3, ray_17, hit_7, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-    return _e41;
+    metal::float4 _e7 = sample_texture(m_2.base_texture, hit_7.uv, params, texels, _buffer_sizes);
+    metal::float3 c_10 = m_2.base_color.xyz * _e7.xyz;
+    metal::float3 _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_17, hit_7, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    return _e14;
 }
 
 metal::float3 dispatch_closest_hit(

@@ -152,19 +152,7 @@ struct GltfMaterial {
     base_texture: u32,
     metallic: f32,
     roughness: f32,
-    metal_rough_texture: u32,
     emissive: vec3<f32>,
-    emissive_texture: u32,
-    occlusion_texture: u32,
-    occlusion_strength: f32,
-    base_uv_u: vec3<f32>,
-    base_uv_v: vec3<f32>,
-    metal_rough_uv_u: vec3<f32>,
-    metal_rough_uv_v: vec3<f32>,
-    emissive_uv_u: vec3<f32>,
-    emissive_uv_v: vec3<f32>,
-    occlusion_uv_u: vec3<f32>,
-    occlusion_uv_v: vec3<f32>,
 }
 
 struct Frame {
@@ -1277,32 +1265,32 @@ fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, occlusion: f32, 
     let a2_ = max(pow(saturate(roughness), 4f), 0.000004f);
     let f0_ = mix(vec3(0.04f), c_3, vec3(metal));
     let ndv = max(dot(_e7, v_2), 0.0001f);
-    color = vec3(0f);
-    let _e28 = light_count_query();
+    color = emissive;
+    let _e26 = light_count_query();
     i_3 = 0u;
     loop {
-        let _e30 = i_3;
-        if (_e30 >= _e28) {
+        let _e28 = i_3;
+        if (_e28 >= _e26) {
             break;
         }
-        let _e32 = i_3;
-        let _e35 = sample_light_query(_e32, hit_5.position, hit_5.geometric_normal);
-        let ndl = max(dot(_e7, _e35.dir), 0f);
-        let _e42 = normalize_vec3f((_e35.dir + v_2));
-        let ndh = max(dot(_e7, _e42), 0f);
+        let _e30 = i_3;
+        let _e33 = sample_light_query(_e30, hit_5.position, hit_5.geometric_normal);
+        let ndl = max(dot(_e7, _e33.dir), 0f);
+        let _e40 = normalize_vec3f((_e33.dir + v_2));
+        let ndh = max(dot(_e7, _e40), 0f);
         let d_5 = (((ndh * ndh) * (a2_ - 1f)) + 1f);
         let ggx = ((a2_ * INV_PI) / max((d_5 * d_5), 0.00000001f));
         let vis = (0.5f / max(((ndl * sqrt((((ndv * ndv) * (1f - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1f - a2_)) + a2_)))), 0.00000001f));
-        let fresnel = (f0_ + ((vec3(1f) - f0_) * vec3(pow((1f - max(dot(v_2, _e42), 0f)), 5f))));
-        let _e90 = color;
-        color = (_e90 + ((_e35.radiance * vec3(ndl)) * (((c_3 * vec3((1f - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))));
+        let fresnel = (f0_ + ((vec3(1f) - f0_) * vec3(pow((1f - max(dot(v_2, _e40), 0f)), 5f))));
+        let _e88 = color;
+        color = (_e88 + (((_e33.radiance * vec3(ndl)) * (((c_3 * vec3((1f - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))) * vec3(occlusion)));
         continuing {
             let _e107 = i_3;
             i_3 = (_e107 + 1u);
         }
     }
-    let _e111 = color;
-    return (emissive + (vec3(occlusion) * _e111));
+    let _e110 = color;
+    return _e110;
 }
 
 fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_16: Ray, hit_6: Hit) -> vec3<f32> {
@@ -1328,53 +1316,17 @@ fn load_GltfMaterial(offset_9: u32) -> GltfMaterial {
     let _e30 = params[(offset_9 + 4u)];
     let _e35 = params[(offset_9 + 5u)];
     let _e41 = params[(offset_9 + 6u)];
-    let _e47 = params[(offset_9 + 7u)];
-    let _e52 = params[(offset_9 + 8u)];
-    let _e58 = params[(offset_9 + 9u)];
-    let _e64 = params[(offset_9 + 10u)];
-    let _e71 = params[(offset_9 + 11u)];
-    let _e76 = params[(offset_9 + 12u)];
-    let _e81 = params[(offset_9 + 13u)];
-    let _e87 = params[(offset_9 + 16u)];
-    let _e93 = params[(offset_9 + 17u)];
-    let _e99 = params[(offset_9 + 18u)];
-    let _e106 = params[(offset_9 + 20u)];
-    let _e112 = params[(offset_9 + 21u)];
-    let _e118 = params[(offset_9 + 22u)];
-    let _e125 = params[(offset_9 + 24u)];
-    let _e131 = params[(offset_9 + 25u)];
-    let _e137 = params[(offset_9 + 26u)];
-    let _e144 = params[(offset_9 + 28u)];
-    let _e150 = params[(offset_9 + 29u)];
-    let _e156 = params[(offset_9 + 30u)];
-    let _e163 = params[(offset_9 + 32u)];
-    let _e169 = params[(offset_9 + 33u)];
-    let _e175 = params[(offset_9 + 34u)];
-    let _e182 = params[(offset_9 + 36u)];
-    let _e188 = params[(offset_9 + 37u)];
-    let _e194 = params[(offset_9 + 38u)];
-    let _e201 = params[(offset_9 + 40u)];
-    let _e207 = params[(offset_9 + 41u)];
-    let _e213 = params[(offset_9 + 42u)];
-    let _e220 = params[(offset_9 + 44u)];
-    let _e226 = params[(offset_9 + 45u)];
-    let _e232 = params[(offset_9 + 46u)];
-    return GltfMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), _e47, vec3<f32>(bitcast<f32>(_e52), bitcast<f32>(_e58), bitcast<f32>(_e64)), _e71, _e76, bitcast<f32>(_e81), vec3<f32>(bitcast<f32>(_e87), bitcast<f32>(_e93), bitcast<f32>(_e99)), vec3<f32>(bitcast<f32>(_e106), bitcast<f32>(_e112), bitcast<f32>(_e118)), vec3<f32>(bitcast<f32>(_e125), bitcast<f32>(_e131), bitcast<f32>(_e137)), vec3<f32>(bitcast<f32>(_e144), bitcast<f32>(_e150), bitcast<f32>(_e156)), vec3<f32>(bitcast<f32>(_e163), bitcast<f32>(_e169), bitcast<f32>(_e175)), vec3<f32>(bitcast<f32>(_e182), bitcast<f32>(_e188), bitcast<f32>(_e194)), vec3<f32>(bitcast<f32>(_e201), bitcast<f32>(_e207), bitcast<f32>(_e213)), vec3<f32>(bitcast<f32>(_e220), bitcast<f32>(_e226), bitcast<f32>(_e232)));
+    let _e47 = params[(offset_9 + 8u)];
+    let _e53 = params[(offset_9 + 9u)];
+    let _e59 = params[(offset_9 + 10u)];
+    return GltfMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), vec3<f32>(bitcast<f32>(_e47), bitcast<f32>(_e53), bitcast<f32>(_e59)));
 }
 
 fn gltf_shade(m_2: GltfMaterial, ray_17: Ray, hit_7: Hit) -> vec3<f32> {
-    let _e9 = gltf_uv(m_2.base_uv_u, m_2.base_uv_v, hit_7.uv);
-    let _e10 = sample_texture(m_2.base_texture, _e9);
-    let c_10 = (m_2.base_color.xyz * _e10.xyz);
-    let _e17 = gltf_uv(m_2.metal_rough_uv_u, m_2.metal_rough_uv_v, hit_7.uv);
-    let _e18 = sample_texture(m_2.metal_rough_texture, _e17);
-    let _e24 = gltf_uv(m_2.occlusion_uv_u, m_2.occlusion_uv_v, hit_7.uv);
-    let _e25 = gltf_occlusion(m_2.occlusion_texture, m_2.occlusion_strength, _e24);
-    let _e31 = gltf_uv(m_2.emissive_uv_u, m_2.emissive_uv_v, hit_7.uv);
-    let _e32 = sample_texture(m_2.emissive_texture, _e31);
-    let e_3 = (m_2.emissive * _e32.xyz);
-    let _e41 = gltf_radiance(c_10, (m_2.metallic * _e18.z), (m_2.roughness * _e18.y), _e25, e_3, ray_17, hit_7);
-    return _e41;
+    let _e7 = sample_texture(m_2.base_texture, hit_7.uv);
+    let c_10 = (m_2.base_color.xyz * _e7.xyz);
+    let _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1f, m_2.emissive, ray_17, hit_7);
+    return _e14;
 }
 
 fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_18: Ray, hit_8: Hit, secondary: vec3<f32>) -> vec3<f32> {
