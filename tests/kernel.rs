@@ -431,6 +431,7 @@ fn a_model_the_compiler_cannot_read_links_every_model_type_and_says_why() {
             "GltfMaterial",
             "GltfMappedMaterial",
             "GltfMaskedMaterial",
+            "GltfMaskedMappedMaterial",
             "PointLight",
             "DirectionalLight",
             "SpotLight"

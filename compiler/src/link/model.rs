@@ -40,8 +40,10 @@ pub enum ModelPart {
     /// texture, or a `KHR_texture_transform` on any texture.
     MappedMaterial,
     /// A material with `alphaMode` `MASK` or `BLEND` (the any-hit path: a cutoff, or stochastic
-    /// coverage).
+    /// coverage) and no texture but the base colour's.
     MaskedMaterial,
+    /// A `MASK` or `BLEND` material with more textures or a transform (as `MappedMaterial`).
+    MaskedMappedMaterial,
     /// A `KHR_lights_punctual` point light.
     PointLight,
     /// A `KHR_lights_punctual` directional light.
@@ -54,10 +56,11 @@ pub enum ModelPart {
 
 impl ModelPart {
     /// Every part, in order.
-    pub const ALL: [ModelPart; 7] = [
+    pub const ALL: [ModelPart; 8] = [
         ModelPart::OpaqueMaterial,
         ModelPart::MappedMaterial,
         ModelPart::MaskedMaterial,
+        ModelPart::MaskedMappedMaterial,
         ModelPart::PointLight,
         ModelPart::DirectionalLight,
         ModelPart::SpotLight,
@@ -70,6 +73,9 @@ impl ModelPart {
             ModelPart::OpaqueMaterial => "opaque material",
             ModelPart::MappedMaterial => "opaque material with more textures",
             ModelPart::MaskedMaterial => "alpha-masked or blended material",
+            ModelPart::MaskedMappedMaterial => {
+                "alpha-masked or blended material with more textures"
+            }
             ModelPart::PointLight => "point light",
             ModelPart::DirectionalLight => "directional light",
             ModelPart::SpotLight => "spot light",
@@ -108,6 +114,11 @@ pub const MODEL_TYPES: &[ModelType] = &[
         module: "std/materials/gltf.rt",
         name: "GltfMaskedMaterial",
         part: ModelPart::MaskedMaterial,
+    },
+    ModelType {
+        module: "std/materials/gltf.rt",
+        name: "GltfMaskedMappedMaterial",
+        part: ModelPart::MaskedMappedMaterial,
     },
     ModelType {
         module: "std/lights/point.rt",
@@ -233,7 +244,7 @@ pub fn parts_of(bytes: &[u8]) -> Result<BTreeSet<ModelPart>, String> {
     Ok(parts_of_root(&root))
 }
 
-/// Whether an opaque material needs `GltfMappedMaterial`: it has a metallic-roughness, emissive
+/// Whether a material needs `GltfMappedMaterial` (or `GltfMaskedMappedMaterial`): it has a metallic-roughness, emissive
 /// or occlusion texture, or a `KHR_texture_transform` on any of its textures. The runtime's
 /// import (`GltfMaterial::is_mapped`) decides the same way.
 pub fn is_mapped(m: &json::Material) -> bool {
@@ -258,6 +269,9 @@ pub fn parts_of_root(root: &json::Root) -> BTreeSet<ModelPart> {
             .material
             .and_then(|i| root.materials.get(i.value()));
         parts.insert(match material.map(|m| m.alpha_mode) {
+            Some(Checked::Valid(
+                json::material::AlphaMode::Mask | json::material::AlphaMode::Blend,
+            )) if material.is_some_and(is_mapped) => ModelPart::MaskedMappedMaterial,
             Some(Checked::Valid(
                 json::material::AlphaMode::Mask | json::material::AlphaMode::Blend,
             )) => ModelPart::MaskedMaterial,

@@ -273,15 +273,17 @@ fn import_one(
         fields.extend(rows.iter().map(|(n, v)| (n.as_str(), v.clone())));
         let sided = ConstValue::Scalar(Scalar::U32(u32::from(m.double_sided)));
         let kind = match m.alpha_mode {
-            AlphaMode::Mask => {
+            AlphaMode::Mask | AlphaMode::Blend => {
                 fields.push(("alpha_cutoff", f32_value(m.alpha_cutoff)));
                 fields.push(("double_sided", sided));
-                "GltfMaskedMaterial"
-            }
-            AlphaMode::Blend => {
-                fields.push(("blend", ConstValue::Scalar(Scalar::U32(1))));
-                fields.push(("double_sided", sided));
-                "GltfMaskedMaterial"
+                if m.alpha_mode == AlphaMode::Blend {
+                    fields.push(("blend", ConstValue::Scalar(Scalar::U32(1))));
+                }
+                if m.is_mapped() {
+                    "GltfMaskedMappedMaterial"
+                } else {
+                    "GltfMaskedMaterial"
+                }
             }
             AlphaMode::Opaque => {
                 if !m.double_sided {

@@ -98,19 +98,7 @@ struct GltfMaskedMaterial {
     uint base_texture;
     float metallic;
     float roughness;
-    uint metal_rough_texture;
     vec3 emissive;
-    uint emissive_texture;
-    uint occlusion_texture;
-    float occlusion_strength;
-    vec3 base_uv_u;
-    vec3 base_uv_v;
-    vec3 metal_rough_uv_u;
-    vec3 metal_rough_uv_v;
-    vec3 emissive_uv_u;
-    vec3 emissive_uv_v;
-    vec3 occlusion_uv_u;
-    vec3 occlusion_uv_v;
     float alpha_cutoff;
     uint blend;
     uint double_sided;
@@ -425,10 +413,10 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
-    float t_7 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_7 >= tmin)) && (t_7 <= tmax_1));
+    float t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
+    bool hit_13 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_12 ? vec3(t_7, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_13 ? vec3(t_6, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 float point_error(vec3 origin, vec3 along) {
@@ -545,46 +533,13 @@ GltfMaskedMaterial load_GltfMaskedMaterial(uint offset_2) {
     uint _e30 = _group_0_binding_6_cs[(offset_2 + 4u)];
     uint _e35 = _group_0_binding_6_cs[(offset_2 + 5u)];
     uint _e41 = _group_0_binding_6_cs[(offset_2 + 6u)];
-    uint _e47 = _group_0_binding_6_cs[(offset_2 + 7u)];
-    uint _e52 = _group_0_binding_6_cs[(offset_2 + 8u)];
-    uint _e58 = _group_0_binding_6_cs[(offset_2 + 9u)];
-    uint _e64 = _group_0_binding_6_cs[(offset_2 + 10u)];
-    uint _e71 = _group_0_binding_6_cs[(offset_2 + 11u)];
-    uint _e76 = _group_0_binding_6_cs[(offset_2 + 12u)];
-    uint _e81 = _group_0_binding_6_cs[(offset_2 + 13u)];
-    uint _e87 = _group_0_binding_6_cs[(offset_2 + 16u)];
-    uint _e93 = _group_0_binding_6_cs[(offset_2 + 17u)];
-    uint _e99 = _group_0_binding_6_cs[(offset_2 + 18u)];
-    uint _e106 = _group_0_binding_6_cs[(offset_2 + 20u)];
-    uint _e112 = _group_0_binding_6_cs[(offset_2 + 21u)];
-    uint _e118 = _group_0_binding_6_cs[(offset_2 + 22u)];
-    uint _e125 = _group_0_binding_6_cs[(offset_2 + 24u)];
-    uint _e131 = _group_0_binding_6_cs[(offset_2 + 25u)];
-    uint _e137 = _group_0_binding_6_cs[(offset_2 + 26u)];
-    uint _e144 = _group_0_binding_6_cs[(offset_2 + 28u)];
-    uint _e150 = _group_0_binding_6_cs[(offset_2 + 29u)];
-    uint _e156 = _group_0_binding_6_cs[(offset_2 + 30u)];
-    uint _e163 = _group_0_binding_6_cs[(offset_2 + 32u)];
-    uint _e169 = _group_0_binding_6_cs[(offset_2 + 33u)];
-    uint _e175 = _group_0_binding_6_cs[(offset_2 + 34u)];
-    uint _e182 = _group_0_binding_6_cs[(offset_2 + 36u)];
-    uint _e188 = _group_0_binding_6_cs[(offset_2 + 37u)];
-    uint _e194 = _group_0_binding_6_cs[(offset_2 + 38u)];
-    uint _e201 = _group_0_binding_6_cs[(offset_2 + 40u)];
-    uint _e207 = _group_0_binding_6_cs[(offset_2 + 41u)];
-    uint _e213 = _group_0_binding_6_cs[(offset_2 + 42u)];
-    uint _e220 = _group_0_binding_6_cs[(offset_2 + 44u)];
-    uint _e226 = _group_0_binding_6_cs[(offset_2 + 45u)];
-    uint _e232 = _group_0_binding_6_cs[(offset_2 + 46u)];
-    uint _e239 = _group_0_binding_6_cs[(offset_2 + 47u)];
-    uint _e245 = _group_0_binding_6_cs[(offset_2 + 48u)];
-    uint _e250 = _group_0_binding_6_cs[(offset_2 + 49u)];
-    return GltfMaskedMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), _e47, vec3(uintBitsToFloat(_e52), uintBitsToFloat(_e58), uintBitsToFloat(_e64)), _e71, _e76, uintBitsToFloat(_e81), vec3(uintBitsToFloat(_e87), uintBitsToFloat(_e93), uintBitsToFloat(_e99)), vec3(uintBitsToFloat(_e106), uintBitsToFloat(_e112), uintBitsToFloat(_e118)), vec3(uintBitsToFloat(_e125), uintBitsToFloat(_e131), uintBitsToFloat(_e137)), vec3(uintBitsToFloat(_e144), uintBitsToFloat(_e150), uintBitsToFloat(_e156)), vec3(uintBitsToFloat(_e163), uintBitsToFloat(_e169), uintBitsToFloat(_e175)), vec3(uintBitsToFloat(_e182), uintBitsToFloat(_e188), uintBitsToFloat(_e194)), vec3(uintBitsToFloat(_e201), uintBitsToFloat(_e207), uintBitsToFloat(_e213)), vec3(uintBitsToFloat(_e220), uintBitsToFloat(_e226), uintBitsToFloat(_e232)), uintBitsToFloat(_e239), _e245, _e250);
-}
-
-vec2 gltf_uv(vec3 ru, vec3 rv, vec2 uv) {
-    vec3 p_7 = vec3(uv, 1.0);
-    return vec2(dot(ru, p_7), dot(rv, p_7));
+    uint _e47 = _group_0_binding_6_cs[(offset_2 + 8u)];
+    uint _e53 = _group_0_binding_6_cs[(offset_2 + 9u)];
+    uint _e59 = _group_0_binding_6_cs[(offset_2 + 10u)];
+    uint _e66 = _group_0_binding_6_cs[(offset_2 + 11u)];
+    uint _e72 = _group_0_binding_6_cs[(offset_2 + 12u)];
+    uint _e77 = _group_0_binding_6_cs[(offset_2 + 13u)];
+    return GltfMaskedMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), vec3(uintBitsToFloat(_e47), uintBitsToFloat(_e53), uintBitsToFloat(_e59)), uintBitsToFloat(_e66), _e72, _e77);
 }
 
 int i32_from_f32_(float x_1) {
@@ -650,22 +605,22 @@ vec4 texel_at(uint t, int x_3, int y) {
     return vec4(rg, ba);
 }
 
-vec4 sample_texture(uint t_1, vec2 uv_1) {
+vec4 sample_texture(uint t_1, vec2 uv) {
     uint _e6 = _group_0_binding_6_cs[(t_1 + 1u)];
     float w_4 = float(max(_e6, 1u));
     uint _e14 = _group_0_binding_6_cs[(t_1 + 2u)];
     float h_4 = float(max(_e14, 1u));
     uint _e22 = _group_0_binding_6_cs[(t_1 + 4u)];
     if (((_e22 & TEXTURE_NEAREST) != 0u)) {
-        vec2 q_3 = floor((uv_1 * vec2(w_4, h_4)));
+        vec2 q_3 = floor((uv * vec2(w_4, h_4)));
         int _e31 = i32_from_f32_(q_3.x);
         int _e33 = i32_from_f32_(q_3.y);
         vec4 _e34 = texel_at(t_1, _e31, _e33);
         return _e34;
     }
-    vec2 p_8 = ((uv_1 * vec2(w_4, h_4)) - vec2(0.5));
-    vec2 f_1 = floor(p_8);
-    vec2 fr = (p_8 - f_1);
+    vec2 p_7 = ((uv * vec2(w_4, h_4)) - vec2(0.5));
+    vec2 f_1 = floor(p_7);
+    vec2 fr = (p_7 - f_1);
     int _e43 = i32_from_f32_(f_1.x);
     int _e45 = i32_from_f32_(f_1.y);
     vec4 _e46 = texel_at(t_1, _e43, _e45);
@@ -714,32 +669,36 @@ float gltf_coverage(Ray ray_3, Hit hit_1) {
     return (float((_e68 >> 8u)) * (1.0 / 16777216.0));
 }
 
-bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_4, Hit hit_2) {
-    if (((m.double_sided == 0u) && !(hit_2.front_face))) {
+bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_4, Hit hit_2) {
+    if (((double_sided == 0u) && !(hit_2.front_face))) {
         return false;
     }
-    vec2 _e16 = gltf_uv(m.base_uv_u, m.base_uv_v, hit_2.uv);
-    vec4 _e17 = sample_texture(m.base_texture, _e16);
-    float alpha = (m.base_color.w * _e17.w);
-    if ((m.blend != 0u)) {
-        float _e23 = gltf_coverage(ray_4, hit_2);
-        return (_e23 < alpha);
+    if ((blend != 0u)) {
+        float _e14 = gltf_coverage(ray_4, hit_2);
+        return (_e14 < alpha);
     }
-    return (alpha >= m.alpha_cutoff);
+    return (alpha >= cutoff);
 }
 
-bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_5, Hit hit_3) {
+bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_5, Hit hit_3) {
+    vec4 _e7 = sample_texture(m.base_texture, hit_3.uv);
+    float alpha_1 = (m.base_color.w * _e7.w);
+    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_5, hit_3);
+    return _e13;
+}
+
+bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_6, Hit hit_4) {
     GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3);
-    bool _e4 = gltf_masked_any_hit(_e3, ray_5, hit_3);
+    bool _e4 = gltf_masked_any_hit(_e3, ray_6, hit_4);
     return _e4;
 }
 
-bool accept(GpuInstance inst_4, Ray ray_6, Candidate c_2) {
+bool accept(GpuInstance inst_4, Ray ray_7, Candidate c_2) {
     if (((inst_4.flags & FLAG_ANY_HIT) != 0u)) {
         float shaded = hit_error;
-        Hit _e10 = finish_hit(ray_6, c_2);
+        Hit _e10 = finish_hit(ray_7, c_2);
         hit_error = shaded;
-        bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_6, _e10);
+        bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10);
         return _e14;
     }
     return true;
@@ -771,19 +730,19 @@ float slab(vec3 lo, vec3 hi, vec3 origin_2, vec3 inv_dir, float tmin_1, float tm
     return uintBitsToFloat(_e30);
 }
 
-vec2 children_entry(GpuNode n_3, vec3 origin_3, vec3 scale_1, Ray ray_7, vec3 inv, float tmax_3) {
+vec2 children_entry(GpuNode n_3, vec3 origin_3, vec3 scale_1, Ray ray_8, vec3 inv, float tmax_3) {
     uvec3 lq = floatBitsToUint(n_3.min_);
     uvec3 rq = floatBitsToUint(n_3.max_);
     uvec3 _e10 = node_box_lo(lq);
     vec3 _e11 = node_point(origin_3, scale_1, _e10);
     uvec3 _e12 = node_box_hi(lq);
     vec3 _e13 = node_point(origin_3, scale_1, _e12);
-    float _e16 = slab(_e11, _e13, ray_7.origin, inv, ray_7.tmin, tmax_3);
+    float _e16 = slab(_e11, _e13, ray_8.origin, inv, ray_8.tmin, tmax_3);
     uvec3 _e17 = node_box_lo(rq);
     vec3 _e18 = node_point(origin_3, scale_1, _e17);
     uvec3 _e19 = node_box_hi(rq);
     vec3 _e20 = node_point(origin_3, scale_1, _e19);
-    float _e23 = slab(_e18, _e20, ray_7.origin, inv, ray_7.tmin, tmax_3);
+    float _e23 = slab(_e18, _e20, ray_8.origin, inv, ray_8.tmin, tmax_3);
     return vec2(_e16, _e23);
 }
 
@@ -795,7 +754,7 @@ uvec2 pop(uint base, uint sp) {
     return uvec2(_e14, (sp - 1u));
 }
 
-Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray_8, Candidate best_in, bool shadow) {
+Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray_9, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
     uint child = 0u;
@@ -803,8 +762,8 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    vec3 _e8 = safe_inverse(ray_8.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_8);
+    vec3 _e8 = safe_inverse(ray_9.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_9);
     uint base_2 = inst_5.blas_root;
     GpuNode header_1 = _group_0_binding_2_cs[base_2];
     vec3 origin_4 = header_1.min_;
@@ -833,7 +792,7 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
                 uint _e41 = k;
                 uint prim = ((inst_5.triangle_offset + first) + _e41);
                 float _e45 = best.t;
-                vec3 _e46 = hit_triangle(_e9, prim, ray_8.tmin, _e45);
+                vec3 _e46 = hit_triangle(_e9, prim, ray_9.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
                     Candidate c_8 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0.0));
@@ -851,7 +810,7 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
             uint _e62 = child;
             GpuNode n_7 = _group_0_binding_2_cs[(base_2 + _e62)];
             float _e68 = best.t;
-            vec2 _e69 = children_entry(n_7, origin_4, scale_2, ray_8, _e8, _e68);
+            vec2 _e69 = children_entry(n_7, origin_4, scale_2, ray_9, _e8, _e68);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
@@ -898,15 +857,15 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     return _e122;
 }
 
-Candidate intersect_object(uint slot_3, Ray ray_9, Candidate best_1, bool shadow_1) {
+Candidate intersect_object(uint slot_3, Ray ray_10, Candidate best_1, bool shadow_1) {
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     GpuInstance inst_7 = _group_0_binding_3_cs[slot_3];
-    Ray _e7 = to_object(inst_7, ray_9);
+    Ray _e7 = to_object(inst_7, ray_10);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_9, _e14, best_1, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_10, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -964,7 +923,7 @@ vec3 node_frame_hi(GpuNode header) {
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_10, bool shadow_2) {
+Candidate intersect_scene(Ray ray_11, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -972,21 +931,21 @@ Candidate intersect_scene(Ray ray_10, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_10.tmax);
+    Candidate _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = _group_0_binding_0_cs;
     if ((frame_2.instance_count == 0u)) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    vec3 _e16 = safe_inverse(ray_10.dir);
+    vec3 _e16 = safe_inverse(ray_11.dir);
     uint base_3 = frame_2.tlas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_3];
     vec3 origin_5 = header_2.min_;
     vec3 scale_3 = header_2.max_;
     vec3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_10.origin, _e16, ray_10.tmin, _e27);
+    float _e28 = slab(origin_5, _e23, ray_11.origin, _e16, ray_11.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == uintBitsToFloat(_e30))) {
         Candidate _e33 = best_2;
@@ -1001,7 +960,7 @@ Candidate intersect_scene(Ray ray_10, bool shadow_2) {
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_10, _e55, shadow_2);
+                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_11, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -1013,7 +972,7 @@ Candidate intersect_scene(Ray ray_10, bool shadow_2) {
             uint _e63 = child_1;
             GpuNode n_8 = _group_0_binding_2_cs[(base_3 + _e63)];
             float _e69 = best_2.t;
-            vec2 _e70 = children_entry(n_8, origin_5, scale_3, ray_10, _e16, _e69);
+            vec2 _e70 = children_entry(n_8, origin_5, scale_3, ray_11, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1073,8 +1032,8 @@ SkyGradient load_SkyGradient(uint offset_4) {
     return SkyGradient(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)));
 }
 
-vec3 sky_gradient(SkyGradient b_5, Ray ray_11) {
-    vec3 _e3 = normalize_vec3f(ray_11.dir);
+vec3 sky_gradient(SkyGradient b_5, Ray ray_12) {
+    vec3 _e3 = normalize_vec3f(ray_12.dir);
     float y_1 = _e3.y;
     if ((y_1 < 0.0)) {
         return mix(b_5.horizon, b_5.ground, vec3(min((-(y_1) * 4.0), 1.0)));
@@ -1082,29 +1041,24 @@ vec3 sky_gradient(SkyGradient b_5, Ray ray_11) {
     return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y_1)));
 }
 
-vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_12) {
+vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_13) {
     SkyGradient _e2 = load_SkyGradient(offset_5);
-    vec3 _e3 = sky_gradient(_e2, ray_12);
+    vec3 _e3 = sky_gradient(_e2, ray_13);
     return _e3;
 }
 
-vec3 miss(Ray ray_13) {
+vec3 miss(Ray ray_14) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_3 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_13);
+    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_14);
     return _e9;
 }
 
-float gltf_occlusion(uint t_2, float strength, vec2 uv_2) {
-    vec4 _e4 = sample_texture(t_2, uv_2);
-    return (1.0 + (strength * (_e4.x - 1.0)));
-}
-
-vec3 shading_normal(Ray ray_14, Hit hit_4) {
-    vec3 ng = faceforward(hit_4.geometric_normal, ray_14.dir, hit_4.geometric_normal);
-    return faceforward(hit_4.normal, -(ng), hit_4.normal);
+vec3 shading_normal(Ray ray_15, Hit hit_5) {
+    vec3 ng = faceforward(hit_5.geometric_normal, ray_15.dir, hit_5.geometric_normal);
+    return faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
 uint light_count_query() {
@@ -1200,17 +1154,17 @@ PointLight load_PointLight(uint offset_7) {
 }
 
 LightSample point_light(PointLight l_1, vec3 position_3, vec3 normal_3) {
-    float strength_1 = 0.0;
+    float strength = 0.0;
     vec3 to_light = (l_1.position - position_3);
     float dist_2 = length(to_light);
     vec3 dir_5 = (to_light / vec3(max(dist_2, 1e-20)));
-    strength_1 = (l_1.intensity / max((dist_2 * dist_2), 1e-20));
+    strength = (l_1.intensity / max((dist_2 * dist_2), 1e-20));
     if ((l_1.range > 0.0)) {
-        float _e19 = strength_1;
-        strength_1 = (_e19 * (1.0 - smoothstep(l_1.inner_range, l_1.range, dist_2)));
+        float _e19 = strength;
+        strength = (_e19 * (1.0 - smoothstep(l_1.inner_range, l_1.range, dist_2)));
     }
     float _e26 = shadow_query(position_3, normal_3, dir_5, dist_2);
-    float _e28 = strength_1;
+    float _e28 = strength;
     return LightSample(dir_5, dist_2, ((l_1.color * vec3(_e28)) * vec3(_e26)));
 }
 
@@ -1245,11 +1199,11 @@ LightSample sample_light_query(uint i_2, vec3 position_5, vec3 normal_5) {
     return _e27;
 }
 
-vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, float occlusion, vec3 emissive, Ray ray_15, Hit hit_5) {
+vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, float occlusion, vec3 emissive, Ray ray_16, Hit hit_6) {
     vec3 color = vec3(0.0);
     uint i_3 = 0u;
-    vec3 _e7 = shading_normal(ray_15, hit_5);
-    vec3 _e9 = normalize_vec3f(ray_15.dir);
+    vec3 _e7 = shading_normal(ray_16, hit_6);
+    vec3 _e9 = normalize_vec3f(ray_16.dir);
     vec3 v_2 = -(_e9);
     float metal = clamp(metallic, 0.0, 1.0);
     float a2_ = max(pow(clamp(roughness, 0.0, 1.0), 4.0), 4e-6);
@@ -1270,7 +1224,7 @@ vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, float occlusion, v
             break;
         }
         uint _e30 = i_3;
-        LightSample _e33 = sample_light_query(_e30, hit_5.position, hit_5.geometric_normal);
+        LightSample _e33 = sample_light_query(_e30, hit_6.position, hit_6.geometric_normal);
         float ndl = max(dot(_e7, _e33.dir), 0.0);
         vec3 _e40 = normalize_vec3f((_e33.dir + v_2));
         float ndh = max(dot(_e7, _e40), 0.0);
@@ -1285,19 +1239,11 @@ vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, float occlusion, v
     return _e110;
 }
 
-vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_16, Hit hit_6) {
-    vec2 _e9 = gltf_uv(m_1.base_uv_u, m_1.base_uv_v, hit_6.uv);
-    vec4 _e10 = sample_texture(m_1.base_texture, _e9);
-    vec3 c_9 = (m_1.base_color.xyz * _e10.xyz);
-    vec2 _e17 = gltf_uv(m_1.metal_rough_uv_u, m_1.metal_rough_uv_v, hit_6.uv);
-    vec4 _e18 = sample_texture(m_1.metal_rough_texture, _e17);
-    vec2 _e24 = gltf_uv(m_1.occlusion_uv_u, m_1.occlusion_uv_v, hit_6.uv);
-    float _e25 = gltf_occlusion(m_1.occlusion_texture, m_1.occlusion_strength, _e24);
-    vec2 _e31 = gltf_uv(m_1.emissive_uv_u, m_1.emissive_uv_v, hit_6.uv);
-    vec4 _e32 = sample_texture(m_1.emissive_texture, _e31);
-    vec3 e_2 = (m_1.emissive * _e32.xyz);
-    vec3 _e41 = gltf_radiance(c_9, (m_1.metallic * _e18.z), (m_1.roughness * _e18.y), _e25, e_2, ray_16, hit_6);
-    return _e41;
+vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_17, Hit hit_7) {
+    vec4 _e7 = sample_texture(m_1.base_texture, hit_7.uv);
+    vec3 c_9 = (m_1.base_color.xyz * _e7.xyz);
+    vec3 _e14 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_17, hit_7);
+    return _e14;
 }
 
 GltfMaterial load_GltfMaterial(uint offset_9) {
@@ -1314,23 +1260,23 @@ GltfMaterial load_GltfMaterial(uint offset_9) {
     return GltfMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), vec3(uintBitsToFloat(_e47), uintBitsToFloat(_e53), uintBitsToFloat(_e59)));
 }
 
-vec3 gltf_shade(GltfMaterial m_2, Ray ray_17, Hit hit_7) {
-    vec4 _e7 = sample_texture(m_2.base_texture, hit_7.uv);
+vec3 gltf_shade(GltfMaterial m_2, Ray ray_18, Hit hit_8) {
+    vec4 _e7 = sample_texture(m_2.base_texture, hit_8.uv);
     vec3 c_10 = (m_2.base_color.xyz * _e7.xyz);
-    vec3 _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_17, hit_7);
+    vec3 _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_18, hit_8);
     return _e14;
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_18, Hit hit_8, vec3 secondary) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_19, Hit hit_9, vec3 secondary) {
     switch(type_id_4) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10);
-            vec3 _e5 = gltf_masked_shade(_e4, ray_18, hit_8);
+            vec3 _e5 = gltf_masked_shade(_e4, ray_19, hit_9);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_10);
-            vec3 _e7 = gltf_shade(_e6, ray_18, hit_8);
+            vec3 _e7 = gltf_shade(_e6, ray_19, hit_9);
             return _e7;
         }
         default: {
@@ -1340,33 +1286,33 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_18, Hit hit_8,
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_19, Candidate c_4) {
+vec3 shade_direct(Ray ray_20, Candidate c_4) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_4.slot];
-    Hit _e6 = finish_hit(ray_19, c_4);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_20, c_4);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, vec3(0.0));
     return _e11;
 }
 
-vec3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_20, float t_3, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_21, float t_2, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_21, float t_4, vec3 radiance_1) {
+vec3 through_medium(Ray ray_22, float t_3, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_21.medium == 0u)) {
+    if ((ray_22.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_21.medium - 1u)];
+    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_22.medium - 1u)];
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_21, t_4, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_22, t_3, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_22, Hit hit_9) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_23, Hit hit_10) {
     return;
 }
 
@@ -1383,17 +1329,17 @@ vec3 spawn_origin_at(vec3 position_6, vec3 normal_6, float error_1, vec3 dir_2) 
     return _e12;
 }
 
-vec3 spawn_origin(Hit hit_10, float error_2, vec3 dir_3) {
-    vec3 _e5 = spawn_origin_at(hit_10.position, hit_10.geometric_normal, error_2, dir_3);
+vec3 spawn_origin(Hit hit_11, float error_2, vec3 dir_3) {
+    vec3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_3);
     return _e5;
 }
 
 vec3 trace(Ray camera_ray) {
     vec3 radiance_2 = vec3(0.0);
-    float t_5 = 0.0;
+    float t_4 = 0.0;
     Frame stack[4] = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_23 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_24 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
@@ -1405,8 +1351,8 @@ vec3 trace(Ray camera_ray) {
     bool waiting = false;
     bool pushed = false;
     vec3 radiance_3 = vec3(0.0);
-    float t_6 = 0.0;
-    Hit hit_11 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
+    float t_5 = 0.0;
+    Hit hit_12 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
     uint i_4 = 0u;
     uint medium = 0u;
@@ -1414,7 +1360,7 @@ vec3 trace(Ray camera_ray) {
         Candidate _e4 = intersect_scene(camera_ray, false);
         radiance_2 = vec3(0.0);
         uint _e9 = F32_INF;
-        t_5 = uintBitsToFloat(_e9);
+        t_4 = uintBitsToFloat(_e9);
         if ((_e4.slot == NO_HIT)) {
             hit_error = 0.0;
             vec3 _e17 = miss(camera_ray);
@@ -1422,16 +1368,16 @@ vec3 trace(Ray camera_ray) {
         } else {
             vec3 _e18 = shade_direct(camera_ray, _e4);
             radiance_2 = _e18;
-            t_5 = _e4.t;
+            t_4 = _e4.t;
         }
-        float _e20 = t_5;
+        float _e20 = t_4;
         vec3 _e21 = radiance_2;
         vec3 _e22 = through_medium(camera_ray, _e20, _e21);
         return _e22;
     }
     stack = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_23 = camera_ray;
+    ray_24 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1447,10 +1393,10 @@ vec3 trace(Ray camera_ray) {
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_23;
+            Ray _e67 = ray_24;
             Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_23;
+            Ray _e70 = ray_24;
             s_ray = _e70;
             s_sum = vec3(0.0);
             fresh = true;
@@ -1462,7 +1408,7 @@ vec3 trace(Ray camera_ray) {
             pushed = false;
             radiance_3 = vec3(0.0);
             uint _e83 = F32_INF;
-            t_6 = uintBitsToFloat(_e83);
+            t_5 = uintBitsToFloat(_e83);
             uint _e87 = s_c.slot;
             if ((_e87 == NO_HIT)) {
                 hit_error = 0.0;
@@ -1473,34 +1419,34 @@ vec3 trace(Ray camera_ray) {
                 uint _e95 = s_c.slot;
                 GpuInstance inst_10 = _group_0_binding_3_cs[_e95];
                 Hit _e99 = s_hit;
-                hit_11 = _e99;
+                hit_12 = _e99;
                 bool _e101 = fresh;
                 if (_e101) {
                     Ray _e102 = s_ray;
                     Candidate _e103 = s_c;
                     Hit _e104 = finish_hit(_e102, _e103);
-                    hit_11 = _e104;
+                    hit_12 = _e104;
                     float _e106 = hit_error;
                     s_error = _e106;
                 } else {
                     float _e107 = s_error;
                     hit_error = _e107;
                 }
-                float _e110 = hit_11.t;
-                t_6 = _e110;
+                float _e110 = hit_12.t;
+                t_5 = _e110;
                 bool _e111 = fresh;
                 uint _e119 = s_ray.depth;
                 uint _e123 = depth;
                 if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
                     spawn_count = 0u;
                     Ray _e131 = s_ray;
-                    Hit _e132 = hit_11;
+                    Hit _e132 = hit_12;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
                     uint _e134 = spawn_count;
                     uint n_9 = min(min(_e134, 1u), MAX_SPAWN);
                     if ((n_9 > 0u)) {
                         Ray _e141 = s_ray;
-                        Hit _e142 = hit_11;
+                        Hit _e142 = hit_12;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
                         f = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_9, 0u);
@@ -1536,7 +1482,7 @@ vec3 trace(Ray camera_ray) {
                 bool _e187 = pushed;
                 if (!(_e187)) {
                     Ray _e191 = s_ray;
-                    Hit _e192 = hit_11;
+                    Hit _e192 = hit_12;
                     vec3 _e193 = s_sum;
                     vec3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
                     radiance_3 = _e194;
@@ -1545,7 +1491,7 @@ vec3 trace(Ray camera_ray) {
             bool _e195 = pushed;
             if (!(_e195)) {
                 Ray _e197 = s_ray;
-                float _e198 = t_6;
+                float _e198 = t_5;
                 vec3 _e199 = radiance_3;
                 vec3 _e200 = through_medium(_e197, _e198, _e199);
                 value = _e200;
@@ -1577,14 +1523,14 @@ vec3 trace(Ray camera_ray) {
             uint i_5 = stack[min(top_1, 3u)].next;
             stack[min(top_1, 3u)].next = (i_5 + 1u);
             Ray parent = stack[min(top_1, 3u)].ray;
-            Hit hit_13 = stack[min(top_1, 3u)].hit;
+            Hit hit_14 = stack[min(top_1, 3u)].hit;
             vec3 dir_6 = stack[min(top_1, 3u)].dirs[min(i_5, 0u)];
             medium = parent.medium;
             float _e283 = stack[min(top_1, 3u)].error;
-            vec3 _e284 = spawn_origin(hit_13, _e283, dir_6);
+            vec3 _e284 = spawn_origin(hit_14, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_23 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_24 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -1617,7 +1563,7 @@ void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s_1 = 0u;
-    Ray ray_24 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_25 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_2 = _group_0_binding_1_cs;
     sum = vec3(0.0);
@@ -1639,13 +1585,13 @@ void render_pixel(uvec2 pixel_3) {
         uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_24 = _e23;
-        ray_24.depth = 0u;
-        ray_24.kind = RAY_CAMERA;
-        vec3 _e31 = ray_24.origin;
+        ray_25 = _e23;
+        ray_25.depth = 0u;
+        ray_25.kind = RAY_CAMERA;
+        vec3 _e31 = ray_25.origin;
         uint _e33 = medium_at(_e31, NO_HIT);
-        ray_24.medium = _e33;
-        Ray _e34 = ray_24;
+        ray_25.medium = _e33;
+        Ray _e34 = ray_25;
         vec3 _e35 = trace(_e34);
         bvec3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

@@ -120,28 +120,8 @@ struct GltfMaskedMaterial {
     uint base_texture;
     float metallic;
     float roughness;
-    uint metal_rough_texture;
+    int _pad4_0;
     float3 emissive;
-    uint emissive_texture;
-    uint occlusion_texture;
-    float occlusion_strength;
-    int _pad9_0;
-    int _pad9_1;
-    float3 base_uv_u;
-    int _pad10_0;
-    float3 base_uv_v;
-    int _pad11_0;
-    float3 metal_rough_uv_u;
-    int _pad12_0;
-    float3 metal_rough_uv_v;
-    int _pad13_0;
-    float3 emissive_uv_u;
-    int _pad14_0;
-    float3 emissive_uv_v;
-    int _pad15_0;
-    float3 occlusion_uv_u;
-    int _pad16_0;
-    float3 occlusion_uv_v;
     float alpha_cutoff;
     uint blend;
     uint double_sided;
@@ -452,16 +432,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_2) * aspect)).xxx)) - (up * ((ndc.y * h_2)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_25 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_25;
+    const Ray ray_26 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_26;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
-    const Ray ray_26 = _e4;
-    return ray_26;
+    const Ray ray_27 = _e4;
+    return ray_27;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -490,8 +470,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_27 = _e25;
-    return ray_27;
+    const Ray ray_28 = _e25;
+    return ray_28;
 }
 
 float3 safe_inverse(float3 d)
@@ -551,10 +531,10 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
-    float t_7 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_6[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_7 >= tmin)) && (t_7 <= tmax_1));
+    float t_6 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_6[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    bool hit_13 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_12 ? float3(t_7, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_13 ? float3(t_6, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 float point_error(float3 origin, float3 along)
@@ -713,32 +693,20 @@ Hit finish_hit(Ray ray_2, Candidate c)
     float3 _e147 = hit.geometric_normal;
     hit.front_face = (dot(ray_2.dir, _e147) < 0.0);
     Hit _e151 = hit;
-    const Hit hit_13 = _e151;
-    return hit_13;
+    const Hit hit_14 = _e151;
+    return hit_14;
 }
 
-GltfMaskedMaterial ConstructGltfMaskedMaterial(float4 arg0, uint arg1, float arg2, float arg3, uint arg4, float3 arg5, uint arg6, uint arg7, float arg8, float3 arg9, float3 arg10, float3 arg11, float3 arg12, float3 arg13, float3 arg14, float3 arg15, float3 arg16, float arg17, uint arg18, uint arg19) {
+GltfMaskedMaterial ConstructGltfMaskedMaterial(float4 arg0, uint arg1, float arg2, float arg3, float3 arg4, float arg5, uint arg6, uint arg7) {
     GltfMaskedMaterial ret = (GltfMaskedMaterial)0;
     ret.base_color = arg0;
     ret.base_texture = arg1;
     ret.metallic = arg2;
     ret.roughness = arg3;
-    ret.metal_rough_texture = arg4;
-    ret.emissive = arg5;
-    ret.emissive_texture = arg6;
-    ret.occlusion_texture = arg7;
-    ret.occlusion_strength = arg8;
-    ret.base_uv_u = arg9;
-    ret.base_uv_v = arg10;
-    ret.metal_rough_uv_u = arg11;
-    ret.metal_rough_uv_v = arg12;
-    ret.emissive_uv_u = arg13;
-    ret.emissive_uv_v = arg14;
-    ret.occlusion_uv_u = arg15;
-    ret.occlusion_uv_v = arg16;
-    ret.alpha_cutoff = arg17;
-    ret.blend = arg18;
-    ret.double_sided = arg19;
+    ret.emissive = arg4;
+    ret.alpha_cutoff = arg5;
+    ret.blend = arg6;
+    ret.double_sided = arg7;
     return ret;
 }
 
@@ -751,48 +719,14 @@ GltfMaskedMaterial load_GltfMaskedMaterial(uint offset_2)
     uint _e30 = asuint(params.Load((offset_2 + 4u)*4));
     uint _e35 = asuint(params.Load((offset_2 + 5u)*4));
     uint _e41 = asuint(params.Load((offset_2 + 6u)*4));
-    uint _e47 = asuint(params.Load((offset_2 + 7u)*4));
-    uint _e52 = asuint(params.Load((offset_2 + 8u)*4));
-    uint _e58 = asuint(params.Load((offset_2 + 9u)*4));
-    uint _e64 = asuint(params.Load((offset_2 + 10u)*4));
-    uint _e71 = asuint(params.Load((offset_2 + 11u)*4));
-    uint _e76 = asuint(params.Load((offset_2 + 12u)*4));
-    uint _e81 = asuint(params.Load((offset_2 + 13u)*4));
-    uint _e87 = asuint(params.Load((offset_2 + 16u)*4));
-    uint _e93 = asuint(params.Load((offset_2 + 17u)*4));
-    uint _e99 = asuint(params.Load((offset_2 + 18u)*4));
-    uint _e106 = asuint(params.Load((offset_2 + 20u)*4));
-    uint _e112 = asuint(params.Load((offset_2 + 21u)*4));
-    uint _e118 = asuint(params.Load((offset_2 + 22u)*4));
-    uint _e125 = asuint(params.Load((offset_2 + 24u)*4));
-    uint _e131 = asuint(params.Load((offset_2 + 25u)*4));
-    uint _e137 = asuint(params.Load((offset_2 + 26u)*4));
-    uint _e144 = asuint(params.Load((offset_2 + 28u)*4));
-    uint _e150 = asuint(params.Load((offset_2 + 29u)*4));
-    uint _e156 = asuint(params.Load((offset_2 + 30u)*4));
-    uint _e163 = asuint(params.Load((offset_2 + 32u)*4));
-    uint _e169 = asuint(params.Load((offset_2 + 33u)*4));
-    uint _e175 = asuint(params.Load((offset_2 + 34u)*4));
-    uint _e182 = asuint(params.Load((offset_2 + 36u)*4));
-    uint _e188 = asuint(params.Load((offset_2 + 37u)*4));
-    uint _e194 = asuint(params.Load((offset_2 + 38u)*4));
-    uint _e201 = asuint(params.Load((offset_2 + 40u)*4));
-    uint _e207 = asuint(params.Load((offset_2 + 41u)*4));
-    uint _e213 = asuint(params.Load((offset_2 + 42u)*4));
-    uint _e220 = asuint(params.Load((offset_2 + 44u)*4));
-    uint _e226 = asuint(params.Load((offset_2 + 45u)*4));
-    uint _e232 = asuint(params.Load((offset_2 + 46u)*4));
-    uint _e239 = asuint(params.Load((offset_2 + 47u)*4));
-    uint _e245 = asuint(params.Load((offset_2 + 48u)*4));
-    uint _e250 = asuint(params.Load((offset_2 + 49u)*4));
-    const GltfMaskedMaterial gltfmaskedmaterial = ConstructGltfMaskedMaterial(float4(asfloat(_e5), asfloat(_e11), asfloat(_e17), asfloat(_e23)), _e30, asfloat(_e35), asfloat(_e41), _e47, float3(asfloat(_e52), asfloat(_e58), asfloat(_e64)), _e71, _e76, asfloat(_e81), float3(asfloat(_e87), asfloat(_e93), asfloat(_e99)), float3(asfloat(_e106), asfloat(_e112), asfloat(_e118)), float3(asfloat(_e125), asfloat(_e131), asfloat(_e137)), float3(asfloat(_e144), asfloat(_e150), asfloat(_e156)), float3(asfloat(_e163), asfloat(_e169), asfloat(_e175)), float3(asfloat(_e182), asfloat(_e188), asfloat(_e194)), float3(asfloat(_e201), asfloat(_e207), asfloat(_e213)), float3(asfloat(_e220), asfloat(_e226), asfloat(_e232)), asfloat(_e239), _e245, _e250);
+    uint _e47 = asuint(params.Load((offset_2 + 8u)*4));
+    uint _e53 = asuint(params.Load((offset_2 + 9u)*4));
+    uint _e59 = asuint(params.Load((offset_2 + 10u)*4));
+    uint _e66 = asuint(params.Load((offset_2 + 11u)*4));
+    uint _e72 = asuint(params.Load((offset_2 + 12u)*4));
+    uint _e77 = asuint(params.Load((offset_2 + 13u)*4));
+    const GltfMaskedMaterial gltfmaskedmaterial = ConstructGltfMaskedMaterial(float4(asfloat(_e5), asfloat(_e11), asfloat(_e17), asfloat(_e23)), _e30, asfloat(_e35), asfloat(_e41), float3(asfloat(_e47), asfloat(_e53), asfloat(_e59)), asfloat(_e66), _e72, _e77);
     return gltfmaskedmaterial;
-}
-
-float2 gltf_uv(float3 ru, float3 rv, float2 uv)
-{
-    float3 p_7 = float3(uv, 1.0);
-    return float2(dot(ru, p_7), dot(rv, p_7));
 }
 
 int naga_f2i32(float value) {
@@ -871,7 +805,7 @@ float4 texel_at(uint t, int x_3, int y)
     return float4(rg, ba);
 }
 
-float4 sample_texture(uint t_1, float2 uv_1)
+float4 sample_texture(uint t_1, float2 uv)
 {
     uint _e6 = asuint(params.Load((t_1 + 1u)*4));
     float w_4 = float(max(_e6, 1u));
@@ -879,15 +813,15 @@ float4 sample_texture(uint t_1, float2 uv_1)
     float h_4 = float(max(_e14, 1u));
     uint _e22 = asuint(params.Load((t_1 + 4u)*4));
     if (((_e22 & TEXTURE_NEAREST) != 0u)) {
-        float2 q_3 = floor((uv_1 * float2(w_4, h_4)));
+        float2 q_3 = floor((uv * float2(w_4, h_4)));
         const int _e31 = i32_from_f32_(q_3.x);
         const int _e33 = i32_from_f32_(q_3.y);
         const float4 _e34 = texel_at(t_1, _e31, _e33);
         return _e34;
     }
-    float2 p_8 = ((uv_1 * float2(w_4, h_4)) - (0.5).xx);
-    float2 f_1 = floor(p_8);
-    float2 fr = (p_8 - f_1);
+    float2 p_7 = ((uv * float2(w_4, h_4)) - (0.5).xx);
+    float2 f_1 = floor(p_7);
+    float2 fr = (p_7 - f_1);
     const int _e43 = i32_from_f32_(f_1.x);
     const int _e45 = i32_from_f32_(f_1.y);
     const float4 _e46 = texel_at(t_1, _e43, _e45);
@@ -942,35 +876,40 @@ float gltf_coverage(Ray ray_3, Hit hit_1)
     return (float((_e68 >> 8u)) * (1.0 / 16777216.0));
 }
 
-bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_4, Hit hit_2)
+bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_4, Hit hit_2)
 {
-    if (((m.double_sided == 0u) && !(hit_2.front_face))) {
+    if (((double_sided == 0u) && !(hit_2.front_face))) {
         return false;
     }
-    const float2 _e16 = gltf_uv(m.base_uv_u, m.base_uv_v, hit_2.uv);
-    const float4 _e17 = sample_texture(m.base_texture, _e16);
-    float alpha = (m.base_color.w * _e17.w);
-    if ((m.blend != 0u)) {
-        const float _e23 = gltf_coverage(ray_4, hit_2);
-        return (_e23 < alpha);
+    if ((blend != 0u)) {
+        const float _e14 = gltf_coverage(ray_4, hit_2);
+        return (_e14 < alpha);
     }
-    return (alpha >= m.alpha_cutoff);
+    return (alpha >= cutoff);
 }
 
-bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_5, Hit hit_3)
+bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_5, Hit hit_3)
+{
+    const float4 _e7 = sample_texture(m.base_texture, hit_3.uv);
+    float alpha_1 = (m.base_color.w * _e7.w);
+    const bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_5, hit_3);
+    return _e13;
+}
+
+bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_6, Hit hit_4)
 {
     const GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3);
-    const bool _e4 = gltf_masked_any_hit(_e3, ray_5, hit_3);
+    const bool _e4 = gltf_masked_any_hit(_e3, ray_6, hit_4);
     return _e4;
 }
 
-bool accept(GpuInstance inst_4, Ray ray_6, Candidate c_2)
+bool accept(GpuInstance inst_4, Ray ray_7, Candidate c_2)
 {
     if (((inst_4.flags & FLAG_ANY_HIT) != 0u)) {
         float shaded = hit_error;
-        const Hit _e10 = finish_hit(ray_6, c_2);
+        const Hit _e10 = finish_hit(ray_7, c_2);
         hit_error = shaded;
-        const bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_6, _e10);
+        const bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10);
         return _e14;
     }
     return true;
@@ -1006,7 +945,7 @@ float slab(float3 lo, float3 hi, float3 origin_2, float3 inv_dir, float tmin_1, 
     return asfloat(_e30);
 }
 
-float2 children_entry(GpuNode n_3, float3 origin_3, float3 scale_1, Ray ray_7, float3 inv, float tmax_3)
+float2 children_entry(GpuNode n_3, float3 origin_3, float3 scale_1, Ray ray_8, float3 inv, float tmax_3)
 {
     uint3 lq = asuint(n_3.min_);
     uint3 rq = asuint(n_3.max_);
@@ -1014,12 +953,12 @@ float2 children_entry(GpuNode n_3, float3 origin_3, float3 scale_1, Ray ray_7, f
     const float3 _e11 = node_point(origin_3, scale_1, _e10);
     const uint3 _e12 = node_box_hi(lq);
     const float3 _e13 = node_point(origin_3, scale_1, _e12);
-    const float _e16 = slab(_e11, _e13, ray_7.origin, inv, ray_7.tmin, tmax_3);
+    const float _e16 = slab(_e11, _e13, ray_8.origin, inv, ray_8.tmin, tmax_3);
     const uint3 _e17 = node_box_lo(rq);
     const float3 _e18 = node_point(origin_3, scale_1, _e17);
     const uint3 _e19 = node_box_hi(rq);
     const float3 _e20 = node_point(origin_3, scale_1, _e19);
-    const float _e23 = slab(_e18, _e20, ray_7.origin, inv, ray_7.tmin, tmax_3);
+    const float _e23 = slab(_e18, _e20, ray_8.origin, inv, ray_8.tmin, tmax_3);
     return float2(_e16, _e23);
 }
 
@@ -1041,7 +980,7 @@ GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
     return ret;
 }
 
-Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray_8, Candidate best_in, bool shadow)
+Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray_9, Candidate best_in, bool shadow)
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
@@ -1051,8 +990,8 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     uint far = (uint)0;
 
     best = best_in;
-    const float3 _e8 = safe_inverse(ray_8.dir);
-    const TriangleRay _e9 = prepare_triangle_ray(ray_8);
+    const float3 _e8 = safe_inverse(ray_9.dir);
+    const TriangleRay _e9 = prepare_triangle_ray(ray_9);
     uint base_2 = inst_5.blas_root;
     GpuNode header_1 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
     float3 origin_4 = header_1.min_;
@@ -1087,7 +1026,7 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
                 uint _e41 = k;
                 uint prim = ((inst_5.triangle_offset + first) + _e41);
                 float _e45 = best.t;
-                const float3 _e46 = hit_triangle(_e9, prim, ray_8.tmin, _e45);
+                const float3 _e46 = hit_triangle(_e9, prim, ray_9.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < asfloat(_e49))) {
                     Candidate c_8 = ConstructCandidate(_e46.x, slot_2, prim, _e46.yz, (0.0).xxx);
@@ -1106,7 +1045,7 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
             uint _e62 = child;
             GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e62)*32+0)), asuint(nodes.Load((base_2 + _e62)*32+12)), asfloat(nodes.Load3((base_2 + _e62)*32+16)), asuint(nodes.Load((base_2 + _e62)*32+28)));
             float _e68 = best.t;
-            const float2 _e69 = children_entry(n_7, origin_4, scale_2, ray_8, _e8, _e68);
+            const float2 _e69 = children_entry(n_7, origin_4, scale_2, ray_9, _e8, _e68);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
@@ -1154,17 +1093,17 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     return candidate_2;
 }
 
-Candidate intersect_object(uint slot_3, Ray ray_9, Candidate best_1, bool shadow_1)
+Candidate intersect_object(uint slot_3, Ray ray_10, Candidate best_1, bool shadow_1)
 {
     Ray r_2 = (Ray)0;
 
     GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4(slot_3*128+0)), asfloat(instances.Load4(slot_3*128+16)), asfloat(instances.Load4(slot_3*128+32)), asfloat(instances.Load4(slot_3*128+48)), asfloat(instances.Load4(slot_3*128+64)), asfloat(instances.Load4(slot_3*128+80)), asuint(instances.Load(slot_3*128+96)), asuint(instances.Load(slot_3*128+100)), asuint(instances.Load(slot_3*128+104)), asuint(instances.Load(slot_3*128+108)), asuint(instances.Load(slot_3*128+112)), asuint(instances.Load(slot_3*128+116)), asuint(instances.Load(slot_3*128+120)), asuint(instances.Load(slot_3*128+124)));
-    const Ray _e7 = to_object(inst_7, ray_9);
+    const Ray _e7 = to_object(inst_7, ray_10);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        const Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_9, _e14, best_1, shadow_1);
+        const Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_10, _e14, best_1, shadow_1);
         const Candidate candidate_3 = _e15;
         return candidate_3;
     }
@@ -1230,7 +1169,7 @@ float3 node_frame_hi(GpuNode header)
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_10, bool shadow_2)
+Candidate intersect_scene(Ray ray_11, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -1240,7 +1179,7 @@ Candidate intersect_scene(Ray ray_10, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_10.tmax);
+    const Candidate _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = frame;
     if ((frame_2.instance_count == 0u)) {
@@ -1248,14 +1187,14 @@ Candidate intersect_scene(Ray ray_10, bool shadow_2)
         const Candidate candidate_5 = _e14;
         return candidate_5;
     }
-    const float3 _e16 = safe_inverse(ray_10.dir);
+    const float3 _e16 = safe_inverse(ray_11.dir);
     uint base_3 = frame_2.tlas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_3*32+0)), asuint(nodes.Load(base_3*32+12)), asfloat(nodes.Load3(base_3*32+16)), asuint(nodes.Load(base_3*32+28)));
     float3 origin_5 = header_2.min_;
     float3 scale_3 = header_2.max_;
     const float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    const float _e28 = slab(origin_5, _e23, ray_10.origin, _e16, ray_10.tmin, _e27);
+    const float _e28 = slab(origin_5, _e23, ray_11.origin, _e16, ray_11.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == asfloat(_e30))) {
         Candidate _e33 = best_2;
@@ -1274,7 +1213,7 @@ Candidate intersect_scene(Ray ray_10, bool shadow_2)
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_10, _e55, shadow_2);
+                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_11, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -1287,7 +1226,7 @@ Candidate intersect_scene(Ray ray_10, bool shadow_2)
             uint _e63 = child_1;
             GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_3 + _e63)*32+0)), asuint(nodes.Load((base_3 + _e63)*32+12)), asfloat(nodes.Load3((base_3 + _e63)*32+16)), asuint(nodes.Load((base_3 + _e63)*32+28)));
             float _e69 = best_2.t;
-            const float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_10, _e16, _e69);
+            const float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_11, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1358,9 +1297,9 @@ SkyGradient load_SkyGradient(uint offset_4)
     return skygradient;
 }
 
-float3 sky_gradient(SkyGradient b_5, Ray ray_11)
+float3 sky_gradient(SkyGradient b_5, Ray ray_12)
 {
-    const float3 _e3 = normalize_vec3f(ray_11.dir);
+    const float3 _e3 = normalize_vec3f(ray_12.dir);
     float y_1 = _e3.y;
     if ((y_1 < 0.0)) {
         return lerp(b_5.horizon, b_5.ground, (min((-(y_1) * 4.0), 1.0)).xxx);
@@ -1368,33 +1307,27 @@ float3 sky_gradient(SkyGradient b_5, Ray ray_11)
     return lerp(b_5.horizon, b_5.zenith, (sqrt(y_1)).xxx);
 }
 
-float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_12)
+float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_13)
 {
     const SkyGradient _e2 = load_SkyGradient(offset_5);
-    const float3 _e3 = sky_gradient(_e2, ray_12);
+    const float3 _e3 = sky_gradient(_e2, ray_13);
     return _e3;
 }
 
-float3 miss(Ray ray_13)
+float3 miss(Ray ray_14)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
     FrameUniforms frame_3 = frame;
-    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_13);
+    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_14);
     return _e9;
 }
 
-float gltf_occlusion(uint t_2, float strength, float2 uv_2)
+float3 shading_normal(Ray ray_15, Hit hit_5)
 {
-    const float4 _e4 = sample_texture(t_2, uv_2);
-    return (1.0 + (strength * (_e4.x - 1.0)));
-}
-
-float3 shading_normal(Ray ray_14, Hit hit_4)
-{
-    float3 ng = faceforward(hit_4.geometric_normal, ray_14.dir, hit_4.geometric_normal);
-    return faceforward(hit_4.normal, -(ng), hit_4.normal);
+    float3 ng = faceforward(hit_5.geometric_normal, ray_15.dir, hit_5.geometric_normal);
+    return faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
 uint light_count_query()
@@ -1469,8 +1402,8 @@ Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_28 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_28;
+    const Ray ray_29 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_29;
 }
 
 float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
@@ -1531,18 +1464,18 @@ PointLight load_PointLight(uint offset_7)
 
 LightSample point_light(PointLight l_1, float3 position_3, float3 normal_3)
 {
-    float strength_1 = (float)0;
+    float strength = (float)0;
 
     float3 to_light = (l_1.position - position_3);
     float dist_2 = length(to_light);
     float3 dir_5 = (to_light / (max(dist_2, 1e-20)).xxx);
-    strength_1 = (l_1.intensity / max((dist_2 * dist_2), 1e-20));
+    strength = (l_1.intensity / max((dist_2 * dist_2), 1e-20));
     if ((l_1.range > 0.0)) {
-        float _e19 = strength_1;
-        strength_1 = (_e19 * (1.0 - smoothstep(l_1.inner_range, l_1.range, dist_2)));
+        float _e19 = strength;
+        strength = (_e19 * (1.0 - smoothstep(l_1.inner_range, l_1.range, dist_2)));
     }
     const float _e26 = shadow_query(position_3, normal_3, dir_5, dist_2);
-    float _e28 = strength_1;
+    float _e28 = strength;
     const LightSample lightsample_2 = ConstructLightSample(dir_5, dist_2, ((l_1.color * (_e28).xxx) * (_e26).xxx));
     return lightsample_2;
 }
@@ -1589,13 +1522,13 @@ LightSample sample_light_query(uint i_2, float3 position_5, float3 normal_5)
     return lightsample_7;
 }
 
-float3 gltf_radiance(float3 c_3, float metallic, float roughness, float occlusion, float3 emissive, Ray ray_15, Hit hit_5)
+float3 gltf_radiance(float3 c_3, float metallic, float roughness, float occlusion, float3 emissive, Ray ray_16, Hit hit_6)
 {
     float3 color = (float3)0;
     uint i_3 = (uint)0;
 
-    const float3 _e7 = shading_normal(ray_15, hit_5);
-    const float3 _e9 = normalize_vec3f(ray_15.dir);
+    const float3 _e7 = shading_normal(ray_16, hit_6);
+    const float3 _e9 = normalize_vec3f(ray_16.dir);
     float3 v_2 = -(_e9);
     float metal = saturate(metallic);
     float a2_ = max(pow(saturate(roughness), 4.0), 4e-6);
@@ -1619,7 +1552,7 @@ float3 gltf_radiance(float3 c_3, float metallic, float roughness, float occlusio
             break;
         }
         uint _e30 = i_3;
-        const LightSample _e33 = sample_light_query(_e30, hit_5.position, hit_5.geometric_normal);
+        const LightSample _e33 = sample_light_query(_e30, hit_6.position, hit_6.geometric_normal);
         float ndl = max(dot(_e7, _e33.dir), 0.0);
         const float3 _e40 = normalize_vec3f((_e33.dir + v_2));
         float ndh = max(dot(_e7, _e40), 0.0);
@@ -1634,20 +1567,12 @@ float3 gltf_radiance(float3 c_3, float metallic, float roughness, float occlusio
     return _e110;
 }
 
-float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_16, Hit hit_6)
+float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_17, Hit hit_7)
 {
-    const float2 _e9 = gltf_uv(m_1.base_uv_u, m_1.base_uv_v, hit_6.uv);
-    const float4 _e10 = sample_texture(m_1.base_texture, _e9);
-    float3 c_9 = (m_1.base_color.xyz * _e10.xyz);
-    const float2 _e17 = gltf_uv(m_1.metal_rough_uv_u, m_1.metal_rough_uv_v, hit_6.uv);
-    const float4 _e18 = sample_texture(m_1.metal_rough_texture, _e17);
-    const float2 _e24 = gltf_uv(m_1.occlusion_uv_u, m_1.occlusion_uv_v, hit_6.uv);
-    const float _e25 = gltf_occlusion(m_1.occlusion_texture, m_1.occlusion_strength, _e24);
-    const float2 _e31 = gltf_uv(m_1.emissive_uv_u, m_1.emissive_uv_v, hit_6.uv);
-    const float4 _e32 = sample_texture(m_1.emissive_texture, _e31);
-    float3 e_2 = (m_1.emissive * _e32.xyz);
-    const float3 _e41 = gltf_radiance(c_9, (m_1.metallic * _e18.z), (m_1.roughness * _e18.y), _e25, e_2, ray_16, hit_6);
-    return _e41;
+    const float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv);
+    float3 c_9 = (m_1.base_color.xyz * _e7.xyz);
+    const float3 _e14 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_17, hit_7);
+    return _e14;
 }
 
 GltfMaterial ConstructGltfMaterial(float4 arg0, uint arg1, float arg2, float arg3, float3 arg4) {
@@ -1676,11 +1601,11 @@ GltfMaterial load_GltfMaterial(uint offset_9)
     return gltfmaterial;
 }
 
-float3 gltf_shade(GltfMaterial m_2, Ray ray_17, Hit hit_7)
+float3 gltf_shade(GltfMaterial m_2, Ray ray_18, Hit hit_8)
 {
-    const float4 _e7 = sample_texture(m_2.base_texture, hit_7.uv);
+    const float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv);
     float3 c_10 = (m_2.base_color.xyz * _e7.xyz);
-    const float3 _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_17, hit_7);
+    const float3 _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_18, hit_8);
     return _e14;
 }
 
@@ -1688,17 +1613,17 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_18, Hit hit_8, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_19, Hit hit_9, float3 secondary)
 {
     switch(type_id_4) {
         case 0u: {
             const GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10);
-            const float3 _e5 = gltf_masked_shade(_e4, ray_18, hit_8);
+            const float3 _e5 = gltf_masked_shade(_e4, ray_19, hit_9);
             return _e5;
         }
         case 1u: {
             const GltfMaterial _e6 = load_GltfMaterial(offset_10);
-            const float3 _e7 = gltf_shade(_e6, ray_18, hit_8);
+            const float3 _e7 = gltf_shade(_e6, ray_19, hit_9);
             return _e7;
         }
         default: {
@@ -1708,36 +1633,36 @@ float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_18, Hit hit_
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_19, Candidate c_4)
+float3 shade_direct(Ray ray_20, Candidate c_4)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_4.slot*128+0)), asfloat(instances.Load4(c_4.slot*128+16)), asfloat(instances.Load4(c_4.slot*128+32)), asfloat(instances.Load4(c_4.slot*128+48)), asfloat(instances.Load4(c_4.slot*128+64)), asfloat(instances.Load4(c_4.slot*128+80)), asuint(instances.Load(c_4.slot*128+96)), asuint(instances.Load(c_4.slot*128+100)), asuint(instances.Load(c_4.slot*128+104)), asuint(instances.Load(c_4.slot*128+108)), asuint(instances.Load(c_4.slot*128+112)), asuint(instances.Load(c_4.slot*128+116)), asuint(instances.Load(c_4.slot*128+120)), asuint(instances.Load(c_4.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_19, c_4);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_20, c_4);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, (0.0).xxx);
     return _e11;
 }
 
-float3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_20, float t_3, float3 radiance)
+float3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_21, float t_2, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_21, float t_4, float3 radiance_1)
+float3 through_medium(Ray ray_22, float t_3, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_21.medium == 0u)) {
+    if ((ray_22.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_21.medium - 1u)*128+0)), asfloat(instances.Load4((ray_21.medium - 1u)*128+16)), asfloat(instances.Load4((ray_21.medium - 1u)*128+32)), asfloat(instances.Load4((ray_21.medium - 1u)*128+48)), asfloat(instances.Load4((ray_21.medium - 1u)*128+64)), asfloat(instances.Load4((ray_21.medium - 1u)*128+80)), asuint(instances.Load((ray_21.medium - 1u)*128+96)), asuint(instances.Load((ray_21.medium - 1u)*128+100)), asuint(instances.Load((ray_21.medium - 1u)*128+104)), asuint(instances.Load((ray_21.medium - 1u)*128+108)), asuint(instances.Load((ray_21.medium - 1u)*128+112)), asuint(instances.Load((ray_21.medium - 1u)*128+116)), asuint(instances.Load((ray_21.medium - 1u)*128+120)), asuint(instances.Load((ray_21.medium - 1u)*128+124)));
+    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_22.medium - 1u)*128+0)), asfloat(instances.Load4((ray_22.medium - 1u)*128+16)), asfloat(instances.Load4((ray_22.medium - 1u)*128+32)), asfloat(instances.Load4((ray_22.medium - 1u)*128+48)), asfloat(instances.Load4((ray_22.medium - 1u)*128+64)), asfloat(instances.Load4((ray_22.medium - 1u)*128+80)), asuint(instances.Load((ray_22.medium - 1u)*128+96)), asuint(instances.Load((ray_22.medium - 1u)*128+100)), asuint(instances.Load((ray_22.medium - 1u)*128+104)), asuint(instances.Load((ray_22.medium - 1u)*128+108)), asuint(instances.Load((ray_22.medium - 1u)*128+112)), asuint(instances.Load((ray_22.medium - 1u)*128+116)), asuint(instances.Load((ray_22.medium - 1u)*128+120)), asuint(instances.Load((ray_22.medium - 1u)*128+124)));
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_21, t_4, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_22, t_3, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_22, Hit hit_9)
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_23, Hit hit_10)
 {
     return;
 }
@@ -1757,9 +1682,9 @@ float3 spawn_origin_at(float3 position_6, float3 normal_6, float error_1, float3
     return _e12;
 }
 
-float3 spawn_origin(Hit hit_10, float error_2, float3 dir_3)
+float3 spawn_origin(Hit hit_11, float error_2, float3 dir_3)
 {
-    const float3 _e5 = spawn_origin_at(hit_10.position, hit_10.geometric_normal, error_2, dir_3);
+    const float3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_3);
     return _e5;
 }
 
@@ -1790,10 +1715,10 @@ ret_ZeroValuearray1_float3_ ZeroValuearray1_float3_() {
 float3 trace(Ray camera_ray)
 {
     float3 radiance_2 = (float3)0;
-    float t_5 = (float)0;
+    float t_4 = (float)0;
     Frame stack[4] = (Frame[4])0;
     uint depth = (uint)0;
-    Ray ray_23 = (Ray)0;
+    Ray ray_24 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     Ray s_ray = (Ray)0;
@@ -1805,8 +1730,8 @@ float3 trace(Ray camera_ray)
     bool waiting = (bool)0;
     bool pushed = (bool)0;
     float3 radiance_3 = (float3)0;
-    float t_6 = (float)0;
-    Hit hit_11 = (Hit)0;
+    float t_5 = (float)0;
+    Hit hit_12 = (Hit)0;
     Frame f = (Frame)0;
     uint i_4 = (uint)0;
     uint medium = (uint)0;
@@ -1815,7 +1740,7 @@ float3 trace(Ray camera_ray)
         const Candidate _e4 = intersect_scene(camera_ray, false);
         radiance_2 = (0.0).xxx;
         uint _e9 = F32_INF;
-        t_5 = asfloat(_e9);
+        t_4 = asfloat(_e9);
         if ((_e4.slot == NO_HIT)) {
             hit_error = 0.0;
             const float3 _e17 = miss(camera_ray);
@@ -1823,16 +1748,16 @@ float3 trace(Ray camera_ray)
         } else {
             const float3 _e18 = shade_direct(camera_ray, _e4);
             radiance_2 = _e18;
-            t_5 = _e4.t;
+            t_4 = _e4.t;
         }
-        float _e20 = t_5;
+        float _e20 = t_4;
         float3 _e21 = radiance_2;
         const float3 _e22 = through_medium(camera_ray, _e20, _e21);
         return _e22;
     }
     stack = ZeroValuearray4_Frame_();
     depth = 0u;
-    ray_23 = camera_ray;
+    ray_24 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     s_ray = camera_ray;
@@ -1851,10 +1776,10 @@ float3 trace(Ray camera_ray)
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_23;
+            Ray _e67 = ray_24;
             const Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_23;
+            Ray _e70 = ray_24;
             s_ray = _e70;
             s_sum = (0.0).xxx;
             fresh = true;
@@ -1866,7 +1791,7 @@ float3 trace(Ray camera_ray)
             pushed = false;
             radiance_3 = (0.0).xxx;
             uint _e83 = F32_INF;
-            t_6 = asfloat(_e83);
+            t_5 = asfloat(_e83);
             uint _e87 = s_c.slot;
             if ((_e87 == NO_HIT)) {
                 hit_error = 0.0;
@@ -1877,34 +1802,34 @@ float3 trace(Ray camera_ray)
                 uint _e95 = s_c.slot;
                 GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e95*128+0)), asfloat(instances.Load4(_e95*128+16)), asfloat(instances.Load4(_e95*128+32)), asfloat(instances.Load4(_e95*128+48)), asfloat(instances.Load4(_e95*128+64)), asfloat(instances.Load4(_e95*128+80)), asuint(instances.Load(_e95*128+96)), asuint(instances.Load(_e95*128+100)), asuint(instances.Load(_e95*128+104)), asuint(instances.Load(_e95*128+108)), asuint(instances.Load(_e95*128+112)), asuint(instances.Load(_e95*128+116)), asuint(instances.Load(_e95*128+120)), asuint(instances.Load(_e95*128+124)));
                 Hit _e99 = s_hit;
-                hit_11 = _e99;
+                hit_12 = _e99;
                 bool _e101 = fresh;
                 if (_e101) {
                     Ray _e102 = s_ray;
                     Candidate _e103 = s_c;
                     const Hit _e104 = finish_hit(_e102, _e103);
-                    hit_11 = _e104;
+                    hit_12 = _e104;
                     float _e106 = hit_error;
                     s_error = _e106;
                 } else {
                     float _e107 = s_error;
                     hit_error = _e107;
                 }
-                float _e110 = hit_11.t;
-                t_6 = _e110;
+                float _e110 = hit_12.t;
+                t_5 = _e110;
                 bool _e111 = fresh;
                 uint _e119 = s_ray.depth;
                 uint _e123 = depth;
                 if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
                     spawn_count = 0u;
                     Ray _e131 = s_ray;
-                    Hit _e132 = hit_11;
+                    Hit _e132 = hit_12;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
                     uint _e134 = spawn_count;
                     uint n_9 = min(min(_e134, 1u), MAX_SPAWN);
                     if ((n_9 > 0u)) {
                         Ray _e141 = s_ray;
-                        Hit _e142 = hit_11;
+                        Hit _e142 = hit_12;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
                         f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_9, 0u);
@@ -1943,7 +1868,7 @@ float3 trace(Ray camera_ray)
                 bool _e187 = pushed;
                 if (!(_e187)) {
                     Ray _e191 = s_ray;
-                    Hit _e192 = hit_11;
+                    Hit _e192 = hit_12;
                     float3 _e193 = s_sum;
                     const float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
                     radiance_3 = _e194;
@@ -1952,7 +1877,7 @@ float3 trace(Ray camera_ray)
             bool _e195 = pushed;
             if (!(_e195)) {
                 Ray _e197 = s_ray;
-                float _e198 = t_6;
+                float _e198 = t_5;
                 float3 _e199 = radiance_3;
                 const float3 _e200 = through_medium(_e197, _e198, _e199);
                 value = _e200;
@@ -1984,14 +1909,14 @@ float3 trace(Ray camera_ray)
             uint i_5 = stack[min(uint(min(top_1, 3u)), 3u)].next;
             stack[min(uint(min(top_1, 3u)), 3u)].next = (i_5 + 1u);
             Ray parent = stack[min(uint(min(top_1, 3u)), 3u)].ray;
-            Hit hit_14 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
+            Hit hit_15 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
             float3 dir_6 = stack[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_5, 0u)), 0u)];
             medium = parent.medium;
             float _e283 = stack[min(uint(min(top_1, 3u)), 3u)].error;
-            const float3 _e284 = spawn_origin(hit_14, _e283, dir_6);
+            const float3 _e284 = spawn_origin(hit_15, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_23 = ConstructRay(_e284, 0.0, dir_6, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_24 = ConstructRay(_e284, 0.0, dir_6, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(uint(min(top_1, 3u)), 3u)].ray;
             s_ray = _e299;
@@ -2027,7 +1952,7 @@ void render_pixel(uint2 pixel_3)
     float3 sum = (float3)0;
     uint bad = (uint)0;
     uint s_1 = (uint)0;
-    Ray ray_24 = (Ray)0;
+    Ray ray_25 = (Ray)0;
 
     FrameUniforms frame_5 = frame;
     TileParams tile_2 = tile;
@@ -2053,13 +1978,13 @@ void render_pixel(uint2 pixel_3)
         uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_24 = _e23;
-        ray_24.depth = 0u;
-        ray_24.kind = RAY_CAMERA;
-        float3 _e31 = ray_24.origin;
+        ray_25 = _e23;
+        ray_25.depth = 0u;
+        ray_25.kind = RAY_CAMERA;
+        float3 _e31 = ray_25.origin;
         const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_24.medium = _e33;
-        Ray _e34 = ray_24;
+        ray_25.medium = _e33;
+        Ray _e34 = ray_25;
         const float3 _e35 = trace(_e34);
         const bool3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

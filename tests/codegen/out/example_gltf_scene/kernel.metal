@@ -122,24 +122,12 @@ struct GltfMaskedMaterial {
     uint base_texture;
     float metallic;
     float roughness;
-    uint metal_rough_texture;
+    char _pad4[4];
     metal::packed_float3 emissive;
-    uint emissive_texture;
-    uint occlusion_texture;
-    float occlusion_strength;
-    char _pad9[8];
-    metal::float3 base_uv_u;
-    metal::float3 base_uv_v;
-    metal::float3 metal_rough_uv_u;
-    metal::float3 metal_rough_uv_v;
-    metal::float3 emissive_uv_u;
-    metal::float3 emissive_uv_v;
-    metal::float3 occlusion_uv_u;
-    metal::packed_float3 occlusion_uv_v;
     float alpha_cutoff;
     uint blend;
     uint double_sided;
-    char _pad20[8];
+    char _pad8[8];
 };
 struct type_15 {
     uint inner[128];
@@ -516,10 +504,10 @@ metal::float3 hit_triangle(
     bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
-    float t_7 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_6[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_12 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_7 >= tmin)) && (t_7 <= tmax_1);
+    float t_6 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_6[metal::min(r_1.kz, 2u)]))) * rcp;
+    bool hit_13 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_12 ? metal::float3(t_7, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_13 ? metal::float3(t_6, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 float point_error(
@@ -669,50 +657,13 @@ GltfMaskedMaterial load_GltfMaskedMaterial(
     uint _e30 = params[offset_2 + 4u];
     uint _e35 = params[offset_2 + 5u];
     uint _e41 = params[offset_2 + 6u];
-    uint _e47 = params[offset_2 + 7u];
-    uint _e52 = params[offset_2 + 8u];
-    uint _e58 = params[offset_2 + 9u];
-    uint _e64 = params[offset_2 + 10u];
-    uint _e71 = params[offset_2 + 11u];
-    uint _e76 = params[offset_2 + 12u];
-    uint _e81 = params[offset_2 + 13u];
-    uint _e87 = params[offset_2 + 16u];
-    uint _e93 = params[offset_2 + 17u];
-    uint _e99 = params[offset_2 + 18u];
-    uint _e106 = params[offset_2 + 20u];
-    uint _e112 = params[offset_2 + 21u];
-    uint _e118 = params[offset_2 + 22u];
-    uint _e125 = params[offset_2 + 24u];
-    uint _e131 = params[offset_2 + 25u];
-    uint _e137 = params[offset_2 + 26u];
-    uint _e144 = params[offset_2 + 28u];
-    uint _e150 = params[offset_2 + 29u];
-    uint _e156 = params[offset_2 + 30u];
-    uint _e163 = params[offset_2 + 32u];
-    uint _e169 = params[offset_2 + 33u];
-    uint _e175 = params[offset_2 + 34u];
-    uint _e182 = params[offset_2 + 36u];
-    uint _e188 = params[offset_2 + 37u];
-    uint _e194 = params[offset_2 + 38u];
-    uint _e201 = params[offset_2 + 40u];
-    uint _e207 = params[offset_2 + 41u];
-    uint _e213 = params[offset_2 + 42u];
-    uint _e220 = params[offset_2 + 44u];
-    uint _e226 = params[offset_2 + 45u];
-    uint _e232 = params[offset_2 + 46u];
-    uint _e239 = params[offset_2 + 47u];
-    uint _e245 = params[offset_2 + 48u];
-    uint _e250 = params[offset_2 + 49u];
-    return GltfMaskedMaterial {metal::float4(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17), as_type<float>(_e23)), _e30, as_type<float>(_e35), as_type<float>(_e41), _e47, metal::float3(as_type<float>(_e52), as_type<float>(_e58), as_type<float>(_e64)), _e71, _e76, as_type<float>(_e81), {}, metal::float3(as_type<float>(_e87), as_type<float>(_e93), as_type<float>(_e99)), metal::float3(as_type<float>(_e106), as_type<float>(_e112), as_type<float>(_e118)), metal::float3(as_type<float>(_e125), as_type<float>(_e131), as_type<float>(_e137)), metal::float3(as_type<float>(_e144), as_type<float>(_e150), as_type<float>(_e156)), metal::float3(as_type<float>(_e163), as_type<float>(_e169), as_type<float>(_e175)), metal::float3(as_type<float>(_e182), as_type<float>(_e188), as_type<float>(_e194)), metal::float3(as_type<float>(_e201), as_type<float>(_e207), as_type<float>(_e213)), metal::float3(as_type<float>(_e220), as_type<float>(_e226), as_type<float>(_e232)), as_type<float>(_e239), _e245, _e250};
-}
-
-metal::float2 gltf_uv(
-    metal::float3 ru,
-    metal::float3 rv,
-    metal::float2 uv
-) {
-    metal::float3 p_7 = metal::float3(uv, 1.0);
-    return metal::float2(metal::dot(ru, p_7), metal::dot(rv, p_7));
+    uint _e47 = params[offset_2 + 8u];
+    uint _e53 = params[offset_2 + 9u];
+    uint _e59 = params[offset_2 + 10u];
+    uint _e66 = params[offset_2 + 11u];
+    uint _e72 = params[offset_2 + 12u];
+    uint _e77 = params[offset_2 + 13u];
+    return GltfMaskedMaterial {metal::float4(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17), as_type<float>(_e23)), _e30, as_type<float>(_e35), as_type<float>(_e41), {}, metal::float3(as_type<float>(_e47), as_type<float>(_e53), as_type<float>(_e59)), as_type<float>(_e66), _e72, _e77};
 }
 
 int naga_f2i32(float value) {
@@ -806,7 +757,7 @@ metal::float4 texel_at(
 
 metal::float4 sample_texture(
     uint t_1,
-    metal::float2 uv_1,
+    metal::float2 uv,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
@@ -817,15 +768,15 @@ metal::float4 sample_texture(
     float h_4 = static_cast<float>(metal::max(_e14, 1u));
     uint _e22 = params[t_1 + 4u];
     if ((_e22 & TEXTURE_NEAREST) != 0u) {
-        metal::float2 q_3 = metal::floor(uv_1 * metal::float2(w_4, h_4));
+        metal::float2 q_3 = metal::floor(uv * metal::float2(w_4, h_4));
         int _e31 = i32_from_f32_(q_3.x);
         int _e33 = i32_from_f32_(q_3.y);
         metal::float4 _e34 = texel_at(t_1, _e31, _e33, params, texels, _buffer_sizes);
         return _e34;
     }
-    metal::float2 p_8 = (uv_1 * metal::float2(w_4, h_4)) - metal::float2(0.5);
-    metal::float2 f_1 = metal::floor(p_8);
-    metal::float2 fr = p_8 - f_1;
+    metal::float2 p_7 = (uv * metal::float2(w_4, h_4)) - metal::float2(0.5);
+    metal::float2 f_1 = metal::floor(p_7);
+    metal::float2 fr = p_7 - f_1;
     int _e43 = i32_from_f32_(f_1.x);
     int _e45 = i32_from_f32_(f_1.y);
     metal::float4 _e46 = texel_at(t_1, _e43, _e45, params, texels, _buffer_sizes);
@@ -883,31 +834,27 @@ float gltf_coverage(
     return static_cast<float>(_e68 >> 8u) * (1.0 / 16777216.0);
 }
 
-bool gltf_masked_any_hit(
-    GltfMaskedMaterial m,
+bool gltf_counts(
+    float alpha,
+    float cutoff,
+    uint blend,
+    uint double_sided,
     Ray ray_4,
     Hit hit_2,
-    constant TileParams& tile,
-    device type_4 const& params,
-    device type_4 const& texels,
-    constant _mslBufferSizes& _buffer_sizes
+    constant TileParams& tile
 ) {
-    if ((m.double_sided == 0u) && !(hit_2.front_face)) {
+    if ((double_sided == 0u) && !(hit_2.front_face)) {
         return false;
     }
-    metal::float2 _e16 = gltf_uv(m.base_uv_u, m.base_uv_v, hit_2.uv);
-    metal::float4 _e17 = sample_texture(m.base_texture, _e16, params, texels, _buffer_sizes);
-    float alpha = m.base_color.w * _e17.w;
-    if (m.blend != 0u) {
-        float _e23 = gltf_coverage(ray_4, hit_2, tile);
-        return _e23 < alpha;
+    if (blend != 0u) {
+        float _e14 = gltf_coverage(ray_4, hit_2, tile);
+        return _e14 < alpha;
     }
-    return alpha >= m.alpha_cutoff;
+    return alpha >= cutoff;
 }
 
-bool dispatch_any_hit(
-    uint type_id_1,
-    uint offset_3,
+bool gltf_masked_any_hit(
+    GltfMaskedMaterial m,
     Ray ray_5,
     Hit hit_3,
     constant TileParams& tile,
@@ -915,14 +862,30 @@ bool dispatch_any_hit(
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    metal::float4 _e7 = sample_texture(m.base_texture, hit_3.uv, params, texels, _buffer_sizes);
+    float alpha_1 = m.base_color.w * _e7.w;
+    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_5, hit_3, tile);
+    return _e13;
+}
+
+bool dispatch_any_hit(
+    uint type_id_1,
+    uint offset_3,
+    Ray ray_6,
+    Hit hit_4,
+    constant TileParams& tile,
+    device type_4 const& params,
+    device type_4 const& texels,
+    constant _mslBufferSizes& _buffer_sizes
+) {
     GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3, params, _buffer_sizes);
-    bool _e4 = gltf_masked_any_hit(_e3, ray_5, hit_3, tile, params, texels, _buffer_sizes);
+    bool _e4 = gltf_masked_any_hit(_e3, ray_6, hit_4, tile, params, texels, _buffer_sizes);
     return _e4;
 }
 
 bool accept(
     GpuInstance inst_4,
-    Ray ray_6,
+    Ray ray_7,
     Candidate c_2,
     constant TileParams& tile,
     device type_4 const& params,
@@ -935,9 +898,9 @@ bool accept(
 ) {
     if ((inst_4.flags & FLAG_ANY_HIT) != 0u) {
         float shaded = hit_error;
-        Hit _e10 = finish_hit(ray_6, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
+        Hit _e10 = finish_hit(ray_7, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
         hit_error = shaded;
-        bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_6, _e10, tile, params, texels, _buffer_sizes);
+        bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10, tile, params, texels, _buffer_sizes);
         return _e14;
     }
     return true;
@@ -989,7 +952,7 @@ metal::float2 children_entry(
     GpuNode n_3,
     metal::float3 origin_3,
     metal::float3 scale_1,
-    Ray ray_7,
+    Ray ray_8,
     metal::float3 inv,
     float tmax_3,
     thread uint& F32_INF
@@ -1000,12 +963,12 @@ metal::float2 children_entry(
     metal::float3 _e11 = node_point(origin_3, scale_1, _e10);
     metal::uint3 _e12 = node_box_hi(lq);
     metal::float3 _e13 = node_point(origin_3, scale_1, _e12);
-    float _e16 = slab(_e11, _e13, ray_7.origin, inv, ray_7.tmin, tmax_3, F32_INF);
+    float _e16 = slab(_e11, _e13, ray_8.origin, inv, ray_8.tmin, tmax_3, F32_INF);
     metal::uint3 _e17 = node_box_lo(rq);
     metal::float3 _e18 = node_point(origin_3, scale_1, _e17);
     metal::uint3 _e19 = node_box_hi(rq);
     metal::float3 _e20 = node_point(origin_3, scale_1, _e19);
-    float _e23 = slab(_e18, _e20, ray_7.origin, inv, ray_7.tmin, tmax_3, F32_INF);
+    float _e23 = slab(_e18, _e20, ray_8.origin, inv, ray_8.tmin, tmax_3, F32_INF);
     return metal::float2(_e16, _e23);
 }
 
@@ -1025,7 +988,7 @@ Candidate intersect_mesh(
     GpuInstance inst_5,
     uint slot_2,
     Ray world_ray,
-    Ray ray_8,
+    Ray ray_9,
     Candidate best_in,
     bool shadow,
     constant TileParams& tile,
@@ -1047,8 +1010,8 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    metal::float3 _e8 = safe_inverse(ray_8.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_8);
+    metal::float3 _e8 = safe_inverse(ray_9.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_9);
     uint base_2 = inst_5.blas_root;
     GpuNode header_1 = nodes[base_2];
     metal::float3 origin_4 = header_1.min;
@@ -1083,7 +1046,7 @@ Candidate intersect_mesh(
                 uint _e41 = k;
                 uint prim = (inst_5.triangle_offset + first) + _e41;
                 float _e45 = best.t;
-                metal::float3 _e46 = hit_triangle(_e9, prim, ray_8.tmin, _e45, F32_INF, triangles, _buffer_sizes);
+                metal::float3 _e46 = hit_triangle(_e9, prim, ray_9.tmin, _e45, F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     Candidate c_8 = Candidate {_e46.x, slot_2, prim, {}, _e46.yz, {}, metal::float3(0.0)};
@@ -1101,7 +1064,7 @@ Candidate intersect_mesh(
             uint _e62 = child;
             GpuNode n_7 = nodes[base_2 + _e62];
             float _e68 = best.t;
-            metal::float2 _e69 = children_entry(n_7, origin_4, scale_2, ray_8, _e8, _e68, F32_INF);
+            metal::float2 _e69 = children_entry(n_7, origin_4, scale_2, ray_9, _e8, _e68, F32_INF);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
@@ -1150,7 +1113,7 @@ Candidate intersect_mesh(
 
 Candidate intersect_object(
     uint slot_3,
-    Ray ray_9,
+    Ray ray_10,
     Candidate best_1,
     bool shadow_1,
     constant TileParams& tile,
@@ -1167,12 +1130,12 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_7 = instances[slot_3];
-    Ray _e7 = to_object(inst_7, ray_9);
+    Ray _e7 = to_object(inst_7, ray_10);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_9, _e14, best_1, shadow_1, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_10, _e14, best_1, shadow_1, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
@@ -1251,7 +1214,7 @@ metal::float3 node_frame_hi(
 }
 
 Candidate intersect_scene(
-    Ray ray_10,
+    Ray ray_11,
     bool shadow_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
@@ -1274,21 +1237,21 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_10.tmax);
+    Candidate _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = frame;
     if (frame_2.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_10.dir);
+    metal::float3 _e16 = safe_inverse(ray_11.dir);
     uint base_3 = frame_2.tlas_root;
     GpuNode header_2 = nodes[base_3];
     metal::float3 origin_5 = header_2.min;
     metal::float3 scale_3 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_10.origin, _e16, ray_10.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_11.origin, _e16, ray_11.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
@@ -1306,7 +1269,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_10, _e55, shadow_2, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_11, _e55, shadow_2, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1318,7 +1281,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_8 = nodes[base_3 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_10, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_11, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1384,9 +1347,9 @@ SkyGradient load_SkyGradient(
 
 metal::float3 sky_gradient(
     SkyGradient b_5,
-    Ray ray_11
+    Ray ray_12
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_11.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_12.dir);
     float y_1 = _e3.y;
     if (y_1 < 0.0) {
         return metal::mix(b_5.horizon, b_5.ground, metal::float3(metal::min(-(y_1) * 4.0, 1.0)));
@@ -1397,17 +1360,17 @@ metal::float3 sky_gradient(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_5,
-    Ray ray_12,
+    Ray ray_13,
     device type_4 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_5, params, _buffer_sizes);
-    metal::float3 _e3 = sky_gradient(_e2, ray_12);
+    metal::float3 _e3 = sky_gradient(_e2, ray_13);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_13,
+    Ray ray_14,
     constant FrameUniforms& frame,
     device type_4 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1416,28 +1379,16 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_3 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_13, params, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_14, params, _buffer_sizes);
     return _e9;
 }
 
-float gltf_occlusion(
-    uint t_2,
-    float strength,
-    metal::float2 uv_2,
-    device type_4 const& params,
-    device type_4 const& texels,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    metal::float4 _e4 = sample_texture(t_2, uv_2, params, texels, _buffer_sizes);
-    return 1.0 + (strength * (_e4.x - 1.0));
-}
-
 metal::float3 shading_normal(
-    Ray ray_14,
-    Hit hit_4
+    Ray ray_15,
+    Hit hit_5
 ) {
-    metal::float3 ng = metal::faceforward(hit_4.geometric_normal, ray_14.dir, hit_4.geometric_normal);
-    return metal::faceforward(hit_4.normal, -(ng), hit_4.normal);
+    metal::float3 ng = metal::faceforward(hit_5.geometric_normal, ray_15.dir, hit_5.geometric_normal);
+    return metal::faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
 uint light_count_query(
@@ -1609,17 +1560,17 @@ LightSample point_light(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float strength_1 = {};
+    float strength = {};
     metal::float3 to_light = l_1.position - position_3;
     float dist_2 = metal::length(to_light);
     metal::float3 dir_5 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
-    strength_1 = l_1.intensity / metal::max(dist_2 * dist_2, 0.00000000000000000001);
+    strength = l_1.intensity / metal::max(dist_2 * dist_2, 0.00000000000000000001);
     if (l_1.range > 0.0) {
-        float _e19 = strength_1;
-        strength_1 = _e19 * (1.0 - metal::smoothstep(l_1.inner_range, l_1.range, dist_2));
+        float _e19 = strength;
+        strength = _e19 * (1.0 - metal::smoothstep(l_1.inner_range, l_1.range, dist_2));
     }
     float _e26 = shadow_query(position_3, normal_3, dir_5, dist_2, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-    float _e28 = strength_1;
+    float _e28 = strength;
     return LightSample {dir_5, dist_2, (l_1.color * metal::float3(_e28)) * metal::float3(_e26)};
 }
 
@@ -1695,8 +1646,8 @@ metal::float3 gltf_radiance(
     float roughness,
     float occlusion,
     metal::float3 emissive,
-    Ray ray_15,
-    Hit hit_5,
+    Ray ray_16,
+    Hit hit_6,
     constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1713,8 +1664,8 @@ metal::float3 gltf_radiance(
 ) {
     metal::float3 color = {};
     uint i_3 = {};
-    metal::float3 _e7 = shading_normal(ray_15, hit_5);
-    metal::float3 _e9 = normalize_vec3f(ray_15.dir);
+    metal::float3 _e7 = shading_normal(ray_16, hit_6);
+    metal::float3 _e9 = normalize_vec3f(ray_16.dir);
     metal::float3 v_2 = -(_e9);
     float metal_ = metal::saturate(metallic);
     float a2_ = metal::max(metal::pow(metal::saturate(roughness), 4.0), 0.000004);
@@ -1738,7 +1689,7 @@ metal::float3 gltf_radiance(
             break;
         }
         uint _e30 = i_3;
-        LightSample _e33 = sample_light_query(_e30, hit_5.position, hit_5.geometric_normal, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+        LightSample _e33 = sample_light_query(_e30, hit_6.position, hit_6.geometric_normal, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
         float ndl = metal::max(metal::dot(_e7, _e33.dir), 0.0);
         metal::float3 _e40 = normalize_vec3f(_e33.dir + v_2);
         float ndh = metal::max(metal::dot(_e7, _e40), 0.0);
@@ -1755,8 +1706,8 @@ metal::float3 gltf_radiance(
 
 metal::float3 gltf_masked_shade(
     GltfMaskedMaterial m_1,
-    Ray ray_16,
-    Hit hit_6,
+    Ray ray_17,
+    Hit hit_7,
     constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1771,18 +1722,10 @@ metal::float3 gltf_masked_shade(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float2 _e9 = gltf_uv(m_1.base_uv_u, m_1.base_uv_v, hit_6.uv);
-    metal::float4 _e10 = sample_texture(m_1.base_texture, _e9, params, texels, _buffer_sizes);
-    metal::float3 c_9 = m_1.base_color.xyz * _e10.xyz;
-    metal::float2 _e17 = gltf_uv(m_1.metal_rough_uv_u, m_1.metal_rough_uv_v, hit_6.uv);
-    metal::float4 _e18 = sample_texture(m_1.metal_rough_texture, _e17, params, texels, _buffer_sizes);
-    metal::float2 _e24 = gltf_uv(m_1.occlusion_uv_u, m_1.occlusion_uv_v, hit_6.uv);
-    float _e25 = gltf_occlusion(m_1.occlusion_texture, m_1.occlusion_strength, _e24, params, texels, _buffer_sizes);
-    metal::float2 _e31 = gltf_uv(m_1.emissive_uv_u, m_1.emissive_uv_v, hit_6.uv);
-    metal::float4 _e32 = sample_texture(m_1.emissive_texture, _e31, params, texels, _buffer_sizes);
-    metal::float3 e_2 = m_1.emissive * _e32.xyz;
-    metal::float3 _e41 = gltf_radiance(c_9, m_1.metallic * _e18.z, m_1.roughness * _e18.y, _e25, e_2, ray_16, hit_6, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-    return _e41;
+    metal::float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv, params, texels, _buffer_sizes);
+    metal::float3 c_9 = m_1.base_color.xyz * _e7.xyz;
+    metal::float3 _e14 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_17, hit_7, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    return _e14;
 }
 
 GltfMaterial load_GltfMaterial(
@@ -1805,8 +1748,8 @@ GltfMaterial load_GltfMaterial(
 
 metal::float3 gltf_shade(
     GltfMaterial m_2,
-    Ray ray_17,
-    Hit hit_7,
+    Ray ray_18,
+    Hit hit_8,
     constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1821,17 +1764,17 @@ metal::float3 gltf_shade(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 _e7 = sample_texture(m_2.base_texture, hit_7.uv, params, texels, _buffer_sizes);
+    metal::float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv, params, texels, _buffer_sizes);
     metal::float3 c_10 = m_2.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_17, hit_7, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_18, hit_8, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e14;
 }
 
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_10,
-    Ray ray_18,
-    Hit hit_8,
+    Ray ray_19,
+    Hit hit_9,
     metal::float3 secondary,
     constant TileParams& tile,
     constant FrameUniforms& frame,
@@ -1850,12 +1793,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e5 = gltf_masked_shade(_e4, ray_18, hit_8, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e5 = gltf_masked_shade(_e4, ray_19, hit_9, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e7 = gltf_shade(_e6, ray_18, hit_8, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e7 = gltf_shade(_e6, ray_19, hit_9, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e7;
         }
         default: {
@@ -1866,7 +1809,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_19,
+    Ray ray_20,
     Candidate c_4,
     constant TileParams& tile,
     constant FrameUniforms& frame,
@@ -1883,24 +1826,24 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_4.slot];
-    Hit _e6 = finish_hit(ray_19, c_4, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, metal::float3(0.0), tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_20, c_4, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, metal::float3(0.0), tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_11,
-    Ray ray_20,
-    float t_3,
+    Ray ray_21,
+    float t_2,
     metal::float3 radiance
 ) {
     return metal::float3 {};
 }
 
 metal::float3 through_medium(
-    Ray ray_21,
-    float t_4,
+    Ray ray_22,
+    float t_3,
     metal::float3 radiance_1,
     device type_8 const& instances,
     constant _mslBufferSizes& _buffer_sizes
@@ -1908,22 +1851,22 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_21.medium == 0u) {
+    if (ray_22.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_9 = instances[ray_21.medium - 1u];
+    GpuInstance inst_9 = instances[ray_22.medium - 1u];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_21, t_4, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_22, t_3, radiance_1);
     return _e21;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_12,
-    Ray ray_22,
-    Hit hit_9
+    Ray ray_23,
+    Hit hit_10
 ) {
     return;
 }
@@ -1947,11 +1890,11 @@ metal::float3 spawn_origin_at(
 }
 
 metal::float3 spawn_origin(
-    Hit hit_10,
+    Hit hit_11,
     float error_2,
     metal::float3 dir_3
 ) {
-    metal::float3 _e5 = spawn_origin_at(hit_10.position, hit_10.geometric_normal, error_2, dir_3);
+    metal::float3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_3);
     return _e5;
 }
 
@@ -1975,10 +1918,10 @@ metal::float3 trace(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 radiance_2 = {};
-    float t_5 = {};
+    float t_4 = {};
     type_17 stack = {};
     uint depth = {};
-    Ray ray_23 = {};
+    Ray ray_24 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -1990,8 +1933,8 @@ metal::float3 trace(
     bool waiting = {};
     bool pushed = {};
     metal::float3 radiance_3 = {};
-    float t_6 = {};
-    Hit hit_11 = {};
+    float t_5 = {};
+    Hit hit_12 = {};
     Frame f = {};
     uint i_4 = {};
     uint medium = {};
@@ -1999,7 +1942,7 @@ metal::float3 trace(
         Candidate _e4 = intersect_scene(camera_ray, false, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
         radiance_2 = metal::float3(0.0);
         uint _e9 = F32_INF;
-        t_5 = as_type<float>(_e9);
+        t_4 = as_type<float>(_e9);
         if (_e4.slot == NO_HIT) {
             hit_error = 0.0;
             metal::float3 _e17 = miss(camera_ray, frame, params, _buffer_sizes);
@@ -2007,16 +1950,16 @@ metal::float3 trace(
         } else {
             metal::float3 _e18 = shade_direct(camera_ray, _e4, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             radiance_2 = _e18;
-            t_5 = _e4.t;
+            t_4 = _e4.t;
         }
-        float _e20 = t_5;
+        float _e20 = t_4;
         metal::float3 _e21 = radiance_2;
         metal::float3 _e22 = through_medium(camera_ray, _e20, _e21, instances, _buffer_sizes);
         return _e22;
     }
     stack = type_17 {};
     depth = 0u;
-    ray_23 = camera_ray;
+    ray_24 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -2035,10 +1978,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_23;
+            Ray _e67 = ray_24;
             Candidate _e69 = intersect_scene(_e67, false, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_23;
+            Ray _e70 = ray_24;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -2050,7 +1993,7 @@ metal::float3 trace(
             pushed = false;
             radiance_3 = metal::float3(0.0);
             uint _e83 = F32_INF;
-            t_6 = as_type<float>(_e83);
+            t_5 = as_type<float>(_e83);
             uint _e87 = s_c.slot;
             if (_e87 == NO_HIT) {
                 hit_error = 0.0;
@@ -2061,34 +2004,34 @@ metal::float3 trace(
                 uint _e95 = s_c.slot;
                 GpuInstance inst_10 = instances[_e95];
                 Hit _e99 = s_hit;
-                hit_11 = _e99;
+                hit_12 = _e99;
                 bool _e101 = fresh;
                 if (_e101) {
                     Ray _e102 = s_ray;
                     Candidate _e103 = s_c;
                     Hit _e104 = finish_hit(_e102, _e103, instances, triangles, hit_error, attributes, _buffer_sizes);
-                    hit_11 = _e104;
+                    hit_12 = _e104;
                     float _e106 = hit_error;
                     s_error = _e106;
                 } else {
                     float _e107 = s_error;
                     hit_error = _e107;
                 }
-                float _e110 = hit_11.t;
-                t_6 = _e110;
+                float _e110 = hit_12.t;
+                t_5 = _e110;
                 bool _e111 = fresh;
                 uint _e119 = s_ray.depth;
                 uint _e123 = depth;
                 if (((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
                     spawn_count = 0u;
                     Ray _e131 = s_ray;
-                    Hit _e132 = hit_11;
+                    Hit _e132 = hit_12;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
                     uint _e134 = spawn_count;
                     uint n_9 = metal::min(metal::min(_e134, 1u), MAX_SPAWN);
                     if (n_9 > 0u) {
                         Ray _e141 = s_ray;
-                        Hit _e142 = hit_11;
+                        Hit _e142 = hit_12;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
                         f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_9, 0u};
@@ -2127,7 +2070,7 @@ metal::float3 trace(
                 bool _e187 = pushed;
                 if (!(_e187)) {
                     Ray _e191 = s_ray;
-                    Hit _e192 = hit_11;
+                    Hit _e192 = hit_12;
                     metal::float3 _e193 = s_sum;
                     metal::float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
                     radiance_3 = _e194;
@@ -2136,7 +2079,7 @@ metal::float3 trace(
             bool _e195 = pushed;
             if (!(_e195)) {
                 Ray _e197 = s_ray;
-                float _e198 = t_6;
+                float _e198 = t_5;
                 metal::float3 _e199 = radiance_3;
                 metal::float3 _e200 = through_medium(_e197, _e198, _e199, instances, _buffer_sizes);
                 value = _e200;
@@ -2168,14 +2111,14 @@ metal::float3 trace(
             uint i_5 = stack.inner[metal::min(top_1, 3u)].next;
             stack.inner[metal::min(top_1, 3u)].next = i_5 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 3u)].ray;
-            Hit hit_13 = stack.inner[metal::min(top_1, 3u)].hit;
+            Hit hit_14 = stack.inner[metal::min(top_1, 3u)].hit;
             metal::float3 dir_6 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_5, 0u)];
             medium = parent.medium;
             float _e283 = stack.inner[metal::min(top_1, 3u)].error;
-            metal::float3 _e284 = spawn_origin(hit_13, _e283, dir_6);
+            metal::float3 _e284 = spawn_origin(hit_14, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_23 = Ray {_e284, 0.0, dir_6, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_24 = Ray {_e284, 0.0, dir_6, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -2233,7 +2176,7 @@ void render_pixel(
     metal::float3 sum = {};
     uint bad = {};
     uint s_1 = {};
-    Ray ray_24 = {};
+    Ray ray_25 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_2 = tile;
     sum = metal::float3(0.0);
@@ -2258,13 +2201,13 @@ void render_pixel(
         uint sample_3 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
-        ray_24 = _e23;
-        ray_24.depth = 0u;
-        ray_24.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_24.origin;
+        ray_25 = _e23;
+        ray_25.depth = 0u;
+        ray_25.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_25.origin;
         uint _e33 = medium_at(_e31, NO_HIT, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
-        ray_24.medium = _e33;
-        Ray _e34 = ray_24;
+        ray_25.medium = _e33;
+        Ray _e34 = ray_25;
         metal::float3 _e35 = trace(_e34, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {

@@ -103,19 +103,7 @@ struct GltfMaskedMaterial {
     base_texture: u32,
     metallic: f32,
     roughness: f32,
-    metal_rough_texture: u32,
     emissive: vec3<f32>,
-    emissive_texture: u32,
-    occlusion_texture: u32,
-    occlusion_strength: f32,
-    base_uv_u: vec3<f32>,
-    base_uv_v: vec3<f32>,
-    metal_rough_uv_u: vec3<f32>,
-    metal_rough_uv_v: vec3<f32>,
-    emissive_uv_u: vec3<f32>,
-    emissive_uv_v: vec3<f32>,
-    occlusion_uv_u: vec3<f32>,
-    occlusion_uv_v: vec3<f32>,
     alpha_cutoff: f32,
     blend: u32,
     double_sided: u32,
@@ -432,10 +420,10 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
-    let t_7 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
-    let hit_12 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_7 >= tmin)) && (t_7 <= tmax_1));
+    let t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
+    let hit_13 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_7, (v_1 * rcp), (w * rcp)), hit_12);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_6, (v_1 * rcp), (w * rcp)), hit_13);
 }
 
 fn point_error(origin: vec3<f32>, along: vec3<f32>) -> f32 {
@@ -554,46 +542,13 @@ fn load_GltfMaskedMaterial(offset_2: u32) -> GltfMaskedMaterial {
     let _e30 = params[(offset_2 + 4u)];
     let _e35 = params[(offset_2 + 5u)];
     let _e41 = params[(offset_2 + 6u)];
-    let _e47 = params[(offset_2 + 7u)];
-    let _e52 = params[(offset_2 + 8u)];
-    let _e58 = params[(offset_2 + 9u)];
-    let _e64 = params[(offset_2 + 10u)];
-    let _e71 = params[(offset_2 + 11u)];
-    let _e76 = params[(offset_2 + 12u)];
-    let _e81 = params[(offset_2 + 13u)];
-    let _e87 = params[(offset_2 + 16u)];
-    let _e93 = params[(offset_2 + 17u)];
-    let _e99 = params[(offset_2 + 18u)];
-    let _e106 = params[(offset_2 + 20u)];
-    let _e112 = params[(offset_2 + 21u)];
-    let _e118 = params[(offset_2 + 22u)];
-    let _e125 = params[(offset_2 + 24u)];
-    let _e131 = params[(offset_2 + 25u)];
-    let _e137 = params[(offset_2 + 26u)];
-    let _e144 = params[(offset_2 + 28u)];
-    let _e150 = params[(offset_2 + 29u)];
-    let _e156 = params[(offset_2 + 30u)];
-    let _e163 = params[(offset_2 + 32u)];
-    let _e169 = params[(offset_2 + 33u)];
-    let _e175 = params[(offset_2 + 34u)];
-    let _e182 = params[(offset_2 + 36u)];
-    let _e188 = params[(offset_2 + 37u)];
-    let _e194 = params[(offset_2 + 38u)];
-    let _e201 = params[(offset_2 + 40u)];
-    let _e207 = params[(offset_2 + 41u)];
-    let _e213 = params[(offset_2 + 42u)];
-    let _e220 = params[(offset_2 + 44u)];
-    let _e226 = params[(offset_2 + 45u)];
-    let _e232 = params[(offset_2 + 46u)];
-    let _e239 = params[(offset_2 + 47u)];
-    let _e245 = params[(offset_2 + 48u)];
-    let _e250 = params[(offset_2 + 49u)];
-    return GltfMaskedMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), _e47, vec3<f32>(bitcast<f32>(_e52), bitcast<f32>(_e58), bitcast<f32>(_e64)), _e71, _e76, bitcast<f32>(_e81), vec3<f32>(bitcast<f32>(_e87), bitcast<f32>(_e93), bitcast<f32>(_e99)), vec3<f32>(bitcast<f32>(_e106), bitcast<f32>(_e112), bitcast<f32>(_e118)), vec3<f32>(bitcast<f32>(_e125), bitcast<f32>(_e131), bitcast<f32>(_e137)), vec3<f32>(bitcast<f32>(_e144), bitcast<f32>(_e150), bitcast<f32>(_e156)), vec3<f32>(bitcast<f32>(_e163), bitcast<f32>(_e169), bitcast<f32>(_e175)), vec3<f32>(bitcast<f32>(_e182), bitcast<f32>(_e188), bitcast<f32>(_e194)), vec3<f32>(bitcast<f32>(_e201), bitcast<f32>(_e207), bitcast<f32>(_e213)), vec3<f32>(bitcast<f32>(_e220), bitcast<f32>(_e226), bitcast<f32>(_e232)), bitcast<f32>(_e239), _e245, _e250);
-}
-
-fn gltf_uv(ru: vec3<f32>, rv: vec3<f32>, uv: vec2<f32>) -> vec2<f32> {
-    let p_7 = vec3<f32>(uv, 1f);
-    return vec2<f32>(dot(ru, p_7), dot(rv, p_7));
+    let _e47 = params[(offset_2 + 8u)];
+    let _e53 = params[(offset_2 + 9u)];
+    let _e59 = params[(offset_2 + 10u)];
+    let _e66 = params[(offset_2 + 11u)];
+    let _e72 = params[(offset_2 + 12u)];
+    let _e77 = params[(offset_2 + 13u)];
+    return GltfMaskedMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), vec3<f32>(bitcast<f32>(_e47), bitcast<f32>(_e53), bitcast<f32>(_e59)), bitcast<f32>(_e66), _e72, _e77);
 }
 
 fn i32_from_f32_(x_1: f32) -> i32 {
@@ -659,22 +614,22 @@ fn texel_at(t: u32, x_3: i32, y: i32) -> vec4<f32> {
     return vec4<f32>(rg, ba);
 }
 
-fn sample_texture(t_1: u32, uv_1: vec2<f32>) -> vec4<f32> {
+fn sample_texture(t_1: u32, uv: vec2<f32>) -> vec4<f32> {
     let _e6 = params[(t_1 + 1u)];
     let w_4 = f32(max(_e6, 1u));
     let _e14 = params[(t_1 + 2u)];
     let h_4 = f32(max(_e14, 1u));
     let _e22 = params[(t_1 + 4u)];
     if ((_e22 & TEXTURE_NEAREST) != 0u) {
-        let q_3 = floor((uv_1 * vec2<f32>(w_4, h_4)));
+        let q_3 = floor((uv * vec2<f32>(w_4, h_4)));
         let _e31 = i32_from_f32_(q_3.x);
         let _e33 = i32_from_f32_(q_3.y);
         let _e34 = texel_at(t_1, _e31, _e33);
         return _e34;
     }
-    let p_8 = ((uv_1 * vec2<f32>(w_4, h_4)) - vec2(0.5f));
-    let f_1 = floor(p_8);
-    let fr = (p_8 - f_1);
+    let p_7 = ((uv * vec2<f32>(w_4, h_4)) - vec2(0.5f));
+    let f_1 = floor(p_7);
+    let fr = (p_7 - f_1);
     let _e43 = i32_from_f32_(f_1.x);
     let _e45 = i32_from_f32_(f_1.y);
     let _e46 = texel_at(t_1, _e43, _e45);
@@ -722,32 +677,36 @@ fn gltf_coverage(ray_3: Ray, hit_1: Hit) -> f32 {
     return (f32((_e68 >> 8u)) * (1f / 16777216f));
 }
 
-fn gltf_masked_any_hit(m: GltfMaskedMaterial, ray_4: Ray, hit_2: Hit) -> bool {
-    if ((m.double_sided == 0u) && !(hit_2.front_face)) {
+fn gltf_counts(alpha: f32, cutoff: f32, blend: u32, double_sided: u32, ray_4: Ray, hit_2: Hit) -> bool {
+    if ((double_sided == 0u) && !(hit_2.front_face)) {
         return false;
     }
-    let _e16 = gltf_uv(m.base_uv_u, m.base_uv_v, hit_2.uv);
-    let _e17 = sample_texture(m.base_texture, _e16);
-    let alpha = (m.base_color.w * _e17.w);
-    if (m.blend != 0u) {
-        let _e23 = gltf_coverage(ray_4, hit_2);
-        return (_e23 < alpha);
+    if (blend != 0u) {
+        let _e14 = gltf_coverage(ray_4, hit_2);
+        return (_e14 < alpha);
     }
-    return (alpha >= m.alpha_cutoff);
+    return (alpha >= cutoff);
 }
 
-fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_5: Ray, hit_3: Hit) -> bool {
+fn gltf_masked_any_hit(m: GltfMaskedMaterial, ray_5: Ray, hit_3: Hit) -> bool {
+    let _e7 = sample_texture(m.base_texture, hit_3.uv);
+    let alpha_1 = (m.base_color.w * _e7.w);
+    let _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_5, hit_3);
+    return _e13;
+}
+
+fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_6: Ray, hit_4: Hit) -> bool {
     let _e3 = load_GltfMaskedMaterial(offset_3);
-    let _e4 = gltf_masked_any_hit(_e3, ray_5, hit_3);
+    let _e4 = gltf_masked_any_hit(_e3, ray_6, hit_4);
     return _e4;
 }
 
-fn accept(inst_4: GpuInstance, ray_6: Ray, c_2: Candidate) -> bool {
+fn accept(inst_4: GpuInstance, ray_7: Ray, c_2: Candidate) -> bool {
     if ((inst_4.flags & FLAG_ANY_HIT) != 0u) {
         let shaded = hit_error;
-        let _e10 = finish_hit(ray_6, c_2);
+        let _e10 = finish_hit(ray_7, c_2);
         hit_error = shaded;
-        let _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_6, _e10);
+        let _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10);
         return _e14;
     }
     return true;
@@ -779,19 +738,19 @@ fn slab(lo: vec3<f32>, hi: vec3<f32>, origin_2: vec3<f32>, inv_dir: vec3<f32>, t
     return bitcast<f32>(_e30);
 }
 
-fn children_entry(n_3: GpuNode, origin_3: vec3<f32>, scale_1: vec3<f32>, ray_7: Ray, inv: vec3<f32>, tmax_3: f32) -> vec2<f32> {
+fn children_entry(n_3: GpuNode, origin_3: vec3<f32>, scale_1: vec3<f32>, ray_8: Ray, inv: vec3<f32>, tmax_3: f32) -> vec2<f32> {
     let lq = bitcast<vec3<u32>>(n_3.min);
     let rq = bitcast<vec3<u32>>(n_3.max);
     let _e10 = node_box_lo(lq);
     let _e11 = node_point(origin_3, scale_1, _e10);
     let _e12 = node_box_hi(lq);
     let _e13 = node_point(origin_3, scale_1, _e12);
-    let _e16 = slab(_e11, _e13, ray_7.origin, inv, ray_7.tmin, tmax_3);
+    let _e16 = slab(_e11, _e13, ray_8.origin, inv, ray_8.tmin, tmax_3);
     let _e17 = node_box_lo(rq);
     let _e18 = node_point(origin_3, scale_1, _e17);
     let _e19 = node_box_hi(rq);
     let _e20 = node_point(origin_3, scale_1, _e19);
-    let _e23 = slab(_e18, _e20, ray_7.origin, inv, ray_7.tmin, tmax_3);
+    let _e23 = slab(_e18, _e20, ray_8.origin, inv, ray_8.tmin, tmax_3);
     return vec2<f32>(_e16, _e23);
 }
 
@@ -803,7 +762,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_8: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_9: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -812,8 +771,8 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_8: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e8 = safe_inverse(ray_8.dir);
-    let _e9 = prepare_triangle_ray(ray_8);
+    let _e8 = safe_inverse(ray_9.dir);
+    let _e9 = prepare_triangle_ray(ray_9);
     let base_2 = inst_5.blas_root;
     let header_1 = nodes[base_2];
     let origin_4 = header_1.min;
@@ -836,7 +795,7 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_8: Ray, 
                 let _e41 = k;
                 let prim = ((inst_5.triangle_offset + first) + _e41);
                 let _e45 = best.t;
-                let _e46 = hit_triangle(_e9, prim, ray_8.tmin, _e45);
+                let _e46 = hit_triangle(_e9, prim, ray_9.tmin, _e45);
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
                     let c_8 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0f));
@@ -858,7 +817,7 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_8: Ray, 
             let _e62 = child;
             let n_7 = nodes[(base_2 + _e62)];
             let _e68 = best.t;
-            let _e69 = children_entry(n_7, origin_4, scale_2, ray_8, _e8, _e68);
+            let _e69 = children_entry(n_7, origin_4, scale_2, ray_9, _e8, _e68);
             let tl = _e69.x;
             let tr = _e69.y;
             let _e73 = F32_INF;
@@ -905,16 +864,16 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_8: Ray, 
     return _e122;
 }
 
-fn intersect_object(slot_3: u32, ray_9: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_3: u32, ray_10: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
     let inst_7 = instances[slot_3];
-    let _e7 = to_object(inst_7, ray_9);
+    let _e7 = to_object(inst_7, ray_10);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_7, slot_3, ray_9, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_7, slot_3, ray_10, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -971,7 +930,7 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     return _e5;
 }
 
-fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -980,21 +939,21 @@ fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_10.tmax);
+    let _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     let frame_2 = frame;
     if (frame_2.instance_count == 0u) {
         let _e14 = best_2;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_10.dir);
+    let _e16 = safe_inverse(ray_11.dir);
     let base_3 = frame_2.tlas_root;
     let header_2 = nodes[base_3];
     let origin_5 = header_2.min;
     let scale_3 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_5, _e23, ray_10.origin, _e16, ray_10.tmin, _e27);
+    let _e28 = slab(origin_5, _e23, ray_11.origin, _e16, ray_11.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
@@ -1009,7 +968,7 @@ fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e52 = child_1;
                 let _e55 = best_2;
-                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_10, _e55, shadow_2);
+                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_11, _e55, shadow_2);
                 best_2 = _e56;
                 let _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1021,7 +980,7 @@ fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
             let _e63 = child_1;
             let n_8 = nodes[(base_3 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_8, origin_5, scale_3, ray_10, _e16, _e69);
+            let _e70 = children_entry(n_8, origin_5, scale_3, ray_11, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
@@ -1081,8 +1040,8 @@ fn load_SkyGradient(offset_4: u32) -> SkyGradient {
     return SkyGradient(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)));
 }
 
-fn sky_gradient(b_5: SkyGradient, ray_11: Ray) -> vec3<f32> {
-    let _e3 = normalize_vec3f(ray_11.dir);
+fn sky_gradient(b_5: SkyGradient, ray_12: Ray) -> vec3<f32> {
+    let _e3 = normalize_vec3f(ray_12.dir);
     let y_1 = _e3.y;
     if (y_1 < 0f) {
         return mix(b_5.horizon, b_5.ground, vec3(min((-(y_1) * 4f), 1f)));
@@ -1090,29 +1049,24 @@ fn sky_gradient(b_5: SkyGradient, ray_11: Ray) -> vec3<f32> {
     return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y_1)));
 }
 
-fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_12: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_13: Ray) -> vec3<f32> {
     let _e2 = load_SkyGradient(offset_5);
-    let _e3 = sky_gradient(_e2, ray_12);
+    let _e3 = sky_gradient(_e2, ray_13);
     return _e3;
 }
 
-fn miss(ray_13: Ray) -> vec3<f32> {
+fn miss(ray_14: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_3 = frame;
-    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_13);
+    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_14);
     return _e9;
 }
 
-fn gltf_occlusion(t_2: u32, strength: f32, uv_2: vec2<f32>) -> f32 {
-    let _e4 = sample_texture(t_2, uv_2);
-    return (1f + (strength * (_e4.x - 1f)));
-}
-
-fn shading_normal(ray_14: Ray, hit_4: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_4.geometric_normal, ray_14.dir, hit_4.geometric_normal);
-    return faceForward(hit_4.normal, -(ng), hit_4.normal);
+fn shading_normal(ray_15: Ray, hit_5: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_5.geometric_normal, ray_15.dir, hit_5.geometric_normal);
+    return faceForward(hit_5.normal, -(ng), hit_5.normal);
 }
 
 fn light_count_query() -> u32 {
@@ -1209,18 +1163,18 @@ fn load_PointLight(offset_7: u32) -> PointLight {
 }
 
 fn point_light(l_1: PointLight, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
-    var strength_1: f32;
+    var strength: f32;
 
     let to_light = (l_1.position - position_3);
     let dist_2 = length(to_light);
     let dir_5 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
-    strength_1 = (l_1.intensity / max((dist_2 * dist_2), 0.00000000000000000001f));
+    strength = (l_1.intensity / max((dist_2 * dist_2), 0.00000000000000000001f));
     if (l_1.range > 0f) {
-        let _e19 = strength_1;
-        strength_1 = (_e19 * (1f - smoothstep(l_1.inner_range, l_1.range, dist_2)));
+        let _e19 = strength;
+        strength = (_e19 * (1f - smoothstep(l_1.inner_range, l_1.range, dist_2)));
     }
     let _e26 = shadow_query(position_3, normal_3, dir_5, dist_2);
-    let _e28 = strength_1;
+    let _e28 = strength;
     return LightSample(dir_5, dist_2, ((l_1.color * vec3(_e28)) * vec3(_e26)));
 }
 
@@ -1254,12 +1208,12 @@ fn sample_light_query(i_2: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> L
     return _e27;
 }
 
-fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, occlusion: f32, emissive: vec3<f32>, ray_15: Ray, hit_5: Hit) -> vec3<f32> {
+fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, occlusion: f32, emissive: vec3<f32>, ray_16: Ray, hit_6: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_3: u32;
 
-    let _e7 = shading_normal(ray_15, hit_5);
-    let _e9 = normalize_vec3f(ray_15.dir);
+    let _e7 = shading_normal(ray_16, hit_6);
+    let _e9 = normalize_vec3f(ray_16.dir);
     let v_2 = -(_e9);
     let metal = saturate(metallic);
     let a2_ = max(pow(saturate(roughness), 4f), 0.000004f);
@@ -1274,7 +1228,7 @@ fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, occlusion: f32, 
             break;
         }
         let _e30 = i_3;
-        let _e33 = sample_light_query(_e30, hit_5.position, hit_5.geometric_normal);
+        let _e33 = sample_light_query(_e30, hit_6.position, hit_6.geometric_normal);
         let ndl = max(dot(_e7, _e33.dir), 0f);
         let _e40 = normalize_vec3f((_e33.dir + v_2));
         let ndh = max(dot(_e7, _e40), 0f);
@@ -1293,19 +1247,11 @@ fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, occlusion: f32, 
     return _e110;
 }
 
-fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_16: Ray, hit_6: Hit) -> vec3<f32> {
-    let _e9 = gltf_uv(m_1.base_uv_u, m_1.base_uv_v, hit_6.uv);
-    let _e10 = sample_texture(m_1.base_texture, _e9);
-    let c_9 = (m_1.base_color.xyz * _e10.xyz);
-    let _e17 = gltf_uv(m_1.metal_rough_uv_u, m_1.metal_rough_uv_v, hit_6.uv);
-    let _e18 = sample_texture(m_1.metal_rough_texture, _e17);
-    let _e24 = gltf_uv(m_1.occlusion_uv_u, m_1.occlusion_uv_v, hit_6.uv);
-    let _e25 = gltf_occlusion(m_1.occlusion_texture, m_1.occlusion_strength, _e24);
-    let _e31 = gltf_uv(m_1.emissive_uv_u, m_1.emissive_uv_v, hit_6.uv);
-    let _e32 = sample_texture(m_1.emissive_texture, _e31);
-    let e_2 = (m_1.emissive * _e32.xyz);
-    let _e41 = gltf_radiance(c_9, (m_1.metallic * _e18.z), (m_1.roughness * _e18.y), _e25, e_2, ray_16, hit_6);
-    return _e41;
+fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_17: Ray, hit_7: Hit) -> vec3<f32> {
+    let _e7 = sample_texture(m_1.base_texture, hit_7.uv);
+    let c_9 = (m_1.base_color.xyz * _e7.xyz);
+    let _e14 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, 1f, m_1.emissive, ray_17, hit_7);
+    return _e14;
 }
 
 fn load_GltfMaterial(offset_9: u32) -> GltfMaterial {
@@ -1322,23 +1268,23 @@ fn load_GltfMaterial(offset_9: u32) -> GltfMaterial {
     return GltfMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), vec3<f32>(bitcast<f32>(_e47), bitcast<f32>(_e53), bitcast<f32>(_e59)));
 }
 
-fn gltf_shade(m_2: GltfMaterial, ray_17: Ray, hit_7: Hit) -> vec3<f32> {
-    let _e7 = sample_texture(m_2.base_texture, hit_7.uv);
+fn gltf_shade(m_2: GltfMaterial, ray_18: Ray, hit_8: Hit) -> vec3<f32> {
+    let _e7 = sample_texture(m_2.base_texture, hit_8.uv);
     let c_10 = (m_2.base_color.xyz * _e7.xyz);
-    let _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1f, m_2.emissive, ray_17, hit_7);
+    let _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1f, m_2.emissive, ray_18, hit_8);
     return _e14;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_18: Ray, hit_8: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_19: Ray, hit_9: Hit, secondary: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e4 = load_GltfMaskedMaterial(offset_10);
-            let _e5 = gltf_masked_shade(_e4, ray_18, hit_8);
+            let _e5 = gltf_masked_shade(_e4, ray_19, hit_9);
             return _e5;
         }
         case 1u: {
             let _e6 = load_GltfMaterial(offset_10);
-            let _e7 = gltf_shade(_e6, ray_18, hit_8);
+            let _e7 = gltf_shade(_e6, ray_19, hit_9);
             return _e7;
         }
         default: {
@@ -1347,33 +1293,33 @@ fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_18: Ray, hit_8: Hit,
     return vec3<f32>();
 }
 
-fn shade_direct(ray_19: Ray, c_4: Candidate) -> vec3<f32> {
+fn shade_direct(ray_20: Ray, c_4: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_4.slot];
-    let _e6 = finish_hit(ray_19, c_4);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_20, c_4);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_20: Ray, t_3: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_21: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_21: Ray, t_4: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_22: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_21.medium == 0u) {
+    if (ray_22.medium == 0u) {
         return radiance_1;
     }
-    let inst_9 = instances[(ray_21.medium - 1u)];
+    let inst_9 = instances[(ray_22.medium - 1u)];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_21, t_4, radiance_1);
+    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_22, t_3, radiance_1);
     return _e21;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_22: Ray, hit_9: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_23: Ray, hit_10: Hit) {
     return;
 }
 
@@ -1391,17 +1337,17 @@ fn spawn_origin_at(position_6: vec3<f32>, normal_6: vec3<f32>, error_1: f32, dir
     return _e12;
 }
 
-fn spawn_origin(hit_10: Hit, error_2: f32, dir_3: vec3<f32>) -> vec3<f32> {
-    let _e5 = spawn_origin_at(hit_10.position, hit_10.geometric_normal, error_2, dir_3);
+fn spawn_origin(hit_11: Hit, error_2: f32, dir_3: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_3);
     return _e5;
 }
 
 fn trace(camera_ray: Ray) -> vec3<f32> {
     var radiance_2: vec3<f32>;
-    var t_5: f32;
+    var t_4: f32;
     var stack: array<Frame, 4>;
     var depth: u32;
-    var ray_23: Ray;
+    var ray_24: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1413,8 +1359,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var waiting: bool;
     var pushed: bool;
     var radiance_3: vec3<f32>;
-    var t_6: f32;
-    var hit_11: Hit;
+    var t_5: f32;
+    var hit_12: Hit;
     var f: Frame;
     var i_4: u32;
     var medium: u32;
@@ -1423,7 +1369,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e4 = intersect_scene(camera_ray, false);
         radiance_2 = vec3(0f);
         let _e9 = F32_INF;
-        t_5 = bitcast<f32>(_e9);
+        t_4 = bitcast<f32>(_e9);
         if (_e4.slot == NO_HIT) {
             hit_error = 0f;
             let _e17 = miss(camera_ray);
@@ -1431,16 +1377,16 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         } else {
             let _e18 = shade_direct(camera_ray, _e4);
             radiance_2 = _e18;
-            t_5 = _e4.t;
+            t_4 = _e4.t;
         }
-        let _e20 = t_5;
+        let _e20 = t_4;
         let _e21 = radiance_2;
         let _e22 = through_medium(camera_ray, _e20, _e21);
         return _e22;
     }
     stack = array<Frame, 4>();
     depth = 0u;
-    ray_23 = camera_ray;
+    ray_24 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1456,10 +1402,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_23;
+            let _e67 = ray_24;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_23;
+            let _e70 = ray_24;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1471,7 +1417,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             pushed = false;
             radiance_3 = vec3(0f);
             let _e83 = F32_INF;
-            t_6 = bitcast<f32>(_e83);
+            t_5 = bitcast<f32>(_e83);
             let _e87 = s_c.slot;
             if (_e87 == NO_HIT) {
                 hit_error = 0f;
@@ -1482,34 +1428,34 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 let _e95 = s_c.slot;
                 let inst_10 = instances[_e95];
                 let _e99 = s_hit;
-                hit_11 = _e99;
+                hit_12 = _e99;
                 let _e101 = fresh;
                 if _e101 {
                     let _e102 = s_ray;
                     let _e103 = s_c;
                     let _e104 = finish_hit(_e102, _e103);
-                    hit_11 = _e104;
+                    hit_12 = _e104;
                     let _e106 = hit_error;
                     s_error = _e106;
                 } else {
                     let _e107 = s_error;
                     hit_error = _e107;
                 }
-                let _e110 = hit_11.t;
-                t_6 = _e110;
+                let _e110 = hit_12.t;
+                t_5 = _e110;
                 let _e111 = fresh;
                 let _e119 = s_ray.depth;
                 let _e123 = depth;
                 if (((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
                     spawn_count = 0u;
                     let _e131 = s_ray;
-                    let _e132 = hit_11;
+                    let _e132 = hit_12;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
                     let _e134 = spawn_count;
                     let n_9 = min(min(_e134, 1u), MAX_SPAWN);
                     if (n_9 > 0u) {
                         let _e141 = s_ray;
-                        let _e142 = hit_11;
+                        let _e142 = hit_12;
                         let _e143 = s_error;
                         let _e145 = s_c.slot;
                         f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_9, 0u);
@@ -1543,7 +1489,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 let _e187 = pushed;
                 if !(_e187) {
                     let _e191 = s_ray;
-                    let _e192 = hit_11;
+                    let _e192 = hit_12;
                     let _e193 = s_sum;
                     let _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
                     radiance_3 = _e194;
@@ -1552,7 +1498,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e195 = pushed;
             if !(_e195) {
                 let _e197 = s_ray;
-                let _e198 = t_6;
+                let _e198 = t_5;
                 let _e199 = radiance_3;
                 let _e200 = through_medium(_e197, _e198, _e199);
                 value = _e200;
@@ -1584,14 +1530,14 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let i_5 = stack[min(top_1, 3u)].next;
             stack[min(top_1, 3u)].next = (i_5 + 1u);
             let parent = stack[min(top_1, 3u)].ray;
-            let hit_13 = stack[min(top_1, 3u)].hit;
+            let hit_14 = stack[min(top_1, 3u)].hit;
             let dir_6 = stack[min(top_1, 3u)].dirs[min(i_5, 0u)];
             medium = parent.medium;
             let _e283 = stack[min(top_1, 3u)].error;
-            let _e284 = spawn_origin(hit_13, _e283, dir_6);
+            let _e284 = spawn_origin(hit_14, _e283, dir_6);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_23 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_24 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -1624,7 +1570,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s_1: u32;
-    var ray_24: Ray;
+    var ray_25: Ray;
 
     let frame_5 = frame;
     let tile_2 = tile;
@@ -1641,13 +1587,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
         let sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_24 = _e23;
-        ray_24.depth = 0u;
-        ray_24.kind = RAY_CAMERA;
-        let _e31 = ray_24.origin;
+        ray_25 = _e23;
+        ray_25.depth = 0u;
+        ray_25.kind = RAY_CAMERA;
+        let _e31 = ray_25.origin;
         let _e33 = medium_at(_e31, NO_HIT);
-        ray_24.medium = _e33;
-        let _e34 = ray_24;
+        ray_25.medium = _e33;
+        let _e34 = ray_25;
         let _e35 = trace(_e34);
         let _e36 = is_finite_vec3f(_e35);
         if all(_e36) {
