@@ -160,11 +160,11 @@ const float POINT_ERROR = 1.9073486e-6;
 const float GAMMA_1_ = 5.960465e-8;
 const float GAMMA_6_ = 3.576281e-7;
 const float GAMMA_4_ = 2.3841864e-7;
-const uint TEXTURE_NEAREST = 16u;
 const uint TEXTURE_WRAP_MASK = 3u;
-const uint TEXTURE_WRAP_CLAMP = 1u;
-const uint TEXTURE_WRAP_MIRROR = 2u;
 const uint TEXTURE_WRAP_V_SHIFT = 2u;
+const uint TEXTURE_NEAREST = 16u;
+const uint TEXTURE_WRAP_MIRROR = 2u;
+const uint TEXTURE_WRAP_CLAMP = 1u;
 const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
 const uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 const uint RGBA16F_TEXEL_WORDS = 2u;
@@ -553,17 +553,13 @@ int rem_i32_(int a_4, int b_4) {
 }
 
 int wrap_texel(int x_2, int n_2, uint mode) {
-    if ((mode == TEXTURE_WRAP_CLAMP)) {
-        return min(max(x_2, 0), (n_2 - 1));
-    }
-    if ((mode == TEXTURE_WRAP_MIRROR)) {
-        int _e14 = rem_i32_(x_2, (2 * n_2));
-        int _e20 = rem_i32_((_e14 + (2 * n_2)), (2 * n_2));
-        return ((_e20 >= n_2) ? (((2 * n_2) - 1) - _e20) : _e20);
-    }
-    int _e28 = rem_i32_(x_2, n_2);
-    int _e30 = rem_i32_((_e28 + n_2), n_2);
-    return _e30;
+    int _e3 = rem_i32_(x_2, n_2);
+    int _e5 = rem_i32_((_e3 + n_2), n_2);
+    int _e8 = rem_i32_(x_2, (2 * n_2));
+    int _e14 = rem_i32_((_e8 + (2 * n_2)), (2 * n_2));
+    int mirror = ((_e14 >= n_2) ? (((2 * n_2) - 1) - _e14) : _e14);
+    int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5);
+    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_2, 0), (n_2 - 1)) : wrapped);
 }
 
 float srgb_channel(float c_1) {
@@ -573,62 +569,67 @@ float srgb_channel(float c_1) {
     return pow(((c_1 + 0.055) / 1.055), 2.4);
 }
 
-vec4 texel_at(uint t, int x_3, int y) {
+vec4 texel_at(uint t, uint xi, uint yi) {
     uint base_1 = _group_0_binding_6_cs[t];
     uint _e10 = _group_0_binding_6_cs[(t + 1u)];
-    uint w_3 = max(_e10, 1u);
-    uint _e17 = _group_0_binding_6_cs[(t + 2u)];
-    uint h_3 = max(_e17, 1u);
+    uint index = ((yi * max(_e10, 1u)) + xi);
     uint format = _group_0_binding_6_cs[(t + 3u)];
-    uint sampler_ = _group_0_binding_6_cs[(t + 4u)];
-    int _e33 = wrap_texel(x_3, int(w_3), (sampler_ & TEXTURE_WRAP_MASK));
-    uint xi = uint(_e33);
-    int _e42 = wrap_texel(y, int(h_3), ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK));
-    uint yi = uint(_e42);
-    uint index = ((yi * w_3) + xi);
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
-        uint _e51 = _group_0_binding_7_cs[(base_1 + index)];
-        vec4 c_7 = unpackUnorm4x8(_e51);
-        float _e54 = srgb_channel(c_7.x);
-        float _e56 = srgb_channel(c_7.y);
-        float _e58 = srgb_channel(c_7.z);
-        return vec4(_e54, _e56, _e58, c_7.w);
+        uint _e25 = _group_0_binding_7_cs[(base_1 + index)];
+        vec4 c_7 = unpackUnorm4x8(_e25);
+        float _e28 = srgb_channel(c_7.x);
+        float _e30 = srgb_channel(c_7.y);
+        float _e32 = srgb_channel(c_7.z);
+        return vec4(_e28, _e30, _e32, c_7.w);
     }
     if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
-        uint _e66 = _group_0_binding_7_cs[(base_1 + index)];
-        return unpackUnorm4x8(_e66);
+        uint _e40 = _group_0_binding_7_cs[(base_1 + index)];
+        return unpackUnorm4x8(_e40);
     }
-    uint _e73 = _group_0_binding_7_cs[(base_1 + (index * RGBA16F_TEXEL_WORDS))];
-    vec2 rg = unpackHalf2x16(_e73);
-    uint _e82 = _group_0_binding_7_cs[((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
-    vec2 ba = unpackHalf2x16(_e82);
+    uint _e47 = _group_0_binding_7_cs[(base_1 + (index * RGBA16F_TEXEL_WORDS))];
+    vec2 rg = unpackHalf2x16(_e47);
+    uint _e56 = _group_0_binding_7_cs[((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
+    vec2 ba = unpackHalf2x16(_e56);
     return vec4(rg, ba);
 }
 
 vec4 sample_texture(uint t_1, vec2 uv) {
     uint _e6 = _group_0_binding_6_cs[(t_1 + 1u)];
-    float w_4 = float(max(_e6, 1u));
+    int wi = int(max(_e6, 1u));
     uint _e14 = _group_0_binding_6_cs[(t_1 + 2u)];
-    float h_4 = float(max(_e14, 1u));
-    uint _e22 = _group_0_binding_6_cs[(t_1 + 4u)];
-    if (((_e22 & TEXTURE_NEAREST) != 0u)) {
-        vec2 q_3 = floor((uv * vec2(w_4, h_4)));
-        int _e31 = i32_from_f32_(q_3.x);
-        int _e33 = i32_from_f32_(q_3.y);
-        vec4 _e34 = texel_at(t_1, _e31, _e33);
-        return _e34;
+    int hi_1 = int(max(_e14, 1u));
+    uint sampler_ = _group_0_binding_6_cs[(t_1 + 4u)];
+    uint mu = (sampler_ & TEXTURE_WRAP_MASK);
+    uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
+    vec2 size_2 = vec2(float(wi), float(hi_1));
+    if (((sampler_ & TEXTURE_NEAREST) != 0u)) {
+        vec2 q_3 = floor((uv * size_2));
+        int _e41 = i32_from_f32_(q_3.x);
+        int _e42 = wrap_texel(_e41, wi, mu);
+        int _e45 = i32_from_f32_(q_3.y);
+        int _e46 = wrap_texel(_e45, hi_1, mv);
+        vec4 _e48 = texel_at(t_1, uint(_e42), uint(_e46));
+        return _e48;
     }
-    vec2 p_7 = ((uv * vec2(w_4, h_4)) - vec2(0.5));
+    vec2 p_7 = ((uv * size_2) - vec2(0.5));
     vec2 f_1 = floor(p_7);
     vec2 fr = (p_7 - f_1);
-    int _e43 = i32_from_f32_(f_1.x);
-    int _e45 = i32_from_f32_(f_1.y);
-    vec4 _e46 = texel_at(t_1, _e43, _e45);
-    vec4 _e49 = texel_at(t_1, (_e43 + 1), _e45);
-    vec4 a_7 = mix(_e46, _e49, vec4(fr.x));
-    vec4 _e55 = texel_at(t_1, _e43, (_e45 + 1));
-    vec4 _e60 = texel_at(t_1, (_e43 + 1), (_e45 + 1));
-    vec4 b_8 = mix(_e55, _e60, vec4(fr.x));
+    int _e56 = i32_from_f32_(f_1.x);
+    int _e58 = i32_from_f32_(f_1.y);
+    int _e59 = wrap_texel(_e56, wi, mu);
+    uint x0_ = uint(_e59);
+    int _e63 = wrap_texel((_e56 + 1), wi, mu);
+    uint x1_ = uint(_e63);
+    int _e65 = wrap_texel(_e58, hi_1, mv);
+    uint y0_ = uint(_e65);
+    int _e69 = wrap_texel((_e58 + 1), hi_1, mv);
+    uint y1_ = uint(_e69);
+    vec4 _e71 = texel_at(t_1, x0_, y0_);
+    vec4 _e72 = texel_at(t_1, x1_, y0_);
+    vec4 a_7 = mix(_e71, _e72, vec4(fr.x));
+    vec4 _e76 = texel_at(t_1, x0_, y1_);
+    vec4 _e77 = texel_at(t_1, x1_, y1_);
+    vec4 b_8 = mix(_e76, _e77, vec4(fr.x));
     return mix(a_7, b_8, vec4(fr.y));
 }
 
@@ -637,9 +638,14 @@ uint frame_index_query() {
     return _e1.frame;
 }
 
+uint gltf_pcg(uint x_3) {
+    uint state_1 = ((x_3 * 747796405u) + 2891336453u);
+    uint word_2 = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
+    return ((word_2 >> 22u) ^ word_2);
+}
+
 float gltf_coverage(Ray ray_3, Hit hit_1) {
     uint h_1 = 0u;
-    uint i = 0u;
     uvec3 o_1 = floatBitsToUint(ray_3.origin);
     uvec3 d_3 = floatBitsToUint(ray_3.dir);
     h_1 = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u));
@@ -648,25 +654,12 @@ float gltf_coverage(Ray ray_3, Hit hit_1) {
     uint _e33 = h_1;
     uint _e38 = frame_index_query();
     h_1 = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
-    i = 0u;
-    bool loop_init = true;
-    while(true) {
-        if (!loop_init) {
-            uint _e65 = i;
-            i = (_e65 + 1u);
-        }
-        loop_init = false;
-        uint _e45 = i;
-        if ((_e45 >= 2u)) {
-            break;
-        }
-        uint _e47 = h_1;
-        uint state_1 = ((_e47 * 747796405u) + 2891336453u);
-        uint word_2 = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
-        h_1 = ((word_2 >> 22u) ^ word_2);
-    }
-    uint _e68 = h_1;
-    return (float((_e68 >> 8u)) * (1.0 / 16777216.0));
+    uint _e42 = h_1;
+    uint _e43 = gltf_pcg(_e42);
+    uint _e44 = gltf_pcg(_e43);
+    h_1 = _e44;
+    uint _e45 = h_1;
+    return (float((_e45 >> 8u)) * (1.0 / 16777216.0));
 }
 
 bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_4, Hit hit_2) {
@@ -778,13 +771,13 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
             uint _e32 = child;
             uint first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
-            bool loop_init_1 = true;
+            bool loop_init = true;
             while(true) {
-                if (!loop_init_1) {
+                if (!loop_init) {
                     uint _e59 = k;
                     k = (_e59 + 1u);
                 }
-                loop_init_1 = false;
+                loop_init = false;
                 uint _e37 = k;
                 if ((_e37 >= count_1)) {
                     break;
@@ -874,7 +867,7 @@ Candidate intersect_object(uint slot_3, Ray ray_10, Candidate best_1, bool shado
 uint medium_at(vec3 p_4, uint exclude) {
     uint inside = 0u;
     float nearest = 0.0;
-    uint i_1 = 0u;
+    uint i = 0u;
     if (!(HAS_MEDIA)) {
         return 0u;
     }
@@ -886,19 +879,19 @@ uint medium_at(vec3 p_4, uint exclude) {
     uint _e23 = F32_INF;
     nearest = uintBitsToFloat(_e23);
     uint end = frame_1.medium_count;
-    i_1 = 0u;
-    bool loop_init_2 = true;
+    i = 0u;
+    bool loop_init_1 = true;
     while(true) {
-        if (!loop_init_2) {
-            uint _e59 = i_1;
-            i_1 = (_e59 + 1u);
+        if (!loop_init_1) {
+            uint _e59 = i;
+            i = (_e59 + 1u);
         }
-        loop_init_2 = false;
-        uint _e29 = i_1;
+        loop_init_1 = false;
+        uint _e29 = i;
         if ((_e29 >= end)) {
             break;
         }
-        uint _e32 = i_1;
+        uint _e32 = i;
         uint slot_4 = _group_0_binding_6_cs[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if ((slot_4 != exclude)) {
             uint _e41 = F32_INF;
@@ -1034,11 +1027,11 @@ SkyGradient load_SkyGradient(uint offset_4) {
 
 vec3 sky_gradient(SkyGradient b_5, Ray ray_12) {
     vec3 _e3 = normalize_vec3f(ray_12.dir);
-    float y_1 = _e3.y;
-    if ((y_1 < 0.0)) {
-        return mix(b_5.horizon, b_5.ground, vec3(min((-(y_1) * 4.0), 1.0)));
+    float y = _e3.y;
+    if ((y < 0.0)) {
+        return mix(b_5.horizon, b_5.ground, vec3(min((-(y) * 4.0), 1.0)));
     }
-    return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y_1)));
+    return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y)));
 }
 
 vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_13) {
@@ -1187,12 +1180,12 @@ LightSample dispatch_light(uint type_id_3, uint offset_8, vec3 position_4, vec3 
     return LightSample(vec3(0.0), 0.0, vec3(0.0));
 }
 
-LightSample sample_light_query(uint i_2, vec3 position_5, vec3 normal_5) {
+LightSample sample_light_query(uint i_1, vec3 position_5, vec3 normal_5) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    if ((i_2 >= frame_4.light_count)) {
+    if ((i_1 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0));
     }
-    uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
     uint _e21 = _group_0_binding_6_cs[entry];
     uint _e26 = _group_0_binding_6_cs[(entry + 1u)];
     LightSample _e27 = dispatch_light(_e21, _e26, position_5, normal_5);
@@ -1201,7 +1194,7 @@ LightSample sample_light_query(uint i_2, vec3 position_5, vec3 normal_5) {
 
 vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, float occlusion, vec3 emissive, Ray ray_16, Hit hit_6) {
     vec3 color = vec3(0.0);
-    uint i_3 = 0u;
+    uint i_2 = 0u;
     vec3 _e7 = shading_normal(ray_16, hit_6);
     vec3 _e9 = normalize_vec3f(ray_16.dir);
     vec3 v_2 = -(_e9);
@@ -1211,19 +1204,19 @@ vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, float occlusion, v
     float ndv = max(dot(_e7, v_2), 0.0001);
     color = emissive;
     uint _e26 = light_count_query();
-    i_3 = 0u;
-    bool loop_init_3 = true;
+    i_2 = 0u;
+    bool loop_init_2 = true;
     while(true) {
-        if (!loop_init_3) {
-            uint _e107 = i_3;
-            i_3 = (_e107 + 1u);
+        if (!loop_init_2) {
+            uint _e107 = i_2;
+            i_2 = (_e107 + 1u);
         }
-        loop_init_3 = false;
-        uint _e28 = i_3;
+        loop_init_2 = false;
+        uint _e28 = i_2;
         if ((_e28 >= _e26)) {
             break;
         }
-        uint _e30 = i_3;
+        uint _e30 = i_2;
         LightSample _e33 = sample_light_query(_e30, hit_6.position, hit_6.geometric_normal);
         float ndl = max(dot(_e7, _e33.dir), 0.0);
         vec3 _e40 = normalize_vec3f((_e33.dir + v_2));
@@ -1354,7 +1347,7 @@ vec3 trace(Ray camera_ray) {
     float t_5 = 0.0;
     Hit hit_12 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
-    uint i_4 = 0u;
+    uint i_3 = 0u;
     uint medium = 0u;
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false);
@@ -1450,24 +1443,24 @@ vec3 trace(Ray camera_ray) {
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
                         f = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_9, 0u);
-                        i_4 = 0u;
-                        bool loop_init_4 = true;
+                        i_3 = 0u;
+                        bool loop_init_3 = true;
                         while(true) {
-                            if (!loop_init_4) {
-                                uint _e175 = i_4;
-                                i_4 = (_e175 + 1u);
+                            if (!loop_init_3) {
+                                uint _e175 = i_3;
+                                i_3 = (_e175 + 1u);
                             }
-                            loop_init_4 = false;
-                            uint _e155 = i_4;
+                            loop_init_3 = false;
+                            uint _e155 = i_3;
                             if ((_e155 >= n_9)) {
                                 break;
                             }
-                            uint _e158 = i_4;
-                            uint _e162 = i_4;
+                            uint _e158 = i_3;
+                            uint _e162 = i_3;
                             vec3 _e165 = spawn_dirs[_e162];
                             f.dirs[min(_e158, 0u)] = _e165;
-                            uint _e167 = i_4;
-                            uint _e171 = i_4;
+                            uint _e167 = i_3;
+                            uint _e171 = i_3;
                             vec3 _e174 = spawn_weights[_e171];
                             f.weights[min(_e167, 0u)] = _e174;
                         }
@@ -1520,11 +1513,11 @@ vec3 trace(Ray camera_ray) {
         uint _e241 = stack[min(top_1, 3u)].next;
         uint _e246 = stack[min(top_1, 3u)].count;
         if ((_e241 < _e246)) {
-            uint i_5 = stack[min(top_1, 3u)].next;
-            stack[min(top_1, 3u)].next = (i_5 + 1u);
+            uint i_4 = stack[min(top_1, 3u)].next;
+            stack[min(top_1, 3u)].next = (i_4 + 1u);
             Ray parent = stack[min(top_1, 3u)].ray;
             Hit hit_14 = stack[min(top_1, 3u)].hit;
-            vec3 dir_6 = stack[min(top_1, 3u)].dirs[min(i_5, 0u)];
+            vec3 dir_6 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
             medium = parent.medium;
             float _e283 = stack[min(top_1, 3u)].error;
             vec3 _e284 = spawn_origin(hit_14, _e283, dir_6);
@@ -1570,13 +1563,13 @@ void render_pixel(uvec2 pixel_3) {
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_1 = 0u;
-    bool loop_init_5 = true;
+    bool loop_init_4 = true;
     while(true) {
-        if (!loop_init_5) {
+        if (!loop_init_4) {
             uint _e46 = s_1;
             s_1 = (_e46 + 1u);
         }
-        loop_init_5 = false;
+        loop_init_4 = false;
         uint _e13 = s_1;
         if ((_e13 >= end_1)) {
             break;

@@ -209,11 +209,11 @@ static const float POINT_ERROR = 1.9073486e-6;
 static const float GAMMA_1_ = 5.960465e-8;
 static const float GAMMA_6_ = 3.576281e-7;
 static const float GAMMA_4_ = 2.3841864e-7;
-static const uint TEXTURE_NEAREST = 16u;
 static const uint TEXTURE_WRAP_MASK = 3u;
-static const uint TEXTURE_WRAP_CLAMP = 1u;
-static const uint TEXTURE_WRAP_MIRROR = 2u;
 static const uint TEXTURE_WRAP_V_SHIFT = 2u;
+static const uint TEXTURE_NEAREST = 16u;
+static const uint TEXTURE_WRAP_MIRROR = 2u;
+static const uint TEXTURE_WRAP_CLAMP = 1u;
 static const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
 static const uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 static const uint RGBA16F_TEXEL_WORDS = 2u;
@@ -751,17 +751,13 @@ int rem_i32_(int a_4, int b_4)
 
 int wrap_texel(int x_2, int n_2, uint mode)
 {
-    if ((mode == TEXTURE_WRAP_CLAMP)) {
-        return min(max(x_2, int(0)), asint(asuint(n_2) - asuint(int(1))));
-    }
-    if ((mode == TEXTURE_WRAP_MIRROR)) {
-        const int _e14 = rem_i32_(x_2, asint(asuint(int(2)) * asuint(n_2)));
-        const int _e20 = rem_i32_(asint(asuint(_e14) + asuint(asint(asuint(int(2)) * asuint(n_2)))), asint(asuint(int(2)) * asuint(n_2)));
-        return ((_e20 >= n_2) ? asint(asuint(asint(asuint(asint(asuint(int(2)) * asuint(n_2))) - asuint(int(1)))) - asuint(_e20)) : _e20);
-    }
-    const int _e28 = rem_i32_(x_2, n_2);
-    const int _e30 = rem_i32_(asint(asuint(_e28) + asuint(n_2)), n_2);
-    return _e30;
+    const int _e3 = rem_i32_(x_2, n_2);
+    const int _e5 = rem_i32_(asint(asuint(_e3) + asuint(n_2)), n_2);
+    const int _e8 = rem_i32_(x_2, asint(asuint(int(2)) * asuint(n_2)));
+    const int _e14 = rem_i32_(asint(asuint(_e8) + asuint(asint(asuint(int(2)) * asuint(n_2)))), asint(asuint(int(2)) * asuint(n_2)));
+    int mirror = ((_e14 >= n_2) ? asint(asuint(asint(asuint(asint(asuint(int(2)) * asuint(n_2))) - asuint(int(1)))) - asuint(_e14)) : _e14);
+    int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5);
+    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_2, int(0)), asint(asuint(n_2) - asuint(int(1)))) : wrapped);
 }
 
 float srgb_channel(float c_1)
@@ -772,64 +768,69 @@ float srgb_channel(float c_1)
     return pow(((c_1 + 0.055) / 1.055), 2.4);
 }
 
-float4 texel_at(uint t, int x_3, int y)
+float4 texel_at(uint t, uint xi, uint yi)
 {
     uint base_1 = asuint(params.Load(t*4));
     uint _e10 = asuint(params.Load((t + 1u)*4));
-    uint w_3 = max(_e10, 1u);
-    uint _e17 = asuint(params.Load((t + 2u)*4));
-    uint h_3 = max(_e17, 1u);
+    uint index = ((yi * max(_e10, 1u)) + xi);
     uint format = asuint(params.Load((t + 3u)*4));
-    uint sampler_ = asuint(params.Load((t + 4u)*4));
-    const int _e33 = wrap_texel(x_3, int(w_3), (sampler_ & TEXTURE_WRAP_MASK));
-    uint xi = uint(_e33);
-    const int _e42 = wrap_texel(y, int(h_3), ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK));
-    uint yi = uint(_e42);
-    uint index = ((yi * w_3) + xi);
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
-        uint _e51 = asuint(texels.Load((base_1 + index)*4));
-        float4 c_7 = (float4(_e51 & 0xFF, _e51 >> 8 & 0xFF, _e51 >> 16 & 0xFF, _e51 >> 24) / 255.0);
-        const float _e54 = srgb_channel(c_7.x);
-        const float _e56 = srgb_channel(c_7.y);
-        const float _e58 = srgb_channel(c_7.z);
-        return float4(_e54, _e56, _e58, c_7.w);
+        uint _e25 = asuint(texels.Load((base_1 + index)*4));
+        float4 c_7 = (float4(_e25 & 0xFF, _e25 >> 8 & 0xFF, _e25 >> 16 & 0xFF, _e25 >> 24) / 255.0);
+        const float _e28 = srgb_channel(c_7.x);
+        const float _e30 = srgb_channel(c_7.y);
+        const float _e32 = srgb_channel(c_7.z);
+        return float4(_e28, _e30, _e32, c_7.w);
     }
     if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
-        uint _e66 = asuint(texels.Load((base_1 + index)*4));
-        return (float4(_e66 & 0xFF, _e66 >> 8 & 0xFF, _e66 >> 16 & 0xFF, _e66 >> 24) / 255.0);
+        uint _e40 = asuint(texels.Load((base_1 + index)*4));
+        return (float4(_e40 & 0xFF, _e40 >> 8 & 0xFF, _e40 >> 16 & 0xFF, _e40 >> 24) / 255.0);
     }
-    uint _e73 = asuint(texels.Load((base_1 + (index * RGBA16F_TEXEL_WORDS))*4));
-    float2 rg = float2(f16tof32(_e73), f16tof32((_e73) >> 16));
-    uint _e82 = asuint(texels.Load(((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)*4));
-    float2 ba = float2(f16tof32(_e82), f16tof32((_e82) >> 16));
+    uint _e47 = asuint(texels.Load((base_1 + (index * RGBA16F_TEXEL_WORDS))*4));
+    float2 rg = float2(f16tof32(_e47), f16tof32((_e47) >> 16));
+    uint _e56 = asuint(texels.Load(((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)*4));
+    float2 ba = float2(f16tof32(_e56), f16tof32((_e56) >> 16));
     return float4(rg, ba);
 }
 
 float4 sample_texture(uint t_1, float2 uv)
 {
     uint _e6 = asuint(params.Load((t_1 + 1u)*4));
-    float w_4 = float(max(_e6, 1u));
+    int wi = int(max(_e6, 1u));
     uint _e14 = asuint(params.Load((t_1 + 2u)*4));
-    float h_4 = float(max(_e14, 1u));
-    uint _e22 = asuint(params.Load((t_1 + 4u)*4));
-    if (((_e22 & TEXTURE_NEAREST) != 0u)) {
-        float2 q_3 = floor((uv * float2(w_4, h_4)));
-        const int _e31 = i32_from_f32_(q_3.x);
-        const int _e33 = i32_from_f32_(q_3.y);
-        const float4 _e34 = texel_at(t_1, _e31, _e33);
-        return _e34;
+    int hi_1 = int(max(_e14, 1u));
+    uint sampler_ = asuint(params.Load((t_1 + 4u)*4));
+    uint mu = (sampler_ & TEXTURE_WRAP_MASK);
+    uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
+    float2 size_2 = float2(float(wi), float(hi_1));
+    if (((sampler_ & TEXTURE_NEAREST) != 0u)) {
+        float2 q_3 = floor((uv * size_2));
+        const int _e41 = i32_from_f32_(q_3.x);
+        const int _e42 = wrap_texel(_e41, wi, mu);
+        const int _e45 = i32_from_f32_(q_3.y);
+        const int _e46 = wrap_texel(_e45, hi_1, mv);
+        const float4 _e48 = texel_at(t_1, uint(_e42), uint(_e46));
+        return _e48;
     }
-    float2 p_7 = ((uv * float2(w_4, h_4)) - (0.5).xx);
+    float2 p_7 = ((uv * size_2) - (0.5).xx);
     float2 f_1 = floor(p_7);
     float2 fr = (p_7 - f_1);
-    const int _e43 = i32_from_f32_(f_1.x);
-    const int _e45 = i32_from_f32_(f_1.y);
-    const float4 _e46 = texel_at(t_1, _e43, _e45);
-    const float4 _e49 = texel_at(t_1, asint(asuint(_e43) + asuint(int(1))), _e45);
-    float4 a_7 = lerp(_e46, _e49, (fr.x).xxxx);
-    const float4 _e55 = texel_at(t_1, _e43, asint(asuint(_e45) + asuint(int(1))));
-    const float4 _e60 = texel_at(t_1, asint(asuint(_e43) + asuint(int(1))), asint(asuint(_e45) + asuint(int(1))));
-    float4 b_8 = lerp(_e55, _e60, (fr.x).xxxx);
+    const int _e56 = i32_from_f32_(f_1.x);
+    const int _e58 = i32_from_f32_(f_1.y);
+    const int _e59 = wrap_texel(_e56, wi, mu);
+    uint x0_ = uint(_e59);
+    const int _e63 = wrap_texel(asint(asuint(_e56) + asuint(int(1))), wi, mu);
+    uint x1_ = uint(_e63);
+    const int _e65 = wrap_texel(_e58, hi_1, mv);
+    uint y0_ = uint(_e65);
+    const int _e69 = wrap_texel(asint(asuint(_e58) + asuint(int(1))), hi_1, mv);
+    uint y1_ = uint(_e69);
+    const float4 _e71 = texel_at(t_1, x0_, y0_);
+    const float4 _e72 = texel_at(t_1, x1_, y0_);
+    float4 a_7 = lerp(_e71, _e72, (fr.x).xxxx);
+    const float4 _e76 = texel_at(t_1, x0_, y1_);
+    const float4 _e77 = texel_at(t_1, x1_, y1_);
+    float4 b_8 = lerp(_e76, _e77, (fr.x).xxxx);
     return lerp(a_7, b_8, (fr.y).xxxx);
 }
 
@@ -839,10 +840,16 @@ uint frame_index_query()
     return _e1.frame;
 }
 
+uint gltf_pcg(uint x_3)
+{
+    uint state_1 = ((x_3 * 747796405u) + 2891336453u);
+    uint word_2 = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
+    return ((word_2 >> 22u) ^ word_2);
+}
+
 float gltf_coverage(Ray ray_3, Hit hit_1)
 {
     uint h_1 = (uint)0;
-    uint i = (uint)0;
 
     uint3 o_1 = asuint(ray_3.origin);
     uint3 d_3 = asuint(ray_3.dir);
@@ -852,28 +859,12 @@ float gltf_coverage(Ray ray_3, Hit hit_1)
     uint _e33 = h_1;
     const uint _e38 = frame_index_query();
     h_1 = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
-    i = 0u;
-    uint2 loop_bound = uint2(4294967295u, 4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (all(loop_bound == uint2(0u, 0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e65 = i;
-            i = (_e65 + 1u);
-        }
-        loop_init = false;
-        uint _e45 = i;
-        if ((_e45 >= 2u)) {
-            break;
-        }
-        uint _e47 = h_1;
-        uint state_1 = ((_e47 * 747796405u) + 2891336453u);
-        uint word_2 = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
-        h_1 = ((word_2 >> 22u) ^ word_2);
-    }
-    uint _e68 = h_1;
-    return (float((_e68 >> 8u)) * (1.0 / 16777216.0));
+    uint _e42 = h_1;
+    const uint _e43 = gltf_pcg(_e42);
+    const uint _e44 = gltf_pcg(_e43);
+    h_1 = _e44;
+    uint _e45 = h_1;
+    return (float((_e45 >> 8u)) * (1.0 / 16777216.0));
 }
 
 bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_4, Hit hit_2)
@@ -998,10 +989,10 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     float3 scale_2 = header_1.max_;
     sp_1 = 0u;
     child = header_1.a;
-    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e20 = child;
         if (((_e20 & NODE_LEAF_BIT) != 0u)) {
             uint _e25 = child;
@@ -1009,16 +1000,16 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
             uint _e32 = child;
             uint first = (_e32 & NODE_FIRST_MASK);
             k = 0u;
-            uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
-            bool loop_init_1 = true;
+            uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+            bool loop_init = true;
             while(true) {
-                if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
-                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-                if (!loop_init_1) {
+                if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+                loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+                if (!loop_init) {
                     uint _e59 = k;
                     k = (_e59 + 1u);
                 }
-                loop_init_1 = false;
+                loop_init = false;
                 uint _e37 = k;
                 if ((_e37 >= count_1)) {
                     break;
@@ -1115,7 +1106,7 @@ uint medium_at(float3 p_4, uint exclude)
 {
     uint inside = (uint)0;
     float nearest = (float)0;
-    uint i_1 = (uint)0;
+    uint i = (uint)0;
 
     if (!(HAS_MEDIA)) {
         return 0u;
@@ -1128,22 +1119,22 @@ uint medium_at(float3 p_4, uint exclude)
     uint _e23 = F32_INF;
     nearest = asfloat(_e23);
     uint end = frame_1.medium_count;
-    i_1 = 0u;
-    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
-    bool loop_init_2 = true;
+    i = 0u;
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
     while(true) {
-        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e59 = i_1;
-            i_1 = (_e59 + 1u);
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e59 = i;
+            i = (_e59 + 1u);
         }
-        loop_init_2 = false;
-        uint _e29 = i_1;
+        loop_init_1 = false;
+        uint _e29 = i;
         if ((_e29 >= end)) {
             break;
         }
-        uint _e32 = i_1;
+        uint _e32 = i;
         uint slot_4 = asuint(params.Load((frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))*4));
         if ((slot_4 != exclude)) {
             uint _e41 = F32_INF;
@@ -1203,10 +1194,10 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2)
     }
     sp_2 = 0u;
     child_1 = header_2.a;
-    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         uint _e38 = child_1;
         if (((_e38 & NODE_LEAF_BIT) != 0u)) {
             uint _e43 = child_1;
@@ -1300,11 +1291,11 @@ SkyGradient load_SkyGradient(uint offset_4)
 float3 sky_gradient(SkyGradient b_5, Ray ray_12)
 {
     const float3 _e3 = normalize_vec3f(ray_12.dir);
-    float y_1 = _e3.y;
-    if ((y_1 < 0.0)) {
-        return lerp(b_5.horizon, b_5.ground, (min((-(y_1) * 4.0), 1.0)).xxx);
+    float y = _e3.y;
+    if ((y < 0.0)) {
+        return lerp(b_5.horizon, b_5.ground, (min((-(y) * 4.0), 1.0)).xxx);
     }
-    return lerp(b_5.horizon, b_5.zenith, (sqrt(y_1)).xxx);
+    return lerp(b_5.horizon, b_5.zenith, (sqrt(y)).xxx);
 }
 
 float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_13)
@@ -1507,14 +1498,14 @@ LightSample dispatch_light(uint type_id_3, uint offset_8, float3 position_4, flo
     return lightsample_5;
 }
 
-LightSample sample_light_query(uint i_2, float3 position_5, float3 normal_5)
+LightSample sample_light_query(uint i_1, float3 position_5, float3 normal_5)
 {
     FrameUniforms frame_4 = frame;
-    if ((i_2 >= frame_4.light_count)) {
+    if ((i_1 >= frame_4.light_count)) {
         const LightSample lightsample_6 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx);
         return lightsample_6;
     }
-    uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
     uint _e21 = asuint(params.Load(entry*4));
     uint _e26 = asuint(params.Load((entry + 1u)*4));
     const LightSample _e27 = dispatch_light(_e21, _e26, position_5, normal_5);
@@ -1525,7 +1516,7 @@ LightSample sample_light_query(uint i_2, float3 position_5, float3 normal_5)
 float3 gltf_radiance(float3 c_3, float metallic, float roughness, float occlusion, float3 emissive, Ray ray_16, Hit hit_6)
 {
     float3 color = (float3)0;
-    uint i_3 = (uint)0;
+    uint i_2 = (uint)0;
 
     const float3 _e7 = shading_normal(ray_16, hit_6);
     const float3 _e9 = normalize_vec3f(ray_16.dir);
@@ -1536,22 +1527,22 @@ float3 gltf_radiance(float3 c_3, float metallic, float roughness, float occlusio
     float ndv = max(dot(_e7, v_2), 0.0001);
     color = emissive;
     const uint _e26 = light_count_query();
-    i_3 = 0u;
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
-    bool loop_init_3 = true;
+    i_2 = 0u;
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e107 = i_3;
-            i_3 = (_e107 + 1u);
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e107 = i_2;
+            i_2 = (_e107 + 1u);
         }
-        loop_init_3 = false;
-        uint _e28 = i_3;
+        loop_init_2 = false;
+        uint _e28 = i_2;
         if ((_e28 >= _e26)) {
             break;
         }
-        uint _e30 = i_3;
+        uint _e30 = i_2;
         const LightSample _e33 = sample_light_query(_e30, hit_6.position, hit_6.geometric_normal);
         float ndl = max(dot(_e7, _e33.dir), 0.0);
         const float3 _e40 = normalize_vec3f((_e33.dir + v_2));
@@ -1733,7 +1724,7 @@ float3 trace(Ray camera_ray)
     float t_5 = (float)0;
     Hit hit_12 = (Hit)0;
     Frame f = (Frame)0;
-    uint i_4 = (uint)0;
+    uint i_3 = (uint)0;
     uint medium = (uint)0;
 
     if (!(HAS_SECONDARY_RAYS)) {
@@ -1769,10 +1760,10 @@ float3 trace(Ray camera_ray)
     s_sum = (0.0).xxx;
     fresh = false;
     waiting = false;
-    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
@@ -1833,27 +1824,27 @@ float3 trace(Ray camera_ray)
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
                         f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_9, 0u);
-                        i_4 = 0u;
-                        uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-                        bool loop_init_4 = true;
+                        i_3 = 0u;
+                        uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+                        bool loop_init_3 = true;
                         while(true) {
-                            if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-                            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-                            if (!loop_init_4) {
-                                uint _e175 = i_4;
-                                i_4 = (_e175 + 1u);
+                            if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+                            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                            if (!loop_init_3) {
+                                uint _e175 = i_3;
+                                i_3 = (_e175 + 1u);
                             }
-                            loop_init_4 = false;
-                            uint _e155 = i_4;
+                            loop_init_3 = false;
+                            uint _e155 = i_3;
                             if ((_e155 >= n_9)) {
                                 break;
                             }
-                            uint _e158 = i_4;
-                            uint _e162 = i_4;
+                            uint _e158 = i_3;
+                            uint _e162 = i_3;
                             float3 _e165 = spawn_dirs[min(uint(_e162), 0u)];
                             f.dirs[min(uint(min(_e158, 0u)), 0u)] = _e165;
-                            uint _e167 = i_4;
-                            uint _e171 = i_4;
+                            uint _e167 = i_3;
+                            uint _e171 = i_3;
                             float3 _e174 = spawn_weights[min(uint(_e171), 0u)];
                             f.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
                         }
@@ -1906,11 +1897,11 @@ float3 trace(Ray camera_ray)
         uint _e241 = stack[min(uint(min(top_1, 3u)), 3u)].next;
         uint _e246 = stack[min(uint(min(top_1, 3u)), 3u)].count;
         if ((_e241 < _e246)) {
-            uint i_5 = stack[min(uint(min(top_1, 3u)), 3u)].next;
-            stack[min(uint(min(top_1, 3u)), 3u)].next = (i_5 + 1u);
+            uint i_4 = stack[min(uint(min(top_1, 3u)), 3u)].next;
+            stack[min(uint(min(top_1, 3u)), 3u)].next = (i_4 + 1u);
             Ray parent = stack[min(uint(min(top_1, 3u)), 3u)].ray;
             Hit hit_15 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
-            float3 dir_6 = stack[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_5, 0u)), 0u)];
+            float3 dir_6 = stack[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_4, 0u)), 0u)];
             medium = parent.medium;
             float _e283 = stack[min(uint(min(top_1, 3u)), 3u)].error;
             const float3 _e284 = spawn_origin(hit_15, _e283, dir_6);
@@ -1960,16 +1951,16 @@ void render_pixel(uint2 pixel_3)
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_1 = 0u;
-    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
-    bool loop_init_5 = true;
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    bool loop_init_4 = true;
     while(true) {
-        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        if (!loop_init_5) {
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_4) {
             uint _e46 = s_1;
             s_1 = (_e46 + 1u);
         }
-        loop_init_5 = false;
+        loop_init_4 = false;
         uint _e13 = s_1;
         if ((_e13 >= end_1)) {
             break;

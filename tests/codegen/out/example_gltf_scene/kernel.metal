@@ -200,11 +200,11 @@ constant float POINT_ERROR = 0.0000019073486;
 constant float GAMMA_1_ = 0.00000005960465;
 constant float GAMMA_6_ = 0.0000003576281;
 constant float GAMMA_4_ = 0.00000023841864;
-constant uint TEXTURE_NEAREST = 16u;
 constant uint TEXTURE_WRAP_MASK = 3u;
-constant uint TEXTURE_WRAP_CLAMP = 1u;
-constant uint TEXTURE_WRAP_MIRROR = 2u;
 constant uint TEXTURE_WRAP_V_SHIFT = 2u;
+constant uint TEXTURE_NEAREST = 16u;
+constant uint TEXTURE_WRAP_MIRROR = 2u;
+constant uint TEXTURE_WRAP_CLAMP = 1u;
 constant uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
 constant uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 constant uint RGBA16F_TEXEL_WORDS = 2u;
@@ -694,17 +694,13 @@ int wrap_texel(
     int n_2,
     uint mode
 ) {
-    if (mode == TEXTURE_WRAP_CLAMP) {
-        return metal::min(metal::max(x_2, 0), as_type<int>(as_type<uint>(n_2) - as_type<uint>(1)));
-    }
-    if (mode == TEXTURE_WRAP_MIRROR) {
-        int _e14 = rem_i32_(x_2, as_type<int>(as_type<uint>(2) * as_type<uint>(n_2)));
-        int _e20 = rem_i32_(as_type<int>(as_type<uint>(_e14) + as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_2)))), as_type<int>(as_type<uint>(2) * as_type<uint>(n_2)));
-        return (_e20 >= n_2) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_2))) - as_type<uint>(1))) - as_type<uint>(_e20)) : _e20;
-    }
-    int _e28 = rem_i32_(x_2, n_2);
-    int _e30 = rem_i32_(as_type<int>(as_type<uint>(_e28) + as_type<uint>(n_2)), n_2);
-    return _e30;
+    int _e3 = rem_i32_(x_2, n_2);
+    int _e5 = rem_i32_(as_type<int>(as_type<uint>(_e3) + as_type<uint>(n_2)), n_2);
+    int _e8 = rem_i32_(x_2, as_type<int>(as_type<uint>(2) * as_type<uint>(n_2)));
+    int _e14 = rem_i32_(as_type<int>(as_type<uint>(_e8) + as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_2)))), as_type<int>(as_type<uint>(2) * as_type<uint>(n_2)));
+    int mirror = (_e14 >= n_2) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_2))) - as_type<uint>(1))) - as_type<uint>(_e14)) : _e14;
+    int wrapped = (mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5;
+    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(x_2, 0), as_type<int>(as_type<uint>(n_2) - as_type<uint>(1))) : wrapped;
 }
 
 float srgb_channel(
@@ -718,40 +714,32 @@ float srgb_channel(
 
 metal::float4 texel_at(
     uint t,
-    int x_3,
-    int y,
+    uint xi,
+    uint yi,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint base_1 = params[t];
     uint _e10 = params[t + 1u];
-    uint w_3 = metal::max(_e10, 1u);
-    uint _e17 = params[t + 2u];
-    uint h_3 = metal::max(_e17, 1u);
+    uint index = (yi * metal::max(_e10, 1u)) + xi;
     uint format = params[t + 3u];
-    uint sampler = params[t + 4u];
-    int _e33 = wrap_texel(x_3, static_cast<int>(w_3), sampler & TEXTURE_WRAP_MASK);
-    uint xi = static_cast<uint>(_e33);
-    int _e42 = wrap_texel(y, static_cast<int>(h_3), (sampler >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
-    uint yi = static_cast<uint>(_e42);
-    uint index = (yi * w_3) + xi;
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        uint _e51 = texels[base_1 + index];
-        metal::float4 c_7 = metal::unpack_unorm4x8_to_float(_e51);
-        float _e54 = srgb_channel(c_7.x);
-        float _e56 = srgb_channel(c_7.y);
-        float _e58 = srgb_channel(c_7.z);
-        return metal::float4(_e54, _e56, _e58, c_7.w);
+        uint _e25 = texels[base_1 + index];
+        metal::float4 c_7 = metal::unpack_unorm4x8_to_float(_e25);
+        float _e28 = srgb_channel(c_7.x);
+        float _e30 = srgb_channel(c_7.y);
+        float _e32 = srgb_channel(c_7.z);
+        return metal::float4(_e28, _e30, _e32, c_7.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
-        uint _e66 = texels[base_1 + index];
-        return metal::unpack_unorm4x8_to_float(_e66);
+        uint _e40 = texels[base_1 + index];
+        return metal::unpack_unorm4x8_to_float(_e40);
     }
-    uint _e73 = texels[base_1 + (index * RGBA16F_TEXEL_WORDS)];
-    metal::float2 rg = float2(as_type<half2>(_e73));
-    uint _e82 = texels[(base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
-    metal::float2 ba = float2(as_type<half2>(_e82));
+    uint _e47 = texels[base_1 + (index * RGBA16F_TEXEL_WORDS)];
+    metal::float2 rg = float2(as_type<half2>(_e47));
+    uint _e56 = texels[(base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
+    metal::float2 ba = float2(as_type<half2>(_e56));
     return metal::float4(rg, ba);
 }
 
@@ -763,28 +751,41 @@ metal::float4 sample_texture(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e6 = params[t_1 + 1u];
-    float w_4 = static_cast<float>(metal::max(_e6, 1u));
+    int wi = static_cast<int>(metal::max(_e6, 1u));
     uint _e14 = params[t_1 + 2u];
-    float h_4 = static_cast<float>(metal::max(_e14, 1u));
-    uint _e22 = params[t_1 + 4u];
-    if ((_e22 & TEXTURE_NEAREST) != 0u) {
-        metal::float2 q_3 = metal::floor(uv * metal::float2(w_4, h_4));
-        int _e31 = i32_from_f32_(q_3.x);
-        int _e33 = i32_from_f32_(q_3.y);
-        metal::float4 _e34 = texel_at(t_1, _e31, _e33, params, texels, _buffer_sizes);
-        return _e34;
+    int hi_1 = static_cast<int>(metal::max(_e14, 1u));
+    uint sampler = params[t_1 + 4u];
+    uint mu = sampler & TEXTURE_WRAP_MASK;
+    uint mv = (sampler >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK;
+    metal::float2 size_2 = metal::float2(static_cast<float>(wi), static_cast<float>(hi_1));
+    if ((sampler & TEXTURE_NEAREST) != 0u) {
+        metal::float2 q_3 = metal::floor(uv * size_2);
+        int _e41 = i32_from_f32_(q_3.x);
+        int _e42 = wrap_texel(_e41, wi, mu);
+        int _e45 = i32_from_f32_(q_3.y);
+        int _e46 = wrap_texel(_e45, hi_1, mv);
+        metal::float4 _e48 = texel_at(t_1, static_cast<uint>(_e42), static_cast<uint>(_e46), params, texels, _buffer_sizes);
+        return _e48;
     }
-    metal::float2 p_7 = (uv * metal::float2(w_4, h_4)) - metal::float2(0.5);
+    metal::float2 p_7 = (uv * size_2) - metal::float2(0.5);
     metal::float2 f_1 = metal::floor(p_7);
     metal::float2 fr = p_7 - f_1;
-    int _e43 = i32_from_f32_(f_1.x);
-    int _e45 = i32_from_f32_(f_1.y);
-    metal::float4 _e46 = texel_at(t_1, _e43, _e45, params, texels, _buffer_sizes);
-    metal::float4 _e49 = texel_at(t_1, as_type<int>(as_type<uint>(_e43) + as_type<uint>(1)), _e45, params, texels, _buffer_sizes);
-    metal::float4 a_7 = metal::mix(_e46, _e49, metal::float4(fr.x));
-    metal::float4 _e55 = texel_at(t_1, _e43, as_type<int>(as_type<uint>(_e45) + as_type<uint>(1)), params, texels, _buffer_sizes);
-    metal::float4 _e60 = texel_at(t_1, as_type<int>(as_type<uint>(_e43) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e45) + as_type<uint>(1)), params, texels, _buffer_sizes);
-    metal::float4 b_8 = metal::mix(_e55, _e60, metal::float4(fr.x));
+    int _e56 = i32_from_f32_(f_1.x);
+    int _e58 = i32_from_f32_(f_1.y);
+    int _e59 = wrap_texel(_e56, wi, mu);
+    uint x0_ = static_cast<uint>(_e59);
+    int _e63 = wrap_texel(as_type<int>(as_type<uint>(_e56) + as_type<uint>(1)), wi, mu);
+    uint x1_ = static_cast<uint>(_e63);
+    int _e65 = wrap_texel(_e58, hi_1, mv);
+    uint y0_ = static_cast<uint>(_e65);
+    int _e69 = wrap_texel(as_type<int>(as_type<uint>(_e58) + as_type<uint>(1)), hi_1, mv);
+    uint y1_ = static_cast<uint>(_e69);
+    metal::float4 _e71 = texel_at(t_1, x0_, y0_, params, texels, _buffer_sizes);
+    metal::float4 _e72 = texel_at(t_1, x1_, y0_, params, texels, _buffer_sizes);
+    metal::float4 a_7 = metal::mix(_e71, _e72, metal::float4(fr.x));
+    metal::float4 _e76 = texel_at(t_1, x0_, y1_, params, texels, _buffer_sizes);
+    metal::float4 _e77 = texel_at(t_1, x1_, y1_, params, texels, _buffer_sizes);
+    metal::float4 b_8 = metal::mix(_e76, _e77, metal::float4(fr.x));
     return metal::mix(a_7, b_8, metal::float4(fr.y));
 }
 
@@ -795,13 +796,20 @@ uint frame_index_query(
     return _e1.frame;
 }
 
+uint gltf_pcg(
+    uint x_3
+) {
+    uint state_1 = (x_3 * 747796405u) + 2891336453u;
+    uint word_2 = ((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u;
+    return (word_2 >> 22u) ^ word_2;
+}
+
 float gltf_coverage(
     Ray ray_3,
     Hit hit_1,
     constant TileParams& tile
 ) {
     uint h_1 = {};
-    uint i = {};
     metal::uint3 o_1 = as_type<metal::uint3>(ray_3.origin);
     metal::uint3 d_3 = as_type<metal::uint3>(ray_3.dir);
     h_1 = ((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u);
@@ -810,28 +818,12 @@ float gltf_coverage(
     uint _e33 = h_1;
     uint _e38 = frame_index_query(tile);
     h_1 = (_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u);
-    i = 0u;
-    uint2 loop_bound = uint2(4294967295u);
-    bool loop_init = true;
-    while(true) {
-        if (metal::all(loop_bound == uint2(0u))) { break; }
-        loop_bound -= uint2(loop_bound.y == 0u, 1u);
-        if (!loop_init) {
-            uint _e65 = i;
-            i = _e65 + 1u;
-        }
-        loop_init = false;
-        uint _e45 = i;
-        if (_e45 >= 2u) {
-            break;
-        }
-        uint _e47 = h_1;
-        uint state_1 = (_e47 * 747796405u) + 2891336453u;
-        uint word_2 = ((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u;
-        h_1 = (word_2 >> 22u) ^ word_2;
-    }
-    uint _e68 = h_1;
-    return static_cast<float>(_e68 >> 8u) * (1.0 / 16777216.0);
+    uint _e42 = h_1;
+    uint _e43 = gltf_pcg(_e42);
+    uint _e44 = gltf_pcg(_e43);
+    h_1 = _e44;
+    uint _e45 = h_1;
+    return static_cast<float>(_e45 >> 8u) * (1.0 / 16777216.0);
 }
 
 bool gltf_counts(
@@ -1018,10 +1010,10 @@ Candidate intersect_mesh(
     metal::float3 scale_2 = header_1.max;
     sp_1 = 0u;
     child = header_1.a;
-    uint2 loop_bound_1 = uint2(4294967295u);
+    uint2 loop_bound = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
-        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
         uint _e20 = child;
         if ((_e20 & NODE_LEAF_BIT) != 0u) {
             uint _e25 = child;
@@ -1029,16 +1021,16 @@ Candidate intersect_mesh(
             uint _e32 = child;
             uint first = _e32 & NODE_FIRST_MASK;
             k = 0u;
-            uint2 loop_bound_2 = uint2(4294967295u);
-            bool loop_init_1 = true;
+            uint2 loop_bound_1 = uint2(4294967295u);
+            bool loop_init = true;
             while(true) {
-                if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-                loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-                if (!loop_init_1) {
+                if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+                loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+                if (!loop_init) {
                     uint _e59 = k;
                     k = _e59 + 1u;
                 }
-                loop_init_1 = false;
+                loop_init = false;
                 uint _e37 = k;
                 if (_e37 >= count_1) {
                     break;
@@ -1159,7 +1151,7 @@ uint medium_at(
 ) {
     uint inside = {};
     float nearest = {};
-    uint i_1 = {};
+    uint i = {};
     if (!(HAS_MEDIA)) {
         return 0u;
     }
@@ -1171,22 +1163,22 @@ uint medium_at(
     uint _e23 = F32_INF;
     nearest = as_type<float>(_e23);
     uint end = frame_1.medium_count;
-    i_1 = 0u;
-    uint2 loop_bound_3 = uint2(4294967295u);
-    bool loop_init_2 = true;
+    i = 0u;
+    uint2 loop_bound_2 = uint2(4294967295u);
+    bool loop_init_1 = true;
     while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_2) {
-            uint _e59 = i_1;
-            i_1 = _e59 + 1u;
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e59 = i;
+            i = _e59 + 1u;
         }
-        loop_init_2 = false;
-        uint _e29 = i_1;
+        loop_init_1 = false;
+        uint _e29 = i;
         if (_e29 >= end) {
             break;
         }
-        uint _e32 = i_1;
+        uint _e32 = i;
         uint slot_4 = params[frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE)];
         if (slot_4 != exclude) {
             uint _e41 = F32_INF;
@@ -1259,10 +1251,10 @@ Candidate intersect_scene(
     }
     sp_2 = 0u;
     child_1 = header_2.a;
-    uint2 loop_bound_4 = uint2(4294967295u);
+    uint2 loop_bound_3 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
         uint _e38 = child_1;
         if ((_e38 & NODE_LEAF_BIT) != 0u) {
             uint _e43 = child_1;
@@ -1350,11 +1342,11 @@ metal::float3 sky_gradient(
     Ray ray_12
 ) {
     metal::float3 _e3 = normalize_vec3f(ray_12.dir);
-    float y_1 = _e3.y;
-    if (y_1 < 0.0) {
-        return metal::mix(b_5.horizon, b_5.ground, metal::float3(metal::min(-(y_1) * 4.0, 1.0)));
+    float y = _e3.y;
+    if (y < 0.0) {
+        return metal::mix(b_5.horizon, b_5.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
     }
-    return metal::mix(b_5.horizon, b_5.zenith, metal::float3(metal::sqrt(y_1)));
+    return metal::mix(b_5.horizon, b_5.zenith, metal::float3(metal::sqrt(y)));
 }
 
 metal::float3 dispatch_miss(
@@ -1612,7 +1604,7 @@ LightSample dispatch_light(
 }
 
 LightSample sample_light_query(
-    uint i_2,
+    uint i_1,
     metal::float3 position_5,
     metal::float3 normal_5,
     constant TileParams& tile,
@@ -1630,10 +1622,10 @@ LightSample sample_light_query(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     FrameUniforms frame_4 = frame;
-    if (i_2 >= frame_4.light_count) {
+    if (i_1 >= frame_4.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0)};
     }
-    uint entry = frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE);
+    uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
     uint _e21 = params[entry];
     uint _e26 = params[entry + 1u];
     LightSample _e27 = dispatch_light(_e21, _e26, position_5, normal_5, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
@@ -1663,7 +1655,7 @@ metal::float3 gltf_radiance(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 color = {};
-    uint i_3 = {};
+    uint i_2 = {};
     metal::float3 _e7 = shading_normal(ray_16, hit_6);
     metal::float3 _e9 = normalize_vec3f(ray_16.dir);
     metal::float3 v_2 = -(_e9);
@@ -1673,22 +1665,22 @@ metal::float3 gltf_radiance(
     float ndv = metal::max(metal::dot(_e7, v_2), 0.0001);
     color = emissive;
     uint _e26 = light_count_query(frame);
-    i_3 = 0u;
-    uint2 loop_bound_5 = uint2(4294967295u);
-    bool loop_init_3 = true;
+    i_2 = 0u;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_2 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e107 = i_3;
-            i_3 = _e107 + 1u;
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e107 = i_2;
+            i_2 = _e107 + 1u;
         }
-        loop_init_3 = false;
-        uint _e28 = i_3;
+        loop_init_2 = false;
+        uint _e28 = i_2;
         if (_e28 >= _e26) {
             break;
         }
-        uint _e30 = i_3;
+        uint _e30 = i_2;
         LightSample _e33 = sample_light_query(_e30, hit_6.position, hit_6.geometric_normal, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
         float ndl = metal::max(metal::dot(_e7, _e33.dir), 0.0);
         metal::float3 _e40 = normalize_vec3f(_e33.dir + v_2);
@@ -1936,7 +1928,7 @@ metal::float3 trace(
     float t_5 = {};
     Hit hit_12 = {};
     Frame f = {};
-    uint i_4 = {};
+    uint i_3 = {};
     uint medium = {};
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
@@ -1971,10 +1963,10 @@ metal::float3 trace(
     s_sum = metal::float3(0.0);
     fresh = false;
     waiting = false;
-    uint2 loop_bound_6 = uint2(4294967295u);
+    uint2 loop_bound_5 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
@@ -2035,27 +2027,27 @@ metal::float3 trace(
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
                         f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_9, 0u};
-                        i_4 = 0u;
-                        uint2 loop_bound_7 = uint2(4294967295u);
-                        bool loop_init_4 = true;
+                        i_3 = 0u;
+                        uint2 loop_bound_6 = uint2(4294967295u);
+                        bool loop_init_3 = true;
                         while(true) {
-                            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-                            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-                            if (!loop_init_4) {
-                                uint _e175 = i_4;
-                                i_4 = _e175 + 1u;
+                            if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+                            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                            if (!loop_init_3) {
+                                uint _e175 = i_3;
+                                i_3 = _e175 + 1u;
                             }
-                            loop_init_4 = false;
-                            uint _e155 = i_4;
+                            loop_init_3 = false;
+                            uint _e155 = i_3;
                             if (_e155 >= n_9) {
                                 break;
                             }
-                            uint _e158 = i_4;
-                            uint _e162 = i_4;
+                            uint _e158 = i_3;
+                            uint _e162 = i_3;
                             metal::float3 _e165 = spawn_dirs.inner[_e162];
                             f.dirs.inner[metal::min(_e158, 0u)] = _e165;
-                            uint _e167 = i_4;
-                            uint _e171 = i_4;
+                            uint _e167 = i_3;
+                            uint _e171 = i_3;
                             metal::float3 _e174 = spawn_weights.inner[_e171];
                             f.weights.inner[metal::min(_e167, 0u)] = _e174;
                         }
@@ -2108,11 +2100,11 @@ metal::float3 trace(
         uint _e241 = stack.inner[metal::min(top_1, 3u)].next;
         uint _e246 = stack.inner[metal::min(top_1, 3u)].count;
         if (_e241 < _e246) {
-            uint i_5 = stack.inner[metal::min(top_1, 3u)].next;
-            stack.inner[metal::min(top_1, 3u)].next = i_5 + 1u;
+            uint i_4 = stack.inner[metal::min(top_1, 3u)].next;
+            stack.inner[metal::min(top_1, 3u)].next = i_4 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 3u)].ray;
             Hit hit_14 = stack.inner[metal::min(top_1, 3u)].hit;
-            metal::float3 dir_6 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_5, 0u)];
+            metal::float3 dir_6 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_4, 0u)];
             medium = parent.medium;
             float _e283 = stack.inner[metal::min(top_1, 3u)].error;
             metal::float3 _e284 = spawn_origin(hit_14, _e283, dir_6);
@@ -2183,16 +2175,16 @@ void render_pixel(
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_1 = 0u;
-    uint2 loop_bound_8 = uint2(4294967295u);
-    bool loop_init_5 = true;
+    uint2 loop_bound_7 = uint2(4294967295u);
+    bool loop_init_4 = true;
     while(true) {
-        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        if (!loop_init_5) {
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_4) {
             uint _e46 = s_1;
             s_1 = _e46 + 1u;
         }
-        loop_init_5 = false;
+        loop_init_4 = false;
         uint _e13 = s_1;
         if (_e13 >= end_1) {
             break;

@@ -172,11 +172,11 @@ const POINT_ERROR: f32 = 0.0000019073486f;
 const GAMMA_1_: f32 = 0.00000005960465f;
 const GAMMA_6_: f32 = 0.0000003576281f;
 const GAMMA_4_: f32 = 0.00000023841864f;
-const TEXTURE_NEAREST: u32 = 16u;
 const TEXTURE_WRAP_MASK: u32 = 3u;
-const TEXTURE_WRAP_CLAMP: u32 = 1u;
-const TEXTURE_WRAP_MIRROR: u32 = 2u;
 const TEXTURE_WRAP_V_SHIFT: u32 = 2u;
+const TEXTURE_NEAREST: u32 = 16u;
+const TEXTURE_WRAP_MIRROR: u32 = 2u;
+const TEXTURE_WRAP_CLAMP: u32 = 1u;
 const TEXTURE_FORMAT_RGBA8_SRGB: u32 = 0u;
 const TEXTURE_FORMAT_RGBA8_UNORM: u32 = 2u;
 const RGBA16F_TEXEL_WORDS: u32 = 2u;
@@ -562,17 +562,13 @@ fn rem_i32_(a_4: i32, b_4: i32) -> i32 {
 }
 
 fn wrap_texel(x_2: i32, n_2: i32, mode: u32) -> i32 {
-    if (mode == TEXTURE_WRAP_CLAMP) {
-        return min(max(x_2, 0i), (n_2 - 1i));
-    }
-    if (mode == TEXTURE_WRAP_MIRROR) {
-        let _e14 = rem_i32_(x_2, (2i * n_2));
-        let _e20 = rem_i32_((_e14 + (2i * n_2)), (2i * n_2));
-        return select(_e20, (((2i * n_2) - 1i) - _e20), (_e20 >= n_2));
-    }
-    let _e28 = rem_i32_(x_2, n_2);
-    let _e30 = rem_i32_((_e28 + n_2), n_2);
-    return _e30;
+    let _e3 = rem_i32_(x_2, n_2);
+    let _e5 = rem_i32_((_e3 + n_2), n_2);
+    let _e8 = rem_i32_(x_2, (2i * n_2));
+    let _e14 = rem_i32_((_e8 + (2i * n_2)), (2i * n_2));
+    let mirror = select(_e14, (((2i * n_2) - 1i) - _e14), (_e14 >= n_2));
+    let wrapped = select(_e5, mirror, (mode == TEXTURE_WRAP_MIRROR));
+    return select(wrapped, min(max(x_2, 0i), (n_2 - 1i)), (mode == TEXTURE_WRAP_CLAMP));
 }
 
 fn srgb_channel(c_1: f32) -> f32 {
@@ -582,62 +578,67 @@ fn srgb_channel(c_1: f32) -> f32 {
     return pow(((c_1 + 0.055f) / 1.055f), 2.4f);
 }
 
-fn texel_at(t: u32, x_3: i32, y: i32) -> vec4<f32> {
+fn texel_at(t: u32, xi: u32, yi: u32) -> vec4<f32> {
     let base_1 = params[t];
     let _e10 = params[(t + 1u)];
-    let w_3 = max(_e10, 1u);
-    let _e17 = params[(t + 2u)];
-    let h_3 = max(_e17, 1u);
+    let index = ((yi * max(_e10, 1u)) + xi);
     let format = params[(t + 3u)];
-    let sampler_ = params[(t + 4u)];
-    let _e33 = wrap_texel(x_3, i32(w_3), (sampler_ & TEXTURE_WRAP_MASK));
-    let xi = u32(_e33);
-    let _e42 = wrap_texel(y, i32(h_3), ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK));
-    let yi = u32(_e42);
-    let index = ((yi * w_3) + xi);
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        let _e51 = texels[(base_1 + index)];
-        let c_7 = unpack4x8unorm(_e51);
-        let _e54 = srgb_channel(c_7.x);
-        let _e56 = srgb_channel(c_7.y);
-        let _e58 = srgb_channel(c_7.z);
-        return vec4<f32>(_e54, _e56, _e58, c_7.w);
+        let _e25 = texels[(base_1 + index)];
+        let c_7 = unpack4x8unorm(_e25);
+        let _e28 = srgb_channel(c_7.x);
+        let _e30 = srgb_channel(c_7.y);
+        let _e32 = srgb_channel(c_7.z);
+        return vec4<f32>(_e28, _e30, _e32, c_7.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
-        let _e66 = texels[(base_1 + index)];
-        return unpack4x8unorm(_e66);
+        let _e40 = texels[(base_1 + index)];
+        return unpack4x8unorm(_e40);
     }
-    let _e73 = texels[(base_1 + (index * RGBA16F_TEXEL_WORDS))];
-    let rg = unpack2x16float(_e73);
-    let _e82 = texels[((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
-    let ba = unpack2x16float(_e82);
+    let _e47 = texels[(base_1 + (index * RGBA16F_TEXEL_WORDS))];
+    let rg = unpack2x16float(_e47);
+    let _e56 = texels[((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
+    let ba = unpack2x16float(_e56);
     return vec4<f32>(rg, ba);
 }
 
 fn sample_texture(t_1: u32, uv: vec2<f32>) -> vec4<f32> {
     let _e6 = params[(t_1 + 1u)];
-    let w_4 = f32(max(_e6, 1u));
+    let wi = i32(max(_e6, 1u));
     let _e14 = params[(t_1 + 2u)];
-    let h_4 = f32(max(_e14, 1u));
-    let _e22 = params[(t_1 + 4u)];
-    if ((_e22 & TEXTURE_NEAREST) != 0u) {
-        let q_3 = floor((uv * vec2<f32>(w_4, h_4)));
-        let _e31 = i32_from_f32_(q_3.x);
-        let _e33 = i32_from_f32_(q_3.y);
-        let _e34 = texel_at(t_1, _e31, _e33);
-        return _e34;
+    let hi_1 = i32(max(_e14, 1u));
+    let sampler_ = params[(t_1 + 4u)];
+    let mu = (sampler_ & TEXTURE_WRAP_MASK);
+    let mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
+    let size_2 = vec2<f32>(f32(wi), f32(hi_1));
+    if ((sampler_ & TEXTURE_NEAREST) != 0u) {
+        let q_3 = floor((uv * size_2));
+        let _e41 = i32_from_f32_(q_3.x);
+        let _e42 = wrap_texel(_e41, wi, mu);
+        let _e45 = i32_from_f32_(q_3.y);
+        let _e46 = wrap_texel(_e45, hi_1, mv);
+        let _e48 = texel_at(t_1, u32(_e42), u32(_e46));
+        return _e48;
     }
-    let p_7 = ((uv * vec2<f32>(w_4, h_4)) - vec2(0.5f));
+    let p_7 = ((uv * size_2) - vec2(0.5f));
     let f_1 = floor(p_7);
     let fr = (p_7 - f_1);
-    let _e43 = i32_from_f32_(f_1.x);
-    let _e45 = i32_from_f32_(f_1.y);
-    let _e46 = texel_at(t_1, _e43, _e45);
-    let _e49 = texel_at(t_1, (_e43 + 1i), _e45);
-    let a_7 = mix(_e46, _e49, vec4(fr.x));
-    let _e55 = texel_at(t_1, _e43, (_e45 + 1i));
-    let _e60 = texel_at(t_1, (_e43 + 1i), (_e45 + 1i));
-    let b_8 = mix(_e55, _e60, vec4(fr.x));
+    let _e56 = i32_from_f32_(f_1.x);
+    let _e58 = i32_from_f32_(f_1.y);
+    let _e59 = wrap_texel(_e56, wi, mu);
+    let x0_ = u32(_e59);
+    let _e63 = wrap_texel((_e56 + 1i), wi, mu);
+    let x1_ = u32(_e63);
+    let _e65 = wrap_texel(_e58, hi_1, mv);
+    let y0_ = u32(_e65);
+    let _e69 = wrap_texel((_e58 + 1i), hi_1, mv);
+    let y1_ = u32(_e69);
+    let _e71 = texel_at(t_1, x0_, y0_);
+    let _e72 = texel_at(t_1, x1_, y0_);
+    let a_7 = mix(_e71, _e72, vec4(fr.x));
+    let _e76 = texel_at(t_1, x0_, y1_);
+    let _e77 = texel_at(t_1, x1_, y1_);
+    let b_8 = mix(_e76, _e77, vec4(fr.x));
     return mix(a_7, b_8, vec4(fr.y));
 }
 
@@ -646,9 +647,14 @@ fn frame_index_query() -> u32 {
     return _e1.frame;
 }
 
+fn gltf_pcg(x_3: u32) -> u32 {
+    let state_1 = ((x_3 * 747796405u) + 2891336453u);
+    let word_2 = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
+    return ((word_2 >> 22u) ^ word_2);
+}
+
 fn gltf_coverage(ray_3: Ray, hit_1: Hit) -> f32 {
     var h_1: u32;
-    var i: u32;
 
     let o_1 = bitcast<vec3<u32>>(ray_3.origin);
     let d_3 = bitcast<vec3<u32>>(ray_3.dir);
@@ -658,23 +664,12 @@ fn gltf_coverage(ray_3: Ray, hit_1: Hit) -> f32 {
     let _e33 = h_1;
     let _e38 = frame_index_query();
     h_1 = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
-    i = 0u;
-    loop {
-        let _e45 = i;
-        if (_e45 >= 2u) {
-            break;
-        }
-        let _e47 = h_1;
-        let state_1 = ((_e47 * 747796405u) + 2891336453u);
-        let word_2 = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
-        h_1 = ((word_2 >> 22u) ^ word_2);
-        continuing {
-            let _e65 = i;
-            i = (_e65 + 1u);
-        }
-    }
-    let _e68 = h_1;
-    return (f32((_e68 >> 8u)) * (1f / 16777216f));
+    let _e42 = h_1;
+    let _e43 = gltf_pcg(_e42);
+    let _e44 = gltf_pcg(_e43);
+    h_1 = _e44;
+    let _e45 = h_1;
+    return (f32((_e45 >> 8u)) * (1f / 16777216f));
 }
 
 fn gltf_counts(alpha: f32, cutoff: f32, blend: u32, double_sided: u32, ray_4: Ray, hit_2: Hit) -> bool {
@@ -882,7 +877,7 @@ fn intersect_object(slot_3: u32, ray_10: Ray, best_1: Candidate, shadow_1: bool)
 fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     var inside: u32;
     var nearest: f32;
-    var i_1: u32;
+    var i: u32;
 
     if !(HAS_MEDIA) {
         return 0u;
@@ -895,13 +890,13 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     let _e23 = F32_INF;
     nearest = bitcast<f32>(_e23);
     let end = frame_1.medium_count;
-    i_1 = 0u;
+    i = 0u;
     loop {
-        let _e29 = i_1;
+        let _e29 = i;
         if (_e29 >= end) {
             break;
         }
-        let _e32 = i_1;
+        let _e32 = i;
         let slot_4 = params[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if (slot_4 != exclude) {
             let _e41 = F32_INF;
@@ -917,8 +912,8 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
             }
         }
         continuing {
-            let _e59 = i_1;
-            i_1 = (_e59 + 1u);
+            let _e59 = i;
+            i = (_e59 + 1u);
         }
     }
     let _e62 = inside;
@@ -1042,11 +1037,11 @@ fn load_SkyGradient(offset_4: u32) -> SkyGradient {
 
 fn sky_gradient(b_5: SkyGradient, ray_12: Ray) -> vec3<f32> {
     let _e3 = normalize_vec3f(ray_12.dir);
-    let y_1 = _e3.y;
-    if (y_1 < 0f) {
-        return mix(b_5.horizon, b_5.ground, vec3(min((-(y_1) * 4f), 1f)));
+    let y = _e3.y;
+    if (y < 0f) {
+        return mix(b_5.horizon, b_5.ground, vec3(min((-(y) * 4f), 1f)));
     }
-    return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y_1)));
+    return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y)));
 }
 
 fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_13: Ray) -> vec3<f32> {
@@ -1196,12 +1191,12 @@ fn dispatch_light(type_id_3: u32, offset_8: u32, position_4: vec3<f32>, normal_4
     return LightSample();
 }
 
-fn sample_light_query(i_2: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
+fn sample_light_query(i_1: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
     let frame_4 = frame;
-    if (i_2 >= frame_4.light_count) {
+    if (i_1 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f));
     }
-    let entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
+    let entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
     let _e21 = params[entry];
     let _e26 = params[(entry + 1u)];
     let _e27 = dispatch_light(_e21, _e26, position_5, normal_5);
@@ -1210,7 +1205,7 @@ fn sample_light_query(i_2: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> L
 
 fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, occlusion: f32, emissive: vec3<f32>, ray_16: Ray, hit_6: Hit) -> vec3<f32> {
     var color: vec3<f32>;
-    var i_3: u32;
+    var i_2: u32;
 
     let _e7 = shading_normal(ray_16, hit_6);
     let _e9 = normalize_vec3f(ray_16.dir);
@@ -1221,13 +1216,13 @@ fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, occlusion: f32, 
     let ndv = max(dot(_e7, v_2), 0.0001f);
     color = emissive;
     let _e26 = light_count_query();
-    i_3 = 0u;
+    i_2 = 0u;
     loop {
-        let _e28 = i_3;
+        let _e28 = i_2;
         if (_e28 >= _e26) {
             break;
         }
-        let _e30 = i_3;
+        let _e30 = i_2;
         let _e33 = sample_light_query(_e30, hit_6.position, hit_6.geometric_normal);
         let ndl = max(dot(_e7, _e33.dir), 0f);
         let _e40 = normalize_vec3f((_e33.dir + v_2));
@@ -1239,8 +1234,8 @@ fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, occlusion: f32, 
         let _e88 = color;
         color = (_e88 + (((_e33.radiance * vec3(ndl)) * (((c_3 * vec3((1f - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))) * vec3(occlusion)));
         continuing {
-            let _e107 = i_3;
-            i_3 = (_e107 + 1u);
+            let _e107 = i_2;
+            i_2 = (_e107 + 1u);
         }
     }
     let _e110 = color;
@@ -1362,7 +1357,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_5: f32;
     var hit_12: Hit;
     var f: Frame;
-    var i_4: u32;
+    var i_3: u32;
     var medium: u32;
 
     if !(HAS_SECONDARY_RAYS) {
@@ -1459,23 +1454,23 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                         let _e143 = s_error;
                         let _e145 = s_c.slot;
                         f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_9, 0u);
-                        i_4 = 0u;
+                        i_3 = 0u;
                         loop {
-                            let _e155 = i_4;
+                            let _e155 = i_3;
                             if (_e155 >= n_9) {
                                 break;
                             }
-                            let _e158 = i_4;
-                            let _e162 = i_4;
+                            let _e158 = i_3;
+                            let _e162 = i_3;
                             let _e165 = spawn_dirs[_e162];
                             f.dirs[min(_e158, 0u)] = _e165;
-                            let _e167 = i_4;
-                            let _e171 = i_4;
+                            let _e167 = i_3;
+                            let _e171 = i_3;
                             let _e174 = spawn_weights[_e171];
                             f.weights[min(_e167, 0u)] = _e174;
                             continuing {
-                                let _e175 = i_4;
-                                i_4 = (_e175 + 1u);
+                                let _e175 = i_3;
+                                i_3 = (_e175 + 1u);
                             }
                         }
                         let _e178 = depth;
@@ -1527,11 +1522,11 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e241 = stack[min(top_1, 3u)].next;
         let _e246 = stack[min(top_1, 3u)].count;
         if (_e241 < _e246) {
-            let i_5 = stack[min(top_1, 3u)].next;
-            stack[min(top_1, 3u)].next = (i_5 + 1u);
+            let i_4 = stack[min(top_1, 3u)].next;
+            stack[min(top_1, 3u)].next = (i_4 + 1u);
             let parent = stack[min(top_1, 3u)].ray;
             let hit_14 = stack[min(top_1, 3u)].hit;
-            let dir_6 = stack[min(top_1, 3u)].dirs[min(i_5, 0u)];
+            let dir_6 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
             medium = parent.medium;
             let _e283 = stack[min(top_1, 3u)].error;
             let _e284 = spawn_origin(hit_14, _e283, dir_6);

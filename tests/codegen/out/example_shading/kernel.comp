@@ -161,11 +161,11 @@ const float GAMMA_6_ = 3.576281e-7;
 const float GAMMA_4_ = 2.3841864e-7;
 const bool HAS_SECONDARY_RAYS = true;
 const bool HAS_BACKGROUND = true;
-const uint TEXTURE_NEAREST = 16u;
 const uint TEXTURE_WRAP_MASK = 3u;
-const uint TEXTURE_WRAP_CLAMP = 1u;
-const uint TEXTURE_WRAP_MIRROR = 2u;
 const uint TEXTURE_WRAP_V_SHIFT = 2u;
+const uint TEXTURE_NEAREST = 16u;
+const uint TEXTURE_WRAP_MIRROR = 2u;
+const uint TEXTURE_WRAP_CLAMP = 1u;
 const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
 const uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 const uint RGBA16F_TEXEL_WORDS = 2u;
@@ -856,11 +856,11 @@ SkyGradient load_SkyGradient(uint offset_2) {
 
 vec3 sky_gradient(SkyGradient b_4, Ray ray_8) {
     vec3 _e3 = normalize_vec3f(ray_8.dir);
-    float y_1 = _e3.y;
-    if ((y_1 < 0.0)) {
-        return mix(b_4.horizon, b_4.ground, vec3(min((-(y_1) * 4.0), 1.0)));
+    float y = _e3.y;
+    if ((y < 0.0)) {
+        return mix(b_4.horizon, b_4.ground, vec3(min((-(y) * 4.0), 1.0)));
     }
-    return mix(b_4.horizon, b_4.zenith, vec3(sqrt(y_1)));
+    return mix(b_4.horizon, b_4.zenith, vec3(sqrt(y)));
 }
 
 vec3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_9) {
@@ -911,17 +911,13 @@ int rem_i32_(int a_4, int b_5) {
 }
 
 int wrap_texel(int x_2, int n_3, uint mode) {
-    if ((mode == TEXTURE_WRAP_CLAMP)) {
-        return min(max(x_2, 0), (n_3 - 1));
-    }
-    if ((mode == TEXTURE_WRAP_MIRROR)) {
-        int _e14 = rem_i32_(x_2, (2 * n_3));
-        int _e20 = rem_i32_((_e14 + (2 * n_3)), (2 * n_3));
-        return ((_e20 >= n_3) ? (((2 * n_3) - 1) - _e20) : _e20);
-    }
-    int _e28 = rem_i32_(x_2, n_3);
-    int _e30 = rem_i32_((_e28 + n_3), n_3);
-    return _e30;
+    int _e3 = rem_i32_(x_2, n_3);
+    int _e5 = rem_i32_((_e3 + n_3), n_3);
+    int _e8 = rem_i32_(x_2, (2 * n_3));
+    int _e14 = rem_i32_((_e8 + (2 * n_3)), (2 * n_3));
+    int mirror = ((_e14 >= n_3) ? (((2 * n_3) - 1) - _e14) : _e14);
+    int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5);
+    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_2, 0), (n_3 - 1)) : wrapped);
 }
 
 float srgb_channel(float c_2) {
@@ -931,62 +927,67 @@ float srgb_channel(float c_2) {
     return pow(((c_2 + 0.055) / 1.055), 2.4);
 }
 
-vec4 texel_at(uint t, int x_3, int y) {
+vec4 texel_at(uint t, uint xi, uint yi) {
     uint base_3 = _group_0_binding_6_cs[t];
     uint _e10 = _group_0_binding_6_cs[(t + 1u)];
-    uint w_3 = max(_e10, 1u);
-    uint _e17 = _group_0_binding_6_cs[(t + 2u)];
-    uint h_2 = max(_e17, 1u);
+    uint index = ((yi * max(_e10, 1u)) + xi);
     uint format = _group_0_binding_6_cs[(t + 3u)];
-    uint sampler_ = _group_0_binding_6_cs[(t + 4u)];
-    int _e33 = wrap_texel(x_3, int(w_3), (sampler_ & TEXTURE_WRAP_MASK));
-    uint xi = uint(_e33);
-    int _e42 = wrap_texel(y, int(h_2), ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK));
-    uint yi = uint(_e42);
-    uint index = ((yi * w_3) + xi);
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
-        uint _e51 = _group_0_binding_7_cs[(base_3 + index)];
-        vec4 c_7 = unpackUnorm4x8(_e51);
-        float _e54 = srgb_channel(c_7.x);
-        float _e56 = srgb_channel(c_7.y);
-        float _e58 = srgb_channel(c_7.z);
-        return vec4(_e54, _e56, _e58, c_7.w);
+        uint _e25 = _group_0_binding_7_cs[(base_3 + index)];
+        vec4 c_7 = unpackUnorm4x8(_e25);
+        float _e28 = srgb_channel(c_7.x);
+        float _e30 = srgb_channel(c_7.y);
+        float _e32 = srgb_channel(c_7.z);
+        return vec4(_e28, _e30, _e32, c_7.w);
     }
     if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
-        uint _e66 = _group_0_binding_7_cs[(base_3 + index)];
-        return unpackUnorm4x8(_e66);
+        uint _e40 = _group_0_binding_7_cs[(base_3 + index)];
+        return unpackUnorm4x8(_e40);
     }
-    uint _e73 = _group_0_binding_7_cs[(base_3 + (index * RGBA16F_TEXEL_WORDS))];
-    vec2 rg = unpackHalf2x16(_e73);
-    uint _e82 = _group_0_binding_7_cs[((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
-    vec2 ba = unpackHalf2x16(_e82);
+    uint _e47 = _group_0_binding_7_cs[(base_3 + (index * RGBA16F_TEXEL_WORDS))];
+    vec2 rg = unpackHalf2x16(_e47);
+    uint _e56 = _group_0_binding_7_cs[((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
+    vec2 ba = unpackHalf2x16(_e56);
     return vec4(rg, ba);
 }
 
 vec4 sample_texture(uint t_1, vec2 uv) {
     uint _e6 = _group_0_binding_6_cs[(t_1 + 1u)];
-    float w_4 = float(max(_e6, 1u));
+    int wi = int(max(_e6, 1u));
     uint _e14 = _group_0_binding_6_cs[(t_1 + 2u)];
-    float h_3 = float(max(_e14, 1u));
-    uint _e22 = _group_0_binding_6_cs[(t_1 + 4u)];
-    if (((_e22 & TEXTURE_NEAREST) != 0u)) {
-        vec2 q_3 = floor((uv * vec2(w_4, h_3)));
-        int _e31 = i32_from_f32_(q_3.x);
-        int _e33 = i32_from_f32_(q_3.y);
-        vec4 _e34 = texel_at(t_1, _e31, _e33);
-        return _e34;
+    int hi_1 = int(max(_e14, 1u));
+    uint sampler_ = _group_0_binding_6_cs[(t_1 + 4u)];
+    uint mu = (sampler_ & TEXTURE_WRAP_MASK);
+    uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
+    vec2 size_2 = vec2(float(wi), float(hi_1));
+    if (((sampler_ & TEXTURE_NEAREST) != 0u)) {
+        vec2 q_3 = floor((uv * size_2));
+        int _e41 = i32_from_f32_(q_3.x);
+        int _e42 = wrap_texel(_e41, wi, mu);
+        int _e45 = i32_from_f32_(q_3.y);
+        int _e46 = wrap_texel(_e45, hi_1, mv);
+        vec4 _e48 = texel_at(t_1, uint(_e42), uint(_e46));
+        return _e48;
     }
-    vec2 p_7 = ((uv * vec2(w_4, h_3)) - vec2(0.5));
+    vec2 p_7 = ((uv * size_2) - vec2(0.5));
     vec2 f_1 = floor(p_7);
     vec2 fr = (p_7 - f_1);
-    int _e43 = i32_from_f32_(f_1.x);
-    int _e45 = i32_from_f32_(f_1.y);
-    vec4 _e46 = texel_at(t_1, _e43, _e45);
-    vec4 _e49 = texel_at(t_1, (_e43 + 1), _e45);
-    vec4 a_7 = mix(_e46, _e49, vec4(fr.x));
-    vec4 _e55 = texel_at(t_1, _e43, (_e45 + 1));
-    vec4 _e60 = texel_at(t_1, (_e43 + 1), (_e45 + 1));
-    vec4 b_8 = mix(_e55, _e60, vec4(fr.x));
+    int _e56 = i32_from_f32_(f_1.x);
+    int _e58 = i32_from_f32_(f_1.y);
+    int _e59 = wrap_texel(_e56, wi, mu);
+    uint x0_ = uint(_e59);
+    int _e63 = wrap_texel((_e56 + 1), wi, mu);
+    uint x1_ = uint(_e63);
+    int _e65 = wrap_texel(_e58, hi_1, mv);
+    uint y0_ = uint(_e65);
+    int _e69 = wrap_texel((_e58 + 1), hi_1, mv);
+    uint y1_ = uint(_e69);
+    vec4 _e71 = texel_at(t_1, x0_, y0_);
+    vec4 _e72 = texel_at(t_1, x1_, y0_);
+    vec4 a_7 = mix(_e71, _e72, vec4(fr.x));
+    vec4 _e76 = texel_at(t_1, x0_, y1_);
+    vec4 _e77 = texel_at(t_1, x1_, y1_);
+    vec4 b_8 = mix(_e76, _e77, vec4(fr.x));
     return mix(a_7, b_8, vec4(fr.y));
 }
 
@@ -1008,13 +1009,13 @@ PointLight load_PointLight(uint offset_5) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
-vec3 step_toward(vec3 x_4, vec3 s) {
-    uvec3 bits_1 = floatBitsToUint(x_4);
-    bvec3 up_1 = greaterThan((sign(x_4) * sign(s)), vec3(0.0));
+vec3 step_toward(vec3 x_3, vec3 s) {
+    uvec3 bits_1 = floatBitsToUint(x_3);
+    bvec3 up_1 = greaterThan((sign(x_3) * sign(s)), vec3(0.0));
     vec3 stepped = uintBitsToFloat(mix((bits_1 - uvec3(1u)), (bits_1 + uvec3(1u)), up_1));
     vec3 from_zero = mix(vec3(-1.1754944e-38), vec3(1.1754944e-38), greaterThan(s, vec3(0.0)));
-    vec3 moved = mix(stepped, from_zero, equal(x_4, vec3(0.0)));
-    return mix(x_4, moved, not(equal(s, vec3(0.0))));
+    vec3 moved = mix(stepped, from_zero, equal(x_3, vec3(0.0)));
+    return mix(x_3, moved, not(equal(s, vec3(0.0))));
 }
 
 vec3 offset_origin(vec3 p_5, vec3 n_4, float error) {
@@ -1504,8 +1505,8 @@ vec3 trace(Ray camera_ray) {
     return vec3(0.0);
 }
 
-bvec3 is_finite_vec3f(vec3 x_5) {
-    return lessThan((floatBitsToUint(x_5) & uvec3(2147483647u)), uvec3(2139095040u));
+bvec3 is_finite_vec3f(vec3 x_4) {
+    return lessThan((floatBitsToUint(x_4) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
 vec3 finite_or_zero(vec3 c_4) {

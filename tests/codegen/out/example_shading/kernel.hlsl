@@ -219,11 +219,11 @@ static const float GAMMA_6_ = 3.576281e-7;
 static const float GAMMA_4_ = 2.3841864e-7;
 static const bool HAS_SECONDARY_RAYS = true;
 static const bool HAS_BACKGROUND = true;
-static const uint TEXTURE_NEAREST = 16u;
 static const uint TEXTURE_WRAP_MASK = 3u;
-static const uint TEXTURE_WRAP_CLAMP = 1u;
-static const uint TEXTURE_WRAP_MIRROR = 2u;
 static const uint TEXTURE_WRAP_V_SHIFT = 2u;
+static const uint TEXTURE_NEAREST = 16u;
+static const uint TEXTURE_WRAP_MIRROR = 2u;
+static const uint TEXTURE_WRAP_CLAMP = 1u;
 static const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
 static const uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 static const uint RGBA16F_TEXEL_WORDS = 2u;
@@ -1093,11 +1093,11 @@ SkyGradient load_SkyGradient(uint offset_2)
 float3 sky_gradient(SkyGradient b_4, Ray ray_8)
 {
     const float3 _e3 = normalize_vec3f(ray_8.dir);
-    float y_1 = _e3.y;
-    if ((y_1 < 0.0)) {
-        return lerp(b_4.horizon, b_4.ground, (min((-(y_1) * 4.0), 1.0)).xxx);
+    float y = _e3.y;
+    if ((y < 0.0)) {
+        return lerp(b_4.horizon, b_4.ground, (min((-(y) * 4.0), 1.0)).xxx);
     }
-    return lerp(b_4.horizon, b_4.zenith, (sqrt(y_1)).xxx);
+    return lerp(b_4.horizon, b_4.zenith, (sqrt(y)).xxx);
 }
 
 float3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_9)
@@ -1175,17 +1175,13 @@ int rem_i32_(int a_4, int b_5)
 
 int wrap_texel(int x_2, int n_3, uint mode)
 {
-    if ((mode == TEXTURE_WRAP_CLAMP)) {
-        return min(max(x_2, int(0)), asint(asuint(n_3) - asuint(int(1))));
-    }
-    if ((mode == TEXTURE_WRAP_MIRROR)) {
-        const int _e14 = rem_i32_(x_2, asint(asuint(int(2)) * asuint(n_3)));
-        const int _e20 = rem_i32_(asint(asuint(_e14) + asuint(asint(asuint(int(2)) * asuint(n_3)))), asint(asuint(int(2)) * asuint(n_3)));
-        return ((_e20 >= n_3) ? asint(asuint(asint(asuint(asint(asuint(int(2)) * asuint(n_3))) - asuint(int(1)))) - asuint(_e20)) : _e20);
-    }
-    const int _e28 = rem_i32_(x_2, n_3);
-    const int _e30 = rem_i32_(asint(asuint(_e28) + asuint(n_3)), n_3);
-    return _e30;
+    const int _e3 = rem_i32_(x_2, n_3);
+    const int _e5 = rem_i32_(asint(asuint(_e3) + asuint(n_3)), n_3);
+    const int _e8 = rem_i32_(x_2, asint(asuint(int(2)) * asuint(n_3)));
+    const int _e14 = rem_i32_(asint(asuint(_e8) + asuint(asint(asuint(int(2)) * asuint(n_3)))), asint(asuint(int(2)) * asuint(n_3)));
+    int mirror = ((_e14 >= n_3) ? asint(asuint(asint(asuint(asint(asuint(int(2)) * asuint(n_3))) - asuint(int(1)))) - asuint(_e14)) : _e14);
+    int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5);
+    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_2, int(0)), asint(asuint(n_3) - asuint(int(1)))) : wrapped);
 }
 
 float srgb_channel(float c_2)
@@ -1196,64 +1192,69 @@ float srgb_channel(float c_2)
     return pow(((c_2 + 0.055) / 1.055), 2.4);
 }
 
-float4 texel_at(uint t, int x_3, int y)
+float4 texel_at(uint t, uint xi, uint yi)
 {
     uint base_3 = asuint(params.Load(t*4));
     uint _e10 = asuint(params.Load((t + 1u)*4));
-    uint w_3 = max(_e10, 1u);
-    uint _e17 = asuint(params.Load((t + 2u)*4));
-    uint h_2 = max(_e17, 1u);
+    uint index = ((yi * max(_e10, 1u)) + xi);
     uint format = asuint(params.Load((t + 3u)*4));
-    uint sampler_ = asuint(params.Load((t + 4u)*4));
-    const int _e33 = wrap_texel(x_3, int(w_3), (sampler_ & TEXTURE_WRAP_MASK));
-    uint xi = uint(_e33);
-    const int _e42 = wrap_texel(y, int(h_2), ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK));
-    uint yi = uint(_e42);
-    uint index = ((yi * w_3) + xi);
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
-        uint _e51 = asuint(texels.Load((base_3 + index)*4));
-        float4 c_7 = (float4(_e51 & 0xFF, _e51 >> 8 & 0xFF, _e51 >> 16 & 0xFF, _e51 >> 24) / 255.0);
-        const float _e54 = srgb_channel(c_7.x);
-        const float _e56 = srgb_channel(c_7.y);
-        const float _e58 = srgb_channel(c_7.z);
-        return float4(_e54, _e56, _e58, c_7.w);
+        uint _e25 = asuint(texels.Load((base_3 + index)*4));
+        float4 c_7 = (float4(_e25 & 0xFF, _e25 >> 8 & 0xFF, _e25 >> 16 & 0xFF, _e25 >> 24) / 255.0);
+        const float _e28 = srgb_channel(c_7.x);
+        const float _e30 = srgb_channel(c_7.y);
+        const float _e32 = srgb_channel(c_7.z);
+        return float4(_e28, _e30, _e32, c_7.w);
     }
     if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
-        uint _e66 = asuint(texels.Load((base_3 + index)*4));
-        return (float4(_e66 & 0xFF, _e66 >> 8 & 0xFF, _e66 >> 16 & 0xFF, _e66 >> 24) / 255.0);
+        uint _e40 = asuint(texels.Load((base_3 + index)*4));
+        return (float4(_e40 & 0xFF, _e40 >> 8 & 0xFF, _e40 >> 16 & 0xFF, _e40 >> 24) / 255.0);
     }
-    uint _e73 = asuint(texels.Load((base_3 + (index * RGBA16F_TEXEL_WORDS))*4));
-    float2 rg = float2(f16tof32(_e73), f16tof32((_e73) >> 16));
-    uint _e82 = asuint(texels.Load(((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)*4));
-    float2 ba = float2(f16tof32(_e82), f16tof32((_e82) >> 16));
+    uint _e47 = asuint(texels.Load((base_3 + (index * RGBA16F_TEXEL_WORDS))*4));
+    float2 rg = float2(f16tof32(_e47), f16tof32((_e47) >> 16));
+    uint _e56 = asuint(texels.Load(((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)*4));
+    float2 ba = float2(f16tof32(_e56), f16tof32((_e56) >> 16));
     return float4(rg, ba);
 }
 
 float4 sample_texture(uint t_1, float2 uv)
 {
     uint _e6 = asuint(params.Load((t_1 + 1u)*4));
-    float w_4 = float(max(_e6, 1u));
+    int wi = int(max(_e6, 1u));
     uint _e14 = asuint(params.Load((t_1 + 2u)*4));
-    float h_3 = float(max(_e14, 1u));
-    uint _e22 = asuint(params.Load((t_1 + 4u)*4));
-    if (((_e22 & TEXTURE_NEAREST) != 0u)) {
-        float2 q_3 = floor((uv * float2(w_4, h_3)));
-        const int _e31 = i32_from_f32_(q_3.x);
-        const int _e33 = i32_from_f32_(q_3.y);
-        const float4 _e34 = texel_at(t_1, _e31, _e33);
-        return _e34;
+    int hi_1 = int(max(_e14, 1u));
+    uint sampler_ = asuint(params.Load((t_1 + 4u)*4));
+    uint mu = (sampler_ & TEXTURE_WRAP_MASK);
+    uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
+    float2 size_2 = float2(float(wi), float(hi_1));
+    if (((sampler_ & TEXTURE_NEAREST) != 0u)) {
+        float2 q_3 = floor((uv * size_2));
+        const int _e41 = i32_from_f32_(q_3.x);
+        const int _e42 = wrap_texel(_e41, wi, mu);
+        const int _e45 = i32_from_f32_(q_3.y);
+        const int _e46 = wrap_texel(_e45, hi_1, mv);
+        const float4 _e48 = texel_at(t_1, uint(_e42), uint(_e46));
+        return _e48;
     }
-    float2 p_7 = ((uv * float2(w_4, h_3)) - (0.5).xx);
+    float2 p_7 = ((uv * size_2) - (0.5).xx);
     float2 f_1 = floor(p_7);
     float2 fr = (p_7 - f_1);
-    const int _e43 = i32_from_f32_(f_1.x);
-    const int _e45 = i32_from_f32_(f_1.y);
-    const float4 _e46 = texel_at(t_1, _e43, _e45);
-    const float4 _e49 = texel_at(t_1, asint(asuint(_e43) + asuint(int(1))), _e45);
-    float4 a_7 = lerp(_e46, _e49, (fr.x).xxxx);
-    const float4 _e55 = texel_at(t_1, _e43, asint(asuint(_e45) + asuint(int(1))));
-    const float4 _e60 = texel_at(t_1, asint(asuint(_e43) + asuint(int(1))), asint(asuint(_e45) + asuint(int(1))));
-    float4 b_8 = lerp(_e55, _e60, (fr.x).xxxx);
+    const int _e56 = i32_from_f32_(f_1.x);
+    const int _e58 = i32_from_f32_(f_1.y);
+    const int _e59 = wrap_texel(_e56, wi, mu);
+    uint x0_ = uint(_e59);
+    const int _e63 = wrap_texel(asint(asuint(_e56) + asuint(int(1))), wi, mu);
+    uint x1_ = uint(_e63);
+    const int _e65 = wrap_texel(_e58, hi_1, mv);
+    uint y0_ = uint(_e65);
+    const int _e69 = wrap_texel(asint(asuint(_e58) + asuint(int(1))), hi_1, mv);
+    uint y1_ = uint(_e69);
+    const float4 _e71 = texel_at(t_1, x0_, y0_);
+    const float4 _e72 = texel_at(t_1, x1_, y0_);
+    float4 a_7 = lerp(_e71, _e72, (fr.x).xxxx);
+    const float4 _e76 = texel_at(t_1, x0_, y1_);
+    const float4 _e77 = texel_at(t_1, x1_, y1_);
+    float4 b_8 = lerp(_e76, _e77, (fr.x).xxxx);
     return lerp(a_7, b_8, (fr.y).xxxx);
 }
 
@@ -1288,14 +1289,14 @@ PointLight load_PointLight(uint offset_5)
     return pointlight;
 }
 
-float3 step_toward(float3 x_4, float3 s)
+float3 step_toward(float3 x_3, float3 s)
 {
-    uint3 bits_1 = asuint(x_4);
-    bool3 up_1 = ((sign(x_4) * sign(s)) > (0.0).xxx);
+    uint3 bits_1 = asuint(x_3);
+    bool3 up_1 = ((sign(x_3) * sign(s)) > (0.0).xxx);
     float3 stepped = asfloat((up_1 ? (bits_1 + (1u).xxx) : (bits_1 - (1u).xxx)));
     float3 from_zero = ((s > (0.0).xxx) ? (1.1754944e-38).xxx : (-1.1754944e-38).xxx);
-    float3 moved = ((x_4 == (0.0).xxx) ? from_zero : stepped);
-    return (!((s == (0.0).xxx)) ? moved : x_4);
+    float3 moved = ((x_3 == (0.0).xxx) ? from_zero : stepped);
+    return (!((s == (0.0).xxx)) ? moved : x_3);
 }
 
 float3 offset_origin(float3 p_5, float3 n_4, float error)
@@ -1492,8 +1493,8 @@ Mirror load_Mirror(uint offset_8)
     uint _e5 = asuint(params.Load((offset_8 + 0u)*4));
     uint _e11 = asuint(params.Load((offset_8 + 1u)*4));
     uint _e17 = asuint(params.Load((offset_8 + 2u)*4));
-    const Mirror mirror = ConstructMirror(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)));
-    return mirror;
+    const Mirror mirror_1 = ConstructMirror(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)));
+    return mirror_1;
 }
 
 float3 mirror_shade(Mirror m_2, Ray ray_14, Hit hit_4, float3 secondary)
@@ -1892,9 +1893,9 @@ float3 trace(Ray camera_ray)
     return ZeroValuefloat3();
 }
 
-bool3 is_finite_vec3f(float3 x_5)
+bool3 is_finite_vec3f(float3 x_4)
 {
-    return ((asuint(x_5) & (2147483647u).xxx) < (2139095040u).xxx);
+    return ((asuint(x_4) & (2147483647u).xxx) < (2139095040u).xxx);
 }
 
 float3 finite_or_zero(float3 c_4)

@@ -202,11 +202,11 @@ constant float GAMMA_6_ = 0.0000003576281;
 constant float GAMMA_4_ = 0.00000023841864;
 constant bool HAS_SECONDARY_RAYS = true;
 constant bool HAS_BACKGROUND = true;
-constant uint TEXTURE_NEAREST = 16u;
 constant uint TEXTURE_WRAP_MASK = 3u;
-constant uint TEXTURE_WRAP_CLAMP = 1u;
-constant uint TEXTURE_WRAP_MIRROR = 2u;
 constant uint TEXTURE_WRAP_V_SHIFT = 2u;
+constant uint TEXTURE_NEAREST = 16u;
+constant uint TEXTURE_WRAP_MIRROR = 2u;
+constant uint TEXTURE_WRAP_CLAMP = 1u;
 constant uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
 constant uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 constant uint RGBA16F_TEXEL_WORDS = 2u;
@@ -1077,11 +1077,11 @@ metal::float3 sky_gradient(
     Ray ray_8
 ) {
     metal::float3 _e3 = normalize_vec3f(ray_8.dir);
-    float y_1 = _e3.y;
-    if (y_1 < 0.0) {
-        return metal::mix(b_4.horizon, b_4.ground, metal::float3(metal::min(-(y_1) * 4.0, 1.0)));
+    float y = _e3.y;
+    if (y < 0.0) {
+        return metal::mix(b_4.horizon, b_4.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
     }
-    return metal::mix(b_4.horizon, b_4.zenith, metal::float3(metal::sqrt(y_1)));
+    return metal::mix(b_4.horizon, b_4.zenith, metal::float3(metal::sqrt(y)));
 }
 
 metal::float3 dispatch_miss(
@@ -1167,17 +1167,13 @@ int wrap_texel(
     int n_3,
     uint mode
 ) {
-    if (mode == TEXTURE_WRAP_CLAMP) {
-        return metal::min(metal::max(x_2, 0), as_type<int>(as_type<uint>(n_3) - as_type<uint>(1)));
-    }
-    if (mode == TEXTURE_WRAP_MIRROR) {
-        int _e14 = rem_i32_(x_2, as_type<int>(as_type<uint>(2) * as_type<uint>(n_3)));
-        int _e20 = rem_i32_(as_type<int>(as_type<uint>(_e14) + as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_3)))), as_type<int>(as_type<uint>(2) * as_type<uint>(n_3)));
-        return (_e20 >= n_3) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_3))) - as_type<uint>(1))) - as_type<uint>(_e20)) : _e20;
-    }
-    int _e28 = rem_i32_(x_2, n_3);
-    int _e30 = rem_i32_(as_type<int>(as_type<uint>(_e28) + as_type<uint>(n_3)), n_3);
-    return _e30;
+    int _e3 = rem_i32_(x_2, n_3);
+    int _e5 = rem_i32_(as_type<int>(as_type<uint>(_e3) + as_type<uint>(n_3)), n_3);
+    int _e8 = rem_i32_(x_2, as_type<int>(as_type<uint>(2) * as_type<uint>(n_3)));
+    int _e14 = rem_i32_(as_type<int>(as_type<uint>(_e8) + as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_3)))), as_type<int>(as_type<uint>(2) * as_type<uint>(n_3)));
+    int mirror = (_e14 >= n_3) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_3))) - as_type<uint>(1))) - as_type<uint>(_e14)) : _e14;
+    int wrapped = (mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5;
+    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(x_2, 0), as_type<int>(as_type<uint>(n_3) - as_type<uint>(1))) : wrapped;
 }
 
 float srgb_channel(
@@ -1191,40 +1187,32 @@ float srgb_channel(
 
 metal::float4 texel_at(
     uint t,
-    int x_3,
-    int y,
+    uint xi,
+    uint yi,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint base_3 = params[t];
     uint _e10 = params[t + 1u];
-    uint w_3 = metal::max(_e10, 1u);
-    uint _e17 = params[t + 2u];
-    uint h_2 = metal::max(_e17, 1u);
+    uint index = (yi * metal::max(_e10, 1u)) + xi;
     uint format = params[t + 3u];
-    uint sampler = params[t + 4u];
-    int _e33 = wrap_texel(x_3, static_cast<int>(w_3), sampler & TEXTURE_WRAP_MASK);
-    uint xi = static_cast<uint>(_e33);
-    int _e42 = wrap_texel(y, static_cast<int>(h_2), (sampler >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
-    uint yi = static_cast<uint>(_e42);
-    uint index = (yi * w_3) + xi;
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        uint _e51 = texels[base_3 + index];
-        metal::float4 c_7 = metal::unpack_unorm4x8_to_float(_e51);
-        float _e54 = srgb_channel(c_7.x);
-        float _e56 = srgb_channel(c_7.y);
-        float _e58 = srgb_channel(c_7.z);
-        return metal::float4(_e54, _e56, _e58, c_7.w);
+        uint _e25 = texels[base_3 + index];
+        metal::float4 c_7 = metal::unpack_unorm4x8_to_float(_e25);
+        float _e28 = srgb_channel(c_7.x);
+        float _e30 = srgb_channel(c_7.y);
+        float _e32 = srgb_channel(c_7.z);
+        return metal::float4(_e28, _e30, _e32, c_7.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
-        uint _e66 = texels[base_3 + index];
-        return metal::unpack_unorm4x8_to_float(_e66);
+        uint _e40 = texels[base_3 + index];
+        return metal::unpack_unorm4x8_to_float(_e40);
     }
-    uint _e73 = texels[base_3 + (index * RGBA16F_TEXEL_WORDS)];
-    metal::float2 rg = float2(as_type<half2>(_e73));
-    uint _e82 = texels[(base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
-    metal::float2 ba = float2(as_type<half2>(_e82));
+    uint _e47 = texels[base_3 + (index * RGBA16F_TEXEL_WORDS)];
+    metal::float2 rg = float2(as_type<half2>(_e47));
+    uint _e56 = texels[(base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
+    metal::float2 ba = float2(as_type<half2>(_e56));
     return metal::float4(rg, ba);
 }
 
@@ -1236,28 +1224,41 @@ metal::float4 sample_texture(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e6 = params[t_1 + 1u];
-    float w_4 = static_cast<float>(metal::max(_e6, 1u));
+    int wi = static_cast<int>(metal::max(_e6, 1u));
     uint _e14 = params[t_1 + 2u];
-    float h_3 = static_cast<float>(metal::max(_e14, 1u));
-    uint _e22 = params[t_1 + 4u];
-    if ((_e22 & TEXTURE_NEAREST) != 0u) {
-        metal::float2 q_3 = metal::floor(uv * metal::float2(w_4, h_3));
-        int _e31 = i32_from_f32_(q_3.x);
-        int _e33 = i32_from_f32_(q_3.y);
-        metal::float4 _e34 = texel_at(t_1, _e31, _e33, params, texels, _buffer_sizes);
-        return _e34;
+    int hi_1 = static_cast<int>(metal::max(_e14, 1u));
+    uint sampler = params[t_1 + 4u];
+    uint mu = sampler & TEXTURE_WRAP_MASK;
+    uint mv = (sampler >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK;
+    metal::float2 size_2 = metal::float2(static_cast<float>(wi), static_cast<float>(hi_1));
+    if ((sampler & TEXTURE_NEAREST) != 0u) {
+        metal::float2 q_3 = metal::floor(uv * size_2);
+        int _e41 = i32_from_f32_(q_3.x);
+        int _e42 = wrap_texel(_e41, wi, mu);
+        int _e45 = i32_from_f32_(q_3.y);
+        int _e46 = wrap_texel(_e45, hi_1, mv);
+        metal::float4 _e48 = texel_at(t_1, static_cast<uint>(_e42), static_cast<uint>(_e46), params, texels, _buffer_sizes);
+        return _e48;
     }
-    metal::float2 p_7 = (uv * metal::float2(w_4, h_3)) - metal::float2(0.5);
+    metal::float2 p_7 = (uv * size_2) - metal::float2(0.5);
     metal::float2 f_1 = metal::floor(p_7);
     metal::float2 fr = p_7 - f_1;
-    int _e43 = i32_from_f32_(f_1.x);
-    int _e45 = i32_from_f32_(f_1.y);
-    metal::float4 _e46 = texel_at(t_1, _e43, _e45, params, texels, _buffer_sizes);
-    metal::float4 _e49 = texel_at(t_1, as_type<int>(as_type<uint>(_e43) + as_type<uint>(1)), _e45, params, texels, _buffer_sizes);
-    metal::float4 a_7 = metal::mix(_e46, _e49, metal::float4(fr.x));
-    metal::float4 _e55 = texel_at(t_1, _e43, as_type<int>(as_type<uint>(_e45) + as_type<uint>(1)), params, texels, _buffer_sizes);
-    metal::float4 _e60 = texel_at(t_1, as_type<int>(as_type<uint>(_e43) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e45) + as_type<uint>(1)), params, texels, _buffer_sizes);
-    metal::float4 b_8 = metal::mix(_e55, _e60, metal::float4(fr.x));
+    int _e56 = i32_from_f32_(f_1.x);
+    int _e58 = i32_from_f32_(f_1.y);
+    int _e59 = wrap_texel(_e56, wi, mu);
+    uint x0_ = static_cast<uint>(_e59);
+    int _e63 = wrap_texel(as_type<int>(as_type<uint>(_e56) + as_type<uint>(1)), wi, mu);
+    uint x1_ = static_cast<uint>(_e63);
+    int _e65 = wrap_texel(_e58, hi_1, mv);
+    uint y0_ = static_cast<uint>(_e65);
+    int _e69 = wrap_texel(as_type<int>(as_type<uint>(_e58) + as_type<uint>(1)), hi_1, mv);
+    uint y1_ = static_cast<uint>(_e69);
+    metal::float4 _e71 = texel_at(t_1, x0_, y0_, params, texels, _buffer_sizes);
+    metal::float4 _e72 = texel_at(t_1, x1_, y0_, params, texels, _buffer_sizes);
+    metal::float4 a_7 = metal::mix(_e71, _e72, metal::float4(fr.x));
+    metal::float4 _e76 = texel_at(t_1, x0_, y1_, params, texels, _buffer_sizes);
+    metal::float4 _e77 = texel_at(t_1, x1_, y1_, params, texels, _buffer_sizes);
+    metal::float4 b_8 = metal::mix(_e76, _e77, metal::float4(fr.x));
     return metal::mix(a_7, b_8, metal::float4(fr.y));
 }
 
@@ -1286,15 +1287,15 @@ PointLight load_PointLight(
 }
 
 metal::float3 step_toward(
-    metal::float3 x_4,
+    metal::float3 x_3,
     metal::float3 s
 ) {
-    metal::uint3 bits_1 = as_type<metal::uint3>(x_4);
-    metal::bool3 up_1 = (metal::sign(x_4) * metal::sign(s)) > metal::float3(0.0);
+    metal::uint3 bits_1 = as_type<metal::uint3>(x_3);
+    metal::bool3 up_1 = (metal::sign(x_3) * metal::sign(s)) > metal::float3(0.0);
     metal::float3 stepped = as_type<metal::float3>(metal::select(bits_1 - metal::uint3(1u), bits_1 + metal::uint3(1u), up_1));
     metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s > metal::float3(0.0));
-    metal::float3 moved = metal::select(stepped, from_zero, x_4 == metal::float3(0.0));
-    return metal::select(x_4, moved, !((s == metal::float3(0.0))));
+    metal::float3 moved = metal::select(stepped, from_zero, x_3 == metal::float3(0.0));
+    return metal::select(x_3, moved, !((s == metal::float3(0.0))));
 }
 
 metal::float3 offset_origin(
@@ -2010,9 +2011,9 @@ metal::float3 trace(
 }
 
 metal::bool3 is_finite_vec3f(
-    metal::float3 x_5
+    metal::float3 x_4
 ) {
-    return (as_type<metal::uint3>(x_5) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+    return (as_type<metal::uint3>(x_4) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
 }
 
 metal::float3 finite_or_zero(

@@ -174,11 +174,11 @@ const GAMMA_6_: f32 = 0.0000003576281f;
 const GAMMA_4_: f32 = 0.00000023841864f;
 const HAS_SECONDARY_RAYS: bool = true;
 const HAS_BACKGROUND: bool = true;
-const TEXTURE_NEAREST: u32 = 16u;
 const TEXTURE_WRAP_MASK: u32 = 3u;
-const TEXTURE_WRAP_CLAMP: u32 = 1u;
-const TEXTURE_WRAP_MIRROR: u32 = 2u;
 const TEXTURE_WRAP_V_SHIFT: u32 = 2u;
+const TEXTURE_NEAREST: u32 = 16u;
+const TEXTURE_WRAP_MIRROR: u32 = 2u;
+const TEXTURE_WRAP_CLAMP: u32 = 1u;
 const TEXTURE_FORMAT_RGBA8_SRGB: u32 = 0u;
 const TEXTURE_FORMAT_RGBA8_UNORM: u32 = 2u;
 const RGBA16F_TEXEL_WORDS: u32 = 2u;
@@ -866,11 +866,11 @@ fn load_SkyGradient(offset_2: u32) -> SkyGradient {
 
 fn sky_gradient(b_4: SkyGradient, ray_8: Ray) -> vec3<f32> {
     let _e3 = normalize_vec3f(ray_8.dir);
-    let y_1 = _e3.y;
-    if (y_1 < 0f) {
-        return mix(b_4.horizon, b_4.ground, vec3(min((-(y_1) * 4f), 1f)));
+    let y = _e3.y;
+    if (y < 0f) {
+        return mix(b_4.horizon, b_4.ground, vec3(min((-(y) * 4f), 1f)));
     }
-    return mix(b_4.horizon, b_4.zenith, vec3(sqrt(y_1)));
+    return mix(b_4.horizon, b_4.zenith, vec3(sqrt(y)));
 }
 
 fn dispatch_miss(type_id_1: u32, offset_3: u32, ray_9: Ray) -> vec3<f32> {
@@ -921,17 +921,13 @@ fn rem_i32_(a_4: i32, b_5: i32) -> i32 {
 }
 
 fn wrap_texel(x_2: i32, n_3: i32, mode: u32) -> i32 {
-    if (mode == TEXTURE_WRAP_CLAMP) {
-        return min(max(x_2, 0i), (n_3 - 1i));
-    }
-    if (mode == TEXTURE_WRAP_MIRROR) {
-        let _e14 = rem_i32_(x_2, (2i * n_3));
-        let _e20 = rem_i32_((_e14 + (2i * n_3)), (2i * n_3));
-        return select(_e20, (((2i * n_3) - 1i) - _e20), (_e20 >= n_3));
-    }
-    let _e28 = rem_i32_(x_2, n_3);
-    let _e30 = rem_i32_((_e28 + n_3), n_3);
-    return _e30;
+    let _e3 = rem_i32_(x_2, n_3);
+    let _e5 = rem_i32_((_e3 + n_3), n_3);
+    let _e8 = rem_i32_(x_2, (2i * n_3));
+    let _e14 = rem_i32_((_e8 + (2i * n_3)), (2i * n_3));
+    let mirror = select(_e14, (((2i * n_3) - 1i) - _e14), (_e14 >= n_3));
+    let wrapped = select(_e5, mirror, (mode == TEXTURE_WRAP_MIRROR));
+    return select(wrapped, min(max(x_2, 0i), (n_3 - 1i)), (mode == TEXTURE_WRAP_CLAMP));
 }
 
 fn srgb_channel(c_2: f32) -> f32 {
@@ -941,62 +937,67 @@ fn srgb_channel(c_2: f32) -> f32 {
     return pow(((c_2 + 0.055f) / 1.055f), 2.4f);
 }
 
-fn texel_at(t: u32, x_3: i32, y: i32) -> vec4<f32> {
+fn texel_at(t: u32, xi: u32, yi: u32) -> vec4<f32> {
     let base_3 = params[t];
     let _e10 = params[(t + 1u)];
-    let w_3 = max(_e10, 1u);
-    let _e17 = params[(t + 2u)];
-    let h_2 = max(_e17, 1u);
+    let index = ((yi * max(_e10, 1u)) + xi);
     let format = params[(t + 3u)];
-    let sampler_ = params[(t + 4u)];
-    let _e33 = wrap_texel(x_3, i32(w_3), (sampler_ & TEXTURE_WRAP_MASK));
-    let xi = u32(_e33);
-    let _e42 = wrap_texel(y, i32(h_2), ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK));
-    let yi = u32(_e42);
-    let index = ((yi * w_3) + xi);
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        let _e51 = texels[(base_3 + index)];
-        let c_7 = unpack4x8unorm(_e51);
-        let _e54 = srgb_channel(c_7.x);
-        let _e56 = srgb_channel(c_7.y);
-        let _e58 = srgb_channel(c_7.z);
-        return vec4<f32>(_e54, _e56, _e58, c_7.w);
+        let _e25 = texels[(base_3 + index)];
+        let c_7 = unpack4x8unorm(_e25);
+        let _e28 = srgb_channel(c_7.x);
+        let _e30 = srgb_channel(c_7.y);
+        let _e32 = srgb_channel(c_7.z);
+        return vec4<f32>(_e28, _e30, _e32, c_7.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
-        let _e66 = texels[(base_3 + index)];
-        return unpack4x8unorm(_e66);
+        let _e40 = texels[(base_3 + index)];
+        return unpack4x8unorm(_e40);
     }
-    let _e73 = texels[(base_3 + (index * RGBA16F_TEXEL_WORDS))];
-    let rg = unpack2x16float(_e73);
-    let _e82 = texels[((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
-    let ba = unpack2x16float(_e82);
+    let _e47 = texels[(base_3 + (index * RGBA16F_TEXEL_WORDS))];
+    let rg = unpack2x16float(_e47);
+    let _e56 = texels[((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
+    let ba = unpack2x16float(_e56);
     return vec4<f32>(rg, ba);
 }
 
 fn sample_texture(t_1: u32, uv: vec2<f32>) -> vec4<f32> {
     let _e6 = params[(t_1 + 1u)];
-    let w_4 = f32(max(_e6, 1u));
+    let wi = i32(max(_e6, 1u));
     let _e14 = params[(t_1 + 2u)];
-    let h_3 = f32(max(_e14, 1u));
-    let _e22 = params[(t_1 + 4u)];
-    if ((_e22 & TEXTURE_NEAREST) != 0u) {
-        let q_3 = floor((uv * vec2<f32>(w_4, h_3)));
-        let _e31 = i32_from_f32_(q_3.x);
-        let _e33 = i32_from_f32_(q_3.y);
-        let _e34 = texel_at(t_1, _e31, _e33);
-        return _e34;
+    let hi_1 = i32(max(_e14, 1u));
+    let sampler_ = params[(t_1 + 4u)];
+    let mu = (sampler_ & TEXTURE_WRAP_MASK);
+    let mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
+    let size_2 = vec2<f32>(f32(wi), f32(hi_1));
+    if ((sampler_ & TEXTURE_NEAREST) != 0u) {
+        let q_3 = floor((uv * size_2));
+        let _e41 = i32_from_f32_(q_3.x);
+        let _e42 = wrap_texel(_e41, wi, mu);
+        let _e45 = i32_from_f32_(q_3.y);
+        let _e46 = wrap_texel(_e45, hi_1, mv);
+        let _e48 = texel_at(t_1, u32(_e42), u32(_e46));
+        return _e48;
     }
-    let p_7 = ((uv * vec2<f32>(w_4, h_3)) - vec2(0.5f));
+    let p_7 = ((uv * size_2) - vec2(0.5f));
     let f_1 = floor(p_7);
     let fr = (p_7 - f_1);
-    let _e43 = i32_from_f32_(f_1.x);
-    let _e45 = i32_from_f32_(f_1.y);
-    let _e46 = texel_at(t_1, _e43, _e45);
-    let _e49 = texel_at(t_1, (_e43 + 1i), _e45);
-    let a_7 = mix(_e46, _e49, vec4(fr.x));
-    let _e55 = texel_at(t_1, _e43, (_e45 + 1i));
-    let _e60 = texel_at(t_1, (_e43 + 1i), (_e45 + 1i));
-    let b_8 = mix(_e55, _e60, vec4(fr.x));
+    let _e56 = i32_from_f32_(f_1.x);
+    let _e58 = i32_from_f32_(f_1.y);
+    let _e59 = wrap_texel(_e56, wi, mu);
+    let x0_ = u32(_e59);
+    let _e63 = wrap_texel((_e56 + 1i), wi, mu);
+    let x1_ = u32(_e63);
+    let _e65 = wrap_texel(_e58, hi_1, mv);
+    let y0_ = u32(_e65);
+    let _e69 = wrap_texel((_e58 + 1i), hi_1, mv);
+    let y1_ = u32(_e69);
+    let _e71 = texel_at(t_1, x0_, y0_);
+    let _e72 = texel_at(t_1, x1_, y0_);
+    let a_7 = mix(_e71, _e72, vec4(fr.x));
+    let _e76 = texel_at(t_1, x0_, y1_);
+    let _e77 = texel_at(t_1, x1_, y1_);
+    let b_8 = mix(_e76, _e77, vec4(fr.x));
     return mix(a_7, b_8, vec4(fr.y));
 }
 
@@ -1018,13 +1019,13 @@ fn load_PointLight(offset_5: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn step_toward(x_4: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
-    let bits_1 = bitcast<vec3<u32>>(x_4);
-    let up_1 = ((sign(x_4) * sign(s)) > vec3(0f));
+fn step_toward(x_3: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
+    let bits_1 = bitcast<vec3<u32>>(x_3);
+    let up_1 = ((sign(x_3) * sign(s)) > vec3(0f));
     let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
     let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s > vec3(0f)));
-    let moved = select(stepped, from_zero, (x_4 == vec3(0f)));
-    return select(x_4, moved, !((s == vec3(0f))));
+    let moved = select(stepped, from_zero, (x_3 == vec3(0f)));
+    return select(x_3, moved, !((s == vec3(0f))));
 }
 
 fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
@@ -1514,8 +1515,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn is_finite_vec3f(x_5: vec3<f32>) -> vec3<bool> {
-    return ((bitcast<vec3<u32>>(x_5) & vec3(2147483647u)) < vec3(2139095040u));
+fn is_finite_vec3f(x_4: vec3<f32>) -> vec3<bool> {
+    return ((bitcast<vec3<u32>>(x_4) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
 fn finite_or_zero(c_4: vec3<f32>) -> vec3<f32> {

@@ -212,11 +212,11 @@ constant float GAMMA_6_ = 0.0000003576281;
 constant float GAMMA_4_ = 0.00000023841864;
 constant bool HAS_SECONDARY_RAYS = false;
 constant bool HAS_BACKGROUND = true;
-constant uint TEXTURE_NEAREST = 16u;
 constant uint TEXTURE_WRAP_MASK = 3u;
-constant uint TEXTURE_WRAP_CLAMP = 1u;
-constant uint TEXTURE_WRAP_MIRROR = 2u;
 constant uint TEXTURE_WRAP_V_SHIFT = 2u;
+constant uint TEXTURE_NEAREST = 16u;
+constant uint TEXTURE_WRAP_MIRROR = 2u;
+constant uint TEXTURE_WRAP_CLAMP = 1u;
 constant uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
 constant uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 constant uint RGBA16F_TEXEL_WORDS = 2u;
@@ -1466,17 +1466,13 @@ int wrap_texel(
     int n_4,
     uint mode
 ) {
-    if (mode == TEXTURE_WRAP_CLAMP) {
-        return metal::min(metal::max(x_2, 0), as_type<int>(as_type<uint>(n_4) - as_type<uint>(1)));
-    }
-    if (mode == TEXTURE_WRAP_MIRROR) {
-        int _e14 = rem_i32_(x_2, as_type<int>(as_type<uint>(2) * as_type<uint>(n_4)));
-        int _e20 = rem_i32_(as_type<int>(as_type<uint>(_e14) + as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_4)))), as_type<int>(as_type<uint>(2) * as_type<uint>(n_4)));
-        return (_e20 >= n_4) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_4))) - as_type<uint>(1))) - as_type<uint>(_e20)) : _e20;
-    }
-    int _e28 = rem_i32_(x_2, n_4);
-    int _e30 = rem_i32_(as_type<int>(as_type<uint>(_e28) + as_type<uint>(n_4)), n_4);
-    return _e30;
+    int _e3 = rem_i32_(x_2, n_4);
+    int _e5 = rem_i32_(as_type<int>(as_type<uint>(_e3) + as_type<uint>(n_4)), n_4);
+    int _e8 = rem_i32_(x_2, as_type<int>(as_type<uint>(2) * as_type<uint>(n_4)));
+    int _e14 = rem_i32_(as_type<int>(as_type<uint>(_e8) + as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_4)))), as_type<int>(as_type<uint>(2) * as_type<uint>(n_4)));
+    int mirror = (_e14 >= n_4) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_4))) - as_type<uint>(1))) - as_type<uint>(_e14)) : _e14;
+    int wrapped = (mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5;
+    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(x_2, 0), as_type<int>(as_type<uint>(n_4) - as_type<uint>(1))) : wrapped;
 }
 
 float srgb_channel(
@@ -1490,40 +1486,32 @@ float srgb_channel(
 
 metal::float4 texel_at(
     uint t_1,
-    int x_3,
-    int y,
+    uint xi,
+    uint yi,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint base_4 = params[t_1];
     uint _e10 = params[t_1 + 1u];
-    uint w_4 = metal::max(_e10, 1u);
-    uint _e17 = params[t_1 + 2u];
-    uint h_2 = metal::max(_e17, 1u);
+    uint index = (yi * metal::max(_e10, 1u)) + xi;
     uint format = params[t_1 + 3u];
-    uint sampler = params[t_1 + 4u];
-    int _e33 = wrap_texel(x_3, static_cast<int>(w_4), sampler & TEXTURE_WRAP_MASK);
-    uint xi = static_cast<uint>(_e33);
-    int _e42 = wrap_texel(y, static_cast<int>(h_2), (sampler >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
-    uint yi = static_cast<uint>(_e42);
-    uint index = (yi * w_4) + xi;
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        uint _e51 = texels[base_4 + index];
-        metal::float4 c_8 = metal::unpack_unorm4x8_to_float(_e51);
-        float _e54 = srgb_channel(c_8.x);
-        float _e56 = srgb_channel(c_8.y);
-        float _e58 = srgb_channel(c_8.z);
-        return metal::float4(_e54, _e56, _e58, c_8.w);
+        uint _e25 = texels[base_4 + index];
+        metal::float4 c_8 = metal::unpack_unorm4x8_to_float(_e25);
+        float _e28 = srgb_channel(c_8.x);
+        float _e30 = srgb_channel(c_8.y);
+        float _e32 = srgb_channel(c_8.z);
+        return metal::float4(_e28, _e30, _e32, c_8.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
-        uint _e66 = texels[base_4 + index];
-        return metal::unpack_unorm4x8_to_float(_e66);
+        uint _e40 = texels[base_4 + index];
+        return metal::unpack_unorm4x8_to_float(_e40);
     }
-    uint _e73 = texels[base_4 + (index * RGBA16F_TEXEL_WORDS)];
-    metal::float2 rg = float2(as_type<half2>(_e73));
-    uint _e82 = texels[(base_4 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
-    metal::float2 ba = float2(as_type<half2>(_e82));
+    uint _e47 = texels[base_4 + (index * RGBA16F_TEXEL_WORDS)];
+    metal::float2 rg = float2(as_type<half2>(_e47));
+    uint _e56 = texels[(base_4 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
+    metal::float2 ba = float2(as_type<half2>(_e56));
     return metal::float4(rg, ba);
 }
 
@@ -1535,28 +1523,41 @@ metal::float4 sample_texture(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e6 = params[t_2 + 1u];
-    float w_5 = static_cast<float>(metal::max(_e6, 1u));
+    int wi = static_cast<int>(metal::max(_e6, 1u));
     uint _e14 = params[t_2 + 2u];
-    float h_3 = static_cast<float>(metal::max(_e14, 1u));
-    uint _e22 = params[t_2 + 4u];
-    if ((_e22 & TEXTURE_NEAREST) != 0u) {
-        metal::float2 q_5 = metal::floor(uv * metal::float2(w_5, h_3));
-        int _e31 = i32_from_f32_(q_5.x);
-        int _e33 = i32_from_f32_(q_5.y);
-        metal::float4 _e34 = texel_at(t_2, _e31, _e33, params, texels, _buffer_sizes);
-        return _e34;
+    int hi_2 = static_cast<int>(metal::max(_e14, 1u));
+    uint sampler = params[t_2 + 4u];
+    uint mu = sampler & TEXTURE_WRAP_MASK;
+    uint mv = (sampler >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK;
+    metal::float2 size_2 = metal::float2(static_cast<float>(wi), static_cast<float>(hi_2));
+    if ((sampler & TEXTURE_NEAREST) != 0u) {
+        metal::float2 q_5 = metal::floor(uv * size_2);
+        int _e41 = i32_from_f32_(q_5.x);
+        int _e42 = wrap_texel(_e41, wi, mu);
+        int _e45 = i32_from_f32_(q_5.y);
+        int _e46 = wrap_texel(_e45, hi_2, mv);
+        metal::float4 _e48 = texel_at(t_2, static_cast<uint>(_e42), static_cast<uint>(_e46), params, texels, _buffer_sizes);
+        return _e48;
     }
-    metal::float2 p_7 = (uv * metal::float2(w_5, h_3)) - metal::float2(0.5);
+    metal::float2 p_7 = (uv * size_2) - metal::float2(0.5);
     metal::float2 f_2 = metal::floor(p_7);
     metal::float2 fr = p_7 - f_2;
-    int _e43 = i32_from_f32_(f_2.x);
-    int _e45 = i32_from_f32_(f_2.y);
-    metal::float4 _e46 = texel_at(t_2, _e43, _e45, params, texels, _buffer_sizes);
-    metal::float4 _e49 = texel_at(t_2, as_type<int>(as_type<uint>(_e43) + as_type<uint>(1)), _e45, params, texels, _buffer_sizes);
-    metal::float4 a_8 = metal::mix(_e46, _e49, metal::float4(fr.x));
-    metal::float4 _e55 = texel_at(t_2, _e43, as_type<int>(as_type<uint>(_e45) + as_type<uint>(1)), params, texels, _buffer_sizes);
-    metal::float4 _e60 = texel_at(t_2, as_type<int>(as_type<uint>(_e43) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e45) + as_type<uint>(1)), params, texels, _buffer_sizes);
-    metal::float4 b_9 = metal::mix(_e55, _e60, metal::float4(fr.x));
+    int _e56 = i32_from_f32_(f_2.x);
+    int _e58 = i32_from_f32_(f_2.y);
+    int _e59 = wrap_texel(_e56, wi, mu);
+    uint x0_ = static_cast<uint>(_e59);
+    int _e63 = wrap_texel(as_type<int>(as_type<uint>(_e56) + as_type<uint>(1)), wi, mu);
+    uint x1_ = static_cast<uint>(_e63);
+    int _e65 = wrap_texel(_e58, hi_2, mv);
+    uint y0_ = static_cast<uint>(_e65);
+    int _e69 = wrap_texel(as_type<int>(as_type<uint>(_e58) + as_type<uint>(1)), hi_2, mv);
+    uint y1_ = static_cast<uint>(_e69);
+    metal::float4 _e71 = texel_at(t_2, x0_, y0_, params, texels, _buffer_sizes);
+    metal::float4 _e72 = texel_at(t_2, x1_, y0_, params, texels, _buffer_sizes);
+    metal::float4 a_8 = metal::mix(_e71, _e72, metal::float4(fr.x));
+    metal::float4 _e76 = texel_at(t_2, x0_, y1_, params, texels, _buffer_sizes);
+    metal::float4 _e77 = texel_at(t_2, x1_, y1_, params, texels, _buffer_sizes);
+    metal::float4 b_9 = metal::mix(_e76, _e77, metal::float4(fr.x));
     return metal::mix(a_8, b_9, metal::float4(fr.y));
 }
 
@@ -1648,15 +1649,15 @@ PointLight load_PointLight(
 }
 
 metal::float3 step_toward(
-    metal::float3 x_4,
+    metal::float3 x_3,
     metal::float3 s_1
 ) {
-    metal::uint3 bits_1 = as_type<metal::uint3>(x_4);
-    metal::bool3 up_1 = (metal::sign(x_4) * metal::sign(s_1)) > metal::float3(0.0);
+    metal::uint3 bits_1 = as_type<metal::uint3>(x_3);
+    metal::bool3 up_1 = (metal::sign(x_3) * metal::sign(s_1)) > metal::float3(0.0);
     metal::float3 stepped = as_type<metal::float3>(metal::select(bits_1 - metal::uint3(1u), bits_1 + metal::uint3(1u), up_1));
     metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s_1 > metal::float3(0.0));
-    metal::float3 moved = metal::select(stepped, from_zero, x_4 == metal::float3(0.0));
-    return metal::select(x_4, moved, !((s_1 == metal::float3(0.0))));
+    metal::float3 moved = metal::select(stepped, from_zero, x_3 == metal::float3(0.0));
+    return metal::select(x_3, moved, !((s_1 == metal::float3(0.0))));
 }
 
 metal::float3 offset_origin(
@@ -2204,9 +2205,9 @@ metal::float3 trace(
 }
 
 metal::bool3 is_finite_vec3f(
-    metal::float3 x_5
+    metal::float3 x_4
 ) {
-    return (as_type<metal::uint3>(x_5) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+    return (as_type<metal::uint3>(x_4) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
 }
 
 metal::float3 finite_or_zero(
