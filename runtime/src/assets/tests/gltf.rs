@@ -223,13 +223,14 @@ fn material_with_external_base_color_texture() {
     let (b, pos, idx) = triangle();
     let mut b = b;
     let uv = b.vec2(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]);
+    let color = b.vec3(&[[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]);
     let path = b.write_gltf(
         &dir,
         "textured",
         json!({
             "extensionsUsed": ["KHR_materials_emissive_strength"],
             "meshes": [{ "primitives": [
-                { "attributes": { "POSITION": pos, "TEXCOORD_0": uv }, "indices": idx, "material": 0 },
+                { "attributes": { "POSITION": pos, "TEXCOORD_0": uv, "COLOR_0": color }, "indices": idx, "material": 0 },
                 { "attributes": { "POSITION": pos }, "indices": idx, "material": 0 },
             ] }],
             "materials": [{
@@ -281,6 +282,14 @@ fn material_with_external_base_color_texture() {
     assert_eq!(scene.textures[0].words, SMALL_PNG_WORDS);
     assert!(
         scene.warnings.iter().any(|w| w.contains("normal texture")),
+        "{:?}",
+        scene.warnings
+    );
+    assert!(
+        scene.warnings.iter().any(|w| w.contains(
+            "meshes[0].primitives[0]: its COLOR_0 vertex colours are not imported (the base \
+             colour of materials[0]"
+        )),
         "{:?}",
         scene.warnings
     );
