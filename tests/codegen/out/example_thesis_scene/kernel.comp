@@ -934,35 +934,26 @@ vec4 sample_texture(uint t_1, vec2 uv) {
     uint sampler_ = _group_0_binding_6_cs[(t_1 + 4u)];
     uint mu = (sampler_ & TEXTURE_WRAP_MASK);
     uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
-    vec2 size_2 = vec2(float(wi), float(hi_1));
-    if (((sampler_ & TEXTURE_NEAREST) != 0u)) {
-        vec2 q_3 = floor((uv * size_2));
-        int _e41 = i32_from_f32_(q_3.x);
-        int _e42 = wrap_texel(_e41, wi, mu);
-        int _e45 = i32_from_f32_(q_3.y);
-        int _e46 = wrap_texel(_e45, hi_1, mv);
-        vec4 _e48 = texel_at(t_1, uint(_e42), uint(_e46));
-        return _e48;
-    }
-    vec2 p_7 = ((uv * size_2) - vec2(0.5));
+    vec2 q_3 = (uv * vec2(float(wi), float(hi_1)));
+    vec2 p_7 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_3) : (q_3 - vec2(0.5)));
     vec2 f_1 = floor(p_7);
     vec2 fr = (p_7 - f_1);
-    int _e56 = i32_from_f32_(f_1.x);
-    int _e58 = i32_from_f32_(f_1.y);
-    int _e59 = wrap_texel(_e56, wi, mu);
-    uint x0_ = uint(_e59);
-    int _e63 = wrap_texel((_e56 + 1), wi, mu);
-    uint x1_ = uint(_e63);
-    int _e65 = wrap_texel(_e58, hi_1, mv);
-    uint y0_ = uint(_e65);
-    int _e69 = wrap_texel((_e58 + 1), hi_1, mv);
-    uint y1_ = uint(_e69);
-    vec4 _e71 = texel_at(t_1, x0_, y0_);
-    vec4 _e72 = texel_at(t_1, x1_, y0_);
-    vec4 a_7 = mix(_e71, _e72, vec4(fr.x));
-    vec4 _e76 = texel_at(t_1, x0_, y1_);
-    vec4 _e77 = texel_at(t_1, x1_, y1_);
-    vec4 b_8 = mix(_e76, _e77, vec4(fr.x));
+    int _e47 = i32_from_f32_(f_1.x);
+    int _e49 = i32_from_f32_(f_1.y);
+    int _e50 = wrap_texel(_e47, wi, mu);
+    uint x0_ = uint(_e50);
+    int _e54 = wrap_texel((_e47 + 1), wi, mu);
+    uint x1_ = uint(_e54);
+    int _e56 = wrap_texel(_e49, hi_1, mv);
+    uint y0_ = uint(_e56);
+    int _e60 = wrap_texel((_e49 + 1), hi_1, mv);
+    uint y1_ = uint(_e60);
+    vec4 _e62 = texel_at(t_1, x0_, y0_);
+    vec4 _e63 = texel_at(t_1, x1_, y0_);
+    vec4 a_7 = mix(_e62, _e63, vec4(fr.x));
+    vec4 _e67 = texel_at(t_1, x0_, y1_);
+    vec4 _e68 = texel_at(t_1, x1_, y1_);
+    vec4 b_8 = mix(_e67, _e68, vec4(fr.x));
     return mix(a_7, b_8, vec4(fr.y));
 }
 

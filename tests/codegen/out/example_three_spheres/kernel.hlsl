@@ -1535,35 +1535,26 @@ float4 sample_texture(uint t_2, float2 uv)
     uint sampler_ = asuint(params.Load((t_2 + 4u)*4));
     uint mu = (sampler_ & TEXTURE_WRAP_MASK);
     uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
-    float2 size_2 = float2(float(wi), float(hi_2));
-    if (((sampler_ & TEXTURE_NEAREST) != 0u)) {
-        float2 q_5 = floor((uv * size_2));
-        const int _e41 = i32_from_f32_(q_5.x);
-        const int _e42 = wrap_texel(_e41, wi, mu);
-        const int _e45 = i32_from_f32_(q_5.y);
-        const int _e46 = wrap_texel(_e45, hi_2, mv);
-        const float4 _e48 = texel_at(t_2, uint(_e42), uint(_e46));
-        return _e48;
-    }
-    float2 p_7 = ((uv * size_2) - (0.5).xx);
+    float2 q_5 = (uv * float2(float(wi), float(hi_2)));
+    float2 p_7 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_5) : (q_5 - (0.5).xx));
     float2 f_2 = floor(p_7);
     float2 fr = (p_7 - f_2);
-    const int _e56 = i32_from_f32_(f_2.x);
-    const int _e58 = i32_from_f32_(f_2.y);
-    const int _e59 = wrap_texel(_e56, wi, mu);
-    uint x0_ = uint(_e59);
-    const int _e63 = wrap_texel(asint(asuint(_e56) + asuint(int(1))), wi, mu);
-    uint x1_ = uint(_e63);
-    const int _e65 = wrap_texel(_e58, hi_2, mv);
-    uint y0_ = uint(_e65);
-    const int _e69 = wrap_texel(asint(asuint(_e58) + asuint(int(1))), hi_2, mv);
-    uint y1_ = uint(_e69);
-    const float4 _e71 = texel_at(t_2, x0_, y0_);
-    const float4 _e72 = texel_at(t_2, x1_, y0_);
-    float4 a_8 = lerp(_e71, _e72, (fr.x).xxxx);
-    const float4 _e76 = texel_at(t_2, x0_, y1_);
-    const float4 _e77 = texel_at(t_2, x1_, y1_);
-    float4 b_9 = lerp(_e76, _e77, (fr.x).xxxx);
+    const int _e47 = i32_from_f32_(f_2.x);
+    const int _e49 = i32_from_f32_(f_2.y);
+    const int _e50 = wrap_texel(_e47, wi, mu);
+    uint x0_ = uint(_e50);
+    const int _e54 = wrap_texel(asint(asuint(_e47) + asuint(int(1))), wi, mu);
+    uint x1_ = uint(_e54);
+    const int _e56 = wrap_texel(_e49, hi_2, mv);
+    uint y0_ = uint(_e56);
+    const int _e60 = wrap_texel(asint(asuint(_e49) + asuint(int(1))), hi_2, mv);
+    uint y1_ = uint(_e60);
+    const float4 _e62 = texel_at(t_2, x0_, y0_);
+    const float4 _e63 = texel_at(t_2, x1_, y0_);
+    float4 a_8 = lerp(_e62, _e63, (fr.x).xxxx);
+    const float4 _e67 = texel_at(t_2, x0_, y1_);
+    const float4 _e68 = texel_at(t_2, x1_, y1_);
+    float4 b_9 = lerp(_e67, _e68, (fr.x).xxxx);
     return lerp(a_8, b_9, (fr.y).xxxx);
 }
 

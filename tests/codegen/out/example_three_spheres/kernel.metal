@@ -1529,35 +1529,26 @@ metal::float4 sample_texture(
     uint sampler = params[t_2 + 4u];
     uint mu = sampler & TEXTURE_WRAP_MASK;
     uint mv = (sampler >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK;
-    metal::float2 size_2 = metal::float2(static_cast<float>(wi), static_cast<float>(hi_2));
-    if ((sampler & TEXTURE_NEAREST) != 0u) {
-        metal::float2 q_5 = metal::floor(uv * size_2);
-        int _e41 = i32_from_f32_(q_5.x);
-        int _e42 = wrap_texel(_e41, wi, mu);
-        int _e45 = i32_from_f32_(q_5.y);
-        int _e46 = wrap_texel(_e45, hi_2, mv);
-        metal::float4 _e48 = texel_at(t_2, static_cast<uint>(_e42), static_cast<uint>(_e46), params, texels, _buffer_sizes);
-        return _e48;
-    }
-    metal::float2 p_7 = (uv * size_2) - metal::float2(0.5);
+    metal::float2 q_5 = uv * metal::float2(static_cast<float>(wi), static_cast<float>(hi_2));
+    metal::float2 p_7 = ((sampler & TEXTURE_NEAREST) != 0u) ? metal::floor(q_5) : (q_5 - metal::float2(0.5));
     metal::float2 f_2 = metal::floor(p_7);
     metal::float2 fr = p_7 - f_2;
-    int _e56 = i32_from_f32_(f_2.x);
-    int _e58 = i32_from_f32_(f_2.y);
-    int _e59 = wrap_texel(_e56, wi, mu);
-    uint x0_ = static_cast<uint>(_e59);
-    int _e63 = wrap_texel(as_type<int>(as_type<uint>(_e56) + as_type<uint>(1)), wi, mu);
-    uint x1_ = static_cast<uint>(_e63);
-    int _e65 = wrap_texel(_e58, hi_2, mv);
-    uint y0_ = static_cast<uint>(_e65);
-    int _e69 = wrap_texel(as_type<int>(as_type<uint>(_e58) + as_type<uint>(1)), hi_2, mv);
-    uint y1_ = static_cast<uint>(_e69);
-    metal::float4 _e71 = texel_at(t_2, x0_, y0_, params, texels, _buffer_sizes);
-    metal::float4 _e72 = texel_at(t_2, x1_, y0_, params, texels, _buffer_sizes);
-    metal::float4 a_8 = metal::mix(_e71, _e72, metal::float4(fr.x));
-    metal::float4 _e76 = texel_at(t_2, x0_, y1_, params, texels, _buffer_sizes);
-    metal::float4 _e77 = texel_at(t_2, x1_, y1_, params, texels, _buffer_sizes);
-    metal::float4 b_9 = metal::mix(_e76, _e77, metal::float4(fr.x));
+    int _e47 = i32_from_f32_(f_2.x);
+    int _e49 = i32_from_f32_(f_2.y);
+    int _e50 = wrap_texel(_e47, wi, mu);
+    uint x0_ = static_cast<uint>(_e50);
+    int _e54 = wrap_texel(as_type<int>(as_type<uint>(_e47) + as_type<uint>(1)), wi, mu);
+    uint x1_ = static_cast<uint>(_e54);
+    int _e56 = wrap_texel(_e49, hi_2, mv);
+    uint y0_ = static_cast<uint>(_e56);
+    int _e60 = wrap_texel(as_type<int>(as_type<uint>(_e49) + as_type<uint>(1)), hi_2, mv);
+    uint y1_ = static_cast<uint>(_e60);
+    metal::float4 _e62 = texel_at(t_2, x0_, y0_, params, texels, _buffer_sizes);
+    metal::float4 _e63 = texel_at(t_2, x1_, y0_, params, texels, _buffer_sizes);
+    metal::float4 a_8 = metal::mix(_e62, _e63, metal::float4(fr.x));
+    metal::float4 _e67 = texel_at(t_2, x0_, y1_, params, texels, _buffer_sizes);
+    metal::float4 _e68 = texel_at(t_2, x1_, y1_, params, texels, _buffer_sizes);
+    metal::float4 b_9 = metal::mix(_e67, _e68, metal::float4(fr.x));
     return metal::mix(a_8, b_9, metal::float4(fr.y));
 }
 

@@ -1216,35 +1216,26 @@ fn sample_texture(t_2: u32, uv: vec2<f32>) -> vec4<f32> {
     let sampler_ = params[(t_2 + 4u)];
     let mu = (sampler_ & TEXTURE_WRAP_MASK);
     let mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
-    let size_2 = vec2<f32>(f32(wi), f32(hi_2));
-    if ((sampler_ & TEXTURE_NEAREST) != 0u) {
-        let q_5 = floor((uv * size_2));
-        let _e41 = i32_from_f32_(q_5.x);
-        let _e42 = wrap_texel(_e41, wi, mu);
-        let _e45 = i32_from_f32_(q_5.y);
-        let _e46 = wrap_texel(_e45, hi_2, mv);
-        let _e48 = texel_at(t_2, u32(_e42), u32(_e46));
-        return _e48;
-    }
-    let p_7 = ((uv * size_2) - vec2(0.5f));
+    let q_5 = (uv * vec2<f32>(f32(wi), f32(hi_2)));
+    let p_7 = select((q_5 - vec2(0.5f)), floor(q_5), ((sampler_ & TEXTURE_NEAREST) != 0u));
     let f_2 = floor(p_7);
     let fr = (p_7 - f_2);
-    let _e56 = i32_from_f32_(f_2.x);
-    let _e58 = i32_from_f32_(f_2.y);
-    let _e59 = wrap_texel(_e56, wi, mu);
-    let x0_ = u32(_e59);
-    let _e63 = wrap_texel((_e56 + 1i), wi, mu);
-    let x1_ = u32(_e63);
-    let _e65 = wrap_texel(_e58, hi_2, mv);
-    let y0_ = u32(_e65);
-    let _e69 = wrap_texel((_e58 + 1i), hi_2, mv);
-    let y1_ = u32(_e69);
-    let _e71 = texel_at(t_2, x0_, y0_);
-    let _e72 = texel_at(t_2, x1_, y0_);
-    let a_8 = mix(_e71, _e72, vec4(fr.x));
-    let _e76 = texel_at(t_2, x0_, y1_);
-    let _e77 = texel_at(t_2, x1_, y1_);
-    let b_9 = mix(_e76, _e77, vec4(fr.x));
+    let _e47 = i32_from_f32_(f_2.x);
+    let _e49 = i32_from_f32_(f_2.y);
+    let _e50 = wrap_texel(_e47, wi, mu);
+    let x0_ = u32(_e50);
+    let _e54 = wrap_texel((_e47 + 1i), wi, mu);
+    let x1_ = u32(_e54);
+    let _e56 = wrap_texel(_e49, hi_2, mv);
+    let y0_ = u32(_e56);
+    let _e60 = wrap_texel((_e49 + 1i), hi_2, mv);
+    let y1_ = u32(_e60);
+    let _e62 = texel_at(t_2, x0_, y0_);
+    let _e63 = texel_at(t_2, x1_, y0_);
+    let a_8 = mix(_e62, _e63, vec4(fr.x));
+    let _e67 = texel_at(t_2, x0_, y1_);
+    let _e68 = texel_at(t_2, x1_, y1_);
+    let b_9 = mix(_e67, _e68, vec4(fr.x));
     return mix(a_8, b_9, vec4(fr.y));
 }
 
