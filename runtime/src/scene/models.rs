@@ -7,8 +7,11 @@
 //!   **one object-level BVH however many nodes instance it**;
 //! - every node instancing a primitive → one object, object-to-world = the entry's `transform` ×
 //!   the node's world transform, named `file.glb#nodes[i]`;
-//! - every used material → a `GltfMaterial` (`stdlib/materials/gltf.rt`; `GltfMaskedMaterial`
-//!   with its `alpha_cutoff` for `alphaMode: MASK`; blending is rendered opaque with a warning):
+//! - every used material → a `GltfMaterial` (`stdlib/materials/gltf.rt`; `GltfMappedMaterial`
+//!   when it has more textures or a transform, `GltfMaterial::is_mapped`; `GltfMaskedMaterial` /
+//!   `GltfMaskedMappedMaterial` for `alphaMode: MASK` (its `alpha_cutoff`) and `BLEND`
+//!   (`blend` 1: stochastic coverage), with `double_sided`; opaque single-sided materials are
+//!   not culled, which one warning per file names):
 //!   base colour factor and texture, metallic and roughness factors and their texture, emissive
 //!   factor and texture, occlusion texture and strength (a texture the material lacks is
 //!   `solid_texture(vec4f(1.0))`). Each texture enters the cache under the path

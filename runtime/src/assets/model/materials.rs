@@ -1,14 +1,16 @@
-//! glTF materials → [`GltfMaterial`], and their base-colour images → [`TextureData`].
+//! glTF materials → [`GltfMaterial`], and their images → [`TextureData`] with their samplers.
 //!
-//! Invariants: each glTF material and each glTF image is converted at most once, on first use
-//! ([`Materials`] caches the mapping), so `ModelScene::materials` and `::textures` hold only what
-//! the scene uses, in first-use order. Textures other than the base colour (normal, occlusion,
-//! emissive, metallic-roughness maps) are ignored with a warning, and so is a file's use of
-//! `KHR_texture_transform` (as of any extension we do not read, see `nodes.rs`); sampler
-//! settings (filters, wrap modes) are ignored silently, as nearly every file has them. A
-//! base-colour texture on a uv set other than 0 is kept, with a warning, and sampled with set 0.
-//! A base-colour image file that cannot be read is [`AssetError::MissingFile`] naming the material
-//! and the image ([`GltfItem::BaseColorImage`]).
+//! Invariants: each glTF material is converted at most once and each glTF image decoded at most
+//! once, on first use ([`Materials`] caches the mappings), so `ModelScene::materials` and
+//! `::textures` hold only what the scene uses, in first-use order; a texture is one (image,
+//! sampler, linear-or-sRGB) triple (base colour and emissive are sRGB, metallic-roughness and
+//! occlusion linear data), labelled uniquely in `texture_labels`. Imported: base colour,
+//! metallic-roughness, emissive and occlusion textures, each with its sampler (wrap modes,
+//! magnification filter; see [`Sampler`] for why there is no minification filter) and its
+//! `KHR_texture_transform`. Not imported, each with a warning naming the material: the normal
+//! texture, and uv sets other than 0 (such a texture is kept and sampled with set 0). An image
+//! file that cannot be read is [`AssetError::MissingFile`] naming the material, the texture and
+//! the image ([`GltfItem::BaseColorImage`], [`GltfItem::MaterialImage`]).
 
 use std::collections::HashMap;
 
