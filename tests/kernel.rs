@@ -347,7 +347,7 @@ fn a_model_with_only_a_point_light_links_no_other_light_and_no_any_hit() {
             "entries": [{
                 "path": "model.gltf",
                 "read": true,
-                "holds": ["opaque or blended material", "point light"],
+                "holds": ["opaque material", "point light"],
             }],
             "linked": ["GltfMaterial", "PointLight"],
         })
@@ -357,7 +357,10 @@ fn a_model_with_only_a_point_light_links_no_other_light_and_no_any_hit() {
     for (program, part) in [
         ("@light spot_light", "spot light"),
         ("@light directional_light", "directional light"),
-        ("@any_hit gltf_masked_any_hit", "alpha-masked material"),
+        (
+            "@any_hit gltf_masked_any_hit",
+            "alpha-masked or blended material",
+        ),
     ] {
         let entry = left
             .iter()
@@ -426,7 +429,9 @@ fn a_model_the_compiler_cannot_read_links_every_model_type_and_says_why() {
         m["models"]["linked"],
         serde_json::json!([
             "GltfMaterial",
+            "GltfMappedMaterial",
             "GltfMaskedMaterial",
+            "GltfMaskedMappedMaterial",
             "PointLight",
             "DirectionalLight",
             "SpotLight"

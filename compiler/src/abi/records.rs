@@ -109,14 +109,19 @@ pub const TEXTURE: RecordDesc = RecordDesc {
     name: "texture",
     binding: "params",
     addressing: Addressing::WordOffset,
-    stride: 4,
+    stride: 5,
     fields: &[
         word("texel_base", 0, "the texture's first word in `texels`"),
         word("width", 1, "width in texels"),
         word("height", 2, "height in texels"),
-        word("format", 3, "TEXTURE_FORMAT_RGBA8_SRGB or TEXTURE_FORMAT_RGBA16F"),
+        word("format", 3, "TEXTURE_FORMAT_RGBA8_SRGB, _RGBA8_UNORM or _RGBA16F"),
+        word(
+            "sampler",
+            4,
+            "wrap mode of u (bits 0-1) and v (bits 2-3: TEXTURE_WRAP_*), TEXTURE_NEAREST; 0 = repeat, bilinear",
+        ),
     ],
-    doc: "a `texture` value: where its texels are, its size and format (params, after the mesh records)",
+    doc: "a `texture` value: where its texels are, its size, format and sampler state (params, after the mesh records)",
 };
 
 /// An entry of the light table (`FrameUniforms.light_table`, `light_count` entries).
@@ -358,8 +363,21 @@ pub const FLAG_MEDIUM: u32 = 4;
 pub const TEXTURE_FORMAT_RGBA8_SRGB: u32 = 0;
 /// `texture.format`: linear RGBA half floats, two words per texel (f16x2 red/green, blue/alpha).
 pub const TEXTURE_FORMAT_RGBA16F: u32 = 1;
+/// `texture.format`: 8-bit linear RGBA, one word per texel (packed as `TEXTURE_FORMAT_RGBA8_SRGB`).
+pub const TEXTURE_FORMAT_RGBA8_UNORM: u32 = 2;
 /// Words per texel of `TEXTURE_FORMAT_RGBA16F`.
 pub const RGBA16F_TEXEL_WORDS: u32 = 2;
+/// `texture.sampler`: the mask of one axis's wrap mode (u in bits 0-1, v shifted by
+/// `TEXTURE_WRAP_V_SHIFT`); wrap mode 0 is repeat.
+pub const TEXTURE_WRAP_MASK: u32 = 3;
+/// `texture.sampler`: the shift of v's wrap mode.
+pub const TEXTURE_WRAP_V_SHIFT: u32 = 2;
+/// `texture.sampler` wrap mode: coordinates are clamped to the edge texels.
+pub const TEXTURE_WRAP_CLAMP: u32 = 1;
+/// `texture.sampler` wrap mode: the texture repeats mirrored every other period.
+pub const TEXTURE_WRAP_MIRROR: u32 = 2;
+/// `texture.sampler`: nearest-texel lookup instead of bilinear.
+pub const TEXTURE_NEAREST: u32 = 16;
 /// Index in `counters` of the count of non-finite samples replaced by zero.
 pub const COUNTER_NONFINITE: u32 = 0;
 /// Index in `counters` of the count of rays traced (camera, secondary and shadow).
@@ -448,9 +466,39 @@ pub const CONSTANTS: &[Constant] = &[
         "texture.format: linear RGBA half floats, two words per texel",
     ),
     c(
+        "TEXTURE_FORMAT_RGBA8_UNORM",
+        TEXTURE_FORMAT_RGBA8_UNORM,
+        "texture.format: 8-bit linear RGBA, one word per texel",
+    ),
+    c(
         "RGBA16F_TEXEL_WORDS",
         RGBA16F_TEXEL_WORDS,
         "words per texel of TEXTURE_FORMAT_RGBA16F",
+    ),
+    c(
+        "TEXTURE_WRAP_MASK",
+        TEXTURE_WRAP_MASK,
+        "texture.sampler: mask of one axis's wrap mode (u in bits 0-1; 0 = repeat)",
+    ),
+    c(
+        "TEXTURE_WRAP_V_SHIFT",
+        TEXTURE_WRAP_V_SHIFT,
+        "texture.sampler: shift of v's wrap mode",
+    ),
+    c(
+        "TEXTURE_WRAP_CLAMP",
+        TEXTURE_WRAP_CLAMP,
+        "texture.sampler wrap mode: clamp to the edge texels",
+    ),
+    c(
+        "TEXTURE_WRAP_MIRROR",
+        TEXTURE_WRAP_MIRROR,
+        "texture.sampler wrap mode: mirrored repeat",
+    ),
+    c(
+        "TEXTURE_NEAREST",
+        TEXTURE_NEAREST,
+        "texture.sampler: nearest-texel lookup instead of bilinear",
     ),
     c(
         "COUNTER_NONFINITE",

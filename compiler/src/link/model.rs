@@ -34,10 +34,16 @@ use crate::source::Span;
 /// What one of [`MODEL_TYPES`] stands for in a glTF file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum ModelPart {
-    /// A material with `alphaMode` `OPAQUE` or `BLEND` (blending is rendered opaque).
+    /// A material with `alphaMode` `OPAQUE` and no texture but the base colour's.
     OpaqueMaterial,
-    /// A material with `alphaMode` `MASK` (the any-hit path).
+    /// A material with `alphaMode` `OPAQUE` and a metallic-roughness, emissive or occlusion
+    /// texture, or a `KHR_texture_transform` on any texture.
+    MappedMaterial,
+    /// A material with `alphaMode` `MASK` or `BLEND` (the any-hit path: a cutoff, or stochastic
+    /// coverage) and no texture but the base colour's.
     MaskedMaterial,
+    /// A `MASK` or `BLEND` material with more textures or a transform (as `MappedMaterial`).
+    MaskedMappedMaterial,
     /// A `KHR_lights_punctual` point light.
     PointLight,
     /// A `KHR_lights_punctual` directional light.
@@ -50,9 +56,11 @@ pub enum ModelPart {
 
 impl ModelPart {
     /// Every part, in order.
-    pub const ALL: [ModelPart; 6] = [
+    pub const ALL: [ModelPart; 8] = [
         ModelPart::OpaqueMaterial,
+        ModelPart::MappedMaterial,
         ModelPart::MaskedMaterial,
+        ModelPart::MaskedMappedMaterial,
         ModelPart::PointLight,
         ModelPart::DirectionalLight,
         ModelPart::SpotLight,
@@ -62,8 +70,12 @@ impl ModelPart {
     /// How `manifest.json` names it.
     pub fn name(self) -> &'static str {
         match self {
-            ModelPart::OpaqueMaterial => "opaque or blended material",
-            ModelPart::MaskedMaterial => "alpha-masked material",
+            ModelPart::OpaqueMaterial => "opaque material",
+            ModelPart::MappedMaterial => "opaque material with more textures",
+            ModelPart::MaskedMaterial => "alpha-masked or blended material",
+            ModelPart::MaskedMappedMaterial => {
+                "alpha-masked or blended material with more textures"
+            }
             ModelPart::PointLight => "point light",
             ModelPart::DirectionalLight => "directional light",
             ModelPart::SpotLight => "spot light",
@@ -84,7 +96,7 @@ pub struct ModelType {
 }
 
 /// The standard-library role structs a scene's `model` entries become: the glTF materials (opaque,
-/// and alpha-masked with an `@any_hit` program), the `KHR_lights_punctual` lights, and the camera
+/// and alpha-masked or blended with an `@any_hit` program), the `KHR_lights_punctual` lights, and the camera
 /// (used only when the scene has no `camera` entry). The driver loads these modules for any scene
 /// with a `model` entry; [`super::link`] links those whose part a file of the scene holds.
 pub const MODEL_TYPES: &[ModelType] = &[
@@ -95,8 +107,18 @@ pub const MODEL_TYPES: &[ModelType] = &[
     },
     ModelType {
         module: "std/materials/gltf.rt",
+        name: "GltfMappedMaterial",
+        part: ModelPart::MappedMaterial,
+    },
+    ModelType {
+        module: "std/materials/gltf.rt",
         name: "GltfMaskedMaterial",
         part: ModelPart::MaskedMaterial,
+    },
+    ModelType {
+        module: "std/materials/gltf.rt",
+        name: "GltfMaskedMappedMaterial",
+        part: ModelPart::MaskedMappedMaterial,
     },
     ModelType {
         module: "std/lights/point.rt",
@@ -222,16 +244,38 @@ pub fn parts_of(bytes: &[u8]) -> Result<BTreeSet<ModelPart>, String> {
     Ok(parts_of_root(&root))
 }
 
+/// Whether a material needs `GltfMappedMaterial` (or `GltfMaskedMappedMaterial`): it has a metallic-roughness, emissive
+/// or occlusion texture, or a `KHR_texture_transform` on any of its textures. The runtime's
+/// import (`GltfMaterial::is_mapped`) decides the same way.
+pub fn is_mapped(m: &json::Material) -> bool {
+    let transformed = |e: Option<&json::extensions::texture::Info>| {
+        e.is_some_and(|e| e.texture_transform.is_some())
+    };
+    let pbr = &m.pbr_metallic_roughness;
+    pbr.metallic_roughness_texture.is_some()
+        || m.emissive_texture.is_some()
+        || m.occlusion_texture.is_some()
+        || pbr
+            .base_color_texture
+            .as_ref()
+            .is_some_and(|t| transformed(t.extensions.as_ref()))
+}
+
 /// The parts a parsed glTF document holds (see the module docs for what counts).
 pub fn parts_of_root(root: &json::Root) -> BTreeSet<ModelPart> {
     let mut parts = BTreeSet::new();
     for primitive in root.meshes.iter().flat_map(|m| &m.primitives) {
-        let mode = primitive
+        let material = primitive
             .material
-            .and_then(|i| root.materials.get(i.value()))
-            .map(|m| m.alpha_mode);
-        parts.insert(match mode {
-            Some(Checked::Valid(json::material::AlphaMode::Mask)) => ModelPart::MaskedMaterial,
+            .and_then(|i| root.materials.get(i.value()));
+        parts.insert(match material.map(|m| m.alpha_mode) {
+            Some(Checked::Valid(
+                json::material::AlphaMode::Mask | json::material::AlphaMode::Blend,
+            )) if material.is_some_and(is_mapped) => ModelPart::MaskedMappedMaterial,
+            Some(Checked::Valid(
+                json::material::AlphaMode::Mask | json::material::AlphaMode::Blend,
+            )) => ModelPart::MaskedMaterial,
+            _ if material.is_some_and(is_mapped) => ModelPart::MappedMaterial,
             _ => ModelPart::OpaqueMaterial,
         });
     }
@@ -298,7 +342,7 @@ mod tests {
             r#"{{ {ASSET},
             "extensionsUsed": ["KHR_lights_punctual"],
             "extensions": {{"KHR_lights_punctual": {{"lights": [{{"type": "point"}}, {{"type": "spot", "spot": {{}}}}]}}}},
-            "materials": [{{"alphaMode": "MASK"}}, {{"alphaMode": "BLEND"}}],
+            "materials": [{{"alphaMode": "MASK"}}, {{"alphaMode": "OPAQUE"}}],
             "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}, "material": 0}},
                                         {{"attributes": {{"POSITION": 0}}, "material": 1}}]}}],
             "cameras": [{{"type": "perspective", "perspective": {{"yfov": 1.0, "znear": 0.1}}}}]
@@ -314,6 +358,33 @@ mod tests {
                 ModelPart::PerspectiveCamera
             ]
         );
+    }
+
+    #[test]
+    fn an_opaque_material_with_more_textures_or_a_transform_is_mapped() {
+        let text = format!(
+            r#"{{ {ASSET}, "materials": [
+                {{"pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0}}}}}},
+                {{"emissiveTexture": {{"index": 0}}}},
+                {{"pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0,
+                    "extensions": {{"KHR_texture_transform": {{"offset": [0.5, 0]}}}}}}}}}}],
+            "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}, "material": 0}}]}},
+                       {{"primitives": [{{"attributes": {{"POSITION": 0}}, "material": 1}}]}},
+                       {{"primitives": [{{"attributes": {{"POSITION": 0}}, "material": 2}}]}}] }}"#
+        );
+        assert_eq!(
+            parts(&text),
+            [ModelPart::OpaqueMaterial, ModelPart::MappedMaterial]
+        );
+    }
+
+    #[test]
+    fn a_blended_material_takes_the_any_hit_path() {
+        let text = format!(
+            r#"{{ {ASSET}, "materials": [{{"alphaMode": "BLEND"}}],
+            "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}, "material": 0}}]}}] }}"#
+        );
+        assert_eq!(parts(&text), [ModelPart::MaskedMaterial]);
     }
 
     #[test]

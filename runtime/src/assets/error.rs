@@ -274,6 +274,8 @@ pub enum GltfItem {
     Image(usize),
     /// `textures[i]`.
     Texture(usize),
+    /// `samplers[i]`.
+    Sampler(usize),
     /// `materials[i]`.
     Material(usize),
     /// The base-colour image `images[image]` of `materials[material]`.
@@ -282,6 +284,16 @@ pub enum GltfItem {
         material: usize,
         /// The image.
         image: usize,
+    },
+    /// The image `images[image]` of texture `slot` of `materials[material]` (indices as `u32`,
+    /// keeping errors small; a glTF file holds fewer than 2³² of either).
+    MaterialImage {
+        /// The material.
+        material: u32,
+        /// Which of its textures.
+        slot: TextureSlot,
+        /// The image.
+        image: u32,
     },
     /// `meshes[mesh].primitives[primitive]`.
     Primitive {
@@ -292,6 +304,28 @@ pub enum GltfItem {
     },
 }
 
+/// A texture of a glTF material other than the base colour (which has
+/// [`GltfItem::BaseColorImage`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TextureSlot {
+    /// `pbrMetallicRoughness.metallicRoughnessTexture`.
+    MetallicRoughness,
+    /// `emissiveTexture`.
+    Emissive,
+    /// `occlusionTexture`.
+    Occlusion,
+}
+
+impl fmt::Display for TextureSlot {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Self::MetallicRoughness => "metallic-roughness",
+            Self::Emissive => "emissive",
+            Self::Occlusion => "occlusion",
+        })
+    }
+}
+
 impl fmt::Display for GltfItem {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -300,11 +334,22 @@ impl fmt::Display for GltfItem {
             Self::Accessor(i) => write!(f, "accessors[{i}]"),
             Self::Image(i) => write!(f, "images[{i}]"),
             Self::Texture(i) => write!(f, "textures[{i}]"),
+            Self::Sampler(i) => write!(f, "samplers[{i}]"),
             Self::Material(i) => write!(f, "materials[{i}]"),
             Self::BaseColorImage { material, image } => {
                 write!(
                     f,
                     "the base colour texture of materials[{material}] (images[{image}])"
+                )
+            }
+            Self::MaterialImage {
+                material,
+                slot,
+                image,
+            } => {
+                write!(
+                    f,
+                    "the {slot} texture of materials[{material}] (images[{image}])"
                 )
             }
             Self::Primitive { mesh, primitive } => {

@@ -72,7 +72,7 @@ pub use bounds::Bounds;
 pub use confine::AssetRoots;
 pub(crate) use error::display_folder;
 pub use error::{
-    AssetError, CountProblem, GlbProblem, GltfItem, MeshError, PathProblem, UriProblem,
+    AssetError, CountProblem, GlbProblem, GltfItem, MeshError, PathProblem, TextureSlot, UriProblem,
 };
 pub use mesh::{MeshData, MeshReport};
 pub use model::{
@@ -82,4 +82,6 @@ pub use model::{
 pub use obj::load_obj;
 pub(crate) use obj::parse_obj;
 pub use procedural::{cube_mesh, quad_mesh, sphere_mesh, MAX_SPHERE_SUBDIVISIONS};
-pub use texture::{load_image, solid_texture, TextureData, TextureFormat, MAX_TEXTURE_SIZE};
+pub use texture::{
+    load_image, solid_texture, Sampler, TextureData, TextureFormat, Wrap, MAX_TEXTURE_SIZE,
+};

@@ -11,6 +11,9 @@
 //!   24–31 alpha, i.e. the RGBA bytes in little-endian order (`u32::from_le_bytes([r, g, b, a])`).
 //!   WGSL's `unpack4x8unorm(word)` gives `(r, g, b, a) / 255`. Red, green and blue are
 //!   sRGB-encoded and must be decoded to linear ([`srgb_to_linear`]); alpha is linear.
+//! - [`TextureFormat::Rgba8Unorm`]: the same packing, all four channels linear (glTF's data
+//!   textures: metallic-roughness, occlusion, normal maps). [`TextureData::linear`] makes one
+//!   of an `Rgba8Srgb` texture by relabelling it; the words do not change.
 //! - [`TextureFormat::Rgba16F`], two words per texel: word 0 = `f16(r) | f16(g) << 16`, word 1 =
 //!   `f16(b) | f16(a) << 16` (IEEE binary16 bit patterns), so `unpack2x16float(word0)` is
 //!   `(r, g)` and `unpack2x16float(word1)` is `(b, a)`. Values are linear. On packing, NaN
@@ -50,6 +53,8 @@ pub const MAX_DECODE_BYTES: u64 = 2 << 30;
 pub enum TextureFormat {
     /// One word per texel: sRGB-encoded red, green, blue and linear alpha, 8 bits each.
     Rgba8Srgb,
+    /// One word per texel: linear red, green, blue and alpha, 8 bits each.
+    Rgba8Unorm,
     /// Two words per texel: linear red, green, blue, alpha as IEEE half floats.
     Rgba16F,
 }
@@ -58,13 +63,42 @@ impl TextureFormat {
     /// `u32` words per texel.
     pub const fn words_per_texel(self) -> usize {
         match self {
-            Self::Rgba8Srgb => 1,
+            Self::Rgba8Srgb | Self::Rgba8Unorm => 1,
             Self::Rgba16F => 2,
         }
     }
 }
 
-/// A decoded texture, in the GPU's texel-buffer layout (see the [module docs](self)).
+/// How texture coordinates outside `[0, 1)` map into the texture, per axis (glTF's `wrapS`/`wrapT`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Wrap {
+    /// The texture repeats (`fract(u)`).
+    #[default]
+    Repeat,
+    /// Coordinates are clamped to the edge texels.
+    ClampToEdge,
+    /// The texture repeats, mirrored every other period.
+    MirroredRepeat,
+}
+
+/// How `sample(t, uv)` reads a texture: the wrap mode of `u` and of `v`, and nearest-texel or
+/// bilinear filtering. The default (repeat, bilinear) is what every texture had before samplers
+/// existed, and what images named in a scene get.
+///
+/// There is no minification filter: a ray carries no footprint (no ray differentials or cones),
+/// so there is no mip level to choose; several samples per pixel average the footprint instead.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Sampler {
+    /// Wrap mode of `u` (horizontal).
+    pub wrap_u: Wrap,
+    /// Wrap mode of `v` (vertical, pointing down the image).
+    pub wrap_v: Wrap,
+    /// Nearest-texel lookup (`true`) or bilinear interpolation (`false`).
+    pub nearest: bool,
+}
+
+/// A decoded texture, in the GPU's texel-buffer layout (see the [module docs](self)), with the
+/// sampler state `sample` uses for it.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TextureData {
     /// Width in texels.
@@ -77,6 +111,8 @@ pub struct TextureData {
     pub words: Vec<u32>,
     /// How many texels of the decoded file had a NaN or infinite channel (replaced by 0).
     pub nonfinite_texels: u64,
+    /// Wrap modes and filter.
+    pub sampler: Sampler,
 }
 
 impl TextureData {
@@ -102,6 +138,7 @@ impl TextureData {
                 let [r, g, b, a] = w.to_le_bytes().map(|c| f32::from(c) / 255.0);
                 [srgb_to_linear(r), srgb_to_linear(g), srgb_to_linear(b), a]
             }
+            (TextureFormat::Rgba8Unorm, &[w]) => w.to_le_bytes().map(|c| f32::from(c) / 255.0),
             (TextureFormat::Rgba16F, &[rg, ba]) => {
                 let [r, g] = unpack_f16x2(rg);
                 let [b, a] = unpack_f16x2(ba);
@@ -109,6 +146,69 @@ impl TextureData {
             }
             _ => return None,
         })
+    }
+
+    /// This texture with its colour channels read as linear values (glTF's data textures):
+    /// `Rgba8Srgb` becomes `Rgba8Unorm`; float textures are linear already.
+    pub fn linear(mut self) -> Self {
+        if self.format == TextureFormat::Rgba8Srgb {
+            self.format = TextureFormat::Rgba8Unorm;
+        }
+        self
+    }
+
+    /// The inverse of [`TextureData::linear`]: `Rgba8Unorm` becomes `Rgba8Srgb`.
+    pub fn srgb(mut self) -> Self {
+        if self.format == TextureFormat::Rgba8Unorm {
+            self.format = TextureFormat::Rgba8Srgb;
+        }
+        self
+    }
+
+    /// `sample(t, uv)` as the kernel computes it (`stdlib/kernel/support.rt`), for tests and
+    /// tools: the sampler's wrap modes and filter, bilinear between texel centres.
+    pub fn sample(&self, uv: [f32; 2]) -> [f32; 4] {
+        let (w, h) = (self.width.max(1) as f32, self.height.max(1) as f32);
+        let at = |x: i64, y: i64| {
+            let xi = self.sampler.wrap_u.apply(x, i64::from(self.width.max(1)));
+            let yi = self.sampler.wrap_v.apply(y, i64::from(self.height.max(1)));
+            self.texel(xi as u32, yi as u32).unwrap_or([0.0; 4])
+        };
+        if self.sampler.nearest {
+            return at((uv[0] * w).floor() as i64, (uv[1] * h).floor() as i64);
+        }
+        let (px, py) = (uv[0] * w - 0.5, uv[1] * h - 0.5);
+        let (fx, fy) = (px.floor(), py.floor());
+        let (tx, ty) = (px - fx, py - fy);
+        let (x, y) = (fx as i64, fy as i64);
+        let mix = |a: [f32; 4], b: [f32; 4], t: f32| {
+            let mut out = a;
+            for ((o, a), b) in out.iter_mut().zip(a).zip(b) {
+                *o = a + (b - a) * t;
+            }
+            out
+        };
+        let top = mix(at(x, y), at(x + 1, y), tx);
+        let bottom = mix(at(x, y + 1), at(x + 1, y + 1), tx);
+        mix(top, bottom, ty)
+    }
+}
+
+impl Wrap {
+    /// Integer texel coordinate `x` mapped into `[0, n)` (`n >= 1`).
+    pub fn apply(self, x: i64, n: i64) -> i64 {
+        match self {
+            Self::Repeat => x.rem_euclid(n),
+            Self::ClampToEdge => x.clamp(0, n - 1),
+            Self::MirroredRepeat => {
+                let m = x.rem_euclid(2 * n);
+                if m >= n {
+                    2 * n - 1 - m
+                } else {
+                    m
+                }
+            }
+        }
     }
 }
 
@@ -153,6 +253,7 @@ pub fn solid_texture(color: [f32; 4]) -> TextureData {
         format: TextureFormat::Rgba16F,
         words: vec![pack_f16x2(r, g), pack_f16x2(b, a)],
         nonfinite_texels: 0,
+        sampler: Sampler::default(),
     }
 }
 
@@ -235,6 +336,7 @@ fn from_dynamic(image: DynamicImage) -> TextureData {
             format: TextureFormat::Rgba16F,
             words,
             nonfinite_texels,
+            sampler: Sampler::default(),
         }
     } else {
         let rgba = image.into_rgba8();
@@ -250,6 +352,7 @@ fn from_dynamic(image: DynamicImage) -> TextureData {
             format: TextureFormat::Rgba8Srgb,
             words,
             nonfinite_texels: 0,
+            sampler: Sampler::default(),
         }
     }
 }

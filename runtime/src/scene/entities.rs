@@ -45,7 +45,7 @@ use super::models;
 use super::params::ParamsBuilder;
 use super::store::{AssetStore, BuiltMesh};
 use super::SceneError;
-use crate::assets::{AssetRoots, MeshData, TextureFormat};
+use crate::assets::{AssetRoots, MeshData, Sampler, TextureFormat, Wrap};
 
 /// Options of the entity stage.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -132,6 +132,23 @@ pub struct TextureEntity {
     pub format: TextureFormat,
     /// First word in `texels`.
     pub texel_base: u32,
+    /// Wrap modes and filter.
+    pub sampler: Sampler,
+}
+
+/// The `texture.sampler` word of `sampler` (`rtc:abi`'s `TEXTURE_WRAP_*` and `TEXTURE_NEAREST`).
+fn sampler_word(sampler: Sampler) -> u32 {
+    let wrap = |w: Wrap| match w {
+        Wrap::Repeat => 0,
+        Wrap::ClampToEdge => abi::TEXTURE_WRAP_CLAMP,
+        Wrap::MirroredRepeat => abi::TEXTURE_WRAP_MIRROR,
+    };
+    let nearest = if sampler.nearest {
+        abi::TEXTURE_NEAREST
+    } else {
+        0
+    };
+    wrap(sampler.wrap_u) | (wrap(sampler.wrap_v) << abi::TEXTURE_WRAP_V_SHIFT) | nearest
 }
 
 /// The object-space box of a custom geometry, as far as it is known.
@@ -533,6 +550,7 @@ impl Entities {
                 height: data.height,
                 format: data.format,
                 texel_base: to_u32("texel words", texels.len())?,
+                sampler: data.sampler,
             });
             texels.extend_from_slice(&data.words);
         }
@@ -556,8 +574,10 @@ impl Entities {
             record[record::TEXTURE_HEIGHT] = tex.height;
             record[record::TEXTURE_FORMAT] = match tex.format {
                 TextureFormat::Rgba8Srgb => abi::TEXTURE_FORMAT_RGBA8_SRGB,
+                TextureFormat::Rgba8Unorm => abi::TEXTURE_FORMAT_RGBA8_UNORM,
                 TextureFormat::Rgba16F => abi::TEXTURE_FORMAT_RGBA16F,
             };
+            record[record::TEXTURE_SAMPLER] = sampler_word(tex.sampler);
             let at = params.push_words(&record)?;
             params.texture_records.insert(key.clone(), at);
         }

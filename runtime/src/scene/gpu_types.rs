@@ -134,6 +134,8 @@ pub mod record {
     pub const TEXTURE_HEIGHT: usize = abi::TEXTURE.offset_of("height") as usize;
     /// `texture.format`
     pub const TEXTURE_FORMAT: usize = abi::TEXTURE.offset_of("format") as usize;
+    /// `texture.sampler`
+    pub const TEXTURE_SAMPLER: usize = abi::TEXTURE.offset_of("sampler") as usize;
     /// Words of a light table entry.
     pub const LIGHT_ENTRY_WORDS: usize = abi::LIGHT_ENTRY.stride as usize;
     /// `light_entry.type_id`
@@ -170,6 +172,7 @@ const _: () = {
     assert!(TEXTURE_WIDTH < TEXTURE_WORDS);
     assert!(TEXTURE_HEIGHT < TEXTURE_WORDS);
     assert!(TEXTURE_FORMAT < TEXTURE_WORDS);
+    assert!(TEXTURE_SAMPLER < TEXTURE_WORDS);
     assert!(LIGHT_ENTRY_TYPE_ID < LIGHT_ENTRY_WORDS && LIGHT_ENTRY_OFFSET < LIGHT_ENTRY_WORDS);
     assert!(MEDIUM_ENTRY_SLOT < MEDIUM_ENTRY_WORDS);
 };
@@ -189,6 +192,7 @@ const _: () = assert!(
     crate::assets::TextureFormat::Rgba16F.words_per_texel() == abi::RGBA16F_TEXEL_WORDS as usize
 );
 const _: () = assert!(crate::assets::TextureFormat::Rgba8Srgb.words_per_texel() == 1);
+const _: () = assert!(crate::assets::TextureFormat::Rgba8Unorm.words_per_texel() == 1);
 
 // The node records and reference bits of `rtc_bvh::quantized` are the ABI's.
 const _: () = assert!(rtc_bvh::quantized::LEAF_BIT == abi::NODE_LEAF_BIT);
@@ -543,10 +547,16 @@ mod tests {
             ("FLAG_MEDIUM", GpuInstance::FLAG_MEDIUM),
             ("TEXTURE_FORMAT_RGBA8_SRGB", 0),
             ("TEXTURE_FORMAT_RGBA16F", 1),
+            ("TEXTURE_FORMAT_RGBA8_UNORM", 2),
             (
                 "RGBA16F_TEXEL_WORDS",
                 crate::assets::TextureFormat::Rgba16F.words_per_texel() as u32,
             ),
+            ("TEXTURE_WRAP_MASK", 3),
+            ("TEXTURE_WRAP_V_SHIFT", 2),
+            ("TEXTURE_WRAP_CLAMP", 1),
+            ("TEXTURE_WRAP_MIRROR", 2),
+            ("TEXTURE_NEAREST", 16),
             ("COUNTER_NONFINITE", 0),
             ("COUNTER_RAYS", 1),
             ("COUNTER_SHADOW_OVERFLOW", 3),
@@ -584,6 +594,7 @@ mod tests {
             ("texture_width", "load_param", 1, record::TEXTURE_WIDTH),
             ("texture_height", "load_param", 1, record::TEXTURE_HEIGHT),
             ("texture_format", "load_param", 1, record::TEXTURE_FORMAT),
+            ("texture_sampler", "load_param", 1, record::TEXTURE_SAMPLER),
             (
                 "light_entry_type_id",
                 "load_param",

@@ -7,12 +7,17 @@
 //!   **one object-level BVH however many nodes instance it**;
 //! - every node instancing a primitive → one object, object-to-world = the entry's `transform` ×
 //!   the node's world transform, named `file.glb#nodes[i]`;
-//! - every used material → a `GltfMaterial` (`stdlib/materials/gltf.rt`; `GltfMaskedMaterial`
-//!   with its `alpha_cutoff` for `alphaMode: MASK`; blending is rendered opaque with a warning):
-//!   base colour factor, base-colour texture (or `solid_texture(vec4f(1.0))`), metallic,
-//!   roughness, emissive. Its
-//!   texture enters the cache under the path `file.glb#images[i]`, which is how the instance's
-//!   `texture` field refers to it;
+//! - every used material → a `GltfMaterial` (`stdlib/materials/gltf.rt`; `GltfMappedMaterial`
+//!   when it has more textures or a transform, `GltfMaterial::is_mapped`; `GltfMaskedMaterial` /
+//!   `GltfMaskedMappedMaterial` for `alphaMode: MASK` (its `alpha_cutoff`) and `BLEND`
+//!   (`blend` 1: stochastic coverage), with `double_sided`; opaque single-sided materials are
+//!   not culled, which one warning per file names):
+//!   base colour factor and texture, metallic and roughness factors and their texture, emissive
+//!   factor and texture, occlusion texture and strength (a texture the material lacks is
+//!   `solid_texture(vec4f(1.0))`). Each texture enters the cache under the path
+//!   `file.glb#<label>` (`ModelScene::texture_labels`: `images[i]`, plus its sampler and
+//!   linearity when they are not the default), which is how the instance's `texture` fields
+//!   refer to it;
 //! - `KHR_lights_punctual` lights → `PointLight`, `DirectionalLight` or `SpotLight`
 //!   (`stdlib/lights/`), glTF's intensity as is (candela for point and spot, whose strength falls
 //!   off with the inverse square of the distance; lux for directional), the cone angles in
@@ -205,11 +210,12 @@ fn instance(
     })
 }
 
-/// The path under which image `image` of `file` is in the texture cache.
-fn image_path(file: &Path, image: usize) -> PathBuf {
-    let mut label = file.as_os_str().to_owned();
-    label.push(format!("#images[{image}]"));
-    PathBuf::from(label)
+/// The path under which the texture labelled `label` (`ModelScene::texture_labels`) of `file` is
+/// in the texture cache: `file.glb#images[i]`, with its sampler after a `~` when not the default.
+fn texture_path(file: &Path, label: &str) -> PathBuf {
+    let mut path = file.as_os_str().to_owned();
+    path.push(format!("#{label}"));
+    PathBuf::from(path)
 }
 
 fn import_one(
@@ -238,7 +244,12 @@ fn import_one(
     }
     let mut textures = Vec::with_capacity(data.textures.len());
     for (i, texture) in data.textures.iter().enumerate() {
-        let path = image_path(&model.path, i);
+        let label = data
+            .texture_labels
+            .get(i)
+            .cloned()
+            .unwrap_or_else(|| format!("textures[{i}]"));
+        let path = texture_path(&model.path, &label);
         cache.insert_texture(TextureKey::File(path.clone()), stamp, || texture.clone());
         textures.push(ConstValue::Texture(TextureAsset::File { path, span }));
     }
@@ -250,35 +261,74 @@ fn import_one(
     );
 
     let mut materials = Vec::with_capacity(data.materials.len());
-    let mut blended = 0usize;
+    let mut single_sided = Vec::new();
     for m in &data.materials {
-        let texture = m
-            .base_color_texture
-            .and_then(|t| textures.get(t).cloned())
-            .unwrap_or(ConstValue::Texture(TextureAsset::Solid(white)));
+        // A texture the material lacks is white, which leaves its factor as it is.
+        let texture = |t: Option<usize>| {
+            t.and_then(|t| textures.get(t).cloned())
+                .unwrap_or(ConstValue::Texture(TextureAsset::Solid(white)))
+        };
         let mut fields = vec![
             ("base_color", vec_value(m.base_color)),
-            ("base_texture", texture),
+            ("base_texture", texture(m.base_color_texture)),
             ("metallic", f32_value(m.metallic)),
             ("roughness", f32_value(m.roughness)),
+            ("metal_rough_texture", texture(m.metallic_roughness_texture)),
             ("emissive", vec_value(m.emissive)),
+            ("emissive_texture", texture(m.emissive_texture)),
+            ("occlusion_texture", texture(m.occlusion_texture)),
+            ("occlusion_strength", f32_value(m.occlusion_strength)),
         ];
+        let slots = ["base", "metal_rough", "emissive", "occlusion"];
+        let rows: Vec<(String, ConstValue)> = slots
+            .iter()
+            .zip(&m.uv_transforms)
+            .flat_map(|(slot, [u, v])| {
+                [
+                    (format!("{slot}_uv_u"), vec_value(*u)),
+                    (format!("{slot}_uv_v"), vec_value(*v)),
+                ]
+            })
+            .collect();
+        fields.extend(rows.iter().map(|(n, v)| (n.as_str(), v.clone())));
+        let sided = ConstValue::Scalar(Scalar::U32(u32::from(m.double_sided)));
         let kind = match m.alpha_mode {
-            AlphaMode::Mask => {
+            AlphaMode::Mask | AlphaMode::Blend => {
                 fields.push(("alpha_cutoff", f32_value(m.alpha_cutoff)));
-                "GltfMaskedMaterial"
+                fields.push(("double_sided", sided));
+                if m.alpha_mode == AlphaMode::Blend {
+                    fields.push(("blend", ConstValue::Scalar(Scalar::U32(1))));
+                }
+                if m.is_mapped() {
+                    "GltfMaskedMappedMaterial"
+                } else {
+                    "GltfMaskedMaterial"
+                }
             }
-            AlphaMode::Blend => {
-                blended += 1;
-                "GltfMaterial"
+            AlphaMode::Opaque => {
+                if !m.double_sided {
+                    single_sided.push(match (m.index, &m.name) {
+                        (Some(i), Some(n)) => format!("materials[{i}] (`{n}`)"),
+                        (Some(i), None) => format!("materials[{i}]"),
+                        (None, _) => "the default material".to_owned(),
+                    });
+                }
+                // The fields it lacks (other textures, transforms) are left out by `instance`.
+                if m.is_mapped() {
+                    "GltfMappedMaterial"
+                } else {
+                    "GltfMaterial"
+                }
             }
-            AlphaMode::Opaque => "GltfMaterial",
         };
         materials.push(instance(types, name, kind, span, &fields)?);
     }
-    if blended > 0 {
+    if !single_sided.is_empty() {
         parts.warnings.push(format!(
-            "{name}: {blended} material(s) blend with alpha, rendered opaque"
+            "{name}: opaque single-sided material(s) {} are hit on their back faces too \
+             (back-face culling is done only for MASK and BLEND materials, whose any-hit \
+             program it shares)",
+            single_sided.join(", ")
         ));
     }
 

@@ -1,14 +1,16 @@
-//! glTF materials → [`GltfMaterial`], and their base-colour images → [`TextureData`].
+//! glTF materials → [`GltfMaterial`], and their images → [`TextureData`] with their samplers.
 //!
-//! Invariants: each glTF material and each glTF image is converted at most once, on first use
-//! ([`Materials`] caches the mapping), so `ModelScene::materials` and `::textures` hold only what
-//! the scene uses, in first-use order. Textures other than the base colour (normal, occlusion,
-//! emissive, metallic-roughness maps) are ignored with a warning, and so is a file's use of
-//! `KHR_texture_transform` (as of any extension we do not read, see `nodes.rs`); sampler
-//! settings (filters, wrap modes) are ignored silently, as nearly every file has them. A
-//! base-colour texture on a uv set other than 0 is kept, with a warning, and sampled with set 0.
-//! A base-colour image file that cannot be read is [`AssetError::MissingFile`] naming the material
-//! and the image ([`GltfItem::BaseColorImage`]).
+//! Invariants: each glTF material is converted at most once and each glTF image decoded at most
+//! once, on first use ([`Materials`] caches the mappings), so `ModelScene::materials` and
+//! `::textures` hold only what the scene uses, in first-use order; a texture is one (image,
+//! sampler, linear-or-sRGB) triple (base colour and emissive are sRGB, metallic-roughness and
+//! occlusion linear data), labelled uniquely in `texture_labels`. Imported: base colour,
+//! metallic-roughness, emissive and occlusion textures, each with its sampler (wrap modes,
+//! magnification filter; see [`Sampler`] for why there is no minification filter) and its
+//! `KHR_texture_transform`. Not imported, each with a warning naming the material: the normal
+//! texture, and uv sets other than 0 (such a texture is kept and sampled with set 0). An image
+//! file that cannot be read is [`AssetError::MissingFile`] naming the material, the texture and
+//! the image ([`GltfItem::BaseColorImage`], [`GltfItem::MaterialImage`]).
 
 use std::collections::HashMap;
 
@@ -16,18 +18,21 @@ use gltf::json;
 use gltf::json::validation::Checked;
 
 use super::buffers::{dangling, image_bytes};
-use super::{AlphaMode, Ctx, GltfMaterial};
+use super::{AlphaMode, Ctx, GltfMaterial, UvTransform, UV_IDENTITY};
 use crate::assets::texture::decode_image;
-use crate::assets::{AssetError, GltfItem, TextureData};
+use crate::assets::{AssetError, GltfItem, Sampler, TextureData, TextureSlot, Wrap};
 
 /// The converted materials and textures, with the glTF → rtc index maps.
 #[derive(Default)]
 pub(super) struct Materials {
     pub materials: Vec<GltfMaterial>,
     pub textures: Vec<TextureData>,
+    /// `ModelScene::texture_labels`.
+    pub texture_labels: Vec<String>,
     material_index: HashMap<usize, usize>,
     default_material: Option<usize>,
-    image_index: HashMap<usize, usize>,
+    /// (glTF image, sampler, read as linear data) → index in `textures`.
+    image_index: HashMap<(usize, Sampler, bool), usize>,
 }
 
 impl Materials {
@@ -71,65 +76,97 @@ impl Materials {
         warnings: &mut Vec<String>,
     ) -> Result<GltfMaterial, AssetError> {
         let pbr = &json.pbr_metallic_roughness;
-        let mut ignored = Vec::new();
-        if pbr.metallic_roughness_texture.is_some() {
-            ignored.push("metallic-roughness");
-        }
+        let named = material_name(m, json);
         if json.normal_texture.is_some() {
-            ignored.push("normal");
-        }
-        if json.occlusion_texture.is_some() {
-            ignored.push("occlusion");
-        }
-        if json.emissive_texture.is_some() {
-            ignored.push("emissive");
-        }
-        if !ignored.is_empty() {
             warnings.push(format!(
-                "materials[{m}]: {} texture(s) ignored (only base colour is imported)",
-                ignored.join(", ")
+                "{named}: its normal texture is not imported (shaded with the mesh normals)"
             ));
         }
-        let base_color_texture = match &pbr.base_color_texture {
-            None => None,
-            Some(info) => {
-                if info.tex_coord != 0 {
-                    warnings.push(format!(
-                        "materials[{m}]: base colour texture uses TEXCOORD_{}, sampled with TEXCOORD_0",
-                        info.tex_coord
-                    ));
-                }
-                let texture = ctx
-                    .root
-                    .textures
-                    .get(info.index.value())
-                    .ok_or_else(|| dangling(ctx, GltfItem::Texture(info.index.value())))?;
-                let image = texture.source.value();
-                Some(self.texture(ctx, image, warnings).map_err(|e| match e {
-                    // Name the material too: that is what the user knows the texture by.
-                    AssetError::MissingFile {
-                        path, file, source, ..
-                    } => AssetError::MissingFile {
-                        path,
-                        item: GltfItem::BaseColorImage { material: m, image },
-                        file,
-                        source,
-                    },
-                    AssetError::Escape {
-                        path,
-                        written,
-                        problem,
-                        ..
-                    } => AssetError::Escape {
-                        path,
-                        item: Some(GltfItem::BaseColorImage { material: m, image }),
-                        written,
-                        problem,
-                    },
-                    other => other,
-                })?)
-            }
+        let mut uv_transforms = [UV_IDENTITY; 4];
+        let transform_of = |info: Option<&json::texture::Info>| {
+            info.and_then(|i| texture_info(i).transform)
+                .unwrap_or(UV_IDENTITY)
         };
+        uv_transforms[0] = transform_of(pbr.base_color_texture.as_ref());
+        let base_color_transformed = pbr
+            .base_color_texture
+            .as_ref()
+            .is_some_and(|i| texture_info(i).transform.is_some());
+        uv_transforms[1] = transform_of(pbr.metallic_roughness_texture.as_ref());
+        uv_transforms[2] = transform_of(json.emissive_texture.as_ref());
+        let base_color_texture = pbr
+            .base_color_texture
+            .as_ref()
+            .map(|info| {
+                self.slot(
+                    ctx,
+                    (m, &named),
+                    Slot::BaseColor,
+                    texture_info(info),
+                    warnings,
+                )
+            })
+            .transpose()?;
+        let metallic_roughness_texture = pbr
+            .metallic_roughness_texture
+            .as_ref()
+            .map(|info| {
+                self.slot(
+                    ctx,
+                    (m, &named),
+                    Slot::MetallicRoughness,
+                    texture_info(info),
+                    warnings,
+                )
+            })
+            .transpose()?;
+        let emissive_texture = json
+            .emissive_texture
+            .as_ref()
+            .map(|info| {
+                self.slot(
+                    ctx,
+                    (m, &named),
+                    Slot::Emissive,
+                    texture_info(info),
+                    warnings,
+                )
+            })
+            .transpose()?;
+        let occlusion_texture = json
+            .occlusion_texture
+            .as_ref()
+            .map(|o| {
+                // `gltf-json` has no typed field for the extension on an occlusion texture;
+                // it is among the `others`.
+                let transform = o
+                    .extensions
+                    .as_ref()
+                    .and_then(|e| e.others.get("KHR_texture_transform"))
+                    .and_then(|v| {
+                        serde_json::from_value::<json::extensions::texture::TextureTransform>(
+                            v.clone(),
+                        )
+                        .ok()
+                    });
+                let info = SlotInfo {
+                    texture: o.index.value(),
+                    tex_coord: transform
+                        .as_ref()
+                        .and_then(|t| t.tex_coord)
+                        .unwrap_or(o.tex_coord),
+                    transform: transform
+                        .as_ref()
+                        .map(|t| uv_transform(t.offset.0, t.rotation.0, t.scale.0)),
+                };
+                uv_transforms[3] = info.transform.unwrap_or(UV_IDENTITY);
+                self.slot(ctx, (m, &named), Slot::Occlusion, info, warnings)
+            })
+            .transpose()?;
+        let occlusion_strength = json
+            .occlusion_texture
+            .as_ref()
+            .map_or(1.0, |o| o.strength.0);
         let strength = json
             .extensions
             .as_ref()
@@ -144,28 +181,135 @@ impl Materials {
         };
         Ok(GltfMaterial {
             name: json.name.clone(),
+            index: Some(m),
             base_color: pbr.base_color_factor.0,
             base_color_texture,
             metallic: pbr.metallic_factor.0,
             roughness: pbr.roughness_factor.0,
+            metallic_roughness_texture,
             emissive: json.emissive_factor.0.map(|c| c * strength),
+            emissive_texture,
+            occlusion_texture,
+            occlusion_strength,
+            uv_transforms,
+            base_color_transformed,
             alpha_mode,
             alpha_cutoff: json.alpha_cutoff.map_or(0.5, |c| c.0),
             double_sided: json.double_sided,
         })
     }
 
-    /// The index in `textures` of glTF image `image`, decoding it on first use.
-    /// A texture whose texels held NaN or infinities (replaced by 0) adds a warning.
+    /// The index in `textures` of the texture of slot `slot` of material `m` (`named` in
+    /// messages), warning about what of it is not imported (another uv set, a texture transform).
+    fn slot(
+        &mut self,
+        ctx: &Ctx<'_>,
+        (m, named): (usize, &str),
+        slot: Slot,
+        info: SlotInfo,
+        warnings: &mut Vec<String>,
+    ) -> Result<usize, AssetError> {
+        let what = slot.describe();
+        if info.tex_coord != 0 {
+            warnings.push(format!(
+                "{named}: its {what} texture uses TEXCOORD_{}, sampled with TEXCOORD_0 (only one \
+                 uv set is imported)",
+                info.tex_coord
+            ));
+        }
+        let texture = ctx
+            .root
+            .textures
+            .get(info.texture)
+            .ok_or_else(|| dangling(ctx, GltfItem::Texture(info.texture)))?;
+        let image = texture.source.value();
+        let sampler = texture
+            .sampler
+            .map(|i| sampler(ctx, i.value()))
+            .transpose()?
+            .unwrap_or_default();
+        let index = |i: usize| u32::try_from(i).unwrap_or(u32::MAX);
+        let other = |slot| GltfItem::MaterialImage {
+            material: index(m),
+            slot,
+            image: index(image),
+        };
+        let item = match slot {
+            Slot::BaseColor => GltfItem::BaseColorImage { material: m, image },
+            Slot::MetallicRoughness => other(TextureSlot::MetallicRoughness),
+            Slot::Emissive => other(TextureSlot::Emissive),
+            Slot::Occlusion => other(TextureSlot::Occlusion),
+        };
+        let linear = matches!(slot, Slot::MetallicRoughness | Slot::Occlusion);
+        self.texture(ctx, (image, sampler, linear), warnings)
+            .map_err(|e| match e {
+                // Name the material too: that is what the user knows the texture by.
+                AssetError::MissingFile {
+                    path, file, source, ..
+                } => AssetError::MissingFile {
+                    path,
+                    item,
+                    file,
+                    source,
+                },
+                AssetError::Escape {
+                    path,
+                    written,
+                    problem,
+                    ..
+                } => AssetError::Escape {
+                    path,
+                    item: Some(item),
+                    written,
+                    problem,
+                },
+                other => other,
+            })
+    }
+
+    /// The index in `textures` of glTF image `image` read through `sampler`, as linear data or
+    /// as sRGB colour, decoding the image on first use (an image used in two ways is decoded
+    /// once and stored twice). A texture whose texels held NaN or infinities (replaced by 0)
+    /// adds a warning.
     fn texture(
+        &mut self,
+        ctx: &Ctx<'_>,
+        key: (usize, Sampler, bool),
+        warnings: &mut Vec<String>,
+    ) -> Result<usize, AssetError> {
+        let (image, sampler, linear) = key;
+        if let Some(&index) = self.image_index.get(&key) {
+            return Ok(index);
+        }
+        let decoded = self
+            .image_index
+            .iter()
+            .find(|((i, _, _), _)| *i == image)
+            .and_then(|(_, &t)| self.textures.get(t));
+        let texture = match decoded {
+            Some(texture) => texture.clone(),
+            None => self.decode(ctx, image, warnings)?,
+        };
+        let mut texture = if linear {
+            texture.linear()
+        } else {
+            texture.srgb()
+        };
+        texture.sampler = sampler;
+        self.textures.push(texture);
+        self.texture_labels.push(texture_label(key));
+        let index = self.textures.len() - 1;
+        self.image_index.insert(key, index);
+        Ok(index)
+    }
+
+    /// Decodes glTF image `image`, warning when texels held NaN or infinities.
+    fn decode(
         &mut self,
         ctx: &Ctx<'_>,
         image: usize,
         warnings: &mut Vec<String>,
-    ) -> Result<usize, AssetError> {
-        if let Some(&index) = self.image_index.get(&image) {
-            return Ok(index);
-        }
+    ) -> Result<TextureData, AssetError> {
         let (bytes, label) = image_bytes(ctx, image)?;
         let texture = decode_image(&bytes, &label)?;
         if texture.nonfinite_texels > 0 {
@@ -177,9 +321,125 @@ impl Materials {
                 texture.texel_count()
             ));
         }
-        self.textures.push(texture);
-        let index = self.textures.len() - 1;
-        self.image_index.insert(image, index);
-        Ok(index)
+        Ok(texture)
     }
+}
+
+/// A texture of a material.
+#[derive(Clone, Copy)]
+enum Slot {
+    BaseColor,
+    MetallicRoughness,
+    Emissive,
+    Occlusion,
+}
+
+impl Slot {
+    fn describe(self) -> &'static str {
+        match self {
+            Self::BaseColor => "base colour",
+            Self::MetallicRoughness => "metallic-roughness",
+            Self::Emissive => "emissive",
+            Self::Occlusion => "occlusion",
+        }
+    }
+}
+
+/// What a material says about one of its textures.
+struct SlotInfo {
+    texture: usize,
+    /// The uv set (`KHR_texture_transform`'s `texCoord` overrides the texture info's).
+    tex_coord: u32,
+    /// Its `KHR_texture_transform`, if any.
+    transform: Option<UvTransform>,
+}
+
+fn texture_info(info: &json::texture::Info) -> SlotInfo {
+    let transform = info
+        .extensions
+        .as_ref()
+        .and_then(|e| e.texture_transform.as_ref());
+    SlotInfo {
+        texture: info.index.value(),
+        tex_coord: transform
+            .and_then(|t| t.tex_coord)
+            .unwrap_or(info.tex_coord),
+        transform: transform.map(|t| uv_transform(t.offset.0, t.rotation.0, t.scale.0)),
+    }
+}
+
+/// `KHR_texture_transform`'s `translation × rotation × scale` as rows (the extension's GLSL:
+/// `rotation = mat3(cos, sin, 0, -sin, cos, 0, 0, 0, 1)`, column-major), so
+/// `u' = cos·sx·u − sin·sy·v + ox` and `v' = sin·sx·u + cos·sy·v + oy`. Non-finite numbers
+/// (which the JSON cannot hold, but a reader might produce) give the identity.
+pub(super) fn uv_transform(offset: [f32; 2], rotation: f32, scale: [f32; 2]) -> UvTransform {
+    let (s, c) = rotation.sin_cos();
+    let rows = [
+        [c * scale[0], -s * scale[1], offset[0]],
+        [s * scale[0], c * scale[1], offset[1]],
+    ];
+    if rows.iter().flatten().all(|x| x.is_finite()) {
+        rows
+    } else {
+        UV_IDENTITY
+    }
+}
+
+/// `materials[m]`, with its name when it has one: `materials[2] (`Visor`)`.
+fn material_name(m: usize, json: &json::Material) -> String {
+    match &json.name {
+        Some(name) => format!("materials[{m}] (`{name}`)"),
+        None => format!("materials[{m}]"),
+    }
+}
+
+/// `images[i]`, with the sampler's settings after a `~` when they are not the default, and
+/// `~linear` for data read without sRGB decoding: unique per texture.
+fn texture_label((image, sampler, linear): (usize, Sampler, bool)) -> String {
+    let data = if linear { "~linear" } else { "" };
+    if sampler == Sampler::default() {
+        return format!("images[{image}]{data}");
+    }
+    let wrap = |w: Wrap| match w {
+        Wrap::Repeat => "repeat",
+        Wrap::ClampToEdge => "clamp",
+        Wrap::MirroredRepeat => "mirror",
+    };
+    let filter = if sampler.nearest { "nearest" } else { "linear" };
+    format!(
+        "images[{image}]~{},{},{filter}{data}",
+        wrap(sampler.wrap_u),
+        wrap(sampler.wrap_v)
+    )
+}
+
+/// glTF sampler `index` as a [`Sampler`]: `wrapS`/`wrapT` as they are; nearest filtering when
+/// `magFilter` is `NEAREST` (or, without a `magFilter`, when `minFilter` is `NEAREST` or
+/// `NEAREST_MIPMAP_*`). A ray has no footprint, so there is no separate minification filter and
+/// no mipmapping (see [`Sampler`]).
+fn sampler(ctx: &Ctx<'_>, index: usize) -> Result<Sampler, AssetError> {
+    use json::texture::{MagFilter, MinFilter, WrappingMode};
+    let json = ctx
+        .root
+        .samplers
+        .get(index)
+        .ok_or_else(|| dangling(ctx, GltfItem::Sampler(index)))?;
+    let wrap = |w: &Checked<WrappingMode>| match w {
+        Checked::Valid(WrappingMode::ClampToEdge) => Wrap::ClampToEdge,
+        Checked::Valid(WrappingMode::MirroredRepeat) => Wrap::MirroredRepeat,
+        Checked::Valid(WrappingMode::Repeat) | Checked::Invalid => Wrap::Repeat,
+    };
+    let nearest = match (json.mag_filter, json.min_filter) {
+        (Some(Checked::Valid(mag)), _) => mag == MagFilter::Nearest,
+        (None, Some(Checked::Valid(min))) => matches!(
+            min,
+            MinFilter::Nearest | MinFilter::NearestMipmapNearest | MinFilter::NearestMipmapLinear
+        ),
+        _ => false,
+    };
+    Ok(Sampler {
+        wrap_u: wrap(&json.wrap_s),
+        wrap_v: wrap(&json.wrap_t),
+        nearest,
+    })
 }

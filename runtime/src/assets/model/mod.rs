@@ -18,7 +18,7 @@
 //!    and `weights` channels are skipped with a warning).
 //! 4. On first use, `primitive::convert` turns a glTF primitive into a [`MeshData`] through the
 //!    checked accessor reader (`accessor.rs`), and `materials::convert` a glTF material into a
-//!    [`GltfMaterial`], decoding its base-colour image into a [`TextureData`].
+//!    [`GltfMaterial`], decoding its images into [`TextureData`]s with their samplers.
 //!
 //! We work on the JSON level (`gltf::json`) rather than through the `gltf` crate's wrapper types
 //! and readers, because those index and slice without checking (they panic on an accessor that
@@ -29,9 +29,10 @@
 //! - One [`MeshData`] per *used* glTF primitive of mode `TRIANGLES`, converted once however many
 //!   nodes use it: instancing is [`MeshInstance`]s sharing a `mesh` index. Other modes, morph
 //!   targets, skins, animations and extensions other than `KHR_lights_punctual` and
-//!   `KHR_materials_emissive_strength` are skipped with a warning (an unsupported extension the
+//!   `KHR_materials_emissive_strength` are skipped with a warning (`KHR_texture_transform` is
+//!   named with each material that uses it) (an unsupported extension the
 //!   file *requires* is an error).
-//! - Every `MeshInstance::mesh` and `::material` and every `GltfMaterial::base_color_texture` is
+//! - Every `MeshInstance::mesh` and `::material` and every texture of a `GltfMaterial` is
 //!   a valid index into `meshes`, `materials` and `textures`. Primitives without a material use
 //!   glTF's default material, appended to `materials` when needed.
 //! - Transforms are finite object-to-world matrices (a node whose transform is not finite is
@@ -79,8 +80,12 @@ pub struct ModelScene {
     pub instances: Vec<MeshInstance>,
     /// The used materials (glTF's default material last, when a primitive has none).
     pub materials: Vec<GltfMaterial>,
-    /// The decoded base-colour images of the materials.
+    /// The decoded images of the materials, one per (image, sampler) pair used, each with its
+    /// sampler.
     pub textures: Vec<TextureData>,
+    /// What each of `textures` is in the file, unique per texture: `images[3]`, or
+    /// `images[3]~clamp,mirror,nearest` when its sampler is not the default (repeat, bilinear).
+    pub texture_labels: Vec<String>,
     /// The cameras of the scene's nodes, in node order; the first is the default camera.
     pub cameras: Vec<GltfCamera>,
     /// The `KHR_lights_punctual` lights of the scene's nodes, in node order.
@@ -133,22 +138,45 @@ pub enum AlphaMode {
     Blend,
 }
 
+/// An affine map of texture coordinates, as two rows: `u' = r0 · (u, v, 1)`,
+/// `v' = r1 · (u, v, 1)` (`KHR_texture_transform`: `translation × rotation × scale`).
+pub type UvTransform = [[f32; 3]; 2];
+
+/// The identity [`UvTransform`].
+pub const UV_IDENTITY: UvTransform = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+
 /// A glTF metallic-roughness material.
 #[derive(Clone, Debug, PartialEq)]
 pub struct GltfMaterial {
     /// The material's name, if any.
     pub name: Option<String>,
+    /// Its index in the file's `materials` (`None`: glTF's default material).
+    pub index: Option<usize>,
     /// Linear RGBA base colour factor (multiplies the texture).
     pub base_color: [f32; 4],
-    /// Index into [`ModelScene::textures`] of the base-colour image (sRGB), sampled with
-    /// `TEXCOORD_0`.
+    /// Index into [`ModelScene::textures`] of the base-colour image (sRGB). Every texture is
+    /// sampled with `TEXCOORD_0`.
     pub base_color_texture: Option<usize>,
     /// Metalness factor, 0..=1.
     pub metallic: f32,
     /// Perceptual roughness factor, 0..=1.
     pub roughness: f32,
+    /// Index into [`ModelScene::textures`] of the metallic-roughness image (linear; blue =
+    /// metalness, green = roughness, each multiplying its factor).
+    pub metallic_roughness_texture: Option<usize>,
     /// Linear emitted radiance factor (times `KHR_materials_emissive_strength`).
     pub emissive: [f32; 3],
+    /// Index into [`ModelScene::textures`] of the emissive image (sRGB), multiplying `emissive`.
+    pub emissive_texture: Option<usize>,
+    /// Index into [`ModelScene::textures`] of the occlusion image (linear; red).
+    pub occlusion_texture: Option<usize>,
+    /// How much the occlusion image darkens: `1 + strength (red - 1)`.
+    pub occlusion_strength: f32,
+    /// The `KHR_texture_transform` of each texture: base colour, metallic-roughness, emissive,
+    /// occlusion, in that order ([`UV_IDENTITY`] without one).
+    pub uv_transforms: [UvTransform; 4],
+    /// Whether its base-colour texture has a `KHR_texture_transform` (even the identity).
+    pub base_color_transformed: bool,
     /// How alpha is used.
     pub alpha_mode: AlphaMode,
     /// The cutoff of [`AlphaMode::Mask`].
@@ -157,16 +185,35 @@ pub struct GltfMaterial {
     pub double_sided: bool,
 }
 
+impl GltfMaterial {
+    /// Whether an opaque material of this kind needs `GltfMappedMaterial` (a texture besides the
+    /// base colour's, or a texture transform), decided as the link step's `is_mapped` decides
+    /// from the JSON, so the type it needs was linked.
+    pub fn is_mapped(&self) -> bool {
+        self.metallic_roughness_texture.is_some()
+            || self.emissive_texture.is_some()
+            || self.occlusion_texture.is_some()
+            || self.base_color_transformed
+    }
+}
+
 impl Default for GltfMaterial {
     /// glTF's default material: white, fully metallic and rough, opaque, single-sided.
     fn default() -> Self {
         Self {
             name: None,
+            index: None,
             base_color: [1.0; 4],
             base_color_texture: None,
             metallic: 1.0,
             roughness: 1.0,
+            metallic_roughness_texture: None,
             emissive: [0.0; 3],
+            emissive_texture: None,
+            occlusion_texture: None,
+            occlusion_strength: 1.0,
+            uv_transforms: [UV_IDENTITY; 4],
+            base_color_transformed: false,
             alpha_mode: AlphaMode::Opaque,
             alpha_cutoff: 0.5,
             double_sided: false,

@@ -22,7 +22,11 @@ use crate::assets::AssetError;
 
 /// The glTF extensions whose data is imported. Others listed in `extensionsUsed` get a warning;
 /// one listed in `extensionsRequired` was already refused by validation.
-const SUPPORTED_EXTENSIONS: [&str; 2] = ["KHR_lights_punctual", "KHR_materials_emissive_strength"];
+const SUPPORTED_EXTENSIONS: [&str; 3] = [
+    "KHR_lights_punctual",
+    "KHR_materials_emissive_strength",
+    "KHR_texture_transform",
+];
 
 /// Builds the [`ModelScene`] of the document's default scene.
 pub(super) fn build(ctx: &Ctx<'_>) -> Result<ModelScene, AssetError> {
@@ -161,6 +165,7 @@ pub(super) fn build(ctx: &Ctx<'_>) -> Result<ModelScene, AssetError> {
     scene.animation = animation::read(ctx, &parents, &order, &mut scene.warnings).map(Arc::new);
     scene.materials = materials.materials;
     scene.textures = materials.textures;
+    scene.texture_labels = materials.texture_labels;
     Ok(scene)
 }
 

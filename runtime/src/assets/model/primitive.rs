@@ -3,7 +3,9 @@
 //! Read: `POSITION` (`VEC3` of `F32`), `NORMAL` (`VEC3` of `F32`), `TEXCOORD_0` (`VEC2` of `F32`,
 //! or normalised `U8`/`U16`), `indices` (`SCALAR` of `U8`/`U16`/`U32`; without them every three
 //! vertices are a triangle). Other attributes (tangents, colours, joints, weights, further uv
-//! sets) are ignored.
+//! sets) are not read; `COLOR_0` gets a warning naming the primitive and its material (further
+//! uv sets are named by the materials that use them, tangents matter only for normal maps,
+//! which are not imported and warned about).
 //!
 //! Invariants: only mode `TRIANGLES` is converted (others return `None` with a warning, as does a
 //! primitive without triangles); an index past the vertices is
@@ -88,6 +90,16 @@ pub(super) fn convert(
             .get(&Checked::Valid(s))
             .map(|i| i.value())
     };
+    if attribute(Semantic::Colors(0)).is_some() {
+        let material = primitive.material.map_or_else(
+            || "the default material".to_owned(),
+            |i| format!("materials[{}]", i.value()),
+        );
+        warnings.push(format!(
+            "{item}: its COLOR_0 vertex colours are not imported (the base colour of {material} \
+             is not multiplied by them)"
+        ));
+    }
     let Some(position) = attribute(Semantic::Positions) else {
         warnings.push(format!("{item}: no POSITION attribute, skipped"));
         return Ok(None);

@@ -14,7 +14,7 @@ use super::{assert_close3, TempDir};
 use crate::assets::model::parse_gltf;
 use crate::assets::{
     load_gltf, AlphaMode, AssetError, CountProblem, GlbProblem, GltfItem, LightKind, ModelScene,
-    Projection, UriProblem,
+    Projection, Sampler, TextureFormat, UriProblem, Wrap,
 };
 
 fn parse(bytes: &[u8]) -> Result<ModelScene, AssetError> {
@@ -223,13 +223,14 @@ fn material_with_external_base_color_texture() {
     let (b, pos, idx) = triangle();
     let mut b = b;
     let uv = b.vec2(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]);
+    let color = b.vec3(&[[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]);
     let path = b.write_gltf(
         &dir,
         "textured",
         json!({
             "extensionsUsed": ["KHR_materials_emissive_strength"],
             "meshes": [{ "primitives": [
-                { "attributes": { "POSITION": pos, "TEXCOORD_0": uv }, "indices": idx, "material": 0 },
+                { "attributes": { "POSITION": pos, "TEXCOORD_0": uv, "COLOR_0": color }, "indices": idx, "material": 0 },
                 { "attributes": { "POSITION": pos }, "indices": idx, "material": 0 },
             ] }],
             "materials": [{
@@ -284,6 +285,103 @@ fn material_with_external_base_color_texture() {
         "{:?}",
         scene.warnings
     );
+    assert!(
+        scene.warnings.iter().any(|w| w.contains(
+            "meshes[0].primitives[0]: its COLOR_0 vertex colours are not imported (the base \
+             colour of materials[0]"
+        )),
+        "{:?}",
+        scene.warnings
+    );
+}
+
+#[test]
+fn every_core_texture_with_its_sampler_and_what_is_not_imported_named() {
+    let dir = TempDir::new("gltf");
+    dir.write("a.png", small_png());
+    let (mut b, pos, idx) = triangle();
+    let uv = b.vec2(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]);
+    let path = b.write_gltf(
+        &dir,
+        "maps",
+        json!({
+            "extensionsUsed": ["KHR_texture_transform"],
+            "meshes": [{ "primitives": [
+                { "attributes": { "POSITION": pos, "TEXCOORD_0": uv }, "indices": idx, "material": 0 },
+            ] }],
+            "materials": [{
+                "name": "helmet",
+                "pbrMetallicRoughness": {
+                    "baseColorTexture": { "index": 0 },
+                    "metallicRoughnessTexture": { "index": 1, "texCoord": 1 },
+                },
+                "normalTexture": { "index": 1, "scale": 0.5 },
+                "occlusionTexture": {
+                    "index": 1, "strength": 0.25,
+                    "extensions": { "KHR_texture_transform": { "offset": [1.0, 0.0], "texCoord": 1 } },
+                },
+                "emissiveTexture": {
+                    "index": 0,
+                    "extensions": { "KHR_texture_transform": {
+                        "offset": [0.5, 0.25], "rotation": FRAC_PI_2, "scale": [2.0, 3.0],
+                    } },
+                },
+                "emissiveFactor": [1.0, 1.0, 1.0],
+            }],
+            "textures": [{ "source": 0 }, { "source": 0, "sampler": 0 }],
+            "samplers": [{ "wrapS": 33071, "wrapT": 33648, "magFilter": 9728 }],
+            "images": [{ "uri": "a.png" }],
+            "nodes": [{ "mesh": 0 }],
+            "scenes": [{ "nodes": [0] }],
+        }),
+    );
+    let scene = load_gltf(&path).unwrap();
+    let m = &scene.materials[0];
+    // Base colour and emissive: the image as sRGB, default sampler (one texture for both).
+    assert_eq!(m.base_color_texture, Some(0));
+    assert_eq!(m.emissive_texture, Some(0));
+    assert_eq!(m.emissive, [1.0; 3]);
+    // Metallic-roughness and occlusion: the same image as linear data through sampler 0.
+    assert_eq!(m.metallic_roughness_texture, Some(1));
+    assert_eq!(m.occlusion_texture, Some(1));
+    assert_eq!(m.occlusion_strength, 0.25);
+    assert_eq!(scene.textures.len(), 2);
+    assert_eq!(scene.textures[0].format, TextureFormat::Rgba8Srgb);
+    assert_eq!(scene.textures[0].sampler, Sampler::default());
+    assert_eq!(scene.textures[1].format, TextureFormat::Rgba8Unorm);
+    assert_eq!(scene.textures[1].words, SMALL_PNG_WORDS);
+    assert_eq!(
+        scene.textures[1].sampler,
+        Sampler {
+            wrap_u: Wrap::ClampToEdge,
+            wrap_v: Wrap::MirroredRepeat,
+            nearest: true
+        }
+    );
+    assert_eq!(
+        scene.texture_labels,
+        ["images[0]", "images[0]~clamp,mirror,nearest~linear"]
+    );
+    let warnings = scene.warnings.join("\n");
+    for want in [
+        "materials[0] (`helmet`): its normal texture is not imported",
+        "materials[0] (`helmet`): its metallic-roughness texture uses TEXCOORD_1, sampled with TEXCOORD_0",
+        "materials[0] (`helmet`): its occlusion texture uses TEXCOORD_1",
+    ] {
+        assert!(warnings.contains(want), "{want:?} not in:\n{warnings}");
+    }
+    assert!(!warnings.contains("KHR_texture_transform"), "{warnings}");
+    // KHR_texture_transform: u' = cos·sx·u − sin·sy·v + ox, v' = sin·sx·u + cos·sy·v + oy; at a
+    // quarter turn with scale (2, 3), offset (0.5, 0.25): u' = −3v + 0.5, v' = 2u + 0.25.
+    let [r0, r1] = m.uv_transforms[2];
+    let close = |a: [f32; 3], b: [f32; 3]| a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-6);
+    assert!(
+        close(r0, [0.0, -3.0, 0.5]) && close(r1, [2.0, 0.0, 0.25]),
+        "{r0:?} {r1:?}"
+    );
+    assert_eq!(m.uv_transforms[3], [[1.0, 0.0, 1.0], [0.0, 1.0, 0.0]]);
+    assert_eq!(m.uv_transforms[0], [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]);
+    assert!(!warnings.contains("only base colour"), "{warnings}");
 }
 
 #[test]
@@ -730,12 +828,12 @@ fn unsupported_required_extension_is_invalid() {
     // Used but not required: a warning.
     let doc = json!({
         "asset": { "version": "2.0" },
-        "extensionsUsed": ["KHR_texture_transform", "KHR_lights_punctual"],
+        "extensionsUsed": ["KHR_materials_sheen", "KHR_lights_punctual", "KHR_texture_transform"],
     });
     let scene = parse_doc(&doc).unwrap();
     assert_eq!(
         scene.warnings,
-        ["extension(s) KHR_texture_transform ignored (the file does not require them)"]
+        ["extension(s) KHR_materials_sheen ignored (the file does not require them)"]
     );
 }
 

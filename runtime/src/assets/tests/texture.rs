@@ -7,7 +7,8 @@ use image::{ImageBuffer, Luma, Rgb, Rgba};
 use super::{assert_close, TempDir};
 use crate::assets::texture::{decode_image, pack_f16x2, srgb_to_linear, unpack_f16x2};
 use crate::assets::{
-    load_image, solid_texture, AssetError, TextureData, TextureFormat, MAX_TEXTURE_SIZE,
+    load_image, solid_texture, AssetError, Sampler, TextureData, TextureFormat, Wrap,
+    MAX_TEXTURE_SIZE,
 };
 
 #[test]
@@ -138,6 +139,7 @@ fn solid_texture_is_one_linear_texel() {
             format: TextureFormat::Rgba16F,
             words: vec![pack_f16x2(0.25, 0.5), pack_f16x2(2.0, 1.0)],
             nonfinite_texels: 0,
+            sampler: Sampler::default(),
         }
     );
     assert_eq!(tex.texel(0, 0), Some([0.25, 0.5, 2.0, 1.0]));
@@ -197,4 +199,61 @@ fn bad_images_are_errors() {
         load_image("/nonexistent/rtc/t.png"),
         Err(AssetError::Read { .. })
     ));
+}
+
+#[test]
+fn wrap_modes_map_every_index_into_the_texture() {
+    let n = 3;
+    let got = |w: Wrap| (-4..7).map(|x| w.apply(x, n)).collect::<Vec<_>>();
+    // x:                         -4 -3 -2 -1  0  1  2  3  4  5  6
+    assert_eq!(got(Wrap::Repeat), [2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0]);
+    assert_eq!(got(Wrap::ClampToEdge), [0, 0, 0, 0, 0, 1, 2, 2, 2, 2, 2]);
+    assert_eq!(got(Wrap::MirroredRepeat), [2, 2, 1, 0, 0, 1, 2, 2, 1, 0, 0]);
+}
+
+/// A 2×1 linear texture: black, then white (red channel), with `sampler`.
+fn black_white(sampler: Sampler) -> TextureData {
+    TextureData {
+        width: 2,
+        height: 1,
+        format: TextureFormat::Rgba8Unorm,
+        words: vec![0xff00_0000, 0xffff_ffff],
+        nonfinite_texels: 0,
+        sampler,
+    }
+}
+
+#[test]
+fn sampling_follows_the_wrap_mode_and_filter() {
+    let red = |t: &TextureData, u: f32| t.sample([u, 0.5])[0];
+    let repeat = black_white(Sampler::default());
+    // Texel centres at u = 0.25 (black) and 0.75 (white); halfway between them 0.5, and at the
+    // seam u = 0 (repeat: between the last and the first texel) 0.5 too.
+    assert_close(red(&repeat, 0.25), 0.0, 1e-6);
+    assert_close(red(&repeat, 0.5), 0.5, 1e-6);
+    assert_close(red(&repeat, 0.0), 0.5, 1e-6);
+    assert_close(red(&repeat, 1.25), 0.0, 1e-6);
+    let clamp = black_white(Sampler {
+        wrap_u: Wrap::ClampToEdge,
+        ..Sampler::default()
+    });
+    assert_close(red(&clamp, 0.0), 0.0, 1e-6);
+    assert_close(red(&clamp, 1.0), 1.0, 1e-6);
+    assert_close(red(&clamp, 3.7), 1.0, 1e-6);
+    assert_close(red(&clamp, -2.0), 0.0, 1e-6);
+    let mirror = black_white(Sampler {
+        wrap_u: Wrap::MirroredRepeat,
+        nearest: true,
+        ..Sampler::default()
+    });
+    // Nearest, mirrored: [0, 1) black white, [1, 2) white black.
+    assert_eq!(red(&mirror, 0.2), 0.0);
+    assert_eq!(red(&mirror, 0.7), 1.0);
+    assert_eq!(red(&mirror, 1.2), 1.0);
+    assert_eq!(red(&mirror, 1.7), 0.0);
+    assert_eq!(red(&mirror, -0.2), 0.0);
+    // Linear data is not sRGB-decoded; the same words as sRGB are.
+    let srgb = black_white(Sampler::default()).srgb();
+    assert_eq!(srgb.format, TextureFormat::Rgba8Srgb);
+    assert_eq!(srgb.clone().linear().format, TextureFormat::Rgba8Unorm);
 }

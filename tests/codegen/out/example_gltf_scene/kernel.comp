@@ -100,6 +100,8 @@ struct GltfMaskedMaterial {
     float roughness;
     vec3 emissive;
     float alpha_cutoff;
+    uint blend;
+    uint double_sided;
 };
 struct SkyGradient {
     vec3 zenith;
@@ -159,7 +161,13 @@ const float POINT_ERROR = 1.9073486e-6;
 const float GAMMA_1_ = 5.960465e-8;
 const float GAMMA_6_ = 3.576281e-7;
 const float GAMMA_4_ = 2.3841864e-7;
+const uint TEXTURE_WRAP_MASK = 3u;
+const uint TEXTURE_WRAP_V_SHIFT = 2u;
+const uint TEXTURE_NEAREST = 16u;
+const uint TEXTURE_WRAP_MIRROR = 2u;
+const uint TEXTURE_WRAP_CLAMP = 1u;
 const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
+const uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 const uint RGBA16F_TEXEL_WORDS = 2u;
 const uint BLAS_STACK = 64u;
 const uint TLAS_STACK = 64u;
@@ -336,9 +344,9 @@ Ray pinhole_ray(Pinhole cam, uvec2 pixel_1, uint sample_1) {
     vec3 _e24 = normalize_vec3f((cam.look_at - cam.position));
     vec3 _e27 = normalize_vec3f(cross(_e24, cam.up));
     vec3 up = cross(_e27, _e24);
-    float h_1 = tan((radians(cam.fov) * 0.5));
+    float h_2 = tan((radians(cam.fov) * 0.5));
     float aspect = (size_1.x / size_1.y);
-    vec3 _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
+    vec3 _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_2) * aspect)))) - (up * vec3((ndc.y * h_2)))));
     uint _e52 = F32_INF;
     return Ray(cam.position, 0.0, _e48, uintBitsToFloat(_e52), 0u, 0u, 0u);
 }
@@ -407,9 +415,9 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
     float t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_11 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
+    bool hit_13 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_11 ? vec3(t_6, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_13 ? vec3(t_6, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 float point_error(vec3 origin, vec3 along) {
@@ -530,7 +538,9 @@ GltfMaskedMaterial load_GltfMaskedMaterial(uint offset_2) {
     uint _e53 = _group_0_binding_6_cs[(offset_2 + 9u)];
     uint _e59 = _group_0_binding_6_cs[(offset_2 + 10u)];
     uint _e66 = _group_0_binding_6_cs[(offset_2 + 11u)];
-    return GltfMaskedMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), vec3(uintBitsToFloat(_e47), uintBitsToFloat(_e53), uintBitsToFloat(_e59)), uintBitsToFloat(_e66));
+    uint _e72 = _group_0_binding_6_cs[(offset_2 + 12u)];
+    uint _e77 = _group_0_binding_6_cs[(offset_2 + 13u)];
+    return GltfMaskedMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), vec3(uintBitsToFloat(_e47), uintBitsToFloat(_e53), uintBitsToFloat(_e59)), uintBitsToFloat(_e66), _e72, _e77);
 }
 
 int i32_from_f32_(float x_1) {
@@ -543,6 +553,16 @@ int rem_i32_(int a_4, int b_4) {
     return (by_zero_4 ? 0 : (a_4 - (divisor_4 * (a_4 / divisor_4))));
 }
 
+int wrap_texel(int x_2, int n_2, uint mode) {
+    int _e3 = rem_i32_(x_2, n_2);
+    int _e5 = rem_i32_((_e3 + n_2), n_2);
+    int _e8 = rem_i32_(x_2, (2 * n_2));
+    int _e14 = rem_i32_((_e8 + (2 * n_2)), (2 * n_2));
+    int mirror = ((_e14 >= n_2) ? (((2 * n_2) - 1) - _e14) : _e14);
+    int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5);
+    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_2, 0), (n_2 - 1)) : wrapped);
+}
+
 float srgb_channel(float c_1) {
     if ((c_1 <= 0.04045)) {
         return (c_1 / 12.92);
@@ -550,71 +570,120 @@ float srgb_channel(float c_1) {
     return pow(((c_1 + 0.055) / 1.055), 2.4);
 }
 
-vec4 texel_at(uint t, int x_2, int y) {
+vec4 texel_at(uint t, uint xi, uint yi) {
     uint base_1 = _group_0_binding_6_cs[t];
     uint _e10 = _group_0_binding_6_cs[(t + 1u)];
-    uint w_3 = max(_e10, 1u);
-    uint _e17 = _group_0_binding_6_cs[(t + 2u)];
-    uint h_2 = max(_e17, 1u);
+    uint index = ((yi * max(_e10, 1u)) + xi);
     uint format = _group_0_binding_6_cs[(t + 3u)];
-    int _e26 = rem_i32_(x_2, int(w_3));
-    int _e30 = rem_i32_((_e26 + int(w_3)), int(w_3));
-    uint xi = uint(_e30);
-    int _e33 = rem_i32_(y, int(h_2));
-    int _e37 = rem_i32_((_e33 + int(h_2)), int(h_2));
-    uint yi = uint(_e37);
-    uint index = ((yi * w_3) + xi);
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
-        uint _e46 = _group_0_binding_7_cs[(base_1 + index)];
-        vec4 c_7 = unpackUnorm4x8(_e46);
-        float _e49 = srgb_channel(c_7.x);
-        float _e51 = srgb_channel(c_7.y);
-        float _e53 = srgb_channel(c_7.z);
-        return vec4(_e49, _e51, _e53, c_7.w);
+        uint _e25 = _group_0_binding_7_cs[(base_1 + index)];
+        vec4 c_7 = unpackUnorm4x8(_e25);
+        float _e28 = srgb_channel(c_7.x);
+        float _e30 = srgb_channel(c_7.y);
+        float _e32 = srgb_channel(c_7.z);
+        return vec4(_e28, _e30, _e32, c_7.w);
     }
-    uint _e61 = _group_0_binding_7_cs[(base_1 + (index * RGBA16F_TEXEL_WORDS))];
-    vec2 rg = unpackHalf2x16(_e61);
-    uint _e70 = _group_0_binding_7_cs[((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
-    vec2 ba = unpackHalf2x16(_e70);
+    if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
+        uint _e40 = _group_0_binding_7_cs[(base_1 + index)];
+        return unpackUnorm4x8(_e40);
+    }
+    uint _e47 = _group_0_binding_7_cs[(base_1 + (index * RGBA16F_TEXEL_WORDS))];
+    vec2 rg = unpackHalf2x16(_e47);
+    uint _e56 = _group_0_binding_7_cs[((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
+    vec2 ba = unpackHalf2x16(_e56);
     return vec4(rg, ba);
 }
 
 vec4 sample_texture(uint t_1, vec2 uv) {
     uint _e6 = _group_0_binding_6_cs[(t_1 + 1u)];
-    float w_4 = float(max(_e6, 1u));
+    int wi = int(max(_e6, 1u));
     uint _e14 = _group_0_binding_6_cs[(t_1 + 2u)];
-    float h_3 = float(max(_e14, 1u));
-    vec2 p_7 = ((uv * vec2(w_4, h_3)) - vec2(0.5));
+    int hi_1 = int(max(_e14, 1u));
+    uint sampler_ = _group_0_binding_6_cs[(t_1 + 4u)];
+    uint mu = (sampler_ & TEXTURE_WRAP_MASK);
+    uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
+    vec2 q_3 = (uv * vec2(float(wi), float(hi_1)));
+    vec2 p_7 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_3) : (q_3 - vec2(0.5)));
     vec2 f_1 = floor(p_7);
     vec2 fr = (p_7 - f_1);
-    int _e26 = i32_from_f32_(f_1.x);
-    int _e28 = i32_from_f32_(f_1.y);
-    vec4 _e29 = texel_at(t_1, _e26, _e28);
-    vec4 _e32 = texel_at(t_1, (_e26 + 1), _e28);
-    vec4 a_7 = mix(_e29, _e32, vec4(fr.x));
-    vec4 _e38 = texel_at(t_1, _e26, (_e28 + 1));
-    vec4 _e43 = texel_at(t_1, (_e26 + 1), (_e28 + 1));
-    vec4 b_8 = mix(_e38, _e43, vec4(fr.x));
+    int _e47 = i32_from_f32_(f_1.x);
+    int _e49 = i32_from_f32_(f_1.y);
+    int _e50 = wrap_texel(_e47, wi, mu);
+    uint x0_ = uint(_e50);
+    int _e54 = wrap_texel((_e47 + 1), wi, mu);
+    uint x1_ = uint(_e54);
+    int _e56 = wrap_texel(_e49, hi_1, mv);
+    uint y0_ = uint(_e56);
+    int _e60 = wrap_texel((_e49 + 1), hi_1, mv);
+    uint y1_ = uint(_e60);
+    vec4 _e62 = texel_at(t_1, x0_, y0_);
+    vec4 _e63 = texel_at(t_1, x1_, y0_);
+    vec4 a_7 = mix(_e62, _e63, vec4(fr.x));
+    vec4 _e67 = texel_at(t_1, x0_, y1_);
+    vec4 _e68 = texel_at(t_1, x1_, y1_);
+    vec4 b_8 = mix(_e67, _e68, vec4(fr.x));
     return mix(a_7, b_8, vec4(fr.y));
 }
 
-bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_3, Hit hit_1) {
-    vec4 _e6 = sample_texture(m.base_texture, hit_1.uv);
-    return ((m.base_color.w * _e6.w) >= m.alpha_cutoff);
+uint frame_index_query() {
+    TileParams _e1 = _group_0_binding_1_cs;
+    return _e1.frame;
 }
 
-bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_4, Hit hit_2) {
+uint gltf_pcg(uint x_3) {
+    uint state_1 = ((x_3 * 747796405u) + 2891336453u);
+    uint word_2 = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
+    return ((word_2 >> 22u) ^ word_2);
+}
+
+float gltf_coverage(Ray ray_3, Hit hit_1) {
+    uint h_1 = 0u;
+    uvec3 o_1 = floatBitsToUint(ray_3.origin);
+    uvec3 d_3 = floatBitsToUint(ray_3.dir);
+    h_1 = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u));
+    uint _e20 = h_1;
+    h_1 = (((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
+    uint _e33 = h_1;
+    uint _e38 = frame_index_query();
+    h_1 = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
+    uint _e42 = h_1;
+    uint _e43 = gltf_pcg(_e42);
+    uint _e44 = gltf_pcg(_e43);
+    h_1 = _e44;
+    uint _e45 = h_1;
+    return (float((_e45 >> 8u)) * (1.0 / 16777216.0));
+}
+
+bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_4, Hit hit_2) {
+    if (((double_sided == 0u) && !(hit_2.front_face))) {
+        return false;
+    }
+    if ((blend != 0u)) {
+        float _e14 = gltf_coverage(ray_4, hit_2);
+        return (_e14 < alpha);
+    }
+    return (alpha >= cutoff);
+}
+
+bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_5, Hit hit_3) {
+    vec4 _e7 = sample_texture(m.base_texture, hit_3.uv);
+    float alpha_1 = (m.base_color.w * _e7.w);
+    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_5, hit_3);
+    return _e13;
+}
+
+bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_6, Hit hit_4) {
     GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3);
-    bool _e4 = gltf_masked_any_hit(_e3, ray_4, hit_2);
+    bool _e4 = gltf_masked_any_hit(_e3, ray_6, hit_4);
     return _e4;
 }
 
-bool accept(GpuInstance inst_4, Ray ray_5, Candidate c_2) {
+bool accept(GpuInstance inst_4, Ray ray_7, Candidate c_2) {
     if (((inst_4.flags & FLAG_ANY_HIT) != 0u)) {
         float shaded = hit_error;
-        Hit _e10 = finish_hit(ray_5, c_2);
+        Hit _e10 = finish_hit(ray_7, c_2);
         hit_error = shaded;
-        bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
+        bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10);
         return _e14;
     }
     return true;
@@ -646,19 +715,19 @@ float slab(vec3 lo, vec3 hi, vec3 origin_2, vec3 inv_dir, float tmin_1, float tm
     return uintBitsToFloat(_e30);
 }
 
-vec2 children_entry(GpuNode n_2, vec3 origin_3, vec3 scale_1, Ray ray_6, vec3 inv, float tmax_3) {
-    uvec3 lq = floatBitsToUint(n_2.min_);
-    uvec3 rq = floatBitsToUint(n_2.max_);
+vec2 children_entry(GpuNode n_3, vec3 origin_3, vec3 scale_1, Ray ray_8, vec3 inv, float tmax_3) {
+    uvec3 lq = floatBitsToUint(n_3.min_);
+    uvec3 rq = floatBitsToUint(n_3.max_);
     uvec3 _e10 = node_box_lo(lq);
     vec3 _e11 = node_point(origin_3, scale_1, _e10);
     uvec3 _e12 = node_box_hi(lq);
     vec3 _e13 = node_point(origin_3, scale_1, _e12);
-    float _e16 = slab(_e11, _e13, ray_6.origin, inv, ray_6.tmin, tmax_3);
+    float _e16 = slab(_e11, _e13, ray_8.origin, inv, ray_8.tmin, tmax_3);
     uvec3 _e17 = node_box_lo(rq);
     vec3 _e18 = node_point(origin_3, scale_1, _e17);
     uvec3 _e19 = node_box_hi(rq);
     vec3 _e20 = node_point(origin_3, scale_1, _e19);
-    float _e23 = slab(_e18, _e20, ray_6.origin, inv, ray_6.tmin, tmax_3);
+    float _e23 = slab(_e18, _e20, ray_8.origin, inv, ray_8.tmin, tmax_3);
     return vec2(_e16, _e23);
 }
 
@@ -670,7 +739,7 @@ uvec2 pop(uint base, uint sp) {
     return uvec2(_e14, (sp - 1u));
 }
 
-Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray_7, Candidate best_in, bool shadow) {
+Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray_9, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
     uint child = 0u;
@@ -678,8 +747,8 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    vec3 _e8 = safe_inverse(ray_7.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_7);
+    vec3 _e8 = safe_inverse(ray_9.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_9);
     uint base_2 = inst_5.blas_root;
     GpuNode header_1 = _group_0_binding_2_cs[base_2];
     vec3 origin_4 = header_1.min_;
@@ -708,7 +777,7 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
                 uint _e41 = k;
                 uint prim = ((inst_5.triangle_offset + first) + _e41);
                 float _e45 = best.t;
-                vec3 _e46 = hit_triangle(_e9, prim, ray_7.tmin, _e45);
+                vec3 _e46 = hit_triangle(_e9, prim, ray_9.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
                     Candidate c_8 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0.0));
@@ -724,19 +793,19 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
             }
         } else {
             uint _e62 = child;
-            GpuNode n_6 = _group_0_binding_2_cs[(base_2 + _e62)];
+            GpuNode n_7 = _group_0_binding_2_cs[(base_2 + _e62)];
             float _e68 = best.t;
-            vec2 _e69 = children_entry(n_6, origin_4, scale_2, ray_7, _e8, _e68);
+            vec2 _e69 = children_entry(n_7, origin_4, scale_2, ray_9, _e8, _e68);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
             uint _e77 = F32_INF;
             if (((tl < uintBitsToFloat(_e73)) && (tr < uintBitsToFloat(_e77)))) {
-                near = n_6.a;
-                far = n_6.b;
+                near = n_7.a;
+                far = n_7.b;
                 if (((tr < tl) != shadow)) {
-                    near = n_6.b;
-                    far = n_6.a;
+                    near = n_7.b;
+                    far = n_7.a;
                 }
                 uint _e89 = sp_1;
                 if ((_e89 < BLAS_STACK)) {
@@ -752,12 +821,12 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
             }
             uint _e105 = F32_INF;
             if ((tl < uintBitsToFloat(_e105))) {
-                child = n_6.a;
+                child = n_7.a;
                 continue;
             }
             uint _e110 = F32_INF;
             if ((tr < uintBitsToFloat(_e110))) {
-                child = n_6.b;
+                child = n_7.b;
                 continue;
             }
         }
@@ -773,15 +842,15 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     return _e122;
 }
 
-Candidate intersect_object(uint slot_3, Ray ray_8, Candidate best_1, bool shadow_1) {
+Candidate intersect_object(uint slot_3, Ray ray_10, Candidate best_1, bool shadow_1) {
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     GpuInstance inst_7 = _group_0_binding_3_cs[slot_3];
-    Ray _e7 = to_object(inst_7, ray_8);
+    Ray _e7 = to_object(inst_7, ray_10);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_10, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -839,7 +908,7 @@ vec3 node_frame_hi(GpuNode header) {
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_9, bool shadow_2) {
+Candidate intersect_scene(Ray ray_11, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -847,21 +916,21 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_9.tmax);
+    Candidate _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = _group_0_binding_0_cs;
     if ((frame_2.instance_count == 0u)) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    vec3 _e16 = safe_inverse(ray_9.dir);
+    vec3 _e16 = safe_inverse(ray_11.dir);
     uint base_3 = frame_2.tlas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_3];
     vec3 origin_5 = header_2.min_;
     vec3 scale_3 = header_2.max_;
     vec3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
+    float _e28 = slab(origin_5, _e23, ray_11.origin, _e16, ray_11.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == uintBitsToFloat(_e30))) {
         Candidate _e33 = best_2;
@@ -876,7 +945,7 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_9, _e55, shadow_2);
+                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_11, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -886,19 +955,19 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
             }
         } else {
             uint _e63 = child_1;
-            GpuNode n_7 = _group_0_binding_2_cs[(base_3 + _e63)];
+            GpuNode n_8 = _group_0_binding_2_cs[(base_3 + _e63)];
             float _e69 = best_2.t;
-            vec2 _e70 = children_entry(n_7, origin_5, scale_3, ray_9, _e16, _e69);
+            vec2 _e70 = children_entry(n_8, origin_5, scale_3, ray_11, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
             uint _e78 = F32_INF;
             if (((tl_1 < uintBitsToFloat(_e74)) && (tr_1 < uintBitsToFloat(_e78)))) {
-                near_1 = n_7.a;
-                far_1 = n_7.b;
+                near_1 = n_8.a;
+                far_1 = n_8.b;
                 if ((tr_1 < tl_1)) {
-                    near_1 = n_7.b;
-                    far_1 = n_7.a;
+                    near_1 = n_8.b;
+                    far_1 = n_8.a;
                 }
                 uint _e89 = sp_2;
                 if ((_e89 < TLAS_STACK)) {
@@ -914,12 +983,12 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
             }
             uint _e103 = F32_INF;
             if ((tl_1 < uintBitsToFloat(_e103))) {
-                child_1 = n_7.a;
+                child_1 = n_8.a;
                 continue;
             }
             uint _e108 = F32_INF;
             if ((tr_1 < uintBitsToFloat(_e108))) {
-                child_1 = n_7.b;
+                child_1 = n_8.b;
                 continue;
             }
         }
@@ -948,33 +1017,33 @@ SkyGradient load_SkyGradient(uint offset_4) {
     return SkyGradient(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)));
 }
 
-vec3 sky_gradient(SkyGradient b_5, Ray ray_10) {
-    vec3 _e3 = normalize_vec3f(ray_10.dir);
-    float y_1 = _e3.y;
-    if ((y_1 < 0.0)) {
-        return mix(b_5.horizon, b_5.ground, vec3(min((-(y_1) * 4.0), 1.0)));
+vec3 sky_gradient(SkyGradient b_5, Ray ray_12) {
+    vec3 _e3 = normalize_vec3f(ray_12.dir);
+    float y = _e3.y;
+    if ((y < 0.0)) {
+        return mix(b_5.horizon, b_5.ground, vec3(min((-(y) * 4.0), 1.0)));
     }
-    return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y_1)));
+    return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y)));
 }
 
-vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_11) {
+vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_13) {
     SkyGradient _e2 = load_SkyGradient(offset_5);
-    vec3 _e3 = sky_gradient(_e2, ray_11);
+    vec3 _e3 = sky_gradient(_e2, ray_13);
     return _e3;
 }
 
-vec3 miss(Ray ray_12) {
+vec3 miss(Ray ray_14) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_3 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_12);
+    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_14);
     return _e9;
 }
 
-vec3 shading_normal(Ray ray_13, Hit hit_3) {
-    vec3 ng = faceforward(hit_3.geometric_normal, ray_13.dir, hit_3.geometric_normal);
-    return faceforward(hit_3.normal, -(ng), hit_3.normal);
+vec3 shading_normal(Ray ray_15, Hit hit_5) {
+    vec3 ng = faceforward(hit_5.geometric_normal, ray_15.dir, hit_5.geometric_normal);
+    return faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
 uint light_count_query() {
@@ -993,35 +1062,35 @@ DirectionalLight load_DirectionalLight(uint offset_6) {
     return DirectionalLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43));
 }
 
-vec3 step_toward(vec3 x_3, vec3 s) {
-    uvec3 bits_1 = floatBitsToUint(x_3);
-    bvec3 up_1 = greaterThan((sign(x_3) * sign(s)), vec3(0.0));
+vec3 step_toward(vec3 x_4, vec3 s) {
+    uvec3 bits_1 = floatBitsToUint(x_4);
+    bvec3 up_1 = greaterThan((sign(x_4) * sign(s)), vec3(0.0));
     vec3 stepped = uintBitsToFloat(mix((bits_1 - uvec3(1u)), (bits_1 + uvec3(1u)), up_1));
     vec3 from_zero = mix(vec3(-1.1754944e-38), vec3(1.1754944e-38), greaterThan(s, vec3(0.0)));
-    vec3 moved = mix(stepped, from_zero, equal(x_3, vec3(0.0)));
-    return mix(x_3, moved, not(equal(s, vec3(0.0))));
+    vec3 moved = mix(stepped, from_zero, equal(x_4, vec3(0.0)));
+    return mix(x_4, moved, not(equal(s, vec3(0.0))));
 }
 
-vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
-    float d_3 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    vec3 offset_13 = (n_3 * vec3(d_3));
+vec3 offset_origin(vec3 p_5, vec3 n_4, float error) {
+    float d_4 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    vec3 offset_13 = (n_4 * vec3(d_4));
     vec3 _e17 = step_toward((p_5 + offset_13), offset_13);
     return _e17;
 }
 
 Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
-    vec3 n_4 = vec3(0.0);
+    vec3 n_5 = vec3(0.0);
     float tmax_4 = 0.0;
-    n_4 = normal;
-    vec3 _e5 = n_4;
+    n_5 = normal;
+    vec3 _e5 = n_5;
     if ((dot(dir, _e5) < 0.0)) {
-        vec3 _e9 = n_4;
-        n_4 = -(_e9);
+        vec3 _e9 = n_5;
+        n_5 = -(_e9);
     }
     vec3 a_8 = abs(position);
     float _e13 = hit_error;
     float error_3 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
-    vec3 _e22 = n_4;
+    vec3 _e22 = n_5;
     vec3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = uintBitsToFloat(_e25);
@@ -1115,51 +1184,51 @@ LightSample sample_light_query(uint i_1, vec3 position_5, vec3 normal_5) {
     return _e28;
 }
 
-vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, vec3 emissive, Ray ray_14, Hit hit_4) {
+vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, float occlusion, vec3 emissive, Ray ray_16, Hit hit_6) {
     vec3 color = vec3(0.0);
     uint i_2 = 0u;
-    vec3 _e6 = shading_normal(ray_14, hit_4);
-    vec3 _e8 = normalize_vec3f(ray_14.dir);
-    vec3 v_2 = -(_e8);
+    vec3 _e7 = shading_normal(ray_16, hit_6);
+    vec3 _e9 = normalize_vec3f(ray_16.dir);
+    vec3 v_2 = -(_e9);
     float metal = clamp(metallic, 0.0, 1.0);
     float a2_ = max(pow(clamp(roughness, 0.0, 1.0), 4.0), 4e-6);
     vec3 f0_ = mix(vec3(0.04), c_3, vec3(metal));
-    float ndv = max(dot(_e6, v_2), 0.0001);
+    float ndv = max(dot(_e7, v_2), 0.0001);
     color = emissive;
-    uint _e25 = light_count_query();
+    uint _e26 = light_count_query();
     i_2 = 0u;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e104 = i_2;
-            i_2 = (_e104 + 1u);
+            uint _e107 = i_2;
+            i_2 = (_e107 + 1u);
         }
         loop_init_2 = false;
-        uint _e27 = i_2;
-        if ((_e27 >= _e25)) {
+        uint _e28 = i_2;
+        if ((_e28 >= _e26)) {
             break;
         }
-        uint _e29 = i_2;
-        LightSample _e32 = sample_light_query(_e29, hit_4.position, hit_4.geometric_normal);
-        float ndl = max(dot(_e6, _e32.dir), 0.0);
-        vec3 _e39 = normalize_vec3f((_e32.dir + v_2));
-        float ndh = max(dot(_e6, _e39), 0.0);
-        float d_4 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
-        float ggx = ((a2_ * INV_PI) / max((d_4 * d_4), 1e-8));
+        uint _e30 = i_2;
+        LightSample _e33 = sample_light_query(_e30, hit_6.position, hit_6.geometric_normal);
+        float ndl = max(dot(_e7, _e33.dir), 0.0);
+        vec3 _e40 = normalize_vec3f((_e33.dir + v_2));
+        float ndh = max(dot(_e7, _e40), 0.0);
+        float d_5 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
+        float ggx = ((a2_ * INV_PI) / max((d_5 * d_5), 1e-8));
         float vis = (0.5 / max(((ndl * sqrt((((ndv * ndv) * (1.0 - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1.0 - a2_)) + a2_)))), 1e-8));
-        vec3 fresnel = (f0_ + ((vec3(1.0) - f0_) * vec3(pow((1.0 - max(dot(v_2, _e39), 0.0)), 5.0))));
-        vec3 _e87 = color;
-        color = (_e87 + ((_e32.radiance * vec3(ndl)) * (((c_3 * vec3((1.0 - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))));
+        vec3 fresnel = (f0_ + ((vec3(1.0) - f0_) * vec3(pow((1.0 - max(dot(v_2, _e40), 0.0)), 5.0))));
+        vec3 _e88 = color;
+        color = (_e88 + (((_e33.radiance * vec3(ndl)) * (((c_3 * vec3((1.0 - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))) * vec3(occlusion)));
     }
-    vec3 _e107 = color;
-    return _e107;
+    vec3 _e110 = color;
+    return _e110;
 }
 
-vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_15, Hit hit_5) {
-    vec4 _e7 = sample_texture(m_1.base_texture, hit_5.uv);
+vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_17, Hit hit_7) {
+    vec4 _e7 = sample_texture(m_1.base_texture, hit_7.uv);
     vec3 c_9 = (m_1.base_color.xyz * _e7.xyz);
-    vec3 _e13 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, m_1.emissive, ray_15, hit_5);
-    return _e13;
+    vec3 _e14 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_17, hit_7);
+    return _e14;
 }
 
 GltfMaterial load_GltfMaterial(uint offset_9) {
@@ -1176,23 +1245,23 @@ GltfMaterial load_GltfMaterial(uint offset_9) {
     return GltfMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), vec3(uintBitsToFloat(_e47), uintBitsToFloat(_e53), uintBitsToFloat(_e59)));
 }
 
-vec3 gltf_shade(GltfMaterial m_2, Ray ray_16, Hit hit_6) {
-    vec4 _e7 = sample_texture(m_2.base_texture, hit_6.uv);
+vec3 gltf_shade(GltfMaterial m_2, Ray ray_18, Hit hit_8) {
+    vec4 _e7 = sample_texture(m_2.base_texture, hit_8.uv);
     vec3 c_10 = (m_2.base_color.xyz * _e7.xyz);
-    vec3 _e13 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, m_2.emissive, ray_16, hit_6);
-    return _e13;
+    vec3 _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_18, hit_8);
+    return _e14;
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_17, Hit hit_7, vec3 secondary) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_19, Hit hit_9, vec3 secondary) {
     switch(type_id_4) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10);
-            vec3 _e5 = gltf_masked_shade(_e4, ray_17, hit_7);
+            vec3 _e5 = gltf_masked_shade(_e4, ray_19, hit_9);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_10);
-            vec3 _e7 = gltf_shade(_e6, ray_17, hit_7);
+            vec3 _e7 = gltf_shade(_e6, ray_19, hit_9);
             return _e7;
         }
         default: {
@@ -1202,51 +1271,51 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_17, Hit hit_7,
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_18, Candidate c_4) {
+vec3 shade_direct(Ray ray_20, Candidate c_4) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_4.slot];
-    Hit _e6 = finish_hit(ray_18, c_4);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_20, c_4);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, vec3(0.0));
     return _e11;
 }
 
-vec3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_19, float t_2, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_21, float t_2, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_20, float t_3, vec3 radiance_1) {
+vec3 through_medium(Ray ray_22, float t_3, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_20.medium == 0u)) {
+    if ((ray_22.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_20.medium - 1u)];
+    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_22.medium - 1u)];
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_20, t_3, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_22, t_3, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_21, Hit hit_8) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_23, Hit hit_10) {
     return;
 }
 
 vec3 spawn_origin_at(vec3 position_6, vec3 normal_6, float error_1, vec3 dir_2) {
-    vec3 n_5 = vec3(0.0);
-    n_5 = normal_6;
-    vec3 _e5 = n_5;
+    vec3 n_6 = vec3(0.0);
+    n_6 = normal_6;
+    vec3 _e5 = n_6;
     if ((dot(dir_2, _e5) < 0.0)) {
-        vec3 _e9 = n_5;
-        n_5 = -(_e9);
+        vec3 _e9 = n_6;
+        n_6 = -(_e9);
     }
-    vec3 _e11 = n_5;
+    vec3 _e11 = n_6;
     vec3 _e12 = offset_origin(position_6, _e11, error_1);
     return _e12;
 }
 
-vec3 spawn_origin(Hit hit_9, float error_2, vec3 dir_3) {
-    vec3 _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_3);
+vec3 spawn_origin(Hit hit_11, float error_2, vec3 dir_3) {
+    vec3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_3);
     return _e5;
 }
 
@@ -1255,7 +1324,7 @@ vec3 trace(Ray camera_ray) {
     float t_4 = 0.0;
     Frame stack[4] = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_22 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_24 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
@@ -1268,7 +1337,7 @@ vec3 trace(Ray camera_ray) {
     bool pushed = false;
     vec3 radiance_3 = vec3(0.0);
     float t_5 = 0.0;
-    Hit hit_10 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
+    Hit hit_12 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
     uint i_3 = 0u;
     uint medium = 0u;
@@ -1293,7 +1362,7 @@ vec3 trace(Ray camera_ray) {
     }
     stack = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_22 = camera_ray;
+    ray_24 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1309,10 +1378,10 @@ vec3 trace(Ray camera_ray) {
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_22;
+            Ray _e67 = ray_24;
             Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_22;
+            Ray _e70 = ray_24;
             s_ray = _e70;
             s_sum = vec3(0.0);
             fresh = true;
@@ -1335,20 +1404,20 @@ vec3 trace(Ray camera_ray) {
                 uint _e95 = s_c.slot;
                 GpuInstance inst_10 = _group_0_binding_3_cs[_e95];
                 Hit _e99 = s_hit;
-                hit_10 = _e99;
+                hit_12 = _e99;
                 bool _e101 = fresh;
                 if (_e101) {
                     Ray _e102 = s_ray;
                     Candidate _e103 = s_c;
                     Hit _e104 = finish_hit(_e102, _e103);
-                    hit_10 = _e104;
+                    hit_12 = _e104;
                     float _e106 = hit_error;
                     s_error = _e106;
                 } else {
                     float _e107 = s_error;
                     hit_error = _e107;
                 }
-                float _e110 = hit_10.t;
+                float _e110 = hit_12.t;
                 t_5 = _e110;
                 bool _e111 = fresh;
                 uint _e119 = s_ray.depth;
@@ -1356,16 +1425,16 @@ vec3 trace(Ray camera_ray) {
                 if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
                     spawn_count = 0u;
                     Ray _e131 = s_ray;
-                    Hit _e132 = hit_10;
+                    Hit _e132 = hit_12;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
                     uint _e134 = spawn_count;
-                    uint n_8 = min(min(_e134, 1u), MAX_SPAWN);
-                    if ((n_8 > 0u)) {
+                    uint n_9 = min(min(_e134, 1u), MAX_SPAWN);
+                    if ((n_9 > 0u)) {
                         Ray _e141 = s_ray;
-                        Hit _e142 = hit_10;
+                        Hit _e142 = hit_12;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_8, 0u);
+                        f = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_9, 0u);
                         i_3 = 0u;
                         bool loop_init_3 = true;
                         while(true) {
@@ -1375,7 +1444,7 @@ vec3 trace(Ray camera_ray) {
                             }
                             loop_init_3 = false;
                             uint _e155 = i_3;
-                            if ((_e155 >= n_8)) {
+                            if ((_e155 >= n_9)) {
                                 break;
                             }
                             uint _e158 = i_3;
@@ -1398,7 +1467,7 @@ vec3 trace(Ray camera_ray) {
                 bool _e187 = pushed;
                 if (!(_e187)) {
                     Ray _e191 = s_ray;
-                    Hit _e192 = hit_10;
+                    Hit _e192 = hit_12;
                     vec3 _e193 = s_sum;
                     vec3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
                     radiance_3 = _e194;
@@ -1439,14 +1508,14 @@ vec3 trace(Ray camera_ray) {
             uint i_4 = stack[min(top_1, 3u)].next;
             stack[min(top_1, 3u)].next = (i_4 + 1u);
             Ray parent = stack[min(top_1, 3u)].ray;
-            Hit hit_12 = stack[min(top_1, 3u)].hit;
+            Hit hit_14 = stack[min(top_1, 3u)].hit;
             vec3 dir_6 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
             medium = parent.medium;
             float _e283 = stack[min(top_1, 3u)].error;
-            vec3 _e284 = spawn_origin(hit_12, _e283, dir_6);
+            vec3 _e284 = spawn_origin(hit_14, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_22 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_24 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -1466,8 +1535,8 @@ vec3 trace(Ray camera_ray) {
     return vec3(0.0);
 }
 
-bvec3 is_finite_vec3f(vec3 x_4) {
-    return lessThan((floatBitsToUint(x_4) & uvec3(2147483647u)), uvec3(2139095040u));
+bvec3 is_finite_vec3f(vec3 x_5) {
+    return lessThan((floatBitsToUint(x_5) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
 vec3 finite_or_zero(vec3 c_5) {
@@ -1479,7 +1548,7 @@ void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s_1 = 0u;
-    Ray ray_23 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_25 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_2 = _group_0_binding_1_cs;
     sum = vec3(0.0);
@@ -1501,13 +1570,13 @@ void render_pixel(uvec2 pixel_3) {
         uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_23 = _e23;
-        ray_23.depth = 0u;
-        ray_23.kind = RAY_CAMERA;
-        vec3 _e31 = ray_23.origin;
+        ray_25 = _e23;
+        ray_25.depth = 0u;
+        ray_25.kind = RAY_CAMERA;
+        vec3 _e31 = ray_25.origin;
         uint _e33 = medium_at(_e31, NO_HIT);
-        ray_23.medium = _e33;
-        Ray _e34 = ray_23;
+        ray_25.medium = _e33;
+        Ray _e34 = ray_25;
         vec3 _e35 = trace(_e34);
         bvec3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

@@ -123,6 +123,10 @@ struct GltfMaskedMaterial {
     int _pad4_0;
     float3 emissive;
     float alpha_cutoff;
+    uint blend;
+    uint double_sided;
+    int _end_pad_0;
+    int _end_pad_1;
 };
 
 struct SkyGradient {
@@ -205,7 +209,13 @@ static const float POINT_ERROR = 1.9073486e-6;
 static const float GAMMA_1_ = 5.960465e-8;
 static const float GAMMA_6_ = 3.576281e-7;
 static const float GAMMA_4_ = 2.3841864e-7;
+static const uint TEXTURE_WRAP_MASK = 3u;
+static const uint TEXTURE_WRAP_V_SHIFT = 2u;
+static const uint TEXTURE_NEAREST = 16u;
+static const uint TEXTURE_WRAP_MIRROR = 2u;
+static const uint TEXTURE_WRAP_CLAMP = 1u;
 static const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
+static const uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 static const uint RGBA16F_TEXEL_WORDS = 2u;
 static const uint BLAS_STACK = 64u;
 static const uint TLAS_STACK = 64u;
@@ -418,20 +428,20 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
     const float3 _e24 = normalize_vec3f((cam.look_at - cam.position));
     const float3 _e27 = normalize_vec3f(cross(_e24, cam.up));
     float3 up = cross(_e27, _e24);
-    float h_1 = tan((radians(cam.fov) * 0.5));
+    float h_2 = tan((radians(cam.fov) * 0.5));
     float aspect = (size_1.x / size_1.y);
-    const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
+    const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_2) * aspect)).xxx)) - (up * ((ndc.y * h_2)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_24 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_24;
+    const Ray ray_26 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_26;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
-    const Ray ray_25 = _e4;
-    return ray_25;
+    const Ray ray_27 = _e4;
+    return ray_27;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -460,8 +470,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_26 = _e25;
-    return ray_26;
+    const Ray ray_28 = _e25;
+    return ray_28;
 }
 
 float3 safe_inverse(float3 d)
@@ -522,9 +532,9 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
     float t_6 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_6[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_11 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
+    bool hit_13 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_11 ? float3(t_6, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_13 ? float3(t_6, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 float point_error(float3 origin, float3 along)
@@ -683,11 +693,11 @@ Hit finish_hit(Ray ray_2, Candidate c)
     float3 _e147 = hit.geometric_normal;
     hit.front_face = (dot(ray_2.dir, _e147) < 0.0);
     Hit _e151 = hit;
-    const Hit hit_12 = _e151;
-    return hit_12;
+    const Hit hit_14 = _e151;
+    return hit_14;
 }
 
-GltfMaskedMaterial ConstructGltfMaskedMaterial(float4 arg0, uint arg1, float arg2, float arg3, float3 arg4, float arg5) {
+GltfMaskedMaterial ConstructGltfMaskedMaterial(float4 arg0, uint arg1, float arg2, float arg3, float3 arg4, float arg5, uint arg6, uint arg7) {
     GltfMaskedMaterial ret = (GltfMaskedMaterial)0;
     ret.base_color = arg0;
     ret.base_texture = arg1;
@@ -695,6 +705,8 @@ GltfMaskedMaterial ConstructGltfMaskedMaterial(float4 arg0, uint arg1, float arg
     ret.roughness = arg3;
     ret.emissive = arg4;
     ret.alpha_cutoff = arg5;
+    ret.blend = arg6;
+    ret.double_sided = arg7;
     return ret;
 }
 
@@ -711,7 +723,9 @@ GltfMaskedMaterial load_GltfMaskedMaterial(uint offset_2)
     uint _e53 = asuint(params.Load((offset_2 + 9u)*4));
     uint _e59 = asuint(params.Load((offset_2 + 10u)*4));
     uint _e66 = asuint(params.Load((offset_2 + 11u)*4));
-    const GltfMaskedMaterial gltfmaskedmaterial = ConstructGltfMaskedMaterial(float4(asfloat(_e5), asfloat(_e11), asfloat(_e17), asfloat(_e23)), _e30, asfloat(_e35), asfloat(_e41), float3(asfloat(_e47), asfloat(_e53), asfloat(_e59)), asfloat(_e66));
+    uint _e72 = asuint(params.Load((offset_2 + 12u)*4));
+    uint _e77 = asuint(params.Load((offset_2 + 13u)*4));
+    const GltfMaskedMaterial gltfmaskedmaterial = ConstructGltfMaskedMaterial(float4(asfloat(_e5), asfloat(_e11), asfloat(_e17), asfloat(_e23)), _e30, asfloat(_e35), asfloat(_e41), float3(asfloat(_e47), asfloat(_e53), asfloat(_e59)), asfloat(_e66), _e72, _e77);
     return gltfmaskedmaterial;
 }
 
@@ -735,6 +749,17 @@ int rem_i32_(int a_4, int b_4)
     return (by_zero_4 ? int(0) : asint(asuint(a_4) - asuint(asint(asuint(divisor_4) * asuint(naga_div(a_4, divisor_4))))));
 }
 
+int wrap_texel(int x_2, int n_2, uint mode)
+{
+    const int _e3 = rem_i32_(x_2, n_2);
+    const int _e5 = rem_i32_(asint(asuint(_e3) + asuint(n_2)), n_2);
+    const int _e8 = rem_i32_(x_2, asint(asuint(int(2)) * asuint(n_2)));
+    const int _e14 = rem_i32_(asint(asuint(_e8) + asuint(asint(asuint(int(2)) * asuint(n_2)))), asint(asuint(int(2)) * asuint(n_2)));
+    int mirror = ((_e14 >= n_2) ? asint(asuint(asint(asuint(asint(asuint(int(2)) * asuint(n_2))) - asuint(int(1)))) - asuint(_e14)) : _e14);
+    int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5);
+    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_2, int(0)), asint(asuint(n_2) - asuint(int(1)))) : wrapped);
+}
+
 float srgb_channel(float c_1)
 {
     if ((c_1 <= 0.04045)) {
@@ -743,76 +768,130 @@ float srgb_channel(float c_1)
     return pow(((c_1 + 0.055) / 1.055), 2.4);
 }
 
-float4 texel_at(uint t, int x_2, int y)
+float4 texel_at(uint t, uint xi, uint yi)
 {
     uint base_1 = asuint(params.Load(t*4));
     uint _e10 = asuint(params.Load((t + 1u)*4));
-    uint w_3 = max(_e10, 1u);
-    uint _e17 = asuint(params.Load((t + 2u)*4));
-    uint h_2 = max(_e17, 1u);
+    uint index = ((yi * max(_e10, 1u)) + xi);
     uint format = asuint(params.Load((t + 3u)*4));
-    const int _e26 = rem_i32_(x_2, int(w_3));
-    const int _e30 = rem_i32_(asint(asuint(_e26) + asuint(int(w_3))), int(w_3));
-    uint xi = uint(_e30);
-    const int _e33 = rem_i32_(y, int(h_2));
-    const int _e37 = rem_i32_(asint(asuint(_e33) + asuint(int(h_2))), int(h_2));
-    uint yi = uint(_e37);
-    uint index = ((yi * w_3) + xi);
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
-        uint _e46 = asuint(texels.Load((base_1 + index)*4));
-        float4 c_7 = (float4(_e46 & 0xFF, _e46 >> 8 & 0xFF, _e46 >> 16 & 0xFF, _e46 >> 24) / 255.0);
-        const float _e49 = srgb_channel(c_7.x);
-        const float _e51 = srgb_channel(c_7.y);
-        const float _e53 = srgb_channel(c_7.z);
-        return float4(_e49, _e51, _e53, c_7.w);
+        uint _e25 = asuint(texels.Load((base_1 + index)*4));
+        float4 c_7 = (float4(_e25 & 0xFF, _e25 >> 8 & 0xFF, _e25 >> 16 & 0xFF, _e25 >> 24) / 255.0);
+        const float _e28 = srgb_channel(c_7.x);
+        const float _e30 = srgb_channel(c_7.y);
+        const float _e32 = srgb_channel(c_7.z);
+        return float4(_e28, _e30, _e32, c_7.w);
     }
-    uint _e61 = asuint(texels.Load((base_1 + (index * RGBA16F_TEXEL_WORDS))*4));
-    float2 rg = float2(f16tof32(_e61), f16tof32((_e61) >> 16));
-    uint _e70 = asuint(texels.Load(((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)*4));
-    float2 ba = float2(f16tof32(_e70), f16tof32((_e70) >> 16));
+    if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
+        uint _e40 = asuint(texels.Load((base_1 + index)*4));
+        return (float4(_e40 & 0xFF, _e40 >> 8 & 0xFF, _e40 >> 16 & 0xFF, _e40 >> 24) / 255.0);
+    }
+    uint _e47 = asuint(texels.Load((base_1 + (index * RGBA16F_TEXEL_WORDS))*4));
+    float2 rg = float2(f16tof32(_e47), f16tof32((_e47) >> 16));
+    uint _e56 = asuint(texels.Load(((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)*4));
+    float2 ba = float2(f16tof32(_e56), f16tof32((_e56) >> 16));
     return float4(rg, ba);
 }
 
 float4 sample_texture(uint t_1, float2 uv)
 {
     uint _e6 = asuint(params.Load((t_1 + 1u)*4));
-    float w_4 = float(max(_e6, 1u));
+    int wi = int(max(_e6, 1u));
     uint _e14 = asuint(params.Load((t_1 + 2u)*4));
-    float h_3 = float(max(_e14, 1u));
-    float2 p_7 = ((uv * float2(w_4, h_3)) - (0.5).xx);
+    int hi_1 = int(max(_e14, 1u));
+    uint sampler_ = asuint(params.Load((t_1 + 4u)*4));
+    uint mu = (sampler_ & TEXTURE_WRAP_MASK);
+    uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
+    float2 q_3 = (uv * float2(float(wi), float(hi_1)));
+    float2 p_7 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_3) : (q_3 - (0.5).xx));
     float2 f_1 = floor(p_7);
     float2 fr = (p_7 - f_1);
-    const int _e26 = i32_from_f32_(f_1.x);
-    const int _e28 = i32_from_f32_(f_1.y);
-    const float4 _e29 = texel_at(t_1, _e26, _e28);
-    const float4 _e32 = texel_at(t_1, asint(asuint(_e26) + asuint(int(1))), _e28);
-    float4 a_7 = lerp(_e29, _e32, (fr.x).xxxx);
-    const float4 _e38 = texel_at(t_1, _e26, asint(asuint(_e28) + asuint(int(1))));
-    const float4 _e43 = texel_at(t_1, asint(asuint(_e26) + asuint(int(1))), asint(asuint(_e28) + asuint(int(1))));
-    float4 b_8 = lerp(_e38, _e43, (fr.x).xxxx);
+    const int _e47 = i32_from_f32_(f_1.x);
+    const int _e49 = i32_from_f32_(f_1.y);
+    const int _e50 = wrap_texel(_e47, wi, mu);
+    uint x0_ = uint(_e50);
+    const int _e54 = wrap_texel(asint(asuint(_e47) + asuint(int(1))), wi, mu);
+    uint x1_ = uint(_e54);
+    const int _e56 = wrap_texel(_e49, hi_1, mv);
+    uint y0_ = uint(_e56);
+    const int _e60 = wrap_texel(asint(asuint(_e49) + asuint(int(1))), hi_1, mv);
+    uint y1_ = uint(_e60);
+    const float4 _e62 = texel_at(t_1, x0_, y0_);
+    const float4 _e63 = texel_at(t_1, x1_, y0_);
+    float4 a_7 = lerp(_e62, _e63, (fr.x).xxxx);
+    const float4 _e67 = texel_at(t_1, x0_, y1_);
+    const float4 _e68 = texel_at(t_1, x1_, y1_);
+    float4 b_8 = lerp(_e67, _e68, (fr.x).xxxx);
     return lerp(a_7, b_8, (fr.y).xxxx);
 }
 
-bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_3, Hit hit_1)
+uint frame_index_query()
 {
-    const float4 _e6 = sample_texture(m.base_texture, hit_1.uv);
-    return ((m.base_color.w * _e6.w) >= m.alpha_cutoff);
+    TileParams _e1 = tile;
+    return _e1.frame;
 }
 
-bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_4, Hit hit_2)
+uint gltf_pcg(uint x_3)
+{
+    uint state_1 = ((x_3 * 747796405u) + 2891336453u);
+    uint word_2 = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
+    return ((word_2 >> 22u) ^ word_2);
+}
+
+float gltf_coverage(Ray ray_3, Hit hit_1)
+{
+    uint h_1 = (uint)0;
+
+    uint3 o_1 = asuint(ray_3.origin);
+    uint3 d_3 = asuint(ray_3.dir);
+    h_1 = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u));
+    uint _e20 = h_1;
+    h_1 = (((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
+    uint _e33 = h_1;
+    const uint _e38 = frame_index_query();
+    h_1 = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
+    uint _e42 = h_1;
+    const uint _e43 = gltf_pcg(_e42);
+    const uint _e44 = gltf_pcg(_e43);
+    h_1 = _e44;
+    uint _e45 = h_1;
+    return (float((_e45 >> 8u)) * (1.0 / 16777216.0));
+}
+
+bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_4, Hit hit_2)
+{
+    if (((double_sided == 0u) && !(hit_2.front_face))) {
+        return false;
+    }
+    if ((blend != 0u)) {
+        const float _e14 = gltf_coverage(ray_4, hit_2);
+        return (_e14 < alpha);
+    }
+    return (alpha >= cutoff);
+}
+
+bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_5, Hit hit_3)
+{
+    const float4 _e7 = sample_texture(m.base_texture, hit_3.uv);
+    float alpha_1 = (m.base_color.w * _e7.w);
+    const bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_5, hit_3);
+    return _e13;
+}
+
+bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_6, Hit hit_4)
 {
     const GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3);
-    const bool _e4 = gltf_masked_any_hit(_e3, ray_4, hit_2);
+    const bool _e4 = gltf_masked_any_hit(_e3, ray_6, hit_4);
     return _e4;
 }
 
-bool accept(GpuInstance inst_4, Ray ray_5, Candidate c_2)
+bool accept(GpuInstance inst_4, Ray ray_7, Candidate c_2)
 {
     if (((inst_4.flags & FLAG_ANY_HIT) != 0u)) {
         float shaded = hit_error;
-        const Hit _e10 = finish_hit(ray_5, c_2);
+        const Hit _e10 = finish_hit(ray_7, c_2);
         hit_error = shaded;
-        const bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
+        const bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10);
         return _e14;
     }
     return true;
@@ -848,20 +927,20 @@ float slab(float3 lo, float3 hi, float3 origin_2, float3 inv_dir, float tmin_1, 
     return asfloat(_e30);
 }
 
-float2 children_entry(GpuNode n_2, float3 origin_3, float3 scale_1, Ray ray_6, float3 inv, float tmax_3)
+float2 children_entry(GpuNode n_3, float3 origin_3, float3 scale_1, Ray ray_8, float3 inv, float tmax_3)
 {
-    uint3 lq = asuint(n_2.min_);
-    uint3 rq = asuint(n_2.max_);
+    uint3 lq = asuint(n_3.min_);
+    uint3 rq = asuint(n_3.max_);
     const uint3 _e10 = node_box_lo(lq);
     const float3 _e11 = node_point(origin_3, scale_1, _e10);
     const uint3 _e12 = node_box_hi(lq);
     const float3 _e13 = node_point(origin_3, scale_1, _e12);
-    const float _e16 = slab(_e11, _e13, ray_6.origin, inv, ray_6.tmin, tmax_3);
+    const float _e16 = slab(_e11, _e13, ray_8.origin, inv, ray_8.tmin, tmax_3);
     const uint3 _e17 = node_box_lo(rq);
     const float3 _e18 = node_point(origin_3, scale_1, _e17);
     const uint3 _e19 = node_box_hi(rq);
     const float3 _e20 = node_point(origin_3, scale_1, _e19);
-    const float _e23 = slab(_e18, _e20, ray_6.origin, inv, ray_6.tmin, tmax_3);
+    const float _e23 = slab(_e18, _e20, ray_8.origin, inv, ray_8.tmin, tmax_3);
     return float2(_e16, _e23);
 }
 
@@ -883,7 +962,7 @@ GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
     return ret;
 }
 
-Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray_7, Candidate best_in, bool shadow)
+Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray_9, Candidate best_in, bool shadow)
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
@@ -893,8 +972,8 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     uint far = (uint)0;
 
     best = best_in;
-    const float3 _e8 = safe_inverse(ray_7.dir);
-    const TriangleRay _e9 = prepare_triangle_ray(ray_7);
+    const float3 _e8 = safe_inverse(ray_9.dir);
+    const TriangleRay _e9 = prepare_triangle_ray(ray_9);
     uint base_2 = inst_5.blas_root;
     GpuNode header_1 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
     float3 origin_4 = header_1.min_;
@@ -929,7 +1008,7 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
                 uint _e41 = k;
                 uint prim = ((inst_5.triangle_offset + first) + _e41);
                 float _e45 = best.t;
-                const float3 _e46 = hit_triangle(_e9, prim, ray_7.tmin, _e45);
+                const float3 _e46 = hit_triangle(_e9, prim, ray_9.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < asfloat(_e49))) {
                     Candidate c_8 = ConstructCandidate(_e46.x, slot_2, prim, _e46.yz, (0.0).xxx);
@@ -946,19 +1025,19 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
             }
         } else {
             uint _e62 = child;
-            GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e62)*32+0)), asuint(nodes.Load((base_2 + _e62)*32+12)), asfloat(nodes.Load3((base_2 + _e62)*32+16)), asuint(nodes.Load((base_2 + _e62)*32+28)));
+            GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e62)*32+0)), asuint(nodes.Load((base_2 + _e62)*32+12)), asfloat(nodes.Load3((base_2 + _e62)*32+16)), asuint(nodes.Load((base_2 + _e62)*32+28)));
             float _e68 = best.t;
-            const float2 _e69 = children_entry(n_6, origin_4, scale_2, ray_7, _e8, _e68);
+            const float2 _e69 = children_entry(n_7, origin_4, scale_2, ray_9, _e8, _e68);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
             uint _e77 = F32_INF;
             if (((tl < asfloat(_e73)) && (tr < asfloat(_e77)))) {
-                near = n_6.a;
-                far = n_6.b;
+                near = n_7.a;
+                far = n_7.b;
                 if (((tr < tl) != shadow)) {
-                    near = n_6.b;
-                    far = n_6.a;
+                    near = n_7.b;
+                    far = n_7.a;
                 }
                 uint _e89 = sp_1;
                 if ((_e89 < BLAS_STACK)) {
@@ -974,12 +1053,12 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
             }
             uint _e105 = F32_INF;
             if ((tl < asfloat(_e105))) {
-                child = n_6.a;
+                child = n_7.a;
                 continue;
             }
             uint _e110 = F32_INF;
             if ((tr < asfloat(_e110))) {
-                child = n_6.b;
+                child = n_7.b;
                 continue;
             }
         }
@@ -996,17 +1075,17 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     return candidate_2;
 }
 
-Candidate intersect_object(uint slot_3, Ray ray_8, Candidate best_1, bool shadow_1)
+Candidate intersect_object(uint slot_3, Ray ray_10, Candidate best_1, bool shadow_1)
 {
     Ray r_2 = (Ray)0;
 
     GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4(slot_3*128+0)), asfloat(instances.Load4(slot_3*128+16)), asfloat(instances.Load4(slot_3*128+32)), asfloat(instances.Load4(slot_3*128+48)), asfloat(instances.Load4(slot_3*128+64)), asfloat(instances.Load4(slot_3*128+80)), asuint(instances.Load(slot_3*128+96)), asuint(instances.Load(slot_3*128+100)), asuint(instances.Load(slot_3*128+104)), asuint(instances.Load(slot_3*128+108)), asuint(instances.Load(slot_3*128+112)), asuint(instances.Load(slot_3*128+116)), asuint(instances.Load(slot_3*128+120)), asuint(instances.Load(slot_3*128+124)));
-    const Ray _e7 = to_object(inst_7, ray_8);
+    const Ray _e7 = to_object(inst_7, ray_10);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        const Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1);
+        const Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_10, _e14, best_1, shadow_1);
         const Candidate candidate_3 = _e15;
         return candidate_3;
     }
@@ -1072,7 +1151,7 @@ float3 node_frame_hi(GpuNode header)
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_9, bool shadow_2)
+Candidate intersect_scene(Ray ray_11, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -1082,7 +1161,7 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_9.tmax);
+    const Candidate _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = frame;
     if ((frame_2.instance_count == 0u)) {
@@ -1090,14 +1169,14 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2)
         const Candidate candidate_5 = _e14;
         return candidate_5;
     }
-    const float3 _e16 = safe_inverse(ray_9.dir);
+    const float3 _e16 = safe_inverse(ray_11.dir);
     uint base_3 = frame_2.tlas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_3*32+0)), asuint(nodes.Load(base_3*32+12)), asfloat(nodes.Load3(base_3*32+16)), asuint(nodes.Load(base_3*32+28)));
     float3 origin_5 = header_2.min_;
     float3 scale_3 = header_2.max_;
     const float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    const float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
+    const float _e28 = slab(origin_5, _e23, ray_11.origin, _e16, ray_11.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == asfloat(_e30))) {
         Candidate _e33 = best_2;
@@ -1116,7 +1195,7 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2)
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_9, _e55, shadow_2);
+                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_11, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -1127,19 +1206,19 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2)
             }
         } else {
             uint _e63 = child_1;
-            GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_3 + _e63)*32+0)), asuint(nodes.Load((base_3 + _e63)*32+12)), asfloat(nodes.Load3((base_3 + _e63)*32+16)), asuint(nodes.Load((base_3 + _e63)*32+28)));
+            GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_3 + _e63)*32+0)), asuint(nodes.Load((base_3 + _e63)*32+12)), asfloat(nodes.Load3((base_3 + _e63)*32+16)), asuint(nodes.Load((base_3 + _e63)*32+28)));
             float _e69 = best_2.t;
-            const float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_9, _e16, _e69);
+            const float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_11, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
             uint _e78 = F32_INF;
             if (((tl_1 < asfloat(_e74)) && (tr_1 < asfloat(_e78)))) {
-                near_1 = n_7.a;
-                far_1 = n_7.b;
+                near_1 = n_8.a;
+                far_1 = n_8.b;
                 if ((tr_1 < tl_1)) {
-                    near_1 = n_7.b;
-                    far_1 = n_7.a;
+                    near_1 = n_8.b;
+                    far_1 = n_8.a;
                 }
                 uint _e89 = sp_2;
                 if ((_e89 < TLAS_STACK)) {
@@ -1155,12 +1234,12 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2)
             }
             uint _e103 = F32_INF;
             if ((tl_1 < asfloat(_e103))) {
-                child_1 = n_7.a;
+                child_1 = n_8.a;
                 continue;
             }
             uint _e108 = F32_INF;
             if ((tr_1 < asfloat(_e108))) {
-                child_1 = n_7.b;
+                child_1 = n_8.b;
                 continue;
             }
         }
@@ -1200,37 +1279,37 @@ SkyGradient load_SkyGradient(uint offset_4)
     return skygradient;
 }
 
-float3 sky_gradient(SkyGradient b_5, Ray ray_10)
+float3 sky_gradient(SkyGradient b_5, Ray ray_12)
 {
-    const float3 _e3 = normalize_vec3f(ray_10.dir);
-    float y_1 = _e3.y;
-    if ((y_1 < 0.0)) {
-        return lerp(b_5.horizon, b_5.ground, (min((-(y_1) * 4.0), 1.0)).xxx);
+    const float3 _e3 = normalize_vec3f(ray_12.dir);
+    float y = _e3.y;
+    if ((y < 0.0)) {
+        return lerp(b_5.horizon, b_5.ground, (min((-(y) * 4.0), 1.0)).xxx);
     }
-    return lerp(b_5.horizon, b_5.zenith, (sqrt(y_1)).xxx);
+    return lerp(b_5.horizon, b_5.zenith, (sqrt(y)).xxx);
 }
 
-float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_11)
+float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_13)
 {
     const SkyGradient _e2 = load_SkyGradient(offset_5);
-    const float3 _e3 = sky_gradient(_e2, ray_11);
+    const float3 _e3 = sky_gradient(_e2, ray_13);
     return _e3;
 }
 
-float3 miss(Ray ray_12)
+float3 miss(Ray ray_14)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
     FrameUniforms frame_3 = frame;
-    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_12);
+    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_14);
     return _e9;
 }
 
-float3 shading_normal(Ray ray_13, Hit hit_3)
+float3 shading_normal(Ray ray_15, Hit hit_5)
 {
-    float3 ng = faceforward(hit_3.geometric_normal, ray_13.dir, hit_3.geometric_normal);
-    return faceforward(hit_3.normal, -(ng), hit_3.normal);
+    float3 ng = faceforward(hit_5.geometric_normal, ray_15.dir, hit_5.geometric_normal);
+    return faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
 uint light_count_query()
@@ -1260,39 +1339,39 @@ DirectionalLight load_DirectionalLight(uint offset_6)
     return directionallight;
 }
 
-float3 step_toward(float3 x_3, float3 s)
+float3 step_toward(float3 x_4, float3 s)
 {
-    uint3 bits_1 = asuint(x_3);
-    bool3 up_1 = ((sign(x_3) * sign(s)) > (0.0).xxx);
+    uint3 bits_1 = asuint(x_4);
+    bool3 up_1 = ((sign(x_4) * sign(s)) > (0.0).xxx);
     float3 stepped = asfloat((up_1 ? (bits_1 + (1u).xxx) : (bits_1 - (1u).xxx)));
     float3 from_zero = ((s > (0.0).xxx) ? (1.1754944e-38).xxx : (-1.1754944e-38).xxx);
-    float3 moved = ((x_3 == (0.0).xxx) ? from_zero : stepped);
-    return (!((s == (0.0).xxx)) ? moved : x_3);
+    float3 moved = ((x_4 == (0.0).xxx) ? from_zero : stepped);
+    return (!((s == (0.0).xxx)) ? moved : x_4);
 }
 
-float3 offset_origin(float3 p_5, float3 n_3, float error)
+float3 offset_origin(float3 p_5, float3 n_4, float error)
 {
-    float d_3 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    float3 offset_13 = (n_3 * (d_3).xxx);
+    float d_4 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    float3 offset_13 = (n_4 * (d_4).xxx);
     const float3 _e17 = step_toward((p_5 + offset_13), offset_13);
     return _e17;
 }
 
 Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
 {
-    float3 n_4 = (float3)0;
+    float3 n_5 = (float3)0;
     float tmax_4 = (float)0;
 
-    n_4 = normal;
-    float3 _e5 = n_4;
+    n_5 = normal;
+    float3 _e5 = n_5;
     if ((dot(dir, _e5) < 0.0)) {
-        float3 _e9 = n_4;
-        n_4 = -(_e9);
+        float3 _e9 = n_5;
+        n_5 = -(_e9);
     }
     float3 a_8 = abs(position);
     float _e13 = hit_error;
     float error_3 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
-    float3 _e22 = n_4;
+    float3 _e22 = n_5;
     const float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = asfloat(_e25);
@@ -1305,8 +1384,8 @@ Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_27 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_27;
+    const Ray ray_29 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_29;
 }
 
 float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
@@ -1426,20 +1505,20 @@ LightSample sample_light_query(uint i_1, float3 position_5, float3 normal_5)
     return lightsample_7;
 }
 
-float3 gltf_radiance(float3 c_3, float metallic, float roughness, float3 emissive, Ray ray_14, Hit hit_4)
+float3 gltf_radiance(float3 c_3, float metallic, float roughness, float occlusion, float3 emissive, Ray ray_16, Hit hit_6)
 {
     float3 color = (float3)0;
     uint i_2 = (uint)0;
 
-    const float3 _e6 = shading_normal(ray_14, hit_4);
-    const float3 _e8 = normalize_vec3f(ray_14.dir);
-    float3 v_2 = -(_e8);
+    const float3 _e7 = shading_normal(ray_16, hit_6);
+    const float3 _e9 = normalize_vec3f(ray_16.dir);
+    float3 v_2 = -(_e9);
     float metal = saturate(metallic);
     float a2_ = max(pow(saturate(roughness), 4.0), 4e-6);
     float3 f0_ = lerp((0.04).xxx, c_3, (metal).xxx);
-    float ndv = max(dot(_e6, v_2), 0.0001);
+    float ndv = max(dot(_e7, v_2), 0.0001);
     color = emissive;
-    const uint _e25 = light_count_query();
+    const uint _e26 = light_count_query();
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
@@ -1447,36 +1526,36 @@ float3 gltf_radiance(float3 c_3, float metallic, float roughness, float3 emissiv
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e104 = i_2;
-            i_2 = (_e104 + 1u);
+            uint _e107 = i_2;
+            i_2 = (_e107 + 1u);
         }
         loop_init_2 = false;
-        uint _e27 = i_2;
-        if ((_e27 >= _e25)) {
+        uint _e28 = i_2;
+        if ((_e28 >= _e26)) {
             break;
         }
-        uint _e29 = i_2;
-        const LightSample _e32 = sample_light_query(_e29, hit_4.position, hit_4.geometric_normal);
-        float ndl = max(dot(_e6, _e32.dir), 0.0);
-        const float3 _e39 = normalize_vec3f((_e32.dir + v_2));
-        float ndh = max(dot(_e6, _e39), 0.0);
-        float d_4 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
-        float ggx = ((a2_ * INV_PI) / max((d_4 * d_4), 1e-8));
+        uint _e30 = i_2;
+        const LightSample _e33 = sample_light_query(_e30, hit_6.position, hit_6.geometric_normal);
+        float ndl = max(dot(_e7, _e33.dir), 0.0);
+        const float3 _e40 = normalize_vec3f((_e33.dir + v_2));
+        float ndh = max(dot(_e7, _e40), 0.0);
+        float d_5 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
+        float ggx = ((a2_ * INV_PI) / max((d_5 * d_5), 1e-8));
         float vis = (0.5 / max(((ndl * sqrt((((ndv * ndv) * (1.0 - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1.0 - a2_)) + a2_)))), 1e-8));
-        float3 fresnel = (f0_ + (((1.0).xxx - f0_) * (pow((1.0 - max(dot(v_2, _e39), 0.0)), 5.0)).xxx));
-        float3 _e87 = color;
-        color = (_e87 + ((_e32.radiance * (ndl).xxx) * (((c_3 * ((1.0 - metal)).xxx) * (INV_PI).xxx) + (fresnel * ((ggx * vis)).xxx))));
+        float3 fresnel = (f0_ + (((1.0).xxx - f0_) * (pow((1.0 - max(dot(v_2, _e40), 0.0)), 5.0)).xxx));
+        float3 _e88 = color;
+        color = (_e88 + (((_e33.radiance * (ndl).xxx) * (((c_3 * ((1.0 - metal)).xxx) * (INV_PI).xxx) + (fresnel * ((ggx * vis)).xxx))) * (occlusion).xxx));
     }
-    float3 _e107 = color;
-    return _e107;
+    float3 _e110 = color;
+    return _e110;
 }
 
-float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_15, Hit hit_5)
+float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_17, Hit hit_7)
 {
-    const float4 _e7 = sample_texture(m_1.base_texture, hit_5.uv);
+    const float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv);
     float3 c_9 = (m_1.base_color.xyz * _e7.xyz);
-    const float3 _e13 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, m_1.emissive, ray_15, hit_5);
-    return _e13;
+    const float3 _e14 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_17, hit_7);
+    return _e14;
 }
 
 GltfMaterial ConstructGltfMaterial(float4 arg0, uint arg1, float arg2, float arg3, float3 arg4) {
@@ -1505,29 +1584,29 @@ GltfMaterial load_GltfMaterial(uint offset_9)
     return gltfmaterial;
 }
 
-float3 gltf_shade(GltfMaterial m_2, Ray ray_16, Hit hit_6)
+float3 gltf_shade(GltfMaterial m_2, Ray ray_18, Hit hit_8)
 {
-    const float4 _e7 = sample_texture(m_2.base_texture, hit_6.uv);
+    const float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv);
     float3 c_10 = (m_2.base_color.xyz * _e7.xyz);
-    const float3 _e13 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, m_2.emissive, ray_16, hit_6);
-    return _e13;
+    const float3 _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_18, hit_8);
+    return _e14;
 }
 
 float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_17, Hit hit_7, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_19, Hit hit_9, float3 secondary)
 {
     switch(type_id_4) {
         case 0u: {
             const GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10);
-            const float3 _e5 = gltf_masked_shade(_e4, ray_17, hit_7);
+            const float3 _e5 = gltf_masked_shade(_e4, ray_19, hit_9);
             return _e5;
         }
         case 1u: {
             const GltfMaterial _e6 = load_GltfMaterial(offset_10);
-            const float3 _e7 = gltf_shade(_e6, ray_17, hit_7);
+            const float3 _e7 = gltf_shade(_e6, ray_19, hit_9);
             return _e7;
         }
         default: {
@@ -1537,58 +1616,58 @@ float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_17, Hit hit_
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_18, Candidate c_4)
+float3 shade_direct(Ray ray_20, Candidate c_4)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_4.slot*128+0)), asfloat(instances.Load4(c_4.slot*128+16)), asfloat(instances.Load4(c_4.slot*128+32)), asfloat(instances.Load4(c_4.slot*128+48)), asfloat(instances.Load4(c_4.slot*128+64)), asfloat(instances.Load4(c_4.slot*128+80)), asuint(instances.Load(c_4.slot*128+96)), asuint(instances.Load(c_4.slot*128+100)), asuint(instances.Load(c_4.slot*128+104)), asuint(instances.Load(c_4.slot*128+108)), asuint(instances.Load(c_4.slot*128+112)), asuint(instances.Load(c_4.slot*128+116)), asuint(instances.Load(c_4.slot*128+120)), asuint(instances.Load(c_4.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_18, c_4);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_20, c_4);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, (0.0).xxx);
     return _e11;
 }
 
-float3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_19, float t_2, float3 radiance)
+float3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_21, float t_2, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_20, float t_3, float3 radiance_1)
+float3 through_medium(Ray ray_22, float t_3, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_20.medium == 0u)) {
+    if ((ray_22.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_20.medium - 1u)*128+0)), asfloat(instances.Load4((ray_20.medium - 1u)*128+16)), asfloat(instances.Load4((ray_20.medium - 1u)*128+32)), asfloat(instances.Load4((ray_20.medium - 1u)*128+48)), asfloat(instances.Load4((ray_20.medium - 1u)*128+64)), asfloat(instances.Load4((ray_20.medium - 1u)*128+80)), asuint(instances.Load((ray_20.medium - 1u)*128+96)), asuint(instances.Load((ray_20.medium - 1u)*128+100)), asuint(instances.Load((ray_20.medium - 1u)*128+104)), asuint(instances.Load((ray_20.medium - 1u)*128+108)), asuint(instances.Load((ray_20.medium - 1u)*128+112)), asuint(instances.Load((ray_20.medium - 1u)*128+116)), asuint(instances.Load((ray_20.medium - 1u)*128+120)), asuint(instances.Load((ray_20.medium - 1u)*128+124)));
+    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_22.medium - 1u)*128+0)), asfloat(instances.Load4((ray_22.medium - 1u)*128+16)), asfloat(instances.Load4((ray_22.medium - 1u)*128+32)), asfloat(instances.Load4((ray_22.medium - 1u)*128+48)), asfloat(instances.Load4((ray_22.medium - 1u)*128+64)), asfloat(instances.Load4((ray_22.medium - 1u)*128+80)), asuint(instances.Load((ray_22.medium - 1u)*128+96)), asuint(instances.Load((ray_22.medium - 1u)*128+100)), asuint(instances.Load((ray_22.medium - 1u)*128+104)), asuint(instances.Load((ray_22.medium - 1u)*128+108)), asuint(instances.Load((ray_22.medium - 1u)*128+112)), asuint(instances.Load((ray_22.medium - 1u)*128+116)), asuint(instances.Load((ray_22.medium - 1u)*128+120)), asuint(instances.Load((ray_22.medium - 1u)*128+124)));
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_20, t_3, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_22, t_3, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_21, Hit hit_8)
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_23, Hit hit_10)
 {
     return;
 }
 
 float3 spawn_origin_at(float3 position_6, float3 normal_6, float error_1, float3 dir_2)
 {
-    float3 n_5 = (float3)0;
+    float3 n_6 = (float3)0;
 
-    n_5 = normal_6;
-    float3 _e5 = n_5;
+    n_6 = normal_6;
+    float3 _e5 = n_6;
     if ((dot(dir_2, _e5) < 0.0)) {
-        float3 _e9 = n_5;
-        n_5 = -(_e9);
+        float3 _e9 = n_6;
+        n_6 = -(_e9);
     }
-    float3 _e11 = n_5;
+    float3 _e11 = n_6;
     const float3 _e12 = offset_origin(position_6, _e11, error_1);
     return _e12;
 }
 
-float3 spawn_origin(Hit hit_9, float error_2, float3 dir_3)
+float3 spawn_origin(Hit hit_11, float error_2, float3 dir_3)
 {
-    const float3 _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_3);
+    const float3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_3);
     return _e5;
 }
 
@@ -1622,7 +1701,7 @@ float3 trace(Ray camera_ray)
     float t_4 = (float)0;
     Frame stack[4] = (Frame[4])0;
     uint depth = (uint)0;
-    Ray ray_22 = (Ray)0;
+    Ray ray_24 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     Ray s_ray = (Ray)0;
@@ -1635,7 +1714,7 @@ float3 trace(Ray camera_ray)
     bool pushed = (bool)0;
     float3 radiance_3 = (float3)0;
     float t_5 = (float)0;
-    Hit hit_10 = (Hit)0;
+    Hit hit_12 = (Hit)0;
     Frame f = (Frame)0;
     uint i_3 = (uint)0;
     uint medium = (uint)0;
@@ -1661,7 +1740,7 @@ float3 trace(Ray camera_ray)
     }
     stack = ZeroValuearray4_Frame_();
     depth = 0u;
-    ray_22 = camera_ray;
+    ray_24 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     s_ray = camera_ray;
@@ -1680,10 +1759,10 @@ float3 trace(Ray camera_ray)
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_22;
+            Ray _e67 = ray_24;
             const Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_22;
+            Ray _e70 = ray_24;
             s_ray = _e70;
             s_sum = (0.0).xxx;
             fresh = true;
@@ -1706,20 +1785,20 @@ float3 trace(Ray camera_ray)
                 uint _e95 = s_c.slot;
                 GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e95*128+0)), asfloat(instances.Load4(_e95*128+16)), asfloat(instances.Load4(_e95*128+32)), asfloat(instances.Load4(_e95*128+48)), asfloat(instances.Load4(_e95*128+64)), asfloat(instances.Load4(_e95*128+80)), asuint(instances.Load(_e95*128+96)), asuint(instances.Load(_e95*128+100)), asuint(instances.Load(_e95*128+104)), asuint(instances.Load(_e95*128+108)), asuint(instances.Load(_e95*128+112)), asuint(instances.Load(_e95*128+116)), asuint(instances.Load(_e95*128+120)), asuint(instances.Load(_e95*128+124)));
                 Hit _e99 = s_hit;
-                hit_10 = _e99;
+                hit_12 = _e99;
                 bool _e101 = fresh;
                 if (_e101) {
                     Ray _e102 = s_ray;
                     Candidate _e103 = s_c;
                     const Hit _e104 = finish_hit(_e102, _e103);
-                    hit_10 = _e104;
+                    hit_12 = _e104;
                     float _e106 = hit_error;
                     s_error = _e106;
                 } else {
                     float _e107 = s_error;
                     hit_error = _e107;
                 }
-                float _e110 = hit_10.t;
+                float _e110 = hit_12.t;
                 t_5 = _e110;
                 bool _e111 = fresh;
                 uint _e119 = s_ray.depth;
@@ -1727,16 +1806,16 @@ float3 trace(Ray camera_ray)
                 if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
                     spawn_count = 0u;
                     Ray _e131 = s_ray;
-                    Hit _e132 = hit_10;
+                    Hit _e132 = hit_12;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
                     uint _e134 = spawn_count;
-                    uint n_8 = min(min(_e134, 1u), MAX_SPAWN);
-                    if ((n_8 > 0u)) {
+                    uint n_9 = min(min(_e134, 1u), MAX_SPAWN);
+                    if ((n_9 > 0u)) {
                         Ray _e141 = s_ray;
-                        Hit _e142 = hit_10;
+                        Hit _e142 = hit_12;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_8, 0u);
+                        f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_9, 0u);
                         i_3 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
                         bool loop_init_3 = true;
@@ -1749,7 +1828,7 @@ float3 trace(Ray camera_ray)
                             }
                             loop_init_3 = false;
                             uint _e155 = i_3;
-                            if ((_e155 >= n_8)) {
+                            if ((_e155 >= n_9)) {
                                 break;
                             }
                             uint _e158 = i_3;
@@ -1772,7 +1851,7 @@ float3 trace(Ray camera_ray)
                 bool _e187 = pushed;
                 if (!(_e187)) {
                     Ray _e191 = s_ray;
-                    Hit _e192 = hit_10;
+                    Hit _e192 = hit_12;
                     float3 _e193 = s_sum;
                     const float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
                     radiance_3 = _e194;
@@ -1813,14 +1892,14 @@ float3 trace(Ray camera_ray)
             uint i_4 = stack[min(uint(min(top_1, 3u)), 3u)].next;
             stack[min(uint(min(top_1, 3u)), 3u)].next = (i_4 + 1u);
             Ray parent = stack[min(uint(min(top_1, 3u)), 3u)].ray;
-            Hit hit_13 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
+            Hit hit_15 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
             float3 dir_6 = stack[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_4, 0u)), 0u)];
             medium = parent.medium;
             float _e283 = stack[min(uint(min(top_1, 3u)), 3u)].error;
-            const float3 _e284 = spawn_origin(hit_13, _e283, dir_6);
+            const float3 _e284 = spawn_origin(hit_15, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_22 = ConstructRay(_e284, 0.0, dir_6, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_24 = ConstructRay(_e284, 0.0, dir_6, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(uint(min(top_1, 3u)), 3u)].ray;
             s_ray = _e299;
@@ -1840,9 +1919,9 @@ float3 trace(Ray camera_ray)
     return ZeroValuefloat3();
 }
 
-bool3 is_finite_vec3f(float3 x_4)
+bool3 is_finite_vec3f(float3 x_5)
 {
-    return ((asuint(x_4) & (2147483647u).xxx) < (2139095040u).xxx);
+    return ((asuint(x_5) & (2147483647u).xxx) < (2139095040u).xxx);
 }
 
 float3 finite_or_zero(float3 c_5)
@@ -1856,7 +1935,7 @@ void render_pixel(uint2 pixel_3)
     float3 sum = (float3)0;
     uint bad = (uint)0;
     uint s_1 = (uint)0;
-    Ray ray_23 = (Ray)0;
+    Ray ray_25 = (Ray)0;
 
     FrameUniforms frame_5 = frame;
     TileParams tile_2 = tile;
@@ -1882,13 +1961,13 @@ void render_pixel(uint2 pixel_3)
         uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_23 = _e23;
-        ray_23.depth = 0u;
-        ray_23.kind = RAY_CAMERA;
-        float3 _e31 = ray_23.origin;
+        ray_25 = _e23;
+        ray_25.depth = 0u;
+        ray_25.kind = RAY_CAMERA;
+        float3 _e31 = ray_25.origin;
         const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_23.medium = _e33;
-        Ray _e34 = ray_23;
+        ray_25.medium = _e33;
+        Ray _e34 = ray_25;
         const float3 _e35 = trace(_e34);
         const bool3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

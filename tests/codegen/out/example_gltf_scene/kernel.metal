@@ -125,6 +125,9 @@ struct GltfMaskedMaterial {
     char _pad4[4];
     metal::packed_float3 emissive;
     float alpha_cutoff;
+    uint blend;
+    uint double_sided;
+    char _pad8[8];
 };
 struct type_15 {
     uint inner[128];
@@ -198,7 +201,13 @@ constant float POINT_ERROR = 0.0000019073486;
 constant float GAMMA_1_ = 0.00000005960465;
 constant float GAMMA_6_ = 0.0000003576281;
 constant float GAMMA_4_ = 0.00000023841864;
+constant uint TEXTURE_WRAP_MASK = 3u;
+constant uint TEXTURE_WRAP_V_SHIFT = 2u;
+constant uint TEXTURE_NEAREST = 16u;
+constant uint TEXTURE_WRAP_MIRROR = 2u;
+constant uint TEXTURE_WRAP_CLAMP = 1u;
 constant uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
+constant uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 constant uint RGBA16F_TEXEL_WORDS = 2u;
 constant uint BLAS_STACK = 64u;
 constant uint TLAS_STACK = 64u;
@@ -398,9 +407,9 @@ Ray pinhole_ray(
     metal::float3 _e24 = normalize_vec3f(cam.look_at - cam.position);
     metal::float3 _e27 = normalize_vec3f(metal::cross(_e24, cam.up));
     metal::float3 up = metal::cross(_e27, _e24);
-    float h_1 = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
+    float h_2 = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
     float aspect = size_1.x / size_1.y;
-    metal::float3 _e48 = normalize_vec3f((_e24 + (_e27 * metal::float3((ndc.x * h_1) * aspect))) - (up * metal::float3(ndc.y * h_1)));
+    metal::float3 _e48 = normalize_vec3f((_e24 + (_e27 * metal::float3((ndc.x * h_2) * aspect))) - (up * metal::float3(ndc.y * h_2)));
     uint _e52 = F32_INF;
     return Ray {cam.position, 0.0, _e48, as_type<float>(_e52), 0u, 0u, 0u};
 }
@@ -497,9 +506,9 @@ metal::float3 hit_triangle(
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
     float t_6 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_6[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_11 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1);
+    bool hit_13 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_11 ? metal::float3(t_6, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_13 ? metal::float3(t_6, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 float point_error(
@@ -653,7 +662,9 @@ GltfMaskedMaterial load_GltfMaskedMaterial(
     uint _e53 = params[offset_2 + 9u];
     uint _e59 = params[offset_2 + 10u];
     uint _e66 = params[offset_2 + 11u];
-    return GltfMaskedMaterial {metal::float4(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17), as_type<float>(_e23)), _e30, as_type<float>(_e35), as_type<float>(_e41), {}, metal::float3(as_type<float>(_e47), as_type<float>(_e53), as_type<float>(_e59)), as_type<float>(_e66)};
+    uint _e72 = params[offset_2 + 12u];
+    uint _e77 = params[offset_2 + 13u];
+    return GltfMaskedMaterial {metal::float4(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17), as_type<float>(_e23)), _e30, as_type<float>(_e35), as_type<float>(_e41), {}, metal::float3(as_type<float>(_e47), as_type<float>(_e53), as_type<float>(_e59)), as_type<float>(_e66), _e72, _e77};
 }
 
 int naga_f2i32(float value) {
@@ -679,6 +690,20 @@ int rem_i32_(
     return by_zero_4 ? 0 : as_type<int>(as_type<uint>(a_4) - as_type<uint>(as_type<int>(as_type<uint>(divisor_4) * as_type<uint>(naga_div(a_4, divisor_4)))));
 }
 
+int wrap_texel(
+    int x_2,
+    int n_2,
+    uint mode
+) {
+    int _e3 = rem_i32_(x_2, n_2);
+    int _e5 = rem_i32_(as_type<int>(as_type<uint>(_e3) + as_type<uint>(n_2)), n_2);
+    int _e8 = rem_i32_(x_2, as_type<int>(as_type<uint>(2) * as_type<uint>(n_2)));
+    int _e14 = rem_i32_(as_type<int>(as_type<uint>(_e8) + as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_2)))), as_type<int>(as_type<uint>(2) * as_type<uint>(n_2)));
+    int mirror = (_e14 >= n_2) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_2))) - as_type<uint>(1))) - as_type<uint>(_e14)) : _e14;
+    int wrapped = (mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5;
+    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(x_2, 0), as_type<int>(as_type<uint>(n_2) - as_type<uint>(1))) : wrapped;
+}
+
 float srgb_channel(
     float c_1
 ) {
@@ -690,37 +715,32 @@ float srgb_channel(
 
 metal::float4 texel_at(
     uint t,
-    int x_2,
-    int y,
+    uint xi,
+    uint yi,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint base_1 = params[t];
     uint _e10 = params[t + 1u];
-    uint w_3 = metal::max(_e10, 1u);
-    uint _e17 = params[t + 2u];
-    uint h_2 = metal::max(_e17, 1u);
+    uint index = (yi * metal::max(_e10, 1u)) + xi;
     uint format = params[t + 3u];
-    int _e26 = rem_i32_(x_2, static_cast<int>(w_3));
-    int _e30 = rem_i32_(as_type<int>(as_type<uint>(_e26) + as_type<uint>(static_cast<int>(w_3))), static_cast<int>(w_3));
-    uint xi = static_cast<uint>(_e30);
-    int _e33 = rem_i32_(y, static_cast<int>(h_2));
-    int _e37 = rem_i32_(as_type<int>(as_type<uint>(_e33) + as_type<uint>(static_cast<int>(h_2))), static_cast<int>(h_2));
-    uint yi = static_cast<uint>(_e37);
-    uint index = (yi * w_3) + xi;
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        uint _e46 = texels[base_1 + index];
-        metal::float4 c_7 = metal::unpack_unorm4x8_to_float(_e46);
-        float _e49 = srgb_channel(c_7.x);
-        float _e51 = srgb_channel(c_7.y);
-        float _e53 = srgb_channel(c_7.z);
-        return metal::float4(_e49, _e51, _e53, c_7.w);
+        uint _e25 = texels[base_1 + index];
+        metal::float4 c_7 = metal::unpack_unorm4x8_to_float(_e25);
+        float _e28 = srgb_channel(c_7.x);
+        float _e30 = srgb_channel(c_7.y);
+        float _e32 = srgb_channel(c_7.z);
+        return metal::float4(_e28, _e30, _e32, c_7.w);
     }
-    uint _e61 = texels[base_1 + (index * RGBA16F_TEXEL_WORDS)];
-    metal::float2 rg = float2(as_type<half2>(_e61));
-    uint _e70 = texels[(base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
-    metal::float2 ba = float2(as_type<half2>(_e70));
+    if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
+        uint _e40 = texels[base_1 + index];
+        return metal::unpack_unorm4x8_to_float(_e40);
+    }
+    uint _e47 = texels[base_1 + (index * RGBA16F_TEXEL_WORDS)];
+    metal::float2 rg = float2(as_type<half2>(_e47));
+    uint _e56 = texels[(base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
+    metal::float2 ba = float2(as_type<half2>(_e56));
     return metal::float4(rg, ba);
 }
 
@@ -732,53 +752,126 @@ metal::float4 sample_texture(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e6 = params[t_1 + 1u];
-    float w_4 = static_cast<float>(metal::max(_e6, 1u));
+    int wi = static_cast<int>(metal::max(_e6, 1u));
     uint _e14 = params[t_1 + 2u];
-    float h_3 = static_cast<float>(metal::max(_e14, 1u));
-    metal::float2 p_7 = (uv * metal::float2(w_4, h_3)) - metal::float2(0.5);
+    int hi_1 = static_cast<int>(metal::max(_e14, 1u));
+    uint sampler = params[t_1 + 4u];
+    uint mu = sampler & TEXTURE_WRAP_MASK;
+    uint mv = (sampler >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK;
+    metal::float2 q_3 = uv * metal::float2(static_cast<float>(wi), static_cast<float>(hi_1));
+    metal::float2 p_7 = ((sampler & TEXTURE_NEAREST) != 0u) ? metal::floor(q_3) : (q_3 - metal::float2(0.5));
     metal::float2 f_1 = metal::floor(p_7);
     metal::float2 fr = p_7 - f_1;
-    int _e26 = i32_from_f32_(f_1.x);
-    int _e28 = i32_from_f32_(f_1.y);
-    metal::float4 _e29 = texel_at(t_1, _e26, _e28, params, texels, _buffer_sizes);
-    metal::float4 _e32 = texel_at(t_1, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), _e28, params, texels, _buffer_sizes);
-    metal::float4 a_7 = metal::mix(_e29, _e32, metal::float4(fr.x));
-    metal::float4 _e38 = texel_at(t_1, _e26, as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
-    metal::float4 _e43 = texel_at(t_1, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
-    metal::float4 b_8 = metal::mix(_e38, _e43, metal::float4(fr.x));
+    int _e47 = i32_from_f32_(f_1.x);
+    int _e49 = i32_from_f32_(f_1.y);
+    int _e50 = wrap_texel(_e47, wi, mu);
+    uint x0_ = static_cast<uint>(_e50);
+    int _e54 = wrap_texel(as_type<int>(as_type<uint>(_e47) + as_type<uint>(1)), wi, mu);
+    uint x1_ = static_cast<uint>(_e54);
+    int _e56 = wrap_texel(_e49, hi_1, mv);
+    uint y0_ = static_cast<uint>(_e56);
+    int _e60 = wrap_texel(as_type<int>(as_type<uint>(_e49) + as_type<uint>(1)), hi_1, mv);
+    uint y1_ = static_cast<uint>(_e60);
+    metal::float4 _e62 = texel_at(t_1, x0_, y0_, params, texels, _buffer_sizes);
+    metal::float4 _e63 = texel_at(t_1, x1_, y0_, params, texels, _buffer_sizes);
+    metal::float4 a_7 = metal::mix(_e62, _e63, metal::float4(fr.x));
+    metal::float4 _e67 = texel_at(t_1, x0_, y1_, params, texels, _buffer_sizes);
+    metal::float4 _e68 = texel_at(t_1, x1_, y1_, params, texels, _buffer_sizes);
+    metal::float4 b_8 = metal::mix(_e67, _e68, metal::float4(fr.x));
     return metal::mix(a_7, b_8, metal::float4(fr.y));
+}
+
+uint frame_index_query(
+    constant TileParams& tile
+) {
+    TileParams _e1 = tile;
+    return _e1.frame;
+}
+
+uint gltf_pcg(
+    uint x_3
+) {
+    uint state_1 = (x_3 * 747796405u) + 2891336453u;
+    uint word_2 = ((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u;
+    return (word_2 >> 22u) ^ word_2;
+}
+
+float gltf_coverage(
+    Ray ray_3,
+    Hit hit_1,
+    constant TileParams& tile
+) {
+    uint h_1 = {};
+    metal::uint3 o_1 = as_type<metal::uint3>(ray_3.origin);
+    metal::uint3 d_3 = as_type<metal::uint3>(ray_3.dir);
+    h_1 = ((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u);
+    uint _e20 = h_1;
+    h_1 = ((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u);
+    uint _e33 = h_1;
+    uint _e38 = frame_index_query(tile);
+    h_1 = (_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u);
+    uint _e42 = h_1;
+    uint _e43 = gltf_pcg(_e42);
+    uint _e44 = gltf_pcg(_e43);
+    h_1 = _e44;
+    uint _e45 = h_1;
+    return static_cast<float>(_e45 >> 8u) * (1.0 / 16777216.0);
+}
+
+bool gltf_counts(
+    float alpha,
+    float cutoff,
+    uint blend,
+    uint double_sided,
+    Ray ray_4,
+    Hit hit_2,
+    constant TileParams& tile
+) {
+    if ((double_sided == 0u) && !(hit_2.front_face)) {
+        return false;
+    }
+    if (blend != 0u) {
+        float _e14 = gltf_coverage(ray_4, hit_2, tile);
+        return _e14 < alpha;
+    }
+    return alpha >= cutoff;
 }
 
 bool gltf_masked_any_hit(
     GltfMaskedMaterial m,
-    Ray ray_3,
-    Hit hit_1,
+    Ray ray_5,
+    Hit hit_3,
+    constant TileParams& tile,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 _e6 = sample_texture(m.base_texture, hit_1.uv, params, texels, _buffer_sizes);
-    return (m.base_color.w * _e6.w) >= m.alpha_cutoff;
+    metal::float4 _e7 = sample_texture(m.base_texture, hit_3.uv, params, texels, _buffer_sizes);
+    float alpha_1 = m.base_color.w * _e7.w;
+    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_5, hit_3, tile);
+    return _e13;
 }
 
 bool dispatch_any_hit(
     uint type_id_1,
     uint offset_3,
-    Ray ray_4,
-    Hit hit_2,
+    Ray ray_6,
+    Hit hit_4,
+    constant TileParams& tile,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3, params, _buffer_sizes);
-    bool _e4 = gltf_masked_any_hit(_e3, ray_4, hit_2, params, texels, _buffer_sizes);
+    bool _e4 = gltf_masked_any_hit(_e3, ray_6, hit_4, tile, params, texels, _buffer_sizes);
     return _e4;
 }
 
 bool accept(
     GpuInstance inst_4,
-    Ray ray_5,
+    Ray ray_7,
     Candidate c_2,
+    constant TileParams& tile,
     device type_4 const& params,
     device type_8 const& instances,
     device type_10 const& triangles,
@@ -789,9 +882,9 @@ bool accept(
 ) {
     if ((inst_4.flags & FLAG_ANY_HIT) != 0u) {
         float shaded = hit_error;
-        Hit _e10 = finish_hit(ray_5, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
+        Hit _e10 = finish_hit(ray_7, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
         hit_error = shaded;
-        bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10, params, texels, _buffer_sizes);
+        bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10, tile, params, texels, _buffer_sizes);
         return _e14;
     }
     return true;
@@ -840,26 +933,26 @@ float slab(
 }
 
 metal::float2 children_entry(
-    GpuNode n_2,
+    GpuNode n_3,
     metal::float3 origin_3,
     metal::float3 scale_1,
-    Ray ray_6,
+    Ray ray_8,
     metal::float3 inv,
     float tmax_3,
     thread uint& F32_INF
 ) {
-    metal::uint3 lq = as_type<metal::uint3>(n_2.min);
-    metal::uint3 rq = as_type<metal::uint3>(n_2.max);
+    metal::uint3 lq = as_type<metal::uint3>(n_3.min);
+    metal::uint3 rq = as_type<metal::uint3>(n_3.max);
     metal::uint3 _e10 = node_box_lo(lq);
     metal::float3 _e11 = node_point(origin_3, scale_1, _e10);
     metal::uint3 _e12 = node_box_hi(lq);
     metal::float3 _e13 = node_point(origin_3, scale_1, _e12);
-    float _e16 = slab(_e11, _e13, ray_6.origin, inv, ray_6.tmin, tmax_3, F32_INF);
+    float _e16 = slab(_e11, _e13, ray_8.origin, inv, ray_8.tmin, tmax_3, F32_INF);
     metal::uint3 _e17 = node_box_lo(rq);
     metal::float3 _e18 = node_point(origin_3, scale_1, _e17);
     metal::uint3 _e19 = node_box_hi(rq);
     metal::float3 _e20 = node_point(origin_3, scale_1, _e19);
-    float _e23 = slab(_e18, _e20, ray_6.origin, inv, ray_6.tmin, tmax_3, F32_INF);
+    float _e23 = slab(_e18, _e20, ray_8.origin, inv, ray_8.tmin, tmax_3, F32_INF);
     return metal::float2(_e16, _e23);
 }
 
@@ -879,9 +972,10 @@ Candidate intersect_mesh(
     GpuInstance inst_5,
     uint slot_2,
     Ray world_ray,
-    Ray ray_7,
+    Ray ray_9,
     Candidate best_in,
     bool shadow,
+    constant TileParams& tile,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -900,8 +994,8 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    metal::float3 _e8 = safe_inverse(ray_7.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_7);
+    metal::float3 _e8 = safe_inverse(ray_9.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_9);
     uint base_2 = inst_5.blas_root;
     GpuNode header_1 = nodes[base_2];
     metal::float3 origin_4 = header_1.min;
@@ -936,11 +1030,11 @@ Candidate intersect_mesh(
                 uint _e41 = k;
                 uint prim = (inst_5.triangle_offset + first) + _e41;
                 float _e45 = best.t;
-                metal::float3 _e46 = hit_triangle(_e9, prim, ray_7.tmin, _e45, F32_INF, triangles, _buffer_sizes);
+                metal::float3 _e46 = hit_triangle(_e9, prim, ray_9.tmin, _e45, F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     Candidate c_8 = Candidate {_e46.x, slot_2, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e57 = accept(inst_5, world_ray, c_8, params, instances, triangles, hit_error, attributes, texels, _buffer_sizes);
+                    bool _e57 = accept(inst_5, world_ray, c_8, tile, params, instances, triangles, hit_error, attributes, texels, _buffer_sizes);
                     if (_e57) {
                         best = c_8;
                         if (shadow) {
@@ -952,19 +1046,19 @@ Candidate intersect_mesh(
             }
         } else {
             uint _e62 = child;
-            GpuNode n_6 = nodes[base_2 + _e62];
+            GpuNode n_7 = nodes[base_2 + _e62];
             float _e68 = best.t;
-            metal::float2 _e69 = children_entry(n_6, origin_4, scale_2, ray_7, _e8, _e68, F32_INF);
+            metal::float2 _e69 = children_entry(n_7, origin_4, scale_2, ray_9, _e8, _e68, F32_INF);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
             uint _e77 = F32_INF;
             if ((tl < as_type<float>(_e73)) && (tr < as_type<float>(_e77))) {
-                near = n_6.a;
-                far = n_6.b;
+                near = n_7.a;
+                far = n_7.b;
                 if ((tr < tl) != shadow) {
-                    near = n_6.b;
-                    far = n_6.a;
+                    near = n_7.b;
+                    far = n_7.a;
                 }
                 uint _e89 = sp_1;
                 if (_e89 < BLAS_STACK) {
@@ -980,12 +1074,12 @@ Candidate intersect_mesh(
             }
             uint _e105 = F32_INF;
             if (tl < as_type<float>(_e105)) {
-                child = n_6.a;
+                child = n_7.a;
                 continue;
             }
             uint _e110 = F32_INF;
             if (tr < as_type<float>(_e110)) {
-                child = n_6.b;
+                child = n_7.b;
                 continue;
             }
         }
@@ -1003,9 +1097,10 @@ Candidate intersect_mesh(
 
 Candidate intersect_object(
     uint slot_3,
-    Ray ray_8,
+    Ray ray_10,
     Candidate best_1,
     bool shadow_1,
+    constant TileParams& tile,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1019,12 +1114,12 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_7 = instances[slot_3];
-    Ray _e7 = to_object(inst_7, ray_8);
+    Ray _e7 = to_object(inst_7, ray_10);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_10, _e14, best_1, shadow_1, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
@@ -1033,6 +1128,7 @@ Candidate intersect_object(
 uint medium_at(
     metal::float3 p_4,
     uint exclude,
+    constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1079,7 +1175,7 @@ uint medium_at(
         if (slot_4 != exclude) {
             uint _e41 = F32_INF;
             Candidate _e43 = no_candidate(as_type<float>(_e41));
-            Candidate _e45 = intersect_object(slot_4, probe, _e43, false, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+            Candidate _e45 = intersect_object(slot_4, probe, _e43, false, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
             float _e50 = nearest;
             if ((_e45.slot != NO_HIT) && (_e45.t < _e50)) {
                 Hit _e53 = finish_hit(probe, _e45, instances, triangles, hit_error, attributes, _buffer_sizes);
@@ -1102,8 +1198,9 @@ metal::float3 node_frame_hi(
 }
 
 Candidate intersect_scene(
-    Ray ray_9,
+    Ray ray_11,
     bool shadow_2,
+    constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1124,21 +1221,21 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_9.tmax);
+    Candidate _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = frame;
     if (frame_2.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_9.dir);
+    metal::float3 _e16 = safe_inverse(ray_11.dir);
     uint base_3 = frame_2.tlas_root;
     GpuNode header_2 = nodes[base_3];
     metal::float3 origin_5 = header_2.min;
     metal::float3 scale_3 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_11.origin, _e16, ray_11.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
@@ -1156,7 +1253,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_9, _e55, shadow_2, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_11, _e55, shadow_2, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1166,19 +1263,19 @@ Candidate intersect_scene(
             }
         } else {
             uint _e63 = child_1;
-            GpuNode n_7 = nodes[base_3 + _e63];
+            GpuNode n_8 = nodes[base_3 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_9, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_11, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
             uint _e78 = F32_INF;
             if ((tl_1 < as_type<float>(_e74)) && (tr_1 < as_type<float>(_e78))) {
-                near_1 = n_7.a;
-                far_1 = n_7.b;
+                near_1 = n_8.a;
+                far_1 = n_8.b;
                 if (tr_1 < tl_1) {
-                    near_1 = n_7.b;
-                    far_1 = n_7.a;
+                    near_1 = n_8.b;
+                    far_1 = n_8.a;
                 }
                 uint _e89 = sp_2;
                 if (_e89 < TLAS_STACK) {
@@ -1194,12 +1291,12 @@ Candidate intersect_scene(
             }
             uint _e103 = F32_INF;
             if (tl_1 < as_type<float>(_e103)) {
-                child_1 = n_7.a;
+                child_1 = n_8.a;
                 continue;
             }
             uint _e108 = F32_INF;
             if (tr_1 < as_type<float>(_e108)) {
-                child_1 = n_7.b;
+                child_1 = n_8.b;
                 continue;
             }
         }
@@ -1234,30 +1331,30 @@ SkyGradient load_SkyGradient(
 
 metal::float3 sky_gradient(
     SkyGradient b_5,
-    Ray ray_10
+    Ray ray_12
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_10.dir);
-    float y_1 = _e3.y;
-    if (y_1 < 0.0) {
-        return metal::mix(b_5.horizon, b_5.ground, metal::float3(metal::min(-(y_1) * 4.0, 1.0)));
+    metal::float3 _e3 = normalize_vec3f(ray_12.dir);
+    float y = _e3.y;
+    if (y < 0.0) {
+        return metal::mix(b_5.horizon, b_5.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
     }
-    return metal::mix(b_5.horizon, b_5.zenith, metal::float3(metal::sqrt(y_1)));
+    return metal::mix(b_5.horizon, b_5.zenith, metal::float3(metal::sqrt(y)));
 }
 
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_5,
-    Ray ray_11,
+    Ray ray_13,
     device type_4 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_5, params, _buffer_sizes);
-    metal::float3 _e3 = sky_gradient(_e2, ray_11);
+    metal::float3 _e3 = sky_gradient(_e2, ray_13);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_12,
+    Ray ray_14,
     constant FrameUniforms& frame,
     device type_4 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1266,16 +1363,16 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_3 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_12, params, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_14, params, _buffer_sizes);
     return _e9;
 }
 
 metal::float3 shading_normal(
-    Ray ray_13,
-    Hit hit_3
+    Ray ray_15,
+    Hit hit_5
 ) {
-    metal::float3 ng = metal::faceforward(hit_3.geometric_normal, ray_13.dir, hit_3.geometric_normal);
-    return metal::faceforward(hit_3.normal, -(ng), hit_3.normal);
+    metal::float3 ng = metal::faceforward(hit_5.geometric_normal, ray_15.dir, hit_5.geometric_normal);
+    return metal::faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
 uint light_count_query(
@@ -1301,24 +1398,24 @@ DirectionalLight load_DirectionalLight(
 }
 
 metal::float3 step_toward(
-    metal::float3 x_3,
+    metal::float3 x_4,
     metal::float3 s
 ) {
-    metal::uint3 bits_1 = as_type<metal::uint3>(x_3);
-    metal::bool3 up_1 = (metal::sign(x_3) * metal::sign(s)) > metal::float3(0.0);
+    metal::uint3 bits_1 = as_type<metal::uint3>(x_4);
+    metal::bool3 up_1 = (metal::sign(x_4) * metal::sign(s)) > metal::float3(0.0);
     metal::float3 stepped = as_type<metal::float3>(metal::select(bits_1 - metal::uint3(1u), bits_1 + metal::uint3(1u), up_1));
     metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s > metal::float3(0.0));
-    metal::float3 moved = metal::select(stepped, from_zero, x_3 == metal::float3(0.0));
-    return metal::select(x_3, moved, !((s == metal::float3(0.0))));
+    metal::float3 moved = metal::select(stepped, from_zero, x_4 == metal::float3(0.0));
+    return metal::select(x_4, moved, !((s == metal::float3(0.0))));
 }
 
 metal::float3 offset_origin(
     metal::float3 p_5,
-    metal::float3 n_3,
+    metal::float3 n_4,
     float error
 ) {
-    float d_3 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
-    metal::float3 offset_13 = n_3 * metal::float3(d_3);
+    float d_4 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
+    metal::float3 offset_13 = n_4 * metal::float3(d_4);
     metal::float3 _e17 = step_toward(p_5 + offset_13, offset_13);
     return _e17;
 }
@@ -1331,18 +1428,18 @@ Ray shadow_ray(
     thread uint& F32_INF,
     thread float& hit_error
 ) {
-    metal::float3 n_4 = {};
+    metal::float3 n_5 = {};
     float tmax_4 = {};
-    n_4 = normal;
-    metal::float3 _e5 = n_4;
+    n_5 = normal;
+    metal::float3 _e5 = n_5;
     if (metal::dot(dir, _e5) < 0.0) {
-        metal::float3 _e9 = n_4;
-        n_4 = -(_e9);
+        metal::float3 _e9 = n_5;
+        n_5 = -(_e9);
     }
     metal::float3 a_8 = metal::abs(position);
     float _e13 = hit_error;
     float error_3 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_8.x, a_8.y), a_8.z));
-    metal::float3 _e22 = n_4;
+    metal::float3 _e22 = n_5;
     metal::float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = as_type<float>(_e25);
@@ -1363,6 +1460,7 @@ float shadow_query(
     metal::float3 normal_1,
     metal::float3 dir_1,
     float dist_1,
+    constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1377,7 +1475,7 @@ float shadow_query(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
-    Candidate _e6 = intersect_scene(_e4, true, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    Candidate _e6 = intersect_scene(_e4, true, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return (_e6.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
@@ -1385,6 +1483,7 @@ LightSample directional_light(
     DirectionalLight l,
     metal::float3 position_2,
     metal::float3 normal_2,
+    constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1405,7 +1504,7 @@ LightSample directional_light(
         return LightSample {metal::float3(0.0, 1.0, 0.0), as_type<float>(_e14), metal::float3(0.0), 0.0};
     }
     uint _e21 = F32_INF;
-    float _e23 = shadow_query(position_2, normal_2, dir_4, as_type<float>(_e21), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    float _e23 = shadow_query(position_2, normal_2, dir_4, as_type<float>(_e21), tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     uint _e25 = F32_INF;
     return LightSample {dir_4, as_type<float>(_e25), (l.color * metal::float3(l.intensity)) * metal::float3(_e23), 0.0};
 }
@@ -1431,6 +1530,7 @@ LightSample point_light(
     PointLight l_1,
     metal::float3 position_3,
     metal::float3 normal_3,
+    constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1453,7 +1553,7 @@ LightSample point_light(
         float _e19 = strength;
         strength = _e19 * (1.0 - metal::smoothstep(l_1.inner_range, l_1.range, dist_2));
     }
-    float _e26 = shadow_query(position_3, normal_3, dir_5, dist_2, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    float _e26 = shadow_query(position_3, normal_3, dir_5, dist_2, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     float _e28 = strength;
     return LightSample {dir_5, dist_2, (l_1.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
 }
@@ -1463,6 +1563,7 @@ LightSample dispatch_light(
     uint offset_8,
     metal::float3 position_4,
     metal::float3 normal_4,
+    constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1479,12 +1580,12 @@ LightSample dispatch_light(
     switch(type_id_3) {
         case 0u: {
             DirectionalLight _e4 = load_DirectionalLight(offset_8, params, _buffer_sizes);
-            LightSample _e5 = directional_light(_e4, position_4, normal_4, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            LightSample _e5 = directional_light(_e4, position_4, normal_4, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             PointLight _e6 = load_PointLight(offset_8, params, _buffer_sizes);
-            LightSample _e7 = point_light(_e6, position_4, normal_4, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            LightSample _e7 = point_light(_e6, position_4, normal_4, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e7;
         }
         default: {
@@ -1498,6 +1599,7 @@ LightSample sample_light_query(
     uint i_1,
     metal::float3 position_5,
     metal::float3 normal_5,
+    constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1518,7 +1620,7 @@ LightSample sample_light_query(
     uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
     uint _e22 = params[entry];
     uint _e27 = params[entry + 1u];
-    LightSample _e28 = dispatch_light(_e22, _e27, position_5, normal_5, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e28 = dispatch_light(_e22, _e27, position_5, normal_5, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e28;
 }
 
@@ -1526,9 +1628,11 @@ metal::float3 gltf_radiance(
     metal::float3 c_3,
     float metallic,
     float roughness,
+    float occlusion,
     metal::float3 emissive,
-    Ray ray_14,
-    Hit hit_4,
+    Ray ray_16,
+    Hit hit_6,
+    constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1544,15 +1648,15 @@ metal::float3 gltf_radiance(
 ) {
     metal::float3 color = {};
     uint i_2 = {};
-    metal::float3 _e6 = shading_normal(ray_14, hit_4);
-    metal::float3 _e8 = normalize_vec3f(ray_14.dir);
-    metal::float3 v_2 = -(_e8);
+    metal::float3 _e7 = shading_normal(ray_16, hit_6);
+    metal::float3 _e9 = normalize_vec3f(ray_16.dir);
+    metal::float3 v_2 = -(_e9);
     float metal_ = metal::saturate(metallic);
     float a2_ = metal::max(metal::pow(metal::saturate(roughness), 4.0), 0.000004);
     metal::float3 f0_ = metal::mix(metal::float3(0.04), c_3, metal::float3(metal_));
-    float ndv = metal::max(metal::dot(_e6, v_2), 0.0001);
+    float ndv = metal::max(metal::dot(_e7, v_2), 0.0001);
     color = emissive;
-    uint _e25 = light_count_query(frame);
+    uint _e26 = light_count_query(frame);
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
@@ -1560,34 +1664,35 @@ metal::float3 gltf_radiance(
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e104 = i_2;
-            i_2 = _e104 + 1u;
+            uint _e107 = i_2;
+            i_2 = _e107 + 1u;
         }
         loop_init_2 = false;
-        uint _e27 = i_2;
-        if (_e27 >= _e25) {
+        uint _e28 = i_2;
+        if (_e28 >= _e26) {
             break;
         }
-        uint _e29 = i_2;
-        LightSample _e32 = sample_light_query(_e29, hit_4.position, hit_4.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-        float ndl = metal::max(metal::dot(_e6, _e32.dir), 0.0);
-        metal::float3 _e39 = normalize_vec3f(_e32.dir + v_2);
-        float ndh = metal::max(metal::dot(_e6, _e39), 0.0);
-        float d_4 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
-        float ggx = (a2_ * INV_PI) / metal::max(d_4 * d_4, 0.00000001);
+        uint _e30 = i_2;
+        LightSample _e33 = sample_light_query(_e30, hit_6.position, hit_6.geometric_normal, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+        float ndl = metal::max(metal::dot(_e7, _e33.dir), 0.0);
+        metal::float3 _e40 = normalize_vec3f(_e33.dir + v_2);
+        float ndh = metal::max(metal::dot(_e7, _e40), 0.0);
+        float d_5 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
+        float ggx = (a2_ * INV_PI) / metal::max(d_5 * d_5, 0.00000001);
         float vis = 0.5 / metal::max((ndl * metal::sqrt(((ndv * ndv) * (1.0 - a2_)) + a2_)) + (ndv * metal::sqrt(((ndl * ndl) * (1.0 - a2_)) + a2_)), 0.00000001);
-        metal::float3 fresnel = f0_ + ((metal::float3(1.0) - f0_) * metal::float3(metal::pow(1.0 - metal::max(metal::dot(v_2, _e39), 0.0), 5.0)));
-        metal::float3 _e87 = color;
-        color = _e87 + ((_e32.radiance * metal::float3(ndl)) * (((c_3 * metal::float3(1.0 - metal_)) * metal::float3(INV_PI)) + (fresnel * metal::float3(ggx * vis))));
+        metal::float3 fresnel = f0_ + ((metal::float3(1.0) - f0_) * metal::float3(metal::pow(1.0 - metal::max(metal::dot(v_2, _e40), 0.0), 5.0)));
+        metal::float3 _e88 = color;
+        color = _e88 + (((_e33.radiance * metal::float3(ndl)) * (((c_3 * metal::float3(1.0 - metal_)) * metal::float3(INV_PI)) + (fresnel * metal::float3(ggx * vis)))) * metal::float3(occlusion));
     }
-    metal::float3 _e107 = color;
-    return _e107;
+    metal::float3 _e110 = color;
+    return _e110;
 }
 
 metal::float3 gltf_masked_shade(
     GltfMaskedMaterial m_1,
-    Ray ray_15,
-    Hit hit_5,
+    Ray ray_17,
+    Hit hit_7,
+    constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1601,10 +1706,10 @@ metal::float3 gltf_masked_shade(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 _e7 = sample_texture(m_1.base_texture, hit_5.uv, params, texels, _buffer_sizes);
+    metal::float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv, params, texels, _buffer_sizes);
     metal::float3 c_9 = m_1.base_color.xyz * _e7.xyz;
-    metal::float3 _e13 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, m_1.emissive, ray_15, hit_5, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-    return _e13;
+    metal::float3 _e14 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_17, hit_7, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    return _e14;
 }
 
 GltfMaterial load_GltfMaterial(
@@ -1627,8 +1732,9 @@ GltfMaterial load_GltfMaterial(
 
 metal::float3 gltf_shade(
     GltfMaterial m_2,
-    Ray ray_16,
-    Hit hit_6,
+    Ray ray_18,
+    Hit hit_8,
+    constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1642,18 +1748,19 @@ metal::float3 gltf_shade(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float4 _e7 = sample_texture(m_2.base_texture, hit_6.uv, params, texels, _buffer_sizes);
+    metal::float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv, params, texels, _buffer_sizes);
     metal::float3 c_10 = m_2.base_color.xyz * _e7.xyz;
-    metal::float3 _e13 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, m_2.emissive, ray_16, hit_6, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-    return _e13;
+    metal::float3 _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_18, hit_8, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    return _e14;
 }
 
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_10,
-    Ray ray_17,
-    Hit hit_7,
+    Ray ray_19,
+    Hit hit_9,
     metal::float3 secondary,
+    constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1670,12 +1777,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e5 = gltf_masked_shade(_e4, ray_17, hit_7, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e5 = gltf_masked_shade(_e4, ray_19, hit_9, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e7 = gltf_shade(_e6, ray_17, hit_7, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e7 = gltf_shade(_e6, ray_19, hit_9, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e7;
         }
         default: {
@@ -1686,8 +1793,9 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_18,
+    Ray ray_20,
     Candidate c_4,
+    constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1702,15 +1810,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_4.slot];
-    Hit _e6 = finish_hit(ray_18, c_4, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_20, c_4, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, metal::float3(0.0), tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_11,
-    Ray ray_19,
+    Ray ray_21,
     float t_2,
     metal::float3 radiance
 ) {
@@ -1718,7 +1826,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_20,
+    Ray ray_22,
     float t_3,
     metal::float3 radiance_1,
     device type_8 const& instances,
@@ -1727,22 +1835,22 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_20.medium == 0u) {
+    if (ray_22.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_9 = instances[ray_20.medium - 1u];
+    GpuInstance inst_9 = instances[ray_22.medium - 1u];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_20, t_3, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_22, t_3, radiance_1);
     return _e21;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_12,
-    Ray ray_21,
-    Hit hit_8
+    Ray ray_23,
+    Hit hit_10
 ) {
     return;
 }
@@ -1753,29 +1861,30 @@ metal::float3 spawn_origin_at(
     float error_1,
     metal::float3 dir_2
 ) {
-    metal::float3 n_5 = {};
-    n_5 = normal_6;
-    metal::float3 _e5 = n_5;
+    metal::float3 n_6 = {};
+    n_6 = normal_6;
+    metal::float3 _e5 = n_6;
     if (metal::dot(dir_2, _e5) < 0.0) {
-        metal::float3 _e9 = n_5;
-        n_5 = -(_e9);
+        metal::float3 _e9 = n_6;
+        n_6 = -(_e9);
     }
-    metal::float3 _e11 = n_5;
+    metal::float3 _e11 = n_6;
     metal::float3 _e12 = offset_origin(position_6, _e11, error_1);
     return _e12;
 }
 
 metal::float3 spawn_origin(
-    Hit hit_9,
+    Hit hit_11,
     float error_2,
     metal::float3 dir_3
 ) {
-    metal::float3 _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_3);
+    metal::float3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_3);
     return _e5;
 }
 
 metal::float3 trace(
     Ray camera_ray,
+    constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
@@ -1796,7 +1905,7 @@ metal::float3 trace(
     float t_4 = {};
     type_17 stack = {};
     uint depth = {};
-    Ray ray_22 = {};
+    Ray ray_24 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -1809,12 +1918,12 @@ metal::float3 trace(
     bool pushed = {};
     metal::float3 radiance_3 = {};
     float t_5 = {};
-    Hit hit_10 = {};
+    Hit hit_12 = {};
     Frame f = {};
     uint i_3 = {};
     uint medium = {};
     if (!(HAS_SECONDARY_RAYS)) {
-        Candidate _e4 = intersect_scene(camera_ray, false, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+        Candidate _e4 = intersect_scene(camera_ray, false, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
         radiance_2 = metal::float3(0.0);
         uint _e9 = F32_INF;
         t_4 = as_type<float>(_e9);
@@ -1823,7 +1932,7 @@ metal::float3 trace(
             metal::float3 _e17 = miss(camera_ray, frame, params, _buffer_sizes);
             radiance_2 = _e17;
         } else {
-            metal::float3 _e18 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e18 = shade_direct(camera_ray, _e4, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             radiance_2 = _e18;
             t_4 = _e4.t;
         }
@@ -1834,7 +1943,7 @@ metal::float3 trace(
     }
     stack = type_17 {};
     depth = 0u;
-    ray_22 = camera_ray;
+    ray_24 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1853,10 +1962,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_22;
-            Candidate _e69 = intersect_scene(_e67, false, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            Ray _e67 = ray_24;
+            Candidate _e69 = intersect_scene(_e67, false, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_22;
+            Ray _e70 = ray_24;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -1879,20 +1988,20 @@ metal::float3 trace(
                 uint _e95 = s_c.slot;
                 GpuInstance inst_10 = instances[_e95];
                 Hit _e99 = s_hit;
-                hit_10 = _e99;
+                hit_12 = _e99;
                 bool _e101 = fresh;
                 if (_e101) {
                     Ray _e102 = s_ray;
                     Candidate _e103 = s_c;
                     Hit _e104 = finish_hit(_e102, _e103, instances, triangles, hit_error, attributes, _buffer_sizes);
-                    hit_10 = _e104;
+                    hit_12 = _e104;
                     float _e106 = hit_error;
                     s_error = _e106;
                 } else {
                     float _e107 = s_error;
                     hit_error = _e107;
                 }
-                float _e110 = hit_10.t;
+                float _e110 = hit_12.t;
                 t_5 = _e110;
                 bool _e111 = fresh;
                 uint _e119 = s_ray.depth;
@@ -1900,16 +2009,16 @@ metal::float3 trace(
                 if (((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
                     spawn_count = 0u;
                     Ray _e131 = s_ray;
-                    Hit _e132 = hit_10;
+                    Hit _e132 = hit_12;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
                     uint _e134 = spawn_count;
-                    uint n_8 = metal::min(metal::min(_e134, 1u), MAX_SPAWN);
-                    if (n_8 > 0u) {
+                    uint n_9 = metal::min(metal::min(_e134, 1u), MAX_SPAWN);
+                    if (n_9 > 0u) {
                         Ray _e141 = s_ray;
-                        Hit _e142 = hit_10;
+                        Hit _e142 = hit_12;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_8, 0u};
+                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_9, 0u};
                         i_3 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u);
                         bool loop_init_3 = true;
@@ -1922,7 +2031,7 @@ metal::float3 trace(
                             }
                             loop_init_3 = false;
                             uint _e155 = i_3;
-                            if (_e155 >= n_8) {
+                            if (_e155 >= n_9) {
                                 break;
                             }
                             uint _e158 = i_3;
@@ -1945,9 +2054,9 @@ metal::float3 trace(
                 bool _e187 = pushed;
                 if (!(_e187)) {
                     Ray _e191 = s_ray;
-                    Hit _e192 = hit_10;
+                    Hit _e192 = hit_12;
                     metal::float3 _e193 = s_sum;
-                    metal::float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+                    metal::float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
                     radiance_3 = _e194;
                 }
             }
@@ -1986,14 +2095,14 @@ metal::float3 trace(
             uint i_4 = stack.inner[metal::min(top_1, 3u)].next;
             stack.inner[metal::min(top_1, 3u)].next = i_4 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 3u)].ray;
-            Hit hit_12 = stack.inner[metal::min(top_1, 3u)].hit;
+            Hit hit_14 = stack.inner[metal::min(top_1, 3u)].hit;
             metal::float3 dir_6 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_4, 0u)];
             medium = parent.medium;
             float _e283 = stack.inner[metal::min(top_1, 3u)].error;
-            metal::float3 _e284 = spawn_origin(hit_12, _e283, dir_6);
+            metal::float3 _e284 = spawn_origin(hit_14, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_22 = Ray {_e284, 0.0, dir_6, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_24 = Ray {_e284, 0.0, dir_6, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -2014,9 +2123,9 @@ metal::float3 trace(
 }
 
 metal::bool3 is_finite_vec3f(
-    metal::float3 x_4
+    metal::float3 x_5
 ) {
-    return (as_type<metal::uint3>(x_4) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+    return (as_type<metal::uint3>(x_5) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
 }
 
 metal::float3 finite_or_zero(
@@ -2051,7 +2160,7 @@ void render_pixel(
     metal::float3 sum = {};
     uint bad = {};
     uint s_1 = {};
-    Ray ray_23 = {};
+    Ray ray_25 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_2 = tile;
     sum = metal::float3(0.0);
@@ -2076,14 +2185,14 @@ void render_pixel(
         uint sample_3 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
-        ray_23 = _e23;
-        ray_23.depth = 0u;
-        ray_23.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_23.origin;
-        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
-        ray_23.medium = _e33;
-        Ray _e34 = ray_23;
-        metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        ray_25 = _e23;
+        ray_25.depth = 0u;
+        ray_25.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_25.origin;
+        uint _e33 = medium_at(_e31, NO_HIT, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+        ray_25.medium = _e33;
+        Ray _e34 = ray_25;
+        metal::float3 _e35 = trace(_e34, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {
             metal::float3 _e38 = sum;

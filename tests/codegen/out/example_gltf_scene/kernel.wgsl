@@ -105,6 +105,8 @@ struct GltfMaskedMaterial {
     roughness: f32,
     emissive: vec3<f32>,
     alpha_cutoff: f32,
+    blend: u32,
+    double_sided: u32,
 }
 
 struct SkyGradient {
@@ -171,7 +173,13 @@ const POINT_ERROR: f32 = 0.0000019073486f;
 const GAMMA_1_: f32 = 0.00000005960465f;
 const GAMMA_6_: f32 = 0.0000003576281f;
 const GAMMA_4_: f32 = 0.00000023841864f;
+const TEXTURE_WRAP_MASK: u32 = 3u;
+const TEXTURE_WRAP_V_SHIFT: u32 = 2u;
+const TEXTURE_NEAREST: u32 = 16u;
+const TEXTURE_WRAP_MIRROR: u32 = 2u;
+const TEXTURE_WRAP_CLAMP: u32 = 1u;
 const TEXTURE_FORMAT_RGBA8_SRGB: u32 = 0u;
+const TEXTURE_FORMAT_RGBA8_UNORM: u32 = 2u;
 const RGBA16F_TEXEL_WORDS: u32 = 2u;
 const BLAS_STACK: u32 = 64u;
 const TLAS_STACK: u32 = 64u;
@@ -342,9 +350,9 @@ fn pinhole_ray(cam: Pinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
     let _e24 = normalize_vec3f((cam.look_at - cam.position));
     let _e27 = normalize_vec3f(cross(_e24, cam.up));
     let up = cross(_e27, _e24);
-    let h_1 = tan((radians(cam.fov) * 0.5f));
+    let h_2 = tan((radians(cam.fov) * 0.5f));
     let aspect = (size_1.x / size_1.y);
-    let _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
+    let _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_2) * aspect)))) - (up * vec3((ndc.y * h_2)))));
     let _e52 = F32_INF;
     return Ray(cam.position, 0f, _e48, bitcast<f32>(_e52), 0u, 0u, 0u);
 }
@@ -414,9 +422,9 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
     let t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
-    let hit_11 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
+    let hit_13 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_6, (v_1 * rcp), (w * rcp)), hit_11);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_6, (v_1 * rcp), (w * rcp)), hit_13);
 }
 
 fn point_error(origin: vec3<f32>, along: vec3<f32>) -> f32 {
@@ -539,7 +547,9 @@ fn load_GltfMaskedMaterial(offset_2: u32) -> GltfMaskedMaterial {
     let _e53 = params[(offset_2 + 9u)];
     let _e59 = params[(offset_2 + 10u)];
     let _e66 = params[(offset_2 + 11u)];
-    return GltfMaskedMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), vec3<f32>(bitcast<f32>(_e47), bitcast<f32>(_e53), bitcast<f32>(_e59)), bitcast<f32>(_e66));
+    let _e72 = params[(offset_2 + 12u)];
+    let _e77 = params[(offset_2 + 13u)];
+    return GltfMaskedMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), vec3<f32>(bitcast<f32>(_e47), bitcast<f32>(_e53), bitcast<f32>(_e59)), bitcast<f32>(_e66), _e72, _e77);
 }
 
 fn i32_from_f32_(x_1: f32) -> i32 {
@@ -552,6 +562,16 @@ fn rem_i32_(a_4: i32, b_4: i32) -> i32 {
     return select((a_4 - (divisor_4 * (a_4 / divisor_4))), 0i, by_zero_4);
 }
 
+fn wrap_texel(x_2: i32, n_2: i32, mode: u32) -> i32 {
+    let _e3 = rem_i32_(x_2, n_2);
+    let _e5 = rem_i32_((_e3 + n_2), n_2);
+    let _e8 = rem_i32_(x_2, (2i * n_2));
+    let _e14 = rem_i32_((_e8 + (2i * n_2)), (2i * n_2));
+    let mirror = select(_e14, (((2i * n_2) - 1i) - _e14), (_e14 >= n_2));
+    let wrapped = select(_e5, mirror, (mode == TEXTURE_WRAP_MIRROR));
+    return select(wrapped, min(max(x_2, 0i), (n_2 - 1i)), (mode == TEXTURE_WRAP_CLAMP));
+}
+
 fn srgb_channel(c_1: f32) -> f32 {
     if (c_1 <= 0.04045f) {
         return (c_1 / 12.92f);
@@ -559,71 +579,121 @@ fn srgb_channel(c_1: f32) -> f32 {
     return pow(((c_1 + 0.055f) / 1.055f), 2.4f);
 }
 
-fn texel_at(t: u32, x_2: i32, y: i32) -> vec4<f32> {
+fn texel_at(t: u32, xi: u32, yi: u32) -> vec4<f32> {
     let base_1 = params[t];
     let _e10 = params[(t + 1u)];
-    let w_3 = max(_e10, 1u);
-    let _e17 = params[(t + 2u)];
-    let h_2 = max(_e17, 1u);
+    let index = ((yi * max(_e10, 1u)) + xi);
     let format = params[(t + 3u)];
-    let _e26 = rem_i32_(x_2, i32(w_3));
-    let _e30 = rem_i32_((_e26 + i32(w_3)), i32(w_3));
-    let xi = u32(_e30);
-    let _e33 = rem_i32_(y, i32(h_2));
-    let _e37 = rem_i32_((_e33 + i32(h_2)), i32(h_2));
-    let yi = u32(_e37);
-    let index = ((yi * w_3) + xi);
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        let _e46 = texels[(base_1 + index)];
-        let c_7 = unpack4x8unorm(_e46);
-        let _e49 = srgb_channel(c_7.x);
-        let _e51 = srgb_channel(c_7.y);
-        let _e53 = srgb_channel(c_7.z);
-        return vec4<f32>(_e49, _e51, _e53, c_7.w);
+        let _e25 = texels[(base_1 + index)];
+        let c_7 = unpack4x8unorm(_e25);
+        let _e28 = srgb_channel(c_7.x);
+        let _e30 = srgb_channel(c_7.y);
+        let _e32 = srgb_channel(c_7.z);
+        return vec4<f32>(_e28, _e30, _e32, c_7.w);
     }
-    let _e61 = texels[(base_1 + (index * RGBA16F_TEXEL_WORDS))];
-    let rg = unpack2x16float(_e61);
-    let _e70 = texels[((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
-    let ba = unpack2x16float(_e70);
+    if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
+        let _e40 = texels[(base_1 + index)];
+        return unpack4x8unorm(_e40);
+    }
+    let _e47 = texels[(base_1 + (index * RGBA16F_TEXEL_WORDS))];
+    let rg = unpack2x16float(_e47);
+    let _e56 = texels[((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
+    let ba = unpack2x16float(_e56);
     return vec4<f32>(rg, ba);
 }
 
 fn sample_texture(t_1: u32, uv: vec2<f32>) -> vec4<f32> {
     let _e6 = params[(t_1 + 1u)];
-    let w_4 = f32(max(_e6, 1u));
+    let wi = i32(max(_e6, 1u));
     let _e14 = params[(t_1 + 2u)];
-    let h_3 = f32(max(_e14, 1u));
-    let p_7 = ((uv * vec2<f32>(w_4, h_3)) - vec2(0.5f));
+    let hi_1 = i32(max(_e14, 1u));
+    let sampler_ = params[(t_1 + 4u)];
+    let mu = (sampler_ & TEXTURE_WRAP_MASK);
+    let mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
+    let q_3 = (uv * vec2<f32>(f32(wi), f32(hi_1)));
+    let p_7 = select((q_3 - vec2(0.5f)), floor(q_3), ((sampler_ & TEXTURE_NEAREST) != 0u));
     let f_1 = floor(p_7);
     let fr = (p_7 - f_1);
-    let _e26 = i32_from_f32_(f_1.x);
-    let _e28 = i32_from_f32_(f_1.y);
-    let _e29 = texel_at(t_1, _e26, _e28);
-    let _e32 = texel_at(t_1, (_e26 + 1i), _e28);
-    let a_7 = mix(_e29, _e32, vec4(fr.x));
-    let _e38 = texel_at(t_1, _e26, (_e28 + 1i));
-    let _e43 = texel_at(t_1, (_e26 + 1i), (_e28 + 1i));
-    let b_8 = mix(_e38, _e43, vec4(fr.x));
+    let _e47 = i32_from_f32_(f_1.x);
+    let _e49 = i32_from_f32_(f_1.y);
+    let _e50 = wrap_texel(_e47, wi, mu);
+    let x0_ = u32(_e50);
+    let _e54 = wrap_texel((_e47 + 1i), wi, mu);
+    let x1_ = u32(_e54);
+    let _e56 = wrap_texel(_e49, hi_1, mv);
+    let y0_ = u32(_e56);
+    let _e60 = wrap_texel((_e49 + 1i), hi_1, mv);
+    let y1_ = u32(_e60);
+    let _e62 = texel_at(t_1, x0_, y0_);
+    let _e63 = texel_at(t_1, x1_, y0_);
+    let a_7 = mix(_e62, _e63, vec4(fr.x));
+    let _e67 = texel_at(t_1, x0_, y1_);
+    let _e68 = texel_at(t_1, x1_, y1_);
+    let b_8 = mix(_e67, _e68, vec4(fr.x));
     return mix(a_7, b_8, vec4(fr.y));
 }
 
-fn gltf_masked_any_hit(m: GltfMaskedMaterial, ray_3: Ray, hit_1: Hit) -> bool {
-    let _e6 = sample_texture(m.base_texture, hit_1.uv);
-    return ((m.base_color.w * _e6.w) >= m.alpha_cutoff);
+fn frame_index_query() -> u32 {
+    let _e1 = tile;
+    return _e1.frame;
 }
 
-fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_4: Ray, hit_2: Hit) -> bool {
+fn gltf_pcg(x_3: u32) -> u32 {
+    let state_1 = ((x_3 * 747796405u) + 2891336453u);
+    let word_2 = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
+    return ((word_2 >> 22u) ^ word_2);
+}
+
+fn gltf_coverage(ray_3: Ray, hit_1: Hit) -> f32 {
+    var h_1: u32;
+
+    let o_1 = bitcast<vec3<u32>>(ray_3.origin);
+    let d_3 = bitcast<vec3<u32>>(ray_3.dir);
+    h_1 = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u));
+    let _e20 = h_1;
+    h_1 = (((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
+    let _e33 = h_1;
+    let _e38 = frame_index_query();
+    h_1 = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
+    let _e42 = h_1;
+    let _e43 = gltf_pcg(_e42);
+    let _e44 = gltf_pcg(_e43);
+    h_1 = _e44;
+    let _e45 = h_1;
+    return (f32((_e45 >> 8u)) * (1f / 16777216f));
+}
+
+fn gltf_counts(alpha: f32, cutoff: f32, blend: u32, double_sided: u32, ray_4: Ray, hit_2: Hit) -> bool {
+    if ((double_sided == 0u) && !(hit_2.front_face)) {
+        return false;
+    }
+    if (blend != 0u) {
+        let _e14 = gltf_coverage(ray_4, hit_2);
+        return (_e14 < alpha);
+    }
+    return (alpha >= cutoff);
+}
+
+fn gltf_masked_any_hit(m: GltfMaskedMaterial, ray_5: Ray, hit_3: Hit) -> bool {
+    let _e7 = sample_texture(m.base_texture, hit_3.uv);
+    let alpha_1 = (m.base_color.w * _e7.w);
+    let _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_5, hit_3);
+    return _e13;
+}
+
+fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_6: Ray, hit_4: Hit) -> bool {
     let _e3 = load_GltfMaskedMaterial(offset_3);
-    let _e4 = gltf_masked_any_hit(_e3, ray_4, hit_2);
+    let _e4 = gltf_masked_any_hit(_e3, ray_6, hit_4);
     return _e4;
 }
 
-fn accept(inst_4: GpuInstance, ray_5: Ray, c_2: Candidate) -> bool {
+fn accept(inst_4: GpuInstance, ray_7: Ray, c_2: Candidate) -> bool {
     if ((inst_4.flags & FLAG_ANY_HIT) != 0u) {
         let shaded = hit_error;
-        let _e10 = finish_hit(ray_5, c_2);
+        let _e10 = finish_hit(ray_7, c_2);
         hit_error = shaded;
-        let _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
+        let _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10);
         return _e14;
     }
     return true;
@@ -655,19 +725,19 @@ fn slab(lo: vec3<f32>, hi: vec3<f32>, origin_2: vec3<f32>, inv_dir: vec3<f32>, t
     return bitcast<f32>(_e30);
 }
 
-fn children_entry(n_2: GpuNode, origin_3: vec3<f32>, scale_1: vec3<f32>, ray_6: Ray, inv: vec3<f32>, tmax_3: f32) -> vec2<f32> {
-    let lq = bitcast<vec3<u32>>(n_2.min);
-    let rq = bitcast<vec3<u32>>(n_2.max);
+fn children_entry(n_3: GpuNode, origin_3: vec3<f32>, scale_1: vec3<f32>, ray_8: Ray, inv: vec3<f32>, tmax_3: f32) -> vec2<f32> {
+    let lq = bitcast<vec3<u32>>(n_3.min);
+    let rq = bitcast<vec3<u32>>(n_3.max);
     let _e10 = node_box_lo(lq);
     let _e11 = node_point(origin_3, scale_1, _e10);
     let _e12 = node_box_hi(lq);
     let _e13 = node_point(origin_3, scale_1, _e12);
-    let _e16 = slab(_e11, _e13, ray_6.origin, inv, ray_6.tmin, tmax_3);
+    let _e16 = slab(_e11, _e13, ray_8.origin, inv, ray_8.tmin, tmax_3);
     let _e17 = node_box_lo(rq);
     let _e18 = node_point(origin_3, scale_1, _e17);
     let _e19 = node_box_hi(rq);
     let _e20 = node_point(origin_3, scale_1, _e19);
-    let _e23 = slab(_e18, _e20, ray_6.origin, inv, ray_6.tmin, tmax_3);
+    let _e23 = slab(_e18, _e20, ray_8.origin, inv, ray_8.tmin, tmax_3);
     return vec2<f32>(_e16, _e23);
 }
 
@@ -679,7 +749,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_9: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -688,8 +758,8 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e8 = safe_inverse(ray_7.dir);
-    let _e9 = prepare_triangle_ray(ray_7);
+    let _e8 = safe_inverse(ray_9.dir);
+    let _e9 = prepare_triangle_ray(ray_9);
     let base_2 = inst_5.blas_root;
     let header_1 = nodes[base_2];
     let origin_4 = header_1.min;
@@ -712,7 +782,7 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, 
                 let _e41 = k;
                 let prim = ((inst_5.triangle_offset + first) + _e41);
                 let _e45 = best.t;
-                let _e46 = hit_triangle(_e9, prim, ray_7.tmin, _e45);
+                let _e46 = hit_triangle(_e9, prim, ray_9.tmin, _e45);
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
                     let c_8 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0f));
@@ -732,19 +802,19 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, 
             }
         } else {
             let _e62 = child;
-            let n_6 = nodes[(base_2 + _e62)];
+            let n_7 = nodes[(base_2 + _e62)];
             let _e68 = best.t;
-            let _e69 = children_entry(n_6, origin_4, scale_2, ray_7, _e8, _e68);
+            let _e69 = children_entry(n_7, origin_4, scale_2, ray_9, _e8, _e68);
             let tl = _e69.x;
             let tr = _e69.y;
             let _e73 = F32_INF;
             let _e77 = F32_INF;
             if ((tl < bitcast<f32>(_e73)) && (tr < bitcast<f32>(_e77))) {
-                near = n_6.a;
-                far = n_6.b;
+                near = n_7.a;
+                far = n_7.b;
                 if ((tr < tl) != shadow) {
-                    near = n_6.b;
-                    far = n_6.a;
+                    near = n_7.b;
+                    far = n_7.a;
                 }
                 let _e89 = sp_1;
                 if (_e89 < BLAS_STACK) {
@@ -760,12 +830,12 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, 
             }
             let _e105 = F32_INF;
             if (tl < bitcast<f32>(_e105)) {
-                child = n_6.a;
+                child = n_7.a;
                 continue;
             }
             let _e110 = F32_INF;
             if (tr < bitcast<f32>(_e110)) {
-                child = n_6.b;
+                child = n_7.b;
                 continue;
             }
         }
@@ -781,16 +851,16 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_7: Ray, 
     return _e122;
 }
 
-fn intersect_object(slot_3: u32, ray_8: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_3: u32, ray_10: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
     let inst_7 = instances[slot_3];
-    let _e7 = to_object(inst_7, ray_8);
+    let _e7 = to_object(inst_7, ray_10);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_7, slot_3, ray_10, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -847,7 +917,7 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     return _e5;
 }
 
-fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -856,21 +926,21 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_9.tmax);
+    let _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
     let frame_2 = frame;
     if (frame_2.instance_count == 0u) {
         let _e14 = best_2;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_9.dir);
+    let _e16 = safe_inverse(ray_11.dir);
     let base_3 = frame_2.tlas_root;
     let header_2 = nodes[base_3];
     let origin_5 = header_2.min;
     let scale_3 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
+    let _e28 = slab(origin_5, _e23, ray_11.origin, _e16, ray_11.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
@@ -885,7 +955,7 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e52 = child_1;
                 let _e55 = best_2;
-                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_9, _e55, shadow_2);
+                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_11, _e55, shadow_2);
                 best_2 = _e56;
                 let _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -895,19 +965,19 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
             }
         } else {
             let _e63 = child_1;
-            let n_7 = nodes[(base_3 + _e63)];
+            let n_8 = nodes[(base_3 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_7, origin_5, scale_3, ray_9, _e16, _e69);
+            let _e70 = children_entry(n_8, origin_5, scale_3, ray_11, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
             let _e78 = F32_INF;
             if ((tl_1 < bitcast<f32>(_e74)) && (tr_1 < bitcast<f32>(_e78))) {
-                near_1 = n_7.a;
-                far_1 = n_7.b;
+                near_1 = n_8.a;
+                far_1 = n_8.b;
                 if (tr_1 < tl_1) {
-                    near_1 = n_7.b;
-                    far_1 = n_7.a;
+                    near_1 = n_8.b;
+                    far_1 = n_8.a;
                 }
                 let _e89 = sp_2;
                 if (_e89 < TLAS_STACK) {
@@ -923,12 +993,12 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
             }
             let _e103 = F32_INF;
             if (tl_1 < bitcast<f32>(_e103)) {
-                child_1 = n_7.a;
+                child_1 = n_8.a;
                 continue;
             }
             let _e108 = F32_INF;
             if (tr_1 < bitcast<f32>(_e108)) {
-                child_1 = n_7.b;
+                child_1 = n_8.b;
                 continue;
             }
         }
@@ -957,33 +1027,33 @@ fn load_SkyGradient(offset_4: u32) -> SkyGradient {
     return SkyGradient(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)));
 }
 
-fn sky_gradient(b_5: SkyGradient, ray_10: Ray) -> vec3<f32> {
-    let _e3 = normalize_vec3f(ray_10.dir);
-    let y_1 = _e3.y;
-    if (y_1 < 0f) {
-        return mix(b_5.horizon, b_5.ground, vec3(min((-(y_1) * 4f), 1f)));
+fn sky_gradient(b_5: SkyGradient, ray_12: Ray) -> vec3<f32> {
+    let _e3 = normalize_vec3f(ray_12.dir);
+    let y = _e3.y;
+    if (y < 0f) {
+        return mix(b_5.horizon, b_5.ground, vec3(min((-(y) * 4f), 1f)));
     }
-    return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y_1)));
+    return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y)));
 }
 
-fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_11: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_13: Ray) -> vec3<f32> {
     let _e2 = load_SkyGradient(offset_5);
-    let _e3 = sky_gradient(_e2, ray_11);
+    let _e3 = sky_gradient(_e2, ray_13);
     return _e3;
 }
 
-fn miss(ray_12: Ray) -> vec3<f32> {
+fn miss(ray_14: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_3 = frame;
-    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_12);
+    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_14);
     return _e9;
 }
 
-fn shading_normal(ray_13: Ray, hit_3: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_3.geometric_normal, ray_13.dir, hit_3.geometric_normal);
-    return faceForward(hit_3.normal, -(ng), hit_3.normal);
+fn shading_normal(ray_15: Ray, hit_5: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_5.geometric_normal, ray_15.dir, hit_5.geometric_normal);
+    return faceForward(hit_5.normal, -(ng), hit_5.normal);
 }
 
 fn light_count_query() -> u32 {
@@ -1002,36 +1072,36 @@ fn load_DirectionalLight(offset_6: u32) -> DirectionalLight {
     return DirectionalLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43));
 }
 
-fn step_toward(x_3: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
-    let bits_1 = bitcast<vec3<u32>>(x_3);
-    let up_1 = ((sign(x_3) * sign(s)) > vec3(0f));
+fn step_toward(x_4: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
+    let bits_1 = bitcast<vec3<u32>>(x_4);
+    let up_1 = ((sign(x_4) * sign(s)) > vec3(0f));
     let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
     let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s > vec3(0f)));
-    let moved = select(stepped, from_zero, (x_3 == vec3(0f)));
-    return select(x_3, moved, !((s == vec3(0f))));
+    let moved = select(stepped, from_zero, (x_4 == vec3(0f)));
+    return select(x_4, moved, !((s == vec3(0f))));
 }
 
-fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_3 = ((2f * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    let offset_13 = (n_3 * vec3(d_3));
+fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
+    let d_4 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    let offset_13 = (n_4 * vec3(d_4));
     let _e17 = step_toward((p_5 + offset_13), offset_13);
     return _e17;
 }
 
 fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> Ray {
-    var n_4: vec3<f32>;
+    var n_5: vec3<f32>;
     var tmax_4: f32;
 
-    n_4 = normal;
-    let _e5 = n_4;
+    n_5 = normal;
+    let _e5 = n_5;
     if (dot(dir, _e5) < 0f) {
-        let _e9 = n_4;
-        n_4 = -(_e9);
+        let _e9 = n_5;
+        n_5 = -(_e9);
     }
     let a_8 = abs(position);
     let _e13 = hit_error;
     let error_3 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
-    let _e22 = n_4;
+    let _e22 = n_5;
     let _e23 = offset_origin(position, _e22, error_3);
     let _e25 = F32_INF;
     tmax_4 = bitcast<f32>(_e25);
@@ -1125,50 +1195,50 @@ fn sample_light_query(i_1: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> L
     return _e28;
 }
 
-fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, emissive: vec3<f32>, ray_14: Ray, hit_4: Hit) -> vec3<f32> {
+fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, occlusion: f32, emissive: vec3<f32>, ray_16: Ray, hit_6: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_2: u32;
 
-    let _e6 = shading_normal(ray_14, hit_4);
-    let _e8 = normalize_vec3f(ray_14.dir);
-    let v_2 = -(_e8);
+    let _e7 = shading_normal(ray_16, hit_6);
+    let _e9 = normalize_vec3f(ray_16.dir);
+    let v_2 = -(_e9);
     let metal = saturate(metallic);
     let a2_ = max(pow(saturate(roughness), 4f), 0.000004f);
     let f0_ = mix(vec3(0.04f), c_3, vec3(metal));
-    let ndv = max(dot(_e6, v_2), 0.0001f);
+    let ndv = max(dot(_e7, v_2), 0.0001f);
     color = emissive;
-    let _e25 = light_count_query();
+    let _e26 = light_count_query();
     i_2 = 0u;
     loop {
-        let _e27 = i_2;
-        if (_e27 >= _e25) {
+        let _e28 = i_2;
+        if (_e28 >= _e26) {
             break;
         }
-        let _e29 = i_2;
-        let _e32 = sample_light_query(_e29, hit_4.position, hit_4.geometric_normal);
-        let ndl = max(dot(_e6, _e32.dir), 0f);
-        let _e39 = normalize_vec3f((_e32.dir + v_2));
-        let ndh = max(dot(_e6, _e39), 0f);
-        let d_4 = (((ndh * ndh) * (a2_ - 1f)) + 1f);
-        let ggx = ((a2_ * INV_PI) / max((d_4 * d_4), 0.00000001f));
+        let _e30 = i_2;
+        let _e33 = sample_light_query(_e30, hit_6.position, hit_6.geometric_normal);
+        let ndl = max(dot(_e7, _e33.dir), 0f);
+        let _e40 = normalize_vec3f((_e33.dir + v_2));
+        let ndh = max(dot(_e7, _e40), 0f);
+        let d_5 = (((ndh * ndh) * (a2_ - 1f)) + 1f);
+        let ggx = ((a2_ * INV_PI) / max((d_5 * d_5), 0.00000001f));
         let vis = (0.5f / max(((ndl * sqrt((((ndv * ndv) * (1f - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1f - a2_)) + a2_)))), 0.00000001f));
-        let fresnel = (f0_ + ((vec3(1f) - f0_) * vec3(pow((1f - max(dot(v_2, _e39), 0f)), 5f))));
-        let _e87 = color;
-        color = (_e87 + ((_e32.radiance * vec3(ndl)) * (((c_3 * vec3((1f - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))));
+        let fresnel = (f0_ + ((vec3(1f) - f0_) * vec3(pow((1f - max(dot(v_2, _e40), 0f)), 5f))));
+        let _e88 = color;
+        color = (_e88 + (((_e33.radiance * vec3(ndl)) * (((c_3 * vec3((1f - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))) * vec3(occlusion)));
         continuing {
-            let _e104 = i_2;
-            i_2 = (_e104 + 1u);
+            let _e107 = i_2;
+            i_2 = (_e107 + 1u);
         }
     }
-    let _e107 = color;
-    return _e107;
+    let _e110 = color;
+    return _e110;
 }
 
-fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_15: Ray, hit_5: Hit) -> vec3<f32> {
-    let _e7 = sample_texture(m_1.base_texture, hit_5.uv);
+fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_17: Ray, hit_7: Hit) -> vec3<f32> {
+    let _e7 = sample_texture(m_1.base_texture, hit_7.uv);
     let c_9 = (m_1.base_color.xyz * _e7.xyz);
-    let _e13 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, m_1.emissive, ray_15, hit_5);
-    return _e13;
+    let _e14 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, 1f, m_1.emissive, ray_17, hit_7);
+    return _e14;
 }
 
 fn load_GltfMaterial(offset_9: u32) -> GltfMaterial {
@@ -1185,23 +1255,23 @@ fn load_GltfMaterial(offset_9: u32) -> GltfMaterial {
     return GltfMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), vec3<f32>(bitcast<f32>(_e47), bitcast<f32>(_e53), bitcast<f32>(_e59)));
 }
 
-fn gltf_shade(m_2: GltfMaterial, ray_16: Ray, hit_6: Hit) -> vec3<f32> {
-    let _e7 = sample_texture(m_2.base_texture, hit_6.uv);
+fn gltf_shade(m_2: GltfMaterial, ray_18: Ray, hit_8: Hit) -> vec3<f32> {
+    let _e7 = sample_texture(m_2.base_texture, hit_8.uv);
     let c_10 = (m_2.base_color.xyz * _e7.xyz);
-    let _e13 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, m_2.emissive, ray_16, hit_6);
-    return _e13;
+    let _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1f, m_2.emissive, ray_18, hit_8);
+    return _e14;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_17: Ray, hit_7: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_19: Ray, hit_9: Hit, secondary: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e4 = load_GltfMaskedMaterial(offset_10);
-            let _e5 = gltf_masked_shade(_e4, ray_17, hit_7);
+            let _e5 = gltf_masked_shade(_e4, ray_19, hit_9);
             return _e5;
         }
         case 1u: {
             let _e6 = load_GltfMaterial(offset_10);
-            let _e7 = gltf_shade(_e6, ray_17, hit_7);
+            let _e7 = gltf_shade(_e6, ray_19, hit_9);
             return _e7;
         }
         default: {
@@ -1210,52 +1280,52 @@ fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_17: Ray, hit_7: Hit,
     return vec3<f32>();
 }
 
-fn shade_direct(ray_18: Ray, c_4: Candidate) -> vec3<f32> {
+fn shade_direct(ray_20: Ray, c_4: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_4.slot];
-    let _e6 = finish_hit(ray_18, c_4);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_20, c_4);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_19: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_21: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_20: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_22: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_20.medium == 0u) {
+    if (ray_22.medium == 0u) {
         return radiance_1;
     }
-    let inst_9 = instances[(ray_20.medium - 1u)];
+    let inst_9 = instances[(ray_22.medium - 1u)];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_20, t_3, radiance_1);
+    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_22, t_3, radiance_1);
     return _e21;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_21: Ray, hit_8: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_23: Ray, hit_10: Hit) {
     return;
 }
 
 fn spawn_origin_at(position_6: vec3<f32>, normal_6: vec3<f32>, error_1: f32, dir_2: vec3<f32>) -> vec3<f32> {
-    var n_5: vec3<f32>;
+    var n_6: vec3<f32>;
 
-    n_5 = normal_6;
-    let _e5 = n_5;
+    n_6 = normal_6;
+    let _e5 = n_6;
     if (dot(dir_2, _e5) < 0f) {
-        let _e9 = n_5;
-        n_5 = -(_e9);
+        let _e9 = n_6;
+        n_6 = -(_e9);
     }
-    let _e11 = n_5;
+    let _e11 = n_6;
     let _e12 = offset_origin(position_6, _e11, error_1);
     return _e12;
 }
 
-fn spawn_origin(hit_9: Hit, error_2: f32, dir_3: vec3<f32>) -> vec3<f32> {
-    let _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_3);
+fn spawn_origin(hit_11: Hit, error_2: f32, dir_3: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_3);
     return _e5;
 }
 
@@ -1264,7 +1334,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_4: f32;
     var stack: array<Frame, 4>;
     var depth: u32;
-    var ray_22: Ray;
+    var ray_24: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1277,7 +1347,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var pushed: bool;
     var radiance_3: vec3<f32>;
     var t_5: f32;
-    var hit_10: Hit;
+    var hit_12: Hit;
     var f: Frame;
     var i_3: u32;
     var medium: u32;
@@ -1303,7 +1373,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 4>();
     depth = 0u;
-    ray_22 = camera_ray;
+    ray_24 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1319,10 +1389,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_22;
+            let _e67 = ray_24;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_22;
+            let _e70 = ray_24;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1345,20 +1415,20 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 let _e95 = s_c.slot;
                 let inst_10 = instances[_e95];
                 let _e99 = s_hit;
-                hit_10 = _e99;
+                hit_12 = _e99;
                 let _e101 = fresh;
                 if _e101 {
                     let _e102 = s_ray;
                     let _e103 = s_c;
                     let _e104 = finish_hit(_e102, _e103);
-                    hit_10 = _e104;
+                    hit_12 = _e104;
                     let _e106 = hit_error;
                     s_error = _e106;
                 } else {
                     let _e107 = s_error;
                     hit_error = _e107;
                 }
-                let _e110 = hit_10.t;
+                let _e110 = hit_12.t;
                 t_5 = _e110;
                 let _e111 = fresh;
                 let _e119 = s_ray.depth;
@@ -1366,20 +1436,20 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 if (((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
                     spawn_count = 0u;
                     let _e131 = s_ray;
-                    let _e132 = hit_10;
+                    let _e132 = hit_12;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
                     let _e134 = spawn_count;
-                    let n_8 = min(min(_e134, 1u), MAX_SPAWN);
-                    if (n_8 > 0u) {
+                    let n_9 = min(min(_e134, 1u), MAX_SPAWN);
+                    if (n_9 > 0u) {
                         let _e141 = s_ray;
-                        let _e142 = hit_10;
+                        let _e142 = hit_12;
                         let _e143 = s_error;
                         let _e145 = s_c.slot;
-                        f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
+                        f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_9, 0u);
                         i_3 = 0u;
                         loop {
                             let _e155 = i_3;
-                            if (_e155 >= n_8) {
+                            if (_e155 >= n_9) {
                                 break;
                             }
                             let _e158 = i_3;
@@ -1406,7 +1476,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 let _e187 = pushed;
                 if !(_e187) {
                     let _e191 = s_ray;
-                    let _e192 = hit_10;
+                    let _e192 = hit_12;
                     let _e193 = s_sum;
                     let _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
                     radiance_3 = _e194;
@@ -1447,14 +1517,14 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let i_4 = stack[min(top_1, 3u)].next;
             stack[min(top_1, 3u)].next = (i_4 + 1u);
             let parent = stack[min(top_1, 3u)].ray;
-            let hit_12 = stack[min(top_1, 3u)].hit;
+            let hit_14 = stack[min(top_1, 3u)].hit;
             let dir_6 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
             medium = parent.medium;
             let _e283 = stack[min(top_1, 3u)].error;
-            let _e284 = spawn_origin(hit_12, _e283, dir_6);
+            let _e284 = spawn_origin(hit_14, _e283, dir_6);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_22 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_24 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -1474,8 +1544,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn is_finite_vec3f(x_4: vec3<f32>) -> vec3<bool> {
-    return ((bitcast<vec3<u32>>(x_4) & vec3(2147483647u)) < vec3(2139095040u));
+fn is_finite_vec3f(x_5: vec3<f32>) -> vec3<bool> {
+    return ((bitcast<vec3<u32>>(x_5) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
 fn finite_or_zero(c_5: vec3<f32>) -> vec3<f32> {
@@ -1487,7 +1557,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s_1: u32;
-    var ray_23: Ray;
+    var ray_25: Ray;
 
     let frame_5 = frame;
     let tile_2 = tile;
@@ -1504,13 +1574,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
         let sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_23 = _e23;
-        ray_23.depth = 0u;
-        ray_23.kind = RAY_CAMERA;
-        let _e31 = ray_23.origin;
+        ray_25 = _e23;
+        ray_25.depth = 0u;
+        ray_25.kind = RAY_CAMERA;
+        let _e31 = ray_25.origin;
         let _e33 = medium_at(_e31, NO_HIT);
-        ray_23.medium = _e33;
-        let _e34 = ray_23;
+        ray_25.medium = _e33;
+        let _e34 = ray_25;
         let _e35 = trace(_e34);
         let _e36 = is_finite_vec3f(_e35);
         if all(_e36) {

@@ -151,7 +151,13 @@ const float GAMMA_6_ = 3.576281e-7;
 const float GAMMA_4_ = 2.3841864e-7;
 const bool HAS_SECONDARY_RAYS = true;
 const bool HAS_BACKGROUND = true;
+const uint TEXTURE_WRAP_MASK = 3u;
+const uint TEXTURE_WRAP_V_SHIFT = 2u;
+const uint TEXTURE_NEAREST = 16u;
+const uint TEXTURE_WRAP_MIRROR = 2u;
+const uint TEXTURE_WRAP_CLAMP = 1u;
 const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
+const uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 const uint RGBA16F_TEXEL_WORDS = 2u;
 const float INV_PI = 0.31830987;
 const uint LIGHT_ENTRY_STRIDE = 2u;
@@ -507,19 +513,19 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             }
         } else {
             uint _e62 = child;
-            GpuNode n_6 = _group_0_binding_2_cs[(base_1 + _e62)];
+            GpuNode n_7 = _group_0_binding_2_cs[(base_1 + _e62)];
             float _e68 = best.t;
-            vec2 _e69 = children_entry(n_6, origin_4, scale_2, ray_4, _e8, _e68);
+            vec2 _e69 = children_entry(n_7, origin_4, scale_2, ray_4, _e8, _e68);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
             uint _e77 = F32_INF;
             if (((tl < uintBitsToFloat(_e73)) && (tr < uintBitsToFloat(_e77)))) {
-                near = n_6.a;
-                far = n_6.b;
+                near = n_7.a;
+                far = n_7.b;
                 if (((tr < tl) != shadow)) {
-                    near = n_6.b;
-                    far = n_6.a;
+                    near = n_7.b;
+                    far = n_7.a;
                 }
                 uint _e89 = sp_1;
                 if ((_e89 < BLAS_STACK)) {
@@ -535,12 +541,12 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             }
             uint _e105 = F32_INF;
             if ((tl < uintBitsToFloat(_e105))) {
-                child = n_6.a;
+                child = n_7.a;
                 continue;
             }
             uint _e110 = F32_INF;
             if ((tr < uintBitsToFloat(_e110))) {
-                child = n_6.b;
+                child = n_7.b;
                 continue;
             }
         }
@@ -775,19 +781,19 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2) {
             }
         } else {
             uint _e63 = child_1;
-            GpuNode n_7 = _group_0_binding_2_cs[(base_2 + _e63)];
+            GpuNode n_8 = _group_0_binding_2_cs[(base_2 + _e63)];
             float _e69 = best_2.t;
-            vec2 _e70 = children_entry(n_7, origin_5, scale_3, ray_7, _e16, _e69);
+            vec2 _e70 = children_entry(n_8, origin_5, scale_3, ray_7, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
             uint _e78 = F32_INF;
             if (((tl_1 < uintBitsToFloat(_e74)) && (tr_1 < uintBitsToFloat(_e78)))) {
-                near_1 = n_7.a;
-                far_1 = n_7.b;
+                near_1 = n_8.a;
+                far_1 = n_8.b;
                 if ((tr_1 < tl_1)) {
-                    near_1 = n_7.b;
-                    far_1 = n_7.a;
+                    near_1 = n_8.b;
+                    far_1 = n_8.a;
                 }
                 uint _e89 = sp_2;
                 if ((_e89 < TLAS_STACK)) {
@@ -803,12 +809,12 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2) {
             }
             uint _e103 = F32_INF;
             if ((tl_1 < uintBitsToFloat(_e103))) {
-                child_1 = n_7.a;
+                child_1 = n_8.a;
                 continue;
             }
             uint _e108 = F32_INF;
             if ((tr_1 < uintBitsToFloat(_e108))) {
-                child_1 = n_7.b;
+                child_1 = n_8.b;
                 continue;
             }
         }
@@ -839,11 +845,11 @@ SkyGradient load_SkyGradient(uint offset_2) {
 
 vec3 sky_gradient(SkyGradient b_4, Ray ray_8) {
     vec3 _e3 = normalize_vec3f(ray_8.dir);
-    float y_1 = _e3.y;
-    if ((y_1 < 0.0)) {
-        return mix(b_4.horizon, b_4.ground, vec3(min((-(y_1) * 4.0), 1.0)));
+    float y = _e3.y;
+    if ((y < 0.0)) {
+        return mix(b_4.horizon, b_4.ground, vec3(min((-(y) * 4.0), 1.0)));
     }
-    return mix(b_4.horizon, b_4.zenith, vec3(sqrt(y_1)));
+    return mix(b_4.horizon, b_4.zenith, vec3(sqrt(y)));
 }
 
 vec3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_9) {
@@ -893,6 +899,16 @@ int rem_i32_(int a_4, int b_5) {
     return (by_zero_4 ? 0 : (a_4 - (divisor_4 * (a_4 / divisor_4))));
 }
 
+int wrap_texel(int x_2, int n_3, uint mode) {
+    int _e3 = rem_i32_(x_2, n_3);
+    int _e5 = rem_i32_((_e3 + n_3), n_3);
+    int _e8 = rem_i32_(x_2, (2 * n_3));
+    int _e14 = rem_i32_((_e8 + (2 * n_3)), (2 * n_3));
+    int mirror = ((_e14 >= n_3) ? (((2 * n_3) - 1) - _e14) : _e14);
+    int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5);
+    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_2, 0), (n_3 - 1)) : wrapped);
+}
+
 float srgb_channel(float c_2) {
     if ((c_2 <= 0.04045)) {
         return (c_2 / 12.92);
@@ -900,51 +916,58 @@ float srgb_channel(float c_2) {
     return pow(((c_2 + 0.055) / 1.055), 2.4);
 }
 
-vec4 texel_at(uint t, int x_2, int y) {
+vec4 texel_at(uint t, uint xi, uint yi) {
     uint base_3 = _group_0_binding_6_cs[t];
     uint _e10 = _group_0_binding_6_cs[(t + 1u)];
-    uint w_3 = max(_e10, 1u);
-    uint _e17 = _group_0_binding_6_cs[(t + 2u)];
-    uint h_2 = max(_e17, 1u);
+    uint index = ((yi * max(_e10, 1u)) + xi);
     uint format = _group_0_binding_6_cs[(t + 3u)];
-    int _e26 = rem_i32_(x_2, int(w_3));
-    int _e30 = rem_i32_((_e26 + int(w_3)), int(w_3));
-    uint xi = uint(_e30);
-    int _e33 = rem_i32_(y, int(h_2));
-    int _e37 = rem_i32_((_e33 + int(h_2)), int(h_2));
-    uint yi = uint(_e37);
-    uint index = ((yi * w_3) + xi);
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
-        uint _e46 = _group_0_binding_7_cs[(base_3 + index)];
-        vec4 c_7 = unpackUnorm4x8(_e46);
-        float _e49 = srgb_channel(c_7.x);
-        float _e51 = srgb_channel(c_7.y);
-        float _e53 = srgb_channel(c_7.z);
-        return vec4(_e49, _e51, _e53, c_7.w);
+        uint _e25 = _group_0_binding_7_cs[(base_3 + index)];
+        vec4 c_7 = unpackUnorm4x8(_e25);
+        float _e28 = srgb_channel(c_7.x);
+        float _e30 = srgb_channel(c_7.y);
+        float _e32 = srgb_channel(c_7.z);
+        return vec4(_e28, _e30, _e32, c_7.w);
     }
-    uint _e61 = _group_0_binding_7_cs[(base_3 + (index * RGBA16F_TEXEL_WORDS))];
-    vec2 rg = unpackHalf2x16(_e61);
-    uint _e70 = _group_0_binding_7_cs[((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
-    vec2 ba = unpackHalf2x16(_e70);
+    if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
+        uint _e40 = _group_0_binding_7_cs[(base_3 + index)];
+        return unpackUnorm4x8(_e40);
+    }
+    uint _e47 = _group_0_binding_7_cs[(base_3 + (index * RGBA16F_TEXEL_WORDS))];
+    vec2 rg = unpackHalf2x16(_e47);
+    uint _e56 = _group_0_binding_7_cs[((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
+    vec2 ba = unpackHalf2x16(_e56);
     return vec4(rg, ba);
 }
 
 vec4 sample_texture(uint t_1, vec2 uv) {
     uint _e6 = _group_0_binding_6_cs[(t_1 + 1u)];
-    float w_4 = float(max(_e6, 1u));
+    int wi = int(max(_e6, 1u));
     uint _e14 = _group_0_binding_6_cs[(t_1 + 2u)];
-    float h_3 = float(max(_e14, 1u));
-    vec2 p_7 = ((uv * vec2(w_4, h_3)) - vec2(0.5));
+    int hi_1 = int(max(_e14, 1u));
+    uint sampler_ = _group_0_binding_6_cs[(t_1 + 4u)];
+    uint mu = (sampler_ & TEXTURE_WRAP_MASK);
+    uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
+    vec2 q_3 = (uv * vec2(float(wi), float(hi_1)));
+    vec2 p_7 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_3) : (q_3 - vec2(0.5)));
     vec2 f = floor(p_7);
     vec2 fr = (p_7 - f);
-    int _e26 = i32_from_f32_(f.x);
-    int _e28 = i32_from_f32_(f.y);
-    vec4 _e29 = texel_at(t_1, _e26, _e28);
-    vec4 _e32 = texel_at(t_1, (_e26 + 1), _e28);
-    vec4 a_7 = mix(_e29, _e32, vec4(fr.x));
-    vec4 _e38 = texel_at(t_1, _e26, (_e28 + 1));
-    vec4 _e43 = texel_at(t_1, (_e26 + 1), (_e28 + 1));
-    vec4 b_8 = mix(_e38, _e43, vec4(fr.x));
+    int _e47 = i32_from_f32_(f.x);
+    int _e49 = i32_from_f32_(f.y);
+    int _e50 = wrap_texel(_e47, wi, mu);
+    uint x0_ = uint(_e50);
+    int _e54 = wrap_texel((_e47 + 1), wi, mu);
+    uint x1_ = uint(_e54);
+    int _e56 = wrap_texel(_e49, hi_1, mv);
+    uint y0_ = uint(_e56);
+    int _e60 = wrap_texel((_e49 + 1), hi_1, mv);
+    uint y1_ = uint(_e60);
+    vec4 _e62 = texel_at(t_1, x0_, y0_);
+    vec4 _e63 = texel_at(t_1, x1_, y0_);
+    vec4 a_7 = mix(_e62, _e63, vec4(fr.x));
+    vec4 _e67 = texel_at(t_1, x0_, y1_);
+    vec4 _e68 = texel_at(t_1, x1_, y1_);
+    vec4 b_8 = mix(_e67, _e68, vec4(fr.x));
     return mix(a_7, b_8, vec4(fr.y));
 }
 
@@ -975,26 +998,26 @@ vec3 step_toward(vec3 x_3, vec3 s) {
     return mix(x_3, moved, not(equal(s, vec3(0.0))));
 }
 
-vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
-    float d_3 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    vec3 offset_13 = (n_3 * vec3(d_3));
+vec3 offset_origin(vec3 p_5, vec3 n_4, float error) {
+    float d_3 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    vec3 offset_13 = (n_4 * vec3(d_3));
     vec3 _e17 = step_toward((p_5 + offset_13), offset_13);
     return _e17;
 }
 
 Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
-    vec3 n_4 = vec3(0.0);
+    vec3 n_5 = vec3(0.0);
     float tmax_4 = 0.0;
-    n_4 = normal;
-    vec3 _e5 = n_4;
+    n_5 = normal;
+    vec3 _e5 = n_5;
     if ((dot(dir, _e5) < 0.0)) {
-        vec3 _e9 = n_4;
-        n_4 = -(_e9);
+        vec3 _e9 = n_5;
+        n_5 = -(_e9);
     }
     vec3 a_8 = abs(position);
     float _e13 = hit_error;
     float error_3 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
-    vec3 _e22 = n_4;
+    vec3 _e22 = n_5;
     vec3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = uintBitsToFloat(_e25);
@@ -1229,14 +1252,14 @@ void dispatch_secondary_rays(uint type_id_5, uint offset_12, Ray ray_21, Hit hit
 }
 
 vec3 spawn_origin_at(vec3 position_5, vec3 normal_5, float error_1, vec3 dir_3) {
-    vec3 n_5 = vec3(0.0);
-    n_5 = normal_5;
-    vec3 _e5 = n_5;
+    vec3 n_6 = vec3(0.0);
+    n_6 = normal_5;
+    vec3 _e5 = n_6;
     if ((dot(dir_3, _e5) < 0.0)) {
-        vec3 _e9 = n_5;
-        n_5 = -(_e9);
+        vec3 _e9 = n_6;
+        n_6 = -(_e9);
     }
-    vec3 _e11 = n_5;
+    vec3 _e11 = n_6;
     vec3 _e12 = offset_origin(position_5, _e11, error_1);
     return _e12;
 }
@@ -1304,20 +1327,20 @@ vec3 trace_path(Ray camera_ray) {
         float _e85 = beta.x;
         float _e87 = beta.y;
         float _e89 = beta.z;
-        float q_3 = max(_e85, max(_e87, _e89));
-        if (!((q_3 > 0.0))) {
+        float q_4 = max(_e85, max(_e87, _e89));
+        if (!((q_4 > 0.0))) {
             vec3 _e95 = radiance_2;
             return _e95;
         }
         uint _e100 = ray_22.depth;
-        if ((((ROULETTE_DEPTH > 0u) && ((_e100 + 1u) >= ROULETTE_DEPTH)) && (q_3 < 1.0))) {
+        if ((((ROULETTE_DEPTH > 0u) && ((_e100 + 1u) >= ROULETTE_DEPTH)) && (q_4 < 1.0))) {
             float _e109 = rand_next();
-            if ((_e109 >= q_3)) {
+            if ((_e109 >= q_4)) {
                 vec3 _e111 = radiance_2;
                 return _e111;
             }
             vec3 _e112 = beta;
-            beta = (_e112 / vec3(q_3));
+            beta = (_e112 / vec3(q_4));
         }
         vec3 _e115 = dir_5;
         vec3 _e116 = spawn_origin(_e27, error_4, _e115);

@@ -193,7 +193,13 @@ static const float GAMMA_6_ = 3.576281e-7;
 static const float GAMMA_4_ = 2.3841864e-7;
 static const bool HAS_SECONDARY_RAYS = false;
 static const bool HAS_BACKGROUND = true;
+static const uint TEXTURE_WRAP_MASK = 3u;
+static const uint TEXTURE_WRAP_V_SHIFT = 2u;
+static const uint TEXTURE_NEAREST = 16u;
+static const uint TEXTURE_WRAP_MIRROR = 2u;
+static const uint TEXTURE_WRAP_CLAMP = 1u;
 static const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
+static const uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 static const uint RGBA16F_TEXEL_WORDS = 2u;
 static const float INV_PI = 0.31830987;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
@@ -644,19 +650,19 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             }
         } else {
             uint _e62 = child;
-            GpuNode n_6 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e62)*32+0)), asuint(nodes.Load((base_1 + _e62)*32+12)), asfloat(nodes.Load3((base_1 + _e62)*32+16)), asuint(nodes.Load((base_1 + _e62)*32+28)));
+            GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e62)*32+0)), asuint(nodes.Load((base_1 + _e62)*32+12)), asfloat(nodes.Load3((base_1 + _e62)*32+16)), asuint(nodes.Load((base_1 + _e62)*32+28)));
             float _e68 = best.t;
-            const float2 _e69 = children_entry(n_6, origin_4, scale_2, ray_4, _e8, _e68);
+            const float2 _e69 = children_entry(n_7, origin_4, scale_2, ray_4, _e8, _e68);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
             uint _e77 = F32_INF;
             if (((tl < asfloat(_e73)) && (tr < asfloat(_e77)))) {
-                near = n_6.a;
-                far = n_6.b;
+                near = n_7.a;
+                far = n_7.b;
                 if (((tr < tl) != shadow)) {
-                    near = n_6.b;
-                    far = n_6.a;
+                    near = n_7.b;
+                    far = n_7.a;
                 }
                 uint _e89 = sp_1;
                 if ((_e89 < BLAS_STACK)) {
@@ -672,12 +678,12 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
             }
             uint _e105 = F32_INF;
             if ((tl < asfloat(_e105))) {
-                child = n_6.a;
+                child = n_7.a;
                 continue;
             }
             uint _e110 = F32_INF;
             if ((tr < asfloat(_e110))) {
-                child = n_6.b;
+                child = n_7.b;
                 continue;
             }
         }
@@ -985,19 +991,19 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2)
             }
         } else {
             uint _e63 = child_1;
-            GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e63)*32+0)), asuint(nodes.Load((base_2 + _e63)*32+12)), asfloat(nodes.Load3((base_2 + _e63)*32+16)), asuint(nodes.Load((base_2 + _e63)*32+28)));
+            GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e63)*32+0)), asuint(nodes.Load((base_2 + _e63)*32+12)), asfloat(nodes.Load3((base_2 + _e63)*32+16)), asuint(nodes.Load((base_2 + _e63)*32+28)));
             float _e69 = best_2.t;
-            const float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_7, _e16, _e69);
+            const float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_7, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
             uint _e78 = F32_INF;
             if (((tl_1 < asfloat(_e74)) && (tr_1 < asfloat(_e78)))) {
-                near_1 = n_7.a;
-                far_1 = n_7.b;
+                near_1 = n_8.a;
+                far_1 = n_8.b;
                 if ((tr_1 < tl_1)) {
-                    near_1 = n_7.b;
-                    far_1 = n_7.a;
+                    near_1 = n_8.b;
+                    far_1 = n_8.a;
                 }
                 uint _e89 = sp_2;
                 if ((_e89 < TLAS_STACK)) {
@@ -1013,12 +1019,12 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2)
             }
             uint _e103 = F32_INF;
             if ((tl_1 < asfloat(_e103))) {
-                child_1 = n_7.a;
+                child_1 = n_8.a;
                 continue;
             }
             uint _e108 = F32_INF;
             if ((tr_1 < asfloat(_e108))) {
-                child_1 = n_7.b;
+                child_1 = n_8.b;
                 continue;
             }
         }
@@ -1128,6 +1134,17 @@ int rem_i32_(int a_4, int b_5)
     return (by_zero_4 ? int(0) : asint(asuint(a_4) - asuint(asint(asuint(divisor_4) * asuint(naga_div(a_4, divisor_4))))));
 }
 
+int wrap_texel(int x_2, int n_3, uint mode)
+{
+    const int _e3 = rem_i32_(x_2, n_3);
+    const int _e5 = rem_i32_(asint(asuint(_e3) + asuint(n_3)), n_3);
+    const int _e8 = rem_i32_(x_2, asint(asuint(int(2)) * asuint(n_3)));
+    const int _e14 = rem_i32_(asint(asuint(_e8) + asuint(asint(asuint(int(2)) * asuint(n_3)))), asint(asuint(int(2)) * asuint(n_3)));
+    int mirror = ((_e14 >= n_3) ? asint(asuint(asint(asuint(asint(asuint(int(2)) * asuint(n_3))) - asuint(int(1)))) - asuint(_e14)) : _e14);
+    int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5);
+    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_2, int(0)), asint(asuint(n_3) - asuint(int(1)))) : wrapped);
+}
+
 float srgb_channel(float c_2)
 {
     if ((c_2 <= 0.04045)) {
@@ -1136,53 +1153,60 @@ float srgb_channel(float c_2)
     return pow(((c_2 + 0.055) / 1.055), 2.4);
 }
 
-float4 texel_at(uint t, int x_2, int y)
+float4 texel_at(uint t, uint xi, uint yi)
 {
     uint base_3 = asuint(params.Load(t*4));
     uint _e10 = asuint(params.Load((t + 1u)*4));
-    uint w_3 = max(_e10, 1u);
-    uint _e17 = asuint(params.Load((t + 2u)*4));
-    uint h_2 = max(_e17, 1u);
+    uint index = ((yi * max(_e10, 1u)) + xi);
     uint format = asuint(params.Load((t + 3u)*4));
-    const int _e26 = rem_i32_(x_2, int(w_3));
-    const int _e30 = rem_i32_(asint(asuint(_e26) + asuint(int(w_3))), int(w_3));
-    uint xi = uint(_e30);
-    const int _e33 = rem_i32_(y, int(h_2));
-    const int _e37 = rem_i32_(asint(asuint(_e33) + asuint(int(h_2))), int(h_2));
-    uint yi = uint(_e37);
-    uint index = ((yi * w_3) + xi);
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
-        uint _e46 = asuint(texels.Load((base_3 + index)*4));
-        float4 c_7 = (float4(_e46 & 0xFF, _e46 >> 8 & 0xFF, _e46 >> 16 & 0xFF, _e46 >> 24) / 255.0);
-        const float _e49 = srgb_channel(c_7.x);
-        const float _e51 = srgb_channel(c_7.y);
-        const float _e53 = srgb_channel(c_7.z);
-        return float4(_e49, _e51, _e53, c_7.w);
+        uint _e25 = asuint(texels.Load((base_3 + index)*4));
+        float4 c_7 = (float4(_e25 & 0xFF, _e25 >> 8 & 0xFF, _e25 >> 16 & 0xFF, _e25 >> 24) / 255.0);
+        const float _e28 = srgb_channel(c_7.x);
+        const float _e30 = srgb_channel(c_7.y);
+        const float _e32 = srgb_channel(c_7.z);
+        return float4(_e28, _e30, _e32, c_7.w);
     }
-    uint _e61 = asuint(texels.Load((base_3 + (index * RGBA16F_TEXEL_WORDS))*4));
-    float2 rg = float2(f16tof32(_e61), f16tof32((_e61) >> 16));
-    uint _e70 = asuint(texels.Load(((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)*4));
-    float2 ba = float2(f16tof32(_e70), f16tof32((_e70) >> 16));
+    if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
+        uint _e40 = asuint(texels.Load((base_3 + index)*4));
+        return (float4(_e40 & 0xFF, _e40 >> 8 & 0xFF, _e40 >> 16 & 0xFF, _e40 >> 24) / 255.0);
+    }
+    uint _e47 = asuint(texels.Load((base_3 + (index * RGBA16F_TEXEL_WORDS))*4));
+    float2 rg = float2(f16tof32(_e47), f16tof32((_e47) >> 16));
+    uint _e56 = asuint(texels.Load(((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)*4));
+    float2 ba = float2(f16tof32(_e56), f16tof32((_e56) >> 16));
     return float4(rg, ba);
 }
 
 float4 sample_texture(uint t_1, float2 uv)
 {
     uint _e6 = asuint(params.Load((t_1 + 1u)*4));
-    float w_4 = float(max(_e6, 1u));
+    int wi = int(max(_e6, 1u));
     uint _e14 = asuint(params.Load((t_1 + 2u)*4));
-    float h_3 = float(max(_e14, 1u));
-    float2 p_7 = ((uv * float2(w_4, h_3)) - (0.5).xx);
+    int hi_1 = int(max(_e14, 1u));
+    uint sampler_ = asuint(params.Load((t_1 + 4u)*4));
+    uint mu = (sampler_ & TEXTURE_WRAP_MASK);
+    uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
+    float2 q_3 = (uv * float2(float(wi), float(hi_1)));
+    float2 p_7 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_3) : (q_3 - (0.5).xx));
     float2 f_1 = floor(p_7);
     float2 fr = (p_7 - f_1);
-    const int _e26 = i32_from_f32_(f_1.x);
-    const int _e28 = i32_from_f32_(f_1.y);
-    const float4 _e29 = texel_at(t_1, _e26, _e28);
-    const float4 _e32 = texel_at(t_1, asint(asuint(_e26) + asuint(int(1))), _e28);
-    float4 a_7 = lerp(_e29, _e32, (fr.x).xxxx);
-    const float4 _e38 = texel_at(t_1, _e26, asint(asuint(_e28) + asuint(int(1))));
-    const float4 _e43 = texel_at(t_1, asint(asuint(_e26) + asuint(int(1))), asint(asuint(_e28) + asuint(int(1))));
-    float4 b_8 = lerp(_e38, _e43, (fr.x).xxxx);
+    const int _e47 = i32_from_f32_(f_1.x);
+    const int _e49 = i32_from_f32_(f_1.y);
+    const int _e50 = wrap_texel(_e47, wi, mu);
+    uint x0_ = uint(_e50);
+    const int _e54 = wrap_texel(asint(asuint(_e47) + asuint(int(1))), wi, mu);
+    uint x1_ = uint(_e54);
+    const int _e56 = wrap_texel(_e49, hi_1, mv);
+    uint y0_ = uint(_e56);
+    const int _e60 = wrap_texel(asint(asuint(_e49) + asuint(int(1))), hi_1, mv);
+    uint y1_ = uint(_e60);
+    const float4 _e62 = texel_at(t_1, x0_, y0_);
+    const float4 _e63 = texel_at(t_1, x1_, y0_);
+    float4 a_7 = lerp(_e62, _e63, (fr.x).xxxx);
+    const float4 _e67 = texel_at(t_1, x0_, y1_);
+    const float4 _e68 = texel_at(t_1, x1_, y1_);
+    float4 b_8 = lerp(_e67, _e68, (fr.x).xxxx);
     return lerp(a_7, b_8, (fr.y).xxxx);
 }
 
@@ -1227,29 +1251,29 @@ float3 step_toward(float3 x_3, float3 s)
     return (!((s == (0.0).xxx)) ? moved : x_3);
 }
 
-float3 offset_origin(float3 p_5, float3 n_3, float error)
+float3 offset_origin(float3 p_5, float3 n_4, float error)
 {
-    float d_3 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    float3 offset_10 = (n_3 * (d_3).xxx);
+    float d_3 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    float3 offset_10 = (n_4 * (d_3).xxx);
     const float3 _e17 = step_toward((p_5 + offset_10), offset_10);
     return _e17;
 }
 
 Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
 {
-    float3 n_4 = (float3)0;
+    float3 n_5 = (float3)0;
     float tmax_4 = (float)0;
 
-    n_4 = normal;
-    float3 _e5 = n_4;
+    n_5 = normal;
+    float3 _e5 = n_5;
     if ((dot(dir, _e5) < 0.0)) {
-        float3 _e9 = n_4;
-        n_4 = -(_e9);
+        float3 _e9 = n_5;
+        n_5 = -(_e9);
     }
     float3 a_8 = abs(position);
     float _e13 = hit_error;
     float error_3 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
-    float3 _e22 = n_4;
+    float3 _e22 = n_5;
     const float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = asfloat(_e25);
@@ -1411,15 +1435,15 @@ void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_17, Hit hit_
 
 float3 spawn_origin_at(float3 position_5, float3 normal_5, float error_1, float3 dir_2)
 {
-    float3 n_5 = (float3)0;
+    float3 n_6 = (float3)0;
 
-    n_5 = normal_5;
-    float3 _e5 = n_5;
+    n_6 = normal_5;
+    float3 _e5 = n_6;
     if ((dot(dir_2, _e5) < 0.0)) {
-        float3 _e9 = n_5;
-        n_5 = -(_e9);
+        float3 _e9 = n_6;
+        n_6 = -(_e9);
     }
-    float3 _e11 = n_5;
+    float3 _e11 = n_6;
     const float3 _e12 = offset_origin(position_5, _e11, error_1);
     return _e12;
 }
@@ -1568,13 +1592,13 @@ float3 trace(Ray camera_ray)
                     Hit _e132 = hit_6;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
                     uint _e134 = spawn_count;
-                    uint n_8 = min(min(_e134, 1u), MAX_SPAWN);
-                    if ((n_8 > 0u)) {
+                    uint n_9 = min(min(_e134, 1u), MAX_SPAWN);
+                    if ((n_9 > 0u)) {
                         Ray _e141 = s_ray;
                         Hit _e142 = hit_6;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_8, 0u);
+                        f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_9, 0u);
                         i_3 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
                         bool loop_init_3 = true;
@@ -1587,7 +1611,7 @@ float3 trace(Ray camera_ray)
                             }
                             loop_init_3 = false;
                             uint _e155 = i_3;
-                            if ((_e155 >= n_8)) {
+                            if ((_e155 >= n_9)) {
                                 break;
                             }
                             uint _e158 = i_3;

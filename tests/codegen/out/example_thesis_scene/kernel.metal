@@ -187,7 +187,13 @@ constant float GAMMA_6_ = 0.0000003576281;
 constant float GAMMA_4_ = 0.00000023841864;
 constant bool HAS_SECONDARY_RAYS = false;
 constant bool HAS_BACKGROUND = true;
+constant uint TEXTURE_WRAP_MASK = 3u;
+constant uint TEXTURE_WRAP_V_SHIFT = 2u;
+constant uint TEXTURE_NEAREST = 16u;
+constant uint TEXTURE_WRAP_MIRROR = 2u;
+constant uint TEXTURE_WRAP_CLAMP = 1u;
 constant uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
+constant uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 constant uint RGBA16F_TEXEL_WORDS = 2u;
 constant float INV_PI = 0.31830987;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
@@ -645,19 +651,19 @@ Candidate intersect_mesh(
             }
         } else {
             uint _e62 = child;
-            GpuNode n_6 = nodes[base_1 + _e62];
+            GpuNode n_7 = nodes[base_1 + _e62];
             float _e68 = best.t;
-            metal::float2 _e69 = children_entry(n_6, origin_4, scale_2, ray_4, _e8, _e68, F32_INF);
+            metal::float2 _e69 = children_entry(n_7, origin_4, scale_2, ray_4, _e8, _e68, F32_INF);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
             uint _e77 = F32_INF;
             if ((tl < as_type<float>(_e73)) && (tr < as_type<float>(_e77))) {
-                near = n_6.a;
-                far = n_6.b;
+                near = n_7.a;
+                far = n_7.b;
                 if ((tr < tl) != shadow) {
-                    near = n_6.b;
-                    far = n_6.a;
+                    near = n_7.b;
+                    far = n_7.a;
                 }
                 uint _e89 = sp_1;
                 if (_e89 < BLAS_STACK) {
@@ -673,12 +679,12 @@ Candidate intersect_mesh(
             }
             uint _e105 = F32_INF;
             if (tl < as_type<float>(_e105)) {
-                child = n_6.a;
+                child = n_7.a;
                 continue;
             }
             uint _e110 = F32_INF;
             if (tr < as_type<float>(_e110)) {
-                child = n_6.b;
+                child = n_7.b;
                 continue;
             }
         }
@@ -985,19 +991,19 @@ Candidate intersect_scene(
             }
         } else {
             uint _e63 = child_1;
-            GpuNode n_7 = nodes[base_2 + _e63];
+            GpuNode n_8 = nodes[base_2 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_7, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_7, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
             uint _e78 = F32_INF;
             if ((tl_1 < as_type<float>(_e74)) && (tr_1 < as_type<float>(_e78))) {
-                near_1 = n_7.a;
-                far_1 = n_7.b;
+                near_1 = n_8.a;
+                far_1 = n_8.b;
                 if (tr_1 < tl_1) {
-                    near_1 = n_7.b;
-                    far_1 = n_7.a;
+                    near_1 = n_8.b;
+                    far_1 = n_8.a;
                 }
                 uint _e89 = sp_2;
                 if (_e89 < TLAS_STACK) {
@@ -1013,12 +1019,12 @@ Candidate intersect_scene(
             }
             uint _e103 = F32_INF;
             if (tl_1 < as_type<float>(_e103)) {
-                child_1 = n_7.a;
+                child_1 = n_8.a;
                 continue;
             }
             uint _e108 = F32_INF;
             if (tr_1 < as_type<float>(_e108)) {
-                child_1 = n_7.b;
+                child_1 = n_8.b;
                 continue;
             }
         }
@@ -1130,6 +1136,20 @@ int rem_i32_(
     return by_zero_4 ? 0 : as_type<int>(as_type<uint>(a_4) - as_type<uint>(as_type<int>(as_type<uint>(divisor_4) * as_type<uint>(naga_div(a_4, divisor_4)))));
 }
 
+int wrap_texel(
+    int x_2,
+    int n_3,
+    uint mode
+) {
+    int _e3 = rem_i32_(x_2, n_3);
+    int _e5 = rem_i32_(as_type<int>(as_type<uint>(_e3) + as_type<uint>(n_3)), n_3);
+    int _e8 = rem_i32_(x_2, as_type<int>(as_type<uint>(2) * as_type<uint>(n_3)));
+    int _e14 = rem_i32_(as_type<int>(as_type<uint>(_e8) + as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_3)))), as_type<int>(as_type<uint>(2) * as_type<uint>(n_3)));
+    int mirror = (_e14 >= n_3) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_3))) - as_type<uint>(1))) - as_type<uint>(_e14)) : _e14;
+    int wrapped = (mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5;
+    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(x_2, 0), as_type<int>(as_type<uint>(n_3) - as_type<uint>(1))) : wrapped;
+}
+
 float srgb_channel(
     float c_2
 ) {
@@ -1141,37 +1161,32 @@ float srgb_channel(
 
 metal::float4 texel_at(
     uint t,
-    int x_2,
-    int y,
+    uint xi,
+    uint yi,
     device type_4 const& params,
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint base_3 = params[t];
     uint _e10 = params[t + 1u];
-    uint w_3 = metal::max(_e10, 1u);
-    uint _e17 = params[t + 2u];
-    uint h_2 = metal::max(_e17, 1u);
+    uint index = (yi * metal::max(_e10, 1u)) + xi;
     uint format = params[t + 3u];
-    int _e26 = rem_i32_(x_2, static_cast<int>(w_3));
-    int _e30 = rem_i32_(as_type<int>(as_type<uint>(_e26) + as_type<uint>(static_cast<int>(w_3))), static_cast<int>(w_3));
-    uint xi = static_cast<uint>(_e30);
-    int _e33 = rem_i32_(y, static_cast<int>(h_2));
-    int _e37 = rem_i32_(as_type<int>(as_type<uint>(_e33) + as_type<uint>(static_cast<int>(h_2))), static_cast<int>(h_2));
-    uint yi = static_cast<uint>(_e37);
-    uint index = (yi * w_3) + xi;
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        uint _e46 = texels[base_3 + index];
-        metal::float4 c_7 = metal::unpack_unorm4x8_to_float(_e46);
-        float _e49 = srgb_channel(c_7.x);
-        float _e51 = srgb_channel(c_7.y);
-        float _e53 = srgb_channel(c_7.z);
-        return metal::float4(_e49, _e51, _e53, c_7.w);
+        uint _e25 = texels[base_3 + index];
+        metal::float4 c_7 = metal::unpack_unorm4x8_to_float(_e25);
+        float _e28 = srgb_channel(c_7.x);
+        float _e30 = srgb_channel(c_7.y);
+        float _e32 = srgb_channel(c_7.z);
+        return metal::float4(_e28, _e30, _e32, c_7.w);
     }
-    uint _e61 = texels[base_3 + (index * RGBA16F_TEXEL_WORDS)];
-    metal::float2 rg = float2(as_type<half2>(_e61));
-    uint _e70 = texels[(base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
-    metal::float2 ba = float2(as_type<half2>(_e70));
+    if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
+        uint _e40 = texels[base_3 + index];
+        return metal::unpack_unorm4x8_to_float(_e40);
+    }
+    uint _e47 = texels[base_3 + (index * RGBA16F_TEXEL_WORDS)];
+    metal::float2 rg = float2(as_type<half2>(_e47));
+    uint _e56 = texels[(base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
+    metal::float2 ba = float2(as_type<half2>(_e56));
     return metal::float4(rg, ba);
 }
 
@@ -1183,20 +1198,32 @@ metal::float4 sample_texture(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e6 = params[t_1 + 1u];
-    float w_4 = static_cast<float>(metal::max(_e6, 1u));
+    int wi = static_cast<int>(metal::max(_e6, 1u));
     uint _e14 = params[t_1 + 2u];
-    float h_3 = static_cast<float>(metal::max(_e14, 1u));
-    metal::float2 p_7 = (uv * metal::float2(w_4, h_3)) - metal::float2(0.5);
+    int hi_1 = static_cast<int>(metal::max(_e14, 1u));
+    uint sampler = params[t_1 + 4u];
+    uint mu = sampler & TEXTURE_WRAP_MASK;
+    uint mv = (sampler >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK;
+    metal::float2 q_3 = uv * metal::float2(static_cast<float>(wi), static_cast<float>(hi_1));
+    metal::float2 p_7 = ((sampler & TEXTURE_NEAREST) != 0u) ? metal::floor(q_3) : (q_3 - metal::float2(0.5));
     metal::float2 f_1 = metal::floor(p_7);
     metal::float2 fr = p_7 - f_1;
-    int _e26 = i32_from_f32_(f_1.x);
-    int _e28 = i32_from_f32_(f_1.y);
-    metal::float4 _e29 = texel_at(t_1, _e26, _e28, params, texels, _buffer_sizes);
-    metal::float4 _e32 = texel_at(t_1, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), _e28, params, texels, _buffer_sizes);
-    metal::float4 a_7 = metal::mix(_e29, _e32, metal::float4(fr.x));
-    metal::float4 _e38 = texel_at(t_1, _e26, as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
-    metal::float4 _e43 = texel_at(t_1, as_type<int>(as_type<uint>(_e26) + as_type<uint>(1)), as_type<int>(as_type<uint>(_e28) + as_type<uint>(1)), params, texels, _buffer_sizes);
-    metal::float4 b_8 = metal::mix(_e38, _e43, metal::float4(fr.x));
+    int _e47 = i32_from_f32_(f_1.x);
+    int _e49 = i32_from_f32_(f_1.y);
+    int _e50 = wrap_texel(_e47, wi, mu);
+    uint x0_ = static_cast<uint>(_e50);
+    int _e54 = wrap_texel(as_type<int>(as_type<uint>(_e47) + as_type<uint>(1)), wi, mu);
+    uint x1_ = static_cast<uint>(_e54);
+    int _e56 = wrap_texel(_e49, hi_1, mv);
+    uint y0_ = static_cast<uint>(_e56);
+    int _e60 = wrap_texel(as_type<int>(as_type<uint>(_e49) + as_type<uint>(1)), hi_1, mv);
+    uint y1_ = static_cast<uint>(_e60);
+    metal::float4 _e62 = texel_at(t_1, x0_, y0_, params, texels, _buffer_sizes);
+    metal::float4 _e63 = texel_at(t_1, x1_, y0_, params, texels, _buffer_sizes);
+    metal::float4 a_7 = metal::mix(_e62, _e63, metal::float4(fr.x));
+    metal::float4 _e67 = texel_at(t_1, x0_, y1_, params, texels, _buffer_sizes);
+    metal::float4 _e68 = texel_at(t_1, x1_, y1_, params, texels, _buffer_sizes);
+    metal::float4 b_8 = metal::mix(_e67, _e68, metal::float4(fr.x));
     return metal::mix(a_7, b_8, metal::float4(fr.y));
 }
 
@@ -1238,11 +1265,11 @@ metal::float3 step_toward(
 
 metal::float3 offset_origin(
     metal::float3 p_5,
-    metal::float3 n_3,
+    metal::float3 n_4,
     float error
 ) {
-    float d_3 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
-    metal::float3 offset_10 = n_3 * metal::float3(d_3);
+    float d_3 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
+    metal::float3 offset_10 = n_4 * metal::float3(d_3);
     metal::float3 _e17 = step_toward(p_5 + offset_10, offset_10);
     return _e17;
 }
@@ -1255,18 +1282,18 @@ Ray shadow_ray(
     thread uint& F32_INF,
     thread float& hit_error
 ) {
-    metal::float3 n_4 = {};
+    metal::float3 n_5 = {};
     float tmax_4 = {};
-    n_4 = normal;
-    metal::float3 _e5 = n_4;
+    n_5 = normal;
+    metal::float3 _e5 = n_5;
     if (metal::dot(dir, _e5) < 0.0) {
-        metal::float3 _e9 = n_4;
-        n_4 = -(_e9);
+        metal::float3 _e9 = n_5;
+        n_5 = -(_e9);
     }
     metal::float3 a_8 = metal::abs(position);
     float _e13 = hit_error;
     float error_3 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_8.x, a_8.y), a_8.z));
-    metal::float3 _e22 = n_4;
+    metal::float3 _e22 = n_5;
     metal::float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = as_type<float>(_e25);
@@ -1522,14 +1549,14 @@ metal::float3 spawn_origin_at(
     float error_1,
     metal::float3 dir_2
 ) {
-    metal::float3 n_5 = {};
-    n_5 = normal_5;
-    metal::float3 _e5 = n_5;
+    metal::float3 n_6 = {};
+    n_6 = normal_5;
+    metal::float3 _e5 = n_6;
     if (metal::dot(dir_2, _e5) < 0.0) {
-        metal::float3 _e9 = n_5;
-        n_5 = -(_e9);
+        metal::float3 _e9 = n_6;
+        n_6 = -(_e9);
     }
-    metal::float3 _e11 = n_5;
+    metal::float3 _e11 = n_6;
     metal::float3 _e12 = offset_origin(position_5, _e11, error_1);
     return _e12;
 }
@@ -1672,13 +1699,13 @@ metal::float3 trace(
                     Hit _e132 = hit_6;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
                     uint _e134 = spawn_count;
-                    uint n_8 = metal::min(metal::min(_e134, 1u), MAX_SPAWN);
-                    if (n_8 > 0u) {
+                    uint n_9 = metal::min(metal::min(_e134, 1u), MAX_SPAWN);
+                    if (n_9 > 0u) {
                         Ray _e141 = s_ray;
                         Hit _e142 = hit_6;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_8, 0u};
+                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_9, 0u};
                         i_3 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u);
                         bool loop_init_3 = true;
@@ -1691,7 +1718,7 @@ metal::float3 trace(
                             }
                             loop_init_3 = false;
                             uint _e155 = i_3;
-                            if (_e155 >= n_8) {
+                            if (_e155 >= n_9) {
                                 break;
                             }
                             uint _e158 = i_3;

@@ -158,7 +158,13 @@ const GAMMA_6_: f32 = 0.0000003576281f;
 const GAMMA_4_: f32 = 0.00000023841864f;
 const HAS_SECONDARY_RAYS: bool = false;
 const HAS_BACKGROUND: bool = true;
+const TEXTURE_WRAP_MASK: u32 = 3u;
+const TEXTURE_WRAP_V_SHIFT: u32 = 2u;
+const TEXTURE_NEAREST: u32 = 16u;
+const TEXTURE_WRAP_MIRROR: u32 = 2u;
+const TEXTURE_WRAP_CLAMP: u32 = 1u;
 const TEXTURE_FORMAT_RGBA8_SRGB: u32 = 0u;
+const TEXTURE_FORMAT_RGBA8_UNORM: u32 = 2u;
 const RGBA16F_TEXEL_WORDS: u32 = 2u;
 const INV_PI: f32 = 0.31830987f;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
@@ -509,19 +515,19 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
             }
         } else {
             let _e62 = child;
-            let n_6 = nodes[(base_1 + _e62)];
+            let n_7 = nodes[(base_1 + _e62)];
             let _e68 = best.t;
-            let _e69 = children_entry(n_6, origin_4, scale_2, ray_4, _e8, _e68);
+            let _e69 = children_entry(n_7, origin_4, scale_2, ray_4, _e8, _e68);
             let tl = _e69.x;
             let tr = _e69.y;
             let _e73 = F32_INF;
             let _e77 = F32_INF;
             if ((tl < bitcast<f32>(_e73)) && (tr < bitcast<f32>(_e77))) {
-                near = n_6.a;
-                far = n_6.b;
+                near = n_7.a;
+                far = n_7.b;
                 if ((tr < tl) != shadow) {
-                    near = n_6.b;
-                    far = n_6.a;
+                    near = n_7.b;
+                    far = n_7.a;
                 }
                 let _e89 = sp_1;
                 if (_e89 < BLAS_STACK) {
@@ -537,12 +543,12 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
             }
             let _e105 = F32_INF;
             if (tl < bitcast<f32>(_e105)) {
-                child = n_6.a;
+                child = n_7.a;
                 continue;
             }
             let _e110 = F32_INF;
             if (tr < bitcast<f32>(_e110)) {
-                child = n_6.b;
+                child = n_7.b;
                 continue;
             }
         }
@@ -780,19 +786,19 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
             }
         } else {
             let _e63 = child_1;
-            let n_7 = nodes[(base_2 + _e63)];
+            let n_8 = nodes[(base_2 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_7, origin_5, scale_3, ray_7, _e16, _e69);
+            let _e70 = children_entry(n_8, origin_5, scale_3, ray_7, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
             let _e78 = F32_INF;
             if ((tl_1 < bitcast<f32>(_e74)) && (tr_1 < bitcast<f32>(_e78))) {
-                near_1 = n_7.a;
-                far_1 = n_7.b;
+                near_1 = n_8.a;
+                far_1 = n_8.b;
                 if (tr_1 < tl_1) {
-                    near_1 = n_7.b;
-                    far_1 = n_7.a;
+                    near_1 = n_8.b;
+                    far_1 = n_8.a;
                 }
                 let _e89 = sp_2;
                 if (_e89 < TLAS_STACK) {
@@ -808,12 +814,12 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
             }
             let _e103 = F32_INF;
             if (tl_1 < bitcast<f32>(_e103)) {
-                child_1 = n_7.a;
+                child_1 = n_8.a;
                 continue;
             }
             let _e108 = F32_INF;
             if (tr_1 < bitcast<f32>(_e108)) {
-                child_1 = n_7.b;
+                child_1 = n_8.b;
                 continue;
             }
         }
@@ -887,6 +893,16 @@ fn rem_i32_(a_4: i32, b_5: i32) -> i32 {
     return select((a_4 - (divisor_4 * (a_4 / divisor_4))), 0i, by_zero_4);
 }
 
+fn wrap_texel(x_2: i32, n_3: i32, mode: u32) -> i32 {
+    let _e3 = rem_i32_(x_2, n_3);
+    let _e5 = rem_i32_((_e3 + n_3), n_3);
+    let _e8 = rem_i32_(x_2, (2i * n_3));
+    let _e14 = rem_i32_((_e8 + (2i * n_3)), (2i * n_3));
+    let mirror = select(_e14, (((2i * n_3) - 1i) - _e14), (_e14 >= n_3));
+    let wrapped = select(_e5, mirror, (mode == TEXTURE_WRAP_MIRROR));
+    return select(wrapped, min(max(x_2, 0i), (n_3 - 1i)), (mode == TEXTURE_WRAP_CLAMP));
+}
+
 fn srgb_channel(c_2: f32) -> f32 {
     if (c_2 <= 0.04045f) {
         return (c_2 / 12.92f);
@@ -894,51 +910,58 @@ fn srgb_channel(c_2: f32) -> f32 {
     return pow(((c_2 + 0.055f) / 1.055f), 2.4f);
 }
 
-fn texel_at(t: u32, x_2: i32, y: i32) -> vec4<f32> {
+fn texel_at(t: u32, xi: u32, yi: u32) -> vec4<f32> {
     let base_3 = params[t];
     let _e10 = params[(t + 1u)];
-    let w_3 = max(_e10, 1u);
-    let _e17 = params[(t + 2u)];
-    let h_2 = max(_e17, 1u);
+    let index = ((yi * max(_e10, 1u)) + xi);
     let format = params[(t + 3u)];
-    let _e26 = rem_i32_(x_2, i32(w_3));
-    let _e30 = rem_i32_((_e26 + i32(w_3)), i32(w_3));
-    let xi = u32(_e30);
-    let _e33 = rem_i32_(y, i32(h_2));
-    let _e37 = rem_i32_((_e33 + i32(h_2)), i32(h_2));
-    let yi = u32(_e37);
-    let index = ((yi * w_3) + xi);
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        let _e46 = texels[(base_3 + index)];
-        let c_7 = unpack4x8unorm(_e46);
-        let _e49 = srgb_channel(c_7.x);
-        let _e51 = srgb_channel(c_7.y);
-        let _e53 = srgb_channel(c_7.z);
-        return vec4<f32>(_e49, _e51, _e53, c_7.w);
+        let _e25 = texels[(base_3 + index)];
+        let c_7 = unpack4x8unorm(_e25);
+        let _e28 = srgb_channel(c_7.x);
+        let _e30 = srgb_channel(c_7.y);
+        let _e32 = srgb_channel(c_7.z);
+        return vec4<f32>(_e28, _e30, _e32, c_7.w);
     }
-    let _e61 = texels[(base_3 + (index * RGBA16F_TEXEL_WORDS))];
-    let rg = unpack2x16float(_e61);
-    let _e70 = texels[((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
-    let ba = unpack2x16float(_e70);
+    if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
+        let _e40 = texels[(base_3 + index)];
+        return unpack4x8unorm(_e40);
+    }
+    let _e47 = texels[(base_3 + (index * RGBA16F_TEXEL_WORDS))];
+    let rg = unpack2x16float(_e47);
+    let _e56 = texels[((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
+    let ba = unpack2x16float(_e56);
     return vec4<f32>(rg, ba);
 }
 
 fn sample_texture(t_1: u32, uv: vec2<f32>) -> vec4<f32> {
     let _e6 = params[(t_1 + 1u)];
-    let w_4 = f32(max(_e6, 1u));
+    let wi = i32(max(_e6, 1u));
     let _e14 = params[(t_1 + 2u)];
-    let h_3 = f32(max(_e14, 1u));
-    let p_7 = ((uv * vec2<f32>(w_4, h_3)) - vec2(0.5f));
+    let hi_1 = i32(max(_e14, 1u));
+    let sampler_ = params[(t_1 + 4u)];
+    let mu = (sampler_ & TEXTURE_WRAP_MASK);
+    let mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
+    let q_3 = (uv * vec2<f32>(f32(wi), f32(hi_1)));
+    let p_7 = select((q_3 - vec2(0.5f)), floor(q_3), ((sampler_ & TEXTURE_NEAREST) != 0u));
     let f_1 = floor(p_7);
     let fr = (p_7 - f_1);
-    let _e26 = i32_from_f32_(f_1.x);
-    let _e28 = i32_from_f32_(f_1.y);
-    let _e29 = texel_at(t_1, _e26, _e28);
-    let _e32 = texel_at(t_1, (_e26 + 1i), _e28);
-    let a_7 = mix(_e29, _e32, vec4(fr.x));
-    let _e38 = texel_at(t_1, _e26, (_e28 + 1i));
-    let _e43 = texel_at(t_1, (_e26 + 1i), (_e28 + 1i));
-    let b_8 = mix(_e38, _e43, vec4(fr.x));
+    let _e47 = i32_from_f32_(f_1.x);
+    let _e49 = i32_from_f32_(f_1.y);
+    let _e50 = wrap_texel(_e47, wi, mu);
+    let x0_ = u32(_e50);
+    let _e54 = wrap_texel((_e47 + 1i), wi, mu);
+    let x1_ = u32(_e54);
+    let _e56 = wrap_texel(_e49, hi_1, mv);
+    let y0_ = u32(_e56);
+    let _e60 = wrap_texel((_e49 + 1i), hi_1, mv);
+    let y1_ = u32(_e60);
+    let _e62 = texel_at(t_1, x0_, y0_);
+    let _e63 = texel_at(t_1, x1_, y0_);
+    let a_7 = mix(_e62, _e63, vec4(fr.x));
+    let _e67 = texel_at(t_1, x0_, y1_);
+    let _e68 = texel_at(t_1, x1_, y1_);
+    let b_8 = mix(_e67, _e68, vec4(fr.x));
     return mix(a_7, b_8, vec4(fr.y));
 }
 
@@ -969,27 +992,27 @@ fn step_toward(x_3: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
     return select(x_3, moved, !((s == vec3(0f))));
 }
 
-fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_3 = ((2f * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    let offset_10 = (n_3 * vec3(d_3));
+fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
+    let d_3 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    let offset_10 = (n_4 * vec3(d_3));
     let _e17 = step_toward((p_5 + offset_10), offset_10);
     return _e17;
 }
 
 fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> Ray {
-    var n_4: vec3<f32>;
+    var n_5: vec3<f32>;
     var tmax_4: f32;
 
-    n_4 = normal;
-    let _e5 = n_4;
+    n_5 = normal;
+    let _e5 = n_5;
     if (dot(dir, _e5) < 0f) {
-        let _e9 = n_4;
-        n_4 = -(_e9);
+        let _e9 = n_5;
+        n_5 = -(_e9);
     }
     let a_8 = abs(position);
     let _e13 = hit_error;
     let error_3 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
-    let _e22 = n_4;
+    let _e22 = n_5;
     let _e23 = offset_origin(position, _e22, error_3);
     let _e25 = F32_INF;
     tmax_4 = bitcast<f32>(_e25);
@@ -1117,15 +1140,15 @@ fn dispatch_secondary_rays(type_id_5: u32, offset_9: u32, ray_17: Ray, hit_4: Hi
 }
 
 fn spawn_origin_at(position_5: vec3<f32>, normal_5: vec3<f32>, error_1: f32, dir_2: vec3<f32>) -> vec3<f32> {
-    var n_5: vec3<f32>;
+    var n_6: vec3<f32>;
 
-    n_5 = normal_5;
-    let _e5 = n_5;
+    n_6 = normal_5;
+    let _e5 = n_6;
     if (dot(dir_2, _e5) < 0f) {
-        let _e9 = n_5;
-        n_5 = -(_e9);
+        let _e9 = n_6;
+        n_6 = -(_e9);
     }
-    let _e11 = n_5;
+    let _e11 = n_6;
     let _e12 = offset_origin(position_5, _e11, error_1);
     return _e12;
 }
@@ -1245,17 +1268,17 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                     let _e132 = hit_6;
                     dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
                     let _e134 = spawn_count;
-                    let n_8 = min(min(_e134, 1u), MAX_SPAWN);
-                    if (n_8 > 0u) {
+                    let n_9 = min(min(_e134, 1u), MAX_SPAWN);
+                    if (n_9 > 0u) {
                         let _e141 = s_ray;
                         let _e142 = hit_6;
                         let _e143 = s_error;
                         let _e145 = s_c.slot;
-                        f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
+                        f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_9, 0u);
                         i_3 = 0u;
                         loop {
                             let _e155 = i_3;
-                            if (_e155 >= n_8) {
+                            if (_e155 >= n_9) {
                                 break;
                             }
                             let _e158 = i_3;

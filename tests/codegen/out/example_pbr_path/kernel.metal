@@ -1,0 +1,2457 @@
+// language: metal2.1
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct _mslBufferSizes {
+    uint size3;
+    uint size5;
+    uint size6;
+    uint size7;
+    uint size10;
+    uint size15;
+    uint size16;
+};
+
+struct TileParams {
+    metal::uint2 origin;
+    metal::uint2 extent;
+    metal::uint2 image_size;
+    uint tile_index;
+    uint frame;
+};
+struct FrameUniforms {
+    uint samples_per_pass;
+    uint total_samples;
+    uint seed;
+    uint tlas_root;
+    uint instance_count;
+    uint light_count;
+    uint light_table;
+    uint medium_count;
+    uint medium_table;
+    uint camera_type;
+    uint camera_offset;
+    uint background_type;
+    uint background_offset;
+    uint path_slots;
+};
+struct Ray {
+    metal::packed_float3 origin;
+    float tmin;
+    metal::packed_float3 dir;
+    float tmax;
+    uint depth;
+    uint kind;
+    uint medium;
+    char _pad7[4];
+};
+typedef uint type_4[1];
+struct Pinhole {
+    metal::float3 position;
+    metal::float3 look_at;
+    metal::packed_float3 up;
+    float fov;
+};
+struct Candidate {
+    float t;
+    uint slot;
+    uint primitive;
+    char _pad3[4];
+    metal::float2 uv;
+    char _pad4[8];
+    metal::float3 normal;
+};
+struct GpuInstance {
+    metal::float4 world_to_object_0_;
+    metal::float4 world_to_object_1_;
+    metal::float4 world_to_object_2_;
+    metal::float4 object_to_world_0_;
+    metal::float4 object_to_world_1_;
+    metal::float4 object_to_world_2_;
+    uint geometry_type;
+    uint geometry_offset;
+    uint material_type;
+    uint material_offset;
+    uint blas_root;
+    uint triangle_offset;
+    uint flags;
+    uint object;
+};
+typedef GpuInstance type_8[1];
+struct TriangleRay {
+    metal::packed_float3 origin;
+    uint kx;
+    uint ky;
+    uint kz;
+    char _pad4[8];
+    metal::packed_float3 shear;
+    bool valid;
+    char _pad6[3];
+};
+struct GpuNode {
+    metal::packed_float3 min;
+    uint a;
+    metal::packed_float3 max;
+    uint b;
+};
+typedef GpuNode type_9[1];
+typedef metal::float4 type_10[1];
+struct type_12 {
+    uint inner[72];
+};
+struct Sphere {
+    metal::packed_float3 center;
+    float radius;
+};
+struct Intersection {
+    float t;
+    char _pad1[12];
+    metal::float3 normal;
+    metal::float2 uv;
+    char _pad3[8];
+};
+struct Hit {
+    metal::packed_float3 position;
+    float t;
+    metal::float3 normal;
+    metal::float3 geometric_normal;
+    metal::float2 uv;
+    bool front_face;
+    char _pad6[3];
+    uint instance;
+    uint primitive;
+    char _pad8[12];
+};
+struct Triangle {
+    metal::float3 v0_;
+    metal::float3 v1_;
+    metal::float3 v2_;
+};
+typedef metal::uint4 type_14[1];
+struct ConstantBackground {
+    metal::float3 color;
+};
+struct PathDiffuse {
+    metal::packed_float3 albedo;
+    uint roulette_depth;
+};
+struct LightSample {
+    metal::packed_float3 dir;
+    float dist;
+    metal::packed_float3 radiance;
+    float pdf;
+};
+struct QuadLight {
+    metal::float3 corner;
+    metal::float3 edge_u;
+    metal::float3 edge_v;
+    metal::packed_float3 color;
+    float intensity;
+    uint lamp;
+    char _pad6[12];
+};
+struct SphereLight {
+    metal::packed_float3 position;
+    float radius;
+    metal::packed_float3 color;
+    float intensity;
+    uint lamp;
+    char _pad5[12];
+};
+struct QuadLamp {
+    metal::packed_float3 color;
+    float intensity;
+    float area;
+    char _pad3[12];
+};
+struct SphereLamp {
+    metal::packed_float3 color;
+    float intensity;
+    float radius;
+    char _pad3[12];
+};
+struct PathPbr {
+    metal::packed_float3 base_color;
+    float metallic;
+    float roughness;
+    char _pad3[12];
+    metal::packed_float3 emissive;
+    uint roulette_depth;
+};
+struct type_16 {
+    metal::float3 inner[1];
+};
+struct PbrSample {
+    metal::float3 dir;
+    metal::packed_float3 weight;
+    float pdf;
+};
+typedef metal::atomic_uint type_19[1];
+constant uint WORKGROUP_WIDTH = 8u;
+constant uint WORKGROUP_HEIGHT = 8u;
+constant uint NO_HIT = 4294967295u;
+constant uint SCATTER = 1000003u;
+constant uint RAY_CAMERA = 0u;
+constant bool HAS_MEDIA = false;
+constant uint MEDIUM_ENTRY_STRIDE = 1u;
+constant uint MESH_GEOMETRY = 4294967295u;
+constant uint NODE_LEAF_BIT = 2147483648u;
+constant uint NODE_COUNT_SHIFT = 27u;
+constant uint NODE_COUNT_MASK = 15u;
+constant uint NODE_FIRST_MASK = 134217727u;
+constant uint BLAS_STACK = 64u;
+constant uint TLAS_STACK = 8u;
+constant float TAU = 6.2831855;
+constant float INV_PI = 0.31830987;
+constant float POINT_ERROR = 0.0000019073486;
+constant float GAMMA_1_ = 0.00000005960465;
+constant float GAMMA_6_ = 0.0000003576281;
+constant float GAMMA_4_ = 0.00000023841864;
+constant bool HAS_SECONDARY_RAYS = true;
+constant bool HAS_BACKGROUND = true;
+constant uint LIGHT_ENTRY_STRIDE = 2u;
+constant float LIGHT_ERROR = 0.00000047683716;
+constant uint RAY_SHADOW = 2u;
+constant float MIS_BOUNCE_LENGTH = 3.0;
+constant float PBR_MIN_ALPHA = 0.001;
+constant uint FLAG_MEDIUM = 4u;
+constant uint FLAG_SECONDARY_RAYS = 2u;
+constant uint MAX_DEPTH = 5u;
+constant uint ROULETTE_DEPTH = 2u;
+constant uint RAY_SECONDARY = 1u;
+
+metal::uint2 naga_div(metal::uint2 lhs, metal::uint2 rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+metal::uint2 div_vec2u(
+    metal::uint2 a,
+    metal::uint2 b
+) {
+    metal::bool2 by_zero = b == metal::uint2(0u);
+    metal::uint2 divisor = metal::select(b, metal::uint2(1u), by_zero);
+    return naga_div(a, divisor);
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint rem_u32_(
+    uint a_1,
+    uint b_1
+) {
+    bool by_zero_1 = b_1 == 0u;
+    uint divisor_1 = by_zero_1 ? 1u : b_1;
+    return by_zero_1 ? 0u : naga_mod(a_1, divisor_1);
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint div_u32_(
+    uint a_2,
+    uint b_2
+) {
+    bool by_zero_2 = b_2 == 0u;
+    uint divisor_2 = by_zero_2 ? 1u : b_2;
+    return naga_div(a_2, divisor_2);
+}
+
+metal::uint2 naga_mod(metal::uint2 lhs, metal::uint2 rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+metal::uint2 rem_vec2u(
+    metal::uint2 a_3,
+    metal::uint2 b_3
+) {
+    metal::uint2 _e3 = metal::uint2(0u);
+    metal::bool2 by_zero_3 = b_3 == _e3;
+    metal::uint2 divisor_3 = metal::select(b_3, metal::uint2(1u), by_zero_3);
+    return metal::select(naga_mod(a_3, divisor_3), _e3, by_zero_3);
+}
+
+metal::uint2 scattered_local(
+    metal::uint2 id,
+    constant TileParams& tile
+) {
+    TileParams tile_1 = tile;
+    metal::uint2 size = metal::uint2(WORKGROUP_WIDTH, WORKGROUP_HEIGHT);
+    metal::uint2 _e11 = div_vec2u((tile_1.extent + size) - metal::uint2(1u), size);
+    uint count = _e11.x * _e11.y;
+    if (count == 0u) {
+        return metal::uint2(NO_HIT);
+    }
+    metal::uint2 _e19 = div_vec2u(id, size);
+    uint order = (_e19.y * _e11.x) + _e19.x;
+    uint _e26 = rem_u32_(SCATTER, count);
+    uint _e28 = rem_u32_(order * _e26, count);
+    uint _e30 = rem_u32_(_e28, _e11.x);
+    uint _e32 = div_u32_(_e28, _e11.x);
+    metal::uint2 _e35 = rem_vec2u(id, size);
+    return (metal::uint2(_e30, _e32) * size) + _e35;
+}
+
+uint pcg_hash(
+    uint x
+) {
+    uint state = (x * 747796405u) + 2891336453u;
+    uint word = ((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+void rng_seed(
+    metal::uint2 pixel,
+    uint sample,
+    uint seed,
+    thread uint& rng_state
+) {
+    uint h = {};
+    uint _e5 = pcg_hash(seed);
+    uint _e7 = pcg_hash(sample ^ _e5);
+    uint _e9 = pcg_hash(pixel.y ^ _e7);
+    uint _e11 = pcg_hash(pixel.x ^ _e9);
+    h = _e11;
+    uint _e13 = h;
+    if (_e13 == 0u) {
+        h = 1u;
+    }
+    uint _e17 = h;
+    rng_state = _e17;
+    return;
+}
+
+Pinhole load_Pinhole(
+    uint offset,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset + 0u];
+    uint _e11 = params[offset + 1u];
+    uint _e17 = params[offset + 2u];
+    uint _e24 = params[offset + 4u];
+    uint _e30 = params[offset + 5u];
+    uint _e36 = params[offset + 6u];
+    uint _e43 = params[offset + 8u];
+    uint _e49 = params[offset + 9u];
+    uint _e55 = params[offset + 10u];
+    uint _e62 = params[offset + 11u];
+    return Pinhole {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), metal::float3(as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)), as_type<float>(_e62)};
+}
+
+metal::uint2 image_size_query(
+    constant TileParams& tile
+) {
+    TileParams _e1 = tile;
+    return _e1.image_size;
+}
+
+uint samples_per_pixel_query(
+    constant FrameUniforms& frame
+) {
+    FrameUniforms _e1 = frame;
+    return _e1.total_samples;
+}
+
+float rand_next(
+    thread uint& rng_state
+) {
+    uint _e1 = rng_state;
+    uint s_3 = (_e1 * 747796405u) + 2891336453u;
+    rng_state = s_3;
+    uint word_1 = ((s_3 >> (((s_3 >> 28u) + 4u) & 31u)) ^ s_3) * 277803737u;
+    uint r_3 = (word_1 >> 22u) ^ word_1;
+    return static_cast<float>(r_3 >> 8u) * (1.0 / 16777216.0);
+}
+
+metal::float2 rand2_next(
+    thread uint& rng_state
+) {
+    float _e0 = rand_next(rng_state);
+    float _e1 = rand_next(rng_state);
+    return metal::float2(_e0, _e1);
+}
+
+metal::float3 normalize_vec3f(
+    metal::float3 v
+) {
+    return (metal::dot(v, v) >= 0.000000000000000000000000000000000000011754944) ? metal::normalize(v) : metal::float3(0.0);
+}
+
+Ray pinhole_ray(
+    Pinhole cam,
+    metal::uint2 pixel_1,
+    uint sample_1,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    thread uint& F32_INF
+) {
+    metal::float2 jitter = {};
+    metal::uint2 _e2 = image_size_query(tile);
+    metal::float2 size_1 = static_cast<metal::float2>(_e2);
+    jitter = metal::float2(0.5);
+    uint _e7 = samples_per_pixel_query(frame);
+    if (_e7 > 1u) {
+        metal::float2 _e10 = rand2_next(rng_state);
+        jitter = _e10;
+    }
+    metal::float2 _e12 = jitter;
+    metal::float2 ndc = (((static_cast<metal::float2>(pixel_1) + _e12) / size_1) * metal::float2(2.0)) - metal::float2(1.0);
+    metal::float3 _e24 = normalize_vec3f(cam.look_at - cam.position);
+    metal::float3 _e27 = normalize_vec3f(metal::cross(_e24, cam.up));
+    metal::float3 up = metal::cross(_e27, _e24);
+    float h_1 = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
+    float aspect = size_1.x / size_1.y;
+    metal::float3 _e48 = normalize_vec3f((_e24 + (_e27 * metal::float3((ndc.x * h_1) * aspect))) - (up * metal::float3(ndc.y * h_1)));
+    uint _e52 = F32_INF;
+    return Ray {cam.position, 0.0, _e48, as_type<float>(_e52), 0u, 0u, 0u};
+}
+
+Ray dispatch_ray_generation(
+    uint type_id,
+    uint offset_1,
+    metal::uint2 pixel_2,
+    uint sample_2,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Pinhole _e3 = load_Pinhole(offset_1, params, _buffer_sizes);
+    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2, tile, frame, rng_state, F32_INF);
+    return _e4;
+}
+
+Candidate no_candidate(
+    float tmax
+) {
+    return Candidate {tmax, NO_HIT, 0u, {}, metal::float2(0.0), {}, metal::float3(0.0)};
+}
+
+Ray to_object(
+    GpuInstance inst,
+    Ray ray
+) {
+    Ray r = {};
+    r = ray;
+    metal::float4 o = metal::float4(ray.origin, 1.0);
+    metal::float4 d_1 = metal::float4(ray.dir, 0.0);
+    r.origin = metal::float3(metal::dot(inst.world_to_object_0_, o), metal::dot(inst.world_to_object_1_, o), metal::dot(inst.world_to_object_2_, o));
+    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_1), metal::dot(inst.world_to_object_1_, d_1), metal::dot(inst.world_to_object_2_, d_1));
+    Ray _e25 = r;
+    return _e25;
+}
+
+metal::float3 safe_inverse(
+    metal::float3 d
+) {
+    metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
+    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_4 * tiny, metal::abs(d) < tiny);
+    return metal::float3(1.0) / dd;
+}
+
+TriangleRay prepare_triangle_ray(
+    Ray ray_1
+) {
+    metal::float3 d_2 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 ad = metal::abs(d_2);
+    bool y_gt = ad.y > ad.x;
+    uint kz = (ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u);
+    uint kx0_ = (kz == 2u) ? 0u : (kz + 1u);
+    uint ky0_ = (kz >= 1u) ? (kz - 1u) : (kz + 2u);
+    float dz = d_2[metal::min(kz, 2u)];
+    bool flip = dz < 0.0;
+    uint kx = flip ? ky0_ : kx0_;
+    uint ky = flip ? kx0_ : ky0_;
+    metal::uint3 inf_bits = metal::uint3(2139095040u);
+    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_2) & metal::uint3(2147483647u)) < inf_bits);
+    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_2[metal::min(kx, 2u)] / dz, d_2[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
+}
+
+metal::float3 hit_triangle(
+    TriangleRay r_1,
+    uint slot,
+    float tmin,
+    float tmax_1,
+    thread uint& F32_INF,
+    device type_10 const& triangles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float4 _e8 = triangles[slot * 3u];
+    metal::float3 a_4 = _e8.xyz - r_1.origin;
+    metal::float4 _e18 = triangles[(slot * 3u) + 1u];
+    metal::float3 b_5 = _e18.xyz - r_1.origin;
+    metal::float4 _e28 = triangles[(slot * 3u) + 2u];
+    metal::float3 c_6 = _e28.xyz - r_1.origin;
+    float ax = a_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_4[metal::min(r_1.kz, 2u)]);
+    float ay = a_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_4[metal::min(r_1.kz, 2u)]);
+    float bx = b_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_5[metal::min(r_1.kz, 2u)]);
+    float by = b_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_5[metal::min(r_1.kz, 2u)]);
+    float cx = c_6[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_6[metal::min(r_1.kz, 2u)]);
+    float cy = c_6[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_6[metal::min(r_1.kz, 2u)]);
+    float u_3 = (cx * by) - (cy * bx);
+    float v_4 = (ax * cy) - (ay * cx);
+    float w_1 = (bx * ay) - (by * ax);
+    bool outside = (((u_3 < 0.0) || (v_4 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_4 > 0.0)) || (w_1 > 0.0));
+    float det = (u_3 + v_4) + w_1;
+    float rcp = 1.0 / det;
+    float t_4 = (((u_3 * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_4 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear[2] * c_6[metal::min(r_1.kz, 2u)]))) * rcp;
+    bool hit_12 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1);
+    uint _e173 = F32_INF;
+    return hit_12 ? metal::float3(t_4, v_4 * rcp, w_1 * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+}
+
+bool accept(
+    GpuInstance inst_1,
+    Ray ray_2,
+    Candidate c
+) {
+    return true;
+}
+
+metal::uint3 node_box_lo(
+    metal::uint3 p
+) {
+    return metal::uint3(p.x & 65535u, p.x >> 16u, p.y & 65535u);
+}
+
+metal::float3 node_point(
+    metal::float3 origin,
+    metal::float3 scale,
+    metal::uint3 q
+) {
+    return origin + (static_cast<metal::float3>(q) * scale);
+}
+
+metal::uint3 node_box_hi(
+    metal::uint3 p_1
+) {
+    return metal::uint3(p_1.y >> 16u, p_1.z & 65535u, p_1.z >> 16u);
+}
+
+float slab(
+    metal::float3 lo,
+    metal::float3 hi,
+    metal::float3 origin_1,
+    metal::float3 inv_dir,
+    float tmin_1,
+    float tmax_2,
+    thread uint& F32_INF
+) {
+    metal::float3 t0_ = (lo - origin_1) * inv_dir;
+    metal::float3 t1_1 = (hi - origin_1) * inv_dir;
+    metal::float3 near_2 = metal::min(t0_, t1_1);
+    metal::float3 far_2 = metal::max(t0_, t1_1);
+    float enter = metal::max(metal::max(near_2.x, near_2.y), metal::max(near_2.z, tmin_1));
+    float exit = metal::min(metal::min(far_2.x, far_2.y) * 1.0000005, metal::min(far_2.z * 1.0000005, tmax_2));
+    if (enter <= exit) {
+        return enter;
+    }
+    uint _e30 = F32_INF;
+    return as_type<float>(_e30);
+}
+
+metal::float2 children_entry(
+    GpuNode n,
+    metal::float3 origin_2,
+    metal::float3 scale_1,
+    Ray ray_3,
+    metal::float3 inv,
+    float tmax_3,
+    thread uint& F32_INF
+) {
+    metal::uint3 lq = as_type<metal::uint3>(n.min);
+    metal::uint3 rq = as_type<metal::uint3>(n.max);
+    metal::uint3 _e10 = node_box_lo(lq);
+    metal::float3 _e11 = node_point(origin_2, scale_1, _e10);
+    metal::uint3 _e12 = node_box_hi(lq);
+    metal::float3 _e13 = node_point(origin_2, scale_1, _e12);
+    float _e16 = slab(_e11, _e13, ray_3.origin, inv, ray_3.tmin, tmax_3, F32_INF);
+    metal::uint3 _e17 = node_box_lo(rq);
+    metal::float3 _e18 = node_point(origin_2, scale_1, _e17);
+    metal::uint3 _e19 = node_box_hi(rq);
+    metal::float3 _e20 = node_point(origin_2, scale_1, _e19);
+    float _e23 = slab(_e18, _e20, ray_3.origin, inv, ray_3.tmin, tmax_3, F32_INF);
+    return metal::float2(_e16, _e23);
+}
+
+metal::uint2 pop(
+    uint base,
+    uint sp,
+    thread type_12& traversal_stack
+) {
+    if (sp == 0u) {
+        return metal::uint2(NO_HIT, 0u);
+    }
+    uint _e14 = traversal_stack.inner[metal::min((base + sp) - 1u, 71u)];
+    return metal::uint2(_e14, sp - 1u);
+}
+
+Candidate intersect_mesh(
+    GpuInstance inst_2,
+    uint slot_1,
+    Ray world_ray,
+    Ray ray_4,
+    Candidate best_in,
+    bool shadow,
+    thread uint& F32_INF,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Candidate best = {};
+    uint sp_1 = {};
+    uint child = {};
+    uint k = {};
+    uint near = {};
+    uint far = {};
+    best = best_in;
+    metal::float3 _e8 = safe_inverse(ray_4.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_4);
+    uint base_5 = inst_2.blas_root;
+    GpuNode header_1 = nodes[base_5];
+    metal::float3 origin_4 = header_1.min;
+    metal::float3 scale_2 = header_1.max;
+    sp_1 = 0u;
+    child = header_1.a;
+    uint2 loop_bound = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        uint _e20 = child;
+        if ((_e20 & NODE_LEAF_BIT) != 0u) {
+            uint _e25 = child;
+            uint count_1 = (_e25 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK;
+            uint _e32 = child;
+            uint first = _e32 & NODE_FIRST_MASK;
+            k = 0u;
+            uint2 loop_bound_1 = uint2(4294967295u);
+            bool loop_init = true;
+            while(true) {
+                if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+                loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+                if (!loop_init) {
+                    uint _e59 = k;
+                    k = _e59 + 1u;
+                }
+                loop_init = false;
+                uint _e37 = k;
+                if (_e37 >= count_1) {
+                    break;
+                }
+                uint _e41 = k;
+                uint prim = (inst_2.triangle_offset + first) + _e41;
+                float _e45 = best.t;
+                metal::float3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45, F32_INF, triangles, _buffer_sizes);
+                uint _e49 = F32_INF;
+                if (_e46.x < as_type<float>(_e49)) {
+                    Candidate c_7 = Candidate {_e46.x, slot_1, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e57 = accept(inst_2, world_ray, c_7);
+                    if (_e57) {
+                        best = c_7;
+                        if (shadow) {
+                            Candidate _e58 = best;
+                            return _e58;
+                        }
+                    }
+                }
+            }
+        } else {
+            uint _e62 = child;
+            GpuNode n_11 = nodes[base_5 + _e62];
+            float _e68 = best.t;
+            metal::float2 _e69 = children_entry(n_11, origin_4, scale_2, ray_4, _e8, _e68, F32_INF);
+            float tl = _e69.x;
+            float tr = _e69.y;
+            uint _e73 = F32_INF;
+            uint _e77 = F32_INF;
+            if ((tl < as_type<float>(_e73)) && (tr < as_type<float>(_e77))) {
+                near = n_11.a;
+                far = n_11.b;
+                if ((tr < tl) != shadow) {
+                    near = n_11.b;
+                    far = n_11.a;
+                }
+                uint _e89 = sp_1;
+                if (_e89 < BLAS_STACK) {
+                    uint _e93 = sp_1;
+                    uint _e95 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e93, 71u)] = _e95;
+                    uint _e100 = sp_1;
+                    sp_1 = _e100 + 1u;
+                }
+                uint _e103 = near;
+                child = _e103;
+                continue;
+            }
+            uint _e105 = F32_INF;
+            if (tl < as_type<float>(_e105)) {
+                child = n_11.a;
+                continue;
+            }
+            uint _e110 = F32_INF;
+            if (tr < as_type<float>(_e110)) {
+                child = n_11.b;
+                continue;
+            }
+        }
+        uint _e115 = sp_1;
+        metal::uint2 _e116 = pop(TLAS_STACK, _e115, traversal_stack);
+        if (_e116.x == NO_HIT) {
+            break;
+        }
+        child = _e116.x;
+        sp_1 = _e116.y;
+    }
+    Candidate _e122 = best;
+    return _e122;
+}
+
+Sphere load_Sphere(
+    uint offset_2,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_2 + 0u];
+    uint _e11 = params[offset_2 + 1u];
+    uint _e17 = params[offset_2 + 2u];
+    uint _e24 = params[offset_2 + 3u];
+    return Sphere {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), as_type<float>(_e24)};
+}
+
+Intersection sphere_intersect(
+    Sphere s,
+    Ray ray_5,
+    thread uint& F32_INF
+) {
+    float t = {};
+    metal::float3 f = ray_5.origin - s.center;
+    float a_5 = metal::dot(ray_5.dir, ray_5.dir);
+    float b_6 = -(metal::dot(f, ray_5.dir));
+    metal::float3 l_6 = f + (ray_5.dir * metal::float3(b_6 / a_5));
+    float r2_ = s.radius * s.radius;
+    float disc = a_5 * (r2_ - metal::dot(l_6, l_6));
+    if (!((disc >= 0.0)) || !((a_5 > 0.0))) {
+        uint _e30 = F32_INF;
+        return Intersection {as_type<float>(_e30), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
+    }
+    float q_1 = b_6 + (((b_6 >= 0.0) ? 1.0 : -1.0) * metal::sqrt(disc));
+    float t0_1 = (metal::dot(f, f) - r2_) / q_1;
+    float t1_2 = q_1 / a_5;
+    t = metal::min(t0_1, t1_2);
+    float _e52 = t;
+    if (!((_e52 >= ray_5.tmin))) {
+        t = metal::max(t0_1, t1_2);
+    }
+    float _e57 = t;
+    float _e60 = t;
+    if (!(((_e57 >= ray_5.tmin) && (_e60 <= ray_5.tmax)))) {
+        uint _e66 = F32_INF;
+        return Intersection {as_type<float>(_e66), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
+    }
+    float _e76 = t;
+    metal::float3 _e82 = normalize_vec3f((ray_5.origin + (ray_5.dir * metal::float3(_e76))) - s.center);
+    float u_4 = ((_e82.x == 0.0) && (_e82.z == 0.0)) ? 0.5 : (0.5 + (metal::atan2(_e82.z, -(_e82.x)) / TAU));
+    metal::float2 uv = metal::float2(u_4, metal::acos(metal::min(metal::max(_e82.y, -1.0), 1.0)) * INV_PI);
+    float _e109 = t;
+    return Intersection {_e109, {}, _e82, uv};
+}
+
+Intersection dispatch_intersection(
+    uint type_id_1,
+    uint offset_3,
+    Ray ray_6,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Sphere _e2 = load_Sphere(offset_3, params, _buffer_sizes);
+    Intersection _e3 = sphere_intersect(_e2, ray_6, F32_INF);
+    return _e3;
+}
+
+Candidate intersect_object(
+    uint slot_2,
+    Ray ray_7,
+    Candidate best_1,
+    bool shadow_1,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Ray r_2 = {};
+    GpuInstance inst_6 = instances[slot_2];
+    Ray _e7 = to_object(inst_6, ray_7);
+    r_2 = _e7;
+    r_2.tmax = best_1.t;
+    if (inst_6.geometry_type == MESH_GEOMETRY) {
+        Ray _e14 = r_2;
+        Candidate _e15 = intersect_mesh(inst_6, slot_2, ray_7, _e14, best_1, shadow_1, F32_INF, nodes, triangles, traversal_stack, _buffer_sizes);
+        return _e15;
+    }
+    Ray _e18 = r_2;
+    Intersection _e19 = dispatch_intersection(inst_6.geometry_type, inst_6.geometry_offset, _e18, params, F32_INF, _buffer_sizes);
+    float _e22 = r_2.tmin;
+    float _e26 = r_2.tmax;
+    uint _e31 = F32_INF;
+    if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < as_type<float>(_e31))) {
+        Candidate c_8 = Candidate {_e19.t, slot_2, 0u, {}, _e19.uv, {}, _e19.normal};
+        bool _e40 = accept(inst_6, ray_7, c_8);
+        if (_e40) {
+            return c_8;
+        }
+    }
+    return best_1;
+}
+
+float point_error(
+    metal::float3 origin_3,
+    metal::float3 along
+) {
+    metal::float3 a_6 = metal::abs(origin_3) + metal::abs(along);
+    return POINT_ERROR * metal::max(metal::max(a_6.x, a_6.y), a_6.z);
+}
+
+Triangle load_triangle(
+    uint slot_3,
+    device type_10 const& triangles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float4 v0_1 = triangles[slot_3 * 3u];
+    metal::float4 v1_ = triangles[(slot_3 * 3u) + 1u];
+    metal::float4 v2_ = triangles[(slot_3 * 3u) + 2u];
+    return Triangle {v0_1.xyz, v1_.xyz, v2_.xyz};
+}
+
+metal::float3 point_to_world(
+    GpuInstance inst_3,
+    metal::float3 p_2
+) {
+    metal::float4 q_2 = metal::float4(p_2, 1.0);
+    return metal::float3(metal::dot(inst_3.object_to_world_0_, q_2), metal::dot(inst_3.object_to_world_1_, q_2), metal::dot(inst_3.object_to_world_2_, q_2));
+}
+
+float mesh_error(
+    GpuInstance inst_4,
+    metal::float3 v0_,
+    metal::float3 db1_,
+    metal::float3 db2_,
+    metal::float3 p_3
+) {
+    metal::float3 obj = (metal::float3(GAMMA_1_) * metal::abs(v0_)) + (metal::float3(GAMMA_6_) * (metal::abs(db1_) + metal::abs(db2_)));
+    metal::float4 q_3 = metal::float4(metal::abs(p_3), 1.0);
+    metal::float4 r0_ = metal::abs(inst_4.object_to_world_0_);
+    metal::float4 r1_ = metal::abs(inst_4.object_to_world_1_);
+    metal::float4 r2_1 = metal::abs(inst_4.object_to_world_2_);
+    metal::float3 rounding = metal::float3(GAMMA_4_) * metal::float3(metal::dot(r0_, q_3), metal::dot(r1_, q_3), metal::dot(r2_1, q_3));
+    metal::float3 carried = metal::float3(1.0 + GAMMA_4_) * metal::float3(metal::dot(r0_.xyz, obj), metal::dot(r1_.xyz, obj), metal::dot(r2_1.xyz, obj));
+    metal::float3 e = rounding + carried;
+    return metal::max(metal::max(e.x, e.y), e.z);
+}
+
+metal::float3 decode_octahedral(
+    uint bits
+) {
+    metal::float3 n_1 = {};
+    metal::float2 e_1 = metal::unpack_snorm2x16_to_float(bits);
+    n_1 = metal::float3(e_1.x, e_1.y, (1.0 - metal::abs(e_1.x)) - metal::abs(e_1.y));
+    float _e14 = n_1.z;
+    if (_e14 < 0.0) {
+        metal::float3 _e21 = n_1;
+        metal::float2 s_5 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float3 _e29 = n_1;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_5;
+        float _e37 = n_1.z;
+        n_1 = metal::float3(xy.x, xy.y, _e37);
+    }
+    metal::float3 _e39 = n_1;
+    metal::float3 _e40 = normalize_vec3f(_e39);
+    return _e40;
+}
+
+metal::float3 normal_to_world(
+    GpuInstance inst_5,
+    metal::float3 n_2
+) {
+    metal::float3 w_2 = ((inst_5.world_to_object_0_.xyz * metal::float3(n_2.x)) + (inst_5.world_to_object_1_.xyz * metal::float3(n_2.y))) + (inst_5.world_to_object_2_.xyz * metal::float3(n_2.z));
+    metal::float3 _e19 = normalize_vec3f(w_2);
+    return _e19;
+}
+
+Hit finish_hit(
+    Ray ray_8,
+    Candidate c_1,
+    device type_8 const& instances,
+    device type_10 const& triangles,
+    thread float& hit_error,
+    device type_14 const& attributes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Hit hit = {};
+    metal::float3 n_geo = {};
+    metal::float3 n_shade = {};
+    GpuInstance inst_7 = instances[c_1.slot];
+    float _e11 = point_error(ray_8.origin, ray_8.dir * metal::float3(c_1.t));
+    hit_error = _e11;
+    hit = Hit {ray_8.origin + (ray_8.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
+    n_geo = c_1.normal;
+    n_shade = c_1.normal;
+    if (inst_7.geometry_type == MESH_GEOMETRY) {
+        Triangle _e42 = load_triangle(c_1.primitive, triangles, _buffer_sizes);
+        metal::float2 b_7 = c_1.uv;
+        float w_3 = (1.0 - c_1.uv.x) - c_1.uv.y;
+        metal::float3 e1_ = _e42.v1_ - _e42.v0_;
+        metal::float3 e2_ = _e42.v2_ - _e42.v0_;
+        metal::float3 p_7 = _e42.v0_ + ((e1_ * metal::float3(c_1.uv.x)) + (e2_ * metal::float3(c_1.uv.y)));
+        metal::float3 _e65 = point_to_world(inst_7, p_7);
+        hit.position = _e65;
+        float _e73 = mesh_error(inst_7, _e42.v0_, e1_ * metal::float3(c_1.uv.x), e2_ * metal::float3(c_1.uv.y), p_7);
+        hit_error = _e73;
+        n_geo = metal::cross(e1_, e2_);
+        metal::uint4 a0_ = attributes[c_1.primitive * 2u];
+        metal::uint4 a1_ = attributes[(c_1.primitive * 2u) + 1u];
+        metal::float3 _e91 = decode_octahedral(a0_.x);
+        metal::float3 _e95 = decode_octahedral(a0_.y);
+        metal::float3 _e101 = decode_octahedral(a0_.z);
+        n_shade = ((_e91 * metal::float3(w_3)) + (_e95 * metal::float3(c_1.uv.x))) + (_e101 * metal::float3(c_1.uv.y));
+        metal::float3 _e106 = n_shade;
+        metal::float3 _e107 = n_shade;
+        if (metal::dot(_e106, _e107) < 0.000000000001) {
+            metal::float3 _e111 = n_geo;
+            n_shade = _e111;
+        }
+        metal::float2 uv0_ = float2(as_type<half2>(a0_.w));
+        metal::float2 uv1_ = float2(as_type<half2>(a1_.x));
+        metal::float2 uv2_ = float2(as_type<half2>(a1_.y));
+        hit.uv = ((uv0_ * metal::float2(w_3)) + (uv1_ * metal::float2(c_1.uv.x))) + (uv2_ * metal::float2(c_1.uv.y));
+        metal::float4 _e135 = triangles[c_1.primitive * 3u];
+        hit.primitive = as_type<uint>(_e135.w);
+    }
+    metal::float3 _e139 = n_geo;
+    metal::float3 _e140 = normal_to_world(inst_7, _e139);
+    hit.geometric_normal = _e140;
+    metal::float3 _e142 = n_shade;
+    metal::float3 _e143 = normal_to_world(inst_7, _e142);
+    hit.normal = _e143;
+    metal::float3 _e147 = hit.geometric_normal;
+    hit.front_face = metal::dot(ray_8.dir, _e147) < 0.0;
+    Hit _e151 = hit;
+    return _e151;
+}
+
+uint medium_at(
+    metal::float3 p_4,
+    uint exclude,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    device type_14 const& attributes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint inside = {};
+    float nearest = {};
+    uint i = {};
+    if (!(HAS_MEDIA)) {
+        return 0u;
+    }
+    FrameUniforms frame_1 = frame;
+    metal::float3 _e12 = normalize_vec3f(metal::float3(0.5773, 0.5774, 0.5775));
+    uint _e14 = F32_INF;
+    Ray probe = Ray {p_4, 0.0, _e12, as_type<float>(_e14), 0u, 0u, 0u};
+    inside = 0u;
+    uint _e23 = F32_INF;
+    nearest = as_type<float>(_e23);
+    uint end = frame_1.medium_count;
+    i = 0u;
+    uint2 loop_bound_2 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e59 = i;
+            i = _e59 + 1u;
+        }
+        loop_init_1 = false;
+        uint _e29 = i;
+        if (_e29 >= end) {
+            break;
+        }
+        uint _e32 = i;
+        uint slot_4 = params[frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE)];
+        if (slot_4 != exclude) {
+            uint _e41 = F32_INF;
+            Candidate _e43 = no_candidate(as_type<float>(_e41));
+            Candidate _e45 = intersect_object(slot_4, probe, _e43, false, params, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+            float _e50 = nearest;
+            if ((_e45.slot != NO_HIT) && (_e45.t < _e50)) {
+                Hit _e53 = finish_hit(probe, _e45, instances, triangles, hit_error, attributes, _buffer_sizes);
+                if (!(_e53.front_face)) {
+                    inside = slot_4 + 1u;
+                    nearest = _e45.t;
+                }
+            }
+        }
+    }
+    uint _e62 = inside;
+    return _e62;
+}
+
+metal::float3 node_frame_hi(
+    GpuNode header
+) {
+    metal::float3 _e5 = node_point(header.min, header.max, metal::uint3(65535u));
+    return _e5;
+}
+
+Candidate intersect_scene(
+    Ray ray_9,
+    bool shadow_2,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Candidate best_2 = {};
+    uint sp_2 = {};
+    uint child_1 = {};
+    uint near_1 = {};
+    uint far_1 = {};
+    uint _e3 = ray_count;
+    ray_count = _e3 + 1u;
+    Candidate _e7 = no_candidate(ray_9.tmax);
+    best_2 = _e7;
+    FrameUniforms frame_2 = frame;
+    if (frame_2.instance_count == 0u) {
+        Candidate _e14 = best_2;
+        return _e14;
+    }
+    metal::float3 _e16 = safe_inverse(ray_9.dir);
+    uint base_6 = frame_2.tlas_root;
+    GpuNode header_2 = nodes[base_6];
+    metal::float3 origin_5 = header_2.min;
+    metal::float3 scale_3 = header_2.max;
+    metal::float3 _e23 = node_frame_hi(header_2);
+    float _e27 = best_2.t;
+    float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27, F32_INF);
+    uint _e30 = F32_INF;
+    if (_e28 == as_type<float>(_e30)) {
+        Candidate _e33 = best_2;
+        return _e33;
+    }
+    sp_2 = 0u;
+    child_1 = header_2.a;
+    uint2 loop_bound_3 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        uint _e38 = child_1;
+        if ((_e38 & NODE_LEAF_BIT) != 0u) {
+            uint _e43 = child_1;
+            if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
+                uint _e52 = child_1;
+                Candidate _e55 = best_2;
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_9, _e55, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                best_2 = _e56;
+                uint _e58 = best_2.slot;
+                if (shadow_2 && (_e58 != NO_HIT)) {
+                    Candidate _e62 = best_2;
+                    return _e62;
+                }
+            }
+        } else {
+            uint _e63 = child_1;
+            GpuNode n_12 = nodes[base_6 + _e63];
+            float _e69 = best_2.t;
+            metal::float2 _e70 = children_entry(n_12, origin_5, scale_3, ray_9, _e16, _e69, F32_INF);
+            float tl_1 = _e70.x;
+            float tr_1 = _e70.y;
+            uint _e74 = F32_INF;
+            uint _e78 = F32_INF;
+            if ((tl_1 < as_type<float>(_e74)) && (tr_1 < as_type<float>(_e78))) {
+                near_1 = n_12.a;
+                far_1 = n_12.b;
+                if (tr_1 < tl_1) {
+                    near_1 = n_12.b;
+                    far_1 = n_12.a;
+                }
+                uint _e89 = sp_2;
+                if (_e89 < TLAS_STACK) {
+                    uint _e92 = sp_2;
+                    uint _e93 = far_1;
+                    traversal_stack.inner[metal::min(_e92, 71u)] = _e93;
+                    uint _e98 = sp_2;
+                    sp_2 = _e98 + 1u;
+                }
+                uint _e101 = near_1;
+                child_1 = _e101;
+                continue;
+            }
+            uint _e103 = F32_INF;
+            if (tl_1 < as_type<float>(_e103)) {
+                child_1 = n_12.a;
+                continue;
+            }
+            uint _e108 = F32_INF;
+            if (tr_1 < as_type<float>(_e108)) {
+                child_1 = n_12.b;
+                continue;
+            }
+        }
+        uint _e113 = sp_2;
+        metal::uint2 _e114 = pop(0u, _e113, traversal_stack);
+        if (_e114.x == NO_HIT) {
+            break;
+        }
+        child_1 = _e114.x;
+        sp_2 = _e114.y;
+    }
+    Candidate _e120 = best_2;
+    return _e120;
+}
+
+ConstantBackground load_ConstantBackground(
+    uint offset_4,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_4 + 0u];
+    uint _e11 = params[offset_4 + 1u];
+    uint _e17 = params[offset_4 + 2u];
+    return ConstantBackground {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17))};
+}
+
+metal::float3 constant_background(
+    ConstantBackground b_4,
+    Ray ray_10
+) {
+    return b_4.color;
+}
+
+metal::float3 dispatch_miss(
+    uint type_id_2,
+    uint offset_5,
+    Ray ray_11,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    ConstantBackground _e2 = load_ConstantBackground(offset_5, params, _buffer_sizes);
+    metal::float3 _e3 = constant_background(_e2, ray_11);
+    return _e3;
+}
+
+metal::float3 miss(
+    Ray ray_12,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!(HAS_BACKGROUND)) {
+        return metal::float3(0.0);
+    }
+    FrameUniforms frame_3 = frame;
+    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_12, params, _buffer_sizes);
+    return _e9;
+}
+
+PathDiffuse load_PathDiffuse(
+    uint offset_6,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_6 + 0u];
+    uint _e11 = params[offset_6 + 1u];
+    uint _e17 = params[offset_6 + 2u];
+    uint _e24 = params[offset_6 + 3u];
+    return PathDiffuse {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), _e24};
+}
+
+uint light_count_query(
+    constant FrameUniforms& frame
+) {
+    FrameUniforms _e1 = frame;
+    return _e1.light_count;
+}
+
+QuadLight load_QuadLight(
+    uint offset_7,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_7 + 0u];
+    uint _e11 = params[offset_7 + 1u];
+    uint _e17 = params[offset_7 + 2u];
+    uint _e24 = params[offset_7 + 4u];
+    uint _e30 = params[offset_7 + 5u];
+    uint _e36 = params[offset_7 + 6u];
+    uint _e43 = params[offset_7 + 8u];
+    uint _e49 = params[offset_7 + 9u];
+    uint _e55 = params[offset_7 + 10u];
+    uint _e62 = params[offset_7 + 12u];
+    uint _e68 = params[offset_7 + 13u];
+    uint _e74 = params[offset_7 + 14u];
+    uint _e81 = params[offset_7 + 15u];
+    uint _e87 = params[offset_7 + 16u];
+    return QuadLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), metal::float3(as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)), metal::float3(as_type<float>(_e62), as_type<float>(_e68), as_type<float>(_e74)), as_type<float>(_e81), _e87};
+}
+
+metal::float3 step_toward(
+    metal::float3 x_1,
+    metal::float3 s_1
+) {
+    metal::uint3 bits_1 = as_type<metal::uint3>(x_1);
+    metal::bool3 up_1 = (metal::sign(x_1) * metal::sign(s_1)) > metal::float3(0.0);
+    metal::float3 stepped = as_type<metal::float3>(metal::select(bits_1 - metal::uint3(1u), bits_1 + metal::uint3(1u), up_1));
+    metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s_1 > metal::float3(0.0));
+    metal::float3 moved = metal::select(stepped, from_zero, x_1 == metal::float3(0.0));
+    return metal::select(x_1, moved, !((s_1 == metal::float3(0.0))));
+}
+
+metal::float3 offset_origin(
+    metal::float3 p_5,
+    metal::float3 n_3,
+    float error
+) {
+    float d_3 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
+    metal::float3 offset_16 = n_3 * metal::float3(d_3);
+    metal::float3 _e17 = step_toward(p_5 + offset_16, offset_16);
+    return _e17;
+}
+
+Ray shadow_ray(
+    metal::float3 position,
+    metal::float3 normal,
+    metal::float3 dir,
+    float dist,
+    thread uint& F32_INF,
+    thread float& hit_error
+) {
+    metal::float3 n_4 = {};
+    float tmax_4 = {};
+    n_4 = normal;
+    metal::float3 _e5 = n_4;
+    if (metal::dot(dir, _e5) < 0.0) {
+        metal::float3 _e9 = n_4;
+        n_4 = -(_e9);
+    }
+    metal::float3 a_7 = metal::abs(position);
+    float _e13 = hit_error;
+    float error_3 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_7.x, a_7.y), a_7.z));
+    metal::float3 _e22 = n_4;
+    metal::float3 _e23 = offset_origin(position, _e22, error_3);
+    uint _e25 = F32_INF;
+    tmax_4 = as_type<float>(_e25);
+    uint _e29 = F32_INF;
+    if (dist < as_type<float>(_e29)) {
+        metal::float3 light = position + (dir * metal::float3(dist));
+        float dd_1 = metal::dot(dir, dir);
+        float along_1 = metal::dot(light - _e23, dir) / dd_1;
+        metal::float3 l_7 = metal::abs(position) + metal::abs(dir * metal::float3(dist));
+        tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_7.x, l_7.y), l_7.z)) / metal::sqrt(dd_1));
+    }
+    float _e59 = tmax_4;
+    return Ray {_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u};
+}
+
+float shadow_query(
+    metal::float3 position_1,
+    metal::float3 normal_1,
+    metal::float3 dir_1,
+    float dist_1,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
+    Candidate _e6 = intersect_scene(_e4, true, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return (_e6.slot != NO_HIT) ? 0.0 : 1.0;
+}
+
+LightSample quad_light(
+    QuadLight l,
+    metal::float3 position_2,
+    metal::float3 normal_2,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 c_9 = metal::cross(l.edge_u, l.edge_v);
+    float area = metal::length(c_9);
+    metal::float2 _e7 = rand2_next(rng_state);
+    metal::float3 to_light = ((l.corner + (l.edge_u * metal::float3(_e7.x))) + (l.edge_v * metal::float3(_e7.y))) - position_2;
+    float dist2_ = metal::dot(to_light, to_light);
+    float dist_2 = metal::sqrt(dist2_);
+    metal::float3 dir_7 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
+    float cos_light = -(metal::dot(dir_7, c_9)) / metal::max(area, 0.000000000000000000000000000001);
+    if (!((cos_light > 0.0)) || !((dist2_ > 0.0))) {
+        return LightSample {dir_7, dist_2, metal::float3(0.0), 0.0};
+    }
+    float _e42 = shadow_query(position_2, normal_2, dir_7, dist_2, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    float strength = ((l.intensity * cos_light) * area) / dist2_;
+    float pdf_1 = (l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0;
+    return LightSample {dir_7, dist_2, (l.color * metal::float3(strength)) * metal::float3(_e42), pdf_1};
+}
+
+SphereLight load_SphereLight(
+    uint offset_8,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_8 + 0u];
+    uint _e11 = params[offset_8 + 1u];
+    uint _e17 = params[offset_8 + 2u];
+    uint _e24 = params[offset_8 + 3u];
+    uint _e30 = params[offset_8 + 4u];
+    uint _e36 = params[offset_8 + 5u];
+    uint _e42 = params[offset_8 + 6u];
+    uint _e49 = params[offset_8 + 7u];
+    uint _e55 = params[offset_8 + 8u];
+    return SphereLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), as_type<float>(_e24), metal::float3(as_type<float>(_e30), as_type<float>(_e36), as_type<float>(_e42)), as_type<float>(_e49), _e55};
+}
+
+metal::float3x3 orthonormal_basis(
+    metal::float3 n_5
+) {
+    float sign = ((as_type<uint>(n_5.z) & 2147483648u) != 0u) ? -1.0 : 1.0;
+    float a_8 = -1.0 / (sign + n_5.z);
+    float b_8 = (n_5.x * n_5.y) * a_8;
+    float _e16 = sign * n_5.x;
+    return metal::float3x3(metal::float3(1.0 + ((_e16 * n_5.x) * a_8), sign * b_8, -(_e16)), metal::float3(b_8, sign + ((n_5.y * n_5.y) * a_8), -(n_5.y)), n_5);
+}
+
+LightSample sphere_light(
+    SphereLight l_1,
+    metal::float3 position_3,
+    metal::float3 normal_3,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 to_center = l_1.position - position_3;
+    float d2_ = metal::dot(to_center, to_center);
+    float r2_2 = metal::max(l_1.radius * l_1.radius, 0.00000000000000000001);
+    if (d2_ <= r2_2) {
+        return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
+    }
+    metal::float3 w_4 = to_center * metal::float3(metal::rsqrt(d2_));
+    float s2_ = r2_2 / d2_;
+    float cos_max = metal::sqrt(1.0 - s2_);
+    float one_minus_cos_max = s2_ / (1.0 + cos_max);
+    metal::float2 _e31 = rand2_next(rng_state);
+    float cos_t = 1.0 - (_e31.x * one_minus_cos_max);
+    float sin_t = metal::sqrt(metal::max(1.0 - (cos_t * cos_t), 0.0));
+    float phi = TAU * _e31.y;
+    metal::float3x3 _e45 = orthonormal_basis(w_4);
+    metal::float3 _e52 = normalize_vec3f(_e45 * metal::float3(metal::cos(phi) * sin_t, metal::sin(phi) * sin_t, cos_t));
+    float along_2 = metal::dot(to_center, _e52);
+    float dist_3 = metal::max(along_2 - metal::sqrt(metal::max(r2_2 - (d2_ - (along_2 * along_2)), 0.0)), 0.0);
+    float weight_4 = ((l_1.intensity * 2.0) * one_minus_cos_max) / r2_2;
+    float _e68 = shadow_query(position_3, normal_3, _e52, dist_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    float pdf_2 = (l_1.lamp == 1u) ? (1.0 / (TAU * one_minus_cos_max)) : 0.0;
+    return LightSample {_e52, dist_3, (l_1.color * metal::float3(weight_4)) * metal::float3(_e68), pdf_2};
+}
+
+LightSample dispatch_light(
+    uint type_id_3,
+    uint offset_9,
+    metal::float3 position_4,
+    metal::float3 normal_4,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    switch(type_id_3) {
+        case 0u: {
+            QuadLight _e4 = load_QuadLight(offset_9, params, _buffer_sizes);
+            LightSample _e5 = quad_light(_e4, position_4, normal_4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+            return _e5;
+        }
+        case 1u: {
+            SphereLight _e6 = load_SphereLight(offset_9, params, _buffer_sizes);
+            LightSample _e7 = sphere_light(_e6, position_4, normal_4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+            return _e7;
+        }
+        default: {
+            break;
+        }
+    }
+    return LightSample {};
+}
+
+LightSample sample_light_query(
+    uint i_1,
+    metal::float3 position_5,
+    metal::float3 normal_5,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    FrameUniforms frame_4 = frame;
+    if (i_1 >= frame_4.light_count) {
+        return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
+    }
+    uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
+    uint _e22 = params[entry];
+    uint _e27 = params[entry + 1u];
+    LightSample _e28 = dispatch_light(_e22, _e27, position_5, normal_5, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    return _e28;
+}
+
+float mis_weight(
+    float p_6,
+    float other,
+    thread uint& F32_INF
+) {
+    if (!((p_6 > 0.0))) {
+        return 0.0;
+    }
+    float r_4 = metal::max(other, 0.0) / p_6;
+    if (!((r_4 < 1000000000000000000.0))) {
+        uint _e15 = F32_INF;
+        uint _e19 = F32_INF;
+        return ((p_6 == as_type<float>(_e15)) && (other < as_type<float>(_e19))) ? 1.0 : 0.0;
+    }
+    return 1.0 / (1.0 + (r_4 * r_4));
+}
+
+float mis_light_weight(
+    LightSample l_2,
+    float bsdf_pdf,
+    thread uint& F32_INF
+) {
+    if (!((l_2.pdf > 0.0))) {
+        return 1.0;
+    }
+    float _e8 = mis_weight(l_2.pdf, bsdf_pdf, F32_INF);
+    return _e8;
+}
+
+metal::float3 path_diffuse_shade(
+    PathDiffuse m,
+    Ray ray_13,
+    Hit hit_1,
+    metal::float3 secondary,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 direct = {};
+    uint i_2 = {};
+    metal::float3 n_13 = metal::faceforward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
+    direct = metal::float3(0.0);
+    uint _e12 = light_count_query(frame);
+    i_2 = 0u;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e33 = i_2;
+            i_2 = _e33 + 1u;
+        }
+        loop_init_2 = false;
+        uint _e14 = i_2;
+        if (_e14 >= _e12) {
+            break;
+        }
+        uint _e16 = i_2;
+        LightSample _e19 = sample_light_query(_e16, hit_1.position, hit_1.geometric_normal, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+        float c_10 = metal::max(metal::dot(n_13, _e19.dir), 0.0);
+        metal::float3 _e24 = direct;
+        float _e28 = mis_light_weight(_e19, c_10 * INV_PI, F32_INF);
+        direct = _e24 + (_e19.radiance * metal::float3(c_10 * _e28));
+    }
+    metal::float3 _e40 = direct;
+    return ((m.albedo * metal::float3(INV_PI)) * _e40) + secondary;
+}
+
+QuadLamp load_QuadLamp(
+    uint offset_10,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_10 + 0u];
+    uint _e11 = params[offset_10 + 1u];
+    uint _e17 = params[offset_10 + 2u];
+    uint _e24 = params[offset_10 + 3u];
+    uint _e30 = params[offset_10 + 4u];
+    return QuadLamp {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), as_type<float>(_e24), as_type<float>(_e30)};
+}
+
+bool after_nee_bounce(
+    Ray ray_14
+) {
+    return metal::dot(ray_14.dir, ray_14.dir) > 2.0;
+}
+
+float bounce_pdf(
+    Ray ray_15
+) {
+    float x_3 = metal::length(ray_15.dir) - MIS_BOUNCE_LENGTH;
+    if (!((x_3 > -0.25))) {
+        return 0.0;
+    }
+    return metal::exp(metal::max(x_3, 0.0) * 90.0) - 1.0;
+}
+
+metal::float3 quad_lamp_shade(
+    QuadLamp m_1,
+    Ray ray_16,
+    Hit hit_2,
+    thread uint& F32_INF
+) {
+    if (!(hit_2.front_face)) {
+        return metal::float3(0.0);
+    }
+    metal::float3 le = m_1.color * metal::float3(m_1.intensity);
+    bool _e11 = after_nee_bounce(ray_16);
+    if (!(_e11)) {
+        return le;
+    }
+    float _e13 = bounce_pdf(ray_16);
+    float len = metal::length(ray_16.dir);
+    float dist_4 = hit_2.t * len;
+    float cos_l = metal::abs(metal::dot(hit_2.geometric_normal, ray_16.dir)) / len;
+    float pl = (dist_4 * dist_4) / metal::max(cos_l * m_1.area, 0.000000000000000000000000000001);
+    float _e29 = mis_weight(_e13, pl, F32_INF);
+    return le * metal::float3(_e29);
+}
+
+SphereLamp load_SphereLamp(
+    uint offset_11,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_11 + 0u];
+    uint _e11 = params[offset_11 + 1u];
+    uint _e17 = params[offset_11 + 2u];
+    uint _e24 = params[offset_11 + 3u];
+    uint _e30 = params[offset_11 + 4u];
+    return SphereLamp {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), as_type<float>(_e24), as_type<float>(_e30)};
+}
+
+metal::float3 sphere_lamp_shade(
+    SphereLamp m_2,
+    Ray ray_17,
+    Hit hit_3,
+    thread uint& F32_INF
+) {
+    if (!(hit_3.front_face)) {
+        return metal::float3(0.0);
+    }
+    float r2_3 = metal::max(m_2.radius * m_2.radius, 0.00000000000000000001);
+    metal::float3 le_1 = m_2.color * metal::float3((m_2.intensity * INV_PI) / r2_3);
+    bool _e19 = after_nee_bounce(ray_17);
+    if (!(_e19)) {
+        return le_1;
+    }
+    float _e21 = bounce_pdf(ray_17);
+    metal::float3 center = hit_3.position - (hit_3.normal * metal::float3(m_2.radius));
+    metal::float3 to_center_1 = center - ray_17.origin;
+    float s2_1 = r2_3 / metal::max(metal::dot(to_center_1, to_center_1), r2_3);
+    float one_minus_cos_max_1 = s2_1 / (1.0 + metal::sqrt(1.0 - s2_1));
+    float pl_1 = 1.0 / metal::max(TAU * one_minus_cos_max_1, 0.000000000000000000000000000001);
+    float _e45 = mis_weight(_e21, pl_1, F32_INF);
+    return le_1 * metal::float3(_e45);
+}
+
+PathPbr load_PathPbr(
+    uint offset_12,
+    device type_4 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_12 + 0u];
+    uint _e11 = params[offset_12 + 1u];
+    uint _e17 = params[offset_12 + 2u];
+    uint _e24 = params[offset_12 + 3u];
+    uint _e30 = params[offset_12 + 4u];
+    uint _e36 = params[offset_12 + 8u];
+    uint _e42 = params[offset_12 + 9u];
+    uint _e48 = params[offset_12 + 10u];
+    uint _e55 = params[offset_12 + 11u];
+    return PathPbr {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), as_type<float>(_e24), as_type<float>(_e30), {}, metal::float3(as_type<float>(_e36), as_type<float>(_e42), as_type<float>(_e48)), _e55};
+}
+
+metal::float3 path_pbr_ng(
+    Ray ray_18,
+    Hit hit_4
+) {
+    return metal::faceforward(hit_4.geometric_normal, ray_18.dir, hit_4.geometric_normal);
+}
+
+metal::float3 path_pbr_n(
+    Ray ray_19,
+    Hit hit_5
+) {
+    metal::float3 _e2 = path_pbr_ng(ray_19, hit_5);
+    metal::float3 n_14 = metal::faceforward(hit_5.normal, -(_e2), hit_5.normal);
+    return (metal::dot(n_14, ray_19.dir) < 0.0) ? n_14 : _e2;
+}
+
+float pbr_alpha2_(
+    float roughness
+) {
+    float a_9 = metal::max(metal::saturate(roughness) * metal::saturate(roughness), PBR_MIN_ALPHA);
+    return a_9 * a_9;
+}
+
+metal::float3 pbr_fresnel(
+    metal::float3 f0_,
+    float c_2
+) {
+    float k_1 = 1.0 - metal::saturate(c_2);
+    float k2_ = k_1 * k_1;
+    return f0_ + ((metal::float3(1.0) - f0_) * metal::float3((k2_ * k2_) * k_1));
+}
+
+float pbr_ggx_d(
+    float ndh,
+    float a2_
+) {
+    float d_4 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
+    return (a2_ * INV_PI) / (d_4 * d_4);
+}
+
+float pbr_smith_v(
+    float ndl,
+    float ndv,
+    float a2_1
+) {
+    float gv = ndl * metal::sqrt(((ndv * ndv) * (1.0 - a2_1)) + a2_1);
+    float gl = ndv * metal::sqrt(((ndl * ndl) * (1.0 - a2_1)) + a2_1);
+    return 0.5 / metal::max(gv + gl, 0.00000000000000000001);
+}
+
+metal::float3 pbr_eval(
+    metal::float3 base_1,
+    float metallic,
+    float roughness_1,
+    metal::float3 n_6,
+    metal::float3 v_1,
+    metal::float3 l_3
+) {
+    float ndv_3 = metal::dot(n_6, v_1);
+    float ndl_1 = metal::dot(n_6, l_3);
+    if (!((ndv_3 > 0.0)) || !((ndl_1 > 0.0))) {
+        return metal::float3(0.0);
+    }
+    float metal_ = metal::saturate(metallic);
+    float _e18 = pbr_alpha2_(roughness_1);
+    metal::float3 f0_1 = metal::mix(metal::float3(0.04), base_1, metal::float3(metal_));
+    metal::float3 _e24 = normalize_vec3f(v_1 + l_3);
+    metal::float3 _e26 = pbr_fresnel(f0_1, metal::dot(v_1, _e24));
+    float _e29 = pbr_ggx_d(metal::saturate(metal::dot(n_6, _e24)), _e18);
+    float _e30 = pbr_smith_v(ndl_1, ndv_3, _e18);
+    metal::float3 spec = _e26 * metal::float3(_e29 * _e30);
+    metal::float3 diffuse = ((metal::float3(1.0) - _e26) * base_1) * metal::float3((1.0 - metal_) * INV_PI);
+    return (diffuse + spec) * metal::float3(ndl_1);
+}
+
+float luminance(
+    metal::float3 c_3
+) {
+    return metal::dot(c_3, metal::float3(0.2126, 0.7152, 0.0722));
+}
+
+float pbr_specular_chance(
+    metal::float3 base_2,
+    float metallic_1,
+    float ndv_1
+) {
+    float metal_1 = metal::saturate(metallic_1);
+    metal::float3 _e8 = pbr_fresnel(metal::mix(metal::float3(0.04), base_2, metal::float3(metal_1)), ndv_1);
+    float _e9 = luminance(_e8);
+    float _e18 = luminance((base_2 * metal::float3(1.0 - metal_1)) * (metal::float3(1.0) - _e8));
+    if (!((_e18 > 0.0))) {
+        return 1.0;
+    }
+    if (!((_e9 > 0.0))) {
+        return 0.0;
+    }
+    return metal::min(metal::max(_e9 / (_e9 + _e18), 0.1), 0.9);
+}
+
+float pbr_specular_pdf(
+    float ndh_1,
+    float ndv_2,
+    float a2_2
+) {
+    float _e3 = pbr_ggx_d(ndh_1, a2_2);
+    return (_e3 * 0.5) / (ndv_2 + metal::sqrt(a2_2 + (((1.0 - a2_2) * ndv_2) * ndv_2)));
+}
+
+float pbr_pdf(
+    metal::float3 base_3,
+    float metallic_2,
+    float roughness_2,
+    metal::float3 n_7,
+    metal::float3 v_2,
+    metal::float3 l_4
+) {
+    float ndv_4 = metal::dot(n_7, v_2);
+    float ndl_2 = metal::dot(n_7, l_4);
+    if (!((ndv_4 > 0.0)) || !((ndl_2 > 0.0))) {
+        return 0.0;
+    }
+    float _e16 = pbr_alpha2_(roughness_2);
+    float _e17 = pbr_specular_chance(base_3, metallic_2, ndv_4);
+    metal::float3 _e19 = normalize_vec3f(v_2 + l_4);
+    float _e22 = pbr_specular_pdf(metal::saturate(metal::dot(n_7, _e19)), ndv_4, _e16);
+    return (_e17 * _e22) + (((1.0 - _e17) * ndl_2) * INV_PI);
+}
+
+metal::float3 path_pbr_shade(
+    PathPbr m_3,
+    Ray ray_20,
+    Hit hit_6,
+    metal::float3 secondary_1,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 direct_1 = {};
+    uint i_3 = {};
+    float w = {};
+    metal::float3 _e4 = path_pbr_n(ray_20, hit_6);
+    metal::float3 _e6 = normalize_vec3f(ray_20.dir);
+    metal::float3 v_5 = -(_e6);
+    direct_1 = metal::float3(0.0);
+    uint _e12 = light_count_query(frame);
+    i_3 = 0u;
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e49 = i_3;
+            i_3 = _e49 + 1u;
+        }
+        loop_init_3 = false;
+        uint _e14 = i_3;
+        if (_e14 >= _e12) {
+            break;
+        }
+        uint _e16 = i_3;
+        LightSample _e19 = sample_light_query(_e16, hit_6.position, hit_6.geometric_normal, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+        if (metal::any(_e19.radiance > metal::float3(0.0))) {
+            metal::float3 _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_5, _e19.dir);
+            w = 1.0;
+            if (_e19.pdf > 0.0) {
+                float _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_5, _e19.dir);
+                float _e41 = mis_weight(_e19.pdf, _e40, F32_INF);
+                w = _e41;
+            }
+            metal::float3 _e42 = direct_1;
+            float _e45 = w;
+            direct_1 = _e42 + ((_e19.radiance * _e29) * metal::float3(_e45));
+        }
+    }
+    metal::float3 _e53 = direct_1;
+    return (m_3.emissive + _e53) + secondary_1;
+}
+
+metal::float3 dispatch_closest_hit(
+    uint type_id_4,
+    uint offset_13,
+    Ray ray_21,
+    Hit hit_7,
+    metal::float3 secondary_2,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    switch(type_id_4) {
+        case 0u: {
+            PathDiffuse _e5 = load_PathDiffuse(offset_13, params, _buffer_sizes);
+            metal::float3 _e6 = path_diffuse_shade(_e5, ray_21, hit_7, secondary_2, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+            return _e6;
+        }
+        case 1u: {
+            QuadLamp _e7 = load_QuadLamp(offset_13, params, _buffer_sizes);
+            metal::float3 _e8 = quad_lamp_shade(_e7, ray_21, hit_7, F32_INF);
+            return _e8;
+        }
+        case 2u: {
+            SphereLamp _e9 = load_SphereLamp(offset_13, params, _buffer_sizes);
+            metal::float3 _e10 = sphere_lamp_shade(_e9, ray_21, hit_7, F32_INF);
+            return _e10;
+        }
+        case 3u: {
+            PathPbr _e11 = load_PathPbr(offset_13, params, _buffer_sizes);
+            metal::float3 _e12 = path_pbr_shade(_e11, ray_21, hit_7, secondary_2, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+            return _e12;
+        }
+        default: {
+            break;
+        }
+    }
+    return metal::float3 {};
+}
+
+metal::float3 shade_direct(
+    Ray ray_22,
+    Candidate c_4,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    device type_14 const& attributes,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    GpuInstance inst_8 = instances[c_4.slot];
+    Hit _e6 = finish_hit(ray_22, c_4, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    return _e11;
+}
+
+metal::float3 dispatch_medium(
+    uint type_id_5,
+    uint offset_14,
+    Ray ray_23,
+    float t_1,
+    metal::float3 radiance
+) {
+    return metal::float3 {};
+}
+
+metal::float3 through_medium(
+    Ray ray_24,
+    float t_2,
+    metal::float3 radiance_1,
+    device type_8 const& instances,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    if (!(HAS_MEDIA)) {
+        return radiance_1;
+    }
+    if (ray_24.medium == 0u) {
+        return radiance_1;
+    }
+    GpuInstance inst_9 = instances[ray_24.medium - 1u];
+    if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
+        return radiance_1;
+    }
+    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_24, t_2, radiance_1);
+    return _e21;
+}
+
+metal::float3 sample_cosine_hemisphere(
+    metal::float3 n_8,
+    metal::float2 u
+) {
+    float r_5 = metal::sqrt(u.x);
+    float phi_1 = 6.2831855 * u.y;
+    metal::float3 local = metal::float3(r_5 * metal::cos(phi_1), r_5 * metal::sin(phi_1), metal::sqrt(metal::max(1.0 - u.x, 0.0)));
+    metal::float3x3 _e17 = orthonormal_basis(n_8);
+    return _e17 * local;
+}
+
+metal::float3 mis_bounce_dir(
+    metal::float3 dir_2,
+    float pdf
+) {
+    float x_4 = metal::min(metal::log(1.0 + metal::max(pdf, 0.0)) * (1.0 / 90.0), 0.999);
+    return dir_2 * metal::float3(MIS_BOUNCE_LENGTH + x_4);
+}
+
+void rt_spawn(
+    metal::float3 dir_3,
+    metal::float3 weight,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count
+) {
+    uint _e3 = spawn_count;
+    if (_e3 < 1u) {
+        spawn_dirs.inner[_e3] = dir_3;
+        spawn_weights.inner[_e3] = weight;
+        spawn_count = _e3 + 1u;
+    }
+}
+
+void path_diffuse_rays(
+    PathDiffuse m_4,
+    Ray ray_25,
+    Hit hit_8,
+    thread uint& rng_state,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count
+) {
+    metal::float3 weight_1 = {};
+    metal::float3 ng = hit_8.front_face ? hit_8.geometric_normal : -(hit_8.geometric_normal);
+    metal::float3 n_15 = metal::faceforward(hit_8.normal, -(ng), hit_8.normal);
+    metal::float2 _e12 = rand2_next(rng_state);
+    metal::float3 _e13 = sample_cosine_hemisphere(n_15, _e12);
+    weight_1 = m_4.albedo;
+    if (ray_25.depth >= m_4.roulette_depth) {
+        float q_4 = metal::saturate(metal::max(m_4.albedo[0], metal::max(m_4.albedo[1], m_4.albedo[2])));
+        float _e28 = rand_next(rng_state);
+        if (_e28 >= q_4) {
+            return;
+        }
+        weight_1 = m_4.albedo / metal::float3(q_4);
+    }
+    if (metal::dot(_e13, ng) > 0.0) {
+        metal::float3 _e41 = mis_bounce_dir(_e13, metal::max(metal::dot(n_15, _e13), 0.0) * INV_PI);
+        metal::float3 _e42 = weight_1;
+        rt_spawn(_e41, _e42, spawn_dirs, spawn_weights, spawn_count);
+    }
+    return;
+}
+
+metal::float3 pbr_sample_vndf(
+    metal::float3 ve,
+    float alpha,
+    metal::float2 u_1
+) {
+    metal::float3 t1_ = {};
+    metal::float3 _e9 = normalize_vec3f(metal::float3(alpha * ve.x, alpha * ve.y, ve.z));
+    float lensq = (_e9.x * _e9.x) + (_e9.y * _e9.y);
+    t1_ = metal::float3(1.0, 0.0, 0.0);
+    if (lensq > 0.0) {
+        t1_ = metal::float3(-(_e9.y), _e9.x, 0.0) * metal::float3(metal::rsqrt(lensq));
+    }
+    metal::float3 _e32 = t1_;
+    metal::float3 t2_ = metal::cross(_e9, _e32);
+    float r_6 = metal::sqrt(u_1.x);
+    float phi_2 = TAU * u_1.y;
+    float p1_ = r_6 * metal::cos(phi_2);
+    float s_6 = 0.5 * (1.0 + _e9.z);
+    float p2_ = ((1.0 - s_6) * metal::sqrt(metal::max(1.0 - (p1_ * p1_), 0.0))) + ((s_6 * r_6) * metal::sin(phi_2));
+    metal::float3 _e59 = t1_;
+    metal::float3 nh = ((_e59 * metal::float3(p1_)) + (t2_ * metal::float3(p2_))) + (_e9 * metal::float3(metal::sqrt(metal::max((1.0 - (p1_ * p1_)) - (p2_ * p2_), 0.0))));
+    metal::float3 _e84 = normalize_vec3f(metal::float3(alpha * nh.x, alpha * nh.y, metal::max(nh.z, 0.0)));
+    return _e84;
+}
+
+PbrSample pbr_sample(
+    metal::float3 base_4,
+    float metallic_3,
+    float roughness_3,
+    metal::float3 n_9,
+    metal::float3 v_3,
+    metal::float3 u_2
+) {
+    metal::float3 l_5 = {};
+    float ndv_5 = metal::dot(n_9, v_3);
+    if (!((ndv_5 > 0.0))) {
+        return PbrSample {n_9, metal::float3(0.0), 0.0};
+    }
+    float _e14 = pbr_specular_chance(base_4, metallic_3, ndv_5);
+    l_5 = metal::float3(0.0);
+    if (u_2.x < _e14) {
+        metal::float3x3 _e20 = orthonormal_basis(n_9);
+        float _e21 = pbr_alpha2_(roughness_3);
+        metal::float3 _e26 = pbr_sample_vndf(metal::transpose(_e20) * v_3, metal::sqrt(_e21), u_2.yz);
+        metal::float3 h_2 = _e20 * _e26;
+        l_5 = metal::reflect(-(v_3), h_2);
+    } else {
+        metal::float3 _e31 = sample_cosine_hemisphere(n_9, u_2.yz);
+        l_5 = _e31;
+    }
+    metal::float3 _e32 = l_5;
+    float _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_3, _e32);
+    if (!((_e33 > 0.0))) {
+        metal::float3 _e37 = l_5;
+        return PbrSample {_e37, metal::float3(0.0), 0.0};
+    }
+    metal::float3 _e42 = l_5;
+    metal::float3 _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_3, _e42);
+    metal::float3 weight_5 = _e43 / metal::float3(_e33);
+    metal::float3 _e46 = l_5;
+    return PbrSample {_e46, weight_5, _e33};
+}
+
+void path_pbr_rays(
+    PathPbr m_5,
+    Ray ray_26,
+    Hit hit_9,
+    thread uint& rng_state,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count
+) {
+    metal::float3 weight_2 = {};
+    metal::float3 _e3 = path_pbr_ng(ray_26, hit_9);
+    metal::float3 _e4 = path_pbr_n(ray_26, hit_9);
+    metal::float3 _e6 = normalize_vec3f(ray_26.dir);
+    metal::float3 v_6 = -(_e6);
+    float _e11 = rand_next(rng_state);
+    metal::float2 _e12 = rand2_next(rng_state);
+    PbrSample _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_6, metal::float3(_e11, _e12));
+    if (!((_e14.pdf > 0.0)) || !((metal::dot(_e14.dir, _e3) > 0.0))) {
+        return;
+    }
+    weight_2 = _e14.weight;
+    if (ray_26.depth >= m_5.roulette_depth) {
+        float _e31 = weight_2.x;
+        float _e33 = weight_2.y;
+        float _e35 = weight_2.z;
+        float q_5 = metal::min(metal::max(_e31, metal::max(_e33, _e35)), 1.0);
+        float _e40 = rand_next(rng_state);
+        if (!((_e40 < q_5))) {
+            return;
+        }
+        metal::float3 _e43 = weight_2;
+        weight_2 = _e43 / metal::float3(q_5);
+    }
+    metal::float3 _e48 = mis_bounce_dir(_e14.dir, _e14.pdf);
+    metal::float3 _e49 = weight_2;
+    rt_spawn(_e48, _e49, spawn_dirs, spawn_weights, spawn_count);
+    return;
+}
+
+void dispatch_secondary_rays(
+    uint type_id_6,
+    uint offset_15,
+    Ray ray_27,
+    Hit hit_10,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    switch(type_id_6) {
+        case 0u: {
+            PathDiffuse _e4 = load_PathDiffuse(offset_15, params, _buffer_sizes);
+            path_diffuse_rays(_e4, ray_27, hit_10, rng_state, spawn_dirs, spawn_weights, spawn_count);
+            return;
+        }
+        case 3u: {
+            PathPbr _e5 = load_PathPbr(offset_15, params, _buffer_sizes);
+            path_pbr_rays(_e5, ray_27, hit_10, rng_state, spawn_dirs, spawn_weights, spawn_count);
+            return;
+        }
+        default: {
+            break;
+        }
+    }
+    return;
+}
+
+metal::float3 spawn_origin_at(
+    metal::float3 position_6,
+    metal::float3 normal_6,
+    float error_1,
+    metal::float3 dir_4
+) {
+    metal::float3 n_10 = {};
+    n_10 = normal_6;
+    metal::float3 _e5 = n_10;
+    if (metal::dot(dir_4, _e5) < 0.0) {
+        metal::float3 _e9 = n_10;
+        n_10 = -(_e9);
+    }
+    metal::float3 _e11 = n_10;
+    metal::float3 _e12 = offset_origin(position_6, _e11, error_1);
+    return _e12;
+}
+
+metal::float3 spawn_origin(
+    Hit hit_11,
+    float error_2,
+    metal::float3 dir_5
+) {
+    metal::float3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_5);
+    return _e5;
+}
+
+metal::float3 trace_path(
+    Ray camera_ray,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    device type_14 const& attributes,
+    thread uint& ray_count,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Ray ray_28 = {};
+    metal::float3 beta = {};
+    metal::float3 radiance_2 = {};
+    bool spawned = {};
+    metal::float3 dir_6 = {};
+    metal::float3 weight_3 = {};
+    ray_28 = camera_ray;
+    beta = metal::float3(1.0);
+    radiance_2 = metal::float3(0.0);
+    uint2 loop_bound_6 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        Ray _e8 = ray_28;
+        Candidate _e10 = intersect_scene(_e8, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        if (_e10.slot == NO_HIT) {
+            hit_error = 0.0;
+            metal::float3 _e16 = radiance_2;
+            metal::float3 _e17 = beta;
+            Ray _e18 = ray_28;
+            metal::float3 _e19 = miss(_e18, frame, params, _buffer_sizes);
+            return _e16 + (_e17 * _e19);
+        }
+        GpuInstance inst_10 = instances[_e10.slot];
+        Ray _e26 = ray_28;
+        Hit _e27 = finish_hit(_e26, _e10, instances, triangles, hit_error, attributes, _buffer_sizes);
+        float error_4 = hit_error;
+        spawned = false;
+        dir_6 = metal::float3(0.0);
+        weight_3 = metal::float3(0.0);
+        uint _e44 = ray_28.depth;
+        if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e44 < MAX_DEPTH)) {
+            spawn_count = 0u;
+            Ray _e52 = ray_28;
+            dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e52, _e27, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+            uint _e54 = spawn_count;
+            if (metal::min(_e54, 1u) > 0u) {
+                spawned = true;
+                metal::float3 _e63 = spawn_dirs.inner[0u];
+                dir_6 = _e63;
+                metal::float3 _e67 = spawn_weights.inner[0u];
+                weight_3 = _e67;
+            }
+        }
+        metal::float3 _e68 = radiance_2;
+        metal::float3 _e69 = beta;
+        Ray _e72 = ray_28;
+        metal::float3 _e75 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e72, _e27, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+        radiance_2 = _e68 + (_e69 * _e75);
+        bool _e78 = spawned;
+        if (!(_e78)) {
+            metal::float3 _e80 = radiance_2;
+            return _e80;
+        }
+        metal::float3 _e81 = beta;
+        metal::float3 _e82 = weight_3;
+        beta = _e81 * _e82;
+        float _e85 = beta.x;
+        float _e87 = beta.y;
+        float _e89 = beta.z;
+        float q_6 = metal::max(_e85, metal::max(_e87, _e89));
+        if (!((q_6 > 0.0))) {
+            metal::float3 _e95 = radiance_2;
+            return _e95;
+        }
+        uint _e100 = ray_28.depth;
+        if (((ROULETTE_DEPTH > 0u) && ((_e100 + 1u) >= ROULETTE_DEPTH)) && (q_6 < 1.0)) {
+            float _e109 = rand_next(rng_state);
+            if (_e109 >= q_6) {
+                metal::float3 _e111 = radiance_2;
+                return _e111;
+            }
+            metal::float3 _e112 = beta;
+            beta = _e112 / metal::float3(q_6);
+        }
+        metal::float3 _e115 = dir_6;
+        metal::float3 _e116 = spawn_origin(_e27, error_4, _e115);
+        metal::float3 _e118 = dir_6;
+        uint _e120 = F32_INF;
+        uint _e123 = ray_28.depth;
+        uint _e128 = ray_28.medium;
+        ray_28 = Ray {_e116, 0.0, _e118, as_type<float>(_e120), _e123 + 1u, RAY_SECONDARY, _e128};
+    }
+    return metal::float3 {};
+}
+
+metal::float3 trace(
+    Ray camera_ray_1,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    device type_14 const& attributes,
+    thread uint& ray_count,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 radiance_3 = {};
+    float t_3 = {};
+    if (!(HAS_SECONDARY_RAYS)) {
+        Candidate _e4 = intersect_scene(camera_ray_1, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        radiance_3 = metal::float3(0.0);
+        uint _e9 = F32_INF;
+        t_3 = as_type<float>(_e9);
+        if (_e4.slot == NO_HIT) {
+            hit_error = 0.0;
+            metal::float3 _e17 = miss(camera_ray_1, frame, params, _buffer_sizes);
+            radiance_3 = _e17;
+        } else {
+            metal::float3 _e18 = shade_direct(camera_ray_1, _e4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, _buffer_sizes);
+            radiance_3 = _e18;
+            t_3 = _e4.t;
+        }
+        float _e20 = t_3;
+        metal::float3 _e21 = radiance_3;
+        metal::float3 _e22 = through_medium(camera_ray_1, _e20, _e21, instances, _buffer_sizes);
+        return _e22;
+    }
+    metal::float3 _e23 = trace_path(camera_ray_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+    return _e23;
+}
+
+metal::bool3 is_finite_vec3f(
+    metal::float3 x_2
+) {
+    return (as_type<metal::uint3>(x_2) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+}
+
+metal::float3 finite_or_zero(
+    metal::float3 c_5
+) {
+    metal::bool3 _e3 = is_finite_vec3f(c_5);
+    return metal::select(metal::float3(0.0), c_5, _e3);
+}
+
+void render_pixel(
+    metal::uint2 pixel_3,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    device type_14 const& attributes,
+    thread uint& ray_count,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count,
+    device type_19& counters,
+    device type_10& accum,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 sum = {};
+    uint bad = {};
+    uint s_2 = {};
+    Ray ray_29 = {};
+    FrameUniforms frame_5 = frame;
+    TileParams tile_2 = tile;
+    sum = metal::float3(0.0);
+    bad = 0u;
+    uint end_1 = frame_5.samples_per_pass;
+    s_2 = 0u;
+    uint2 loop_bound_7 = uint2(4294967295u);
+    bool loop_init_4 = true;
+    while(true) {
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e46 = s_2;
+            s_2 = _e46 + 1u;
+        }
+        loop_init_4 = false;
+        uint _e13 = s_2;
+        if (_e13 >= end_1) {
+            break;
+        }
+        uint _e18 = s_2;
+        uint sample_3 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
+        rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
+        ray_29 = _e23;
+        ray_29.depth = 0u;
+        ray_29.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_29.origin;
+        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+        ray_29.medium = _e33;
+        Ray _e34 = ray_29;
+        metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::bool3 _e36 = is_finite_vec3f(_e35);
+        if (metal::all(_e36)) {
+            metal::float3 _e38 = sum;
+            sum = _e38 + _e35;
+        } else {
+            metal::float3 _e40 = sum;
+            metal::float3 _e41 = finite_or_zero(_e35);
+            sum = _e40 + _e41;
+            uint _e43 = bad;
+            bad = _e43 + 1u;
+        }
+    }
+    uint _e50 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e50, metal::memory_order_relaxed);
+    metal::float3 _e59 = sum;
+    metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
+    uint _e63 = bad;
+    if (tile_2.frame == 0u) {
+        accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x] = _e62;
+    } else {
+        metal::float4 _e69 = accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x];
+        accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x] = _e69 + _e62;
+    }
+    if (_e63 > 0u) {
+        metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
+    }
+    return;
+}
+
+void render_invocation(
+    metal::uint2 id_1,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    device type_14 const& attributes,
+    thread uint& ray_count,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count,
+    device type_19& counters,
+    device type_10& accum,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    TileParams tile_3 = tile;
+    metal::uint2 _e3 = scattered_local(id_1, tile);
+    if (metal::any(_e3 >= tile_3.extent)) {
+        return;
+    }
+    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    return;
+}
+
+struct renderInput {
+};
+[[max_total_threads_per_threadgroup(64)]] kernel void render(
+  metal::uint3 gid [[thread_position_in_grid]]
+, constant TileParams& tile [[buffer(1)]]
+, constant FrameUniforms& frame [[buffer(0)]]
+, device type_4 const& params [[buffer(6)]]
+, device type_8 const& instances [[buffer(3)]]
+, device type_9 const& nodes [[buffer(2)]]
+, device type_10 const& triangles [[buffer(4)]]
+, device type_14 const& attributes [[buffer(5)]]
+, device type_19& counters [[buffer(9)]]
+, device type_10& accum [[buffer(8)]]
+, constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
+) {
+    uint rng_state = {};
+    uint F32_INF = 2139095040u;
+    type_12 traversal_stack = {};
+    float hit_error = {};
+    uint ray_count = {};
+    type_16 spawn_dirs = {};
+    type_16 spawn_weights = {};
+    uint spawn_count = {};
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    return;
+}
