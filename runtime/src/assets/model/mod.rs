@@ -28,10 +28,9 @@
 //!
 //! - One [`MeshData`] per *used* glTF primitive of mode `TRIANGLES`, converted once however many
 //!   nodes use it: instancing is [`MeshInstance`]s sharing a `mesh` index. Other modes, morph
-//!   targets, skins, animations and extensions other than `KHR_lights_punctual` and
-//!   `KHR_materials_emissive_strength` are skipped with a warning (`KHR_texture_transform` is
-//!   named with each material that uses it) (an unsupported extension the
-//!   file *requires* is an error).
+//!   targets, skins, animations after the first and extensions other than `KHR_lights_punctual`,
+//!   `KHR_materials_emissive_strength` and `KHR_texture_transform` are skipped with a warning
+//!   naming what they are on (an unsupported extension the file *requires* is an error).
 //! - Every `MeshInstance::mesh` and `::material` and every texture of a `GltfMaterial` is
 //!   a valid index into `meshes`, `materials` and `textures`. Primitives without a material use
 //!   glTF's default material, appended to `materials` when needed.

@@ -199,7 +199,12 @@ pub fn report(name: &str, scene: &ModelScene) -> String {
 /// Each texture slot of a material the import fills, by name, and its index into
 /// [`ModelScene::textures`] (the report lists the filled ones, in this order).
 fn textures_of(m: &GltfMaterial) -> Vec<(&'static str, Option<usize>)> {
-    vec![("base colour", m.base_color_texture)]
+    vec![
+        ("base colour", m.base_color_texture),
+        ("metallic-roughness", m.metallic_roughness_texture),
+        ("emissive", m.emissive_texture),
+        ("occlusion", m.occlusion_texture),
+    ]
 }
 
 /// `(a, b, c)` with 3 decimals.

@@ -173,6 +173,7 @@ const uint BLAS_STACK = 64u;
 const uint TLAS_STACK = 64u;
 const bool HAS_SECONDARY_RAYS = false;
 const bool HAS_BACKGROUND = true;
+const float PBR_MIN_ALPHA = 0.001;
 const uint LIGHT_ENTRY_STRIDE = 2u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const uint RAY_SHADOW = 2u;
@@ -401,20 +402,20 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
     vec3 b_6 = (_e18.xyz - r_1.origin);
     vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
-    vec3 c_6 = (_e28.xyz - r_1.origin);
+    vec3 c_7 = (_e28.xyz - r_1.origin);
     float ax = (a_5[min(r_1.kx, 2u)] - (r_1.shear.x * a_5[min(r_1.kz, 2u)]));
     float ay = (a_5[min(r_1.ky, 2u)] - (r_1.shear.y * a_5[min(r_1.kz, 2u)]));
     float bx = (b_6[min(r_1.kx, 2u)] - (r_1.shear.x * b_6[min(r_1.kz, 2u)]));
     float by = (b_6[min(r_1.ky, 2u)] - (r_1.shear.y * b_6[min(r_1.kz, 2u)]));
-    float cx = (c_6[min(r_1.kx, 2u)] - (r_1.shear.x * c_6[min(r_1.kz, 2u)]));
-    float cy = (c_6[min(r_1.ky, 2u)] - (r_1.shear.y * c_6[min(r_1.kz, 2u)]));
+    float cx = (c_7[min(r_1.kx, 2u)] - (r_1.shear.x * c_7[min(r_1.kz, 2u)]));
+    float cy = (c_7[min(r_1.ky, 2u)] - (r_1.shear.y * c_7[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
     float v_1 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
-    float t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
+    float t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_7[min(r_1.kz, 2u)]))) * rcp);
     bool hit_13 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_13 ? vec3(t_6, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
@@ -577,11 +578,11 @@ vec4 texel_at(uint t, uint xi, uint yi) {
     uint format = _group_0_binding_6_cs[(t + 3u)];
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
         uint _e25 = _group_0_binding_7_cs[(base_1 + index)];
-        vec4 c_7 = unpackUnorm4x8(_e25);
-        float _e28 = srgb_channel(c_7.x);
-        float _e30 = srgb_channel(c_7.y);
-        float _e32 = srgb_channel(c_7.z);
-        return vec4(_e28, _e30, _e32, c_7.w);
+        vec4 c_8 = unpackUnorm4x8(_e25);
+        float _e28 = srgb_channel(c_8.x);
+        float _e30 = srgb_channel(c_8.y);
+        float _e32 = srgb_channel(c_8.z);
+        return vec4(_e28, _e30, _e32, c_8.w);
     }
     if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
         uint _e40 = _group_0_binding_7_cs[(base_1 + index)];
@@ -780,10 +781,10 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
                 vec3 _e46 = hit_triangle(_e9, prim, ray_9.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
-                    Candidate c_8 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0.0));
-                    bool _e57 = accept(inst_5, world_ray, c_8);
+                    Candidate c_9 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0.0));
+                    bool _e57 = accept(inst_5, world_ray, c_9);
                     if (_e57) {
-                        best = c_8;
+                        best = c_9;
                         if (shadow) {
                             Candidate _e58 = best;
                             return _e58;
@@ -1046,6 +1047,11 @@ vec3 shading_normal(Ray ray_15, Hit hit_5) {
     return faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
+float pbr_alpha2_(float roughness) {
+    float a_8 = max((clamp(roughness, 0.0, 1.0) * clamp(roughness, 0.0, 1.0)), PBR_MIN_ALPHA);
+    return (a_8 * a_8);
+}
+
 uint light_count_query() {
     FrameUniforms _e1 = _group_0_binding_0_cs;
     return _e1.light_count;
@@ -1087,9 +1093,9 @@ Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
         vec3 _e9 = n_5;
         n_5 = -(_e9);
     }
-    vec3 a_8 = abs(position);
+    vec3 a_9 = abs(position);
     float _e13 = hit_error;
-    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
+    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_9.x, a_9.y), a_9.z)));
     vec3 _e22 = n_5;
     vec3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
@@ -1184,50 +1190,67 @@ LightSample sample_light_query(uint i_1, vec3 position_5, vec3 normal_5) {
     return _e28;
 }
 
-vec3 gltf_radiance(vec3 c_3, float metallic, float roughness, float occlusion, vec3 emissive, Ray ray_16, Hit hit_6) {
+vec3 pbr_fresnel(vec3 f0_, float c_3) {
+    float k_1 = (1.0 - clamp(c_3, 0.0, 1.0));
+    float k2_ = (k_1 * k_1);
+    return (f0_ + ((vec3(1.0) - f0_) * vec3(((k2_ * k2_) * k_1))));
+}
+
+float pbr_ggx_d(float ndh, float a2_) {
+    float d_5 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
+    return ((a2_ * INV_PI) / (d_5 * d_5));
+}
+
+float pbr_smith_v(float ndl, float ndv, float a2_1) {
+    float gv = (ndl * sqrt((((ndv * ndv) * (1.0 - a2_1)) + a2_1)));
+    float gl = (ndv * sqrt((((ndl * ndl) * (1.0 - a2_1)) + a2_1)));
+    return (0.5 / max((gv + gl), 1e-20));
+}
+
+vec3 gltf_radiance(vec3 c_4, float metallic, float roughness_1, float occlusion, vec3 emissive, Ray ray_16, Hit hit_6) {
     vec3 color = vec3(0.0);
     uint i_2 = 0u;
     vec3 _e7 = shading_normal(ray_16, hit_6);
     vec3 _e9 = normalize_vec3f(ray_16.dir);
     vec3 v_2 = -(_e9);
     float metal = clamp(metallic, 0.0, 1.0);
-    float a2_ = max(pow(clamp(roughness, 0.0, 1.0), 4.0), 4e-6);
-    vec3 f0_ = mix(vec3(0.04), c_3, vec3(metal));
-    float ndv = max(dot(_e7, v_2), 0.0001);
+    float _e12 = pbr_alpha2_(roughness_1);
+    vec3 f0_1 = mix(vec3(0.04), c_4, vec3(metal));
+    float ndv_1 = max(dot(_e7, v_2), 0.0001);
     color = emissive;
-    uint _e26 = light_count_query();
+    uint _e22 = light_count_query();
     i_2 = 0u;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e107 = i_2;
-            i_2 = (_e107 + 1u);
+            uint _e65 = i_2;
+            i_2 = (_e65 + 1u);
         }
         loop_init_2 = false;
-        uint _e28 = i_2;
-        if ((_e28 >= _e26)) {
+        uint _e24 = i_2;
+        if ((_e24 >= _e22)) {
             break;
         }
-        uint _e30 = i_2;
-        LightSample _e33 = sample_light_query(_e30, hit_6.position, hit_6.geometric_normal);
-        float ndl = max(dot(_e7, _e33.dir), 0.0);
-        vec3 _e40 = normalize_vec3f((_e33.dir + v_2));
-        float ndh = max(dot(_e7, _e40), 0.0);
-        float d_5 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
-        float ggx = ((a2_ * INV_PI) / max((d_5 * d_5), 1e-8));
-        float vis = (0.5 / max(((ndl * sqrt((((ndv * ndv) * (1.0 - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1.0 - a2_)) + a2_)))), 1e-8));
-        vec3 fresnel = (f0_ + ((vec3(1.0) - f0_) * vec3(pow((1.0 - max(dot(v_2, _e40), 0.0)), 5.0))));
-        vec3 _e88 = color;
-        color = (_e88 + (((_e33.radiance * vec3(ndl)) * (((c_3 * vec3((1.0 - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))) * vec3(occlusion)));
+        uint _e26 = i_2;
+        LightSample _e29 = sample_light_query(_e26, hit_6.position, hit_6.geometric_normal);
+        float ndl_1 = max(dot(_e7, _e29.dir), 0.0);
+        vec3 _e36 = normalize_vec3f((_e29.dir + v_2));
+        vec3 _e38 = pbr_fresnel(f0_1, dot(v_2, _e36));
+        float _e41 = pbr_ggx_d(clamp(dot(_e7, _e36), 0.0, 1.0), _e12);
+        float _e42 = pbr_smith_v(ndl_1, ndv_1, _e12);
+        vec3 spec = (_e38 * vec3((_e41 * _e42)));
+        vec3 diffuse = (((vec3(1.0) - _e38) * c_4) * vec3(((1.0 - metal) * INV_PI)));
+        vec3 _e56 = color;
+        color = (_e56 + (((_e29.radiance * vec3(ndl_1)) * (diffuse + spec)) * vec3(occlusion)));
     }
-    vec3 _e110 = color;
-    return _e110;
+    vec3 _e68 = color;
+    return _e68;
 }
 
 vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_17, Hit hit_7) {
     vec4 _e7 = sample_texture(m_1.base_texture, hit_7.uv);
-    vec3 c_9 = (m_1.base_color.xyz * _e7.xyz);
-    vec3 _e14 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_17, hit_7);
+    vec3 c_10 = (m_1.base_color.xyz * _e7.xyz);
+    vec3 _e14 = gltf_radiance(c_10, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_17, hit_7);
     return _e14;
 }
 
@@ -1247,8 +1270,8 @@ GltfMaterial load_GltfMaterial(uint offset_9) {
 
 vec3 gltf_shade(GltfMaterial m_2, Ray ray_18, Hit hit_8) {
     vec4 _e7 = sample_texture(m_2.base_texture, hit_8.uv);
-    vec3 c_10 = (m_2.base_color.xyz * _e7.xyz);
-    vec3 _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_18, hit_8);
+    vec3 c_11 = (m_2.base_color.xyz * _e7.xyz);
+    vec3 _e14 = gltf_radiance(c_11, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_18, hit_8);
     return _e14;
 }
 
@@ -1271,9 +1294,9 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_19, Hit hit_9,
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_20, Candidate c_4) {
-    GpuInstance inst_8 = _group_0_binding_3_cs[c_4.slot];
-    Hit _e6 = finish_hit(ray_20, c_4);
+vec3 shade_direct(Ray ray_20, Candidate c_5) {
+    GpuInstance inst_8 = _group_0_binding_3_cs[c_5.slot];
+    Hit _e6 = finish_hit(ray_20, c_5);
     vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, vec3(0.0));
     return _e11;
 }
@@ -1539,9 +1562,9 @@ bvec3 is_finite_vec3f(vec3 x_5) {
     return lessThan((floatBitsToUint(x_5) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
-vec3 finite_or_zero(vec3 c_5) {
-    bvec3 _e3 = is_finite_vec3f(c_5);
-    return mix(vec3(0.0), c_5, _e3);
+vec3 finite_or_zero(vec3 c_6) {
+    bvec3 _e3 = is_finite_vec3f(c_6);
+    return mix(vec3(0.0), c_6, _e3);
 }
 
 void render_pixel(uvec2 pixel_3) {

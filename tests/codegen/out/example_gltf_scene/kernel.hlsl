@@ -221,6 +221,7 @@ static const uint BLAS_STACK = 64u;
 static const uint TLAS_STACK = 64u;
 static const bool HAS_SECONDARY_RAYS = false;
 static const bool HAS_BACKGROUND = true;
+static const float PBR_MIN_ALPHA = 0.001;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
@@ -518,20 +519,20 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
     float3 b_6 = (_e18.xyz - r_1.origin);
     float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
-    float3 c_6 = (_e28.xyz - r_1.origin);
+    float3 c_7 = (_e28.xyz - r_1.origin);
     float ax = (a_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float ay = (a_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float bx = (b_6[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_6[min(uint(min(r_1.kz, 2u)), 2u)]));
     float by = (b_6[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * b_6[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float cx = (c_6[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_6[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float cy = (c_6[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_6[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cx = (c_7[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_7[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cy = (c_7[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_7[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u = ((cx * by) - (cy * bx));
     float v_1 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
-    float t_6 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_6[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_6 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_7[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_13 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_13 ? float3(t_6, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
@@ -776,11 +777,11 @@ float4 texel_at(uint t, uint xi, uint yi)
     uint format = asuint(params.Load((t + 3u)*4));
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
         uint _e25 = asuint(texels.Load((base_1 + index)*4));
-        float4 c_7 = (float4(_e25 & 0xFF, _e25 >> 8 & 0xFF, _e25 >> 16 & 0xFF, _e25 >> 24) / 255.0);
-        const float _e28 = srgb_channel(c_7.x);
-        const float _e30 = srgb_channel(c_7.y);
-        const float _e32 = srgb_channel(c_7.z);
-        return float4(_e28, _e30, _e32, c_7.w);
+        float4 c_8 = (float4(_e25 & 0xFF, _e25 >> 8 & 0xFF, _e25 >> 16 & 0xFF, _e25 >> 24) / 255.0);
+        const float _e28 = srgb_channel(c_8.x);
+        const float _e30 = srgb_channel(c_8.y);
+        const float _e32 = srgb_channel(c_8.z);
+        return float4(_e28, _e30, _e32, c_8.w);
     }
     if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
         uint _e40 = asuint(texels.Load((base_1 + index)*4));
@@ -1011,10 +1012,10 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
                 const float3 _e46 = hit_triangle(_e9, prim, ray_9.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < asfloat(_e49))) {
-                    Candidate c_8 = ConstructCandidate(_e46.x, slot_2, prim, _e46.yz, (0.0).xxx);
-                    const bool _e57 = accept(inst_5, world_ray, c_8);
+                    Candidate c_9 = ConstructCandidate(_e46.x, slot_2, prim, _e46.yz, (0.0).xxx);
+                    const bool _e57 = accept(inst_5, world_ray, c_9);
                     if (_e57) {
-                        best = c_8;
+                        best = c_9;
                         if (shadow) {
                             Candidate _e58 = best;
                             const Candidate candidate_1 = _e58;
@@ -1312,6 +1313,12 @@ float3 shading_normal(Ray ray_15, Hit hit_5)
     return faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
+float pbr_alpha2_(float roughness)
+{
+    float a_8 = max((saturate(roughness) * saturate(roughness)), PBR_MIN_ALPHA);
+    return (a_8 * a_8);
+}
+
 uint light_count_query()
 {
     FrameUniforms _e1 = frame;
@@ -1368,9 +1375,9 @@ Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
         float3 _e9 = n_5;
         n_5 = -(_e9);
     }
-    float3 a_8 = abs(position);
+    float3 a_9 = abs(position);
     float _e13 = hit_error;
-    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
+    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_9.x, a_9.y), a_9.z)));
     float3 _e22 = n_5;
     const float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
@@ -1505,7 +1512,27 @@ LightSample sample_light_query(uint i_1, float3 position_5, float3 normal_5)
     return lightsample_7;
 }
 
-float3 gltf_radiance(float3 c_3, float metallic, float roughness, float occlusion, float3 emissive, Ray ray_16, Hit hit_6)
+float3 pbr_fresnel(float3 f0_, float c_3)
+{
+    float k_1 = (1.0 - saturate(c_3));
+    float k2_ = (k_1 * k_1);
+    return (f0_ + (((1.0).xxx - f0_) * (((k2_ * k2_) * k_1)).xxx));
+}
+
+float pbr_ggx_d(float ndh, float a2_)
+{
+    float d_5 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
+    return ((a2_ * INV_PI) / (d_5 * d_5));
+}
+
+float pbr_smith_v(float ndl, float ndv, float a2_1)
+{
+    float gv = (ndl * sqrt((((ndv * ndv) * (1.0 - a2_1)) + a2_1)));
+    float gl = (ndv * sqrt((((ndl * ndl) * (1.0 - a2_1)) + a2_1)));
+    return (0.5 / max((gv + gl), 1e-20));
+}
+
+float3 gltf_radiance(float3 c_4, float metallic, float roughness_1, float occlusion, float3 emissive, Ray ray_16, Hit hit_6)
 {
     float3 color = (float3)0;
     uint i_2 = (uint)0;
@@ -1514,11 +1541,11 @@ float3 gltf_radiance(float3 c_3, float metallic, float roughness, float occlusio
     const float3 _e9 = normalize_vec3f(ray_16.dir);
     float3 v_2 = -(_e9);
     float metal = saturate(metallic);
-    float a2_ = max(pow(saturate(roughness), 4.0), 4e-6);
-    float3 f0_ = lerp((0.04).xxx, c_3, (metal).xxx);
-    float ndv = max(dot(_e7, v_2), 0.0001);
+    const float _e12 = pbr_alpha2_(roughness_1);
+    float3 f0_1 = lerp((0.04).xxx, c_4, (metal).xxx);
+    float ndv_1 = max(dot(_e7, v_2), 0.0001);
     color = emissive;
-    const uint _e26 = light_count_query();
+    const uint _e22 = light_count_query();
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
@@ -1526,35 +1553,35 @@ float3 gltf_radiance(float3 c_3, float metallic, float roughness, float occlusio
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e107 = i_2;
-            i_2 = (_e107 + 1u);
+            uint _e65 = i_2;
+            i_2 = (_e65 + 1u);
         }
         loop_init_2 = false;
-        uint _e28 = i_2;
-        if ((_e28 >= _e26)) {
+        uint _e24 = i_2;
+        if ((_e24 >= _e22)) {
             break;
         }
-        uint _e30 = i_2;
-        const LightSample _e33 = sample_light_query(_e30, hit_6.position, hit_6.geometric_normal);
-        float ndl = max(dot(_e7, _e33.dir), 0.0);
-        const float3 _e40 = normalize_vec3f((_e33.dir + v_2));
-        float ndh = max(dot(_e7, _e40), 0.0);
-        float d_5 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
-        float ggx = ((a2_ * INV_PI) / max((d_5 * d_5), 1e-8));
-        float vis = (0.5 / max(((ndl * sqrt((((ndv * ndv) * (1.0 - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1.0 - a2_)) + a2_)))), 1e-8));
-        float3 fresnel = (f0_ + (((1.0).xxx - f0_) * (pow((1.0 - max(dot(v_2, _e40), 0.0)), 5.0)).xxx));
-        float3 _e88 = color;
-        color = (_e88 + (((_e33.radiance * (ndl).xxx) * (((c_3 * ((1.0 - metal)).xxx) * (INV_PI).xxx) + (fresnel * ((ggx * vis)).xxx))) * (occlusion).xxx));
+        uint _e26 = i_2;
+        const LightSample _e29 = sample_light_query(_e26, hit_6.position, hit_6.geometric_normal);
+        float ndl_1 = max(dot(_e7, _e29.dir), 0.0);
+        const float3 _e36 = normalize_vec3f((_e29.dir + v_2));
+        const float3 _e38 = pbr_fresnel(f0_1, dot(v_2, _e36));
+        const float _e41 = pbr_ggx_d(saturate(dot(_e7, _e36)), _e12);
+        const float _e42 = pbr_smith_v(ndl_1, ndv_1, _e12);
+        float3 spec = (_e38 * ((_e41 * _e42)).xxx);
+        float3 diffuse = ((((1.0).xxx - _e38) * c_4) * (((1.0 - metal) * INV_PI)).xxx);
+        float3 _e56 = color;
+        color = (_e56 + (((_e29.radiance * (ndl_1).xxx) * (diffuse + spec)) * (occlusion).xxx));
     }
-    float3 _e110 = color;
-    return _e110;
+    float3 _e68 = color;
+    return _e68;
 }
 
 float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_17, Hit hit_7)
 {
     const float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv);
-    float3 c_9 = (m_1.base_color.xyz * _e7.xyz);
-    const float3 _e14 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_17, hit_7);
+    float3 c_10 = (m_1.base_color.xyz * _e7.xyz);
+    const float3 _e14 = gltf_radiance(c_10, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_17, hit_7);
     return _e14;
 }
 
@@ -1587,8 +1614,8 @@ GltfMaterial load_GltfMaterial(uint offset_9)
 float3 gltf_shade(GltfMaterial m_2, Ray ray_18, Hit hit_8)
 {
     const float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv);
-    float3 c_10 = (m_2.base_color.xyz * _e7.xyz);
-    const float3 _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_18, hit_8);
+    float3 c_11 = (m_2.base_color.xyz * _e7.xyz);
+    const float3 _e14 = gltf_radiance(c_11, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_18, hit_8);
     return _e14;
 }
 
@@ -1616,10 +1643,10 @@ float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_19, Hit hit_
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_20, Candidate c_4)
+float3 shade_direct(Ray ray_20, Candidate c_5)
 {
-    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_4.slot*128+0)), asfloat(instances.Load4(c_4.slot*128+16)), asfloat(instances.Load4(c_4.slot*128+32)), asfloat(instances.Load4(c_4.slot*128+48)), asfloat(instances.Load4(c_4.slot*128+64)), asfloat(instances.Load4(c_4.slot*128+80)), asuint(instances.Load(c_4.slot*128+96)), asuint(instances.Load(c_4.slot*128+100)), asuint(instances.Load(c_4.slot*128+104)), asuint(instances.Load(c_4.slot*128+108)), asuint(instances.Load(c_4.slot*128+112)), asuint(instances.Load(c_4.slot*128+116)), asuint(instances.Load(c_4.slot*128+120)), asuint(instances.Load(c_4.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_20, c_4);
+    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_5.slot*128+0)), asfloat(instances.Load4(c_5.slot*128+16)), asfloat(instances.Load4(c_5.slot*128+32)), asfloat(instances.Load4(c_5.slot*128+48)), asfloat(instances.Load4(c_5.slot*128+64)), asfloat(instances.Load4(c_5.slot*128+80)), asuint(instances.Load(c_5.slot*128+96)), asuint(instances.Load(c_5.slot*128+100)), asuint(instances.Load(c_5.slot*128+104)), asuint(instances.Load(c_5.slot*128+108)), asuint(instances.Load(c_5.slot*128+112)), asuint(instances.Load(c_5.slot*128+116)), asuint(instances.Load(c_5.slot*128+120)), asuint(instances.Load(c_5.slot*128+124)));
+    const Hit _e6 = finish_hit(ray_20, c_5);
     const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, (0.0).xxx);
     return _e11;
 }
@@ -1924,10 +1951,10 @@ bool3 is_finite_vec3f(float3 x_5)
     return ((asuint(x_5) & (2147483647u).xxx) < (2139095040u).xxx);
 }
 
-float3 finite_or_zero(float3 c_5)
+float3 finite_or_zero(float3 c_6)
 {
-    const bool3 _e3 = is_finite_vec3f(c_5);
-    return (_e3 ? c_5 : (0.0).xxx);
+    const bool3 _e3 = is_finite_vec3f(c_6);
+    return (_e3 ? c_6 : (0.0).xxx);
 }
 
 void render_pixel(uint2 pixel_3)

@@ -213,6 +213,7 @@ constant uint BLAS_STACK = 64u;
 constant uint TLAS_STACK = 64u;
 constant bool HAS_SECONDARY_RAYS = false;
 constant bool HAS_BACKGROUND = true;
+constant float PBR_MIN_ALPHA = 0.001;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
@@ -492,20 +493,20 @@ metal::float3 hit_triangle(
     metal::float4 _e18 = triangles[(slot * 3u) + 1u];
     metal::float3 b_6 = _e18.xyz - r_1.origin;
     metal::float4 _e28 = triangles[(slot * 3u) + 2u];
-    metal::float3 c_6 = _e28.xyz - r_1.origin;
+    metal::float3 c_7 = _e28.xyz - r_1.origin;
     float ax = a_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_5[metal::min(r_1.kz, 2u)]);
     float ay = a_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_5[metal::min(r_1.kz, 2u)]);
     float bx = b_6[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_6[metal::min(r_1.kz, 2u)]);
     float by = b_6[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_6[metal::min(r_1.kz, 2u)]);
-    float cx = c_6[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_6[metal::min(r_1.kz, 2u)]);
-    float cy = c_6[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_6[metal::min(r_1.kz, 2u)]);
+    float cx = c_7[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_7[metal::min(r_1.kz, 2u)]);
+    float cy = c_7[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_7[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
     float v_1 = (ax * cy) - (ay * cx);
     float w = (bx * ay) - (by * ax);
     bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
-    float t_6 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_6[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_6 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_7[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_13 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1);
     uint _e173 = F32_INF;
     return hit_13 ? metal::float3(t_6, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
@@ -727,11 +728,11 @@ metal::float4 texel_at(
     uint format = params[t + 3u];
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
         uint _e25 = texels[base_1 + index];
-        metal::float4 c_7 = metal::unpack_unorm4x8_to_float(_e25);
-        float _e28 = srgb_channel(c_7.x);
-        float _e30 = srgb_channel(c_7.y);
-        float _e32 = srgb_channel(c_7.z);
-        return metal::float4(_e28, _e30, _e32, c_7.w);
+        metal::float4 c_8 = metal::unpack_unorm4x8_to_float(_e25);
+        float _e28 = srgb_channel(c_8.x);
+        float _e30 = srgb_channel(c_8.y);
+        float _e32 = srgb_channel(c_8.z);
+        return metal::float4(_e28, _e30, _e32, c_8.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
         uint _e40 = texels[base_1 + index];
@@ -1033,10 +1034,10 @@ Candidate intersect_mesh(
                 metal::float3 _e46 = hit_triangle(_e9, prim, ray_9.tmin, _e45, F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
-                    Candidate c_8 = Candidate {_e46.x, slot_2, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e57 = accept(inst_5, world_ray, c_8, tile, params, instances, triangles, hit_error, attributes, texels, _buffer_sizes);
+                    Candidate c_9 = Candidate {_e46.x, slot_2, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e57 = accept(inst_5, world_ray, c_9, tile, params, instances, triangles, hit_error, attributes, texels, _buffer_sizes);
                     if (_e57) {
-                        best = c_8;
+                        best = c_9;
                         if (shadow) {
                             Candidate _e58 = best;
                             return _e58;
@@ -1375,6 +1376,13 @@ metal::float3 shading_normal(
     return metal::faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
+float pbr_alpha2_(
+    float roughness
+) {
+    float a_8 = metal::max(metal::saturate(roughness) * metal::saturate(roughness), PBR_MIN_ALPHA);
+    return a_8 * a_8;
+}
+
 uint light_count_query(
     constant FrameUniforms& frame
 ) {
@@ -1436,9 +1444,9 @@ Ray shadow_ray(
         metal::float3 _e9 = n_5;
         n_5 = -(_e9);
     }
-    metal::float3 a_8 = metal::abs(position);
+    metal::float3 a_9 = metal::abs(position);
     float _e13 = hit_error;
-    float error_3 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_8.x, a_8.y), a_8.z));
+    float error_3 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_9.x, a_9.y), a_9.z));
     metal::float3 _e22 = n_5;
     metal::float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
@@ -1624,10 +1632,37 @@ LightSample sample_light_query(
     return _e28;
 }
 
+metal::float3 pbr_fresnel(
+    metal::float3 f0_,
+    float c_3
+) {
+    float k_1 = 1.0 - metal::saturate(c_3);
+    float k2_ = k_1 * k_1;
+    return f0_ + ((metal::float3(1.0) - f0_) * metal::float3((k2_ * k2_) * k_1));
+}
+
+float pbr_ggx_d(
+    float ndh,
+    float a2_
+) {
+    float d_5 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
+    return (a2_ * INV_PI) / (d_5 * d_5);
+}
+
+float pbr_smith_v(
+    float ndl,
+    float ndv,
+    float a2_1
+) {
+    float gv = ndl * metal::sqrt(((ndv * ndv) * (1.0 - a2_1)) + a2_1);
+    float gl = ndv * metal::sqrt(((ndl * ndl) * (1.0 - a2_1)) + a2_1);
+    return 0.5 / metal::max(gv + gl, 0.00000000000000000001);
+}
+
 metal::float3 gltf_radiance(
-    metal::float3 c_3,
+    metal::float3 c_4,
     float metallic,
-    float roughness,
+    float roughness_1,
     float occlusion,
     metal::float3 emissive,
     Ray ray_16,
@@ -1652,11 +1687,11 @@ metal::float3 gltf_radiance(
     metal::float3 _e9 = normalize_vec3f(ray_16.dir);
     metal::float3 v_2 = -(_e9);
     float metal_ = metal::saturate(metallic);
-    float a2_ = metal::max(metal::pow(metal::saturate(roughness), 4.0), 0.000004);
-    metal::float3 f0_ = metal::mix(metal::float3(0.04), c_3, metal::float3(metal_));
-    float ndv = metal::max(metal::dot(_e7, v_2), 0.0001);
+    float _e12 = pbr_alpha2_(roughness_1);
+    metal::float3 f0_1 = metal::mix(metal::float3(0.04), c_4, metal::float3(metal_));
+    float ndv_1 = metal::max(metal::dot(_e7, v_2), 0.0001);
     color = emissive;
-    uint _e26 = light_count_query(frame);
+    uint _e22 = light_count_query(frame);
     i_2 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
@@ -1664,28 +1699,28 @@ metal::float3 gltf_radiance(
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e107 = i_2;
-            i_2 = _e107 + 1u;
+            uint _e65 = i_2;
+            i_2 = _e65 + 1u;
         }
         loop_init_2 = false;
-        uint _e28 = i_2;
-        if (_e28 >= _e26) {
+        uint _e24 = i_2;
+        if (_e24 >= _e22) {
             break;
         }
-        uint _e30 = i_2;
-        LightSample _e33 = sample_light_query(_e30, hit_6.position, hit_6.geometric_normal, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-        float ndl = metal::max(metal::dot(_e7, _e33.dir), 0.0);
-        metal::float3 _e40 = normalize_vec3f(_e33.dir + v_2);
-        float ndh = metal::max(metal::dot(_e7, _e40), 0.0);
-        float d_5 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
-        float ggx = (a2_ * INV_PI) / metal::max(d_5 * d_5, 0.00000001);
-        float vis = 0.5 / metal::max((ndl * metal::sqrt(((ndv * ndv) * (1.0 - a2_)) + a2_)) + (ndv * metal::sqrt(((ndl * ndl) * (1.0 - a2_)) + a2_)), 0.00000001);
-        metal::float3 fresnel = f0_ + ((metal::float3(1.0) - f0_) * metal::float3(metal::pow(1.0 - metal::max(metal::dot(v_2, _e40), 0.0), 5.0)));
-        metal::float3 _e88 = color;
-        color = _e88 + (((_e33.radiance * metal::float3(ndl)) * (((c_3 * metal::float3(1.0 - metal_)) * metal::float3(INV_PI)) + (fresnel * metal::float3(ggx * vis)))) * metal::float3(occlusion));
+        uint _e26 = i_2;
+        LightSample _e29 = sample_light_query(_e26, hit_6.position, hit_6.geometric_normal, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+        float ndl_1 = metal::max(metal::dot(_e7, _e29.dir), 0.0);
+        metal::float3 _e36 = normalize_vec3f(_e29.dir + v_2);
+        metal::float3 _e38 = pbr_fresnel(f0_1, metal::dot(v_2, _e36));
+        float _e41 = pbr_ggx_d(metal::saturate(metal::dot(_e7, _e36)), _e12);
+        float _e42 = pbr_smith_v(ndl_1, ndv_1, _e12);
+        metal::float3 spec = _e38 * metal::float3(_e41 * _e42);
+        metal::float3 diffuse = ((metal::float3(1.0) - _e38) * c_4) * metal::float3((1.0 - metal_) * INV_PI);
+        metal::float3 _e56 = color;
+        color = _e56 + (((_e29.radiance * metal::float3(ndl_1)) * (diffuse + spec)) * metal::float3(occlusion));
     }
-    metal::float3 _e110 = color;
-    return _e110;
+    metal::float3 _e68 = color;
+    return _e68;
 }
 
 metal::float3 gltf_masked_shade(
@@ -1707,8 +1742,8 @@ metal::float3 gltf_masked_shade(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv, params, texels, _buffer_sizes);
-    metal::float3 c_9 = m_1.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_17, hit_7, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 c_10 = m_1.base_color.xyz * _e7.xyz;
+    metal::float3 _e14 = gltf_radiance(c_10, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_17, hit_7, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e14;
 }
 
@@ -1749,8 +1784,8 @@ metal::float3 gltf_shade(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv, params, texels, _buffer_sizes);
-    metal::float3 c_10 = m_2.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_18, hit_8, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 c_11 = m_2.base_color.xyz * _e7.xyz;
+    metal::float3 _e14 = gltf_radiance(c_11, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_18, hit_8, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e14;
 }
 
@@ -1794,7 +1829,7 @@ metal::float3 dispatch_closest_hit(
 
 metal::float3 shade_direct(
     Ray ray_20,
-    Candidate c_4,
+    Candidate c_5,
     constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1809,8 +1844,8 @@ metal::float3 shade_direct(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuInstance inst_8 = instances[c_4.slot];
-    Hit _e6 = finish_hit(ray_20, c_4, instances, triangles, hit_error, attributes, _buffer_sizes);
+    GpuInstance inst_8 = instances[c_5.slot];
+    Hit _e6 = finish_hit(ray_20, c_5, instances, triangles, hit_error, attributes, _buffer_sizes);
     metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, metal::float3(0.0), tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e11;
 }
@@ -2129,10 +2164,10 @@ metal::bool3 is_finite_vec3f(
 }
 
 metal::float3 finite_or_zero(
-    metal::float3 c_5
+    metal::float3 c_6
 ) {
-    metal::bool3 _e3 = is_finite_vec3f(c_5);
-    return metal::select(metal::float3(0.0), c_5, _e3);
+    metal::bool3 _e3 = is_finite_vec3f(c_6);
+    return metal::select(metal::float3(0.0), c_6, _e3);
 }
 
 void render_pixel(

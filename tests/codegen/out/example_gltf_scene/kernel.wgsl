@@ -185,6 +185,7 @@ const BLAS_STACK: u32 = 64u;
 const TLAS_STACK: u32 = 64u;
 const HAS_SECONDARY_RAYS: bool = false;
 const HAS_BACKGROUND: bool = true;
+const PBR_MIN_ALPHA: f32 = 0.001f;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
@@ -408,20 +409,20 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let _e18 = triangles[((slot * 3u) + 1u)];
     let b_6 = (_e18.xyz - r_1.origin);
     let _e28 = triangles[((slot * 3u) + 2u)];
-    let c_6 = (_e28.xyz - r_1.origin);
+    let c_7 = (_e28.xyz - r_1.origin);
     let ax = (a_5[min(r_1.kx, 2u)] - (r_1.shear.x * a_5[min(r_1.kz, 2u)]));
     let ay = (a_5[min(r_1.ky, 2u)] - (r_1.shear.y * a_5[min(r_1.kz, 2u)]));
     let bx = (b_6[min(r_1.kx, 2u)] - (r_1.shear.x * b_6[min(r_1.kz, 2u)]));
     let by = (b_6[min(r_1.ky, 2u)] - (r_1.shear.y * b_6[min(r_1.kz, 2u)]));
-    let cx = (c_6[min(r_1.kx, 2u)] - (r_1.shear.x * c_6[min(r_1.kz, 2u)]));
-    let cy = (c_6[min(r_1.ky, 2u)] - (r_1.shear.y * c_6[min(r_1.kz, 2u)]));
+    let cx = (c_7[min(r_1.kx, 2u)] - (r_1.shear.x * c_7[min(r_1.kz, 2u)]));
+    let cy = (c_7[min(r_1.ky, 2u)] - (r_1.shear.y * c_7[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
     let v_1 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
     let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
-    let t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
+    let t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_7[min(r_1.kz, 2u)]))) * rcp);
     let hit_13 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     let _e173 = F32_INF;
     return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_6, (v_1 * rcp), (w * rcp)), hit_13);
@@ -586,11 +587,11 @@ fn texel_at(t: u32, xi: u32, yi: u32) -> vec4<f32> {
     let format = params[(t + 3u)];
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
         let _e25 = texels[(base_1 + index)];
-        let c_7 = unpack4x8unorm(_e25);
-        let _e28 = srgb_channel(c_7.x);
-        let _e30 = srgb_channel(c_7.y);
-        let _e32 = srgb_channel(c_7.z);
-        return vec4<f32>(_e28, _e30, _e32, c_7.w);
+        let c_8 = unpack4x8unorm(_e25);
+        let _e28 = srgb_channel(c_8.x);
+        let _e30 = srgb_channel(c_8.y);
+        let _e32 = srgb_channel(c_8.z);
+        return vec4<f32>(_e28, _e30, _e32, c_8.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
         let _e40 = texels[(base_1 + index)];
@@ -785,10 +786,10 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_9: Ray, 
                 let _e46 = hit_triangle(_e9, prim, ray_9.tmin, _e45);
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
-                    let c_8 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0f));
-                    let _e57 = accept(inst_5, world_ray, c_8);
+                    let c_9 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0f));
+                    let _e57 = accept(inst_5, world_ray, c_9);
                     if _e57 {
-                        best = c_8;
+                        best = c_9;
                         if shadow {
                             let _e58 = best;
                             return _e58;
@@ -1056,6 +1057,11 @@ fn shading_normal(ray_15: Ray, hit_5: Hit) -> vec3<f32> {
     return faceForward(hit_5.normal, -(ng), hit_5.normal);
 }
 
+fn pbr_alpha2_(roughness: f32) -> f32 {
+    let a_8 = max((saturate(roughness) * saturate(roughness)), PBR_MIN_ALPHA);
+    return (a_8 * a_8);
+}
+
 fn light_count_query() -> u32 {
     let _e1 = frame;
     return _e1.light_count;
@@ -1098,9 +1104,9 @@ fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32)
         let _e9 = n_5;
         n_5 = -(_e9);
     }
-    let a_8 = abs(position);
+    let a_9 = abs(position);
     let _e13 = hit_error;
-    let error_3 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
+    let error_3 = max(_e13, (GAMMA_4_ * max(max(a_9.x, a_9.y), a_9.z)));
     let _e22 = n_5;
     let _e23 = offset_origin(position, _e22, error_3);
     let _e25 = F32_INF;
@@ -1195,7 +1201,24 @@ fn sample_light_query(i_1: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> L
     return _e28;
 }
 
-fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, occlusion: f32, emissive: vec3<f32>, ray_16: Ray, hit_6: Hit) -> vec3<f32> {
+fn pbr_fresnel(f0_: vec3<f32>, c_3: f32) -> vec3<f32> {
+    let k_1 = (1f - saturate(c_3));
+    let k2_ = (k_1 * k_1);
+    return (f0_ + ((vec3(1f) - f0_) * vec3(((k2_ * k2_) * k_1))));
+}
+
+fn pbr_ggx_d(ndh: f32, a2_: f32) -> f32 {
+    let d_5 = (((ndh * ndh) * (a2_ - 1f)) + 1f);
+    return ((a2_ * INV_PI) / (d_5 * d_5));
+}
+
+fn pbr_smith_v(ndl: f32, ndv: f32, a2_1: f32) -> f32 {
+    let gv = (ndl * sqrt((((ndv * ndv) * (1f - a2_1)) + a2_1)));
+    let gl = (ndv * sqrt((((ndl * ndl) * (1f - a2_1)) + a2_1)));
+    return (0.5f / max((gv + gl), 0.00000000000000000001f));
+}
+
+fn gltf_radiance(c_4: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32, emissive: vec3<f32>, ray_16: Ray, hit_6: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_2: u32;
 
@@ -1203,41 +1226,41 @@ fn gltf_radiance(c_3: vec3<f32>, metallic: f32, roughness: f32, occlusion: f32, 
     let _e9 = normalize_vec3f(ray_16.dir);
     let v_2 = -(_e9);
     let metal = saturate(metallic);
-    let a2_ = max(pow(saturate(roughness), 4f), 0.000004f);
-    let f0_ = mix(vec3(0.04f), c_3, vec3(metal));
-    let ndv = max(dot(_e7, v_2), 0.0001f);
+    let _e12 = pbr_alpha2_(roughness_1);
+    let f0_1 = mix(vec3(0.04f), c_4, vec3(metal));
+    let ndv_1 = max(dot(_e7, v_2), 0.0001f);
     color = emissive;
-    let _e26 = light_count_query();
+    let _e22 = light_count_query();
     i_2 = 0u;
     loop {
-        let _e28 = i_2;
-        if (_e28 >= _e26) {
+        let _e24 = i_2;
+        if (_e24 >= _e22) {
             break;
         }
-        let _e30 = i_2;
-        let _e33 = sample_light_query(_e30, hit_6.position, hit_6.geometric_normal);
-        let ndl = max(dot(_e7, _e33.dir), 0f);
-        let _e40 = normalize_vec3f((_e33.dir + v_2));
-        let ndh = max(dot(_e7, _e40), 0f);
-        let d_5 = (((ndh * ndh) * (a2_ - 1f)) + 1f);
-        let ggx = ((a2_ * INV_PI) / max((d_5 * d_5), 0.00000001f));
-        let vis = (0.5f / max(((ndl * sqrt((((ndv * ndv) * (1f - a2_)) + a2_))) + (ndv * sqrt((((ndl * ndl) * (1f - a2_)) + a2_)))), 0.00000001f));
-        let fresnel = (f0_ + ((vec3(1f) - f0_) * vec3(pow((1f - max(dot(v_2, _e40), 0f)), 5f))));
-        let _e88 = color;
-        color = (_e88 + (((_e33.radiance * vec3(ndl)) * (((c_3 * vec3((1f - metal))) * vec3(INV_PI)) + (fresnel * vec3((ggx * vis))))) * vec3(occlusion)));
+        let _e26 = i_2;
+        let _e29 = sample_light_query(_e26, hit_6.position, hit_6.geometric_normal);
+        let ndl_1 = max(dot(_e7, _e29.dir), 0f);
+        let _e36 = normalize_vec3f((_e29.dir + v_2));
+        let _e38 = pbr_fresnel(f0_1, dot(v_2, _e36));
+        let _e41 = pbr_ggx_d(saturate(dot(_e7, _e36)), _e12);
+        let _e42 = pbr_smith_v(ndl_1, ndv_1, _e12);
+        let spec = (_e38 * vec3((_e41 * _e42)));
+        let diffuse = (((vec3(1f) - _e38) * c_4) * vec3(((1f - metal) * INV_PI)));
+        let _e56 = color;
+        color = (_e56 + (((_e29.radiance * vec3(ndl_1)) * (diffuse + spec)) * vec3(occlusion)));
         continuing {
-            let _e107 = i_2;
-            i_2 = (_e107 + 1u);
+            let _e65 = i_2;
+            i_2 = (_e65 + 1u);
         }
     }
-    let _e110 = color;
-    return _e110;
+    let _e68 = color;
+    return _e68;
 }
 
 fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_17: Ray, hit_7: Hit) -> vec3<f32> {
     let _e7 = sample_texture(m_1.base_texture, hit_7.uv);
-    let c_9 = (m_1.base_color.xyz * _e7.xyz);
-    let _e14 = gltf_radiance(c_9, m_1.metallic, m_1.roughness, 1f, m_1.emissive, ray_17, hit_7);
+    let c_10 = (m_1.base_color.xyz * _e7.xyz);
+    let _e14 = gltf_radiance(c_10, m_1.metallic, m_1.roughness, 1f, m_1.emissive, ray_17, hit_7);
     return _e14;
 }
 
@@ -1257,8 +1280,8 @@ fn load_GltfMaterial(offset_9: u32) -> GltfMaterial {
 
 fn gltf_shade(m_2: GltfMaterial, ray_18: Ray, hit_8: Hit) -> vec3<f32> {
     let _e7 = sample_texture(m_2.base_texture, hit_8.uv);
-    let c_10 = (m_2.base_color.xyz * _e7.xyz);
-    let _e14 = gltf_radiance(c_10, m_2.metallic, m_2.roughness, 1f, m_2.emissive, ray_18, hit_8);
+    let c_11 = (m_2.base_color.xyz * _e7.xyz);
+    let _e14 = gltf_radiance(c_11, m_2.metallic, m_2.roughness, 1f, m_2.emissive, ray_18, hit_8);
     return _e14;
 }
 
@@ -1280,9 +1303,9 @@ fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_19: Ray, hit_9: Hit,
     return vec3<f32>();
 }
 
-fn shade_direct(ray_20: Ray, c_4: Candidate) -> vec3<f32> {
-    let inst_8 = instances[c_4.slot];
-    let _e6 = finish_hit(ray_20, c_4);
+fn shade_direct(ray_20: Ray, c_5: Candidate) -> vec3<f32> {
+    let inst_8 = instances[c_5.slot];
+    let _e6 = finish_hit(ray_20, c_5);
     let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, vec3(0f));
     return _e11;
 }
@@ -1548,9 +1571,9 @@ fn is_finite_vec3f(x_5: vec3<f32>) -> vec3<bool> {
     return ((bitcast<vec3<u32>>(x_5) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
-fn finite_or_zero(c_5: vec3<f32>) -> vec3<f32> {
-    let _e3 = is_finite_vec3f(c_5);
-    return select(vec3(0f), c_5, _e3);
+fn finite_or_zero(c_6: vec3<f32>) -> vec3<f32> {
+    let _e3 = is_finite_vec3f(c_6);
+    return select(vec3(0f), c_6, _e3);
 }
 
 fn render_pixel(pixel_3: vec2<u32>) {
