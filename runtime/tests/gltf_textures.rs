@@ -225,7 +225,7 @@ fn write_quads(dir: &Path, materials: &[Value], back: &[bool], samplers: Vec<Val
     png.save(dir.join("checker.png")).unwrap();
 }
 
-/// Compiles and renders `dir/scene.rt`: the four quads of `dir/tex.gltf` seen by an
+/// Compiles and renders the `scene.rt` in `dir`: the four quads of its `tex.gltf` seen by an
 /// orthographic camera, [`QUAD_PX`] pixels per quad, at `samples` per pixel.
 fn render_quads(
     gpu: &rtc_runtime::gpu::Gpu,
