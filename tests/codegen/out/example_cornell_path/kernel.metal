@@ -144,6 +144,13 @@ struct QuadLight {
     uint lamp;
     char _pad6[12];
 };
+struct PathState {
+    Ray ray;
+    metal::float3 beta;
+    metal::packed_float3 radiance;
+    bool live;
+    char _pad4[3];
+};
 struct type_15 {
     metal::float3 inner[1];
 };
@@ -318,9 +325,9 @@ float rand_next(
     thread uint& rng_state
 ) {
     uint _e1 = rng_state;
-    uint s_2 = (_e1 * 747796405u) + 2891336453u;
-    rng_state = s_2;
-    uint word_1 = ((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u;
+    uint s_4 = (_e1 * 747796405u) + 2891336453u;
+    rng_state = s_4;
+    uint word_1 = ((s_4 >> (((s_4 >> 28u) + 4u) & 31u)) ^ s_4) * 277803737u;
     uint r_3 = (word_1 >> 22u) ^ word_1;
     return static_cast<float>(r_3 >> 8u) * (1.0 / 16777216.0);
 }
@@ -410,8 +417,8 @@ metal::float3 safe_inverse(
     metal::float3 d
 ) {
     metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_3 * tiny, metal::abs(d) < tiny);
+    metal::float3 s_5 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_5 * tiny, metal::abs(d) < tiny);
     return metal::float3(1.0) / dd;
 }
 
@@ -447,20 +454,20 @@ metal::float3 hit_triangle(
     metal::float4 _e18 = triangles[(slot * 3u) + 1u];
     metal::float3 b_4 = _e18.xyz - r_1.origin;
     metal::float4 _e28 = triangles[(slot * 3u) + 2u];
-    metal::float3 c_4 = _e28.xyz - r_1.origin;
+    metal::float3 c_5 = _e28.xyz - r_1.origin;
     float ax = a_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_4[metal::min(r_1.kz, 2u)]);
     float ay = a_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_4[metal::min(r_1.kz, 2u)]);
     float bx = b_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_4[metal::min(r_1.kz, 2u)]);
     float by = b_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_4[metal::min(r_1.kz, 2u)]);
-    float cx = c_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_4[metal::min(r_1.kz, 2u)]);
-    float cy = c_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_4[metal::min(r_1.kz, 2u)]);
+    float cx = c_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_5[metal::min(r_1.kz, 2u)]);
+    float cy = c_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_5[metal::min(r_1.kz, 2u)]);
     float u_1 = (cx * by) - (cy * bx);
     float v_1 = (ax * cy) - (ay * cx);
     float w = (bx * ay) - (by * ax);
     bool outside = (((u_1 < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u_1 > 0.0) || (v_1 > 0.0)) || (w > 0.0));
     float det = (u_1 + v_1) + w;
     float rcp = 1.0 / det;
-    float t_3 = (((u_1 * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_4[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_3 = (((u_1 * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_4[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1);
     uint _e173 = F32_INF;
     return hit_7 ? metal::float3(t_3, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
@@ -611,10 +618,10 @@ Candidate intersect_mesh(
                 metal::float3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45, F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
-                    Candidate c_5 = Candidate {_e46.x, slot_1, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e57 = accept(inst_2, world_ray, c_5);
+                    Candidate c_6 = Candidate {_e46.x, slot_1, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e57 = accept(inst_2, world_ray, c_6);
                     if (_e57) {
-                        best = c_5;
+                        best = c_6;
                         if (shadow) {
                             Candidate _e58 = best;
                             return _e58;
@@ -752,9 +759,9 @@ metal::float3 decode_octahedral(
     float _e14 = n_1.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n_1;
-        metal::float2 s_4 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float2 s_6 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
         metal::float3 _e29 = n_1;
-        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_4;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_6;
         float _e37 = n_1.z;
         n_1 = metal::float3(xy.x, xy.y, _e37);
     }
@@ -1198,14 +1205,14 @@ LightSample quad_light(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 c_6 = metal::cross(l.edge_u, l.edge_v);
-    float area = metal::length(c_6);
+    metal::float3 c_7 = metal::cross(l.edge_u, l.edge_v);
+    float area = metal::length(c_7);
     metal::float2 _e7 = rand2_next(rng_state);
     metal::float3 to_light = ((l.corner + (l.edge_u * metal::float3(_e7.x))) + (l.edge_v * metal::float3(_e7.y))) - position_2;
     float dist2_ = metal::dot(to_light, to_light);
     float dist_2 = metal::sqrt(dist2_);
     metal::float3 dir_7 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
-    float cos_light = -(metal::dot(dir_7, c_6)) / metal::max(area, 0.000000000000000000000000000001);
+    float cos_light = -(metal::dot(dir_7, c_7)) / metal::max(area, 0.000000000000000000000000000001);
     if (!((cos_light > 0.0)) || !((dist2_ > 0.0))) {
         return LightSample {dir_7, dist_2, metal::float3(0.0), 0.0};
     }
@@ -1332,10 +1339,10 @@ metal::float3 path_diffuse_shade(
         }
         uint _e16 = i_2;
         LightSample _e19 = sample_light_query(_e16, hit_2.position, hit_2.geometric_normal, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
-        float c_7 = metal::max(metal::dot(n_10, _e19.dir), 0.0);
+        float c_8 = metal::max(metal::dot(n_10, _e19.dir), 0.0);
         metal::float3 _e24 = direct;
-        float _e28 = mis_light_weight(_e19, c_7 * INV_PI, F32_INF);
-        direct = _e24 + (_e19.radiance * metal::float3(c_7 * _e28));
+        float _e28 = mis_light_weight(_e19, c_8 * INV_PI, F32_INF);
+        direct = _e24 + (_e19.radiance * metal::float3(c_8 * _e28));
     }
     metal::float3 _e40 = direct;
     return ((m_1.albedo * metal::float3(INV_PI)) * _e40) + secondary;
@@ -1549,6 +1556,96 @@ metal::float3 spawn_origin(
     return _e5;
 }
 
+PathState path_step(
+    PathState s_1,
+    Candidate c_3,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    device type_14 const& attributes,
+    thread uint& ray_count,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
+    thread uint& spawn_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    PathState out = {};
+    bool spawned = {};
+    metal::float3 dir_6 = {};
+    metal::float3 weight_2 = {};
+    metal::float3 beta = {};
+    Ray ray_20 = s_1.ray;
+    out = s_1;
+    out.live = false;
+    if (c_3.slot == NO_HIT) {
+        hit_error = 0.0;
+        metal::float3 _e14 = miss(ray_20, frame);
+        out.radiance = s_1.radiance + (s_1.beta * _e14);
+        PathState _e17 = out;
+        return _e17;
+    }
+    GpuInstance inst_10 = instances[c_3.slot];
+    Hit _e22 = finish_hit(ray_20, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
+    float error_4 = hit_error;
+    spawned = false;
+    dir_6 = metal::float3(0.0);
+    weight_2 = metal::float3(0.0);
+    if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_1.ray.depth < MAX_DEPTH)) {
+        spawn_count = 0u;
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_20, _e22, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        uint _e47 = spawn_count;
+        if (metal::min(_e47, 1u) > 0u) {
+            spawned = true;
+            metal::float3 _e56 = spawn_dirs.inner[0u];
+            dir_6 = _e56;
+            metal::float3 _e60 = spawn_weights.inner[0u];
+            weight_2 = _e60;
+        }
+    }
+    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_20, _e22, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    out.radiance = s_1.radiance + (s_1.beta * _e68);
+    bool _e71 = spawned;
+    if (!(_e71)) {
+        PathState _e73 = out;
+        return _e73;
+    }
+    metal::float3 _e75 = weight_2;
+    beta = s_1.beta * _e75;
+    float _e79 = beta.x;
+    float _e81 = beta.y;
+    float _e83 = beta.z;
+    float q_4 = metal::max(_e79, metal::max(_e81, _e83));
+    if (!((q_4 > 0.0))) {
+        PathState _e89 = out;
+        return _e89;
+    }
+    if (((ROULETTE_DEPTH > 0u) && ((s_1.ray.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < 1.0)) {
+        float _e102 = rand_next(rng_state);
+        if (_e102 >= q_4) {
+            PathState _e104 = out;
+            return _e104;
+        }
+        metal::float3 _e105 = beta;
+        beta = _e105 / metal::float3(q_4);
+    }
+    metal::float3 _e109 = beta;
+    out.beta = _e109;
+    metal::float3 _e111 = dir_6;
+    metal::float3 _e112 = spawn_origin(_e22, error_4, _e111);
+    metal::float3 _e114 = dir_6;
+    uint _e116 = F32_INF;
+    out.ray = Ray {_e112, 0.0, _e114, as_type<float>(_e116), s_1.ray.depth + 1u, RAY_SECONDARY, s_1.ray.medium};
+    out.live = true;
+    PathState _e126 = out;
+    return _e126;
+}
+
 metal::float3 trace_path(
     Ray camera_ray,
     constant FrameUniforms& frame,
@@ -1567,88 +1664,22 @@ metal::float3 trace_path(
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray ray_19 = {};
-    metal::float3 beta = {};
-    metal::float3 radiance_2 = {};
-    bool spawned = {};
-    metal::float3 dir_6 = {};
-    metal::float3 weight_2 = {};
-    ray_19 = camera_ray;
-    beta = metal::float3(1.0);
-    radiance_2 = metal::float3(0.0);
+    PathState s_2 = {};
+    s_2 = PathState {camera_ray, metal::float3(1.0), metal::float3(0.0), true};
     uint2 loop_bound_5 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        Ray _e8 = ray_19;
-        Candidate _e10 = intersect_scene(_e8, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        if (_e10.slot == NO_HIT) {
-            hit_error = 0.0;
-            metal::float3 _e16 = radiance_2;
-            metal::float3 _e17 = beta;
-            Ray _e18 = ray_19;
-            metal::float3 _e19 = miss(_e18, frame);
-            return _e16 + (_e17 * _e19);
+        PathState _e8 = s_2;
+        Ray _e10 = s_2.ray;
+        Candidate _e12 = intersect_scene(_e10, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        PathState _e13 = path_step(_e8, _e12, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        s_2 = _e13;
+        bool _e15 = s_2.live;
+        if (!(_e15)) {
+            metal::float3 _e18 = s_2.radiance;
+            return _e18;
         }
-        GpuInstance inst_10 = instances[_e10.slot];
-        Ray _e26 = ray_19;
-        Hit _e27 = finish_hit(_e26, _e10, instances, triangles, hit_error, attributes, _buffer_sizes);
-        float error_4 = hit_error;
-        spawned = false;
-        dir_6 = metal::float3(0.0);
-        weight_2 = metal::float3(0.0);
-        uint _e44 = ray_19.depth;
-        if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e44 < MAX_DEPTH)) {
-            spawn_count = 0u;
-            Ray _e52 = ray_19;
-            dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e52, _e27, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-            uint _e54 = spawn_count;
-            if (metal::min(_e54, 1u) > 0u) {
-                spawned = true;
-                metal::float3 _e63 = spawn_dirs.inner[0u];
-                dir_6 = _e63;
-                metal::float3 _e67 = spawn_weights.inner[0u];
-                weight_2 = _e67;
-            }
-        }
-        metal::float3 _e68 = radiance_2;
-        metal::float3 _e69 = beta;
-        Ray _e72 = ray_19;
-        metal::float3 _e75 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e72, _e27, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
-        radiance_2 = _e68 + (_e69 * _e75);
-        bool _e78 = spawned;
-        if (!(_e78)) {
-            metal::float3 _e80 = radiance_2;
-            return _e80;
-        }
-        metal::float3 _e81 = beta;
-        metal::float3 _e82 = weight_2;
-        beta = _e81 * _e82;
-        float _e85 = beta.x;
-        float _e87 = beta.y;
-        float _e89 = beta.z;
-        float q_4 = metal::max(_e85, metal::max(_e87, _e89));
-        if (!((q_4 > 0.0))) {
-            metal::float3 _e95 = radiance_2;
-            return _e95;
-        }
-        uint _e100 = ray_19.depth;
-        if (((ROULETTE_DEPTH > 0u) && ((_e100 + 1u) >= ROULETTE_DEPTH)) && (q_4 < 1.0)) {
-            float _e109 = rand_next(rng_state);
-            if (_e109 >= q_4) {
-                metal::float3 _e111 = radiance_2;
-                return _e111;
-            }
-            metal::float3 _e112 = beta;
-            beta = _e112 / metal::float3(q_4);
-        }
-        metal::float3 _e115 = dir_6;
-        metal::float3 _e116 = spawn_origin(_e27, error_4, _e115);
-        metal::float3 _e118 = dir_6;
-        uint _e120 = F32_INF;
-        uint _e123 = ray_19.depth;
-        uint _e128 = ray_19.medium;
-        ray_19 = Ray {_e116, 0.0, _e118, as_type<float>(_e120), _e123 + 1u, RAY_SECONDARY, _e128};
     }
     return metal::float3 {};
 }
@@ -1671,24 +1702,24 @@ metal::float3 trace(
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 radiance_3 = {};
+    metal::float3 radiance_2 = {};
     float t_2 = {};
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray_1, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        radiance_3 = metal::float3(0.0);
+        radiance_2 = metal::float3(0.0);
         uint _e9 = F32_INF;
         t_2 = as_type<float>(_e9);
         if (_e4.slot == NO_HIT) {
             hit_error = 0.0;
             metal::float3 _e17 = miss(camera_ray_1, frame);
-            radiance_3 = _e17;
+            radiance_2 = _e17;
         } else {
             metal::float3 _e18 = shade_direct(camera_ray_1, _e4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, _buffer_sizes);
-            radiance_3 = _e18;
+            radiance_2 = _e18;
             t_2 = _e4.t;
         }
         float _e20 = t_2;
-        metal::float3 _e21 = radiance_3;
+        metal::float3 _e21 = radiance_2;
         metal::float3 _e22 = through_medium(camera_ray_1, _e20, _e21, instances, _buffer_sizes);
         return _e22;
     }
@@ -1703,10 +1734,10 @@ metal::bool3 is_finite_vec3f(
 }
 
 metal::float3 finite_or_zero(
-    metal::float3 c_3
+    metal::float3 c_4
 ) {
-    metal::bool3 _e3 = is_finite_vec3f(c_3);
-    return metal::select(metal::float3(0.0), c_3, _e3);
+    metal::bool3 _e3 = is_finite_vec3f(c_4);
+    return metal::select(metal::float3(0.0), c_4, _e3);
 }
 
 void render_pixel(
@@ -1732,39 +1763,39 @@ void render_pixel(
 ) {
     metal::float3 sum = {};
     uint bad = {};
-    uint s_1 = {};
-    Ray ray_20 = {};
+    uint s_3 = {};
+    Ray ray_19 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_2 = tile;
     sum = metal::float3(0.0);
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
-    s_1 = 0u;
+    s_3 = 0u;
     uint2 loop_bound_6 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e46 = s_1;
-            s_1 = _e46 + 1u;
+            uint _e46 = s_3;
+            s_3 = _e46 + 1u;
         }
         loop_init_3 = false;
-        uint _e13 = s_1;
+        uint _e13 = s_3;
         if (_e13 >= end_1) {
             break;
         }
-        uint _e18 = s_1;
+        uint _e18 = s_3;
         uint sample_3 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
-        ray_20 = _e23;
-        ray_20.depth = 0u;
-        ray_20.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_20.origin;
+        ray_19 = _e23;
+        ray_19.depth = 0u;
+        ray_19.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_19.origin;
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-        ray_20.medium = _e33;
-        Ray _e34 = ray_20;
+        ray_19.medium = _e33;
+        Ray _e34 = ray_19;
         metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {

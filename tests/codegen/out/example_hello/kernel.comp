@@ -117,6 +117,12 @@ struct PointLight {
 struct Mirror {
     vec3 tint;
 };
+struct PathState {
+    Ray ray;
+    vec3 beta;
+    vec3 radiance;
+    bool live;
+};
 const uint WORKGROUP_WIDTH = 8u;
 const uint WORKGROUP_HEIGHT = 8u;
 const uint NO_HIT = 4294967295u;
@@ -273,9 +279,9 @@ uint samples_per_pixel_query() {
 
 float rand_next() {
     uint _e1 = rng_state;
-    uint s_2 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_2;
-    uint word_1 = (((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u);
+    uint s_4 = ((_e1 * 747796405u) + 2891336453u);
+    rng_state = s_4;
+    uint word_1 = (((s_4 >> (((s_4 >> 28u) + 4u) & 31u)) ^ s_4) * 277803737u);
     uint r_3 = ((word_1 >> 22u) ^ word_1);
     return (float((r_3 >> 8u)) * (1.0 / 16777216.0));
 }
@@ -335,8 +341,8 @@ Ray to_object(GpuInstance inst, Ray ray) {
 
 vec3 safe_inverse(vec3 d) {
     vec3 tiny = vec3(1.1754944e-38);
-    vec3 s_3 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
-    vec3 dd = mix(d, (s_3 * tiny), lessThan(abs(d), tiny));
+    vec3 s_5 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
+    vec3 dd = mix(d, (s_5 * tiny), lessThan(abs(d), tiny));
     return (vec3(1.0) / dd);
 }
 
@@ -362,20 +368,20 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
     vec3 b_5 = (_e18.xyz - r_1.origin);
     vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
-    vec3 c_4 = (_e28.xyz - r_1.origin);
+    vec3 c_5 = (_e28.xyz - r_1.origin);
     float ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
     float ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
     float bx = (b_5[min(r_1.kx, 2u)] - (r_1.shear.x * b_5[min(r_1.kz, 2u)]));
     float by = (b_5[min(r_1.ky, 2u)] - (r_1.shear.y * b_5[min(r_1.kz, 2u)]));
-    float cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
-    float cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
+    float cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
+    float cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
     float v_1 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
-    float t_3 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    float t_3 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
     bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_8 ? vec3(t_3, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
@@ -476,10 +482,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 vec3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
-                    Candidate c_5 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0.0));
-                    bool _e57 = accept(inst_2, world_ray, c_5);
+                    Candidate c_6 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0.0));
+                    bool _e57 = accept(inst_2, world_ray, c_6);
                     if (_e57) {
-                        best = c_5;
+                        best = c_6;
                         if (shadow) {
                             Candidate _e58 = best;
                             return _e58;
@@ -588,9 +594,9 @@ vec3 decode_octahedral(uint bits) {
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n_1;
-        vec2 s_4 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
+        vec2 s_6 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
         vec3 _e29 = n_1;
-        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_4);
+        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_6);
         float _e37 = n_1.z;
         n_1 = vec3(xy.x, xy.y, _e37);
     }
@@ -1078,109 +1084,115 @@ vec3 spawn_origin(Hit hit_7, float error_2, vec3 dir_4) {
     return _e5;
 }
 
-vec3 trace_path(Ray camera_ray) {
-    Ray ray_20 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
-    vec3 beta = vec3(0.0);
-    vec3 radiance_2 = vec3(0.0);
+PathState path_step(PathState s_1, Candidate c_3) {
+    PathState out_ = PathState(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), vec3(0.0), vec3(0.0), false);
     bool spawned = false;
     vec3 dir_5 = vec3(0.0);
     vec3 weight_1 = vec3(0.0);
-    ray_20 = camera_ray;
-    beta = vec3(1.0);
-    radiance_2 = vec3(0.0);
+    vec3 beta = vec3(0.0);
+    Ray ray_21 = s_1.ray;
+    out_ = s_1;
+    out_.live = false;
+    if ((c_3.slot == NO_HIT)) {
+        hit_error = 0.0;
+        vec3 _e14 = miss(ray_21);
+        out_.radiance = (s_1.radiance + (s_1.beta * _e14));
+        PathState _e17 = out_;
+        return _e17;
+    }
+    GpuInstance inst_10 = _group_0_binding_3_cs[c_3.slot];
+    Hit _e22 = finish_hit(ray_21, c_3);
+    float error_4 = hit_error;
+    spawned = false;
+    dir_5 = vec3(0.0);
+    weight_1 = vec3(0.0);
+    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_21.depth < MAX_DEPTH))) {
+        spawn_count = 0u;
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_21, _e22);
+        uint _e47 = spawn_count;
+        if ((min(_e47, 1u) > 0u)) {
+            spawned = true;
+            vec3 _e56 = spawn_dirs[0u];
+            dir_5 = _e56;
+            vec3 _e60 = spawn_weights[0u];
+            weight_1 = _e60;
+        }
+    }
+    vec3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_21, _e22, vec3(0.0));
+    out_.radiance = (s_1.radiance + (s_1.beta * _e68));
+    bool _e71 = spawned;
+    if (!(_e71)) {
+        PathState _e73 = out_;
+        return _e73;
+    }
+    vec3 _e75 = weight_1;
+    beta = (s_1.beta * _e75);
+    float _e79 = beta.x;
+    float _e81 = beta.y;
+    float _e83 = beta.z;
+    float q_3 = max(_e79, max(_e81, _e83));
+    if (!((q_3 > 0.0))) {
+        PathState _e89 = out_;
+        return _e89;
+    }
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_21.depth + 1u) >= ROULETTE_DEPTH)) && (q_3 < 1.0))) {
+        float _e102 = rand_next();
+        if ((_e102 >= q_3)) {
+            PathState _e104 = out_;
+            return _e104;
+        }
+        vec3 _e105 = beta;
+        beta = (_e105 / vec3(q_3));
+    }
+    vec3 _e109 = beta;
+    out_.beta = _e109;
+    vec3 _e111 = dir_5;
+    vec3 _e112 = spawn_origin(_e22, error_4, _e111);
+    vec3 _e114 = dir_5;
+    uint _e116 = F32_INF;
+    out_.ray = Ray(_e112, 0.0, _e114, uintBitsToFloat(_e116), (ray_21.depth + 1u), RAY_SECONDARY, ray_21.medium);
+    out_.live = true;
+    PathState _e126 = out_;
+    return _e126;
+}
+
+vec3 trace_path(Ray camera_ray) {
+    PathState s_2 = PathState(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), vec3(0.0), vec3(0.0), false);
+    s_2 = PathState(camera_ray, vec3(1.0), vec3(0.0), true);
     while(true) {
-        Ray _e8 = ray_20;
-        Candidate _e10 = intersect_scene(_e8, false);
-        if ((_e10.slot == NO_HIT)) {
-            hit_error = 0.0;
-            vec3 _e16 = radiance_2;
-            vec3 _e17 = beta;
-            Ray _e18 = ray_20;
-            vec3 _e19 = miss(_e18);
-            return (_e16 + (_e17 * _e19));
+        PathState _e8 = s_2;
+        Ray _e10 = s_2.ray;
+        Candidate _e12 = intersect_scene(_e10, false);
+        PathState _e13 = path_step(_e8, _e12);
+        s_2 = _e13;
+        bool _e15 = s_2.live;
+        if (!(_e15)) {
+            vec3 _e18 = s_2.radiance;
+            return _e18;
         }
-        GpuInstance inst_10 = _group_0_binding_3_cs[_e10.slot];
-        Ray _e26 = ray_20;
-        Hit _e27 = finish_hit(_e26, _e10);
-        float error_4 = hit_error;
-        spawned = false;
-        dir_5 = vec3(0.0);
-        weight_1 = vec3(0.0);
-        uint _e44 = ray_20.depth;
-        if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e44 < MAX_DEPTH))) {
-            spawn_count = 0u;
-            Ray _e52 = ray_20;
-            dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e52, _e27);
-            uint _e54 = spawn_count;
-            if ((min(_e54, 1u) > 0u)) {
-                spawned = true;
-                vec3 _e63 = spawn_dirs[0u];
-                dir_5 = _e63;
-                vec3 _e67 = spawn_weights[0u];
-                weight_1 = _e67;
-            }
-        }
-        vec3 _e68 = radiance_2;
-        vec3 _e69 = beta;
-        Ray _e72 = ray_20;
-        vec3 _e75 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e72, _e27, vec3(0.0));
-        radiance_2 = (_e68 + (_e69 * _e75));
-        bool _e78 = spawned;
-        if (!(_e78)) {
-            vec3 _e80 = radiance_2;
-            return _e80;
-        }
-        vec3 _e81 = beta;
-        vec3 _e82 = weight_1;
-        beta = (_e81 * _e82);
-        float _e85 = beta.x;
-        float _e87 = beta.y;
-        float _e89 = beta.z;
-        float q_3 = max(_e85, max(_e87, _e89));
-        if (!((q_3 > 0.0))) {
-            vec3 _e95 = radiance_2;
-            return _e95;
-        }
-        uint _e100 = ray_20.depth;
-        if ((((ROULETTE_DEPTH > 0u) && ((_e100 + 1u) >= ROULETTE_DEPTH)) && (q_3 < 1.0))) {
-            float _e109 = rand_next();
-            if ((_e109 >= q_3)) {
-                vec3 _e111 = radiance_2;
-                return _e111;
-            }
-            vec3 _e112 = beta;
-            beta = (_e112 / vec3(q_3));
-        }
-        vec3 _e115 = dir_5;
-        vec3 _e116 = spawn_origin(_e27, error_4, _e115);
-        vec3 _e118 = dir_5;
-        uint _e120 = F32_INF;
-        uint _e123 = ray_20.depth;
-        uint _e128 = ray_20.medium;
-        ray_20 = Ray(_e116, 0.0, _e118, uintBitsToFloat(_e120), (_e123 + 1u), RAY_SECONDARY, _e128);
     }
     return vec3(0.0);
 }
 
 vec3 trace(Ray camera_ray_1) {
-    vec3 radiance_3 = vec3(0.0);
+    vec3 radiance_2 = vec3(0.0);
     float t_2 = 0.0;
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray_1, false);
-        radiance_3 = vec3(0.0);
+        radiance_2 = vec3(0.0);
         uint _e9 = F32_INF;
         t_2 = uintBitsToFloat(_e9);
         if ((_e4.slot == NO_HIT)) {
             hit_error = 0.0;
             vec3 _e17 = miss(camera_ray_1);
-            radiance_3 = _e17;
+            radiance_2 = _e17;
         } else {
             vec3 _e18 = shade_direct(camera_ray_1, _e4);
-            radiance_3 = _e18;
+            radiance_2 = _e18;
             t_2 = _e4.t;
         }
         float _e20 = t_2;
-        vec3 _e21 = radiance_3;
+        vec3 _e21 = radiance_2;
         vec3 _e22 = through_medium(camera_ray_1, _e20, _e21);
         return _e22;
     }
@@ -1192,44 +1204,44 @@ bvec3 is_finite_vec3f(vec3 x_2) {
     return lessThan((floatBitsToUint(x_2) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
-vec3 finite_or_zero(vec3 c_3) {
-    bvec3 _e3 = is_finite_vec3f(c_3);
-    return mix(vec3(0.0), c_3, _e3);
+vec3 finite_or_zero(vec3 c_4) {
+    bvec3 _e3 = is_finite_vec3f(c_4);
+    return mix(vec3(0.0), c_4, _e3);
 }
 
 void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
-    uint s_1 = 0u;
-    Ray ray_21 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    uint s_3 = 0u;
+    Ray ray_20 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_2 = _group_0_binding_1_cs;
     sum = vec3(0.0);
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
-    s_1 = 0u;
+    s_3 = 0u;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e46 = s_1;
-            s_1 = (_e46 + 1u);
+            uint _e46 = s_3;
+            s_3 = (_e46 + 1u);
         }
         loop_init_3 = false;
-        uint _e13 = s_1;
+        uint _e13 = s_3;
         if ((_e13 >= end_1)) {
             break;
         }
-        uint _e18 = s_1;
+        uint _e18 = s_3;
         uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_21 = _e23;
-        ray_21.depth = 0u;
-        ray_21.kind = RAY_CAMERA;
-        vec3 _e31 = ray_21.origin;
+        ray_20 = _e23;
+        ray_20.depth = 0u;
+        ray_20.kind = RAY_CAMERA;
+        vec3 _e31 = ray_20.origin;
         uint _e33 = medium_at(_e31, NO_HIT);
-        ray_21.medium = _e33;
-        Ray _e34 = ray_21;
+        ray_20.medium = _e33;
+        Ray _e34 = ray_20;
         vec3 _e35 = trace(_e34);
         bvec3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

@@ -147,6 +147,12 @@ struct PathPbr {
     vec3 emissive;
     uint roulette_depth;
 };
+struct PathState {
+    Ray ray;
+    vec3 beta;
+    vec3 radiance;
+    bool live;
+};
 struct PbrSample {
     vec3 dir;
     vec3 weight;
@@ -311,9 +317,9 @@ uint samples_per_pixel_query() {
 
 float rand_next() {
     uint _e1 = rng_state;
-    uint s_3 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_3;
-    uint word_1 = (((s_3 >> (((s_3 >> 28u) + 4u) & 31u)) ^ s_3) * 277803737u);
+    uint s_5 = ((_e1 * 747796405u) + 2891336453u);
+    rng_state = s_5;
+    uint word_1 = (((s_5 >> (((s_5 >> 28u) + 4u) & 31u)) ^ s_5) * 277803737u);
     uint r_3 = ((word_1 >> 22u) ^ word_1);
     return (float((r_3 >> 8u)) * (1.0 / 16777216.0));
 }
@@ -373,8 +379,8 @@ Ray to_object(GpuInstance inst, Ray ray) {
 
 vec3 safe_inverse(vec3 d) {
     vec3 tiny = vec3(1.1754944e-38);
-    vec3 s_4 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
-    vec3 dd = mix(d, (s_4 * tiny), lessThan(abs(d), tiny));
+    vec3 s_6 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
+    vec3 dd = mix(d, (s_6 * tiny), lessThan(abs(d), tiny));
     return (vec3(1.0) / dd);
 }
 
@@ -400,20 +406,20 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
     vec3 b_5 = (_e18.xyz - r_1.origin);
     vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
-    vec3 c_6 = (_e28.xyz - r_1.origin);
+    vec3 c_7 = (_e28.xyz - r_1.origin);
     float ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
     float ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
     float bx = (b_5[min(r_1.kx, 2u)] - (r_1.shear.x * b_5[min(r_1.kz, 2u)]));
     float by = (b_5[min(r_1.ky, 2u)] - (r_1.shear.y * b_5[min(r_1.kz, 2u)]));
-    float cx = (c_6[min(r_1.kx, 2u)] - (r_1.shear.x * c_6[min(r_1.kz, 2u)]));
-    float cy = (c_6[min(r_1.ky, 2u)] - (r_1.shear.y * c_6[min(r_1.kz, 2u)]));
+    float cx = (c_7[min(r_1.kx, 2u)] - (r_1.shear.x * c_7[min(r_1.kz, 2u)]));
+    float cy = (c_7[min(r_1.ky, 2u)] - (r_1.shear.y * c_7[min(r_1.kz, 2u)]));
     float u_3 = ((cx * by) - (cy * bx));
     float v_4 = ((ax * cy) - (ay * cx));
     float w_1 = ((bx * ay) - (by * ax));
     bool outside = ((((u_3 < 0.0) || (v_4 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_4 > 0.0)) || (w_1 > 0.0)));
     float det = ((u_3 + v_4) + w_1);
     float rcp = (1.0 / det);
-    float t_4 = ((((u_3 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_4 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
+    float t_4 = ((((u_3 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_4 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear.z * c_7[min(r_1.kz, 2u)]))) * rcp);
     bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_12 ? vec3(t_4, (v_4 * rcp), (w_1 * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
@@ -514,10 +520,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 vec3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
-                    Candidate c_7 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0.0));
-                    bool _e57 = accept(inst_2, world_ray, c_7);
+                    Candidate c_8 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0.0));
+                    bool _e57 = accept(inst_2, world_ray, c_8);
                     if (_e57) {
-                        best = c_7;
+                        best = c_8;
                         if (shadow) {
                             Candidate _e58 = best;
                             return _e58;
@@ -641,10 +647,10 @@ Candidate intersect_object(uint slot_2, Ray ray_7, Candidate best_1, bool shadow
     float _e26 = r_2.tmax;
     uint _e31 = F32_INF;
     if ((((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < uintBitsToFloat(_e31)))) {
-        Candidate c_8 = Candidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        bool _e40 = accept(inst_6, ray_7, c_8);
+        Candidate c_9 = Candidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
+        bool _e40 = accept(inst_6, ray_7, c_9);
         if (_e40) {
-            return c_8;
+            return c_9;
         }
     }
     return best_1;
@@ -686,9 +692,9 @@ vec3 decode_octahedral(uint bits) {
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n_1;
-        vec2 s_5 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
+        vec2 s_7 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
         vec3 _e29 = n_1;
-        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_5);
+        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_7);
         float _e37 = n_1.z;
         n_1 = vec3(xy.x, xy.y, _e37);
     }
@@ -1012,14 +1018,14 @@ float shadow_query(vec3 position_1, vec3 normal_1, vec3 dir_1, float dist_1) {
 }
 
 LightSample quad_light(QuadLight l, vec3 position_2, vec3 normal_2) {
-    vec3 c_9 = cross(l.edge_u, l.edge_v);
-    float area = length(c_9);
+    vec3 c_10 = cross(l.edge_u, l.edge_v);
+    float area = length(c_10);
     vec2 _e7 = rand2_next();
     vec3 to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_2);
     float dist2_ = dot(to_light, to_light);
     float dist_2 = sqrt(dist2_);
     vec3 dir_7 = (to_light / vec3(max(dist_2, 1e-20)));
-    float cos_light = (-(dot(dir_7, c_9)) / max(area, 1e-30));
+    float cos_light = (-(dot(dir_7, c_10)) / max(area, 1e-30));
     if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
         return LightSample(dir_7, dist_2, vec3(0.0), 0.0);
     }
@@ -1147,10 +1153,10 @@ vec3 path_diffuse_shade(PathDiffuse m, Ray ray_13, Hit hit_1, vec3 secondary) {
         }
         uint _e16 = i_2;
         LightSample _e19 = sample_light_query(_e16, hit_1.position, hit_1.geometric_normal);
-        float c_10 = max(dot(n_13, _e19.dir), 0.0);
+        float c_11 = max(dot(n_13, _e19.dir), 0.0);
         vec3 _e24 = direct;
-        float _e28 = mis_light_weight(_e19, (c_10 * INV_PI));
-        direct = (_e24 + (_e19.radiance * vec3((c_10 * _e28))));
+        float _e28 = mis_light_weight(_e19, (c_11 * INV_PI));
+        direct = (_e24 + (_e19.radiance * vec3((c_11 * _e28))));
     }
     vec3 _e40 = direct;
     return (((m.albedo * vec3(INV_PI)) * _e40) + secondary);
@@ -1476,8 +1482,8 @@ vec3 pbr_sample_vndf(vec3 ve, float alpha, vec2 u_1) {
     float r_6 = sqrt(u_1.x);
     float phi_2 = (TAU * u_1.y);
     float p1_ = (r_6 * cos(phi_2));
-    float s_6 = (0.5 * (1.0 + _e9.z));
-    float p2_ = (((1.0 - s_6) * sqrt(max((1.0 - (p1_ * p1_)), 0.0))) + ((s_6 * r_6) * sin(phi_2)));
+    float s_8 = (0.5 * (1.0 + _e9.z));
+    float p2_ = (((1.0 - s_8) * sqrt(max((1.0 - (p1_ * p1_)), 0.0))) + ((s_8 * r_6) * sin(phi_2)));
     vec3 _e59 = t1_;
     vec3 nh = (((_e59 * vec3(p1_)) + (t2_ * vec3(p2_))) + (_e9 * vec3(sqrt(max(((1.0 - (p1_ * p1_)) - (p2_ * p2_)), 0.0)))));
     vec3 _e84 = normalize_vec3f(vec3((alpha * nh.x), (alpha * nh.y), max(nh.z, 0.0)));
@@ -1583,109 +1589,115 @@ vec3 spawn_origin(Hit hit_11, float error_2, vec3 dir_5) {
     return _e5;
 }
 
-vec3 trace_path(Ray camera_ray) {
-    Ray ray_28 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
-    vec3 beta = vec3(0.0);
-    vec3 radiance_2 = vec3(0.0);
+PathState path_step(PathState s_2, Candidate c_5) {
+    PathState out_ = PathState(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), vec3(0.0), vec3(0.0), false);
     bool spawned = false;
     vec3 dir_6 = vec3(0.0);
     vec3 weight_3 = vec3(0.0);
-    ray_28 = camera_ray;
-    beta = vec3(1.0);
-    radiance_2 = vec3(0.0);
+    vec3 beta = vec3(0.0);
+    Ray ray_29 = s_2.ray;
+    out_ = s_2;
+    out_.live = false;
+    if ((c_5.slot == NO_HIT)) {
+        hit_error = 0.0;
+        vec3 _e14 = miss(ray_29);
+        out_.radiance = (s_2.radiance + (s_2.beta * _e14));
+        PathState _e17 = out_;
+        return _e17;
+    }
+    GpuInstance inst_10 = _group_0_binding_3_cs[c_5.slot];
+    Hit _e22 = finish_hit(ray_29, c_5);
+    float error_4 = hit_error;
+    spawned = false;
+    dir_6 = vec3(0.0);
+    weight_3 = vec3(0.0);
+    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_29.depth < MAX_DEPTH))) {
+        spawn_count = 0u;
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_29, _e22);
+        uint _e47 = spawn_count;
+        if ((min(_e47, 1u) > 0u)) {
+            spawned = true;
+            vec3 _e56 = spawn_dirs[0u];
+            dir_6 = _e56;
+            vec3 _e60 = spawn_weights[0u];
+            weight_3 = _e60;
+        }
+    }
+    vec3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_29, _e22, vec3(0.0));
+    out_.radiance = (s_2.radiance + (s_2.beta * _e68));
+    bool _e71 = spawned;
+    if (!(_e71)) {
+        PathState _e73 = out_;
+        return _e73;
+    }
+    vec3 _e75 = weight_3;
+    beta = (s_2.beta * _e75);
+    float _e79 = beta.x;
+    float _e81 = beta.y;
+    float _e83 = beta.z;
+    float q_6 = max(_e79, max(_e81, _e83));
+    if (!((q_6 > 0.0))) {
+        PathState _e89 = out_;
+        return _e89;
+    }
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_29.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < 1.0))) {
+        float _e102 = rand_next();
+        if ((_e102 >= q_6)) {
+            PathState _e104 = out_;
+            return _e104;
+        }
+        vec3 _e105 = beta;
+        beta = (_e105 / vec3(q_6));
+    }
+    vec3 _e109 = beta;
+    out_.beta = _e109;
+    vec3 _e111 = dir_6;
+    vec3 _e112 = spawn_origin(_e22, error_4, _e111);
+    vec3 _e114 = dir_6;
+    uint _e116 = F32_INF;
+    out_.ray = Ray(_e112, 0.0, _e114, uintBitsToFloat(_e116), (ray_29.depth + 1u), RAY_SECONDARY, ray_29.medium);
+    out_.live = true;
+    PathState _e126 = out_;
+    return _e126;
+}
+
+vec3 trace_path(Ray camera_ray) {
+    PathState s_3 = PathState(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), vec3(0.0), vec3(0.0), false);
+    s_3 = PathState(camera_ray, vec3(1.0), vec3(0.0), true);
     while(true) {
-        Ray _e8 = ray_28;
-        Candidate _e10 = intersect_scene(_e8, false);
-        if ((_e10.slot == NO_HIT)) {
-            hit_error = 0.0;
-            vec3 _e16 = radiance_2;
-            vec3 _e17 = beta;
-            Ray _e18 = ray_28;
-            vec3 _e19 = miss(_e18);
-            return (_e16 + (_e17 * _e19));
+        PathState _e8 = s_3;
+        Ray _e10 = s_3.ray;
+        Candidate _e12 = intersect_scene(_e10, false);
+        PathState _e13 = path_step(_e8, _e12);
+        s_3 = _e13;
+        bool _e15 = s_3.live;
+        if (!(_e15)) {
+            vec3 _e18 = s_3.radiance;
+            return _e18;
         }
-        GpuInstance inst_10 = _group_0_binding_3_cs[_e10.slot];
-        Ray _e26 = ray_28;
-        Hit _e27 = finish_hit(_e26, _e10);
-        float error_4 = hit_error;
-        spawned = false;
-        dir_6 = vec3(0.0);
-        weight_3 = vec3(0.0);
-        uint _e44 = ray_28.depth;
-        if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e44 < MAX_DEPTH))) {
-            spawn_count = 0u;
-            Ray _e52 = ray_28;
-            dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e52, _e27);
-            uint _e54 = spawn_count;
-            if ((min(_e54, 1u) > 0u)) {
-                spawned = true;
-                vec3 _e63 = spawn_dirs[0u];
-                dir_6 = _e63;
-                vec3 _e67 = spawn_weights[0u];
-                weight_3 = _e67;
-            }
-        }
-        vec3 _e68 = radiance_2;
-        vec3 _e69 = beta;
-        Ray _e72 = ray_28;
-        vec3 _e75 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e72, _e27, vec3(0.0));
-        radiance_2 = (_e68 + (_e69 * _e75));
-        bool _e78 = spawned;
-        if (!(_e78)) {
-            vec3 _e80 = radiance_2;
-            return _e80;
-        }
-        vec3 _e81 = beta;
-        vec3 _e82 = weight_3;
-        beta = (_e81 * _e82);
-        float _e85 = beta.x;
-        float _e87 = beta.y;
-        float _e89 = beta.z;
-        float q_6 = max(_e85, max(_e87, _e89));
-        if (!((q_6 > 0.0))) {
-            vec3 _e95 = radiance_2;
-            return _e95;
-        }
-        uint _e100 = ray_28.depth;
-        if ((((ROULETTE_DEPTH > 0u) && ((_e100 + 1u) >= ROULETTE_DEPTH)) && (q_6 < 1.0))) {
-            float _e109 = rand_next();
-            if ((_e109 >= q_6)) {
-                vec3 _e111 = radiance_2;
-                return _e111;
-            }
-            vec3 _e112 = beta;
-            beta = (_e112 / vec3(q_6));
-        }
-        vec3 _e115 = dir_6;
-        vec3 _e116 = spawn_origin(_e27, error_4, _e115);
-        vec3 _e118 = dir_6;
-        uint _e120 = F32_INF;
-        uint _e123 = ray_28.depth;
-        uint _e128 = ray_28.medium;
-        ray_28 = Ray(_e116, 0.0, _e118, uintBitsToFloat(_e120), (_e123 + 1u), RAY_SECONDARY, _e128);
     }
     return vec3(0.0);
 }
 
 vec3 trace(Ray camera_ray_1) {
-    vec3 radiance_3 = vec3(0.0);
+    vec3 radiance_2 = vec3(0.0);
     float t_3 = 0.0;
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray_1, false);
-        radiance_3 = vec3(0.0);
+        radiance_2 = vec3(0.0);
         uint _e9 = F32_INF;
         t_3 = uintBitsToFloat(_e9);
         if ((_e4.slot == NO_HIT)) {
             hit_error = 0.0;
             vec3 _e17 = miss(camera_ray_1);
-            radiance_3 = _e17;
+            radiance_2 = _e17;
         } else {
             vec3 _e18 = shade_direct(camera_ray_1, _e4);
-            radiance_3 = _e18;
+            radiance_2 = _e18;
             t_3 = _e4.t;
         }
         float _e20 = t_3;
-        vec3 _e21 = radiance_3;
+        vec3 _e21 = radiance_2;
         vec3 _e22 = through_medium(camera_ray_1, _e20, _e21);
         return _e22;
     }
@@ -1697,44 +1709,44 @@ bvec3 is_finite_vec3f(vec3 x_2) {
     return lessThan((floatBitsToUint(x_2) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
-vec3 finite_or_zero(vec3 c_5) {
-    bvec3 _e3 = is_finite_vec3f(c_5);
-    return mix(vec3(0.0), c_5, _e3);
+vec3 finite_or_zero(vec3 c_6) {
+    bvec3 _e3 = is_finite_vec3f(c_6);
+    return mix(vec3(0.0), c_6, _e3);
 }
 
 void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
-    uint s_2 = 0u;
-    Ray ray_29 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    uint s_4 = 0u;
+    Ray ray_28 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_2 = _group_0_binding_1_cs;
     sum = vec3(0.0);
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
-    s_2 = 0u;
+    s_4 = 0u;
     bool loop_init_4 = true;
     while(true) {
         if (!loop_init_4) {
-            uint _e46 = s_2;
-            s_2 = (_e46 + 1u);
+            uint _e46 = s_4;
+            s_4 = (_e46 + 1u);
         }
         loop_init_4 = false;
-        uint _e13 = s_2;
+        uint _e13 = s_4;
         if ((_e13 >= end_1)) {
             break;
         }
-        uint _e18 = s_2;
+        uint _e18 = s_4;
         uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_29 = _e23;
-        ray_29.depth = 0u;
-        ray_29.kind = RAY_CAMERA;
-        vec3 _e31 = ray_29.origin;
+        ray_28 = _e23;
+        ray_28.depth = 0u;
+        ray_28.kind = RAY_CAMERA;
+        vec3 _e31 = ray_28.origin;
         uint _e33 = medium_at(_e31, NO_HIT);
-        ray_29.medium = _e33;
-        Ray _e34 = ray_29;
+        ray_28.medium = _e33;
+        Ray _e34 = ray_28;
         vec3 _e35 = trace(_e34);
         bvec3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

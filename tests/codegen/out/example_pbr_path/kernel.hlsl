@@ -204,6 +204,14 @@ struct PathPbr {
     uint roulette_depth;
 };
 
+struct PathState {
+    Ray ray;
+    float3 beta;
+    int _pad2_0;
+    float3 radiance;
+    bool live;
+};
+
 struct PbrSample {
     float3 dir;
     int _pad1_0;
@@ -391,9 +399,9 @@ uint samples_per_pixel_query()
 float rand_next()
 {
     uint _e1 = rng_state;
-    uint s_3 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_3;
-    uint word_1 = (((s_3 >> (((s_3 >> 28u) + 4u) & 31u)) ^ s_3) * 277803737u);
+    uint s_5 = ((_e1 * 747796405u) + 2891336453u);
+    rng_state = s_5;
+    uint word_1 = (((s_5 >> (((s_5 >> 28u) + 4u) & 31u)) ^ s_5) * 277803737u);
     uint r_3 = ((word_1 >> 22u) ^ word_1);
     return (float((r_3 >> 8u)) * (1.0 / 16777216.0));
 }
@@ -443,16 +451,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_30 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_30;
+    const Ray ray_29 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_29;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
-    const Ray ray_31 = _e4;
-    return ray_31;
+    const Ray ray_30 = _e4;
+    return ray_30;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -481,15 +489,15 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_32 = _e25;
-    return ray_32;
+    const Ray ray_31 = _e25;
+    return ray_31;
 }
 
 float3 safe_inverse(float3 d)
 {
     float3 tiny = (1.1754944e-38).xxx;
-    float3 s_4 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny) ? (s_4 * tiny) : d);
+    float3 s_6 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 dd = ((abs(d) < tiny) ? (s_6 * tiny) : d);
     return ((1.0).xxx / dd);
 }
 
@@ -529,20 +537,20 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
     float3 b_5 = (_e18.xyz - r_1.origin);
     float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
-    float3 c_6 = (_e28.xyz - r_1.origin);
+    float3 c_7 = (_e28.xyz - r_1.origin);
     float ax = (a_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float ay = (a_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float bx = (b_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float by = (b_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * b_5[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float cx = (c_6[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_6[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float cy = (c_6[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_6[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cx = (c_7[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_7[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cy = (c_7[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_7[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u_3 = ((cx * by) - (cy * bx));
     float v_4 = ((ax * cy) - (ay * cx));
     float w_1 = ((bx * ay) - (by * ax));
     bool outside = ((((u_3 < 0.0) || (v_4 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_4 > 0.0)) || (w_1 > 0.0)));
     float det = ((u_3 + v_4) + w_1);
     float rcp_ = (1.0 / det);
-    float t_4 = ((((u_3 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_4 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w_1 * (r_1.shear.z * c_6[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_4 = ((((u_3 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_4 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w_1 * (r_1.shear.z * c_7[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_12 ? float3(t_4, (v_4 * rcp_), (w_1 * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
@@ -667,10 +675,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 const float3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < asfloat(_e49))) {
-                    Candidate c_7 = ConstructCandidate(_e46.x, slot_1, prim, _e46.yz, (0.0).xxx);
-                    const bool _e57 = accept(inst_2, world_ray, c_7);
+                    Candidate c_8 = ConstructCandidate(_e46.x, slot_1, prim, _e46.yz, (0.0).xxx);
+                    const bool _e57 = accept(inst_2, world_ray, c_8);
                     if (_e57) {
-                        best = c_7;
+                        best = c_8;
                         if (shadow) {
                             Candidate _e58 = best;
                             const Candidate candidate_1 = _e58;
@@ -846,10 +854,10 @@ Candidate intersect_object(uint slot_2, Ray ray_7, Candidate best_1, bool shadow
     float _e26 = r_2.tmax;
     uint _e31 = F32_INF;
     if ((((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < asfloat(_e31)))) {
-        Candidate c_8 = ConstructCandidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        const bool _e40 = accept(inst_6, ray_7, c_8);
+        Candidate c_9 = ConstructCandidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
+        const bool _e40 = accept(inst_6, ray_7, c_9);
         if (_e40) {
-            const Candidate candidate_4 = c_8;
+            const Candidate candidate_4 = c_9;
             return candidate_4;
         }
     }
@@ -908,9 +916,9 @@ float3 decode_octahedral(uint bits)
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         float3 _e21 = n_1;
-        float2 s_5 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
+        float2 s_7 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
         float3 _e29 = n_1;
-        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_5);
+        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_7);
         float _e37 = n_1.z;
         n_1 = float3(xy.x, xy.y, _e37);
     }
@@ -1297,8 +1305,8 @@ Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_33 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_33;
+    const Ray ray_32 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_32;
 }
 
 float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
@@ -1319,14 +1327,14 @@ LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg
 
 LightSample quad_light(QuadLight l, float3 position_2, float3 normal_2)
 {
-    float3 c_9 = cross(l.edge_u, l.edge_v);
-    float area = length(c_9);
+    float3 c_10 = cross(l.edge_u, l.edge_v);
+    float area = length(c_10);
     const float2 _e7 = rand2_next();
     float3 to_light = (((l.corner + (l.edge_u * (_e7.x).xxx)) + (l.edge_v * (_e7.y).xxx)) - position_2);
     float dist2_ = dot(to_light, to_light);
     float dist_2 = sqrt(dist2_);
     float3 dir_7 = (to_light / (max(dist_2, 1e-20)).xxx);
-    float cos_light = (-(dot(dir_7, c_9)) / max(area, 1e-30));
+    float cos_light = (-(dot(dir_7, c_10)) / max(area, 1e-30));
     if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
         const LightSample lightsample = ConstructLightSample(dir_7, dist_2, (0.0).xxx, 0.0);
         return lightsample;
@@ -1490,10 +1498,10 @@ float3 path_diffuse_shade(PathDiffuse m, Ray ray_13, Hit hit_1, float3 secondary
         }
         uint _e16 = i_2;
         const LightSample _e19 = sample_light_query(_e16, hit_1.position, hit_1.geometric_normal);
-        float c_10 = max(dot(n_13, _e19.dir), 0.0);
+        float c_11 = max(dot(n_13, _e19.dir), 0.0);
         float3 _e24 = direct;
-        const float _e28 = mis_light_weight(_e19, (c_10 * INV_PI));
-        direct = (_e24 + (_e19.radiance * ((c_10 * _e28)).xxx));
+        const float _e28 = mis_light_weight(_e19, (c_11 * INV_PI));
+        direct = (_e24 + (_e19.radiance * ((c_11 * _e28)).xxx));
     }
     float3 _e40 = direct;
     return (((m.albedo * (INV_PI).xxx) * _e40) + secondary);
@@ -1886,8 +1894,8 @@ float3 pbr_sample_vndf(float3 ve, float alpha, float2 u_1)
     float r_6 = sqrt(u_1.x);
     float phi_2 = (TAU * u_1.y);
     float p1_ = (r_6 * cos(phi_2));
-    float s_6 = (0.5 * (1.0 + _e9.z));
-    float p2_ = (((1.0 - s_6) * sqrt(max((1.0 - (p1_ * p1_)), 0.0))) + ((s_6 * r_6) * sin(phi_2)));
+    float s_8 = (0.5 * (1.0 + _e9.z));
+    float p2_ = (((1.0 - s_8) * sqrt(max((1.0 - (p1_ * p1_)), 0.0))) + ((s_8 * r_6) * sin(phi_2)));
     float3 _e59 = t1_;
     float3 nh = (((_e59 * (p1_).xxx) + (t2_ * (p2_).xxx)) + (_e9 * (sqrt(max(((1.0 - (p1_ * p1_)) - (p2_ * p2_)), 0.0))).xxx));
     const float3 _e84 = normalize_vec3f(float3((alpha * nh.x), (alpha * nh.y), max(nh.z, 0.0)));
@@ -2012,116 +2020,138 @@ float3 spawn_origin(Hit hit_11, float error_2, float3 dir_5)
     return _e5;
 }
 
-float3 trace_path(Ray camera_ray)
+PathState path_step(PathState s_2, Candidate c_5)
 {
-    Ray ray_28 = (Ray)0;
-    float3 beta = (float3)0;
-    float3 radiance_2 = (float3)0;
+    PathState out_ = (PathState)0;
     bool spawned = (bool)0;
     float3 dir_6 = (float3)0;
     float3 weight_3 = (float3)0;
+    float3 beta = (float3)0;
 
-    ray_28 = camera_ray;
-    beta = (1.0).xxx;
-    radiance_2 = (0.0).xxx;
+    Ray ray_33 = s_2.ray;
+    out_ = s_2;
+    out_.live = false;
+    if ((c_5.slot == NO_HIT)) {
+        hit_error = 0.0;
+        const float3 _e14 = miss(ray_33);
+        out_.radiance = (s_2.radiance + (s_2.beta * _e14));
+        PathState _e17 = out_;
+        const PathState pathstate = _e17;
+        return pathstate;
+    }
+    GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(c_5.slot*128+0)), asfloat(instances.Load4(c_5.slot*128+16)), asfloat(instances.Load4(c_5.slot*128+32)), asfloat(instances.Load4(c_5.slot*128+48)), asfloat(instances.Load4(c_5.slot*128+64)), asfloat(instances.Load4(c_5.slot*128+80)), asuint(instances.Load(c_5.slot*128+96)), asuint(instances.Load(c_5.slot*128+100)), asuint(instances.Load(c_5.slot*128+104)), asuint(instances.Load(c_5.slot*128+108)), asuint(instances.Load(c_5.slot*128+112)), asuint(instances.Load(c_5.slot*128+116)), asuint(instances.Load(c_5.slot*128+120)), asuint(instances.Load(c_5.slot*128+124)));
+    const Hit _e22 = finish_hit(ray_33, c_5);
+    float error_4 = hit_error;
+    spawned = false;
+    dir_6 = (0.0).xxx;
+    weight_3 = (0.0).xxx;
+    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_33.depth < MAX_DEPTH))) {
+        spawn_count = 0u;
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_33, _e22);
+        uint _e47 = spawn_count;
+        if ((min(_e47, 1u) > 0u)) {
+            spawned = true;
+            float3 _e56 = spawn_dirs[0u];
+            dir_6 = _e56;
+            float3 _e60 = spawn_weights[0u];
+            weight_3 = _e60;
+        }
+    }
+    const float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_33, _e22, (0.0).xxx);
+    out_.radiance = (s_2.radiance + (s_2.beta * _e68));
+    bool _e71 = spawned;
+    if (!(_e71)) {
+        PathState _e73 = out_;
+        const PathState pathstate_1 = _e73;
+        return pathstate_1;
+    }
+    float3 _e75 = weight_3;
+    beta = (s_2.beta * _e75);
+    float _e79 = beta.x;
+    float _e81 = beta.y;
+    float _e83 = beta.z;
+    float q_6 = max(_e79, max(_e81, _e83));
+    if (!((q_6 > 0.0))) {
+        PathState _e89 = out_;
+        const PathState pathstate_2 = _e89;
+        return pathstate_2;
+    }
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_33.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < 1.0))) {
+        const float _e102 = rand_next();
+        if ((_e102 >= q_6)) {
+            PathState _e104 = out_;
+            const PathState pathstate_3 = _e104;
+            return pathstate_3;
+        }
+        float3 _e105 = beta;
+        beta = (_e105 / (q_6).xxx);
+    }
+    float3 _e109 = beta;
+    out_.beta = _e109;
+    float3 _e111 = dir_6;
+    const float3 _e112 = spawn_origin(_e22, error_4, _e111);
+    float3 _e114 = dir_6;
+    uint _e116 = F32_INF;
+    out_.ray = ConstructRay(_e112, 0.0, _e114, asfloat(_e116), (ray_33.depth + 1u), RAY_SECONDARY, ray_33.medium);
+    out_.live = true;
+    PathState _e126 = out_;
+    const PathState pathstate_4 = _e126;
+    return pathstate_4;
+}
+
+PathState ConstructPathState(Ray arg0, float3 arg1, float3 arg2, bool arg3) {
+    PathState ret = (PathState)0;
+    ret.ray = arg0;
+    ret.beta = arg1;
+    ret.radiance = arg2;
+    ret.live = arg3;
+    return ret;
+}
+
+float3 trace_path(Ray camera_ray)
+{
+    PathState s_3 = (PathState)0;
+
+    s_3 = ConstructPathState(camera_ray, (1.0).xxx, (0.0).xxx, true);
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        Ray _e8 = ray_28;
-        const Candidate _e10 = intersect_scene(_e8, false);
-        if ((_e10.slot == NO_HIT)) {
-            hit_error = 0.0;
-            float3 _e16 = radiance_2;
-            float3 _e17 = beta;
-            Ray _e18 = ray_28;
-            const float3 _e19 = miss(_e18);
-            return (_e16 + (_e17 * _e19));
+        PathState _e8 = s_3;
+        Ray _e10 = s_3.ray;
+        const Candidate _e12 = intersect_scene(_e10, false);
+        const PathState _e13 = path_step(_e8, _e12);
+        s_3 = _e13;
+        bool _e15 = s_3.live;
+        if (!(_e15)) {
+            float3 _e18 = s_3.radiance;
+            return _e18;
         }
-        GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e10.slot*128+0)), asfloat(instances.Load4(_e10.slot*128+16)), asfloat(instances.Load4(_e10.slot*128+32)), asfloat(instances.Load4(_e10.slot*128+48)), asfloat(instances.Load4(_e10.slot*128+64)), asfloat(instances.Load4(_e10.slot*128+80)), asuint(instances.Load(_e10.slot*128+96)), asuint(instances.Load(_e10.slot*128+100)), asuint(instances.Load(_e10.slot*128+104)), asuint(instances.Load(_e10.slot*128+108)), asuint(instances.Load(_e10.slot*128+112)), asuint(instances.Load(_e10.slot*128+116)), asuint(instances.Load(_e10.slot*128+120)), asuint(instances.Load(_e10.slot*128+124)));
-        Ray _e26 = ray_28;
-        const Hit _e27 = finish_hit(_e26, _e10);
-        float error_4 = hit_error;
-        spawned = false;
-        dir_6 = (0.0).xxx;
-        weight_3 = (0.0).xxx;
-        uint _e44 = ray_28.depth;
-        if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e44 < MAX_DEPTH))) {
-            spawn_count = 0u;
-            Ray _e52 = ray_28;
-            dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e52, _e27);
-            uint _e54 = spawn_count;
-            if ((min(_e54, 1u) > 0u)) {
-                spawned = true;
-                float3 _e63 = spawn_dirs[0u];
-                dir_6 = _e63;
-                float3 _e67 = spawn_weights[0u];
-                weight_3 = _e67;
-            }
-        }
-        float3 _e68 = radiance_2;
-        float3 _e69 = beta;
-        Ray _e72 = ray_28;
-        const float3 _e75 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e72, _e27, (0.0).xxx);
-        radiance_2 = (_e68 + (_e69 * _e75));
-        bool _e78 = spawned;
-        if (!(_e78)) {
-            float3 _e80 = radiance_2;
-            return _e80;
-        }
-        float3 _e81 = beta;
-        float3 _e82 = weight_3;
-        beta = (_e81 * _e82);
-        float _e85 = beta.x;
-        float _e87 = beta.y;
-        float _e89 = beta.z;
-        float q_6 = max(_e85, max(_e87, _e89));
-        if (!((q_6 > 0.0))) {
-            float3 _e95 = radiance_2;
-            return _e95;
-        }
-        uint _e100 = ray_28.depth;
-        if ((((ROULETTE_DEPTH > 0u) && ((_e100 + 1u) >= ROULETTE_DEPTH)) && (q_6 < 1.0))) {
-            const float _e109 = rand_next();
-            if ((_e109 >= q_6)) {
-                float3 _e111 = radiance_2;
-                return _e111;
-            }
-            float3 _e112 = beta;
-            beta = (_e112 / (q_6).xxx);
-        }
-        float3 _e115 = dir_6;
-        const float3 _e116 = spawn_origin(_e27, error_4, _e115);
-        float3 _e118 = dir_6;
-        uint _e120 = F32_INF;
-        uint _e123 = ray_28.depth;
-        uint _e128 = ray_28.medium;
-        ray_28 = ConstructRay(_e116, 0.0, _e118, asfloat(_e120), (_e123 + 1u), RAY_SECONDARY, _e128);
     }
     return ZeroValuefloat3();
 }
 
 float3 trace(Ray camera_ray_1)
 {
-    float3 radiance_3 = (float3)0;
+    float3 radiance_2 = (float3)0;
     float t_3 = (float)0;
 
     if (!(HAS_SECONDARY_RAYS)) {
         const Candidate _e4 = intersect_scene(camera_ray_1, false);
-        radiance_3 = (0.0).xxx;
+        radiance_2 = (0.0).xxx;
         uint _e9 = F32_INF;
         t_3 = asfloat(_e9);
         if ((_e4.slot == NO_HIT)) {
             hit_error = 0.0;
             const float3 _e17 = miss(camera_ray_1);
-            radiance_3 = _e17;
+            radiance_2 = _e17;
         } else {
             const float3 _e18 = shade_direct(camera_ray_1, _e4);
-            radiance_3 = _e18;
+            radiance_2 = _e18;
             t_3 = _e4.t;
         }
         float _e20 = t_3;
-        float3 _e21 = radiance_3;
+        float3 _e21 = radiance_2;
         const float3 _e22 = through_medium(camera_ray_1, _e20, _e21);
         return _e22;
     }
@@ -2134,50 +2164,50 @@ bool3 is_finite_vec3f(float3 x_2)
     return ((asuint(x_2) & (2147483647u).xxx) < (2139095040u).xxx);
 }
 
-float3 finite_or_zero(float3 c_5)
+float3 finite_or_zero(float3 c_6)
 {
-    const bool3 _e3 = is_finite_vec3f(c_5);
-    return (_e3 ? c_5 : (0.0).xxx);
+    const bool3 _e3 = is_finite_vec3f(c_6);
+    return (_e3 ? c_6 : (0.0).xxx);
 }
 
 void render_pixel(uint2 pixel_3)
 {
     float3 sum = (float3)0;
     uint bad = (uint)0;
-    uint s_2 = (uint)0;
-    Ray ray_29 = (Ray)0;
+    uint s_4 = (uint)0;
+    Ray ray_28 = (Ray)0;
 
     FrameUniforms frame_5 = frame;
     TileParams tile_2 = tile;
     sum = (0.0).xxx;
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
-    s_2 = 0u;
+    s_4 = 0u;
     uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
     bool loop_init_4 = true;
     while(true) {
         if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e46 = s_2;
-            s_2 = (_e46 + 1u);
+            uint _e46 = s_4;
+            s_4 = (_e46 + 1u);
         }
         loop_init_4 = false;
-        uint _e13 = s_2;
+        uint _e13 = s_4;
         if ((_e13 >= end_1)) {
             break;
         }
-        uint _e18 = s_2;
+        uint _e18 = s_4;
         uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_29 = _e23;
-        ray_29.depth = 0u;
-        ray_29.kind = RAY_CAMERA;
-        float3 _e31 = ray_29.origin;
+        ray_28 = _e23;
+        ray_28.depth = 0u;
+        ray_28.kind = RAY_CAMERA;
+        float3 _e31 = ray_28.origin;
         const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_29.medium = _e33;
-        Ray _e34 = ray_29;
+        ray_28.medium = _e33;
+        Ray _e34 = ray_28;
         const float3 _e35 = trace(_e34);
         const bool3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

@@ -143,6 +143,13 @@ struct UnlitTexture {
     planar: u32,
 }
 
+struct PathState {
+    ray: Ray,
+    beta: vec3<f32>,
+    radiance: vec3<f32>,
+    live: bool,
+}
+
 const WORKGROUP_WIDTH: u32 = 8u;
 const WORKGROUP_HEIGHT: u32 = 8u;
 const NO_HIT: u32 = 4294967295u;
@@ -302,9 +309,9 @@ fn samples_per_pixel_query() -> u32 {
 
 fn rand_next() -> f32 {
     let _e1 = rng_state;
-    let s_2 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_2;
-    let word_1 = (((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u);
+    let s_4 = ((_e1 * 747796405u) + 2891336453u);
+    rng_state = s_4;
+    let word_1 = (((s_4 >> (((s_4 >> 28u) + 4u) & 31u)) ^ s_4) * 277803737u);
     let r_3 = ((word_1 >> 22u) ^ word_1);
     return (f32((r_3 >> 8u)) * (1f / 16777216f));
 }
@@ -366,8 +373,8 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_3 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_3 * tiny), (abs(d) < tiny));
+    let s_5 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_5 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
@@ -393,20 +400,20 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let _e18 = triangles[((slot * 3u) + 1u)];
     let b_6 = (_e18.xyz - r_1.origin);
     let _e28 = triangles[((slot * 3u) + 2u)];
-    let c_5 = (_e28.xyz - r_1.origin);
+    let c_6 = (_e28.xyz - r_1.origin);
     let ax = (a_5[min(r_1.kx, 2u)] - (r_1.shear.x * a_5[min(r_1.kz, 2u)]));
     let ay = (a_5[min(r_1.ky, 2u)] - (r_1.shear.y * a_5[min(r_1.kz, 2u)]));
     let bx = (b_6[min(r_1.kx, 2u)] - (r_1.shear.x * b_6[min(r_1.kz, 2u)]));
     let by = (b_6[min(r_1.ky, 2u)] - (r_1.shear.y * b_6[min(r_1.kz, 2u)]));
-    let cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
-    let cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
+    let cx = (c_6[min(r_1.kx, 2u)] - (r_1.shear.x * c_6[min(r_1.kz, 2u)]));
+    let cy = (c_6[min(r_1.ky, 2u)] - (r_1.shear.y * c_6[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
     let v_1 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
     let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
-    let t_5 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    let t_5 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
     let hit_10 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     let _e173 = F32_INF;
     return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_5, (v_1 * rcp), (w * rcp)), hit_10);
@@ -502,10 +509,10 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
                 let _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
-                    let c_6 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0f));
-                    let _e57 = accept(inst_2, world_ray, c_6);
+                    let c_7 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0f));
+                    let _e57 = accept(inst_2, world_ray, c_7);
                     if _e57 {
-                        best = c_6;
+                        best = c_7;
                         if shadow {
                             let _e58 = best;
                             return _e58;
@@ -620,9 +627,9 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     let _e14 = n_1.z;
     if (_e14 < 0f) {
         let _e21 = n_1;
-        let s_4 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_6 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n_1;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_4);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_6);
         let _e37 = n_1.z;
         n_1 = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -932,11 +939,11 @@ fn texel_at(t: u32, xi: u32, yi: u32) -> vec4<f32> {
     let format = params[(t + 3u)];
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
         let _e25 = texels[(base_3 + index)];
-        let c_7 = unpack4x8unorm(_e25);
-        let _e28 = srgb_channel(c_7.x);
-        let _e30 = srgb_channel(c_7.y);
-        let _e32 = srgb_channel(c_7.z);
-        return vec4<f32>(_e28, _e30, _e32, c_7.w);
+        let c_8 = unpack4x8unorm(_e25);
+        let _e28 = srgb_channel(c_8.x);
+        let _e30 = srgb_channel(c_8.y);
+        let _e32 = srgb_channel(c_8.z);
+        return vec4<f32>(_e28, _e30, _e32, c_8.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
         let _e40 = texels[(base_3 + index)];
@@ -1092,8 +1099,8 @@ fn blinn_phong_shade(m: BlinnPhong, ray_12: Ray, hit_2: Hit) -> vec3<f32> {
     let v_2 = -(_e5);
     let _e12 = sample_texture(m.texture, (hit_2.uv * m.uv_scale));
     let kd = (m.diffuse * _e12.xyz);
-    let s_5 = max(m.shininess, 0f);
-    let norm = ((s_5 + 8f) * (INV_PI / 8f));
+    let s_7 = max(m.shininess, 0f);
+    let norm = ((s_7 + 8f) * (INV_PI / 8f));
     color = (m.ambient * kd);
     let _e28 = light_count_query();
     i_2 = 0u;
@@ -1106,7 +1113,7 @@ fn blinn_phong_shade(m: BlinnPhong, ray_12: Ray, hit_2: Hit) -> vec3<f32> {
         let _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal);
         let ndl = max(dot(_e3, _e35.dir), 0f);
         let _e42 = normalize_vec3f((_e35.dir + v_2));
-        let highlight = (pow(max(dot(_e3, _e42), 0f), s_5) * norm);
+        let highlight = (pow(max(dot(_e3, _e42), 0f), s_7) * norm);
         let _e48 = color;
         color = (_e48 + ((_e35.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m.specular * vec3(highlight)))));
         continuing {
@@ -1279,111 +1286,118 @@ fn spawn_origin(hit_9: Hit, error_2: f32, dir_4: vec3<f32>) -> vec3<f32> {
     return _e5;
 }
 
-fn trace_path(camera_ray: Ray) -> vec3<f32> {
-    var ray_22: Ray;
-    var beta: vec3<f32>;
-    var radiance_2: vec3<f32>;
+fn path_step(s_1: PathState, c_4: Candidate) -> PathState {
+    var out: PathState;
     var spawned: bool;
     var dir_5: vec3<f32>;
     var weight_1: vec3<f32>;
+    var beta: vec3<f32>;
 
-    ray_22 = camera_ray;
-    beta = vec3(1f);
-    radiance_2 = vec3(0f);
+    let ray_23 = s_1.ray;
+    out = s_1;
+    out.live = false;
+    if (c_4.slot == NO_HIT) {
+        hit_error = 0f;
+        let _e14 = miss(ray_23);
+        out.radiance = (s_1.radiance + (s_1.beta * _e14));
+        let _e17 = out;
+        return _e17;
+    }
+    let inst_10 = instances[c_4.slot];
+    let _e22 = finish_hit(ray_23, c_4);
+    let error_4 = hit_error;
+    spawned = false;
+    dir_5 = vec3(0f);
+    weight_1 = vec3(0f);
+    if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_23.depth < MAX_DEPTH)) {
+        spawn_count = 0u;
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_23, _e22);
+        let _e47 = spawn_count;
+        if (min(_e47, 1u) > 0u) {
+            spawned = true;
+            let _e56 = spawn_dirs[0u];
+            dir_5 = _e56;
+            let _e60 = spawn_weights[0u];
+            weight_1 = _e60;
+        }
+    }
+    let _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_23, _e22, vec3(0f));
+    out.radiance = (s_1.radiance + (s_1.beta * _e68));
+    let _e71 = spawned;
+    if !(_e71) {
+        let _e73 = out;
+        return _e73;
+    }
+    let _e75 = weight_1;
+    beta = (s_1.beta * _e75);
+    let _e79 = beta.x;
+    let _e81 = beta.y;
+    let _e83 = beta.z;
+    let q_4 = max(_e79, max(_e81, _e83));
+    if !((q_4 > 0f)) {
+        let _e89 = out;
+        return _e89;
+    }
+    if (((ROULETTE_DEPTH > 0u) && ((ray_23.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < 1f)) {
+        let _e102 = rand_next();
+        if (_e102 >= q_4) {
+            let _e104 = out;
+            return _e104;
+        }
+        let _e105 = beta;
+        beta = (_e105 / vec3(q_4));
+    }
+    let _e109 = beta;
+    out.beta = _e109;
+    let _e111 = dir_5;
+    let _e112 = spawn_origin(_e22, error_4, _e111);
+    let _e114 = dir_5;
+    let _e116 = F32_INF;
+    out.ray = Ray(_e112, 0f, _e114, bitcast<f32>(_e116), (ray_23.depth + 1u), RAY_SECONDARY, ray_23.medium);
+    out.live = true;
+    let _e126 = out;
+    return _e126;
+}
+
+fn trace_path(camera_ray: Ray) -> vec3<f32> {
+    var s_2: PathState;
+
+    s_2 = PathState(camera_ray, vec3(1f), vec3(0f), true);
     loop {
-        let _e8 = ray_22;
-        let _e10 = intersect_scene(_e8, false);
-        if (_e10.slot == NO_HIT) {
-            hit_error = 0f;
-            let _e16 = radiance_2;
-            let _e17 = beta;
-            let _e18 = ray_22;
-            let _e19 = miss(_e18);
-            return (_e16 + (_e17 * _e19));
+        let _e8 = s_2;
+        let _e10 = s_2.ray;
+        let _e12 = intersect_scene(_e10, false);
+        let _e13 = path_step(_e8, _e12);
+        s_2 = _e13;
+        let _e15 = s_2.live;
+        if !(_e15) {
+            let _e18 = s_2.radiance;
+            return _e18;
         }
-        let inst_10 = instances[_e10.slot];
-        let _e26 = ray_22;
-        let _e27 = finish_hit(_e26, _e10);
-        let error_4 = hit_error;
-        spawned = false;
-        dir_5 = vec3(0f);
-        weight_1 = vec3(0f);
-        let _e44 = ray_22.depth;
-        if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (_e44 < MAX_DEPTH)) {
-            spawn_count = 0u;
-            let _e52 = ray_22;
-            dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e52, _e27);
-            let _e54 = spawn_count;
-            if (min(_e54, 1u) > 0u) {
-                spawned = true;
-                let _e63 = spawn_dirs[0u];
-                dir_5 = _e63;
-                let _e67 = spawn_weights[0u];
-                weight_1 = _e67;
-            }
-        }
-        let _e68 = radiance_2;
-        let _e69 = beta;
-        let _e72 = ray_22;
-        let _e75 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e72, _e27, vec3(0f));
-        radiance_2 = (_e68 + (_e69 * _e75));
-        let _e78 = spawned;
-        if !(_e78) {
-            let _e80 = radiance_2;
-            return _e80;
-        }
-        let _e81 = beta;
-        let _e82 = weight_1;
-        beta = (_e81 * _e82);
-        let _e85 = beta.x;
-        let _e87 = beta.y;
-        let _e89 = beta.z;
-        let q_4 = max(_e85, max(_e87, _e89));
-        if !((q_4 > 0f)) {
-            let _e95 = radiance_2;
-            return _e95;
-        }
-        let _e100 = ray_22.depth;
-        if (((ROULETTE_DEPTH > 0u) && ((_e100 + 1u) >= ROULETTE_DEPTH)) && (q_4 < 1f)) {
-            let _e109 = rand_next();
-            if (_e109 >= q_4) {
-                let _e111 = radiance_2;
-                return _e111;
-            }
-            let _e112 = beta;
-            beta = (_e112 / vec3(q_4));
-        }
-        let _e115 = dir_5;
-        let _e116 = spawn_origin(_e27, error_4, _e115);
-        let _e118 = dir_5;
-        let _e120 = F32_INF;
-        let _e123 = ray_22.depth;
-        let _e128 = ray_22.medium;
-        ray_22 = Ray(_e116, 0f, _e118, bitcast<f32>(_e120), (_e123 + 1u), RAY_SECONDARY, _e128);
     }
     return vec3<f32>();
 }
 
 fn trace(camera_ray_1: Ray) -> vec3<f32> {
-    var radiance_3: vec3<f32>;
+    var radiance_2: vec3<f32>;
     var t_4: f32;
 
     if !(HAS_SECONDARY_RAYS) {
         let _e4 = intersect_scene(camera_ray_1, false);
-        radiance_3 = vec3(0f);
+        radiance_2 = vec3(0f);
         let _e9 = F32_INF;
         t_4 = bitcast<f32>(_e9);
         if (_e4.slot == NO_HIT) {
             hit_error = 0f;
             let _e17 = miss(camera_ray_1);
-            radiance_3 = _e17;
+            radiance_2 = _e17;
         } else {
             let _e18 = shade_direct(camera_ray_1, _e4);
-            radiance_3 = _e18;
+            radiance_2 = _e18;
             t_4 = _e4.t;
         }
         let _e20 = t_4;
-        let _e21 = radiance_3;
+        let _e21 = radiance_2;
         let _e22 = through_medium(camera_ray_1, _e20, _e21);
         return _e22;
     }
@@ -1395,39 +1409,39 @@ fn is_finite_vec3f(x_4: vec3<f32>) -> vec3<bool> {
     return ((bitcast<vec3<u32>>(x_4) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
-fn finite_or_zero(c_4: vec3<f32>) -> vec3<f32> {
-    let _e3 = is_finite_vec3f(c_4);
-    return select(vec3(0f), c_4, _e3);
+fn finite_or_zero(c_5: vec3<f32>) -> vec3<f32> {
+    let _e3 = is_finite_vec3f(c_5);
+    return select(vec3(0f), c_5, _e3);
 }
 
 fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
-    var s_1: u32;
-    var ray_23: Ray;
+    var s_3: u32;
+    var ray_22: Ray;
 
     let frame_5 = frame;
     let tile_2 = tile;
     sum = vec3(0f);
     bad = 0u;
     let end_1 = frame_5.samples_per_pass;
-    s_1 = 0u;
+    s_3 = 0u;
     loop {
-        let _e13 = s_1;
+        let _e13 = s_3;
         if (_e13 >= end_1) {
             break;
         }
-        let _e18 = s_1;
+        let _e18 = s_3;
         let sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_23 = _e23;
-        ray_23.depth = 0u;
-        ray_23.kind = RAY_CAMERA;
-        let _e31 = ray_23.origin;
+        ray_22 = _e23;
+        ray_22.depth = 0u;
+        ray_22.kind = RAY_CAMERA;
+        let _e31 = ray_22.origin;
         let _e33 = medium_at(_e31, NO_HIT);
-        ray_23.medium = _e33;
-        let _e34 = ray_23;
+        ray_22.medium = _e33;
+        let _e34 = ray_22;
         let _e35 = trace(_e34);
         let _e36 = is_finite_vec3f(_e35);
         if all(_e36) {
@@ -1441,8 +1455,8 @@ fn render_pixel(pixel_3: vec2<u32>) {
             bad = (_e43 + 1u);
         }
         continuing {
-            let _e46 = s_1;
-            s_1 = (_e46 + 1u);
+            let _e46 = s_3;
+            s_3 = (_e46 + 1u);
         }
     }
     let _e50 = ray_count;
