@@ -105,6 +105,7 @@ measure() {
     echo "$wall|$rss|$rc"
 }
 
+(cd "$root" && source docs/bench/host.sh)
 echo "binary: $rtc"
 echo "time limit per run: ${limit}s"
 echo

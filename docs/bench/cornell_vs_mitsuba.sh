@@ -67,7 +67,7 @@ if [[ -z ${MITSUBA_VARIANT:-} ]]; then
         export MITSUBA_VARIANT=scalar_rgb
     fi
 fi
-echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores"
+source docs/bench/host.sh
 
 cargo build --release --quiet -p rtc
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}

@@ -28,12 +28,8 @@ fi
 cargo build --release --quiet -p rtc
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
 out=$(mktemp -d)
-cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')
-flags=$(grep -m1 '^flags' /proc/cpuinfo)
-features=AVX2
-[[ $flags == *avx512f* ]] && features="AVX2 AVX-512"
-[[ $flags == *avx2* ]] || features="no AVX2"
-echo "cpu: $cpu ($features, $(nproc) threads)${SIZE:+; every example at $SIZE}"
+source docs/bench/host.sh
+if [[ -n ${SIZE:-} ]]; then echo "every example at $SIZE"; fi
 "${runner[@]}" target/release/rtc render examples/hello/scene.rt --size 8x8 -o "$out/probe.png" 2>&1 |
     grep '^adapter' || true
 render_ms() {

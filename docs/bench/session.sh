@@ -19,11 +19,5 @@ runs=${1:-7}
 shift || true
 cargo build --release --quiet -p rtc-runtime --example session_bench
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
-cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')
-flags=$(grep -m1 '^flags' /proc/cpuinfo)
-features=AVX2
-[[ $flags == *avx512f* ]] && features="AVX2 AVX-512"
-[[ $flags == *avx2* ]] || features="no AVX2"
-echo "cpu: $cpu ($features, $(nproc) threads)"
-echo "commit: $(git rev-parse --short HEAD), $(date -u +%Y-%m-%d)"
+source docs/bench/host.sh
 "${runner[@]}" target/release/examples/session_bench --runs "$runs" "$@"

@@ -26,6 +26,7 @@ if [[ ! -x $venv/bin/python ]]; then
     "$venv/bin/pip" install --quiet embreex numpy
 fi
 cargo build --release --quiet -p rtc
+source docs/bench/host.sh
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
 out=$(mktemp -d)
 "$venv/bin/python" "$shared/bench/embree_bench.py" --models "$shared/models" --scenes thesis \
@@ -36,7 +37,7 @@ d = json.load(open('$out/embree.json'))
 print(d['scenes'][0]['per_threads']['2']['frame_ms'])
 ")
 "${runner[@]}" target/release/rtc render examples/thesis_scene/scene.rt -o "$out/thesis.png" 2>&1 |
-    grep '^adapter'
+    grep -E '^(adapter|host)'
 times=()
 for _ in $(seq "$runs"); do
     ms=$("${runner[@]}" target/release/rtc render examples/thesis_scene/scene.rt -o "$out/thesis.png" 2>&1 |

@@ -330,6 +330,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Err(e) => return fail(&e.to_string(), ctx),
     };
     term::print(&format!("adapter: {}\n", gpu.description()));
+    term::print(&format!("host: {}\n", rtc_runtime::gpu::HostCpu::detect()));
     let base = RenderOptions {
         size: args.scene.image_size(),
         bvh: args.bvh.preset.into(),
@@ -511,6 +512,8 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             &presets,
             args.preset_spp,
         );
+        value["adapter"] = serde_json::json!(gpu.description().to_string());
+        value["host"] = serde_json::json!(rtc_runtime::gpu::HostCpu::detect().to_string());
         if let Some((curve, levels)) = &compared {
             value["against"] = against::json(curve, levels);
         }

@@ -105,6 +105,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Err(e) => return fail(&e.to_string(), ctx),
     };
     term::print(&format!("adapter: {}\n", gpu.description()));
+    term::print(&format!("host: {}\n", rtc_runtime::gpu::HostCpu::detect()));
     let options = RenderOptions {
         size: args.render.scene.image_size(),
         samples: args.render.spp.samples,

@@ -513,6 +513,7 @@ fn progress_bar(total: u64) -> Option<indicatif::ProgressBar> {
 pub fn summary(s: &RenderStats, output: &Path) -> String {
     let mut out = String::new();
     out.push_str(&format!("adapter: {}\n", s.adapter));
+    out.push_str(&format!("host: {}\n", rtc_runtime::gpu::HostCpu::detect()));
     out.push_str(&format!(
         "rendered {}x{} at {} spp ({} pass{} of {}) to {}\n",
         s.width,

@@ -831,6 +831,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         }
     };
     term::print(&format!("adapter: {}\n", gpu.description()));
+    term::print(&format!("host: {}\n", rtc_runtime::gpu::HostCpu::detect()));
 
     let proxy = event_loop.create_proxy();
     let stop = proxy.clone();

@@ -474,6 +474,9 @@ impl Session {
                     reload
                         .messages
                         .push_str(&format!("preview adapter: {}\n", gpu.description()));
+                    reload
+                        .messages
+                        .push_str(&format!("host: {}\n", rtc_runtime::gpu::HostCpu::detect()));
                     GpuSlot::Ready(Box::leak(Box::new(gpu)))
                 }
                 Err(e) => {

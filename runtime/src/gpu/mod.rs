@@ -23,6 +23,7 @@
 
 mod adapter;
 mod buffers;
+mod cpu;
 mod dispatch;
 mod host;
 mod kernels;
@@ -35,6 +36,7 @@ use std::time::Instant;
 
 pub use adapter::{list_adapters, AdapterChoice, AdapterChoiceParseError, AdapterDescription};
 pub use buffers::{BufferError, BufferLimits, BufferSet, UploadOutcome, UploadStats};
+pub use cpu::HostCpu;
 pub use dispatch::{
     dispatch_once, plan_tiles, read_buffer, read_vec4_f32, DispatchError, DispatchReport,
     RoundKernels, RoundsReport, TileConfig, TileDispatcher, TileParams, TILE_PARAMS_WGSL,
