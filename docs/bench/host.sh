@@ -1,8 +1,9 @@
 # Sourced by the scripts in docs/bench: sets `cpu` (the model name), `features` (`AVX2 AVX-512`,
 # `AVX2` or `no AVX2`) and `host_line` (one line naming both, the thread count, the commit and the
 # date), and prints that line. On a CPU driver the vector units decide the speed (issue 23), so
-# every figure these scripts print is preceded by it. Mesa's GALLIUM_OVERRIDE_CPU_CAPS and
-# LP_NATIVE_VECTOR_WIDTH, which change what lavapipe compiles for, are named when set.
+# every figure these scripts print is preceded by it. Mesa's GALLIUM_OVERRIDE_CPU_CAPS,
+# LP_NATIVE_VECTOR_WIDTH and GALLIVM_PERF, which change what or how lavapipe compiles, are named
+# when set.
 cpu=$(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | cut -d: -f2- | sed 's/^ *//')
 cpu=${cpu:-$(uname -m)}
 flags=$(grep -m1 '^flags' /proc/cpuinfo 2>/dev/null || true)
@@ -10,7 +11,7 @@ features=AVX2
 [[ $flags == *avx512f* ]] && features="AVX2 AVX-512"
 [[ $flags == *avx2* ]] || features="no AVX2"
 host_line="cpu: $cpu ($features, $(nproc) threads)"
-for var in GALLIUM_OVERRIDE_CPU_CAPS LP_NATIVE_VECTOR_WIDTH; do
+for var in GALLIUM_OVERRIDE_CPU_CAPS LP_NATIVE_VECTOR_WIDTH GALLIVM_PERF; do
     [[ -n ${!var:-} ]] && host_line+="; $var=${!var}"
 done
 host_line+="; commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown), $(date -u +%Y-%m-%d)"

@@ -7,14 +7,19 @@
 //! Guarantees: [`HostCpu::detect`] never fails; the model comes from `/proc/cpuinfo` where that
 //! exists (else the architecture's name), the vector features from the running CPU
 //! (`is_x86_feature_detected!`), and the thread count from `std::thread::available_parallelism`.
-//! Mesa's own overrides of what llvmpipe may use (`GALLIUM_OVERRIDE_CPU_CAPS`,
-//! `LP_NATIVE_VECTOR_WIDTH`) are named when set, since they change the code lavapipe generates
-//! without changing the CPU.
+//! Mesa's own overrides of what llvmpipe may use or do (`GALLIUM_OVERRIDE_CPU_CAPS`,
+//! `LP_NATIVE_VECTOR_WIDTH`, `GALLIVM_PERF`) are named when set, since they change the code
+//! lavapipe generates without changing the CPU.
 
 use std::fmt;
 
-/// Mesa's variables that change what llvmpipe compiles for; named in [`HostCpu`]'s line when set.
-const MESA_CPU_VARIABLES: [&str; 2] = ["GALLIUM_OVERRIDE_CPU_CAPS", "LP_NATIVE_VECTOR_WIDTH"];
+/// Mesa's variables that change what llvmpipe compiles for, or how (`GALLIVM_PERF=nopt` turns
+/// LLVM's optimisation passes off); named in [`HostCpu`]'s line when set.
+const MESA_CPU_VARIABLES: [&str; 3] = [
+    "GALLIUM_OVERRIDE_CPU_CAPS",
+    "LP_NATIVE_VECTOR_WIDTH",
+    "GALLIVM_PERF",
+];
 
 /// The machine a figure was measured on.
 #[derive(Clone, Debug, PartialEq, Eq)]
