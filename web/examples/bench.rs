@@ -25,7 +25,10 @@ fn main() {
         text.extend_from_slice(format!("// edit {edit}\n").as_bytes());
         with_stdlib([
             (entry.clone(), text),
-            ("examples/hello/rtc.registry.json".to_string(), registry.clone()),
+            (
+                "examples/hello/rtc.registry.json".to_string(),
+                registry.clone(),
+            ),
         ])
     };
     let options = CompileOptions::default();
