@@ -331,18 +331,24 @@ fn failure(checked: Checked, diagnostics: Vec<Diagnostic>) -> Box<CompileFailure
 struct Start(#[cfg(not(target_arch = "wasm32"))] std::time::Instant);
 
 impl Start {
+    #[cfg(not(target_arch = "wasm32"))]
     fn now() -> Start {
-        Start(
-            #[cfg(not(target_arch = "wasm32"))]
-            std::time::Instant::now(),
-        )
+        Start(std::time::Instant::now())
     }
 
+    #[cfg(target_arch = "wasm32")]
+    fn now() -> Start {
+        Start()
+    }
+
+    #[cfg(not(target_arch = "wasm32"))]
     fn elapsed_ms(self) -> f64 {
-        #[cfg(not(target_arch = "wasm32"))]
-        return self.0.elapsed().as_secs_f64() * 1e3;
-        #[cfg(target_arch = "wasm32")]
-        return 0.0;
+        self.0.elapsed().as_secs_f64() * 1e3
+    }
+
+    #[cfg(target_arch = "wasm32")]
+    fn elapsed_ms(self) -> f64 {
+        0.0
     }
 }
 
