@@ -16,13 +16,18 @@
 //!
 //! Module names shown in diagnostics are the paths as given for roots, `std/…` for the standard
 //! library, and the importer's folder joined with the import path for other imports.
+//!
+//! Files come from the disk, or, when [`Options::memory`] is set, from that in-memory file set
+//! alone (the compiler in WebAssembly: the user's files and the embedded standard library under
+//! [`Options::stdlib_dir`]); the two give the same modules, names and diagnostics for the same
+//! texts, except that canonical paths are lexical in memory.
 
 use crate::cache::ModuleCache;
 use crate::diag::{self, suggest, Diagnostic};
 use crate::sema::error::{ModuleError, SemaError};
 use crate::sema::hir::{self, ModuleId};
 use crate::sema::{self, SourceModule};
-use crate::source::{FileId, SourceMap, Span};
+use crate::source::{FileId, MemoryFiles, SourceMap, Span};
 use crate::syntax;
 use std::collections::{BTreeMap, HashMap};
 use std::path::{Component, Path, PathBuf};
@@ -39,6 +44,9 @@ pub struct Options {
     /// Parsed modules kept between compiles, by content hash (`rtc watch`); `None` parses every
     /// file every time. See [`crate::cache`].
     pub cache: Option<Arc<ModuleCache>>,
+    /// Read every file from this in-memory set instead of the disk (roots, imports, the standard
+    /// library under `stdlib_dir`, registry and `model` files); `None` reads the disk.
+    pub memory: Option<Arc<MemoryFiles>>,
 }
 
 impl Default for Options {
@@ -47,6 +55,84 @@ impl Default for Options {
             stdlib_dir: default_stdlib_dir(),
             generated: BTreeMap::new(),
             cache: None,
+            memory: None,
+        }
+    }
+}
+
+impl Options {
+    /// Where files are read from: the disk or [`Options::memory`].
+    pub fn files(&self) -> Files<'_> {
+        match &self.memory {
+            Some(m) => Files::Memory(m),
+            None => Files::Disk,
+        }
+    }
+}
+
+/// Where the compiler reads files: the disk, or an in-memory file set ([`Options::files`]).
+#[derive(Clone, Copy, Debug)]
+pub enum Files<'a> {
+    /// The file system.
+    Disk,
+    /// Only these files; nothing else exists.
+    Memory(&'a MemoryFiles),
+}
+
+impl Files<'_> {
+    /// The bytes of the file at `path`.
+    pub fn read(self, path: &Path) -> std::io::Result<Vec<u8>> {
+        match self {
+            Files::Disk => std::fs::read(path),
+            Files::Memory(m) => m.get(path).map(<[u8]>::to_vec).ok_or_else(|| {
+                std::io::Error::new(
+                    std::io::ErrorKind::NotFound,
+                    "not among the files given to the compiler",
+                )
+            }),
+        }
+    }
+
+    /// The canonical path (lexical in memory), failing when no file or folder is there.
+    pub fn canonicalize(self, path: &Path) -> std::io::Result<PathBuf> {
+        match self {
+            Files::Disk => path.canonicalize(),
+            Files::Memory(m) if m.is_file(path) || m.is_dir(path) => {
+                Ok(MemoryFiles::normalize(path))
+            }
+            Files::Memory(_) => Err(std::io::Error::new(
+                std::io::ErrorKind::NotFound,
+                "not among the files given to the compiler",
+            )),
+        }
+    }
+
+    /// Whether a file is at `path`.
+    pub fn is_file(self, path: &Path) -> bool {
+        match self {
+            Files::Disk => path.is_file(),
+            Files::Memory(m) => m.is_file(path),
+        }
+    }
+
+    /// Whether a folder is at `path`.
+    pub fn is_dir(self, path: &Path) -> bool {
+        match self {
+            Files::Disk => path.is_dir(),
+            Files::Memory(m) => m.is_dir(path),
+        }
+    }
+
+    /// The paths of the entries of the folder `path` (files only in memory), unsorted.
+    pub fn entries(self, path: &Path) -> Vec<PathBuf> {
+        match self {
+            Files::Disk => std::fs::read_dir(path)
+                .into_iter()
+                .flatten()
+                .flatten()
+                .map(|e| e.path())
+                .collect(),
+            Files::Memory(m) => m.files_in(path),
         }
     }
 }
@@ -82,15 +168,14 @@ impl Checked {
 /// Checks the given root files (a folder stands for every `.rt` file in it) and everything they
 /// import.
 pub fn check_paths(paths: &[PathBuf], options: &Options) -> Checked {
+    let fs = options.files();
     let mut roots: Vec<Root> = Vec::new();
     for p in paths {
-        if p.is_dir() {
-            let mut files: Vec<PathBuf> = std::fs::read_dir(p)
+        if fs.is_dir(p) {
+            let mut files: Vec<PathBuf> = fs
+                .entries(p)
                 .into_iter()
-                .flatten()
-                .flatten()
-                .map(|e| e.path())
-                .filter(|f| f.extension().is_some_and(|x| x == "rt") && f.is_file())
+                .filter(|f| f.extension().is_some_and(|x| x == "rt") && fs.is_file(f))
                 .collect();
             files.sort();
             roots.extend(files.into_iter().map(Root::Path));
@@ -281,11 +366,12 @@ impl Loader<'_> {
 
     /// Loads `path` once (by canonical path).
     fn load_file(&mut self, name: String, path: &Path) -> Result<ModuleId, std::io::Error> {
-        let canon = path.canonicalize()?;
+        let fs = self.options.files();
+        let canon = fs.canonicalize(path)?;
         if let Some(id) = self.by_path.get(&canon) {
             return Ok(*id);
         }
-        let bytes = std::fs::read(path)?;
+        let bytes = fs.read(path)?;
         let id = self.add(name, Some(path.to_path_buf()), bytes);
         self.by_path.insert(canon, id);
         Ok(id)
@@ -322,7 +408,7 @@ impl Loader<'_> {
             Root::Text(name, text) => {
                 let path = PathBuf::from(&name);
                 let id = self.add(name, Some(path.clone()), text.into_bytes());
-                if let Ok(canon) = path.canonicalize() {
+                if let Ok(canon) = self.options.files().canonicalize(&path) {
                     self.by_path.entry(canon).or_insert(id);
                 }
                 id
@@ -427,13 +513,14 @@ impl Loader<'_> {
                 (base.join(path), normalize(&dir_name.join(path)))
             }
         };
-        let (file, name) = if file.is_file() || file.extension().is_some() {
+        let fs = self.options.files();
+        let (file, name) = if fs.is_file(&file) || file.extension().is_some() {
             (file, name)
         } else {
             (file.with_extension("rt"), format!("{name}.rt"))
         };
-        if !file.is_file() {
-            let close = close_files(&file);
+        if !fs.is_file(&file) {
+            let close = close_files(fs, &file);
             self.errors.push(
                 ModuleError::ImportNotFound {
                     span,
@@ -538,7 +625,7 @@ fn normalize(p: &Path) -> String {
 }
 
 /// `.rt` files in the folder of `missing` whose names are close to its name.
-fn close_files(missing: &Path) -> Vec<String> {
+fn close_files(fs: Files<'_>, missing: &Path) -> Vec<String> {
     let Some(dir) = missing.parent() else {
         return Vec::new();
     };
@@ -548,11 +635,10 @@ fn close_files(missing: &Path) -> Vec<String> {
     else {
         return Vec::new();
     };
-    let names: Vec<String> = std::fs::read_dir(dir)
+    let names: Vec<String> = fs
+        .entries(dir)
         .into_iter()
-        .flatten()
-        .flatten()
-        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter_map(|e| e.file_name().map(|n| n.to_string_lossy().into_owned()))
         .filter(|n| n.ends_with(".rt"))
         .collect();
     let limit = (want.len() / 3).max(1);

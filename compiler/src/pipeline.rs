@@ -37,7 +37,6 @@ use crate::kernel::{
 use crate::link::{registry::Registry, LinkOptions, Linked};
 use crate::sema::hir::{ProgramKind, SceneId};
 use std::path::PathBuf;
-use std::time::Instant;
 
 /// What to compile.
 #[derive(Clone, Debug)]
@@ -85,7 +84,7 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
         driver::check_paths(paths, request.options)
     });
     // 2. Choose the scene and link it: the kernel configuration the kernel is checked with.
-    let t = Instant::now();
+    let t = Start::now();
     let mut registry = Registry::default();
     let (first, _, linked) = link_scene(first, request, &mut registry, None)?;
     timings.push("link", t);
@@ -232,10 +231,28 @@ pub fn link_scene(
     if earlier.is_none() {
         let path = kernel::registry_path(program, scene);
         let key = kernel::registry_key(program, scene);
-        *registry = crate::link::registry::load_scene(&path, &key).0;
+        *registry = match &request.options.memory {
+            Some(files) => {
+                let text = files.get(&path).map(String::from_utf8_lossy);
+                crate::link::registry::load_scene_text(text.as_deref(), &key).0
+            }
+            None => crate::link::registry::load_scene(&path, &key).0,
+        };
     }
     let known = earlier.map_or(&[][..], |l| l.models.as_slice());
-    match crate::link::link_again(program, scene, registry, request.link, known) {
+    // In memory, `model` files are read from the same file set as the sources.
+    let in_memory;
+    let link = match &request.options.memory {
+        Some(files) if request.link.memory.is_none() => {
+            in_memory = LinkOptions {
+                memory: Some(files.clone()),
+                ..request.link.clone()
+            };
+            &in_memory
+        }
+        _ => request.link,
+    };
+    match crate::link::link_again(program, scene, registry, link, known) {
         Ok(linked) => Ok((checked, scene, linked)),
         Err(d) => Err(failure(checked, d)),
     }
@@ -262,27 +279,37 @@ pub fn write_targets(
         .iter()
         .flat_map(|m| targets.iter().map(move |&t| (m, t)))
         .collect();
-    let results: Vec<Result<Output, BackendError>> = std::thread::scope(|scope| {
-        let handles: Vec<_> = jobs
-            .iter()
-            .map(|&((stem, module, entry, resources), t)| {
-                scope.spawn(move || {
-                    let bytes = back::write(module, t, entry, resources)?;
-                    let ext = t.file_name().rsplit('.').next().unwrap_or("out");
-                    Ok(Output {
-                        name: format!("{stem}.{ext}"),
-                        bytes,
-                    })
-                })
-            })
-            .collect();
-        handles
-            .into_iter()
-            // A panic here is a bug outside naga's writers (those are caught by `back::write`): it
-            // goes on as the panic it is.
-            .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
-            .collect()
-    });
+    type Job<'m> = (
+        &'m (&'m str, &'m naga::Module, &'m str, Vec<back::Resource>),
+        Target,
+    );
+    fn write_one(
+        &((stem, module, entry, ref resources), t): &Job<'_>,
+    ) -> Result<Output, BackendError> {
+        let bytes = back::write(module, t, entry, resources)?;
+        let ext = t.file_name().rsplit('.').next().unwrap_or("out");
+        Ok(Output {
+            name: format!("{stem}.{ext}"),
+            bytes,
+        })
+    }
+    // WebAssembly has no threads: the outputs are written one after another there.
+    let results: Vec<Result<Output, BackendError>> = if cfg!(target_arch = "wasm32") {
+        jobs.iter().map(write_one).collect()
+    } else {
+        std::thread::scope(|scope| {
+            let handles: Vec<_> = jobs
+                .iter()
+                .map(|job| scope.spawn(move || write_one(job)))
+                .collect();
+            handles
+                .into_iter()
+                // A panic here is a bug outside naga's writers (those are caught by `back::write`):
+                // it goes on as the panic it is.
+                .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
+                .collect()
+        })
+    };
     let mut outputs = results.into_iter().collect::<Result<Vec<_>, _>>()?;
     outputs.push(Output {
         name: "manifest.json".to_string(),
@@ -298,17 +325,44 @@ fn failure(checked: Checked, diagnostics: Vec<Diagnostic>) -> Box<CompileFailure
     })
 }
 
+/// When a phase started. WebAssembly (`wasm32-unknown-unknown`) has no clock without its host
+/// (`std::time::Instant::now` panics there): there every phase takes 0 ms.
+#[derive(Clone, Copy)]
+struct Start(#[cfg(not(target_arch = "wasm32"))] std::time::Instant);
+
+impl Start {
+    #[cfg(not(target_arch = "wasm32"))]
+    fn now() -> Start {
+        Start(std::time::Instant::now())
+    }
+
+    #[cfg(target_arch = "wasm32")]
+    fn now() -> Start {
+        Start()
+    }
+
+    #[cfg(not(target_arch = "wasm32"))]
+    fn elapsed_ms(self) -> f64 {
+        self.0.elapsed().as_secs_f64() * 1e3
+    }
+
+    #[cfg(target_arch = "wasm32")]
+    fn elapsed_ms(self) -> f64 {
+        0.0
+    }
+}
+
 /// How long each phase took, in milliseconds, in order.
 #[derive(Default)]
 struct Timings(Vec<(&'static str, f64)>);
 
 impl Timings {
-    fn push(&mut self, name: &'static str, start: Instant) {
-        self.0.push((name, start.elapsed().as_secs_f64() * 1e3));
+    fn push(&mut self, name: &'static str, start: Start) {
+        self.0.push((name, start.elapsed_ms()));
     }
 
     fn time<T>(&mut self, name: &'static str, phase: impl FnOnce() -> T) -> T {
-        let start = Instant::now();
+        let start = Start::now();
         let out = phase();
         self.push(name, start);
         out

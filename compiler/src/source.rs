@@ -11,8 +11,14 @@
 //! - Line and column lookups take time independent of the file's size (a binary search over line
 //!   starts, and a character count of at most [`CHAR_BLOCK`] bytes), so reporting many diagnostics
 //!   on one very long line stays linear.
+//!
+//! [`MemoryFiles`] is a file set held in memory (the compiler in WebAssembly, which has no file
+//! system): given as [`crate::driver::Options::memory`], every file the compiler would read (roots,
+//! imports, the standard library, registry files, `model` files) is looked up in it instead.
 
-use std::path::{Path, PathBuf};
+use std::collections::BTreeMap;
+use std::path::{Component, Path, PathBuf};
+use std::sync::Arc;
 
 /// Index of a file in a [`SourceMap`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Default)]
@@ -267,9 +273,128 @@ impl SourceMap {
     }
 }
 
+/// Files held in memory, by path: what the compiler reads instead of the disk when
+/// [`crate::driver::Options::memory`] is set.
+///
+/// Paths are normalised lexically ([`MemoryFiles::normalize`]: `.` dropped, `a/../` folded, `\\`
+/// kept as written) both when a file is added and when it is looked up, so `examples/hello/./scene.rt`
+/// and `examples/hello/scene.rt` are one file. Nothing here touches the file system. A folder exists
+/// when some file lies under it.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct MemoryFiles {
+    files: BTreeMap<PathBuf, Arc<[u8]>>,
+}
+
+impl MemoryFiles {
+    /// An empty set.
+    pub fn new() -> MemoryFiles {
+        MemoryFiles::default()
+    }
+
+    /// Adds (or replaces) the file at `path`.
+    pub fn insert(&mut self, path: impl AsRef<Path>, bytes: impl Into<Vec<u8>>) {
+        let bytes: Vec<u8> = bytes.into();
+        self.files
+            .insert(MemoryFiles::normalize(path.as_ref()), bytes.into());
+    }
+
+    /// The bytes of the file at `path`, if there is one.
+    pub fn get(&self, path: &Path) -> Option<&[u8]> {
+        self.files
+            .get(&MemoryFiles::normalize(path))
+            .map(|b| &b[..])
+    }
+
+    /// Whether a file is at `path`.
+    pub fn is_file(&self, path: &Path) -> bool {
+        self.get(path).is_some()
+    }
+
+    /// Whether some file lies under the folder `path` (the empty path is the top folder).
+    pub fn is_dir(&self, path: &Path) -> bool {
+        let dir = MemoryFiles::normalize(path);
+        self.files
+            .keys()
+            .any(|f| f != &dir && (dir.as_os_str().is_empty() || f.starts_with(&dir)))
+    }
+
+    /// The files directly in the folder `path`, sorted.
+    pub fn files_in(&self, path: &Path) -> Vec<PathBuf> {
+        let dir = MemoryFiles::normalize(path);
+        self.files
+            .keys()
+            .filter(|f| f.parent().unwrap_or(Path::new("")) == dir)
+            .cloned()
+            .collect()
+    }
+
+    /// Every path, sorted.
+    pub fn paths(&self) -> impl Iterator<Item = &Path> {
+        self.files.keys().map(PathBuf::as_path)
+    }
+
+    /// Number of files.
+    pub fn len(&self) -> usize {
+        self.files.len()
+    }
+
+    /// Whether the set is empty.
+    pub fn is_empty(&self) -> bool {
+        self.files.is_empty()
+    }
+
+    /// `a/./b/../c` → `a/c`, lexically (a leading `..` that cannot fold is kept).
+    pub fn normalize(path: &Path) -> PathBuf {
+        let mut out = PathBuf::new();
+        for c in path.components() {
+            match c {
+                Component::CurDir => {}
+                Component::ParentDir => {
+                    let last_is_name =
+                        matches!(out.components().next_back(), Some(Component::Normal(_)));
+                    if last_is_name {
+                        out.pop();
+                    } else {
+                        out.push("..");
+                    }
+                }
+                other => out.push(other.as_os_str()),
+            }
+        }
+        out
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn memory_files_normalise_paths_and_list_folders() {
+        let mut files = MemoryFiles::new();
+        files.insert("examples/hello/./scene.rt", "scene");
+        files.insert("examples/hello/lib/../util.rt", "util");
+        files.insert("examples/other/scene.rt", "other");
+        assert_eq!(
+            files.get(Path::new("examples/hello/scene.rt")),
+            Some(&b"scene"[..])
+        );
+        assert!(files.is_file(Path::new("examples/hello/util.rt")));
+        assert!(files.is_dir(Path::new("examples")));
+        assert!(files.is_dir(Path::new("")));
+        assert!(!files.is_dir(Path::new("examples/hello/scene.rt")));
+        assert_eq!(
+            files.files_in(Path::new("examples/hello")),
+            vec![
+                PathBuf::from("examples/hello/scene.rt"),
+                PathBuf::from("examples/hello/util.rt")
+            ]
+        );
+        assert_eq!(
+            MemoryFiles::normalize(Path::new("../a/./b/..")),
+            PathBuf::from("../a")
+        );
+    }
 
     #[test]
     fn line_col_counts_characters() {

@@ -41,6 +41,9 @@ pub struct LinkOptions {
     /// `--asset-root`s): the link step reads each model file's glTF metadata with the runtime's
     /// rules ([`model`]), so a render must pass the roots it renders with.
     pub asset_roots: AssetRoots,
+    /// Read `model` files from this in-memory set instead of the disk (the compiler in
+    /// WebAssembly; [`crate::driver::Options::memory`]); a file not in it is not read.
+    pub memory: Option<std::sync::Arc<crate::source::MemoryFiles>>,
 }
 
 /// A type the kernel dispatches on.
@@ -258,7 +261,7 @@ pub fn link_again(
     // A model type is linked when some model file of the scene brings its part (every one, for a
     // file that could not be read), at the first such entry; the camera only for a scene without
     // a `camera` entry.
-    let models = model::read_models(program, desc, &options.asset_roots, known);
+    let models = model::read_models(program, desc, options, known);
     let mut model_types = Vec::new();
     for t in MODEL_TYPES {
         if t.part == ModelPart::PerspectiveCamera && desc.camera.is_some() {

@@ -3,7 +3,8 @@
 //! with a `model` entry links only the standard-library types ([`MODEL_TYPES`]) its files bring.
 //!
 //! The file is found with the runtime's rules ([`crate::confine`]: the scene's folder, then the
-//! asset roots of [`super::LinkOptions::asset_roots`]) and only its JSON is read: a `.glb`'s JSON
+//! asset roots of [`super::LinkOptions::asset_roots`]), or, with [`super::LinkOptions::memory`],
+//! looked up in that in-memory file set (inside the scene's folder only), and only its JSON is read: a `.glb`'s JSON
 //! chunk is cut out with checked lengths, deserialised by `gltf-json` and not validated (its
 //! validator can panic on hostile input; the runtime validates when it imports the file). No
 //! buffer or image is read.
@@ -29,7 +30,7 @@ use gltf::json::{self, validation::Checked};
 
 use crate::confine::{resolve_scene_path, AssetRoots};
 use crate::sema::hir::{Model, Program, SceneDesc};
-use crate::source::Span;
+use crate::source::{MemoryFiles, Span};
 
 /// What one of [`MODEL_TYPES`] stands for in a glTF file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -178,7 +179,7 @@ pub struct ModelLink {
 pub fn read_models(
     program: &Program,
     desc: &SceneDesc,
-    roots: &AssetRoots,
+    options: &super::LinkOptions,
     known: &[ModelLink],
 ) -> Vec<ModelLink> {
     let scene_file = program
@@ -196,7 +197,10 @@ pub fn read_models(
             .or_else(|| known.iter().find(|k| k.path == written));
         let read = match earlier {
             Some(first) => first.read.clone(),
-            None => read_model(&model.path, scene_dir, roots),
+            None => match &options.memory {
+                Some(files) => read_model_in(files, &model.path, scene_dir),
+                None => read_model(&model.path, scene_dir, &options.asset_roots),
+            },
         };
         out.push(ModelLink {
             path: written,
@@ -232,6 +236,30 @@ pub fn read_model(compiled: &Path, scene_dir: &Path, roots: &AssetRoots) -> Mode
     match parts_of(&bytes) {
         Ok(parts) => ModelRead::Read(parts),
         Err(why) => ModelRead::NotRead(format!("`{}` {why}", file.display())),
+    }
+}
+
+/// [`read_model`] from an in-memory file set: the file must be in the set and, lexically, inside
+/// the scene's folder.
+pub fn read_model_in(files: &MemoryFiles, compiled: &Path, scene_dir: &Path) -> ModelRead {
+    let file = MemoryFiles::normalize(compiled);
+    let dir = MemoryFiles::normalize(scene_dir);
+    let written = file
+        .strip_prefix(&dir)
+        .unwrap_or(&file)
+        .display()
+        .to_string();
+    if compiled.has_root() || !file.starts_with(&dir) || file.starts_with("..") {
+        return ModelRead::NotRead(format!("`{written}` is outside the scene's folder"));
+    }
+    let Some(bytes) = files.get(&file) else {
+        return ModelRead::NotRead(format!(
+            "`{written}` is not among the files given to the compiler (in memory)"
+        ));
+    };
+    match parts_of(bytes) {
+        Ok(parts) => ModelRead::Read(parts),
+        Err(why) => ModelRead::NotRead(format!("`{written}` {why}")),
     }
 }
 

@@ -102,7 +102,13 @@ fn validate(namespaces: &Namespaces) -> Result<(), LoadWarning> {
 /// means empty, unreadable or invalid means empty with a warning.
 pub fn load_scene(path: &Path, key: &str) -> (Registry, Option<LoadWarning>) {
     let (text, io_warning) = read_text(path);
-    let (mut file, legacy, warning) = parse_file(text.as_deref());
+    let (registry, warning) = load_scene_text(text.as_deref(), key);
+    (registry, io_warning.or(warning))
+}
+
+/// [`load_scene`] from a registry file's text (`None`: no file).
+pub fn load_scene_text(text: Option<&str>, key: &str) -> (Registry, Option<LoadWarning>) {
+    let (mut file, legacy, warning) = parse_file(text);
     if let Some(legacy) = legacy {
         return (legacy, None);
     }
@@ -112,7 +118,7 @@ pub fn load_scene(path: &Path, key: &str) -> (Registry, Option<LoadWarning>) {
             version: VERSION,
             namespaces,
         },
-        io_warning.or(warning),
+        warning,
     )
 }
 
