@@ -230,8 +230,8 @@ impl MeshData {
 
     /// MikkTSpace tangents per triangle corner (the glTF spec's rule for a normal-mapped mesh
     /// without tangents), from positions, `normals` (made present first) and `uvs` (`uv_set` 1:
-    /// the second set). `None` when the mesh has no such uvs. A corner whose uvs are degenerate
-    /// gets the zero marker rather than a NaN.
+    /// the second set). `None` when the mesh has no such uvs. The corners of a triangle without
+    /// uv area (or whose tangent is not finite) get the zero marker rather than a NaN.
     pub fn generate_tangents(&mut self, uv_set: u32) -> Option<Vec<[[f32; 4]; 3]>> {
         self.ensure_normals();
         let uvs = match uv_set {
@@ -249,7 +249,17 @@ impl MeshData {
         if !mikktspace::generate_tangents(&mut geometry) {
             return None;
         }
-        Some(geometry.out)
+        // MikkTSpace gives a triangle without uv area some tangent anyway; glTF has none for it.
+        let mut out = geometry.out;
+        for (tri, corners) in self.indices.iter().zip(out.iter_mut()) {
+            let [a, b, c] = tri.map(|i| uvs.get(i as usize).copied().unwrap_or_default());
+            let (d1, d2) = ([b[0] - a[0], b[1] - a[1]], [c[0] - a[0], c[1] - a[1]]);
+            let area = d1[0] * d2[1] - d1[1] * d2[0];
+            if !(area.abs() > 1e-12) {
+                *corners = [[0.0; 4]; 3];
+            }
+        }
+        Some(out)
     }
 
     /// The box around all positions (empty for a mesh without vertices).
@@ -303,17 +313,18 @@ impl mikktspace::Geometry for Mikk<'_> {
             .copied()
             .unwrap_or(FALLBACK_NORMAL)
     }
+    /// MikkTSpace's uv space has v up (its bitangent follows v); glTF's v points down the image
+    /// while its normal textures have +y up, so v is flipped here to get glTF's bitangent sign.
     fn tex_coord(&self, face: usize, vert: usize) -> [f32; 2] {
-        self.uvs
+        let [u, v] = self
+            .uvs
             .get(self.index(face, vert))
             .copied()
-            .unwrap_or_default()
+            .unwrap_or_default();
+        [u, 1.0 - v]
     }
     fn set_tangent_encoded(&mut self, tangent: [f32; 4], face: usize, vert: usize) {
         let [x, y, z, w] = tangent;
-        // mikktspace's sign is for the bitangent of its uv space, whose v points up; glTF's uv
-        // origin is at the top-left with v down (as here), which is what the crate assumes of
-        // glTF too (the glTF sample viewer uses its output as is).
         let t = if [x, y, z, w].iter().all(|c| c.is_finite()) {
             unit_tangent([x, y, z], w)
         } else {
