@@ -255,7 +255,7 @@ impl MeshData {
             let [a, b, c] = tri.map(|i| uvs.get(i as usize).copied().unwrap_or_default());
             let (d1, d2) = ([b[0] - a[0], b[1] - a[1]], [c[0] - a[0], c[1] - a[1]]);
             let area = d1[0] * d2[1] - d1[1] * d2[0];
-            if !(area.abs() > 1e-12) {
+            if area.is_nan() || area.abs() <= 1e-12 {
                 *corners = [[0.0; 4]; 3];
             }
         }

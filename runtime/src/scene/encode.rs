@@ -88,20 +88,23 @@ pub fn pack_unorm4x8(c: [f32; 4]) -> u32 {
 
 /// The 3 `VERTEX_EXTRA` entries of triangle `t` (vertices `idx`) of a mesh with `extras`.
 fn extra_entries(extras: &VertexExtras, t: u32, idx: [u32; 3]) -> [[u32; 4]; 3] {
-    let mut tangents = [0u32; 4];
+    let mut tangents = [0u32; 3];
+    let mut flags = 0u32;
     if let Some(corners) = extras.tangents.as_ref().and_then(|c| c.get(t as usize)) {
-        for (k, &[x, y, z, w]) in corners.iter().enumerate() {
+        for ((k, &[x, y, z, w]), word) in corners.iter().enumerate().zip(&mut tangents) {
             let has =
                 [x, y, z].iter().any(|&c| c != 0.0) && [x, y, z].iter().all(|c| c.is_finite());
             if has {
-                tangents[k] = octahedral([x, y, z]);
-                tangents[3] |= 1 << (3 + k);
+                *word = octahedral([x, y, z]);
+                flags |= 1 << (3 + k);
                 if w < 0.0 {
-                    tangents[3] |= 1 << k;
+                    flags |= 1 << k;
                 }
             }
         }
     }
+    let [t0, t1, t2] = tangents;
+    let tangents = [t0, t1, t2, flags];
     let uv = |i: u32| {
         let [u, v] = extras
             .uvs1
