@@ -197,10 +197,40 @@ pub const ATTRIBUTE: RecordDesc = RecordDesc {
             name: "uv12",
             offset: 1,
             ty: FieldType::Vec4U32,
-            doc: "uvs of the second and third vertices (f16x2 each), then 0, 0",
+            doc: "uvs of the second and third vertices (f16x2 each), then the index in `attributes` of the slot's `vertex_extra` record (0: none), then 0",
         },
     ],
     doc: "one triangle slot's normals and uvs, parallel to `triangles`",
+};
+
+/// A triangle slot's extra vertex attributes, for meshes that have them (glTF `TANGENT`,
+/// `TEXCOORD_1`, `COLOR_0`): addressed by the index its `ATTRIBUTE` record holds.
+pub const VERTEX_EXTRA: RecordDesc = RecordDesc {
+    name: "vertex_extra",
+    binding: "attributes",
+    addressing: Addressing::WordOffset,
+    stride: 3,
+    fields: &[
+        RecordField {
+            name: "tangents",
+            offset: 0,
+            ty: FieldType::Vec4U32,
+            doc: "octahedral tangents of the 3 vertices (snorm16x2 each), then flags: bit k set when vertex k's bitangent sign is negative, bit 3 + k when it has a tangent",
+        },
+        RecordField {
+            name: "uv1",
+            offset: 1,
+            ty: FieldType::Vec4U32,
+            doc: "second uv set of the 3 vertices (f16x2 each), then 0",
+        },
+        RecordField {
+            name: "colors",
+            offset: 2,
+            ty: FieldType::Vec4U32,
+            doc: "linear RGBA colours of the 3 vertices (unorm8x4 each, white without colours), then 0",
+        },
+    ],
+    doc: "a triangle slot's tangents, second uvs and colours (in `attributes`, after every slot's `attribute` record; only meshes that have them)",
 };
 
 /// Every record, in the order `params` holds the params-resident ones.
@@ -211,6 +241,7 @@ pub const RECORDS: &[&RecordDesc] = &[
     &MEDIUM_ENTRY,
     &TRIANGLE,
     &ATTRIBUTE,
+    &VERTEX_EXTRA,
 ];
 
 /// A BVH header record (record 0 of every BVH in `nodes`): the `GpuNode` viewed as header.

@@ -71,6 +71,11 @@ pub enum Intrinsic {
     HitErrorLoad,
     /// `hit_error_store(error)`
     HitErrorStore,
+    /// `hit_extra_load() -> vec4u`: what `finish_hit` stored of the last mesh hit for its vertex
+    /// extras (`[vertex_extra record or 0, barycentric b1 bits, b2 bits, instance slot]`)
+    HitExtraLoad,
+    /// `hit_extra_store(value)`
+    HitExtraStore,
     /// `spawn_reset()`
     SpawnReset,
     /// `spawned_count() -> u32`
@@ -111,7 +116,7 @@ pub enum Intrinsic {
 
 impl Intrinsic {
     /// Every intrinsic, in the order `rtc:abi` declares them.
-    pub const ALL: [Intrinsic; 39] = [
+    pub const ALL: [Intrinsic; 41] = [
         Intrinsic::LoadFrame,
         Intrinsic::LoadTile,
         Intrinsic::LoadNode,
@@ -125,6 +130,8 @@ impl Intrinsic {
         Intrinsic::RngStore,
         Intrinsic::HitErrorLoad,
         Intrinsic::HitErrorStore,
+        Intrinsic::HitExtraLoad,
+        Intrinsic::HitExtraStore,
         Intrinsic::SpawnReset,
         Intrinsic::SpawnedCount,
         Intrinsic::SpawnedDir,
@@ -174,6 +181,8 @@ impl Intrinsic {
             Intrinsic::RngStore => ("rng_store", "state: u32", ""),
             Intrinsic::HitErrorLoad => ("hit_error_load", "", "f32"),
             Intrinsic::HitErrorStore => ("hit_error_store", "error: f32", ""),
+            Intrinsic::HitExtraLoad => ("hit_extra_load", "", "vec4u"),
+            Intrinsic::HitExtraStore => ("hit_extra_store", "value: vec4u", ""),
             Intrinsic::SpawnReset => ("spawn_reset", "", ""),
             Intrinsic::SpawnedCount => ("spawned_count", "", "u32"),
             Intrinsic::SpawnedDir => ("spawned_dir", "i: u32", "vec3f"),
@@ -410,6 +419,7 @@ pub fn config_module_with(c: &KernelConfig, debug: Option<super::DebugMode>) -> 
         ("HAS_ANY_HIT", c.has_any_hit),
         ("HAS_CUSTOM_GEOMETRY", c.has_custom_geometry),
         ("HAS_MESHES", c.has_meshes),
+        ("HAS_VERTEX_EXTRAS", c.has_vertex_extras),
         ("HAS_MEDIA", c.has_media),
         ("HAS_BACKGROUND", c.has_background),
         ("DEBUG", debug.is_some()),

@@ -353,6 +353,16 @@ impl KernelHooks<'_> {
                 }
                 fb.load(p, span)
             }
+            I::HitExtraLoad | I::HitExtraStore => {
+                let u = TypeCache::vector(cx.module_mut(), naga::VectorSize::Quad, Scalar::U32);
+                let g = self.generated.private(cx, "hit_extra", u);
+                let p = fb.expr(Expression::GlobalVariable(g), span);
+                if intrinsic == I::HitExtraStore {
+                    fb.store(p, arg(0)?, span);
+                    return Ok(None);
+                }
+                fb.load(p, span)
+            }
             I::StackLoad | I::StackStore => {
                 let g = self.traversal_stack(cx);
                 let base = fb.expr(Expression::GlobalVariable(g), span);

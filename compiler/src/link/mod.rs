@@ -91,6 +91,9 @@ pub struct KernelConfig {
     pub has_custom_geometry: bool,
     /// Some object is a triangle mesh (or a model brings meshes).
     pub has_meshes: bool,
+    /// Some material reads per-vertex extras (tangents, a second uv set, colours: a glTF
+    /// `GltfDetailMaterial`), so `finish_hit` keeps what they need (`hit_extra_store`).
+    pub has_vertex_extras: bool,
     /// Some used material has a `@medium` program.
     pub has_media: bool,
     /// The scene has a background.
@@ -113,6 +116,7 @@ impl KernelConfig {
             has_any_hit: true,
             has_custom_geometry: true,
             has_meshes: true,
+            has_vertex_extras: true,
             has_media: true,
             has_background: true,
         }
@@ -379,6 +383,10 @@ pub fn link_again(
         has_any_hit: has(ProgramKind::AnyHit) || options.all_programs,
         has_custom_geometry: has_custom || options.all_programs,
         has_meshes: has_meshes || options.all_programs,
+        has_vertex_extras: model_types
+            .iter()
+            .any(|n| matches!(*n, "GltfDetailMaterial" | "GltfMaskedDetailMaterial"))
+            || options.all_programs,
         has_media,
         has_background: desc.background.is_some() || options.all_programs,
     };

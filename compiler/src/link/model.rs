@@ -45,6 +45,11 @@ pub enum ModelPart {
     MaskedMaterial,
     /// A `MASK` or `BLEND` material with more textures or a transform (as `MappedMaterial`).
     MaskedMappedMaterial,
+    /// An `OPAQUE` material with a normal texture, a texture on uv set 1, or vertex colours
+    /// (`COLOR_0` on a primitive that uses it): the per-vertex extras ([`is_detailed`]).
+    DetailMaterial,
+    /// A `MASK` or `BLEND` material that needs the per-vertex extras.
+    MaskedDetailMaterial,
     /// A `KHR_lights_punctual` point light.
     PointLight,
     /// A `KHR_lights_punctual` directional light.
@@ -57,11 +62,13 @@ pub enum ModelPart {
 
 impl ModelPart {
     /// Every part, in order.
-    pub const ALL: [ModelPart; 8] = [
+    pub const ALL: [ModelPart; 10] = [
         ModelPart::OpaqueMaterial,
         ModelPart::MappedMaterial,
         ModelPart::MaskedMaterial,
         ModelPart::MaskedMappedMaterial,
+        ModelPart::DetailMaterial,
+        ModelPart::MaskedDetailMaterial,
         ModelPart::PointLight,
         ModelPart::DirectionalLight,
         ModelPart::SpotLight,
@@ -76,6 +83,12 @@ impl ModelPart {
             ModelPart::MaskedMaterial => "alpha-masked or blended material",
             ModelPart::MaskedMappedMaterial => {
                 "alpha-masked or blended material with more textures"
+            }
+            ModelPart::DetailMaterial => {
+                "opaque material with a normal map, a second uv set or vertex colours"
+            }
+            ModelPart::MaskedDetailMaterial => {
+                "alpha-masked or blended material with a normal map, a second uv set or vertex colours"
             }
             ModelPart::PointLight => "point light",
             ModelPart::DirectionalLight => "directional light",
@@ -120,6 +133,16 @@ pub const MODEL_TYPES: &[ModelType] = &[
         module: "std/materials/gltf.rt",
         name: "GltfMaskedMappedMaterial",
         part: ModelPart::MaskedMappedMaterial,
+    },
+    ModelType {
+        module: "std/materials/gltf.rt",
+        name: "GltfDetailMaterial",
+        part: ModelPart::DetailMaterial,
+    },
+    ModelType {
+        module: "std/materials/gltf.rt",
+        name: "GltfMaskedDetailMaterial",
+        part: ModelPart::MaskedDetailMaterial,
     },
     ModelType {
         module: "std/lights/point.rt",
@@ -289,13 +312,76 @@ pub fn is_mapped(m: &json::Material) -> bool {
             .is_some_and(|t| transformed(t.extensions.as_ref()))
 }
 
+/// Whether glTF material `index` (`None`: the default material, `m` its JSON when it has one)
+/// needs `GltfDetailMaterial` (or `GltfMaskedDetailMaterial`): a normal texture, a texture on
+/// uv set 1 (`texCoord`, or `KHR_texture_transform`'s), or `COLOR_0` on a primitive that uses
+/// it. The runtime's import (`GltfMaterial::is_detailed`) decides the same way.
+pub fn is_detailed(root: &json::Root, index: Option<usize>, m: Option<&json::Material>) -> bool {
+    let colors = root.meshes.iter().flat_map(|m| &m.primitives).any(|p| {
+        p.material.map(|i| i.value()) == index
+            && p.attributes
+                .contains_key(&Checked::Valid(json::mesh::Semantic::Colors(0)))
+    });
+    let Some(m) = m else { return colors };
+    let info = |i: Option<&json::texture::Info>| {
+        i.is_some_and(|i| {
+            i.extensions
+                .as_ref()
+                .and_then(|e| e.texture_transform.as_ref())
+                .and_then(|t| t.tex_coord)
+                .unwrap_or(i.tex_coord)
+                == 1
+        })
+    };
+    let other = |set: u32, e: Option<&json::extensions::material::OcclusionTexture>| {
+        e.and_then(|e| e.others.get("KHR_texture_transform"))
+            .and_then(|t| t.get("texCoord"))
+            .and_then(|c| c.as_u64())
+            .map_or(set, |c| u32::try_from(c).unwrap_or(u32::MAX))
+            == 1
+    };
+    let normal_set = |n: &json::material::NormalTexture| {
+        n.extensions
+            .as_ref()
+            .and_then(|e| e.others.get("KHR_texture_transform"))
+            .and_then(|t| t.get("texCoord"))
+            .and_then(|c| c.as_u64())
+            .map_or(n.tex_coord, |c| u32::try_from(c).unwrap_or(u32::MAX))
+    };
+    let pbr = &m.pbr_metallic_roughness;
+    colors
+        || m.normal_texture.is_some()
+        || info(pbr.base_color_texture.as_ref())
+        || info(pbr.metallic_roughness_texture.as_ref())
+        || info(m.emissive_texture.as_ref())
+        || m.occlusion_texture
+            .as_ref()
+            .is_some_and(|o| other(o.tex_coord, o.extensions.as_ref()))
+        || m.normal_texture
+            .as_ref()
+            .is_some_and(|n| normal_set(n) == 1)
+}
+
 /// The parts a parsed glTF document holds (see the module docs for what counts).
 pub fn parts_of_root(root: &json::Root) -> BTreeSet<ModelPart> {
     let mut parts = BTreeSet::new();
     for primitive in root.meshes.iter().flat_map(|m| &m.primitives) {
-        let material = primitive
-            .material
-            .and_then(|i| root.materials.get(i.value()));
+        let index = primitive.material.map(|i| i.value());
+        let material = index.and_then(|i| root.materials.get(i));
+        let masked = matches!(
+            material.map(|m| m.alpha_mode),
+            Some(Checked::Valid(
+                json::material::AlphaMode::Mask | json::material::AlphaMode::Blend
+            ))
+        );
+        if is_detailed(root, index, material) {
+            parts.insert(if masked {
+                ModelPart::MaskedDetailMaterial
+            } else {
+                ModelPart::DetailMaterial
+            });
+            continue;
+        }
         parts.insert(match material.map(|m| m.alpha_mode) {
             Some(Checked::Valid(
                 json::material::AlphaMode::Mask | json::material::AlphaMode::Blend,

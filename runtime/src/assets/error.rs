@@ -314,6 +314,8 @@ pub enum TextureSlot {
     Emissive,
     /// `occlusionTexture`.
     Occlusion,
+    /// `normalTexture`.
+    Normal,
 }
 
 impl fmt::Display for TextureSlot {
@@ -322,6 +324,7 @@ impl fmt::Display for TextureSlot {
             Self::MetallicRoughness => "metallic-roughness",
             Self::Emissive => "emissive",
             Self::Occlusion => "occlusion",
+            Self::Normal => "normal",
         })
     }
 }

@@ -74,7 +74,7 @@ pub(crate) use error::display_folder;
 pub use error::{
     AssetError, CountProblem, GlbProblem, GltfItem, MeshError, PathProblem, TextureSlot, UriProblem,
 };
-pub use mesh::{MeshData, MeshReport};
+pub use mesh::{MeshData, MeshReport, VertexExtras};
 pub use model::{
     load_gltf, load_gltf_with, AlphaMode, GltfCamera, GltfLight, GltfMaterial, LightKind,
     MeshInstance, ModelScene, Projection,

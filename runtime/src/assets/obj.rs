@@ -128,6 +128,7 @@ fn merge_models(models: &[tobj::Model], path: &Path) -> Result<MeshData, AssetEr
         normals: all_normals.then_some(normals),
         uvs: any_uvs.then_some(uvs),
         indices,
+        extras: None,
     })
 }
 

@@ -38,6 +38,7 @@ pub fn quad_mesh() -> MeshData {
         normals: Some(vec![[0.0, 1.0, 0.0]; 4]),
         positions,
         indices: vec![[0, 3, 2], [0, 2, 1]],
+        extras: None,
     }
 }
 
@@ -95,6 +96,7 @@ pub fn sphere_mesh(subdivisions: u32) -> MeshData {
         positions: positions.iter().map(|p| p.to_array()).collect(),
         normals: None,
         indices,
+        extras: None,
     };
     split_uv_seams(&mut mesh);
     mesh.normals = Some(mesh.positions.clone());

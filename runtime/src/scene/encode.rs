@@ -6,13 +6,21 @@
 //! Per triangle slot `s` of a mesh (slot `s` holds triangle `t = bvh.prim_indices()[s]` of the mesh):
 //! - `triangles[3s..3s+3]`: `[v0.xyz, f32::from_bits(t)]`, `[v1.xyz, 0]`, `[v2.xyz, 0]`, object space;
 //! - `attributes[2s]`: `[oct(n0), oct(n1), oct(n2), f16x2(uv0)]`, `attributes[2s+1]`:
-//!   `[f16x2(uv1), f16x2(uv2), 0, 0]`.
+//!   `[f16x2(uv1), f16x2(uv2), extra, 0]`;
+//! - for a mesh with [`VertexExtras`] only, 3 `VERTEX_EXTRA` entries per slot in `extras`:
+//!   `[oct(t0), oct(t1), oct(t2), flags]` (flags: bit k = tangent k's w is negative, bit 3 + k =
+//!   vertex k has a tangent), `[f16x2(uv1_0), f16x2(uv1_1), f16x2(uv1_2), 0]`,
+//!   `[rgba8(c0), rgba8(c1), rgba8(c2), 0]` (white without colours). `extra` is 0 for a mesh
+//!   without extras (so its encoding is what it always was); otherwise 1 + the index of the slot's
+//!   first entry in the mesh's `extras`, which [`link_extras`] turns into the index in the
+//!   scene's `attributes` once all meshes are placed (extras go after every slot's records).
 //!
 //! `oct` is the octahedral encoding of a unit vector (Cigolle et al., JCGT 2014) packed like WGSL's
 //! `pack2x16snorm`; [`decode_octahedral`] is exactly the kernel's decoder, so the round trip is
 //! tested on the CPU. `f16x2` is WGSL's `pack2x16float` ([`pack_f16x2`]).
 //!
-//! Invariants: every slot gets exactly 3 `triangles` entries and 2 `attributes` entries, whatever the
+//! Invariants: every slot gets exactly 3 `triangles` entries and 2 `attributes` entries (and 3
+//! `extras` entries when the mesh has extras), whatever the
 //! mesh holds (a mesh without normals gets its smooth normals, one without uvs gets zeros, an index
 //! out of range reads the origin); nothing here panics.
 
@@ -20,7 +28,7 @@ use glam::Vec3;
 use rtc_bvh::Bvh;
 
 use crate::assets::texture::pack_f16x2;
-use crate::assets::MeshData;
+use crate::assets::{MeshData, VertexExtras};
 
 use super::gpu_types::record;
 
@@ -69,13 +77,79 @@ pub fn decode_octahedral(bits: u32) -> [f32; 3] {
     n.normalize_or_zero().to_array()
 }
 
+/// Packs a linear RGBA colour as 4 unorm8s (WGSL's `pack4x8unorm`, red in the low byte).
+pub fn pack_unorm4x8(c: [f32; 4]) -> u32 {
+    c.iter().enumerate().fold(0, |word, (k, &x)| {
+        let x = if x.is_nan() { 0.0 } else { x.clamp(0.0, 1.0) };
+        // In [0, 255] after the clamp.
+        word | (u32::from((x * 255.0).round() as u8) << (8 * k))
+    })
+}
+
+/// The 3 `VERTEX_EXTRA` entries of triangle `t` (vertices `idx`) of a mesh with `extras`.
+fn extra_entries(extras: &VertexExtras, t: u32, idx: [u32; 3]) -> [[u32; 4]; 3] {
+    let mut tangents = [0u32; 3];
+    let mut flags = 0u32;
+    if let Some(corners) = extras.tangents.as_ref().and_then(|c| c.get(t as usize)) {
+        for ((k, &[x, y, z, w]), word) in corners.iter().enumerate().zip(&mut tangents) {
+            let has =
+                [x, y, z].iter().any(|&c| c != 0.0) && [x, y, z].iter().all(|c| c.is_finite());
+            if has {
+                *word = octahedral([x, y, z]);
+                flags |= 1 << (3 + k);
+                if w < 0.0 {
+                    flags |= 1 << k;
+                }
+            }
+        }
+    }
+    let [t0, t1, t2] = tangents;
+    let tangents = [t0, t1, t2, flags];
+    let uv = |i: u32| {
+        let [u, v] = extras
+            .uvs1
+            .as_ref()
+            .and_then(|u| u.get(i as usize))
+            .copied()
+            .unwrap_or([0.0; 2]);
+        pack_f16x2(u, v)
+    };
+    let color = |i: u32| {
+        extras
+            .colors
+            .as_ref()
+            .and_then(|c| c.get(i as usize))
+            .map_or(u32::MAX, |&c| pack_unorm4x8(c))
+    };
+    let [a, b, c] = idx;
+    [
+        tangents,
+        [uv(a), uv(b), uv(c), 0],
+        [color(a), color(b), color(c), 0],
+    ]
+}
+
+/// Turns the mesh-relative `extra` words of `attributes[range]` (a mesh whose `extras` go at
+/// index `base` of the scene's `attributes`) into absolute indices.
+pub fn link_extras(attributes: &mut [[u32; 4]], base: u32) {
+    for pair in attributes.chunks_exact_mut(record::ATTRIBUTE_VEC4S) {
+        if let Some(second) = pair.get_mut(1) {
+            if second[2] != 0 {
+                second[2] = base + (second[2] - 1);
+            }
+        }
+    }
+}
+
 /// Appends the triangle slots of `mesh`, in the leaf order of its BVH `bvh`, to `triangles` and
-/// `attributes` (see the module docs for the layout).
+/// `attributes`, and their extras (only for a mesh with [`VertexExtras`]) to `extras` (see the
+/// module docs for the layout).
 pub fn encode_mesh(
     mesh: &MeshData,
     bvh: &Bvh,
     triangles: &mut Vec<[f32; 4]>,
     attributes: &mut Vec<[u32; 4]>,
+    extras: &mut Vec<[u32; 4]>,
 ) {
     let smooth;
     let normals: &[[f32; 3]] = match &mesh.normals {
@@ -113,7 +187,15 @@ pub fn encode_mesh(
         triangles.push([p1[0], p1[1], p1[2], 0.0]);
         triangles.push([p2[0], p2[1], p2[2], 0.0]);
         attributes.push([nrm(a), nrm(b), nrm(c), uv(a)]);
-        attributes.push([uv(b), uv(c), 0, 0]);
+        let extra = match &mesh.extras {
+            Some(x) => {
+                let at = u32::try_from(extras.len() + 1).unwrap_or(0);
+                extras.extend(extra_entries(x, t, idx));
+                at
+            }
+            None => 0,
+        };
+        attributes.push([uv(b), uv(c), extra, 0]);
     }
 }
 
@@ -179,8 +261,9 @@ mod tests {
             },
             BuildPreset::Fast,
         );
-        let (mut tris, mut attrs) = (Vec::new(), Vec::new());
-        encode_mesh(&mesh, &bvh, &mut tris, &mut attrs);
+        let (mut tris, mut attrs, mut extras) = (Vec::new(), Vec::new(), Vec::new());
+        encode_mesh(&mesh, &bvh, &mut tris, &mut attrs, &mut extras);
+        assert!(extras.is_empty(), "a mesh without extras has none");
         assert_eq!(tris.len(), bvh.prim_indices().len() * 3);
         assert_eq!(attrs.len(), bvh.prim_indices().len() * 2);
         let normals = mesh.normals.as_ref().expect("cube has normals");

@@ -39,7 +39,7 @@ use rtc_compiler::sema::hir::{
 use rtc_compiler::Span;
 
 use super::assets_cache::{AssetCache, MeshKey};
-use super::encode::encode_mesh;
+use super::encode::{encode_mesh, link_extras};
 use super::gpu_types::{record, FrameUniforms, GpuInstance};
 use super::models;
 use super::params::ParamsBuilder;
@@ -411,11 +411,13 @@ fn build_mesh(
     quantized.append_records(&mut records);
     let mut triangles = Vec::new();
     let mut attributes = Vec::new();
-    encode_mesh(data, &bvh, &mut triangles, &mut attributes);
+    let mut extras = Vec::new();
+    encode_mesh(data, &bvh, &mut triangles, &mut attributes, &mut extras);
     Ok(BuiltMesh {
         records,
         triangles,
         attributes,
+        extras,
         slots: to_u32("triangle slots", bvh.prim_indices().len())?,
         bounds: bvh.root_aabb(),
         depth: bvh.max_depth(),
@@ -497,6 +499,9 @@ impl Entities {
         let mut nodes: Vec<NodeRecord> = Vec::new();
         let mut triangles = Vec::new();
         let mut attributes = Vec::new();
+        // The meshes with extras and the range of their attribute records: their extras are
+        // placed after the loop.
+        let mut with_extras = Vec::new();
         let mut meshes = Vec::with_capacity(cache.meshes.len());
         for (key, data, version) in &cache.meshes {
             let built = match cache.store.blas(key, options.bvh, *version) {
@@ -527,7 +532,19 @@ impl Entities {
             });
             nodes.extend_from_slice(&built.records);
             triangles.extend_from_slice(&built.triangles);
+            let start = attributes.len();
             attributes.extend_from_slice(&built.attributes);
+            if !built.extras.is_empty() {
+                with_extras.push((start..attributes.len(), built));
+            }
+        }
+        // Extras go after every slot's records (`encode::link_extras`).
+        for (range, built) in with_extras {
+            let base = to_u32("attribute records", attributes.len())?;
+            if let Some(records) = attributes.get_mut(range) {
+                link_extras(records, base);
+            }
+            attributes.extend_from_slice(&built.extras);
         }
         let blas_nodes = to_u32("BVH nodes", nodes.len())?;
         to_u32("triangle slots", triangles.len())?;

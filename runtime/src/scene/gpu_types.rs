@@ -150,6 +150,8 @@ pub mod record {
     pub const TRIANGLE_VEC4S: usize = abi::TRIANGLE.stride as usize;
     /// `vec4u`s of a triangle slot in `attributes`.
     pub const ATTRIBUTE_VEC4S: usize = abi::ATTRIBUTE.stride as usize;
+    /// `vec4u`s of a slot's `VERTEX_EXTRA` record in `attributes`.
+    pub const VERTEX_EXTRA_VEC4S: usize = abi::VERTEX_EXTRA.stride as usize;
 
     /// Bytes of one record of `desc` (its stride times its binding's element size).
     pub const fn bytes(desc: &abi::RecordDesc) -> u64 {
@@ -185,6 +187,11 @@ const _: () = assert!(record::TRIANGLE_VEC4S == 3);
 const _: () = assert!(abi::ATTRIBUTE.offset_of("normals_uv0") == 0);
 const _: () = assert!(abi::ATTRIBUTE.offset_of("uv12") == 1);
 const _: () = assert!(record::ATTRIBUTE_VEC4S == 2);
+// `encode::extra_entries` writes tangents, second uvs, colours, in that order.
+const _: () = assert!(record::VERTEX_EXTRA_VEC4S == 3);
+const _: () = assert!(abi::VERTEX_EXTRA.offset_of("tangents") == 0);
+const _: () = assert!(abi::VERTEX_EXTRA.offset_of("uv1") == 1);
+const _: () = assert!(abi::VERTEX_EXTRA.offset_of("colors") == 2);
 const _: () = assert!(record::bytes(&abi::TRIANGLE) == 48);
 const _: () = assert!(record::bytes(&abi::ATTRIBUTE) == 32);
 // The texel words of each format (`assets::texture`).
@@ -570,6 +577,7 @@ mod tests {
             ("MEDIUM_ENTRY_STRIDE", record::MEDIUM_ENTRY_WORDS as u32),
             ("TRIANGLE_STRIDE", record::TRIANGLE_VEC4S as u32),
             ("ATTRIBUTE_STRIDE", record::ATTRIBUTE_VEC4S as u32),
+            ("VERTEX_EXTRA_STRIDE", record::VERTEX_EXTRA_VEC4S as u32),
         ];
         let generated = parse::constants(&text);
         let as_owned: Vec<(String, u32)> =
@@ -644,6 +652,10 @@ mod tests {
                 record::ATTRIBUTE_VEC4S,
                 1,
             ),
+            // Addressed by the index an `attribute` record holds (stride 1: no multiplier).
+            ("vertex_extra_tangents", "load_attribute", 1, 0),
+            ("vertex_extra_uv1", "load_attribute", 1, 1),
+            ("vertex_extra_colors", "load_attribute", 1, 2),
         ];
         let got: Vec<(String, String, usize, usize)> = parse::accessors(&text)
             .into_iter()

@@ -8,8 +8,10 @@
 //! - every node instancing a primitive → one object, object-to-world = the entry's `transform` ×
 //!   the node's world transform, named `file.glb#nodes[i]`;
 //! - every used material → a `GltfMaterial` (`stdlib/materials/gltf.rt`; `GltfMappedMaterial`
-//!   when it has more textures or a transform, `GltfMaterial::is_mapped`; `GltfMaskedMaterial` /
-//!   `GltfMaskedMappedMaterial` for `alphaMode: MASK` (its `alpha_cutoff`) and `BLEND`
+//!   when it has more textures or a transform, `GltfMaterial::is_mapped`;
+//!   `GltfDetailMaterial` when it has a normal texture, a texture on uv set 1 or vertex colours,
+//!   `GltfMaskedMaterial` / `GltfMaskedMappedMaterial` / `GltfMaskedDetailMaterial` for
+//!   `alphaMode: MASK` (its `alpha_cutoff`) and `BLEND`
 //!   (`blend` 1: stochastic coverage), with `double_sided`; opaque single-sided materials are
 //!   not culled, which one warning per file names):
 //!   base colour factor and texture, metallic and roughness factors and their texture, emissive
@@ -279,7 +281,19 @@ fn import_one(
             ("occlusion_texture", texture(m.occlusion_texture)),
             ("occlusion_strength", f32_value(m.occlusion_strength)),
         ];
-        let slots = ["base", "metal_rough", "emissive", "occlusion"];
+        let detailed = m.is_detailed();
+        if detailed {
+            // No normal texture: scale 0 leaves the normal as it is (see gltf.rt).
+            let scale = if m.normal_texture.is_some() {
+                m.normal_scale
+            } else {
+                0.0
+            };
+            fields.push(("normal_texture", texture(m.normal_texture)));
+            fields.push(("normal_scale", f32_value(scale)));
+            fields.push(("uv_sets", ConstValue::Scalar(Scalar::U32(m.uv_sets))));
+        }
+        let slots = ["base", "metal_rough", "emissive", "occlusion", "normal"];
         let rows: Vec<(String, ConstValue)> = slots
             .iter()
             .zip(&m.uv_transforms)
@@ -299,7 +313,9 @@ fn import_one(
                 if m.alpha_mode == AlphaMode::Blend {
                     fields.push(("blend", ConstValue::Scalar(Scalar::U32(1))));
                 }
-                if m.is_mapped() {
+                if detailed {
+                    "GltfMaskedDetailMaterial"
+                } else if m.is_mapped() {
                     "GltfMaskedMappedMaterial"
                 } else {
                     "GltfMaskedMaterial"
@@ -314,7 +330,9 @@ fn import_one(
                     });
                 }
                 // The fields it lacks (other textures, transforms) are left out by `instance`.
-                if m.is_mapped() {
+                if detailed {
+                    "GltfDetailMaterial"
+                } else if m.is_mapped() {
                     "GltfMappedMaterial"
                 } else {
                     "GltfMaterial"

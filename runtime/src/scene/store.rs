@@ -66,8 +66,11 @@ pub struct BuiltMesh {
     pub records: Vec<NodeRecord>,
     /// `TRIANGLE` records of its slots.
     pub triangles: Vec<[f32; 4]>,
-    /// `ATTRIBUTE` records of its slots.
+    /// `ATTRIBUTE` records of its slots (their `extra` words relative to `extras`: see
+    /// `encode::link_extras`).
     pub attributes: Vec<[u32; 4]>,
+    /// `VERTEX_EXTRA` records of its slots (empty for a mesh without extras).
+    pub extras: Vec<[u32; 4]>,
     /// Triangle slots.
     pub slots: u32,
     /// Its object-space box.

@@ -4,11 +4,12 @@
 //! once, on first use ([`Materials`] caches the mappings), so `ModelScene::materials` and
 //! `::textures` hold only what the scene uses, in first-use order; a texture is one (image,
 //! sampler, linear-or-sRGB) triple (base colour and emissive are sRGB, metallic-roughness and
-//! occlusion linear data), labelled uniquely in `texture_labels`. Imported: base colour,
-//! metallic-roughness, emissive and occlusion textures, each with its sampler (wrap modes,
-//! magnification filter; see [`Sampler`] for why there is no minification filter) and its
-//! `KHR_texture_transform`. Not imported, each with a warning naming the material: the normal
-//! texture, and uv sets other than 0 (such a texture is kept and sampled with set 0). An image
+//! occlusion and normal linear data), labelled uniquely in `texture_labels`. Imported: base
+//! colour, metallic-roughness, emissive, occlusion and normal textures, each with its sampler
+//! (wrap modes, magnification filter; see [`Sampler`] for why there is no minification filter),
+//! its `KHR_texture_transform` and its uv set (0 or 1); whether a primitive using the material
+//! has `COLOR_0`. Not imported, with a warning naming the material: uv sets past 1 (such a
+//! texture is sampled with set 0). An image
 //! file that cannot be read is [`AssetError::MissingFile`] naming the material, the texture and
 //! the image ([`GltfItem::BaseColorImage`], [`GltfItem::MaterialImage`]).
 
@@ -48,6 +49,7 @@ impl Materials {
             return Ok(*self.default_material.get_or_insert_with(|| {
                 self.materials.push(GltfMaterial {
                     name: Some("default".to_owned()),
+                    vertex_colors: has_vertex_colors(ctx.root, None),
                     ..GltfMaterial::default()
                 });
                 self.materials.len() - 1
@@ -77,12 +79,13 @@ impl Materials {
     ) -> Result<GltfMaterial, AssetError> {
         let pbr = &json.pbr_metallic_roughness;
         let named = material_name(m, json);
-        if json.normal_texture.is_some() {
-            warnings.push(format!(
-                "{named}: its normal texture is not imported (shaded with the mesh normals)"
-            ));
-        }
-        let mut uv_transforms = [UV_IDENTITY; 4];
+        let mut uv_transforms = [UV_IDENTITY; 5];
+        let sets = slot_uv_sets(json);
+        let uv_sets = sets
+            .iter()
+            .enumerate()
+            .filter(|(_, &s)| s == 1)
+            .fold(0, |bits, (k, _)| bits | (1 << k));
         let transform_of = |info: Option<&json::texture::Info>| {
             info.and_then(|i| texture_info(i).transform)
                 .unwrap_or(UV_IDENTITY)
@@ -139,28 +142,18 @@ impl Materials {
             .map(|o| {
                 // `gltf-json` has no typed field for the extension on an occlusion texture;
                 // it is among the `others`.
-                let transform = o
-                    .extensions
-                    .as_ref()
-                    .and_then(|e| e.others.get("KHR_texture_transform"))
-                    .and_then(|v| {
-                        serde_json::from_value::<json::extensions::texture::TextureTransform>(
-                            v.clone(),
-                        )
-                        .ok()
-                    });
-                let info = SlotInfo {
-                    texture: o.index.value(),
-                    tex_coord: transform
-                        .as_ref()
-                        .and_then(|t| t.tex_coord)
-                        .unwrap_or(o.tex_coord),
-                    transform: transform
-                        .as_ref()
-                        .map(|t| uv_transform(t.offset.0, t.rotation.0, t.scale.0)),
-                };
+                let info = occlusion_info(o);
                 uv_transforms[3] = info.transform.unwrap_or(UV_IDENTITY);
                 self.slot(ctx, (m, &named), Slot::Occlusion, info, warnings)
+            })
+            .transpose()?;
+        let normal_texture = json
+            .normal_texture
+            .as_ref()
+            .map(|n| {
+                let info = normal_info(n);
+                uv_transforms[4] = info.transform.unwrap_or(UV_IDENTITY);
+                self.slot(ctx, (m, &named), Slot::Normal, info, warnings)
             })
             .transpose()?;
         let occlusion_strength = json
@@ -191,7 +184,11 @@ impl Materials {
             emissive_texture,
             occlusion_texture,
             occlusion_strength,
+            normal_texture,
+            normal_scale: json.normal_texture.as_ref().map_or(1.0, |n| n.scale),
             uv_transforms,
+            uv_sets,
+            vertex_colors: has_vertex_colors(ctx.root, Some(m)),
             base_color_transformed,
             alpha_mode,
             alpha_cutoff: json.alpha_cutoff.map_or(0.5, |c| c.0),
@@ -210,10 +207,10 @@ impl Materials {
         warnings: &mut Vec<String>,
     ) -> Result<usize, AssetError> {
         let what = slot.describe();
-        if info.tex_coord != 0 {
+        if info.tex_coord > 1 {
             warnings.push(format!(
-                "{named}: its {what} texture uses TEXCOORD_{}, sampled with TEXCOORD_0 (only one \
-                 uv set is imported)",
+                "{named}: its {what} texture uses TEXCOORD_{}, sampled with TEXCOORD_0 (uv sets 0 \
+                 and 1 are imported)",
                 info.tex_coord
             ));
         }
@@ -239,8 +236,12 @@ impl Materials {
             Slot::MetallicRoughness => other(TextureSlot::MetallicRoughness),
             Slot::Emissive => other(TextureSlot::Emissive),
             Slot::Occlusion => other(TextureSlot::Occlusion),
+            Slot::Normal => other(TextureSlot::Normal),
         };
-        let linear = matches!(slot, Slot::MetallicRoughness | Slot::Occlusion);
+        let linear = matches!(
+            slot,
+            Slot::MetallicRoughness | Slot::Occlusion | Slot::Normal
+        );
         self.texture(ctx, (image, sampler, linear), warnings)
             .map_err(|e| match e {
                 // Name the material too: that is what the user knows the texture by.
@@ -332,6 +333,7 @@ enum Slot {
     MetallicRoughness,
     Emissive,
     Occlusion,
+    Normal,
 }
 
 impl Slot {
@@ -341,6 +343,7 @@ impl Slot {
             Self::MetallicRoughness => "metallic-roughness",
             Self::Emissive => "emissive",
             Self::Occlusion => "occlusion",
+            Self::Normal => "normal",
         }
     }
 }
@@ -352,6 +355,103 @@ struct SlotInfo {
     tex_coord: u32,
     /// Its `KHR_texture_transform`, if any.
     transform: Option<UvTransform>,
+}
+
+/// What the primitives of a material need besides positions, normals and `TEXCOORD_0`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(super) struct AttributeNeeds {
+    /// Some texture reads uv set 1.
+    pub uv1: bool,
+    /// The uv set of its normal texture, when it has one (tangents are then needed).
+    pub normal_uv: Option<u32>,
+}
+
+/// What primitives with glTF material `material` (`None`: the default material) need.
+pub(super) fn attribute_needs(ctx: &Ctx<'_>, material: Option<usize>) -> AttributeNeeds {
+    let Some(json) = material.and_then(|m| ctx.root.materials.get(m)) else {
+        return AttributeNeeds::default();
+    };
+    let sets = slot_uv_sets(json);
+    AttributeNeeds {
+        uv1: sets.contains(&1),
+        normal_uv: json
+            .normal_texture
+            .as_ref()
+            .map(|n| normal_info(n).tex_coord.min(1)),
+    }
+}
+
+/// The uv set of each texture of `json` in the order of `GltfMaterial::uv_transforms` (a missing
+/// texture reads set 0; sets past 1 count as 0, as they are sampled).
+fn slot_uv_sets(json: &json::Material) -> [u32; 5] {
+    let pbr = &json.pbr_metallic_roughness;
+    let of = |i: Option<&json::texture::Info>| i.map_or(0, |i| texture_info(i).tex_coord);
+    let occlusion = json
+        .occlusion_texture
+        .as_ref()
+        .map_or(0, |o| occlusion_info(o).tex_coord);
+    let normal = json
+        .normal_texture
+        .as_ref()
+        .map_or(0, |n| normal_info(n).tex_coord);
+    [
+        of(pbr.base_color_texture.as_ref()),
+        of(pbr.metallic_roughness_texture.as_ref()),
+        of(json.emissive_texture.as_ref()),
+        occlusion,
+        normal,
+    ]
+    .map(|s| if s == 1 { 1 } else { 0 })
+}
+
+/// Whether a primitive of some mesh of `root` with material `material` (`None`: the default
+/// material) has `COLOR_0` (the link step decides the same way).
+pub(super) fn has_vertex_colors(root: &json::Root, material: Option<usize>) -> bool {
+    root.meshes.iter().flat_map(|m| &m.primitives).any(|p| {
+        p.material.map(|i| i.value()) == material
+            && p.attributes
+                .contains_key(&Checked::Valid(json::mesh::Semantic::Colors(0)))
+    })
+}
+
+fn occlusion_info(o: &json::material::OcclusionTexture) -> SlotInfo {
+    let transform = o
+        .extensions
+        .as_ref()
+        .and_then(|e| e.others.get("KHR_texture_transform"))
+        .and_then(|v| {
+            serde_json::from_value::<json::extensions::texture::TextureTransform>(v.clone()).ok()
+        });
+    SlotInfo {
+        texture: o.index.value(),
+        tex_coord: transform
+            .as_ref()
+            .and_then(|t| t.tex_coord)
+            .unwrap_or(o.tex_coord),
+        transform: transform
+            .as_ref()
+            .map(|t| uv_transform(t.offset.0, t.rotation.0, t.scale.0)),
+    }
+}
+
+fn normal_info(n: &json::material::NormalTexture) -> SlotInfo {
+    let transform = n
+        .extensions
+        .as_ref()
+        .and_then(|e| e.others.get("KHR_texture_transform"))
+        .and_then(|v| {
+            serde_json::from_value::<json::extensions::texture::TextureTransform>(v.clone()).ok()
+        });
+    SlotInfo {
+        texture: n.index.value(),
+        tex_coord: transform
+            .as_ref()
+            .and_then(|t| t.tex_coord)
+            .unwrap_or(n.tex_coord),
+        transform: transform
+            .as_ref()
+            .map(|t| uv_transform(t.offset.0, t.rotation.0, t.scale.0)),
+    }
 }
 
 fn texture_info(info: &json::texture::Info) -> SlotInfo {

@@ -171,9 +171,19 @@ pub struct GltfMaterial {
     pub occlusion_texture: Option<usize>,
     /// How much the occlusion image darkens: `1 + strength (red - 1)`.
     pub occlusion_strength: f32,
+    /// Index into [`ModelScene::textures`] of the tangent-space normal image (linear).
+    pub normal_texture: Option<usize>,
+    /// The normal texture's `scale` (multiplies the x and y of the tangent-space normal).
+    pub normal_scale: f32,
     /// The `KHR_texture_transform` of each texture: base colour, metallic-roughness, emissive,
-    /// occlusion, in that order ([`UV_IDENTITY`] without one).
-    pub uv_transforms: [UvTransform; 4],
+    /// occlusion, normal, in that order ([`UV_IDENTITY`] without one).
+    pub uv_transforms: [UvTransform; 5],
+    /// Which textures read uv set 1 (`TEXCOORD_1`): bit `k` for texture `k` in the order of
+    /// `uv_transforms`; the others read set 0.
+    pub uv_sets: u32,
+    /// Whether a primitive that uses it has `COLOR_0` vertex colours (multiplying the base
+    /// colour and alpha; a mesh without them counts as white).
+    pub vertex_colors: bool,
     /// Whether its base-colour texture has a `KHR_texture_transform` (even the identity).
     pub base_color_transformed: bool,
     /// How alpha is used.
@@ -194,6 +204,13 @@ impl GltfMaterial {
             || self.occlusion_texture.is_some()
             || self.base_color_transformed
     }
+
+    /// Whether it needs `GltfDetailMaterial` (or `GltfMaskedDetailMaterial`): a normal texture,
+    /// a texture on uv set 1, or vertex colours, which need the per-vertex data only such
+    /// materials read; decided as the link step's `is_detailed` decides from the JSON.
+    pub fn is_detailed(&self) -> bool {
+        self.normal_texture.is_some() || self.uv_sets != 0 || self.vertex_colors
+    }
 }
 
 impl Default for GltfMaterial {
@@ -211,7 +228,11 @@ impl Default for GltfMaterial {
             emissive_texture: None,
             occlusion_texture: None,
             occlusion_strength: 1.0,
-            uv_transforms: [UV_IDENTITY; 4],
+            normal_texture: None,
+            normal_scale: 1.0,
+            uv_transforms: [UV_IDENTITY; 5],
+            uv_sets: 0,
+            vertex_colors: false,
             base_color_transformed: false,
             alpha_mode: AlphaMode::Opaque,
             alpha_cutoff: 0.5,

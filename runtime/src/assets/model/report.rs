@@ -36,6 +36,17 @@ pub fn report(name: &str, scene: &ModelScene) -> String {
         if mesh.uvs.is_some() {
             attributes.push("uvs");
         }
+        if let Some(x) = &mesh.extras {
+            if x.uvs1.is_some() {
+                attributes.push("second uvs");
+            }
+            if x.colors.is_some() {
+                attributes.push("colours");
+            }
+            if x.tangents.is_some() {
+                attributes.push("tangents");
+            }
+        }
         let nodes: Vec<String> = scene
             .instances
             .iter()
@@ -55,16 +66,26 @@ pub fn report(name: &str, scene: &ModelScene) -> String {
     let _ = writeln!(out, "  materials: {}", scene.materials.len());
     for (i, m) in scene.materials.iter().enumerate() {
         let label = scene.material_labels.get(i).map_or("?", String::as_str);
-        let texture = textures_of(m)
+        let mut texture = textures_of(m)
             .into_iter()
-            .filter_map(|(what, t)| {
+            .enumerate()
+            .filter_map(|(k, (what, t))| {
                 let t = scene.textures.get(t?)?;
+                let set = (m.uv_sets >> k) & 1;
+                let scale = if k == 4 {
+                    format!(" scale {:.3}", m.normal_scale)
+                } else {
+                    String::new()
+                };
                 Some(format!(
-                    ", {what} texture {}×{} (TEXCOORD_0)",
+                    ", {what} texture {}×{} (TEXCOORD_{set}){scale}",
                     t.width, t.height
                 ))
             })
             .collect::<String>();
+        if m.vertex_colors {
+            texture.push_str(", times COLOR_0");
+        }
         let alpha = match m.alpha_mode {
             AlphaMode::Opaque => "OPAQUE".to_owned(),
             AlphaMode::Mask => format!("MASK below {:.3}", m.alpha_cutoff),
@@ -204,6 +225,7 @@ fn textures_of(m: &GltfMaterial) -> Vec<(&'static str, Option<usize>)> {
         ("metallic-roughness", m.metallic_roughness_texture),
         ("emissive", m.emissive_texture),
         ("occlusion", m.occlusion_texture),
+        ("normal", m.normal_texture),
     ]
 }
 

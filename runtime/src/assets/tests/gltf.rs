@@ -277,21 +277,105 @@ fn material_with_external_base_color_texture() {
         (m.alpha_mode, m.alpha_cutoff, m.double_sided),
         (AlphaMode::Mask, 0.3, true)
     );
-    assert_eq!(scene.textures.len(), 1);
+    assert_eq!(
+        scene.textures.len(),
+        2,
+        "base colour (sRGB), normal (linear)"
+    );
     assert_eq!((scene.textures[0].width, scene.textures[0].height), (2, 1));
     assert_eq!(scene.textures[0].words, SMALL_PNG_WORDS);
+    // The normal texture and the vertex colours are imported now: no warning names them.
     assert!(
-        scene.warnings.iter().any(|w| w.contains("normal texture")),
+        !scene
+            .warnings
+            .iter()
+            .any(|w| w.contains("not imported") || w.contains("COLOR_0")),
         "{:?}",
         scene.warnings
     );
+    assert_eq!(m.normal_texture, Some(1), "the image again, as linear data");
+    assert!(m.vertex_colors && m.is_detailed());
+    let extras = scene.meshes[0]
+        .extras
+        .as_ref()
+        .expect("colours and tangents");
+    assert_eq!(
+        extras.colors.as_deref(),
+        Some(
+            &[
+                [1.0, 0.0, 0.0, 1.0],
+                [0.0, 1.0, 0.0, 1.0],
+                [0.0, 0.0, 1.0, 1.0]
+            ][..]
+        )
+    );
+    // MikkTSpace from TEXCOORD_0 (u along +x, v along +y, so with v flipped the bitangent is
+    // -y: w = -1).
+    let tangents = extras.tangents.as_ref().expect("generated tangents");
+    for t in tangents.iter().flatten() {
+        assert!((t[0] - 1.0).abs() < 1e-5 && t[1].abs() < 1e-5, "{t:?}");
+        assert_eq!(t[3], -1.0, "{t:?}");
+    }
+    // The primitive without uvs gets no tangents to generate from, said in a warning.
     assert!(
-        scene.warnings.iter().any(|w| w.contains(
-            "meshes[0].primitives[0]: its COLOR_0 vertex colours are not imported (the base \
-             colour of materials[0]"
-        )),
+        scene
+            .warnings
+            .iter()
+            .any(|w| w.contains("meshes[0].primitives[1]: no TANGENT and no TEXCOORD_0")),
         "{:?}",
         scene.warnings
+    );
+}
+
+#[test]
+fn extra_attributes_of_the_wrong_type_are_dropped_with_a_warning() {
+    let dir = TempDir::new("gltf");
+    let (b, pos, idx) = triangle();
+    let mut b = b;
+    let uv = b.vec2(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]);
+    // COLOR_0 as VEC2, TANGENT as VEC3, TEXCOORD_1 as VEC3: each ignored with a warning.
+    let bad2 = b.vec2(&[[1.0, 0.0], [0.0, 1.0], [0.0, 0.0]]);
+    let bad3 = b.vec3(&[[1.0, 0.0, 0.0]; 3]);
+    let path = b.write_gltf(
+        &dir,
+        "bad",
+        json!({
+            "meshes": [{ "primitives": [
+                { "attributes": { "POSITION": pos, "TEXCOORD_0": uv, "COLOR_0": bad2,
+                                  "TANGENT": bad3, "TEXCOORD_1": bad3, "COLOR_1": bad3 },
+                  "indices": idx, "material": 0 },
+            ] }],
+            "materials": [{
+                "pbrMetallicRoughness": { "baseColorTexture": { "index": 0, "texCoord": 1 } },
+                "normalTexture": { "index": 0 },
+                "occlusionTexture": { "index": 0, "texCoord": 2 },
+            }],
+            "textures": [{ "source": 0 }],
+            "images": [{ "uri": "t.png" }],
+            "nodes": [{ "mesh": 0 }],
+            "scenes": [{ "nodes": [0] }],
+        }),
+    );
+    dir.write("t.png", small_png());
+    let scene = load_gltf(&path).unwrap();
+    let warnings = scene.warnings.join("\n");
+    for want in [
+        "meshes[0].primitives[0]: its COLOR_0 is ignored",
+        "meshes[0].primitives[0]: its TANGENT is ignored",
+        "meshes[0].primitives[0]: its TEXCOORD_1 is ignored",
+        "meshes[0].primitives[0]: its material samples a texture with TEXCOORD_1, which the \
+         primitive lacks",
+        "meshes[0].primitives[0]: COLOR_1 not imported",
+        "materials[0]: its occlusion texture uses TEXCOORD_2, sampled with TEXCOORD_0",
+    ] {
+        assert!(warnings.contains(want), "{want:?} not in:\n{warnings}");
+    }
+    let extras = scene.meshes[0].extras.as_ref().expect("tangents generated");
+    assert!(extras.colors.is_none() && extras.uvs1.is_none());
+    assert!(extras.tangents.is_some(), "MikkTSpace from TEXCOORD_0");
+    assert_eq!(
+        scene.materials[0].uv_sets, 1,
+        "the base colour texture on set 1"
     );
 }
 
@@ -363,13 +447,19 @@ fn every_core_texture_with_its_sampler_and_what_is_not_imported_named() {
         ["images[0]", "images[0]~clamp,mirror,nearest~linear"]
     );
     let warnings = scene.warnings.join("\n");
-    for want in [
-        "materials[0] (`helmet`): its normal texture is not imported",
-        "materials[0] (`helmet`): its metallic-roughness texture uses TEXCOORD_1, sampled with TEXCOORD_0",
-        "materials[0] (`helmet`): its occlusion texture uses TEXCOORD_1",
-    ] {
-        assert!(warnings.contains(want), "{want:?} not in:\n{warnings}");
+    // The normal texture and uv set 1 are imported: no warning says otherwise; the file's
+    // primitive lacks TEXCOORD_1, which is said.
+    for gone in ["normal texture", "sampled with TEXCOORD_0"] {
+        assert!(!warnings.contains(gone), "{gone:?} in:\n{warnings}");
     }
+    assert!(
+        warnings.contains("samples a texture with TEXCOORD_1, which the primitive lacks"),
+        "{warnings}"
+    );
+    assert_eq!(
+        m.uv_sets, 0b1010,
+        "metallic-roughness and occlusion on set 1"
+    );
     assert!(!warnings.contains("KHR_texture_transform"), "{warnings}");
     // KHR_texture_transform: u' = cos·sx·u − sin·sy·v + ox, v' = sin·sx·u + cos·sy·v + oy; at a
     // quarter turn with scale (2, 3), offset (0.5, 0.25): u' = −3v + 0.5, v' = 2u + 0.25.
