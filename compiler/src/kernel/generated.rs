@@ -412,6 +412,7 @@ pub fn config_module_with(c: &KernelConfig, debug: Option<super::DebugMode>) -> 
         ("HAS_MESHES", c.has_meshes),
         ("HAS_MEDIA", c.has_media),
         ("HAS_BACKGROUND", c.has_background),
+        ("CULL_BACK_FACES", c.cull_back_faces),
         ("DEBUG", debug.is_some()),
         ("DEBUG_COUNTS", debug == Some(DebugMode::Counts)),
         ("DEBUG_RAY_ORIGIN", debug == Some(DebugMode::RayOrigin)),

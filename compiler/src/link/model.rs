@@ -52,11 +52,15 @@ pub enum ModelPart {
     SpotLight,
     /// A perspective camera (used only when the scene has no `camera` entry).
     PerspectiveCamera,
+    /// An `OPAQUE` material with `doubleSided: false` (glTF's default material among them): its
+    /// objects cull back faces in traversal (`KernelConfig::cull_back_faces`). Not a type: it
+    /// switches a kernel feature on.
+    SingleSidedMaterial,
 }
 
 impl ModelPart {
     /// Every part, in order.
-    pub const ALL: [ModelPart; 8] = [
+    pub const ALL: [ModelPart; 9] = [
         ModelPart::OpaqueMaterial,
         ModelPart::MappedMaterial,
         ModelPart::MaskedMaterial,
@@ -65,6 +69,7 @@ impl ModelPart {
         ModelPart::DirectionalLight,
         ModelPart::SpotLight,
         ModelPart::PerspectiveCamera,
+        ModelPart::SingleSidedMaterial,
     ];
 
     /// How `manifest.json` names it.
@@ -80,6 +85,7 @@ impl ModelPart {
             ModelPart::DirectionalLight => "directional light",
             ModelPart::SpotLight => "spot light",
             ModelPart::PerspectiveCamera => "perspective camera",
+            ModelPart::SingleSidedMaterial => "single-sided opaque material",
         }
     }
 }
@@ -278,6 +284,16 @@ pub fn parts_of_root(root: &json::Root) -> BTreeSet<ModelPart> {
             _ if material.is_some_and(is_mapped) => ModelPart::MappedMaterial,
             _ => ModelPart::OpaqueMaterial,
         });
+        let opaque = !matches!(
+            material.map(|m| m.alpha_mode),
+            Some(Checked::Valid(
+                json::material::AlphaMode::Mask | json::material::AlphaMode::Blend
+            ))
+        );
+        // glTF's default material (no `material`) is single-sided too.
+        if opaque && !material.is_some_and(|m| m.double_sided) {
+            parts.insert(ModelPart::SingleSidedMaterial);
+        }
     }
     let lights = root
         .extensions
@@ -355,7 +371,8 @@ mod tests {
                 ModelPart::MaskedMaterial,
                 ModelPart::PointLight,
                 ModelPart::SpotLight,
-                ModelPart::PerspectiveCamera
+                ModelPart::PerspectiveCamera,
+                ModelPart::SingleSidedMaterial
             ]
         );
     }
@@ -374,7 +391,11 @@ mod tests {
         );
         assert_eq!(
             parts(&text),
-            [ModelPart::OpaqueMaterial, ModelPart::MappedMaterial]
+            [
+                ModelPart::OpaqueMaterial,
+                ModelPart::MappedMaterial,
+                ModelPart::SingleSidedMaterial
+            ]
         );
     }
 
@@ -393,7 +414,11 @@ mod tests {
             r#"{{ {ASSET}, "materials": [{{"alphaMode": "MASK"}}],
             "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}}}]}}] }}"#
         );
-        assert_eq!(parts(&text), [ModelPart::OpaqueMaterial]);
+        // glTF's default material is opaque and single-sided.
+        assert_eq!(
+            parts(&text),
+            [ModelPart::OpaqueMaterial, ModelPart::SingleSidedMaterial]
+        );
         assert_eq!(parts(&format!("{{ {ASSET} }}")), []);
     }
 
