@@ -56,11 +56,14 @@ pub enum ModelPart {
     /// objects cull back faces in traversal (`KernelConfig::cull_back_faces`). Not a type: it
     /// switches a kernel feature on.
     SingleSidedMaterial,
+    /// An `OPAQUE` material with `KHR_materials_transmission` (factor above 0): a
+    /// `GltfTransmissiveMaterial`, which spawns a reflected or refracted ray.
+    TransmissiveMaterial,
 }
 
 impl ModelPart {
     /// Every part, in order.
-    pub const ALL: [ModelPart; 9] = [
+    pub const ALL: [ModelPart; 10] = [
         ModelPart::OpaqueMaterial,
         ModelPart::MappedMaterial,
         ModelPart::MaskedMaterial,
@@ -70,6 +73,7 @@ impl ModelPart {
         ModelPart::SpotLight,
         ModelPart::PerspectiveCamera,
         ModelPart::SingleSidedMaterial,
+        ModelPart::TransmissiveMaterial,
     ];
 
     /// How `manifest.json` names it.
@@ -86,6 +90,7 @@ impl ModelPart {
             ModelPart::SpotLight => "spot light",
             ModelPart::PerspectiveCamera => "perspective camera",
             ModelPart::SingleSidedMaterial => "single-sided opaque material",
+            ModelPart::TransmissiveMaterial => "transmissive material",
         }
     }
 }
@@ -125,6 +130,11 @@ pub const MODEL_TYPES: &[ModelType] = &[
         module: "std/materials/gltf.rt",
         name: "GltfMaskedMappedMaterial",
         part: ModelPart::MaskedMappedMaterial,
+    },
+    ModelType {
+        module: "std/materials/gltf_transmission.rt",
+        name: "GltfTransmissiveMaterial",
+        part: ModelPart::TransmissiveMaterial,
     },
     ModelType {
         module: "std/lights/point.rt",
@@ -267,6 +277,15 @@ pub fn is_mapped(m: &json::Material) -> bool {
             .is_some_and(|t| transformed(t.extensions.as_ref()))
 }
 
+/// Whether an `OPAQUE` material is a `GltfTransmissiveMaterial`: its `KHR_materials_transmission`
+/// factor is above 0 (the runtime's `GltfMaterial::transmission` decides alike).
+pub fn is_transmissive(m: &json::Material) -> bool {
+    m.extensions
+        .as_ref()
+        .and_then(|e| e.transmission.as_ref())
+        .is_some_and(|t| t.transmission_factor.0 > 0.0)
+}
+
 /// The parts a parsed glTF document holds (see the module docs for what counts).
 pub fn parts_of_root(root: &json::Root) -> BTreeSet<ModelPart> {
     let mut parts = BTreeSet::new();
@@ -281,6 +300,7 @@ pub fn parts_of_root(root: &json::Root) -> BTreeSet<ModelPart> {
             Some(Checked::Valid(
                 json::material::AlphaMode::Mask | json::material::AlphaMode::Blend,
             )) => ModelPart::MaskedMaterial,
+            _ if material.is_some_and(is_transmissive) => ModelPart::TransmissiveMaterial,
             _ if material.is_some_and(is_mapped) => ModelPart::MappedMaterial,
             _ => ModelPart::OpaqueMaterial,
         });
@@ -290,8 +310,12 @@ pub fn parts_of_root(root: &json::Root) -> BTreeSet<ModelPart> {
                 json::material::AlphaMode::Mask | json::material::AlphaMode::Blend
             ))
         );
-        // glTF's default material (no `material`) is single-sided too.
-        if opaque && !material.is_some_and(|m| m.double_sided) {
+        // glTF's default material (no `material`) is single-sided too. A transmissive material
+        // is never culled: its refracted rays leave through the back faces.
+        if opaque
+            && !material.is_some_and(|m| m.double_sided)
+            && !material.is_some_and(is_transmissive)
+        {
             parts.insert(ModelPart::SingleSidedMaterial);
         }
     }
@@ -406,6 +430,23 @@ mod tests {
             "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}, "material": 0}}]}}] }}"#
         );
         assert_eq!(parts(&text), [ModelPart::MaskedMaterial]);
+    }
+
+    #[test]
+    fn a_transmissive_material_is_its_own_part_and_never_culled() {
+        let text = format!(
+            r#"{{ {ASSET}, "materials": [
+                {{"extensions": {{"KHR_materials_transmission": {{"transmissionFactor": 1.0}},
+                                 "KHR_materials_ior": {{"ior": 1.33}}}}}},
+                {{"extensions": {{"KHR_materials_transmission": {{"transmissionFactor": 0.0}}}},
+                  "doubleSided": true}}],
+            "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}, "material": 0}},
+                                        {{"attributes": {{"POSITION": 0}}, "material": 1}}]}}] }}"#
+        );
+        assert_eq!(
+            parts(&text),
+            [ModelPart::OpaqueMaterial, ModelPart::TransmissiveMaterial]
+        );
     }
 
     #[test]

@@ -311,6 +311,11 @@ fn import_one(
                     "GltfMaskedMaterial"
                 }
             }
+            AlphaMode::Opaque if m.transmission > 0.0 => {
+                fields.push(("transmission", f32_value(m.transmission)));
+                fields.push(("ior", f32_value(m.ior)));
+                "GltfTransmissiveMaterial"
+            }
             AlphaMode::Opaque => {
                 // The fields it lacks (other textures, transforms) are left out by `instance`.
                 if m.is_mapped() {
@@ -321,7 +326,7 @@ fn import_one(
             }
         };
         materials.push(instance(types, name, kind, span, &fields)?);
-        culls.push(m.alpha_mode == AlphaMode::Opaque && !m.double_sided);
+        culls.push(m.alpha_mode == AlphaMode::Opaque && !m.double_sided && m.transmission <= 0.0);
     }
     for inst in &data.instances {
         let (Some(&mesh), Some(material)) = (meshes.get(inst.mesh), materials.get(inst.material))
