@@ -187,11 +187,10 @@ fn single_sided_opaque_objects_cull_back_faces_for_camera_and_shadow_rays() {
             top[0].2, 0.0,
             "{name}: a back face is invisible to the camera"
         );
-        for k in 1..4 {
+        for (k, cell) in top.iter().enumerate().skip(1) {
             assert!(
-                top[k].1 >= 1.0 - 1e-5,
-                "{name}: occluder {k} visible: {:?}",
-                top[k]
+                cell.1 >= 1.0 - 1e-5,
+                "{name}: occluder {k} visible: {cell:?}"
             );
         }
         assert_eq!(
