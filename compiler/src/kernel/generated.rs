@@ -422,6 +422,7 @@ pub fn config_module_with(c: &KernelConfig, debug: Option<super::DebugMode>) -> 
         ("HAS_VERTEX_EXTRAS", c.has_vertex_extras),
         ("HAS_MEDIA", c.has_media),
         ("HAS_BACKGROUND", c.has_background),
+        ("CULL_BACK_FACES", c.cull_back_faces),
         ("DEBUG", debug.is_some()),
         ("DEBUG_COUNTS", debug == Some(DebugMode::Counts)),
         ("DEBUG_RAY_ORIGIN", debug == Some(DebugMode::RayOrigin)),

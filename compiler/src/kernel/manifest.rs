@@ -346,6 +346,7 @@ pub fn manifest_json(c: &CompiledScene) -> String {
         ("has_meshes", cfg.has_meshes),
         ("has_media", cfg.has_media),
         ("has_background", cfg.has_background),
+        ("cull_back_faces", cfg.cull_back_faces),
     ] {
         constants.insert(k, serde_json::json!(v));
     }

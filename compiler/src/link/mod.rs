@@ -98,6 +98,10 @@ pub struct KernelConfig {
     pub has_media: bool,
     /// The scene has a background.
     pub has_background: bool,
+    /// Some object may cull back faces in traversal (`GpuInstance` `FLAG_CULL_BACK` /
+    /// `FLAG_CULL_FRONT`): a model file of the scene holds an opaque single-sided material
+    /// ([`ModelPart::SingleSidedMaterial`]).
+    pub cull_back_faces: bool,
 }
 
 impl KernelConfig {
@@ -119,6 +123,7 @@ impl KernelConfig {
             has_vertex_extras: true,
             has_media: true,
             has_background: true,
+            cull_back_faces: true,
         }
     }
 }
@@ -389,6 +394,10 @@ pub fn link_again(
             || options.all_programs,
         has_media,
         has_background: desc.background.is_some() || options.all_programs,
+        cull_back_faces: models
+            .iter()
+            .any(|m| m.read.brings(ModelPart::SingleSidedMaterial))
+            || options.all_programs,
     };
 
     let mut left_out = Vec::new();
@@ -435,6 +444,11 @@ pub fn link_again(
             config.has_background,
             "background",
             "the scene has no background: misses are black",
+        ),
+        (
+            config.cull_back_faces || desc.models.is_empty(),
+            "back-face culling",
+            "no model file of the scene holds an opaque single-sided material",
         ),
     ];
     for (on, name, why) in features {

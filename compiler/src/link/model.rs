@@ -58,11 +58,18 @@ pub enum ModelPart {
     SpotLight,
     /// A perspective camera (used only when the scene has no `camera` entry).
     PerspectiveCamera,
+    /// An `OPAQUE` material with `doubleSided: false` (glTF's default material among them): its
+    /// objects cull back faces in traversal (`KernelConfig::cull_back_faces`). Not a type: it
+    /// switches a kernel feature on.
+    SingleSidedMaterial,
+    /// An `OPAQUE` material with `KHR_materials_transmission` (factor above 0): a
+    /// `GltfTransmissiveMaterial`, which spawns a reflected or refracted ray.
+    TransmissiveMaterial,
 }
 
 impl ModelPart {
     /// Every part, in order.
-    pub const ALL: [ModelPart; 10] = [
+    pub const ALL: [ModelPart; 12] = [
         ModelPart::OpaqueMaterial,
         ModelPart::MappedMaterial,
         ModelPart::MaskedMaterial,
@@ -73,6 +80,8 @@ impl ModelPart {
         ModelPart::DirectionalLight,
         ModelPart::SpotLight,
         ModelPart::PerspectiveCamera,
+        ModelPart::SingleSidedMaterial,
+        ModelPart::TransmissiveMaterial,
     ];
 
     /// How `manifest.json` names it.
@@ -94,6 +103,8 @@ impl ModelPart {
             ModelPart::DirectionalLight => "directional light",
             ModelPart::SpotLight => "spot light",
             ModelPart::PerspectiveCamera => "perspective camera",
+            ModelPart::SingleSidedMaterial => "single-sided opaque material",
+            ModelPart::TransmissiveMaterial => "transmissive material",
         }
     }
 }
@@ -143,6 +154,11 @@ pub const MODEL_TYPES: &[ModelType] = &[
         module: "std/materials/gltf.rt",
         name: "GltfMaskedDetailMaterial",
         part: ModelPart::MaskedDetailMaterial,
+    },
+    ModelType {
+        module: "std/materials/gltf_transmission.rt",
+        name: "GltfTransmissiveMaterial",
+        part: ModelPart::TransmissiveMaterial,
     },
     ModelType {
         module: "std/lights/point.rt",
@@ -362,6 +378,15 @@ pub fn is_detailed(root: &json::Root, index: Option<usize>, m: Option<&json::Mat
             .is_some_and(|n| normal_set(n) == 1)
 }
 
+/// Whether an `OPAQUE` material is a `GltfTransmissiveMaterial`: its `KHR_materials_transmission`
+/// factor is above 0 (the runtime's `GltfMaterial::transmission` decides alike).
+pub fn is_transmissive(m: &json::Material) -> bool {
+    m.extensions
+        .as_ref()
+        .and_then(|e| e.transmission.as_ref())
+        .is_some_and(|t| t.transmission_factor.0 > 0.0)
+}
+
 /// The parts a parsed glTF document holds (see the module docs for what counts).
 pub fn parts_of_root(root: &json::Root) -> BTreeSet<ModelPart> {
     let mut parts = BTreeSet::new();
@@ -374,24 +399,31 @@ pub fn parts_of_root(root: &json::Root) -> BTreeSet<ModelPart> {
                 json::material::AlphaMode::Mask | json::material::AlphaMode::Blend
             ))
         );
-        if is_detailed(root, index, material) {
-            parts.insert(if masked {
+        // A transmissive material takes precedence over a detailed one (its dielectric has no
+        // normal map), as in the runtime's import (`runtime/src/scene/models.rs`).
+        let transmissive = !masked && material.is_some_and(is_transmissive);
+        parts.insert(if transmissive {
+            ModelPart::TransmissiveMaterial
+        } else if is_detailed(root, index, material) {
+            if masked {
                 ModelPart::MaskedDetailMaterial
             } else {
                 ModelPart::DetailMaterial
-            });
-            continue;
-        }
-        parts.insert(match material.map(|m| m.alpha_mode) {
-            Some(Checked::Valid(
-                json::material::AlphaMode::Mask | json::material::AlphaMode::Blend,
-            )) if material.is_some_and(is_mapped) => ModelPart::MaskedMappedMaterial,
-            Some(Checked::Valid(
-                json::material::AlphaMode::Mask | json::material::AlphaMode::Blend,
-            )) => ModelPart::MaskedMaterial,
-            _ if material.is_some_and(is_mapped) => ModelPart::MappedMaterial,
-            _ => ModelPart::OpaqueMaterial,
+            }
+        } else if masked && material.is_some_and(is_mapped) {
+            ModelPart::MaskedMappedMaterial
+        } else if masked {
+            ModelPart::MaskedMaterial
+        } else if material.is_some_and(is_mapped) {
+            ModelPart::MappedMaterial
+        } else {
+            ModelPart::OpaqueMaterial
         });
+        // glTF's default material (no `material`) is single-sided too. A transmissive material
+        // is never culled: its refracted rays leave through the back faces.
+        if !masked && !transmissive && !material.is_some_and(|m| m.double_sided) {
+            parts.insert(ModelPart::SingleSidedMaterial);
+        }
     }
     let lights = root
         .extensions
@@ -469,7 +501,8 @@ mod tests {
                 ModelPart::MaskedMaterial,
                 ModelPart::PointLight,
                 ModelPart::SpotLight,
-                ModelPart::PerspectiveCamera
+                ModelPart::PerspectiveCamera,
+                ModelPart::SingleSidedMaterial
             ]
         );
     }
@@ -488,7 +521,11 @@ mod tests {
         );
         assert_eq!(
             parts(&text),
-            [ModelPart::OpaqueMaterial, ModelPart::MappedMaterial]
+            [
+                ModelPart::OpaqueMaterial,
+                ModelPart::MappedMaterial,
+                ModelPart::SingleSidedMaterial
+            ]
         );
     }
 
@@ -502,12 +539,33 @@ mod tests {
     }
 
     #[test]
+    fn a_transmissive_material_is_its_own_part_and_never_culled() {
+        let text = format!(
+            r#"{{ {ASSET}, "materials": [
+                {{"extensions": {{"KHR_materials_transmission": {{"transmissionFactor": 1.0}},
+                                 "KHR_materials_ior": {{"ior": 1.33}}}}}},
+                {{"extensions": {{"KHR_materials_transmission": {{"transmissionFactor": 0.0}}}},
+                  "doubleSided": true}}],
+            "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}, "material": 0}},
+                                        {{"attributes": {{"POSITION": 0}}, "material": 1}}]}}] }}"#
+        );
+        assert_eq!(
+            parts(&text),
+            [ModelPart::OpaqueMaterial, ModelPart::TransmissiveMaterial]
+        );
+    }
+
+    #[test]
     fn a_primitive_without_material_is_opaque_and_unused_materials_do_not_count() {
         let text = format!(
             r#"{{ {ASSET}, "materials": [{{"alphaMode": "MASK"}}],
             "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}}}]}}] }}"#
         );
-        assert_eq!(parts(&text), [ModelPart::OpaqueMaterial]);
+        // glTF's default material is opaque and single-sided.
+        assert_eq!(
+            parts(&text),
+            [ModelPart::OpaqueMaterial, ModelPart::SingleSidedMaterial]
+        );
         assert_eq!(parts(&format!("{{ {ASSET} }}")), []);
     }
 

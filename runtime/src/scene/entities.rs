@@ -659,7 +659,7 @@ impl Entities {
                 span: obj.span,
                 geometry: ObjectGeometry::Mesh { mesh: obj.mesh },
                 material: typed(&mut params, &obj.material)?,
-                flags: material_flags(linked, obj.material.struct_id),
+                flags: material_flags(linked, obj.material.struct_id) | obj.cull,
                 transform: obj.transform,
                 inverse,
             });

@@ -12,8 +12,12 @@
 //!   `GltfDetailMaterial` when it has a normal texture, a texture on uv set 1 or vertex colours,
 //!   `GltfMaskedMaterial` / `GltfMaskedMappedMaterial` / `GltfMaskedDetailMaterial` for
 //!   `alphaMode: MASK` (its `alpha_cutoff`) and `BLEND`
-//!   (`blend` 1: stochastic coverage), with `double_sided`; opaque single-sided materials are
-//!   not culled, which one warning per file names):
+//!   (`blend` 1: stochastic coverage), with `double_sided`; `GltfTransmissiveMaterial` for an
+//!   opaque material with `KHR_materials_transmission` (before the detailed one); the objects of
+//!   an opaque, non-transmissive single-sided material cull back faces in traversal instead
+//!   (`GpuInstance::FLAG_CULL_BACK`, or `FLAG_CULL_FRONT` when the node's transform mirrors, whose
+//!   winding glTF reverses; the side is that of the transform when the scene is built, so an
+//!   animation that turns a node inside out keeps the first side)):
 //!   base colour factor and texture, metallic and roughness factors and their texture, emissive
 //!   factor and texture, occlusion texture and strength (a texture the material lacks is
 //!   `solid_texture(vec4f(1.0))`). Each texture enters the cache under the path
@@ -64,6 +68,9 @@ pub(super) struct ModelObject {
     pub material: Instance,
     /// Object to world.
     pub transform: Mat4,
+    /// `GpuInstance::FLAG_CULL_BACK` or `FLAG_CULL_FRONT` for an opaque single-sided material
+    /// (front under a mirroring transform), else 0.
+    pub cull: u32,
 }
 
 /// Everything the scene's models bring.
@@ -263,7 +270,7 @@ fn import_one(
     );
 
     let mut materials = Vec::with_capacity(data.materials.len());
-    let mut single_sided = Vec::new();
+    let mut culls = Vec::with_capacity(data.materials.len());
     for m in &data.materials {
         // A texture the material lacks is white, which leaves its factor as it is.
         let texture = |t: Option<usize>| {
@@ -321,14 +328,12 @@ fn import_one(
                     "GltfMaskedMaterial"
                 }
             }
+            AlphaMode::Opaque if m.transmission > 0.0 => {
+                fields.push(("transmission", f32_value(m.transmission)));
+                fields.push(("ior", f32_value(m.ior)));
+                "GltfTransmissiveMaterial"
+            }
             AlphaMode::Opaque => {
-                if !m.double_sided {
-                    single_sided.push(match (m.index, &m.name) {
-                        (Some(i), Some(n)) => format!("materials[{i}] (`{n}`)"),
-                        (Some(i), None) => format!("materials[{i}]"),
-                        (None, _) => "the default material".to_owned(),
-                    });
-                }
                 // The fields it lacks (other textures, transforms) are left out by `instance`.
                 if detailed {
                     "GltfDetailMaterial"
@@ -340,16 +345,8 @@ fn import_one(
             }
         };
         materials.push(instance(types, name, kind, span, &fields)?);
+        culls.push(m.alpha_mode == AlphaMode::Opaque && !m.double_sided && m.transmission <= 0.0);
     }
-    if !single_sided.is_empty() {
-        parts.warnings.push(format!(
-            "{name}: opaque single-sided material(s) {} are hit on their back faces too \
-             (back-face culling is done only for MASK and BLEND materials, whose any-hit \
-             program it shares)",
-            single_sided.join(", ")
-        ));
-    }
-
     for inst in &data.instances {
         let (Some(&mesh), Some(material)) = (meshes.get(inst.mesh), materials.get(inst.material))
         else {
@@ -369,6 +366,10 @@ fn import_one(
             mesh,
             material: material.clone(),
             transform: entry * inst.transform,
+            cull: cull_flag(
+                culls.get(inst.material).copied().unwrap_or(false),
+                entry * inst.transform,
+            ),
         });
     }
 
@@ -444,4 +445,18 @@ fn import_one(
         }
     }
     Ok(())
+}
+
+/// The culling flag of an object with transform `transform` whose material is single-sided
+/// (`single_sided`): glTF's front face is counter-clockwise in world space, which is the
+/// object-space winding unless the transform mirrors (negative determinant).
+fn cull_flag(single_sided: bool, transform: Mat4) -> u32 {
+    use crate::scene::gpu_types::GpuInstance;
+    if !single_sided {
+        0
+    } else if transform.determinant() < 0.0 {
+        GpuInstance::FLAG_CULL_FRONT
+    } else {
+        GpuInstance::FLAG_CULL_BACK
+    }
 }

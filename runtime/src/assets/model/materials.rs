@@ -8,8 +8,9 @@
 //! colour, metallic-roughness, emissive, occlusion and normal textures, each with its sampler
 //! (wrap modes, magnification filter; see [`Sampler`] for why there is no minification filter),
 //! its `KHR_texture_transform` and its uv set (0 or 1); whether a primitive using the material
-//! has `COLOR_0`. Not imported, with a warning naming the material: uv sets past 1 (such a
-//! texture is sampled with set 0). An image
+//! has `COLOR_0`; `KHR_materials_transmission`'s factor and `KHR_materials_ior` (see
+//! `transmission` and `ior` below). Not imported, with a warning naming the material: uv sets
+//! past 1 (such a texture is sampled with set 0). An image
 //! file that cannot be read is [`AssetError::MissingFile`] naming the material, the texture and
 //! the image ([`GltfItem::BaseColorImage`], [`GltfItem::MaterialImage`]).
 
@@ -193,6 +194,8 @@ impl Materials {
             alpha_mode,
             alpha_cutoff: json.alpha_cutoff.map_or(0.5, |c| c.0),
             double_sided: json.double_sided,
+            transmission: transmission(json, &named, warnings),
+            ior: ior(json),
         })
     }
 
@@ -542,4 +545,64 @@ fn sampler(ctx: &Ctx<'_>, index: usize) -> Result<Sampler, AssetError> {
         wrap_v: wrap(&json.wrap_t),
         nearest,
     })
+}
+
+/// `KHR_materials_transmission`'s factor (clamped to 0..=1; 0 without the extension), warning
+/// about what of it is not imported: its texture, and transmission on a `MASK` or `BLEND`
+/// material (which stays masked or blended, without transmission).
+fn transmission(json: &json::Material, named: &str, warnings: &mut Vec<String>) -> f32 {
+    let Some(t) = json
+        .extensions
+        .as_ref()
+        .and_then(|e| e.transmission.as_ref())
+    else {
+        return 0.0;
+    };
+    let factor = t.transmission_factor.0;
+    let factor = if factor.is_finite() {
+        factor.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    if t.transmission_texture.is_some() {
+        warnings.push(format!(
+            "{named}: its transmission texture is not imported (the factor {factor:.3} applies \
+             everywhere)"
+        ));
+    }
+    if factor > 0.0
+        && !matches!(
+            json.alpha_mode,
+            Checked::Valid(json::material::AlphaMode::Opaque)
+        )
+    {
+        warnings.push(format!(
+            "{named}: KHR_materials_transmission is not imported on a MASK or BLEND material"
+        ));
+        return 0.0;
+    }
+    if factor > 0.0 {
+        warnings.push(format!(
+            "{named}: transmission {factor:.3} is a smooth dielectric mixed with the opaque \
+             shading (roughness shapes only the opaque part; a transmissive material is never \
+             back-face culled)"
+        ));
+    }
+    factor
+}
+
+/// `KHR_materials_ior`'s index, clamped to 1..=4 (1.5 without the extension or for a value that
+/// is not a finite number; glTF's 0, "fully reflective", becomes 4).
+fn ior(json: &json::Material) -> f32 {
+    let Some(ior) = json.extensions.as_ref().and_then(|e| e.ior.as_ref()) else {
+        return 1.5;
+    };
+    let v = ior.ior.0;
+    if !v.is_finite() {
+        1.5
+    } else if v == 0.0 {
+        4.0
+    } else {
+        v.clamp(1.0, 4.0)
+    }
 }

@@ -29,7 +29,8 @@
 //! - One [`MeshData`] per *used* glTF primitive of mode `TRIANGLES`, converted once however many
 //!   nodes use it: instancing is [`MeshInstance`]s sharing a `mesh` index. Other modes, morph
 //!   targets, skins, animations after the first and extensions other than `KHR_lights_punctual`,
-//!   `KHR_materials_emissive_strength` and `KHR_texture_transform` are skipped with a warning
+//!   `KHR_materials_emissive_strength`, `KHR_materials_ior`, `KHR_materials_transmission` and
+//!   `KHR_texture_transform` are skipped with a warning
 //!   naming what they are on (an unsupported extension the file *requires* is an error).
 //! - Every `MeshInstance::mesh` and `::material` and every texture of a `GltfMaterial` is
 //!   a valid index into `meshes`, `materials` and `textures`. Primitives without a material use
@@ -192,6 +193,11 @@ pub struct GltfMaterial {
     pub alpha_cutoff: f32,
     /// Whether back faces are lit like front faces.
     pub double_sided: bool,
+    /// `KHR_materials_transmission`'s factor, 0..=1 (0: none; above 0, with
+    /// [`AlphaMode::Opaque`]: a `GltfTransmissiveMaterial`).
+    pub transmission: f32,
+    /// `KHR_materials_ior`'s index of refraction, clamped to 1..=4 (1.5 without it).
+    pub ior: f32,
 }
 
 impl GltfMaterial {
@@ -237,6 +243,8 @@ impl Default for GltfMaterial {
             alpha_mode: AlphaMode::Opaque,
             alpha_cutoff: 0.5,
             double_sided: false,
+            transmission: 0.0,
+            ior: 1.5,
         }
     }
 }

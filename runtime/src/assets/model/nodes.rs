@@ -22,9 +22,11 @@ use crate::assets::AssetError;
 
 /// The glTF extensions whose data is imported. Others listed in `extensionsUsed` get a warning;
 /// one listed in `extensionsRequired` was already refused by validation.
-const SUPPORTED_EXTENSIONS: [&str; 3] = [
+const SUPPORTED_EXTENSIONS: [&str; 5] = [
     "KHR_lights_punctual",
     "KHR_materials_emissive_strength",
+    "KHR_materials_ior",
+    "KHR_materials_transmission",
     "KHR_texture_transform",
 ];
 

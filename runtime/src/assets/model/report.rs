@@ -91,6 +91,14 @@ pub fn report(name: &str, scene: &ModelScene) -> String {
             AlphaMode::Mask => format!("MASK below {:.3}", m.alpha_cutoff),
             AlphaMode::Blend => "BLEND".to_owned(),
         };
+        let alpha = if m.transmission > 0.0 {
+            format!(
+                "{alpha}, transmission {:.3} (ior {:.3})",
+                m.transmission, m.ior
+            )
+        } else {
+            alpha
+        };
         let _ = writeln!(
             out,
             "    {label}: base colour {}, metallic {:.3}, roughness {:.3}, emissive {}{texture}, \

@@ -78,6 +78,11 @@ struct GpuNode {
     vec3 max_;
     uint b;
 };
+struct Triangle {
+    vec3 v0_;
+    vec3 v1_;
+    vec3 v2_;
+};
 struct Hit {
     vec3 position;
     float t;
@@ -87,11 +92,6 @@ struct Hit {
     bool front_face;
     uint instance;
     uint primitive;
-};
-struct Triangle {
-    vec3 v0_;
-    vec3 v1_;
-    vec3 v2_;
 };
 struct GltfMaskedMaterial {
     vec4 base_color;
@@ -156,6 +156,8 @@ const uint NODE_LEAF_BIT = 2147483648u;
 const uint NODE_COUNT_SHIFT = 27u;
 const uint NODE_COUNT_MASK = 15u;
 const uint NODE_FIRST_MASK = 134217727u;
+const uint FLAG_CULL_BACK = 8u;
+const uint FLAG_CULL_FRONT = 16u;
 const uint FLAG_ANY_HIT = 1u;
 const float POINT_ERROR = 1.9073486e-6;
 const float GAMMA_1_ = 5.960465e-8;
@@ -402,28 +404,23 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
     vec3 b_6 = (_e18.xyz - r_1.origin);
     vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
-    vec3 c_7 = (_e28.xyz - r_1.origin);
+    vec3 c_8 = (_e28.xyz - r_1.origin);
     float ax = (a_5[min(r_1.kx, 2u)] - (r_1.shear.x * a_5[min(r_1.kz, 2u)]));
     float ay = (a_5[min(r_1.ky, 2u)] - (r_1.shear.y * a_5[min(r_1.kz, 2u)]));
     float bx = (b_6[min(r_1.kx, 2u)] - (r_1.shear.x * b_6[min(r_1.kz, 2u)]));
     float by = (b_6[min(r_1.ky, 2u)] - (r_1.shear.y * b_6[min(r_1.kz, 2u)]));
-    float cx = (c_7[min(r_1.kx, 2u)] - (r_1.shear.x * c_7[min(r_1.kz, 2u)]));
-    float cy = (c_7[min(r_1.ky, 2u)] - (r_1.shear.y * c_7[min(r_1.kz, 2u)]));
+    float cx = (c_8[min(r_1.kx, 2u)] - (r_1.shear.x * c_8[min(r_1.kz, 2u)]));
+    float cy = (c_8[min(r_1.ky, 2u)] - (r_1.shear.y * c_8[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
     float v_1 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
     float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
-    float t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_7[min(r_1.kz, 2u)]))) * rcp);
+    float t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_8[min(r_1.kz, 2u)]))) * rcp);
     bool hit_13 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_13 ? vec3(t_6, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
-}
-
-float point_error(vec3 origin, vec3 along) {
-    vec3 a_6 = (abs(origin) + abs(along));
-    return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
 }
 
 Triangle load_triangle(uint slot_1) {
@@ -433,17 +430,35 @@ Triangle load_triangle(uint slot_1) {
     return Triangle(v0_1.xyz, v1_.xyz, v2_.xyz);
 }
 
-vec3 point_to_world(GpuInstance inst_1, vec3 p) {
-    vec4 q_1 = vec4(p, 1.0);
-    return vec3(dot(inst_1.object_to_world_0_, q_1), dot(inst_1.object_to_world_1_, q_1), dot(inst_1.object_to_world_2_, q_1));
+vec3 normal_to_world(GpuInstance inst_1, vec3 n) {
+    vec3 w_1 = (((inst_1.world_to_object_0_.xyz * vec3(n.x)) + (inst_1.world_to_object_1_.xyz * vec3(n.y))) + (inst_1.world_to_object_2_.xyz * vec3(n.z)));
+    vec3 _e19 = normalize_vec3f(w_1);
+    return _e19;
 }
 
-float mesh_error(GpuInstance inst_2, vec3 v0_, vec3 db1_, vec3 db2_, vec3 p_1) {
+bool culled(GpuInstance inst_2, Ray ray_2, Candidate c) {
+    Triangle _e4 = load_triangle(c.primitive);
+    vec3 _e12 = normal_to_world(inst_2, cross((_e4.v1_ - _e4.v0_), (_e4.v2_ - _e4.v0_)));
+    bool front = (dot(ray_2.dir, _e12) < 0.0);
+    return (((front ? FLAG_CULL_FRONT : FLAG_CULL_BACK) & inst_2.flags) != 0u);
+}
+
+float point_error(vec3 origin, vec3 along) {
+    vec3 a_6 = (abs(origin) + abs(along));
+    return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
+}
+
+vec3 point_to_world(GpuInstance inst_3, vec3 p) {
+    vec4 q_1 = vec4(p, 1.0);
+    return vec3(dot(inst_3.object_to_world_0_, q_1), dot(inst_3.object_to_world_1_, q_1), dot(inst_3.object_to_world_2_, q_1));
+}
+
+float mesh_error(GpuInstance inst_4, vec3 v0_, vec3 db1_, vec3 db2_, vec3 p_1) {
     vec3 obj = ((vec3(GAMMA_1_) * abs(v0_)) + (vec3(GAMMA_6_) * (abs(db1_) + abs(db2_))));
     vec4 q_2 = vec4(abs(p_1), 1.0);
-    vec4 r0_ = abs(inst_2.object_to_world_0_);
-    vec4 r1_ = abs(inst_2.object_to_world_1_);
-    vec4 r2_ = abs(inst_2.object_to_world_2_);
+    vec4 r0_ = abs(inst_4.object_to_world_0_);
+    vec4 r1_ = abs(inst_4.object_to_world_1_);
+    vec4 r2_ = abs(inst_4.object_to_world_2_);
     vec3 rounding = (vec3(GAMMA_4_) * vec3(dot(r0_, q_2), dot(r1_, q_2), dot(r2_, q_2)));
     vec3 carried = (vec3((1.0 + GAMMA_4_)) * vec3(dot(r0_.xyz, obj), dot(r1_.xyz, obj), dot(r2_.xyz, obj)));
     vec3 e = (rounding + carried);
@@ -451,53 +466,47 @@ float mesh_error(GpuInstance inst_2, vec3 v0_, vec3 db1_, vec3 db2_, vec3 p_1) {
 }
 
 vec3 decode_octahedral(uint bits) {
-    vec3 n = vec3(0.0);
+    vec3 n_1 = vec3(0.0);
     vec2 e_1 = unpackSnorm2x16(bits);
-    n = vec3(e_1.x, e_1.y, ((1.0 - abs(e_1.x)) - abs(e_1.y)));
-    float _e14 = n.z;
+    n_1 = vec3(e_1.x, e_1.y, ((1.0 - abs(e_1.x)) - abs(e_1.y)));
+    float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
-        vec3 _e21 = n;
+        vec3 _e21 = n_1;
         vec2 s_4 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
-        vec3 _e29 = n;
+        vec3 _e29 = n_1;
         vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_4);
-        float _e37 = n.z;
-        n = vec3(xy.x, xy.y, _e37);
+        float _e37 = n_1.z;
+        n_1 = vec3(xy.x, xy.y, _e37);
     }
-    vec3 _e39 = n;
+    vec3 _e39 = n_1;
     vec3 _e40 = normalize_vec3f(_e39);
     return _e40;
 }
 
-vec3 normal_to_world(GpuInstance inst_3, vec3 n_1) {
-    vec3 w_1 = (((inst_3.world_to_object_0_.xyz * vec3(n_1.x)) + (inst_3.world_to_object_1_.xyz * vec3(n_1.y))) + (inst_3.world_to_object_2_.xyz * vec3(n_1.z)));
-    vec3 _e19 = normalize_vec3f(w_1);
-    return _e19;
-}
-
-Hit finish_hit(Ray ray_2, Candidate c) {
+Hit finish_hit(Ray ray_3, Candidate c_1) {
     Hit hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     vec3 n_geo = vec3(0.0);
     vec3 n_shade = vec3(0.0);
-    GpuInstance inst_6 = _group_0_binding_3_cs[c.slot];
-    float _e11 = point_error(ray_2.origin, (ray_2.dir * vec3(c.t)));
+    GpuInstance inst_7 = _group_0_binding_3_cs[c_1.slot];
+    float _e11 = point_error(ray_3.origin, (ray_3.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_2.origin + (ray_2.dir * vec3(c.t))), c.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c.uv, true, inst_6.object, c.primitive);
-    n_geo = c.normal;
-    n_shade = c.normal;
-    if ((inst_6.geometry_type == MESH_GEOMETRY)) {
-        Triangle _e42 = load_triangle(c.primitive);
-        vec2 b_7 = c.uv;
+    hit = Hit((ray_3.origin + (ray_3.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    n_geo = c_1.normal;
+    n_shade = c_1.normal;
+    if ((inst_7.geometry_type == MESH_GEOMETRY)) {
+        Triangle _e42 = load_triangle(c_1.primitive);
+        vec2 b_7 = c_1.uv;
         float w_2 = ((1.0 - b_7.x) - b_7.y);
         vec3 e1_ = (_e42.v1_ - _e42.v0_);
         vec3 e2_ = (_e42.v2_ - _e42.v0_);
         vec3 p_6 = (_e42.v0_ + ((e1_ * vec3(b_7.x)) + (e2_ * vec3(b_7.y))));
-        vec3 _e65 = point_to_world(inst_6, p_6);
+        vec3 _e65 = point_to_world(inst_7, p_6);
         hit.position = _e65;
-        float _e73 = mesh_error(inst_6, _e42.v0_, (e1_ * vec3(b_7.x)), (e2_ * vec3(b_7.y)), p_6);
+        float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_7.x)), (e2_ * vec3(b_7.y)), p_6);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
-        uvec4 a0_ = _group_0_binding_5_cs[(c.primitive * 2u)];
-        uvec4 a1_ = _group_0_binding_5_cs[((c.primitive * 2u) + 1u)];
+        uvec4 a0_ = _group_0_binding_5_cs[(c_1.primitive * 2u)];
+        uvec4 a1_ = _group_0_binding_5_cs[((c_1.primitive * 2u) + 1u)];
         vec3 _e91 = decode_octahedral(a0_.x);
         vec3 _e95 = decode_octahedral(a0_.y);
         vec3 _e101 = decode_octahedral(a0_.z);
@@ -512,17 +521,17 @@ Hit finish_hit(Ray ray_2, Candidate c) {
         vec2 uv1_ = unpackHalf2x16(a1_.x);
         vec2 uv2_ = unpackHalf2x16(a1_.y);
         hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_7.x))) + (uv2_ * vec2(b_7.y)));
-        vec4 _e135 = _group_0_binding_4_cs[(c.primitive * 3u)];
+        vec4 _e135 = _group_0_binding_4_cs[(c_1.primitive * 3u)];
         hit.primitive = floatBitsToUint(_e135.w);
     }
     vec3 _e139 = n_geo;
-    vec3 _e140 = normal_to_world(inst_6, _e139);
+    vec3 _e140 = normal_to_world(inst_7, _e139);
     hit.geometric_normal = _e140;
     vec3 _e142 = n_shade;
-    vec3 _e143 = normal_to_world(inst_6, _e142);
+    vec3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     vec3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_2.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_3.dir, _e147) < 0.0);
     Hit _e151 = hit;
     return _e151;
 }
@@ -564,11 +573,11 @@ int wrap_texel(int x_2, int n_2, uint mode) {
     return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_2, 0), (n_2 - 1)) : wrapped);
 }
 
-float srgb_channel(float c_1) {
-    if ((c_1 <= 0.04045)) {
-        return (c_1 / 12.92);
+float srgb_channel(float c_2) {
+    if ((c_2 <= 0.04045)) {
+        return (c_2 / 12.92);
     }
-    return pow(((c_1 + 0.055) / 1.055), 2.4);
+    return pow(((c_2 + 0.055) / 1.055), 2.4);
 }
 
 vec4 texel_at(uint t, uint xi, uint yi) {
@@ -578,11 +587,11 @@ vec4 texel_at(uint t, uint xi, uint yi) {
     uint format = _group_0_binding_6_cs[(t + 3u)];
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
         uint _e25 = _group_0_binding_7_cs[(base_1 + index)];
-        vec4 c_8 = unpackUnorm4x8(_e25);
-        float _e28 = srgb_channel(c_8.x);
-        float _e30 = srgb_channel(c_8.y);
-        float _e32 = srgb_channel(c_8.z);
-        return vec4(_e28, _e30, _e32, c_8.w);
+        vec4 c_9 = unpackUnorm4x8(_e25);
+        float _e28 = srgb_channel(c_9.x);
+        float _e30 = srgb_channel(c_9.y);
+        float _e32 = srgb_channel(c_9.z);
+        return vec4(_e28, _e30, _e32, c_9.w);
     }
     if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
         uint _e40 = _group_0_binding_7_cs[(base_1 + index)];
@@ -637,10 +646,10 @@ uint gltf_pcg(uint x_3) {
     return ((word_2 >> 22u) ^ word_2);
 }
 
-float gltf_coverage(Ray ray_3, Hit hit_1) {
+float gltf_coverage(Ray ray_4, Hit hit_1) {
     uint h_1 = 0u;
-    uvec3 o_1 = floatBitsToUint(ray_3.origin);
-    uvec3 d_3 = floatBitsToUint(ray_3.dir);
+    uvec3 o_1 = floatBitsToUint(ray_4.origin);
+    uvec3 d_3 = floatBitsToUint(ray_4.dir);
     h_1 = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u));
     uint _e20 = h_1;
     h_1 = (((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
@@ -655,37 +664,48 @@ float gltf_coverage(Ray ray_3, Hit hit_1) {
     return (float((_e45 >> 8u)) * (1.0 / 16777216.0));
 }
 
-bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_4, Hit hit_2) {
+bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_5, Hit hit_2) {
     if (((double_sided == 0u) && !(hit_2.front_face))) {
         return false;
     }
     if ((blend != 0u)) {
-        float _e14 = gltf_coverage(ray_4, hit_2);
+        float _e14 = gltf_coverage(ray_5, hit_2);
         return (_e14 < alpha);
     }
     return (alpha >= cutoff);
 }
 
-bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_5, Hit hit_3) {
+bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_6, Hit hit_3) {
     vec4 _e7 = sample_texture(m.base_texture, hit_3.uv);
     float alpha_1 = (m.base_color.w * _e7.w);
-    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_5, hit_3);
+    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_6, hit_3);
     return _e13;
 }
 
-bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_6, Hit hit_4) {
+bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_7, Hit hit_4) {
     GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3);
-    bool _e4 = gltf_masked_any_hit(_e3, ray_6, hit_4);
+    bool _e4 = gltf_masked_any_hit(_e3, ray_7, hit_4);
     return _e4;
 }
 
-bool accept(GpuInstance inst_4, Ray ray_7, Candidate c_2) {
-    if (((inst_4.flags & FLAG_ANY_HIT) != 0u)) {
+bool accept(GpuInstance inst_5, Ray ray_8, Candidate c_3) {
+    bool short_circuit = false;
+    bool _e9 = ((inst_5.flags & (FLAG_CULL_BACK | FLAG_CULL_FRONT)) != 0u);
+    short_circuit = _e9;
+    if (_e9) {
+        bool _e11 = culled(inst_5, ray_8, c_3);
+        short_circuit = _e11;
+    }
+    bool _e12 = short_circuit;
+    if (_e12) {
+        return false;
+    }
+    if (((inst_5.flags & FLAG_ANY_HIT) != 0u)) {
         float shaded = hit_error;
-        Hit _e10 = finish_hit(ray_7, c_2);
+        Hit _e21 = finish_hit(ray_8, c_3);
         hit_error = shaded;
-        bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10);
-        return _e14;
+        bool _e25 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_8, _e21);
+        return _e25;
     }
     return true;
 }
@@ -716,19 +736,19 @@ float slab(vec3 lo, vec3 hi, vec3 origin_2, vec3 inv_dir, float tmin_1, float tm
     return uintBitsToFloat(_e30);
 }
 
-vec2 children_entry(GpuNode n_3, vec3 origin_3, vec3 scale_1, Ray ray_8, vec3 inv, float tmax_3) {
+vec2 children_entry(GpuNode n_3, vec3 origin_3, vec3 scale_1, Ray ray_9, vec3 inv, float tmax_3) {
     uvec3 lq = floatBitsToUint(n_3.min_);
     uvec3 rq = floatBitsToUint(n_3.max_);
     uvec3 _e10 = node_box_lo(lq);
     vec3 _e11 = node_point(origin_3, scale_1, _e10);
     uvec3 _e12 = node_box_hi(lq);
     vec3 _e13 = node_point(origin_3, scale_1, _e12);
-    float _e16 = slab(_e11, _e13, ray_8.origin, inv, ray_8.tmin, tmax_3);
+    float _e16 = slab(_e11, _e13, ray_9.origin, inv, ray_9.tmin, tmax_3);
     uvec3 _e17 = node_box_lo(rq);
     vec3 _e18 = node_point(origin_3, scale_1, _e17);
     uvec3 _e19 = node_box_hi(rq);
     vec3 _e20 = node_point(origin_3, scale_1, _e19);
-    float _e23 = slab(_e18, _e20, ray_8.origin, inv, ray_8.tmin, tmax_3);
+    float _e23 = slab(_e18, _e20, ray_9.origin, inv, ray_9.tmin, tmax_3);
     return vec2(_e16, _e23);
 }
 
@@ -740,7 +760,7 @@ uvec2 pop(uint base, uint sp) {
     return uvec2(_e14, (sp - 1u));
 }
 
-Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray_9, Candidate best_in, bool shadow) {
+Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray_10, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
     uint child = 0u;
@@ -748,9 +768,9 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    vec3 _e8 = safe_inverse(ray_9.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_9);
-    uint base_2 = inst_5.blas_root;
+    vec3 _e8 = safe_inverse(ray_10.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_10);
+    uint base_2 = inst_6.blas_root;
     GpuNode header_1 = _group_0_binding_2_cs[base_2];
     vec3 origin_4 = header_1.min_;
     vec3 scale_2 = header_1.max_;
@@ -776,15 +796,15 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
                     break;
                 }
                 uint _e41 = k;
-                uint prim = ((inst_5.triangle_offset + first) + _e41);
+                uint prim = ((inst_6.triangle_offset + first) + _e41);
                 float _e45 = best.t;
-                vec3 _e46 = hit_triangle(_e9, prim, ray_9.tmin, _e45);
+                vec3 _e46 = hit_triangle(_e9, prim, ray_10.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
-                    Candidate c_9 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0.0));
-                    bool _e57 = accept(inst_5, world_ray, c_9);
+                    Candidate c_10 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0.0));
+                    bool _e57 = accept(inst_6, world_ray, c_10);
                     if (_e57) {
-                        best = c_9;
+                        best = c_10;
                         if (shadow) {
                             Candidate _e58 = best;
                             return _e58;
@@ -796,7 +816,7 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
             uint _e62 = child;
             GpuNode n_7 = _group_0_binding_2_cs[(base_2 + _e62)];
             float _e68 = best.t;
-            vec2 _e69 = children_entry(n_7, origin_4, scale_2, ray_9, _e8, _e68);
+            vec2 _e69 = children_entry(n_7, origin_4, scale_2, ray_10, _e8, _e68);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
@@ -843,15 +863,15 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
     return _e122;
 }
 
-Candidate intersect_object(uint slot_3, Ray ray_10, Candidate best_1, bool shadow_1) {
+Candidate intersect_object(uint slot_3, Ray ray_11, Candidate best_1, bool shadow_1) {
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
-    GpuInstance inst_7 = _group_0_binding_3_cs[slot_3];
-    Ray _e7 = to_object(inst_7, ray_10);
+    GpuInstance inst_8 = _group_0_binding_3_cs[slot_3];
+    Ray _e7 = to_object(inst_8, ray_11);
     r_2 = _e7;
     r_2.tmax = best_1.t;
-    if ((inst_7.geometry_type == MESH_GEOMETRY)) {
+    if ((inst_8.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_10, _e14, best_1, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_11, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -909,7 +929,7 @@ vec3 node_frame_hi(GpuNode header) {
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_11, bool shadow_2) {
+Candidate intersect_scene(Ray ray_12, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -917,21 +937,21 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_11.tmax);
+    Candidate _e7 = no_candidate(ray_12.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = _group_0_binding_0_cs;
     if ((frame_2.instance_count == 0u)) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    vec3 _e16 = safe_inverse(ray_11.dir);
+    vec3 _e16 = safe_inverse(ray_12.dir);
     uint base_3 = frame_2.tlas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_3];
     vec3 origin_5 = header_2.min_;
     vec3 scale_3 = header_2.max_;
     vec3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_11.origin, _e16, ray_11.tmin, _e27);
+    float _e28 = slab(origin_5, _e23, ray_12.origin, _e16, ray_12.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == uintBitsToFloat(_e30))) {
         Candidate _e33 = best_2;
@@ -946,7 +966,7 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2) {
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_11, _e55, shadow_2);
+                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_12, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -958,7 +978,7 @@ Candidate intersect_scene(Ray ray_11, bool shadow_2) {
             uint _e63 = child_1;
             GpuNode n_8 = _group_0_binding_2_cs[(base_3 + _e63)];
             float _e69 = best_2.t;
-            vec2 _e70 = children_entry(n_8, origin_5, scale_3, ray_11, _e16, _e69);
+            vec2 _e70 = children_entry(n_8, origin_5, scale_3, ray_12, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1018,8 +1038,8 @@ SkyGradient load_SkyGradient(uint offset_4) {
     return SkyGradient(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)));
 }
 
-vec3 sky_gradient(SkyGradient b_5, Ray ray_12) {
-    vec3 _e3 = normalize_vec3f(ray_12.dir);
+vec3 sky_gradient(SkyGradient b_5, Ray ray_13) {
+    vec3 _e3 = normalize_vec3f(ray_13.dir);
     float y = _e3.y;
     if ((y < 0.0)) {
         return mix(b_5.horizon, b_5.ground, vec3(min((-(y) * 4.0), 1.0)));
@@ -1027,23 +1047,23 @@ vec3 sky_gradient(SkyGradient b_5, Ray ray_12) {
     return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y)));
 }
 
-vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_13) {
+vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_14) {
     SkyGradient _e2 = load_SkyGradient(offset_5);
-    vec3 _e3 = sky_gradient(_e2, ray_13);
+    vec3 _e3 = sky_gradient(_e2, ray_14);
     return _e3;
 }
 
-vec3 miss(Ray ray_14) {
+vec3 miss(Ray ray_15) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_3 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_14);
+    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_15);
     return _e9;
 }
 
-vec3 shading_normal(Ray ray_15, Hit hit_5) {
-    vec3 ng = faceforward(hit_5.geometric_normal, ray_15.dir, hit_5.geometric_normal);
+vec3 shading_normal(Ray ray_16, Hit hit_5) {
+    vec3 ng = faceforward(hit_5.geometric_normal, ray_16.dir, hit_5.geometric_normal);
     return faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1190,8 +1210,8 @@ LightSample sample_light_query(uint i_1, vec3 position_5, vec3 normal_5) {
     return _e28;
 }
 
-vec3 pbr_fresnel(vec3 f0_, float c_3) {
-    float k_1 = (1.0 - clamp(c_3, 0.0, 1.0));
+vec3 pbr_fresnel(vec3 f0_, float c_4) {
+    float k_1 = (1.0 - clamp(c_4, 0.0, 1.0));
     float k2_ = (k_1 * k_1);
     return (f0_ + ((vec3(1.0) - f0_) * vec3(((k2_ * k2_) * k_1))));
 }
@@ -1207,15 +1227,15 @@ float pbr_smith_v(float ndl, float ndv, float a2_1) {
     return (0.5 / max((gv + gl), 1e-20));
 }
 
-vec3 gltf_radiance(vec3 c_4, float metallic, float roughness_1, float occlusion, vec3 emissive, Ray ray_16, Hit hit_6) {
+vec3 gltf_radiance(vec3 c_5, float metallic, float roughness_1, float occlusion, vec3 emissive, Ray ray_17, Hit hit_6) {
     vec3 color = vec3(0.0);
     uint i_2 = 0u;
-    vec3 _e7 = shading_normal(ray_16, hit_6);
-    vec3 _e9 = normalize_vec3f(ray_16.dir);
+    vec3 _e7 = shading_normal(ray_17, hit_6);
+    vec3 _e9 = normalize_vec3f(ray_17.dir);
     vec3 v_2 = -(_e9);
     float metal = clamp(metallic, 0.0, 1.0);
     float _e12 = pbr_alpha2_(roughness_1);
-    vec3 f0_1 = mix(vec3(0.04), c_4, vec3(metal));
+    vec3 f0_1 = mix(vec3(0.04), c_5, vec3(metal));
     float ndv_1 = max(dot(_e7, v_2), 0.0001);
     color = emissive;
     uint _e22 = light_count_query();
@@ -1239,7 +1259,7 @@ vec3 gltf_radiance(vec3 c_4, float metallic, float roughness_1, float occlusion,
         float _e41 = pbr_ggx_d(clamp(dot(_e7, _e36), 0.0, 1.0), _e12);
         float _e42 = pbr_smith_v(ndl_1, ndv_1, _e12);
         vec3 spec = (_e38 * vec3((_e41 * _e42)));
-        vec3 diffuse = (((vec3(1.0) - _e38) * c_4) * vec3(((1.0 - metal) * INV_PI)));
+        vec3 diffuse = (((vec3(1.0) - _e38) * c_5) * vec3(((1.0 - metal) * INV_PI)));
         vec3 _e56 = color;
         color = (_e56 + (((_e29.radiance * vec3(ndl_1)) * (diffuse + spec)) * vec3(occlusion)));
     }
@@ -1247,10 +1267,10 @@ vec3 gltf_radiance(vec3 c_4, float metallic, float roughness_1, float occlusion,
     return _e68;
 }
 
-vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_17, Hit hit_7) {
+vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_18, Hit hit_7) {
     vec4 _e7 = sample_texture(m_1.base_texture, hit_7.uv);
-    vec3 c_10 = (m_1.base_color.xyz * _e7.xyz);
-    vec3 _e14 = gltf_radiance(c_10, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_17, hit_7);
+    vec3 c_11 = (m_1.base_color.xyz * _e7.xyz);
+    vec3 _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_18, hit_7);
     return _e14;
 }
 
@@ -1268,23 +1288,23 @@ GltfMaterial load_GltfMaterial(uint offset_9) {
     return GltfMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), vec3(uintBitsToFloat(_e47), uintBitsToFloat(_e53), uintBitsToFloat(_e59)));
 }
 
-vec3 gltf_shade(GltfMaterial m_2, Ray ray_18, Hit hit_8) {
+vec3 gltf_shade(GltfMaterial m_2, Ray ray_19, Hit hit_8) {
     vec4 _e7 = sample_texture(m_2.base_texture, hit_8.uv);
-    vec3 c_11 = (m_2.base_color.xyz * _e7.xyz);
-    vec3 _e14 = gltf_radiance(c_11, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_18, hit_8);
+    vec3 c_12 = (m_2.base_color.xyz * _e7.xyz);
+    vec3 _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_19, hit_8);
     return _e14;
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_19, Hit hit_9, vec3 secondary) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_20, Hit hit_9, vec3 secondary) {
     switch(type_id_4) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10);
-            vec3 _e5 = gltf_masked_shade(_e4, ray_19, hit_9);
+            vec3 _e5 = gltf_masked_shade(_e4, ray_20, hit_9);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_10);
-            vec3 _e7 = gltf_shade(_e6, ray_19, hit_9);
+            vec3 _e7 = gltf_shade(_e6, ray_20, hit_9);
             return _e7;
         }
         default: {
@@ -1294,33 +1314,33 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_19, Hit hit_9,
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_20, Candidate c_5) {
-    GpuInstance inst_8 = _group_0_binding_3_cs[c_5.slot];
-    Hit _e6 = finish_hit(ray_20, c_5);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, vec3(0.0));
+vec3 shade_direct(Ray ray_21, Candidate c_6) {
+    GpuInstance inst_9 = _group_0_binding_3_cs[c_6.slot];
+    Hit _e6 = finish_hit(ray_21, c_6);
+    vec3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_21, _e6, vec3(0.0));
     return _e11;
 }
 
-vec3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_21, float t_2, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_22, float t_2, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_22, float t_3, vec3 radiance_1) {
+vec3 through_medium(Ray ray_23, float t_3, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_22.medium == 0u)) {
+    if ((ray_23.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_22.medium - 1u)];
-    if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
+    GpuInstance inst_10 = _group_0_binding_3_cs[(ray_23.medium - 1u)];
+    if (((inst_10.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_22, t_3, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_23, t_3, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_23, Hit hit_10) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_24, Hit hit_10) {
     return;
 }
 
@@ -1347,7 +1367,7 @@ vec3 trace(Ray camera_ray) {
     float t_4 = 0.0;
     Frame stack[4] = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_24 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_25 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
@@ -1385,7 +1405,7 @@ vec3 trace(Ray camera_ray) {
     }
     stack = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_24 = camera_ray;
+    ray_25 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1401,10 +1421,10 @@ vec3 trace(Ray camera_ray) {
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_24;
+            Ray _e67 = ray_25;
             Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_24;
+            Ray _e70 = ray_25;
             s_ray = _e70;
             s_sum = vec3(0.0);
             fresh = true;
@@ -1425,7 +1445,7 @@ vec3 trace(Ray camera_ray) {
                 radiance_3 = _e93;
             } else {
                 uint _e95 = s_c.slot;
-                GpuInstance inst_10 = _group_0_binding_3_cs[_e95];
+                GpuInstance inst_11 = _group_0_binding_3_cs[_e95];
                 Hit _e99 = s_hit;
                 hit_12 = _e99;
                 bool _e101 = fresh;
@@ -1445,11 +1465,11 @@ vec3 trace(Ray camera_ray) {
                 bool _e111 = fresh;
                 uint _e119 = s_ray.depth;
                 uint _e123 = depth;
-                if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
+                if ((((_e111 && ((inst_11.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
                     spawn_count = 0u;
                     Ray _e131 = s_ray;
                     Hit _e132 = hit_12;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
+                    dispatch_secondary_rays(inst_11.material_type, inst_11.material_offset, _e131, _e132);
                     uint _e134 = spawn_count;
                     uint n_9 = min(min(_e134, 1u), MAX_SPAWN);
                     if ((n_9 > 0u)) {
@@ -1492,7 +1512,7 @@ vec3 trace(Ray camera_ray) {
                     Ray _e191 = s_ray;
                     Hit _e192 = hit_12;
                     vec3 _e193 = s_sum;
-                    vec3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
+                    vec3 _e194 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e191, _e192, _e193);
                     radiance_3 = _e194;
                 }
             }
@@ -1538,7 +1558,7 @@ vec3 trace(Ray camera_ray) {
             vec3 _e284 = spawn_origin(hit_14, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_24 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_25 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -1562,16 +1582,16 @@ bvec3 is_finite_vec3f(vec3 x_5) {
     return lessThan((floatBitsToUint(x_5) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
-vec3 finite_or_zero(vec3 c_6) {
-    bvec3 _e3 = is_finite_vec3f(c_6);
-    return mix(vec3(0.0), c_6, _e3);
+vec3 finite_or_zero(vec3 c_7) {
+    bvec3 _e3 = is_finite_vec3f(c_7);
+    return mix(vec3(0.0), c_7, _e3);
 }
 
 void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s_1 = 0u;
-    Ray ray_25 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_26 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_2 = _group_0_binding_1_cs;
     sum = vec3(0.0);
@@ -1593,13 +1613,13 @@ void render_pixel(uvec2 pixel_3) {
         uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_25 = _e23;
-        ray_25.depth = 0u;
-        ray_25.kind = RAY_CAMERA;
-        vec3 _e31 = ray_25.origin;
+        ray_26 = _e23;
+        ray_26.depth = 0u;
+        ray_26.kind = RAY_CAMERA;
+        vec3 _e31 = ray_26.origin;
         uint _e33 = medium_at(_e31, NO_HIT);
-        ray_25.medium = _e33;
-        Ray _e34 = ray_25;
+        ray_26.medium = _e33;
+        Ray _e34 = ray_26;
         vec3 _e35 = trace(_e34);
         bvec3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

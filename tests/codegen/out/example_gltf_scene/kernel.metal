@@ -99,6 +99,11 @@ struct GpuNode {
 };
 typedef GpuNode type_9[1];
 typedef metal::float4 type_10[1];
+struct Triangle {
+    metal::float3 v0_;
+    metal::float3 v1_;
+    metal::float3 v2_;
+};
 struct Hit {
     metal::packed_float3 position;
     float t;
@@ -110,11 +115,6 @@ struct Hit {
     uint instance;
     uint primitive;
     char _pad8[12];
-};
-struct Triangle {
-    metal::float3 v0_;
-    metal::float3 v1_;
-    metal::float3 v2_;
 };
 typedef metal::uint4 type_12[1];
 struct GltfMaskedMaterial {
@@ -196,6 +196,8 @@ constant uint NODE_LEAF_BIT = 2147483648u;
 constant uint NODE_COUNT_SHIFT = 27u;
 constant uint NODE_COUNT_MASK = 15u;
 constant uint NODE_FIRST_MASK = 134217727u;
+constant uint FLAG_CULL_BACK = 8u;
+constant uint FLAG_CULL_FRONT = 16u;
 constant uint FLAG_ANY_HIT = 1u;
 constant float POINT_ERROR = 0.0000019073486;
 constant float GAMMA_1_ = 0.00000005960465;
@@ -493,31 +495,23 @@ metal::float3 hit_triangle(
     metal::float4 _e18 = triangles[(slot * 3u) + 1u];
     metal::float3 b_6 = _e18.xyz - r_1.origin;
     metal::float4 _e28 = triangles[(slot * 3u) + 2u];
-    metal::float3 c_7 = _e28.xyz - r_1.origin;
+    metal::float3 c_8 = _e28.xyz - r_1.origin;
     float ax = a_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_5[metal::min(r_1.kz, 2u)]);
     float ay = a_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_5[metal::min(r_1.kz, 2u)]);
     float bx = b_6[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_6[metal::min(r_1.kz, 2u)]);
     float by = b_6[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_6[metal::min(r_1.kz, 2u)]);
-    float cx = c_7[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_7[metal::min(r_1.kz, 2u)]);
-    float cy = c_7[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_7[metal::min(r_1.kz, 2u)]);
+    float cx = c_8[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_8[metal::min(r_1.kz, 2u)]);
+    float cy = c_8[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_8[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
     float v_1 = (ax * cy) - (ay * cx);
     float w = (bx * ay) - (by * ax);
     bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
     float det = (u + v_1) + w;
     float rcp = 1.0 / det;
-    float t_6 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_7[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_6 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_8[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_13 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1);
     uint _e173 = F32_INF;
     return hit_13 ? metal::float3(t_6, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
-}
-
-float point_error(
-    metal::float3 origin,
-    metal::float3 along
-) {
-    metal::float3 a_6 = metal::abs(origin) + metal::abs(along);
-    return POINT_ERROR * metal::max(metal::max(a_6.x, a_6.y), a_6.z);
 }
 
 Triangle load_triangle(
@@ -531,16 +525,46 @@ Triangle load_triangle(
     return Triangle {v0_1.xyz, v1_.xyz, v2_.xyz};
 }
 
-metal::float3 point_to_world(
+metal::float3 normal_to_world(
     GpuInstance inst_1,
+    metal::float3 n
+) {
+    metal::float3 w_1 = ((inst_1.world_to_object_0_.xyz * metal::float3(n.x)) + (inst_1.world_to_object_1_.xyz * metal::float3(n.y))) + (inst_1.world_to_object_2_.xyz * metal::float3(n.z));
+    metal::float3 _e19 = normalize_vec3f(w_1);
+    return _e19;
+}
+
+bool culled(
+    GpuInstance inst_2,
+    Ray ray_2,
+    Candidate c,
+    device type_10 const& triangles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Triangle _e4 = load_triangle(c.primitive, triangles, _buffer_sizes);
+    metal::float3 _e12 = normal_to_world(inst_2, metal::cross(_e4.v1_ - _e4.v0_, _e4.v2_ - _e4.v0_));
+    bool front = metal::dot(ray_2.dir, _e12) < 0.0;
+    return ((front ? FLAG_CULL_FRONT : FLAG_CULL_BACK) & inst_2.flags) != 0u;
+}
+
+float point_error(
+    metal::float3 origin,
+    metal::float3 along
+) {
+    metal::float3 a_6 = metal::abs(origin) + metal::abs(along);
+    return POINT_ERROR * metal::max(metal::max(a_6.x, a_6.y), a_6.z);
+}
+
+metal::float3 point_to_world(
+    GpuInstance inst_3,
     metal::float3 p
 ) {
     metal::float4 q_1 = metal::float4(p, 1.0);
-    return metal::float3(metal::dot(inst_1.object_to_world_0_, q_1), metal::dot(inst_1.object_to_world_1_, q_1), metal::dot(inst_1.object_to_world_2_, q_1));
+    return metal::float3(metal::dot(inst_3.object_to_world_0_, q_1), metal::dot(inst_3.object_to_world_1_, q_1), metal::dot(inst_3.object_to_world_2_, q_1));
 }
 
 float mesh_error(
-    GpuInstance inst_2,
+    GpuInstance inst_4,
     metal::float3 v0_,
     metal::float3 db1_,
     metal::float3 db2_,
@@ -548,9 +572,9 @@ float mesh_error(
 ) {
     metal::float3 obj = (metal::float3(GAMMA_1_) * metal::abs(v0_)) + (metal::float3(GAMMA_6_) * (metal::abs(db1_) + metal::abs(db2_)));
     metal::float4 q_2 = metal::float4(metal::abs(p_1), 1.0);
-    metal::float4 r0_ = metal::abs(inst_2.object_to_world_0_);
-    metal::float4 r1_ = metal::abs(inst_2.object_to_world_1_);
-    metal::float4 r2_ = metal::abs(inst_2.object_to_world_2_);
+    metal::float4 r0_ = metal::abs(inst_4.object_to_world_0_);
+    metal::float4 r1_ = metal::abs(inst_4.object_to_world_1_);
+    metal::float4 r2_ = metal::abs(inst_4.object_to_world_2_);
     metal::float3 rounding = metal::float3(GAMMA_4_) * metal::float3(metal::dot(r0_, q_2), metal::dot(r1_, q_2), metal::dot(r2_, q_2));
     metal::float3 carried = metal::float3(1.0 + GAMMA_4_) * metal::float3(metal::dot(r0_.xyz, obj), metal::dot(r1_.xyz, obj), metal::dot(r2_.xyz, obj));
     metal::float3 e = rounding + carried;
@@ -560,35 +584,26 @@ float mesh_error(
 metal::float3 decode_octahedral(
     uint bits
 ) {
-    metal::float3 n = {};
+    metal::float3 n_1 = {};
     metal::float2 e_1 = metal::unpack_snorm2x16_to_float(bits);
-    n = metal::float3(e_1.x, e_1.y, (1.0 - metal::abs(e_1.x)) - metal::abs(e_1.y));
-    float _e14 = n.z;
+    n_1 = metal::float3(e_1.x, e_1.y, (1.0 - metal::abs(e_1.x)) - metal::abs(e_1.y));
+    float _e14 = n_1.z;
     if (_e14 < 0.0) {
-        metal::float3 _e21 = n;
+        metal::float3 _e21 = n_1;
         metal::float2 s_4 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
-        metal::float3 _e29 = n;
+        metal::float3 _e29 = n_1;
         metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_4;
-        float _e37 = n.z;
-        n = metal::float3(xy.x, xy.y, _e37);
+        float _e37 = n_1.z;
+        n_1 = metal::float3(xy.x, xy.y, _e37);
     }
-    metal::float3 _e39 = n;
+    metal::float3 _e39 = n_1;
     metal::float3 _e40 = normalize_vec3f(_e39);
     return _e40;
 }
 
-metal::float3 normal_to_world(
-    GpuInstance inst_3,
-    metal::float3 n_1
-) {
-    metal::float3 w_1 = ((inst_3.world_to_object_0_.xyz * metal::float3(n_1.x)) + (inst_3.world_to_object_1_.xyz * metal::float3(n_1.y))) + (inst_3.world_to_object_2_.xyz * metal::float3(n_1.z));
-    metal::float3 _e19 = normalize_vec3f(w_1);
-    return _e19;
-}
-
 Hit finish_hit(
-    Ray ray_2,
-    Candidate c,
+    Ray ray_3,
+    Candidate c_1,
     device type_8 const& instances,
     device type_10 const& triangles,
     thread float& hit_error,
@@ -598,30 +613,30 @@ Hit finish_hit(
     Hit hit = {};
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
-    GpuInstance inst_6 = instances[c.slot];
-    float _e11 = point_error(ray_2.origin, ray_2.dir * metal::float3(c.t));
+    GpuInstance inst_7 = instances[c_1.slot];
+    float _e11 = point_error(ray_3.origin, ray_3.dir * metal::float3(c_1.t));
     hit_error = _e11;
-    hit = Hit {ray_2.origin + (ray_2.dir * metal::float3(c.t)), c.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c.uv, true, {}, inst_6.object, c.primitive};
-    n_geo = c.normal;
-    n_shade = c.normal;
-    if (inst_6.geometry_type == MESH_GEOMETRY) {
-        Triangle _e42 = load_triangle(c.primitive, triangles, _buffer_sizes);
-        metal::float2 b_7 = c.uv;
-        float w_2 = (1.0 - c.uv.x) - c.uv.y;
+    hit = Hit {ray_3.origin + (ray_3.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
+    n_geo = c_1.normal;
+    n_shade = c_1.normal;
+    if (inst_7.geometry_type == MESH_GEOMETRY) {
+        Triangle _e42 = load_triangle(c_1.primitive, triangles, _buffer_sizes);
+        metal::float2 b_7 = c_1.uv;
+        float w_2 = (1.0 - c_1.uv.x) - c_1.uv.y;
         metal::float3 e1_ = _e42.v1_ - _e42.v0_;
         metal::float3 e2_ = _e42.v2_ - _e42.v0_;
-        metal::float3 p_6 = _e42.v0_ + ((e1_ * metal::float3(c.uv.x)) + (e2_ * metal::float3(c.uv.y)));
-        metal::float3 _e65 = point_to_world(inst_6, p_6);
+        metal::float3 p_6 = _e42.v0_ + ((e1_ * metal::float3(c_1.uv.x)) + (e2_ * metal::float3(c_1.uv.y)));
+        metal::float3 _e65 = point_to_world(inst_7, p_6);
         hit.position = _e65;
-        float _e73 = mesh_error(inst_6, _e42.v0_, e1_ * metal::float3(c.uv.x), e2_ * metal::float3(c.uv.y), p_6);
+        float _e73 = mesh_error(inst_7, _e42.v0_, e1_ * metal::float3(c_1.uv.x), e2_ * metal::float3(c_1.uv.y), p_6);
         hit_error = _e73;
         n_geo = metal::cross(e1_, e2_);
-        metal::uint4 a0_ = attributes[c.primitive * 2u];
-        metal::uint4 a1_ = attributes[(c.primitive * 2u) + 1u];
+        metal::uint4 a0_ = attributes[c_1.primitive * 2u];
+        metal::uint4 a1_ = attributes[(c_1.primitive * 2u) + 1u];
         metal::float3 _e91 = decode_octahedral(a0_.x);
         metal::float3 _e95 = decode_octahedral(a0_.y);
         metal::float3 _e101 = decode_octahedral(a0_.z);
-        n_shade = ((_e91 * metal::float3(w_2)) + (_e95 * metal::float3(c.uv.x))) + (_e101 * metal::float3(c.uv.y));
+        n_shade = ((_e91 * metal::float3(w_2)) + (_e95 * metal::float3(c_1.uv.x))) + (_e101 * metal::float3(c_1.uv.y));
         metal::float3 _e106 = n_shade;
         metal::float3 _e107 = n_shade;
         if (metal::dot(_e106, _e107) < 0.000000000001) {
@@ -631,18 +646,18 @@ Hit finish_hit(
         metal::float2 uv0_ = float2(as_type<half2>(a0_.w));
         metal::float2 uv1_ = float2(as_type<half2>(a1_.x));
         metal::float2 uv2_ = float2(as_type<half2>(a1_.y));
-        hit.uv = ((uv0_ * metal::float2(w_2)) + (uv1_ * metal::float2(c.uv.x))) + (uv2_ * metal::float2(c.uv.y));
-        metal::float4 _e135 = triangles[c.primitive * 3u];
+        hit.uv = ((uv0_ * metal::float2(w_2)) + (uv1_ * metal::float2(c_1.uv.x))) + (uv2_ * metal::float2(c_1.uv.y));
+        metal::float4 _e135 = triangles[c_1.primitive * 3u];
         hit.primitive = as_type<uint>(_e135.w);
     }
     metal::float3 _e139 = n_geo;
-    metal::float3 _e140 = normal_to_world(inst_6, _e139);
+    metal::float3 _e140 = normal_to_world(inst_7, _e139);
     hit.geometric_normal = _e140;
     metal::float3 _e142 = n_shade;
-    metal::float3 _e143 = normal_to_world(inst_6, _e142);
+    metal::float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_2.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_3.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -706,12 +721,12 @@ int wrap_texel(
 }
 
 float srgb_channel(
-    float c_1
+    float c_2
 ) {
-    if (c_1 <= 0.04045) {
-        return c_1 / 12.92;
+    if (c_2 <= 0.04045) {
+        return c_2 / 12.92;
     }
-    return metal::pow((c_1 + 0.055) / 1.055, 2.4);
+    return metal::pow((c_2 + 0.055) / 1.055, 2.4);
 }
 
 metal::float4 texel_at(
@@ -728,11 +743,11 @@ metal::float4 texel_at(
     uint format = params[t + 3u];
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
         uint _e25 = texels[base_1 + index];
-        metal::float4 c_8 = metal::unpack_unorm4x8_to_float(_e25);
-        float _e28 = srgb_channel(c_8.x);
-        float _e30 = srgb_channel(c_8.y);
-        float _e32 = srgb_channel(c_8.z);
-        return metal::float4(_e28, _e30, _e32, c_8.w);
+        metal::float4 c_9 = metal::unpack_unorm4x8_to_float(_e25);
+        float _e28 = srgb_channel(c_9.x);
+        float _e30 = srgb_channel(c_9.y);
+        float _e32 = srgb_channel(c_9.z);
+        return metal::float4(_e28, _e30, _e32, c_9.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
         uint _e40 = texels[base_1 + index];
@@ -798,13 +813,13 @@ uint gltf_pcg(
 }
 
 float gltf_coverage(
-    Ray ray_3,
+    Ray ray_4,
     Hit hit_1,
     constant TileParams& tile
 ) {
     uint h_1 = {};
-    metal::uint3 o_1 = as_type<metal::uint3>(ray_3.origin);
-    metal::uint3 d_3 = as_type<metal::uint3>(ray_3.dir);
+    metal::uint3 o_1 = as_type<metal::uint3>(ray_4.origin);
+    metal::uint3 d_3 = as_type<metal::uint3>(ray_4.dir);
     h_1 = ((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u);
     uint _e20 = h_1;
     h_1 = ((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u);
@@ -824,7 +839,7 @@ bool gltf_counts(
     float cutoff,
     uint blend,
     uint double_sided,
-    Ray ray_4,
+    Ray ray_5,
     Hit hit_2,
     constant TileParams& tile
 ) {
@@ -832,7 +847,7 @@ bool gltf_counts(
         return false;
     }
     if (blend != 0u) {
-        float _e14 = gltf_coverage(ray_4, hit_2, tile);
+        float _e14 = gltf_coverage(ray_5, hit_2, tile);
         return _e14 < alpha;
     }
     return alpha >= cutoff;
@@ -840,7 +855,7 @@ bool gltf_counts(
 
 bool gltf_masked_any_hit(
     GltfMaskedMaterial m,
-    Ray ray_5,
+    Ray ray_6,
     Hit hit_3,
     constant TileParams& tile,
     device type_4 const& params,
@@ -849,14 +864,14 @@ bool gltf_masked_any_hit(
 ) {
     metal::float4 _e7 = sample_texture(m.base_texture, hit_3.uv, params, texels, _buffer_sizes);
     float alpha_1 = m.base_color.w * _e7.w;
-    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_5, hit_3, tile);
+    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_6, hit_3, tile);
     return _e13;
 }
 
 bool dispatch_any_hit(
     uint type_id_1,
     uint offset_3,
-    Ray ray_6,
+    Ray ray_7,
     Hit hit_4,
     constant TileParams& tile,
     device type_4 const& params,
@@ -864,14 +879,14 @@ bool dispatch_any_hit(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3, params, _buffer_sizes);
-    bool _e4 = gltf_masked_any_hit(_e3, ray_6, hit_4, tile, params, texels, _buffer_sizes);
+    bool _e4 = gltf_masked_any_hit(_e3, ray_7, hit_4, tile, params, texels, _buffer_sizes);
     return _e4;
 }
 
 bool accept(
-    GpuInstance inst_4,
-    Ray ray_7,
-    Candidate c_2,
+    GpuInstance inst_5,
+    Ray ray_8,
+    Candidate c_3,
     constant TileParams& tile,
     device type_4 const& params,
     device type_8 const& instances,
@@ -881,12 +896,23 @@ bool accept(
     device type_4 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    if ((inst_4.flags & FLAG_ANY_HIT) != 0u) {
+    bool short_circuit = {};
+    bool _e9 = (inst_5.flags & (FLAG_CULL_BACK | FLAG_CULL_FRONT)) != 0u;
+    short_circuit = _e9;
+    if (_e9) {
+        bool _e11 = culled(inst_5, ray_8, c_3, triangles, _buffer_sizes);
+        short_circuit = _e11;
+    }
+    bool _e12 = short_circuit;
+    if (_e12) {
+        return false;
+    }
+    if ((inst_5.flags & FLAG_ANY_HIT) != 0u) {
         float shaded = hit_error;
-        Hit _e10 = finish_hit(ray_7, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
+        Hit _e21 = finish_hit(ray_8, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
         hit_error = shaded;
-        bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10, tile, params, texels, _buffer_sizes);
-        return _e14;
+        bool _e25 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_8, _e21, tile, params, texels, _buffer_sizes);
+        return _e25;
     }
     return true;
 }
@@ -937,7 +963,7 @@ metal::float2 children_entry(
     GpuNode n_3,
     metal::float3 origin_3,
     metal::float3 scale_1,
-    Ray ray_8,
+    Ray ray_9,
     metal::float3 inv,
     float tmax_3,
     thread uint& F32_INF
@@ -948,12 +974,12 @@ metal::float2 children_entry(
     metal::float3 _e11 = node_point(origin_3, scale_1, _e10);
     metal::uint3 _e12 = node_box_hi(lq);
     metal::float3 _e13 = node_point(origin_3, scale_1, _e12);
-    float _e16 = slab(_e11, _e13, ray_8.origin, inv, ray_8.tmin, tmax_3, F32_INF);
+    float _e16 = slab(_e11, _e13, ray_9.origin, inv, ray_9.tmin, tmax_3, F32_INF);
     metal::uint3 _e17 = node_box_lo(rq);
     metal::float3 _e18 = node_point(origin_3, scale_1, _e17);
     metal::uint3 _e19 = node_box_hi(rq);
     metal::float3 _e20 = node_point(origin_3, scale_1, _e19);
-    float _e23 = slab(_e18, _e20, ray_8.origin, inv, ray_8.tmin, tmax_3, F32_INF);
+    float _e23 = slab(_e18, _e20, ray_9.origin, inv, ray_9.tmin, tmax_3, F32_INF);
     return metal::float2(_e16, _e23);
 }
 
@@ -970,10 +996,10 @@ metal::uint2 pop(
 }
 
 Candidate intersect_mesh(
-    GpuInstance inst_5,
+    GpuInstance inst_6,
     uint slot_2,
     Ray world_ray,
-    Ray ray_9,
+    Ray ray_10,
     Candidate best_in,
     bool shadow,
     constant TileParams& tile,
@@ -995,9 +1021,9 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    metal::float3 _e8 = safe_inverse(ray_9.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_9);
-    uint base_2 = inst_5.blas_root;
+    metal::float3 _e8 = safe_inverse(ray_10.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_10);
+    uint base_2 = inst_6.blas_root;
     GpuNode header_1 = nodes[base_2];
     metal::float3 origin_4 = header_1.min;
     metal::float3 scale_2 = header_1.max;
@@ -1029,15 +1055,15 @@ Candidate intersect_mesh(
                     break;
                 }
                 uint _e41 = k;
-                uint prim = (inst_5.triangle_offset + first) + _e41;
+                uint prim = (inst_6.triangle_offset + first) + _e41;
                 float _e45 = best.t;
-                metal::float3 _e46 = hit_triangle(_e9, prim, ray_9.tmin, _e45, F32_INF, triangles, _buffer_sizes);
+                metal::float3 _e46 = hit_triangle(_e9, prim, ray_10.tmin, _e45, F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
-                    Candidate c_9 = Candidate {_e46.x, slot_2, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e57 = accept(inst_5, world_ray, c_9, tile, params, instances, triangles, hit_error, attributes, texels, _buffer_sizes);
+                    Candidate c_10 = Candidate {_e46.x, slot_2, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e57 = accept(inst_6, world_ray, c_10, tile, params, instances, triangles, hit_error, attributes, texels, _buffer_sizes);
                     if (_e57) {
-                        best = c_9;
+                        best = c_10;
                         if (shadow) {
                             Candidate _e58 = best;
                             return _e58;
@@ -1049,7 +1075,7 @@ Candidate intersect_mesh(
             uint _e62 = child;
             GpuNode n_7 = nodes[base_2 + _e62];
             float _e68 = best.t;
-            metal::float2 _e69 = children_entry(n_7, origin_4, scale_2, ray_9, _e8, _e68, F32_INF);
+            metal::float2 _e69 = children_entry(n_7, origin_4, scale_2, ray_10, _e8, _e68, F32_INF);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
@@ -1098,7 +1124,7 @@ Candidate intersect_mesh(
 
 Candidate intersect_object(
     uint slot_3,
-    Ray ray_10,
+    Ray ray_11,
     Candidate best_1,
     bool shadow_1,
     constant TileParams& tile,
@@ -1114,13 +1140,13 @@ Candidate intersect_object(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray r_2 = {};
-    GpuInstance inst_7 = instances[slot_3];
-    Ray _e7 = to_object(inst_7, ray_10);
+    GpuInstance inst_8 = instances[slot_3];
+    Ray _e7 = to_object(inst_8, ray_11);
     r_2 = _e7;
     r_2.tmax = best_1.t;
-    if (inst_7.geometry_type == MESH_GEOMETRY) {
+    if (inst_8.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_10, _e14, best_1, shadow_1, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_11, _e14, best_1, shadow_1, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
@@ -1199,7 +1225,7 @@ metal::float3 node_frame_hi(
 }
 
 Candidate intersect_scene(
-    Ray ray_11,
+    Ray ray_12,
     bool shadow_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
@@ -1222,21 +1248,21 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_11.tmax);
+    Candidate _e7 = no_candidate(ray_12.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = frame;
     if (frame_2.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_11.dir);
+    metal::float3 _e16 = safe_inverse(ray_12.dir);
     uint base_3 = frame_2.tlas_root;
     GpuNode header_2 = nodes[base_3];
     metal::float3 origin_5 = header_2.min;
     metal::float3 scale_3 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_11.origin, _e16, ray_11.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_12.origin, _e16, ray_12.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
@@ -1254,7 +1280,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_11, _e55, shadow_2, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_12, _e55, shadow_2, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1266,7 +1292,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_8 = nodes[base_3 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_11, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_12, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1332,9 +1358,9 @@ SkyGradient load_SkyGradient(
 
 metal::float3 sky_gradient(
     SkyGradient b_5,
-    Ray ray_12
+    Ray ray_13
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_12.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_13.dir);
     float y = _e3.y;
     if (y < 0.0) {
         return metal::mix(b_5.horizon, b_5.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
@@ -1345,17 +1371,17 @@ metal::float3 sky_gradient(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_5,
-    Ray ray_13,
+    Ray ray_14,
     device type_4 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_5, params, _buffer_sizes);
-    metal::float3 _e3 = sky_gradient(_e2, ray_13);
+    metal::float3 _e3 = sky_gradient(_e2, ray_14);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_14,
+    Ray ray_15,
     constant FrameUniforms& frame,
     device type_4 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1364,15 +1390,15 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_3 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_14, params, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_15, params, _buffer_sizes);
     return _e9;
 }
 
 metal::float3 shading_normal(
-    Ray ray_15,
+    Ray ray_16,
     Hit hit_5
 ) {
-    metal::float3 ng = metal::faceforward(hit_5.geometric_normal, ray_15.dir, hit_5.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_5.geometric_normal, ray_16.dir, hit_5.geometric_normal);
     return metal::faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1634,9 +1660,9 @@ LightSample sample_light_query(
 
 metal::float3 pbr_fresnel(
     metal::float3 f0_,
-    float c_3
+    float c_4
 ) {
-    float k_1 = 1.0 - metal::saturate(c_3);
+    float k_1 = 1.0 - metal::saturate(c_4);
     float k2_ = k_1 * k_1;
     return f0_ + ((metal::float3(1.0) - f0_) * metal::float3((k2_ * k2_) * k_1));
 }
@@ -1660,12 +1686,12 @@ float pbr_smith_v(
 }
 
 metal::float3 gltf_radiance(
-    metal::float3 c_4,
+    metal::float3 c_5,
     float metallic,
     float roughness_1,
     float occlusion,
     metal::float3 emissive,
-    Ray ray_16,
+    Ray ray_17,
     Hit hit_6,
     constant TileParams& tile,
     constant FrameUniforms& frame,
@@ -1683,12 +1709,12 @@ metal::float3 gltf_radiance(
 ) {
     metal::float3 color = {};
     uint i_2 = {};
-    metal::float3 _e7 = shading_normal(ray_16, hit_6);
-    metal::float3 _e9 = normalize_vec3f(ray_16.dir);
+    metal::float3 _e7 = shading_normal(ray_17, hit_6);
+    metal::float3 _e9 = normalize_vec3f(ray_17.dir);
     metal::float3 v_2 = -(_e9);
     float metal_ = metal::saturate(metallic);
     float _e12 = pbr_alpha2_(roughness_1);
-    metal::float3 f0_1 = metal::mix(metal::float3(0.04), c_4, metal::float3(metal_));
+    metal::float3 f0_1 = metal::mix(metal::float3(0.04), c_5, metal::float3(metal_));
     float ndv_1 = metal::max(metal::dot(_e7, v_2), 0.0001);
     color = emissive;
     uint _e22 = light_count_query(frame);
@@ -1715,7 +1741,7 @@ metal::float3 gltf_radiance(
         float _e41 = pbr_ggx_d(metal::saturate(metal::dot(_e7, _e36)), _e12);
         float _e42 = pbr_smith_v(ndl_1, ndv_1, _e12);
         metal::float3 spec = _e38 * metal::float3(_e41 * _e42);
-        metal::float3 diffuse = ((metal::float3(1.0) - _e38) * c_4) * metal::float3((1.0 - metal_) * INV_PI);
+        metal::float3 diffuse = ((metal::float3(1.0) - _e38) * c_5) * metal::float3((1.0 - metal_) * INV_PI);
         metal::float3 _e56 = color;
         color = _e56 + (((_e29.radiance * metal::float3(ndl_1)) * (diffuse + spec)) * metal::float3(occlusion));
     }
@@ -1725,7 +1751,7 @@ metal::float3 gltf_radiance(
 
 metal::float3 gltf_masked_shade(
     GltfMaskedMaterial m_1,
-    Ray ray_17,
+    Ray ray_18,
     Hit hit_7,
     constant TileParams& tile,
     constant FrameUniforms& frame,
@@ -1742,8 +1768,8 @@ metal::float3 gltf_masked_shade(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv, params, texels, _buffer_sizes);
-    metal::float3 c_10 = m_1.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_10, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_17, hit_7, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 c_11 = m_1.base_color.xyz * _e7.xyz;
+    metal::float3 _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_18, hit_7, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e14;
 }
 
@@ -1767,7 +1793,7 @@ GltfMaterial load_GltfMaterial(
 
 metal::float3 gltf_shade(
     GltfMaterial m_2,
-    Ray ray_18,
+    Ray ray_19,
     Hit hit_8,
     constant TileParams& tile,
     constant FrameUniforms& frame,
@@ -1784,15 +1810,15 @@ metal::float3 gltf_shade(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv, params, texels, _buffer_sizes);
-    metal::float3 c_11 = m_2.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_11, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_18, hit_8, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 c_12 = m_2.base_color.xyz * _e7.xyz;
+    metal::float3 _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_19, hit_8, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e14;
 }
 
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_10,
-    Ray ray_19,
+    Ray ray_20,
     Hit hit_9,
     metal::float3 secondary,
     constant TileParams& tile,
@@ -1812,12 +1838,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e5 = gltf_masked_shade(_e4, ray_19, hit_9, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e5 = gltf_masked_shade(_e4, ray_20, hit_9, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e7 = gltf_shade(_e6, ray_19, hit_9, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e7 = gltf_shade(_e6, ray_20, hit_9, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e7;
         }
         default: {
@@ -1828,8 +1854,8 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_20,
-    Candidate c_5,
+    Ray ray_21,
+    Candidate c_6,
     constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1844,16 +1870,16 @@ metal::float3 shade_direct(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuInstance inst_8 = instances[c_5.slot];
-    Hit _e6 = finish_hit(ray_20, c_5, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, metal::float3(0.0), tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    GpuInstance inst_9 = instances[c_6.slot];
+    Hit _e6 = finish_hit(ray_21, c_6, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_21, _e6, metal::float3(0.0), tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_11,
-    Ray ray_21,
+    Ray ray_22,
     float t_2,
     metal::float3 radiance
 ) {
@@ -1861,7 +1887,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_22,
+    Ray ray_23,
     float t_3,
     metal::float3 radiance_1,
     device type_8 const& instances,
@@ -1870,21 +1896,21 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_22.medium == 0u) {
+    if (ray_23.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_9 = instances[ray_22.medium - 1u];
-    if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
+    GpuInstance inst_10 = instances[ray_23.medium - 1u];
+    if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_22, t_3, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_23, t_3, radiance_1);
     return _e21;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_12,
-    Ray ray_23,
+    Ray ray_24,
     Hit hit_10
 ) {
     return;
@@ -1940,7 +1966,7 @@ metal::float3 trace(
     float t_4 = {};
     type_17 stack = {};
     uint depth = {};
-    Ray ray_24 = {};
+    Ray ray_25 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -1978,7 +2004,7 @@ metal::float3 trace(
     }
     stack = type_17 {};
     depth = 0u;
-    ray_24 = camera_ray;
+    ray_25 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1997,10 +2023,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_24;
+            Ray _e67 = ray_25;
             Candidate _e69 = intersect_scene(_e67, false, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_24;
+            Ray _e70 = ray_25;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -2021,7 +2047,7 @@ metal::float3 trace(
                 radiance_3 = _e93;
             } else {
                 uint _e95 = s_c.slot;
-                GpuInstance inst_10 = instances[_e95];
+                GpuInstance inst_11 = instances[_e95];
                 Hit _e99 = s_hit;
                 hit_12 = _e99;
                 bool _e101 = fresh;
@@ -2041,11 +2067,11 @@ metal::float3 trace(
                 bool _e111 = fresh;
                 uint _e119 = s_ray.depth;
                 uint _e123 = depth;
-                if (((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
+                if (((_e111 && ((inst_11.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
                     spawn_count = 0u;
                     Ray _e131 = s_ray;
                     Hit _e132 = hit_12;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
+                    dispatch_secondary_rays(inst_11.material_type, inst_11.material_offset, _e131, _e132);
                     uint _e134 = spawn_count;
                     uint n_9 = metal::min(metal::min(_e134, 1u), MAX_SPAWN);
                     if (n_9 > 0u) {
@@ -2091,7 +2117,7 @@ metal::float3 trace(
                     Ray _e191 = s_ray;
                     Hit _e192 = hit_12;
                     metal::float3 _e193 = s_sum;
-                    metal::float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+                    metal::float3 _e194 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e191, _e192, _e193, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
                     radiance_3 = _e194;
                 }
             }
@@ -2137,7 +2163,7 @@ metal::float3 trace(
             metal::float3 _e284 = spawn_origin(hit_14, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_24 = Ray {_e284, 0.0, dir_6, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_25 = Ray {_e284, 0.0, dir_6, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -2164,10 +2190,10 @@ metal::bool3 is_finite_vec3f(
 }
 
 metal::float3 finite_or_zero(
-    metal::float3 c_6
+    metal::float3 c_7
 ) {
-    metal::bool3 _e3 = is_finite_vec3f(c_6);
-    return metal::select(metal::float3(0.0), c_6, _e3);
+    metal::bool3 _e3 = is_finite_vec3f(c_7);
+    return metal::select(metal::float3(0.0), c_7, _e3);
 }
 
 void render_pixel(
@@ -2195,7 +2221,7 @@ void render_pixel(
     metal::float3 sum = {};
     uint bad = {};
     uint s_1 = {};
-    Ray ray_25 = {};
+    Ray ray_26 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_2 = tile;
     sum = metal::float3(0.0);
@@ -2220,13 +2246,13 @@ void render_pixel(
         uint sample_3 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
-        ray_25 = _e23;
-        ray_25.depth = 0u;
-        ray_25.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_25.origin;
+        ray_26 = _e23;
+        ray_26.depth = 0u;
+        ray_26.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_26.origin;
         uint _e33 = medium_at(_e31, NO_HIT, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
-        ray_25.medium = _e33;
-        Ray _e34 = ray_25;
+        ray_26.medium = _e33;
+        Ray _e34 = ray_26;
         metal::float3 _e35 = trace(_e34, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {

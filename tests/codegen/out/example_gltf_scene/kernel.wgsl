@@ -81,6 +81,12 @@ struct GpuNode {
     b: u32,
 }
 
+struct Triangle {
+    v0_: vec3<f32>,
+    v1_: vec3<f32>,
+    v2_: vec3<f32>,
+}
+
 struct Hit {
     position: vec3<f32>,
     t: f32,
@@ -90,12 +96,6 @@ struct Hit {
     front_face: bool,
     instance: u32,
     primitive: u32,
-}
-
-struct Triangle {
-    v0_: vec3<f32>,
-    v1_: vec3<f32>,
-    v2_: vec3<f32>,
 }
 
 struct GltfMaskedMaterial {
@@ -168,6 +168,8 @@ const NODE_LEAF_BIT: u32 = 2147483648u;
 const NODE_COUNT_SHIFT: u32 = 27u;
 const NODE_COUNT_MASK: u32 = 15u;
 const NODE_FIRST_MASK: u32 = 134217727u;
+const FLAG_CULL_BACK: u32 = 8u;
+const FLAG_CULL_FRONT: u32 = 16u;
 const FLAG_ANY_HIT: u32 = 1u;
 const POINT_ERROR: f32 = 0.0000019073486f;
 const GAMMA_1_: f32 = 0.00000005960465f;
@@ -409,28 +411,23 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let _e18 = triangles[((slot * 3u) + 1u)];
     let b_6 = (_e18.xyz - r_1.origin);
     let _e28 = triangles[((slot * 3u) + 2u)];
-    let c_7 = (_e28.xyz - r_1.origin);
+    let c_8 = (_e28.xyz - r_1.origin);
     let ax = (a_5[min(r_1.kx, 2u)] - (r_1.shear.x * a_5[min(r_1.kz, 2u)]));
     let ay = (a_5[min(r_1.ky, 2u)] - (r_1.shear.y * a_5[min(r_1.kz, 2u)]));
     let bx = (b_6[min(r_1.kx, 2u)] - (r_1.shear.x * b_6[min(r_1.kz, 2u)]));
     let by = (b_6[min(r_1.ky, 2u)] - (r_1.shear.y * b_6[min(r_1.kz, 2u)]));
-    let cx = (c_7[min(r_1.kx, 2u)] - (r_1.shear.x * c_7[min(r_1.kz, 2u)]));
-    let cy = (c_7[min(r_1.ky, 2u)] - (r_1.shear.y * c_7[min(r_1.kz, 2u)]));
+    let cx = (c_8[min(r_1.kx, 2u)] - (r_1.shear.x * c_8[min(r_1.kz, 2u)]));
+    let cy = (c_8[min(r_1.ky, 2u)] - (r_1.shear.y * c_8[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
     let v_1 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
     let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
     let det = ((u + v_1) + w);
     let rcp = (1f / det);
-    let t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_7[min(r_1.kz, 2u)]))) * rcp);
+    let t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_8[min(r_1.kz, 2u)]))) * rcp);
     let hit_13 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     let _e173 = F32_INF;
     return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_6, (v_1 * rcp), (w * rcp)), hit_13);
-}
-
-fn point_error(origin: vec3<f32>, along: vec3<f32>) -> f32 {
-    let a_6 = (abs(origin) + abs(along));
-    return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
 }
 
 fn load_triangle(slot_1: u32) -> Triangle {
@@ -440,17 +437,35 @@ fn load_triangle(slot_1: u32) -> Triangle {
     return Triangle(v0_1.xyz, v1_.xyz, v2_.xyz);
 }
 
-fn point_to_world(inst_1: GpuInstance, p: vec3<f32>) -> vec3<f32> {
-    let q_1 = vec4<f32>(p, 1f);
-    return vec3<f32>(dot(inst_1.object_to_world_0_, q_1), dot(inst_1.object_to_world_1_, q_1), dot(inst_1.object_to_world_2_, q_1));
+fn normal_to_world(inst_1: GpuInstance, n: vec3<f32>) -> vec3<f32> {
+    let w_1 = (((inst_1.world_to_object_0_.xyz * vec3(n.x)) + (inst_1.world_to_object_1_.xyz * vec3(n.y))) + (inst_1.world_to_object_2_.xyz * vec3(n.z)));
+    let _e19 = normalize_vec3f(w_1);
+    return _e19;
 }
 
-fn mesh_error(inst_2: GpuInstance, v0_: vec3<f32>, db1_: vec3<f32>, db2_: vec3<f32>, p_1: vec3<f32>) -> f32 {
+fn culled(inst_2: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
+    let _e4 = load_triangle(c.primitive);
+    let _e12 = normal_to_world(inst_2, cross((_e4.v1_ - _e4.v0_), (_e4.v2_ - _e4.v0_)));
+    let front = (dot(ray_2.dir, _e12) < 0f);
+    return ((select(FLAG_CULL_BACK, FLAG_CULL_FRONT, front) & inst_2.flags) != 0u);
+}
+
+fn point_error(origin: vec3<f32>, along: vec3<f32>) -> f32 {
+    let a_6 = (abs(origin) + abs(along));
+    return (POINT_ERROR * max(max(a_6.x, a_6.y), a_6.z));
+}
+
+fn point_to_world(inst_3: GpuInstance, p: vec3<f32>) -> vec3<f32> {
+    let q_1 = vec4<f32>(p, 1f);
+    return vec3<f32>(dot(inst_3.object_to_world_0_, q_1), dot(inst_3.object_to_world_1_, q_1), dot(inst_3.object_to_world_2_, q_1));
+}
+
+fn mesh_error(inst_4: GpuInstance, v0_: vec3<f32>, db1_: vec3<f32>, db2_: vec3<f32>, p_1: vec3<f32>) -> f32 {
     let obj = ((vec3(GAMMA_1_) * abs(v0_)) + (vec3(GAMMA_6_) * (abs(db1_) + abs(db2_))));
     let q_2 = vec4<f32>(abs(p_1), 1f);
-    let r0_ = abs(inst_2.object_to_world_0_);
-    let r1_ = abs(inst_2.object_to_world_1_);
-    let r2_ = abs(inst_2.object_to_world_2_);
+    let r0_ = abs(inst_4.object_to_world_0_);
+    let r1_ = abs(inst_4.object_to_world_1_);
+    let r2_ = abs(inst_4.object_to_world_2_);
     let rounding = (vec3(GAMMA_4_) * vec3<f32>(dot(r0_, q_2), dot(r1_, q_2), dot(r2_, q_2)));
     let carried = (vec3((1f + GAMMA_4_)) * vec3<f32>(dot(r0_.xyz, obj), dot(r1_.xyz, obj), dot(r2_.xyz, obj)));
     let e = (rounding + carried);
@@ -458,55 +473,49 @@ fn mesh_error(inst_2: GpuInstance, v0_: vec3<f32>, db1_: vec3<f32>, db2_: vec3<f
 }
 
 fn decode_octahedral(bits: u32) -> vec3<f32> {
-    var n: vec3<f32>;
+    var n_1: vec3<f32>;
 
     let e_1 = unpack2x16snorm(bits);
-    n = vec3<f32>(e_1.x, e_1.y, ((1f - abs(e_1.x)) - abs(e_1.y)));
-    let _e14 = n.z;
+    n_1 = vec3<f32>(e_1.x, e_1.y, ((1f - abs(e_1.x)) - abs(e_1.y)));
+    let _e14 = n_1.z;
     if (_e14 < 0f) {
-        let _e21 = n;
+        let _e21 = n_1;
         let s_4 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
-        let _e29 = n;
+        let _e29 = n_1;
         let xy = ((vec2(1f) - abs(_e29.yx)) * s_4);
-        let _e37 = n.z;
-        n = vec3<f32>(xy.x, xy.y, _e37);
+        let _e37 = n_1.z;
+        n_1 = vec3<f32>(xy.x, xy.y, _e37);
     }
-    let _e39 = n;
+    let _e39 = n_1;
     let _e40 = normalize_vec3f(_e39);
     return _e40;
 }
 
-fn normal_to_world(inst_3: GpuInstance, n_1: vec3<f32>) -> vec3<f32> {
-    let w_1 = (((inst_3.world_to_object_0_.xyz * vec3(n_1.x)) + (inst_3.world_to_object_1_.xyz * vec3(n_1.y))) + (inst_3.world_to_object_2_.xyz * vec3(n_1.z)));
-    let _e19 = normalize_vec3f(w_1);
-    return _e19;
-}
-
-fn finish_hit(ray_2: Ray, c: Candidate) -> Hit {
+fn finish_hit(ray_3: Ray, c_1: Candidate) -> Hit {
     var hit: Hit;
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
-    let inst_6 = instances[c.slot];
-    let _e11 = point_error(ray_2.origin, (ray_2.dir * vec3(c.t)));
+    let inst_7 = instances[c_1.slot];
+    let _e11 = point_error(ray_3.origin, (ray_3.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_2.origin + (ray_2.dir * vec3(c.t))), c.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c.uv, true, inst_6.object, c.primitive);
-    n_geo = c.normal;
-    n_shade = c.normal;
-    if (inst_6.geometry_type == MESH_GEOMETRY) {
-        let _e42 = load_triangle(c.primitive);
-        let b_7 = c.uv;
+    hit = Hit((ray_3.origin + (ray_3.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
+    n_geo = c_1.normal;
+    n_shade = c_1.normal;
+    if (inst_7.geometry_type == MESH_GEOMETRY) {
+        let _e42 = load_triangle(c_1.primitive);
+        let b_7 = c_1.uv;
         let w_2 = ((1f - b_7.x) - b_7.y);
         let e1_ = (_e42.v1_ - _e42.v0_);
         let e2_ = (_e42.v2_ - _e42.v0_);
         let p_6 = (_e42.v0_ + ((e1_ * vec3(b_7.x)) + (e2_ * vec3(b_7.y))));
-        let _e65 = point_to_world(inst_6, p_6);
+        let _e65 = point_to_world(inst_7, p_6);
         hit.position = _e65;
-        let _e73 = mesh_error(inst_6, _e42.v0_, (e1_ * vec3(b_7.x)), (e2_ * vec3(b_7.y)), p_6);
+        let _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_7.x)), (e2_ * vec3(b_7.y)), p_6);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
-        let a0_ = attributes[(c.primitive * 2u)];
-        let a1_ = attributes[((c.primitive * 2u) + 1u)];
+        let a0_ = attributes[(c_1.primitive * 2u)];
+        let a1_ = attributes[((c_1.primitive * 2u) + 1u)];
         let _e91 = decode_octahedral(a0_.x);
         let _e95 = decode_octahedral(a0_.y);
         let _e101 = decode_octahedral(a0_.z);
@@ -521,17 +530,17 @@ fn finish_hit(ray_2: Ray, c: Candidate) -> Hit {
         let uv1_ = unpack2x16float(a1_.x);
         let uv2_ = unpack2x16float(a1_.y);
         hit.uv = (((uv0_ * vec2(w_2)) + (uv1_ * vec2(b_7.x))) + (uv2_ * vec2(b_7.y)));
-        let _e135 = triangles[(c.primitive * 3u)];
+        let _e135 = triangles[(c_1.primitive * 3u)];
         hit.primitive = bitcast<u32>(_e135.w);
     }
     let _e139 = n_geo;
-    let _e140 = normal_to_world(inst_6, _e139);
+    let _e140 = normal_to_world(inst_7, _e139);
     hit.geometric_normal = _e140;
     let _e142 = n_shade;
-    let _e143 = normal_to_world(inst_6, _e142);
+    let _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     let _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_2.dir, _e147) < 0f);
+    hit.front_face = (dot(ray_3.dir, _e147) < 0f);
     let _e151 = hit;
     return _e151;
 }
@@ -573,11 +582,11 @@ fn wrap_texel(x_2: i32, n_2: i32, mode: u32) -> i32 {
     return select(wrapped, min(max(x_2, 0i), (n_2 - 1i)), (mode == TEXTURE_WRAP_CLAMP));
 }
 
-fn srgb_channel(c_1: f32) -> f32 {
-    if (c_1 <= 0.04045f) {
-        return (c_1 / 12.92f);
+fn srgb_channel(c_2: f32) -> f32 {
+    if (c_2 <= 0.04045f) {
+        return (c_2 / 12.92f);
     }
-    return pow(((c_1 + 0.055f) / 1.055f), 2.4f);
+    return pow(((c_2 + 0.055f) / 1.055f), 2.4f);
 }
 
 fn texel_at(t: u32, xi: u32, yi: u32) -> vec4<f32> {
@@ -587,11 +596,11 @@ fn texel_at(t: u32, xi: u32, yi: u32) -> vec4<f32> {
     let format = params[(t + 3u)];
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
         let _e25 = texels[(base_1 + index)];
-        let c_8 = unpack4x8unorm(_e25);
-        let _e28 = srgb_channel(c_8.x);
-        let _e30 = srgb_channel(c_8.y);
-        let _e32 = srgb_channel(c_8.z);
-        return vec4<f32>(_e28, _e30, _e32, c_8.w);
+        let c_9 = unpack4x8unorm(_e25);
+        let _e28 = srgb_channel(c_9.x);
+        let _e30 = srgb_channel(c_9.y);
+        let _e32 = srgb_channel(c_9.z);
+        return vec4<f32>(_e28, _e30, _e32, c_9.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
         let _e40 = texels[(base_1 + index)];
@@ -646,11 +655,11 @@ fn gltf_pcg(x_3: u32) -> u32 {
     return ((word_2 >> 22u) ^ word_2);
 }
 
-fn gltf_coverage(ray_3: Ray, hit_1: Hit) -> f32 {
+fn gltf_coverage(ray_4: Ray, hit_1: Hit) -> f32 {
     var h_1: u32;
 
-    let o_1 = bitcast<vec3<u32>>(ray_3.origin);
-    let d_3 = bitcast<vec3<u32>>(ray_3.dir);
+    let o_1 = bitcast<vec3<u32>>(ray_4.origin);
+    let d_3 = bitcast<vec3<u32>>(ray_4.dir);
     h_1 = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u));
     let _e20 = h_1;
     h_1 = (((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
@@ -665,37 +674,49 @@ fn gltf_coverage(ray_3: Ray, hit_1: Hit) -> f32 {
     return (f32((_e45 >> 8u)) * (1f / 16777216f));
 }
 
-fn gltf_counts(alpha: f32, cutoff: f32, blend: u32, double_sided: u32, ray_4: Ray, hit_2: Hit) -> bool {
+fn gltf_counts(alpha: f32, cutoff: f32, blend: u32, double_sided: u32, ray_5: Ray, hit_2: Hit) -> bool {
     if ((double_sided == 0u) && !(hit_2.front_face)) {
         return false;
     }
     if (blend != 0u) {
-        let _e14 = gltf_coverage(ray_4, hit_2);
+        let _e14 = gltf_coverage(ray_5, hit_2);
         return (_e14 < alpha);
     }
     return (alpha >= cutoff);
 }
 
-fn gltf_masked_any_hit(m: GltfMaskedMaterial, ray_5: Ray, hit_3: Hit) -> bool {
+fn gltf_masked_any_hit(m: GltfMaskedMaterial, ray_6: Ray, hit_3: Hit) -> bool {
     let _e7 = sample_texture(m.base_texture, hit_3.uv);
     let alpha_1 = (m.base_color.w * _e7.w);
-    let _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_5, hit_3);
+    let _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_6, hit_3);
     return _e13;
 }
 
-fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_6: Ray, hit_4: Hit) -> bool {
+fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_7: Ray, hit_4: Hit) -> bool {
     let _e3 = load_GltfMaskedMaterial(offset_3);
-    let _e4 = gltf_masked_any_hit(_e3, ray_6, hit_4);
+    let _e4 = gltf_masked_any_hit(_e3, ray_7, hit_4);
     return _e4;
 }
 
-fn accept(inst_4: GpuInstance, ray_7: Ray, c_2: Candidate) -> bool {
-    if ((inst_4.flags & FLAG_ANY_HIT) != 0u) {
+fn accept(inst_5: GpuInstance, ray_8: Ray, c_3: Candidate) -> bool {
+    var short_circuit: bool;
+
+    let _e9 = ((inst_5.flags & (FLAG_CULL_BACK | FLAG_CULL_FRONT)) != 0u);
+    short_circuit = _e9;
+    if _e9 {
+        let _e11 = culled(inst_5, ray_8, c_3);
+        short_circuit = _e11;
+    }
+    let _e12 = short_circuit;
+    if _e12 {
+        return false;
+    }
+    if ((inst_5.flags & FLAG_ANY_HIT) != 0u) {
         let shaded = hit_error;
-        let _e10 = finish_hit(ray_7, c_2);
+        let _e21 = finish_hit(ray_8, c_3);
         hit_error = shaded;
-        let _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_7, _e10);
-        return _e14;
+        let _e25 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_8, _e21);
+        return _e25;
     }
     return true;
 }
@@ -726,19 +747,19 @@ fn slab(lo: vec3<f32>, hi: vec3<f32>, origin_2: vec3<f32>, inv_dir: vec3<f32>, t
     return bitcast<f32>(_e30);
 }
 
-fn children_entry(n_3: GpuNode, origin_3: vec3<f32>, scale_1: vec3<f32>, ray_8: Ray, inv: vec3<f32>, tmax_3: f32) -> vec2<f32> {
+fn children_entry(n_3: GpuNode, origin_3: vec3<f32>, scale_1: vec3<f32>, ray_9: Ray, inv: vec3<f32>, tmax_3: f32) -> vec2<f32> {
     let lq = bitcast<vec3<u32>>(n_3.min);
     let rq = bitcast<vec3<u32>>(n_3.max);
     let _e10 = node_box_lo(lq);
     let _e11 = node_point(origin_3, scale_1, _e10);
     let _e12 = node_box_hi(lq);
     let _e13 = node_point(origin_3, scale_1, _e12);
-    let _e16 = slab(_e11, _e13, ray_8.origin, inv, ray_8.tmin, tmax_3);
+    let _e16 = slab(_e11, _e13, ray_9.origin, inv, ray_9.tmin, tmax_3);
     let _e17 = node_box_lo(rq);
     let _e18 = node_point(origin_3, scale_1, _e17);
     let _e19 = node_box_hi(rq);
     let _e20 = node_point(origin_3, scale_1, _e19);
-    let _e23 = slab(_e18, _e20, ray_8.origin, inv, ray_8.tmin, tmax_3);
+    let _e23 = slab(_e18, _e20, ray_9.origin, inv, ray_9.tmin, tmax_3);
     return vec2<f32>(_e16, _e23);
 }
 
@@ -750,7 +771,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_9: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_6: GpuInstance, slot_2: u32, world_ray: Ray, ray_10: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -759,9 +780,9 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_9: Ray, 
     var far: u32;
 
     best = best_in;
-    let _e8 = safe_inverse(ray_9.dir);
-    let _e9 = prepare_triangle_ray(ray_9);
-    let base_2 = inst_5.blas_root;
+    let _e8 = safe_inverse(ray_10.dir);
+    let _e9 = prepare_triangle_ray(ray_10);
+    let base_2 = inst_6.blas_root;
     let header_1 = nodes[base_2];
     let origin_4 = header_1.min;
     let scale_2 = header_1.max;
@@ -781,15 +802,15 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_9: Ray, 
                     break;
                 }
                 let _e41 = k;
-                let prim = ((inst_5.triangle_offset + first) + _e41);
+                let prim = ((inst_6.triangle_offset + first) + _e41);
                 let _e45 = best.t;
-                let _e46 = hit_triangle(_e9, prim, ray_9.tmin, _e45);
+                let _e46 = hit_triangle(_e9, prim, ray_10.tmin, _e45);
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
-                    let c_9 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0f));
-                    let _e57 = accept(inst_5, world_ray, c_9);
+                    let c_10 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0f));
+                    let _e57 = accept(inst_6, world_ray, c_10);
                     if _e57 {
-                        best = c_9;
+                        best = c_10;
                         if shadow {
                             let _e58 = best;
                             return _e58;
@@ -805,7 +826,7 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_9: Ray, 
             let _e62 = child;
             let n_7 = nodes[(base_2 + _e62)];
             let _e68 = best.t;
-            let _e69 = children_entry(n_7, origin_4, scale_2, ray_9, _e8, _e68);
+            let _e69 = children_entry(n_7, origin_4, scale_2, ray_10, _e8, _e68);
             let tl = _e69.x;
             let tr = _e69.y;
             let _e73 = F32_INF;
@@ -852,16 +873,16 @@ fn intersect_mesh(inst_5: GpuInstance, slot_2: u32, world_ray: Ray, ray_9: Ray, 
     return _e122;
 }
 
-fn intersect_object(slot_3: u32, ray_10: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_3: u32, ray_11: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
-    let inst_7 = instances[slot_3];
-    let _e7 = to_object(inst_7, ray_10);
+    let inst_8 = instances[slot_3];
+    let _e7 = to_object(inst_8, ray_11);
     r_2 = _e7;
     r_2.tmax = best_1.t;
-    if (inst_7.geometry_type == MESH_GEOMETRY) {
+    if (inst_8.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_7, slot_3, ray_10, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_8, slot_3, ray_11, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -918,7 +939,7 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     return _e5;
 }
 
-fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -927,21 +948,21 @@ fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_11.tmax);
+    let _e7 = no_candidate(ray_12.tmax);
     best_2 = _e7;
     let frame_2 = frame;
     if (frame_2.instance_count == 0u) {
         let _e14 = best_2;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_11.dir);
+    let _e16 = safe_inverse(ray_12.dir);
     let base_3 = frame_2.tlas_root;
     let header_2 = nodes[base_3];
     let origin_5 = header_2.min;
     let scale_3 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_5, _e23, ray_11.origin, _e16, ray_11.tmin, _e27);
+    let _e28 = slab(origin_5, _e23, ray_12.origin, _e16, ray_12.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
@@ -956,7 +977,7 @@ fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e52 = child_1;
                 let _e55 = best_2;
-                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_11, _e55, shadow_2);
+                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_12, _e55, shadow_2);
                 best_2 = _e56;
                 let _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -968,7 +989,7 @@ fn intersect_scene(ray_11: Ray, shadow_2: bool) -> Candidate {
             let _e63 = child_1;
             let n_8 = nodes[(base_3 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_8, origin_5, scale_3, ray_11, _e16, _e69);
+            let _e70 = children_entry(n_8, origin_5, scale_3, ray_12, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
@@ -1028,8 +1049,8 @@ fn load_SkyGradient(offset_4: u32) -> SkyGradient {
     return SkyGradient(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)));
 }
 
-fn sky_gradient(b_5: SkyGradient, ray_12: Ray) -> vec3<f32> {
-    let _e3 = normalize_vec3f(ray_12.dir);
+fn sky_gradient(b_5: SkyGradient, ray_13: Ray) -> vec3<f32> {
+    let _e3 = normalize_vec3f(ray_13.dir);
     let y = _e3.y;
     if (y < 0f) {
         return mix(b_5.horizon, b_5.ground, vec3(min((-(y) * 4f), 1f)));
@@ -1037,23 +1058,23 @@ fn sky_gradient(b_5: SkyGradient, ray_12: Ray) -> vec3<f32> {
     return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y)));
 }
 
-fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_13: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_14: Ray) -> vec3<f32> {
     let _e2 = load_SkyGradient(offset_5);
-    let _e3 = sky_gradient(_e2, ray_13);
+    let _e3 = sky_gradient(_e2, ray_14);
     return _e3;
 }
 
-fn miss(ray_14: Ray) -> vec3<f32> {
+fn miss(ray_15: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_3 = frame;
-    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_14);
+    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_15);
     return _e9;
 }
 
-fn shading_normal(ray_15: Ray, hit_5: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_5.geometric_normal, ray_15.dir, hit_5.geometric_normal);
+fn shading_normal(ray_16: Ray, hit_5: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_5.geometric_normal, ray_16.dir, hit_5.geometric_normal);
     return faceForward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1201,8 +1222,8 @@ fn sample_light_query(i_1: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> L
     return _e28;
 }
 
-fn pbr_fresnel(f0_: vec3<f32>, c_3: f32) -> vec3<f32> {
-    let k_1 = (1f - saturate(c_3));
+fn pbr_fresnel(f0_: vec3<f32>, c_4: f32) -> vec3<f32> {
+    let k_1 = (1f - saturate(c_4));
     let k2_ = (k_1 * k_1);
     return (f0_ + ((vec3(1f) - f0_) * vec3(((k2_ * k2_) * k_1))));
 }
@@ -1218,16 +1239,16 @@ fn pbr_smith_v(ndl: f32, ndv: f32, a2_1: f32) -> f32 {
     return (0.5f / max((gv + gl), 0.00000000000000000001f));
 }
 
-fn gltf_radiance(c_4: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32, emissive: vec3<f32>, ray_16: Ray, hit_6: Hit) -> vec3<f32> {
+fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32, emissive: vec3<f32>, ray_17: Ray, hit_6: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_2: u32;
 
-    let _e7 = shading_normal(ray_16, hit_6);
-    let _e9 = normalize_vec3f(ray_16.dir);
+    let _e7 = shading_normal(ray_17, hit_6);
+    let _e9 = normalize_vec3f(ray_17.dir);
     let v_2 = -(_e9);
     let metal = saturate(metallic);
     let _e12 = pbr_alpha2_(roughness_1);
-    let f0_1 = mix(vec3(0.04f), c_4, vec3(metal));
+    let f0_1 = mix(vec3(0.04f), c_5, vec3(metal));
     let ndv_1 = max(dot(_e7, v_2), 0.0001f);
     color = emissive;
     let _e22 = light_count_query();
@@ -1245,7 +1266,7 @@ fn gltf_radiance(c_4: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32
         let _e41 = pbr_ggx_d(saturate(dot(_e7, _e36)), _e12);
         let _e42 = pbr_smith_v(ndl_1, ndv_1, _e12);
         let spec = (_e38 * vec3((_e41 * _e42)));
-        let diffuse = (((vec3(1f) - _e38) * c_4) * vec3(((1f - metal) * INV_PI)));
+        let diffuse = (((vec3(1f) - _e38) * c_5) * vec3(((1f - metal) * INV_PI)));
         let _e56 = color;
         color = (_e56 + (((_e29.radiance * vec3(ndl_1)) * (diffuse + spec)) * vec3(occlusion)));
         continuing {
@@ -1257,10 +1278,10 @@ fn gltf_radiance(c_4: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32
     return _e68;
 }
 
-fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_17: Ray, hit_7: Hit) -> vec3<f32> {
+fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_18: Ray, hit_7: Hit) -> vec3<f32> {
     let _e7 = sample_texture(m_1.base_texture, hit_7.uv);
-    let c_10 = (m_1.base_color.xyz * _e7.xyz);
-    let _e14 = gltf_radiance(c_10, m_1.metallic, m_1.roughness, 1f, m_1.emissive, ray_17, hit_7);
+    let c_11 = (m_1.base_color.xyz * _e7.xyz);
+    let _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1f, m_1.emissive, ray_18, hit_7);
     return _e14;
 }
 
@@ -1278,23 +1299,23 @@ fn load_GltfMaterial(offset_9: u32) -> GltfMaterial {
     return GltfMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), vec3<f32>(bitcast<f32>(_e47), bitcast<f32>(_e53), bitcast<f32>(_e59)));
 }
 
-fn gltf_shade(m_2: GltfMaterial, ray_18: Ray, hit_8: Hit) -> vec3<f32> {
+fn gltf_shade(m_2: GltfMaterial, ray_19: Ray, hit_8: Hit) -> vec3<f32> {
     let _e7 = sample_texture(m_2.base_texture, hit_8.uv);
-    let c_11 = (m_2.base_color.xyz * _e7.xyz);
-    let _e14 = gltf_radiance(c_11, m_2.metallic, m_2.roughness, 1f, m_2.emissive, ray_18, hit_8);
+    let c_12 = (m_2.base_color.xyz * _e7.xyz);
+    let _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1f, m_2.emissive, ray_19, hit_8);
     return _e14;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_19: Ray, hit_9: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_20: Ray, hit_9: Hit, secondary: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e4 = load_GltfMaskedMaterial(offset_10);
-            let _e5 = gltf_masked_shade(_e4, ray_19, hit_9);
+            let _e5 = gltf_masked_shade(_e4, ray_20, hit_9);
             return _e5;
         }
         case 1u: {
             let _e6 = load_GltfMaterial(offset_10);
-            let _e7 = gltf_shade(_e6, ray_19, hit_9);
+            let _e7 = gltf_shade(_e6, ray_20, hit_9);
             return _e7;
         }
         default: {
@@ -1303,33 +1324,33 @@ fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_19: Ray, hit_9: Hit,
     return vec3<f32>();
 }
 
-fn shade_direct(ray_20: Ray, c_5: Candidate) -> vec3<f32> {
-    let inst_8 = instances[c_5.slot];
-    let _e6 = finish_hit(ray_20, c_5);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, vec3(0f));
+fn shade_direct(ray_21: Ray, c_6: Candidate) -> vec3<f32> {
+    let inst_9 = instances[c_6.slot];
+    let _e6 = finish_hit(ray_21, c_6);
+    let _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_21, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_21: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_22: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_22: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_23: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_22.medium == 0u) {
+    if (ray_23.medium == 0u) {
         return radiance_1;
     }
-    let inst_9 = instances[(ray_22.medium - 1u)];
-    if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
+    let inst_10 = instances[(ray_23.medium - 1u)];
+    if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_22, t_3, radiance_1);
+    let _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_23, t_3, radiance_1);
     return _e21;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_23: Ray, hit_10: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_24: Ray, hit_10: Hit) {
     return;
 }
 
@@ -1357,7 +1378,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_4: f32;
     var stack: array<Frame, 4>;
     var depth: u32;
-    var ray_24: Ray;
+    var ray_25: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1396,7 +1417,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 4>();
     depth = 0u;
-    ray_24 = camera_ray;
+    ray_25 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1412,10 +1433,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_24;
+            let _e67 = ray_25;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_24;
+            let _e70 = ray_25;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1436,7 +1457,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 radiance_3 = _e93;
             } else {
                 let _e95 = s_c.slot;
-                let inst_10 = instances[_e95];
+                let inst_11 = instances[_e95];
                 let _e99 = s_hit;
                 hit_12 = _e99;
                 let _e101 = fresh;
@@ -1456,11 +1477,11 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 let _e111 = fresh;
                 let _e119 = s_ray.depth;
                 let _e123 = depth;
-                if (((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
+                if (((_e111 && ((inst_11.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
                     spawn_count = 0u;
                     let _e131 = s_ray;
                     let _e132 = hit_12;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
+                    dispatch_secondary_rays(inst_11.material_type, inst_11.material_offset, _e131, _e132);
                     let _e134 = spawn_count;
                     let n_9 = min(min(_e134, 1u), MAX_SPAWN);
                     if (n_9 > 0u) {
@@ -1501,7 +1522,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                     let _e191 = s_ray;
                     let _e192 = hit_12;
                     let _e193 = s_sum;
-                    let _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
+                    let _e194 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e191, _e192, _e193);
                     radiance_3 = _e194;
                 }
             }
@@ -1547,7 +1568,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e284 = spawn_origin(hit_14, _e283, dir_6);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_24 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_25 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -1571,16 +1592,16 @@ fn is_finite_vec3f(x_5: vec3<f32>) -> vec3<bool> {
     return ((bitcast<vec3<u32>>(x_5) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
-fn finite_or_zero(c_6: vec3<f32>) -> vec3<f32> {
-    let _e3 = is_finite_vec3f(c_6);
-    return select(vec3(0f), c_6, _e3);
+fn finite_or_zero(c_7: vec3<f32>) -> vec3<f32> {
+    let _e3 = is_finite_vec3f(c_7);
+    return select(vec3(0f), c_7, _e3);
 }
 
 fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s_1: u32;
-    var ray_25: Ray;
+    var ray_26: Ray;
 
     let frame_5 = frame;
     let tile_2 = tile;
@@ -1597,13 +1618,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
         let sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_25 = _e23;
-        ray_25.depth = 0u;
-        ray_25.kind = RAY_CAMERA;
-        let _e31 = ray_25.origin;
+        ray_26 = _e23;
+        ray_26.depth = 0u;
+        ray_26.kind = RAY_CAMERA;
+        let _e31 = ray_26.origin;
         let _e33 = medium_at(_e31, NO_HIT);
-        ray_25.medium = _e33;
-        let _e34 = ray_25;
+        ray_26.medium = _e33;
+        let _e34 = ray_26;
         let _e35 = trace(_e34);
         let _e36 = is_finite_vec3f(_e35);
         if all(_e36) {
