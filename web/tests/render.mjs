@@ -120,8 +120,9 @@ for (const { scene, width, height, samples } of cases) {
   const psnr = mse === 0 ? Infinity : 10 * Math.log10((255 * 255) / mse);
   const ok = psnr >= 40;
   if (!ok) failed = true;
+  // A leading newline: Dawn's warnings (printed by wgpu) end without one.
   console.log(
-    `${ok ? 'ok  ' : 'FAIL'} ${scene} ${width}x${height} ${samples} spp (${stats.passes} passes, ` +
+    `\n${ok ? 'ok  ' : 'FAIL'} ${scene} ${width}x${height} ${samples} spp (${stats.passes} passes, ` +
       `${stats.renderMs.toFixed(1)} ms submit): PSNR ${psnr.toFixed(2)} dB, ${differing} pixels differ`,
   );
 }
