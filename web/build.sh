@@ -3,7 +3,9 @@
 # (`--target web`, an ES module with an async init) and pkg/node/ for Node (`--target nodejs`,
 # what web/tests/*.mjs load).
 #
-#   bash web/build.sh
+#   bash web/build.sh              the compiler
+#   bash web/build.sh --renderer   the compiler and the renderer (feature `renderer`: rtc-runtime
+#                                  on wgpu's WebGPU backend; web/tests/render.mjs needs it)
 #
 # Needs the wasm32-unknown-unknown target (added with rustup if missing) and wasm-bindgen-cli of
 # exactly the version of the `wasm-bindgen` crate in Cargo.lock; that one is installed once into
@@ -25,7 +27,9 @@ if command -v rustup >/dev/null 2>&1 && ! rustup target list --installed | grep 
 fi
 
 start=$SECONDS
-cargo build -p rtc-web --target wasm32-unknown-unknown --release
+features=()
+[ "${1:-}" = "--renderer" ] && features=(--features renderer)
+cargo build -p rtc-web --target wasm32-unknown-unknown --release "${features[@]}"
 wasm=target/wasm32-unknown-unknown/release/rtc_web.wasm
 rm -rf web/pkg
 "$bindgen" --target web --out-dir web/pkg/web "$wasm"

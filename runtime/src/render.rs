@@ -52,7 +52,7 @@
     )
 )]
 
-use std::time::Instant;
+use web_time::Instant;
 
 use glam::Mat4;
 use rtc_bvh::Aabb;
@@ -931,6 +931,22 @@ impl<'g> Renderer<'g> {
         Ok(LinearImage::from_accumulation(width, height, &accum)?)
     }
 
+    /// [`image`](Self::image) without blocking, for the web (`wasm32`).
+    #[cfg(target_arch = "wasm32")]
+    pub async fn image_async(&self) -> Result<LinearImage, RenderError> {
+        let [width, height] = self.size;
+        let accum = self.scene.read_accumulation_async(self.gpu).await?;
+        Ok(LinearImage::from_accumulation(width, height, &accum)?)
+    }
+
+    /// The kernel's counters (rays traced since the accumulation started, non-finite samples,
+    /// dropped shadow queries) without blocking, for the web (`wasm32`), where
+    /// [`accumulate`](Self::accumulate) reads none back and its stats count no traced rays.
+    #[cfg(target_arch = "wasm32")]
+    pub async fn counters_async(&self) -> Result<crate::scene::Counters, RenderError> {
+        Ok(self.scene.read_counters_async(self.gpu).await?)
+    }
+
     /// Adds `passes` passes (each [`samples_per_pass`](Self::samples_per_pass) samples per
     /// pixel) to the running accumulation, after uploading what changed (rebuilding the
     /// scene-level BVH first if an object moved); a change since the last pass (camera,
@@ -1010,7 +1026,8 @@ impl<'g> Renderer<'g> {
             render_ms += d.dispatch_ms;
             flush_ms += d.flush_ms;
             tiles += u64::from(d.tiles);
-            if passes > 1 {
+            // On the web the counters are read only by `counters_async` (nothing may block).
+            if passes > 1 && cfg!(not(target_arch = "wasm32")) {
                 let rays = self.scene.read_counters(gpu)?.rays;
                 rays_traced += u64::from(rays.wrapping_sub(last_rays));
                 last_rays = rays;
@@ -1019,7 +1036,10 @@ impl<'g> Renderer<'g> {
         self.passes_done = self.passes_done.saturating_add(passes);
 
         let start = Instant::now();
+        #[cfg(not(target_arch = "wasm32"))]
         let counters = self.scene.read_counters(gpu)?;
+        #[cfg(target_arch = "wasm32")]
+        let counters = crate::scene::Counters::default();
         rays_traced += u64::from(counters.rays.wrapping_sub(last_rays));
         let readback_ms = ms_since(start);
         let messages = gpu.take_uncaptured_errors();

@@ -33,6 +33,11 @@ use std::path::PathBuf;
 use std::sync::{Arc, OnceLock};
 use wasm_bindgen::prelude::*;
 
+#[cfg(all(feature = "renderer", target_arch = "wasm32"))]
+mod render;
+#[cfg(all(feature = "renderer", target_arch = "wasm32"))]
+pub use render::{init_gpu, WebRenderer};
+
 mod embedded {
     include!(concat!(env!("OUT_DIR"), "/stdlib.rs"));
 }
@@ -243,6 +248,42 @@ impl Compiler {
             manifest,
             diagnostics: json_diagnostics(sources, &diagnostics),
             rendered: diag::render_human(sources, &diagnostics, false) + &rendered_extra,
+        }
+    }
+}
+
+impl Compiler {
+    /// The kernel modules of the scene of `roots`, for the renderer (no target text is written);
+    /// the rendered diagnostics when it has errors.
+    pub fn compile_scene(
+        &self,
+        files: MemoryFiles,
+        roots: &[String],
+        options: &CompileOptions,
+    ) -> Result<rtc_compiler::kernel::CompiledScene, String> {
+        let paths: Vec<PathBuf> = roots.iter().map(PathBuf::from).collect();
+        let compiler_options = self.options(files);
+        let request = Request {
+            paths: &paths,
+            scene: options.scene.as_deref(),
+            options: &compiler_options,
+            link: &LinkOptions {
+                all_programs: options.all_programs,
+                ..LinkOptions::default()
+            },
+            kernel: &KernelOptions {
+                exec: options.exec,
+                ..KernelOptions::default()
+            },
+            targets: &[],
+        };
+        match pipeline::compile(&request) {
+            Ok(compiled) => Ok(compiled.scene),
+            Err(f) => Err(diag::render_human(
+                &f.checked.sources,
+                &f.diagnostics,
+                false,
+            )),
         }
     }
 }

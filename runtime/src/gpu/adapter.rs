@@ -17,7 +17,7 @@
 
 use std::fmt;
 use std::str::FromStr;
-use std::time::Instant;
+use web_time::Instant;
 
 use super::{elapsed_ms, AdapterError, InitTimings};
 
@@ -188,7 +188,9 @@ impl fmt::Display for AdapterDescription {
 }
 
 /// Lists every adapter the instance sees under `choice.backend` (or `WGPU_BACKEND`), unfiltered
-/// by name or device type, in enumeration order.
+/// by name or device type, in enumeration order. Not on the web, which offers one adapter and
+/// no blocking wait for it.
+#[cfg(not(target_arch = "wasm32"))]
 pub fn list_adapters(choice: &AdapterChoice) -> Vec<AdapterDescription> {
     let (instance, backends) = instance_for(choice);
     pollster::block_on(instance.enumerate_adapters(backends))
@@ -198,14 +200,16 @@ pub fn list_adapters(choice: &AdapterChoice) -> Vec<AdapterDescription> {
 }
 
 /// Chooses the adapter by the rules in the module docs.
-pub(super) fn select(choice: &AdapterChoice) -> Result<(wgpu::Adapter, InitTimings), AdapterError> {
+pub(super) async fn select(
+    choice: &AdapterChoice,
+) -> Result<(wgpu::Adapter, InitTimings), AdapterError> {
     let mut timings = InitTimings::default();
     let start = Instant::now();
     let (instance, backends) = instance_for(choice);
     timings.instance_ms = elapsed_ms(start);
 
     let start = Instant::now();
-    let adapters = pollster::block_on(instance.enumerate_adapters(backends));
+    let adapters = instance.enumerate_adapters(backends).await;
     if adapters.is_empty() {
         return Err(AdapterError::NoAdapter {
             backends: backend_names(backends),

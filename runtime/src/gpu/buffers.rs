@@ -24,7 +24,7 @@
 
 use std::collections::BTreeMap;
 use std::hash::{BuildHasher, Hasher};
-use std::time::Instant;
+use web_time::Instant;
 
 use super::pipeline::{BindingDesc, BindingKind};
 use super::{elapsed_ms, Gpu};

@@ -20,8 +20,9 @@
 //! grows; wgpu errors inside a batch come back as [`DispatchError::Wgpu`]; read-back never panics
 //! (`map_async` is waited for with a channel and a blocking poll).
 
+#[cfg(not(target_arch = "wasm32"))]
 use std::sync::mpsc;
-use std::time::Instant;
+use web_time::Instant;
 
 use super::buffers::{BufferError, BufferSet};
 use super::pipeline::{BindingKind, Kernel};
@@ -478,9 +479,72 @@ fn read_mapped<T>(
     size: u64,
     consume: impl FnOnce(&[u8]) -> T,
 ) -> Result<T, DispatchError> {
+    match copy_to_staging(gpu, buffer, size)? {
+        Some(staging) => map_read(gpu, &staging, size, consume),
+        None => Ok(consume(&[])),
+    }
+}
+
+/// [`read_buffer`] without blocking, for the web (`wasm32`): the copy is submitted and the
+/// mapping awaited (the browser completes it; there is no poll to call).
+#[cfg(target_arch = "wasm32")]
+pub async fn read_buffer_async(
+    gpu: &Gpu,
+    buffer: &wgpu::Buffer,
+    size: u64,
+) -> Result<Vec<u8>, DispatchError> {
+    let Some(staging) = copy_to_staging(gpu, buffer, size)? else {
+        return Ok(Vec::new());
+    };
+    let (sender, receiver) = super::web::oneshot();
+    staging.map_async(wgpu::MapMode::Read, .., move |result| sender.send(result));
+    let map_error = |message: String| DispatchError::Map { size, message };
+    match receiver.await {
+        Some(Ok(())) => {}
+        Some(Err(e)) => return Err(map_error(error_chain(&e))),
+        None => return Err(map_error("the mapping was dropped".to_string())),
+    }
+    let bytes = {
+        let view = staging
+            .get_mapped_range(..)
+            .map_err(|e| map_error(error_chain(&e)))?;
+        view[..size as usize].to_vec()
+    };
+    staging.unmap();
+    Ok(bytes)
+}
+
+/// [`read_vec4_f32`] without blocking, for the web (`wasm32`).
+#[cfg(target_arch = "wasm32")]
+pub async fn read_vec4_f32_async(
+    gpu: &Gpu,
+    buffers: &BufferSet,
+    binding: u32,
+) -> Result<Vec<[f32; 4]>, DispatchError> {
+    let (Some(buffer), Some(size)) = (buffers.buffer(binding), buffers.bound_size(binding)) else {
+        return Err(BufferError::Missing {
+            set: buffers.label().to_string(),
+            binding,
+        }
+        .into());
+    };
+    let size = size - size % 16;
+    let bytes = read_buffer_async(gpu, buffer, size).await?;
+    let mut out = vec![[0f32; 4]; bytes.len() / 16];
+    bytemuck::cast_slice_mut::<[f32; 4], u8>(&mut out).copy_from_slice(&bytes);
+    Ok(out)
+}
+
+/// Copies `size` bytes of `buffer` (rounded up to a multiple of 4) into a new `MAP_READ`
+/// staging buffer and submits the copy; `None` when there is nothing to copy.
+fn copy_to_staging(
+    gpu: &Gpu,
+    buffer: &wgpu::Buffer,
+    size: u64,
+) -> Result<Option<wgpu::Buffer>, DispatchError> {
     let copy_size = size.next_multiple_of(wgpu::COPY_BUFFER_ALIGNMENT);
     if copy_size == 0 {
-        return Ok(consume(&[]));
+        return Ok(None);
     }
     if copy_size > buffer.size() {
         return Err(DispatchError::Map {
@@ -505,12 +569,35 @@ fn read_mapped<T>(
         staging
     });
     wgpu_result("read-back copy", error)?;
-    map_read(gpu, &staging, size, consume)
+    Ok(Some(staging))
 }
 
 /// Waits for the submitted work, maps the `MAP_READ` buffer `staging` and hands its first `size`
 /// bytes to `consume`, then unmaps it.
 fn map_read<T>(
+    gpu: &Gpu,
+    staging: &wgpu::Buffer,
+    size: u64,
+    consume: impl FnOnce(&[u8]) -> T,
+) -> Result<T, DispatchError> {
+    // A page cannot block for a mapping: read back with `read_buffer_async` there.
+    #[cfg(target_arch = "wasm32")]
+    {
+        let _ = (gpu, staging, consume);
+        Err(DispatchError::Map {
+            size,
+            message: "a blocking read-back is not possible on the web (the wavefront model \
+                      reads a flag back every round; render with the megakernel there)"
+                .to_string(),
+        })
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    map_read_blocking(gpu, staging, size, consume)
+}
+
+/// [`map_read`] off the web: a channel and a blocking poll.
+#[cfg(not(target_arch = "wasm32"))]
+fn map_read_blocking<T>(
     gpu: &Gpu,
     staging: &wgpu::Buffer,
     size: u64,

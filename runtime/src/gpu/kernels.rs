@@ -22,7 +22,7 @@
 use std::fmt;
 use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Mutex, PoisonError};
-use std::time::Instant;
+use web_time::Instant;
 
 use super::pipeline::{build, prepare, Prepared};
 use super::{elapsed_ms, Gpu, Kernel, KernelDesc, PipelineError, PipelineTimings};
@@ -139,9 +139,14 @@ impl Gpu {
                 *slot = Some(result);
             }
         };
+        // The web has no threads (and wgpu's handles there are not `Send`): one at a time.
+        #[cfg(target_arch = "wasm32")]
+        work();
+        #[cfg(not(target_arch = "wasm32"))]
         let threads = std::thread::available_parallelism()
             .map_or(1, |n| n.get())
             .min(count);
+        #[cfg(not(target_arch = "wasm32"))]
         if threads <= 1 {
             work();
         } else {

@@ -29,18 +29,24 @@ mod host;
 mod kernels;
 mod pipeline;
 mod pipeline_cache;
+#[cfg(target_arch = "wasm32")]
+mod web;
 
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, PoisonError};
-use std::time::Instant;
+use web_time::Instant;
 
-pub use adapter::{list_adapters, AdapterChoice, AdapterChoiceParseError, AdapterDescription};
+#[cfg(not(target_arch = "wasm32"))]
+pub use adapter::list_adapters;
+pub use adapter::{AdapterChoice, AdapterChoiceParseError, AdapterDescription};
 pub use buffers::{BufferError, BufferLimits, BufferSet, UploadOutcome, UploadStats};
 pub use cpu::HostCpu;
 pub use dispatch::{
     dispatch_once, plan_tiles, read_buffer, read_vec4_f32, DispatchError, DispatchReport,
     RoundKernels, RoundsReport, TileConfig, TileDispatcher, TileParams, TILE_PARAMS_WGSL,
 };
+#[cfg(target_arch = "wasm32")]
+pub use dispatch::{read_buffer_async, read_vec4_f32_async};
 pub use host::{
     missing_capabilities, required_limits, FromDeviceError, MissingCapability,
     KERNEL_STORAGE_BUFFERS,
@@ -179,16 +185,28 @@ impl Gpu {
     /// Chooses an adapter (see [`AdapterChoice`] for the rules) and creates a device with the
     /// adapter's own limits; the pipeline cache is configured from the environment
     /// ([`GpuOptions::from_env`]).
+    #[cfg(not(target_arch = "wasm32"))]
     pub fn new(choice: &AdapterChoice) -> Result<Self, AdapterError> {
         Self::with_options(choice, &GpuOptions::from_env())
     }
 
     /// [`Gpu::new`] with explicit options.
+    #[cfg(not(target_arch = "wasm32"))]
     pub fn with_options(
         choice: &AdapterChoice,
         options: &GpuOptions,
     ) -> Result<Self, AdapterError> {
-        let (adapter, mut init_timings) = adapter::select(choice)?;
+        pollster::block_on(Self::with_options_async(choice, options))
+    }
+
+    /// [`Gpu::with_options`] without blocking, for the web (`wasm32`, where the adapter and
+    /// device requests are promises) or an async host. On the web the device gets WebGPU's
+    /// default limits ([`required_limits`]): a page requests no raised limits.
+    pub async fn with_options_async(
+        choice: &AdapterChoice,
+        options: &GpuOptions,
+    ) -> Result<Self, AdapterError> {
+        let (adapter, mut init_timings) = adapter::select(choice).await?;
         let info = adapter.get_info();
         let description = AdapterDescription::from_info(&info);
 
@@ -207,17 +225,21 @@ impl Gpu {
             } else {
                 wgpu::Features::empty()
             },
-            required_limits: adapter.limits(),
+            required_limits: if cfg!(target_arch = "wasm32") {
+                required_limits()
+            } else {
+                adapter.limits()
+            },
             experimental_features: wgpu::ExperimentalFeatures::disabled(),
             memory_hints: wgpu::MemoryHints::Performance,
             trace: wgpu::Trace::Off,
         };
-        let (device, queue) =
-            pollster::block_on(adapter.request_device(&descriptor)).map_err(|source| {
-                AdapterError::RequestDevice {
-                    adapter: info.name.clone(),
-                    source,
-                }
+        let (device, queue) = adapter
+            .request_device(&descriptor)
+            .await
+            .map_err(|source| AdapterError::RequestDevice {
+                adapter: info.name.clone(),
+                source,
             })?;
         init_timings.device_ms = elapsed_ms(start);
 
@@ -433,8 +455,20 @@ impl Gpu {
     /// Runs `f` inside validation, out-of-memory and internal error scopes and returns its value
     /// with the first error raised, rendered with its source chain.
     /// Error scopes are per thread in wgpu, so kernels may be created on several threads at once.
+    ///
+    /// On the web (`wasm32`) nothing may block, so the scopes are popped in spawned futures and
+    /// their errors are recorded for [`Gpu::take_uncaptured_errors`] instead: this returns no
+    /// error, and a failure surfaces at the next check of the recorded errors (the end of
+    /// [`Renderer::accumulate`](crate::render::Renderer::accumulate), for one).
     pub fn scoped<T>(&self, f: impl FnOnce() -> T) -> (T, Option<String>) {
-        scoped_on(&self.device, f)
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            scoped_on(&self.device, f)
+        }
+        #[cfg(target_arch = "wasm32")]
+        {
+            (scoped_deferred(&self.device, &self.uncaptured, f), None)
+        }
     }
 
     /// Blocks until all submitted work is done.
@@ -458,6 +492,31 @@ fn scoped_on<T>(device: &wgpu::Device, f: impl FnOnce() -> T) -> (T, Option<Stri
     ];
     let first = errors.into_iter().flatten().next().map(|e| error_chain(&e));
     (value, first)
+}
+
+/// [`Gpu::scoped`] on the web: the scopes' errors go to `sink` once their futures resolve.
+#[cfg(target_arch = "wasm32")]
+fn scoped_deferred<T>(
+    device: &wgpu::Device,
+    sink: &Arc<Mutex<Vec<String>>>,
+    f: impl FnOnce() -> T,
+) -> T {
+    let internal = device.push_error_scope(wgpu::ErrorFilter::Internal);
+    let oom = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+    let validation = device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let value = f();
+    let pops = [validation.pop(), oom.pop(), internal.pop()];
+    let sink = Arc::clone(sink);
+    wasm_bindgen_futures::spawn_local(async move {
+        for pop in pops {
+            if let Some(error) = pop.await {
+                sink.lock()
+                    .unwrap_or_else(PoisonError::into_inner)
+                    .push(error_chain(&error));
+            }
+        }
+    });
+    value
 }
 
 /// Renders an error and all its sources on one line (wgpu's `Display` often hides the detail).

@@ -26,7 +26,7 @@ use std::borrow::Cow;
 use std::collections::BTreeMap;
 use std::fmt;
 use std::num::NonZeroU64;
-use std::time::Instant;
+use web_time::Instant;
 
 use super::dispatch::TileParams;
 use super::kernels::{KernelOrigin, KernelReport};

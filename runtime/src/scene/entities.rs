@@ -26,7 +26,7 @@
 
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
-use std::time::Instant;
+use web_time::Instant;
 
 use glam::{Mat4, Vec3, Vec4};
 use rtc_bvh::quantized::quantize;

@@ -330,18 +330,45 @@ impl GpuScene {
             return Ok(Counters::default());
         };
         let bytes = read_buffer(gpu, buffer, COUNTER_BYTES)?;
-        let word = |index: u32| {
-            let at = index as usize * 4;
-            bytes
-                .get(at..at + 4)
-                .and_then(|b| <[u8; 4]>::try_from(b).ok())
-                .map_or(0, u32::from_le_bytes)
+        Ok(counters_from(&bytes))
+    }
+
+    /// [`read_accumulation`](Self::read_accumulation) without blocking (the web).
+    #[cfg(target_arch = "wasm32")]
+    pub async fn read_accumulation_async(&self, gpu: &Gpu) -> Result<Vec<[f32; 4]>, SceneError> {
+        let Some(b) = abi::binding("accum").filter(|_| self.has("accum")) else {
+            return Ok(Vec::new());
         };
-        Ok(Counters {
-            nonfinite: word(abi::COUNTER_NONFINITE),
-            rays: word(abi::COUNTER_RAYS),
-            shadow_overflow: word(abi::COUNTER_SHADOW_OVERFLOW),
-        })
+        Ok(crate::gpu::read_vec4_f32_async(gpu, &self.buffers, b.binding).await?)
+    }
+
+    /// [`read_counters`](Self::read_counters) without blocking (the web).
+    #[cfg(target_arch = "wasm32")]
+    pub async fn read_counters_async(&self, gpu: &Gpu) -> Result<Counters, SceneError> {
+        let buffer = abi::binding("counters")
+            .filter(|_| self.has("counters"))
+            .and_then(|b| self.buffers.buffer(b.binding));
+        let Some(buffer) = buffer else {
+            return Ok(Counters::default());
+        };
+        let bytes = crate::gpu::read_buffer_async(gpu, buffer, COUNTER_BYTES).await?;
+        Ok(counters_from(&bytes))
+    }
+}
+
+/// The counters from the first bytes of the `counters` buffer (missing words read as 0).
+fn counters_from(bytes: &[u8]) -> Counters {
+    let word = |index: u32| {
+        let at = index as usize * 4;
+        bytes
+            .get(at..at + 4)
+            .and_then(|b| <[u8; 4]>::try_from(b).ok())
+            .map_or(0, u32::from_le_bytes)
+    };
+    Counters {
+        nonfinite: word(abi::COUNTER_NONFINITE),
+        rays: word(abi::COUNTER_RAYS),
+        shadow_overflow: word(abi::COUNTER_SHADOW_OVERFLOW),
     }
 }
 
