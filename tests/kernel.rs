@@ -347,7 +347,9 @@ fn a_model_with_only_a_point_light_links_no_other_light_and_no_any_hit() {
             "entries": [{
                 "path": "model.gltf",
                 "read": true,
-                "holds": ["opaque material", "point light"],
+                // glTF's default `doubleSided` is false: the file's material is single-sided, which
+                // switches traversal-side culling on (no type, no any-hit).
+                "holds": ["opaque material", "point light", "single-sided opaque material"],
             }],
             "linked": ["GltfMaterial", "PointLight"],
         })
@@ -432,6 +434,9 @@ fn a_model_the_compiler_cannot_read_links_every_model_type_and_says_why() {
             "GltfMappedMaterial",
             "GltfMaskedMaterial",
             "GltfMaskedMappedMaterial",
+            "GltfDetailMaterial",
+            "GltfMaskedDetailMaterial",
+            "GltfTransmissiveMaterial",
             "PointLight",
             "DirectionalLight",
             "SpotLight"
