@@ -455,6 +455,12 @@ pub fn read_vec4_f32(
     buffers: &BufferSet,
     binding: u32,
 ) -> Result<Vec<[f32; 4]>, DispatchError> {
+    let (buffer, size) = vec4_binding(buffers, binding)?;
+    read_mapped(gpu, buffer, size, vec4s_from)
+}
+
+/// The buffer at `binding` of `buffers` and its bound size rounded down to whole `vec4f`s.
+fn vec4_binding(buffers: &BufferSet, binding: u32) -> Result<(&wgpu::Buffer, u64), DispatchError> {
     let (Some(buffer), Some(size)) = (buffers.buffer(binding), buffers.bound_size(binding)) else {
         return Err(BufferError::Missing {
             set: buffers.label().to_string(),
@@ -462,13 +468,16 @@ pub fn read_vec4_f32(
         }
         .into());
     };
-    let size = size - size % 16;
-    read_mapped(gpu, buffer, size, |bytes| {
-        let mut out = vec![[0f32; 4]; bytes.len() / 16];
-        // One copy into typed memory: no alignment assumption about the mapping.
-        bytemuck::cast_slice_mut::<[f32; 4], u8>(&mut out).copy_from_slice(bytes);
-        out
-    })
+    Ok((buffer, size - size % 16))
+}
+
+/// Whole `vec4f`s from read-back bytes: one copy into typed memory, so no alignment assumption
+/// about the mapping.
+fn vec4s_from(bytes: &[u8]) -> Vec<[f32; 4]> {
+    let whole = bytes.len() - bytes.len() % 16;
+    let mut out = vec![[0f32; 4]; whole / 16];
+    bytemuck::cast_slice_mut::<[f32; 4], u8>(&mut out).copy_from_slice(&bytes[..whole]);
+    out
 }
 
 /// Copies `size` bytes of `buffer` into a staging buffer, maps it and hands the bytes to
@@ -521,18 +530,8 @@ pub async fn read_vec4_f32_async(
     buffers: &BufferSet,
     binding: u32,
 ) -> Result<Vec<[f32; 4]>, DispatchError> {
-    let (Some(buffer), Some(size)) = (buffers.buffer(binding), buffers.bound_size(binding)) else {
-        return Err(BufferError::Missing {
-            set: buffers.label().to_string(),
-            binding,
-        }
-        .into());
-    };
-    let size = size - size % 16;
-    let bytes = read_buffer_async(gpu, buffer, size).await?;
-    let mut out = vec![[0f32; 4]; bytes.len() / 16];
-    bytemuck::cast_slice_mut::<[f32; 4], u8>(&mut out).copy_from_slice(&bytes);
-    Ok(out)
+    let (buffer, size) = vec4_binding(buffers, binding)?;
+    Ok(vec4s_from(&read_buffer_async(gpu, buffer, size).await?))
 }
 
 /// Copies `size` bytes of `buffer` (rounded up to a multiple of 4) into a new `MAP_READ`
