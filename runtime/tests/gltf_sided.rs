@@ -1,22 +1,27 @@
-//! glTF `doubleSided: false` on opaque materials, on the GPU: traversal culls the back faces of
-//! single-sided opaque objects for every ray kind (camera, secondary, shadow rays alike: a ray
-//! meeting a back face passes through it), under both execution models.
+//! glTF `doubleSided: false` on opaque materials, on the GPU: a single-sided opaque object is
+//! invisible from behind to every viewer, the light included (spec/scenes.md, "Single-sided glTF
+//! materials"): camera rays pass through its back faces, and shadow rays, which run against the
+//! light's travel, pass through the faces whose back the light sees; under both execution models.
 //!
 //! The generated file (one `.gltf`, no textures) has a white, rough, double-sided ground at z = 0
 //! under the lower half of the view (y in [-1, 0]) and four emissive occluder quads at z = 1 above
 //! it, in the upper half (y in [0, 1]), one per column of width 1 (x in [k - 2, k - 1]). An
 //! orthographic camera looks down -z from z = 5; a directional light travels along (0, -1, -1),
-//! so the shadow of occluder k falls exactly on the ground of column k. Occluders:
+//! so the shadow of occluder k falls exactly on the ground of column k. Camera and light both look
+//! at the occluders' +z side. Occluders:
 //! 0. single-sided, facing the ground (-z): the camera sees its back: invisible (black
-//!    background); a shadow ray from the ground meets its front: the ground is in shadow;
-//! 1. single-sided, facing the camera (+z): visible; shadow rays meet its back: the ground is lit;
+//!    background); so does the light (a shadow ray from the ground meets its front, against the
+//!    light's travel): the ground is lit;
+//! 1. single-sided, facing the camera (+z): visible, and the light sees its front: the ground is
+//!    in shadow;
 //! 2. double-sided, facing the ground: visible, and the ground is in shadow;
-//! 3. occluder 0's mesh under a mirroring node (scale x -1; glTF reverses the winding under a
-//!    negative determinant): it faces the camera: visible, and the ground is lit.
+//! 3. occluder 0's mesh under a mirroring node (scale x -1): glTF reverses the winding under a
+//!    negative determinant, so the mirrored quad still faces the ground, like occluder 0:
+//!    invisible, and the ground is lit.
 //!
 //! Expected values: an invisible occluder's pixels are exactly 0 (nothing else is there); a
 //! visible one's are at least its emission, 1 (minus 1e-5); shadowed ground is exactly 0 (no
-//! other light, no ambient); lit ground is the same in columns 1 and 3 (1e-5) and above 0.05.
+//! other light, no ambient); lit ground is above 0.05.
 //! Only pixels at least 2 pixels from a column or row edge are checked. Both execution models
 //! render the same image within 1e-5 per channel.
 
@@ -33,8 +38,10 @@ use serde_json::{json, Value};
 /// Pixels per world unit.
 const PX: u32 = 12;
 
-/// Writes `sided.gltf` (see the module docs) into `dir`.
-fn write_model(dir: &std::path::Path) {
+/// Writes `sided.gltf` (see the module docs) into `dir`; with `masked`, the single-sided occluders'
+/// material is `alphaMode: MASK` (alpha 1, so every hit counts): culled by its `@any_hit` program
+/// instead of by traversal.
+fn write_model(dir: &std::path::Path, masked: bool) {
     let mut bin: Vec<u8> = Vec::new();
     let mut views = Vec::new();
     let mut accessors = Vec::new();
@@ -85,10 +92,12 @@ fn write_model(dir: &std::path::Path) {
         }]}));
     }
     let occluder = |double: bool| {
+        let mode = if masked && !double { "MASK" } else { "OPAQUE" };
         json!({
             "pbrMetallicRoughness": { "baseColorFactor": [0.0, 0.0, 0.0, 1.0], "metallicFactor": 0.0 },
             "emissiveFactor": [1.0, 1.0, 1.0],
             "doubleSided": double,
+            "alphaMode": mode,
         })
     };
     let doc = json!({
@@ -134,12 +143,25 @@ fn cell(image: &LinearImage, k: u32, row: u32) -> (f64, f64, f64) {
 }
 
 #[test]
-fn single_sided_opaque_objects_cull_back_faces_for_camera_and_shadow_rays() {
-    let Some(gpu) = gpu_or_skip("single_sided_opaque_objects_cull_back_faces") else {
+fn single_sided_opaque_objects_are_invisible_from_behind_to_camera_and_light() {
+    check_sides(false);
+}
+
+/// The same scene with the single-sided occluders `MASK`ed: their any-hit program applies the same
+/// rule as traversal's culling.
+#[test]
+fn single_sided_masked_objects_are_invisible_from_behind_to_camera_and_light() {
+    check_sides(true);
+}
+
+/// Renders the scene of the module docs under both execution models and checks every cell.
+fn check_sides(masked: bool) {
+    let label = if masked { "masked" } else { "opaque" };
+    let Some(gpu) = gpu_or_skip(&format!("single_sided_{label}_objects")) else {
         return;
     };
-    let dir = temp_dir("gltf_sided", "opaque");
-    write_model(&dir);
+    let dir = temp_dir("gltf_sided", label);
+    write_model(&dir, masked);
     let scene = format!(
         "import \"std/cameras/orthographic.rt\";\n\
          import \"std/lights/directional.rt\";\n\
@@ -170,7 +192,8 @@ fn single_sided_opaque_objects_cull_back_faces_for_camera_and_shadow_rays() {
             rtc_compiler::diag::render_human(&f.checked.sources, &f.diagnostics, false)
         ),
     };
-    assert!(compiled.linked.config.cull_back_faces);
+    // Traversal culls only for opaque single-sided materials; masked ones cull in any-hit.
+    assert_eq!(compiled.linked.config.cull_back_faces, !masked);
     let options = |exec| RenderOptions {
         exec: Some(exec),
         ..RenderOptions::default()
@@ -182,29 +205,31 @@ fn single_sided_opaque_objects_cull_back_faces_for_camera_and_shadow_rays() {
     for (name, image) in [("megakernel", &mega), ("wavefront", &wave)] {
         let top: Vec<_> = (0..4).map(|k| cell(image, k, 0)).collect();
         let ground: Vec<_> = (0..4).map(|k| cell(image, k, 1)).collect();
-        eprintln!("{name}: occluders {top:?}\n  ground {ground:?}");
+        eprintln!("{label} {name}: occluders {top:?}\n  ground {ground:?}");
         assert_eq!(
             top[0].2, 0.0,
             "{name}: a back face is invisible to the camera"
         );
-        for (k, cell) in top.iter().enumerate().skip(1) {
+        for (k, cell) in top.iter().enumerate().take(3).skip(1) {
             assert!(
                 cell.1 >= 1.0 - 1e-5,
                 "{name}: occluder {k} visible: {cell:?}"
             );
         }
+        assert!(
+            ground[0].1 > 0.05,
+            "{name}: a surface whose back the light sees casts no shadow: {:?}",
+            ground[0]
+        );
         assert_eq!(
-            ground[0].2, 0.0,
-            "{name}: a front face seen by shadow rays shadows"
+            ground[1].2, 0.0,
+            "{name}: a surface whose front the light sees shadows"
         );
         assert_eq!(ground[2].2, 0.0, "{name}: a double-sided occluder shadows");
         assert!(
-            ground[1].1 > 0.05,
-            "{name}: shadow rays pass through back faces"
-        );
-        assert!(
-            (ground[1].0 - ground[3].0).abs() < 1e-5 && ground[3].1 > 0.05,
-            "{name}: the mirrored occluder faces the camera, its back the ground: {:?}",
+            top[3].2 == 0.0 && ground[3].1 > 0.05 && (ground[3].0 - ground[0].0).abs() < 1e-5,
+            "{name}: the mirrored occluder keeps its front to the ground: {:?} {:?}",
+            top[3],
             ground[3]
         );
     }

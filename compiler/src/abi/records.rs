@@ -392,12 +392,11 @@ pub const FLAG_SECONDARY_RAYS: u32 = 2;
 pub const FLAG_MEDIUM: u32 = 4;
 /// `GpuInstance.flags`: traversal ignores hits on the object's back faces (a single-sided glTF
 /// material; the kernel tests it only when `CULL_BACK_FACES`). Back and front are those of
-/// `Hit.front_face`: a hit is on the back when the ray runs along the triangle's geometric normal.
+/// `Hit.front_face`: a hit is on the back when the ray runs along the triangle's geometric normal
+/// in world space (the object-space normal under the inverse transpose, so a mirroring transform
+/// keeps the front, as glTF's reversed winding under a negative determinant asks); for a shadow
+/// ray the sides swap (the light looks the other way).
 pub const FLAG_CULL_BACK: u32 = 8;
-/// `GpuInstance.flags`: traversal ignores hits on the object's front faces (`Hit.front_face`):
-/// a single-sided glTF material under a mirroring node transform, whose front face is the other
-/// one (glTF: a negative determinant reverses the winding).
-pub const FLAG_CULL_FRONT: u32 = 16;
 /// `texture.format`: 8-bit sRGB RGBA, one word per texel (unorm4x8, red in the low byte).
 pub const TEXTURE_FORMAT_RGBA8_SRGB: u32 = 0;
 /// `texture.format`: linear RGBA half floats, two words per texel (f16x2 red/green, blue/alpha).
@@ -498,11 +497,6 @@ pub const CONSTANTS: &[Constant] = &[
         "FLAG_CULL_BACK",
         FLAG_CULL_BACK,
         "GpuInstance.flags: traversal ignores hits on the object's back faces",
-    ),
-    c(
-        "FLAG_CULL_FRONT",
-        FLAG_CULL_FRONT,
-        "GpuInstance.flags: traversal ignores hits on the object's front faces (mirrored single-sided)",
     ),
     c(
         "TEXTURE_FORMAT_RGBA8_SRGB",

@@ -98,8 +98,7 @@ pub struct KernelConfig {
     pub has_media: bool,
     /// The scene has a background.
     pub has_background: bool,
-    /// Some object may cull back faces in traversal (`GpuInstance` `FLAG_CULL_BACK` /
-    /// `FLAG_CULL_FRONT`): a model file of the scene holds an opaque single-sided material
+    /// Some object may cull back faces in traversal (`GpuInstance` `FLAG_CULL_BACK`): a model file of the scene holds an opaque single-sided material
     /// ([`ModelPart::SingleSidedMaterial`]).
     pub cull_back_faces: bool,
 }

@@ -73,7 +73,7 @@ pub struct FrameUniforms {
 /// | 108 | `material_offset` | word offset of the material instance in `params` |
 /// | 112 | `blas_root` | index in `nodes` of the mesh BVH's header record (`rtc_bvh::quantized`; 0 for custom geometry) |
 /// | 116 | `triangle_offset` | first triangle slot of the mesh in `triangles` (0 for custom geometry) |
-/// | 120 | `flags` | [`GpuInstance::FLAG_ANY_HIT`], [`GpuInstance::FLAG_SECONDARY_RAYS`], [`GpuInstance::FLAG_MEDIUM`], [`GpuInstance::FLAG_CULL_BACK`], [`GpuInstance::FLAG_CULL_FRONT`] |
+/// | 120 | `flags` | [`GpuInstance::FLAG_ANY_HIT`], [`GpuInstance::FLAG_SECONDARY_RAYS`], [`GpuInstance::FLAG_MEDIUM`], [`GpuInstance::FLAG_CULL_BACK`] |
 /// | 124 | `object` | the object's index in the scene (scene `object` entries in order, then model instances) |
 #[repr(C, align(16))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
@@ -111,8 +111,6 @@ impl GpuInstance {
     pub const FLAG_MEDIUM: u32 = abi::FLAG_MEDIUM;
     /// `flags`: traversal ignores hits on the back faces ([`abi::FLAG_CULL_BACK`]).
     pub const FLAG_CULL_BACK: u32 = abi::FLAG_CULL_BACK;
-    /// `flags`: traversal ignores hits on the front faces ([`abi::FLAG_CULL_FRONT`]).
-    pub const FLAG_CULL_FRONT: u32 = abi::FLAG_CULL_FRONT;
 }
 
 /// Element offsets of the ABI's records ([`abi::records`]) for the encoders, each looked up in the
@@ -557,7 +555,6 @@ mod tests {
             ("FLAG_SECONDARY_RAYS", GpuInstance::FLAG_SECONDARY_RAYS),
             ("FLAG_MEDIUM", GpuInstance::FLAG_MEDIUM),
             ("FLAG_CULL_BACK", GpuInstance::FLAG_CULL_BACK),
-            ("FLAG_CULL_FRONT", GpuInstance::FLAG_CULL_FRONT),
             ("TEXTURE_FORMAT_RGBA8_SRGB", 0),
             ("TEXTURE_FORMAT_RGBA16F", 1),
             ("TEXTURE_FORMAT_RGBA8_UNORM", 2),

@@ -15,9 +15,9 @@
 //!   (`blend` 1: stochastic coverage), with `double_sided`; `GltfTransmissiveMaterial` for an
 //!   opaque material with `KHR_materials_transmission` (before the detailed one); the objects of
 //!   an opaque, non-transmissive single-sided material cull back faces in traversal instead
-//!   (`GpuInstance::FLAG_CULL_BACK`, or `FLAG_CULL_FRONT` when the node's transform mirrors, whose
-//!   winding glTF reverses; the side is that of the transform when the scene is built, so an
-//!   animation that turns a node inside out keeps the first side)):
+//!   (`GpuInstance::FLAG_CULL_BACK`; under a mirroring node transform glTF reverses the winding,
+//!   which keeps the front on the same side of the surface, the side of the inverse-transposed
+//!   normal that `Hit.front_face` uses, so the flag is the same)):
 //!   base colour factor and texture, metallic and roughness factors and their texture, emissive
 //!   factor and texture, occlusion texture and strength (a texture the material lacks is
 //!   `solid_texture(vec4f(1.0))`). Each texture enters the cache under the path
@@ -51,6 +51,7 @@ use rtc_compiler::sema::hir::{
 use rtc_compiler::Span;
 
 use super::assets_cache::{AssetCache, MeshKey, TextureKey};
+use super::gpu_types::GpuInstance;
 use super::store::Version;
 use super::SceneError;
 use crate::assets::model::{AlphaMode, LightKind, ModelScene, NodeAnimation, Projection};
@@ -68,8 +69,7 @@ pub(super) struct ModelObject {
     pub material: Instance,
     /// Object to world.
     pub transform: Mat4,
-    /// `GpuInstance::FLAG_CULL_BACK` or `FLAG_CULL_FRONT` for an opaque single-sided material
-    /// (front under a mirroring transform), else 0.
+    /// `GpuInstance::FLAG_CULL_BACK` for an opaque single-sided material, else 0.
     pub cull: u32,
 }
 
@@ -366,10 +366,11 @@ fn import_one(
             mesh,
             material: material.clone(),
             transform: entry * inst.transform,
-            cull: cull_flag(
-                culls.get(inst.material).copied().unwrap_or(false),
-                entry * inst.transform,
-            ),
+            cull: if culls.get(inst.material).copied().unwrap_or(false) {
+                GpuInstance::FLAG_CULL_BACK
+            } else {
+                0
+            },
         });
     }
 
@@ -445,18 +446,4 @@ fn import_one(
         }
     }
     Ok(())
-}
-
-/// The culling flag of an object with transform `transform` whose material is single-sided
-/// (`single_sided`): glTF's front face is counter-clockwise in world space, which is the
-/// object-space winding unless the transform mirrors (negative determinant).
-fn cull_flag(single_sided: bool, transform: Mat4) -> u32 {
-    use crate::scene::gpu_types::GpuInstance;
-    if !single_sided {
-        0
-    } else if transform.determinant() < 0.0 {
-        GpuInstance::FLAG_CULL_FRONT
-    } else {
-        GpuInstance::FLAG_CULL_BACK
-    }
 }

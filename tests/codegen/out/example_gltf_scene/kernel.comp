@@ -157,7 +157,7 @@ const uint NODE_COUNT_SHIFT = 27u;
 const uint NODE_COUNT_MASK = 15u;
 const uint NODE_FIRST_MASK = 134217727u;
 const uint FLAG_CULL_BACK = 8u;
-const uint FLAG_CULL_FRONT = 16u;
+const uint RAY_SHADOW = 2u;
 const uint FLAG_ANY_HIT = 1u;
 const float POINT_ERROR = 1.9073486e-6;
 const float GAMMA_1_ = 5.960465e-8;
@@ -178,7 +178,6 @@ const bool HAS_BACKGROUND = true;
 const float PBR_MIN_ALPHA = 0.001;
 const uint LIGHT_ENTRY_STRIDE = 2u;
 const float LIGHT_ERROR = 4.7683716e-7;
-const uint RAY_SHADOW = 2u;
 const float INV_PI = 0.31830987;
 const uint FLAG_MEDIUM = 4u;
 const uint FLAG_SECONDARY_RAYS = 2u;
@@ -436,11 +435,15 @@ vec3 normal_to_world(GpuInstance inst_1, vec3 n) {
     return _e19;
 }
 
-bool culled(GpuInstance inst_2, Ray ray_2, Candidate c) {
+bool single_sided_seen_front(Ray ray_2, bool front_face) {
+    return (front_face != (ray_2.kind == RAY_SHADOW));
+}
+
+bool culled(GpuInstance inst_2, Ray ray_3, Candidate c) {
     Triangle _e4 = load_triangle(c.primitive);
     vec3 _e12 = normal_to_world(inst_2, cross((_e4.v1_ - _e4.v0_), (_e4.v2_ - _e4.v0_)));
-    bool front = (dot(ray_2.dir, _e12) < 0.0);
-    return (((front ? FLAG_CULL_FRONT : FLAG_CULL_BACK) & inst_2.flags) != 0u);
+    bool _e17 = single_sided_seen_front(ray_3, (dot(ray_3.dir, _e12) < 0.0));
+    return !(_e17);
 }
 
 float point_error(vec3 origin, vec3 along) {
@@ -483,14 +486,14 @@ vec3 decode_octahedral(uint bits) {
     return _e40;
 }
 
-Hit finish_hit(Ray ray_3, Candidate c_1) {
+Hit finish_hit(Ray ray_4, Candidate c_1) {
     Hit hit = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     vec3 n_geo = vec3(0.0);
     vec3 n_shade = vec3(0.0);
     GpuInstance inst_7 = _group_0_binding_3_cs[c_1.slot];
-    float _e11 = point_error(ray_3.origin, (ray_3.dir * vec3(c_1.t)));
+    float _e11 = point_error(ray_4.origin, (ray_4.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_3.origin + (ray_3.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_4.origin + (ray_4.dir * vec3(c_1.t))), c_1.t, vec3(0.0, 1.0, 0.0), vec3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -531,7 +534,7 @@ Hit finish_hit(Ray ray_3, Candidate c_1) {
     vec3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     vec3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_3.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_4.dir, _e147) < 0.0);
     Hit _e151 = hit;
     return _e151;
 }
@@ -646,10 +649,10 @@ uint gltf_pcg(uint x_3) {
     return ((word_2 >> 22u) ^ word_2);
 }
 
-float gltf_coverage(Ray ray_4, Hit hit_1) {
+float gltf_coverage(Ray ray_5, Hit hit_1) {
     uint h_1 = 0u;
-    uvec3 o_1 = floatBitsToUint(ray_4.origin);
-    uvec3 d_3 = floatBitsToUint(ray_4.dir);
+    uvec3 o_1 = floatBitsToUint(ray_5.origin);
+    uvec3 d_3 = floatBitsToUint(ray_5.dir);
     h_1 = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u));
     uint _e20 = h_1;
     h_1 = (((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
@@ -664,48 +667,48 @@ float gltf_coverage(Ray ray_4, Hit hit_1) {
     return (float((_e45 >> 8u)) * (1.0 / 16777216.0));
 }
 
-bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_5, Hit hit_2) {
-    if (((double_sided == 0u) && !(hit_2.front_face))) {
+bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_6, Hit hit_2) {
+    if (((double_sided == 0u) && (hit_2.front_face == (ray_6.kind == RAY_SHADOW)))) {
         return false;
     }
     if ((blend != 0u)) {
-        float _e14 = gltf_coverage(ray_5, hit_2);
-        return (_e14 < alpha);
+        float _e17 = gltf_coverage(ray_6, hit_2);
+        return (_e17 < alpha);
     }
     return (alpha >= cutoff);
 }
 
-bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_6, Hit hit_3) {
+bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_7, Hit hit_3) {
     vec4 _e7 = sample_texture(m.base_texture, hit_3.uv);
     float alpha_1 = (m.base_color.w * _e7.w);
-    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_6, hit_3);
+    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_7, hit_3);
     return _e13;
 }
 
-bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_7, Hit hit_4) {
+bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_8, Hit hit_4) {
     GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3);
-    bool _e4 = gltf_masked_any_hit(_e3, ray_7, hit_4);
+    bool _e4 = gltf_masked_any_hit(_e3, ray_8, hit_4);
     return _e4;
 }
 
-bool accept(GpuInstance inst_5, Ray ray_8, Candidate c_3) {
+bool accept(GpuInstance inst_5, Ray ray_9, Candidate c_3) {
     bool short_circuit = false;
-    bool _e9 = ((inst_5.flags & (FLAG_CULL_BACK | FLAG_CULL_FRONT)) != 0u);
-    short_circuit = _e9;
-    if (_e9) {
-        bool _e11 = culled(inst_5, ray_8, c_3);
-        short_circuit = _e11;
+    bool _e7 = ((inst_5.flags & FLAG_CULL_BACK) != 0u);
+    short_circuit = _e7;
+    if (_e7) {
+        bool _e9 = culled(inst_5, ray_9, c_3);
+        short_circuit = _e9;
     }
-    bool _e12 = short_circuit;
-    if (_e12) {
+    bool _e10 = short_circuit;
+    if (_e10) {
         return false;
     }
     if (((inst_5.flags & FLAG_ANY_HIT) != 0u)) {
         float shaded = hit_error;
-        Hit _e21 = finish_hit(ray_8, c_3);
+        Hit _e19 = finish_hit(ray_9, c_3);
         hit_error = shaded;
-        bool _e25 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_8, _e21);
-        return _e25;
+        bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_9, _e19);
+        return _e23;
     }
     return true;
 }
@@ -736,19 +739,19 @@ float slab(vec3 lo, vec3 hi, vec3 origin_2, vec3 inv_dir, float tmin_1, float tm
     return uintBitsToFloat(_e30);
 }
 
-vec2 children_entry(GpuNode n_3, vec3 origin_3, vec3 scale_1, Ray ray_9, vec3 inv, float tmax_3) {
+vec2 children_entry(GpuNode n_3, vec3 origin_3, vec3 scale_1, Ray ray_10, vec3 inv, float tmax_3) {
     uvec3 lq = floatBitsToUint(n_3.min_);
     uvec3 rq = floatBitsToUint(n_3.max_);
     uvec3 _e10 = node_box_lo(lq);
     vec3 _e11 = node_point(origin_3, scale_1, _e10);
     uvec3 _e12 = node_box_hi(lq);
     vec3 _e13 = node_point(origin_3, scale_1, _e12);
-    float _e16 = slab(_e11, _e13, ray_9.origin, inv, ray_9.tmin, tmax_3);
+    float _e16 = slab(_e11, _e13, ray_10.origin, inv, ray_10.tmin, tmax_3);
     uvec3 _e17 = node_box_lo(rq);
     vec3 _e18 = node_point(origin_3, scale_1, _e17);
     uvec3 _e19 = node_box_hi(rq);
     vec3 _e20 = node_point(origin_3, scale_1, _e19);
-    float _e23 = slab(_e18, _e20, ray_9.origin, inv, ray_9.tmin, tmax_3);
+    float _e23 = slab(_e18, _e20, ray_10.origin, inv, ray_10.tmin, tmax_3);
     return vec2(_e16, _e23);
 }
 
@@ -760,7 +763,7 @@ uvec2 pop(uint base, uint sp) {
     return uvec2(_e14, (sp - 1u));
 }
 
-Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray_10, Candidate best_in, bool shadow) {
+Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray_11, Candidate best_in, bool shadow) {
     Candidate best = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_1 = 0u;
     uint child = 0u;
@@ -768,8 +771,8 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
     uint near = 0u;
     uint far = 0u;
     best = best_in;
-    vec3 _e8 = safe_inverse(ray_10.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_10);
+    vec3 _e8 = safe_inverse(ray_11.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_11);
     uint base_2 = inst_6.blas_root;
     GpuNode header_1 = _group_0_binding_2_cs[base_2];
     vec3 origin_4 = header_1.min_;
@@ -798,7 +801,7 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
                 uint _e41 = k;
                 uint prim = ((inst_6.triangle_offset + first) + _e41);
                 float _e45 = best.t;
-                vec3 _e46 = hit_triangle(_e9, prim, ray_10.tmin, _e45);
+                vec3 _e46 = hit_triangle(_e9, prim, ray_11.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
                     Candidate c_10 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0.0));
@@ -816,7 +819,7 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
             uint _e62 = child;
             GpuNode n_7 = _group_0_binding_2_cs[(base_2 + _e62)];
             float _e68 = best.t;
-            vec2 _e69 = children_entry(n_7, origin_4, scale_2, ray_10, _e8, _e68);
+            vec2 _e69 = children_entry(n_7, origin_4, scale_2, ray_11, _e8, _e68);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
@@ -863,15 +866,15 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
     return _e122;
 }
 
-Candidate intersect_object(uint slot_3, Ray ray_11, Candidate best_1, bool shadow_1) {
+Candidate intersect_object(uint slot_3, Ray ray_12, Candidate best_1, bool shadow_1) {
     Ray r_2 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     GpuInstance inst_8 = _group_0_binding_3_cs[slot_3];
-    Ray _e7 = to_object(inst_8, ray_11);
+    Ray _e7 = to_object(inst_8, ray_12);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_8.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_11, _e14, best_1, shadow_1);
+        Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_12, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -929,7 +932,7 @@ vec3 node_frame_hi(GpuNode header) {
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_12, bool shadow_2) {
+Candidate intersect_scene(Ray ray_13, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -937,21 +940,21 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_12.tmax);
+    Candidate _e7 = no_candidate(ray_13.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = _group_0_binding_0_cs;
     if ((frame_2.instance_count == 0u)) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    vec3 _e16 = safe_inverse(ray_12.dir);
+    vec3 _e16 = safe_inverse(ray_13.dir);
     uint base_3 = frame_2.tlas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_3];
     vec3 origin_5 = header_2.min_;
     vec3 scale_3 = header_2.max_;
     vec3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_12.origin, _e16, ray_12.tmin, _e27);
+    float _e28 = slab(origin_5, _e23, ray_13.origin, _e16, ray_13.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == uintBitsToFloat(_e30))) {
         Candidate _e33 = best_2;
@@ -966,7 +969,7 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2) {
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_12, _e55, shadow_2);
+                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_13, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -978,7 +981,7 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2) {
             uint _e63 = child_1;
             GpuNode n_8 = _group_0_binding_2_cs[(base_3 + _e63)];
             float _e69 = best_2.t;
-            vec2 _e70 = children_entry(n_8, origin_5, scale_3, ray_12, _e16, _e69);
+            vec2 _e70 = children_entry(n_8, origin_5, scale_3, ray_13, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1038,8 +1041,8 @@ SkyGradient load_SkyGradient(uint offset_4) {
     return SkyGradient(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)));
 }
 
-vec3 sky_gradient(SkyGradient b_5, Ray ray_13) {
-    vec3 _e3 = normalize_vec3f(ray_13.dir);
+vec3 sky_gradient(SkyGradient b_5, Ray ray_14) {
+    vec3 _e3 = normalize_vec3f(ray_14.dir);
     float y = _e3.y;
     if ((y < 0.0)) {
         return mix(b_5.horizon, b_5.ground, vec3(min((-(y) * 4.0), 1.0)));
@@ -1047,23 +1050,23 @@ vec3 sky_gradient(SkyGradient b_5, Ray ray_13) {
     return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y)));
 }
 
-vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_14) {
+vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_15) {
     SkyGradient _e2 = load_SkyGradient(offset_5);
-    vec3 _e3 = sky_gradient(_e2, ray_14);
+    vec3 _e3 = sky_gradient(_e2, ray_15);
     return _e3;
 }
 
-vec3 miss(Ray ray_15) {
+vec3 miss(Ray ray_16) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_3 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_15);
+    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_16);
     return _e9;
 }
 
-vec3 shading_normal(Ray ray_16, Hit hit_5) {
-    vec3 ng = faceforward(hit_5.geometric_normal, ray_16.dir, hit_5.geometric_normal);
+vec3 shading_normal(Ray ray_17, Hit hit_5) {
+    vec3 ng = faceforward(hit_5.geometric_normal, ray_17.dir, hit_5.geometric_normal);
     return faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1227,11 +1230,11 @@ float pbr_smith_v(float ndl, float ndv, float a2_1) {
     return (0.5 / max((gv + gl), 1e-20));
 }
 
-vec3 gltf_radiance(vec3 c_5, float metallic, float roughness_1, float occlusion, vec3 emissive, Ray ray_17, Hit hit_6) {
+vec3 gltf_radiance(vec3 c_5, float metallic, float roughness_1, float occlusion, vec3 emissive, Ray ray_18, Hit hit_6) {
     vec3 color = vec3(0.0);
     uint i_2 = 0u;
-    vec3 _e7 = shading_normal(ray_17, hit_6);
-    vec3 _e9 = normalize_vec3f(ray_17.dir);
+    vec3 _e7 = shading_normal(ray_18, hit_6);
+    vec3 _e9 = normalize_vec3f(ray_18.dir);
     vec3 v_2 = -(_e9);
     float metal = clamp(metallic, 0.0, 1.0);
     float _e12 = pbr_alpha2_(roughness_1);
@@ -1267,10 +1270,10 @@ vec3 gltf_radiance(vec3 c_5, float metallic, float roughness_1, float occlusion,
     return _e68;
 }
 
-vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_18, Hit hit_7) {
+vec3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_19, Hit hit_7) {
     vec4 _e7 = sample_texture(m_1.base_texture, hit_7.uv);
     vec3 c_11 = (m_1.base_color.xyz * _e7.xyz);
-    vec3 _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_18, hit_7);
+    vec3 _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_19, hit_7);
     return _e14;
 }
 
@@ -1288,23 +1291,23 @@ GltfMaterial load_GltfMaterial(uint offset_9) {
     return GltfMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), vec3(uintBitsToFloat(_e47), uintBitsToFloat(_e53), uintBitsToFloat(_e59)));
 }
 
-vec3 gltf_shade(GltfMaterial m_2, Ray ray_19, Hit hit_8) {
+vec3 gltf_shade(GltfMaterial m_2, Ray ray_20, Hit hit_8) {
     vec4 _e7 = sample_texture(m_2.base_texture, hit_8.uv);
     vec3 c_12 = (m_2.base_color.xyz * _e7.xyz);
-    vec3 _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_19, hit_8);
+    vec3 _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_20, hit_8);
     return _e14;
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_20, Hit hit_9, vec3 secondary) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_21, Hit hit_9, vec3 secondary) {
     switch(type_id_4) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10);
-            vec3 _e5 = gltf_masked_shade(_e4, ray_20, hit_9);
+            vec3 _e5 = gltf_masked_shade(_e4, ray_21, hit_9);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_10);
-            vec3 _e7 = gltf_shade(_e6, ray_20, hit_9);
+            vec3 _e7 = gltf_shade(_e6, ray_21, hit_9);
             return _e7;
         }
         default: {
@@ -1314,33 +1317,33 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_20, Hit hit_9,
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_21, Candidate c_6) {
+vec3 shade_direct(Ray ray_22, Candidate c_6) {
     GpuInstance inst_9 = _group_0_binding_3_cs[c_6.slot];
-    Hit _e6 = finish_hit(ray_21, c_6);
-    vec3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_21, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_22, c_6);
+    vec3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_22, _e6, vec3(0.0));
     return _e11;
 }
 
-vec3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_22, float t_2, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_23, float t_2, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_23, float t_3, vec3 radiance_1) {
+vec3 through_medium(Ray ray_24, float t_3, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_23.medium == 0u)) {
+    if ((ray_24.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_10 = _group_0_binding_3_cs[(ray_23.medium - 1u)];
+    GpuInstance inst_10 = _group_0_binding_3_cs[(ray_24.medium - 1u)];
     if (((inst_10.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_23, t_3, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_24, t_3, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_24, Hit hit_10) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_25, Hit hit_10) {
     return;
 }
 
@@ -1367,7 +1370,7 @@ vec3 trace(Ray camera_ray) {
     float t_4 = 0.0;
     Frame stack[4] = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_25 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_26 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
@@ -1405,7 +1408,7 @@ vec3 trace(Ray camera_ray) {
     }
     stack = Frame[4](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_25 = camera_ray;
+    ray_26 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1421,10 +1424,10 @@ vec3 trace(Ray camera_ray) {
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_25;
+            Ray _e67 = ray_26;
             Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_25;
+            Ray _e70 = ray_26;
             s_ray = _e70;
             s_sum = vec3(0.0);
             fresh = true;
@@ -1558,7 +1561,7 @@ vec3 trace(Ray camera_ray) {
             vec3 _e284 = spawn_origin(hit_14, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_25 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_26 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -1591,7 +1594,7 @@ void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s_1 = 0u;
-    Ray ray_26 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_27 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_2 = _group_0_binding_1_cs;
     sum = vec3(0.0);
@@ -1613,13 +1616,13 @@ void render_pixel(uvec2 pixel_3) {
         uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_26 = _e23;
-        ray_26.depth = 0u;
-        ray_26.kind = RAY_CAMERA;
-        vec3 _e31 = ray_26.origin;
+        ray_27 = _e23;
+        ray_27.depth = 0u;
+        ray_27.kind = RAY_CAMERA;
+        vec3 _e31 = ray_27.origin;
         uint _e33 = medium_at(_e31, NO_HIT);
-        ray_26.medium = _e33;
-        Ray _e34 = ray_26;
+        ray_27.medium = _e33;
+        Ray _e34 = ray_27;
         vec3 _e35 = trace(_e34);
         bvec3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

@@ -205,7 +205,7 @@ static const uint NODE_COUNT_SHIFT = 27u;
 static const uint NODE_COUNT_MASK = 15u;
 static const uint NODE_FIRST_MASK = 134217727u;
 static const uint FLAG_CULL_BACK = 8u;
-static const uint FLAG_CULL_FRONT = 16u;
+static const uint RAY_SHADOW = 2u;
 static const uint FLAG_ANY_HIT = 1u;
 static const float POINT_ERROR = 1.9073486e-6;
 static const float GAMMA_1_ = 5.960465e-8;
@@ -226,7 +226,6 @@ static const bool HAS_BACKGROUND = true;
 static const float PBR_MIN_ALPHA = 0.001;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
 static const float LIGHT_ERROR = 4.7683716e-7;
-static const uint RAY_SHADOW = 2u;
 static const float INV_PI = 0.31830987;
 static const uint FLAG_MEDIUM = 4u;
 static const uint FLAG_SECONDARY_RAYS = 2u;
@@ -435,16 +434,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_2) * aspect)).xxx)) - (up * ((ndc.y * h_2)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_27 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_27;
+    const Ray ray_28 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_28;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
-    const Ray ray_28 = _e4;
-    return ray_28;
+    const Ray ray_29 = _e4;
+    return ray_29;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -473,8 +472,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
     Ray _e25 = r;
-    const Ray ray_29 = _e25;
-    return ray_29;
+    const Ray ray_30 = _e25;
+    return ray_30;
 }
 
 float3 safe_inverse(float3 d)
@@ -564,12 +563,17 @@ float3 normal_to_world(GpuInstance inst_1, float3 n)
     return _e19;
 }
 
-bool culled(GpuInstance inst_2, Ray ray_2, Candidate c)
+bool single_sided_seen_front(Ray ray_2, bool front_face)
+{
+    return (front_face != (ray_2.kind == RAY_SHADOW));
+}
+
+bool culled(GpuInstance inst_2, Ray ray_3, Candidate c)
 {
     const Triangle _e4 = load_triangle(c.primitive);
     const float3 _e12 = normal_to_world(inst_2, cross((_e4.v1_ - _e4.v0_), (_e4.v2_ - _e4.v0_)));
-    bool front = (dot(ray_2.dir, _e12) < 0.0);
-    return (((front ? FLAG_CULL_FRONT : FLAG_CULL_BACK) & inst_2.flags) != 0u);
+    const bool _e17 = single_sided_seen_front(ray_3, (dot(ray_3.dir, _e12) < 0.0));
+    return !(_e17);
 }
 
 float point_error(float3 origin, float3 along)
@@ -649,16 +653,16 @@ GpuInstance ConstructGpuInstance(float4 arg0, float4 arg1, float4 arg2, float4 a
     return ret;
 }
 
-Hit finish_hit(Ray ray_3, Candidate c_1)
+Hit finish_hit(Ray ray_4, Candidate c_1)
 {
     Hit hit = (Hit)0;
     float3 n_geo = (float3)0;
     float3 n_shade = (float3)0;
 
     GpuInstance inst_7 = ConstructGpuInstance(asfloat(instances.Load4(c_1.slot*128+0)), asfloat(instances.Load4(c_1.slot*128+16)), asfloat(instances.Load4(c_1.slot*128+32)), asfloat(instances.Load4(c_1.slot*128+48)), asfloat(instances.Load4(c_1.slot*128+64)), asfloat(instances.Load4(c_1.slot*128+80)), asuint(instances.Load(c_1.slot*128+96)), asuint(instances.Load(c_1.slot*128+100)), asuint(instances.Load(c_1.slot*128+104)), asuint(instances.Load(c_1.slot*128+108)), asuint(instances.Load(c_1.slot*128+112)), asuint(instances.Load(c_1.slot*128+116)), asuint(instances.Load(c_1.slot*128+120)), asuint(instances.Load(c_1.slot*128+124)));
-    const float _e11 = point_error(ray_3.origin, (ray_3.dir * (c_1.t).xxx));
+    const float _e11 = point_error(ray_4.origin, (ray_4.dir * (c_1.t).xxx));
     hit_error = _e11;
-    hit = ConstructHit((ray_3.origin + (ray_3.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = ConstructHit((ray_4.origin + (ray_4.dir * (c_1.t).xxx)), c_1.t, float3(0.0, 1.0, 0.0), float3(0.0, 1.0, 0.0), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if ((inst_7.geometry_type == MESH_GEOMETRY)) {
@@ -702,7 +706,7 @@ Hit finish_hit(Ray ray_3, Candidate c_1)
     const float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     float3 _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_3.dir, _e147) < 0.0);
+    hit.front_face = (dot(ray_4.dir, _e147) < 0.0);
     Hit _e151 = hit;
     const Hit hit_14 = _e151;
     return hit_14;
@@ -849,12 +853,12 @@ uint gltf_pcg(uint x_3)
     return ((word_2 >> 22u) ^ word_2);
 }
 
-float gltf_coverage(Ray ray_4, Hit hit_1)
+float gltf_coverage(Ray ray_5, Hit hit_1)
 {
     uint h_1 = (uint)0;
 
-    uint3 o_1 = asuint(ray_4.origin);
-    uint3 d_3 = asuint(ray_4.dir);
+    uint3 o_1 = asuint(ray_5.origin);
+    uint3 d_3 = asuint(ray_5.dir);
     h_1 = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u));
     uint _e20 = h_1;
     h_1 = (((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
@@ -869,53 +873,53 @@ float gltf_coverage(Ray ray_4, Hit hit_1)
     return (float((_e45 >> 8u)) * (1.0 / 16777216.0));
 }
 
-bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_5, Hit hit_2)
+bool gltf_counts(float alpha, float cutoff, uint blend, uint double_sided, Ray ray_6, Hit hit_2)
 {
-    if (((double_sided == 0u) && !(hit_2.front_face))) {
+    if (((double_sided == 0u) && (hit_2.front_face == (ray_6.kind == RAY_SHADOW)))) {
         return false;
     }
     if ((blend != 0u)) {
-        const float _e14 = gltf_coverage(ray_5, hit_2);
-        return (_e14 < alpha);
+        const float _e17 = gltf_coverage(ray_6, hit_2);
+        return (_e17 < alpha);
     }
     return (alpha >= cutoff);
 }
 
-bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_6, Hit hit_3)
+bool gltf_masked_any_hit(GltfMaskedMaterial m, Ray ray_7, Hit hit_3)
 {
     const float4 _e7 = sample_texture(m.base_texture, hit_3.uv);
     float alpha_1 = (m.base_color.w * _e7.w);
-    const bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_6, hit_3);
+    const bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_7, hit_3);
     return _e13;
 }
 
-bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_7, Hit hit_4)
+bool dispatch_any_hit(uint type_id_1, uint offset_3, Ray ray_8, Hit hit_4)
 {
     const GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3);
-    const bool _e4 = gltf_masked_any_hit(_e3, ray_7, hit_4);
+    const bool _e4 = gltf_masked_any_hit(_e3, ray_8, hit_4);
     return _e4;
 }
 
-bool accept(GpuInstance inst_5, Ray ray_8, Candidate c_3)
+bool accept(GpuInstance inst_5, Ray ray_9, Candidate c_3)
 {
     bool short_circuit = (bool)0;
 
-    bool _e9 = ((inst_5.flags & (FLAG_CULL_BACK | FLAG_CULL_FRONT)) != 0u);
-    short_circuit = _e9;
-    if (_e9) {
-        const bool _e11 = culled(inst_5, ray_8, c_3);
-        short_circuit = _e11;
+    bool _e7 = ((inst_5.flags & FLAG_CULL_BACK) != 0u);
+    short_circuit = _e7;
+    if (_e7) {
+        const bool _e9 = culled(inst_5, ray_9, c_3);
+        short_circuit = _e9;
     }
-    bool _e12 = short_circuit;
-    if (_e12) {
+    bool _e10 = short_circuit;
+    if (_e10) {
         return false;
     }
     if (((inst_5.flags & FLAG_ANY_HIT) != 0u)) {
         float shaded = hit_error;
-        const Hit _e21 = finish_hit(ray_8, c_3);
+        const Hit _e19 = finish_hit(ray_9, c_3);
         hit_error = shaded;
-        const bool _e25 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_8, _e21);
-        return _e25;
+        const bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_9, _e19);
+        return _e23;
     }
     return true;
 }
@@ -950,7 +954,7 @@ float slab(float3 lo, float3 hi, float3 origin_2, float3 inv_dir, float tmin_1, 
     return asfloat(_e30);
 }
 
-float2 children_entry(GpuNode n_3, float3 origin_3, float3 scale_1, Ray ray_9, float3 inv, float tmax_3)
+float2 children_entry(GpuNode n_3, float3 origin_3, float3 scale_1, Ray ray_10, float3 inv, float tmax_3)
 {
     uint3 lq = asuint(n_3.min_);
     uint3 rq = asuint(n_3.max_);
@@ -958,12 +962,12 @@ float2 children_entry(GpuNode n_3, float3 origin_3, float3 scale_1, Ray ray_9, f
     const float3 _e11 = node_point(origin_3, scale_1, _e10);
     const uint3 _e12 = node_box_hi(lq);
     const float3 _e13 = node_point(origin_3, scale_1, _e12);
-    const float _e16 = slab(_e11, _e13, ray_9.origin, inv, ray_9.tmin, tmax_3);
+    const float _e16 = slab(_e11, _e13, ray_10.origin, inv, ray_10.tmin, tmax_3);
     const uint3 _e17 = node_box_lo(rq);
     const float3 _e18 = node_point(origin_3, scale_1, _e17);
     const uint3 _e19 = node_box_hi(rq);
     const float3 _e20 = node_point(origin_3, scale_1, _e19);
-    const float _e23 = slab(_e18, _e20, ray_9.origin, inv, ray_9.tmin, tmax_3);
+    const float _e23 = slab(_e18, _e20, ray_10.origin, inv, ray_10.tmin, tmax_3);
     return float2(_e16, _e23);
 }
 
@@ -985,7 +989,7 @@ GpuNode ConstructGpuNode(float3 arg0, uint arg1, float3 arg2, uint arg3) {
     return ret;
 }
 
-Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray_10, Candidate best_in, bool shadow)
+Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray_11, Candidate best_in, bool shadow)
 {
     Candidate best = (Candidate)0;
     uint sp_1 = (uint)0;
@@ -995,8 +999,8 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
     uint far = (uint)0;
 
     best = best_in;
-    const float3 _e8 = safe_inverse(ray_10.dir);
-    const TriangleRay _e9 = prepare_triangle_ray(ray_10);
+    const float3 _e8 = safe_inverse(ray_11.dir);
+    const TriangleRay _e9 = prepare_triangle_ray(ray_11);
     uint base_2 = inst_6.blas_root;
     GpuNode header_1 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
     float3 origin_4 = header_1.min_;
@@ -1031,7 +1035,7 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
                 uint _e41 = k;
                 uint prim = ((inst_6.triangle_offset + first) + _e41);
                 float _e45 = best.t;
-                const float3 _e46 = hit_triangle(_e9, prim, ray_10.tmin, _e45);
+                const float3 _e46 = hit_triangle(_e9, prim, ray_11.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < asfloat(_e49))) {
                     Candidate c_10 = ConstructCandidate(_e46.x, slot_2, prim, _e46.yz, (0.0).xxx);
@@ -1050,7 +1054,7 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
             uint _e62 = child;
             GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e62)*32+0)), asuint(nodes.Load((base_2 + _e62)*32+12)), asfloat(nodes.Load3((base_2 + _e62)*32+16)), asuint(nodes.Load((base_2 + _e62)*32+28)));
             float _e68 = best.t;
-            const float2 _e69 = children_entry(n_7, origin_4, scale_2, ray_10, _e8, _e68);
+            const float2 _e69 = children_entry(n_7, origin_4, scale_2, ray_11, _e8, _e68);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
@@ -1098,17 +1102,17 @@ Candidate intersect_mesh(GpuInstance inst_6, uint slot_2, Ray world_ray, Ray ray
     return candidate_2;
 }
 
-Candidate intersect_object(uint slot_3, Ray ray_11, Candidate best_1, bool shadow_1)
+Candidate intersect_object(uint slot_3, Ray ray_12, Candidate best_1, bool shadow_1)
 {
     Ray r_2 = (Ray)0;
 
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(slot_3*128+0)), asfloat(instances.Load4(slot_3*128+16)), asfloat(instances.Load4(slot_3*128+32)), asfloat(instances.Load4(slot_3*128+48)), asfloat(instances.Load4(slot_3*128+64)), asfloat(instances.Load4(slot_3*128+80)), asuint(instances.Load(slot_3*128+96)), asuint(instances.Load(slot_3*128+100)), asuint(instances.Load(slot_3*128+104)), asuint(instances.Load(slot_3*128+108)), asuint(instances.Load(slot_3*128+112)), asuint(instances.Load(slot_3*128+116)), asuint(instances.Load(slot_3*128+120)), asuint(instances.Load(slot_3*128+124)));
-    const Ray _e7 = to_object(inst_8, ray_11);
+    const Ray _e7 = to_object(inst_8, ray_12);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if ((inst_8.geometry_type == MESH_GEOMETRY)) {
         Ray _e14 = r_2;
-        const Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_11, _e14, best_1, shadow_1);
+        const Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_12, _e14, best_1, shadow_1);
         const Candidate candidate_3 = _e15;
         return candidate_3;
     }
@@ -1174,7 +1178,7 @@ float3 node_frame_hi(GpuNode header)
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_12, bool shadow_2)
+Candidate intersect_scene(Ray ray_13, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -1184,7 +1188,7 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_12.tmax);
+    const Candidate _e7 = no_candidate(ray_13.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = frame;
     if ((frame_2.instance_count == 0u)) {
@@ -1192,14 +1196,14 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
         const Candidate candidate_5 = _e14;
         return candidate_5;
     }
-    const float3 _e16 = safe_inverse(ray_12.dir);
+    const float3 _e16 = safe_inverse(ray_13.dir);
     uint base_3 = frame_2.tlas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_3*32+0)), asuint(nodes.Load(base_3*32+12)), asfloat(nodes.Load3(base_3*32+16)), asuint(nodes.Load(base_3*32+28)));
     float3 origin_5 = header_2.min_;
     float3 scale_3 = header_2.max_;
     const float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    const float _e28 = slab(origin_5, _e23, ray_12.origin, _e16, ray_12.tmin, _e27);
+    const float _e28 = slab(origin_5, _e23, ray_13.origin, _e16, ray_13.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == asfloat(_e30))) {
         Candidate _e33 = best_2;
@@ -1218,7 +1222,7 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_12, _e55, shadow_2);
+                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_13, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -1231,7 +1235,7 @@ Candidate intersect_scene(Ray ray_12, bool shadow_2)
             uint _e63 = child_1;
             GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_3 + _e63)*32+0)), asuint(nodes.Load((base_3 + _e63)*32+12)), asfloat(nodes.Load3((base_3 + _e63)*32+16)), asuint(nodes.Load((base_3 + _e63)*32+28)));
             float _e69 = best_2.t;
-            const float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_12, _e16, _e69);
+            const float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_13, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1302,9 +1306,9 @@ SkyGradient load_SkyGradient(uint offset_4)
     return skygradient;
 }
 
-float3 sky_gradient(SkyGradient b_5, Ray ray_13)
+float3 sky_gradient(SkyGradient b_5, Ray ray_14)
 {
-    const float3 _e3 = normalize_vec3f(ray_13.dir);
+    const float3 _e3 = normalize_vec3f(ray_14.dir);
     float y = _e3.y;
     if ((y < 0.0)) {
         return lerp(b_5.horizon, b_5.ground, (min((-(y) * 4.0), 1.0)).xxx);
@@ -1312,26 +1316,26 @@ float3 sky_gradient(SkyGradient b_5, Ray ray_13)
     return lerp(b_5.horizon, b_5.zenith, (sqrt(y)).xxx);
 }
 
-float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_14)
+float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_15)
 {
     const SkyGradient _e2 = load_SkyGradient(offset_5);
-    const float3 _e3 = sky_gradient(_e2, ray_14);
+    const float3 _e3 = sky_gradient(_e2, ray_15);
     return _e3;
 }
 
-float3 miss(Ray ray_15)
+float3 miss(Ray ray_16)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
     FrameUniforms frame_3 = frame;
-    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_15);
+    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_16);
     return _e9;
 }
 
-float3 shading_normal(Ray ray_16, Hit hit_5)
+float3 shading_normal(Ray ray_17, Hit hit_5)
 {
-    float3 ng = faceforward(hit_5.geometric_normal, ray_16.dir, hit_5.geometric_normal);
+    float3 ng = faceforward(hit_5.geometric_normal, ray_17.dir, hit_5.geometric_normal);
     return faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1413,8 +1417,8 @@ Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_30 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_30;
+    const Ray ray_31 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_31;
 }
 
 float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
@@ -1554,13 +1558,13 @@ float pbr_smith_v(float ndl, float ndv, float a2_1)
     return (0.5 / max((gv + gl), 1e-20));
 }
 
-float3 gltf_radiance(float3 c_5, float metallic, float roughness_1, float occlusion, float3 emissive, Ray ray_17, Hit hit_6)
+float3 gltf_radiance(float3 c_5, float metallic, float roughness_1, float occlusion, float3 emissive, Ray ray_18, Hit hit_6)
 {
     float3 color = (float3)0;
     uint i_2 = (uint)0;
 
-    const float3 _e7 = shading_normal(ray_17, hit_6);
-    const float3 _e9 = normalize_vec3f(ray_17.dir);
+    const float3 _e7 = shading_normal(ray_18, hit_6);
+    const float3 _e9 = normalize_vec3f(ray_18.dir);
     float3 v_2 = -(_e9);
     float metal = saturate(metallic);
     const float _e12 = pbr_alpha2_(roughness_1);
@@ -1599,11 +1603,11 @@ float3 gltf_radiance(float3 c_5, float metallic, float roughness_1, float occlus
     return _e68;
 }
 
-float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_18, Hit hit_7)
+float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_19, Hit hit_7)
 {
     const float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv);
     float3 c_11 = (m_1.base_color.xyz * _e7.xyz);
-    const float3 _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_18, hit_7);
+    const float3 _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_19, hit_7);
     return _e14;
 }
 
@@ -1633,11 +1637,11 @@ GltfMaterial load_GltfMaterial(uint offset_9)
     return gltfmaterial;
 }
 
-float3 gltf_shade(GltfMaterial m_2, Ray ray_19, Hit hit_8)
+float3 gltf_shade(GltfMaterial m_2, Ray ray_20, Hit hit_8)
 {
     const float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv);
     float3 c_12 = (m_2.base_color.xyz * _e7.xyz);
-    const float3 _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_19, hit_8);
+    const float3 _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_20, hit_8);
     return _e14;
 }
 
@@ -1645,17 +1649,17 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_20, Hit hit_9, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_21, Hit hit_9, float3 secondary)
 {
     switch(type_id_4) {
         case 0u: {
             const GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10);
-            const float3 _e5 = gltf_masked_shade(_e4, ray_20, hit_9);
+            const float3 _e5 = gltf_masked_shade(_e4, ray_21, hit_9);
             return _e5;
         }
         case 1u: {
             const GltfMaterial _e6 = load_GltfMaterial(offset_10);
-            const float3 _e7 = gltf_shade(_e6, ray_20, hit_9);
+            const float3 _e7 = gltf_shade(_e6, ray_21, hit_9);
             return _e7;
         }
         default: {
@@ -1665,36 +1669,36 @@ float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_20, Hit hit_
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_21, Candidate c_6)
+float3 shade_direct(Ray ray_22, Candidate c_6)
 {
     GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(c_6.slot*128+0)), asfloat(instances.Load4(c_6.slot*128+16)), asfloat(instances.Load4(c_6.slot*128+32)), asfloat(instances.Load4(c_6.slot*128+48)), asfloat(instances.Load4(c_6.slot*128+64)), asfloat(instances.Load4(c_6.slot*128+80)), asuint(instances.Load(c_6.slot*128+96)), asuint(instances.Load(c_6.slot*128+100)), asuint(instances.Load(c_6.slot*128+104)), asuint(instances.Load(c_6.slot*128+108)), asuint(instances.Load(c_6.slot*128+112)), asuint(instances.Load(c_6.slot*128+116)), asuint(instances.Load(c_6.slot*128+120)), asuint(instances.Load(c_6.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_21, c_6);
-    const float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_21, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_22, c_6);
+    const float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_22, _e6, (0.0).xxx);
     return _e11;
 }
 
-float3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_22, float t_2, float3 radiance)
+float3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_23, float t_2, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_23, float t_3, float3 radiance_1)
+float3 through_medium(Ray ray_24, float t_3, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_23.medium == 0u)) {
+    if ((ray_24.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4((ray_23.medium - 1u)*128+0)), asfloat(instances.Load4((ray_23.medium - 1u)*128+16)), asfloat(instances.Load4((ray_23.medium - 1u)*128+32)), asfloat(instances.Load4((ray_23.medium - 1u)*128+48)), asfloat(instances.Load4((ray_23.medium - 1u)*128+64)), asfloat(instances.Load4((ray_23.medium - 1u)*128+80)), asuint(instances.Load((ray_23.medium - 1u)*128+96)), asuint(instances.Load((ray_23.medium - 1u)*128+100)), asuint(instances.Load((ray_23.medium - 1u)*128+104)), asuint(instances.Load((ray_23.medium - 1u)*128+108)), asuint(instances.Load((ray_23.medium - 1u)*128+112)), asuint(instances.Load((ray_23.medium - 1u)*128+116)), asuint(instances.Load((ray_23.medium - 1u)*128+120)), asuint(instances.Load((ray_23.medium - 1u)*128+124)));
+    GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4((ray_24.medium - 1u)*128+0)), asfloat(instances.Load4((ray_24.medium - 1u)*128+16)), asfloat(instances.Load4((ray_24.medium - 1u)*128+32)), asfloat(instances.Load4((ray_24.medium - 1u)*128+48)), asfloat(instances.Load4((ray_24.medium - 1u)*128+64)), asfloat(instances.Load4((ray_24.medium - 1u)*128+80)), asuint(instances.Load((ray_24.medium - 1u)*128+96)), asuint(instances.Load((ray_24.medium - 1u)*128+100)), asuint(instances.Load((ray_24.medium - 1u)*128+104)), asuint(instances.Load((ray_24.medium - 1u)*128+108)), asuint(instances.Load((ray_24.medium - 1u)*128+112)), asuint(instances.Load((ray_24.medium - 1u)*128+116)), asuint(instances.Load((ray_24.medium - 1u)*128+120)), asuint(instances.Load((ray_24.medium - 1u)*128+124)));
     if (((inst_10.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_23, t_3, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_24, t_3, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_24, Hit hit_10)
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_25, Hit hit_10)
 {
     return;
 }
@@ -1750,7 +1754,7 @@ float3 trace(Ray camera_ray)
     float t_4 = (float)0;
     Frame stack[4] = (Frame[4])0;
     uint depth = (uint)0;
-    Ray ray_25 = (Ray)0;
+    Ray ray_26 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     Ray s_ray = (Ray)0;
@@ -1789,7 +1793,7 @@ float3 trace(Ray camera_ray)
     }
     stack = ZeroValuearray4_Frame_();
     depth = 0u;
-    ray_25 = camera_ray;
+    ray_26 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     s_ray = camera_ray;
@@ -1808,10 +1812,10 @@ float3 trace(Ray camera_ray)
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_25;
+            Ray _e67 = ray_26;
             const Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_25;
+            Ray _e70 = ray_26;
             s_ray = _e70;
             s_sum = (0.0).xxx;
             fresh = true;
@@ -1948,7 +1952,7 @@ float3 trace(Ray camera_ray)
             const float3 _e284 = spawn_origin(hit_15, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_25 = ConstructRay(_e284, 0.0, dir_6, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_26 = ConstructRay(_e284, 0.0, dir_6, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(uint(min(top_1, 3u)), 3u)].ray;
             s_ray = _e299;
@@ -1984,7 +1988,7 @@ void render_pixel(uint2 pixel_3)
     float3 sum = (float3)0;
     uint bad = (uint)0;
     uint s_1 = (uint)0;
-    Ray ray_26 = (Ray)0;
+    Ray ray_27 = (Ray)0;
 
     FrameUniforms frame_5 = frame;
     TileParams tile_2 = tile;
@@ -2010,13 +2014,13 @@ void render_pixel(uint2 pixel_3)
         uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_26 = _e23;
-        ray_26.depth = 0u;
-        ray_26.kind = RAY_CAMERA;
-        float3 _e31 = ray_26.origin;
+        ray_27 = _e23;
+        ray_27.depth = 0u;
+        ray_27.kind = RAY_CAMERA;
+        float3 _e31 = ray_27.origin;
         const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_26.medium = _e33;
-        Ray _e34 = ray_26;
+        ray_27.medium = _e33;
+        Ray _e34 = ray_27;
         const float3 _e35 = trace(_e34);
         const bool3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

@@ -197,7 +197,7 @@ constant uint NODE_COUNT_SHIFT = 27u;
 constant uint NODE_COUNT_MASK = 15u;
 constant uint NODE_FIRST_MASK = 134217727u;
 constant uint FLAG_CULL_BACK = 8u;
-constant uint FLAG_CULL_FRONT = 16u;
+constant uint RAY_SHADOW = 2u;
 constant uint FLAG_ANY_HIT = 1u;
 constant float POINT_ERROR = 0.0000019073486;
 constant float GAMMA_1_ = 0.00000005960465;
@@ -218,7 +218,6 @@ constant bool HAS_BACKGROUND = true;
 constant float PBR_MIN_ALPHA = 0.001;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
 constant float LIGHT_ERROR = 0.00000047683716;
-constant uint RAY_SHADOW = 2u;
 constant float INV_PI = 0.31830987;
 constant uint FLAG_MEDIUM = 4u;
 constant uint FLAG_SECONDARY_RAYS = 2u;
@@ -534,17 +533,24 @@ metal::float3 normal_to_world(
     return _e19;
 }
 
+bool single_sided_seen_front(
+    Ray ray_2,
+    bool front_face
+) {
+    return front_face != (ray_2.kind == RAY_SHADOW);
+}
+
 bool culled(
     GpuInstance inst_2,
-    Ray ray_2,
+    Ray ray_3,
     Candidate c,
     device type_10 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Triangle _e4 = load_triangle(c.primitive, triangles, _buffer_sizes);
     metal::float3 _e12 = normal_to_world(inst_2, metal::cross(_e4.v1_ - _e4.v0_, _e4.v2_ - _e4.v0_));
-    bool front = metal::dot(ray_2.dir, _e12) < 0.0;
-    return ((front ? FLAG_CULL_FRONT : FLAG_CULL_BACK) & inst_2.flags) != 0u;
+    bool _e17 = single_sided_seen_front(ray_3, metal::dot(ray_3.dir, _e12) < 0.0);
+    return !(_e17);
 }
 
 float point_error(
@@ -602,7 +608,7 @@ metal::float3 decode_octahedral(
 }
 
 Hit finish_hit(
-    Ray ray_3,
+    Ray ray_4,
     Candidate c_1,
     device type_8 const& instances,
     device type_10 const& triangles,
@@ -614,9 +620,9 @@ Hit finish_hit(
     metal::float3 n_geo = {};
     metal::float3 n_shade = {};
     GpuInstance inst_7 = instances[c_1.slot];
-    float _e11 = point_error(ray_3.origin, ray_3.dir * metal::float3(c_1.t));
+    float _e11 = point_error(ray_4.origin, ray_4.dir * metal::float3(c_1.t));
     hit_error = _e11;
-    hit = Hit {ray_3.origin + (ray_3.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
+    hit = Hit {ray_4.origin + (ray_4.dir * metal::float3(c_1.t)), c_1.t, metal::float3(0.0, 1.0, 0.0), metal::float3(0.0, 1.0, 0.0), c_1.uv, true, {}, inst_7.object, c_1.primitive};
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -657,7 +663,7 @@ Hit finish_hit(
     metal::float3 _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     metal::float3 _e147 = hit.geometric_normal;
-    hit.front_face = metal::dot(ray_3.dir, _e147) < 0.0;
+    hit.front_face = metal::dot(ray_4.dir, _e147) < 0.0;
     Hit _e151 = hit;
     return _e151;
 }
@@ -813,13 +819,13 @@ uint gltf_pcg(
 }
 
 float gltf_coverage(
-    Ray ray_4,
+    Ray ray_5,
     Hit hit_1,
     constant TileParams& tile
 ) {
     uint h_1 = {};
-    metal::uint3 o_1 = as_type<metal::uint3>(ray_4.origin);
-    metal::uint3 d_3 = as_type<metal::uint3>(ray_4.dir);
+    metal::uint3 o_1 = as_type<metal::uint3>(ray_5.origin);
+    metal::uint3 d_3 = as_type<metal::uint3>(ray_5.dir);
     h_1 = ((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u);
     uint _e20 = h_1;
     h_1 = ((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u);
@@ -839,23 +845,23 @@ bool gltf_counts(
     float cutoff,
     uint blend,
     uint double_sided,
-    Ray ray_5,
+    Ray ray_6,
     Hit hit_2,
     constant TileParams& tile
 ) {
-    if ((double_sided == 0u) && !(hit_2.front_face)) {
+    if ((double_sided == 0u) && (hit_2.front_face == (ray_6.kind == RAY_SHADOW))) {
         return false;
     }
     if (blend != 0u) {
-        float _e14 = gltf_coverage(ray_5, hit_2, tile);
-        return _e14 < alpha;
+        float _e17 = gltf_coverage(ray_6, hit_2, tile);
+        return _e17 < alpha;
     }
     return alpha >= cutoff;
 }
 
 bool gltf_masked_any_hit(
     GltfMaskedMaterial m,
-    Ray ray_6,
+    Ray ray_7,
     Hit hit_3,
     constant TileParams& tile,
     device type_4 const& params,
@@ -864,14 +870,14 @@ bool gltf_masked_any_hit(
 ) {
     metal::float4 _e7 = sample_texture(m.base_texture, hit_3.uv, params, texels, _buffer_sizes);
     float alpha_1 = m.base_color.w * _e7.w;
-    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_6, hit_3, tile);
+    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_7, hit_3, tile);
     return _e13;
 }
 
 bool dispatch_any_hit(
     uint type_id_1,
     uint offset_3,
-    Ray ray_7,
+    Ray ray_8,
     Hit hit_4,
     constant TileParams& tile,
     device type_4 const& params,
@@ -879,13 +885,13 @@ bool dispatch_any_hit(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3, params, _buffer_sizes);
-    bool _e4 = gltf_masked_any_hit(_e3, ray_7, hit_4, tile, params, texels, _buffer_sizes);
+    bool _e4 = gltf_masked_any_hit(_e3, ray_8, hit_4, tile, params, texels, _buffer_sizes);
     return _e4;
 }
 
 bool accept(
     GpuInstance inst_5,
-    Ray ray_8,
+    Ray ray_9,
     Candidate c_3,
     constant TileParams& tile,
     device type_4 const& params,
@@ -897,22 +903,22 @@ bool accept(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     bool short_circuit = {};
-    bool _e9 = (inst_5.flags & (FLAG_CULL_BACK | FLAG_CULL_FRONT)) != 0u;
-    short_circuit = _e9;
-    if (_e9) {
-        bool _e11 = culled(inst_5, ray_8, c_3, triangles, _buffer_sizes);
-        short_circuit = _e11;
+    bool _e7 = (inst_5.flags & FLAG_CULL_BACK) != 0u;
+    short_circuit = _e7;
+    if (_e7) {
+        bool _e9 = culled(inst_5, ray_9, c_3, triangles, _buffer_sizes);
+        short_circuit = _e9;
     }
-    bool _e12 = short_circuit;
-    if (_e12) {
+    bool _e10 = short_circuit;
+    if (_e10) {
         return false;
     }
     if ((inst_5.flags & FLAG_ANY_HIT) != 0u) {
         float shaded = hit_error;
-        Hit _e21 = finish_hit(ray_8, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
+        Hit _e19 = finish_hit(ray_9, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
         hit_error = shaded;
-        bool _e25 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_8, _e21, tile, params, texels, _buffer_sizes);
-        return _e25;
+        bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_9, _e19, tile, params, texels, _buffer_sizes);
+        return _e23;
     }
     return true;
 }
@@ -963,7 +969,7 @@ metal::float2 children_entry(
     GpuNode n_3,
     metal::float3 origin_3,
     metal::float3 scale_1,
-    Ray ray_9,
+    Ray ray_10,
     metal::float3 inv,
     float tmax_3,
     thread uint& F32_INF
@@ -974,12 +980,12 @@ metal::float2 children_entry(
     metal::float3 _e11 = node_point(origin_3, scale_1, _e10);
     metal::uint3 _e12 = node_box_hi(lq);
     metal::float3 _e13 = node_point(origin_3, scale_1, _e12);
-    float _e16 = slab(_e11, _e13, ray_9.origin, inv, ray_9.tmin, tmax_3, F32_INF);
+    float _e16 = slab(_e11, _e13, ray_10.origin, inv, ray_10.tmin, tmax_3, F32_INF);
     metal::uint3 _e17 = node_box_lo(rq);
     metal::float3 _e18 = node_point(origin_3, scale_1, _e17);
     metal::uint3 _e19 = node_box_hi(rq);
     metal::float3 _e20 = node_point(origin_3, scale_1, _e19);
-    float _e23 = slab(_e18, _e20, ray_9.origin, inv, ray_9.tmin, tmax_3, F32_INF);
+    float _e23 = slab(_e18, _e20, ray_10.origin, inv, ray_10.tmin, tmax_3, F32_INF);
     return metal::float2(_e16, _e23);
 }
 
@@ -999,7 +1005,7 @@ Candidate intersect_mesh(
     GpuInstance inst_6,
     uint slot_2,
     Ray world_ray,
-    Ray ray_10,
+    Ray ray_11,
     Candidate best_in,
     bool shadow,
     constant TileParams& tile,
@@ -1021,8 +1027,8 @@ Candidate intersect_mesh(
     uint near = {};
     uint far = {};
     best = best_in;
-    metal::float3 _e8 = safe_inverse(ray_10.dir);
-    TriangleRay _e9 = prepare_triangle_ray(ray_10);
+    metal::float3 _e8 = safe_inverse(ray_11.dir);
+    TriangleRay _e9 = prepare_triangle_ray(ray_11);
     uint base_2 = inst_6.blas_root;
     GpuNode header_1 = nodes[base_2];
     metal::float3 origin_4 = header_1.min;
@@ -1057,7 +1063,7 @@ Candidate intersect_mesh(
                 uint _e41 = k;
                 uint prim = (inst_6.triangle_offset + first) + _e41;
                 float _e45 = best.t;
-                metal::float3 _e46 = hit_triangle(_e9, prim, ray_10.tmin, _e45, F32_INF, triangles, _buffer_sizes);
+                metal::float3 _e46 = hit_triangle(_e9, prim, ray_11.tmin, _e45, F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     Candidate c_10 = Candidate {_e46.x, slot_2, prim, {}, _e46.yz, {}, metal::float3(0.0)};
@@ -1075,7 +1081,7 @@ Candidate intersect_mesh(
             uint _e62 = child;
             GpuNode n_7 = nodes[base_2 + _e62];
             float _e68 = best.t;
-            metal::float2 _e69 = children_entry(n_7, origin_4, scale_2, ray_10, _e8, _e68, F32_INF);
+            metal::float2 _e69 = children_entry(n_7, origin_4, scale_2, ray_11, _e8, _e68, F32_INF);
             float tl = _e69.x;
             float tr = _e69.y;
             uint _e73 = F32_INF;
@@ -1124,7 +1130,7 @@ Candidate intersect_mesh(
 
 Candidate intersect_object(
     uint slot_3,
-    Ray ray_11,
+    Ray ray_12,
     Candidate best_1,
     bool shadow_1,
     constant TileParams& tile,
@@ -1141,12 +1147,12 @@ Candidate intersect_object(
 ) {
     Ray r_2 = {};
     GpuInstance inst_8 = instances[slot_3];
-    Ray _e7 = to_object(inst_8, ray_11);
+    Ray _e7 = to_object(inst_8, ray_12);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_8.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_11, _e14, best_1, shadow_1, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_12, _e14, best_1, shadow_1, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
@@ -1225,7 +1231,7 @@ metal::float3 node_frame_hi(
 }
 
 Candidate intersect_scene(
-    Ray ray_12,
+    Ray ray_13,
     bool shadow_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
@@ -1248,21 +1254,21 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_12.tmax);
+    Candidate _e7 = no_candidate(ray_13.tmax);
     best_2 = _e7;
     FrameUniforms frame_2 = frame;
     if (frame_2.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_12.dir);
+    metal::float3 _e16 = safe_inverse(ray_13.dir);
     uint base_3 = frame_2.tlas_root;
     GpuNode header_2 = nodes[base_3];
     metal::float3 origin_5 = header_2.min;
     metal::float3 scale_3 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_12.origin, _e16, ray_12.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_13.origin, _e16, ray_13.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
@@ -1280,7 +1286,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_12, _e55, shadow_2, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_13, _e55, shadow_2, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1292,7 +1298,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_8 = nodes[base_3 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_12, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_13, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1358,9 +1364,9 @@ SkyGradient load_SkyGradient(
 
 metal::float3 sky_gradient(
     SkyGradient b_5,
-    Ray ray_13
+    Ray ray_14
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_13.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_14.dir);
     float y = _e3.y;
     if (y < 0.0) {
         return metal::mix(b_5.horizon, b_5.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
@@ -1371,17 +1377,17 @@ metal::float3 sky_gradient(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_5,
-    Ray ray_14,
+    Ray ray_15,
     device type_4 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_5, params, _buffer_sizes);
-    metal::float3 _e3 = sky_gradient(_e2, ray_14);
+    metal::float3 _e3 = sky_gradient(_e2, ray_15);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_15,
+    Ray ray_16,
     constant FrameUniforms& frame,
     device type_4 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1390,15 +1396,15 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_3 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_15, params, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_16, params, _buffer_sizes);
     return _e9;
 }
 
 metal::float3 shading_normal(
-    Ray ray_16,
+    Ray ray_17,
     Hit hit_5
 ) {
-    metal::float3 ng = metal::faceforward(hit_5.geometric_normal, ray_16.dir, hit_5.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_5.geometric_normal, ray_17.dir, hit_5.geometric_normal);
     return metal::faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1691,7 +1697,7 @@ metal::float3 gltf_radiance(
     float roughness_1,
     float occlusion,
     metal::float3 emissive,
-    Ray ray_17,
+    Ray ray_18,
     Hit hit_6,
     constant TileParams& tile,
     constant FrameUniforms& frame,
@@ -1709,8 +1715,8 @@ metal::float3 gltf_radiance(
 ) {
     metal::float3 color = {};
     uint i_2 = {};
-    metal::float3 _e7 = shading_normal(ray_17, hit_6);
-    metal::float3 _e9 = normalize_vec3f(ray_17.dir);
+    metal::float3 _e7 = shading_normal(ray_18, hit_6);
+    metal::float3 _e9 = normalize_vec3f(ray_18.dir);
     metal::float3 v_2 = -(_e9);
     float metal_ = metal::saturate(metallic);
     float _e12 = pbr_alpha2_(roughness_1);
@@ -1751,7 +1757,7 @@ metal::float3 gltf_radiance(
 
 metal::float3 gltf_masked_shade(
     GltfMaskedMaterial m_1,
-    Ray ray_18,
+    Ray ray_19,
     Hit hit_7,
     constant TileParams& tile,
     constant FrameUniforms& frame,
@@ -1769,7 +1775,7 @@ metal::float3 gltf_masked_shade(
 ) {
     metal::float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv, params, texels, _buffer_sizes);
     metal::float3 c_11 = m_1.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_18, hit_7, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_19, hit_7, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e14;
 }
 
@@ -1793,7 +1799,7 @@ GltfMaterial load_GltfMaterial(
 
 metal::float3 gltf_shade(
     GltfMaterial m_2,
-    Ray ray_19,
+    Ray ray_20,
     Hit hit_8,
     constant TileParams& tile,
     constant FrameUniforms& frame,
@@ -1811,14 +1817,14 @@ metal::float3 gltf_shade(
 ) {
     metal::float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv, params, texels, _buffer_sizes);
     metal::float3 c_12 = m_2.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_19, hit_8, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_20, hit_8, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e14;
 }
 
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_10,
-    Ray ray_20,
+    Ray ray_21,
     Hit hit_9,
     metal::float3 secondary,
     constant TileParams& tile,
@@ -1838,12 +1844,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e5 = gltf_masked_shade(_e4, ray_20, hit_9, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e5 = gltf_masked_shade(_e4, ray_21, hit_9, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e7 = gltf_shade(_e6, ray_20, hit_9, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e7 = gltf_shade(_e6, ray_21, hit_9, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             return _e7;
         }
         default: {
@@ -1854,7 +1860,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_21,
+    Ray ray_22,
     Candidate c_6,
     constant TileParams& tile,
     constant FrameUniforms& frame,
@@ -1871,15 +1877,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_9 = instances[c_6.slot];
-    Hit _e6 = finish_hit(ray_21, c_6, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_21, _e6, metal::float3(0.0), tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_22, c_6, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_22, _e6, metal::float3(0.0), tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_11,
-    Ray ray_22,
+    Ray ray_23,
     float t_2,
     metal::float3 radiance
 ) {
@@ -1887,7 +1893,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_23,
+    Ray ray_24,
     float t_3,
     metal::float3 radiance_1,
     device type_8 const& instances,
@@ -1896,21 +1902,21 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_23.medium == 0u) {
+    if (ray_24.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_10 = instances[ray_23.medium - 1u];
+    GpuInstance inst_10 = instances[ray_24.medium - 1u];
     if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_23, t_3, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_24, t_3, radiance_1);
     return _e21;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_12,
-    Ray ray_24,
+    Ray ray_25,
     Hit hit_10
 ) {
     return;
@@ -1966,7 +1972,7 @@ metal::float3 trace(
     float t_4 = {};
     type_17 stack = {};
     uint depth = {};
-    Ray ray_25 = {};
+    Ray ray_26 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -2004,7 +2010,7 @@ metal::float3 trace(
     }
     stack = type_17 {};
     depth = 0u;
-    ray_25 = camera_ray;
+    ray_26 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -2023,10 +2029,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_25;
+            Ray _e67 = ray_26;
             Candidate _e69 = intersect_scene(_e67, false, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_25;
+            Ray _e70 = ray_26;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -2163,7 +2169,7 @@ metal::float3 trace(
             metal::float3 _e284 = spawn_origin(hit_14, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_25 = Ray {_e284, 0.0, dir_6, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_26 = Ray {_e284, 0.0, dir_6, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -2221,7 +2227,7 @@ void render_pixel(
     metal::float3 sum = {};
     uint bad = {};
     uint s_1 = {};
-    Ray ray_26 = {};
+    Ray ray_27 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_2 = tile;
     sum = metal::float3(0.0);
@@ -2246,13 +2252,13 @@ void render_pixel(
         uint sample_3 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
-        ray_26 = _e23;
-        ray_26.depth = 0u;
-        ray_26.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_26.origin;
+        ray_27 = _e23;
+        ray_27.depth = 0u;
+        ray_27.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_27.origin;
         uint _e33 = medium_at(_e31, NO_HIT, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
-        ray_26.medium = _e33;
-        Ray _e34 = ray_26;
+        ray_27.medium = _e33;
+        Ray _e34 = ray_27;
         metal::float3 _e35 = trace(_e34, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {

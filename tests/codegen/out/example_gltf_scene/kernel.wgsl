@@ -169,7 +169,7 @@ const NODE_COUNT_SHIFT: u32 = 27u;
 const NODE_COUNT_MASK: u32 = 15u;
 const NODE_FIRST_MASK: u32 = 134217727u;
 const FLAG_CULL_BACK: u32 = 8u;
-const FLAG_CULL_FRONT: u32 = 16u;
+const RAY_SHADOW: u32 = 2u;
 const FLAG_ANY_HIT: u32 = 1u;
 const POINT_ERROR: f32 = 0.0000019073486f;
 const GAMMA_1_: f32 = 0.00000005960465f;
@@ -190,7 +190,6 @@ const HAS_BACKGROUND: bool = true;
 const PBR_MIN_ALPHA: f32 = 0.001f;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
-const RAY_SHADOW: u32 = 2u;
 const INV_PI: f32 = 0.31830987f;
 const FLAG_MEDIUM: u32 = 4u;
 const FLAG_SECONDARY_RAYS: u32 = 2u;
@@ -443,11 +442,15 @@ fn normal_to_world(inst_1: GpuInstance, n: vec3<f32>) -> vec3<f32> {
     return _e19;
 }
 
-fn culled(inst_2: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
+fn single_sided_seen_front(ray_2: Ray, front_face: bool) -> bool {
+    return (front_face != (ray_2.kind == RAY_SHADOW));
+}
+
+fn culled(inst_2: GpuInstance, ray_3: Ray, c: Candidate) -> bool {
     let _e4 = load_triangle(c.primitive);
     let _e12 = normal_to_world(inst_2, cross((_e4.v1_ - _e4.v0_), (_e4.v2_ - _e4.v0_)));
-    let front = (dot(ray_2.dir, _e12) < 0f);
-    return ((select(FLAG_CULL_BACK, FLAG_CULL_FRONT, front) & inst_2.flags) != 0u);
+    let _e17 = single_sided_seen_front(ray_3, (dot(ray_3.dir, _e12) < 0f));
+    return !(_e17);
 }
 
 fn point_error(origin: vec3<f32>, along: vec3<f32>) -> f32 {
@@ -491,15 +494,15 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     return _e40;
 }
 
-fn finish_hit(ray_3: Ray, c_1: Candidate) -> Hit {
+fn finish_hit(ray_4: Ray, c_1: Candidate) -> Hit {
     var hit: Hit;
     var n_geo: vec3<f32>;
     var n_shade: vec3<f32>;
 
     let inst_7 = instances[c_1.slot];
-    let _e11 = point_error(ray_3.origin, (ray_3.dir * vec3(c_1.t)));
+    let _e11 = point_error(ray_4.origin, (ray_4.dir * vec3(c_1.t)));
     hit_error = _e11;
-    hit = Hit((ray_3.origin + (ray_3.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
+    hit = Hit((ray_4.origin + (ray_4.dir * vec3(c_1.t))), c_1.t, vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 1f, 0f), c_1.uv, true, inst_7.object, c_1.primitive);
     n_geo = c_1.normal;
     n_shade = c_1.normal;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
@@ -540,7 +543,7 @@ fn finish_hit(ray_3: Ray, c_1: Candidate) -> Hit {
     let _e143 = normal_to_world(inst_7, _e142);
     hit.normal = _e143;
     let _e147 = hit.geometric_normal;
-    hit.front_face = (dot(ray_3.dir, _e147) < 0f);
+    hit.front_face = (dot(ray_4.dir, _e147) < 0f);
     let _e151 = hit;
     return _e151;
 }
@@ -655,11 +658,11 @@ fn gltf_pcg(x_3: u32) -> u32 {
     return ((word_2 >> 22u) ^ word_2);
 }
 
-fn gltf_coverage(ray_4: Ray, hit_1: Hit) -> f32 {
+fn gltf_coverage(ray_5: Ray, hit_1: Hit) -> f32 {
     var h_1: u32;
 
-    let o_1 = bitcast<vec3<u32>>(ray_4.origin);
-    let d_3 = bitcast<vec3<u32>>(ray_4.dir);
+    let o_1 = bitcast<vec3<u32>>(ray_5.origin);
+    let d_3 = bitcast<vec3<u32>>(ray_5.dir);
     h_1 = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u));
     let _e20 = h_1;
     h_1 = (((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
@@ -674,49 +677,49 @@ fn gltf_coverage(ray_4: Ray, hit_1: Hit) -> f32 {
     return (f32((_e45 >> 8u)) * (1f / 16777216f));
 }
 
-fn gltf_counts(alpha: f32, cutoff: f32, blend: u32, double_sided: u32, ray_5: Ray, hit_2: Hit) -> bool {
-    if ((double_sided == 0u) && !(hit_2.front_face)) {
+fn gltf_counts(alpha: f32, cutoff: f32, blend: u32, double_sided: u32, ray_6: Ray, hit_2: Hit) -> bool {
+    if ((double_sided == 0u) && (hit_2.front_face == (ray_6.kind == RAY_SHADOW))) {
         return false;
     }
     if (blend != 0u) {
-        let _e14 = gltf_coverage(ray_5, hit_2);
-        return (_e14 < alpha);
+        let _e17 = gltf_coverage(ray_6, hit_2);
+        return (_e17 < alpha);
     }
     return (alpha >= cutoff);
 }
 
-fn gltf_masked_any_hit(m: GltfMaskedMaterial, ray_6: Ray, hit_3: Hit) -> bool {
+fn gltf_masked_any_hit(m: GltfMaskedMaterial, ray_7: Ray, hit_3: Hit) -> bool {
     let _e7 = sample_texture(m.base_texture, hit_3.uv);
     let alpha_1 = (m.base_color.w * _e7.w);
-    let _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_6, hit_3);
+    let _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_7, hit_3);
     return _e13;
 }
 
-fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_7: Ray, hit_4: Hit) -> bool {
+fn dispatch_any_hit(type_id_1: u32, offset_3: u32, ray_8: Ray, hit_4: Hit) -> bool {
     let _e3 = load_GltfMaskedMaterial(offset_3);
-    let _e4 = gltf_masked_any_hit(_e3, ray_7, hit_4);
+    let _e4 = gltf_masked_any_hit(_e3, ray_8, hit_4);
     return _e4;
 }
 
-fn accept(inst_5: GpuInstance, ray_8: Ray, c_3: Candidate) -> bool {
+fn accept(inst_5: GpuInstance, ray_9: Ray, c_3: Candidate) -> bool {
     var short_circuit: bool;
 
-    let _e9 = ((inst_5.flags & (FLAG_CULL_BACK | FLAG_CULL_FRONT)) != 0u);
-    short_circuit = _e9;
-    if _e9 {
-        let _e11 = culled(inst_5, ray_8, c_3);
-        short_circuit = _e11;
+    let _e7 = ((inst_5.flags & FLAG_CULL_BACK) != 0u);
+    short_circuit = _e7;
+    if _e7 {
+        let _e9 = culled(inst_5, ray_9, c_3);
+        short_circuit = _e9;
     }
-    let _e12 = short_circuit;
-    if _e12 {
+    let _e10 = short_circuit;
+    if _e10 {
         return false;
     }
     if ((inst_5.flags & FLAG_ANY_HIT) != 0u) {
         let shaded = hit_error;
-        let _e21 = finish_hit(ray_8, c_3);
+        let _e19 = finish_hit(ray_9, c_3);
         hit_error = shaded;
-        let _e25 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_8, _e21);
-        return _e25;
+        let _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_9, _e19);
+        return _e23;
     }
     return true;
 }
@@ -747,19 +750,19 @@ fn slab(lo: vec3<f32>, hi: vec3<f32>, origin_2: vec3<f32>, inv_dir: vec3<f32>, t
     return bitcast<f32>(_e30);
 }
 
-fn children_entry(n_3: GpuNode, origin_3: vec3<f32>, scale_1: vec3<f32>, ray_9: Ray, inv: vec3<f32>, tmax_3: f32) -> vec2<f32> {
+fn children_entry(n_3: GpuNode, origin_3: vec3<f32>, scale_1: vec3<f32>, ray_10: Ray, inv: vec3<f32>, tmax_3: f32) -> vec2<f32> {
     let lq = bitcast<vec3<u32>>(n_3.min);
     let rq = bitcast<vec3<u32>>(n_3.max);
     let _e10 = node_box_lo(lq);
     let _e11 = node_point(origin_3, scale_1, _e10);
     let _e12 = node_box_hi(lq);
     let _e13 = node_point(origin_3, scale_1, _e12);
-    let _e16 = slab(_e11, _e13, ray_9.origin, inv, ray_9.tmin, tmax_3);
+    let _e16 = slab(_e11, _e13, ray_10.origin, inv, ray_10.tmin, tmax_3);
     let _e17 = node_box_lo(rq);
     let _e18 = node_point(origin_3, scale_1, _e17);
     let _e19 = node_box_hi(rq);
     let _e20 = node_point(origin_3, scale_1, _e19);
-    let _e23 = slab(_e18, _e20, ray_9.origin, inv, ray_9.tmin, tmax_3);
+    let _e23 = slab(_e18, _e20, ray_10.origin, inv, ray_10.tmin, tmax_3);
     return vec2<f32>(_e16, _e23);
 }
 
@@ -771,7 +774,7 @@ fn pop(base: u32, sp: u32) -> vec2<u32> {
     return vec2<u32>(_e14, (sp - 1u));
 }
 
-fn intersect_mesh(inst_6: GpuInstance, slot_2: u32, world_ray: Ray, ray_10: Ray, best_in: Candidate, shadow: bool) -> Candidate {
+fn intersect_mesh(inst_6: GpuInstance, slot_2: u32, world_ray: Ray, ray_11: Ray, best_in: Candidate, shadow: bool) -> Candidate {
     var best: Candidate;
     var sp_1: u32;
     var child: u32;
@@ -780,8 +783,8 @@ fn intersect_mesh(inst_6: GpuInstance, slot_2: u32, world_ray: Ray, ray_10: Ray,
     var far: u32;
 
     best = best_in;
-    let _e8 = safe_inverse(ray_10.dir);
-    let _e9 = prepare_triangle_ray(ray_10);
+    let _e8 = safe_inverse(ray_11.dir);
+    let _e9 = prepare_triangle_ray(ray_11);
     let base_2 = inst_6.blas_root;
     let header_1 = nodes[base_2];
     let origin_4 = header_1.min;
@@ -804,7 +807,7 @@ fn intersect_mesh(inst_6: GpuInstance, slot_2: u32, world_ray: Ray, ray_10: Ray,
                 let _e41 = k;
                 let prim = ((inst_6.triangle_offset + first) + _e41);
                 let _e45 = best.t;
-                let _e46 = hit_triangle(_e9, prim, ray_10.tmin, _e45);
+                let _e46 = hit_triangle(_e9, prim, ray_11.tmin, _e45);
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
                     let c_10 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0f));
@@ -826,7 +829,7 @@ fn intersect_mesh(inst_6: GpuInstance, slot_2: u32, world_ray: Ray, ray_10: Ray,
             let _e62 = child;
             let n_7 = nodes[(base_2 + _e62)];
             let _e68 = best.t;
-            let _e69 = children_entry(n_7, origin_4, scale_2, ray_10, _e8, _e68);
+            let _e69 = children_entry(n_7, origin_4, scale_2, ray_11, _e8, _e68);
             let tl = _e69.x;
             let tr = _e69.y;
             let _e73 = F32_INF;
@@ -873,16 +876,16 @@ fn intersect_mesh(inst_6: GpuInstance, slot_2: u32, world_ray: Ray, ray_10: Ray,
     return _e122;
 }
 
-fn intersect_object(slot_3: u32, ray_11: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
+fn intersect_object(slot_3: u32, ray_12: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {
     var r_2: Ray;
 
     let inst_8 = instances[slot_3];
-    let _e7 = to_object(inst_8, ray_11);
+    let _e7 = to_object(inst_8, ray_12);
     r_2 = _e7;
     r_2.tmax = best_1.t;
     if (inst_8.geometry_type == MESH_GEOMETRY) {
         let _e14 = r_2;
-        let _e15 = intersect_mesh(inst_8, slot_3, ray_11, _e14, best_1, shadow_1);
+        let _e15 = intersect_mesh(inst_8, slot_3, ray_12, _e14, best_1, shadow_1);
         return _e15;
     }
     return best_1;
@@ -939,7 +942,7 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     return _e5;
 }
 
-fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_13: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -948,21 +951,21 @@ fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_12.tmax);
+    let _e7 = no_candidate(ray_13.tmax);
     best_2 = _e7;
     let frame_2 = frame;
     if (frame_2.instance_count == 0u) {
         let _e14 = best_2;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_12.dir);
+    let _e16 = safe_inverse(ray_13.dir);
     let base_3 = frame_2.tlas_root;
     let header_2 = nodes[base_3];
     let origin_5 = header_2.min;
     let scale_3 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_5, _e23, ray_12.origin, _e16, ray_12.tmin, _e27);
+    let _e28 = slab(origin_5, _e23, ray_13.origin, _e16, ray_13.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
@@ -977,7 +980,7 @@ fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e52 = child_1;
                 let _e55 = best_2;
-                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_12, _e55, shadow_2);
+                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_13, _e55, shadow_2);
                 best_2 = _e56;
                 let _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -989,7 +992,7 @@ fn intersect_scene(ray_12: Ray, shadow_2: bool) -> Candidate {
             let _e63 = child_1;
             let n_8 = nodes[(base_3 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_8, origin_5, scale_3, ray_12, _e16, _e69);
+            let _e70 = children_entry(n_8, origin_5, scale_3, ray_13, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
@@ -1049,8 +1052,8 @@ fn load_SkyGradient(offset_4: u32) -> SkyGradient {
     return SkyGradient(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)));
 }
 
-fn sky_gradient(b_5: SkyGradient, ray_13: Ray) -> vec3<f32> {
-    let _e3 = normalize_vec3f(ray_13.dir);
+fn sky_gradient(b_5: SkyGradient, ray_14: Ray) -> vec3<f32> {
+    let _e3 = normalize_vec3f(ray_14.dir);
     let y = _e3.y;
     if (y < 0f) {
         return mix(b_5.horizon, b_5.ground, vec3(min((-(y) * 4f), 1f)));
@@ -1058,23 +1061,23 @@ fn sky_gradient(b_5: SkyGradient, ray_13: Ray) -> vec3<f32> {
     return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y)));
 }
 
-fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_14: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_15: Ray) -> vec3<f32> {
     let _e2 = load_SkyGradient(offset_5);
-    let _e3 = sky_gradient(_e2, ray_14);
+    let _e3 = sky_gradient(_e2, ray_15);
     return _e3;
 }
 
-fn miss(ray_15: Ray) -> vec3<f32> {
+fn miss(ray_16: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_3 = frame;
-    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_15);
+    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_16);
     return _e9;
 }
 
-fn shading_normal(ray_16: Ray, hit_5: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_5.geometric_normal, ray_16.dir, hit_5.geometric_normal);
+fn shading_normal(ray_17: Ray, hit_5: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_5.geometric_normal, ray_17.dir, hit_5.geometric_normal);
     return faceForward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1239,12 +1242,12 @@ fn pbr_smith_v(ndl: f32, ndv: f32, a2_1: f32) -> f32 {
     return (0.5f / max((gv + gl), 0.00000000000000000001f));
 }
 
-fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32, emissive: vec3<f32>, ray_17: Ray, hit_6: Hit) -> vec3<f32> {
+fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32, emissive: vec3<f32>, ray_18: Ray, hit_6: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_2: u32;
 
-    let _e7 = shading_normal(ray_17, hit_6);
-    let _e9 = normalize_vec3f(ray_17.dir);
+    let _e7 = shading_normal(ray_18, hit_6);
+    let _e9 = normalize_vec3f(ray_18.dir);
     let v_2 = -(_e9);
     let metal = saturate(metallic);
     let _e12 = pbr_alpha2_(roughness_1);
@@ -1278,10 +1281,10 @@ fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32
     return _e68;
 }
 
-fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_18: Ray, hit_7: Hit) -> vec3<f32> {
+fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_19: Ray, hit_7: Hit) -> vec3<f32> {
     let _e7 = sample_texture(m_1.base_texture, hit_7.uv);
     let c_11 = (m_1.base_color.xyz * _e7.xyz);
-    let _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1f, m_1.emissive, ray_18, hit_7);
+    let _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1f, m_1.emissive, ray_19, hit_7);
     return _e14;
 }
 
@@ -1299,23 +1302,23 @@ fn load_GltfMaterial(offset_9: u32) -> GltfMaterial {
     return GltfMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), vec3<f32>(bitcast<f32>(_e47), bitcast<f32>(_e53), bitcast<f32>(_e59)));
 }
 
-fn gltf_shade(m_2: GltfMaterial, ray_19: Ray, hit_8: Hit) -> vec3<f32> {
+fn gltf_shade(m_2: GltfMaterial, ray_20: Ray, hit_8: Hit) -> vec3<f32> {
     let _e7 = sample_texture(m_2.base_texture, hit_8.uv);
     let c_12 = (m_2.base_color.xyz * _e7.xyz);
-    let _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1f, m_2.emissive, ray_19, hit_8);
+    let _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1f, m_2.emissive, ray_20, hit_8);
     return _e14;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_20: Ray, hit_9: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_21: Ray, hit_9: Hit, secondary: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e4 = load_GltfMaskedMaterial(offset_10);
-            let _e5 = gltf_masked_shade(_e4, ray_20, hit_9);
+            let _e5 = gltf_masked_shade(_e4, ray_21, hit_9);
             return _e5;
         }
         case 1u: {
             let _e6 = load_GltfMaterial(offset_10);
-            let _e7 = gltf_shade(_e6, ray_20, hit_9);
+            let _e7 = gltf_shade(_e6, ray_21, hit_9);
             return _e7;
         }
         default: {
@@ -1324,33 +1327,33 @@ fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_20: Ray, hit_9: Hit,
     return vec3<f32>();
 }
 
-fn shade_direct(ray_21: Ray, c_6: Candidate) -> vec3<f32> {
+fn shade_direct(ray_22: Ray, c_6: Candidate) -> vec3<f32> {
     let inst_9 = instances[c_6.slot];
-    let _e6 = finish_hit(ray_21, c_6);
-    let _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_21, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_22, c_6);
+    let _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_22, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_22: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_23: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_23: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_24: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_23.medium == 0u) {
+    if (ray_24.medium == 0u) {
         return radiance_1;
     }
-    let inst_10 = instances[(ray_23.medium - 1u)];
+    let inst_10 = instances[(ray_24.medium - 1u)];
     if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_23, t_3, radiance_1);
+    let _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_24, t_3, radiance_1);
     return _e21;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_24: Ray, hit_10: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_25: Ray, hit_10: Hit) {
     return;
 }
 
@@ -1378,7 +1381,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_4: f32;
     var stack: array<Frame, 4>;
     var depth: u32;
-    var ray_25: Ray;
+    var ray_26: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1417,7 +1420,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 4>();
     depth = 0u;
-    ray_25 = camera_ray;
+    ray_26 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1433,10 +1436,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_25;
+            let _e67 = ray_26;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_25;
+            let _e70 = ray_26;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1568,7 +1571,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e284 = spawn_origin(hit_14, _e283, dir_6);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_25 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_26 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -1601,7 +1604,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s_1: u32;
-    var ray_26: Ray;
+    var ray_27: Ray;
 
     let frame_5 = frame;
     let tile_2 = tile;
@@ -1618,13 +1621,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
         let sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_26 = _e23;
-        ray_26.depth = 0u;
-        ray_26.kind = RAY_CAMERA;
-        let _e31 = ray_26.origin;
+        ray_27 = _e23;
+        ray_27.depth = 0u;
+        ray_27.kind = RAY_CAMERA;
+        let _e31 = ray_27.origin;
         let _e33 = medium_at(_e31, NO_HIT);
-        ray_26.medium = _e33;
-        let _e34 = ray_26;
+        ray_27.medium = _e33;
+        let _e34 = ray_27;
         let _e35 = trace(_e34);
         let _e36 = is_finite_vec3f(_e35);
         if all(_e36) {
