@@ -373,6 +373,9 @@ async function runJob(j) {
       if (j.first) {
         ui.canvas.width = w;
         ui.canvas.height = h;
+        // Small images are shown enlarged by a whole factor (pixelated), to at least 320 px wide.
+        const zoom = Math.max(1, Math.ceil(320 / w));
+        ui.canvas.style.width = `${w * zoom}px`;
         j.first = false;
       }
       ui.canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(rgba.buffer, rgba.byteOffset, rgba.length), w, h), 0, 0);
@@ -503,6 +506,10 @@ async function initWebGpu() {
   } else {
     try {
       state.gpu = await pkg.initGpu();
+      // wgpu's description may lack the name on the web; the browser's adapter info says more.
+      const info = (await navigator.gpu.requestAdapter())?.info;
+      const more = [info?.vendor, info?.architecture, info?.description].filter(Boolean).join(' ');
+      if (more) state.gpu = `${state.gpu.trim()} [${more}]`;
     } catch (e) {
       state.gpuError = `The renderer needs WebGPU, and no adapter was found: ${e.message ?? e}`;
     }
