@@ -539,7 +539,7 @@ async function main() {
   await initWebGpu();
   const wanted = params.get('example') ?? 'hello/scene.rt';
   const [name, file] = wanted.split('/');
-  const ex = examples.find((e) => e.name === name) ?? examples[0];
+  const ex = examples.find((e) => e.name === name) ?? examples.find((e) => e.name === 'hello') ?? examples[0];
   await loadExample(`${ex.name}/${file ?? ex.entries[0].file}`);
   state.ready = true;
 }
