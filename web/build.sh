@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # web/build.sh: builds the compiler in WebAssembly (rtc-web) into web/pkg/: pkg/web/ for browsers
 # (`--target web`, an ES module with an async init) and pkg/node/ for Node (`--target nodejs`,
-# what web/tests/*.mjs load).
+# what web/tests/*.mjs load), plus pkg/examples/ and pkg/examples.json, the examples the
+# playground (web/playground/, web/README.md) offers.
 #
 #   bash web/build.sh              the compiler
 #   bash web/build.sh --renderer   the compiler and the renderer (feature `renderer`: rtc-runtime
@@ -34,4 +35,5 @@ wasm=target/wasm32-unknown-unknown/release/rtc_web.wasm
 rm -rf web/pkg
 "$bindgen" --target web --out-dir web/pkg/web "$wasm"
 "$bindgen" --target nodejs --out-dir web/pkg/node "$wasm"
+bash web/playground/examples.sh web/pkg
 echo "built web/pkg/web and web/pkg/node in $((SECONDS - start)) s ($(du -k web/pkg/web/rtc_web_bg.wasm | cut -f1) KiB of wasm)"

@@ -1,0 +1,547 @@
+// web/playground/playground.js: the playground's logic (an ES module, no dependencies).
+//
+// It loads rtc's WebAssembly package (../pkg/web, built by `bash web/build.sh --renderer`) and the
+// examples index (../pkg/examples.json, written by web/playground/examples.sh). The editor holds
+// one scene file of an example; the example's other files (its registry, other scene files) are
+// given to the compiler unchanged, all under examples/NAME/FILE as `rtc` at the repository's root
+// names them.
+//
+// What it guarantees:
+// - 150 ms after the last keystroke the source is checked (WebCompiler.check, parsed modules
+//   cached); every diagnostic of the edited file marks its line (gutter, line tint, wavy underline
+//   of the primary span, the message at the line's end) and all are listed with rtc's rendered text.
+// - A clean check is compiled (WebCompiler.compile: link errors and warnings, WGSL, manifest);
+//   a clean compile of a source that differs from the one on screen re-creates the WebRenderer and
+//   accumulates one pass per animation frame into the canvas (readRgba8 → putImageData) until the
+//   target spp. A source with errors, or a renderer that fails, leaves the last good image.
+// - Without WebGPU (no navigator.gpu, no adapter, or a package built without the renderer) the page
+//   still checks and compiles, and says why it cannot render.
+// - window.rtcPlayground.state mirrors what the page shows, for web/tests/playground.mjs.
+
+const $ = (id) => document.getElementById(id);
+const ui = {
+  example: $('example'),
+  target: $('target'),
+  scale: $('scale'),
+  revert: $('revert'),
+  gpu: $('gpu'),
+  gutter: $('gutter-lines'),
+  backdrop: $('backdrop'),
+  source: $('source'),
+  checkStatus: $('check-status'),
+  diagnostics: $('diagnostics'),
+  canvas: $('canvas'),
+  overlay: $('overlay'),
+  stats: $('stats'),
+  renderStatus: $('render-status'),
+  wgslPick: $('wgsl-pick'),
+  wgsl: $('wgsl'),
+};
+
+/** What the page shows, for tests and the curious (window.rtcPlayground.state). */
+const state = {
+  ready: false,
+  gpu: null, // the adapter's description once initGpu succeeded
+  gpuError: null, // why the page cannot render, when it cannot
+  example: null, // { name, file, scene }
+  checks: 0, // checks run (one per debounced edit)
+  checking: false, // an edit is waiting for its check
+  diagnostics: [], // of the last check or compile
+  ok: null, // the last check/compile had no error
+  renders: 0, // renderers created
+  rendering: false, // a renderer is accumulating
+  renderError: null, // the last renderer's error, until the next renderer starts
+  renderedSource: null, // the source of the image on the canvas
+  spp: 0, // samples per pixel accumulated in the image on the canvas
+  targetSpp: 0,
+  frameMs: null, // wall time of the last pass: accumulate(1) + readRgba8
+  size: null, // [width, height] of the image on the canvas
+};
+window.rtcPlayground = { state };
+
+let pkg = null; // the wasm module's exports
+let compiler = null; // one WebCompiler: parsed modules are cached between checks
+let examples = []; // the index
+let files = new Map(); // path → text of the current example
+let entry = null; // the edited file's path (examples/NAME/FILE)
+let original = ''; // the edited file as loaded
+let debounce = 0;
+let job = null; // the running render: { renderer, source, cancelled, running }
+
+// ---- the editor ------------------------------------------------------------------------------
+
+const LINE_HEIGHT = 18; // px, as in playground.css (--line)
+
+function escapeHtml(s) {
+  return s.replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]);
+}
+
+/** Redraws the gutter and the backdrop for `text`, marking `marks`: line (1-based) → list of
+ *  { severity, column, endColumn, label } (columns 1-based, in characters, end exclusive). */
+function paintEditor(text, marks = new Map()) {
+  const lines = text.split('\n');
+  const gutter = [];
+  const back = [];
+  for (let i = 0; i < lines.length; i++) {
+    const line = i + 1;
+    const here = marks.get(line) ?? [];
+    const severity = here.some((m) => m.severity === 'error') ? 'error' : here.length ? 'warning' : '';
+    const title = here.map((m) => m.label).join('\n');
+    gutter.push(`<div class="${severity}"${title ? ` title="${escapeHtml(title)}"` : ''}>${line}</div>`);
+    const chars = Array.from(lines[i]);
+    let html = '';
+    if (here.length) {
+      // Underline the first mark's span on this line (characters, end exclusive; at least one).
+      const m = here.find((x) => x.severity === severity) ?? here[0];
+      const from = Math.min(Math.max(m.column - 1, 0), chars.length);
+      let to = m.endColumn && m.endColumn > m.column ? m.endColumn - 1 : from + 1;
+      to = Math.min(Math.max(to, from), chars.length);
+      const pad = to === from ? ' ' : '';
+      html =
+        escapeHtml(chars.slice(0, from).join('')) +
+        `<mark class="${m.severity}">${escapeHtml(chars.slice(from, to).join('')) || pad}</mark>` +
+        escapeHtml(chars.slice(to).join(''));
+      const more = here.length > 1 ? ` (+${here.length - 1} more)` : '';
+      html += `<span class="inline ${severity}">${escapeHtml(here[0].label)}${more}</span>`;
+    } else {
+      html = escapeHtml(lines[i]);
+    }
+    back.push(`<div class="line ${severity}" data-line="${line}">${html || ' '}</div>`);
+  }
+  ui.gutter.innerHTML = gutter.join('');
+  // Room below the last line, so the backdrop can scroll as far as the textarea.
+  ui.backdrop.innerHTML = back.join('') + '<div style="height: 40px"></div>';
+  syncScroll();
+}
+
+function syncScroll() {
+  ui.backdrop.scrollTop = ui.source.scrollTop;
+  ui.backdrop.scrollLeft = ui.source.scrollLeft;
+  ui.gutter.style.transform = `translateY(${-ui.source.scrollTop}px)`;
+}
+
+/** The UTF-16 offset of (line, column) in `text` (1-based; column in characters). */
+function offsetOf(text, line, column) {
+  let at = 0;
+  for (let l = 1; l < line; l++) {
+    const nl = text.indexOf('\n', at);
+    if (nl < 0) return text.length;
+    at = nl + 1;
+  }
+  const end = text.indexOf('\n', at) < 0 ? text.length : text.indexOf('\n', at);
+  const chars = Array.from(text.slice(at, end)).slice(0, Math.max(column - 1, 0));
+  return at + chars.join('').length;
+}
+
+function reveal(line, column, endColumn) {
+  const text = ui.source.value;
+  const from = offsetOf(text, line, column);
+  const to = endColumn ? offsetOf(text, line, endColumn) : from;
+  ui.source.focus();
+  ui.source.setSelectionRange(from, Math.max(from, to));
+  ui.source.scrollTop = Math.max(0, (line - 4) * LINE_HEIGHT);
+  syncScroll();
+}
+
+ui.source.addEventListener('scroll', syncScroll);
+ui.source.addEventListener('input', () => {
+  files.set(entry, ui.source.value);
+  paintEditor(ui.source.value, marksOf(state.diagnostics));
+  scheduleCheck();
+});
+ui.source.addEventListener('keydown', (e) => {
+  if (e.key === 'Tab' && !e.shiftKey && !e.ctrlKey && !e.altKey && !e.metaKey) {
+    e.preventDefault();
+    document.execCommand('insertText', false, '    ');
+  }
+});
+
+// ---- checking and compiling ----------------------------------------------------------------
+
+/** Line marks of the diagnostics in the edited file (while the user types, those of the last
+ *  check stay on their lines until the next check, 150 ms later, replaces them). */
+function marksOf(diagnostics) {
+  const marks = new Map();
+  for (const d of diagnostics) {
+    if (d.file !== entry || !Number.isInteger(d.line)) continue;
+    const list = marks.get(d.line) ?? [];
+    list.push({
+      severity: d.severity === 'error' ? 'error' : 'warning',
+      column: d.column ?? 1,
+      endColumn: d.end_line === d.line ? d.end_column : null,
+      label: `${d.severity}${d.code ? `[${d.code}]` : ''}: ${d.message}`,
+    });
+    marks.set(d.line, list);
+  }
+  return marks;
+}
+
+function showDiagnostics(diagnostics) {
+  state.diagnostics = diagnostics;
+  paintEditor(ui.source.value, marksOf(diagnostics));
+  ui.diagnostics.replaceChildren(
+    ...diagnostics.map((d) => {
+      const li = document.createElement('li');
+      li.className = d.severity === 'error' ? 'error' : 'warning';
+      li.dataset.line = d.line ?? '';
+      const where = d.file ? `${d.file === entry ? d.file.split('/').pop() : d.file}:${d.line}:${d.column}` : '';
+      li.innerHTML =
+        `<span class="where">${escapeHtml(where)}</span> ` +
+        `<b>${escapeHtml(d.severity)}${d.code ? `[${escapeHtml(d.code)}]` : ''}</b>: ${escapeHtml(d.message ?? '')}` +
+        (d.rendered ? `<pre>${escapeHtml(d.rendered.trimEnd())}</pre>` : '');
+      if (d.file === entry && Number.isInteger(d.line)) {
+        li.addEventListener('click', () => reveal(d.line, d.column ?? 1, d.end_line === d.line ? d.end_column : null));
+      }
+      return li;
+    }),
+  );
+}
+
+function setCheckStatus(text, kind) {
+  ui.checkStatus.textContent = text;
+  ui.checkStatus.className = kind;
+}
+
+function scheduleCheck() {
+  state.checking = true;
+  clearTimeout(debounce);
+  debounce = setTimeout(check, 150);
+}
+
+function counts(diagnostics) {
+  const errors = diagnostics.filter((d) => d.severity === 'error').length;
+  const warnings = diagnostics.length - errors;
+  const plural = (n, w) => `${n} ${w}${n === 1 ? '' : 's'}`;
+  return [errors ? plural(errors, 'error') : '', warnings ? plural(warnings, 'warning') : ''].filter(Boolean).join(', ');
+}
+
+function check() {
+  state.checking = false;
+  state.checks += 1;
+  const source = ui.source.value;
+  let t0 = performance.now();
+  let result;
+  try {
+    result = compiler.check(files, [entry]);
+  } catch (e) {
+    setCheckStatus(`the compiler failed: ${e.message ?? e}`, 'bad');
+    state.ok = false;
+    return;
+  }
+  const checkMs = performance.now() - t0;
+  if (!result.ok) {
+    state.ok = false;
+    showDiagnostics(result.diagnostics);
+    setCheckStatus(`${counts(result.diagnostics)} (checked in ${checkMs.toFixed(0)} ms)`, 'bad');
+    showOverlay('the source has errors: this is the last good image');
+    return;
+  }
+  t0 = performance.now();
+  let compiled;
+  try {
+    compiled = compiler.compile(files, entry, { scene: state.example.scene });
+  } catch (e) {
+    setCheckStatus(`the compiler failed: ${e.message ?? e}`, 'bad');
+    state.ok = false;
+    return;
+  }
+  const compileMs = performance.now() - t0;
+  state.ok = compiled.ok;
+  showDiagnostics(compiled.diagnostics);
+  const timing = `checked in ${checkMs.toFixed(0)} ms, compiled in ${compileMs.toFixed(0)} ms`;
+  if (!compiled.ok) {
+    setCheckStatus(`${counts(compiled.diagnostics) || 'compile failed'} (${timing})\n${compiled.rendered}`, 'bad');
+    showOverlay('the source has errors: this is the last good image');
+    return;
+  }
+  const kernels = Object.keys(compiled.wgsl);
+  const bytes = kernels.reduce((n, k) => n + compiled.wgsl[k].length, 0);
+  const warn = counts(compiled.diagnostics);
+  setCheckStatus(
+    `ok${warn ? ` (${warn})` : ''}: scene ${compiled.scene}, ${kernels.length} kernel${kernels.length === 1 ? '' : 's'}, ` +
+      `${(bytes / 1024).toFixed(0)} KiB of WGSL (${timing})`,
+    'ok',
+  );
+  showWgsl(compiled);
+  // A new renderer for a new source; the same source (an error typed and undone) keeps its image.
+  if ((job?.source ?? state.renderedSource) !== source || state.renderError) startRender(source);
+  else showOverlay(null);
+}
+
+function showWgsl(compiled) {
+  const keep = ui.wgslPick.value;
+  const texts = { ...compiled.wgsl };
+  if (compiled.manifest) texts['manifest.json'] = compiled.manifest;
+  ui.wgslPick.replaceChildren(
+    ...Object.keys(texts).map((k) => {
+      const o = document.createElement('option');
+      o.value = k;
+      o.textContent = k === 'manifest.json' ? k : `${k}.wgsl`;
+      return o;
+    }),
+  );
+  if (keep in texts) ui.wgslPick.value = keep;
+  const show = () => (ui.wgsl.textContent = texts[ui.wgslPick.value] ?? '');
+  ui.wgslPick.onchange = show;
+  show();
+}
+
+// ---- rendering -----------------------------------------------------------------------------
+
+function showOverlay(text) {
+  ui.overlay.hidden = !text;
+  ui.overlay.textContent = text ?? '';
+}
+
+function setRenderStatus(text, bad = false) {
+  ui.renderStatus.textContent = text;
+  ui.renderStatus.className = bad ? 'bad' : '';
+}
+
+function nextFrame() {
+  return new Promise((resolve) => requestAnimationFrame(() => resolve()));
+}
+
+function stopRender() {
+  if (!job) return;
+  job.cancelled = true;
+  if (!job.running) job.renderer?.free();
+  job = null;
+  state.rendering = false;
+}
+
+function startRender(source) {
+  if (!state.gpu) {
+    setRenderStatus(state.gpuError ?? 'waiting for WebGPU…', !!state.gpuError);
+    return;
+  }
+  stopRender();
+  const ex = examples.find((e) => e.name === state.example.name);
+  const scale = Number(ui.scale.value) || 1;
+  let renderer;
+  const t0 = performance.now();
+  try {
+    // The scene's size first, then the chosen fraction of it (a second renderer, rarely).
+    const options = { scene: state.example.scene };
+    renderer = new pkg.WebRenderer(files, entry, options);
+    if (scale !== 1) {
+      const [w, h] = [renderer.width, renderer.height].map((n) => Math.max(1, Math.round(n * scale)));
+      renderer.free();
+      renderer = new pkg.WebRenderer(files, entry, { ...options, width: w, height: h });
+    }
+  } catch (e) {
+    const why = e.message ?? String(e);
+    state.renderError = why;
+    let hint = '';
+    if (ex?.assets?.length) hint = `\nThis example loads ${ex.assets.join(', ')}: the renderer in the page cannot read asset files yet.`;
+    else if (ex?.noRender) hint = `\nKnown: ${ex.noRender}.`;
+    setRenderStatus(`the renderer could not start:\n${why}${hint}`, true);
+    showOverlay(state.renderedSource ? 'this is the last good image' : null);
+    return;
+  }
+  state.renders += 1;
+  state.renderError = null;
+  const setupMs = performance.now() - t0;
+  setRenderStatus(`renderer ready in ${setupMs.toFixed(0)} ms (compile, pipelines, BVH, upload)`);
+  job = { renderer, source, cancelled: false, running: false, setupMs, first: true };
+  runJob(job);
+}
+
+function targetSpp() {
+  const n = Math.floor(Number(ui.target.value));
+  return Number.isFinite(n) && n >= 1 ? Math.min(n, 65536) : 1;
+}
+
+async function runJob(j) {
+  if (j.running) return;
+  j.running = true;
+  state.rendering = true;
+  const { renderer } = j;
+  const [w, h] = [renderer.width, renderer.height];
+  const perPass = renderer.samplesPerPass();
+  try {
+    while (!j.cancelled) {
+      state.targetSpp = targetSpp();
+      if (!j.first && state.spp >= state.targetSpp) break;
+      await nextFrame();
+      if (j.cancelled) break;
+      const t0 = performance.now();
+      const stats = renderer.accumulate(1);
+      const rgba = await renderer.readRgba8();
+      const ms = performance.now() - t0;
+      if (j.cancelled) break;
+      if (j.first) {
+        ui.canvas.width = w;
+        ui.canvas.height = h;
+        // Small images are shown enlarged by a whole factor (pixelated), to at least 320 px wide.
+        const zoom = Math.max(1, Math.ceil(320 / w));
+        ui.canvas.style.width = `${w * zoom}px`;
+        j.first = false;
+      }
+      ui.canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(rgba.buffer, rgba.byteOffset, rgba.length), w, h), 0, 0);
+      state.renderedSource = j.source;
+      state.size = [w, h];
+      state.spp = stats.accumulatedSamples;
+      state.frameMs = ms;
+      showOverlay(state.ok === false ? 'the source has errors: this is the last good image' : null);
+      const raysPerS = (w * h * perPass) / (ms / 1000);
+      ui.stats.textContent =
+        `${state.spp} / ${state.targetSpp} spp · ${w}×${h} · ${ms.toFixed(1)} ms per pass (with read-back) · ` +
+        `${(raysPerS / 1e6).toFixed(2)} M camera rays/s`;
+      for (const warning of stats.warnings ?? []) console.warn(`rtc: ${warning}`);
+    }
+  } catch (e) {
+    const why = e.message ?? String(e);
+    state.renderError = why;
+    setRenderStatus(`rendering failed:\n${why}`, true);
+  } finally {
+    j.running = false;
+    if (j.cancelled) j.renderer.free();
+    if (job === j) state.rendering = false;
+  }
+}
+
+ui.target.addEventListener('change', () => {
+  state.targetSpp = targetSpp();
+  const url = new URL(location.href);
+  url.searchParams.set('spp', String(state.targetSpp));
+  history.replaceState(null, '', url);
+  if (job && !job.running && state.spp < state.targetSpp) runJob(job);
+});
+ui.scale.addEventListener('change', () => {
+  const url = new URL(location.href);
+  url.searchParams.set('scale', ui.scale.value);
+  history.replaceState(null, '', url);
+  if (state.ok && state.gpu) startRender(ui.source.value);
+});
+
+// ---- examples ------------------------------------------------------------------------------
+
+async function loadExample(value) {
+  const [name, file] = value.split('/');
+  const ex = examples.find((e) => e.name === name);
+  const ent = ex?.entries.find((e) => e.file === file) ?? ex?.entries[0];
+  if (!ex || !ent) return;
+  stopRender();
+  const loaded = new Map();
+  await Promise.all(
+    ex.files.map(async (f) => {
+      const res = await fetch(`../pkg/examples/${ex.name}/${f}`);
+      if (!res.ok) throw new Error(`../pkg/examples/${ex.name}/${f}: HTTP ${res.status}`);
+      loaded.set(`examples/${ex.name}/${f}`, await res.text());
+    }),
+  );
+  files = loaded;
+  entry = `examples/${ex.name}/${ent.file}`;
+  state.example = { name: ex.name, file: ent.file, scene: ent.scene };
+  state.renderedSource = null;
+  state.renderError = null;
+  original = files.get(entry);
+  ui.source.value = original;
+  ui.source.scrollTop = 0;
+  ui.example.value = `${ex.name}/${ent.file}`;
+  const url = new URL(location.href);
+  url.searchParams.set('example', `${ex.name}/${ent.file}`);
+  history.replaceState(null, '', url);
+  if (ex.assets.length) {
+    setRenderStatus(
+      `${ex.name} loads ${ex.assets.join(', ')}: the renderer in the page cannot read asset files yet, ` +
+        'so this example is for checking and compiling only.',
+      true,
+    );
+  } else if (ex.noRender) {
+    setRenderStatus(`${ex.name}: ${ex.noRender}; checking and compiling work.`, true);
+  } else {
+    setRenderStatus('');
+  }
+  showDiagnostics([]);
+  check();
+}
+
+function fillPicker() {
+  const renders = document.createElement('optgroup');
+  renders.label = 'render in the browser';
+  const checkOnly = document.createElement('optgroup');
+  checkOnly.label = 'check and compile only';
+  for (const ex of examples) {
+    for (const ent of ex.entries) {
+      const o = document.createElement('option');
+      o.value = `${ex.name}/${ent.file}`;
+      const label = ex.entries.length > 1 ? `${ex.name}/${ent.file}` : ex.name;
+      if (ex.assets.length || ex.noRender) {
+        o.textContent = `${label} (${ex.assets.length ? `needs ${ex.assets.join(', ')}` : 'custom geometry'})`;
+        checkOnly.append(o);
+      } else {
+        o.textContent = label;
+        renders.append(o);
+      }
+    }
+  }
+  ui.example.replaceChildren(renders, checkOnly);
+  ui.example.disabled = false;
+}
+
+ui.example.addEventListener('change', () => loadExample(ui.example.value).catch(fatal));
+ui.revert.addEventListener('click', () => {
+  ui.source.value = original;
+  files.set(entry, original);
+  scheduleCheck();
+});
+
+// ---- start ---------------------------------------------------------------------------------
+
+function fatal(e) {
+  setCheckStatus(`${e.message ?? e}`, 'bad');
+  console.error(e);
+}
+
+async function initWebGpu() {
+  if (!('gpu' in navigator) || !navigator.gpu) {
+    state.gpuError =
+      'The renderer needs WebGPU, which this browser does not offer (no navigator.gpu): checking and ' +
+      'compiling work. Try a recent Chrome or Edge (Chromium on Linux: --enable-unsafe-webgpu), or ' +
+      'Safari 26 / Firefox 141+ where WebGPU is on.';
+  } else if (typeof pkg.initGpu !== 'function') {
+    state.gpuError = 'web/pkg was built without the renderer: run `bash web/build.sh --renderer`.';
+  } else {
+    try {
+      state.gpu = await pkg.initGpu();
+      // wgpu's description may lack the name on the web; the browser's adapter info says more.
+      const info = (await navigator.gpu.requestAdapter())?.info;
+      const more = [info?.vendor, info?.architecture, info?.description].filter(Boolean).join(' ');
+      if (more) state.gpu = `${state.gpu.trim()} [${more}]`;
+    } catch (e) {
+      state.gpuError = `The renderer needs WebGPU, and no adapter was found: ${e.message ?? e}`;
+    }
+  }
+  ui.gpu.textContent = state.gpu ? `WebGPU: ${state.gpu}` : 'WebGPU: not available';
+  ui.gpu.title = state.gpuError ?? '';
+  if (!state.gpu) setRenderStatus(state.gpuError, true);
+}
+
+async function main() {
+  const params = new URL(location.href).searchParams;
+  if (params.get('spp')) ui.target.value = params.get('spp');
+  if (params.get('scale')) ui.scale.value = params.get('scale');
+  state.targetSpp = targetSpp();
+  try {
+    pkg = await import('../pkg/web/rtc_web.js');
+    await pkg.default();
+  } catch (e) {
+    fatal(new Error(`could not load ../pkg/web/rtc_web.js (build it with \`bash web/build.sh --renderer\`): ${e.message ?? e}`));
+    return;
+  }
+  compiler = new pkg.WebCompiler();
+  const res = await fetch('../pkg/examples.json');
+  if (!res.ok) throw new Error(`../pkg/examples.json: HTTP ${res.status} (run bash web/build.sh)`);
+  examples = await res.json();
+  fillPicker();
+  await initWebGpu();
+  const wanted = params.get('example') ?? 'hello/scene.rt';
+  const [name, file] = wanted.split('/');
+  const ex = examples.find((e) => e.name === name) ?? examples.find((e) => e.name === 'hello') ?? examples[0];
+  await loadExample(`${ex.name}/${file ?? ex.entries[0].file}`);
+  state.ready = true;
+}
+
+main().catch(fatal);
