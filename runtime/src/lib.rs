@@ -107,6 +107,7 @@ pub mod assets;
 pub mod bvh_view;
 pub mod gpu;
 pub mod image_out;
+pub mod orbit;
 pub mod render;
 pub mod resolve;
 pub mod scene;

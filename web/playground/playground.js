@@ -14,6 +14,10 @@
 //   a clean compile of a source that differs from the one on screen re-creates the WebRenderer and
 //   accumulates one pass per animation frame into the canvas (readRgba8 → putImageData) until the
 //   target spp. A source with errors, or a renderer that fails, leaves the last good image.
+// - A camera with `position` and `look_at` (WebRenderer.canOrbit) moves as in `rtc view`: drag to
+//   orbit, shift- or right-drag to pan, wheel to zoom, double-click back to the scene's camera;
+//   each move restarts the accumulation at one pass. A new renderer (an edit) starts from the
+//   scene's camera.
 // - Without WebGPU (no navigator.gpu, no adapter, or a package built without the renderer) the page
 //   still checks and compiles, and says why it cannot render.
 // - window.rtcPlayground.state mirrors what the page shows, for web/tests/playground.mjs.
@@ -33,6 +37,7 @@ const ui = {
   canvas: $('canvas'),
   overlay: $('overlay'),
   stats: $('stats'),
+  cameraHint: $('camera-hint'),
   renderStatus: $('render-status'),
   wgslPick: $('wgsl-pick'),
   wgsl: $('wgsl'),
@@ -56,6 +61,7 @@ const state = {
   targetSpp: 0,
   frameMs: null, // wall time of the last pass: accumulate(1) + readRgba8
   size: null, // [width, height] of the image on the canvas
+  cameraMoves: 0, // batches of camera moves applied (each restarts the accumulation)
 };
 window.rtcPlayground = { state };
 
@@ -343,7 +349,9 @@ function startRender(source) {
   state.renderError = null;
   const setupMs = performance.now() - t0;
   setRenderStatus(`renderer ready in ${setupMs.toFixed(0)} ms (compile, pipelines, BVH, upload)`);
-  job = { renderer, source, cancelled: false, running: false, setupMs, first: true };
+  job = { renderer, source, cancelled: false, running: false, setupMs, first: true, canOrbit: renderer.canOrbit };
+  clearMoves();
+  ui.cameraHint.hidden = !job.canOrbit;
   runJob(job);
 }
 
@@ -362,6 +370,7 @@ async function runJob(j) {
   try {
     while (!j.cancelled) {
       state.targetSpp = targetSpp();
+      if (moves.any) applyMoves(renderer);
       if (!j.first && state.spp >= state.targetSpp) break;
       await nextFrame();
       if (j.cancelled) break;
@@ -400,6 +409,75 @@ async function runJob(j) {
     if (job === j) state.rendering = false;
   }
 }
+
+// ---- the camera: drag to orbit, shift- or right-drag to pan, wheel to zoom, double-click to reset
+// (as in `rtc view`). Moves are gathered here and applied by the render loop before its next pass
+// (the renderer is busy while a read-back is pending); each batch restarts the accumulation.
+
+const moves = { yaw: 0, pitch: 0, dx: 0, dy: 0, zoom: 1, reset: false, any: false };
+
+function clearMoves() {
+  Object.assign(moves, { yaw: 0, pitch: 0, dx: 0, dy: 0, zoom: 1, reset: false, any: false });
+}
+
+function queueMove(change) {
+  if (!job?.canOrbit) return;
+  change(moves);
+  moves.any = true;
+  if (!job.running) runJob(job);
+}
+
+function applyMoves(renderer) {
+  const m = { ...moves };
+  clearMoves();
+  if (m.reset) renderer.resetView();
+  if (m.yaw || m.pitch) renderer.orbit(m.yaw, m.pitch);
+  if (m.dx || m.dy) renderer.pan(m.dx, m.dy);
+  if (m.zoom !== 1) renderer.zoom(m.zoom);
+  state.spp = 0;
+  state.cameraMoves += 1;
+}
+
+let drag = null;
+ui.canvas.addEventListener('pointerdown', (e) => {
+  if (!job?.canOrbit) return;
+  drag = { x: e.clientX, y: e.clientY, pan: e.button !== 0 || e.shiftKey };
+  ui.canvas.setPointerCapture(e.pointerId);
+  e.preventDefault();
+});
+ui.canvas.addEventListener('pointermove', (e) => {
+  if (!drag) return;
+  const [dx, dy] = [e.clientX - drag.x, e.clientY - drag.y];
+  [drag.x, drag.y] = [e.clientX, e.clientY];
+  const pan = drag.pan;
+  queueMove((m) => {
+    if (pan) {
+      m.dx += dx * 0.002;
+      m.dy += dy * 0.002;
+    } else {
+      m.yaw += dx * 0.01;
+      m.pitch += dy * 0.01;
+    }
+  });
+});
+for (const type of ['pointerup', 'pointercancel']) ui.canvas.addEventListener(type, () => (drag = null));
+ui.canvas.addEventListener('contextmenu', (e) => e.preventDefault());
+ui.canvas.addEventListener(
+  'wheel',
+  (e) => {
+    if (!job?.canOrbit) return;
+    e.preventDefault();
+    const lines = e.deltaMode === 0 ? e.deltaY / 100 : e.deltaY;
+    queueMove((m) => (m.zoom *= 0.9 ** -lines));
+  },
+  { passive: false },
+);
+ui.canvas.addEventListener('dblclick', () =>
+  queueMove((m) => {
+    Object.assign(m, { yaw: 0, pitch: 0, dx: 0, dy: 0, zoom: 1 });
+    m.reset = true;
+  }),
+);
 
 ui.target.addEventListener('change', () => {
   state.targetSpp = targetSpp();

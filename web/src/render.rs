@@ -6,7 +6,9 @@
 //! JavaScript: `await initGpu()` once (one device per page, WebGPU's default limits, no raised
 //! limit requested), then `new WebRenderer(files, entry, options)`, `accumulate(passes)` (submits
 //! and returns at once; stats as a plain object) and `await readRgba8()` (the running mean as
-//! tone-mapped sRGB RGBA8 bytes, `width * height * 4`, for an `ImageData`).
+//! tone-mapped sRGB RGBA8 bytes, `width * height * 4`, for an `ImageData`); `orbit`, `pan`, `zoom`
+//! and `resetView` move a camera that has `position` and `look_at` (`canOrbit`) and restart the
+//! accumulation.
 //!
 //! Guarantees: nothing blocks (no `pollster`, no blocking poll); every failure is a thrown
 //! `Error` with the runtime's message, never a panic; a call while a read-back is pending throws
@@ -18,6 +20,7 @@ use std::rc::Rc;
 
 use rtc_runtime::gpu::{AdapterChoice, Gpu, GpuOptions, PipelineCacheConfig};
 use rtc_runtime::image_out::{to_srgb8, ToneMap};
+use rtc_runtime::orbit::{self, read_orbit, Orbit};
 use rtc_runtime::render::{RenderOptions, Renderer};
 use wasm_bindgen::prelude::*;
 
@@ -52,6 +55,9 @@ pub async fn init_gpu() -> Result<String, JsError> {
 pub struct WebRenderer {
     renderer: Rc<RefCell<Renderer<'static>>>,
     size: [u32; 2],
+    /// The scene's own camera as an orbit (`None`: no `position`/`look_at`), and the current one.
+    home: Option<Orbit>,
+    view: Cell<Option<Orbit>>,
 }
 
 #[wasm_bindgen]
@@ -104,9 +110,48 @@ impl WebRenderer {
         let renderer = Renderer::new(gpu, &compiled, render_options)
             .map_err(|e| JsError::new(&e.to_string()))?;
         let size = renderer.size();
+        let home = read_orbit(&compiled);
         Ok(WebRenderer {
             renderer: Rc::new(RefCell::new(renderer)),
             size,
+            home,
+            view: Cell::new(home),
+        })
+    }
+
+    /// Whether the camera can be moved (`orbit`, `pan`, `zoom`): the scene's camera has
+    /// `position` and `look_at` fields (the standard pinhole and thin-lens cameras).
+    #[wasm_bindgen(getter, js_name = canOrbit)]
+    pub fn can_orbit(&self) -> bool {
+        self.home.is_some()
+    }
+
+    /// Turns the camera around the point it looks at by `yaw` (about the world's y axis) and
+    /// `pitch` (up and down, kept off the poles), in radians; the accumulation restarts.
+    pub fn orbit(&self, yaw: f32, pitch: f32) -> Result<(), JsError> {
+        self.move_camera(|o| o.orbit(yaw, pitch))
+    }
+
+    /// Moves the camera and the point it looks at across the view by `dx`, `dy` times their
+    /// distance; the accumulation restarts.
+    pub fn pan(&self, dx: f32, dy: f32) -> Result<(), JsError> {
+        self.move_camera(|o| o.pan(dx, dy))
+    }
+
+    /// Moves the camera toward the point it looks at to `factor` times the distance (below 1
+    /// zooms in); the accumulation restarts.
+    pub fn zoom(&self, factor: f32) -> Result<(), JsError> {
+        self.move_camera(|o| o.zoom(factor))
+    }
+
+    /// Puts the camera back where the scene has it; the accumulation restarts.
+    #[wasm_bindgen(js_name = resetView)]
+    pub fn reset_view(&self) -> Result<(), JsError> {
+        let home = self.home;
+        self.move_camera(|o| {
+            if let Some(h) = home {
+                *o = h;
+            }
         })
     }
 
@@ -193,6 +238,32 @@ impl WebRenderer {
 }
 
 impl WebRenderer {
+    /// Changes the orbit with `change` and writes it into the renderer's camera; an error if the
+    /// camera has no orbit, the arguments are not finite or the renderer is busy.
+    fn move_camera(&self, change: impl FnOnce(&mut Orbit)) -> Result<(), JsError> {
+        let Some(mut view) = self.view.get() else {
+            return Err(JsError::new(
+                "this scene's camera has no `position` and `look_at` to move",
+            ));
+        };
+        change(&mut view);
+        if !view
+            .position
+            .iter()
+            .chain(&view.look_at)
+            .all(|v| v.is_finite())
+        {
+            return Err(JsError::new("the camera move must be finite"));
+        }
+        let mut renderer = self
+            .renderer
+            .try_borrow_mut()
+            .map_err(|_| JsError::new("the renderer is busy (await the pending read-back)"))?;
+        orbit::apply(&mut renderer, view).map_err(|e| JsError::new(&e.to_string()))?;
+        self.view.set(Some(view));
+        Ok(())
+    }
+
     fn borrow(&self) -> Result<std::cell::Ref<'_, Renderer<'static>>, JsError> {
         self.renderer
             .try_borrow()

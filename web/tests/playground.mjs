@@ -14,6 +14,8 @@
 //   PSNR ≥ 40 dB against `rtc render` of the same scene, size and spp (RTC_BIN, default
 //   target/debug/rtc); while the source has an error the canvas keeps its pixels; the fix (another
 //   albedo) re-creates the renderer and the new image matches `rtc render` of the edited scene;
+//   a drag on the canvas orbits the camera and the wheel zooms (the accumulation restarts and
+//   refines again), a double-click restores the scene's camera and exactly its image;
 //   every example web/pkg/examples.json offers for rendering renders (64 px wide, 1 spp) and each
 //   one it marks check-only (asset files, custom geometry) compiles and shows the renderer's error;
 // - without WebGPU (navigator.gpu removed; or Chromium without --enable-unsafe-webgpu, whose
@@ -238,6 +240,34 @@ if (gpu) {
   const text = await page.inputValue('#source');
   compare('hello, albedo 0.9', fixed, s, nativeRender({ dir: 'examples/hello', file: 'scene.rt', text }, s.size[0], s.size[1], SPP));
   ok('after the fix the scene re-renders, and matches rtc render of the edited scene');
+
+  // The camera: a drag orbits (a new image, the accumulation restarted and refined again to the
+  // target), a double-click goes back to the scene's camera, whose accumulation is bit for bit the
+  // one before the drag (the same camera bytes and the same passes' random numbers).
+  const box = await page.locator('#canvas').boundingBox();
+  const [cx, cy] = [box.x + box.width / 2, box.y + box.height / 2];
+  const moved = async (act) => {
+    const before = (await state(page)).cameraMoves;
+    await act();
+    await page.waitForFunction((n) => window.rtcPlayground.state.cameraMoves > n, before, { timeout: 30_000 });
+    return rendered(page, SPP);
+  };
+  assert.equal(await page.isVisible('#camera-hint'), true, 'the camera hint is shown');
+  let m = await moved(async () => {
+    await page.mouse.move(cx, cy);
+    await page.mouse.down();
+    await page.mouse.move(cx + 60, cy + 10, { steps: 6 });
+    await page.mouse.up();
+  });
+  const orbited = await canvasRgba(page);
+  assert.ok(m.spp >= SPP && m.renders === 2, `refined again by the same renderer: ${JSON.stringify([m.spp, m.renders])}`);
+  const changed = orbited.filter((v, i) => v !== fixed[i]).length;
+  assert.ok(changed > orbited.length / 20, `the drag moved the view (${changed} bytes changed)`);
+  m = await moved(() => page.mouse.wheel(0, -300));
+  assert.notDeepEqual(await canvasRgba(page), orbited, 'the wheel zoomed');
+  m = await moved(() => page.mouse.dblclick(cx, cy));
+  assert.deepEqual(await canvasRgba(page), fixed, 'a double-click restores the scene camera and its image');
+  ok(`a drag orbits and the wheel zooms (accumulation restarted, refined to ${SPP} spp again); a double-click restores the scene's camera bit for bit`);
 }
 
 // A syntax error on a line of its own, then "revert".
