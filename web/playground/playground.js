@@ -16,8 +16,8 @@
 //   target spp. A source with errors, or a renderer that fails, leaves the last good image.
 // - A camera with `position` and `look_at` (WebRenderer.canOrbit) moves as in `rtc view`: drag to
 //   orbit, shift- or right-drag to pan, wheel to zoom, double-click back to the scene's camera;
-//   each move restarts the accumulation at one pass. A new renderer (an edit) starts from the
-//   scene's camera.
+//   each move restarts the accumulation at one pass. A new renderer (an edit) keeps the camera the
+//   user moved, as `rtc view` does after a reload; double-click goes back to the scene's.
 // - Without WebGPU (no navigator.gpu, no adapter, or a package built without the renderer) the page
 //   still checks and compiles, and says why it cannot render.
 // - window.rtcPlayground.state mirrors what the page shows, for web/tests/playground.mjs.
@@ -62,6 +62,7 @@ const state = {
   frameMs: null, // wall time of the last pass: accumulate(1) + readRgba8
   size: null, // [width, height] of the image on the canvas
   cameraMoves: 0, // batches of camera moves applied (each restarts the accumulation)
+  view: null, // the camera ({ position, lookAt }) when it can move
 };
 window.rtcPlayground = { state };
 
@@ -321,6 +322,9 @@ function startRender(source) {
     setRenderStatus(state.gpuError ?? 'waiting for WebGPU…', !!state.gpuError);
     return;
   }
+  // The user's camera carries over to the new renderer (as in `rtc view`) if they moved it and the
+  // scene's camera can still move; otherwise the new scene's own camera.
+  const keptView = job?.canOrbit && job.moved ? job.renderer.view : null;
   stopRender();
   const ex = examples.find((e) => e.name === state.example.name);
   const scale = Number(ui.scale.value) || 1;
@@ -349,8 +353,13 @@ function startRender(source) {
   state.renderError = null;
   const setupMs = performance.now() - t0;
   setRenderStatus(`renderer ready in ${setupMs.toFixed(0)} ms (compile, pipelines, BVH, upload)`);
-  job = { renderer, source, cancelled: false, running: false, setupMs, first: true, canOrbit: renderer.canOrbit };
+  job = { renderer, source, cancelled: false, running: false, setupMs, first: true, canOrbit: renderer.canOrbit, moved: false };
   clearMoves();
+  if (keptView && job.canOrbit) {
+    renderer.setView(keptView.position, keptView.lookAt);
+    job.moved = true;
+  }
+  state.view = job.canOrbit ? renderer.view : null;
   ui.cameraHint.hidden = !job.canOrbit;
   runJob(job);
 }
@@ -370,7 +379,7 @@ async function runJob(j) {
   try {
     while (!j.cancelled) {
       state.targetSpp = targetSpp();
-      if (moves.any) applyMoves(renderer);
+      if (moves.any) applyMoves(j);
       if (!j.first && state.spp >= state.targetSpp) break;
       await nextFrame();
       if (j.cancelled) break;
@@ -427,13 +436,16 @@ function queueMove(change) {
   if (!job.running) runJob(job);
 }
 
-function applyMoves(renderer) {
+function applyMoves(j) {
+  const { renderer } = j;
   const m = { ...moves };
   clearMoves();
   if (m.reset) renderer.resetView();
   if (m.yaw || m.pitch) renderer.orbit(m.yaw, m.pitch);
   if (m.dx || m.dy) renderer.pan(m.dx, m.dy);
   if (m.zoom !== 1) renderer.zoom(m.zoom);
+  j.moved = !m.reset || !!(m.yaw || m.pitch || m.dx || m.dy || m.zoom !== 1);
+  state.view = renderer.view;
   state.spp = 0;
   state.cameraMoves += 1;
 }

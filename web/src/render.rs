@@ -7,8 +7,8 @@
 //! limit requested), then `new WebRenderer(files, entry, options)`, `accumulate(passes)` (submits
 //! and returns at once; stats as a plain object) and `await readRgba8()` (the running mean as
 //! tone-mapped sRGB RGBA8 bytes, `width * height * 4`, for an `ImageData`); `orbit`, `pan`, `zoom`
-//! and `resetView` move a camera that has `position` and `look_at` (`canOrbit`) and restart the
-//! accumulation.
+//! `resetView` and `setView` move a camera that has `position` and `look_at` (`canOrbit`; `view`
+//! reads it) and restart the accumulation.
 //!
 //! Guarantees: nothing blocks (no `pollster`, no blocking poll); every failure is a thrown
 //! `Error` with the runtime's message, never a panic; a call while a read-back is pending throws
@@ -142,6 +142,31 @@ impl WebRenderer {
     /// zooms in); the accumulation restarts.
     pub fn zoom(&self, factor: f32) -> Result<(), JsError> {
         self.move_camera(|o| o.zoom(factor))
+    }
+
+    /// The camera as `{ position: [x, y, z], lookAt: [x, y, z] }`, or `undefined` when it cannot
+    /// move (`canOrbit` is false).
+    #[wasm_bindgen(getter)]
+    pub fn view(&self) -> Result<JsValue, JsError> {
+        match self.view.get() {
+            Some(o) => to_js(&serde_json::json!({ "position": o.position, "lookAt": o.look_at })),
+            None => Ok(JsValue::UNDEFINED),
+        }
+    }
+
+    /// Puts the camera at `position` looking at `look_at` (three numbers each), as `view` gives
+    /// them (a page keeps the user's camera across an edit this way); the accumulation restarts.
+    #[wasm_bindgen(js_name = setView)]
+    pub fn set_view(&self, position: Vec<f32>, look_at: Vec<f32>) -> Result<(), JsError> {
+        let (Ok(position), Ok(look_at)) = (
+            <[f32; 3]>::try_from(position.as_slice()),
+            <[f32; 3]>::try_from(look_at.as_slice()),
+        ) else {
+            return Err(JsError::new(
+                "setView takes two arrays of three numbers: position and lookAt",
+            ));
+        };
+        self.move_camera(|o| *o = Orbit { position, look_at })
     }
 
     /// Puts the camera back where the scene has it; the accumulation restarts.

@@ -15,7 +15,8 @@
 //   target/debug/rtc); while the source has an error the canvas keeps its pixels; the fix (another
 //   albedo) re-creates the renderer and the new image matches `rtc render` of the edited scene;
 //   a drag on the canvas orbits the camera and the wheel zooms (the accumulation restarts and
-//   refines again), a double-click restores the scene's camera and exactly its image;
+//   refines again), an edit (a new renderer) keeps the moved camera, a double-click restores the
+//   scene's camera and exactly its image;
 //   every example web/pkg/examples.json offers for rendering renders (64 px wide, 1 spp) and each
 //   one it marks check-only (asset files, custom geometry) compiles and shows the renderer's error;
 // - without WebGPU (navigator.gpu removed; or Chromium without --enable-unsafe-webgpu, whose
@@ -265,9 +266,18 @@ if (gpu) {
   assert.ok(changed > orbited.length / 20, `the drag moved the view (${changed} bytes changed)`);
   m = await moved(() => page.mouse.wheel(0, -300));
   assert.notDeepEqual(await canvasRgba(page), orbited, 'the wheel zoomed');
+  // An edit keeps the moved camera (a new renderer, the same view), as rtc view does after a reload.
+  const view = m.view;
+  await typeOver(page, '0.9', '0.8', 'let grey');
+  m = await rendered(page, SPP);
+  assert.equal(m.renders, 3, 'the edit re-created the renderer');
+  assert.deepEqual(m.view, view, 'the edit kept the moved camera');
+  await typeOver(page, '0.8', '0.9', 'let grey');
+  m = await rendered(page, SPP);
+  assert.deepEqual(m.view, view);
   m = await moved(() => page.mouse.dblclick(cx, cy));
   assert.deepEqual(await canvasRgba(page), fixed, 'a double-click restores the scene camera and its image');
-  ok(`a drag orbits and the wheel zooms (accumulation restarted, refined to ${SPP} spp again); a double-click restores the scene's camera bit for bit`);
+  ok(`a drag orbits and the wheel zooms (accumulation restarted, refined to ${SPP} spp again); an edit keeps the moved camera; a double-click restores the scene's camera bit for bit`);
 }
 
 // A syntax error on a line of its own, then "revert".

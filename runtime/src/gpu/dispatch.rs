@@ -585,8 +585,9 @@ fn map_read<T>(
         let _ = (gpu, staging, consume);
         Err(DispatchError::Map {
             size,
-            message: "a blocking read-back is not possible on the web (the wavefront model \
-                      reads a flag back every round; render with the megakernel there)"
+            message: "a blocking read-back is not possible on the web (the bounds of custom \
+                      geometry and the wavefront model's rounds read back mid-frame; scenes with \
+                      neither render there)"
                 .to_string(),
         })
     }
