@@ -264,7 +264,7 @@ fn the_wavefront_model_renders_what_the_megakernel_renders() {
         return;
     };
     // Every feature scene of this suite (any-hit cut-outs and shadows, nested media with a camera
-    // inside, custom geometry walking its BVH) at 40 x 28 in 16 x 16 tiles. The two models run
+    // inside, custom geometry walking its BVH), and shadow rays through fog, at 40 x 28 in 16 x 16 tiles. The two models run
     // the same operations in the same order, so on lavapipe the images are bit-identical; the
     // tolerance (1e-5 absolute on values of order 1) leaves room for another driver contracting
     // differently in two kernels.
@@ -276,6 +276,15 @@ fn the_wavefront_model_renders_what_the_megakernel_renders() {
         ("walker_custom", scene("walker").scene("walker_custom")),
         ("dependent_shadows", scene("dependent_shadows")),
         ("path_loop", scene("path_loop").scene("path_loop")),
+        // Shadow rays through fog (`absorb`): transmittances recorded per query.
+        (
+            "fog_shadow_through",
+            SceneFile::open("materials/fog_shadow.rt").scene("through"),
+        ),
+        (
+            "fog_shadow_inside",
+            SceneFile::open("materials/fog_shadow.rt").scene("inside"),
+        ),
     ] {
         let (mega, wave, _) = both_models(&gpu, name, &file, [40, 28]);
         let off = differing(&mega, &wave, 1e-5);

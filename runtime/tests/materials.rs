@@ -519,7 +519,7 @@ fn the_path_tracer_converges_to_the_analytic_light_of_a_quad() {
 
 /// The single-scattering integral of a ray through fog past a point light, by Simpson's rule: rays
 /// along -z at `(x, y)` cross the fog from z = `half` to z = -`half`; the light of intensity `i` is at
-/// the origin, and its light is attenuated inside the fog too (`lights_inside`).
+/// the origin, and its light is attenuated inside the fog too (the shadow rays `absorb`).
 fn inscatter_past_point_light(x: f64, y: f64, half: f64, sigma: f64, i: f64) -> f64 {
     let n = 20_000;
     let d = 2.0 * half;
@@ -583,6 +583,81 @@ fn fog_around_a_point_light_scatters_the_analytic_amount() {
     // alone gives 6.7%, its RMSE 2.4 times larger).
     assert!((ratio - 1.0).abs() < 0.02, "mean got/want {ratio}");
     assert!(rel < 0.05, "relative RMS error {rel}");
+}
+
+/// What a white Lambert square at z = 0 (normal +z) at `p` receives from a light in direction
+/// `dir` (unit) with `radiance`, through a transmittance `t`: `1/π · radiance · cos θ · t`.
+fn lambert_lit(dir: [f64; 3], radiance: f64, t: f64) -> f64 {
+    std::f64::consts::FRAC_1_PI * radiance * dir[2].max(0.0) * t
+}
+
+#[test]
+fn shadow_rays_through_fog_carry_its_transmittance() {
+    let Some(gpu) = gpu_or_skip("shadow_rays_through_fog_carry_its_transmittance") else {
+        return;
+    };
+    // `fog_shadow.rt`: a white Lambert square under an ortho camera (8 x 8 pixels over [-1, 1]²),
+    // lit through fog of albedo 0 (pure absorption), so each pixel is deterministic:
+    // - through: a point light at (10, 0, 1) behind the slab x in [4, 6]; the shadow ray from
+    //   (x, y, 0) is inside the slab for 2/(10 - x) of its length L: T = e^(-σ 2L/(10 - x));
+    // - sun: a directional light along -(1, 0, 0.25): inside the slab 2 |d| / d.x of its way;
+    // - inside: fog around everything, a point light at (0.5, 0.25, 2): the shadow ray starts and
+    //   ends in the fog (T = e^(-σ L)) and the camera ray crosses 5 units of it (e^(-5σ)).
+    // Before `absorb`, shadow rays went through fog unattenuated (T = 1 here). Densities from thin
+    // (1e-4: T within 1e-3 of 1, where `σ t` of entry and exit must cancel) to dense (1e3: exactly 0).
+    for sigma in [1e-4, 0.5, 1e3] {
+        shadow_rays_through_fog_at(&gpu, sigma);
+    }
+}
+
+fn shadow_rays_through_fog_at(gpu: &Gpu, sigma: f64) {
+    let file = scene("fog_shadow").set("SIGMA", float(sigma));
+    let at = |i: u32| (f64::from(i) + 0.5) / 8.0 * 2.0 - 1.0;
+    let norm = |v: [f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    // f32 lighting and `exp`, the shadow ray 1e-5 short of the light: 1e-4 relative.
+    let tol = Tolerance {
+        abs: 1e-7,
+        rel: 1e-4,
+    };
+    for name in ["through", "sun", "inside"] {
+        let img = render(
+            gpu,
+            &format!("fog-shadow-{name}"),
+            &file.clone().scene(name),
+            1,
+        );
+        let mut check = PixelCheck::new(format!(
+            "fog shadow ({name}, σ = {sigma:e}): Lambert lit through fog"
+        ));
+        for yi in 0..8u32 {
+            for xi in 0..8u32 {
+                let (x, y) = (at(xi), -at(yi));
+                let want = match name {
+                    "through" => {
+                        let d = [10.0 - x, -y, 1.0];
+                        let l = norm(d);
+                        let t = (-sigma * 2.0 * l / (10.0 - x)).exp();
+                        lambert_lit(d.map(|c| c / l), 100.0 / (l * l), t)
+                    }
+                    "sun" => {
+                        let d = [1.0, 0.0, 0.25];
+                        let l = norm(d);
+                        let t = (-sigma * 2.0 * l).exp();
+                        lambert_lit(d.map(|c| c / l), 1.0, t)
+                    }
+                    _ => {
+                        let d = [0.5 - x, 0.25 - y, 2.0];
+                        let l = norm(d);
+                        let t = (-sigma * (l + 5.0)).exp();
+                        lambert_lit(d.map(|c| c / l), 10.0 / (l * l), t)
+                    }
+                };
+                let p = img.get(xi, yi).expect("pixel");
+                check.pixel((xi, yi), p, &[want, want, want], tol);
+            }
+        }
+        check.assert();
+    }
 }
 
 #[test]

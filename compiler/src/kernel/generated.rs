@@ -421,6 +421,7 @@ pub fn config_module_with(c: &KernelConfig, debug: Option<super::DebugMode>) -> 
         ("HAS_MESHES", c.has_meshes),
         ("HAS_VERTEX_EXTRAS", c.has_vertex_extras),
         ("HAS_MEDIA", c.has_media),
+        ("HAS_ABSORB", c.has_absorb),
         ("HAS_BACKGROUND", c.has_background),
         ("CULL_BACK_FACES", c.cull_back_faces),
         ("DEBUG", debug.is_some()),

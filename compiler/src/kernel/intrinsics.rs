@@ -47,7 +47,7 @@ pub struct KernelHooks<'a> {
 }
 
 /// Words of the private scratch registers (`scratch_load`, `scratch_store`).
-pub const SCRATCH_WORDS: u32 = 8;
+pub const SCRATCH_WORDS: u32 = 12;
 
 /// The kernel function (from `stdlib/kernel/`) named `name`.
 pub fn kernel_fn(program: &Program, name: &str) -> Result<FnId, LowerError> {
@@ -81,6 +81,7 @@ fn user_intrinsic_fn(b: Builtin) -> Option<&'static str> {
         Builtin::LightCount => "light_count_query",
         Builtin::SampleLight => "sample_light_query",
         Builtin::Shadow => "shadow_query",
+        Builtin::Absorb => "absorb_query",
         _ => return None,
     })
 }

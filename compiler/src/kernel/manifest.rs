@@ -345,6 +345,7 @@ pub fn manifest_json(c: &CompiledScene) -> String {
         ("has_custom_geometry", cfg.has_custom_geometry),
         ("has_meshes", cfg.has_meshes),
         ("has_media", cfg.has_media),
+        ("has_absorb", cfg.has_absorb),
         ("has_background", cfg.has_background),
         ("cull_back_faces", cfg.cull_back_faces),
     ] {

@@ -151,6 +151,7 @@ pub fn config_constants(c: &KernelConfig) -> Vec<(&'static str, u32)> {
     } else {
         (0, 0)
     };
+    let absorb = if c.has_absorb { SHADOW_QUERIES } else { 0 };
     let (mut out, path_words) = layout(&[
         ("PATH_STATUS", 1),
         ("PATH_SAMPLE", 1),
@@ -165,6 +166,9 @@ pub fn config_constants(c: &KernelConfig) -> Vec<(&'static str, u32)> {
         ("PATH_SQ_RECORDED", 1),
         ("PATH_SQ_BITS", 1),
         ("PATH_SQ", SHADOW_QUERIES * QUERY_WORDS),
+        // With `absorb`, each query's start medium and its answer's transmittance.
+        ("PATH_SQ_MEDIUM", absorb),
+        ("PATH_SQ_T", absorb),
         ("PATH_BETA", carried),
         ("PATH_RADIANCE", carried),
         ("PATH_FRAMES", frames),
@@ -265,6 +269,7 @@ mod tests {
     #[test]
     fn the_layout_is_dense_and_counts_frames_only_with_secondary_rays() {
         let mut c = KernelConfig::unspecialised();
+        c.has_absorb = false;
         let with = path_words(&c);
         c.has_secondary_rays = false;
         let without = path_words(&c);
@@ -278,6 +283,9 @@ mod tests {
         c.has_secondary_rays = true;
         c.path_loop = true;
         assert_eq!(path_words(&c), without + 6);
+        // `absorb` records each query's start medium and transmittance.
+        c.has_absorb = true;
+        assert_eq!(path_words(&c), without + 6 + 2 * SHADOW_QUERIES);
         for stage in STAGES {
             assert_eq!(Stage::from_entry(stage.entry()), Some(stage));
         }

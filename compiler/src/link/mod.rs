@@ -96,6 +96,9 @@ pub struct KernelConfig {
     pub has_vertex_extras: bool,
     /// Some used material has a `@medium` program.
     pub has_media: bool,
+    /// Some used material's `@any_hit` program calls `absorb`: shadow rays sum the optical depth
+    /// of the media they cross and `shadow` returns the transmittance.
+    pub has_absorb: bool,
     /// The scene has a background.
     pub has_background: bool,
     /// Some object may cull back faces in traversal (`GpuInstance` `FLAG_CULL_BACK`): a model file of the scene holds an opaque single-sided material
@@ -121,6 +124,7 @@ impl KernelConfig {
             has_meshes: true,
             has_vertex_extras: true,
             has_media: true,
+            has_absorb: true,
             has_background: true,
             cull_back_faces: true,
         }
@@ -392,6 +396,11 @@ pub fn link_again(
             .any(|n| matches!(*n, "GltfDetailMaterial" | "GltfMaskedDetailMaterial"))
             || options.all_programs,
         has_media,
+        has_absorb: materials.iter().any(|t| {
+            program
+                .program_for(t.struct_id, ProgramKind::AnyHit)
+                .is_some_and(|p| p.absorbs)
+        }) || options.all_programs,
         has_background: desc.background.is_some() || options.all_programs,
         cull_back_faces: models
             .iter()
@@ -438,6 +447,11 @@ pub fn link_again(
             config.has_media,
             "media",
             "no material of the scene has a @medium program",
+        ),
+        (
+            config.has_absorb,
+            "absorbing shadow rays",
+            "no @any_hit program of the scene calls absorb: shadow rays are blocked or not",
         ),
         (
             config.has_background,

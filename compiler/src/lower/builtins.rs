@@ -35,6 +35,7 @@ pub(super) fn is_intrinsic(b: Builtin) -> bool {
             | B::LightCount
             | B::SampleLight
             | B::Shadow
+            | B::Absorb
             | B::Rand
             | B::Rand2
             | B::ImageSize

@@ -132,6 +132,15 @@ fn check_intrinsics(
                 stack.pop();
             }
         }
+        if kind == ProgramKind::AnyHit {
+            let absorbs = visited
+                .iter()
+                .enumerate()
+                .any(|(i, v)| *v && intrinsics[i].iter().any(|(b, _)| *b == Builtin::Absorb));
+            for entry in cx.p.programs.iter_mut().filter(|p| p.func == root) {
+                entry.absorbs = absorbs;
+            }
+        }
     }
 }
 

@@ -696,6 +696,9 @@ pub struct ProgramEntry {
     /// before its secondary ray is traced and carry the ray's weight as a path throughput
     /// (`KernelConfig::path_loop`).
     pub additive_secondary: bool,
+    /// For `@any_hit`: whether it calls `absorb` (directly or through helpers), so shadow rays
+    /// are attenuated by the media whose boundaries it sees (`KernelConfig::has_absorb`).
+    pub absorbs: bool,
 }
 
 impl Program {

@@ -325,6 +325,7 @@ fn check_signature(
         spawn_bound: 0,
         wants_secondary: kind == ProgramKind::ClosestHit && alt == 1,
         additive_secondary: false,
+        absorbs: false,
     });
 }
 

@@ -96,7 +96,6 @@ struct Triangle {
 struct Fog {
     float density;
     vec3 albedo;
-    uint lights_inside;
 };
 struct Lambert {
     vec3 albedo;
@@ -143,12 +142,20 @@ const float GAMMA_1_ = 5.960465e-8;
 const float GAMMA_6_ = 3.576281e-7;
 const float GAMMA_4_ = 2.3841864e-7;
 const uint RAY_SHADOW = 2u;
+const uint SCRATCH_ABSORB = 5u;
+const uint SCRATCH_ABSORB_T = 6u;
+const bool HAS_ABSORB = true;
+const uint SCRATCH_DEPTH = 7u;
+const uint SCRATCH_NET = 8u;
+const uint SCRATCH_DENSITY_MAX = 9u;
 const uint BLAS_STACK = 64u;
 const uint TLAS_STACK = 10u;
 const bool HAS_SECONDARY_RAYS = true;
 const bool HAS_BACKGROUND = false;
+const uint SCRATCH_MEDIUM = 10u;
 const uint LIGHT_ENTRY_STRIDE = 2u;
 const float LIGHT_ERROR = 4.7683716e-7;
+const bool HAS_ANY_HIT = true;
 const float INV_PI = 0.31830987;
 const uint FLAG_MEDIUM = 4u;
 const float PI = 3.1415927;
@@ -178,6 +185,8 @@ float hit_error = 0.0;
 
 layout(std430, binding = 5) readonly buffer type_12_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
 
+uint scratch[12] = uint[12](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+
 uint traversal_stack[74] = uint[74](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
 uint ray_count = 0u;
@@ -188,7 +197,7 @@ vec3 spawn_weights[1] = vec3[1](vec3(0.0));
 
 uint spawn_count = 0u;
 
-layout(std430, binding = 9) buffer type_19_block_7Compute { uint _group_0_binding_9_cs[]; };
+layout(std430, binding = 9) buffer type_20_block_7Compute { uint _group_0_binding_9_cs[]; };
 
 layout(std430, binding = 8) buffer type_10_block_8Compute { vec4 _group_0_binding_8_cs[]; };
 
@@ -503,11 +512,47 @@ Fog load_Fog(uint offset_2) {
     uint _e11 = _group_0_binding_6_cs[(offset_2 + 4u)];
     uint _e17 = _group_0_binding_6_cs[(offset_2 + 5u)];
     uint _e23 = _group_0_binding_6_cs[(offset_2 + 6u)];
-    uint _e30 = _group_0_binding_6_cs[(offset_2 + 7u)];
-    return Fog(uintBitsToFloat(_e5), vec3(uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30);
+    return Fog(uintBitsToFloat(_e5), vec3(uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)));
+}
+
+bool is_finite_f32_(float x_1) {
+    return ((floatBitsToUint(x_1) & 2147483647u) < 2139095040u);
+}
+
+void absorb_query(float density) {
+    float sigma = 0.0;
+    if (!(HAS_ABSORB)) {
+        return;
+    }
+    uint side = scratch[min(SCRATCH_ABSORB, 11u)];
+    if ((side == 0u)) {
+        return;
+    }
+    sigma = 0.0;
+    bool _e13 = is_finite_f32_(density);
+    if ((_e13 && (density > 0.0))) {
+        sigma = density;
+    }
+    uint _e22 = scratch[min(SCRATCH_ABSORB_T, 11u)];
+    float t_6 = uintBitsToFloat(_e22);
+    float _e24 = sigma;
+    float _e25 = sigma;
+    float s_6 = ((side == 2u) ? -(_e25) : _e24);
+    uint _e35 = scratch[min(SCRATCH_DEPTH, 11u)];
+    float depth_2 = (uintBitsToFloat(_e35) - (s_6 * t_6));
+    scratch[min(SCRATCH_DEPTH, 11u)] = floatBitsToUint(depth_2);
+    uint _e50 = scratch[min(SCRATCH_NET, 11u)];
+    float net = (uintBitsToFloat(_e50) + s_6);
+    scratch[min(SCRATCH_NET, 11u)] = floatBitsToUint(net);
+    uint _e64 = scratch[min(SCRATCH_DENSITY_MAX, 11u)];
+    float _e66 = sigma;
+    float most = max(uintBitsToFloat(_e64), _e66);
+    scratch[min(SCRATCH_DENSITY_MAX, 11u)] = floatBitsToUint(most);
+    return;
 }
 
 bool fog_any_hit(Fog m, Ray ray_3, Hit hit_1) {
+    absorb_query(m.density);
     return (ray_3.kind != RAY_SHADOW);
 }
 
@@ -522,8 +567,13 @@ bool accept(GpuInstance inst_4, Ray ray_5, Candidate c_1) {
         float shaded = hit_error;
         Hit _e10 = finish_hit(ray_5, c_1);
         hit_error = shaded;
-        bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
-        return _e14;
+        if ((ray_5.kind == RAY_SHADOW)) {
+            scratch[min(SCRATCH_ABSORB, 11u)] = (_e10.front_face ? 1u : 2u);
+            scratch[min(SCRATCH_ABSORB_T, 11u)] = floatBitsToUint((c_1.t * length(ray_5.dir)));
+        }
+        bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
+        scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
+        return _e36;
     }
     return true;
 }
@@ -856,6 +906,11 @@ vec3 miss(Ray ray_11) {
     return _e9;
 }
 
+void shading_medium(uint medium) {
+    scratch[min(SCRATCH_MEDIUM, 11u)] = medium;
+    return;
+}
+
 vec3 fog_shade(Fog m_1, Ray ray_12, Hit hit_3, vec3 secondary) {
     return secondary;
 }
@@ -890,13 +945,13 @@ PointLight load_PointLight(uint offset_6) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
-vec3 step_toward(vec3 x_1, vec3 s) {
-    uvec3 bits_1 = floatBitsToUint(x_1);
-    bvec3 up_1 = greaterThan((sign(x_1) * sign(s)), vec3(0.0));
+vec3 step_toward(vec3 x_2, vec3 s) {
+    uvec3 bits_1 = floatBitsToUint(x_2);
+    bvec3 up_1 = greaterThan((sign(x_2) * sign(s)), vec3(0.0));
     vec3 stepped = uintBitsToFloat(mix((bits_1 - uvec3(1u)), (bits_1 + uvec3(1u)), up_1));
     vec3 from_zero = mix(vec3(-1.1754944e-38), vec3(1.1754944e-38), greaterThan(s, vec3(0.0)));
-    vec3 moved = mix(stepped, from_zero, equal(x_1, vec3(0.0)));
-    return mix(x_1, moved, not(equal(s, vec3(0.0))));
+    vec3 moved = mix(stepped, from_zero, equal(x_2, vec3(0.0)));
+    return mix(x_2, moved, not(equal(s, vec3(0.0))));
 }
 
 vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
@@ -934,10 +989,50 @@ Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
     return Ray(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
 }
 
+float shadow_transmittance(Ray ray_14, uint medium_1) {
+    float depth = 0.0;
+    scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
+    scratch[min(SCRATCH_DEPTH, 11u)] = 0u;
+    scratch[min(SCRATCH_NET, 11u)] = 0u;
+    scratch[min(SCRATCH_DENSITY_MAX, 11u)] = 0u;
+    if ((HAS_MEDIA && HAS_ANY_HIT)) {
+        if ((medium_1 != 0u)) {
+            GpuInstance inst_8 = _group_0_binding_3_cs[(medium_1 - 1u)];
+            if (((inst_8.flags & FLAG_ANY_HIT) != 0u)) {
+                Hit start = Hit(ray_14.origin, 0.0, -(ray_14.dir), -(ray_14.dir), vec2(0.0), true, inst_8.object, 0u);
+                scratch[min(SCRATCH_ABSORB, 11u)] = 1u;
+                scratch[min(SCRATCH_ABSORB_T, 11u)] = 0u;
+                bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start);
+                scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
+            }
+        }
+    }
+    Candidate _e75 = intersect_scene(ray_14, true);
+    if ((_e75.slot != NO_HIT)) {
+        return 0.0;
+    }
+    uint _e85 = scratch[min(SCRATCH_DEPTH, 11u)];
+    depth = uintBitsToFloat(_e85);
+    uint _e93 = scratch[min(SCRATCH_NET, 11u)];
+    float net_1 = uintBitsToFloat(_e93);
+    uint _e101 = scratch[min(SCRATCH_DENSITY_MAX, 11u)];
+    if ((net_1 > (1e-6 * uintBitsToFloat(_e101)))) {
+        uint _e107 = F32_INF;
+        if ((ray_14.tmax == uintBitsToFloat(_e107))) {
+            return 0.0;
+        }
+        float _e111 = depth;
+        depth = (_e111 + (net_1 * (ray_14.tmax * length(ray_14.dir))));
+    }
+    float _e118 = depth;
+    return exp(-(max(_e118, 0.0)));
+}
+
 float shadow_query(vec3 position_1, vec3 normal_1, vec3 dir_1, float dist_1) {
     Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    Candidate _e6 = intersect_scene(_e4, true);
-    return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
+    uint _e10 = scratch[min(SCRATCH_MEDIUM, 11u)];
+    float _e11 = shadow_transmittance(_e4, _e10);
+    return _e11;
 }
 
 LightSample point_light(PointLight l, vec3 position_2, vec3 normal_2) {
@@ -973,10 +1068,10 @@ LightSample sample_light_query(uint i_1, vec3 position_4, vec3 normal_4) {
     return _e28;
 }
 
-vec3 lambert_shade(Lambert m_2, Ray ray_14, Hit hit_5) {
+vec3 lambert_shade(Lambert m_2, Ray ray_15, Hit hit_5) {
     vec3 color = vec3(0.0);
     uint i_2 = 0u;
-    vec3 _e3 = shading_normal(ray_14, hit_5);
+    vec3 _e3 = shading_normal(ray_15, hit_5);
     color = vec3(0.0);
     uint _e8 = light_count_query();
     i_2 = 0u;
@@ -1000,16 +1095,16 @@ vec3 lambert_shade(Lambert m_2, Ray ray_14, Hit hit_5) {
     return _e33;
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_15, Hit hit_6, vec3 secondary_1) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_16, Hit hit_6, vec3 secondary_1) {
     switch(type_id_4) {
         case 0u: {
             Fog _e5 = load_Fog(offset_8);
-            vec3 _e6 = fog_shade(_e5, ray_15, hit_6, secondary_1);
+            vec3 _e6 = fog_shade(_e5, ray_16, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_8);
-            vec3 _e8 = lambert_shade(_e7, ray_15, hit_6);
+            vec3 _e8 = lambert_shade(_e7, ray_16, hit_6);
             return _e8;
         }
         default: {
@@ -1019,21 +1114,18 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_15, Hit hit_6, 
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_16, Candidate c_2) {
-    GpuInstance inst_8 = _group_0_binding_3_cs[c_2.slot];
-    Hit _e6 = finish_hit(ray_16, c_2);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, vec3(0.0));
-    return _e11;
-}
-
-bool is_finite_f32_(float x_2) {
-    return ((floatBitsToUint(x_2) & 2147483647u) < 2139095040u);
+vec3 shade_direct(Ray ray_17, Candidate c_2) {
+    GpuInstance inst_9 = _group_0_binding_3_cs[c_2.slot];
+    Hit _e6 = finish_hit(ray_17, c_2);
+    shading_medium(ray_17.medium);
+    vec3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_17, _e6, vec3(0.0));
+    return _e12;
 }
 
 vec3 fog_inscatter(Fog m_3, uint i_3, vec3 o, vec3 dir_2, float d_1, float trans) {
     float s_1 = 0.0;
-    float sigma = m_3.density;
-    bool tiny_1 = ((sigma * d_1) < 0.001);
+    float sigma_1 = m_3.density;
+    bool tiny_1 = ((sigma_1 * d_1) < 0.001);
     LightSample _e12 = sample_light_query(i_3, o, vec3(0.0));
     vec3 c_6 = (_e12.dir * vec3(_e12.dist));
     float delta = dot(c_6, dir_2);
@@ -1045,7 +1137,7 @@ vec3 fog_inscatter(Fog m_3, uint i_3, vec3 o, vec3 dir_2, float d_1, float trans
     float tb = ((d_1 == uintBitsToFloat(_e34)) ? (0.5 * PI) : atan((d_1 - delta), h_2));
     float w_3 = (equi ? 0.5 : 0.0);
     vec2 _e41 = rand2_next();
-    s_1 = (-(log((1.0 - (_e41.y * (1.0 - trans))))) / sigma);
+    s_1 = (-(log((1.0 - (_e41.y * (1.0 - trans))))) / sigma_1);
     if (tiny_1) {
         s_1 = (_e41.y * d_1);
     }
@@ -1055,21 +1147,20 @@ vec3 fog_inscatter(Fog m_3, uint i_3, vec3 o, vec3 dir_2, float d_1, float trans
     float _e61 = s_1;
     s_1 = min(max(_e61, 0.0), d_1);
     float _e66 = s_1;
-    float e_2 = exp((-(sigma) * _e66));
-    float p_free = (tiny_1 ? (1.0 / d_1) : ((sigma * e_2) / (1.0 - trans)));
+    float e_2 = exp((-(sigma_1) * _e66));
+    float p_free = (tiny_1 ? (1.0 / d_1) : ((sigma_1 * e_2) / (1.0 - trans)));
     float _e76 = s_1;
     float r_4 = (_e76 - delta);
     float pdf = (((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_2) / ((tb - ta) * ((h_2 * h_2) + (r_4 * r_4)))) : 0.0));
     float _e91 = s_1;
     LightSample _e97 = sample_light_query(i_3, (o + (dir_2 * vec3(_e91))), vec3(0.0));
-    float att = ((m_3.lights_inside == 1u) ? exp((-(sigma) * _e97.dist)) : 1.0);
-    return (_e97.radiance * vec3((((att * sigma) * e_2) / pdf)));
+    return (_e97.radiance * vec3(((sigma_1 * e_2) / pdf)));
 }
 
-vec3 fog_medium(Fog m_4, Ray ray_17, float t, vec3 radiance) {
+vec3 fog_medium(Fog m_4, Ray ray_18, float t, vec3 radiance) {
     vec3 light = vec3(0.0);
     uint i_4 = 0u;
-    float len = length(ray_17.dir);
+    float len = length(ray_18.dir);
     if ((!((m_4.density > 0.0)) || !((len > 0.0)))) {
         return radiance;
     }
@@ -1091,32 +1182,33 @@ vec3 fog_medium(Fog m_4, Ray ray_17, float t, vec3 radiance) {
         }
         vec3 _e27 = light;
         uint _e28 = i_4;
-        vec3 _e33 = fog_inscatter(m_4, _e28, ray_17.origin, (ray_17.dir / vec3(len)), d_5, trans_1);
+        vec3 _e33 = fog_inscatter(m_4, _e28, ray_18.origin, (ray_18.dir / vec3(len)), d_5, trans_1);
         light = (_e27 + _e33);
     }
     vec3 _e46 = light;
     return ((radiance * vec3(trans_1)) + ((m_4.albedo * vec3((0.25 * INV_PI))) * _e46));
 }
 
-vec3 dispatch_medium(uint type_id_5, uint offset_9, Ray ray_18, float t_1, vec3 radiance_1) {
+vec3 dispatch_medium(uint type_id_5, uint offset_9, Ray ray_19, float t_1, vec3 radiance_1) {
     Fog _e4 = load_Fog(offset_9);
-    vec3 _e5 = fog_medium(_e4, ray_18, t_1, radiance_1);
+    vec3 _e5 = fog_medium(_e4, ray_19, t_1, radiance_1);
     return _e5;
 }
 
-vec3 through_medium(Ray ray_19, float t_2, vec3 radiance_2) {
+vec3 through_medium(Ray ray_20, float t_2, vec3 radiance_2) {
     if (!(HAS_MEDIA)) {
         return radiance_2;
     }
-    if ((ray_19.medium == 0u)) {
+    if ((ray_20.medium == 0u)) {
         return radiance_2;
     }
-    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_19.medium - 1u)];
-    if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
+    GpuInstance inst_10 = _group_0_binding_3_cs[(ray_20.medium - 1u)];
+    if (((inst_10.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_2;
     }
-    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_19, t_2, radiance_2);
-    return _e21;
+    shading_medium(ray_20.medium);
+    vec3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_20, t_2, radiance_2);
+    return _e22;
 }
 
 void rt_spawn(vec3 dir_3, vec3 weight) {
@@ -1128,14 +1220,14 @@ void rt_spawn(vec3 dir_3, vec3 weight) {
     }
 }
 
-void fog_rays(Fog m_5, Ray ray_20, Hit hit_7) {
-    rt_spawn(ray_20.dir, vec3(1.0));
+void fog_rays(Fog m_5, Ray ray_21, Hit hit_7) {
+    rt_spawn(ray_21.dir, vec3(1.0));
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_21, Hit hit_8) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_22, Hit hit_8) {
     Fog _e3 = load_Fog(offset_10);
-    fog_rays(_e3, ray_21, hit_8);
+    fog_rays(_e3, ray_22, hit_8);
     return;
 }
 
@@ -1161,8 +1253,8 @@ vec3 trace(Ray camera_ray) {
     vec3 radiance_3 = vec3(0.0);
     float t_3 = 0.0;
     Frame stack[3] = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
-    uint depth = 0u;
-    Ray ray_22 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    uint depth_1 = 0u;
+    Ray ray_23 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
@@ -1178,7 +1270,7 @@ vec3 trace(Ray camera_ray) {
     Hit hit_10 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
     uint i_5 = 0u;
-    uint medium = 0u;
+    uint medium_2 = 0u;
     bool found = false;
     uint k_1 = 0u;
     if (!(HAS_SECONDARY_RAYS)) {
@@ -1201,8 +1293,8 @@ vec3 trace(Ray camera_ray) {
         return _e22;
     }
     stack = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
-    depth = 0u;
-    ray_22 = camera_ray;
+    depth_1 = 0u;
+    ray_23 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1218,10 +1310,10 @@ vec3 trace(Ray camera_ray) {
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_22;
+            Ray _e67 = ray_23;
             Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_22;
+            Ray _e70 = ray_23;
             s_ray = _e70;
             s_sum = vec3(0.0);
             fresh = true;
@@ -1242,7 +1334,7 @@ vec3 trace(Ray camera_ray) {
                 radiance_4 = _e93;
             } else {
                 uint _e95 = s_c.slot;
-                GpuInstance inst_10 = _group_0_binding_3_cs[_e95];
+                GpuInstance inst_11 = _group_0_binding_3_cs[_e95];
                 Hit _e99 = s_hit;
                 hit_10 = _e99;
                 bool _e101 = fresh;
@@ -1261,12 +1353,12 @@ vec3 trace(Ray camera_ray) {
                 t_4 = _e110;
                 bool _e111 = fresh;
                 uint _e119 = s_ray.depth;
-                uint _e123 = depth;
-                if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
+                uint _e123 = depth_1;
+                if ((((_e111 && ((inst_11.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
                     spawn_count = 0u;
                     Ray _e131 = s_ray;
                     Hit _e132 = hit_10;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
+                    dispatch_secondary_rays(inst_11.material_type, inst_11.material_offset, _e131, _e132);
                     uint _e134 = spawn_count;
                     uint n_8 = min(min(_e134, 1u), MAX_SPAWN);
                     if ((n_8 > 0u)) {
@@ -1296,121 +1388,123 @@ vec3 trace(Ray camera_ray) {
                             vec3 _e174 = spawn_weights[_e171];
                             f.weights[min(_e167, 0u)] = _e174;
                         }
-                        uint _e178 = depth;
+                        uint _e178 = depth_1;
                         Frame _e182 = f;
                         stack[min(_e178, 2u)] = _e182;
-                        uint _e183 = depth;
-                        depth = (_e183 + 1u);
+                        uint _e183 = depth_1;
+                        depth_1 = (_e183 + 1u);
                         pushed = true;
                     }
                 }
                 bool _e187 = pushed;
                 if (!(_e187)) {
-                    Ray _e191 = s_ray;
-                    Hit _e192 = hit_10;
-                    vec3 _e193 = s_sum;
-                    vec3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
-                    radiance_4 = _e194;
+                    uint _e190 = s_ray.medium;
+                    shading_medium(_e190);
+                    Ray _e193 = s_ray;
+                    Hit _e194 = hit_10;
+                    vec3 _e195 = s_sum;
+                    vec3 _e196 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e193, _e194, _e195);
+                    radiance_4 = _e196;
                 }
             }
-            bool _e195 = pushed;
-            if (!(_e195)) {
-                Ray _e197 = s_ray;
-                float _e198 = t_4;
-                vec3 _e199 = radiance_4;
-                vec3 _e200 = through_medium(_e197, _e198, _e199);
-                value = _e200;
+            bool _e197 = pushed;
+            if (!(_e197)) {
+                Ray _e199 = s_ray;
+                float _e200 = t_4;
+                vec3 _e201 = radiance_4;
+                vec3 _e202 = through_medium(_e199, _e200, _e201);
+                value = _e202;
                 have_value = true;
             }
         }
-        bool _e202 = have_value;
-        if (_e202) {
-            uint _e203 = depth;
-            if ((_e203 == 0u)) {
-                vec3 _e206 = value;
-                return _e206;
+        bool _e204 = have_value;
+        if (_e204) {
+            uint _e205 = depth_1;
+            if ((_e205 == 0u)) {
+                vec3 _e208 = value;
+                return _e208;
             }
-            uint _e207 = depth;
-            uint top = (_e207 - 1u);
-            uint _e214 = stack[min(top, 2u)].next;
-            uint child_2 = (_e214 - 1u);
-            vec3 _e221 = stack[min(top, 2u)].sum;
-            vec3 _e229 = stack[min(top, 2u)].weights[min(child_2, 0u)];
-            vec3 _e230 = value;
-            stack[min(top, 2u)].sum = (_e221 + (_e229 * _e230));
+            uint _e209 = depth_1;
+            uint top = (_e209 - 1u);
+            uint _e216 = stack[min(top, 2u)].next;
+            uint child_2 = (_e216 - 1u);
+            vec3 _e223 = stack[min(top, 2u)].sum;
+            vec3 _e231 = stack[min(top, 2u)].weights[min(child_2, 0u)];
+            vec3 _e232 = value;
+            stack[min(top, 2u)].sum = (_e223 + (_e231 * _e232));
             have_value = false;
         }
-        uint _e234 = depth;
-        uint top_1 = (_e234 - 1u);
-        uint _e241 = stack[min(top_1, 2u)].next;
-        uint _e246 = stack[min(top_1, 2u)].count;
-        if ((_e241 < _e246)) {
+        uint _e236 = depth_1;
+        uint top_1 = (_e236 - 1u);
+        uint _e243 = stack[min(top_1, 2u)].next;
+        uint _e248 = stack[min(top_1, 2u)].count;
+        if ((_e243 < _e248)) {
             uint i_6 = stack[min(top_1, 2u)].next;
             stack[min(top_1, 2u)].next = (i_6 + 1u);
             Ray parent = stack[min(top_1, 2u)].ray;
             Hit hit_12 = stack[min(top_1, 2u)].hit;
             vec3 dir_7 = stack[min(top_1, 2u)].dirs[min(i_6, 0u)];
-            medium = parent.medium;
+            medium_2 = parent.medium;
             if ((dot(dir_7, hit_12.geometric_normal) < 0.0)) {
-                uint _e287 = stack[min(top_1, 2u)].slot;
-                medium = (_e287 + 1u);
+                uint _e289 = stack[min(top_1, 2u)].slot;
+                medium_2 = (_e289 + 1u);
             } else {
-                uint _e295 = stack[min(top_1, 2u)].slot;
-                if ((parent.medium == (_e295 + 1u))) {
+                uint _e297 = stack[min(top_1, 2u)].slot;
+                if ((parent.medium == (_e297 + 1u))) {
                     found = false;
-                    medium = 0u;
+                    medium_2 = 0u;
                     k_1 = top_1;
                     while(true) {
-                        uint _e303 = k_1;
-                        if ((_e303 == 0u)) {
+                        uint _e305 = k_1;
+                        if ((_e305 == 0u)) {
                             break;
                         }
-                        uint _e306 = k_1;
-                        k_1 = (_e306 - 1u);
-                        uint _e309 = k_1;
-                        uint _e314 = stack[min(_e309, 2u)].slot;
-                        uint _e319 = stack[min(top_1, 2u)].slot;
-                        uint _e321 = k_1;
-                        uint _e327 = stack[min(_e321, 2u)].ray.medium;
-                        uint _e331 = k_1;
-                        uint _e339 = stack[min((_e331 + 1u), 2u)].ray.medium;
-                        if ((((_e314 == _e319) && (_e327 != parent.medium)) && (_e339 == parent.medium))) {
-                            uint _e343 = k_1;
-                            uint _e349 = stack[min(_e343, 2u)].ray.medium;
-                            medium = _e349;
+                        uint _e308 = k_1;
+                        k_1 = (_e308 - 1u);
+                        uint _e311 = k_1;
+                        uint _e316 = stack[min(_e311, 2u)].slot;
+                        uint _e321 = stack[min(top_1, 2u)].slot;
+                        uint _e323 = k_1;
+                        uint _e329 = stack[min(_e323, 2u)].ray.medium;
+                        uint _e333 = k_1;
+                        uint _e341 = stack[min((_e333 + 1u), 2u)].ray.medium;
+                        if ((((_e316 == _e321) && (_e329 != parent.medium)) && (_e341 == parent.medium))) {
+                            uint _e345 = k_1;
+                            uint _e351 = stack[min(_e345, 2u)].ray.medium;
+                            medium_2 = _e351;
                             found = true;
                             break;
                         }
                     }
-                    bool _e351 = found;
-                    if (!(_e351)) {
-                        float _e357 = stack[min(top_1, 2u)].error;
-                        vec3 _e358 = spawn_origin(hit_12, _e357, dir_7);
-                        uint _e363 = stack[min(top_1, 2u)].slot;
-                        uint _e364 = medium_at(_e358, _e363);
-                        medium = _e364;
+                    bool _e353 = found;
+                    if (!(_e353)) {
+                        float _e359 = stack[min(top_1, 2u)].error;
+                        vec3 _e360 = spawn_origin(hit_12, _e359, dir_7);
+                        uint _e365 = stack[min(top_1, 2u)].slot;
+                        uint _e366 = medium_at(_e360, _e365);
+                        medium_2 = _e366;
                     }
                 }
             }
-            float _e369 = stack[min(top_1, 2u)].error;
-            vec3 _e370 = spawn_origin(hit_12, _e369, dir_7);
-            uint _e373 = F32_INF;
-            uint _e379 = medium;
-            ray_22 = Ray(_e370, 0.0, dir_7, uintBitsToFloat(_e373), (parent.depth + 1u), RAY_SECONDARY, _e379);
+            float _e371 = stack[min(top_1, 2u)].error;
+            vec3 _e372 = spawn_origin(hit_12, _e371, dir_7);
+            uint _e375 = F32_INF;
+            uint _e381 = medium_2;
+            ray_23 = Ray(_e372, 0.0, dir_7, uintBitsToFloat(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
         } else {
-            Ray _e385 = stack[min(top_1, 2u)].ray;
-            s_ray = _e385;
-            Hit _e390 = stack[min(top_1, 2u)].hit;
-            s_hit = _e390;
-            float _e395 = stack[min(top_1, 2u)].error;
-            s_error = _e395;
-            uint _e401 = stack[min(top_1, 2u)].slot;
-            s_c.slot = _e401;
-            vec3 _e406 = stack[min(top_1, 2u)].sum;
-            s_sum = _e406;
+            Ray _e387 = stack[min(top_1, 2u)].ray;
+            s_ray = _e387;
+            Hit _e392 = stack[min(top_1, 2u)].hit;
+            s_hit = _e392;
+            float _e397 = stack[min(top_1, 2u)].error;
+            s_error = _e397;
+            uint _e403 = stack[min(top_1, 2u)].slot;
+            s_c.slot = _e403;
+            vec3 _e408 = stack[min(top_1, 2u)].sum;
+            s_sum = _e408;
             fresh = false;
             waiting = true;
-            depth = top_1;
+            depth_1 = top_1;
         }
     }
     return vec3(0.0);
@@ -1429,7 +1523,7 @@ void render_pixel(uvec2 pixel_3) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s_2 = 0u;
-    Ray ray_23 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_24 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_2 = _group_0_binding_1_cs;
     sum = vec3(0.0);
@@ -1451,13 +1545,13 @@ void render_pixel(uvec2 pixel_3) {
         uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_23 = _e23;
-        ray_23.depth = 0u;
-        ray_23.kind = RAY_CAMERA;
-        vec3 _e31 = ray_23.origin;
+        ray_24 = _e23;
+        ray_24.depth = 0u;
+        ray_24.kind = RAY_CAMERA;
+        vec3 _e31 = ray_24.origin;
         uint _e33 = medium_at(_e31, NO_HIT);
-        ray_23.medium = _e33;
-        Ray _e34 = ray_23;
+        ray_24.medium = _e33;
+        Ray _e34 = ray_24;
         vec3 _e35 = trace(_e34);
         bvec3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

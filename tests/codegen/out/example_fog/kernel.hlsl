@@ -121,7 +121,7 @@ struct Fog {
     int _pad1_1;
     int _pad1_2;
     float3 albedo;
-    uint lights_inside;
+    int _end_pad_0;
 };
 
 struct Lambert {
@@ -184,12 +184,20 @@ static const float GAMMA_1_ = 5.960465e-8;
 static const float GAMMA_6_ = 3.576281e-7;
 static const float GAMMA_4_ = 2.3841864e-7;
 static const uint RAY_SHADOW = 2u;
+static const uint SCRATCH_ABSORB = 5u;
+static const uint SCRATCH_ABSORB_T = 6u;
+static const bool HAS_ABSORB = true;
+static const uint SCRATCH_DEPTH = 7u;
+static const uint SCRATCH_NET = 8u;
+static const uint SCRATCH_DENSITY_MAX = 9u;
 static const uint BLAS_STACK = 64u;
 static const uint TLAS_STACK = 10u;
 static const bool HAS_SECONDARY_RAYS = true;
 static const bool HAS_BACKGROUND = false;
+static const uint SCRATCH_MEDIUM = 10u;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
 static const float LIGHT_ERROR = 4.7683716e-7;
+static const bool HAS_ANY_HIT = true;
 static const float INV_PI = 0.31830987;
 static const uint FLAG_MEDIUM = 4u;
 static const float PI = 3.1415927;
@@ -209,6 +217,7 @@ ByteAddressBuffer nodes : register(t2);
 ByteAddressBuffer triangles : register(t4);
 static float hit_error = (float)0;
 ByteAddressBuffer attributes : register(t5);
+static uint scratch[12] = (uint[12])0;
 static uint traversal_stack[74] = (uint[74])0;
 static uint ray_count = (uint)0;
 static float3 spawn_dirs[1] = (float3[1])0;
@@ -398,16 +407,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_24 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_24;
+    const Ray ray_25 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_25;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
-    const Ray ray_25 = _e4;
-    return ray_25;
+    const Ray ray_26 = _e4;
+    return ray_26;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -436,8 +445,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o_1), dot(inst.world_to_object_1_, o_1), dot(inst.world_to_object_2_, o_1));
     r.dir = float3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
-    const Ray ray_26 = _e25;
-    return ray_26;
+    const Ray ray_27 = _e25;
+    return ray_27;
 }
 
 float3 safe_inverse(float3 d)
@@ -663,11 +672,10 @@ Hit finish_hit(Ray ray_2, Candidate c)
     return hit_12;
 }
 
-Fog ConstructFog(float arg0, float3 arg1, uint arg2) {
+Fog ConstructFog(float arg0, float3 arg1) {
     Fog ret = (Fog)0;
     ret.density = arg0;
     ret.albedo = arg1;
-    ret.lights_inside = arg2;
     return ret;
 }
 
@@ -677,13 +685,52 @@ Fog load_Fog(uint offset_2)
     uint _e11 = asuint(params.Load((offset_2 + 4u)*4));
     uint _e17 = asuint(params.Load((offset_2 + 5u)*4));
     uint _e23 = asuint(params.Load((offset_2 + 6u)*4));
-    uint _e30 = asuint(params.Load((offset_2 + 7u)*4));
-    const Fog fog = ConstructFog(asfloat(_e5), float3(asfloat(_e11), asfloat(_e17), asfloat(_e23)), _e30);
+    const Fog fog = ConstructFog(asfloat(_e5), float3(asfloat(_e11), asfloat(_e17), asfloat(_e23)));
     return fog;
+}
+
+bool is_finite_f32_(float x_1)
+{
+    return ((asuint(x_1) & 2147483647u) < 2139095040u);
+}
+
+void absorb_query(float density)
+{
+    float sigma = (float)0;
+
+    if (!(HAS_ABSORB)) {
+        return;
+    }
+    uint side = scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)];
+    if ((side == 0u)) {
+        return;
+    }
+    sigma = 0.0;
+    const bool _e13 = is_finite_f32_(density);
+    if ((_e13 && (density > 0.0))) {
+        sigma = density;
+    }
+    uint _e22 = scratch[min(uint(min(SCRATCH_ABSORB_T, 11u)), 11u)];
+    float t_6 = asfloat(_e22);
+    float _e24 = sigma;
+    float _e25 = sigma;
+    float s_6 = ((side == 2u) ? -(_e25) : _e24);
+    uint _e35 = scratch[min(uint(min(SCRATCH_DEPTH, 11u)), 11u)];
+    float depth_2 = (asfloat(_e35) - (s_6 * t_6));
+    scratch[min(uint(min(SCRATCH_DEPTH, 11u)), 11u)] = asuint(depth_2);
+    uint _e50 = scratch[min(uint(min(SCRATCH_NET, 11u)), 11u)];
+    float net = (asfloat(_e50) + s_6);
+    scratch[min(uint(min(SCRATCH_NET, 11u)), 11u)] = asuint(net);
+    uint _e64 = scratch[min(uint(min(SCRATCH_DENSITY_MAX, 11u)), 11u)];
+    float _e66 = sigma;
+    float most = max(asfloat(_e64), _e66);
+    scratch[min(uint(min(SCRATCH_DENSITY_MAX, 11u)), 11u)] = asuint(most);
+    return;
 }
 
 bool fog_any_hit(Fog m, Ray ray_3, Hit hit_1)
 {
+    absorb_query(m.density);
     return (ray_3.kind != RAY_SHADOW);
 }
 
@@ -700,8 +747,13 @@ bool accept(GpuInstance inst_4, Ray ray_5, Candidate c_1)
         float shaded = hit_error;
         const Hit _e10 = finish_hit(ray_5, c_1);
         hit_error = shaded;
-        const bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
-        return _e14;
+        if ((ray_5.kind == RAY_SHADOW)) {
+            scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)] = (_e10.front_face ? 1u : 2u);
+            scratch[min(uint(min(SCRATCH_ABSORB_T, 11u)), 11u)] = asuint((c_1.t * length(ray_5.dir)));
+        }
+        const bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
+        scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)] = 0u;
+        return _e36;
     }
     return true;
 }
@@ -1084,6 +1136,12 @@ float3 miss(Ray ray_11)
     return _e9;
 }
 
+void shading_medium(uint medium)
+{
+    scratch[min(uint(min(SCRATCH_MEDIUM, 11u)), 11u)] = medium;
+    return;
+}
+
 float3 fog_shade(Fog m_1, Ray ray_12, Hit hit_3, float3 secondary)
 {
     return secondary;
@@ -1141,14 +1199,14 @@ PointLight load_PointLight(uint offset_6)
     return pointlight;
 }
 
-float3 step_toward(float3 x_1, float3 s)
+float3 step_toward(float3 x_2, float3 s)
 {
-    uint3 bits_1 = asuint(x_1);
-    bool3 up_1 = ((sign(x_1) * sign(s)) > (0.0).xxx);
+    uint3 bits_1 = asuint(x_2);
+    bool3 up_1 = ((sign(x_2) * sign(s)) > (0.0).xxx);
     float3 stepped = asfloat((up_1 ? (bits_1 + (1u).xxx) : (bits_1 - (1u).xxx)));
     float3 from_zero = ((s > (0.0).xxx) ? (1.1754944e-38).xxx : (-1.1754944e-38).xxx);
-    float3 moved = ((x_1 == (0.0).xxx) ? from_zero : stepped);
-    return (!((s == (0.0).xxx)) ? moved : x_1);
+    float3 moved = ((x_2 == (0.0).xxx) ? from_zero : stepped);
+    return (!((s == (0.0).xxx)) ? moved : x_2);
 }
 
 float3 offset_origin(float3 p_5, float3 n_3, float error)
@@ -1186,15 +1244,57 @@ Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_27 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_27;
+    const Ray ray_28 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_28;
+}
+
+float shadow_transmittance(Ray ray_14, uint medium_1)
+{
+    float depth = (float)0;
+
+    scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)] = 0u;
+    scratch[min(uint(min(SCRATCH_DEPTH, 11u)), 11u)] = 0u;
+    scratch[min(uint(min(SCRATCH_NET, 11u)), 11u)] = 0u;
+    scratch[min(uint(min(SCRATCH_DENSITY_MAX, 11u)), 11u)] = 0u;
+    if ((HAS_MEDIA && HAS_ANY_HIT)) {
+        if ((medium_1 != 0u)) {
+            GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4((medium_1 - 1u)*128+0)), asfloat(instances.Load4((medium_1 - 1u)*128+16)), asfloat(instances.Load4((medium_1 - 1u)*128+32)), asfloat(instances.Load4((medium_1 - 1u)*128+48)), asfloat(instances.Load4((medium_1 - 1u)*128+64)), asfloat(instances.Load4((medium_1 - 1u)*128+80)), asuint(instances.Load((medium_1 - 1u)*128+96)), asuint(instances.Load((medium_1 - 1u)*128+100)), asuint(instances.Load((medium_1 - 1u)*128+104)), asuint(instances.Load((medium_1 - 1u)*128+108)), asuint(instances.Load((medium_1 - 1u)*128+112)), asuint(instances.Load((medium_1 - 1u)*128+116)), asuint(instances.Load((medium_1 - 1u)*128+120)), asuint(instances.Load((medium_1 - 1u)*128+124)));
+            if (((inst_8.flags & FLAG_ANY_HIT) != 0u)) {
+                Hit start = ConstructHit(ray_14.origin, 0.0, -(ray_14.dir), -(ray_14.dir), (0.0).xx, true, inst_8.object, 0u);
+                scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)] = 1u;
+                scratch[min(uint(min(SCRATCH_ABSORB_T, 11u)), 11u)] = 0u;
+                const bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start);
+                scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)] = 0u;
+            }
+        }
+    }
+    const Candidate _e75 = intersect_scene(ray_14, true);
+    if ((_e75.slot != NO_HIT)) {
+        return 0.0;
+    }
+    uint _e85 = scratch[min(uint(min(SCRATCH_DEPTH, 11u)), 11u)];
+    depth = asfloat(_e85);
+    uint _e93 = scratch[min(uint(min(SCRATCH_NET, 11u)), 11u)];
+    float net_1 = asfloat(_e93);
+    uint _e101 = scratch[min(uint(min(SCRATCH_DENSITY_MAX, 11u)), 11u)];
+    if ((net_1 > (1e-6 * asfloat(_e101)))) {
+        uint _e107 = F32_INF;
+        if ((ray_14.tmax == asfloat(_e107))) {
+            return 0.0;
+        }
+        float _e111 = depth;
+        depth = (_e111 + (net_1 * (ray_14.tmax * length(ray_14.dir))));
+    }
+    float _e118 = depth;
+    return exp(-(max(_e118, 0.0)));
 }
 
 float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
 {
     const Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    const Candidate _e6 = intersect_scene(_e4, true);
-    return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
+    uint _e10 = scratch[min(uint(min(SCRATCH_MEDIUM, 11u)), 11u)];
+    const float _e11 = shadow_transmittance(_e4, _e10);
+    return _e11;
 }
 
 LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
@@ -1247,12 +1347,12 @@ LightSample sample_light_query(uint i_1, float3 position_4, float3 normal_4)
     return lightsample_3;
 }
 
-float3 lambert_shade(Lambert m_2, Ray ray_14, Hit hit_5)
+float3 lambert_shade(Lambert m_2, Ray ray_15, Hit hit_5)
 {
     float3 color = (float3)0;
     uint i_2 = (uint)0;
 
-    const float3 _e3 = shading_normal(ray_14, hit_5);
+    const float3 _e3 = shading_normal(ray_15, hit_5);
     color = (0.0).xxx;
     const uint _e8 = light_count_query();
     i_2 = 0u;
@@ -1279,17 +1379,17 @@ float3 lambert_shade(Lambert m_2, Ray ray_14, Hit hit_5)
     return _e33;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_15, Hit hit_6, float3 secondary_1)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_16, Hit hit_6, float3 secondary_1)
 {
     switch(type_id_4) {
         case 0u: {
             const Fog _e5 = load_Fog(offset_8);
-            const float3 _e6 = fog_shade(_e5, ray_15, hit_6, secondary_1);
+            const float3 _e6 = fog_shade(_e5, ray_16, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             const Lambert _e7 = load_Lambert(offset_8);
-            const float3 _e8 = lambert_shade(_e7, ray_15, hit_6);
+            const float3 _e8 = lambert_shade(_e7, ray_16, hit_6);
             return _e8;
         }
         default: {
@@ -1299,25 +1399,21 @@ float3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_15, Hit hit_6
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_16, Candidate c_2)
+float3 shade_direct(Ray ray_17, Candidate c_2)
 {
-    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_16, c_2);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, (0.0).xxx);
-    return _e11;
-}
-
-bool is_finite_f32_(float x_2)
-{
-    return ((asuint(x_2) & 2147483647u) < 2139095040u);
+    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
+    const Hit _e6 = finish_hit(ray_17, c_2);
+    shading_medium(ray_17.medium);
+    const float3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_17, _e6, (0.0).xxx);
+    return _e12;
 }
 
 float3 fog_inscatter(Fog m_3, uint i_3, float3 o, float3 dir_2, float d_1, float trans)
 {
     float s_1 = (float)0;
 
-    float sigma = m_3.density;
-    bool tiny_1 = ((sigma * d_1) < 0.001);
+    float sigma_1 = m_3.density;
+    bool tiny_1 = ((sigma_1 * d_1) < 0.001);
     const LightSample _e12 = sample_light_query(i_3, o, (0.0).xxx);
     float3 c_6 = (_e12.dir * (_e12.dist).xxx);
     float delta = dot(c_6, dir_2);
@@ -1329,7 +1425,7 @@ float3 fog_inscatter(Fog m_3, uint i_3, float3 o, float3 dir_2, float d_1, float
     float tb = ((d_1 == asfloat(_e34)) ? (0.5 * PI) : atan2((d_1 - delta), h_2));
     float w_3 = (equi ? 0.5 : 0.0);
     const float2 _e41 = rand2_next();
-    s_1 = (-(log((1.0 - (_e41.y * (1.0 - trans))))) / sigma);
+    s_1 = (-(log((1.0 - (_e41.y * (1.0 - trans))))) / sigma_1);
     if (tiny_1) {
         s_1 = (_e41.y * d_1);
     }
@@ -1339,23 +1435,22 @@ float3 fog_inscatter(Fog m_3, uint i_3, float3 o, float3 dir_2, float d_1, float
     float _e61 = s_1;
     s_1 = min(max(_e61, 0.0), d_1);
     float _e66 = s_1;
-    float e_2 = exp((-(sigma) * _e66));
-    float p_free = (tiny_1 ? (1.0 / d_1) : ((sigma * e_2) / (1.0 - trans)));
+    float e_2 = exp((-(sigma_1) * _e66));
+    float p_free = (tiny_1 ? (1.0 / d_1) : ((sigma_1 * e_2) / (1.0 - trans)));
     float _e76 = s_1;
     float r_4 = (_e76 - delta);
     float pdf = (((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_2) / ((tb - ta) * ((h_2 * h_2) + (r_4 * r_4)))) : 0.0));
     float _e91 = s_1;
     const LightSample _e97 = sample_light_query(i_3, (o + (dir_2 * (_e91).xxx)), (0.0).xxx);
-    float att = ((m_3.lights_inside == 1u) ? exp((-(sigma) * _e97.dist)) : 1.0);
-    return (_e97.radiance * ((((att * sigma) * e_2) / pdf)).xxx);
+    return (_e97.radiance * (((sigma_1 * e_2) / pdf)).xxx);
 }
 
-float3 fog_medium(Fog m_4, Ray ray_17, float t, float3 radiance)
+float3 fog_medium(Fog m_4, Ray ray_18, float t, float3 radiance)
 {
     float3 light = (float3)0;
     uint i_4 = (uint)0;
 
-    float len = length(ray_17.dir);
+    float len = length(ray_18.dir);
     if ((!((m_4.density > 0.0)) || !((len > 0.0)))) {
         return radiance;
     }
@@ -1380,34 +1475,35 @@ float3 fog_medium(Fog m_4, Ray ray_17, float t, float3 radiance)
         }
         float3 _e27 = light;
         uint _e28 = i_4;
-        const float3 _e33 = fog_inscatter(m_4, _e28, ray_17.origin, (ray_17.dir / (len).xxx), d_5, trans_1);
+        const float3 _e33 = fog_inscatter(m_4, _e28, ray_18.origin, (ray_18.dir / (len).xxx), d_5, trans_1);
         light = (_e27 + _e33);
     }
     float3 _e46 = light;
     return ((radiance * (trans_1).xxx) + ((m_4.albedo * ((0.25 * INV_PI)).xxx) * _e46));
 }
 
-float3 dispatch_medium(uint type_id_5, uint offset_9, Ray ray_18, float t_1, float3 radiance_1)
+float3 dispatch_medium(uint type_id_5, uint offset_9, Ray ray_19, float t_1, float3 radiance_1)
 {
     const Fog _e4 = load_Fog(offset_9);
-    const float3 _e5 = fog_medium(_e4, ray_18, t_1, radiance_1);
+    const float3 _e5 = fog_medium(_e4, ray_19, t_1, radiance_1);
     return _e5;
 }
 
-float3 through_medium(Ray ray_19, float t_2, float3 radiance_2)
+float3 through_medium(Ray ray_20, float t_2, float3 radiance_2)
 {
     if (!(HAS_MEDIA)) {
         return radiance_2;
     }
-    if ((ray_19.medium == 0u)) {
+    if ((ray_20.medium == 0u)) {
         return radiance_2;
     }
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_19.medium - 1u)*128+0)), asfloat(instances.Load4((ray_19.medium - 1u)*128+16)), asfloat(instances.Load4((ray_19.medium - 1u)*128+32)), asfloat(instances.Load4((ray_19.medium - 1u)*128+48)), asfloat(instances.Load4((ray_19.medium - 1u)*128+64)), asfloat(instances.Load4((ray_19.medium - 1u)*128+80)), asuint(instances.Load((ray_19.medium - 1u)*128+96)), asuint(instances.Load((ray_19.medium - 1u)*128+100)), asuint(instances.Load((ray_19.medium - 1u)*128+104)), asuint(instances.Load((ray_19.medium - 1u)*128+108)), asuint(instances.Load((ray_19.medium - 1u)*128+112)), asuint(instances.Load((ray_19.medium - 1u)*128+116)), asuint(instances.Load((ray_19.medium - 1u)*128+120)), asuint(instances.Load((ray_19.medium - 1u)*128+124)));
-    if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
+    GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4((ray_20.medium - 1u)*128+0)), asfloat(instances.Load4((ray_20.medium - 1u)*128+16)), asfloat(instances.Load4((ray_20.medium - 1u)*128+32)), asfloat(instances.Load4((ray_20.medium - 1u)*128+48)), asfloat(instances.Load4((ray_20.medium - 1u)*128+64)), asfloat(instances.Load4((ray_20.medium - 1u)*128+80)), asuint(instances.Load((ray_20.medium - 1u)*128+96)), asuint(instances.Load((ray_20.medium - 1u)*128+100)), asuint(instances.Load((ray_20.medium - 1u)*128+104)), asuint(instances.Load((ray_20.medium - 1u)*128+108)), asuint(instances.Load((ray_20.medium - 1u)*128+112)), asuint(instances.Load((ray_20.medium - 1u)*128+116)), asuint(instances.Load((ray_20.medium - 1u)*128+120)), asuint(instances.Load((ray_20.medium - 1u)*128+124)));
+    if (((inst_10.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_2;
     }
-    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_19, t_2, radiance_2);
-    return _e21;
+    shading_medium(ray_20.medium);
+    const float3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_20, t_2, radiance_2);
+    return _e22;
 }
 
 void rt_spawn(float3 dir_3, float3 weight)
@@ -1420,16 +1516,16 @@ void rt_spawn(float3 dir_3, float3 weight)
     }
 }
 
-void fog_rays(Fog m_5, Ray ray_20, Hit hit_7)
+void fog_rays(Fog m_5, Ray ray_21, Hit hit_7)
 {
-    rt_spawn(ray_20.dir, (1.0).xxx);
+    rt_spawn(ray_21.dir, (1.0).xxx);
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_21, Hit hit_8)
+void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_22, Hit hit_8)
 {
     const Fog _e3 = load_Fog(offset_10);
-    fog_rays(_e3, ray_21, hit_8);
+    fog_rays(_e3, ray_22, hit_8);
     return;
 }
 
@@ -1483,8 +1579,8 @@ float3 trace(Ray camera_ray)
     float3 radiance_3 = (float3)0;
     float t_3 = (float)0;
     Frame stack[3] = (Frame[3])0;
-    uint depth = (uint)0;
-    Ray ray_22 = (Ray)0;
+    uint depth_1 = (uint)0;
+    Ray ray_23 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     Ray s_ray = (Ray)0;
@@ -1500,7 +1596,7 @@ float3 trace(Ray camera_ray)
     Hit hit_10 = (Hit)0;
     Frame f = (Frame)0;
     uint i_5 = (uint)0;
-    uint medium = (uint)0;
+    uint medium_2 = (uint)0;
     bool found = (bool)0;
     uint k_1 = (uint)0;
 
@@ -1524,8 +1620,8 @@ float3 trace(Ray camera_ray)
         return _e22;
     }
     stack = ZeroValuearray3_Frame_();
-    depth = 0u;
-    ray_22 = camera_ray;
+    depth_1 = 0u;
+    ray_23 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     s_ray = camera_ray;
@@ -1544,10 +1640,10 @@ float3 trace(Ray camera_ray)
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_22;
+            Ray _e67 = ray_23;
             const Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_22;
+            Ray _e70 = ray_23;
             s_ray = _e70;
             s_sum = (0.0).xxx;
             fresh = true;
@@ -1568,7 +1664,7 @@ float3 trace(Ray camera_ray)
                 radiance_4 = _e93;
             } else {
                 uint _e95 = s_c.slot;
-                GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(_e95*128+0)), asfloat(instances.Load4(_e95*128+16)), asfloat(instances.Load4(_e95*128+32)), asfloat(instances.Load4(_e95*128+48)), asfloat(instances.Load4(_e95*128+64)), asfloat(instances.Load4(_e95*128+80)), asuint(instances.Load(_e95*128+96)), asuint(instances.Load(_e95*128+100)), asuint(instances.Load(_e95*128+104)), asuint(instances.Load(_e95*128+108)), asuint(instances.Load(_e95*128+112)), asuint(instances.Load(_e95*128+116)), asuint(instances.Load(_e95*128+120)), asuint(instances.Load(_e95*128+124)));
+                GpuInstance inst_11 = ConstructGpuInstance(asfloat(instances.Load4(_e95*128+0)), asfloat(instances.Load4(_e95*128+16)), asfloat(instances.Load4(_e95*128+32)), asfloat(instances.Load4(_e95*128+48)), asfloat(instances.Load4(_e95*128+64)), asfloat(instances.Load4(_e95*128+80)), asuint(instances.Load(_e95*128+96)), asuint(instances.Load(_e95*128+100)), asuint(instances.Load(_e95*128+104)), asuint(instances.Load(_e95*128+108)), asuint(instances.Load(_e95*128+112)), asuint(instances.Load(_e95*128+116)), asuint(instances.Load(_e95*128+120)), asuint(instances.Load(_e95*128+124)));
                 Hit _e99 = s_hit;
                 hit_10 = _e99;
                 bool _e101 = fresh;
@@ -1587,12 +1683,12 @@ float3 trace(Ray camera_ray)
                 t_4 = _e110;
                 bool _e111 = fresh;
                 uint _e119 = s_ray.depth;
-                uint _e123 = depth;
-                if ((((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
+                uint _e123 = depth_1;
+                if ((((_e111 && ((inst_11.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE))) {
                     spawn_count = 0u;
                     Ray _e131 = s_ray;
                     Hit _e132 = hit_10;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
+                    dispatch_secondary_rays(inst_11.material_type, inst_11.material_offset, _e131, _e132);
                     uint _e134 = spawn_count;
                     uint n_8 = min(min(_e134, 1u), MAX_SPAWN);
                     if ((n_8 > 0u)) {
@@ -1625,124 +1721,126 @@ float3 trace(Ray camera_ray)
                             float3 _e174 = spawn_weights[min(uint(_e171), 0u)];
                             f.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
                         }
-                        uint _e178 = depth;
+                        uint _e178 = depth_1;
                         Frame _e182 = f;
                         stack[min(uint(min(_e178, 2u)), 2u)] = _e182;
-                        uint _e183 = depth;
-                        depth = (_e183 + 1u);
+                        uint _e183 = depth_1;
+                        depth_1 = (_e183 + 1u);
                         pushed = true;
                     }
                 }
                 bool _e187 = pushed;
                 if (!(_e187)) {
-                    Ray _e191 = s_ray;
-                    Hit _e192 = hit_10;
-                    float3 _e193 = s_sum;
-                    const float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
-                    radiance_4 = _e194;
+                    uint _e190 = s_ray.medium;
+                    shading_medium(_e190);
+                    Ray _e193 = s_ray;
+                    Hit _e194 = hit_10;
+                    float3 _e195 = s_sum;
+                    const float3 _e196 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e193, _e194, _e195);
+                    radiance_4 = _e196;
                 }
             }
-            bool _e195 = pushed;
-            if (!(_e195)) {
-                Ray _e197 = s_ray;
-                float _e198 = t_4;
-                float3 _e199 = radiance_4;
-                const float3 _e200 = through_medium(_e197, _e198, _e199);
-                value = _e200;
+            bool _e197 = pushed;
+            if (!(_e197)) {
+                Ray _e199 = s_ray;
+                float _e200 = t_4;
+                float3 _e201 = radiance_4;
+                const float3 _e202 = through_medium(_e199, _e200, _e201);
+                value = _e202;
                 have_value = true;
             }
         }
-        bool _e202 = have_value;
-        if (_e202) {
-            uint _e203 = depth;
-            if ((_e203 == 0u)) {
-                float3 _e206 = value;
-                return _e206;
+        bool _e204 = have_value;
+        if (_e204) {
+            uint _e205 = depth_1;
+            if ((_e205 == 0u)) {
+                float3 _e208 = value;
+                return _e208;
             }
-            uint _e207 = depth;
-            uint top = (_e207 - 1u);
-            uint _e214 = stack[min(uint(min(top, 2u)), 2u)].next;
-            uint child_2 = (_e214 - 1u);
-            float3 _e221 = stack[min(uint(min(top, 2u)), 2u)].sum;
-            float3 _e229 = stack[min(uint(min(top, 2u)), 2u)].weights[min(uint(min(child_2, 0u)), 0u)];
-            float3 _e230 = value;
-            stack[min(uint(min(top, 2u)), 2u)].sum = (_e221 + (_e229 * _e230));
+            uint _e209 = depth_1;
+            uint top = (_e209 - 1u);
+            uint _e216 = stack[min(uint(min(top, 2u)), 2u)].next;
+            uint child_2 = (_e216 - 1u);
+            float3 _e223 = stack[min(uint(min(top, 2u)), 2u)].sum;
+            float3 _e231 = stack[min(uint(min(top, 2u)), 2u)].weights[min(uint(min(child_2, 0u)), 0u)];
+            float3 _e232 = value;
+            stack[min(uint(min(top, 2u)), 2u)].sum = (_e223 + (_e231 * _e232));
             have_value = false;
         }
-        uint _e234 = depth;
-        uint top_1 = (_e234 - 1u);
-        uint _e241 = stack[min(uint(min(top_1, 2u)), 2u)].next;
-        uint _e246 = stack[min(uint(min(top_1, 2u)), 2u)].count;
-        if ((_e241 < _e246)) {
+        uint _e236 = depth_1;
+        uint top_1 = (_e236 - 1u);
+        uint _e243 = stack[min(uint(min(top_1, 2u)), 2u)].next;
+        uint _e248 = stack[min(uint(min(top_1, 2u)), 2u)].count;
+        if ((_e243 < _e248)) {
             uint i_6 = stack[min(uint(min(top_1, 2u)), 2u)].next;
             stack[min(uint(min(top_1, 2u)), 2u)].next = (i_6 + 1u);
             Ray parent = stack[min(uint(min(top_1, 2u)), 2u)].ray;
             Hit hit_13 = stack[min(uint(min(top_1, 2u)), 2u)].hit;
             float3 dir_7 = stack[min(uint(min(top_1, 2u)), 2u)].dirs[min(uint(min(i_6, 0u)), 0u)];
-            medium = parent.medium;
+            medium_2 = parent.medium;
             if ((dot(dir_7, hit_13.geometric_normal) < 0.0)) {
-                uint _e287 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
-                medium = (_e287 + 1u);
+                uint _e289 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
+                medium_2 = (_e289 + 1u);
             } else {
-                uint _e295 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
-                if ((parent.medium == (_e295 + 1u))) {
+                uint _e297 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
+                if ((parent.medium == (_e297 + 1u))) {
                     found = false;
-                    medium = 0u;
+                    medium_2 = 0u;
                     k_1 = top_1;
                     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
                     while(true) {
                         if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
                         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-                        uint _e303 = k_1;
-                        if ((_e303 == 0u)) {
+                        uint _e305 = k_1;
+                        if ((_e305 == 0u)) {
                             break;
                         }
-                        uint _e306 = k_1;
-                        k_1 = (_e306 - 1u);
-                        uint _e309 = k_1;
-                        uint _e314 = stack[min(uint(min(_e309, 2u)), 2u)].slot;
-                        uint _e319 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
-                        uint _e321 = k_1;
-                        uint _e327 = stack[min(uint(min(_e321, 2u)), 2u)].ray.medium;
-                        uint _e331 = k_1;
-                        uint _e339 = stack[min(uint(min((_e331 + 1u), 2u)), 2u)].ray.medium;
-                        if ((((_e314 == _e319) && (_e327 != parent.medium)) && (_e339 == parent.medium))) {
-                            uint _e343 = k_1;
-                            uint _e349 = stack[min(uint(min(_e343, 2u)), 2u)].ray.medium;
-                            medium = _e349;
+                        uint _e308 = k_1;
+                        k_1 = (_e308 - 1u);
+                        uint _e311 = k_1;
+                        uint _e316 = stack[min(uint(min(_e311, 2u)), 2u)].slot;
+                        uint _e321 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
+                        uint _e323 = k_1;
+                        uint _e329 = stack[min(uint(min(_e323, 2u)), 2u)].ray.medium;
+                        uint _e333 = k_1;
+                        uint _e341 = stack[min(uint(min((_e333 + 1u), 2u)), 2u)].ray.medium;
+                        if ((((_e316 == _e321) && (_e329 != parent.medium)) && (_e341 == parent.medium))) {
+                            uint _e345 = k_1;
+                            uint _e351 = stack[min(uint(min(_e345, 2u)), 2u)].ray.medium;
+                            medium_2 = _e351;
                             found = true;
                             break;
                         }
                     }
-                    bool _e351 = found;
-                    if (!(_e351)) {
-                        float _e357 = stack[min(uint(min(top_1, 2u)), 2u)].error;
-                        const float3 _e358 = spawn_origin(hit_13, _e357, dir_7);
-                        uint _e363 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
-                        const uint _e364 = medium_at(_e358, _e363);
-                        medium = _e364;
+                    bool _e353 = found;
+                    if (!(_e353)) {
+                        float _e359 = stack[min(uint(min(top_1, 2u)), 2u)].error;
+                        const float3 _e360 = spawn_origin(hit_13, _e359, dir_7);
+                        uint _e365 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
+                        const uint _e366 = medium_at(_e360, _e365);
+                        medium_2 = _e366;
                     }
                 }
             }
-            float _e369 = stack[min(uint(min(top_1, 2u)), 2u)].error;
-            const float3 _e370 = spawn_origin(hit_13, _e369, dir_7);
-            uint _e373 = F32_INF;
-            uint _e379 = medium;
-            ray_22 = ConstructRay(_e370, 0.0, dir_7, asfloat(_e373), (parent.depth + 1u), RAY_SECONDARY, _e379);
+            float _e371 = stack[min(uint(min(top_1, 2u)), 2u)].error;
+            const float3 _e372 = spawn_origin(hit_13, _e371, dir_7);
+            uint _e375 = F32_INF;
+            uint _e381 = medium_2;
+            ray_23 = ConstructRay(_e372, 0.0, dir_7, asfloat(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
         } else {
-            Ray _e385 = stack[min(uint(min(top_1, 2u)), 2u)].ray;
-            s_ray = _e385;
-            Hit _e390 = stack[min(uint(min(top_1, 2u)), 2u)].hit;
-            s_hit = _e390;
-            float _e395 = stack[min(uint(min(top_1, 2u)), 2u)].error;
-            s_error = _e395;
-            uint _e401 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
-            s_c.slot = _e401;
-            float3 _e406 = stack[min(uint(min(top_1, 2u)), 2u)].sum;
-            s_sum = _e406;
+            Ray _e387 = stack[min(uint(min(top_1, 2u)), 2u)].ray;
+            s_ray = _e387;
+            Hit _e392 = stack[min(uint(min(top_1, 2u)), 2u)].hit;
+            s_hit = _e392;
+            float _e397 = stack[min(uint(min(top_1, 2u)), 2u)].error;
+            s_error = _e397;
+            uint _e403 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
+            s_c.slot = _e403;
+            float3 _e408 = stack[min(uint(min(top_1, 2u)), 2u)].sum;
+            s_sum = _e408;
             fresh = false;
             waiting = true;
-            depth = top_1;
+            depth_1 = top_1;
         }
     }
     return ZeroValuefloat3();
@@ -1764,7 +1862,7 @@ void render_pixel(uint2 pixel_3)
     float3 sum = (float3)0;
     uint bad = (uint)0;
     uint s_2 = (uint)0;
-    Ray ray_23 = (Ray)0;
+    Ray ray_24 = (Ray)0;
 
     FrameUniforms frame_5 = frame;
     TileParams tile_2 = tile;
@@ -1790,13 +1888,13 @@ void render_pixel(uint2 pixel_3)
         uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_23 = _e23;
-        ray_23.depth = 0u;
-        ray_23.kind = RAY_CAMERA;
-        float3 _e31 = ray_23.origin;
+        ray_24 = _e23;
+        ray_24.depth = 0u;
+        ray_24.kind = RAY_CAMERA;
+        float3 _e31 = ray_24.origin;
         const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_23.medium = _e33;
-        Ray _e34 = ray_23;
+        ray_24.medium = _e33;
+        Ray _e34 = ray_24;
         const float3 _e35 = trace(_e34);
         const bool3 _e36 = is_finite_vec3f(_e35);
         if (all(_e36)) {

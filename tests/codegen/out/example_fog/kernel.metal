@@ -10,8 +10,8 @@ struct _mslBufferSizes {
     uint size6;
     uint size7;
     uint size9;
-    uint size15;
     uint size16;
+    uint size17;
 };
 
 struct TileParams {
@@ -116,13 +116,15 @@ struct Triangle {
     metal::float3 v2_;
 };
 typedef metal::uint4 type_12[1];
+struct type_13 {
+    uint inner[12];
+};
 struct Fog {
     float density;
     char _pad1[12];
-    metal::packed_float3 albedo;
-    uint lights_inside;
+    metal::float3 albedo;
 };
-struct type_14 {
+struct type_15 {
     uint inner[74];
 };
 struct Lambert {
@@ -142,7 +144,7 @@ struct PointLight {
     float inner_range;
     char _pad5[8];
 };
-struct type_15 {
+struct type_16 {
     metal::float3 inner[1];
 };
 struct Frame {
@@ -152,16 +154,16 @@ struct Frame {
     uint slot;
     char _pad4[8];
     metal::float3 sum;
-    type_15 dirs;
-    type_15 weights;
+    type_16 dirs;
+    type_16 weights;
     uint count;
     uint next;
     char _pad9[8];
 };
-struct type_16 {
+struct type_17 {
     Frame inner[3];
 };
-typedef metal::atomic_uint type_19[1];
+typedef metal::atomic_uint type_20[1];
 constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint NO_HIT = 4294967295u;
@@ -180,12 +182,20 @@ constant float GAMMA_1_ = 0.00000005960465;
 constant float GAMMA_6_ = 0.0000003576281;
 constant float GAMMA_4_ = 0.00000023841864;
 constant uint RAY_SHADOW = 2u;
+constant uint SCRATCH_ABSORB = 5u;
+constant uint SCRATCH_ABSORB_T = 6u;
+constant bool HAS_ABSORB = true;
+constant uint SCRATCH_DEPTH = 7u;
+constant uint SCRATCH_NET = 8u;
+constant uint SCRATCH_DENSITY_MAX = 9u;
 constant uint BLAS_STACK = 64u;
 constant uint TLAS_STACK = 10u;
 constant bool HAS_SECONDARY_RAYS = true;
 constant bool HAS_BACKGROUND = false;
+constant uint SCRATCH_MEDIUM = 10u;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
 constant float LIGHT_ERROR = 0.00000047683716;
+constant bool HAS_ANY_HIT = true;
 constant float INV_PI = 0.31830987;
 constant uint FLAG_MEDIUM = 4u;
 constant float PI = 3.1415927;
@@ -626,15 +636,57 @@ Fog load_Fog(
     uint _e11 = params[offset_2 + 4u];
     uint _e17 = params[offset_2 + 5u];
     uint _e23 = params[offset_2 + 6u];
-    uint _e30 = params[offset_2 + 7u];
-    return Fog {as_type<float>(_e5), {}, metal::float3(as_type<float>(_e11), as_type<float>(_e17), as_type<float>(_e23)), _e30};
+    return Fog {as_type<float>(_e5), {}, metal::float3(as_type<float>(_e11), as_type<float>(_e17), as_type<float>(_e23))};
+}
+
+bool is_finite_f32_(
+    float x_1
+) {
+    return (as_type<uint>(x_1) & 2147483647u) < 2139095040u;
+}
+
+void absorb_query(
+    float density,
+    thread type_13& scratch
+) {
+    float sigma = {};
+    if (!(HAS_ABSORB)) {
+        return;
+    }
+    uint side = scratch.inner[metal::min(SCRATCH_ABSORB, 11u)];
+    if (side == 0u) {
+        return;
+    }
+    sigma = 0.0;
+    bool _e13 = is_finite_f32_(density);
+    if (_e13 && (density > 0.0)) {
+        sigma = density;
+    }
+    uint _e22 = scratch.inner[metal::min(SCRATCH_ABSORB_T, 11u)];
+    float t_6 = as_type<float>(_e22);
+    float _e24 = sigma;
+    float _e25 = sigma;
+    float s_6 = (side == 2u) ? -(_e25) : _e24;
+    uint _e35 = scratch.inner[metal::min(SCRATCH_DEPTH, 11u)];
+    float depth_2 = as_type<float>(_e35) - (s_6 * t_6);
+    scratch.inner[metal::min(SCRATCH_DEPTH, 11u)] = as_type<uint>(depth_2);
+    uint _e50 = scratch.inner[metal::min(SCRATCH_NET, 11u)];
+    float net = as_type<float>(_e50) + s_6;
+    scratch.inner[metal::min(SCRATCH_NET, 11u)] = as_type<uint>(net);
+    uint _e64 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 11u)];
+    float _e66 = sigma;
+    float most = metal::max(as_type<float>(_e64), _e66);
+    scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 11u)] = as_type<uint>(most);
+    return;
 }
 
 bool fog_any_hit(
     Fog m,
     Ray ray_3,
-    Hit hit_1
+    Hit hit_1,
+    thread type_13& scratch
 ) {
+    absorb_query(m.density, scratch);
     return ray_3.kind != RAY_SHADOW;
 }
 
@@ -644,10 +696,11 @@ bool dispatch_any_hit(
     Ray ray_4,
     Hit hit_2,
     device type_4 const& params,
+    thread type_13& scratch,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Fog _e3 = load_Fog(offset_3, params, _buffer_sizes);
-    bool _e4 = fog_any_hit(_e3, ray_4, hit_2);
+    bool _e4 = fog_any_hit(_e3, ray_4, hit_2, scratch);
     return _e4;
 }
 
@@ -660,14 +713,20 @@ bool accept(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
+    thread type_13& scratch,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if ((inst_4.flags & FLAG_ANY_HIT) != 0u) {
         float shaded = hit_error;
         Hit _e10 = finish_hit(ray_5, c_1, instances, triangles, hit_error, attributes, _buffer_sizes);
         hit_error = shaded;
-        bool _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10, params, _buffer_sizes);
-        return _e14;
+        if (ray_5.kind == RAY_SHADOW) {
+            scratch.inner[metal::min(SCRATCH_ABSORB, 11u)] = _e10.front_face ? 1u : 2u;
+            scratch.inner[metal::min(SCRATCH_ABSORB_T, 11u)] = as_type<uint>(c_1.t * metal::length(ray_5.dir));
+        }
+        bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10, params, scratch, _buffer_sizes);
+        scratch.inner[metal::min(SCRATCH_ABSORB, 11u)] = 0u;
+        return _e36;
     }
     return true;
 }
@@ -741,7 +800,7 @@ metal::float2 children_entry(
 metal::uint2 pop(
     uint base,
     uint sp,
-    thread type_14& traversal_stack
+    thread type_15& traversal_stack
 ) {
     if (sp == 0u) {
         return metal::uint2(NO_HIT, 0u);
@@ -764,7 +823,8 @@ Candidate intersect_mesh(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Candidate best = {};
@@ -814,7 +874,7 @@ Candidate intersect_mesh(
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     Candidate c_5 = Candidate {_e46.x, slot_2, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e57 = accept(inst_5, world_ray, c_5, params, instances, triangles, hit_error, attributes, _buffer_sizes);
+                    bool _e57 = accept(inst_5, world_ray, c_5, params, instances, triangles, hit_error, attributes, scratch, _buffer_sizes);
                     if (_e57) {
                         best = c_5;
                         if (shadow) {
@@ -887,7 +947,8 @@ Candidate intersect_object(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray r_2 = {};
@@ -897,7 +958,7 @@ Candidate intersect_object(
     r_2.tmax = best_1.t;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
@@ -914,7 +975,8 @@ uint medium_at(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint inside = {};
@@ -951,7 +1013,7 @@ uint medium_at(
         if (slot_4 != exclude) {
             uint _e41 = F32_INF;
             Candidate _e43 = no_candidate(as_type<float>(_e41));
-            Candidate _e45 = intersect_object(slot_4, probe, _e43, false, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
+            Candidate _e45 = intersect_object(slot_4, probe, _e43, false, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, _buffer_sizes);
             float _e50 = nearest;
             if ((_e45.slot != NO_HIT) && (_e45.t < _e50)) {
                 Hit _e53 = finish_hit(probe, _e45, instances, triangles, hit_error, attributes, _buffer_sizes);
@@ -984,7 +1046,8 @@ Candidate intersect_scene(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1027,7 +1090,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_9, _e55, shadow_2, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_9, _e55, shadow_2, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1106,6 +1169,14 @@ metal::float3 miss(
     return _e9;
 }
 
+void shading_medium(
+    uint medium,
+    thread type_13& scratch
+) {
+    scratch.inner[metal::min(SCRATCH_MEDIUM, 11u)] = medium;
+    return;
+}
+
 metal::float3 fog_shade(
     Fog m_1,
     Ray ray_12,
@@ -1159,15 +1230,15 @@ PointLight load_PointLight(
 }
 
 metal::float3 step_toward(
-    metal::float3 x_1,
+    metal::float3 x_2,
     metal::float3 s
 ) {
-    metal::uint3 bits_1 = as_type<metal::uint3>(x_1);
-    metal::bool3 up_1 = (metal::sign(x_1) * metal::sign(s)) > metal::float3(0.0);
+    metal::uint3 bits_1 = as_type<metal::uint3>(x_2);
+    metal::bool3 up_1 = (metal::sign(x_2) * metal::sign(s)) > metal::float3(0.0);
     metal::float3 stepped = as_type<metal::float3>(metal::select(bits_1 - metal::uint3(1u), bits_1 + metal::uint3(1u), up_1));
     metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s > metal::float3(0.0));
-    metal::float3 moved = metal::select(stepped, from_zero, x_1 == metal::float3(0.0));
-    return metal::select(x_1, moved, !((s == metal::float3(0.0))));
+    metal::float3 moved = metal::select(stepped, from_zero, x_2 == metal::float3(0.0));
+    return metal::select(x_2, moved, !((s == metal::float3(0.0))));
 }
 
 metal::float3 offset_origin(
@@ -1216,6 +1287,60 @@ Ray shadow_ray(
     return Ray {_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u};
 }
 
+float shadow_transmittance(
+    Ray ray_14,
+    uint medium_1,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread float& hit_error,
+    device type_12 const& attributes,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float depth = {};
+    scratch.inner[metal::min(SCRATCH_ABSORB, 11u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_DEPTH, 11u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_NET, 11u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 11u)] = 0u;
+    if (HAS_MEDIA && HAS_ANY_HIT) {
+        if (medium_1 != 0u) {
+            GpuInstance inst_8 = instances[medium_1 - 1u];
+            if ((inst_8.flags & FLAG_ANY_HIT) != 0u) {
+                Hit start = Hit {ray_14.origin, 0.0, -(ray_14.dir), -(ray_14.dir), metal::float2(0.0), true, {}, inst_8.object, 0u};
+                scratch.inner[metal::min(SCRATCH_ABSORB, 11u)] = 1u;
+                scratch.inner[metal::min(SCRATCH_ABSORB_T, 11u)] = 0u;
+                bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start, params, scratch, _buffer_sizes);
+                scratch.inner[metal::min(SCRATCH_ABSORB, 11u)] = 0u;
+            }
+        }
+    }
+    Candidate _e75 = intersect_scene(ray_14, true, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+    if (_e75.slot != NO_HIT) {
+        return 0.0;
+    }
+    uint _e85 = scratch.inner[metal::min(SCRATCH_DEPTH, 11u)];
+    depth = as_type<float>(_e85);
+    uint _e93 = scratch.inner[metal::min(SCRATCH_NET, 11u)];
+    float net_1 = as_type<float>(_e93);
+    uint _e101 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 11u)];
+    if (net_1 > (0.000001 * as_type<float>(_e101))) {
+        uint _e107 = F32_INF;
+        if (ray_14.tmax == as_type<float>(_e107)) {
+            return 0.0;
+        }
+        float _e111 = depth;
+        depth = _e111 + (net_1 * (ray_14.tmax * metal::length(ray_14.dir)));
+    }
+    float _e118 = depth;
+    return metal::exp(-(metal::max(_e118, 0.0)));
+}
+
 float shadow_query(
     metal::float3 position_1,
     metal::float3 normal_1,
@@ -1229,13 +1354,15 @@ float shadow_query(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
-    Candidate _e6 = intersect_scene(_e4, true, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
-    return (_e6.slot != NO_HIT) ? 0.0 : 1.0;
+    uint _e10 = scratch.inner[metal::min(SCRATCH_MEDIUM, 11u)];
+    float _e11 = shadow_transmittance(_e4, _e10, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+    return _e11;
 }
 
 LightSample point_light(
@@ -1250,7 +1377,8 @@ LightSample point_light(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1263,7 +1391,7 @@ LightSample point_light(
         float _e19 = strength;
         strength = _e19 * (1.0 - metal::smoothstep(l.inner_range, l.range, dist_2));
     }
-    float _e26 = shadow_query(position_2, normal_2, dir_6, dist_2, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    float _e26 = shadow_query(position_2, normal_2, dir_6, dist_2, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
     float _e28 = strength;
     return LightSample {dir_6, dist_2, (l.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
 }
@@ -1281,12 +1409,13 @@ LightSample dispatch_light(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PointLight _e3 = load_PointLight(offset_7, params, _buffer_sizes);
-    LightSample _e4 = point_light(_e3, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e4 = point_light(_e3, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
     return _e4;
 }
 
@@ -1302,7 +1431,8 @@ LightSample sample_light_query(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1313,13 +1443,13 @@ LightSample sample_light_query(
     uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
     uint _e22 = params[entry];
     uint _e27 = params[entry + 1u];
-    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
     return _e28;
 }
 
 metal::float3 lambert_shade(
     Lambert m_2,
-    Ray ray_14,
+    Ray ray_15,
     Hit hit_5,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1329,13 +1459,14 @@ metal::float3 lambert_shade(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 color = {};
     uint i_2 = {};
-    metal::float3 _e3 = shading_normal(ray_14, hit_5);
+    metal::float3 _e3 = shading_normal(ray_15, hit_5);
     color = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
     i_2 = 0u;
@@ -1354,7 +1485,7 @@ metal::float3 lambert_shade(
             break;
         }
         uint _e12 = i_2;
-        LightSample _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+        LightSample _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
         metal::float3 _e16 = color;
         color = _e16 + (((m_2.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
     }
@@ -1365,7 +1496,7 @@ metal::float3 lambert_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_8,
-    Ray ray_15,
+    Ray ray_16,
     Hit hit_6,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
@@ -1376,19 +1507,20 @@ metal::float3 dispatch_closest_hit(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     switch(type_id_4) {
         case 0u: {
             Fog _e5 = load_Fog(offset_8, params, _buffer_sizes);
-            metal::float3 _e6 = fog_shade(_e5, ray_15, hit_6, secondary_1);
+            metal::float3 _e6 = fog_shade(_e5, ray_16, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_8, params, _buffer_sizes);
-            metal::float3 _e8 = lambert_shade(_e7, ray_15, hit_6, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e8 = lambert_shade(_e7, ray_16, hit_6, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
             return _e8;
         }
         default: {
@@ -1399,7 +1531,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_16,
+    Ray ray_17,
     Candidate c_2,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1409,20 +1541,16 @@ metal::float3 shade_direct(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    GpuInstance inst_8 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_16, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
-    return _e11;
-}
-
-bool is_finite_f32_(
-    float x_2
-) {
-    return (as_type<uint>(x_2) & 2147483647u) < 2139095040u;
+    GpuInstance inst_9 = instances[c_2.slot];
+    Hit _e6 = finish_hit(ray_17, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
+    shading_medium(ray_17.medium, scratch);
+    metal::float3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_17, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+    return _e12;
 }
 
 metal::float3 fog_inscatter(
@@ -1441,14 +1569,15 @@ metal::float3 fog_inscatter(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float s_1 = {};
-    float sigma = m_3.density;
-    bool tiny_1 = (sigma * d_1) < 0.001;
-    LightSample _e12 = sample_light_query(i_3, o, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    float sigma_1 = m_3.density;
+    bool tiny_1 = (sigma_1 * d_1) < 0.001;
+    LightSample _e12 = sample_light_query(i_3, o, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
     metal::float3 c_6 = _e12.dir * metal::float3(_e12.dist);
     float delta = metal::dot(c_6, dir_2);
     float h_2 = metal::length(c_6 - (dir_2 * metal::float3(delta)));
@@ -1459,7 +1588,7 @@ metal::float3 fog_inscatter(
     float tb = (d_1 == as_type<float>(_e34)) ? (0.5 * PI) : metal::atan2(d_1 - delta, h_2);
     float w_3 = equi ? 0.5 : 0.0;
     metal::float2 _e41 = rand2_next(rng_state);
-    s_1 = -(metal::log(1.0 - (_e41.y * (1.0 - trans)))) / sigma;
+    s_1 = -(metal::log(1.0 - (_e41.y * (1.0 - trans)))) / sigma_1;
     if (tiny_1) {
         s_1 = _e41.y * d_1;
     }
@@ -1469,20 +1598,19 @@ metal::float3 fog_inscatter(
     float _e61 = s_1;
     s_1 = metal::min(metal::max(_e61, 0.0), d_1);
     float _e66 = s_1;
-    float e_2 = metal::exp(-(sigma) * _e66);
-    float p_free = tiny_1 ? (1.0 / d_1) : ((sigma * e_2) / (1.0 - trans));
+    float e_2 = metal::exp(-(sigma_1) * _e66);
+    float p_free = tiny_1 ? (1.0 / d_1) : ((sigma_1 * e_2) / (1.0 - trans));
     float _e76 = s_1;
     float r_4 = _e76 - delta;
     float pdf = ((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_2) / ((tb - ta) * ((h_2 * h_2) + (r_4 * r_4)))) : 0.0);
     float _e91 = s_1;
-    LightSample _e97 = sample_light_query(i_3, o + (dir_2 * metal::float3(_e91)), metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
-    float att = (m_3.lights_inside == 1u) ? metal::exp(-(sigma) * _e97.dist) : 1.0;
-    return _e97.radiance * metal::float3(((att * sigma) * e_2) / pdf);
+    LightSample _e97 = sample_light_query(i_3, o + (dir_2 * metal::float3(_e91)), metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+    return _e97.radiance * metal::float3((sigma_1 * e_2) / pdf);
 }
 
 metal::float3 fog_medium(
     Fog m_4,
-    Ray ray_17,
+    Ray ray_18,
     float t,
     metal::float3 radiance,
     constant FrameUniforms& frame,
@@ -1494,13 +1622,14 @@ metal::float3 fog_medium(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 light = {};
     uint i_4 = {};
-    float len = metal::length(ray_17.dir);
+    float len = metal::length(ray_18.dir);
     if (!((m_4.density > 0.0)) || !((len > 0.0))) {
         return radiance;
     }
@@ -1525,7 +1654,7 @@ metal::float3 fog_medium(
         }
         metal::float3 _e27 = light;
         uint _e28 = i_4;
-        metal::float3 _e33 = fog_inscatter(m_4, _e28, ray_17.origin, ray_17.dir / metal::float3(len), d_5, trans_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e33 = fog_inscatter(m_4, _e28, ray_18.origin, ray_18.dir / metal::float3(len), d_5, trans_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
         light = _e27 + _e33;
     }
     metal::float3 _e46 = light;
@@ -1535,7 +1664,7 @@ metal::float3 fog_medium(
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_9,
-    Ray ray_18,
+    Ray ray_19,
     float t_1,
     metal::float3 radiance_1,
     constant FrameUniforms& frame,
@@ -1547,17 +1676,18 @@ metal::float3 dispatch_medium(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Fog _e4 = load_Fog(offset_9, params, _buffer_sizes);
-    metal::float3 _e5 = fog_medium(_e4, ray_18, t_1, radiance_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e5 = fog_medium(_e4, ray_19, t_1, radiance_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
     return _e5;
 }
 
 metal::float3 through_medium(
-    Ray ray_19,
+    Ray ray_20,
     float t_2,
     metal::float3 radiance_2,
     constant FrameUniforms& frame,
@@ -1569,29 +1699,31 @@ metal::float3 through_medium(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (!(HAS_MEDIA)) {
         return radiance_2;
     }
-    if (ray_19.medium == 0u) {
+    if (ray_20.medium == 0u) {
         return radiance_2;
     }
-    GpuInstance inst_9 = instances[ray_19.medium - 1u];
-    if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
+    GpuInstance inst_10 = instances[ray_20.medium - 1u];
+    if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_2;
     }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_19, t_2, radiance_2, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
-    return _e21;
+    shading_medium(ray_20.medium, scratch);
+    metal::float3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_20, t_2, radiance_2, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+    return _e22;
 }
 
 void rt_spawn(
     metal::float3 dir_3,
     metal::float3 weight,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count
 ) {
     uint _e3 = spawn_count;
@@ -1604,29 +1736,29 @@ void rt_spawn(
 
 void fog_rays(
     Fog m_5,
-    Ray ray_20,
+    Ray ray_21,
     Hit hit_7,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count
 ) {
-    rt_spawn(ray_20.dir, metal::float3(1.0), spawn_dirs, spawn_weights, spawn_count);
+    rt_spawn(ray_21.dir, metal::float3(1.0), spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_10,
-    Ray ray_21,
+    Ray ray_22,
     Hit hit_8,
     device type_4 const& params,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Fog _e3 = load_Fog(offset_10, params, _buffer_sizes);
-    fog_rays(_e3, ray_21, hit_8, spawn_dirs, spawn_weights, spawn_count);
+    fog_rays(_e3, ray_22, hit_8, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
@@ -1668,18 +1800,19 @@ metal::float3 trace(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 radiance_3 = {};
     float t_3 = {};
-    type_16 stack = {};
-    uint depth = {};
-    Ray ray_22 = {};
+    type_17 stack = {};
+    uint depth_1 = {};
+    Ray ray_23 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -1695,11 +1828,11 @@ metal::float3 trace(
     Hit hit_10 = {};
     Frame f = {};
     uint i_5 = {};
-    uint medium = {};
+    uint medium_2 = {};
     bool found = {};
     uint k_1 = {};
     if (!(HAS_SECONDARY_RAYS)) {
-        Candidate _e4 = intersect_scene(camera_ray, false, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+        Candidate _e4 = intersect_scene(camera_ray, false, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
         radiance_3 = metal::float3(0.0);
         uint _e9 = F32_INF;
         t_3 = as_type<float>(_e9);
@@ -1708,18 +1841,18 @@ metal::float3 trace(
             metal::float3 _e17 = miss(camera_ray, frame);
             radiance_3 = _e17;
         } else {
-            metal::float3 _e18 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e18 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
             radiance_3 = _e18;
             t_3 = _e4.t;
         }
         float _e20 = t_3;
         metal::float3 _e21 = radiance_3;
-        metal::float3 _e22 = through_medium(camera_ray, _e20, _e21, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e22 = through_medium(camera_ray, _e20, _e21, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
         return _e22;
     }
-    stack = type_16 {};
-    depth = 0u;
-    ray_22 = camera_ray;
+    stack = type_17 {};
+    depth_1 = 0u;
+    ray_23 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1738,10 +1871,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_22;
-            Candidate _e69 = intersect_scene(_e67, false, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+            Ray _e67 = ray_23;
+            Candidate _e69 = intersect_scene(_e67, false, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_22;
+            Ray _e70 = ray_23;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -1762,7 +1895,7 @@ metal::float3 trace(
                 radiance_4 = _e93;
             } else {
                 uint _e95 = s_c.slot;
-                GpuInstance inst_10 = instances[_e95];
+                GpuInstance inst_11 = instances[_e95];
                 Hit _e99 = s_hit;
                 hit_10 = _e99;
                 bool _e101 = fresh;
@@ -1781,12 +1914,12 @@ metal::float3 trace(
                 t_4 = _e110;
                 bool _e111 = fresh;
                 uint _e119 = s_ray.depth;
-                uint _e123 = depth;
-                if (((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
+                uint _e123 = depth_1;
+                if (((_e111 && ((inst_11.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
                     spawn_count = 0u;
                     Ray _e131 = s_ray;
                     Hit _e132 = hit_10;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+                    dispatch_secondary_rays(inst_11.material_type, inst_11.material_offset, _e131, _e132, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
                     uint _e134 = spawn_count;
                     uint n_8 = metal::min(metal::min(_e134, 1u), MAX_SPAWN);
                     if (n_8 > 0u) {
@@ -1794,7 +1927,7 @@ metal::float3 trace(
                         Hit _e142 = hit_10;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_8, 0u};
+                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_8, 0u};
                         i_5 = 0u;
                         uint2 loop_bound_7 = uint2(4294967295u);
                         bool loop_init_4 = true;
@@ -1819,124 +1952,126 @@ metal::float3 trace(
                             metal::float3 _e174 = spawn_weights.inner[_e171];
                             f.weights.inner[metal::min(_e167, 0u)] = _e174;
                         }
-                        uint _e178 = depth;
+                        uint _e178 = depth_1;
                         Frame _e182 = f;
                         stack.inner[metal::min(_e178, 2u)] = _e182;
-                        uint _e183 = depth;
-                        depth = _e183 + 1u;
+                        uint _e183 = depth_1;
+                        depth_1 = _e183 + 1u;
                         pushed = true;
                     }
                 }
                 bool _e187 = pushed;
                 if (!(_e187)) {
-                    Ray _e191 = s_ray;
-                    Hit _e192 = hit_10;
-                    metal::float3 _e193 = s_sum;
-                    metal::float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
-                    radiance_4 = _e194;
+                    uint _e190 = s_ray.medium;
+                    shading_medium(_e190, scratch);
+                    Ray _e193 = s_ray;
+                    Hit _e194 = hit_10;
+                    metal::float3 _e195 = s_sum;
+                    metal::float3 _e196 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e193, _e194, _e195, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+                    radiance_4 = _e196;
                 }
             }
-            bool _e195 = pushed;
-            if (!(_e195)) {
-                Ray _e197 = s_ray;
-                float _e198 = t_4;
-                metal::float3 _e199 = radiance_4;
-                metal::float3 _e200 = through_medium(_e197, _e198, _e199, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
-                value = _e200;
+            bool _e197 = pushed;
+            if (!(_e197)) {
+                Ray _e199 = s_ray;
+                float _e200 = t_4;
+                metal::float3 _e201 = radiance_4;
+                metal::float3 _e202 = through_medium(_e199, _e200, _e201, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+                value = _e202;
                 have_value = true;
             }
         }
-        bool _e202 = have_value;
-        if (_e202) {
-            uint _e203 = depth;
-            if (_e203 == 0u) {
-                metal::float3 _e206 = value;
-                return _e206;
+        bool _e204 = have_value;
+        if (_e204) {
+            uint _e205 = depth_1;
+            if (_e205 == 0u) {
+                metal::float3 _e208 = value;
+                return _e208;
             }
-            uint _e207 = depth;
-            uint top = _e207 - 1u;
-            uint _e214 = stack.inner[metal::min(top, 2u)].next;
-            uint child_2 = _e214 - 1u;
-            metal::float3 _e221 = stack.inner[metal::min(top, 2u)].sum;
-            metal::float3 _e229 = stack.inner[metal::min(top, 2u)].weights.inner[metal::min(child_2, 0u)];
-            metal::float3 _e230 = value;
-            stack.inner[metal::min(top, 2u)].sum = _e221 + (_e229 * _e230);
+            uint _e209 = depth_1;
+            uint top = _e209 - 1u;
+            uint _e216 = stack.inner[metal::min(top, 2u)].next;
+            uint child_2 = _e216 - 1u;
+            metal::float3 _e223 = stack.inner[metal::min(top, 2u)].sum;
+            metal::float3 _e231 = stack.inner[metal::min(top, 2u)].weights.inner[metal::min(child_2, 0u)];
+            metal::float3 _e232 = value;
+            stack.inner[metal::min(top, 2u)].sum = _e223 + (_e231 * _e232);
             have_value = false;
         }
-        uint _e234 = depth;
-        uint top_1 = _e234 - 1u;
-        uint _e241 = stack.inner[metal::min(top_1, 2u)].next;
-        uint _e246 = stack.inner[metal::min(top_1, 2u)].count;
-        if (_e241 < _e246) {
+        uint _e236 = depth_1;
+        uint top_1 = _e236 - 1u;
+        uint _e243 = stack.inner[metal::min(top_1, 2u)].next;
+        uint _e248 = stack.inner[metal::min(top_1, 2u)].count;
+        if (_e243 < _e248) {
             uint i_6 = stack.inner[metal::min(top_1, 2u)].next;
             stack.inner[metal::min(top_1, 2u)].next = i_6 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 2u)].ray;
             Hit hit_12 = stack.inner[metal::min(top_1, 2u)].hit;
             metal::float3 dir_7 = stack.inner[metal::min(top_1, 2u)].dirs.inner[metal::min(i_6, 0u)];
-            medium = parent.medium;
+            medium_2 = parent.medium;
             if (metal::dot(dir_7, hit_12.geometric_normal) < 0.0) {
-                uint _e287 = stack.inner[metal::min(top_1, 2u)].slot;
-                medium = _e287 + 1u;
+                uint _e289 = stack.inner[metal::min(top_1, 2u)].slot;
+                medium_2 = _e289 + 1u;
             } else {
-                uint _e295 = stack.inner[metal::min(top_1, 2u)].slot;
-                if (parent.medium == (_e295 + 1u)) {
+                uint _e297 = stack.inner[metal::min(top_1, 2u)].slot;
+                if (parent.medium == (_e297 + 1u)) {
                     found = false;
-                    medium = 0u;
+                    medium_2 = 0u;
                     k_1 = top_1;
                     uint2 loop_bound_8 = uint2(4294967295u);
                     while(true) {
                         if (metal::all(loop_bound_8 == uint2(0u))) { break; }
                         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-                        uint _e303 = k_1;
-                        if (_e303 == 0u) {
+                        uint _e305 = k_1;
+                        if (_e305 == 0u) {
                             break;
                         }
-                        uint _e306 = k_1;
-                        k_1 = _e306 - 1u;
-                        uint _e309 = k_1;
-                        uint _e314 = stack.inner[metal::min(_e309, 2u)].slot;
-                        uint _e319 = stack.inner[metal::min(top_1, 2u)].slot;
-                        uint _e321 = k_1;
-                        uint _e327 = stack.inner[metal::min(_e321, 2u)].ray.medium;
-                        uint _e331 = k_1;
-                        uint _e339 = stack.inner[metal::min(_e331 + 1u, 2u)].ray.medium;
-                        if (((_e314 == _e319) && (_e327 != parent.medium)) && (_e339 == parent.medium)) {
-                            uint _e343 = k_1;
-                            uint _e349 = stack.inner[metal::min(_e343, 2u)].ray.medium;
-                            medium = _e349;
+                        uint _e308 = k_1;
+                        k_1 = _e308 - 1u;
+                        uint _e311 = k_1;
+                        uint _e316 = stack.inner[metal::min(_e311, 2u)].slot;
+                        uint _e321 = stack.inner[metal::min(top_1, 2u)].slot;
+                        uint _e323 = k_1;
+                        uint _e329 = stack.inner[metal::min(_e323, 2u)].ray.medium;
+                        uint _e333 = k_1;
+                        uint _e341 = stack.inner[metal::min(_e333 + 1u, 2u)].ray.medium;
+                        if (((_e316 == _e321) && (_e329 != parent.medium)) && (_e341 == parent.medium)) {
+                            uint _e345 = k_1;
+                            uint _e351 = stack.inner[metal::min(_e345, 2u)].ray.medium;
+                            medium_2 = _e351;
                             found = true;
                             break;
                         }
                     }
-                    bool _e351 = found;
-                    if (!(_e351)) {
-                        float _e357 = stack.inner[metal::min(top_1, 2u)].error;
-                        metal::float3 _e358 = spawn_origin(hit_12, _e357, dir_7);
-                        uint _e363 = stack.inner[metal::min(top_1, 2u)].slot;
-                        uint _e364 = medium_at(_e358, _e363, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
-                        medium = _e364;
+                    bool _e353 = found;
+                    if (!(_e353)) {
+                        float _e359 = stack.inner[metal::min(top_1, 2u)].error;
+                        metal::float3 _e360 = spawn_origin(hit_12, _e359, dir_7);
+                        uint _e365 = stack.inner[metal::min(top_1, 2u)].slot;
+                        uint _e366 = medium_at(_e360, _e365, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, _buffer_sizes);
+                        medium_2 = _e366;
                     }
                 }
             }
-            float _e369 = stack.inner[metal::min(top_1, 2u)].error;
-            metal::float3 _e370 = spawn_origin(hit_12, _e369, dir_7);
-            uint _e373 = F32_INF;
-            uint _e379 = medium;
-            ray_22 = Ray {_e370, 0.0, dir_7, as_type<float>(_e373), parent.depth + 1u, RAY_SECONDARY, _e379};
+            float _e371 = stack.inner[metal::min(top_1, 2u)].error;
+            metal::float3 _e372 = spawn_origin(hit_12, _e371, dir_7);
+            uint _e375 = F32_INF;
+            uint _e381 = medium_2;
+            ray_23 = Ray {_e372, 0.0, dir_7, as_type<float>(_e375), parent.depth + 1u, RAY_SECONDARY, _e381};
         } else {
-            Ray _e385 = stack.inner[metal::min(top_1, 2u)].ray;
-            s_ray = _e385;
-            Hit _e390 = stack.inner[metal::min(top_1, 2u)].hit;
-            s_hit = _e390;
-            float _e395 = stack.inner[metal::min(top_1, 2u)].error;
-            s_error = _e395;
-            uint _e401 = stack.inner[metal::min(top_1, 2u)].slot;
-            s_c.slot = _e401;
-            metal::float3 _e406 = stack.inner[metal::min(top_1, 2u)].sum;
-            s_sum = _e406;
+            Ray _e387 = stack.inner[metal::min(top_1, 2u)].ray;
+            s_ray = _e387;
+            Hit _e392 = stack.inner[metal::min(top_1, 2u)].hit;
+            s_hit = _e392;
+            float _e397 = stack.inner[metal::min(top_1, 2u)].error;
+            s_error = _e397;
+            uint _e403 = stack.inner[metal::min(top_1, 2u)].slot;
+            s_c.slot = _e403;
+            metal::float3 _e408 = stack.inner[metal::min(top_1, 2u)].sum;
+            s_sum = _e408;
             fresh = false;
             waiting = true;
-            depth = top_1;
+            depth_1 = top_1;
         }
     }
     return metal::float3 {};
@@ -1967,19 +2102,20 @@ void render_pixel(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count,
-    device type_19& counters,
+    device type_20& counters,
     device type_10& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 sum = {};
     uint bad = {};
     uint s_2 = {};
-    Ray ray_23 = {};
+    Ray ray_24 = {};
     FrameUniforms frame_5 = frame;
     TileParams tile_2 = tile;
     sum = metal::float3(0.0);
@@ -2004,14 +2140,14 @@ void render_pixel(
         uint sample_3 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
         rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
         Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
-        ray_23 = _e23;
-        ray_23.depth = 0u;
-        ray_23.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_23.origin;
-        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
-        ray_23.medium = _e33;
-        Ray _e34 = ray_23;
-        metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        ray_24 = _e23;
+        ray_24.depth = 0u;
+        ray_24.kind = RAY_CAMERA;
+        metal::float3 _e31 = ray_24.origin;
+        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, _buffer_sizes);
+        ray_24.medium = _e33;
+        Ray _e34 = ray_24;
+        metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {
             metal::float3 _e38 = sum;
@@ -2053,12 +2189,13 @@ void render_invocation(
     device type_10 const& triangles,
     thread float& hit_error,
     device type_12 const& attributes,
-    thread type_14& traversal_stack,
+    thread type_13& scratch,
+    thread type_15& traversal_stack,
     thread uint& ray_count,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count,
-    device type_19& counters,
+    device type_20& counters,
     device type_10& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2067,7 +2204,7 @@ void render_invocation(
     if (metal::any(_e3 >= tile_3.extent)) {
         return;
     }
-    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }
 
@@ -2082,18 +2219,19 @@ struct renderInput {
 , device type_9 const& nodes [[buffer(2)]]
 , device type_10 const& triangles [[buffer(4)]]
 , device type_12 const& attributes [[buffer(5)]]
-, device type_19& counters [[buffer(9)]]
+, device type_20& counters [[buffer(9)]]
 , device type_10& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
     uint rng_state = {};
     uint F32_INF = 2139095040u;
     float hit_error = {};
-    type_14 traversal_stack = {};
+    type_13 scratch = {};
+    type_15 traversal_stack = {};
     uint ray_count = {};
-    type_15 spawn_dirs = {};
-    type_15 spawn_weights = {};
+    type_16 spawn_dirs = {};
+    type_16 spawn_weights = {};
     uint spawn_count = {};
-    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }

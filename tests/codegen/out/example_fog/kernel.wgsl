@@ -101,7 +101,6 @@ struct Triangle {
 struct Fog {
     density: f32,
     albedo: vec3<f32>,
-    lights_inside: u32,
 }
 
 struct Lambert {
@@ -153,12 +152,20 @@ const GAMMA_1_: f32 = 0.00000005960465f;
 const GAMMA_6_: f32 = 0.0000003576281f;
 const GAMMA_4_: f32 = 0.00000023841864f;
 const RAY_SHADOW: u32 = 2u;
+const SCRATCH_ABSORB: u32 = 5u;
+const SCRATCH_ABSORB_T: u32 = 6u;
+const HAS_ABSORB: bool = true;
+const SCRATCH_DEPTH: u32 = 7u;
+const SCRATCH_NET: u32 = 8u;
+const SCRATCH_DENSITY_MAX: u32 = 9u;
 const BLAS_STACK: u32 = 64u;
 const TLAS_STACK: u32 = 10u;
 const HAS_SECONDARY_RAYS: bool = true;
 const HAS_BACKGROUND: bool = false;
+const SCRATCH_MEDIUM: u32 = 10u;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
+const HAS_ANY_HIT: bool = true;
 const INV_PI: f32 = 0.31830987f;
 const FLAG_MEDIUM: u32 = 4u;
 const PI: f32 = 3.1415927f;
@@ -185,6 +192,7 @@ var<storage> triangles: array<vec4<f32>>;
 var<private> hit_error: f32;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
+var<private> scratch: array<u32, 12>;
 var<private> traversal_stack: array<u32, 74>;
 var<private> ray_count: u32;
 var<private> spawn_dirs: array<vec3<f32>, 1>;
@@ -510,11 +518,48 @@ fn load_Fog(offset_2: u32) -> Fog {
     let _e11 = params[(offset_2 + 4u)];
     let _e17 = params[(offset_2 + 5u)];
     let _e23 = params[(offset_2 + 6u)];
-    let _e30 = params[(offset_2 + 7u)];
-    return Fog(bitcast<f32>(_e5), vec3<f32>(bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30);
+    return Fog(bitcast<f32>(_e5), vec3<f32>(bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)));
+}
+
+fn is_finite_f32_(x_1: f32) -> bool {
+    return ((bitcast<u32>(x_1) & 2147483647u) < 2139095040u);
+}
+
+fn absorb_query(density: f32) {
+    var sigma: f32;
+
+    if !(HAS_ABSORB) {
+        return;
+    }
+    let side = scratch[min(SCRATCH_ABSORB, 11u)];
+    if (side == 0u) {
+        return;
+    }
+    sigma = 0f;
+    let _e13 = is_finite_f32_(density);
+    if (_e13 && (density > 0f)) {
+        sigma = density;
+    }
+    let _e22 = scratch[min(SCRATCH_ABSORB_T, 11u)];
+    let t_6 = bitcast<f32>(_e22);
+    let _e24 = sigma;
+    let _e25 = sigma;
+    let s_6 = select(_e24, -(_e25), (side == 2u));
+    let _e35 = scratch[min(SCRATCH_DEPTH, 11u)];
+    let depth_2 = (bitcast<f32>(_e35) - (s_6 * t_6));
+    scratch[min(SCRATCH_DEPTH, 11u)] = bitcast<u32>(depth_2);
+    let _e50 = scratch[min(SCRATCH_NET, 11u)];
+    let net = (bitcast<f32>(_e50) + s_6);
+    scratch[min(SCRATCH_NET, 11u)] = bitcast<u32>(net);
+    let _e64 = scratch[min(SCRATCH_DENSITY_MAX, 11u)];
+    let _e66 = sigma;
+    let most = max(bitcast<f32>(_e64), _e66);
+    scratch[min(SCRATCH_DENSITY_MAX, 11u)] = bitcast<u32>(most);
+    return;
 }
 
 fn fog_any_hit(m: Fog, ray_3: Ray, hit_1: Hit) -> bool {
+    absorb_query(m.density);
     return (ray_3.kind != RAY_SHADOW);
 }
 
@@ -529,8 +574,13 @@ fn accept(inst_4: GpuInstance, ray_5: Ray, c_1: Candidate) -> bool {
         let shaded = hit_error;
         let _e10 = finish_hit(ray_5, c_1);
         hit_error = shaded;
-        let _e14 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
-        return _e14;
+        if (ray_5.kind == RAY_SHADOW) {
+            scratch[min(SCRATCH_ABSORB, 11u)] = select(2u, 1u, _e10.front_face);
+            scratch[min(SCRATCH_ABSORB_T, 11u)] = bitcast<u32>((c_1.t * length(ray_5.dir)));
+        }
+        let _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
+        scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
+        return _e36;
     }
     return true;
 }
@@ -863,6 +913,11 @@ fn miss(ray_11: Ray) -> vec3<f32> {
     return _e9;
 }
 
+fn shading_medium(medium: u32) {
+    scratch[min(SCRATCH_MEDIUM, 11u)] = medium;
+    return;
+}
+
 fn fog_shade(m_1: Fog, ray_12: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
     return secondary;
 }
@@ -897,13 +952,13 @@ fn load_PointLight(offset_6: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn step_toward(x_1: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
-    let bits_1 = bitcast<vec3<u32>>(x_1);
-    let up_1 = ((sign(x_1) * sign(s)) > vec3(0f));
+fn step_toward(x_2: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
+    let bits_1 = bitcast<vec3<u32>>(x_2);
+    let up_1 = ((sign(x_2) * sign(s)) > vec3(0f));
     let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
     let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s > vec3(0f)));
-    let moved = select(stepped, from_zero, (x_1 == vec3(0f)));
-    return select(x_1, moved, !((s == vec3(0f))));
+    let moved = select(stepped, from_zero, (x_2 == vec3(0f)));
+    return select(x_2, moved, !((s == vec3(0f))));
 }
 
 fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
@@ -942,10 +997,51 @@ fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32)
     return Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
 }
 
+fn shadow_transmittance(ray_14: Ray, medium_1: u32) -> f32 {
+    var depth: f32;
+
+    scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
+    scratch[min(SCRATCH_DEPTH, 11u)] = 0u;
+    scratch[min(SCRATCH_NET, 11u)] = 0u;
+    scratch[min(SCRATCH_DENSITY_MAX, 11u)] = 0u;
+    if (HAS_MEDIA && HAS_ANY_HIT) {
+        if (medium_1 != 0u) {
+            let inst_8 = instances[(medium_1 - 1u)];
+            if ((inst_8.flags & FLAG_ANY_HIT) != 0u) {
+                let start = Hit(ray_14.origin, 0f, -(ray_14.dir), -(ray_14.dir), vec2(0f), true, inst_8.object, 0u);
+                scratch[min(SCRATCH_ABSORB, 11u)] = 1u;
+                scratch[min(SCRATCH_ABSORB_T, 11u)] = 0u;
+                let _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start);
+                scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
+            }
+        }
+    }
+    let _e75 = intersect_scene(ray_14, true);
+    if (_e75.slot != NO_HIT) {
+        return 0f;
+    }
+    let _e85 = scratch[min(SCRATCH_DEPTH, 11u)];
+    depth = bitcast<f32>(_e85);
+    let _e93 = scratch[min(SCRATCH_NET, 11u)];
+    let net_1 = bitcast<f32>(_e93);
+    let _e101 = scratch[min(SCRATCH_DENSITY_MAX, 11u)];
+    if (net_1 > (0.000001f * bitcast<f32>(_e101))) {
+        let _e107 = F32_INF;
+        if (ray_14.tmax == bitcast<f32>(_e107)) {
+            return 0f;
+        }
+        let _e111 = depth;
+        depth = (_e111 + (net_1 * (ray_14.tmax * length(ray_14.dir))));
+    }
+    let _e118 = depth;
+    return exp(-(max(_e118, 0f)));
+}
+
 fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
     let _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    let _e6 = intersect_scene(_e4, true);
-    return select(1f, 0f, (_e6.slot != NO_HIT));
+    let _e10 = scratch[min(SCRATCH_MEDIUM, 11u)];
+    let _e11 = shadow_transmittance(_e4, _e10);
+    return _e11;
 }
 
 fn point_light(l: PointLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
@@ -982,11 +1078,11 @@ fn sample_light_query(i_1: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> L
     return _e28;
 }
 
-fn lambert_shade(m_2: Lambert, ray_14: Ray, hit_5: Hit) -> vec3<f32> {
+fn lambert_shade(m_2: Lambert, ray_15: Ray, hit_5: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_2: u32;
 
-    let _e3 = shading_normal(ray_14, hit_5);
+    let _e3 = shading_normal(ray_15, hit_5);
     color = vec3(0f);
     let _e8 = light_count_query();
     i_2 = 0u;
@@ -1008,16 +1104,16 @@ fn lambert_shade(m_2: Lambert, ray_14: Ray, hit_5: Hit) -> vec3<f32> {
     return _e33;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_15: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_16: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e5 = load_Fog(offset_8);
-            let _e6 = fog_shade(_e5, ray_15, hit_6, secondary_1);
+            let _e6 = fog_shade(_e5, ray_16, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             let _e7 = load_Lambert(offset_8);
-            let _e8 = lambert_shade(_e7, ray_15, hit_6);
+            let _e8 = lambert_shade(_e7, ray_16, hit_6);
             return _e8;
         }
         default: {
@@ -1026,22 +1122,19 @@ fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_15: Ray, hit_6: Hit, 
     return vec3<f32>();
 }
 
-fn shade_direct(ray_16: Ray, c_2: Candidate) -> vec3<f32> {
-    let inst_8 = instances[c_2.slot];
-    let _e6 = finish_hit(ray_16, c_2);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_16, _e6, vec3(0f));
-    return _e11;
-}
-
-fn is_finite_f32_(x_2: f32) -> bool {
-    return ((bitcast<u32>(x_2) & 2147483647u) < 2139095040u);
+fn shade_direct(ray_17: Ray, c_2: Candidate) -> vec3<f32> {
+    let inst_9 = instances[c_2.slot];
+    let _e6 = finish_hit(ray_17, c_2);
+    shading_medium(ray_17.medium);
+    let _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_17, _e6, vec3(0f));
+    return _e12;
 }
 
 fn fog_inscatter(m_3: Fog, i_3: u32, o: vec3<f32>, dir_2: vec3<f32>, d_1: f32, trans: f32) -> vec3<f32> {
     var s_1: f32;
 
-    let sigma = m_3.density;
-    let tiny_1 = ((sigma * d_1) < 0.001f);
+    let sigma_1 = m_3.density;
+    let tiny_1 = ((sigma_1 * d_1) < 0.001f);
     let _e12 = sample_light_query(i_3, o, vec3(0f));
     let c_6 = (_e12.dir * vec3(_e12.dist));
     let delta = dot(c_6, dir_2);
@@ -1053,7 +1146,7 @@ fn fog_inscatter(m_3: Fog, i_3: u32, o: vec3<f32>, dir_2: vec3<f32>, d_1: f32, t
     let tb = select(atan2((d_1 - delta), h_2), (0.5f * PI), (d_1 == bitcast<f32>(_e34)));
     let w_3 = select(0f, 0.5f, equi);
     let _e41 = rand2_next();
-    s_1 = (-(log((1f - (_e41.y * (1f - trans))))) / sigma);
+    s_1 = (-(log((1f - (_e41.y * (1f - trans))))) / sigma_1);
     if tiny_1 {
         s_1 = (_e41.y * d_1);
     }
@@ -1063,22 +1156,21 @@ fn fog_inscatter(m_3: Fog, i_3: u32, o: vec3<f32>, dir_2: vec3<f32>, d_1: f32, t
     let _e61 = s_1;
     s_1 = min(max(_e61, 0f), d_1);
     let _e66 = s_1;
-    let e_2 = exp((-(sigma) * _e66));
-    let p_free = select(((sigma * e_2) / (1f - trans)), (1f / d_1), tiny_1);
+    let e_2 = exp((-(sigma_1) * _e66));
+    let p_free = select(((sigma_1 * e_2) / (1f - trans)), (1f / d_1), tiny_1);
     let _e76 = s_1;
     let r_4 = (_e76 - delta);
     let pdf = (((1f - w_3) * p_free) + select(0f, ((w_3 * h_2) / ((tb - ta) * ((h_2 * h_2) + (r_4 * r_4)))), equi));
     let _e91 = s_1;
     let _e97 = sample_light_query(i_3, (o + (dir_2 * vec3(_e91))), vec3(0f));
-    let att = select(1f, exp((-(sigma) * _e97.dist)), (m_3.lights_inside == 1u));
-    return (_e97.radiance * vec3((((att * sigma) * e_2) / pdf)));
+    return (_e97.radiance * vec3(((sigma_1 * e_2) / pdf)));
 }
 
-fn fog_medium(m_4: Fog, ray_17: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn fog_medium(m_4: Fog, ray_18: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     var light: vec3<f32>;
     var i_4: u32;
 
-    let len = length(ray_17.dir);
+    let len = length(ray_18.dir);
     if (!((m_4.density > 0f)) || !((len > 0f))) {
         return radiance;
     }
@@ -1094,7 +1186,7 @@ fn fog_medium(m_4: Fog, ray_17: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
         }
         let _e27 = light;
         let _e28 = i_4;
-        let _e33 = fog_inscatter(m_4, _e28, ray_17.origin, (ray_17.dir / vec3(len)), d_5, trans_1);
+        let _e33 = fog_inscatter(m_4, _e28, ray_18.origin, (ray_18.dir / vec3(len)), d_5, trans_1);
         light = (_e27 + _e33);
         continuing {
             let _e35 = i_4;
@@ -1105,25 +1197,26 @@ fn fog_medium(m_4: Fog, ray_17: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     return ((radiance * vec3(trans_1)) + ((m_4.albedo * vec3((0.25f * INV_PI))) * _e46));
 }
 
-fn dispatch_medium(type_id_5: u32, offset_9: u32, ray_18: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_9: u32, ray_19: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     let _e4 = load_Fog(offset_9);
-    let _e5 = fog_medium(_e4, ray_18, t_1, radiance_1);
+    let _e5 = fog_medium(_e4, ray_19, t_1, radiance_1);
     return _e5;
 }
 
-fn through_medium(ray_19: Ray, t_2: f32, radiance_2: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_20: Ray, t_2: f32, radiance_2: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_2;
     }
-    if (ray_19.medium == 0u) {
+    if (ray_20.medium == 0u) {
         return radiance_2;
     }
-    let inst_9 = instances[(ray_19.medium - 1u)];
-    if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
+    let inst_10 = instances[(ray_20.medium - 1u)];
+    if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_2;
     }
-    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_19, t_2, radiance_2);
-    return _e21;
+    shading_medium(ray_20.medium);
+    let _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_20, t_2, radiance_2);
+    return _e22;
 }
 
 fn rt_spawn(dir_3: vec3<f32>, weight: vec3<f32>) {
@@ -1135,14 +1228,14 @@ fn rt_spawn(dir_3: vec3<f32>, weight: vec3<f32>) {
     }
 }
 
-fn fog_rays(m_5: Fog, ray_20: Ray, hit_7: Hit) {
-    rt_spawn(ray_20.dir, vec3(1f));
+fn fog_rays(m_5: Fog, ray_21: Ray, hit_7: Hit) {
+    rt_spawn(ray_21.dir, vec3(1f));
     return;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_10: u32, ray_21: Ray, hit_8: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_10: u32, ray_22: Ray, hit_8: Hit) {
     let _e3 = load_Fog(offset_10);
-    fog_rays(_e3, ray_21, hit_8);
+    fog_rays(_e3, ray_22, hit_8);
     return;
 }
 
@@ -1169,8 +1262,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var radiance_3: vec3<f32>;
     var t_3: f32;
     var stack: array<Frame, 3>;
-    var depth: u32;
-    var ray_22: Ray;
+    var depth_1: u32;
+    var ray_23: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1186,7 +1279,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var hit_10: Hit;
     var f: Frame;
     var i_5: u32;
-    var medium: u32;
+    var medium_2: u32;
     var found: bool;
     var k_1: u32;
 
@@ -1210,8 +1303,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         return _e22;
     }
     stack = array<Frame, 3>();
-    depth = 0u;
-    ray_22 = camera_ray;
+    depth_1 = 0u;
+    ray_23 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1227,10 +1320,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_22;
+            let _e67 = ray_23;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_22;
+            let _e70 = ray_23;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1251,7 +1344,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 radiance_4 = _e93;
             } else {
                 let _e95 = s_c.slot;
-                let inst_10 = instances[_e95];
+                let inst_11 = instances[_e95];
                 let _e99 = s_hit;
                 hit_10 = _e99;
                 let _e101 = fresh;
@@ -1270,12 +1363,12 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 t_4 = _e110;
                 let _e111 = fresh;
                 let _e119 = s_ray.depth;
-                let _e123 = depth;
-                if (((_e111 && ((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
+                let _e123 = depth_1;
+                if (((_e111 && ((inst_11.flags & FLAG_SECONDARY_RAYS) != 0u)) && (_e119 < MAX_DEPTH)) && (_e123 < STACK_SIZE)) {
                     spawn_count = 0u;
                     let _e131 = s_ray;
                     let _e132 = hit_10;
-                    dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, _e131, _e132);
+                    dispatch_secondary_rays(inst_11.material_type, inst_11.material_offset, _e131, _e132);
                     let _e134 = spawn_count;
                     let n_8 = min(min(_e134, 1u), MAX_SPAWN);
                     if (n_8 > 0u) {
@@ -1303,121 +1396,123 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                                 i_5 = (_e175 + 1u);
                             }
                         }
-                        let _e178 = depth;
+                        let _e178 = depth_1;
                         let _e182 = f;
                         stack[min(_e178, 2u)] = _e182;
-                        let _e183 = depth;
-                        depth = (_e183 + 1u);
+                        let _e183 = depth_1;
+                        depth_1 = (_e183 + 1u);
                         pushed = true;
                     }
                 }
                 let _e187 = pushed;
                 if !(_e187) {
-                    let _e191 = s_ray;
-                    let _e192 = hit_10;
-                    let _e193 = s_sum;
-                    let _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193);
-                    radiance_4 = _e194;
+                    let _e190 = s_ray.medium;
+                    shading_medium(_e190);
+                    let _e193 = s_ray;
+                    let _e194 = hit_10;
+                    let _e195 = s_sum;
+                    let _e196 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e193, _e194, _e195);
+                    radiance_4 = _e196;
                 }
             }
-            let _e195 = pushed;
-            if !(_e195) {
-                let _e197 = s_ray;
-                let _e198 = t_4;
-                let _e199 = radiance_4;
-                let _e200 = through_medium(_e197, _e198, _e199);
-                value = _e200;
+            let _e197 = pushed;
+            if !(_e197) {
+                let _e199 = s_ray;
+                let _e200 = t_4;
+                let _e201 = radiance_4;
+                let _e202 = through_medium(_e199, _e200, _e201);
+                value = _e202;
                 have_value = true;
             }
         }
-        let _e202 = have_value;
-        if _e202 {
-            let _e203 = depth;
-            if (_e203 == 0u) {
-                let _e206 = value;
-                return _e206;
+        let _e204 = have_value;
+        if _e204 {
+            let _e205 = depth_1;
+            if (_e205 == 0u) {
+                let _e208 = value;
+                return _e208;
             }
-            let _e207 = depth;
-            let top = (_e207 - 1u);
-            let _e214 = stack[min(top, 2u)].next;
-            let child_2 = (_e214 - 1u);
-            let _e221 = stack[min(top, 2u)].sum;
-            let _e229 = stack[min(top, 2u)].weights[min(child_2, 0u)];
-            let _e230 = value;
-            stack[min(top, 2u)].sum = (_e221 + (_e229 * _e230));
+            let _e209 = depth_1;
+            let top = (_e209 - 1u);
+            let _e216 = stack[min(top, 2u)].next;
+            let child_2 = (_e216 - 1u);
+            let _e223 = stack[min(top, 2u)].sum;
+            let _e231 = stack[min(top, 2u)].weights[min(child_2, 0u)];
+            let _e232 = value;
+            stack[min(top, 2u)].sum = (_e223 + (_e231 * _e232));
             have_value = false;
         }
-        let _e234 = depth;
-        let top_1 = (_e234 - 1u);
-        let _e241 = stack[min(top_1, 2u)].next;
-        let _e246 = stack[min(top_1, 2u)].count;
-        if (_e241 < _e246) {
+        let _e236 = depth_1;
+        let top_1 = (_e236 - 1u);
+        let _e243 = stack[min(top_1, 2u)].next;
+        let _e248 = stack[min(top_1, 2u)].count;
+        if (_e243 < _e248) {
             let i_6 = stack[min(top_1, 2u)].next;
             stack[min(top_1, 2u)].next = (i_6 + 1u);
             let parent = stack[min(top_1, 2u)].ray;
             let hit_12 = stack[min(top_1, 2u)].hit;
             let dir_7 = stack[min(top_1, 2u)].dirs[min(i_6, 0u)];
-            medium = parent.medium;
+            medium_2 = parent.medium;
             if (dot(dir_7, hit_12.geometric_normal) < 0f) {
-                let _e287 = stack[min(top_1, 2u)].slot;
-                medium = (_e287 + 1u);
+                let _e289 = stack[min(top_1, 2u)].slot;
+                medium_2 = (_e289 + 1u);
             } else {
-                let _e295 = stack[min(top_1, 2u)].slot;
-                if (parent.medium == (_e295 + 1u)) {
+                let _e297 = stack[min(top_1, 2u)].slot;
+                if (parent.medium == (_e297 + 1u)) {
                     found = false;
-                    medium = 0u;
+                    medium_2 = 0u;
                     k_1 = top_1;
                     loop {
-                        let _e303 = k_1;
-                        if (_e303 == 0u) {
+                        let _e305 = k_1;
+                        if (_e305 == 0u) {
                             break;
                         }
-                        let _e306 = k_1;
-                        k_1 = (_e306 - 1u);
-                        let _e309 = k_1;
-                        let _e314 = stack[min(_e309, 2u)].slot;
-                        let _e319 = stack[min(top_1, 2u)].slot;
-                        let _e321 = k_1;
-                        let _e327 = stack[min(_e321, 2u)].ray.medium;
-                        let _e331 = k_1;
-                        let _e339 = stack[min((_e331 + 1u), 2u)].ray.medium;
-                        if (((_e314 == _e319) && (_e327 != parent.medium)) && (_e339 == parent.medium)) {
-                            let _e343 = k_1;
-                            let _e349 = stack[min(_e343, 2u)].ray.medium;
-                            medium = _e349;
+                        let _e308 = k_1;
+                        k_1 = (_e308 - 1u);
+                        let _e311 = k_1;
+                        let _e316 = stack[min(_e311, 2u)].slot;
+                        let _e321 = stack[min(top_1, 2u)].slot;
+                        let _e323 = k_1;
+                        let _e329 = stack[min(_e323, 2u)].ray.medium;
+                        let _e333 = k_1;
+                        let _e341 = stack[min((_e333 + 1u), 2u)].ray.medium;
+                        if (((_e316 == _e321) && (_e329 != parent.medium)) && (_e341 == parent.medium)) {
+                            let _e345 = k_1;
+                            let _e351 = stack[min(_e345, 2u)].ray.medium;
+                            medium_2 = _e351;
                             found = true;
                             break;
                         }
                     }
-                    let _e351 = found;
-                    if !(_e351) {
-                        let _e357 = stack[min(top_1, 2u)].error;
-                        let _e358 = spawn_origin(hit_12, _e357, dir_7);
-                        let _e363 = stack[min(top_1, 2u)].slot;
-                        let _e364 = medium_at(_e358, _e363);
-                        medium = _e364;
+                    let _e353 = found;
+                    if !(_e353) {
+                        let _e359 = stack[min(top_1, 2u)].error;
+                        let _e360 = spawn_origin(hit_12, _e359, dir_7);
+                        let _e365 = stack[min(top_1, 2u)].slot;
+                        let _e366 = medium_at(_e360, _e365);
+                        medium_2 = _e366;
                     }
                 }
             }
-            let _e369 = stack[min(top_1, 2u)].error;
-            let _e370 = spawn_origin(hit_12, _e369, dir_7);
-            let _e373 = F32_INF;
-            let _e379 = medium;
-            ray_22 = Ray(_e370, 0f, dir_7, bitcast<f32>(_e373), (parent.depth + 1u), RAY_SECONDARY, _e379);
+            let _e371 = stack[min(top_1, 2u)].error;
+            let _e372 = spawn_origin(hit_12, _e371, dir_7);
+            let _e375 = F32_INF;
+            let _e381 = medium_2;
+            ray_23 = Ray(_e372, 0f, dir_7, bitcast<f32>(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
         } else {
-            let _e385 = stack[min(top_1, 2u)].ray;
-            s_ray = _e385;
-            let _e390 = stack[min(top_1, 2u)].hit;
-            s_hit = _e390;
-            let _e395 = stack[min(top_1, 2u)].error;
-            s_error = _e395;
-            let _e401 = stack[min(top_1, 2u)].slot;
-            s_c.slot = _e401;
-            let _e406 = stack[min(top_1, 2u)].sum;
-            s_sum = _e406;
+            let _e387 = stack[min(top_1, 2u)].ray;
+            s_ray = _e387;
+            let _e392 = stack[min(top_1, 2u)].hit;
+            s_hit = _e392;
+            let _e397 = stack[min(top_1, 2u)].error;
+            s_error = _e397;
+            let _e403 = stack[min(top_1, 2u)].slot;
+            s_c.slot = _e403;
+            let _e408 = stack[min(top_1, 2u)].sum;
+            s_sum = _e408;
             fresh = false;
             waiting = true;
-            depth = top_1;
+            depth_1 = top_1;
         }
     }
     return vec3<f32>();
@@ -1436,7 +1531,7 @@ fn render_pixel(pixel_3: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s_2: u32;
-    var ray_23: Ray;
+    var ray_24: Ray;
 
     let frame_5 = frame;
     let tile_2 = tile;
@@ -1453,13 +1548,13 @@ fn render_pixel(pixel_3: vec2<u32>) {
         let sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
         rng_seed(pixel_3, sample_3, frame_5.seed);
         let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
-        ray_23 = _e23;
-        ray_23.depth = 0u;
-        ray_23.kind = RAY_CAMERA;
-        let _e31 = ray_23.origin;
+        ray_24 = _e23;
+        ray_24.depth = 0u;
+        ray_24.kind = RAY_CAMERA;
+        let _e31 = ray_24.origin;
         let _e33 = medium_at(_e31, NO_HIT);
-        ray_23.medium = _e33;
-        let _e34 = ray_23;
+        ray_24.medium = _e33;
+        let _e34 = ray_24;
         let _e35 = trace(_e34);
         let _e36 = is_finite_vec3f(_e35);
         if all(_e36) {
