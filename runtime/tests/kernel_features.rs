@@ -264,10 +264,10 @@ fn the_wavefront_model_renders_what_the_megakernel_renders() {
         return;
     };
     // Every feature scene of this suite (any-hit cut-outs and shadows, nested media with a camera
-    // inside, custom geometry walking its BVH), and shadow rays through fog, at 40 x 28 in 16 x 16 tiles. The two models run
-    // the same operations in the same order, so on lavapipe the images are bit-identical; the
-    // tolerance (1e-5 absolute on values of order 1) leaves room for another driver contracting
-    // differently in two kernels.
+    // inside, custom geometry walking its BVH), and shadow rays through fog, at 40 x 28 in 16 x 16
+    // tiles. The two models run the same operations in the same order, so on lavapipe the images
+    // are bit-identical; the tolerance (1e-5 absolute on values of order 1) leaves room for
+    // another driver contracting differently in two kernels.
     for (name, file) in [
         ("cut_out", scene("cut_out").set("SIDE", "40u")),
         ("shadows", scene("shadows").set("SIDE", "40u")),

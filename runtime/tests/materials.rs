@@ -585,8 +585,8 @@ fn fog_around_a_point_light_scatters_the_analytic_amount() {
     assert!(rel < 0.05, "relative RMS error {rel}");
 }
 
-/// What a white Lambert square at z = 0 (normal +z) at `p` receives from a light in direction
-/// `dir` (unit) with `radiance`, through a transmittance `t`: `1/π · radiance · cos θ · t`.
+/// What a white Lambert square at z = 0 (normal +z) sends back from a light in the unit direction
+/// `dir` with `radiance`, through a transmittance `t`: `1/π · radiance · cos θ · t`.
 fn lambert_lit(dir: [f64; 3], radiance: f64, t: f64) -> f64 {
     std::f64::consts::FRAC_1_PI * radiance * dir[2].max(0.0) * t
 }
