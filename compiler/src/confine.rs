@@ -24,16 +24,30 @@
 //! - A path that names no existing file resolves to its candidate in the base folder, whose read
 //!   then fails with the usual "cannot be read" error naming it (nothing outside is revealed:
 //!   only existence inside the candidate location is probed).
+//!
+//! # Assets held in memory
+//!
+//! [`AssetRoots::in_memory`] makes every asset come from a [`MemoryFiles`] set instead of the
+//! disk (the renderer in a web page, whose assets were fetched from URLs or dropped by the user).
+//! The same rules hold, applied to the paths alone: the written path is checked as above, joined
+//! to the base folder and normalised lexically (`a/../` folded), and must then lie inside the base
+//! folder or a root, with no `..` left in front; there are no symlinks to follow. [`read`] reads a
+//! resolved path from wherever the roots say, so the one reader code serves both.
 
 use std::path::{Component, Path, PathBuf};
+use std::sync::Arc;
 
 use std::fmt;
 
+use crate::source::MemoryFiles;
+
 /// The folders besides the referring file's own that assets may be read from (the CLI's
-/// `--asset-root`, repeatable). Roots that do not exist contain nothing.
+/// `--asset-root`, repeatable), and whether they are read from the disk or from files held in
+/// memory ([`AssetRoots::in_memory`]). Roots that do not exist contain nothing.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct AssetRoots {
     roots: Vec<PathBuf>,
+    memory: Option<Arc<MemoryFiles>>,
 }
 
 impl AssetRoots {
@@ -46,7 +60,22 @@ impl AssetRoots {
     pub fn new(roots: impl IntoIterator<Item = PathBuf>) -> AssetRoots {
         AssetRoots {
             roots: roots.into_iter().collect(),
+            memory: None,
         }
+    }
+
+    /// Every asset from `files` rather than the disk (see the [module docs](self)), under the same
+    /// confinement; no extra folder.
+    pub fn in_memory(files: Arc<MemoryFiles>) -> AssetRoots {
+        AssetRoots {
+            roots: Vec::new(),
+            memory: Some(files),
+        }
+    }
+
+    /// The files assets come from when they are held in memory (`None`: the disk).
+    pub fn memory(&self) -> Option<&MemoryFiles> {
+        self.memory.as_deref()
     }
 
     /// The folders, as given.
@@ -122,6 +151,9 @@ pub fn resolve(
     search: Search,
 ) -> Result<PathBuf, PathProblem> {
     check_written(written)?;
+    if let Some(files) = &roots.memory {
+        return resolve_in_memory(files, written, base, roots, search);
+    }
     let base = if base.as_os_str().is_empty() {
         Path::new(".")
     } else {
@@ -151,6 +183,64 @@ pub fn resolve(
                 .chain(roots.roots.iter().cloned())
                 .collect(),
         })
+    }
+}
+
+/// [`resolve`] over files held in memory: lexical, with the same answers (see the module docs).
+fn resolve_in_memory(
+    files: &MemoryFiles,
+    written: &str,
+    base: &Path,
+    roots: &AssetRoots,
+    search: Search,
+) -> Result<PathBuf, PathProblem> {
+    let first = MemoryFiles::normalize(&base.join(written));
+    let mut candidates = vec![first.clone()];
+    if search == Search::BaseThenRoots {
+        candidates.extend(
+            roots
+                .roots
+                .iter()
+                .map(|r| MemoryFiles::normalize(&r.join(written))),
+        );
+    }
+    let found = candidates
+        .into_iter()
+        .find(|c| files.is_file(c))
+        .unwrap_or_else(|| first.clone());
+    let inside = |folder: &Path| {
+        let folder = MemoryFiles::normalize(folder);
+        found.starts_with(&folder)
+            && !found
+                .components()
+                .any(|c| matches!(c, Component::ParentDir | Component::RootDir))
+    };
+    if std::iter::once(base)
+        .chain(roots.roots.iter().map(PathBuf::as_path))
+        .any(inside)
+    {
+        Ok(found)
+    } else {
+        Err(PathProblem::Outside {
+            resolved: found,
+            allowed: std::iter::once(base.to_path_buf())
+                .chain(roots.roots.iter().cloned())
+                .collect(),
+        })
+    }
+}
+
+/// Reads a file [`resolve`] returned, from the disk or from the files in memory, as `roots` say.
+/// A file missing from memory is an [`std::io::ErrorKind::NotFound`] error saying so.
+pub fn read(path: &Path, roots: &AssetRoots) -> std::io::Result<Vec<u8>> {
+    match &roots.memory {
+        Some(files) => files.get(path).map(<[u8]>::to_vec).ok_or_else(|| {
+            std::io::Error::new(
+                std::io::ErrorKind::NotFound,
+                "not among the files given (in memory)",
+            )
+        }),
+        None => std::fs::read(path),
     }
 }
 

@@ -41,7 +41,7 @@ use rtc_compiler::kernel::{
     compile_scene_with, save_registry, CompiledScene, ExecModel, KernelOptions,
 };
 use rtc_compiler::link::LinkOptions;
-use rtc_compiler::sema::hir::{ConstValue, Geometry, MeshAsset, SceneDesc, TextureAsset};
+use rtc_compiler::sema::hir::SceneDesc;
 use rtc_compiler::SourceMap;
 use rtc_runtime::assets::AssetRoots;
 use rtc_runtime::gpu::{AdapterChoice, Gpu, KernelOrigin, KernelReport};
@@ -626,40 +626,7 @@ fn source_files(sources: &SourceMap) -> (BTreeSet<PathBuf>, usize) {
 
 /// Every file a scene loads at render time: meshes, images and glTF models (canonical paths).
 pub fn asset_paths(desc: &SceneDesc) -> BTreeSet<PathBuf> {
-    fn value(v: &ConstValue, out: &mut BTreeSet<PathBuf>) {
-        match v {
-            ConstValue::Mesh(MeshAsset::File { path, .. })
-            | ConstValue::Texture(TextureAsset::File { path, .. }) => {
-                out.insert(canonical(path));
-            }
-            ConstValue::Array(items) => items.iter().for_each(|i| value(i, out)),
-            ConstValue::Struct { fields, .. } => fields.iter().for_each(|f| value(f, out)),
-            _ => {}
-        }
-    }
-    let mut out = BTreeSet::new();
-    let instances = desc
-        .camera
-        .iter()
-        .chain(&desc.background)
-        .chain(&desc.lights)
-        .chain(desc.objects.iter().map(|o| &o.material));
-    for i in instances {
-        i.fields.iter().for_each(|f| value(f, &mut out));
-    }
-    for o in &desc.objects {
-        match &o.geometry {
-            Geometry::Mesh(MeshAsset::File { path, .. }) => {
-                out.insert(canonical(path));
-            }
-            Geometry::Custom(i) => i.fields.iter().for_each(|f| value(f, &mut out)),
-            Geometry::Mesh(_) => {}
-        }
-    }
-    for m in &desc.models {
-        out.insert(canonical(&m.path));
-    }
-    out
+    desc.asset_files().iter().map(|p| canonical(p)).collect()
 }
 
 /// Diagnostics as rustc-style text, with the summary line.

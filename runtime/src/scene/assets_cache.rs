@@ -20,15 +20,16 @@ use rtc_compiler::sema::hir::{ConstValue, MeshAsset, TextureAsset};
 
 use super::store::{AssetStore, Stamp, Version};
 use super::SceneError;
-use crate::assets::confine::resolve_scene_path;
+use crate::assets::confine::{self, resolve_scene_path};
 use crate::assets::model::parse_gltf_with;
 use crate::assets::model::ModelScene;
 use crate::assets::texture::decode_image;
 use crate::assets::{self, parse_obj, AssetError, AssetRoots, MeshData, TextureData};
 
-/// A file's bytes, read once: the loaders parse them and the store hashes them.
-fn read(file: &Path) -> Result<Vec<u8>, AssetError> {
-    std::fs::read(file).map_err(|source| AssetError::Read {
+/// A file's bytes (from the disk, or from memory as `roots` say), read once: the loaders parse
+/// them and the store hashes them.
+fn read(file: &Path, roots: &AssetRoots) -> Result<Vec<u8>, AssetError> {
+    confine::read(file, roots).map_err(|source| AssetError::Read {
         path: file.to_owned(),
         source,
     })
@@ -158,34 +159,40 @@ impl AssetCache {
             }
             _ => None,
         };
-        let stamp = file.as_deref().map_or(Stamp::NONE, Stamp::of);
-        let (version, data) = match self.store.mesh(&key, stamp, file.as_deref()) {
-            Some(hit) => hit,
-            None => {
-                let (mut data, version) = match (asset, &file) {
-                    (MeshAsset::File { span, .. }, Some(file)) => {
-                        let at_span = |source| SceneError::Asset {
-                            span: Some(*span),
-                            source,
-                        };
-                        let bytes = read(file).map_err(at_span)?;
-                        let data = parse_obj(&bytes, file).map_err(at_span)?;
-                        (data, Version::of_bytes(stamp, &bytes))
-                    }
-                    (MeshAsset::Quad, _) => (assets::quad_mesh(), Version::NONE),
-                    (MeshAsset::Cube, _) => (assets::cube_mesh(), Version::NONE),
-                    (MeshAsset::Sphere { subdivisions }, _) => {
-                        (assets::sphere_mesh(*subdivisions), Version::NONE)
-                    }
-                    (MeshAsset::File { .. }, None) => (MeshData::default(), Version::NONE),
-                };
-                data.ensure_normals();
-                let data = Arc::new(data);
-                self.store
-                    .put_mesh(key.clone(), version, Arc::clone(&data), file.is_some());
-                (version, data)
-            }
-        };
+        let stamp = file
+            .as_deref()
+            .map_or(Stamp::NONE, |f| Stamp::of(f, &self.roots));
+        let (version, data) =
+            match self
+                .store
+                .mesh(&key, stamp, file.as_deref().map(|f| (f, &self.roots)))
+            {
+                Some(hit) => hit,
+                None => {
+                    let (mut data, version) = match (asset, &file) {
+                        (MeshAsset::File { span, .. }, Some(file)) => {
+                            let at_span = |source| SceneError::Asset {
+                                span: Some(*span),
+                                source,
+                            };
+                            let bytes = read(file, &self.roots).map_err(at_span)?;
+                            let data = parse_obj(&bytes, file).map_err(at_span)?;
+                            (data, Version::of_bytes(stamp, &bytes))
+                        }
+                        (MeshAsset::Quad, _) => (assets::quad_mesh(), Version::NONE),
+                        (MeshAsset::Cube, _) => (assets::cube_mesh(), Version::NONE),
+                        (MeshAsset::Sphere { subdivisions }, _) => {
+                            (assets::sphere_mesh(*subdivisions), Version::NONE)
+                        }
+                        (MeshAsset::File { .. }, None) => (MeshData::default(), Version::NONE),
+                    };
+                    data.ensure_normals();
+                    let data = Arc::new(data);
+                    self.store
+                        .put_mesh(key.clone(), version, Arc::clone(&data), file.is_some());
+                    (version, data)
+                }
+            };
         let i = self.meshes.len();
         self.meshes.push((key.clone(), data, version));
         self.mesh_index.insert(key, i);
@@ -222,11 +229,11 @@ impl AssetCache {
 
     /// A glTF file (confined already), read once per content, and its version.
     pub fn model(&mut self, file: &Path) -> Result<(Version, Arc<ModelScene>), AssetError> {
-        let stamp = Stamp::of(file);
-        if let Some(hit) = self.store.model(file, stamp) {
+        let stamp = Stamp::of(file, &self.roots);
+        if let Some(hit) = self.store.model((file, &self.roots), stamp) {
             return Ok(hit);
         }
-        let bytes = read(file)?;
+        let bytes = read(file, &self.roots)?;
         let model = Arc::new(parse_gltf_with(&bytes, file, &self.roots)?);
         let version = Version::of_bytes(stamp, &bytes);
         self.store
@@ -276,8 +283,13 @@ impl AssetCache {
             }
             TextureAsset::Solid(_) => None,
         };
-        let stamp = file.as_deref().map_or(Stamp::NONE, Stamp::of);
-        let data = match self.store.texture(&key, stamp, file.as_deref()) {
+        let stamp = file
+            .as_deref()
+            .map_or(Stamp::NONE, |f| Stamp::of(f, &self.roots));
+        let data = match self
+            .store
+            .texture(&key, stamp, file.as_deref().map(|f| (f, &self.roots)))
+        {
             Some(data) => data,
             None => {
                 let (data, version) = match (asset, &file) {
@@ -286,7 +298,7 @@ impl AssetCache {
                             span: Some(*span),
                             source,
                         };
-                        let bytes = read(file).map_err(at_span)?;
+                        let bytes = read(file, &self.roots).map_err(at_span)?;
                         let data = decode_image(&bytes, file).map_err(at_span)?;
                         if data.nonfinite_texels > 0 {
                             self.warnings.push(nonfinite_warning(path, &data));

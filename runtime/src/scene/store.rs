@@ -23,8 +23,9 @@ use std::time::SystemTime;
 use rtc_bvh::{Aabb, BuildPreset, NodeRecord};
 
 use super::assets_cache::{MeshKey, TextureKey};
+use crate::assets::confine;
 use crate::assets::model::ModelScene;
-use crate::assets::{MeshData, TextureData};
+use crate::assets::{AssetRoots, MeshData, TextureData};
 
 /// What identifies a file's version without reading it: its length and modification time
 /// (`None` for data that comes from no file, such as a procedural mesh).
@@ -41,17 +42,29 @@ fn hash_bytes(bytes: &[u8]) -> u64 {
 
 /// A file's content hash (`None` for a file that cannot be read, which then never matches a
 /// stored entry's).
-fn content_hash(path: &Path) -> Option<u64> {
-    std::fs::read(path).ok().map(|bytes| hash_bytes(&bytes))
+fn content_hash((path, roots): FileIn<'_>) -> Option<u64> {
+    confine::read(path, roots)
+        .ok()
+        .map(|bytes| hash_bytes(&bytes))
 }
+
+/// A resolved file and where it is read from (the disk, or memory: [`AssetRoots::in_memory`]).
+pub(super) type FileIn<'a> = (&'a Path, &'a AssetRoots);
 
 impl Stamp {
     /// The stamp of data that comes from no file.
     pub const NONE: Stamp = Stamp(None);
 
     /// The stamp of the file at `path` now (a file that cannot be read gets a stamp no read
-    /// file has, so it is never taken from the store).
-    pub fn of(path: &Path) -> Stamp {
+    /// file has, so it is never taken from the store). A file held in memory has no time: its
+    /// content hash stands in for its length, so equal stamps still mean equal content.
+    pub fn of(path: &Path, roots: &AssetRoots) -> Stamp {
+        if let Some(files) = roots.memory() {
+            return match files.get(path) {
+                Some(bytes) => Stamp(Some((hash_bytes(bytes), None))),
+                None => Stamp(Some((u64::MAX, None))),
+            };
+        }
         match std::fs::metadata(path) {
             Ok(m) => Stamp(Some((m.len(), m.modified().ok()))),
             Err(_) => Stamp(Some((u64::MAX, None))),
@@ -150,7 +163,7 @@ fn current<K: std::hash::Hash + Eq, T>(
     map: &mut HashMap<K, Entry<T>>,
     key: &K,
     stamp: Stamp,
-    file: Option<&Path>,
+    file: Option<FileIn<'_>>,
 ) -> Option<(Version, Arc<T>)> {
     let entry = map.get_mut(key)?;
     if entry.version.stamp != stamp {
@@ -188,7 +201,7 @@ impl AssetStore {
         &mut self,
         key: &MeshKey,
         stamp: Stamp,
-        file: Option<&Path>,
+        file: Option<FileIn<'_>>,
     ) -> Option<(Version, Arc<MeshData>)> {
         let hit = current(&mut self.meshes, key, stamp, file);
         self.counters.reused += u32::from(hit.is_some());
@@ -242,7 +255,7 @@ impl AssetStore {
         &mut self,
         key: &TextureKey,
         stamp: Stamp,
-        file: Option<&Path>,
+        file: Option<FileIn<'_>>,
     ) -> Option<Arc<TextureData>> {
         let hit = current(&mut self.textures, key, stamp, file).map(|(_, d)| d);
         self.counters.reused += u32::from(hit.is_some());
@@ -264,10 +277,15 @@ impl AssetStore {
     /// The stored glTF file at `path` if still current.
     pub(super) fn model(
         &mut self,
-        path: &Path,
+        (path, roots): FileIn<'_>,
         stamp: Stamp,
     ) -> Option<(Version, Arc<ModelScene>)> {
-        let hit = current(&mut self.models, &path.to_path_buf(), stamp, Some(path));
+        let hit = current(
+            &mut self.models,
+            &path.to_path_buf(),
+            stamp,
+            Some((path, roots)),
+        );
         self.counters.reused += u32::from(hit.is_some());
         hit
     }

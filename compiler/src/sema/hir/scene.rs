@@ -5,8 +5,9 @@
 //! declaration order; transforms are column-major object-to-world matrices; asset paths are resolved
 //! relative to the scene's file.
 
-use super::{ConstValue, MeshAsset, ModuleId, StructId};
+use super::{ConstValue, MeshAsset, ModuleId, StructId, TextureAsset};
 use crate::source::Span;
+use std::collections::BTreeSet;
 use std::path::PathBuf;
 
 /// A role struct's instance in a scene.
@@ -121,6 +122,46 @@ pub struct SceneDesc {
     pub models: Vec<Model>,
     /// The animation's tracks, in the order of the `animate` entries (spec/animation.md).
     pub animation: Vec<Track>,
+}
+
+impl SceneDesc {
+    /// Every file the scene loads at render time: meshes, images and glTF models, as the
+    /// compiler resolved them (relative to the scene's folder, not yet confined). The files a
+    /// glTF model names itself are not among them.
+    pub fn asset_files(&self) -> BTreeSet<PathBuf> {
+        fn value(v: &ConstValue, out: &mut BTreeSet<PathBuf>) {
+            match v {
+                ConstValue::Mesh(MeshAsset::File { path, .. })
+                | ConstValue::Texture(TextureAsset::File { path, .. }) => {
+                    out.insert(path.clone());
+                }
+                ConstValue::Array(items) => items.iter().for_each(|i| value(i, out)),
+                ConstValue::Struct { fields, .. } => fields.iter().for_each(|f| value(f, out)),
+                _ => {}
+            }
+        }
+        let mut out = BTreeSet::new();
+        let instances = self
+            .camera
+            .iter()
+            .chain(&self.background)
+            .chain(&self.lights)
+            .chain(self.objects.iter().map(|o| &o.material));
+        for i in instances {
+            i.fields.iter().for_each(|f| value(f, &mut out));
+        }
+        for o in &self.objects {
+            match &o.geometry {
+                Geometry::Mesh(MeshAsset::File { path, .. }) => {
+                    out.insert(path.clone());
+                }
+                Geometry::Custom(i) => i.fields.iter().for_each(|f| value(f, &mut out)),
+                Geometry::Mesh(_) => {}
+            }
+        }
+        out.extend(self.models.iter().map(|m| m.path.clone()));
+        out
+    }
 }
 
 /// What a [`Track`] moves or changes.

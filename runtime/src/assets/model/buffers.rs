@@ -117,6 +117,37 @@ pub(super) fn dangling(ctx: &Ctx<'_>, item: GltfItem) -> AssetError {
     }
 }
 
+/// The files the buffers and images of the glTF file `gltf_path` (parsed: `root`) name, resolved
+/// and confined as [`read_uri`] would read them; `data:` URIs, other schemes and refused paths
+/// are left out (reading the model reports those).
+pub(super) fn external_files(
+    root: &json::Root,
+    gltf_path: &Path,
+    roots: &AssetRoots,
+) -> Vec<PathBuf> {
+    let folder = gltf_path.parent().unwrap_or_else(|| Path::new(""));
+    let uris = root
+        .buffers
+        .iter()
+        .filter_map(|b| b.uri.as_deref())
+        .chain(root.images.iter().filter_map(|i| i.uri.as_deref()));
+    let mut files = Vec::new();
+    for uri in uris {
+        if confine::has_scheme(uri) {
+            continue;
+        }
+        let Some(relative) = percent_decode(uri) else {
+            continue;
+        };
+        if let Ok(file) = confine::resolve(&relative, folder, roots, Search::BaseOnly) {
+            if !files.contains(&file) {
+                files.push(file);
+            }
+        }
+    }
+    files
+}
+
 /// The bytes a URI refers to, and the file it named (`None` for `data:` URIs).
 fn read_uri(
     uri: &str,
@@ -159,7 +190,7 @@ fn read_uri(
             problem: Box::new(problem),
         }
     })?;
-    match std::fs::read(&file) {
+    match confine::read(&file, roots) {
         Ok(bytes) => Ok((bytes, Some(file))),
         Err(source) => Err(AssetError::MissingFile {
             path: gltf_path.to_owned(),

@@ -356,11 +356,22 @@ pub fn load_gltf_with(
     roots: &AssetRoots,
 ) -> Result<ModelScene, AssetError> {
     let path = path.as_ref();
-    let bytes = std::fs::read(path).map_err(|source| AssetError::Read {
+    let bytes = super::confine::read(path, roots).map_err(|source| AssetError::Read {
         path: path.to_owned(),
         source,
     })?;
     parse_gltf_with(&bytes, path, roots)
+}
+
+/// The files a glTF file (its bytes; `path` is where it is) names for its buffers and images,
+/// resolved and confined against its folder (and `roots`) as reading it would: what a host that
+/// fetches files (the web page) must fetch before the model can be read. `data:` URIs and paths
+/// that would be refused are not listed; a file that is not glTF names nothing.
+pub fn external_files(bytes: &[u8], path: &Path, roots: &AssetRoots) -> Vec<std::path::PathBuf> {
+    match document::parse(bytes, path) {
+        Ok((root, _)) => buffers::external_files(&root, path, roots),
+        Err(_) => Vec::new(),
+    }
 }
 
 /// [`load_gltf`] on the file's bytes; `path` names the file in errors and its folder is where

@@ -3,6 +3,7 @@
 //! that is removed afterwards; nothing outside the repository is read.
 
 mod confine;
+mod confine_memory;
 mod fuzz;
 mod fuzz_files;
 mod gltf;
