@@ -530,15 +530,47 @@ impl<'g> Renderer<'g> {
         Self::build(gpu, compiled, options, AssetStore::new(), None)
     }
 
+    /// [`new`](Self::new) without blocking, for the web (`wasm32`): the one read-back of the
+    /// setup (the boxes of custom geometry, from the bounds kernel) is awaited.
+    #[cfg(target_arch = "wasm32")]
+    pub async fn new_async(
+        gpu: &'g Gpu,
+        compiled: &CompiledScene,
+        options: RenderOptions,
+    ) -> Result<Self, RenderError> {
+        let mut staged = Self::begin(gpu, compiled, options, AssetStore::new(), None)?;
+        if let Some(started) = staged.dispatch_bounds()? {
+            let boxes = staged.scene.read_accumulation_async(gpu).await?;
+            staged.take_bounds(started, &boxes)?;
+        }
+        staged.finish(compiled)
+    }
+
     /// [`new`](Self::new) with what a previous renderer of the scene leaves: its asset store and,
     /// from its GPU scene, every buffer whose contents are unchanged.
     fn build(
         gpu: &'g Gpu,
         compiled: &CompiledScene,
         options: RenderOptions,
-        mut store: AssetStore,
+        store: AssetStore,
         previous: Option<(GpuScene, &Entities)>,
     ) -> Result<Self, RenderError> {
+        let mut staged = Self::begin(gpu, compiled, options, store, previous)?;
+        if let Some(started) = staged.dispatch_bounds()? {
+            let boxes = staged.scene.read_accumulation(gpu)?;
+            staged.take_bounds(started, &boxes)?;
+        }
+        staged.finish(compiled)
+    }
+
+    /// The setup up to the bounds kernel: entities (assets, BVHs), pipelines, the GPU scene.
+    fn begin(
+        gpu: &'g Gpu,
+        compiled: &CompiledScene,
+        options: RenderOptions,
+        mut store: AssetStore,
+        previous: Option<(GpuScene, &Entities)>,
+    ) -> Result<Staged<'g>, RenderError> {
         let program = compiled
             .checked
             .program
@@ -634,68 +666,21 @@ impl<'g> Renderer<'g> {
             scene = scene.with_limits(limits);
         }
 
-        let mut written_at_setup = Vec::new();
-        let mut upload = (0.0, 0);
-        if let Some((bounds_kernel, _)) = &bounds {
-            let start = Instant::now();
-            let report = run_bounds(
-                gpu,
-                &mut entities,
-                &mut scene,
-                bounds_kernel,
-                samples_per_pass,
-                total_samples,
-            )?;
-            setup.bounds_ms = ms_since(start) - report.stats.upload_ms;
-            setup.bvh_ms += entities.stats().tlas_ms;
-            upload = (report.stats.upload_ms, report.stats.bytes_uploaded);
-            written_at_setup = report.written();
-        }
-
-        let path_slots = match kernels {
-            Kernels::Wavefront { .. } => tiles.tile_width * tiles.tile_height,
-            Kernels::Mega(_) => 0,
-        };
-        let path_flag_offset = u64::from(path_slots) * u64::from(compiled.path_words) * 4;
-        let frame = FrameUniforms {
-            path_slots,
-            ..entities.frame_uniforms(samples_per_pass, total_samples)
-        };
-        let report = scene.upload(
-            gpu,
-            &mut entities,
-            &frame,
-            u64::from(width) * u64::from(height),
-        )?;
-        setup.upload = Some((
-            upload.0 + report.stats.upload_ms,
-            upload.1 + report.stats.bytes_uploaded,
-        ));
-        for name in report.written() {
-            if !written_at_setup.contains(&name) {
-                written_at_setup.push(name);
-            }
-        }
-
-        let dispatcher = TileDispatcher::new(tiles);
-        Ok(Self {
+        Ok(Staged {
             gpu,
             entities,
             scene,
             kernels,
-            path_slots,
-            path_flag_offset,
-            dispatcher,
+            bounds: bounds.map(|(k, _)| k),
+            tiles,
             size: [width, height],
             samples_per_pass,
             total_samples,
             setup,
-            written_at_setup,
-            resolver: Resolver::new(),
-            program: layout_program(program),
+            written_at_setup: Vec::new(),
+            upload: (0.0, 0),
             options,
             store,
-            passes_done: 0,
         })
     }
 
@@ -1159,9 +1144,136 @@ impl Renderer<'_> {
     }
 }
 
-/// Runs the bounds kernel over every object and gives the custom-geometry boxes to the entities,
-/// then builds the TLAS. Returns what the upload for it did.
-fn run_bounds(
+/// A renderer's setup between [`Renderer::begin`] and [`Staged::finish`]: what is built so far,
+/// and the bounds kernel when the scene has custom geometry (whose boxes are read back between
+/// [`Staged::dispatch_bounds`] and [`Staged::take_bounds`], blocking or awaited).
+struct Staged<'g> {
+    gpu: &'g Gpu,
+    entities: Entities,
+    scene: GpuScene,
+    kernels: Kernels,
+    bounds: Option<Kernel>,
+    tiles: TileConfig,
+    size: [u32; 2],
+    samples_per_pass: u32,
+    total_samples: u32,
+    setup: Setup,
+    written_at_setup: Vec<&'static str>,
+    /// Milliseconds and bytes uploaded for the bounds kernel.
+    upload: (f64, u64),
+    options: RenderOptions,
+    store: AssetStore,
+}
+
+impl<'g> Staged<'g> {
+    /// Uploads what the bounds kernel reads and dispatches it over every object (the scene with
+    /// custom geometry only; `None` otherwise). Its boxes are then in the accumulation buffer.
+    fn dispatch_bounds(&mut self) -> Result<Option<(Instant, UploadReport)>, RenderError> {
+        let Some(kernel) = &self.bounds else {
+            return Ok(None);
+        };
+        let start = Instant::now();
+        let report = dispatch_bounds(
+            self.gpu,
+            &mut self.entities,
+            &mut self.scene,
+            kernel,
+            self.samples_per_pass,
+            self.total_samples,
+        )?;
+        Ok(Some((start, report)))
+    }
+
+    /// Gives the boxes read back after [`dispatch_bounds`](Self::dispatch_bounds) to the
+    /// custom-geometry objects and builds the TLAS.
+    fn take_bounds(
+        &mut self,
+        (start, report): (Instant, UploadReport),
+        boxes: &[[f32; 4]],
+    ) -> Result<(), RenderError> {
+        apply_bounds(&mut self.entities, boxes)?;
+        self.setup.bounds_ms = ms_since(start) - report.stats.upload_ms;
+        self.setup.bvh_ms += self.entities.stats().tlas_ms;
+        self.upload = (report.stats.upload_ms, report.stats.bytes_uploaded);
+        self.written_at_setup = report.written();
+        Ok(())
+    }
+
+    /// The rest of the setup (frame uniforms, the upload of everything) and the renderer.
+    fn finish(self, compiled: &CompiledScene) -> Result<Renderer<'g>, RenderError> {
+        let Staged {
+            gpu,
+            mut entities,
+            mut scene,
+            kernels,
+            tiles,
+            size: [width, height],
+            samples_per_pass,
+            total_samples,
+            mut setup,
+            mut written_at_setup,
+            upload,
+            options,
+            store,
+            ..
+        } = self;
+        let program = compiled
+            .checked
+            .program
+            .as_ref()
+            .ok_or(SceneError::NoProgram)?;
+        let path_slots = match kernels {
+            Kernels::Wavefront { .. } => tiles.tile_width * tiles.tile_height,
+            Kernels::Mega(_) => 0,
+        };
+        let path_flag_offset = u64::from(path_slots) * u64::from(compiled.path_words) * 4;
+        let frame = FrameUniforms {
+            path_slots,
+            ..entities.frame_uniforms(samples_per_pass, total_samples)
+        };
+        let report = scene.upload(
+            gpu,
+            &mut entities,
+            &frame,
+            u64::from(width) * u64::from(height),
+        )?;
+        setup.upload = Some((
+            upload.0 + report.stats.upload_ms,
+            upload.1 + report.stats.bytes_uploaded,
+        ));
+        for name in report.written() {
+            if !written_at_setup.contains(&name) {
+                written_at_setup.push(name);
+            }
+        }
+
+        let dispatcher = TileDispatcher::new(tiles);
+        Ok(Renderer {
+            gpu,
+            entities,
+            scene,
+            kernels,
+            path_slots,
+            path_flag_offset,
+            dispatcher,
+            size: [width, height],
+            samples_per_pass,
+            total_samples,
+            setup,
+            written_at_setup,
+            resolver: Resolver::new(),
+            program: layout_program(program),
+            options,
+            store,
+            passes_done: 0,
+        })
+    }
+}
+
+/// Uploads what the bounds kernel reads and runs it over every object; the boxes (two `vec4f`
+/// per object: low, high corner) are then in the accumulation buffer, for [`apply_bounds`].
+/// Returns what the upload did.
+fn dispatch_bounds(
     gpu: &Gpu,
     entities: &mut Entities,
     scene: &mut GpuScene,
@@ -1180,7 +1292,12 @@ fn run_bounds(
     scene.clear_accumulation(gpu)?;
     let groups = frame.instance_count.div_ceil(BOUNDS_WORKGROUP).max(1);
     dispatch_once(gpu, kernel, scene.buffers(), [groups, 1, 1])?;
-    let boxes = scene.read_accumulation(gpu)?;
+    Ok(report)
+}
+
+/// Gives the custom-geometry objects their boxes (as [`dispatch_bounds`] left them) and builds
+/// the TLAS.
+fn apply_bounds(entities: &mut Entities, boxes: &[[f32; 4]]) -> Result<(), RenderError> {
     let custom: Vec<usize> = entities
         .objects()
         .iter()
@@ -1199,5 +1316,5 @@ fn run_bounds(
         entities.set_custom_bounds(i, bounds)?;
     }
     entities.rebuild_tlas()?;
-    Ok(report)
+    Ok(())
 }

@@ -585,9 +585,9 @@ fn map_read<T>(
         let _ = (gpu, staging, consume);
         Err(DispatchError::Map {
             size,
-            message: "a blocking read-back is not possible on the web (the bounds of custom \
-                      geometry and the wavefront model's rounds read back mid-frame; scenes with \
-                      neither render there)"
+            message: "a blocking read-back is not possible on the web (the wavefront model's \
+                      rounds read back mid-frame: use the megakernel there; custom geometry's \
+                      bounds need the awaiting setup, `Renderer::new_async`)"
                 .to_string(),
         })
     }
