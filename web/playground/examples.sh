@@ -7,21 +7,20 @@
 # `rtc.registry.json` are copied (the page gives them to the compiler as examples/NAME/FILE, the
 # paths `rtc` run at the repository's root uses). The index lists, per example, its files, its
 # scene files (`entries`: FILE and the scene it declares) and the asset files its sources load
-# (`load_mesh("…")`, `load_image("…")`, `model "…"`): the renderer in the page cannot read those
-# yet (rtc-runtime reads assets with std::fs), so the page offers such examples for checking and
-# compiling only. `noRender` names the examples that need no asset but still cannot render in the
-# page, with the reason (verified by web/tests/playground.mjs, which renders every other one).
+# (`load_mesh("…")`, `load_image("…")`, `model "…"`), which are copied beside them: the page does
+# not give those to the renderer up front, its `loadRenderer` asks for them and the page fetches
+# them from OUT/examples/NAME/ as a page fetches its assets from URLs. `noRender` names the
+# examples that cannot render in the page, with the reason (verified by web/tests/playground.mjs,
+# which renders every other one).
 # Names are [A-Za-z0-9_.-] only, so the JSON needs no escaping; anything else is skipped.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 out="${1:?usage: examples.sh OUT_DIR}"
 
-# Custom geometry (an @intersection program with a bounds kernel): the runtime reads the boxes
-# back mid-frame, which blocks, and blocking read-backs are not available on WebGPU yet.
-declare -A no_render=(
-    [lights]="custom geometry (Sphere, Box): its bounds kernel reads back mid-frame, not yet on the web"
-    [pbr_path]="custom geometry (Sphere): its bounds kernel reads back mid-frame, not yet on the web"
-)
+# Examples that cannot render in the page, with the reason (none now: custom geometry's bounds
+# are read back by the awaiting setup, `loadRenderer`). An example whose scene asks for the
+# wavefront model (`exec: wavefront`) would go here: its rounds read back mid-frame.
+declare -A no_render=()
 
 safe() { [[ "$1" =~ ^[A-Za-z0-9_.-]+$ ]]; }
 join() { local IFS=,; echo "$*"; }
@@ -54,6 +53,7 @@ for dir in examples/*/; do
         while read -r asset; do
             if safe "$asset" && [[ " ${assets[*]} " != *" \"$asset\" "* ]]; then
                 assets+=("\"$asset\"")
+                if [ -f "$dir$asset" ]; then cp "$dir$asset" "$out/examples/$name/$asset"; fi
             fi
         done < <(grep -oE '(load_mesh|load_image)\("[^"]+"\)|model "[^"]+"' "$f" | sed -E 's/.*"([^"]+)".*/\1/')
     done

@@ -18,6 +18,12 @@
 //   orbit, shift- or right-drag to pan, wheel to zoom, double-click back to the scene's camera;
 //   each move restarts the accumulation at one pass. A new renderer (an edit) keeps the camera the
 //   user moved, as `rtc view` does after a reload; double-click goes back to the scene's.
+// - Assets (OBJ, PNG/EXR/JPEG, glTF/GLB and the buffers and images a glTF names) come from URLs
+//   next to the page (../pkg/examples/NAME/, copied there by examples.sh) or from files the user
+//   drops on the page, which join the example's folder under their names (a dropped file wins over
+//   a fetched one). pkg.loadRenderer asks for each file the scene needs; rtc confines the paths to
+//   the scene's folder before asking, as `rtc render` does on disk. Fetched and dropped files are
+//   kept and given to the compiler too (a `model` file is linked from its contents).
 // - Without WebGPU (no navigator.gpu, no adapter, or a package built without the renderer) the page
 //   still checks and compiles, and says why it cannot render.
 // - window.rtcPlayground.state mirrors what the page shows, for web/tests/playground.mjs.
@@ -38,6 +44,7 @@ const ui = {
   overlay: $('overlay'),
   stats: $('stats'),
   cameraHint: $('camera-hint'),
+  dropped: $('dropped'),
   renderStatus: $('render-status'),
   wgslPick: $('wgsl-pick'),
   wgsl: $('wgsl'),
@@ -63,6 +70,9 @@ const state = {
   size: null, // [width, height] of the image on the canvas
   cameraMoves: 0, // batches of camera moves applied (each restarts the accumulation)
   view: null, // the camera ({ position, lookAt }) when it can move
+  fetched: [], // asset paths fetched from URLs, in order
+  dropped: [], // names of the files the user dropped
+  loading: false, // a renderer is being created (compile, asset fetches, BVHs, pipelines)
 };
 window.rtcPlayground = { state };
 
@@ -74,6 +84,9 @@ let entry = null; // the edited file's path (examples/NAME/FILE)
 let original = ''; // the edited file as loaded
 let debounce = 0;
 let job = null; // the running render: { renderer, source, cancelled, running }
+let assets = new Map(); // path → Uint8Array: asset files of the current example fetched so far
+const dropped = new Map(); // file name → Uint8Array: files the user dropped (any example's folder)
+let loads = 0; // renderers asked for; a load that is no longer the newest is discarded
 
 // ---- the editor ------------------------------------------------------------------------------
 
@@ -229,7 +242,7 @@ function check() {
   let t0 = performance.now();
   let result;
   try {
-    result = compiler.check(files, [entry]);
+    result = compiler.check(allFiles(), [entry]);
   } catch (e) {
     setCheckStatus(`the compiler failed: ${e.message ?? e}`, 'bad');
     state.ok = false;
@@ -246,7 +259,7 @@ function check() {
   t0 = performance.now();
   let compiled;
   try {
-    compiled = compiler.compile(files, entry, { scene: state.example.scene });
+    compiled = compiler.compile(allFiles(), entry, { scene: state.example.scene });
   } catch (e) {
     setCheckStatus(`the compiler failed: ${e.message ?? e}`, 'bad');
     state.ok = false;
@@ -271,7 +284,7 @@ function check() {
   );
   showWgsl(compiled);
   // A new renderer for a new source; the same source (an error typed and undone) keeps its image.
-  if ((job?.source ?? state.renderedSource) !== source || state.renderError) startRender(source);
+  if ((job?.source ?? state.renderedSource) !== source || state.renderError) startRender(source).catch(fatal);
   else showOverlay(null);
 }
 
@@ -310,6 +323,8 @@ function nextFrame() {
 }
 
 function stopRender() {
+  loads += 1; // a renderer still loading is discarded when it arrives
+  state.loading = false;
   if (!job) return;
   job.cancelled = true;
   if (!job.running) job.renderer?.free();
@@ -317,7 +332,29 @@ function stopRender() {
   state.rendering = false;
 }
 
-function startRender(source) {
+/** The example's files, its assets fetched so far and the dropped files (in its folder). */
+function allFiles() {
+  const all = new Map([...files, ...assets]);
+  for (const [name, bytes] of dropped) all.set(`examples/${state.example.name}/${name}`, bytes);
+  return all;
+}
+
+/** pkg.loadRenderer's fetchFile: the bytes of `path` (confined by rtc to the scene's folder),
+ * from a dropped file or the URL next to the page; null when there is none. */
+async function fetchAsset(path) {
+  const folder = `examples/${state.example.name}/`;
+  if (path.startsWith(folder) && dropped.has(path.slice(folder.length))) return dropped.get(path.slice(folder.length));
+  if (assets.has(path)) return assets.get(path);
+  const url = `../pkg/${path.split('/').map(encodeURIComponent).join('/')}`;
+  const res = await fetch(url);
+  if (!res.ok) return null;
+  const bytes = new Uint8Array(await res.arrayBuffer());
+  assets.set(path, bytes);
+  state.fetched.push(path);
+  return bytes;
+}
+
+async function startRender(source) {
   if (!state.gpu) {
     setRenderStatus(state.gpuError ?? 'waiting for WebGPU…', !!state.gpuError);
     return;
@@ -326,33 +363,41 @@ function startRender(source) {
   // scene's camera can still move; otherwise the new scene's own camera.
   const keptView = job?.canOrbit && job.moved ? job.renderer.view : null;
   stopRender();
+  const load = ++loads;
   const ex = examples.find((e) => e.name === state.example.name);
   const scale = Number(ui.scale.value) || 1;
   let renderer;
   const t0 = performance.now();
+  state.loading = true;
   try {
     // The scene's size first, then the chosen fraction of it (a second renderer, rarely).
     const options = { scene: state.example.scene };
-    renderer = new pkg.WebRenderer(files, entry, options);
-    if (scale !== 1) {
+    renderer = await pkg.loadRenderer(allFiles(), entry, options, fetchAsset);
+    if (scale !== 1 && load === loads) {
       const [w, h] = [renderer.width, renderer.height].map((n) => Math.max(1, Math.round(n * scale)));
       renderer.free();
-      renderer = new pkg.WebRenderer(files, entry, { ...options, width: w, height: h });
+      renderer = await pkg.loadRenderer(allFiles(), entry, { ...options, width: w, height: h }, fetchAsset);
     }
   } catch (e) {
+    if (load !== loads) return;
+    state.loading = false;
     const why = e.message ?? String(e);
     state.renderError = why;
-    let hint = '';
-    if (ex?.assets?.length) hint = `\nThis example loads ${ex.assets.join(', ')}: the renderer in the page cannot read asset files yet.`;
-    else if (ex?.noRender) hint = `\nKnown: ${ex.noRender}.`;
+    const hint = ex?.noRender ? `\nKnown: ${ex.noRender}.` : '';
     setRenderStatus(`the renderer could not start:\n${why}${hint}`, true);
     showOverlay(state.renderedSource ? 'this is the last good image' : null);
     return;
   }
+  if (load !== loads) {
+    // A newer edit (or example) asked for its own renderer while this one loaded.
+    renderer.free();
+    return;
+  }
+  state.loading = false;
   state.renders += 1;
   state.renderError = null;
   const setupMs = performance.now() - t0;
-  setRenderStatus(`renderer ready in ${setupMs.toFixed(0)} ms (compile, pipelines, BVH, upload)`);
+  setRenderStatus(`renderer ready in ${setupMs.toFixed(0)} ms (compile, assets, pipelines, BVH, upload)`);
   job = { renderer, source, cancelled: false, running: false, setupMs, first: true, canOrbit: renderer.canOrbit, moved: false };
   clearMoves();
   if (keptView && job.canOrbit) {
@@ -502,8 +547,26 @@ ui.scale.addEventListener('change', () => {
   const url = new URL(location.href);
   url.searchParams.set('scale', ui.scale.value);
   history.replaceState(null, '', url);
-  if (state.ok && state.gpu) startRender(ui.source.value);
+  if (state.ok && state.gpu) startRender(ui.source.value).catch(fatal);
 });
+
+// ---- dropped files: they join the example's folder under their names, so the scene can name them
+// (`load_mesh("model.obj")`, `load_image("wood.png")`, `model "car.glb"` with its .bin and images).
+
+async function dropFiles(list) {
+  if (!list.length) return;
+  for (const f of list) dropped.set(f.name, new Uint8Array(await f.arrayBuffer()));
+  state.dropped = [...dropped.keys()];
+  ui.dropped.textContent = `dropped: ${state.dropped.join(', ')} (in the example's folder)`;
+  if (state.ok && state.gpu) startRender(ui.source.value).catch(fatal);
+  else scheduleCheck();
+}
+document.addEventListener('dragover', (e) => e.preventDefault());
+document.addEventListener('drop', (e) => {
+  e.preventDefault();
+  dropFiles([...(e.dataTransfer?.files ?? [])]).catch(fatal);
+});
+window.rtcPlayground.dropFiles = dropFiles;
 
 // ---- examples ------------------------------------------------------------------------------
 
@@ -522,6 +585,11 @@ async function loadExample(value) {
     }),
   );
   files = loaded;
+  // The assets its sources name, fetched now so that the first check links a `model` from its
+  // contents; anything else (a glTF's buffers and images) is fetched when the renderer asks.
+  assets = new Map();
+  state.example = { name: ex.name, file: ent.file, scene: ent.scene };
+  await Promise.all(ex.assets.map((a) => fetchAsset(`examples/${ex.name}/${a}`)));
   entry = `examples/${ex.name}/${ent.file}`;
   state.example = { name: ex.name, file: ent.file, scene: ent.scene };
   state.renderedSource = null;
@@ -533,13 +601,7 @@ async function loadExample(value) {
   const url = new URL(location.href);
   url.searchParams.set('example', `${ex.name}/${ent.file}`);
   history.replaceState(null, '', url);
-  if (ex.assets.length) {
-    setRenderStatus(
-      `${ex.name} loads ${ex.assets.join(', ')}: the renderer in the page cannot read asset files yet, ` +
-        'so this example is for checking and compiling only.',
-      true,
-    );
-  } else if (ex.noRender) {
+  if (ex.noRender) {
     setRenderStatus(`${ex.name}: ${ex.noRender}; checking and compiling work.`, true);
   } else {
     setRenderStatus('');
@@ -558,8 +620,8 @@ function fillPicker() {
       const o = document.createElement('option');
       o.value = `${ex.name}/${ent.file}`;
       const label = ex.entries.length > 1 ? `${ex.name}/${ent.file}` : ex.name;
-      if (ex.assets.length || ex.noRender) {
-        o.textContent = `${label} (${ex.assets.length ? `needs ${ex.assets.join(', ')}` : 'custom geometry'})`;
+      if (ex.noRender) {
+        o.textContent = `${label} (cannot render here)`;
         checkOnly.append(o);
       } else {
         o.textContent = label;

@@ -20,9 +20,10 @@
 
 use rtc_compiler::back::Target;
 use rtc_compiler::cache::ModuleCache;
+use rtc_compiler::confine::{resolve_scene_path, AssetRoots};
 use rtc_compiler::diag::{self, codes, Diagnostic};
 use rtc_compiler::driver::{self, Options};
-use rtc_compiler::kernel::{ExecModel, KernelOptions};
+use rtc_compiler::kernel::{CompileFailure, CompiledScene, ExecModel, KernelOptions};
 use rtc_compiler::link::{LinkOptions, ModelRead};
 use rtc_compiler::pipeline::{self, Request};
 use rtc_compiler::source::MemoryFiles;
@@ -36,7 +37,7 @@ use wasm_bindgen::prelude::*;
 #[cfg(all(feature = "renderer", target_arch = "wasm32"))]
 mod render;
 #[cfg(all(feature = "renderer", target_arch = "wasm32"))]
-pub use render::{init_gpu, WebRenderer};
+pub use render::{init_gpu, load_renderer, WebRenderer};
 
 mod embedded {
     include!(concat!(env!("OUT_DIR"), "/stdlib.rs"));
@@ -260,7 +261,19 @@ impl Compiler {
         files: MemoryFiles,
         roots: &[String],
         options: &CompileOptions,
-    ) -> Result<rtc_compiler::kernel::CompiledScene, String> {
+    ) -> Result<CompiledScene, String> {
+        self.compile_scene_full(files, roots, options)
+            .map_err(|f| render_failure(&f))
+    }
+
+    /// [`Compiler::compile_scene`], keeping what was checked when it fails (for
+    /// [`scene_assets`]).
+    pub fn compile_scene_full(
+        &self,
+        files: MemoryFiles,
+        roots: &[String],
+        options: &CompileOptions,
+    ) -> Result<CompiledScene, Box<CompileFailure>> {
         let paths: Vec<PathBuf> = roots.iter().map(PathBuf::from).collect();
         let compiler_options = self.options(files);
         let request = Request {
@@ -277,15 +290,53 @@ impl Compiler {
             },
             targets: &[],
         };
-        match pipeline::compile(&request) {
-            Ok(compiled) => Ok(compiled.scene),
-            Err(f) => Err(diag::render_human(
-                &f.checked.sources,
-                &f.diagnostics,
-                false,
-            )),
+        pipeline::compile(&request).map(|c| c.scene)
+    }
+}
+
+/// The diagnostics of a failed compile as `rtc compile` prints them (no colour).
+pub fn render_failure(f: &CompileFailure) -> String {
+    diag::render_human(&f.checked.sources, &f.diagnostics, false)
+}
+
+/// The files a compile's scene loads at render time (meshes, images and `model` files; not yet
+/// the files a glTF model names), each resolved and confined against the scene's folder in
+/// `files` as the renderer will read it, whether or not `files` holds it. Paths the renderer
+/// would refuse are left out (it reports them). After a failed compile, those of every scene the
+/// checked sources declare.
+pub fn scene_assets(
+    result: &Result<CompiledScene, Box<CompileFailure>>,
+    files: &Arc<MemoryFiles>,
+) -> Vec<PathBuf> {
+    let (program, only) = match result {
+        Ok(c) => (c.checked.program.as_ref(), Some(c.scene)),
+        Err(f) => (f.checked.program.as_ref(), None),
+    };
+    let Some(program) = program else {
+        return Vec::new();
+    };
+    let roots = AssetRoots::in_memory(Arc::clone(files));
+    let mut out = Vec::new();
+    for (i, scene) in program.scenes.iter() {
+        if only.is_some_and(|o| o != i) {
+            continue;
+        }
+        let dir = program
+            .modules
+            .get(scene.module.index())
+            .and_then(|m| m.path.as_deref())
+            .and_then(|p| p.parent())
+            .map(PathBuf::from)
+            .unwrap_or_default();
+        for path in scene.asset_files() {
+            if let Ok(file) = resolve_scene_path(&path, &dir, &roots) {
+                if !out.contains(&file) {
+                    out.push(file);
+                }
+            }
         }
     }
+    out
 }
 
 /// [`JsonDiagnostic`]s of `diags`.
