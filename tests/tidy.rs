@@ -59,7 +59,9 @@ fn walk(root: &Path, dir: &Path, out: &mut Vec<PathBuf>) {
             .unwrap()
             .to_string_lossy()
             .replace('\\', "/");
-        if SKIPPED.iter().any(|s| rel == *s) || rel.starts_with("target") {
+        // npm's folders anywhere (web/node_modules after `npm ci`), not only at the top.
+        let npm = p.file_name().is_some_and(|n| n == "node_modules");
+        if SKIPPED.iter().any(|s| rel == *s) || rel.starts_with("target") || npm {
             continue;
         }
         if p.is_dir() {

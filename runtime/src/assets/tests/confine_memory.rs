@@ -145,7 +145,8 @@ fn external_files_are_what_reading_the_gltf_asks_for() {
     assert!(external_files(b"not json", at, &roots).is_empty());
 }
 
-/// The entities of `inside/scene.rt` holding `entry`, its assets from `files` in memory.
+/// The entities of a scene file `scene.rt` in the folder `inside` holding `entry`, its assets
+/// from `files` in memory.
 fn build_scene(entry: &str, files: MemoryFiles) -> Result<Entities, SceneError> {
     let text = format!(
         "import \"std/cameras/pinhole.rt\";\nimport \"std/materials/unlit_texture.rt\";\n\
