@@ -71,6 +71,7 @@ const state = {
   cameraMoves: 0, // batches of camera moves applied (each restarts the accumulation)
   view: null, // the camera ({ position, lookAt }) when it can move
   fetched: [], // asset paths fetched from URLs, in order
+  compileMs: [], // edit → WGSL of every clean check: check + compile, ms
   dropped: [], // names of the files the user dropped
   loading: false, // a renderer is being created (compile, asset fetches, BVHs, pipelines)
 };
@@ -269,6 +270,7 @@ function check() {
   state.ok = compiled.ok;
   showDiagnostics(compiled.diagnostics);
   const timing = `checked in ${checkMs.toFixed(0)} ms, compiled in ${compileMs.toFixed(0)} ms`;
+  state.compileMs.push(+(checkMs + compileMs).toFixed(2));
   if (!compiled.ok) {
     setCheckStatus(`${counts(compiled.diagnostics) || 'compile failed'} (${timing})\n${compiled.rendered}`, 'bad');
     showOverlay('the source has errors: this is the last good image');

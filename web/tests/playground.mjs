@@ -20,7 +20,8 @@
 //   every example web/pkg/examples.json offers for rendering renders (64 px wide, 1 spp), those
 //   with asset files fetching them from the URLs beside the page (custom geometry included), and
 //   each one it marks check-only (`noRender`; none now) compiles and shows the renderer's error;
-//   examples/three_spheres (its sky.png fetched) matches `rtc render`; a file dropped on the page
+//   examples/three_spheres (its sky.png fetched) matches `rtc render` (cornell_box: ≥ 25 dB at 1 spp,
+//   see below); a file dropped on the page
 //   (an OBJ) is used by the scene that names it, and that image matches `rtc render` of the edited
 //   scene with the file beside it;
 // - without WebGPU (navigator.gpu removed; or Chromium without --enable-unsafe-webgpu, whose
@@ -163,12 +164,12 @@ function nativeRender(scene, width, height, spp) {
   }
 }
 
-function compare(label, rgba, s, native) {
+function compare(label, rgba, s, native, minPsnr = 40) {
   const [width, height] = s.size;
   assert.deepEqual([native.width, native.height], [width, height], `${label}: sizes differ`);
   const { psnr, differing } = psnrRgbaRgb(rgba, native.rgb, width * height);
   console.log(`  ${label}: ${width}x${height} ${s.spp} spp, ${s.frameMs.toFixed(1)} ms per pass: PSNR ${psnr.toFixed(2)} dB against rtc render, ${differing} pixels differ`);
-  assert.ok(psnr >= 40, `${label}: PSNR ${psnr.toFixed(2)} dB < 40`);
+  assert.ok(psnr >= minPsnr, `${label}: PSNR ${psnr.toFixed(2)} dB < ${minPsnr}`);
 }
 
 const mean = (rgba) => rgba.reduce((sum, v, i) => (i % 4 === 3 ? sum : sum + v), 0) / ((rgba.length / 4) * 3);
@@ -335,6 +336,14 @@ if (gpu) {
         // A mostly deterministic scene with a fetched texture (in shading's glossy and glass
         // paths, SwiftShader's float functions and lavapipe's take different random decisions at
         // 1 spp: 20 dB; Dawn on lavapipe, web/tests/render.mjs, renders shading bit for bit).
+        // cornell_box samples its area light: where SwiftShader's transcendental functions round
+        // otherwise than lavapipe's, samples land elsewhere on the light and shadow rays near the
+        // blocks' edges decide otherwise, so at 1 spp it is 27.8 dB here, not ≥ 40 (Dawn on
+        // lavapipe, web/tests/render.mjs, renders it bit for bit). Checked at a bound that a
+        // missing light, wall or block would fail.
+        if (value === 'cornell_box/scene.rt') {
+          compare('cornell_box', await canvasRgba(page), s, nativeRender(`examples/${value}`, s.size[0], s.size[1], s.spp), 25);
+        }
         if (value === 'three_spheres/scene.rt') {
           compare('three_spheres (sky.png fetched)', await canvasRgba(page), s, nativeRender(`examples/${value}`, s.size[0], s.size[1], s.spp));
         }
@@ -342,7 +351,7 @@ if (gpu) {
       }
     }
   }
-  ok('every example offered for rendering renders (assets fetched from URLs; three_spheres matches rtc render); every check-only one compiles and shows the renderer\'s error');
+  ok('every example offered for rendering renders (assets fetched from URLs; three_spheres matches rtc render, cornell_box within 25 dB on SwiftShader); every check-only one compiles and shows the renderer\'s error');
 
   // A dropped file: the OBJ joins the example's folder and the scene names it (as a Lambert
   // object: a mirror bunny's reflections follow its interpolated normals, where SwiftShader's and
@@ -372,6 +381,13 @@ if (gpu) {
   ok('a dropped OBJ is used by the scene that names it (matches rtc render with the file beside the scene)');
 } else {
   console.log('  skipped: rendering (no WebGPU adapter in Chromium; web/tests/render.mjs covers the renderer under Dawn)');
+}
+// Edit → WGSL in the page (check + compile of each clean source; the first is the page's first
+// compile after loading): figures for docs/bench/wasm_compile.md, not asserted.
+{
+  const times = (await state(page)).compileMs;
+  const warm = times.slice(1).sort((a, b) => a - b);
+  console.log(`  edit → WGSL in the page: first ${times[0]} ms, then median ${warm[warm.length >> 1]} ms, min ${warm[0]} ms over ${warm.length} compiles`);
 }
 await page.context().close();
 
