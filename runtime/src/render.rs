@@ -10,7 +10,8 @@
 //!    to the setup, not to the render time;
 //! 3. for scenes with custom geometry, the bounds kernel: instances uploaded in object order, one
 //!    invocation per object, boxes read back from `accum` and handed to the entities, which then
-//!    build the scene-level BVH;
+//!    build the scene-level BVH (the one read-back of the setup: `Renderer::new_async`, for the
+//!    web, awaits it instead of blocking);
 //! 4. the first upload of every buffer ([`GpuScene::upload`]), so data above a device limit fails
 //!    here with the buffer set's typed error naming the binding.
 //!
