@@ -31,6 +31,8 @@ use std::sync::{Arc, Mutex};
 const WORKER_STACK: usize = 64 << 20;
 
 fn main() -> ExitCode {
+    // Before any thread or GPU instance exists: lavapipe reads these when it loads.
+    rtc_runtime::gpu::apply_lavapipe_defaults();
     let cli = match args::Cli::try_parse() {
         Ok(cli) => cli,
         // `--help` and `--version` exit with 0, bad arguments with 2 (after printing the usage).

@@ -3,7 +3,7 @@
 //! with the same cache folder either takes the kernel from the disk cache or says the cache is
 //! unsupported (lavapipe keeps nothing in it); `rtc compile --timings` prints the compiler's phases
 //! and the driver's per-kernel time; `rtc bench --compile` measures a scene in a child process and
-//! writes JSON that parses.
+//! writes JSON that parses; `rtc` sets lavapipe's SIMD width on Mesa 25 unless the user did.
 
 mod common;
 
@@ -87,6 +87,72 @@ fn render_reports_kernels_and_the_disk_cache_on_a_second_run() {
         .map(|d| d.filter_map(Result::ok).map(|e| e.path()).collect())
         .unwrap_or_default();
     assert!(files.len() <= 1, "{files:?}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `rtc render` of the small scene with `LP_NATIVE_VECTOR_WIDTH` as given (`None`: unset).
+fn render_with_width(dir: &Path, width: Option<&str>) -> Output {
+    let scene = scene(dir);
+    let png = dir.join("width.png");
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_rtc"));
+    cmd.args(["render", s(&scene), "-o", s(&png), "--size", "8x8"])
+        .env("XDG_RUNTIME_DIR", std::env::temp_dir())
+        .env("NO_COLOR", "1")
+        .env_remove("LP_NATIVE_VECTOR_WIDTH");
+    if let Some(w) = width {
+        cmd.env("LP_NATIVE_VECTOR_WIDTH", w);
+    }
+    cmd.output().expect("run rtc")
+}
+
+/// The Mesa major version in an adapter line (`… driver llvmpipe Mesa 25.0.7-2~bpo12+1 …`).
+fn mesa_major(adapter: &str) -> Option<u32> {
+    let rest = &adapter[adapter.find("Mesa ")? + 5..];
+    rest.split('.').next()?.parse().ok()
+}
+
+/// `rtc` gives lavapipe before Mesa 26 128-bit batches unless the user chose a width, says so on
+/// the host line, and the driver gets it (llvmpipe's adapter name states its width); on other
+/// drivers it sets nothing.
+#[test]
+fn render_sets_llvmpipe_width_on_mesa_25_unless_the_user_did() {
+    let dir = scratch("pipelines", "width");
+    let ours = render_with_width(&dir, None);
+    if no_gpu(&ours) {
+        return;
+    }
+    let t = text(&ours);
+    assert!(ours.status.success(), "{t}");
+    let line = |t: &str, start: &str| {
+        t.lines()
+            .find(|l| l.starts_with(start))
+            .map(str::to_owned)
+            .unwrap_or_else(|| panic!("no `{start}` line in\n{t}"))
+    };
+    let host = line(&t, "host: ");
+    let adapter = line(&t, "adapter: ");
+    let lavapipe = adapter.contains("llvmpipe") && adapter.contains("(vulkan,");
+    let narrow = lavapipe && mesa_major(&adapter).is_some_and(|m| m < 26);
+    if narrow {
+        assert!(
+            host.ends_with("; LP_NATIVE_VECTOR_WIDTH=128 (rtc's default)"),
+            "{t}"
+        );
+        assert!(adapter.contains("128 bits"), "{t}");
+    } else {
+        assert!(!host.contains("LP_NATIVE_VECTOR_WIDTH"), "{t}");
+    }
+
+    let users = render_with_width(&dir, Some("256"));
+    let t = text(&users);
+    assert!(users.status.success(), "{t}");
+    assert!(
+        line(&t, "host: ").ends_with("; LP_NATIVE_VECTOR_WIDTH=256"),
+        "{t}"
+    );
+    if lavapipe {
+        assert!(line(&t, "adapter: ").contains("256 bits"), "{t}");
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -3,7 +3,8 @@
 # date), and prints that line. On a CPU driver the vector units decide the speed (issue 23), so
 # every figure these scripts print is preceded by it. Mesa's GALLIUM_OVERRIDE_CPU_CAPS,
 # LP_NATIVE_VECTOR_WIDTH and GALLIVM_PERF, which change what or how lavapipe compiles, are named
-# when set.
+# when set. (When LP_NATIVE_VECTOR_WIDTH is not set, `rtc` sets 128 for itself on lavapipe before
+# Mesa 26; the adapter line the scripts print names the width lavapipe used: "128 bits".)
 cpu=$(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | cut -d: -f2- | sed 's/^ *//')
 cpu=${cpu:-$(uname -m)}
 flags=$(grep -m1 '^flags' /proc/cpuinfo 2>/dev/null || true)

@@ -10,14 +10,101 @@
 //! Mesa's own overrides of what llvmpipe may use or do (`GALLIUM_OVERRIDE_CPU_CAPS`,
 //! `LP_NATIVE_VECTOR_WIDTH`, `GALLIVM_PERF`) are named when set, since they change the code
 //! lavapipe generates without changing the CPU.
+//!
+//! [`apply_lavapipe_defaults`] is the one setting rtc makes for the driver: 128-bit SIMD batches
+//! for lavapipe releases before Mesa 26 (`LP_NATIVE_VECTOR_WIDTH=128`) unless the user chose a
+//! width. There it halves the driver's compile of every kernel and leaves images byte-identical and
+//! frames as fast; on Mesa 26 it would make frames slower, so it is left alone (measured in
+//! docs/bench/compile.md and docs/bench/lavapipe.md). [`HostCpu`]'s line says when a value is rtc's
+//! default rather than the user's.
 
 use std::fmt;
+use std::sync::OnceLock;
+
+/// The variable of llvmpipe's SIMD width (bits per batch: 256 is Mesa's default on AVX2 and
+/// AVX-512 CPUs, 8 invocations a batch).
+pub const VECTOR_WIDTH_VAR: &str = "LP_NATIVE_VECTOR_WIDTH";
+
+/// The width [`apply_lavapipe_defaults`] gives lavapipe releases before [`NARROW_BEFORE_MESA`].
+pub const NARROW_WIDTH: &str = "128";
+
+/// The first Mesa release whose lavapipe keeps its own width. Mesa 25 turns each storage-buffer
+/// load into a loop over the batch's lanes, so a kernel's LLVM code grows with the batch: at 128
+/// bits (4 lanes) every example compiles 1.8 to 2.8 times faster, with byte-identical images and
+/// frame times within the machine's spread (0.70 to 1.14 of the 256-bit frame). Mesa 26.1 compiles
+/// those loads to one gather: its compile gains little from 4 lanes and its frames lose (the
+/// thesis frame 1.39 times slower).
+pub const NARROW_BEFORE_MESA: u32 = 26;
+
+/// Which variables [`apply_lavapipe_defaults`] set (the environment had none).
+static APPLIED: OnceLock<Vec<&'static str>> = OnceLock::new();
+
+/// Gives lavapipe 128-bit batches ([`VECTOR_WIDTH_VAR`]` = `[`NARROW_WIDTH`]) when the environment
+/// does not set the variable (an empty value counts as set: `LP_NATIVE_VECTOR_WIDTH=` keeps Mesa's
+/// own choice) and the machine's Vulkan CPU adapter is lavapipe from a Mesa release before
+/// [`NARROW_BEFORE_MESA`]. Returns the names it set.
+///
+/// It asks the Vulkan driver first (a Vulkan instance made and dropped; lavapipe reads the width
+/// again for every instance), so it costs one adapter enumeration. Call it first thing in `main`,
+/// before any other thread starts and before the wgpu `Instance` the program renders with:
+/// changing the environment while another thread reads it is undefined behaviour in most C
+/// libraries. Later calls change nothing. Drivers other than lavapipe ignore the variable.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn apply_lavapipe_defaults() -> &'static [&'static str] {
+    APPLIED.get_or_init(|| {
+        if std::env::var_os(VECTOR_WIDTH_VAR).is_some() {
+            return Vec::new();
+        }
+        let narrow = lavapipe_driver_info().is_some_and(|info| wants_narrow_batches(&info));
+        if !narrow {
+            return Vec::new();
+        }
+        std::env::set_var(VECTOR_WIDTH_VAR, NARROW_WIDTH);
+        vec![VECTOR_WIDTH_VAR]
+    })
+}
+
+/// The variables [`apply_lavapipe_defaults`] set in this process (empty before it runs). A child
+/// process that may run on another driver should not inherit them: remove them from its
+/// environment, and its own `main` chooses for its driver.
+pub fn lavapipe_defaults_applied() -> &'static [&'static str] {
+    APPLIED.get().map_or(&[], Vec::as_slice)
+}
+
+/// The `driver_info` of the first Vulkan CPU adapter that is llvmpipe (lavapipe), e.g.
+/// `Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)`.
+#[cfg(not(target_arch = "wasm32"))]
+fn lavapipe_driver_info() -> Option<String> {
+    let mut descriptor = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
+    descriptor.backends = wgpu::Backends::VULKAN;
+    let instance = wgpu::Instance::new(descriptor);
+    pollster::block_on(instance.enumerate_adapters(wgpu::Backends::VULKAN))
+        .iter()
+        .map(wgpu::Adapter::get_info)
+        .find(|info| info.device_type == wgpu::DeviceType::Cpu && info.name.starts_with("llvmpipe"))
+        .map(|info| info.driver_info)
+}
+
+/// Whether lavapipe with this `driver_info` gets 128-bit batches: Mesa before
+/// [`NARROW_BEFORE_MESA`]. A string without a Mesa version gets nothing.
+#[cfg(not(target_arch = "wasm32"))]
+fn wants_narrow_batches(driver_info: &str) -> bool {
+    mesa_major(driver_info).is_some_and(|major| major < NARROW_BEFORE_MESA)
+}
+
+/// The major version of `Mesa X.Y.Z…` in a driver string.
+#[cfg(not(target_arch = "wasm32"))]
+fn mesa_major(driver_info: &str) -> Option<u32> {
+    let rest = &driver_info[driver_info.find("Mesa ")? + "Mesa ".len()..];
+    let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
+    digits.parse().ok()
+}
 
 /// Mesa's variables that change what llvmpipe compiles for, or how (`GALLIVM_PERF=nopt` turns
 /// LLVM's optimisation passes off); named in [`HostCpu`]'s line when set.
 const MESA_CPU_VARIABLES: [&str; 3] = [
     "GALLIUM_OVERRIDE_CPU_CAPS",
-    "LP_NATIVE_VECTOR_WIDTH",
+    VECTOR_WIDTH_VAR,
     "GALLIVM_PERF",
 ];
 
@@ -31,7 +118,8 @@ pub struct HostCpu {
     /// The vector extensions that decide a CPU driver's speed, present on this CPU: `AVX2`,
     /// `AVX-512` (x86-64 only; empty elsewhere).
     pub vector: Vec<&'static str>,
-    /// Mesa variables that restrict what llvmpipe uses (`NAME=value`), set in this process.
+    /// Mesa variables that restrict what llvmpipe uses (`NAME=value`), set in this process; those
+    /// [`apply_lavapipe_defaults`] set are marked `(rtc's default)`.
     pub mesa_overrides: Vec<String>,
 }
 
@@ -47,7 +135,14 @@ impl HostCpu {
             .iter()
             .filter_map(|name| {
                 let value = std::env::var(name).ok()?;
-                (!value.is_empty()).then(|| format!("{name}={value}"))
+                let ours = APPLIED.get().is_some_and(|set| set.contains(name));
+                (!value.is_empty()).then(|| {
+                    if ours {
+                        format!("{name}={value} (rtc's default)")
+                    } else {
+                        format!("{name}={value}")
+                    }
+                })
             })
             .collect();
         Self {
@@ -156,6 +251,21 @@ mod tests {
                 "AMD EPYC 7B13, 2 threads; GALLIUM_OVERRIDE_CPU_CAPS=avx"
             );
         }
+    }
+
+    #[test]
+    fn only_mesa_releases_before_26_get_narrow_batches() {
+        assert_eq!(mesa_major("Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)"), Some(25));
+        assert_eq!(mesa_major("Mesa 26.1.6-1~bpo13+1 (LLVM 19.1.7)"), Some(26));
+        assert_eq!(mesa_major("Mesa 22.3.6"), Some(22));
+        assert!(wants_narrow_batches("Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)"));
+        assert!(wants_narrow_batches("Mesa 22.3.6"));
+        assert!(!wants_narrow_batches("Mesa 26.1.6-1~bpo13+1 (LLVM 19.1.7)"));
+        assert!(!wants_narrow_batches("Mesa 27.0.0-devel"));
+        // No version, or not Mesa: nothing.
+        assert!(!wants_narrow_batches(""));
+        assert!(!wants_narrow_batches("Mesa devel"));
+        assert!(!wants_narrow_batches("535.104.05"));
     }
 
     #[test]

@@ -40,7 +40,11 @@ use web_time::Instant;
 pub use adapter::list_adapters;
 pub use adapter::{AdapterChoice, AdapterChoiceParseError, AdapterDescription};
 pub use buffers::{BufferError, BufferLimits, BufferSet, UploadOutcome, UploadStats};
-pub use cpu::HostCpu;
+#[cfg(not(target_arch = "wasm32"))]
+pub use cpu::apply_lavapipe_defaults;
+pub use cpu::{
+    lavapipe_defaults_applied, HostCpu, NARROW_BEFORE_MESA, NARROW_WIDTH, VECTOR_WIDTH_VAR,
+};
 pub use dispatch::{
     dispatch_once, plan_tiles, read_buffer, read_vec4_f32, DispatchError, DispatchReport,
     RoundKernels, RoundsReport, TileConfig, TileDispatcher, TileParams, TILE_PARAMS_WGSL,

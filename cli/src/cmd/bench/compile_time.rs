@@ -14,6 +14,9 @@
 //!   `INV_PI / 9.0`), and the watch reports the edit-to-preview time and which kernels it
 //!   compiled and which it reused.
 //!
+//! `RTC_BENCH_RUNNER` (a command prefix, e.g. `bash docs/bench/current_lavapipe.sh`) starts every
+//! child through another program, so the same benchmark measures another driver.
+//!
 //! Each measurement runs once per execution model (`--exec`, default both), passed to the child
 //! `rtc render --exec` / `rtc watch --exec`. Prints a table; `--json FILE` writes every figure. No
 //! figure is invented: a child that fails is a row with its error.
@@ -122,9 +125,27 @@ pub fn scenes(path: &Path) -> Result<Vec<(String, PathBuf)>, String> {
     Ok(out)
 }
 
-/// A child `rtc` with the cold-cache environment.
+/// A command prefix that runs each child (words split at whitespace), e.g. `bash
+/// docs/bench/current_lavapipe.sh` to measure another Mesa release; unset or empty: none.
+pub const RUNNER_ENV: &str = "RTC_BENCH_RUNNER";
+
+/// A child `rtc` with the cold-cache environment, started through [`RUNNER_ENV`] when it is set.
 fn child(exe: &Path) -> Command {
-    let mut cmd = Command::new(exe);
+    let runner = std::env::var(RUNNER_ENV).unwrap_or_default();
+    let mut words = runner.split_whitespace();
+    let mut cmd = match words.next() {
+        Some(program) => {
+            let mut c = Command::new(program);
+            c.args(words).arg(exe);
+            c
+        }
+        None => Command::new(exe),
+    };
+    // The child chooses lavapipe's defaults for the driver it runs on (the runner may give it
+    // another Mesa release), so what this process set for itself is not passed on.
+    for name in rtc_runtime::gpu::lavapipe_defaults_applied() {
+        cmd.env_remove(name);
+    }
     cmd.env("MESA_SHADER_CACHE_DISABLE", "true")
         .env(rtc_runtime::gpu::PIPELINE_CACHE_ENV, "off")
         .args(["--color", "never"]);
