@@ -31,13 +31,15 @@ use std::sync::{Arc, Mutex};
 const WORKER_STACK: usize = 64 << 20;
 
 fn main() -> ExitCode {
-    // Before any thread or GPU instance exists: lavapipe reads these when it loads.
-    rtc_runtime::gpu::apply_lavapipe_defaults();
     let cli = match args::Cli::try_parse() {
         Ok(cli) => cli,
         // `--help` and `--version` exit with 0, bad arguments with 2 (after printing the usage).
         Err(e) => e.exit(),
     };
+    // Before any other thread or GPU instance exists: lavapipe reads these when it loads.
+    if cli.command.uses_gpu() {
+        rtc_runtime::gpu::apply_lavapipe_defaults();
+    }
     run_guarded(cli).into()
 }
 

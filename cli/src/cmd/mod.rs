@@ -48,6 +48,19 @@ pub enum Command {
     View(view::Args),
 }
 
+impl Command {
+    /// Whether the command runs kernels on a GPU (and so wants
+    /// [`rtc_runtime::gpu::apply_lavapipe_defaults`], which costs an adapter enumeration): every
+    /// command but `check`, and `compile` only with `--timings driver`.
+    pub fn uses_gpu(&self) -> bool {
+        match self {
+            Command::Check(_) => false,
+            Command::Compile(args) => matches!(args.timings, Some(compile::Timings::Driver)),
+            _ => true,
+        }
+    }
+}
+
 /// What every subcommand gets besides its own arguments.
 pub struct Context {
     /// The shared options as given.
