@@ -36,8 +36,8 @@ pub const NARROW_WIDTH: &str = "128";
 /// thesis frame 1.39 times slower).
 pub const NARROW_BEFORE_MESA: u32 = 26;
 
-/// Which variables [`apply_lavapipe_defaults`] set (the environment had none).
-static APPLIED: OnceLock<Vec<&'static str>> = OnceLock::new();
+/// Whether [`apply_lavapipe_defaults`] set [`VECTOR_WIDTH_VAR`] (the environment had none).
+static APPLIED: OnceLock<bool> = OnceLock::new();
 
 /// Gives lavapipe 128-bit batches ([`VECTOR_WIDTH_VAR`]` = `[`NARROW_WIDTH`]) when the environment
 /// does not set the variable (an empty value counts as set: `LP_NATIVE_VECTOR_WIDTH=` keeps Mesa's
@@ -52,37 +52,39 @@ static APPLIED: OnceLock<Vec<&'static str>> = OnceLock::new();
 #[cfg(not(target_arch = "wasm32"))]
 pub fn apply_lavapipe_defaults() -> &'static [&'static str] {
     APPLIED.get_or_init(|| {
-        if std::env::var_os(VECTOR_WIDTH_VAR).is_some() {
-            return Vec::new();
+        let narrow = std::env::var_os(VECTOR_WIDTH_VAR).is_none()
+            && lavapipe_driver_info().is_some_and(|info| wants_narrow_batches(&info));
+        if narrow {
+            std::env::set_var(VECTOR_WIDTH_VAR, NARROW_WIDTH);
         }
-        let narrow = lavapipe_driver_info().is_some_and(|info| wants_narrow_batches(&info));
-        if !narrow {
-            return Vec::new();
-        }
-        std::env::set_var(VECTOR_WIDTH_VAR, NARROW_WIDTH);
-        vec![VECTOR_WIDTH_VAR]
-    })
+        narrow
+    });
+    lavapipe_defaults_applied()
 }
 
 /// The variables [`apply_lavapipe_defaults`] set in this process (empty before it runs). A child
 /// process that may run on another driver should not inherit them: remove them from its
 /// environment, and its own `main` chooses for its driver.
 pub fn lavapipe_defaults_applied() -> &'static [&'static str] {
-    APPLIED.get().map_or(&[], Vec::as_slice)
+    if APPLIED.get() == Some(&true) {
+        &[VECTOR_WIDTH_VAR]
+    } else {
+        &[]
+    }
 }
 
 /// The `driver_info` of the first Vulkan CPU adapter that is llvmpipe (lavapipe), e.g.
 /// `Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)`.
 #[cfg(not(target_arch = "wasm32"))]
 fn lavapipe_driver_info() -> Option<String> {
-    let mut descriptor = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
-    descriptor.backends = wgpu::Backends::VULKAN;
-    let instance = wgpu::Instance::new(descriptor);
-    pollster::block_on(instance.enumerate_adapters(wgpu::Backends::VULKAN))
-        .iter()
-        .map(wgpu::Adapter::get_info)
-        .find(|info| info.device_type == wgpu::DeviceType::Cpu && info.name.starts_with("llvmpipe"))
-        .map(|info| info.driver_info)
+    let vulkan = super::AdapterChoice {
+        backend: Some(wgpu::Backend::Vulkan),
+        ..super::AdapterChoice::default()
+    };
+    super::list_adapters(&vulkan)
+        .into_iter()
+        .find(|a| a.device_type == wgpu::DeviceType::Cpu && a.name.starts_with("llvmpipe"))
+        .map(|a| a.driver_info)
 }
 
 /// Whether lavapipe with this `driver_info` gets 128-bit batches: Mesa before
@@ -135,7 +137,7 @@ impl HostCpu {
             .iter()
             .filter_map(|name| {
                 let value = std::env::var(name).ok()?;
-                let ours = APPLIED.get().is_some_and(|set| set.contains(name));
+                let ours = lavapipe_defaults_applied().contains(name);
                 (!value.is_empty()).then(|| {
                     if ours {
                         format!("{name}={value} (rtc's default)")
