@@ -1042,10 +1042,19 @@ impl<'g> Renderer<'g> {
             .chain(gpu.take_warnings())
             .collect();
         if counters.shadow_overflow > 0 {
+            let limit = match self.kernels {
+                Kernels::Mega(_) => format!(
+                    "a light program's sample records at most {} (`LIGHT_QUERIES`)",
+                    rtc_compiler::kernel::intrinsics::LIGHT_QUERIES
+                ),
+                Kernels::Wavefront { .. } => format!(
+                    "a shading step of the wavefront model records at most {} (render with the megakernel for this scene)",
+                    rtc_compiler::kernel::wavefront::SHADOW_QUERIES
+                ),
+            };
             warnings.push(format!(
-                "{} shadow queries were answered \"unoccluded\" without tracing: a shading step of the wavefront model records at most {} (render with the megakernel for this scene)",
-                counters.shadow_overflow,
-                rtc_compiler::kernel::wavefront::SHADOW_QUERIES
+                "{} shadow queries were answered \"unoccluded\" without tracing: {limit}",
+                counters.shadow_overflow
             ));
         }
         let samples = passes.saturating_mul(self.samples_per_pass);

@@ -18,6 +18,10 @@
 //! - the wavefront execution model against the megakernel, on every scene of the suite in small
 //!   tiles (bit-identical on lavapipe), on a shading step whose second shadow query depends on the
 //!   first answer (replayed until exact), and past the shadow queries one step records (warned).
+//! - a `@light` program whose shadow queries depend on each other's answers: the megakernel defers
+//!   them to `sample_light` and runs the program again until every answer is known, so it must
+//!   give the wavefront model's image pixel for pixel; past `LIGHT_QUERIES` queries in one light
+//!   sample the megakernel warns.
 //!
 //! A test skips only when there is no adapter at all, and then says so on stderr.
 
@@ -346,10 +350,11 @@ fn a_shading_step_whose_queries_depend_on_answers_is_replayed_until_exact() {
     else {
         return;
     };
-    // `dependent_shadows.rt`: the second query's direction depends on the first answer, so a
-    // pixel whose way up is blocked records a query on the first run that the replay does not make
-    // again; its colours (red where the way up is clear, blue 0.5 or 1 where it is blocked) must
-    // come out as the megakernel's, pixel for pixel, and both branches must occur.
+    // `dependent_shadows.rt`: the later queries' directions depend on the first answer, so a
+    // pixel whose slanted way up is blocked records a query on the first run that the replay does
+    // not make again; its colours (red where the way up is clear, blue 0.5 or 1 where it is
+    // blocked) must come out as the megakernel's, pixel for pixel, and both branches must occur on
+    // the floor (the slabs, green, do not count).
     let file = scene("dependent_shadows").set("SIDE", "24u");
     let (mega, wave, stats) = both_models(&gpu, "dependent_shadows", &file, [SIDE, SIDE]);
     let off = differing(&mega, &wave, 1e-5);
@@ -358,8 +363,8 @@ fn a_shading_step_whose_queries_depend_on_answers_is_replayed_until_exact() {
     for y in 0..SIDE {
         for x in 0..SIDE {
             let p = px(&wave, x, y);
-            if p[2] == 1.0 && p[0] == 0.0 && p[1] == 0.0 {
-                continue; // the background
+            if p == [0.0, 0.0, 1.0] || p == [0.0, 1.0, 0.0] {
+                continue; // the background, a slab
             }
             branches[usize::from(p[0] == 0.0)] += 1;
         }
@@ -447,4 +452,86 @@ fn a_material_edit_recompiles_only_the_shade_stage() {
         .collect();
     assert_eq!(compiled, ["rtc wf_shade"]);
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_light_programs_dependent_queries_are_answered_as_if_traced_in_place() {
+    let Some(gpu) =
+        gpu_or_skip("a_light_programs_dependent_queries_are_answered_as_if_traced_in_place")
+    else {
+        return;
+    };
+    // `light_shadows.rt`, scene `branchy_light`: the light's later queries depend on its first
+    // answer, and it and the material draw random numbers around them. The megakernel defers the
+    // light program's queries to `sample_light` and runs it again until every answer is known;
+    // the wavefront model replays the whole shading step. Both must give the same image, pixel
+    // for pixel, with both branches present and no query left unanswered.
+    let file = SceneFile::open("kernel_features/light_shadows.rt").scene("branchy_light");
+    let (mega, wave, stats) = both_models(&gpu, "branchy_light", &file, [SIDE, SIDE]);
+    let off = differing(&mega, &wave, 1e-5);
+    assert!(off.is_empty(), "{} pixels differ: {:?}", off.len(), off);
+    let mut branches = [0usize; 2];
+    for y in 0..SIDE {
+        for x in 0..SIDE {
+            let p = px(&mega, x, y);
+            if p == [0.0, 0.0, 1.0] || p == [0.0, 1.0, 0.0] {
+                continue; // the background, a slab
+            }
+            // Red 1 where the way up is clear; at most 0.25 + 0.125 where it is blocked.
+            branches[usize::from(p[0] < 0.5)] += 1;
+        }
+    }
+    assert!(
+        branches[0] > 0 && branches[1] > 0,
+        "both branches must occur: {branches:?}"
+    );
+    assert!(stats.warnings.is_empty(), "{:?}", stats.warnings);
+    assert_eq!(mega.count_nonfinite(), 0);
+}
+
+#[test]
+fn a_light_sample_past_the_queries_it_records_is_warned_about() {
+    use rtc_compiler::kernel::ExecModel;
+    let Some(gpu) = gpu_or_skip("a_light_sample_past_the_queries_it_records_is_warned_about")
+    else {
+        return;
+    };
+    let many = |queries: u32| {
+        SceneFile::open("kernel_features/light_shadows.rt")
+            .scene("many_light")
+            .set("QUERIES", format!("{queries}u"))
+    };
+    // Within what a wavefront shading step records: both models give the same image.
+    let steps = rtc_compiler::kernel::wavefront::SHADOW_QUERIES;
+    let (mega, wave, stats) = both_models(&gpu, "many_light_step", &many(steps), [16, 16]);
+    assert!(stats.warnings.is_empty(), "{:?}", stats.warnings);
+    assert!(differing(&mega, &wave, 1e-5).is_empty());
+    // The megakernel answers `LIGHT_QUERIES` queries of one light sample exactly, and warns past
+    // them, naming the limit.
+    let limit = rtc_compiler::kernel::intrinsics::LIGHT_QUERIES;
+    let megakernel = |name: &str, queries: u32| {
+        let dir = temp_dir("features", name);
+        let compiled = many(queries).compile(&dir);
+        let options = RenderOptions {
+            samples: Some(1),
+            exec: Some(ExecModel::Megakernel),
+            ..RenderOptions::default()
+        };
+        let (image, stats) = common::scene::render(&gpu, &compiled, options, name);
+        let _ = std::fs::remove_dir_all(&dir);
+        assert_eq!(image.count_nonfinite(), 0, "{name}");
+        stats
+    };
+    let at = megakernel("many_light_at_limit", limit);
+    assert!(at.warnings.is_empty(), "{:?}", at.warnings);
+    let over = megakernel("many_light_over_limit", limit + 4);
+    let warning = over
+        .warnings
+        .iter()
+        .find(|w| w.contains("answered \"unoccluded\""))
+        .unwrap_or_else(|| panic!("no overflow warning: {:?}", over.warnings));
+    assert!(
+        warning.contains("light program") && warning.contains(&limit.to_string()),
+        "{warning}"
+    );
 }

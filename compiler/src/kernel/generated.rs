@@ -409,6 +409,7 @@ pub fn config_module_with(c: &KernelConfig, debug: Option<super::DebugMode>) -> 
         ("TRAVERSAL_STACK", c.tlas_stack + c.blas_stack),
         ("WORKGROUP_WIDTH", super::RENDER_WORKGROUP[0]),
         ("WORKGROUP_HEIGHT", super::RENDER_WORKGROUP[1]),
+        ("LIGHT_QUERIES", super::intrinsics::LIGHT_QUERIES),
     ];
     for (name, v) in u.into_iter().chain(super::wavefront::config_constants(c)) {
         let _ = writeln!(out, "const {name}: u32 = {v}u;");

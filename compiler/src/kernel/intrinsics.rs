@@ -46,8 +46,9 @@ pub struct KernelHooks<'a> {
     pub replay_shadows: bool,
 }
 
-/// Words of the private scratch registers (`scratch_load`, `scratch_store`).
-pub const SCRATCH_WORDS: u32 = 12;
+/// Words of the private scratch registers (`scratch_load`, `scratch_store`; `stdlib/kernel/paths.rt`
+/// names them).
+pub const SCRATCH_WORDS: u32 = 22;
 
 /// The kernel function (from `stdlib/kernel/`) named `name`.
 pub fn kernel_fn(program: &Program, name: &str) -> Result<FnId, LowerError> {
@@ -90,6 +91,30 @@ fn lit_u32(fb: &mut FnBuilder, v: u32) -> Handle<Expression> {
     fb.expr(Expression::Literal(Literal::U32(v)), Span::UNDEFINED)
 }
 
+/// Shadow queries one light sample answers exactly when a light program's `shadow` calls are
+/// deferred (`sample_light_deferred` in `stdlib/kernel/trace.rt`; the answers are bits of one
+/// word); later ones are answered "unoccluded" and counted in `COUNTER_SHADOW_OVERFLOW`.
+pub const LIGHT_QUERIES: u32 = 32;
+
+impl KernelHooks<'_> {
+    /// Whether `shadow(…)` calls written in `@light` programs are deferred to `sample_light`
+    /// (`sample_light_deferred` in `stdlib/kernel/trace.rt`): in the megakernel, whose driver
+    /// inlines every call, a light program's shadow traversal would otherwise be copied once for
+    /// every light type at every `sample_light` call, that is once per material and light type
+    /// (`lights`: 4 copies; `gltf_scene`: 4). Not with `absorb`, whose answers are transmittances
+    /// rather than bits, nor in the wavefront model, which replays every `shadow` call anyway.
+    fn defers_light_shadows_at_all(&self) -> bool {
+        !self.replay_shadows && !self.config.has_absorb
+    }
+
+    /// Whether a `shadow(…)` call in function `caller` is deferred: the caller is a `@light`
+    /// program itself (a helper it calls traces in place, which is correct, only not shared).
+    fn defers_light_shadows(&self, caller: FnId) -> bool {
+        self.defers_light_shadows_at_all()
+            && self.program.functions[caller].program == Some(ProgramKind::Light)
+    }
+}
+
 impl Intrinsics for KernelHooks<'_> {
     fn lower(
         &mut self,
@@ -102,10 +127,13 @@ impl Intrinsics for KernelHooks<'_> {
             fb.call(f, call.args.to_vec(), false, call.span);
             return Ok(None);
         }
-        let name = if call.builtin == Builtin::Shadow && self.replay_shadows {
-            Some("shadow_replay")
-        } else {
-            user_intrinsic_fn(call.builtin)
+        let name = match call.builtin {
+            Builtin::Shadow if self.replay_shadows => Some("shadow_replay"),
+            Builtin::Shadow if self.defers_light_shadows(call.caller) => Some("shadow_deferred"),
+            Builtin::SampleLight if self.defers_light_shadows_at_all() => {
+                Some("sample_light_deferred")
+            }
+            b => user_intrinsic_fn(b),
         };
         let name = name.ok_or_else(|| {
             kernel_error(format!(

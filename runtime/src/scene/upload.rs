@@ -30,8 +30,9 @@ pub struct Counters {
     pub nonfinite: u32,
     /// `COUNTER_RAYS`: rays traced (camera, secondary and shadow), wrapping.
     pub rays: u32,
-    /// `COUNTER_SHADOW_OVERFLOW`: the wavefront model's shadow queries beyond what a shading
-    /// step records, answered "unoccluded".
+    /// `COUNTER_SHADOW_OVERFLOW`: shadow queries answered "unoccluded" without tracing: past
+    /// what a shading step of the wavefront model records, or past what one light program's
+    /// sample records in the megakernel.
     pub shadow_overflow: u32,
 }
 use super::gpu_types::{element_size, record, struct_size, FrameUniforms, GpuInstance};

@@ -11,8 +11,8 @@ struct _mslBufferSizes {
     uint size7;
     uint size9;
     uint size10;
-    uint size16;
-    uint size17;
+    uint size14;
+    uint size18;
 };
 
 struct TileParams {
@@ -143,11 +143,15 @@ struct LightSample {
     metal::packed_float3 radiance;
     float pdf;
 };
+struct type_16 {
+    uint inner[22];
+};
 struct DirectionalLight {
     metal::float3 direction;
     metal::packed_float3 color;
     float intensity;
 };
+typedef metal::atomic_uint type_18[1];
 struct PointLight {
     metal::float3 position;
     metal::packed_float3 color;
@@ -164,7 +168,7 @@ struct GltfMaterial {
     char _pad4[4];
     metal::float3 emissive;
 };
-struct type_16 {
+struct type_19 {
     metal::float3 inner[1];
 };
 struct Frame {
@@ -174,16 +178,15 @@ struct Frame {
     uint slot;
     char _pad4[8];
     metal::float3 sum;
-    type_16 dirs;
-    type_16 weights;
+    type_19 dirs;
+    type_19 weights;
     uint count;
     uint next;
     char _pad9[8];
 };
-struct type_17 {
+struct type_20 {
     Frame inner[4];
 };
-typedef metal::atomic_uint type_20[1];
 constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint NO_HIT = 4294967295u;
@@ -217,6 +220,13 @@ constant bool HAS_SECONDARY_RAYS = false;
 constant bool HAS_BACKGROUND = true;
 constant float PBR_MIN_ALPHA = 0.001;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
+constant uint SCRATCH_RESOLVED = 3u;
+constant uint SCRATCH_LIGHT_BITS = 11u;
+constant uint SCRATCH_QUERY = 2u;
+constant uint SCRATCH_PENDING = 4u;
+constant uint LIGHT_QUERIES = 32u;
+constant uint COUNTER_SHADOW_OVERFLOW = 3u;
+constant uint SCRATCH_LIGHT_QUERY = 12u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant float INV_PI = 0.31830987;
 constant uint FLAG_MEDIUM = 4u;
@@ -502,15 +512,15 @@ metal::float3 hit_triangle(
     float cx = c_8[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_8[metal::min(r_1.kz, 2u)]);
     float cy = c_8[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_8[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
-    float v_1 = (ax * cy) - (ay * cx);
+    float v_2 = (ax * cy) - (ay * cx);
     float w = (bx * ay) - (by * ax);
-    bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
-    float det = (u + v_1) + w;
+    bool outside = (((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0));
+    float det = (u + v_2) + w;
     float rcp = 1.0 / det;
-    float t_6 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_8[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_6 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_8[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_13 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_13 ? metal::float3(t_6, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_13 ? metal::float3(t_6, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 Triangle load_triangle(
@@ -1437,116 +1447,69 @@ DirectionalLight load_DirectionalLight(
     return DirectionalLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), as_type<float>(_e43)};
 }
 
-metal::float3 step_toward(
-    metal::float3 x_4,
-    metal::float3 s
+void scratch_store3f(
+    uint i_1,
+    metal::float3 v_1,
+    thread type_16& scratch
 ) {
-    metal::uint3 bits_1 = as_type<metal::uint3>(x_4);
-    metal::bool3 up_1 = (metal::sign(x_4) * metal::sign(s)) > metal::float3(0.0);
-    metal::float3 stepped = as_type<metal::float3>(metal::select(bits_1 - metal::uint3(1u), bits_1 + metal::uint3(1u), up_1));
-    metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s > metal::float3(0.0));
-    metal::float3 moved = metal::select(stepped, from_zero, x_4 == metal::float3(0.0));
-    return metal::select(x_4, moved, !((s == metal::float3(0.0))));
+    metal::uint3 b_9 = as_type<metal::uint3>(v_1);
+    scratch.inner[metal::min(i_1, 21u)] = b_9.x;
+    scratch.inner[metal::min(i_1 + 1u, 21u)] = b_9.y;
+    scratch.inner[metal::min(i_1 + 2u, 21u)] = b_9.z;
+    return;
 }
 
-metal::float3 offset_origin(
-    metal::float3 p_5,
-    metal::float3 n_4,
-    float error
-) {
-    float d_4 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
-    metal::float3 offset_13 = n_4 * metal::float3(d_4);
-    metal::float3 _e17 = step_toward(p_5 + offset_13, offset_13);
-    return _e17;
-}
-
-Ray shadow_ray(
+float shadow_deferred(
     metal::float3 position,
     metal::float3 normal,
     metal::float3 dir,
     float dist,
-    thread uint& F32_INF,
-    thread float& hit_error
-) {
-    metal::float3 n_5 = {};
-    float tmax_4 = {};
-    n_5 = normal;
-    metal::float3 _e5 = n_5;
-    if (metal::dot(dir, _e5) < 0.0) {
-        metal::float3 _e9 = n_5;
-        n_5 = -(_e9);
-    }
-    metal::float3 a_9 = metal::abs(position);
-    float _e13 = hit_error;
-    float error_3 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_9.x, a_9.y), a_9.z));
-    metal::float3 _e22 = n_5;
-    metal::float3 _e23 = offset_origin(position, _e22, error_3);
-    uint _e25 = F32_INF;
-    tmax_4 = as_type<float>(_e25);
-    uint _e29 = F32_INF;
-    if (dist < as_type<float>(_e29)) {
-        metal::float3 light = position + (dir * metal::float3(dist));
-        float dd_1 = metal::dot(dir, dir);
-        float along_1 = metal::dot(light - _e23, dir) / dd_1;
-        metal::float3 l_2 = metal::abs(position) + metal::abs(dir * metal::float3(dist));
-        tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_2.x, l_2.y), l_2.z)) / metal::sqrt(dd_1));
-    }
-    float _e59 = tmax_4;
-    return Ray {_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u};
-}
-
-float shadow_query(
-    metal::float3 position_1,
-    metal::float3 normal_1,
-    metal::float3 dir_1,
-    float dist_1,
-    constant TileParams& tile,
-    constant FrameUniforms& frame,
-    device type_4 const& params,
-    thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
-    thread uint& ray_count,
+    thread type_16& scratch,
+    device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
-    Candidate _e6 = intersect_scene(_e4, true, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-    return (_e6.slot != NO_HIT) ? 0.0 : 1.0;
+    uint i_6 = scratch.inner[metal::min(SCRATCH_QUERY, 21u)];
+    scratch.inner[metal::min(SCRATCH_QUERY, 21u)] = i_6 + 1u;
+    uint _e22 = scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)];
+    if (i_6 < _e22) {
+        uint _e29 = scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)];
+        return static_cast<float>((_e29 >> (i_6 & 31u)) & 1u);
+    }
+    uint _e41 = scratch.inner[metal::min(SCRATCH_PENDING, 21u)];
+    if (_e41 != 0u) {
+        return 1.0;
+    }
+    if (i_6 >= LIGHT_QUERIES) {
+        metal::atomic_fetch_add_explicit(&counters[metal::min(COUNTER_SHADOW_OVERFLOW, 3u)], 1u, metal::memory_order_relaxed);
+        return 1.0;
+    }
+    scratch_store3f(SCRATCH_LIGHT_QUERY, position, scratch);
+    scratch_store3f(SCRATCH_LIGHT_QUERY + 3u, normal, scratch);
+    scratch_store3f(SCRATCH_LIGHT_QUERY + 6u, dir, scratch);
+    scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 21u)] = as_type<uint>(dist);
+    scratch.inner[metal::min(SCRATCH_PENDING, 21u)] = 1u;
+    return 1.0;
 }
 
 LightSample directional_light(
     DirectionalLight l,
-    metal::float3 position_2,
-    metal::float3 normal_2,
-    constant TileParams& tile,
-    constant FrameUniforms& frame,
-    device type_4 const& params,
+    metal::float3 position_1,
+    metal::float3 normal_1,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
-    thread uint& ray_count,
+    thread type_16& scratch,
+    device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 _e4 = normalize_vec3f(l.direction);
-    metal::float3 dir_4 = -(_e4);
-    if (metal::dot(dir_4, dir_4) == 0.0) {
+    metal::float3 dir_5 = -(_e4);
+    if (metal::dot(dir_5, dir_5) == 0.0) {
         uint _e14 = F32_INF;
         return LightSample {metal::float3(0.0, 1.0, 0.0), as_type<float>(_e14), metal::float3(0.0), 0.0};
     }
     uint _e21 = F32_INF;
-    float _e23 = shadow_query(position_2, normal_2, dir_4, as_type<float>(_e21), tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    float _e23 = shadow_deferred(position_1, normal_1, dir_5, as_type<float>(_e21), scratch, counters, _buffer_sizes);
     uint _e25 = F32_INF;
-    return LightSample {dir_4, as_type<float>(_e25), (l.color * metal::float3(l.intensity)) * metal::float3(_e23), 0.0};
+    return LightSample {dir_5, as_type<float>(_e25), (l.color * metal::float3(l.intensity)) * metal::float3(_e23), 0.0};
 }
 
 PointLight load_PointLight(
@@ -1568,64 +1531,46 @@ PointLight load_PointLight(
 
 LightSample point_light(
     PointLight l_1,
-    metal::float3 position_3,
-    metal::float3 normal_3,
-    constant TileParams& tile,
-    constant FrameUniforms& frame,
-    device type_4 const& params,
-    thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
-    thread uint& ray_count,
+    metal::float3 position_2,
+    metal::float3 normal_2,
+    thread type_16& scratch,
+    device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float strength = {};
-    metal::float3 to_light = l_1.position - position_3;
-    float dist_2 = metal::length(to_light);
-    metal::float3 dir_5 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
-    strength = l_1.intensity / metal::max(dist_2 * dist_2, 0.00000000000000000001);
+    metal::float3 to_light = l_1.position - position_2;
+    float dist_3 = metal::length(to_light);
+    metal::float3 dir_6 = to_light / metal::float3(metal::max(dist_3, 0.00000000000000000001));
+    strength = l_1.intensity / metal::max(dist_3 * dist_3, 0.00000000000000000001);
     if (l_1.range > 0.0) {
         float _e19 = strength;
-        strength = _e19 * (1.0 - metal::smoothstep(l_1.inner_range, l_1.range, dist_2));
+        strength = _e19 * (1.0 - metal::smoothstep(l_1.inner_range, l_1.range, dist_3));
     }
-    float _e26 = shadow_query(position_3, normal_3, dir_5, dist_2, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    float _e26 = shadow_deferred(position_2, normal_2, dir_6, dist_3, scratch, counters, _buffer_sizes);
     float _e28 = strength;
-    return LightSample {dir_5, dist_2, (l_1.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
+    return LightSample {dir_6, dist_3, (l_1.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
 }
 
 LightSample dispatch_light(
     uint type_id_3,
     uint offset_8,
-    metal::float3 position_4,
-    metal::float3 normal_4,
-    constant TileParams& tile,
-    constant FrameUniforms& frame,
+    metal::float3 position_3,
+    metal::float3 normal_3,
     device type_4 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
-    thread uint& ray_count,
+    thread type_16& scratch,
+    device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     switch(type_id_3) {
         case 0u: {
             DirectionalLight _e4 = load_DirectionalLight(offset_8, params, _buffer_sizes);
-            LightSample _e5 = directional_light(_e4, position_4, normal_4, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            LightSample _e5 = directional_light(_e4, position_3, normal_3, F32_INF, scratch, counters, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             PointLight _e6 = load_PointLight(offset_8, params, _buffer_sizes);
-            LightSample _e7 = point_light(_e6, position_4, normal_4, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            LightSample _e7 = point_light(_e6, position_3, normal_3, scratch, counters, _buffer_sizes);
             return _e7;
         }
         default: {
@@ -1635,10 +1580,79 @@ LightSample dispatch_light(
     return LightSample {};
 }
 
-LightSample sample_light_query(
-    uint i_1,
+metal::float3 scratch_load3f(
+    uint i_2,
+    thread type_16& scratch
+) {
+    uint _e5 = scratch.inner[metal::min(i_2, 21u)];
+    uint _e12 = scratch.inner[metal::min(i_2 + 1u, 21u)];
+    uint _e19 = scratch.inner[metal::min(i_2 + 2u, 21u)];
+    return as_type<metal::float3>(metal::uint3(_e5, _e12, _e19));
+}
+
+metal::float3 step_toward(
+    metal::float3 x_4,
+    metal::float3 s
+) {
+    metal::uint3 bits_2 = as_type<metal::uint3>(x_4);
+    metal::bool3 up_1 = (metal::sign(x_4) * metal::sign(s)) > metal::float3(0.0);
+    metal::float3 stepped = as_type<metal::float3>(metal::select(bits_2 - metal::uint3(1u), bits_2 + metal::uint3(1u), up_1));
+    metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s > metal::float3(0.0));
+    metal::float3 moved = metal::select(stepped, from_zero, x_4 == metal::float3(0.0));
+    return metal::select(x_4, moved, !((s == metal::float3(0.0))));
+}
+
+metal::float3 offset_origin(
+    metal::float3 p_5,
+    metal::float3 n_4,
+    float error
+) {
+    float d_4 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
+    metal::float3 offset_13 = n_4 * metal::float3(d_4);
+    metal::float3 _e17 = step_toward(p_5 + offset_13, offset_13);
+    return _e17;
+}
+
+Ray shadow_ray(
+    metal::float3 position_4,
+    metal::float3 normal_4,
+    metal::float3 dir_1,
+    float dist_1,
+    thread uint& F32_INF,
+    thread float& hit_error
+) {
+    metal::float3 n_5 = {};
+    float tmax_4 = {};
+    n_5 = normal_4;
+    metal::float3 _e5 = n_5;
+    if (metal::dot(dir_1, _e5) < 0.0) {
+        metal::float3 _e9 = n_5;
+        n_5 = -(_e9);
+    }
+    metal::float3 a_9 = metal::abs(position_4);
+    float _e13 = hit_error;
+    float error_3 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_9.x, a_9.y), a_9.z));
+    metal::float3 _e22 = n_5;
+    metal::float3 _e23 = offset_origin(position_4, _e22, error_3);
+    uint _e25 = F32_INF;
+    tmax_4 = as_type<float>(_e25);
+    uint _e29 = F32_INF;
+    if (dist_1 < as_type<float>(_e29)) {
+        metal::float3 light = position_4 + (dir_1 * metal::float3(dist_1));
+        float dd_1 = metal::dot(dir_1, dir_1);
+        float along_1 = metal::dot(light - _e23, dir_1) / dd_1;
+        metal::float3 l_2 = metal::abs(position_4) + metal::abs(dir_1 * metal::float3(dist_1));
+        tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_2.x, l_2.y), l_2.z)) / metal::sqrt(dd_1));
+    }
+    float _e59 = tmax_4;
+    return Ray {_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u};
+}
+
+float shadow_query(
     metal::float3 position_5,
     metal::float3 normal_5,
+    metal::float3 dir_2,
+    float dist_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
     device type_4 const& params,
@@ -1653,15 +1667,99 @@ LightSample sample_light_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    Ray _e4 = shadow_ray(position_5, normal_5, dir_2, dist_2, F32_INF, hit_error);
+    Candidate _e6 = intersect_scene(_e4, true, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    return (_e6.slot != NO_HIT) ? 0.0 : 1.0;
+}
+
+LightSample sample_light_deferred(
+    uint i_3,
+    metal::float3 position_6,
+    metal::float3 normal_6,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread float& hit_error,
+    device type_12 const& attributes,
+    device type_4 const& texels,
+    thread type_15& traversal_stack,
+    thread uint& ray_count,
+    thread type_16& scratch,
+    device type_18& counters,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint after = {};
+    uint resolved = {};
+    uint bits_1 = {};
     FrameUniforms frame_4 = frame;
-    if (i_1 >= frame_4.light_count) {
+    if (i_3 >= frame_4.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
-    uint _e22 = params[entry];
-    uint _e27 = params[entry + 1u];
-    LightSample _e28 = dispatch_light(_e22, _e27, position_5, normal_5, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-    return _e28;
+    uint entry = frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE);
+    uint type_id_7 = params[entry];
+    uint offset_14 = params[entry + 1u];
+    uint start = rng_state;
+    after = start;
+    resolved = 0u;
+    bits_1 = 0u;
+    scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        rng_state = start;
+        scratch.inner[metal::min(SCRATCH_QUERY, 21u)] = 0u;
+        scratch.inner[metal::min(SCRATCH_PENDING, 21u)] = 0u;
+        LightSample _e60 = dispatch_light(type_id_7, offset_14, position_6, normal_6, params, F32_INF, scratch, counters, _buffer_sizes);
+        uint _e66 = scratch.inner[metal::min(SCRATCH_PENDING, 21u)];
+        if (_e66 == 0u) {
+            uint _e69 = resolved;
+            if (_e69 > 0u) {
+                uint _e72 = after;
+                rng_state = _e72;
+            }
+            return _e60;
+        }
+        uint _e74 = resolved;
+        if (_e74 == 0u) {
+            uint _e78 = rng_state;
+            after = _e78;
+        }
+        uint _e79 = after;
+        rng_state = _e79;
+        metal::float3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY, scratch);
+        metal::float3 _e85 = scratch_load3f(SCRATCH_LIGHT_QUERY + 3u, scratch);
+        metal::float3 _e88 = scratch_load3f(SCRATCH_LIGHT_QUERY + 6u, scratch);
+        uint _e95 = scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 21u)];
+        float _e97 = shadow_query(_e82, _e85, _e88, as_type<float>(_e95), tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+        uint _e99 = rng_state;
+        after = _e99;
+        if (!((_e97 == 0.0))) {
+            uint _e108 = scratch.inner[metal::min(SCRATCH_QUERY, 21u)];
+            uint _e109 = resolved;
+            if (_e108 == (_e109 + 1u)) {
+                uint _e113 = after;
+                rng_state = _e113;
+                return _e60;
+            }
+            uint _e115 = bits_1;
+            uint _e117 = resolved;
+            bits_1 = _e115 | (1u << (_e117 & 31u));
+        }
+        uint _e122 = resolved;
+        resolved = _e122 + 1u;
+        uint _e126 = bits_1;
+        scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
+        uint _e132 = resolved;
+        scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)] = _e132;
+    }
+    return LightSample {};
 }
 
 metal::float3 pbr_fresnel(
@@ -1701,6 +1799,7 @@ metal::float3 gltf_radiance(
     Hit hit_6,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1711,39 +1810,41 @@ metal::float3 gltf_radiance(
     device type_4 const& texels,
     thread type_15& traversal_stack,
     thread uint& ray_count,
+    thread type_16& scratch,
+    device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 color = {};
-    uint i_2 = {};
+    uint i_4 = {};
     metal::float3 _e7 = shading_normal(ray_18, hit_6);
     metal::float3 _e9 = normalize_vec3f(ray_18.dir);
-    metal::float3 v_2 = -(_e9);
+    metal::float3 v_3 = -(_e9);
     float metal_ = metal::saturate(metallic);
     float _e12 = pbr_alpha2_(roughness_1);
     metal::float3 f0_1 = metal::mix(metal::float3(0.04), c_5, metal::float3(metal_));
-    float ndv_1 = metal::max(metal::dot(_e7, v_2), 0.0001);
+    float ndv_1 = metal::max(metal::dot(_e7, v_3), 0.0001);
     color = emissive;
     uint _e22 = light_count_query(frame);
-    i_2 = 0u;
-    uint2 loop_bound_4 = uint2(4294967295u);
+    i_4 = 0u;
+    uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
-        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e65 = i_2;
-            i_2 = _e65 + 1u;
+            uint _e65 = i_4;
+            i_4 = _e65 + 1u;
         }
         loop_init_2 = false;
-        uint _e24 = i_2;
+        uint _e24 = i_4;
         if (_e24 >= _e22) {
             break;
         }
-        uint _e26 = i_2;
-        LightSample _e29 = sample_light_query(_e26, hit_6.position, hit_6.geometric_normal, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+        uint _e26 = i_4;
+        LightSample _e29 = sample_light_deferred(_e26, hit_6.position, hit_6.geometric_normal, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, _buffer_sizes);
         float ndl_1 = metal::max(metal::dot(_e7, _e29.dir), 0.0);
-        metal::float3 _e36 = normalize_vec3f(_e29.dir + v_2);
-        metal::float3 _e38 = pbr_fresnel(f0_1, metal::dot(v_2, _e36));
+        metal::float3 _e36 = normalize_vec3f(_e29.dir + v_3);
+        metal::float3 _e38 = pbr_fresnel(f0_1, metal::dot(v_3, _e36));
         float _e41 = pbr_ggx_d(metal::saturate(metal::dot(_e7, _e36)), _e12);
         float _e42 = pbr_smith_v(ndl_1, ndv_1, _e12);
         metal::float3 spec = _e38 * metal::float3(_e41 * _e42);
@@ -1761,6 +1862,7 @@ metal::float3 gltf_masked_shade(
     Hit hit_7,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1771,11 +1873,13 @@ metal::float3 gltf_masked_shade(
     device type_4 const& texels,
     thread type_15& traversal_stack,
     thread uint& ray_count,
+    thread type_16& scratch,
+    device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv, params, texels, _buffer_sizes);
     metal::float3 c_11 = m_1.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_19, hit_7, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_19, hit_7, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, _buffer_sizes);
     return _e14;
 }
 
@@ -1803,6 +1907,7 @@ metal::float3 gltf_shade(
     Hit hit_8,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1813,11 +1918,13 @@ metal::float3 gltf_shade(
     device type_4 const& texels,
     thread type_15& traversal_stack,
     thread uint& ray_count,
+    thread type_16& scratch,
+    device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv, params, texels, _buffer_sizes);
     metal::float3 c_12 = m_2.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_20, hit_8, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_20, hit_8, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, _buffer_sizes);
     return _e14;
 }
 
@@ -1829,6 +1936,7 @@ metal::float3 dispatch_closest_hit(
     metal::float3 secondary,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1839,17 +1947,19 @@ metal::float3 dispatch_closest_hit(
     device type_4 const& texels,
     thread type_15& traversal_stack,
     thread uint& ray_count,
+    thread type_16& scratch,
+    device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     switch(type_id_4) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e5 = gltf_masked_shade(_e4, ray_21, hit_9, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e5 = gltf_masked_shade(_e4, ray_21, hit_9, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e7 = gltf_shade(_e6, ray_21, hit_9, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e7 = gltf_shade(_e6, ray_21, hit_9, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, _buffer_sizes);
             return _e7;
         }
         default: {
@@ -1864,6 +1974,7 @@ metal::float3 shade_direct(
     Candidate c_6,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1874,11 +1985,13 @@ metal::float3 shade_direct(
     device type_4 const& texels,
     thread type_15& traversal_stack,
     thread uint& ray_count,
+    thread type_16& scratch,
+    device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_9 = instances[c_6.slot];
     Hit _e6 = finish_hit(ray_22, c_6, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_22, _e6, metal::float3(0.0), tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_22, _e6, metal::float3(0.0), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, _buffer_sizes);
     return _e11;
 }
 
@@ -1923,29 +2036,29 @@ void dispatch_secondary_rays(
 }
 
 metal::float3 spawn_origin_at(
-    metal::float3 position_6,
-    metal::float3 normal_6,
+    metal::float3 position_7,
+    metal::float3 normal_7,
     float error_1,
-    metal::float3 dir_2
+    metal::float3 dir_3
 ) {
     metal::float3 n_6 = {};
-    n_6 = normal_6;
+    n_6 = normal_7;
     metal::float3 _e5 = n_6;
-    if (metal::dot(dir_2, _e5) < 0.0) {
+    if (metal::dot(dir_3, _e5) < 0.0) {
         metal::float3 _e9 = n_6;
         n_6 = -(_e9);
     }
     metal::float3 _e11 = n_6;
-    metal::float3 _e12 = offset_origin(position_6, _e11, error_1);
+    metal::float3 _e12 = offset_origin(position_7, _e11, error_1);
     return _e12;
 }
 
 metal::float3 spawn_origin(
     Hit hit_11,
     float error_2,
-    metal::float3 dir_3
+    metal::float3 dir_4
 ) {
-    metal::float3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_3);
+    metal::float3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_4);
     return _e5;
 }
 
@@ -1953,6 +2066,7 @@ metal::float3 trace(
     Ray camera_ray,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1963,14 +2077,16 @@ metal::float3 trace(
     device type_4 const& texels,
     thread type_15& traversal_stack,
     thread uint& ray_count,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
+    thread type_16& scratch,
+    device type_18& counters,
+    thread type_19& spawn_dirs,
+    thread type_19& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 radiance_2 = {};
     float t_4 = {};
-    type_17 stack = {};
+    type_20 stack = {};
     uint depth = {};
     Ray ray_26 = {};
     metal::float3 value = {};
@@ -1987,7 +2103,7 @@ metal::float3 trace(
     float t_5 = {};
     Hit hit_12 = {};
     Frame f = {};
-    uint i_3 = {};
+    uint i_5 = {};
     uint medium = {};
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
@@ -1999,7 +2115,7 @@ metal::float3 trace(
             metal::float3 _e17 = miss(camera_ray, frame, params, _buffer_sizes);
             radiance_2 = _e17;
         } else {
-            metal::float3 _e18 = shade_direct(camera_ray, _e4, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e18 = shade_direct(camera_ray, _e4, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, _buffer_sizes);
             radiance_2 = _e18;
             t_4 = _e4.t;
         }
@@ -2008,7 +2124,7 @@ metal::float3 trace(
         metal::float3 _e22 = through_medium(camera_ray, _e20, _e21, instances, _buffer_sizes);
         return _e22;
     }
-    stack = type_17 {};
+    stack = type_20 {};
     depth = 0u;
     ray_26 = camera_ray;
     value = metal::float3(0.0);
@@ -2022,10 +2138,10 @@ metal::float3 trace(
     s_sum = metal::float3(0.0);
     fresh = false;
     waiting = false;
-    uint2 loop_bound_5 = uint2(4294967295u);
+    uint2 loop_bound_6 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
@@ -2085,28 +2201,28 @@ metal::float3 trace(
                         Hit _e142 = hit_12;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_9, 0u};
-                        i_3 = 0u;
-                        uint2 loop_bound_6 = uint2(4294967295u);
+                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_19 {}, type_19 {}, n_9, 0u};
+                        i_5 = 0u;
+                        uint2 loop_bound_7 = uint2(4294967295u);
                         bool loop_init_3 = true;
                         while(true) {
-                            if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-                            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+                            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                             if (!loop_init_3) {
-                                uint _e175 = i_3;
-                                i_3 = _e175 + 1u;
+                                uint _e175 = i_5;
+                                i_5 = _e175 + 1u;
                             }
                             loop_init_3 = false;
-                            uint _e155 = i_3;
+                            uint _e155 = i_5;
                             if (_e155 >= n_9) {
                                 break;
                             }
-                            uint _e158 = i_3;
-                            uint _e162 = i_3;
+                            uint _e158 = i_5;
+                            uint _e162 = i_5;
                             metal::float3 _e165 = spawn_dirs.inner[_e162];
                             f.dirs.inner[metal::min(_e158, 0u)] = _e165;
-                            uint _e167 = i_3;
-                            uint _e171 = i_3;
+                            uint _e167 = i_5;
+                            uint _e171 = i_5;
                             metal::float3 _e174 = spawn_weights.inner[_e171];
                             f.weights.inner[metal::min(_e167, 0u)] = _e174;
                         }
@@ -2123,7 +2239,7 @@ metal::float3 trace(
                     Ray _e191 = s_ray;
                     Hit _e192 = hit_12;
                     metal::float3 _e193 = s_sum;
-                    metal::float3 _e194 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e191, _e192, _e193, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+                    metal::float3 _e194 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e191, _e192, _e193, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, _buffer_sizes);
                     radiance_3 = _e194;
                 }
             }
@@ -2159,17 +2275,17 @@ metal::float3 trace(
         uint _e241 = stack.inner[metal::min(top_1, 3u)].next;
         uint _e246 = stack.inner[metal::min(top_1, 3u)].count;
         if (_e241 < _e246) {
-            uint i_4 = stack.inner[metal::min(top_1, 3u)].next;
-            stack.inner[metal::min(top_1, 3u)].next = i_4 + 1u;
+            uint i_7 = stack.inner[metal::min(top_1, 3u)].next;
+            stack.inner[metal::min(top_1, 3u)].next = i_7 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 3u)].ray;
             Hit hit_14 = stack.inner[metal::min(top_1, 3u)].hit;
-            metal::float3 dir_6 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_4, 0u)];
+            metal::float3 dir_7 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_7, 0u)];
             medium = parent.medium;
             float _e283 = stack.inner[metal::min(top_1, 3u)].error;
-            metal::float3 _e284 = spawn_origin(hit_14, _e283, dir_6);
+            metal::float3 _e284 = spawn_origin(hit_14, _e283, dir_7);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_26 = Ray {_e284, 0.0, dir_6, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_26 = Ray {_e284, 0.0, dir_7, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -2217,10 +2333,11 @@ void render_pixel(
     device type_4 const& texels,
     thread type_15& traversal_stack,
     thread uint& ray_count,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
+    thread type_16& scratch,
+    device type_18& counters,
+    thread type_19& spawn_dirs,
+    thread type_19& spawn_weights,
     thread uint& spawn_count,
-    device type_20& counters,
     device type_10& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2234,11 +2351,11 @@ void render_pixel(
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_1 = 0u;
-    uint2 loop_bound_7 = uint2(4294967295u);
+    uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_4 = true;
     while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_4) {
             uint _e46 = s_1;
             s_1 = _e46 + 1u;
@@ -2259,7 +2376,7 @@ void render_pixel(
         uint _e33 = medium_at(_e31, NO_HIT, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
         ray_27.medium = _e33;
         Ray _e34 = ray_27;
-        metal::float3 _e35 = trace(_e34, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::float3 _e35 = trace(_e34, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {
             metal::float3 _e38 = sum;
@@ -2304,10 +2421,11 @@ void render_invocation(
     device type_4 const& texels,
     thread type_15& traversal_stack,
     thread uint& ray_count,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
+    thread type_16& scratch,
+    device type_18& counters,
+    thread type_19& spawn_dirs,
+    thread type_19& spawn_weights,
     thread uint& spawn_count,
-    device type_20& counters,
     device type_10& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2316,7 +2434,7 @@ void render_invocation(
     if (metal::any(_e3 >= tile_3.extent)) {
         return;
     }
-    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
     return;
 }
 
@@ -2332,7 +2450,7 @@ struct renderInput {
 , device type_10 const& triangles [[buffer(4)]]
 , device type_12 const& attributes [[buffer(5)]]
 , device type_4 const& texels [[buffer(7)]]
-, device type_20& counters [[buffer(9)]]
+, device type_18& counters [[buffer(9)]]
 , device type_10& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
@@ -2341,9 +2459,10 @@ struct renderInput {
     float hit_error = {};
     type_15 traversal_stack = {};
     uint ray_count = {};
-    type_16 spawn_dirs = {};
-    type_16 spawn_weights = {};
+    type_16 scratch = {};
+    type_19 spawn_dirs = {};
+    type_19 spawn_weights = {};
     uint spawn_count = {};
-    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
     return;
 }

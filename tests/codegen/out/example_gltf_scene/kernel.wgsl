@@ -189,6 +189,13 @@ const HAS_SECONDARY_RAYS: bool = false;
 const HAS_BACKGROUND: bool = true;
 const PBR_MIN_ALPHA: f32 = 0.001f;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
+const SCRATCH_RESOLVED: u32 = 3u;
+const SCRATCH_LIGHT_BITS: u32 = 11u;
+const SCRATCH_QUERY: u32 = 2u;
+const SCRATCH_PENDING: u32 = 4u;
+const LIGHT_QUERIES: u32 = 32u;
+const COUNTER_SHADOW_OVERFLOW: u32 = 3u;
+const SCRATCH_LIGHT_QUERY: u32 = 12u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const INV_PI: f32 = 0.31830987f;
 const FLAG_MEDIUM: u32 = 4u;
@@ -219,11 +226,12 @@ var<storage> attributes: array<vec4<u32>>;
 var<storage> texels: array<u32>;
 var<private> traversal_stack: array<u32, 128>;
 var<private> ray_count: u32;
+var<private> scratch: array<u32, 22>;
+@group(0) @binding(9) 
+var<storage, read_write> counters: array<atomic<u32>>;
 var<private> spawn_dirs: array<vec3<f32>, 1>;
 var<private> spawn_weights: array<vec3<f32>, 1>;
 var<private> spawn_count: u32;
-@group(0) @binding(9) 
-var<storage, read_write> counters: array<atomic<u32>>;
 @group(0) @binding(8) 
 var<storage, read_write> accum: array<vec4<f32>>;
 
@@ -418,15 +426,15 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let cx = (c_8[min(r_1.kx, 2u)] - (r_1.shear.x * c_8[min(r_1.kz, 2u)]));
     let cy = (c_8[min(r_1.ky, 2u)] - (r_1.shear.y * c_8[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
-    let v_1 = ((ax * cy) - (ay * cx));
+    let v_2 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
-    let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
-    let det = ((u + v_1) + w);
+    let outside = ((((u < 0f) || (v_2 < 0f)) || (w < 0f)) && (((u > 0f) || (v_2 > 0f)) || (w > 0f)));
+    let det = ((u + v_2) + w);
     let rcp = (1f / det);
-    let t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_8[min(r_1.kz, 2u)]))) * rcp);
+    let t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_8[min(r_1.kz, 2u)]))) * rcp);
     let hit_13 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_6, (v_1 * rcp), (w * rcp)), hit_13);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_6, (v_2 * rcp), (w * rcp)), hit_13);
 }
 
 fn load_triangle(slot_1: u32) -> Triangle {
@@ -1102,68 +1110,49 @@ fn load_DirectionalLight(offset_6: u32) -> DirectionalLight {
     return DirectionalLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43));
 }
 
-fn step_toward(x_4: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
-    let bits_1 = bitcast<vec3<u32>>(x_4);
-    let up_1 = ((sign(x_4) * sign(s)) > vec3(0f));
-    let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
-    let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s > vec3(0f)));
-    let moved = select(stepped, from_zero, (x_4 == vec3(0f)));
-    return select(x_4, moved, !((s == vec3(0f))));
+fn scratch_store3f(i_1: u32, v_1: vec3<f32>) {
+    let b_9 = bitcast<vec3<u32>>(v_1);
+    scratch[min(i_1, 21u)] = b_9.x;
+    scratch[min((i_1 + 1u), 21u)] = b_9.y;
+    scratch[min((i_1 + 2u), 21u)] = b_9.z;
+    return;
 }
 
-fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_4 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    let offset_13 = (n_4 * vec3(d_4));
-    let _e17 = step_toward((p_5 + offset_13), offset_13);
-    return _e17;
-}
-
-fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> Ray {
-    var n_5: vec3<f32>;
-    var tmax_4: f32;
-
-    n_5 = normal;
-    let _e5 = n_5;
-    if (dot(dir, _e5) < 0f) {
-        let _e9 = n_5;
-        n_5 = -(_e9);
+fn shadow_deferred(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
+    let i_6 = scratch[min(SCRATCH_QUERY, 21u)];
+    scratch[min(SCRATCH_QUERY, 21u)] = (i_6 + 1u);
+    let _e22 = scratch[min(SCRATCH_RESOLVED, 21u)];
+    if (i_6 < _e22) {
+        let _e29 = scratch[min(SCRATCH_LIGHT_BITS, 21u)];
+        return f32(((_e29 >> (i_6 & 31u)) & 1u));
     }
-    let a_9 = abs(position);
-    let _e13 = hit_error;
-    let error_3 = max(_e13, (GAMMA_4_ * max(max(a_9.x, a_9.y), a_9.z)));
-    let _e22 = n_5;
-    let _e23 = offset_origin(position, _e22, error_3);
-    let _e25 = F32_INF;
-    tmax_4 = bitcast<f32>(_e25);
-    let _e29 = F32_INF;
-    if (dist < bitcast<f32>(_e29)) {
-        let light = (position + (dir * vec3(dist)));
-        let dd_1 = dot(dir, dir);
-        let along_1 = (dot((light - _e23), dir) / dd_1);
-        let l_2 = (abs(position) + abs((dir * vec3(dist))));
-        tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
+    let _e41 = scratch[min(SCRATCH_PENDING, 21u)];
+    if (_e41 != 0u) {
+        return 1f;
     }
-    let _e59 = tmax_4;
-    return Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
+    if (i_6 >= LIGHT_QUERIES) {
+        atomicAdd((&counters[min(COUNTER_SHADOW_OVERFLOW, 3u)]), 1u);
+        return 1f;
+    }
+    scratch_store3f(SCRATCH_LIGHT_QUERY, position);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
+    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)] = bitcast<u32>(dist);
+    scratch[min(SCRATCH_PENDING, 21u)] = 1u;
+    return 1f;
 }
 
-fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
-    let _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    let _e6 = intersect_scene(_e4, true);
-    return select(1f, 0f, (_e6.slot != NO_HIT));
-}
-
-fn directional_light(l: DirectionalLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
+fn directional_light(l: DirectionalLight, position_1: vec3<f32>, normal_1: vec3<f32>) -> LightSample {
     let _e4 = normalize_vec3f(l.direction);
-    let dir_4 = -(_e4);
-    if (dot(dir_4, dir_4) == 0f) {
+    let dir_5 = -(_e4);
+    if (dot(dir_5, dir_5) == 0f) {
         let _e14 = F32_INF;
         return LightSample(vec3<f32>(0f, 1f, 0f), bitcast<f32>(_e14), vec3(0f), 0f);
     }
     let _e21 = F32_INF;
-    let _e23 = shadow_query(position_2, normal_2, dir_4, bitcast<f32>(_e21));
+    let _e23 = shadow_deferred(position_1, normal_1, dir_5, bitcast<f32>(_e21));
     let _e25 = F32_INF;
-    return LightSample(dir_4, bitcast<f32>(_e25), ((l.color * vec3(l.intensity)) * vec3(_e23)), 0f);
+    return LightSample(dir_5, bitcast<f32>(_e25), ((l.color * vec3(l.intensity)) * vec3(_e23)), 0f);
 }
 
 fn load_PointLight(offset_7: u32) -> PointLight {
@@ -1179,32 +1168,32 @@ fn load_PointLight(offset_7: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn point_light(l_1: PointLight, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
+fn point_light(l_1: PointLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
     var strength: f32;
 
-    let to_light = (l_1.position - position_3);
-    let dist_2 = length(to_light);
-    let dir_5 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
-    strength = (l_1.intensity / max((dist_2 * dist_2), 0.00000000000000000001f));
+    let to_light = (l_1.position - position_2);
+    let dist_3 = length(to_light);
+    let dir_6 = (to_light / vec3(max(dist_3, 0.00000000000000000001f)));
+    strength = (l_1.intensity / max((dist_3 * dist_3), 0.00000000000000000001f));
     if (l_1.range > 0f) {
         let _e19 = strength;
-        strength = (_e19 * (1f - smoothstep(l_1.inner_range, l_1.range, dist_2)));
+        strength = (_e19 * (1f - smoothstep(l_1.inner_range, l_1.range, dist_3)));
     }
-    let _e26 = shadow_query(position_3, normal_3, dir_5, dist_2);
+    let _e26 = shadow_deferred(position_2, normal_2, dir_6, dist_3);
     let _e28 = strength;
-    return LightSample(dir_5, dist_2, ((l_1.color * vec3(_e28)) * vec3(_e26)), 0f);
+    return LightSample(dir_6, dist_3, ((l_1.color * vec3(_e28)) * vec3(_e26)), 0f);
 }
 
-fn dispatch_light(type_id_3: u32, offset_8: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
+fn dispatch_light(type_id_3: u32, offset_8: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
     switch type_id_3 {
         case 0u: {
             let _e4 = load_DirectionalLight(offset_8);
-            let _e5 = directional_light(_e4, position_4, normal_4);
+            let _e5 = directional_light(_e4, position_3, normal_3);
             return _e5;
         }
         case 1u: {
             let _e6 = load_PointLight(offset_8);
-            let _e7 = point_light(_e6, position_4, normal_4);
+            let _e7 = point_light(_e6, position_3, normal_3);
             return _e7;
         }
         default: {
@@ -1213,16 +1202,130 @@ fn dispatch_light(type_id_3: u32, offset_8: u32, position_4: vec3<f32>, normal_4
     return LightSample();
 }
 
-fn sample_light_query(i_1: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
+fn scratch_load3f(i_2: u32) -> vec3<f32> {
+    let _e5 = scratch[min(i_2, 21u)];
+    let _e12 = scratch[min((i_2 + 1u), 21u)];
+    let _e19 = scratch[min((i_2 + 2u), 21u)];
+    return bitcast<vec3<f32>>(vec3<u32>(_e5, _e12, _e19));
+}
+
+fn step_toward(x_4: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
+    let bits_2 = bitcast<vec3<u32>>(x_4);
+    let up_1 = ((sign(x_4) * sign(s)) > vec3(0f));
+    let stepped = bitcast<vec3<f32>>(select((bits_2 - vec3(1u)), (bits_2 + vec3(1u)), up_1));
+    let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s > vec3(0f)));
+    let moved = select(stepped, from_zero, (x_4 == vec3(0f)));
+    return select(x_4, moved, !((s == vec3(0f))));
+}
+
+fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
+    let d_4 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    let offset_13 = (n_4 * vec3(d_4));
+    let _e17 = step_toward((p_5 + offset_13), offset_13);
+    return _e17;
+}
+
+fn shadow_ray(position_4: vec3<f32>, normal_4: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> Ray {
+    var n_5: vec3<f32>;
+    var tmax_4: f32;
+
+    n_5 = normal_4;
+    let _e5 = n_5;
+    if (dot(dir_1, _e5) < 0f) {
+        let _e9 = n_5;
+        n_5 = -(_e9);
+    }
+    let a_9 = abs(position_4);
+    let _e13 = hit_error;
+    let error_3 = max(_e13, (GAMMA_4_ * max(max(a_9.x, a_9.y), a_9.z)));
+    let _e22 = n_5;
+    let _e23 = offset_origin(position_4, _e22, error_3);
+    let _e25 = F32_INF;
+    tmax_4 = bitcast<f32>(_e25);
+    let _e29 = F32_INF;
+    if (dist_1 < bitcast<f32>(_e29)) {
+        let light = (position_4 + (dir_1 * vec3(dist_1)));
+        let dd_1 = dot(dir_1, dir_1);
+        let along_1 = (dot((light - _e23), dir_1) / dd_1);
+        let l_2 = (abs(position_4) + abs((dir_1 * vec3(dist_1))));
+        tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
+    }
+    let _e59 = tmax_4;
+    return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+}
+
+fn shadow_query(position_5: vec3<f32>, normal_5: vec3<f32>, dir_2: vec3<f32>, dist_2: f32) -> f32 {
+    let _e4 = shadow_ray(position_5, normal_5, dir_2, dist_2);
+    let _e6 = intersect_scene(_e4, true);
+    return select(1f, 0f, (_e6.slot != NO_HIT));
+}
+
+fn sample_light_deferred(i_3: u32, position_6: vec3<f32>, normal_6: vec3<f32>) -> LightSample {
+    var after: u32;
+    var resolved: u32;
+    var bits_1: u32;
+
     let frame_4 = frame;
-    if (i_1 >= frame_4.light_count) {
+    if (i_3 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    let _e22 = params[entry];
-    let _e27 = params[(entry + 1u)];
-    let _e28 = dispatch_light(_e22, _e27, position_5, normal_5);
-    return _e28;
+    let entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    let type_id_7 = params[entry];
+    let offset_14 = params[(entry + 1u)];
+    let start = rng_state;
+    after = start;
+    resolved = 0u;
+    bits_1 = 0u;
+    scratch[min(SCRATCH_RESOLVED, 21u)] = 0u;
+    scratch[min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
+    loop {
+        rng_state = start;
+        scratch[min(SCRATCH_QUERY, 21u)] = 0u;
+        scratch[min(SCRATCH_PENDING, 21u)] = 0u;
+        let _e60 = dispatch_light(type_id_7, offset_14, position_6, normal_6);
+        let _e66 = scratch[min(SCRATCH_PENDING, 21u)];
+        if (_e66 == 0u) {
+            let _e69 = resolved;
+            if (_e69 > 0u) {
+                let _e72 = after;
+                rng_state = _e72;
+            }
+            return _e60;
+        }
+        let _e74 = resolved;
+        if (_e74 == 0u) {
+            let _e78 = rng_state;
+            after = _e78;
+        }
+        let _e79 = after;
+        rng_state = _e79;
+        let _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
+        let _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
+        let _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
+        let _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)];
+        let _e97 = shadow_query(_e82, _e85, _e88, bitcast<f32>(_e95));
+        let _e99 = rng_state;
+        after = _e99;
+        if !((_e97 == 0f)) {
+            let _e108 = scratch[min(SCRATCH_QUERY, 21u)];
+            let _e109 = resolved;
+            if (_e108 == (_e109 + 1u)) {
+                let _e113 = after;
+                rng_state = _e113;
+                return _e60;
+            }
+            let _e115 = bits_1;
+            let _e117 = resolved;
+            bits_1 = (_e115 | (1u << (_e117 & 31u)));
+        }
+        let _e122 = resolved;
+        resolved = (_e122 + 1u);
+        let _e126 = bits_1;
+        scratch[min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
+        let _e132 = resolved;
+        scratch[min(SCRATCH_RESOLVED, 21u)] = _e132;
+    }
+    return LightSample();
 }
 
 fn pbr_fresnel(f0_: vec3<f32>, c_4: f32) -> vec3<f32> {
@@ -1244,28 +1347,28 @@ fn pbr_smith_v(ndl: f32, ndv: f32, a2_1: f32) -> f32 {
 
 fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32, emissive: vec3<f32>, ray_18: Ray, hit_6: Hit) -> vec3<f32> {
     var color: vec3<f32>;
-    var i_2: u32;
+    var i_4: u32;
 
     let _e7 = shading_normal(ray_18, hit_6);
     let _e9 = normalize_vec3f(ray_18.dir);
-    let v_2 = -(_e9);
+    let v_3 = -(_e9);
     let metal = saturate(metallic);
     let _e12 = pbr_alpha2_(roughness_1);
     let f0_1 = mix(vec3(0.04f), c_5, vec3(metal));
-    let ndv_1 = max(dot(_e7, v_2), 0.0001f);
+    let ndv_1 = max(dot(_e7, v_3), 0.0001f);
     color = emissive;
     let _e22 = light_count_query();
-    i_2 = 0u;
+    i_4 = 0u;
     loop {
-        let _e24 = i_2;
+        let _e24 = i_4;
         if (_e24 >= _e22) {
             break;
         }
-        let _e26 = i_2;
-        let _e29 = sample_light_query(_e26, hit_6.position, hit_6.geometric_normal);
+        let _e26 = i_4;
+        let _e29 = sample_light_deferred(_e26, hit_6.position, hit_6.geometric_normal);
         let ndl_1 = max(dot(_e7, _e29.dir), 0f);
-        let _e36 = normalize_vec3f((_e29.dir + v_2));
-        let _e38 = pbr_fresnel(f0_1, dot(v_2, _e36));
+        let _e36 = normalize_vec3f((_e29.dir + v_3));
+        let _e38 = pbr_fresnel(f0_1, dot(v_3, _e36));
         let _e41 = pbr_ggx_d(saturate(dot(_e7, _e36)), _e12);
         let _e42 = pbr_smith_v(ndl_1, ndv_1, _e12);
         let spec = (_e38 * vec3((_e41 * _e42)));
@@ -1273,8 +1376,8 @@ fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32
         let _e56 = color;
         color = (_e56 + (((_e29.radiance * vec3(ndl_1)) * (diffuse + spec)) * vec3(occlusion)));
         continuing {
-            let _e65 = i_2;
-            i_2 = (_e65 + 1u);
+            let _e65 = i_4;
+            i_4 = (_e65 + 1u);
         }
     }
     let _e68 = color;
@@ -1357,22 +1460,22 @@ fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_25: Ray, hit_10: 
     return;
 }
 
-fn spawn_origin_at(position_6: vec3<f32>, normal_6: vec3<f32>, error_1: f32, dir_2: vec3<f32>) -> vec3<f32> {
+fn spawn_origin_at(position_7: vec3<f32>, normal_7: vec3<f32>, error_1: f32, dir_3: vec3<f32>) -> vec3<f32> {
     var n_6: vec3<f32>;
 
-    n_6 = normal_6;
+    n_6 = normal_7;
     let _e5 = n_6;
-    if (dot(dir_2, _e5) < 0f) {
+    if (dot(dir_3, _e5) < 0f) {
         let _e9 = n_6;
         n_6 = -(_e9);
     }
     let _e11 = n_6;
-    let _e12 = offset_origin(position_6, _e11, error_1);
+    let _e12 = offset_origin(position_7, _e11, error_1);
     return _e12;
 }
 
-fn spawn_origin(hit_11: Hit, error_2: f32, dir_3: vec3<f32>) -> vec3<f32> {
-    let _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_3);
+fn spawn_origin(hit_11: Hit, error_2: f32, dir_4: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_4);
     return _e5;
 }
 
@@ -1396,7 +1499,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_5: f32;
     var hit_12: Hit;
     var f: Frame;
-    var i_3: u32;
+    var i_5: u32;
     var medium: u32;
 
     if !(HAS_SECONDARY_RAYS) {
@@ -1493,23 +1596,23 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                         let _e143 = s_error;
                         let _e145 = s_c.slot;
                         f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_9, 0u);
-                        i_3 = 0u;
+                        i_5 = 0u;
                         loop {
-                            let _e155 = i_3;
+                            let _e155 = i_5;
                             if (_e155 >= n_9) {
                                 break;
                             }
-                            let _e158 = i_3;
-                            let _e162 = i_3;
+                            let _e158 = i_5;
+                            let _e162 = i_5;
                             let _e165 = spawn_dirs[_e162];
                             f.dirs[min(_e158, 0u)] = _e165;
-                            let _e167 = i_3;
-                            let _e171 = i_3;
+                            let _e167 = i_5;
+                            let _e171 = i_5;
                             let _e174 = spawn_weights[_e171];
                             f.weights[min(_e167, 0u)] = _e174;
                             continuing {
-                                let _e175 = i_3;
-                                i_3 = (_e175 + 1u);
+                                let _e175 = i_5;
+                                i_5 = (_e175 + 1u);
                             }
                         }
                         let _e178 = depth;
@@ -1561,17 +1664,17 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e241 = stack[min(top_1, 3u)].next;
         let _e246 = stack[min(top_1, 3u)].count;
         if (_e241 < _e246) {
-            let i_4 = stack[min(top_1, 3u)].next;
-            stack[min(top_1, 3u)].next = (i_4 + 1u);
+            let i_7 = stack[min(top_1, 3u)].next;
+            stack[min(top_1, 3u)].next = (i_7 + 1u);
             let parent = stack[min(top_1, 3u)].ray;
             let hit_14 = stack[min(top_1, 3u)].hit;
-            let dir_6 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
+            let dir_7 = stack[min(top_1, 3u)].dirs[min(i_7, 0u)];
             medium = parent.medium;
             let _e283 = stack[min(top_1, 3u)].error;
-            let _e284 = spawn_origin(hit_14, _e283, dir_6);
+            let _e284 = spawn_origin(hit_14, _e283, dir_7);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_26 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_26 = Ray(_e284, 0f, dir_7, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;

@@ -240,6 +240,13 @@ static const float GAMMA_4_ = 2.3841864e-7;
 static const bool HAS_SECONDARY_RAYS = false;
 static const bool HAS_BACKGROUND = true;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
+static const uint SCRATCH_RESOLVED = 3u;
+static const uint SCRATCH_LIGHT_BITS = 11u;
+static const uint SCRATCH_QUERY = 2u;
+static const uint SCRATCH_PENDING = 4u;
+static const uint LIGHT_QUERIES = 32u;
+static const uint COUNTER_SHADOW_OVERFLOW = 3u;
+static const uint SCRATCH_LIGHT_QUERY = 12u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
 static const uint FLAG_MEDIUM = 4u;
@@ -261,10 +268,11 @@ static uint traversal_stack[70] = (uint[70])0;
 static float hit_error = (float)0;
 ByteAddressBuffer attributes : register(t5);
 static uint ray_count = (uint)0;
+static uint scratch[22] = (uint[22])0;
+RWByteAddressBuffer counters : register(u9);
 static float3 spawn_dirs[1] = (float3[1])0;
 static float3 spawn_weights[1] = (float3[1])0;
 static uint spawn_count = (uint)0;
-RWByteAddressBuffer counters : register(u9);
 RWByteAddressBuffer accum : register(u8);
 
 uint2 naga_div(uint2 lhs, uint2 rhs) {
@@ -542,15 +550,15 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float cx = (c_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float cy = (c_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u = ((cx * by) - (cy * bx));
-    float v_1 = ((ax * cy) - (ay * cx));
+    float v_2 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
-    bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
-    float det = ((u + v_1) + w);
+    bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
+    float det = ((u + v_2) + w);
     float rcp_ = (1.0 / det);
-    float t_6 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_6 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_7 ? float3(t_6, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_7 ? float3(t_6, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -1340,60 +1348,38 @@ DirectionalLight load_DirectionalLight(uint offset_8)
     return directionallight;
 }
 
-float3 step_toward(float3 x_1, float3 s_1)
+void scratch_store3f(uint i_1, float3 v_1)
 {
-    uint3 bits_1 = asuint(x_1);
-    bool3 up_1 = ((sign(x_1) * sign(s_1)) > (0.0).xxx);
-    float3 stepped = asfloat((up_1 ? (bits_1 + (1u).xxx) : (bits_1 - (1u).xxx)));
-    float3 from_zero = ((s_1 > (0.0).xxx) ? (1.1754944e-38).xxx : (-1.1754944e-38).xxx);
-    float3 moved = ((x_1 == (0.0).xxx) ? from_zero : stepped);
-    return (!((s_1 == (0.0).xxx)) ? moved : x_1);
+    uint3 b_9 = asuint(v_1);
+    scratch[min(uint(min(i_1, 21u)), 21u)] = b_9.x;
+    scratch[min(uint(min((i_1 + 1u), 21u)), 21u)] = b_9.y;
+    scratch[min(uint(min((i_1 + 2u), 21u)), 21u)] = b_9.z;
+    return;
 }
 
-float3 offset_origin(float3 p_5, float3 n_4, float error)
+float shadow_deferred(float3 position, float3 normal, float3 dir, float dist)
 {
-    float d_3 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    float3 offset_16 = (n_4 * (d_3).xxx);
-    const float3 _e17 = step_toward((p_5 + offset_16), offset_16);
-    return _e17;
-}
-
-Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
-{
-    float3 n_5 = (float3)0;
-    float tmax_4 = (float)0;
-
-    n_5 = normal;
-    float3 _e5 = n_5;
-    if ((dot(dir, _e5) < 0.0)) {
-        float3 _e9 = n_5;
-        n_5 = -(_e9);
+    uint i_6 = scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)];
+    scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)] = (i_6 + 1u);
+    uint _e22 = scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)];
+    if ((i_6 < _e22)) {
+        uint _e29 = scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)];
+        return float(((_e29 >> (i_6 & 31u)) & 1u));
     }
-    float3 a_7 = abs(position);
-    float _e13 = hit_error;
-    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_7.x, a_7.y), a_7.z)));
-    float3 _e22 = n_5;
-    const float3 _e23 = offset_origin(position, _e22, error_3);
-    uint _e25 = F32_INF;
-    tmax_4 = asfloat(_e25);
-    uint _e29 = F32_INF;
-    if ((dist < asfloat(_e29))) {
-        float3 light = (position + (dir * (dist).xxx));
-        float dd_1 = dot(dir, dir);
-        float along_1 = (dot((light - _e23), dir) / dd_1);
-        float3 l_5 = (abs(position) + abs((dir * (dist).xxx)));
-        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_5.x, l_5.y), l_5.z)) / sqrt(dd_1)));
+    uint _e41 = scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)];
+    if ((_e41 != 0u)) {
+        return 1.0;
     }
-    float _e59 = tmax_4;
-    const Ray ray_26 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_26;
-}
-
-float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
-{
-    const Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    const Candidate _e6 = intersect_scene(_e4, true);
-    return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
+    if ((i_6 >= LIGHT_QUERIES)) {
+        counters.InterlockedAdd(min(COUNTER_SHADOW_OVERFLOW, 3u)*4, 1u);
+        return 1.0;
+    }
+    scratch_store3f(SCRATCH_LIGHT_QUERY, position);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
+    scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 21u)), 21u)] = asuint(dist);
+    scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)] = 1u;
+    return 1.0;
 }
 
 LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
@@ -1405,19 +1391,19 @@ LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg
     return ret;
 }
 
-LightSample directional_light(DirectionalLight l, float3 position_2, float3 normal_2)
+LightSample directional_light(DirectionalLight l, float3 position_1, float3 normal_1)
 {
     const float3 _e4 = normalize_vec3f(l.direction);
-    float3 dir_4 = -(_e4);
-    if ((dot(dir_4, dir_4) == 0.0)) {
+    float3 dir_5 = -(_e4);
+    if ((dot(dir_5, dir_5) == 0.0)) {
         uint _e14 = F32_INF;
         const LightSample lightsample = ConstructLightSample(float3(0.0, 1.0, 0.0), asfloat(_e14), (0.0).xxx, 0.0);
         return lightsample;
     }
     uint _e21 = F32_INF;
-    const float _e23 = shadow_query(position_2, normal_2, dir_4, asfloat(_e21));
+    const float _e23 = shadow_deferred(position_1, normal_1, dir_5, asfloat(_e21));
     uint _e25 = F32_INF;
-    const LightSample lightsample_1 = ConstructLightSample(dir_4, asfloat(_e25), ((l.color * (l.intensity).xxx) * (_e23).xxx), 0.0);
+    const LightSample lightsample_1 = ConstructLightSample(dir_5, asfloat(_e25), ((l.color * (l.intensity).xxx) * (_e23).xxx), 0.0);
     return lightsample_1;
 }
 
@@ -1446,21 +1432,21 @@ PointLight load_PointLight(uint offset_9)
     return pointlight;
 }
 
-LightSample point_light(PointLight l_1, float3 position_3, float3 normal_3)
+LightSample point_light(PointLight l_1, float3 position_2, float3 normal_2)
 {
     float strength = (float)0;
 
-    float3 to_light = (l_1.position - position_3);
-    float dist_2 = length(to_light);
-    float3 dir_5 = (to_light / (max(dist_2, 1e-20)).xxx);
-    strength = (l_1.intensity / max((dist_2 * dist_2), 1e-20));
+    float3 to_light = (l_1.position - position_2);
+    float dist_3 = length(to_light);
+    float3 dir_6 = (to_light / (max(dist_3, 1e-20)).xxx);
+    strength = (l_1.intensity / max((dist_3 * dist_3), 1e-20));
     if ((l_1.range > 0.0)) {
         float _e19 = strength;
-        strength = (_e19 * (1.0 - smoothstep(l_1.inner_range, l_1.range, dist_2)));
+        strength = (_e19 * (1.0 - smoothstep(l_1.inner_range, l_1.range, dist_3)));
     }
-    const float _e26 = shadow_query(position_3, normal_3, dir_5, dist_2);
+    const float _e26 = shadow_deferred(position_2, normal_2, dir_6, dist_3);
     float _e28 = strength;
-    const LightSample lightsample_2 = ConstructLightSample(dir_5, dist_2, ((l_1.color * (_e28).xxx) * (_e26).xxx), 0.0);
+    const LightSample lightsample_2 = ConstructLightSample(dir_6, dist_3, ((l_1.color * (_e28).xxx) * (_e26).xxx), 0.0);
     return lightsample_2;
 }
 
@@ -1489,18 +1475,18 @@ SphereLight load_SphereLight(uint offset_10)
     return spherelight;
 }
 
-float3x3 orthonormal_basis(float3 n_6)
+float3x3 orthonormal_basis(float3 n_4)
 {
-    float sign_1 = (((asuint(n_6.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
-    float a_8 = (-1.0 / (sign_1 + n_6.z));
-    float b_9 = ((n_6.x * n_6.y) * a_8);
-    float _e16 = (sign_1 * n_6.x);
-    return float3x3(float3((1.0 + ((_e16 * n_6.x) * a_8)), (sign_1 * b_9), -(_e16)), float3(b_9, (sign_1 + ((n_6.y * n_6.y) * a_8)), -(n_6.y)), n_6);
+    float sign_1 = (((asuint(n_4.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
+    float a_7 = (-1.0 / (sign_1 + n_4.z));
+    float b_10 = ((n_4.x * n_4.y) * a_7);
+    float _e16 = (sign_1 * n_4.x);
+    return float3x3(float3((1.0 + ((_e16 * n_4.x) * a_7)), (sign_1 * b_10), -(_e16)), float3(b_10, (sign_1 + ((n_4.y * n_4.y) * a_7)), -(n_4.y)), n_4);
 }
 
-LightSample sphere_light(SphereLight l_2, float3 position_4, float3 normal_4)
+LightSample sphere_light(SphereLight l_2, float3 position_3, float3 normal_3)
 {
-    float3 to_center = (l_2.position - position_4);
+    float3 to_center = (l_2.position - position_3);
     float d2_ = dot(to_center, to_center);
     float r2_2 = max((l_2.radius * l_2.radius), 1e-20);
     if ((d2_ <= r2_2)) {
@@ -1517,12 +1503,12 @@ LightSample sphere_light(SphereLight l_2, float3 position_4, float3 normal_4)
     float phi = (TAU * _e31.y);
     const float3x3 _e45 = orthonormal_basis(w_3);
     const float3 _e52 = normalize_vec3f(mul(float3((cos(phi) * sin_t), (sin(phi) * sin_t), cos_t), _e45));
-    float along_2 = dot(to_center, _e52);
-    float dist_3 = max((along_2 - sqrt(max((r2_2 - (d2_ - (along_2 * along_2))), 0.0))), 0.0);
+    float along_1 = dot(to_center, _e52);
+    float dist_4 = max((along_1 - sqrt(max((r2_2 - (d2_ - (along_1 * along_1))), 0.0))), 0.0);
     float weight = (((l_2.intensity * 2.0) * one_minus_cos_max) / r2_2);
-    const float _e68 = shadow_query(position_4, normal_4, _e52, dist_3);
+    const float _e68 = shadow_deferred(position_3, normal_3, _e52, dist_4);
     float pdf = ((l_2.lamp == 1u) ? (1.0 / (TAU * one_minus_cos_max)) : 0.0);
-    const LightSample lightsample_4 = ConstructLightSample(_e52, dist_3, ((l_2.color * (weight).xxx) * (_e68).xxx), pdf);
+    const LightSample lightsample_4 = ConstructLightSample(_e52, dist_4, ((l_2.color * (weight).xxx) * (_e68).xxx), pdf);
     return lightsample_4;
 }
 
@@ -1557,31 +1543,31 @@ SpotLight load_SpotLight(uint offset_11)
     return spotlight;
 }
 
-LightSample spot_light(SpotLight l_3, float3 position_5, float3 normal_5)
+LightSample spot_light(SpotLight l_3, float3 position_4, float3 normal_4)
 {
     float strength_1 = (float)0;
 
-    float3 to_light_1 = (l_3.position - position_5);
-    float dist_4 = length(to_light_1);
-    float3 dir_6 = (to_light_1 / (max(dist_4, 1e-20)).xxx);
-    strength_1 = (l_3.intensity / max((dist_4 * dist_4), 1e-20));
+    float3 to_light_1 = (l_3.position - position_4);
+    float dist_5 = length(to_light_1);
+    float3 dir_7 = (to_light_1 / (max(dist_5, 1e-20)).xxx);
+    strength_1 = (l_3.intensity / max((dist_5 * dist_5), 1e-20));
     if ((l_3.range > 0.0)) {
         float _e19 = strength_1;
-        strength_1 = (_e19 * (1.0 - smoothstep(0.0, l_3.range, dist_4)));
+        strength_1 = (_e19 * (1.0 - smoothstep(0.0, l_3.range, dist_5)));
     }
     float cos_inner = cos(radians(min(max(l_3.inner_angle, 0.0), 180.0)));
     float cos_outer = min(cos(radians(min(max(l_3.outer_angle, 0.0), 180.0))), (cos_inner - 0.0001));
     float _e43 = strength_1;
     const float3 _e46 = normalize_vec3f(l_3.direction);
-    strength_1 = (_e43 * smoothstep(cos_outer, cos_inner, dot(-(dir_6), _e46)));
+    strength_1 = (_e43 * smoothstep(cos_outer, cos_inner, dot(-(dir_7), _e46)));
     float _e50 = strength_1;
     if ((_e50 <= 0.0)) {
-        const LightSample lightsample_5 = ConstructLightSample(dir_6, dist_4, (0.0).xxx, 0.0);
+        const LightSample lightsample_5 = ConstructLightSample(dir_7, dist_5, (0.0).xxx, 0.0);
         return lightsample_5;
     }
-    const float _e57 = shadow_query(position_5, normal_5, dir_6, dist_4);
+    const float _e57 = shadow_deferred(position_4, normal_4, dir_7, dist_5);
     float _e59 = strength_1;
-    const LightSample lightsample_6 = ConstructLightSample(dir_6, dist_4, ((l_3.color * (_e59).xxx) * (_e57).xxx), 0.0);
+    const LightSample lightsample_6 = ConstructLightSample(dir_7, dist_5, ((l_3.color * (_e59).xxx) * (_e57).xxx), 0.0);
     return lightsample_6;
 }
 
@@ -1589,30 +1575,30 @@ LightSample ZeroValueLightSample() {
     return (LightSample)0;
 }
 
-LightSample dispatch_light(uint type_id_3, uint offset_12, float3 position_6, float3 normal_6)
+LightSample dispatch_light(uint type_id_3, uint offset_12, float3 position_5, float3 normal_5)
 {
     switch(type_id_3) {
         case 0u: {
             const DirectionalLight _e4 = load_DirectionalLight(offset_12);
-            const LightSample _e5 = directional_light(_e4, position_6, normal_6);
+            const LightSample _e5 = directional_light(_e4, position_5, normal_5);
             const LightSample lightsample_7 = _e5;
             return lightsample_7;
         }
         case 1u: {
             const PointLight _e6 = load_PointLight(offset_12);
-            const LightSample _e7 = point_light(_e6, position_6, normal_6);
+            const LightSample _e7 = point_light(_e6, position_5, normal_5);
             const LightSample lightsample_8 = _e7;
             return lightsample_8;
         }
         case 2u: {
             const SphereLight _e8 = load_SphereLight(offset_12);
-            const LightSample _e9 = sphere_light(_e8, position_6, normal_6);
+            const LightSample _e9 = sphere_light(_e8, position_5, normal_5);
             const LightSample lightsample_9 = _e9;
             return lightsample_9;
         }
         case 3u: {
             const SpotLight _e10 = load_SpotLight(offset_12);
-            const LightSample _e11 = spot_light(_e10, position_6, normal_6);
+            const LightSample _e11 = spot_light(_e10, position_5, normal_5);
             const LightSample lightsample_10 = _e11;
             return lightsample_10;
         }
@@ -1624,46 +1610,171 @@ LightSample dispatch_light(uint type_id_3, uint offset_12, float3 position_6, fl
     return lightsample_11;
 }
 
-LightSample sample_light_query(uint i_1, float3 position_7, float3 normal_7)
+float3 scratch_load3f(uint i_2)
 {
+    uint _e5 = scratch[min(uint(min(i_2, 21u)), 21u)];
+    uint _e12 = scratch[min(uint(min((i_2 + 1u), 21u)), 21u)];
+    uint _e19 = scratch[min(uint(min((i_2 + 2u), 21u)), 21u)];
+    return asfloat(uint3(_e5, _e12, _e19));
+}
+
+float3 step_toward(float3 x_1, float3 s_1)
+{
+    uint3 bits_2 = asuint(x_1);
+    bool3 up_1 = ((sign(x_1) * sign(s_1)) > (0.0).xxx);
+    float3 stepped = asfloat((up_1 ? (bits_2 + (1u).xxx) : (bits_2 - (1u).xxx)));
+    float3 from_zero = ((s_1 > (0.0).xxx) ? (1.1754944e-38).xxx : (-1.1754944e-38).xxx);
+    float3 moved = ((x_1 == (0.0).xxx) ? from_zero : stepped);
+    return (!((s_1 == (0.0).xxx)) ? moved : x_1);
+}
+
+float3 offset_origin(float3 p_5, float3 n_5, float error)
+{
+    float d_3 = ((2.0 * error) * ((abs(n_5.x) + abs(n_5.y)) + abs(n_5.z)));
+    float3 offset_16 = (n_5 * (d_3).xxx);
+    const float3 _e17 = step_toward((p_5 + offset_16), offset_16);
+    return _e17;
+}
+
+Ray shadow_ray(float3 position_6, float3 normal_6, float3 dir_1, float dist_1)
+{
+    float3 n_6 = (float3)0;
+    float tmax_4 = (float)0;
+
+    n_6 = normal_6;
+    float3 _e5 = n_6;
+    if ((dot(dir_1, _e5) < 0.0)) {
+        float3 _e9 = n_6;
+        n_6 = -(_e9);
+    }
+    float3 a_8 = abs(position_6);
+    float _e13 = hit_error;
+    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
+    float3 _e22 = n_6;
+    const float3 _e23 = offset_origin(position_6, _e22, error_3);
+    uint _e25 = F32_INF;
+    tmax_4 = asfloat(_e25);
+    uint _e29 = F32_INF;
+    if ((dist_1 < asfloat(_e29))) {
+        float3 light = (position_6 + (dir_1 * (dist_1).xxx));
+        float dd_1 = dot(dir_1, dir_1);
+        float along_2 = (dot((light - _e23), dir_1) / dd_1);
+        float3 l_5 = (abs(position_6) + abs((dir_1 * (dist_1).xxx)));
+        tmax_4 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_5.x, l_5.y), l_5.z)) / sqrt(dd_1)));
+    }
+    float _e59 = tmax_4;
+    const Ray ray_26 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_26;
+}
+
+float shadow_query(float3 position_7, float3 normal_7, float3 dir_2, float dist_2)
+{
+    const Ray _e4 = shadow_ray(position_7, normal_7, dir_2, dist_2);
+    const Candidate _e6 = intersect_scene(_e4, true);
+    return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
+}
+
+LightSample sample_light_deferred(uint i_3, float3 position_8, float3 normal_8)
+{
+    uint after = (uint)0;
+    uint resolved = (uint)0;
+    uint bits_1 = (uint)0;
+
     FrameUniforms frame_4 = frame;
-    if ((i_1 >= frame_4.light_count)) {
+    if ((i_3 >= frame_4.light_count)) {
         const LightSample lightsample_12 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_12;
     }
-    uint entry_1 = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    uint _e22 = asuint(params.Load(entry_1*4));
-    uint _e27 = asuint(params.Load((entry_1 + 1u)*4));
-    const LightSample _e28 = dispatch_light(_e22, _e27, position_7, normal_7);
-    const LightSample lightsample_13 = _e28;
-    return lightsample_13;
+    uint entry_1 = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    uint type_id_7 = asuint(params.Load(entry_1*4));
+    uint offset_17 = asuint(params.Load((entry_1 + 1u)*4));
+    uint start = rng_state;
+    after = start;
+    resolved = 0u;
+    bits_1 = 0u;
+    scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)] = 0u;
+    scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)] = 0u;
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        rng_state = start;
+        scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)] = 0u;
+        scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)] = 0u;
+        const LightSample _e60 = dispatch_light(type_id_7, offset_17, position_8, normal_8);
+        uint _e66 = scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)];
+        if ((_e66 == 0u)) {
+            uint _e69 = resolved;
+            if ((_e69 > 0u)) {
+                uint _e72 = after;
+                rng_state = _e72;
+            }
+            const LightSample lightsample_13 = _e60;
+            return lightsample_13;
+        }
+        uint _e74 = resolved;
+        if ((_e74 == 0u)) {
+            uint _e78 = rng_state;
+            after = _e78;
+        }
+        uint _e79 = after;
+        rng_state = _e79;
+        const float3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
+        const float3 _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
+        const float3 _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
+        uint _e95 = scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 21u)), 21u)];
+        const float _e97 = shadow_query(_e82, _e85, _e88, asfloat(_e95));
+        uint _e99 = rng_state;
+        after = _e99;
+        if (!((_e97 == 0.0))) {
+            uint _e108 = scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)];
+            uint _e109 = resolved;
+            if ((_e108 == (_e109 + 1u))) {
+                uint _e113 = after;
+                rng_state = _e113;
+                const LightSample lightsample_14 = _e60;
+                return lightsample_14;
+            }
+            uint _e115 = bits_1;
+            uint _e117 = resolved;
+            bits_1 = (_e115 | (1u << (_e117 & 31u)));
+        }
+        uint _e122 = resolved;
+        resolved = (_e122 + 1u);
+        uint _e126 = bits_1;
+        scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)] = _e126;
+        uint _e132 = resolved;
+        scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)] = _e132;
+    }
+    const LightSample lightsample_15 = ZeroValueLightSample();
+    return lightsample_15;
 }
 
 float3 lambert_shade(Lambert m, Ray ray_15, Hit hit_2)
 {
     float3 color = (float3)0;
-    uint i_2 = (uint)0;
+    uint i_4 = (uint)0;
 
     const float3 _e3 = shading_normal(ray_15, hit_2);
     color = (0.0).xxx;
     const uint _e8 = light_count_query();
-    i_2 = 0u;
-    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    i_4 = 0u;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
-        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e30 = i_2;
-            i_2 = (_e30 + 1u);
+            uint _e30 = i_4;
+            i_4 = (_e30 + 1u);
         }
         loop_init_2 = false;
-        uint _e10 = i_2;
+        uint _e10 = i_4;
         if ((_e10 >= _e8)) {
             break;
         }
-        uint _e12 = i_2;
-        const LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
+        uint _e12 = i_4;
+        const LightSample _e15 = sample_light_deferred(_e12, hit_2.position, hit_2.geometric_normal);
         float3 _e16 = color;
         color = (_e16 + (((m.albedo * (INV_PI).xxx) * _e15.radiance) * (max(dot(_e3, _e15.dir), 0.0)).xxx));
     }
@@ -1716,24 +1827,24 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_20, Hit hit
     return;
 }
 
-float3 spawn_origin_at(float3 position_8, float3 normal_8, float error_1, float3 dir_2)
+float3 spawn_origin_at(float3 position_9, float3 normal_9, float error_1, float3 dir_3)
 {
     float3 n_7 = (float3)0;
 
-    n_7 = normal_8;
+    n_7 = normal_9;
     float3 _e5 = n_7;
-    if ((dot(dir_2, _e5) < 0.0)) {
+    if ((dot(dir_3, _e5) < 0.0)) {
         float3 _e9 = n_7;
         n_7 = -(_e9);
     }
     float3 _e11 = n_7;
-    const float3 _e12 = offset_origin(position_8, _e11, error_1);
+    const float3 _e12 = offset_origin(position_9, _e11, error_1);
     return _e12;
 }
 
-float3 spawn_origin(Hit hit_5, float error_2, float3 dir_3)
+float3 spawn_origin(Hit hit_5, float error_2, float3 dir_4)
 {
-    const float3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_3);
+    const float3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
     return _e5;
 }
 
@@ -1782,7 +1893,7 @@ float3 trace(Ray camera_ray)
     float t_5 = (float)0;
     Hit hit_6 = (Hit)0;
     Frame f = (Frame)0;
-    uint i_3 = (uint)0;
+    uint i_5 = (uint)0;
     uint medium = (uint)0;
 
     if (!(HAS_SECONDARY_RAYS)) {
@@ -1818,10 +1929,10 @@ float3 trace(Ray camera_ray)
     s_sum = (0.0).xxx;
     fresh = false;
     waiting = false;
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
@@ -1882,27 +1993,27 @@ float3 trace(Ray camera_ray)
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
                         f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_10, 0u);
-                        i_3 = 0u;
-                        uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+                        i_5 = 0u;
+                        uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
                         bool loop_init_3 = true;
                         while(true) {
-                            if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-                            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                            if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+                            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                             if (!loop_init_3) {
-                                uint _e175 = i_3;
-                                i_3 = (_e175 + 1u);
+                                uint _e175 = i_5;
+                                i_5 = (_e175 + 1u);
                             }
                             loop_init_3 = false;
-                            uint _e155 = i_3;
+                            uint _e155 = i_5;
                             if ((_e155 >= n_10)) {
                                 break;
                             }
-                            uint _e158 = i_3;
-                            uint _e162 = i_3;
+                            uint _e158 = i_5;
+                            uint _e162 = i_5;
                             float3 _e165 = spawn_dirs[min(uint(_e162), 0u)];
                             f.dirs[min(uint(min(_e158, 0u)), 0u)] = _e165;
-                            uint _e167 = i_3;
-                            uint _e171 = i_3;
+                            uint _e167 = i_5;
+                            uint _e171 = i_5;
                             float3 _e174 = spawn_weights[min(uint(_e171), 0u)];
                             f.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
                         }
@@ -1955,17 +2066,17 @@ float3 trace(Ray camera_ray)
         uint _e241 = stack[min(uint(min(top_1, 3u)), 3u)].next;
         uint _e246 = stack[min(uint(min(top_1, 3u)), 3u)].count;
         if ((_e241 < _e246)) {
-            uint i_4 = stack[min(uint(min(top_1, 3u)), 3u)].next;
-            stack[min(uint(min(top_1, 3u)), 3u)].next = (i_4 + 1u);
+            uint i_7 = stack[min(uint(min(top_1, 3u)), 3u)].next;
+            stack[min(uint(min(top_1, 3u)), 3u)].next = (i_7 + 1u);
             Ray parent = stack[min(uint(min(top_1, 3u)), 3u)].ray;
             Hit hit_9 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
-            float3 dir_7 = stack[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_4, 0u)), 0u)];
+            float3 dir_8 = stack[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_7, 0u)), 0u)];
             medium = parent.medium;
             float _e283 = stack[min(uint(min(top_1, 3u)), 3u)].error;
-            const float3 _e284 = spawn_origin(hit_9, _e283, dir_7);
+            const float3 _e284 = spawn_origin(hit_9, _e283, dir_8);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_21 = ConstructRay(_e284, 0.0, dir_7, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_21 = ConstructRay(_e284, 0.0, dir_8, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(uint(min(top_1, 3u)), 3u)].ray;
             s_ray = _e299;
@@ -2009,11 +2120,11 @@ void render_pixel(uint2 pixel_3)
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_2 = 0u;
-    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_4 = true;
     while(true) {
-        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_4) {
             uint _e46 = s_2;
             s_2 = (_e46 + 1u);

@@ -181,6 +181,13 @@ const float GAMMA_4_ = 2.3841864e-7;
 const bool HAS_SECONDARY_RAYS = true;
 const bool HAS_BACKGROUND = true;
 const uint LIGHT_ENTRY_STRIDE = 2u;
+const uint SCRATCH_RESOLVED = 3u;
+const uint SCRATCH_LIGHT_BITS = 11u;
+const uint SCRATCH_QUERY = 2u;
+const uint SCRATCH_PENDING = 4u;
+const uint LIGHT_QUERIES = 32u;
+const uint COUNTER_SHADOW_OVERFLOW = 3u;
+const uint SCRATCH_LIGHT_QUERY = 12u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const uint RAY_SHADOW = 2u;
 const float MIS_BOUNCE_LENGTH = 3.0;
@@ -215,13 +222,15 @@ layout(std430, binding = 5) readonly buffer type_14_block_6Compute { uvec4 _grou
 
 uint ray_count = 0u;
 
+uint scratch[22] = uint[22](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+
+layout(std430, binding = 9) buffer type_17_block_7Compute { uint _group_0_binding_9_cs[]; };
+
 vec3 spawn_dirs[1] = vec3[1](vec3(0.0));
 
 vec3 spawn_weights[1] = vec3[1](vec3(0.0));
 
 uint spawn_count = 0u;
-
-layout(std430, binding = 9) buffer type_19_block_7Compute { uint _group_0_binding_9_cs[]; };
 
 layout(std430, binding = 8) buffer type_10_block_8Compute { vec4 _group_0_binding_8_cs[]; };
 
@@ -414,15 +423,15 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float cx = (c_7[min(r_1.kx, 2u)] - (r_1.shear.x * c_7[min(r_1.kz, 2u)]));
     float cy = (c_7[min(r_1.ky, 2u)] - (r_1.shear.y * c_7[min(r_1.kz, 2u)]));
     float u_3 = ((cx * by) - (cy * bx));
-    float v_4 = ((ax * cy) - (ay * cx));
+    float v_5 = ((ax * cy) - (ay * cx));
     float w_1 = ((bx * ay) - (by * ax));
-    bool outside = ((((u_3 < 0.0) || (v_4 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_4 > 0.0)) || (w_1 > 0.0)));
-    float det = ((u_3 + v_4) + w_1);
+    bool outside = ((((u_3 < 0.0) || (v_5 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_5 > 0.0)) || (w_1 > 0.0)));
+    float det = ((u_3 + v_5) + w_1);
     float rcp = (1.0 / det);
-    float t_4 = ((((u_3 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_4 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear.z * c_7[min(r_1.kz, 2u)]))) * rcp);
+    float t_4 = ((((u_3 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_5 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear.z * c_7[min(r_1.kz, 2u)]))) * rcp);
     bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_12 ? vec3(t_4, (v_4 * rcp), (w_1 * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_12 ? vec3(t_4, (v_5 * rcp), (w_1 * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
@@ -967,72 +976,54 @@ QuadLight load_QuadLight(uint offset_7) {
     return QuadLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)), vec3(uintBitsToFloat(_e62), uintBitsToFloat(_e68), uintBitsToFloat(_e74)), uintBitsToFloat(_e81), _e87);
 }
 
-vec3 step_toward(vec3 x_1, vec3 s_1) {
-    uvec3 bits_1 = floatBitsToUint(x_1);
-    bvec3 up_1 = greaterThan((sign(x_1) * sign(s_1)), vec3(0.0));
-    vec3 stepped = uintBitsToFloat(mix((bits_1 - uvec3(1u)), (bits_1 + uvec3(1u)), up_1));
-    vec3 from_zero = mix(vec3(-1.1754944e-38), vec3(1.1754944e-38), greaterThan(s_1, vec3(0.0)));
-    vec3 moved = mix(stepped, from_zero, equal(x_1, vec3(0.0)));
-    return mix(x_1, moved, not(equal(s_1, vec3(0.0))));
+void scratch_store3f(uint i_1, vec3 v_1) {
+    uvec3 b_8 = floatBitsToUint(v_1);
+    scratch[min(i_1, 21u)] = b_8.x;
+    scratch[min((i_1 + 1u), 21u)] = b_8.y;
+    scratch[min((i_1 + 2u), 21u)] = b_8.z;
+    return;
 }
 
-vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
-    float d_3 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    vec3 offset_16 = (n_3 * vec3(d_3));
-    vec3 _e17 = step_toward((p_5 + offset_16), offset_16);
-    return _e17;
-}
-
-Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
-    vec3 n_4 = vec3(0.0);
-    float tmax_4 = 0.0;
-    n_4 = normal;
-    vec3 _e5 = n_4;
-    if ((dot(dir, _e5) < 0.0)) {
-        vec3 _e9 = n_4;
-        n_4 = -(_e9);
+float shadow_deferred(vec3 position, vec3 normal, vec3 dir, float dist) {
+    uint i_6 = scratch[min(SCRATCH_QUERY, 21u)];
+    scratch[min(SCRATCH_QUERY, 21u)] = (i_6 + 1u);
+    uint _e22 = scratch[min(SCRATCH_RESOLVED, 21u)];
+    if ((i_6 < _e22)) {
+        uint _e29 = scratch[min(SCRATCH_LIGHT_BITS, 21u)];
+        return float(((_e29 >> (i_6 & 31u)) & 1u));
     }
-    vec3 a_7 = abs(position);
-    float _e13 = hit_error;
-    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_7.x, a_7.y), a_7.z)));
-    vec3 _e22 = n_4;
-    vec3 _e23 = offset_origin(position, _e22, error_3);
-    uint _e25 = F32_INF;
-    tmax_4 = uintBitsToFloat(_e25);
-    uint _e29 = F32_INF;
-    if ((dist < uintBitsToFloat(_e29))) {
-        vec3 light = (position + (dir * vec3(dist)));
-        float dd_1 = dot(dir, dir);
-        float along_1 = (dot((light - _e23), dir) / dd_1);
-        vec3 l_7 = (abs(position) + abs((dir * vec3(dist))));
-        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd_1)));
+    uint _e41 = scratch[min(SCRATCH_PENDING, 21u)];
+    if ((_e41 != 0u)) {
+        return 1.0;
     }
-    float _e59 = tmax_4;
-    return Ray(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    if ((i_6 >= LIGHT_QUERIES)) {
+        atomicAdd(_group_0_binding_9_cs[min(COUNTER_SHADOW_OVERFLOW, 3u)], 1u);
+        return 1.0;
+    }
+    scratch_store3f(SCRATCH_LIGHT_QUERY, position);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
+    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)] = floatBitsToUint(dist);
+    scratch[min(SCRATCH_PENDING, 21u)] = 1u;
+    return 1.0;
 }
 
-float shadow_query(vec3 position_1, vec3 normal_1, vec3 dir_1, float dist_1) {
-    Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    Candidate _e6 = intersect_scene(_e4, true);
-    return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
-}
-
-LightSample quad_light(QuadLight l, vec3 position_2, vec3 normal_2) {
+LightSample quad_light(QuadLight l, vec3 position_1, vec3 normal_1) {
     vec3 c_10 = cross(l.edge_u, l.edge_v);
     float area = length(c_10);
     vec2 _e7 = rand2_next();
-    vec3 to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_2);
+    vec3 to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_1);
     float dist2_ = dot(to_light, to_light);
-    float dist_2 = sqrt(dist2_);
-    vec3 dir_7 = (to_light / vec3(max(dist_2, 1e-20)));
-    float cos_light = (-(dot(dir_7, c_10)) / max(area, 1e-30));
+    float dist_3 = sqrt(dist2_);
+    vec3 dir_8 = (to_light / vec3(max(dist_3, 1e-20)));
+    float cos_light = (-(dot(dir_8, c_10)) / max(area, 1e-30));
     if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
-        return LightSample(dir_7, dist_2, vec3(0.0), 0.0);
+        return LightSample(dir_8, dist_3, vec3(0.0), 0.0);
     }
-    float _e42 = shadow_query(position_2, normal_2, dir_7, dist_2);
+    float _e42 = shadow_deferred(position_1, normal_1, dir_8, dist_3);
     float strength = (((l.intensity * cos_light) * area) / dist2_);
     float pdf_1 = ((l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0);
-    return LightSample(dir_7, dist_2, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
+    return LightSample(dir_8, dist_3, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
 }
 
 SphereLight load_SphereLight(uint offset_8) {
@@ -1048,16 +1039,16 @@ SphereLight load_SphereLight(uint offset_8) {
     return SphereLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24), vec3(uintBitsToFloat(_e30), uintBitsToFloat(_e36), uintBitsToFloat(_e42)), uintBitsToFloat(_e49), _e55);
 }
 
-mat3x3 orthonormal_basis(vec3 n_5) {
-    float sign_ = (((floatBitsToUint(n_5.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
-    float a_8 = (-1.0 / (sign_ + n_5.z));
-    float b_8 = ((n_5.x * n_5.y) * a_8);
-    float _e16 = (sign_ * n_5.x);
-    return mat3x3(vec3((1.0 + ((_e16 * n_5.x) * a_8)), (sign_ * b_8), -(_e16)), vec3(b_8, (sign_ + ((n_5.y * n_5.y) * a_8)), -(n_5.y)), n_5);
+mat3x3 orthonormal_basis(vec3 n_3) {
+    float sign_ = (((floatBitsToUint(n_3.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
+    float a_7 = (-1.0 / (sign_ + n_3.z));
+    float b_9 = ((n_3.x * n_3.y) * a_7);
+    float _e16 = (sign_ * n_3.x);
+    return mat3x3(vec3((1.0 + ((_e16 * n_3.x) * a_7)), (sign_ * b_9), -(_e16)), vec3(b_9, (sign_ + ((n_3.y * n_3.y) * a_7)), -(n_3.y)), n_3);
 }
 
-LightSample sphere_light(SphereLight l_1, vec3 position_3, vec3 normal_3) {
-    vec3 to_center = (l_1.position - position_3);
+LightSample sphere_light(SphereLight l_1, vec3 position_2, vec3 normal_2) {
+    vec3 to_center = (l_1.position - position_2);
     float d2_ = dot(to_center, to_center);
     float r2_2 = max((l_1.radius * l_1.radius), 1e-20);
     if ((d2_ <= r2_2)) {
@@ -1073,24 +1064,24 @@ LightSample sphere_light(SphereLight l_1, vec3 position_3, vec3 normal_3) {
     float phi = (TAU * _e31.y);
     mat3x3 _e45 = orthonormal_basis(w_4);
     vec3 _e52 = normalize_vec3f((_e45 * vec3((cos(phi) * sin_t), (sin(phi) * sin_t), cos_t)));
-    float along_2 = dot(to_center, _e52);
-    float dist_3 = max((along_2 - sqrt(max((r2_2 - (d2_ - (along_2 * along_2))), 0.0))), 0.0);
+    float along_1 = dot(to_center, _e52);
+    float dist_4 = max((along_1 - sqrt(max((r2_2 - (d2_ - (along_1 * along_1))), 0.0))), 0.0);
     float weight_4 = (((l_1.intensity * 2.0) * one_minus_cos_max) / r2_2);
-    float _e68 = shadow_query(position_3, normal_3, _e52, dist_3);
+    float _e68 = shadow_deferred(position_2, normal_2, _e52, dist_4);
     float pdf_2 = ((l_1.lamp == 1u) ? (1.0 / (TAU * one_minus_cos_max)) : 0.0);
-    return LightSample(_e52, dist_3, ((l_1.color * vec3(weight_4)) * vec3(_e68)), pdf_2);
+    return LightSample(_e52, dist_4, ((l_1.color * vec3(weight_4)) * vec3(_e68)), pdf_2);
 }
 
-LightSample dispatch_light(uint type_id_3, uint offset_9, vec3 position_4, vec3 normal_4) {
+LightSample dispatch_light(uint type_id_3, uint offset_9, vec3 position_3, vec3 normal_3) {
     switch(type_id_3) {
         case 0u: {
             QuadLight _e4 = load_QuadLight(offset_9);
-            LightSample _e5 = quad_light(_e4, position_4, normal_4);
+            LightSample _e5 = quad_light(_e4, position_3, normal_3);
             return _e5;
         }
         case 1u: {
             SphereLight _e6 = load_SphereLight(offset_9);
-            LightSample _e7 = sphere_light(_e6, position_4, normal_4);
+            LightSample _e7 = sphere_light(_e6, position_3, normal_3);
             return _e7;
         }
         default: {
@@ -1100,16 +1091,128 @@ LightSample dispatch_light(uint type_id_3, uint offset_9, vec3 position_4, vec3 
     return LightSample(vec3(0.0), 0.0, vec3(0.0), 0.0);
 }
 
-LightSample sample_light_query(uint i_1, vec3 position_5, vec3 normal_5) {
+vec3 scratch_load3f(uint i_2) {
+    uint _e5 = scratch[min(i_2, 21u)];
+    uint _e12 = scratch[min((i_2 + 1u), 21u)];
+    uint _e19 = scratch[min((i_2 + 2u), 21u)];
+    return uintBitsToFloat(uvec3(_e5, _e12, _e19));
+}
+
+vec3 step_toward(vec3 x_1, vec3 s_1) {
+    uvec3 bits_2 = floatBitsToUint(x_1);
+    bvec3 up_1 = greaterThan((sign(x_1) * sign(s_1)), vec3(0.0));
+    vec3 stepped = uintBitsToFloat(mix((bits_2 - uvec3(1u)), (bits_2 + uvec3(1u)), up_1));
+    vec3 from_zero = mix(vec3(-1.1754944e-38), vec3(1.1754944e-38), greaterThan(s_1, vec3(0.0)));
+    vec3 moved = mix(stepped, from_zero, equal(x_1, vec3(0.0)));
+    return mix(x_1, moved, not(equal(s_1, vec3(0.0))));
+}
+
+vec3 offset_origin(vec3 p_5, vec3 n_4, float error) {
+    float d_3 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    vec3 offset_16 = (n_4 * vec3(d_3));
+    vec3 _e17 = step_toward((p_5 + offset_16), offset_16);
+    return _e17;
+}
+
+Ray shadow_ray(vec3 position_4, vec3 normal_4, vec3 dir_1, float dist_1) {
+    vec3 n_5 = vec3(0.0);
+    float tmax_4 = 0.0;
+    n_5 = normal_4;
+    vec3 _e5 = n_5;
+    if ((dot(dir_1, _e5) < 0.0)) {
+        vec3 _e9 = n_5;
+        n_5 = -(_e9);
+    }
+    vec3 a_8 = abs(position_4);
+    float _e13 = hit_error;
+    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
+    vec3 _e22 = n_5;
+    vec3 _e23 = offset_origin(position_4, _e22, error_3);
+    uint _e25 = F32_INF;
+    tmax_4 = uintBitsToFloat(_e25);
+    uint _e29 = F32_INF;
+    if ((dist_1 < uintBitsToFloat(_e29))) {
+        vec3 light = (position_4 + (dir_1 * vec3(dist_1)));
+        float dd_1 = dot(dir_1, dir_1);
+        float along_2 = (dot((light - _e23), dir_1) / dd_1);
+        vec3 l_7 = (abs(position_4) + abs((dir_1 * vec3(dist_1))));
+        tmax_4 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd_1)));
+    }
+    float _e59 = tmax_4;
+    return Ray(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+}
+
+float shadow_query(vec3 position_5, vec3 normal_5, vec3 dir_2, float dist_2) {
+    Ray _e4 = shadow_ray(position_5, normal_5, dir_2, dist_2);
+    Candidate _e6 = intersect_scene(_e4, true);
+    return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
+}
+
+LightSample sample_light_deferred(uint i_3, vec3 position_6, vec3 normal_6) {
+    uint after = 0u;
+    uint resolved = 0u;
+    uint bits_1 = 0u;
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    if ((i_1 >= frame_4.light_count)) {
+    if ((i_3 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
-    uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    uint _e22 = _group_0_binding_6_cs[entry];
-    uint _e27 = _group_0_binding_6_cs[(entry + 1u)];
-    LightSample _e28 = dispatch_light(_e22, _e27, position_5, normal_5);
-    return _e28;
+    uint entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    uint type_id_7 = _group_0_binding_6_cs[entry];
+    uint offset_17 = _group_0_binding_6_cs[(entry + 1u)];
+    uint start = rng_state;
+    after = start;
+    resolved = 0u;
+    bits_1 = 0u;
+    scratch[min(SCRATCH_RESOLVED, 21u)] = 0u;
+    scratch[min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
+    while(true) {
+        rng_state = start;
+        scratch[min(SCRATCH_QUERY, 21u)] = 0u;
+        scratch[min(SCRATCH_PENDING, 21u)] = 0u;
+        LightSample _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_6);
+        uint _e66 = scratch[min(SCRATCH_PENDING, 21u)];
+        if ((_e66 == 0u)) {
+            uint _e69 = resolved;
+            if ((_e69 > 0u)) {
+                uint _e72 = after;
+                rng_state = _e72;
+            }
+            return _e60;
+        }
+        uint _e74 = resolved;
+        if ((_e74 == 0u)) {
+            uint _e78 = rng_state;
+            after = _e78;
+        }
+        uint _e79 = after;
+        rng_state = _e79;
+        vec3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
+        vec3 _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
+        vec3 _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
+        uint _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)];
+        float _e97 = shadow_query(_e82, _e85, _e88, uintBitsToFloat(_e95));
+        uint _e99 = rng_state;
+        after = _e99;
+        if (!((_e97 == 0.0))) {
+            uint _e108 = scratch[min(SCRATCH_QUERY, 21u)];
+            uint _e109 = resolved;
+            if ((_e108 == (_e109 + 1u))) {
+                uint _e113 = after;
+                rng_state = _e113;
+                return _e60;
+            }
+            uint _e115 = bits_1;
+            uint _e117 = resolved;
+            bits_1 = (_e115 | (1u << (_e117 & 31u)));
+        }
+        uint _e122 = resolved;
+        resolved = (_e122 + 1u);
+        uint _e126 = bits_1;
+        scratch[min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
+        uint _e132 = resolved;
+        scratch[min(SCRATCH_RESOLVED, 21u)] = _e132;
+    }
+    return LightSample(vec3(0.0), 0.0, vec3(0.0), 0.0);
 }
 
 float mis_weight(float p_6, float other) {
@@ -1135,24 +1238,24 @@ float mis_light_weight(LightSample l_2, float bsdf_pdf) {
 
 vec3 path_diffuse_shade(PathDiffuse m, Ray ray_13, Hit hit_1, vec3 secondary) {
     vec3 direct = vec3(0.0);
-    uint i_2 = 0u;
+    uint i_4 = 0u;
     vec3 n_13 = faceforward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
     direct = vec3(0.0);
     uint _e12 = light_count_query();
-    i_2 = 0u;
+    i_4 = 0u;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e33 = i_2;
-            i_2 = (_e33 + 1u);
+            uint _e33 = i_4;
+            i_4 = (_e33 + 1u);
         }
         loop_init_2 = false;
-        uint _e14 = i_2;
+        uint _e14 = i_4;
         if ((_e14 >= _e12)) {
             break;
         }
-        uint _e16 = i_2;
-        LightSample _e19 = sample_light_query(_e16, hit_1.position, hit_1.geometric_normal);
+        uint _e16 = i_4;
+        LightSample _e19 = sample_light_deferred(_e16, hit_1.position, hit_1.geometric_normal);
         float c_11 = max(dot(n_13, _e19.dir), 0.0);
         vec3 _e24 = direct;
         float _e28 = mis_light_weight(_e19, (c_11 * INV_PI));
@@ -1194,9 +1297,9 @@ vec3 quad_lamp_shade(QuadLamp m_1, Ray ray_16, Hit hit_2) {
     }
     float _e13 = bounce_pdf(ray_16);
     float len = length(ray_16.dir);
-    float dist_4 = (hit_2.t * len);
+    float dist_5 = (hit_2.t * len);
     float cos_l = (abs(dot(hit_2.geometric_normal, ray_16.dir)) / len);
-    float pl = ((dist_4 * dist_4) / max((cos_l * m_1.area), 1e-30));
+    float pl = ((dist_5 * dist_5) / max((cos_l * m_1.area), 1e-30));
     float _e29 = mis_weight(_e13, pl);
     return (le * vec3(_e29));
 }
@@ -1275,8 +1378,8 @@ float pbr_smith_v(float ndl, float ndv, float a2_1) {
     return (0.5 / max((gv + gl), 1e-20));
 }
 
-vec3 pbr_eval(vec3 base_1, float metallic, float roughness_1, vec3 n_6, vec3 v_1, vec3 l_3) {
-    float ndv_3 = dot(n_6, v_1);
+vec3 pbr_eval(vec3 base_1, float metallic, float roughness_1, vec3 n_6, vec3 v_2, vec3 l_3) {
+    float ndv_3 = dot(n_6, v_2);
     float ndl_1 = dot(n_6, l_3);
     if ((!((ndv_3 > 0.0)) || !((ndl_1 > 0.0)))) {
         return vec3(0.0);
@@ -1284,8 +1387,8 @@ vec3 pbr_eval(vec3 base_1, float metallic, float roughness_1, vec3 n_6, vec3 v_1
     float metal = clamp(metallic, 0.0, 1.0);
     float _e18 = pbr_alpha2_(roughness_1);
     vec3 f0_1 = mix(vec3(0.04), base_1, vec3(metal));
-    vec3 _e24 = normalize_vec3f((v_1 + l_3));
-    vec3 _e26 = pbr_fresnel(f0_1, dot(v_1, _e24));
+    vec3 _e24 = normalize_vec3f((v_2 + l_3));
+    vec3 _e26 = pbr_fresnel(f0_1, dot(v_2, _e24));
     float _e29 = pbr_ggx_d(clamp(dot(n_6, _e24), 0.0, 1.0), _e18);
     float _e30 = pbr_smith_v(ndl_1, ndv_3, _e18);
     vec3 spec = (_e26 * vec3((_e29 * _e30)));
@@ -1316,47 +1419,47 @@ float pbr_specular_pdf(float ndh_1, float ndv_2, float a2_2) {
     return ((_e3 * 0.5) / (ndv_2 + sqrt((a2_2 + (((1.0 - a2_2) * ndv_2) * ndv_2)))));
 }
 
-float pbr_pdf(vec3 base_3, float metallic_2, float roughness_2, vec3 n_7, vec3 v_2, vec3 l_4) {
-    float ndv_4 = dot(n_7, v_2);
+float pbr_pdf(vec3 base_3, float metallic_2, float roughness_2, vec3 n_7, vec3 v_3, vec3 l_4) {
+    float ndv_4 = dot(n_7, v_3);
     float ndl_2 = dot(n_7, l_4);
     if ((!((ndv_4 > 0.0)) || !((ndl_2 > 0.0)))) {
         return 0.0;
     }
     float _e16 = pbr_alpha2_(roughness_2);
     float _e17 = pbr_specular_chance(base_3, metallic_2, ndv_4);
-    vec3 _e19 = normalize_vec3f((v_2 + l_4));
+    vec3 _e19 = normalize_vec3f((v_3 + l_4));
     float _e22 = pbr_specular_pdf(clamp(dot(n_7, _e19), 0.0, 1.0), ndv_4, _e16);
     return ((_e17 * _e22) + (((1.0 - _e17) * ndl_2) * INV_PI));
 }
 
 vec3 path_pbr_shade(PathPbr m_3, Ray ray_20, Hit hit_6, vec3 secondary_1) {
     vec3 direct_1 = vec3(0.0);
-    uint i_3 = 0u;
+    uint i_5 = 0u;
     float w = 0.0;
     vec3 _e4 = path_pbr_n(ray_20, hit_6);
     vec3 _e6 = normalize_vec3f(ray_20.dir);
-    vec3 v_5 = -(_e6);
+    vec3 v_6 = -(_e6);
     direct_1 = vec3(0.0);
     uint _e12 = light_count_query();
-    i_3 = 0u;
+    i_5 = 0u;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e49 = i_3;
-            i_3 = (_e49 + 1u);
+            uint _e49 = i_5;
+            i_5 = (_e49 + 1u);
         }
         loop_init_3 = false;
-        uint _e14 = i_3;
+        uint _e14 = i_5;
         if ((_e14 >= _e12)) {
             break;
         }
-        uint _e16 = i_3;
-        LightSample _e19 = sample_light_query(_e16, hit_6.position, hit_6.geometric_normal);
+        uint _e16 = i_5;
+        LightSample _e19 = sample_light_deferred(_e16, hit_6.position, hit_6.geometric_normal);
         if (any(greaterThan(_e19.radiance, vec3(0.0)))) {
-            vec3 _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_5, _e19.dir);
+            vec3 _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_6, _e19.dir);
             w = 1.0;
             if ((_e19.pdf > 0.0)) {
-                float _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_5, _e19.dir);
+                float _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_6, _e19.dir);
                 float _e41 = mis_weight(_e19.pdf, _e40);
                 w = _e41;
             }
@@ -1432,15 +1535,15 @@ vec3 sample_cosine_hemisphere(vec3 n_8, vec2 u) {
     return (_e17 * local);
 }
 
-vec3 mis_bounce_dir(vec3 dir_2, float pdf) {
+vec3 mis_bounce_dir(vec3 dir_3, float pdf) {
     float x_4 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
-    return (dir_2 * vec3((MIS_BOUNCE_LENGTH + x_4)));
+    return (dir_3 * vec3((MIS_BOUNCE_LENGTH + x_4)));
 }
 
-void rt_spawn(vec3 dir_3, vec3 weight) {
+void rt_spawn(vec3 dir_4, vec3 weight) {
     uint _e3 = spawn_count;
     if ((_e3 < 1u)) {
-        spawn_dirs[_e3] = dir_3;
+        spawn_dirs[_e3] = dir_4;
         spawn_weights[_e3] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1490,9 +1593,9 @@ vec3 pbr_sample_vndf(vec3 ve, float alpha, vec2 u_1) {
     return _e84;
 }
 
-PbrSample pbr_sample(vec3 base_4, float metallic_3, float roughness_3, vec3 n_9, vec3 v_3, vec3 u_2) {
+PbrSample pbr_sample(vec3 base_4, float metallic_3, float roughness_3, vec3 n_9, vec3 v_4, vec3 u_2) {
     vec3 l_5 = vec3(0.0);
-    float ndv_5 = dot(n_9, v_3);
+    float ndv_5 = dot(n_9, v_4);
     if (!((ndv_5 > 0.0))) {
         return PbrSample(n_9, vec3(0.0), 0.0);
     }
@@ -1501,21 +1604,21 @@ PbrSample pbr_sample(vec3 base_4, float metallic_3, float roughness_3, vec3 n_9,
     if ((u_2.x < _e14)) {
         mat3x3 _e20 = orthonormal_basis(n_9);
         float _e21 = pbr_alpha2_(roughness_3);
-        vec3 _e26 = pbr_sample_vndf((transpose(_e20) * v_3), sqrt(_e21), u_2.yz);
+        vec3 _e26 = pbr_sample_vndf((transpose(_e20) * v_4), sqrt(_e21), u_2.yz);
         vec3 h_2 = (_e20 * _e26);
-        l_5 = reflect(-(v_3), h_2);
+        l_5 = reflect(-(v_4), h_2);
     } else {
         vec3 _e31 = sample_cosine_hemisphere(n_9, u_2.yz);
         l_5 = _e31;
     }
     vec3 _e32 = l_5;
-    float _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_3, _e32);
+    float _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_4, _e32);
     if (!((_e33 > 0.0))) {
         vec3 _e37 = l_5;
         return PbrSample(_e37, vec3(0.0), 0.0);
     }
     vec3 _e42 = l_5;
-    vec3 _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_3, _e42);
+    vec3 _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_4, _e42);
     vec3 weight_5 = (_e43 / vec3(_e33));
     vec3 _e46 = l_5;
     return PbrSample(_e46, weight_5, _e33);
@@ -1526,10 +1629,10 @@ void path_pbr_rays(PathPbr m_5, Ray ray_26, Hit hit_9) {
     vec3 _e3 = path_pbr_ng(ray_26, hit_9);
     vec3 _e4 = path_pbr_n(ray_26, hit_9);
     vec3 _e6 = normalize_vec3f(ray_26.dir);
-    vec3 v_6 = -(_e6);
+    vec3 v_7 = -(_e6);
     float _e11 = rand_next();
     vec2 _e12 = rand2_next();
-    PbrSample _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_6, vec3(_e11, _e12));
+    PbrSample _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_7, vec3(_e11, _e12));
     if ((!((_e14.pdf > 0.0)) || !((dot(_e14.dir, _e3) > 0.0)))) {
         return;
     }
@@ -1571,28 +1674,28 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_27, Hit hit
     return;
 }
 
-vec3 spawn_origin_at(vec3 position_6, vec3 normal_6, float error_1, vec3 dir_4) {
+vec3 spawn_origin_at(vec3 position_7, vec3 normal_7, float error_1, vec3 dir_5) {
     vec3 n_10 = vec3(0.0);
-    n_10 = normal_6;
+    n_10 = normal_7;
     vec3 _e5 = n_10;
-    if ((dot(dir_4, _e5) < 0.0)) {
+    if ((dot(dir_5, _e5) < 0.0)) {
         vec3 _e9 = n_10;
         n_10 = -(_e9);
     }
     vec3 _e11 = n_10;
-    vec3 _e12 = offset_origin(position_6, _e11, error_1);
+    vec3 _e12 = offset_origin(position_7, _e11, error_1);
     return _e12;
 }
 
-vec3 spawn_origin(Hit hit_11, float error_2, vec3 dir_5) {
-    vec3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_5);
+vec3 spawn_origin(Hit hit_11, float error_2, vec3 dir_6) {
+    vec3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_6);
     return _e5;
 }
 
 PathState path_step(PathState s_2, Candidate c_5) {
     PathState out_ = PathState(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), vec3(0.0), vec3(0.0), false);
     bool spawned = false;
-    vec3 dir_6 = vec3(0.0);
+    vec3 dir_7 = vec3(0.0);
     vec3 weight_3 = vec3(0.0);
     vec3 beta = vec3(0.0);
     Ray ray_29 = s_2.ray;
@@ -1609,7 +1712,7 @@ PathState path_step(PathState s_2, Candidate c_5) {
     Hit _e22 = finish_hit(ray_29, c_5);
     float error_4 = hit_error;
     spawned = false;
-    dir_6 = vec3(0.0);
+    dir_7 = vec3(0.0);
     weight_3 = vec3(0.0);
     if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_29.depth < MAX_DEPTH))) {
         spawn_count = 0u;
@@ -1618,7 +1721,7 @@ PathState path_step(PathState s_2, Candidate c_5) {
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
             vec3 _e56 = spawn_dirs[0u];
-            dir_6 = _e56;
+            dir_7 = _e56;
             vec3 _e60 = spawn_weights[0u];
             weight_3 = _e60;
         }
@@ -1651,9 +1754,9 @@ PathState path_step(PathState s_2, Candidate c_5) {
     }
     vec3 _e109 = beta;
     out_.beta = _e109;
-    vec3 _e111 = dir_6;
+    vec3 _e111 = dir_7;
     vec3 _e112 = spawn_origin(_e22, error_4, _e111);
-    vec3 _e114 = dir_6;
+    vec3 _e114 = dir_7;
     uint _e116 = F32_INF;
     out_.ray = Ray(_e112, 0.0, _e114, uintBitsToFloat(_e116), (ray_29.depth + 1u), RAY_SECONDARY, ray_29.medium);
     out_.live = true;

@@ -242,6 +242,13 @@ static const float GAMMA_4_ = 2.3841864e-7;
 static const bool HAS_SECONDARY_RAYS = true;
 static const bool HAS_BACKGROUND = true;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
+static const uint SCRATCH_RESOLVED = 3u;
+static const uint SCRATCH_LIGHT_BITS = 11u;
+static const uint SCRATCH_QUERY = 2u;
+static const uint SCRATCH_PENDING = 4u;
+static const uint LIGHT_QUERIES = 32u;
+static const uint COUNTER_SHADOW_OVERFLOW = 3u;
+static const uint SCRATCH_LIGHT_QUERY = 12u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
 static const float MIS_BOUNCE_LENGTH = 3.0;
@@ -264,10 +271,11 @@ static uint traversal_stack[72] = (uint[72])0;
 static float hit_error = (float)0;
 ByteAddressBuffer attributes : register(t5);
 static uint ray_count = (uint)0;
+static uint scratch[22] = (uint[22])0;
+RWByteAddressBuffer counters : register(u9);
 static float3 spawn_dirs[1] = (float3[1])0;
 static float3 spawn_weights[1] = (float3[1])0;
 static uint spawn_count = (uint)0;
-RWByteAddressBuffer counters : register(u9);
 RWByteAddressBuffer accum : register(u8);
 
 uint2 naga_div(uint2 lhs, uint2 rhs) {
@@ -545,15 +553,15 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float cx = (c_7[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_7[min(uint(min(r_1.kz, 2u)), 2u)]));
     float cy = (c_7[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_7[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u_3 = ((cx * by) - (cy * bx));
-    float v_4 = ((ax * cy) - (ay * cx));
+    float v_5 = ((ax * cy) - (ay * cx));
     float w_1 = ((bx * ay) - (by * ax));
-    bool outside = ((((u_3 < 0.0) || (v_4 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_4 > 0.0)) || (w_1 > 0.0)));
-    float det = ((u_3 + v_4) + w_1);
+    bool outside = ((((u_3 < 0.0) || (v_5 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_5 > 0.0)) || (w_1 > 0.0)));
+    float det = ((u_3 + v_5) + w_1);
     float rcp_ = (1.0 / det);
-    float t_4 = ((((u_3 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_4 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w_1 * (r_1.shear.z * c_7[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_4 = ((((u_3 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_5 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w_1 * (r_1.shear.z * c_7[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_12 ? float3(t_4, (v_4 * rcp_), (w_1 * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_12 ? float3(t_4, (v_5 * rcp_), (w_1 * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -1260,60 +1268,38 @@ QuadLight load_QuadLight(uint offset_7)
     return quadlight;
 }
 
-float3 step_toward(float3 x_1, float3 s_1)
+void scratch_store3f(uint i_1, float3 v_1)
 {
-    uint3 bits_1 = asuint(x_1);
-    bool3 up_1 = ((sign(x_1) * sign(s_1)) > (0.0).xxx);
-    float3 stepped = asfloat((up_1 ? (bits_1 + (1u).xxx) : (bits_1 - (1u).xxx)));
-    float3 from_zero = ((s_1 > (0.0).xxx) ? (1.1754944e-38).xxx : (-1.1754944e-38).xxx);
-    float3 moved = ((x_1 == (0.0).xxx) ? from_zero : stepped);
-    return (!((s_1 == (0.0).xxx)) ? moved : x_1);
+    uint3 b_8 = asuint(v_1);
+    scratch[min(uint(min(i_1, 21u)), 21u)] = b_8.x;
+    scratch[min(uint(min((i_1 + 1u), 21u)), 21u)] = b_8.y;
+    scratch[min(uint(min((i_1 + 2u), 21u)), 21u)] = b_8.z;
+    return;
 }
 
-float3 offset_origin(float3 p_5, float3 n_3, float error)
+float shadow_deferred(float3 position, float3 normal, float3 dir, float dist)
 {
-    float d_3 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    float3 offset_16 = (n_3 * (d_3).xxx);
-    const float3 _e17 = step_toward((p_5 + offset_16), offset_16);
-    return _e17;
-}
-
-Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
-{
-    float3 n_4 = (float3)0;
-    float tmax_4 = (float)0;
-
-    n_4 = normal;
-    float3 _e5 = n_4;
-    if ((dot(dir, _e5) < 0.0)) {
-        float3 _e9 = n_4;
-        n_4 = -(_e9);
+    uint i_6 = scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)];
+    scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)] = (i_6 + 1u);
+    uint _e22 = scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)];
+    if ((i_6 < _e22)) {
+        uint _e29 = scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)];
+        return float(((_e29 >> (i_6 & 31u)) & 1u));
     }
-    float3 a_7 = abs(position);
-    float _e13 = hit_error;
-    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_7.x, a_7.y), a_7.z)));
-    float3 _e22 = n_4;
-    const float3 _e23 = offset_origin(position, _e22, error_3);
-    uint _e25 = F32_INF;
-    tmax_4 = asfloat(_e25);
-    uint _e29 = F32_INF;
-    if ((dist < asfloat(_e29))) {
-        float3 light = (position + (dir * (dist).xxx));
-        float dd_1 = dot(dir, dir);
-        float along_1 = (dot((light - _e23), dir) / dd_1);
-        float3 l_7 = (abs(position) + abs((dir * (dist).xxx)));
-        tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd_1)));
+    uint _e41 = scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)];
+    if ((_e41 != 0u)) {
+        return 1.0;
     }
-    float _e59 = tmax_4;
-    const Ray ray_32 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_32;
-}
-
-float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
-{
-    const Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    const Candidate _e6 = intersect_scene(_e4, true);
-    return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
+    if ((i_6 >= LIGHT_QUERIES)) {
+        counters.InterlockedAdd(min(COUNTER_SHADOW_OVERFLOW, 3u)*4, 1u);
+        return 1.0;
+    }
+    scratch_store3f(SCRATCH_LIGHT_QUERY, position);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
+    scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 21u)), 21u)] = asuint(dist);
+    scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)] = 1u;
+    return 1.0;
 }
 
 LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
@@ -1325,24 +1311,24 @@ LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg
     return ret;
 }
 
-LightSample quad_light(QuadLight l, float3 position_2, float3 normal_2)
+LightSample quad_light(QuadLight l, float3 position_1, float3 normal_1)
 {
     float3 c_10 = cross(l.edge_u, l.edge_v);
     float area = length(c_10);
     const float2 _e7 = rand2_next();
-    float3 to_light = (((l.corner + (l.edge_u * (_e7.x).xxx)) + (l.edge_v * (_e7.y).xxx)) - position_2);
+    float3 to_light = (((l.corner + (l.edge_u * (_e7.x).xxx)) + (l.edge_v * (_e7.y).xxx)) - position_1);
     float dist2_ = dot(to_light, to_light);
-    float dist_2 = sqrt(dist2_);
-    float3 dir_7 = (to_light / (max(dist_2, 1e-20)).xxx);
-    float cos_light = (-(dot(dir_7, c_10)) / max(area, 1e-30));
+    float dist_3 = sqrt(dist2_);
+    float3 dir_8 = (to_light / (max(dist_3, 1e-20)).xxx);
+    float cos_light = (-(dot(dir_8, c_10)) / max(area, 1e-30));
     if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
-        const LightSample lightsample = ConstructLightSample(dir_7, dist_2, (0.0).xxx, 0.0);
+        const LightSample lightsample = ConstructLightSample(dir_8, dist_3, (0.0).xxx, 0.0);
         return lightsample;
     }
-    const float _e42 = shadow_query(position_2, normal_2, dir_7, dist_2);
+    const float _e42 = shadow_deferred(position_1, normal_1, dir_8, dist_3);
     float strength = (((l.intensity * cos_light) * area) / dist2_);
     float pdf_1 = ((l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0);
-    const LightSample lightsample_1 = ConstructLightSample(dir_7, dist_2, ((l.color * (strength).xxx) * (_e42).xxx), pdf_1);
+    const LightSample lightsample_1 = ConstructLightSample(dir_8, dist_3, ((l.color * (strength).xxx) * (_e42).xxx), pdf_1);
     return lightsample_1;
 }
 
@@ -1371,18 +1357,18 @@ SphereLight load_SphereLight(uint offset_8)
     return spherelight;
 }
 
-float3x3 orthonormal_basis(float3 n_5)
+float3x3 orthonormal_basis(float3 n_3)
 {
-    float sign_ = (((asuint(n_5.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
-    float a_8 = (-1.0 / (sign_ + n_5.z));
-    float b_8 = ((n_5.x * n_5.y) * a_8);
-    float _e16 = (sign_ * n_5.x);
-    return float3x3(float3((1.0 + ((_e16 * n_5.x) * a_8)), (sign_ * b_8), -(_e16)), float3(b_8, (sign_ + ((n_5.y * n_5.y) * a_8)), -(n_5.y)), n_5);
+    float sign_ = (((asuint(n_3.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
+    float a_7 = (-1.0 / (sign_ + n_3.z));
+    float b_9 = ((n_3.x * n_3.y) * a_7);
+    float _e16 = (sign_ * n_3.x);
+    return float3x3(float3((1.0 + ((_e16 * n_3.x) * a_7)), (sign_ * b_9), -(_e16)), float3(b_9, (sign_ + ((n_3.y * n_3.y) * a_7)), -(n_3.y)), n_3);
 }
 
-LightSample sphere_light(SphereLight l_1, float3 position_3, float3 normal_3)
+LightSample sphere_light(SphereLight l_1, float3 position_2, float3 normal_2)
 {
-    float3 to_center = (l_1.position - position_3);
+    float3 to_center = (l_1.position - position_2);
     float d2_ = dot(to_center, to_center);
     float r2_2 = max((l_1.radius * l_1.radius), 1e-20);
     if ((d2_ <= r2_2)) {
@@ -1399,12 +1385,12 @@ LightSample sphere_light(SphereLight l_1, float3 position_3, float3 normal_3)
     float phi = (TAU * _e31.y);
     const float3x3 _e45 = orthonormal_basis(w_4);
     const float3 _e52 = normalize_vec3f(mul(float3((cos(phi) * sin_t), (sin(phi) * sin_t), cos_t), _e45));
-    float along_2 = dot(to_center, _e52);
-    float dist_3 = max((along_2 - sqrt(max((r2_2 - (d2_ - (along_2 * along_2))), 0.0))), 0.0);
+    float along_1 = dot(to_center, _e52);
+    float dist_4 = max((along_1 - sqrt(max((r2_2 - (d2_ - (along_1 * along_1))), 0.0))), 0.0);
     float weight_4 = (((l_1.intensity * 2.0) * one_minus_cos_max) / r2_2);
-    const float _e68 = shadow_query(position_3, normal_3, _e52, dist_3);
+    const float _e68 = shadow_deferred(position_2, normal_2, _e52, dist_4);
     float pdf_2 = ((l_1.lamp == 1u) ? (1.0 / (TAU * one_minus_cos_max)) : 0.0);
-    const LightSample lightsample_3 = ConstructLightSample(_e52, dist_3, ((l_1.color * (weight_4).xxx) * (_e68).xxx), pdf_2);
+    const LightSample lightsample_3 = ConstructLightSample(_e52, dist_4, ((l_1.color * (weight_4).xxx) * (_e68).xxx), pdf_2);
     return lightsample_3;
 }
 
@@ -1412,18 +1398,18 @@ LightSample ZeroValueLightSample() {
     return (LightSample)0;
 }
 
-LightSample dispatch_light(uint type_id_3, uint offset_9, float3 position_4, float3 normal_4)
+LightSample dispatch_light(uint type_id_3, uint offset_9, float3 position_3, float3 normal_3)
 {
     switch(type_id_3) {
         case 0u: {
             const QuadLight _e4 = load_QuadLight(offset_9);
-            const LightSample _e5 = quad_light(_e4, position_4, normal_4);
+            const LightSample _e5 = quad_light(_e4, position_3, normal_3);
             const LightSample lightsample_4 = _e5;
             return lightsample_4;
         }
         case 1u: {
             const SphereLight _e6 = load_SphereLight(offset_9);
-            const LightSample _e7 = sphere_light(_e6, position_4, normal_4);
+            const LightSample _e7 = sphere_light(_e6, position_3, normal_3);
             const LightSample lightsample_5 = _e7;
             return lightsample_5;
         }
@@ -1435,19 +1421,144 @@ LightSample dispatch_light(uint type_id_3, uint offset_9, float3 position_4, flo
     return lightsample_6;
 }
 
-LightSample sample_light_query(uint i_1, float3 position_5, float3 normal_5)
+float3 scratch_load3f(uint i_2)
 {
+    uint _e5 = scratch[min(uint(min(i_2, 21u)), 21u)];
+    uint _e12 = scratch[min(uint(min((i_2 + 1u), 21u)), 21u)];
+    uint _e19 = scratch[min(uint(min((i_2 + 2u), 21u)), 21u)];
+    return asfloat(uint3(_e5, _e12, _e19));
+}
+
+float3 step_toward(float3 x_1, float3 s_1)
+{
+    uint3 bits_2 = asuint(x_1);
+    bool3 up_1 = ((sign(x_1) * sign(s_1)) > (0.0).xxx);
+    float3 stepped = asfloat((up_1 ? (bits_2 + (1u).xxx) : (bits_2 - (1u).xxx)));
+    float3 from_zero = ((s_1 > (0.0).xxx) ? (1.1754944e-38).xxx : (-1.1754944e-38).xxx);
+    float3 moved = ((x_1 == (0.0).xxx) ? from_zero : stepped);
+    return (!((s_1 == (0.0).xxx)) ? moved : x_1);
+}
+
+float3 offset_origin(float3 p_5, float3 n_4, float error)
+{
+    float d_3 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    float3 offset_16 = (n_4 * (d_3).xxx);
+    const float3 _e17 = step_toward((p_5 + offset_16), offset_16);
+    return _e17;
+}
+
+Ray shadow_ray(float3 position_4, float3 normal_4, float3 dir_1, float dist_1)
+{
+    float3 n_5 = (float3)0;
+    float tmax_4 = (float)0;
+
+    n_5 = normal_4;
+    float3 _e5 = n_5;
+    if ((dot(dir_1, _e5) < 0.0)) {
+        float3 _e9 = n_5;
+        n_5 = -(_e9);
+    }
+    float3 a_8 = abs(position_4);
+    float _e13 = hit_error;
+    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
+    float3 _e22 = n_5;
+    const float3 _e23 = offset_origin(position_4, _e22, error_3);
+    uint _e25 = F32_INF;
+    tmax_4 = asfloat(_e25);
+    uint _e29 = F32_INF;
+    if ((dist_1 < asfloat(_e29))) {
+        float3 light = (position_4 + (dir_1 * (dist_1).xxx));
+        float dd_1 = dot(dir_1, dir_1);
+        float along_2 = (dot((light - _e23), dir_1) / dd_1);
+        float3 l_7 = (abs(position_4) + abs((dir_1 * (dist_1).xxx)));
+        tmax_4 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd_1)));
+    }
+    float _e59 = tmax_4;
+    const Ray ray_32 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_32;
+}
+
+float shadow_query(float3 position_5, float3 normal_5, float3 dir_2, float dist_2)
+{
+    const Ray _e4 = shadow_ray(position_5, normal_5, dir_2, dist_2);
+    const Candidate _e6 = intersect_scene(_e4, true);
+    return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
+}
+
+LightSample sample_light_deferred(uint i_3, float3 position_6, float3 normal_6)
+{
+    uint after = (uint)0;
+    uint resolved = (uint)0;
+    uint bits_1 = (uint)0;
+
     FrameUniforms frame_4 = frame;
-    if ((i_1 >= frame_4.light_count)) {
+    if ((i_3 >= frame_4.light_count)) {
         const LightSample lightsample_7 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_7;
     }
-    uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    uint _e22 = asuint(params.Load(entry*4));
-    uint _e27 = asuint(params.Load((entry + 1u)*4));
-    const LightSample _e28 = dispatch_light(_e22, _e27, position_5, normal_5);
-    const LightSample lightsample_8 = _e28;
-    return lightsample_8;
+    uint entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    uint type_id_7 = asuint(params.Load(entry*4));
+    uint offset_17 = asuint(params.Load((entry + 1u)*4));
+    uint start = rng_state;
+    after = start;
+    resolved = 0u;
+    bits_1 = 0u;
+    scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)] = 0u;
+    scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)] = 0u;
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        rng_state = start;
+        scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)] = 0u;
+        scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)] = 0u;
+        const LightSample _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_6);
+        uint _e66 = scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)];
+        if ((_e66 == 0u)) {
+            uint _e69 = resolved;
+            if ((_e69 > 0u)) {
+                uint _e72 = after;
+                rng_state = _e72;
+            }
+            const LightSample lightsample_8 = _e60;
+            return lightsample_8;
+        }
+        uint _e74 = resolved;
+        if ((_e74 == 0u)) {
+            uint _e78 = rng_state;
+            after = _e78;
+        }
+        uint _e79 = after;
+        rng_state = _e79;
+        const float3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
+        const float3 _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
+        const float3 _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
+        uint _e95 = scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 21u)), 21u)];
+        const float _e97 = shadow_query(_e82, _e85, _e88, asfloat(_e95));
+        uint _e99 = rng_state;
+        after = _e99;
+        if (!((_e97 == 0.0))) {
+            uint _e108 = scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)];
+            uint _e109 = resolved;
+            if ((_e108 == (_e109 + 1u))) {
+                uint _e113 = after;
+                rng_state = _e113;
+                const LightSample lightsample_9 = _e60;
+                return lightsample_9;
+            }
+            uint _e115 = bits_1;
+            uint _e117 = resolved;
+            bits_1 = (_e115 | (1u << (_e117 & 31u)));
+        }
+        uint _e122 = resolved;
+        resolved = (_e122 + 1u);
+        uint _e126 = bits_1;
+        scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)] = _e126;
+        uint _e132 = resolved;
+        scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)] = _e132;
+    }
+    const LightSample lightsample_10 = ZeroValueLightSample();
+    return lightsample_10;
 }
 
 float mis_weight(float p_6, float other)
@@ -1476,28 +1587,28 @@ float mis_light_weight(LightSample l_2, float bsdf_pdf)
 float3 path_diffuse_shade(PathDiffuse m, Ray ray_13, Hit hit_1, float3 secondary)
 {
     float3 direct = (float3)0;
-    uint i_2 = (uint)0;
+    uint i_4 = (uint)0;
 
     float3 n_13 = faceforward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
     direct = (0.0).xxx;
     const uint _e12 = light_count_query();
-    i_2 = 0u;
-    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    i_4 = 0u;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
-        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e33 = i_2;
-            i_2 = (_e33 + 1u);
+            uint _e33 = i_4;
+            i_4 = (_e33 + 1u);
         }
         loop_init_2 = false;
-        uint _e14 = i_2;
+        uint _e14 = i_4;
         if ((_e14 >= _e12)) {
             break;
         }
-        uint _e16 = i_2;
-        const LightSample _e19 = sample_light_query(_e16, hit_1.position, hit_1.geometric_normal);
+        uint _e16 = i_4;
+        const LightSample _e19 = sample_light_deferred(_e16, hit_1.position, hit_1.geometric_normal);
         float c_11 = max(dot(n_13, _e19.dir), 0.0);
         float3 _e24 = direct;
         const float _e28 = mis_light_weight(_e19, (c_11 * INV_PI));
@@ -1552,9 +1663,9 @@ float3 quad_lamp_shade(QuadLamp m_1, Ray ray_16, Hit hit_2)
     }
     const float _e13 = bounce_pdf(ray_16);
     float len = length(ray_16.dir);
-    float dist_4 = (hit_2.t * len);
+    float dist_5 = (hit_2.t * len);
     float cos_l = (abs(dot(hit_2.geometric_normal, ray_16.dir)) / len);
-    float pl = ((dist_4 * dist_4) / max((cos_l * m_1.area), 1e-30));
+    float pl = ((dist_5 * dist_5) / max((cos_l * m_1.area), 1e-30));
     const float _e29 = mis_weight(_e13, pl);
     return (le * (_e29).xxx);
 }
@@ -1662,9 +1773,9 @@ float pbr_smith_v(float ndl, float ndv, float a2_1)
     return (0.5 / max((gv + gl), 1e-20));
 }
 
-float3 pbr_eval(float3 base_1, float metallic, float roughness_1, float3 n_6, float3 v_1, float3 l_3)
+float3 pbr_eval(float3 base_1, float metallic, float roughness_1, float3 n_6, float3 v_2, float3 l_3)
 {
-    float ndv_3 = dot(n_6, v_1);
+    float ndv_3 = dot(n_6, v_2);
     float ndl_1 = dot(n_6, l_3);
     if ((!((ndv_3 > 0.0)) || !((ndl_1 > 0.0)))) {
         return (0.0).xxx;
@@ -1672,8 +1783,8 @@ float3 pbr_eval(float3 base_1, float metallic, float roughness_1, float3 n_6, fl
     float metal = saturate(metallic);
     const float _e18 = pbr_alpha2_(roughness_1);
     float3 f0_1 = lerp((0.04).xxx, base_1, (metal).xxx);
-    const float3 _e24 = normalize_vec3f((v_1 + l_3));
-    const float3 _e26 = pbr_fresnel(f0_1, dot(v_1, _e24));
+    const float3 _e24 = normalize_vec3f((v_2 + l_3));
+    const float3 _e26 = pbr_fresnel(f0_1, dot(v_2, _e24));
     const float _e29 = pbr_ggx_d(saturate(dot(n_6, _e24)), _e18);
     const float _e30 = pbr_smith_v(ndl_1, ndv_3, _e18);
     float3 spec = (_e26 * ((_e29 * _e30)).xxx);
@@ -1707,16 +1818,16 @@ float pbr_specular_pdf(float ndh_1, float ndv_2, float a2_2)
     return ((_e3 * 0.5) / (ndv_2 + sqrt((a2_2 + (((1.0 - a2_2) * ndv_2) * ndv_2)))));
 }
 
-float pbr_pdf(float3 base_3, float metallic_2, float roughness_2, float3 n_7, float3 v_2, float3 l_4)
+float pbr_pdf(float3 base_3, float metallic_2, float roughness_2, float3 n_7, float3 v_3, float3 l_4)
 {
-    float ndv_4 = dot(n_7, v_2);
+    float ndv_4 = dot(n_7, v_3);
     float ndl_2 = dot(n_7, l_4);
     if ((!((ndv_4 > 0.0)) || !((ndl_2 > 0.0)))) {
         return 0.0;
     }
     const float _e16 = pbr_alpha2_(roughness_2);
     const float _e17 = pbr_specular_chance(base_3, metallic_2, ndv_4);
-    const float3 _e19 = normalize_vec3f((v_2 + l_4));
+    const float3 _e19 = normalize_vec3f((v_3 + l_4));
     const float _e22 = pbr_specular_pdf(saturate(dot(n_7, _e19)), ndv_4, _e16);
     return ((_e17 * _e22) + (((1.0 - _e17) * ndl_2) * INV_PI));
 }
@@ -1724,36 +1835,36 @@ float pbr_pdf(float3 base_3, float metallic_2, float roughness_2, float3 n_7, fl
 float3 path_pbr_shade(PathPbr m_3, Ray ray_20, Hit hit_6, float3 secondary_1)
 {
     float3 direct_1 = (float3)0;
-    uint i_3 = (uint)0;
+    uint i_5 = (uint)0;
     float w = (float)0;
 
     const float3 _e4 = path_pbr_n(ray_20, hit_6);
     const float3 _e6 = normalize_vec3f(ray_20.dir);
-    float3 v_5 = -(_e6);
+    float3 v_6 = -(_e6);
     direct_1 = (0.0).xxx;
     const uint _e12 = light_count_query();
-    i_3 = 0u;
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    i_5 = 0u;
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e49 = i_3;
-            i_3 = (_e49 + 1u);
+            uint _e49 = i_5;
+            i_5 = (_e49 + 1u);
         }
         loop_init_3 = false;
-        uint _e14 = i_3;
+        uint _e14 = i_5;
         if ((_e14 >= _e12)) {
             break;
         }
-        uint _e16 = i_3;
-        const LightSample _e19 = sample_light_query(_e16, hit_6.position, hit_6.geometric_normal);
+        uint _e16 = i_5;
+        const LightSample _e19 = sample_light_deferred(_e16, hit_6.position, hit_6.geometric_normal);
         if (any((_e19.radiance > (0.0).xxx))) {
-            const float3 _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_5, _e19.dir);
+            const float3 _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_6, _e19.dir);
             w = 1.0;
             if ((_e19.pdf > 0.0)) {
-                const float _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_5, _e19.dir);
+                const float _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_6, _e19.dir);
                 const float _e41 = mis_weight(_e19.pdf, _e40);
                 w = _e41;
             }
@@ -1838,17 +1949,17 @@ float3 sample_cosine_hemisphere(float3 n_8, float2 u)
     return mul(local, _e17);
 }
 
-float3 mis_bounce_dir(float3 dir_2, float pdf)
+float3 mis_bounce_dir(float3 dir_3, float pdf)
 {
     float x_4 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
-    return (dir_2 * ((MIS_BOUNCE_LENGTH + x_4)).xxx);
+    return (dir_3 * ((MIS_BOUNCE_LENGTH + x_4)).xxx);
 }
 
-void rt_spawn(float3 dir_3, float3 weight)
+void rt_spawn(float3 dir_4, float3 weight)
 {
     uint _e3 = spawn_count;
     if ((_e3 < 1u)) {
-        spawn_dirs[min(uint(_e3), 0u)] = dir_3;
+        spawn_dirs[min(uint(_e3), 0u)] = dir_4;
         spawn_weights[min(uint(_e3), 0u)] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1910,11 +2021,11 @@ PbrSample ConstructPbrSample(float3 arg0, float3 arg1, float arg2) {
     return ret;
 }
 
-PbrSample pbr_sample(float3 base_4, float metallic_3, float roughness_3, float3 n_9, float3 v_3, float3 u_2)
+PbrSample pbr_sample(float3 base_4, float metallic_3, float roughness_3, float3 n_9, float3 v_4, float3 u_2)
 {
     float3 l_5 = (float3)0;
 
-    float ndv_5 = dot(n_9, v_3);
+    float ndv_5 = dot(n_9, v_4);
     if (!((ndv_5 > 0.0))) {
         const PbrSample pbrsample = ConstructPbrSample(n_9, (0.0).xxx, 0.0);
         return pbrsample;
@@ -1924,22 +2035,22 @@ PbrSample pbr_sample(float3 base_4, float metallic_3, float roughness_3, float3 
     if ((u_2.x < _e14)) {
         const float3x3 _e20 = orthonormal_basis(n_9);
         const float _e21 = pbr_alpha2_(roughness_3);
-        const float3 _e26 = pbr_sample_vndf(mul(v_3, transpose(_e20)), sqrt(_e21), u_2.yz);
+        const float3 _e26 = pbr_sample_vndf(mul(v_4, transpose(_e20)), sqrt(_e21), u_2.yz);
         float3 h_2 = mul(_e26, _e20);
-        l_5 = reflect(-(v_3), h_2);
+        l_5 = reflect(-(v_4), h_2);
     } else {
         const float3 _e31 = sample_cosine_hemisphere(n_9, u_2.yz);
         l_5 = _e31;
     }
     float3 _e32 = l_5;
-    const float _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_3, _e32);
+    const float _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_4, _e32);
     if (!((_e33 > 0.0))) {
         float3 _e37 = l_5;
         const PbrSample pbrsample_1 = ConstructPbrSample(_e37, (0.0).xxx, 0.0);
         return pbrsample_1;
     }
     float3 _e42 = l_5;
-    const float3 _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_3, _e42);
+    const float3 _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_4, _e42);
     float3 weight_5 = (_e43 / (_e33).xxx);
     float3 _e46 = l_5;
     const PbrSample pbrsample_2 = ConstructPbrSample(_e46, weight_5, _e33);
@@ -1953,10 +2064,10 @@ void path_pbr_rays(PathPbr m_5, Ray ray_26, Hit hit_9)
     const float3 _e3 = path_pbr_ng(ray_26, hit_9);
     const float3 _e4 = path_pbr_n(ray_26, hit_9);
     const float3 _e6 = normalize_vec3f(ray_26.dir);
-    float3 v_6 = -(_e6);
+    float3 v_7 = -(_e6);
     const float _e11 = rand_next();
     const float2 _e12 = rand2_next();
-    const PbrSample _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_6, float3(_e11, _e12));
+    const PbrSample _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_7, float3(_e11, _e12));
     if ((!((_e14.pdf > 0.0)) || !((dot(_e14.dir, _e3) > 0.0)))) {
         return;
     }
@@ -1999,24 +2110,24 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_27, Hit hit
     return;
 }
 
-float3 spawn_origin_at(float3 position_6, float3 normal_6, float error_1, float3 dir_4)
+float3 spawn_origin_at(float3 position_7, float3 normal_7, float error_1, float3 dir_5)
 {
     float3 n_10 = (float3)0;
 
-    n_10 = normal_6;
+    n_10 = normal_7;
     float3 _e5 = n_10;
-    if ((dot(dir_4, _e5) < 0.0)) {
+    if ((dot(dir_5, _e5) < 0.0)) {
         float3 _e9 = n_10;
         n_10 = -(_e9);
     }
     float3 _e11 = n_10;
-    const float3 _e12 = offset_origin(position_6, _e11, error_1);
+    const float3 _e12 = offset_origin(position_7, _e11, error_1);
     return _e12;
 }
 
-float3 spawn_origin(Hit hit_11, float error_2, float3 dir_5)
+float3 spawn_origin(Hit hit_11, float error_2, float3 dir_6)
 {
-    const float3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_5);
+    const float3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_6);
     return _e5;
 }
 
@@ -2024,7 +2135,7 @@ PathState path_step(PathState s_2, Candidate c_5)
 {
     PathState out_ = (PathState)0;
     bool spawned = (bool)0;
-    float3 dir_6 = (float3)0;
+    float3 dir_7 = (float3)0;
     float3 weight_3 = (float3)0;
     float3 beta = (float3)0;
 
@@ -2043,7 +2154,7 @@ PathState path_step(PathState s_2, Candidate c_5)
     const Hit _e22 = finish_hit(ray_33, c_5);
     float error_4 = hit_error;
     spawned = false;
-    dir_6 = (0.0).xxx;
+    dir_7 = (0.0).xxx;
     weight_3 = (0.0).xxx;
     if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_33.depth < MAX_DEPTH))) {
         spawn_count = 0u;
@@ -2052,7 +2163,7 @@ PathState path_step(PathState s_2, Candidate c_5)
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
             float3 _e56 = spawn_dirs[0u];
-            dir_6 = _e56;
+            dir_7 = _e56;
             float3 _e60 = spawn_weights[0u];
             weight_3 = _e60;
         }
@@ -2088,9 +2199,9 @@ PathState path_step(PathState s_2, Candidate c_5)
     }
     float3 _e109 = beta;
     out_.beta = _e109;
-    float3 _e111 = dir_6;
+    float3 _e111 = dir_7;
     const float3 _e112 = spawn_origin(_e22, error_4, _e111);
-    float3 _e114 = dir_6;
+    float3 _e114 = dir_7;
     uint _e116 = F32_INF;
     out_.ray = ConstructRay(_e112, 0.0, _e114, asfloat(_e116), (ray_33.depth + 1u), RAY_SECONDARY, ray_33.medium);
     out_.live = true;
@@ -2113,10 +2224,10 @@ float3 trace_path(Ray camera_ray)
     PathState s_3 = (PathState)0;
 
     s_3 = ConstructPathState(camera_ray, (1.0).xxx, (0.0).xxx, true);
-    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         PathState _e8 = s_3;
         Ray _e10 = s_3.ray;
         const Candidate _e12 = intersect_scene(_e10, false);
@@ -2183,11 +2294,11 @@ void render_pixel(uint2 pixel_3)
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_4 = 0u;
-    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_4 = true;
     while(true) {
-        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_4) {
             uint _e46 = s_4;
             s_4 = (_e46 + 1u);

@@ -10,8 +10,8 @@ struct _mslBufferSizes {
     uint size6;
     uint size7;
     uint size10;
-    uint size15;
-    uint size16;
+    uint size13;
+    uint size17;
 };
 
 struct TileParams {
@@ -143,6 +143,9 @@ struct LightSample {
     metal::packed_float3 radiance;
     float pdf;
 };
+struct type_15 {
+    uint inner[22];
+};
 struct QuadLight {
     metal::float3 corner;
     metal::float3 edge_u;
@@ -152,6 +155,7 @@ struct QuadLight {
     uint lamp;
     char _pad6[12];
 };
+typedef metal::atomic_uint type_17[1];
 struct SphereLight {
     metal::packed_float3 position;
     float radius;
@@ -187,7 +191,7 @@ struct PathState {
     bool live;
     char _pad4[3];
 };
-struct type_16 {
+struct type_19 {
     metal::float3 inner[1];
 };
 struct PbrSample {
@@ -195,7 +199,6 @@ struct PbrSample {
     metal::packed_float3 weight;
     float pdf;
 };
-typedef metal::atomic_uint type_19[1];
 constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint NO_HIT = 4294967295u;
@@ -219,6 +222,13 @@ constant float GAMMA_4_ = 0.00000023841864;
 constant bool HAS_SECONDARY_RAYS = true;
 constant bool HAS_BACKGROUND = true;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
+constant uint SCRATCH_RESOLVED = 3u;
+constant uint SCRATCH_LIGHT_BITS = 11u;
+constant uint SCRATCH_QUERY = 2u;
+constant uint SCRATCH_PENDING = 4u;
+constant uint LIGHT_QUERIES = 32u;
+constant uint COUNTER_SHADOW_OVERFLOW = 3u;
+constant uint SCRATCH_LIGHT_QUERY = 12u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
 constant float MIS_BOUNCE_LENGTH = 3.0;
@@ -505,15 +515,15 @@ metal::float3 hit_triangle(
     float cx = c_7[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_7[metal::min(r_1.kz, 2u)]);
     float cy = c_7[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_7[metal::min(r_1.kz, 2u)]);
     float u_3 = (cx * by) - (cy * bx);
-    float v_4 = (ax * cy) - (ay * cx);
+    float v_5 = (ax * cy) - (ay * cx);
     float w_1 = (bx * ay) - (by * ax);
-    bool outside = (((u_3 < 0.0) || (v_4 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_4 > 0.0)) || (w_1 > 0.0));
-    float det = (u_3 + v_4) + w_1;
+    bool outside = (((u_3 < 0.0) || (v_5 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_5 > 0.0)) || (w_1 > 0.0));
+    float det = (u_3 + v_5) + w_1;
     float rcp = 1.0 / det;
-    float t_4 = (((u_3 * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_4 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear[2] * c_7[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_4 = (((u_3 * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_5 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear[2] * c_7[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_12 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_12 ? metal::float3(t_4, v_4 * rcp, w_1 * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_12 ? metal::float3(t_4, v_5 * rcp, w_1 * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -1225,116 +1235,74 @@ QuadLight load_QuadLight(
     return QuadLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), metal::float3(as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)), metal::float3(as_type<float>(_e62), as_type<float>(_e68), as_type<float>(_e74)), as_type<float>(_e81), _e87};
 }
 
-metal::float3 step_toward(
-    metal::float3 x_1,
-    metal::float3 s_1
+void scratch_store3f(
+    uint i_1,
+    metal::float3 v_1,
+    thread type_15& scratch
 ) {
-    metal::uint3 bits_1 = as_type<metal::uint3>(x_1);
-    metal::bool3 up_1 = (metal::sign(x_1) * metal::sign(s_1)) > metal::float3(0.0);
-    metal::float3 stepped = as_type<metal::float3>(metal::select(bits_1 - metal::uint3(1u), bits_1 + metal::uint3(1u), up_1));
-    metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s_1 > metal::float3(0.0));
-    metal::float3 moved = metal::select(stepped, from_zero, x_1 == metal::float3(0.0));
-    return metal::select(x_1, moved, !((s_1 == metal::float3(0.0))));
+    metal::uint3 b_8 = as_type<metal::uint3>(v_1);
+    scratch.inner[metal::min(i_1, 21u)] = b_8.x;
+    scratch.inner[metal::min(i_1 + 1u, 21u)] = b_8.y;
+    scratch.inner[metal::min(i_1 + 2u, 21u)] = b_8.z;
+    return;
 }
 
-metal::float3 offset_origin(
-    metal::float3 p_5,
-    metal::float3 n_3,
-    float error
-) {
-    float d_3 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
-    metal::float3 offset_16 = n_3 * metal::float3(d_3);
-    metal::float3 _e17 = step_toward(p_5 + offset_16, offset_16);
-    return _e17;
-}
-
-Ray shadow_ray(
+float shadow_deferred(
     metal::float3 position,
     metal::float3 normal,
     metal::float3 dir,
     float dist,
-    thread uint& F32_INF,
-    thread float& hit_error
-) {
-    metal::float3 n_4 = {};
-    float tmax_4 = {};
-    n_4 = normal;
-    metal::float3 _e5 = n_4;
-    if (metal::dot(dir, _e5) < 0.0) {
-        metal::float3 _e9 = n_4;
-        n_4 = -(_e9);
-    }
-    metal::float3 a_7 = metal::abs(position);
-    float _e13 = hit_error;
-    float error_3 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_7.x, a_7.y), a_7.z));
-    metal::float3 _e22 = n_4;
-    metal::float3 _e23 = offset_origin(position, _e22, error_3);
-    uint _e25 = F32_INF;
-    tmax_4 = as_type<float>(_e25);
-    uint _e29 = F32_INF;
-    if (dist < as_type<float>(_e29)) {
-        metal::float3 light = position + (dir * metal::float3(dist));
-        float dd_1 = metal::dot(dir, dir);
-        float along_1 = metal::dot(light - _e23, dir) / dd_1;
-        metal::float3 l_7 = metal::abs(position) + metal::abs(dir * metal::float3(dist));
-        tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_7.x, l_7.y), l_7.z)) / metal::sqrt(dd_1));
-    }
-    float _e59 = tmax_4;
-    return Ray {_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u};
-}
-
-float shadow_query(
-    metal::float3 position_1,
-    metal::float3 normal_1,
-    metal::float3 dir_1,
-    float dist_1,
-    constant FrameUniforms& frame,
-    device type_4 const& params,
-    thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
-    thread float& hit_error,
-    thread uint& ray_count,
+    thread type_15& scratch,
+    device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
-    Candidate _e6 = intersect_scene(_e4, true, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-    return (_e6.slot != NO_HIT) ? 0.0 : 1.0;
+    uint i_6 = scratch.inner[metal::min(SCRATCH_QUERY, 21u)];
+    scratch.inner[metal::min(SCRATCH_QUERY, 21u)] = i_6 + 1u;
+    uint _e22 = scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)];
+    if (i_6 < _e22) {
+        uint _e29 = scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)];
+        return static_cast<float>((_e29 >> (i_6 & 31u)) & 1u);
+    }
+    uint _e41 = scratch.inner[metal::min(SCRATCH_PENDING, 21u)];
+    if (_e41 != 0u) {
+        return 1.0;
+    }
+    if (i_6 >= LIGHT_QUERIES) {
+        metal::atomic_fetch_add_explicit(&counters[metal::min(COUNTER_SHADOW_OVERFLOW, 3u)], 1u, metal::memory_order_relaxed);
+        return 1.0;
+    }
+    scratch_store3f(SCRATCH_LIGHT_QUERY, position, scratch);
+    scratch_store3f(SCRATCH_LIGHT_QUERY + 3u, normal, scratch);
+    scratch_store3f(SCRATCH_LIGHT_QUERY + 6u, dir, scratch);
+    scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 21u)] = as_type<uint>(dist);
+    scratch.inner[metal::min(SCRATCH_PENDING, 21u)] = 1u;
+    return 1.0;
 }
 
 LightSample quad_light(
     QuadLight l,
-    metal::float3 position_2,
-    metal::float3 normal_2,
-    constant FrameUniforms& frame,
+    metal::float3 position_1,
+    metal::float3 normal_1,
     thread uint& rng_state,
-    device type_4 const& params,
-    thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
-    thread float& hit_error,
-    thread uint& ray_count,
+    thread type_15& scratch,
+    device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 c_10 = metal::cross(l.edge_u, l.edge_v);
     float area = metal::length(c_10);
     metal::float2 _e7 = rand2_next(rng_state);
-    metal::float3 to_light = ((l.corner + (l.edge_u * metal::float3(_e7.x))) + (l.edge_v * metal::float3(_e7.y))) - position_2;
+    metal::float3 to_light = ((l.corner + (l.edge_u * metal::float3(_e7.x))) + (l.edge_v * metal::float3(_e7.y))) - position_1;
     float dist2_ = metal::dot(to_light, to_light);
-    float dist_2 = metal::sqrt(dist2_);
-    metal::float3 dir_7 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
-    float cos_light = -(metal::dot(dir_7, c_10)) / metal::max(area, 0.000000000000000000000000000001);
+    float dist_3 = metal::sqrt(dist2_);
+    metal::float3 dir_8 = to_light / metal::float3(metal::max(dist_3, 0.00000000000000000001));
+    float cos_light = -(metal::dot(dir_8, c_10)) / metal::max(area, 0.000000000000000000000000000001);
     if (!((cos_light > 0.0)) || !((dist2_ > 0.0))) {
-        return LightSample {dir_7, dist_2, metal::float3(0.0), 0.0};
+        return LightSample {dir_8, dist_3, metal::float3(0.0), 0.0};
     }
-    float _e42 = shadow_query(position_2, normal_2, dir_7, dist_2, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    float _e42 = shadow_deferred(position_1, normal_1, dir_8, dist_3, scratch, counters, _buffer_sizes);
     float strength = ((l.intensity * cos_light) * area) / dist2_;
     float pdf_1 = (l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0;
-    return LightSample {dir_7, dist_2, (l.color * metal::float3(strength)) * metal::float3(_e42), pdf_1};
+    return LightSample {dir_8, dist_3, (l.color * metal::float3(strength)) * metal::float3(_e42), pdf_1};
 }
 
 SphereLight load_SphereLight(
@@ -1355,32 +1323,25 @@ SphereLight load_SphereLight(
 }
 
 metal::float3x3 orthonormal_basis(
-    metal::float3 n_5
+    metal::float3 n_3
 ) {
-    float sign = ((as_type<uint>(n_5.z) & 2147483648u) != 0u) ? -1.0 : 1.0;
-    float a_8 = -1.0 / (sign + n_5.z);
-    float b_8 = (n_5.x * n_5.y) * a_8;
-    float _e16 = sign * n_5.x;
-    return metal::float3x3(metal::float3(1.0 + ((_e16 * n_5.x) * a_8), sign * b_8, -(_e16)), metal::float3(b_8, sign + ((n_5.y * n_5.y) * a_8), -(n_5.y)), n_5);
+    float sign = ((as_type<uint>(n_3.z) & 2147483648u) != 0u) ? -1.0 : 1.0;
+    float a_7 = -1.0 / (sign + n_3.z);
+    float b_9 = (n_3.x * n_3.y) * a_7;
+    float _e16 = sign * n_3.x;
+    return metal::float3x3(metal::float3(1.0 + ((_e16 * n_3.x) * a_7), sign * b_9, -(_e16)), metal::float3(b_9, sign + ((n_3.y * n_3.y) * a_7), -(n_3.y)), n_3);
 }
 
 LightSample sphere_light(
     SphereLight l_1,
-    metal::float3 position_3,
-    metal::float3 normal_3,
-    constant FrameUniforms& frame,
+    metal::float3 position_2,
+    metal::float3 normal_2,
     thread uint& rng_state,
-    device type_4 const& params,
-    thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
-    thread float& hit_error,
-    thread uint& ray_count,
+    thread type_15& scratch,
+    device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 to_center = l_1.position - position_3;
+    metal::float3 to_center = l_1.position - position_2;
     float d2_ = metal::dot(to_center, to_center);
     float r2_2 = metal::max(l_1.radius * l_1.radius, 0.00000000000000000001);
     if (d2_ <= r2_2) {
@@ -1396,40 +1357,34 @@ LightSample sphere_light(
     float phi = TAU * _e31.y;
     metal::float3x3 _e45 = orthonormal_basis(w_4);
     metal::float3 _e52 = normalize_vec3f(_e45 * metal::float3(metal::cos(phi) * sin_t, metal::sin(phi) * sin_t, cos_t));
-    float along_2 = metal::dot(to_center, _e52);
-    float dist_3 = metal::max(along_2 - metal::sqrt(metal::max(r2_2 - (d2_ - (along_2 * along_2)), 0.0)), 0.0);
+    float along_1 = metal::dot(to_center, _e52);
+    float dist_4 = metal::max(along_1 - metal::sqrt(metal::max(r2_2 - (d2_ - (along_1 * along_1)), 0.0)), 0.0);
     float weight_4 = ((l_1.intensity * 2.0) * one_minus_cos_max) / r2_2;
-    float _e68 = shadow_query(position_3, normal_3, _e52, dist_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    float _e68 = shadow_deferred(position_2, normal_2, _e52, dist_4, scratch, counters, _buffer_sizes);
     float pdf_2 = (l_1.lamp == 1u) ? (1.0 / (TAU * one_minus_cos_max)) : 0.0;
-    return LightSample {_e52, dist_3, (l_1.color * metal::float3(weight_4)) * metal::float3(_e68), pdf_2};
+    return LightSample {_e52, dist_4, (l_1.color * metal::float3(weight_4)) * metal::float3(_e68), pdf_2};
 }
 
 LightSample dispatch_light(
     uint type_id_3,
     uint offset_9,
-    metal::float3 position_4,
-    metal::float3 normal_4,
-    constant FrameUniforms& frame,
+    metal::float3 position_3,
+    metal::float3 normal_3,
     thread uint& rng_state,
     device type_4 const& params,
-    thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
-    thread float& hit_error,
-    thread uint& ray_count,
+    thread type_15& scratch,
+    device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     switch(type_id_3) {
         case 0u: {
             QuadLight _e4 = load_QuadLight(offset_9, params, _buffer_sizes);
-            LightSample _e5 = quad_light(_e4, position_4, normal_4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+            LightSample _e5 = quad_light(_e4, position_3, normal_3, rng_state, scratch, counters, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             SphereLight _e6 = load_SphereLight(offset_9, params, _buffer_sizes);
-            LightSample _e7 = sphere_light(_e6, position_4, normal_4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+            LightSample _e7 = sphere_light(_e6, position_3, normal_3, rng_state, scratch, counters, _buffer_sizes);
             return _e7;
         }
         default: {
@@ -1439,12 +1394,80 @@ LightSample dispatch_light(
     return LightSample {};
 }
 
-LightSample sample_light_query(
-    uint i_1,
+metal::float3 scratch_load3f(
+    uint i_2,
+    thread type_15& scratch
+) {
+    uint _e5 = scratch.inner[metal::min(i_2, 21u)];
+    uint _e12 = scratch.inner[metal::min(i_2 + 1u, 21u)];
+    uint _e19 = scratch.inner[metal::min(i_2 + 2u, 21u)];
+    return as_type<metal::float3>(metal::uint3(_e5, _e12, _e19));
+}
+
+metal::float3 step_toward(
+    metal::float3 x_1,
+    metal::float3 s_1
+) {
+    metal::uint3 bits_2 = as_type<metal::uint3>(x_1);
+    metal::bool3 up_1 = (metal::sign(x_1) * metal::sign(s_1)) > metal::float3(0.0);
+    metal::float3 stepped = as_type<metal::float3>(metal::select(bits_2 - metal::uint3(1u), bits_2 + metal::uint3(1u), up_1));
+    metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s_1 > metal::float3(0.0));
+    metal::float3 moved = metal::select(stepped, from_zero, x_1 == metal::float3(0.0));
+    return metal::select(x_1, moved, !((s_1 == metal::float3(0.0))));
+}
+
+metal::float3 offset_origin(
+    metal::float3 p_5,
+    metal::float3 n_4,
+    float error
+) {
+    float d_3 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
+    metal::float3 offset_16 = n_4 * metal::float3(d_3);
+    metal::float3 _e17 = step_toward(p_5 + offset_16, offset_16);
+    return _e17;
+}
+
+Ray shadow_ray(
+    metal::float3 position_4,
+    metal::float3 normal_4,
+    metal::float3 dir_1,
+    float dist_1,
+    thread uint& F32_INF,
+    thread float& hit_error
+) {
+    metal::float3 n_5 = {};
+    float tmax_4 = {};
+    n_5 = normal_4;
+    metal::float3 _e5 = n_5;
+    if (metal::dot(dir_1, _e5) < 0.0) {
+        metal::float3 _e9 = n_5;
+        n_5 = -(_e9);
+    }
+    metal::float3 a_8 = metal::abs(position_4);
+    float _e13 = hit_error;
+    float error_3 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_8.x, a_8.y), a_8.z));
+    metal::float3 _e22 = n_5;
+    metal::float3 _e23 = offset_origin(position_4, _e22, error_3);
+    uint _e25 = F32_INF;
+    tmax_4 = as_type<float>(_e25);
+    uint _e29 = F32_INF;
+    if (dist_1 < as_type<float>(_e29)) {
+        metal::float3 light = position_4 + (dir_1 * metal::float3(dist_1));
+        float dd_1 = metal::dot(dir_1, dir_1);
+        float along_2 = metal::dot(light - _e23, dir_1) / dd_1;
+        metal::float3 l_7 = metal::abs(position_4) + metal::abs(dir_1 * metal::float3(dist_1));
+        tmax_4 = (along_2 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_7.x, l_7.y), l_7.z)) / metal::sqrt(dd_1));
+    }
+    float _e59 = tmax_4;
+    return Ray {_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u};
+}
+
+float shadow_query(
     metal::float3 position_5,
     metal::float3 normal_5,
+    metal::float3 dir_2,
+    float dist_2,
     constant FrameUniforms& frame,
-    thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1455,15 +1478,96 @@ LightSample sample_light_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
+    Ray _e4 = shadow_ray(position_5, normal_5, dir_2, dist_2, F32_INF, hit_error);
+    Candidate _e6 = intersect_scene(_e4, true, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return (_e6.slot != NO_HIT) ? 0.0 : 1.0;
+}
+
+LightSample sample_light_deferred(
+    uint i_3,
+    metal::float3 position_6,
+    metal::float3 normal_6,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    thread uint& ray_count,
+    thread type_15& scratch,
+    device type_17& counters,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint after = {};
+    uint resolved = {};
+    uint bits_1 = {};
     FrameUniforms frame_4 = frame;
-    if (i_1 >= frame_4.light_count) {
+    if (i_3 >= frame_4.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
-    uint _e22 = params[entry];
-    uint _e27 = params[entry + 1u];
-    LightSample _e28 = dispatch_light(_e22, _e27, position_5, normal_5, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
-    return _e28;
+    uint entry = frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE);
+    uint type_id_7 = params[entry];
+    uint offset_17 = params[entry + 1u];
+    uint start = rng_state;
+    after = start;
+    resolved = 0u;
+    bits_1 = 0u;
+    scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        rng_state = start;
+        scratch.inner[metal::min(SCRATCH_QUERY, 21u)] = 0u;
+        scratch.inner[metal::min(SCRATCH_PENDING, 21u)] = 0u;
+        LightSample _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_6, rng_state, params, scratch, counters, _buffer_sizes);
+        uint _e66 = scratch.inner[metal::min(SCRATCH_PENDING, 21u)];
+        if (_e66 == 0u) {
+            uint _e69 = resolved;
+            if (_e69 > 0u) {
+                uint _e72 = after;
+                rng_state = _e72;
+            }
+            return _e60;
+        }
+        uint _e74 = resolved;
+        if (_e74 == 0u) {
+            uint _e78 = rng_state;
+            after = _e78;
+        }
+        uint _e79 = after;
+        rng_state = _e79;
+        metal::float3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY, scratch);
+        metal::float3 _e85 = scratch_load3f(SCRATCH_LIGHT_QUERY + 3u, scratch);
+        metal::float3 _e88 = scratch_load3f(SCRATCH_LIGHT_QUERY + 6u, scratch);
+        uint _e95 = scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 21u)];
+        float _e97 = shadow_query(_e82, _e85, _e88, as_type<float>(_e95), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+        uint _e99 = rng_state;
+        after = _e99;
+        if (!((_e97 == 0.0))) {
+            uint _e108 = scratch.inner[metal::min(SCRATCH_QUERY, 21u)];
+            uint _e109 = resolved;
+            if (_e108 == (_e109 + 1u)) {
+                uint _e113 = after;
+                rng_state = _e113;
+                return _e60;
+            }
+            uint _e115 = bits_1;
+            uint _e117 = resolved;
+            bits_1 = _e115 | (1u << (_e117 & 31u));
+        }
+        uint _e122 = resolved;
+        resolved = _e122 + 1u;
+        uint _e126 = bits_1;
+        scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
+        uint _e132 = resolved;
+        scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)] = _e132;
+    }
+    return LightSample {};
 }
 
 float mis_weight(
@@ -1510,30 +1614,32 @@ metal::float3 path_diffuse_shade(
     thread type_12& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
+    thread type_15& scratch,
+    device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 direct = {};
-    uint i_2 = {};
+    uint i_4 = {};
     metal::float3 n_13 = metal::faceforward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
     direct = metal::float3(0.0);
     uint _e12 = light_count_query(frame);
-    i_2 = 0u;
-    uint2 loop_bound_4 = uint2(4294967295u);
+    i_4 = 0u;
+    uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
-        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e33 = i_2;
-            i_2 = _e33 + 1u;
+            uint _e33 = i_4;
+            i_4 = _e33 + 1u;
         }
         loop_init_2 = false;
-        uint _e14 = i_2;
+        uint _e14 = i_4;
         if (_e14 >= _e12) {
             break;
         }
-        uint _e16 = i_2;
-        LightSample _e19 = sample_light_query(_e16, hit_1.position, hit_1.geometric_normal, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+        uint _e16 = i_4;
+        LightSample _e19 = sample_light_deferred(_e16, hit_1.position, hit_1.geometric_normal, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
         float c_11 = metal::max(metal::dot(n_13, _e19.dir), 0.0);
         metal::float3 _e24 = direct;
         float _e28 = mis_light_weight(_e19, c_11 * INV_PI, F32_INF);
@@ -1588,9 +1694,9 @@ metal::float3 quad_lamp_shade(
     }
     float _e13 = bounce_pdf(ray_16);
     float len = metal::length(ray_16.dir);
-    float dist_4 = hit_2.t * len;
+    float dist_5 = hit_2.t * len;
     float cos_l = metal::abs(metal::dot(hit_2.geometric_normal, ray_16.dir)) / len;
-    float pl = (dist_4 * dist_4) / metal::max(cos_l * m_1.area, 0.000000000000000000000000000001);
+    float pl = (dist_5 * dist_5) / metal::max(cos_l * m_1.area, 0.000000000000000000000000000001);
     float _e29 = mis_weight(_e13, pl, F32_INF);
     return le * metal::float3(_e29);
 }
@@ -1705,10 +1811,10 @@ metal::float3 pbr_eval(
     float metallic,
     float roughness_1,
     metal::float3 n_6,
-    metal::float3 v_1,
+    metal::float3 v_2,
     metal::float3 l_3
 ) {
-    float ndv_3 = metal::dot(n_6, v_1);
+    float ndv_3 = metal::dot(n_6, v_2);
     float ndl_1 = metal::dot(n_6, l_3);
     if (!((ndv_3 > 0.0)) || !((ndl_1 > 0.0))) {
         return metal::float3(0.0);
@@ -1716,8 +1822,8 @@ metal::float3 pbr_eval(
     float metal_ = metal::saturate(metallic);
     float _e18 = pbr_alpha2_(roughness_1);
     metal::float3 f0_1 = metal::mix(metal::float3(0.04), base_1, metal::float3(metal_));
-    metal::float3 _e24 = normalize_vec3f(v_1 + l_3);
-    metal::float3 _e26 = pbr_fresnel(f0_1, metal::dot(v_1, _e24));
+    metal::float3 _e24 = normalize_vec3f(v_2 + l_3);
+    metal::float3 _e26 = pbr_fresnel(f0_1, metal::dot(v_2, _e24));
     float _e29 = pbr_ggx_d(metal::saturate(metal::dot(n_6, _e24)), _e18);
     float _e30 = pbr_smith_v(ndl_1, ndv_3, _e18);
     metal::float3 spec = _e26 * metal::float3(_e29 * _e30);
@@ -1763,17 +1869,17 @@ float pbr_pdf(
     float metallic_2,
     float roughness_2,
     metal::float3 n_7,
-    metal::float3 v_2,
+    metal::float3 v_3,
     metal::float3 l_4
 ) {
-    float ndv_4 = metal::dot(n_7, v_2);
+    float ndv_4 = metal::dot(n_7, v_3);
     float ndl_2 = metal::dot(n_7, l_4);
     if (!((ndv_4 > 0.0)) || !((ndl_2 > 0.0))) {
         return 0.0;
     }
     float _e16 = pbr_alpha2_(roughness_2);
     float _e17 = pbr_specular_chance(base_3, metallic_2, ndv_4);
-    metal::float3 _e19 = normalize_vec3f(v_2 + l_4);
+    metal::float3 _e19 = normalize_vec3f(v_3 + l_4);
     float _e22 = pbr_specular_pdf(metal::saturate(metal::dot(n_7, _e19)), ndv_4, _e16);
     return (_e17 * _e22) + (((1.0 - _e17) * ndl_2) * INV_PI);
 }
@@ -1793,38 +1899,40 @@ metal::float3 path_pbr_shade(
     thread type_12& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
+    thread type_15& scratch,
+    device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 direct_1 = {};
-    uint i_3 = {};
+    uint i_5 = {};
     float w = {};
     metal::float3 _e4 = path_pbr_n(ray_20, hit_6);
     metal::float3 _e6 = normalize_vec3f(ray_20.dir);
-    metal::float3 v_5 = -(_e6);
+    metal::float3 v_6 = -(_e6);
     direct_1 = metal::float3(0.0);
     uint _e12 = light_count_query(frame);
-    i_3 = 0u;
-    uint2 loop_bound_5 = uint2(4294967295u);
+    i_5 = 0u;
+    uint2 loop_bound_6 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e49 = i_3;
-            i_3 = _e49 + 1u;
+            uint _e49 = i_5;
+            i_5 = _e49 + 1u;
         }
         loop_init_3 = false;
-        uint _e14 = i_3;
+        uint _e14 = i_5;
         if (_e14 >= _e12) {
             break;
         }
-        uint _e16 = i_3;
-        LightSample _e19 = sample_light_query(_e16, hit_6.position, hit_6.geometric_normal, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+        uint _e16 = i_5;
+        LightSample _e19 = sample_light_deferred(_e16, hit_6.position, hit_6.geometric_normal, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
         if (metal::any(_e19.radiance > metal::float3(0.0))) {
-            metal::float3 _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_5, _e19.dir);
+            metal::float3 _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_6, _e19.dir);
             w = 1.0;
             if (_e19.pdf > 0.0) {
-                float _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_5, _e19.dir);
+                float _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_6, _e19.dir);
                 float _e41 = mis_weight(_e19.pdf, _e40, F32_INF);
                 w = _e41;
             }
@@ -1853,12 +1961,14 @@ metal::float3 dispatch_closest_hit(
     thread type_12& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
+    thread type_15& scratch,
+    device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     switch(type_id_4) {
         case 0u: {
             PathDiffuse _e5 = load_PathDiffuse(offset_13, params, _buffer_sizes);
-            metal::float3 _e6 = path_diffuse_shade(_e5, ray_21, hit_7, secondary_2, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+            metal::float3 _e6 = path_diffuse_shade(_e5, ray_21, hit_7, secondary_2, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
             return _e6;
         }
         case 1u: {
@@ -1873,7 +1983,7 @@ metal::float3 dispatch_closest_hit(
         }
         case 3u: {
             PathPbr _e11 = load_PathPbr(offset_13, params, _buffer_sizes);
-            metal::float3 _e12 = path_pbr_shade(_e11, ray_21, hit_7, secondary_2, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+            metal::float3 _e12 = path_pbr_shade(_e11, ray_21, hit_7, secondary_2, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
             return _e12;
         }
         default: {
@@ -1897,11 +2007,13 @@ metal::float3 shade_direct(
     thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
+    thread type_15& scratch,
+    device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_4.slot];
     Hit _e6 = finish_hit(ray_22, c_4, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
     return _e11;
 }
 
@@ -1948,23 +2060,23 @@ metal::float3 sample_cosine_hemisphere(
 }
 
 metal::float3 mis_bounce_dir(
-    metal::float3 dir_2,
+    metal::float3 dir_3,
     float pdf
 ) {
     float x_4 = metal::min(metal::log(1.0 + metal::max(pdf, 0.0)) * (1.0 / 90.0), 0.999);
-    return dir_2 * metal::float3(MIS_BOUNCE_LENGTH + x_4);
+    return dir_3 * metal::float3(MIS_BOUNCE_LENGTH + x_4);
 }
 
 void rt_spawn(
-    metal::float3 dir_3,
+    metal::float3 dir_4,
     metal::float3 weight,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
+    thread type_19& spawn_dirs,
+    thread type_19& spawn_weights,
     thread uint& spawn_count
 ) {
     uint _e3 = spawn_count;
     if (_e3 < 1u) {
-        spawn_dirs.inner[_e3] = dir_3;
+        spawn_dirs.inner[_e3] = dir_4;
         spawn_weights.inner[_e3] = weight;
         spawn_count = _e3 + 1u;
     }
@@ -1975,8 +2087,8 @@ void path_diffuse_rays(
     Ray ray_25,
     Hit hit_8,
     thread uint& rng_state,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
+    thread type_19& spawn_dirs,
+    thread type_19& spawn_weights,
     thread uint& spawn_count
 ) {
     metal::float3 weight_1 = {};
@@ -2031,11 +2143,11 @@ PbrSample pbr_sample(
     float metallic_3,
     float roughness_3,
     metal::float3 n_9,
-    metal::float3 v_3,
+    metal::float3 v_4,
     metal::float3 u_2
 ) {
     metal::float3 l_5 = {};
-    float ndv_5 = metal::dot(n_9, v_3);
+    float ndv_5 = metal::dot(n_9, v_4);
     if (!((ndv_5 > 0.0))) {
         return PbrSample {n_9, metal::float3(0.0), 0.0};
     }
@@ -2044,21 +2156,21 @@ PbrSample pbr_sample(
     if (u_2.x < _e14) {
         metal::float3x3 _e20 = orthonormal_basis(n_9);
         float _e21 = pbr_alpha2_(roughness_3);
-        metal::float3 _e26 = pbr_sample_vndf(metal::transpose(_e20) * v_3, metal::sqrt(_e21), u_2.yz);
+        metal::float3 _e26 = pbr_sample_vndf(metal::transpose(_e20) * v_4, metal::sqrt(_e21), u_2.yz);
         metal::float3 h_2 = _e20 * _e26;
-        l_5 = metal::reflect(-(v_3), h_2);
+        l_5 = metal::reflect(-(v_4), h_2);
     } else {
         metal::float3 _e31 = sample_cosine_hemisphere(n_9, u_2.yz);
         l_5 = _e31;
     }
     metal::float3 _e32 = l_5;
-    float _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_3, _e32);
+    float _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_4, _e32);
     if (!((_e33 > 0.0))) {
         metal::float3 _e37 = l_5;
         return PbrSample {_e37, metal::float3(0.0), 0.0};
     }
     metal::float3 _e42 = l_5;
-    metal::float3 _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_3, _e42);
+    metal::float3 _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_4, _e42);
     metal::float3 weight_5 = _e43 / metal::float3(_e33);
     metal::float3 _e46 = l_5;
     return PbrSample {_e46, weight_5, _e33};
@@ -2069,18 +2181,18 @@ void path_pbr_rays(
     Ray ray_26,
     Hit hit_9,
     thread uint& rng_state,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
+    thread type_19& spawn_dirs,
+    thread type_19& spawn_weights,
     thread uint& spawn_count
 ) {
     metal::float3 weight_2 = {};
     metal::float3 _e3 = path_pbr_ng(ray_26, hit_9);
     metal::float3 _e4 = path_pbr_n(ray_26, hit_9);
     metal::float3 _e6 = normalize_vec3f(ray_26.dir);
-    metal::float3 v_6 = -(_e6);
+    metal::float3 v_7 = -(_e6);
     float _e11 = rand_next(rng_state);
     metal::float2 _e12 = rand2_next(rng_state);
-    PbrSample _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_6, metal::float3(_e11, _e12));
+    PbrSample _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_7, metal::float3(_e11, _e12));
     if (!((_e14.pdf > 0.0)) || !((metal::dot(_e14.dir, _e3) > 0.0))) {
         return;
     }
@@ -2110,8 +2222,8 @@ void dispatch_secondary_rays(
     Hit hit_10,
     thread uint& rng_state,
     device type_4 const& params,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
+    thread type_19& spawn_dirs,
+    thread type_19& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2134,29 +2246,29 @@ void dispatch_secondary_rays(
 }
 
 metal::float3 spawn_origin_at(
-    metal::float3 position_6,
-    metal::float3 normal_6,
+    metal::float3 position_7,
+    metal::float3 normal_7,
     float error_1,
-    metal::float3 dir_4
+    metal::float3 dir_5
 ) {
     metal::float3 n_10 = {};
-    n_10 = normal_6;
+    n_10 = normal_7;
     metal::float3 _e5 = n_10;
-    if (metal::dot(dir_4, _e5) < 0.0) {
+    if (metal::dot(dir_5, _e5) < 0.0) {
         metal::float3 _e9 = n_10;
         n_10 = -(_e9);
     }
     metal::float3 _e11 = n_10;
-    metal::float3 _e12 = offset_origin(position_6, _e11, error_1);
+    metal::float3 _e12 = offset_origin(position_7, _e11, error_1);
     return _e12;
 }
 
 metal::float3 spawn_origin(
     Hit hit_11,
     float error_2,
-    metal::float3 dir_5
+    metal::float3 dir_6
 ) {
-    metal::float3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_5);
+    metal::float3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_6);
     return _e5;
 }
 
@@ -2174,14 +2286,16 @@ PathState path_step(
     thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
+    thread type_15& scratch,
+    device type_17& counters,
+    thread type_19& spawn_dirs,
+    thread type_19& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PathState out = {};
     bool spawned = {};
-    metal::float3 dir_6 = {};
+    metal::float3 dir_7 = {};
     metal::float3 weight_3 = {};
     metal::float3 beta = {};
     Ray ray_29 = s_2.ray;
@@ -2198,7 +2312,7 @@ PathState path_step(
     Hit _e22 = finish_hit(ray_29, c_5, instances, triangles, hit_error, attributes, _buffer_sizes);
     float error_4 = hit_error;
     spawned = false;
-    dir_6 = metal::float3(0.0);
+    dir_7 = metal::float3(0.0);
     weight_3 = metal::float3(0.0);
     if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_2.ray.depth < MAX_DEPTH)) {
         spawn_count = 0u;
@@ -2207,12 +2321,12 @@ PathState path_step(
         if (metal::min(_e47, 1u) > 0u) {
             spawned = true;
             metal::float3 _e56 = spawn_dirs.inner[0u];
-            dir_6 = _e56;
+            dir_7 = _e56;
             metal::float3 _e60 = spawn_weights.inner[0u];
             weight_3 = _e60;
         }
     }
-    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_29, _e22, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_29, _e22, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
     out.radiance = s_2.radiance + (s_2.beta * _e68);
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -2240,9 +2354,9 @@ PathState path_step(
     }
     metal::float3 _e109 = beta;
     out.beta = _e109;
-    metal::float3 _e111 = dir_6;
+    metal::float3 _e111 = dir_7;
     metal::float3 _e112 = spawn_origin(_e22, error_4, _e111);
-    metal::float3 _e114 = dir_6;
+    metal::float3 _e114 = dir_7;
     uint _e116 = F32_INF;
     out.ray = Ray {_e112, 0.0, _e114, as_type<float>(_e116), s_2.ray.depth + 1u, RAY_SECONDARY, s_2.ray.medium};
     out.live = true;
@@ -2263,21 +2377,23 @@ metal::float3 trace_path(
     thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
+    thread type_15& scratch,
+    device type_17& counters,
+    thread type_19& spawn_dirs,
+    thread type_19& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PathState s_3 = {};
     s_3 = PathState {camera_ray, metal::float3(1.0), metal::float3(0.0), true};
-    uint2 loop_bound_6 = uint2(4294967295u);
+    uint2 loop_bound_7 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         PathState _e8 = s_3;
         Ray _e10 = s_3.ray;
         Candidate _e12 = intersect_scene(_e10, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        PathState _e13 = path_step(_e8, _e12, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        PathState _e13 = path_step(_e8, _e12, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         s_3 = _e13;
         bool _e15 = s_3.live;
         if (!(_e15)) {
@@ -2301,8 +2417,10 @@ metal::float3 trace(
     thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
+    thread type_15& scratch,
+    device type_17& counters,
+    thread type_19& spawn_dirs,
+    thread type_19& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2318,7 +2436,7 @@ metal::float3 trace(
             metal::float3 _e17 = miss(camera_ray_1, frame, params, _buffer_sizes);
             radiance_2 = _e17;
         } else {
-            metal::float3 _e18 = shade_direct(camera_ray_1, _e4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, _buffer_sizes);
+            metal::float3 _e18 = shade_direct(camera_ray_1, _e4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, _buffer_sizes);
             radiance_2 = _e18;
             t_3 = _e4.t;
         }
@@ -2327,7 +2445,7 @@ metal::float3 trace(
         metal::float3 _e22 = through_medium(camera_ray_1, _e20, _e21, instances, _buffer_sizes);
         return _e22;
     }
-    metal::float3 _e23 = trace_path(camera_ray_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+    metal::float3 _e23 = trace_path(camera_ray_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
     return _e23;
 }
 
@@ -2358,10 +2476,11 @@ void render_pixel(
     thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
+    thread type_15& scratch,
+    device type_17& counters,
+    thread type_19& spawn_dirs,
+    thread type_19& spawn_weights,
     thread uint& spawn_count,
-    device type_19& counters,
     device type_10& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2375,11 +2494,11 @@ void render_pixel(
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_4 = 0u;
-    uint2 loop_bound_7 = uint2(4294967295u);
+    uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_4 = true;
     while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_4) {
             uint _e46 = s_4;
             s_4 = _e46 + 1u;
@@ -2400,7 +2519,7 @@ void render_pixel(
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
         ray_28.medium = _e33;
         Ray _e34 = ray_28;
-        metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {
             metal::float3 _e38 = sum;
@@ -2444,10 +2563,11 @@ void render_invocation(
     thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
+    thread type_15& scratch,
+    device type_17& counters,
+    thread type_19& spawn_dirs,
+    thread type_19& spawn_weights,
     thread uint& spawn_count,
-    device type_19& counters,
     device type_10& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2456,7 +2576,7 @@ void render_invocation(
     if (metal::any(_e3 >= tile_3.extent)) {
         return;
     }
-    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
     return;
 }
 
@@ -2471,7 +2591,7 @@ struct renderInput {
 , device type_9 const& nodes [[buffer(2)]]
 , device type_10 const& triangles [[buffer(4)]]
 , device type_14 const& attributes [[buffer(5)]]
-, device type_19& counters [[buffer(9)]]
+, device type_17& counters [[buffer(9)]]
 , device type_10& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
@@ -2480,9 +2600,10 @@ struct renderInput {
     type_12 traversal_stack = {};
     float hit_error = {};
     uint ray_count = {};
-    type_16 spawn_dirs = {};
-    type_16 spawn_weights = {};
+    type_15 scratch = {};
+    type_19 spawn_dirs = {};
+    type_19 spawn_weights = {};
     uint spawn_count = {};
-    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
     return;
 }

@@ -198,6 +198,13 @@ const GAMMA_4_: f32 = 0.00000023841864f;
 const HAS_SECONDARY_RAYS: bool = true;
 const HAS_BACKGROUND: bool = true;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
+const SCRATCH_RESOLVED: u32 = 3u;
+const SCRATCH_LIGHT_BITS: u32 = 11u;
+const SCRATCH_QUERY: u32 = 2u;
+const SCRATCH_PENDING: u32 = 4u;
+const LIGHT_QUERIES: u32 = 32u;
+const COUNTER_SHADOW_OVERFLOW: u32 = 3u;
+const SCRATCH_LIGHT_QUERY: u32 = 12u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
 const MIS_BOUNCE_LENGTH: f32 = 3f;
@@ -227,11 +234,12 @@ var<private> hit_error: f32;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
 var<private> ray_count: u32;
+var<private> scratch: array<u32, 22>;
+@group(0) @binding(9) 
+var<storage, read_write> counters: array<atomic<u32>>;
 var<private> spawn_dirs: array<vec3<f32>, 1>;
 var<private> spawn_weights: array<vec3<f32>, 1>;
 var<private> spawn_count: u32;
-@group(0) @binding(9) 
-var<storage, read_write> counters: array<atomic<u32>>;
 @group(0) @binding(8) 
 var<storage, read_write> accum: array<vec4<f32>>;
 
@@ -426,15 +434,15 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let cx = (c_7[min(r_1.kx, 2u)] - (r_1.shear.x * c_7[min(r_1.kz, 2u)]));
     let cy = (c_7[min(r_1.ky, 2u)] - (r_1.shear.y * c_7[min(r_1.kz, 2u)]));
     let u_3 = ((cx * by) - (cy * bx));
-    let v_4 = ((ax * cy) - (ay * cx));
+    let v_5 = ((ax * cy) - (ay * cx));
     let w_1 = ((bx * ay) - (by * ax));
-    let outside = ((((u_3 < 0f) || (v_4 < 0f)) || (w_1 < 0f)) && (((u_3 > 0f) || (v_4 > 0f)) || (w_1 > 0f)));
-    let det = ((u_3 + v_4) + w_1);
+    let outside = ((((u_3 < 0f) || (v_5 < 0f)) || (w_1 < 0f)) && (((u_3 > 0f) || (v_5 > 0f)) || (w_1 > 0f)));
+    let det = ((u_3 + v_5) + w_1);
     let rcp = (1f / det);
-    let t_4 = ((((u_3 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_4 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear.z * c_7[min(r_1.kz, 2u)]))) * rcp);
+    let t_4 = ((((u_3 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_5 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear.z * c_7[min(r_1.kz, 2u)]))) * rcp);
     let hit_12 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_4 * rcp), (w_1 * rcp)), hit_12);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_5 * rcp), (w_1 * rcp)), hit_12);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -982,73 +990,54 @@ fn load_QuadLight(offset_7: u32) -> QuadLight {
     return QuadLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)), vec3<f32>(bitcast<f32>(_e62), bitcast<f32>(_e68), bitcast<f32>(_e74)), bitcast<f32>(_e81), _e87);
 }
 
-fn step_toward(x_1: vec3<f32>, s_1: vec3<f32>) -> vec3<f32> {
-    let bits_1 = bitcast<vec3<u32>>(x_1);
-    let up_1 = ((sign(x_1) * sign(s_1)) > vec3(0f));
-    let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
-    let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s_1 > vec3(0f)));
-    let moved = select(stepped, from_zero, (x_1 == vec3(0f)));
-    return select(x_1, moved, !((s_1 == vec3(0f))));
+fn scratch_store3f(i_1: u32, v_1: vec3<f32>) {
+    let b_8 = bitcast<vec3<u32>>(v_1);
+    scratch[min(i_1, 21u)] = b_8.x;
+    scratch[min((i_1 + 1u), 21u)] = b_8.y;
+    scratch[min((i_1 + 2u), 21u)] = b_8.z;
+    return;
 }
 
-fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_3 = ((2f * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    let offset_16 = (n_3 * vec3(d_3));
-    let _e17 = step_toward((p_5 + offset_16), offset_16);
-    return _e17;
-}
-
-fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> Ray {
-    var n_4: vec3<f32>;
-    var tmax_4: f32;
-
-    n_4 = normal;
-    let _e5 = n_4;
-    if (dot(dir, _e5) < 0f) {
-        let _e9 = n_4;
-        n_4 = -(_e9);
+fn shadow_deferred(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
+    let i_6 = scratch[min(SCRATCH_QUERY, 21u)];
+    scratch[min(SCRATCH_QUERY, 21u)] = (i_6 + 1u);
+    let _e22 = scratch[min(SCRATCH_RESOLVED, 21u)];
+    if (i_6 < _e22) {
+        let _e29 = scratch[min(SCRATCH_LIGHT_BITS, 21u)];
+        return f32(((_e29 >> (i_6 & 31u)) & 1u));
     }
-    let a_7 = abs(position);
-    let _e13 = hit_error;
-    let error_3 = max(_e13, (GAMMA_4_ * max(max(a_7.x, a_7.y), a_7.z)));
-    let _e22 = n_4;
-    let _e23 = offset_origin(position, _e22, error_3);
-    let _e25 = F32_INF;
-    tmax_4 = bitcast<f32>(_e25);
-    let _e29 = F32_INF;
-    if (dist < bitcast<f32>(_e29)) {
-        let light = (position + (dir * vec3(dist)));
-        let dd_1 = dot(dir, dir);
-        let along_1 = (dot((light - _e23), dir) / dd_1);
-        let l_7 = (abs(position) + abs((dir * vec3(dist))));
-        tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd_1)));
+    let _e41 = scratch[min(SCRATCH_PENDING, 21u)];
+    if (_e41 != 0u) {
+        return 1f;
     }
-    let _e59 = tmax_4;
-    return Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
+    if (i_6 >= LIGHT_QUERIES) {
+        atomicAdd((&counters[min(COUNTER_SHADOW_OVERFLOW, 3u)]), 1u);
+        return 1f;
+    }
+    scratch_store3f(SCRATCH_LIGHT_QUERY, position);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
+    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)] = bitcast<u32>(dist);
+    scratch[min(SCRATCH_PENDING, 21u)] = 1u;
+    return 1f;
 }
 
-fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
-    let _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    let _e6 = intersect_scene(_e4, true);
-    return select(1f, 0f, (_e6.slot != NO_HIT));
-}
-
-fn quad_light(l: QuadLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
+fn quad_light(l: QuadLight, position_1: vec3<f32>, normal_1: vec3<f32>) -> LightSample {
     let c_10 = cross(l.edge_u, l.edge_v);
     let area = length(c_10);
     let _e7 = rand2_next();
-    let to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_2);
+    let to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_1);
     let dist2_ = dot(to_light, to_light);
-    let dist_2 = sqrt(dist2_);
-    let dir_7 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
-    let cos_light = (-(dot(dir_7, c_10)) / max(area, 0.000000000000000000000000000001f));
+    let dist_3 = sqrt(dist2_);
+    let dir_8 = (to_light / vec3(max(dist_3, 0.00000000000000000001f)));
+    let cos_light = (-(dot(dir_8, c_10)) / max(area, 0.000000000000000000000000000001f));
     if (!((cos_light > 0f)) || !((dist2_ > 0f))) {
-        return LightSample(dir_7, dist_2, vec3(0f), 0f);
+        return LightSample(dir_8, dist_3, vec3(0f), 0f);
     }
-    let _e42 = shadow_query(position_2, normal_2, dir_7, dist_2);
+    let _e42 = shadow_deferred(position_1, normal_1, dir_8, dist_3);
     let strength = (((l.intensity * cos_light) * area) / dist2_);
     let pdf_1 = select(0f, (dist2_ / (cos_light * area)), (l.lamp == 1u));
-    return LightSample(dir_7, dist_2, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
+    return LightSample(dir_8, dist_3, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
 }
 
 fn load_SphereLight(offset_8: u32) -> SphereLight {
@@ -1064,16 +1053,16 @@ fn load_SphereLight(offset_8: u32) -> SphereLight {
     return SphereLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), bitcast<f32>(_e24), vec3<f32>(bitcast<f32>(_e30), bitcast<f32>(_e36), bitcast<f32>(_e42)), bitcast<f32>(_e49), _e55);
 }
 
-fn orthonormal_basis(n_5: vec3<f32>) -> mat3x3<f32> {
-    let sign_ = select(1f, -1f, ((bitcast<u32>(n_5.z) & 2147483648u) != 0u));
-    let a_8 = (-1f / (sign_ + n_5.z));
-    let b_8 = ((n_5.x * n_5.y) * a_8);
-    let _e16 = (sign_ * n_5.x);
-    return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_5.x) * a_8)), (sign_ * b_8), -(_e16)), vec3<f32>(b_8, (sign_ + ((n_5.y * n_5.y) * a_8)), -(n_5.y)), n_5);
+fn orthonormal_basis(n_3: vec3<f32>) -> mat3x3<f32> {
+    let sign_ = select(1f, -1f, ((bitcast<u32>(n_3.z) & 2147483648u) != 0u));
+    let a_7 = (-1f / (sign_ + n_3.z));
+    let b_9 = ((n_3.x * n_3.y) * a_7);
+    let _e16 = (sign_ * n_3.x);
+    return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_3.x) * a_7)), (sign_ * b_9), -(_e16)), vec3<f32>(b_9, (sign_ + ((n_3.y * n_3.y) * a_7)), -(n_3.y)), n_3);
 }
 
-fn sphere_light(l_1: SphereLight, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
-    let to_center = (l_1.position - position_3);
+fn sphere_light(l_1: SphereLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
+    let to_center = (l_1.position - position_2);
     let d2_ = dot(to_center, to_center);
     let r2_2 = max((l_1.radius * l_1.radius), 0.00000000000000000001f);
     if (d2_ <= r2_2) {
@@ -1089,24 +1078,24 @@ fn sphere_light(l_1: SphereLight, position_3: vec3<f32>, normal_3: vec3<f32>) ->
     let phi = (TAU * _e31.y);
     let _e45 = orthonormal_basis(w_4);
     let _e52 = normalize_vec3f((_e45 * vec3<f32>((cos(phi) * sin_t), (sin(phi) * sin_t), cos_t)));
-    let along_2 = dot(to_center, _e52);
-    let dist_3 = max((along_2 - sqrt(max((r2_2 - (d2_ - (along_2 * along_2))), 0f))), 0f);
+    let along_1 = dot(to_center, _e52);
+    let dist_4 = max((along_1 - sqrt(max((r2_2 - (d2_ - (along_1 * along_1))), 0f))), 0f);
     let weight_4 = (((l_1.intensity * 2f) * one_minus_cos_max) / r2_2);
-    let _e68 = shadow_query(position_3, normal_3, _e52, dist_3);
+    let _e68 = shadow_deferred(position_2, normal_2, _e52, dist_4);
     let pdf_2 = select(0f, (1f / (TAU * one_minus_cos_max)), (l_1.lamp == 1u));
-    return LightSample(_e52, dist_3, ((l_1.color * vec3(weight_4)) * vec3(_e68)), pdf_2);
+    return LightSample(_e52, dist_4, ((l_1.color * vec3(weight_4)) * vec3(_e68)), pdf_2);
 }
 
-fn dispatch_light(type_id_3: u32, offset_9: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
+fn dispatch_light(type_id_3: u32, offset_9: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
     switch type_id_3 {
         case 0u: {
             let _e4 = load_QuadLight(offset_9);
-            let _e5 = quad_light(_e4, position_4, normal_4);
+            let _e5 = quad_light(_e4, position_3, normal_3);
             return _e5;
         }
         case 1u: {
             let _e6 = load_SphereLight(offset_9);
-            let _e7 = sphere_light(_e6, position_4, normal_4);
+            let _e7 = sphere_light(_e6, position_3, normal_3);
             return _e7;
         }
         default: {
@@ -1115,16 +1104,130 @@ fn dispatch_light(type_id_3: u32, offset_9: u32, position_4: vec3<f32>, normal_4
     return LightSample();
 }
 
-fn sample_light_query(i_1: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
+fn scratch_load3f(i_2: u32) -> vec3<f32> {
+    let _e5 = scratch[min(i_2, 21u)];
+    let _e12 = scratch[min((i_2 + 1u), 21u)];
+    let _e19 = scratch[min((i_2 + 2u), 21u)];
+    return bitcast<vec3<f32>>(vec3<u32>(_e5, _e12, _e19));
+}
+
+fn step_toward(x_1: vec3<f32>, s_1: vec3<f32>) -> vec3<f32> {
+    let bits_2 = bitcast<vec3<u32>>(x_1);
+    let up_1 = ((sign(x_1) * sign(s_1)) > vec3(0f));
+    let stepped = bitcast<vec3<f32>>(select((bits_2 - vec3(1u)), (bits_2 + vec3(1u)), up_1));
+    let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s_1 > vec3(0f)));
+    let moved = select(stepped, from_zero, (x_1 == vec3(0f)));
+    return select(x_1, moved, !((s_1 == vec3(0f))));
+}
+
+fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
+    let d_3 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    let offset_16 = (n_4 * vec3(d_3));
+    let _e17 = step_toward((p_5 + offset_16), offset_16);
+    return _e17;
+}
+
+fn shadow_ray(position_4: vec3<f32>, normal_4: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> Ray {
+    var n_5: vec3<f32>;
+    var tmax_4: f32;
+
+    n_5 = normal_4;
+    let _e5 = n_5;
+    if (dot(dir_1, _e5) < 0f) {
+        let _e9 = n_5;
+        n_5 = -(_e9);
+    }
+    let a_8 = abs(position_4);
+    let _e13 = hit_error;
+    let error_3 = max(_e13, (GAMMA_4_ * max(max(a_8.x, a_8.y), a_8.z)));
+    let _e22 = n_5;
+    let _e23 = offset_origin(position_4, _e22, error_3);
+    let _e25 = F32_INF;
+    tmax_4 = bitcast<f32>(_e25);
+    let _e29 = F32_INF;
+    if (dist_1 < bitcast<f32>(_e29)) {
+        let light = (position_4 + (dir_1 * vec3(dist_1)));
+        let dd_1 = dot(dir_1, dir_1);
+        let along_2 = (dot((light - _e23), dir_1) / dd_1);
+        let l_7 = (abs(position_4) + abs((dir_1 * vec3(dist_1))));
+        tmax_4 = ((along_2 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd_1)));
+    }
+    let _e59 = tmax_4;
+    return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+}
+
+fn shadow_query(position_5: vec3<f32>, normal_5: vec3<f32>, dir_2: vec3<f32>, dist_2: f32) -> f32 {
+    let _e4 = shadow_ray(position_5, normal_5, dir_2, dist_2);
+    let _e6 = intersect_scene(_e4, true);
+    return select(1f, 0f, (_e6.slot != NO_HIT));
+}
+
+fn sample_light_deferred(i_3: u32, position_6: vec3<f32>, normal_6: vec3<f32>) -> LightSample {
+    var after: u32;
+    var resolved: u32;
+    var bits_1: u32;
+
     let frame_4 = frame;
-    if (i_1 >= frame_4.light_count) {
+    if (i_3 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
-    let _e22 = params[entry];
-    let _e27 = params[(entry + 1u)];
-    let _e28 = dispatch_light(_e22, _e27, position_5, normal_5);
-    return _e28;
+    let entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    let type_id_7 = params[entry];
+    let offset_17 = params[(entry + 1u)];
+    let start = rng_state;
+    after = start;
+    resolved = 0u;
+    bits_1 = 0u;
+    scratch[min(SCRATCH_RESOLVED, 21u)] = 0u;
+    scratch[min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
+    loop {
+        rng_state = start;
+        scratch[min(SCRATCH_QUERY, 21u)] = 0u;
+        scratch[min(SCRATCH_PENDING, 21u)] = 0u;
+        let _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_6);
+        let _e66 = scratch[min(SCRATCH_PENDING, 21u)];
+        if (_e66 == 0u) {
+            let _e69 = resolved;
+            if (_e69 > 0u) {
+                let _e72 = after;
+                rng_state = _e72;
+            }
+            return _e60;
+        }
+        let _e74 = resolved;
+        if (_e74 == 0u) {
+            let _e78 = rng_state;
+            after = _e78;
+        }
+        let _e79 = after;
+        rng_state = _e79;
+        let _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
+        let _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
+        let _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
+        let _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)];
+        let _e97 = shadow_query(_e82, _e85, _e88, bitcast<f32>(_e95));
+        let _e99 = rng_state;
+        after = _e99;
+        if !((_e97 == 0f)) {
+            let _e108 = scratch[min(SCRATCH_QUERY, 21u)];
+            let _e109 = resolved;
+            if (_e108 == (_e109 + 1u)) {
+                let _e113 = after;
+                rng_state = _e113;
+                return _e60;
+            }
+            let _e115 = bits_1;
+            let _e117 = resolved;
+            bits_1 = (_e115 | (1u << (_e117 & 31u)));
+        }
+        let _e122 = resolved;
+        resolved = (_e122 + 1u);
+        let _e126 = bits_1;
+        scratch[min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
+        let _e132 = resolved;
+        scratch[min(SCRATCH_RESOLVED, 21u)] = _e132;
+    }
+    return LightSample();
 }
 
 fn mis_weight(p_6: f32, other: f32) -> f32 {
@@ -1150,26 +1253,26 @@ fn mis_light_weight(l_2: LightSample, bsdf_pdf: f32) -> f32 {
 
 fn path_diffuse_shade(m: PathDiffuse, ray_13: Ray, hit_1: Hit, secondary: vec3<f32>) -> vec3<f32> {
     var direct: vec3<f32>;
-    var i_2: u32;
+    var i_4: u32;
 
     let n_13 = faceForward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
     direct = vec3(0f);
     let _e12 = light_count_query();
-    i_2 = 0u;
+    i_4 = 0u;
     loop {
-        let _e14 = i_2;
+        let _e14 = i_4;
         if (_e14 >= _e12) {
             break;
         }
-        let _e16 = i_2;
-        let _e19 = sample_light_query(_e16, hit_1.position, hit_1.geometric_normal);
+        let _e16 = i_4;
+        let _e19 = sample_light_deferred(_e16, hit_1.position, hit_1.geometric_normal);
         let c_11 = max(dot(n_13, _e19.dir), 0f);
         let _e24 = direct;
         let _e28 = mis_light_weight(_e19, (c_11 * INV_PI));
         direct = (_e24 + (_e19.radiance * vec3((c_11 * _e28))));
         continuing {
-            let _e33 = i_2;
-            i_2 = (_e33 + 1u);
+            let _e33 = i_4;
+            i_4 = (_e33 + 1u);
         }
     }
     let _e40 = direct;
@@ -1208,9 +1311,9 @@ fn quad_lamp_shade(m_1: QuadLamp, ray_16: Ray, hit_2: Hit) -> vec3<f32> {
     }
     let _e13 = bounce_pdf(ray_16);
     let len = length(ray_16.dir);
-    let dist_4 = (hit_2.t * len);
+    let dist_5 = (hit_2.t * len);
     let cos_l = (abs(dot(hit_2.geometric_normal, ray_16.dir)) / len);
-    let pl = ((dist_4 * dist_4) / max((cos_l * m_1.area), 0.000000000000000000000000000001f));
+    let pl = ((dist_5 * dist_5) / max((cos_l * m_1.area), 0.000000000000000000000000000001f));
     let _e29 = mis_weight(_e13, pl);
     return (le * vec3(_e29));
 }
@@ -1289,8 +1392,8 @@ fn pbr_smith_v(ndl: f32, ndv: f32, a2_1: f32) -> f32 {
     return (0.5f / max((gv + gl), 0.00000000000000000001f));
 }
 
-fn pbr_eval(base_1: vec3<f32>, metallic: f32, roughness_1: f32, n_6: vec3<f32>, v_1: vec3<f32>, l_3: vec3<f32>) -> vec3<f32> {
-    let ndv_3 = dot(n_6, v_1);
+fn pbr_eval(base_1: vec3<f32>, metallic: f32, roughness_1: f32, n_6: vec3<f32>, v_2: vec3<f32>, l_3: vec3<f32>) -> vec3<f32> {
+    let ndv_3 = dot(n_6, v_2);
     let ndl_1 = dot(n_6, l_3);
     if (!((ndv_3 > 0f)) || !((ndl_1 > 0f))) {
         return vec3(0f);
@@ -1298,8 +1401,8 @@ fn pbr_eval(base_1: vec3<f32>, metallic: f32, roughness_1: f32, n_6: vec3<f32>, 
     let metal = saturate(metallic);
     let _e18 = pbr_alpha2_(roughness_1);
     let f0_1 = mix(vec3(0.04f), base_1, vec3(metal));
-    let _e24 = normalize_vec3f((v_1 + l_3));
-    let _e26 = pbr_fresnel(f0_1, dot(v_1, _e24));
+    let _e24 = normalize_vec3f((v_2 + l_3));
+    let _e26 = pbr_fresnel(f0_1, dot(v_2, _e24));
     let _e29 = pbr_ggx_d(saturate(dot(n_6, _e24)), _e18);
     let _e30 = pbr_smith_v(ndl_1, ndv_3, _e18);
     let spec = (_e26 * vec3((_e29 * _e30)));
@@ -1330,42 +1433,42 @@ fn pbr_specular_pdf(ndh_1: f32, ndv_2: f32, a2_2: f32) -> f32 {
     return ((_e3 * 0.5f) / (ndv_2 + sqrt((a2_2 + (((1f - a2_2) * ndv_2) * ndv_2)))));
 }
 
-fn pbr_pdf(base_3: vec3<f32>, metallic_2: f32, roughness_2: f32, n_7: vec3<f32>, v_2: vec3<f32>, l_4: vec3<f32>) -> f32 {
-    let ndv_4 = dot(n_7, v_2);
+fn pbr_pdf(base_3: vec3<f32>, metallic_2: f32, roughness_2: f32, n_7: vec3<f32>, v_3: vec3<f32>, l_4: vec3<f32>) -> f32 {
+    let ndv_4 = dot(n_7, v_3);
     let ndl_2 = dot(n_7, l_4);
     if (!((ndv_4 > 0f)) || !((ndl_2 > 0f))) {
         return 0f;
     }
     let _e16 = pbr_alpha2_(roughness_2);
     let _e17 = pbr_specular_chance(base_3, metallic_2, ndv_4);
-    let _e19 = normalize_vec3f((v_2 + l_4));
+    let _e19 = normalize_vec3f((v_3 + l_4));
     let _e22 = pbr_specular_pdf(saturate(dot(n_7, _e19)), ndv_4, _e16);
     return ((_e17 * _e22) + (((1f - _e17) * ndl_2) * INV_PI));
 }
 
 fn path_pbr_shade(m_3: PathPbr, ray_20: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     var direct_1: vec3<f32>;
-    var i_3: u32;
+    var i_5: u32;
     var w: f32;
 
     let _e4 = path_pbr_n(ray_20, hit_6);
     let _e6 = normalize_vec3f(ray_20.dir);
-    let v_5 = -(_e6);
+    let v_6 = -(_e6);
     direct_1 = vec3(0f);
     let _e12 = light_count_query();
-    i_3 = 0u;
+    i_5 = 0u;
     loop {
-        let _e14 = i_3;
+        let _e14 = i_5;
         if (_e14 >= _e12) {
             break;
         }
-        let _e16 = i_3;
-        let _e19 = sample_light_query(_e16, hit_6.position, hit_6.geometric_normal);
+        let _e16 = i_5;
+        let _e19 = sample_light_deferred(_e16, hit_6.position, hit_6.geometric_normal);
         if any((_e19.radiance > vec3(0f))) {
-            let _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_5, _e19.dir);
+            let _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_6, _e19.dir);
             w = 1f;
             if (_e19.pdf > 0f) {
-                let _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_5, _e19.dir);
+                let _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_6, _e19.dir);
                 let _e41 = mis_weight(_e19.pdf, _e40);
                 w = _e41;
             }
@@ -1374,8 +1477,8 @@ fn path_pbr_shade(m_3: PathPbr, ray_20: Ray, hit_6: Hit, secondary_1: vec3<f32>)
             direct_1 = (_e42 + ((_e19.radiance * _e29) * vec3(_e45)));
         }
         continuing {
-            let _e49 = i_3;
-            i_3 = (_e49 + 1u);
+            let _e49 = i_5;
+            i_5 = (_e49 + 1u);
         }
     }
     let _e53 = direct_1;
@@ -1444,15 +1547,15 @@ fn sample_cosine_hemisphere(n_8: vec3<f32>, u: vec2<f32>) -> vec3<f32> {
     return (_e17 * local);
 }
 
-fn mis_bounce_dir(dir_2: vec3<f32>, pdf: f32) -> vec3<f32> {
+fn mis_bounce_dir(dir_3: vec3<f32>, pdf: f32) -> vec3<f32> {
     let x_4 = min((log((1f + max(pdf, 0f))) * (1f / 90f)), 0.999f);
-    return (dir_2 * vec3((MIS_BOUNCE_LENGTH + x_4)));
+    return (dir_3 * vec3((MIS_BOUNCE_LENGTH + x_4)));
 }
 
-fn rt_spawn(dir_3: vec3<f32>, weight: vec3<f32>) {
+fn rt_spawn(dir_4: vec3<f32>, weight: vec3<f32>) {
     let _e3 = spawn_count;
     if (_e3 < 1u) {
-        spawn_dirs[_e3] = dir_3;
+        spawn_dirs[_e3] = dir_4;
         spawn_weights[_e3] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1504,10 +1607,10 @@ fn pbr_sample_vndf(ve: vec3<f32>, alpha: f32, u_1: vec2<f32>) -> vec3<f32> {
     return _e84;
 }
 
-fn pbr_sample(base_4: vec3<f32>, metallic_3: f32, roughness_3: f32, n_9: vec3<f32>, v_3: vec3<f32>, u_2: vec3<f32>) -> PbrSample {
+fn pbr_sample(base_4: vec3<f32>, metallic_3: f32, roughness_3: f32, n_9: vec3<f32>, v_4: vec3<f32>, u_2: vec3<f32>) -> PbrSample {
     var l_5: vec3<f32>;
 
-    let ndv_5 = dot(n_9, v_3);
+    let ndv_5 = dot(n_9, v_4);
     if !((ndv_5 > 0f)) {
         return PbrSample(n_9, vec3(0f), 0f);
     }
@@ -1516,21 +1619,21 @@ fn pbr_sample(base_4: vec3<f32>, metallic_3: f32, roughness_3: f32, n_9: vec3<f3
     if (u_2.x < _e14) {
         let _e20 = orthonormal_basis(n_9);
         let _e21 = pbr_alpha2_(roughness_3);
-        let _e26 = pbr_sample_vndf((transpose(_e20) * v_3), sqrt(_e21), u_2.yz);
+        let _e26 = pbr_sample_vndf((transpose(_e20) * v_4), sqrt(_e21), u_2.yz);
         let h_2 = (_e20 * _e26);
-        l_5 = reflect(-(v_3), h_2);
+        l_5 = reflect(-(v_4), h_2);
     } else {
         let _e31 = sample_cosine_hemisphere(n_9, u_2.yz);
         l_5 = _e31;
     }
     let _e32 = l_5;
-    let _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_3, _e32);
+    let _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_4, _e32);
     if !((_e33 > 0f)) {
         let _e37 = l_5;
         return PbrSample(_e37, vec3(0f), 0f);
     }
     let _e42 = l_5;
-    let _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_3, _e42);
+    let _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_4, _e42);
     let weight_5 = (_e43 / vec3(_e33));
     let _e46 = l_5;
     return PbrSample(_e46, weight_5, _e33);
@@ -1542,10 +1645,10 @@ fn path_pbr_rays(m_5: PathPbr, ray_26: Ray, hit_9: Hit) {
     let _e3 = path_pbr_ng(ray_26, hit_9);
     let _e4 = path_pbr_n(ray_26, hit_9);
     let _e6 = normalize_vec3f(ray_26.dir);
-    let v_6 = -(_e6);
+    let v_7 = -(_e6);
     let _e11 = rand_next();
     let _e12 = rand2_next();
-    let _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_6, vec3<f32>(_e11, _e12));
+    let _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_7, vec3<f32>(_e11, _e12));
     if (!((_e14.pdf > 0f)) || !((dot(_e14.dir, _e3) > 0f))) {
         return;
     }
@@ -1586,29 +1689,29 @@ fn dispatch_secondary_rays(type_id_6: u32, offset_15: u32, ray_27: Ray, hit_10: 
     return;
 }
 
-fn spawn_origin_at(position_6: vec3<f32>, normal_6: vec3<f32>, error_1: f32, dir_4: vec3<f32>) -> vec3<f32> {
+fn spawn_origin_at(position_7: vec3<f32>, normal_7: vec3<f32>, error_1: f32, dir_5: vec3<f32>) -> vec3<f32> {
     var n_10: vec3<f32>;
 
-    n_10 = normal_6;
+    n_10 = normal_7;
     let _e5 = n_10;
-    if (dot(dir_4, _e5) < 0f) {
+    if (dot(dir_5, _e5) < 0f) {
         let _e9 = n_10;
         n_10 = -(_e9);
     }
     let _e11 = n_10;
-    let _e12 = offset_origin(position_6, _e11, error_1);
+    let _e12 = offset_origin(position_7, _e11, error_1);
     return _e12;
 }
 
-fn spawn_origin(hit_11: Hit, error_2: f32, dir_5: vec3<f32>) -> vec3<f32> {
-    let _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_5);
+fn spawn_origin(hit_11: Hit, error_2: f32, dir_6: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_6);
     return _e5;
 }
 
 fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
     var out: PathState;
     var spawned: bool;
-    var dir_6: vec3<f32>;
+    var dir_7: vec3<f32>;
     var weight_3: vec3<f32>;
     var beta: vec3<f32>;
 
@@ -1626,7 +1729,7 @@ fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
     let _e22 = finish_hit(ray_29, c_5);
     let error_4 = hit_error;
     spawned = false;
-    dir_6 = vec3(0f);
+    dir_7 = vec3(0f);
     weight_3 = vec3(0f);
     if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_29.depth < MAX_DEPTH)) {
         spawn_count = 0u;
@@ -1635,7 +1738,7 @@ fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
         if (min(_e47, 1u) > 0u) {
             spawned = true;
             let _e56 = spawn_dirs[0u];
-            dir_6 = _e56;
+            dir_7 = _e56;
             let _e60 = spawn_weights[0u];
             weight_3 = _e60;
         }
@@ -1668,9 +1771,9 @@ fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
     }
     let _e109 = beta;
     out.beta = _e109;
-    let _e111 = dir_6;
+    let _e111 = dir_7;
     let _e112 = spawn_origin(_e22, error_4, _e111);
-    let _e114 = dir_6;
+    let _e114 = dir_7;
     let _e116 = F32_INF;
     out.ray = Ray(_e112, 0f, _e114, bitcast<f32>(_e116), (ray_29.depth + 1u), RAY_SECONDARY, ray_29.medium);
     out.live = true;
