@@ -463,3 +463,30 @@ fn a_model_without_lights_links_no_light_type() {
         serde_json::json!(["GltfMaterial"])
     );
 }
+
+#[test]
+fn light_programs_shadows_are_deferred_only_with_more_than_one_light_type() {
+    // One light type: its `shadow` traversal is one copy per material either way, so the kernel
+    // keeps the light program tracing in place (and the smaller scratch array).
+    let one = compile("one_light_type", &scene(false), false);
+    let names = function_names(&one);
+    assert!(
+        !names.iter().any(|n| n == "sample_light_deferred"),
+        "{names:?}"
+    );
+    assert!(!names.iter().any(|n| n == "shadow_deferred"), "{names:?}");
+    // Two: `sample_light` traces every light program's queries at its one call site.
+    let two = scene(false).replace(
+        "    light PointLight {",
+        "    light DirectionalLight { direction: vec3f(0.0, -1.0, 0.0) }\n    light PointLight {",
+    );
+    let two = two.replace(
+        "import \"std/lights/point.rt\";",
+        "import \"std/lights/point.rt\";\nimport \"std/lights/directional.rt\";",
+    );
+    let two = compile("two_light_types", &two, false);
+    let names = function_names(&two);
+    for f in ["sample_light_deferred", "shadow_deferred"] {
+        assert!(names.iter().any(|n| n == f), "{f} missing: {names:?}");
+    }
+}

@@ -146,13 +146,6 @@ const float GAMMA_4_ = 2.3841864e-7;
 const bool HAS_SECONDARY_RAYS = false;
 const bool HAS_BACKGROUND = true;
 const uint LIGHT_ENTRY_STRIDE = 2u;
-const uint SCRATCH_RESOLVED = 3u;
-const uint SCRATCH_LIGHT_BITS = 11u;
-const uint SCRATCH_QUERY = 2u;
-const uint SCRATCH_PENDING = 4u;
-const uint LIGHT_QUERIES = 32u;
-const uint COUNTER_SHADOW_OVERFLOW = 3u;
-const uint SCRATCH_LIGHT_QUERY = 12u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const uint RAY_SHADOW = 2u;
 const float INV_PI = 0.31830987;
@@ -187,15 +180,13 @@ layout(std430, binding = 5) readonly buffer type_14_block_6Compute { uvec4 _grou
 
 uint ray_count = 0u;
 
-uint scratch[22] = uint[22](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
-
-layout(std430, binding = 9) buffer type_17_block_7Compute { uint _group_0_binding_9_cs[]; };
-
 vec3 spawn_dirs[1] = vec3[1](vec3(0.0));
 
 vec3 spawn_weights[1] = vec3[1](vec3(0.0));
 
 uint spawn_count = 0u;
+
+layout(std430, binding = 9) buffer type_19_block_7Compute { uint _group_0_binding_9_cs[]; };
 
 layout(std430, binding = 8) buffer type_10_block_8Compute { vec4 _group_0_binding_8_cs[]; };
 
@@ -388,15 +379,15 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
     float cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
-    float v_2 = ((ax * cy) - (ay * cx));
+    float v_1 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
-    bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
-    float det = ((u + v_2) + w);
+    bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
+    float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
-    float t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    float t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
     bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_7 ? vec3(t_4, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_7 ? vec3(t_4, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
@@ -891,70 +882,10 @@ PointLight load_PointLight(uint offset_5) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
-void scratch_store3f(uint i_1, vec3 v_1) {
-    uvec3 b_7 = floatBitsToUint(v_1);
-    scratch[min(i_1, 21u)] = b_7.x;
-    scratch[min((i_1 + 1u), 21u)] = b_7.y;
-    scratch[min((i_1 + 2u), 21u)] = b_7.z;
-    return;
-}
-
-float shadow_deferred(vec3 position, vec3 normal, vec3 dir, float dist) {
-    uint i_6 = scratch[min(SCRATCH_QUERY, 21u)];
-    scratch[min(SCRATCH_QUERY, 21u)] = (i_6 + 1u);
-    uint _e22 = scratch[min(SCRATCH_RESOLVED, 21u)];
-    if ((i_6 < _e22)) {
-        uint _e29 = scratch[min(SCRATCH_LIGHT_BITS, 21u)];
-        return float(((_e29 >> (i_6 & 31u)) & 1u));
-    }
-    uint _e41 = scratch[min(SCRATCH_PENDING, 21u)];
-    if ((_e41 != 0u)) {
-        return 1.0;
-    }
-    if ((i_6 >= LIGHT_QUERIES)) {
-        atomicAdd(_group_0_binding_9_cs[min(COUNTER_SHADOW_OVERFLOW, 3u)], 1u);
-        return 1.0;
-    }
-    scratch_store3f(SCRATCH_LIGHT_QUERY, position);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)] = floatBitsToUint(dist);
-    scratch[min(SCRATCH_PENDING, 21u)] = 1u;
-    return 1.0;
-}
-
-LightSample point_light(PointLight l, vec3 position_1, vec3 normal_1) {
-    float strength = 0.0;
-    vec3 to_light = (l.position - position_1);
-    float dist_3 = length(to_light);
-    vec3 dir_5 = (to_light / vec3(max(dist_3, 1e-20)));
-    strength = (l.intensity / max((dist_3 * dist_3), 1e-20));
-    if ((l.range > 0.0)) {
-        float _e19 = strength;
-        strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_3)));
-    }
-    float _e26 = shadow_deferred(position_1, normal_1, dir_5, dist_3);
-    float _e28 = strength;
-    return LightSample(dir_5, dist_3, ((l.color * vec3(_e28)) * vec3(_e26)), 0.0);
-}
-
-LightSample dispatch_light(uint type_id_2, uint offset_6, vec3 position_2, vec3 normal_2) {
-    PointLight _e3 = load_PointLight(offset_6);
-    LightSample _e4 = point_light(_e3, position_2, normal_2);
-    return _e4;
-}
-
-vec3 scratch_load3f(uint i_2) {
-    uint _e5 = scratch[min(i_2, 21u)];
-    uint _e12 = scratch[min((i_2 + 1u), 21u)];
-    uint _e19 = scratch[min((i_2 + 2u), 21u)];
-    return uintBitsToFloat(uvec3(_e5, _e12, _e19));
-}
-
 vec3 step_toward(vec3 x_1, vec3 s) {
-    uvec3 bits_2 = floatBitsToUint(x_1);
+    uvec3 bits_1 = floatBitsToUint(x_1);
     bvec3 up_1 = greaterThan((sign(x_1) * sign(s)), vec3(0.0));
-    vec3 stepped = uintBitsToFloat(mix((bits_2 - uvec3(1u)), (bits_2 + uvec3(1u)), up_1));
+    vec3 stepped = uintBitsToFloat(mix((bits_1 - uvec3(1u)), (bits_1 + uvec3(1u)), up_1));
     vec3 from_zero = mix(vec3(-1.1754944e-38), vec3(1.1754944e-38), greaterThan(s, vec3(0.0)));
     vec3 moved = mix(stepped, from_zero, equal(x_1, vec3(0.0)));
     return mix(x_1, moved, not(equal(s, vec3(0.0))));
@@ -967,127 +898,93 @@ vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
     return _e17;
 }
 
-Ray shadow_ray(vec3 position_3, vec3 normal_3, vec3 dir_1, float dist_1) {
+Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
     vec3 n_4 = vec3(0.0);
     float tmax_4 = 0.0;
-    n_4 = normal_3;
+    n_4 = normal;
     vec3 _e5 = n_4;
-    if ((dot(dir_1, _e5) < 0.0)) {
+    if ((dot(dir, _e5) < 0.0)) {
         vec3 _e9 = n_4;
         n_4 = -(_e9);
     }
-    vec3 a_6 = abs(position_3);
+    vec3 a_6 = abs(position);
     float _e13 = hit_error;
     float error_3 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
     vec3 _e22 = n_4;
-    vec3 _e23 = offset_origin(position_3, _e22, error_3);
+    vec3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = uintBitsToFloat(_e25);
     uint _e29 = F32_INF;
-    if ((dist_1 < uintBitsToFloat(_e29))) {
-        vec3 light = (position_3 + (dir_1 * vec3(dist_1)));
-        float dd_1 = dot(dir_1, dir_1);
-        float along_1 = (dot((light - _e23), dir_1) / dd_1);
-        vec3 l_1 = (abs(position_3) + abs((dir_1 * vec3(dist_1))));
+    if ((dist < uintBitsToFloat(_e29))) {
+        vec3 light = (position + (dir * vec3(dist)));
+        float dd_1 = dot(dir, dir);
+        float along_1 = (dot((light - _e23), dir) / dd_1);
+        vec3 l_1 = (abs(position) + abs((dir * vec3(dist))));
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    return Ray(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-float shadow_query(vec3 position_4, vec3 normal_4, vec3 dir_2, float dist_2) {
-    Ray _e4 = shadow_ray(position_4, normal_4, dir_2, dist_2);
+float shadow_query(vec3 position_1, vec3 normal_1, vec3 dir_1, float dist_1) {
+    Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
     Candidate _e6 = intersect_scene(_e4, true);
     return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample sample_light_deferred(uint i_3, vec3 position_5, vec3 normal_5) {
-    uint after = 0u;
-    uint resolved = 0u;
-    uint bits_1 = 0u;
+LightSample point_light(PointLight l, vec3 position_2, vec3 normal_2) {
+    float strength = 0.0;
+    vec3 to_light = (l.position - position_2);
+    float dist_2 = length(to_light);
+    vec3 dir_4 = (to_light / vec3(max(dist_2, 1e-20)));
+    strength = (l.intensity / max((dist_2 * dist_2), 1e-20));
+    if ((l.range > 0.0)) {
+        float _e19 = strength;
+        strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_2)));
+    }
+    float _e26 = shadow_query(position_2, normal_2, dir_4, dist_2);
+    float _e28 = strength;
+    return LightSample(dir_4, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0.0);
+}
+
+LightSample dispatch_light(uint type_id_2, uint offset_6, vec3 position_3, vec3 normal_3) {
+    PointLight _e3 = load_PointLight(offset_6);
+    LightSample _e4 = point_light(_e3, position_3, normal_3);
+    return _e4;
+}
+
+LightSample sample_light_query(uint i_1, vec3 position_4, vec3 normal_4) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    if ((i_3 >= frame_4.light_count)) {
+    if ((i_1 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
-    uint entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
-    uint type_id_6 = _group_0_binding_6_cs[entry];
-    uint offset_11 = _group_0_binding_6_cs[(entry + 1u)];
-    uint start = rng_state;
-    after = start;
-    resolved = 0u;
-    bits_1 = 0u;
-    scratch[min(SCRATCH_RESOLVED, 21u)] = 0u;
-    scratch[min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
-    while(true) {
-        rng_state = start;
-        scratch[min(SCRATCH_QUERY, 21u)] = 0u;
-        scratch[min(SCRATCH_PENDING, 21u)] = 0u;
-        LightSample _e60 = dispatch_light(type_id_6, offset_11, position_5, normal_5);
-        uint _e66 = scratch[min(SCRATCH_PENDING, 21u)];
-        if ((_e66 == 0u)) {
-            uint _e69 = resolved;
-            if ((_e69 > 0u)) {
-                uint _e72 = after;
-                rng_state = _e72;
-            }
-            return _e60;
-        }
-        uint _e74 = resolved;
-        if ((_e74 == 0u)) {
-            uint _e78 = rng_state;
-            after = _e78;
-        }
-        uint _e79 = after;
-        rng_state = _e79;
-        vec3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
-        vec3 _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
-        vec3 _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        uint _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)];
-        float _e97 = shadow_query(_e82, _e85, _e88, uintBitsToFloat(_e95));
-        uint _e99 = rng_state;
-        after = _e99;
-        if (!((_e97 == 0.0))) {
-            uint _e108 = scratch[min(SCRATCH_QUERY, 21u)];
-            uint _e109 = resolved;
-            if ((_e108 == (_e109 + 1u))) {
-                uint _e113 = after;
-                rng_state = _e113;
-                return _e60;
-            }
-            uint _e115 = bits_1;
-            uint _e117 = resolved;
-            bits_1 = (_e115 | (1u << (_e117 & 31u)));
-        }
-        uint _e122 = resolved;
-        resolved = (_e122 + 1u);
-        uint _e126 = bits_1;
-        scratch[min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
-        uint _e132 = resolved;
-        scratch[min(SCRATCH_RESOLVED, 21u)] = _e132;
-    }
-    return LightSample(vec3(0.0), 0.0, vec3(0.0), 0.0);
+    uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
+    uint _e22 = _group_0_binding_6_cs[entry];
+    uint _e27 = _group_0_binding_6_cs[(entry + 1u)];
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    return _e28;
 }
 
 vec3 lambert_shade(Lambert m, Ray ray_12, Hit hit_2) {
     vec3 color = vec3(0.0);
-    uint i_4 = 0u;
+    uint i_2 = 0u;
     vec3 _e3 = shading_normal(ray_12, hit_2);
     color = vec3(0.0);
     uint _e8 = light_count_query();
-    i_4 = 0u;
+    i_2 = 0u;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e30 = i_4;
-            i_4 = (_e30 + 1u);
+            uint _e30 = i_2;
+            i_2 = (_e30 + 1u);
         }
         loop_init_2 = false;
-        uint _e10 = i_4;
+        uint _e10 = i_2;
         if ((_e10 >= _e8)) {
             break;
         }
-        uint _e12 = i_4;
-        LightSample _e15 = sample_light_deferred(_e12, hit_2.position, hit_2.geometric_normal);
+        uint _e12 = i_2;
+        LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
         vec3 _e16 = color;
         color = (_e16 + (((m.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0.0))));
     }
@@ -1131,21 +1028,21 @@ void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_17, Hit hit_
     return;
 }
 
-vec3 spawn_origin_at(vec3 position_6, vec3 normal_6, float error_1, vec3 dir_3) {
+vec3 spawn_origin_at(vec3 position_5, vec3 normal_5, float error_1, vec3 dir_2) {
     vec3 n_5 = vec3(0.0);
-    n_5 = normal_6;
+    n_5 = normal_5;
     vec3 _e5 = n_5;
-    if ((dot(dir_3, _e5) < 0.0)) {
+    if ((dot(dir_2, _e5) < 0.0)) {
         vec3 _e9 = n_5;
         n_5 = -(_e9);
     }
     vec3 _e11 = n_5;
-    vec3 _e12 = offset_origin(position_6, _e11, error_1);
+    vec3 _e12 = offset_origin(position_5, _e11, error_1);
     return _e12;
 }
 
-vec3 spawn_origin(Hit hit_5, float error_2, vec3 dir_4) {
-    vec3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
+vec3 spawn_origin(Hit hit_5, float error_2, vec3 dir_3) {
+    vec3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_3);
     return _e5;
 }
 
@@ -1169,7 +1066,7 @@ vec3 trace(Ray camera_ray) {
     float t_3 = 0.0;
     Hit hit_6 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
-    uint i_5 = 0u;
+    uint i_3 = 0u;
     uint medium = 0u;
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false);
@@ -1265,24 +1162,24 @@ vec3 trace(Ray camera_ray) {
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
                         f = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_8, 0u);
-                        i_5 = 0u;
+                        i_3 = 0u;
                         bool loop_init_3 = true;
                         while(true) {
                             if (!loop_init_3) {
-                                uint _e175 = i_5;
-                                i_5 = (_e175 + 1u);
+                                uint _e175 = i_3;
+                                i_3 = (_e175 + 1u);
                             }
                             loop_init_3 = false;
-                            uint _e155 = i_5;
+                            uint _e155 = i_3;
                             if ((_e155 >= n_8)) {
                                 break;
                             }
-                            uint _e158 = i_5;
-                            uint _e162 = i_5;
+                            uint _e158 = i_3;
+                            uint _e162 = i_3;
                             vec3 _e165 = spawn_dirs[_e162];
                             f.dirs[min(_e158, 0u)] = _e165;
-                            uint _e167 = i_5;
-                            uint _e171 = i_5;
+                            uint _e167 = i_3;
+                            uint _e171 = i_3;
                             vec3 _e174 = spawn_weights[_e171];
                             f.weights[min(_e167, 0u)] = _e174;
                         }
@@ -1335,17 +1232,17 @@ vec3 trace(Ray camera_ray) {
         uint _e241 = stack[min(top_1, 3u)].next;
         uint _e246 = stack[min(top_1, 3u)].count;
         if ((_e241 < _e246)) {
-            uint i_7 = stack[min(top_1, 3u)].next;
-            stack[min(top_1, 3u)].next = (i_7 + 1u);
+            uint i_4 = stack[min(top_1, 3u)].next;
+            stack[min(top_1, 3u)].next = (i_4 + 1u);
             Ray parent = stack[min(top_1, 3u)].ray;
             Hit hit_8 = stack[min(top_1, 3u)].hit;
-            vec3 dir_6 = stack[min(top_1, 3u)].dirs[min(i_7, 0u)];
+            vec3 dir_5 = stack[min(top_1, 3u)].dirs[min(i_4, 0u)];
             medium = parent.medium;
             float _e283 = stack[min(top_1, 3u)].error;
-            vec3 _e284 = spawn_origin(hit_8, _e283, dir_6);
+            vec3 _e284 = spawn_origin(hit_8, _e283, dir_5);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_18 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_18 = Ray(_e284, 0.0, dir_5, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;

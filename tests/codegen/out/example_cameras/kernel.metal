@@ -10,8 +10,8 @@ struct _mslBufferSizes {
     uint size6;
     uint size7;
     uint size10;
-    uint size13;
-    uint size17;
+    uint size15;
+    uint size16;
 };
 
 struct TileParams {
@@ -133,9 +133,6 @@ struct LightSample {
     metal::packed_float3 radiance;
     float pdf;
 };
-struct type_15 {
-    uint inner[22];
-};
 struct PointLight {
     metal::float3 position;
     metal::packed_float3 color;
@@ -144,8 +141,7 @@ struct PointLight {
     float inner_range;
     char _pad5[8];
 };
-typedef metal::atomic_uint type_17[1];
-struct type_18 {
+struct type_15 {
     metal::float3 inner[1];
 };
 struct Frame {
@@ -155,15 +151,16 @@ struct Frame {
     uint slot;
     char _pad4[8];
     metal::float3 sum;
-    type_18 dirs;
-    type_18 weights;
+    type_15 dirs;
+    type_15 weights;
     uint count;
     uint next;
     char _pad9[8];
 };
-struct type_19 {
+struct type_16 {
     Frame inner[4];
 };
+typedef metal::atomic_uint type_19[1];
 constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint NO_HIT = 4294967295u;
@@ -185,13 +182,6 @@ constant float GAMMA_4_ = 0.00000023841864;
 constant bool HAS_SECONDARY_RAYS = false;
 constant bool HAS_BACKGROUND = true;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
-constant uint SCRATCH_RESOLVED = 3u;
-constant uint SCRATCH_LIGHT_BITS = 11u;
-constant uint SCRATCH_QUERY = 2u;
-constant uint SCRATCH_PENDING = 4u;
-constant uint LIGHT_QUERIES = 32u;
-constant uint COUNTER_SHADOW_OVERFLOW = 3u;
-constant uint SCRATCH_LIGHT_QUERY = 12u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
 constant float INV_PI = 0.31830987;
@@ -478,15 +468,15 @@ metal::float3 hit_triangle(
     float cx = c_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_4[metal::min(r_1.kz, 2u)]);
     float cy = c_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_4[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
-    float v_2 = (ax * cy) - (ay * cx);
+    float v_1 = (ax * cy) - (ay * cx);
     float w = (bx * ay) - (by * ax);
-    bool outside = (((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0));
-    float det = (u + v_2) + w;
+    bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
+    float det = (u + v_1) + w;
     float rcp = 1.0 / det;
-    float t_4 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_4 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_7 ? metal::float3(t_4, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_7 ? metal::float3(t_4, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -1134,104 +1124,13 @@ PointLight load_PointLight(
     return PointLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)};
 }
 
-void scratch_store3f(
-    uint i_1,
-    metal::float3 v_1,
-    thread type_15& scratch
-) {
-    metal::uint3 b_7 = as_type<metal::uint3>(v_1);
-    scratch.inner[metal::min(i_1, 21u)] = b_7.x;
-    scratch.inner[metal::min(i_1 + 1u, 21u)] = b_7.y;
-    scratch.inner[metal::min(i_1 + 2u, 21u)] = b_7.z;
-    return;
-}
-
-float shadow_deferred(
-    metal::float3 position,
-    metal::float3 normal,
-    metal::float3 dir,
-    float dist,
-    thread type_15& scratch,
-    device type_17& counters,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint i_6 = scratch.inner[metal::min(SCRATCH_QUERY, 21u)];
-    scratch.inner[metal::min(SCRATCH_QUERY, 21u)] = i_6 + 1u;
-    uint _e22 = scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)];
-    if (i_6 < _e22) {
-        uint _e29 = scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)];
-        return static_cast<float>((_e29 >> (i_6 & 31u)) & 1u);
-    }
-    uint _e41 = scratch.inner[metal::min(SCRATCH_PENDING, 21u)];
-    if (_e41 != 0u) {
-        return 1.0;
-    }
-    if (i_6 >= LIGHT_QUERIES) {
-        metal::atomic_fetch_add_explicit(&counters[metal::min(COUNTER_SHADOW_OVERFLOW, 3u)], 1u, metal::memory_order_relaxed);
-        return 1.0;
-    }
-    scratch_store3f(SCRATCH_LIGHT_QUERY, position, scratch);
-    scratch_store3f(SCRATCH_LIGHT_QUERY + 3u, normal, scratch);
-    scratch_store3f(SCRATCH_LIGHT_QUERY + 6u, dir, scratch);
-    scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 21u)] = as_type<uint>(dist);
-    scratch.inner[metal::min(SCRATCH_PENDING, 21u)] = 1u;
-    return 1.0;
-}
-
-LightSample point_light(
-    PointLight l,
-    metal::float3 position_1,
-    metal::float3 normal_1,
-    thread type_15& scratch,
-    device type_17& counters,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    float strength = {};
-    metal::float3 to_light = l.position - position_1;
-    float dist_3 = metal::length(to_light);
-    metal::float3 dir_5 = to_light / metal::float3(metal::max(dist_3, 0.00000000000000000001));
-    strength = l.intensity / metal::max(dist_3 * dist_3, 0.00000000000000000001);
-    if (l.range > 0.0) {
-        float _e19 = strength;
-        strength = _e19 * (1.0 - metal::smoothstep(l.inner_range, l.range, dist_3));
-    }
-    float _e26 = shadow_deferred(position_1, normal_1, dir_5, dist_3, scratch, counters, _buffer_sizes);
-    float _e28 = strength;
-    return LightSample {dir_5, dist_3, (l.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
-}
-
-LightSample dispatch_light(
-    uint type_id_2,
-    uint offset_6,
-    metal::float3 position_2,
-    metal::float3 normal_2,
-    device type_4 const& params,
-    thread type_15& scratch,
-    device type_17& counters,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    PointLight _e3 = load_PointLight(offset_6, params, _buffer_sizes);
-    LightSample _e4 = point_light(_e3, position_2, normal_2, scratch, counters, _buffer_sizes);
-    return _e4;
-}
-
-metal::float3 scratch_load3f(
-    uint i_2,
-    thread type_15& scratch
-) {
-    uint _e5 = scratch.inner[metal::min(i_2, 21u)];
-    uint _e12 = scratch.inner[metal::min(i_2 + 1u, 21u)];
-    uint _e19 = scratch.inner[metal::min(i_2 + 2u, 21u)];
-    return as_type<metal::float3>(metal::uint3(_e5, _e12, _e19));
-}
-
 metal::float3 step_toward(
     metal::float3 x_1,
     metal::float3 s
 ) {
-    metal::uint3 bits_2 = as_type<metal::uint3>(x_1);
+    metal::uint3 bits_1 = as_type<metal::uint3>(x_1);
     metal::bool3 up_1 = (metal::sign(x_1) * metal::sign(s)) > metal::float3(0.0);
-    metal::float3 stepped = as_type<metal::float3>(metal::select(bits_2 - metal::uint3(1u), bits_2 + metal::uint3(1u), up_1));
+    metal::float3 stepped = as_type<metal::float3>(metal::select(bits_1 - metal::uint3(1u), bits_1 + metal::uint3(1u), up_1));
     metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s > metal::float3(0.0));
     metal::float3 moved = metal::select(stepped, from_zero, x_1 == metal::float3(0.0));
     return metal::select(x_1, moved, !((s == metal::float3(0.0))));
@@ -1249,45 +1148,45 @@ metal::float3 offset_origin(
 }
 
 Ray shadow_ray(
-    metal::float3 position_3,
-    metal::float3 normal_3,
-    metal::float3 dir_1,
-    float dist_1,
+    metal::float3 position,
+    metal::float3 normal,
+    metal::float3 dir,
+    float dist,
     thread uint& F32_INF,
     thread float& hit_error
 ) {
     metal::float3 n_4 = {};
     float tmax_4 = {};
-    n_4 = normal_3;
+    n_4 = normal;
     metal::float3 _e5 = n_4;
-    if (metal::dot(dir_1, _e5) < 0.0) {
+    if (metal::dot(dir, _e5) < 0.0) {
         metal::float3 _e9 = n_4;
         n_4 = -(_e9);
     }
-    metal::float3 a_6 = metal::abs(position_3);
+    metal::float3 a_6 = metal::abs(position);
     float _e13 = hit_error;
     float error_3 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_6.x, a_6.y), a_6.z));
     metal::float3 _e22 = n_4;
-    metal::float3 _e23 = offset_origin(position_3, _e22, error_3);
+    metal::float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = as_type<float>(_e25);
     uint _e29 = F32_INF;
-    if (dist_1 < as_type<float>(_e29)) {
-        metal::float3 light = position_3 + (dir_1 * metal::float3(dist_1));
-        float dd_1 = metal::dot(dir_1, dir_1);
-        float along_1 = metal::dot(light - _e23, dir_1) / dd_1;
-        metal::float3 l_1 = metal::abs(position_3) + metal::abs(dir_1 * metal::float3(dist_1));
+    if (dist < as_type<float>(_e29)) {
+        metal::float3 light = position + (dir * metal::float3(dist));
+        float dd_1 = metal::dot(dir, dir);
+        float along_1 = metal::dot(light - _e23, dir) / dd_1;
+        metal::float3 l_1 = metal::abs(position) + metal::abs(dir * metal::float3(dist));
         tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_1.x, l_1.y), l_1.z)) / metal::sqrt(dd_1));
     }
     float _e59 = tmax_4;
-    return Ray {_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u};
+    return Ray {_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u};
 }
 
 float shadow_query(
-    metal::float3 position_4,
-    metal::float3 normal_4,
-    metal::float3 dir_2,
-    float dist_2,
+    metal::float3 position_1,
+    metal::float3 normal_1,
+    metal::float3 dir_1,
+    float dist_1,
     constant FrameUniforms& frame,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1298,17 +1197,45 @@ float shadow_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray _e4 = shadow_ray(position_4, normal_4, dir_2, dist_2, F32_INF, hit_error);
+    Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
     Candidate _e6 = intersect_scene(_e4, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
     return (_e6.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
-LightSample sample_light_deferred(
-    uint i_3,
-    metal::float3 position_5,
-    metal::float3 normal_5,
+LightSample point_light(
+    PointLight l,
+    metal::float3 position_2,
+    metal::float3 normal_2,
     constant FrameUniforms& frame,
-    thread uint& rng_state,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float strength = {};
+    metal::float3 to_light = l.position - position_2;
+    float dist_2 = metal::length(to_light);
+    metal::float3 dir_4 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
+    strength = l.intensity / metal::max(dist_2 * dist_2, 0.00000000000000000001);
+    if (l.range > 0.0) {
+        float _e19 = strength;
+        strength = _e19 * (1.0 - metal::smoothstep(l.inner_range, l.range, dist_2));
+    }
+    float _e26 = shadow_query(position_2, normal_2, dir_4, dist_2, frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    float _e28 = strength;
+    return LightSample {dir_4, dist_2, (l.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
+}
+
+LightSample dispatch_light(
+    uint type_id_2,
+    uint offset_6,
+    metal::float3 position_3,
+    metal::float3 normal_3,
+    constant FrameUniforms& frame,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1317,77 +1244,37 @@ LightSample sample_light_deferred(
     thread type_12& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
-    thread type_15& scratch,
-    device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint after = {};
-    uint resolved = {};
-    uint bits_1 = {};
+    PointLight _e3 = load_PointLight(offset_6, params, _buffer_sizes);
+    LightSample _e4 = point_light(_e3, position_3, normal_3, frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    return _e4;
+}
+
+LightSample sample_light_query(
+    uint i_1,
+    metal::float3 position_4,
+    metal::float3 normal_4,
+    constant FrameUniforms& frame,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
     FrameUniforms frame_4 = frame;
-    if (i_3 >= frame_4.light_count) {
+    if (i_1 >= frame_4.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry = frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE);
-    uint type_id_6 = params[entry];
-    uint offset_11 = params[entry + 1u];
-    uint start = rng_state;
-    after = start;
-    resolved = 0u;
-    bits_1 = 0u;
-    scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)] = 0u;
-    scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
-    uint2 loop_bound_4 = uint2(4294967295u);
-    while(true) {
-        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        rng_state = start;
-        scratch.inner[metal::min(SCRATCH_QUERY, 21u)] = 0u;
-        scratch.inner[metal::min(SCRATCH_PENDING, 21u)] = 0u;
-        LightSample _e60 = dispatch_light(type_id_6, offset_11, position_5, normal_5, params, scratch, counters, _buffer_sizes);
-        uint _e66 = scratch.inner[metal::min(SCRATCH_PENDING, 21u)];
-        if (_e66 == 0u) {
-            uint _e69 = resolved;
-            if (_e69 > 0u) {
-                uint _e72 = after;
-                rng_state = _e72;
-            }
-            return _e60;
-        }
-        uint _e74 = resolved;
-        if (_e74 == 0u) {
-            uint _e78 = rng_state;
-            after = _e78;
-        }
-        uint _e79 = after;
-        rng_state = _e79;
-        metal::float3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY, scratch);
-        metal::float3 _e85 = scratch_load3f(SCRATCH_LIGHT_QUERY + 3u, scratch);
-        metal::float3 _e88 = scratch_load3f(SCRATCH_LIGHT_QUERY + 6u, scratch);
-        uint _e95 = scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 21u)];
-        float _e97 = shadow_query(_e82, _e85, _e88, as_type<float>(_e95), frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
-        uint _e99 = rng_state;
-        after = _e99;
-        if (!((_e97 == 0.0))) {
-            uint _e108 = scratch.inner[metal::min(SCRATCH_QUERY, 21u)];
-            uint _e109 = resolved;
-            if (_e108 == (_e109 + 1u)) {
-                uint _e113 = after;
-                rng_state = _e113;
-                return _e60;
-            }
-            uint _e115 = bits_1;
-            uint _e117 = resolved;
-            bits_1 = _e115 | (1u << (_e117 & 31u));
-        }
-        uint _e122 = resolved;
-        resolved = _e122 + 1u;
-        uint _e126 = bits_1;
-        scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
-        uint _e132 = resolved;
-        scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)] = _e132;
-    }
-    return LightSample {};
+    uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
+    uint _e22 = params[entry];
+    uint _e27 = params[entry + 1u];
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    return _e28;
 }
 
 metal::float3 lambert_shade(
@@ -1395,7 +1282,6 @@ metal::float3 lambert_shade(
     Ray ray_12,
     Hit hit_2,
     constant FrameUniforms& frame,
-    thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1404,32 +1290,30 @@ metal::float3 lambert_shade(
     thread type_12& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
-    thread type_15& scratch,
-    device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 color = {};
-    uint i_4 = {};
+    uint i_2 = {};
     metal::float3 _e3 = shading_normal(ray_12, hit_2);
     color = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
-    i_4 = 0u;
-    uint2 loop_bound_5 = uint2(4294967295u);
+    i_2 = 0u;
+    uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e30 = i_4;
-            i_4 = _e30 + 1u;
+            uint _e30 = i_2;
+            i_2 = _e30 + 1u;
         }
         loop_init_2 = false;
-        uint _e10 = i_4;
+        uint _e10 = i_2;
         if (_e10 >= _e8) {
             break;
         }
-        uint _e12 = i_4;
-        LightSample _e15 = sample_light_deferred(_e12, hit_2.position, hit_2.geometric_normal, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+        uint _e12 = i_2;
+        LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
         metal::float3 _e16 = color;
         color = _e16 + (((m.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
     }
@@ -1444,7 +1328,6 @@ metal::float3 dispatch_closest_hit(
     Hit hit_3,
     metal::float3 secondary,
     constant FrameUniforms& frame,
-    thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1453,12 +1336,10 @@ metal::float3 dispatch_closest_hit(
     thread type_12& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
-    thread type_15& scratch,
-    device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Lambert _e3 = load_Lambert(offset_7, params, _buffer_sizes);
-    metal::float3 _e4 = lambert_shade(_e3, ray_13, hit_3, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+    metal::float3 _e4 = lambert_shade(_e3, ray_13, hit_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e4;
 }
 
@@ -1466,7 +1347,6 @@ metal::float3 shade_direct(
     Ray ray_14,
     Candidate c_2,
     constant FrameUniforms& frame,
-    thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1476,13 +1356,11 @@ metal::float3 shade_direct(
     thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
-    device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_2.slot];
     Hit _e6 = finish_hit(ray_14, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e11;
 }
 
@@ -1527,36 +1405,35 @@ void dispatch_secondary_rays(
 }
 
 metal::float3 spawn_origin_at(
-    metal::float3 position_6,
-    metal::float3 normal_6,
+    metal::float3 position_5,
+    metal::float3 normal_5,
     float error_1,
-    metal::float3 dir_3
+    metal::float3 dir_2
 ) {
     metal::float3 n_5 = {};
-    n_5 = normal_6;
+    n_5 = normal_5;
     metal::float3 _e5 = n_5;
-    if (metal::dot(dir_3, _e5) < 0.0) {
+    if (metal::dot(dir_2, _e5) < 0.0) {
         metal::float3 _e9 = n_5;
         n_5 = -(_e9);
     }
     metal::float3 _e11 = n_5;
-    metal::float3 _e12 = offset_origin(position_6, _e11, error_1);
+    metal::float3 _e12 = offset_origin(position_5, _e11, error_1);
     return _e12;
 }
 
 metal::float3 spawn_origin(
     Hit hit_5,
     float error_2,
-    metal::float3 dir_4
+    metal::float3 dir_3
 ) {
-    metal::float3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
+    metal::float3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_3);
     return _e5;
 }
 
 metal::float3 trace(
     Ray camera_ray,
     constant FrameUniforms& frame,
-    thread uint& rng_state,
     device type_4 const& params,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1566,16 +1443,14 @@ metal::float3 trace(
     thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
-    device type_17& counters,
-    thread type_18& spawn_dirs,
-    thread type_18& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 radiance_2 = {};
     float t_2 = {};
-    type_19 stack = {};
+    type_16 stack = {};
     uint depth = {};
     Ray ray_18 = {};
     metal::float3 value = {};
@@ -1592,7 +1467,7 @@ metal::float3 trace(
     float t_3 = {};
     Hit hit_6 = {};
     Frame f = {};
-    uint i_5 = {};
+    uint i_3 = {};
     uint medium = {};
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
@@ -1604,7 +1479,7 @@ metal::float3 trace(
             metal::float3 _e17 = miss(camera_ray, frame, params, _buffer_sizes);
             radiance_2 = _e17;
         } else {
-            metal::float3 _e18 = shade_direct(camera_ray, _e4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, _buffer_sizes);
+            metal::float3 _e18 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, _buffer_sizes);
             radiance_2 = _e18;
             t_2 = _e4.t;
         }
@@ -1613,7 +1488,7 @@ metal::float3 trace(
         metal::float3 _e22 = through_medium(camera_ray, _e20, _e21, instances, _buffer_sizes);
         return _e22;
     }
-    stack = type_19 {};
+    stack = type_16 {};
     depth = 0u;
     ray_18 = camera_ray;
     value = metal::float3(0.0);
@@ -1627,10 +1502,10 @@ metal::float3 trace(
     s_sum = metal::float3(0.0);
     fresh = false;
     waiting = false;
-    uint2 loop_bound_6 = uint2(4294967295u);
+    uint2 loop_bound_5 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
@@ -1690,28 +1565,28 @@ metal::float3 trace(
                         Hit _e142 = hit_6;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_18 {}, type_18 {}, n_8, 0u};
-                        i_5 = 0u;
-                        uint2 loop_bound_7 = uint2(4294967295u);
+                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_15 {}, type_15 {}, n_8, 0u};
+                        i_3 = 0u;
+                        uint2 loop_bound_6 = uint2(4294967295u);
                         bool loop_init_3 = true;
                         while(true) {
-                            if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-                            loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+                            if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+                            loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                             if (!loop_init_3) {
-                                uint _e175 = i_5;
-                                i_5 = _e175 + 1u;
+                                uint _e175 = i_3;
+                                i_3 = _e175 + 1u;
                             }
                             loop_init_3 = false;
-                            uint _e155 = i_5;
+                            uint _e155 = i_3;
                             if (_e155 >= n_8) {
                                 break;
                             }
-                            uint _e158 = i_5;
-                            uint _e162 = i_5;
+                            uint _e158 = i_3;
+                            uint _e162 = i_3;
                             metal::float3 _e165 = spawn_dirs.inner[_e162];
                             f.dirs.inner[metal::min(_e158, 0u)] = _e165;
-                            uint _e167 = i_5;
-                            uint _e171 = i_5;
+                            uint _e167 = i_3;
+                            uint _e171 = i_3;
                             metal::float3 _e174 = spawn_weights.inner[_e171];
                             f.weights.inner[metal::min(_e167, 0u)] = _e174;
                         }
@@ -1728,7 +1603,7 @@ metal::float3 trace(
                     Ray _e191 = s_ray;
                     Hit _e192 = hit_6;
                     metal::float3 _e193 = s_sum;
-                    metal::float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+                    metal::float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
                     radiance_3 = _e194;
                 }
             }
@@ -1764,17 +1639,17 @@ metal::float3 trace(
         uint _e241 = stack.inner[metal::min(top_1, 3u)].next;
         uint _e246 = stack.inner[metal::min(top_1, 3u)].count;
         if (_e241 < _e246) {
-            uint i_7 = stack.inner[metal::min(top_1, 3u)].next;
-            stack.inner[metal::min(top_1, 3u)].next = i_7 + 1u;
+            uint i_4 = stack.inner[metal::min(top_1, 3u)].next;
+            stack.inner[metal::min(top_1, 3u)].next = i_4 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 3u)].ray;
             Hit hit_8 = stack.inner[metal::min(top_1, 3u)].hit;
-            metal::float3 dir_6 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_7, 0u)];
+            metal::float3 dir_5 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_4, 0u)];
             medium = parent.medium;
             float _e283 = stack.inner[metal::min(top_1, 3u)].error;
-            metal::float3 _e284 = spawn_origin(hit_8, _e283, dir_6);
+            metal::float3 _e284 = spawn_origin(hit_8, _e283, dir_5);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_18 = Ray {_e284, 0.0, dir_6, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_18 = Ray {_e284, 0.0, dir_5, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -1821,11 +1696,10 @@ void render_pixel(
     thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
-    device type_17& counters,
-    thread type_18& spawn_dirs,
-    thread type_18& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count,
+    device type_19& counters,
     device type_10& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1839,11 +1713,11 @@ void render_pixel(
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_1 = 0u;
-    uint2 loop_bound_8 = uint2(4294967295u);
+    uint2 loop_bound_7 = uint2(4294967295u);
     bool loop_init_4 = true;
     while(true) {
-        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_4) {
             uint _e46 = s_1;
             s_1 = _e46 + 1u;
@@ -1864,7 +1738,7 @@ void render_pixel(
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
         ray_19.medium = _e33;
         Ray _e34 = ray_19;
-        metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {
             metal::float3 _e38 = sum;
@@ -1908,11 +1782,10 @@ void render_invocation(
     thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
-    device type_17& counters,
-    thread type_18& spawn_dirs,
-    thread type_18& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count,
+    device type_19& counters,
     device type_10& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1921,7 +1794,7 @@ void render_invocation(
     if (metal::any(_e3 >= tile_3.extent)) {
         return;
     }
-    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
+    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }
 
@@ -1936,7 +1809,7 @@ struct renderInput {
 , device type_9 const& nodes [[buffer(2)]]
 , device type_10 const& triangles [[buffer(4)]]
 , device type_14 const& attributes [[buffer(5)]]
-, device type_17& counters [[buffer(9)]]
+, device type_19& counters [[buffer(9)]]
 , device type_10& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
@@ -1945,10 +1818,9 @@ struct renderInput {
     type_12 traversal_stack = {};
     float hit_error = {};
     uint ray_count = {};
-    type_15 scratch = {};
-    type_18 spawn_dirs = {};
-    type_18 spawn_weights = {};
+    type_15 spawn_dirs = {};
+    type_15 spawn_weights = {};
     uint spawn_count = {};
-    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }

@@ -150,13 +150,6 @@ const GAMMA_4_: f32 = 0.00000023841864f;
 const HAS_SECONDARY_RAYS: bool = false;
 const HAS_BACKGROUND: bool = false;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
-const SCRATCH_RESOLVED: u32 = 3u;
-const SCRATCH_LIGHT_BITS: u32 = 11u;
-const SCRATCH_QUERY: u32 = 2u;
-const SCRATCH_PENDING: u32 = 4u;
-const LIGHT_QUERIES: u32 = 32u;
-const COUNTER_SHADOW_OVERFLOW: u32 = 3u;
-const SCRATCH_LIGHT_QUERY: u32 = 12u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
 const INV_PI: f32 = 0.31830987f;
@@ -186,12 +179,11 @@ var<private> hit_error: f32;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
 var<private> ray_count: u32;
-var<private> scratch: array<u32, 22>;
-@group(0) @binding(9) 
-var<storage, read_write> counters: array<atomic<u32>>;
 var<private> spawn_dirs: array<vec3<f32>, 1>;
 var<private> spawn_weights: array<vec3<f32>, 1>;
 var<private> spawn_count: u32;
+@group(0) @binding(9) 
+var<storage, read_write> counters: array<atomic<u32>>;
 @group(0) @binding(8) 
 var<storage, read_write> accum: array<vec4<f32>>;
 
@@ -386,15 +378,15 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
     let cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
-    let v_2 = ((ax * cy) - (ay * cx));
+    let v_1 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
-    let outside = ((((u < 0f) || (v_2 < 0f)) || (w < 0f)) && (((u > 0f) || (v_2 > 0f)) || (w > 0f)));
-    let det = ((u + v_2) + w);
+    let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
+    let det = ((u + v_1) + w);
     let rcp = (1f / det);
-    let t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    let t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
     let hit_7 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_2 * rcp), (w * rcp)), hit_7);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_1 * rcp), (w * rcp)), hit_7);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -867,71 +859,10 @@ fn load_PointLight(offset_4: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn scratch_store3f(i_1: u32, v_1: vec3<f32>) {
-    let b_6 = bitcast<vec3<u32>>(v_1);
-    scratch[min(i_1, 21u)] = b_6.x;
-    scratch[min((i_1 + 1u), 21u)] = b_6.y;
-    scratch[min((i_1 + 2u), 21u)] = b_6.z;
-    return;
-}
-
-fn shadow_deferred(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
-    let i_6 = scratch[min(SCRATCH_QUERY, 21u)];
-    scratch[min(SCRATCH_QUERY, 21u)] = (i_6 + 1u);
-    let _e22 = scratch[min(SCRATCH_RESOLVED, 21u)];
-    if (i_6 < _e22) {
-        let _e29 = scratch[min(SCRATCH_LIGHT_BITS, 21u)];
-        return f32(((_e29 >> (i_6 & 31u)) & 1u));
-    }
-    let _e41 = scratch[min(SCRATCH_PENDING, 21u)];
-    if (_e41 != 0u) {
-        return 1f;
-    }
-    if (i_6 >= LIGHT_QUERIES) {
-        atomicAdd((&counters[min(COUNTER_SHADOW_OVERFLOW, 3u)]), 1u);
-        return 1f;
-    }
-    scratch_store3f(SCRATCH_LIGHT_QUERY, position);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)] = bitcast<u32>(dist);
-    scratch[min(SCRATCH_PENDING, 21u)] = 1u;
-    return 1f;
-}
-
-fn point_light(l: PointLight, position_1: vec3<f32>, normal_1: vec3<f32>) -> LightSample {
-    var strength: f32;
-
-    let to_light = (l.position - position_1);
-    let dist_3 = length(to_light);
-    let dir_5 = (to_light / vec3(max(dist_3, 0.00000000000000000001f)));
-    strength = (l.intensity / max((dist_3 * dist_3), 0.00000000000000000001f));
-    if (l.range > 0f) {
-        let _e19 = strength;
-        strength = (_e19 * (1f - smoothstep(l.inner_range, l.range, dist_3)));
-    }
-    let _e26 = shadow_deferred(position_1, normal_1, dir_5, dist_3);
-    let _e28 = strength;
-    return LightSample(dir_5, dist_3, ((l.color * vec3(_e28)) * vec3(_e26)), 0f);
-}
-
-fn dispatch_light(type_id_2: u32, offset_5: u32, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
-    let _e3 = load_PointLight(offset_5);
-    let _e4 = point_light(_e3, position_2, normal_2);
-    return _e4;
-}
-
-fn scratch_load3f(i_2: u32) -> vec3<f32> {
-    let _e5 = scratch[min(i_2, 21u)];
-    let _e12 = scratch[min((i_2 + 1u), 21u)];
-    let _e19 = scratch[min((i_2 + 2u), 21u)];
-    return bitcast<vec3<f32>>(vec3<u32>(_e5, _e12, _e19));
-}
-
 fn step_toward(x_1: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
-    let bits_2 = bitcast<vec3<u32>>(x_1);
+    let bits_1 = bitcast<vec3<u32>>(x_1);
     let up_1 = ((sign(x_1) * sign(s)) > vec3(0f));
-    let stepped = bitcast<vec3<f32>>(select((bits_2 - vec3(1u)), (bits_2 + vec3(1u)), up_1));
+    let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
     let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s > vec3(0f)));
     let moved = select(stepped, from_zero, (x_1 == vec3(0f)));
     return select(x_1, moved, !((s == vec3(0f))));
@@ -944,129 +875,95 @@ fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
     return _e17;
 }
 
-fn shadow_ray(position_3: vec3<f32>, normal_3: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> Ray {
+fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> Ray {
     var n_4: vec3<f32>;
     var tmax_4: f32;
 
-    n_4 = normal_3;
+    n_4 = normal;
     let _e5 = n_4;
-    if (dot(dir_1, _e5) < 0f) {
+    if (dot(dir, _e5) < 0f) {
         let _e9 = n_4;
         n_4 = -(_e9);
     }
-    let a_6 = abs(position_3);
+    let a_6 = abs(position);
     let _e13 = hit_error;
     let error_3 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
     let _e22 = n_4;
-    let _e23 = offset_origin(position_3, _e22, error_3);
+    let _e23 = offset_origin(position, _e22, error_3);
     let _e25 = F32_INF;
     tmax_4 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
-    if (dist_1 < bitcast<f32>(_e29)) {
-        let light = (position_3 + (dir_1 * vec3(dist_1)));
-        let dd_1 = dot(dir_1, dir_1);
-        let along_1 = (dot((light - _e23), dir_1) / dd_1);
-        let l_1 = (abs(position_3) + abs((dir_1 * vec3(dist_1))));
+    if (dist < bitcast<f32>(_e29)) {
+        let light = (position + (dir * vec3(dist)));
+        let dd_1 = dot(dir, dir);
+        let along_1 = (dot((light - _e23), dir) / dd_1);
+        let l_1 = (abs(position) + abs((dir * vec3(dist))));
         tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     let _e59 = tmax_4;
-    return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-fn shadow_query(position_4: vec3<f32>, normal_4: vec3<f32>, dir_2: vec3<f32>, dist_2: f32) -> f32 {
-    let _e4 = shadow_ray(position_4, normal_4, dir_2, dist_2);
+fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
+    let _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
     let _e6 = intersect_scene(_e4, true);
     return select(1f, 0f, (_e6.slot != NO_HIT));
 }
 
-fn sample_light_deferred(i_3: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
-    var after: u32;
-    var resolved: u32;
-    var bits_1: u32;
+fn point_light(l: PointLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
+    var strength: f32;
 
+    let to_light = (l.position - position_2);
+    let dist_2 = length(to_light);
+    let dir_4 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
+    strength = (l.intensity / max((dist_2 * dist_2), 0.00000000000000000001f));
+    if (l.range > 0f) {
+        let _e19 = strength;
+        strength = (_e19 * (1f - smoothstep(l.inner_range, l.range, dist_2)));
+    }
+    let _e26 = shadow_query(position_2, normal_2, dir_4, dist_2);
+    let _e28 = strength;
+    return LightSample(dir_4, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0f);
+}
+
+fn dispatch_light(type_id_2: u32, offset_5: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
+    let _e3 = load_PointLight(offset_5);
+    let _e4 = point_light(_e3, position_3, normal_3);
+    return _e4;
+}
+
+fn sample_light_query(i_1: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let frame_4 = frame;
-    if (i_3 >= frame_4.light_count) {
+    if (i_1 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
-    let type_id_6 = params[entry];
-    let offset_10 = params[(entry + 1u)];
-    let start = rng_state;
-    after = start;
-    resolved = 0u;
-    bits_1 = 0u;
-    scratch[min(SCRATCH_RESOLVED, 21u)] = 0u;
-    scratch[min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
-    loop {
-        rng_state = start;
-        scratch[min(SCRATCH_QUERY, 21u)] = 0u;
-        scratch[min(SCRATCH_PENDING, 21u)] = 0u;
-        let _e60 = dispatch_light(type_id_6, offset_10, position_5, normal_5);
-        let _e66 = scratch[min(SCRATCH_PENDING, 21u)];
-        if (_e66 == 0u) {
-            let _e69 = resolved;
-            if (_e69 > 0u) {
-                let _e72 = after;
-                rng_state = _e72;
-            }
-            return _e60;
-        }
-        let _e74 = resolved;
-        if (_e74 == 0u) {
-            let _e78 = rng_state;
-            after = _e78;
-        }
-        let _e79 = after;
-        rng_state = _e79;
-        let _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
-        let _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
-        let _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        let _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)];
-        let _e97 = shadow_query(_e82, _e85, _e88, bitcast<f32>(_e95));
-        let _e99 = rng_state;
-        after = _e99;
-        if !((_e97 == 0f)) {
-            let _e108 = scratch[min(SCRATCH_QUERY, 21u)];
-            let _e109 = resolved;
-            if (_e108 == (_e109 + 1u)) {
-                let _e113 = after;
-                rng_state = _e113;
-                return _e60;
-            }
-            let _e115 = bits_1;
-            let _e117 = resolved;
-            bits_1 = (_e115 | (1u << (_e117 & 31u)));
-        }
-        let _e122 = resolved;
-        resolved = (_e122 + 1u);
-        let _e126 = bits_1;
-        scratch[min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
-        let _e132 = resolved;
-        scratch[min(SCRATCH_RESOLVED, 21u)] = _e132;
-    }
-    return LightSample();
+    let entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
+    let _e22 = params[entry];
+    let _e27 = params[(entry + 1u)];
+    let _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    return _e28;
 }
 
 fn lambert_shade(m: Lambert, ray_11: Ray, hit_2: Hit) -> vec3<f32> {
     var color: vec3<f32>;
-    var i_4: u32;
+    var i_2: u32;
 
     let _e3 = shading_normal(ray_11, hit_2);
     color = vec3(0f);
     let _e8 = light_count_query();
-    i_4 = 0u;
+    i_2 = 0u;
     loop {
-        let _e10 = i_4;
+        let _e10 = i_2;
         if (_e10 >= _e8) {
             break;
         }
-        let _e12 = i_4;
-        let _e15 = sample_light_deferred(_e12, hit_2.position, hit_2.geometric_normal);
+        let _e12 = i_2;
+        let _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
         let _e16 = color;
         color = (_e16 + (((m.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0f))));
         continuing {
-            let _e30 = i_4;
-            i_4 = (_e30 + 1u);
+            let _e30 = i_2;
+            i_2 = (_e30 + 1u);
         }
     }
     let _e33 = color;
@@ -1109,22 +1006,22 @@ fn dispatch_secondary_rays(type_id_5: u32, offset_8: u32, ray_16: Ray, hit_4: Hi
     return;
 }
 
-fn spawn_origin_at(position_6: vec3<f32>, normal_6: vec3<f32>, error_1: f32, dir_3: vec3<f32>) -> vec3<f32> {
+fn spawn_origin_at(position_5: vec3<f32>, normal_5: vec3<f32>, error_1: f32, dir_2: vec3<f32>) -> vec3<f32> {
     var n_5: vec3<f32>;
 
-    n_5 = normal_6;
+    n_5 = normal_5;
     let _e5 = n_5;
-    if (dot(dir_3, _e5) < 0f) {
+    if (dot(dir_2, _e5) < 0f) {
         let _e9 = n_5;
         n_5 = -(_e9);
     }
     let _e11 = n_5;
-    let _e12 = offset_origin(position_6, _e11, error_1);
+    let _e12 = offset_origin(position_5, _e11, error_1);
     return _e12;
 }
 
-fn spawn_origin(hit_5: Hit, error_2: f32, dir_4: vec3<f32>) -> vec3<f32> {
-    let _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
+fn spawn_origin(hit_5: Hit, error_2: f32, dir_3: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_3);
     return _e5;
 }
 
@@ -1148,7 +1045,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_3: f32;
     var hit_6: Hit;
     var f: Frame;
-    var i_5: u32;
+    var i_3: u32;
     var medium: u32;
 
     if !(HAS_SECONDARY_RAYS) {
@@ -1245,23 +1142,23 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                         let _e143 = s_error;
                         let _e145 = s_c.slot;
                         f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
-                        i_5 = 0u;
+                        i_3 = 0u;
                         loop {
-                            let _e155 = i_5;
+                            let _e155 = i_3;
                             if (_e155 >= n_8) {
                                 break;
                             }
-                            let _e158 = i_5;
-                            let _e162 = i_5;
+                            let _e158 = i_3;
+                            let _e162 = i_3;
                             let _e165 = spawn_dirs[_e162];
                             f.dirs[min(_e158, 0u)] = _e165;
-                            let _e167 = i_5;
-                            let _e171 = i_5;
+                            let _e167 = i_3;
+                            let _e171 = i_3;
                             let _e174 = spawn_weights[_e171];
                             f.weights[min(_e167, 0u)] = _e174;
                             continuing {
-                                let _e175 = i_5;
-                                i_5 = (_e175 + 1u);
+                                let _e175 = i_3;
+                                i_3 = (_e175 + 1u);
                             }
                         }
                         let _e178 = depth;
@@ -1313,17 +1210,17 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e241 = stack[min(top_1, 0u)].next;
         let _e246 = stack[min(top_1, 0u)].count;
         if (_e241 < _e246) {
-            let i_7 = stack[min(top_1, 0u)].next;
-            stack[min(top_1, 0u)].next = (i_7 + 1u);
+            let i_4 = stack[min(top_1, 0u)].next;
+            stack[min(top_1, 0u)].next = (i_4 + 1u);
             let parent = stack[min(top_1, 0u)].ray;
             let hit_8 = stack[min(top_1, 0u)].hit;
-            let dir_6 = stack[min(top_1, 0u)].dirs[min(i_7, 0u)];
+            let dir_5 = stack[min(top_1, 0u)].dirs[min(i_4, 0u)];
             medium = parent.medium;
             let _e283 = stack[min(top_1, 0u)].error;
-            let _e284 = spawn_origin(hit_8, _e283, dir_6);
+            let _e284 = spawn_origin(hit_8, _e283, dir_5);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_17 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_17 = Ray(_e284, 0f, dir_5, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack[min(top_1, 0u)].ray;
             s_ray = _e299;

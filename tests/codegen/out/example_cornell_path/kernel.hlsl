@@ -180,13 +180,6 @@ static const float GAMMA_4_ = 2.3841864e-7;
 static const bool HAS_SECONDARY_RAYS = true;
 static const bool HAS_BACKGROUND = false;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
-static const uint SCRATCH_RESOLVED = 3u;
-static const uint SCRATCH_LIGHT_BITS = 11u;
-static const uint SCRATCH_QUERY = 2u;
-static const uint SCRATCH_PENDING = 4u;
-static const uint LIGHT_QUERIES = 32u;
-static const uint COUNTER_SHADOW_OVERFLOW = 3u;
-static const uint SCRATCH_LIGHT_QUERY = 12u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
 static const float INV_PI = 0.31830987;
@@ -209,11 +202,10 @@ static uint traversal_stack[71] = (uint[71])0;
 static float hit_error = (float)0;
 ByteAddressBuffer attributes : register(t5);
 static uint ray_count = (uint)0;
-static uint scratch[22] = (uint[22])0;
-RWByteAddressBuffer counters : register(u9);
 static float3 spawn_dirs[1] = (float3[1])0;
 static float3 spawn_weights[1] = (float3[1])0;
 static uint spawn_count = (uint)0;
+RWByteAddressBuffer counters : register(u9);
 RWByteAddressBuffer accum : register(u8);
 
 uint2 naga_div(uint2 lhs, uint2 rhs) {
@@ -491,15 +483,15 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float cx = (c_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float cy = (c_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u_1 = ((cx * by) - (cy * bx));
-    float v_2 = ((ax * cy) - (ay * cx));
+    float v_1 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
-    bool outside = ((((u_1 < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
-    float det = ((u_1 + v_2) + w);
+    bool outside = ((((u_1 < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u_1 > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
+    float det = ((u_1 + v_1) + w);
     float rcp_ = (1.0 / det);
-    float t_3 = ((((u_1 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_4[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_3 = ((((u_1 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_4[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_7 ? float3(t_3, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_7 ? float3(t_3, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -1132,91 +1124,11 @@ QuadLight load_QuadLight(uint offset_5)
     return quadlight;
 }
 
-void scratch_store3f(uint i_1, float3 v_1)
-{
-    uint3 b_6 = asuint(v_1);
-    scratch[min(uint(min(i_1, 21u)), 21u)] = b_6.x;
-    scratch[min(uint(min((i_1 + 1u), 21u)), 21u)] = b_6.y;
-    scratch[min(uint(min((i_1 + 2u), 21u)), 21u)] = b_6.z;
-    return;
-}
-
-float shadow_deferred(float3 position, float3 normal, float3 dir, float dist)
-{
-    uint i_5 = scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)];
-    scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)] = (i_5 + 1u);
-    uint _e22 = scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)];
-    if ((i_5 < _e22)) {
-        uint _e29 = scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)];
-        return float(((_e29 >> (i_5 & 31u)) & 1u));
-    }
-    uint _e41 = scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)];
-    if ((_e41 != 0u)) {
-        return 1.0;
-    }
-    if ((i_5 >= LIGHT_QUERIES)) {
-        counters.InterlockedAdd(min(COUNTER_SHADOW_OVERFLOW, 3u)*4, 1u);
-        return 1.0;
-    }
-    scratch_store3f(SCRATCH_LIGHT_QUERY, position);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 21u)), 21u)] = asuint(dist);
-    scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)] = 1u;
-    return 1.0;
-}
-
-LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
-    LightSample ret = (LightSample)0;
-    ret.dir = arg0;
-    ret.dist = arg1;
-    ret.radiance = arg2;
-    ret.pdf = arg3;
-    return ret;
-}
-
-LightSample quad_light(QuadLight l, float3 position_1, float3 normal_1)
-{
-    float3 c_7 = cross(l.edge_u, l.edge_v);
-    float area = length(c_7);
-    const float2 _e7 = rand2_next();
-    float3 to_light = (((l.corner + (l.edge_u * (_e7.x).xxx)) + (l.edge_v * (_e7.y).xxx)) - position_1);
-    float dist2_ = dot(to_light, to_light);
-    float dist_3 = sqrt(dist2_);
-    float3 dir_8 = (to_light / (max(dist_3, 1e-20)).xxx);
-    float cos_light = (-(dot(dir_8, c_7)) / max(area, 1e-30));
-    if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
-        const LightSample lightsample = ConstructLightSample(dir_8, dist_3, (0.0).xxx, 0.0);
-        return lightsample;
-    }
-    const float _e42 = shadow_deferred(position_1, normal_1, dir_8, dist_3);
-    float strength = (((l.intensity * cos_light) * area) / dist2_);
-    float pdf_1 = ((l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0);
-    const LightSample lightsample_1 = ConstructLightSample(dir_8, dist_3, ((l.color * (strength).xxx) * (_e42).xxx), pdf_1);
-    return lightsample_1;
-}
-
-LightSample dispatch_light(uint type_id_2, uint offset_6, float3 position_2, float3 normal_2)
-{
-    const QuadLight _e3 = load_QuadLight(offset_6);
-    const LightSample _e4 = quad_light(_e3, position_2, normal_2);
-    const LightSample lightsample_2 = _e4;
-    return lightsample_2;
-}
-
-float3 scratch_load3f(uint i_2)
-{
-    uint _e5 = scratch[min(uint(min(i_2, 21u)), 21u)];
-    uint _e12 = scratch[min(uint(min((i_2 + 1u), 21u)), 21u)];
-    uint _e19 = scratch[min(uint(min((i_2 + 2u), 21u)), 21u)];
-    return asfloat(uint3(_e5, _e12, _e19));
-}
-
 float3 step_toward(float3 x_1, float3 s)
 {
-    uint3 bits_2 = asuint(x_1);
+    uint3 bits_1 = asuint(x_1);
     bool3 up_1 = ((sign(x_1) * sign(s)) > (0.0).xxx);
-    float3 stepped = asfloat((up_1 ? (bits_2 + (1u).xxx) : (bits_2 - (1u).xxx)));
+    float3 stepped = asfloat((up_1 ? (bits_1 + (1u).xxx) : (bits_1 - (1u).xxx)));
     float3 from_zero = ((s > (0.0).xxx) ? (1.1754944e-38).xxx : (-1.1754944e-38).xxx);
     float3 moved = ((x_1 == (0.0).xxx) ? from_zero : stepped);
     return (!((s == (0.0).xxx)) ? moved : x_1);
@@ -1230,122 +1142,95 @@ float3 offset_origin(float3 p_5, float3 n_3, float error)
     return _e17;
 }
 
-Ray shadow_ray(float3 position_3, float3 normal_3, float3 dir_1, float dist_1)
+Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
 {
     float3 n_4 = (float3)0;
     float tmax_4 = (float)0;
 
-    n_4 = normal_3;
+    n_4 = normal;
     float3 _e5 = n_4;
-    if ((dot(dir_1, _e5) < 0.0)) {
+    if ((dot(dir, _e5) < 0.0)) {
         float3 _e9 = n_4;
         n_4 = -(_e9);
     }
-    float3 a_6 = abs(position_3);
+    float3 a_6 = abs(position);
     float _e13 = hit_error;
     float error_3 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
     float3 _e22 = n_4;
-    const float3 _e23 = offset_origin(position_3, _e22, error_3);
+    const float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = asfloat(_e25);
     uint _e29 = F32_INF;
-    if ((dist_1 < asfloat(_e29))) {
-        float3 light = (position_3 + (dir_1 * (dist_1).xxx));
-        float dd_1 = dot(dir_1, dir_1);
-        float along_1 = (dot((light - _e23), dir_1) / dd_1);
-        float3 l_2 = (abs(position_3) + abs((dir_1 * (dist_1).xxx)));
+    if ((dist < asfloat(_e29))) {
+        float3 light = (position + (dir * (dist).xxx));
+        float dd_1 = dot(dir, dir);
+        float along_1 = (dot((light - _e23), dir) / dd_1);
+        float3 l_2 = (abs(position) + abs((dir * (dist).xxx)));
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_23 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    const Ray ray_23 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
     return ray_23;
 }
 
-float shadow_query(float3 position_4, float3 normal_4, float3 dir_2, float dist_2)
+float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
 {
-    const Ray _e4 = shadow_ray(position_4, normal_4, dir_2, dist_2);
+    const Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
     const Candidate _e6 = intersect_scene(_e4, true);
     return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample ZeroValueLightSample() {
-    return (LightSample)0;
+LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
+    LightSample ret = (LightSample)0;
+    ret.dir = arg0;
+    ret.dist = arg1;
+    ret.radiance = arg2;
+    ret.pdf = arg3;
+    return ret;
 }
 
-LightSample sample_light_deferred(uint i_3, float3 position_5, float3 normal_5)
+LightSample quad_light(QuadLight l, float3 position_2, float3 normal_2)
 {
-    uint after = (uint)0;
-    uint resolved = (uint)0;
-    uint bits_1 = (uint)0;
+    float3 c_7 = cross(l.edge_u, l.edge_v);
+    float area = length(c_7);
+    const float2 _e7 = rand2_next();
+    float3 to_light = (((l.corner + (l.edge_u * (_e7.x).xxx)) + (l.edge_v * (_e7.y).xxx)) - position_2);
+    float dist2_ = dot(to_light, to_light);
+    float dist_2 = sqrt(dist2_);
+    float3 dir_7 = (to_light / (max(dist_2, 1e-20)).xxx);
+    float cos_light = (-(dot(dir_7, c_7)) / max(area, 1e-30));
+    if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
+        const LightSample lightsample = ConstructLightSample(dir_7, dist_2, (0.0).xxx, 0.0);
+        return lightsample;
+    }
+    const float _e42 = shadow_query(position_2, normal_2, dir_7, dist_2);
+    float strength = (((l.intensity * cos_light) * area) / dist2_);
+    float pdf_1 = ((l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0);
+    const LightSample lightsample_1 = ConstructLightSample(dir_7, dist_2, ((l.color * (strength).xxx) * (_e42).xxx), pdf_1);
+    return lightsample_1;
+}
 
+LightSample dispatch_light(uint type_id_2, uint offset_6, float3 position_3, float3 normal_3)
+{
+    const QuadLight _e3 = load_QuadLight(offset_6);
+    const LightSample _e4 = quad_light(_e3, position_3, normal_3);
+    const LightSample lightsample_2 = _e4;
+    return lightsample_2;
+}
+
+LightSample sample_light_query(uint i_1, float3 position_4, float3 normal_4)
+{
     FrameUniforms frame_4 = frame;
-    if ((i_3 >= frame_4.light_count)) {
+    if ((i_1 >= frame_4.light_count)) {
         const LightSample lightsample_3 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_3;
     }
-    uint entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
-    uint type_id_6 = asuint(params.Load(entry*4));
-    uint offset_11 = asuint(params.Load((entry + 1u)*4));
-    uint start = rng_state;
-    after = start;
-    resolved = 0u;
-    bits_1 = 0u;
-    scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)] = 0u;
-    scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)] = 0u;
-    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-    while(true) {
-        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        rng_state = start;
-        scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)] = 0u;
-        scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)] = 0u;
-        const LightSample _e60 = dispatch_light(type_id_6, offset_11, position_5, normal_5);
-        uint _e66 = scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)];
-        if ((_e66 == 0u)) {
-            uint _e69 = resolved;
-            if ((_e69 > 0u)) {
-                uint _e72 = after;
-                rng_state = _e72;
-            }
-            const LightSample lightsample_4 = _e60;
-            return lightsample_4;
-        }
-        uint _e74 = resolved;
-        if ((_e74 == 0u)) {
-            uint _e78 = rng_state;
-            after = _e78;
-        }
-        uint _e79 = after;
-        rng_state = _e79;
-        const float3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
-        const float3 _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
-        const float3 _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        uint _e95 = scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 21u)), 21u)];
-        const float _e97 = shadow_query(_e82, _e85, _e88, asfloat(_e95));
-        uint _e99 = rng_state;
-        after = _e99;
-        if (!((_e97 == 0.0))) {
-            uint _e108 = scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)];
-            uint _e109 = resolved;
-            if ((_e108 == (_e109 + 1u))) {
-                uint _e113 = after;
-                rng_state = _e113;
-                const LightSample lightsample_5 = _e60;
-                return lightsample_5;
-            }
-            uint _e115 = bits_1;
-            uint _e117 = resolved;
-            bits_1 = (_e115 | (1u << (_e117 & 31u)));
-        }
-        uint _e122 = resolved;
-        resolved = (_e122 + 1u);
-        uint _e126 = bits_1;
-        scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)] = _e126;
-        uint _e132 = resolved;
-        scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)] = _e132;
-    }
-    const LightSample lightsample_6 = ZeroValueLightSample();
-    return lightsample_6;
+    uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
+    uint _e22 = asuint(params.Load(entry*4));
+    uint _e27 = asuint(params.Load((entry + 1u)*4));
+    const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    const LightSample lightsample_4 = _e28;
+    return lightsample_4;
 }
 
 float mis_weight(float p_6, float other)
@@ -1374,28 +1259,28 @@ float mis_light_weight(LightSample l_1, float bsdf_pdf)
 float3 path_diffuse_shade(PathDiffuse m_1, Ray ray_12, Hit hit_2, float3 secondary)
 {
     float3 direct = (float3)0;
-    uint i_4 = (uint)0;
+    uint i_2 = (uint)0;
 
     float3 n_10 = faceforward(hit_2.normal, ray_12.dir, hit_2.geometric_normal);
     direct = (0.0).xxx;
     const uint _e12 = light_count_query();
-    i_4 = 0u;
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    i_2 = 0u;
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e33 = i_4;
-            i_4 = (_e33 + 1u);
+            uint _e33 = i_2;
+            i_2 = (_e33 + 1u);
         }
         loop_init_2 = false;
-        uint _e14 = i_4;
+        uint _e14 = i_2;
         if ((_e14 >= _e12)) {
             break;
         }
-        uint _e16 = i_4;
-        const LightSample _e19 = sample_light_deferred(_e16, hit_2.position, hit_2.geometric_normal);
+        uint _e16 = i_2;
+        const LightSample _e19 = sample_light_query(_e16, hit_2.position, hit_2.geometric_normal);
         float c_8 = max(dot(n_10, _e19.dir), 0.0);
         float3 _e24 = direct;
         const float _e28 = mis_light_weight(_e19, (c_8 * INV_PI));
@@ -1458,9 +1343,9 @@ float3x3 orthonormal_basis(float3 n_5)
 {
     float sign_ = (((asuint(n_5.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
     float a_7 = (-1.0 / (sign_ + n_5.z));
-    float b_7 = ((n_5.x * n_5.y) * a_7);
+    float b_6 = ((n_5.x * n_5.y) * a_7);
     float _e16 = (sign_ * n_5.x);
-    return float3x3(float3((1.0 + ((_e16 * n_5.x) * a_7)), (sign_ * b_7), -(_e16)), float3(b_7, (sign_ + ((n_5.y * n_5.y) * a_7)), -(n_5.y)), n_5);
+    return float3x3(float3((1.0 + ((_e16 * n_5.x) * a_7)), (sign_ * b_6), -(_e16)), float3(b_6, (sign_ + ((n_5.y * n_5.y) * a_7)), -(n_5.y)), n_5);
 }
 
 float3 sample_cosine_hemisphere(float3 n_6, float2 u)
@@ -1472,17 +1357,17 @@ float3 sample_cosine_hemisphere(float3 n_6, float2 u)
     return mul(local, _e17);
 }
 
-float3 mis_bounce_dir(float3 dir_3, float pdf)
+float3 mis_bounce_dir(float3 dir_2, float pdf)
 {
     float x_3 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
-    return (dir_3 * ((MIS_BOUNCE_LENGTH + x_3)).xxx);
+    return (dir_2 * ((MIS_BOUNCE_LENGTH + x_3)).xxx);
 }
 
-void rt_spawn(float3 dir_4, float3 weight)
+void rt_spawn(float3 dir_3, float3 weight)
 {
     uint _e3 = spawn_count;
     if ((_e3 < 1u)) {
-        spawn_dirs[min(uint(_e3), 0u)] = dir_4;
+        spawn_dirs[min(uint(_e3), 0u)] = dir_3;
         spawn_weights[min(uint(_e3), 0u)] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1520,24 +1405,24 @@ void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_18, Hit hit_
     return;
 }
 
-float3 spawn_origin_at(float3 position_6, float3 normal_6, float error_1, float3 dir_5)
+float3 spawn_origin_at(float3 position_5, float3 normal_5, float error_1, float3 dir_4)
 {
     float3 n_7 = (float3)0;
 
-    n_7 = normal_6;
+    n_7 = normal_5;
     float3 _e5 = n_7;
-    if ((dot(dir_5, _e5) < 0.0)) {
+    if ((dot(dir_4, _e5) < 0.0)) {
         float3 _e9 = n_7;
         n_7 = -(_e9);
     }
     float3 _e11 = n_7;
-    const float3 _e12 = offset_origin(position_6, _e11, error_1);
+    const float3 _e12 = offset_origin(position_5, _e11, error_1);
     return _e12;
 }
 
-float3 spawn_origin(Hit hit_6, float error_2, float3 dir_6)
+float3 spawn_origin(Hit hit_6, float error_2, float3 dir_5)
 {
-    const float3 _e5 = spawn_origin_at(hit_6.position, hit_6.geometric_normal, error_2, dir_6);
+    const float3 _e5 = spawn_origin_at(hit_6.position, hit_6.geometric_normal, error_2, dir_5);
     return _e5;
 }
 
@@ -1545,7 +1430,7 @@ PathState path_step(PathState s_1, Candidate c_3)
 {
     PathState out_ = (PathState)0;
     bool spawned = (bool)0;
-    float3 dir_7 = (float3)0;
+    float3 dir_6 = (float3)0;
     float3 weight_2 = (float3)0;
     float3 beta = (float3)0;
 
@@ -1564,7 +1449,7 @@ PathState path_step(PathState s_1, Candidate c_3)
     const Hit _e22 = finish_hit(ray_24, c_3);
     float error_4 = hit_error;
     spawned = false;
-    dir_7 = (0.0).xxx;
+    dir_6 = (0.0).xxx;
     weight_2 = (0.0).xxx;
     if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_24.depth < MAX_DEPTH))) {
         spawn_count = 0u;
@@ -1573,7 +1458,7 @@ PathState path_step(PathState s_1, Candidate c_3)
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
             float3 _e56 = spawn_dirs[0u];
-            dir_7 = _e56;
+            dir_6 = _e56;
             float3 _e60 = spawn_weights[0u];
             weight_2 = _e60;
         }
@@ -1609,9 +1494,9 @@ PathState path_step(PathState s_1, Candidate c_3)
     }
     float3 _e109 = beta;
     out_.beta = _e109;
-    float3 _e111 = dir_7;
+    float3 _e111 = dir_6;
     const float3 _e112 = spawn_origin(_e22, error_4, _e111);
-    float3 _e114 = dir_7;
+    float3 _e114 = dir_6;
     uint _e116 = F32_INF;
     out_.ray = ConstructRay(_e112, 0.0, _e114, asfloat(_e116), (ray_24.depth + 1u), RAY_SECONDARY, ray_24.medium);
     out_.live = true;
@@ -1634,10 +1519,10 @@ float3 trace_path(Ray camera_ray)
     PathState s_2 = (PathState)0;
 
     s_2 = ConstructPathState(camera_ray, (1.0).xxx, (0.0).xxx, true);
-    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         PathState _e8 = s_2;
         Ray _e10 = s_2.ray;
         const Candidate _e12 = intersect_scene(_e10, false);
@@ -1704,11 +1589,11 @@ void render_pixel(uint2 pixel_3)
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_3 = 0u;
-    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
-        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         if (!loop_init_3) {
             uint _e46 = s_3;
             s_3 = (_e46 + 1u);

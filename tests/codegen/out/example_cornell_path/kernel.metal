@@ -10,8 +10,8 @@ struct _mslBufferSizes {
     uint size6;
     uint size7;
     uint size10;
-    uint size13;
-    uint size17;
+    uint size15;
+    uint size16;
 };
 
 struct TileParams {
@@ -135,9 +135,6 @@ struct LightSample {
     metal::packed_float3 radiance;
     float pdf;
 };
-struct type_15 {
-    uint inner[22];
-};
 struct QuadLight {
     metal::float3 corner;
     metal::float3 edge_u;
@@ -147,7 +144,6 @@ struct QuadLight {
     uint lamp;
     char _pad6[12];
 };
-typedef metal::atomic_uint type_17[1];
 struct PathState {
     Ray ray;
     metal::float3 beta;
@@ -155,9 +151,10 @@ struct PathState {
     bool live;
     char _pad4[3];
 };
-struct type_18 {
+struct type_15 {
     metal::float3 inner[1];
 };
+typedef metal::atomic_uint type_19[1];
 constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint NO_HIT = 4294967295u;
@@ -179,13 +176,6 @@ constant float GAMMA_4_ = 0.00000023841864;
 constant bool HAS_SECONDARY_RAYS = true;
 constant bool HAS_BACKGROUND = false;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
-constant uint SCRATCH_RESOLVED = 3u;
-constant uint SCRATCH_LIGHT_BITS = 11u;
-constant uint SCRATCH_QUERY = 2u;
-constant uint SCRATCH_PENDING = 4u;
-constant uint LIGHT_QUERIES = 32u;
-constant uint COUNTER_SHADOW_OVERFLOW = 3u;
-constant uint SCRATCH_LIGHT_QUERY = 12u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
 constant float INV_PI = 0.31830987;
@@ -472,15 +462,15 @@ metal::float3 hit_triangle(
     float cx = c_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_5[metal::min(r_1.kz, 2u)]);
     float cy = c_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_5[metal::min(r_1.kz, 2u)]);
     float u_1 = (cx * by) - (cy * bx);
-    float v_2 = (ax * cy) - (ay * cx);
+    float v_1 = (ax * cy) - (ay * cx);
     float w = (bx * ay) - (by * ax);
-    bool outside = (((u_1 < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w > 0.0));
-    float det = (u_1 + v_2) + w;
+    bool outside = (((u_1 < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u_1 > 0.0) || (v_1 > 0.0)) || (w > 0.0));
+    float det = (u_1 + v_1) + w;
     float rcp = 1.0 / det;
-    float t_3 = (((u_1 * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_4[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_3 = (((u_1 * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_4[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_7 ? metal::float3(t_3, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_7 ? metal::float3(t_3, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -1122,109 +1112,13 @@ QuadLight load_QuadLight(
     return QuadLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), metal::float3(as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)), metal::float3(as_type<float>(_e62), as_type<float>(_e68), as_type<float>(_e74)), as_type<float>(_e81), _e87};
 }
 
-void scratch_store3f(
-    uint i_1,
-    metal::float3 v_1,
-    thread type_15& scratch
-) {
-    metal::uint3 b_6 = as_type<metal::uint3>(v_1);
-    scratch.inner[metal::min(i_1, 21u)] = b_6.x;
-    scratch.inner[metal::min(i_1 + 1u, 21u)] = b_6.y;
-    scratch.inner[metal::min(i_1 + 2u, 21u)] = b_6.z;
-    return;
-}
-
-float shadow_deferred(
-    metal::float3 position,
-    metal::float3 normal,
-    metal::float3 dir,
-    float dist,
-    thread type_15& scratch,
-    device type_17& counters,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint i_5 = scratch.inner[metal::min(SCRATCH_QUERY, 21u)];
-    scratch.inner[metal::min(SCRATCH_QUERY, 21u)] = i_5 + 1u;
-    uint _e22 = scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)];
-    if (i_5 < _e22) {
-        uint _e29 = scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)];
-        return static_cast<float>((_e29 >> (i_5 & 31u)) & 1u);
-    }
-    uint _e41 = scratch.inner[metal::min(SCRATCH_PENDING, 21u)];
-    if (_e41 != 0u) {
-        return 1.0;
-    }
-    if (i_5 >= LIGHT_QUERIES) {
-        metal::atomic_fetch_add_explicit(&counters[metal::min(COUNTER_SHADOW_OVERFLOW, 3u)], 1u, metal::memory_order_relaxed);
-        return 1.0;
-    }
-    scratch_store3f(SCRATCH_LIGHT_QUERY, position, scratch);
-    scratch_store3f(SCRATCH_LIGHT_QUERY + 3u, normal, scratch);
-    scratch_store3f(SCRATCH_LIGHT_QUERY + 6u, dir, scratch);
-    scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 21u)] = as_type<uint>(dist);
-    scratch.inner[metal::min(SCRATCH_PENDING, 21u)] = 1u;
-    return 1.0;
-}
-
-LightSample quad_light(
-    QuadLight l,
-    metal::float3 position_1,
-    metal::float3 normal_1,
-    thread uint& rng_state,
-    thread type_15& scratch,
-    device type_17& counters,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    metal::float3 c_7 = metal::cross(l.edge_u, l.edge_v);
-    float area = metal::length(c_7);
-    metal::float2 _e7 = rand2_next(rng_state);
-    metal::float3 to_light = ((l.corner + (l.edge_u * metal::float3(_e7.x))) + (l.edge_v * metal::float3(_e7.y))) - position_1;
-    float dist2_ = metal::dot(to_light, to_light);
-    float dist_3 = metal::sqrt(dist2_);
-    metal::float3 dir_8 = to_light / metal::float3(metal::max(dist_3, 0.00000000000000000001));
-    float cos_light = -(metal::dot(dir_8, c_7)) / metal::max(area, 0.000000000000000000000000000001);
-    if (!((cos_light > 0.0)) || !((dist2_ > 0.0))) {
-        return LightSample {dir_8, dist_3, metal::float3(0.0), 0.0};
-    }
-    float _e42 = shadow_deferred(position_1, normal_1, dir_8, dist_3, scratch, counters, _buffer_sizes);
-    float strength = ((l.intensity * cos_light) * area) / dist2_;
-    float pdf_1 = (l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0;
-    return LightSample {dir_8, dist_3, (l.color * metal::float3(strength)) * metal::float3(_e42), pdf_1};
-}
-
-LightSample dispatch_light(
-    uint type_id_2,
-    uint offset_6,
-    metal::float3 position_2,
-    metal::float3 normal_2,
-    thread uint& rng_state,
-    device type_4 const& params,
-    thread type_15& scratch,
-    device type_17& counters,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    QuadLight _e3 = load_QuadLight(offset_6, params, _buffer_sizes);
-    LightSample _e4 = quad_light(_e3, position_2, normal_2, rng_state, scratch, counters, _buffer_sizes);
-    return _e4;
-}
-
-metal::float3 scratch_load3f(
-    uint i_2,
-    thread type_15& scratch
-) {
-    uint _e5 = scratch.inner[metal::min(i_2, 21u)];
-    uint _e12 = scratch.inner[metal::min(i_2 + 1u, 21u)];
-    uint _e19 = scratch.inner[metal::min(i_2 + 2u, 21u)];
-    return as_type<metal::float3>(metal::uint3(_e5, _e12, _e19));
-}
-
 metal::float3 step_toward(
     metal::float3 x_1,
     metal::float3 s
 ) {
-    metal::uint3 bits_2 = as_type<metal::uint3>(x_1);
+    metal::uint3 bits_1 = as_type<metal::uint3>(x_1);
     metal::bool3 up_1 = (metal::sign(x_1) * metal::sign(s)) > metal::float3(0.0);
-    metal::float3 stepped = as_type<metal::float3>(metal::select(bits_2 - metal::uint3(1u), bits_2 + metal::uint3(1u), up_1));
+    metal::float3 stepped = as_type<metal::float3>(metal::select(bits_1 - metal::uint3(1u), bits_1 + metal::uint3(1u), up_1));
     metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s > metal::float3(0.0));
     metal::float3 moved = metal::select(stepped, from_zero, x_1 == metal::float3(0.0));
     return metal::select(x_1, moved, !((s == metal::float3(0.0))));
@@ -1242,45 +1136,45 @@ metal::float3 offset_origin(
 }
 
 Ray shadow_ray(
-    metal::float3 position_3,
-    metal::float3 normal_3,
-    metal::float3 dir_1,
-    float dist_1,
+    metal::float3 position,
+    metal::float3 normal,
+    metal::float3 dir,
+    float dist,
     thread uint& F32_INF,
     thread float& hit_error
 ) {
     metal::float3 n_4 = {};
     float tmax_4 = {};
-    n_4 = normal_3;
+    n_4 = normal;
     metal::float3 _e5 = n_4;
-    if (metal::dot(dir_1, _e5) < 0.0) {
+    if (metal::dot(dir, _e5) < 0.0) {
         metal::float3 _e9 = n_4;
         n_4 = -(_e9);
     }
-    metal::float3 a_6 = metal::abs(position_3);
+    metal::float3 a_6 = metal::abs(position);
     float _e13 = hit_error;
     float error_3 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_6.x, a_6.y), a_6.z));
     metal::float3 _e22 = n_4;
-    metal::float3 _e23 = offset_origin(position_3, _e22, error_3);
+    metal::float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = as_type<float>(_e25);
     uint _e29 = F32_INF;
-    if (dist_1 < as_type<float>(_e29)) {
-        metal::float3 light = position_3 + (dir_1 * metal::float3(dist_1));
-        float dd_1 = metal::dot(dir_1, dir_1);
-        float along_1 = metal::dot(light - _e23, dir_1) / dd_1;
-        metal::float3 l_2 = metal::abs(position_3) + metal::abs(dir_1 * metal::float3(dist_1));
+    if (dist < as_type<float>(_e29)) {
+        metal::float3 light = position + (dir * metal::float3(dist));
+        float dd_1 = metal::dot(dir, dir);
+        float along_1 = metal::dot(light - _e23, dir) / dd_1;
+        metal::float3 l_2 = metal::abs(position) + metal::abs(dir * metal::float3(dist));
         tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_2.x, l_2.y), l_2.z)) / metal::sqrt(dd_1));
     }
     float _e59 = tmax_4;
-    return Ray {_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u};
+    return Ray {_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u};
 }
 
 float shadow_query(
-    metal::float3 position_4,
-    metal::float3 normal_4,
-    metal::float3 dir_2,
-    float dist_2,
+    metal::float3 position_1,
+    metal::float3 normal_1,
+    metal::float3 dir_1,
+    float dist_1,
     constant FrameUniforms& frame,
     thread uint& F32_INF,
     device type_8 const& instances,
@@ -1291,15 +1185,48 @@ float shadow_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray _e4 = shadow_ray(position_4, normal_4, dir_2, dist_2, F32_INF, hit_error);
+    Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
     Candidate _e6 = intersect_scene(_e4, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
     return (_e6.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
-LightSample sample_light_deferred(
-    uint i_3,
-    metal::float3 position_5,
-    metal::float3 normal_5,
+LightSample quad_light(
+    QuadLight l,
+    metal::float3 position_2,
+    metal::float3 normal_2,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float3 c_7 = metal::cross(l.edge_u, l.edge_v);
+    float area = metal::length(c_7);
+    metal::float2 _e7 = rand2_next(rng_state);
+    metal::float3 to_light = ((l.corner + (l.edge_u * metal::float3(_e7.x))) + (l.edge_v * metal::float3(_e7.y))) - position_2;
+    float dist2_ = metal::dot(to_light, to_light);
+    float dist_2 = metal::sqrt(dist2_);
+    metal::float3 dir_7 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
+    float cos_light = -(metal::dot(dir_7, c_7)) / metal::max(area, 0.000000000000000000000000000001);
+    if (!((cos_light > 0.0)) || !((dist2_ > 0.0))) {
+        return LightSample {dir_7, dist_2, metal::float3(0.0), 0.0};
+    }
+    float _e42 = shadow_query(position_2, normal_2, dir_7, dist_2, frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    float strength = ((l.intensity * cos_light) * area) / dist2_;
+    float pdf_1 = (l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0;
+    return LightSample {dir_7, dist_2, (l.color * metal::float3(strength)) * metal::float3(_e42), pdf_1};
+}
+
+LightSample dispatch_light(
+    uint type_id_2,
+    uint offset_6,
+    metal::float3 position_3,
+    metal::float3 normal_3,
     constant FrameUniforms& frame,
     thread uint& rng_state,
     device type_4 const& params,
@@ -1310,77 +1237,38 @@ LightSample sample_light_deferred(
     thread type_12& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
-    thread type_15& scratch,
-    device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint after = {};
-    uint resolved = {};
-    uint bits_1 = {};
+    QuadLight _e3 = load_QuadLight(offset_6, params, _buffer_sizes);
+    LightSample _e4 = quad_light(_e3, position_3, normal_3, frame, rng_state, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    return _e4;
+}
+
+LightSample sample_light_query(
+    uint i_1,
+    metal::float3 position_4,
+    metal::float3 normal_4,
+    constant FrameUniforms& frame,
+    thread uint& rng_state,
+    device type_4 const& params,
+    thread uint& F32_INF,
+    device type_8 const& instances,
+    device type_9 const& nodes,
+    device type_10 const& triangles,
+    thread type_12& traversal_stack,
+    thread float& hit_error,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
     FrameUniforms frame_4 = frame;
-    if (i_3 >= frame_4.light_count) {
+    if (i_1 >= frame_4.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry = frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE);
-    uint type_id_6 = params[entry];
-    uint offset_11 = params[entry + 1u];
-    uint start = rng_state;
-    after = start;
-    resolved = 0u;
-    bits_1 = 0u;
-    scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)] = 0u;
-    scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
-    uint2 loop_bound_4 = uint2(4294967295u);
-    while(true) {
-        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        rng_state = start;
-        scratch.inner[metal::min(SCRATCH_QUERY, 21u)] = 0u;
-        scratch.inner[metal::min(SCRATCH_PENDING, 21u)] = 0u;
-        LightSample _e60 = dispatch_light(type_id_6, offset_11, position_5, normal_5, rng_state, params, scratch, counters, _buffer_sizes);
-        uint _e66 = scratch.inner[metal::min(SCRATCH_PENDING, 21u)];
-        if (_e66 == 0u) {
-            uint _e69 = resolved;
-            if (_e69 > 0u) {
-                uint _e72 = after;
-                rng_state = _e72;
-            }
-            return _e60;
-        }
-        uint _e74 = resolved;
-        if (_e74 == 0u) {
-            uint _e78 = rng_state;
-            after = _e78;
-        }
-        uint _e79 = after;
-        rng_state = _e79;
-        metal::float3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY, scratch);
-        metal::float3 _e85 = scratch_load3f(SCRATCH_LIGHT_QUERY + 3u, scratch);
-        metal::float3 _e88 = scratch_load3f(SCRATCH_LIGHT_QUERY + 6u, scratch);
-        uint _e95 = scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 21u)];
-        float _e97 = shadow_query(_e82, _e85, _e88, as_type<float>(_e95), frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
-        uint _e99 = rng_state;
-        after = _e99;
-        if (!((_e97 == 0.0))) {
-            uint _e108 = scratch.inner[metal::min(SCRATCH_QUERY, 21u)];
-            uint _e109 = resolved;
-            if (_e108 == (_e109 + 1u)) {
-                uint _e113 = after;
-                rng_state = _e113;
-                return _e60;
-            }
-            uint _e115 = bits_1;
-            uint _e117 = resolved;
-            bits_1 = _e115 | (1u << (_e117 & 31u));
-        }
-        uint _e122 = resolved;
-        resolved = _e122 + 1u;
-        uint _e126 = bits_1;
-        scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
-        uint _e132 = resolved;
-        scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)] = _e132;
-    }
-    return LightSample {};
+    uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
+    uint _e22 = params[entry];
+    uint _e27 = params[entry + 1u];
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    return _e28;
 }
 
 float mis_weight(
@@ -1427,32 +1315,30 @@ metal::float3 path_diffuse_shade(
     thread type_12& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
-    thread type_15& scratch,
-    device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 direct = {};
-    uint i_4 = {};
+    uint i_2 = {};
     metal::float3 n_10 = metal::faceforward(hit_2.normal, ray_12.dir, hit_2.geometric_normal);
     direct = metal::float3(0.0);
     uint _e12 = light_count_query(frame);
-    i_4 = 0u;
-    uint2 loop_bound_5 = uint2(4294967295u);
+    i_2 = 0u;
+    uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e33 = i_4;
-            i_4 = _e33 + 1u;
+            uint _e33 = i_2;
+            i_2 = _e33 + 1u;
         }
         loop_init_2 = false;
-        uint _e14 = i_4;
+        uint _e14 = i_2;
         if (_e14 >= _e12) {
             break;
         }
-        uint _e16 = i_4;
-        LightSample _e19 = sample_light_deferred(_e16, hit_2.position, hit_2.geometric_normal, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+        uint _e16 = i_2;
+        LightSample _e19 = sample_light_query(_e16, hit_2.position, hit_2.geometric_normal, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
         float c_8 = metal::max(metal::dot(n_10, _e19.dir), 0.0);
         metal::float3 _e24 = direct;
         float _e28 = mis_light_weight(_e19, c_8 * INV_PI, F32_INF);
@@ -1478,8 +1364,6 @@ metal::float3 dispatch_closest_hit(
     thread type_12& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
-    thread type_15& scratch,
-    device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     switch(type_id_3) {
@@ -1490,7 +1374,7 @@ metal::float3 dispatch_closest_hit(
         }
         case 1u: {
             PathDiffuse _e7 = load_PathDiffuse(offset_7, params, _buffer_sizes);
-            metal::float3 _e8 = path_diffuse_shade(_e7, ray_13, hit_3, secondary_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+            metal::float3 _e8 = path_diffuse_shade(_e7, ray_13, hit_3, secondary_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
             return _e8;
         }
         default: {
@@ -1514,13 +1398,11 @@ metal::float3 shade_direct(
     thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
-    device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_2.slot];
     Hit _e6 = finish_hit(ray_14, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e11;
 }
 
@@ -1560,9 +1442,9 @@ metal::float3x3 orthonormal_basis(
 ) {
     float sign = ((as_type<uint>(n_5.z) & 2147483648u) != 0u) ? -1.0 : 1.0;
     float a_7 = -1.0 / (sign + n_5.z);
-    float b_7 = (n_5.x * n_5.y) * a_7;
+    float b_6 = (n_5.x * n_5.y) * a_7;
     float _e16 = sign * n_5.x;
-    return metal::float3x3(metal::float3(1.0 + ((_e16 * n_5.x) * a_7), sign * b_7, -(_e16)), metal::float3(b_7, sign + ((n_5.y * n_5.y) * a_7), -(n_5.y)), n_5);
+    return metal::float3x3(metal::float3(1.0 + ((_e16 * n_5.x) * a_7), sign * b_6, -(_e16)), metal::float3(b_6, sign + ((n_5.y * n_5.y) * a_7), -(n_5.y)), n_5);
 }
 
 metal::float3 sample_cosine_hemisphere(
@@ -1577,23 +1459,23 @@ metal::float3 sample_cosine_hemisphere(
 }
 
 metal::float3 mis_bounce_dir(
-    metal::float3 dir_3,
+    metal::float3 dir_2,
     float pdf
 ) {
     float x_3 = metal::min(metal::log(1.0 + metal::max(pdf, 0.0)) * (1.0 / 90.0), 0.999);
-    return dir_3 * metal::float3(MIS_BOUNCE_LENGTH + x_3);
+    return dir_2 * metal::float3(MIS_BOUNCE_LENGTH + x_3);
 }
 
 void rt_spawn(
-    metal::float3 dir_4,
+    metal::float3 dir_3,
     metal::float3 weight,
-    thread type_18& spawn_dirs,
-    thread type_18& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count
 ) {
     uint _e3 = spawn_count;
     if (_e3 < 1u) {
-        spawn_dirs.inner[_e3] = dir_4;
+        spawn_dirs.inner[_e3] = dir_3;
         spawn_weights.inner[_e3] = weight;
         spawn_count = _e3 + 1u;
     }
@@ -1604,8 +1486,8 @@ void path_diffuse_rays(
     Ray ray_17,
     Hit hit_4,
     thread uint& rng_state,
-    thread type_18& spawn_dirs,
-    thread type_18& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count
 ) {
     metal::float3 weight_1 = {};
@@ -1637,8 +1519,8 @@ void dispatch_secondary_rays(
     Hit hit_5,
     thread uint& rng_state,
     device type_4 const& params,
-    thread type_18& spawn_dirs,
-    thread type_18& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1648,29 +1530,29 @@ void dispatch_secondary_rays(
 }
 
 metal::float3 spawn_origin_at(
-    metal::float3 position_6,
-    metal::float3 normal_6,
+    metal::float3 position_5,
+    metal::float3 normal_5,
     float error_1,
-    metal::float3 dir_5
+    metal::float3 dir_4
 ) {
     metal::float3 n_7 = {};
-    n_7 = normal_6;
+    n_7 = normal_5;
     metal::float3 _e5 = n_7;
-    if (metal::dot(dir_5, _e5) < 0.0) {
+    if (metal::dot(dir_4, _e5) < 0.0) {
         metal::float3 _e9 = n_7;
         n_7 = -(_e9);
     }
     metal::float3 _e11 = n_7;
-    metal::float3 _e12 = offset_origin(position_6, _e11, error_1);
+    metal::float3 _e12 = offset_origin(position_5, _e11, error_1);
     return _e12;
 }
 
 metal::float3 spawn_origin(
     Hit hit_6,
     float error_2,
-    metal::float3 dir_6
+    metal::float3 dir_5
 ) {
-    metal::float3 _e5 = spawn_origin_at(hit_6.position, hit_6.geometric_normal, error_2, dir_6);
+    metal::float3 _e5 = spawn_origin_at(hit_6.position, hit_6.geometric_normal, error_2, dir_5);
     return _e5;
 }
 
@@ -1688,16 +1570,14 @@ PathState path_step(
     thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
-    device type_17& counters,
-    thread type_18& spawn_dirs,
-    thread type_18& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PathState out = {};
     bool spawned = {};
-    metal::float3 dir_7 = {};
+    metal::float3 dir_6 = {};
     metal::float3 weight_2 = {};
     metal::float3 beta = {};
     Ray ray_20 = s_1.ray;
@@ -1714,7 +1594,7 @@ PathState path_step(
     Hit _e22 = finish_hit(ray_20, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
     float error_4 = hit_error;
     spawned = false;
-    dir_7 = metal::float3(0.0);
+    dir_6 = metal::float3(0.0);
     weight_2 = metal::float3(0.0);
     if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_1.ray.depth < MAX_DEPTH)) {
         spawn_count = 0u;
@@ -1723,12 +1603,12 @@ PathState path_step(
         if (metal::min(_e47, 1u) > 0u) {
             spawned = true;
             metal::float3 _e56 = spawn_dirs.inner[0u];
-            dir_7 = _e56;
+            dir_6 = _e56;
             metal::float3 _e60 = spawn_weights.inner[0u];
             weight_2 = _e60;
         }
     }
-    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_20, _e22, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_20, _e22, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     out.radiance = s_1.radiance + (s_1.beta * _e68);
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -1756,9 +1636,9 @@ PathState path_step(
     }
     metal::float3 _e109 = beta;
     out.beta = _e109;
-    metal::float3 _e111 = dir_7;
+    metal::float3 _e111 = dir_6;
     metal::float3 _e112 = spawn_origin(_e22, error_4, _e111);
-    metal::float3 _e114 = dir_7;
+    metal::float3 _e114 = dir_6;
     uint _e116 = F32_INF;
     out.ray = Ray {_e112, 0.0, _e114, as_type<float>(_e116), s_1.ray.depth + 1u, RAY_SECONDARY, s_1.ray.medium};
     out.live = true;
@@ -1779,23 +1659,21 @@ metal::float3 trace_path(
     thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
-    device type_17& counters,
-    thread type_18& spawn_dirs,
-    thread type_18& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PathState s_2 = {};
     s_2 = PathState {camera_ray, metal::float3(1.0), metal::float3(0.0), true};
-    uint2 loop_bound_6 = uint2(4294967295u);
+    uint2 loop_bound_5 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         PathState _e8 = s_2;
         Ray _e10 = s_2.ray;
         Candidate _e12 = intersect_scene(_e10, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        PathState _e13 = path_step(_e8, _e12, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        PathState _e13 = path_step(_e8, _e12, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         s_2 = _e13;
         bool _e15 = s_2.live;
         if (!(_e15)) {
@@ -1819,10 +1697,8 @@ metal::float3 trace(
     thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
-    device type_17& counters,
-    thread type_18& spawn_dirs,
-    thread type_18& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1838,7 +1714,7 @@ metal::float3 trace(
             metal::float3 _e17 = miss(camera_ray_1, frame);
             radiance_2 = _e17;
         } else {
-            metal::float3 _e18 = shade_direct(camera_ray_1, _e4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, _buffer_sizes);
+            metal::float3 _e18 = shade_direct(camera_ray_1, _e4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, _buffer_sizes);
             radiance_2 = _e18;
             t_2 = _e4.t;
         }
@@ -1847,7 +1723,7 @@ metal::float3 trace(
         metal::float3 _e22 = through_medium(camera_ray_1, _e20, _e21, instances, _buffer_sizes);
         return _e22;
     }
-    metal::float3 _e23 = trace_path(camera_ray_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+    metal::float3 _e23 = trace_path(camera_ray_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
     return _e23;
 }
 
@@ -1878,11 +1754,10 @@ void render_pixel(
     thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
-    device type_17& counters,
-    thread type_18& spawn_dirs,
-    thread type_18& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count,
+    device type_19& counters,
     device type_10& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1896,11 +1771,11 @@ void render_pixel(
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_3 = 0u;
-    uint2 loop_bound_7 = uint2(4294967295u);
+    uint2 loop_bound_6 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         if (!loop_init_3) {
             uint _e46 = s_3;
             s_3 = _e46 + 1u;
@@ -1921,7 +1796,7 @@ void render_pixel(
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
         ray_19.medium = _e33;
         Ray _e34 = ray_19;
-        metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {
             metal::float3 _e38 = sum;
@@ -1965,11 +1840,10 @@ void render_invocation(
     thread float& hit_error,
     device type_14 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
-    device type_17& counters,
-    thread type_18& spawn_dirs,
-    thread type_18& spawn_weights,
+    thread type_15& spawn_dirs,
+    thread type_15& spawn_weights,
     thread uint& spawn_count,
+    device type_19& counters,
     device type_10& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1978,7 +1852,7 @@ void render_invocation(
     if (metal::any(_e3 >= tile_3.extent)) {
         return;
     }
-    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
+    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }
 
@@ -1993,7 +1867,7 @@ struct renderInput {
 , device type_9 const& nodes [[buffer(2)]]
 , device type_10 const& triangles [[buffer(4)]]
 , device type_14 const& attributes [[buffer(5)]]
-, device type_17& counters [[buffer(9)]]
+, device type_19& counters [[buffer(9)]]
 , device type_10& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
@@ -2002,10 +1876,9 @@ struct renderInput {
     type_12 traversal_stack = {};
     float hit_error = {};
     uint ray_count = {};
-    type_15 scratch = {};
-    type_18 spawn_dirs = {};
-    type_18 spawn_weights = {};
+    type_15 spawn_dirs = {};
+    type_15 spawn_weights = {};
     uint spawn_count = {};
-    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }

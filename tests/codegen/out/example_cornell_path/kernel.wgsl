@@ -153,13 +153,6 @@ const GAMMA_4_: f32 = 0.00000023841864f;
 const HAS_SECONDARY_RAYS: bool = true;
 const HAS_BACKGROUND: bool = false;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
-const SCRATCH_RESOLVED: u32 = 3u;
-const SCRATCH_LIGHT_BITS: u32 = 11u;
-const SCRATCH_QUERY: u32 = 2u;
-const SCRATCH_PENDING: u32 = 4u;
-const LIGHT_QUERIES: u32 = 32u;
-const COUNTER_SHADOW_OVERFLOW: u32 = 3u;
-const SCRATCH_LIGHT_QUERY: u32 = 12u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
 const INV_PI: f32 = 0.31830987f;
@@ -189,12 +182,11 @@ var<private> hit_error: f32;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
 var<private> ray_count: u32;
-var<private> scratch: array<u32, 22>;
-@group(0) @binding(9) 
-var<storage, read_write> counters: array<atomic<u32>>;
 var<private> spawn_dirs: array<vec3<f32>, 1>;
 var<private> spawn_weights: array<vec3<f32>, 1>;
 var<private> spawn_count: u32;
+@group(0) @binding(9) 
+var<storage, read_write> counters: array<atomic<u32>>;
 @group(0) @binding(8) 
 var<storage, read_write> accum: array<vec4<f32>>;
 
@@ -389,15 +381,15 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
     let cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
     let u_1 = ((cx * by) - (cy * bx));
-    let v_2 = ((ax * cy) - (ay * cx));
+    let v_1 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
-    let outside = ((((u_1 < 0f) || (v_2 < 0f)) || (w < 0f)) && (((u_1 > 0f) || (v_2 > 0f)) || (w > 0f)));
-    let det = ((u_1 + v_2) + w);
+    let outside = ((((u_1 < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u_1 > 0f) || (v_1 > 0f)) || (w > 0f)));
+    let det = ((u_1 + v_1) + w);
     let rcp = (1f / det);
-    let t_3 = ((((u_1 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    let t_3 = ((((u_1 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
     let hit_7 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_3, (v_2 * rcp), (w * rcp)), hit_7);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_3, (v_1 * rcp), (w * rcp)), hit_7);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -892,73 +884,10 @@ fn load_QuadLight(offset_5: u32) -> QuadLight {
     return QuadLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)), vec3<f32>(bitcast<f32>(_e62), bitcast<f32>(_e68), bitcast<f32>(_e74)), bitcast<f32>(_e81), _e87);
 }
 
-fn scratch_store3f(i_1: u32, v_1: vec3<f32>) {
-    let b_6 = bitcast<vec3<u32>>(v_1);
-    scratch[min(i_1, 21u)] = b_6.x;
-    scratch[min((i_1 + 1u), 21u)] = b_6.y;
-    scratch[min((i_1 + 2u), 21u)] = b_6.z;
-    return;
-}
-
-fn shadow_deferred(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
-    let i_5 = scratch[min(SCRATCH_QUERY, 21u)];
-    scratch[min(SCRATCH_QUERY, 21u)] = (i_5 + 1u);
-    let _e22 = scratch[min(SCRATCH_RESOLVED, 21u)];
-    if (i_5 < _e22) {
-        let _e29 = scratch[min(SCRATCH_LIGHT_BITS, 21u)];
-        return f32(((_e29 >> (i_5 & 31u)) & 1u));
-    }
-    let _e41 = scratch[min(SCRATCH_PENDING, 21u)];
-    if (_e41 != 0u) {
-        return 1f;
-    }
-    if (i_5 >= LIGHT_QUERIES) {
-        atomicAdd((&counters[min(COUNTER_SHADOW_OVERFLOW, 3u)]), 1u);
-        return 1f;
-    }
-    scratch_store3f(SCRATCH_LIGHT_QUERY, position);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)] = bitcast<u32>(dist);
-    scratch[min(SCRATCH_PENDING, 21u)] = 1u;
-    return 1f;
-}
-
-fn quad_light(l: QuadLight, position_1: vec3<f32>, normal_1: vec3<f32>) -> LightSample {
-    let c_7 = cross(l.edge_u, l.edge_v);
-    let area = length(c_7);
-    let _e7 = rand2_next();
-    let to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_1);
-    let dist2_ = dot(to_light, to_light);
-    let dist_3 = sqrt(dist2_);
-    let dir_8 = (to_light / vec3(max(dist_3, 0.00000000000000000001f)));
-    let cos_light = (-(dot(dir_8, c_7)) / max(area, 0.000000000000000000000000000001f));
-    if (!((cos_light > 0f)) || !((dist2_ > 0f))) {
-        return LightSample(dir_8, dist_3, vec3(0f), 0f);
-    }
-    let _e42 = shadow_deferred(position_1, normal_1, dir_8, dist_3);
-    let strength = (((l.intensity * cos_light) * area) / dist2_);
-    let pdf_1 = select(0f, (dist2_ / (cos_light * area)), (l.lamp == 1u));
-    return LightSample(dir_8, dist_3, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
-}
-
-fn dispatch_light(type_id_2: u32, offset_6: u32, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
-    let _e3 = load_QuadLight(offset_6);
-    let _e4 = quad_light(_e3, position_2, normal_2);
-    return _e4;
-}
-
-fn scratch_load3f(i_2: u32) -> vec3<f32> {
-    let _e5 = scratch[min(i_2, 21u)];
-    let _e12 = scratch[min((i_2 + 1u), 21u)];
-    let _e19 = scratch[min((i_2 + 2u), 21u)];
-    return bitcast<vec3<f32>>(vec3<u32>(_e5, _e12, _e19));
-}
-
 fn step_toward(x_1: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
-    let bits_2 = bitcast<vec3<u32>>(x_1);
+    let bits_1 = bitcast<vec3<u32>>(x_1);
     let up_1 = ((sign(x_1) * sign(s)) > vec3(0f));
-    let stepped = bitcast<vec3<f32>>(select((bits_2 - vec3(1u)), (bits_2 + vec3(1u)), up_1));
+    let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
     let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s > vec3(0f)));
     let moved = select(stepped, from_zero, (x_1 == vec3(0f)));
     return select(x_1, moved, !((s == vec3(0f))));
@@ -971,107 +900,75 @@ fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
     return _e17;
 }
 
-fn shadow_ray(position_3: vec3<f32>, normal_3: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> Ray {
+fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> Ray {
     var n_4: vec3<f32>;
     var tmax_4: f32;
 
-    n_4 = normal_3;
+    n_4 = normal;
     let _e5 = n_4;
-    if (dot(dir_1, _e5) < 0f) {
+    if (dot(dir, _e5) < 0f) {
         let _e9 = n_4;
         n_4 = -(_e9);
     }
-    let a_6 = abs(position_3);
+    let a_6 = abs(position);
     let _e13 = hit_error;
     let error_3 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
     let _e22 = n_4;
-    let _e23 = offset_origin(position_3, _e22, error_3);
+    let _e23 = offset_origin(position, _e22, error_3);
     let _e25 = F32_INF;
     tmax_4 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
-    if (dist_1 < bitcast<f32>(_e29)) {
-        let light = (position_3 + (dir_1 * vec3(dist_1)));
-        let dd_1 = dot(dir_1, dir_1);
-        let along_1 = (dot((light - _e23), dir_1) / dd_1);
-        let l_2 = (abs(position_3) + abs((dir_1 * vec3(dist_1))));
+    if (dist < bitcast<f32>(_e29)) {
+        let light = (position + (dir * vec3(dist)));
+        let dd_1 = dot(dir, dir);
+        let along_1 = (dot((light - _e23), dir) / dd_1);
+        let l_2 = (abs(position) + abs((dir * vec3(dist))));
         tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     let _e59 = tmax_4;
-    return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-fn shadow_query(position_4: vec3<f32>, normal_4: vec3<f32>, dir_2: vec3<f32>, dist_2: f32) -> f32 {
-    let _e4 = shadow_ray(position_4, normal_4, dir_2, dist_2);
+fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
+    let _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
     let _e6 = intersect_scene(_e4, true);
     return select(1f, 0f, (_e6.slot != NO_HIT));
 }
 
-fn sample_light_deferred(i_3: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
-    var after: u32;
-    var resolved: u32;
-    var bits_1: u32;
+fn quad_light(l: QuadLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
+    let c_7 = cross(l.edge_u, l.edge_v);
+    let area = length(c_7);
+    let _e7 = rand2_next();
+    let to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_2);
+    let dist2_ = dot(to_light, to_light);
+    let dist_2 = sqrt(dist2_);
+    let dir_7 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
+    let cos_light = (-(dot(dir_7, c_7)) / max(area, 0.000000000000000000000000000001f));
+    if (!((cos_light > 0f)) || !((dist2_ > 0f))) {
+        return LightSample(dir_7, dist_2, vec3(0f), 0f);
+    }
+    let _e42 = shadow_query(position_2, normal_2, dir_7, dist_2);
+    let strength = (((l.intensity * cos_light) * area) / dist2_);
+    let pdf_1 = select(0f, (dist2_ / (cos_light * area)), (l.lamp == 1u));
+    return LightSample(dir_7, dist_2, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
+}
 
+fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
+    let _e3 = load_QuadLight(offset_6);
+    let _e4 = quad_light(_e3, position_3, normal_3);
+    return _e4;
+}
+
+fn sample_light_query(i_1: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let frame_4 = frame;
-    if (i_3 >= frame_4.light_count) {
+    if (i_1 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
-    let type_id_6 = params[entry];
-    let offset_11 = params[(entry + 1u)];
-    let start = rng_state;
-    after = start;
-    resolved = 0u;
-    bits_1 = 0u;
-    scratch[min(SCRATCH_RESOLVED, 21u)] = 0u;
-    scratch[min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
-    loop {
-        rng_state = start;
-        scratch[min(SCRATCH_QUERY, 21u)] = 0u;
-        scratch[min(SCRATCH_PENDING, 21u)] = 0u;
-        let _e60 = dispatch_light(type_id_6, offset_11, position_5, normal_5);
-        let _e66 = scratch[min(SCRATCH_PENDING, 21u)];
-        if (_e66 == 0u) {
-            let _e69 = resolved;
-            if (_e69 > 0u) {
-                let _e72 = after;
-                rng_state = _e72;
-            }
-            return _e60;
-        }
-        let _e74 = resolved;
-        if (_e74 == 0u) {
-            let _e78 = rng_state;
-            after = _e78;
-        }
-        let _e79 = after;
-        rng_state = _e79;
-        let _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
-        let _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
-        let _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        let _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)];
-        let _e97 = shadow_query(_e82, _e85, _e88, bitcast<f32>(_e95));
-        let _e99 = rng_state;
-        after = _e99;
-        if !((_e97 == 0f)) {
-            let _e108 = scratch[min(SCRATCH_QUERY, 21u)];
-            let _e109 = resolved;
-            if (_e108 == (_e109 + 1u)) {
-                let _e113 = after;
-                rng_state = _e113;
-                return _e60;
-            }
-            let _e115 = bits_1;
-            let _e117 = resolved;
-            bits_1 = (_e115 | (1u << (_e117 & 31u)));
-        }
-        let _e122 = resolved;
-        resolved = (_e122 + 1u);
-        let _e126 = bits_1;
-        scratch[min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
-        let _e132 = resolved;
-        scratch[min(SCRATCH_RESOLVED, 21u)] = _e132;
-    }
-    return LightSample();
+    let entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
+    let _e22 = params[entry];
+    let _e27 = params[(entry + 1u)];
+    let _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    return _e28;
 }
 
 fn mis_weight(p_6: f32, other: f32) -> f32 {
@@ -1097,26 +994,26 @@ fn mis_light_weight(l_1: LightSample, bsdf_pdf: f32) -> f32 {
 
 fn path_diffuse_shade(m_1: PathDiffuse, ray_12: Ray, hit_2: Hit, secondary: vec3<f32>) -> vec3<f32> {
     var direct: vec3<f32>;
-    var i_4: u32;
+    var i_2: u32;
 
     let n_10 = faceForward(hit_2.normal, ray_12.dir, hit_2.geometric_normal);
     direct = vec3(0f);
     let _e12 = light_count_query();
-    i_4 = 0u;
+    i_2 = 0u;
     loop {
-        let _e14 = i_4;
+        let _e14 = i_2;
         if (_e14 >= _e12) {
             break;
         }
-        let _e16 = i_4;
-        let _e19 = sample_light_deferred(_e16, hit_2.position, hit_2.geometric_normal);
+        let _e16 = i_2;
+        let _e19 = sample_light_query(_e16, hit_2.position, hit_2.geometric_normal);
         let c_8 = max(dot(n_10, _e19.dir), 0f);
         let _e24 = direct;
         let _e28 = mis_light_weight(_e19, (c_8 * INV_PI));
         direct = (_e24 + (_e19.radiance * vec3((c_8 * _e28))));
         continuing {
-            let _e33 = i_4;
-            i_4 = (_e33 + 1u);
+            let _e33 = i_2;
+            i_2 = (_e33 + 1u);
         }
     }
     let _e40 = direct;
@@ -1170,9 +1067,9 @@ fn through_medium(ray_16: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
 fn orthonormal_basis(n_5: vec3<f32>) -> mat3x3<f32> {
     let sign_ = select(1f, -1f, ((bitcast<u32>(n_5.z) & 2147483648u) != 0u));
     let a_7 = (-1f / (sign_ + n_5.z));
-    let b_7 = ((n_5.x * n_5.y) * a_7);
+    let b_6 = ((n_5.x * n_5.y) * a_7);
     let _e16 = (sign_ * n_5.x);
-    return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_5.x) * a_7)), (sign_ * b_7), -(_e16)), vec3<f32>(b_7, (sign_ + ((n_5.y * n_5.y) * a_7)), -(n_5.y)), n_5);
+    return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_5.x) * a_7)), (sign_ * b_6), -(_e16)), vec3<f32>(b_6, (sign_ + ((n_5.y * n_5.y) * a_7)), -(n_5.y)), n_5);
 }
 
 fn sample_cosine_hemisphere(n_6: vec3<f32>, u: vec2<f32>) -> vec3<f32> {
@@ -1183,15 +1080,15 @@ fn sample_cosine_hemisphere(n_6: vec3<f32>, u: vec2<f32>) -> vec3<f32> {
     return (_e17 * local);
 }
 
-fn mis_bounce_dir(dir_3: vec3<f32>, pdf: f32) -> vec3<f32> {
+fn mis_bounce_dir(dir_2: vec3<f32>, pdf: f32) -> vec3<f32> {
     let x_3 = min((log((1f + max(pdf, 0f))) * (1f / 90f)), 0.999f);
-    return (dir_3 * vec3((MIS_BOUNCE_LENGTH + x_3)));
+    return (dir_2 * vec3((MIS_BOUNCE_LENGTH + x_3)));
 }
 
-fn rt_spawn(dir_4: vec3<f32>, weight: vec3<f32>) {
+fn rt_spawn(dir_3: vec3<f32>, weight: vec3<f32>) {
     let _e3 = spawn_count;
     if (_e3 < 1u) {
-        spawn_dirs[_e3] = dir_4;
+        spawn_dirs[_e3] = dir_3;
         spawn_weights[_e3] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1227,29 +1124,29 @@ fn dispatch_secondary_rays(type_id_5: u32, offset_9: u32, ray_18: Ray, hit_5: Hi
     return;
 }
 
-fn spawn_origin_at(position_6: vec3<f32>, normal_6: vec3<f32>, error_1: f32, dir_5: vec3<f32>) -> vec3<f32> {
+fn spawn_origin_at(position_5: vec3<f32>, normal_5: vec3<f32>, error_1: f32, dir_4: vec3<f32>) -> vec3<f32> {
     var n_7: vec3<f32>;
 
-    n_7 = normal_6;
+    n_7 = normal_5;
     let _e5 = n_7;
-    if (dot(dir_5, _e5) < 0f) {
+    if (dot(dir_4, _e5) < 0f) {
         let _e9 = n_7;
         n_7 = -(_e9);
     }
     let _e11 = n_7;
-    let _e12 = offset_origin(position_6, _e11, error_1);
+    let _e12 = offset_origin(position_5, _e11, error_1);
     return _e12;
 }
 
-fn spawn_origin(hit_6: Hit, error_2: f32, dir_6: vec3<f32>) -> vec3<f32> {
-    let _e5 = spawn_origin_at(hit_6.position, hit_6.geometric_normal, error_2, dir_6);
+fn spawn_origin(hit_6: Hit, error_2: f32, dir_5: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_6.position, hit_6.geometric_normal, error_2, dir_5);
     return _e5;
 }
 
 fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
     var out: PathState;
     var spawned: bool;
-    var dir_7: vec3<f32>;
+    var dir_6: vec3<f32>;
     var weight_2: vec3<f32>;
     var beta: vec3<f32>;
 
@@ -1267,7 +1164,7 @@ fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
     let _e22 = finish_hit(ray_20, c_3);
     let error_4 = hit_error;
     spawned = false;
-    dir_7 = vec3(0f);
+    dir_6 = vec3(0f);
     weight_2 = vec3(0f);
     if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_20.depth < MAX_DEPTH)) {
         spawn_count = 0u;
@@ -1276,7 +1173,7 @@ fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
         if (min(_e47, 1u) > 0u) {
             spawned = true;
             let _e56 = spawn_dirs[0u];
-            dir_7 = _e56;
+            dir_6 = _e56;
             let _e60 = spawn_weights[0u];
             weight_2 = _e60;
         }
@@ -1309,9 +1206,9 @@ fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
     }
     let _e109 = beta;
     out.beta = _e109;
-    let _e111 = dir_7;
+    let _e111 = dir_6;
     let _e112 = spawn_origin(_e22, error_4, _e111);
-    let _e114 = dir_7;
+    let _e114 = dir_6;
     let _e116 = F32_INF;
     out.ray = Ray(_e112, 0f, _e114, bitcast<f32>(_e116), (ray_20.depth + 1u), RAY_SECONDARY, ray_20.medium);
     out.live = true;

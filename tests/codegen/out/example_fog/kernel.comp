@@ -185,7 +185,7 @@ float hit_error = 0.0;
 
 layout(std430, binding = 5) readonly buffer type_12_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
 
-uint scratch[22] = uint[22](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+uint scratch[12] = uint[12](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
 uint traversal_stack[74] = uint[74](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
@@ -524,7 +524,7 @@ void absorb_query(float density) {
     if (!(HAS_ABSORB)) {
         return;
     }
-    uint side = scratch[min(SCRATCH_ABSORB, 21u)];
+    uint side = scratch[min(SCRATCH_ABSORB, 11u)];
     if ((side == 0u)) {
         return;
     }
@@ -533,21 +533,21 @@ void absorb_query(float density) {
     if ((_e13 && (density > 0.0))) {
         sigma = density;
     }
-    uint _e22 = scratch[min(SCRATCH_ABSORB_T, 21u)];
+    uint _e22 = scratch[min(SCRATCH_ABSORB_T, 11u)];
     float t_6 = uintBitsToFloat(_e22);
     float _e24 = sigma;
     float _e25 = sigma;
     float s_6 = ((side == 2u) ? -(_e25) : _e24);
-    uint _e35 = scratch[min(SCRATCH_DEPTH, 21u)];
+    uint _e35 = scratch[min(SCRATCH_DEPTH, 11u)];
     float depth_2 = (uintBitsToFloat(_e35) - (s_6 * t_6));
-    scratch[min(SCRATCH_DEPTH, 21u)] = floatBitsToUint(depth_2);
-    uint _e50 = scratch[min(SCRATCH_NET, 21u)];
+    scratch[min(SCRATCH_DEPTH, 11u)] = floatBitsToUint(depth_2);
+    uint _e50 = scratch[min(SCRATCH_NET, 11u)];
     float net = (uintBitsToFloat(_e50) + s_6);
-    scratch[min(SCRATCH_NET, 21u)] = floatBitsToUint(net);
-    uint _e64 = scratch[min(SCRATCH_DENSITY_MAX, 21u)];
+    scratch[min(SCRATCH_NET, 11u)] = floatBitsToUint(net);
+    uint _e64 = scratch[min(SCRATCH_DENSITY_MAX, 11u)];
     float _e66 = sigma;
     float most = max(uintBitsToFloat(_e64), _e66);
-    scratch[min(SCRATCH_DENSITY_MAX, 21u)] = floatBitsToUint(most);
+    scratch[min(SCRATCH_DENSITY_MAX, 11u)] = floatBitsToUint(most);
     return;
 }
 
@@ -568,11 +568,11 @@ bool accept(GpuInstance inst_4, Ray ray_5, Candidate c_1) {
         Hit _e10 = finish_hit(ray_5, c_1);
         hit_error = shaded;
         if ((ray_5.kind == RAY_SHADOW)) {
-            scratch[min(SCRATCH_ABSORB, 21u)] = (_e10.front_face ? 1u : 2u);
-            scratch[min(SCRATCH_ABSORB_T, 21u)] = floatBitsToUint((c_1.t * length(ray_5.dir)));
+            scratch[min(SCRATCH_ABSORB, 11u)] = (_e10.front_face ? 1u : 2u);
+            scratch[min(SCRATCH_ABSORB_T, 11u)] = floatBitsToUint((c_1.t * length(ray_5.dir)));
         }
         bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
-        scratch[min(SCRATCH_ABSORB, 21u)] = 0u;
+        scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
         return _e36;
     }
     return true;
@@ -907,7 +907,7 @@ vec3 miss(Ray ray_11) {
 }
 
 void shading_medium(uint medium) {
-    scratch[min(SCRATCH_MEDIUM, 21u)] = medium;
+    scratch[min(SCRATCH_MEDIUM, 11u)] = medium;
     return;
 }
 
@@ -991,19 +991,19 @@ Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
 
 float shadow_transmittance(Ray ray_14, uint medium_1) {
     float depth = 0.0;
-    scratch[min(SCRATCH_ABSORB, 21u)] = 0u;
-    scratch[min(SCRATCH_DEPTH, 21u)] = 0u;
-    scratch[min(SCRATCH_NET, 21u)] = 0u;
-    scratch[min(SCRATCH_DENSITY_MAX, 21u)] = 0u;
+    scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
+    scratch[min(SCRATCH_DEPTH, 11u)] = 0u;
+    scratch[min(SCRATCH_NET, 11u)] = 0u;
+    scratch[min(SCRATCH_DENSITY_MAX, 11u)] = 0u;
     if ((HAS_MEDIA && HAS_ANY_HIT)) {
         if ((medium_1 != 0u)) {
             GpuInstance inst_8 = _group_0_binding_3_cs[(medium_1 - 1u)];
             if (((inst_8.flags & FLAG_ANY_HIT) != 0u)) {
                 Hit start = Hit(ray_14.origin, 0.0, -(ray_14.dir), -(ray_14.dir), vec2(0.0), true, inst_8.object, 0u);
-                scratch[min(SCRATCH_ABSORB, 21u)] = 1u;
-                scratch[min(SCRATCH_ABSORB_T, 21u)] = 0u;
+                scratch[min(SCRATCH_ABSORB, 11u)] = 1u;
+                scratch[min(SCRATCH_ABSORB_T, 11u)] = 0u;
                 bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start);
-                scratch[min(SCRATCH_ABSORB, 21u)] = 0u;
+                scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
             }
         }
     }
@@ -1011,11 +1011,11 @@ float shadow_transmittance(Ray ray_14, uint medium_1) {
     if ((_e75.slot != NO_HIT)) {
         return 0.0;
     }
-    uint _e85 = scratch[min(SCRATCH_DEPTH, 21u)];
+    uint _e85 = scratch[min(SCRATCH_DEPTH, 11u)];
     depth = uintBitsToFloat(_e85);
-    uint _e93 = scratch[min(SCRATCH_NET, 21u)];
+    uint _e93 = scratch[min(SCRATCH_NET, 11u)];
     float net_1 = uintBitsToFloat(_e93);
-    uint _e101 = scratch[min(SCRATCH_DENSITY_MAX, 21u)];
+    uint _e101 = scratch[min(SCRATCH_DENSITY_MAX, 11u)];
     if ((net_1 > (1e-6 * uintBitsToFloat(_e101)))) {
         uint _e107 = F32_INF;
         if ((ray_14.tmax == uintBitsToFloat(_e107))) {
@@ -1030,7 +1030,7 @@ float shadow_transmittance(Ray ray_14, uint medium_1) {
 
 float shadow_query(vec3 position_1, vec3 normal_1, vec3 dir_1, float dist_1) {
     Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    uint _e10 = scratch[min(SCRATCH_MEDIUM, 21u)];
+    uint _e10 = scratch[min(SCRATCH_MEDIUM, 11u)];
     float _e11 = shadow_transmittance(_e4, _e10);
     return _e11;
 }

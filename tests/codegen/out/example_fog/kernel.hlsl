@@ -217,7 +217,7 @@ ByteAddressBuffer nodes : register(t2);
 ByteAddressBuffer triangles : register(t4);
 static float hit_error = (float)0;
 ByteAddressBuffer attributes : register(t5);
-static uint scratch[22] = (uint[22])0;
+static uint scratch[12] = (uint[12])0;
 static uint traversal_stack[74] = (uint[74])0;
 static uint ray_count = (uint)0;
 static float3 spawn_dirs[1] = (float3[1])0;
@@ -701,7 +701,7 @@ void absorb_query(float density)
     if (!(HAS_ABSORB)) {
         return;
     }
-    uint side = scratch[min(uint(min(SCRATCH_ABSORB, 21u)), 21u)];
+    uint side = scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)];
     if ((side == 0u)) {
         return;
     }
@@ -710,21 +710,21 @@ void absorb_query(float density)
     if ((_e13 && (density > 0.0))) {
         sigma = density;
     }
-    uint _e22 = scratch[min(uint(min(SCRATCH_ABSORB_T, 21u)), 21u)];
+    uint _e22 = scratch[min(uint(min(SCRATCH_ABSORB_T, 11u)), 11u)];
     float t_6 = asfloat(_e22);
     float _e24 = sigma;
     float _e25 = sigma;
     float s_6 = ((side == 2u) ? -(_e25) : _e24);
-    uint _e35 = scratch[min(uint(min(SCRATCH_DEPTH, 21u)), 21u)];
+    uint _e35 = scratch[min(uint(min(SCRATCH_DEPTH, 11u)), 11u)];
     float depth_2 = (asfloat(_e35) - (s_6 * t_6));
-    scratch[min(uint(min(SCRATCH_DEPTH, 21u)), 21u)] = asuint(depth_2);
-    uint _e50 = scratch[min(uint(min(SCRATCH_NET, 21u)), 21u)];
+    scratch[min(uint(min(SCRATCH_DEPTH, 11u)), 11u)] = asuint(depth_2);
+    uint _e50 = scratch[min(uint(min(SCRATCH_NET, 11u)), 11u)];
     float net = (asfloat(_e50) + s_6);
-    scratch[min(uint(min(SCRATCH_NET, 21u)), 21u)] = asuint(net);
-    uint _e64 = scratch[min(uint(min(SCRATCH_DENSITY_MAX, 21u)), 21u)];
+    scratch[min(uint(min(SCRATCH_NET, 11u)), 11u)] = asuint(net);
+    uint _e64 = scratch[min(uint(min(SCRATCH_DENSITY_MAX, 11u)), 11u)];
     float _e66 = sigma;
     float most = max(asfloat(_e64), _e66);
-    scratch[min(uint(min(SCRATCH_DENSITY_MAX, 21u)), 21u)] = asuint(most);
+    scratch[min(uint(min(SCRATCH_DENSITY_MAX, 11u)), 11u)] = asuint(most);
     return;
 }
 
@@ -748,11 +748,11 @@ bool accept(GpuInstance inst_4, Ray ray_5, Candidate c_1)
         const Hit _e10 = finish_hit(ray_5, c_1);
         hit_error = shaded;
         if ((ray_5.kind == RAY_SHADOW)) {
-            scratch[min(uint(min(SCRATCH_ABSORB, 21u)), 21u)] = (_e10.front_face ? 1u : 2u);
-            scratch[min(uint(min(SCRATCH_ABSORB_T, 21u)), 21u)] = asuint((c_1.t * length(ray_5.dir)));
+            scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)] = (_e10.front_face ? 1u : 2u);
+            scratch[min(uint(min(SCRATCH_ABSORB_T, 11u)), 11u)] = asuint((c_1.t * length(ray_5.dir)));
         }
         const bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
-        scratch[min(uint(min(SCRATCH_ABSORB, 21u)), 21u)] = 0u;
+        scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)] = 0u;
         return _e36;
     }
     return true;
@@ -1138,7 +1138,7 @@ float3 miss(Ray ray_11)
 
 void shading_medium(uint medium)
 {
-    scratch[min(uint(min(SCRATCH_MEDIUM, 21u)), 21u)] = medium;
+    scratch[min(uint(min(SCRATCH_MEDIUM, 11u)), 11u)] = medium;
     return;
 }
 
@@ -1252,19 +1252,19 @@ float shadow_transmittance(Ray ray_14, uint medium_1)
 {
     float depth = (float)0;
 
-    scratch[min(uint(min(SCRATCH_ABSORB, 21u)), 21u)] = 0u;
-    scratch[min(uint(min(SCRATCH_DEPTH, 21u)), 21u)] = 0u;
-    scratch[min(uint(min(SCRATCH_NET, 21u)), 21u)] = 0u;
-    scratch[min(uint(min(SCRATCH_DENSITY_MAX, 21u)), 21u)] = 0u;
+    scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)] = 0u;
+    scratch[min(uint(min(SCRATCH_DEPTH, 11u)), 11u)] = 0u;
+    scratch[min(uint(min(SCRATCH_NET, 11u)), 11u)] = 0u;
+    scratch[min(uint(min(SCRATCH_DENSITY_MAX, 11u)), 11u)] = 0u;
     if ((HAS_MEDIA && HAS_ANY_HIT)) {
         if ((medium_1 != 0u)) {
             GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4((medium_1 - 1u)*128+0)), asfloat(instances.Load4((medium_1 - 1u)*128+16)), asfloat(instances.Load4((medium_1 - 1u)*128+32)), asfloat(instances.Load4((medium_1 - 1u)*128+48)), asfloat(instances.Load4((medium_1 - 1u)*128+64)), asfloat(instances.Load4((medium_1 - 1u)*128+80)), asuint(instances.Load((medium_1 - 1u)*128+96)), asuint(instances.Load((medium_1 - 1u)*128+100)), asuint(instances.Load((medium_1 - 1u)*128+104)), asuint(instances.Load((medium_1 - 1u)*128+108)), asuint(instances.Load((medium_1 - 1u)*128+112)), asuint(instances.Load((medium_1 - 1u)*128+116)), asuint(instances.Load((medium_1 - 1u)*128+120)), asuint(instances.Load((medium_1 - 1u)*128+124)));
             if (((inst_8.flags & FLAG_ANY_HIT) != 0u)) {
                 Hit start = ConstructHit(ray_14.origin, 0.0, -(ray_14.dir), -(ray_14.dir), (0.0).xx, true, inst_8.object, 0u);
-                scratch[min(uint(min(SCRATCH_ABSORB, 21u)), 21u)] = 1u;
-                scratch[min(uint(min(SCRATCH_ABSORB_T, 21u)), 21u)] = 0u;
+                scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)] = 1u;
+                scratch[min(uint(min(SCRATCH_ABSORB_T, 11u)), 11u)] = 0u;
                 const bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start);
-                scratch[min(uint(min(SCRATCH_ABSORB, 21u)), 21u)] = 0u;
+                scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)] = 0u;
             }
         }
     }
@@ -1272,11 +1272,11 @@ float shadow_transmittance(Ray ray_14, uint medium_1)
     if ((_e75.slot != NO_HIT)) {
         return 0.0;
     }
-    uint _e85 = scratch[min(uint(min(SCRATCH_DEPTH, 21u)), 21u)];
+    uint _e85 = scratch[min(uint(min(SCRATCH_DEPTH, 11u)), 11u)];
     depth = asfloat(_e85);
-    uint _e93 = scratch[min(uint(min(SCRATCH_NET, 21u)), 21u)];
+    uint _e93 = scratch[min(uint(min(SCRATCH_NET, 11u)), 11u)];
     float net_1 = asfloat(_e93);
-    uint _e101 = scratch[min(uint(min(SCRATCH_DENSITY_MAX, 21u)), 21u)];
+    uint _e101 = scratch[min(uint(min(SCRATCH_DENSITY_MAX, 11u)), 11u)];
     if ((net_1 > (1e-6 * asfloat(_e101)))) {
         uint _e107 = F32_INF;
         if ((ray_14.tmax == asfloat(_e107))) {
@@ -1292,7 +1292,7 @@ float shadow_transmittance(Ray ray_14, uint medium_1)
 float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
 {
     const Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    uint _e10 = scratch[min(uint(min(SCRATCH_MEDIUM, 21u)), 21u)];
+    uint _e10 = scratch[min(uint(min(SCRATCH_MEDIUM, 11u)), 11u)];
     const float _e11 = shadow_transmittance(_e4, _e10);
     return _e11;
 }

@@ -117,7 +117,7 @@ struct Triangle {
 };
 typedef metal::uint4 type_12[1];
 struct type_13 {
-    uint inner[22];
+    uint inner[12];
 };
 struct Fog {
     float density;
@@ -653,7 +653,7 @@ void absorb_query(
     if (!(HAS_ABSORB)) {
         return;
     }
-    uint side = scratch.inner[metal::min(SCRATCH_ABSORB, 21u)];
+    uint side = scratch.inner[metal::min(SCRATCH_ABSORB, 11u)];
     if (side == 0u) {
         return;
     }
@@ -662,21 +662,21 @@ void absorb_query(
     if (_e13 && (density > 0.0)) {
         sigma = density;
     }
-    uint _e22 = scratch.inner[metal::min(SCRATCH_ABSORB_T, 21u)];
+    uint _e22 = scratch.inner[metal::min(SCRATCH_ABSORB_T, 11u)];
     float t_6 = as_type<float>(_e22);
     float _e24 = sigma;
     float _e25 = sigma;
     float s_6 = (side == 2u) ? -(_e25) : _e24;
-    uint _e35 = scratch.inner[metal::min(SCRATCH_DEPTH, 21u)];
+    uint _e35 = scratch.inner[metal::min(SCRATCH_DEPTH, 11u)];
     float depth_2 = as_type<float>(_e35) - (s_6 * t_6);
-    scratch.inner[metal::min(SCRATCH_DEPTH, 21u)] = as_type<uint>(depth_2);
-    uint _e50 = scratch.inner[metal::min(SCRATCH_NET, 21u)];
+    scratch.inner[metal::min(SCRATCH_DEPTH, 11u)] = as_type<uint>(depth_2);
+    uint _e50 = scratch.inner[metal::min(SCRATCH_NET, 11u)];
     float net = as_type<float>(_e50) + s_6;
-    scratch.inner[metal::min(SCRATCH_NET, 21u)] = as_type<uint>(net);
-    uint _e64 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 21u)];
+    scratch.inner[metal::min(SCRATCH_NET, 11u)] = as_type<uint>(net);
+    uint _e64 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 11u)];
     float _e66 = sigma;
     float most = metal::max(as_type<float>(_e64), _e66);
-    scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 21u)] = as_type<uint>(most);
+    scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 11u)] = as_type<uint>(most);
     return;
 }
 
@@ -721,11 +721,11 @@ bool accept(
         Hit _e10 = finish_hit(ray_5, c_1, instances, triangles, hit_error, attributes, _buffer_sizes);
         hit_error = shaded;
         if (ray_5.kind == RAY_SHADOW) {
-            scratch.inner[metal::min(SCRATCH_ABSORB, 21u)] = _e10.front_face ? 1u : 2u;
-            scratch.inner[metal::min(SCRATCH_ABSORB_T, 21u)] = as_type<uint>(c_1.t * metal::length(ray_5.dir));
+            scratch.inner[metal::min(SCRATCH_ABSORB, 11u)] = _e10.front_face ? 1u : 2u;
+            scratch.inner[metal::min(SCRATCH_ABSORB_T, 11u)] = as_type<uint>(c_1.t * metal::length(ray_5.dir));
         }
         bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10, params, scratch, _buffer_sizes);
-        scratch.inner[metal::min(SCRATCH_ABSORB, 21u)] = 0u;
+        scratch.inner[metal::min(SCRATCH_ABSORB, 11u)] = 0u;
         return _e36;
     }
     return true;
@@ -1173,7 +1173,7 @@ void shading_medium(
     uint medium,
     thread type_13& scratch
 ) {
-    scratch.inner[metal::min(SCRATCH_MEDIUM, 21u)] = medium;
+    scratch.inner[metal::min(SCRATCH_MEDIUM, 11u)] = medium;
     return;
 }
 
@@ -1304,19 +1304,19 @@ float shadow_transmittance(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float depth = {};
-    scratch.inner[metal::min(SCRATCH_ABSORB, 21u)] = 0u;
-    scratch.inner[metal::min(SCRATCH_DEPTH, 21u)] = 0u;
-    scratch.inner[metal::min(SCRATCH_NET, 21u)] = 0u;
-    scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 21u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_ABSORB, 11u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_DEPTH, 11u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_NET, 11u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 11u)] = 0u;
     if (HAS_MEDIA && HAS_ANY_HIT) {
         if (medium_1 != 0u) {
             GpuInstance inst_8 = instances[medium_1 - 1u];
             if ((inst_8.flags & FLAG_ANY_HIT) != 0u) {
                 Hit start = Hit {ray_14.origin, 0.0, -(ray_14.dir), -(ray_14.dir), metal::float2(0.0), true, {}, inst_8.object, 0u};
-                scratch.inner[metal::min(SCRATCH_ABSORB, 21u)] = 1u;
-                scratch.inner[metal::min(SCRATCH_ABSORB_T, 21u)] = 0u;
+                scratch.inner[metal::min(SCRATCH_ABSORB, 11u)] = 1u;
+                scratch.inner[metal::min(SCRATCH_ABSORB_T, 11u)] = 0u;
                 bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start, params, scratch, _buffer_sizes);
-                scratch.inner[metal::min(SCRATCH_ABSORB, 21u)] = 0u;
+                scratch.inner[metal::min(SCRATCH_ABSORB, 11u)] = 0u;
             }
         }
     }
@@ -1324,11 +1324,11 @@ float shadow_transmittance(
     if (_e75.slot != NO_HIT) {
         return 0.0;
     }
-    uint _e85 = scratch.inner[metal::min(SCRATCH_DEPTH, 21u)];
+    uint _e85 = scratch.inner[metal::min(SCRATCH_DEPTH, 11u)];
     depth = as_type<float>(_e85);
-    uint _e93 = scratch.inner[metal::min(SCRATCH_NET, 21u)];
+    uint _e93 = scratch.inner[metal::min(SCRATCH_NET, 11u)];
     float net_1 = as_type<float>(_e93);
-    uint _e101 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 21u)];
+    uint _e101 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 11u)];
     if (net_1 > (0.000001 * as_type<float>(_e101))) {
         uint _e107 = F32_INF;
         if (ray_14.tmax == as_type<float>(_e107)) {
@@ -1360,7 +1360,7 @@ float shadow_query(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
-    uint _e10 = scratch.inner[metal::min(SCRATCH_MEDIUM, 21u)];
+    uint _e10 = scratch.inner[metal::min(SCRATCH_MEDIUM, 11u)];
     float _e11 = shadow_transmittance(_e4, _e10, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
     return _e11;
 }

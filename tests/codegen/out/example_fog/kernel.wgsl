@@ -192,7 +192,7 @@ var<storage> triangles: array<vec4<f32>>;
 var<private> hit_error: f32;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
-var<private> scratch: array<u32, 22>;
+var<private> scratch: array<u32, 12>;
 var<private> traversal_stack: array<u32, 74>;
 var<private> ray_count: u32;
 var<private> spawn_dirs: array<vec3<f32>, 1>;
@@ -531,7 +531,7 @@ fn absorb_query(density: f32) {
     if !(HAS_ABSORB) {
         return;
     }
-    let side = scratch[min(SCRATCH_ABSORB, 21u)];
+    let side = scratch[min(SCRATCH_ABSORB, 11u)];
     if (side == 0u) {
         return;
     }
@@ -540,21 +540,21 @@ fn absorb_query(density: f32) {
     if (_e13 && (density > 0f)) {
         sigma = density;
     }
-    let _e22 = scratch[min(SCRATCH_ABSORB_T, 21u)];
+    let _e22 = scratch[min(SCRATCH_ABSORB_T, 11u)];
     let t_6 = bitcast<f32>(_e22);
     let _e24 = sigma;
     let _e25 = sigma;
     let s_6 = select(_e24, -(_e25), (side == 2u));
-    let _e35 = scratch[min(SCRATCH_DEPTH, 21u)];
+    let _e35 = scratch[min(SCRATCH_DEPTH, 11u)];
     let depth_2 = (bitcast<f32>(_e35) - (s_6 * t_6));
-    scratch[min(SCRATCH_DEPTH, 21u)] = bitcast<u32>(depth_2);
-    let _e50 = scratch[min(SCRATCH_NET, 21u)];
+    scratch[min(SCRATCH_DEPTH, 11u)] = bitcast<u32>(depth_2);
+    let _e50 = scratch[min(SCRATCH_NET, 11u)];
     let net = (bitcast<f32>(_e50) + s_6);
-    scratch[min(SCRATCH_NET, 21u)] = bitcast<u32>(net);
-    let _e64 = scratch[min(SCRATCH_DENSITY_MAX, 21u)];
+    scratch[min(SCRATCH_NET, 11u)] = bitcast<u32>(net);
+    let _e64 = scratch[min(SCRATCH_DENSITY_MAX, 11u)];
     let _e66 = sigma;
     let most = max(bitcast<f32>(_e64), _e66);
-    scratch[min(SCRATCH_DENSITY_MAX, 21u)] = bitcast<u32>(most);
+    scratch[min(SCRATCH_DENSITY_MAX, 11u)] = bitcast<u32>(most);
     return;
 }
 
@@ -575,11 +575,11 @@ fn accept(inst_4: GpuInstance, ray_5: Ray, c_1: Candidate) -> bool {
         let _e10 = finish_hit(ray_5, c_1);
         hit_error = shaded;
         if (ray_5.kind == RAY_SHADOW) {
-            scratch[min(SCRATCH_ABSORB, 21u)] = select(2u, 1u, _e10.front_face);
-            scratch[min(SCRATCH_ABSORB_T, 21u)] = bitcast<u32>((c_1.t * length(ray_5.dir)));
+            scratch[min(SCRATCH_ABSORB, 11u)] = select(2u, 1u, _e10.front_face);
+            scratch[min(SCRATCH_ABSORB_T, 11u)] = bitcast<u32>((c_1.t * length(ray_5.dir)));
         }
         let _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
-        scratch[min(SCRATCH_ABSORB, 21u)] = 0u;
+        scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
         return _e36;
     }
     return true;
@@ -914,7 +914,7 @@ fn miss(ray_11: Ray) -> vec3<f32> {
 }
 
 fn shading_medium(medium: u32) {
-    scratch[min(SCRATCH_MEDIUM, 21u)] = medium;
+    scratch[min(SCRATCH_MEDIUM, 11u)] = medium;
     return;
 }
 
@@ -1000,19 +1000,19 @@ fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32)
 fn shadow_transmittance(ray_14: Ray, medium_1: u32) -> f32 {
     var depth: f32;
 
-    scratch[min(SCRATCH_ABSORB, 21u)] = 0u;
-    scratch[min(SCRATCH_DEPTH, 21u)] = 0u;
-    scratch[min(SCRATCH_NET, 21u)] = 0u;
-    scratch[min(SCRATCH_DENSITY_MAX, 21u)] = 0u;
+    scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
+    scratch[min(SCRATCH_DEPTH, 11u)] = 0u;
+    scratch[min(SCRATCH_NET, 11u)] = 0u;
+    scratch[min(SCRATCH_DENSITY_MAX, 11u)] = 0u;
     if (HAS_MEDIA && HAS_ANY_HIT) {
         if (medium_1 != 0u) {
             let inst_8 = instances[(medium_1 - 1u)];
             if ((inst_8.flags & FLAG_ANY_HIT) != 0u) {
                 let start = Hit(ray_14.origin, 0f, -(ray_14.dir), -(ray_14.dir), vec2(0f), true, inst_8.object, 0u);
-                scratch[min(SCRATCH_ABSORB, 21u)] = 1u;
-                scratch[min(SCRATCH_ABSORB_T, 21u)] = 0u;
+                scratch[min(SCRATCH_ABSORB, 11u)] = 1u;
+                scratch[min(SCRATCH_ABSORB_T, 11u)] = 0u;
                 let _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start);
-                scratch[min(SCRATCH_ABSORB, 21u)] = 0u;
+                scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
             }
         }
     }
@@ -1020,11 +1020,11 @@ fn shadow_transmittance(ray_14: Ray, medium_1: u32) -> f32 {
     if (_e75.slot != NO_HIT) {
         return 0f;
     }
-    let _e85 = scratch[min(SCRATCH_DEPTH, 21u)];
+    let _e85 = scratch[min(SCRATCH_DEPTH, 11u)];
     depth = bitcast<f32>(_e85);
-    let _e93 = scratch[min(SCRATCH_NET, 21u)];
+    let _e93 = scratch[min(SCRATCH_NET, 11u)];
     let net_1 = bitcast<f32>(_e93);
-    let _e101 = scratch[min(SCRATCH_DENSITY_MAX, 21u)];
+    let _e101 = scratch[min(SCRATCH_DENSITY_MAX, 11u)];
     if (net_1 > (0.000001f * bitcast<f32>(_e101))) {
         let _e107 = F32_INF;
         if (ray_14.tmax == bitcast<f32>(_e107)) {
@@ -1039,7 +1039,7 @@ fn shadow_transmittance(ray_14: Ray, medium_1: u32) -> f32 {
 
 fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
     let _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    let _e10 = scratch[min(SCRATCH_MEDIUM, 21u)];
+    let _e10 = scratch[min(SCRATCH_MEDIUM, 11u)];
     let _e11 = shadow_transmittance(_e4, _e10);
     return _e11;
 }

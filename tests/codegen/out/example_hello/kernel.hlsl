@@ -181,13 +181,6 @@ static const float GAMMA_4_ = 2.3841864e-7;
 static const bool HAS_SECONDARY_RAYS = true;
 static const bool HAS_BACKGROUND = true;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
-static const uint SCRATCH_RESOLVED = 3u;
-static const uint SCRATCH_LIGHT_BITS = 11u;
-static const uint SCRATCH_QUERY = 2u;
-static const uint SCRATCH_PENDING = 4u;
-static const uint LIGHT_QUERIES = 32u;
-static const uint COUNTER_SHADOW_OVERFLOW = 3u;
-static const uint SCRATCH_LIGHT_QUERY = 12u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
 static const float INV_PI = 0.31830987;
@@ -209,11 +202,10 @@ static uint traversal_stack[65] = (uint[65])0;
 static float hit_error = (float)0;
 ByteAddressBuffer attributes : register(t5);
 static uint ray_count = (uint)0;
-static uint scratch[22] = (uint[22])0;
-RWByteAddressBuffer counters : register(u9);
 static float3 spawn_dirs[1] = (float3[1])0;
 static float3 spawn_weights[1] = (float3[1])0;
 static uint spawn_count = (uint)0;
+RWByteAddressBuffer counters : register(u9);
 RWByteAddressBuffer accum : register(u8);
 
 uint2 naga_div(uint2 lhs, uint2 rhs) {
@@ -491,15 +483,15 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float cx = (c_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float cy = (c_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u = ((cx * by) - (cy * bx));
-    float v_2 = ((ax * cy) - (ay * cx));
+    float v_1 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
-    bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
-    float det = ((u + v_2) + w);
+    bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
+    float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
-    float t_3 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_3 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_8 ? float3(t_3, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_8 ? float3(t_3, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -1128,88 +1120,11 @@ PointLight load_PointLight(uint offset_5)
     return pointlight;
 }
 
-void scratch_store3f(uint i_1, float3 v_1)
-{
-    uint3 b_7 = asuint(v_1);
-    scratch[min(uint(min(i_1, 21u)), 21u)] = b_7.x;
-    scratch[min(uint(min((i_1 + 1u), 21u)), 21u)] = b_7.y;
-    scratch[min(uint(min((i_1 + 2u), 21u)), 21u)] = b_7.z;
-    return;
-}
-
-float shadow_deferred(float3 position, float3 normal, float3 dir, float dist)
-{
-    uint i_5 = scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)];
-    scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)] = (i_5 + 1u);
-    uint _e22 = scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)];
-    if ((i_5 < _e22)) {
-        uint _e29 = scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)];
-        return float(((_e29 >> (i_5 & 31u)) & 1u));
-    }
-    uint _e41 = scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)];
-    if ((_e41 != 0u)) {
-        return 1.0;
-    }
-    if ((i_5 >= LIGHT_QUERIES)) {
-        counters.InterlockedAdd(min(COUNTER_SHADOW_OVERFLOW, 3u)*4, 1u);
-        return 1.0;
-    }
-    scratch_store3f(SCRATCH_LIGHT_QUERY, position);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 21u)), 21u)] = asuint(dist);
-    scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)] = 1u;
-    return 1.0;
-}
-
-LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
-    LightSample ret = (LightSample)0;
-    ret.dir = arg0;
-    ret.dist = arg1;
-    ret.radiance = arg2;
-    ret.pdf = arg3;
-    return ret;
-}
-
-LightSample point_light(PointLight l, float3 position_1, float3 normal_1)
-{
-    float strength = (float)0;
-
-    float3 to_light = (l.position - position_1);
-    float dist_3 = length(to_light);
-    float3 dir_7 = (to_light / (max(dist_3, 1e-20)).xxx);
-    strength = (l.intensity / max((dist_3 * dist_3), 1e-20));
-    if ((l.range > 0.0)) {
-        float _e19 = strength;
-        strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_3)));
-    }
-    const float _e26 = shadow_deferred(position_1, normal_1, dir_7, dist_3);
-    float _e28 = strength;
-    const LightSample lightsample = ConstructLightSample(dir_7, dist_3, ((l.color * (_e28).xxx) * (_e26).xxx), 0.0);
-    return lightsample;
-}
-
-LightSample dispatch_light(uint type_id_2, uint offset_6, float3 position_2, float3 normal_2)
-{
-    const PointLight _e3 = load_PointLight(offset_6);
-    const LightSample _e4 = point_light(_e3, position_2, normal_2);
-    const LightSample lightsample_1 = _e4;
-    return lightsample_1;
-}
-
-float3 scratch_load3f(uint i_2)
-{
-    uint _e5 = scratch[min(uint(min(i_2, 21u)), 21u)];
-    uint _e12 = scratch[min(uint(min((i_2 + 1u), 21u)), 21u)];
-    uint _e19 = scratch[min(uint(min((i_2 + 2u), 21u)), 21u)];
-    return asfloat(uint3(_e5, _e12, _e19));
-}
-
 float3 step_toward(float3 x_1, float3 s)
 {
-    uint3 bits_2 = asuint(x_1);
+    uint3 bits_1 = asuint(x_1);
     bool3 up_1 = ((sign(x_1) * sign(s)) > (0.0).xxx);
-    float3 stepped = asfloat((up_1 ? (bits_2 + (1u).xxx) : (bits_2 - (1u).xxx)));
+    float3 stepped = asfloat((up_1 ? (bits_1 + (1u).xxx) : (bits_1 - (1u).xxx)));
     float3 from_zero = ((s > (0.0).xxx) ? (1.1754944e-38).xxx : (-1.1754944e-38).xxx);
     float3 moved = ((x_1 == (0.0).xxx) ? from_zero : stepped);
     return (!((s == (0.0).xxx)) ? moved : x_1);
@@ -1223,149 +1138,119 @@ float3 offset_origin(float3 p_5, float3 n_3, float error)
     return _e17;
 }
 
-Ray shadow_ray(float3 position_3, float3 normal_3, float3 dir_1, float dist_1)
+Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
 {
     float3 n_4 = (float3)0;
     float tmax_4 = (float)0;
 
-    n_4 = normal_3;
+    n_4 = normal;
     float3 _e5 = n_4;
-    if ((dot(dir_1, _e5) < 0.0)) {
+    if ((dot(dir, _e5) < 0.0)) {
         float3 _e9 = n_4;
         n_4 = -(_e9);
     }
-    float3 a_6 = abs(position_3);
+    float3 a_6 = abs(position);
     float _e13 = hit_error;
     float error_3 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
     float3 _e22 = n_4;
-    const float3 _e23 = offset_origin(position_3, _e22, error_3);
+    const float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = asfloat(_e25);
     uint _e29 = F32_INF;
-    if ((dist_1 < asfloat(_e29))) {
-        float3 light = (position_3 + (dir_1 * (dist_1).xxx));
-        float dd_1 = dot(dir_1, dir_1);
-        float along_1 = (dot((light - _e23), dir_1) / dd_1);
-        float3 l_1 = (abs(position_3) + abs((dir_1 * (dist_1).xxx)));
+    if ((dist < asfloat(_e29))) {
+        float3 light = (position + (dir * (dist).xxx));
+        float dd_1 = dot(dir, dir);
+        float along_1 = (dot((light - _e23), dir) / dd_1);
+        float3 l_1 = (abs(position) + abs((dir * (dist).xxx)));
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_24 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    const Ray ray_24 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
     return ray_24;
 }
 
-float shadow_query(float3 position_4, float3 normal_4, float3 dir_2, float dist_2)
+float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
 {
-    const Ray _e4 = shadow_ray(position_4, normal_4, dir_2, dist_2);
+    const Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
     const Candidate _e6 = intersect_scene(_e4, true);
     return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample ZeroValueLightSample() {
-    return (LightSample)0;
+LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
+    LightSample ret = (LightSample)0;
+    ret.dir = arg0;
+    ret.dist = arg1;
+    ret.radiance = arg2;
+    ret.pdf = arg3;
+    return ret;
 }
 
-LightSample sample_light_deferred(uint i_3, float3 position_5, float3 normal_5)
+LightSample point_light(PointLight l, float3 position_2, float3 normal_2)
 {
-    uint after = (uint)0;
-    uint resolved = (uint)0;
-    uint bits_1 = (uint)0;
+    float strength = (float)0;
 
+    float3 to_light = (l.position - position_2);
+    float dist_2 = length(to_light);
+    float3 dir_6 = (to_light / (max(dist_2, 1e-20)).xxx);
+    strength = (l.intensity / max((dist_2 * dist_2), 1e-20));
+    if ((l.range > 0.0)) {
+        float _e19 = strength;
+        strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_2)));
+    }
+    const float _e26 = shadow_query(position_2, normal_2, dir_6, dist_2);
+    float _e28 = strength;
+    const LightSample lightsample = ConstructLightSample(dir_6, dist_2, ((l.color * (_e28).xxx) * (_e26).xxx), 0.0);
+    return lightsample;
+}
+
+LightSample dispatch_light(uint type_id_2, uint offset_6, float3 position_3, float3 normal_3)
+{
+    const PointLight _e3 = load_PointLight(offset_6);
+    const LightSample _e4 = point_light(_e3, position_3, normal_3);
+    const LightSample lightsample_1 = _e4;
+    return lightsample_1;
+}
+
+LightSample sample_light_query(uint i_1, float3 position_4, float3 normal_4)
+{
     FrameUniforms frame_4 = frame;
-    if ((i_3 >= frame_4.light_count)) {
+    if ((i_1 >= frame_4.light_count)) {
         const LightSample lightsample_2 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_2;
     }
-    uint entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
-    uint type_id_6 = asuint(params.Load(entry*4));
-    uint offset_12 = asuint(params.Load((entry + 1u)*4));
-    uint start = rng_state;
-    after = start;
-    resolved = 0u;
-    bits_1 = 0u;
-    scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)] = 0u;
-    scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)] = 0u;
-    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
-    while(true) {
-        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        rng_state = start;
-        scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)] = 0u;
-        scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)] = 0u;
-        const LightSample _e60 = dispatch_light(type_id_6, offset_12, position_5, normal_5);
-        uint _e66 = scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)];
-        if ((_e66 == 0u)) {
-            uint _e69 = resolved;
-            if ((_e69 > 0u)) {
-                uint _e72 = after;
-                rng_state = _e72;
-            }
-            const LightSample lightsample_3 = _e60;
-            return lightsample_3;
-        }
-        uint _e74 = resolved;
-        if ((_e74 == 0u)) {
-            uint _e78 = rng_state;
-            after = _e78;
-        }
-        uint _e79 = after;
-        rng_state = _e79;
-        const float3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
-        const float3 _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
-        const float3 _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        uint _e95 = scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 21u)), 21u)];
-        const float _e97 = shadow_query(_e82, _e85, _e88, asfloat(_e95));
-        uint _e99 = rng_state;
-        after = _e99;
-        if (!((_e97 == 0.0))) {
-            uint _e108 = scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)];
-            uint _e109 = resolved;
-            if ((_e108 == (_e109 + 1u))) {
-                uint _e113 = after;
-                rng_state = _e113;
-                const LightSample lightsample_4 = _e60;
-                return lightsample_4;
-            }
-            uint _e115 = bits_1;
-            uint _e117 = resolved;
-            bits_1 = (_e115 | (1u << (_e117 & 31u)));
-        }
-        uint _e122 = resolved;
-        resolved = (_e122 + 1u);
-        uint _e126 = bits_1;
-        scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)] = _e126;
-        uint _e132 = resolved;
-        scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)] = _e132;
-    }
-    const LightSample lightsample_5 = ZeroValueLightSample();
-    return lightsample_5;
+    uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
+    uint _e22 = asuint(params.Load(entry*4));
+    uint _e27 = asuint(params.Load((entry + 1u)*4));
+    const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    const LightSample lightsample_3 = _e28;
+    return lightsample_3;
 }
 
 float3 lambert_shade(Lambert m, Ray ray_12, Hit hit_2)
 {
     float3 color = (float3)0;
-    uint i_4 = (uint)0;
+    uint i_2 = (uint)0;
 
     const float3 _e3 = shading_normal(ray_12, hit_2);
     color = (0.0).xxx;
     const uint _e8 = light_count_query();
-    i_4 = 0u;
-    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    i_2 = 0u;
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
-        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e30 = i_4;
-            i_4 = (_e30 + 1u);
+            uint _e30 = i_2;
+            i_2 = (_e30 + 1u);
         }
         loop_init_2 = false;
-        uint _e10 = i_4;
+        uint _e10 = i_2;
         if ((_e10 >= _e8)) {
             break;
         }
-        uint _e12 = i_4;
-        const LightSample _e15 = sample_light_deferred(_e12, hit_2.position, hit_2.geometric_normal);
+        uint _e12 = i_2;
+        const LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
         float3 _e16 = color;
         color = (_e16 + (((m.albedo * (INV_PI).xxx) * _e15.radiance) * (max(dot(_e3, _e15.dir), 0.0)).xxx));
     }
@@ -1446,11 +1331,11 @@ float3 through_medium(Ray ray_17, float t_1, float3 radiance_1)
     return _e21;
 }
 
-void rt_spawn(float3 dir_3, float3 weight)
+void rt_spawn(float3 dir_2, float3 weight)
 {
     uint _e3 = spawn_count;
     if ((_e3 < 1u)) {
-        spawn_dirs[min(uint(_e3), 0u)] = dir_3;
+        spawn_dirs[min(uint(_e3), 0u)] = dir_2;
         spawn_weights[min(uint(_e3), 0u)] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1470,24 +1355,24 @@ void dispatch_secondary_rays(uint type_id_5, uint offset_10, Ray ray_19, Hit hit
     return;
 }
 
-float3 spawn_origin_at(float3 position_6, float3 normal_6, float error_1, float3 dir_4)
+float3 spawn_origin_at(float3 position_5, float3 normal_5, float error_1, float3 dir_3)
 {
     float3 n_5 = (float3)0;
 
-    n_5 = normal_6;
+    n_5 = normal_5;
     float3 _e5 = n_5;
-    if ((dot(dir_4, _e5) < 0.0)) {
+    if ((dot(dir_3, _e5) < 0.0)) {
         float3 _e9 = n_5;
         n_5 = -(_e9);
     }
     float3 _e11 = n_5;
-    const float3 _e12 = offset_origin(position_6, _e11, error_1);
+    const float3 _e12 = offset_origin(position_5, _e11, error_1);
     return _e12;
 }
 
-float3 spawn_origin(Hit hit_7, float error_2, float3 dir_5)
+float3 spawn_origin(Hit hit_7, float error_2, float3 dir_4)
 {
-    const float3 _e5 = spawn_origin_at(hit_7.position, hit_7.geometric_normal, error_2, dir_5);
+    const float3 _e5 = spawn_origin_at(hit_7.position, hit_7.geometric_normal, error_2, dir_4);
     return _e5;
 }
 
@@ -1495,7 +1380,7 @@ PathState path_step(PathState s_1, Candidate c_3)
 {
     PathState out_ = (PathState)0;
     bool spawned = (bool)0;
-    float3 dir_6 = (float3)0;
+    float3 dir_5 = (float3)0;
     float3 weight_1 = (float3)0;
     float3 beta = (float3)0;
 
@@ -1514,7 +1399,7 @@ PathState path_step(PathState s_1, Candidate c_3)
     const Hit _e22 = finish_hit(ray_25, c_3);
     float error_4 = hit_error;
     spawned = false;
-    dir_6 = (0.0).xxx;
+    dir_5 = (0.0).xxx;
     weight_1 = (0.0).xxx;
     if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_25.depth < MAX_DEPTH))) {
         spawn_count = 0u;
@@ -1523,7 +1408,7 @@ PathState path_step(PathState s_1, Candidate c_3)
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
             float3 _e56 = spawn_dirs[0u];
-            dir_6 = _e56;
+            dir_5 = _e56;
             float3 _e60 = spawn_weights[0u];
             weight_1 = _e60;
         }
@@ -1559,9 +1444,9 @@ PathState path_step(PathState s_1, Candidate c_3)
     }
     float3 _e109 = beta;
     out_.beta = _e109;
-    float3 _e111 = dir_6;
+    float3 _e111 = dir_5;
     const float3 _e112 = spawn_origin(_e22, error_4, _e111);
-    float3 _e114 = dir_6;
+    float3 _e114 = dir_5;
     uint _e116 = F32_INF;
     out_.ray = ConstructRay(_e112, 0.0, _e114, asfloat(_e116), (ray_25.depth + 1u), RAY_SECONDARY, ray_25.medium);
     out_.live = true;
@@ -1584,10 +1469,10 @@ float3 trace_path(Ray camera_ray)
     PathState s_2 = (PathState)0;
 
     s_2 = ConstructPathState(camera_ray, (1.0).xxx, (0.0).xxx, true);
-    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         PathState _e8 = s_2;
         Ray _e10 = s_2.ray;
         const Candidate _e12 = intersect_scene(_e10, false);
@@ -1654,11 +1539,11 @@ void render_pixel(uint2 pixel_3)
     bad = 0u;
     uint end_1 = frame_5.samples_per_pass;
     s_3 = 0u;
-    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
-        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         if (!loop_init_3) {
             uint _e46 = s_3;
             s_3 = (_e46 + 1u);

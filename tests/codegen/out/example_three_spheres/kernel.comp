@@ -176,13 +176,6 @@ const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
 const uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 const uint RGBA16F_TEXEL_WORDS = 2u;
 const uint LIGHT_ENTRY_STRIDE = 2u;
-const uint SCRATCH_RESOLVED = 3u;
-const uint SCRATCH_LIGHT_BITS = 11u;
-const uint SCRATCH_QUERY = 2u;
-const uint SCRATCH_PENDING = 4u;
-const uint LIGHT_QUERIES = 32u;
-const uint COUNTER_SHADOW_OVERFLOW = 3u;
-const uint SCRATCH_LIGHT_QUERY = 12u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const uint RAY_SHADOW = 2u;
 const uint FLAG_MEDIUM = 4u;
@@ -220,15 +213,13 @@ uint ray_count = 0u;
 
 layout(std430, binding = 7) readonly buffer type_4_block_7Compute { uint _group_0_binding_7_cs[]; };
 
-uint scratch[22] = uint[22](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
-
-layout(std430, binding = 9) buffer type_20_block_8Compute { uint _group_0_binding_9_cs[]; };
-
 vec3 spawn_dirs[1] = vec3[1](vec3(0.0));
 
 vec3 spawn_weights[1] = vec3[1](vec3(0.0));
 
 uint spawn_count = 0u;
+
+layout(std430, binding = 9) buffer type_22_block_8Compute { uint _group_0_binding_9_cs[]; };
 
 layout(std430, binding = 8) buffer type_10_block_9Compute { vec4 _group_0_binding_8_cs[]; };
 
@@ -414,15 +405,15 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
     float cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
-    float v_2 = ((ax * cy) - (ay * cx));
+    float v_1 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
-    bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
-    float det = ((u + v_2) + w);
+    bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
+    float det = ((u + v_1) + w);
     float rcp = (1.0 / det);
-    float t_7 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    float t_7 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
     bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_7 >= tmin)) && (t_7 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_7 ? vec3(t_7, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_7 ? vec3(t_7, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
@@ -671,18 +662,18 @@ Triangle mesh_triangle_query(uint m_1, uint i_1) {
 
 Intersection intersect_triangle(Ray ray_7, Triangle tri) {
     uvec3 _e10 = uvec3(2139095040u);
-    vec3 dir_5 = mix(ray_7.dir, vec3(0.0), lessThan(abs(ray_7.dir), vec3(1.1754944e-38)));
-    vec3 _e31 = abs(dir_5);
+    vec3 dir_4 = mix(ray_7.dir, vec3(0.0), lessThan(abs(ray_7.dir), vec3(1.1754944e-38)));
+    vec3 _e31 = abs(dir_4);
     bool _e38 = (_e31.y > _e31.x);
     uint kz_1 = ((_e31.z > (_e38 ? _e31.y : _e31.x)) ? 2u : (_e38 ? 1u : 0u));
     uint _e45 = ((kz_1 == 2u) ? 0u : (kz_1 + 1u));
     uint _e49 = ((kz_1 >= 1u) ? (kz_1 - 1u) : (kz_1 + 2u));
-    float dz_1 = dir_5[kz_1];
+    float dz_1 = dir_4[kz_1];
     bool _e52 = (dz_1 < 0.0);
     uint kx_1 = (_e52 ? _e49 : _e45);
     uint ky_1 = (_e52 ? _e45 : _e49);
-    float sx = (dir_5[kx_1] / dz_1);
-    float sy = (dir_5[ky_1] / dz_1);
+    float sx = (dir_4[kx_1] / dz_1);
+    float sy = (dir_4[ky_1] / dz_1);
     float sz = (1.0 / dz_1);
     vec3 _e62 = (tri.v0_ - ray_7.origin);
     float _e68 = (_e62[kx_1] - (sx * _e62[kz_1]));
@@ -694,15 +685,15 @@ Intersection intersect_triangle(Ray ray_7, Triangle tri) {
     float _e86 = (_e80[kx_1] - (sx * _e80[kz_1]));
     float _e87 = (_e80[ky_1] - (sy * _e80[kz_1]));
     float u_1 = ((_e86 * _e78) - (_e87 * _e77));
-    float v_3 = ((_e68 * _e87) - (_e69 * _e86));
+    float v_2 = ((_e68 * _e87) - (_e69 * _e86));
     float w_1 = ((_e77 * _e69) - (_e78 * _e68));
-    float det_1 = ((u_1 + v_3) + w_1);
+    float det_1 = ((u_1 + v_2) + w_1);
     float _e112 = (1.0 / det_1);
-    float t_8 = ((((u_1 * (sz * _e62[kz_1])) + (v_3 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
-    bool hit_8 = (((((all(lessThan((floatBitsToUint(ray_7.origin) & uvec3(2147483647u)), _e10)) && all(lessThan((floatBitsToUint(ray_7.dir) & uvec3(2147483647u)), _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_8 >= ray_7.tmin) && (t_8 <= ray_7.tmax)));
+    float t_8 = ((((u_1 * (sz * _e62[kz_1])) + (v_2 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
+    bool hit_8 = (((((all(lessThan((floatBitsToUint(ray_7.origin) & uvec3(2147483647u)), _e10)) && all(lessThan((floatBitsToUint(ray_7.dir) & uvec3(2147483647u)), _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_8 >= ray_7.tmin) && (t_8 <= ray_7.tmax)));
     vec3 _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     uint _e137 = F32_INF;
-    return Intersection((hit_8 ? t_8 : uintBitsToFloat(_e137)), (hit_8 ? _e132 : vec3(0.0, 0.0, 1.0)), (hit_8 ? vec2((v_3 * _e112), (w_1 * _e112)) : vec2(0.0)));
+    return Intersection((hit_8 ? t_8 : uintBitsToFloat(_e137)), (hit_8 ? _e132 : vec3(0.0, 0.0, 1.0)), (hit_8 ? vec2((v_2 * _e112), (w_1 * _e112)) : vec2(0.0)));
 }
 
 Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_8) {
@@ -1295,70 +1286,10 @@ PointLight load_PointLight(uint offset_8) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
-void scratch_store3f(uint i_3, vec3 v_1) {
-    uvec3 b_10 = floatBitsToUint(v_1);
-    scratch[min(i_3, 21u)] = b_10.x;
-    scratch[min((i_3 + 1u), 21u)] = b_10.y;
-    scratch[min((i_3 + 2u), 21u)] = b_10.z;
-    return;
-}
-
-float shadow_deferred(vec3 position, vec3 normal, vec3 dir, float dist) {
-    uint i_8 = scratch[min(SCRATCH_QUERY, 21u)];
-    scratch[min(SCRATCH_QUERY, 21u)] = (i_8 + 1u);
-    uint _e22 = scratch[min(SCRATCH_RESOLVED, 21u)];
-    if ((i_8 < _e22)) {
-        uint _e29 = scratch[min(SCRATCH_LIGHT_BITS, 21u)];
-        return float(((_e29 >> (i_8 & 31u)) & 1u));
-    }
-    uint _e41 = scratch[min(SCRATCH_PENDING, 21u)];
-    if ((_e41 != 0u)) {
-        return 1.0;
-    }
-    if ((i_8 >= LIGHT_QUERIES)) {
-        atomicAdd(_group_0_binding_9_cs[min(COUNTER_SHADOW_OVERFLOW, 3u)], 1u);
-        return 1.0;
-    }
-    scratch_store3f(SCRATCH_LIGHT_QUERY, position);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)] = floatBitsToUint(dist);
-    scratch[min(SCRATCH_PENDING, 21u)] = 1u;
-    return 1.0;
-}
-
-LightSample point_light(PointLight l, vec3 position_1, vec3 normal_1) {
-    float strength = 0.0;
-    vec3 to_light = (l.position - position_1);
-    float dist_3 = length(to_light);
-    vec3 dir_6 = (to_light / vec3(max(dist_3, 1e-20)));
-    strength = (l.intensity / max((dist_3 * dist_3), 1e-20));
-    if ((l.range > 0.0)) {
-        float _e19 = strength;
-        strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_3)));
-    }
-    float _e26 = shadow_deferred(position_1, normal_1, dir_6, dist_3);
-    float _e28 = strength;
-    return LightSample(dir_6, dist_3, ((l.color * vec3(_e28)) * vec3(_e26)), 0.0);
-}
-
-LightSample dispatch_light(uint type_id_3, uint offset_9, vec3 position_2, vec3 normal_2) {
-    PointLight _e3 = load_PointLight(offset_9);
-    LightSample _e4 = point_light(_e3, position_2, normal_2);
-    return _e4;
-}
-
-vec3 scratch_load3f(uint i_4) {
-    uint _e5 = scratch[min(i_4, 21u)];
-    uint _e12 = scratch[min((i_4 + 1u), 21u)];
-    uint _e19 = scratch[min((i_4 + 2u), 21u)];
-    return uintBitsToFloat(uvec3(_e5, _e12, _e19));
-}
-
 vec3 step_toward(vec3 x_3, vec3 s_1) {
-    uvec3 bits_2 = floatBitsToUint(x_3);
+    uvec3 bits_1 = floatBitsToUint(x_3);
     bvec3 up_1 = greaterThan((sign(x_3) * sign(s_1)), vec3(0.0));
-    vec3 stepped = uintBitsToFloat(mix((bits_2 - uvec3(1u)), (bits_2 + uvec3(1u)), up_1));
+    vec3 stepped = uintBitsToFloat(mix((bits_1 - uvec3(1u)), (bits_1 + uvec3(1u)), up_1));
     vec3 from_zero = mix(vec3(-1.1754944e-38), vec3(1.1754944e-38), greaterThan(s_1, vec3(0.0)));
     vec3 moved = mix(stepped, from_zero, equal(x_3, vec3(0.0)));
     return mix(x_3, moved, not(equal(s_1, vec3(0.0))));
@@ -1371,127 +1302,93 @@ vec3 offset_origin(vec3 p_5, vec3 n_5, float error) {
     return _e17;
 }
 
-Ray shadow_ray(vec3 position_3, vec3 normal_3, vec3 dir_1, float dist_1) {
+Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
     vec3 n_6 = vec3(0.0);
     float tmax_5 = 0.0;
-    n_6 = normal_3;
+    n_6 = normal;
     vec3 _e5 = n_6;
-    if ((dot(dir_1, _e5) < 0.0)) {
+    if ((dot(dir, _e5) < 0.0)) {
         vec3 _e9 = n_6;
         n_6 = -(_e9);
     }
-    vec3 a_9 = abs(position_3);
+    vec3 a_9 = abs(position);
     float _e13 = hit_error;
     float error_3 = max(_e13, (GAMMA_4_ * max(max(a_9.x, a_9.y), a_9.z)));
     vec3 _e22 = n_6;
-    vec3 _e23 = offset_origin(position_3, _e22, error_3);
+    vec3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_5 = uintBitsToFloat(_e25);
     uint _e29 = F32_INF;
-    if ((dist_1 < uintBitsToFloat(_e29))) {
-        vec3 light = (position_3 + (dir_1 * vec3(dist_1)));
-        float dd_1 = dot(dir_1, dir_1);
-        float along_1 = (dot((light - _e23), dir_1) / dd_1);
-        vec3 l_2 = (abs(position_3) + abs((dir_1 * vec3(dist_1))));
+    if ((dist < uintBitsToFloat(_e29))) {
+        vec3 light = (position + (dir * vec3(dist)));
+        float dd_1 = dot(dir, dir);
+        float along_1 = (dot((light - _e23), dir) / dd_1);
+        vec3 l_2 = (abs(position) + abs((dir * vec3(dist))));
         tmax_5 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_5;
-    return Ray(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-float shadow_query(vec3 position_4, vec3 normal_4, vec3 dir_2, float dist_2) {
-    Ray _e4 = shadow_ray(position_4, normal_4, dir_2, dist_2);
+float shadow_query(vec3 position_1, vec3 normal_1, vec3 dir_1, float dist_1) {
+    Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
     Candidate _e6 = intersect_scene(_e4, true);
     return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample sample_light_deferred(uint i_5, vec3 position_5, vec3 normal_5) {
-    uint after = 0u;
-    uint resolved = 0u;
-    uint bits_1 = 0u;
+LightSample point_light(PointLight l, vec3 position_2, vec3 normal_2) {
+    float strength = 0.0;
+    vec3 to_light = (l.position - position_2);
+    float dist_2 = length(to_light);
+    vec3 dir_5 = (to_light / vec3(max(dist_2, 1e-20)));
+    strength = (l.intensity / max((dist_2 * dist_2), 1e-20));
+    if ((l.range > 0.0)) {
+        float _e19 = strength;
+        strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_2)));
+    }
+    float _e26 = shadow_query(position_2, normal_2, dir_5, dist_2);
+    float _e28 = strength;
+    return LightSample(dir_5, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0.0);
+}
+
+LightSample dispatch_light(uint type_id_3, uint offset_9, vec3 position_3, vec3 normal_3) {
+    PointLight _e3 = load_PointLight(offset_9);
+    LightSample _e4 = point_light(_e3, position_3, normal_3);
+    return _e4;
+}
+
+LightSample sample_light_query(uint i_3, vec3 position_4, vec3 normal_4) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    if ((i_5 >= frame_4.light_count)) {
+    if ((i_3 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
-    uint entry = (frame_4.light_table + (i_5 * LIGHT_ENTRY_STRIDE));
-    uint type_id_7 = _group_0_binding_6_cs[entry];
-    uint offset_15 = _group_0_binding_6_cs[(entry + 1u)];
-    uint start = rng_state;
-    after = start;
-    resolved = 0u;
-    bits_1 = 0u;
-    scratch[min(SCRATCH_RESOLVED, 21u)] = 0u;
-    scratch[min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
-    while(true) {
-        rng_state = start;
-        scratch[min(SCRATCH_QUERY, 21u)] = 0u;
-        scratch[min(SCRATCH_PENDING, 21u)] = 0u;
-        LightSample _e60 = dispatch_light(type_id_7, offset_15, position_5, normal_5);
-        uint _e66 = scratch[min(SCRATCH_PENDING, 21u)];
-        if ((_e66 == 0u)) {
-            uint _e69 = resolved;
-            if ((_e69 > 0u)) {
-                uint _e72 = after;
-                rng_state = _e72;
-            }
-            return _e60;
-        }
-        uint _e74 = resolved;
-        if ((_e74 == 0u)) {
-            uint _e78 = rng_state;
-            after = _e78;
-        }
-        uint _e79 = after;
-        rng_state = _e79;
-        vec3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
-        vec3 _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
-        vec3 _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        uint _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)];
-        float _e97 = shadow_query(_e82, _e85, _e88, uintBitsToFloat(_e95));
-        uint _e99 = rng_state;
-        after = _e99;
-        if (!((_e97 == 0.0))) {
-            uint _e108 = scratch[min(SCRATCH_QUERY, 21u)];
-            uint _e109 = resolved;
-            if ((_e108 == (_e109 + 1u))) {
-                uint _e113 = after;
-                rng_state = _e113;
-                return _e60;
-            }
-            uint _e115 = bits_1;
-            uint _e117 = resolved;
-            bits_1 = (_e115 | (1u << (_e117 & 31u)));
-        }
-        uint _e122 = resolved;
-        resolved = (_e122 + 1u);
-        uint _e126 = bits_1;
-        scratch[min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
-        uint _e132 = resolved;
-        scratch[min(SCRATCH_RESOLVED, 21u)] = _e132;
-    }
-    return LightSample(vec3(0.0), 0.0, vec3(0.0), 0.0);
+    uint entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    uint _e22 = _group_0_binding_6_cs[entry];
+    uint _e27 = _group_0_binding_6_cs[(entry + 1u)];
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    return _e28;
 }
 
 vec3 lambert_shade(Lambert m_2, Ray ray_18, Hit hit_2) {
     vec3 color = vec3(0.0);
-    uint i_6 = 0u;
+    uint i_4 = 0u;
     vec3 _e3 = shading_normal(ray_18, hit_2);
     color = vec3(0.0);
     uint _e8 = light_count_query();
-    i_6 = 0u;
+    i_4 = 0u;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e30 = i_6;
-            i_6 = (_e30 + 1u);
+            uint _e30 = i_4;
+            i_4 = (_e30 + 1u);
         }
         loop_init_3 = false;
-        uint _e10 = i_6;
+        uint _e10 = i_4;
         if ((_e10 >= _e8)) {
             break;
         }
-        uint _e12 = i_6;
-        LightSample _e15 = sample_light_deferred(_e12, hit_2.position, hit_2.geometric_normal);
+        uint _e12 = i_4;
+        LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
         vec3 _e16 = color;
         color = (_e16 + (((m_2.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0.0))));
     }
@@ -1535,21 +1432,21 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_23, Hit hit
     return;
 }
 
-vec3 spawn_origin_at(vec3 position_6, vec3 normal_6, float error_1, vec3 dir_3) {
+vec3 spawn_origin_at(vec3 position_5, vec3 normal_5, float error_1, vec3 dir_2) {
     vec3 n_7 = vec3(0.0);
-    n_7 = normal_6;
+    n_7 = normal_5;
     vec3 _e5 = n_7;
-    if ((dot(dir_3, _e5) < 0.0)) {
+    if ((dot(dir_2, _e5) < 0.0)) {
         vec3 _e9 = n_7;
         n_7 = -(_e9);
     }
     vec3 _e11 = n_7;
-    vec3 _e12 = offset_origin(position_6, _e11, error_1);
+    vec3 _e12 = offset_origin(position_5, _e11, error_1);
     return _e12;
 }
 
-vec3 spawn_origin(Hit hit_5, float error_2, vec3 dir_4) {
-    vec3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
+vec3 spawn_origin(Hit hit_5, float error_2, vec3 dir_3) {
+    vec3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_3);
     return _e5;
 }
 
@@ -1573,7 +1470,7 @@ vec3 trace(Ray camera_ray) {
     float t_6 = 0.0;
     Hit hit_6 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
-    uint i_7 = 0u;
+    uint i_5 = 0u;
     uint medium = 0u;
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false);
@@ -1669,24 +1566,24 @@ vec3 trace(Ray camera_ray) {
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
                         f = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_11, 0u);
-                        i_7 = 0u;
+                        i_5 = 0u;
                         bool loop_init_4 = true;
                         while(true) {
                             if (!loop_init_4) {
-                                uint _e175 = i_7;
-                                i_7 = (_e175 + 1u);
+                                uint _e175 = i_5;
+                                i_5 = (_e175 + 1u);
                             }
                             loop_init_4 = false;
-                            uint _e155 = i_7;
+                            uint _e155 = i_5;
                             if ((_e155 >= n_11)) {
                                 break;
                             }
-                            uint _e158 = i_7;
-                            uint _e162 = i_7;
+                            uint _e158 = i_5;
+                            uint _e162 = i_5;
                             vec3 _e165 = spawn_dirs[_e162];
                             f.dirs[min(_e158, 0u)] = _e165;
-                            uint _e167 = i_7;
-                            uint _e171 = i_7;
+                            uint _e167 = i_5;
+                            uint _e171 = i_5;
                             vec3 _e174 = spawn_weights[_e171];
                             f.weights[min(_e167, 0u)] = _e174;
                         }
@@ -1739,17 +1636,17 @@ vec3 trace(Ray camera_ray) {
         uint _e241 = stack_1[min(top_1, 3u)].next;
         uint _e246 = stack_1[min(top_1, 3u)].count;
         if ((_e241 < _e246)) {
-            uint i_9 = stack_1[min(top_1, 3u)].next;
-            stack_1[min(top_1, 3u)].next = (i_9 + 1u);
+            uint i_6 = stack_1[min(top_1, 3u)].next;
+            stack_1[min(top_1, 3u)].next = (i_6 + 1u);
             Ray parent = stack_1[min(top_1, 3u)].ray;
             Hit hit_9 = stack_1[min(top_1, 3u)].hit;
-            vec3 dir_7 = stack_1[min(top_1, 3u)].dirs[min(i_9, 0u)];
+            vec3 dir_6 = stack_1[min(top_1, 3u)].dirs[min(i_6, 0u)];
             medium = parent.medium;
             float _e283 = stack_1[min(top_1, 3u)].error;
-            vec3 _e284 = spawn_origin(hit_9, _e283, dir_7);
+            vec3 _e284 = spawn_origin(hit_9, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_24 = Ray(_e284, 0.0, dir_7, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_24 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack_1[min(top_1, 3u)].ray;
             s_ray = _e299;

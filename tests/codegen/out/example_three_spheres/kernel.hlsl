@@ -228,13 +228,6 @@ static const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
 static const uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 static const uint RGBA16F_TEXEL_WORDS = 2u;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
-static const uint SCRATCH_RESOLVED = 3u;
-static const uint SCRATCH_LIGHT_BITS = 11u;
-static const uint SCRATCH_QUERY = 2u;
-static const uint SCRATCH_PENDING = 4u;
-static const uint LIGHT_QUERIES = 32u;
-static const uint COUNTER_SHADOW_OVERFLOW = 3u;
-static const uint SCRATCH_LIGHT_QUERY = 12u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
 static const uint FLAG_MEDIUM = 4u;
@@ -258,11 +251,10 @@ static float hit_error = (float)0;
 ByteAddressBuffer attributes : register(t5);
 static uint ray_count = (uint)0;
 ByteAddressBuffer texels : register(t7);
-static uint scratch[22] = (uint[22])0;
-RWByteAddressBuffer counters : register(u9);
 static float3 spawn_dirs[1] = (float3[1])0;
 static float3 spawn_weights[1] = (float3[1])0;
 static uint spawn_count = (uint)0;
+RWByteAddressBuffer counters : register(u9);
 RWByteAddressBuffer accum : register(u8);
 
 uint2 naga_div(uint2 lhs, uint2 rhs) {
@@ -531,15 +523,15 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float cx = (c_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float cy = (c_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u = ((cx * by) - (cy * bx));
-    float v_2 = ((ax * cy) - (ay * cx));
+    float v_1 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
-    bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
-    float det = ((u + v_2) + w);
+    bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
+    float det = ((u + v_1) + w);
     float rcp_ = (1.0 / det);
-    float t_7 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_7 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_7 >= tmin)) && (t_7 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_7 ? float3(t_7, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_7 ? float3(t_7, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -858,18 +850,18 @@ Intersection ConstructIntersection(float arg0, float3 arg1, float2 arg2) {
 Intersection intersect_triangle(Ray ray_7, Triangle tri)
 {
     uint3 _e10 = (2139095040u).xxx;
-    float3 dir_5 = ((abs(ray_7.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_7.dir);
-    float3 _e31 = abs(dir_5);
+    float3 dir_4 = ((abs(ray_7.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_7.dir);
+    float3 _e31 = abs(dir_4);
     bool _e38 = (_e31.y > _e31.x);
     uint kz_1 = ((_e31.z > (_e38 ? _e31.y : _e31.x)) ? 2u : (_e38 ? 1u : 0u));
     uint _e45 = ((kz_1 == 2u) ? 0u : (kz_1 + 1u));
     uint _e49 = ((kz_1 >= 1u) ? (kz_1 - 1u) : (kz_1 + 2u));
-    float dz_1 = dir_5[min(uint(kz_1), 2u)];
+    float dz_1 = dir_4[min(uint(kz_1), 2u)];
     bool _e52 = (dz_1 < 0.0);
     uint kx_1 = (_e52 ? _e49 : _e45);
     uint ky_1 = (_e52 ? _e45 : _e49);
-    float sx = (dir_5[min(uint(kx_1), 2u)] / dz_1);
-    float sy = (dir_5[min(uint(ky_1), 2u)] / dz_1);
+    float sx = (dir_4[min(uint(kx_1), 2u)] / dz_1);
+    float sy = (dir_4[min(uint(ky_1), 2u)] / dz_1);
     float sz = (1.0 / dz_1);
     float3 _e62 = (tri.v0_ - ray_7.origin);
     float _e68 = (_e62[min(uint(kx_1), 2u)] - (sx * _e62[min(uint(kz_1), 2u)]));
@@ -881,15 +873,15 @@ Intersection intersect_triangle(Ray ray_7, Triangle tri)
     float _e86 = (_e80[min(uint(kx_1), 2u)] - (sx * _e80[min(uint(kz_1), 2u)]));
     float _e87 = (_e80[min(uint(ky_1), 2u)] - (sy * _e80[min(uint(kz_1), 2u)]));
     float u_1 = ((_e86 * _e78) - (_e87 * _e77));
-    float v_3 = ((_e68 * _e87) - (_e69 * _e86));
+    float v_2 = ((_e68 * _e87) - (_e69 * _e86));
     float w_1 = ((_e77 * _e69) - (_e78 * _e68));
-    float det_1 = ((u_1 + v_3) + w_1);
+    float det_1 = ((u_1 + v_2) + w_1);
     float _e112 = (1.0 / det_1);
-    float t_8 = ((((u_1 * (sz * _e62[min(uint(kz_1), 2u)])) + (v_3 * (sz * _e71[min(uint(kz_1), 2u)]))) + (w_1 * (sz * _e80[min(uint(kz_1), 2u)]))) * _e112);
-    bool hit_8 = (((((all(((asuint(ray_7.origin) & (2147483647u).xxx) < _e10)) && all(((asuint(ray_7.dir) & (2147483647u).xxx) < _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_8 >= ray_7.tmin) && (t_8 <= ray_7.tmax)));
+    float t_8 = ((((u_1 * (sz * _e62[min(uint(kz_1), 2u)])) + (v_2 * (sz * _e71[min(uint(kz_1), 2u)]))) + (w_1 * (sz * _e80[min(uint(kz_1), 2u)]))) * _e112);
+    bool hit_8 = (((((all(((asuint(ray_7.origin) & (2147483647u).xxx) < _e10)) && all(((asuint(ray_7.dir) & (2147483647u).xxx) < _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_8 >= ray_7.tmin) && (t_8 <= ray_7.tmax)));
     const float3 _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     uint _e137 = F32_INF;
-    const Intersection intersection = ConstructIntersection((hit_8 ? t_8 : asfloat(_e137)), (hit_8 ? _e132 : float3(0.0, 0.0, 1.0)), (hit_8 ? float2((v_3 * _e112), (w_1 * _e112)) : (0.0).xx));
+    const Intersection intersection = ConstructIntersection((hit_8 ? t_8 : asfloat(_e137)), (hit_8 ? _e132 : float3(0.0, 0.0, 1.0)), (hit_8 ? float2((v_2 * _e112), (w_1 * _e112)) : (0.0).xx));
     return intersection;
 }
 
@@ -1646,88 +1638,11 @@ PointLight load_PointLight(uint offset_8)
     return pointlight;
 }
 
-void scratch_store3f(uint i_3, float3 v_1)
-{
-    uint3 b_10 = asuint(v_1);
-    scratch[min(uint(min(i_3, 21u)), 21u)] = b_10.x;
-    scratch[min(uint(min((i_3 + 1u), 21u)), 21u)] = b_10.y;
-    scratch[min(uint(min((i_3 + 2u), 21u)), 21u)] = b_10.z;
-    return;
-}
-
-float shadow_deferred(float3 position, float3 normal, float3 dir, float dist)
-{
-    uint i_8 = scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)];
-    scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)] = (i_8 + 1u);
-    uint _e22 = scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)];
-    if ((i_8 < _e22)) {
-        uint _e29 = scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)];
-        return float(((_e29 >> (i_8 & 31u)) & 1u));
-    }
-    uint _e41 = scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)];
-    if ((_e41 != 0u)) {
-        return 1.0;
-    }
-    if ((i_8 >= LIGHT_QUERIES)) {
-        counters.InterlockedAdd(min(COUNTER_SHADOW_OVERFLOW, 3u)*4, 1u);
-        return 1.0;
-    }
-    scratch_store3f(SCRATCH_LIGHT_QUERY, position);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 21u)), 21u)] = asuint(dist);
-    scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)] = 1u;
-    return 1.0;
-}
-
-LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
-    LightSample ret = (LightSample)0;
-    ret.dir = arg0;
-    ret.dist = arg1;
-    ret.radiance = arg2;
-    ret.pdf = arg3;
-    return ret;
-}
-
-LightSample point_light(PointLight l, float3 position_1, float3 normal_1)
-{
-    float strength = (float)0;
-
-    float3 to_light = (l.position - position_1);
-    float dist_3 = length(to_light);
-    float3 dir_6 = (to_light / (max(dist_3, 1e-20)).xxx);
-    strength = (l.intensity / max((dist_3 * dist_3), 1e-20));
-    if ((l.range > 0.0)) {
-        float _e19 = strength;
-        strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_3)));
-    }
-    const float _e26 = shadow_deferred(position_1, normal_1, dir_6, dist_3);
-    float _e28 = strength;
-    const LightSample lightsample = ConstructLightSample(dir_6, dist_3, ((l.color * (_e28).xxx) * (_e26).xxx), 0.0);
-    return lightsample;
-}
-
-LightSample dispatch_light(uint type_id_3, uint offset_9, float3 position_2, float3 normal_2)
-{
-    const PointLight _e3 = load_PointLight(offset_9);
-    const LightSample _e4 = point_light(_e3, position_2, normal_2);
-    const LightSample lightsample_1 = _e4;
-    return lightsample_1;
-}
-
-float3 scratch_load3f(uint i_4)
-{
-    uint _e5 = scratch[min(uint(min(i_4, 21u)), 21u)];
-    uint _e12 = scratch[min(uint(min((i_4 + 1u), 21u)), 21u)];
-    uint _e19 = scratch[min(uint(min((i_4 + 2u), 21u)), 21u)];
-    return asfloat(uint3(_e5, _e12, _e19));
-}
-
 float3 step_toward(float3 x_3, float3 s_1)
 {
-    uint3 bits_2 = asuint(x_3);
+    uint3 bits_1 = asuint(x_3);
     bool3 up_1 = ((sign(x_3) * sign(s_1)) > (0.0).xxx);
-    float3 stepped = asfloat((up_1 ? (bits_2 + (1u).xxx) : (bits_2 - (1u).xxx)));
+    float3 stepped = asfloat((up_1 ? (bits_1 + (1u).xxx) : (bits_1 - (1u).xxx)));
     float3 from_zero = ((s_1 > (0.0).xxx) ? (1.1754944e-38).xxx : (-1.1754944e-38).xxx);
     float3 moved = ((x_3 == (0.0).xxx) ? from_zero : stepped);
     return (!((s_1 == (0.0).xxx)) ? moved : x_3);
@@ -1741,149 +1656,119 @@ float3 offset_origin(float3 p_5, float3 n_5, float error)
     return _e17;
 }
 
-Ray shadow_ray(float3 position_3, float3 normal_3, float3 dir_1, float dist_1)
+Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
 {
     float3 n_6 = (float3)0;
     float tmax_5 = (float)0;
 
-    n_6 = normal_3;
+    n_6 = normal;
     float3 _e5 = n_6;
-    if ((dot(dir_1, _e5) < 0.0)) {
+    if ((dot(dir, _e5) < 0.0)) {
         float3 _e9 = n_6;
         n_6 = -(_e9);
     }
-    float3 a_9 = abs(position_3);
+    float3 a_9 = abs(position);
     float _e13 = hit_error;
     float error_3 = max(_e13, (GAMMA_4_ * max(max(a_9.x, a_9.y), a_9.z)));
     float3 _e22 = n_6;
-    const float3 _e23 = offset_origin(position_3, _e22, error_3);
+    const float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_5 = asfloat(_e25);
     uint _e29 = F32_INF;
-    if ((dist_1 < asfloat(_e29))) {
-        float3 light = (position_3 + (dir_1 * (dist_1).xxx));
-        float dd_1 = dot(dir_1, dir_1);
-        float along_1 = (dot((light - _e23), dir_1) / dd_1);
-        float3 l_2 = (abs(position_3) + abs((dir_1 * (dist_1).xxx)));
+    if ((dist < asfloat(_e29))) {
+        float3 light = (position + (dir * (dist).xxx));
+        float dd_1 = dot(dir, dir);
+        float along_1 = (dot((light - _e23), dir) / dd_1);
+        float3 l_2 = (abs(position) + abs((dir * (dist).xxx)));
         tmax_5 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_5;
-    const Ray ray_29 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    const Ray ray_29 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
     return ray_29;
 }
 
-float shadow_query(float3 position_4, float3 normal_4, float3 dir_2, float dist_2)
+float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
 {
-    const Ray _e4 = shadow_ray(position_4, normal_4, dir_2, dist_2);
+    const Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
     const Candidate _e6 = intersect_scene(_e4, true);
     return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample ZeroValueLightSample() {
-    return (LightSample)0;
+LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
+    LightSample ret = (LightSample)0;
+    ret.dir = arg0;
+    ret.dist = arg1;
+    ret.radiance = arg2;
+    ret.pdf = arg3;
+    return ret;
 }
 
-LightSample sample_light_deferred(uint i_5, float3 position_5, float3 normal_5)
+LightSample point_light(PointLight l, float3 position_2, float3 normal_2)
 {
-    uint after = (uint)0;
-    uint resolved = (uint)0;
-    uint bits_1 = (uint)0;
+    float strength = (float)0;
 
+    float3 to_light = (l.position - position_2);
+    float dist_2 = length(to_light);
+    float3 dir_5 = (to_light / (max(dist_2, 1e-20)).xxx);
+    strength = (l.intensity / max((dist_2 * dist_2), 1e-20));
+    if ((l.range > 0.0)) {
+        float _e19 = strength;
+        strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_2)));
+    }
+    const float _e26 = shadow_query(position_2, normal_2, dir_5, dist_2);
+    float _e28 = strength;
+    const LightSample lightsample = ConstructLightSample(dir_5, dist_2, ((l.color * (_e28).xxx) * (_e26).xxx), 0.0);
+    return lightsample;
+}
+
+LightSample dispatch_light(uint type_id_3, uint offset_9, float3 position_3, float3 normal_3)
+{
+    const PointLight _e3 = load_PointLight(offset_9);
+    const LightSample _e4 = point_light(_e3, position_3, normal_3);
+    const LightSample lightsample_1 = _e4;
+    return lightsample_1;
+}
+
+LightSample sample_light_query(uint i_3, float3 position_4, float3 normal_4)
+{
     FrameUniforms frame_4 = frame;
-    if ((i_5 >= frame_4.light_count)) {
+    if ((i_3 >= frame_4.light_count)) {
         const LightSample lightsample_2 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_2;
     }
-    uint entry = (frame_4.light_table + (i_5 * LIGHT_ENTRY_STRIDE));
-    uint type_id_7 = asuint(params.Load(entry*4));
-    uint offset_15 = asuint(params.Load((entry + 1u)*4));
-    uint start = rng_state;
-    after = start;
-    resolved = 0u;
-    bits_1 = 0u;
-    scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)] = 0u;
-    scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)] = 0u;
-    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-    while(true) {
-        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        rng_state = start;
-        scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)] = 0u;
-        scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)] = 0u;
-        const LightSample _e60 = dispatch_light(type_id_7, offset_15, position_5, normal_5);
-        uint _e66 = scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)];
-        if ((_e66 == 0u)) {
-            uint _e69 = resolved;
-            if ((_e69 > 0u)) {
-                uint _e72 = after;
-                rng_state = _e72;
-            }
-            const LightSample lightsample_3 = _e60;
-            return lightsample_3;
-        }
-        uint _e74 = resolved;
-        if ((_e74 == 0u)) {
-            uint _e78 = rng_state;
-            after = _e78;
-        }
-        uint _e79 = after;
-        rng_state = _e79;
-        const float3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
-        const float3 _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
-        const float3 _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        uint _e95 = scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 21u)), 21u)];
-        const float _e97 = shadow_query(_e82, _e85, _e88, asfloat(_e95));
-        uint _e99 = rng_state;
-        after = _e99;
-        if (!((_e97 == 0.0))) {
-            uint _e108 = scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)];
-            uint _e109 = resolved;
-            if ((_e108 == (_e109 + 1u))) {
-                uint _e113 = after;
-                rng_state = _e113;
-                const LightSample lightsample_4 = _e60;
-                return lightsample_4;
-            }
-            uint _e115 = bits_1;
-            uint _e117 = resolved;
-            bits_1 = (_e115 | (1u << (_e117 & 31u)));
-        }
-        uint _e122 = resolved;
-        resolved = (_e122 + 1u);
-        uint _e126 = bits_1;
-        scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)] = _e126;
-        uint _e132 = resolved;
-        scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)] = _e132;
-    }
-    const LightSample lightsample_5 = ZeroValueLightSample();
-    return lightsample_5;
+    uint entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    uint _e22 = asuint(params.Load(entry*4));
+    uint _e27 = asuint(params.Load((entry + 1u)*4));
+    const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    const LightSample lightsample_3 = _e28;
+    return lightsample_3;
 }
 
 float3 lambert_shade(Lambert m_2, Ray ray_18, Hit hit_2)
 {
     float3 color = (float3)0;
-    uint i_6 = (uint)0;
+    uint i_4 = (uint)0;
 
     const float3 _e3 = shading_normal(ray_18, hit_2);
     color = (0.0).xxx;
     const uint _e8 = light_count_query();
-    i_6 = 0u;
-    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+    i_4 = 0u;
+    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
-        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e30 = i_6;
-            i_6 = (_e30 + 1u);
+            uint _e30 = i_4;
+            i_4 = (_e30 + 1u);
         }
         loop_init_3 = false;
-        uint _e10 = i_6;
+        uint _e10 = i_4;
         if ((_e10 >= _e8)) {
             break;
         }
-        uint _e12 = i_6;
-        const LightSample _e15 = sample_light_deferred(_e12, hit_2.position, hit_2.geometric_normal);
+        uint _e12 = i_4;
+        const LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
         float3 _e16 = color;
         color = (_e16 + (((m_2.albedo * (INV_PI).xxx) * _e15.radiance) * (max(dot(_e3, _e15.dir), 0.0)).xxx));
     }
@@ -1936,24 +1821,24 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_23, Hit hit
     return;
 }
 
-float3 spawn_origin_at(float3 position_6, float3 normal_6, float error_1, float3 dir_3)
+float3 spawn_origin_at(float3 position_5, float3 normal_5, float error_1, float3 dir_2)
 {
     float3 n_7 = (float3)0;
 
-    n_7 = normal_6;
+    n_7 = normal_5;
     float3 _e5 = n_7;
-    if ((dot(dir_3, _e5) < 0.0)) {
+    if ((dot(dir_2, _e5) < 0.0)) {
         float3 _e9 = n_7;
         n_7 = -(_e9);
     }
     float3 _e11 = n_7;
-    const float3 _e12 = offset_origin(position_6, _e11, error_1);
+    const float3 _e12 = offset_origin(position_5, _e11, error_1);
     return _e12;
 }
 
-float3 spawn_origin(Hit hit_5, float error_2, float3 dir_4)
+float3 spawn_origin(Hit hit_5, float error_2, float3 dir_3)
 {
-    const float3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
+    const float3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_3);
     return _e5;
 }
 
@@ -2002,7 +1887,7 @@ float3 trace(Ray camera_ray)
     float t_6 = (float)0;
     Hit hit_6 = (Hit)0;
     Frame f = (Frame)0;
-    uint i_7 = (uint)0;
+    uint i_5 = (uint)0;
     uint medium = (uint)0;
 
     if (!(HAS_SECONDARY_RAYS)) {
@@ -2038,10 +1923,10 @@ float3 trace(Ray camera_ray)
     s_sum = (0.0).xxx;
     fresh = false;
     waiting = false;
-    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
@@ -2102,27 +1987,27 @@ float3 trace(Ray camera_ray)
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
                         f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_11, 0u);
-                        i_7 = 0u;
-                        uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+                        i_5 = 0u;
+                        uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
                         bool loop_init_4 = true;
                         while(true) {
-                            if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
-                            loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+                            if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+                            loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                             if (!loop_init_4) {
-                                uint _e175 = i_7;
-                                i_7 = (_e175 + 1u);
+                                uint _e175 = i_5;
+                                i_5 = (_e175 + 1u);
                             }
                             loop_init_4 = false;
-                            uint _e155 = i_7;
+                            uint _e155 = i_5;
                             if ((_e155 >= n_11)) {
                                 break;
                             }
-                            uint _e158 = i_7;
-                            uint _e162 = i_7;
+                            uint _e158 = i_5;
+                            uint _e162 = i_5;
                             float3 _e165 = spawn_dirs[min(uint(_e162), 0u)];
                             f.dirs[min(uint(min(_e158, 0u)), 0u)] = _e165;
-                            uint _e167 = i_7;
-                            uint _e171 = i_7;
+                            uint _e167 = i_5;
+                            uint _e171 = i_5;
                             float3 _e174 = spawn_weights[min(uint(_e171), 0u)];
                             f.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
                         }
@@ -2175,17 +2060,17 @@ float3 trace(Ray camera_ray)
         uint _e241 = stack_1[min(uint(min(top_1, 3u)), 3u)].next;
         uint _e246 = stack_1[min(uint(min(top_1, 3u)), 3u)].count;
         if ((_e241 < _e246)) {
-            uint i_9 = stack_1[min(uint(min(top_1, 3u)), 3u)].next;
-            stack_1[min(uint(min(top_1, 3u)), 3u)].next = (i_9 + 1u);
+            uint i_6 = stack_1[min(uint(min(top_1, 3u)), 3u)].next;
+            stack_1[min(uint(min(top_1, 3u)), 3u)].next = (i_6 + 1u);
             Ray parent = stack_1[min(uint(min(top_1, 3u)), 3u)].ray;
             Hit hit_10 = stack_1[min(uint(min(top_1, 3u)), 3u)].hit;
-            float3 dir_7 = stack_1[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_9, 0u)), 0u)];
+            float3 dir_6 = stack_1[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_6, 0u)), 0u)];
             medium = parent.medium;
             float _e283 = stack_1[min(uint(min(top_1, 3u)), 3u)].error;
-            const float3 _e284 = spawn_origin(hit_10, _e283, dir_7);
+            const float3 _e284 = spawn_origin(hit_10, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_24 = ConstructRay(_e284, 0.0, dir_7, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_24 = ConstructRay(_e284, 0.0, dir_6, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack_1[min(uint(min(top_1, 3u)), 3u)].ray;
             s_ray = _e299;
@@ -2229,11 +2114,11 @@ void render_pixel(uint2 pixel_3)
     bad = 0u;
     uint end_2 = frame_5.samples_per_pass;
     s_2 = 0u;
-    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
     bool loop_init_5 = true;
     while(true) {
-        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
-        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
         if (!loop_init_5) {
             uint _e46 = s_2;
             s_2 = (_e46 + 1u);

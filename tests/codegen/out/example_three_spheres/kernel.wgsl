@@ -190,13 +190,6 @@ const TEXTURE_FORMAT_RGBA8_SRGB: u32 = 0u;
 const TEXTURE_FORMAT_RGBA8_UNORM: u32 = 2u;
 const RGBA16F_TEXEL_WORDS: u32 = 2u;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
-const SCRATCH_RESOLVED: u32 = 3u;
-const SCRATCH_LIGHT_BITS: u32 = 11u;
-const SCRATCH_QUERY: u32 = 2u;
-const SCRATCH_PENDING: u32 = 4u;
-const LIGHT_QUERIES: u32 = 32u;
-const COUNTER_SHADOW_OVERFLOW: u32 = 3u;
-const SCRATCH_LIGHT_QUERY: u32 = 12u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
 const FLAG_MEDIUM: u32 = 4u;
@@ -228,12 +221,11 @@ var<storage> attributes: array<vec4<u32>>;
 var<private> ray_count: u32;
 @group(0) @binding(7) 
 var<storage> texels: array<u32>;
-var<private> scratch: array<u32, 22>;
-@group(0) @binding(9) 
-var<storage, read_write> counters: array<atomic<u32>>;
 var<private> spawn_dirs: array<vec3<f32>, 1>;
 var<private> spawn_weights: array<vec3<f32>, 1>;
 var<private> spawn_count: u32;
+@group(0) @binding(9) 
+var<storage, read_write> counters: array<atomic<u32>>;
 @group(0) @binding(8) 
 var<storage, read_write> accum: array<vec4<f32>>;
 
@@ -420,15 +412,15 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
     let cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
-    let v_2 = ((ax * cy) - (ay * cx));
+    let v_1 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
-    let outside = ((((u < 0f) || (v_2 < 0f)) || (w < 0f)) && (((u > 0f) || (v_2 > 0f)) || (w > 0f)));
-    let det = ((u + v_2) + w);
+    let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
+    let det = ((u + v_1) + w);
     let rcp = (1f / det);
-    let t_7 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    let t_7 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
     let hit_7 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_7 >= tmin)) && (t_7 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_7, (v_2 * rcp), (w * rcp)), hit_7);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_7, (v_1 * rcp), (w * rcp)), hit_7);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -677,18 +669,18 @@ fn mesh_triangle_query(m_1: u32, i_1: u32) -> Triangle {
 
 fn intersect_triangle(ray_7: Ray, tri: Triangle) -> Intersection {
     let _e10 = vec3(2139095040u);
-    let dir_5 = select(ray_7.dir, vec3(0f), (abs(ray_7.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
-    let _e31 = abs(dir_5);
+    let dir_4 = select(ray_7.dir, vec3(0f), (abs(ray_7.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
+    let _e31 = abs(dir_4);
     let _e38 = (_e31.y > _e31.x);
     let kz_1 = select(select(0u, 1u, _e38), 2u, (_e31.z > select(_e31.x, _e31.y, _e38)));
     let _e45 = select((kz_1 + 1u), 0u, (kz_1 == 2u));
     let _e49 = select((kz_1 + 2u), (kz_1 - 1u), (kz_1 >= 1u));
-    let dz_1 = dir_5[kz_1];
+    let dz_1 = dir_4[kz_1];
     let _e52 = (dz_1 < 0f);
     let kx_1 = select(_e45, _e49, _e52);
     let ky_1 = select(_e49, _e45, _e52);
-    let sx = (dir_5[kx_1] / dz_1);
-    let sy = (dir_5[ky_1] / dz_1);
+    let sx = (dir_4[kx_1] / dz_1);
+    let sy = (dir_4[ky_1] / dz_1);
     let sz = (1f / dz_1);
     let _e62 = (tri.v0_ - ray_7.origin);
     let _e68 = (_e62[kx_1] - (sx * _e62[kz_1]));
@@ -700,15 +692,15 @@ fn intersect_triangle(ray_7: Ray, tri: Triangle) -> Intersection {
     let _e86 = (_e80[kx_1] - (sx * _e80[kz_1]));
     let _e87 = (_e80[ky_1] - (sy * _e80[kz_1]));
     let u_1 = ((_e86 * _e78) - (_e87 * _e77));
-    let v_3 = ((_e68 * _e87) - (_e69 * _e86));
+    let v_2 = ((_e68 * _e87) - (_e69 * _e86));
     let w_1 = ((_e77 * _e69) - (_e78 * _e68));
-    let det_1 = ((u_1 + v_3) + w_1);
+    let det_1 = ((u_1 + v_2) + w_1);
     let _e112 = (1f / det_1);
-    let t_8 = ((((u_1 * (sz * _e62[kz_1])) + (v_3 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
-    let hit_8 = (((((all(((bitcast<vec3<u32>>(ray_7.origin) & vec3(2147483647u)) < _e10)) && all(((bitcast<vec3<u32>>(ray_7.dir) & vec3(2147483647u)) < _e10))) && (dz_1 != 0f)) && !(((((u_1 < 0f) || (v_3 < 0f)) || (w_1 < 0f)) && (((u_1 > 0f) || (v_3 > 0f)) || (w_1 > 0f))))) && !((det_1 == 0f))) && ((t_8 >= ray_7.tmin) && (t_8 <= ray_7.tmax)));
+    let t_8 = ((((u_1 * (sz * _e62[kz_1])) + (v_2 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
+    let hit_8 = (((((all(((bitcast<vec3<u32>>(ray_7.origin) & vec3(2147483647u)) < _e10)) && all(((bitcast<vec3<u32>>(ray_7.dir) & vec3(2147483647u)) < _e10))) && (dz_1 != 0f)) && !(((((u_1 < 0f) || (v_2 < 0f)) || (w_1 < 0f)) && (((u_1 > 0f) || (v_2 > 0f)) || (w_1 > 0f))))) && !((det_1 == 0f))) && ((t_8 >= ray_7.tmin) && (t_8 <= ray_7.tmax)));
     let _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     let _e137 = F32_INF;
-    return Intersection(select(bitcast<f32>(_e137), t_8, hit_8), select(vec3<f32>(0f, 0f, 1f), _e132, hit_8), select(vec2(0f), vec2<f32>((v_3 * _e112), (w_1 * _e112)), hit_8));
+    return Intersection(select(bitcast<f32>(_e137), t_8, hit_8), select(vec3<f32>(0f, 0f, 1f), _e132, hit_8), select(vec2(0f), vec2<f32>((v_2 * _e112), (w_1 * _e112)), hit_8));
 }
 
 fn bvh_mesh_intersect(g: BvhMesh, ray_8: Ray) -> Intersection {
@@ -1303,71 +1295,10 @@ fn load_PointLight(offset_8: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn scratch_store3f(i_3: u32, v_1: vec3<f32>) {
-    let b_10 = bitcast<vec3<u32>>(v_1);
-    scratch[min(i_3, 21u)] = b_10.x;
-    scratch[min((i_3 + 1u), 21u)] = b_10.y;
-    scratch[min((i_3 + 2u), 21u)] = b_10.z;
-    return;
-}
-
-fn shadow_deferred(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
-    let i_8 = scratch[min(SCRATCH_QUERY, 21u)];
-    scratch[min(SCRATCH_QUERY, 21u)] = (i_8 + 1u);
-    let _e22 = scratch[min(SCRATCH_RESOLVED, 21u)];
-    if (i_8 < _e22) {
-        let _e29 = scratch[min(SCRATCH_LIGHT_BITS, 21u)];
-        return f32(((_e29 >> (i_8 & 31u)) & 1u));
-    }
-    let _e41 = scratch[min(SCRATCH_PENDING, 21u)];
-    if (_e41 != 0u) {
-        return 1f;
-    }
-    if (i_8 >= LIGHT_QUERIES) {
-        atomicAdd((&counters[min(COUNTER_SHADOW_OVERFLOW, 3u)]), 1u);
-        return 1f;
-    }
-    scratch_store3f(SCRATCH_LIGHT_QUERY, position);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)] = bitcast<u32>(dist);
-    scratch[min(SCRATCH_PENDING, 21u)] = 1u;
-    return 1f;
-}
-
-fn point_light(l: PointLight, position_1: vec3<f32>, normal_1: vec3<f32>) -> LightSample {
-    var strength: f32;
-
-    let to_light = (l.position - position_1);
-    let dist_3 = length(to_light);
-    let dir_6 = (to_light / vec3(max(dist_3, 0.00000000000000000001f)));
-    strength = (l.intensity / max((dist_3 * dist_3), 0.00000000000000000001f));
-    if (l.range > 0f) {
-        let _e19 = strength;
-        strength = (_e19 * (1f - smoothstep(l.inner_range, l.range, dist_3)));
-    }
-    let _e26 = shadow_deferred(position_1, normal_1, dir_6, dist_3);
-    let _e28 = strength;
-    return LightSample(dir_6, dist_3, ((l.color * vec3(_e28)) * vec3(_e26)), 0f);
-}
-
-fn dispatch_light(type_id_3: u32, offset_9: u32, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
-    let _e3 = load_PointLight(offset_9);
-    let _e4 = point_light(_e3, position_2, normal_2);
-    return _e4;
-}
-
-fn scratch_load3f(i_4: u32) -> vec3<f32> {
-    let _e5 = scratch[min(i_4, 21u)];
-    let _e12 = scratch[min((i_4 + 1u), 21u)];
-    let _e19 = scratch[min((i_4 + 2u), 21u)];
-    return bitcast<vec3<f32>>(vec3<u32>(_e5, _e12, _e19));
-}
-
 fn step_toward(x_3: vec3<f32>, s_1: vec3<f32>) -> vec3<f32> {
-    let bits_2 = bitcast<vec3<u32>>(x_3);
+    let bits_1 = bitcast<vec3<u32>>(x_3);
     let up_1 = ((sign(x_3) * sign(s_1)) > vec3(0f));
-    let stepped = bitcast<vec3<f32>>(select((bits_2 - vec3(1u)), (bits_2 + vec3(1u)), up_1));
+    let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
     let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s_1 > vec3(0f)));
     let moved = select(stepped, from_zero, (x_3 == vec3(0f)));
     return select(x_3, moved, !((s_1 == vec3(0f))));
@@ -1380,129 +1311,95 @@ fn offset_origin(p_5: vec3<f32>, n_5: vec3<f32>, error: f32) -> vec3<f32> {
     return _e17;
 }
 
-fn shadow_ray(position_3: vec3<f32>, normal_3: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> Ray {
+fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> Ray {
     var n_6: vec3<f32>;
     var tmax_5: f32;
 
-    n_6 = normal_3;
+    n_6 = normal;
     let _e5 = n_6;
-    if (dot(dir_1, _e5) < 0f) {
+    if (dot(dir, _e5) < 0f) {
         let _e9 = n_6;
         n_6 = -(_e9);
     }
-    let a_9 = abs(position_3);
+    let a_9 = abs(position);
     let _e13 = hit_error;
     let error_3 = max(_e13, (GAMMA_4_ * max(max(a_9.x, a_9.y), a_9.z)));
     let _e22 = n_6;
-    let _e23 = offset_origin(position_3, _e22, error_3);
+    let _e23 = offset_origin(position, _e22, error_3);
     let _e25 = F32_INF;
     tmax_5 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
-    if (dist_1 < bitcast<f32>(_e29)) {
-        let light = (position_3 + (dir_1 * vec3(dist_1)));
-        let dd_1 = dot(dir_1, dir_1);
-        let along_1 = (dot((light - _e23), dir_1) / dd_1);
-        let l_2 = (abs(position_3) + abs((dir_1 * vec3(dist_1))));
+    if (dist < bitcast<f32>(_e29)) {
+        let light = (position + (dir * vec3(dist)));
+        let dd_1 = dot(dir, dir);
+        let along_1 = (dot((light - _e23), dir) / dd_1);
+        let l_2 = (abs(position) + abs((dir * vec3(dist))));
         tmax_5 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     let _e59 = tmax_5;
-    return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-fn shadow_query(position_4: vec3<f32>, normal_4: vec3<f32>, dir_2: vec3<f32>, dist_2: f32) -> f32 {
-    let _e4 = shadow_ray(position_4, normal_4, dir_2, dist_2);
+fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
+    let _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
     let _e6 = intersect_scene(_e4, true);
     return select(1f, 0f, (_e6.slot != NO_HIT));
 }
 
-fn sample_light_deferred(i_5: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
-    var after: u32;
-    var resolved: u32;
-    var bits_1: u32;
+fn point_light(l: PointLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
+    var strength: f32;
 
+    let to_light = (l.position - position_2);
+    let dist_2 = length(to_light);
+    let dir_5 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
+    strength = (l.intensity / max((dist_2 * dist_2), 0.00000000000000000001f));
+    if (l.range > 0f) {
+        let _e19 = strength;
+        strength = (_e19 * (1f - smoothstep(l.inner_range, l.range, dist_2)));
+    }
+    let _e26 = shadow_query(position_2, normal_2, dir_5, dist_2);
+    let _e28 = strength;
+    return LightSample(dir_5, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0f);
+}
+
+fn dispatch_light(type_id_3: u32, offset_9: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
+    let _e3 = load_PointLight(offset_9);
+    let _e4 = point_light(_e3, position_3, normal_3);
+    return _e4;
+}
+
+fn sample_light_query(i_3: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let frame_4 = frame;
-    if (i_5 >= frame_4.light_count) {
+    if (i_3 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_5 * LIGHT_ENTRY_STRIDE));
-    let type_id_7 = params[entry];
-    let offset_15 = params[(entry + 1u)];
-    let start = rng_state;
-    after = start;
-    resolved = 0u;
-    bits_1 = 0u;
-    scratch[min(SCRATCH_RESOLVED, 21u)] = 0u;
-    scratch[min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
-    loop {
-        rng_state = start;
-        scratch[min(SCRATCH_QUERY, 21u)] = 0u;
-        scratch[min(SCRATCH_PENDING, 21u)] = 0u;
-        let _e60 = dispatch_light(type_id_7, offset_15, position_5, normal_5);
-        let _e66 = scratch[min(SCRATCH_PENDING, 21u)];
-        if (_e66 == 0u) {
-            let _e69 = resolved;
-            if (_e69 > 0u) {
-                let _e72 = after;
-                rng_state = _e72;
-            }
-            return _e60;
-        }
-        let _e74 = resolved;
-        if (_e74 == 0u) {
-            let _e78 = rng_state;
-            after = _e78;
-        }
-        let _e79 = after;
-        rng_state = _e79;
-        let _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
-        let _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
-        let _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        let _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)];
-        let _e97 = shadow_query(_e82, _e85, _e88, bitcast<f32>(_e95));
-        let _e99 = rng_state;
-        after = _e99;
-        if !((_e97 == 0f)) {
-            let _e108 = scratch[min(SCRATCH_QUERY, 21u)];
-            let _e109 = resolved;
-            if (_e108 == (_e109 + 1u)) {
-                let _e113 = after;
-                rng_state = _e113;
-                return _e60;
-            }
-            let _e115 = bits_1;
-            let _e117 = resolved;
-            bits_1 = (_e115 | (1u << (_e117 & 31u)));
-        }
-        let _e122 = resolved;
-        resolved = (_e122 + 1u);
-        let _e126 = bits_1;
-        scratch[min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
-        let _e132 = resolved;
-        scratch[min(SCRATCH_RESOLVED, 21u)] = _e132;
-    }
-    return LightSample();
+    let entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    let _e22 = params[entry];
+    let _e27 = params[(entry + 1u)];
+    let _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    return _e28;
 }
 
 fn lambert_shade(m_2: Lambert, ray_18: Ray, hit_2: Hit) -> vec3<f32> {
     var color: vec3<f32>;
-    var i_6: u32;
+    var i_4: u32;
 
     let _e3 = shading_normal(ray_18, hit_2);
     color = vec3(0f);
     let _e8 = light_count_query();
-    i_6 = 0u;
+    i_4 = 0u;
     loop {
-        let _e10 = i_6;
+        let _e10 = i_4;
         if (_e10 >= _e8) {
             break;
         }
-        let _e12 = i_6;
-        let _e15 = sample_light_deferred(_e12, hit_2.position, hit_2.geometric_normal);
+        let _e12 = i_4;
+        let _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
         let _e16 = color;
         color = (_e16 + (((m_2.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0f))));
         continuing {
-            let _e30 = i_6;
-            i_6 = (_e30 + 1u);
+            let _e30 = i_4;
+            i_4 = (_e30 + 1u);
         }
     }
     let _e33 = color;
@@ -1545,22 +1442,22 @@ fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_23: Ray, hit_4: H
     return;
 }
 
-fn spawn_origin_at(position_6: vec3<f32>, normal_6: vec3<f32>, error_1: f32, dir_3: vec3<f32>) -> vec3<f32> {
+fn spawn_origin_at(position_5: vec3<f32>, normal_5: vec3<f32>, error_1: f32, dir_2: vec3<f32>) -> vec3<f32> {
     var n_7: vec3<f32>;
 
-    n_7 = normal_6;
+    n_7 = normal_5;
     let _e5 = n_7;
-    if (dot(dir_3, _e5) < 0f) {
+    if (dot(dir_2, _e5) < 0f) {
         let _e9 = n_7;
         n_7 = -(_e9);
     }
     let _e11 = n_7;
-    let _e12 = offset_origin(position_6, _e11, error_1);
+    let _e12 = offset_origin(position_5, _e11, error_1);
     return _e12;
 }
 
-fn spawn_origin(hit_5: Hit, error_2: f32, dir_4: vec3<f32>) -> vec3<f32> {
-    let _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
+fn spawn_origin(hit_5: Hit, error_2: f32, dir_3: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_3);
     return _e5;
 }
 
@@ -1584,7 +1481,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_6: f32;
     var hit_6: Hit;
     var f: Frame;
-    var i_7: u32;
+    var i_5: u32;
     var medium: u32;
 
     if !(HAS_SECONDARY_RAYS) {
@@ -1681,23 +1578,23 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                         let _e143 = s_error;
                         let _e145 = s_c.slot;
                         f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_11, 0u);
-                        i_7 = 0u;
+                        i_5 = 0u;
                         loop {
-                            let _e155 = i_7;
+                            let _e155 = i_5;
                             if (_e155 >= n_11) {
                                 break;
                             }
-                            let _e158 = i_7;
-                            let _e162 = i_7;
+                            let _e158 = i_5;
+                            let _e162 = i_5;
                             let _e165 = spawn_dirs[_e162];
                             f.dirs[min(_e158, 0u)] = _e165;
-                            let _e167 = i_7;
-                            let _e171 = i_7;
+                            let _e167 = i_5;
+                            let _e171 = i_5;
                             let _e174 = spawn_weights[_e171];
                             f.weights[min(_e167, 0u)] = _e174;
                             continuing {
-                                let _e175 = i_7;
-                                i_7 = (_e175 + 1u);
+                                let _e175 = i_5;
+                                i_5 = (_e175 + 1u);
                             }
                         }
                         let _e178 = depth;
@@ -1749,17 +1646,17 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e241 = stack_1[min(top_1, 3u)].next;
         let _e246 = stack_1[min(top_1, 3u)].count;
         if (_e241 < _e246) {
-            let i_9 = stack_1[min(top_1, 3u)].next;
-            stack_1[min(top_1, 3u)].next = (i_9 + 1u);
+            let i_6 = stack_1[min(top_1, 3u)].next;
+            stack_1[min(top_1, 3u)].next = (i_6 + 1u);
             let parent = stack_1[min(top_1, 3u)].ray;
             let hit_9 = stack_1[min(top_1, 3u)].hit;
-            let dir_7 = stack_1[min(top_1, 3u)].dirs[min(i_9, 0u)];
+            let dir_6 = stack_1[min(top_1, 3u)].dirs[min(i_6, 0u)];
             medium = parent.medium;
             let _e283 = stack_1[min(top_1, 3u)].error;
-            let _e284 = spawn_origin(hit_9, _e283, dir_7);
+            let _e284 = spawn_origin(hit_9, _e283, dir_6);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_24 = Ray(_e284, 0f, dir_7, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_24 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack_1[min(top_1, 3u)].ray;
             s_ray = _e299;
