@@ -535,3 +535,71 @@ fn a_light_sample_past_the_queries_it_records_is_warned_about() {
         "{warning}"
     );
 }
+
+/// `rand()` draws an Owen-scrambled Sobol sequence padded in pairs (`stdlib/kernel/support.rt`):
+/// over a pixel's 16 samples, the points of each pair of dimensions form a (0, 4, 2)-net, so each
+/// of three elementary intervals of area 1/16 (`sampler.rt`) holds exactly one of them and every
+/// pixel's mean is exactly 1/16 in every channel, in the first pair and a later one, with both
+/// execution models. Independent random numbers would put 0, 2 or more points in an interval in
+/// about 62 % of the pixels. A pair that straddles two of the sequence's pairs (`SHIFT`) is still
+/// stratified in its first coordinate (channel 0 exact: every dimension is), but its two
+/// coordinates come from independently scrambled pairs: some pixels are off 1/16 in channels 1
+/// and 2, and the means over the 256 pixels are within four standard errors (0.015) of 1/16.
+#[test]
+fn random_numbers_are_stratified_in_every_pair_of_dimensions() {
+    use rtc_compiler::kernel::{ExecModel, KernelOptions};
+    let Some(gpu) = gpu_or_skip("random_numbers_are_stratified_in_every_pair_of_dimensions") else {
+        return;
+    };
+    let render_16 = |pair: u32, shift: u32, exec: ExecModel| {
+        let name = format!("sampler_{pair}_{shift}_{}", exec.name());
+        let dir = temp_dir("features", &name);
+        let file = scene("sampler")
+            .set("PAIR", format!("{pair}u"))
+            .set("SHIFT", format!("{shift}u"));
+        let compiled = file.compile_with(
+            &dir,
+            &KernelOptions {
+                exec: Some(ExecModel::Wavefront),
+                ..KernelOptions::default()
+            },
+        );
+        let options = RenderOptions {
+            samples: Some(16),
+            exec: Some(exec),
+            ..RenderOptions::default()
+        };
+        let (image, _) = common::scene::render(&gpu, &compiled, options, &name);
+        let _ = std::fs::remove_dir_all(&dir);
+        assert_eq!((image.width(), image.height()), (16, 16));
+        image
+    };
+    for exec in [ExecModel::Megakernel, ExecModel::Wavefront] {
+        for pair in [0, 3] {
+            let image = render_16(pair, 0, exec);
+            for (i, p) in image.pixels().iter().enumerate() {
+                assert_eq!(
+                    [p[0], p[1], p[2]],
+                    [0.0625; 3],
+                    "pair {pair} ({}): pixel {i} is not stratified",
+                    exec.name()
+                );
+            }
+        }
+    }
+    let image = render_16(1, 1, ExecModel::Megakernel);
+    let pixels = image.pixels();
+    assert!(
+        pixels.iter().all(|p| p[0] == 0.0625),
+        "every dimension is stratified on its own"
+    );
+    for c in [1, 2] {
+        let off = pixels.iter().filter(|p| p[c] != 0.0625).count();
+        assert!(off > 0, "channel {c}: straddling pairs look stratified");
+        let mean = pixels.iter().map(|p| f64::from(p[c])).sum::<f64>() / pixels.len() as f64;
+        assert!(
+            (mean - 0.0625).abs() < 0.015,
+            "channel {c}: mean {mean} over the pixels, want 1/16 within 0.015"
+        );
+    }
+}

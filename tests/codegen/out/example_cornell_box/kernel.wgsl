@@ -133,6 +133,9 @@ const WORKGROUP_WIDTH: u32 = 8u;
 const WORKGROUP_HEIGHT: u32 = 8u;
 const NO_HIT: u32 = 4294967295u;
 const SCATTER: u32 = 1000003u;
+const SCRATCH_RNG_INDEX: u32 = 12u;
+const SCRATCH_RNG_SEED: u32 = 13u;
+const HALF_WORD_BITS: u32 = 16u;
 const RAY_CAMERA: u32 = 0u;
 const HAS_MEDIA: bool = false;
 const MEDIUM_ENTRY_STRIDE: u32 = 1u;
@@ -164,6 +167,7 @@ const RAY_SECONDARY: u32 = 1u;
 var<uniform> tile: TileParams;
 @group(0) @binding(0) 
 var<uniform> frame: FrameUniforms;
+var<private> scratch: array<u32, 14>;
 var<private> rng_state: u32;
 @group(0) @binding(6) 
 var<storage> params: array<u32>;
@@ -231,25 +235,23 @@ fn scattered_local(id: vec2<u32>) -> vec2<u32> {
 }
 
 fn pcg_hash(x: u32) -> u32 {
-    let state = ((x * 747796405u) + 2891336453u);
-    let word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    let state_1 = ((x * 747796405u) + 2891336453u);
+    let word = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
     return ((word >> 22u) ^ word);
 }
 
-fn rng_seed(pixel: vec2<u32>, sample: u32, seed: u32) {
-    var h: u32;
+fn rng_resume(pixel: vec2<u32>, sample: u32, seed: u32, state: u32) {
+    scratch[min(SCRATCH_RNG_INDEX, 13u)] = sample;
+    let _e12 = pcg_hash(seed);
+    let _e14 = pcg_hash((pixel.y ^ _e12));
+    let _e16 = pcg_hash((pixel.x ^ _e14));
+    scratch[min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    rng_state = state;
+    return;
+}
 
-    let _e5 = pcg_hash(seed);
-    let _e7 = pcg_hash((sample ^ _e5));
-    let _e9 = pcg_hash((pixel.y ^ _e7));
-    let _e11 = pcg_hash((pixel.x ^ _e9));
-    h = _e11;
-    let _e13 = h;
-    if (_e13 == 0u) {
-        h = 1u;
-    }
-    let _e17 = h;
-    rng_state = _e17;
+fn rng_seed(pixel_1: vec2<u32>, sample_1: u32, seed_1: u32) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u);
     return;
 }
 
@@ -277,13 +279,68 @@ fn samples_per_pixel_query() -> u32 {
     return _e1.total_samples;
 }
 
+fn laine_karras(x_1: u32, seed_2: u32) -> u32 {
+    var v: u32;
+
+    v = (x_1 + seed_2);
+    let _e4 = v;
+    let _e5 = v;
+    v = (_e4 ^ (_e5 * 1817228412u));
+    let _e9 = v;
+    let _e10 = v;
+    v = (_e9 ^ (_e10 * 3090095698u));
+    let _e14 = v;
+    let _e15 = v;
+    v = (_e14 ^ (_e15 * 3350193720u));
+    let _e19 = v;
+    let _e20 = v;
+    v = (_e19 ^ (_e20 * 2367878886u));
+    let _e24 = v;
+    return _e24;
+}
+
+fn sobol_second_reversed(i: u32) -> u32 {
+    var f: u32;
+
+    f = i;
+    let _e2 = f;
+    let _e3 = f;
+    f = (_e2 ^ ((_e3 >> 1u) & 1431655765u));
+    let _e9 = f;
+    let _e10 = f;
+    f = (_e9 ^ ((_e10 >> 2u) & 858993459u));
+    let _e16 = f;
+    let _e17 = f;
+    f = (_e16 ^ ((_e17 >> 4u) & 252645135u));
+    let _e23 = f;
+    let _e24 = f;
+    f = (_e23 ^ ((_e24 >> 8u) & 16711935u));
+    let _e30 = f;
+    let _e31 = f;
+    f = (_e30 ^ (_e31 >> (HALF_WORD_BITS & 31u)));
+    let _e37 = f;
+    return _e37;
+}
+
 fn rand_next() -> f32 {
-    let _e1 = rng_state;
-    let s_2 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_2;
-    let word_1 = (((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u);
-    let r_3 = ((word_1 >> 22u) ^ word_1);
-    return (f32((r_3 >> 8u)) * (1f / 16777216f));
+    var x_2: u32;
+
+    let d_1 = rng_state;
+    rng_state = (d_1 + 1u);
+    let _e10 = scratch[min(SCRATCH_RNG_SEED, 13u)];
+    let _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    let _e22 = scratch[min(SCRATCH_RNG_INDEX, 13u)];
+    let _e24 = laine_karras(reverseBits(_e22), _e16);
+    let i_5 = reverseBits(_e24);
+    x_2 = i_5;
+    if ((d_1 & 1u) != 0u) {
+        let _e31 = sobol_second_reversed(i_5);
+        x_2 = _e31;
+    }
+    let scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    let _e45 = x_2;
+    let _e46 = laine_karras(_e45, scramble);
+    return (f32((reverseBits(_e46) >> 8u)) * (1f / 16777216f));
 }
 
 fn rand2_next() -> vec2<f32> {
@@ -292,11 +349,11 @@ fn rand2_next() -> vec2<f32> {
     return vec2<f32>(_e0, _e1);
 }
 
-fn normalize_vec3f(v: vec3<f32>) -> vec3<f32> {
-    return select(vec3(0f), normalize(v), (dot(v, v) >= 0.000000000000000000000000000000000000011754944f));
+fn normalize_vec3f(v_1: vec3<f32>) -> vec3<f32> {
+    return select(vec3(0f), normalize(v_1), (dot(v_1, v_1) >= 0.000000000000000000000000000000000000011754944f));
 }
 
-fn pinhole_ray(cam: Pinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
+fn pinhole_ray(cam: Pinhole, pixel_2: vec2<u32>, sample_2: u32) -> Ray {
     var jitter: vec2<f32>;
 
     let _e2 = image_size_query();
@@ -308,20 +365,20 @@ fn pinhole_ray(cam: Pinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
         jitter = _e10;
     }
     let _e12 = jitter;
-    let ndc = ((((vec2<f32>(pixel_1) + _e12) / size_1) * vec2(2f)) - vec2(1f));
+    let ndc = ((((vec2<f32>(pixel_2) + _e12) / size_1) * vec2(2f)) - vec2(1f));
     let _e24 = normalize_vec3f((cam.look_at - cam.position));
     let _e27 = normalize_vec3f(cross(_e24, cam.up));
     let up = cross(_e27, _e24);
-    let h_1 = tan((radians(cam.fov) * 0.5f));
+    let h = tan((radians(cam.fov) * 0.5f));
     let aspect = (size_1.x / size_1.y);
-    let _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
+    let _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h) * aspect)))) - (up * vec3((ndc.y * h)))));
     let _e52 = F32_INF;
     return Ray(cam.position, 0f, _e48, bitcast<f32>(_e52), 0u, 0u, 0u);
 }
 
-fn dispatch_ray_generation(type_id: u32, offset_1: u32, pixel_2: vec2<u32>, sample_2: u32) -> Ray {
+fn dispatch_ray_generation(type_id: u32, offset_1: u32, pixel_3: vec2<u32>, sample_3: u32) -> Ray {
     let _e3 = load_Pinhole(offset_1);
-    let _e4 = pinhole_ray(_e3, pixel_2, sample_2);
+    let _e4 = pinhole_ray(_e3, pixel_3, sample_3);
     return _e4;
 }
 
@@ -334,34 +391,34 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
     r = ray;
     let o = vec4<f32>(ray.origin, 1f);
-    let d_1 = vec4<f32>(ray.dir, 0f);
+    let d_2 = vec4<f32>(ray.dir, 0f);
     r.origin = vec3<f32>(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
+    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     let _e25 = r;
     return _e25;
 }
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_3 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_3 * tiny), (abs(d) < tiny));
+    let s_2 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_2 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
 fn prepare_triangle_ray(ray_1: Ray) -> TriangleRay {
-    let d_2 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
-    let ad = abs(d_2);
+    let d_3 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
+    let ad = abs(d_3);
     let y_gt = (ad.y > ad.x);
     let kz = select(select(0u, 1u, y_gt), 2u, (ad.z > select(ad.x, ad.y, y_gt)));
     let kx0_ = select((kz + 1u), 0u, (kz == 2u));
     let ky0_ = select((kz + 2u), (kz - 1u), (kz >= 1u));
-    let dz = d_2[min(kz, 2u)];
+    let dz = d_3[min(kz, 2u)];
     let flip = (dz < 0f);
     let kx = select(kx0_, ky0_, flip);
     let ky = select(ky0_, kx0_, flip);
     let inf_bits = vec3(2139095040u);
-    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_2) & vec3(2147483647u)) < inf_bits)));
-    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_2[min(kx, 2u)] / dz), (d_2[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
+    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_3) & vec3(2147483647u)) < inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32> {
@@ -378,15 +435,15 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
     let cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
-    let v_1 = ((ax * cy) - (ay * cx));
+    let v_2 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
-    let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
-    let det = ((u + v_1) + w);
+    let outside = ((((u < 0f) || (v_2 < 0f)) || (w < 0f)) && (((u > 0f) || (v_2 > 0f)) || (w > 0f)));
+    let det = ((u + v_2) + w);
     let rcp = (1f / det);
-    let t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    let t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
     let hit_7 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_1 * rcp), (w * rcp)), hit_7);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_2 * rcp), (w * rcp)), hit_7);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -597,9 +654,9 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     let _e14 = n_1.z;
     if (_e14 < 0f) {
         let _e21 = n_1;
-        let s_4 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_3 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n_1;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_4);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_3);
         let _e37 = n_1.z;
         n_1 = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -671,7 +728,7 @@ fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
 fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     var inside: u32;
     var nearest: f32;
-    var i: u32;
+    var i_1: u32;
 
     if !(HAS_MEDIA) {
         return 0u;
@@ -684,13 +741,13 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     let _e23 = F32_INF;
     nearest = bitcast<f32>(_e23);
     let end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     loop {
-        let _e29 = i;
+        let _e29 = i_1;
         if (_e29 >= end) {
             break;
         }
-        let _e32 = i;
+        let _e32 = i_1;
         let slot_4 = params[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if (slot_4 != exclude) {
             let _e41 = F32_INF;
@@ -706,8 +763,8 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
             }
         }
         continuing {
-            let _e59 = i;
-            i = (_e59 + 1u);
+            let _e59 = i_1;
+            i_1 = (_e59 + 1u);
         }
     }
     let _e62 = inside;
@@ -859,18 +916,18 @@ fn load_PointLight(offset_4: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn step_toward(x_1: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
-    let bits_1 = bitcast<vec3<u32>>(x_1);
-    let up_1 = ((sign(x_1) * sign(s)) > vec3(0f));
+fn step_toward(x_3: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
+    let bits_1 = bitcast<vec3<u32>>(x_3);
+    let up_1 = ((sign(x_3) * sign(s)) > vec3(0f));
     let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
     let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s > vec3(0f)));
-    let moved = select(stepped, from_zero, (x_1 == vec3(0f)));
-    return select(x_1, moved, !((s == vec3(0f))));
+    let moved = select(stepped, from_zero, (x_3 == vec3(0f)));
+    return select(x_3, moved, !((s == vec3(0f))));
 }
 
 fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_3 = ((2f * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    let offset_9 = (n_3 * vec3(d_3));
+    let d_4 = ((2f * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
+    let offset_9 = (n_3 * vec3(d_4));
     let _e17 = step_toward((p_5 + offset_9), offset_9);
     return _e17;
 }
@@ -932,12 +989,12 @@ fn dispatch_light(type_id_2: u32, offset_5: u32, position_3: vec3<f32>, normal_3
     return _e4;
 }
 
-fn sample_light_query(i_1: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
+fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let frame_4 = frame;
-    if (i_1 >= frame_4.light_count) {
+    if (i_2 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
+    let entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     let _e22 = params[entry];
     let _e27 = params[(entry + 1u)];
     let _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
@@ -946,24 +1003,24 @@ fn sample_light_query(i_1: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> L
 
 fn lambert_shade(m: Lambert, ray_11: Ray, hit_2: Hit) -> vec3<f32> {
     var color: vec3<f32>;
-    var i_2: u32;
+    var i_3: u32;
 
     let _e3 = shading_normal(ray_11, hit_2);
     color = vec3(0f);
     let _e8 = light_count_query();
-    i_2 = 0u;
+    i_3 = 0u;
     loop {
-        let _e10 = i_2;
+        let _e10 = i_3;
         if (_e10 >= _e8) {
             break;
         }
-        let _e12 = i_2;
+        let _e12 = i_3;
         let _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
         let _e16 = color;
         color = (_e16 + (((m.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0f))));
         continuing {
-            let _e30 = i_2;
-            i_2 = (_e30 + 1u);
+            let _e30 = i_3;
+            i_3 = (_e30 + 1u);
         }
     }
     let _e33 = color;
@@ -1044,8 +1101,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var radiance_3: vec3<f32>;
     var t_3: f32;
     var hit_6: Hit;
-    var f: Frame;
-    var i_3: u32;
+    var f_1: Frame;
+    var i_4: u32;
     var medium: u32;
 
     if !(HAS_SECONDARY_RAYS) {
@@ -1141,28 +1198,28 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                         let _e142 = hit_6;
                         let _e143 = s_error;
                         let _e145 = s_c.slot;
-                        f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
-                        i_3 = 0u;
+                        f_1 = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
+                        i_4 = 0u;
                         loop {
-                            let _e155 = i_3;
+                            let _e155 = i_4;
                             if (_e155 >= n_8) {
                                 break;
                             }
-                            let _e158 = i_3;
-                            let _e162 = i_3;
+                            let _e158 = i_4;
+                            let _e162 = i_4;
                             let _e165 = spawn_dirs[_e162];
-                            f.dirs[min(_e158, 0u)] = _e165;
-                            let _e167 = i_3;
-                            let _e171 = i_3;
+                            f_1.dirs[min(_e158, 0u)] = _e165;
+                            let _e167 = i_4;
+                            let _e171 = i_4;
                             let _e174 = spawn_weights[_e171];
-                            f.weights[min(_e167, 0u)] = _e174;
+                            f_1.weights[min(_e167, 0u)] = _e174;
                             continuing {
-                                let _e175 = i_3;
-                                i_3 = (_e175 + 1u);
+                                let _e175 = i_4;
+                                i_4 = (_e175 + 1u);
                             }
                         }
                         let _e178 = depth;
-                        let _e182 = f;
+                        let _e182 = f_1;
                         stack[min(_e178, 0u)] = _e182;
                         let _e183 = depth;
                         depth = (_e183 + 1u);
@@ -1210,11 +1267,11 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e241 = stack[min(top_1, 0u)].next;
         let _e246 = stack[min(top_1, 0u)].count;
         if (_e241 < _e246) {
-            let i_4 = stack[min(top_1, 0u)].next;
-            stack[min(top_1, 0u)].next = (i_4 + 1u);
+            let i_6 = stack[min(top_1, 0u)].next;
+            stack[min(top_1, 0u)].next = (i_6 + 1u);
             let parent = stack[min(top_1, 0u)].ray;
             let hit_8 = stack[min(top_1, 0u)].hit;
-            let dir_5 = stack[min(top_1, 0u)].dirs[min(i_4, 0u)];
+            let dir_5 = stack[min(top_1, 0u)].dirs[min(i_6, 0u)];
             medium = parent.medium;
             let _e283 = stack[min(top_1, 0u)].error;
             let _e284 = spawn_origin(hit_8, _e283, dir_5);
@@ -1240,8 +1297,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn is_finite_vec3f(x_2: vec3<f32>) -> vec3<bool> {
-    return ((bitcast<vec3<u32>>(x_2) & vec3(2147483647u)) < vec3(2139095040u));
+fn is_finite_vec3f(x_4: vec3<f32>) -> vec3<bool> {
+    return ((bitcast<vec3<u32>>(x_4) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
 fn finite_or_zero(c_3: vec3<f32>) -> vec3<f32> {
@@ -1249,7 +1306,7 @@ fn finite_or_zero(c_3: vec3<f32>) -> vec3<f32> {
     return select(vec3(0f), c_3, _e3);
 }
 
-fn render_pixel(pixel_3: vec2<u32>) {
+fn render_pixel(pixel_4: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s_1: u32;
@@ -1267,9 +1324,9 @@ fn render_pixel(pixel_3: vec2<u32>) {
             break;
         }
         let _e18 = s_1;
-        let sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_3, sample_3, frame_5.seed);
-        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        let sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_4, sample_4, frame_5.seed);
+        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
         ray_18 = _e23;
         ray_18.depth = 0u;
         ray_18.kind = RAY_CAMERA;
@@ -1300,10 +1357,10 @@ fn render_pixel(pixel_3: vec2<u32>) {
     let _e62 = vec4<f32>(_e59, f32(frame_5.samples_per_pass));
     let _e63 = bad;
     if (tile_2.frame == 0u) {
-        accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = _e62;
+        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
     } else {
-        let _e69 = accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)];
-        accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = (_e69 + _e62);
+        let _e69 = accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
+        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
     }
     if (_e63 > 0u) {
         atomicAdd((&counters[0]), _e63);

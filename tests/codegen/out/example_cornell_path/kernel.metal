@@ -5,13 +5,13 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size3;
-    uint size5;
+    uint size4;
     uint size6;
     uint size7;
-    uint size10;
-    uint size15;
+    uint size8;
+    uint size11;
     uint size16;
+    uint size17;
 };
 
 struct TileParams {
@@ -37,6 +37,9 @@ struct FrameUniforms {
     uint background_offset;
     uint path_slots;
 };
+struct type_3 {
+    uint inner[14];
+};
 struct Ray {
     metal::packed_float3 origin;
     float tmin;
@@ -47,7 +50,7 @@ struct Ray {
     uint medium;
     char _pad7[4];
 };
-typedef uint type_4[1];
+typedef uint type_5[1];
 struct Pinhole {
     metal::float3 position;
     metal::float3 look_at;
@@ -79,7 +82,7 @@ struct GpuInstance {
     uint flags;
     uint object;
 };
-typedef GpuInstance type_8[1];
+typedef GpuInstance type_9[1];
 struct TriangleRay {
     metal::packed_float3 origin;
     uint kx;
@@ -96,9 +99,9 @@ struct GpuNode {
     metal::packed_float3 max;
     uint b;
 };
-typedef GpuNode type_9[1];
-typedef metal::float4 type_10[1];
-struct type_12 {
+typedef GpuNode type_10[1];
+typedef metal::float4 type_11[1];
+struct type_13 {
     uint inner[71];
 };
 struct Hit {
@@ -118,7 +121,7 @@ struct Triangle {
     metal::float3 v1_;
     metal::float3 v2_;
 };
-typedef metal::uint4 type_14[1];
+typedef metal::uint4 type_15[1];
 struct Emissive {
     metal::packed_float3 color;
     float intensity;
@@ -151,14 +154,17 @@ struct PathState {
     bool live;
     char _pad4[3];
 };
-struct type_15 {
+struct type_16 {
     metal::float3 inner[1];
 };
-typedef metal::atomic_uint type_19[1];
+typedef metal::atomic_uint type_20[1];
 constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint NO_HIT = 4294967295u;
 constant uint SCATTER = 1000003u;
+constant uint SCRATCH_RNG_INDEX = 12u;
+constant uint SCRATCH_RNG_SEED = 13u;
+constant uint HALF_WORD_BITS = 16u;
 constant uint RAY_CAMERA = 0u;
 constant bool HAS_MEDIA = false;
 constant uint MEDIUM_ENTRY_STRIDE = 1u;
@@ -263,35 +269,42 @@ metal::uint2 scattered_local(
 uint pcg_hash(
     uint x
 ) {
-    uint state = (x * 747796405u) + 2891336453u;
-    uint word = ((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u;
+    uint state_1 = (x * 747796405u) + 2891336453u;
+    uint word = ((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u;
     return (word >> 22u) ^ word;
 }
 
-void rng_seed(
+void rng_resume(
     metal::uint2 pixel,
     uint sample,
     uint seed,
+    uint state,
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    uint h = {};
-    uint _e5 = pcg_hash(seed);
-    uint _e7 = pcg_hash(sample ^ _e5);
-    uint _e9 = pcg_hash(pixel.y ^ _e7);
-    uint _e11 = pcg_hash(pixel.x ^ _e9);
-    h = _e11;
-    uint _e13 = h;
-    if (_e13 == 0u) {
-        h = 1u;
-    }
-    uint _e17 = h;
-    rng_state = _e17;
+    scratch.inner[metal::min(SCRATCH_RNG_INDEX, 13u)] = sample;
+    uint _e12 = pcg_hash(seed);
+    uint _e14 = pcg_hash(pixel.y ^ _e12);
+    uint _e16 = pcg_hash(pixel.x ^ _e14);
+    scratch.inner[metal::min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    rng_state = state;
+    return;
+}
+
+void rng_seed(
+    metal::uint2 pixel_1,
+    uint sample_1,
+    uint seed_1,
+    thread type_3& scratch,
+    thread uint& rng_state
+) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u, scratch, rng_state);
     return;
 }
 
 Pinhole load_Pinhole(
     uint offset,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset + 0u];
@@ -321,37 +334,97 @@ uint samples_per_pixel_query(
     return _e1.total_samples;
 }
 
+uint laine_karras(
+    uint x_1,
+    uint seed_2
+) {
+    uint v = {};
+    v = x_1 + seed_2;
+    uint _e4 = v;
+    uint _e5 = v;
+    v = _e4 ^ (_e5 * 1817228412u);
+    uint _e9 = v;
+    uint _e10 = v;
+    v = _e9 ^ (_e10 * 3090095698u);
+    uint _e14 = v;
+    uint _e15 = v;
+    v = _e14 ^ (_e15 * 3350193720u);
+    uint _e19 = v;
+    uint _e20 = v;
+    v = _e19 ^ (_e20 * 2367878886u);
+    uint _e24 = v;
+    return _e24;
+}
+
+uint sobol_second_reversed(
+    uint i
+) {
+    uint f = {};
+    f = i;
+    uint _e2 = f;
+    uint _e3 = f;
+    f = _e2 ^ ((_e3 >> 1u) & 1431655765u);
+    uint _e9 = f;
+    uint _e10 = f;
+    f = _e9 ^ ((_e10 >> 2u) & 858993459u);
+    uint _e16 = f;
+    uint _e17 = f;
+    f = _e16 ^ ((_e17 >> 4u) & 252645135u);
+    uint _e23 = f;
+    uint _e24 = f;
+    f = _e23 ^ ((_e24 >> 8u) & 16711935u);
+    uint _e30 = f;
+    uint _e31 = f;
+    f = _e30 ^ (_e31 >> (HALF_WORD_BITS & 31u));
+    uint _e37 = f;
+    return _e37;
+}
+
 float rand_next(
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    uint _e1 = rng_state;
-    uint s_4 = (_e1 * 747796405u) + 2891336453u;
-    rng_state = s_4;
-    uint word_1 = ((s_4 >> (((s_4 >> 28u) + 4u) & 31u)) ^ s_4) * 277803737u;
-    uint r_3 = (word_1 >> 22u) ^ word_1;
-    return static_cast<float>(r_3 >> 8u) * (1.0 / 16777216.0);
+    uint x_2 = {};
+    uint d_1 = rng_state;
+    rng_state = d_1 + 1u;
+    uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 13u)];
+    uint _e16 = pcg_hash(_e10 ^ ((d_1 >> 1u) * 2654435769u));
+    uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 13u)];
+    uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
+    uint i_4 = metal::reverse_bits(_e24);
+    x_2 = i_4;
+    if ((d_1 & 1u) != 0u) {
+        uint _e31 = sobol_second_reversed(i_4);
+        x_2 = _e31;
+    }
+    uint scramble = _e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
+    uint _e45 = x_2;
+    uint _e46 = laine_karras(_e45, scramble);
+    return static_cast<float>(metal::reverse_bits(_e46) >> 8u) * (1.0 / 16777216.0);
 }
 
 metal::float2 rand2_next(
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    float _e0 = rand_next(rng_state);
-    float _e1 = rand_next(rng_state);
+    float _e0 = rand_next(scratch, rng_state);
+    float _e1 = rand_next(scratch, rng_state);
     return metal::float2(_e0, _e1);
 }
 
 metal::float3 normalize_vec3f(
-    metal::float3 v
+    metal::float3 v_1
 ) {
-    return (metal::dot(v, v) >= 0.000000000000000000000000000000000000011754944) ? metal::normalize(v) : metal::float3(0.0);
+    return (metal::dot(v_1, v_1) >= 0.000000000000000000000000000000000000011754944) ? metal::normalize(v_1) : metal::float3(0.0);
 }
 
 Ray pinhole_ray(
     Pinhole cam,
-    metal::uint2 pixel_1,
-    uint sample_1,
+    metal::uint2 pixel_2,
+    uint sample_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -361,17 +434,17 @@ Ray pinhole_ray(
     jitter = metal::float2(0.5);
     uint _e7 = samples_per_pixel_query(frame);
     if (_e7 > 1u) {
-        metal::float2 _e10 = rand2_next(rng_state);
+        metal::float2 _e10 = rand2_next(scratch, rng_state);
         jitter = _e10;
     }
     metal::float2 _e12 = jitter;
-    metal::float2 ndc = (((static_cast<metal::float2>(pixel_1) + _e12) / size_1) * metal::float2(2.0)) - metal::float2(1.0);
+    metal::float2 ndc = (((static_cast<metal::float2>(pixel_2) + _e12) / size_1) * metal::float2(2.0)) - metal::float2(1.0);
     metal::float3 _e24 = normalize_vec3f(cam.look_at - cam.position);
     metal::float3 _e27 = normalize_vec3f(metal::cross(_e24, cam.up));
     metal::float3 up = metal::cross(_e27, _e24);
-    float h_1 = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
+    float h = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
     float aspect = size_1.x / size_1.y;
-    metal::float3 _e48 = normalize_vec3f((_e24 + (_e27 * metal::float3((ndc.x * h_1) * aspect))) - (up * metal::float3(ndc.y * h_1)));
+    metal::float3 _e48 = normalize_vec3f((_e24 + (_e27 * metal::float3((ndc.x * h) * aspect))) - (up * metal::float3(ndc.y * h)));
     uint _e52 = F32_INF;
     return Ray {cam.position, 0.0, _e48, as_type<float>(_e52), 0u, 0u, 0u};
 }
@@ -379,17 +452,18 @@ Ray pinhole_ray(
 Ray dispatch_ray_generation(
     uint type_id,
     uint offset_1,
-    metal::uint2 pixel_2,
-    uint sample_2,
+    metal::uint2 pixel_3,
+    uint sample_3,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Pinhole _e3 = load_Pinhole(offset_1, params, _buffer_sizes);
-    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2, tile, frame, rng_state, F32_INF);
+    Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3, tile, frame, scratch, rng_state, F32_INF);
     return _e4;
 }
 
@@ -406,9 +480,9 @@ Ray to_object(
     Ray r = {};
     r = ray;
     metal::float4 o = metal::float4(ray.origin, 1.0);
-    metal::float4 d_1 = metal::float4(ray.dir, 0.0);
+    metal::float4 d_2 = metal::float4(ray.dir, 0.0);
     r.origin = metal::float3(metal::dot(inst.world_to_object_0_, o), metal::dot(inst.world_to_object_1_, o), metal::dot(inst.world_to_object_2_, o));
-    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_1), metal::dot(inst.world_to_object_1_, d_1), metal::dot(inst.world_to_object_2_, d_1));
+    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_2), metal::dot(inst.world_to_object_1_, d_2), metal::dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
     return _e25;
 }
@@ -417,27 +491,27 @@ metal::float3 safe_inverse(
     metal::float3 d
 ) {
     metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_5 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_5 * tiny, metal::abs(d) < tiny);
+    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_4 * tiny, metal::abs(d) < tiny);
     return metal::float3(1.0) / dd;
 }
 
 TriangleRay prepare_triangle_ray(
     Ray ray_1
 ) {
-    metal::float3 d_2 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
-    metal::float3 ad = metal::abs(d_2);
+    metal::float3 d_3 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 ad = metal::abs(d_3);
     bool y_gt = ad.y > ad.x;
     uint kz = (ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u);
     uint kx0_ = (kz == 2u) ? 0u : (kz + 1u);
     uint ky0_ = (kz >= 1u) ? (kz - 1u) : (kz + 2u);
-    float dz = d_2[metal::min(kz, 2u)];
+    float dz = d_3[metal::min(kz, 2u)];
     bool flip = dz < 0.0;
     uint kx = flip ? ky0_ : kx0_;
     uint ky = flip ? kx0_ : ky0_;
     metal::uint3 inf_bits = metal::uint3(2139095040u);
-    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_2) & metal::uint3(2147483647u)) < inf_bits);
-    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_2[metal::min(kx, 2u)] / dz, d_2[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
+    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_3) & metal::uint3(2147483647u)) < inf_bits);
+    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_3[metal::min(kx, 2u)] / dz, d_3[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
 }
 
 metal::float3 hit_triangle(
@@ -446,7 +520,7 @@ metal::float3 hit_triangle(
     float tmin,
     float tmax_1,
     thread uint& F32_INF,
-    device type_10 const& triangles,
+    device type_11 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e8 = triangles[slot * 3u];
@@ -462,15 +536,15 @@ metal::float3 hit_triangle(
     float cx = c_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_5[metal::min(r_1.kz, 2u)]);
     float cy = c_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_5[metal::min(r_1.kz, 2u)]);
     float u_1 = (cx * by) - (cy * bx);
-    float v_1 = (ax * cy) - (ay * cx);
+    float v_2 = (ax * cy) - (ay * cx);
     float w = (bx * ay) - (by * ax);
-    bool outside = (((u_1 < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u_1 > 0.0) || (v_1 > 0.0)) || (w > 0.0));
-    float det = (u_1 + v_1) + w;
+    bool outside = (((u_1 < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w > 0.0));
+    float det = (u_1 + v_2) + w;
     float rcp = 1.0 / det;
-    float t_3 = (((u_1 * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_4[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_3 = (((u_1 * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_4[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_7 ? metal::float3(t_3, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_7 ? metal::float3(t_3, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -550,7 +624,7 @@ metal::float2 children_entry(
 metal::uint2 pop(
     uint base,
     uint sp,
-    thread type_12& traversal_stack
+    thread type_13& traversal_stack
 ) {
     if (sp == 0u) {
         return metal::uint2(NO_HIT, 0u);
@@ -567,9 +641,9 @@ Candidate intersect_mesh(
     Candidate best_in,
     bool shadow,
     thread uint& F32_INF,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Candidate best = {};
@@ -686,10 +760,10 @@ Candidate intersect_object(
     Candidate best_1,
     bool shadow_1,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray r_2 = {};
@@ -715,7 +789,7 @@ float point_error(
 
 Triangle load_triangle(
     uint slot_3,
-    device type_10 const& triangles,
+    device type_11 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 v0_1 = triangles[slot_3 * 3u];
@@ -759,9 +833,9 @@ metal::float3 decode_octahedral(
     float _e14 = n_1.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n_1;
-        metal::float2 s_6 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float2 s_5 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
         metal::float3 _e29 = n_1;
-        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_6;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_5;
         float _e37 = n_1.z;
         n_1 = metal::float3(xy.x, xy.y, _e37);
     }
@@ -782,10 +856,10 @@ metal::float3 normal_to_world(
 Hit finish_hit(
     Ray ray_6,
     Candidate c_1,
-    device type_8 const& instances,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Hit hit = {};
@@ -844,19 +918,19 @@ uint medium_at(
     metal::float3 p_4,
     uint exclude,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint inside = {};
     float nearest = {};
-    uint i = {};
+    uint i_1 = {};
     if (!(HAS_MEDIA)) {
         return 0u;
     }
@@ -868,22 +942,22 @@ uint medium_at(
     uint _e23 = F32_INF;
     nearest = as_type<float>(_e23);
     uint end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e59 = i;
-            i = _e59 + 1u;
+            uint _e59 = i_1;
+            i_1 = _e59 + 1u;
         }
         loop_init_1 = false;
-        uint _e29 = i;
+        uint _e29 = i_1;
         if (_e29 >= end) {
             break;
         }
-        uint _e32 = i;
+        uint _e32 = i_1;
         uint slot_4 = params[frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE)];
         if (slot_4 != exclude) {
             uint _e41 = F32_INF;
@@ -915,10 +989,10 @@ Candidate intersect_scene(
     bool shadow_2,
     constant FrameUniforms& frame,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1042,7 +1116,7 @@ metal::float3 miss(
 
 Emissive load_Emissive(
     uint offset_3,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_3 + 0u];
@@ -1073,7 +1147,7 @@ metal::float3 emissive_shade(
 
 PathDiffuse load_PathDiffuse(
     uint offset_4,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_4 + 0u];
@@ -1092,7 +1166,7 @@ uint light_count_query(
 
 QuadLight load_QuadLight(
     uint offset_5,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_5 + 0u];
@@ -1113,15 +1187,15 @@ QuadLight load_QuadLight(
 }
 
 metal::float3 step_toward(
-    metal::float3 x_1,
+    metal::float3 x_3,
     metal::float3 s
 ) {
-    metal::uint3 bits_1 = as_type<metal::uint3>(x_1);
-    metal::bool3 up_1 = (metal::sign(x_1) * metal::sign(s)) > metal::float3(0.0);
+    metal::uint3 bits_1 = as_type<metal::uint3>(x_3);
+    metal::bool3 up_1 = (metal::sign(x_3) * metal::sign(s)) > metal::float3(0.0);
     metal::float3 stepped = as_type<metal::float3>(metal::select(bits_1 - metal::uint3(1u), bits_1 + metal::uint3(1u), up_1));
     metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s > metal::float3(0.0));
-    metal::float3 moved = metal::select(stepped, from_zero, x_1 == metal::float3(0.0));
-    return metal::select(x_1, moved, !((s == metal::float3(0.0))));
+    metal::float3 moved = metal::select(stepped, from_zero, x_3 == metal::float3(0.0));
+    return metal::select(x_3, moved, !((s == metal::float3(0.0))));
 }
 
 metal::float3 offset_origin(
@@ -1129,8 +1203,8 @@ metal::float3 offset_origin(
     metal::float3 n_3,
     float error
 ) {
-    float d_3 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
-    metal::float3 offset_10 = n_3 * metal::float3(d_3);
+    float d_4 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
+    metal::float3 offset_10 = n_3 * metal::float3(d_4);
     metal::float3 _e17 = step_toward(p_5 + offset_10, offset_10);
     return _e17;
 }
@@ -1177,10 +1251,10 @@ float shadow_query(
     float dist_1,
     constant FrameUniforms& frame,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1195,19 +1269,20 @@ LightSample quad_light(
     metal::float3 position_2,
     metal::float3 normal_2,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 c_7 = metal::cross(l.edge_u, l.edge_v);
     float area = metal::length(c_7);
-    metal::float2 _e7 = rand2_next(rng_state);
+    metal::float2 _e7 = rand2_next(scratch, rng_state);
     metal::float3 to_light = ((l.corner + (l.edge_u * metal::float3(_e7.x))) + (l.edge_v * metal::float3(_e7.y))) - position_2;
     float dist2_ = metal::dot(to_light, to_light);
     float dist_2 = metal::sqrt(dist2_);
@@ -1228,46 +1303,48 @@ LightSample dispatch_light(
     metal::float3 position_3,
     metal::float3 normal_3,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     QuadLight _e3 = load_QuadLight(offset_6, params, _buffer_sizes);
-    LightSample _e4 = quad_light(_e3, position_3, normal_3, frame, rng_state, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    LightSample _e4 = quad_light(_e3, position_3, normal_3, frame, scratch, rng_state, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e4;
 }
 
 LightSample sample_light_query(
-    uint i_1,
+    uint i_2,
     metal::float3 position_4,
     metal::float3 normal_4,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     FrameUniforms frame_4 = frame;
-    if (i_1 >= frame_4.light_count) {
+    if (i_2 >= frame_4.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
+    uint entry = frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE);
     uint _e22 = params[entry];
     uint _e27 = params[entry + 1u];
-    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e28;
 }
 
@@ -1279,13 +1356,13 @@ float mis_weight(
     if (!((p_6 > 0.0))) {
         return 0.0;
     }
-    float r_4 = metal::max(other, 0.0) / p_6;
-    if (!((r_4 < 1000000000000000000.0))) {
+    float r_3 = metal::max(other, 0.0) / p_6;
+    if (!((r_3 < 1000000000000000000.0))) {
         uint _e15 = F32_INF;
         uint _e19 = F32_INF;
         return ((p_6 == as_type<float>(_e15)) && (other < as_type<float>(_e19))) ? 1.0 : 0.0;
     }
-    return 1.0 / (1.0 + (r_4 * r_4));
+    return 1.0 / (1.0 + (r_3 * r_3));
 }
 
 float mis_light_weight(
@@ -1306,39 +1383,40 @@ metal::float3 path_diffuse_shade(
     Hit hit_2,
     metal::float3 secondary,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 direct = {};
-    uint i_2 = {};
+    uint i_3 = {};
     metal::float3 n_10 = metal::faceforward(hit_2.normal, ray_12.dir, hit_2.geometric_normal);
     direct = metal::float3(0.0);
     uint _e12 = light_count_query(frame);
-    i_2 = 0u;
+    i_3 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e33 = i_2;
-            i_2 = _e33 + 1u;
+            uint _e33 = i_3;
+            i_3 = _e33 + 1u;
         }
         loop_init_2 = false;
-        uint _e14 = i_2;
+        uint _e14 = i_3;
         if (_e14 >= _e12) {
             break;
         }
-        uint _e16 = i_2;
-        LightSample _e19 = sample_light_query(_e16, hit_2.position, hit_2.geometric_normal, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+        uint _e16 = i_3;
+        LightSample _e19 = sample_light_query(_e16, hit_2.position, hit_2.geometric_normal, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
         float c_8 = metal::max(metal::dot(n_10, _e19.dir), 0.0);
         metal::float3 _e24 = direct;
         float _e28 = mis_light_weight(_e19, c_8 * INV_PI, F32_INF);
@@ -1355,13 +1433,14 @@ metal::float3 dispatch_closest_hit(
     Hit hit_3,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1374,7 +1453,7 @@ metal::float3 dispatch_closest_hit(
         }
         case 1u: {
             PathDiffuse _e7 = load_PathDiffuse(offset_7, params, _buffer_sizes);
-            metal::float3 _e8 = path_diffuse_shade(_e7, ray_13, hit_3, secondary_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+            metal::float3 _e8 = path_diffuse_shade(_e7, ray_13, hit_3, secondary_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
             return _e8;
         }
         default: {
@@ -1388,21 +1467,22 @@ metal::float3 shade_direct(
     Ray ray_14,
     Candidate c_2,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_2.slot];
     Hit _e6 = finish_hit(ray_14, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e11;
 }
 
@@ -1420,7 +1500,7 @@ metal::float3 through_medium(
     Ray ray_16,
     float t_1,
     metal::float3 radiance_1,
-    device type_8 const& instances,
+    device type_9 const& instances,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (!(HAS_MEDIA)) {
@@ -1451,9 +1531,9 @@ metal::float3 sample_cosine_hemisphere(
     metal::float3 n_6,
     metal::float2 u
 ) {
-    float r_5 = metal::sqrt(u.x);
+    float r_4 = metal::sqrt(u.x);
     float phi = 6.2831855 * u.y;
-    metal::float3 local = metal::float3(r_5 * metal::cos(phi), r_5 * metal::sin(phi), metal::sqrt(metal::max(1.0 - u.x, 0.0)));
+    metal::float3 local = metal::float3(r_4 * metal::cos(phi), r_4 * metal::sin(phi), metal::sqrt(metal::max(1.0 - u.x, 0.0)));
     metal::float3x3 _e17 = orthonormal_basis(n_6);
     return _e17 * local;
 }
@@ -1462,15 +1542,15 @@ metal::float3 mis_bounce_dir(
     metal::float3 dir_2,
     float pdf
 ) {
-    float x_3 = metal::min(metal::log(1.0 + metal::max(pdf, 0.0)) * (1.0 / 90.0), 0.999);
-    return dir_2 * metal::float3(MIS_BOUNCE_LENGTH + x_3);
+    float x_5 = metal::min(metal::log(1.0 + metal::max(pdf, 0.0)) * (1.0 / 90.0), 0.999);
+    return dir_2 * metal::float3(MIS_BOUNCE_LENGTH + x_5);
 }
 
 void rt_spawn(
     metal::float3 dir_3,
     metal::float3 weight,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count
 ) {
     uint _e3 = spawn_count;
@@ -1485,20 +1565,21 @@ void path_diffuse_rays(
     PathDiffuse m_2,
     Ray ray_17,
     Hit hit_4,
+    thread type_3& scratch,
     thread uint& rng_state,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count
 ) {
     metal::float3 weight_1 = {};
     metal::float3 ng = hit_4.front_face ? hit_4.geometric_normal : -(hit_4.geometric_normal);
     metal::float3 n_11 = metal::faceforward(hit_4.normal, -(ng), hit_4.normal);
-    metal::float2 _e12 = rand2_next(rng_state);
+    metal::float2 _e12 = rand2_next(scratch, rng_state);
     metal::float3 _e13 = sample_cosine_hemisphere(n_11, _e12);
     weight_1 = m_2.albedo;
     if (ray_17.depth >= m_2.roulette_depth) {
         float q_3 = metal::saturate(metal::max(m_2.albedo[0], metal::max(m_2.albedo[1], m_2.albedo[2])));
-        float _e28 = rand_next(rng_state);
+        float _e28 = rand_next(scratch, rng_state);
         if (_e28 >= q_3) {
             return;
         }
@@ -1517,15 +1598,16 @@ void dispatch_secondary_rays(
     uint offset_9,
     Ray ray_18,
     Hit hit_5,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    device type_5 const& params,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PathDiffuse _e3 = load_PathDiffuse(offset_9, params, _buffer_sizes);
-    path_diffuse_rays(_e3, ray_18, hit_5, rng_state, spawn_dirs, spawn_weights, spawn_count);
+    path_diffuse_rays(_e3, ray_18, hit_5, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
@@ -1560,18 +1642,19 @@ PathState path_step(
     PathState s_1,
     Candidate c_3,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     thread uint& ray_count,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1598,7 +1681,7 @@ PathState path_step(
     weight_2 = metal::float3(0.0);
     if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_1.ray.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_20, _e22, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_20, _e22, scratch, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         uint _e47 = spawn_count;
         if (metal::min(_e47, 1u) > 0u) {
             spawned = true;
@@ -1608,7 +1691,7 @@ PathState path_step(
             weight_2 = _e60;
         }
     }
-    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_20, _e22, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_20, _e22, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     out.radiance = s_1.radiance + (s_1.beta * _e68);
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -1626,7 +1709,7 @@ PathState path_step(
         return _e89;
     }
     if (((ROULETTE_DEPTH > 0u) && ((s_1.ray.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < 1.0)) {
-        float _e102 = rand_next(rng_state);
+        float _e102 = rand_next(scratch, rng_state);
         if (_e102 >= q_4) {
             PathState _e104 = out;
             return _e104;
@@ -1649,18 +1732,19 @@ PathState path_step(
 metal::float3 trace_path(
     Ray camera_ray,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     thread uint& ray_count,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1673,7 +1757,7 @@ metal::float3 trace_path(
         PathState _e8 = s_2;
         Ray _e10 = s_2.ray;
         Candidate _e12 = intersect_scene(_e10, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        PathState _e13 = path_step(_e8, _e12, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        PathState _e13 = path_step(_e8, _e12, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         s_2 = _e13;
         bool _e15 = s_2.live;
         if (!(_e15)) {
@@ -1687,18 +1771,19 @@ metal::float3 trace_path(
 metal::float3 trace(
     Ray camera_ray_1,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     thread uint& ray_count,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1714,7 +1799,7 @@ metal::float3 trace(
             metal::float3 _e17 = miss(camera_ray_1, frame);
             radiance_2 = _e17;
         } else {
-            metal::float3 _e18 = shade_direct(camera_ray_1, _e4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, _buffer_sizes);
+            metal::float3 _e18 = shade_direct(camera_ray_1, _e4, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, _buffer_sizes);
             radiance_2 = _e18;
             t_2 = _e4.t;
         }
@@ -1723,14 +1808,14 @@ metal::float3 trace(
         metal::float3 _e22 = through_medium(camera_ray_1, _e20, _e21, instances, _buffer_sizes);
         return _e22;
     }
-    metal::float3 _e23 = trace_path(camera_ray_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+    metal::float3 _e23 = trace_path(camera_ray_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
     return _e23;
 }
 
 metal::bool3 is_finite_vec3f(
-    metal::float3 x_2
+    metal::float3 x_4
 ) {
-    return (as_type<metal::uint3>(x_2) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+    return (as_type<metal::uint3>(x_4) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
 }
 
 metal::float3 finite_or_zero(
@@ -1741,24 +1826,25 @@ metal::float3 finite_or_zero(
 }
 
 void render_pixel(
-    metal::uint2 pixel_3,
+    metal::uint2 pixel_4,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     thread uint& ray_count,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count,
-    device type_19& counters,
-    device type_10& accum,
+    device type_20& counters,
+    device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 sum = {};
@@ -1786,9 +1872,9 @@ void render_pixel(
             break;
         }
         uint _e18 = s_3;
-        uint sample_3 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
-        rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
+        uint sample_4 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
+        rng_seed(pixel_4, sample_4, frame_5.seed, scratch, rng_state);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
         ray_19 = _e23;
         ray_19.depth = 0u;
         ray_19.kind = RAY_CAMERA;
@@ -1796,7 +1882,7 @@ void render_pixel(
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
         ray_19.medium = _e33;
         Ray _e34 = ray_19;
-        metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::float3 _e35 = trace(_e34, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {
             metal::float3 _e38 = sum;
@@ -1815,10 +1901,10 @@ void render_pixel(
     metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
     uint _e63 = bad;
     if (tile_2.frame == 0u) {
-        accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x] = _e62;
+        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e62;
     } else {
-        metal::float4 _e69 = accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x];
-        accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x] = _e69 + _e62;
+        metal::float4 _e69 = accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x];
+        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e69 + _e62;
     }
     if (_e63 > 0u) {
         metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
@@ -1830,21 +1916,22 @@ void render_invocation(
     metal::uint2 id_1,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     thread uint& ray_count,
-    thread type_15& spawn_dirs,
-    thread type_15& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count,
-    device type_19& counters,
-    device type_10& accum,
+    device type_20& counters,
+    device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     TileParams tile_3 = tile;
@@ -1852,7 +1939,7 @@ void render_invocation(
     if (metal::any(_e3 >= tile_3.extent)) {
         return;
     }
-    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_pixel(tile_3.origin + _e3, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }
 
@@ -1862,23 +1949,24 @@ struct renderInput {
   metal::uint3 gid [[thread_position_in_grid]]
 , constant TileParams& tile [[buffer(1)]]
 , constant FrameUniforms& frame [[buffer(0)]]
-, device type_4 const& params [[buffer(6)]]
-, device type_8 const& instances [[buffer(3)]]
-, device type_9 const& nodes [[buffer(2)]]
-, device type_10 const& triangles [[buffer(4)]]
-, device type_14 const& attributes [[buffer(5)]]
-, device type_19& counters [[buffer(9)]]
-, device type_10& accum [[buffer(8)]]
+, device type_5 const& params [[buffer(6)]]
+, device type_9 const& instances [[buffer(3)]]
+, device type_10 const& nodes [[buffer(2)]]
+, device type_11 const& triangles [[buffer(4)]]
+, device type_15 const& attributes [[buffer(5)]]
+, device type_20& counters [[buffer(9)]]
+, device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
+    type_3 scratch = {};
     uint rng_state = {};
     uint F32_INF = 2139095040u;
-    type_12 traversal_stack = {};
+    type_13 traversal_stack = {};
     float hit_error = {};
     uint ray_count = {};
-    type_15 spawn_dirs = {};
-    type_15 spawn_weights = {};
+    type_16 spawn_dirs = {};
+    type_16 spawn_weights = {};
     uint spawn_count = {};
-    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }

@@ -128,6 +128,9 @@ const uint WORKGROUP_WIDTH = 8u;
 const uint WORKGROUP_HEIGHT = 8u;
 const uint NO_HIT = 4294967295u;
 const uint SCATTER = 1000003u;
+const uint SCRATCH_RNG_INDEX = 12u;
+const uint SCRATCH_RNG_SEED = 13u;
+const uint HALF_WORD_BITS = 16u;
 const uint RAY_CAMERA = 0u;
 const bool HAS_MEDIA = true;
 const uint MEDIUM_ENTRY_STRIDE = 1u;
@@ -169,23 +172,23 @@ layout(std140, binding = 1) uniform TileParams_block_0Compute { TileParams _grou
 
 layout(std140, binding = 0) uniform FrameUniforms_block_1Compute { FrameUniforms _group_0_binding_0_cs; };
 
+uint scratch[14] = uint[14](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+
 uint rng_state = 0u;
 
-layout(std430, binding = 6) readonly buffer type_4_block_2Compute { uint _group_0_binding_6_cs[]; };
+layout(std430, binding = 6) readonly buffer type_5_block_2Compute { uint _group_0_binding_6_cs[]; };
 
 uint F32_INF = 2139095040u;
 
-layout(std430, binding = 3) readonly buffer type_8_block_3Compute { GpuInstance _group_0_binding_3_cs[]; };
+layout(std430, binding = 3) readonly buffer type_9_block_3Compute { GpuInstance _group_0_binding_3_cs[]; };
 
-layout(std430, binding = 2) readonly buffer type_9_block_4Compute { GpuNode _group_0_binding_2_cs[]; };
+layout(std430, binding = 2) readonly buffer type_10_block_4Compute { GpuNode _group_0_binding_2_cs[]; };
 
-layout(std430, binding = 4) readonly buffer type_10_block_5Compute { vec4 _group_0_binding_4_cs[]; };
+layout(std430, binding = 4) readonly buffer type_11_block_5Compute { vec4 _group_0_binding_4_cs[]; };
 
 float hit_error = 0.0;
 
-layout(std430, binding = 5) readonly buffer type_12_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
-
-uint scratch[12] = uint[12](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+layout(std430, binding = 5) readonly buffer type_13_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
 
 uint traversal_stack[74] = uint[74](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
@@ -199,7 +202,7 @@ uint spawn_count = 0u;
 
 layout(std430, binding = 9) buffer type_20_block_7Compute { uint _group_0_binding_9_cs[]; };
 
-layout(std430, binding = 8) buffer type_10_block_8Compute { vec4 _group_0_binding_8_cs[]; };
+layout(std430, binding = 8) buffer type_11_block_8Compute { vec4 _group_0_binding_8_cs[]; };
 
 
 uvec2 div_vec2u(uvec2 a, uvec2 b) {
@@ -246,24 +249,23 @@ uvec2 scattered_local(uvec2 id) {
 }
 
 uint pcg_hash(uint x) {
-    uint state = ((x * 747796405u) + 2891336453u);
-    uint word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    uint state_1 = ((x * 747796405u) + 2891336453u);
+    uint word = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
     return ((word >> 22u) ^ word);
 }
 
-void rng_seed(uvec2 pixel, uint sample_, uint seed) {
-    uint h = 0u;
-    uint _e5 = pcg_hash(seed);
-    uint _e7 = pcg_hash((sample_ ^ _e5));
-    uint _e9 = pcg_hash((pixel.y ^ _e7));
-    uint _e11 = pcg_hash((pixel.x ^ _e9));
-    h = _e11;
-    uint _e13 = h;
-    if ((_e13 == 0u)) {
-        h = 1u;
-    }
-    uint _e17 = h;
-    rng_state = _e17;
+void rng_resume(uvec2 pixel, uint sample_, uint seed, uint state) {
+    scratch[min(SCRATCH_RNG_INDEX, 13u)] = sample_;
+    uint _e12 = pcg_hash(seed);
+    uint _e14 = pcg_hash((pixel.y ^ _e12));
+    uint _e16 = pcg_hash((pixel.x ^ _e14));
+    scratch[min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    rng_state = state;
+    return;
+}
+
+void rng_seed(uvec2 pixel_1, uint sample_1, uint seed_1) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u);
     return;
 }
 
@@ -291,13 +293,65 @@ uint samples_per_pixel_query() {
     return _e1.total_samples;
 }
 
+uint laine_karras(uint x_1, uint seed_2) {
+    uint v = 0u;
+    v = (x_1 + seed_2);
+    uint _e4 = v;
+    uint _e5 = v;
+    v = (_e4 ^ (_e5 * 1817228412u));
+    uint _e9 = v;
+    uint _e10 = v;
+    v = (_e9 ^ (_e10 * 3090095698u));
+    uint _e14 = v;
+    uint _e15 = v;
+    v = (_e14 ^ (_e15 * 3350193720u));
+    uint _e19 = v;
+    uint _e20 = v;
+    v = (_e19 ^ (_e20 * 2367878886u));
+    uint _e24 = v;
+    return _e24;
+}
+
+uint sobol_second_reversed(uint i) {
+    uint f = 0u;
+    f = i;
+    uint _e2 = f;
+    uint _e3 = f;
+    f = (_e2 ^ ((_e3 >> 1u) & 1431655765u));
+    uint _e9 = f;
+    uint _e10 = f;
+    f = (_e9 ^ ((_e10 >> 2u) & 858993459u));
+    uint _e16 = f;
+    uint _e17 = f;
+    f = (_e16 ^ ((_e17 >> 4u) & 252645135u));
+    uint _e23 = f;
+    uint _e24 = f;
+    f = (_e23 ^ ((_e24 >> 8u) & 16711935u));
+    uint _e30 = f;
+    uint _e31 = f;
+    f = (_e30 ^ (_e31 >> (HALF_WORD_BITS & 31u)));
+    uint _e37 = f;
+    return _e37;
+}
+
 float rand_next() {
-    uint _e1 = rng_state;
-    uint s_3 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_3;
-    uint word_1 = (((s_3 >> (((s_3 >> 28u) + 4u) & 31u)) ^ s_3) * 277803737u);
-    uint r_3 = ((word_1 >> 22u) ^ word_1);
-    return (float((r_3 >> 8u)) * (1.0 / 16777216.0));
+    uint x_2 = 0u;
+    uint d_2 = rng_state;
+    rng_state = (d_2 + 1u);
+    uint _e10 = scratch[min(SCRATCH_RNG_SEED, 13u)];
+    uint _e16 = pcg_hash((_e10 ^ ((d_2 >> 1u) * 2654435769u)));
+    uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 13u)];
+    uint _e24 = laine_karras(bitfieldReverse(_e22), _e16);
+    uint i_7 = bitfieldReverse(_e24);
+    x_2 = i_7;
+    if (((d_2 & 1u) != 0u)) {
+        uint _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    uint scramble = (_e16 ^ (((2654435769u * (1u + (d_2 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    uint _e45 = x_2;
+    uint _e46 = laine_karras(_e45, scramble);
+    return (float((bitfieldReverse(_e46) >> 8u)) * (1.0 / 16777216.0));
 }
 
 vec2 rand2_next() {
@@ -306,11 +360,11 @@ vec2 rand2_next() {
     return vec2(_e0, _e1);
 }
 
-vec3 normalize_vec3f(vec3 v) {
-    return ((dot(v, v) >= 1.1754944e-38) ? normalize(v) : vec3(0.0));
+vec3 normalize_vec3f(vec3 v_1) {
+    return ((dot(v_1, v_1) >= 1.1754944e-38) ? normalize(v_1) : vec3(0.0));
 }
 
-Ray pinhole_ray(Pinhole cam, uvec2 pixel_1, uint sample_1) {
+Ray pinhole_ray(Pinhole cam, uvec2 pixel_2, uint sample_2) {
     vec2 jitter = vec2(0.0);
     uvec2 _e2 = image_size_query();
     vec2 size_1 = vec2(_e2);
@@ -321,20 +375,20 @@ Ray pinhole_ray(Pinhole cam, uvec2 pixel_1, uint sample_1) {
         jitter = _e10;
     }
     vec2 _e12 = jitter;
-    vec2 ndc = ((((vec2(pixel_1) + _e12) / size_1) * vec2(2.0)) - vec2(1.0));
+    vec2 ndc = ((((vec2(pixel_2) + _e12) / size_1) * vec2(2.0)) - vec2(1.0));
     vec3 _e24 = normalize_vec3f((cam.look_at - cam.position));
     vec3 _e27 = normalize_vec3f(cross(_e24, cam.up));
     vec3 up = cross(_e27, _e24);
-    float h_1 = tan((radians(cam.fov) * 0.5));
+    float h = tan((radians(cam.fov) * 0.5));
     float aspect = (size_1.x / size_1.y);
-    vec3 _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
+    vec3 _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h) * aspect)))) - (up * vec3((ndc.y * h)))));
     uint _e52 = F32_INF;
     return Ray(cam.position, 0.0, _e48, uintBitsToFloat(_e52), 0u, 0u, 0u);
 }
 
-Ray dispatch_ray_generation(uint type_id, uint offset_1, uvec2 pixel_2, uint sample_2) {
+Ray dispatch_ray_generation(uint type_id, uint offset_1, uvec2 pixel_3, uint sample_3) {
     Pinhole _e3 = load_Pinhole(offset_1);
-    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
+    Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
     return _e4;
 }
 
@@ -346,34 +400,34 @@ Ray to_object(GpuInstance inst, Ray ray) {
     Ray r = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     r = ray;
     vec4 o_1 = vec4(ray.origin, 1.0);
-    vec4 d_2 = vec4(ray.dir, 0.0);
+    vec4 d_3 = vec4(ray.dir, 0.0);
     r.origin = vec3(dot(inst.world_to_object_0_, o_1), dot(inst.world_to_object_1_, o_1), dot(inst.world_to_object_2_, o_1));
-    r.dir = vec3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
+    r.dir = vec3(dot(inst.world_to_object_0_, d_3), dot(inst.world_to_object_1_, d_3), dot(inst.world_to_object_2_, d_3));
     Ray _e25 = r;
     return _e25;
 }
 
 vec3 safe_inverse(vec3 d) {
     vec3 tiny = vec3(1.1754944e-38);
-    vec3 s_4 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
-    vec3 dd = mix(d, (s_4 * tiny), lessThan(abs(d), tiny));
+    vec3 s_3 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
+    vec3 dd = mix(d, (s_3 * tiny), lessThan(abs(d), tiny));
     return (vec3(1.0) / dd);
 }
 
 TriangleRay prepare_triangle_ray(Ray ray_1) {
-    vec3 d_3 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
-    vec3 ad = abs(d_3);
+    vec3 d_4 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
+    vec3 ad = abs(d_4);
     bool y_gt = (ad.y > ad.x);
     uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
     uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
     uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
-    float dz = d_3[min(kz, 2u)];
+    float dz = d_4[min(kz, 2u)];
     bool flip = (dz < 0.0);
     uint kx = (flip ? ky0_ : kx0_);
     uint ky = (flip ? kx0_ : ky0_);
     uvec3 inf_bits = uvec3(2139095040u);
-    bool finite = (all(lessThan((floatBitsToUint(ray_1.origin) & uvec3(2147483647u)), inf_bits)) && all(lessThan((floatBitsToUint(d_3) & uvec3(2147483647u)), inf_bits)));
-    return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    bool finite = (all(lessThan((floatBitsToUint(ray_1.origin) & uvec3(2147483647u)), inf_bits)) && all(lessThan((floatBitsToUint(d_4) & uvec3(2147483647u)), inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_4[min(kx, 2u)] / dz), (d_4[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
 }
 
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
@@ -390,15 +444,15 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
     float cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
-    float v_1 = ((ax * cy) - (ay * cx));
+    float v_2 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
-    bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
-    float det = ((u + v_1) + w);
+    bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
+    float det = ((u + v_2) + w);
     float rcp = (1.0 / det);
-    float t_5 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    float t_5 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
     bool hit_11 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_11 ? vec3(t_5, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_11 ? vec3(t_5, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 float point_error(vec3 origin, vec3 along) {
@@ -437,9 +491,9 @@ vec3 decode_octahedral(uint bits) {
     float _e14 = n.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n;
-        vec2 s_5 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
+        vec2 s_4 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
         vec3 _e29 = n;
-        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_5);
+        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_4);
         float _e37 = n.z;
         n = vec3(xy.x, xy.y, _e37);
     }
@@ -515,8 +569,8 @@ Fog load_Fog(uint offset_2) {
     return Fog(uintBitsToFloat(_e5), vec3(uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)));
 }
 
-bool is_finite_f32_(float x_1) {
-    return ((floatBitsToUint(x_1) & 2147483647u) < 2139095040u);
+bool is_finite_f32_(float x_3) {
+    return ((floatBitsToUint(x_3) & 2147483647u) < 2139095040u);
 }
 
 void absorb_query(float density) {
@@ -524,7 +578,7 @@ void absorb_query(float density) {
     if (!(HAS_ABSORB)) {
         return;
     }
-    uint side = scratch[min(SCRATCH_ABSORB, 11u)];
+    uint side = scratch[min(SCRATCH_ABSORB, 13u)];
     if ((side == 0u)) {
         return;
     }
@@ -533,21 +587,21 @@ void absorb_query(float density) {
     if ((_e13 && (density > 0.0))) {
         sigma = density;
     }
-    uint _e22 = scratch[min(SCRATCH_ABSORB_T, 11u)];
+    uint _e22 = scratch[min(SCRATCH_ABSORB_T, 13u)];
     float t_6 = uintBitsToFloat(_e22);
     float _e24 = sigma;
     float _e25 = sigma;
-    float s_6 = ((side == 2u) ? -(_e25) : _e24);
-    uint _e35 = scratch[min(SCRATCH_DEPTH, 11u)];
-    float depth_2 = (uintBitsToFloat(_e35) - (s_6 * t_6));
-    scratch[min(SCRATCH_DEPTH, 11u)] = floatBitsToUint(depth_2);
-    uint _e50 = scratch[min(SCRATCH_NET, 11u)];
-    float net = (uintBitsToFloat(_e50) + s_6);
-    scratch[min(SCRATCH_NET, 11u)] = floatBitsToUint(net);
-    uint _e64 = scratch[min(SCRATCH_DENSITY_MAX, 11u)];
+    float s_5 = ((side == 2u) ? -(_e25) : _e24);
+    uint _e35 = scratch[min(SCRATCH_DEPTH, 13u)];
+    float depth_2 = (uintBitsToFloat(_e35) - (s_5 * t_6));
+    scratch[min(SCRATCH_DEPTH, 13u)] = floatBitsToUint(depth_2);
+    uint _e50 = scratch[min(SCRATCH_NET, 13u)];
+    float net = (uintBitsToFloat(_e50) + s_5);
+    scratch[min(SCRATCH_NET, 13u)] = floatBitsToUint(net);
+    uint _e64 = scratch[min(SCRATCH_DENSITY_MAX, 13u)];
     float _e66 = sigma;
     float most = max(uintBitsToFloat(_e64), _e66);
-    scratch[min(SCRATCH_DENSITY_MAX, 11u)] = floatBitsToUint(most);
+    scratch[min(SCRATCH_DENSITY_MAX, 13u)] = floatBitsToUint(most);
     return;
 }
 
@@ -568,11 +622,11 @@ bool accept(GpuInstance inst_4, Ray ray_5, Candidate c_1) {
         Hit _e10 = finish_hit(ray_5, c_1);
         hit_error = shaded;
         if ((ray_5.kind == RAY_SHADOW)) {
-            scratch[min(SCRATCH_ABSORB, 11u)] = (_e10.front_face ? 1u : 2u);
-            scratch[min(SCRATCH_ABSORB_T, 11u)] = floatBitsToUint((c_1.t * length(ray_5.dir)));
+            scratch[min(SCRATCH_ABSORB, 13u)] = (_e10.front_face ? 1u : 2u);
+            scratch[min(SCRATCH_ABSORB_T, 13u)] = floatBitsToUint((c_1.t * length(ray_5.dir)));
         }
         bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
-        scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
+        scratch[min(SCRATCH_ABSORB, 13u)] = 0u;
         return _e36;
     }
     return true;
@@ -748,7 +802,7 @@ Candidate intersect_object(uint slot_3, Ray ray_8, Candidate best_1, bool shadow
 uint medium_at(vec3 p_4, uint exclude) {
     uint inside = 0u;
     float nearest = 0.0;
-    uint i = 0u;
+    uint i_1 = 0u;
     if (!(HAS_MEDIA)) {
         return 0u;
     }
@@ -760,19 +814,19 @@ uint medium_at(vec3 p_4, uint exclude) {
     uint _e23 = F32_INF;
     nearest = uintBitsToFloat(_e23);
     uint end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e59 = i;
-            i = (_e59 + 1u);
+            uint _e59 = i_1;
+            i_1 = (_e59 + 1u);
         }
         loop_init_1 = false;
-        uint _e29 = i;
+        uint _e29 = i_1;
         if ((_e29 >= end)) {
             break;
         }
-        uint _e32 = i;
+        uint _e32 = i_1;
         uint slot_4 = _group_0_binding_6_cs[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if ((slot_4 != exclude)) {
             uint _e41 = F32_INF;
@@ -907,7 +961,7 @@ vec3 miss(Ray ray_11) {
 }
 
 void shading_medium(uint medium) {
-    scratch[min(SCRATCH_MEDIUM, 11u)] = medium;
+    scratch[min(SCRATCH_MEDIUM, 13u)] = medium;
     return;
 }
 
@@ -945,18 +999,18 @@ PointLight load_PointLight(uint offset_6) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
-vec3 step_toward(vec3 x_2, vec3 s) {
-    uvec3 bits_1 = floatBitsToUint(x_2);
-    bvec3 up_1 = greaterThan((sign(x_2) * sign(s)), vec3(0.0));
+vec3 step_toward(vec3 x_4, vec3 s) {
+    uvec3 bits_1 = floatBitsToUint(x_4);
+    bvec3 up_1 = greaterThan((sign(x_4) * sign(s)), vec3(0.0));
     vec3 stepped = uintBitsToFloat(mix((bits_1 - uvec3(1u)), (bits_1 + uvec3(1u)), up_1));
     vec3 from_zero = mix(vec3(-1.1754944e-38), vec3(1.1754944e-38), greaterThan(s, vec3(0.0)));
-    vec3 moved = mix(stepped, from_zero, equal(x_2, vec3(0.0)));
-    return mix(x_2, moved, not(equal(s, vec3(0.0))));
+    vec3 moved = mix(stepped, from_zero, equal(x_4, vec3(0.0)));
+    return mix(x_4, moved, not(equal(s, vec3(0.0))));
 }
 
 vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
-    float d_4 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    vec3 offset_11 = (n_3 * vec3(d_4));
+    float d_5 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
+    vec3 offset_11 = (n_3 * vec3(d_5));
     vec3 _e17 = step_toward((p_5 + offset_11), offset_11);
     return _e17;
 }
@@ -991,19 +1045,19 @@ Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
 
 float shadow_transmittance(Ray ray_14, uint medium_1) {
     float depth = 0.0;
-    scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
-    scratch[min(SCRATCH_DEPTH, 11u)] = 0u;
-    scratch[min(SCRATCH_NET, 11u)] = 0u;
-    scratch[min(SCRATCH_DENSITY_MAX, 11u)] = 0u;
+    scratch[min(SCRATCH_ABSORB, 13u)] = 0u;
+    scratch[min(SCRATCH_DEPTH, 13u)] = 0u;
+    scratch[min(SCRATCH_NET, 13u)] = 0u;
+    scratch[min(SCRATCH_DENSITY_MAX, 13u)] = 0u;
     if ((HAS_MEDIA && HAS_ANY_HIT)) {
         if ((medium_1 != 0u)) {
             GpuInstance inst_8 = _group_0_binding_3_cs[(medium_1 - 1u)];
             if (((inst_8.flags & FLAG_ANY_HIT) != 0u)) {
                 Hit start = Hit(ray_14.origin, 0.0, -(ray_14.dir), -(ray_14.dir), vec2(0.0), true, inst_8.object, 0u);
-                scratch[min(SCRATCH_ABSORB, 11u)] = 1u;
-                scratch[min(SCRATCH_ABSORB_T, 11u)] = 0u;
+                scratch[min(SCRATCH_ABSORB, 13u)] = 1u;
+                scratch[min(SCRATCH_ABSORB_T, 13u)] = 0u;
                 bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start);
-                scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
+                scratch[min(SCRATCH_ABSORB, 13u)] = 0u;
             }
         }
     }
@@ -1011,11 +1065,11 @@ float shadow_transmittance(Ray ray_14, uint medium_1) {
     if ((_e75.slot != NO_HIT)) {
         return 0.0;
     }
-    uint _e85 = scratch[min(SCRATCH_DEPTH, 11u)];
+    uint _e85 = scratch[min(SCRATCH_DEPTH, 13u)];
     depth = uintBitsToFloat(_e85);
-    uint _e93 = scratch[min(SCRATCH_NET, 11u)];
+    uint _e93 = scratch[min(SCRATCH_NET, 13u)];
     float net_1 = uintBitsToFloat(_e93);
-    uint _e101 = scratch[min(SCRATCH_DENSITY_MAX, 11u)];
+    uint _e101 = scratch[min(SCRATCH_DENSITY_MAX, 13u)];
     if ((net_1 > (1e-6 * uintBitsToFloat(_e101)))) {
         uint _e107 = F32_INF;
         if ((ray_14.tmax == uintBitsToFloat(_e107))) {
@@ -1030,7 +1084,7 @@ float shadow_transmittance(Ray ray_14, uint medium_1) {
 
 float shadow_query(vec3 position_1, vec3 normal_1, vec3 dir_1, float dist_1) {
     Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    uint _e10 = scratch[min(SCRATCH_MEDIUM, 11u)];
+    uint _e10 = scratch[min(SCRATCH_MEDIUM, 13u)];
     float _e11 = shadow_transmittance(_e4, _e10);
     return _e11;
 }
@@ -1056,12 +1110,12 @@ LightSample dispatch_light(uint type_id_3, uint offset_7, vec3 position_3, vec3 
     return _e4;
 }
 
-LightSample sample_light_query(uint i_1, vec3 position_4, vec3 normal_4) {
+LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_4) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    if ((i_1 >= frame_4.light_count)) {
+    if ((i_2 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
-    uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     uint _e22 = _group_0_binding_6_cs[entry];
     uint _e27 = _group_0_binding_6_cs[(entry + 1u)];
     LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
@@ -1070,23 +1124,23 @@ LightSample sample_light_query(uint i_1, vec3 position_4, vec3 normal_4) {
 
 vec3 lambert_shade(Lambert m_2, Ray ray_15, Hit hit_5) {
     vec3 color = vec3(0.0);
-    uint i_2 = 0u;
+    uint i_3 = 0u;
     vec3 _e3 = shading_normal(ray_15, hit_5);
     color = vec3(0.0);
     uint _e8 = light_count_query();
-    i_2 = 0u;
+    i_3 = 0u;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e30 = i_2;
-            i_2 = (_e30 + 1u);
+            uint _e30 = i_3;
+            i_3 = (_e30 + 1u);
         }
         loop_init_2 = false;
-        uint _e10 = i_2;
+        uint _e10 = i_3;
         if ((_e10 >= _e8)) {
             break;
         }
-        uint _e12 = i_2;
+        uint _e12 = i_3;
         LightSample _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal);
         vec3 _e16 = color;
         color = (_e16 + (((m_2.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0.0))));
@@ -1122,19 +1176,19 @@ vec3 shade_direct(Ray ray_17, Candidate c_2) {
     return _e12;
 }
 
-vec3 fog_inscatter(Fog m_3, uint i_3, vec3 o, vec3 dir_2, float d_1, float trans) {
+vec3 fog_inscatter(Fog m_3, uint i_4, vec3 o, vec3 dir_2, float d_1, float trans) {
     float s_1 = 0.0;
     float sigma_1 = m_3.density;
     bool tiny_1 = ((sigma_1 * d_1) < 0.001);
-    LightSample _e12 = sample_light_query(i_3, o, vec3(0.0));
+    LightSample _e12 = sample_light_query(i_4, o, vec3(0.0));
     vec3 c_6 = (_e12.dir * vec3(_e12.dist));
     float delta = dot(c_6, dir_2);
-    float h_2 = length((c_6 - (dir_2 * vec3(delta))));
-    bool _e22 = is_finite_f32_(h_2);
-    bool equi = (_e22 && (h_2 > 1e-20));
-    float ta = atan(-(delta), h_2);
+    float h_1 = length((c_6 - (dir_2 * vec3(delta))));
+    bool _e22 = is_finite_f32_(h_1);
+    bool equi = (_e22 && (h_1 > 1e-20));
+    float ta = atan(-(delta), h_1);
     uint _e34 = F32_INF;
-    float tb = ((d_1 == uintBitsToFloat(_e34)) ? (0.5 * PI) : atan((d_1 - delta), h_2));
+    float tb = ((d_1 == uintBitsToFloat(_e34)) ? (0.5 * PI) : atan((d_1 - delta), h_1));
     float w_3 = (equi ? 0.5 : 0.0);
     vec2 _e41 = rand2_next();
     s_1 = (-(log((1.0 - (_e41.y * (1.0 - trans))))) / sigma_1);
@@ -1142,7 +1196,7 @@ vec3 fog_inscatter(Fog m_3, uint i_3, vec3 o, vec3 dir_2, float d_1, float trans
         s_1 = (_e41.y * d_1);
     }
     if ((_e41.x < w_3)) {
-        s_1 = (delta + (h_2 * tan(mix(ta, tb, _e41.y))));
+        s_1 = (delta + (h_1 * tan(mix(ta, tb, _e41.y))));
     }
     float _e61 = s_1;
     s_1 = min(max(_e61, 0.0), d_1);
@@ -1150,39 +1204,39 @@ vec3 fog_inscatter(Fog m_3, uint i_3, vec3 o, vec3 dir_2, float d_1, float trans
     float e_2 = exp((-(sigma_1) * _e66));
     float p_free = (tiny_1 ? (1.0 / d_1) : ((sigma_1 * e_2) / (1.0 - trans)));
     float _e76 = s_1;
-    float r_4 = (_e76 - delta);
-    float pdf = (((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_2) / ((tb - ta) * ((h_2 * h_2) + (r_4 * r_4)))) : 0.0));
+    float r_3 = (_e76 - delta);
+    float pdf = (((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))) : 0.0));
     float _e91 = s_1;
-    LightSample _e97 = sample_light_query(i_3, (o + (dir_2 * vec3(_e91))), vec3(0.0));
+    LightSample _e97 = sample_light_query(i_4, (o + (dir_2 * vec3(_e91))), vec3(0.0));
     return (_e97.radiance * vec3(((sigma_1 * e_2) / pdf)));
 }
 
 vec3 fog_medium(Fog m_4, Ray ray_18, float t, vec3 radiance) {
     vec3 light = vec3(0.0);
-    uint i_4 = 0u;
+    uint i_5 = 0u;
     float len = length(ray_18.dir);
     if ((!((m_4.density > 0.0)) || !((len > 0.0)))) {
         return radiance;
     }
-    float d_5 = (t * len);
-    float trans_1 = exp((-(m_4.density) * d_5));
+    float d_6 = (t * len);
+    float trans_1 = exp((-(m_4.density) * d_6));
     light = vec3(0.0);
     uint _e23 = light_count_query();
-    i_4 = 0u;
+    i_5 = 0u;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e35 = i_4;
-            i_4 = (_e35 + 1u);
+            uint _e35 = i_5;
+            i_5 = (_e35 + 1u);
         }
         loop_init_3 = false;
-        uint _e25 = i_4;
+        uint _e25 = i_5;
         if ((_e25 >= _e23)) {
             break;
         }
         vec3 _e27 = light;
-        uint _e28 = i_4;
-        vec3 _e33 = fog_inscatter(m_4, _e28, ray_18.origin, (ray_18.dir / vec3(len)), d_5, trans_1);
+        uint _e28 = i_5;
+        vec3 _e33 = fog_inscatter(m_4, _e28, ray_18.origin, (ray_18.dir / vec3(len)), d_6, trans_1);
         light = (_e27 + _e33);
     }
     vec3 _e46 = light;
@@ -1268,8 +1322,8 @@ vec3 trace(Ray camera_ray) {
     vec3 radiance_4 = vec3(0.0);
     float t_4 = 0.0;
     Hit hit_10 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
-    Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
-    uint i_5 = 0u;
+    Frame f_1 = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
+    uint i_6 = 0u;
     uint medium_2 = 0u;
     bool found = false;
     uint k_1 = 0u;
@@ -1366,30 +1420,30 @@ vec3 trace(Ray camera_ray) {
                         Hit _e142 = hit_10;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_8, 0u);
-                        i_5 = 0u;
+                        f_1 = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_8, 0u);
+                        i_6 = 0u;
                         bool loop_init_4 = true;
                         while(true) {
                             if (!loop_init_4) {
-                                uint _e175 = i_5;
-                                i_5 = (_e175 + 1u);
+                                uint _e175 = i_6;
+                                i_6 = (_e175 + 1u);
                             }
                             loop_init_4 = false;
-                            uint _e155 = i_5;
+                            uint _e155 = i_6;
                             if ((_e155 >= n_8)) {
                                 break;
                             }
-                            uint _e158 = i_5;
-                            uint _e162 = i_5;
+                            uint _e158 = i_6;
+                            uint _e162 = i_6;
                             vec3 _e165 = spawn_dirs[_e162];
-                            f.dirs[min(_e158, 0u)] = _e165;
-                            uint _e167 = i_5;
-                            uint _e171 = i_5;
+                            f_1.dirs[min(_e158, 0u)] = _e165;
+                            uint _e167 = i_6;
+                            uint _e171 = i_6;
                             vec3 _e174 = spawn_weights[_e171];
-                            f.weights[min(_e167, 0u)] = _e174;
+                            f_1.weights[min(_e167, 0u)] = _e174;
                         }
                         uint _e178 = depth_1;
-                        Frame _e182 = f;
+                        Frame _e182 = f_1;
                         stack[min(_e178, 2u)] = _e182;
                         uint _e183 = depth_1;
                         depth_1 = (_e183 + 1u);
@@ -1439,11 +1493,11 @@ vec3 trace(Ray camera_ray) {
         uint _e243 = stack[min(top_1, 2u)].next;
         uint _e248 = stack[min(top_1, 2u)].count;
         if ((_e243 < _e248)) {
-            uint i_6 = stack[min(top_1, 2u)].next;
-            stack[min(top_1, 2u)].next = (i_6 + 1u);
+            uint i_8 = stack[min(top_1, 2u)].next;
+            stack[min(top_1, 2u)].next = (i_8 + 1u);
             Ray parent = stack[min(top_1, 2u)].ray;
             Hit hit_12 = stack[min(top_1, 2u)].hit;
-            vec3 dir_7 = stack[min(top_1, 2u)].dirs[min(i_6, 0u)];
+            vec3 dir_7 = stack[min(top_1, 2u)].dirs[min(i_8, 0u)];
             medium_2 = parent.medium;
             if ((dot(dir_7, hit_12.geometric_normal) < 0.0)) {
                 uint _e289 = stack[min(top_1, 2u)].slot;
@@ -1510,8 +1564,8 @@ vec3 trace(Ray camera_ray) {
     return vec3(0.0);
 }
 
-bvec3 is_finite_vec3f(vec3 x_3) {
-    return lessThan((floatBitsToUint(x_3) & uvec3(2147483647u)), uvec3(2139095040u));
+bvec3 is_finite_vec3f(vec3 x_5) {
+    return lessThan((floatBitsToUint(x_5) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
 vec3 finite_or_zero(vec3 c_3) {
@@ -1519,7 +1573,7 @@ vec3 finite_or_zero(vec3 c_3) {
     return mix(vec3(0.0), c_3, _e3);
 }
 
-void render_pixel(uvec2 pixel_3) {
+void render_pixel(uvec2 pixel_4) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s_2 = 0u;
@@ -1542,9 +1596,9 @@ void render_pixel(uvec2 pixel_3) {
             break;
         }
         uint _e18 = s_2;
-        uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_3, sample_3, frame_5.seed);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_4, sample_4, frame_5.seed);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
         ray_24 = _e23;
         ray_24.depth = 0u;
         ray_24.kind = RAY_CAMERA;
@@ -1571,10 +1625,10 @@ void render_pixel(uvec2 pixel_3) {
     vec4 _e62 = vec4(_e59, float(frame_5.samples_per_pass));
     uint _e63 = bad;
     if ((tile_2.frame == 0u)) {
-        _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = _e62;
+        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
     } else {
-        vec4 _e69 = _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)];
-        _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = (_e69 + _e62);
+        vec4 _e69 = _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
+        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
     }
     if ((_e63 > 0u)) {
         atomicAdd(_group_0_binding_9_cs[0], _e63);

@@ -170,6 +170,9 @@ static const uint WORKGROUP_WIDTH = 8u;
 static const uint WORKGROUP_HEIGHT = 8u;
 static const uint NO_HIT = 4294967295u;
 static const uint SCATTER = 1000003u;
+static const uint SCRATCH_RNG_INDEX = 12u;
+static const uint SCRATCH_RNG_SEED = 13u;
+static const uint HALF_WORD_BITS = 16u;
 static const uint RAY_CAMERA = 0u;
 static const bool HAS_MEDIA = true;
 static const uint MEDIUM_ENTRY_STRIDE = 1u;
@@ -209,6 +212,7 @@ static const uint RAY_SECONDARY = 1u;
 
 cbuffer tile : register(b1) { TileParams tile; }
 cbuffer frame : register(b0) { FrameUniforms frame; }
+static uint scratch[14] = (uint[14])0;
 static uint rng_state = (uint)0;
 ByteAddressBuffer params : register(t6);
 static uint F32_INF = 2139095040u;
@@ -217,7 +221,6 @@ ByteAddressBuffer nodes : register(t2);
 ByteAddressBuffer triangles : register(t4);
 static float hit_error = (float)0;
 ByteAddressBuffer attributes : register(t5);
-static uint scratch[12] = (uint[12])0;
 static uint traversal_stack[74] = (uint[74])0;
 static uint ray_count = (uint)0;
 static float3 spawn_dirs[1] = (float3[1])0;
@@ -292,26 +295,25 @@ uint2 scattered_local(uint2 id)
 
 uint pcg_hash(uint x)
 {
-    uint state = ((x * 747796405u) + 2891336453u);
-    uint word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    uint state_1 = ((x * 747796405u) + 2891336453u);
+    uint word = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
     return ((word >> 22u) ^ word);
 }
 
-void rng_seed(uint2 pixel, uint sample_, uint seed)
+void rng_resume(uint2 pixel, uint sample_, uint seed, uint state)
 {
-    uint h = (uint)0;
+    scratch[min(uint(min(SCRATCH_RNG_INDEX, 13u)), 13u)] = sample_;
+    const uint _e12 = pcg_hash(seed);
+    const uint _e14 = pcg_hash((pixel.y ^ _e12));
+    const uint _e16 = pcg_hash((pixel.x ^ _e14));
+    scratch[min(uint(min(SCRATCH_RNG_SEED, 13u)), 13u)] = _e16;
+    rng_state = state;
+    return;
+}
 
-    const uint _e5 = pcg_hash(seed);
-    const uint _e7 = pcg_hash((sample_ ^ _e5));
-    const uint _e9 = pcg_hash((pixel.y ^ _e7));
-    const uint _e11 = pcg_hash((pixel.x ^ _e9));
-    h = _e11;
-    uint _e13 = h;
-    if ((_e13 == 0u)) {
-        h = 1u;
-    }
-    uint _e17 = h;
-    rng_state = _e17;
+void rng_seed(uint2 pixel_1, uint sample_1, uint seed_1)
+{
+    rng_resume(pixel_1, sample_1, seed_1, 0u);
     return;
 }
 
@@ -352,14 +354,71 @@ uint samples_per_pixel_query()
     return _e1.total_samples;
 }
 
+uint laine_karras(uint x_1, uint seed_2)
+{
+    uint v = (uint)0;
+
+    v = (x_1 + seed_2);
+    uint _e4 = v;
+    uint _e5 = v;
+    v = (_e4 ^ (_e5 * 1817228412u));
+    uint _e9 = v;
+    uint _e10 = v;
+    v = (_e9 ^ (_e10 * 3090095698u));
+    uint _e14 = v;
+    uint _e15 = v;
+    v = (_e14 ^ (_e15 * 3350193720u));
+    uint _e19 = v;
+    uint _e20 = v;
+    v = (_e19 ^ (_e20 * 2367878886u));
+    uint _e24 = v;
+    return _e24;
+}
+
+uint sobol_second_reversed(uint i)
+{
+    uint f = (uint)0;
+
+    f = i;
+    uint _e2 = f;
+    uint _e3 = f;
+    f = (_e2 ^ ((_e3 >> 1u) & 1431655765u));
+    uint _e9 = f;
+    uint _e10 = f;
+    f = (_e9 ^ ((_e10 >> 2u) & 858993459u));
+    uint _e16 = f;
+    uint _e17 = f;
+    f = (_e16 ^ ((_e17 >> 4u) & 252645135u));
+    uint _e23 = f;
+    uint _e24 = f;
+    f = (_e23 ^ ((_e24 >> 8u) & 16711935u));
+    uint _e30 = f;
+    uint _e31 = f;
+    f = (_e30 ^ (_e31 >> (HALF_WORD_BITS & 31u)));
+    uint _e37 = f;
+    return _e37;
+}
+
 float rand_next()
 {
-    uint _e1 = rng_state;
-    uint s_3 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_3;
-    uint word_1 = (((s_3 >> (((s_3 >> 28u) + 4u) & 31u)) ^ s_3) * 277803737u);
-    uint r_3 = ((word_1 >> 22u) ^ word_1);
-    return (float((r_3 >> 8u)) * (1.0 / 16777216.0));
+    uint x_2 = (uint)0;
+
+    uint d_2 = rng_state;
+    rng_state = (d_2 + 1u);
+    uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 13u)), 13u)];
+    const uint _e16 = pcg_hash((_e10 ^ ((d_2 >> 1u) * 2654435769u)));
+    uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 13u)), 13u)];
+    const uint _e24 = laine_karras(reversebits(_e22), _e16);
+    uint i_7 = reversebits(_e24);
+    x_2 = i_7;
+    if (((d_2 & 1u) != 0u)) {
+        const uint _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    uint scramble = (_e16 ^ (((2654435769u * (1u + (d_2 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    uint _e45 = x_2;
+    const uint _e46 = laine_karras(_e45, scramble);
+    return (float((reversebits(_e46) >> 8u)) * (1.0 / 16777216.0));
 }
 
 float2 rand2_next()
@@ -369,9 +428,9 @@ float2 rand2_next()
     return float2(_e0, _e1);
 }
 
-float3 normalize_vec3f(float3 v)
+float3 normalize_vec3f(float3 v_1)
 {
-    return ((dot(v, v) >= 1.1754944e-38) ? normalize(v) : (0.0).xxx);
+    return ((dot(v_1, v_1) >= 1.1754944e-38) ? normalize(v_1) : (0.0).xxx);
 }
 
 Ray ConstructRay(float3 arg0, float arg1, float3 arg2, float arg3, uint arg4, uint arg5, uint arg6) {
@@ -386,7 +445,7 @@ Ray ConstructRay(float3 arg0, float arg1, float3 arg2, float arg3, uint arg4, ui
     return ret;
 }
 
-Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
+Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
 {
     float2 jitter = (float2)0;
 
@@ -399,22 +458,22 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
         jitter = _e10;
     }
     float2 _e12 = jitter;
-    float2 ndc = ((((float2(pixel_1) + _e12) / size_1) * (2.0).xx) - (1.0).xx);
+    float2 ndc = ((((float2(pixel_2) + _e12) / size_1) * (2.0).xx) - (1.0).xx);
     const float3 _e24 = normalize_vec3f((cam.look_at - cam.position));
     const float3 _e27 = normalize_vec3f(cross(_e24, cam.up));
     float3 up = cross(_e27, _e24);
-    float h_1 = tan((radians(cam.fov) * 0.5));
+    float h = tan((radians(cam.fov) * 0.5));
     float aspect = (size_1.x / size_1.y);
-    const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
+    const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h) * aspect)).xxx)) - (up * ((ndc.y * h)).xxx)));
     uint _e52 = F32_INF;
     const Ray ray_25 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
     return ray_25;
 }
 
-Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
+Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
-    const Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
+    const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
     const Ray ray_26 = _e4;
     return ray_26;
 }
@@ -441,9 +500,9 @@ Ray to_object(GpuInstance inst, Ray ray)
 
     r = ray;
     float4 o_1 = float4(ray.origin, 1.0);
-    float4 d_2 = float4(ray.dir, 0.0);
+    float4 d_3 = float4(ray.dir, 0.0);
     r.origin = float3(dot(inst.world_to_object_0_, o_1), dot(inst.world_to_object_1_, o_1), dot(inst.world_to_object_2_, o_1));
-    r.dir = float3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
+    r.dir = float3(dot(inst.world_to_object_0_, d_3), dot(inst.world_to_object_1_, d_3), dot(inst.world_to_object_2_, d_3));
     Ray _e25 = r;
     const Ray ray_27 = _e25;
     return ray_27;
@@ -452,8 +511,8 @@ Ray to_object(GpuInstance inst, Ray ray)
 float3 safe_inverse(float3 d)
 {
     float3 tiny = (1.1754944e-38).xxx;
-    float3 s_4 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny) ? (s_4 * tiny) : d);
+    float3 s_3 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 dd = ((abs(d) < tiny) ? (s_3 * tiny) : d);
     return ((1.0).xxx / dd);
 }
 
@@ -470,19 +529,19 @@ TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, f
 
 TriangleRay prepare_triangle_ray(Ray ray_1)
 {
-    float3 d_3 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
-    float3 ad = abs(d_3);
+    float3 d_4 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
+    float3 ad = abs(d_4);
     bool y_gt = (ad.y > ad.x);
     uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
     uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
     uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
-    float dz = d_3[min(uint(min(kz, 2u)), 2u)];
+    float dz = d_4[min(uint(min(kz, 2u)), 2u)];
     bool flip = (dz < 0.0);
     uint kx = (flip ? ky0_ : kx0_);
     uint ky = (flip ? kx0_ : ky0_);
     uint3 inf_bits = (2139095040u).xxx;
-    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_3) & (2147483647u).xxx) < inf_bits)));
-    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_3[min(uint(min(kx, 2u)), 2u)] / dz), (d_3[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_4) & (2147483647u).xxx) < inf_bits)));
+    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_4[min(uint(min(kx, 2u)), 2u)] / dz), (d_4[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
     return triangleray;
 }
 
@@ -501,15 +560,15 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float cx = (c_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float cy = (c_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u = ((cx * by) - (cy * bx));
-    float v_1 = ((ax * cy) - (ay * cx));
+    float v_2 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
-    bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
-    float det = ((u + v_1) + w);
+    bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
+    float det = ((u + v_2) + w);
     float rcp_ = (1.0 / det);
-    float t_5 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_4[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_5 = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_4[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_11 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_11 ? float3(t_5, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_11 ? float3(t_5, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 float point_error(float3 origin, float3 along)
@@ -563,9 +622,9 @@ float3 decode_octahedral(uint bits)
     float _e14 = n.z;
     if ((_e14 < 0.0)) {
         float3 _e21 = n;
-        float2 s_5 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
+        float2 s_4 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
         float3 _e29 = n;
-        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_5);
+        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_4);
         float _e37 = n.z;
         n = float3(xy.x, xy.y, _e37);
     }
@@ -689,9 +748,9 @@ Fog load_Fog(uint offset_2)
     return fog;
 }
 
-bool is_finite_f32_(float x_1)
+bool is_finite_f32_(float x_3)
 {
-    return ((asuint(x_1) & 2147483647u) < 2139095040u);
+    return ((asuint(x_3) & 2147483647u) < 2139095040u);
 }
 
 void absorb_query(float density)
@@ -701,7 +760,7 @@ void absorb_query(float density)
     if (!(HAS_ABSORB)) {
         return;
     }
-    uint side = scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)];
+    uint side = scratch[min(uint(min(SCRATCH_ABSORB, 13u)), 13u)];
     if ((side == 0u)) {
         return;
     }
@@ -710,21 +769,21 @@ void absorb_query(float density)
     if ((_e13 && (density > 0.0))) {
         sigma = density;
     }
-    uint _e22 = scratch[min(uint(min(SCRATCH_ABSORB_T, 11u)), 11u)];
+    uint _e22 = scratch[min(uint(min(SCRATCH_ABSORB_T, 13u)), 13u)];
     float t_6 = asfloat(_e22);
     float _e24 = sigma;
     float _e25 = sigma;
-    float s_6 = ((side == 2u) ? -(_e25) : _e24);
-    uint _e35 = scratch[min(uint(min(SCRATCH_DEPTH, 11u)), 11u)];
-    float depth_2 = (asfloat(_e35) - (s_6 * t_6));
-    scratch[min(uint(min(SCRATCH_DEPTH, 11u)), 11u)] = asuint(depth_2);
-    uint _e50 = scratch[min(uint(min(SCRATCH_NET, 11u)), 11u)];
-    float net = (asfloat(_e50) + s_6);
-    scratch[min(uint(min(SCRATCH_NET, 11u)), 11u)] = asuint(net);
-    uint _e64 = scratch[min(uint(min(SCRATCH_DENSITY_MAX, 11u)), 11u)];
+    float s_5 = ((side == 2u) ? -(_e25) : _e24);
+    uint _e35 = scratch[min(uint(min(SCRATCH_DEPTH, 13u)), 13u)];
+    float depth_2 = (asfloat(_e35) - (s_5 * t_6));
+    scratch[min(uint(min(SCRATCH_DEPTH, 13u)), 13u)] = asuint(depth_2);
+    uint _e50 = scratch[min(uint(min(SCRATCH_NET, 13u)), 13u)];
+    float net = (asfloat(_e50) + s_5);
+    scratch[min(uint(min(SCRATCH_NET, 13u)), 13u)] = asuint(net);
+    uint _e64 = scratch[min(uint(min(SCRATCH_DENSITY_MAX, 13u)), 13u)];
     float _e66 = sigma;
     float most = max(asfloat(_e64), _e66);
-    scratch[min(uint(min(SCRATCH_DENSITY_MAX, 11u)), 11u)] = asuint(most);
+    scratch[min(uint(min(SCRATCH_DENSITY_MAX, 13u)), 13u)] = asuint(most);
     return;
 }
 
@@ -748,11 +807,11 @@ bool accept(GpuInstance inst_4, Ray ray_5, Candidate c_1)
         const Hit _e10 = finish_hit(ray_5, c_1);
         hit_error = shaded;
         if ((ray_5.kind == RAY_SHADOW)) {
-            scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)] = (_e10.front_face ? 1u : 2u);
-            scratch[min(uint(min(SCRATCH_ABSORB_T, 11u)), 11u)] = asuint((c_1.t * length(ray_5.dir)));
+            scratch[min(uint(min(SCRATCH_ABSORB, 13u)), 13u)] = (_e10.front_face ? 1u : 2u);
+            scratch[min(uint(min(SCRATCH_ABSORB_T, 13u)), 13u)] = asuint((c_1.t * length(ray_5.dir)));
         }
         const bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
-        scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)] = 0u;
+        scratch[min(uint(min(SCRATCH_ABSORB, 13u)), 13u)] = 0u;
         return _e36;
     }
     return true;
@@ -958,7 +1017,7 @@ uint medium_at(float3 p_4, uint exclude)
 {
     uint inside = (uint)0;
     float nearest = (float)0;
-    uint i = (uint)0;
+    uint i_1 = (uint)0;
 
     if (!(HAS_MEDIA)) {
         return 0u;
@@ -971,22 +1030,22 @@ uint medium_at(float3 p_4, uint exclude)
     uint _e23 = F32_INF;
     nearest = asfloat(_e23);
     uint end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e59 = i;
-            i = (_e59 + 1u);
+            uint _e59 = i_1;
+            i_1 = (_e59 + 1u);
         }
         loop_init_1 = false;
-        uint _e29 = i;
+        uint _e29 = i_1;
         if ((_e29 >= end)) {
             break;
         }
-        uint _e32 = i;
+        uint _e32 = i_1;
         uint slot_4 = asuint(params.Load((frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))*4));
         if ((slot_4 != exclude)) {
             uint _e41 = F32_INF;
@@ -1138,7 +1197,7 @@ float3 miss(Ray ray_11)
 
 void shading_medium(uint medium)
 {
-    scratch[min(uint(min(SCRATCH_MEDIUM, 11u)), 11u)] = medium;
+    scratch[min(uint(min(SCRATCH_MEDIUM, 13u)), 13u)] = medium;
     return;
 }
 
@@ -1199,20 +1258,20 @@ PointLight load_PointLight(uint offset_6)
     return pointlight;
 }
 
-float3 step_toward(float3 x_2, float3 s)
+float3 step_toward(float3 x_4, float3 s)
 {
-    uint3 bits_1 = asuint(x_2);
-    bool3 up_1 = ((sign(x_2) * sign(s)) > (0.0).xxx);
+    uint3 bits_1 = asuint(x_4);
+    bool3 up_1 = ((sign(x_4) * sign(s)) > (0.0).xxx);
     float3 stepped = asfloat((up_1 ? (bits_1 + (1u).xxx) : (bits_1 - (1u).xxx)));
     float3 from_zero = ((s > (0.0).xxx) ? (1.1754944e-38).xxx : (-1.1754944e-38).xxx);
-    float3 moved = ((x_2 == (0.0).xxx) ? from_zero : stepped);
-    return (!((s == (0.0).xxx)) ? moved : x_2);
+    float3 moved = ((x_4 == (0.0).xxx) ? from_zero : stepped);
+    return (!((s == (0.0).xxx)) ? moved : x_4);
 }
 
 float3 offset_origin(float3 p_5, float3 n_3, float error)
 {
-    float d_4 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    float3 offset_11 = (n_3 * (d_4).xxx);
+    float d_5 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
+    float3 offset_11 = (n_3 * (d_5).xxx);
     const float3 _e17 = step_toward((p_5 + offset_11), offset_11);
     return _e17;
 }
@@ -1252,19 +1311,19 @@ float shadow_transmittance(Ray ray_14, uint medium_1)
 {
     float depth = (float)0;
 
-    scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)] = 0u;
-    scratch[min(uint(min(SCRATCH_DEPTH, 11u)), 11u)] = 0u;
-    scratch[min(uint(min(SCRATCH_NET, 11u)), 11u)] = 0u;
-    scratch[min(uint(min(SCRATCH_DENSITY_MAX, 11u)), 11u)] = 0u;
+    scratch[min(uint(min(SCRATCH_ABSORB, 13u)), 13u)] = 0u;
+    scratch[min(uint(min(SCRATCH_DEPTH, 13u)), 13u)] = 0u;
+    scratch[min(uint(min(SCRATCH_NET, 13u)), 13u)] = 0u;
+    scratch[min(uint(min(SCRATCH_DENSITY_MAX, 13u)), 13u)] = 0u;
     if ((HAS_MEDIA && HAS_ANY_HIT)) {
         if ((medium_1 != 0u)) {
             GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4((medium_1 - 1u)*128+0)), asfloat(instances.Load4((medium_1 - 1u)*128+16)), asfloat(instances.Load4((medium_1 - 1u)*128+32)), asfloat(instances.Load4((medium_1 - 1u)*128+48)), asfloat(instances.Load4((medium_1 - 1u)*128+64)), asfloat(instances.Load4((medium_1 - 1u)*128+80)), asuint(instances.Load((medium_1 - 1u)*128+96)), asuint(instances.Load((medium_1 - 1u)*128+100)), asuint(instances.Load((medium_1 - 1u)*128+104)), asuint(instances.Load((medium_1 - 1u)*128+108)), asuint(instances.Load((medium_1 - 1u)*128+112)), asuint(instances.Load((medium_1 - 1u)*128+116)), asuint(instances.Load((medium_1 - 1u)*128+120)), asuint(instances.Load((medium_1 - 1u)*128+124)));
             if (((inst_8.flags & FLAG_ANY_HIT) != 0u)) {
                 Hit start = ConstructHit(ray_14.origin, 0.0, -(ray_14.dir), -(ray_14.dir), (0.0).xx, true, inst_8.object, 0u);
-                scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)] = 1u;
-                scratch[min(uint(min(SCRATCH_ABSORB_T, 11u)), 11u)] = 0u;
+                scratch[min(uint(min(SCRATCH_ABSORB, 13u)), 13u)] = 1u;
+                scratch[min(uint(min(SCRATCH_ABSORB_T, 13u)), 13u)] = 0u;
                 const bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start);
-                scratch[min(uint(min(SCRATCH_ABSORB, 11u)), 11u)] = 0u;
+                scratch[min(uint(min(SCRATCH_ABSORB, 13u)), 13u)] = 0u;
             }
         }
     }
@@ -1272,11 +1331,11 @@ float shadow_transmittance(Ray ray_14, uint medium_1)
     if ((_e75.slot != NO_HIT)) {
         return 0.0;
     }
-    uint _e85 = scratch[min(uint(min(SCRATCH_DEPTH, 11u)), 11u)];
+    uint _e85 = scratch[min(uint(min(SCRATCH_DEPTH, 13u)), 13u)];
     depth = asfloat(_e85);
-    uint _e93 = scratch[min(uint(min(SCRATCH_NET, 11u)), 11u)];
+    uint _e93 = scratch[min(uint(min(SCRATCH_NET, 13u)), 13u)];
     float net_1 = asfloat(_e93);
-    uint _e101 = scratch[min(uint(min(SCRATCH_DENSITY_MAX, 11u)), 11u)];
+    uint _e101 = scratch[min(uint(min(SCRATCH_DENSITY_MAX, 13u)), 13u)];
     if ((net_1 > (1e-6 * asfloat(_e101)))) {
         uint _e107 = F32_INF;
         if ((ray_14.tmax == asfloat(_e107))) {
@@ -1292,7 +1351,7 @@ float shadow_transmittance(Ray ray_14, uint medium_1)
 float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
 {
     const Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    uint _e10 = scratch[min(uint(min(SCRATCH_MEDIUM, 11u)), 11u)];
+    uint _e10 = scratch[min(uint(min(SCRATCH_MEDIUM, 13u)), 13u)];
     const float _e11 = shadow_transmittance(_e4, _e10);
     return _e11;
 }
@@ -1332,14 +1391,14 @@ LightSample dispatch_light(uint type_id_3, uint offset_7, float3 position_3, flo
     return lightsample_1;
 }
 
-LightSample sample_light_query(uint i_1, float3 position_4, float3 normal_4)
+LightSample sample_light_query(uint i_2, float3 position_4, float3 normal_4)
 {
     FrameUniforms frame_4 = frame;
-    if ((i_1 >= frame_4.light_count)) {
+    if ((i_2 >= frame_4.light_count)) {
         const LightSample lightsample_2 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_2;
     }
-    uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     uint _e22 = asuint(params.Load(entry*4));
     uint _e27 = asuint(params.Load((entry + 1u)*4));
     const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
@@ -1350,27 +1409,27 @@ LightSample sample_light_query(uint i_1, float3 position_4, float3 normal_4)
 float3 lambert_shade(Lambert m_2, Ray ray_15, Hit hit_5)
 {
     float3 color = (float3)0;
-    uint i_2 = (uint)0;
+    uint i_3 = (uint)0;
 
     const float3 _e3 = shading_normal(ray_15, hit_5);
     color = (0.0).xxx;
     const uint _e8 = light_count_query();
-    i_2 = 0u;
+    i_3 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e30 = i_2;
-            i_2 = (_e30 + 1u);
+            uint _e30 = i_3;
+            i_3 = (_e30 + 1u);
         }
         loop_init_2 = false;
-        uint _e10 = i_2;
+        uint _e10 = i_3;
         if ((_e10 >= _e8)) {
             break;
         }
-        uint _e12 = i_2;
+        uint _e12 = i_3;
         const LightSample _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal);
         float3 _e16 = color;
         color = (_e16 + (((m_2.albedo * (INV_PI).xxx) * _e15.radiance) * (max(dot(_e3, _e15.dir), 0.0)).xxx));
@@ -1408,21 +1467,21 @@ float3 shade_direct(Ray ray_17, Candidate c_2)
     return _e12;
 }
 
-float3 fog_inscatter(Fog m_3, uint i_3, float3 o, float3 dir_2, float d_1, float trans)
+float3 fog_inscatter(Fog m_3, uint i_4, float3 o, float3 dir_2, float d_1, float trans)
 {
     float s_1 = (float)0;
 
     float sigma_1 = m_3.density;
     bool tiny_1 = ((sigma_1 * d_1) < 0.001);
-    const LightSample _e12 = sample_light_query(i_3, o, (0.0).xxx);
+    const LightSample _e12 = sample_light_query(i_4, o, (0.0).xxx);
     float3 c_6 = (_e12.dir * (_e12.dist).xxx);
     float delta = dot(c_6, dir_2);
-    float h_2 = length((c_6 - (dir_2 * (delta).xxx)));
-    const bool _e22 = is_finite_f32_(h_2);
-    bool equi = (_e22 && (h_2 > 1e-20));
-    float ta = atan2(-(delta), h_2);
+    float h_1 = length((c_6 - (dir_2 * (delta).xxx)));
+    const bool _e22 = is_finite_f32_(h_1);
+    bool equi = (_e22 && (h_1 > 1e-20));
+    float ta = atan2(-(delta), h_1);
     uint _e34 = F32_INF;
-    float tb = ((d_1 == asfloat(_e34)) ? (0.5 * PI) : atan2((d_1 - delta), h_2));
+    float tb = ((d_1 == asfloat(_e34)) ? (0.5 * PI) : atan2((d_1 - delta), h_1));
     float w_3 = (equi ? 0.5 : 0.0);
     const float2 _e41 = rand2_next();
     s_1 = (-(log((1.0 - (_e41.y * (1.0 - trans))))) / sigma_1);
@@ -1430,7 +1489,7 @@ float3 fog_inscatter(Fog m_3, uint i_3, float3 o, float3 dir_2, float d_1, float
         s_1 = (_e41.y * d_1);
     }
     if ((_e41.x < w_3)) {
-        s_1 = (delta + (h_2 * tan(lerp(ta, tb, _e41.y))));
+        s_1 = (delta + (h_1 * tan(lerp(ta, tb, _e41.y))));
     }
     float _e61 = s_1;
     s_1 = min(max(_e61, 0.0), d_1);
@@ -1438,44 +1497,44 @@ float3 fog_inscatter(Fog m_3, uint i_3, float3 o, float3 dir_2, float d_1, float
     float e_2 = exp((-(sigma_1) * _e66));
     float p_free = (tiny_1 ? (1.0 / d_1) : ((sigma_1 * e_2) / (1.0 - trans)));
     float _e76 = s_1;
-    float r_4 = (_e76 - delta);
-    float pdf = (((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_2) / ((tb - ta) * ((h_2 * h_2) + (r_4 * r_4)))) : 0.0));
+    float r_3 = (_e76 - delta);
+    float pdf = (((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))) : 0.0));
     float _e91 = s_1;
-    const LightSample _e97 = sample_light_query(i_3, (o + (dir_2 * (_e91).xxx)), (0.0).xxx);
+    const LightSample _e97 = sample_light_query(i_4, (o + (dir_2 * (_e91).xxx)), (0.0).xxx);
     return (_e97.radiance * (((sigma_1 * e_2) / pdf)).xxx);
 }
 
 float3 fog_medium(Fog m_4, Ray ray_18, float t, float3 radiance)
 {
     float3 light = (float3)0;
-    uint i_4 = (uint)0;
+    uint i_5 = (uint)0;
 
     float len = length(ray_18.dir);
     if ((!((m_4.density > 0.0)) || !((len > 0.0)))) {
         return radiance;
     }
-    float d_5 = (t * len);
-    float trans_1 = exp((-(m_4.density) * d_5));
+    float d_6 = (t * len);
+    float trans_1 = exp((-(m_4.density) * d_6));
     light = (0.0).xxx;
     const uint _e23 = light_count_query();
-    i_4 = 0u;
+    i_5 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e35 = i_4;
-            i_4 = (_e35 + 1u);
+            uint _e35 = i_5;
+            i_5 = (_e35 + 1u);
         }
         loop_init_3 = false;
-        uint _e25 = i_4;
+        uint _e25 = i_5;
         if ((_e25 >= _e23)) {
             break;
         }
         float3 _e27 = light;
-        uint _e28 = i_4;
-        const float3 _e33 = fog_inscatter(m_4, _e28, ray_18.origin, (ray_18.dir / (len).xxx), d_5, trans_1);
+        uint _e28 = i_5;
+        const float3 _e33 = fog_inscatter(m_4, _e28, ray_18.origin, (ray_18.dir / (len).xxx), d_6, trans_1);
         light = (_e27 + _e33);
     }
     float3 _e46 = light;
@@ -1594,8 +1653,8 @@ float3 trace(Ray camera_ray)
     float3 radiance_4 = (float3)0;
     float t_4 = (float)0;
     Hit hit_10 = (Hit)0;
-    Frame f = (Frame)0;
-    uint i_5 = (uint)0;
+    Frame f_1 = (Frame)0;
+    uint i_6 = (uint)0;
     uint medium_2 = (uint)0;
     bool found = (bool)0;
     uint k_1 = (uint)0;
@@ -1696,33 +1755,33 @@ float3 trace(Ray camera_ray)
                         Hit _e142 = hit_10;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_8, 0u);
-                        i_5 = 0u;
+                        f_1 = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_8, 0u);
+                        i_6 = 0u;
                         uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
                         bool loop_init_4 = true;
                         while(true) {
                             if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
                             loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                             if (!loop_init_4) {
-                                uint _e175 = i_5;
-                                i_5 = (_e175 + 1u);
+                                uint _e175 = i_6;
+                                i_6 = (_e175 + 1u);
                             }
                             loop_init_4 = false;
-                            uint _e155 = i_5;
+                            uint _e155 = i_6;
                             if ((_e155 >= n_8)) {
                                 break;
                             }
-                            uint _e158 = i_5;
-                            uint _e162 = i_5;
+                            uint _e158 = i_6;
+                            uint _e162 = i_6;
                             float3 _e165 = spawn_dirs[min(uint(_e162), 0u)];
-                            f.dirs[min(uint(min(_e158, 0u)), 0u)] = _e165;
-                            uint _e167 = i_5;
-                            uint _e171 = i_5;
+                            f_1.dirs[min(uint(min(_e158, 0u)), 0u)] = _e165;
+                            uint _e167 = i_6;
+                            uint _e171 = i_6;
                             float3 _e174 = spawn_weights[min(uint(_e171), 0u)];
-                            f.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
+                            f_1.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
                         }
                         uint _e178 = depth_1;
-                        Frame _e182 = f;
+                        Frame _e182 = f_1;
                         stack[min(uint(min(_e178, 2u)), 2u)] = _e182;
                         uint _e183 = depth_1;
                         depth_1 = (_e183 + 1u);
@@ -1772,11 +1831,11 @@ float3 trace(Ray camera_ray)
         uint _e243 = stack[min(uint(min(top_1, 2u)), 2u)].next;
         uint _e248 = stack[min(uint(min(top_1, 2u)), 2u)].count;
         if ((_e243 < _e248)) {
-            uint i_6 = stack[min(uint(min(top_1, 2u)), 2u)].next;
-            stack[min(uint(min(top_1, 2u)), 2u)].next = (i_6 + 1u);
+            uint i_8 = stack[min(uint(min(top_1, 2u)), 2u)].next;
+            stack[min(uint(min(top_1, 2u)), 2u)].next = (i_8 + 1u);
             Ray parent = stack[min(uint(min(top_1, 2u)), 2u)].ray;
             Hit hit_13 = stack[min(uint(min(top_1, 2u)), 2u)].hit;
-            float3 dir_7 = stack[min(uint(min(top_1, 2u)), 2u)].dirs[min(uint(min(i_6, 0u)), 0u)];
+            float3 dir_7 = stack[min(uint(min(top_1, 2u)), 2u)].dirs[min(uint(min(i_8, 0u)), 0u)];
             medium_2 = parent.medium;
             if ((dot(dir_7, hit_13.geometric_normal) < 0.0)) {
                 uint _e289 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
@@ -1846,9 +1905,9 @@ float3 trace(Ray camera_ray)
     return ZeroValuefloat3();
 }
 
-bool3 is_finite_vec3f(float3 x_3)
+bool3 is_finite_vec3f(float3 x_5)
 {
-    return ((asuint(x_3) & (2147483647u).xxx) < (2139095040u).xxx);
+    return ((asuint(x_5) & (2147483647u).xxx) < (2139095040u).xxx);
 }
 
 float3 finite_or_zero(float3 c_3)
@@ -1857,7 +1916,7 @@ float3 finite_or_zero(float3 c_3)
     return (_e3 ? c_3 : (0.0).xxx);
 }
 
-void render_pixel(uint2 pixel_3)
+void render_pixel(uint2 pixel_4)
 {
     float3 sum = (float3)0;
     uint bad = (uint)0;
@@ -1885,9 +1944,9 @@ void render_pixel(uint2 pixel_3)
             break;
         }
         uint _e18 = s_2;
-        uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_3, sample_3, frame_5.seed);
-        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_4, sample_4, frame_5.seed);
+        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
         ray_24 = _e23;
         ray_24.depth = 0u;
         ray_24.kind = RAY_CAMERA;
@@ -1914,10 +1973,10 @@ void render_pixel(uint2 pixel_3)
     float4 _e62 = float4(_e59, float(frame_5.samples_per_pass));
     uint _e63 = bad;
     if ((tile_2.frame == 0u)) {
-        accum.Store4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16, asuint(_e62));
+        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint(_e62));
     } else {
-        float4 _e69 = asfloat(accum.Load4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16));
-        accum.Store4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16, asuint((_e69 + _e62)));
+        float4 _e69 = asfloat(accum.Load4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16));
+        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint((_e69 + _e62)));
     }
     if ((_e63 > 0u)) {
         counters.InterlockedAdd(0, _e63);

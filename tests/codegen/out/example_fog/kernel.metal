@@ -5,11 +5,11 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size3;
-    uint size5;
+    uint size4;
     uint size6;
     uint size7;
-    uint size9;
+    uint size8;
+    uint size10;
     uint size16;
     uint size17;
 };
@@ -37,6 +37,9 @@ struct FrameUniforms {
     uint background_offset;
     uint path_slots;
 };
+struct type_3 {
+    uint inner[14];
+};
 struct Ray {
     metal::packed_float3 origin;
     float tmin;
@@ -47,7 +50,7 @@ struct Ray {
     uint medium;
     char _pad7[4];
 };
-typedef uint type_4[1];
+typedef uint type_5[1];
 struct Pinhole {
     metal::float3 position;
     metal::float3 look_at;
@@ -79,7 +82,7 @@ struct GpuInstance {
     uint flags;
     uint object;
 };
-typedef GpuInstance type_8[1];
+typedef GpuInstance type_9[1];
 struct TriangleRay {
     metal::packed_float3 origin;
     uint kx;
@@ -96,8 +99,8 @@ struct GpuNode {
     metal::packed_float3 max;
     uint b;
 };
-typedef GpuNode type_9[1];
-typedef metal::float4 type_10[1];
+typedef GpuNode type_10[1];
+typedef metal::float4 type_11[1];
 struct Hit {
     metal::packed_float3 position;
     float t;
@@ -115,10 +118,7 @@ struct Triangle {
     metal::float3 v1_;
     metal::float3 v2_;
 };
-typedef metal::uint4 type_12[1];
-struct type_13 {
-    uint inner[12];
-};
+typedef metal::uint4 type_13[1];
 struct Fog {
     float density;
     char _pad1[12];
@@ -168,6 +168,9 @@ constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint NO_HIT = 4294967295u;
 constant uint SCATTER = 1000003u;
+constant uint SCRATCH_RNG_INDEX = 12u;
+constant uint SCRATCH_RNG_SEED = 13u;
+constant uint HALF_WORD_BITS = 16u;
 constant uint RAY_CAMERA = 0u;
 constant bool HAS_MEDIA = true;
 constant uint MEDIUM_ENTRY_STRIDE = 1u;
@@ -282,35 +285,42 @@ metal::uint2 scattered_local(
 uint pcg_hash(
     uint x
 ) {
-    uint state = (x * 747796405u) + 2891336453u;
-    uint word = ((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u;
+    uint state_1 = (x * 747796405u) + 2891336453u;
+    uint word = ((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u;
     return (word >> 22u) ^ word;
 }
 
-void rng_seed(
+void rng_resume(
     metal::uint2 pixel,
     uint sample,
     uint seed,
+    uint state,
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    uint h = {};
-    uint _e5 = pcg_hash(seed);
-    uint _e7 = pcg_hash(sample ^ _e5);
-    uint _e9 = pcg_hash(pixel.y ^ _e7);
-    uint _e11 = pcg_hash(pixel.x ^ _e9);
-    h = _e11;
-    uint _e13 = h;
-    if (_e13 == 0u) {
-        h = 1u;
-    }
-    uint _e17 = h;
-    rng_state = _e17;
+    scratch.inner[metal::min(SCRATCH_RNG_INDEX, 13u)] = sample;
+    uint _e12 = pcg_hash(seed);
+    uint _e14 = pcg_hash(pixel.y ^ _e12);
+    uint _e16 = pcg_hash(pixel.x ^ _e14);
+    scratch.inner[metal::min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    rng_state = state;
+    return;
+}
+
+void rng_seed(
+    metal::uint2 pixel_1,
+    uint sample_1,
+    uint seed_1,
+    thread type_3& scratch,
+    thread uint& rng_state
+) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u, scratch, rng_state);
     return;
 }
 
 Pinhole load_Pinhole(
     uint offset,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset + 0u];
@@ -340,37 +350,97 @@ uint samples_per_pixel_query(
     return _e1.total_samples;
 }
 
+uint laine_karras(
+    uint x_1,
+    uint seed_2
+) {
+    uint v = {};
+    v = x_1 + seed_2;
+    uint _e4 = v;
+    uint _e5 = v;
+    v = _e4 ^ (_e5 * 1817228412u);
+    uint _e9 = v;
+    uint _e10 = v;
+    v = _e9 ^ (_e10 * 3090095698u);
+    uint _e14 = v;
+    uint _e15 = v;
+    v = _e14 ^ (_e15 * 3350193720u);
+    uint _e19 = v;
+    uint _e20 = v;
+    v = _e19 ^ (_e20 * 2367878886u);
+    uint _e24 = v;
+    return _e24;
+}
+
+uint sobol_second_reversed(
+    uint i
+) {
+    uint f = {};
+    f = i;
+    uint _e2 = f;
+    uint _e3 = f;
+    f = _e2 ^ ((_e3 >> 1u) & 1431655765u);
+    uint _e9 = f;
+    uint _e10 = f;
+    f = _e9 ^ ((_e10 >> 2u) & 858993459u);
+    uint _e16 = f;
+    uint _e17 = f;
+    f = _e16 ^ ((_e17 >> 4u) & 252645135u);
+    uint _e23 = f;
+    uint _e24 = f;
+    f = _e23 ^ ((_e24 >> 8u) & 16711935u);
+    uint _e30 = f;
+    uint _e31 = f;
+    f = _e30 ^ (_e31 >> (HALF_WORD_BITS & 31u));
+    uint _e37 = f;
+    return _e37;
+}
+
 float rand_next(
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    uint _e1 = rng_state;
-    uint s_3 = (_e1 * 747796405u) + 2891336453u;
-    rng_state = s_3;
-    uint word_1 = ((s_3 >> (((s_3 >> 28u) + 4u) & 31u)) ^ s_3) * 277803737u;
-    uint r_3 = (word_1 >> 22u) ^ word_1;
-    return static_cast<float>(r_3 >> 8u) * (1.0 / 16777216.0);
+    uint x_2 = {};
+    uint d_2 = rng_state;
+    rng_state = d_2 + 1u;
+    uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 13u)];
+    uint _e16 = pcg_hash(_e10 ^ ((d_2 >> 1u) * 2654435769u));
+    uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 13u)];
+    uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
+    uint i_7 = metal::reverse_bits(_e24);
+    x_2 = i_7;
+    if ((d_2 & 1u) != 0u) {
+        uint _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    uint scramble = _e16 ^ (((2654435769u * (1u + (d_2 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
+    uint _e45 = x_2;
+    uint _e46 = laine_karras(_e45, scramble);
+    return static_cast<float>(metal::reverse_bits(_e46) >> 8u) * (1.0 / 16777216.0);
 }
 
 metal::float2 rand2_next(
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    float _e0 = rand_next(rng_state);
-    float _e1 = rand_next(rng_state);
+    float _e0 = rand_next(scratch, rng_state);
+    float _e1 = rand_next(scratch, rng_state);
     return metal::float2(_e0, _e1);
 }
 
 metal::float3 normalize_vec3f(
-    metal::float3 v
+    metal::float3 v_1
 ) {
-    return (metal::dot(v, v) >= 0.000000000000000000000000000000000000011754944) ? metal::normalize(v) : metal::float3(0.0);
+    return (metal::dot(v_1, v_1) >= 0.000000000000000000000000000000000000011754944) ? metal::normalize(v_1) : metal::float3(0.0);
 }
 
 Ray pinhole_ray(
     Pinhole cam,
-    metal::uint2 pixel_1,
-    uint sample_1,
+    metal::uint2 pixel_2,
+    uint sample_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -380,17 +450,17 @@ Ray pinhole_ray(
     jitter = metal::float2(0.5);
     uint _e7 = samples_per_pixel_query(frame);
     if (_e7 > 1u) {
-        metal::float2 _e10 = rand2_next(rng_state);
+        metal::float2 _e10 = rand2_next(scratch, rng_state);
         jitter = _e10;
     }
     metal::float2 _e12 = jitter;
-    metal::float2 ndc = (((static_cast<metal::float2>(pixel_1) + _e12) / size_1) * metal::float2(2.0)) - metal::float2(1.0);
+    metal::float2 ndc = (((static_cast<metal::float2>(pixel_2) + _e12) / size_1) * metal::float2(2.0)) - metal::float2(1.0);
     metal::float3 _e24 = normalize_vec3f(cam.look_at - cam.position);
     metal::float3 _e27 = normalize_vec3f(metal::cross(_e24, cam.up));
     metal::float3 up = metal::cross(_e27, _e24);
-    float h_1 = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
+    float h = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
     float aspect = size_1.x / size_1.y;
-    metal::float3 _e48 = normalize_vec3f((_e24 + (_e27 * metal::float3((ndc.x * h_1) * aspect))) - (up * metal::float3(ndc.y * h_1)));
+    metal::float3 _e48 = normalize_vec3f((_e24 + (_e27 * metal::float3((ndc.x * h) * aspect))) - (up * metal::float3(ndc.y * h)));
     uint _e52 = F32_INF;
     return Ray {cam.position, 0.0, _e48, as_type<float>(_e52), 0u, 0u, 0u};
 }
@@ -398,17 +468,18 @@ Ray pinhole_ray(
 Ray dispatch_ray_generation(
     uint type_id,
     uint offset_1,
-    metal::uint2 pixel_2,
-    uint sample_2,
+    metal::uint2 pixel_3,
+    uint sample_3,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Pinhole _e3 = load_Pinhole(offset_1, params, _buffer_sizes);
-    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2, tile, frame, rng_state, F32_INF);
+    Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3, tile, frame, scratch, rng_state, F32_INF);
     return _e4;
 }
 
@@ -425,9 +496,9 @@ Ray to_object(
     Ray r = {};
     r = ray;
     metal::float4 o_1 = metal::float4(ray.origin, 1.0);
-    metal::float4 d_2 = metal::float4(ray.dir, 0.0);
+    metal::float4 d_3 = metal::float4(ray.dir, 0.0);
     r.origin = metal::float3(metal::dot(inst.world_to_object_0_, o_1), metal::dot(inst.world_to_object_1_, o_1), metal::dot(inst.world_to_object_2_, o_1));
-    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_2), metal::dot(inst.world_to_object_1_, d_2), metal::dot(inst.world_to_object_2_, d_2));
+    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_3), metal::dot(inst.world_to_object_1_, d_3), metal::dot(inst.world_to_object_2_, d_3));
     Ray _e25 = r;
     return _e25;
 }
@@ -436,27 +507,27 @@ metal::float3 safe_inverse(
     metal::float3 d
 ) {
     metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_4 * tiny, metal::abs(d) < tiny);
+    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_3 * tiny, metal::abs(d) < tiny);
     return metal::float3(1.0) / dd;
 }
 
 TriangleRay prepare_triangle_ray(
     Ray ray_1
 ) {
-    metal::float3 d_3 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
-    metal::float3 ad = metal::abs(d_3);
+    metal::float3 d_4 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 ad = metal::abs(d_4);
     bool y_gt = ad.y > ad.x;
     uint kz = (ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u);
     uint kx0_ = (kz == 2u) ? 0u : (kz + 1u);
     uint ky0_ = (kz >= 1u) ? (kz - 1u) : (kz + 2u);
-    float dz = d_3[metal::min(kz, 2u)];
+    float dz = d_4[metal::min(kz, 2u)];
     bool flip = dz < 0.0;
     uint kx = flip ? ky0_ : kx0_;
     uint ky = flip ? kx0_ : ky0_;
     metal::uint3 inf_bits = metal::uint3(2139095040u);
-    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_3) & metal::uint3(2147483647u)) < inf_bits);
-    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_3[metal::min(kx, 2u)] / dz, d_3[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
+    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_4) & metal::uint3(2147483647u)) < inf_bits);
+    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_4[metal::min(kx, 2u)] / dz, d_4[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
 }
 
 metal::float3 hit_triangle(
@@ -465,7 +536,7 @@ metal::float3 hit_triangle(
     float tmin,
     float tmax_1,
     thread uint& F32_INF,
-    device type_10 const& triangles,
+    device type_11 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e8 = triangles[slot * 3u];
@@ -481,15 +552,15 @@ metal::float3 hit_triangle(
     float cx = c_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_4[metal::min(r_1.kz, 2u)]);
     float cy = c_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_4[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
-    float v_1 = (ax * cy) - (ay * cx);
+    float v_2 = (ax * cy) - (ay * cx);
     float w = (bx * ay) - (by * ax);
-    bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
-    float det = (u + v_1) + w;
+    bool outside = (((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0));
+    float det = (u + v_2) + w;
     float rcp = 1.0 / det;
-    float t_5 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_4[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_5 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_4[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_11 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_11 ? metal::float3(t_5, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_11 ? metal::float3(t_5, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 float point_error(
@@ -502,7 +573,7 @@ float point_error(
 
 Triangle load_triangle(
     uint slot_1,
-    device type_10 const& triangles,
+    device type_11 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 v0_1 = triangles[slot_1 * 3u];
@@ -546,9 +617,9 @@ metal::float3 decode_octahedral(
     float _e14 = n.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n;
-        metal::float2 s_5 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float2 s_4 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
         metal::float3 _e29 = n;
-        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_5;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_4;
         float _e37 = n.z;
         n = metal::float3(xy.x, xy.y, _e37);
     }
@@ -569,10 +640,10 @@ metal::float3 normal_to_world(
 Hit finish_hit(
     Ray ray_2,
     Candidate c,
-    device type_8 const& instances,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
+    device type_13 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Hit hit = {};
@@ -629,7 +700,7 @@ Hit finish_hit(
 
 Fog load_Fog(
     uint offset_2,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_2 + 0u];
@@ -640,20 +711,20 @@ Fog load_Fog(
 }
 
 bool is_finite_f32_(
-    float x_1
+    float x_3
 ) {
-    return (as_type<uint>(x_1) & 2147483647u) < 2139095040u;
+    return (as_type<uint>(x_3) & 2147483647u) < 2139095040u;
 }
 
 void absorb_query(
     float density,
-    thread type_13& scratch
+    thread type_3& scratch
 ) {
     float sigma = {};
     if (!(HAS_ABSORB)) {
         return;
     }
-    uint side = scratch.inner[metal::min(SCRATCH_ABSORB, 11u)];
+    uint side = scratch.inner[metal::min(SCRATCH_ABSORB, 13u)];
     if (side == 0u) {
         return;
     }
@@ -662,21 +733,21 @@ void absorb_query(
     if (_e13 && (density > 0.0)) {
         sigma = density;
     }
-    uint _e22 = scratch.inner[metal::min(SCRATCH_ABSORB_T, 11u)];
+    uint _e22 = scratch.inner[metal::min(SCRATCH_ABSORB_T, 13u)];
     float t_6 = as_type<float>(_e22);
     float _e24 = sigma;
     float _e25 = sigma;
-    float s_6 = (side == 2u) ? -(_e25) : _e24;
-    uint _e35 = scratch.inner[metal::min(SCRATCH_DEPTH, 11u)];
-    float depth_2 = as_type<float>(_e35) - (s_6 * t_6);
-    scratch.inner[metal::min(SCRATCH_DEPTH, 11u)] = as_type<uint>(depth_2);
-    uint _e50 = scratch.inner[metal::min(SCRATCH_NET, 11u)];
-    float net = as_type<float>(_e50) + s_6;
-    scratch.inner[metal::min(SCRATCH_NET, 11u)] = as_type<uint>(net);
-    uint _e64 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 11u)];
+    float s_5 = (side == 2u) ? -(_e25) : _e24;
+    uint _e35 = scratch.inner[metal::min(SCRATCH_DEPTH, 13u)];
+    float depth_2 = as_type<float>(_e35) - (s_5 * t_6);
+    scratch.inner[metal::min(SCRATCH_DEPTH, 13u)] = as_type<uint>(depth_2);
+    uint _e50 = scratch.inner[metal::min(SCRATCH_NET, 13u)];
+    float net = as_type<float>(_e50) + s_5;
+    scratch.inner[metal::min(SCRATCH_NET, 13u)] = as_type<uint>(net);
+    uint _e64 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 13u)];
     float _e66 = sigma;
     float most = metal::max(as_type<float>(_e64), _e66);
-    scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 11u)] = as_type<uint>(most);
+    scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 13u)] = as_type<uint>(most);
     return;
 }
 
@@ -684,7 +755,7 @@ bool fog_any_hit(
     Fog m,
     Ray ray_3,
     Hit hit_1,
-    thread type_13& scratch
+    thread type_3& scratch
 ) {
     absorb_query(m.density, scratch);
     return ray_3.kind != RAY_SHADOW;
@@ -695,8 +766,8 @@ bool dispatch_any_hit(
     uint offset_3,
     Ray ray_4,
     Hit hit_2,
-    device type_4 const& params,
-    thread type_13& scratch,
+    thread type_3& scratch,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Fog _e3 = load_Fog(offset_3, params, _buffer_sizes);
@@ -708,12 +779,12 @@ bool accept(
     GpuInstance inst_4,
     Ray ray_5,
     Candidate c_1,
-    device type_4 const& params,
-    device type_8 const& instances,
-    device type_10 const& triangles,
+    thread type_3& scratch,
+    device type_5 const& params,
+    device type_9 const& instances,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if ((inst_4.flags & FLAG_ANY_HIT) != 0u) {
@@ -721,11 +792,11 @@ bool accept(
         Hit _e10 = finish_hit(ray_5, c_1, instances, triangles, hit_error, attributes, _buffer_sizes);
         hit_error = shaded;
         if (ray_5.kind == RAY_SHADOW) {
-            scratch.inner[metal::min(SCRATCH_ABSORB, 11u)] = _e10.front_face ? 1u : 2u;
-            scratch.inner[metal::min(SCRATCH_ABSORB_T, 11u)] = as_type<uint>(c_1.t * metal::length(ray_5.dir));
+            scratch.inner[metal::min(SCRATCH_ABSORB, 13u)] = _e10.front_face ? 1u : 2u;
+            scratch.inner[metal::min(SCRATCH_ABSORB_T, 13u)] = as_type<uint>(c_1.t * metal::length(ray_5.dir));
         }
-        bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10, params, scratch, _buffer_sizes);
-        scratch.inner[metal::min(SCRATCH_ABSORB, 11u)] = 0u;
+        bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10, scratch, params, _buffer_sizes);
+        scratch.inner[metal::min(SCRATCH_ABSORB, 13u)] = 0u;
         return _e36;
     }
     return true;
@@ -816,14 +887,14 @@ Candidate intersect_mesh(
     Ray ray_7,
     Candidate best_in,
     bool shadow,
-    device type_4 const& params,
+    thread type_3& scratch,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -874,7 +945,7 @@ Candidate intersect_mesh(
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
                     Candidate c_5 = Candidate {_e46.x, slot_2, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e57 = accept(inst_5, world_ray, c_5, params, instances, triangles, hit_error, attributes, scratch, _buffer_sizes);
+                    bool _e57 = accept(inst_5, world_ray, c_5, scratch, params, instances, triangles, hit_error, attributes, _buffer_sizes);
                     if (_e57) {
                         best = c_5;
                         if (shadow) {
@@ -940,14 +1011,14 @@ Candidate intersect_object(
     Ray ray_8,
     Candidate best_1,
     bool shadow_1,
-    device type_4 const& params,
+    thread type_3& scratch,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -958,7 +1029,7 @@ Candidate intersect_object(
     r_2.tmax = best_1.t;
     if (inst_7.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_7, slot_3, ray_8, _e14, best_1, shadow_1, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
@@ -968,20 +1039,20 @@ uint medium_at(
     metal::float3 p_4,
     uint exclude,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    thread type_3& scratch,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint inside = {};
     float nearest = {};
-    uint i = {};
+    uint i_1 = {};
     if (!(HAS_MEDIA)) {
         return 0u;
     }
@@ -993,27 +1064,27 @@ uint medium_at(
     uint _e23 = F32_INF;
     nearest = as_type<float>(_e23);
     uint end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e59 = i;
-            i = _e59 + 1u;
+            uint _e59 = i_1;
+            i_1 = _e59 + 1u;
         }
         loop_init_1 = false;
-        uint _e29 = i;
+        uint _e29 = i_1;
         if (_e29 >= end) {
             break;
         }
-        uint _e32 = i;
+        uint _e32 = i_1;
         uint slot_4 = params[frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE)];
         if (slot_4 != exclude) {
             uint _e41 = F32_INF;
             Candidate _e43 = no_candidate(as_type<float>(_e41));
-            Candidate _e45 = intersect_object(slot_4, probe, _e43, false, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, _buffer_sizes);
+            Candidate _e45 = intersect_object(slot_4, probe, _e43, false, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
             float _e50 = nearest;
             if ((_e45.slot != NO_HIT) && (_e45.t < _e50)) {
                 Hit _e53 = finish_hit(probe, _e45, instances, triangles, hit_error, attributes, _buffer_sizes);
@@ -1039,14 +1110,14 @@ Candidate intersect_scene(
     Ray ray_9,
     bool shadow_2,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    thread type_3& scratch,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1090,7 +1161,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_9, _e55, shadow_2, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_9, _e55, shadow_2, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1171,9 +1242,9 @@ metal::float3 miss(
 
 void shading_medium(
     uint medium,
-    thread type_13& scratch
+    thread type_3& scratch
 ) {
-    scratch.inner[metal::min(SCRATCH_MEDIUM, 11u)] = medium;
+    scratch.inner[metal::min(SCRATCH_MEDIUM, 13u)] = medium;
     return;
 }
 
@@ -1188,7 +1259,7 @@ metal::float3 fog_shade(
 
 Lambert load_Lambert(
     uint offset_5,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_5 + 0u];
@@ -1214,7 +1285,7 @@ uint light_count_query(
 
 PointLight load_PointLight(
     uint offset_6,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_6 + 0u];
@@ -1230,15 +1301,15 @@ PointLight load_PointLight(
 }
 
 metal::float3 step_toward(
-    metal::float3 x_2,
+    metal::float3 x_4,
     metal::float3 s
 ) {
-    metal::uint3 bits_1 = as_type<metal::uint3>(x_2);
-    metal::bool3 up_1 = (metal::sign(x_2) * metal::sign(s)) > metal::float3(0.0);
+    metal::uint3 bits_1 = as_type<metal::uint3>(x_4);
+    metal::bool3 up_1 = (metal::sign(x_4) * metal::sign(s)) > metal::float3(0.0);
     metal::float3 stepped = as_type<metal::float3>(metal::select(bits_1 - metal::uint3(1u), bits_1 + metal::uint3(1u), up_1));
     metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s > metal::float3(0.0));
-    metal::float3 moved = metal::select(stepped, from_zero, x_2 == metal::float3(0.0));
-    return metal::select(x_2, moved, !((s == metal::float3(0.0))));
+    metal::float3 moved = metal::select(stepped, from_zero, x_4 == metal::float3(0.0));
+    return metal::select(x_4, moved, !((s == metal::float3(0.0))));
 }
 
 metal::float3 offset_origin(
@@ -1246,8 +1317,8 @@ metal::float3 offset_origin(
     metal::float3 n_3,
     float error
 ) {
-    float d_4 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
-    metal::float3 offset_11 = n_3 * metal::float3(d_4);
+    float d_5 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
+    metal::float3 offset_11 = n_3 * metal::float3(d_5);
     metal::float3 _e17 = step_toward(p_5 + offset_11, offset_11);
     return _e17;
 }
@@ -1291,44 +1362,44 @@ float shadow_transmittance(
     Ray ray_14,
     uint medium_1,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    thread type_3& scratch,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float depth = {};
-    scratch.inner[metal::min(SCRATCH_ABSORB, 11u)] = 0u;
-    scratch.inner[metal::min(SCRATCH_DEPTH, 11u)] = 0u;
-    scratch.inner[metal::min(SCRATCH_NET, 11u)] = 0u;
-    scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 11u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_ABSORB, 13u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_DEPTH, 13u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_NET, 13u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 13u)] = 0u;
     if (HAS_MEDIA && HAS_ANY_HIT) {
         if (medium_1 != 0u) {
             GpuInstance inst_8 = instances[medium_1 - 1u];
             if ((inst_8.flags & FLAG_ANY_HIT) != 0u) {
                 Hit start = Hit {ray_14.origin, 0.0, -(ray_14.dir), -(ray_14.dir), metal::float2(0.0), true, {}, inst_8.object, 0u};
-                scratch.inner[metal::min(SCRATCH_ABSORB, 11u)] = 1u;
-                scratch.inner[metal::min(SCRATCH_ABSORB_T, 11u)] = 0u;
-                bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start, params, scratch, _buffer_sizes);
-                scratch.inner[metal::min(SCRATCH_ABSORB, 11u)] = 0u;
+                scratch.inner[metal::min(SCRATCH_ABSORB, 13u)] = 1u;
+                scratch.inner[metal::min(SCRATCH_ABSORB_T, 13u)] = 0u;
+                bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start, scratch, params, _buffer_sizes);
+                scratch.inner[metal::min(SCRATCH_ABSORB, 13u)] = 0u;
             }
         }
     }
-    Candidate _e75 = intersect_scene(ray_14, true, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+    Candidate _e75 = intersect_scene(ray_14, true, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     if (_e75.slot != NO_HIT) {
         return 0.0;
     }
-    uint _e85 = scratch.inner[metal::min(SCRATCH_DEPTH, 11u)];
+    uint _e85 = scratch.inner[metal::min(SCRATCH_DEPTH, 13u)];
     depth = as_type<float>(_e85);
-    uint _e93 = scratch.inner[metal::min(SCRATCH_NET, 11u)];
+    uint _e93 = scratch.inner[metal::min(SCRATCH_NET, 13u)];
     float net_1 = as_type<float>(_e93);
-    uint _e101 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 11u)];
+    uint _e101 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 13u)];
     if (net_1 > (0.000001 * as_type<float>(_e101))) {
         uint _e107 = F32_INF;
         if (ray_14.tmax == as_type<float>(_e107)) {
@@ -1347,21 +1418,21 @@ float shadow_query(
     metal::float3 dir_1,
     float dist_1,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    thread type_3& scratch,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
-    uint _e10 = scratch.inner[metal::min(SCRATCH_MEDIUM, 11u)];
-    float _e11 = shadow_transmittance(_e4, _e10, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+    uint _e10 = scratch.inner[metal::min(SCRATCH_MEDIUM, 13u)];
+    float _e11 = shadow_transmittance(_e4, _e10, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e11;
 }
 
@@ -1370,14 +1441,14 @@ LightSample point_light(
     metal::float3 position_2,
     metal::float3 normal_2,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    thread type_3& scratch,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1391,7 +1462,7 @@ LightSample point_light(
         float _e19 = strength;
         strength = _e19 * (1.0 - metal::smoothstep(l.inner_range, l.range, dist_2));
     }
-    float _e26 = shadow_query(position_2, normal_2, dir_6, dist_2, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+    float _e26 = shadow_query(position_2, normal_2, dir_6, dist_2, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     float _e28 = strength;
     return LightSample {dir_6, dist_2, (l.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
 }
@@ -1402,48 +1473,48 @@ LightSample dispatch_light(
     metal::float3 position_3,
     metal::float3 normal_3,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    thread type_3& scratch,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PointLight _e3 = load_PointLight(offset_7, params, _buffer_sizes);
-    LightSample _e4 = point_light(_e3, position_3, normal_3, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e4 = point_light(_e3, position_3, normal_3, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e4;
 }
 
 LightSample sample_light_query(
-    uint i_1,
+    uint i_2,
     metal::float3 position_4,
     metal::float3 normal_4,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    thread type_3& scratch,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     FrameUniforms frame_4 = frame;
-    if (i_1 >= frame_4.light_count) {
+    if (i_2 >= frame_4.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry = frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE);
+    uint entry = frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE);
     uint _e22 = params[entry];
     uint _e27 = params[entry + 1u];
-    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e28;
 }
 
@@ -1452,40 +1523,40 @@ metal::float3 lambert_shade(
     Ray ray_15,
     Hit hit_5,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    thread type_3& scratch,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 color = {};
-    uint i_2 = {};
+    uint i_3 = {};
     metal::float3 _e3 = shading_normal(ray_15, hit_5);
     color = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
-    i_2 = 0u;
+    i_3 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e30 = i_2;
-            i_2 = _e30 + 1u;
+            uint _e30 = i_3;
+            i_3 = _e30 + 1u;
         }
         loop_init_2 = false;
-        uint _e10 = i_2;
+        uint _e10 = i_3;
         if (_e10 >= _e8) {
             break;
         }
-        uint _e12 = i_2;
-        LightSample _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+        uint _e12 = i_3;
+        LightSample _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
         metal::float3 _e16 = color;
         color = _e16 + (((m_2.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
     }
@@ -1500,14 +1571,14 @@ metal::float3 dispatch_closest_hit(
     Hit hit_6,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    thread type_3& scratch,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1520,7 +1591,7 @@ metal::float3 dispatch_closest_hit(
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_8, params, _buffer_sizes);
-            metal::float3 _e8 = lambert_shade(_e7, ray_16, hit_6, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e8 = lambert_shade(_e7, ray_16, hit_6, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
             return _e8;
         }
         default: {
@@ -1534,14 +1605,14 @@ metal::float3 shade_direct(
     Ray ray_17,
     Candidate c_2,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    thread type_3& scratch,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1549,27 +1620,27 @@ metal::float3 shade_direct(
     GpuInstance inst_9 = instances[c_2.slot];
     Hit _e6 = finish_hit(ray_17, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
     shading_medium(ray_17.medium, scratch);
-    metal::float3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_17, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_17, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e12;
 }
 
 metal::float3 fog_inscatter(
     Fog m_3,
-    uint i_3,
+    uint i_4,
     metal::float3 o,
     metal::float3 dir_2,
     float d_1,
     float trans,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1577,23 +1648,23 @@ metal::float3 fog_inscatter(
     float s_1 = {};
     float sigma_1 = m_3.density;
     bool tiny_1 = (sigma_1 * d_1) < 0.001;
-    LightSample _e12 = sample_light_query(i_3, o, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e12 = sample_light_query(i_4, o, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     metal::float3 c_6 = _e12.dir * metal::float3(_e12.dist);
     float delta = metal::dot(c_6, dir_2);
-    float h_2 = metal::length(c_6 - (dir_2 * metal::float3(delta)));
-    bool _e22 = is_finite_f32_(h_2);
-    bool equi = _e22 && (h_2 > 0.00000000000000000001);
-    float ta = metal::atan2(-(delta), h_2);
+    float h_1 = metal::length(c_6 - (dir_2 * metal::float3(delta)));
+    bool _e22 = is_finite_f32_(h_1);
+    bool equi = _e22 && (h_1 > 0.00000000000000000001);
+    float ta = metal::atan2(-(delta), h_1);
     uint _e34 = F32_INF;
-    float tb = (d_1 == as_type<float>(_e34)) ? (0.5 * PI) : metal::atan2(d_1 - delta, h_2);
+    float tb = (d_1 == as_type<float>(_e34)) ? (0.5 * PI) : metal::atan2(d_1 - delta, h_1);
     float w_3 = equi ? 0.5 : 0.0;
-    metal::float2 _e41 = rand2_next(rng_state);
+    metal::float2 _e41 = rand2_next(scratch, rng_state);
     s_1 = -(metal::log(1.0 - (_e41.y * (1.0 - trans)))) / sigma_1;
     if (tiny_1) {
         s_1 = _e41.y * d_1;
     }
     if (_e41.x < w_3) {
-        s_1 = delta + (h_2 * metal::tan(metal::mix(ta, tb, _e41.y)));
+        s_1 = delta + (h_1 * metal::tan(metal::mix(ta, tb, _e41.y)));
     }
     float _e61 = s_1;
     s_1 = metal::min(metal::max(_e61, 0.0), d_1);
@@ -1601,10 +1672,10 @@ metal::float3 fog_inscatter(
     float e_2 = metal::exp(-(sigma_1) * _e66);
     float p_free = tiny_1 ? (1.0 / d_1) : ((sigma_1 * e_2) / (1.0 - trans));
     float _e76 = s_1;
-    float r_4 = _e76 - delta;
-    float pdf = ((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_2) / ((tb - ta) * ((h_2 * h_2) + (r_4 * r_4)))) : 0.0);
+    float r_3 = _e76 - delta;
+    float pdf = ((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))) : 0.0);
     float _e91 = s_1;
-    LightSample _e97 = sample_light_query(i_3, o + (dir_2 * metal::float3(_e91)), metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e97 = sample_light_query(i_4, o + (dir_2 * metal::float3(_e91)), metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e97.radiance * metal::float3((sigma_1 * e_2) / pdf);
 }
 
@@ -1614,47 +1685,47 @@ metal::float3 fog_medium(
     float t,
     metal::float3 radiance,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 light = {};
-    uint i_4 = {};
+    uint i_5 = {};
     float len = metal::length(ray_18.dir);
     if (!((m_4.density > 0.0)) || !((len > 0.0))) {
         return radiance;
     }
-    float d_5 = t * len;
-    float trans_1 = metal::exp(-(m_4.density) * d_5);
+    float d_6 = t * len;
+    float trans_1 = metal::exp(-(m_4.density) * d_6);
     light = metal::float3(0.0);
     uint _e23 = light_count_query(frame);
-    i_4 = 0u;
+    i_5 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e35 = i_4;
-            i_4 = _e35 + 1u;
+            uint _e35 = i_5;
+            i_5 = _e35 + 1u;
         }
         loop_init_3 = false;
-        uint _e25 = i_4;
+        uint _e25 = i_5;
         if (_e25 >= _e23) {
             break;
         }
         metal::float3 _e27 = light;
-        uint _e28 = i_4;
-        metal::float3 _e33 = fog_inscatter(m_4, _e28, ray_18.origin, ray_18.dir / metal::float3(len), d_5, trans_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+        uint _e28 = i_5;
+        metal::float3 _e33 = fog_inscatter(m_4, _e28, ray_18.origin, ray_18.dir / metal::float3(len), d_6, trans_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
         light = _e27 + _e33;
     }
     metal::float3 _e46 = light;
@@ -1668,21 +1739,21 @@ metal::float3 dispatch_medium(
     float t_1,
     metal::float3 radiance_1,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Fog _e4 = load_Fog(offset_9, params, _buffer_sizes);
-    metal::float3 _e5 = fog_medium(_e4, ray_19, t_1, radiance_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e5 = fog_medium(_e4, ray_19, t_1, radiance_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e5;
 }
 
@@ -1691,15 +1762,15 @@ metal::float3 through_medium(
     float t_2,
     metal::float3 radiance_2,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1715,7 +1786,7 @@ metal::float3 through_medium(
         return radiance_2;
     }
     shading_medium(ray_20.medium, scratch);
-    metal::float3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_20, t_2, radiance_2, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_20, t_2, radiance_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e22;
 }
 
@@ -1751,7 +1822,7 @@ void dispatch_secondary_rays(
     uint offset_10,
     Ray ray_22,
     Hit hit_8,
-    device type_4 const& params,
+    device type_5 const& params,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
     thread uint& spawn_count,
@@ -1792,15 +1863,15 @@ metal::float3 spawn_origin(
 metal::float3 trace(
     Ray camera_ray,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     thread type_16& spawn_dirs,
@@ -1826,13 +1897,13 @@ metal::float3 trace(
     metal::float3 radiance_4 = {};
     float t_4 = {};
     Hit hit_10 = {};
-    Frame f = {};
-    uint i_5 = {};
+    Frame f_1 = {};
+    uint i_6 = {};
     uint medium_2 = {};
     bool found = {};
     uint k_1 = {};
     if (!(HAS_SECONDARY_RAYS)) {
-        Candidate _e4 = intersect_scene(camera_ray, false, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+        Candidate _e4 = intersect_scene(camera_ray, false, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
         radiance_3 = metal::float3(0.0);
         uint _e9 = F32_INF;
         t_3 = as_type<float>(_e9);
@@ -1841,13 +1912,13 @@ metal::float3 trace(
             metal::float3 _e17 = miss(camera_ray, frame);
             radiance_3 = _e17;
         } else {
-            metal::float3 _e18 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e18 = shade_direct(camera_ray, _e4, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
             radiance_3 = _e18;
             t_3 = _e4.t;
         }
         float _e20 = t_3;
         metal::float3 _e21 = radiance_3;
-        metal::float3 _e22 = through_medium(camera_ray, _e20, _e21, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e22 = through_medium(camera_ray, _e20, _e21, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
         return _e22;
     }
     stack = type_17 {};
@@ -1872,7 +1943,7 @@ metal::float3 trace(
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
             Ray _e67 = ray_23;
-            Candidate _e69 = intersect_scene(_e67, false, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+            Candidate _e69 = intersect_scene(_e67, false, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
             Ray _e70 = ray_23;
             s_ray = _e70;
@@ -1927,33 +1998,33 @@ metal::float3 trace(
                         Hit _e142 = hit_10;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_8, 0u};
-                        i_5 = 0u;
+                        f_1 = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_8, 0u};
+                        i_6 = 0u;
                         uint2 loop_bound_7 = uint2(4294967295u);
                         bool loop_init_4 = true;
                         while(true) {
                             if (metal::all(loop_bound_7 == uint2(0u))) { break; }
                             loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                             if (!loop_init_4) {
-                                uint _e175 = i_5;
-                                i_5 = _e175 + 1u;
+                                uint _e175 = i_6;
+                                i_6 = _e175 + 1u;
                             }
                             loop_init_4 = false;
-                            uint _e155 = i_5;
+                            uint _e155 = i_6;
                             if (_e155 >= n_8) {
                                 break;
                             }
-                            uint _e158 = i_5;
-                            uint _e162 = i_5;
+                            uint _e158 = i_6;
+                            uint _e162 = i_6;
                             metal::float3 _e165 = spawn_dirs.inner[_e162];
-                            f.dirs.inner[metal::min(_e158, 0u)] = _e165;
-                            uint _e167 = i_5;
-                            uint _e171 = i_5;
+                            f_1.dirs.inner[metal::min(_e158, 0u)] = _e165;
+                            uint _e167 = i_6;
+                            uint _e171 = i_6;
                             metal::float3 _e174 = spawn_weights.inner[_e171];
-                            f.weights.inner[metal::min(_e167, 0u)] = _e174;
+                            f_1.weights.inner[metal::min(_e167, 0u)] = _e174;
                         }
                         uint _e178 = depth_1;
-                        Frame _e182 = f;
+                        Frame _e182 = f_1;
                         stack.inner[metal::min(_e178, 2u)] = _e182;
                         uint _e183 = depth_1;
                         depth_1 = _e183 + 1u;
@@ -1967,7 +2038,7 @@ metal::float3 trace(
                     Ray _e193 = s_ray;
                     Hit _e194 = hit_10;
                     metal::float3 _e195 = s_sum;
-                    metal::float3 _e196 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e193, _e194, _e195, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+                    metal::float3 _e196 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e193, _e194, _e195, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
                     radiance_4 = _e196;
                 }
             }
@@ -1976,7 +2047,7 @@ metal::float3 trace(
                 Ray _e199 = s_ray;
                 float _e200 = t_4;
                 metal::float3 _e201 = radiance_4;
-                metal::float3 _e202 = through_medium(_e199, _e200, _e201, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, _buffer_sizes);
+                metal::float3 _e202 = through_medium(_e199, _e200, _e201, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
                 value = _e202;
                 have_value = true;
             }
@@ -2003,11 +2074,11 @@ metal::float3 trace(
         uint _e243 = stack.inner[metal::min(top_1, 2u)].next;
         uint _e248 = stack.inner[metal::min(top_1, 2u)].count;
         if (_e243 < _e248) {
-            uint i_6 = stack.inner[metal::min(top_1, 2u)].next;
-            stack.inner[metal::min(top_1, 2u)].next = i_6 + 1u;
+            uint i_8 = stack.inner[metal::min(top_1, 2u)].next;
+            stack.inner[metal::min(top_1, 2u)].next = i_8 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 2u)].ray;
             Hit hit_12 = stack.inner[metal::min(top_1, 2u)].hit;
-            metal::float3 dir_7 = stack.inner[metal::min(top_1, 2u)].dirs.inner[metal::min(i_6, 0u)];
+            metal::float3 dir_7 = stack.inner[metal::min(top_1, 2u)].dirs.inner[metal::min(i_8, 0u)];
             medium_2 = parent.medium;
             if (metal::dot(dir_7, hit_12.geometric_normal) < 0.0) {
                 uint _e289 = stack.inner[metal::min(top_1, 2u)].slot;
@@ -2048,7 +2119,7 @@ metal::float3 trace(
                         float _e359 = stack.inner[metal::min(top_1, 2u)].error;
                         metal::float3 _e360 = spawn_origin(hit_12, _e359, dir_7);
                         uint _e365 = stack.inner[metal::min(top_1, 2u)].slot;
-                        uint _e366 = medium_at(_e360, _e365, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, _buffer_sizes);
+                        uint _e366 = medium_at(_e360, _e365, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
                         medium_2 = _e366;
                     }
                 }
@@ -2078,9 +2149,9 @@ metal::float3 trace(
 }
 
 metal::bool3 is_finite_vec3f(
-    metal::float3 x_3
+    metal::float3 x_5
 ) {
-    return (as_type<metal::uint3>(x_3) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+    return (as_type<metal::uint3>(x_5) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
 }
 
 metal::float3 finite_or_zero(
@@ -2091,25 +2162,25 @@ metal::float3 finite_or_zero(
 }
 
 void render_pixel(
-    metal::uint2 pixel_3,
+    metal::uint2 pixel_4,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
     thread uint& spawn_count,
     device type_20& counters,
-    device type_10& accum,
+    device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 sum = {};
@@ -2137,17 +2208,17 @@ void render_pixel(
             break;
         }
         uint _e18 = s_2;
-        uint sample_3 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
-        rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
+        uint sample_4 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
+        rng_seed(pixel_4, sample_4, frame_5.seed, scratch, rng_state);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
         ray_24 = _e23;
         ray_24.depth = 0u;
         ray_24.kind = RAY_CAMERA;
         metal::float3 _e31 = ray_24.origin;
-        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, _buffer_sizes);
+        uint _e33 = medium_at(_e31, NO_HIT, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
         ray_24.medium = _e33;
         Ray _e34 = ray_24;
-        metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::float3 _e35 = trace(_e34, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {
             metal::float3 _e38 = sum;
@@ -2166,10 +2237,10 @@ void render_pixel(
     metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
     uint _e63 = bad;
     if (tile_2.frame == 0u) {
-        accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x] = _e62;
+        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e62;
     } else {
-        metal::float4 _e69 = accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x];
-        accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x] = _e69 + _e62;
+        metal::float4 _e69 = accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x];
+        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e69 + _e62;
     }
     if (_e63 > 0u) {
         metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
@@ -2181,22 +2252,22 @@ void render_invocation(
     metal::uint2 id_1,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    thread type_13& scratch,
+    device type_13 const& attributes,
     thread type_15& traversal_stack,
     thread uint& ray_count,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
     thread uint& spawn_count,
     device type_20& counters,
-    device type_10& accum,
+    device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     TileParams tile_3 = tile;
@@ -2204,7 +2275,7 @@ void render_invocation(
     if (metal::any(_e3 >= tile_3.extent)) {
         return;
     }
-    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_pixel(tile_3.origin + _e3, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }
 
@@ -2214,24 +2285,24 @@ struct renderInput {
   metal::uint3 gid [[thread_position_in_grid]]
 , constant TileParams& tile [[buffer(1)]]
 , constant FrameUniforms& frame [[buffer(0)]]
-, device type_4 const& params [[buffer(6)]]
-, device type_8 const& instances [[buffer(3)]]
-, device type_9 const& nodes [[buffer(2)]]
-, device type_10 const& triangles [[buffer(4)]]
-, device type_12 const& attributes [[buffer(5)]]
+, device type_5 const& params [[buffer(6)]]
+, device type_9 const& instances [[buffer(3)]]
+, device type_10 const& nodes [[buffer(2)]]
+, device type_11 const& triangles [[buffer(4)]]
+, device type_13 const& attributes [[buffer(5)]]
 , device type_20& counters [[buffer(9)]]
-, device type_10& accum [[buffer(8)]]
+, device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
+    type_3 scratch = {};
     uint rng_state = {};
     uint F32_INF = 2139095040u;
     float hit_error = {};
-    type_13 scratch = {};
     type_15 traversal_stack = {};
     uint ray_count = {};
     type_16 spawn_dirs = {};
     type_16 spawn_weights = {};
     uint spawn_count = {};
-    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, scratch, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }

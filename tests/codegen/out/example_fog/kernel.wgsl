@@ -138,6 +138,9 @@ const WORKGROUP_WIDTH: u32 = 8u;
 const WORKGROUP_HEIGHT: u32 = 8u;
 const NO_HIT: u32 = 4294967295u;
 const SCATTER: u32 = 1000003u;
+const SCRATCH_RNG_INDEX: u32 = 12u;
+const SCRATCH_RNG_SEED: u32 = 13u;
+const HALF_WORD_BITS: u32 = 16u;
 const RAY_CAMERA: u32 = 0u;
 const HAS_MEDIA: bool = true;
 const MEDIUM_ENTRY_STRIDE: u32 = 1u;
@@ -179,6 +182,7 @@ const RAY_SECONDARY: u32 = 1u;
 var<uniform> tile: TileParams;
 @group(0) @binding(0) 
 var<uniform> frame: FrameUniforms;
+var<private> scratch: array<u32, 14>;
 var<private> rng_state: u32;
 @group(0) @binding(6) 
 var<storage> params: array<u32>;
@@ -192,7 +196,6 @@ var<storage> triangles: array<vec4<f32>>;
 var<private> hit_error: f32;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
-var<private> scratch: array<u32, 12>;
 var<private> traversal_stack: array<u32, 74>;
 var<private> ray_count: u32;
 var<private> spawn_dirs: array<vec3<f32>, 1>;
@@ -247,25 +250,23 @@ fn scattered_local(id: vec2<u32>) -> vec2<u32> {
 }
 
 fn pcg_hash(x: u32) -> u32 {
-    let state = ((x * 747796405u) + 2891336453u);
-    let word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    let state_1 = ((x * 747796405u) + 2891336453u);
+    let word = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
     return ((word >> 22u) ^ word);
 }
 
-fn rng_seed(pixel: vec2<u32>, sample: u32, seed: u32) {
-    var h: u32;
+fn rng_resume(pixel: vec2<u32>, sample: u32, seed: u32, state: u32) {
+    scratch[min(SCRATCH_RNG_INDEX, 13u)] = sample;
+    let _e12 = pcg_hash(seed);
+    let _e14 = pcg_hash((pixel.y ^ _e12));
+    let _e16 = pcg_hash((pixel.x ^ _e14));
+    scratch[min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    rng_state = state;
+    return;
+}
 
-    let _e5 = pcg_hash(seed);
-    let _e7 = pcg_hash((sample ^ _e5));
-    let _e9 = pcg_hash((pixel.y ^ _e7));
-    let _e11 = pcg_hash((pixel.x ^ _e9));
-    h = _e11;
-    let _e13 = h;
-    if (_e13 == 0u) {
-        h = 1u;
-    }
-    let _e17 = h;
-    rng_state = _e17;
+fn rng_seed(pixel_1: vec2<u32>, sample_1: u32, seed_1: u32) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u);
     return;
 }
 
@@ -293,13 +294,68 @@ fn samples_per_pixel_query() -> u32 {
     return _e1.total_samples;
 }
 
+fn laine_karras(x_1: u32, seed_2: u32) -> u32 {
+    var v: u32;
+
+    v = (x_1 + seed_2);
+    let _e4 = v;
+    let _e5 = v;
+    v = (_e4 ^ (_e5 * 1817228412u));
+    let _e9 = v;
+    let _e10 = v;
+    v = (_e9 ^ (_e10 * 3090095698u));
+    let _e14 = v;
+    let _e15 = v;
+    v = (_e14 ^ (_e15 * 3350193720u));
+    let _e19 = v;
+    let _e20 = v;
+    v = (_e19 ^ (_e20 * 2367878886u));
+    let _e24 = v;
+    return _e24;
+}
+
+fn sobol_second_reversed(i: u32) -> u32 {
+    var f: u32;
+
+    f = i;
+    let _e2 = f;
+    let _e3 = f;
+    f = (_e2 ^ ((_e3 >> 1u) & 1431655765u));
+    let _e9 = f;
+    let _e10 = f;
+    f = (_e9 ^ ((_e10 >> 2u) & 858993459u));
+    let _e16 = f;
+    let _e17 = f;
+    f = (_e16 ^ ((_e17 >> 4u) & 252645135u));
+    let _e23 = f;
+    let _e24 = f;
+    f = (_e23 ^ ((_e24 >> 8u) & 16711935u));
+    let _e30 = f;
+    let _e31 = f;
+    f = (_e30 ^ (_e31 >> (HALF_WORD_BITS & 31u)));
+    let _e37 = f;
+    return _e37;
+}
+
 fn rand_next() -> f32 {
-    let _e1 = rng_state;
-    let s_3 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_3;
-    let word_1 = (((s_3 >> (((s_3 >> 28u) + 4u) & 31u)) ^ s_3) * 277803737u);
-    let r_3 = ((word_1 >> 22u) ^ word_1);
-    return (f32((r_3 >> 8u)) * (1f / 16777216f));
+    var x_2: u32;
+
+    let d_2 = rng_state;
+    rng_state = (d_2 + 1u);
+    let _e10 = scratch[min(SCRATCH_RNG_SEED, 13u)];
+    let _e16 = pcg_hash((_e10 ^ ((d_2 >> 1u) * 2654435769u)));
+    let _e22 = scratch[min(SCRATCH_RNG_INDEX, 13u)];
+    let _e24 = laine_karras(reverseBits(_e22), _e16);
+    let i_7 = reverseBits(_e24);
+    x_2 = i_7;
+    if ((d_2 & 1u) != 0u) {
+        let _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    let scramble = (_e16 ^ (((2654435769u * (1u + (d_2 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    let _e45 = x_2;
+    let _e46 = laine_karras(_e45, scramble);
+    return (f32((reverseBits(_e46) >> 8u)) * (1f / 16777216f));
 }
 
 fn rand2_next() -> vec2<f32> {
@@ -308,11 +364,11 @@ fn rand2_next() -> vec2<f32> {
     return vec2<f32>(_e0, _e1);
 }
 
-fn normalize_vec3f(v: vec3<f32>) -> vec3<f32> {
-    return select(vec3(0f), normalize(v), (dot(v, v) >= 0.000000000000000000000000000000000000011754944f));
+fn normalize_vec3f(v_1: vec3<f32>) -> vec3<f32> {
+    return select(vec3(0f), normalize(v_1), (dot(v_1, v_1) >= 0.000000000000000000000000000000000000011754944f));
 }
 
-fn pinhole_ray(cam: Pinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
+fn pinhole_ray(cam: Pinhole, pixel_2: vec2<u32>, sample_2: u32) -> Ray {
     var jitter: vec2<f32>;
 
     let _e2 = image_size_query();
@@ -324,20 +380,20 @@ fn pinhole_ray(cam: Pinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
         jitter = _e10;
     }
     let _e12 = jitter;
-    let ndc = ((((vec2<f32>(pixel_1) + _e12) / size_1) * vec2(2f)) - vec2(1f));
+    let ndc = ((((vec2<f32>(pixel_2) + _e12) / size_1) * vec2(2f)) - vec2(1f));
     let _e24 = normalize_vec3f((cam.look_at - cam.position));
     let _e27 = normalize_vec3f(cross(_e24, cam.up));
     let up = cross(_e27, _e24);
-    let h_1 = tan((radians(cam.fov) * 0.5f));
+    let h = tan((radians(cam.fov) * 0.5f));
     let aspect = (size_1.x / size_1.y);
-    let _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
+    let _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h) * aspect)))) - (up * vec3((ndc.y * h)))));
     let _e52 = F32_INF;
     return Ray(cam.position, 0f, _e48, bitcast<f32>(_e52), 0u, 0u, 0u);
 }
 
-fn dispatch_ray_generation(type_id: u32, offset_1: u32, pixel_2: vec2<u32>, sample_2: u32) -> Ray {
+fn dispatch_ray_generation(type_id: u32, offset_1: u32, pixel_3: vec2<u32>, sample_3: u32) -> Ray {
     let _e3 = load_Pinhole(offset_1);
-    let _e4 = pinhole_ray(_e3, pixel_2, sample_2);
+    let _e4 = pinhole_ray(_e3, pixel_3, sample_3);
     return _e4;
 }
 
@@ -350,34 +406,34 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
     r = ray;
     let o_1 = vec4<f32>(ray.origin, 1f);
-    let d_2 = vec4<f32>(ray.dir, 0f);
+    let d_3 = vec4<f32>(ray.dir, 0f);
     r.origin = vec3<f32>(dot(inst.world_to_object_0_, o_1), dot(inst.world_to_object_1_, o_1), dot(inst.world_to_object_2_, o_1));
-    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
+    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_3), dot(inst.world_to_object_1_, d_3), dot(inst.world_to_object_2_, d_3));
     let _e25 = r;
     return _e25;
 }
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_4 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_4 * tiny), (abs(d) < tiny));
+    let s_3 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_3 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
 fn prepare_triangle_ray(ray_1: Ray) -> TriangleRay {
-    let d_3 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
-    let ad = abs(d_3);
+    let d_4 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
+    let ad = abs(d_4);
     let y_gt = (ad.y > ad.x);
     let kz = select(select(0u, 1u, y_gt), 2u, (ad.z > select(ad.x, ad.y, y_gt)));
     let kx0_ = select((kz + 1u), 0u, (kz == 2u));
     let ky0_ = select((kz + 2u), (kz - 1u), (kz >= 1u));
-    let dz = d_3[min(kz, 2u)];
+    let dz = d_4[min(kz, 2u)];
     let flip = (dz < 0f);
     let kx = select(kx0_, ky0_, flip);
     let ky = select(ky0_, kx0_, flip);
     let inf_bits = vec3(2139095040u);
-    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_3) & vec3(2147483647u)) < inf_bits)));
-    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
+    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_4) & vec3(2147483647u)) < inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_4[min(kx, 2u)] / dz), (d_4[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32> {
@@ -394,15 +450,15 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
     let cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
-    let v_1 = ((ax * cy) - (ay * cx));
+    let v_2 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
-    let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
-    let det = ((u + v_1) + w);
+    let outside = ((((u < 0f) || (v_2 < 0f)) || (w < 0f)) && (((u > 0f) || (v_2 > 0f)) || (w > 0f)));
+    let det = ((u + v_2) + w);
     let rcp = (1f / det);
-    let t_5 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    let t_5 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
     let hit_11 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_5, (v_1 * rcp), (w * rcp)), hit_11);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_5, (v_2 * rcp), (w * rcp)), hit_11);
 }
 
 fn point_error(origin: vec3<f32>, along: vec3<f32>) -> f32 {
@@ -442,9 +498,9 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     let _e14 = n.z;
     if (_e14 < 0f) {
         let _e21 = n;
-        let s_5 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_4 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_5);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_4);
         let _e37 = n.z;
         n = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -521,8 +577,8 @@ fn load_Fog(offset_2: u32) -> Fog {
     return Fog(bitcast<f32>(_e5), vec3<f32>(bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)));
 }
 
-fn is_finite_f32_(x_1: f32) -> bool {
-    return ((bitcast<u32>(x_1) & 2147483647u) < 2139095040u);
+fn is_finite_f32_(x_3: f32) -> bool {
+    return ((bitcast<u32>(x_3) & 2147483647u) < 2139095040u);
 }
 
 fn absorb_query(density: f32) {
@@ -531,7 +587,7 @@ fn absorb_query(density: f32) {
     if !(HAS_ABSORB) {
         return;
     }
-    let side = scratch[min(SCRATCH_ABSORB, 11u)];
+    let side = scratch[min(SCRATCH_ABSORB, 13u)];
     if (side == 0u) {
         return;
     }
@@ -540,21 +596,21 @@ fn absorb_query(density: f32) {
     if (_e13 && (density > 0f)) {
         sigma = density;
     }
-    let _e22 = scratch[min(SCRATCH_ABSORB_T, 11u)];
+    let _e22 = scratch[min(SCRATCH_ABSORB_T, 13u)];
     let t_6 = bitcast<f32>(_e22);
     let _e24 = sigma;
     let _e25 = sigma;
-    let s_6 = select(_e24, -(_e25), (side == 2u));
-    let _e35 = scratch[min(SCRATCH_DEPTH, 11u)];
-    let depth_2 = (bitcast<f32>(_e35) - (s_6 * t_6));
-    scratch[min(SCRATCH_DEPTH, 11u)] = bitcast<u32>(depth_2);
-    let _e50 = scratch[min(SCRATCH_NET, 11u)];
-    let net = (bitcast<f32>(_e50) + s_6);
-    scratch[min(SCRATCH_NET, 11u)] = bitcast<u32>(net);
-    let _e64 = scratch[min(SCRATCH_DENSITY_MAX, 11u)];
+    let s_5 = select(_e24, -(_e25), (side == 2u));
+    let _e35 = scratch[min(SCRATCH_DEPTH, 13u)];
+    let depth_2 = (bitcast<f32>(_e35) - (s_5 * t_6));
+    scratch[min(SCRATCH_DEPTH, 13u)] = bitcast<u32>(depth_2);
+    let _e50 = scratch[min(SCRATCH_NET, 13u)];
+    let net = (bitcast<f32>(_e50) + s_5);
+    scratch[min(SCRATCH_NET, 13u)] = bitcast<u32>(net);
+    let _e64 = scratch[min(SCRATCH_DENSITY_MAX, 13u)];
     let _e66 = sigma;
     let most = max(bitcast<f32>(_e64), _e66);
-    scratch[min(SCRATCH_DENSITY_MAX, 11u)] = bitcast<u32>(most);
+    scratch[min(SCRATCH_DENSITY_MAX, 13u)] = bitcast<u32>(most);
     return;
 }
 
@@ -575,11 +631,11 @@ fn accept(inst_4: GpuInstance, ray_5: Ray, c_1: Candidate) -> bool {
         let _e10 = finish_hit(ray_5, c_1);
         hit_error = shaded;
         if (ray_5.kind == RAY_SHADOW) {
-            scratch[min(SCRATCH_ABSORB, 11u)] = select(2u, 1u, _e10.front_face);
-            scratch[min(SCRATCH_ABSORB_T, 11u)] = bitcast<u32>((c_1.t * length(ray_5.dir)));
+            scratch[min(SCRATCH_ABSORB, 13u)] = select(2u, 1u, _e10.front_face);
+            scratch[min(SCRATCH_ABSORB_T, 13u)] = bitcast<u32>((c_1.t * length(ray_5.dir)));
         }
         let _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
-        scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
+        scratch[min(SCRATCH_ABSORB, 13u)] = 0u;
         return _e36;
     }
     return true;
@@ -755,7 +811,7 @@ fn intersect_object(slot_3: u32, ray_8: Ray, best_1: Candidate, shadow_1: bool) 
 fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     var inside: u32;
     var nearest: f32;
-    var i: u32;
+    var i_1: u32;
 
     if !(HAS_MEDIA) {
         return 0u;
@@ -768,13 +824,13 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     let _e23 = F32_INF;
     nearest = bitcast<f32>(_e23);
     let end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     loop {
-        let _e29 = i;
+        let _e29 = i_1;
         if (_e29 >= end) {
             break;
         }
-        let _e32 = i;
+        let _e32 = i_1;
         let slot_4 = params[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if (slot_4 != exclude) {
             let _e41 = F32_INF;
@@ -790,8 +846,8 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
             }
         }
         continuing {
-            let _e59 = i;
-            i = (_e59 + 1u);
+            let _e59 = i_1;
+            i_1 = (_e59 + 1u);
         }
     }
     let _e62 = inside;
@@ -914,7 +970,7 @@ fn miss(ray_11: Ray) -> vec3<f32> {
 }
 
 fn shading_medium(medium: u32) {
-    scratch[min(SCRATCH_MEDIUM, 11u)] = medium;
+    scratch[min(SCRATCH_MEDIUM, 13u)] = medium;
     return;
 }
 
@@ -952,18 +1008,18 @@ fn load_PointLight(offset_6: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn step_toward(x_2: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
-    let bits_1 = bitcast<vec3<u32>>(x_2);
-    let up_1 = ((sign(x_2) * sign(s)) > vec3(0f));
+fn step_toward(x_4: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
+    let bits_1 = bitcast<vec3<u32>>(x_4);
+    let up_1 = ((sign(x_4) * sign(s)) > vec3(0f));
     let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
     let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s > vec3(0f)));
-    let moved = select(stepped, from_zero, (x_2 == vec3(0f)));
-    return select(x_2, moved, !((s == vec3(0f))));
+    let moved = select(stepped, from_zero, (x_4 == vec3(0f)));
+    return select(x_4, moved, !((s == vec3(0f))));
 }
 
 fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_4 = ((2f * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    let offset_11 = (n_3 * vec3(d_4));
+    let d_5 = ((2f * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
+    let offset_11 = (n_3 * vec3(d_5));
     let _e17 = step_toward((p_5 + offset_11), offset_11);
     return _e17;
 }
@@ -1000,19 +1056,19 @@ fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32)
 fn shadow_transmittance(ray_14: Ray, medium_1: u32) -> f32 {
     var depth: f32;
 
-    scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
-    scratch[min(SCRATCH_DEPTH, 11u)] = 0u;
-    scratch[min(SCRATCH_NET, 11u)] = 0u;
-    scratch[min(SCRATCH_DENSITY_MAX, 11u)] = 0u;
+    scratch[min(SCRATCH_ABSORB, 13u)] = 0u;
+    scratch[min(SCRATCH_DEPTH, 13u)] = 0u;
+    scratch[min(SCRATCH_NET, 13u)] = 0u;
+    scratch[min(SCRATCH_DENSITY_MAX, 13u)] = 0u;
     if (HAS_MEDIA && HAS_ANY_HIT) {
         if (medium_1 != 0u) {
             let inst_8 = instances[(medium_1 - 1u)];
             if ((inst_8.flags & FLAG_ANY_HIT) != 0u) {
                 let start = Hit(ray_14.origin, 0f, -(ray_14.dir), -(ray_14.dir), vec2(0f), true, inst_8.object, 0u);
-                scratch[min(SCRATCH_ABSORB, 11u)] = 1u;
-                scratch[min(SCRATCH_ABSORB_T, 11u)] = 0u;
+                scratch[min(SCRATCH_ABSORB, 13u)] = 1u;
+                scratch[min(SCRATCH_ABSORB_T, 13u)] = 0u;
                 let _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start);
-                scratch[min(SCRATCH_ABSORB, 11u)] = 0u;
+                scratch[min(SCRATCH_ABSORB, 13u)] = 0u;
             }
         }
     }
@@ -1020,11 +1076,11 @@ fn shadow_transmittance(ray_14: Ray, medium_1: u32) -> f32 {
     if (_e75.slot != NO_HIT) {
         return 0f;
     }
-    let _e85 = scratch[min(SCRATCH_DEPTH, 11u)];
+    let _e85 = scratch[min(SCRATCH_DEPTH, 13u)];
     depth = bitcast<f32>(_e85);
-    let _e93 = scratch[min(SCRATCH_NET, 11u)];
+    let _e93 = scratch[min(SCRATCH_NET, 13u)];
     let net_1 = bitcast<f32>(_e93);
-    let _e101 = scratch[min(SCRATCH_DENSITY_MAX, 11u)];
+    let _e101 = scratch[min(SCRATCH_DENSITY_MAX, 13u)];
     if (net_1 > (0.000001f * bitcast<f32>(_e101))) {
         let _e107 = F32_INF;
         if (ray_14.tmax == bitcast<f32>(_e107)) {
@@ -1039,7 +1095,7 @@ fn shadow_transmittance(ray_14: Ray, medium_1: u32) -> f32 {
 
 fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
     let _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    let _e10 = scratch[min(SCRATCH_MEDIUM, 11u)];
+    let _e10 = scratch[min(SCRATCH_MEDIUM, 13u)];
     let _e11 = shadow_transmittance(_e4, _e10);
     return _e11;
 }
@@ -1066,12 +1122,12 @@ fn dispatch_light(type_id_3: u32, offset_7: u32, position_3: vec3<f32>, normal_3
     return _e4;
 }
 
-fn sample_light_query(i_1: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
+fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let frame_4 = frame;
-    if (i_1 >= frame_4.light_count) {
+    if (i_2 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
+    let entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     let _e22 = params[entry];
     let _e27 = params[(entry + 1u)];
     let _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
@@ -1080,24 +1136,24 @@ fn sample_light_query(i_1: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> L
 
 fn lambert_shade(m_2: Lambert, ray_15: Ray, hit_5: Hit) -> vec3<f32> {
     var color: vec3<f32>;
-    var i_2: u32;
+    var i_3: u32;
 
     let _e3 = shading_normal(ray_15, hit_5);
     color = vec3(0f);
     let _e8 = light_count_query();
-    i_2 = 0u;
+    i_3 = 0u;
     loop {
-        let _e10 = i_2;
+        let _e10 = i_3;
         if (_e10 >= _e8) {
             break;
         }
-        let _e12 = i_2;
+        let _e12 = i_3;
         let _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal);
         let _e16 = color;
         color = (_e16 + (((m_2.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0f))));
         continuing {
-            let _e30 = i_2;
-            i_2 = (_e30 + 1u);
+            let _e30 = i_3;
+            i_3 = (_e30 + 1u);
         }
     }
     let _e33 = color;
@@ -1130,20 +1186,20 @@ fn shade_direct(ray_17: Ray, c_2: Candidate) -> vec3<f32> {
     return _e12;
 }
 
-fn fog_inscatter(m_3: Fog, i_3: u32, o: vec3<f32>, dir_2: vec3<f32>, d_1: f32, trans: f32) -> vec3<f32> {
+fn fog_inscatter(m_3: Fog, i_4: u32, o: vec3<f32>, dir_2: vec3<f32>, d_1: f32, trans: f32) -> vec3<f32> {
     var s_1: f32;
 
     let sigma_1 = m_3.density;
     let tiny_1 = ((sigma_1 * d_1) < 0.001f);
-    let _e12 = sample_light_query(i_3, o, vec3(0f));
+    let _e12 = sample_light_query(i_4, o, vec3(0f));
     let c_6 = (_e12.dir * vec3(_e12.dist));
     let delta = dot(c_6, dir_2);
-    let h_2 = length((c_6 - (dir_2 * vec3(delta))));
-    let _e22 = is_finite_f32_(h_2);
-    let equi = (_e22 && (h_2 > 0.00000000000000000001f));
-    let ta = atan2(-(delta), h_2);
+    let h_1 = length((c_6 - (dir_2 * vec3(delta))));
+    let _e22 = is_finite_f32_(h_1);
+    let equi = (_e22 && (h_1 > 0.00000000000000000001f));
+    let ta = atan2(-(delta), h_1);
     let _e34 = F32_INF;
-    let tb = select(atan2((d_1 - delta), h_2), (0.5f * PI), (d_1 == bitcast<f32>(_e34)));
+    let tb = select(atan2((d_1 - delta), h_1), (0.5f * PI), (d_1 == bitcast<f32>(_e34)));
     let w_3 = select(0f, 0.5f, equi);
     let _e41 = rand2_next();
     s_1 = (-(log((1f - (_e41.y * (1f - trans))))) / sigma_1);
@@ -1151,7 +1207,7 @@ fn fog_inscatter(m_3: Fog, i_3: u32, o: vec3<f32>, dir_2: vec3<f32>, d_1: f32, t
         s_1 = (_e41.y * d_1);
     }
     if (_e41.x < w_3) {
-        s_1 = (delta + (h_2 * tan(mix(ta, tb, _e41.y))));
+        s_1 = (delta + (h_1 * tan(mix(ta, tb, _e41.y))));
     }
     let _e61 = s_1;
     s_1 = min(max(_e61, 0f), d_1);
@@ -1159,38 +1215,38 @@ fn fog_inscatter(m_3: Fog, i_3: u32, o: vec3<f32>, dir_2: vec3<f32>, d_1: f32, t
     let e_2 = exp((-(sigma_1) * _e66));
     let p_free = select(((sigma_1 * e_2) / (1f - trans)), (1f / d_1), tiny_1);
     let _e76 = s_1;
-    let r_4 = (_e76 - delta);
-    let pdf = (((1f - w_3) * p_free) + select(0f, ((w_3 * h_2) / ((tb - ta) * ((h_2 * h_2) + (r_4 * r_4)))), equi));
+    let r_3 = (_e76 - delta);
+    let pdf = (((1f - w_3) * p_free) + select(0f, ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))), equi));
     let _e91 = s_1;
-    let _e97 = sample_light_query(i_3, (o + (dir_2 * vec3(_e91))), vec3(0f));
+    let _e97 = sample_light_query(i_4, (o + (dir_2 * vec3(_e91))), vec3(0f));
     return (_e97.radiance * vec3(((sigma_1 * e_2) / pdf)));
 }
 
 fn fog_medium(m_4: Fog, ray_18: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     var light: vec3<f32>;
-    var i_4: u32;
+    var i_5: u32;
 
     let len = length(ray_18.dir);
     if (!((m_4.density > 0f)) || !((len > 0f))) {
         return radiance;
     }
-    let d_5 = (t * len);
-    let trans_1 = exp((-(m_4.density) * d_5));
+    let d_6 = (t * len);
+    let trans_1 = exp((-(m_4.density) * d_6));
     light = vec3(0f);
     let _e23 = light_count_query();
-    i_4 = 0u;
+    i_5 = 0u;
     loop {
-        let _e25 = i_4;
+        let _e25 = i_5;
         if (_e25 >= _e23) {
             break;
         }
         let _e27 = light;
-        let _e28 = i_4;
-        let _e33 = fog_inscatter(m_4, _e28, ray_18.origin, (ray_18.dir / vec3(len)), d_5, trans_1);
+        let _e28 = i_5;
+        let _e33 = fog_inscatter(m_4, _e28, ray_18.origin, (ray_18.dir / vec3(len)), d_6, trans_1);
         light = (_e27 + _e33);
         continuing {
-            let _e35 = i_4;
-            i_4 = (_e35 + 1u);
+            let _e35 = i_5;
+            i_5 = (_e35 + 1u);
         }
     }
     let _e46 = light;
@@ -1277,8 +1333,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var radiance_4: vec3<f32>;
     var t_4: f32;
     var hit_10: Hit;
-    var f: Frame;
-    var i_5: u32;
+    var f_1: Frame;
+    var i_6: u32;
     var medium_2: u32;
     var found: bool;
     var k_1: u32;
@@ -1376,28 +1432,28 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                         let _e142 = hit_10;
                         let _e143 = s_error;
                         let _e145 = s_c.slot;
-                        f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
-                        i_5 = 0u;
+                        f_1 = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
+                        i_6 = 0u;
                         loop {
-                            let _e155 = i_5;
+                            let _e155 = i_6;
                             if (_e155 >= n_8) {
                                 break;
                             }
-                            let _e158 = i_5;
-                            let _e162 = i_5;
+                            let _e158 = i_6;
+                            let _e162 = i_6;
                             let _e165 = spawn_dirs[_e162];
-                            f.dirs[min(_e158, 0u)] = _e165;
-                            let _e167 = i_5;
-                            let _e171 = i_5;
+                            f_1.dirs[min(_e158, 0u)] = _e165;
+                            let _e167 = i_6;
+                            let _e171 = i_6;
                             let _e174 = spawn_weights[_e171];
-                            f.weights[min(_e167, 0u)] = _e174;
+                            f_1.weights[min(_e167, 0u)] = _e174;
                             continuing {
-                                let _e175 = i_5;
-                                i_5 = (_e175 + 1u);
+                                let _e175 = i_6;
+                                i_6 = (_e175 + 1u);
                             }
                         }
                         let _e178 = depth_1;
-                        let _e182 = f;
+                        let _e182 = f_1;
                         stack[min(_e178, 2u)] = _e182;
                         let _e183 = depth_1;
                         depth_1 = (_e183 + 1u);
@@ -1447,11 +1503,11 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e243 = stack[min(top_1, 2u)].next;
         let _e248 = stack[min(top_1, 2u)].count;
         if (_e243 < _e248) {
-            let i_6 = stack[min(top_1, 2u)].next;
-            stack[min(top_1, 2u)].next = (i_6 + 1u);
+            let i_8 = stack[min(top_1, 2u)].next;
+            stack[min(top_1, 2u)].next = (i_8 + 1u);
             let parent = stack[min(top_1, 2u)].ray;
             let hit_12 = stack[min(top_1, 2u)].hit;
-            let dir_7 = stack[min(top_1, 2u)].dirs[min(i_6, 0u)];
+            let dir_7 = stack[min(top_1, 2u)].dirs[min(i_8, 0u)];
             medium_2 = parent.medium;
             if (dot(dir_7, hit_12.geometric_normal) < 0f) {
                 let _e289 = stack[min(top_1, 2u)].slot;
@@ -1518,8 +1574,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn is_finite_vec3f(x_3: vec3<f32>) -> vec3<bool> {
-    return ((bitcast<vec3<u32>>(x_3) & vec3(2147483647u)) < vec3(2139095040u));
+fn is_finite_vec3f(x_5: vec3<f32>) -> vec3<bool> {
+    return ((bitcast<vec3<u32>>(x_5) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
 fn finite_or_zero(c_3: vec3<f32>) -> vec3<f32> {
@@ -1527,7 +1583,7 @@ fn finite_or_zero(c_3: vec3<f32>) -> vec3<f32> {
     return select(vec3(0f), c_3, _e3);
 }
 
-fn render_pixel(pixel_3: vec2<u32>) {
+fn render_pixel(pixel_4: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s_2: u32;
@@ -1545,9 +1601,9 @@ fn render_pixel(pixel_3: vec2<u32>) {
             break;
         }
         let _e18 = s_2;
-        let sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_3, sample_3, frame_5.seed);
-        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        let sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_4, sample_4, frame_5.seed);
+        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
         ray_24 = _e23;
         ray_24.depth = 0u;
         ray_24.kind = RAY_CAMERA;
@@ -1578,10 +1634,10 @@ fn render_pixel(pixel_3: vec2<u32>) {
     let _e62 = vec4<f32>(_e59, f32(frame_5.samples_per_pass));
     let _e63 = bad;
     if (tile_2.frame == 0u) {
-        accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = _e62;
+        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
     } else {
-        let _e69 = accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)];
-        accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = (_e69 + _e62);
+        let _e69 = accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
+        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
     }
     if (_e63 > 0u) {
         atomicAdd((&counters[0]), _e63);

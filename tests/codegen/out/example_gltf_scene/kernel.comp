@@ -148,6 +148,9 @@ const uint WORKGROUP_WIDTH = 8u;
 const uint WORKGROUP_HEIGHT = 8u;
 const uint NO_HIT = 4294967295u;
 const uint SCATTER = 1000003u;
+const uint SCRATCH_RNG_INDEX = 12u;
+const uint SCRATCH_RNG_SEED = 13u;
+const uint HALF_WORD_BITS = 16u;
 const uint RAY_CAMERA = 0u;
 const bool HAS_MEDIA = false;
 const uint MEDIUM_ENTRY_STRIDE = 1u;
@@ -183,7 +186,7 @@ const uint SCRATCH_QUERY = 2u;
 const uint SCRATCH_PENDING = 4u;
 const uint LIGHT_QUERIES = 32u;
 const uint COUNTER_SHADOW_OVERFLOW = 3u;
-const uint SCRATCH_LIGHT_QUERY = 12u;
+const uint SCRATCH_LIGHT_QUERY = 14u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const float INV_PI = 0.31830987;
 const uint FLAG_MEDIUM = 4u;
@@ -197,29 +200,29 @@ layout(std140, binding = 1) uniform TileParams_block_0Compute { TileParams _grou
 
 layout(std140, binding = 0) uniform FrameUniforms_block_1Compute { FrameUniforms _group_0_binding_0_cs; };
 
+uint scratch[24] = uint[24](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+
 uint rng_state = 0u;
 
-layout(std430, binding = 6) readonly buffer type_4_block_2Compute { uint _group_0_binding_6_cs[]; };
+layout(std430, binding = 6) readonly buffer type_5_block_2Compute { uint _group_0_binding_6_cs[]; };
 
 uint F32_INF = 2139095040u;
 
-layout(std430, binding = 3) readonly buffer type_8_block_3Compute { GpuInstance _group_0_binding_3_cs[]; };
+layout(std430, binding = 3) readonly buffer type_9_block_3Compute { GpuInstance _group_0_binding_3_cs[]; };
 
-layout(std430, binding = 2) readonly buffer type_9_block_4Compute { GpuNode _group_0_binding_2_cs[]; };
+layout(std430, binding = 2) readonly buffer type_10_block_4Compute { GpuNode _group_0_binding_2_cs[]; };
 
-layout(std430, binding = 4) readonly buffer type_10_block_5Compute { vec4 _group_0_binding_4_cs[]; };
+layout(std430, binding = 4) readonly buffer type_11_block_5Compute { vec4 _group_0_binding_4_cs[]; };
 
 float hit_error = 0.0;
 
-layout(std430, binding = 5) readonly buffer type_12_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
+layout(std430, binding = 5) readonly buffer type_13_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
 
-layout(std430, binding = 7) readonly buffer type_4_block_7Compute { uint _group_0_binding_7_cs[]; };
+layout(std430, binding = 7) readonly buffer type_5_block_7Compute { uint _group_0_binding_7_cs[]; };
 
 uint traversal_stack[128] = uint[128](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
 uint ray_count = 0u;
-
-uint scratch[22] = uint[22](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
 layout(std430, binding = 9) buffer type_18_block_8Compute { uint _group_0_binding_9_cs[]; };
 
@@ -229,7 +232,7 @@ vec3 spawn_weights[1] = vec3[1](vec3(0.0));
 
 uint spawn_count = 0u;
 
-layout(std430, binding = 8) buffer type_10_block_9Compute { vec4 _group_0_binding_8_cs[]; };
+layout(std430, binding = 8) buffer type_11_block_9Compute { vec4 _group_0_binding_8_cs[]; };
 
 
 uvec2 div_vec2u(uvec2 a, uvec2 b) {
@@ -276,24 +279,23 @@ uvec2 scattered_local(uvec2 id) {
 }
 
 uint pcg_hash(uint x) {
-    uint state = ((x * 747796405u) + 2891336453u);
-    uint word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    uint state_1 = ((x * 747796405u) + 2891336453u);
+    uint word = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
     return ((word >> 22u) ^ word);
 }
 
-void rng_seed(uvec2 pixel, uint sample_, uint seed) {
-    uint h = 0u;
-    uint _e5 = pcg_hash(seed);
-    uint _e7 = pcg_hash((sample_ ^ _e5));
-    uint _e9 = pcg_hash((pixel.y ^ _e7));
-    uint _e11 = pcg_hash((pixel.x ^ _e9));
-    h = _e11;
-    uint _e13 = h;
-    if ((_e13 == 0u)) {
-        h = 1u;
-    }
-    uint _e17 = h;
-    rng_state = _e17;
+void rng_resume(uvec2 pixel, uint sample_, uint seed, uint state) {
+    scratch[min(SCRATCH_RNG_INDEX, 23u)] = sample_;
+    uint _e12 = pcg_hash(seed);
+    uint _e14 = pcg_hash((pixel.y ^ _e12));
+    uint _e16 = pcg_hash((pixel.x ^ _e14));
+    scratch[min(SCRATCH_RNG_SEED, 23u)] = _e16;
+    rng_state = state;
+    return;
+}
+
+void rng_seed(uvec2 pixel_1, uint sample_1, uint seed_1) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u);
     return;
 }
 
@@ -321,13 +323,65 @@ uint samples_per_pixel_query() {
     return _e1.total_samples;
 }
 
+uint laine_karras(uint x_1, uint seed_2) {
+    uint v = 0u;
+    v = (x_1 + seed_2);
+    uint _e4 = v;
+    uint _e5 = v;
+    v = (_e4 ^ (_e5 * 1817228412u));
+    uint _e9 = v;
+    uint _e10 = v;
+    v = (_e9 ^ (_e10 * 3090095698u));
+    uint _e14 = v;
+    uint _e15 = v;
+    v = (_e14 ^ (_e15 * 3350193720u));
+    uint _e19 = v;
+    uint _e20 = v;
+    v = (_e19 ^ (_e20 * 2367878886u));
+    uint _e24 = v;
+    return _e24;
+}
+
+uint sobol_second_reversed(uint i) {
+    uint f = 0u;
+    f = i;
+    uint _e2 = f;
+    uint _e3 = f;
+    f = (_e2 ^ ((_e3 >> 1u) & 1431655765u));
+    uint _e9 = f;
+    uint _e10 = f;
+    f = (_e9 ^ ((_e10 >> 2u) & 858993459u));
+    uint _e16 = f;
+    uint _e17 = f;
+    f = (_e16 ^ ((_e17 >> 4u) & 252645135u));
+    uint _e23 = f;
+    uint _e24 = f;
+    f = (_e23 ^ ((_e24 >> 8u) & 16711935u));
+    uint _e30 = f;
+    uint _e31 = f;
+    f = (_e30 ^ (_e31 >> (HALF_WORD_BITS & 31u)));
+    uint _e37 = f;
+    return _e37;
+}
+
 float rand_next() {
-    uint _e1 = rng_state;
-    uint s_2 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_2;
-    uint word_1 = (((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u);
-    uint r_3 = ((word_1 >> 22u) ^ word_1);
-    return (float((r_3 >> 8u)) * (1.0 / 16777216.0));
+    uint x_2 = 0u;
+    uint d_1 = rng_state;
+    rng_state = (d_1 + 1u);
+    uint _e10 = scratch[min(SCRATCH_RNG_SEED, 23u)];
+    uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 23u)];
+    uint _e24 = laine_karras(bitfieldReverse(_e22), _e16);
+    uint i_7 = bitfieldReverse(_e24);
+    x_2 = i_7;
+    if (((d_1 & 1u) != 0u)) {
+        uint _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    uint _e45 = x_2;
+    uint _e46 = laine_karras(_e45, scramble);
+    return (float((bitfieldReverse(_e46) >> 8u)) * (1.0 / 16777216.0));
 }
 
 vec2 rand2_next() {
@@ -336,11 +390,11 @@ vec2 rand2_next() {
     return vec2(_e0, _e1);
 }
 
-vec3 normalize_vec3f(vec3 v) {
-    return ((dot(v, v) >= 1.1754944e-38) ? normalize(v) : vec3(0.0));
+vec3 normalize_vec3f(vec3 v_1) {
+    return ((dot(v_1, v_1) >= 1.1754944e-38) ? normalize(v_1) : vec3(0.0));
 }
 
-Ray pinhole_ray(Pinhole cam, uvec2 pixel_1, uint sample_1) {
+Ray pinhole_ray(Pinhole cam, uvec2 pixel_2, uint sample_2) {
     vec2 jitter = vec2(0.0);
     uvec2 _e2 = image_size_query();
     vec2 size_1 = vec2(_e2);
@@ -351,20 +405,20 @@ Ray pinhole_ray(Pinhole cam, uvec2 pixel_1, uint sample_1) {
         jitter = _e10;
     }
     vec2 _e12 = jitter;
-    vec2 ndc = ((((vec2(pixel_1) + _e12) / size_1) * vec2(2.0)) - vec2(1.0));
+    vec2 ndc = ((((vec2(pixel_2) + _e12) / size_1) * vec2(2.0)) - vec2(1.0));
     vec3 _e24 = normalize_vec3f((cam.look_at - cam.position));
     vec3 _e27 = normalize_vec3f(cross(_e24, cam.up));
     vec3 up = cross(_e27, _e24);
-    float h_2 = tan((radians(cam.fov) * 0.5));
+    float h_1 = tan((radians(cam.fov) * 0.5));
     float aspect = (size_1.x / size_1.y);
-    vec3 _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_2) * aspect)))) - (up * vec3((ndc.y * h_2)))));
+    vec3 _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
     uint _e52 = F32_INF;
     return Ray(cam.position, 0.0, _e48, uintBitsToFloat(_e52), 0u, 0u, 0u);
 }
 
-Ray dispatch_ray_generation(uint type_id, uint offset_1, uvec2 pixel_2, uint sample_2) {
+Ray dispatch_ray_generation(uint type_id, uint offset_1, uvec2 pixel_3, uint sample_3) {
     Pinhole _e3 = load_Pinhole(offset_1);
-    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
+    Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
     return _e4;
 }
 
@@ -376,34 +430,34 @@ Ray to_object(GpuInstance inst, Ray ray) {
     Ray r = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     r = ray;
     vec4 o = vec4(ray.origin, 1.0);
-    vec4 d_1 = vec4(ray.dir, 0.0);
+    vec4 d_2 = vec4(ray.dir, 0.0);
     r.origin = vec3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = vec3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
+    r.dir = vec3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
     return _e25;
 }
 
 vec3 safe_inverse(vec3 d) {
     vec3 tiny = vec3(1.1754944e-38);
-    vec3 s_3 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
-    vec3 dd = mix(d, (s_3 * tiny), lessThan(abs(d), tiny));
+    vec3 s_2 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
+    vec3 dd = mix(d, (s_2 * tiny), lessThan(abs(d), tiny));
     return (vec3(1.0) / dd);
 }
 
 TriangleRay prepare_triangle_ray(Ray ray_1) {
-    vec3 d_2 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
-    vec3 ad = abs(d_2);
+    vec3 d_3 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
+    vec3 ad = abs(d_3);
     bool y_gt = (ad.y > ad.x);
     uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
     uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
     uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
-    float dz = d_2[min(kz, 2u)];
+    float dz = d_3[min(kz, 2u)];
     bool flip = (dz < 0.0);
     uint kx = (flip ? ky0_ : kx0_);
     uint ky = (flip ? kx0_ : ky0_);
     uvec3 inf_bits = uvec3(2139095040u);
-    bool finite = (all(lessThan((floatBitsToUint(ray_1.origin) & uvec3(2147483647u)), inf_bits)) && all(lessThan((floatBitsToUint(d_2) & uvec3(2147483647u)), inf_bits)));
-    return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_2[min(kx, 2u)] / dz), (d_2[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    bool finite = (all(lessThan((floatBitsToUint(ray_1.origin) & uvec3(2147483647u)), inf_bits)) && all(lessThan((floatBitsToUint(d_3) & uvec3(2147483647u)), inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
 }
 
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
@@ -420,15 +474,15 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float cx = (c_8[min(r_1.kx, 2u)] - (r_1.shear.x * c_8[min(r_1.kz, 2u)]));
     float cy = (c_8[min(r_1.ky, 2u)] - (r_1.shear.y * c_8[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
-    float v_2 = ((ax * cy) - (ay * cx));
+    float v_3 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
-    bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
-    float det = ((u + v_2) + w);
+    bool outside = ((((u < 0.0) || (v_3 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_3 > 0.0)) || (w > 0.0)));
+    float det = ((u + v_3) + w);
     float rcp = (1.0 / det);
-    float t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_8[min(r_1.kz, 2u)]))) * rcp);
+    float t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_3 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_8[min(r_1.kz, 2u)]))) * rcp);
     bool hit_13 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_13 ? vec3(t_6, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_13 ? vec3(t_6, (v_3 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 Triangle load_triangle(uint slot_1) {
@@ -484,9 +538,9 @@ vec3 decode_octahedral(uint bits) {
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n_1;
-        vec2 s_4 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
+        vec2 s_3 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
         vec3 _e29 = n_1;
-        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_4);
+        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_3);
         float _e37 = n_1.z;
         n_1 = vec3(xy.x, xy.y, _e37);
     }
@@ -565,8 +619,8 @@ GltfMaskedMaterial load_GltfMaskedMaterial(uint offset_2) {
     return GltfMaskedMaterial(vec4(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)), _e30, uintBitsToFloat(_e35), uintBitsToFloat(_e41), vec3(uintBitsToFloat(_e47), uintBitsToFloat(_e53), uintBitsToFloat(_e59)), uintBitsToFloat(_e66), _e72, _e77);
 }
 
-int i32_from_f32_(float x_1) {
-    return (((floatBitsToUint(x_1) & 2147483647u) > 2139095040u) ? 0 : int(min(max(x_1, -2147483600.0), 2147483500.0)));
+int i32_from_f32_(float x_3) {
+    return (((floatBitsToUint(x_3) & 2147483647u) > 2139095040u) ? 0 : int(min(max(x_3, -2147483600.0), 2147483500.0)));
 }
 
 int rem_i32_(int a_4, int b_4) {
@@ -575,14 +629,14 @@ int rem_i32_(int a_4, int b_4) {
     return (by_zero_4 ? 0 : (a_4 - (divisor_4 * (a_4 / divisor_4))));
 }
 
-int wrap_texel(int x_2, int n_2, uint mode) {
-    int _e3 = rem_i32_(x_2, n_2);
+int wrap_texel(int x_4, int n_2, uint mode) {
+    int _e3 = rem_i32_(x_4, n_2);
     int _e5 = rem_i32_((_e3 + n_2), n_2);
-    int _e8 = rem_i32_(x_2, (2 * n_2));
+    int _e8 = rem_i32_(x_4, (2 * n_2));
     int _e14 = rem_i32_((_e8 + (2 * n_2)), (2 * n_2));
     int mirror = ((_e14 >= n_2) ? (((2 * n_2) - 1) - _e14) : _e14);
     int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5);
-    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_2, 0), (n_2 - 1)) : wrapped);
+    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_4, 0), (n_2 - 1)) : wrapped);
 }
 
 float srgb_channel(float c_2) {
@@ -626,10 +680,10 @@ vec4 sample_texture(uint t_1, vec2 uv) {
     uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
     vec2 q_3 = (uv * vec2(float(wi), float(hi_1)));
     vec2 p_7 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_3) : (q_3 - vec2(0.5)));
-    vec2 f_1 = floor(p_7);
-    vec2 fr = (p_7 - f_1);
-    int _e47 = i32_from_f32_(f_1.x);
-    int _e49 = i32_from_f32_(f_1.y);
+    vec2 f_2 = floor(p_7);
+    vec2 fr = (p_7 - f_2);
+    int _e47 = i32_from_f32_(f_2.x);
+    int _e49 = i32_from_f32_(f_2.y);
     int _e50 = wrap_texel(_e47, wi, mu);
     uint x0_ = uint(_e50);
     int _e54 = wrap_texel((_e47 + 1), wi, mu);
@@ -652,27 +706,27 @@ uint frame_index_query() {
     return _e1.frame;
 }
 
-uint gltf_pcg(uint x_3) {
-    uint state_1 = ((x_3 * 747796405u) + 2891336453u);
-    uint word_2 = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
-    return ((word_2 >> 22u) ^ word_2);
+uint gltf_pcg(uint x_5) {
+    uint state_2 = ((x_5 * 747796405u) + 2891336453u);
+    uint word_1 = (((state_2 >> (((state_2 >> 28u) + 4u) & 31u)) ^ state_2) * 277803737u);
+    return ((word_1 >> 22u) ^ word_1);
 }
 
 float gltf_coverage(Ray ray_5, Hit hit_1) {
-    uint h_1 = 0u;
+    uint h = 0u;
     uvec3 o_1 = floatBitsToUint(ray_5.origin);
-    uvec3 d_3 = floatBitsToUint(ray_5.dir);
-    h_1 = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u));
-    uint _e20 = h_1;
-    h_1 = (((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
-    uint _e33 = h_1;
+    uvec3 d_4 = floatBitsToUint(ray_5.dir);
+    h = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_4.x * 3266489909u));
+    uint _e20 = h;
+    h = (((_e20 ^ (d_4.y * 668265263u)) ^ (d_4.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
+    uint _e33 = h;
     uint _e38 = frame_index_query();
-    h_1 = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
-    uint _e42 = h_1;
+    h = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
+    uint _e42 = h;
     uint _e43 = gltf_pcg(_e42);
     uint _e44 = gltf_pcg(_e43);
-    h_1 = _e44;
-    uint _e45 = h_1;
+    h = _e44;
+    uint _e45 = h;
     return (float((_e45 >> 8u)) * (1.0 / 16777216.0));
 }
 
@@ -892,7 +946,7 @@ Candidate intersect_object(uint slot_3, Ray ray_12, Candidate best_1, bool shado
 uint medium_at(vec3 p_4, uint exclude) {
     uint inside = 0u;
     float nearest = 0.0;
-    uint i = 0u;
+    uint i_1 = 0u;
     if (!(HAS_MEDIA)) {
         return 0u;
     }
@@ -904,19 +958,19 @@ uint medium_at(vec3 p_4, uint exclude) {
     uint _e23 = F32_INF;
     nearest = uintBitsToFloat(_e23);
     uint end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e59 = i;
-            i = (_e59 + 1u);
+            uint _e59 = i_1;
+            i_1 = (_e59 + 1u);
         }
         loop_init_1 = false;
-        uint _e29 = i;
+        uint _e29 = i_1;
         if ((_e29 >= end)) {
             break;
         }
-        uint _e32 = i;
+        uint _e32 = i_1;
         uint slot_4 = _group_0_binding_6_cs[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if ((slot_4 != exclude)) {
             uint _e41 = F32_INF;
@@ -1100,35 +1154,35 @@ DirectionalLight load_DirectionalLight(uint offset_6) {
     return DirectionalLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43));
 }
 
-void scratch_store3f(uint i_1, vec3 v_1) {
-    uvec3 b_9 = floatBitsToUint(v_1);
-    scratch[min(i_1, 21u)] = b_9.x;
-    scratch[min((i_1 + 1u), 21u)] = b_9.y;
-    scratch[min((i_1 + 2u), 21u)] = b_9.z;
+void scratch_store3f(uint i_2, vec3 v_2) {
+    uvec3 b_9 = floatBitsToUint(v_2);
+    scratch[min(i_2, 23u)] = b_9.x;
+    scratch[min((i_2 + 1u), 23u)] = b_9.y;
+    scratch[min((i_2 + 2u), 23u)] = b_9.z;
     return;
 }
 
 float shadow_deferred(vec3 position, vec3 normal, vec3 dir, float dist) {
-    uint i_6 = scratch[min(SCRATCH_QUERY, 21u)];
-    scratch[min(SCRATCH_QUERY, 21u)] = (i_6 + 1u);
-    uint _e22 = scratch[min(SCRATCH_RESOLVED, 21u)];
-    if ((i_6 < _e22)) {
-        uint _e29 = scratch[min(SCRATCH_LIGHT_BITS, 21u)];
-        return float(((_e29 >> (i_6 & 31u)) & 1u));
+    uint i_8 = scratch[min(SCRATCH_QUERY, 23u)];
+    scratch[min(SCRATCH_QUERY, 23u)] = (i_8 + 1u);
+    uint _e22 = scratch[min(SCRATCH_RESOLVED, 23u)];
+    if ((i_8 < _e22)) {
+        uint _e29 = scratch[min(SCRATCH_LIGHT_BITS, 23u)];
+        return float(((_e29 >> (i_8 & 31u)) & 1u));
     }
-    uint _e41 = scratch[min(SCRATCH_PENDING, 21u)];
+    uint _e41 = scratch[min(SCRATCH_PENDING, 23u)];
     if ((_e41 != 0u)) {
         return 1.0;
     }
-    if ((i_6 >= LIGHT_QUERIES)) {
+    if ((i_8 >= LIGHT_QUERIES)) {
         atomicAdd(_group_0_binding_9_cs[min(COUNTER_SHADOW_OVERFLOW, 3u)], 1u);
         return 1.0;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)] = floatBitsToUint(dist);
-    scratch[min(SCRATCH_PENDING, 21u)] = 1u;
+    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 23u)] = floatBitsToUint(dist);
+    scratch[min(SCRATCH_PENDING, 23u)] = 1u;
     return 1.0;
 }
 
@@ -1192,25 +1246,25 @@ LightSample dispatch_light(uint type_id_3, uint offset_8, vec3 position_3, vec3 
     return LightSample(vec3(0.0), 0.0, vec3(0.0), 0.0);
 }
 
-vec3 scratch_load3f(uint i_2) {
-    uint _e5 = scratch[min(i_2, 21u)];
-    uint _e12 = scratch[min((i_2 + 1u), 21u)];
-    uint _e19 = scratch[min((i_2 + 2u), 21u)];
+vec3 scratch_load3f(uint i_3) {
+    uint _e5 = scratch[min(i_3, 23u)];
+    uint _e12 = scratch[min((i_3 + 1u), 23u)];
+    uint _e19 = scratch[min((i_3 + 2u), 23u)];
     return uintBitsToFloat(uvec3(_e5, _e12, _e19));
 }
 
-vec3 step_toward(vec3 x_4, vec3 s) {
-    uvec3 bits_2 = floatBitsToUint(x_4);
-    bvec3 up_1 = greaterThan((sign(x_4) * sign(s)), vec3(0.0));
+vec3 step_toward(vec3 x_6, vec3 s) {
+    uvec3 bits_2 = floatBitsToUint(x_6);
+    bvec3 up_1 = greaterThan((sign(x_6) * sign(s)), vec3(0.0));
     vec3 stepped = uintBitsToFloat(mix((bits_2 - uvec3(1u)), (bits_2 + uvec3(1u)), up_1));
     vec3 from_zero = mix(vec3(-1.1754944e-38), vec3(1.1754944e-38), greaterThan(s, vec3(0.0)));
-    vec3 moved = mix(stepped, from_zero, equal(x_4, vec3(0.0)));
-    return mix(x_4, moved, not(equal(s, vec3(0.0))));
+    vec3 moved = mix(stepped, from_zero, equal(x_6, vec3(0.0)));
+    return mix(x_6, moved, not(equal(s, vec3(0.0))));
 }
 
 vec3 offset_origin(vec3 p_5, vec3 n_4, float error) {
-    float d_4 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    vec3 offset_13 = (n_4 * vec3(d_4));
+    float d_5 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    vec3 offset_13 = (n_4 * vec3(d_5));
     vec3 _e17 = step_toward((p_5 + offset_13), offset_13);
     return _e17;
 }
@@ -1249,29 +1303,29 @@ float shadow_query(vec3 position_5, vec3 normal_5, vec3 dir_2, float dist_2) {
     return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample sample_light_deferred(uint i_3, vec3 position_6, vec3 normal_6) {
+LightSample sample_light_deferred(uint i_4, vec3 position_6, vec3 normal_6) {
     uint after = 0u;
     uint resolved = 0u;
     uint bits_1 = 0u;
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    if ((i_3 >= frame_4.light_count)) {
+    if ((i_4 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
-    uint entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     uint type_id_7 = _group_0_binding_6_cs[entry];
     uint offset_14 = _group_0_binding_6_cs[(entry + 1u)];
     uint start = rng_state;
     after = start;
     resolved = 0u;
     bits_1 = 0u;
-    scratch[min(SCRATCH_RESOLVED, 21u)] = 0u;
-    scratch[min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
+    scratch[min(SCRATCH_RESOLVED, 23u)] = 0u;
+    scratch[min(SCRATCH_LIGHT_BITS, 23u)] = 0u;
     while(true) {
         rng_state = start;
-        scratch[min(SCRATCH_QUERY, 21u)] = 0u;
-        scratch[min(SCRATCH_PENDING, 21u)] = 0u;
+        scratch[min(SCRATCH_QUERY, 23u)] = 0u;
+        scratch[min(SCRATCH_PENDING, 23u)] = 0u;
         LightSample _e60 = dispatch_light(type_id_7, offset_14, position_6, normal_6);
-        uint _e66 = scratch[min(SCRATCH_PENDING, 21u)];
+        uint _e66 = scratch[min(SCRATCH_PENDING, 23u)];
         if ((_e66 == 0u)) {
             uint _e69 = resolved;
             if ((_e69 > 0u)) {
@@ -1290,12 +1344,12 @@ LightSample sample_light_deferred(uint i_3, vec3 position_6, vec3 normal_6) {
         vec3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
         vec3 _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
         vec3 _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        uint _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)];
+        uint _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 23u)];
         float _e97 = shadow_query(_e82, _e85, _e88, uintBitsToFloat(_e95));
         uint _e99 = rng_state;
         after = _e99;
         if (!((_e97 == 0.0))) {
-            uint _e108 = scratch[min(SCRATCH_QUERY, 21u)];
+            uint _e108 = scratch[min(SCRATCH_QUERY, 23u)];
             uint _e109 = resolved;
             if ((_e108 == (_e109 + 1u))) {
                 uint _e113 = after;
@@ -1309,9 +1363,9 @@ LightSample sample_light_deferred(uint i_3, vec3 position_6, vec3 normal_6) {
         uint _e122 = resolved;
         resolved = (_e122 + 1u);
         uint _e126 = bits_1;
-        scratch[min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
+        scratch[min(SCRATCH_LIGHT_BITS, 23u)] = _e126;
         uint _e132 = resolved;
-        scratch[min(SCRATCH_RESOLVED, 21u)] = _e132;
+        scratch[min(SCRATCH_RESOLVED, 23u)] = _e132;
     }
     return LightSample(vec3(0.0), 0.0, vec3(0.0), 0.0);
 }
@@ -1323,8 +1377,8 @@ vec3 pbr_fresnel(vec3 f0_, float c_4) {
 }
 
 float pbr_ggx_d(float ndh, float a2_) {
-    float d_5 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
-    return ((a2_ * INV_PI) / (d_5 * d_5));
+    float d_6 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
+    return ((a2_ * INV_PI) / (d_6 * d_6));
 }
 
 float pbr_smith_v(float ndl, float ndv, float a2_1) {
@@ -1335,33 +1389,33 @@ float pbr_smith_v(float ndl, float ndv, float a2_1) {
 
 vec3 gltf_radiance(vec3 c_5, float metallic, float roughness_1, float occlusion, vec3 emissive, Ray ray_18, Hit hit_6) {
     vec3 color = vec3(0.0);
-    uint i_4 = 0u;
+    uint i_5 = 0u;
     vec3 _e7 = shading_normal(ray_18, hit_6);
     vec3 _e9 = normalize_vec3f(ray_18.dir);
-    vec3 v_3 = -(_e9);
+    vec3 v_4 = -(_e9);
     float metal = clamp(metallic, 0.0, 1.0);
     float _e12 = pbr_alpha2_(roughness_1);
     vec3 f0_1 = mix(vec3(0.04), c_5, vec3(metal));
-    float ndv_1 = max(dot(_e7, v_3), 0.0001);
+    float ndv_1 = max(dot(_e7, v_4), 0.0001);
     color = emissive;
     uint _e22 = light_count_query();
-    i_4 = 0u;
+    i_5 = 0u;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e65 = i_4;
-            i_4 = (_e65 + 1u);
+            uint _e65 = i_5;
+            i_5 = (_e65 + 1u);
         }
         loop_init_2 = false;
-        uint _e24 = i_4;
+        uint _e24 = i_5;
         if ((_e24 >= _e22)) {
             break;
         }
-        uint _e26 = i_4;
+        uint _e26 = i_5;
         LightSample _e29 = sample_light_deferred(_e26, hit_6.position, hit_6.geometric_normal);
         float ndl_1 = max(dot(_e7, _e29.dir), 0.0);
-        vec3 _e36 = normalize_vec3f((_e29.dir + v_3));
-        vec3 _e38 = pbr_fresnel(f0_1, dot(v_3, _e36));
+        vec3 _e36 = normalize_vec3f((_e29.dir + v_4));
+        vec3 _e38 = pbr_fresnel(f0_1, dot(v_4, _e36));
         float _e41 = pbr_ggx_d(clamp(dot(_e7, _e36), 0.0, 1.0), _e12);
         float _e42 = pbr_smith_v(ndl_1, ndv_1, _e12);
         vec3 spec = (_e38 * vec3((_e41 * _e42)));
@@ -1487,8 +1541,8 @@ vec3 trace(Ray camera_ray) {
     vec3 radiance_3 = vec3(0.0);
     float t_5 = 0.0;
     Hit hit_12 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
-    Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
-    uint i_5 = 0u;
+    Frame f_1 = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
+    uint i_6 = 0u;
     uint medium = 0u;
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false);
@@ -1583,30 +1637,30 @@ vec3 trace(Ray camera_ray) {
                         Hit _e142 = hit_12;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_9, 0u);
-                        i_5 = 0u;
+                        f_1 = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_9, 0u);
+                        i_6 = 0u;
                         bool loop_init_3 = true;
                         while(true) {
                             if (!loop_init_3) {
-                                uint _e175 = i_5;
-                                i_5 = (_e175 + 1u);
+                                uint _e175 = i_6;
+                                i_6 = (_e175 + 1u);
                             }
                             loop_init_3 = false;
-                            uint _e155 = i_5;
+                            uint _e155 = i_6;
                             if ((_e155 >= n_9)) {
                                 break;
                             }
-                            uint _e158 = i_5;
-                            uint _e162 = i_5;
+                            uint _e158 = i_6;
+                            uint _e162 = i_6;
                             vec3 _e165 = spawn_dirs[_e162];
-                            f.dirs[min(_e158, 0u)] = _e165;
-                            uint _e167 = i_5;
-                            uint _e171 = i_5;
+                            f_1.dirs[min(_e158, 0u)] = _e165;
+                            uint _e167 = i_6;
+                            uint _e171 = i_6;
                             vec3 _e174 = spawn_weights[_e171];
-                            f.weights[min(_e167, 0u)] = _e174;
+                            f_1.weights[min(_e167, 0u)] = _e174;
                         }
                         uint _e178 = depth;
-                        Frame _e182 = f;
+                        Frame _e182 = f_1;
                         stack[min(_e178, 3u)] = _e182;
                         uint _e183 = depth;
                         depth = (_e183 + 1u);
@@ -1654,11 +1708,11 @@ vec3 trace(Ray camera_ray) {
         uint _e241 = stack[min(top_1, 3u)].next;
         uint _e246 = stack[min(top_1, 3u)].count;
         if ((_e241 < _e246)) {
-            uint i_7 = stack[min(top_1, 3u)].next;
-            stack[min(top_1, 3u)].next = (i_7 + 1u);
+            uint i_9 = stack[min(top_1, 3u)].next;
+            stack[min(top_1, 3u)].next = (i_9 + 1u);
             Ray parent = stack[min(top_1, 3u)].ray;
             Hit hit_14 = stack[min(top_1, 3u)].hit;
-            vec3 dir_7 = stack[min(top_1, 3u)].dirs[min(i_7, 0u)];
+            vec3 dir_7 = stack[min(top_1, 3u)].dirs[min(i_9, 0u)];
             medium = parent.medium;
             float _e283 = stack[min(top_1, 3u)].error;
             vec3 _e284 = spawn_origin(hit_14, _e283, dir_7);
@@ -1684,8 +1738,8 @@ vec3 trace(Ray camera_ray) {
     return vec3(0.0);
 }
 
-bvec3 is_finite_vec3f(vec3 x_5) {
-    return lessThan((floatBitsToUint(x_5) & uvec3(2147483647u)), uvec3(2139095040u));
+bvec3 is_finite_vec3f(vec3 x_7) {
+    return lessThan((floatBitsToUint(x_7) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
 vec3 finite_or_zero(vec3 c_7) {
@@ -1693,7 +1747,7 @@ vec3 finite_or_zero(vec3 c_7) {
     return mix(vec3(0.0), c_7, _e3);
 }
 
-void render_pixel(uvec2 pixel_3) {
+void render_pixel(uvec2 pixel_4) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s_1 = 0u;
@@ -1716,9 +1770,9 @@ void render_pixel(uvec2 pixel_3) {
             break;
         }
         uint _e18 = s_1;
-        uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_3, sample_3, frame_5.seed);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_4, sample_4, frame_5.seed);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
         ray_27 = _e23;
         ray_27.depth = 0u;
         ray_27.kind = RAY_CAMERA;
@@ -1745,10 +1799,10 @@ void render_pixel(uvec2 pixel_3) {
     vec4 _e62 = vec4(_e59, float(frame_5.samples_per_pass));
     uint _e63 = bad;
     if ((tile_2.frame == 0u)) {
-        _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = _e62;
+        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
     } else {
-        vec4 _e69 = _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)];
-        _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = (_e69 + _e62);
+        vec4 _e69 = _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
+        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
     }
     if ((_e63 > 0u)) {
         atomicAdd(_group_0_binding_9_cs[0], _e63);

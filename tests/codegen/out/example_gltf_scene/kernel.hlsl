@@ -196,6 +196,9 @@ static const uint WORKGROUP_WIDTH = 8u;
 static const uint WORKGROUP_HEIGHT = 8u;
 static const uint NO_HIT = 4294967295u;
 static const uint SCATTER = 1000003u;
+static const uint SCRATCH_RNG_INDEX = 12u;
+static const uint SCRATCH_RNG_SEED = 13u;
+static const uint HALF_WORD_BITS = 16u;
 static const uint RAY_CAMERA = 0u;
 static const bool HAS_MEDIA = false;
 static const uint MEDIUM_ENTRY_STRIDE = 1u;
@@ -231,7 +234,7 @@ static const uint SCRATCH_QUERY = 2u;
 static const uint SCRATCH_PENDING = 4u;
 static const uint LIGHT_QUERIES = 32u;
 static const uint COUNTER_SHADOW_OVERFLOW = 3u;
-static const uint SCRATCH_LIGHT_QUERY = 12u;
+static const uint SCRATCH_LIGHT_QUERY = 14u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const float INV_PI = 0.31830987;
 static const uint FLAG_MEDIUM = 4u;
@@ -243,6 +246,7 @@ static const uint RAY_SECONDARY = 1u;
 
 cbuffer tile : register(b1) { TileParams tile; }
 cbuffer frame : register(b0) { FrameUniforms frame; }
+static uint scratch[24] = (uint[24])0;
 static uint rng_state = (uint)0;
 ByteAddressBuffer params : register(t6);
 static uint F32_INF = 2139095040u;
@@ -254,7 +258,6 @@ ByteAddressBuffer attributes : register(t5);
 ByteAddressBuffer texels : register(t7);
 static uint traversal_stack[128] = (uint[128])0;
 static uint ray_count = (uint)0;
-static uint scratch[22] = (uint[22])0;
 RWByteAddressBuffer counters : register(u9);
 static float3 spawn_dirs[1] = (float3[1])0;
 static float3 spawn_weights[1] = (float3[1])0;
@@ -327,26 +330,25 @@ uint2 scattered_local(uint2 id)
 
 uint pcg_hash(uint x)
 {
-    uint state = ((x * 747796405u) + 2891336453u);
-    uint word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    uint state_1 = ((x * 747796405u) + 2891336453u);
+    uint word = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
     return ((word >> 22u) ^ word);
 }
 
-void rng_seed(uint2 pixel, uint sample_, uint seed)
+void rng_resume(uint2 pixel, uint sample_, uint seed, uint state)
 {
-    uint h = (uint)0;
+    scratch[min(uint(min(SCRATCH_RNG_INDEX, 23u)), 23u)] = sample_;
+    const uint _e12 = pcg_hash(seed);
+    const uint _e14 = pcg_hash((pixel.y ^ _e12));
+    const uint _e16 = pcg_hash((pixel.x ^ _e14));
+    scratch[min(uint(min(SCRATCH_RNG_SEED, 23u)), 23u)] = _e16;
+    rng_state = state;
+    return;
+}
 
-    const uint _e5 = pcg_hash(seed);
-    const uint _e7 = pcg_hash((sample_ ^ _e5));
-    const uint _e9 = pcg_hash((pixel.y ^ _e7));
-    const uint _e11 = pcg_hash((pixel.x ^ _e9));
-    h = _e11;
-    uint _e13 = h;
-    if ((_e13 == 0u)) {
-        h = 1u;
-    }
-    uint _e17 = h;
-    rng_state = _e17;
+void rng_seed(uint2 pixel_1, uint sample_1, uint seed_1)
+{
+    rng_resume(pixel_1, sample_1, seed_1, 0u);
     return;
 }
 
@@ -387,14 +389,71 @@ uint samples_per_pixel_query()
     return _e1.total_samples;
 }
 
+uint laine_karras(uint x_1, uint seed_2)
+{
+    uint v = (uint)0;
+
+    v = (x_1 + seed_2);
+    uint _e4 = v;
+    uint _e5 = v;
+    v = (_e4 ^ (_e5 * 1817228412u));
+    uint _e9 = v;
+    uint _e10 = v;
+    v = (_e9 ^ (_e10 * 3090095698u));
+    uint _e14 = v;
+    uint _e15 = v;
+    v = (_e14 ^ (_e15 * 3350193720u));
+    uint _e19 = v;
+    uint _e20 = v;
+    v = (_e19 ^ (_e20 * 2367878886u));
+    uint _e24 = v;
+    return _e24;
+}
+
+uint sobol_second_reversed(uint i)
+{
+    uint f = (uint)0;
+
+    f = i;
+    uint _e2 = f;
+    uint _e3 = f;
+    f = (_e2 ^ ((_e3 >> 1u) & 1431655765u));
+    uint _e9 = f;
+    uint _e10 = f;
+    f = (_e9 ^ ((_e10 >> 2u) & 858993459u));
+    uint _e16 = f;
+    uint _e17 = f;
+    f = (_e16 ^ ((_e17 >> 4u) & 252645135u));
+    uint _e23 = f;
+    uint _e24 = f;
+    f = (_e23 ^ ((_e24 >> 8u) & 16711935u));
+    uint _e30 = f;
+    uint _e31 = f;
+    f = (_e30 ^ (_e31 >> (HALF_WORD_BITS & 31u)));
+    uint _e37 = f;
+    return _e37;
+}
+
 float rand_next()
 {
-    uint _e1 = rng_state;
-    uint s_2 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_2;
-    uint word_1 = (((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u);
-    uint r_3 = ((word_1 >> 22u) ^ word_1);
-    return (float((r_3 >> 8u)) * (1.0 / 16777216.0));
+    uint x_2 = (uint)0;
+
+    uint d_1 = rng_state;
+    rng_state = (d_1 + 1u);
+    uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 23u)), 23u)];
+    const uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 23u)), 23u)];
+    const uint _e24 = laine_karras(reversebits(_e22), _e16);
+    uint i_7 = reversebits(_e24);
+    x_2 = i_7;
+    if (((d_1 & 1u) != 0u)) {
+        const uint _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    uint _e45 = x_2;
+    const uint _e46 = laine_karras(_e45, scramble);
+    return (float((reversebits(_e46) >> 8u)) * (1.0 / 16777216.0));
 }
 
 float2 rand2_next()
@@ -404,9 +463,9 @@ float2 rand2_next()
     return float2(_e0, _e1);
 }
 
-float3 normalize_vec3f(float3 v)
+float3 normalize_vec3f(float3 v_1)
 {
-    return ((dot(v, v) >= 1.1754944e-38) ? normalize(v) : (0.0).xxx);
+    return ((dot(v_1, v_1) >= 1.1754944e-38) ? normalize(v_1) : (0.0).xxx);
 }
 
 Ray ConstructRay(float3 arg0, float arg1, float3 arg2, float arg3, uint arg4, uint arg5, uint arg6) {
@@ -421,7 +480,7 @@ Ray ConstructRay(float3 arg0, float arg1, float3 arg2, float arg3, uint arg4, ui
     return ret;
 }
 
-Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
+Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
 {
     float2 jitter = (float2)0;
 
@@ -434,22 +493,22 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
         jitter = _e10;
     }
     float2 _e12 = jitter;
-    float2 ndc = ((((float2(pixel_1) + _e12) / size_1) * (2.0).xx) - (1.0).xx);
+    float2 ndc = ((((float2(pixel_2) + _e12) / size_1) * (2.0).xx) - (1.0).xx);
     const float3 _e24 = normalize_vec3f((cam.look_at - cam.position));
     const float3 _e27 = normalize_vec3f(cross(_e24, cam.up));
     float3 up = cross(_e27, _e24);
-    float h_2 = tan((radians(cam.fov) * 0.5));
+    float h_1 = tan((radians(cam.fov) * 0.5));
     float aspect = (size_1.x / size_1.y);
-    const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_2) * aspect)).xxx)) - (up * ((ndc.y * h_2)).xxx)));
+    const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
     uint _e52 = F32_INF;
     const Ray ray_28 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
     return ray_28;
 }
 
-Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
+Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
-    const Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
+    const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
     const Ray ray_29 = _e4;
     return ray_29;
 }
@@ -476,9 +535,9 @@ Ray to_object(GpuInstance inst, Ray ray)
 
     r = ray;
     float4 o = float4(ray.origin, 1.0);
-    float4 d_1 = float4(ray.dir, 0.0);
+    float4 d_2 = float4(ray.dir, 0.0);
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
+    r.dir = float3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
     const Ray ray_30 = _e25;
     return ray_30;
@@ -487,8 +546,8 @@ Ray to_object(GpuInstance inst, Ray ray)
 float3 safe_inverse(float3 d)
 {
     float3 tiny = (1.1754944e-38).xxx;
-    float3 s_3 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny) ? (s_3 * tiny) : d);
+    float3 s_2 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 dd = ((abs(d) < tiny) ? (s_2 * tiny) : d);
     return ((1.0).xxx / dd);
 }
 
@@ -505,19 +564,19 @@ TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, f
 
 TriangleRay prepare_triangle_ray(Ray ray_1)
 {
-    float3 d_2 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
-    float3 ad = abs(d_2);
+    float3 d_3 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
+    float3 ad = abs(d_3);
     bool y_gt = (ad.y > ad.x);
     uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
     uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
     uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
-    float dz = d_2[min(uint(min(kz, 2u)), 2u)];
+    float dz = d_3[min(uint(min(kz, 2u)), 2u)];
     bool flip = (dz < 0.0);
     uint kx = (flip ? ky0_ : kx0_);
     uint ky = (flip ? kx0_ : ky0_);
     uint3 inf_bits = (2139095040u).xxx;
-    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_2) & (2147483647u).xxx) < inf_bits)));
-    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_2[min(uint(min(kx, 2u)), 2u)] / dz), (d_2[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_3) & (2147483647u).xxx) < inf_bits)));
+    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_3[min(uint(min(kx, 2u)), 2u)] / dz), (d_3[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
     return triangleray;
 }
 
@@ -536,15 +595,15 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float cx = (c_8[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_8[min(uint(min(r_1.kz, 2u)), 2u)]));
     float cy = (c_8[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_8[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u = ((cx * by) - (cy * bx));
-    float v_2 = ((ax * cy) - (ay * cx));
+    float v_3 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
-    bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
-    float det = ((u + v_2) + w);
+    bool outside = ((((u < 0.0) || (v_3 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_3 > 0.0)) || (w > 0.0)));
+    float det = ((u + v_3) + w);
     float rcp_ = (1.0 / det);
-    float t_6 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_8[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_6 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_3 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_8[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_13 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_13 ? float3(t_6, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_13 ? float3(t_6, (v_3 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 Triangle ConstructTriangle(float3 arg0, float3 arg1, float3 arg2) {
@@ -618,9 +677,9 @@ float3 decode_octahedral(uint bits)
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         float3 _e21 = n_1;
-        float2 s_4 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
+        float2 s_3 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
         float3 _e29 = n_1;
-        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_4);
+        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_3);
         float _e37 = n_1.z;
         n_1 = float3(xy.x, xy.y, _e37);
     }
@@ -756,9 +815,9 @@ int naga_f2i32(float value) {
     return int(clamp(value, -2147483600.0, 2147483500.0));
 }
 
-int i32_from_f32_(float x_1)
+int i32_from_f32_(float x_3)
 {
-    return (((asuint(x_1) & 2147483647u) > 2139095040u) ? int(0) : naga_f2i32(min(max(x_1, -2147483600.0), 2147483500.0)));
+    return (((asuint(x_3) & 2147483647u) > 2139095040u) ? int(0) : naga_f2i32(min(max(x_3, -2147483600.0), 2147483500.0)));
 }
 
 int naga_div(int lhs, int rhs) {
@@ -772,15 +831,15 @@ int rem_i32_(int a_4, int b_4)
     return (by_zero_4 ? int(0) : asint(asuint(a_4) - asuint(asint(asuint(divisor_4) * asuint(naga_div(a_4, divisor_4))))));
 }
 
-int wrap_texel(int x_2, int n_2, uint mode)
+int wrap_texel(int x_4, int n_2, uint mode)
 {
-    const int _e3 = rem_i32_(x_2, n_2);
+    const int _e3 = rem_i32_(x_4, n_2);
     const int _e5 = rem_i32_(asint(asuint(_e3) + asuint(n_2)), n_2);
-    const int _e8 = rem_i32_(x_2, asint(asuint(int(2)) * asuint(n_2)));
+    const int _e8 = rem_i32_(x_4, asint(asuint(int(2)) * asuint(n_2)));
     const int _e14 = rem_i32_(asint(asuint(_e8) + asuint(asint(asuint(int(2)) * asuint(n_2)))), asint(asuint(int(2)) * asuint(n_2)));
     int mirror = ((_e14 >= n_2) ? asint(asuint(asint(asuint(asint(asuint(int(2)) * asuint(n_2))) - asuint(int(1)))) - asuint(_e14)) : _e14);
     int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5);
-    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_2, int(0)), asint(asuint(n_2) - asuint(int(1)))) : wrapped);
+    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_4, int(0)), asint(asuint(n_2) - asuint(int(1)))) : wrapped);
 }
 
 float srgb_channel(float c_2)
@@ -827,10 +886,10 @@ float4 sample_texture(uint t_1, float2 uv)
     uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
     float2 q_3 = (uv * float2(float(wi), float(hi_1)));
     float2 p_7 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_3) : (q_3 - (0.5).xx));
-    float2 f_1 = floor(p_7);
-    float2 fr = (p_7 - f_1);
-    const int _e47 = i32_from_f32_(f_1.x);
-    const int _e49 = i32_from_f32_(f_1.y);
+    float2 f_2 = floor(p_7);
+    float2 fr = (p_7 - f_2);
+    const int _e47 = i32_from_f32_(f_2.x);
+    const int _e49 = i32_from_f32_(f_2.y);
     const int _e50 = wrap_texel(_e47, wi, mu);
     uint x0_ = uint(_e50);
     const int _e54 = wrap_texel(asint(asuint(_e47) + asuint(int(1))), wi, mu);
@@ -854,30 +913,30 @@ uint frame_index_query()
     return _e1.frame;
 }
 
-uint gltf_pcg(uint x_3)
+uint gltf_pcg(uint x_5)
 {
-    uint state_1 = ((x_3 * 747796405u) + 2891336453u);
-    uint word_2 = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
-    return ((word_2 >> 22u) ^ word_2);
+    uint state_2 = ((x_5 * 747796405u) + 2891336453u);
+    uint word_1 = (((state_2 >> (((state_2 >> 28u) + 4u) & 31u)) ^ state_2) * 277803737u);
+    return ((word_1 >> 22u) ^ word_1);
 }
 
 float gltf_coverage(Ray ray_5, Hit hit_1)
 {
-    uint h_1 = (uint)0;
+    uint h = (uint)0;
 
     uint3 o_1 = asuint(ray_5.origin);
-    uint3 d_3 = asuint(ray_5.dir);
-    h_1 = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u));
-    uint _e20 = h_1;
-    h_1 = (((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
-    uint _e33 = h_1;
+    uint3 d_4 = asuint(ray_5.dir);
+    h = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_4.x * 3266489909u));
+    uint _e20 = h;
+    h = (((_e20 ^ (d_4.y * 668265263u)) ^ (d_4.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
+    uint _e33 = h;
     const uint _e38 = frame_index_query();
-    h_1 = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
-    uint _e42 = h_1;
+    h = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
+    uint _e42 = h;
     const uint _e43 = gltf_pcg(_e42);
     const uint _e44 = gltf_pcg(_e43);
-    h_1 = _e44;
-    uint _e45 = h_1;
+    h = _e44;
+    uint _e45 = h;
     return (float((_e45 >> 8u)) * (1.0 / 16777216.0));
 }
 
@@ -1132,7 +1191,7 @@ uint medium_at(float3 p_4, uint exclude)
 {
     uint inside = (uint)0;
     float nearest = (float)0;
-    uint i = (uint)0;
+    uint i_1 = (uint)0;
 
     if (!(HAS_MEDIA)) {
         return 0u;
@@ -1145,22 +1204,22 @@ uint medium_at(float3 p_4, uint exclude)
     uint _e23 = F32_INF;
     nearest = asfloat(_e23);
     uint end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e59 = i;
-            i = (_e59 + 1u);
+            uint _e59 = i_1;
+            i_1 = (_e59 + 1u);
         }
         loop_init_1 = false;
-        uint _e29 = i;
+        uint _e29 = i_1;
         if ((_e29 >= end)) {
             break;
         }
-        uint _e32 = i;
+        uint _e32 = i_1;
         uint slot_4 = asuint(params.Load((frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))*4));
         if ((slot_4 != exclude)) {
             uint _e41 = F32_INF;
@@ -1380,37 +1439,37 @@ DirectionalLight load_DirectionalLight(uint offset_6)
     return directionallight;
 }
 
-void scratch_store3f(uint i_1, float3 v_1)
+void scratch_store3f(uint i_2, float3 v_2)
 {
-    uint3 b_9 = asuint(v_1);
-    scratch[min(uint(min(i_1, 21u)), 21u)] = b_9.x;
-    scratch[min(uint(min((i_1 + 1u), 21u)), 21u)] = b_9.y;
-    scratch[min(uint(min((i_1 + 2u), 21u)), 21u)] = b_9.z;
+    uint3 b_9 = asuint(v_2);
+    scratch[min(uint(min(i_2, 23u)), 23u)] = b_9.x;
+    scratch[min(uint(min((i_2 + 1u), 23u)), 23u)] = b_9.y;
+    scratch[min(uint(min((i_2 + 2u), 23u)), 23u)] = b_9.z;
     return;
 }
 
 float shadow_deferred(float3 position, float3 normal, float3 dir, float dist)
 {
-    uint i_6 = scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)];
-    scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)] = (i_6 + 1u);
-    uint _e22 = scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)];
-    if ((i_6 < _e22)) {
-        uint _e29 = scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)];
-        return float(((_e29 >> (i_6 & 31u)) & 1u));
+    uint i_8 = scratch[min(uint(min(SCRATCH_QUERY, 23u)), 23u)];
+    scratch[min(uint(min(SCRATCH_QUERY, 23u)), 23u)] = (i_8 + 1u);
+    uint _e22 = scratch[min(uint(min(SCRATCH_RESOLVED, 23u)), 23u)];
+    if ((i_8 < _e22)) {
+        uint _e29 = scratch[min(uint(min(SCRATCH_LIGHT_BITS, 23u)), 23u)];
+        return float(((_e29 >> (i_8 & 31u)) & 1u));
     }
-    uint _e41 = scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)];
+    uint _e41 = scratch[min(uint(min(SCRATCH_PENDING, 23u)), 23u)];
     if ((_e41 != 0u)) {
         return 1.0;
     }
-    if ((i_6 >= LIGHT_QUERIES)) {
+    if ((i_8 >= LIGHT_QUERIES)) {
         counters.InterlockedAdd(min(COUNTER_SHADOW_OVERFLOW, 3u)*4, 1u);
         return 1.0;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 21u)), 21u)] = asuint(dist);
-    scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)] = 1u;
+    scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 23u)), 23u)] = asuint(dist);
+    scratch[min(uint(min(SCRATCH_PENDING, 23u)), 23u)] = 1u;
     return 1.0;
 }
 
@@ -1509,28 +1568,28 @@ LightSample dispatch_light(uint type_id_3, uint offset_8, float3 position_3, flo
     return lightsample_5;
 }
 
-float3 scratch_load3f(uint i_2)
+float3 scratch_load3f(uint i_3)
 {
-    uint _e5 = scratch[min(uint(min(i_2, 21u)), 21u)];
-    uint _e12 = scratch[min(uint(min((i_2 + 1u), 21u)), 21u)];
-    uint _e19 = scratch[min(uint(min((i_2 + 2u), 21u)), 21u)];
+    uint _e5 = scratch[min(uint(min(i_3, 23u)), 23u)];
+    uint _e12 = scratch[min(uint(min((i_3 + 1u), 23u)), 23u)];
+    uint _e19 = scratch[min(uint(min((i_3 + 2u), 23u)), 23u)];
     return asfloat(uint3(_e5, _e12, _e19));
 }
 
-float3 step_toward(float3 x_4, float3 s)
+float3 step_toward(float3 x_6, float3 s)
 {
-    uint3 bits_2 = asuint(x_4);
-    bool3 up_1 = ((sign(x_4) * sign(s)) > (0.0).xxx);
+    uint3 bits_2 = asuint(x_6);
+    bool3 up_1 = ((sign(x_6) * sign(s)) > (0.0).xxx);
     float3 stepped = asfloat((up_1 ? (bits_2 + (1u).xxx) : (bits_2 - (1u).xxx)));
     float3 from_zero = ((s > (0.0).xxx) ? (1.1754944e-38).xxx : (-1.1754944e-38).xxx);
-    float3 moved = ((x_4 == (0.0).xxx) ? from_zero : stepped);
-    return (!((s == (0.0).xxx)) ? moved : x_4);
+    float3 moved = ((x_6 == (0.0).xxx) ? from_zero : stepped);
+    return (!((s == (0.0).xxx)) ? moved : x_6);
 }
 
 float3 offset_origin(float3 p_5, float3 n_4, float error)
 {
-    float d_4 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    float3 offset_13 = (n_4 * (d_4).xxx);
+    float d_5 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    float3 offset_13 = (n_4 * (d_5).xxx);
     const float3 _e17 = step_toward((p_5 + offset_13), offset_13);
     return _e17;
 }
@@ -1573,35 +1632,35 @@ float shadow_query(float3 position_5, float3 normal_5, float3 dir_2, float dist_
     return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample sample_light_deferred(uint i_3, float3 position_6, float3 normal_6)
+LightSample sample_light_deferred(uint i_4, float3 position_6, float3 normal_6)
 {
     uint after = (uint)0;
     uint resolved = (uint)0;
     uint bits_1 = (uint)0;
 
     FrameUniforms frame_4 = frame;
-    if ((i_3 >= frame_4.light_count)) {
+    if ((i_4 >= frame_4.light_count)) {
         const LightSample lightsample_6 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_6;
     }
-    uint entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     uint type_id_7 = asuint(params.Load(entry*4));
     uint offset_14 = asuint(params.Load((entry + 1u)*4));
     uint start = rng_state;
     after = start;
     resolved = 0u;
     bits_1 = 0u;
-    scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)] = 0u;
-    scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)] = 0u;
+    scratch[min(uint(min(SCRATCH_RESOLVED, 23u)), 23u)] = 0u;
+    scratch[min(uint(min(SCRATCH_LIGHT_BITS, 23u)), 23u)] = 0u;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         rng_state = start;
-        scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)] = 0u;
-        scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)] = 0u;
+        scratch[min(uint(min(SCRATCH_QUERY, 23u)), 23u)] = 0u;
+        scratch[min(uint(min(SCRATCH_PENDING, 23u)), 23u)] = 0u;
         const LightSample _e60 = dispatch_light(type_id_7, offset_14, position_6, normal_6);
-        uint _e66 = scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)];
+        uint _e66 = scratch[min(uint(min(SCRATCH_PENDING, 23u)), 23u)];
         if ((_e66 == 0u)) {
             uint _e69 = resolved;
             if ((_e69 > 0u)) {
@@ -1621,12 +1680,12 @@ LightSample sample_light_deferred(uint i_3, float3 position_6, float3 normal_6)
         const float3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
         const float3 _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
         const float3 _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        uint _e95 = scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 21u)), 21u)];
+        uint _e95 = scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 23u)), 23u)];
         const float _e97 = shadow_query(_e82, _e85, _e88, asfloat(_e95));
         uint _e99 = rng_state;
         after = _e99;
         if (!((_e97 == 0.0))) {
-            uint _e108 = scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)];
+            uint _e108 = scratch[min(uint(min(SCRATCH_QUERY, 23u)), 23u)];
             uint _e109 = resolved;
             if ((_e108 == (_e109 + 1u))) {
                 uint _e113 = after;
@@ -1641,9 +1700,9 @@ LightSample sample_light_deferred(uint i_3, float3 position_6, float3 normal_6)
         uint _e122 = resolved;
         resolved = (_e122 + 1u);
         uint _e126 = bits_1;
-        scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)] = _e126;
+        scratch[min(uint(min(SCRATCH_LIGHT_BITS, 23u)), 23u)] = _e126;
         uint _e132 = resolved;
-        scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)] = _e132;
+        scratch[min(uint(min(SCRATCH_RESOLVED, 23u)), 23u)] = _e132;
     }
     const LightSample lightsample_9 = ZeroValueLightSample();
     return lightsample_9;
@@ -1658,8 +1717,8 @@ float3 pbr_fresnel(float3 f0_, float c_4)
 
 float pbr_ggx_d(float ndh, float a2_)
 {
-    float d_5 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
-    return ((a2_ * INV_PI) / (d_5 * d_5));
+    float d_6 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
+    return ((a2_ * INV_PI) / (d_6 * d_6));
 }
 
 float pbr_smith_v(float ndl, float ndv, float a2_1)
@@ -1672,37 +1731,37 @@ float pbr_smith_v(float ndl, float ndv, float a2_1)
 float3 gltf_radiance(float3 c_5, float metallic, float roughness_1, float occlusion, float3 emissive, Ray ray_18, Hit hit_6)
 {
     float3 color = (float3)0;
-    uint i_4 = (uint)0;
+    uint i_5 = (uint)0;
 
     const float3 _e7 = shading_normal(ray_18, hit_6);
     const float3 _e9 = normalize_vec3f(ray_18.dir);
-    float3 v_3 = -(_e9);
+    float3 v_4 = -(_e9);
     float metal = saturate(metallic);
     const float _e12 = pbr_alpha2_(roughness_1);
     float3 f0_1 = lerp((0.04).xxx, c_5, (metal).xxx);
-    float ndv_1 = max(dot(_e7, v_3), 0.0001);
+    float ndv_1 = max(dot(_e7, v_4), 0.0001);
     color = emissive;
     const uint _e22 = light_count_query();
-    i_4 = 0u;
+    i_5 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e65 = i_4;
-            i_4 = (_e65 + 1u);
+            uint _e65 = i_5;
+            i_5 = (_e65 + 1u);
         }
         loop_init_2 = false;
-        uint _e24 = i_4;
+        uint _e24 = i_5;
         if ((_e24 >= _e22)) {
             break;
         }
-        uint _e26 = i_4;
+        uint _e26 = i_5;
         const LightSample _e29 = sample_light_deferred(_e26, hit_6.position, hit_6.geometric_normal);
         float ndl_1 = max(dot(_e7, _e29.dir), 0.0);
-        const float3 _e36 = normalize_vec3f((_e29.dir + v_3));
-        const float3 _e38 = pbr_fresnel(f0_1, dot(v_3, _e36));
+        const float3 _e36 = normalize_vec3f((_e29.dir + v_4));
+        const float3 _e38 = pbr_fresnel(f0_1, dot(v_4, _e36));
         const float _e41 = pbr_ggx_d(saturate(dot(_e7, _e36)), _e12);
         const float _e42 = pbr_smith_v(ndl_1, ndv_1, _e12);
         float3 spec = (_e38 * ((_e41 * _e42)).xxx);
@@ -1879,8 +1938,8 @@ float3 trace(Ray camera_ray)
     float3 radiance_3 = (float3)0;
     float t_5 = (float)0;
     Hit hit_12 = (Hit)0;
-    Frame f = (Frame)0;
-    uint i_5 = (uint)0;
+    Frame f_1 = (Frame)0;
+    uint i_6 = (uint)0;
     uint medium = (uint)0;
 
     if (!(HAS_SECONDARY_RAYS)) {
@@ -1979,33 +2038,33 @@ float3 trace(Ray camera_ray)
                         Hit _e142 = hit_12;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_9, 0u);
-                        i_5 = 0u;
+                        f_1 = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_9, 0u);
+                        i_6 = 0u;
                         uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
                         bool loop_init_3 = true;
                         while(true) {
                             if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
                             loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                             if (!loop_init_3) {
-                                uint _e175 = i_5;
-                                i_5 = (_e175 + 1u);
+                                uint _e175 = i_6;
+                                i_6 = (_e175 + 1u);
                             }
                             loop_init_3 = false;
-                            uint _e155 = i_5;
+                            uint _e155 = i_6;
                             if ((_e155 >= n_9)) {
                                 break;
                             }
-                            uint _e158 = i_5;
-                            uint _e162 = i_5;
+                            uint _e158 = i_6;
+                            uint _e162 = i_6;
                             float3 _e165 = spawn_dirs[min(uint(_e162), 0u)];
-                            f.dirs[min(uint(min(_e158, 0u)), 0u)] = _e165;
-                            uint _e167 = i_5;
-                            uint _e171 = i_5;
+                            f_1.dirs[min(uint(min(_e158, 0u)), 0u)] = _e165;
+                            uint _e167 = i_6;
+                            uint _e171 = i_6;
                             float3 _e174 = spawn_weights[min(uint(_e171), 0u)];
-                            f.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
+                            f_1.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
                         }
                         uint _e178 = depth;
-                        Frame _e182 = f;
+                        Frame _e182 = f_1;
                         stack[min(uint(min(_e178, 3u)), 3u)] = _e182;
                         uint _e183 = depth;
                         depth = (_e183 + 1u);
@@ -2053,11 +2112,11 @@ float3 trace(Ray camera_ray)
         uint _e241 = stack[min(uint(min(top_1, 3u)), 3u)].next;
         uint _e246 = stack[min(uint(min(top_1, 3u)), 3u)].count;
         if ((_e241 < _e246)) {
-            uint i_7 = stack[min(uint(min(top_1, 3u)), 3u)].next;
-            stack[min(uint(min(top_1, 3u)), 3u)].next = (i_7 + 1u);
+            uint i_9 = stack[min(uint(min(top_1, 3u)), 3u)].next;
+            stack[min(uint(min(top_1, 3u)), 3u)].next = (i_9 + 1u);
             Ray parent = stack[min(uint(min(top_1, 3u)), 3u)].ray;
             Hit hit_15 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
-            float3 dir_7 = stack[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_7, 0u)), 0u)];
+            float3 dir_7 = stack[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_9, 0u)), 0u)];
             medium = parent.medium;
             float _e283 = stack[min(uint(min(top_1, 3u)), 3u)].error;
             const float3 _e284 = spawn_origin(hit_15, _e283, dir_7);
@@ -2083,9 +2142,9 @@ float3 trace(Ray camera_ray)
     return ZeroValuefloat3();
 }
 
-bool3 is_finite_vec3f(float3 x_5)
+bool3 is_finite_vec3f(float3 x_7)
 {
-    return ((asuint(x_5) & (2147483647u).xxx) < (2139095040u).xxx);
+    return ((asuint(x_7) & (2147483647u).xxx) < (2139095040u).xxx);
 }
 
 float3 finite_or_zero(float3 c_7)
@@ -2094,7 +2153,7 @@ float3 finite_or_zero(float3 c_7)
     return (_e3 ? c_7 : (0.0).xxx);
 }
 
-void render_pixel(uint2 pixel_3)
+void render_pixel(uint2 pixel_4)
 {
     float3 sum = (float3)0;
     uint bad = (uint)0;
@@ -2122,9 +2181,9 @@ void render_pixel(uint2 pixel_3)
             break;
         }
         uint _e18 = s_1;
-        uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_3, sample_3, frame_5.seed);
-        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_4, sample_4, frame_5.seed);
+        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
         ray_27 = _e23;
         ray_27.depth = 0u;
         ray_27.kind = RAY_CAMERA;
@@ -2151,10 +2210,10 @@ void render_pixel(uint2 pixel_3)
     float4 _e62 = float4(_e59, float(frame_5.samples_per_pass));
     uint _e63 = bad;
     if ((tile_2.frame == 0u)) {
-        accum.Store4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16, asuint(_e62));
+        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint(_e62));
     } else {
-        float4 _e69 = asfloat(accum.Load4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16));
-        accum.Store4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16, asuint((_e69 + _e62)));
+        float4 _e69 = asfloat(accum.Load4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16));
+        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint((_e69 + _e62)));
     }
     if ((_e63 > 0u)) {
         counters.InterlockedAdd(0, _e63);

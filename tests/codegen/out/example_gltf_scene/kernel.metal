@@ -5,12 +5,12 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size3;
-    uint size5;
+    uint size4;
     uint size6;
     uint size7;
-    uint size9;
+    uint size8;
     uint size10;
+    uint size11;
     uint size14;
     uint size18;
 };
@@ -38,6 +38,9 @@ struct FrameUniforms {
     uint background_offset;
     uint path_slots;
 };
+struct type_3 {
+    uint inner[24];
+};
 struct Ray {
     metal::packed_float3 origin;
     float tmin;
@@ -48,7 +51,7 @@ struct Ray {
     uint medium;
     char _pad7[4];
 };
-typedef uint type_4[1];
+typedef uint type_5[1];
 struct Pinhole {
     metal::float3 position;
     metal::float3 look_at;
@@ -80,7 +83,7 @@ struct GpuInstance {
     uint flags;
     uint object;
 };
-typedef GpuInstance type_8[1];
+typedef GpuInstance type_9[1];
 struct TriangleRay {
     metal::packed_float3 origin;
     uint kx;
@@ -97,8 +100,8 @@ struct GpuNode {
     metal::packed_float3 max;
     uint b;
 };
-typedef GpuNode type_9[1];
-typedef metal::float4 type_10[1];
+typedef GpuNode type_10[1];
+typedef metal::float4 type_11[1];
 struct Triangle {
     metal::float3 v0_;
     metal::float3 v1_;
@@ -116,7 +119,7 @@ struct Hit {
     uint primitive;
     char _pad8[12];
 };
-typedef metal::uint4 type_12[1];
+typedef metal::uint4 type_13[1];
 struct GltfMaskedMaterial {
     metal::float4 base_color;
     uint base_texture;
@@ -129,7 +132,7 @@ struct GltfMaskedMaterial {
     uint double_sided;
     char _pad8[8];
 };
-struct type_15 {
+struct type_16 {
     uint inner[128];
 };
 struct SkyGradient {
@@ -142,9 +145,6 @@ struct LightSample {
     float dist;
     metal::packed_float3 radiance;
     float pdf;
-};
-struct type_16 {
-    uint inner[22];
 };
 struct DirectionalLight {
     metal::float3 direction;
@@ -191,6 +191,9 @@ constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint NO_HIT = 4294967295u;
 constant uint SCATTER = 1000003u;
+constant uint SCRATCH_RNG_INDEX = 12u;
+constant uint SCRATCH_RNG_SEED = 13u;
+constant uint HALF_WORD_BITS = 16u;
 constant uint RAY_CAMERA = 0u;
 constant bool HAS_MEDIA = false;
 constant uint MEDIUM_ENTRY_STRIDE = 1u;
@@ -226,7 +229,7 @@ constant uint SCRATCH_QUERY = 2u;
 constant uint SCRATCH_PENDING = 4u;
 constant uint LIGHT_QUERIES = 32u;
 constant uint COUNTER_SHADOW_OVERFLOW = 3u;
-constant uint SCRATCH_LIGHT_QUERY = 12u;
+constant uint SCRATCH_LIGHT_QUERY = 14u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant float INV_PI = 0.31830987;
 constant uint FLAG_MEDIUM = 4u;
@@ -313,35 +316,42 @@ metal::uint2 scattered_local(
 uint pcg_hash(
     uint x
 ) {
-    uint state = (x * 747796405u) + 2891336453u;
-    uint word = ((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u;
+    uint state_1 = (x * 747796405u) + 2891336453u;
+    uint word = ((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u;
     return (word >> 22u) ^ word;
 }
 
-void rng_seed(
+void rng_resume(
     metal::uint2 pixel,
     uint sample,
     uint seed,
+    uint state,
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    uint h = {};
-    uint _e5 = pcg_hash(seed);
-    uint _e7 = pcg_hash(sample ^ _e5);
-    uint _e9 = pcg_hash(pixel.y ^ _e7);
-    uint _e11 = pcg_hash(pixel.x ^ _e9);
-    h = _e11;
-    uint _e13 = h;
-    if (_e13 == 0u) {
-        h = 1u;
-    }
-    uint _e17 = h;
-    rng_state = _e17;
+    scratch.inner[metal::min(SCRATCH_RNG_INDEX, 23u)] = sample;
+    uint _e12 = pcg_hash(seed);
+    uint _e14 = pcg_hash(pixel.y ^ _e12);
+    uint _e16 = pcg_hash(pixel.x ^ _e14);
+    scratch.inner[metal::min(SCRATCH_RNG_SEED, 23u)] = _e16;
+    rng_state = state;
+    return;
+}
+
+void rng_seed(
+    metal::uint2 pixel_1,
+    uint sample_1,
+    uint seed_1,
+    thread type_3& scratch,
+    thread uint& rng_state
+) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u, scratch, rng_state);
     return;
 }
 
 Pinhole load_Pinhole(
     uint offset,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset + 0u];
@@ -371,37 +381,97 @@ uint samples_per_pixel_query(
     return _e1.total_samples;
 }
 
+uint laine_karras(
+    uint x_1,
+    uint seed_2
+) {
+    uint v = {};
+    v = x_1 + seed_2;
+    uint _e4 = v;
+    uint _e5 = v;
+    v = _e4 ^ (_e5 * 1817228412u);
+    uint _e9 = v;
+    uint _e10 = v;
+    v = _e9 ^ (_e10 * 3090095698u);
+    uint _e14 = v;
+    uint _e15 = v;
+    v = _e14 ^ (_e15 * 3350193720u);
+    uint _e19 = v;
+    uint _e20 = v;
+    v = _e19 ^ (_e20 * 2367878886u);
+    uint _e24 = v;
+    return _e24;
+}
+
+uint sobol_second_reversed(
+    uint i
+) {
+    uint f = {};
+    f = i;
+    uint _e2 = f;
+    uint _e3 = f;
+    f = _e2 ^ ((_e3 >> 1u) & 1431655765u);
+    uint _e9 = f;
+    uint _e10 = f;
+    f = _e9 ^ ((_e10 >> 2u) & 858993459u);
+    uint _e16 = f;
+    uint _e17 = f;
+    f = _e16 ^ ((_e17 >> 4u) & 252645135u);
+    uint _e23 = f;
+    uint _e24 = f;
+    f = _e23 ^ ((_e24 >> 8u) & 16711935u);
+    uint _e30 = f;
+    uint _e31 = f;
+    f = _e30 ^ (_e31 >> (HALF_WORD_BITS & 31u));
+    uint _e37 = f;
+    return _e37;
+}
+
 float rand_next(
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    uint _e1 = rng_state;
-    uint s_2 = (_e1 * 747796405u) + 2891336453u;
-    rng_state = s_2;
-    uint word_1 = ((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u;
-    uint r_3 = (word_1 >> 22u) ^ word_1;
-    return static_cast<float>(r_3 >> 8u) * (1.0 / 16777216.0);
+    uint x_2 = {};
+    uint d_1 = rng_state;
+    rng_state = d_1 + 1u;
+    uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 23u)];
+    uint _e16 = pcg_hash(_e10 ^ ((d_1 >> 1u) * 2654435769u));
+    uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 23u)];
+    uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
+    uint i_7 = metal::reverse_bits(_e24);
+    x_2 = i_7;
+    if ((d_1 & 1u) != 0u) {
+        uint _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    uint scramble = _e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
+    uint _e45 = x_2;
+    uint _e46 = laine_karras(_e45, scramble);
+    return static_cast<float>(metal::reverse_bits(_e46) >> 8u) * (1.0 / 16777216.0);
 }
 
 metal::float2 rand2_next(
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    float _e0 = rand_next(rng_state);
-    float _e1 = rand_next(rng_state);
+    float _e0 = rand_next(scratch, rng_state);
+    float _e1 = rand_next(scratch, rng_state);
     return metal::float2(_e0, _e1);
 }
 
 metal::float3 normalize_vec3f(
-    metal::float3 v
+    metal::float3 v_1
 ) {
-    return (metal::dot(v, v) >= 0.000000000000000000000000000000000000011754944) ? metal::normalize(v) : metal::float3(0.0);
+    return (metal::dot(v_1, v_1) >= 0.000000000000000000000000000000000000011754944) ? metal::normalize(v_1) : metal::float3(0.0);
 }
 
 Ray pinhole_ray(
     Pinhole cam,
-    metal::uint2 pixel_1,
-    uint sample_1,
+    metal::uint2 pixel_2,
+    uint sample_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -411,17 +481,17 @@ Ray pinhole_ray(
     jitter = metal::float2(0.5);
     uint _e7 = samples_per_pixel_query(frame);
     if (_e7 > 1u) {
-        metal::float2 _e10 = rand2_next(rng_state);
+        metal::float2 _e10 = rand2_next(scratch, rng_state);
         jitter = _e10;
     }
     metal::float2 _e12 = jitter;
-    metal::float2 ndc = (((static_cast<metal::float2>(pixel_1) + _e12) / size_1) * metal::float2(2.0)) - metal::float2(1.0);
+    metal::float2 ndc = (((static_cast<metal::float2>(pixel_2) + _e12) / size_1) * metal::float2(2.0)) - metal::float2(1.0);
     metal::float3 _e24 = normalize_vec3f(cam.look_at - cam.position);
     metal::float3 _e27 = normalize_vec3f(metal::cross(_e24, cam.up));
     metal::float3 up = metal::cross(_e27, _e24);
-    float h_2 = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
+    float h_1 = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
     float aspect = size_1.x / size_1.y;
-    metal::float3 _e48 = normalize_vec3f((_e24 + (_e27 * metal::float3((ndc.x * h_2) * aspect))) - (up * metal::float3(ndc.y * h_2)));
+    metal::float3 _e48 = normalize_vec3f((_e24 + (_e27 * metal::float3((ndc.x * h_1) * aspect))) - (up * metal::float3(ndc.y * h_1)));
     uint _e52 = F32_INF;
     return Ray {cam.position, 0.0, _e48, as_type<float>(_e52), 0u, 0u, 0u};
 }
@@ -429,17 +499,18 @@ Ray pinhole_ray(
 Ray dispatch_ray_generation(
     uint type_id,
     uint offset_1,
-    metal::uint2 pixel_2,
-    uint sample_2,
+    metal::uint2 pixel_3,
+    uint sample_3,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Pinhole _e3 = load_Pinhole(offset_1, params, _buffer_sizes);
-    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2, tile, frame, rng_state, F32_INF);
+    Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3, tile, frame, scratch, rng_state, F32_INF);
     return _e4;
 }
 
@@ -456,9 +527,9 @@ Ray to_object(
     Ray r = {};
     r = ray;
     metal::float4 o = metal::float4(ray.origin, 1.0);
-    metal::float4 d_1 = metal::float4(ray.dir, 0.0);
+    metal::float4 d_2 = metal::float4(ray.dir, 0.0);
     r.origin = metal::float3(metal::dot(inst.world_to_object_0_, o), metal::dot(inst.world_to_object_1_, o), metal::dot(inst.world_to_object_2_, o));
-    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_1), metal::dot(inst.world_to_object_1_, d_1), metal::dot(inst.world_to_object_2_, d_1));
+    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_2), metal::dot(inst.world_to_object_1_, d_2), metal::dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
     return _e25;
 }
@@ -467,27 +538,27 @@ metal::float3 safe_inverse(
     metal::float3 d
 ) {
     metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_3 * tiny, metal::abs(d) < tiny);
+    metal::float3 s_2 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_2 * tiny, metal::abs(d) < tiny);
     return metal::float3(1.0) / dd;
 }
 
 TriangleRay prepare_triangle_ray(
     Ray ray_1
 ) {
-    metal::float3 d_2 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
-    metal::float3 ad = metal::abs(d_2);
+    metal::float3 d_3 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 ad = metal::abs(d_3);
     bool y_gt = ad.y > ad.x;
     uint kz = (ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u);
     uint kx0_ = (kz == 2u) ? 0u : (kz + 1u);
     uint ky0_ = (kz >= 1u) ? (kz - 1u) : (kz + 2u);
-    float dz = d_2[metal::min(kz, 2u)];
+    float dz = d_3[metal::min(kz, 2u)];
     bool flip = dz < 0.0;
     uint kx = flip ? ky0_ : kx0_;
     uint ky = flip ? kx0_ : ky0_;
     metal::uint3 inf_bits = metal::uint3(2139095040u);
-    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_2) & metal::uint3(2147483647u)) < inf_bits);
-    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_2[metal::min(kx, 2u)] / dz, d_2[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
+    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_3) & metal::uint3(2147483647u)) < inf_bits);
+    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_3[metal::min(kx, 2u)] / dz, d_3[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
 }
 
 metal::float3 hit_triangle(
@@ -496,7 +567,7 @@ metal::float3 hit_triangle(
     float tmin,
     float tmax_1,
     thread uint& F32_INF,
-    device type_10 const& triangles,
+    device type_11 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e8 = triangles[slot * 3u];
@@ -512,20 +583,20 @@ metal::float3 hit_triangle(
     float cx = c_8[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_8[metal::min(r_1.kz, 2u)]);
     float cy = c_8[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_8[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
-    float v_2 = (ax * cy) - (ay * cx);
+    float v_3 = (ax * cy) - (ay * cx);
     float w = (bx * ay) - (by * ax);
-    bool outside = (((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0));
-    float det = (u + v_2) + w;
+    bool outside = (((u < 0.0) || (v_3 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_3 > 0.0)) || (w > 0.0));
+    float det = (u + v_3) + w;
     float rcp = 1.0 / det;
-    float t_6 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_8[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_6 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_3 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_8[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_13 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_13 ? metal::float3(t_6, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_13 ? metal::float3(t_6, v_3 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 Triangle load_triangle(
     uint slot_1,
-    device type_10 const& triangles,
+    device type_11 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 v0_1 = triangles[slot_1 * 3u];
@@ -554,7 +625,7 @@ bool culled(
     GpuInstance inst_2,
     Ray ray_3,
     Candidate c,
-    device type_10 const& triangles,
+    device type_11 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Triangle _e4 = load_triangle(c.primitive, triangles, _buffer_sizes);
@@ -606,9 +677,9 @@ metal::float3 decode_octahedral(
     float _e14 = n_1.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n_1;
-        metal::float2 s_4 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float2 s_3 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
         metal::float3 _e29 = n_1;
-        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_4;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_3;
         float _e37 = n_1.z;
         n_1 = metal::float3(xy.x, xy.y, _e37);
     }
@@ -620,10 +691,10 @@ metal::float3 decode_octahedral(
 Hit finish_hit(
     Ray ray_4,
     Candidate c_1,
-    device type_8 const& instances,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
+    device type_13 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Hit hit = {};
@@ -680,7 +751,7 @@ Hit finish_hit(
 
 GltfMaskedMaterial load_GltfMaskedMaterial(
     uint offset_2,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_2 + 0u];
@@ -704,9 +775,9 @@ int naga_f2i32(float value) {
 }
 
 int i32_from_f32_(
-    float x_1
+    float x_3
 ) {
-    return ((as_type<uint>(x_1) & 2147483647u) > 2139095040u) ? 0 : naga_f2i32(metal::min(metal::max(x_1, -2147483600.0), 2147483500.0));
+    return ((as_type<uint>(x_3) & 2147483647u) > 2139095040u) ? 0 : naga_f2i32(metal::min(metal::max(x_3, -2147483600.0), 2147483500.0));
 }
 
 int naga_div(int lhs, int rhs) {
@@ -723,17 +794,17 @@ int rem_i32_(
 }
 
 int wrap_texel(
-    int x_2,
+    int x_4,
     int n_2,
     uint mode
 ) {
-    int _e3 = rem_i32_(x_2, n_2);
+    int _e3 = rem_i32_(x_4, n_2);
     int _e5 = rem_i32_(as_type<int>(as_type<uint>(_e3) + as_type<uint>(n_2)), n_2);
-    int _e8 = rem_i32_(x_2, as_type<int>(as_type<uint>(2) * as_type<uint>(n_2)));
+    int _e8 = rem_i32_(x_4, as_type<int>(as_type<uint>(2) * as_type<uint>(n_2)));
     int _e14 = rem_i32_(as_type<int>(as_type<uint>(_e8) + as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_2)))), as_type<int>(as_type<uint>(2) * as_type<uint>(n_2)));
     int mirror = (_e14 >= n_2) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_2))) - as_type<uint>(1))) - as_type<uint>(_e14)) : _e14;
     int wrapped = (mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5;
-    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(x_2, 0), as_type<int>(as_type<uint>(n_2) - as_type<uint>(1))) : wrapped;
+    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(x_4, 0), as_type<int>(as_type<uint>(n_2) - as_type<uint>(1))) : wrapped;
 }
 
 float srgb_channel(
@@ -749,8 +820,8 @@ metal::float4 texel_at(
     uint t,
     uint xi,
     uint yi,
-    device type_4 const& params,
-    device type_4 const& texels,
+    device type_5 const& params,
+    device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint base_1 = params[t];
@@ -779,8 +850,8 @@ metal::float4 texel_at(
 metal::float4 sample_texture(
     uint t_1,
     metal::float2 uv,
-    device type_4 const& params,
-    device type_4 const& texels,
+    device type_5 const& params,
+    device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e6 = params[t_1 + 1u];
@@ -792,10 +863,10 @@ metal::float4 sample_texture(
     uint mv = (sampler >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK;
     metal::float2 q_3 = uv * metal::float2(static_cast<float>(wi), static_cast<float>(hi_1));
     metal::float2 p_7 = ((sampler & TEXTURE_NEAREST) != 0u) ? metal::floor(q_3) : (q_3 - metal::float2(0.5));
-    metal::float2 f_1 = metal::floor(p_7);
-    metal::float2 fr = p_7 - f_1;
-    int _e47 = i32_from_f32_(f_1.x);
-    int _e49 = i32_from_f32_(f_1.y);
+    metal::float2 f_2 = metal::floor(p_7);
+    metal::float2 fr = p_7 - f_2;
+    int _e47 = i32_from_f32_(f_2.x);
+    int _e49 = i32_from_f32_(f_2.y);
     int _e50 = wrap_texel(_e47, wi, mu);
     uint x0_ = static_cast<uint>(_e50);
     int _e54 = wrap_texel(as_type<int>(as_type<uint>(_e47) + as_type<uint>(1)), wi, mu);
@@ -821,11 +892,11 @@ uint frame_index_query(
 }
 
 uint gltf_pcg(
-    uint x_3
+    uint x_5
 ) {
-    uint state_1 = (x_3 * 747796405u) + 2891336453u;
-    uint word_2 = ((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u;
-    return (word_2 >> 22u) ^ word_2;
+    uint state_2 = (x_5 * 747796405u) + 2891336453u;
+    uint word_1 = ((state_2 >> (((state_2 >> 28u) + 4u) & 31u)) ^ state_2) * 277803737u;
+    return (word_1 >> 22u) ^ word_1;
 }
 
 float gltf_coverage(
@@ -833,20 +904,20 @@ float gltf_coverage(
     Hit hit_1,
     constant TileParams& tile
 ) {
-    uint h_1 = {};
+    uint h = {};
     metal::uint3 o_1 = as_type<metal::uint3>(ray_5.origin);
-    metal::uint3 d_3 = as_type<metal::uint3>(ray_5.dir);
-    h_1 = ((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u);
-    uint _e20 = h_1;
-    h_1 = ((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u);
-    uint _e33 = h_1;
+    metal::uint3 d_4 = as_type<metal::uint3>(ray_5.dir);
+    h = ((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_4.x * 3266489909u);
+    uint _e20 = h;
+    h = ((_e20 ^ (d_4.y * 668265263u)) ^ (d_4.z * 374761393u)) ^ (hit_1.primitive * 3550635116u);
+    uint _e33 = h;
     uint _e38 = frame_index_query(tile);
-    h_1 = (_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u);
-    uint _e42 = h_1;
+    h = (_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u);
+    uint _e42 = h;
     uint _e43 = gltf_pcg(_e42);
     uint _e44 = gltf_pcg(_e43);
-    h_1 = _e44;
-    uint _e45 = h_1;
+    h = _e44;
+    uint _e45 = h;
     return static_cast<float>(_e45 >> 8u) * (1.0 / 16777216.0);
 }
 
@@ -874,8 +945,8 @@ bool gltf_masked_any_hit(
     Ray ray_7,
     Hit hit_3,
     constant TileParams& tile,
-    device type_4 const& params,
-    device type_4 const& texels,
+    device type_5 const& params,
+    device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e7 = sample_texture(m.base_texture, hit_3.uv, params, texels, _buffer_sizes);
@@ -890,8 +961,8 @@ bool dispatch_any_hit(
     Ray ray_8,
     Hit hit_4,
     constant TileParams& tile,
-    device type_4 const& params,
-    device type_4 const& texels,
+    device type_5 const& params,
+    device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3, params, _buffer_sizes);
@@ -904,12 +975,12 @@ bool accept(
     Ray ray_9,
     Candidate c_3,
     constant TileParams& tile,
-    device type_4 const& params,
-    device type_8 const& instances,
-    device type_10 const& triangles,
+    device type_5 const& params,
+    device type_9 const& instances,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
+    device type_13 const& attributes,
+    device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     bool short_circuit = {};
@@ -1002,7 +1073,7 @@ metal::float2 children_entry(
 metal::uint2 pop(
     uint base,
     uint sp,
-    thread type_15& traversal_stack
+    thread type_16& traversal_stack
 ) {
     if (sp == 0u) {
         return metal::uint2(NO_HIT, 0u);
@@ -1019,15 +1090,15 @@ Candidate intersect_mesh(
     Candidate best_in,
     bool shadow,
     constant TileParams& tile,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
+    device type_13 const& attributes,
+    device type_5 const& texels,
+    thread type_16& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Candidate best = {};
@@ -1144,15 +1215,15 @@ Candidate intersect_object(
     Candidate best_1,
     bool shadow_1,
     constant TileParams& tile,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
+    device type_13 const& attributes,
+    device type_5 const& texels,
+    thread type_16& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray r_2 = {};
@@ -1173,20 +1244,20 @@ uint medium_at(
     uint exclude,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
+    device type_13 const& attributes,
+    device type_5 const& texels,
+    thread type_16& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint inside = {};
     float nearest = {};
-    uint i = {};
+    uint i_1 = {};
     if (!(HAS_MEDIA)) {
         return 0u;
     }
@@ -1198,22 +1269,22 @@ uint medium_at(
     uint _e23 = F32_INF;
     nearest = as_type<float>(_e23);
     uint end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e59 = i;
-            i = _e59 + 1u;
+            uint _e59 = i_1;
+            i_1 = _e59 + 1u;
         }
         loop_init_1 = false;
-        uint _e29 = i;
+        uint _e29 = i_1;
         if (_e29 >= end) {
             break;
         }
-        uint _e32 = i;
+        uint _e32 = i_1;
         uint slot_4 = params[frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE)];
         if (slot_4 != exclude) {
             uint _e41 = F32_INF;
@@ -1245,15 +1316,15 @@ Candidate intersect_scene(
     bool shadow_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
+    device type_13 const& attributes,
+    device type_5 const& texels,
+    thread type_16& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1357,7 +1428,7 @@ Candidate intersect_scene(
 
 SkyGradient load_SkyGradient(
     uint offset_4,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_4 + 0u];
@@ -1388,7 +1459,7 @@ metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_5,
     Ray ray_15,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_5, params, _buffer_sizes);
@@ -1399,7 +1470,7 @@ metal::float3 dispatch_miss(
 metal::float3 miss(
     Ray ray_16,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (!(HAS_BACKGROUND)) {
@@ -1434,7 +1505,7 @@ uint light_count_query(
 
 DirectionalLight load_DirectionalLight(
     uint offset_6,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_6 + 0u];
@@ -1448,14 +1519,14 @@ DirectionalLight load_DirectionalLight(
 }
 
 void scratch_store3f(
-    uint i_1,
-    metal::float3 v_1,
-    thread type_16& scratch
+    uint i_2,
+    metal::float3 v_2,
+    thread type_3& scratch
 ) {
-    metal::uint3 b_9 = as_type<metal::uint3>(v_1);
-    scratch.inner[metal::min(i_1, 21u)] = b_9.x;
-    scratch.inner[metal::min(i_1 + 1u, 21u)] = b_9.y;
-    scratch.inner[metal::min(i_1 + 2u, 21u)] = b_9.z;
+    metal::uint3 b_9 = as_type<metal::uint3>(v_2);
+    scratch.inner[metal::min(i_2, 23u)] = b_9.x;
+    scratch.inner[metal::min(i_2 + 1u, 23u)] = b_9.y;
+    scratch.inner[metal::min(i_2 + 2u, 23u)] = b_9.z;
     return;
 }
 
@@ -1464,30 +1535,30 @@ float shadow_deferred(
     metal::float3 normal,
     metal::float3 dir,
     float dist,
-    thread type_16& scratch,
+    thread type_3& scratch,
     device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_6 = scratch.inner[metal::min(SCRATCH_QUERY, 21u)];
-    scratch.inner[metal::min(SCRATCH_QUERY, 21u)] = i_6 + 1u;
-    uint _e22 = scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)];
-    if (i_6 < _e22) {
-        uint _e29 = scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)];
-        return static_cast<float>((_e29 >> (i_6 & 31u)) & 1u);
+    uint i_8 = scratch.inner[metal::min(SCRATCH_QUERY, 23u)];
+    scratch.inner[metal::min(SCRATCH_QUERY, 23u)] = i_8 + 1u;
+    uint _e22 = scratch.inner[metal::min(SCRATCH_RESOLVED, 23u)];
+    if (i_8 < _e22) {
+        uint _e29 = scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 23u)];
+        return static_cast<float>((_e29 >> (i_8 & 31u)) & 1u);
     }
-    uint _e41 = scratch.inner[metal::min(SCRATCH_PENDING, 21u)];
+    uint _e41 = scratch.inner[metal::min(SCRATCH_PENDING, 23u)];
     if (_e41 != 0u) {
         return 1.0;
     }
-    if (i_6 >= LIGHT_QUERIES) {
+    if (i_8 >= LIGHT_QUERIES) {
         metal::atomic_fetch_add_explicit(&counters[metal::min(COUNTER_SHADOW_OVERFLOW, 3u)], 1u, metal::memory_order_relaxed);
         return 1.0;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position, scratch);
     scratch_store3f(SCRATCH_LIGHT_QUERY + 3u, normal, scratch);
     scratch_store3f(SCRATCH_LIGHT_QUERY + 6u, dir, scratch);
-    scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 21u)] = as_type<uint>(dist);
-    scratch.inner[metal::min(SCRATCH_PENDING, 21u)] = 1u;
+    scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 23u)] = as_type<uint>(dist);
+    scratch.inner[metal::min(SCRATCH_PENDING, 23u)] = 1u;
     return 1.0;
 }
 
@@ -1495,8 +1566,8 @@ LightSample directional_light(
     DirectionalLight l,
     metal::float3 position_1,
     metal::float3 normal_1,
+    thread type_3& scratch,
     thread uint& F32_INF,
-    thread type_16& scratch,
     device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1514,7 +1585,7 @@ LightSample directional_light(
 
 PointLight load_PointLight(
     uint offset_7,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_7 + 0u];
@@ -1533,7 +1604,7 @@ LightSample point_light(
     PointLight l_1,
     metal::float3 position_2,
     metal::float3 normal_2,
-    thread type_16& scratch,
+    thread type_3& scratch,
     device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1556,16 +1627,16 @@ LightSample dispatch_light(
     uint offset_8,
     metal::float3 position_3,
     metal::float3 normal_3,
-    device type_4 const& params,
+    thread type_3& scratch,
+    device type_5 const& params,
     thread uint& F32_INF,
-    thread type_16& scratch,
     device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     switch(type_id_3) {
         case 0u: {
             DirectionalLight _e4 = load_DirectionalLight(offset_8, params, _buffer_sizes);
-            LightSample _e5 = directional_light(_e4, position_3, normal_3, F32_INF, scratch, counters, _buffer_sizes);
+            LightSample _e5 = directional_light(_e4, position_3, normal_3, scratch, F32_INF, counters, _buffer_sizes);
             return _e5;
         }
         case 1u: {
@@ -1581,25 +1652,25 @@ LightSample dispatch_light(
 }
 
 metal::float3 scratch_load3f(
-    uint i_2,
-    thread type_16& scratch
+    uint i_3,
+    thread type_3& scratch
 ) {
-    uint _e5 = scratch.inner[metal::min(i_2, 21u)];
-    uint _e12 = scratch.inner[metal::min(i_2 + 1u, 21u)];
-    uint _e19 = scratch.inner[metal::min(i_2 + 2u, 21u)];
+    uint _e5 = scratch.inner[metal::min(i_3, 23u)];
+    uint _e12 = scratch.inner[metal::min(i_3 + 1u, 23u)];
+    uint _e19 = scratch.inner[metal::min(i_3 + 2u, 23u)];
     return as_type<metal::float3>(metal::uint3(_e5, _e12, _e19));
 }
 
 metal::float3 step_toward(
-    metal::float3 x_4,
+    metal::float3 x_6,
     metal::float3 s
 ) {
-    metal::uint3 bits_2 = as_type<metal::uint3>(x_4);
-    metal::bool3 up_1 = (metal::sign(x_4) * metal::sign(s)) > metal::float3(0.0);
+    metal::uint3 bits_2 = as_type<metal::uint3>(x_6);
+    metal::bool3 up_1 = (metal::sign(x_6) * metal::sign(s)) > metal::float3(0.0);
     metal::float3 stepped = as_type<metal::float3>(metal::select(bits_2 - metal::uint3(1u), bits_2 + metal::uint3(1u), up_1));
     metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s > metal::float3(0.0));
-    metal::float3 moved = metal::select(stepped, from_zero, x_4 == metal::float3(0.0));
-    return metal::select(x_4, moved, !((s == metal::float3(0.0))));
+    metal::float3 moved = metal::select(stepped, from_zero, x_6 == metal::float3(0.0));
+    return metal::select(x_6, moved, !((s == metal::float3(0.0))));
 }
 
 metal::float3 offset_origin(
@@ -1607,8 +1678,8 @@ metal::float3 offset_origin(
     metal::float3 n_4,
     float error
 ) {
-    float d_4 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
-    metal::float3 offset_13 = n_4 * metal::float3(d_4);
+    float d_5 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
+    metal::float3 offset_13 = n_4 * metal::float3(d_5);
     metal::float3 _e17 = step_toward(p_5 + offset_13, offset_13);
     return _e17;
 }
@@ -1655,15 +1726,15 @@ float shadow_query(
     float dist_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
+    device type_13 const& attributes,
+    device type_5 const& texels,
+    thread type_16& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1673,23 +1744,23 @@ float shadow_query(
 }
 
 LightSample sample_light_deferred(
-    uint i_3,
+    uint i_4,
     metal::float3 position_6,
     metal::float3 normal_6,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
+    device type_13 const& attributes,
+    device type_5 const& texels,
+    thread type_16& traversal_stack,
     thread uint& ray_count,
-    thread type_16& scratch,
     device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1697,27 +1768,27 @@ LightSample sample_light_deferred(
     uint resolved = {};
     uint bits_1 = {};
     FrameUniforms frame_4 = frame;
-    if (i_3 >= frame_4.light_count) {
+    if (i_4 >= frame_4.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry = frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE);
+    uint entry = frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE);
     uint type_id_7 = params[entry];
     uint offset_14 = params[entry + 1u];
     uint start = rng_state;
     after = start;
     resolved = 0u;
     bits_1 = 0u;
-    scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)] = 0u;
-    scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_RESOLVED, 23u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 23u)] = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         rng_state = start;
-        scratch.inner[metal::min(SCRATCH_QUERY, 21u)] = 0u;
-        scratch.inner[metal::min(SCRATCH_PENDING, 21u)] = 0u;
-        LightSample _e60 = dispatch_light(type_id_7, offset_14, position_6, normal_6, params, F32_INF, scratch, counters, _buffer_sizes);
-        uint _e66 = scratch.inner[metal::min(SCRATCH_PENDING, 21u)];
+        scratch.inner[metal::min(SCRATCH_QUERY, 23u)] = 0u;
+        scratch.inner[metal::min(SCRATCH_PENDING, 23u)] = 0u;
+        LightSample _e60 = dispatch_light(type_id_7, offset_14, position_6, normal_6, scratch, params, F32_INF, counters, _buffer_sizes);
+        uint _e66 = scratch.inner[metal::min(SCRATCH_PENDING, 23u)];
         if (_e66 == 0u) {
             uint _e69 = resolved;
             if (_e69 > 0u) {
@@ -1736,12 +1807,12 @@ LightSample sample_light_deferred(
         metal::float3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY, scratch);
         metal::float3 _e85 = scratch_load3f(SCRATCH_LIGHT_QUERY + 3u, scratch);
         metal::float3 _e88 = scratch_load3f(SCRATCH_LIGHT_QUERY + 6u, scratch);
-        uint _e95 = scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 21u)];
+        uint _e95 = scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 23u)];
         float _e97 = shadow_query(_e82, _e85, _e88, as_type<float>(_e95), tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
         uint _e99 = rng_state;
         after = _e99;
         if (!((_e97 == 0.0))) {
-            uint _e108 = scratch.inner[metal::min(SCRATCH_QUERY, 21u)];
+            uint _e108 = scratch.inner[metal::min(SCRATCH_QUERY, 23u)];
             uint _e109 = resolved;
             if (_e108 == (_e109 + 1u)) {
                 uint _e113 = after;
@@ -1755,9 +1826,9 @@ LightSample sample_light_deferred(
         uint _e122 = resolved;
         resolved = _e122 + 1u;
         uint _e126 = bits_1;
-        scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
+        scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 23u)] = _e126;
         uint _e132 = resolved;
-        scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)] = _e132;
+        scratch.inner[metal::min(SCRATCH_RESOLVED, 23u)] = _e132;
     }
     return LightSample {};
 }
@@ -1775,8 +1846,8 @@ float pbr_ggx_d(
     float ndh,
     float a2_
 ) {
-    float d_5 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
-    return (a2_ * INV_PI) / (d_5 * d_5);
+    float d_6 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
+    return (a2_ * INV_PI) / (d_6 * d_6);
 }
 
 float pbr_smith_v(
@@ -1799,52 +1870,52 @@ metal::float3 gltf_radiance(
     Hit hit_6,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
+    device type_13 const& attributes,
+    device type_5 const& texels,
+    thread type_16& traversal_stack,
     thread uint& ray_count,
-    thread type_16& scratch,
     device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 color = {};
-    uint i_4 = {};
+    uint i_5 = {};
     metal::float3 _e7 = shading_normal(ray_18, hit_6);
     metal::float3 _e9 = normalize_vec3f(ray_18.dir);
-    metal::float3 v_3 = -(_e9);
+    metal::float3 v_4 = -(_e9);
     float metal_ = metal::saturate(metallic);
     float _e12 = pbr_alpha2_(roughness_1);
     metal::float3 f0_1 = metal::mix(metal::float3(0.04), c_5, metal::float3(metal_));
-    float ndv_1 = metal::max(metal::dot(_e7, v_3), 0.0001);
+    float ndv_1 = metal::max(metal::dot(_e7, v_4), 0.0001);
     color = emissive;
     uint _e22 = light_count_query(frame);
-    i_4 = 0u;
+    i_5 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e65 = i_4;
-            i_4 = _e65 + 1u;
+            uint _e65 = i_5;
+            i_5 = _e65 + 1u;
         }
         loop_init_2 = false;
-        uint _e24 = i_4;
+        uint _e24 = i_5;
         if (_e24 >= _e22) {
             break;
         }
-        uint _e26 = i_4;
-        LightSample _e29 = sample_light_deferred(_e26, hit_6.position, hit_6.geometric_normal, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, _buffer_sizes);
+        uint _e26 = i_5;
+        LightSample _e29 = sample_light_deferred(_e26, hit_6.position, hit_6.geometric_normal, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
         float ndl_1 = metal::max(metal::dot(_e7, _e29.dir), 0.0);
-        metal::float3 _e36 = normalize_vec3f(_e29.dir + v_3);
-        metal::float3 _e38 = pbr_fresnel(f0_1, metal::dot(v_3, _e36));
+        metal::float3 _e36 = normalize_vec3f(_e29.dir + v_4);
+        metal::float3 _e38 = pbr_fresnel(f0_1, metal::dot(v_4, _e36));
         float _e41 = pbr_ggx_d(metal::saturate(metal::dot(_e7, _e36)), _e12);
         float _e42 = pbr_smith_v(ndl_1, ndv_1, _e12);
         metal::float3 spec = _e38 * metal::float3(_e41 * _e42);
@@ -1862,30 +1933,30 @@ metal::float3 gltf_masked_shade(
     Hit hit_7,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
+    device type_13 const& attributes,
+    device type_5 const& texels,
+    thread type_16& traversal_stack,
     thread uint& ray_count,
-    thread type_16& scratch,
     device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv, params, texels, _buffer_sizes);
     metal::float3 c_11 = m_1.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_19, hit_7, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, _buffer_sizes);
+    metal::float3 _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_19, hit_7, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
     return _e14;
 }
 
 GltfMaterial load_GltfMaterial(
     uint offset_9,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_9 + 0u];
@@ -1907,24 +1978,24 @@ metal::float3 gltf_shade(
     Hit hit_8,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
+    device type_13 const& attributes,
+    device type_5 const& texels,
+    thread type_16& traversal_stack,
     thread uint& ray_count,
-    thread type_16& scratch,
     device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv, params, texels, _buffer_sizes);
     metal::float3 c_12 = m_2.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_20, hit_8, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, _buffer_sizes);
+    metal::float3 _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_20, hit_8, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
     return _e14;
 }
 
@@ -1936,30 +2007,30 @@ metal::float3 dispatch_closest_hit(
     metal::float3 secondary,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
+    device type_13 const& attributes,
+    device type_5 const& texels,
+    thread type_16& traversal_stack,
     thread uint& ray_count,
-    thread type_16& scratch,
     device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     switch(type_id_4) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e5 = gltf_masked_shade(_e4, ray_21, hit_9, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, _buffer_sizes);
+            metal::float3 _e5 = gltf_masked_shade(_e4, ray_21, hit_9, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e7 = gltf_shade(_e6, ray_21, hit_9, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, _buffer_sizes);
+            metal::float3 _e7 = gltf_shade(_e6, ray_21, hit_9, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
             return _e7;
         }
         default: {
@@ -1974,24 +2045,24 @@ metal::float3 shade_direct(
     Candidate c_6,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
+    device type_13 const& attributes,
+    device type_5 const& texels,
+    thread type_16& traversal_stack,
     thread uint& ray_count,
-    thread type_16& scratch,
     device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_9 = instances[c_6.slot];
     Hit _e6 = finish_hit(ray_22, c_6, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_22, _e6, metal::float3(0.0), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_22, _e6, metal::float3(0.0), tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
     return _e11;
 }
 
@@ -2009,7 +2080,7 @@ metal::float3 through_medium(
     Ray ray_24,
     float t_3,
     metal::float3 radiance_1,
-    device type_8 const& instances,
+    device type_9 const& instances,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (!(HAS_MEDIA)) {
@@ -2066,18 +2137,18 @@ metal::float3 trace(
     Ray camera_ray,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
+    device type_13 const& attributes,
+    device type_5 const& texels,
+    thread type_16& traversal_stack,
     thread uint& ray_count,
-    thread type_16& scratch,
     device type_18& counters,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
@@ -2102,8 +2173,8 @@ metal::float3 trace(
     metal::float3 radiance_3 = {};
     float t_5 = {};
     Hit hit_12 = {};
-    Frame f = {};
-    uint i_5 = {};
+    Frame f_1 = {};
+    uint i_6 = {};
     uint medium = {};
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
@@ -2115,7 +2186,7 @@ metal::float3 trace(
             metal::float3 _e17 = miss(camera_ray, frame, params, _buffer_sizes);
             radiance_2 = _e17;
         } else {
-            metal::float3 _e18 = shade_direct(camera_ray, _e4, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, _buffer_sizes);
+            metal::float3 _e18 = shade_direct(camera_ray, _e4, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
             radiance_2 = _e18;
             t_4 = _e4.t;
         }
@@ -2201,33 +2272,33 @@ metal::float3 trace(
                         Hit _e142 = hit_12;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_19 {}, type_19 {}, n_9, 0u};
-                        i_5 = 0u;
+                        f_1 = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_19 {}, type_19 {}, n_9, 0u};
+                        i_6 = 0u;
                         uint2 loop_bound_7 = uint2(4294967295u);
                         bool loop_init_3 = true;
                         while(true) {
                             if (metal::all(loop_bound_7 == uint2(0u))) { break; }
                             loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                             if (!loop_init_3) {
-                                uint _e175 = i_5;
-                                i_5 = _e175 + 1u;
+                                uint _e175 = i_6;
+                                i_6 = _e175 + 1u;
                             }
                             loop_init_3 = false;
-                            uint _e155 = i_5;
+                            uint _e155 = i_6;
                             if (_e155 >= n_9) {
                                 break;
                             }
-                            uint _e158 = i_5;
-                            uint _e162 = i_5;
+                            uint _e158 = i_6;
+                            uint _e162 = i_6;
                             metal::float3 _e165 = spawn_dirs.inner[_e162];
-                            f.dirs.inner[metal::min(_e158, 0u)] = _e165;
-                            uint _e167 = i_5;
-                            uint _e171 = i_5;
+                            f_1.dirs.inner[metal::min(_e158, 0u)] = _e165;
+                            uint _e167 = i_6;
+                            uint _e171 = i_6;
                             metal::float3 _e174 = spawn_weights.inner[_e171];
-                            f.weights.inner[metal::min(_e167, 0u)] = _e174;
+                            f_1.weights.inner[metal::min(_e167, 0u)] = _e174;
                         }
                         uint _e178 = depth;
-                        Frame _e182 = f;
+                        Frame _e182 = f_1;
                         stack.inner[metal::min(_e178, 3u)] = _e182;
                         uint _e183 = depth;
                         depth = _e183 + 1u;
@@ -2239,7 +2310,7 @@ metal::float3 trace(
                     Ray _e191 = s_ray;
                     Hit _e192 = hit_12;
                     metal::float3 _e193 = s_sum;
-                    metal::float3 _e194 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e191, _e192, _e193, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, _buffer_sizes);
+                    metal::float3 _e194 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e191, _e192, _e193, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
                     radiance_3 = _e194;
                 }
             }
@@ -2275,11 +2346,11 @@ metal::float3 trace(
         uint _e241 = stack.inner[metal::min(top_1, 3u)].next;
         uint _e246 = stack.inner[metal::min(top_1, 3u)].count;
         if (_e241 < _e246) {
-            uint i_7 = stack.inner[metal::min(top_1, 3u)].next;
-            stack.inner[metal::min(top_1, 3u)].next = i_7 + 1u;
+            uint i_9 = stack.inner[metal::min(top_1, 3u)].next;
+            stack.inner[metal::min(top_1, 3u)].next = i_9 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 3u)].ray;
             Hit hit_14 = stack.inner[metal::min(top_1, 3u)].hit;
-            metal::float3 dir_7 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_7, 0u)];
+            metal::float3 dir_7 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_9, 0u)];
             medium = parent.medium;
             float _e283 = stack.inner[metal::min(top_1, 3u)].error;
             metal::float3 _e284 = spawn_origin(hit_14, _e283, dir_7);
@@ -2306,9 +2377,9 @@ metal::float3 trace(
 }
 
 metal::bool3 is_finite_vec3f(
-    metal::float3 x_5
+    metal::float3 x_7
 ) {
-    return (as_type<metal::uint3>(x_5) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+    return (as_type<metal::uint3>(x_7) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
 }
 
 metal::float3 finite_or_zero(
@@ -2319,26 +2390,26 @@ metal::float3 finite_or_zero(
 }
 
 void render_pixel(
-    metal::uint2 pixel_3,
+    metal::uint2 pixel_4,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
+    device type_13 const& attributes,
+    device type_5 const& texels,
+    thread type_16& traversal_stack,
     thread uint& ray_count,
-    thread type_16& scratch,
     device type_18& counters,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
     thread uint& spawn_count,
-    device type_10& accum,
+    device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 sum = {};
@@ -2366,9 +2437,9 @@ void render_pixel(
             break;
         }
         uint _e18 = s_1;
-        uint sample_3 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
-        rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
+        uint sample_4 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
+        rng_seed(pixel_4, sample_4, frame_5.seed, scratch, rng_state);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
         ray_27 = _e23;
         ray_27.depth = 0u;
         ray_27.kind = RAY_CAMERA;
@@ -2376,7 +2447,7 @@ void render_pixel(
         uint _e33 = medium_at(_e31, NO_HIT, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
         ray_27.medium = _e33;
         Ray _e34 = ray_27;
-        metal::float3 _e35 = trace(_e34, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::float3 _e35 = trace(_e34, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {
             metal::float3 _e38 = sum;
@@ -2395,10 +2466,10 @@ void render_pixel(
     metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
     uint _e63 = bad;
     if (tile_2.frame == 0u) {
-        accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x] = _e62;
+        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e62;
     } else {
-        metal::float4 _e69 = accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x];
-        accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x] = _e69 + _e62;
+        metal::float4 _e69 = accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x];
+        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e69 + _e62;
     }
     if (_e63 > 0u) {
         metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
@@ -2410,23 +2481,23 @@ void render_invocation(
     metal::uint2 id_1,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_12 const& attributes,
-    device type_4 const& texels,
-    thread type_15& traversal_stack,
+    device type_13 const& attributes,
+    device type_5 const& texels,
+    thread type_16& traversal_stack,
     thread uint& ray_count,
-    thread type_16& scratch,
     device type_18& counters,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
     thread uint& spawn_count,
-    device type_10& accum,
+    device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     TileParams tile_3 = tile;
@@ -2434,7 +2505,7 @@ void render_invocation(
     if (metal::any(_e3 >= tile_3.extent)) {
         return;
     }
-    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
+    render_pixel(tile_3.origin + _e3, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
     return;
 }
 
@@ -2444,25 +2515,25 @@ struct renderInput {
   metal::uint3 gid [[thread_position_in_grid]]
 , constant TileParams& tile [[buffer(1)]]
 , constant FrameUniforms& frame [[buffer(0)]]
-, device type_4 const& params [[buffer(6)]]
-, device type_8 const& instances [[buffer(3)]]
-, device type_9 const& nodes [[buffer(2)]]
-, device type_10 const& triangles [[buffer(4)]]
-, device type_12 const& attributes [[buffer(5)]]
-, device type_4 const& texels [[buffer(7)]]
+, device type_5 const& params [[buffer(6)]]
+, device type_9 const& instances [[buffer(3)]]
+, device type_10 const& nodes [[buffer(2)]]
+, device type_11 const& triangles [[buffer(4)]]
+, device type_13 const& attributes [[buffer(5)]]
+, device type_5 const& texels [[buffer(7)]]
 , device type_18& counters [[buffer(9)]]
-, device type_10& accum [[buffer(8)]]
+, device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
+    type_3 scratch = {};
     uint rng_state = {};
     uint F32_INF = 2139095040u;
     float hit_error = {};
-    type_15 traversal_stack = {};
+    type_16 traversal_stack = {};
     uint ray_count = {};
-    type_16 scratch = {};
     type_19 spawn_dirs = {};
     type_19 spawn_weights = {};
     uint spawn_count = {};
-    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
     return;
 }

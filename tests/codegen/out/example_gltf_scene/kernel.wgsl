@@ -160,6 +160,9 @@ const WORKGROUP_WIDTH: u32 = 8u;
 const WORKGROUP_HEIGHT: u32 = 8u;
 const NO_HIT: u32 = 4294967295u;
 const SCATTER: u32 = 1000003u;
+const SCRATCH_RNG_INDEX: u32 = 12u;
+const SCRATCH_RNG_SEED: u32 = 13u;
+const HALF_WORD_BITS: u32 = 16u;
 const RAY_CAMERA: u32 = 0u;
 const HAS_MEDIA: bool = false;
 const MEDIUM_ENTRY_STRIDE: u32 = 1u;
@@ -195,7 +198,7 @@ const SCRATCH_QUERY: u32 = 2u;
 const SCRATCH_PENDING: u32 = 4u;
 const LIGHT_QUERIES: u32 = 32u;
 const COUNTER_SHADOW_OVERFLOW: u32 = 3u;
-const SCRATCH_LIGHT_QUERY: u32 = 12u;
+const SCRATCH_LIGHT_QUERY: u32 = 14u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const INV_PI: f32 = 0.31830987f;
 const FLAG_MEDIUM: u32 = 4u;
@@ -209,6 +212,7 @@ const RAY_SECONDARY: u32 = 1u;
 var<uniform> tile: TileParams;
 @group(0) @binding(0) 
 var<uniform> frame: FrameUniforms;
+var<private> scratch: array<u32, 24>;
 var<private> rng_state: u32;
 @group(0) @binding(6) 
 var<storage> params: array<u32>;
@@ -226,7 +230,6 @@ var<storage> attributes: array<vec4<u32>>;
 var<storage> texels: array<u32>;
 var<private> traversal_stack: array<u32, 128>;
 var<private> ray_count: u32;
-var<private> scratch: array<u32, 22>;
 @group(0) @binding(9) 
 var<storage, read_write> counters: array<atomic<u32>>;
 var<private> spawn_dirs: array<vec3<f32>, 1>;
@@ -279,25 +282,23 @@ fn scattered_local(id: vec2<u32>) -> vec2<u32> {
 }
 
 fn pcg_hash(x: u32) -> u32 {
-    let state = ((x * 747796405u) + 2891336453u);
-    let word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    let state_1 = ((x * 747796405u) + 2891336453u);
+    let word = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
     return ((word >> 22u) ^ word);
 }
 
-fn rng_seed(pixel: vec2<u32>, sample: u32, seed: u32) {
-    var h: u32;
+fn rng_resume(pixel: vec2<u32>, sample: u32, seed: u32, state: u32) {
+    scratch[min(SCRATCH_RNG_INDEX, 23u)] = sample;
+    let _e12 = pcg_hash(seed);
+    let _e14 = pcg_hash((pixel.y ^ _e12));
+    let _e16 = pcg_hash((pixel.x ^ _e14));
+    scratch[min(SCRATCH_RNG_SEED, 23u)] = _e16;
+    rng_state = state;
+    return;
+}
 
-    let _e5 = pcg_hash(seed);
-    let _e7 = pcg_hash((sample ^ _e5));
-    let _e9 = pcg_hash((pixel.y ^ _e7));
-    let _e11 = pcg_hash((pixel.x ^ _e9));
-    h = _e11;
-    let _e13 = h;
-    if (_e13 == 0u) {
-        h = 1u;
-    }
-    let _e17 = h;
-    rng_state = _e17;
+fn rng_seed(pixel_1: vec2<u32>, sample_1: u32, seed_1: u32) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u);
     return;
 }
 
@@ -325,13 +326,68 @@ fn samples_per_pixel_query() -> u32 {
     return _e1.total_samples;
 }
 
+fn laine_karras(x_1: u32, seed_2: u32) -> u32 {
+    var v: u32;
+
+    v = (x_1 + seed_2);
+    let _e4 = v;
+    let _e5 = v;
+    v = (_e4 ^ (_e5 * 1817228412u));
+    let _e9 = v;
+    let _e10 = v;
+    v = (_e9 ^ (_e10 * 3090095698u));
+    let _e14 = v;
+    let _e15 = v;
+    v = (_e14 ^ (_e15 * 3350193720u));
+    let _e19 = v;
+    let _e20 = v;
+    v = (_e19 ^ (_e20 * 2367878886u));
+    let _e24 = v;
+    return _e24;
+}
+
+fn sobol_second_reversed(i: u32) -> u32 {
+    var f: u32;
+
+    f = i;
+    let _e2 = f;
+    let _e3 = f;
+    f = (_e2 ^ ((_e3 >> 1u) & 1431655765u));
+    let _e9 = f;
+    let _e10 = f;
+    f = (_e9 ^ ((_e10 >> 2u) & 858993459u));
+    let _e16 = f;
+    let _e17 = f;
+    f = (_e16 ^ ((_e17 >> 4u) & 252645135u));
+    let _e23 = f;
+    let _e24 = f;
+    f = (_e23 ^ ((_e24 >> 8u) & 16711935u));
+    let _e30 = f;
+    let _e31 = f;
+    f = (_e30 ^ (_e31 >> (HALF_WORD_BITS & 31u)));
+    let _e37 = f;
+    return _e37;
+}
+
 fn rand_next() -> f32 {
-    let _e1 = rng_state;
-    let s_2 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_2;
-    let word_1 = (((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u);
-    let r_3 = ((word_1 >> 22u) ^ word_1);
-    return (f32((r_3 >> 8u)) * (1f / 16777216f));
+    var x_2: u32;
+
+    let d_1 = rng_state;
+    rng_state = (d_1 + 1u);
+    let _e10 = scratch[min(SCRATCH_RNG_SEED, 23u)];
+    let _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    let _e22 = scratch[min(SCRATCH_RNG_INDEX, 23u)];
+    let _e24 = laine_karras(reverseBits(_e22), _e16);
+    let i_7 = reverseBits(_e24);
+    x_2 = i_7;
+    if ((d_1 & 1u) != 0u) {
+        let _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    let scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    let _e45 = x_2;
+    let _e46 = laine_karras(_e45, scramble);
+    return (f32((reverseBits(_e46) >> 8u)) * (1f / 16777216f));
 }
 
 fn rand2_next() -> vec2<f32> {
@@ -340,11 +396,11 @@ fn rand2_next() -> vec2<f32> {
     return vec2<f32>(_e0, _e1);
 }
 
-fn normalize_vec3f(v: vec3<f32>) -> vec3<f32> {
-    return select(vec3(0f), normalize(v), (dot(v, v) >= 0.000000000000000000000000000000000000011754944f));
+fn normalize_vec3f(v_1: vec3<f32>) -> vec3<f32> {
+    return select(vec3(0f), normalize(v_1), (dot(v_1, v_1) >= 0.000000000000000000000000000000000000011754944f));
 }
 
-fn pinhole_ray(cam: Pinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
+fn pinhole_ray(cam: Pinhole, pixel_2: vec2<u32>, sample_2: u32) -> Ray {
     var jitter: vec2<f32>;
 
     let _e2 = image_size_query();
@@ -356,20 +412,20 @@ fn pinhole_ray(cam: Pinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
         jitter = _e10;
     }
     let _e12 = jitter;
-    let ndc = ((((vec2<f32>(pixel_1) + _e12) / size_1) * vec2(2f)) - vec2(1f));
+    let ndc = ((((vec2<f32>(pixel_2) + _e12) / size_1) * vec2(2f)) - vec2(1f));
     let _e24 = normalize_vec3f((cam.look_at - cam.position));
     let _e27 = normalize_vec3f(cross(_e24, cam.up));
     let up = cross(_e27, _e24);
-    let h_2 = tan((radians(cam.fov) * 0.5f));
+    let h_1 = tan((radians(cam.fov) * 0.5f));
     let aspect = (size_1.x / size_1.y);
-    let _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_2) * aspect)))) - (up * vec3((ndc.y * h_2)))));
+    let _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
     let _e52 = F32_INF;
     return Ray(cam.position, 0f, _e48, bitcast<f32>(_e52), 0u, 0u, 0u);
 }
 
-fn dispatch_ray_generation(type_id: u32, offset_1: u32, pixel_2: vec2<u32>, sample_2: u32) -> Ray {
+fn dispatch_ray_generation(type_id: u32, offset_1: u32, pixel_3: vec2<u32>, sample_3: u32) -> Ray {
     let _e3 = load_Pinhole(offset_1);
-    let _e4 = pinhole_ray(_e3, pixel_2, sample_2);
+    let _e4 = pinhole_ray(_e3, pixel_3, sample_3);
     return _e4;
 }
 
@@ -382,34 +438,34 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
     r = ray;
     let o = vec4<f32>(ray.origin, 1f);
-    let d_1 = vec4<f32>(ray.dir, 0f);
+    let d_2 = vec4<f32>(ray.dir, 0f);
     r.origin = vec3<f32>(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
+    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     let _e25 = r;
     return _e25;
 }
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_3 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_3 * tiny), (abs(d) < tiny));
+    let s_2 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_2 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
 fn prepare_triangle_ray(ray_1: Ray) -> TriangleRay {
-    let d_2 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
-    let ad = abs(d_2);
+    let d_3 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
+    let ad = abs(d_3);
     let y_gt = (ad.y > ad.x);
     let kz = select(select(0u, 1u, y_gt), 2u, (ad.z > select(ad.x, ad.y, y_gt)));
     let kx0_ = select((kz + 1u), 0u, (kz == 2u));
     let ky0_ = select((kz + 2u), (kz - 1u), (kz >= 1u));
-    let dz = d_2[min(kz, 2u)];
+    let dz = d_3[min(kz, 2u)];
     let flip = (dz < 0f);
     let kx = select(kx0_, ky0_, flip);
     let ky = select(ky0_, kx0_, flip);
     let inf_bits = vec3(2139095040u);
-    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_2) & vec3(2147483647u)) < inf_bits)));
-    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_2[min(kx, 2u)] / dz), (d_2[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
+    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_3) & vec3(2147483647u)) < inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32> {
@@ -426,15 +482,15 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let cx = (c_8[min(r_1.kx, 2u)] - (r_1.shear.x * c_8[min(r_1.kz, 2u)]));
     let cy = (c_8[min(r_1.ky, 2u)] - (r_1.shear.y * c_8[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
-    let v_2 = ((ax * cy) - (ay * cx));
+    let v_3 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
-    let outside = ((((u < 0f) || (v_2 < 0f)) || (w < 0f)) && (((u > 0f) || (v_2 > 0f)) || (w > 0f)));
-    let det = ((u + v_2) + w);
+    let outside = ((((u < 0f) || (v_3 < 0f)) || (w < 0f)) && (((u > 0f) || (v_3 > 0f)) || (w > 0f)));
+    let det = ((u + v_3) + w);
     let rcp = (1f / det);
-    let t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_8[min(r_1.kz, 2u)]))) * rcp);
+    let t_6 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_3 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_8[min(r_1.kz, 2u)]))) * rcp);
     let hit_13 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_6, (v_2 * rcp), (w * rcp)), hit_13);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_6, (v_3 * rcp), (w * rcp)), hit_13);
 }
 
 fn load_triangle(slot_1: u32) -> Triangle {
@@ -491,9 +547,9 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     let _e14 = n_1.z;
     if (_e14 < 0f) {
         let _e21 = n_1;
-        let s_4 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_3 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n_1;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_4);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_3);
         let _e37 = n_1.z;
         n_1 = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -573,8 +629,8 @@ fn load_GltfMaskedMaterial(offset_2: u32) -> GltfMaskedMaterial {
     return GltfMaskedMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), vec3<f32>(bitcast<f32>(_e47), bitcast<f32>(_e53), bitcast<f32>(_e59)), bitcast<f32>(_e66), _e72, _e77);
 }
 
-fn i32_from_f32_(x_1: f32) -> i32 {
-    return select(i32(min(max(x_1, -2147483600f), 2147483500f)), 0i, ((bitcast<u32>(x_1) & 2147483647u) > 2139095040u));
+fn i32_from_f32_(x_3: f32) -> i32 {
+    return select(i32(min(max(x_3, -2147483600f), 2147483500f)), 0i, ((bitcast<u32>(x_3) & 2147483647u) > 2139095040u));
 }
 
 fn rem_i32_(a_4: i32, b_4: i32) -> i32 {
@@ -583,14 +639,14 @@ fn rem_i32_(a_4: i32, b_4: i32) -> i32 {
     return select((a_4 - (divisor_4 * (a_4 / divisor_4))), 0i, by_zero_4);
 }
 
-fn wrap_texel(x_2: i32, n_2: i32, mode: u32) -> i32 {
-    let _e3 = rem_i32_(x_2, n_2);
+fn wrap_texel(x_4: i32, n_2: i32, mode: u32) -> i32 {
+    let _e3 = rem_i32_(x_4, n_2);
     let _e5 = rem_i32_((_e3 + n_2), n_2);
-    let _e8 = rem_i32_(x_2, (2i * n_2));
+    let _e8 = rem_i32_(x_4, (2i * n_2));
     let _e14 = rem_i32_((_e8 + (2i * n_2)), (2i * n_2));
     let mirror = select(_e14, (((2i * n_2) - 1i) - _e14), (_e14 >= n_2));
     let wrapped = select(_e5, mirror, (mode == TEXTURE_WRAP_MIRROR));
-    return select(wrapped, min(max(x_2, 0i), (n_2 - 1i)), (mode == TEXTURE_WRAP_CLAMP));
+    return select(wrapped, min(max(x_4, 0i), (n_2 - 1i)), (mode == TEXTURE_WRAP_CLAMP));
 }
 
 fn srgb_channel(c_2: f32) -> f32 {
@@ -634,10 +690,10 @@ fn sample_texture(t_1: u32, uv: vec2<f32>) -> vec4<f32> {
     let mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
     let q_3 = (uv * vec2<f32>(f32(wi), f32(hi_1)));
     let p_7 = select((q_3 - vec2(0.5f)), floor(q_3), ((sampler_ & TEXTURE_NEAREST) != 0u));
-    let f_1 = floor(p_7);
-    let fr = (p_7 - f_1);
-    let _e47 = i32_from_f32_(f_1.x);
-    let _e49 = i32_from_f32_(f_1.y);
+    let f_2 = floor(p_7);
+    let fr = (p_7 - f_2);
+    let _e47 = i32_from_f32_(f_2.x);
+    let _e49 = i32_from_f32_(f_2.y);
     let _e50 = wrap_texel(_e47, wi, mu);
     let x0_ = u32(_e50);
     let _e54 = wrap_texel((_e47 + 1i), wi, mu);
@@ -660,28 +716,28 @@ fn frame_index_query() -> u32 {
     return _e1.frame;
 }
 
-fn gltf_pcg(x_3: u32) -> u32 {
-    let state_1 = ((x_3 * 747796405u) + 2891336453u);
-    let word_2 = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
-    return ((word_2 >> 22u) ^ word_2);
+fn gltf_pcg(x_5: u32) -> u32 {
+    let state_2 = ((x_5 * 747796405u) + 2891336453u);
+    let word_1 = (((state_2 >> (((state_2 >> 28u) + 4u) & 31u)) ^ state_2) * 277803737u);
+    return ((word_1 >> 22u) ^ word_1);
 }
 
 fn gltf_coverage(ray_5: Ray, hit_1: Hit) -> f32 {
-    var h_1: u32;
+    var h: u32;
 
     let o_1 = bitcast<vec3<u32>>(ray_5.origin);
-    let d_3 = bitcast<vec3<u32>>(ray_5.dir);
-    h_1 = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_3.x * 3266489909u));
-    let _e20 = h_1;
-    h_1 = (((_e20 ^ (d_3.y * 668265263u)) ^ (d_3.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
-    let _e33 = h_1;
+    let d_4 = bitcast<vec3<u32>>(ray_5.dir);
+    h = (((o_1.x ^ (o_1.y * 2654435769u)) ^ (o_1.z * 2246822507u)) ^ (d_4.x * 3266489909u));
+    let _e20 = h;
+    h = (((_e20 ^ (d_4.y * 668265263u)) ^ (d_4.z * 374761393u)) ^ (hit_1.primitive * 3550635116u));
+    let _e33 = h;
     let _e38 = frame_index_query();
-    h_1 = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
-    let _e42 = h_1;
+    h = ((_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u));
+    let _e42 = h;
     let _e43 = gltf_pcg(_e42);
     let _e44 = gltf_pcg(_e43);
-    h_1 = _e44;
-    let _e45 = h_1;
+    h = _e44;
+    let _e45 = h;
     return (f32((_e45 >> 8u)) * (1f / 16777216f));
 }
 
@@ -902,7 +958,7 @@ fn intersect_object(slot_3: u32, ray_12: Ray, best_1: Candidate, shadow_1: bool)
 fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     var inside: u32;
     var nearest: f32;
-    var i: u32;
+    var i_1: u32;
 
     if !(HAS_MEDIA) {
         return 0u;
@@ -915,13 +971,13 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     let _e23 = F32_INF;
     nearest = bitcast<f32>(_e23);
     let end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     loop {
-        let _e29 = i;
+        let _e29 = i_1;
         if (_e29 >= end) {
             break;
         }
-        let _e32 = i;
+        let _e32 = i_1;
         let slot_4 = params[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if (slot_4 != exclude) {
             let _e41 = F32_INF;
@@ -937,8 +993,8 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
             }
         }
         continuing {
-            let _e59 = i;
-            i = (_e59 + 1u);
+            let _e59 = i_1;
+            i_1 = (_e59 + 1u);
         }
     }
     let _e62 = inside;
@@ -1110,35 +1166,35 @@ fn load_DirectionalLight(offset_6: u32) -> DirectionalLight {
     return DirectionalLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43));
 }
 
-fn scratch_store3f(i_1: u32, v_1: vec3<f32>) {
-    let b_9 = bitcast<vec3<u32>>(v_1);
-    scratch[min(i_1, 21u)] = b_9.x;
-    scratch[min((i_1 + 1u), 21u)] = b_9.y;
-    scratch[min((i_1 + 2u), 21u)] = b_9.z;
+fn scratch_store3f(i_2: u32, v_2: vec3<f32>) {
+    let b_9 = bitcast<vec3<u32>>(v_2);
+    scratch[min(i_2, 23u)] = b_9.x;
+    scratch[min((i_2 + 1u), 23u)] = b_9.y;
+    scratch[min((i_2 + 2u), 23u)] = b_9.z;
     return;
 }
 
 fn shadow_deferred(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
-    let i_6 = scratch[min(SCRATCH_QUERY, 21u)];
-    scratch[min(SCRATCH_QUERY, 21u)] = (i_6 + 1u);
-    let _e22 = scratch[min(SCRATCH_RESOLVED, 21u)];
-    if (i_6 < _e22) {
-        let _e29 = scratch[min(SCRATCH_LIGHT_BITS, 21u)];
-        return f32(((_e29 >> (i_6 & 31u)) & 1u));
+    let i_8 = scratch[min(SCRATCH_QUERY, 23u)];
+    scratch[min(SCRATCH_QUERY, 23u)] = (i_8 + 1u);
+    let _e22 = scratch[min(SCRATCH_RESOLVED, 23u)];
+    if (i_8 < _e22) {
+        let _e29 = scratch[min(SCRATCH_LIGHT_BITS, 23u)];
+        return f32(((_e29 >> (i_8 & 31u)) & 1u));
     }
-    let _e41 = scratch[min(SCRATCH_PENDING, 21u)];
+    let _e41 = scratch[min(SCRATCH_PENDING, 23u)];
     if (_e41 != 0u) {
         return 1f;
     }
-    if (i_6 >= LIGHT_QUERIES) {
+    if (i_8 >= LIGHT_QUERIES) {
         atomicAdd((&counters[min(COUNTER_SHADOW_OVERFLOW, 3u)]), 1u);
         return 1f;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)] = bitcast<u32>(dist);
-    scratch[min(SCRATCH_PENDING, 21u)] = 1u;
+    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 23u)] = bitcast<u32>(dist);
+    scratch[min(SCRATCH_PENDING, 23u)] = 1u;
     return 1f;
 }
 
@@ -1202,25 +1258,25 @@ fn dispatch_light(type_id_3: u32, offset_8: u32, position_3: vec3<f32>, normal_3
     return LightSample();
 }
 
-fn scratch_load3f(i_2: u32) -> vec3<f32> {
-    let _e5 = scratch[min(i_2, 21u)];
-    let _e12 = scratch[min((i_2 + 1u), 21u)];
-    let _e19 = scratch[min((i_2 + 2u), 21u)];
+fn scratch_load3f(i_3: u32) -> vec3<f32> {
+    let _e5 = scratch[min(i_3, 23u)];
+    let _e12 = scratch[min((i_3 + 1u), 23u)];
+    let _e19 = scratch[min((i_3 + 2u), 23u)];
     return bitcast<vec3<f32>>(vec3<u32>(_e5, _e12, _e19));
 }
 
-fn step_toward(x_4: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
-    let bits_2 = bitcast<vec3<u32>>(x_4);
-    let up_1 = ((sign(x_4) * sign(s)) > vec3(0f));
+fn step_toward(x_6: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
+    let bits_2 = bitcast<vec3<u32>>(x_6);
+    let up_1 = ((sign(x_6) * sign(s)) > vec3(0f));
     let stepped = bitcast<vec3<f32>>(select((bits_2 - vec3(1u)), (bits_2 + vec3(1u)), up_1));
     let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s > vec3(0f)));
-    let moved = select(stepped, from_zero, (x_4 == vec3(0f)));
-    return select(x_4, moved, !((s == vec3(0f))));
+    let moved = select(stepped, from_zero, (x_6 == vec3(0f)));
+    return select(x_6, moved, !((s == vec3(0f))));
 }
 
 fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_4 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    let offset_13 = (n_4 * vec3(d_4));
+    let d_5 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    let offset_13 = (n_4 * vec3(d_5));
     let _e17 = step_toward((p_5 + offset_13), offset_13);
     return _e17;
 }
@@ -1260,30 +1316,30 @@ fn shadow_query(position_5: vec3<f32>, normal_5: vec3<f32>, dir_2: vec3<f32>, di
     return select(1f, 0f, (_e6.slot != NO_HIT));
 }
 
-fn sample_light_deferred(i_3: u32, position_6: vec3<f32>, normal_6: vec3<f32>) -> LightSample {
+fn sample_light_deferred(i_4: u32, position_6: vec3<f32>, normal_6: vec3<f32>) -> LightSample {
     var after: u32;
     var resolved: u32;
     var bits_1: u32;
 
     let frame_4 = frame;
-    if (i_3 >= frame_4.light_count) {
+    if (i_4 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    let entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     let type_id_7 = params[entry];
     let offset_14 = params[(entry + 1u)];
     let start = rng_state;
     after = start;
     resolved = 0u;
     bits_1 = 0u;
-    scratch[min(SCRATCH_RESOLVED, 21u)] = 0u;
-    scratch[min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
+    scratch[min(SCRATCH_RESOLVED, 23u)] = 0u;
+    scratch[min(SCRATCH_LIGHT_BITS, 23u)] = 0u;
     loop {
         rng_state = start;
-        scratch[min(SCRATCH_QUERY, 21u)] = 0u;
-        scratch[min(SCRATCH_PENDING, 21u)] = 0u;
+        scratch[min(SCRATCH_QUERY, 23u)] = 0u;
+        scratch[min(SCRATCH_PENDING, 23u)] = 0u;
         let _e60 = dispatch_light(type_id_7, offset_14, position_6, normal_6);
-        let _e66 = scratch[min(SCRATCH_PENDING, 21u)];
+        let _e66 = scratch[min(SCRATCH_PENDING, 23u)];
         if (_e66 == 0u) {
             let _e69 = resolved;
             if (_e69 > 0u) {
@@ -1302,12 +1358,12 @@ fn sample_light_deferred(i_3: u32, position_6: vec3<f32>, normal_6: vec3<f32>) -
         let _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
         let _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
         let _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        let _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)];
+        let _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 23u)];
         let _e97 = shadow_query(_e82, _e85, _e88, bitcast<f32>(_e95));
         let _e99 = rng_state;
         after = _e99;
         if !((_e97 == 0f)) {
-            let _e108 = scratch[min(SCRATCH_QUERY, 21u)];
+            let _e108 = scratch[min(SCRATCH_QUERY, 23u)];
             let _e109 = resolved;
             if (_e108 == (_e109 + 1u)) {
                 let _e113 = after;
@@ -1321,9 +1377,9 @@ fn sample_light_deferred(i_3: u32, position_6: vec3<f32>, normal_6: vec3<f32>) -
         let _e122 = resolved;
         resolved = (_e122 + 1u);
         let _e126 = bits_1;
-        scratch[min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
+        scratch[min(SCRATCH_LIGHT_BITS, 23u)] = _e126;
         let _e132 = resolved;
-        scratch[min(SCRATCH_RESOLVED, 21u)] = _e132;
+        scratch[min(SCRATCH_RESOLVED, 23u)] = _e132;
     }
     return LightSample();
 }
@@ -1335,8 +1391,8 @@ fn pbr_fresnel(f0_: vec3<f32>, c_4: f32) -> vec3<f32> {
 }
 
 fn pbr_ggx_d(ndh: f32, a2_: f32) -> f32 {
-    let d_5 = (((ndh * ndh) * (a2_ - 1f)) + 1f);
-    return ((a2_ * INV_PI) / (d_5 * d_5));
+    let d_6 = (((ndh * ndh) * (a2_ - 1f)) + 1f);
+    return ((a2_ * INV_PI) / (d_6 * d_6));
 }
 
 fn pbr_smith_v(ndl: f32, ndv: f32, a2_1: f32) -> f32 {
@@ -1347,28 +1403,28 @@ fn pbr_smith_v(ndl: f32, ndv: f32, a2_1: f32) -> f32 {
 
 fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32, emissive: vec3<f32>, ray_18: Ray, hit_6: Hit) -> vec3<f32> {
     var color: vec3<f32>;
-    var i_4: u32;
+    var i_5: u32;
 
     let _e7 = shading_normal(ray_18, hit_6);
     let _e9 = normalize_vec3f(ray_18.dir);
-    let v_3 = -(_e9);
+    let v_4 = -(_e9);
     let metal = saturate(metallic);
     let _e12 = pbr_alpha2_(roughness_1);
     let f0_1 = mix(vec3(0.04f), c_5, vec3(metal));
-    let ndv_1 = max(dot(_e7, v_3), 0.0001f);
+    let ndv_1 = max(dot(_e7, v_4), 0.0001f);
     color = emissive;
     let _e22 = light_count_query();
-    i_4 = 0u;
+    i_5 = 0u;
     loop {
-        let _e24 = i_4;
+        let _e24 = i_5;
         if (_e24 >= _e22) {
             break;
         }
-        let _e26 = i_4;
+        let _e26 = i_5;
         let _e29 = sample_light_deferred(_e26, hit_6.position, hit_6.geometric_normal);
         let ndl_1 = max(dot(_e7, _e29.dir), 0f);
-        let _e36 = normalize_vec3f((_e29.dir + v_3));
-        let _e38 = pbr_fresnel(f0_1, dot(v_3, _e36));
+        let _e36 = normalize_vec3f((_e29.dir + v_4));
+        let _e38 = pbr_fresnel(f0_1, dot(v_4, _e36));
         let _e41 = pbr_ggx_d(saturate(dot(_e7, _e36)), _e12);
         let _e42 = pbr_smith_v(ndl_1, ndv_1, _e12);
         let spec = (_e38 * vec3((_e41 * _e42)));
@@ -1376,8 +1432,8 @@ fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32
         let _e56 = color;
         color = (_e56 + (((_e29.radiance * vec3(ndl_1)) * (diffuse + spec)) * vec3(occlusion)));
         continuing {
-            let _e65 = i_4;
-            i_4 = (_e65 + 1u);
+            let _e65 = i_5;
+            i_5 = (_e65 + 1u);
         }
     }
     let _e68 = color;
@@ -1498,8 +1554,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var radiance_3: vec3<f32>;
     var t_5: f32;
     var hit_12: Hit;
-    var f: Frame;
-    var i_5: u32;
+    var f_1: Frame;
+    var i_6: u32;
     var medium: u32;
 
     if !(HAS_SECONDARY_RAYS) {
@@ -1595,28 +1651,28 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                         let _e142 = hit_12;
                         let _e143 = s_error;
                         let _e145 = s_c.slot;
-                        f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_9, 0u);
-                        i_5 = 0u;
+                        f_1 = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_9, 0u);
+                        i_6 = 0u;
                         loop {
-                            let _e155 = i_5;
+                            let _e155 = i_6;
                             if (_e155 >= n_9) {
                                 break;
                             }
-                            let _e158 = i_5;
-                            let _e162 = i_5;
+                            let _e158 = i_6;
+                            let _e162 = i_6;
                             let _e165 = spawn_dirs[_e162];
-                            f.dirs[min(_e158, 0u)] = _e165;
-                            let _e167 = i_5;
-                            let _e171 = i_5;
+                            f_1.dirs[min(_e158, 0u)] = _e165;
+                            let _e167 = i_6;
+                            let _e171 = i_6;
                             let _e174 = spawn_weights[_e171];
-                            f.weights[min(_e167, 0u)] = _e174;
+                            f_1.weights[min(_e167, 0u)] = _e174;
                             continuing {
-                                let _e175 = i_5;
-                                i_5 = (_e175 + 1u);
+                                let _e175 = i_6;
+                                i_6 = (_e175 + 1u);
                             }
                         }
                         let _e178 = depth;
-                        let _e182 = f;
+                        let _e182 = f_1;
                         stack[min(_e178, 3u)] = _e182;
                         let _e183 = depth;
                         depth = (_e183 + 1u);
@@ -1664,11 +1720,11 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e241 = stack[min(top_1, 3u)].next;
         let _e246 = stack[min(top_1, 3u)].count;
         if (_e241 < _e246) {
-            let i_7 = stack[min(top_1, 3u)].next;
-            stack[min(top_1, 3u)].next = (i_7 + 1u);
+            let i_9 = stack[min(top_1, 3u)].next;
+            stack[min(top_1, 3u)].next = (i_9 + 1u);
             let parent = stack[min(top_1, 3u)].ray;
             let hit_14 = stack[min(top_1, 3u)].hit;
-            let dir_7 = stack[min(top_1, 3u)].dirs[min(i_7, 0u)];
+            let dir_7 = stack[min(top_1, 3u)].dirs[min(i_9, 0u)];
             medium = parent.medium;
             let _e283 = stack[min(top_1, 3u)].error;
             let _e284 = spawn_origin(hit_14, _e283, dir_7);
@@ -1694,8 +1750,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn is_finite_vec3f(x_5: vec3<f32>) -> vec3<bool> {
-    return ((bitcast<vec3<u32>>(x_5) & vec3(2147483647u)) < vec3(2139095040u));
+fn is_finite_vec3f(x_7: vec3<f32>) -> vec3<bool> {
+    return ((bitcast<vec3<u32>>(x_7) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
 fn finite_or_zero(c_7: vec3<f32>) -> vec3<f32> {
@@ -1703,7 +1759,7 @@ fn finite_or_zero(c_7: vec3<f32>) -> vec3<f32> {
     return select(vec3(0f), c_7, _e3);
 }
 
-fn render_pixel(pixel_3: vec2<u32>) {
+fn render_pixel(pixel_4: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s_1: u32;
@@ -1721,9 +1777,9 @@ fn render_pixel(pixel_3: vec2<u32>) {
             break;
         }
         let _e18 = s_1;
-        let sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_3, sample_3, frame_5.seed);
-        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        let sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_4, sample_4, frame_5.seed);
+        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
         ray_27 = _e23;
         ray_27.depth = 0u;
         ray_27.kind = RAY_CAMERA;
@@ -1754,10 +1810,10 @@ fn render_pixel(pixel_3: vec2<u32>) {
     let _e62 = vec4<f32>(_e59, f32(frame_5.samples_per_pass));
     let _e63 = bad;
     if (tile_2.frame == 0u) {
-        accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = _e62;
+        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
     } else {
-        let _e69 = accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)];
-        accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = (_e69 + _e62);
+        let _e69 = accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
+        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
     }
     if (_e63 > 0u) {
         atomicAdd((&counters[0]), _e63);

@@ -127,6 +127,9 @@ const uint WORKGROUP_WIDTH = 8u;
 const uint WORKGROUP_HEIGHT = 8u;
 const uint NO_HIT = 4294967295u;
 const uint SCATTER = 1000003u;
+const uint SCRATCH_RNG_INDEX = 12u;
+const uint SCRATCH_RNG_SEED = 13u;
+const uint HALF_WORD_BITS = 16u;
 const uint RAY_CAMERA = 0u;
 const bool HAS_MEDIA = false;
 const uint MEDIUM_ENTRY_STRIDE = 1u;
@@ -157,23 +160,25 @@ layout(std140, binding = 1) uniform TileParams_block_0Compute { TileParams _grou
 
 layout(std140, binding = 0) uniform FrameUniforms_block_1Compute { FrameUniforms _group_0_binding_0_cs; };
 
+uint scratch[14] = uint[14](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+
 uint rng_state = 0u;
 
-layout(std430, binding = 6) readonly buffer type_4_block_2Compute { uint _group_0_binding_6_cs[]; };
+layout(std430, binding = 6) readonly buffer type_5_block_2Compute { uint _group_0_binding_6_cs[]; };
 
 uint F32_INF = 2139095040u;
 
-layout(std430, binding = 3) readonly buffer type_8_block_3Compute { GpuInstance _group_0_binding_3_cs[]; };
+layout(std430, binding = 3) readonly buffer type_9_block_3Compute { GpuInstance _group_0_binding_3_cs[]; };
 
-layout(std430, binding = 2) readonly buffer type_9_block_4Compute { GpuNode _group_0_binding_2_cs[]; };
+layout(std430, binding = 2) readonly buffer type_10_block_4Compute { GpuNode _group_0_binding_2_cs[]; };
 
-layout(std430, binding = 4) readonly buffer type_10_block_5Compute { vec4 _group_0_binding_4_cs[]; };
+layout(std430, binding = 4) readonly buffer type_11_block_5Compute { vec4 _group_0_binding_4_cs[]; };
 
 uint traversal_stack[65] = uint[65](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
 float hit_error = 0.0;
 
-layout(std430, binding = 5) readonly buffer type_14_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
+layout(std430, binding = 5) readonly buffer type_15_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
 
 uint ray_count = 0u;
 
@@ -183,9 +188,9 @@ vec3 spawn_weights[1] = vec3[1](vec3(0.0));
 
 uint spawn_count = 0u;
 
-layout(std430, binding = 9) buffer type_18_block_7Compute { uint _group_0_binding_9_cs[]; };
+layout(std430, binding = 9) buffer type_19_block_7Compute { uint _group_0_binding_9_cs[]; };
 
-layout(std430, binding = 8) buffer type_10_block_8Compute { vec4 _group_0_binding_8_cs[]; };
+layout(std430, binding = 8) buffer type_11_block_8Compute { vec4 _group_0_binding_8_cs[]; };
 
 
 uvec2 div_vec2u(uvec2 a, uvec2 b) {
@@ -232,24 +237,23 @@ uvec2 scattered_local(uvec2 id) {
 }
 
 uint pcg_hash(uint x) {
-    uint state = ((x * 747796405u) + 2891336453u);
-    uint word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    uint state_1 = ((x * 747796405u) + 2891336453u);
+    uint word = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
     return ((word >> 22u) ^ word);
 }
 
-void rng_seed(uvec2 pixel, uint sample_, uint seed) {
-    uint h = 0u;
-    uint _e5 = pcg_hash(seed);
-    uint _e7 = pcg_hash((sample_ ^ _e5));
-    uint _e9 = pcg_hash((pixel.y ^ _e7));
-    uint _e11 = pcg_hash((pixel.x ^ _e9));
-    h = _e11;
-    uint _e13 = h;
-    if ((_e13 == 0u)) {
-        h = 1u;
-    }
-    uint _e17 = h;
-    rng_state = _e17;
+void rng_resume(uvec2 pixel, uint sample_, uint seed, uint state) {
+    scratch[min(SCRATCH_RNG_INDEX, 13u)] = sample_;
+    uint _e12 = pcg_hash(seed);
+    uint _e14 = pcg_hash((pixel.y ^ _e12));
+    uint _e16 = pcg_hash((pixel.x ^ _e14));
+    scratch[min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    rng_state = state;
+    return;
+}
+
+void rng_seed(uvec2 pixel_1, uint sample_1, uint seed_1) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u);
     return;
 }
 
@@ -277,13 +281,65 @@ uint samples_per_pixel_query() {
     return _e1.total_samples;
 }
 
+uint laine_karras(uint x_1, uint seed_2) {
+    uint v = 0u;
+    v = (x_1 + seed_2);
+    uint _e4 = v;
+    uint _e5 = v;
+    v = (_e4 ^ (_e5 * 1817228412u));
+    uint _e9 = v;
+    uint _e10 = v;
+    v = (_e9 ^ (_e10 * 3090095698u));
+    uint _e14 = v;
+    uint _e15 = v;
+    v = (_e14 ^ (_e15 * 3350193720u));
+    uint _e19 = v;
+    uint _e20 = v;
+    v = (_e19 ^ (_e20 * 2367878886u));
+    uint _e24 = v;
+    return _e24;
+}
+
+uint sobol_second_reversed(uint i) {
+    uint f = 0u;
+    f = i;
+    uint _e2 = f;
+    uint _e3 = f;
+    f = (_e2 ^ ((_e3 >> 1u) & 1431655765u));
+    uint _e9 = f;
+    uint _e10 = f;
+    f = (_e9 ^ ((_e10 >> 2u) & 858993459u));
+    uint _e16 = f;
+    uint _e17 = f;
+    f = (_e16 ^ ((_e17 >> 4u) & 252645135u));
+    uint _e23 = f;
+    uint _e24 = f;
+    f = (_e23 ^ ((_e24 >> 8u) & 16711935u));
+    uint _e30 = f;
+    uint _e31 = f;
+    f = (_e30 ^ (_e31 >> (HALF_WORD_BITS & 31u)));
+    uint _e37 = f;
+    return _e37;
+}
+
 float rand_next() {
-    uint _e1 = rng_state;
-    uint s_4 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_4;
-    uint word_1 = (((s_4 >> (((s_4 >> 28u) + 4u) & 31u)) ^ s_4) * 277803737u);
-    uint r_3 = ((word_1 >> 22u) ^ word_1);
-    return (float((r_3 >> 8u)) * (1.0 / 16777216.0));
+    uint x_2 = 0u;
+    uint d_1 = rng_state;
+    rng_state = (d_1 + 1u);
+    uint _e10 = scratch[min(SCRATCH_RNG_SEED, 13u)];
+    uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 13u)];
+    uint _e24 = laine_karras(bitfieldReverse(_e22), _e16);
+    uint i_4 = bitfieldReverse(_e24);
+    x_2 = i_4;
+    if (((d_1 & 1u) != 0u)) {
+        uint _e31 = sobol_second_reversed(i_4);
+        x_2 = _e31;
+    }
+    uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    uint _e45 = x_2;
+    uint _e46 = laine_karras(_e45, scramble);
+    return (float((bitfieldReverse(_e46) >> 8u)) * (1.0 / 16777216.0));
 }
 
 vec2 rand2_next() {
@@ -292,11 +348,11 @@ vec2 rand2_next() {
     return vec2(_e0, _e1);
 }
 
-vec3 normalize_vec3f(vec3 v) {
-    return ((dot(v, v) >= 1.1754944e-38) ? normalize(v) : vec3(0.0));
+vec3 normalize_vec3f(vec3 v_1) {
+    return ((dot(v_1, v_1) >= 1.1754944e-38) ? normalize(v_1) : vec3(0.0));
 }
 
-Ray pinhole_ray(Pinhole cam, uvec2 pixel_1, uint sample_1) {
+Ray pinhole_ray(Pinhole cam, uvec2 pixel_2, uint sample_2) {
     vec2 jitter = vec2(0.0);
     uvec2 _e2 = image_size_query();
     vec2 size_1 = vec2(_e2);
@@ -307,20 +363,20 @@ Ray pinhole_ray(Pinhole cam, uvec2 pixel_1, uint sample_1) {
         jitter = _e10;
     }
     vec2 _e12 = jitter;
-    vec2 ndc = ((((vec2(pixel_1) + _e12) / size_1) * vec2(2.0)) - vec2(1.0));
+    vec2 ndc = ((((vec2(pixel_2) + _e12) / size_1) * vec2(2.0)) - vec2(1.0));
     vec3 _e24 = normalize_vec3f((cam.look_at - cam.position));
     vec3 _e27 = normalize_vec3f(cross(_e24, cam.up));
     vec3 up = cross(_e27, _e24);
-    float h_1 = tan((radians(cam.fov) * 0.5));
+    float h = tan((radians(cam.fov) * 0.5));
     float aspect = (size_1.x / size_1.y);
-    vec3 _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
+    vec3 _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h) * aspect)))) - (up * vec3((ndc.y * h)))));
     uint _e52 = F32_INF;
     return Ray(cam.position, 0.0, _e48, uintBitsToFloat(_e52), 0u, 0u, 0u);
 }
 
-Ray dispatch_ray_generation(uint type_id, uint offset_1, uvec2 pixel_2, uint sample_2) {
+Ray dispatch_ray_generation(uint type_id, uint offset_1, uvec2 pixel_3, uint sample_3) {
     Pinhole _e3 = load_Pinhole(offset_1);
-    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
+    Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
     return _e4;
 }
 
@@ -332,34 +388,34 @@ Ray to_object(GpuInstance inst, Ray ray) {
     Ray r = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     r = ray;
     vec4 o = vec4(ray.origin, 1.0);
-    vec4 d_1 = vec4(ray.dir, 0.0);
+    vec4 d_2 = vec4(ray.dir, 0.0);
     r.origin = vec3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = vec3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
+    r.dir = vec3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
     return _e25;
 }
 
 vec3 safe_inverse(vec3 d) {
     vec3 tiny = vec3(1.1754944e-38);
-    vec3 s_5 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
-    vec3 dd = mix(d, (s_5 * tiny), lessThan(abs(d), tiny));
+    vec3 s_4 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
+    vec3 dd = mix(d, (s_4 * tiny), lessThan(abs(d), tiny));
     return (vec3(1.0) / dd);
 }
 
 TriangleRay prepare_triangle_ray(Ray ray_1) {
-    vec3 d_2 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
-    vec3 ad = abs(d_2);
+    vec3 d_3 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
+    vec3 ad = abs(d_3);
     bool y_gt = (ad.y > ad.x);
     uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
     uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
     uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
-    float dz = d_2[min(kz, 2u)];
+    float dz = d_3[min(kz, 2u)];
     bool flip = (dz < 0.0);
     uint kx = (flip ? ky0_ : kx0_);
     uint ky = (flip ? kx0_ : ky0_);
     uvec3 inf_bits = uvec3(2139095040u);
-    bool finite = (all(lessThan((floatBitsToUint(ray_1.origin) & uvec3(2147483647u)), inf_bits)) && all(lessThan((floatBitsToUint(d_2) & uvec3(2147483647u)), inf_bits)));
-    return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_2[min(kx, 2u)] / dz), (d_2[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    bool finite = (all(lessThan((floatBitsToUint(ray_1.origin) & uvec3(2147483647u)), inf_bits)) && all(lessThan((floatBitsToUint(d_3) & uvec3(2147483647u)), inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
 }
 
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
@@ -376,15 +432,15 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
     float cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
-    float v_1 = ((ax * cy) - (ay * cx));
+    float v_2 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
-    bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
-    float det = ((u + v_1) + w);
+    bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
+    float det = ((u + v_2) + w);
     float rcp = (1.0 / det);
-    float t_3 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    float t_3 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
     bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_8 ? vec3(t_3, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_8 ? vec3(t_3, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
@@ -594,9 +650,9 @@ vec3 decode_octahedral(uint bits) {
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n_1;
-        vec2 s_6 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
+        vec2 s_5 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
         vec3 _e29 = n_1;
-        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_6);
+        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_5);
         float _e37 = n_1.z;
         n_1 = vec3(xy.x, xy.y, _e37);
     }
@@ -667,7 +723,7 @@ Hit finish_hit(Ray ray_6, Candidate c_1) {
 uint medium_at(vec3 p_4, uint exclude) {
     uint inside = 0u;
     float nearest = 0.0;
-    uint i = 0u;
+    uint i_1 = 0u;
     if (!(HAS_MEDIA)) {
         return 0u;
     }
@@ -679,19 +735,19 @@ uint medium_at(vec3 p_4, uint exclude) {
     uint _e23 = F32_INF;
     nearest = uintBitsToFloat(_e23);
     uint end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e59 = i;
-            i = (_e59 + 1u);
+            uint _e59 = i_1;
+            i_1 = (_e59 + 1u);
         }
         loop_init_1 = false;
-        uint _e29 = i;
+        uint _e29 = i_1;
         if ((_e29 >= end)) {
             break;
         }
-        uint _e32 = i;
+        uint _e32 = i_1;
         uint slot_4 = _group_0_binding_6_cs[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if ((slot_4 != exclude)) {
             uint _e41 = F32_INF;
@@ -879,18 +935,18 @@ PointLight load_PointLight(uint offset_5) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
-vec3 step_toward(vec3 x_1, vec3 s) {
-    uvec3 bits_1 = floatBitsToUint(x_1);
-    bvec3 up_1 = greaterThan((sign(x_1) * sign(s)), vec3(0.0));
+vec3 step_toward(vec3 x_3, vec3 s) {
+    uvec3 bits_1 = floatBitsToUint(x_3);
+    bvec3 up_1 = greaterThan((sign(x_3) * sign(s)), vec3(0.0));
     vec3 stepped = uintBitsToFloat(mix((bits_1 - uvec3(1u)), (bits_1 + uvec3(1u)), up_1));
     vec3 from_zero = mix(vec3(-1.1754944e-38), vec3(1.1754944e-38), greaterThan(s, vec3(0.0)));
-    vec3 moved = mix(stepped, from_zero, equal(x_1, vec3(0.0)));
-    return mix(x_1, moved, not(equal(s, vec3(0.0))));
+    vec3 moved = mix(stepped, from_zero, equal(x_3, vec3(0.0)));
+    return mix(x_3, moved, not(equal(s, vec3(0.0))));
 }
 
 vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
-    float d_3 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    vec3 offset_11 = (n_3 * vec3(d_3));
+    float d_4 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
+    vec3 offset_11 = (n_3 * vec3(d_4));
     vec3 _e17 = step_toward((p_5 + offset_11), offset_11);
     return _e17;
 }
@@ -950,12 +1006,12 @@ LightSample dispatch_light(uint type_id_2, uint offset_6, vec3 position_3, vec3 
     return _e4;
 }
 
-LightSample sample_light_query(uint i_1, vec3 position_4, vec3 normal_4) {
+LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_4) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    if ((i_1 >= frame_4.light_count)) {
+    if ((i_2 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
-    uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     uint _e22 = _group_0_binding_6_cs[entry];
     uint _e27 = _group_0_binding_6_cs[(entry + 1u)];
     LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
@@ -964,23 +1020,23 @@ LightSample sample_light_query(uint i_1, vec3 position_4, vec3 normal_4) {
 
 vec3 lambert_shade(Lambert m, Ray ray_12, Hit hit_2) {
     vec3 color = vec3(0.0);
-    uint i_2 = 0u;
+    uint i_3 = 0u;
     vec3 _e3 = shading_normal(ray_12, hit_2);
     color = vec3(0.0);
     uint _e8 = light_count_query();
-    i_2 = 0u;
+    i_3 = 0u;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e30 = i_2;
-            i_2 = (_e30 + 1u);
+            uint _e30 = i_3;
+            i_3 = (_e30 + 1u);
         }
         loop_init_2 = false;
-        uint _e10 = i_2;
+        uint _e10 = i_3;
         if ((_e10 >= _e8)) {
             break;
         }
-        uint _e12 = i_2;
+        uint _e12 = i_3;
         LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
         vec3 _e16 = color;
         color = (_e16 + (((m.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0.0))));
@@ -1200,8 +1256,8 @@ vec3 trace(Ray camera_ray_1) {
     return _e23;
 }
 
-bvec3 is_finite_vec3f(vec3 x_2) {
-    return lessThan((floatBitsToUint(x_2) & uvec3(2147483647u)), uvec3(2139095040u));
+bvec3 is_finite_vec3f(vec3 x_4) {
+    return lessThan((floatBitsToUint(x_4) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
 vec3 finite_or_zero(vec3 c_4) {
@@ -1209,7 +1265,7 @@ vec3 finite_or_zero(vec3 c_4) {
     return mix(vec3(0.0), c_4, _e3);
 }
 
-void render_pixel(uvec2 pixel_3) {
+void render_pixel(uvec2 pixel_4) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s_3 = 0u;
@@ -1232,9 +1288,9 @@ void render_pixel(uvec2 pixel_3) {
             break;
         }
         uint _e18 = s_3;
-        uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_3, sample_3, frame_5.seed);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_4, sample_4, frame_5.seed);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
         ray_20 = _e23;
         ray_20.depth = 0u;
         ray_20.kind = RAY_CAMERA;
@@ -1261,10 +1317,10 @@ void render_pixel(uvec2 pixel_3) {
     vec4 _e62 = vec4(_e59, float(frame_5.samples_per_pass));
     uint _e63 = bad;
     if ((tile_2.frame == 0u)) {
-        _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = _e62;
+        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
     } else {
-        vec4 _e69 = _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)];
-        _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = (_e69 + _e62);
+        vec4 _e69 = _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
+        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
     }
     if ((_e63 > 0u)) {
         atomicAdd(_group_0_binding_9_cs[0], _e63);

@@ -5,11 +5,11 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size3;
-    uint size5;
+    uint size4;
     uint size6;
     uint size7;
-    uint size10;
+    uint size8;
+    uint size11;
     uint size13;
     uint size17;
 };
@@ -37,6 +37,9 @@ struct FrameUniforms {
     uint background_offset;
     uint path_slots;
 };
+struct type_3 {
+    uint inner[24];
+};
 struct Ray {
     metal::packed_float3 origin;
     float tmin;
@@ -47,7 +50,7 @@ struct Ray {
     uint medium;
     char _pad7[4];
 };
-typedef uint type_4[1];
+typedef uint type_5[1];
 struct Pinhole {
     metal::float3 position;
     metal::float3 look_at;
@@ -79,7 +82,7 @@ struct GpuInstance {
     uint flags;
     uint object;
 };
-typedef GpuInstance type_8[1];
+typedef GpuInstance type_9[1];
 struct TriangleRay {
     metal::packed_float3 origin;
     uint kx;
@@ -96,9 +99,9 @@ struct GpuNode {
     metal::packed_float3 max;
     uint b;
 };
-typedef GpuNode type_9[1];
-typedef metal::float4 type_10[1];
-struct type_12 {
+typedef GpuNode type_10[1];
+typedef metal::float4 type_11[1];
+struct type_13 {
     uint inner[70];
 };
 struct Box {
@@ -133,7 +136,7 @@ struct Triangle {
     metal::float3 v1_;
     metal::float3 v2_;
 };
-typedef metal::uint4 type_14[1];
+typedef metal::uint4 type_15[1];
 struct ConstantBackground {
     metal::float3 color;
 };
@@ -145,9 +148,6 @@ struct LightSample {
     float dist;
     metal::packed_float3 radiance;
     float pdf;
-};
-struct type_15 {
-    uint inner[22];
 };
 struct DirectionalLight {
     metal::float3 direction;
@@ -204,6 +204,9 @@ constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint NO_HIT = 4294967295u;
 constant uint SCATTER = 1000003u;
+constant uint SCRATCH_RNG_INDEX = 12u;
+constant uint SCRATCH_RNG_SEED = 13u;
+constant uint HALF_WORD_BITS = 16u;
 constant uint RAY_CAMERA = 0u;
 constant bool HAS_MEDIA = false;
 constant uint MEDIUM_ENTRY_STRIDE = 1u;
@@ -229,7 +232,7 @@ constant uint SCRATCH_QUERY = 2u;
 constant uint SCRATCH_PENDING = 4u;
 constant uint LIGHT_QUERIES = 32u;
 constant uint COUNTER_SHADOW_OVERFLOW = 3u;
-constant uint SCRATCH_LIGHT_QUERY = 12u;
+constant uint SCRATCH_LIGHT_QUERY = 14u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
 constant uint FLAG_MEDIUM = 4u;
@@ -316,35 +319,42 @@ metal::uint2 scattered_local(
 uint pcg_hash(
     uint x
 ) {
-    uint state = (x * 747796405u) + 2891336453u;
-    uint word = ((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u;
+    uint state_1 = (x * 747796405u) + 2891336453u;
+    uint word = ((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u;
     return (word >> 22u) ^ word;
 }
 
-void rng_seed(
+void rng_resume(
     metal::uint2 pixel,
     uint sample,
     uint seed,
+    uint state,
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    uint h = {};
-    uint _e5 = pcg_hash(seed);
-    uint _e7 = pcg_hash(sample ^ _e5);
-    uint _e9 = pcg_hash(pixel.y ^ _e7);
-    uint _e11 = pcg_hash(pixel.x ^ _e9);
-    h = _e11;
-    uint _e13 = h;
-    if (_e13 == 0u) {
-        h = 1u;
-    }
-    uint _e17 = h;
-    rng_state = _e17;
+    scratch.inner[metal::min(SCRATCH_RNG_INDEX, 23u)] = sample;
+    uint _e12 = pcg_hash(seed);
+    uint _e14 = pcg_hash(pixel.y ^ _e12);
+    uint _e16 = pcg_hash(pixel.x ^ _e14);
+    scratch.inner[metal::min(SCRATCH_RNG_SEED, 23u)] = _e16;
+    rng_state = state;
+    return;
+}
+
+void rng_seed(
+    metal::uint2 pixel_1,
+    uint sample_1,
+    uint seed_1,
+    thread type_3& scratch,
+    thread uint& rng_state
+) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u, scratch, rng_state);
     return;
 }
 
 Pinhole load_Pinhole(
     uint offset,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset + 0u];
@@ -374,37 +384,97 @@ uint samples_per_pixel_query(
     return _e1.total_samples;
 }
 
+uint laine_karras(
+    uint x_1,
+    uint seed_2
+) {
+    uint v = {};
+    v = x_1 + seed_2;
+    uint _e4 = v;
+    uint _e5 = v;
+    v = _e4 ^ (_e5 * 1817228412u);
+    uint _e9 = v;
+    uint _e10 = v;
+    v = _e9 ^ (_e10 * 3090095698u);
+    uint _e14 = v;
+    uint _e15 = v;
+    v = _e14 ^ (_e15 * 3350193720u);
+    uint _e19 = v;
+    uint _e20 = v;
+    v = _e19 ^ (_e20 * 2367878886u);
+    uint _e24 = v;
+    return _e24;
+}
+
+uint sobol_second_reversed(
+    uint i
+) {
+    uint f = {};
+    f = i;
+    uint _e2 = f;
+    uint _e3 = f;
+    f = _e2 ^ ((_e3 >> 1u) & 1431655765u);
+    uint _e9 = f;
+    uint _e10 = f;
+    f = _e9 ^ ((_e10 >> 2u) & 858993459u);
+    uint _e16 = f;
+    uint _e17 = f;
+    f = _e16 ^ ((_e17 >> 4u) & 252645135u);
+    uint _e23 = f;
+    uint _e24 = f;
+    f = _e23 ^ ((_e24 >> 8u) & 16711935u);
+    uint _e30 = f;
+    uint _e31 = f;
+    f = _e30 ^ (_e31 >> (HALF_WORD_BITS & 31u));
+    uint _e37 = f;
+    return _e37;
+}
+
 float rand_next(
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    uint _e1 = rng_state;
-    uint s_3 = (_e1 * 747796405u) + 2891336453u;
-    rng_state = s_3;
-    uint word_1 = ((s_3 >> (((s_3 >> 28u) + 4u) & 31u)) ^ s_3) * 277803737u;
-    uint r_3 = (word_1 >> 22u) ^ word_1;
-    return static_cast<float>(r_3 >> 8u) * (1.0 / 16777216.0);
+    uint x_2 = {};
+    uint d_1 = rng_state;
+    rng_state = d_1 + 1u;
+    uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 23u)];
+    uint _e16 = pcg_hash(_e10 ^ ((d_1 >> 1u) * 2654435769u));
+    uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 23u)];
+    uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
+    uint i_7 = metal::reverse_bits(_e24);
+    x_2 = i_7;
+    if ((d_1 & 1u) != 0u) {
+        uint _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    uint scramble = _e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
+    uint _e45 = x_2;
+    uint _e46 = laine_karras(_e45, scramble);
+    return static_cast<float>(metal::reverse_bits(_e46) >> 8u) * (1.0 / 16777216.0);
 }
 
 metal::float2 rand2_next(
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    float _e0 = rand_next(rng_state);
-    float _e1 = rand_next(rng_state);
+    float _e0 = rand_next(scratch, rng_state);
+    float _e1 = rand_next(scratch, rng_state);
     return metal::float2(_e0, _e1);
 }
 
 metal::float3 normalize_vec3f(
-    metal::float3 v
+    metal::float3 v_1
 ) {
-    return (metal::dot(v, v) >= 0.000000000000000000000000000000000000011754944) ? metal::normalize(v) : metal::float3(0.0);
+    return (metal::dot(v_1, v_1) >= 0.000000000000000000000000000000000000011754944) ? metal::normalize(v_1) : metal::float3(0.0);
 }
 
 Ray pinhole_ray(
     Pinhole cam,
-    metal::uint2 pixel_1,
-    uint sample_1,
+    metal::uint2 pixel_2,
+    uint sample_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -414,17 +484,17 @@ Ray pinhole_ray(
     jitter = metal::float2(0.5);
     uint _e7 = samples_per_pixel_query(frame);
     if (_e7 > 1u) {
-        metal::float2 _e10 = rand2_next(rng_state);
+        metal::float2 _e10 = rand2_next(scratch, rng_state);
         jitter = _e10;
     }
     metal::float2 _e12 = jitter;
-    metal::float2 ndc = (((static_cast<metal::float2>(pixel_1) + _e12) / size_1) * metal::float2(2.0)) - metal::float2(1.0);
+    metal::float2 ndc = (((static_cast<metal::float2>(pixel_2) + _e12) / size_1) * metal::float2(2.0)) - metal::float2(1.0);
     metal::float3 _e24 = normalize_vec3f(cam.look_at - cam.position);
     metal::float3 _e27 = normalize_vec3f(metal::cross(_e24, cam.up));
     metal::float3 up = metal::cross(_e27, _e24);
-    float h_1 = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
+    float h = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
     float aspect = size_1.x / size_1.y;
-    metal::float3 _e48 = normalize_vec3f((_e24 + (_e27 * metal::float3((ndc.x * h_1) * aspect))) - (up * metal::float3(ndc.y * h_1)));
+    metal::float3 _e48 = normalize_vec3f((_e24 + (_e27 * metal::float3((ndc.x * h) * aspect))) - (up * metal::float3(ndc.y * h)));
     uint _e52 = F32_INF;
     return Ray {cam.position, 0.0, _e48, as_type<float>(_e52), 0u, 0u, 0u};
 }
@@ -432,17 +502,18 @@ Ray pinhole_ray(
 Ray dispatch_ray_generation(
     uint type_id,
     uint offset_1,
-    metal::uint2 pixel_2,
-    uint sample_2,
+    metal::uint2 pixel_3,
+    uint sample_3,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Pinhole _e3 = load_Pinhole(offset_1, params, _buffer_sizes);
-    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2, tile, frame, rng_state, F32_INF);
+    Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3, tile, frame, scratch, rng_state, F32_INF);
     return _e4;
 }
 
@@ -459,9 +530,9 @@ Ray to_object(
     Ray r = {};
     r = ray;
     metal::float4 o = metal::float4(ray.origin, 1.0);
-    metal::float4 d_1 = metal::float4(ray.dir, 0.0);
+    metal::float4 d_2 = metal::float4(ray.dir, 0.0);
     r.origin = metal::float3(metal::dot(inst.world_to_object_0_, o), metal::dot(inst.world_to_object_1_, o), metal::dot(inst.world_to_object_2_, o));
-    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_1), metal::dot(inst.world_to_object_1_, d_1), metal::dot(inst.world_to_object_2_, d_1));
+    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_2), metal::dot(inst.world_to_object_1_, d_2), metal::dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
     return _e25;
 }
@@ -470,27 +541,27 @@ metal::float3 safe_inverse(
     metal::float3 d
 ) {
     metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_4 * tiny, metal::abs(d) < tiny);
+    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_3 * tiny, metal::abs(d) < tiny);
     return metal::float3(1.0) / dd;
 }
 
 TriangleRay prepare_triangle_ray(
     Ray ray_1
 ) {
-    metal::float3 d_2 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
-    metal::float3 ad = metal::abs(d_2);
+    metal::float3 d_3 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 ad = metal::abs(d_3);
     bool y_gt = ad.y > ad.x;
     uint kz = (ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u);
     uint kx0_ = (kz == 2u) ? 0u : (kz + 1u);
     uint ky0_ = (kz >= 1u) ? (kz - 1u) : (kz + 2u);
-    float dz = d_2[metal::min(kz, 2u)];
+    float dz = d_3[metal::min(kz, 2u)];
     bool flip = dz < 0.0;
     uint kx = flip ? ky0_ : kx0_;
     uint ky = flip ? kx0_ : ky0_;
     metal::uint3 inf_bits = metal::uint3(2139095040u);
-    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_2) & metal::uint3(2147483647u)) < inf_bits);
-    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_2[metal::min(kx, 2u)] / dz, d_2[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
+    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_3) & metal::uint3(2147483647u)) < inf_bits);
+    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_3[metal::min(kx, 2u)] / dz, d_3[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
 }
 
 metal::float3 hit_triangle(
@@ -499,7 +570,7 @@ metal::float3 hit_triangle(
     float tmin,
     float tmax_1,
     thread uint& F32_INF,
-    device type_10 const& triangles,
+    device type_11 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e8 = triangles[slot * 3u];
@@ -515,15 +586,15 @@ metal::float3 hit_triangle(
     float cx = c_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_4[metal::min(r_1.kz, 2u)]);
     float cy = c_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_4[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
-    float v_2 = (ax * cy) - (ay * cx);
+    float v_3 = (ax * cy) - (ay * cx);
     float w = (bx * ay) - (by * ax);
-    bool outside = (((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0));
-    float det = (u + v_2) + w;
+    bool outside = (((u < 0.0) || (v_3 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_3 > 0.0)) || (w > 0.0));
+    float det = (u + v_3) + w;
     float rcp = 1.0 / det;
-    float t_6 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_6 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_3 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_7 ? metal::float3(t_6, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_7 ? metal::float3(t_6, v_3 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -603,7 +674,7 @@ metal::float2 children_entry(
 metal::uint2 pop(
     uint base,
     uint sp,
-    thread type_12& traversal_stack
+    thread type_13& traversal_stack
 ) {
     if (sp == 0u) {
         return metal::uint2(NO_HIT, 0u);
@@ -620,9 +691,9 @@ Candidate intersect_mesh(
     Candidate best_in,
     bool shadow,
     thread uint& F32_INF,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Candidate best = {};
@@ -735,7 +806,7 @@ Candidate intersect_mesh(
 
 Box load_Box(
     uint offset_2,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_2 + 0u];
@@ -799,7 +870,7 @@ Intersection box_intersect(
 
 Sphere load_Sphere(
     uint offset_3,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_3 + 0u];
@@ -815,10 +886,10 @@ Intersection sphere_intersect(
     thread uint& F32_INF
 ) {
     float t_1 = {};
-    metal::float3 f_1 = ray_6.origin - s.center;
+    metal::float3 f_2 = ray_6.origin - s.center;
     float a_5 = metal::dot(ray_6.dir, ray_6.dir);
-    float b_7 = -(metal::dot(f_1, ray_6.dir));
-    metal::float3 l_4 = f_1 + (ray_6.dir * metal::float3(b_7 / a_5));
+    float b_7 = -(metal::dot(f_2, ray_6.dir));
+    metal::float3 l_4 = f_2 + (ray_6.dir * metal::float3(b_7 / a_5));
     float r2_ = s.radius * s.radius;
     float disc = a_5 * (r2_ - metal::dot(l_4, l_4));
     if (!((disc >= 0.0)) || !((a_5 > 0.0))) {
@@ -826,7 +897,7 @@ Intersection sphere_intersect(
         return Intersection {as_type<float>(_e30), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     }
     float q_1 = b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * metal::sqrt(disc));
-    float t0_1 = (metal::dot(f_1, f_1) - r2_) / q_1;
+    float t0_1 = (metal::dot(f_2, f_2) - r2_) / q_1;
     float t1_1 = q_1 / a_5;
     t_1 = metal::min(t0_1, t1_1);
     float _e52 = t_1;
@@ -851,7 +922,7 @@ Intersection dispatch_intersection(
     uint type_id_1,
     uint offset_4,
     Ray ray_7,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -878,12 +949,12 @@ Candidate intersect_object(
     Ray ray_8,
     Candidate best_1,
     bool shadow_1,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray r_2 = {};
@@ -921,7 +992,7 @@ float point_error(
 
 Triangle load_triangle(
     uint slot_3,
-    device type_10 const& triangles,
+    device type_11 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 v0_1 = triangles[slot_3 * 3u];
@@ -965,9 +1036,9 @@ metal::float3 decode_octahedral(
     float _e14 = n_2.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n_2;
-        metal::float2 s_5 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float2 s_4 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
         metal::float3 _e29 = n_2;
-        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_5;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_4;
         float _e37 = n_2.z;
         n_2 = metal::float3(xy.x, xy.y, _e37);
     }
@@ -988,10 +1059,10 @@ metal::float3 normal_to_world(
 Hit finish_hit(
     Ray ray_9,
     Candidate c_1,
-    device type_8 const& instances,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Hit hit = {};
@@ -1050,19 +1121,19 @@ uint medium_at(
     metal::float3 p_4,
     uint exclude,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint inside = {};
     float nearest = {};
-    uint i = {};
+    uint i_1 = {};
     if (!(HAS_MEDIA)) {
         return 0u;
     }
@@ -1074,22 +1145,22 @@ uint medium_at(
     uint _e23 = F32_INF;
     nearest = as_type<float>(_e23);
     uint end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e59 = i;
-            i = _e59 + 1u;
+            uint _e59 = i_1;
+            i_1 = _e59 + 1u;
         }
         loop_init_1 = false;
-        uint _e29 = i;
+        uint _e29 = i_1;
         if (_e29 >= end) {
             break;
         }
-        uint _e32 = i;
+        uint _e32 = i_1;
         uint slot_4 = params[frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE)];
         if (slot_4 != exclude) {
             uint _e41 = F32_INF;
@@ -1120,12 +1191,12 @@ Candidate intersect_scene(
     Ray ray_10,
     bool shadow_2,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1229,7 +1300,7 @@ Candidate intersect_scene(
 
 ConstantBackground load_ConstantBackground(
     uint offset_5,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_5 + 0u];
@@ -1249,7 +1320,7 @@ metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_6,
     Ray ray_12,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     ConstantBackground _e2 = load_ConstantBackground(offset_6, params, _buffer_sizes);
@@ -1260,7 +1331,7 @@ metal::float3 dispatch_miss(
 metal::float3 miss(
     Ray ray_13,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (!(HAS_BACKGROUND)) {
@@ -1273,7 +1344,7 @@ metal::float3 miss(
 
 Lambert load_Lambert(
     uint offset_7,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_7 + 0u];
@@ -1299,7 +1370,7 @@ uint light_count_query(
 
 DirectionalLight load_DirectionalLight(
     uint offset_8,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_8 + 0u];
@@ -1313,14 +1384,14 @@ DirectionalLight load_DirectionalLight(
 }
 
 void scratch_store3f(
-    uint i_1,
-    metal::float3 v_1,
-    thread type_15& scratch
+    uint i_2,
+    metal::float3 v_2,
+    thread type_3& scratch
 ) {
-    metal::uint3 b_9 = as_type<metal::uint3>(v_1);
-    scratch.inner[metal::min(i_1, 21u)] = b_9.x;
-    scratch.inner[metal::min(i_1 + 1u, 21u)] = b_9.y;
-    scratch.inner[metal::min(i_1 + 2u, 21u)] = b_9.z;
+    metal::uint3 b_9 = as_type<metal::uint3>(v_2);
+    scratch.inner[metal::min(i_2, 23u)] = b_9.x;
+    scratch.inner[metal::min(i_2 + 1u, 23u)] = b_9.y;
+    scratch.inner[metal::min(i_2 + 2u, 23u)] = b_9.z;
     return;
 }
 
@@ -1329,30 +1400,30 @@ float shadow_deferred(
     metal::float3 normal,
     metal::float3 dir,
     float dist,
-    thread type_15& scratch,
+    thread type_3& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_6 = scratch.inner[metal::min(SCRATCH_QUERY, 21u)];
-    scratch.inner[metal::min(SCRATCH_QUERY, 21u)] = i_6 + 1u;
-    uint _e22 = scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)];
-    if (i_6 < _e22) {
-        uint _e29 = scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)];
-        return static_cast<float>((_e29 >> (i_6 & 31u)) & 1u);
+    uint i_8 = scratch.inner[metal::min(SCRATCH_QUERY, 23u)];
+    scratch.inner[metal::min(SCRATCH_QUERY, 23u)] = i_8 + 1u;
+    uint _e22 = scratch.inner[metal::min(SCRATCH_RESOLVED, 23u)];
+    if (i_8 < _e22) {
+        uint _e29 = scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 23u)];
+        return static_cast<float>((_e29 >> (i_8 & 31u)) & 1u);
     }
-    uint _e41 = scratch.inner[metal::min(SCRATCH_PENDING, 21u)];
+    uint _e41 = scratch.inner[metal::min(SCRATCH_PENDING, 23u)];
     if (_e41 != 0u) {
         return 1.0;
     }
-    if (i_6 >= LIGHT_QUERIES) {
+    if (i_8 >= LIGHT_QUERIES) {
         metal::atomic_fetch_add_explicit(&counters[metal::min(COUNTER_SHADOW_OVERFLOW, 3u)], 1u, metal::memory_order_relaxed);
         return 1.0;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position, scratch);
     scratch_store3f(SCRATCH_LIGHT_QUERY + 3u, normal, scratch);
     scratch_store3f(SCRATCH_LIGHT_QUERY + 6u, dir, scratch);
-    scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 21u)] = as_type<uint>(dist);
-    scratch.inner[metal::min(SCRATCH_PENDING, 21u)] = 1u;
+    scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 23u)] = as_type<uint>(dist);
+    scratch.inner[metal::min(SCRATCH_PENDING, 23u)] = 1u;
     return 1.0;
 }
 
@@ -1360,8 +1431,8 @@ LightSample directional_light(
     DirectionalLight l,
     metal::float3 position_1,
     metal::float3 normal_1,
+    thread type_3& scratch,
     thread uint& F32_INF,
-    thread type_15& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1379,7 +1450,7 @@ LightSample directional_light(
 
 PointLight load_PointLight(
     uint offset_9,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_9 + 0u];
@@ -1398,7 +1469,7 @@ LightSample point_light(
     PointLight l_1,
     metal::float3 position_2,
     metal::float3 normal_2,
-    thread type_15& scratch,
+    thread type_3& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1418,7 +1489,7 @@ LightSample point_light(
 
 SphereLight load_SphereLight(
     uint offset_10,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_10 + 0u];
@@ -1447,8 +1518,8 @@ LightSample sphere_light(
     SphereLight l_2,
     metal::float3 position_3,
     metal::float3 normal_3,
+    thread type_3& scratch,
     thread uint& rng_state,
-    thread type_15& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1462,7 +1533,7 @@ LightSample sphere_light(
     float s2_ = r2_2 / d2_;
     float cos_max = metal::sqrt(1.0 - s2_);
     float one_minus_cos_max = s2_ / (1.0 + cos_max);
-    metal::float2 _e31 = rand2_next(rng_state);
+    metal::float2 _e31 = rand2_next(scratch, rng_state);
     float cos_t = 1.0 - (_e31.x * one_minus_cos_max);
     float sin_t = metal::sqrt(metal::max(1.0 - (cos_t * cos_t), 0.0));
     float phi = TAU * _e31.y;
@@ -1478,7 +1549,7 @@ LightSample sphere_light(
 
 SpotLight load_SpotLight(
     uint offset_11,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_11 + 0u];
@@ -1501,7 +1572,7 @@ LightSample spot_light(
     SpotLight l_3,
     metal::float3 position_4,
     metal::float3 normal_4,
-    thread type_15& scratch,
+    thread type_3& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1533,17 +1604,17 @@ LightSample dispatch_light(
     uint offset_12,
     metal::float3 position_5,
     metal::float3 normal_5,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    thread type_15& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     switch(type_id_3) {
         case 0u: {
             DirectionalLight _e4 = load_DirectionalLight(offset_12, params, _buffer_sizes);
-            LightSample _e5 = directional_light(_e4, position_5, normal_5, F32_INF, scratch, counters, _buffer_sizes);
+            LightSample _e5 = directional_light(_e4, position_5, normal_5, scratch, F32_INF, counters, _buffer_sizes);
             return _e5;
         }
         case 1u: {
@@ -1553,7 +1624,7 @@ LightSample dispatch_light(
         }
         case 2u: {
             SphereLight _e8 = load_SphereLight(offset_12, params, _buffer_sizes);
-            LightSample _e9 = sphere_light(_e8, position_5, normal_5, rng_state, scratch, counters, _buffer_sizes);
+            LightSample _e9 = sphere_light(_e8, position_5, normal_5, scratch, rng_state, counters, _buffer_sizes);
             return _e9;
         }
         case 3u: {
@@ -1569,25 +1640,25 @@ LightSample dispatch_light(
 }
 
 metal::float3 scratch_load3f(
-    uint i_2,
-    thread type_15& scratch
+    uint i_3,
+    thread type_3& scratch
 ) {
-    uint _e5 = scratch.inner[metal::min(i_2, 21u)];
-    uint _e12 = scratch.inner[metal::min(i_2 + 1u, 21u)];
-    uint _e19 = scratch.inner[metal::min(i_2 + 2u, 21u)];
+    uint _e5 = scratch.inner[metal::min(i_3, 23u)];
+    uint _e12 = scratch.inner[metal::min(i_3 + 1u, 23u)];
+    uint _e19 = scratch.inner[metal::min(i_3 + 2u, 23u)];
     return as_type<metal::float3>(metal::uint3(_e5, _e12, _e19));
 }
 
 metal::float3 step_toward(
-    metal::float3 x_1,
+    metal::float3 x_3,
     metal::float3 s_1
 ) {
-    metal::uint3 bits_2 = as_type<metal::uint3>(x_1);
-    metal::bool3 up_1 = (metal::sign(x_1) * metal::sign(s_1)) > metal::float3(0.0);
+    metal::uint3 bits_2 = as_type<metal::uint3>(x_3);
+    metal::bool3 up_1 = (metal::sign(x_3) * metal::sign(s_1)) > metal::float3(0.0);
     metal::float3 stepped = as_type<metal::float3>(metal::select(bits_2 - metal::uint3(1u), bits_2 + metal::uint3(1u), up_1));
     metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s_1 > metal::float3(0.0));
-    metal::float3 moved = metal::select(stepped, from_zero, x_1 == metal::float3(0.0));
-    return metal::select(x_1, moved, !((s_1 == metal::float3(0.0))));
+    metal::float3 moved = metal::select(stepped, from_zero, x_3 == metal::float3(0.0));
+    return metal::select(x_3, moved, !((s_1 == metal::float3(0.0))));
 }
 
 metal::float3 offset_origin(
@@ -1595,8 +1666,8 @@ metal::float3 offset_origin(
     metal::float3 n_5,
     float error
 ) {
-    float d_3 = (2.0 * error) * ((metal::abs(n_5.x) + metal::abs(n_5.y)) + metal::abs(n_5.z));
-    metal::float3 offset_16 = n_5 * metal::float3(d_3);
+    float d_4 = (2.0 * error) * ((metal::abs(n_5.x) + metal::abs(n_5.y)) + metal::abs(n_5.z));
+    metal::float3 offset_16 = n_5 * metal::float3(d_4);
     metal::float3 _e17 = step_toward(p_5 + offset_16, offset_16);
     return _e17;
 }
@@ -1642,12 +1713,12 @@ float shadow_query(
     metal::float3 dir_2,
     float dist_2,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1658,20 +1729,20 @@ float shadow_query(
 }
 
 LightSample sample_light_deferred(
-    uint i_3,
+    uint i_4,
     metal::float3 position_8,
     metal::float3 normal_8,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1679,27 +1750,27 @@ LightSample sample_light_deferred(
     uint resolved = {};
     uint bits_1 = {};
     FrameUniforms frame_4 = frame;
-    if (i_3 >= frame_4.light_count) {
+    if (i_4 >= frame_4.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry_1 = frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE);
+    uint entry_1 = frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE);
     uint type_id_7 = params[entry_1];
     uint offset_17 = params[entry_1 + 1u];
     uint start = rng_state;
     after = start;
     resolved = 0u;
     bits_1 = 0u;
-    scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)] = 0u;
-    scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_RESOLVED, 23u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 23u)] = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         rng_state = start;
-        scratch.inner[metal::min(SCRATCH_QUERY, 21u)] = 0u;
-        scratch.inner[metal::min(SCRATCH_PENDING, 21u)] = 0u;
-        LightSample _e60 = dispatch_light(type_id_7, offset_17, position_8, normal_8, rng_state, params, F32_INF, scratch, counters, _buffer_sizes);
-        uint _e66 = scratch.inner[metal::min(SCRATCH_PENDING, 21u)];
+        scratch.inner[metal::min(SCRATCH_QUERY, 23u)] = 0u;
+        scratch.inner[metal::min(SCRATCH_PENDING, 23u)] = 0u;
+        LightSample _e60 = dispatch_light(type_id_7, offset_17, position_8, normal_8, scratch, rng_state, params, F32_INF, counters, _buffer_sizes);
+        uint _e66 = scratch.inner[metal::min(SCRATCH_PENDING, 23u)];
         if (_e66 == 0u) {
             uint _e69 = resolved;
             if (_e69 > 0u) {
@@ -1718,12 +1789,12 @@ LightSample sample_light_deferred(
         metal::float3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY, scratch);
         metal::float3 _e85 = scratch_load3f(SCRATCH_LIGHT_QUERY + 3u, scratch);
         metal::float3 _e88 = scratch_load3f(SCRATCH_LIGHT_QUERY + 6u, scratch);
-        uint _e95 = scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 21u)];
+        uint _e95 = scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 23u)];
         float _e97 = shadow_query(_e82, _e85, _e88, as_type<float>(_e95), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
         uint _e99 = rng_state;
         after = _e99;
         if (!((_e97 == 0.0))) {
-            uint _e108 = scratch.inner[metal::min(SCRATCH_QUERY, 21u)];
+            uint _e108 = scratch.inner[metal::min(SCRATCH_QUERY, 23u)];
             uint _e109 = resolved;
             if (_e108 == (_e109 + 1u)) {
                 uint _e113 = after;
@@ -1737,9 +1808,9 @@ LightSample sample_light_deferred(
         uint _e122 = resolved;
         resolved = _e122 + 1u;
         uint _e126 = bits_1;
-        scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
+        scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 23u)] = _e126;
         uint _e132 = resolved;
-        scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)] = _e132;
+        scratch.inner[metal::min(SCRATCH_RESOLVED, 23u)] = _e132;
     }
     return LightSample {};
 }
@@ -1749,41 +1820,41 @@ metal::float3 lambert_shade(
     Ray ray_15,
     Hit hit_2,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 color = {};
-    uint i_4 = {};
+    uint i_5 = {};
     metal::float3 _e3 = shading_normal(ray_15, hit_2);
     color = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
-    i_4 = 0u;
+    i_5 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e30 = i_4;
-            i_4 = _e30 + 1u;
+            uint _e30 = i_5;
+            i_5 = _e30 + 1u;
         }
         loop_init_2 = false;
-        uint _e10 = i_4;
+        uint _e10 = i_5;
         if (_e10 >= _e8) {
             break;
         }
-        uint _e12 = i_4;
-        LightSample _e15 = sample_light_deferred(_e12, hit_2.position, hit_2.geometric_normal, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+        uint _e12 = i_5;
+        LightSample _e15 = sample_light_deferred(_e12, hit_2.position, hit_2.geometric_normal, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
         metal::float3 _e16 = color;
         color = _e16 + (((m.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
     }
@@ -1798,21 +1869,21 @@ metal::float3 dispatch_closest_hit(
     Hit hit_3,
     metal::float3 secondary,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Lambert _e3 = load_Lambert(offset_13, params, _buffer_sizes);
-    metal::float3 _e4 = lambert_shade(_e3, ray_16, hit_3, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+    metal::float3 _e4 = lambert_shade(_e3, ray_16, hit_3, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
     return _e4;
 }
 
@@ -1820,23 +1891,23 @@ metal::float3 shade_direct(
     Ray ray_17,
     Candidate c_2,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_2.slot];
     Hit _e6 = finish_hit(ray_17, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e6, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
     return _e11;
 }
 
@@ -1854,7 +1925,7 @@ metal::float3 through_medium(
     Ray ray_19,
     float t_3,
     metal::float3 radiance_1,
-    device type_8 const& instances,
+    device type_9 const& instances,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (!(HAS_MEDIA)) {
@@ -1910,17 +1981,17 @@ metal::float3 spawn_origin(
 metal::float3 trace(
     Ray camera_ray,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
@@ -1945,8 +2016,8 @@ metal::float3 trace(
     metal::float3 radiance_3 = {};
     float t_5 = {};
     Hit hit_6 = {};
-    Frame f = {};
-    uint i_5 = {};
+    Frame f_1 = {};
+    uint i_6 = {};
     uint medium = {};
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
@@ -1958,7 +2029,7 @@ metal::float3 trace(
             metal::float3 _e17 = miss(camera_ray, frame, params, _buffer_sizes);
             radiance_2 = _e17;
         } else {
-            metal::float3 _e18 = shade_direct(camera_ray, _e4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, _buffer_sizes);
+            metal::float3 _e18 = shade_direct(camera_ray, _e4, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, _buffer_sizes);
             radiance_2 = _e18;
             t_4 = _e4.t;
         }
@@ -2044,33 +2115,33 @@ metal::float3 trace(
                         Hit _e142 = hit_6;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_19 {}, type_19 {}, n_10, 0u};
-                        i_5 = 0u;
+                        f_1 = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_19 {}, type_19 {}, n_10, 0u};
+                        i_6 = 0u;
                         uint2 loop_bound_7 = uint2(4294967295u);
                         bool loop_init_3 = true;
                         while(true) {
                             if (metal::all(loop_bound_7 == uint2(0u))) { break; }
                             loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                             if (!loop_init_3) {
-                                uint _e175 = i_5;
-                                i_5 = _e175 + 1u;
+                                uint _e175 = i_6;
+                                i_6 = _e175 + 1u;
                             }
                             loop_init_3 = false;
-                            uint _e155 = i_5;
+                            uint _e155 = i_6;
                             if (_e155 >= n_10) {
                                 break;
                             }
-                            uint _e158 = i_5;
-                            uint _e162 = i_5;
+                            uint _e158 = i_6;
+                            uint _e162 = i_6;
                             metal::float3 _e165 = spawn_dirs.inner[_e162];
-                            f.dirs.inner[metal::min(_e158, 0u)] = _e165;
-                            uint _e167 = i_5;
-                            uint _e171 = i_5;
+                            f_1.dirs.inner[metal::min(_e158, 0u)] = _e165;
+                            uint _e167 = i_6;
+                            uint _e171 = i_6;
                             metal::float3 _e174 = spawn_weights.inner[_e171];
-                            f.weights.inner[metal::min(_e167, 0u)] = _e174;
+                            f_1.weights.inner[metal::min(_e167, 0u)] = _e174;
                         }
                         uint _e178 = depth;
-                        Frame _e182 = f;
+                        Frame _e182 = f_1;
                         stack.inner[metal::min(_e178, 3u)] = _e182;
                         uint _e183 = depth;
                         depth = _e183 + 1u;
@@ -2082,7 +2153,7 @@ metal::float3 trace(
                     Ray _e191 = s_ray;
                     Hit _e192 = hit_6;
                     metal::float3 _e193 = s_sum;
-                    metal::float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+                    metal::float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
                     radiance_3 = _e194;
                 }
             }
@@ -2118,11 +2189,11 @@ metal::float3 trace(
         uint _e241 = stack.inner[metal::min(top_1, 3u)].next;
         uint _e246 = stack.inner[metal::min(top_1, 3u)].count;
         if (_e241 < _e246) {
-            uint i_7 = stack.inner[metal::min(top_1, 3u)].next;
-            stack.inner[metal::min(top_1, 3u)].next = i_7 + 1u;
+            uint i_9 = stack.inner[metal::min(top_1, 3u)].next;
+            stack.inner[metal::min(top_1, 3u)].next = i_9 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 3u)].ray;
             Hit hit_8 = stack.inner[metal::min(top_1, 3u)].hit;
-            metal::float3 dir_8 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_7, 0u)];
+            metal::float3 dir_8 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_9, 0u)];
             medium = parent.medium;
             float _e283 = stack.inner[metal::min(top_1, 3u)].error;
             metal::float3 _e284 = spawn_origin(hit_8, _e283, dir_8);
@@ -2149,9 +2220,9 @@ metal::float3 trace(
 }
 
 metal::bool3 is_finite_vec3f(
-    metal::float3 x_2
+    metal::float3 x_4
 ) {
-    return (as_type<metal::uint3>(x_2) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+    return (as_type<metal::uint3>(x_4) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
 }
 
 metal::float3 finite_or_zero(
@@ -2162,25 +2233,25 @@ metal::float3 finite_or_zero(
 }
 
 void render_pixel(
-    metal::uint2 pixel_3,
+    metal::uint2 pixel_4,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
     thread uint& spawn_count,
-    device type_10& accum,
+    device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 sum = {};
@@ -2208,9 +2279,9 @@ void render_pixel(
             break;
         }
         uint _e18 = s_2;
-        uint sample_3 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
-        rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
+        uint sample_4 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
+        rng_seed(pixel_4, sample_4, frame_5.seed, scratch, rng_state);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
         ray_22 = _e23;
         ray_22.depth = 0u;
         ray_22.kind = RAY_CAMERA;
@@ -2218,7 +2289,7 @@ void render_pixel(
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
         ray_22.medium = _e33;
         Ray _e34 = ray_22;
-        metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::float3 _e35 = trace(_e34, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {
             metal::float3 _e38 = sum;
@@ -2237,10 +2308,10 @@ void render_pixel(
     metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
     uint _e63 = bad;
     if (tile_2.frame == 0u) {
-        accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x] = _e62;
+        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e62;
     } else {
-        metal::float4 _e69 = accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x];
-        accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x] = _e69 + _e62;
+        metal::float4 _e69 = accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x];
+        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e69 + _e62;
     }
     if (_e63 > 0u) {
         metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
@@ -2252,22 +2323,22 @@ void render_invocation(
     metal::uint2 id_1,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
     thread uint& spawn_count,
-    device type_10& accum,
+    device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     TileParams tile_3 = tile;
@@ -2275,7 +2346,7 @@ void render_invocation(
     if (metal::any(_e3 >= tile_3.extent)) {
         return;
     }
-    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
+    render_pixel(tile_3.origin + _e3, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
     return;
 }
 
@@ -2285,24 +2356,24 @@ struct renderInput {
   metal::uint3 gid [[thread_position_in_grid]]
 , constant TileParams& tile [[buffer(1)]]
 , constant FrameUniforms& frame [[buffer(0)]]
-, device type_4 const& params [[buffer(6)]]
-, device type_8 const& instances [[buffer(3)]]
-, device type_9 const& nodes [[buffer(2)]]
-, device type_10 const& triangles [[buffer(4)]]
-, device type_14 const& attributes [[buffer(5)]]
+, device type_5 const& params [[buffer(6)]]
+, device type_9 const& instances [[buffer(3)]]
+, device type_10 const& nodes [[buffer(2)]]
+, device type_11 const& triangles [[buffer(4)]]
+, device type_15 const& attributes [[buffer(5)]]
 , device type_17& counters [[buffer(9)]]
-, device type_10& accum [[buffer(8)]]
+, device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
+    type_3 scratch = {};
     uint rng_state = {};
     uint F32_INF = 2139095040u;
-    type_12 traversal_stack = {};
+    type_13 traversal_stack = {};
     float hit_error = {};
     uint ray_count = {};
-    type_15 scratch = {};
     type_19 spawn_dirs = {};
     type_19 spawn_weights = {};
     uint spawn_count = {};
-    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
     return;
 }

@@ -162,6 +162,9 @@ const uint WORKGROUP_WIDTH = 8u;
 const uint WORKGROUP_HEIGHT = 8u;
 const uint NO_HIT = 4294967295u;
 const uint SCATTER = 1000003u;
+const uint SCRATCH_RNG_INDEX = 12u;
+const uint SCRATCH_RNG_SEED = 13u;
+const uint HALF_WORD_BITS = 16u;
 const uint RAY_CAMERA = 0u;
 const bool HAS_MEDIA = false;
 const uint MEDIUM_ENTRY_STRIDE = 1u;
@@ -187,7 +190,7 @@ const uint SCRATCH_QUERY = 2u;
 const uint SCRATCH_PENDING = 4u;
 const uint LIGHT_QUERIES = 32u;
 const uint COUNTER_SHADOW_OVERFLOW = 3u;
-const uint SCRATCH_LIGHT_QUERY = 12u;
+const uint SCRATCH_LIGHT_QUERY = 14u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const uint RAY_SHADOW = 2u;
 const float MIS_BOUNCE_LENGTH = 3.0;
@@ -202,27 +205,27 @@ layout(std140, binding = 1) uniform TileParams_block_0Compute { TileParams _grou
 
 layout(std140, binding = 0) uniform FrameUniforms_block_1Compute { FrameUniforms _group_0_binding_0_cs; };
 
+uint scratch[24] = uint[24](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+
 uint rng_state = 0u;
 
-layout(std430, binding = 6) readonly buffer type_4_block_2Compute { uint _group_0_binding_6_cs[]; };
+layout(std430, binding = 6) readonly buffer type_5_block_2Compute { uint _group_0_binding_6_cs[]; };
 
 uint F32_INF = 2139095040u;
 
-layout(std430, binding = 3) readonly buffer type_8_block_3Compute { GpuInstance _group_0_binding_3_cs[]; };
+layout(std430, binding = 3) readonly buffer type_9_block_3Compute { GpuInstance _group_0_binding_3_cs[]; };
 
-layout(std430, binding = 2) readonly buffer type_9_block_4Compute { GpuNode _group_0_binding_2_cs[]; };
+layout(std430, binding = 2) readonly buffer type_10_block_4Compute { GpuNode _group_0_binding_2_cs[]; };
 
-layout(std430, binding = 4) readonly buffer type_10_block_5Compute { vec4 _group_0_binding_4_cs[]; };
+layout(std430, binding = 4) readonly buffer type_11_block_5Compute { vec4 _group_0_binding_4_cs[]; };
 
 uint traversal_stack[72] = uint[72](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
 float hit_error = 0.0;
 
-layout(std430, binding = 5) readonly buffer type_14_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
+layout(std430, binding = 5) readonly buffer type_15_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
 
 uint ray_count = 0u;
-
-uint scratch[22] = uint[22](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
 layout(std430, binding = 9) buffer type_17_block_7Compute { uint _group_0_binding_9_cs[]; };
 
@@ -232,7 +235,7 @@ vec3 spawn_weights[1] = vec3[1](vec3(0.0));
 
 uint spawn_count = 0u;
 
-layout(std430, binding = 8) buffer type_10_block_8Compute { vec4 _group_0_binding_8_cs[]; };
+layout(std430, binding = 8) buffer type_11_block_8Compute { vec4 _group_0_binding_8_cs[]; };
 
 
 uvec2 div_vec2u(uvec2 a, uvec2 b) {
@@ -279,24 +282,23 @@ uvec2 scattered_local(uvec2 id) {
 }
 
 uint pcg_hash(uint x) {
-    uint state = ((x * 747796405u) + 2891336453u);
-    uint word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    uint state_1 = ((x * 747796405u) + 2891336453u);
+    uint word = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
     return ((word >> 22u) ^ word);
 }
 
-void rng_seed(uvec2 pixel, uint sample_, uint seed) {
-    uint h = 0u;
-    uint _e5 = pcg_hash(seed);
-    uint _e7 = pcg_hash((sample_ ^ _e5));
-    uint _e9 = pcg_hash((pixel.y ^ _e7));
-    uint _e11 = pcg_hash((pixel.x ^ _e9));
-    h = _e11;
-    uint _e13 = h;
-    if ((_e13 == 0u)) {
-        h = 1u;
-    }
-    uint _e17 = h;
-    rng_state = _e17;
+void rng_resume(uvec2 pixel, uint sample_, uint seed, uint state) {
+    scratch[min(SCRATCH_RNG_INDEX, 23u)] = sample_;
+    uint _e12 = pcg_hash(seed);
+    uint _e14 = pcg_hash((pixel.y ^ _e12));
+    uint _e16 = pcg_hash((pixel.x ^ _e14));
+    scratch[min(SCRATCH_RNG_SEED, 23u)] = _e16;
+    rng_state = state;
+    return;
+}
+
+void rng_seed(uvec2 pixel_1, uint sample_1, uint seed_1) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u);
     return;
 }
 
@@ -324,13 +326,65 @@ uint samples_per_pixel_query() {
     return _e1.total_samples;
 }
 
+uint laine_karras(uint x_1, uint seed_2) {
+    uint v = 0u;
+    v = (x_1 + seed_2);
+    uint _e4 = v;
+    uint _e5 = v;
+    v = (_e4 ^ (_e5 * 1817228412u));
+    uint _e9 = v;
+    uint _e10 = v;
+    v = (_e9 ^ (_e10 * 3090095698u));
+    uint _e14 = v;
+    uint _e15 = v;
+    v = (_e14 ^ (_e15 * 3350193720u));
+    uint _e19 = v;
+    uint _e20 = v;
+    v = (_e19 ^ (_e20 * 2367878886u));
+    uint _e24 = v;
+    return _e24;
+}
+
+uint sobol_second_reversed(uint i) {
+    uint f = 0u;
+    f = i;
+    uint _e2 = f;
+    uint _e3 = f;
+    f = (_e2 ^ ((_e3 >> 1u) & 1431655765u));
+    uint _e9 = f;
+    uint _e10 = f;
+    f = (_e9 ^ ((_e10 >> 2u) & 858993459u));
+    uint _e16 = f;
+    uint _e17 = f;
+    f = (_e16 ^ ((_e17 >> 4u) & 252645135u));
+    uint _e23 = f;
+    uint _e24 = f;
+    f = (_e23 ^ ((_e24 >> 8u) & 16711935u));
+    uint _e30 = f;
+    uint _e31 = f;
+    f = (_e30 ^ (_e31 >> (HALF_WORD_BITS & 31u)));
+    uint _e37 = f;
+    return _e37;
+}
+
 float rand_next() {
-    uint _e1 = rng_state;
-    uint s_5 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_5;
-    uint word_1 = (((s_5 >> (((s_5 >> 28u) + 4u) & 31u)) ^ s_5) * 277803737u);
-    uint r_3 = ((word_1 >> 22u) ^ word_1);
-    return (float((r_3 >> 8u)) * (1.0 / 16777216.0));
+    uint x_2 = 0u;
+    uint d_1 = rng_state;
+    rng_state = (d_1 + 1u);
+    uint _e10 = scratch[min(SCRATCH_RNG_SEED, 23u)];
+    uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 23u)];
+    uint _e24 = laine_karras(bitfieldReverse(_e22), _e16);
+    uint i_7 = bitfieldReverse(_e24);
+    x_2 = i_7;
+    if (((d_1 & 1u) != 0u)) {
+        uint _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    uint _e45 = x_2;
+    uint _e46 = laine_karras(_e45, scramble);
+    return (float((bitfieldReverse(_e46) >> 8u)) * (1.0 / 16777216.0));
 }
 
 vec2 rand2_next() {
@@ -339,11 +393,11 @@ vec2 rand2_next() {
     return vec2(_e0, _e1);
 }
 
-vec3 normalize_vec3f(vec3 v) {
-    return ((dot(v, v) >= 1.1754944e-38) ? normalize(v) : vec3(0.0));
+vec3 normalize_vec3f(vec3 v_1) {
+    return ((dot(v_1, v_1) >= 1.1754944e-38) ? normalize(v_1) : vec3(0.0));
 }
 
-Ray pinhole_ray(Pinhole cam, uvec2 pixel_1, uint sample_1) {
+Ray pinhole_ray(Pinhole cam, uvec2 pixel_2, uint sample_2) {
     vec2 jitter = vec2(0.0);
     uvec2 _e2 = image_size_query();
     vec2 size_1 = vec2(_e2);
@@ -354,20 +408,20 @@ Ray pinhole_ray(Pinhole cam, uvec2 pixel_1, uint sample_1) {
         jitter = _e10;
     }
     vec2 _e12 = jitter;
-    vec2 ndc = ((((vec2(pixel_1) + _e12) / size_1) * vec2(2.0)) - vec2(1.0));
+    vec2 ndc = ((((vec2(pixel_2) + _e12) / size_1) * vec2(2.0)) - vec2(1.0));
     vec3 _e24 = normalize_vec3f((cam.look_at - cam.position));
     vec3 _e27 = normalize_vec3f(cross(_e24, cam.up));
     vec3 up = cross(_e27, _e24);
-    float h_1 = tan((radians(cam.fov) * 0.5));
+    float h = tan((radians(cam.fov) * 0.5));
     float aspect = (size_1.x / size_1.y);
-    vec3 _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
+    vec3 _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h) * aspect)))) - (up * vec3((ndc.y * h)))));
     uint _e52 = F32_INF;
     return Ray(cam.position, 0.0, _e48, uintBitsToFloat(_e52), 0u, 0u, 0u);
 }
 
-Ray dispatch_ray_generation(uint type_id, uint offset_1, uvec2 pixel_2, uint sample_2) {
+Ray dispatch_ray_generation(uint type_id, uint offset_1, uvec2 pixel_3, uint sample_3) {
     Pinhole _e3 = load_Pinhole(offset_1);
-    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
+    Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
     return _e4;
 }
 
@@ -379,34 +433,34 @@ Ray to_object(GpuInstance inst, Ray ray) {
     Ray r = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     r = ray;
     vec4 o = vec4(ray.origin, 1.0);
-    vec4 d_1 = vec4(ray.dir, 0.0);
+    vec4 d_2 = vec4(ray.dir, 0.0);
     r.origin = vec3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = vec3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
+    r.dir = vec3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
     return _e25;
 }
 
 vec3 safe_inverse(vec3 d) {
     vec3 tiny = vec3(1.1754944e-38);
-    vec3 s_6 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
-    vec3 dd = mix(d, (s_6 * tiny), lessThan(abs(d), tiny));
+    vec3 s_5 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
+    vec3 dd = mix(d, (s_5 * tiny), lessThan(abs(d), tiny));
     return (vec3(1.0) / dd);
 }
 
 TriangleRay prepare_triangle_ray(Ray ray_1) {
-    vec3 d_2 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
-    vec3 ad = abs(d_2);
+    vec3 d_3 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
+    vec3 ad = abs(d_3);
     bool y_gt = (ad.y > ad.x);
     uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
     uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
     uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
-    float dz = d_2[min(kz, 2u)];
+    float dz = d_3[min(kz, 2u)];
     bool flip = (dz < 0.0);
     uint kx = (flip ? ky0_ : kx0_);
     uint ky = (flip ? kx0_ : ky0_);
     uvec3 inf_bits = uvec3(2139095040u);
-    bool finite = (all(lessThan((floatBitsToUint(ray_1.origin) & uvec3(2147483647u)), inf_bits)) && all(lessThan((floatBitsToUint(d_2) & uvec3(2147483647u)), inf_bits)));
-    return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_2[min(kx, 2u)] / dz), (d_2[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    bool finite = (all(lessThan((floatBitsToUint(ray_1.origin) & uvec3(2147483647u)), inf_bits)) && all(lessThan((floatBitsToUint(d_3) & uvec3(2147483647u)), inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
 }
 
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
@@ -423,15 +477,15 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float cx = (c_7[min(r_1.kx, 2u)] - (r_1.shear.x * c_7[min(r_1.kz, 2u)]));
     float cy = (c_7[min(r_1.ky, 2u)] - (r_1.shear.y * c_7[min(r_1.kz, 2u)]));
     float u_3 = ((cx * by) - (cy * bx));
-    float v_5 = ((ax * cy) - (ay * cx));
+    float v_6 = ((ax * cy) - (ay * cx));
     float w_1 = ((bx * ay) - (by * ax));
-    bool outside = ((((u_3 < 0.0) || (v_5 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_5 > 0.0)) || (w_1 > 0.0)));
-    float det = ((u_3 + v_5) + w_1);
+    bool outside = ((((u_3 < 0.0) || (v_6 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_6 > 0.0)) || (w_1 > 0.0)));
+    float det = ((u_3 + v_6) + w_1);
     float rcp = (1.0 / det);
-    float t_4 = ((((u_3 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_5 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear.z * c_7[min(r_1.kz, 2u)]))) * rcp);
+    float t_4 = ((((u_3 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_6 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear.z * c_7[min(r_1.kz, 2u)]))) * rcp);
     bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_12 ? vec3(t_4, (v_5 * rcp), (w_1 * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_12 ? vec3(t_4, (v_6 * rcp), (w_1 * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
@@ -601,10 +655,10 @@ Sphere load_Sphere(uint offset_2) {
 
 Intersection sphere_intersect(Sphere s, Ray ray_5) {
     float t = 0.0;
-    vec3 f = (ray_5.origin - s.center);
+    vec3 f_1 = (ray_5.origin - s.center);
     float a_5 = dot(ray_5.dir, ray_5.dir);
-    float b_6 = -(dot(f, ray_5.dir));
-    vec3 l_6 = (f + (ray_5.dir * vec3((b_6 / a_5))));
+    float b_6 = -(dot(f_1, ray_5.dir));
+    vec3 l_6 = (f_1 + (ray_5.dir * vec3((b_6 / a_5))));
     float r2_ = (s.radius * s.radius);
     float disc = (a_5 * (r2_ - dot(l_6, l_6)));
     if ((!((disc >= 0.0)) || !((a_5 > 0.0)))) {
@@ -612,7 +666,7 @@ Intersection sphere_intersect(Sphere s, Ray ray_5) {
         return Intersection(uintBitsToFloat(_e30), vec3(0.0, 0.0, 1.0), vec2(0.0));
     }
     float q_1 = (b_6 + (((b_6 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
-    float t0_1 = ((dot(f, f) - r2_) / q_1);
+    float t0_1 = ((dot(f_1, f_1) - r2_) / q_1);
     float t1_2 = (q_1 / a_5);
     t = min(t0_1, t1_2);
     float _e52 = t;
@@ -701,9 +755,9 @@ vec3 decode_octahedral(uint bits) {
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n_1;
-        vec2 s_7 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
+        vec2 s_6 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
         vec3 _e29 = n_1;
-        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_7);
+        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_6);
         float _e37 = n_1.z;
         n_1 = vec3(xy.x, xy.y, _e37);
     }
@@ -774,7 +828,7 @@ Hit finish_hit(Ray ray_8, Candidate c_1) {
 uint medium_at(vec3 p_4, uint exclude) {
     uint inside = 0u;
     float nearest = 0.0;
-    uint i = 0u;
+    uint i_1 = 0u;
     if (!(HAS_MEDIA)) {
         return 0u;
     }
@@ -786,19 +840,19 @@ uint medium_at(vec3 p_4, uint exclude) {
     uint _e23 = F32_INF;
     nearest = uintBitsToFloat(_e23);
     uint end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e59 = i;
-            i = (_e59 + 1u);
+            uint _e59 = i_1;
+            i_1 = (_e59 + 1u);
         }
         loop_init_1 = false;
-        uint _e29 = i;
+        uint _e29 = i_1;
         if ((_e29 >= end)) {
             break;
         }
-        uint _e32 = i;
+        uint _e32 = i_1;
         uint slot_4 = _group_0_binding_6_cs[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if ((slot_4 != exclude)) {
             uint _e41 = F32_INF;
@@ -976,35 +1030,35 @@ QuadLight load_QuadLight(uint offset_7) {
     return QuadLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)), vec3(uintBitsToFloat(_e62), uintBitsToFloat(_e68), uintBitsToFloat(_e74)), uintBitsToFloat(_e81), _e87);
 }
 
-void scratch_store3f(uint i_1, vec3 v_1) {
-    uvec3 b_8 = floatBitsToUint(v_1);
-    scratch[min(i_1, 21u)] = b_8.x;
-    scratch[min((i_1 + 1u), 21u)] = b_8.y;
-    scratch[min((i_1 + 2u), 21u)] = b_8.z;
+void scratch_store3f(uint i_2, vec3 v_2) {
+    uvec3 b_8 = floatBitsToUint(v_2);
+    scratch[min(i_2, 23u)] = b_8.x;
+    scratch[min((i_2 + 1u), 23u)] = b_8.y;
+    scratch[min((i_2 + 2u), 23u)] = b_8.z;
     return;
 }
 
 float shadow_deferred(vec3 position, vec3 normal, vec3 dir, float dist) {
-    uint i_6 = scratch[min(SCRATCH_QUERY, 21u)];
-    scratch[min(SCRATCH_QUERY, 21u)] = (i_6 + 1u);
-    uint _e22 = scratch[min(SCRATCH_RESOLVED, 21u)];
-    if ((i_6 < _e22)) {
-        uint _e29 = scratch[min(SCRATCH_LIGHT_BITS, 21u)];
-        return float(((_e29 >> (i_6 & 31u)) & 1u));
+    uint i_8 = scratch[min(SCRATCH_QUERY, 23u)];
+    scratch[min(SCRATCH_QUERY, 23u)] = (i_8 + 1u);
+    uint _e22 = scratch[min(SCRATCH_RESOLVED, 23u)];
+    if ((i_8 < _e22)) {
+        uint _e29 = scratch[min(SCRATCH_LIGHT_BITS, 23u)];
+        return float(((_e29 >> (i_8 & 31u)) & 1u));
     }
-    uint _e41 = scratch[min(SCRATCH_PENDING, 21u)];
+    uint _e41 = scratch[min(SCRATCH_PENDING, 23u)];
     if ((_e41 != 0u)) {
         return 1.0;
     }
-    if ((i_6 >= LIGHT_QUERIES)) {
+    if ((i_8 >= LIGHT_QUERIES)) {
         atomicAdd(_group_0_binding_9_cs[min(COUNTER_SHADOW_OVERFLOW, 3u)], 1u);
         return 1.0;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)] = floatBitsToUint(dist);
-    scratch[min(SCRATCH_PENDING, 21u)] = 1u;
+    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 23u)] = floatBitsToUint(dist);
+    scratch[min(SCRATCH_PENDING, 23u)] = 1u;
     return 1.0;
 }
 
@@ -1091,25 +1145,25 @@ LightSample dispatch_light(uint type_id_3, uint offset_9, vec3 position_3, vec3 
     return LightSample(vec3(0.0), 0.0, vec3(0.0), 0.0);
 }
 
-vec3 scratch_load3f(uint i_2) {
-    uint _e5 = scratch[min(i_2, 21u)];
-    uint _e12 = scratch[min((i_2 + 1u), 21u)];
-    uint _e19 = scratch[min((i_2 + 2u), 21u)];
+vec3 scratch_load3f(uint i_3) {
+    uint _e5 = scratch[min(i_3, 23u)];
+    uint _e12 = scratch[min((i_3 + 1u), 23u)];
+    uint _e19 = scratch[min((i_3 + 2u), 23u)];
     return uintBitsToFloat(uvec3(_e5, _e12, _e19));
 }
 
-vec3 step_toward(vec3 x_1, vec3 s_1) {
-    uvec3 bits_2 = floatBitsToUint(x_1);
-    bvec3 up_1 = greaterThan((sign(x_1) * sign(s_1)), vec3(0.0));
+vec3 step_toward(vec3 x_3, vec3 s_1) {
+    uvec3 bits_2 = floatBitsToUint(x_3);
+    bvec3 up_1 = greaterThan((sign(x_3) * sign(s_1)), vec3(0.0));
     vec3 stepped = uintBitsToFloat(mix((bits_2 - uvec3(1u)), (bits_2 + uvec3(1u)), up_1));
     vec3 from_zero = mix(vec3(-1.1754944e-38), vec3(1.1754944e-38), greaterThan(s_1, vec3(0.0)));
-    vec3 moved = mix(stepped, from_zero, equal(x_1, vec3(0.0)));
-    return mix(x_1, moved, not(equal(s_1, vec3(0.0))));
+    vec3 moved = mix(stepped, from_zero, equal(x_3, vec3(0.0)));
+    return mix(x_3, moved, not(equal(s_1, vec3(0.0))));
 }
 
 vec3 offset_origin(vec3 p_5, vec3 n_4, float error) {
-    float d_3 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    vec3 offset_16 = (n_4 * vec3(d_3));
+    float d_4 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    vec3 offset_16 = (n_4 * vec3(d_4));
     vec3 _e17 = step_toward((p_5 + offset_16), offset_16);
     return _e17;
 }
@@ -1148,29 +1202,29 @@ float shadow_query(vec3 position_5, vec3 normal_5, vec3 dir_2, float dist_2) {
     return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample sample_light_deferred(uint i_3, vec3 position_6, vec3 normal_6) {
+LightSample sample_light_deferred(uint i_4, vec3 position_6, vec3 normal_6) {
     uint after = 0u;
     uint resolved = 0u;
     uint bits_1 = 0u;
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    if ((i_3 >= frame_4.light_count)) {
+    if ((i_4 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
-    uint entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     uint type_id_7 = _group_0_binding_6_cs[entry];
     uint offset_17 = _group_0_binding_6_cs[(entry + 1u)];
     uint start = rng_state;
     after = start;
     resolved = 0u;
     bits_1 = 0u;
-    scratch[min(SCRATCH_RESOLVED, 21u)] = 0u;
-    scratch[min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
+    scratch[min(SCRATCH_RESOLVED, 23u)] = 0u;
+    scratch[min(SCRATCH_LIGHT_BITS, 23u)] = 0u;
     while(true) {
         rng_state = start;
-        scratch[min(SCRATCH_QUERY, 21u)] = 0u;
-        scratch[min(SCRATCH_PENDING, 21u)] = 0u;
+        scratch[min(SCRATCH_QUERY, 23u)] = 0u;
+        scratch[min(SCRATCH_PENDING, 23u)] = 0u;
         LightSample _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_6);
-        uint _e66 = scratch[min(SCRATCH_PENDING, 21u)];
+        uint _e66 = scratch[min(SCRATCH_PENDING, 23u)];
         if ((_e66 == 0u)) {
             uint _e69 = resolved;
             if ((_e69 > 0u)) {
@@ -1189,12 +1243,12 @@ LightSample sample_light_deferred(uint i_3, vec3 position_6, vec3 normal_6) {
         vec3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
         vec3 _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
         vec3 _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        uint _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)];
+        uint _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 23u)];
         float _e97 = shadow_query(_e82, _e85, _e88, uintBitsToFloat(_e95));
         uint _e99 = rng_state;
         after = _e99;
         if (!((_e97 == 0.0))) {
-            uint _e108 = scratch[min(SCRATCH_QUERY, 21u)];
+            uint _e108 = scratch[min(SCRATCH_QUERY, 23u)];
             uint _e109 = resolved;
             if ((_e108 == (_e109 + 1u))) {
                 uint _e113 = after;
@@ -1208,9 +1262,9 @@ LightSample sample_light_deferred(uint i_3, vec3 position_6, vec3 normal_6) {
         uint _e122 = resolved;
         resolved = (_e122 + 1u);
         uint _e126 = bits_1;
-        scratch[min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
+        scratch[min(SCRATCH_LIGHT_BITS, 23u)] = _e126;
         uint _e132 = resolved;
-        scratch[min(SCRATCH_RESOLVED, 21u)] = _e132;
+        scratch[min(SCRATCH_RESOLVED, 23u)] = _e132;
     }
     return LightSample(vec3(0.0), 0.0, vec3(0.0), 0.0);
 }
@@ -1219,13 +1273,13 @@ float mis_weight(float p_6, float other) {
     if (!((p_6 > 0.0))) {
         return 0.0;
     }
-    float r_4 = (max(other, 0.0) / p_6);
-    if (!((r_4 < 1e18))) {
+    float r_3 = (max(other, 0.0) / p_6);
+    if (!((r_3 < 1e18))) {
         uint _e15 = F32_INF;
         uint _e19 = F32_INF;
         return (((p_6 == uintBitsToFloat(_e15)) && (other < uintBitsToFloat(_e19))) ? 1.0 : 0.0);
     }
-    return (1.0 / (1.0 + (r_4 * r_4)));
+    return (1.0 / (1.0 + (r_3 * r_3)));
 }
 
 float mis_light_weight(LightSample l_2, float bsdf_pdf) {
@@ -1238,23 +1292,23 @@ float mis_light_weight(LightSample l_2, float bsdf_pdf) {
 
 vec3 path_diffuse_shade(PathDiffuse m, Ray ray_13, Hit hit_1, vec3 secondary) {
     vec3 direct = vec3(0.0);
-    uint i_4 = 0u;
+    uint i_5 = 0u;
     vec3 n_13 = faceforward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
     direct = vec3(0.0);
     uint _e12 = light_count_query();
-    i_4 = 0u;
+    i_5 = 0u;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e33 = i_4;
-            i_4 = (_e33 + 1u);
+            uint _e33 = i_5;
+            i_5 = (_e33 + 1u);
         }
         loop_init_2 = false;
-        uint _e14 = i_4;
+        uint _e14 = i_5;
         if ((_e14 >= _e12)) {
             break;
         }
-        uint _e16 = i_4;
+        uint _e16 = i_5;
         LightSample _e19 = sample_light_deferred(_e16, hit_1.position, hit_1.geometric_normal);
         float c_11 = max(dot(n_13, _e19.dir), 0.0);
         vec3 _e24 = direct;
@@ -1279,11 +1333,11 @@ bool after_nee_bounce(Ray ray_14) {
 }
 
 float bounce_pdf(Ray ray_15) {
-    float x_3 = (length(ray_15.dir) - MIS_BOUNCE_LENGTH);
-    if (!((x_3 > -0.25))) {
+    float x_5 = (length(ray_15.dir) - MIS_BOUNCE_LENGTH);
+    if (!((x_5 > -0.25))) {
         return 0.0;
     }
-    return (exp((max(x_3, 0.0) * 90.0)) - 1.0);
+    return (exp((max(x_5, 0.0) * 90.0)) - 1.0);
 }
 
 vec3 quad_lamp_shade(QuadLamp m_1, Ray ray_16, Hit hit_2) {
@@ -1368,8 +1422,8 @@ vec3 pbr_fresnel(vec3 f0_, float c_2) {
 }
 
 float pbr_ggx_d(float ndh, float a2_) {
-    float d_4 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
-    return ((a2_ * INV_PI) / (d_4 * d_4));
+    float d_5 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
+    return ((a2_ * INV_PI) / (d_5 * d_5));
 }
 
 float pbr_smith_v(float ndl, float ndv, float a2_1) {
@@ -1378,8 +1432,8 @@ float pbr_smith_v(float ndl, float ndv, float a2_1) {
     return (0.5 / max((gv + gl), 1e-20));
 }
 
-vec3 pbr_eval(vec3 base_1, float metallic, float roughness_1, vec3 n_6, vec3 v_2, vec3 l_3) {
-    float ndv_3 = dot(n_6, v_2);
+vec3 pbr_eval(vec3 base_1, float metallic, float roughness_1, vec3 n_6, vec3 v_3, vec3 l_3) {
+    float ndv_3 = dot(n_6, v_3);
     float ndl_1 = dot(n_6, l_3);
     if ((!((ndv_3 > 0.0)) || !((ndl_1 > 0.0)))) {
         return vec3(0.0);
@@ -1387,8 +1441,8 @@ vec3 pbr_eval(vec3 base_1, float metallic, float roughness_1, vec3 n_6, vec3 v_2
     float metal = clamp(metallic, 0.0, 1.0);
     float _e18 = pbr_alpha2_(roughness_1);
     vec3 f0_1 = mix(vec3(0.04), base_1, vec3(metal));
-    vec3 _e24 = normalize_vec3f((v_2 + l_3));
-    vec3 _e26 = pbr_fresnel(f0_1, dot(v_2, _e24));
+    vec3 _e24 = normalize_vec3f((v_3 + l_3));
+    vec3 _e26 = pbr_fresnel(f0_1, dot(v_3, _e24));
     float _e29 = pbr_ggx_d(clamp(dot(n_6, _e24), 0.0, 1.0), _e18);
     float _e30 = pbr_smith_v(ndl_1, ndv_3, _e18);
     vec3 spec = (_e26 * vec3((_e29 * _e30)));
@@ -1419,47 +1473,47 @@ float pbr_specular_pdf(float ndh_1, float ndv_2, float a2_2) {
     return ((_e3 * 0.5) / (ndv_2 + sqrt((a2_2 + (((1.0 - a2_2) * ndv_2) * ndv_2)))));
 }
 
-float pbr_pdf(vec3 base_3, float metallic_2, float roughness_2, vec3 n_7, vec3 v_3, vec3 l_4) {
-    float ndv_4 = dot(n_7, v_3);
+float pbr_pdf(vec3 base_3, float metallic_2, float roughness_2, vec3 n_7, vec3 v_4, vec3 l_4) {
+    float ndv_4 = dot(n_7, v_4);
     float ndl_2 = dot(n_7, l_4);
     if ((!((ndv_4 > 0.0)) || !((ndl_2 > 0.0)))) {
         return 0.0;
     }
     float _e16 = pbr_alpha2_(roughness_2);
     float _e17 = pbr_specular_chance(base_3, metallic_2, ndv_4);
-    vec3 _e19 = normalize_vec3f((v_3 + l_4));
+    vec3 _e19 = normalize_vec3f((v_4 + l_4));
     float _e22 = pbr_specular_pdf(clamp(dot(n_7, _e19), 0.0, 1.0), ndv_4, _e16);
     return ((_e17 * _e22) + (((1.0 - _e17) * ndl_2) * INV_PI));
 }
 
 vec3 path_pbr_shade(PathPbr m_3, Ray ray_20, Hit hit_6, vec3 secondary_1) {
     vec3 direct_1 = vec3(0.0);
-    uint i_5 = 0u;
+    uint i_6 = 0u;
     float w = 0.0;
     vec3 _e4 = path_pbr_n(ray_20, hit_6);
     vec3 _e6 = normalize_vec3f(ray_20.dir);
-    vec3 v_6 = -(_e6);
+    vec3 v_7 = -(_e6);
     direct_1 = vec3(0.0);
     uint _e12 = light_count_query();
-    i_5 = 0u;
+    i_6 = 0u;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e49 = i_5;
-            i_5 = (_e49 + 1u);
+            uint _e49 = i_6;
+            i_6 = (_e49 + 1u);
         }
         loop_init_3 = false;
-        uint _e14 = i_5;
+        uint _e14 = i_6;
         if ((_e14 >= _e12)) {
             break;
         }
-        uint _e16 = i_5;
+        uint _e16 = i_6;
         LightSample _e19 = sample_light_deferred(_e16, hit_6.position, hit_6.geometric_normal);
         if (any(greaterThan(_e19.radiance, vec3(0.0)))) {
-            vec3 _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_6, _e19.dir);
+            vec3 _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_7, _e19.dir);
             w = 1.0;
             if ((_e19.pdf > 0.0)) {
-                float _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_6, _e19.dir);
+                float _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_7, _e19.dir);
                 float _e41 = mis_weight(_e19.pdf, _e40);
                 w = _e41;
             }
@@ -1528,16 +1582,16 @@ vec3 through_medium(Ray ray_24, float t_2, vec3 radiance_1) {
 }
 
 vec3 sample_cosine_hemisphere(vec3 n_8, vec2 u) {
-    float r_5 = sqrt(u.x);
+    float r_4 = sqrt(u.x);
     float phi_1 = (6.2831855 * u.y);
-    vec3 local = vec3((r_5 * cos(phi_1)), (r_5 * sin(phi_1)), sqrt(max((1.0 - u.x), 0.0)));
+    vec3 local = vec3((r_4 * cos(phi_1)), (r_4 * sin(phi_1)), sqrt(max((1.0 - u.x), 0.0)));
     mat3x3 _e17 = orthonormal_basis(n_8);
     return (_e17 * local);
 }
 
 vec3 mis_bounce_dir(vec3 dir_3, float pdf) {
-    float x_4 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
-    return (dir_3 * vec3((MIS_BOUNCE_LENGTH + x_4)));
+    float x_6 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
+    return (dir_3 * vec3((MIS_BOUNCE_LENGTH + x_6)));
 }
 
 void rt_spawn(vec3 dir_4, vec3 weight) {
@@ -1582,20 +1636,20 @@ vec3 pbr_sample_vndf(vec3 ve, float alpha, vec2 u_1) {
     }
     vec3 _e32 = t1_;
     vec3 t2_ = cross(_e9, _e32);
-    float r_6 = sqrt(u_1.x);
+    float r_5 = sqrt(u_1.x);
     float phi_2 = (TAU * u_1.y);
-    float p1_ = (r_6 * cos(phi_2));
-    float s_8 = (0.5 * (1.0 + _e9.z));
-    float p2_ = (((1.0 - s_8) * sqrt(max((1.0 - (p1_ * p1_)), 0.0))) + ((s_8 * r_6) * sin(phi_2)));
+    float p1_ = (r_5 * cos(phi_2));
+    float s_7 = (0.5 * (1.0 + _e9.z));
+    float p2_ = (((1.0 - s_7) * sqrt(max((1.0 - (p1_ * p1_)), 0.0))) + ((s_7 * r_5) * sin(phi_2)));
     vec3 _e59 = t1_;
     vec3 nh = (((_e59 * vec3(p1_)) + (t2_ * vec3(p2_))) + (_e9 * vec3(sqrt(max(((1.0 - (p1_ * p1_)) - (p2_ * p2_)), 0.0)))));
     vec3 _e84 = normalize_vec3f(vec3((alpha * nh.x), (alpha * nh.y), max(nh.z, 0.0)));
     return _e84;
 }
 
-PbrSample pbr_sample(vec3 base_4, float metallic_3, float roughness_3, vec3 n_9, vec3 v_4, vec3 u_2) {
+PbrSample pbr_sample(vec3 base_4, float metallic_3, float roughness_3, vec3 n_9, vec3 v_5, vec3 u_2) {
     vec3 l_5 = vec3(0.0);
-    float ndv_5 = dot(n_9, v_4);
+    float ndv_5 = dot(n_9, v_5);
     if (!((ndv_5 > 0.0))) {
         return PbrSample(n_9, vec3(0.0), 0.0);
     }
@@ -1604,21 +1658,21 @@ PbrSample pbr_sample(vec3 base_4, float metallic_3, float roughness_3, vec3 n_9,
     if ((u_2.x < _e14)) {
         mat3x3 _e20 = orthonormal_basis(n_9);
         float _e21 = pbr_alpha2_(roughness_3);
-        vec3 _e26 = pbr_sample_vndf((transpose(_e20) * v_4), sqrt(_e21), u_2.yz);
-        vec3 h_2 = (_e20 * _e26);
-        l_5 = reflect(-(v_4), h_2);
+        vec3 _e26 = pbr_sample_vndf((transpose(_e20) * v_5), sqrt(_e21), u_2.yz);
+        vec3 h_1 = (_e20 * _e26);
+        l_5 = reflect(-(v_5), h_1);
     } else {
         vec3 _e31 = sample_cosine_hemisphere(n_9, u_2.yz);
         l_5 = _e31;
     }
     vec3 _e32 = l_5;
-    float _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_4, _e32);
+    float _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_5, _e32);
     if (!((_e33 > 0.0))) {
         vec3 _e37 = l_5;
         return PbrSample(_e37, vec3(0.0), 0.0);
     }
     vec3 _e42 = l_5;
-    vec3 _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_4, _e42);
+    vec3 _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_5, _e42);
     vec3 weight_5 = (_e43 / vec3(_e33));
     vec3 _e46 = l_5;
     return PbrSample(_e46, weight_5, _e33);
@@ -1629,10 +1683,10 @@ void path_pbr_rays(PathPbr m_5, Ray ray_26, Hit hit_9) {
     vec3 _e3 = path_pbr_ng(ray_26, hit_9);
     vec3 _e4 = path_pbr_n(ray_26, hit_9);
     vec3 _e6 = normalize_vec3f(ray_26.dir);
-    vec3 v_7 = -(_e6);
+    vec3 v_8 = -(_e6);
     float _e11 = rand_next();
     vec2 _e12 = rand2_next();
-    PbrSample _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_7, vec3(_e11, _e12));
+    PbrSample _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_8, vec3(_e11, _e12));
     if ((!((_e14.pdf > 0.0)) || !((dot(_e14.dir, _e3) > 0.0)))) {
         return;
     }
@@ -1808,8 +1862,8 @@ vec3 trace(Ray camera_ray_1) {
     return _e23;
 }
 
-bvec3 is_finite_vec3f(vec3 x_2) {
-    return lessThan((floatBitsToUint(x_2) & uvec3(2147483647u)), uvec3(2139095040u));
+bvec3 is_finite_vec3f(vec3 x_4) {
+    return lessThan((floatBitsToUint(x_4) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
 vec3 finite_or_zero(vec3 c_6) {
@@ -1817,7 +1871,7 @@ vec3 finite_or_zero(vec3 c_6) {
     return mix(vec3(0.0), c_6, _e3);
 }
 
-void render_pixel(uvec2 pixel_3) {
+void render_pixel(uvec2 pixel_4) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s_4 = 0u;
@@ -1840,9 +1894,9 @@ void render_pixel(uvec2 pixel_3) {
             break;
         }
         uint _e18 = s_4;
-        uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_3, sample_3, frame_5.seed);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_4, sample_4, frame_5.seed);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
         ray_28 = _e23;
         ray_28.depth = 0u;
         ray_28.kind = RAY_CAMERA;
@@ -1869,10 +1923,10 @@ void render_pixel(uvec2 pixel_3) {
     vec4 _e62 = vec4(_e59, float(frame_5.samples_per_pass));
     uint _e63 = bad;
     if ((tile_2.frame == 0u)) {
-        _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = _e62;
+        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
     } else {
-        vec4 _e69 = _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)];
-        _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = (_e69 + _e62);
+        vec4 _e69 = _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
+        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
     }
     if ((_e63 > 0u)) {
         atomicAdd(_group_0_binding_9_cs[0], _e63);

@@ -223,6 +223,9 @@ static const uint WORKGROUP_WIDTH = 8u;
 static const uint WORKGROUP_HEIGHT = 8u;
 static const uint NO_HIT = 4294967295u;
 static const uint SCATTER = 1000003u;
+static const uint SCRATCH_RNG_INDEX = 12u;
+static const uint SCRATCH_RNG_SEED = 13u;
+static const uint HALF_WORD_BITS = 16u;
 static const uint RAY_CAMERA = 0u;
 static const bool HAS_MEDIA = false;
 static const uint MEDIUM_ENTRY_STRIDE = 1u;
@@ -248,7 +251,7 @@ static const uint SCRATCH_QUERY = 2u;
 static const uint SCRATCH_PENDING = 4u;
 static const uint LIGHT_QUERIES = 32u;
 static const uint COUNTER_SHADOW_OVERFLOW = 3u;
-static const uint SCRATCH_LIGHT_QUERY = 12u;
+static const uint SCRATCH_LIGHT_QUERY = 14u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
 static const float MIS_BOUNCE_LENGTH = 3.0;
@@ -261,6 +264,7 @@ static const uint RAY_SECONDARY = 1u;
 
 cbuffer tile : register(b1) { TileParams tile; }
 cbuffer frame : register(b0) { FrameUniforms frame; }
+static uint scratch[24] = (uint[24])0;
 static uint rng_state = (uint)0;
 ByteAddressBuffer params : register(t6);
 static uint F32_INF = 2139095040u;
@@ -271,7 +275,6 @@ static uint traversal_stack[72] = (uint[72])0;
 static float hit_error = (float)0;
 ByteAddressBuffer attributes : register(t5);
 static uint ray_count = (uint)0;
-static uint scratch[22] = (uint[22])0;
 RWByteAddressBuffer counters : register(u9);
 static float3 spawn_dirs[1] = (float3[1])0;
 static float3 spawn_weights[1] = (float3[1])0;
@@ -344,26 +347,25 @@ uint2 scattered_local(uint2 id)
 
 uint pcg_hash(uint x)
 {
-    uint state = ((x * 747796405u) + 2891336453u);
-    uint word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    uint state_1 = ((x * 747796405u) + 2891336453u);
+    uint word = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
     return ((word >> 22u) ^ word);
 }
 
-void rng_seed(uint2 pixel, uint sample_, uint seed)
+void rng_resume(uint2 pixel, uint sample_, uint seed, uint state)
 {
-    uint h = (uint)0;
+    scratch[min(uint(min(SCRATCH_RNG_INDEX, 23u)), 23u)] = sample_;
+    const uint _e12 = pcg_hash(seed);
+    const uint _e14 = pcg_hash((pixel.y ^ _e12));
+    const uint _e16 = pcg_hash((pixel.x ^ _e14));
+    scratch[min(uint(min(SCRATCH_RNG_SEED, 23u)), 23u)] = _e16;
+    rng_state = state;
+    return;
+}
 
-    const uint _e5 = pcg_hash(seed);
-    const uint _e7 = pcg_hash((sample_ ^ _e5));
-    const uint _e9 = pcg_hash((pixel.y ^ _e7));
-    const uint _e11 = pcg_hash((pixel.x ^ _e9));
-    h = _e11;
-    uint _e13 = h;
-    if ((_e13 == 0u)) {
-        h = 1u;
-    }
-    uint _e17 = h;
-    rng_state = _e17;
+void rng_seed(uint2 pixel_1, uint sample_1, uint seed_1)
+{
+    rng_resume(pixel_1, sample_1, seed_1, 0u);
     return;
 }
 
@@ -404,14 +406,71 @@ uint samples_per_pixel_query()
     return _e1.total_samples;
 }
 
+uint laine_karras(uint x_1, uint seed_2)
+{
+    uint v = (uint)0;
+
+    v = (x_1 + seed_2);
+    uint _e4 = v;
+    uint _e5 = v;
+    v = (_e4 ^ (_e5 * 1817228412u));
+    uint _e9 = v;
+    uint _e10 = v;
+    v = (_e9 ^ (_e10 * 3090095698u));
+    uint _e14 = v;
+    uint _e15 = v;
+    v = (_e14 ^ (_e15 * 3350193720u));
+    uint _e19 = v;
+    uint _e20 = v;
+    v = (_e19 ^ (_e20 * 2367878886u));
+    uint _e24 = v;
+    return _e24;
+}
+
+uint sobol_second_reversed(uint i)
+{
+    uint f = (uint)0;
+
+    f = i;
+    uint _e2 = f;
+    uint _e3 = f;
+    f = (_e2 ^ ((_e3 >> 1u) & 1431655765u));
+    uint _e9 = f;
+    uint _e10 = f;
+    f = (_e9 ^ ((_e10 >> 2u) & 858993459u));
+    uint _e16 = f;
+    uint _e17 = f;
+    f = (_e16 ^ ((_e17 >> 4u) & 252645135u));
+    uint _e23 = f;
+    uint _e24 = f;
+    f = (_e23 ^ ((_e24 >> 8u) & 16711935u));
+    uint _e30 = f;
+    uint _e31 = f;
+    f = (_e30 ^ (_e31 >> (HALF_WORD_BITS & 31u)));
+    uint _e37 = f;
+    return _e37;
+}
+
 float rand_next()
 {
-    uint _e1 = rng_state;
-    uint s_5 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_5;
-    uint word_1 = (((s_5 >> (((s_5 >> 28u) + 4u) & 31u)) ^ s_5) * 277803737u);
-    uint r_3 = ((word_1 >> 22u) ^ word_1);
-    return (float((r_3 >> 8u)) * (1.0 / 16777216.0));
+    uint x_2 = (uint)0;
+
+    uint d_1 = rng_state;
+    rng_state = (d_1 + 1u);
+    uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 23u)), 23u)];
+    const uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 23u)), 23u)];
+    const uint _e24 = laine_karras(reversebits(_e22), _e16);
+    uint i_7 = reversebits(_e24);
+    x_2 = i_7;
+    if (((d_1 & 1u) != 0u)) {
+        const uint _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    uint _e45 = x_2;
+    const uint _e46 = laine_karras(_e45, scramble);
+    return (float((reversebits(_e46) >> 8u)) * (1.0 / 16777216.0));
 }
 
 float2 rand2_next()
@@ -421,9 +480,9 @@ float2 rand2_next()
     return float2(_e0, _e1);
 }
 
-float3 normalize_vec3f(float3 v)
+float3 normalize_vec3f(float3 v_1)
 {
-    return ((dot(v, v) >= 1.1754944e-38) ? normalize(v) : (0.0).xxx);
+    return ((dot(v_1, v_1) >= 1.1754944e-38) ? normalize(v_1) : (0.0).xxx);
 }
 
 Ray ConstructRay(float3 arg0, float arg1, float3 arg2, float arg3, uint arg4, uint arg5, uint arg6) {
@@ -438,7 +497,7 @@ Ray ConstructRay(float3 arg0, float arg1, float3 arg2, float arg3, uint arg4, ui
     return ret;
 }
 
-Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
+Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
 {
     float2 jitter = (float2)0;
 
@@ -451,22 +510,22 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
         jitter = _e10;
     }
     float2 _e12 = jitter;
-    float2 ndc = ((((float2(pixel_1) + _e12) / size_1) * (2.0).xx) - (1.0).xx);
+    float2 ndc = ((((float2(pixel_2) + _e12) / size_1) * (2.0).xx) - (1.0).xx);
     const float3 _e24 = normalize_vec3f((cam.look_at - cam.position));
     const float3 _e27 = normalize_vec3f(cross(_e24, cam.up));
     float3 up = cross(_e27, _e24);
-    float h_1 = tan((radians(cam.fov) * 0.5));
+    float h = tan((radians(cam.fov) * 0.5));
     float aspect = (size_1.x / size_1.y);
-    const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
+    const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h) * aspect)).xxx)) - (up * ((ndc.y * h)).xxx)));
     uint _e52 = F32_INF;
     const Ray ray_29 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
     return ray_29;
 }
 
-Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
+Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
-    const Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
+    const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
     const Ray ray_30 = _e4;
     return ray_30;
 }
@@ -493,9 +552,9 @@ Ray to_object(GpuInstance inst, Ray ray)
 
     r = ray;
     float4 o = float4(ray.origin, 1.0);
-    float4 d_1 = float4(ray.dir, 0.0);
+    float4 d_2 = float4(ray.dir, 0.0);
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
+    r.dir = float3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
     const Ray ray_31 = _e25;
     return ray_31;
@@ -504,8 +563,8 @@ Ray to_object(GpuInstance inst, Ray ray)
 float3 safe_inverse(float3 d)
 {
     float3 tiny = (1.1754944e-38).xxx;
-    float3 s_6 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny) ? (s_6 * tiny) : d);
+    float3 s_5 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 dd = ((abs(d) < tiny) ? (s_5 * tiny) : d);
     return ((1.0).xxx / dd);
 }
 
@@ -522,19 +581,19 @@ TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, f
 
 TriangleRay prepare_triangle_ray(Ray ray_1)
 {
-    float3 d_2 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
-    float3 ad = abs(d_2);
+    float3 d_3 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
+    float3 ad = abs(d_3);
     bool y_gt = (ad.y > ad.x);
     uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
     uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
     uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
-    float dz = d_2[min(uint(min(kz, 2u)), 2u)];
+    float dz = d_3[min(uint(min(kz, 2u)), 2u)];
     bool flip = (dz < 0.0);
     uint kx = (flip ? ky0_ : kx0_);
     uint ky = (flip ? kx0_ : ky0_);
     uint3 inf_bits = (2139095040u).xxx;
-    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_2) & (2147483647u).xxx) < inf_bits)));
-    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_2[min(uint(min(kx, 2u)), 2u)] / dz), (d_2[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_3) & (2147483647u).xxx) < inf_bits)));
+    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_3[min(uint(min(kx, 2u)), 2u)] / dz), (d_3[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
     return triangleray;
 }
 
@@ -553,15 +612,15 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float cx = (c_7[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_7[min(uint(min(r_1.kz, 2u)), 2u)]));
     float cy = (c_7[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_7[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u_3 = ((cx * by) - (cy * bx));
-    float v_5 = ((ax * cy) - (ay * cx));
+    float v_6 = ((ax * cy) - (ay * cx));
     float w_1 = ((bx * ay) - (by * ax));
-    bool outside = ((((u_3 < 0.0) || (v_5 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_5 > 0.0)) || (w_1 > 0.0)));
-    float det = ((u_3 + v_5) + w_1);
+    bool outside = ((((u_3 < 0.0) || (v_6 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_6 > 0.0)) || (w_1 > 0.0)));
+    float det = ((u_3 + v_6) + w_1);
     float rcp_ = (1.0 / det);
-    float t_4 = ((((u_3 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_5 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w_1 * (r_1.shear.z * c_7[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_4 = ((((u_3 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_6 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w_1 * (r_1.shear.z * c_7[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_12 ? float3(t_4, (v_5 * rcp_), (w_1 * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_12 ? float3(t_4, (v_6 * rcp_), (w_1 * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -780,10 +839,10 @@ Intersection sphere_intersect(Sphere s, Ray ray_5)
 {
     float t = (float)0;
 
-    float3 f = (ray_5.origin - s.center_);
+    float3 f_1 = (ray_5.origin - s.center_);
     float a_5 = dot(ray_5.dir, ray_5.dir);
-    float b_6 = -(dot(f, ray_5.dir));
-    float3 l_6 = (f + (ray_5.dir * ((b_6 / a_5)).xxx));
+    float b_6 = -(dot(f_1, ray_5.dir));
+    float3 l_6 = (f_1 + (ray_5.dir * ((b_6 / a_5)).xxx));
     float r2_ = (s.radius * s.radius);
     float disc = (a_5 * (r2_ - dot(l_6, l_6)));
     if ((!((disc >= 0.0)) || !((a_5 > 0.0)))) {
@@ -792,7 +851,7 @@ Intersection sphere_intersect(Sphere s, Ray ray_5)
         return intersection;
     }
     float q_1 = (b_6 + (((b_6 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
-    float t0_1 = ((dot(f, f) - r2_) / q_1);
+    float t0_1 = ((dot(f_1, f_1) - r2_) / q_1);
     float t1_2 = (q_1 / a_5);
     t = min(t0_1, t1_2);
     float _e52 = t;
@@ -924,9 +983,9 @@ float3 decode_octahedral(uint bits)
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         float3 _e21 = n_1;
-        float2 s_7 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
+        float2 s_6 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
         float3 _e29 = n_1;
-        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_7);
+        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_6);
         float _e37 = n_1.z;
         n_1 = float3(xy.x, xy.y, _e37);
     }
@@ -1018,7 +1077,7 @@ uint medium_at(float3 p_4, uint exclude)
 {
     uint inside = (uint)0;
     float nearest = (float)0;
-    uint i = (uint)0;
+    uint i_1 = (uint)0;
 
     if (!(HAS_MEDIA)) {
         return 0u;
@@ -1031,22 +1090,22 @@ uint medium_at(float3 p_4, uint exclude)
     uint _e23 = F32_INF;
     nearest = asfloat(_e23);
     uint end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e59 = i;
-            i = (_e59 + 1u);
+            uint _e59 = i_1;
+            i_1 = (_e59 + 1u);
         }
         loop_init_1 = false;
-        uint _e29 = i;
+        uint _e29 = i_1;
         if ((_e29 >= end)) {
             break;
         }
-        uint _e32 = i;
+        uint _e32 = i_1;
         uint slot_4 = asuint(params.Load((frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))*4));
         if ((slot_4 != exclude)) {
             uint _e41 = F32_INF;
@@ -1268,37 +1327,37 @@ QuadLight load_QuadLight(uint offset_7)
     return quadlight;
 }
 
-void scratch_store3f(uint i_1, float3 v_1)
+void scratch_store3f(uint i_2, float3 v_2)
 {
-    uint3 b_8 = asuint(v_1);
-    scratch[min(uint(min(i_1, 21u)), 21u)] = b_8.x;
-    scratch[min(uint(min((i_1 + 1u), 21u)), 21u)] = b_8.y;
-    scratch[min(uint(min((i_1 + 2u), 21u)), 21u)] = b_8.z;
+    uint3 b_8 = asuint(v_2);
+    scratch[min(uint(min(i_2, 23u)), 23u)] = b_8.x;
+    scratch[min(uint(min((i_2 + 1u), 23u)), 23u)] = b_8.y;
+    scratch[min(uint(min((i_2 + 2u), 23u)), 23u)] = b_8.z;
     return;
 }
 
 float shadow_deferred(float3 position, float3 normal, float3 dir, float dist)
 {
-    uint i_6 = scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)];
-    scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)] = (i_6 + 1u);
-    uint _e22 = scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)];
-    if ((i_6 < _e22)) {
-        uint _e29 = scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)];
-        return float(((_e29 >> (i_6 & 31u)) & 1u));
+    uint i_8 = scratch[min(uint(min(SCRATCH_QUERY, 23u)), 23u)];
+    scratch[min(uint(min(SCRATCH_QUERY, 23u)), 23u)] = (i_8 + 1u);
+    uint _e22 = scratch[min(uint(min(SCRATCH_RESOLVED, 23u)), 23u)];
+    if ((i_8 < _e22)) {
+        uint _e29 = scratch[min(uint(min(SCRATCH_LIGHT_BITS, 23u)), 23u)];
+        return float(((_e29 >> (i_8 & 31u)) & 1u));
     }
-    uint _e41 = scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)];
+    uint _e41 = scratch[min(uint(min(SCRATCH_PENDING, 23u)), 23u)];
     if ((_e41 != 0u)) {
         return 1.0;
     }
-    if ((i_6 >= LIGHT_QUERIES)) {
+    if ((i_8 >= LIGHT_QUERIES)) {
         counters.InterlockedAdd(min(COUNTER_SHADOW_OVERFLOW, 3u)*4, 1u);
         return 1.0;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 21u)), 21u)] = asuint(dist);
-    scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)] = 1u;
+    scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 23u)), 23u)] = asuint(dist);
+    scratch[min(uint(min(SCRATCH_PENDING, 23u)), 23u)] = 1u;
     return 1.0;
 }
 
@@ -1421,28 +1480,28 @@ LightSample dispatch_light(uint type_id_3, uint offset_9, float3 position_3, flo
     return lightsample_6;
 }
 
-float3 scratch_load3f(uint i_2)
+float3 scratch_load3f(uint i_3)
 {
-    uint _e5 = scratch[min(uint(min(i_2, 21u)), 21u)];
-    uint _e12 = scratch[min(uint(min((i_2 + 1u), 21u)), 21u)];
-    uint _e19 = scratch[min(uint(min((i_2 + 2u), 21u)), 21u)];
+    uint _e5 = scratch[min(uint(min(i_3, 23u)), 23u)];
+    uint _e12 = scratch[min(uint(min((i_3 + 1u), 23u)), 23u)];
+    uint _e19 = scratch[min(uint(min((i_3 + 2u), 23u)), 23u)];
     return asfloat(uint3(_e5, _e12, _e19));
 }
 
-float3 step_toward(float3 x_1, float3 s_1)
+float3 step_toward(float3 x_3, float3 s_1)
 {
-    uint3 bits_2 = asuint(x_1);
-    bool3 up_1 = ((sign(x_1) * sign(s_1)) > (0.0).xxx);
+    uint3 bits_2 = asuint(x_3);
+    bool3 up_1 = ((sign(x_3) * sign(s_1)) > (0.0).xxx);
     float3 stepped = asfloat((up_1 ? (bits_2 + (1u).xxx) : (bits_2 - (1u).xxx)));
     float3 from_zero = ((s_1 > (0.0).xxx) ? (1.1754944e-38).xxx : (-1.1754944e-38).xxx);
-    float3 moved = ((x_1 == (0.0).xxx) ? from_zero : stepped);
-    return (!((s_1 == (0.0).xxx)) ? moved : x_1);
+    float3 moved = ((x_3 == (0.0).xxx) ? from_zero : stepped);
+    return (!((s_1 == (0.0).xxx)) ? moved : x_3);
 }
 
 float3 offset_origin(float3 p_5, float3 n_4, float error)
 {
-    float d_3 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    float3 offset_16 = (n_4 * (d_3).xxx);
+    float d_4 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    float3 offset_16 = (n_4 * (d_4).xxx);
     const float3 _e17 = step_toward((p_5 + offset_16), offset_16);
     return _e17;
 }
@@ -1485,35 +1544,35 @@ float shadow_query(float3 position_5, float3 normal_5, float3 dir_2, float dist_
     return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample sample_light_deferred(uint i_3, float3 position_6, float3 normal_6)
+LightSample sample_light_deferred(uint i_4, float3 position_6, float3 normal_6)
 {
     uint after = (uint)0;
     uint resolved = (uint)0;
     uint bits_1 = (uint)0;
 
     FrameUniforms frame_4 = frame;
-    if ((i_3 >= frame_4.light_count)) {
+    if ((i_4 >= frame_4.light_count)) {
         const LightSample lightsample_7 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_7;
     }
-    uint entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     uint type_id_7 = asuint(params.Load(entry*4));
     uint offset_17 = asuint(params.Load((entry + 1u)*4));
     uint start = rng_state;
     after = start;
     resolved = 0u;
     bits_1 = 0u;
-    scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)] = 0u;
-    scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)] = 0u;
+    scratch[min(uint(min(SCRATCH_RESOLVED, 23u)), 23u)] = 0u;
+    scratch[min(uint(min(SCRATCH_LIGHT_BITS, 23u)), 23u)] = 0u;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         rng_state = start;
-        scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)] = 0u;
-        scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)] = 0u;
+        scratch[min(uint(min(SCRATCH_QUERY, 23u)), 23u)] = 0u;
+        scratch[min(uint(min(SCRATCH_PENDING, 23u)), 23u)] = 0u;
         const LightSample _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_6);
-        uint _e66 = scratch[min(uint(min(SCRATCH_PENDING, 21u)), 21u)];
+        uint _e66 = scratch[min(uint(min(SCRATCH_PENDING, 23u)), 23u)];
         if ((_e66 == 0u)) {
             uint _e69 = resolved;
             if ((_e69 > 0u)) {
@@ -1533,12 +1592,12 @@ LightSample sample_light_deferred(uint i_3, float3 position_6, float3 normal_6)
         const float3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
         const float3 _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
         const float3 _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        uint _e95 = scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 21u)), 21u)];
+        uint _e95 = scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 23u)), 23u)];
         const float _e97 = shadow_query(_e82, _e85, _e88, asfloat(_e95));
         uint _e99 = rng_state;
         after = _e99;
         if (!((_e97 == 0.0))) {
-            uint _e108 = scratch[min(uint(min(SCRATCH_QUERY, 21u)), 21u)];
+            uint _e108 = scratch[min(uint(min(SCRATCH_QUERY, 23u)), 23u)];
             uint _e109 = resolved;
             if ((_e108 == (_e109 + 1u))) {
                 uint _e113 = after;
@@ -1553,9 +1612,9 @@ LightSample sample_light_deferred(uint i_3, float3 position_6, float3 normal_6)
         uint _e122 = resolved;
         resolved = (_e122 + 1u);
         uint _e126 = bits_1;
-        scratch[min(uint(min(SCRATCH_LIGHT_BITS, 21u)), 21u)] = _e126;
+        scratch[min(uint(min(SCRATCH_LIGHT_BITS, 23u)), 23u)] = _e126;
         uint _e132 = resolved;
-        scratch[min(uint(min(SCRATCH_RESOLVED, 21u)), 21u)] = _e132;
+        scratch[min(uint(min(SCRATCH_RESOLVED, 23u)), 23u)] = _e132;
     }
     const LightSample lightsample_10 = ZeroValueLightSample();
     return lightsample_10;
@@ -1566,13 +1625,13 @@ float mis_weight(float p_6, float other)
     if (!((p_6 > 0.0))) {
         return 0.0;
     }
-    float r_4 = (max(other, 0.0) / p_6);
-    if (!((r_4 < 1e18))) {
+    float r_3 = (max(other, 0.0) / p_6);
+    if (!((r_3 < 1e18))) {
         uint _e15 = F32_INF;
         uint _e19 = F32_INF;
         return (((p_6 == asfloat(_e15)) && (other < asfloat(_e19))) ? 1.0 : 0.0);
     }
-    return (1.0 / (1.0 + (r_4 * r_4)));
+    return (1.0 / (1.0 + (r_3 * r_3)));
 }
 
 float mis_light_weight(LightSample l_2, float bsdf_pdf)
@@ -1587,27 +1646,27 @@ float mis_light_weight(LightSample l_2, float bsdf_pdf)
 float3 path_diffuse_shade(PathDiffuse m, Ray ray_13, Hit hit_1, float3 secondary)
 {
     float3 direct = (float3)0;
-    uint i_4 = (uint)0;
+    uint i_5 = (uint)0;
 
     float3 n_13 = faceforward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
     direct = (0.0).xxx;
     const uint _e12 = light_count_query();
-    i_4 = 0u;
+    i_5 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e33 = i_4;
-            i_4 = (_e33 + 1u);
+            uint _e33 = i_5;
+            i_5 = (_e33 + 1u);
         }
         loop_init_2 = false;
-        uint _e14 = i_4;
+        uint _e14 = i_5;
         if ((_e14 >= _e12)) {
             break;
         }
-        uint _e16 = i_4;
+        uint _e16 = i_5;
         const LightSample _e19 = sample_light_deferred(_e16, hit_1.position, hit_1.geometric_normal);
         float c_11 = max(dot(n_13, _e19.dir), 0.0);
         float3 _e24 = direct;
@@ -1644,11 +1703,11 @@ bool after_nee_bounce(Ray ray_14)
 
 float bounce_pdf(Ray ray_15)
 {
-    float x_3 = (length(ray_15.dir) - MIS_BOUNCE_LENGTH);
-    if (!((x_3 > -0.25))) {
+    float x_5 = (length(ray_15.dir) - MIS_BOUNCE_LENGTH);
+    if (!((x_5 > -0.25))) {
         return 0.0;
     }
-    return (exp((max(x_3, 0.0) * 90.0)) - 1.0);
+    return (exp((max(x_5, 0.0) * 90.0)) - 1.0);
 }
 
 float3 quad_lamp_shade(QuadLamp m_1, Ray ray_16, Hit hit_2)
@@ -1762,8 +1821,8 @@ float3 pbr_fresnel(float3 f0_, float c_2)
 
 float pbr_ggx_d(float ndh, float a2_)
 {
-    float d_4 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
-    return ((a2_ * INV_PI) / (d_4 * d_4));
+    float d_5 = (((ndh * ndh) * (a2_ - 1.0)) + 1.0);
+    return ((a2_ * INV_PI) / (d_5 * d_5));
 }
 
 float pbr_smith_v(float ndl, float ndv, float a2_1)
@@ -1773,9 +1832,9 @@ float pbr_smith_v(float ndl, float ndv, float a2_1)
     return (0.5 / max((gv + gl), 1e-20));
 }
 
-float3 pbr_eval(float3 base_1, float metallic, float roughness_1, float3 n_6, float3 v_2, float3 l_3)
+float3 pbr_eval(float3 base_1, float metallic, float roughness_1, float3 n_6, float3 v_3, float3 l_3)
 {
-    float ndv_3 = dot(n_6, v_2);
+    float ndv_3 = dot(n_6, v_3);
     float ndl_1 = dot(n_6, l_3);
     if ((!((ndv_3 > 0.0)) || !((ndl_1 > 0.0)))) {
         return (0.0).xxx;
@@ -1783,8 +1842,8 @@ float3 pbr_eval(float3 base_1, float metallic, float roughness_1, float3 n_6, fl
     float metal = saturate(metallic);
     const float _e18 = pbr_alpha2_(roughness_1);
     float3 f0_1 = lerp((0.04).xxx, base_1, (metal).xxx);
-    const float3 _e24 = normalize_vec3f((v_2 + l_3));
-    const float3 _e26 = pbr_fresnel(f0_1, dot(v_2, _e24));
+    const float3 _e24 = normalize_vec3f((v_3 + l_3));
+    const float3 _e26 = pbr_fresnel(f0_1, dot(v_3, _e24));
     const float _e29 = pbr_ggx_d(saturate(dot(n_6, _e24)), _e18);
     const float _e30 = pbr_smith_v(ndl_1, ndv_3, _e18);
     float3 spec = (_e26 * ((_e29 * _e30)).xxx);
@@ -1818,16 +1877,16 @@ float pbr_specular_pdf(float ndh_1, float ndv_2, float a2_2)
     return ((_e3 * 0.5) / (ndv_2 + sqrt((a2_2 + (((1.0 - a2_2) * ndv_2) * ndv_2)))));
 }
 
-float pbr_pdf(float3 base_3, float metallic_2, float roughness_2, float3 n_7, float3 v_3, float3 l_4)
+float pbr_pdf(float3 base_3, float metallic_2, float roughness_2, float3 n_7, float3 v_4, float3 l_4)
 {
-    float ndv_4 = dot(n_7, v_3);
+    float ndv_4 = dot(n_7, v_4);
     float ndl_2 = dot(n_7, l_4);
     if ((!((ndv_4 > 0.0)) || !((ndl_2 > 0.0)))) {
         return 0.0;
     }
     const float _e16 = pbr_alpha2_(roughness_2);
     const float _e17 = pbr_specular_chance(base_3, metallic_2, ndv_4);
-    const float3 _e19 = normalize_vec3f((v_3 + l_4));
+    const float3 _e19 = normalize_vec3f((v_4 + l_4));
     const float _e22 = pbr_specular_pdf(saturate(dot(n_7, _e19)), ndv_4, _e16);
     return ((_e17 * _e22) + (((1.0 - _e17) * ndl_2) * INV_PI));
 }
@@ -1835,36 +1894,36 @@ float pbr_pdf(float3 base_3, float metallic_2, float roughness_2, float3 n_7, fl
 float3 path_pbr_shade(PathPbr m_3, Ray ray_20, Hit hit_6, float3 secondary_1)
 {
     float3 direct_1 = (float3)0;
-    uint i_5 = (uint)0;
+    uint i_6 = (uint)0;
     float w = (float)0;
 
     const float3 _e4 = path_pbr_n(ray_20, hit_6);
     const float3 _e6 = normalize_vec3f(ray_20.dir);
-    float3 v_6 = -(_e6);
+    float3 v_7 = -(_e6);
     direct_1 = (0.0).xxx;
     const uint _e12 = light_count_query();
-    i_5 = 0u;
+    i_6 = 0u;
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e49 = i_5;
-            i_5 = (_e49 + 1u);
+            uint _e49 = i_6;
+            i_6 = (_e49 + 1u);
         }
         loop_init_3 = false;
-        uint _e14 = i_5;
+        uint _e14 = i_6;
         if ((_e14 >= _e12)) {
             break;
         }
-        uint _e16 = i_5;
+        uint _e16 = i_6;
         const LightSample _e19 = sample_light_deferred(_e16, hit_6.position, hit_6.geometric_normal);
         if (any((_e19.radiance > (0.0).xxx))) {
-            const float3 _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_6, _e19.dir);
+            const float3 _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_7, _e19.dir);
             w = 1.0;
             if ((_e19.pdf > 0.0)) {
-                const float _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_6, _e19.dir);
+                const float _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_7, _e19.dir);
                 const float _e41 = mis_weight(_e19.pdf, _e40);
                 w = _e41;
             }
@@ -1942,17 +2001,17 @@ float3 through_medium(Ray ray_24, float t_2, float3 radiance_1)
 
 float3 sample_cosine_hemisphere(float3 n_8, float2 u)
 {
-    float r_5 = sqrt(u.x);
+    float r_4 = sqrt(u.x);
     float phi_1 = (6.2831855 * u.y);
-    float3 local = float3((r_5 * cos(phi_1)), (r_5 * sin(phi_1)), sqrt(max((1.0 - u.x), 0.0)));
+    float3 local = float3((r_4 * cos(phi_1)), (r_4 * sin(phi_1)), sqrt(max((1.0 - u.x), 0.0)));
     const float3x3 _e17 = orthonormal_basis(n_8);
     return mul(local, _e17);
 }
 
 float3 mis_bounce_dir(float3 dir_3, float pdf)
 {
-    float x_4 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
-    return (dir_3 * ((MIS_BOUNCE_LENGTH + x_4)).xxx);
+    float x_6 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
+    return (dir_3 * ((MIS_BOUNCE_LENGTH + x_6)).xxx);
 }
 
 void rt_spawn(float3 dir_4, float3 weight)
@@ -2002,11 +2061,11 @@ float3 pbr_sample_vndf(float3 ve, float alpha, float2 u_1)
     }
     float3 _e32 = t1_;
     float3 t2_ = cross(_e9, _e32);
-    float r_6 = sqrt(u_1.x);
+    float r_5 = sqrt(u_1.x);
     float phi_2 = (TAU * u_1.y);
-    float p1_ = (r_6 * cos(phi_2));
-    float s_8 = (0.5 * (1.0 + _e9.z));
-    float p2_ = (((1.0 - s_8) * sqrt(max((1.0 - (p1_ * p1_)), 0.0))) + ((s_8 * r_6) * sin(phi_2)));
+    float p1_ = (r_5 * cos(phi_2));
+    float s_7 = (0.5 * (1.0 + _e9.z));
+    float p2_ = (((1.0 - s_7) * sqrt(max((1.0 - (p1_ * p1_)), 0.0))) + ((s_7 * r_5) * sin(phi_2)));
     float3 _e59 = t1_;
     float3 nh = (((_e59 * (p1_).xxx) + (t2_ * (p2_).xxx)) + (_e9 * (sqrt(max(((1.0 - (p1_ * p1_)) - (p2_ * p2_)), 0.0))).xxx));
     const float3 _e84 = normalize_vec3f(float3((alpha * nh.x), (alpha * nh.y), max(nh.z, 0.0)));
@@ -2021,11 +2080,11 @@ PbrSample ConstructPbrSample(float3 arg0, float3 arg1, float arg2) {
     return ret;
 }
 
-PbrSample pbr_sample(float3 base_4, float metallic_3, float roughness_3, float3 n_9, float3 v_4, float3 u_2)
+PbrSample pbr_sample(float3 base_4, float metallic_3, float roughness_3, float3 n_9, float3 v_5, float3 u_2)
 {
     float3 l_5 = (float3)0;
 
-    float ndv_5 = dot(n_9, v_4);
+    float ndv_5 = dot(n_9, v_5);
     if (!((ndv_5 > 0.0))) {
         const PbrSample pbrsample = ConstructPbrSample(n_9, (0.0).xxx, 0.0);
         return pbrsample;
@@ -2035,22 +2094,22 @@ PbrSample pbr_sample(float3 base_4, float metallic_3, float roughness_3, float3 
     if ((u_2.x < _e14)) {
         const float3x3 _e20 = orthonormal_basis(n_9);
         const float _e21 = pbr_alpha2_(roughness_3);
-        const float3 _e26 = pbr_sample_vndf(mul(v_4, transpose(_e20)), sqrt(_e21), u_2.yz);
-        float3 h_2 = mul(_e26, _e20);
-        l_5 = reflect(-(v_4), h_2);
+        const float3 _e26 = pbr_sample_vndf(mul(v_5, transpose(_e20)), sqrt(_e21), u_2.yz);
+        float3 h_1 = mul(_e26, _e20);
+        l_5 = reflect(-(v_5), h_1);
     } else {
         const float3 _e31 = sample_cosine_hemisphere(n_9, u_2.yz);
         l_5 = _e31;
     }
     float3 _e32 = l_5;
-    const float _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_4, _e32);
+    const float _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_5, _e32);
     if (!((_e33 > 0.0))) {
         float3 _e37 = l_5;
         const PbrSample pbrsample_1 = ConstructPbrSample(_e37, (0.0).xxx, 0.0);
         return pbrsample_1;
     }
     float3 _e42 = l_5;
-    const float3 _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_4, _e42);
+    const float3 _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_5, _e42);
     float3 weight_5 = (_e43 / (_e33).xxx);
     float3 _e46 = l_5;
     const PbrSample pbrsample_2 = ConstructPbrSample(_e46, weight_5, _e33);
@@ -2064,10 +2123,10 @@ void path_pbr_rays(PathPbr m_5, Ray ray_26, Hit hit_9)
     const float3 _e3 = path_pbr_ng(ray_26, hit_9);
     const float3 _e4 = path_pbr_n(ray_26, hit_9);
     const float3 _e6 = normalize_vec3f(ray_26.dir);
-    float3 v_7 = -(_e6);
+    float3 v_8 = -(_e6);
     const float _e11 = rand_next();
     const float2 _e12 = rand2_next();
-    const PbrSample _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_7, float3(_e11, _e12));
+    const PbrSample _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_8, float3(_e11, _e12));
     if ((!((_e14.pdf > 0.0)) || !((dot(_e14.dir, _e3) > 0.0)))) {
         return;
     }
@@ -2270,9 +2329,9 @@ float3 trace(Ray camera_ray_1)
     return _e23;
 }
 
-bool3 is_finite_vec3f(float3 x_2)
+bool3 is_finite_vec3f(float3 x_4)
 {
-    return ((asuint(x_2) & (2147483647u).xxx) < (2139095040u).xxx);
+    return ((asuint(x_4) & (2147483647u).xxx) < (2139095040u).xxx);
 }
 
 float3 finite_or_zero(float3 c_6)
@@ -2281,7 +2340,7 @@ float3 finite_or_zero(float3 c_6)
     return (_e3 ? c_6 : (0.0).xxx);
 }
 
-void render_pixel(uint2 pixel_3)
+void render_pixel(uint2 pixel_4)
 {
     float3 sum = (float3)0;
     uint bad = (uint)0;
@@ -2309,9 +2368,9 @@ void render_pixel(uint2 pixel_3)
             break;
         }
         uint _e18 = s_4;
-        uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_3, sample_3, frame_5.seed);
-        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_4, sample_4, frame_5.seed);
+        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
         ray_28 = _e23;
         ray_28.depth = 0u;
         ray_28.kind = RAY_CAMERA;
@@ -2338,10 +2397,10 @@ void render_pixel(uint2 pixel_3)
     float4 _e62 = float4(_e59, float(frame_5.samples_per_pass));
     uint _e63 = bad;
     if ((tile_2.frame == 0u)) {
-        accum.Store4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16, asuint(_e62));
+        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint(_e62));
     } else {
-        float4 _e69 = asfloat(accum.Load4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16));
-        accum.Store4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16, asuint((_e69 + _e62)));
+        float4 _e69 = asfloat(accum.Load4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16));
+        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint((_e69 + _e62)));
     }
     if ((_e63 > 0u)) {
         counters.InterlockedAdd(0, _e63);

@@ -5,11 +5,11 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size3;
-    uint size5;
+    uint size4;
     uint size6;
     uint size7;
-    uint size10;
+    uint size8;
+    uint size11;
     uint size13;
     uint size17;
 };
@@ -37,6 +37,9 @@ struct FrameUniforms {
     uint background_offset;
     uint path_slots;
 };
+struct type_3 {
+    uint inner[24];
+};
 struct Ray {
     metal::packed_float3 origin;
     float tmin;
@@ -47,7 +50,7 @@ struct Ray {
     uint medium;
     char _pad7[4];
 };
-typedef uint type_4[1];
+typedef uint type_5[1];
 struct Pinhole {
     metal::float3 position;
     metal::float3 look_at;
@@ -79,7 +82,7 @@ struct GpuInstance {
     uint flags;
     uint object;
 };
-typedef GpuInstance type_8[1];
+typedef GpuInstance type_9[1];
 struct TriangleRay {
     metal::packed_float3 origin;
     uint kx;
@@ -96,9 +99,9 @@ struct GpuNode {
     metal::packed_float3 max;
     uint b;
 };
-typedef GpuNode type_9[1];
-typedef metal::float4 type_10[1];
-struct type_12 {
+typedef GpuNode type_10[1];
+typedef metal::float4 type_11[1];
+struct type_13 {
     uint inner[72];
 };
 struct Sphere {
@@ -129,7 +132,7 @@ struct Triangle {
     metal::float3 v1_;
     metal::float3 v2_;
 };
-typedef metal::uint4 type_14[1];
+typedef metal::uint4 type_15[1];
 struct ConstantBackground {
     metal::float3 color;
 };
@@ -142,9 +145,6 @@ struct LightSample {
     float dist;
     metal::packed_float3 radiance;
     float pdf;
-};
-struct type_15 {
-    uint inner[22];
 };
 struct QuadLight {
     metal::float3 corner;
@@ -203,6 +203,9 @@ constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint NO_HIT = 4294967295u;
 constant uint SCATTER = 1000003u;
+constant uint SCRATCH_RNG_INDEX = 12u;
+constant uint SCRATCH_RNG_SEED = 13u;
+constant uint HALF_WORD_BITS = 16u;
 constant uint RAY_CAMERA = 0u;
 constant bool HAS_MEDIA = false;
 constant uint MEDIUM_ENTRY_STRIDE = 1u;
@@ -228,7 +231,7 @@ constant uint SCRATCH_QUERY = 2u;
 constant uint SCRATCH_PENDING = 4u;
 constant uint LIGHT_QUERIES = 32u;
 constant uint COUNTER_SHADOW_OVERFLOW = 3u;
-constant uint SCRATCH_LIGHT_QUERY = 12u;
+constant uint SCRATCH_LIGHT_QUERY = 14u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
 constant float MIS_BOUNCE_LENGTH = 3.0;
@@ -316,35 +319,42 @@ metal::uint2 scattered_local(
 uint pcg_hash(
     uint x
 ) {
-    uint state = (x * 747796405u) + 2891336453u;
-    uint word = ((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u;
+    uint state_1 = (x * 747796405u) + 2891336453u;
+    uint word = ((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u;
     return (word >> 22u) ^ word;
 }
 
-void rng_seed(
+void rng_resume(
     metal::uint2 pixel,
     uint sample,
     uint seed,
+    uint state,
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    uint h = {};
-    uint _e5 = pcg_hash(seed);
-    uint _e7 = pcg_hash(sample ^ _e5);
-    uint _e9 = pcg_hash(pixel.y ^ _e7);
-    uint _e11 = pcg_hash(pixel.x ^ _e9);
-    h = _e11;
-    uint _e13 = h;
-    if (_e13 == 0u) {
-        h = 1u;
-    }
-    uint _e17 = h;
-    rng_state = _e17;
+    scratch.inner[metal::min(SCRATCH_RNG_INDEX, 23u)] = sample;
+    uint _e12 = pcg_hash(seed);
+    uint _e14 = pcg_hash(pixel.y ^ _e12);
+    uint _e16 = pcg_hash(pixel.x ^ _e14);
+    scratch.inner[metal::min(SCRATCH_RNG_SEED, 23u)] = _e16;
+    rng_state = state;
+    return;
+}
+
+void rng_seed(
+    metal::uint2 pixel_1,
+    uint sample_1,
+    uint seed_1,
+    thread type_3& scratch,
+    thread uint& rng_state
+) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u, scratch, rng_state);
     return;
 }
 
 Pinhole load_Pinhole(
     uint offset,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset + 0u];
@@ -374,37 +384,97 @@ uint samples_per_pixel_query(
     return _e1.total_samples;
 }
 
+uint laine_karras(
+    uint x_1,
+    uint seed_2
+) {
+    uint v = {};
+    v = x_1 + seed_2;
+    uint _e4 = v;
+    uint _e5 = v;
+    v = _e4 ^ (_e5 * 1817228412u);
+    uint _e9 = v;
+    uint _e10 = v;
+    v = _e9 ^ (_e10 * 3090095698u);
+    uint _e14 = v;
+    uint _e15 = v;
+    v = _e14 ^ (_e15 * 3350193720u);
+    uint _e19 = v;
+    uint _e20 = v;
+    v = _e19 ^ (_e20 * 2367878886u);
+    uint _e24 = v;
+    return _e24;
+}
+
+uint sobol_second_reversed(
+    uint i
+) {
+    uint f = {};
+    f = i;
+    uint _e2 = f;
+    uint _e3 = f;
+    f = _e2 ^ ((_e3 >> 1u) & 1431655765u);
+    uint _e9 = f;
+    uint _e10 = f;
+    f = _e9 ^ ((_e10 >> 2u) & 858993459u);
+    uint _e16 = f;
+    uint _e17 = f;
+    f = _e16 ^ ((_e17 >> 4u) & 252645135u);
+    uint _e23 = f;
+    uint _e24 = f;
+    f = _e23 ^ ((_e24 >> 8u) & 16711935u);
+    uint _e30 = f;
+    uint _e31 = f;
+    f = _e30 ^ (_e31 >> (HALF_WORD_BITS & 31u));
+    uint _e37 = f;
+    return _e37;
+}
+
 float rand_next(
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    uint _e1 = rng_state;
-    uint s_5 = (_e1 * 747796405u) + 2891336453u;
-    rng_state = s_5;
-    uint word_1 = ((s_5 >> (((s_5 >> 28u) + 4u) & 31u)) ^ s_5) * 277803737u;
-    uint r_3 = (word_1 >> 22u) ^ word_1;
-    return static_cast<float>(r_3 >> 8u) * (1.0 / 16777216.0);
+    uint x_2 = {};
+    uint d_1 = rng_state;
+    rng_state = d_1 + 1u;
+    uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 23u)];
+    uint _e16 = pcg_hash(_e10 ^ ((d_1 >> 1u) * 2654435769u));
+    uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 23u)];
+    uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
+    uint i_7 = metal::reverse_bits(_e24);
+    x_2 = i_7;
+    if ((d_1 & 1u) != 0u) {
+        uint _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    uint scramble = _e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
+    uint _e45 = x_2;
+    uint _e46 = laine_karras(_e45, scramble);
+    return static_cast<float>(metal::reverse_bits(_e46) >> 8u) * (1.0 / 16777216.0);
 }
 
 metal::float2 rand2_next(
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    float _e0 = rand_next(rng_state);
-    float _e1 = rand_next(rng_state);
+    float _e0 = rand_next(scratch, rng_state);
+    float _e1 = rand_next(scratch, rng_state);
     return metal::float2(_e0, _e1);
 }
 
 metal::float3 normalize_vec3f(
-    metal::float3 v
+    metal::float3 v_1
 ) {
-    return (metal::dot(v, v) >= 0.000000000000000000000000000000000000011754944) ? metal::normalize(v) : metal::float3(0.0);
+    return (metal::dot(v_1, v_1) >= 0.000000000000000000000000000000000000011754944) ? metal::normalize(v_1) : metal::float3(0.0);
 }
 
 Ray pinhole_ray(
     Pinhole cam,
-    metal::uint2 pixel_1,
-    uint sample_1,
+    metal::uint2 pixel_2,
+    uint sample_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -414,17 +484,17 @@ Ray pinhole_ray(
     jitter = metal::float2(0.5);
     uint _e7 = samples_per_pixel_query(frame);
     if (_e7 > 1u) {
-        metal::float2 _e10 = rand2_next(rng_state);
+        metal::float2 _e10 = rand2_next(scratch, rng_state);
         jitter = _e10;
     }
     metal::float2 _e12 = jitter;
-    metal::float2 ndc = (((static_cast<metal::float2>(pixel_1) + _e12) / size_1) * metal::float2(2.0)) - metal::float2(1.0);
+    metal::float2 ndc = (((static_cast<metal::float2>(pixel_2) + _e12) / size_1) * metal::float2(2.0)) - metal::float2(1.0);
     metal::float3 _e24 = normalize_vec3f(cam.look_at - cam.position);
     metal::float3 _e27 = normalize_vec3f(metal::cross(_e24, cam.up));
     metal::float3 up = metal::cross(_e27, _e24);
-    float h_1 = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
+    float h = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
     float aspect = size_1.x / size_1.y;
-    metal::float3 _e48 = normalize_vec3f((_e24 + (_e27 * metal::float3((ndc.x * h_1) * aspect))) - (up * metal::float3(ndc.y * h_1)));
+    metal::float3 _e48 = normalize_vec3f((_e24 + (_e27 * metal::float3((ndc.x * h) * aspect))) - (up * metal::float3(ndc.y * h)));
     uint _e52 = F32_INF;
     return Ray {cam.position, 0.0, _e48, as_type<float>(_e52), 0u, 0u, 0u};
 }
@@ -432,17 +502,18 @@ Ray pinhole_ray(
 Ray dispatch_ray_generation(
     uint type_id,
     uint offset_1,
-    metal::uint2 pixel_2,
-    uint sample_2,
+    metal::uint2 pixel_3,
+    uint sample_3,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Pinhole _e3 = load_Pinhole(offset_1, params, _buffer_sizes);
-    Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2, tile, frame, rng_state, F32_INF);
+    Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3, tile, frame, scratch, rng_state, F32_INF);
     return _e4;
 }
 
@@ -459,9 +530,9 @@ Ray to_object(
     Ray r = {};
     r = ray;
     metal::float4 o = metal::float4(ray.origin, 1.0);
-    metal::float4 d_1 = metal::float4(ray.dir, 0.0);
+    metal::float4 d_2 = metal::float4(ray.dir, 0.0);
     r.origin = metal::float3(metal::dot(inst.world_to_object_0_, o), metal::dot(inst.world_to_object_1_, o), metal::dot(inst.world_to_object_2_, o));
-    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_1), metal::dot(inst.world_to_object_1_, d_1), metal::dot(inst.world_to_object_2_, d_1));
+    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_2), metal::dot(inst.world_to_object_1_, d_2), metal::dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
     return _e25;
 }
@@ -470,27 +541,27 @@ metal::float3 safe_inverse(
     metal::float3 d
 ) {
     metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_6 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_6 * tiny, metal::abs(d) < tiny);
+    metal::float3 s_5 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_5 * tiny, metal::abs(d) < tiny);
     return metal::float3(1.0) / dd;
 }
 
 TriangleRay prepare_triangle_ray(
     Ray ray_1
 ) {
-    metal::float3 d_2 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
-    metal::float3 ad = metal::abs(d_2);
+    metal::float3 d_3 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 ad = metal::abs(d_3);
     bool y_gt = ad.y > ad.x;
     uint kz = (ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u);
     uint kx0_ = (kz == 2u) ? 0u : (kz + 1u);
     uint ky0_ = (kz >= 1u) ? (kz - 1u) : (kz + 2u);
-    float dz = d_2[metal::min(kz, 2u)];
+    float dz = d_3[metal::min(kz, 2u)];
     bool flip = dz < 0.0;
     uint kx = flip ? ky0_ : kx0_;
     uint ky = flip ? kx0_ : ky0_;
     metal::uint3 inf_bits = metal::uint3(2139095040u);
-    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_2) & metal::uint3(2147483647u)) < inf_bits);
-    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_2[metal::min(kx, 2u)] / dz, d_2[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
+    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_3) & metal::uint3(2147483647u)) < inf_bits);
+    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_3[metal::min(kx, 2u)] / dz, d_3[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
 }
 
 metal::float3 hit_triangle(
@@ -499,7 +570,7 @@ metal::float3 hit_triangle(
     float tmin,
     float tmax_1,
     thread uint& F32_INF,
-    device type_10 const& triangles,
+    device type_11 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e8 = triangles[slot * 3u];
@@ -515,15 +586,15 @@ metal::float3 hit_triangle(
     float cx = c_7[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_7[metal::min(r_1.kz, 2u)]);
     float cy = c_7[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_7[metal::min(r_1.kz, 2u)]);
     float u_3 = (cx * by) - (cy * bx);
-    float v_5 = (ax * cy) - (ay * cx);
+    float v_6 = (ax * cy) - (ay * cx);
     float w_1 = (bx * ay) - (by * ax);
-    bool outside = (((u_3 < 0.0) || (v_5 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_5 > 0.0)) || (w_1 > 0.0));
-    float det = (u_3 + v_5) + w_1;
+    bool outside = (((u_3 < 0.0) || (v_6 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_6 > 0.0)) || (w_1 > 0.0));
+    float det = (u_3 + v_6) + w_1;
     float rcp = 1.0 / det;
-    float t_4 = (((u_3 * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_5 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear[2] * c_7[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_4 = (((u_3 * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_6 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear[2] * c_7[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_12 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_12 ? metal::float3(t_4, v_5 * rcp, w_1 * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_12 ? metal::float3(t_4, v_6 * rcp, w_1 * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -603,7 +674,7 @@ metal::float2 children_entry(
 metal::uint2 pop(
     uint base,
     uint sp,
-    thread type_12& traversal_stack
+    thread type_13& traversal_stack
 ) {
     if (sp == 0u) {
         return metal::uint2(NO_HIT, 0u);
@@ -620,9 +691,9 @@ Candidate intersect_mesh(
     Candidate best_in,
     bool shadow,
     thread uint& F32_INF,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Candidate best = {};
@@ -735,7 +806,7 @@ Candidate intersect_mesh(
 
 Sphere load_Sphere(
     uint offset_2,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_2 + 0u];
@@ -751,10 +822,10 @@ Intersection sphere_intersect(
     thread uint& F32_INF
 ) {
     float t = {};
-    metal::float3 f = ray_5.origin - s.center;
+    metal::float3 f_1 = ray_5.origin - s.center;
     float a_5 = metal::dot(ray_5.dir, ray_5.dir);
-    float b_6 = -(metal::dot(f, ray_5.dir));
-    metal::float3 l_6 = f + (ray_5.dir * metal::float3(b_6 / a_5));
+    float b_6 = -(metal::dot(f_1, ray_5.dir));
+    metal::float3 l_6 = f_1 + (ray_5.dir * metal::float3(b_6 / a_5));
     float r2_ = s.radius * s.radius;
     float disc = a_5 * (r2_ - metal::dot(l_6, l_6));
     if (!((disc >= 0.0)) || !((a_5 > 0.0))) {
@@ -762,7 +833,7 @@ Intersection sphere_intersect(
         return Intersection {as_type<float>(_e30), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     }
     float q_1 = b_6 + (((b_6 >= 0.0) ? 1.0 : -1.0) * metal::sqrt(disc));
-    float t0_1 = (metal::dot(f, f) - r2_) / q_1;
+    float t0_1 = (metal::dot(f_1, f_1) - r2_) / q_1;
     float t1_2 = q_1 / a_5;
     t = metal::min(t0_1, t1_2);
     float _e52 = t;
@@ -787,7 +858,7 @@ Intersection dispatch_intersection(
     uint type_id_1,
     uint offset_3,
     Ray ray_6,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -801,12 +872,12 @@ Candidate intersect_object(
     Ray ray_7,
     Candidate best_1,
     bool shadow_1,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray r_2 = {};
@@ -844,7 +915,7 @@ float point_error(
 
 Triangle load_triangle(
     uint slot_3,
-    device type_10 const& triangles,
+    device type_11 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 v0_1 = triangles[slot_3 * 3u];
@@ -888,9 +959,9 @@ metal::float3 decode_octahedral(
     float _e14 = n_1.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n_1;
-        metal::float2 s_7 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float2 s_6 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
         metal::float3 _e29 = n_1;
-        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_7;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_6;
         float _e37 = n_1.z;
         n_1 = metal::float3(xy.x, xy.y, _e37);
     }
@@ -911,10 +982,10 @@ metal::float3 normal_to_world(
 Hit finish_hit(
     Ray ray_8,
     Candidate c_1,
-    device type_8 const& instances,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Hit hit = {};
@@ -973,19 +1044,19 @@ uint medium_at(
     metal::float3 p_4,
     uint exclude,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint inside = {};
     float nearest = {};
-    uint i = {};
+    uint i_1 = {};
     if (!(HAS_MEDIA)) {
         return 0u;
     }
@@ -997,22 +1068,22 @@ uint medium_at(
     uint _e23 = F32_INF;
     nearest = as_type<float>(_e23);
     uint end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e59 = i;
-            i = _e59 + 1u;
+            uint _e59 = i_1;
+            i_1 = _e59 + 1u;
         }
         loop_init_1 = false;
-        uint _e29 = i;
+        uint _e29 = i_1;
         if (_e29 >= end) {
             break;
         }
-        uint _e32 = i;
+        uint _e32 = i_1;
         uint slot_4 = params[frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE)];
         if (slot_4 != exclude) {
             uint _e41 = F32_INF;
@@ -1043,12 +1114,12 @@ Candidate intersect_scene(
     Ray ray_9,
     bool shadow_2,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1152,7 +1223,7 @@ Candidate intersect_scene(
 
 ConstantBackground load_ConstantBackground(
     uint offset_4,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_4 + 0u];
@@ -1172,7 +1243,7 @@ metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_5,
     Ray ray_11,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     ConstantBackground _e2 = load_ConstantBackground(offset_5, params, _buffer_sizes);
@@ -1183,7 +1254,7 @@ metal::float3 dispatch_miss(
 metal::float3 miss(
     Ray ray_12,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (!(HAS_BACKGROUND)) {
@@ -1196,7 +1267,7 @@ metal::float3 miss(
 
 PathDiffuse load_PathDiffuse(
     uint offset_6,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_6 + 0u];
@@ -1215,7 +1286,7 @@ uint light_count_query(
 
 QuadLight load_QuadLight(
     uint offset_7,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_7 + 0u];
@@ -1236,14 +1307,14 @@ QuadLight load_QuadLight(
 }
 
 void scratch_store3f(
-    uint i_1,
-    metal::float3 v_1,
-    thread type_15& scratch
+    uint i_2,
+    metal::float3 v_2,
+    thread type_3& scratch
 ) {
-    metal::uint3 b_8 = as_type<metal::uint3>(v_1);
-    scratch.inner[metal::min(i_1, 21u)] = b_8.x;
-    scratch.inner[metal::min(i_1 + 1u, 21u)] = b_8.y;
-    scratch.inner[metal::min(i_1 + 2u, 21u)] = b_8.z;
+    metal::uint3 b_8 = as_type<metal::uint3>(v_2);
+    scratch.inner[metal::min(i_2, 23u)] = b_8.x;
+    scratch.inner[metal::min(i_2 + 1u, 23u)] = b_8.y;
+    scratch.inner[metal::min(i_2 + 2u, 23u)] = b_8.z;
     return;
 }
 
@@ -1252,30 +1323,30 @@ float shadow_deferred(
     metal::float3 normal,
     metal::float3 dir,
     float dist,
-    thread type_15& scratch,
+    thread type_3& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_6 = scratch.inner[metal::min(SCRATCH_QUERY, 21u)];
-    scratch.inner[metal::min(SCRATCH_QUERY, 21u)] = i_6 + 1u;
-    uint _e22 = scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)];
-    if (i_6 < _e22) {
-        uint _e29 = scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)];
-        return static_cast<float>((_e29 >> (i_6 & 31u)) & 1u);
+    uint i_8 = scratch.inner[metal::min(SCRATCH_QUERY, 23u)];
+    scratch.inner[metal::min(SCRATCH_QUERY, 23u)] = i_8 + 1u;
+    uint _e22 = scratch.inner[metal::min(SCRATCH_RESOLVED, 23u)];
+    if (i_8 < _e22) {
+        uint _e29 = scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 23u)];
+        return static_cast<float>((_e29 >> (i_8 & 31u)) & 1u);
     }
-    uint _e41 = scratch.inner[metal::min(SCRATCH_PENDING, 21u)];
+    uint _e41 = scratch.inner[metal::min(SCRATCH_PENDING, 23u)];
     if (_e41 != 0u) {
         return 1.0;
     }
-    if (i_6 >= LIGHT_QUERIES) {
+    if (i_8 >= LIGHT_QUERIES) {
         metal::atomic_fetch_add_explicit(&counters[metal::min(COUNTER_SHADOW_OVERFLOW, 3u)], 1u, metal::memory_order_relaxed);
         return 1.0;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position, scratch);
     scratch_store3f(SCRATCH_LIGHT_QUERY + 3u, normal, scratch);
     scratch_store3f(SCRATCH_LIGHT_QUERY + 6u, dir, scratch);
-    scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 21u)] = as_type<uint>(dist);
-    scratch.inner[metal::min(SCRATCH_PENDING, 21u)] = 1u;
+    scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 23u)] = as_type<uint>(dist);
+    scratch.inner[metal::min(SCRATCH_PENDING, 23u)] = 1u;
     return 1.0;
 }
 
@@ -1283,14 +1354,14 @@ LightSample quad_light(
     QuadLight l,
     metal::float3 position_1,
     metal::float3 normal_1,
+    thread type_3& scratch,
     thread uint& rng_state,
-    thread type_15& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 c_10 = metal::cross(l.edge_u, l.edge_v);
     float area = metal::length(c_10);
-    metal::float2 _e7 = rand2_next(rng_state);
+    metal::float2 _e7 = rand2_next(scratch, rng_state);
     metal::float3 to_light = ((l.corner + (l.edge_u * metal::float3(_e7.x))) + (l.edge_v * metal::float3(_e7.y))) - position_1;
     float dist2_ = metal::dot(to_light, to_light);
     float dist_3 = metal::sqrt(dist2_);
@@ -1307,7 +1378,7 @@ LightSample quad_light(
 
 SphereLight load_SphereLight(
     uint offset_8,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_8 + 0u];
@@ -1336,8 +1407,8 @@ LightSample sphere_light(
     SphereLight l_1,
     metal::float3 position_2,
     metal::float3 normal_2,
+    thread type_3& scratch,
     thread uint& rng_state,
-    thread type_15& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1351,7 +1422,7 @@ LightSample sphere_light(
     float s2_ = r2_2 / d2_;
     float cos_max = metal::sqrt(1.0 - s2_);
     float one_minus_cos_max = s2_ / (1.0 + cos_max);
-    metal::float2 _e31 = rand2_next(rng_state);
+    metal::float2 _e31 = rand2_next(scratch, rng_state);
     float cos_t = 1.0 - (_e31.x * one_minus_cos_max);
     float sin_t = metal::sqrt(metal::max(1.0 - (cos_t * cos_t), 0.0));
     float phi = TAU * _e31.y;
@@ -1370,21 +1441,21 @@ LightSample dispatch_light(
     uint offset_9,
     metal::float3 position_3,
     metal::float3 normal_3,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
-    thread type_15& scratch,
+    device type_5 const& params,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     switch(type_id_3) {
         case 0u: {
             QuadLight _e4 = load_QuadLight(offset_9, params, _buffer_sizes);
-            LightSample _e5 = quad_light(_e4, position_3, normal_3, rng_state, scratch, counters, _buffer_sizes);
+            LightSample _e5 = quad_light(_e4, position_3, normal_3, scratch, rng_state, counters, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             SphereLight _e6 = load_SphereLight(offset_9, params, _buffer_sizes);
-            LightSample _e7 = sphere_light(_e6, position_3, normal_3, rng_state, scratch, counters, _buffer_sizes);
+            LightSample _e7 = sphere_light(_e6, position_3, normal_3, scratch, rng_state, counters, _buffer_sizes);
             return _e7;
         }
         default: {
@@ -1395,25 +1466,25 @@ LightSample dispatch_light(
 }
 
 metal::float3 scratch_load3f(
-    uint i_2,
-    thread type_15& scratch
+    uint i_3,
+    thread type_3& scratch
 ) {
-    uint _e5 = scratch.inner[metal::min(i_2, 21u)];
-    uint _e12 = scratch.inner[metal::min(i_2 + 1u, 21u)];
-    uint _e19 = scratch.inner[metal::min(i_2 + 2u, 21u)];
+    uint _e5 = scratch.inner[metal::min(i_3, 23u)];
+    uint _e12 = scratch.inner[metal::min(i_3 + 1u, 23u)];
+    uint _e19 = scratch.inner[metal::min(i_3 + 2u, 23u)];
     return as_type<metal::float3>(metal::uint3(_e5, _e12, _e19));
 }
 
 metal::float3 step_toward(
-    metal::float3 x_1,
+    metal::float3 x_3,
     metal::float3 s_1
 ) {
-    metal::uint3 bits_2 = as_type<metal::uint3>(x_1);
-    metal::bool3 up_1 = (metal::sign(x_1) * metal::sign(s_1)) > metal::float3(0.0);
+    metal::uint3 bits_2 = as_type<metal::uint3>(x_3);
+    metal::bool3 up_1 = (metal::sign(x_3) * metal::sign(s_1)) > metal::float3(0.0);
     metal::float3 stepped = as_type<metal::float3>(metal::select(bits_2 - metal::uint3(1u), bits_2 + metal::uint3(1u), up_1));
     metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s_1 > metal::float3(0.0));
-    metal::float3 moved = metal::select(stepped, from_zero, x_1 == metal::float3(0.0));
-    return metal::select(x_1, moved, !((s_1 == metal::float3(0.0))));
+    metal::float3 moved = metal::select(stepped, from_zero, x_3 == metal::float3(0.0));
+    return metal::select(x_3, moved, !((s_1 == metal::float3(0.0))));
 }
 
 metal::float3 offset_origin(
@@ -1421,8 +1492,8 @@ metal::float3 offset_origin(
     metal::float3 n_4,
     float error
 ) {
-    float d_3 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
-    metal::float3 offset_16 = n_4 * metal::float3(d_3);
+    float d_4 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
+    metal::float3 offset_16 = n_4 * metal::float3(d_4);
     metal::float3 _e17 = step_toward(p_5 + offset_16, offset_16);
     return _e17;
 }
@@ -1468,12 +1539,12 @@ float shadow_query(
     metal::float3 dir_2,
     float dist_2,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1484,20 +1555,20 @@ float shadow_query(
 }
 
 LightSample sample_light_deferred(
-    uint i_3,
+    uint i_4,
     metal::float3 position_6,
     metal::float3 normal_6,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1505,27 +1576,27 @@ LightSample sample_light_deferred(
     uint resolved = {};
     uint bits_1 = {};
     FrameUniforms frame_4 = frame;
-    if (i_3 >= frame_4.light_count) {
+    if (i_4 >= frame_4.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry = frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE);
+    uint entry = frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE);
     uint type_id_7 = params[entry];
     uint offset_17 = params[entry + 1u];
     uint start = rng_state;
     after = start;
     resolved = 0u;
     bits_1 = 0u;
-    scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)] = 0u;
-    scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_RESOLVED, 23u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 23u)] = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         rng_state = start;
-        scratch.inner[metal::min(SCRATCH_QUERY, 21u)] = 0u;
-        scratch.inner[metal::min(SCRATCH_PENDING, 21u)] = 0u;
-        LightSample _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_6, rng_state, params, scratch, counters, _buffer_sizes);
-        uint _e66 = scratch.inner[metal::min(SCRATCH_PENDING, 21u)];
+        scratch.inner[metal::min(SCRATCH_QUERY, 23u)] = 0u;
+        scratch.inner[metal::min(SCRATCH_PENDING, 23u)] = 0u;
+        LightSample _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_6, scratch, rng_state, params, counters, _buffer_sizes);
+        uint _e66 = scratch.inner[metal::min(SCRATCH_PENDING, 23u)];
         if (_e66 == 0u) {
             uint _e69 = resolved;
             if (_e69 > 0u) {
@@ -1544,12 +1615,12 @@ LightSample sample_light_deferred(
         metal::float3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY, scratch);
         metal::float3 _e85 = scratch_load3f(SCRATCH_LIGHT_QUERY + 3u, scratch);
         metal::float3 _e88 = scratch_load3f(SCRATCH_LIGHT_QUERY + 6u, scratch);
-        uint _e95 = scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 21u)];
+        uint _e95 = scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 23u)];
         float _e97 = shadow_query(_e82, _e85, _e88, as_type<float>(_e95), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
         uint _e99 = rng_state;
         after = _e99;
         if (!((_e97 == 0.0))) {
-            uint _e108 = scratch.inner[metal::min(SCRATCH_QUERY, 21u)];
+            uint _e108 = scratch.inner[metal::min(SCRATCH_QUERY, 23u)];
             uint _e109 = resolved;
             if (_e108 == (_e109 + 1u)) {
                 uint _e113 = after;
@@ -1563,9 +1634,9 @@ LightSample sample_light_deferred(
         uint _e122 = resolved;
         resolved = _e122 + 1u;
         uint _e126 = bits_1;
-        scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
+        scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 23u)] = _e126;
         uint _e132 = resolved;
-        scratch.inner[metal::min(SCRATCH_RESOLVED, 21u)] = _e132;
+        scratch.inner[metal::min(SCRATCH_RESOLVED, 23u)] = _e132;
     }
     return LightSample {};
 }
@@ -1578,13 +1649,13 @@ float mis_weight(
     if (!((p_6 > 0.0))) {
         return 0.0;
     }
-    float r_4 = metal::max(other, 0.0) / p_6;
-    if (!((r_4 < 1000000000000000000.0))) {
+    float r_3 = metal::max(other, 0.0) / p_6;
+    if (!((r_3 < 1000000000000000000.0))) {
         uint _e15 = F32_INF;
         uint _e19 = F32_INF;
         return ((p_6 == as_type<float>(_e15)) && (other < as_type<float>(_e19))) ? 1.0 : 0.0;
     }
-    return 1.0 / (1.0 + (r_4 * r_4));
+    return 1.0 / (1.0 + (r_3 * r_3));
 }
 
 float mis_light_weight(
@@ -1605,41 +1676,41 @@ metal::float3 path_diffuse_shade(
     Hit hit_1,
     metal::float3 secondary,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 direct = {};
-    uint i_4 = {};
+    uint i_5 = {};
     metal::float3 n_13 = metal::faceforward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
     direct = metal::float3(0.0);
     uint _e12 = light_count_query(frame);
-    i_4 = 0u;
+    i_5 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e33 = i_4;
-            i_4 = _e33 + 1u;
+            uint _e33 = i_5;
+            i_5 = _e33 + 1u;
         }
         loop_init_2 = false;
-        uint _e14 = i_4;
+        uint _e14 = i_5;
         if (_e14 >= _e12) {
             break;
         }
-        uint _e16 = i_4;
-        LightSample _e19 = sample_light_deferred(_e16, hit_1.position, hit_1.geometric_normal, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+        uint _e16 = i_5;
+        LightSample _e19 = sample_light_deferred(_e16, hit_1.position, hit_1.geometric_normal, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
         float c_11 = metal::max(metal::dot(n_13, _e19.dir), 0.0);
         metal::float3 _e24 = direct;
         float _e28 = mis_light_weight(_e19, c_11 * INV_PI, F32_INF);
@@ -1651,7 +1722,7 @@ metal::float3 path_diffuse_shade(
 
 QuadLamp load_QuadLamp(
     uint offset_10,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_10 + 0u];
@@ -1671,11 +1742,11 @@ bool after_nee_bounce(
 float bounce_pdf(
     Ray ray_15
 ) {
-    float x_3 = metal::length(ray_15.dir) - MIS_BOUNCE_LENGTH;
-    if (!((x_3 > -0.25))) {
+    float x_5 = metal::length(ray_15.dir) - MIS_BOUNCE_LENGTH;
+    if (!((x_5 > -0.25))) {
         return 0.0;
     }
-    return metal::exp(metal::max(x_3, 0.0) * 90.0) - 1.0;
+    return metal::exp(metal::max(x_5, 0.0) * 90.0) - 1.0;
 }
 
 metal::float3 quad_lamp_shade(
@@ -1703,7 +1774,7 @@ metal::float3 quad_lamp_shade(
 
 SphereLamp load_SphereLamp(
     uint offset_11,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_11 + 0u];
@@ -1741,7 +1812,7 @@ metal::float3 sphere_lamp_shade(
 
 PathPbr load_PathPbr(
     uint offset_12,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_12 + 0u];
@@ -1792,8 +1863,8 @@ float pbr_ggx_d(
     float ndh,
     float a2_
 ) {
-    float d_4 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
-    return (a2_ * INV_PI) / (d_4 * d_4);
+    float d_5 = ((ndh * ndh) * (a2_ - 1.0)) + 1.0;
+    return (a2_ * INV_PI) / (d_5 * d_5);
 }
 
 float pbr_smith_v(
@@ -1811,10 +1882,10 @@ metal::float3 pbr_eval(
     float metallic,
     float roughness_1,
     metal::float3 n_6,
-    metal::float3 v_2,
+    metal::float3 v_3,
     metal::float3 l_3
 ) {
-    float ndv_3 = metal::dot(n_6, v_2);
+    float ndv_3 = metal::dot(n_6, v_3);
     float ndl_1 = metal::dot(n_6, l_3);
     if (!((ndv_3 > 0.0)) || !((ndl_1 > 0.0))) {
         return metal::float3(0.0);
@@ -1822,8 +1893,8 @@ metal::float3 pbr_eval(
     float metal_ = metal::saturate(metallic);
     float _e18 = pbr_alpha2_(roughness_1);
     metal::float3 f0_1 = metal::mix(metal::float3(0.04), base_1, metal::float3(metal_));
-    metal::float3 _e24 = normalize_vec3f(v_2 + l_3);
-    metal::float3 _e26 = pbr_fresnel(f0_1, metal::dot(v_2, _e24));
+    metal::float3 _e24 = normalize_vec3f(v_3 + l_3);
+    metal::float3 _e26 = pbr_fresnel(f0_1, metal::dot(v_3, _e24));
     float _e29 = pbr_ggx_d(metal::saturate(metal::dot(n_6, _e24)), _e18);
     float _e30 = pbr_smith_v(ndl_1, ndv_3, _e18);
     metal::float3 spec = _e26 * metal::float3(_e29 * _e30);
@@ -1869,17 +1940,17 @@ float pbr_pdf(
     float metallic_2,
     float roughness_2,
     metal::float3 n_7,
-    metal::float3 v_3,
+    metal::float3 v_4,
     metal::float3 l_4
 ) {
-    float ndv_4 = metal::dot(n_7, v_3);
+    float ndv_4 = metal::dot(n_7, v_4);
     float ndl_2 = metal::dot(n_7, l_4);
     if (!((ndv_4 > 0.0)) || !((ndl_2 > 0.0))) {
         return 0.0;
     }
     float _e16 = pbr_alpha2_(roughness_2);
     float _e17 = pbr_specular_chance(base_3, metallic_2, ndv_4);
-    metal::float3 _e19 = normalize_vec3f(v_3 + l_4);
+    metal::float3 _e19 = normalize_vec3f(v_4 + l_4);
     float _e22 = pbr_specular_pdf(metal::saturate(metal::dot(n_7, _e19)), ndv_4, _e16);
     return (_e17 * _e22) + (((1.0 - _e17) * ndl_2) * INV_PI);
 }
@@ -1890,49 +1961,49 @@ metal::float3 path_pbr_shade(
     Hit hit_6,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 direct_1 = {};
-    uint i_5 = {};
+    uint i_6 = {};
     float w = {};
     metal::float3 _e4 = path_pbr_n(ray_20, hit_6);
     metal::float3 _e6 = normalize_vec3f(ray_20.dir);
-    metal::float3 v_6 = -(_e6);
+    metal::float3 v_7 = -(_e6);
     direct_1 = metal::float3(0.0);
     uint _e12 = light_count_query(frame);
-    i_5 = 0u;
+    i_6 = 0u;
     uint2 loop_bound_6 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e49 = i_5;
-            i_5 = _e49 + 1u;
+            uint _e49 = i_6;
+            i_6 = _e49 + 1u;
         }
         loop_init_3 = false;
-        uint _e14 = i_5;
+        uint _e14 = i_6;
         if (_e14 >= _e12) {
             break;
         }
-        uint _e16 = i_5;
-        LightSample _e19 = sample_light_deferred(_e16, hit_6.position, hit_6.geometric_normal, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+        uint _e16 = i_6;
+        LightSample _e19 = sample_light_deferred(_e16, hit_6.position, hit_6.geometric_normal, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
         if (metal::any(_e19.radiance > metal::float3(0.0))) {
-            metal::float3 _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_6, _e19.dir);
+            metal::float3 _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_7, _e19.dir);
             w = 1.0;
             if (_e19.pdf > 0.0) {
-                float _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_6, _e19.dir);
+                float _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_7, _e19.dir);
                 float _e41 = mis_weight(_e19.pdf, _e40, F32_INF);
                 w = _e41;
             }
@@ -1952,23 +2023,23 @@ metal::float3 dispatch_closest_hit(
     Hit hit_7,
     metal::float3 secondary_2,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     switch(type_id_4) {
         case 0u: {
             PathDiffuse _e5 = load_PathDiffuse(offset_13, params, _buffer_sizes);
-            metal::float3 _e6 = path_diffuse_shade(_e5, ray_21, hit_7, secondary_2, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+            metal::float3 _e6 = path_diffuse_shade(_e5, ray_21, hit_7, secondary_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
             return _e6;
         }
         case 1u: {
@@ -1983,7 +2054,7 @@ metal::float3 dispatch_closest_hit(
         }
         case 3u: {
             PathPbr _e11 = load_PathPbr(offset_13, params, _buffer_sizes);
-            metal::float3 _e12 = path_pbr_shade(_e11, ray_21, hit_7, secondary_2, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+            metal::float3 _e12 = path_pbr_shade(_e11, ray_21, hit_7, secondary_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
             return _e12;
         }
         default: {
@@ -1997,23 +2068,23 @@ metal::float3 shade_direct(
     Ray ray_22,
     Candidate c_4,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_4.slot];
     Hit _e6 = finish_hit(ray_22, c_4, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
     return _e11;
 }
 
@@ -2031,7 +2102,7 @@ metal::float3 through_medium(
     Ray ray_24,
     float t_2,
     metal::float3 radiance_1,
-    device type_8 const& instances,
+    device type_9 const& instances,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (!(HAS_MEDIA)) {
@@ -2052,9 +2123,9 @@ metal::float3 sample_cosine_hemisphere(
     metal::float3 n_8,
     metal::float2 u
 ) {
-    float r_5 = metal::sqrt(u.x);
+    float r_4 = metal::sqrt(u.x);
     float phi_1 = 6.2831855 * u.y;
-    metal::float3 local = metal::float3(r_5 * metal::cos(phi_1), r_5 * metal::sin(phi_1), metal::sqrt(metal::max(1.0 - u.x, 0.0)));
+    metal::float3 local = metal::float3(r_4 * metal::cos(phi_1), r_4 * metal::sin(phi_1), metal::sqrt(metal::max(1.0 - u.x, 0.0)));
     metal::float3x3 _e17 = orthonormal_basis(n_8);
     return _e17 * local;
 }
@@ -2063,8 +2134,8 @@ metal::float3 mis_bounce_dir(
     metal::float3 dir_3,
     float pdf
 ) {
-    float x_4 = metal::min(metal::log(1.0 + metal::max(pdf, 0.0)) * (1.0 / 90.0), 0.999);
-    return dir_3 * metal::float3(MIS_BOUNCE_LENGTH + x_4);
+    float x_6 = metal::min(metal::log(1.0 + metal::max(pdf, 0.0)) * (1.0 / 90.0), 0.999);
+    return dir_3 * metal::float3(MIS_BOUNCE_LENGTH + x_6);
 }
 
 void rt_spawn(
@@ -2086,6 +2157,7 @@ void path_diffuse_rays(
     PathDiffuse m_4,
     Ray ray_25,
     Hit hit_8,
+    thread type_3& scratch,
     thread uint& rng_state,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
@@ -2094,12 +2166,12 @@ void path_diffuse_rays(
     metal::float3 weight_1 = {};
     metal::float3 ng = hit_8.front_face ? hit_8.geometric_normal : -(hit_8.geometric_normal);
     metal::float3 n_15 = metal::faceforward(hit_8.normal, -(ng), hit_8.normal);
-    metal::float2 _e12 = rand2_next(rng_state);
+    metal::float2 _e12 = rand2_next(scratch, rng_state);
     metal::float3 _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
     if (ray_25.depth >= m_4.roulette_depth) {
         float q_4 = metal::saturate(metal::max(m_4.albedo[0], metal::max(m_4.albedo[1], m_4.albedo[2])));
-        float _e28 = rand_next(rng_state);
+        float _e28 = rand_next(scratch, rng_state);
         if (_e28 >= q_4) {
             return;
         }
@@ -2127,11 +2199,11 @@ metal::float3 pbr_sample_vndf(
     }
     metal::float3 _e32 = t1_;
     metal::float3 t2_ = metal::cross(_e9, _e32);
-    float r_6 = metal::sqrt(u_1.x);
+    float r_5 = metal::sqrt(u_1.x);
     float phi_2 = TAU * u_1.y;
-    float p1_ = r_6 * metal::cos(phi_2);
-    float s_8 = 0.5 * (1.0 + _e9.z);
-    float p2_ = ((1.0 - s_8) * metal::sqrt(metal::max(1.0 - (p1_ * p1_), 0.0))) + ((s_8 * r_6) * metal::sin(phi_2));
+    float p1_ = r_5 * metal::cos(phi_2);
+    float s_7 = 0.5 * (1.0 + _e9.z);
+    float p2_ = ((1.0 - s_7) * metal::sqrt(metal::max(1.0 - (p1_ * p1_), 0.0))) + ((s_7 * r_5) * metal::sin(phi_2));
     metal::float3 _e59 = t1_;
     metal::float3 nh = ((_e59 * metal::float3(p1_)) + (t2_ * metal::float3(p2_))) + (_e9 * metal::float3(metal::sqrt(metal::max((1.0 - (p1_ * p1_)) - (p2_ * p2_), 0.0))));
     metal::float3 _e84 = normalize_vec3f(metal::float3(alpha * nh.x, alpha * nh.y, metal::max(nh.z, 0.0)));
@@ -2143,11 +2215,11 @@ PbrSample pbr_sample(
     float metallic_3,
     float roughness_3,
     metal::float3 n_9,
-    metal::float3 v_4,
+    metal::float3 v_5,
     metal::float3 u_2
 ) {
     metal::float3 l_5 = {};
-    float ndv_5 = metal::dot(n_9, v_4);
+    float ndv_5 = metal::dot(n_9, v_5);
     if (!((ndv_5 > 0.0))) {
         return PbrSample {n_9, metal::float3(0.0), 0.0};
     }
@@ -2156,21 +2228,21 @@ PbrSample pbr_sample(
     if (u_2.x < _e14) {
         metal::float3x3 _e20 = orthonormal_basis(n_9);
         float _e21 = pbr_alpha2_(roughness_3);
-        metal::float3 _e26 = pbr_sample_vndf(metal::transpose(_e20) * v_4, metal::sqrt(_e21), u_2.yz);
-        metal::float3 h_2 = _e20 * _e26;
-        l_5 = metal::reflect(-(v_4), h_2);
+        metal::float3 _e26 = pbr_sample_vndf(metal::transpose(_e20) * v_5, metal::sqrt(_e21), u_2.yz);
+        metal::float3 h_1 = _e20 * _e26;
+        l_5 = metal::reflect(-(v_5), h_1);
     } else {
         metal::float3 _e31 = sample_cosine_hemisphere(n_9, u_2.yz);
         l_5 = _e31;
     }
     metal::float3 _e32 = l_5;
-    float _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_4, _e32);
+    float _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_5, _e32);
     if (!((_e33 > 0.0))) {
         metal::float3 _e37 = l_5;
         return PbrSample {_e37, metal::float3(0.0), 0.0};
     }
     metal::float3 _e42 = l_5;
-    metal::float3 _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_4, _e42);
+    metal::float3 _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_5, _e42);
     metal::float3 weight_5 = _e43 / metal::float3(_e33);
     metal::float3 _e46 = l_5;
     return PbrSample {_e46, weight_5, _e33};
@@ -2180,6 +2252,7 @@ void path_pbr_rays(
     PathPbr m_5,
     Ray ray_26,
     Hit hit_9,
+    thread type_3& scratch,
     thread uint& rng_state,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
@@ -2189,10 +2262,10 @@ void path_pbr_rays(
     metal::float3 _e3 = path_pbr_ng(ray_26, hit_9);
     metal::float3 _e4 = path_pbr_n(ray_26, hit_9);
     metal::float3 _e6 = normalize_vec3f(ray_26.dir);
-    metal::float3 v_7 = -(_e6);
-    float _e11 = rand_next(rng_state);
-    metal::float2 _e12 = rand2_next(rng_state);
-    PbrSample _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_7, metal::float3(_e11, _e12));
+    metal::float3 v_8 = -(_e6);
+    float _e11 = rand_next(scratch, rng_state);
+    metal::float2 _e12 = rand2_next(scratch, rng_state);
+    PbrSample _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_8, metal::float3(_e11, _e12));
     if (!((_e14.pdf > 0.0)) || !((metal::dot(_e14.dir, _e3) > 0.0))) {
         return;
     }
@@ -2202,7 +2275,7 @@ void path_pbr_rays(
         float _e33 = weight_2.y;
         float _e35 = weight_2.z;
         float q_5 = metal::min(metal::max(_e31, metal::max(_e33, _e35)), 1.0);
-        float _e40 = rand_next(rng_state);
+        float _e40 = rand_next(scratch, rng_state);
         if (!((_e40 < q_5))) {
             return;
         }
@@ -2220,8 +2293,9 @@ void dispatch_secondary_rays(
     uint offset_15,
     Ray ray_27,
     Hit hit_10,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
     thread uint& spawn_count,
@@ -2230,12 +2304,12 @@ void dispatch_secondary_rays(
     switch(type_id_6) {
         case 0u: {
             PathDiffuse _e4 = load_PathDiffuse(offset_15, params, _buffer_sizes);
-            path_diffuse_rays(_e4, ray_27, hit_10, rng_state, spawn_dirs, spawn_weights, spawn_count);
+            path_diffuse_rays(_e4, ray_27, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
             return;
         }
         case 3u: {
             PathPbr _e5 = load_PathPbr(offset_15, params, _buffer_sizes);
-            path_pbr_rays(_e5, ray_27, hit_10, rng_state, spawn_dirs, spawn_weights, spawn_count);
+            path_pbr_rays(_e5, ray_27, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
             return;
         }
         default: {
@@ -2276,17 +2350,17 @@ PathState path_step(
     PathState s_2,
     Candidate c_5,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
@@ -2316,7 +2390,7 @@ PathState path_step(
     weight_3 = metal::float3(0.0);
     if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_2.ray.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_29, _e22, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_29, _e22, scratch, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         uint _e47 = spawn_count;
         if (metal::min(_e47, 1u) > 0u) {
             spawned = true;
@@ -2326,7 +2400,7 @@ PathState path_step(
             weight_3 = _e60;
         }
     }
-    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_29, _e22, metal::float3(0.0), frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, scratch, counters, _buffer_sizes);
+    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_29, _e22, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
     out.radiance = s_2.radiance + (s_2.beta * _e68);
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -2344,7 +2418,7 @@ PathState path_step(
         return _e89;
     }
     if (((ROULETTE_DEPTH > 0u) && ((s_2.ray.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < 1.0)) {
-        float _e102 = rand_next(rng_state);
+        float _e102 = rand_next(scratch, rng_state);
         if (_e102 >= q_6) {
             PathState _e104 = out;
             return _e104;
@@ -2367,17 +2441,17 @@ PathState path_step(
 metal::float3 trace_path(
     Ray camera_ray,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
@@ -2393,7 +2467,7 @@ metal::float3 trace_path(
         PathState _e8 = s_3;
         Ray _e10 = s_3.ray;
         Candidate _e12 = intersect_scene(_e10, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        PathState _e13 = path_step(_e8, _e12, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        PathState _e13 = path_step(_e8, _e12, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         s_3 = _e13;
         bool _e15 = s_3.live;
         if (!(_e15)) {
@@ -2407,17 +2481,17 @@ metal::float3 trace_path(
 metal::float3 trace(
     Ray camera_ray_1,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
@@ -2436,7 +2510,7 @@ metal::float3 trace(
             metal::float3 _e17 = miss(camera_ray_1, frame, params, _buffer_sizes);
             radiance_2 = _e17;
         } else {
-            metal::float3 _e18 = shade_direct(camera_ray_1, _e4, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, _buffer_sizes);
+            metal::float3 _e18 = shade_direct(camera_ray_1, _e4, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, _buffer_sizes);
             radiance_2 = _e18;
             t_3 = _e4.t;
         }
@@ -2445,14 +2519,14 @@ metal::float3 trace(
         metal::float3 _e22 = through_medium(camera_ray_1, _e20, _e21, instances, _buffer_sizes);
         return _e22;
     }
-    metal::float3 _e23 = trace_path(camera_ray_1, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+    metal::float3 _e23 = trace_path(camera_ray_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
     return _e23;
 }
 
 metal::bool3 is_finite_vec3f(
-    metal::float3 x_2
+    metal::float3 x_4
 ) {
-    return (as_type<metal::uint3>(x_2) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+    return (as_type<metal::uint3>(x_4) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
 }
 
 metal::float3 finite_or_zero(
@@ -2463,25 +2537,25 @@ metal::float3 finite_or_zero(
 }
 
 void render_pixel(
-    metal::uint2 pixel_3,
+    metal::uint2 pixel_4,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
     thread uint& spawn_count,
-    device type_10& accum,
+    device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 sum = {};
@@ -2509,9 +2583,9 @@ void render_pixel(
             break;
         }
         uint _e18 = s_4;
-        uint sample_3 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
-        rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, frame, rng_state, params, F32_INF, _buffer_sizes);
+        uint sample_4 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
+        rng_seed(pixel_4, sample_4, frame_5.seed, scratch, rng_state);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
         ray_28 = _e23;
         ray_28.depth = 0u;
         ray_28.kind = RAY_CAMERA;
@@ -2519,7 +2593,7 @@ void render_pixel(
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
         ray_28.medium = _e33;
         Ray _e34 = ray_28;
-        metal::float3 _e35 = trace(_e34, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::float3 _e35 = trace(_e34, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {
             metal::float3 _e38 = sum;
@@ -2538,10 +2612,10 @@ void render_pixel(
     metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
     uint _e63 = bad;
     if (tile_2.frame == 0u) {
-        accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x] = _e62;
+        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e62;
     } else {
-        metal::float4 _e69 = accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x];
-        accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x] = _e69 + _e62;
+        metal::float4 _e69 = accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x];
+        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e69 + _e62;
     }
     if (_e63 > 0u) {
         metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
@@ -2553,22 +2627,22 @@ void render_invocation(
     metal::uint2 id_1,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread float& hit_error,
-    device type_14 const& attributes,
+    device type_15 const& attributes,
     thread uint& ray_count,
-    thread type_15& scratch,
     device type_17& counters,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
     thread uint& spawn_count,
-    device type_10& accum,
+    device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     TileParams tile_3 = tile;
@@ -2576,7 +2650,7 @@ void render_invocation(
     if (metal::any(_e3 >= tile_3.extent)) {
         return;
     }
-    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
+    render_pixel(tile_3.origin + _e3, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
     return;
 }
 
@@ -2586,24 +2660,24 @@ struct renderInput {
   metal::uint3 gid [[thread_position_in_grid]]
 , constant TileParams& tile [[buffer(1)]]
 , constant FrameUniforms& frame [[buffer(0)]]
-, device type_4 const& params [[buffer(6)]]
-, device type_8 const& instances [[buffer(3)]]
-, device type_9 const& nodes [[buffer(2)]]
-, device type_10 const& triangles [[buffer(4)]]
-, device type_14 const& attributes [[buffer(5)]]
+, device type_5 const& params [[buffer(6)]]
+, device type_9 const& instances [[buffer(3)]]
+, device type_10 const& nodes [[buffer(2)]]
+, device type_11 const& triangles [[buffer(4)]]
+, device type_15 const& attributes [[buffer(5)]]
 , device type_17& counters [[buffer(9)]]
-, device type_10& accum [[buffer(8)]]
+, device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
+    type_3 scratch = {};
     uint rng_state = {};
     uint F32_INF = 2139095040u;
-    type_12 traversal_stack = {};
+    type_13 traversal_stack = {};
     float hit_error = {};
     uint ray_count = {};
-    type_15 scratch = {};
     type_19 spawn_dirs = {};
     type_19 spawn_weights = {};
     uint spawn_count = {};
-    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, scratch, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
     return;
 }

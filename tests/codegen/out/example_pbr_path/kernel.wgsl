@@ -179,6 +179,9 @@ const WORKGROUP_WIDTH: u32 = 8u;
 const WORKGROUP_HEIGHT: u32 = 8u;
 const NO_HIT: u32 = 4294967295u;
 const SCATTER: u32 = 1000003u;
+const SCRATCH_RNG_INDEX: u32 = 12u;
+const SCRATCH_RNG_SEED: u32 = 13u;
+const HALF_WORD_BITS: u32 = 16u;
 const RAY_CAMERA: u32 = 0u;
 const HAS_MEDIA: bool = false;
 const MEDIUM_ENTRY_STRIDE: u32 = 1u;
@@ -204,7 +207,7 @@ const SCRATCH_QUERY: u32 = 2u;
 const SCRATCH_PENDING: u32 = 4u;
 const LIGHT_QUERIES: u32 = 32u;
 const COUNTER_SHADOW_OVERFLOW: u32 = 3u;
-const SCRATCH_LIGHT_QUERY: u32 = 12u;
+const SCRATCH_LIGHT_QUERY: u32 = 14u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
 const MIS_BOUNCE_LENGTH: f32 = 3f;
@@ -219,6 +222,7 @@ const RAY_SECONDARY: u32 = 1u;
 var<uniform> tile: TileParams;
 @group(0) @binding(0) 
 var<uniform> frame: FrameUniforms;
+var<private> scratch: array<u32, 24>;
 var<private> rng_state: u32;
 @group(0) @binding(6) 
 var<storage> params: array<u32>;
@@ -234,7 +238,6 @@ var<private> hit_error: f32;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
 var<private> ray_count: u32;
-var<private> scratch: array<u32, 22>;
 @group(0) @binding(9) 
 var<storage, read_write> counters: array<atomic<u32>>;
 var<private> spawn_dirs: array<vec3<f32>, 1>;
@@ -287,25 +290,23 @@ fn scattered_local(id: vec2<u32>) -> vec2<u32> {
 }
 
 fn pcg_hash(x: u32) -> u32 {
-    let state = ((x * 747796405u) + 2891336453u);
-    let word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    let state_1 = ((x * 747796405u) + 2891336453u);
+    let word = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
     return ((word >> 22u) ^ word);
 }
 
-fn rng_seed(pixel: vec2<u32>, sample: u32, seed: u32) {
-    var h: u32;
+fn rng_resume(pixel: vec2<u32>, sample: u32, seed: u32, state: u32) {
+    scratch[min(SCRATCH_RNG_INDEX, 23u)] = sample;
+    let _e12 = pcg_hash(seed);
+    let _e14 = pcg_hash((pixel.y ^ _e12));
+    let _e16 = pcg_hash((pixel.x ^ _e14));
+    scratch[min(SCRATCH_RNG_SEED, 23u)] = _e16;
+    rng_state = state;
+    return;
+}
 
-    let _e5 = pcg_hash(seed);
-    let _e7 = pcg_hash((sample ^ _e5));
-    let _e9 = pcg_hash((pixel.y ^ _e7));
-    let _e11 = pcg_hash((pixel.x ^ _e9));
-    h = _e11;
-    let _e13 = h;
-    if (_e13 == 0u) {
-        h = 1u;
-    }
-    let _e17 = h;
-    rng_state = _e17;
+fn rng_seed(pixel_1: vec2<u32>, sample_1: u32, seed_1: u32) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u);
     return;
 }
 
@@ -333,13 +334,68 @@ fn samples_per_pixel_query() -> u32 {
     return _e1.total_samples;
 }
 
+fn laine_karras(x_1: u32, seed_2: u32) -> u32 {
+    var v: u32;
+
+    v = (x_1 + seed_2);
+    let _e4 = v;
+    let _e5 = v;
+    v = (_e4 ^ (_e5 * 1817228412u));
+    let _e9 = v;
+    let _e10 = v;
+    v = (_e9 ^ (_e10 * 3090095698u));
+    let _e14 = v;
+    let _e15 = v;
+    v = (_e14 ^ (_e15 * 3350193720u));
+    let _e19 = v;
+    let _e20 = v;
+    v = (_e19 ^ (_e20 * 2367878886u));
+    let _e24 = v;
+    return _e24;
+}
+
+fn sobol_second_reversed(i: u32) -> u32 {
+    var f: u32;
+
+    f = i;
+    let _e2 = f;
+    let _e3 = f;
+    f = (_e2 ^ ((_e3 >> 1u) & 1431655765u));
+    let _e9 = f;
+    let _e10 = f;
+    f = (_e9 ^ ((_e10 >> 2u) & 858993459u));
+    let _e16 = f;
+    let _e17 = f;
+    f = (_e16 ^ ((_e17 >> 4u) & 252645135u));
+    let _e23 = f;
+    let _e24 = f;
+    f = (_e23 ^ ((_e24 >> 8u) & 16711935u));
+    let _e30 = f;
+    let _e31 = f;
+    f = (_e30 ^ (_e31 >> (HALF_WORD_BITS & 31u)));
+    let _e37 = f;
+    return _e37;
+}
+
 fn rand_next() -> f32 {
-    let _e1 = rng_state;
-    let s_5 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_5;
-    let word_1 = (((s_5 >> (((s_5 >> 28u) + 4u) & 31u)) ^ s_5) * 277803737u);
-    let r_3 = ((word_1 >> 22u) ^ word_1);
-    return (f32((r_3 >> 8u)) * (1f / 16777216f));
+    var x_2: u32;
+
+    let d_1 = rng_state;
+    rng_state = (d_1 + 1u);
+    let _e10 = scratch[min(SCRATCH_RNG_SEED, 23u)];
+    let _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    let _e22 = scratch[min(SCRATCH_RNG_INDEX, 23u)];
+    let _e24 = laine_karras(reverseBits(_e22), _e16);
+    let i_7 = reverseBits(_e24);
+    x_2 = i_7;
+    if ((d_1 & 1u) != 0u) {
+        let _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    let scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    let _e45 = x_2;
+    let _e46 = laine_karras(_e45, scramble);
+    return (f32((reverseBits(_e46) >> 8u)) * (1f / 16777216f));
 }
 
 fn rand2_next() -> vec2<f32> {
@@ -348,11 +404,11 @@ fn rand2_next() -> vec2<f32> {
     return vec2<f32>(_e0, _e1);
 }
 
-fn normalize_vec3f(v: vec3<f32>) -> vec3<f32> {
-    return select(vec3(0f), normalize(v), (dot(v, v) >= 0.000000000000000000000000000000000000011754944f));
+fn normalize_vec3f(v_1: vec3<f32>) -> vec3<f32> {
+    return select(vec3(0f), normalize(v_1), (dot(v_1, v_1) >= 0.000000000000000000000000000000000000011754944f));
 }
 
-fn pinhole_ray(cam: Pinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
+fn pinhole_ray(cam: Pinhole, pixel_2: vec2<u32>, sample_2: u32) -> Ray {
     var jitter: vec2<f32>;
 
     let _e2 = image_size_query();
@@ -364,20 +420,20 @@ fn pinhole_ray(cam: Pinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
         jitter = _e10;
     }
     let _e12 = jitter;
-    let ndc = ((((vec2<f32>(pixel_1) + _e12) / size_1) * vec2(2f)) - vec2(1f));
+    let ndc = ((((vec2<f32>(pixel_2) + _e12) / size_1) * vec2(2f)) - vec2(1f));
     let _e24 = normalize_vec3f((cam.look_at - cam.position));
     let _e27 = normalize_vec3f(cross(_e24, cam.up));
     let up = cross(_e27, _e24);
-    let h_1 = tan((radians(cam.fov) * 0.5f));
+    let h = tan((radians(cam.fov) * 0.5f));
     let aspect = (size_1.x / size_1.y);
-    let _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
+    let _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h) * aspect)))) - (up * vec3((ndc.y * h)))));
     let _e52 = F32_INF;
     return Ray(cam.position, 0f, _e48, bitcast<f32>(_e52), 0u, 0u, 0u);
 }
 
-fn dispatch_ray_generation(type_id: u32, offset_1: u32, pixel_2: vec2<u32>, sample_2: u32) -> Ray {
+fn dispatch_ray_generation(type_id: u32, offset_1: u32, pixel_3: vec2<u32>, sample_3: u32) -> Ray {
     let _e3 = load_Pinhole(offset_1);
-    let _e4 = pinhole_ray(_e3, pixel_2, sample_2);
+    let _e4 = pinhole_ray(_e3, pixel_3, sample_3);
     return _e4;
 }
 
@@ -390,34 +446,34 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
     r = ray;
     let o = vec4<f32>(ray.origin, 1f);
-    let d_1 = vec4<f32>(ray.dir, 0f);
+    let d_2 = vec4<f32>(ray.dir, 0f);
     r.origin = vec3<f32>(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
+    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     let _e25 = r;
     return _e25;
 }
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_6 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_6 * tiny), (abs(d) < tiny));
+    let s_5 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_5 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
 fn prepare_triangle_ray(ray_1: Ray) -> TriangleRay {
-    let d_2 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
-    let ad = abs(d_2);
+    let d_3 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
+    let ad = abs(d_3);
     let y_gt = (ad.y > ad.x);
     let kz = select(select(0u, 1u, y_gt), 2u, (ad.z > select(ad.x, ad.y, y_gt)));
     let kx0_ = select((kz + 1u), 0u, (kz == 2u));
     let ky0_ = select((kz + 2u), (kz - 1u), (kz >= 1u));
-    let dz = d_2[min(kz, 2u)];
+    let dz = d_3[min(kz, 2u)];
     let flip = (dz < 0f);
     let kx = select(kx0_, ky0_, flip);
     let ky = select(ky0_, kx0_, flip);
     let inf_bits = vec3(2139095040u);
-    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_2) & vec3(2147483647u)) < inf_bits)));
-    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_2[min(kx, 2u)] / dz), (d_2[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
+    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_3) & vec3(2147483647u)) < inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32> {
@@ -434,15 +490,15 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let cx = (c_7[min(r_1.kx, 2u)] - (r_1.shear.x * c_7[min(r_1.kz, 2u)]));
     let cy = (c_7[min(r_1.ky, 2u)] - (r_1.shear.y * c_7[min(r_1.kz, 2u)]));
     let u_3 = ((cx * by) - (cy * bx));
-    let v_5 = ((ax * cy) - (ay * cx));
+    let v_6 = ((ax * cy) - (ay * cx));
     let w_1 = ((bx * ay) - (by * ax));
-    let outside = ((((u_3 < 0f) || (v_5 < 0f)) || (w_1 < 0f)) && (((u_3 > 0f) || (v_5 > 0f)) || (w_1 > 0f)));
-    let det = ((u_3 + v_5) + w_1);
+    let outside = ((((u_3 < 0f) || (v_6 < 0f)) || (w_1 < 0f)) && (((u_3 > 0f) || (v_6 > 0f)) || (w_1 > 0f)));
+    let det = ((u_3 + v_6) + w_1);
     let rcp = (1f / det);
-    let t_4 = ((((u_3 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_5 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear.z * c_7[min(r_1.kz, 2u)]))) * rcp);
+    let t_4 = ((((u_3 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_6 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear.z * c_7[min(r_1.kz, 2u)]))) * rcp);
     let hit_12 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_5 * rcp), (w_1 * rcp)), hit_12);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_6 * rcp), (w_1 * rcp)), hit_12);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -612,10 +668,10 @@ fn load_Sphere(offset_2: u32) -> Sphere {
 fn sphere_intersect(s: Sphere, ray_5: Ray) -> Intersection {
     var t: f32;
 
-    let f = (ray_5.origin - s.center);
+    let f_1 = (ray_5.origin - s.center);
     let a_5 = dot(ray_5.dir, ray_5.dir);
-    let b_6 = -(dot(f, ray_5.dir));
-    let l_6 = (f + (ray_5.dir * vec3((b_6 / a_5))));
+    let b_6 = -(dot(f_1, ray_5.dir));
+    let l_6 = (f_1 + (ray_5.dir * vec3((b_6 / a_5))));
     let r2_ = (s.radius * s.radius);
     let disc = (a_5 * (r2_ - dot(l_6, l_6)));
     if (!((disc >= 0f)) || !((a_5 > 0f))) {
@@ -623,7 +679,7 @@ fn sphere_intersect(s: Sphere, ray_5: Ray) -> Intersection {
         return Intersection(bitcast<f32>(_e30), vec3<f32>(0f, 0f, 1f), vec2<f32>());
     }
     let q_1 = (b_6 + (select(-1f, 1f, (b_6 >= 0f)) * sqrt(disc)));
-    let t0_1 = ((dot(f, f) - r2_) / q_1);
+    let t0_1 = ((dot(f_1, f_1) - r2_) / q_1);
     let t1_2 = (q_1 / a_5);
     t = min(t0_1, t1_2);
     let _e52 = t;
@@ -714,9 +770,9 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     let _e14 = n_1.z;
     if (_e14 < 0f) {
         let _e21 = n_1;
-        let s_7 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_6 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n_1;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_7);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_6);
         let _e37 = n_1.z;
         n_1 = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -788,7 +844,7 @@ fn finish_hit(ray_8: Ray, c_1: Candidate) -> Hit {
 fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     var inside: u32;
     var nearest: f32;
-    var i: u32;
+    var i_1: u32;
 
     if !(HAS_MEDIA) {
         return 0u;
@@ -801,13 +857,13 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     let _e23 = F32_INF;
     nearest = bitcast<f32>(_e23);
     let end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     loop {
-        let _e29 = i;
+        let _e29 = i_1;
         if (_e29 >= end) {
             break;
         }
-        let _e32 = i;
+        let _e32 = i_1;
         let slot_4 = params[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if (slot_4 != exclude) {
             let _e41 = F32_INF;
@@ -823,8 +879,8 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
             }
         }
         continuing {
-            let _e59 = i;
-            i = (_e59 + 1u);
+            let _e59 = i_1;
+            i_1 = (_e59 + 1u);
         }
     }
     let _e62 = inside;
@@ -990,35 +1046,35 @@ fn load_QuadLight(offset_7: u32) -> QuadLight {
     return QuadLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)), vec3<f32>(bitcast<f32>(_e62), bitcast<f32>(_e68), bitcast<f32>(_e74)), bitcast<f32>(_e81), _e87);
 }
 
-fn scratch_store3f(i_1: u32, v_1: vec3<f32>) {
-    let b_8 = bitcast<vec3<u32>>(v_1);
-    scratch[min(i_1, 21u)] = b_8.x;
-    scratch[min((i_1 + 1u), 21u)] = b_8.y;
-    scratch[min((i_1 + 2u), 21u)] = b_8.z;
+fn scratch_store3f(i_2: u32, v_2: vec3<f32>) {
+    let b_8 = bitcast<vec3<u32>>(v_2);
+    scratch[min(i_2, 23u)] = b_8.x;
+    scratch[min((i_2 + 1u), 23u)] = b_8.y;
+    scratch[min((i_2 + 2u), 23u)] = b_8.z;
     return;
 }
 
 fn shadow_deferred(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
-    let i_6 = scratch[min(SCRATCH_QUERY, 21u)];
-    scratch[min(SCRATCH_QUERY, 21u)] = (i_6 + 1u);
-    let _e22 = scratch[min(SCRATCH_RESOLVED, 21u)];
-    if (i_6 < _e22) {
-        let _e29 = scratch[min(SCRATCH_LIGHT_BITS, 21u)];
-        return f32(((_e29 >> (i_6 & 31u)) & 1u));
+    let i_8 = scratch[min(SCRATCH_QUERY, 23u)];
+    scratch[min(SCRATCH_QUERY, 23u)] = (i_8 + 1u);
+    let _e22 = scratch[min(SCRATCH_RESOLVED, 23u)];
+    if (i_8 < _e22) {
+        let _e29 = scratch[min(SCRATCH_LIGHT_BITS, 23u)];
+        return f32(((_e29 >> (i_8 & 31u)) & 1u));
     }
-    let _e41 = scratch[min(SCRATCH_PENDING, 21u)];
+    let _e41 = scratch[min(SCRATCH_PENDING, 23u)];
     if (_e41 != 0u) {
         return 1f;
     }
-    if (i_6 >= LIGHT_QUERIES) {
+    if (i_8 >= LIGHT_QUERIES) {
         atomicAdd((&counters[min(COUNTER_SHADOW_OVERFLOW, 3u)]), 1u);
         return 1f;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)] = bitcast<u32>(dist);
-    scratch[min(SCRATCH_PENDING, 21u)] = 1u;
+    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 23u)] = bitcast<u32>(dist);
+    scratch[min(SCRATCH_PENDING, 23u)] = 1u;
     return 1f;
 }
 
@@ -1104,25 +1160,25 @@ fn dispatch_light(type_id_3: u32, offset_9: u32, position_3: vec3<f32>, normal_3
     return LightSample();
 }
 
-fn scratch_load3f(i_2: u32) -> vec3<f32> {
-    let _e5 = scratch[min(i_2, 21u)];
-    let _e12 = scratch[min((i_2 + 1u), 21u)];
-    let _e19 = scratch[min((i_2 + 2u), 21u)];
+fn scratch_load3f(i_3: u32) -> vec3<f32> {
+    let _e5 = scratch[min(i_3, 23u)];
+    let _e12 = scratch[min((i_3 + 1u), 23u)];
+    let _e19 = scratch[min((i_3 + 2u), 23u)];
     return bitcast<vec3<f32>>(vec3<u32>(_e5, _e12, _e19));
 }
 
-fn step_toward(x_1: vec3<f32>, s_1: vec3<f32>) -> vec3<f32> {
-    let bits_2 = bitcast<vec3<u32>>(x_1);
-    let up_1 = ((sign(x_1) * sign(s_1)) > vec3(0f));
+fn step_toward(x_3: vec3<f32>, s_1: vec3<f32>) -> vec3<f32> {
+    let bits_2 = bitcast<vec3<u32>>(x_3);
+    let up_1 = ((sign(x_3) * sign(s_1)) > vec3(0f));
     let stepped = bitcast<vec3<f32>>(select((bits_2 - vec3(1u)), (bits_2 + vec3(1u)), up_1));
     let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s_1 > vec3(0f)));
-    let moved = select(stepped, from_zero, (x_1 == vec3(0f)));
-    return select(x_1, moved, !((s_1 == vec3(0f))));
+    let moved = select(stepped, from_zero, (x_3 == vec3(0f)));
+    return select(x_3, moved, !((s_1 == vec3(0f))));
 }
 
 fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_3 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    let offset_16 = (n_4 * vec3(d_3));
+    let d_4 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    let offset_16 = (n_4 * vec3(d_4));
     let _e17 = step_toward((p_5 + offset_16), offset_16);
     return _e17;
 }
@@ -1162,30 +1218,30 @@ fn shadow_query(position_5: vec3<f32>, normal_5: vec3<f32>, dir_2: vec3<f32>, di
     return select(1f, 0f, (_e6.slot != NO_HIT));
 }
 
-fn sample_light_deferred(i_3: u32, position_6: vec3<f32>, normal_6: vec3<f32>) -> LightSample {
+fn sample_light_deferred(i_4: u32, position_6: vec3<f32>, normal_6: vec3<f32>) -> LightSample {
     var after: u32;
     var resolved: u32;
     var bits_1: u32;
 
     let frame_4 = frame;
-    if (i_3 >= frame_4.light_count) {
+    if (i_4 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    let entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     let type_id_7 = params[entry];
     let offset_17 = params[(entry + 1u)];
     let start = rng_state;
     after = start;
     resolved = 0u;
     bits_1 = 0u;
-    scratch[min(SCRATCH_RESOLVED, 21u)] = 0u;
-    scratch[min(SCRATCH_LIGHT_BITS, 21u)] = 0u;
+    scratch[min(SCRATCH_RESOLVED, 23u)] = 0u;
+    scratch[min(SCRATCH_LIGHT_BITS, 23u)] = 0u;
     loop {
         rng_state = start;
-        scratch[min(SCRATCH_QUERY, 21u)] = 0u;
-        scratch[min(SCRATCH_PENDING, 21u)] = 0u;
+        scratch[min(SCRATCH_QUERY, 23u)] = 0u;
+        scratch[min(SCRATCH_PENDING, 23u)] = 0u;
         let _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_6);
-        let _e66 = scratch[min(SCRATCH_PENDING, 21u)];
+        let _e66 = scratch[min(SCRATCH_PENDING, 23u)];
         if (_e66 == 0u) {
             let _e69 = resolved;
             if (_e69 > 0u) {
@@ -1204,12 +1260,12 @@ fn sample_light_deferred(i_3: u32, position_6: vec3<f32>, normal_6: vec3<f32>) -
         let _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
         let _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
         let _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        let _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 21u)];
+        let _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 23u)];
         let _e97 = shadow_query(_e82, _e85, _e88, bitcast<f32>(_e95));
         let _e99 = rng_state;
         after = _e99;
         if !((_e97 == 0f)) {
-            let _e108 = scratch[min(SCRATCH_QUERY, 21u)];
+            let _e108 = scratch[min(SCRATCH_QUERY, 23u)];
             let _e109 = resolved;
             if (_e108 == (_e109 + 1u)) {
                 let _e113 = after;
@@ -1223,9 +1279,9 @@ fn sample_light_deferred(i_3: u32, position_6: vec3<f32>, normal_6: vec3<f32>) -
         let _e122 = resolved;
         resolved = (_e122 + 1u);
         let _e126 = bits_1;
-        scratch[min(SCRATCH_LIGHT_BITS, 21u)] = _e126;
+        scratch[min(SCRATCH_LIGHT_BITS, 23u)] = _e126;
         let _e132 = resolved;
-        scratch[min(SCRATCH_RESOLVED, 21u)] = _e132;
+        scratch[min(SCRATCH_RESOLVED, 23u)] = _e132;
     }
     return LightSample();
 }
@@ -1234,13 +1290,13 @@ fn mis_weight(p_6: f32, other: f32) -> f32 {
     if !((p_6 > 0f)) {
         return 0f;
     }
-    let r_4 = (max(other, 0f) / p_6);
-    if !((r_4 < 1000000000000000000f)) {
+    let r_3 = (max(other, 0f) / p_6);
+    if !((r_3 < 1000000000000000000f)) {
         let _e15 = F32_INF;
         let _e19 = F32_INF;
         return select(0f, 1f, ((p_6 == bitcast<f32>(_e15)) && (other < bitcast<f32>(_e19))));
     }
-    return (1f / (1f + (r_4 * r_4)));
+    return (1f / (1f + (r_3 * r_3)));
 }
 
 fn mis_light_weight(l_2: LightSample, bsdf_pdf: f32) -> f32 {
@@ -1253,26 +1309,26 @@ fn mis_light_weight(l_2: LightSample, bsdf_pdf: f32) -> f32 {
 
 fn path_diffuse_shade(m: PathDiffuse, ray_13: Ray, hit_1: Hit, secondary: vec3<f32>) -> vec3<f32> {
     var direct: vec3<f32>;
-    var i_4: u32;
+    var i_5: u32;
 
     let n_13 = faceForward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
     direct = vec3(0f);
     let _e12 = light_count_query();
-    i_4 = 0u;
+    i_5 = 0u;
     loop {
-        let _e14 = i_4;
+        let _e14 = i_5;
         if (_e14 >= _e12) {
             break;
         }
-        let _e16 = i_4;
+        let _e16 = i_5;
         let _e19 = sample_light_deferred(_e16, hit_1.position, hit_1.geometric_normal);
         let c_11 = max(dot(n_13, _e19.dir), 0f);
         let _e24 = direct;
         let _e28 = mis_light_weight(_e19, (c_11 * INV_PI));
         direct = (_e24 + (_e19.radiance * vec3((c_11 * _e28))));
         continuing {
-            let _e33 = i_4;
-            i_4 = (_e33 + 1u);
+            let _e33 = i_5;
+            i_5 = (_e33 + 1u);
         }
     }
     let _e40 = direct;
@@ -1293,11 +1349,11 @@ fn after_nee_bounce(ray_14: Ray) -> bool {
 }
 
 fn bounce_pdf(ray_15: Ray) -> f32 {
-    let x_3 = (length(ray_15.dir) - MIS_BOUNCE_LENGTH);
-    if !((x_3 > -0.25f)) {
+    let x_5 = (length(ray_15.dir) - MIS_BOUNCE_LENGTH);
+    if !((x_5 > -0.25f)) {
         return 0f;
     }
-    return (exp((max(x_3, 0f) * 90f)) - 1f);
+    return (exp((max(x_5, 0f) * 90f)) - 1f);
 }
 
 fn quad_lamp_shade(m_1: QuadLamp, ray_16: Ray, hit_2: Hit) -> vec3<f32> {
@@ -1382,8 +1438,8 @@ fn pbr_fresnel(f0_: vec3<f32>, c_2: f32) -> vec3<f32> {
 }
 
 fn pbr_ggx_d(ndh: f32, a2_: f32) -> f32 {
-    let d_4 = (((ndh * ndh) * (a2_ - 1f)) + 1f);
-    return ((a2_ * INV_PI) / (d_4 * d_4));
+    let d_5 = (((ndh * ndh) * (a2_ - 1f)) + 1f);
+    return ((a2_ * INV_PI) / (d_5 * d_5));
 }
 
 fn pbr_smith_v(ndl: f32, ndv: f32, a2_1: f32) -> f32 {
@@ -1392,8 +1448,8 @@ fn pbr_smith_v(ndl: f32, ndv: f32, a2_1: f32) -> f32 {
     return (0.5f / max((gv + gl), 0.00000000000000000001f));
 }
 
-fn pbr_eval(base_1: vec3<f32>, metallic: f32, roughness_1: f32, n_6: vec3<f32>, v_2: vec3<f32>, l_3: vec3<f32>) -> vec3<f32> {
-    let ndv_3 = dot(n_6, v_2);
+fn pbr_eval(base_1: vec3<f32>, metallic: f32, roughness_1: f32, n_6: vec3<f32>, v_3: vec3<f32>, l_3: vec3<f32>) -> vec3<f32> {
+    let ndv_3 = dot(n_6, v_3);
     let ndl_1 = dot(n_6, l_3);
     if (!((ndv_3 > 0f)) || !((ndl_1 > 0f))) {
         return vec3(0f);
@@ -1401,8 +1457,8 @@ fn pbr_eval(base_1: vec3<f32>, metallic: f32, roughness_1: f32, n_6: vec3<f32>, 
     let metal = saturate(metallic);
     let _e18 = pbr_alpha2_(roughness_1);
     let f0_1 = mix(vec3(0.04f), base_1, vec3(metal));
-    let _e24 = normalize_vec3f((v_2 + l_3));
-    let _e26 = pbr_fresnel(f0_1, dot(v_2, _e24));
+    let _e24 = normalize_vec3f((v_3 + l_3));
+    let _e26 = pbr_fresnel(f0_1, dot(v_3, _e24));
     let _e29 = pbr_ggx_d(saturate(dot(n_6, _e24)), _e18);
     let _e30 = pbr_smith_v(ndl_1, ndv_3, _e18);
     let spec = (_e26 * vec3((_e29 * _e30)));
@@ -1433,42 +1489,42 @@ fn pbr_specular_pdf(ndh_1: f32, ndv_2: f32, a2_2: f32) -> f32 {
     return ((_e3 * 0.5f) / (ndv_2 + sqrt((a2_2 + (((1f - a2_2) * ndv_2) * ndv_2)))));
 }
 
-fn pbr_pdf(base_3: vec3<f32>, metallic_2: f32, roughness_2: f32, n_7: vec3<f32>, v_3: vec3<f32>, l_4: vec3<f32>) -> f32 {
-    let ndv_4 = dot(n_7, v_3);
+fn pbr_pdf(base_3: vec3<f32>, metallic_2: f32, roughness_2: f32, n_7: vec3<f32>, v_4: vec3<f32>, l_4: vec3<f32>) -> f32 {
+    let ndv_4 = dot(n_7, v_4);
     let ndl_2 = dot(n_7, l_4);
     if (!((ndv_4 > 0f)) || !((ndl_2 > 0f))) {
         return 0f;
     }
     let _e16 = pbr_alpha2_(roughness_2);
     let _e17 = pbr_specular_chance(base_3, metallic_2, ndv_4);
-    let _e19 = normalize_vec3f((v_3 + l_4));
+    let _e19 = normalize_vec3f((v_4 + l_4));
     let _e22 = pbr_specular_pdf(saturate(dot(n_7, _e19)), ndv_4, _e16);
     return ((_e17 * _e22) + (((1f - _e17) * ndl_2) * INV_PI));
 }
 
 fn path_pbr_shade(m_3: PathPbr, ray_20: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     var direct_1: vec3<f32>;
-    var i_5: u32;
+    var i_6: u32;
     var w: f32;
 
     let _e4 = path_pbr_n(ray_20, hit_6);
     let _e6 = normalize_vec3f(ray_20.dir);
-    let v_6 = -(_e6);
+    let v_7 = -(_e6);
     direct_1 = vec3(0f);
     let _e12 = light_count_query();
-    i_5 = 0u;
+    i_6 = 0u;
     loop {
-        let _e14 = i_5;
+        let _e14 = i_6;
         if (_e14 >= _e12) {
             break;
         }
-        let _e16 = i_5;
+        let _e16 = i_6;
         let _e19 = sample_light_deferred(_e16, hit_6.position, hit_6.geometric_normal);
         if any((_e19.radiance > vec3(0f))) {
-            let _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_6, _e19.dir);
+            let _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_7, _e19.dir);
             w = 1f;
             if (_e19.pdf > 0f) {
-                let _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_6, _e19.dir);
+                let _e40 = pbr_pdf(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_7, _e19.dir);
                 let _e41 = mis_weight(_e19.pdf, _e40);
                 w = _e41;
             }
@@ -1477,8 +1533,8 @@ fn path_pbr_shade(m_3: PathPbr, ray_20: Ray, hit_6: Hit, secondary_1: vec3<f32>)
             direct_1 = (_e42 + ((_e19.radiance * _e29) * vec3(_e45)));
         }
         continuing {
-            let _e49 = i_5;
-            i_5 = (_e49 + 1u);
+            let _e49 = i_6;
+            i_6 = (_e49 + 1u);
         }
     }
     let _e53 = direct_1;
@@ -1540,16 +1596,16 @@ fn through_medium(ray_24: Ray, t_2: f32, radiance_1: vec3<f32>) -> vec3<f32> {
 }
 
 fn sample_cosine_hemisphere(n_8: vec3<f32>, u: vec2<f32>) -> vec3<f32> {
-    let r_5 = sqrt(u.x);
+    let r_4 = sqrt(u.x);
     let phi_1 = (6.2831855f * u.y);
-    let local = vec3<f32>((r_5 * cos(phi_1)), (r_5 * sin(phi_1)), sqrt(max((1f - u.x), 0f)));
+    let local = vec3<f32>((r_4 * cos(phi_1)), (r_4 * sin(phi_1)), sqrt(max((1f - u.x), 0f)));
     let _e17 = orthonormal_basis(n_8);
     return (_e17 * local);
 }
 
 fn mis_bounce_dir(dir_3: vec3<f32>, pdf: f32) -> vec3<f32> {
-    let x_4 = min((log((1f + max(pdf, 0f))) * (1f / 90f)), 0.999f);
-    return (dir_3 * vec3((MIS_BOUNCE_LENGTH + x_4)));
+    let x_6 = min((log((1f + max(pdf, 0f))) * (1f / 90f)), 0.999f);
+    return (dir_3 * vec3((MIS_BOUNCE_LENGTH + x_6)));
 }
 
 fn rt_spawn(dir_4: vec3<f32>, weight: vec3<f32>) {
@@ -1596,21 +1652,21 @@ fn pbr_sample_vndf(ve: vec3<f32>, alpha: f32, u_1: vec2<f32>) -> vec3<f32> {
     }
     let _e32 = t1_;
     let t2_ = cross(_e9, _e32);
-    let r_6 = sqrt(u_1.x);
+    let r_5 = sqrt(u_1.x);
     let phi_2 = (TAU * u_1.y);
-    let p1_ = (r_6 * cos(phi_2));
-    let s_8 = (0.5f * (1f + _e9.z));
-    let p2_ = (((1f - s_8) * sqrt(max((1f - (p1_ * p1_)), 0f))) + ((s_8 * r_6) * sin(phi_2)));
+    let p1_ = (r_5 * cos(phi_2));
+    let s_7 = (0.5f * (1f + _e9.z));
+    let p2_ = (((1f - s_7) * sqrt(max((1f - (p1_ * p1_)), 0f))) + ((s_7 * r_5) * sin(phi_2)));
     let _e59 = t1_;
     let nh = (((_e59 * vec3(p1_)) + (t2_ * vec3(p2_))) + (_e9 * vec3(sqrt(max(((1f - (p1_ * p1_)) - (p2_ * p2_)), 0f)))));
     let _e84 = normalize_vec3f(vec3<f32>((alpha * nh.x), (alpha * nh.y), max(nh.z, 0f)));
     return _e84;
 }
 
-fn pbr_sample(base_4: vec3<f32>, metallic_3: f32, roughness_3: f32, n_9: vec3<f32>, v_4: vec3<f32>, u_2: vec3<f32>) -> PbrSample {
+fn pbr_sample(base_4: vec3<f32>, metallic_3: f32, roughness_3: f32, n_9: vec3<f32>, v_5: vec3<f32>, u_2: vec3<f32>) -> PbrSample {
     var l_5: vec3<f32>;
 
-    let ndv_5 = dot(n_9, v_4);
+    let ndv_5 = dot(n_9, v_5);
     if !((ndv_5 > 0f)) {
         return PbrSample(n_9, vec3(0f), 0f);
     }
@@ -1619,21 +1675,21 @@ fn pbr_sample(base_4: vec3<f32>, metallic_3: f32, roughness_3: f32, n_9: vec3<f3
     if (u_2.x < _e14) {
         let _e20 = orthonormal_basis(n_9);
         let _e21 = pbr_alpha2_(roughness_3);
-        let _e26 = pbr_sample_vndf((transpose(_e20) * v_4), sqrt(_e21), u_2.yz);
-        let h_2 = (_e20 * _e26);
-        l_5 = reflect(-(v_4), h_2);
+        let _e26 = pbr_sample_vndf((transpose(_e20) * v_5), sqrt(_e21), u_2.yz);
+        let h_1 = (_e20 * _e26);
+        l_5 = reflect(-(v_5), h_1);
     } else {
         let _e31 = sample_cosine_hemisphere(n_9, u_2.yz);
         l_5 = _e31;
     }
     let _e32 = l_5;
-    let _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_4, _e32);
+    let _e33 = pbr_pdf(base_4, metallic_3, roughness_3, n_9, v_5, _e32);
     if !((_e33 > 0f)) {
         let _e37 = l_5;
         return PbrSample(_e37, vec3(0f), 0f);
     }
     let _e42 = l_5;
-    let _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_4, _e42);
+    let _e43 = pbr_eval(base_4, metallic_3, roughness_3, n_9, v_5, _e42);
     let weight_5 = (_e43 / vec3(_e33));
     let _e46 = l_5;
     return PbrSample(_e46, weight_5, _e33);
@@ -1645,10 +1701,10 @@ fn path_pbr_rays(m_5: PathPbr, ray_26: Ray, hit_9: Hit) {
     let _e3 = path_pbr_ng(ray_26, hit_9);
     let _e4 = path_pbr_n(ray_26, hit_9);
     let _e6 = normalize_vec3f(ray_26.dir);
-    let v_7 = -(_e6);
+    let v_8 = -(_e6);
     let _e11 = rand_next();
     let _e12 = rand2_next();
-    let _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_7, vec3<f32>(_e11, _e12));
+    let _e14 = pbr_sample(m_5.base_color, m_5.metallic, m_5.roughness, _e4, v_8, vec3<f32>(_e11, _e12));
     if (!((_e14.pdf > 0f)) || !((dot(_e14.dir, _e3) > 0f))) {
         return;
     }
@@ -1827,8 +1883,8 @@ fn trace(camera_ray_1: Ray) -> vec3<f32> {
     return _e23;
 }
 
-fn is_finite_vec3f(x_2: vec3<f32>) -> vec3<bool> {
-    return ((bitcast<vec3<u32>>(x_2) & vec3(2147483647u)) < vec3(2139095040u));
+fn is_finite_vec3f(x_4: vec3<f32>) -> vec3<bool> {
+    return ((bitcast<vec3<u32>>(x_4) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
 fn finite_or_zero(c_6: vec3<f32>) -> vec3<f32> {
@@ -1836,7 +1892,7 @@ fn finite_or_zero(c_6: vec3<f32>) -> vec3<f32> {
     return select(vec3(0f), c_6, _e3);
 }
 
-fn render_pixel(pixel_3: vec2<u32>) {
+fn render_pixel(pixel_4: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s_4: u32;
@@ -1854,9 +1910,9 @@ fn render_pixel(pixel_3: vec2<u32>) {
             break;
         }
         let _e18 = s_4;
-        let sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_3, sample_3, frame_5.seed);
-        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        let sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_4, sample_4, frame_5.seed);
+        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
         ray_28 = _e23;
         ray_28.depth = 0u;
         ray_28.kind = RAY_CAMERA;
@@ -1887,10 +1943,10 @@ fn render_pixel(pixel_3: vec2<u32>) {
     let _e62 = vec4<f32>(_e59, f32(frame_5.samples_per_pass));
     let _e63 = bad;
     if (tile_2.frame == 0u) {
-        accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = _e62;
+        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
     } else {
-        let _e69 = accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)];
-        accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = (_e69 + _e62);
+        let _e69 = accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
+        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
     }
     if (_e63 > 0u) {
         atomicAdd((&counters[0]), _e63);

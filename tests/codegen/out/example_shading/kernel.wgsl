@@ -154,6 +154,9 @@ const WORKGROUP_WIDTH: u32 = 8u;
 const WORKGROUP_HEIGHT: u32 = 8u;
 const NO_HIT: u32 = 4294967295u;
 const SCATTER: u32 = 1000003u;
+const SCRATCH_RNG_INDEX: u32 = 12u;
+const SCRATCH_RNG_SEED: u32 = 13u;
+const HALF_WORD_BITS: u32 = 16u;
 const RAY_CAMERA: u32 = 0u;
 const HAS_MEDIA: bool = false;
 const MEDIUM_ENTRY_STRIDE: u32 = 1u;
@@ -192,6 +195,7 @@ const RAY_SECONDARY: u32 = 1u;
 var<uniform> tile: TileParams;
 @group(0) @binding(0) 
 var<uniform> frame: FrameUniforms;
+var<private> scratch: array<u32, 14>;
 var<private> rng_state: u32;
 @group(0) @binding(6) 
 var<storage> params: array<u32>;
@@ -261,25 +265,23 @@ fn scattered_local(id: vec2<u32>) -> vec2<u32> {
 }
 
 fn pcg_hash(x: u32) -> u32 {
-    let state = ((x * 747796405u) + 2891336453u);
-    let word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    let state_1 = ((x * 747796405u) + 2891336453u);
+    let word = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
     return ((word >> 22u) ^ word);
 }
 
-fn rng_seed(pixel: vec2<u32>, sample: u32, seed: u32) {
-    var h: u32;
+fn rng_resume(pixel: vec2<u32>, sample: u32, seed: u32, state: u32) {
+    scratch[min(SCRATCH_RNG_INDEX, 13u)] = sample;
+    let _e12 = pcg_hash(seed);
+    let _e14 = pcg_hash((pixel.y ^ _e12));
+    let _e16 = pcg_hash((pixel.x ^ _e14));
+    scratch[min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    rng_state = state;
+    return;
+}
 
-    let _e5 = pcg_hash(seed);
-    let _e7 = pcg_hash((sample ^ _e5));
-    let _e9 = pcg_hash((pixel.y ^ _e7));
-    let _e11 = pcg_hash((pixel.x ^ _e9));
-    h = _e11;
-    let _e13 = h;
-    if (_e13 == 0u) {
-        h = 1u;
-    }
-    let _e17 = h;
-    rng_state = _e17;
+fn rng_seed(pixel_1: vec2<u32>, sample_1: u32, seed_1: u32) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u);
     return;
 }
 
@@ -307,13 +309,68 @@ fn samples_per_pixel_query() -> u32 {
     return _e1.total_samples;
 }
 
+fn laine_karras(x_1: u32, seed_2: u32) -> u32 {
+    var v: u32;
+
+    v = (x_1 + seed_2);
+    let _e4 = v;
+    let _e5 = v;
+    v = (_e4 ^ (_e5 * 1817228412u));
+    let _e9 = v;
+    let _e10 = v;
+    v = (_e9 ^ (_e10 * 3090095698u));
+    let _e14 = v;
+    let _e15 = v;
+    v = (_e14 ^ (_e15 * 3350193720u));
+    let _e19 = v;
+    let _e20 = v;
+    v = (_e19 ^ (_e20 * 2367878886u));
+    let _e24 = v;
+    return _e24;
+}
+
+fn sobol_second_reversed(i: u32) -> u32 {
+    var f: u32;
+
+    f = i;
+    let _e2 = f;
+    let _e3 = f;
+    f = (_e2 ^ ((_e3 >> 1u) & 1431655765u));
+    let _e9 = f;
+    let _e10 = f;
+    f = (_e9 ^ ((_e10 >> 2u) & 858993459u));
+    let _e16 = f;
+    let _e17 = f;
+    f = (_e16 ^ ((_e17 >> 4u) & 252645135u));
+    let _e23 = f;
+    let _e24 = f;
+    f = (_e23 ^ ((_e24 >> 8u) & 16711935u));
+    let _e30 = f;
+    let _e31 = f;
+    f = (_e30 ^ (_e31 >> (HALF_WORD_BITS & 31u)));
+    let _e37 = f;
+    return _e37;
+}
+
 fn rand_next() -> f32 {
-    let _e1 = rng_state;
-    let s_4 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_4;
-    let word_1 = (((s_4 >> (((s_4 >> 28u) + 4u) & 31u)) ^ s_4) * 277803737u);
-    let r_3 = ((word_1 >> 22u) ^ word_1);
-    return (f32((r_3 >> 8u)) * (1f / 16777216f));
+    var x_2: u32;
+
+    let d_1 = rng_state;
+    rng_state = (d_1 + 1u);
+    let _e10 = scratch[min(SCRATCH_RNG_SEED, 13u)];
+    let _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    let _e22 = scratch[min(SCRATCH_RNG_INDEX, 13u)];
+    let _e24 = laine_karras(reverseBits(_e22), _e16);
+    let i_5 = reverseBits(_e24);
+    x_2 = i_5;
+    if ((d_1 & 1u) != 0u) {
+        let _e31 = sobol_second_reversed(i_5);
+        x_2 = _e31;
+    }
+    let scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    let _e45 = x_2;
+    let _e46 = laine_karras(_e45, scramble);
+    return (f32((reverseBits(_e46) >> 8u)) * (1f / 16777216f));
 }
 
 fn rand2_next() -> vec2<f32> {
@@ -322,11 +379,11 @@ fn rand2_next() -> vec2<f32> {
     return vec2<f32>(_e0, _e1);
 }
 
-fn normalize_vec3f(v: vec3<f32>) -> vec3<f32> {
-    return select(vec3(0f), normalize(v), (dot(v, v) >= 0.000000000000000000000000000000000000011754944f));
+fn normalize_vec3f(v_1: vec3<f32>) -> vec3<f32> {
+    return select(vec3(0f), normalize(v_1), (dot(v_1, v_1) >= 0.000000000000000000000000000000000000011754944f));
 }
 
-fn pinhole_ray(cam: Pinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
+fn pinhole_ray(cam: Pinhole, pixel_2: vec2<u32>, sample_2: u32) -> Ray {
     var jitter: vec2<f32>;
 
     let _e2 = image_size_query();
@@ -338,20 +395,20 @@ fn pinhole_ray(cam: Pinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
         jitter = _e10;
     }
     let _e12 = jitter;
-    let ndc = ((((vec2<f32>(pixel_1) + _e12) / size_1) * vec2(2f)) - vec2(1f));
+    let ndc = ((((vec2<f32>(pixel_2) + _e12) / size_1) * vec2(2f)) - vec2(1f));
     let _e24 = normalize_vec3f((cam.look_at - cam.position));
     let _e27 = normalize_vec3f(cross(_e24, cam.up));
     let up = cross(_e27, _e24);
-    let h_1 = tan((radians(cam.fov) * 0.5f));
+    let h = tan((radians(cam.fov) * 0.5f));
     let aspect = (size_1.x / size_1.y);
-    let _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
+    let _e48 = normalize_vec3f(((_e24 + (_e27 * vec3(((ndc.x * h) * aspect)))) - (up * vec3((ndc.y * h)))));
     let _e52 = F32_INF;
     return Ray(cam.position, 0f, _e48, bitcast<f32>(_e52), 0u, 0u, 0u);
 }
 
-fn dispatch_ray_generation(type_id: u32, offset_1: u32, pixel_2: vec2<u32>, sample_2: u32) -> Ray {
+fn dispatch_ray_generation(type_id: u32, offset_1: u32, pixel_3: vec2<u32>, sample_3: u32) -> Ray {
     let _e3 = load_Pinhole(offset_1);
-    let _e4 = pinhole_ray(_e3, pixel_2, sample_2);
+    let _e4 = pinhole_ray(_e3, pixel_3, sample_3);
     return _e4;
 }
 
@@ -364,34 +421,34 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
     r = ray;
     let o = vec4<f32>(ray.origin, 1f);
-    let d_1 = vec4<f32>(ray.dir, 0f);
+    let d_2 = vec4<f32>(ray.dir, 0f);
     r.origin = vec3<f32>(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
+    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     let _e25 = r;
     return _e25;
 }
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_5 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_5 * tiny), (abs(d) < tiny));
+    let s_4 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_4 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
 fn prepare_triangle_ray(ray_1: Ray) -> TriangleRay {
-    let d_2 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
-    let ad = abs(d_2);
+    let d_3 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
+    let ad = abs(d_3);
     let y_gt = (ad.y > ad.x);
     let kz = select(select(0u, 1u, y_gt), 2u, (ad.z > select(ad.x, ad.y, y_gt)));
     let kx0_ = select((kz + 1u), 0u, (kz == 2u));
     let ky0_ = select((kz + 2u), (kz - 1u), (kz >= 1u));
-    let dz = d_2[min(kz, 2u)];
+    let dz = d_3[min(kz, 2u)];
     let flip = (dz < 0f);
     let kx = select(kx0_, ky0_, flip);
     let ky = select(ky0_, kx0_, flip);
     let inf_bits = vec3(2139095040u);
-    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_2) & vec3(2147483647u)) < inf_bits)));
-    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_2[min(kx, 2u)] / dz), (d_2[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
+    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_3) & vec3(2147483647u)) < inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32> {
@@ -408,15 +465,15 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let cx = (c_6[min(r_1.kx, 2u)] - (r_1.shear.x * c_6[min(r_1.kz, 2u)]));
     let cy = (c_6[min(r_1.ky, 2u)] - (r_1.shear.y * c_6[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
-    let v_1 = ((ax * cy) - (ay * cx));
+    let v_2 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
-    let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
-    let det = ((u + v_1) + w);
+    let outside = ((((u < 0f) || (v_2 < 0f)) || (w < 0f)) && (((u > 0f) || (v_2 > 0f)) || (w > 0f)));
+    let det = ((u + v_2) + w);
     let rcp = (1f / det);
-    let t_5 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
+    let t_5 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
     let hit_10 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_5, (v_1 * rcp), (w * rcp)), hit_10);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_5, (v_2 * rcp), (w * rcp)), hit_10);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -627,9 +684,9 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     let _e14 = n_1.z;
     if (_e14 < 0f) {
         let _e21 = n_1;
-        let s_6 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_5 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n_1;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_6);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_5);
         let _e37 = n_1.z;
         n_1 = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -701,7 +758,7 @@ fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
 fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     var inside: u32;
     var nearest: f32;
-    var i: u32;
+    var i_1: u32;
 
     if !(HAS_MEDIA) {
         return 0u;
@@ -714,13 +771,13 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     let _e23 = F32_INF;
     nearest = bitcast<f32>(_e23);
     let end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     loop {
-        let _e29 = i;
+        let _e29 = i_1;
         if (_e29 >= end) {
             break;
         }
-        let _e32 = i;
+        let _e32 = i_1;
         let slot_4 = params[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if (slot_4 != exclude) {
             let _e41 = F32_INF;
@@ -736,8 +793,8 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
             }
         }
         continuing {
-            let _e59 = i;
-            i = (_e59 + 1u);
+            let _e59 = i_1;
+            i_1 = (_e59 + 1u);
         }
     }
     let _e62 = inside;
@@ -905,8 +962,8 @@ fn shading_normal(ray_11: Ray, hit_1: Hit) -> vec3<f32> {
     return faceForward(hit_1.normal, -(ng), hit_1.normal);
 }
 
-fn i32_from_f32_(x_1: f32) -> i32 {
-    return select(i32(min(max(x_1, -2147483600f), 2147483500f)), 0i, ((bitcast<u32>(x_1) & 2147483647u) > 2139095040u));
+fn i32_from_f32_(x_3: f32) -> i32 {
+    return select(i32(min(max(x_3, -2147483600f), 2147483500f)), 0i, ((bitcast<u32>(x_3) & 2147483647u) > 2139095040u));
 }
 
 fn rem_i32_(a_4: i32, b_5: i32) -> i32 {
@@ -915,14 +972,14 @@ fn rem_i32_(a_4: i32, b_5: i32) -> i32 {
     return select((a_4 - (divisor_4 * (a_4 / divisor_4))), 0i, by_zero_4);
 }
 
-fn wrap_texel(x_2: i32, n_3: i32, mode: u32) -> i32 {
-    let _e3 = rem_i32_(x_2, n_3);
+fn wrap_texel(x_4: i32, n_3: i32, mode: u32) -> i32 {
+    let _e3 = rem_i32_(x_4, n_3);
     let _e5 = rem_i32_((_e3 + n_3), n_3);
-    let _e8 = rem_i32_(x_2, (2i * n_3));
+    let _e8 = rem_i32_(x_4, (2i * n_3));
     let _e14 = rem_i32_((_e8 + (2i * n_3)), (2i * n_3));
     let mirror = select(_e14, (((2i * n_3) - 1i) - _e14), (_e14 >= n_3));
     let wrapped = select(_e5, mirror, (mode == TEXTURE_WRAP_MIRROR));
-    return select(wrapped, min(max(x_2, 0i), (n_3 - 1i)), (mode == TEXTURE_WRAP_CLAMP));
+    return select(wrapped, min(max(x_4, 0i), (n_3 - 1i)), (mode == TEXTURE_WRAP_CLAMP));
 }
 
 fn srgb_channel(c_2: f32) -> f32 {
@@ -966,10 +1023,10 @@ fn sample_texture(t_1: u32, uv: vec2<f32>) -> vec4<f32> {
     let mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
     let q_3 = (uv * vec2<f32>(f32(wi), f32(hi_1)));
     let p_7 = select((q_3 - vec2(0.5f)), floor(q_3), ((sampler_ & TEXTURE_NEAREST) != 0u));
-    let f = floor(p_7);
-    let fr = (p_7 - f);
-    let _e47 = i32_from_f32_(f.x);
-    let _e49 = i32_from_f32_(f.y);
+    let f_1 = floor(p_7);
+    let fr = (p_7 - f_1);
+    let _e47 = i32_from_f32_(f_1.x);
+    let _e49 = i32_from_f32_(f_1.y);
     let _e50 = wrap_texel(_e47, wi, mu);
     let x0_ = u32(_e50);
     let _e54 = wrap_texel((_e47 + 1i), wi, mu);
@@ -1005,18 +1062,18 @@ fn load_PointLight(offset_5: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn step_toward(x_3: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
-    let bits_1 = bitcast<vec3<u32>>(x_3);
-    let up_1 = ((sign(x_3) * sign(s)) > vec3(0f));
+fn step_toward(x_5: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
+    let bits_1 = bitcast<vec3<u32>>(x_5);
+    let up_1 = ((sign(x_5) * sign(s)) > vec3(0f));
     let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
     let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s > vec3(0f)));
-    let moved = select(stepped, from_zero, (x_3 == vec3(0f)));
-    return select(x_3, moved, !((s == vec3(0f))));
+    let moved = select(stepped, from_zero, (x_5 == vec3(0f)));
+    return select(x_5, moved, !((s == vec3(0f))));
 }
 
 fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_3 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    let offset_13 = (n_4 * vec3(d_3));
+    let d_4 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    let offset_13 = (n_4 * vec3(d_4));
     let _e17 = step_toward((p_5 + offset_13), offset_13);
     return _e17;
 }
@@ -1078,12 +1135,12 @@ fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_3
     return _e4;
 }
 
-fn sample_light_query(i_1: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
+fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let frame_4 = frame;
-    if (i_1 >= frame_4.light_count) {
+    if (i_2 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
+    let entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     let _e22 = params[entry];
     let _e27 = params[(entry + 1u)];
     let _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
@@ -1092,33 +1149,33 @@ fn sample_light_query(i_1: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> L
 
 fn blinn_phong_shade(m: BlinnPhong, ray_12: Ray, hit_2: Hit) -> vec3<f32> {
     var color: vec3<f32>;
-    var i_2: u32;
+    var i_3: u32;
 
     let _e3 = shading_normal(ray_12, hit_2);
     let _e5 = normalize_vec3f(ray_12.dir);
-    let v_2 = -(_e5);
+    let v_3 = -(_e5);
     let _e12 = sample_texture(m.texture, (hit_2.uv * m.uv_scale));
     let kd = (m.diffuse * _e12.xyz);
-    let s_7 = max(m.shininess, 0f);
-    let norm = ((s_7 + 8f) * (INV_PI / 8f));
+    let s_6 = max(m.shininess, 0f);
+    let norm = ((s_6 + 8f) * (INV_PI / 8f));
     color = (m.ambient * kd);
     let _e28 = light_count_query();
-    i_2 = 0u;
+    i_3 = 0u;
     loop {
-        let _e30 = i_2;
+        let _e30 = i_3;
         if (_e30 >= _e28) {
             break;
         }
-        let _e32 = i_2;
+        let _e32 = i_3;
         let _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal);
         let ndl = max(dot(_e3, _e35.dir), 0f);
-        let _e42 = normalize_vec3f((_e35.dir + v_2));
-        let highlight = (pow(max(dot(_e3, _e42), 0f), s_7) * norm);
+        let _e42 = normalize_vec3f((_e35.dir + v_3));
+        let highlight = (pow(max(dot(_e3, _e42), 0f), s_6) * norm);
         let _e48 = color;
         color = (_e48 + ((_e35.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m.specular * vec3(highlight)))));
         continuing {
-            let _e61 = i_2;
-            i_2 = (_e61 + 1u);
+            let _e61 = i_3;
+            i_3 = (_e61 + 1u);
         }
     }
     let _e64 = color;
@@ -1134,24 +1191,24 @@ fn load_Lambert(offset_7: u32) -> Lambert {
 
 fn lambert_shade(m_1: Lambert, ray_13: Ray, hit_3: Hit) -> vec3<f32> {
     var color_1: vec3<f32>;
-    var i_3: u32;
+    var i_4: u32;
 
     let _e3 = shading_normal(ray_13, hit_3);
     color_1 = vec3(0f);
     let _e8 = light_count_query();
-    i_3 = 0u;
+    i_4 = 0u;
     loop {
-        let _e10 = i_3;
+        let _e10 = i_4;
         if (_e10 >= _e8) {
             break;
         }
-        let _e12 = i_3;
+        let _e12 = i_4;
         let _e15 = sample_light_query(_e12, hit_3.position, hit_3.geometric_normal);
         let _e16 = color_1;
         color_1 = (_e16 + (((m_1.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0f))));
         continuing {
-            let _e30 = i_3;
-            i_3 = (_e30 + 1u);
+            let _e30 = i_4;
+            i_4 = (_e30 + 1u);
         }
     }
     let _e33 = color_1;
@@ -1405,8 +1462,8 @@ fn trace(camera_ray_1: Ray) -> vec3<f32> {
     return _e23;
 }
 
-fn is_finite_vec3f(x_4: vec3<f32>) -> vec3<bool> {
-    return ((bitcast<vec3<u32>>(x_4) & vec3(2147483647u)) < vec3(2139095040u));
+fn is_finite_vec3f(x_6: vec3<f32>) -> vec3<bool> {
+    return ((bitcast<vec3<u32>>(x_6) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
 fn finite_or_zero(c_5: vec3<f32>) -> vec3<f32> {
@@ -1414,7 +1471,7 @@ fn finite_or_zero(c_5: vec3<f32>) -> vec3<f32> {
     return select(vec3(0f), c_5, _e3);
 }
 
-fn render_pixel(pixel_3: vec2<u32>) {
+fn render_pixel(pixel_4: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s_3: u32;
@@ -1432,9 +1489,9 @@ fn render_pixel(pixel_3: vec2<u32>) {
             break;
         }
         let _e18 = s_3;
-        let sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_3, sample_3, frame_5.seed);
-        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        let sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_4, sample_4, frame_5.seed);
+        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
         ray_22 = _e23;
         ray_22.depth = 0u;
         ray_22.kind = RAY_CAMERA;
@@ -1465,10 +1522,10 @@ fn render_pixel(pixel_3: vec2<u32>) {
     let _e62 = vec4<f32>(_e59, f32(frame_5.samples_per_pass));
     let _e63 = bad;
     if (tile_2.frame == 0u) {
-        accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = _e62;
+        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
     } else {
-        let _e69 = accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)];
-        accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = (_e69 + _e62);
+        let _e69 = accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
+        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
     }
     if (_e63 > 0u) {
         atomicAdd((&counters[0]), _e63);

@@ -177,6 +177,9 @@ static const uint WORKGROUP_WIDTH = 8u;
 static const uint WORKGROUP_HEIGHT = 8u;
 static const uint NO_HIT = 4294967295u;
 static const uint SCATTER = 1000003u;
+static const uint SCRATCH_RNG_INDEX = 12u;
+static const uint SCRATCH_RNG_SEED = 13u;
+static const uint HALF_WORD_BITS = 16u;
 static const uint RAY_CAMERA = 0u;
 static const bool HAS_MEDIA = false;
 static const uint MEDIUM_ENTRY_STRIDE = 1u;
@@ -214,6 +217,7 @@ static const uint RAY_SECONDARY = 1u;
 
 cbuffer tile : register(b1) { TileParams tile; }
 cbuffer frame : register(b0) { FrameUniforms frame; }
+static uint scratch[14] = (uint[14])0;
 static uint rng_state = (uint)0;
 ByteAddressBuffer params : register(t6);
 static uint F32_INF = 2139095040u;
@@ -297,26 +301,25 @@ uint2 scattered_local(uint2 id)
 
 uint pcg_hash(uint x)
 {
-    uint state = ((x * 747796405u) + 2891336453u);
-    uint word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    uint state_1 = ((x * 747796405u) + 2891336453u);
+    uint word = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
     return ((word >> 22u) ^ word);
 }
 
-void rng_seed(uint2 pixel, uint sample_, uint seed)
+void rng_resume(uint2 pixel, uint sample_, uint seed, uint state)
 {
-    uint h = (uint)0;
+    scratch[min(uint(min(SCRATCH_RNG_INDEX, 13u)), 13u)] = sample_;
+    const uint _e12 = pcg_hash(seed);
+    const uint _e14 = pcg_hash((pixel.y ^ _e12));
+    const uint _e16 = pcg_hash((pixel.x ^ _e14));
+    scratch[min(uint(min(SCRATCH_RNG_SEED, 13u)), 13u)] = _e16;
+    rng_state = state;
+    return;
+}
 
-    const uint _e5 = pcg_hash(seed);
-    const uint _e7 = pcg_hash((sample_ ^ _e5));
-    const uint _e9 = pcg_hash((pixel.y ^ _e7));
-    const uint _e11 = pcg_hash((pixel.x ^ _e9));
-    h = _e11;
-    uint _e13 = h;
-    if ((_e13 == 0u)) {
-        h = 1u;
-    }
-    uint _e17 = h;
-    rng_state = _e17;
+void rng_seed(uint2 pixel_1, uint sample_1, uint seed_1)
+{
+    rng_resume(pixel_1, sample_1, seed_1, 0u);
     return;
 }
 
@@ -357,14 +360,71 @@ uint samples_per_pixel_query()
     return _e1.total_samples;
 }
 
+uint laine_karras(uint x_1, uint seed_2)
+{
+    uint v = (uint)0;
+
+    v = (x_1 + seed_2);
+    uint _e4 = v;
+    uint _e5 = v;
+    v = (_e4 ^ (_e5 * 1817228412u));
+    uint _e9 = v;
+    uint _e10 = v;
+    v = (_e9 ^ (_e10 * 3090095698u));
+    uint _e14 = v;
+    uint _e15 = v;
+    v = (_e14 ^ (_e15 * 3350193720u));
+    uint _e19 = v;
+    uint _e20 = v;
+    v = (_e19 ^ (_e20 * 2367878886u));
+    uint _e24 = v;
+    return _e24;
+}
+
+uint sobol_second_reversed(uint i)
+{
+    uint f = (uint)0;
+
+    f = i;
+    uint _e2 = f;
+    uint _e3 = f;
+    f = (_e2 ^ ((_e3 >> 1u) & 1431655765u));
+    uint _e9 = f;
+    uint _e10 = f;
+    f = (_e9 ^ ((_e10 >> 2u) & 858993459u));
+    uint _e16 = f;
+    uint _e17 = f;
+    f = (_e16 ^ ((_e17 >> 4u) & 252645135u));
+    uint _e23 = f;
+    uint _e24 = f;
+    f = (_e23 ^ ((_e24 >> 8u) & 16711935u));
+    uint _e30 = f;
+    uint _e31 = f;
+    f = (_e30 ^ (_e31 >> (HALF_WORD_BITS & 31u)));
+    uint _e37 = f;
+    return _e37;
+}
+
 float rand_next()
 {
-    uint _e1 = rng_state;
-    uint s_2 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_2;
-    uint word_1 = (((s_2 >> (((s_2 >> 28u) + 4u) & 31u)) ^ s_2) * 277803737u);
-    uint r_3 = ((word_1 >> 22u) ^ word_1);
-    return (float((r_3 >> 8u)) * (1.0 / 16777216.0));
+    uint x_2 = (uint)0;
+
+    uint d_1 = rng_state;
+    rng_state = (d_1 + 1u);
+    uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 13u)), 13u)];
+    const uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 13u)), 13u)];
+    const uint _e24 = laine_karras(reversebits(_e22), _e16);
+    uint i_5 = reversebits(_e24);
+    x_2 = i_5;
+    if (((d_1 & 1u) != 0u)) {
+        const uint _e31 = sobol_second_reversed(i_5);
+        x_2 = _e31;
+    }
+    uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    uint _e45 = x_2;
+    const uint _e46 = laine_karras(_e45, scramble);
+    return (float((reversebits(_e46) >> 8u)) * (1.0 / 16777216.0));
 }
 
 float2 rand2_next()
@@ -374,9 +434,9 @@ float2 rand2_next()
     return float2(_e0, _e1);
 }
 
-float3 normalize_vec3f(float3 v)
+float3 normalize_vec3f(float3 v_1)
 {
-    return ((dot(v, v) >= 1.1754944e-38) ? normalize(v) : (0.0).xxx);
+    return ((dot(v_1, v_1) >= 1.1754944e-38) ? normalize(v_1) : (0.0).xxx);
 }
 
 Ray ConstructRay(float3 arg0, float arg1, float3 arg2, float arg3, uint arg4, uint arg5, uint arg6) {
@@ -391,7 +451,7 @@ Ray ConstructRay(float3 arg0, float arg1, float3 arg2, float arg3, uint arg4, ui
     return ret;
 }
 
-Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
+Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
 {
     float2 jitter = (float2)0;
 
@@ -404,22 +464,22 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_1, uint sample_1)
         jitter = _e10;
     }
     float2 _e12 = jitter;
-    float2 ndc = ((((float2(pixel_1) + _e12) / size_1) * (2.0).xx) - (1.0).xx);
+    float2 ndc = ((((float2(pixel_2) + _e12) / size_1) * (2.0).xx) - (1.0).xx);
     const float3 _e24 = normalize_vec3f((cam.look_at - cam.position));
     const float3 _e27 = normalize_vec3f(cross(_e24, cam.up));
     float3 up = cross(_e27, _e24);
-    float h_1 = tan((radians(cam.fov) * 0.5));
+    float h = tan((radians(cam.fov) * 0.5));
     float aspect = (size_1.x / size_1.y);
-    const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
+    const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h) * aspect)).xxx)) - (up * ((ndc.y * h)).xxx)));
     uint _e52 = F32_INF;
     const Ray ray_20 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
     return ray_20;
 }
 
-Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
+Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
-    const Ray _e4 = pinhole_ray(_e3, pixel_2, sample_2);
+    const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
     const Ray ray_21 = _e4;
     return ray_21;
 }
@@ -446,9 +506,9 @@ Ray to_object(GpuInstance inst, Ray ray)
 
     r = ray;
     float4 o = float4(ray.origin, 1.0);
-    float4 d_1 = float4(ray.dir, 0.0);
+    float4 d_2 = float4(ray.dir, 0.0);
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
+    r.dir = float3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
     const Ray ray_22 = _e25;
     return ray_22;
@@ -457,8 +517,8 @@ Ray to_object(GpuInstance inst, Ray ray)
 float3 safe_inverse(float3 d)
 {
     float3 tiny = (1.1754944e-38).xxx;
-    float3 s_3 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny) ? (s_3 * tiny) : d);
+    float3 s_2 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 dd = ((abs(d) < tiny) ? (s_2 * tiny) : d);
     return ((1.0).xxx / dd);
 }
 
@@ -475,19 +535,19 @@ TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, f
 
 TriangleRay prepare_triangle_ray(Ray ray_1)
 {
-    float3 d_2 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
-    float3 ad = abs(d_2);
+    float3 d_3 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
+    float3 ad = abs(d_3);
     bool y_gt = (ad.y > ad.x);
     uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
     uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
     uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
-    float dz = d_2[min(uint(min(kz, 2u)), 2u)];
+    float dz = d_3[min(uint(min(kz, 2u)), 2u)];
     bool flip = (dz < 0.0);
     uint kx = (flip ? ky0_ : kx0_);
     uint ky = (flip ? kx0_ : ky0_);
     uint3 inf_bits = (2139095040u).xxx;
-    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_2) & (2147483647u).xxx) < inf_bits)));
-    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_2[min(uint(min(kx, 2u)), 2u)] / dz), (d_2[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_3) & (2147483647u).xxx) < inf_bits)));
+    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_3[min(uint(min(kx, 2u)), 2u)] / dz), (d_3[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
     return triangleray;
 }
 
@@ -506,15 +566,15 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float cx = (c_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float cy = (c_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u = ((cx * by) - (cy * bx));
-    float v_1 = ((ax * cy) - (ay * cx));
+    float v_2 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
-    bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
-    float det = ((u + v_1) + w);
+    bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
+    float det = ((u + v_2) + w);
     float rcp_ = (1.0 / det);
-    float t_6 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_6 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_6 >= tmin)) && (t_6 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_7 ? float3(t_6, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_7 ? float3(t_6, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -788,9 +848,9 @@ float3 decode_octahedral(uint bits)
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         float3 _e21 = n_1;
-        float2 s_4 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
+        float2 s_3 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
         float3 _e29 = n_1;
-        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_4);
+        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_3);
         float _e37 = n_1.z;
         n_1 = float3(xy.x, xy.y, _e37);
     }
@@ -882,7 +942,7 @@ uint medium_at(float3 p_4, uint exclude)
 {
     uint inside = (uint)0;
     float nearest = (float)0;
-    uint i = (uint)0;
+    uint i_1 = (uint)0;
 
     if (!(HAS_MEDIA)) {
         return 0u;
@@ -895,22 +955,22 @@ uint medium_at(float3 p_4, uint exclude)
     uint _e23 = F32_INF;
     nearest = asfloat(_e23);
     uint end = frame_1.medium_count;
-    i = 0u;
+    i_1 = 0u;
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e59 = i;
-            i = (_e59 + 1u);
+            uint _e59 = i_1;
+            i_1 = (_e59 + 1u);
         }
         loop_init_1 = false;
-        uint _e29 = i;
+        uint _e29 = i_1;
         if ((_e29 >= end)) {
             break;
         }
-        uint _e32 = i;
+        uint _e32 = i_1;
         uint slot_4 = asuint(params.Load((frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))*4));
         if ((slot_4 != exclude)) {
             uint _e41 = F32_INF;
@@ -1118,9 +1178,9 @@ int naga_f2i32(float value) {
     return int(clamp(value, -2147483600.0, 2147483500.0));
 }
 
-int i32_from_f32_(float x_1)
+int i32_from_f32_(float x_3)
 {
-    return (((asuint(x_1) & 2147483647u) > 2139095040u) ? int(0) : naga_f2i32(min(max(x_1, -2147483600.0), 2147483500.0)));
+    return (((asuint(x_3) & 2147483647u) > 2139095040u) ? int(0) : naga_f2i32(min(max(x_3, -2147483600.0), 2147483500.0)));
 }
 
 int naga_div(int lhs, int rhs) {
@@ -1134,15 +1194,15 @@ int rem_i32_(int a_4, int b_5)
     return (by_zero_4 ? int(0) : asint(asuint(a_4) - asuint(asint(asuint(divisor_4) * asuint(naga_div(a_4, divisor_4))))));
 }
 
-int wrap_texel(int x_2, int n_3, uint mode)
+int wrap_texel(int x_4, int n_3, uint mode)
 {
-    const int _e3 = rem_i32_(x_2, n_3);
+    const int _e3 = rem_i32_(x_4, n_3);
     const int _e5 = rem_i32_(asint(asuint(_e3) + asuint(n_3)), n_3);
-    const int _e8 = rem_i32_(x_2, asint(asuint(int(2)) * asuint(n_3)));
+    const int _e8 = rem_i32_(x_4, asint(asuint(int(2)) * asuint(n_3)));
     const int _e14 = rem_i32_(asint(asuint(_e8) + asuint(asint(asuint(int(2)) * asuint(n_3)))), asint(asuint(int(2)) * asuint(n_3)));
     int mirror = ((_e14 >= n_3) ? asint(asuint(asint(asuint(asint(asuint(int(2)) * asuint(n_3))) - asuint(int(1)))) - asuint(_e14)) : _e14);
     int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5);
-    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_2, int(0)), asint(asuint(n_3) - asuint(int(1)))) : wrapped);
+    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_4, int(0)), asint(asuint(n_3) - asuint(int(1)))) : wrapped);
 }
 
 float srgb_channel(float c_2)
@@ -1189,10 +1249,10 @@ float4 sample_texture(uint t_1, float2 uv)
     uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
     float2 q_3 = (uv * float2(float(wi), float(hi_1)));
     float2 p_7 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_3) : (q_3 - (0.5).xx));
-    float2 f_1 = floor(p_7);
-    float2 fr = (p_7 - f_1);
-    const int _e47 = i32_from_f32_(f_1.x);
-    const int _e49 = i32_from_f32_(f_1.y);
+    float2 f_2 = floor(p_7);
+    float2 fr = (p_7 - f_2);
+    const int _e47 = i32_from_f32_(f_2.x);
+    const int _e49 = i32_from_f32_(f_2.y);
     const int _e50 = wrap_texel(_e47, wi, mu);
     uint x0_ = uint(_e50);
     const int _e54 = wrap_texel(asint(asuint(_e47) + asuint(int(1))), wi, mu);
@@ -1241,20 +1301,20 @@ PointLight load_PointLight(uint offset_5)
     return pointlight;
 }
 
-float3 step_toward(float3 x_3, float3 s)
+float3 step_toward(float3 x_5, float3 s)
 {
-    uint3 bits_1 = asuint(x_3);
-    bool3 up_1 = ((sign(x_3) * sign(s)) > (0.0).xxx);
+    uint3 bits_1 = asuint(x_5);
+    bool3 up_1 = ((sign(x_5) * sign(s)) > (0.0).xxx);
     float3 stepped = asfloat((up_1 ? (bits_1 + (1u).xxx) : (bits_1 - (1u).xxx)));
     float3 from_zero = ((s > (0.0).xxx) ? (1.1754944e-38).xxx : (-1.1754944e-38).xxx);
-    float3 moved = ((x_3 == (0.0).xxx) ? from_zero : stepped);
-    return (!((s == (0.0).xxx)) ? moved : x_3);
+    float3 moved = ((x_5 == (0.0).xxx) ? from_zero : stepped);
+    return (!((s == (0.0).xxx)) ? moved : x_5);
 }
 
 float3 offset_origin(float3 p_5, float3 n_4, float error)
 {
-    float d_3 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    float3 offset_10 = (n_4 * (d_3).xxx);
+    float d_4 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
+    float3 offset_10 = (n_4 * (d_4).xxx);
     const float3 _e17 = step_toward((p_5 + offset_10), offset_10);
     return _e17;
 }
@@ -1332,14 +1392,14 @@ LightSample dispatch_light(uint type_id_2, uint offset_6, float3 position_3, flo
     return lightsample_1;
 }
 
-LightSample sample_light_query(uint i_1, float3 position_4, float3 normal_4)
+LightSample sample_light_query(uint i_2, float3 position_4, float3 normal_4)
 {
     FrameUniforms frame_4 = frame;
-    if ((i_1 >= frame_4.light_count)) {
+    if ((i_2 >= frame_4.light_count)) {
         const LightSample lightsample_2 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_2;
     }
-    uint entry = (frame_4.light_table + (i_1 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     uint _e22 = asuint(params.Load(entry*4));
     uint _e27 = asuint(params.Load((entry + 1u)*4));
     const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
@@ -1350,37 +1410,37 @@ LightSample sample_light_query(uint i_1, float3 position_4, float3 normal_4)
 float3 blinn_phong_shade(BlinnPhong m, Ray ray_12, Hit hit_2)
 {
     float3 color = (float3)0;
-    uint i_2 = (uint)0;
+    uint i_3 = (uint)0;
 
     const float3 _e3 = shading_normal(ray_12, hit_2);
     const float3 _e5 = normalize_vec3f(ray_12.dir);
-    float3 v_2 = -(_e5);
+    float3 v_3 = -(_e5);
     const float4 _e12 = sample_texture(m.texture_, (hit_2.uv * m.uv_scale));
     float3 kd = (m.diffuse * _e12.xyz);
-    float s_5 = max(m.shininess, 0.0);
-    float norm = ((s_5 + 8.0) * (INV_PI / 8.0));
+    float s_4 = max(m.shininess, 0.0);
+    float norm = ((s_4 + 8.0) * (INV_PI / 8.0));
     color = (m.ambient * kd);
     const uint _e28 = light_count_query();
-    i_2 = 0u;
+    i_3 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e61 = i_2;
-            i_2 = (_e61 + 1u);
+            uint _e61 = i_3;
+            i_3 = (_e61 + 1u);
         }
         loop_init_2 = false;
-        uint _e30 = i_2;
+        uint _e30 = i_3;
         if ((_e30 >= _e28)) {
             break;
         }
-        uint _e32 = i_2;
+        uint _e32 = i_3;
         const LightSample _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal);
         float ndl = max(dot(_e3, _e35.dir), 0.0);
-        const float3 _e42 = normalize_vec3f((_e35.dir + v_2));
-        float highlight = (pow(max(dot(_e3, _e42), 0.0), s_5) * norm);
+        const float3 _e42 = normalize_vec3f((_e35.dir + v_3));
+        float highlight = (pow(max(dot(_e3, _e42), 0.0), s_4) * norm);
         float3 _e48 = color;
         color = (_e48 + ((_e35.radiance * (ndl).xxx) * ((kd * (INV_PI).xxx) + (m.specular * (highlight).xxx))));
     }
@@ -1498,8 +1558,8 @@ float3 trace(Ray camera_ray)
     float3 radiance_3 = (float3)0;
     float t_5 = (float)0;
     Hit hit_6 = (Hit)0;
-    Frame f = (Frame)0;
-    uint i_3 = (uint)0;
+    Frame f_1 = (Frame)0;
+    uint i_4 = (uint)0;
     uint medium = (uint)0;
 
     if (!(HAS_SECONDARY_RAYS)) {
@@ -1598,33 +1658,33 @@ float3 trace(Ray camera_ray)
                         Hit _e142 = hit_6;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_9, 0u);
-                        i_3 = 0u;
+                        f_1 = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_9, 0u);
+                        i_4 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
                         bool loop_init_3 = true;
                         while(true) {
                             if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
                             loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                             if (!loop_init_3) {
-                                uint _e175 = i_3;
-                                i_3 = (_e175 + 1u);
+                                uint _e175 = i_4;
+                                i_4 = (_e175 + 1u);
                             }
                             loop_init_3 = false;
-                            uint _e155 = i_3;
+                            uint _e155 = i_4;
                             if ((_e155 >= n_9)) {
                                 break;
                             }
-                            uint _e158 = i_3;
-                            uint _e162 = i_3;
+                            uint _e158 = i_4;
+                            uint _e162 = i_4;
                             float3 _e165 = spawn_dirs[min(uint(_e162), 0u)];
-                            f.dirs[min(uint(min(_e158, 0u)), 0u)] = _e165;
-                            uint _e167 = i_3;
-                            uint _e171 = i_3;
+                            f_1.dirs[min(uint(min(_e158, 0u)), 0u)] = _e165;
+                            uint _e167 = i_4;
+                            uint _e171 = i_4;
                             float3 _e174 = spawn_weights[min(uint(_e171), 0u)];
-                            f.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
+                            f_1.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
                         }
                         uint _e178 = depth;
-                        Frame _e182 = f;
+                        Frame _e182 = f_1;
                         stack[min(uint(min(_e178, 0u)), 0u)] = _e182;
                         uint _e183 = depth;
                         depth = (_e183 + 1u);
@@ -1672,11 +1732,11 @@ float3 trace(Ray camera_ray)
         uint _e241 = stack[min(uint(min(top_1, 0u)), 0u)].next;
         uint _e246 = stack[min(uint(min(top_1, 0u)), 0u)].count;
         if ((_e241 < _e246)) {
-            uint i_4 = stack[min(uint(min(top_1, 0u)), 0u)].next;
-            stack[min(uint(min(top_1, 0u)), 0u)].next = (i_4 + 1u);
+            uint i_6 = stack[min(uint(min(top_1, 0u)), 0u)].next;
+            stack[min(uint(min(top_1, 0u)), 0u)].next = (i_6 + 1u);
             Ray parent = stack[min(uint(min(top_1, 0u)), 0u)].ray;
             Hit hit_9 = stack[min(uint(min(top_1, 0u)), 0u)].hit;
-            float3 dir_5 = stack[min(uint(min(top_1, 0u)), 0u)].dirs[min(uint(min(i_4, 0u)), 0u)];
+            float3 dir_5 = stack[min(uint(min(top_1, 0u)), 0u)].dirs[min(uint(min(i_6, 0u)), 0u)];
             medium = parent.medium;
             float _e283 = stack[min(uint(min(top_1, 0u)), 0u)].error;
             const float3 _e284 = spawn_origin(hit_9, _e283, dir_5);
@@ -1702,9 +1762,9 @@ float3 trace(Ray camera_ray)
     return ZeroValuefloat3();
 }
 
-bool3 is_finite_vec3f(float3 x_4)
+bool3 is_finite_vec3f(float3 x_6)
 {
-    return ((asuint(x_4) & (2147483647u).xxx) < (2139095040u).xxx);
+    return ((asuint(x_6) & (2147483647u).xxx) < (2139095040u).xxx);
 }
 
 float3 finite_or_zero(float3 c_4)
@@ -1713,7 +1773,7 @@ float3 finite_or_zero(float3 c_4)
     return (_e3 ? c_4 : (0.0).xxx);
 }
 
-void render_pixel(uint2 pixel_3)
+void render_pixel(uint2 pixel_4)
 {
     float3 sum = (float3)0;
     uint bad = (uint)0;
@@ -1741,9 +1801,9 @@ void render_pixel(uint2 pixel_3)
             break;
         }
         uint _e18 = s_1;
-        uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_3, sample_3, frame_5.seed);
-        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_4, sample_4, frame_5.seed);
+        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
         ray_19 = _e23;
         ray_19.depth = 0u;
         ray_19.kind = RAY_CAMERA;
@@ -1770,10 +1830,10 @@ void render_pixel(uint2 pixel_3)
     float4 _e62 = float4(_e59, float(frame_5.samples_per_pass));
     uint _e63 = bad;
     if ((tile_2.frame == 0u)) {
-        accum.Store4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16, asuint(_e62));
+        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint(_e62));
     } else {
-        float4 _e69 = asfloat(accum.Load4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16));
-        accum.Store4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16, asuint((_e69 + _e62)));
+        float4 _e69 = asfloat(accum.Load4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16));
+        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint((_e69 + _e62)));
     }
     if ((_e63 > 0u)) {
         counters.InterlockedAdd(0, _e63);

@@ -147,7 +147,10 @@ const uint WORKGROUP_WIDTH = 8u;
 const uint WORKGROUP_HEIGHT = 8u;
 const uint NO_HIT = 4294967295u;
 const uint SCATTER = 1000003u;
+const uint SCRATCH_RNG_INDEX = 12u;
+const uint SCRATCH_RNG_SEED = 13u;
 const uint SUPERSAMPLING_GRID = 2u;
+const uint HALF_WORD_BITS = 16u;
 const uint RAY_CAMERA = 0u;
 const bool HAS_MEDIA = false;
 const uint MEDIUM_ENTRY_STRIDE = 1u;
@@ -189,17 +192,19 @@ layout(std140, binding = 1) uniform TileParams_block_0Compute { TileParams _grou
 
 layout(std140, binding = 0) uniform FrameUniforms_block_1Compute { FrameUniforms _group_0_binding_0_cs; };
 
+uint scratch[14] = uint[14](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+
 uint rng_state = 0u;
 
-layout(std430, binding = 6) readonly buffer type_4_block_2Compute { uint _group_0_binding_6_cs[]; };
+layout(std430, binding = 6) readonly buffer type_5_block_2Compute { uint _group_0_binding_6_cs[]; };
 
 uint F32_INF = 2139095040u;
 
-layout(std430, binding = 3) readonly buffer type_8_block_3Compute { GpuInstance _group_0_binding_3_cs[]; };
+layout(std430, binding = 3) readonly buffer type_9_block_3Compute { GpuInstance _group_0_binding_3_cs[]; };
 
-layout(std430, binding = 2) readonly buffer type_9_block_4Compute { GpuNode _group_0_binding_2_cs[]; };
+layout(std430, binding = 2) readonly buffer type_10_block_4Compute { GpuNode _group_0_binding_2_cs[]; };
 
-layout(std430, binding = 4) readonly buffer type_10_block_5Compute { vec4 _group_0_binding_4_cs[]; };
+layout(std430, binding = 4) readonly buffer type_11_block_5Compute { vec4 _group_0_binding_4_cs[]; };
 
 uint traversal_stack[67] = uint[67](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
@@ -207,11 +212,11 @@ uint F32_NEG_INF = 4286578688u;
 
 float hit_error = 0.0;
 
-layout(std430, binding = 5) readonly buffer type_16_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
+layout(std430, binding = 5) readonly buffer type_17_block_6Compute { uvec4 _group_0_binding_5_cs[]; };
 
 uint ray_count = 0u;
 
-layout(std430, binding = 7) readonly buffer type_4_block_7Compute { uint _group_0_binding_7_cs[]; };
+layout(std430, binding = 7) readonly buffer type_5_block_7Compute { uint _group_0_binding_7_cs[]; };
 
 vec3 spawn_dirs[1] = vec3[1](vec3(0.0));
 
@@ -219,9 +224,9 @@ vec3 spawn_weights[1] = vec3[1](vec3(0.0));
 
 uint spawn_count = 0u;
 
-layout(std430, binding = 9) buffer type_22_block_8Compute { uint _group_0_binding_9_cs[]; };
+layout(std430, binding = 9) buffer type_23_block_8Compute { uint _group_0_binding_9_cs[]; };
 
-layout(std430, binding = 8) buffer type_10_block_9Compute { vec4 _group_0_binding_8_cs[]; };
+layout(std430, binding = 8) buffer type_11_block_9Compute { vec4 _group_0_binding_8_cs[]; };
 
 
 uvec2 div_vec2u(uvec2 a, uvec2 b) {
@@ -268,24 +273,23 @@ uvec2 scattered_local(uvec2 id) {
 }
 
 uint pcg_hash(uint x) {
-    uint state = ((x * 747796405u) + 2891336453u);
-    uint word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    uint state_1 = ((x * 747796405u) + 2891336453u);
+    uint word = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
     return ((word >> 22u) ^ word);
 }
 
-void rng_seed(uvec2 pixel, uint sample_, uint seed) {
-    uint h = 0u;
-    uint _e5 = pcg_hash(seed);
-    uint _e7 = pcg_hash((sample_ ^ _e5));
-    uint _e9 = pcg_hash((pixel.y ^ _e7));
-    uint _e11 = pcg_hash((pixel.x ^ _e9));
-    h = _e11;
-    uint _e13 = h;
-    if ((_e13 == 0u)) {
-        h = 1u;
-    }
-    uint _e17 = h;
-    rng_state = _e17;
+void rng_resume(uvec2 pixel, uint sample_, uint seed, uint state) {
+    scratch[min(SCRATCH_RNG_INDEX, 13u)] = sample_;
+    uint _e12 = pcg_hash(seed);
+    uint _e14 = pcg_hash((pixel.y ^ _e12));
+    uint _e16 = pcg_hash((pixel.x ^ _e14));
+    scratch[min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    rng_state = state;
+    return;
+}
+
+void rng_seed(uvec2 pixel_1, uint sample_1, uint seed_1) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u);
     return;
 }
 
@@ -308,13 +312,65 @@ uvec2 image_size_query() {
     return _e1.image_size;
 }
 
+uint laine_karras(uint x_1, uint seed_2) {
+    uint v = 0u;
+    v = (x_1 + seed_2);
+    uint _e4 = v;
+    uint _e5 = v;
+    v = (_e4 ^ (_e5 * 1817228412u));
+    uint _e9 = v;
+    uint _e10 = v;
+    v = (_e9 ^ (_e10 * 3090095698u));
+    uint _e14 = v;
+    uint _e15 = v;
+    v = (_e14 ^ (_e15 * 3350193720u));
+    uint _e19 = v;
+    uint _e20 = v;
+    v = (_e19 ^ (_e20 * 2367878886u));
+    uint _e24 = v;
+    return _e24;
+}
+
+uint sobol_second_reversed(uint i) {
+    uint f = 0u;
+    f = i;
+    uint _e2 = f;
+    uint _e3 = f;
+    f = (_e2 ^ ((_e3 >> 1u) & 1431655765u));
+    uint _e9 = f;
+    uint _e10 = f;
+    f = (_e9 ^ ((_e10 >> 2u) & 858993459u));
+    uint _e16 = f;
+    uint _e17 = f;
+    f = (_e16 ^ ((_e17 >> 4u) & 252645135u));
+    uint _e23 = f;
+    uint _e24 = f;
+    f = (_e23 ^ ((_e24 >> 8u) & 16711935u));
+    uint _e30 = f;
+    uint _e31 = f;
+    f = (_e30 ^ (_e31 >> (HALF_WORD_BITS & 31u)));
+    uint _e37 = f;
+    return _e37;
+}
+
 float rand_next() {
-    uint _e1 = rng_state;
-    uint s_3 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_3;
-    uint word_1 = (((s_3 >> (((s_3 >> 28u) + 4u) & 31u)) ^ s_3) * 277803737u);
-    uint r_4 = ((word_1 >> 22u) ^ word_1);
-    return (float((r_4 >> 8u)) * (1.0 / 16777216.0));
+    uint x_2 = 0u;
+    uint d_1 = rng_state;
+    rng_state = (d_1 + 1u);
+    uint _e10 = scratch[min(SCRATCH_RNG_SEED, 13u)];
+    uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 13u)];
+    uint _e24 = laine_karras(bitfieldReverse(_e22), _e16);
+    uint i_7 = bitfieldReverse(_e24);
+    x_2 = i_7;
+    if (((d_1 & 1u) != 0u)) {
+        uint _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    uint _e45 = x_2;
+    uint _e46 = laine_karras(_e45, scramble);
+    return (float((bitfieldReverse(_e46) >> 8u)) * (1.0 / 16777216.0));
 }
 
 vec2 rand2_next() {
@@ -323,33 +379,33 @@ vec2 rand2_next() {
     return vec2(_e0, _e1);
 }
 
-vec3 normalize_vec3f(vec3 v) {
-    return ((dot(v, v) >= 1.1754944e-38) ? normalize(v) : vec3(0.0));
+vec3 normalize_vec3f(vec3 v_1) {
+    return ((dot(v_1, v_1) >= 1.1754944e-38) ? normalize(v_1) : vec3(0.0));
 }
 
-Ray supersampled_ray(SupersampledPinhole cam, uvec2 pixel_1, uint sample_1) {
+Ray supersampled_ray(SupersampledPinhole cam, uvec2 pixel_2, uint sample_2) {
     uvec2 _e3 = image_size_query();
     vec2 size_1 = vec2(_e3);
-    uint _e8 = rem_u32_(sample_1, (SUPERSAMPLING_GRID * SUPERSAMPLING_GRID));
+    uint _e8 = rem_u32_(sample_2, (SUPERSAMPLING_GRID * SUPERSAMPLING_GRID));
     uint _e10 = rem_u32_(_e8, SUPERSAMPLING_GRID);
     uint _e13 = div_u32_(_e8, SUPERSAMPLING_GRID);
     vec2 stratum = vec2(float(_e10), float(_e13));
     vec2 _e16 = rand2_next();
     vec2 offset_13 = ((stratum + _e16) / vec2(float(SUPERSAMPLING_GRID)));
-    vec2 ndc = ((((vec2(pixel_1) + offset_13) / size_1) * vec2(2.0)) - vec2(1.0));
+    vec2 ndc = ((((vec2(pixel_2) + offset_13) / size_1) * vec2(2.0)) - vec2(1.0));
     vec3 _e34 = normalize_vec3f((cam.look_at - cam.position));
     vec3 _e37 = normalize_vec3f(cross(_e34, cam.up));
     vec3 up = cross(_e37, _e34);
-    float h_1 = tan((radians(cam.fov) * 0.5));
+    float h = tan((radians(cam.fov) * 0.5));
     float aspect = (size_1.x / size_1.y);
-    vec3 _e58 = normalize_vec3f(((_e34 + (_e37 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
+    vec3 _e58 = normalize_vec3f(((_e34 + (_e37 * vec3(((ndc.x * h) * aspect)))) - (up * vec3((ndc.y * h)))));
     uint _e62 = F32_INF;
     return Ray(cam.position, 0.0, _e58, uintBitsToFloat(_e62), 0u, 0u, 0u);
 }
 
-Ray dispatch_ray_generation(uint type_id, uint offset_1, uvec2 pixel_2, uint sample_2) {
+Ray dispatch_ray_generation(uint type_id, uint offset_1, uvec2 pixel_3, uint sample_3) {
     SupersampledPinhole _e3 = load_SupersampledPinhole(offset_1);
-    Ray _e4 = supersampled_ray(_e3, pixel_2, sample_2);
+    Ray _e4 = supersampled_ray(_e3, pixel_3, sample_3);
     return _e4;
 }
 
@@ -361,34 +417,34 @@ Ray to_object(GpuInstance inst, Ray ray) {
     Ray r = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     r = ray;
     vec4 o = vec4(ray.origin, 1.0);
-    vec4 d_1 = vec4(ray.dir, 0.0);
+    vec4 d_2 = vec4(ray.dir, 0.0);
     r.origin = vec3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = vec3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
+    r.dir = vec3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
     return _e25;
 }
 
 vec3 safe_inverse(vec3 d) {
     vec3 tiny = vec3(1.1754944e-38);
-    vec3 s_4 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
-    vec3 dd = mix(d, (s_4 * tiny), lessThan(abs(d), tiny));
+    vec3 s_3 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
+    vec3 dd = mix(d, (s_3 * tiny), lessThan(abs(d), tiny));
     return (vec3(1.0) / dd);
 }
 
 TriangleRay prepare_triangle_ray(Ray ray_1) {
-    vec3 d_2 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
-    vec3 ad = abs(d_2);
+    vec3 d_3 = mix(ray_1.dir, vec3(0.0), lessThan(abs(ray_1.dir), vec3(1.1754944e-38)));
+    vec3 ad = abs(d_3);
     bool y_gt = (ad.y > ad.x);
     uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
     uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
     uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
-    float dz = d_2[min(kz, 2u)];
+    float dz = d_3[min(kz, 2u)];
     bool flip = (dz < 0.0);
     uint kx = (flip ? ky0_ : kx0_);
     uint ky = (flip ? kx0_ : ky0_);
     uvec3 inf_bits = uvec3(2139095040u);
-    bool finite = (all(lessThan((floatBitsToUint(ray_1.origin) & uvec3(2147483647u)), inf_bits)) && all(lessThan((floatBitsToUint(d_2) & uvec3(2147483647u)), inf_bits)));
-    return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_2[min(kx, 2u)] / dz), (d_2[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    bool finite = (all(lessThan((floatBitsToUint(ray_1.origin) & uvec3(2147483647u)), inf_bits)) && all(lessThan((floatBitsToUint(d_3) & uvec3(2147483647u)), inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
 }
 
 vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
@@ -405,15 +461,15 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     float cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
     float cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
-    float v_1 = ((ax * cy) - (ay * cx));
+    float v_2 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
-    bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
-    float det = ((u + v_1) + w);
+    bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
+    float det = ((u + v_2) + w);
     float rcp = (1.0 / det);
-    float t_7 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    float t_7 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
     bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_7 >= tmin)) && (t_7 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_7 ? vec3(t_7, (v_1 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_7 ? vec3(t_7, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
@@ -583,7 +639,7 @@ vec3 node_frame_hi(GpuNode header) {
     return _e5;
 }
 
-BvhNode mesh_node_query(uint m, uint i) {
+BvhNode mesh_node_query(uint m, uint i_1) {
     vec3 lo_1 = vec3(0.0);
     vec3 hi_1 = vec3(0.0);
     uint reference = 0u;
@@ -594,11 +650,11 @@ BvhNode mesh_node_query(uint m, uint i) {
     vec3 _e10 = node_frame_hi(header_2);
     hi_1 = _e10;
     reference = header_2.a;
-    if ((i >= 2u)) {
-        GpuNode n_9 = _group_0_binding_2_cs[(base_2 + (i >> 1u))];
+    if ((i_1 >= 2u)) {
+        GpuNode n_9 = _group_0_binding_2_cs[(base_2 + (i_1 >> 1u))];
         q_1 = floatBitsToUint(n_9.min_);
         reference = n_9.a;
-        if (((i & 1u) != 0u)) {
+        if (((i_1 & 1u) != 0u)) {
             q_1 = floatBitsToUint(n_9.max_);
             reference = n_9.b;
         }
@@ -651,9 +707,9 @@ float bvh_mesh_enter(Ray ray_6, BvhNode n_1, float tmax_4) {
     return (((_e5.x <= _e5.y) && (_e5.x <= tmax_4)) ? _e5.x : uintBitsToFloat(_e7));
 }
 
-Triangle mesh_triangle_query(uint m_1, uint i_1) {
+Triangle mesh_triangle_query(uint m_1, uint i_2) {
     uint _e6 = _group_0_binding_6_cs[(m_1 + 1u)];
-    uint slot_4 = (_e6 + i_1);
+    uint slot_4 = (_e6 + i_2);
     vec4 _e12 = _group_0_binding_4_cs[(slot_4 * 3u)];
     vec4 _e20 = _group_0_binding_4_cs[((slot_4 * 3u) + 1u)];
     vec4 _e28 = _group_0_binding_4_cs[((slot_4 * 3u) + 2u)];
@@ -685,15 +741,15 @@ Intersection intersect_triangle(Ray ray_7, Triangle tri) {
     float _e86 = (_e80[kx_1] - (sx * _e80[kz_1]));
     float _e87 = (_e80[ky_1] - (sy * _e80[kz_1]));
     float u_1 = ((_e86 * _e78) - (_e87 * _e77));
-    float v_2 = ((_e68 * _e87) - (_e69 * _e86));
+    float v_3 = ((_e68 * _e87) - (_e69 * _e86));
     float w_1 = ((_e77 * _e69) - (_e78 * _e68));
-    float det_1 = ((u_1 + v_2) + w_1);
+    float det_1 = ((u_1 + v_3) + w_1);
     float _e112 = (1.0 / det_1);
-    float t_8 = ((((u_1 * (sz * _e62[kz_1])) + (v_2 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
-    bool hit_8 = (((((all(lessThan((floatBitsToUint(ray_7.origin) & uvec3(2147483647u)), _e10)) && all(lessThan((floatBitsToUint(ray_7.dir) & uvec3(2147483647u)), _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_8 >= ray_7.tmin) && (t_8 <= ray_7.tmax)));
+    float t_8 = ((((u_1 * (sz * _e62[kz_1])) + (v_3 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
+    bool hit_8 = (((((all(lessThan((floatBitsToUint(ray_7.origin) & uvec3(2147483647u)), _e10)) && all(lessThan((floatBitsToUint(ray_7.dir) & uvec3(2147483647u)), _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_8 >= ray_7.tmin) && (t_8 <= ray_7.tmax)));
     vec3 _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     uint _e137 = F32_INF;
-    return Intersection((hit_8 ? t_8 : uintBitsToFloat(_e137)), (hit_8 ? _e132 : vec3(0.0, 0.0, 1.0)), (hit_8 ? vec2((v_2 * _e112), (w_1 * _e112)) : vec2(0.0)));
+    return Intersection((hit_8 ? t_8 : uintBitsToFloat(_e137)), (hit_8 ? _e132 : vec3(0.0, 0.0, 1.0)), (hit_8 ? vec2((v_3 * _e112), (w_1 * _e112)) : vec2(0.0)));
 }
 
 Intersection bvh_mesh_intersect(BvhMesh g, Ray ray_8) {
@@ -816,10 +872,10 @@ Sphere load_Sphere(uint offset_3) {
 
 Intersection sphere_intersect(Sphere s, Ray ray_9) {
     float t = 0.0;
-    vec3 f_1 = (ray_9.origin - s.center);
+    vec3 f_2 = (ray_9.origin - s.center);
     float a_6 = dot(ray_9.dir, ray_9.dir);
-    float b_7 = -(dot(f_1, ray_9.dir));
-    vec3 l_1 = (f_1 + (ray_9.dir * vec3((b_7 / a_6))));
+    float b_7 = -(dot(f_2, ray_9.dir));
+    vec3 l_1 = (f_2 + (ray_9.dir * vec3((b_7 / a_6))));
     float r2_ = (s.radius * s.radius);
     float disc = (a_6 * (r2_ - dot(l_1, l_1)));
     if ((!((disc >= 0.0)) || !((a_6 > 0.0)))) {
@@ -827,7 +883,7 @@ Intersection sphere_intersect(Sphere s, Ray ray_9) {
         return Intersection(uintBitsToFloat(_e30), vec3(0.0, 0.0, 1.0), vec2(0.0));
     }
     float q_2 = (b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
-    float t0_1 = ((dot(f_1, f_1) - r2_) / q_2);
+    float t0_1 = ((dot(f_2, f_2) - r2_) / q_2);
     float t1_1 = (q_2 / a_6);
     t = min(t0_1, t1_1);
     float _e52 = t;
@@ -929,9 +985,9 @@ vec3 decode_octahedral(uint bits) {
     float _e14 = n_2.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n_2;
-        vec2 s_5 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
+        vec2 s_4 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
         vec3 _e29 = n_2;
-        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_5);
+        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_4);
         float _e37 = n_2.z;
         n_2 = vec3(xy.x, xy.y, _e37);
     }
@@ -1002,7 +1058,7 @@ Hit finish_hit(Ray ray_12, Candidate c_1) {
 uint medium_at(vec3 p_4, uint exclude) {
     uint inside = 0u;
     float nearest = 0.0;
-    uint i_2 = 0u;
+    uint i_3 = 0u;
     if (!(HAS_MEDIA)) {
         return 0u;
     }
@@ -1014,19 +1070,19 @@ uint medium_at(vec3 p_4, uint exclude) {
     uint _e23 = F32_INF;
     nearest = uintBitsToFloat(_e23);
     uint end_1 = frame_1.medium_count;
-    i_2 = 0u;
+    i_3 = 0u;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e59 = i_2;
-            i_2 = (_e59 + 1u);
+            uint _e59 = i_3;
+            i_3 = (_e59 + 1u);
         }
         loop_init_2 = false;
-        uint _e29 = i_2;
+        uint _e29 = i_3;
         if ((_e29 >= end_1)) {
             break;
         }
-        uint _e32 = i_2;
+        uint _e32 = i_3;
         uint slot_5 = _group_0_binding_6_cs[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if ((slot_5 != exclude)) {
             uint _e41 = F32_INF;
@@ -1149,8 +1205,8 @@ Skybox load_Skybox(uint offset_5) {
     return Skybox(_e5, uintBitsToFloat(_e10), uintBitsToFloat(_e16));
 }
 
-int i32_from_f32_(float x_1) {
-    return (((floatBitsToUint(x_1) & 2147483647u) > 2139095040u) ? 0 : int(min(max(x_1, -2147483600.0), 2147483500.0)));
+int i32_from_f32_(float x_3) {
+    return (((floatBitsToUint(x_3) & 2147483647u) > 2139095040u) ? 0 : int(min(max(x_3, -2147483600.0), 2147483500.0)));
 }
 
 int rem_i32_(int a_4, int b_4) {
@@ -1159,14 +1215,14 @@ int rem_i32_(int a_4, int b_4) {
     return (by_zero_4 ? 0 : (a_4 - (divisor_4 * (a_4 / divisor_4))));
 }
 
-int wrap_texel(int x_2, int n_4, uint mode) {
-    int _e3 = rem_i32_(x_2, n_4);
+int wrap_texel(int x_4, int n_4, uint mode) {
+    int _e3 = rem_i32_(x_4, n_4);
     int _e5 = rem_i32_((_e3 + n_4), n_4);
-    int _e8 = rem_i32_(x_2, (2 * n_4));
+    int _e8 = rem_i32_(x_4, (2 * n_4));
     int _e14 = rem_i32_((_e8 + (2 * n_4)), (2 * n_4));
     int mirror = ((_e14 >= n_4) ? (((2 * n_4) - 1) - _e14) : _e14);
     int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5);
-    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_2, 0), (n_4 - 1)) : wrapped);
+    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_4, 0), (n_4 - 1)) : wrapped);
 }
 
 float srgb_channel(float c_2) {
@@ -1210,10 +1266,10 @@ vec4 sample_texture(uint t_2, vec2 uv) {
     uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
     vec2 q_5 = (uv * vec2(float(wi), float(hi_2)));
     vec2 p_7 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_5) : (q_5 - vec2(0.5)));
-    vec2 f_2 = floor(p_7);
-    vec2 fr = (p_7 - f_2);
-    int _e47 = i32_from_f32_(f_2.x);
-    int _e49 = i32_from_f32_(f_2.y);
+    vec2 f_3 = floor(p_7);
+    vec2 fr = (p_7 - f_3);
+    int _e47 = i32_from_f32_(f_3.x);
+    int _e49 = i32_from_f32_(f_3.y);
     int _e50 = wrap_texel(_e47, wi, mu);
     uint x0_ = uint(_e50);
     int _e54 = wrap_texel((_e47 + 1), wi, mu);
@@ -1286,18 +1342,18 @@ PointLight load_PointLight(uint offset_8) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
-vec3 step_toward(vec3 x_3, vec3 s_1) {
-    uvec3 bits_1 = floatBitsToUint(x_3);
-    bvec3 up_1 = greaterThan((sign(x_3) * sign(s_1)), vec3(0.0));
+vec3 step_toward(vec3 x_5, vec3 s_1) {
+    uvec3 bits_1 = floatBitsToUint(x_5);
+    bvec3 up_1 = greaterThan((sign(x_5) * sign(s_1)), vec3(0.0));
     vec3 stepped = uintBitsToFloat(mix((bits_1 - uvec3(1u)), (bits_1 + uvec3(1u)), up_1));
     vec3 from_zero = mix(vec3(-1.1754944e-38), vec3(1.1754944e-38), greaterThan(s_1, vec3(0.0)));
-    vec3 moved = mix(stepped, from_zero, equal(x_3, vec3(0.0)));
-    return mix(x_3, moved, not(equal(s_1, vec3(0.0))));
+    vec3 moved = mix(stepped, from_zero, equal(x_5, vec3(0.0)));
+    return mix(x_5, moved, not(equal(s_1, vec3(0.0))));
 }
 
 vec3 offset_origin(vec3 p_5, vec3 n_5, float error) {
-    float d_3 = ((2.0 * error) * ((abs(n_5.x) + abs(n_5.y)) + abs(n_5.z)));
-    vec3 offset_14 = (n_5 * vec3(d_3));
+    float d_4 = ((2.0 * error) * ((abs(n_5.x) + abs(n_5.y)) + abs(n_5.z)));
+    vec3 offset_14 = (n_5 * vec3(d_4));
     vec3 _e17 = step_toward((p_5 + offset_14), offset_14);
     return _e17;
 }
@@ -1357,12 +1413,12 @@ LightSample dispatch_light(uint type_id_3, uint offset_9, vec3 position_3, vec3 
     return _e4;
 }
 
-LightSample sample_light_query(uint i_3, vec3 position_4, vec3 normal_4) {
+LightSample sample_light_query(uint i_4, vec3 position_4, vec3 normal_4) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    if ((i_3 >= frame_4.light_count)) {
+    if ((i_4 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
-    uint entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     uint _e22 = _group_0_binding_6_cs[entry];
     uint _e27 = _group_0_binding_6_cs[(entry + 1u)];
     LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
@@ -1371,23 +1427,23 @@ LightSample sample_light_query(uint i_3, vec3 position_4, vec3 normal_4) {
 
 vec3 lambert_shade(Lambert m_2, Ray ray_18, Hit hit_2) {
     vec3 color = vec3(0.0);
-    uint i_4 = 0u;
+    uint i_5 = 0u;
     vec3 _e3 = shading_normal(ray_18, hit_2);
     color = vec3(0.0);
     uint _e8 = light_count_query();
-    i_4 = 0u;
+    i_5 = 0u;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e30 = i_4;
-            i_4 = (_e30 + 1u);
+            uint _e30 = i_5;
+            i_5 = (_e30 + 1u);
         }
         loop_init_3 = false;
-        uint _e10 = i_4;
+        uint _e10 = i_5;
         if ((_e10 >= _e8)) {
             break;
         }
-        uint _e12 = i_4;
+        uint _e12 = i_5;
         LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
         vec3 _e16 = color;
         color = (_e16 + (((m_2.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0.0))));
@@ -1469,8 +1525,8 @@ vec3 trace(Ray camera_ray) {
     vec3 radiance_3 = vec3(0.0);
     float t_6 = 0.0;
     Hit hit_6 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
-    Frame f = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
-    uint i_5 = 0u;
+    Frame f_1 = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
+    uint i_6 = 0u;
     uint medium = 0u;
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false);
@@ -1565,30 +1621,30 @@ vec3 trace(Ray camera_ray) {
                         Hit _e142 = hit_6;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_11, 0u);
-                        i_5 = 0u;
+                        f_1 = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_11, 0u);
+                        i_6 = 0u;
                         bool loop_init_4 = true;
                         while(true) {
                             if (!loop_init_4) {
-                                uint _e175 = i_5;
-                                i_5 = (_e175 + 1u);
+                                uint _e175 = i_6;
+                                i_6 = (_e175 + 1u);
                             }
                             loop_init_4 = false;
-                            uint _e155 = i_5;
+                            uint _e155 = i_6;
                             if ((_e155 >= n_11)) {
                                 break;
                             }
-                            uint _e158 = i_5;
-                            uint _e162 = i_5;
+                            uint _e158 = i_6;
+                            uint _e162 = i_6;
                             vec3 _e165 = spawn_dirs[_e162];
-                            f.dirs[min(_e158, 0u)] = _e165;
-                            uint _e167 = i_5;
-                            uint _e171 = i_5;
+                            f_1.dirs[min(_e158, 0u)] = _e165;
+                            uint _e167 = i_6;
+                            uint _e171 = i_6;
                             vec3 _e174 = spawn_weights[_e171];
-                            f.weights[min(_e167, 0u)] = _e174;
+                            f_1.weights[min(_e167, 0u)] = _e174;
                         }
                         uint _e178 = depth;
-                        Frame _e182 = f;
+                        Frame _e182 = f_1;
                         stack_1[min(_e178, 3u)] = _e182;
                         uint _e183 = depth;
                         depth = (_e183 + 1u);
@@ -1636,11 +1692,11 @@ vec3 trace(Ray camera_ray) {
         uint _e241 = stack_1[min(top_1, 3u)].next;
         uint _e246 = stack_1[min(top_1, 3u)].count;
         if ((_e241 < _e246)) {
-            uint i_6 = stack_1[min(top_1, 3u)].next;
-            stack_1[min(top_1, 3u)].next = (i_6 + 1u);
+            uint i_8 = stack_1[min(top_1, 3u)].next;
+            stack_1[min(top_1, 3u)].next = (i_8 + 1u);
             Ray parent = stack_1[min(top_1, 3u)].ray;
             Hit hit_9 = stack_1[min(top_1, 3u)].hit;
-            vec3 dir_6 = stack_1[min(top_1, 3u)].dirs[min(i_6, 0u)];
+            vec3 dir_6 = stack_1[min(top_1, 3u)].dirs[min(i_8, 0u)];
             medium = parent.medium;
             float _e283 = stack_1[min(top_1, 3u)].error;
             vec3 _e284 = spawn_origin(hit_9, _e283, dir_6);
@@ -1666,8 +1722,8 @@ vec3 trace(Ray camera_ray) {
     return vec3(0.0);
 }
 
-bvec3 is_finite_vec3f(vec3 x_4) {
-    return lessThan((floatBitsToUint(x_4) & uvec3(2147483647u)), uvec3(2139095040u));
+bvec3 is_finite_vec3f(vec3 x_6) {
+    return lessThan((floatBitsToUint(x_6) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
 vec3 finite_or_zero(vec3 c_4) {
@@ -1675,7 +1731,7 @@ vec3 finite_or_zero(vec3 c_4) {
     return mix(vec3(0.0), c_4, _e3);
 }
 
-void render_pixel(uvec2 pixel_3) {
+void render_pixel(uvec2 pixel_4) {
     vec3 sum = vec3(0.0);
     uint bad = 0u;
     uint s_2 = 0u;
@@ -1698,9 +1754,9 @@ void render_pixel(uvec2 pixel_3) {
             break;
         }
         uint _e18 = s_2;
-        uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_3, sample_3, frame_5.seed);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_4, sample_4, frame_5.seed);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
         ray_25 = _e23;
         ray_25.depth = 0u;
         ray_25.kind = RAY_CAMERA;
@@ -1727,10 +1783,10 @@ void render_pixel(uvec2 pixel_3) {
     vec4 _e62 = vec4(_e59, float(frame_5.samples_per_pass));
     uint _e63 = bad;
     if ((tile_2.frame == 0u)) {
-        _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = _e62;
+        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
     } else {
-        vec4 _e69 = _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)];
-        _group_0_binding_8_cs[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = (_e69 + _e62);
+        vec4 _e69 = _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
+        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
     }
     if ((_e63 > 0u)) {
         atomicAdd(_group_0_binding_9_cs[0], _e63);

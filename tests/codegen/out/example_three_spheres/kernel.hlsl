@@ -199,7 +199,10 @@ static const uint WORKGROUP_WIDTH = 8u;
 static const uint WORKGROUP_HEIGHT = 8u;
 static const uint NO_HIT = 4294967295u;
 static const uint SCATTER = 1000003u;
+static const uint SCRATCH_RNG_INDEX = 12u;
+static const uint SCRATCH_RNG_SEED = 13u;
 static const uint SUPERSAMPLING_GRID = 2u;
+static const uint HALF_WORD_BITS = 16u;
 static const uint RAY_CAMERA = 0u;
 static const bool HAS_MEDIA = false;
 static const uint MEDIUM_ENTRY_STRIDE = 1u;
@@ -239,6 +242,7 @@ static const uint RAY_SECONDARY = 1u;
 
 cbuffer tile : register(b1) { TileParams tile; }
 cbuffer frame : register(b0) { FrameUniforms frame; }
+static uint scratch[14] = (uint[14])0;
 static uint rng_state = (uint)0;
 ByteAddressBuffer params : register(t6);
 static uint F32_INF = 2139095040u;
@@ -323,26 +327,25 @@ uint2 scattered_local(uint2 id)
 
 uint pcg_hash(uint x)
 {
-    uint state = ((x * 747796405u) + 2891336453u);
-    uint word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    uint state_1 = ((x * 747796405u) + 2891336453u);
+    uint word = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
     return ((word >> 22u) ^ word);
 }
 
-void rng_seed(uint2 pixel, uint sample_, uint seed)
+void rng_resume(uint2 pixel, uint sample_, uint seed, uint state)
 {
-    uint h = (uint)0;
+    scratch[min(uint(min(SCRATCH_RNG_INDEX, 13u)), 13u)] = sample_;
+    const uint _e12 = pcg_hash(seed);
+    const uint _e14 = pcg_hash((pixel.y ^ _e12));
+    const uint _e16 = pcg_hash((pixel.x ^ _e14));
+    scratch[min(uint(min(SCRATCH_RNG_SEED, 13u)), 13u)] = _e16;
+    rng_state = state;
+    return;
+}
 
-    const uint _e5 = pcg_hash(seed);
-    const uint _e7 = pcg_hash((sample_ ^ _e5));
-    const uint _e9 = pcg_hash((pixel.y ^ _e7));
-    const uint _e11 = pcg_hash((pixel.x ^ _e9));
-    h = _e11;
-    uint _e13 = h;
-    if ((_e13 == 0u)) {
-        h = 1u;
-    }
-    uint _e17 = h;
-    rng_state = _e17;
+void rng_seed(uint2 pixel_1, uint sample_1, uint seed_1)
+{
+    rng_resume(pixel_1, sample_1, seed_1, 0u);
     return;
 }
 
@@ -377,14 +380,71 @@ uint2 image_size_query()
     return _e1.image_size;
 }
 
+uint laine_karras(uint x_1, uint seed_2)
+{
+    uint v = (uint)0;
+
+    v = (x_1 + seed_2);
+    uint _e4 = v;
+    uint _e5 = v;
+    v = (_e4 ^ (_e5 * 1817228412u));
+    uint _e9 = v;
+    uint _e10 = v;
+    v = (_e9 ^ (_e10 * 3090095698u));
+    uint _e14 = v;
+    uint _e15 = v;
+    v = (_e14 ^ (_e15 * 3350193720u));
+    uint _e19 = v;
+    uint _e20 = v;
+    v = (_e19 ^ (_e20 * 2367878886u));
+    uint _e24 = v;
+    return _e24;
+}
+
+uint sobol_second_reversed(uint i)
+{
+    uint f = (uint)0;
+
+    f = i;
+    uint _e2 = f;
+    uint _e3 = f;
+    f = (_e2 ^ ((_e3 >> 1u) & 1431655765u));
+    uint _e9 = f;
+    uint _e10 = f;
+    f = (_e9 ^ ((_e10 >> 2u) & 858993459u));
+    uint _e16 = f;
+    uint _e17 = f;
+    f = (_e16 ^ ((_e17 >> 4u) & 252645135u));
+    uint _e23 = f;
+    uint _e24 = f;
+    f = (_e23 ^ ((_e24 >> 8u) & 16711935u));
+    uint _e30 = f;
+    uint _e31 = f;
+    f = (_e30 ^ (_e31 >> (HALF_WORD_BITS & 31u)));
+    uint _e37 = f;
+    return _e37;
+}
+
 float rand_next()
 {
-    uint _e1 = rng_state;
-    uint s_3 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_3;
-    uint word_1 = (((s_3 >> (((s_3 >> 28u) + 4u) & 31u)) ^ s_3) * 277803737u);
-    uint r_4 = ((word_1 >> 22u) ^ word_1);
-    return (float((r_4 >> 8u)) * (1.0 / 16777216.0));
+    uint x_2 = (uint)0;
+
+    uint d_1 = rng_state;
+    rng_state = (d_1 + 1u);
+    uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 13u)), 13u)];
+    const uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 13u)), 13u)];
+    const uint _e24 = laine_karras(reversebits(_e22), _e16);
+    uint i_7 = reversebits(_e24);
+    x_2 = i_7;
+    if (((d_1 & 1u) != 0u)) {
+        const uint _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    uint _e45 = x_2;
+    const uint _e46 = laine_karras(_e45, scramble);
+    return (float((reversebits(_e46) >> 8u)) * (1.0 / 16777216.0));
 }
 
 float2 rand2_next()
@@ -394,9 +454,9 @@ float2 rand2_next()
     return float2(_e0, _e1);
 }
 
-float3 normalize_vec3f(float3 v)
+float3 normalize_vec3f(float3 v_1)
 {
-    return ((dot(v, v) >= 1.1754944e-38) ? normalize(v) : (0.0).xxx);
+    return ((dot(v_1, v_1) >= 1.1754944e-38) ? normalize(v_1) : (0.0).xxx);
 }
 
 Ray ConstructRay(float3 arg0, float arg1, float3 arg2, float arg3, uint arg4, uint arg5, uint arg6) {
@@ -411,32 +471,32 @@ Ray ConstructRay(float3 arg0, float arg1, float3 arg2, float arg3, uint arg4, ui
     return ret;
 }
 
-Ray supersampled_ray(SupersampledPinhole cam, uint2 pixel_1, uint sample_1)
+Ray supersampled_ray(SupersampledPinhole cam, uint2 pixel_2, uint sample_2)
 {
     const uint2 _e3 = image_size_query();
     float2 size_1 = float2(_e3);
-    const uint _e8 = rem_u32_(sample_1, (SUPERSAMPLING_GRID * SUPERSAMPLING_GRID));
+    const uint _e8 = rem_u32_(sample_2, (SUPERSAMPLING_GRID * SUPERSAMPLING_GRID));
     const uint _e10 = rem_u32_(_e8, SUPERSAMPLING_GRID);
     const uint _e13 = div_u32_(_e8, SUPERSAMPLING_GRID);
     float2 stratum = float2(float(_e10), float(_e13));
     const float2 _e16 = rand2_next();
     float2 offset_13 = ((stratum + _e16) / (float(SUPERSAMPLING_GRID)).xx);
-    float2 ndc = ((((float2(pixel_1) + offset_13) / size_1) * (2.0).xx) - (1.0).xx);
+    float2 ndc = ((((float2(pixel_2) + offset_13) / size_1) * (2.0).xx) - (1.0).xx);
     const float3 _e34 = normalize_vec3f((cam.look_at - cam.position));
     const float3 _e37 = normalize_vec3f(cross(_e34, cam.up));
     float3 up = cross(_e37, _e34);
-    float h_1 = tan((radians(cam.fov) * 0.5));
+    float h = tan((radians(cam.fov) * 0.5));
     float aspect = (size_1.x / size_1.y);
-    const float3 _e58 = normalize_vec3f(((_e34 + (_e37 * (((ndc.x * h_1) * aspect)).xxx)) - (up * ((ndc.y * h_1)).xxx)));
+    const float3 _e58 = normalize_vec3f(((_e34 + (_e37 * (((ndc.x * h) * aspect)).xxx)) - (up * ((ndc.y * h)).xxx)));
     uint _e62 = F32_INF;
     const Ray ray_26 = ConstructRay(cam.position, 0.0, _e58, asfloat(_e62), 0u, 0u, 0u);
     return ray_26;
 }
 
-Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_2, uint sample_2)
+Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const SupersampledPinhole _e3 = load_SupersampledPinhole(offset_1);
-    const Ray _e4 = supersampled_ray(_e3, pixel_2, sample_2);
+    const Ray _e4 = supersampled_ray(_e3, pixel_3, sample_3);
     const Ray ray_27 = _e4;
     return ray_27;
 }
@@ -463,9 +523,9 @@ Ray to_object(GpuInstance inst, Ray ray)
 
     r = ray;
     float4 o = float4(ray.origin, 1.0);
-    float4 d_1 = float4(ray.dir, 0.0);
+    float4 d_2 = float4(ray.dir, 0.0);
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = float3(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
+    r.dir = float3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
     const Ray ray_28 = _e25;
     return ray_28;
@@ -474,8 +534,8 @@ Ray to_object(GpuInstance inst, Ray ray)
 float3 safe_inverse(float3 d)
 {
     float3 tiny = (1.1754944e-38).xxx;
-    float3 s_4 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny) ? (s_4 * tiny) : d);
+    float3 s_3 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 dd = ((abs(d) < tiny) ? (s_3 * tiny) : d);
     return ((1.0).xxx / dd);
 }
 
@@ -492,19 +552,19 @@ TriangleRay ConstructTriangleRay(float3 arg0, uint arg1, uint arg2, uint arg3, f
 
 TriangleRay prepare_triangle_ray(Ray ray_1)
 {
-    float3 d_2 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
-    float3 ad = abs(d_2);
+    float3 d_3 = ((abs(ray_1.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_1.dir);
+    float3 ad = abs(d_3);
     bool y_gt = (ad.y > ad.x);
     uint kz = ((ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u));
     uint kx0_ = ((kz == 2u) ? 0u : (kz + 1u));
     uint ky0_ = ((kz >= 1u) ? (kz - 1u) : (kz + 2u));
-    float dz = d_2[min(uint(min(kz, 2u)), 2u)];
+    float dz = d_3[min(uint(min(kz, 2u)), 2u)];
     bool flip = (dz < 0.0);
     uint kx = (flip ? ky0_ : kx0_);
     uint ky = (flip ? kx0_ : ky0_);
     uint3 inf_bits = (2139095040u).xxx;
-    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_2) & (2147483647u).xxx) < inf_bits)));
-    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_2[min(uint(min(kx, 2u)), 2u)] / dz), (d_2[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
+    bool finite = (all(((asuint(ray_1.origin) & (2147483647u).xxx) < inf_bits)) && all(((asuint(d_3) & (2147483647u).xxx) < inf_bits)));
+    const TriangleRay triangleray = ConstructTriangleRay(ray_1.origin, kx, ky, kz, float3((d_3[min(uint(min(kx, 2u)), 2u)] / dz), (d_3[min(uint(min(ky, 2u)), 2u)] / dz), (1.0 / dz)), (finite && !((dz == 0.0))));
     return triangleray;
 }
 
@@ -523,15 +583,15 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float cx = (c_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float cy = (c_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u = ((cx * by) - (cy * bx));
-    float v_1 = ((ax * cy) - (ay * cx));
+    float v_2 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
-    bool outside = ((((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0)));
-    float det = ((u + v_1) + w);
+    bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
+    float det = ((u + v_2) + w);
     float rcp_ = (1.0 / det);
-    float t_7 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_1 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_7 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_7 >= tmin)) && (t_7 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_7 ? float3(t_7, (v_1 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_7 ? float3(t_7, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -745,7 +805,7 @@ BvhNode ConstructBvhNode(float3 arg0, float3 arg1, uint arg2, uint arg3) {
     return ret;
 }
 
-BvhNode mesh_node_query(uint m, uint i)
+BvhNode mesh_node_query(uint m, uint i_1)
 {
     float3 lo_1 = (float3)0;
     float3 hi_1 = (float3)0;
@@ -758,11 +818,11 @@ BvhNode mesh_node_query(uint m, uint i)
     const float3 _e10 = node_frame_hi(header_2);
     hi_1 = _e10;
     reference = header_2.a;
-    if ((i >= 2u)) {
-        GpuNode n_9 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + (i >> 1u))*32+0)), asuint(nodes.Load((base_2 + (i >> 1u))*32+12)), asfloat(nodes.Load3((base_2 + (i >> 1u))*32+16)), asuint(nodes.Load((base_2 + (i >> 1u))*32+28)));
+    if ((i_1 >= 2u)) {
+        GpuNode n_9 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + (i_1 >> 1u))*32+0)), asuint(nodes.Load((base_2 + (i_1 >> 1u))*32+12)), asfloat(nodes.Load3((base_2 + (i_1 >> 1u))*32+16)), asuint(nodes.Load((base_2 + (i_1 >> 1u))*32+28)));
         q_1 = asuint(n_9.min_);
         reference = n_9.a;
-        if (((i & 1u) != 0u)) {
+        if (((i_1 & 1u) != 0u)) {
             q_1 = asuint(n_9.max_);
             reference = n_9.b;
         }
@@ -828,10 +888,10 @@ Triangle ConstructTriangle(float3 arg0, float3 arg1, float3 arg2) {
     return ret;
 }
 
-Triangle mesh_triangle_query(uint m_1, uint i_1)
+Triangle mesh_triangle_query(uint m_1, uint i_2)
 {
     uint _e6 = asuint(params.Load((m_1 + 1u)*4));
-    uint slot_4 = (_e6 + i_1);
+    uint slot_4 = (_e6 + i_2);
     float4 _e12 = asfloat(triangles.Load4((slot_4 * 3u)*16));
     float4 _e20 = asfloat(triangles.Load4(((slot_4 * 3u) + 1u)*16));
     float4 _e28 = asfloat(triangles.Load4(((slot_4 * 3u) + 2u)*16));
@@ -873,15 +933,15 @@ Intersection intersect_triangle(Ray ray_7, Triangle tri)
     float _e86 = (_e80[min(uint(kx_1), 2u)] - (sx * _e80[min(uint(kz_1), 2u)]));
     float _e87 = (_e80[min(uint(ky_1), 2u)] - (sy * _e80[min(uint(kz_1), 2u)]));
     float u_1 = ((_e86 * _e78) - (_e87 * _e77));
-    float v_2 = ((_e68 * _e87) - (_e69 * _e86));
+    float v_3 = ((_e68 * _e87) - (_e69 * _e86));
     float w_1 = ((_e77 * _e69) - (_e78 * _e68));
-    float det_1 = ((u_1 + v_2) + w_1);
+    float det_1 = ((u_1 + v_3) + w_1);
     float _e112 = (1.0 / det_1);
-    float t_8 = ((((u_1 * (sz * _e62[min(uint(kz_1), 2u)])) + (v_2 * (sz * _e71[min(uint(kz_1), 2u)]))) + (w_1 * (sz * _e80[min(uint(kz_1), 2u)]))) * _e112);
-    bool hit_8 = (((((all(((asuint(ray_7.origin) & (2147483647u).xxx) < _e10)) && all(((asuint(ray_7.dir) & (2147483647u).xxx) < _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_8 >= ray_7.tmin) && (t_8 <= ray_7.tmax)));
+    float t_8 = ((((u_1 * (sz * _e62[min(uint(kz_1), 2u)])) + (v_3 * (sz * _e71[min(uint(kz_1), 2u)]))) + (w_1 * (sz * _e80[min(uint(kz_1), 2u)]))) * _e112);
+    bool hit_8 = (((((all(((asuint(ray_7.origin) & (2147483647u).xxx) < _e10)) && all(((asuint(ray_7.dir) & (2147483647u).xxx) < _e10))) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_8 >= ray_7.tmin) && (t_8 <= ray_7.tmax)));
     const float3 _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     uint _e137 = F32_INF;
-    const Intersection intersection = ConstructIntersection((hit_8 ? t_8 : asfloat(_e137)), (hit_8 ? _e132 : float3(0.0, 0.0, 1.0)), (hit_8 ? float2((v_2 * _e112), (w_1 * _e112)) : (0.0).xx));
+    const Intersection intersection = ConstructIntersection((hit_8 ? t_8 : asfloat(_e137)), (hit_8 ? _e132 : float3(0.0, 0.0, 1.0)), (hit_8 ? float2((v_3 * _e112), (w_1 * _e112)) : (0.0).xx));
     return intersection;
 }
 
@@ -1043,10 +1103,10 @@ Intersection sphere_intersect(Sphere s, Ray ray_9)
 {
     float t = (float)0;
 
-    float3 f_1 = (ray_9.origin - s.center_);
+    float3 f_2 = (ray_9.origin - s.center_);
     float a_6 = dot(ray_9.dir, ray_9.dir);
-    float b_7 = -(dot(f_1, ray_9.dir));
-    float3 l_1 = (f_1 + (ray_9.dir * ((b_7 / a_6)).xxx));
+    float b_7 = -(dot(f_2, ray_9.dir));
+    float3 l_1 = (f_2 + (ray_9.dir * ((b_7 / a_6)).xxx));
     float r2_ = (s.radius * s.radius);
     float disc = (a_6 * (r2_ - dot(l_1, l_1)));
     if ((!((disc >= 0.0)) || !((a_6 > 0.0)))) {
@@ -1055,7 +1115,7 @@ Intersection sphere_intersect(Sphere s, Ray ray_9)
         return intersection_3;
     }
     float q_2 = (b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * sqrt(disc)));
-    float t0_1 = ((dot(f_1, f_1) - r2_) / q_2);
+    float t0_1 = ((dot(f_2, f_2) - r2_) / q_2);
     float t1_1 = (q_2 / a_6);
     t = min(t0_1, t1_1);
     float _e52 = t;
@@ -1198,9 +1258,9 @@ float3 decode_octahedral(uint bits)
     float _e14 = n_2.z;
     if ((_e14 < 0.0)) {
         float3 _e21 = n_2;
-        float2 s_5 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
+        float2 s_4 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
         float3 _e29 = n_2;
-        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_5);
+        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_4);
         float _e37 = n_2.z;
         n_2 = float3(xy.x, xy.y, _e37);
     }
@@ -1292,7 +1352,7 @@ uint medium_at(float3 p_4, uint exclude)
 {
     uint inside = (uint)0;
     float nearest = (float)0;
-    uint i_2 = (uint)0;
+    uint i_3 = (uint)0;
 
     if (!(HAS_MEDIA)) {
         return 0u;
@@ -1305,22 +1365,22 @@ uint medium_at(float3 p_4, uint exclude)
     uint _e23 = F32_INF;
     nearest = asfloat(_e23);
     uint end_1 = frame_1.medium_count;
-    i_2 = 0u;
+    i_3 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e59 = i_2;
-            i_2 = (_e59 + 1u);
+            uint _e59 = i_3;
+            i_3 = (_e59 + 1u);
         }
         loop_init_2 = false;
-        uint _e29 = i_2;
+        uint _e29 = i_3;
         if ((_e29 >= end_1)) {
             break;
         }
-        uint _e32 = i_2;
+        uint _e32 = i_3;
         uint slot_5 = asuint(params.Load((frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))*4));
         if ((slot_5 != exclude)) {
             uint _e41 = F32_INF;
@@ -1466,9 +1526,9 @@ int naga_f2i32(float value) {
     return int(clamp(value, -2147483600.0, 2147483500.0));
 }
 
-int i32_from_f32_(float x_1)
+int i32_from_f32_(float x_3)
 {
-    return (((asuint(x_1) & 2147483647u) > 2139095040u) ? int(0) : naga_f2i32(min(max(x_1, -2147483600.0), 2147483500.0)));
+    return (((asuint(x_3) & 2147483647u) > 2139095040u) ? int(0) : naga_f2i32(min(max(x_3, -2147483600.0), 2147483500.0)));
 }
 
 int naga_div(int lhs, int rhs) {
@@ -1482,15 +1542,15 @@ int rem_i32_(int a_4, int b_4)
     return (by_zero_4 ? int(0) : asint(asuint(a_4) - asuint(asint(asuint(divisor_4) * asuint(naga_div(a_4, divisor_4))))));
 }
 
-int wrap_texel(int x_2, int n_4, uint mode)
+int wrap_texel(int x_4, int n_4, uint mode)
 {
-    const int _e3 = rem_i32_(x_2, n_4);
+    const int _e3 = rem_i32_(x_4, n_4);
     const int _e5 = rem_i32_(asint(asuint(_e3) + asuint(n_4)), n_4);
-    const int _e8 = rem_i32_(x_2, asint(asuint(int(2)) * asuint(n_4)));
+    const int _e8 = rem_i32_(x_4, asint(asuint(int(2)) * asuint(n_4)));
     const int _e14 = rem_i32_(asint(asuint(_e8) + asuint(asint(asuint(int(2)) * asuint(n_4)))), asint(asuint(int(2)) * asuint(n_4)));
     int mirror = ((_e14 >= n_4) ? asint(asuint(asint(asuint(asint(asuint(int(2)) * asuint(n_4))) - asuint(int(1)))) - asuint(_e14)) : _e14);
     int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5);
-    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_2, int(0)), asint(asuint(n_4) - asuint(int(1)))) : wrapped);
+    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_4, int(0)), asint(asuint(n_4) - asuint(int(1)))) : wrapped);
 }
 
 float srgb_channel(float c_2)
@@ -1537,10 +1597,10 @@ float4 sample_texture(uint t_2, float2 uv)
     uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
     float2 q_5 = (uv * float2(float(wi), float(hi_2)));
     float2 p_7 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_5) : (q_5 - (0.5).xx));
-    float2 f_2 = floor(p_7);
-    float2 fr = (p_7 - f_2);
-    const int _e47 = i32_from_f32_(f_2.x);
-    const int _e49 = i32_from_f32_(f_2.y);
+    float2 f_3 = floor(p_7);
+    float2 fr = (p_7 - f_3);
+    const int _e47 = i32_from_f32_(f_3.x);
+    const int _e49 = i32_from_f32_(f_3.y);
     const int _e50 = wrap_texel(_e47, wi, mu);
     uint x0_ = uint(_e50);
     const int _e54 = wrap_texel(asint(asuint(_e47) + asuint(int(1))), wi, mu);
@@ -1638,20 +1698,20 @@ PointLight load_PointLight(uint offset_8)
     return pointlight;
 }
 
-float3 step_toward(float3 x_3, float3 s_1)
+float3 step_toward(float3 x_5, float3 s_1)
 {
-    uint3 bits_1 = asuint(x_3);
-    bool3 up_1 = ((sign(x_3) * sign(s_1)) > (0.0).xxx);
+    uint3 bits_1 = asuint(x_5);
+    bool3 up_1 = ((sign(x_5) * sign(s_1)) > (0.0).xxx);
     float3 stepped = asfloat((up_1 ? (bits_1 + (1u).xxx) : (bits_1 - (1u).xxx)));
     float3 from_zero = ((s_1 > (0.0).xxx) ? (1.1754944e-38).xxx : (-1.1754944e-38).xxx);
-    float3 moved = ((x_3 == (0.0).xxx) ? from_zero : stepped);
-    return (!((s_1 == (0.0).xxx)) ? moved : x_3);
+    float3 moved = ((x_5 == (0.0).xxx) ? from_zero : stepped);
+    return (!((s_1 == (0.0).xxx)) ? moved : x_5);
 }
 
 float3 offset_origin(float3 p_5, float3 n_5, float error)
 {
-    float d_3 = ((2.0 * error) * ((abs(n_5.x) + abs(n_5.y)) + abs(n_5.z)));
-    float3 offset_14 = (n_5 * (d_3).xxx);
+    float d_4 = ((2.0 * error) * ((abs(n_5.x) + abs(n_5.y)) + abs(n_5.z)));
+    float3 offset_14 = (n_5 * (d_4).xxx);
     const float3 _e17 = step_toward((p_5 + offset_14), offset_14);
     return _e17;
 }
@@ -1729,14 +1789,14 @@ LightSample dispatch_light(uint type_id_3, uint offset_9, float3 position_3, flo
     return lightsample_1;
 }
 
-LightSample sample_light_query(uint i_3, float3 position_4, float3 normal_4)
+LightSample sample_light_query(uint i_4, float3 position_4, float3 normal_4)
 {
     FrameUniforms frame_4 = frame;
-    if ((i_3 >= frame_4.light_count)) {
+    if ((i_4 >= frame_4.light_count)) {
         const LightSample lightsample_2 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_2;
     }
-    uint entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     uint _e22 = asuint(params.Load(entry*4));
     uint _e27 = asuint(params.Load((entry + 1u)*4));
     const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
@@ -1747,27 +1807,27 @@ LightSample sample_light_query(uint i_3, float3 position_4, float3 normal_4)
 float3 lambert_shade(Lambert m_2, Ray ray_18, Hit hit_2)
 {
     float3 color = (float3)0;
-    uint i_4 = (uint)0;
+    uint i_5 = (uint)0;
 
     const float3 _e3 = shading_normal(ray_18, hit_2);
     color = (0.0).xxx;
     const uint _e8 = light_count_query();
-    i_4 = 0u;
+    i_5 = 0u;
     uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e30 = i_4;
-            i_4 = (_e30 + 1u);
+            uint _e30 = i_5;
+            i_5 = (_e30 + 1u);
         }
         loop_init_3 = false;
-        uint _e10 = i_4;
+        uint _e10 = i_5;
         if ((_e10 >= _e8)) {
             break;
         }
-        uint _e12 = i_4;
+        uint _e12 = i_5;
         const LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
         float3 _e16 = color;
         color = (_e16 + (((m_2.albedo * (INV_PI).xxx) * _e15.radiance) * (max(dot(_e3, _e15.dir), 0.0)).xxx));
@@ -1886,8 +1946,8 @@ float3 trace(Ray camera_ray)
     float3 radiance_3 = (float3)0;
     float t_6 = (float)0;
     Hit hit_6 = (Hit)0;
-    Frame f = (Frame)0;
-    uint i_5 = (uint)0;
+    Frame f_1 = (Frame)0;
+    uint i_6 = (uint)0;
     uint medium = (uint)0;
 
     if (!(HAS_SECONDARY_RAYS)) {
@@ -1986,33 +2046,33 @@ float3 trace(Ray camera_ray)
                         Hit _e142 = hit_6;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_11, 0u);
-                        i_5 = 0u;
+                        f_1 = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_11, 0u);
+                        i_6 = 0u;
                         uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
                         bool loop_init_4 = true;
                         while(true) {
                             if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
                             loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                             if (!loop_init_4) {
-                                uint _e175 = i_5;
-                                i_5 = (_e175 + 1u);
+                                uint _e175 = i_6;
+                                i_6 = (_e175 + 1u);
                             }
                             loop_init_4 = false;
-                            uint _e155 = i_5;
+                            uint _e155 = i_6;
                             if ((_e155 >= n_11)) {
                                 break;
                             }
-                            uint _e158 = i_5;
-                            uint _e162 = i_5;
+                            uint _e158 = i_6;
+                            uint _e162 = i_6;
                             float3 _e165 = spawn_dirs[min(uint(_e162), 0u)];
-                            f.dirs[min(uint(min(_e158, 0u)), 0u)] = _e165;
-                            uint _e167 = i_5;
-                            uint _e171 = i_5;
+                            f_1.dirs[min(uint(min(_e158, 0u)), 0u)] = _e165;
+                            uint _e167 = i_6;
+                            uint _e171 = i_6;
                             float3 _e174 = spawn_weights[min(uint(_e171), 0u)];
-                            f.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
+                            f_1.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
                         }
                         uint _e178 = depth;
-                        Frame _e182 = f;
+                        Frame _e182 = f_1;
                         stack_1[min(uint(min(_e178, 3u)), 3u)] = _e182;
                         uint _e183 = depth;
                         depth = (_e183 + 1u);
@@ -2060,11 +2120,11 @@ float3 trace(Ray camera_ray)
         uint _e241 = stack_1[min(uint(min(top_1, 3u)), 3u)].next;
         uint _e246 = stack_1[min(uint(min(top_1, 3u)), 3u)].count;
         if ((_e241 < _e246)) {
-            uint i_6 = stack_1[min(uint(min(top_1, 3u)), 3u)].next;
-            stack_1[min(uint(min(top_1, 3u)), 3u)].next = (i_6 + 1u);
+            uint i_8 = stack_1[min(uint(min(top_1, 3u)), 3u)].next;
+            stack_1[min(uint(min(top_1, 3u)), 3u)].next = (i_8 + 1u);
             Ray parent = stack_1[min(uint(min(top_1, 3u)), 3u)].ray;
             Hit hit_10 = stack_1[min(uint(min(top_1, 3u)), 3u)].hit;
-            float3 dir_6 = stack_1[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_6, 0u)), 0u)];
+            float3 dir_6 = stack_1[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_8, 0u)), 0u)];
             medium = parent.medium;
             float _e283 = stack_1[min(uint(min(top_1, 3u)), 3u)].error;
             const float3 _e284 = spawn_origin(hit_10, _e283, dir_6);
@@ -2090,9 +2150,9 @@ float3 trace(Ray camera_ray)
     return ZeroValuefloat3();
 }
 
-bool3 is_finite_vec3f(float3 x_4)
+bool3 is_finite_vec3f(float3 x_6)
 {
-    return ((asuint(x_4) & (2147483647u).xxx) < (2139095040u).xxx);
+    return ((asuint(x_6) & (2147483647u).xxx) < (2139095040u).xxx);
 }
 
 float3 finite_or_zero(float3 c_4)
@@ -2101,7 +2161,7 @@ float3 finite_or_zero(float3 c_4)
     return (_e3 ? c_4 : (0.0).xxx);
 }
 
-void render_pixel(uint2 pixel_3)
+void render_pixel(uint2 pixel_4)
 {
     float3 sum = (float3)0;
     uint bad = (uint)0;
@@ -2129,9 +2189,9 @@ void render_pixel(uint2 pixel_3)
             break;
         }
         uint _e18 = s_2;
-        uint sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_3, sample_3, frame_5.seed);
-        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_4, sample_4, frame_5.seed);
+        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
         ray_25 = _e23;
         ray_25.depth = 0u;
         ray_25.kind = RAY_CAMERA;
@@ -2158,10 +2218,10 @@ void render_pixel(uint2 pixel_3)
     float4 _e62 = float4(_e59, float(frame_5.samples_per_pass));
     uint _e63 = bad;
     if ((tile_2.frame == 0u)) {
-        accum.Store4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16, asuint(_e62));
+        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint(_e62));
     } else {
-        float4 _e69 = asfloat(accum.Load4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16));
-        accum.Store4(((pixel_3.y * tile_2.image_size.x) + pixel_3.x)*16, asuint((_e69 + _e62)));
+        float4 _e69 = asfloat(accum.Load4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16));
+        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint((_e69 + _e62)));
     }
     if ((_e63 > 0u)) {
         counters.InterlockedAdd(0, _e63);

@@ -5,14 +5,14 @@
 using metal::uint;
 
 struct _mslBufferSizes {
-    uint size3;
-    uint size5;
+    uint size4;
     uint size6;
     uint size7;
-    uint size11;
-    uint size13;
-    uint size17;
+    uint size8;
+    uint size12;
+    uint size14;
     uint size18;
+    uint size19;
 };
 
 struct TileParams {
@@ -38,6 +38,9 @@ struct FrameUniforms {
     uint background_offset;
     uint path_slots;
 };
+struct type_3 {
+    uint inner[14];
+};
 struct Ray {
     metal::packed_float3 origin;
     float tmin;
@@ -48,7 +51,7 @@ struct Ray {
     uint medium;
     char _pad7[4];
 };
-typedef uint type_4[1];
+typedef uint type_5[1];
 struct SupersampledPinhole {
     metal::float3 position;
     metal::float3 look_at;
@@ -80,7 +83,7 @@ struct GpuInstance {
     uint flags;
     uint object;
 };
-typedef GpuInstance type_8[1];
+typedef GpuInstance type_9[1];
 struct TriangleRay {
     metal::packed_float3 origin;
     uint kx;
@@ -97,9 +100,9 @@ struct GpuNode {
     metal::packed_float3 max;
     uint b;
 };
-typedef GpuNode type_9[1];
-typedef metal::float4 type_10[1];
-struct type_12 {
+typedef GpuNode type_10[1];
+typedef metal::float4 type_11[1];
+struct type_13 {
     uint inner[67];
 };
 struct BvhMesh {
@@ -112,10 +115,10 @@ struct Intersection {
     metal::float2 uv;
     char _pad3[8];
 };
-struct type_13 {
+struct type_14 {
     uint inner[64];
 };
-struct type_14 {
+struct type_15 {
     float inner[64];
 };
 struct BvhNode {
@@ -146,7 +149,7 @@ struct Hit {
     uint primitive;
     char _pad8[12];
 };
-typedef metal::uint4 type_16[1];
+typedef metal::uint4 type_17[1];
 struct Skybox {
     uint image;
     float intensity;
@@ -169,7 +172,7 @@ struct PointLight {
     float inner_range;
     char _pad5[8];
 };
-struct type_18 {
+struct type_19 {
     metal::float3 inner[1];
 };
 struct Frame {
@@ -179,21 +182,24 @@ struct Frame {
     uint slot;
     char _pad4[8];
     metal::float3 sum;
-    type_18 dirs;
-    type_18 weights;
+    type_19 dirs;
+    type_19 weights;
     uint count;
     uint next;
     char _pad9[8];
 };
-struct type_19 {
+struct type_20 {
     Frame inner[4];
 };
-typedef metal::atomic_uint type_22[1];
+typedef metal::atomic_uint type_23[1];
 constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint NO_HIT = 4294967295u;
 constant uint SCATTER = 1000003u;
+constant uint SCRATCH_RNG_INDEX = 12u;
+constant uint SCRATCH_RNG_SEED = 13u;
 constant uint SUPERSAMPLING_GRID = 2u;
+constant uint HALF_WORD_BITS = 16u;
 constant uint RAY_CAMERA = 0u;
 constant bool HAS_MEDIA = false;
 constant uint MEDIUM_ENTRY_STRIDE = 1u;
@@ -308,35 +314,42 @@ metal::uint2 scattered_local(
 uint pcg_hash(
     uint x
 ) {
-    uint state = (x * 747796405u) + 2891336453u;
-    uint word = ((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u;
+    uint state_1 = (x * 747796405u) + 2891336453u;
+    uint word = ((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u;
     return (word >> 22u) ^ word;
 }
 
-void rng_seed(
+void rng_resume(
     metal::uint2 pixel,
     uint sample,
     uint seed,
+    uint state,
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    uint h = {};
-    uint _e5 = pcg_hash(seed);
-    uint _e7 = pcg_hash(sample ^ _e5);
-    uint _e9 = pcg_hash(pixel.y ^ _e7);
-    uint _e11 = pcg_hash(pixel.x ^ _e9);
-    h = _e11;
-    uint _e13 = h;
-    if (_e13 == 0u) {
-        h = 1u;
-    }
-    uint _e17 = h;
-    rng_state = _e17;
+    scratch.inner[metal::min(SCRATCH_RNG_INDEX, 13u)] = sample;
+    uint _e12 = pcg_hash(seed);
+    uint _e14 = pcg_hash(pixel.y ^ _e12);
+    uint _e16 = pcg_hash(pixel.x ^ _e14);
+    scratch.inner[metal::min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    rng_state = state;
+    return;
+}
+
+void rng_seed(
+    metal::uint2 pixel_1,
+    uint sample_1,
+    uint seed_1,
+    thread type_3& scratch,
+    thread uint& rng_state
+) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u, scratch, rng_state);
     return;
 }
 
 SupersampledPinhole load_SupersampledPinhole(
     uint offset,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset + 0u];
@@ -359,54 +372,114 @@ metal::uint2 image_size_query(
     return _e1.image_size;
 }
 
+uint laine_karras(
+    uint x_1,
+    uint seed_2
+) {
+    uint v = {};
+    v = x_1 + seed_2;
+    uint _e4 = v;
+    uint _e5 = v;
+    v = _e4 ^ (_e5 * 1817228412u);
+    uint _e9 = v;
+    uint _e10 = v;
+    v = _e9 ^ (_e10 * 3090095698u);
+    uint _e14 = v;
+    uint _e15 = v;
+    v = _e14 ^ (_e15 * 3350193720u);
+    uint _e19 = v;
+    uint _e20 = v;
+    v = _e19 ^ (_e20 * 2367878886u);
+    uint _e24 = v;
+    return _e24;
+}
+
+uint sobol_second_reversed(
+    uint i
+) {
+    uint f = {};
+    f = i;
+    uint _e2 = f;
+    uint _e3 = f;
+    f = _e2 ^ ((_e3 >> 1u) & 1431655765u);
+    uint _e9 = f;
+    uint _e10 = f;
+    f = _e9 ^ ((_e10 >> 2u) & 858993459u);
+    uint _e16 = f;
+    uint _e17 = f;
+    f = _e16 ^ ((_e17 >> 4u) & 252645135u);
+    uint _e23 = f;
+    uint _e24 = f;
+    f = _e23 ^ ((_e24 >> 8u) & 16711935u);
+    uint _e30 = f;
+    uint _e31 = f;
+    f = _e30 ^ (_e31 >> (HALF_WORD_BITS & 31u));
+    uint _e37 = f;
+    return _e37;
+}
+
 float rand_next(
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    uint _e1 = rng_state;
-    uint s_3 = (_e1 * 747796405u) + 2891336453u;
-    rng_state = s_3;
-    uint word_1 = ((s_3 >> (((s_3 >> 28u) + 4u) & 31u)) ^ s_3) * 277803737u;
-    uint r_4 = (word_1 >> 22u) ^ word_1;
-    return static_cast<float>(r_4 >> 8u) * (1.0 / 16777216.0);
+    uint x_2 = {};
+    uint d_1 = rng_state;
+    rng_state = d_1 + 1u;
+    uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 13u)];
+    uint _e16 = pcg_hash(_e10 ^ ((d_1 >> 1u) * 2654435769u));
+    uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 13u)];
+    uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
+    uint i_7 = metal::reverse_bits(_e24);
+    x_2 = i_7;
+    if ((d_1 & 1u) != 0u) {
+        uint _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    uint scramble = _e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
+    uint _e45 = x_2;
+    uint _e46 = laine_karras(_e45, scramble);
+    return static_cast<float>(metal::reverse_bits(_e46) >> 8u) * (1.0 / 16777216.0);
 }
 
 metal::float2 rand2_next(
+    thread type_3& scratch,
     thread uint& rng_state
 ) {
-    float _e0 = rand_next(rng_state);
-    float _e1 = rand_next(rng_state);
+    float _e0 = rand_next(scratch, rng_state);
+    float _e1 = rand_next(scratch, rng_state);
     return metal::float2(_e0, _e1);
 }
 
 metal::float3 normalize_vec3f(
-    metal::float3 v
+    metal::float3 v_1
 ) {
-    return (metal::dot(v, v) >= 0.000000000000000000000000000000000000011754944) ? metal::normalize(v) : metal::float3(0.0);
+    return (metal::dot(v_1, v_1) >= 0.000000000000000000000000000000000000011754944) ? metal::normalize(v_1) : metal::float3(0.0);
 }
 
 Ray supersampled_ray(
     SupersampledPinhole cam,
-    metal::uint2 pixel_1,
-    uint sample_1,
+    metal::uint2 pixel_2,
+    uint sample_2,
     constant TileParams& tile,
+    thread type_3& scratch,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
     metal::uint2 _e3 = image_size_query(tile);
     metal::float2 size_1 = static_cast<metal::float2>(_e3);
-    uint _e8 = rem_u32_(sample_1, SUPERSAMPLING_GRID * SUPERSAMPLING_GRID);
+    uint _e8 = rem_u32_(sample_2, SUPERSAMPLING_GRID * SUPERSAMPLING_GRID);
     uint _e10 = rem_u32_(_e8, SUPERSAMPLING_GRID);
     uint _e13 = div_u32_(_e8, SUPERSAMPLING_GRID);
     metal::float2 stratum = metal::float2(static_cast<float>(_e10), static_cast<float>(_e13));
-    metal::float2 _e16 = rand2_next(rng_state);
+    metal::float2 _e16 = rand2_next(scratch, rng_state);
     metal::float2 offset_13 = (stratum + _e16) / metal::float2(static_cast<float>(SUPERSAMPLING_GRID));
-    metal::float2 ndc = (((static_cast<metal::float2>(pixel_1) + offset_13) / size_1) * metal::float2(2.0)) - metal::float2(1.0);
+    metal::float2 ndc = (((static_cast<metal::float2>(pixel_2) + offset_13) / size_1) * metal::float2(2.0)) - metal::float2(1.0);
     metal::float3 _e34 = normalize_vec3f(cam.look_at - cam.position);
     metal::float3 _e37 = normalize_vec3f(metal::cross(_e34, cam.up));
     metal::float3 up = metal::cross(_e37, _e34);
-    float h_1 = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
+    float h = metal::tan(((cam.fov) * 0.017453292519943295474) * 0.5);
     float aspect = size_1.x / size_1.y;
-    metal::float3 _e58 = normalize_vec3f((_e34 + (_e37 * metal::float3((ndc.x * h_1) * aspect))) - (up * metal::float3(ndc.y * h_1)));
+    metal::float3 _e58 = normalize_vec3f((_e34 + (_e37 * metal::float3((ndc.x * h) * aspect))) - (up * metal::float3(ndc.y * h)));
     uint _e62 = F32_INF;
     return Ray {cam.position, 0.0, _e58, as_type<float>(_e62), 0u, 0u, 0u};
 }
@@ -414,16 +487,17 @@ Ray supersampled_ray(
 Ray dispatch_ray_generation(
     uint type_id,
     uint offset_1,
-    metal::uint2 pixel_2,
-    uint sample_2,
+    metal::uint2 pixel_3,
+    uint sample_3,
     constant TileParams& tile,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SupersampledPinhole _e3 = load_SupersampledPinhole(offset_1, params, _buffer_sizes);
-    Ray _e4 = supersampled_ray(_e3, pixel_2, sample_2, tile, rng_state, F32_INF);
+    Ray _e4 = supersampled_ray(_e3, pixel_3, sample_3, tile, scratch, rng_state, F32_INF);
     return _e4;
 }
 
@@ -440,9 +514,9 @@ Ray to_object(
     Ray r = {};
     r = ray;
     metal::float4 o = metal::float4(ray.origin, 1.0);
-    metal::float4 d_1 = metal::float4(ray.dir, 0.0);
+    metal::float4 d_2 = metal::float4(ray.dir, 0.0);
     r.origin = metal::float3(metal::dot(inst.world_to_object_0_, o), metal::dot(inst.world_to_object_1_, o), metal::dot(inst.world_to_object_2_, o));
-    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_1), metal::dot(inst.world_to_object_1_, d_1), metal::dot(inst.world_to_object_2_, d_1));
+    r.dir = metal::float3(metal::dot(inst.world_to_object_0_, d_2), metal::dot(inst.world_to_object_1_, d_2), metal::dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
     return _e25;
 }
@@ -451,27 +525,27 @@ metal::float3 safe_inverse(
     metal::float3 d
 ) {
     metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_4 * tiny, metal::abs(d) < tiny);
+    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_3 * tiny, metal::abs(d) < tiny);
     return metal::float3(1.0) / dd;
 }
 
 TriangleRay prepare_triangle_ray(
     Ray ray_1
 ) {
-    metal::float3 d_2 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
-    metal::float3 ad = metal::abs(d_2);
+    metal::float3 d_3 = metal::select(ray_1.dir, metal::float3(0.0), metal::abs(ray_1.dir) < metal::float3(0.000000000000000000000000000000000000011754944));
+    metal::float3 ad = metal::abs(d_3);
     bool y_gt = ad.y > ad.x;
     uint kz = (ad.z > (y_gt ? ad.y : ad.x)) ? 2u : (y_gt ? 1u : 0u);
     uint kx0_ = (kz == 2u) ? 0u : (kz + 1u);
     uint ky0_ = (kz >= 1u) ? (kz - 1u) : (kz + 2u);
-    float dz = d_2[metal::min(kz, 2u)];
+    float dz = d_3[metal::min(kz, 2u)];
     bool flip = dz < 0.0;
     uint kx = flip ? ky0_ : kx0_;
     uint ky = flip ? kx0_ : ky0_;
     metal::uint3 inf_bits = metal::uint3(2139095040u);
-    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_2) & metal::uint3(2147483647u)) < inf_bits);
-    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_2[metal::min(kx, 2u)] / dz, d_2[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
+    bool finite = metal::all((as_type<metal::uint3>(ray_1.origin) & metal::uint3(2147483647u)) < inf_bits) && metal::all((as_type<metal::uint3>(d_3) & metal::uint3(2147483647u)) < inf_bits);
+    return TriangleRay {ray_1.origin, kx, ky, kz, {}, metal::float3(d_3[metal::min(kx, 2u)] / dz, d_3[metal::min(ky, 2u)] / dz, 1.0 / dz), finite && !((dz == 0.0))};
 }
 
 metal::float3 hit_triangle(
@@ -480,7 +554,7 @@ metal::float3 hit_triangle(
     float tmin,
     float tmax_1,
     thread uint& F32_INF,
-    device type_10 const& triangles,
+    device type_11 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e8 = triangles[slot * 3u];
@@ -496,15 +570,15 @@ metal::float3 hit_triangle(
     float cx = c_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_5[metal::min(r_1.kz, 2u)]);
     float cy = c_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_5[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
-    float v_1 = (ax * cy) - (ay * cx);
+    float v_2 = (ax * cy) - (ay * cx);
     float w = (bx * ay) - (by * ax);
-    bool outside = (((u < 0.0) || (v_1 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_1 > 0.0)) || (w > 0.0));
-    float det = (u + v_1) + w;
+    bool outside = (((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0));
+    float det = (u + v_2) + w;
     float rcp = 1.0 / det;
-    float t_7 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_1 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_7 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_7 >= tmin)) && (t_7 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_7 ? metal::float3(t_7, v_1 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_7 ? metal::float3(t_7, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -584,7 +658,7 @@ metal::float2 children_entry(
 metal::uint2 pop(
     uint base,
     uint sp,
-    thread type_12& traversal_stack
+    thread type_13& traversal_stack
 ) {
     if (sp == 0u) {
         return metal::uint2(NO_HIT, 0u);
@@ -601,9 +675,9 @@ Candidate intersect_mesh(
     Candidate best_in,
     bool shadow,
     thread uint& F32_INF,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Candidate best = {};
@@ -716,7 +790,7 @@ Candidate intersect_mesh(
 
 BvhMesh load_BvhMesh(
     uint offset_2,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_2 + 0u];
@@ -732,9 +806,9 @@ metal::float3 node_frame_hi(
 
 BvhNode mesh_node_query(
     uint m,
-    uint i,
-    device type_4 const& params,
-    device type_9 const& nodes,
+    uint i_1,
+    device type_5 const& params,
+    device type_10 const& nodes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 lo_1 = {};
@@ -747,11 +821,11 @@ BvhNode mesh_node_query(
     metal::float3 _e10 = node_frame_hi(header_2);
     hi_1 = _e10;
     reference = header_2.a;
-    if (i >= 2u) {
-        GpuNode n_9 = nodes[base_2 + (i >> 1u)];
+    if (i_1 >= 2u) {
+        GpuNode n_9 = nodes[base_2 + (i_1 >> 1u)];
         q_1 = as_type<metal::uint3>(n_9.min);
         reference = n_9.a;
-        if ((i & 1u) != 0u) {
+        if ((i_1 & 1u) != 0u) {
             q_1 = as_type<metal::uint3>(n_9.max);
             reference = n_9.b;
         }
@@ -818,13 +892,13 @@ float bvh_mesh_enter(
 
 Triangle mesh_triangle_query(
     uint m_1,
-    uint i_1,
-    device type_4 const& params,
-    device type_10 const& triangles,
+    uint i_2,
+    device type_5 const& params,
+    device type_11 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e6 = params[m_1 + 1u];
-    uint slot_4 = _e6 + i_1;
+    uint slot_4 = _e6 + i_2;
     metal::float4 _e12 = triangles[slot_4 * 3u];
     metal::float4 _e20 = triangles[(slot_4 * 3u) + 1u];
     metal::float4 _e28 = triangles[(slot_4 * 3u) + 2u];
@@ -860,31 +934,31 @@ Intersection intersect_triangle(
     float _e86 = _e80[kx_1] - (sx * _e80[kz_1]);
     float _e87 = _e80[ky_1] - (sy * _e80[kz_1]);
     float u_1 = (_e86 * _e78) - (_e87 * _e77);
-    float v_2 = (_e68 * _e87) - (_e69 * _e86);
+    float v_3 = (_e68 * _e87) - (_e69 * _e86);
     float w_1 = (_e77 * _e69) - (_e78 * _e68);
-    float det_1 = (u_1 + v_2) + w_1;
+    float det_1 = (u_1 + v_3) + w_1;
     float _e112 = 1.0 / det_1;
-    float t_8 = (((u_1 * (sz * _e62[kz_1])) + (v_2 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112;
-    bool hit_8 = ((((metal::all((as_type<metal::uint3>(ray_7.origin) & metal::uint3(2147483647u)) < _e10) && metal::all((as_type<metal::uint3>(ray_7.dir) & metal::uint3(2147483647u)) < _e10)) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_2 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_8 >= ray_7.tmin) && (t_8 <= ray_7.tmax));
+    float t_8 = (((u_1 * (sz * _e62[kz_1])) + (v_3 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112;
+    bool hit_8 = ((((metal::all((as_type<metal::uint3>(ray_7.origin) & metal::uint3(2147483647u)) < _e10) && metal::all((as_type<metal::uint3>(ray_7.dir) & metal::uint3(2147483647u)) < _e10)) && (dz_1 != 0.0)) && !(((((u_1 < 0.0) || (v_3 < 0.0)) || (w_1 < 0.0)) && (((u_1 > 0.0) || (v_3 > 0.0)) || (w_1 > 0.0))))) && !((det_1 == 0.0))) && ((t_8 >= ray_7.tmin) && (t_8 <= ray_7.tmax));
     metal::float3 _e132 = normalize_vec3f(metal::cross(tri.v1_ - tri.v0_, tri.v2_ - tri.v0_));
     uint _e137 = F32_INF;
-    return Intersection {hit_8 ? t_8 : as_type<float>(_e137), {}, hit_8 ? _e132 : metal::float3(0.0, 0.0, 1.0), hit_8 ? metal::float2(v_2 * _e112, w_1 * _e112) : metal::float2(0.0)};
+    return Intersection {hit_8 ? t_8 : as_type<float>(_e137), {}, hit_8 ? _e132 : metal::float3(0.0, 0.0, 1.0), hit_8 ? metal::float2(v_3 * _e112, w_1 * _e112) : metal::float2(0.0)};
 }
 
 Intersection bvh_mesh_intersect(
     BvhMesh g,
     Ray ray_8,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread uint& F32_NEG_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Intersection best_1 = {};
     Ray r_2 = {};
-    type_13 stack = {};
-    type_14 stack_t = {};
+    type_14 stack = {};
+    type_15 stack_t = {};
     uint sp_2 = {};
     BvhNode node = {};
     uint k_1 = {};
@@ -892,8 +966,8 @@ Intersection bvh_mesh_intersect(
     uint _e3 = F32_INF;
     best_1 = Intersection {as_type<float>(_e3), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     r_2 = ray_8;
-    stack = type_13 {};
-    stack_t = type_14 {};
+    stack = type_14 {};
+    stack_t = type_15 {};
     sp_2 = 0u;
     BvhNode _e21 = mesh_node_query(g.mesh, 0u, params, nodes, _buffer_sizes);
     node = _e21;
@@ -1001,7 +1075,7 @@ Intersection bvh_mesh_intersect(
 
 Sphere load_Sphere(
     uint offset_3,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_3 + 0u];
@@ -1017,10 +1091,10 @@ Intersection sphere_intersect(
     thread uint& F32_INF
 ) {
     float t = {};
-    metal::float3 f_1 = ray_9.origin - s.center;
+    metal::float3 f_2 = ray_9.origin - s.center;
     float a_6 = metal::dot(ray_9.dir, ray_9.dir);
-    float b_7 = -(metal::dot(f_1, ray_9.dir));
-    metal::float3 l_1 = f_1 + (ray_9.dir * metal::float3(b_7 / a_6));
+    float b_7 = -(metal::dot(f_2, ray_9.dir));
+    metal::float3 l_1 = f_2 + (ray_9.dir * metal::float3(b_7 / a_6));
     float r2_ = s.radius * s.radius;
     float disc = a_6 * (r2_ - metal::dot(l_1, l_1));
     if (!((disc >= 0.0)) || !((a_6 > 0.0))) {
@@ -1028,7 +1102,7 @@ Intersection sphere_intersect(
         return Intersection {as_type<float>(_e30), {}, metal::float3(0.0, 0.0, 1.0), metal::float2 {}};
     }
     float q_2 = b_7 + (((b_7 >= 0.0) ? 1.0 : -1.0) * metal::sqrt(disc));
-    float t0_1 = (metal::dot(f_1, f_1) - r2_) / q_2;
+    float t0_1 = (metal::dot(f_2, f_2) - r2_) / q_2;
     float t1_1 = q_2 / a_6;
     t = metal::min(t0_1, t1_1);
     float _e52 = t;
@@ -1053,10 +1127,10 @@ Intersection dispatch_intersection(
     uint type_id_1,
     uint offset_4,
     Ray ray_10,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
     thread uint& F32_NEG_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1083,12 +1157,12 @@ Candidate intersect_object(
     Ray ray_11,
     Candidate best_2,
     bool shadow_1,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread uint& F32_NEG_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1127,7 +1201,7 @@ float point_error(
 
 Triangle load_triangle(
     uint slot_3,
-    device type_10 const& triangles,
+    device type_11 const& triangles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 v0_1 = triangles[slot_3 * 3u];
@@ -1171,9 +1245,9 @@ metal::float3 decode_octahedral(
     float _e14 = n_2.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n_2;
-        metal::float2 s_5 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float2 s_4 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
         metal::float3 _e29 = n_2;
-        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_5;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_4;
         float _e37 = n_2.z;
         n_2 = metal::float3(xy.x, xy.y, _e37);
     }
@@ -1194,10 +1268,10 @@ metal::float3 normal_to_world(
 Hit finish_hit(
     Ray ray_12,
     Candidate c_1,
-    device type_8 const& instances,
-    device type_10 const& triangles,
+    device type_9 const& instances,
+    device type_11 const& triangles,
     thread float& hit_error,
-    device type_16 const& attributes,
+    device type_17 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Hit hit = {};
@@ -1256,20 +1330,20 @@ uint medium_at(
     metal::float3 p_4,
     uint exclude,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread uint& F32_NEG_INF,
     thread float& hit_error,
-    device type_16 const& attributes,
+    device type_17 const& attributes,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint inside = {};
     float nearest = {};
-    uint i_2 = {};
+    uint i_3 = {};
     if (!(HAS_MEDIA)) {
         return 0u;
     }
@@ -1281,22 +1355,22 @@ uint medium_at(
     uint _e23 = F32_INF;
     nearest = as_type<float>(_e23);
     uint end_1 = frame_1.medium_count;
-    i_2 = 0u;
+    i_3 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e59 = i_2;
-            i_2 = _e59 + 1u;
+            uint _e59 = i_3;
+            i_3 = _e59 + 1u;
         }
         loop_init_2 = false;
-        uint _e29 = i_2;
+        uint _e29 = i_3;
         if (_e29 >= end_1) {
             break;
         }
-        uint _e32 = i_2;
+        uint _e32 = i_3;
         uint slot_5 = params[frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE)];
         if (slot_5 != exclude) {
             uint _e41 = F32_INF;
@@ -1320,12 +1394,12 @@ Candidate intersect_scene(
     Ray ray_13,
     bool shadow_2,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread uint& F32_NEG_INF,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
@@ -1430,7 +1504,7 @@ Candidate intersect_scene(
 
 Skybox load_Skybox(
     uint offset_5,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_5 + 0u];
@@ -1444,9 +1518,9 @@ int naga_f2i32(float value) {
 }
 
 int i32_from_f32_(
-    float x_1
+    float x_3
 ) {
-    return ((as_type<uint>(x_1) & 2147483647u) > 2139095040u) ? 0 : naga_f2i32(metal::min(metal::max(x_1, -2147483600.0), 2147483500.0));
+    return ((as_type<uint>(x_3) & 2147483647u) > 2139095040u) ? 0 : naga_f2i32(metal::min(metal::max(x_3, -2147483600.0), 2147483500.0));
 }
 
 int naga_div(int lhs, int rhs) {
@@ -1463,17 +1537,17 @@ int rem_i32_(
 }
 
 int wrap_texel(
-    int x_2,
+    int x_4,
     int n_4,
     uint mode
 ) {
-    int _e3 = rem_i32_(x_2, n_4);
+    int _e3 = rem_i32_(x_4, n_4);
     int _e5 = rem_i32_(as_type<int>(as_type<uint>(_e3) + as_type<uint>(n_4)), n_4);
-    int _e8 = rem_i32_(x_2, as_type<int>(as_type<uint>(2) * as_type<uint>(n_4)));
+    int _e8 = rem_i32_(x_4, as_type<int>(as_type<uint>(2) * as_type<uint>(n_4)));
     int _e14 = rem_i32_(as_type<int>(as_type<uint>(_e8) + as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_4)))), as_type<int>(as_type<uint>(2) * as_type<uint>(n_4)));
     int mirror = (_e14 >= n_4) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_4))) - as_type<uint>(1))) - as_type<uint>(_e14)) : _e14;
     int wrapped = (mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5;
-    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(x_2, 0), as_type<int>(as_type<uint>(n_4) - as_type<uint>(1))) : wrapped;
+    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(x_4, 0), as_type<int>(as_type<uint>(n_4) - as_type<uint>(1))) : wrapped;
 }
 
 float srgb_channel(
@@ -1489,8 +1563,8 @@ metal::float4 texel_at(
     uint t_1,
     uint xi,
     uint yi,
-    device type_4 const& params,
-    device type_4 const& texels,
+    device type_5 const& params,
+    device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint base_4 = params[t_1];
@@ -1519,8 +1593,8 @@ metal::float4 texel_at(
 metal::float4 sample_texture(
     uint t_2,
     metal::float2 uv,
-    device type_4 const& params,
-    device type_4 const& texels,
+    device type_5 const& params,
+    device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e6 = params[t_2 + 1u];
@@ -1532,10 +1606,10 @@ metal::float4 sample_texture(
     uint mv = (sampler >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK;
     metal::float2 q_5 = uv * metal::float2(static_cast<float>(wi), static_cast<float>(hi_2));
     metal::float2 p_7 = ((sampler & TEXTURE_NEAREST) != 0u) ? metal::floor(q_5) : (q_5 - metal::float2(0.5));
-    metal::float2 f_2 = metal::floor(p_7);
-    metal::float2 fr = p_7 - f_2;
-    int _e47 = i32_from_f32_(f_2.x);
-    int _e49 = i32_from_f32_(f_2.y);
+    metal::float2 f_3 = metal::floor(p_7);
+    metal::float2 fr = p_7 - f_3;
+    int _e47 = i32_from_f32_(f_3.x);
+    int _e49 = i32_from_f32_(f_3.y);
     int _e50 = wrap_texel(_e47, wi, mu);
     uint x0_ = static_cast<uint>(_e50);
     int _e54 = wrap_texel(as_type<int>(as_type<uint>(_e47) + as_type<uint>(1)), wi, mu);
@@ -1556,8 +1630,8 @@ metal::float4 sample_texture(
 metal::float3 skybox(
     Skybox b_5,
     Ray ray_14,
-    device type_4 const& params,
-    device type_4 const& texels,
+    device type_5 const& params,
+    device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 _e3 = normalize_vec3f(ray_14.dir);
@@ -1573,8 +1647,8 @@ metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_6,
     Ray ray_15,
-    device type_4 const& params,
-    device type_4 const& texels,
+    device type_5 const& params,
+    device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Skybox _e2 = load_Skybox(offset_6, params, _buffer_sizes);
@@ -1585,8 +1659,8 @@ metal::float3 dispatch_miss(
 metal::float3 miss(
     Ray ray_16,
     constant FrameUniforms& frame,
-    device type_4 const& params,
-    device type_4 const& texels,
+    device type_5 const& params,
+    device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (!(HAS_BACKGROUND)) {
@@ -1599,7 +1673,7 @@ metal::float3 miss(
 
 Lambert load_Lambert(
     uint offset_7,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_7 + 0u];
@@ -1625,7 +1699,7 @@ uint light_count_query(
 
 PointLight load_PointLight(
     uint offset_8,
-    device type_4 const& params,
+    device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_8 + 0u];
@@ -1641,15 +1715,15 @@ PointLight load_PointLight(
 }
 
 metal::float3 step_toward(
-    metal::float3 x_3,
+    metal::float3 x_5,
     metal::float3 s_1
 ) {
-    metal::uint3 bits_1 = as_type<metal::uint3>(x_3);
-    metal::bool3 up_1 = (metal::sign(x_3) * metal::sign(s_1)) > metal::float3(0.0);
+    metal::uint3 bits_1 = as_type<metal::uint3>(x_5);
+    metal::bool3 up_1 = (metal::sign(x_5) * metal::sign(s_1)) > metal::float3(0.0);
     metal::float3 stepped = as_type<metal::float3>(metal::select(bits_1 - metal::uint3(1u), bits_1 + metal::uint3(1u), up_1));
     metal::float3 from_zero = metal::select(metal::float3(-0.000000000000000000000000000000000000011754944), metal::float3(0.000000000000000000000000000000000000011754944), s_1 > metal::float3(0.0));
-    metal::float3 moved = metal::select(stepped, from_zero, x_3 == metal::float3(0.0));
-    return metal::select(x_3, moved, !((s_1 == metal::float3(0.0))));
+    metal::float3 moved = metal::select(stepped, from_zero, x_5 == metal::float3(0.0));
+    return metal::select(x_5, moved, !((s_1 == metal::float3(0.0))));
 }
 
 metal::float3 offset_origin(
@@ -1657,8 +1731,8 @@ metal::float3 offset_origin(
     metal::float3 n_5,
     float error
 ) {
-    float d_3 = (2.0 * error) * ((metal::abs(n_5.x) + metal::abs(n_5.y)) + metal::abs(n_5.z));
-    metal::float3 offset_14 = n_5 * metal::float3(d_3);
+    float d_4 = (2.0 * error) * ((metal::abs(n_5.x) + metal::abs(n_5.y)) + metal::abs(n_5.z));
+    metal::float3 offset_14 = n_5 * metal::float3(d_4);
     metal::float3 _e17 = step_toward(p_5 + offset_14, offset_14);
     return _e17;
 }
@@ -1704,12 +1778,12 @@ float shadow_query(
     metal::float3 dir_1,
     float dist_1,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread uint& F32_NEG_INF,
     thread float& hit_error,
     thread uint& ray_count,
@@ -1725,12 +1799,12 @@ LightSample point_light(
     metal::float3 position_2,
     metal::float3 normal_2,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread uint& F32_NEG_INF,
     thread float& hit_error,
     thread uint& ray_count,
@@ -1756,12 +1830,12 @@ LightSample dispatch_light(
     metal::float3 position_3,
     metal::float3 normal_3,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread uint& F32_NEG_INF,
     thread float& hit_error,
     thread uint& ray_count,
@@ -1773,26 +1847,26 @@ LightSample dispatch_light(
 }
 
 LightSample sample_light_query(
-    uint i_3,
+    uint i_4,
     metal::float3 position_4,
     metal::float3 normal_4,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread uint& F32_NEG_INF,
     thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     FrameUniforms frame_4 = frame;
-    if (i_3 >= frame_4.light_count) {
+    if (i_4 >= frame_4.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry = frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE);
+    uint entry = frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE);
     uint _e22 = params[entry];
     uint _e27 = params[entry + 1u];
     LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
@@ -1804,38 +1878,38 @@ metal::float3 lambert_shade(
     Ray ray_18,
     Hit hit_2,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread uint& F32_NEG_INF,
     thread float& hit_error,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 color = {};
-    uint i_4 = {};
+    uint i_5 = {};
     metal::float3 _e3 = shading_normal(ray_18, hit_2);
     color = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
-    i_4 = 0u;
+    i_5 = 0u;
     uint2 loop_bound_7 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (metal::all(loop_bound_7 == uint2(0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e30 = i_4;
-            i_4 = _e30 + 1u;
+            uint _e30 = i_5;
+            i_5 = _e30 + 1u;
         }
         loop_init_3 = false;
-        uint _e10 = i_4;
+        uint _e10 = i_5;
         if (_e10 >= _e8) {
             break;
         }
-        uint _e12 = i_4;
+        uint _e12 = i_5;
         LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
         metal::float3 _e16 = color;
         color = _e16 + (((m_2.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
@@ -1851,12 +1925,12 @@ metal::float3 dispatch_closest_hit(
     Hit hit_3,
     metal::float3 secondary,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread uint& F32_NEG_INF,
     thread float& hit_error,
     thread uint& ray_count,
@@ -1871,15 +1945,15 @@ metal::float3 shade_direct(
     Ray ray_20,
     Candidate c_3,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread uint& F32_NEG_INF,
     thread float& hit_error,
-    device type_16 const& attributes,
+    device type_17 const& attributes,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1903,7 +1977,7 @@ metal::float3 through_medium(
     Ray ray_22,
     float t_4,
     metal::float3 radiance_1,
-    device type_8 const& instances,
+    device type_9 const& instances,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (!(HAS_MEDIA)) {
@@ -1959,25 +2033,25 @@ metal::float3 spawn_origin(
 metal::float3 trace(
     Ray camera_ray,
     constant FrameUniforms& frame,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread uint& F32_NEG_INF,
     thread float& hit_error,
-    device type_16 const& attributes,
+    device type_17 const& attributes,
     thread uint& ray_count,
-    device type_4 const& texels,
-    thread type_18& spawn_dirs,
-    thread type_18& spawn_weights,
+    device type_5 const& texels,
+    thread type_19& spawn_dirs,
+    thread type_19& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 radiance_2 = {};
     float t_5 = {};
-    type_19 stack_1 = {};
+    type_20 stack_1 = {};
     uint depth = {};
     Ray ray_24 = {};
     metal::float3 value = {};
@@ -1993,8 +2067,8 @@ metal::float3 trace(
     metal::float3 radiance_3 = {};
     float t_6 = {};
     Hit hit_6 = {};
-    Frame f = {};
-    uint i_5 = {};
+    Frame f_1 = {};
+    uint i_6 = {};
     uint medium = {};
     if (!(HAS_SECONDARY_RAYS)) {
         Candidate _e4 = intersect_scene(camera_ray, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
@@ -2015,7 +2089,7 @@ metal::float3 trace(
         metal::float3 _e22 = through_medium(camera_ray, _e20, _e21, instances, _buffer_sizes);
         return _e22;
     }
-    stack_1 = type_19 {};
+    stack_1 = type_20 {};
     depth = 0u;
     ray_24 = camera_ray;
     value = metal::float3(0.0);
@@ -2092,33 +2166,33 @@ metal::float3 trace(
                         Hit _e142 = hit_6;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_18 {}, type_18 {}, n_11, 0u};
-                        i_5 = 0u;
+                        f_1 = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_19 {}, type_19 {}, n_11, 0u};
+                        i_6 = 0u;
                         uint2 loop_bound_9 = uint2(4294967295u);
                         bool loop_init_4 = true;
                         while(true) {
                             if (metal::all(loop_bound_9 == uint2(0u))) { break; }
                             loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                             if (!loop_init_4) {
-                                uint _e175 = i_5;
-                                i_5 = _e175 + 1u;
+                                uint _e175 = i_6;
+                                i_6 = _e175 + 1u;
                             }
                             loop_init_4 = false;
-                            uint _e155 = i_5;
+                            uint _e155 = i_6;
                             if (_e155 >= n_11) {
                                 break;
                             }
-                            uint _e158 = i_5;
-                            uint _e162 = i_5;
+                            uint _e158 = i_6;
+                            uint _e162 = i_6;
                             metal::float3 _e165 = spawn_dirs.inner[_e162];
-                            f.dirs.inner[metal::min(_e158, 0u)] = _e165;
-                            uint _e167 = i_5;
-                            uint _e171 = i_5;
+                            f_1.dirs.inner[metal::min(_e158, 0u)] = _e165;
+                            uint _e167 = i_6;
+                            uint _e171 = i_6;
                             metal::float3 _e174 = spawn_weights.inner[_e171];
-                            f.weights.inner[metal::min(_e167, 0u)] = _e174;
+                            f_1.weights.inner[metal::min(_e167, 0u)] = _e174;
                         }
                         uint _e178 = depth;
-                        Frame _e182 = f;
+                        Frame _e182 = f_1;
                         stack_1.inner[metal::min(_e178, 3u)] = _e182;
                         uint _e183 = depth;
                         depth = _e183 + 1u;
@@ -2166,11 +2240,11 @@ metal::float3 trace(
         uint _e241 = stack_1.inner[metal::min(top_1, 3u)].next;
         uint _e246 = stack_1.inner[metal::min(top_1, 3u)].count;
         if (_e241 < _e246) {
-            uint i_6 = stack_1.inner[metal::min(top_1, 3u)].next;
-            stack_1.inner[metal::min(top_1, 3u)].next = i_6 + 1u;
+            uint i_8 = stack_1.inner[metal::min(top_1, 3u)].next;
+            stack_1.inner[metal::min(top_1, 3u)].next = i_8 + 1u;
             Ray parent = stack_1.inner[metal::min(top_1, 3u)].ray;
             Hit hit_9 = stack_1.inner[metal::min(top_1, 3u)].hit;
-            metal::float3 dir_6 = stack_1.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_6, 0u)];
+            metal::float3 dir_6 = stack_1.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_8, 0u)];
             medium = parent.medium;
             float _e283 = stack_1.inner[metal::min(top_1, 3u)].error;
             metal::float3 _e284 = spawn_origin(hit_9, _e283, dir_6);
@@ -2197,9 +2271,9 @@ metal::float3 trace(
 }
 
 metal::bool3 is_finite_vec3f(
-    metal::float3 x_4
+    metal::float3 x_6
 ) {
-    return (as_type<metal::uint3>(x_4) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
+    return (as_type<metal::uint3>(x_6) & metal::uint3(2147483647u)) < metal::uint3(2139095040u);
 }
 
 metal::float3 finite_or_zero(
@@ -2210,26 +2284,27 @@ metal::float3 finite_or_zero(
 }
 
 void render_pixel(
-    metal::uint2 pixel_3,
+    metal::uint2 pixel_4,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread uint& F32_NEG_INF,
     thread float& hit_error,
-    device type_16 const& attributes,
+    device type_17 const& attributes,
     thread uint& ray_count,
-    device type_4 const& texels,
-    thread type_18& spawn_dirs,
-    thread type_18& spawn_weights,
+    device type_5 const& texels,
+    thread type_19& spawn_dirs,
+    thread type_19& spawn_weights,
     thread uint& spawn_count,
-    device type_22& counters,
-    device type_10& accum,
+    device type_23& counters,
+    device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 sum = {};
@@ -2257,9 +2332,9 @@ void render_pixel(
             break;
         }
         uint _e18 = s_2;
-        uint sample_3 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
-        rng_seed(pixel_3, sample_3, frame_5.seed, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3, tile, rng_state, params, F32_INF, _buffer_sizes);
+        uint sample_4 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
+        rng_seed(pixel_4, sample_4, frame_5.seed, scratch, rng_state);
+        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4, tile, scratch, rng_state, params, F32_INF, _buffer_sizes);
         ray_25 = _e23;
         ray_25.depth = 0u;
         ray_25.kind = RAY_CAMERA;
@@ -2286,10 +2361,10 @@ void render_pixel(
     metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
     uint _e63 = bad;
     if (tile_2.frame == 0u) {
-        accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x] = _e62;
+        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e62;
     } else {
-        metal::float4 _e69 = accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x];
-        accum[(pixel_3.y * tile_2.image_size.x) + pixel_3.x] = _e69 + _e62;
+        metal::float4 _e69 = accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x];
+        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e69 + _e62;
     }
     if (_e63 > 0u) {
         metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
@@ -2301,23 +2376,24 @@ void render_invocation(
     metal::uint2 id_1,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& rng_state,
-    device type_4 const& params,
+    device type_5 const& params,
     thread uint& F32_INF,
-    device type_8 const& instances,
-    device type_9 const& nodes,
-    device type_10 const& triangles,
-    thread type_12& traversal_stack,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
     thread uint& F32_NEG_INF,
     thread float& hit_error,
-    device type_16 const& attributes,
+    device type_17 const& attributes,
     thread uint& ray_count,
-    device type_4 const& texels,
-    thread type_18& spawn_dirs,
-    thread type_18& spawn_weights,
+    device type_5 const& texels,
+    thread type_19& spawn_dirs,
+    thread type_19& spawn_weights,
     thread uint& spawn_count,
-    device type_22& counters,
-    device type_10& accum,
+    device type_23& counters,
+    device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     TileParams tile_3 = tile;
@@ -2325,7 +2401,7 @@ void render_invocation(
     if (metal::any(_e3 >= tile_3.extent)) {
         return;
     }
-    render_pixel(tile_3.origin + _e3, tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_pixel(tile_3.origin + _e3, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }
 
@@ -2335,25 +2411,26 @@ struct renderInput {
   metal::uint3 gid [[thread_position_in_grid]]
 , constant TileParams& tile [[buffer(1)]]
 , constant FrameUniforms& frame [[buffer(0)]]
-, device type_4 const& params [[buffer(6)]]
-, device type_8 const& instances [[buffer(3)]]
-, device type_9 const& nodes [[buffer(2)]]
-, device type_10 const& triangles [[buffer(4)]]
-, device type_16 const& attributes [[buffer(5)]]
-, device type_4 const& texels [[buffer(7)]]
-, device type_22& counters [[buffer(9)]]
-, device type_10& accum [[buffer(8)]]
+, device type_5 const& params [[buffer(6)]]
+, device type_9 const& instances [[buffer(3)]]
+, device type_10 const& nodes [[buffer(2)]]
+, device type_11 const& triangles [[buffer(4)]]
+, device type_17 const& attributes [[buffer(5)]]
+, device type_5 const& texels [[buffer(7)]]
+, device type_23& counters [[buffer(9)]]
+, device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
+    type_3 scratch = {};
     uint rng_state = {};
     uint F32_INF = 2139095040u;
-    type_12 traversal_stack = {};
+    type_13 traversal_stack = {};
     uint F32_NEG_INF = 4286578688u;
     float hit_error = {};
     uint ray_count = {};
-    type_18 spawn_dirs = {};
-    type_18 spawn_weights = {};
+    type_19 spawn_dirs = {};
+    type_19 spawn_weights = {};
     uint spawn_count = {};
-    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
 }

@@ -161,7 +161,10 @@ const WORKGROUP_WIDTH: u32 = 8u;
 const WORKGROUP_HEIGHT: u32 = 8u;
 const NO_HIT: u32 = 4294967295u;
 const SCATTER: u32 = 1000003u;
+const SCRATCH_RNG_INDEX: u32 = 12u;
+const SCRATCH_RNG_SEED: u32 = 13u;
 const SUPERSAMPLING_GRID: u32 = 2u;
+const HALF_WORD_BITS: u32 = 16u;
 const RAY_CAMERA: u32 = 0u;
 const HAS_MEDIA: bool = false;
 const MEDIUM_ENTRY_STRIDE: u32 = 1u;
@@ -203,6 +206,7 @@ const RAY_SECONDARY: u32 = 1u;
 var<uniform> tile: TileParams;
 @group(0) @binding(0) 
 var<uniform> frame: FrameUniforms;
+var<private> scratch: array<u32, 14>;
 var<private> rng_state: u32;
 @group(0) @binding(6) 
 var<storage> params: array<u32>;
@@ -273,25 +277,23 @@ fn scattered_local(id: vec2<u32>) -> vec2<u32> {
 }
 
 fn pcg_hash(x: u32) -> u32 {
-    let state = ((x * 747796405u) + 2891336453u);
-    let word = (((state >> (((state >> 28u) + 4u) & 31u)) ^ state) * 277803737u);
+    let state_1 = ((x * 747796405u) + 2891336453u);
+    let word = (((state_1 >> (((state_1 >> 28u) + 4u) & 31u)) ^ state_1) * 277803737u);
     return ((word >> 22u) ^ word);
 }
 
-fn rng_seed(pixel: vec2<u32>, sample: u32, seed: u32) {
-    var h: u32;
+fn rng_resume(pixel: vec2<u32>, sample: u32, seed: u32, state: u32) {
+    scratch[min(SCRATCH_RNG_INDEX, 13u)] = sample;
+    let _e12 = pcg_hash(seed);
+    let _e14 = pcg_hash((pixel.y ^ _e12));
+    let _e16 = pcg_hash((pixel.x ^ _e14));
+    scratch[min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    rng_state = state;
+    return;
+}
 
-    let _e5 = pcg_hash(seed);
-    let _e7 = pcg_hash((sample ^ _e5));
-    let _e9 = pcg_hash((pixel.y ^ _e7));
-    let _e11 = pcg_hash((pixel.x ^ _e9));
-    h = _e11;
-    let _e13 = h;
-    if (_e13 == 0u) {
-        h = 1u;
-    }
-    let _e17 = h;
-    rng_state = _e17;
+fn rng_seed(pixel_1: vec2<u32>, sample_1: u32, seed_1: u32) {
+    rng_resume(pixel_1, sample_1, seed_1, 0u);
     return;
 }
 
@@ -314,13 +316,68 @@ fn image_size_query() -> vec2<u32> {
     return _e1.image_size;
 }
 
+fn laine_karras(x_1: u32, seed_2: u32) -> u32 {
+    var v: u32;
+
+    v = (x_1 + seed_2);
+    let _e4 = v;
+    let _e5 = v;
+    v = (_e4 ^ (_e5 * 1817228412u));
+    let _e9 = v;
+    let _e10 = v;
+    v = (_e9 ^ (_e10 * 3090095698u));
+    let _e14 = v;
+    let _e15 = v;
+    v = (_e14 ^ (_e15 * 3350193720u));
+    let _e19 = v;
+    let _e20 = v;
+    v = (_e19 ^ (_e20 * 2367878886u));
+    let _e24 = v;
+    return _e24;
+}
+
+fn sobol_second_reversed(i: u32) -> u32 {
+    var f: u32;
+
+    f = i;
+    let _e2 = f;
+    let _e3 = f;
+    f = (_e2 ^ ((_e3 >> 1u) & 1431655765u));
+    let _e9 = f;
+    let _e10 = f;
+    f = (_e9 ^ ((_e10 >> 2u) & 858993459u));
+    let _e16 = f;
+    let _e17 = f;
+    f = (_e16 ^ ((_e17 >> 4u) & 252645135u));
+    let _e23 = f;
+    let _e24 = f;
+    f = (_e23 ^ ((_e24 >> 8u) & 16711935u));
+    let _e30 = f;
+    let _e31 = f;
+    f = (_e30 ^ (_e31 >> (HALF_WORD_BITS & 31u)));
+    let _e37 = f;
+    return _e37;
+}
+
 fn rand_next() -> f32 {
-    let _e1 = rng_state;
-    let s_3 = ((_e1 * 747796405u) + 2891336453u);
-    rng_state = s_3;
-    let word_1 = (((s_3 >> (((s_3 >> 28u) + 4u) & 31u)) ^ s_3) * 277803737u);
-    let r_4 = ((word_1 >> 22u) ^ word_1);
-    return (f32((r_4 >> 8u)) * (1f / 16777216f));
+    var x_2: u32;
+
+    let d_1 = rng_state;
+    rng_state = (d_1 + 1u);
+    let _e10 = scratch[min(SCRATCH_RNG_SEED, 13u)];
+    let _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
+    let _e22 = scratch[min(SCRATCH_RNG_INDEX, 13u)];
+    let _e24 = laine_karras(reverseBits(_e22), _e16);
+    let i_7 = reverseBits(_e24);
+    x_2 = i_7;
+    if ((d_1 & 1u) != 0u) {
+        let _e31 = sobol_second_reversed(i_7);
+        x_2 = _e31;
+    }
+    let scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
+    let _e45 = x_2;
+    let _e46 = laine_karras(_e45, scramble);
+    return (f32((reverseBits(_e46) >> 8u)) * (1f / 16777216f));
 }
 
 fn rand2_next() -> vec2<f32> {
@@ -329,33 +386,33 @@ fn rand2_next() -> vec2<f32> {
     return vec2<f32>(_e0, _e1);
 }
 
-fn normalize_vec3f(v: vec3<f32>) -> vec3<f32> {
-    return select(vec3(0f), normalize(v), (dot(v, v) >= 0.000000000000000000000000000000000000011754944f));
+fn normalize_vec3f(v_1: vec3<f32>) -> vec3<f32> {
+    return select(vec3(0f), normalize(v_1), (dot(v_1, v_1) >= 0.000000000000000000000000000000000000011754944f));
 }
 
-fn supersampled_ray(cam: SupersampledPinhole, pixel_1: vec2<u32>, sample_1: u32) -> Ray {
+fn supersampled_ray(cam: SupersampledPinhole, pixel_2: vec2<u32>, sample_2: u32) -> Ray {
     let _e3 = image_size_query();
     let size_1 = vec2<f32>(_e3);
-    let _e8 = rem_u32_(sample_1, (SUPERSAMPLING_GRID * SUPERSAMPLING_GRID));
+    let _e8 = rem_u32_(sample_2, (SUPERSAMPLING_GRID * SUPERSAMPLING_GRID));
     let _e10 = rem_u32_(_e8, SUPERSAMPLING_GRID);
     let _e13 = div_u32_(_e8, SUPERSAMPLING_GRID);
     let stratum = vec2<f32>(f32(_e10), f32(_e13));
     let _e16 = rand2_next();
     let offset_13 = ((stratum + _e16) / vec2(f32(SUPERSAMPLING_GRID)));
-    let ndc = ((((vec2<f32>(pixel_1) + offset_13) / size_1) * vec2(2f)) - vec2(1f));
+    let ndc = ((((vec2<f32>(pixel_2) + offset_13) / size_1) * vec2(2f)) - vec2(1f));
     let _e34 = normalize_vec3f((cam.look_at - cam.position));
     let _e37 = normalize_vec3f(cross(_e34, cam.up));
     let up = cross(_e37, _e34);
-    let h_1 = tan((radians(cam.fov) * 0.5f));
+    let h = tan((radians(cam.fov) * 0.5f));
     let aspect = (size_1.x / size_1.y);
-    let _e58 = normalize_vec3f(((_e34 + (_e37 * vec3(((ndc.x * h_1) * aspect)))) - (up * vec3((ndc.y * h_1)))));
+    let _e58 = normalize_vec3f(((_e34 + (_e37 * vec3(((ndc.x * h) * aspect)))) - (up * vec3((ndc.y * h)))));
     let _e62 = F32_INF;
     return Ray(cam.position, 0f, _e58, bitcast<f32>(_e62), 0u, 0u, 0u);
 }
 
-fn dispatch_ray_generation(type_id: u32, offset_1: u32, pixel_2: vec2<u32>, sample_2: u32) -> Ray {
+fn dispatch_ray_generation(type_id: u32, offset_1: u32, pixel_3: vec2<u32>, sample_3: u32) -> Ray {
     let _e3 = load_SupersampledPinhole(offset_1);
-    let _e4 = supersampled_ray(_e3, pixel_2, sample_2);
+    let _e4 = supersampled_ray(_e3, pixel_3, sample_3);
     return _e4;
 }
 
@@ -368,34 +425,34 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
     r = ray;
     let o = vec4<f32>(ray.origin, 1f);
-    let d_1 = vec4<f32>(ray.dir, 0f);
+    let d_2 = vec4<f32>(ray.dir, 0f);
     r.origin = vec3<f32>(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
-    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_1), dot(inst.world_to_object_1_, d_1), dot(inst.world_to_object_2_, d_1));
+    r.dir = vec3<f32>(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     let _e25 = r;
     return _e25;
 }
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_4 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_4 * tiny), (abs(d) < tiny));
+    let s_3 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_3 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
 fn prepare_triangle_ray(ray_1: Ray) -> TriangleRay {
-    let d_2 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
-    let ad = abs(d_2);
+    let d_3 = select(ray_1.dir, vec3(0f), (abs(ray_1.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
+    let ad = abs(d_3);
     let y_gt = (ad.y > ad.x);
     let kz = select(select(0u, 1u, y_gt), 2u, (ad.z > select(ad.x, ad.y, y_gt)));
     let kx0_ = select((kz + 1u), 0u, (kz == 2u));
     let ky0_ = select((kz + 2u), (kz - 1u), (kz >= 1u));
-    let dz = d_2[min(kz, 2u)];
+    let dz = d_3[min(kz, 2u)];
     let flip = (dz < 0f);
     let kx = select(kx0_, ky0_, flip);
     let ky = select(ky0_, kx0_, flip);
     let inf_bits = vec3(2139095040u);
-    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_2) & vec3(2147483647u)) < inf_bits)));
-    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_2[min(kx, 2u)] / dz), (d_2[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
+    let finite = (all(((bitcast<vec3<u32>>(ray_1.origin) & vec3(2147483647u)) < inf_bits)) && all(((bitcast<vec3<u32>>(d_3) & vec3(2147483647u)) < inf_bits)));
+    return TriangleRay(ray_1.origin, kx, ky, kz, vec3<f32>((d_3[min(kx, 2u)] / dz), (d_3[min(ky, 2u)] / dz), (1f / dz)), (finite && !((dz == 0f))));
 }
 
 fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32> {
@@ -412,15 +469,15 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
     let cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
-    let v_1 = ((ax * cy) - (ay * cx));
+    let v_2 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
-    let outside = ((((u < 0f) || (v_1 < 0f)) || (w < 0f)) && (((u > 0f) || (v_1 > 0f)) || (w > 0f)));
-    let det = ((u + v_1) + w);
+    let outside = ((((u < 0f) || (v_2 < 0f)) || (w < 0f)) && (((u > 0f) || (v_2 > 0f)) || (w > 0f)));
+    let det = ((u + v_2) + w);
     let rcp = (1f / det);
-    let t_7 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_1 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    let t_7 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
     let hit_7 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_7 >= tmin)) && (t_7 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_7, (v_1 * rcp), (w * rcp)), hit_7);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_7, (v_2 * rcp), (w * rcp)), hit_7);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -589,7 +646,7 @@ fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     return _e5;
 }
 
-fn mesh_node_query(m: u32, i: u32) -> BvhNode {
+fn mesh_node_query(m: u32, i_1: u32) -> BvhNode {
     var lo_1: vec3<f32>;
     var hi_1: vec3<f32>;
     var reference: u32;
@@ -601,11 +658,11 @@ fn mesh_node_query(m: u32, i: u32) -> BvhNode {
     let _e10 = node_frame_hi(header_2);
     hi_1 = _e10;
     reference = header_2.a;
-    if (i >= 2u) {
-        let n_9 = nodes[(base_2 + (i >> 1u))];
+    if (i_1 >= 2u) {
+        let n_9 = nodes[(base_2 + (i_1 >> 1u))];
         q_1 = bitcast<vec3<u32>>(n_9.min);
         reference = n_9.a;
-        if ((i & 1u) != 0u) {
+        if ((i_1 & 1u) != 0u) {
             q_1 = bitcast<vec3<u32>>(n_9.max);
             reference = n_9.b;
         }
@@ -658,9 +715,9 @@ fn bvh_mesh_enter(ray_6: Ray, n_1: BvhNode, tmax_4: f32) -> f32 {
     return select(bitcast<f32>(_e7), _e5.x, ((_e5.x <= _e5.y) && (_e5.x <= tmax_4)));
 }
 
-fn mesh_triangle_query(m_1: u32, i_1: u32) -> Triangle {
+fn mesh_triangle_query(m_1: u32, i_2: u32) -> Triangle {
     let _e6 = params[(m_1 + 1u)];
-    let slot_4 = (_e6 + i_1);
+    let slot_4 = (_e6 + i_2);
     let _e12 = triangles[(slot_4 * 3u)];
     let _e20 = triangles[((slot_4 * 3u) + 1u)];
     let _e28 = triangles[((slot_4 * 3u) + 2u)];
@@ -692,15 +749,15 @@ fn intersect_triangle(ray_7: Ray, tri: Triangle) -> Intersection {
     let _e86 = (_e80[kx_1] - (sx * _e80[kz_1]));
     let _e87 = (_e80[ky_1] - (sy * _e80[kz_1]));
     let u_1 = ((_e86 * _e78) - (_e87 * _e77));
-    let v_2 = ((_e68 * _e87) - (_e69 * _e86));
+    let v_3 = ((_e68 * _e87) - (_e69 * _e86));
     let w_1 = ((_e77 * _e69) - (_e78 * _e68));
-    let det_1 = ((u_1 + v_2) + w_1);
+    let det_1 = ((u_1 + v_3) + w_1);
     let _e112 = (1f / det_1);
-    let t_8 = ((((u_1 * (sz * _e62[kz_1])) + (v_2 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
-    let hit_8 = (((((all(((bitcast<vec3<u32>>(ray_7.origin) & vec3(2147483647u)) < _e10)) && all(((bitcast<vec3<u32>>(ray_7.dir) & vec3(2147483647u)) < _e10))) && (dz_1 != 0f)) && !(((((u_1 < 0f) || (v_2 < 0f)) || (w_1 < 0f)) && (((u_1 > 0f) || (v_2 > 0f)) || (w_1 > 0f))))) && !((det_1 == 0f))) && ((t_8 >= ray_7.tmin) && (t_8 <= ray_7.tmax)));
+    let t_8 = ((((u_1 * (sz * _e62[kz_1])) + (v_3 * (sz * _e71[kz_1]))) + (w_1 * (sz * _e80[kz_1]))) * _e112);
+    let hit_8 = (((((all(((bitcast<vec3<u32>>(ray_7.origin) & vec3(2147483647u)) < _e10)) && all(((bitcast<vec3<u32>>(ray_7.dir) & vec3(2147483647u)) < _e10))) && (dz_1 != 0f)) && !(((((u_1 < 0f) || (v_3 < 0f)) || (w_1 < 0f)) && (((u_1 > 0f) || (v_3 > 0f)) || (w_1 > 0f))))) && !((det_1 == 0f))) && ((t_8 >= ray_7.tmin) && (t_8 <= ray_7.tmax)));
     let _e132 = normalize_vec3f(cross((tri.v1_ - tri.v0_), (tri.v2_ - tri.v0_)));
     let _e137 = F32_INF;
-    return Intersection(select(bitcast<f32>(_e137), t_8, hit_8), select(vec3<f32>(0f, 0f, 1f), _e132, hit_8), select(vec2(0f), vec2<f32>((v_2 * _e112), (w_1 * _e112)), hit_8));
+    return Intersection(select(bitcast<f32>(_e137), t_8, hit_8), select(vec3<f32>(0f, 0f, 1f), _e132, hit_8), select(vec2(0f), vec2<f32>((v_3 * _e112), (w_1 * _e112)), hit_8));
 }
 
 fn bvh_mesh_intersect(g: BvhMesh, ray_8: Ray) -> Intersection {
@@ -823,10 +880,10 @@ fn load_Sphere(offset_3: u32) -> Sphere {
 fn sphere_intersect(s: Sphere, ray_9: Ray) -> Intersection {
     var t: f32;
 
-    let f_1 = (ray_9.origin - s.center);
+    let f_2 = (ray_9.origin - s.center);
     let a_6 = dot(ray_9.dir, ray_9.dir);
-    let b_7 = -(dot(f_1, ray_9.dir));
-    let l_1 = (f_1 + (ray_9.dir * vec3((b_7 / a_6))));
+    let b_7 = -(dot(f_2, ray_9.dir));
+    let l_1 = (f_2 + (ray_9.dir * vec3((b_7 / a_6))));
     let r2_ = (s.radius * s.radius);
     let disc = (a_6 * (r2_ - dot(l_1, l_1)));
     if (!((disc >= 0f)) || !((a_6 > 0f))) {
@@ -834,7 +891,7 @@ fn sphere_intersect(s: Sphere, ray_9: Ray) -> Intersection {
         return Intersection(bitcast<f32>(_e30), vec3<f32>(0f, 0f, 1f), vec2<f32>());
     }
     let q_2 = (b_7 + (select(-1f, 1f, (b_7 >= 0f)) * sqrt(disc)));
-    let t0_1 = ((dot(f_1, f_1) - r2_) / q_2);
+    let t0_1 = ((dot(f_2, f_2) - r2_) / q_2);
     let t1_1 = (q_2 / a_6);
     t = min(t0_1, t1_1);
     let _e52 = t;
@@ -937,9 +994,9 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     let _e14 = n_2.z;
     if (_e14 < 0f) {
         let _e21 = n_2;
-        let s_5 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_4 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n_2;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_5);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_4);
         let _e37 = n_2.z;
         n_2 = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -1011,7 +1068,7 @@ fn finish_hit(ray_12: Ray, c_1: Candidate) -> Hit {
 fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     var inside: u32;
     var nearest: f32;
-    var i_2: u32;
+    var i_3: u32;
 
     if !(HAS_MEDIA) {
         return 0u;
@@ -1024,13 +1081,13 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     let _e23 = F32_INF;
     nearest = bitcast<f32>(_e23);
     let end_1 = frame_1.medium_count;
-    i_2 = 0u;
+    i_3 = 0u;
     loop {
-        let _e29 = i_2;
+        let _e29 = i_3;
         if (_e29 >= end_1) {
             break;
         }
-        let _e32 = i_2;
+        let _e32 = i_3;
         let slot_5 = params[(frame_1.medium_table + (_e32 * MEDIUM_ENTRY_STRIDE))];
         if (slot_5 != exclude) {
             let _e41 = F32_INF;
@@ -1046,8 +1103,8 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
             }
         }
         continuing {
-            let _e59 = i_2;
-            i_2 = (_e59 + 1u);
+            let _e59 = i_3;
+            i_3 = (_e59 + 1u);
         }
     }
     let _e62 = inside;
@@ -1158,8 +1215,8 @@ fn load_Skybox(offset_5: u32) -> Skybox {
     return Skybox(_e5, bitcast<f32>(_e10), bitcast<f32>(_e16));
 }
 
-fn i32_from_f32_(x_1: f32) -> i32 {
-    return select(i32(min(max(x_1, -2147483600f), 2147483500f)), 0i, ((bitcast<u32>(x_1) & 2147483647u) > 2139095040u));
+fn i32_from_f32_(x_3: f32) -> i32 {
+    return select(i32(min(max(x_3, -2147483600f), 2147483500f)), 0i, ((bitcast<u32>(x_3) & 2147483647u) > 2139095040u));
 }
 
 fn rem_i32_(a_4: i32, b_4: i32) -> i32 {
@@ -1168,14 +1225,14 @@ fn rem_i32_(a_4: i32, b_4: i32) -> i32 {
     return select((a_4 - (divisor_4 * (a_4 / divisor_4))), 0i, by_zero_4);
 }
 
-fn wrap_texel(x_2: i32, n_4: i32, mode: u32) -> i32 {
-    let _e3 = rem_i32_(x_2, n_4);
+fn wrap_texel(x_4: i32, n_4: i32, mode: u32) -> i32 {
+    let _e3 = rem_i32_(x_4, n_4);
     let _e5 = rem_i32_((_e3 + n_4), n_4);
-    let _e8 = rem_i32_(x_2, (2i * n_4));
+    let _e8 = rem_i32_(x_4, (2i * n_4));
     let _e14 = rem_i32_((_e8 + (2i * n_4)), (2i * n_4));
     let mirror = select(_e14, (((2i * n_4) - 1i) - _e14), (_e14 >= n_4));
     let wrapped = select(_e5, mirror, (mode == TEXTURE_WRAP_MIRROR));
-    return select(wrapped, min(max(x_2, 0i), (n_4 - 1i)), (mode == TEXTURE_WRAP_CLAMP));
+    return select(wrapped, min(max(x_4, 0i), (n_4 - 1i)), (mode == TEXTURE_WRAP_CLAMP));
 }
 
 fn srgb_channel(c_2: f32) -> f32 {
@@ -1219,10 +1276,10 @@ fn sample_texture(t_2: u32, uv: vec2<f32>) -> vec4<f32> {
     let mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
     let q_5 = (uv * vec2<f32>(f32(wi), f32(hi_2)));
     let p_7 = select((q_5 - vec2(0.5f)), floor(q_5), ((sampler_ & TEXTURE_NEAREST) != 0u));
-    let f_2 = floor(p_7);
-    let fr = (p_7 - f_2);
-    let _e47 = i32_from_f32_(f_2.x);
-    let _e49 = i32_from_f32_(f_2.y);
+    let f_3 = floor(p_7);
+    let fr = (p_7 - f_3);
+    let _e47 = i32_from_f32_(f_3.x);
+    let _e49 = i32_from_f32_(f_3.y);
     let _e50 = wrap_texel(_e47, wi, mu);
     let x0_ = u32(_e50);
     let _e54 = wrap_texel((_e47 + 1i), wi, mu);
@@ -1295,18 +1352,18 @@ fn load_PointLight(offset_8: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn step_toward(x_3: vec3<f32>, s_1: vec3<f32>) -> vec3<f32> {
-    let bits_1 = bitcast<vec3<u32>>(x_3);
-    let up_1 = ((sign(x_3) * sign(s_1)) > vec3(0f));
+fn step_toward(x_5: vec3<f32>, s_1: vec3<f32>) -> vec3<f32> {
+    let bits_1 = bitcast<vec3<u32>>(x_5);
+    let up_1 = ((sign(x_5) * sign(s_1)) > vec3(0f));
     let stepped = bitcast<vec3<f32>>(select((bits_1 - vec3(1u)), (bits_1 + vec3(1u)), up_1));
     let from_zero = select(vec3(-0.000000000000000000000000000000000000011754944f), vec3(0.000000000000000000000000000000000000011754944f), (s_1 > vec3(0f)));
-    let moved = select(stepped, from_zero, (x_3 == vec3(0f)));
-    return select(x_3, moved, !((s_1 == vec3(0f))));
+    let moved = select(stepped, from_zero, (x_5 == vec3(0f)));
+    return select(x_5, moved, !((s_1 == vec3(0f))));
 }
 
 fn offset_origin(p_5: vec3<f32>, n_5: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_3 = ((2f * error) * ((abs(n_5.x) + abs(n_5.y)) + abs(n_5.z)));
-    let offset_14 = (n_5 * vec3(d_3));
+    let d_4 = ((2f * error) * ((abs(n_5.x) + abs(n_5.y)) + abs(n_5.z)));
+    let offset_14 = (n_5 * vec3(d_4));
     let _e17 = step_toward((p_5 + offset_14), offset_14);
     return _e17;
 }
@@ -1368,12 +1425,12 @@ fn dispatch_light(type_id_3: u32, offset_9: u32, position_3: vec3<f32>, normal_3
     return _e4;
 }
 
-fn sample_light_query(i_3: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
+fn sample_light_query(i_4: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let frame_4 = frame;
-    if (i_3 >= frame_4.light_count) {
+    if (i_4 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_3 * LIGHT_ENTRY_STRIDE));
+    let entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     let _e22 = params[entry];
     let _e27 = params[(entry + 1u)];
     let _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
@@ -1382,24 +1439,24 @@ fn sample_light_query(i_3: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> L
 
 fn lambert_shade(m_2: Lambert, ray_18: Ray, hit_2: Hit) -> vec3<f32> {
     var color: vec3<f32>;
-    var i_4: u32;
+    var i_5: u32;
 
     let _e3 = shading_normal(ray_18, hit_2);
     color = vec3(0f);
     let _e8 = light_count_query();
-    i_4 = 0u;
+    i_5 = 0u;
     loop {
-        let _e10 = i_4;
+        let _e10 = i_5;
         if (_e10 >= _e8) {
             break;
         }
-        let _e12 = i_4;
+        let _e12 = i_5;
         let _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal);
         let _e16 = color;
         color = (_e16 + (((m_2.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0f))));
         continuing {
-            let _e30 = i_4;
-            i_4 = (_e30 + 1u);
+            let _e30 = i_5;
+            i_5 = (_e30 + 1u);
         }
     }
     let _e33 = color;
@@ -1480,8 +1537,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var radiance_3: vec3<f32>;
     var t_6: f32;
     var hit_6: Hit;
-    var f: Frame;
-    var i_5: u32;
+    var f_1: Frame;
+    var i_6: u32;
     var medium: u32;
 
     if !(HAS_SECONDARY_RAYS) {
@@ -1577,28 +1634,28 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                         let _e142 = hit_6;
                         let _e143 = s_error;
                         let _e145 = s_c.slot;
-                        f = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_11, 0u);
-                        i_5 = 0u;
+                        f_1 = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_11, 0u);
+                        i_6 = 0u;
                         loop {
-                            let _e155 = i_5;
+                            let _e155 = i_6;
                             if (_e155 >= n_11) {
                                 break;
                             }
-                            let _e158 = i_5;
-                            let _e162 = i_5;
+                            let _e158 = i_6;
+                            let _e162 = i_6;
                             let _e165 = spawn_dirs[_e162];
-                            f.dirs[min(_e158, 0u)] = _e165;
-                            let _e167 = i_5;
-                            let _e171 = i_5;
+                            f_1.dirs[min(_e158, 0u)] = _e165;
+                            let _e167 = i_6;
+                            let _e171 = i_6;
                             let _e174 = spawn_weights[_e171];
-                            f.weights[min(_e167, 0u)] = _e174;
+                            f_1.weights[min(_e167, 0u)] = _e174;
                             continuing {
-                                let _e175 = i_5;
-                                i_5 = (_e175 + 1u);
+                                let _e175 = i_6;
+                                i_6 = (_e175 + 1u);
                             }
                         }
                         let _e178 = depth;
-                        let _e182 = f;
+                        let _e182 = f_1;
                         stack_1[min(_e178, 3u)] = _e182;
                         let _e183 = depth;
                         depth = (_e183 + 1u);
@@ -1646,11 +1703,11 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e241 = stack_1[min(top_1, 3u)].next;
         let _e246 = stack_1[min(top_1, 3u)].count;
         if (_e241 < _e246) {
-            let i_6 = stack_1[min(top_1, 3u)].next;
-            stack_1[min(top_1, 3u)].next = (i_6 + 1u);
+            let i_8 = stack_1[min(top_1, 3u)].next;
+            stack_1[min(top_1, 3u)].next = (i_8 + 1u);
             let parent = stack_1[min(top_1, 3u)].ray;
             let hit_9 = stack_1[min(top_1, 3u)].hit;
-            let dir_6 = stack_1[min(top_1, 3u)].dirs[min(i_6, 0u)];
+            let dir_6 = stack_1[min(top_1, 3u)].dirs[min(i_8, 0u)];
             medium = parent.medium;
             let _e283 = stack_1[min(top_1, 3u)].error;
             let _e284 = spawn_origin(hit_9, _e283, dir_6);
@@ -1676,8 +1733,8 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn is_finite_vec3f(x_4: vec3<f32>) -> vec3<bool> {
-    return ((bitcast<vec3<u32>>(x_4) & vec3(2147483647u)) < vec3(2139095040u));
+fn is_finite_vec3f(x_6: vec3<f32>) -> vec3<bool> {
+    return ((bitcast<vec3<u32>>(x_6) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
 fn finite_or_zero(c_4: vec3<f32>) -> vec3<f32> {
@@ -1685,7 +1742,7 @@ fn finite_or_zero(c_4: vec3<f32>) -> vec3<f32> {
     return select(vec3(0f), c_4, _e3);
 }
 
-fn render_pixel(pixel_3: vec2<u32>) {
+fn render_pixel(pixel_4: vec2<u32>) {
     var sum: vec3<f32>;
     var bad: u32;
     var s_2: u32;
@@ -1703,9 +1760,9 @@ fn render_pixel(pixel_3: vec2<u32>) {
             break;
         }
         let _e18 = s_2;
-        let sample_3 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_3, sample_3, frame_5.seed);
-        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_3, sample_3);
+        let sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
+        rng_seed(pixel_4, sample_4, frame_5.seed);
+        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
         ray_25 = _e23;
         ray_25.depth = 0u;
         ray_25.kind = RAY_CAMERA;
@@ -1736,10 +1793,10 @@ fn render_pixel(pixel_3: vec2<u32>) {
     let _e62 = vec4<f32>(_e59, f32(frame_5.samples_per_pass));
     let _e63 = bad;
     if (tile_2.frame == 0u) {
-        accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = _e62;
+        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
     } else {
-        let _e69 = accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)];
-        accum[((pixel_3.y * tile_2.image_size.x) + pixel_3.x)] = (_e69 + _e62);
+        let _e69 = accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
+        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
     }
     if (_e63 > 0u) {
         atomicAdd((&counters[0]), _e63);
