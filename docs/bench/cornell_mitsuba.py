@@ -13,8 +13,9 @@ What it writes into OUT_DIR:
 
 - reference.exr: the scene at --ref-spp samples (in passes of at most --pass-spp, each with its
   own seed, averaged): the converged reference both renderers are measured against;
-- mitsuba.csv (`spp,seconds,rmse`, the format `rtc bench --against` reads): one render per level,
-  seeded apart from the reference, timed around `mi.render` and the evaluation of its result; a
+- mitsuba.csv (`spp,seconds,rmse`, the format `rtc bench --against` reads): one render per level
+  with --sampler (default `independent`; `ldsampler`, Mitsuba's scrambled (0, 2)-sequence, is the
+  counterpart of rtc's scrambled Sobol numbers), seeded apart from the reference, timed around `mi.render` and the evaluation of its result; a
   1-spp warm-up render first so the JIT's kernel compile is not in the times (as `rtc bench` leaves
   out pipeline creation);
 - mitsuba_<spp>.exr for the levels of --keep (default: the largest).
@@ -69,7 +70,7 @@ BALL_CENTER = (0.33, -0.7, 0.3)
 BALL_RADIUS = 0.3
 
 
-def scene_dict(mi, width, height, glass=False, max_depth_rtc=6):
+def scene_dict(mi, width, height, glass=False, max_depth_rtc=6, sampler="independent"):
     T = mi.ScalarTransform4f
 
     def quad(m):
@@ -90,7 +91,7 @@ def scene_dict(mi, width, height, glass=False, max_depth_rtc=6):
             "fov_axis": "y",
             "fov": 38.0,
             "to_world": T().look_at(origin=[0, 0, 3.4], target=[0, 0, 0], up=[0, 1, 0]),
-            "sampler": {"type": "independent"},
+            "sampler": {"type": sampler},
             "film": {
                 "type": "hdrfilm",
                 "width": width,
@@ -208,6 +209,12 @@ def main():
     p.add_argument("--variant", default=os.environ.get("MITSUBA_VARIANT", "llvm_ad_rgb"))
     p.add_argument("--keep", default="", help="levels whose image to write as mitsuba_<spp>.exr")
     p.add_argument("--glass", action="store_true", help="the scene of docs/bench/cornell_glass.rt")
+    p.add_argument(
+        "--sampler",
+        default=os.environ.get("MITSUBA_SAMPLER", "independent"),
+        help="Mitsuba's sampler for the measured levels (the reference always uses independent): "
+        "independent, stratified, multijitter, orthogonal or ldsampler",
+    )
     p.add_argument("--means", nargs="+", metavar="EXR")
     args = p.parse_args()
 
@@ -238,7 +245,13 @@ def main():
     keep = {int(x) for x in args.keep.split(",") if x} or {levels[-1]}
     os.makedirs(args.out, exist_ok=True)
     scene = mi.load_dict(scene_dict(mi, w, h, glass=args.glass))
-    print(f"mitsuba {mi.__version__}, variant {args.variant}, {w}x{h}", flush=True)
+    measured = scene
+    if args.sampler != "independent":
+        measured = mi.load_dict(scene_dict(mi, w, h, glass=args.glass, sampler=args.sampler))
+    print(
+        f"mitsuba {mi.__version__}, variant {args.variant}, sampler {args.sampler}, {w}x{h}",
+        flush=True,
+    )
 
     ref_path = os.path.join(args.out, "reference.exr")
     t = time.perf_counter()
@@ -252,12 +265,12 @@ def main():
     m = ref.reshape(-1, 3).mean(axis=0)
     print(f"reference mean R G B {m[0]:.5f} {m[1]:.5f} {m[2]:.5f}")
 
-    render(mi, dr, scene, 1, seed=7, pass_spp=1)  # warm-up: the JIT compile
+    render(mi, dr, measured, 1, seed=7, pass_spp=1)  # warm-up: the JIT compile
     rows = []
     print(f"{'spp':>7} {'seconds':>10} {'RMSE':>10}")
     for i, spp in enumerate(levels):
         t = time.perf_counter()
-        img = render(mi, dr, scene, spp, seed=1000 + i, pass_spp=args.pass_spp)
+        img = render(mi, dr, measured, spp, seed=1000 + i, pass_spp=args.pass_spp)
         seconds = time.perf_counter() - t
         rmse = math.sqrt(np.mean((img - ref) ** 2))
         rows.append((spp, seconds, rmse))
@@ -265,7 +278,10 @@ def main():
         if spp in keep:
             write_exr(mi, os.path.join(args.out, f"mitsuba_{spp}.exr"), img)
     with open(os.path.join(args.out, "mitsuba.csv"), "w") as f:
-        f.write(f"# Mitsuba {mi.__version__} {args.variant}, {w}x{h}, reference {args.ref_spp} spp\n")
+        f.write(
+            f"# Mitsuba {mi.__version__} {args.variant}, sampler {args.sampler}, {w}x{h}, "
+            f"reference {args.ref_spp} spp\n"
+        )
         f.write("spp,seconds,rmse\n")
         for spp, s, e in rows:
             f.write(f"{spp},{s:.6f},{e:.8f}\n")
