@@ -15,9 +15,9 @@ What it writes into OUT_DIR:
   own seed, averaged): the converged reference both renderers are measured against;
 - mitsuba.csv (`spp,seconds,rmse`, the format `rtc bench --against` reads): one render per level
   with --sampler (default `independent`; `ldsampler`, Mitsuba's scrambled (0, 2)-sequence, is the
-  counterpart of rtc's scrambled Sobol numbers), seeded apart from the reference, timed around `mi.render` and the evaluation of its result; a
-  1-spp warm-up render first so the JIT's kernel compile is not in the times (as `rtc bench` leaves
-  out pipeline creation);
+  counterpart of rtc's scrambled Sobol numbers), seeded apart from the reference, timed around
+  `mi.render` and the evaluation of its result; a 1-spp warm-up render first so the JIT's kernel
+  compile is not in the times (as `rtc bench` leaves out pipeline creation);
 - mitsuba_<spp>.exr for the levels of --keep (default: the largest).
 
 The scene matches the .rt file: the same world-space transforms (rtc's `quad_mesh()` is the
