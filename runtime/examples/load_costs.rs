@@ -75,6 +75,10 @@ fn main() {
         ("ubo 2 x vec4u 64K", "let j = i & 0xffeu; let v = u[j] + u[j + 1u];"),
         ("ssbo half lanes", "let j = i & 0xffeu; var v = vec4u(i, i, i, i); if ((i >> 5u) & 1u) == 0u { v = q[j] + q[j + 1u]; }"),
         ("ubo half lanes", "let j = i & 0xffeu; var v = vec4u(i, i, i, i); if ((i >> 5u) & 1u) == 0u { v = u[j] + u[j + 1u]; }"),
+        ("ssbo 2 x vec4u 16K", "let j = i & 0x3feu; let v = q[j] + q[j + 1u];"),
+        ("wg 2 x vec4u 16K", "let j = i & 0x3feu; let v = w[j] + w[j + 1u];"),
+        ("ssbo half lanes 16K", "let j = i & 0x3feu; var v = vec4u(i, i, i, i); if ((i >> 5u) & 1u) == 0u { v = q[j] + q[j + 1u]; }"),
+        ("wg half lanes 16K", "let j = i & 0x3feu; var v = vec4u(i, i, i, i); if ((i >> 5u) & 1u) == 0u { v = w[j] + w[j + 1u]; }"),
         ("8 x u32", "let v = vec4u(s[i * 4u], s[i * 4u + 1u], s[i * 4u + 2u], s[i * 4u + 3u]) + vec4u(s[i * 4u + 4u], s[i * 4u + 5u], s[i * 4u + 6u], s[i * 4u + 7u]);"),
     ];
     for (name, body) in cases {
@@ -87,6 +91,14 @@ fn main() {
             "@group(0) @binding(3) var<storage, read> d: array<vec4<u64>>;"
         } else if body.contains("u[") {
             "@group(0) @binding(4) var<uniform> u: array<vec4u, 4096>;"
+        } else if body.contains("w[") {
+            "var<workgroup> w: array<vec4u, 1024>;"
+        } else {
+            ""
+        };
+        // A workgroup array is filled from `q` by the group's invocations before the chain.
+        let fill = if body.contains("w[") {
+            "for (var k = lid; k < 1024u; k += 64u) { w[k] = q[k]; }\n    workgroupBarrier();"
         } else {
             ""
         };
@@ -96,7 +108,8 @@ fn main() {
 @group(0) @binding(2) var<storage, read_write> out: array<u32>;
 {decl}
 @compute @workgroup_size(8, 8)
-fn main(@builtin(global_invocation_id) g: vec3u) {{
+fn main(@builtin(global_invocation_id) g: vec3u, @builtin(local_invocation_index) lid: u32) {{
+    {fill}
     let id = g.y * 1024u + g.x;
     var i = (id * 2654435761u) & 0x7ffeu;
     var acc = 0u;
@@ -143,7 +156,7 @@ fn main(@builtin(global_invocation_id) g: vec3u) {{
                 resource: buf.as_entire_binding(),
             });
         }
-        if src.contains("q[") {
+        if src.contains("q[") || src.contains("w[") {
             entries.push(wgpu::BindGroupEntry {
                 binding: 1,
                 resource: buf.as_entire_binding(),
