@@ -261,8 +261,8 @@ pub const BINDINGS: &[BindingDesc] = &[
         binding: 10,
         name: "paths",
         kind: ResourceKind::StorageReadWrite,
-        element: Element::Array(FieldType::U32),
-        doc: "the wavefront model's path state: one record of `PATH_WORDS` words per pixel of the tile, stored word-major (word `w` of slot `i` at `w * path_slots + i`), then one word the stages set while a path runs",
+        element: Element::Array(FieldType::Vec4U32),
+        doc: "the wavefront model's path state: one record of `PATH_WORDS` words (a multiple of 4) per pixel of the tile, stored in 4-word chunks, chunk-major (chunk `c` of slot `i` at element `c * path_slots + i`), then one chunk whose first word the stages set while a path runs",
     },
 ];
 

@@ -654,13 +654,14 @@ impl<'g> Renderer<'g> {
             // One tile's path records in one binding, within WebGPU's default 128 MiB.
             let max = gpu.limits().max_storage_buffer_binding_size.min(128 << 20);
             tiles = wavefront_tiles(tiles, [width, height], compiled.path_words, max);
-            // The records, then the *running* word the rounds read.
+            // The records, then the chunk whose first word is the *running* word the rounds
+            // read (`paths` is an array of 16-byte chunks).
             scene.set_path_bytes(
                 u64::from(tiles.tile_width)
                     * u64::from(tiles.tile_height)
                     * u64::from(compiled.path_words)
                     * 4
-                    + 4,
+                    + 16,
             );
         }
         if let Some(limits) = options.limits {

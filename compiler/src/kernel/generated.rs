@@ -100,10 +100,15 @@ pub enum Intrinsic {
     DebugCount,
     /// `debug_counts() -> vec2u`
     DebugCounts,
-    /// `path_load(i) -> u32` (word `i` of `paths`, the wavefront model's path state)
+    /// `path_load(j, k) -> u32` (word `k` of the 4-word chunk `j` of `paths`, the wavefront
+    /// model's path state)
     PathLoad,
-    /// `path_store(i, value)`
+    /// `path_store(j, k, value)`
     PathStore,
+    /// `path_load4(j) -> vec4u` (the 4-word chunk `j` of `paths`, one load)
+    PathLoad4,
+    /// `path_store4(j, value)`
+    PathStore4,
     /// `scratch_load(i) -> u32` (a private register of the invocation, `i < SCRATCH_WORDS`)
     ScratchLoad,
     /// `scratch_store(i, value)`
@@ -116,7 +121,7 @@ pub enum Intrinsic {
 
 impl Intrinsic {
     /// Every intrinsic, in the order `rtc:abi` declares them.
-    pub const ALL: [Intrinsic; 41] = [
+    pub const ALL: [Intrinsic; 43] = [
         Intrinsic::LoadFrame,
         Intrinsic::LoadTile,
         Intrinsic::LoadNode,
@@ -154,6 +159,8 @@ impl Intrinsic {
         Intrinsic::DebugCounts,
         Intrinsic::PathLoad,
         Intrinsic::PathStore,
+        Intrinsic::PathLoad4,
+        Intrinsic::PathStore4,
         Intrinsic::ScratchLoad,
         Intrinsic::ScratchStore,
         Intrinsic::CounterAdd,
@@ -233,8 +240,10 @@ impl Intrinsic {
             Intrinsic::FlushRayCount => ("flush_ray_count", "", ""),
             Intrinsic::DebugCount => ("debug_count", "nodes: u32, primitives: u32", ""),
             Intrinsic::DebugCounts => ("debug_counts", "", "vec2u"),
-            Intrinsic::PathLoad => ("path_load", "i: u32", "u32"),
-            Intrinsic::PathStore => ("path_store", "i: u32, value: u32", ""),
+            Intrinsic::PathLoad => ("path_load", "j: u32, k: u32", "u32"),
+            Intrinsic::PathStore => ("path_store", "j: u32, k: u32, value: u32", ""),
+            Intrinsic::PathLoad4 => ("path_load4", "j: u32", "vec4u"),
+            Intrinsic::PathStore4 => ("path_store4", "j: u32, value: vec4u", ""),
             Intrinsic::ScratchLoad => ("scratch_load", "i: u32", "u32"),
             Intrinsic::ScratchStore => ("scratch_store", "i: u32, value: u32", ""),
             Intrinsic::CounterAdd => ("counter_add", "i: u32, value: u32", ""),

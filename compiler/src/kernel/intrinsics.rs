@@ -421,20 +421,42 @@ impl KernelHooks<'_> {
                 }
                 fb.load(p, span)
             }
-            I::PathLoad => self.load_binding(cx, fb, "paths", Some(arg(0)?), span)?,
-            I::PathStore => {
+            I::PathLoad | I::PathStore | I::PathLoad4 | I::PathStore4 => {
+                // `paths` is an array of `vec4u` chunks: a chunk is one access, a word the
+                // chunk's component `k`.
                 let program = self.program;
                 let paths = self.generated.binding(cx, program, abi_binding("paths")?)?;
                 let g = fb.expr(Expression::GlobalVariable(paths), span);
-                let p = fb.expr(
+                let mut p = fb.expr(
                     Expression::Access {
                         base: g,
                         index: arg(0)?,
                     },
                     span,
                 );
-                fb.store(p, arg(1)?, span);
-                return Ok(None);
+                let word = matches!(intrinsic, I::PathLoad | I::PathStore);
+                if word {
+                    // A literal component is a constant index: the driver then reads or writes
+                    // that word alone (Mesa lowers a dynamic one to a whole-chunk access).
+                    let k = arg(1)?;
+                    p = match fb.literal_u32(k) {
+                        Some(index) if index < 4 => {
+                            fb.expr(Expression::AccessIndex { base: p, index }, span)
+                        }
+                        _ => fb.expr(Expression::Access { base: p, index: k }, span),
+                    };
+                }
+                match intrinsic {
+                    I::PathStore => {
+                        fb.store(p, arg(2)?, span);
+                        return Ok(None);
+                    }
+                    I::PathStore4 => {
+                        fb.store(p, arg(1)?, span);
+                        return Ok(None);
+                    }
+                    _ => fb.load(p, span),
+                }
             }
             I::ScratchLoad | I::ScratchStore => {
                 let u = TypeCache::scalar(cx.module_mut(), Scalar::U32);

@@ -30,7 +30,10 @@
 //! Guarantees: the layout below is the one source of the path record's word offsets (they reach
 //! the kernel as `rtc:config` constants, [`config_constants`]); every stage kernel is a separate
 //! module with its own bindings, each at most WebGPU's default 8 storage buffers (tested for every
-//! example); `paths` holds `PATH_WORDS` words per slot.
+//! example); `paths` holds `PATH_WORDS` words per slot, a whole number of 4-word chunks stored
+//! chunk-major (chunk `c` of slot `i` is element `c * path_slots + i` of an array of `vec4u`, so
+//! the lanes of a SIMD batch read neighbouring elements), and every field of three words or more
+//! starts a chunk: a vector is one load, where lavapipe before Mesa 26 pays per load.
 
 use crate::link::KernelConfig;
 
@@ -92,44 +95,51 @@ impl Stage {
 /// and counted in `COUNTER_SHADOW_OVERFLOW`). At most 32: the answers are bits of one word.
 pub const SHADOW_QUERIES: u32 = 8;
 const _: () = assert!(SHADOW_QUERIES <= 32);
-/// Words of a ray in the path record: origin, tmin, dir, tmax, depth, kind, medium.
+/// Words of a ray in the path record: origin, tmin, dir, tmax (a chunk each), then depth, kind,
+/// medium.
 pub const RAY_WORDS: u32 = 11;
-/// Words of a traversal candidate: t, slot, primitive, uv, normal.
+/// Words of a traversal candidate: t, slot, primitive, uv, normal (two chunks).
 pub const CANDIDATE_WORDS: u32 = 8;
-/// Words of a recorded shadow query: origin, dir, tmax.
-pub const QUERY_WORDS: u32 = 7;
+/// Words of a recorded shadow query: origin and tmax, then dir and a word left unused (two chunks).
+pub const QUERY_WORDS: u32 = 8;
+/// Words of one chunk of `paths`: the stages load and store a record's vectors a chunk at a time.
+pub const CHUNK_WORDS: u32 = 4;
 
-/// Lays out `fields` (name, words) one after another: each name with its word offset, and the
-/// total.
+/// Lays out `fields` (name, words) one after another, a field of three words or more (or of none,
+/// whose offset is then where the next chunk starts) starting a new chunk (so its vectors load as whole chunks): each name with its word offset, and the total
+/// rounded up to whole chunks.
 fn layout(fields: &[(&'static str, u32)]) -> (Vec<(&'static str, u32)>, u32) {
-    let mut at = 0;
+    let mut at: u32 = 0;
     let offsets = fields
         .iter()
         .map(|&(name, words)| {
+            if words >= 3 || words == 0 {
+                at = at.next_multiple_of(CHUNK_WORDS);
+            }
             let offset = at;
             at += words;
             (name, offset)
         })
         .collect();
-    (offsets, at)
+    (offsets, at.next_multiple_of(CHUNK_WORDS))
 }
 
-/// The word offsets of one secondary-ray frame and its size: ray, candidate, the hit's position,
-/// geometric normal and position error (what launching a spawned ray needs), the children's
-/// weighted sum, the spawned-ray count, the next one to launch, then `max_spawn` directions and
-/// `max_spawn` weights (3 words each).
+/// The word offsets of one secondary-ray frame and its size: ray, candidate, the hit's position
+/// and position error (one chunk), geometric normal and the spawned-ray count (one chunk), the
+/// children's weighted sum and the next one to launch (one chunk), then `max_spawn` directions and
+/// `max_spawn` weights (a chunk each). The stage reads and writes a frame whole.
 fn frame_layout(c: &KernelConfig) -> (Vec<(&'static str, u32)>, u32) {
     layout(&[
         ("FRAME_RAY", RAY_WORDS),
         ("FRAME_CANDIDATE", CANDIDATE_WORDS),
         ("FRAME_POSITION", 3),
-        ("FRAME_NORMAL", 3),
         ("FRAME_ERROR", 1),
-        ("FRAME_SUM", 3),
+        ("FRAME_NORMAL", 3),
         ("FRAME_COUNT", 1),
+        ("FRAME_SUM", 3),
         ("FRAME_NEXT", 1),
-        ("FRAME_DIRS", 3 * c.max_spawn),
-        ("FRAME_WEIGHTS", 3 * c.max_spawn),
+        ("FRAME_DIRS", CHUNK_WORDS * c.max_spawn),
+        ("FRAME_WEIGHTS", CHUNK_WORDS * c.max_spawn),
     ])
 }
 
@@ -152,19 +162,24 @@ pub fn config_constants(c: &KernelConfig) -> Vec<(&'static str, u32)> {
         (0, 0)
     };
     let absorb = if c.has_absorb { SHADOW_QUERIES } else { 0 };
+    // Chunks: status, sample, rng and ray count (what the traversal stages touch besides their
+    // rays); the sum and the bad-sample count (written together); the stack depth and the shadow
+    // queries' three counters (the shading step's); then the vectors, chunk-aligned. A stage
+    // loads whole 64-byte cache lines, four slots' chunks, so the fewer chunks a stage touches
+    // the better: each costs a line per four slots where a word-major word costs one per 16.
     let (mut out, path_words) = layout(&[
         ("PATH_STATUS", 1),
         ("PATH_SAMPLE", 1),
         ("PATH_RNG", 1),
-        ("PATH_DEPTH", 1),
+        ("PATH_RAYS", 1),
         ("PATH_SUM", 3),
         ("PATH_BAD", 1),
-        ("PATH_RAYS", 1),
-        ("PATH_RAY", RAY_WORDS),
-        ("PATH_CANDIDATE", CANDIDATE_WORDS),
+        ("PATH_DEPTH", 1),
         ("PATH_SQ_RESOLVED", 1),
         ("PATH_SQ_RECORDED", 1),
         ("PATH_SQ_BITS", 1),
+        ("PATH_RAY", RAY_WORDS),
+        ("PATH_CANDIDATE", CANDIDATE_WORDS),
         ("PATH_SQ", SHADOW_QUERIES * QUERY_WORDS),
         // With `absorb`, each query's start medium and its answer's transmittance.
         ("PATH_SQ_MEDIUM", absorb),
@@ -180,6 +195,7 @@ pub fn config_constants(c: &KernelConfig) -> Vec<(&'static str, u32)> {
     out.push(("RAY_WORDS", RAY_WORDS));
     out.push(("CANDIDATE_WORDS", CANDIDATE_WORDS));
     out.push(("QUERY_WORDS", QUERY_WORDS));
+    out.push(("CHUNK_WORDS", CHUNK_WORDS));
     out
 }
 
@@ -267,25 +283,59 @@ mod tests {
     }
 
     #[test]
-    fn the_layout_is_dense_and_counts_frames_only_with_secondary_rays() {
+    fn the_layout_is_in_chunks_and_counts_frames_only_with_secondary_rays() {
         let mut c = KernelConfig::unspecialised();
         c.has_absorb = false;
         let with = path_words(&c);
         c.has_secondary_rays = false;
         let without = path_words(&c);
         assert_eq!(with - without, c.stack_size * frame_words(&c));
-        // 9 single words, the sum, the ray, the candidate and the queries.
+        // Three chunks of single words and the sum, then the ray (padded to 12 words), the
+        // candidate and the queries.
         assert_eq!(
             without,
-            9 + 3 + RAY_WORDS + CANDIDATE_WORDS + SHADOW_QUERIES * QUERY_WORDS
+            12 + 12 + CANDIDATE_WORDS + SHADOW_QUERIES * QUERY_WORDS
         );
-        // A path loop carries a throughput and a radiance (3 words each) instead of frames.
+        // A path loop carries a throughput and a radiance (a chunk each) instead of frames.
         c.has_secondary_rays = true;
         c.path_loop = true;
-        assert_eq!(path_words(&c), without + 6);
+        assert_eq!(path_words(&c), without + 8);
         // `absorb` records each query's start medium and transmittance.
         c.has_absorb = true;
-        assert_eq!(path_words(&c), without + 6 + 2 * SHADOW_QUERIES);
+        assert_eq!(path_words(&c), without + 8 + 2 * SHADOW_QUERIES);
+        // Every vector starts a chunk, and records and frames are whole chunks.
+        for config in [c, KernelConfig::unspecialised()] {
+            let constants = config_constants(&config);
+            let get = |name: &str| constants.iter().find(|(n, _)| *n == name).unwrap().1;
+            for name in [
+                "PATH_SUM",
+                "PATH_RAY",
+                "PATH_CANDIDATE",
+                "PATH_SQ",
+                "PATH_BETA",
+                "PATH_RADIANCE",
+                "PATH_FRAMES",
+                "PATH_WORDS",
+                "FRAME_CANDIDATE",
+                "FRAME_POSITION",
+                "FRAME_NORMAL",
+                "FRAME_SUM",
+                "FRAME_DIRS",
+                "FRAME_WEIGHTS",
+                "FRAME_WORDS",
+                "QUERY_WORDS",
+            ] {
+                assert_eq!(get(name) % CHUNK_WORDS, 0, "{name}");
+            }
+            // Words the stages read alone, at the offsets `paths.rt` assumes within their chunk.
+            assert_eq!(get("FRAME_ERROR"), get("FRAME_POSITION") + 3);
+            assert_eq!(get("FRAME_COUNT"), get("FRAME_NORMAL") + 3);
+            assert_eq!(get("FRAME_NEXT"), get("FRAME_SUM") + 3);
+            assert_eq!(get("PATH_BAD"), get("PATH_SUM") + 3);
+            // The finish stage resets the first chunk with one store.
+            let first = ["PATH_STATUS", "PATH_SAMPLE", "PATH_RNG", "PATH_RAYS"].map(get);
+            assert_eq!(first, [0, 1, 2, 3]);
+        }
         for stage in STAGES {
             assert_eq!(Stage::from_entry(stage.entry()), Some(stage));
         }

@@ -61,6 +61,14 @@ impl FnBuilder {
         self.expr(Expression::FunctionArgument(i), Span::UNDEFINED)
     }
 
+    /// The value of `h` when it is a `u32` literal.
+    pub fn literal_u32(&self, h: Handle<Expression>) -> Option<u32> {
+        match self.func.expressions[h] {
+            Expression::Literal(naga::Literal::U32(v)) => Some(v),
+            _ => None,
+        }
+    }
+
     /// Appends an expression in the current block.
     pub fn expr(&mut self, e: Expression, span: Span) -> Handle<Expression> {
         if e.needs_pre_emit() {

@@ -56,7 +56,7 @@ pub struct FrameUniforms {
     pub background_type: u32,
     /// Word offset of the background instance (0 without one).
     pub background_offset: u32,
-    /// Path slots of the wavefront model's `paths` per tile (the stride of its word-major
+    /// Path slots of the wavefront model's `paths` per tile (the stride of its chunk-major
     /// records, the same for every tile; 0 for the megakernel, which has none).
     pub path_slots: u32,
 }

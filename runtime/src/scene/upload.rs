@@ -116,7 +116,7 @@ impl GpuScene {
         Self {
             buffers: BufferSet::new(gpu, "rtc scene"),
             bindings: binding_list(bindings),
-            path_bytes: 4,
+            path_bytes: 16,
         }
     }
 
@@ -150,7 +150,7 @@ impl GpuScene {
     /// Sizes the wavefront model's `paths` binding (one tile's path records) for the next
     /// upload; it is zeroed when (re)allocated and by [`GpuScene::clear_accumulation`].
     pub fn set_path_bytes(&mut self, bytes: u64) {
-        self.path_bytes = bytes.max(4);
+        self.path_bytes = bytes.max(16);
     }
 
     /// Replaces the enforced limits (tests fake tiny ones).
