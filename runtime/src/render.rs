@@ -98,6 +98,10 @@ pub struct RenderOptions {
     /// How samples are executed (`None`: as compiled, `CompiledScene::exec`);
     /// [`ExecModel::Wavefront`] needs a scene compiled with its stage kernels.
     pub exec: Option<ExecModel>,
+    /// Wavefront model: submit and wait for each stage's dispatches alone and time them
+    /// ([`RenderStats::stage_ms`]; `rtc render` sets it from `RTC_STAGE_TIMES`). A profile:
+    /// the frame is slower by the waits, the image the same.
+    pub stage_times: bool,
 }
 
 /// Why a scene could not be rendered.
@@ -241,6 +245,9 @@ pub struct RenderStats {
     pub exec: ExecModel,
     /// Wavefront rounds run over all tiles and passes (0 for the megakernel).
     pub rounds: u64,
+    /// With [`RenderOptions::stage_times`], the wavefront kernels' milliseconds, each dispatch
+    /// timed alone (`RoundsReport::stage_ms`, summed over passes); empty otherwise.
+    pub stage_ms: Vec<(String, f64)>,
 }
 
 /// An image and how it was made.
@@ -306,7 +313,12 @@ enum Kernels {
 
 impl Kernels {
     /// The dispatch of a wavefront pass: a round is camera, trace, shade, shadow, shade.
-    fn rounds(stages: &[Kernel], max_rounds: u32, flag_offset: u64) -> Option<RoundKernels<'_>> {
+    fn rounds(
+        stages: &[Kernel],
+        max_rounds: u32,
+        flag_offset: u64,
+        timed: bool,
+    ) -> Option<RoundKernels<'_>> {
         let [camera, trace, shade, shadow, finish] = stages else {
             return None;
         };
@@ -316,6 +328,7 @@ impl Kernels {
             flag_binding: abi::binding("paths")?.binding,
             flag_offset,
             max_rounds,
+            timed,
         })
     }
 }
@@ -982,6 +995,7 @@ impl<'g> Renderer<'g> {
         let mut rays_traced = 0u64;
         let mut last_rays = 0u32;
         let mut rounds = 0u64;
+        let mut stage_ms: Vec<(String, f64)> = Vec::new();
         for i in 0..passes {
             let pass = self.passes_done.saturating_add(i);
             let base = u64::from(i) * per_pass;
@@ -996,8 +1010,13 @@ impl<'g> Renderer<'g> {
                     &mut report,
                 )?,
                 Kernels::Wavefront { stages, max_rounds } => {
-                    let kernels = Kernels::rounds(stages, *max_rounds, self.path_flag_offset)
-                        .ok_or(RenderError::NoStageKernels)?;
+                    let kernels = Kernels::rounds(
+                        stages,
+                        *max_rounds,
+                        self.path_flag_offset,
+                        self.options.stage_times,
+                    )
+                    .ok_or(RenderError::NoStageKernels)?;
                     let r = self.dispatcher.dispatch_rounds(
                         gpu,
                         &kernels,
@@ -1007,6 +1026,12 @@ impl<'g> Renderer<'g> {
                         &mut report,
                     )?;
                     rounds += r.rounds;
+                    for (label, ms) in &r.stage_ms {
+                        match stage_ms.iter_mut().find(|(l, _)| l == label) {
+                            Some((_, total)) => *total += ms,
+                            None => stage_ms.push((label.clone(), *ms)),
+                        }
+                    }
                     r.dispatch
                 }
             };
@@ -1110,6 +1135,7 @@ impl<'g> Renderer<'g> {
                 Kernels::Wavefront { .. } => ExecModel::Wavefront,
             },
             rounds,
+            stage_ms,
         })
     }
 }

@@ -247,6 +247,58 @@ fn both_models(
     (mega, wave, stats)
 }
 
+/// `RenderOptions::stage_times` (`RTC_STAGE_TIMES` in `rtc render`): each stage's dispatches are
+/// waited for and timed alone, every stage kernel gets a time, and the image is the one the plain
+/// rounds render, bit for bit.
+#[test]
+fn timing_the_wavefront_stages_changes_nothing_but_the_report() {
+    let Some(gpu) = gpu_or_skip("timing_the_wavefront_stages_changes_nothing_but_the_report")
+    else {
+        return;
+    };
+    use rtc_compiler::kernel::{ExecModel, KernelOptions};
+    let dir = temp_dir("features", "stage_times");
+    let compiled = scene("shadows").set("SIDE", "40u").compile_with(
+        &dir,
+        &KernelOptions {
+            exec: Some(ExecModel::Wavefront),
+            ..KernelOptions::default()
+        },
+    );
+    let options = |stage_times| RenderOptions {
+        size: Some([40, 28]),
+        samples: Some(2),
+        exec: Some(ExecModel::Wavefront),
+        stage_times,
+        ..RenderOptions::default()
+    };
+    let (plain, plain_stats) = common::scene::render(&gpu, &compiled, options(false), "plain");
+    let (timed, stats) = common::scene::render(&gpu, &compiled, options(true), "timed");
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(
+        plain_stats.stage_ms.is_empty(),
+        "{:?}",
+        plain_stats.stage_ms
+    );
+    let labels: Vec<&str> = stats.stage_ms.iter().map(|(l, _)| l.as_str()).collect();
+    assert_eq!(
+        labels,
+        [
+            "rtc wf_camera",
+            "rtc wf_trace",
+            "rtc wf_shade",
+            "rtc wf_shadow",
+            "rtc wf_finish"
+        ]
+    );
+    for (label, ms) in &stats.stage_ms {
+        assert!(ms.is_finite() && *ms > 0.0, "{label}: {ms} ms");
+    }
+    assert_eq!(stats.rounds, plain_stats.rounds);
+    let off = differing(&plain, &timed, 0.0);
+    assert!(off.is_empty(), "{} pixels differ", off.len());
+}
+
 /// Pixels where two images differ by more than `tolerance` in some channel.
 fn differing(a: &LinearImage, b: &LinearImage, tolerance: f32) -> Vec<(u32, u32)> {
     assert_eq!((a.width(), a.height()), (b.width(), b.height()));

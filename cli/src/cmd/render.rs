@@ -247,6 +247,8 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         bvh: args.bvh.preset.into(),
         asset_roots,
         exec,
+        // A profile of the wavefront stages (README, `rtc render`): any value but empty or `0`.
+        stage_times: std::env::var("RTC_STAGE_TIMES").is_ok_and(|v| !v.is_empty() && v != "0"),
         ..RenderOptions::default()
     };
     if let Some(frame_args) = animate {
@@ -555,6 +557,19 @@ pub fn summary(s: &RenderStats, output: &Path) -> String {
         s.traced_rays_per_second / 1e6,
         s.rays_traced
     ));
+    if !s.stage_ms.is_empty() {
+        // `RenderOptions::stage_times` (`RTC_STAGE_TIMES`): each wavefront dispatch timed alone.
+        let stages: Vec<String> = s
+            .stage_ms
+            .iter()
+            .map(|(label, ms)| format!("{} {ms:.2} ms", label.trim_start_matches("rtc ")))
+            .collect();
+        out.push_str(&format!(
+            "    stages (each dispatch waited for): {} in {} rounds\n",
+            stages.join(", "),
+            s.rounds
+        ));
+    }
     out
 }
 

@@ -6,6 +6,11 @@
 //! running ends the tile's rounds; the finish kernel then runs once over the tile. Tiles run one
 //! after the other, so one tile's path state is all the state buffer has to hold.
 //!
+//! With [`RoundKernels::timed`], every dispatch of a round is submitted and waited for alone and
+//! timed, and the report sums each kernel's milliseconds ([`RoundsReport::stage_ms`]): a profile
+//! of where a wavefront frame goes, slower than the plain dispatch by the waits, with the same
+//! results.
+//!
 //! Invariants: a tile never runs more than the caller's `max_rounds` rounds (more is an error,
 //! [`DispatchError::TooManyRounds`], not a hang); every wgpu call runs in an error scope.
 
@@ -24,15 +29,28 @@ pub struct RoundKernels<'a> {
     pub flag_offset: u64,
     /// Rounds a tile may take before the dispatch gives up.
     pub max_rounds: u32,
+    /// Submit, wait for and time each dispatch alone ([`RoundsReport::stage_ms`]).
+    pub timed: bool,
 }
 
 /// What a wavefront dispatch did.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct RoundsReport {
     /// Tiles, batches (one per tile) and times, as for a plain dispatch.
     pub dispatch: DispatchReport,
     /// Rounds run over all tiles (each tile's last round found nothing to do).
     pub rounds: u64,
+    /// With [`RoundKernels::timed`]: milliseconds of each kernel (by label, in round order, the
+    /// finish kernel last) over all tiles, each dispatch timed alone; empty otherwise.
+    pub stage_ms: Vec<(String, f64)>,
+}
+
+/// Adds `ms` to `label`'s entry of `stage_ms`.
+fn add_stage_ms(stage_ms: &mut Vec<(String, f64)>, label: &str, ms: f64) {
+    match stage_ms.iter_mut().find(|(l, _)| l == label) {
+        Some((_, total)) => *total += ms,
+        None => stage_ms.push((label.to_string(), ms)),
+    }
 }
 
 impl TileDispatcher {
@@ -74,7 +92,9 @@ impl TileDispatcher {
                 ..DispatchReport::default()
             },
             rounds: 0,
+            stage_ms: Vec::new(),
         };
+        let timed = kernels.timed;
         progress(0, total);
         if tiles.is_empty() {
             return Ok(report);
@@ -112,30 +132,42 @@ impl TileDispatcher {
             // Fits: the buffer size was checked against u32 offsets in params_buffer.
             let offset = (u64::from(tile.tile_index) * stride) as u32;
             let mut finished = false;
+            let dispatch = |pass: &mut wgpu::ComputePass<'_>, k: &Kernel, group| {
+                let [x, y] = tile_workgroups(k, tile);
+                pass.set_pipeline(k.pipeline());
+                pass.set_bind_group(0, group, &[offset]);
+                pass.dispatch_workgroups(x, y, 1);
+            };
+            let round = "rtc wavefront round";
             for _ in 0..kernels.max_rounds {
-                let ((), error) = gpu.scoped(|| {
-                    let mut encoder =
-                        gpu.device()
-                            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                                label: Some("rtc wavefront round"),
-                            });
-                    encoder.clear_buffer(flag, flag_offset, Some(4));
-                    {
-                        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                            label: Some("rtc wavefront round"),
-                            timestamp_writes: None,
-                        });
-                        for (k, group) in kernels.round.iter().zip(&groups) {
-                            let [x, y] = tile_workgroups(k, tile);
-                            pass.set_pipeline(k.pipeline());
-                            pass.set_bind_group(0, group, &[offset]);
-                            pass.dispatch_workgroups(x, y, 1);
-                        }
+                if timed {
+                    // The profile: zero the word, then each dispatch alone, waited for.
+                    submit(gpu, round, "wavefront round", |e| {
+                        e.clear_buffer(flag, flag_offset, Some(4))
+                    })?;
+                    for (k, group) in kernels.round.iter().zip(&groups) {
+                        let begin = Instant::now();
+                        submit(gpu, k.label(), "wavefront round", |e| {
+                            dispatch(&mut begin_pass(e, k.label()), k, group)
+                        })?;
+                        wait(gpu)?;
+                        add_stage_ms(&mut report.stage_ms, k.label(), elapsed_ms(begin));
                     }
-                    encoder.copy_buffer_to_buffer(flag, flag_offset, &staging, 0, Some(4));
-                    gpu.queue().submit([encoder.finish()]);
-                });
-                wgpu_result("wavefront round", error)?;
+                    submit(gpu, round, "wavefront round", |e| {
+                        e.copy_buffer_to_buffer(flag, flag_offset, &staging, 0, Some(4));
+                    })?;
+                } else {
+                    submit(gpu, round, "wavefront round", |e| {
+                        e.clear_buffer(flag, flag_offset, Some(4));
+                        {
+                            let mut pass = begin_pass(e, round);
+                            for (k, group) in kernels.round.iter().zip(&groups) {
+                                dispatch(&mut pass, k, group);
+                            }
+                        }
+                        e.copy_buffer_to_buffer(flag, flag_offset, &staging, 0, Some(4));
+                    })?;
+                }
                 report.rounds += 1;
                 let running = map_read(gpu, &staging, 4, |bytes| bytes.iter().any(|&b| b != 0))?;
                 if !running {
@@ -148,30 +180,49 @@ impl TileDispatcher {
                     rounds: kernels.max_rounds,
                 });
             }
-            let ((), error) = gpu.scoped(|| {
-                let mut encoder =
-                    gpu.device()
-                        .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                            label: Some(kernels.finish.label()),
-                        });
-                {
-                    let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                        label: Some(kernels.finish.label()),
-                        timestamp_writes: None,
-                    });
-                    let [x, y] = tile_workgroups(kernels.finish, tile);
-                    pass.set_pipeline(kernels.finish.pipeline());
-                    pass.set_bind_group(0, &groups[finish_group], &[offset]);
-                    pass.dispatch_workgroups(x, y, 1);
-                }
-                gpu.queue().submit([encoder.finish()]);
-            });
-            wgpu_result("wavefront finish", error)?;
+            let finish = kernels.finish;
+            let begin = Instant::now();
+            submit(gpu, finish.label(), "wavefront finish", |e| {
+                dispatch(
+                    &mut begin_pass(e, finish.label()),
+                    finish,
+                    &groups[finish_group],
+                );
+            })?;
             wait(gpu)?;
+            if timed {
+                add_stage_ms(&mut report.stage_ms, finish.label(), elapsed_ms(begin));
+            }
             report.dispatch.batches += 1;
             progress(done as u32 + 1, total);
         }
         report.dispatch.dispatch_ms = elapsed_ms(start);
         Ok(report)
     }
+}
+
+/// Records into a new command buffer labelled `label` with `encode` and submits it, in an error
+/// scope (`what` names it in an error).
+fn submit(
+    gpu: &Gpu,
+    label: &str,
+    what: &'static str,
+    encode: impl FnOnce(&mut wgpu::CommandEncoder),
+) -> Result<(), DispatchError> {
+    let ((), error) = gpu.scoped(|| {
+        let mut encoder = gpu
+            .device()
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some(label) });
+        encode(&mut encoder);
+        gpu.queue().submit([encoder.finish()]);
+    });
+    wgpu_result(what, error)
+}
+
+/// A compute pass labelled `label` on `encoder`.
+fn begin_pass<'e>(encoder: &'e mut wgpu::CommandEncoder, label: &str) -> wgpu::ComputePass<'e> {
+    encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+        label: Some(label),
+        timestamp_writes: None,
+    })
 }
