@@ -437,7 +437,7 @@ impl KernelHooks<'_> {
                 let word = matches!(intrinsic, I::PathLoad | I::PathStore);
                 if word {
                     // A literal component is a constant index: the driver then reads or writes
-                    // that word alone (Mesa lowers a dynamic one to a whole-chunk access).
+                    // that word alone (Mesa may lower a dynamic one to a whole-chunk access).
                     let k = arg(1)?;
                     p = match fb.literal_u32(k) {
                         Some(index) if index < 4 => {
