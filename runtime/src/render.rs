@@ -1027,10 +1027,7 @@ impl<'g> Renderer<'g> {
                     )?;
                     rounds += r.rounds;
                     for (label, ms) in &r.stage_ms {
-                        match stage_ms.iter_mut().find(|(l, _)| l == label) {
-                            Some((_, total)) => *total += ms,
-                            None => stage_ms.push((label.clone(), *ms)),
-                        }
+                        crate::gpu::add_stage_ms(&mut stage_ms, label, *ms);
                     }
                     r.dispatch
                 }

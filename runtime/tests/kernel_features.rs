@@ -199,6 +199,21 @@ fn custom_geometry_walking_its_mesh_bvh_sees_what_the_mesh_geometry_sees() {
     );
 }
 
+/// `file` compiled into `dir` with the wavefront model's stage kernels beside the megakernel.
+fn compile_with_stages(
+    file: &SceneFile,
+    dir: &std::path::Path,
+) -> rtc_compiler::kernel::CompiledScene {
+    use rtc_compiler::kernel::{ExecModel, KernelOptions};
+    file.compile_with(
+        dir,
+        &KernelOptions {
+            exec: Some(ExecModel::Wavefront),
+            ..KernelOptions::default()
+        },
+    )
+}
+
 /// Renders `file` with both execution models, in 16 × 16 tiles (so a size that is not a multiple
 /// of 16 has smaller edge tiles, whose path records must not see the state a larger tile left),
 /// and returns (megakernel, wavefront) images and the wavefront render's statistics.
@@ -208,16 +223,10 @@ fn both_models(
     file: &SceneFile,
     size: [u32; 2],
 ) -> (LinearImage, LinearImage, rtc_runtime::render::RenderStats) {
-    use rtc_compiler::kernel::{ExecModel, KernelOptions};
+    use rtc_compiler::kernel::ExecModel;
     use rtc_runtime::gpu::TileConfig;
     let dir = temp_dir("features", name);
-    let compiled = file.compile_with(
-        &dir,
-        &KernelOptions {
-            exec: Some(ExecModel::Wavefront),
-            ..KernelOptions::default()
-        },
-    );
+    let compiled = compile_with_stages(file, &dir);
     let options = |exec| RenderOptions {
         size: Some(size),
         samples: Some(1),
@@ -256,15 +265,9 @@ fn timing_the_wavefront_stages_changes_nothing_but_the_report() {
     else {
         return;
     };
-    use rtc_compiler::kernel::{ExecModel, KernelOptions};
+    use rtc_compiler::kernel::ExecModel;
     let dir = temp_dir("features", "stage_times");
-    let compiled = scene("shadows").set("SIDE", "40u").compile_with(
-        &dir,
-        &KernelOptions {
-            exec: Some(ExecModel::Wavefront),
-            ..KernelOptions::default()
-        },
-    );
+    let compiled = compile_with_stages(&scene("shadows").set("SIDE", "40u"), &dir);
     let options = |stage_times| RenderOptions {
         size: Some([40, 28]),
         samples: Some(2),

@@ -29,6 +29,7 @@ use super::pipeline::{BindingKind, Kernel};
 use super::{elapsed_ms, error_chain, Gpu};
 
 mod rounds;
+pub(crate) use rounds::add_stage_ms;
 pub use rounds::{RoundKernels, RoundsReport};
 
 /// Per-tile parameters, one 32-byte uniform record per tile.

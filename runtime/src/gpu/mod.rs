@@ -45,6 +45,7 @@ pub use cpu::apply_lavapipe_defaults;
 pub use cpu::{
     lavapipe_defaults_applied, HostCpu, NARROW_BEFORE_MESA, NARROW_WIDTH, VECTOR_WIDTH_VAR,
 };
+pub(crate) use dispatch::add_stage_ms;
 pub use dispatch::{
     dispatch_once, plan_tiles, read_buffer, read_vec4_f32, DispatchError, DispatchReport,
     RoundKernels, RoundsReport, TileConfig, TileDispatcher, TileParams, TILE_PARAMS_WGSL,

@@ -45,8 +45,8 @@ pub struct RoundsReport {
     pub stage_ms: Vec<(String, f64)>,
 }
 
-/// Adds `ms` to `label`'s entry of `stage_ms`.
-fn add_stage_ms(stage_ms: &mut Vec<(String, f64)>, label: &str, ms: f64) {
+/// Adds `ms` to `label`'s entry of `stage_ms` (a new entry goes last).
+pub(crate) fn add_stage_ms(stage_ms: &mut Vec<(String, f64)>, label: &str, ms: f64) {
     match stage_ms.iter_mut().find(|(l, _)| l == label) {
         Some((_, total)) => *total += ms,
         None => stage_ms.push((label.to_string(), ms)),
