@@ -38,7 +38,7 @@ fn main() -> ExitCode {
     };
     // Before any other thread or GPU instance exists: lavapipe reads these when it loads.
     if cli.command.uses_gpu() {
-        rtc_runtime::gpu::apply_lavapipe_defaults();
+        rtc_runtime::gpu::apply_lavapipe_defaults(cli.command.cpu_jit());
     }
     run_guarded(cli).into()
 }

@@ -3,7 +3,8 @@
 //! with the same cache folder either takes the kernel from the disk cache or says the cache is
 //! unsupported (lavapipe keeps nothing in it); `rtc compile --timings` prints the compiler's phases
 //! and the driver's per-kernel time; `rtc bench --compile` measures a scene in a child process and
-//! writes JSON that parses; `rtc` sets lavapipe's SIMD width on Mesa 25 unless the user did.
+//! writes JSON that parses; `rtc` sets lavapipe's SIMD width on Mesa 25 unless the user did, and
+//! gives small renders lavapipe's quick JIT, with the same image, unless told otherwise.
 
 mod common;
 
@@ -153,6 +154,74 @@ fn render_sets_llvmpipe_width_on_mesa_25_unless_the_user_did() {
     if lavapipe {
         assert!(line(&t, "adapter: ").contains("256 bits"), "{t}");
     }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `rtc render` of the small scene at 8x8 with `extra` arguments and `GALLIVM_PERF` as given
+/// (`None`: unset), to `name`.
+fn render_jit(dir: &Path, name: &str, extra: &[&str], perf: Option<&str>) -> Output {
+    let scene = scene(dir);
+    let png = dir.join(name);
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_rtc"));
+    cmd.args(["render", s(&scene), "-o", s(&png), "--size", "8x8"])
+        .args(extra)
+        .env("XDG_RUNTIME_DIR", std::env::temp_dir())
+        .env("NO_COLOR", "1")
+        .env_remove("GALLIVM_PERF");
+    if let Some(p) = perf {
+        cmd.env("GALLIVM_PERF", p);
+    }
+    cmd.output().expect("run rtc")
+}
+
+/// A still render whose `--size` and `--spp` are small gets lavapipe's quick JIT (LLVM's
+/// optimisation off) on lavapipe, says so on the host line, and writes the same image byte for
+/// byte as the optimising JIT; `--cpu-jit optimized`, an unknown sample count and a user's
+/// `GALLIVM_PERF` keep rtc out of it.
+#[test]
+fn small_renders_get_the_quick_jit_and_the_same_image() {
+    let dir = scratch("pipelines", "jit");
+    let quick = render_jit(&dir, "quick.png", &["--spp", "1"], None);
+    if no_gpu(&quick) {
+        return;
+    }
+    let t = text(&quick);
+    assert!(quick.status.success(), "{t}");
+    let line = |t: &str, start: &str| {
+        t.lines()
+            .find(|l| l.starts_with(start))
+            .map(str::to_owned)
+            .unwrap_or_else(|| panic!("no `{start}` line in\n{t}"))
+    };
+    let adapter = line(&t, "adapter: ");
+    let ours = "GALLIVM_PERF=nopt (rtc's quick JIT for a small render)";
+    if adapter.contains("llvmpipe") && adapter.contains("(vulkan,") {
+        assert!(line(&t, "host: ").contains(ours), "{t}");
+    }
+
+    let optimized = render_jit(
+        &dir,
+        "optimized.png",
+        &["--spp", "1", "--cpu-jit", "optimized"],
+        None,
+    );
+    let t = text(&optimized);
+    assert!(optimized.status.success(), "{t}");
+    assert!(!line(&t, "host: ").contains("GALLIVM_PERF"), "{t}");
+    let a = std::fs::read(dir.join("quick.png")).expect("the quick JIT's image");
+    let b = std::fs::read(dir.join("optimized.png")).expect("the optimising JIT's image");
+    assert!(a == b, "the two JITs' images differ");
+
+    // The scene's own samples are not known before its compile: optimised.
+    let unknown = render_jit(&dir, "unknown.png", &[], None);
+    let t = text(&unknown);
+    assert!(unknown.status.success(), "{t}");
+    assert!(!line(&t, "host: ").contains("GALLIVM_PERF"), "{t}");
+
+    let users = render_jit(&dir, "users.png", &["--spp", "1"], Some("brilinear"));
+    let t = text(&users);
+    assert!(users.status.success(), "{t}");
+    assert!(line(&t, "host: ").ends_with("GALLIVM_PERF=brilinear"), "{t}");
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -59,6 +59,30 @@ impl Command {
             _ => true,
         }
     }
+
+    /// The JIT a CPU driver should give this command's kernels (`--cpu-jit`; `auto` is quick only
+    /// for a still `render`, or a `watch` preview, whose `--size` and `--spp` make a small render).
+    pub fn cpu_jit(&self) -> rtc_runtime::gpu::CpuJit {
+        match self {
+            Command::Check(_) => rtc_runtime::gpu::CpuJit::Optimized,
+            Command::Compile(args) => args.adapter.cpu_jit.resolve(None),
+            Command::Render(args) => {
+                let still = args.frames.is_none() && args.shard.is_none();
+                let samples = args.render.samples_given().filter(|_| still);
+                args.render.adapter.cpu_jit.resolve(samples)
+            }
+            Command::Bench(args) => args.adapter.cpu_jit.resolve(None),
+            Command::Bvh(args) => args.render.adapter.cpu_jit.resolve(None),
+            Command::Watch(args) => {
+                let samples = args
+                    .render
+                    .samples_given()
+                    .filter(|_| args.output.is_some());
+                args.render.adapter.cpu_jit.resolve(samples)
+            }
+            Command::View(args) => args.render.adapter.cpu_jit.resolve(None),
+        }
+    }
 }
 
 /// What every subcommand gets besides its own arguments.

@@ -11,12 +11,18 @@
 //! `LP_NATIVE_VECTOR_WIDTH`, `GALLIVM_PERF`) are named when set, since they change the code
 //! lavapipe generates without changing the CPU.
 //!
-//! [`apply_lavapipe_defaults`] is the one setting rtc makes for the driver: 128-bit SIMD batches
-//! for lavapipe releases before Mesa 26 (`LP_NATIVE_VECTOR_WIDTH=128`) unless the user chose a
-//! width. There it halves the driver's compile of every kernel and leaves images byte-identical and
-//! frames as fast; on Mesa 26 it would make frames slower, so it is left alone (measured in
-//! docs/bench/compile.md and docs/bench/lavapipe.md). [`HostCpu`]'s line says when a value is rtc's
-//! default rather than the user's.
+//! [`apply_lavapipe_defaults`] makes rtc's two settings for the driver, each only where the
+//! environment does not set the variable itself:
+//! - 128-bit SIMD batches for lavapipe releases before Mesa 26 (`LP_NATIVE_VECTOR_WIDTH=128`).
+//!   There it halves the driver's compile of every kernel and leaves images byte-identical and
+//!   frames as fast; on Mesa 26 it would make frames slower, so it is left alone.
+//! - The quick JIT ([`CpuJit::Quick`], `GALLIVM_PERF=nopt`: LLVM's optimisation passes off) when
+//!   the caller asks for it, which `rtc` does for renders too small for optimised code to repay its
+//!   compile (a preview, a first pixel). Images stay byte-identical; kernels compile in a third to
+//!   a half of the time and run 1.1 to 3.9 times slower.
+//!
+//! Both are measured in docs/bench/compile.md and docs/bench/lavapipe.md. [`HostCpu`]'s line says
+//! when a value is rtc's choice rather than the user's.
 
 use std::fmt;
 use std::sync::OnceLock;
@@ -36,41 +42,92 @@ pub const NARROW_WIDTH: &str = "128";
 /// thesis frame 1.39 times slower).
 pub const NARROW_BEFORE_MESA: u32 = 26;
 
-/// Whether [`apply_lavapipe_defaults`] set [`VECTOR_WIDTH_VAR`] (the environment had none).
-static APPLIED: OnceLock<bool> = OnceLock::new();
+/// The variable of llvmpipe's performance switches; [`QUICK_JIT`] is the one rtc sets.
+pub const JIT_VAR: &str = "GALLIVM_PERF";
 
-/// Gives lavapipe 128-bit batches ([`VECTOR_WIDTH_VAR`]` = `[`NARROW_WIDTH`]) when the environment
-/// does not set the variable (an empty value counts as set: `LP_NATIVE_VECTOR_WIDTH=` keeps Mesa's
-/// own choice) and the machine's Vulkan CPU adapter is lavapipe from a Mesa release before
-/// [`NARROW_BEFORE_MESA`]. Returns the names it set.
-///
-/// It asks the Vulkan driver first (a Vulkan instance made and dropped; lavapipe reads the width
-/// again for every instance), so it costs one adapter enumeration. Call it first thing in `main`,
-/// before any other thread starts and before the wgpu `Instance` the program renders with:
-/// changing the environment while another thread reads it is undefined behaviour in most C
-/// libraries. Later calls change nothing. Drivers other than lavapipe ignore the variable.
-#[cfg(not(target_arch = "wasm32"))]
-pub fn apply_lavapipe_defaults() -> &'static [&'static str] {
-    APPLIED.get_or_init(|| {
-        let narrow = std::env::var_os(VECTOR_WIDTH_VAR).is_none()
-            && lavapipe_driver_info().is_some_and(|info| wants_narrow_batches(&info));
-        if narrow {
-            std::env::set_var(VECTOR_WIDTH_VAR, NARROW_WIDTH);
+/// [`JIT_VAR`]'s value that turns LLVM's optimisation passes off in llvmpipe's JIT (Mesa hashes
+/// the switches into its shader cache's key, so quick and optimised code never mix there).
+pub const QUICK_JIT: &str = "nopt";
+
+/// How much optimisation a CPU driver's JIT (llvmpipe, under lavapipe and Mesa's GL) gives a
+/// kernel. GPU drivers ignore it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum CpuJit {
+    /// LLVM's optimisation passes on (Mesa's default): the fastest frames.
+    #[default]
+    Optimized,
+    /// LLVM's optimisation passes off ([`JIT_VAR`]` = `[`QUICK_JIT`]): every kernel compiles in
+    /// a third to a half of the time and runs 1.8 to 3.9 times slower on Mesa 25, 1.1 to 2.2 times
+    /// on Mesa 26, with byte-identical images. For work too small to repay an optimised compile
+    /// ([`QUICK_JIT_MAX_SAMPLES`]).
+    Quick,
+}
+
+/// The most samples (pixels times samples per pixel) a render may have for
+/// [`CpuJit::for_samples`] to choose [`CpuJit::Quick`]: 128 K, e.g. 362x362 at 1 spp or 64x48 at
+/// 42 spp. Measured on every example with both execution models (docs/bench/compile.md,
+/// "The quick JIT for small renders (2026-12-04)"), the quick JIT saves more compile time than its slower
+/// frames cost up to 213 K samples at least (Mesa 25, wavefront, glass_mirror; the path tracers,
+/// whose samples are several rays each, come next at 222 K) and up to 0.5 to 7 M for most; the
+/// bound keeps a margin below the smallest.
+pub const QUICK_JIT_MAX_SAMPLES: u64 = 1 << 17;
+
+impl CpuJit {
+    /// [`CpuJit::Quick`] for a render of at most [`QUICK_JIT_MAX_SAMPLES`] samples, else
+    /// [`CpuJit::Optimized`] (also when the count is unknown: `None`).
+    pub fn for_samples(samples: Option<u64>) -> Self {
+        match samples {
+            Some(n) if n <= QUICK_JIT_MAX_SAMPLES => CpuJit::Quick,
+            _ => CpuJit::Optimized,
         }
-        narrow
-    });
-    lavapipe_defaults_applied()
+    }
+}
+
+/// The variables [`apply_lavapipe_defaults`] set (the environment had none of them).
+static APPLIED: OnceLock<Vec<&'static str>> = OnceLock::new();
+
+/// rtc's settings for a CPU driver, each made only where the environment does not set the
+/// variable (an empty value counts as set: `LP_NATIVE_VECTOR_WIDTH=` keeps Mesa's own choice):
+/// - [`VECTOR_WIDTH_VAR`]` = `[`NARROW_WIDTH`] when the machine's Vulkan CPU adapter is lavapipe
+///   from a Mesa release before [`NARROW_BEFORE_MESA`];
+/// - [`JIT_VAR`]` = `[`QUICK_JIT`] when `jit` is [`CpuJit::Quick`] and the machine has a Vulkan
+///   lavapipe adapter.
+///
+/// Returns the names it set. It asks the Vulkan driver first (a Vulkan instance made and dropped;
+/// lavapipe reads the width again for every instance, the JIT switches once per process, hence the
+/// JIT variable is set before that and taken back when no lavapipe answers), so it costs one
+/// adapter enumeration. Call it first thing in `main`, before any other thread starts and before
+/// the wgpu `Instance` the program renders with: changing the environment while another thread
+/// reads it is undefined behaviour in most C libraries. Later calls change nothing. Drivers other
+/// than llvmpipe ignore both variables.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn apply_lavapipe_defaults(jit: CpuJit) -> &'static [&'static str] {
+    APPLIED.get_or_init(|| {
+        let mut set = Vec::new();
+        if jit == CpuJit::Quick && std::env::var_os(JIT_VAR).is_none() {
+            std::env::set_var(JIT_VAR, QUICK_JIT);
+            set.push(JIT_VAR);
+        }
+        let info = lavapipe_driver_info();
+        if info.is_none() && set.contains(&JIT_VAR) {
+            std::env::remove_var(JIT_VAR);
+            set.clear();
+        }
+        if std::env::var_os(VECTOR_WIDTH_VAR).is_none()
+            && info.is_some_and(|info| wants_narrow_batches(&info))
+        {
+            std::env::set_var(VECTOR_WIDTH_VAR, NARROW_WIDTH);
+            set.push(VECTOR_WIDTH_VAR);
+        }
+        set
+    })
 }
 
 /// The variables [`apply_lavapipe_defaults`] set in this process (empty before it runs). A child
-/// process that may run on another driver should not inherit them: remove them from its
-/// environment, and its own `main` chooses for its driver.
+/// process that may run on another driver, or render other work, should not inherit them: remove
+/// them from its environment, and its own `main` chooses for its driver and work.
 pub fn lavapipe_defaults_applied() -> &'static [&'static str] {
-    if APPLIED.get() == Some(&true) {
-        &[VECTOR_WIDTH_VAR]
-    } else {
-        &[]
-    }
+    APPLIED.get().map_or(&[], Vec::as_slice)
 }
 
 /// The `driver_info` of the first Vulkan CPU adapter that is llvmpipe (lavapipe), e.g.
@@ -104,11 +161,7 @@ fn mesa_major(driver_info: &str) -> Option<u32> {
 
 /// Mesa's variables that change what llvmpipe compiles for, or how (`GALLIVM_PERF=nopt` turns
 /// LLVM's optimisation passes off); named in [`HostCpu`]'s line when set.
-const MESA_CPU_VARIABLES: [&str; 3] = [
-    "GALLIUM_OVERRIDE_CPU_CAPS",
-    VECTOR_WIDTH_VAR,
-    "GALLIVM_PERF",
-];
+const MESA_CPU_VARIABLES: [&str; 3] = ["GALLIUM_OVERRIDE_CPU_CAPS", VECTOR_WIDTH_VAR, JIT_VAR];
 
 /// The machine a figure was measured on.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -138,12 +191,10 @@ impl HostCpu {
             .filter_map(|name| {
                 let value = std::env::var(name).ok()?;
                 let ours = lavapipe_defaults_applied().contains(name);
-                (!value.is_empty()).then(|| {
-                    if ours {
-                        format!("{name}={value} (rtc's default)")
-                    } else {
-                        format!("{name}={value}")
-                    }
+                (!value.is_empty()).then(|| match (ours, *name == JIT_VAR) {
+                    (false, _) => format!("{name}={value}"),
+                    (true, false) => format!("{name}={value} (rtc's default)"),
+                    (true, true) => format!("{name}={value} (rtc's quick JIT for a small render)"),
                 })
             })
             .collect();
@@ -268,6 +319,19 @@ mod tests {
         assert!(!wants_narrow_batches(""));
         assert!(!wants_narrow_batches("Mesa devel"));
         assert!(!wants_narrow_batches("535.104.05"));
+    }
+
+    #[test]
+    fn only_small_renders_get_the_quick_jit() {
+        assert_eq!(CpuJit::for_samples(Some(64 * 48)), CpuJit::Quick);
+        assert_eq!(CpuJit::for_samples(Some(256 * 256 * 2)), CpuJit::Quick);
+        assert_eq!(
+            CpuJit::for_samples(Some(256 * 256 * 2 + 1)),
+            CpuJit::Optimized
+        );
+        assert_eq!(CpuJit::for_samples(Some(512 * 512)), CpuJit::Optimized);
+        assert_eq!(CpuJit::for_samples(Some(1920 * 1080)), CpuJit::Optimized);
+        assert_eq!(CpuJit::for_samples(None), CpuJit::Optimized);
     }
 
     #[test]

@@ -43,7 +43,8 @@ pub use buffers::{BufferError, BufferLimits, BufferSet, UploadOutcome, UploadSta
 #[cfg(not(target_arch = "wasm32"))]
 pub use cpu::apply_lavapipe_defaults;
 pub use cpu::{
-    lavapipe_defaults_applied, HostCpu, NARROW_BEFORE_MESA, NARROW_WIDTH, VECTOR_WIDTH_VAR,
+    lavapipe_defaults_applied, CpuJit, HostCpu, JIT_VAR, NARROW_BEFORE_MESA, NARROW_WIDTH,
+    QUICK_JIT, QUICK_JIT_MAX_SAMPLES, VECTOR_WIDTH_VAR,
 };
 pub(crate) use dispatch::add_stage_ms;
 pub use dispatch::{

@@ -18,7 +18,9 @@
 //! child through another program, so the same benchmark measures another driver.
 //!
 //! Each measurement runs once per execution model (`--exec`, default both), passed to the child
-//! `rtc render --exec` / `rtc watch --exec`. Prints a table; `--json FILE` writes every figure. No
+//! `rtc render --exec` / `rtc watch --exec`, as is `--cpu-jit` (default `auto`, with which these
+//! 64x48 1-spp children get lavapipe's quick JIT; `--cpu-jit optimized` measures the optimised
+//! compile). Each cold row says which JIT its child used (its summary's host line). Prints a table; `--json FILE` writes every figure. No
 //! figure is invented: a child that fails is a row with its error.
 
 use super::super::Context;
@@ -65,6 +67,9 @@ pub struct ColdRow {
     pub pipelines_ms: Option<f64>,
     /// The summary's kernel lines.
     pub kernels: Vec<KernelLine>,
+    /// Whether the child's kernels were compiled by a quick JIT (its host line names
+    /// `GALLIVM_PERF=nopt`); `None` without a host line.
+    pub quick_jit: Option<bool>,
     /// Why the child failed, if it did.
     pub error: Option<String>,
 }
@@ -152,13 +157,24 @@ fn child(exe: &Path) -> Command {
     cmd
 }
 
-/// `--exec MODEL` for a child `rtc render`/`watch`.
-fn exec_args(exec: &str) -> Vec<&str> {
-    vec!["--exec", exec]
+/// `--exec MODEL --cpu-jit JIT` for a child `rtc render`/`watch`.
+fn model_args<'a>(exec: &'a str, jit: &'a str) -> [&'a str; 4] {
+    ["--exec", exec, "--cpu-jit", jit]
+}
+
+/// Whether a summary's `host:` line says the kernels had the quick JIT.
+fn host_quick_jit(line: &str) -> Option<bool> {
+    let host = line.strip_prefix("host: ")?;
+    Some(host.contains(&format!(
+        "{}={}",
+        rtc_runtime::gpu::JIT_VAR,
+        rtc_runtime::gpu::QUICK_JIT
+    )))
 }
 
 /// Renders `scene` in a child and reads its summary.
-pub fn cold(exe: &Path, name: &str, scene: &Path, exec: &str, scratch: &Path) -> ColdRow {
+pub fn cold(exe: &Path, name: &str, scene: &Path, models: [&str; 2], scratch: &Path) -> ColdRow {
+    let [exec, jit] = models;
     let output = scratch.join(format!("{name}.png"));
     let start = Instant::now();
     let result = child(exe)
@@ -167,7 +183,7 @@ pub fn cold(exe: &Path, name: &str, scene: &Path, exec: &str, scratch: &Path) ->
         .arg("-o")
         .arg(&output)
         .args(["--size", SIZE, "--spp", "1"])
-        .args(exec_args(exec))
+        .args(model_args(exec, jit))
         .output();
     let first_pixel_ms = start.elapsed().as_secs_f64() * 1e3;
     let mut row = ColdRow {
@@ -176,6 +192,7 @@ pub fn cold(exe: &Path, name: &str, scene: &Path, exec: &str, scratch: &Path) ->
         first_pixel_ms,
         pipelines_ms: None,
         kernels: Vec::new(),
+        quick_jit: None,
         error: None,
     };
     match result {
@@ -188,6 +205,7 @@ pub fn cold(exe: &Path, name: &str, scene: &Path, exec: &str, scratch: &Path) ->
             }
             row.pipelines_ms = stdout.lines().find_map(pipelines_ms);
             row.kernels = stdout.lines().filter_map(kernel_line).collect();
+            row.quick_jit = stdout.lines().find_map(host_quick_jit);
         }
     }
     row
@@ -272,7 +290,14 @@ fn write(path: &Path, text: &str) -> Result<(), String> {
 
 /// Runs `rtc watch` on a copy of the thesis scene, edits its material after the first build and
 /// reads the second build's report.
-pub fn edit(exe: &Path, thesis: &Path, stdlib: &Path, exec: &str, scratch: &Path) -> EditRow {
+pub fn edit(
+    exe: &Path,
+    thesis: &Path,
+    stdlib: &Path,
+    models: [&str; 2],
+    scratch: &Path,
+) -> EditRow {
+    let [exec, _] = models;
     let mut row = EditRow {
         exec: exec.to_string(),
         first_prepare_ms: None,
@@ -280,7 +305,7 @@ pub fn edit(exe: &Path, thesis: &Path, stdlib: &Path, exec: &str, scratch: &Path
         kernels: Vec::new(),
         error: None,
     };
-    if let Err(e) = run_edit(exe, thesis, stdlib, exec, scratch, &mut row) {
+    if let Err(e) = run_edit(exe, thesis, stdlib, models, scratch, &mut row) {
         row.error = Some(e);
     }
     row
@@ -290,10 +315,11 @@ fn run_edit(
     exe: &Path,
     thesis: &Path,
     stdlib: &Path,
-    exec: &str,
+    models: [&str; 2],
     scratch: &Path,
     row: &mut EditRow,
 ) -> Result<(), String> {
+    let [exec, jit] = models;
     let dir = scratch.join(format!("edit-{exec}"));
     let scene = prepare_edit(thesis, stdlib, &dir)?;
     let mut proc = child(exe)
@@ -305,7 +331,7 @@ fn run_edit(
         .arg(dir.join("preview.png"))
         .args(["--size", SIZE, "--spp", "1", "--target", "wgsl"])
         .args(["--exit-after", "2"])
-        .args(exec_args(exec))
+        .args(model_args(exec, jit))
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
@@ -399,6 +425,14 @@ fn edit_to_preview(line: &str) -> Option<f64> {
     rest.split_whitespace().next()?.parse().ok()
 }
 
+fn jit_name(quick: Option<bool>) -> &'static str {
+    match quick {
+        Some(true) => "quick",
+        Some(false) => "optimized",
+        None => "-",
+    }
+}
+
 fn seconds(ms: Option<f64>) -> String {
     ms.map_or_else(|| "-".to_string(), |ms| format!("{:.2}", ms / 1e3))
 }
@@ -406,7 +440,8 @@ fn seconds(ms: Option<f64>) -> String {
 /// The table printed on stdout.
 pub fn table(report: &Report) -> String {
     let mut out = String::from(
-        "cold compile (MESA_SHADER_CACHE_DISABLE=true, RTC_PIPELINE_CACHE=off, 64x48, 1 spp):\n",
+        "cold compile (MESA_SHADER_CACHE_DISABLE=true, RTC_PIPELINE_CACHE=off, 64x48, 1 spp; \
+         jit: the child's, from its host line):\n",
     );
     let width = report
         .cold
@@ -416,8 +451,14 @@ pub fn table(report: &Report) -> String {
         .unwrap_or(7)
         .max(7);
     out.push_str(&format!(
-        "  {:<width$}  {:<10}  {:>13}  {:>13}  {:>8}  {}\n",
-        "example", "exec", "first pixel s", "pipelines s", "kernels", "slowest kernel (driver s)"
+        "  {:<width$}  {:<10}  {:<9}  {:>13}  {:>13}  {:>8}  {}\n",
+        "example",
+        "exec",
+        "jit",
+        "first pixel s",
+        "pipelines s",
+        "kernels",
+        "slowest kernel (driver s)"
     ));
     for r in &report.cold {
         let slowest = r
@@ -428,9 +469,10 @@ pub fn table(report: &Report) -> String {
                 format!("{} {:.2}", k.label, k.driver_ms / 1e3)
             });
         out.push_str(&format!(
-            "  {:<width$}  {:<10}  {:>13.2}  {:>13}  {:>8}  {}\n",
+            "  {:<width$}  {:<10}  {:<9}  {:>13.2}  {:>13}  {:>8}  {}\n",
             r.example,
             r.exec,
+            jit_name(r.quick_jit),
             r.first_pixel_ms / 1e3,
             seconds(r.pipelines_ms),
             r.kernels.len(),
@@ -478,14 +520,15 @@ fn kernels_json(kernels: &[KernelLine]) -> serde_json::Value {
         .collect()
 }
 
-/// Every figure as JSON.
-pub fn json(report: &Report, adapter_note: &str) -> serde_json::Value {
+/// Every figure as JSON (`jit`: the `--cpu-jit` the children were given).
+pub fn json(report: &Report, adapter_note: &str, jit: &str) -> serde_json::Value {
     serde_json::json!({
         "environment": {
             "MESA_SHADER_CACHE_DISABLE": "true",
             "RTC_PIPELINE_CACHE": "off",
             "size": SIZE,
             "spp": 1,
+            "cpu_jit": jit,
             "note": adapter_note,
         },
         "cold": report.cold.iter().map(|r| serde_json::json!({
@@ -494,6 +537,7 @@ pub fn json(report: &Report, adapter_note: &str) -> serde_json::Value {
             "first_pixel_ms": r.first_pixel_ms,
             "pipelines_ms": r.pipelines_ms,
             "kernels": kernels_json(&r.kernels),
+            "jit": r.quick_jit.map(|q| jit_name(Some(q))),
             "error": r.error,
         })).collect::<Vec<_>>(),
         "material_edit": report.edit.iter().map(|e| serde_json::json!({
@@ -550,11 +594,14 @@ pub fn run(args: &super::Args, ctx: &Context) -> Exit {
     if let Err(e) = std::fs::create_dir_all(&scratch) {
         return super::fail(&format!("cannot create `{}`: {e}", scratch.display()), ctx);
     }
+    let jit = args.adapter.cpu_jit.as_str();
     let mut report = Report::default();
     for exec in &models {
         for (name, scene) in &scenes {
             term::eprint(&format!("[bench] cold render of {name} ({exec})\n"));
-            report.cold.push(cold(&exe, name, scene, exec, &scratch));
+            report
+                .cold
+                .push(cold(&exe, name, scene, [exec, jit], &scratch));
         }
     }
     let thesis = if path.is_dir() {
@@ -565,16 +612,20 @@ pub fn run(args: &super::Args, ctx: &Context) -> Exit {
     if let Some(thesis) = &thesis {
         for exec in &models {
             term::eprint(&format!("[bench] material edit of thesis_scene ({exec})\n"));
-            report
-                .edit
-                .push(edit(&exe, thesis, &ctx.options.stdlib_dir, exec, &scratch));
+            report.edit.push(edit(
+                &exe,
+                thesis,
+                &ctx.options.stdlib_dir,
+                [exec, jit],
+                &scratch,
+            ));
         }
     }
     let _ = std::fs::remove_dir_all(&scratch);
     term::print(&table(&report));
     if let Some(p) = &args.json {
         let note = "wall times of child processes; the machine may be shared";
-        let text = match serde_json::to_string_pretty(&json(&report, note)) {
+        let text = match serde_json::to_string_pretty(&json(&report, note, jit)) {
             Ok(t) => t,
             Err(e) => return super::fail(&format!("cannot encode the JSON: {e}"), ctx),
         };
@@ -616,6 +667,15 @@ mod tests {
             kernel_line("  render        0.30 ms  (0.21 M primary rays/s)"),
             None
         );
+        assert_eq!(
+            host_quick_jit("host: Intel(R) Xeon(R) Processor, 2 threads, AVX2 and AVX-512; GALLIVM_PERF=nopt (rtc's quick JIT for a small render)"),
+            Some(true)
+        );
+        assert_eq!(
+            host_quick_jit("host: AMD EPYC 7B13, 2 threads, AVX2 and AVX-512"),
+            Some(false)
+        );
+        assert_eq!(host_quick_jit("adapter: llvmpipe"), None);
         assert_eq!(
             edit_to_preview("[watch] #2 ok (edit to code 12.0 ms, edit to preview 812.5 ms)"),
             Some(812.5)
