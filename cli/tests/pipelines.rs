@@ -221,7 +221,10 @@ fn small_renders_get_the_quick_jit_and_the_same_image() {
     let users = render_jit(&dir, "users.png", &["--spp", "1"], Some("brilinear"));
     let t = text(&users);
     assert!(users.status.success(), "{t}");
-    assert!(line(&t, "host: ").ends_with("GALLIVM_PERF=brilinear"), "{t}");
+    assert!(
+        line(&t, "host: ").ends_with("GALLIVM_PERF=brilinear"),
+        "{t}"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
 
