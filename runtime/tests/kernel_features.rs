@@ -132,14 +132,19 @@ fn rays_enter_and_leave_nested_media_at_hits() {
     let img = render(&gpu, "nested-media", &file);
     let mut check = PixelCheck::new(
         "nested media: exp(-Σ σᵢ dᵢ); row 0 from inside the outer box (path 10 to its far wall), \
-         row 1 from outside it (path 30)",
+         row 1 from outside it (path 30), row 2 from inside the inner box (path 6: 1 in the inner \
+         box, then 5 in the outer medium, which a probe finds when the ray leaves the inner box)",
     );
-    for row in 0..2u32 {
+    for row in 0..3u32 {
         // The part outside the outer box (from z = 20 to z = 10) is in no medium.
-        let in_outer = if row == 0 { 10.0 } else { 20.0 };
+        let in_outer = [10.0, 20.0, 6.0][row as usize];
         for x in 0..8u32 {
             let through_inner = x < 4;
-            let d_inner = if through_inner { 2.0 } else { 0.0 };
+            let d_inner = match (through_inner, row) {
+                (false, _) => 0.0,
+                (true, 2) => 1.0,
+                (true, _) => 2.0,
+            };
             let want = (-SA * (in_outer - d_inner) - SB * d_inner).exp();
             let got = img.get(x, row).expect("pixel");
             check.pixel((x, row), got, &[want; 3], Tolerance::rel(1e-4));
