@@ -91,19 +91,29 @@ fn render_reports_kernels_and_the_disk_cache_on_a_second_run() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// `rtc render` of the small scene with `LP_NATIVE_VECTOR_WIDTH` as given (`None`: unset).
-fn render_with_width(dir: &Path, width: Option<&str>) -> Output {
+/// `rtc render` of the small scene at 8x8 to `name` with `extra` arguments, and Mesa's variable
+/// `var` as given (`None`: unset).
+fn render_small(dir: &Path, name: &str, extra: &[&str], var: (&str, Option<&str>)) -> Output {
     let scene = scene(dir);
-    let png = dir.join("width.png");
+    let png = dir.join(name);
     let mut cmd = Command::new(env!("CARGO_BIN_EXE_rtc"));
     cmd.args(["render", s(&scene), "-o", s(&png), "--size", "8x8"])
+        .args(extra)
         .env("XDG_RUNTIME_DIR", std::env::temp_dir())
         .env("NO_COLOR", "1")
-        .env_remove("LP_NATIVE_VECTOR_WIDTH");
-    if let Some(w) = width {
-        cmd.env("LP_NATIVE_VECTOR_WIDTH", w);
+        .env_remove(var.0);
+    if let Some(value) = var.1 {
+        cmd.env(var.0, value);
     }
     cmd.output().expect("run rtc")
+}
+
+/// The first line of a summary that starts with `start`.
+fn summary_line(t: &str, start: &str) -> String {
+    t.lines()
+        .find(|l| l.starts_with(start))
+        .map(str::to_owned)
+        .unwrap_or_else(|| panic!("no `{start}` line in\n{t}"))
 }
 
 /// The Mesa major version in an adapter line (`… driver llvmpipe Mesa 25.0.7-2~bpo12+1 …`).
@@ -118,20 +128,15 @@ fn mesa_major(adapter: &str) -> Option<u32> {
 #[test]
 fn render_sets_llvmpipe_width_on_mesa_25_unless_the_user_did() {
     let dir = scratch("pipelines", "width");
-    let ours = render_with_width(&dir, None);
+    let width = |w| render_small(&dir, "width.png", &[], ("LP_NATIVE_VECTOR_WIDTH", w));
+    let ours = width(None);
     if no_gpu(&ours) {
         return;
     }
     let t = text(&ours);
     assert!(ours.status.success(), "{t}");
-    let line = |t: &str, start: &str| {
-        t.lines()
-            .find(|l| l.starts_with(start))
-            .map(str::to_owned)
-            .unwrap_or_else(|| panic!("no `{start}` line in\n{t}"))
-    };
-    let host = line(&t, "host: ");
-    let adapter = line(&t, "adapter: ");
+    let host = summary_line(&t, "host: ");
+    let adapter = summary_line(&t, "adapter: ");
     let lavapipe = adapter.contains("llvmpipe") && adapter.contains("(vulkan,");
     let narrow = lavapipe && mesa_major(&adapter).is_some_and(|m| m < 26);
     if narrow {
@@ -144,34 +149,23 @@ fn render_sets_llvmpipe_width_on_mesa_25_unless_the_user_did() {
         assert!(!host.contains("LP_NATIVE_VECTOR_WIDTH"), "{t}");
     }
 
-    let users = render_with_width(&dir, Some("256"));
+    let users = width(Some("256"));
     let t = text(&users);
     assert!(users.status.success(), "{t}");
     assert!(
-        line(&t, "host: ").ends_with("; LP_NATIVE_VECTOR_WIDTH=256"),
+        summary_line(&t, "host: ").ends_with("; LP_NATIVE_VECTOR_WIDTH=256"),
         "{t}"
     );
     if lavapipe {
-        assert!(line(&t, "adapter: ").contains("256 bits"), "{t}");
+        assert!(summary_line(&t, "adapter: ").contains("256 bits"), "{t}");
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// `rtc render` of the small scene at 8x8 with `extra` arguments and `GALLIVM_PERF` as given
-/// (`None`: unset), to `name`.
+/// `rtc render` of the small scene at 8x8 to `name` with `extra` arguments and `GALLIVM_PERF` as
+/// given (`None`: unset).
 fn render_jit(dir: &Path, name: &str, extra: &[&str], perf: Option<&str>) -> Output {
-    let scene = scene(dir);
-    let png = dir.join(name);
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_rtc"));
-    cmd.args(["render", s(&scene), "-o", s(&png), "--size", "8x8"])
-        .args(extra)
-        .env("XDG_RUNTIME_DIR", std::env::temp_dir())
-        .env("NO_COLOR", "1")
-        .env_remove("GALLIVM_PERF");
-    if let Some(p) = perf {
-        cmd.env("GALLIVM_PERF", p);
-    }
-    cmd.output().expect("run rtc")
+    render_small(dir, name, extra, ("GALLIVM_PERF", perf))
 }
 
 /// A still render whose `--size` and `--spp` are small gets lavapipe's quick JIT (LLVM's
@@ -187,16 +181,10 @@ fn small_renders_get_the_quick_jit_and_the_same_image() {
     }
     let t = text(&quick);
     assert!(quick.status.success(), "{t}");
-    let line = |t: &str, start: &str| {
-        t.lines()
-            .find(|l| l.starts_with(start))
-            .map(str::to_owned)
-            .unwrap_or_else(|| panic!("no `{start}` line in\n{t}"))
-    };
-    let adapter = line(&t, "adapter: ");
+    let adapter = summary_line(&t, "adapter: ");
     let ours = "GALLIVM_PERF=nopt (rtc's quick JIT for a small render)";
     if adapter.contains("llvmpipe") && adapter.contains("(vulkan,") {
-        assert!(line(&t, "host: ").contains(ours), "{t}");
+        assert!(summary_line(&t, "host: ").contains(ours), "{t}");
     }
 
     let optimized = render_jit(
@@ -207,7 +195,7 @@ fn small_renders_get_the_quick_jit_and_the_same_image() {
     );
     let t = text(&optimized);
     assert!(optimized.status.success(), "{t}");
-    assert!(!line(&t, "host: ").contains("GALLIVM_PERF"), "{t}");
+    assert!(!summary_line(&t, "host: ").contains("GALLIVM_PERF"), "{t}");
     let a = std::fs::read(dir.join("quick.png")).expect("the quick JIT's image");
     let b = std::fs::read(dir.join("optimized.png")).expect("the optimising JIT's image");
     assert!(a == b, "the two JITs' images differ");
@@ -216,13 +204,13 @@ fn small_renders_get_the_quick_jit_and_the_same_image() {
     let unknown = render_jit(&dir, "unknown.png", &[], None);
     let t = text(&unknown);
     assert!(unknown.status.success(), "{t}");
-    assert!(!line(&t, "host: ").contains("GALLIVM_PERF"), "{t}");
+    assert!(!summary_line(&t, "host: ").contains("GALLIVM_PERF"), "{t}");
 
     let users = render_jit(&dir, "users.png", &["--spp", "1"], Some("brilinear"));
     let t = text(&users);
     assert!(users.status.success(), "{t}");
     assert!(
-        line(&t, "host: ").ends_with("GALLIVM_PERF=brilinear"),
+        summary_line(&t, "host: ").ends_with("GALLIVM_PERF=brilinear"),
         "{t}"
     );
     let _ = std::fs::remove_dir_all(&dir);

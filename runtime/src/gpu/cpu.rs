@@ -103,15 +103,16 @@ static APPLIED: OnceLock<Vec<&'static str>> = OnceLock::new();
 #[cfg(not(target_arch = "wasm32"))]
 pub fn apply_lavapipe_defaults(jit: CpuJit) -> &'static [&'static str] {
     APPLIED.get_or_init(|| {
-        let mut set = Vec::new();
-        if jit == CpuJit::Quick && std::env::var_os(JIT_VAR).is_none() {
+        let quick = jit == CpuJit::Quick && std::env::var_os(JIT_VAR).is_none();
+        if quick {
             std::env::set_var(JIT_VAR, QUICK_JIT);
-            set.push(JIT_VAR);
         }
         let info = lavapipe_driver_info();
-        if info.is_none() && set.contains(&JIT_VAR) {
+        let mut set = Vec::new();
+        if quick && info.is_some() {
+            set.push(JIT_VAR);
+        } else if quick {
             std::env::remove_var(JIT_VAR);
-            set.clear();
         }
         if std::env::var_os(VECTOR_WIDTH_VAR).is_none()
             && info.is_some_and(|info| wants_narrow_batches(&info))

@@ -173,8 +173,14 @@ fn host_quick_jit(line: &str) -> Option<bool> {
 }
 
 /// Renders `scene` in a child and reads its summary.
-pub fn cold(exe: &Path, name: &str, scene: &Path, models: [&str; 2], scratch: &Path) -> ColdRow {
-    let [exec, jit] = models;
+pub fn cold(
+    exe: &Path,
+    name: &str,
+    scene: &Path,
+    exec: &str,
+    jit: &str,
+    scratch: &Path,
+) -> ColdRow {
     let output = scratch.join(format!("{name}.png"));
     let start = Instant::now();
     let result = child(exe)
@@ -294,10 +300,10 @@ pub fn edit(
     exe: &Path,
     thesis: &Path,
     stdlib: &Path,
-    models: [&str; 2],
+    exec: &str,
+    jit: &str,
     scratch: &Path,
 ) -> EditRow {
-    let [exec, _] = models;
     let mut row = EditRow {
         exec: exec.to_string(),
         first_prepare_ms: None,
@@ -305,7 +311,7 @@ pub fn edit(
         kernels: Vec::new(),
         error: None,
     };
-    if let Err(e) = run_edit(exe, thesis, stdlib, models, scratch, &mut row) {
+    if let Err(e) = run_edit(exe, thesis, stdlib, exec, jit, scratch, &mut row) {
         row.error = Some(e);
     }
     row
@@ -315,11 +321,11 @@ fn run_edit(
     exe: &Path,
     thesis: &Path,
     stdlib: &Path,
-    models: [&str; 2],
+    exec: &str,
+    jit: &str,
     scratch: &Path,
     row: &mut EditRow,
 ) -> Result<(), String> {
-    let [exec, jit] = models;
     let dir = scratch.join(format!("edit-{exec}"));
     let scene = prepare_edit(thesis, stdlib, &dir)?;
     let mut proc = child(exe)
@@ -537,7 +543,7 @@ pub fn json(report: &Report, adapter_note: &str, jit: &str) -> serde_json::Value
             "first_pixel_ms": r.first_pixel_ms,
             "pipelines_ms": r.pipelines_ms,
             "kernels": kernels_json(&r.kernels),
-            "jit": r.quick_jit.map(|q| jit_name(Some(q))),
+            "jit": r.quick_jit.is_some().then(|| jit_name(r.quick_jit)),
             "error": r.error,
         })).collect::<Vec<_>>(),
         "material_edit": report.edit.iter().map(|e| serde_json::json!({
@@ -601,7 +607,7 @@ pub fn run(args: &super::Args, ctx: &Context) -> Exit {
             term::eprint(&format!("[bench] cold render of {name} ({exec})\n"));
             report
                 .cold
-                .push(cold(&exe, name, scene, [exec, jit], &scratch));
+                .push(cold(&exe, name, scene, exec, jit, &scratch));
         }
     }
     let thesis = if path.is_dir() {
@@ -616,7 +622,8 @@ pub fn run(args: &super::Args, ctx: &Context) -> Exit {
                 &exe,
                 thesis,
                 &ctx.options.stdlib_dir,
-                [exec, jit],
+                exec,
+                jit,
                 &scratch,
             ));
         }
