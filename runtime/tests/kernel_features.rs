@@ -23,6 +23,9 @@
 //!   give the wavefront model's image pixel for pixel; past `LIGHT_QUERIES` queries in one light
 //!   sample the megakernel warns.
 //!
+//! - `sample_light_unoccluded`: a light's sample as if nothing blocked it, with no ray traced, in
+//!   both models, with one light type and with two.
+//!
 //! A test skips only when there is no adapter at all, and then says so on stderr.
 
 mod common;
@@ -594,6 +597,49 @@ fn a_light_sample_past_the_queries_it_records_is_warned_about() {
         warning.contains("light program") && warning.contains(&limit.to_string()),
         "{warning}"
     );
+}
+
+#[test]
+fn an_unoccluded_light_sample_ignores_blockers_and_traces_no_ray() {
+    use rtc_compiler::kernel::ExecModel;
+    let Some(gpu) = gpu_or_skip("an_unoccluded_light_sample_ignores_blockers_and_traces_no_ray")
+    else {
+        return;
+    };
+    // `unoccluded.rt`: red is `sample_light`, 0 under the blocker (x < 0) and 1 elsewhere; green
+    // is `sample_light_unoccluded`, 1 everywhere. Every camera ray hits the floor, whose shading
+    // traces one shadow ray, for `sample_light` alone: 2 rays a pixel. With one light type (the
+    // light program traces in place) and two (the megakernel defers its queries), both models.
+    const SIDE: u32 = 16;
+    for scene_name in ["unoccluded_one", "unoccluded_two"] {
+        let file = scene("unoccluded")
+            .scene(scene_name)
+            .set("SIDE", format!("{SIDE}u"));
+        let dir = temp_dir("features", scene_name);
+        let compiled = compile_with_stages(&file, &dir);
+        for exec in [ExecModel::Megakernel, ExecModel::Wavefront] {
+            let name = format!("{scene_name} ({})", exec.name());
+            let options = RenderOptions {
+                samples: Some(1),
+                exec: Some(exec),
+                ..RenderOptions::default()
+            };
+            let (img, stats) = common::scene::render(&gpu, &compiled, options, &name);
+            for y in 0..SIDE {
+                for x in 0..SIDE {
+                    let wx = -2.8125 + 0.375 * f64::from(x);
+                    let seen = if wx < 0.0 { 0.0 } else { 1.0 };
+                    assert_eq!(px(&img, x, y), [seen, 1.0, 0.0], "{name}: pixel ({x}, {y})");
+                }
+            }
+            assert_eq!(
+                stats.rays_traced,
+                2 * u64::from(SIDE * SIDE),
+                "{name}: an unoccluded sample traced a ray"
+            );
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }
 
 /// `rand()` draws an Owen-scrambled Sobol sequence padded in pairs (`stdlib/kernel/support.rt`):

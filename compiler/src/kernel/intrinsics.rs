@@ -48,11 +48,11 @@ pub struct KernelHooks<'a> {
 
 /// Words of the private scratch registers (`scratch_load`, `scratch_store`; `stdlib/kernel/paths.rt`
 /// names them), in a kernel that does not defer light programs' shadow queries.
-pub const SCRATCH_WORDS: u32 = 14;
+pub const SCRATCH_WORDS: u32 = 15;
 
 /// Words of the private scratch registers in a kernel that defers them: 10 more for the recorded
 /// query (`SCRATCH_LIGHT_QUERY`).
-pub const SCRATCH_WORDS_DEFERRING: u32 = 24;
+pub const SCRATCH_WORDS_DEFERRING: u32 = 25;
 
 /// The kernel function (from `stdlib/kernel/`) named `name`.
 pub fn kernel_fn(program: &Program, name: &str) -> Result<FnId, LowerError> {
@@ -85,6 +85,7 @@ fn user_intrinsic_fn(b: Builtin) -> Option<&'static str> {
         Builtin::MeshBounds => "mesh_bounds_query",
         Builtin::LightCount => "light_count_query",
         Builtin::SampleLight => "sample_light_query",
+        Builtin::SampleLightUnoccluded => "sample_light_unoccluded_query",
         Builtin::Shadow => "shadow_query",
         Builtin::Absorb => "absorb_query",
         _ => return None,

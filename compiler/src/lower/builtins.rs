@@ -34,6 +34,7 @@ pub(super) fn is_intrinsic(b: Builtin) -> bool {
         B::Spawn
             | B::LightCount
             | B::SampleLight
+            | B::SampleLightUnoccluded
             | B::Shadow
             | B::Absorb
             | B::Rand

@@ -38,7 +38,7 @@ struct FrameUniforms {
     uint path_slots;
 };
 struct type_3 {
-    uint inner[14];
+    uint inner[15];
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -182,6 +182,7 @@ constant float GAMMA_4_ = 0.00000023841864;
 constant bool HAS_SECONDARY_RAYS = true;
 constant bool HAS_BACKGROUND = false;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
+constant uint SCRATCH_UNOCCLUDED = 14u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
 constant float INV_PI = 0.31830987;
@@ -282,11 +283,11 @@ void rng_resume(
     thread type_3& scratch,
     thread uint& rng_state
 ) {
-    scratch.inner[metal::min(SCRATCH_RNG_INDEX, 13u)] = sample;
+    scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)] = sample;
     uint _e12 = pcg_hash(seed);
     uint _e14 = pcg_hash(pixel.y ^ _e12);
     uint _e16 = pcg_hash(pixel.x ^ _e14);
-    scratch.inner[metal::min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    scratch.inner[metal::min(SCRATCH_RNG_SEED, 14u)] = _e16;
     rng_state = state;
     return;
 }
@@ -387,9 +388,9 @@ float rand_next(
     uint x_2 = {};
     uint d_1 = rng_state;
     rng_state = d_1 + 1u;
-    uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 13u)];
+    uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 14u)];
     uint _e16 = pcg_hash(_e10 ^ ((d_1 >> 1u) * 2654435769u));
-    uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 13u)];
+    uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)];
     uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
     uint i_4 = metal::reverse_bits(_e24);
     x_2 = i_4;
@@ -1250,6 +1251,7 @@ float shadow_query(
     metal::float3 dir_1,
     float dist_1,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1259,9 +1261,13 @@ float shadow_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
-    Candidate _e6 = intersect_scene(_e4, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-    return (_e6.slot != NO_HIT) ? 0.0 : 1.0;
+    uint _e9 = scratch.inner[metal::min(SCRATCH_UNOCCLUDED, 14u)];
+    if (_e9 != 0u) {
+        return 1.0;
+    }
+    Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
+    Candidate _e15 = intersect_scene(_e13, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return (_e15.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
 LightSample quad_light(
@@ -1291,7 +1297,7 @@ LightSample quad_light(
     if (!((cos_light > 0.0)) || !((dist2_ > 0.0))) {
         return LightSample {dir_7, dist_2, metal::float3(0.0), 0.0};
     }
-    float _e42 = shadow_query(position_2, normal_2, dir_7, dist_2, frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    float _e42 = shadow_query(position_2, normal_2, dir_7, dist_2, frame, scratch, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     float strength = ((l.intensity * cos_light) * area) / dist2_;
     float pdf_1 = (l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0;
     return LightSample {dir_7, dist_2, (l.color * metal::float3(strength)) * metal::float3(_e42), pdf_1};

@@ -157,6 +157,7 @@ const bool HAS_SECONDARY_RAYS = true;
 const bool HAS_BACKGROUND = false;
 const uint SCRATCH_MEDIUM = 10u;
 const uint LIGHT_ENTRY_STRIDE = 2u;
+const uint SCRATCH_UNOCCLUDED = 14u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const bool HAS_ANY_HIT = true;
 const float INV_PI = 0.31830987;
@@ -172,7 +173,7 @@ layout(std140, binding = 1) uniform TileParams_block_0Compute { TileParams _grou
 
 layout(std140, binding = 0) uniform FrameUniforms_block_1Compute { FrameUniforms _group_0_binding_0_cs; };
 
-uint scratch[14] = uint[14](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+uint scratch[15] = uint[15](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
 uint rng_state = 0u;
 
@@ -255,11 +256,11 @@ uint pcg_hash(uint x) {
 }
 
 void rng_resume(uvec2 pixel, uint sample_, uint seed, uint state) {
-    scratch[min(SCRATCH_RNG_INDEX, 13u)] = sample_;
+    scratch[min(SCRATCH_RNG_INDEX, 14u)] = sample_;
     uint _e12 = pcg_hash(seed);
     uint _e14 = pcg_hash((pixel.y ^ _e12));
     uint _e16 = pcg_hash((pixel.x ^ _e14));
-    scratch[min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    scratch[min(SCRATCH_RNG_SEED, 14u)] = _e16;
     rng_state = state;
     return;
 }
@@ -338,14 +339,14 @@ float rand_next() {
     uint x_2 = 0u;
     uint d_2 = rng_state;
     rng_state = (d_2 + 1u);
-    uint _e10 = scratch[min(SCRATCH_RNG_SEED, 13u)];
+    uint _e10 = scratch[min(SCRATCH_RNG_SEED, 14u)];
     uint _e16 = pcg_hash((_e10 ^ ((d_2 >> 1u) * 2654435769u)));
-    uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 13u)];
+    uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 14u)];
     uint _e24 = laine_karras(bitfieldReverse(_e22), _e16);
-    uint i_7 = bitfieldReverse(_e24);
-    x_2 = i_7;
+    uint i_8 = bitfieldReverse(_e24);
+    x_2 = i_8;
     if (((d_2 & 1u) != 0u)) {
-        uint _e31 = sobol_second_reversed(i_7);
+        uint _e31 = sobol_second_reversed(i_8);
         x_2 = _e31;
     }
     uint scramble = (_e16 ^ (((2654435769u * (1u + (d_2 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
@@ -578,7 +579,7 @@ void absorb_query(float density) {
     if (!(HAS_ABSORB)) {
         return;
     }
-    uint side = scratch[min(SCRATCH_ABSORB, 13u)];
+    uint side = scratch[min(SCRATCH_ABSORB, 14u)];
     if ((side == 0u)) {
         return;
     }
@@ -587,21 +588,21 @@ void absorb_query(float density) {
     if ((_e13 && (density > 0.0))) {
         sigma = density;
     }
-    uint _e22 = scratch[min(SCRATCH_ABSORB_T, 13u)];
+    uint _e22 = scratch[min(SCRATCH_ABSORB_T, 14u)];
     float t_6 = uintBitsToFloat(_e22);
     float _e24 = sigma;
     float _e25 = sigma;
     float s_5 = ((side == 2u) ? -(_e25) : _e24);
-    uint _e35 = scratch[min(SCRATCH_DEPTH, 13u)];
+    uint _e35 = scratch[min(SCRATCH_DEPTH, 14u)];
     float depth_2 = (uintBitsToFloat(_e35) - (s_5 * t_6));
-    scratch[min(SCRATCH_DEPTH, 13u)] = floatBitsToUint(depth_2);
-    uint _e50 = scratch[min(SCRATCH_NET, 13u)];
+    scratch[min(SCRATCH_DEPTH, 14u)] = floatBitsToUint(depth_2);
+    uint _e50 = scratch[min(SCRATCH_NET, 14u)];
     float net = (uintBitsToFloat(_e50) + s_5);
-    scratch[min(SCRATCH_NET, 13u)] = floatBitsToUint(net);
-    uint _e64 = scratch[min(SCRATCH_DENSITY_MAX, 13u)];
+    scratch[min(SCRATCH_NET, 14u)] = floatBitsToUint(net);
+    uint _e64 = scratch[min(SCRATCH_DENSITY_MAX, 14u)];
     float _e66 = sigma;
     float most = max(uintBitsToFloat(_e64), _e66);
-    scratch[min(SCRATCH_DENSITY_MAX, 13u)] = floatBitsToUint(most);
+    scratch[min(SCRATCH_DENSITY_MAX, 14u)] = floatBitsToUint(most);
     return;
 }
 
@@ -622,11 +623,11 @@ bool accept(GpuInstance inst_4, Ray ray_5, Candidate c_1) {
         Hit _e10 = finish_hit(ray_5, c_1);
         hit_error = shaded;
         if ((ray_5.kind == RAY_SHADOW)) {
-            scratch[min(SCRATCH_ABSORB, 13u)] = (_e10.front_face ? 1u : 2u);
-            scratch[min(SCRATCH_ABSORB_T, 13u)] = floatBitsToUint((c_1.t * length(ray_5.dir)));
+            scratch[min(SCRATCH_ABSORB, 14u)] = (_e10.front_face ? 1u : 2u);
+            scratch[min(SCRATCH_ABSORB_T, 14u)] = floatBitsToUint((c_1.t * length(ray_5.dir)));
         }
         bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
-        scratch[min(SCRATCH_ABSORB, 13u)] = 0u;
+        scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
         return _e36;
     }
     return true;
@@ -961,7 +962,7 @@ vec3 miss(Ray ray_11) {
 }
 
 void shading_medium(uint medium) {
-    scratch[min(SCRATCH_MEDIUM, 13u)] = medium;
+    scratch[min(SCRATCH_MEDIUM, 14u)] = medium;
     return;
 }
 
@@ -1045,19 +1046,19 @@ Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
 
 float shadow_transmittance(Ray ray_14, uint medium_1) {
     float depth = 0.0;
-    scratch[min(SCRATCH_ABSORB, 13u)] = 0u;
-    scratch[min(SCRATCH_DEPTH, 13u)] = 0u;
-    scratch[min(SCRATCH_NET, 13u)] = 0u;
-    scratch[min(SCRATCH_DENSITY_MAX, 13u)] = 0u;
+    scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
+    scratch[min(SCRATCH_DEPTH, 14u)] = 0u;
+    scratch[min(SCRATCH_NET, 14u)] = 0u;
+    scratch[min(SCRATCH_DENSITY_MAX, 14u)] = 0u;
     if ((HAS_MEDIA && HAS_ANY_HIT)) {
         if ((medium_1 != 0u)) {
             GpuInstance inst_8 = _group_0_binding_3_cs[(medium_1 - 1u)];
             if (((inst_8.flags & FLAG_ANY_HIT) != 0u)) {
                 Hit start = Hit(ray_14.origin, 0.0, -(ray_14.dir), -(ray_14.dir), vec2(0.0), true, inst_8.object, 0u);
-                scratch[min(SCRATCH_ABSORB, 13u)] = 1u;
-                scratch[min(SCRATCH_ABSORB_T, 13u)] = 0u;
+                scratch[min(SCRATCH_ABSORB, 14u)] = 1u;
+                scratch[min(SCRATCH_ABSORB_T, 14u)] = 0u;
                 bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start);
-                scratch[min(SCRATCH_ABSORB, 13u)] = 0u;
+                scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
             }
         }
     }
@@ -1065,11 +1066,11 @@ float shadow_transmittance(Ray ray_14, uint medium_1) {
     if ((_e75.slot != NO_HIT)) {
         return 0.0;
     }
-    uint _e85 = scratch[min(SCRATCH_DEPTH, 13u)];
+    uint _e85 = scratch[min(SCRATCH_DEPTH, 14u)];
     depth = uintBitsToFloat(_e85);
-    uint _e93 = scratch[min(SCRATCH_NET, 13u)];
+    uint _e93 = scratch[min(SCRATCH_NET, 14u)];
     float net_1 = uintBitsToFloat(_e93);
-    uint _e101 = scratch[min(SCRATCH_DENSITY_MAX, 13u)];
+    uint _e101 = scratch[min(SCRATCH_DENSITY_MAX, 14u)];
     if ((net_1 > (1e-6 * uintBitsToFloat(_e101)))) {
         uint _e107 = F32_INF;
         if ((ray_14.tmax == uintBitsToFloat(_e107))) {
@@ -1083,10 +1084,14 @@ float shadow_transmittance(Ray ray_14, uint medium_1) {
 }
 
 float shadow_query(vec3 position_1, vec3 normal_1, vec3 dir_1, float dist_1) {
-    Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    uint _e10 = scratch[min(SCRATCH_MEDIUM, 13u)];
-    float _e11 = shadow_transmittance(_e4, _e10);
-    return _e11;
+    uint _e9 = scratch[min(SCRATCH_UNOCCLUDED, 14u)];
+    if ((_e9 != 0u)) {
+        return 1.0;
+    }
+    Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
+    uint _e19 = scratch[min(SCRATCH_MEDIUM, 14u)];
+    float _e20 = shadow_transmittance(_e13, _e19);
+    return _e20;
 }
 
 LightSample point_light(PointLight l, vec3 position_2, vec3 normal_2) {
@@ -1176,11 +1181,18 @@ vec3 shade_direct(Ray ray_17, Candidate c_2) {
     return _e12;
 }
 
-vec3 fog_inscatter(Fog m_3, uint i_4, vec3 o, vec3 dir_2, float d_1, float trans) {
+LightSample sample_light_unoccluded_query(uint i_4, vec3 position_5, vec3 normal_5) {
+    scratch[min(SCRATCH_UNOCCLUDED, 14u)] = 1u;
+    LightSample _e9 = sample_light_query(i_4, position_5, normal_5);
+    scratch[min(SCRATCH_UNOCCLUDED, 14u)] = 0u;
+    return _e9;
+}
+
+vec3 fog_inscatter(Fog m_3, uint i_5, vec3 o, vec3 dir_2, float d_1, float trans) {
     float s_1 = 0.0;
     float sigma_1 = m_3.density;
     bool tiny_1 = ((sigma_1 * d_1) < 0.001);
-    LightSample _e12 = sample_light_query(i_4, o, vec3(0.0));
+    LightSample _e12 = sample_light_unoccluded_query(i_5, o, vec3(0.0));
     vec3 c_6 = (_e12.dir * vec3(_e12.dist));
     float delta = dot(c_6, dir_2);
     float h_1 = length((c_6 - (dir_2 * vec3(delta))));
@@ -1207,13 +1219,13 @@ vec3 fog_inscatter(Fog m_3, uint i_4, vec3 o, vec3 dir_2, float d_1, float trans
     float r_3 = (_e76 - delta);
     float pdf = (((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))) : 0.0));
     float _e91 = s_1;
-    LightSample _e97 = sample_light_query(i_4, (o + (dir_2 * vec3(_e91))), vec3(0.0));
+    LightSample _e97 = sample_light_query(i_5, (o + (dir_2 * vec3(_e91))), vec3(0.0));
     return (_e97.radiance * vec3(((sigma_1 * e_2) / pdf)));
 }
 
 vec3 fog_medium(Fog m_4, Ray ray_18, float t, vec3 radiance) {
     vec3 light = vec3(0.0);
-    uint i_5 = 0u;
+    uint i_6 = 0u;
     float len = length(ray_18.dir);
     if ((!((m_4.density > 0.0)) || !((len > 0.0)))) {
         return radiance;
@@ -1222,20 +1234,20 @@ vec3 fog_medium(Fog m_4, Ray ray_18, float t, vec3 radiance) {
     float trans_1 = exp((-(m_4.density) * d_6));
     light = vec3(0.0);
     uint _e23 = light_count_query();
-    i_5 = 0u;
+    i_6 = 0u;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e35 = i_5;
-            i_5 = (_e35 + 1u);
+            uint _e35 = i_6;
+            i_6 = (_e35 + 1u);
         }
         loop_init_3 = false;
-        uint _e25 = i_5;
+        uint _e25 = i_6;
         if ((_e25 >= _e23)) {
             break;
         }
         vec3 _e27 = light;
-        uint _e28 = i_5;
+        uint _e28 = i_6;
         vec3 _e33 = fog_inscatter(m_4, _e28, ray_18.origin, (ray_18.dir / vec3(len)), d_6, trans_1);
         light = (_e27 + _e33);
     }
@@ -1285,16 +1297,16 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_22, Hit hit
     return;
 }
 
-vec3 spawn_origin_at(vec3 position_5, vec3 normal_5, float error_1, vec3 dir_4) {
+vec3 spawn_origin_at(vec3 position_6, vec3 normal_6, float error_1, vec3 dir_4) {
     vec3 n_5 = vec3(0.0);
-    n_5 = normal_5;
+    n_5 = normal_6;
     vec3 _e5 = n_5;
     if ((dot(dir_4, _e5) < 0.0)) {
         vec3 _e9 = n_5;
         n_5 = -(_e9);
     }
     vec3 _e11 = n_5;
-    vec3 _e12 = offset_origin(position_5, _e11, error_1);
+    vec3 _e12 = offset_origin(position_6, _e11, error_1);
     return _e12;
 }
 
@@ -1323,7 +1335,7 @@ vec3 trace(Ray camera_ray) {
     float t_4 = 0.0;
     Hit hit_10 = Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u);
     Frame f_1 = Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u);
-    uint i_6 = 0u;
+    uint i_7 = 0u;
     uint medium_2 = 0u;
     bool found = false;
     uint k_1 = 0u;
@@ -1421,24 +1433,24 @@ vec3 trace(Ray camera_ray) {
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
                         f_1 = Frame(_e141, _e142, _e143, _e145, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), n_8, 0u);
-                        i_6 = 0u;
+                        i_7 = 0u;
                         bool loop_init_4 = true;
                         while(true) {
                             if (!loop_init_4) {
-                                uint _e175 = i_6;
-                                i_6 = (_e175 + 1u);
+                                uint _e175 = i_7;
+                                i_7 = (_e175 + 1u);
                             }
                             loop_init_4 = false;
-                            uint _e155 = i_6;
+                            uint _e155 = i_7;
                             if ((_e155 >= n_8)) {
                                 break;
                             }
-                            uint _e158 = i_6;
-                            uint _e162 = i_6;
+                            uint _e158 = i_7;
+                            uint _e162 = i_7;
                             vec3 _e165 = spawn_dirs[_e162];
                             f_1.dirs[min(_e158, 0u)] = _e165;
-                            uint _e167 = i_6;
-                            uint _e171 = i_6;
+                            uint _e167 = i_7;
+                            uint _e171 = i_7;
                             vec3 _e174 = spawn_weights[_e171];
                             f_1.weights[min(_e167, 0u)] = _e174;
                         }
@@ -1493,11 +1505,11 @@ vec3 trace(Ray camera_ray) {
         uint _e243 = stack[min(top_1, 2u)].next;
         uint _e248 = stack[min(top_1, 2u)].count;
         if ((_e243 < _e248)) {
-            uint i_8 = stack[min(top_1, 2u)].next;
-            stack[min(top_1, 2u)].next = (i_8 + 1u);
+            uint i_9 = stack[min(top_1, 2u)].next;
+            stack[min(top_1, 2u)].next = (i_9 + 1u);
             Ray parent = stack[min(top_1, 2u)].ray;
             Hit hit_12 = stack[min(top_1, 2u)].hit;
-            vec3 dir_7 = stack[min(top_1, 2u)].dirs[min(i_8, 0u)];
+            vec3 dir_7 = stack[min(top_1, 2u)].dirs[min(i_9, 0u)];
             medium_2 = parent.medium;
             if ((dot(dir_7, hit_12.geometric_normal) < 0.0)) {
                 uint _e289 = stack[min(top_1, 2u)].slot;

@@ -199,6 +199,7 @@ static const bool HAS_SECONDARY_RAYS = true;
 static const bool HAS_BACKGROUND = false;
 static const uint SCRATCH_MEDIUM = 10u;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
+static const uint SCRATCH_UNOCCLUDED = 14u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const bool HAS_ANY_HIT = true;
 static const float INV_PI = 0.31830987;
@@ -212,7 +213,7 @@ static const uint RAY_SECONDARY = 1u;
 
 cbuffer tile : register(b1) { TileParams tile; }
 cbuffer frame : register(b0) { FrameUniforms frame; }
-static uint scratch[14] = (uint[14])0;
+static uint scratch[15] = (uint[15])0;
 static uint rng_state = (uint)0;
 ByteAddressBuffer params : register(t6);
 static uint F32_INF = 2139095040u;
@@ -302,11 +303,11 @@ uint pcg_hash(uint x)
 
 void rng_resume(uint2 pixel, uint sample_, uint seed, uint state)
 {
-    scratch[min(uint(min(SCRATCH_RNG_INDEX, 13u)), 13u)] = sample_;
+    scratch[min(uint(min(SCRATCH_RNG_INDEX, 14u)), 14u)] = sample_;
     const uint _e12 = pcg_hash(seed);
     const uint _e14 = pcg_hash((pixel.y ^ _e12));
     const uint _e16 = pcg_hash((pixel.x ^ _e14));
-    scratch[min(uint(min(SCRATCH_RNG_SEED, 13u)), 13u)] = _e16;
+    scratch[min(uint(min(SCRATCH_RNG_SEED, 14u)), 14u)] = _e16;
     rng_state = state;
     return;
 }
@@ -405,14 +406,14 @@ float rand_next()
 
     uint d_2 = rng_state;
     rng_state = (d_2 + 1u);
-    uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 13u)), 13u)];
+    uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 14u)), 14u)];
     const uint _e16 = pcg_hash((_e10 ^ ((d_2 >> 1u) * 2654435769u)));
-    uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 13u)), 13u)];
+    uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 14u)), 14u)];
     const uint _e24 = laine_karras(reversebits(_e22), _e16);
-    uint i_7 = reversebits(_e24);
-    x_2 = i_7;
+    uint i_8 = reversebits(_e24);
+    x_2 = i_8;
     if (((d_2 & 1u) != 0u)) {
-        const uint _e31 = sobol_second_reversed(i_7);
+        const uint _e31 = sobol_second_reversed(i_8);
         x_2 = _e31;
     }
     uint scramble = (_e16 ^ (((2654435769u * (1u + (d_2 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
@@ -760,7 +761,7 @@ void absorb_query(float density)
     if (!(HAS_ABSORB)) {
         return;
     }
-    uint side = scratch[min(uint(min(SCRATCH_ABSORB, 13u)), 13u)];
+    uint side = scratch[min(uint(min(SCRATCH_ABSORB, 14u)), 14u)];
     if ((side == 0u)) {
         return;
     }
@@ -769,21 +770,21 @@ void absorb_query(float density)
     if ((_e13 && (density > 0.0))) {
         sigma = density;
     }
-    uint _e22 = scratch[min(uint(min(SCRATCH_ABSORB_T, 13u)), 13u)];
+    uint _e22 = scratch[min(uint(min(SCRATCH_ABSORB_T, 14u)), 14u)];
     float t_6 = asfloat(_e22);
     float _e24 = sigma;
     float _e25 = sigma;
     float s_5 = ((side == 2u) ? -(_e25) : _e24);
-    uint _e35 = scratch[min(uint(min(SCRATCH_DEPTH, 13u)), 13u)];
+    uint _e35 = scratch[min(uint(min(SCRATCH_DEPTH, 14u)), 14u)];
     float depth_2 = (asfloat(_e35) - (s_5 * t_6));
-    scratch[min(uint(min(SCRATCH_DEPTH, 13u)), 13u)] = asuint(depth_2);
-    uint _e50 = scratch[min(uint(min(SCRATCH_NET, 13u)), 13u)];
+    scratch[min(uint(min(SCRATCH_DEPTH, 14u)), 14u)] = asuint(depth_2);
+    uint _e50 = scratch[min(uint(min(SCRATCH_NET, 14u)), 14u)];
     float net = (asfloat(_e50) + s_5);
-    scratch[min(uint(min(SCRATCH_NET, 13u)), 13u)] = asuint(net);
-    uint _e64 = scratch[min(uint(min(SCRATCH_DENSITY_MAX, 13u)), 13u)];
+    scratch[min(uint(min(SCRATCH_NET, 14u)), 14u)] = asuint(net);
+    uint _e64 = scratch[min(uint(min(SCRATCH_DENSITY_MAX, 14u)), 14u)];
     float _e66 = sigma;
     float most = max(asfloat(_e64), _e66);
-    scratch[min(uint(min(SCRATCH_DENSITY_MAX, 13u)), 13u)] = asuint(most);
+    scratch[min(uint(min(SCRATCH_DENSITY_MAX, 14u)), 14u)] = asuint(most);
     return;
 }
 
@@ -807,11 +808,11 @@ bool accept(GpuInstance inst_4, Ray ray_5, Candidate c_1)
         const Hit _e10 = finish_hit(ray_5, c_1);
         hit_error = shaded;
         if ((ray_5.kind == RAY_SHADOW)) {
-            scratch[min(uint(min(SCRATCH_ABSORB, 13u)), 13u)] = (_e10.front_face ? 1u : 2u);
-            scratch[min(uint(min(SCRATCH_ABSORB_T, 13u)), 13u)] = asuint((c_1.t * length(ray_5.dir)));
+            scratch[min(uint(min(SCRATCH_ABSORB, 14u)), 14u)] = (_e10.front_face ? 1u : 2u);
+            scratch[min(uint(min(SCRATCH_ABSORB_T, 14u)), 14u)] = asuint((c_1.t * length(ray_5.dir)));
         }
         const bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
-        scratch[min(uint(min(SCRATCH_ABSORB, 13u)), 13u)] = 0u;
+        scratch[min(uint(min(SCRATCH_ABSORB, 14u)), 14u)] = 0u;
         return _e36;
     }
     return true;
@@ -1197,7 +1198,7 @@ float3 miss(Ray ray_11)
 
 void shading_medium(uint medium)
 {
-    scratch[min(uint(min(SCRATCH_MEDIUM, 13u)), 13u)] = medium;
+    scratch[min(uint(min(SCRATCH_MEDIUM, 14u)), 14u)] = medium;
     return;
 }
 
@@ -1311,19 +1312,19 @@ float shadow_transmittance(Ray ray_14, uint medium_1)
 {
     float depth = (float)0;
 
-    scratch[min(uint(min(SCRATCH_ABSORB, 13u)), 13u)] = 0u;
-    scratch[min(uint(min(SCRATCH_DEPTH, 13u)), 13u)] = 0u;
-    scratch[min(uint(min(SCRATCH_NET, 13u)), 13u)] = 0u;
-    scratch[min(uint(min(SCRATCH_DENSITY_MAX, 13u)), 13u)] = 0u;
+    scratch[min(uint(min(SCRATCH_ABSORB, 14u)), 14u)] = 0u;
+    scratch[min(uint(min(SCRATCH_DEPTH, 14u)), 14u)] = 0u;
+    scratch[min(uint(min(SCRATCH_NET, 14u)), 14u)] = 0u;
+    scratch[min(uint(min(SCRATCH_DENSITY_MAX, 14u)), 14u)] = 0u;
     if ((HAS_MEDIA && HAS_ANY_HIT)) {
         if ((medium_1 != 0u)) {
             GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4((medium_1 - 1u)*128+0)), asfloat(instances.Load4((medium_1 - 1u)*128+16)), asfloat(instances.Load4((medium_1 - 1u)*128+32)), asfloat(instances.Load4((medium_1 - 1u)*128+48)), asfloat(instances.Load4((medium_1 - 1u)*128+64)), asfloat(instances.Load4((medium_1 - 1u)*128+80)), asuint(instances.Load((medium_1 - 1u)*128+96)), asuint(instances.Load((medium_1 - 1u)*128+100)), asuint(instances.Load((medium_1 - 1u)*128+104)), asuint(instances.Load((medium_1 - 1u)*128+108)), asuint(instances.Load((medium_1 - 1u)*128+112)), asuint(instances.Load((medium_1 - 1u)*128+116)), asuint(instances.Load((medium_1 - 1u)*128+120)), asuint(instances.Load((medium_1 - 1u)*128+124)));
             if (((inst_8.flags & FLAG_ANY_HIT) != 0u)) {
                 Hit start = ConstructHit(ray_14.origin, 0.0, -(ray_14.dir), -(ray_14.dir), (0.0).xx, true, inst_8.object, 0u);
-                scratch[min(uint(min(SCRATCH_ABSORB, 13u)), 13u)] = 1u;
-                scratch[min(uint(min(SCRATCH_ABSORB_T, 13u)), 13u)] = 0u;
+                scratch[min(uint(min(SCRATCH_ABSORB, 14u)), 14u)] = 1u;
+                scratch[min(uint(min(SCRATCH_ABSORB_T, 14u)), 14u)] = 0u;
                 const bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start);
-                scratch[min(uint(min(SCRATCH_ABSORB, 13u)), 13u)] = 0u;
+                scratch[min(uint(min(SCRATCH_ABSORB, 14u)), 14u)] = 0u;
             }
         }
     }
@@ -1331,11 +1332,11 @@ float shadow_transmittance(Ray ray_14, uint medium_1)
     if ((_e75.slot != NO_HIT)) {
         return 0.0;
     }
-    uint _e85 = scratch[min(uint(min(SCRATCH_DEPTH, 13u)), 13u)];
+    uint _e85 = scratch[min(uint(min(SCRATCH_DEPTH, 14u)), 14u)];
     depth = asfloat(_e85);
-    uint _e93 = scratch[min(uint(min(SCRATCH_NET, 13u)), 13u)];
+    uint _e93 = scratch[min(uint(min(SCRATCH_NET, 14u)), 14u)];
     float net_1 = asfloat(_e93);
-    uint _e101 = scratch[min(uint(min(SCRATCH_DENSITY_MAX, 13u)), 13u)];
+    uint _e101 = scratch[min(uint(min(SCRATCH_DENSITY_MAX, 14u)), 14u)];
     if ((net_1 > (1e-6 * asfloat(_e101)))) {
         uint _e107 = F32_INF;
         if ((ray_14.tmax == asfloat(_e107))) {
@@ -1350,10 +1351,14 @@ float shadow_transmittance(Ray ray_14, uint medium_1)
 
 float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
 {
-    const Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    uint _e10 = scratch[min(uint(min(SCRATCH_MEDIUM, 13u)), 13u)];
-    const float _e11 = shadow_transmittance(_e4, _e10);
-    return _e11;
+    uint _e9 = scratch[min(uint(min(SCRATCH_UNOCCLUDED, 14u)), 14u)];
+    if ((_e9 != 0u)) {
+        return 1.0;
+    }
+    const Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
+    uint _e19 = scratch[min(uint(min(SCRATCH_MEDIUM, 14u)), 14u)];
+    const float _e20 = shadow_transmittance(_e13, _e19);
+    return _e20;
 }
 
 LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
@@ -1467,13 +1472,22 @@ float3 shade_direct(Ray ray_17, Candidate c_2)
     return _e12;
 }
 
-float3 fog_inscatter(Fog m_3, uint i_4, float3 o, float3 dir_2, float d_1, float trans)
+LightSample sample_light_unoccluded_query(uint i_4, float3 position_5, float3 normal_5)
+{
+    scratch[min(uint(min(SCRATCH_UNOCCLUDED, 14u)), 14u)] = 1u;
+    const LightSample _e9 = sample_light_query(i_4, position_5, normal_5);
+    scratch[min(uint(min(SCRATCH_UNOCCLUDED, 14u)), 14u)] = 0u;
+    const LightSample lightsample_4 = _e9;
+    return lightsample_4;
+}
+
+float3 fog_inscatter(Fog m_3, uint i_5, float3 o, float3 dir_2, float d_1, float trans)
 {
     float s_1 = (float)0;
 
     float sigma_1 = m_3.density;
     bool tiny_1 = ((sigma_1 * d_1) < 0.001);
-    const LightSample _e12 = sample_light_query(i_4, o, (0.0).xxx);
+    const LightSample _e12 = sample_light_unoccluded_query(i_5, o, (0.0).xxx);
     float3 c_6 = (_e12.dir * (_e12.dist).xxx);
     float delta = dot(c_6, dir_2);
     float h_1 = length((c_6 - (dir_2 * (delta).xxx)));
@@ -1500,14 +1514,14 @@ float3 fog_inscatter(Fog m_3, uint i_4, float3 o, float3 dir_2, float d_1, float
     float r_3 = (_e76 - delta);
     float pdf = (((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))) : 0.0));
     float _e91 = s_1;
-    const LightSample _e97 = sample_light_query(i_4, (o + (dir_2 * (_e91).xxx)), (0.0).xxx);
+    const LightSample _e97 = sample_light_query(i_5, (o + (dir_2 * (_e91).xxx)), (0.0).xxx);
     return (_e97.radiance * (((sigma_1 * e_2) / pdf)).xxx);
 }
 
 float3 fog_medium(Fog m_4, Ray ray_18, float t, float3 radiance)
 {
     float3 light = (float3)0;
-    uint i_5 = (uint)0;
+    uint i_6 = (uint)0;
 
     float len = length(ray_18.dir);
     if ((!((m_4.density > 0.0)) || !((len > 0.0)))) {
@@ -1517,23 +1531,23 @@ float3 fog_medium(Fog m_4, Ray ray_18, float t, float3 radiance)
     float trans_1 = exp((-(m_4.density) * d_6));
     light = (0.0).xxx;
     const uint _e23 = light_count_query();
-    i_5 = 0u;
+    i_6 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e35 = i_5;
-            i_5 = (_e35 + 1u);
+            uint _e35 = i_6;
+            i_6 = (_e35 + 1u);
         }
         loop_init_3 = false;
-        uint _e25 = i_5;
+        uint _e25 = i_6;
         if ((_e25 >= _e23)) {
             break;
         }
         float3 _e27 = light;
-        uint _e28 = i_5;
+        uint _e28 = i_6;
         const float3 _e33 = fog_inscatter(m_4, _e28, ray_18.origin, (ray_18.dir / (len).xxx), d_6, trans_1);
         light = (_e27 + _e33);
     }
@@ -1588,18 +1602,18 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_22, Hit hit
     return;
 }
 
-float3 spawn_origin_at(float3 position_5, float3 normal_5, float error_1, float3 dir_4)
+float3 spawn_origin_at(float3 position_6, float3 normal_6, float error_1, float3 dir_4)
 {
     float3 n_5 = (float3)0;
 
-    n_5 = normal_5;
+    n_5 = normal_6;
     float3 _e5 = n_5;
     if ((dot(dir_4, _e5) < 0.0)) {
         float3 _e9 = n_5;
         n_5 = -(_e9);
     }
     float3 _e11 = n_5;
-    const float3 _e12 = offset_origin(position_5, _e11, error_1);
+    const float3 _e12 = offset_origin(position_6, _e11, error_1);
     return _e12;
 }
 
@@ -1654,7 +1668,7 @@ float3 trace(Ray camera_ray)
     float t_4 = (float)0;
     Hit hit_10 = (Hit)0;
     Frame f_1 = (Frame)0;
-    uint i_6 = (uint)0;
+    uint i_7 = (uint)0;
     uint medium_2 = (uint)0;
     bool found = (bool)0;
     uint k_1 = (uint)0;
@@ -1756,27 +1770,27 @@ float3 trace(Ray camera_ray)
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
                         f_1 = ConstructFrame(_e141, _e142, _e143, _e145, (0.0).xxx, ZeroValuearray1_float3_(), ZeroValuearray1_float3_(), n_8, 0u);
-                        i_6 = 0u;
+                        i_7 = 0u;
                         uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
                         bool loop_init_4 = true;
                         while(true) {
                             if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
                             loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                             if (!loop_init_4) {
-                                uint _e175 = i_6;
-                                i_6 = (_e175 + 1u);
+                                uint _e175 = i_7;
+                                i_7 = (_e175 + 1u);
                             }
                             loop_init_4 = false;
-                            uint _e155 = i_6;
+                            uint _e155 = i_7;
                             if ((_e155 >= n_8)) {
                                 break;
                             }
-                            uint _e158 = i_6;
-                            uint _e162 = i_6;
+                            uint _e158 = i_7;
+                            uint _e162 = i_7;
                             float3 _e165 = spawn_dirs[min(uint(_e162), 0u)];
                             f_1.dirs[min(uint(min(_e158, 0u)), 0u)] = _e165;
-                            uint _e167 = i_6;
-                            uint _e171 = i_6;
+                            uint _e167 = i_7;
+                            uint _e171 = i_7;
                             float3 _e174 = spawn_weights[min(uint(_e171), 0u)];
                             f_1.weights[min(uint(min(_e167, 0u)), 0u)] = _e174;
                         }
@@ -1831,11 +1845,11 @@ float3 trace(Ray camera_ray)
         uint _e243 = stack[min(uint(min(top_1, 2u)), 2u)].next;
         uint _e248 = stack[min(uint(min(top_1, 2u)), 2u)].count;
         if ((_e243 < _e248)) {
-            uint i_8 = stack[min(uint(min(top_1, 2u)), 2u)].next;
-            stack[min(uint(min(top_1, 2u)), 2u)].next = (i_8 + 1u);
+            uint i_9 = stack[min(uint(min(top_1, 2u)), 2u)].next;
+            stack[min(uint(min(top_1, 2u)), 2u)].next = (i_9 + 1u);
             Ray parent = stack[min(uint(min(top_1, 2u)), 2u)].ray;
             Hit hit_13 = stack[min(uint(min(top_1, 2u)), 2u)].hit;
-            float3 dir_7 = stack[min(uint(min(top_1, 2u)), 2u)].dirs[min(uint(min(i_8, 0u)), 0u)];
+            float3 dir_7 = stack[min(uint(min(top_1, 2u)), 2u)].dirs[min(uint(min(i_9, 0u)), 0u)];
             medium_2 = parent.medium;
             if ((dot(dir_7, hit_13.geometric_normal) < 0.0)) {
                 uint _e289 = stack[min(uint(min(top_1, 2u)), 2u)].slot;

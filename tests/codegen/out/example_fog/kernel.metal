@@ -38,7 +38,7 @@ struct FrameUniforms {
     uint path_slots;
 };
 struct type_3 {
-    uint inner[14];
+    uint inner[15];
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -197,6 +197,7 @@ constant bool HAS_SECONDARY_RAYS = true;
 constant bool HAS_BACKGROUND = false;
 constant uint SCRATCH_MEDIUM = 10u;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
+constant uint SCRATCH_UNOCCLUDED = 14u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant bool HAS_ANY_HIT = true;
 constant float INV_PI = 0.31830987;
@@ -298,11 +299,11 @@ void rng_resume(
     thread type_3& scratch,
     thread uint& rng_state
 ) {
-    scratch.inner[metal::min(SCRATCH_RNG_INDEX, 13u)] = sample;
+    scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)] = sample;
     uint _e12 = pcg_hash(seed);
     uint _e14 = pcg_hash(pixel.y ^ _e12);
     uint _e16 = pcg_hash(pixel.x ^ _e14);
-    scratch.inner[metal::min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    scratch.inner[metal::min(SCRATCH_RNG_SEED, 14u)] = _e16;
     rng_state = state;
     return;
 }
@@ -403,14 +404,14 @@ float rand_next(
     uint x_2 = {};
     uint d_2 = rng_state;
     rng_state = d_2 + 1u;
-    uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 13u)];
+    uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 14u)];
     uint _e16 = pcg_hash(_e10 ^ ((d_2 >> 1u) * 2654435769u));
-    uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 13u)];
+    uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)];
     uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
-    uint i_7 = metal::reverse_bits(_e24);
-    x_2 = i_7;
+    uint i_8 = metal::reverse_bits(_e24);
+    x_2 = i_8;
     if ((d_2 & 1u) != 0u) {
-        uint _e31 = sobol_second_reversed(i_7);
+        uint _e31 = sobol_second_reversed(i_8);
         x_2 = _e31;
     }
     uint scramble = _e16 ^ (((2654435769u * (1u + (d_2 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
@@ -724,7 +725,7 @@ void absorb_query(
     if (!(HAS_ABSORB)) {
         return;
     }
-    uint side = scratch.inner[metal::min(SCRATCH_ABSORB, 13u)];
+    uint side = scratch.inner[metal::min(SCRATCH_ABSORB, 14u)];
     if (side == 0u) {
         return;
     }
@@ -733,21 +734,21 @@ void absorb_query(
     if (_e13 && (density > 0.0)) {
         sigma = density;
     }
-    uint _e22 = scratch.inner[metal::min(SCRATCH_ABSORB_T, 13u)];
+    uint _e22 = scratch.inner[metal::min(SCRATCH_ABSORB_T, 14u)];
     float t_6 = as_type<float>(_e22);
     float _e24 = sigma;
     float _e25 = sigma;
     float s_5 = (side == 2u) ? -(_e25) : _e24;
-    uint _e35 = scratch.inner[metal::min(SCRATCH_DEPTH, 13u)];
+    uint _e35 = scratch.inner[metal::min(SCRATCH_DEPTH, 14u)];
     float depth_2 = as_type<float>(_e35) - (s_5 * t_6);
-    scratch.inner[metal::min(SCRATCH_DEPTH, 13u)] = as_type<uint>(depth_2);
-    uint _e50 = scratch.inner[metal::min(SCRATCH_NET, 13u)];
+    scratch.inner[metal::min(SCRATCH_DEPTH, 14u)] = as_type<uint>(depth_2);
+    uint _e50 = scratch.inner[metal::min(SCRATCH_NET, 14u)];
     float net = as_type<float>(_e50) + s_5;
-    scratch.inner[metal::min(SCRATCH_NET, 13u)] = as_type<uint>(net);
-    uint _e64 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 13u)];
+    scratch.inner[metal::min(SCRATCH_NET, 14u)] = as_type<uint>(net);
+    uint _e64 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 14u)];
     float _e66 = sigma;
     float most = metal::max(as_type<float>(_e64), _e66);
-    scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 13u)] = as_type<uint>(most);
+    scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 14u)] = as_type<uint>(most);
     return;
 }
 
@@ -792,11 +793,11 @@ bool accept(
         Hit _e10 = finish_hit(ray_5, c_1, instances, triangles, hit_error, attributes, _buffer_sizes);
         hit_error = shaded;
         if (ray_5.kind == RAY_SHADOW) {
-            scratch.inner[metal::min(SCRATCH_ABSORB, 13u)] = _e10.front_face ? 1u : 2u;
-            scratch.inner[metal::min(SCRATCH_ABSORB_T, 13u)] = as_type<uint>(c_1.t * metal::length(ray_5.dir));
+            scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = _e10.front_face ? 1u : 2u;
+            scratch.inner[metal::min(SCRATCH_ABSORB_T, 14u)] = as_type<uint>(c_1.t * metal::length(ray_5.dir));
         }
         bool _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10, scratch, params, _buffer_sizes);
-        scratch.inner[metal::min(SCRATCH_ABSORB, 13u)] = 0u;
+        scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = 0u;
         return _e36;
     }
     return true;
@@ -1244,7 +1245,7 @@ void shading_medium(
     uint medium,
     thread type_3& scratch
 ) {
-    scratch.inner[metal::min(SCRATCH_MEDIUM, 13u)] = medium;
+    scratch.inner[metal::min(SCRATCH_MEDIUM, 14u)] = medium;
     return;
 }
 
@@ -1375,19 +1376,19 @@ float shadow_transmittance(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float depth = {};
-    scratch.inner[metal::min(SCRATCH_ABSORB, 13u)] = 0u;
-    scratch.inner[metal::min(SCRATCH_DEPTH, 13u)] = 0u;
-    scratch.inner[metal::min(SCRATCH_NET, 13u)] = 0u;
-    scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 13u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_DEPTH, 14u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_NET, 14u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 14u)] = 0u;
     if (HAS_MEDIA && HAS_ANY_HIT) {
         if (medium_1 != 0u) {
             GpuInstance inst_8 = instances[medium_1 - 1u];
             if ((inst_8.flags & FLAG_ANY_HIT) != 0u) {
                 Hit start = Hit {ray_14.origin, 0.0, -(ray_14.dir), -(ray_14.dir), metal::float2(0.0), true, {}, inst_8.object, 0u};
-                scratch.inner[metal::min(SCRATCH_ABSORB, 13u)] = 1u;
-                scratch.inner[metal::min(SCRATCH_ABSORB_T, 13u)] = 0u;
+                scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = 1u;
+                scratch.inner[metal::min(SCRATCH_ABSORB_T, 14u)] = 0u;
                 bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start, scratch, params, _buffer_sizes);
-                scratch.inner[metal::min(SCRATCH_ABSORB, 13u)] = 0u;
+                scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = 0u;
             }
         }
     }
@@ -1395,11 +1396,11 @@ float shadow_transmittance(
     if (_e75.slot != NO_HIT) {
         return 0.0;
     }
-    uint _e85 = scratch.inner[metal::min(SCRATCH_DEPTH, 13u)];
+    uint _e85 = scratch.inner[metal::min(SCRATCH_DEPTH, 14u)];
     depth = as_type<float>(_e85);
-    uint _e93 = scratch.inner[metal::min(SCRATCH_NET, 13u)];
+    uint _e93 = scratch.inner[metal::min(SCRATCH_NET, 14u)];
     float net_1 = as_type<float>(_e93);
-    uint _e101 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 13u)];
+    uint _e101 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 14u)];
     if (net_1 > (0.000001 * as_type<float>(_e101))) {
         uint _e107 = F32_INF;
         if (ray_14.tmax == as_type<float>(_e107)) {
@@ -1430,10 +1431,14 @@ float shadow_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
-    uint _e10 = scratch.inner[metal::min(SCRATCH_MEDIUM, 13u)];
-    float _e11 = shadow_transmittance(_e4, _e10, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
-    return _e11;
+    uint _e9 = scratch.inner[metal::min(SCRATCH_UNOCCLUDED, 14u)];
+    if (_e9 != 0u) {
+        return 1.0;
+    }
+    Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
+    uint _e19 = scratch.inner[metal::min(SCRATCH_MEDIUM, 14u)];
+    float _e20 = shadow_transmittance(_e13, _e19, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    return _e20;
 }
 
 LightSample point_light(
@@ -1624,9 +1629,32 @@ metal::float3 shade_direct(
     return _e12;
 }
 
+LightSample sample_light_unoccluded_query(
+    uint i_4,
+    metal::float3 position_5,
+    metal::float3 normal_5,
+    constant FrameUniforms& frame,
+    thread type_3& scratch,
+    device type_5 const& params,
+    thread uint& F32_INF,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread float& hit_error,
+    device type_13 const& attributes,
+    thread type_15& traversal_stack,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    scratch.inner[metal::min(SCRATCH_UNOCCLUDED, 14u)] = 1u;
+    LightSample _e9 = sample_light_query(i_4, position_5, normal_5, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    scratch.inner[metal::min(SCRATCH_UNOCCLUDED, 14u)] = 0u;
+    return _e9;
+}
+
 metal::float3 fog_inscatter(
     Fog m_3,
-    uint i_4,
+    uint i_5,
     metal::float3 o,
     metal::float3 dir_2,
     float d_1,
@@ -1648,7 +1676,7 @@ metal::float3 fog_inscatter(
     float s_1 = {};
     float sigma_1 = m_3.density;
     bool tiny_1 = (sigma_1 * d_1) < 0.001;
-    LightSample _e12 = sample_light_query(i_4, o, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e12 = sample_light_unoccluded_query(i_5, o, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     metal::float3 c_6 = _e12.dir * metal::float3(_e12.dist);
     float delta = metal::dot(c_6, dir_2);
     float h_1 = metal::length(c_6 - (dir_2 * metal::float3(delta)));
@@ -1675,7 +1703,7 @@ metal::float3 fog_inscatter(
     float r_3 = _e76 - delta;
     float pdf = ((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))) : 0.0);
     float _e91 = s_1;
-    LightSample _e97 = sample_light_query(i_4, o + (dir_2 * metal::float3(_e91)), metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e97 = sample_light_query(i_5, o + (dir_2 * metal::float3(_e91)), metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e97.radiance * metal::float3((sigma_1 * e_2) / pdf);
 }
 
@@ -1699,7 +1727,7 @@ metal::float3 fog_medium(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 light = {};
-    uint i_5 = {};
+    uint i_6 = {};
     float len = metal::length(ray_18.dir);
     if (!((m_4.density > 0.0)) || !((len > 0.0))) {
         return radiance;
@@ -1708,23 +1736,23 @@ metal::float3 fog_medium(
     float trans_1 = metal::exp(-(m_4.density) * d_6);
     light = metal::float3(0.0);
     uint _e23 = light_count_query(frame);
-    i_5 = 0u;
+    i_6 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e35 = i_5;
-            i_5 = _e35 + 1u;
+            uint _e35 = i_6;
+            i_6 = _e35 + 1u;
         }
         loop_init_3 = false;
-        uint _e25 = i_5;
+        uint _e25 = i_6;
         if (_e25 >= _e23) {
             break;
         }
         metal::float3 _e27 = light;
-        uint _e28 = i_5;
+        uint _e28 = i_6;
         metal::float3 _e33 = fog_inscatter(m_4, _e28, ray_18.origin, ray_18.dir / metal::float3(len), d_6, trans_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
         light = _e27 + _e33;
     }
@@ -1834,20 +1862,20 @@ void dispatch_secondary_rays(
 }
 
 metal::float3 spawn_origin_at(
-    metal::float3 position_5,
-    metal::float3 normal_5,
+    metal::float3 position_6,
+    metal::float3 normal_6,
     float error_1,
     metal::float3 dir_4
 ) {
     metal::float3 n_5 = {};
-    n_5 = normal_5;
+    n_5 = normal_6;
     metal::float3 _e5 = n_5;
     if (metal::dot(dir_4, _e5) < 0.0) {
         metal::float3 _e9 = n_5;
         n_5 = -(_e9);
     }
     metal::float3 _e11 = n_5;
-    metal::float3 _e12 = offset_origin(position_5, _e11, error_1);
+    metal::float3 _e12 = offset_origin(position_6, _e11, error_1);
     return _e12;
 }
 
@@ -1898,7 +1926,7 @@ metal::float3 trace(
     float t_4 = {};
     Hit hit_10 = {};
     Frame f_1 = {};
-    uint i_6 = {};
+    uint i_7 = {};
     uint medium_2 = {};
     bool found = {};
     uint k_1 = {};
@@ -1999,27 +2027,27 @@ metal::float3 trace(
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
                         f_1 = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_16 {}, type_16 {}, n_8, 0u};
-                        i_6 = 0u;
+                        i_7 = 0u;
                         uint2 loop_bound_7 = uint2(4294967295u);
                         bool loop_init_4 = true;
                         while(true) {
                             if (metal::all(loop_bound_7 == uint2(0u))) { break; }
                             loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                             if (!loop_init_4) {
-                                uint _e175 = i_6;
-                                i_6 = _e175 + 1u;
+                                uint _e175 = i_7;
+                                i_7 = _e175 + 1u;
                             }
                             loop_init_4 = false;
-                            uint _e155 = i_6;
+                            uint _e155 = i_7;
                             if (_e155 >= n_8) {
                                 break;
                             }
-                            uint _e158 = i_6;
-                            uint _e162 = i_6;
+                            uint _e158 = i_7;
+                            uint _e162 = i_7;
                             metal::float3 _e165 = spawn_dirs.inner[_e162];
                             f_1.dirs.inner[metal::min(_e158, 0u)] = _e165;
-                            uint _e167 = i_6;
-                            uint _e171 = i_6;
+                            uint _e167 = i_7;
+                            uint _e171 = i_7;
                             metal::float3 _e174 = spawn_weights.inner[_e171];
                             f_1.weights.inner[metal::min(_e167, 0u)] = _e174;
                         }
@@ -2074,11 +2102,11 @@ metal::float3 trace(
         uint _e243 = stack.inner[metal::min(top_1, 2u)].next;
         uint _e248 = stack.inner[metal::min(top_1, 2u)].count;
         if (_e243 < _e248) {
-            uint i_8 = stack.inner[metal::min(top_1, 2u)].next;
-            stack.inner[metal::min(top_1, 2u)].next = i_8 + 1u;
+            uint i_9 = stack.inner[metal::min(top_1, 2u)].next;
+            stack.inner[metal::min(top_1, 2u)].next = i_9 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 2u)].ray;
             Hit hit_12 = stack.inner[metal::min(top_1, 2u)].hit;
-            metal::float3 dir_7 = stack.inner[metal::min(top_1, 2u)].dirs.inner[metal::min(i_8, 0u)];
+            metal::float3 dir_7 = stack.inner[metal::min(top_1, 2u)].dirs.inner[metal::min(i_9, 0u)];
             medium_2 = parent.medium;
             if (metal::dot(dir_7, hit_12.geometric_normal) < 0.0) {
                 uint _e289 = stack.inner[metal::min(top_1, 2u)].slot;

@@ -167,6 +167,7 @@ const HAS_SECONDARY_RAYS: bool = true;
 const HAS_BACKGROUND: bool = false;
 const SCRATCH_MEDIUM: u32 = 10u;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
+const SCRATCH_UNOCCLUDED: u32 = 14u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const HAS_ANY_HIT: bool = true;
 const INV_PI: f32 = 0.31830987f;
@@ -182,7 +183,7 @@ const RAY_SECONDARY: u32 = 1u;
 var<uniform> tile: TileParams;
 @group(0) @binding(0) 
 var<uniform> frame: FrameUniforms;
-var<private> scratch: array<u32, 14>;
+var<private> scratch: array<u32, 15>;
 var<private> rng_state: u32;
 @group(0) @binding(6) 
 var<storage> params: array<u32>;
@@ -256,11 +257,11 @@ fn pcg_hash(x: u32) -> u32 {
 }
 
 fn rng_resume(pixel: vec2<u32>, sample: u32, seed: u32, state: u32) {
-    scratch[min(SCRATCH_RNG_INDEX, 13u)] = sample;
+    scratch[min(SCRATCH_RNG_INDEX, 14u)] = sample;
     let _e12 = pcg_hash(seed);
     let _e14 = pcg_hash((pixel.y ^ _e12));
     let _e16 = pcg_hash((pixel.x ^ _e14));
-    scratch[min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    scratch[min(SCRATCH_RNG_SEED, 14u)] = _e16;
     rng_state = state;
     return;
 }
@@ -342,14 +343,14 @@ fn rand_next() -> f32 {
 
     let d_2 = rng_state;
     rng_state = (d_2 + 1u);
-    let _e10 = scratch[min(SCRATCH_RNG_SEED, 13u)];
+    let _e10 = scratch[min(SCRATCH_RNG_SEED, 14u)];
     let _e16 = pcg_hash((_e10 ^ ((d_2 >> 1u) * 2654435769u)));
-    let _e22 = scratch[min(SCRATCH_RNG_INDEX, 13u)];
+    let _e22 = scratch[min(SCRATCH_RNG_INDEX, 14u)];
     let _e24 = laine_karras(reverseBits(_e22), _e16);
-    let i_7 = reverseBits(_e24);
-    x_2 = i_7;
+    let i_8 = reverseBits(_e24);
+    x_2 = i_8;
     if ((d_2 & 1u) != 0u) {
-        let _e31 = sobol_second_reversed(i_7);
+        let _e31 = sobol_second_reversed(i_8);
         x_2 = _e31;
     }
     let scramble = (_e16 ^ (((2654435769u * (1u + (d_2 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
@@ -587,7 +588,7 @@ fn absorb_query(density: f32) {
     if !(HAS_ABSORB) {
         return;
     }
-    let side = scratch[min(SCRATCH_ABSORB, 13u)];
+    let side = scratch[min(SCRATCH_ABSORB, 14u)];
     if (side == 0u) {
         return;
     }
@@ -596,21 +597,21 @@ fn absorb_query(density: f32) {
     if (_e13 && (density > 0f)) {
         sigma = density;
     }
-    let _e22 = scratch[min(SCRATCH_ABSORB_T, 13u)];
+    let _e22 = scratch[min(SCRATCH_ABSORB_T, 14u)];
     let t_6 = bitcast<f32>(_e22);
     let _e24 = sigma;
     let _e25 = sigma;
     let s_5 = select(_e24, -(_e25), (side == 2u));
-    let _e35 = scratch[min(SCRATCH_DEPTH, 13u)];
+    let _e35 = scratch[min(SCRATCH_DEPTH, 14u)];
     let depth_2 = (bitcast<f32>(_e35) - (s_5 * t_6));
-    scratch[min(SCRATCH_DEPTH, 13u)] = bitcast<u32>(depth_2);
-    let _e50 = scratch[min(SCRATCH_NET, 13u)];
+    scratch[min(SCRATCH_DEPTH, 14u)] = bitcast<u32>(depth_2);
+    let _e50 = scratch[min(SCRATCH_NET, 14u)];
     let net = (bitcast<f32>(_e50) + s_5);
-    scratch[min(SCRATCH_NET, 13u)] = bitcast<u32>(net);
-    let _e64 = scratch[min(SCRATCH_DENSITY_MAX, 13u)];
+    scratch[min(SCRATCH_NET, 14u)] = bitcast<u32>(net);
+    let _e64 = scratch[min(SCRATCH_DENSITY_MAX, 14u)];
     let _e66 = sigma;
     let most = max(bitcast<f32>(_e64), _e66);
-    scratch[min(SCRATCH_DENSITY_MAX, 13u)] = bitcast<u32>(most);
+    scratch[min(SCRATCH_DENSITY_MAX, 14u)] = bitcast<u32>(most);
     return;
 }
 
@@ -631,11 +632,11 @@ fn accept(inst_4: GpuInstance, ray_5: Ray, c_1: Candidate) -> bool {
         let _e10 = finish_hit(ray_5, c_1);
         hit_error = shaded;
         if (ray_5.kind == RAY_SHADOW) {
-            scratch[min(SCRATCH_ABSORB, 13u)] = select(2u, 1u, _e10.front_face);
-            scratch[min(SCRATCH_ABSORB_T, 13u)] = bitcast<u32>((c_1.t * length(ray_5.dir)));
+            scratch[min(SCRATCH_ABSORB, 14u)] = select(2u, 1u, _e10.front_face);
+            scratch[min(SCRATCH_ABSORB_T, 14u)] = bitcast<u32>((c_1.t * length(ray_5.dir)));
         }
         let _e36 = dispatch_any_hit(inst_4.material_type, inst_4.material_offset, ray_5, _e10);
-        scratch[min(SCRATCH_ABSORB, 13u)] = 0u;
+        scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
         return _e36;
     }
     return true;
@@ -970,7 +971,7 @@ fn miss(ray_11: Ray) -> vec3<f32> {
 }
 
 fn shading_medium(medium: u32) {
-    scratch[min(SCRATCH_MEDIUM, 13u)] = medium;
+    scratch[min(SCRATCH_MEDIUM, 14u)] = medium;
     return;
 }
 
@@ -1056,19 +1057,19 @@ fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32)
 fn shadow_transmittance(ray_14: Ray, medium_1: u32) -> f32 {
     var depth: f32;
 
-    scratch[min(SCRATCH_ABSORB, 13u)] = 0u;
-    scratch[min(SCRATCH_DEPTH, 13u)] = 0u;
-    scratch[min(SCRATCH_NET, 13u)] = 0u;
-    scratch[min(SCRATCH_DENSITY_MAX, 13u)] = 0u;
+    scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
+    scratch[min(SCRATCH_DEPTH, 14u)] = 0u;
+    scratch[min(SCRATCH_NET, 14u)] = 0u;
+    scratch[min(SCRATCH_DENSITY_MAX, 14u)] = 0u;
     if (HAS_MEDIA && HAS_ANY_HIT) {
         if (medium_1 != 0u) {
             let inst_8 = instances[(medium_1 - 1u)];
             if ((inst_8.flags & FLAG_ANY_HIT) != 0u) {
                 let start = Hit(ray_14.origin, 0f, -(ray_14.dir), -(ray_14.dir), vec2(0f), true, inst_8.object, 0u);
-                scratch[min(SCRATCH_ABSORB, 13u)] = 1u;
-                scratch[min(SCRATCH_ABSORB_T, 13u)] = 0u;
+                scratch[min(SCRATCH_ABSORB, 14u)] = 1u;
+                scratch[min(SCRATCH_ABSORB_T, 14u)] = 0u;
                 let _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start);
-                scratch[min(SCRATCH_ABSORB, 13u)] = 0u;
+                scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
             }
         }
     }
@@ -1076,11 +1077,11 @@ fn shadow_transmittance(ray_14: Ray, medium_1: u32) -> f32 {
     if (_e75.slot != NO_HIT) {
         return 0f;
     }
-    let _e85 = scratch[min(SCRATCH_DEPTH, 13u)];
+    let _e85 = scratch[min(SCRATCH_DEPTH, 14u)];
     depth = bitcast<f32>(_e85);
-    let _e93 = scratch[min(SCRATCH_NET, 13u)];
+    let _e93 = scratch[min(SCRATCH_NET, 14u)];
     let net_1 = bitcast<f32>(_e93);
-    let _e101 = scratch[min(SCRATCH_DENSITY_MAX, 13u)];
+    let _e101 = scratch[min(SCRATCH_DENSITY_MAX, 14u)];
     if (net_1 > (0.000001f * bitcast<f32>(_e101))) {
         let _e107 = F32_INF;
         if (ray_14.tmax == bitcast<f32>(_e107)) {
@@ -1094,10 +1095,14 @@ fn shadow_transmittance(ray_14: Ray, medium_1: u32) -> f32 {
 }
 
 fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
-    let _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    let _e10 = scratch[min(SCRATCH_MEDIUM, 13u)];
-    let _e11 = shadow_transmittance(_e4, _e10);
-    return _e11;
+    let _e9 = scratch[min(SCRATCH_UNOCCLUDED, 14u)];
+    if (_e9 != 0u) {
+        return 1f;
+    }
+    let _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
+    let _e19 = scratch[min(SCRATCH_MEDIUM, 14u)];
+    let _e20 = shadow_transmittance(_e13, _e19);
+    return _e20;
 }
 
 fn point_light(l: PointLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
@@ -1186,12 +1191,19 @@ fn shade_direct(ray_17: Ray, c_2: Candidate) -> vec3<f32> {
     return _e12;
 }
 
-fn fog_inscatter(m_3: Fog, i_4: u32, o: vec3<f32>, dir_2: vec3<f32>, d_1: f32, trans: f32) -> vec3<f32> {
+fn sample_light_unoccluded_query(i_4: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
+    scratch[min(SCRATCH_UNOCCLUDED, 14u)] = 1u;
+    let _e9 = sample_light_query(i_4, position_5, normal_5);
+    scratch[min(SCRATCH_UNOCCLUDED, 14u)] = 0u;
+    return _e9;
+}
+
+fn fog_inscatter(m_3: Fog, i_5: u32, o: vec3<f32>, dir_2: vec3<f32>, d_1: f32, trans: f32) -> vec3<f32> {
     var s_1: f32;
 
     let sigma_1 = m_3.density;
     let tiny_1 = ((sigma_1 * d_1) < 0.001f);
-    let _e12 = sample_light_query(i_4, o, vec3(0f));
+    let _e12 = sample_light_unoccluded_query(i_5, o, vec3(0f));
     let c_6 = (_e12.dir * vec3(_e12.dist));
     let delta = dot(c_6, dir_2);
     let h_1 = length((c_6 - (dir_2 * vec3(delta))));
@@ -1218,13 +1230,13 @@ fn fog_inscatter(m_3: Fog, i_4: u32, o: vec3<f32>, dir_2: vec3<f32>, d_1: f32, t
     let r_3 = (_e76 - delta);
     let pdf = (((1f - w_3) * p_free) + select(0f, ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))), equi));
     let _e91 = s_1;
-    let _e97 = sample_light_query(i_4, (o + (dir_2 * vec3(_e91))), vec3(0f));
+    let _e97 = sample_light_query(i_5, (o + (dir_2 * vec3(_e91))), vec3(0f));
     return (_e97.radiance * vec3(((sigma_1 * e_2) / pdf)));
 }
 
 fn fog_medium(m_4: Fog, ray_18: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     var light: vec3<f32>;
-    var i_5: u32;
+    var i_6: u32;
 
     let len = length(ray_18.dir);
     if (!((m_4.density > 0f)) || !((len > 0f))) {
@@ -1234,19 +1246,19 @@ fn fog_medium(m_4: Fog, ray_18: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     let trans_1 = exp((-(m_4.density) * d_6));
     light = vec3(0f);
     let _e23 = light_count_query();
-    i_5 = 0u;
+    i_6 = 0u;
     loop {
-        let _e25 = i_5;
+        let _e25 = i_6;
         if (_e25 >= _e23) {
             break;
         }
         let _e27 = light;
-        let _e28 = i_5;
+        let _e28 = i_6;
         let _e33 = fog_inscatter(m_4, _e28, ray_18.origin, (ray_18.dir / vec3(len)), d_6, trans_1);
         light = (_e27 + _e33);
         continuing {
-            let _e35 = i_5;
-            i_5 = (_e35 + 1u);
+            let _e35 = i_6;
+            i_6 = (_e35 + 1u);
         }
     }
     let _e46 = light;
@@ -1295,17 +1307,17 @@ fn dispatch_secondary_rays(type_id_6: u32, offset_10: u32, ray_22: Ray, hit_8: H
     return;
 }
 
-fn spawn_origin_at(position_5: vec3<f32>, normal_5: vec3<f32>, error_1: f32, dir_4: vec3<f32>) -> vec3<f32> {
+fn spawn_origin_at(position_6: vec3<f32>, normal_6: vec3<f32>, error_1: f32, dir_4: vec3<f32>) -> vec3<f32> {
     var n_5: vec3<f32>;
 
-    n_5 = normal_5;
+    n_5 = normal_6;
     let _e5 = n_5;
     if (dot(dir_4, _e5) < 0f) {
         let _e9 = n_5;
         n_5 = -(_e9);
     }
     let _e11 = n_5;
-    let _e12 = offset_origin(position_5, _e11, error_1);
+    let _e12 = offset_origin(position_6, _e11, error_1);
     return _e12;
 }
 
@@ -1334,7 +1346,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_4: f32;
     var hit_10: Hit;
     var f_1: Frame;
-    var i_6: u32;
+    var i_7: u32;
     var medium_2: u32;
     var found: bool;
     var k_1: u32;
@@ -1433,23 +1445,23 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                         let _e143 = s_error;
                         let _e145 = s_c.slot;
                         f_1 = Frame(_e141, _e142, _e143, _e145, vec3(0f), array<vec3<f32>, 1>(), array<vec3<f32>, 1>(), n_8, 0u);
-                        i_6 = 0u;
+                        i_7 = 0u;
                         loop {
-                            let _e155 = i_6;
+                            let _e155 = i_7;
                             if (_e155 >= n_8) {
                                 break;
                             }
-                            let _e158 = i_6;
-                            let _e162 = i_6;
+                            let _e158 = i_7;
+                            let _e162 = i_7;
                             let _e165 = spawn_dirs[_e162];
                             f_1.dirs[min(_e158, 0u)] = _e165;
-                            let _e167 = i_6;
-                            let _e171 = i_6;
+                            let _e167 = i_7;
+                            let _e171 = i_7;
                             let _e174 = spawn_weights[_e171];
                             f_1.weights[min(_e167, 0u)] = _e174;
                             continuing {
-                                let _e175 = i_6;
-                                i_6 = (_e175 + 1u);
+                                let _e175 = i_7;
+                                i_7 = (_e175 + 1u);
                             }
                         }
                         let _e178 = depth_1;
@@ -1503,11 +1515,11 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e243 = stack[min(top_1, 2u)].next;
         let _e248 = stack[min(top_1, 2u)].count;
         if (_e243 < _e248) {
-            let i_8 = stack[min(top_1, 2u)].next;
-            stack[min(top_1, 2u)].next = (i_8 + 1u);
+            let i_9 = stack[min(top_1, 2u)].next;
+            stack[min(top_1, 2u)].next = (i_9 + 1u);
             let parent = stack[min(top_1, 2u)].ray;
             let hit_12 = stack[min(top_1, 2u)].hit;
-            let dir_7 = stack[min(top_1, 2u)].dirs[min(i_8, 0u)];
+            let dir_7 = stack[min(top_1, 2u)].dirs[min(i_9, 0u)];
             medium_2 = parent.medium;
             if (dot(dir_7, hit_12.geometric_normal) < 0f) {
                 let _e289 = stack[min(top_1, 2u)].slot;

@@ -150,7 +150,7 @@ layout(std140, binding = 1) uniform TileParams_block_0Compute { TileParams _grou
 
 layout(std140, binding = 0) uniform FrameUniforms_block_1Compute { FrameUniforms _group_0_binding_0_cs; };
 
-uint scratch[14] = uint[14](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+uint scratch[15] = uint[15](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
 uint rng_state = 0u;
 
@@ -233,11 +233,11 @@ uint pcg_hash(uint x) {
 }
 
 void rng_resume(uvec2 pixel, uint sample_, uint seed, uint state) {
-    scratch[min(SCRATCH_RNG_INDEX, 13u)] = sample_;
+    scratch[min(SCRATCH_RNG_INDEX, 14u)] = sample_;
     uint _e12 = pcg_hash(seed);
     uint _e14 = pcg_hash((pixel.y ^ _e12));
     uint _e16 = pcg_hash((pixel.x ^ _e14));
-    scratch[min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    scratch[min(SCRATCH_RNG_SEED, 14u)] = _e16;
     rng_state = state;
     return;
 }
@@ -316,9 +316,9 @@ float rand_next() {
     uint x_2 = 0u;
     uint d_1 = rng_state;
     rng_state = (d_1 + 1u);
-    uint _e10 = scratch[min(SCRATCH_RNG_SEED, 13u)];
+    uint _e10 = scratch[min(SCRATCH_RNG_SEED, 14u)];
     uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
-    uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 13u)];
+    uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 14u)];
     uint _e24 = laine_karras(bitfieldReverse(_e22), _e16);
     uint i_3 = bitfieldReverse(_e24);
     x_2 = i_3;

@@ -189,7 +189,7 @@ static const uint RAY_SECONDARY = 1u;
 
 cbuffer tile : register(b1) { TileParams tile; }
 cbuffer frame : register(b0) { FrameUniforms frame; }
-static uint scratch[14] = (uint[14])0;
+static uint scratch[15] = (uint[15])0;
 static uint rng_state = (uint)0;
 ByteAddressBuffer params : register(t6);
 static uint F32_INF = 2139095040u;
@@ -279,11 +279,11 @@ uint pcg_hash(uint x)
 
 void rng_resume(uint2 pixel, uint sample_, uint seed, uint state)
 {
-    scratch[min(uint(min(SCRATCH_RNG_INDEX, 13u)), 13u)] = sample_;
+    scratch[min(uint(min(SCRATCH_RNG_INDEX, 14u)), 14u)] = sample_;
     const uint _e12 = pcg_hash(seed);
     const uint _e14 = pcg_hash((pixel.y ^ _e12));
     const uint _e16 = pcg_hash((pixel.x ^ _e14));
-    scratch[min(uint(min(SCRATCH_RNG_SEED, 13u)), 13u)] = _e16;
+    scratch[min(uint(min(SCRATCH_RNG_SEED, 14u)), 14u)] = _e16;
     rng_state = state;
     return;
 }
@@ -382,9 +382,9 @@ float rand_next()
 
     uint d_1 = rng_state;
     rng_state = (d_1 + 1u);
-    uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 13u)), 13u)];
+    uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 14u)), 14u)];
     const uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
-    uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 13u)), 13u)];
+    uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 14u)), 14u)];
     const uint _e24 = laine_karras(reversebits(_e22), _e16);
     uint i_3 = reversebits(_e24);
     x_2 = i_3;

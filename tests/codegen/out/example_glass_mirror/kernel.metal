@@ -38,7 +38,7 @@ struct FrameUniforms {
     uint path_slots;
 };
 struct type_3 {
-    uint inner[14];
+    uint inner[15];
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -275,11 +275,11 @@ void rng_resume(
     thread type_3& scratch,
     thread uint& rng_state
 ) {
-    scratch.inner[metal::min(SCRATCH_RNG_INDEX, 13u)] = sample;
+    scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)] = sample;
     uint _e12 = pcg_hash(seed);
     uint _e14 = pcg_hash(pixel.y ^ _e12);
     uint _e16 = pcg_hash(pixel.x ^ _e14);
-    scratch.inner[metal::min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    scratch.inner[metal::min(SCRATCH_RNG_SEED, 14u)] = _e16;
     rng_state = state;
     return;
 }
@@ -380,9 +380,9 @@ float rand_next(
     uint x_2 = {};
     uint d_1 = rng_state;
     rng_state = d_1 + 1u;
-    uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 13u)];
+    uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 14u)];
     uint _e16 = pcg_hash(_e10 ^ ((d_1 >> 1u) * 2654435769u));
-    uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 13u)];
+    uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)];
     uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
     uint i_3 = metal::reverse_bits(_e24);
     x_2 = i_3;

@@ -159,7 +159,7 @@ const RAY_SECONDARY: u32 = 1u;
 var<uniform> tile: TileParams;
 @group(0) @binding(0) 
 var<uniform> frame: FrameUniforms;
-var<private> scratch: array<u32, 14>;
+var<private> scratch: array<u32, 15>;
 var<private> rng_state: u32;
 @group(0) @binding(6) 
 var<storage> params: array<u32>;
@@ -233,11 +233,11 @@ fn pcg_hash(x: u32) -> u32 {
 }
 
 fn rng_resume(pixel: vec2<u32>, sample: u32, seed: u32, state: u32) {
-    scratch[min(SCRATCH_RNG_INDEX, 13u)] = sample;
+    scratch[min(SCRATCH_RNG_INDEX, 14u)] = sample;
     let _e12 = pcg_hash(seed);
     let _e14 = pcg_hash((pixel.y ^ _e12));
     let _e16 = pcg_hash((pixel.x ^ _e14));
-    scratch[min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    scratch[min(SCRATCH_RNG_SEED, 14u)] = _e16;
     rng_state = state;
     return;
 }
@@ -319,9 +319,9 @@ fn rand_next() -> f32 {
 
     let d_1 = rng_state;
     rng_state = (d_1 + 1u);
-    let _e10 = scratch[min(SCRATCH_RNG_SEED, 13u)];
+    let _e10 = scratch[min(SCRATCH_RNG_SEED, 14u)];
     let _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
-    let _e22 = scratch[min(SCRATCH_RNG_INDEX, 13u)];
+    let _e22 = scratch[min(SCRATCH_RNG_INDEX, 14u)];
     let _e24 = laine_karras(reverseBits(_e22), _e16);
     let i_3 = reverseBits(_e24);
     x_2 = i_3;

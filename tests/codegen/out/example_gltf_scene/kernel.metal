@@ -39,7 +39,7 @@ struct FrameUniforms {
     uint path_slots;
 };
 struct type_3 {
-    uint inner[24];
+    uint inner[25];
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -227,9 +227,10 @@ constant uint SCRATCH_RESOLVED = 3u;
 constant uint SCRATCH_LIGHT_BITS = 11u;
 constant uint SCRATCH_QUERY = 2u;
 constant uint SCRATCH_PENDING = 4u;
+constant uint SCRATCH_UNOCCLUDED = 14u;
 constant uint LIGHT_QUERIES = 32u;
 constant uint COUNTER_SHADOW_OVERFLOW = 3u;
-constant uint SCRATCH_LIGHT_QUERY = 14u;
+constant uint SCRATCH_LIGHT_QUERY = 15u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant float INV_PI = 0.31830987;
 constant uint FLAG_MEDIUM = 4u;
@@ -329,11 +330,11 @@ void rng_resume(
     thread type_3& scratch,
     thread uint& rng_state
 ) {
-    scratch.inner[metal::min(SCRATCH_RNG_INDEX, 23u)] = sample;
+    scratch.inner[metal::min(SCRATCH_RNG_INDEX, 24u)] = sample;
     uint _e12 = pcg_hash(seed);
     uint _e14 = pcg_hash(pixel.y ^ _e12);
     uint _e16 = pcg_hash(pixel.x ^ _e14);
-    scratch.inner[metal::min(SCRATCH_RNG_SEED, 23u)] = _e16;
+    scratch.inner[metal::min(SCRATCH_RNG_SEED, 24u)] = _e16;
     rng_state = state;
     return;
 }
@@ -434,9 +435,9 @@ float rand_next(
     uint x_2 = {};
     uint d_1 = rng_state;
     rng_state = d_1 + 1u;
-    uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 23u)];
+    uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 24u)];
     uint _e16 = pcg_hash(_e10 ^ ((d_1 >> 1u) * 2654435769u));
-    uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 23u)];
+    uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 24u)];
     uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
     uint i_7 = metal::reverse_bits(_e24);
     x_2 = i_7;
@@ -1524,9 +1525,9 @@ void scratch_store3f(
     thread type_3& scratch
 ) {
     metal::uint3 b_9 = as_type<metal::uint3>(v_2);
-    scratch.inner[metal::min(i_2, 23u)] = b_9.x;
-    scratch.inner[metal::min(i_2 + 1u, 23u)] = b_9.y;
-    scratch.inner[metal::min(i_2 + 2u, 23u)] = b_9.z;
+    scratch.inner[metal::min(i_2, 24u)] = b_9.x;
+    scratch.inner[metal::min(i_2 + 1u, 24u)] = b_9.y;
+    scratch.inner[metal::min(i_2 + 2u, 24u)] = b_9.z;
     return;
 }
 
@@ -1539,15 +1540,19 @@ float shadow_deferred(
     device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint i_8 = scratch.inner[metal::min(SCRATCH_QUERY, 23u)];
-    scratch.inner[metal::min(SCRATCH_QUERY, 23u)] = i_8 + 1u;
-    uint _e22 = scratch.inner[metal::min(SCRATCH_RESOLVED, 23u)];
-    if (i_8 < _e22) {
-        uint _e29 = scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 23u)];
-        return static_cast<float>((_e29 >> (i_8 & 31u)) & 1u);
+    uint _e9 = scratch.inner[metal::min(SCRATCH_UNOCCLUDED, 24u)];
+    if (_e9 != 0u) {
+        return 1.0;
     }
-    uint _e41 = scratch.inner[metal::min(SCRATCH_PENDING, 23u)];
-    if (_e41 != 0u) {
+    uint i_8 = scratch.inner[metal::min(SCRATCH_QUERY, 24u)];
+    scratch.inner[metal::min(SCRATCH_QUERY, 24u)] = i_8 + 1u;
+    uint _e31 = scratch.inner[metal::min(SCRATCH_RESOLVED, 24u)];
+    if (i_8 < _e31) {
+        uint _e38 = scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 24u)];
+        return static_cast<float>((_e38 >> (i_8 & 31u)) & 1u);
+    }
+    uint _e50 = scratch.inner[metal::min(SCRATCH_PENDING, 24u)];
+    if (_e50 != 0u) {
         return 1.0;
     }
     if (i_8 >= LIGHT_QUERIES) {
@@ -1557,8 +1562,8 @@ float shadow_deferred(
     scratch_store3f(SCRATCH_LIGHT_QUERY, position, scratch);
     scratch_store3f(SCRATCH_LIGHT_QUERY + 3u, normal, scratch);
     scratch_store3f(SCRATCH_LIGHT_QUERY + 6u, dir, scratch);
-    scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 23u)] = as_type<uint>(dist);
-    scratch.inner[metal::min(SCRATCH_PENDING, 23u)] = 1u;
+    scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 24u)] = as_type<uint>(dist);
+    scratch.inner[metal::min(SCRATCH_PENDING, 24u)] = 1u;
     return 1.0;
 }
 
@@ -1655,9 +1660,9 @@ metal::float3 scratch_load3f(
     uint i_3,
     thread type_3& scratch
 ) {
-    uint _e5 = scratch.inner[metal::min(i_3, 23u)];
-    uint _e12 = scratch.inner[metal::min(i_3 + 1u, 23u)];
-    uint _e19 = scratch.inner[metal::min(i_3 + 2u, 23u)];
+    uint _e5 = scratch.inner[metal::min(i_3, 24u)];
+    uint _e12 = scratch.inner[metal::min(i_3 + 1u, 24u)];
+    uint _e19 = scratch.inner[metal::min(i_3 + 2u, 24u)];
     return as_type<metal::float3>(metal::uint3(_e5, _e12, _e19));
 }
 
@@ -1726,6 +1731,7 @@ float shadow_query(
     float dist_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1738,9 +1744,13 @@ float shadow_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray _e4 = shadow_ray(position_5, normal_5, dir_2, dist_2, F32_INF, hit_error);
-    Candidate _e6 = intersect_scene(_e4, true, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
-    return (_e6.slot != NO_HIT) ? 0.0 : 1.0;
+    uint _e9 = scratch.inner[metal::min(SCRATCH_UNOCCLUDED, 24u)];
+    if (_e9 != 0u) {
+        return 1.0;
+    }
+    Ray _e13 = shadow_ray(position_5, normal_5, dir_2, dist_2, F32_INF, hit_error);
+    Candidate _e15 = intersect_scene(_e13, true, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    return (_e15.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
 LightSample sample_light_deferred(
@@ -1778,17 +1788,17 @@ LightSample sample_light_deferred(
     after = start;
     resolved = 0u;
     bits_1 = 0u;
-    scratch.inner[metal::min(SCRATCH_RESOLVED, 23u)] = 0u;
-    scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 23u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_RESOLVED, 24u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 24u)] = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         rng_state = start;
-        scratch.inner[metal::min(SCRATCH_QUERY, 23u)] = 0u;
-        scratch.inner[metal::min(SCRATCH_PENDING, 23u)] = 0u;
+        scratch.inner[metal::min(SCRATCH_QUERY, 24u)] = 0u;
+        scratch.inner[metal::min(SCRATCH_PENDING, 24u)] = 0u;
         LightSample _e60 = dispatch_light(type_id_7, offset_14, position_6, normal_6, scratch, params, F32_INF, counters, _buffer_sizes);
-        uint _e66 = scratch.inner[metal::min(SCRATCH_PENDING, 23u)];
+        uint _e66 = scratch.inner[metal::min(SCRATCH_PENDING, 24u)];
         if (_e66 == 0u) {
             uint _e69 = resolved;
             if (_e69 > 0u) {
@@ -1807,12 +1817,12 @@ LightSample sample_light_deferred(
         metal::float3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY, scratch);
         metal::float3 _e85 = scratch_load3f(SCRATCH_LIGHT_QUERY + 3u, scratch);
         metal::float3 _e88 = scratch_load3f(SCRATCH_LIGHT_QUERY + 6u, scratch);
-        uint _e95 = scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 23u)];
-        float _e97 = shadow_query(_e82, _e85, _e88, as_type<float>(_e95), tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+        uint _e95 = scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 24u)];
+        float _e97 = shadow_query(_e82, _e85, _e88, as_type<float>(_e95), tile, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
         uint _e99 = rng_state;
         after = _e99;
         if (!((_e97 == 0.0))) {
-            uint _e108 = scratch.inner[metal::min(SCRATCH_QUERY, 23u)];
+            uint _e108 = scratch.inner[metal::min(SCRATCH_QUERY, 24u)];
             uint _e109 = resolved;
             if (_e108 == (_e109 + 1u)) {
                 uint _e113 = after;
@@ -1826,9 +1836,9 @@ LightSample sample_light_deferred(
         uint _e122 = resolved;
         resolved = _e122 + 1u;
         uint _e126 = bits_1;
-        scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 23u)] = _e126;
+        scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 24u)] = _e126;
         uint _e132 = resolved;
-        scratch.inner[metal::min(SCRATCH_RESOLVED, 23u)] = _e132;
+        scratch.inner[metal::min(SCRATCH_RESOLVED, 24u)] = _e132;
     }
     return LightSample {};
 }

@@ -157,6 +157,7 @@ const GAMMA_4_: f32 = 0.00000023841864f;
 const HAS_SECONDARY_RAYS: bool = false;
 const HAS_BACKGROUND: bool = true;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
+const SCRATCH_UNOCCLUDED: u32 = 14u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
 const INV_PI: f32 = 0.31830987f;
@@ -171,7 +172,7 @@ const RAY_SECONDARY: u32 = 1u;
 var<uniform> tile: TileParams;
 @group(0) @binding(0) 
 var<uniform> frame: FrameUniforms;
-var<private> scratch: array<u32, 14>;
+var<private> scratch: array<u32, 15>;
 var<private> rng_state: u32;
 @group(0) @binding(6) 
 var<storage> params: array<u32>;
@@ -245,11 +246,11 @@ fn pcg_hash(x: u32) -> u32 {
 }
 
 fn rng_resume(pixel: vec2<u32>, sample: u32, seed: u32, state: u32) {
-    scratch[min(SCRATCH_RNG_INDEX, 13u)] = sample;
+    scratch[min(SCRATCH_RNG_INDEX, 14u)] = sample;
     let _e12 = pcg_hash(seed);
     let _e14 = pcg_hash((pixel.y ^ _e12));
     let _e16 = pcg_hash((pixel.x ^ _e14));
-    scratch[min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    scratch[min(SCRATCH_RNG_SEED, 14u)] = _e16;
     rng_state = state;
     return;
 }
@@ -331,9 +332,9 @@ fn rand_next() -> f32 {
 
     let d_1 = rng_state;
     rng_state = (d_1 + 1u);
-    let _e10 = scratch[min(SCRATCH_RNG_SEED, 13u)];
+    let _e10 = scratch[min(SCRATCH_RNG_SEED, 14u)];
     let _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
-    let _e22 = scratch[min(SCRATCH_RNG_INDEX, 13u)];
+    let _e22 = scratch[min(SCRATCH_RNG_INDEX, 14u)];
     let _e24 = laine_karras(reverseBits(_e22), _e16);
     let i_5 = reverseBits(_e24);
     x_2 = i_5;
@@ -979,9 +980,13 @@ fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32)
 }
 
 fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
-    let _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    let _e6 = intersect_scene(_e4, true);
-    return select(1f, 0f, (_e6.slot != NO_HIT));
+    let _e9 = scratch[min(SCRATCH_UNOCCLUDED, 14u)];
+    if (_e9 != 0u) {
+        return 1f;
+    }
+    let _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
+    let _e15 = intersect_scene(_e13, true);
+    return select(1f, 0f, (_e15.slot != NO_HIT));
 }
 
 fn point_light(l: PointLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {

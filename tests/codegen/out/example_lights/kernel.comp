@@ -187,9 +187,10 @@ const uint SCRATCH_RESOLVED = 3u;
 const uint SCRATCH_LIGHT_BITS = 11u;
 const uint SCRATCH_QUERY = 2u;
 const uint SCRATCH_PENDING = 4u;
+const uint SCRATCH_UNOCCLUDED = 14u;
 const uint LIGHT_QUERIES = 32u;
 const uint COUNTER_SHADOW_OVERFLOW = 3u;
-const uint SCRATCH_LIGHT_QUERY = 14u;
+const uint SCRATCH_LIGHT_QUERY = 15u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const uint RAY_SHADOW = 2u;
 const uint FLAG_MEDIUM = 4u;
@@ -203,7 +204,7 @@ layout(std140, binding = 1) uniform TileParams_block_0Compute { TileParams _grou
 
 layout(std140, binding = 0) uniform FrameUniforms_block_1Compute { FrameUniforms _group_0_binding_0_cs; };
 
-uint scratch[24] = uint[24](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+uint scratch[25] = uint[25](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
 uint rng_state = 0u;
 
@@ -286,11 +287,11 @@ uint pcg_hash(uint x) {
 }
 
 void rng_resume(uvec2 pixel, uint sample_, uint seed, uint state) {
-    scratch[min(SCRATCH_RNG_INDEX, 23u)] = sample_;
+    scratch[min(SCRATCH_RNG_INDEX, 24u)] = sample_;
     uint _e12 = pcg_hash(seed);
     uint _e14 = pcg_hash((pixel.y ^ _e12));
     uint _e16 = pcg_hash((pixel.x ^ _e14));
-    scratch[min(SCRATCH_RNG_SEED, 23u)] = _e16;
+    scratch[min(SCRATCH_RNG_SEED, 24u)] = _e16;
     rng_state = state;
     return;
 }
@@ -369,9 +370,9 @@ float rand_next() {
     uint x_2 = 0u;
     uint d_1 = rng_state;
     rng_state = (d_1 + 1u);
-    uint _e10 = scratch[min(SCRATCH_RNG_SEED, 23u)];
+    uint _e10 = scratch[min(SCRATCH_RNG_SEED, 24u)];
     uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
-    uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 23u)];
+    uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 24u)];
     uint _e24 = laine_karras(bitfieldReverse(_e22), _e16);
     uint i_7 = bitfieldReverse(_e24);
     x_2 = i_7;
@@ -1096,22 +1097,26 @@ DirectionalLight load_DirectionalLight(uint offset_8) {
 
 void scratch_store3f(uint i_2, vec3 v_2) {
     uvec3 b_9 = floatBitsToUint(v_2);
-    scratch[min(i_2, 23u)] = b_9.x;
-    scratch[min((i_2 + 1u), 23u)] = b_9.y;
-    scratch[min((i_2 + 2u), 23u)] = b_9.z;
+    scratch[min(i_2, 24u)] = b_9.x;
+    scratch[min((i_2 + 1u), 24u)] = b_9.y;
+    scratch[min((i_2 + 2u), 24u)] = b_9.z;
     return;
 }
 
 float shadow_deferred(vec3 position, vec3 normal, vec3 dir, float dist) {
-    uint i_8 = scratch[min(SCRATCH_QUERY, 23u)];
-    scratch[min(SCRATCH_QUERY, 23u)] = (i_8 + 1u);
-    uint _e22 = scratch[min(SCRATCH_RESOLVED, 23u)];
-    if ((i_8 < _e22)) {
-        uint _e29 = scratch[min(SCRATCH_LIGHT_BITS, 23u)];
-        return float(((_e29 >> (i_8 & 31u)) & 1u));
+    uint _e9 = scratch[min(SCRATCH_UNOCCLUDED, 24u)];
+    if ((_e9 != 0u)) {
+        return 1.0;
     }
-    uint _e41 = scratch[min(SCRATCH_PENDING, 23u)];
-    if ((_e41 != 0u)) {
+    uint i_8 = scratch[min(SCRATCH_QUERY, 24u)];
+    scratch[min(SCRATCH_QUERY, 24u)] = (i_8 + 1u);
+    uint _e31 = scratch[min(SCRATCH_RESOLVED, 24u)];
+    if ((i_8 < _e31)) {
+        uint _e38 = scratch[min(SCRATCH_LIGHT_BITS, 24u)];
+        return float(((_e38 >> (i_8 & 31u)) & 1u));
+    }
+    uint _e50 = scratch[min(SCRATCH_PENDING, 24u)];
+    if ((_e50 != 0u)) {
         return 1.0;
     }
     if ((i_8 >= LIGHT_QUERIES)) {
@@ -1121,8 +1126,8 @@ float shadow_deferred(vec3 position, vec3 normal, vec3 dir, float dist) {
     scratch_store3f(SCRATCH_LIGHT_QUERY, position);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 23u)] = floatBitsToUint(dist);
-    scratch[min(SCRATCH_PENDING, 23u)] = 1u;
+    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 24u)] = floatBitsToUint(dist);
+    scratch[min(SCRATCH_PENDING, 24u)] = 1u;
     return 1.0;
 }
 
@@ -1284,9 +1289,9 @@ LightSample dispatch_light(uint type_id_3, uint offset_12, vec3 position_5, vec3
 }
 
 vec3 scratch_load3f(uint i_3) {
-    uint _e5 = scratch[min(i_3, 23u)];
-    uint _e12 = scratch[min((i_3 + 1u), 23u)];
-    uint _e19 = scratch[min((i_3 + 2u), 23u)];
+    uint _e5 = scratch[min(i_3, 24u)];
+    uint _e12 = scratch[min((i_3 + 1u), 24u)];
+    uint _e19 = scratch[min((i_3 + 2u), 24u)];
     return uintBitsToFloat(uvec3(_e5, _e12, _e19));
 }
 
@@ -1335,9 +1340,13 @@ Ray shadow_ray(vec3 position_6, vec3 normal_6, vec3 dir_1, float dist_1) {
 }
 
 float shadow_query(vec3 position_7, vec3 normal_7, vec3 dir_2, float dist_2) {
-    Ray _e4 = shadow_ray(position_7, normal_7, dir_2, dist_2);
-    Candidate _e6 = intersect_scene(_e4, true);
-    return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
+    uint _e9 = scratch[min(SCRATCH_UNOCCLUDED, 24u)];
+    if ((_e9 != 0u)) {
+        return 1.0;
+    }
+    Ray _e13 = shadow_ray(position_7, normal_7, dir_2, dist_2);
+    Candidate _e15 = intersect_scene(_e13, true);
+    return ((_e15.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
 LightSample sample_light_deferred(uint i_4, vec3 position_8, vec3 normal_8) {
@@ -1355,14 +1364,14 @@ LightSample sample_light_deferred(uint i_4, vec3 position_8, vec3 normal_8) {
     after = start;
     resolved = 0u;
     bits_1 = 0u;
-    scratch[min(SCRATCH_RESOLVED, 23u)] = 0u;
-    scratch[min(SCRATCH_LIGHT_BITS, 23u)] = 0u;
+    scratch[min(SCRATCH_RESOLVED, 24u)] = 0u;
+    scratch[min(SCRATCH_LIGHT_BITS, 24u)] = 0u;
     while(true) {
         rng_state = start;
-        scratch[min(SCRATCH_QUERY, 23u)] = 0u;
-        scratch[min(SCRATCH_PENDING, 23u)] = 0u;
+        scratch[min(SCRATCH_QUERY, 24u)] = 0u;
+        scratch[min(SCRATCH_PENDING, 24u)] = 0u;
         LightSample _e60 = dispatch_light(type_id_7, offset_17, position_8, normal_8);
-        uint _e66 = scratch[min(SCRATCH_PENDING, 23u)];
+        uint _e66 = scratch[min(SCRATCH_PENDING, 24u)];
         if ((_e66 == 0u)) {
             uint _e69 = resolved;
             if ((_e69 > 0u)) {
@@ -1381,12 +1390,12 @@ LightSample sample_light_deferred(uint i_4, vec3 position_8, vec3 normal_8) {
         vec3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
         vec3 _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
         vec3 _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        uint _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 23u)];
+        uint _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 24u)];
         float _e97 = shadow_query(_e82, _e85, _e88, uintBitsToFloat(_e95));
         uint _e99 = rng_state;
         after = _e99;
         if (!((_e97 == 0.0))) {
-            uint _e108 = scratch[min(SCRATCH_QUERY, 23u)];
+            uint _e108 = scratch[min(SCRATCH_QUERY, 24u)];
             uint _e109 = resolved;
             if ((_e108 == (_e109 + 1u))) {
                 uint _e113 = after;
@@ -1400,9 +1409,9 @@ LightSample sample_light_deferred(uint i_4, vec3 position_8, vec3 normal_8) {
         uint _e122 = resolved;
         resolved = (_e122 + 1u);
         uint _e126 = bits_1;
-        scratch[min(SCRATCH_LIGHT_BITS, 23u)] = _e126;
+        scratch[min(SCRATCH_LIGHT_BITS, 24u)] = _e126;
         uint _e132 = resolved;
-        scratch[min(SCRATCH_RESOLVED, 23u)] = _e132;
+        scratch[min(SCRATCH_RESOLVED, 24u)] = _e132;
     }
     return LightSample(vec3(0.0), 0.0, vec3(0.0), 0.0);
 }

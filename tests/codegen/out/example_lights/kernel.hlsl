@@ -247,9 +247,10 @@ static const uint SCRATCH_RESOLVED = 3u;
 static const uint SCRATCH_LIGHT_BITS = 11u;
 static const uint SCRATCH_QUERY = 2u;
 static const uint SCRATCH_PENDING = 4u;
+static const uint SCRATCH_UNOCCLUDED = 14u;
 static const uint LIGHT_QUERIES = 32u;
 static const uint COUNTER_SHADOW_OVERFLOW = 3u;
-static const uint SCRATCH_LIGHT_QUERY = 14u;
+static const uint SCRATCH_LIGHT_QUERY = 15u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
 static const uint FLAG_MEDIUM = 4u;
@@ -261,7 +262,7 @@ static const uint RAY_SECONDARY = 1u;
 
 cbuffer tile : register(b1) { TileParams tile; }
 cbuffer frame : register(b0) { FrameUniforms frame; }
-static uint scratch[24] = (uint[24])0;
+static uint scratch[25] = (uint[25])0;
 static uint rng_state = (uint)0;
 ByteAddressBuffer params : register(t6);
 static uint F32_INF = 2139095040u;
@@ -351,11 +352,11 @@ uint pcg_hash(uint x)
 
 void rng_resume(uint2 pixel, uint sample_, uint seed, uint state)
 {
-    scratch[min(uint(min(SCRATCH_RNG_INDEX, 23u)), 23u)] = sample_;
+    scratch[min(uint(min(SCRATCH_RNG_INDEX, 24u)), 24u)] = sample_;
     const uint _e12 = pcg_hash(seed);
     const uint _e14 = pcg_hash((pixel.y ^ _e12));
     const uint _e16 = pcg_hash((pixel.x ^ _e14));
-    scratch[min(uint(min(SCRATCH_RNG_SEED, 23u)), 23u)] = _e16;
+    scratch[min(uint(min(SCRATCH_RNG_SEED, 24u)), 24u)] = _e16;
     rng_state = state;
     return;
 }
@@ -454,9 +455,9 @@ float rand_next()
 
     uint d_1 = rng_state;
     rng_state = (d_1 + 1u);
-    uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 23u)), 23u)];
+    uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 24u)), 24u)];
     const uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
-    uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 23u)), 23u)];
+    uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 24u)), 24u)];
     const uint _e24 = laine_karras(reversebits(_e22), _e16);
     uint i_7 = reversebits(_e24);
     x_2 = i_7;
@@ -1410,23 +1411,27 @@ DirectionalLight load_DirectionalLight(uint offset_8)
 void scratch_store3f(uint i_2, float3 v_2)
 {
     uint3 b_9 = asuint(v_2);
-    scratch[min(uint(min(i_2, 23u)), 23u)] = b_9.x;
-    scratch[min(uint(min((i_2 + 1u), 23u)), 23u)] = b_9.y;
-    scratch[min(uint(min((i_2 + 2u), 23u)), 23u)] = b_9.z;
+    scratch[min(uint(min(i_2, 24u)), 24u)] = b_9.x;
+    scratch[min(uint(min((i_2 + 1u), 24u)), 24u)] = b_9.y;
+    scratch[min(uint(min((i_2 + 2u), 24u)), 24u)] = b_9.z;
     return;
 }
 
 float shadow_deferred(float3 position, float3 normal, float3 dir, float dist)
 {
-    uint i_8 = scratch[min(uint(min(SCRATCH_QUERY, 23u)), 23u)];
-    scratch[min(uint(min(SCRATCH_QUERY, 23u)), 23u)] = (i_8 + 1u);
-    uint _e22 = scratch[min(uint(min(SCRATCH_RESOLVED, 23u)), 23u)];
-    if ((i_8 < _e22)) {
-        uint _e29 = scratch[min(uint(min(SCRATCH_LIGHT_BITS, 23u)), 23u)];
-        return float(((_e29 >> (i_8 & 31u)) & 1u));
+    uint _e9 = scratch[min(uint(min(SCRATCH_UNOCCLUDED, 24u)), 24u)];
+    if ((_e9 != 0u)) {
+        return 1.0;
     }
-    uint _e41 = scratch[min(uint(min(SCRATCH_PENDING, 23u)), 23u)];
-    if ((_e41 != 0u)) {
+    uint i_8 = scratch[min(uint(min(SCRATCH_QUERY, 24u)), 24u)];
+    scratch[min(uint(min(SCRATCH_QUERY, 24u)), 24u)] = (i_8 + 1u);
+    uint _e31 = scratch[min(uint(min(SCRATCH_RESOLVED, 24u)), 24u)];
+    if ((i_8 < _e31)) {
+        uint _e38 = scratch[min(uint(min(SCRATCH_LIGHT_BITS, 24u)), 24u)];
+        return float(((_e38 >> (i_8 & 31u)) & 1u));
+    }
+    uint _e50 = scratch[min(uint(min(SCRATCH_PENDING, 24u)), 24u)];
+    if ((_e50 != 0u)) {
         return 1.0;
     }
     if ((i_8 >= LIGHT_QUERIES)) {
@@ -1436,8 +1441,8 @@ float shadow_deferred(float3 position, float3 normal, float3 dir, float dist)
     scratch_store3f(SCRATCH_LIGHT_QUERY, position);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 23u)), 23u)] = asuint(dist);
-    scratch[min(uint(min(SCRATCH_PENDING, 23u)), 23u)] = 1u;
+    scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 24u)), 24u)] = asuint(dist);
+    scratch[min(uint(min(SCRATCH_PENDING, 24u)), 24u)] = 1u;
     return 1.0;
 }
 
@@ -1671,9 +1676,9 @@ LightSample dispatch_light(uint type_id_3, uint offset_12, float3 position_5, fl
 
 float3 scratch_load3f(uint i_3)
 {
-    uint _e5 = scratch[min(uint(min(i_3, 23u)), 23u)];
-    uint _e12 = scratch[min(uint(min((i_3 + 1u), 23u)), 23u)];
-    uint _e19 = scratch[min(uint(min((i_3 + 2u), 23u)), 23u)];
+    uint _e5 = scratch[min(uint(min(i_3, 24u)), 24u)];
+    uint _e12 = scratch[min(uint(min((i_3 + 1u), 24u)), 24u)];
+    uint _e19 = scratch[min(uint(min((i_3 + 2u), 24u)), 24u)];
     return asfloat(uint3(_e5, _e12, _e19));
 }
 
@@ -1728,9 +1733,13 @@ Ray shadow_ray(float3 position_6, float3 normal_6, float3 dir_1, float dist_1)
 
 float shadow_query(float3 position_7, float3 normal_7, float3 dir_2, float dist_2)
 {
-    const Ray _e4 = shadow_ray(position_7, normal_7, dir_2, dist_2);
-    const Candidate _e6 = intersect_scene(_e4, true);
-    return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
+    uint _e9 = scratch[min(uint(min(SCRATCH_UNOCCLUDED, 24u)), 24u)];
+    if ((_e9 != 0u)) {
+        return 1.0;
+    }
+    const Ray _e13 = shadow_ray(position_7, normal_7, dir_2, dist_2);
+    const Candidate _e15 = intersect_scene(_e13, true);
+    return ((_e15.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
 LightSample sample_light_deferred(uint i_4, float3 position_8, float3 normal_8)
@@ -1751,17 +1760,17 @@ LightSample sample_light_deferred(uint i_4, float3 position_8, float3 normal_8)
     after = start;
     resolved = 0u;
     bits_1 = 0u;
-    scratch[min(uint(min(SCRATCH_RESOLVED, 23u)), 23u)] = 0u;
-    scratch[min(uint(min(SCRATCH_LIGHT_BITS, 23u)), 23u)] = 0u;
+    scratch[min(uint(min(SCRATCH_RESOLVED, 24u)), 24u)] = 0u;
+    scratch[min(uint(min(SCRATCH_LIGHT_BITS, 24u)), 24u)] = 0u;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         rng_state = start;
-        scratch[min(uint(min(SCRATCH_QUERY, 23u)), 23u)] = 0u;
-        scratch[min(uint(min(SCRATCH_PENDING, 23u)), 23u)] = 0u;
+        scratch[min(uint(min(SCRATCH_QUERY, 24u)), 24u)] = 0u;
+        scratch[min(uint(min(SCRATCH_PENDING, 24u)), 24u)] = 0u;
         const LightSample _e60 = dispatch_light(type_id_7, offset_17, position_8, normal_8);
-        uint _e66 = scratch[min(uint(min(SCRATCH_PENDING, 23u)), 23u)];
+        uint _e66 = scratch[min(uint(min(SCRATCH_PENDING, 24u)), 24u)];
         if ((_e66 == 0u)) {
             uint _e69 = resolved;
             if ((_e69 > 0u)) {
@@ -1781,12 +1790,12 @@ LightSample sample_light_deferred(uint i_4, float3 position_8, float3 normal_8)
         const float3 _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
         const float3 _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
         const float3 _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        uint _e95 = scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 23u)), 23u)];
+        uint _e95 = scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 24u)), 24u)];
         const float _e97 = shadow_query(_e82, _e85, _e88, asfloat(_e95));
         uint _e99 = rng_state;
         after = _e99;
         if (!((_e97 == 0.0))) {
-            uint _e108 = scratch[min(uint(min(SCRATCH_QUERY, 23u)), 23u)];
+            uint _e108 = scratch[min(uint(min(SCRATCH_QUERY, 24u)), 24u)];
             uint _e109 = resolved;
             if ((_e108 == (_e109 + 1u))) {
                 uint _e113 = after;
@@ -1801,9 +1810,9 @@ LightSample sample_light_deferred(uint i_4, float3 position_8, float3 normal_8)
         uint _e122 = resolved;
         resolved = (_e122 + 1u);
         uint _e126 = bits_1;
-        scratch[min(uint(min(SCRATCH_LIGHT_BITS, 23u)), 23u)] = _e126;
+        scratch[min(uint(min(SCRATCH_LIGHT_BITS, 24u)), 24u)] = _e126;
         uint _e132 = resolved;
-        scratch[min(uint(min(SCRATCH_RESOLVED, 23u)), 23u)] = _e132;
+        scratch[min(uint(min(SCRATCH_RESOLVED, 24u)), 24u)] = _e132;
     }
     const LightSample lightsample_15 = ZeroValueLightSample();
     return lightsample_15;

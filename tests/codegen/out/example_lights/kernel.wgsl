@@ -203,9 +203,10 @@ const SCRATCH_RESOLVED: u32 = 3u;
 const SCRATCH_LIGHT_BITS: u32 = 11u;
 const SCRATCH_QUERY: u32 = 2u;
 const SCRATCH_PENDING: u32 = 4u;
+const SCRATCH_UNOCCLUDED: u32 = 14u;
 const LIGHT_QUERIES: u32 = 32u;
 const COUNTER_SHADOW_OVERFLOW: u32 = 3u;
-const SCRATCH_LIGHT_QUERY: u32 = 14u;
+const SCRATCH_LIGHT_QUERY: u32 = 15u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
 const FLAG_MEDIUM: u32 = 4u;
@@ -219,7 +220,7 @@ const RAY_SECONDARY: u32 = 1u;
 var<uniform> tile: TileParams;
 @group(0) @binding(0) 
 var<uniform> frame: FrameUniforms;
-var<private> scratch: array<u32, 24>;
+var<private> scratch: array<u32, 25>;
 var<private> rng_state: u32;
 @group(0) @binding(6) 
 var<storage> params: array<u32>;
@@ -293,11 +294,11 @@ fn pcg_hash(x: u32) -> u32 {
 }
 
 fn rng_resume(pixel: vec2<u32>, sample: u32, seed: u32, state: u32) {
-    scratch[min(SCRATCH_RNG_INDEX, 23u)] = sample;
+    scratch[min(SCRATCH_RNG_INDEX, 24u)] = sample;
     let _e12 = pcg_hash(seed);
     let _e14 = pcg_hash((pixel.y ^ _e12));
     let _e16 = pcg_hash((pixel.x ^ _e14));
-    scratch[min(SCRATCH_RNG_SEED, 23u)] = _e16;
+    scratch[min(SCRATCH_RNG_SEED, 24u)] = _e16;
     rng_state = state;
     return;
 }
@@ -379,9 +380,9 @@ fn rand_next() -> f32 {
 
     let d_1 = rng_state;
     rng_state = (d_1 + 1u);
-    let _e10 = scratch[min(SCRATCH_RNG_SEED, 23u)];
+    let _e10 = scratch[min(SCRATCH_RNG_SEED, 24u)];
     let _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
-    let _e22 = scratch[min(SCRATCH_RNG_INDEX, 23u)];
+    let _e22 = scratch[min(SCRATCH_RNG_INDEX, 24u)];
     let _e24 = laine_karras(reverseBits(_e22), _e16);
     let i_7 = reverseBits(_e24);
     x_2 = i_7;
@@ -1111,22 +1112,26 @@ fn load_DirectionalLight(offset_8: u32) -> DirectionalLight {
 
 fn scratch_store3f(i_2: u32, v_2: vec3<f32>) {
     let b_9 = bitcast<vec3<u32>>(v_2);
-    scratch[min(i_2, 23u)] = b_9.x;
-    scratch[min((i_2 + 1u), 23u)] = b_9.y;
-    scratch[min((i_2 + 2u), 23u)] = b_9.z;
+    scratch[min(i_2, 24u)] = b_9.x;
+    scratch[min((i_2 + 1u), 24u)] = b_9.y;
+    scratch[min((i_2 + 2u), 24u)] = b_9.z;
     return;
 }
 
 fn shadow_deferred(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
-    let i_8 = scratch[min(SCRATCH_QUERY, 23u)];
-    scratch[min(SCRATCH_QUERY, 23u)] = (i_8 + 1u);
-    let _e22 = scratch[min(SCRATCH_RESOLVED, 23u)];
-    if (i_8 < _e22) {
-        let _e29 = scratch[min(SCRATCH_LIGHT_BITS, 23u)];
-        return f32(((_e29 >> (i_8 & 31u)) & 1u));
+    let _e9 = scratch[min(SCRATCH_UNOCCLUDED, 24u)];
+    if (_e9 != 0u) {
+        return 1f;
     }
-    let _e41 = scratch[min(SCRATCH_PENDING, 23u)];
-    if (_e41 != 0u) {
+    let i_8 = scratch[min(SCRATCH_QUERY, 24u)];
+    scratch[min(SCRATCH_QUERY, 24u)] = (i_8 + 1u);
+    let _e31 = scratch[min(SCRATCH_RESOLVED, 24u)];
+    if (i_8 < _e31) {
+        let _e38 = scratch[min(SCRATCH_LIGHT_BITS, 24u)];
+        return f32(((_e38 >> (i_8 & 31u)) & 1u));
+    }
+    let _e50 = scratch[min(SCRATCH_PENDING, 24u)];
+    if (_e50 != 0u) {
         return 1f;
     }
     if (i_8 >= LIGHT_QUERIES) {
@@ -1136,8 +1141,8 @@ fn shadow_deferred(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist:
     scratch_store3f(SCRATCH_LIGHT_QUERY, position);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
     scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
-    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 23u)] = bitcast<u32>(dist);
-    scratch[min(SCRATCH_PENDING, 23u)] = 1u;
+    scratch[min((SCRATCH_LIGHT_QUERY + 9u), 24u)] = bitcast<u32>(dist);
+    scratch[min(SCRATCH_PENDING, 24u)] = 1u;
     return 1f;
 }
 
@@ -1300,9 +1305,9 @@ fn dispatch_light(type_id_3: u32, offset_12: u32, position_5: vec3<f32>, normal_
 }
 
 fn scratch_load3f(i_3: u32) -> vec3<f32> {
-    let _e5 = scratch[min(i_3, 23u)];
-    let _e12 = scratch[min((i_3 + 1u), 23u)];
-    let _e19 = scratch[min((i_3 + 2u), 23u)];
+    let _e5 = scratch[min(i_3, 24u)];
+    let _e12 = scratch[min((i_3 + 1u), 24u)];
+    let _e19 = scratch[min((i_3 + 2u), 24u)];
     return bitcast<vec3<f32>>(vec3<u32>(_e5, _e12, _e19));
 }
 
@@ -1352,9 +1357,13 @@ fn shadow_ray(position_6: vec3<f32>, normal_6: vec3<f32>, dir_1: vec3<f32>, dist
 }
 
 fn shadow_query(position_7: vec3<f32>, normal_7: vec3<f32>, dir_2: vec3<f32>, dist_2: f32) -> f32 {
-    let _e4 = shadow_ray(position_7, normal_7, dir_2, dist_2);
-    let _e6 = intersect_scene(_e4, true);
-    return select(1f, 0f, (_e6.slot != NO_HIT));
+    let _e9 = scratch[min(SCRATCH_UNOCCLUDED, 24u)];
+    if (_e9 != 0u) {
+        return 1f;
+    }
+    let _e13 = shadow_ray(position_7, normal_7, dir_2, dist_2);
+    let _e15 = intersect_scene(_e13, true);
+    return select(1f, 0f, (_e15.slot != NO_HIT));
 }
 
 fn sample_light_deferred(i_4: u32, position_8: vec3<f32>, normal_8: vec3<f32>) -> LightSample {
@@ -1373,14 +1382,14 @@ fn sample_light_deferred(i_4: u32, position_8: vec3<f32>, normal_8: vec3<f32>) -
     after = start;
     resolved = 0u;
     bits_1 = 0u;
-    scratch[min(SCRATCH_RESOLVED, 23u)] = 0u;
-    scratch[min(SCRATCH_LIGHT_BITS, 23u)] = 0u;
+    scratch[min(SCRATCH_RESOLVED, 24u)] = 0u;
+    scratch[min(SCRATCH_LIGHT_BITS, 24u)] = 0u;
     loop {
         rng_state = start;
-        scratch[min(SCRATCH_QUERY, 23u)] = 0u;
-        scratch[min(SCRATCH_PENDING, 23u)] = 0u;
+        scratch[min(SCRATCH_QUERY, 24u)] = 0u;
+        scratch[min(SCRATCH_PENDING, 24u)] = 0u;
         let _e60 = dispatch_light(type_id_7, offset_17, position_8, normal_8);
-        let _e66 = scratch[min(SCRATCH_PENDING, 23u)];
+        let _e66 = scratch[min(SCRATCH_PENDING, 24u)];
         if (_e66 == 0u) {
             let _e69 = resolved;
             if (_e69 > 0u) {
@@ -1399,12 +1408,12 @@ fn sample_light_deferred(i_4: u32, position_8: vec3<f32>, normal_8: vec3<f32>) -
         let _e82 = scratch_load3f(SCRATCH_LIGHT_QUERY);
         let _e85 = scratch_load3f((SCRATCH_LIGHT_QUERY + 3u));
         let _e88 = scratch_load3f((SCRATCH_LIGHT_QUERY + 6u));
-        let _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 23u)];
+        let _e95 = scratch[min((SCRATCH_LIGHT_QUERY + 9u), 24u)];
         let _e97 = shadow_query(_e82, _e85, _e88, bitcast<f32>(_e95));
         let _e99 = rng_state;
         after = _e99;
         if !((_e97 == 0f)) {
-            let _e108 = scratch[min(SCRATCH_QUERY, 23u)];
+            let _e108 = scratch[min(SCRATCH_QUERY, 24u)];
             let _e109 = resolved;
             if (_e108 == (_e109 + 1u)) {
                 let _e113 = after;
@@ -1418,9 +1427,9 @@ fn sample_light_deferred(i_4: u32, position_8: vec3<f32>, normal_8: vec3<f32>) -
         let _e122 = resolved;
         resolved = (_e122 + 1u);
         let _e126 = bits_1;
-        scratch[min(SCRATCH_LIGHT_BITS, 23u)] = _e126;
+        scratch[min(SCRATCH_LIGHT_BITS, 24u)] = _e126;
         let _e132 = resolved;
-        scratch[min(SCRATCH_RESOLVED, 23u)] = _e132;
+        scratch[min(SCRATCH_RESOLVED, 24u)] = _e132;
     }
     return LightSample();
 }

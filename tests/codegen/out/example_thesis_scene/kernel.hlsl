@@ -206,6 +206,7 @@ static const uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 static const uint RGBA16F_TEXEL_WORDS = 2u;
 static const float INV_PI = 0.31830987;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
+static const uint SCRATCH_UNOCCLUDED = 14u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
 static const uint FLAG_MEDIUM = 4u;
@@ -217,7 +218,7 @@ static const uint RAY_SECONDARY = 1u;
 
 cbuffer tile : register(b1) { TileParams tile; }
 cbuffer frame : register(b0) { FrameUniforms frame; }
-static uint scratch[14] = (uint[14])0;
+static uint scratch[15] = (uint[15])0;
 static uint rng_state = (uint)0;
 ByteAddressBuffer params : register(t6);
 static uint F32_INF = 2139095040u;
@@ -308,11 +309,11 @@ uint pcg_hash(uint x)
 
 void rng_resume(uint2 pixel, uint sample_, uint seed, uint state)
 {
-    scratch[min(uint(min(SCRATCH_RNG_INDEX, 13u)), 13u)] = sample_;
+    scratch[min(uint(min(SCRATCH_RNG_INDEX, 14u)), 14u)] = sample_;
     const uint _e12 = pcg_hash(seed);
     const uint _e14 = pcg_hash((pixel.y ^ _e12));
     const uint _e16 = pcg_hash((pixel.x ^ _e14));
-    scratch[min(uint(min(SCRATCH_RNG_SEED, 13u)), 13u)] = _e16;
+    scratch[min(uint(min(SCRATCH_RNG_SEED, 14u)), 14u)] = _e16;
     rng_state = state;
     return;
 }
@@ -411,9 +412,9 @@ float rand_next()
 
     uint d_1 = rng_state;
     rng_state = (d_1 + 1u);
-    uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 13u)), 13u)];
+    uint _e10 = scratch[min(uint(min(SCRATCH_RNG_SEED, 14u)), 14u)];
     const uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
-    uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 13u)), 13u)];
+    uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 14u)), 14u)];
     const uint _e24 = laine_karras(reversebits(_e22), _e16);
     uint i_5 = reversebits(_e24);
     x_2 = i_5;
@@ -1352,9 +1353,13 @@ Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
 
 float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
 {
-    const Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    const Candidate _e6 = intersect_scene(_e4, true);
-    return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
+    uint _e9 = scratch[min(uint(min(SCRATCH_UNOCCLUDED, 14u)), 14u)];
+    if ((_e9 != 0u)) {
+        return 1.0;
+    }
+    const Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
+    const Candidate _e15 = intersect_scene(_e13, true);
+    return ((_e15.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
 LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {

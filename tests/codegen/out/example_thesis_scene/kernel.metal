@@ -39,7 +39,7 @@ struct FrameUniforms {
     uint path_slots;
 };
 struct type_3 {
-    uint inner[14];
+    uint inner[15];
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -203,6 +203,7 @@ constant uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 constant uint RGBA16F_TEXEL_WORDS = 2u;
 constant float INV_PI = 0.31830987;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
+constant uint SCRATCH_UNOCCLUDED = 14u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
 constant uint FLAG_MEDIUM = 4u;
@@ -302,11 +303,11 @@ void rng_resume(
     thread type_3& scratch,
     thread uint& rng_state
 ) {
-    scratch.inner[metal::min(SCRATCH_RNG_INDEX, 13u)] = sample;
+    scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)] = sample;
     uint _e12 = pcg_hash(seed);
     uint _e14 = pcg_hash(pixel.y ^ _e12);
     uint _e16 = pcg_hash(pixel.x ^ _e14);
-    scratch.inner[metal::min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    scratch.inner[metal::min(SCRATCH_RNG_SEED, 14u)] = _e16;
     rng_state = state;
     return;
 }
@@ -407,9 +408,9 @@ float rand_next(
     uint x_2 = {};
     uint d_1 = rng_state;
     rng_state = d_1 + 1u;
-    uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 13u)];
+    uint _e10 = scratch.inner[metal::min(SCRATCH_RNG_SEED, 14u)];
     uint _e16 = pcg_hash(_e10 ^ ((d_1 >> 1u) * 2654435769u));
-    uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 13u)];
+    uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)];
     uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
     uint i_5 = metal::reverse_bits(_e24);
     x_2 = i_5;
@@ -1389,6 +1390,7 @@ float shadow_query(
     metal::float3 dir_1,
     float dist_1,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1398,9 +1400,13 @@ float shadow_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
-    Candidate _e6 = intersect_scene(_e4, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-    return (_e6.slot != NO_HIT) ? 0.0 : 1.0;
+    uint _e9 = scratch.inner[metal::min(SCRATCH_UNOCCLUDED, 14u)];
+    if (_e9 != 0u) {
+        return 1.0;
+    }
+    Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
+    Candidate _e15 = intersect_scene(_e13, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return (_e15.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
 LightSample point_light(
@@ -1408,6 +1414,7 @@ LightSample point_light(
     metal::float3 position_2,
     metal::float3 normal_2,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1426,7 +1433,7 @@ LightSample point_light(
         float _e19 = strength;
         strength = _e19 * (1.0 - metal::smoothstep(l.inner_range, l.range, dist_2));
     }
-    float _e26 = shadow_query(position_2, normal_2, dir_4, dist_2, frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    float _e26 = shadow_query(position_2, normal_2, dir_4, dist_2, frame, scratch, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     float _e28 = strength;
     return LightSample {dir_4, dist_2, (l.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
 }
@@ -1437,6 +1444,7 @@ LightSample dispatch_light(
     metal::float3 position_3,
     metal::float3 normal_3,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1448,7 +1456,7 @@ LightSample dispatch_light(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PointLight _e3 = load_PointLight(offset_6, params, _buffer_sizes);
-    LightSample _e4 = point_light(_e3, position_3, normal_3, frame, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    LightSample _e4 = point_light(_e3, position_3, normal_3, frame, scratch, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e4;
 }
 
@@ -1457,6 +1465,7 @@ LightSample sample_light_query(
     metal::float3 position_4,
     metal::float3 normal_4,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1474,7 +1483,7 @@ LightSample sample_light_query(
     uint entry = frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE);
     uint _e22 = params[entry];
     uint _e27 = params[entry + 1u];
-    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e28;
 }
 
@@ -1483,6 +1492,7 @@ metal::float3 blinn_phong_shade(
     Ray ray_12,
     Hit hit_2,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1521,7 +1531,7 @@ metal::float3 blinn_phong_shade(
             break;
         }
         uint _e32 = i_3;
-        LightSample _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+        LightSample _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
         float ndl = metal::max(metal::dot(_e3, _e35.dir), 0.0);
         metal::float3 _e42 = normalize_vec3f(_e35.dir + v_3);
         float highlight = metal::pow(metal::max(metal::dot(_e3, _e42), 0.0), s_4) * norm;
@@ -1539,6 +1549,7 @@ metal::float3 dispatch_closest_hit(
     Hit hit_3,
     metal::float3 secondary,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1551,7 +1562,7 @@ metal::float3 dispatch_closest_hit(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     BlinnPhong _e3 = load_BlinnPhong(offset_7, params, _buffer_sizes);
-    metal::float3 _e4 = blinn_phong_shade(_e3, ray_13, hit_3, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
+    metal::float3 _e4 = blinn_phong_shade(_e3, ray_13, hit_3, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
     return _e4;
 }
 
@@ -1559,6 +1570,7 @@ metal::float3 shade_direct(
     Ray ray_14,
     Candidate c_3,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1573,7 +1585,7 @@ metal::float3 shade_direct(
 ) {
     GpuInstance inst_8 = instances[c_3.slot];
     Hit _e6 = finish_hit(ray_14, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, metal::float3(0.0), frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
     return _e11;
 }
 
@@ -1647,6 +1659,7 @@ metal::float3 spawn_origin(
 metal::float3 trace(
     Ray camera_ray,
     constant FrameUniforms& frame,
+    thread type_3& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1693,7 +1706,7 @@ metal::float3 trace(
             metal::float3 _e17 = miss(camera_ray, frame, params, _buffer_sizes);
             radiance_2 = _e17;
         } else {
-            metal::float3 _e18 = shade_direct(camera_ray, _e4, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, _buffer_sizes);
+            metal::float3 _e18 = shade_direct(camera_ray, _e4, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, _buffer_sizes);
             radiance_2 = _e18;
             t_4 = _e4.t;
         }
@@ -1817,7 +1830,7 @@ metal::float3 trace(
                     Ray _e191 = s_ray;
                     Hit _e192 = hit_6;
                     metal::float3 _e193 = s_sum;
-                    metal::float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
+                    metal::float3 _e194 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, _e191, _e192, _e193, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
                     radiance_3 = _e194;
                 }
             }
@@ -1954,7 +1967,7 @@ void render_pixel(
         uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
         ray_19.medium = _e33;
         Ray _e34 = ray_19;
-        metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::float3 _e35 = trace(_e34, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         metal::bool3 _e36 = is_finite_vec3f(_e35);
         if (metal::all(_e36)) {
             metal::float3 _e38 = sum;

@@ -179,6 +179,7 @@ const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
 const uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 const uint RGBA16F_TEXEL_WORDS = 2u;
 const uint LIGHT_ENTRY_STRIDE = 2u;
+const uint SCRATCH_UNOCCLUDED = 14u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const uint RAY_SHADOW = 2u;
 const uint FLAG_MEDIUM = 4u;
@@ -192,7 +193,7 @@ layout(std140, binding = 1) uniform TileParams_block_0Compute { TileParams _grou
 
 layout(std140, binding = 0) uniform FrameUniforms_block_1Compute { FrameUniforms _group_0_binding_0_cs; };
 
-uint scratch[14] = uint[14](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
+uint scratch[15] = uint[15](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 
 uint rng_state = 0u;
 
@@ -279,11 +280,11 @@ uint pcg_hash(uint x) {
 }
 
 void rng_resume(uvec2 pixel, uint sample_, uint seed, uint state) {
-    scratch[min(SCRATCH_RNG_INDEX, 13u)] = sample_;
+    scratch[min(SCRATCH_RNG_INDEX, 14u)] = sample_;
     uint _e12 = pcg_hash(seed);
     uint _e14 = pcg_hash((pixel.y ^ _e12));
     uint _e16 = pcg_hash((pixel.x ^ _e14));
-    scratch[min(SCRATCH_RNG_SEED, 13u)] = _e16;
+    scratch[min(SCRATCH_RNG_SEED, 14u)] = _e16;
     rng_state = state;
     return;
 }
@@ -357,9 +358,9 @@ float rand_next() {
     uint x_2 = 0u;
     uint d_1 = rng_state;
     rng_state = (d_1 + 1u);
-    uint _e10 = scratch[min(SCRATCH_RNG_SEED, 13u)];
+    uint _e10 = scratch[min(SCRATCH_RNG_SEED, 14u)];
     uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
-    uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 13u)];
+    uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 14u)];
     uint _e24 = laine_karras(bitfieldReverse(_e22), _e16);
     uint i_7 = bitfieldReverse(_e24);
     x_2 = i_7;
@@ -1387,9 +1388,13 @@ Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
 }
 
 float shadow_query(vec3 position_1, vec3 normal_1, vec3 dir_1, float dist_1) {
-    Ray _e4 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    Candidate _e6 = intersect_scene(_e4, true);
-    return ((_e6.slot != NO_HIT) ? 0.0 : 1.0);
+    uint _e9 = scratch[min(SCRATCH_UNOCCLUDED, 14u)];
+    if ((_e9 != 0u)) {
+        return 1.0;
+    }
+    Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
+    Candidate _e15 = intersect_scene(_e13, true);
+    return ((_e15.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
 LightSample point_light(PointLight l, vec3 position_2, vec3 normal_2) {
