@@ -192,6 +192,7 @@ static const uint FLAG_MEDIUM = 4u;
 static const uint FLAG_SECONDARY_RAYS = 2u;
 static const uint MAX_DEPTH = 3u;
 static const uint ROULETTE_DEPTH = 2u;
+static const float ROULETTE_THROUGHPUT = 0.5;
 static const uint RAY_SECONDARY = 1u;
 
 cbuffer tile : register(b1) { TileParams tile; }
@@ -1497,26 +1498,27 @@ PathState path_step(PathState s_1, Candidate c_3)
         const PathState pathstate_2 = _e89;
         return pathstate_2;
     }
-    if ((((ROULETTE_DEPTH > 0u) && ((ray_25.depth + 1u) >= ROULETTE_DEPTH)) && (q_3 < 1.0))) {
-        const float _e102 = rand_next();
-        if ((_e102 >= q_3)) {
-            PathState _e104 = out_;
-            const PathState pathstate_3 = _e104;
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_25.depth + 1u) >= ROULETTE_DEPTH)) && (q_3 < ROULETTE_THROUGHPUT))) {
+        float survive = (q_3 / ROULETTE_THROUGHPUT);
+        const float _e104 = rand_next();
+        if ((_e104 >= survive)) {
+            PathState _e106 = out_;
+            const PathState pathstate_3 = _e106;
             return pathstate_3;
         }
-        float3 _e105 = beta;
-        beta = (_e105 / (q_3).xxx);
+        float3 _e107 = beta;
+        beta = (_e107 / (survive).xxx);
     }
-    float3 _e109 = beta;
-    out_.beta = _e109;
-    float3 _e111 = dir_5;
-    const float3 _e112 = spawn_origin(_e22, error_4, _e111);
-    float3 _e114 = dir_5;
-    uint _e116 = F32_INF;
-    out_.ray = ConstructRay(_e112, 0.0, _e114, asfloat(_e116), (ray_25.depth + 1u), RAY_SECONDARY, ray_25.medium);
+    float3 _e111 = beta;
+    out_.beta = _e111;
+    float3 _e113 = dir_5;
+    const float3 _e114 = spawn_origin(_e22, error_4, _e113);
+    float3 _e116 = dir_5;
+    uint _e118 = F32_INF;
+    out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_25.depth + 1u), RAY_SECONDARY, ray_25.medium);
     out_.live = true;
-    PathState _e126 = out_;
-    const PathState pathstate_4 = _e126;
+    PathState _e128 = out_;
+    const PathState pathstate_4 = _e128;
     return pathstate_4;
 }
 

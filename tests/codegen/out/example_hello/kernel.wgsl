@@ -166,6 +166,7 @@ const FLAG_MEDIUM: u32 = 4u;
 const FLAG_SECONDARY_RAYS: u32 = 2u;
 const MAX_DEPTH: u32 = 3u;
 const ROULETTE_DEPTH: u32 = 2u;
+const ROULETTE_THROUGHPUT: f32 = 0.5f;
 const RAY_SECONDARY: u32 = 1u;
 
 @group(0) @binding(1) 
@@ -1207,25 +1208,26 @@ fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
         let _e89 = out;
         return _e89;
     }
-    if (((ROULETTE_DEPTH > 0u) && ((ray_21.depth + 1u) >= ROULETTE_DEPTH)) && (q_3 < 1f)) {
-        let _e102 = rand_next();
-        if (_e102 >= q_3) {
-            let _e104 = out;
-            return _e104;
+    if (((ROULETTE_DEPTH > 0u) && ((ray_21.depth + 1u) >= ROULETTE_DEPTH)) && (q_3 < ROULETTE_THROUGHPUT)) {
+        let survive = (q_3 / ROULETTE_THROUGHPUT);
+        let _e104 = rand_next();
+        if (_e104 >= survive) {
+            let _e106 = out;
+            return _e106;
         }
-        let _e105 = beta;
-        beta = (_e105 / vec3(q_3));
+        let _e107 = beta;
+        beta = (_e107 / vec3(survive));
     }
-    let _e109 = beta;
-    out.beta = _e109;
-    let _e111 = dir_5;
-    let _e112 = spawn_origin(_e22, error_4, _e111);
-    let _e114 = dir_5;
-    let _e116 = F32_INF;
-    out.ray = Ray(_e112, 0f, _e114, bitcast<f32>(_e116), (ray_21.depth + 1u), RAY_SECONDARY, ray_21.medium);
+    let _e111 = beta;
+    out.beta = _e111;
+    let _e113 = dir_5;
+    let _e114 = spawn_origin(_e22, error_4, _e113);
+    let _e116 = dir_5;
+    let _e118 = F32_INF;
+    out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_21.depth + 1u), RAY_SECONDARY, ray_21.medium);
     out.live = true;
-    let _e126 = out;
-    return _e126;
+    let _e128 = out;
+    return _e128;
 }
 
 fn trace_path(camera_ray: Ray) -> vec3<f32> {

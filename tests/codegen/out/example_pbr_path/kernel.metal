@@ -241,6 +241,7 @@ constant uint FLAG_MEDIUM = 4u;
 constant uint FLAG_SECONDARY_RAYS = 2u;
 constant uint MAX_DEPTH = 5u;
 constant uint ROULETTE_DEPTH = 2u;
+constant float ROULETTE_THROUGHPUT = 0.5;
 constant uint RAY_SECONDARY = 1u;
 
 metal::uint2 naga_div(metal::uint2 lhs, metal::uint2 rhs) {
@@ -2427,25 +2428,26 @@ PathState path_step(
         PathState _e89 = out;
         return _e89;
     }
-    if (((ROULETTE_DEPTH > 0u) && ((s_2.ray.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < 1.0)) {
-        float _e102 = rand_next(scratch, rng_state);
-        if (_e102 >= q_6) {
-            PathState _e104 = out;
-            return _e104;
+    if (((ROULETTE_DEPTH > 0u) && ((s_2.ray.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT)) {
+        float survive = q_6 / ROULETTE_THROUGHPUT;
+        float _e104 = rand_next(scratch, rng_state);
+        if (_e104 >= survive) {
+            PathState _e106 = out;
+            return _e106;
         }
-        metal::float3 _e105 = beta;
-        beta = _e105 / metal::float3(q_6);
+        metal::float3 _e107 = beta;
+        beta = _e107 / metal::float3(survive);
     }
-    metal::float3 _e109 = beta;
-    out.beta = _e109;
-    metal::float3 _e111 = dir_7;
-    metal::float3 _e112 = spawn_origin(_e22, error_4, _e111);
-    metal::float3 _e114 = dir_7;
-    uint _e116 = F32_INF;
-    out.ray = Ray {_e112, 0.0, _e114, as_type<float>(_e116), s_2.ray.depth + 1u, RAY_SECONDARY, s_2.ray.medium};
+    metal::float3 _e111 = beta;
+    out.beta = _e111;
+    metal::float3 _e113 = dir_7;
+    metal::float3 _e114 = spawn_origin(_e22, error_4, _e113);
+    metal::float3 _e116 = dir_7;
+    uint _e118 = F32_INF;
+    out.ray = Ray {_e114, 0.0, _e116, as_type<float>(_e118), s_2.ray.depth + 1u, RAY_SECONDARY, s_2.ray.medium};
     out.live = true;
-    PathState _e126 = out;
-    return _e126;
+    PathState _e128 = out;
+    return _e128;
 }
 
 metal::float3 trace_path(

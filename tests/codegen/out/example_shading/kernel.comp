@@ -177,6 +177,7 @@ const uint FLAG_MEDIUM = 4u;
 const uint FLAG_SECONDARY_RAYS = 2u;
 const uint MAX_DEPTH = 3u;
 const uint ROULETTE_DEPTH = 2u;
+const float ROULETTE_THROUGHPUT = 0.5;
 const uint RAY_SECONDARY = 1u;
 
 layout(std140, binding = 1) uniform TileParams_block_0Compute { TileParams _group_0_binding_1_cs; };
@@ -1387,25 +1388,26 @@ PathState path_step(PathState s_1, Candidate c_4) {
         PathState _e89 = out_;
         return _e89;
     }
-    if ((((ROULETTE_DEPTH > 0u) && ((ray_23.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < 1.0))) {
-        float _e102 = rand_next();
-        if ((_e102 >= q_4)) {
-            PathState _e104 = out_;
-            return _e104;
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_23.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT))) {
+        float survive = (q_4 / ROULETTE_THROUGHPUT);
+        float _e104 = rand_next();
+        if ((_e104 >= survive)) {
+            PathState _e106 = out_;
+            return _e106;
         }
-        vec3 _e105 = beta;
-        beta = (_e105 / vec3(q_4));
+        vec3 _e107 = beta;
+        beta = (_e107 / vec3(survive));
     }
-    vec3 _e109 = beta;
-    out_.beta = _e109;
-    vec3 _e111 = dir_5;
-    vec3 _e112 = spawn_origin(_e22, error_4, _e111);
-    vec3 _e114 = dir_5;
-    uint _e116 = F32_INF;
-    out_.ray = Ray(_e112, 0.0, _e114, uintBitsToFloat(_e116), (ray_23.depth + 1u), RAY_SECONDARY, ray_23.medium);
+    vec3 _e111 = beta;
+    out_.beta = _e111;
+    vec3 _e113 = dir_5;
+    vec3 _e114 = spawn_origin(_e22, error_4, _e113);
+    vec3 _e116 = dir_5;
+    uint _e118 = F32_INF;
+    out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_23.depth + 1u), RAY_SECONDARY, ray_23.medium);
     out_.live = true;
-    PathState _e126 = out_;
-    return _e126;
+    PathState _e128 = out_;
+    return _e128;
 }
 
 vec3 trace_path(Ray camera_ray) {
