@@ -216,6 +216,53 @@ fn small_renders_get_the_quick_jit_and_the_same_image() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A still render whose `--size` and `--spp` make at most `WAVEFRONT_PREVIEW_MAX_SAMPLES` samples
+/// runs the wavefront model on a CPU adapter (its stage kernels compile faster), says so, and
+/// writes the megakernel's image byte for byte; `--exec megakernel` and an unknown sample count
+/// keep the megakernel, as a GPU adapter does.
+#[test]
+fn small_renders_on_a_cpu_adapter_run_the_wavefront_model_with_the_same_image() {
+    let dir = scratch("pipelines", "auto-exec");
+    let render = |name: &str, extra: &[&str]| render_small(&dir, name, extra, ("RTC_UNSET", None));
+    let auto = render("auto.png", &["--spp", "1"]);
+    if no_gpu(&auto) {
+        return;
+    }
+    let t = text(&auto);
+    assert!(auto.status.success(), "{t}");
+    let cpu = summary_line(&t, "adapter: ").contains(", CPU,");
+    let note = "exec: wavefront (a render of at most 16384 samples on a CPU adapter";
+    if cpu {
+        assert!(t.contains(note), "{t}");
+        assert!(kernel_line(&t, "rtc wf_shade").contains("compiled"), "{t}");
+    } else {
+        assert!(!t.contains("exec: "), "{t}");
+        assert!(kernel_line(&t, "rtc render").contains("compiled"), "{t}");
+    }
+
+    let mega = render("mega.png", &["--spp", "1", "--exec", "megakernel"]);
+    let t = text(&mega);
+    assert!(mega.status.success(), "{t}");
+    assert!(!t.contains("exec: "), "{t}");
+    assert!(kernel_line(&t, "rtc render").contains("compiled"), "{t}");
+    let a = std::fs::read(dir.join("auto.png")).expect("the automatic model's image");
+    let b = std::fs::read(dir.join("mega.png")).expect("the megakernel's image");
+    assert!(a == b, "the two models' images differ");
+
+    // The scene's own samples are not known before its compile: the megakernel.
+    let unknown = render("unknown.png", &[]);
+    let t = text(&unknown);
+    assert!(unknown.status.success(), "{t}");
+    assert!(!t.contains("exec: "), "{t}");
+    assert!(kernel_line(&t, "rtc render").contains("compiled"), "{t}");
+    // 8x8 at 300 spp (19,200 samples) is over the bound.
+    let big = render("big.png", &["--spp", "300"]);
+    let t = text(&big);
+    assert!(big.status.success(), "{t}");
+    assert!(!t.contains("exec: "), "{t}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn compile_timings_print_phases_and_driver_times() {
     let dir = scratch("pipelines", "timings");

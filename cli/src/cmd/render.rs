@@ -30,7 +30,7 @@ use super::Context;
 use crate::args::{BvhArgs, ExecArgs, MessageFormat, RenderArgs};
 use crate::exit::Exit;
 use crate::{report, term};
-use rtc_compiler::kernel::{compile_scene_with, CompiledScene, KernelOptions};
+use rtc_compiler::kernel::{compile_scene_with, CompiledScene, ExecModel, KernelOptions};
 use rtc_compiler::link::LinkOptions;
 use rtc_compiler::sema::hir::SceneDesc;
 use rtc_runtime::animation;
@@ -190,6 +190,26 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     };
 
     let exec = args.exec.model();
+    // A small still render's time is its kernels' compile: on a CPU adapter, a scene left at
+    // `EXEC_AUTO` then runs the wavefront model, whose stage kernels compile faster. The adapter
+    // is asked for before the compile only then (a failure here is reported after the compile's
+    // diagnostics, as always).
+    let still = animate.is_none() && args.shard.is_none();
+    let small = exec.is_none()
+        && still
+        && args
+            .render
+            .samples_given()
+            .is_some_and(|n| n <= rtc_runtime::gpu::WAVEFRONT_PREVIEW_MAX_SAMPLES);
+    let early_gpu = if small { Gpu::new(&choice).ok() } else { None };
+    let auto = if early_gpu
+        .as_ref()
+        .is_some_and(|g| g.description().device_type == wgpu::DeviceType::Cpu)
+    {
+        ExecModel::Wavefront
+    } else {
+        ExecModel::Megakernel
+    };
     let compiled = match compile_scene_with(
         std::slice::from_ref(scene_path),
         args.render.scene.name.as_deref(),
@@ -197,6 +217,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         &link,
         &KernelOptions {
             exec,
+            auto,
             ..KernelOptions::default()
         },
     ) {
@@ -236,7 +257,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         }
     }
 
-    let gpu = match Gpu::new(&choice) {
+    let gpu = match early_gpu.map_or_else(|| Gpu::new(&choice), Ok) {
         Ok(gpu) => gpu,
         Err(e) => return fail(&e.to_string(), ctx),
     };
@@ -302,6 +323,13 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             ),
             ctx,
         );
+    }
+    if exec.is_none() && auto == ExecModel::Wavefront && result.stats.exec == ExecModel::Wavefront {
+        term::print(&format!(
+            "exec: wavefront (a render of at most {} samples on a CPU adapter: its stage kernels \
+             compile faster than the megakernel; `--exec megakernel` keeps the megakernel)\n",
+            rtc_runtime::gpu::WAVEFRONT_PREVIEW_MAX_SAMPLES
+        ));
     }
     term::print(&summary(&result.stats, &args.output));
     Exit::Success

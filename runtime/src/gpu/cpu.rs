@@ -72,6 +72,16 @@ pub enum CpuJit {
 /// bound keeps a margin below the smallest.
 pub const QUICK_JIT_MAX_SAMPLES: u64 = 1 << 17;
 
+/// The most samples (pixels times samples per pixel) a still `rtc render` on a CPU adapter may
+/// have for a scene left at `EXEC_AUTO` to run the wavefront model: 16 K, e.g. 128x128 at 1 spp or
+/// 64x48 at 5 spp. Such a render's time is its kernels' compile, and the wavefront's stage kernels
+/// compile faster than the megakernel for 12 of the 13 examples (cold, Mesa 25, 64x48 at 1 spp:
+/// 0.6 to 1.9 s against 0.7 to 3.4 s; glass_mirror is the exception, 0.98 against 0.65 s). Its
+/// slower frames catch up from about 65 K samples on the closest examples (cornell_path and hello
+/// at 128x128 and 4 spp: 1.25 against 1.30 s, 0.93 against 0.95 s); the bound keeps a margin of
+/// four below that (docs/bench/compile.md, "The wavefront model for small renders (2026-12-04)").
+pub const WAVEFRONT_PREVIEW_MAX_SAMPLES: u64 = 1 << 14;
+
 impl CpuJit {
     /// [`CpuJit::Quick`] for a render of at most [`QUICK_JIT_MAX_SAMPLES`] samples, else
     /// [`CpuJit::Optimized`] (also when the count is unknown: `None`).
