@@ -66,11 +66,7 @@ impl Command {
         match self {
             Command::Check(_) => rtc_runtime::gpu::CpuJit::Optimized,
             Command::Compile(args) => args.adapter.cpu_jit.resolve(None),
-            Command::Render(args) => {
-                let still = args.frames.is_none() && args.shard.is_none();
-                let samples = args.render.samples_given().filter(|_| still);
-                args.render.adapter.cpu_jit.resolve(samples)
-            }
+            Command::Render(args) => args.render.adapter.cpu_jit.resolve(args.still_samples()),
             Command::Bench(args) => args.adapter.cpu_jit.resolve(None),
             Command::Bvh(args) => args.render.adapter.cpu_jit.resolve(None),
             Command::Watch(args) => {

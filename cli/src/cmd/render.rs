@@ -84,6 +84,16 @@ pub struct Args {
     pub report: bool,
 }
 
+impl Args {
+    /// The samples (pixels times samples per pixel) of a still render whose `--size` and `--spp`
+    /// are both given; `None` for an animation (`--frames`, `--fps` or `--shard`) or when the
+    /// scene's own size or samples decide, which are not known before its compile.
+    pub fn still_samples(&self) -> Option<u64> {
+        let still = self.frames.is_none() && self.shard.is_none() && self.fps.is_none();
+        self.render.samples_given().filter(|_| still)
+    }
+}
+
 /// What `--frames`, `--fps` and `--shard` asked for, checked before compiling.
 struct FrameArgs {
     range: frames::FrameRange,
@@ -194,12 +204,9 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     // `EXEC_AUTO` then runs the wavefront model, whose stage kernels compile faster. The adapter
     // is asked for before the compile only then (a failure here is reported after the compile's
     // diagnostics, as always).
-    let still = animate.is_none() && args.shard.is_none();
     let small = exec.is_none()
-        && still
         && args
-            .render
-            .samples_given()
+            .still_samples()
             .is_some_and(|n| n <= rtc_runtime::gpu::WAVEFRONT_PREVIEW_MAX_SAMPLES);
     let early_gpu = if small { Gpu::new(&choice).ok() } else { None };
     let auto = if early_gpu
@@ -324,7 +331,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             ctx,
         );
     }
-    if exec.is_none() && auto == ExecModel::Wavefront && result.stats.exec == ExecModel::Wavefront {
+    if auto == ExecModel::Wavefront && result.stats.exec == ExecModel::Wavefront {
         term::print(&format!(
             "exec: wavefront (a render of at most {} samples on a CPU adapter: its stage kernels \
              compile faster than the megakernel; `--exec megakernel` keeps the megakernel)\n",
