@@ -124,8 +124,9 @@ pub struct AdapterArgs {
     /// How a CPU driver (lavapipe) compiles the kernels: `quick` turns LLVM's optimisation passes
     /// off (a third to a half of the compile time, frames 1.1 to 3.9 times slower, the same
     /// image), `optimized` keeps them; `auto` is quick for a still `rtc render` or `rtc watch`
-    /// preview whose `--size` and `--spp` make at most 131,072 samples (e.g. 256x256 at 2 spp) and
-    /// optimized otherwise. `GALLIVM_PERF` in the environment overrides it; GPU drivers ignore it.
+    /// preview whose `--size` and `--spp` make at most 131,072 samples (e.g. 256x256 at 2 spp),
+    /// for a still `rtc render` through a megakernel of at most 393,216 (786,432 when its scene
+    /// has no secondary rays) counting the scene's own size and samples, and optimized otherwise. `GALLIVM_PERF` in the environment overrides it; GPU drivers ignore it.
     #[arg(long, value_name = "JIT", value_enum, default_value_t = CpuJitChoice::Auto)]
     pub cpu_jit: CpuJitChoice,
 }
@@ -398,8 +399,9 @@ mod tests {
         assert!("axb".parse::<Size>().is_err());
     }
 
-    /// The JIT `rtc ARGS…` asks a CPU driver for.
-    fn jit(args: &[&str]) -> CpuJit {
+    /// The JIT `rtc ARGS…` asks a CPU driver for before anything runs (`None`: `render` chooses
+    /// it after the compile).
+    fn jit(args: &[&str]) -> Option<CpuJit> {
         let cli = Cli::try_parse_from(std::iter::once("rtc").chain(args.iter().copied()))
             .expect("the arguments parse");
         cli.command.cpu_jit()
@@ -413,44 +415,45 @@ mod tests {
             a.extend_from_slice(extra);
             jit(&a)
         };
-        assert_eq!(render(&small), CpuJit::Quick);
-        assert_eq!(render(&["--size", "256x256", "--spp", "2"]), CpuJit::Quick);
+        assert_eq!(render(&small), Some(CpuJit::Quick));
         assert_eq!(
-            render(&["--size", "256x256", "--spp", "3"]),
-            CpuJit::Optimized
+            render(&["--size", "256x256", "--spp", "2"]),
+            Some(CpuJit::Quick)
         );
-        // The scene's own size or samples are not known before its compile.
-        assert_eq!(render(&["--size", "64x48"]), CpuJit::Optimized);
-        assert_eq!(render(&["--spp", "1"]), CpuJit::Optimized);
-        assert_eq!(render(&[]), CpuJit::Optimized);
+        // Larger ones, and the scene's own size or samples, which are not known before its
+        // compile: `render` chooses after it, from the scene and its kernels.
+        assert_eq!(render(&["--size", "256x256", "--spp", "3"]), None);
+        assert_eq!(render(&["--size", "64x48"]), None);
+        assert_eq!(render(&["--spp", "1"]), None);
+        assert_eq!(render(&[]), None);
         // Animations go on; the flag decides over `auto`.
         assert_eq!(
             render(&[&small[..], &["--frames", "0..2"]].concat()),
-            CpuJit::Optimized
+            Some(CpuJit::Optimized)
         );
         assert_eq!(
             render(&[&small[..], &["--cpu-jit", "optimized"]].concat()),
-            CpuJit::Optimized
+            Some(CpuJit::Optimized)
         );
-        assert_eq!(render(&["--cpu-jit", "quick"]), CpuJit::Quick);
+        assert_eq!(render(&["--cpu-jit", "quick"]), Some(CpuJit::Quick));
         // A watch gets it for a small preview only; views and benchmarks run on.
         assert_eq!(
             jit(&[&["watch", "s.rt", "-o", "p.png"][..], &small[..]].concat()),
-            CpuJit::Quick
+            Some(CpuJit::Quick)
         );
         assert_eq!(
             jit(&[&["watch", "s.rt"][..], &small[..]].concat()),
-            CpuJit::Optimized
+            Some(CpuJit::Optimized)
         );
         assert_eq!(
             jit(&[&["view", "s.rt"][..], &small[..]].concat()),
-            CpuJit::Optimized
+            Some(CpuJit::Optimized)
         );
-        assert_eq!(jit(&["bench", "s.rt"]), CpuJit::Optimized);
+        assert_eq!(jit(&["bench", "s.rt"]), Some(CpuJit::Optimized));
         assert_eq!(
             jit(&["bench", "--compile", "--cpu-jit", "quick"]),
-            CpuJit::Quick
+            Some(CpuJit::Quick)
         );
-        assert_eq!(jit(&["check", "s.rt"]), CpuJit::Optimized);
+        assert_eq!(jit(&["check", "s.rt"]), Some(CpuJit::Optimized));
     }
 }

@@ -36,9 +36,10 @@ fn main() -> ExitCode {
         // `--help` and `--version` exit with 0, bad arguments with 2 (after printing the usage).
         Err(e) => e.exit(),
     };
-    // Before any other thread or GPU instance exists: lavapipe reads these when it loads.
-    if cli.command.uses_gpu() {
-        rtc_runtime::gpu::apply_lavapipe_defaults(cli.command.cpu_jit());
+    // Before any other thread or GPU instance exists: lavapipe reads these when it loads. A
+    // render whose JIT depends on its compiled scene applies them itself, before its GPU work.
+    if let Some(jit) = cli.command.cpu_jit().filter(|_| cli.command.uses_gpu()) {
+        rtc_runtime::gpu::apply_lavapipe_defaults(jit);
     }
     run_guarded(cli).into()
 }

@@ -128,7 +128,15 @@ fn mesa_major(adapter: &str) -> Option<u32> {
 #[test]
 fn render_sets_llvmpipe_width_on_mesa_25_unless_the_user_did() {
     let dir = scratch("pipelines", "width");
-    let width = |w| render_small(&dir, "width.png", &[], ("LP_NATIVE_VECTOR_WIDTH", w));
+    // The optimising JIT, so that the width is the host line's last setting.
+    let width = |w| {
+        render_small(
+            &dir,
+            "width.png",
+            &["--cpu-jit", "optimized"],
+            ("LP_NATIVE_VECTOR_WIDTH", w),
+        )
+    };
     let ours = width(None);
     if no_gpu(&ours) {
         return;
@@ -170,8 +178,9 @@ fn render_jit(dir: &Path, name: &str, extra: &[&str], perf: Option<&str>) -> Out
 
 /// A still render whose `--size` and `--spp` are small gets lavapipe's quick JIT (LLVM's
 /// optimisation off) on lavapipe, says so on the host line, and writes the same image byte for
-/// byte as the optimising JIT; `--cpu-jit optimized`, an unknown sample count and a user's
-/// `GALLIVM_PERF` keep rtc out of it.
+/// byte as the optimising JIT; so does one whose scene's own size and samples are small, or whose
+/// count is within the bound of its compiled kernels; `--cpu-jit optimized`, a count past that
+/// bound and a user's `GALLIVM_PERF` keep rtc out of it.
 #[test]
 fn small_renders_get_the_quick_jit_and_the_same_image() {
     let dir = scratch("pipelines", "jit");
@@ -200,11 +209,33 @@ fn small_renders_get_the_quick_jit_and_the_same_image() {
     let b = std::fs::read(dir.join("optimized.png")).expect("the optimising JIT's image");
     assert!(a == b, "the two JITs' images differ");
 
-    // The scene's own samples are not known before its compile: optimised.
-    let unknown = render_jit(&dir, "unknown.png", &[], None);
-    let t = text(&unknown);
-    assert!(unknown.status.success(), "{t}");
-    assert!(!summary_line(&t, "host: ").contains("GALLIVM_PERF"), "{t}");
+    // The scene's own samples decide once it is compiled: 8x8 at its 1 spp is small.
+    let own = render_jit(&dir, "own.png", &[], None);
+    let t = text(&own);
+    assert!(own.status.success(), "{t}");
+    if adapter.contains("llvmpipe") && adapter.contains("(vulkan,") {
+        assert!(summary_line(&t, "host: ").contains(ours), "{t}");
+    }
+    // So does a count above the bound of unknown kernels: this megakernel without secondary
+    // rays gets the quick JIT up to QUICK_JIT_MAX_SAMPLES_PRIMARY, and the optimising one past it.
+    let bound = rtc_runtime::gpu::QUICK_JIT_MAX_SAMPLES_PRIMARY / 64;
+    for (spp, quick) in [(bound, true), (bound + 1, false)] {
+        let spp = spp.to_string();
+        let r = render_jit(
+            &dir,
+            "large.png",
+            &["--spp", &spp, "--exec", "megakernel"],
+            None,
+        );
+        let t = text(&r);
+        assert!(r.status.success(), "{t}");
+        let host = summary_line(&t, "host: ");
+        if adapter.contains("llvmpipe") && adapter.contains("(vulkan,") {
+            assert_eq!(host.contains(ours), quick, "{spp} spp: {t}");
+        } else {
+            assert!(!host.contains("GALLIVM_PERF"), "{t}");
+        }
+    }
 
     let users = render_jit(&dir, "users.png", &["--spp", "1"], Some("brilinear"));
     let t = text(&users);

@@ -27,7 +27,7 @@ pub mod frames;
 pub mod model;
 
 use super::Context;
-use crate::args::{BvhArgs, ExecArgs, MessageFormat, RenderArgs};
+use crate::args::{BvhArgs, CpuJitChoice, ExecArgs, MessageFormat, RenderArgs};
 use crate::exit::Exit;
 use crate::{report, term};
 use rtc_compiler::kernel::{compile_scene_with, CompiledScene, ExecModel, KernelOptions};
@@ -89,8 +89,24 @@ impl Args {
     /// are both given; `None` for an animation (`--frames`, `--fps` or `--shard`) or when the
     /// scene's own size or samples decide, which are not known before its compile.
     pub fn still_samples(&self) -> Option<u64> {
-        let still = self.frames.is_none() && self.shard.is_none() && self.fps.is_none();
-        self.render.samples_given().filter(|_| still)
+        self.render.samples_given().filter(|_| self.is_still())
+    }
+
+    /// Whether this is a still render (no `--frames`, `--fps` or `--shard`).
+    fn is_still(&self) -> bool {
+        self.frames.is_none() && self.shard.is_none() && self.fps.is_none()
+    }
+
+    /// Whether the CPU driver's JIT is chosen after the compile (`--cpu-jit auto`, a still render
+    /// that `--size` and `--spp` do not make small enough for the quick JIT whatever its kernels):
+    /// from the samples the scene's own size and samples give, and from its kernels
+    /// ([`rtc_runtime::gpu::CpuJit::for_render`]).
+    pub fn jit_after_compile(&self) -> bool {
+        self.render.adapter.cpu_jit == CpuJitChoice::Auto
+            && self.is_still()
+            && self
+                .still_samples()
+                .is_none_or(|n| n > rtc_runtime::gpu::QUICK_JIT_MAX_SAMPLES)
     }
 }
 
@@ -264,6 +280,14 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         }
     }
 
+    if args.jit_after_compile() {
+        // Nothing has touched a GPU yet, and the compile's threads are done.
+        rtc_runtime::gpu::apply_lavapipe_defaults(rtc_runtime::gpu::CpuJit::for_render(
+            render_samples(args, &compiled),
+            compiled.exec == ExecModel::Wavefront,
+            compiled.linked.config.has_secondary_rays,
+        ));
+    }
     let gpu = match early_gpu.map_or_else(|| Gpu::new(&choice), Ok) {
         Ok(gpu) => gpu,
         Err(e) => return fail(&e.to_string(), ctx),
@@ -378,6 +402,22 @@ fn print_model_reports(desc: &SceneDesc, scene_path: &Path, roots: &AssetRoots, 
             Err(e) => warn(&format!("--report: {e}"), ctx),
         }
     }
+}
+
+/// The samples (pixels times samples per pixel) a still render of `compiled` takes: `--size` and
+/// `--spp` where given, else the scene's settings (`u64::MAX`, which no bound admits, if the
+/// compiled program had no scene description to read them from).
+fn render_samples(args: &Args, compiled: &CompiledScene) -> u64 {
+    let Some(settings) = scene_of(compiled).map(|d| &d.settings) else {
+        return args.still_samples().unwrap_or(u64::MAX);
+    };
+    let [w, h] = args
+        .render
+        .scene
+        .image_size()
+        .unwrap_or([settings.width, settings.height]);
+    let spp = args.render.spp.samples.unwrap_or(settings.samples);
+    u64::from(w) * u64::from(h) * u64::from(spp)
 }
 
 /// The scene description of a compiled scene.

@@ -72,6 +72,20 @@ pub enum CpuJit {
 /// bound keeps a margin below the smallest.
 pub const QUICK_JIT_MAX_SAMPLES: u64 = 1 << 17;
 
+/// The most samples a still render through the megakernel of a scene with secondary rays may have
+/// for [`CpuJit::for_render`] to choose [`CpuJit::Quick`]: 384 K, e.g. 640x600 at 1 spp or
+/// 320x240 at 5. The megakernel's smallest break-even among such examples is 0.48 M samples
+/// (cornell_path, Mesa 25; 0.54 M on Mesa 26), the largest 4.0 M (shading); the bound keeps a
+/// margin of 1.2 below the smallest (docs/bench/compile.md, "The quick JIT for a scene's own size
+/// (2026-12-04)").
+pub const QUICK_JIT_MAX_SAMPLES_SECONDARY: u64 = 3 << 17;
+
+/// The same bound for a megakernel without secondary rays (every sample a camera ray and its
+/// shadow rays): 768 K, e.g. 1024x768 at 1 spp. The smallest break-even among such examples is
+/// 1.02 M samples (cornell_box, Mesa 25; 1.96 M on Mesa 26, thesis_scene), the largest 7.4 M
+/// (gltf_scene); the bound keeps a margin of 1.3.
+pub const QUICK_JIT_MAX_SAMPLES_PRIMARY: u64 = 3 << 18;
+
 /// The most samples (pixels times samples per pixel) a still `rtc render` on a CPU adapter may
 /// have for a scene left at `EXEC_AUTO` to run the wavefront model: 16 K, e.g. 128x128 at 1 spp or
 /// 64x48 at 5 spp. Such a render's time is its kernels' compile, and the wavefront's stage kernels
@@ -91,6 +105,26 @@ impl CpuJit {
             _ => CpuJit::Optimized,
         }
     }
+
+    /// The JIT for a still render of `samples` samples in all whose kernels are known: the
+    /// wavefront model's stage kernels (`wavefront`) get [`CpuJit::Quick`] up to
+    /// [`QUICK_JIT_MAX_SAMPLES`], as [`CpuJit::for_samples`] gives; a megakernel up to
+    /// [`QUICK_JIT_MAX_SAMPLES_SECONDARY`] when its scene spawns secondary rays, else up to
+    /// [`QUICK_JIT_MAX_SAMPLES_PRIMARY`]. Larger renders get [`CpuJit::Optimized`].
+    pub fn for_render(samples: u64, wavefront: bool, secondary_rays: bool) -> Self {
+        let bound = if wavefront {
+            QUICK_JIT_MAX_SAMPLES
+        } else if secondary_rays {
+            QUICK_JIT_MAX_SAMPLES_SECONDARY
+        } else {
+            QUICK_JIT_MAX_SAMPLES_PRIMARY
+        };
+        if samples <= bound {
+            CpuJit::Quick
+        } else {
+            CpuJit::Optimized
+        }
+    }
 }
 
 /// The variables [`apply_lavapipe_defaults`] set (the environment had none of them).
@@ -106,10 +140,11 @@ static APPLIED: OnceLock<Vec<&'static str>> = OnceLock::new();
 /// Returns the names it set. It asks the Vulkan driver first (a Vulkan instance made and dropped;
 /// lavapipe reads the width again for every instance, the JIT switches once per process, hence the
 /// JIT variable is set before that and taken back when no lavapipe answers), so it costs one
-/// adapter enumeration. Call it first thing in `main`, before any other thread starts and before
-/// the wgpu `Instance` the program renders with: changing the environment while another thread
-/// reads it is undefined behaviour in most C libraries. Later calls change nothing. Drivers other
-/// than llvmpipe ignore both variables.
+/// adapter enumeration. Call it before the program's first wgpu `Instance` and while no other
+/// thread runs, first thing in `main` (or, as `rtc render` does to choose the JIT from the compiled
+/// scene's size, on the one thread left running before any GPU work): changing the environment
+/// while another thread reads it is undefined behaviour in most C libraries. Later calls change
+/// nothing. Drivers other than llvmpipe ignore both variables.
 #[cfg(not(target_arch = "wasm32"))]
 pub fn apply_lavapipe_defaults(jit: CpuJit) -> &'static [&'static str] {
     APPLIED.get_or_init(|| {
@@ -343,6 +378,36 @@ mod tests {
         assert_eq!(CpuJit::for_samples(Some(512 * 512)), CpuJit::Optimized);
         assert_eq!(CpuJit::for_samples(Some(1920 * 1080)), CpuJit::Optimized);
         assert_eq!(CpuJit::for_samples(None), CpuJit::Optimized);
+    }
+
+    #[test]
+    fn a_known_render_gets_the_bound_of_its_kernels() {
+        // The wavefront model's stage kernels: the bound of an unknown kernel.
+        assert_eq!(CpuJit::for_render(1 << 17, true, false), CpuJit::Quick);
+        assert_eq!(
+            CpuJit::for_render((1 << 17) + 1, true, false),
+            CpuJit::Optimized
+        );
+        // A megakernel with secondary rays: hello and shading at their own size and samples
+        // (320x240 at 4 spp, 320x240 at 5).
+        assert_eq!(
+            CpuJit::for_render(320 * 240 * 5, false, true),
+            CpuJit::Quick
+        );
+        assert_eq!(
+            CpuJit::for_render(640 * 640, false, true),
+            CpuJit::Optimized
+        );
+        // Without: gltf_scene's 480x320 at 4 spp, but not the thesis scene's 1080p frame.
+        assert_eq!(
+            CpuJit::for_render(480 * 320 * 4, false, false),
+            CpuJit::Quick
+        );
+        assert_eq!(CpuJit::for_render(1024 * 768, false, false), CpuJit::Quick);
+        assert_eq!(
+            CpuJit::for_render(1920 * 1080, false, false),
+            CpuJit::Optimized
+        );
     }
 
     #[test]
