@@ -5,7 +5,9 @@
 //! 2. the render kernel's pipeline (from the compiled `naga::Module`, with exactly the bindings the
 //!    compiler lists and the tile uniform at the `tile` binding), created with the bounds kernel
 //!    of step 3 as one set by [`create_scene_kernels`] (memory and disk caches, parallel compile,
-//!    per-kernel accounting in [`RenderStats::kernels`]). Each new pipeline's warm-up dispatch,
+//!    per-kernel accounting in [`RenderStats::kernels`]), its small tables placed in uniform
+//!    buffers where the adapter compiles those faster ([`UniformTables`]). Each new pipeline's
+//!    warm-up dispatch,
 //!    where lavapipe compiles it (seconds for the full kernel), runs there, so the compile belongs
 //!    to the setup, not to the render time;
 //! 3. for scenes with custom geometry, the bounds kernel: instances uploaded in object order, one
@@ -76,7 +78,7 @@ use crate::resolve::{ResolveError, ResolveTarget, Resolver};
 pub use crate::scene::FieldTarget;
 use crate::scene::{
     AssetStore, Entities, EntityOptions, FrameUniforms, GpuScene, ObjectGeometry, SceneError,
-    UploadReport,
+    TablePlacement, UniformTables, UploadReport,
 };
 use rtc_compiler::sema::hir::{ConstValue, Instance, Program};
 
@@ -102,6 +104,10 @@ pub struct RenderOptions {
     /// ([`RenderStats::stage_ms`]; `rtc render` sets it from `RTC_STAGE_TIMES`). A profile:
     /// the frame is slower by the waits, the image the same.
     pub stage_times: bool,
+    /// Which small tables (`nodes`, `instances`) the kernels read from uniform buffers instead
+    /// of storage buffers ([`TablePlacement::Auto`]: on lavapipe before Mesa 26, where it makes
+    /// the compile shorter; see `scene::UniformTables`). The image is the same either way.
+    pub uniform_tables: TablePlacement,
 }
 
 /// Why a scene could not be rendered.
@@ -228,6 +234,9 @@ pub struct RenderStats {
     pub objects: u32,
     /// Objects in the scene-level BVH (objects without a usable box are left out).
     pub instances: u32,
+    /// The tables the kernels read from uniform buffers (`RenderOptions::uniform_tables`), by
+    /// ABI name; empty when all are storage buffers.
+    pub uniform_tables: Vec<&'static str>,
     /// Lights.
     pub lights: u32,
     /// Object-level BVH (BLAS) builds so far in this renderer's life, kernel replacements
@@ -433,13 +442,15 @@ pub struct SceneKernels {
 /// Creates the kernels of `compiled` for `exec` as one set with [`Gpu::create_kernels`] (memory
 /// and disk caches, parallel creation, warm-up, per-kernel accounting in [`Kernel::report`]): the
 /// render kernel or the wavefront model's five stage kernels, and the bounds kernel when
-/// `with_bounds` (a scene with custom geometry). Used by [`Renderer::new`] and by `rtc compile
-/// --timings driver`.
+/// `with_bounds` (a scene with custom geometry), every module specialised with `tables` (the
+/// same for all, so that one set of buffers serves them). Used by [`Renderer::new`] and by `rtc
+/// compile --timings driver`.
 pub fn create_scene_kernels(
     gpu: &Gpu,
     compiled: &CompiledScene,
     exec: ExecModel,
     with_bounds: bool,
+    tables: UniformTables,
 ) -> Result<SceneKernels, RenderError> {
     let tile = abi::binding("tile").ok_or(RenderError::NoTileBinding)?;
     if !compiled.bindings.iter().any(|b| b.binding == tile.binding) {
@@ -479,12 +490,12 @@ pub fn create_scene_kernels(
     }
     let runtime: Vec<Vec<crate::gpu::BindingDesc>> = parts
         .iter()
-        .map(|(_, _, _, b)| GpuScene::runtime_bindings(b))
+        .map(|(_, _, _, b)| GpuScene::runtime_bindings_with(b, tables))
         .collect();
     let bounds_module = match (&compiled.bounds, with_bounds) {
         (Some(module), true) => {
             let declared = declared_bindings(module, "bounds")?;
-            let bindings = GpuScene::runtime_bindings(&declared);
+            let bindings = GpuScene::runtime_bindings_with(&declared, tables);
             Some((module, declared, bindings))
         }
         (None, true) => return Err(RenderError::NoBoundsKernel),
@@ -495,7 +506,7 @@ pub fn create_scene_kernels(
         .zip(&runtime)
         .map(|((label, module, entry, _), bindings)| KernelDesc {
             label,
-            source: KernelSource::Naga(Box::new((*module).clone())),
+            source: KernelSource::Naga(specialised(module, tables)),
             entry_point: entry,
             bindings,
             tile_binding: Some(tile.binding),
@@ -504,7 +515,7 @@ pub fn create_scene_kernels(
     if let Some((module, _, bindings)) = &bounds_module {
         descs.push(KernelDesc {
             label: "rtc bounds",
-            source: KernelSource::Naga(Box::new((*module).clone())),
+            source: KernelSource::Naga(specialised(module, tables)),
             entry_point: BOUNDS_ENTRY,
             bindings,
             tile_binding: None,
@@ -532,6 +543,13 @@ pub fn create_scene_kernels(
         bounds,
         bindings,
     })
+}
+
+/// A copy of `module` with `tables` as uniform buffers.
+fn specialised(module: &naga::Module, tables: UniformTables) -> Box<naga::Module> {
+    let mut module = Box::new(module.clone());
+    tables.specialise(&mut module);
+    module
 }
 
 impl<'g> Renderer<'g> {
@@ -626,12 +644,13 @@ impl<'g> Renderer<'g> {
         // Pipelines: the render kernel and, for custom geometry, the bounds kernel.
         let start = Instant::now();
         let exec = options.exec.unwrap_or(compiled.exec);
+        let tables = UniformTables::choose(options.uniform_tables, gpu.description(), &entities);
         let SceneKernels {
             render,
             bounds,
             bindings: mut all,
             ..
-        } = create_scene_kernels(gpu, compiled, exec, entities.needs_bounds())?;
+        } = create_scene_kernels(gpu, compiled, exec, entities.needs_bounds(), tables)?;
         setup.kernels = render
             .iter()
             .chain(bounds.as_ref().map(|(k, _)| k))
@@ -657,11 +676,11 @@ impl<'g> Renderer<'g> {
             .unwrap_or_else(|| TileConfig::for_adapter(gpu.description()));
         let mut scene = match previous {
             Some((mut scene, old)) => {
-                scene.rebind(&all);
+                scene.rebind(&all, tables);
                 entities.inherit_versions(old);
                 scene
             }
-            None => GpuScene::new(gpu, &all),
+            None => GpuScene::with_tables(gpu, &all, tables),
         };
         if let Kernels::Wavefront { .. } = kernels {
             // One tile's path records in one binding, within WebGPU's default 128 MiB.
@@ -1121,6 +1140,7 @@ impl<'g> Renderer<'g> {
             meshes: self.entities.meshes().len() as u32,
             objects,
             instances: self.entities.instances().len() as u32,
+            uniform_tables: self.scene.tables().names(),
             lights: self.entities.lights().len() as u32,
             blas_builds: store.blas_builds,
             tlas_builds: es.tlas_builds,

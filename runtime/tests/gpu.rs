@@ -277,6 +277,51 @@ fn buffer_set_reuploads_only_what_changed() {
     );
 }
 
+/// A binding whose minimum size is above its data (as a uniform table's 64 KiB is): a new
+/// buffer, zeroed by wgpu, gets only the data; a shorter upload zeroes what the longer one left
+/// and writes nothing beyond it; the bound size stays the minimum.
+#[test]
+fn the_padding_of_a_large_minimum_is_not_uploaded() {
+    let Some(gpu) = gpu_or_skip("the_padding_of_a_large_minimum_is_not_uploaded") else {
+        return;
+    };
+    let table = BindingDesc::new(3, "table", BindingKind::StorageRead, 4096);
+    let mut set = BufferSet::new(&gpu, "padding");
+    set.begin_frame();
+    assert_eq!(
+        set.upload(&gpu, &table, &[1u8; 256]),
+        Ok(UploadOutcome::Reallocated)
+    );
+    assert_eq!(set.stats().bytes_uploaded, 256);
+    assert_eq!(set.bound_size(3), Some(4096));
+    set.begin_frame();
+    assert_eq!(
+        set.upload(&gpu, &table, &[2u8; 62]),
+        Ok(UploadOutcome::Uploaded)
+    );
+    assert_eq!(
+        set.stats().bytes_uploaded,
+        256,
+        "62 bytes, then zeros up to 256"
+    );
+    let mut want = vec![2u8; 62];
+    want.resize(4096, 0);
+    assert_eq!(
+        read_buffer(&gpu, set.buffer(3).expect("table"), 4096).expect("read"),
+        want
+    );
+    set.begin_frame();
+    assert_eq!(
+        set.upload(&gpu, &table, &[3u8; 8]),
+        Ok(UploadOutcome::Uploaded)
+    );
+    assert_eq!(
+        set.stats().bytes_uploaded,
+        64,
+        "8 bytes, then zeros up to 64"
+    );
+}
+
 #[test]
 fn oversized_data_is_a_typed_error_naming_the_binding() {
     let Some(gpu) = gpu_or_skip("oversized_data_is_a_typed_error_naming_the_binding") else {

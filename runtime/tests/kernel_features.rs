@@ -264,6 +264,83 @@ fn both_models(
     (mega, wave, stats)
 }
 
+/// Small tables in uniform buffers (`rtc_runtime::scene::UniformTables`; by default on lavapipe
+/// before Mesa 26, forced on and off here): every pixel is the one the storage buffers give, in
+/// both execution models, on scenes with any-hit shadows, a custom geometry whose program walks
+/// its mesh's BVH (`nodes` read by user code), nested media and the path loop. A scene with more
+/// objects than one uniform buffer holds (600 × 128 bytes) keeps `instances` in storage and still
+/// gets `nodes` as a uniform table.
+#[test]
+fn uniform_tables_change_no_pixel() {
+    let Some(gpu) = gpu_or_skip("uniform_tables_change_no_pixel") else {
+        return;
+    };
+    use rtc_compiler::kernel::ExecModel;
+    use rtc_runtime::scene::TablePlacement;
+    // Tiny blockers that cast no shadow, in a row above the scene.
+    let many: String = (0..600)
+        .map(|i| {
+            format!(
+                "    object extra{i} {{ geometry: quad_mesh(), material: Blocker {{ casts: 0.0 }}, \
+                 transform: translate(vec3f({}, 5.0, 0.0)) * scale(0.001) }}\n",
+                common::scene::float(f64::from(i) * 0.01 - 3.0)
+            )
+        })
+        .collect();
+    let both: &[&str] = &["nodes", "instances"];
+    let cases = [
+        ("shadows", scene("shadows"), both),
+        ("walker", scene("walker").scene("walker_custom"), both),
+        ("nested", scene("nested_media"), both),
+        ("path_loop", scene("path_loop").scene("path_loop"), both),
+        (
+            "many_objects",
+            scene("shadows").append_to_last_scene(&many),
+            &["nodes"][..],
+        ),
+    ];
+    for (name, file, placed) in cases {
+        let dir = temp_dir("features", &format!("tables_{name}"));
+        let compiled = compile_with_stages(&file, &dir);
+        for exec in [ExecModel::Megakernel, ExecModel::Wavefront] {
+            let options = |uniform_tables| RenderOptions {
+                size: Some([24, 20]),
+                samples: Some(2),
+                exec: Some(exec),
+                uniform_tables,
+                ..RenderOptions::default()
+            };
+            let what = format!("{name} ({exec:?})");
+            let (storage, s) = common::scene::render(
+                &gpu,
+                &compiled,
+                options(TablePlacement::Storage),
+                &format!("{what}, storage"),
+            );
+            let (uniform, u) = common::scene::render(
+                &gpu,
+                &compiled,
+                options(TablePlacement::Uniform),
+                &format!("{what}, uniform tables"),
+            );
+            assert!(
+                s.uniform_tables.is_empty(),
+                "{what}: {:?}",
+                s.uniform_tables
+            );
+            assert_eq!(u.uniform_tables, placed, "{what}");
+            let differing = storage
+                .pixels()
+                .iter()
+                .zip(uniform.pixels())
+                .filter(|(a, b)| a.map(f32::to_bits) != b.map(f32::to_bits))
+                .count();
+            assert_eq!(differing, 0, "{what}: pixels differ between the placements");
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
+
 /// `RenderOptions::stage_times` (`RTC_STAGE_TIMES` in `rtc render`): each stage's dispatches are
 /// waited for and timed alone, every stage kernel gets a time, and the image is the one the plain
 /// rounds render, bit for bit.
@@ -486,9 +563,14 @@ fn a_material_edit_recompiles_only_the_shade_stage() {
     let dir = temp_dir("features", "material_edit");
     let first = scene("dependent_shadows").compile_with(&dir, &options);
     let before = gpu.pipelines_created();
-    let kernels =
-        rtc_runtime::render::create_scene_kernels(&gpu, &first, ExecModel::Wavefront, false)
-            .expect("stage kernels");
+    let kernels = rtc_runtime::render::create_scene_kernels(
+        &gpu,
+        &first,
+        ExecModel::Wavefront,
+        false,
+        Default::default(),
+    )
+    .expect("stage kernels");
     assert_eq!(kernels.render.len(), 5);
     assert_eq!(
         gpu.pipelines_created() - before,
@@ -499,9 +581,14 @@ fn a_material_edit_recompiles_only_the_shade_stage() {
         .set("TINT", "0.25")
         .compile_with(&dir, &options);
     let before = gpu.pipelines_created();
-    let again =
-        rtc_runtime::render::create_scene_kernels(&gpu, &edited, ExecModel::Wavefront, false)
-            .expect("stage kernels");
+    let again = rtc_runtime::render::create_scene_kernels(
+        &gpu,
+        &edited,
+        ExecModel::Wavefront,
+        false,
+        Default::default(),
+    )
+    .expect("stage kernels");
     assert_eq!(
         gpu.pipelines_created() - before,
         1,

@@ -24,6 +24,7 @@ use rtc_compiler::link::LinkOptions;
 use rtc_compiler::pipeline::{self, Compiled};
 use rtc_runtime::gpu::{Gpu, KernelReport};
 use rtc_runtime::render::create_scene_kernels;
+use rtc_runtime::scene::{TablePlacement, UniformTables, UNIFORM_TABLE_BYTES};
 use std::path::PathBuf;
 
 /// An intermediate form `--emit` prints.
@@ -246,11 +247,18 @@ fn driver_timings(compiled: &kernel::CompiledScene, adapter: &AdapterArgs, ctx: 
             return Exit::Success;
         }
     };
-    let kernels =
-        match create_scene_kernels(&gpu, compiled, compiled.exec, compiled.bounds.is_some()) {
-            Ok(k) => k,
-            Err(e) => return super::render::fail(&e.to_string(), ctx),
-        };
+    // What `rtc render` does on this adapter for a scene whose small tables fit a uniform buffer.
+    let tables = UniformTables::for_adapter(TablePlacement::from_env(), gpu.description());
+    let kernels = match create_scene_kernels(
+        &gpu,
+        compiled,
+        compiled.exec,
+        compiled.bounds.is_some(),
+        tables,
+    ) {
+        Ok(k) => k,
+        Err(e) => return super::render::fail(&e.to_string(), ctx),
+    };
     let reports: Vec<KernelReport> = kernels
         .render
         .iter()
@@ -259,6 +267,13 @@ fn driver_timings(compiled: &kernel::CompiledScene, adapter: &AdapterArgs, ctx: 
         .collect();
     let mut out = format!("driver ({}):\n", gpu.description());
     out.push_str(&super::render::kernel_lines(&reports, "  "));
+    if !tables.is_empty() {
+        out.push_str(&format!(
+            "  uniform tables: {} (as `rtc render` places them on this adapter when they fit in {} KiB)\n",
+            tables.names().join(", "),
+            UNIFORM_TABLE_BYTES >> 10
+        ));
+    }
     out.push_str(&format!(
         "  pipeline cache: {}\n",
         gpu.pipeline_cache_status()

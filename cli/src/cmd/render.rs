@@ -617,6 +617,12 @@ pub fn summary(s: &RenderStats, output: &Path) -> String {
         s.pipeline_ms
     ));
     out.push_str(&kernel_lines(&s.kernels, "    "));
+    if !s.uniform_tables.is_empty() {
+        out.push_str(&format!(
+            "    uniform tables: {}\n",
+            s.uniform_tables.join(", ")
+        ));
+    }
     if let Some(cache) = &s.pipeline_cache {
         out.push_str(&format!("    pipeline cache: {cache}\n"));
     }

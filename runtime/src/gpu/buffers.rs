@@ -145,6 +145,10 @@ struct Entry {
     capacity: u64,
     bound_size: u64,
     version: Version,
+    /// Bytes from the start of the buffer that may hold something other than zeros (what the
+    /// last whole upload wrote): a shorter upload zeroes what is left of them below the bound
+    /// size, and writes nothing beyond. A buffer the GPU may write is always written whole.
+    nonzero: u64,
 }
 
 /// GPU buffers keyed by binding, kept across frames.
@@ -405,13 +409,22 @@ impl BufferSet {
         let Some(entry) = self.entries.get_mut(&desc.binding) else {
             return Err(self.missing(desc.binding));
         };
+        // The data, then zeros over what an earlier upload left below the bound size; a new
+        // buffer is zeroed already, so the padding up to `size` (a uniform table's 64 KiB, say)
+        // is not written again.
+        let data_len = (data.len() as u64).next_multiple_of(COPY_ALIGN).min(size);
+        let upto = if desc.kind == BindingKind::StorageReadWrite {
+            size
+        } else {
+            data_len.max(entry.nonzero.min(size))
+        };
         let padded;
-        let bytes = if data.len() as u64 == size {
+        let bytes = if data.len() as u64 == upto {
             data
         } else {
-            let mut v = Vec::with_capacity(size as usize);
+            let mut v = Vec::with_capacity(upto as usize);
             v.extend_from_slice(data);
-            v.resize(size as usize, 0);
+            v.resize(upto as usize, 0);
             padded = v;
             &padded
         };
@@ -425,8 +438,13 @@ impl BufferSet {
         }
         entry.bound_size = size;
         entry.version = version;
+        entry.nonzero = if desc.kind == BindingKind::StorageReadWrite {
+            size
+        } else {
+            data_len
+        };
         entry.name.clone_from(&desc.name);
-        self.stats.bytes_uploaded += size;
+        self.stats.bytes_uploaded += upto;
         self.stats.buffers_uploaded += 1;
         Ok(if realloc {
             UploadOutcome::Reallocated
@@ -515,6 +533,7 @@ impl BufferSet {
                 capacity: size,
                 bound_size: size,
                 version: Version::Zeroed { size },
+                nonzero: 0,
             },
         );
         Ok(())

@@ -95,6 +95,7 @@ mod gpu_types;
 mod models;
 mod params;
 mod store;
+mod tables;
 mod upload;
 
 #[cfg(test)]
@@ -115,6 +116,9 @@ pub use gpu_types::{
     element_size, field_offset, struct_align, struct_size, FrameUniforms, GpuInstance,
 };
 pub use store::{AssetStore, BuiltMesh, Stamp, StoreCounters, Version};
+pub use tables::{
+    prefers_uniform_tables, TablePlacement, UniformTables, UNIFORM_TABLES_ENV, UNIFORM_TABLE_BYTES,
+};
 pub use upload::{runtime_binding, Counters, GpuScene, UploadReport};
 
 use rtc_compiler::diag::{codes, Diagnostic};

@@ -36,6 +36,7 @@ pub struct Counters {
     pub shadow_overflow: u32,
 }
 use super::gpu_types::{element_size, record, struct_size, FrameUniforms, GpuInstance};
+use super::tables::UniformTables;
 use super::SceneError;
 use crate::gpu::{
     read_buffer, read_vec4_f32, BindingDesc, BindingKind, BufferError, BufferLimits, BufferSet,
@@ -92,18 +93,21 @@ enum InstanceOrder {
 pub struct GpuScene {
     buffers: BufferSet,
     bindings: Vec<(&'static abi::BindingDesc, BindingDesc)>,
+    /// Which tables are uniform buffers (the kernels' [`UniformTables`]).
+    tables: UniformTables,
     /// Bytes of the wavefront model's `paths` binding (see [`GpuScene::set_path_bytes`]).
     path_bytes: u64,
 }
 
-/// `bindings` once each, with their runtime descriptions, in binding order.
+/// `bindings` once each, with their runtime descriptions under `tables`, in binding order.
 fn binding_list(
     bindings: &[&'static abi::BindingDesc],
+    tables: UniformTables,
 ) -> Vec<(&'static abi::BindingDesc, BindingDesc)> {
     let mut list: Vec<(&'static abi::BindingDesc, BindingDesc)> = Vec::new();
     for &b in bindings {
         if !list.iter().any(|(have, _)| have.binding == b.binding) {
-            list.push((b, runtime_binding(b)));
+            list.push((b, tables.describe(b)));
         }
     }
     list.sort_by_key(|(b, _)| b.binding);
@@ -111,19 +115,39 @@ fn binding_list(
 }
 
 impl GpuScene {
-    /// Buffers for exactly these bindings (duplicates are kept once), with `gpu`'s limits.
+    /// Buffers for exactly these bindings (duplicates are kept once), with `gpu`'s limits, all
+    /// of them where the kernel was compiled to have them (storage buffers but for `frame` and
+    /// `tile`).
     pub fn new(gpu: &Gpu, bindings: &[&'static abi::BindingDesc]) -> Self {
+        Self::with_tables(gpu, bindings, UniformTables::default())
+    }
+
+    /// [`new`](Self::new), with the tables in `tables` as uniform buffers (the kernels must have
+    /// been specialised with the same [`UniformTables`]).
+    pub fn with_tables(
+        gpu: &Gpu,
+        bindings: &[&'static abi::BindingDesc],
+        tables: UniformTables,
+    ) -> Self {
         Self {
             buffers: BufferSet::new(gpu, "rtc scene"),
-            bindings: binding_list(bindings),
+            bindings: binding_list(bindings, tables),
+            tables,
             path_bytes: 16,
         }
     }
 
-    /// Makes the set hold exactly `bindings` (a replaced kernel's): buffers of bindings it
-    /// keeps stay, with their contents; the others are dropped.
-    pub fn rebind(&mut self, bindings: &[&'static abi::BindingDesc]) {
-        let list = binding_list(bindings);
+    /// Which tables are uniform buffers.
+    pub fn tables(&self) -> UniformTables {
+        self.tables
+    }
+
+    /// Makes the set hold exactly `bindings` (a replaced kernel's), with `tables` as uniform
+    /// buffers: buffers of bindings it keeps in the same kind stay, with their contents; the
+    /// others are dropped or reallocated.
+    pub fn rebind(&mut self, bindings: &[&'static abi::BindingDesc], tables: UniformTables) {
+        self.tables = tables;
+        let list = binding_list(bindings, tables);
         for (old, _) in &self.bindings {
             if !list.iter().any(|(b, _)| b.binding == old.binding) {
                 self.buffers.remove(old.binding);
@@ -138,6 +162,7 @@ impl GpuScene {
         GpuScene {
             buffers: BufferSet::new(gpu, "rtc scene").with_limits(self.buffers.limits()),
             bindings: self.bindings.clone(),
+            tables: self.tables,
             path_bytes: self.path_bytes,
         }
     }
@@ -167,6 +192,14 @@ impl GpuScene {
     /// The runtime descriptions of the given ABI bindings (for `create_kernel`).
     pub fn runtime_bindings(bindings: &[&'static abi::BindingDesc]) -> Vec<BindingDesc> {
         bindings.iter().map(|b| runtime_binding(b)).collect()
+    }
+
+    /// The runtime descriptions of the given ABI bindings with `tables` as uniform buffers.
+    pub fn runtime_bindings_with(
+        bindings: &[&'static abi::BindingDesc],
+        tables: UniformTables,
+    ) -> Vec<BindingDesc> {
+        bindings.iter().map(|b| tables.describe(b)).collect()
     }
 
     fn has(&self, name: &str) -> bool {

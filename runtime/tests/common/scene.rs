@@ -105,6 +105,17 @@ impl SceneFile {
         self
     }
 
+    /// Adds `entries` (scene entries such as objects) at the end of the file's last scene, just
+    /// before its closing brace.
+    pub fn append_to_last_scene(mut self, entries: &str) -> SceneFile {
+        let end = self
+            .text
+            .rfind('}')
+            .unwrap_or_else(|| panic!("test scene {} has no scene block", self.path.display()));
+        self.text.insert_str(end, entries);
+        self
+    }
+
     /// Compiles the scene `name` of the file (for a file with several).
     pub fn scene(mut self, name: &str) -> SceneFile {
         self.scene = Some(name.to_owned());
