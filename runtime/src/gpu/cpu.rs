@@ -197,9 +197,8 @@ fn wants_narrow_batches(driver_info: &str) -> bool {
     mesa_major(driver_info).is_some_and(|major| major < NARROW_BEFORE_MESA)
 }
 
-/// The major version of `Mesa X.Y.Z…` in a driver string.
-#[cfg(not(target_arch = "wasm32"))]
-fn mesa_major(driver_info: &str) -> Option<u32> {
+/// The major version of `Mesa X.Y.Z…` in a driver string (also `scene::UniformTables`' rule).
+pub(crate) fn mesa_major(driver_info: &str) -> Option<u32> {
     let rest = &driver_info[driver_info.find("Mesa ")? + "Mesa ".len()..];
     let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
     digits.parse().ok()

@@ -42,6 +42,7 @@ pub use adapter::{AdapterChoice, AdapterChoiceParseError, AdapterDescription};
 pub use buffers::{BufferError, BufferLimits, BufferSet, UploadOutcome, UploadStats};
 #[cfg(not(target_arch = "wasm32"))]
 pub use cpu::apply_lavapipe_defaults;
+pub(crate) use cpu::mesa_major;
 pub use cpu::{
     lavapipe_defaults_applied, CpuJit, HostCpu, JIT_VAR, NARROW_BEFORE_MESA, NARROW_WIDTH,
     QUICK_JIT, QUICK_JIT_MAX_SAMPLES, QUICK_JIT_MAX_SAMPLES_PRIMARY,

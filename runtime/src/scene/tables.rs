@@ -34,7 +34,7 @@ use rtc_compiler::abi;
 
 use super::entities::Entities;
 use super::gpu_types::GpuInstance;
-use crate::gpu::{AdapterDescription, BindingDesc, BindingKind};
+use crate::gpu::{mesa_major, AdapterDescription, BindingDesc, BindingKind};
 
 /// The size of a table placed in a uniform buffer: WebGPU's default
 /// `maxUniformBufferBindingSize`, so the kernels stay within the default limits.
@@ -94,13 +94,6 @@ pub fn prefers_uniform_tables(adapter: &AdapterDescription) -> bool {
         && adapter.device_type == wgpu::DeviceType::Cpu
         && adapter.name.starts_with("llvmpipe")
         && mesa_major(&adapter.driver_info).is_some_and(|major| major < GATHERS_FROM_MESA)
-}
-
-/// The major version of `Mesa X.Y.Z…` in a driver string.
-fn mesa_major(driver_info: &str) -> Option<u32> {
-    let rest = &driver_info[driver_info.find("Mesa ")? + "Mesa ".len()..];
-    let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
-    digits.parse().ok()
 }
 
 /// The bindings of one scene's kernels placed in uniform buffers (none by default).
@@ -176,7 +169,6 @@ impl UniformTables {
     /// The runtime description of ABI binding `b` with this placement: a placed table is a
     /// uniform binding of exactly [`UNIFORM_TABLE_BYTES`].
     pub fn describe(self, b: &abi::BindingDesc) -> BindingDesc {
-        let desc = super::runtime_binding(b);
         if self.has_binding(b.binding) {
             BindingDesc::new(
                 b.binding,
@@ -185,7 +177,7 @@ impl UniformTables {
                 u64::from(UNIFORM_TABLE_BYTES),
             )
         } else {
-            desc
+            super::runtime_binding(b)
         }
     }
 

@@ -189,12 +189,8 @@ impl GpuScene {
         &self.buffers
     }
 
-    /// The runtime descriptions of the given ABI bindings (for `create_kernel`).
-    pub fn runtime_bindings(bindings: &[&'static abi::BindingDesc]) -> Vec<BindingDesc> {
-        bindings.iter().map(|b| runtime_binding(b)).collect()
-    }
-
-    /// The runtime descriptions of the given ABI bindings with `tables` as uniform buffers.
+    /// The runtime descriptions of the given ABI bindings (for `create_kernel`), with `tables`
+    /// as uniform buffers.
     pub fn runtime_bindings_with(
         bindings: &[&'static abi::BindingDesc],
         tables: UniformTables,
