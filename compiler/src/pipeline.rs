@@ -125,8 +125,18 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
         .as_ref()
         .map_or(0, |p| p.scenes[scene].settings.exec);
     // A debug kernel is a megakernel (`rtc bvh`'s passes), whatever the scene asks for.
+    let render_weight = kernel::weight::inlined_weight(&render, RENDER_ENTRY).unwrap_or(0);
+    let light_megakernel = render_weight < request.kernel.wavefront_min_weight
+        && checked
+            .program
+            .as_ref()
+            .is_some_and(|p| kernel::small_built_in_geometry(&p.scenes[scene]));
     let exec = match request.kernel.debug {
         Some(_) => ExecModel::Megakernel,
+        // `EXEC_AUTO` (no choice, setting 0) keeps a light megakernel of small geometry.
+        None if request.kernel.exec.is_none() && setting == 0 && light_megakernel => {
+            ExecModel::Megakernel
+        }
         None => ExecModel::resolve(request.kernel.exec, setting, request.kernel.auto),
     };
     let stages = if exec == ExecModel::Wavefront {
@@ -172,6 +182,7 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
         stages,
         path_words,
         exec,
+        render_weight,
         timings: Vec::new(),
     };
 

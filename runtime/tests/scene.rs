@@ -279,6 +279,7 @@ fn stand_in(file: &SceneFile, samples_per_pass: u32) -> CompiledScene {
         stages: None,
         path_words: 0,
         exec: rtc_compiler::kernel::ExecModel::Megakernel,
+        render_weight: 0,
         timings: Vec::new(),
     }
 }

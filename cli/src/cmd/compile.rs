@@ -213,6 +213,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     ));
     if let Some(what) = args.timings {
         term::print(&compiler_timings(&compiled.timings));
+        term::print(&kernel_weights(&compiled));
         if what == Timings::Driver {
             return driver_timings(&compiled, &args.adapter, ctx);
         }
@@ -228,6 +229,21 @@ fn compiler_timings(phases: &[(&'static str, f64)]) -> String {
     }
     let total: f64 = phases.iter().map(|(_, ms)| ms).sum();
     out.push_str(&format!("  {:<32} {total:>10.2} ms\n", "total"));
+    out
+}
+
+/// The size of each kernel as a driver compiles it ([`kernel::weight::inlined_weight`]).
+fn kernel_weights(compiled: &kernel::CompiledScene) -> String {
+    let mut out = format!(
+        "kernel weights (expressions with every call inlined):\n  {:<32} {:>10}\n",
+        kernel::RENDER_ENTRY,
+        compiled.render_weight
+    );
+    for s in compiled.stages.iter().flatten() {
+        let entry = s.stage.entry();
+        let w = kernel::weight::inlined_weight(&s.module, entry).unwrap_or(0);
+        out.push_str(&format!("  {entry:<32} {w:>10}\n"));
+    }
     out
 }
 

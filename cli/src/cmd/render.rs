@@ -40,6 +40,7 @@ use rtc_runtime::assets::{load_gltf_with, AssetRoots};
 use rtc_runtime::gpu::{Gpu, KernelReport};
 use rtc_runtime::image_out::{write_exr, write_png, ToneMap};
 use rtc_runtime::render::{RenderError, RenderOptions, RenderStats, Renderer};
+use rtc_runtime::scene::TablePlacement;
 use std::path::{Path, PathBuf};
 
 /// More tiles than this get a progress bar.
@@ -217,7 +218,8 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
 
     let exec = args.exec.model();
     // A small still render's time is its kernels' compile: on a CPU adapter, a scene left at
-    // `EXEC_AUTO` then runs the wavefront model, whose stage kernels compile faster. The adapter
+    // `EXEC_AUTO` then runs the wavefront model, whose stage kernels compile faster (with uniform
+    // tables, only for a heavy megakernel or a large BVH: `wavefront_min_weight`). The adapter
     // is asked for before the compile only then (a failure here is reported after the compile's
     // diagnostics, as always).
     let small = exec.is_none()
@@ -225,13 +227,19 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             .still_samples()
             .is_some_and(|n| n <= rtc_runtime::gpu::WAVEFRONT_PREVIEW_MAX_SAMPLES);
     let early_gpu = if small { Gpu::new(&choice).ok() } else { None };
-    let auto = if early_gpu
+    // With uniform tables (lavapipe before Mesa 26) a light megakernel compiles faster than the
+    // stage kernels, so only a heavier one gives way to them.
+    let (auto, wavefront_min_weight) = match early_gpu
         .as_ref()
-        .is_some_and(|g| g.description().device_type == wgpu::DeviceType::Cpu)
+        .map(|g| g.description())
+        .filter(|d| d.device_type == wgpu::DeviceType::Cpu)
     {
-        ExecModel::Wavefront
-    } else {
-        ExecModel::Megakernel
+        Some(d) if TablePlacement::Auto.wants_uniform(d) => (
+            ExecModel::Wavefront,
+            rtc_runtime::gpu::WAVEFRONT_PREVIEW_MIN_WEIGHT_WITH_TABLES,
+        ),
+        Some(_) => (ExecModel::Wavefront, 0),
+        None => (ExecModel::Megakernel, 0),
     };
     let compiled = match compile_scene_with(
         std::slice::from_ref(scene_path),
@@ -241,6 +249,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         &KernelOptions {
             exec,
             auto,
+            wavefront_min_weight,
             ..KernelOptions::default()
         },
     ) {
@@ -263,6 +272,12 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             return Exit::Failure;
         }
     };
+    let render_weight = compiled.render_weight;
+    let left_to_auto = compiled
+        .checked
+        .program
+        .as_ref()
+        .is_some_and(|p| p.scenes[compiled.scene].settings.exec == 0);
     if !compiled.checked.diagnostics.is_empty() {
         // Warnings only (errors would have failed the compile).
         report::diagnostics(
@@ -359,6 +374,13 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         term::print(&format!(
             "exec: wavefront (a render of at most {} samples on a CPU adapter: its stage kernels \
              compile faster than the megakernel; `--exec megakernel` keeps the megakernel)\n",
+            rtc_runtime::gpu::WAVEFRONT_PREVIEW_MAX_SAMPLES
+        ));
+    } else if auto == ExecModel::Wavefront && left_to_auto && render_weight < wavefront_min_weight {
+        term::print(&format!(
+            "exec: megakernel (a render of at most {} samples on lavapipe with uniform tables: a \
+             megakernel of weight {render_weight}, below {wavefront_min_weight}, compiles faster \
+             than the stage kernels; `--exec wavefront` runs them)\n",
             rtc_runtime::gpu::WAVEFRONT_PREVIEW_MAX_SAMPLES
         ));
     }

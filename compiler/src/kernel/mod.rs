@@ -13,6 +13,7 @@ pub mod generated;
 pub mod intrinsics;
 pub mod manifest;
 pub mod wavefront;
+pub mod weight;
 
 use crate::abi::BindingDesc;
 use crate::diag::Diagnostic;
@@ -45,8 +46,11 @@ pub struct CompiledScene {
     pub stages: Option<Vec<StageKernel>>,
     /// Words of one path slot of the wavefront model (`PATH_WORDS`).
     pub path_words: u32,
-    /// The execution model the scene runs with ([`ExecModel::resolve`]).
+    /// The execution model the scene runs with ([`ExecModel::resolve`], then
+    /// [`KernelOptions::wavefront_min_weight`]).
     pub exec: ExecModel,
+    /// The render kernel's size with every call inlined ([`weight::inlined_weight`]).
+    pub render_weight: u64,
     /// How long each phase of the compile took, in milliseconds, in order.
     pub timings: Vec<(&'static str, f64)>,
 }
@@ -136,6 +140,44 @@ pub struct KernelOptions {
     /// faster frames) or, for `rtc watch`, the wavefront model (a material edit recompiles one
     /// stage kernel).
     pub auto: ExecModel,
+    /// With `auto` the wavefront model: the smallest render kernel, in [`weight::inlined_weight`],
+    /// for which `EXEC_AUTO` means the wavefront model in a scene of small, built-in geometry
+    /// ([`small_built_in_geometry`]). Such a scene with a lighter kernel keeps the megakernel,
+    /// which then compiles faster than the stage kernels on a driver that gets uniform tables
+    /// (`rtc render` sets it for a small render there; docs/bench/compile.md, "Which model
+    /// compiles faster, with uniform tables (2026-12-04)"). 0: no bound.
+    pub wavefront_min_weight: u64,
+}
+
+/// The most triangles of built-in meshes a scene may have for [`small_built_in_geometry`]: its
+/// BVH records then fit in the runtime's 64 KiB uniform table (2,048 records of 32 bytes, with
+/// room for one record per object).
+pub const SMALL_GEOMETRY_TRIANGLES: u64 = 4096;
+
+/// Whether every object of `scene` has built-in geometry (`quad_mesh`, `cube_mesh`,
+/// `sphere_mesh`, or a `@geometry` struct), with at most [`SMALL_GEOMETRY_TRIANGLES`] triangles
+/// in all, and the scene imports no glTF model: what the compiler can tell, before any file is
+/// read, of whether the scene's BVH is small.
+pub fn small_built_in_geometry(scene: &crate::sema::hir::SceneDesc) -> bool {
+    use crate::sema::hir::{Geometry, MeshAsset};
+    if !scene.models.is_empty() {
+        return false;
+    }
+    let mut triangles: u64 = 0;
+    for object in &scene.objects {
+        let t = match &object.geometry {
+            Geometry::Mesh(MeshAsset::File { .. }) => return false,
+            Geometry::Mesh(MeshAsset::Quad) => 2,
+            Geometry::Mesh(MeshAsset::Cube) => 12,
+            // An icosahedron (20 faces), each face split in four per subdivision.
+            Geometry::Mesh(MeshAsset::Sphere { subdivisions }) => {
+                20u64.saturating_mul(4u64.saturating_pow(*subdivisions))
+            }
+            Geometry::Custom(_) => 1,
+        };
+        triangles = triangles.saturating_add(t);
+    }
+    triangles <= SMALL_GEOMETRY_TRIANGLES
 }
 
 /// Why a scene could not be compiled: the diagnostics (with the sources to render them).

@@ -94,7 +94,21 @@ pub const QUICK_JIT_MAX_SAMPLES_PRIMARY: u64 = 3 << 18;
 /// slower frames catch up from about 65 K samples on the closest examples (cornell_path and hello
 /// at 128x128 and 4 spp: 1.25 against 1.30 s, 0.93 against 0.95 s); the bound keeps a margin of
 /// four below that (docs/bench/compile.md, "The wavefront model for small renders (2026-12-04)").
+/// With uniform tables, light scenes keep the megakernel
+/// ([`WAVEFRONT_PREVIEW_MIN_WEIGHT_WITH_TABLES`]).
 pub const WAVEFRONT_PREVIEW_MAX_SAMPLES: u64 = 1 << 14;
+
+/// On a driver that gets uniform tables (`scene::prefers_uniform_tables`: lavapipe before Mesa
+/// 26), the smallest megakernel, in `rtc_compiler::kernel::weight::inlined_weight`, for which a
+/// render of at most [`WAVEFRONT_PREVIEW_MAX_SAMPLES`] runs the wavefront model when the scene's
+/// geometry is small and built in (`rtc_compiler::kernel::small_built_in_geometry`, so that its
+/// BVH records go to a uniform table too). With both tables a megakernel's inlined traversals
+/// compile about twice as fast, and a light one then compiles faster than the five stage kernels:
+/// cold, Mesa 25.0.7, 64x48 at 1 spp, the examples' megakernels of weight 5,777 to 12,796
+/// (glass_mirror to lights) took 0.34 to 0.70 s against 0.40 to 0.96 s for their stage kernels,
+/// and the next heavier, three_spheres (15,838), 1.01 against 0.73 s (docs/bench/compile.md,
+/// "Which model compiles faster, with uniform tables (2026-12-04)"). The bound lies between.
+pub const WAVEFRONT_PREVIEW_MIN_WEIGHT_WITH_TABLES: u64 = 14_000;
 
 impl CpuJit {
     /// [`CpuJit::Quick`] for a render of at most [`QUICK_JIT_MAX_SAMPLES`] samples, else

@@ -47,6 +47,7 @@ pub use cpu::{
     lavapipe_defaults_applied, CpuJit, HostCpu, JIT_VAR, NARROW_BEFORE_MESA, NARROW_WIDTH,
     QUICK_JIT, QUICK_JIT_MAX_SAMPLES, QUICK_JIT_MAX_SAMPLES_PRIMARY,
     QUICK_JIT_MAX_SAMPLES_SECONDARY, VECTOR_WIDTH_VAR, WAVEFRONT_PREVIEW_MAX_SAMPLES,
+    WAVEFRONT_PREVIEW_MIN_WEIGHT_WITH_TABLES,
 };
 pub(crate) use dispatch::add_stage_ms;
 pub use dispatch::{

@@ -76,7 +76,7 @@ impl TablePlacement {
     }
 
     /// Whether tables go to uniform buffers on this adapter.
-    fn wants_uniform(self, adapter: &AdapterDescription) -> bool {
+    pub fn wants_uniform(self, adapter: &AdapterDescription) -> bool {
         match self {
             TablePlacement::Uniform => true,
             TablePlacement::Storage => false,
