@@ -124,13 +124,13 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
         .program
         .as_ref()
         .map_or(0, |p| p.scenes[scene].settings.exec);
-    // A debug kernel is a megakernel (`rtc bvh`'s passes), whatever the scene asks for.
     let render_weight = kernel::weight::inlined_weight(&render, RENDER_ENTRY).unwrap_or(0);
     let light_megakernel = render_weight < request.kernel.wavefront_min_weight
         && checked
             .program
             .as_ref()
             .is_some_and(|p| kernel::small_built_in_geometry(&p.scenes[scene]));
+    // A debug kernel is a megakernel (`rtc bvh`'s passes), whatever the scene asks for.
     let exec = match request.kernel.debug {
         Some(_) => ExecModel::Megakernel,
         // `EXEC_AUTO` (no choice, setting 0) keeps a light megakernel of small geometry.
