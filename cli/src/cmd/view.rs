@@ -47,7 +47,7 @@ use rtc_runtime::render::{RenderOptions, Renderer};
 use std::collections::BTreeSet;
 use std::path::PathBuf;
 use std::sync::Arc;
-use std::time::{Duration, Instant};
+use std::time::{Duration, Instant, SystemTime};
 use winit::application::ApplicationHandler;
 use winit::event::{ElementState, MouseButton, MouseScrollDelta, WindowEvent};
 use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
@@ -233,6 +233,7 @@ impl App<'_> {
     /// Reloads after file events; keeps the camera the user set.
     fn reload(&mut self) {
         let paths = std::mem::take(&mut self.pending);
+        let started = SystemTime::now();
         let reload = self.session.reload(&paths);
         term::eprint(&reload.messages);
         if reload.status == Status::Unchanged {
@@ -240,7 +241,10 @@ impl App<'_> {
         }
         term::print(&describe(&reload, self.ctx.color));
         if let Some(w) = self.watcher.as_mut() {
-            update_dirs(w, &mut self.dirs, &self.session, self.ctx);
+            let added = update_dirs(w, &mut self.dirs, &self.session, self.ctx);
+            // What changed in a new folder before it was watched sent no event: reload it soon.
+            self.pending = self.session.missed(&added, started);
+            self.last_event = Instant::now();
         }
         if matches!(reload.status, Status::Built | Status::Rerendered) {
             let from_file = self.session.last().and_then(read_orbit);
@@ -661,6 +665,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         ctx.color,
     )
     .with_exec(args.exec.model());
+    let started = SystemTime::now();
     let first = session.reload(&[]);
     term::eprint(&first.messages);
     if first.status != Status::Built {
@@ -741,7 +746,8 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     };
     app.target_spp = app.wanted_spp();
     if let Some(w) = app.watcher.as_mut() {
-        update_dirs(w, &mut app.dirs, &app.session, ctx);
+        let added = update_dirs(w, &mut app.dirs, &app.session, ctx);
+        app.pending = app.session.missed(&added, started);
     }
     if orbit.is_none() {
         term::print(

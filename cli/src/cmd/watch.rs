@@ -239,6 +239,47 @@ impl Session {
             || (self.failing && path.extension().is_some_and(|e| e == "rt"))
     }
 
+    /// What changed in the folders `new_dirs` while they were not yet watched: their watched files
+    /// whose content differs from what the last build read, and, while the build fails, `.rt` files
+    /// there written since `build_started` (perhaps the import it lacked). `rtc watch` registers a
+    /// folder only after a build named a file in it, so a write in between sends no event; the
+    /// caller reloads with these paths when there are any.
+    pub fn missed(&self, new_dirs: &[PathBuf], build_started: SystemTime) -> Vec<PathBuf> {
+        if new_dirs.is_empty() {
+            return Vec::new();
+        }
+        let in_new = |p: &Path| p.parent().is_some_and(|d| new_dirs.iter().any(|n| n == d));
+        let mut missed: Vec<PathBuf> = self
+            .hashes
+            .iter()
+            .filter(|(p, old)| in_new(p) && hash_file(p) != **old)
+            .map(|(p, _)| p.clone())
+            .collect();
+        if self.failing {
+            // File times lag the clock by up to a tick: look a little before the build began.
+            let since = build_started
+                .checked_sub(Duration::from_secs(1))
+                .unwrap_or(build_started);
+            for dir in new_dirs {
+                let Ok(entries) = std::fs::read_dir(dir) else {
+                    continue;
+                };
+                for entry in entries.flatten() {
+                    let path = canonical(&entry.path());
+                    let written = entry.metadata().and_then(|m| m.modified());
+                    if path.extension().is_some_and(|e| e == "rt")
+                        && written.is_ok_and(|t| t >= since)
+                        && !self.hashes.contains_key(&path)
+                        && !missed.contains(&path)
+                    {
+                        missed.push(path);
+                    }
+                }
+            }
+        }
+        missed
+    }
+
     /// Builds again if anything changed. `trigger` is the paths the events named (empty for the
     /// first build, which always runs).
     pub fn reload(&mut self, trigger: &[PathBuf]) -> Reload {
@@ -822,13 +863,14 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
 
     let mut pending: Vec<PathBuf> = Vec::new();
     loop {
+        let started = SystemTime::now();
         let reload = session.reload(&pending);
         pending.clear();
         term::eprint(&reload.messages);
         if reload.status != Status::Unchanged {
             term::print(&describe(&reload, ctx.color));
         }
-        update_dirs(&mut watcher, &mut dirs, &session, ctx);
+        let added = update_dirs(&mut watcher, &mut dirs, &session, ctx);
         if args.exit_after.is_some_and(|n| reload.number >= n) {
             break;
         }
@@ -838,6 +880,11 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
                 session.watched().count(),
                 dirs.len()
             ));
+        }
+        // What changed in a new folder before it was watched sent no event: build it now.
+        pending = session.missed(&added, started);
+        if !pending.is_empty() {
+            continue;
         }
         // Wait for a relevant event, then for quiet.
         match next_batch(&rx, &session, debounce, ctx) {
@@ -885,13 +932,14 @@ fn next_batch(
     }
 }
 
-/// Watches the folders of the session's files (and no others).
+/// Watches the folders of the session's files (and no others). Returns the folders it began to
+/// watch: a file in one of them written while the build ran sent no event ([`Session::missed`]).
 pub fn update_dirs(
     watcher: &mut notify::RecommendedWatcher,
     dirs: &mut BTreeSet<PathBuf>,
     session: &Session,
     ctx: &Context,
-) {
+) -> Vec<PathBuf> {
     use notify::Watcher;
     let want: BTreeSet<PathBuf> = session
         .watched()
@@ -901,16 +949,19 @@ pub fn update_dirs(
     for gone in dirs.difference(&want) {
         let _ = watcher.unwatch(gone);
     }
+    let mut added = Vec::new();
     for new in want.difference(dirs) {
-        if let Err(e) = watcher.watch(new, notify::RecursiveMode::NonRecursive) {
-            term::eprint(&format!(
+        match watcher.watch(new, notify::RecursiveMode::NonRecursive) {
+            Ok(()) => added.push(new.clone()),
+            Err(e) => term::eprint(&format!(
                 "{}: cannot watch `{}`: {e}\n",
                 term::paint("warning", 33, ctx.color),
                 new.display()
-            ));
+            )),
         }
     }
     *dirs = want;
+    added
 }
 
 #[cfg(test)]

@@ -49,6 +49,19 @@ fn temp_dir(name: &str) -> PathBuf {
     dir
 }
 
+/// A session watching `file` that writes WGSL to `dir/out`, with no preview.
+fn wgsl_session(file: &Path, dir: &Path) -> Session {
+    Session::new(
+        file,
+        None,
+        &Options::default(),
+        vec![Target::Wgsl],
+        Some(dir.join("out")),
+        None,
+        false,
+    )
+}
+
 /// Runs `cycles` edits on `file`, even ones valid (a new field of view each time, so the content
 /// always changes) and odd ones invalid; checks each reload's outcome. Returns the resident-set
 /// growth from after `warmup` cycles to the end.
@@ -166,15 +179,7 @@ fn a_touch_without_a_change_does_nothing() {
     let dir = temp_dir("touch");
     let file = dir.join("scene.rt");
     std::fs::write(&file, scene("40.0")).expect("write");
-    let mut session = Session::new(
-        &file,
-        None,
-        &Options::default(),
-        vec![Target::Wgsl],
-        Some(dir.join("out")),
-        None,
-        false,
-    );
+    let mut session = wgsl_session(&file, &dir);
     assert_eq!(session.reload(&[]).status, Status::Built);
     std::fs::write(&file, scene("40.0")).expect("write");
     let r = session.reload(std::slice::from_ref(&file));
@@ -196,15 +201,7 @@ fn assets_are_watched_and_an_asset_edit_skips_the_compile() {
         "geometry: load_mesh(\"tri.obj\")",
     );
     std::fs::write(&file, text).expect("write");
-    let mut session = Session::new(
-        &file,
-        None,
-        &Options::default(),
-        vec![Target::Wgsl],
-        Some(dir.join("out")),
-        None,
-        false,
-    );
+    let mut session = wgsl_session(&file, &dir);
     let first = session.reload(&[]);
     assert_eq!(first.status, Status::Built, "{}", first.messages);
     let canon = mesh.canonicalize().expect("canonical");
@@ -218,5 +215,47 @@ fn assets_are_watched_and_an_asset_edit_skips_the_compile() {
     assert_eq!(r.status, Status::Rerendered, "{}", r.messages);
     assert_eq!(r.changed, vec![canon]);
     assert_eq!(r.parsed, (0, 0), "nothing was compiled");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_change_before_a_folder_is_watched_is_found() {
+    let dir = temp_dir("missed");
+    let file = dir.join("scene.rt");
+    let lib = dir.join("lib.rt");
+    // The scene imports a file that does not exist yet: the first build fails.
+    let text = scene("40.0").replace(
+        "import \"std/miss/gradient.rt\";",
+        "import \"std/miss/gradient.rt\";\nimport \"lib.rt\";",
+    );
+    std::fs::write(&file, text).expect("write");
+    let mut session = wgsl_session(&file, &dir);
+    let started = std::time::SystemTime::now();
+    let first = session.reload(&[]);
+    assert_eq!(first.status, Status::Failed, "{}", first.messages);
+    let canon_dir = dir.canonicalize().expect("canonical");
+    assert!(
+        session
+            .missed(std::slice::from_ref(&canon_dir), started)
+            .is_empty(),
+        "nothing was written after the build began"
+    );
+    // The import appears before `rtc watch` registers the folder: no event will come for it.
+    std::fs::write(&lib, "// now it exists\n").expect("write lib");
+    let canon_lib = lib.canonicalize().expect("canonical");
+    assert!(
+        session.missed(&[], started).is_empty(),
+        "only new folders are looked at"
+    );
+    let missed = session.missed(std::slice::from_ref(&canon_dir), started);
+    assert_eq!(missed, vec![canon_lib]);
+    let second = session.reload(&missed);
+    assert_eq!(second.status, Status::Built, "{}", second.messages);
+
+    // A watched file edited before its folder is watched differs from what the build read.
+    let started = std::time::SystemTime::now();
+    std::fs::write(&file, scene("41.0")).expect("edit");
+    let canon_file = file.canonicalize().expect("canonical");
+    assert_eq!(session.missed(&[canon_dir], started), vec![canon_file]);
     let _ = std::fs::remove_dir_all(&dir);
 }
