@@ -370,13 +370,18 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             ctx,
         );
     }
-    if auto == ExecModel::Wavefront && result.stats.exec == ExecModel::Wavefront {
+    if auto == ExecModel::Wavefront && left_to_auto && result.stats.exec == ExecModel::Wavefront {
         term::print(&format!(
             "exec: wavefront (a render of at most {} samples on a CPU adapter: its stage kernels \
              compile faster than the megakernel; `--exec megakernel` keeps the megakernel)\n",
             rtc_runtime::gpu::WAVEFRONT_PREVIEW_MAX_SAMPLES
         ));
-    } else if auto == ExecModel::Wavefront && left_to_auto && render_weight < wavefront_min_weight {
+    } else if auto == ExecModel::Wavefront
+        && left_to_auto
+        && result.stats.exec == ExecModel::Megakernel
+    {
+        // The compiler kept the megakernel by its rule for light kernels of small geometry
+        // (`compiler/src/pipeline.rs`); the weight says how light.
         term::print(&format!(
             "exec: megakernel (a render of at most {} samples on lavapipe with uniform tables: a \
              megakernel of weight {render_weight}, below {wavefront_min_weight}, compiles faster \
