@@ -11,19 +11,8 @@
 # defaults to every folder of examples/ with a scene.rt. Images go to a temporary folder.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-runner=()
-if [[ ${1:-} == --current-lavapipe ]]; then
-    runner=(bash docs/bench/current_lavapipe.sh)
-    shift
-fi
-runs=${1:-2}
-shift || true
-examples=("$@")
-if [[ ${#examples[@]} == 0 ]]; then
-    for f in examples/*/scene.rt; do
-        examples+=("$(basename "$(dirname "$f")")")
-    done
-fi
+source docs/bench/args.sh
+bench_args 2 "$@"
 source docs/bench/host.sh
 cargo build --release --quiet -p rtc
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}

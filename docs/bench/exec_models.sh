@@ -12,19 +12,8 @@
 # writes the table as JSON to `exec_models.json` in the working directory.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-runner=()
-if [[ ${1:-} == --current-lavapipe ]]; then
-    runner=(bash docs/bench/current_lavapipe.sh)
-    shift
-fi
-runs=${1:-5}
-shift || true
-examples=("$@")
-if [[ ${#examples[@]} -eq 0 ]]; then
-    for d in examples/*/; do
-        [[ -f $d/scene.rt ]] && examples+=("$(basename "$d")")
-    done
-fi
+source docs/bench/args.sh
+bench_args 5 "$@"
 cargo build --release --quiet -p rtc
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
 out=$(mktemp -d)

@@ -13,19 +13,8 @@
 # uniform tables (2026-12-04)", has what decides the choice.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-runner=()
-if [[ ${1:-} == --current-lavapipe ]]; then
-    runner=(bash docs/bench/current_lavapipe.sh)
-    shift
-fi
-runs=${1:-2}
-shift || true
-examples=("$@")
-if [[ ${#examples[@]} == 0 ]]; then
-    for f in examples/*/scene.rt; do
-        examples+=("$(basename "$(dirname "$f")")")
-    done
-fi
+source docs/bench/args.sh
+bench_args 2 "$@"
 size=${SIZE:-128x128}
 source docs/bench/host.sh
 cargo build --release --quiet -p rtc
