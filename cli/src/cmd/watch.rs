@@ -6,7 +6,11 @@
 //! (`load_mesh`, `load_image`, `model`). The folders holding them are watched (not the files, so an
 //! editor that saves by writing a new file and renaming it is seen too), and events for other files
 //! are ignored, except new `.rt` files after a failed build (the missing import may just have been
-//! created). Events are debounced: a reload starts once no event came for `--debounce-ms`.
+//! created). Events are debounced: a reload starts once no event came for `--debounce-ms`. A folder
+//! is watched only after a build named a file in it, so what was written there in between sent no
+//! event: right after registering a folder, its watched files are hashed again and, while the build
+//! fails, its `.rt` files written since the build began are looked at ([`Session::missed`]); any
+//! such change starts a reload at once.
 //!
 //! What a reload does, as a list ([`Session::reload`]):
 //! 1. hash every watched file; when no content changed (a `touch`, an editor writing the same text),
