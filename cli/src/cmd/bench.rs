@@ -9,9 +9,9 @@
 //! How it is timed: each level is a **separate render** that starts at pass 0, so the samples of
 //! a level are the first samples of every larger level (and of a reference rendered here), and
 //! its time is the whole render's: the GPU dispatches of all its passes. One render of one pass
-//! runs first, untimed (a process's first render can pay a warm-up the later ones do not). Pipeline creation (with
-//! the driver's compile and the warm-up dispatch), BVH build and upload are setup, measured by
-//! the runtime separately, printed apart and never included in `ms`.
+//! runs first, untimed (a process's first render can pay a warm-up the later ones do not).
+//! Pipeline creation (with the driver's compile and the warm-up dispatch), BVH build and upload
+//! are setup, measured by the runtime separately, printed apart and never included in `ms`.
 //!
 //! Because a reference rendered here shares the first `n` samples of each level, the expected
 //! measured MSE is `σ²(1/n − 1/N)` rather than `σ²/n` (`N` the reference's samples); the output
