@@ -175,6 +175,9 @@ pub struct Session {
     builds: u32,
     /// The execution model asked for (`--exec`); `None` leaves it to the scene's `exec` setting.
     exec: Option<ExecModel>,
+    /// The model of a scene left at `EXEC_AUTO` (`KernelOptions::auto`): the wavefront model for
+    /// `rtc watch`, where an edit to a material recompiles only the shade stage.
+    auto: ExecModel,
     /// The preview's renderer, kept across reloads: a reload replaces its kernels and keeps every
     /// asset, object-level BVH and buffer that did not change.
     renderer: Option<Renderer<'static>>,
@@ -210,6 +213,7 @@ impl Session {
             failing: false,
             builds: 0,
             exec: None,
+            auto: ExecModel::Wavefront,
             renderer: None,
         }
     }
@@ -217,6 +221,13 @@ impl Session {
     /// The session with the execution model `exec` (`--exec`) instead of the scene's setting.
     pub fn with_exec(mut self, exec: Option<ExecModel>) -> Session {
         self.exec = exec;
+        self
+    }
+
+    /// The session running a scene left at `EXEC_AUTO` with `auto` (the wavefront model unless
+    /// set: `rtc view` sets the megakernel, whose every frame is faster).
+    pub fn with_auto(mut self, auto: ExecModel) -> Session {
+        self.auto = auto;
         self
     }
 
@@ -372,9 +383,7 @@ impl Session {
             },
             &KernelOptions {
                 exec: self.exec,
-                // Under `rtc watch` a scene left at `EXEC_AUTO` runs the wavefront model: an
-                // edit to a material recompiles only the shade stage.
-                auto: ExecModel::Wavefront,
+                auto: self.auto,
                 ..KernelOptions::default()
             },
         );

@@ -6,6 +6,7 @@ use super::{Preview, Session, Status};
 use crate::cmd::render::Format;
 use rtc_compiler::back::Target;
 use rtc_compiler::driver::Options;
+use rtc_compiler::kernel::ExecModel;
 use rtc_runtime::gpu::{AdapterChoice, Gpu};
 use std::path::{Path, PathBuf};
 
@@ -257,5 +258,32 @@ fn a_change_before_a_folder_is_watched_is_found() {
     std::fs::write(&file, scene("41.0")).expect("edit");
     let canon_file = file.canonicalize().expect("canonical");
     assert_eq!(session.missed(&[canon_dir], started), vec![canon_file]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_scene_left_at_exec_auto_runs_the_model_the_session_says() {
+    let dir = temp_dir("auto");
+    let file = dir.join("scene.rt");
+    std::fs::write(&file, scene("40.0")).expect("write");
+    // `rtc watch`: the wavefront model; `rtc view` sets the megakernel; `--exec` wins over both.
+    for (auto, exec, want) in [
+        (None, None, ExecModel::Wavefront),
+        (Some(ExecModel::Megakernel), None, ExecModel::Megakernel),
+        (
+            Some(ExecModel::Megakernel),
+            Some(ExecModel::Wavefront),
+            ExecModel::Wavefront,
+        ),
+    ] {
+        let mut session = wgsl_session(&file, &dir).with_exec(exec);
+        if let Some(auto) = auto {
+            session = session.with_auto(auto);
+        }
+        let r = session.reload(&[]);
+        assert_eq!(r.status, Status::Built, "{}", r.messages);
+        let compiled = session.last().expect("a build");
+        assert_eq!(compiled.exec, want, "auto {auto:?}, --exec {exec:?}");
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }
