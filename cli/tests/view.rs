@@ -1,9 +1,9 @@
 //! `rtc view` under a virtual X display (Xvfb) on the machine's adapter (lavapipe in CI): the window
 //! opens, the image shown is written after every frame (`--screenshot`), each frame adds one pass
-//! to the same accumulation (1, 2, 3 spp), a mouse drag (xdotool) moves the camera and restarts at
-//! 1 spp, a save of the scene reloads it keeping the moved camera and the next screenshot shows the
-//! change; Ctrl-C (SIGINT) closes it with code 0. Without a display it must say so and exit with
-//! code 1.
+//! to the same accumulation (1, 2, 3 spp), a mouse drag (xdotool) moves the camera, is shown at half
+//! the size (`--preview 2`) and restarts at 1 spp, a save of the scene reloads it keeping the moved
+//! camera and the next screenshot shows the change; Ctrl-C (SIGINT) closes it with code 0. Without
+//! a display it must say so and exit with code 1.
 //!
 //! The test starts its own Xvfb (`-displayfd` picks a free display). Where Xvfb, xdotool or a GPU
 //! adapter is missing it is skipped with the reason printed, except in CI (`CI=true`), where that
@@ -157,6 +157,8 @@ fn view_shows_the_scene_and_a_reload_changes_the_screenshot() {
         .arg(&file)
         .arg("--screenshot")
         .arg(&shot)
+        // Every step during a camera move at half the width and height.
+        .args(["--preview", "2"])
         .env("DISPLAY", &display)
         .env_remove("WAYLAND_DISPLAY")
         .env("XDG_RUNTIME_DIR", &runtime_dir)
@@ -231,8 +233,10 @@ fn view_shows_the_scene_and_a_reload_changes_the_screenshot() {
     assert_ne!(moved_camera, file_camera, "the drag moved the camera");
     let restarted = lines.lock().expect("lines")[camera_at..at].join("\n");
     assert!(
-        restarted.contains(": 1 spp") && restarted.contains(": 2 spp"),
-        "after a move the accumulation starts again at one pass:\n{restarted}"
+        restarted.contains(": 1/2 preview (24x24)")
+            && restarted.contains(": 1 spp")
+            && restarted.contains(": 2 spp"),
+        "a move is shown at half the size, then the accumulation starts again at one pass:\n{restarted}"
     );
 
     // A save: the background turns red; the next frames show it, from the moved camera.

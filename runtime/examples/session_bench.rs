@@ -4,7 +4,9 @@
 //!    (`set_field` + `accumulate(1)` + `image`) against what `rtc view` did before, a fresh
 //!    `Renderer::new` + `render` at 1 spp of the scene with the same camera written into its
 //!    description (assets read, every BVH built, every buffer uploaded; the pipelines come from
-//!    the process's kernel cache either way); `RTC_BENCH_DETAIL=1` prints each run's parts;
+//!    the process's kernel cache either way); `RTC_BENCH_DETAIL=1` prints each run's parts; and
+//!    what `rtc view` shows during a drag, a camera move and a preview (`Renderer::preview` at the
+//!    reduction `preview_factor` picks for the whole pass measured; 1 means none) read back;
 //! 2. **moving objects**: a 1-spp frame after `set_transform` on every object against a static
 //!    1-spp frame (nothing changed), both through the session;
 //! 3. **scene level**: `N` instances (default 10,000) of one mesh in a generated scene, all moved,
@@ -26,7 +28,7 @@ use rtc_compiler::kernel::{compile_scene, CompiledScene};
 use rtc_compiler::link::LinkOptions;
 use rtc_compiler::sema::hir::{ConstValue, Scalar};
 use rtc_runtime::gpu::{AdapterChoice, Gpu};
-use rtc_runtime::render::{FieldTarget, RenderOptions, Renderer};
+use rtc_runtime::render::{preview_factor, FieldTarget, RenderOptions, Renderer};
 
 fn compile(path: &Path) -> Result<CompiledScene, String> {
     compile_scene(
@@ -197,8 +199,10 @@ fn run() -> Result<(), String> {
     let objects = session.entities().objects().len();
     let blas_before = session.store().counters().blas_builds;
 
-    // 1. Camera move through the session, against a fresh renderer (alternating).
+    // 1. Camera move through the session, against a fresh renderer (alternating), and the preview
+    // `rtc view` shows during a drag.
     let (mut moved, mut fresh) = (Vec::new(), Vec::new());
+    let (mut previewed, mut pass_ms) = (Vec::new(), None);
     for run in 0..a.runs {
         let angle = run as f32 * 0.05;
         let position = Vec3::new(0.9 * angle.sin(), 0.55, 0.9 * angle.cos());
@@ -221,6 +225,14 @@ fn run() -> Result<(), String> {
             );
         }
         moved.push(ms(t));
+        pass_ms = Some(s.render_ms);
+        let factor = preview_factor(pass_ms);
+        let t = Instant::now();
+        session
+            .set_field(FieldTarget::Camera, "position", &vec3(position * 1.01))
+            .map_err(|e| e.to_string())?;
+        session.preview(factor).map_err(|e| e.to_string())?;
+        previewed.push(ms(t));
         // The fresh renderer gets the same camera, written into the scene description.
         set_camera_position(&mut compiled, position)?;
         let t = Instant::now();
@@ -239,7 +251,8 @@ fn run() -> Result<(), String> {
         }
         fresh.push(ms(t));
     }
-    let (moved, fresh) = (median(moved), median(fresh));
+    let (moved, fresh, previewed) = (median(moved), median(fresh), median(previewed));
+    let factor = preview_factor(pass_ms);
 
     // 2. Every object moving against a static frame (alternating).
     let placements: Vec<Mat4> = session
@@ -317,6 +330,10 @@ fn run() -> Result<(), String> {
         fresh / moved
     );
     println!(
+        "camera move, preview: 1/{factor} of width and height {previewed:8.1} ms   ratio to fresh {:.1}x",
+        fresh / previewed
+    );
+    println!(
         "{} objects moving:    {moving:8.1} ms   static frame {still:8.1} ms   ratio {:.3}x   (TLAS rebuild {tlas:.2} ms; BLAS builds during motion: {})",
         objects.saturating_sub(1),
         moving / still,
@@ -327,7 +344,7 @@ fn run() -> Result<(), String> {
         a.instances
     );
     println!(
-        "{{\"scene\":\"{}\",\"size\":[{w},{h}],\"camera_move_ms\":{moved:.2},\"fresh_ms\":{fresh:.2},\"moving_ms\":{moving:.2},\"static_ms\":{still:.2},\"tlas_ms\":{tlas:.3},\"blas_builds_in_motion\":{},\"instances\":{},\"scene_level_rebuild_ms\":{rebuild:.3},\"scene_level_upload_ms\":{upload:.3}}}",
+        "{{\"scene\":\"{}\",\"size\":[{w},{h}],\"camera_move_ms\":{moved:.2},\"fresh_ms\":{fresh:.2},\"preview_factor\":{factor},\"preview_ms\":{previewed:.2},\"moving_ms\":{moving:.2},\"static_ms\":{still:.2},\"tlas_ms\":{tlas:.3},\"blas_builds_in_motion\":{},\"instances\":{},\"scene_level_rebuild_ms\":{rebuild:.3},\"scene_level_upload_ms\":{upload:.3}}}",
         a.mesh.as_ref().unwrap_or(&a.scene).display(),
         blas_after - blas_before,
         a.instances

@@ -399,6 +399,30 @@ fn layout_program(program: &Program) -> Program {
     }
 }
 
+/// What a frame during an interactive camera move may take (`rtc view`): a scene whose whole pass
+/// is slower is shown reduced ([`preview_factor`], [`Renderer::preview`]).
+pub const PREVIEW_BUDGET_MS: f64 = 40.0;
+
+/// The reduction of width and height (1, 2, 4 or 8) for a step during a camera move when a whole
+/// pass took `pass_ms`: the smallest whose pass (about `pass_ms / factor²`) fits
+/// [`PREVIEW_BUDGET_MS`]; 1 before any whole pass was measured.
+pub fn preview_factor(pass_ms: Option<f64>) -> u32 {
+    let Some(ms) = pass_ms.filter(|ms| ms.is_finite()) else {
+        return 1;
+    };
+    [1u32, 2, 4]
+        .into_iter()
+        .find(|&f| ms / f64::from(f * f) <= PREVIEW_BUDGET_MS)
+        .unwrap_or(8)
+}
+
+/// The image size of a [`Renderer::preview`] at `1 / factor` (clamped to 1 to 64) of `size`,
+/// rounded up.
+pub fn preview_size([width, height]: [u32; 2], factor: u32) -> [u32; 2] {
+    let f = factor.clamp(1, 64);
+    [width.div_ceil(f), height.div_ceil(f)]
+}
+
 fn ms_since(start: Instant) -> f64 {
     start.elapsed().as_secs_f64() * 1e3
 }
@@ -913,15 +937,12 @@ impl<'g> Renderer<'g> {
     }
 
     fn tiles_per_pass(&self) -> u64 {
+        self.tiles_for(self.size)
+    }
+
+    fn tiles_for(&self, [width, height]: [u32; 2]) -> u64 {
         let cfg = self.dispatcher.config();
-        plan_tiles(
-            self.size[0],
-            self.size[1],
-            cfg.tile_width,
-            cfg.tile_height,
-            0,
-        )
-        .len() as u64
+        plan_tiles(width, height, cfg.tile_width, cfg.tile_height, 0).len() as u64
     }
 
     fn passes(&self) -> u32 {
@@ -978,13 +999,47 @@ impl<'g> Renderer<'g> {
         passes: u32,
         progress: &mut dyn FnMut(u64, u64),
     ) -> Result<RenderStats, RenderError> {
+        self.run_passes(passes, self.size, progress)
+    }
+
+    /// Renders one pass of the scene as it is now at `1 / factor` of the image's width and
+    /// height (rounded up; `factor` clamped to 1 to 64) and returns that small image: a coarse
+    /// preview for an interactive camera move, at about `1 / factor²` of a pass's cost, showing
+    /// the same view (the camera program sees the small image size). The pass draws the random
+    /// numbers of an accumulation's first pass and writes the start of the accumulation buffer,
+    /// so it ends the running accumulation: the next [`accumulate`](Self::accumulate) starts
+    /// afresh, and a [`resolve_into`](Self::resolve_into) before it resolves nothing meaningful.
+    pub fn preview(&mut self, factor: u32) -> Result<RenderResult, RenderError> {
+        let [width, height] = preview_size(self.size, factor);
+        self.passes_done = 0;
+        let result = self.run_passes(1, [width, height], &mut |_, _| {});
+        self.passes_done = 0;
+        let mut stats = result?;
+        stats.accumulated_samples = 0;
+        let start = Instant::now();
+        let count = u64::from(width) * u64::from(height);
+        let accum = self.scene.read_accumulation_prefix(self.gpu, count)?;
+        let image = LinearImage::from_accumulation(width, height, &accum)?;
+        stats.readback_ms += ms_since(start);
+        Ok(RenderResult { image, stats })
+    }
+
+    /// `passes` passes at `size` (the image's, or a preview's smaller one), after uploading what
+    /// changed; the accumulation buffer stays sized for the whole image.
+    fn run_passes(
+        &mut self,
+        passes: u32,
+        size: [u32; 2],
+        progress: &mut dyn FnMut(u64, u64),
+    ) -> Result<RenderStats, RenderError> {
         let gpu = self.gpu;
         let setup = std::mem::take(&mut self.setup);
         let mut bvh_ms = setup.bvh_ms;
         if self.entities.refresh()? {
             bvh_ms += self.entities.stats().tlas_ms;
         }
-        let [width, height] = self.size;
+        let image_pixels = u64::from(self.size[0]) * u64::from(self.size[1]);
+        let [width, height] = size;
         let pixels = u64::from(width) * u64::from(height);
         let frame = FrameUniforms {
             path_slots: self.path_slots,
@@ -992,7 +1047,9 @@ impl<'g> Renderer<'g> {
                 .entities
                 .frame_uniforms(self.samples_per_pass, self.total_samples)
         };
-        let report: UploadReport = self.scene.upload(gpu, &mut self.entities, &frame, pixels)?;
+        let report: UploadReport =
+            self.scene
+                .upload(gpu, &mut self.entities, &frame, image_pixels)?;
         let mut written = std::mem::take(&mut self.written_at_setup);
         for name in report.written() {
             if !written.contains(&name) {
@@ -1006,7 +1063,7 @@ impl<'g> Renderer<'g> {
             self.scene.clear_counters(gpu)?;
         }
 
-        let per_pass = self.tiles_per_pass();
+        let per_pass = self.tiles_for(size);
         let total = per_pass * u64::from(passes);
         let mut render_ms = 0.0;
         let mut flush_ms = 0.0;
@@ -1024,7 +1081,7 @@ impl<'g> Renderer<'g> {
                     gpu,
                     kernel,
                     self.scene.buffers(),
-                    self.size,
+                    size,
                     pass,
                     &mut report,
                 )?,
@@ -1040,7 +1097,7 @@ impl<'g> Renderer<'g> {
                         gpu,
                         &kernels,
                         self.scene.buffers(),
-                        self.size,
+                        size,
                         pass,
                         &mut report,
                     )?;

@@ -9,9 +9,10 @@ use common::scene::{vec3f, SceneFile};
 use common::{gpu_or_skip, temp_dir};
 use glam::{Mat4, Vec3};
 use rtc_compiler::kernel::CompiledScene;
+use rtc_compiler::kernel::ExecModel;
 use rtc_compiler::sema::hir::{ConstValue, Scalar};
 use rtc_runtime::image_out::LinearImage;
-use rtc_runtime::render::{FieldTarget, RenderOptions, Renderer};
+use rtc_runtime::render::{preview_size, FieldTarget, RenderOptions, Renderer};
 
 const TRI_OBJ: &str = "v -0.4 0 0\nv 0.4 0 0\nv 0 0.9 0.1\nf 1 2 3\n";
 
@@ -391,4 +392,63 @@ fn the_wavefront_model_accumulates_and_takes_edits_like_the_megakernel() {
         &r.image().expect("image"),
         &fresh(&gpu, &stage(&dir, &[("CAMERA", [1.0, 1.5, 3.5])]), 2),
     );
+}
+
+#[test]
+fn a_preview_is_the_first_pass_at_a_smaller_size_and_restarts_the_accumulation() {
+    let Some(gpu) =
+        gpu_or_skip("a_preview_is_the_first_pass_at_a_smaller_size_and_restarts_the_accumulation")
+    else {
+        return;
+    };
+    let dir = temp_dir("session", "preview");
+    stage(&dir, &[]);
+    for exec in [ExecModel::Megakernel, ExecModel::Wavefront] {
+        let kernel = rtc_compiler::kernel::KernelOptions {
+            exec: Some(exec),
+            ..Default::default()
+        };
+        let compiled = SceneFile::open("session/stage.rt").compile_with(&dir, &kernel);
+        assert_eq!(compiled.exec, exec);
+        let options = RenderOptions::default();
+        let mut r = Renderer::new(&gpu, &compiled, options.clone()).expect("renderer");
+        assert_eq!(r.size(), [24, 16]);
+        r.accumulate(2, &mut |_, _| {}).expect("accumulate");
+        // 24 x 16 at 1/2 and at 1/5 (rounded up: 5 x 4).
+        for (factor, size) in [(2, [12, 8]), (5, [5, 4])] {
+            assert_eq!(preview_size(r.size(), factor), size);
+            let preview = r.preview(factor).expect("preview");
+            assert_eq!(
+                r.accumulated_samples(),
+                0,
+                "a preview ends the accumulation"
+            );
+            assert_eq!([preview.stats.width, preview.stats.height], size);
+            let mut small = Renderer::new(
+                &gpu,
+                &compiled,
+                RenderOptions {
+                    size: Some(size),
+                    ..options.clone()
+                },
+            )
+            .expect("renderer at the preview's size");
+            small.accumulate(1, &mut |_, _| {}).expect("accumulate");
+            assert_same(
+                &format!("{exec:?} preview at 1/{factor} against one pass at {size:?}"),
+                &preview.image,
+                &small.image().expect("image"),
+            );
+        }
+        // The next pass starts afresh at the whole size: the first pass of a new renderer.
+        let stats = r.accumulate(1, &mut |_, _| {}).expect("accumulate");
+        assert_eq!(stats.accumulated_samples, 1);
+        let mut whole = Renderer::new(&gpu, &compiled, options).expect("renderer");
+        whole.accumulate(1, &mut |_, _| {}).expect("accumulate");
+        assert_same(
+            &format!("{exec:?} the pass after a preview against a first pass"),
+            &r.image().expect("image"),
+            &whole.image().expect("image"),
+        );
+    }
 }

@@ -19,6 +19,13 @@
 //! - an animated scene (spec/animation.md) plays in a loop of its `frames` at its `fps`, one fresh
 //!   pass a step at the time the clock shows; space pauses it (the paused frame then refines like
 //!   a still scene) and plays it again; a camera the user moved stays where they put it;
+//! - while the camera moves, each step shows the new view at once: when a whole pass takes longer
+//!   than 40 ms ([`PREVIEW_BUDGET_MS`](rtc_runtime::render::PREVIEW_BUDGET_MS): a CPU driver, a
+//!   large image), the step renders one pass at 1/2, 1/4 or 1/8 of the width and height
+//!   ([`Renderer::preview`], the smallest reduction that fits the budget, judged by the last whole
+//!   pass) and shows it scaled up; once the camera has stayed still for [`SETTLE`] after a
+//!   preview, the accumulation starts at the whole size (`--preview` fixes the reduction or turns
+//!   it off);
 //! - the title shows the samples per pixel accumulated, the time of the last step (one pass,
 //!   its read-back and display) and the primary rays per second of its pass.
 //!
@@ -44,7 +51,7 @@ use rtc_runtime::assets::AssetRoots;
 use rtc_runtime::gpu::Gpu;
 use rtc_runtime::image_out::{srgb_to_linear, LinearImage};
 use rtc_runtime::orbit::{read_orbit, write_orbit, Orbit};
-use rtc_runtime::render::{RenderOptions, Renderer};
+use rtc_runtime::render::{preview_factor, RenderOptions, Renderer};
 use std::collections::BTreeSet;
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -73,7 +80,36 @@ pub struct Args {
     /// Close the window after this many frames (for tests).
     #[arg(long, value_name = "N", hide = true)]
     pub exit_after_frames: Option<u32>,
+    /// While the camera moves: `auto` shows each move at 1/2, 1/4 or 1/8 of the width and height
+    /// when a whole pass is slower than 40 ms (`rtc_runtime::render::preview_factor`), `off` always at the whole size, a number N (1 to
+    /// 64) always at 1/N.
+    #[arg(long, value_name = "auto|off|N", default_value = "auto", value_parser = parse_preview)]
+    pub preview: Preview,
 }
+
+/// `--preview`: how camera moves are shown.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Preview {
+    /// Reduced by what the last whole pass took ([`preview_factor`]).
+    Auto,
+    /// Always this reduction of width and height (1: none).
+    Factor(u32),
+}
+
+fn parse_preview(text: &str) -> Result<Preview, String> {
+    match text {
+        "auto" => Ok(Preview::Auto),
+        "off" => Ok(Preview::Factor(1)),
+        n => match n.parse::<u32>() {
+            Ok(f @ 1..=64) => Ok(Preview::Factor(f)),
+            _ => Err("expected `auto`, `off` or a whole number from 1 to 64".to_string()),
+        },
+    }
+}
+
+/// How long the camera must stay still after a preview before a whole-size pass starts (which
+/// then holds the window for a whole pass): a drag that pauses briefly keeps getting previews.
+const SETTLE: Duration = Duration::from_millis(120);
 
 /// What the file watcher and the Ctrl-C handler send to the event loop.
 #[derive(Debug)]
@@ -114,6 +150,12 @@ struct App<'a> {
     stale_kernel: bool,
     /// Whether the next step starts a new accumulation (the camera moved, or a reload).
     fresh: bool,
+    /// Whether the user moved the camera since the last step (then the step may be a preview).
+    moving: bool,
+    /// Render time of the last whole pass (what a preview's reduction is chosen by).
+    pass_ms: Option<f64>,
+    /// After a preview: the whole-size pass waits until then for the camera to stay still.
+    settle_until: Option<Instant>,
     /// Scene time of an animated scene.
     clock: Clock,
     /// The length of the glTF node animations of the scene's models (seconds; known once the
@@ -261,8 +303,13 @@ impl App<'_> {
         if self.next_spp.is_none() {
             return;
         }
+        let factor = match (std::mem::take(&mut self.moving), self.args.preview) {
+            (false, _) => 1,
+            (true, Preview::Auto) => preview_factor(self.pass_ms),
+            (true, Preview::Factor(f)) => f,
+        };
         let t = Instant::now();
-        let result = self.advance();
+        let result = self.advance(factor);
         let frame_ms = t.elapsed().as_secs_f64() * 1e3;
         let (stats, image) = match result {
             Ok(r) => r,
@@ -276,6 +323,12 @@ impl App<'_> {
             }
         };
         let spp = stats.accumulated_samples;
+        if factor == 1 {
+            self.pass_ms = Some(stats.render_ms);
+            self.settle_until = None;
+        } else {
+            self.settle_until = Some(Instant::now() + SETTLE);
+        }
         let length = self
             .session
             .last()
@@ -284,8 +337,13 @@ impl App<'_> {
         let playing = length > 0.0 && self.clock.playing;
         self.next_spp = (playing || spp < self.target_spp).then_some(spp + stats.samples_per_pass);
         self.frames += 1;
+        let shown = if factor > 1 {
+            format!("1/{factor} preview ({}x{})", stats.width, stats.height)
+        } else {
+            format!("{spp} spp")
+        };
         self.status = format!(
-            "{spp} spp, {frame_ms:.0} ms/frame, {:.2} M rays/s",
+            "{shown}, {frame_ms:.0} ms/frame, {:.2} M rays/s",
             stats.rays_per_second / 1e6
         );
         if length > 0.0 {
@@ -316,9 +374,12 @@ impl App<'_> {
     }
 
     /// Brings the renderer up to date (built at the first step, kernels replaced after a
-    /// reload, the camera written after a move), adds one pass and reads the image back.
+    /// reload, the camera written after a move), adds one pass and reads the image back; with
+    /// `factor` above 1, renders a preview at `1 / factor` of the size instead (which ends the
+    /// accumulation: the next pass starts it afresh).
     fn advance(
         &mut self,
+        factor: u32,
     ) -> Result<(rtc_runtime::render::RenderStats, LinearImage), rtc_runtime::render::RenderError>
     {
         let orbit = self.orbit;
@@ -383,6 +444,10 @@ impl App<'_> {
                     v(o.look_at)
                 ));
             }
+        }
+        if factor > 1 {
+            let preview = r.preview(factor)?;
+            return Ok((preview.stats, preview.image));
         }
         let stats = r.accumulate(1, &mut |_, _| {})?;
         let image = r.image()?;
@@ -554,6 +619,7 @@ impl ApplicationHandler<UserEvent> for App<'_> {
                         Drag::Pan => orbit.pan(dx * 0.002, dy * 0.002),
                     }
                     self.moved = true;
+                    self.moving = true;
                     self.restart();
                 }
                 self.cursor = Some(now);
@@ -566,6 +632,7 @@ impl ApplicationHandler<UserEvent> for App<'_> {
                 if let Some(orbit) = self.orbit.as_mut() {
                     orbit.zoom(0.9f32.powf(lines));
                     self.moved = true;
+                    self.moving = true;
                     self.restart();
                 }
             }
@@ -584,6 +651,12 @@ impl ApplicationHandler<UserEvent> for App<'_> {
             }
         }
         if self.window.is_some() && self.next_spp.is_some() {
+            if let Some(until) = self.settle_until.filter(|_| !self.moving) {
+                if Instant::now() < until {
+                    event_loop.set_control_flow(ControlFlow::WaitUntil(until));
+                    return;
+                }
+            }
             self.step(event_loop);
         }
         event_loop.set_control_flow(if self.next_spp.is_some() {
@@ -739,6 +812,9 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         next_spp: None,
         orbit,
         moved: false,
+        moving: false,
+        pass_ms: None,
+        settle_until: None,
         drag: None,
         cursor: None,
         pending: Vec::new(),
@@ -782,6 +858,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rtc_runtime::render::PREVIEW_BUDGET_MS;
 
     #[test]
     fn a_reload_keeps_a_moved_camera_and_follows_the_file_otherwise() {
@@ -803,5 +880,31 @@ mod tests {
         );
         // A camera without `position`/`look_at` now: nothing to keep.
         assert_eq!(camera_after_reload(true, Some(user), None), None);
+    }
+
+    #[test]
+    fn a_move_is_shown_reduced_just_enough_to_fit_the_budget() {
+        // Before any whole pass, and for passes within the budget: the whole size.
+        assert_eq!(preview_factor(None), 1);
+        assert_eq!(preview_factor(Some(f64::NAN)), 1);
+        assert_eq!(preview_factor(Some(12.0)), 1);
+        assert_eq!(preview_factor(Some(PREVIEW_BUDGET_MS)), 1);
+        // A quarter of the pixels up to 4 times the budget, a sixteenth up to 16 times.
+        assert_eq!(preview_factor(Some(PREVIEW_BUDGET_MS + 1.0)), 2);
+        assert_eq!(preview_factor(Some(4.0 * PREVIEW_BUDGET_MS)), 2);
+        assert_eq!(preview_factor(Some(430.0)), 4);
+        assert_eq!(preview_factor(Some(16.0 * PREVIEW_BUDGET_MS + 1.0)), 8);
+        assert_eq!(preview_factor(Some(1e9)), 8);
+    }
+
+    #[test]
+    fn preview_takes_auto_off_or_a_factor() {
+        assert_eq!(parse_preview("auto"), Ok(Preview::Auto));
+        assert_eq!(parse_preview("off"), Ok(Preview::Factor(1)));
+        assert_eq!(parse_preview("4"), Ok(Preview::Factor(4)));
+        assert_eq!(parse_preview("64"), Ok(Preview::Factor(64)));
+        for bad in ["0", "65", "-2", "2.5", "", "fast"] {
+            assert!(parse_preview(bad).is_err(), "{bad:?}");
+        }
     }
 }

@@ -460,6 +460,18 @@ pub fn read_vec4_f32(
     read_mapped(gpu, buffer, size, vec4s_from)
 }
 
+/// Reads back the first `count` `vec4<f32>` values of `binding` (fewer when its bound range is
+/// shorter): a preview's pixels at the start of the accumulation buffer.
+pub fn read_vec4_f32_prefix(
+    gpu: &Gpu,
+    buffers: &BufferSet,
+    binding: u32,
+    count: u64,
+) -> Result<Vec<[f32; 4]>, DispatchError> {
+    let (buffer, size) = vec4_binding(buffers, binding)?;
+    read_mapped(gpu, buffer, size.min(count.saturating_mul(16)), vec4s_from)
+}
+
 /// The buffer at `binding` of `buffers` and its bound size rounded down to whole `vec4f`s.
 fn vec4_binding(buffers: &BufferSet, binding: u32) -> Result<(&wgpu::Buffer, u64), DispatchError> {
     let (Some(buffer), Some(size)) = (buffers.buffer(binding), buffers.bound_size(binding)) else {

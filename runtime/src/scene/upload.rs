@@ -351,6 +351,23 @@ impl GpuScene {
         Ok(read_vec4_f32(gpu, &self.buffers, b.binding)?)
     }
 
+    /// Reads back the first `count` entries of `accum` (a preview's pixels).
+    pub fn read_accumulation_prefix(
+        &self,
+        gpu: &Gpu,
+        count: u64,
+    ) -> Result<Vec<[f32; 4]>, SceneError> {
+        let Some(b) = abi::binding("accum").filter(|_| self.has("accum")) else {
+            return Ok(Vec::new());
+        };
+        Ok(crate::gpu::read_vec4_f32_prefix(
+            gpu,
+            &self.buffers,
+            b.binding,
+            count,
+        )?)
+    }
+
     /// Reads the kernel's counters back (zeros when the kernel declares no `counters`).
     pub fn read_counters(&self, gpu: &Gpu) -> Result<Counters, SceneError> {
         let buffer = abi::binding("counters")
