@@ -2,7 +2,8 @@
 //! the path-traced Cornell box at 32x32 the table has one row per level, the error falls with the
 //! sample count, the CSV, JSON and SVG files are written and parse; a missing or wrong-sized
 //! reference is a clear error, never a panic; `--against` prints the checked equal-error time ratio
-//! against a synthetic curve, and a malformed curve is a clear error.
+//! against a synthetic curve, and a malformed curve is a clear error; `--runs` reports the median
+//! and the spread.
 
 mod common;
 
@@ -251,4 +252,52 @@ fn a_bad_against_curve_is_a_clear_error_before_rendering() {
     ]);
     assert_eq!(out.status.code(), Some(1), "{}", text(&out));
     assert!(!text(&out).contains("panicked"));
+}
+
+/// `--runs 3`: every level three times, in rounds; the table and the JSON give the median and the
+/// spread, the images of a level's runs are identical (no warning), and 0 runs is a usage error.
+#[test]
+fn runs_give_the_median_and_the_spread() {
+    let dir = scratch("bench", "runs");
+    let json = dir.join("r.json");
+    let out = rtc(&[
+        "bench",
+        s(&cornell()),
+        "--size",
+        "32x32",
+        "--reference-spp",
+        "16",
+        "--spp-list",
+        "1,4",
+        "--runs",
+        "3",
+        "--json",
+        s(&json),
+    ]);
+    if no_gpu(&out) {
+        return;
+    }
+    let t = text(&out);
+    assert!(out.status.success(), "{t}");
+    assert!(t.contains("run 3 of 3"), "{t}");
+    assert!(t.contains("ms = median of 3 runs"), "{t}");
+    assert!(!t.contains("another image"), "{t}");
+    let value: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).expect("json written"))
+            .expect("valid JSON");
+    assert_eq!(value["runs"], 3);
+    let rows = value["rows"].as_array().expect("rows");
+    assert_eq!(rows.len(), 2);
+    for row in rows {
+        let (lo, ms, hi) = (
+            row["ms_min"].as_f64().expect("ms_min"),
+            row["ms"].as_f64().expect("ms"),
+            row["ms_max"].as_f64().expect("ms_max"),
+        );
+        assert!(0.0 < lo && lo <= ms && ms <= hi, "{row}");
+    }
+
+    let zero = rtc(&["bench", s(&cornell()), "--runs", "0"]);
+    assert_eq!(zero.status.code(), Some(2), "{}", text(&zero));
+    assert!(text(&zero).contains("--runs"), "{}", text(&zero));
 }

@@ -14,6 +14,7 @@ What it writes into OUT_DIR:
 - reference.exr: the scene at --ref-spp samples (in passes of at most --pass-spp, each with its
   own seed, averaged): the converged reference both renderers are measured against;
 - mitsuba.csv (`spp,seconds,rmse`, the format `rtc bench --against` reads): one render per level
+  (with --runs N, N in rounds over the levels and the median time)
   with --sampler (default `independent`; `ldsampler`, Mitsuba's scrambled (0, 2)-sequence, is the
   counterpart of rtc's scrambled Sobol numbers), seeded apart from the reference, timed around
   `mi.render` and the evaluation of its result; a 1-spp warm-up render first so the JIT's kernel
@@ -215,6 +216,13 @@ def main():
         help="Mitsuba's sampler for the measured levels (the reference always uses independent): "
         "independent, stratified, multijitter, orthogonal or ldsampler",
     )
+    p.add_argument(
+        "--runs",
+        type=int,
+        default=1,
+        help="render every level this many times, in rounds over all levels, and write the "
+        "median time (each run of a level with the same seed, so the same image)",
+    )
     p.add_argument("--means", nargs="+", metavar="EXR")
     args = p.parse_args()
 
@@ -266,21 +274,37 @@ def main():
     print(f"reference mean R G B {m[0]:.5f} {m[1]:.5f} {m[2]:.5f}")
 
     render(mi, dr, measured, 1, seed=7, pass_spp=1)  # warm-up: the JIT compile
-    rows = []
+    runs = max(args.runs, 1)
+    times = [[] for _ in levels]
+    errors = [None for _ in levels]
     print(f"{'spp':>7} {'seconds':>10} {'RMSE':>10}")
-    for i, spp in enumerate(levels):
-        t = time.perf_counter()
-        img = render(mi, dr, measured, spp, seed=1000 + i, pass_spp=args.pass_spp)
-        seconds = time.perf_counter() - t
-        rmse = math.sqrt(np.mean((img - ref) ** 2))
-        rows.append((spp, seconds, rmse))
-        print(f"{spp:>7} {seconds:>10.3f} {rmse:>10.6f}", flush=True)
-        if spp in keep:
-            write_exr(mi, os.path.join(args.out, f"mitsuba_{spp}.exr"), img)
+    for run in range(runs):
+        if runs > 1:
+            print(f"run {run + 1} of {runs}", flush=True)
+        for i, spp in enumerate(levels):
+            t = time.perf_counter()
+            img = render(mi, dr, measured, spp, seed=1000 + i, pass_spp=args.pass_spp)
+            seconds = time.perf_counter() - t
+            rmse = math.sqrt(np.mean((img - ref) ** 2))
+            times[i].append(seconds)
+            if errors[i] is None:
+                errors[i] = rmse
+            print(f"{spp:>7} {seconds:>10.3f} {rmse:>10.6f}", flush=True)
+            if spp in keep and run == 0:
+                write_exr(mi, os.path.join(args.out, f"mitsuba_{spp}.exr"), img)
+    rows = [(spp, float(np.median(times[i])), errors[i]) for i, spp in enumerate(levels)]
+    if runs > 1:
+        print(f"medians of {runs} runs:")
+        for i, (spp, seconds, rmse) in enumerate(rows):
+            print(
+                f"{spp:>7} {seconds:>10.3f} {rmse:>10.6f}  "
+                f"({min(times[i]):.3f} to {max(times[i]):.3f})",
+                flush=True,
+            )
     with open(os.path.join(args.out, "mitsuba.csv"), "w") as f:
         f.write(
             f"# Mitsuba {mi.__version__} {args.variant}, sampler {args.sampler}, {w}x{h}, "
-            f"reference {args.ref_spp} spp\n"
+            f"reference {args.ref_spp} spp, median of {runs} run(s)\n"
         )
         f.write("spp,seconds,rmse\n")
         for spp, s, e in rows:

@@ -5,7 +5,9 @@
 #
 #   bash docs/bench/cornell_vs_mitsuba.sh [--current-lavapipe] [--glass] [SIZE] [SPP_LIST] [REF_SPP] [OUT]
 #
-# Defaults: 256x256, levels 1,4,16,64, reference 4096 spp, OUT a new temporary folder. The full
+# Defaults: 256x256, levels 1,4,16,64, reference 4096 spp, OUT a new temporary folder. RUNS=N in
+# the environment renders every level of both renderers N times (in rounds over the levels) and
+# compares the median times (default 1: the VMs' speed drifts by 2 to 13 % over minutes). The full
 # run of docs/bench/README.md: `bash docs/bench/cornell_vs_mitsuba.sh 512x512 1,4,16,64,256`.
 # `--current-lavapipe` runs rtc on the current Mesa release's lavapipe (docs/bench/current_lavapipe.sh).
 # `--glass` measures docs/bench/cornell_glass.rt instead (a glass ball for the short box; Mitsuba's
@@ -75,9 +77,9 @@ export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
 # without it rtc's largest level would fall outside Mitsuba's curve and get no ratio.
 "$venv/bin/python" docs/bench/cornell_mitsuba.py "$out" "${glass[@]}" --size "$size" \
     --spp-list "$levels,$((largest * 4))" \
-    --ref-spp "$ref_spp" --keep "$largest"
+    --ref-spp "$ref_spp" --keep "$largest" --runs "${RUNS:-1}"
 "${runner[@]}" target/release/rtc bench "$scene" --size "$size" \
-    --reference "$out/reference.exr" --spp-list "$levels" --against "$out/mitsuba.csv" \
+    --reference "$out/reference.exr" --spp-list "$levels" --runs "${RUNS:-1}" --against "$out/mitsuba.csv" \
     --csv "$out/rtc.csv" --json "$out/rtc.json" --plot "$out/cornell_vs_mitsuba.svg"
 "${runner[@]}" target/release/rtc render "$scene" --size "$size" \
     --spp "$largest" -o "$out/rtc_$largest.exr" 2>&1 | grep -E '^adapter|^  render'

@@ -9,7 +9,10 @@
 //! How it is timed: each level is a **separate render** that starts at pass 0, so the samples of
 //! a level are the first samples of every larger level (and of a reference rendered here), and
 //! its time is the whole render's: the GPU dispatches of all its passes. One render of one pass
-//! runs first, untimed (a process's first render can pay a warm-up the later ones do not).
+//! runs first, untimed (a process's first render can pay a warm-up the later ones do not). With
+//! `--runs N` every level is rendered `N` times, in `N` rounds over all levels (so a slow spell of
+//! the machine falls on every level alike), and `ms` is the median (the JSON also has the least
+//! and the most); the images of a level's runs must be identical, and a difference is a warning.
 //! Pipeline creation (with the driver's compile and the warm-up dispatch), BVH build and upload
 //! are setup, measured by the runtime separately, printed apart and never included in `ms`.
 //!
@@ -111,6 +114,10 @@ pub struct Args {
     /// Also report BVH build ms against trace ms and SAH cost for each builder preset.
     #[arg(long)]
     pub bvh_presets: bool,
+    /// Render every level this many times (in rounds over all levels) and report the median time.
+    #[arg(long, value_name = "N", default_value_t = 1,
+          value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub runs: u32,
     /// Samples per pixel of the `--bvh-presets` renders.
     #[arg(long, value_name = "N", default_value_t = 16, value_parser = crate::args::parse_spp)]
     pub preset_spp: u32,
@@ -126,8 +133,10 @@ pub struct Row {
     pub spp: u32,
     /// Samples per pixel taken (rounded up to the camera's samples per pass).
     pub samples: u32,
-    /// Render time, ms (GPU dispatches of all passes).
+    /// Render time, ms (GPU dispatches of all passes; the median of `--runs`).
     pub ms: f64,
+    /// The least and the most render time of the runs (both `ms` for one run).
+    pub ms_range: (f64, f64),
     /// Root-mean-square error against the reference.
     pub rmse: f64,
     /// Relative MSE against the reference.
@@ -229,6 +238,25 @@ fn scene_size(compiled: &CompiledScene) -> Option<[u32; 2]> {
     let program = compiled.checked.program.as_ref()?;
     let settings = &program.scenes[compiled.scene].settings;
     Some([settings.width, settings.height])
+}
+
+/// One line of the table; `extra` is appended.
+fn print_row(row: &Row, extra: &str) {
+    term::print(&format!(
+        "{:>7} {:>12.2} {:>12.6} {:>12.6} {:>9.2}{extra}\n",
+        row.samples, row.ms, row.rmse, row.rel_mse, row.psnr
+    ));
+}
+
+/// The median of `values` (the mean of the middle two for an even count; NaN for none).
+fn median(values: &[f64]) -> f64 {
+    let mut v = values.to_vec();
+    v.sort_by(f64::total_cmp);
+    match v.len() {
+        0 => f64::NAN,
+        n if n % 2 == 1 => v[n / 2],
+        n => 0.5 * (v[n / 2 - 1] + v[n / 2]),
+    }
 }
 
 fn setup_of(r: &RenderResult) -> Setup {
@@ -394,7 +422,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         "{:>7} {:>12} {:>12} {:>12} {:>9}\n",
         "spp", "ms", "RMSE", "rel MSE", "PSNR dB"
     ));
-    let mut rows = Vec::new();
+    let mut rows: Vec<Row> = Vec::new();
     let mut setup = Setup::default();
     let mut size = [0, 0];
     // A warm-up render of one pass, not timed: the first render of a process sometimes took
@@ -411,48 +439,92 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         Ok((r, _)) => r.stats.render_ms,
         Err(e) => return render_failure(&e, &compiled.checked.sources, ctx),
     };
-    for &spp in &levels {
-        let options = RenderOptions {
-            samples: Some(spp),
-            ..base.clone()
-        };
-        let r = match render_once(&gpu, &compiled, options) {
-            Ok((r, _)) => r,
-            Err(e) => return render_failure(&e, &compiled.checked.sources, ctx),
-        };
-        if rows.is_empty() {
-            setup = setup_of(&r);
-            size = [r.stats.width, r.stats.height];
-            for w in &r.stats.warnings {
-                warn(w, ctx);
-            }
+    let mut times: Vec<Vec<f64>> = vec![Vec::new(); levels.len()];
+    for run in 0..args.runs {
+        if args.runs > 1 {
+            term::eprint(&format!("run {} of {}...\n", run + 1, args.runs));
         }
-        let m = match compare(&r.image, &reference) {
-            Ok(m) => m,
-            Err(e) => return fail(&format!("cannot compare with the reference: {e}"), ctx),
-        };
-        if m.nonfinite_test > 0 {
-            warn(
-                &format!(
-                    "{} pixels at {spp} spp are not finite and were left out of the error",
-                    m.nonfinite_test
-                ),
-                ctx,
+        for (i, &spp) in levels.iter().enumerate() {
+            let options = RenderOptions {
+                samples: Some(spp),
+                ..base.clone()
+            };
+            let r = match render_once(&gpu, &compiled, options) {
+                Ok((r, _)) => r,
+                Err(e) => return render_failure(&e, &compiled.checked.sources, ctx),
+            };
+            times[i].push(r.stats.render_ms);
+            if run > 0 {
+                if let Some(first) = rows.get(i) {
+                    let m = compare(&r.image, &reference).ok();
+                    if m.is_some_and(|m| m.rmse.to_bits() != first.rmse.to_bits()) {
+                        warn(
+                            &format!(
+                                "run {} at {spp} spp rendered another image than run 1 (RMSE \
+                                 {:.6} against {:.6})",
+                                run + 1,
+                                m.map_or(f64::NAN, |m| m.rmse),
+                                first.rmse
+                            ),
+                            ctx,
+                        );
+                    }
+                }
+                continue;
+            }
+            if rows.is_empty() {
+                setup = setup_of(&r);
+                size = [r.stats.width, r.stats.height];
+                for w in &r.stats.warnings {
+                    warn(w, ctx);
+                }
+            }
+            let m = match compare(&r.image, &reference) {
+                Ok(m) => m,
+                Err(e) => return fail(&format!("cannot compare with the reference: {e}"), ctx),
+            };
+            if m.nonfinite_test > 0 {
+                warn(
+                    &format!(
+                        "{} pixels at {spp} spp are not finite and were left out of the error",
+                        m.nonfinite_test
+                    ),
+                    ctx,
+                );
+            }
+            let row = Row {
+                spp,
+                samples: r.stats.samples,
+                ms: r.stats.render_ms,
+                ms_range: (r.stats.render_ms, r.stats.render_ms),
+                rmse: m.rmse,
+                rel_mse: m.rel_mse,
+                psnr: m.psnr,
+            };
+            if args.runs == 1 {
+                print_row(&row, "");
+            }
+            rows.push(row);
+        }
+    }
+    for (row, t) in rows.iter_mut().zip(&times) {
+        row.ms = median(t);
+        row.ms_range = (
+            t.iter().copied().fold(f64::INFINITY, f64::min),
+            t.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        );
+    }
+    if args.runs > 1 {
+        for row in &rows {
+            print_row(
+                row,
+                &format!("  ({:.2} to {:.2})", row.ms_range.0, row.ms_range.1),
             );
         }
-        let row = Row {
-            spp,
-            samples: r.stats.samples,
-            ms: r.stats.render_ms,
-            rmse: m.rmse,
-            rel_mse: m.rel_mse,
-            psnr: m.psnr,
-        };
         term::print(&format!(
-            "{:>7} {:>12.2} {:>12.6} {:>12.6} {:>9.2}\n",
-            row.samples, row.ms, row.rmse, row.rel_mse, row.psnr
+            "ms = median of {} runs (least to most in brackets), in rounds over all levels\n",
+            args.runs
         ));
-        rows.push(row);
     }
     term::print(&format!(
         "{}x{}; ms = GPU render time of all passes of that level (a separate render from pass \
@@ -528,6 +600,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             &presets,
             args.preset_spp,
         );
+        value["runs"] = serde_json::json!(args.runs);
         value["adapter"] = serde_json::json!(gpu.description().to_string());
         value["host"] = serde_json::json!(rtc_runtime::gpu::HostCpu::detect().to_string());
         if let Some((curve, levels)) = &compared {
@@ -630,7 +703,7 @@ fn json(
         "width": size[0],
         "height": size[1],
         "reference": reference,
-        "timing": "ms = GPU render time of all passes of a separate render from pass 0, after an untimed one-pass warm-up render; setup excluded",
+        "timing": "ms = GPU render time of all passes of a separate render from pass 0, after an untimed one-pass warm-up render; setup excluded; with runs > 1 the median, ms_min and ms_max the least and the most",
         "setup": {
             "pipeline_ms": setup.pipeline_ms,
             "bvh_build_ms": setup.bvh_build_ms,
@@ -639,6 +712,8 @@ fn json(
         "rows": rows.iter().map(|r| serde_json::json!({
             "spp": r.samples,
             "ms": r.ms,
+            "ms_min": r.ms_range.0,
+            "ms_max": r.ms_range.1,
             "rmse": finite(r.rmse),
             "rel_mse": finite(r.rel_mse),
             "psnr_db": finite(r.psnr),
@@ -890,6 +965,7 @@ mod tests {
             spp,
             samples: spp,
             ms,
+            ms_range: (ms, ms),
             rmse,
             rel_mse: rmse * rmse,
             psnr: -20.0 * rmse.log10(),
@@ -905,6 +981,14 @@ mod tests {
         let slope = loglog_slope(&rows).expect("four points");
         assert!((slope + 0.5).abs() < 1e-9, "{slope}");
         assert_eq!(loglog_slope(&rows[..1]), None);
+    }
+
+    #[test]
+    fn median_of_odd_even_and_no_runs() {
+        assert_eq!(median(&[3.0, 1.0, 2.0]), 2.0);
+        assert_eq!(median(&[4.0, 1.0, 3.0, 2.0]), 2.5);
+        assert_eq!(median(&[7.5]), 7.5);
+        assert!(median(&[]).is_nan());
     }
 
     #[test]
