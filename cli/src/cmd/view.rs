@@ -83,7 +83,6 @@ pub struct Args {
     /// While the camera moves: `auto` shows each move at 1/2, 1/4 or 1/8 of the width and height
     /// when a whole pass is slower than 40 ms (the smallest reduction that fits 40 ms), `off`
     /// always at the whole size, a number N (1 to 64) always at 1/N.
-
     #[arg(long, value_name = "auto|off|N", default_value = "auto", value_parser = parse_preview)]
     pub preview: Preview,
 }

@@ -456,8 +456,7 @@ pub fn read_vec4_f32(
     buffers: &BufferSet,
     binding: u32,
 ) -> Result<Vec<[f32; 4]>, DispatchError> {
-    let (buffer, size) = vec4_binding(buffers, binding)?;
-    read_mapped(gpu, buffer, size, vec4s_from)
+    read_vec4_f32_prefix(gpu, buffers, binding, u64::MAX)
 }
 
 /// Reads back the first `count` `vec4<f32>` values of `binding` (fewer when its bound range is

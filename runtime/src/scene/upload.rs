@@ -39,8 +39,8 @@ use super::gpu_types::{element_size, record, struct_size, FrameUniforms, GpuInst
 use super::tables::UniformTables;
 use super::SceneError;
 use crate::gpu::{
-    read_buffer, read_vec4_f32, BindingDesc, BindingKind, BufferError, BufferLimits, BufferSet,
-    Gpu, TileParams, UploadOutcome, UploadStats,
+    read_buffer, read_vec4_f32_prefix, BindingDesc, BindingKind, BufferError, BufferLimits,
+    BufferSet, Gpu, TileParams, UploadOutcome, UploadStats,
 };
 
 /// The runtime's description of an ABI binding (kind and one element as the minimum size).
@@ -345,10 +345,7 @@ impl GpuScene {
 
     /// Reads `accum` back (every bound entry).
     pub fn read_accumulation(&self, gpu: &Gpu) -> Result<Vec<[f32; 4]>, SceneError> {
-        let Some(b) = abi::binding("accum").filter(|_| self.has("accum")) else {
-            return Ok(Vec::new());
-        };
-        Ok(read_vec4_f32(gpu, &self.buffers, b.binding)?)
+        self.read_accumulation_prefix(gpu, u64::MAX)
     }
 
     /// Reads back the first `count` entries of `accum` (a preview's pixels).
@@ -360,12 +357,7 @@ impl GpuScene {
         let Some(b) = abi::binding("accum").filter(|_| self.has("accum")) else {
             return Ok(Vec::new());
         };
-        Ok(crate::gpu::read_vec4_f32_prefix(
-            gpu,
-            &self.buffers,
-            b.binding,
-            count,
-        )?)
+        Ok(read_vec4_f32_prefix(gpu, &self.buffers, b.binding, count)?)
     }
 
     /// Reads the kernel's counters back (zeros when the kernel declares no `counters`).
