@@ -8,7 +8,8 @@
 //!
 //! **How.** Each scene is compiled by `compile_scene_with` (with the wavefront model's stage kernels)
 //! and rendered by the runtime's `Renderer` with both execution models, megakernel and wavefront,
-//! exactly as `rtc render --size WxH --spp N --exec MODEL` does (the same `RenderOptions::size` and `samples` overrides), at
+//! exactly as `rtc render --size WxH --spp N --exec MODEL` does (the same `RenderOptions::size` and `samples` overrides,
+//! and its default `flatten`, so the static objects of a scene share one world-space BVH), at
 //! [`WIDTH`] pixels wide, the height keeping the scene's aspect ratio, with the scene's samples per
 //! pixel capped at [`MAX_SPP`] (the seed is the scene's, so the noise is the same every run). The image
 //! is encoded as the PNG writer does (clamp, sRGB, 8 bits) and compared with the reference's bytes.
@@ -215,6 +216,8 @@ fn run_case(gpu: &Gpu, case: &Case, out_dir: &Path) -> Result<String, String> {
             size: Some([WIDTH, height]),
             samples: Some(spp),
             exec: Some(exec),
+            // As `rtc render` does by default (its `--no-flatten` keeps one BVH per object).
+            flatten: true,
             ..RenderOptions::default()
         };
         let (line, image) = render_case(gpu, case, &compiled, options, &what, out_dir)?;

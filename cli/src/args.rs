@@ -194,6 +194,10 @@ pub struct BvhArgs {
         default_value_t = BvhPreset::Fast
     )]
     pub preset: BvhPreset,
+    /// Keep one BVH per object. By default the static objects that have meshes of their own are
+    /// flattened into one world-space BVH, which traces faster in scenes of many small objects.
+    #[arg(long = "no-flatten")]
+    pub no_flatten: bool,
 }
 
 /// `--exec`, shared by the commands that render (`render`, `bench`, `view`, `watch`).

@@ -133,8 +133,10 @@ fn a_glb_with_camera_and_lights_keeps_them() {
         "{printed}"
     );
     assert!(
-        printed
-            .contains("(6 meshes, 2896 triangles, 7 objects; 6 object BVHs built, 1 scene-level)"),
+        printed.contains(
+            "(6 meshes, 2896 triangles, 7 objects; 6 object BVHs built, 1 scene-level; \
+                       6 static objects flattened into 1 world-space BVH)"
+        ),
         "{printed}"
     );
 }

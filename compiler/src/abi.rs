@@ -135,7 +135,8 @@ pub const NODE: StructDesc = StructDesc {
 pub const INSTANCE: StructDesc = StructDesc {
     name: "GpuInstance",
     doc: "object: world-to-object and object-to-world affine transforms (3 rows each), geometry and material \
-          ids and parameter offsets, flags, and the object's index in the scene",
+          ids and parameter offsets, flags, and the object's index in the scene (in the record of a group of \
+          flattened static objects: the slot of its first member's record)",
     fields: &[
         f("world_to_object_0", FieldType::Vec4F32),
         f("world_to_object_1", FieldType::Vec4F32),

@@ -108,6 +108,11 @@ pub struct RenderOptions {
     /// of storage buffers ([`TablePlacement::Auto`]: on lavapipe before Mesa 26, where it makes
     /// the compile shorter; see `scene::UniformTables`). The image is the same either way.
     pub uniform_tables: TablePlacement,
+    /// Flatten static objects that have meshes of their own into shared world-space BVHs (one
+    /// scene-level leaf for them all; `scene::EntityOptions::flatten`): faster to trace for scenes
+    /// of many small objects. For one-shot renders: moving a flattened object undoes it. The
+    /// image differs only by the rounding of the baked vertices and normals.
+    pub flatten: bool,
 }
 
 /// Why a scene could not be rendered.
@@ -242,6 +247,9 @@ pub struct RenderStats {
     /// Object-level BVH (BLAS) builds so far in this renderer's life, kernel replacements
     /// included (moving objects builds none).
     pub blas_builds: u32,
+    /// Objects flattened into shared world-space BVHs ([`RenderOptions::flatten`]), and those
+    /// BVHs.
+    pub flattened: (u32, u32),
     /// Asset files (meshes, images, glTF files) read so far in this renderer's life.
     pub files_read: u32,
     /// Samples per pixel in the accumulation after these passes.
@@ -653,6 +661,7 @@ impl<'g> Renderer<'g> {
             &EntityOptions {
                 bvh: options.bvh,
                 asset_roots: options.asset_roots.clone(),
+                flatten: options.flatten,
             },
             &mut store,
         )?;
@@ -1200,6 +1209,7 @@ impl<'g> Renderer<'g> {
             uniform_tables: self.scene.tables().names(),
             lights: self.entities.lights().len() as u32,
             blas_builds: store.blas_builds,
+            flattened: (es.flattened_objects, es.flat_bvhs),
             tlas_builds: es.tlas_builds,
             files_read: store.meshes_read + store.images_read + store.models_read,
             accumulated_samples: self.accumulated_samples(),

@@ -30,12 +30,20 @@ use rtc_runtime::image_out::{read_image, write_exr, LinearImage};
 use rtc_runtime::render::{RenderOptions, Renderer};
 
 /// Renders `compiled` (one sample per pixel), round-trips the image through an EXR file in `dir`.
-fn render(gpu: &Gpu, compiled: &CompiledScene, dir: &std::path::Path) -> LinearImage {
+/// With `flatten`, the static objects are flattened into one world-space BVH
+/// (`RenderOptions::flatten`), which must not change what any ray hits.
+fn render(
+    gpu: &Gpu,
+    compiled: &CompiledScene,
+    dir: &std::path::Path,
+    flatten: bool,
+) -> LinearImage {
     let mut renderer = Renderer::new(
         gpu,
         compiled,
         RenderOptions {
             samples: Some(1),
+            flatten,
             ..RenderOptions::default()
         },
     )
@@ -43,10 +51,17 @@ fn render(gpu: &Gpu, compiled: &CompiledScene, dir: &std::path::Path) -> LinearI
     let result = renderer.render(&mut |_, _| {}).expect("render");
     let s = &result.stats;
     eprintln!(
-        "{} rays: pipelines {:.1} ms, render {:.3} ms",
-        s.width, s.pipeline_ms, s.render_ms
+        "{} rays: pipelines {:.1} ms, render {:.3} ms, flattened {:?}",
+        s.width, s.pipeline_ms, s.render_ms, s.flattened
     );
     assert_eq!(s.nonfinite_samples, 0);
+    if flatten {
+        assert!(
+            s.flattened.0 >= 5 && s.flattened.1 == 1,
+            "flattened {:?}",
+            s.flattened
+        );
+    }
     let exr = dir.join("out.exr");
     write_exr(&exr, &result.image).expect("write EXR");
     let back = read_image(&exr).expect("read EXR");
@@ -534,14 +549,20 @@ fn known_rays_hit_what_the_reference_hits() {
     let hand = hand_rays();
     let dir = temp_dir("traversal", "rays");
     let compiled = rays_scene(&hand, RANDOM_RAYS, &objects).compile(&dir);
-    let img = render(&gpu, &compiled, &dir);
-    let (hits, misses) = check(&img, &hand, 0, &objects, true);
-    eprintln!("hand-written rays: {hits} hits and {misses} misses checked");
-    assert!(hits >= 20 && misses >= 6, "{hits} hits, {misses} misses");
-    let random: Vec<TestRay> = (0..RANDOM_RAYS).map(random_ray).collect();
-    let (hits, misses) = check(&img, &random, hand.len() as u32, &objects, false);
-    eprintln!("pseudo-random rays: {hits} hits and {misses} misses checked");
-    assert!(hits >= 100 && misses >= 20, "{hits} hits, {misses} misses");
+    // Without and with the objects flattened into one world-space BVH: the same hits, objects
+    // and triangles.
+    for flatten in [false, true] {
+        let img = render(&gpu, &compiled, &dir, flatten);
+        let (hits, misses) = check(&img, &hand, 0, &objects, true);
+        eprintln!("hand-written rays (flatten {flatten}): {hits} hits and {misses} misses checked");
+        assert!(hits >= 20 && misses >= 6, "{hits} hits, {misses} misses");
+        let random: Vec<TestRay> = (0..RANDOM_RAYS).map(random_ray).collect();
+        let (hits, misses) = check(&img, &random, hand.len() as u32, &objects, false);
+        eprintln!(
+            "pseudo-random rays (flatten {flatten}): {hits} hits and {misses} misses checked"
+        );
+        assert!(hits >= 100 && misses >= 20, "{hits} hits, {misses} misses");
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -572,7 +593,6 @@ fn each_material_id_reaches_its_program() {
         .filter(|t| t.role.name() == "material")
         .count();
     assert_eq!(materials, 4, "Red, Green, Blue and HitProbe are linked");
-    let img = render(&gpu, &compiled, &dir);
     // The probe's triangle: the +z face (triangles 8, 9) at face coordinates u = 0.5, v = 0.35.
     let want: [[f32; 3]; 6] = [
         [3.0, 0.0, 0.0],
@@ -582,9 +602,14 @@ fn each_material_id_reaches_its_program() {
         [9.0, 4.0, 9.0],
         [-1.0; 3],
     ];
-    for (x, (w, r)) in (0u32..).zip(want.iter().zip(&hand)) {
-        let got = img.get(x, 0).expect("pixel");
-        assert_eq!(&got[..3], w, "pixel {x} ({})", r.what);
+    // Flattened, the five cubes share one world-space BVH and each hit still reaches its own
+    // object's material and parameters.
+    for flatten in [false, true] {
+        let img = render(&gpu, &compiled, &dir, flatten);
+        for (x, (w, r)) in (0u32..).zip(want.iter().zip(&hand)) {
+            let got = img.get(x, 0).expect("pixel");
+            assert_eq!(&got[..3], w, "pixel {x} ({}), flatten {flatten}", r.what);
+        }
     }
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -363,6 +363,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
     let base = RenderOptions {
         size: args.scene.image_size(),
         bvh: args.bvh.preset.into(),
+        flatten: !args.bvh.no_flatten,
         asset_roots: roots,
         ..RenderOptions::default()
     };

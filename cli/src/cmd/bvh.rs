@@ -110,6 +110,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         size: args.render.scene.image_size(),
         samples: args.render.spp.samples,
         bvh: args.bvh.preset.into(),
+        flatten: !args.bvh.no_flatten,
         asset_roots: roots,
         ..RenderOptions::default()
     };

@@ -312,6 +312,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         size: args.render.scene.image_size(),
         samples: args.render.spp.samples,
         bvh: args.bvh.preset.into(),
+        flatten: !args.bvh.no_flatten,
         asset_roots,
         exec,
         // A profile of the wavefront stages (README, `rtc render`): any value but empty or `0`.
@@ -628,8 +629,15 @@ pub fn summary(s: &RenderStats, output: &Path) -> String {
         s.samples_per_pass,
         output.display()
     ));
+    let flattened = match s.flattened {
+        (0, _) => String::new(),
+        (objects, bvhs) => format!(
+            "; {objects} static objects flattened into {bvhs} world-space BVH{}",
+            if bvhs == 1 { "" } else { "s" }
+        ),
+    };
     out.push_str(&format!(
-        "  bvh build {:>10.2} ms  ({} mesh{}, {} triangles, {} objects; {} object BVH{} built, {} scene-level)\n",
+        "  bvh build {:>10.2} ms  ({} mesh{}, {} triangles, {} objects; {} object BVH{} built, {} scene-level{flattened})\n",
         s.bvh_build_ms,
         s.meshes,
         if s.meshes == 1 { "" } else { "es" },

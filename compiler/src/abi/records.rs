@@ -168,7 +168,9 @@ pub const TRIANGLE: RecordDesc = RecordDesc {
             name: "v1",
             offset: 1,
             ty: FieldType::Vec4F32,
-            doc: "second vertex in xyz; w = 0",
+            doc: "second vertex in xyz; w = 0, or in a slot of flattened static objects the object's \
+                  index in the group plus one, as bits (its record is the group record's `object` plus that \
+                  index minus one)",
         },
         RecordField {
             name: "v2",

@@ -4,7 +4,8 @@
 //! The records are the ABI's `TRIANGLE` and `ATTRIBUTE` (`rtc_compiler::abi`); `gpu_types.rs`
 //! asserts at compile time that their strides and field offsets are the order written here.
 //! Per triangle slot `s` of a mesh (slot `s` holds triangle `t = bvh.prim_indices()[s]` of the mesh):
-//! - `triangles[3s..3s+3]`: `[v0.xyz, f32::from_bits(t)]`, `[v1.xyz, 0]`, `[v2.xyz, 0]`, object space;
+//! - `triangles[3s..3s+3]`: `[v0.xyz, f32::from_bits(t)]`, `[v1.xyz, 0]`, `[v2.xyz, 0]`, object space
+//!   (`flatten.rs` writes the member tag of a flattened group's slots into `v1.w`);
 //! - `attributes[2s]`: `[oct(n0), oct(n1), oct(n2), f16x2(uv0)]`, `attributes[2s+1]`:
 //!   `[f16x2(uv1), f16x2(uv2), extra, 0]`;
 //! - for a mesh with [`VertexExtras`] only, 3 `VERTEX_EXTRA` entries per slot in `extras`:

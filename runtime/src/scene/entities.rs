@@ -10,8 +10,9 @@
 //!    node), and encode its triangle slots (`encode.rs`);
 //! 4. concatenate the textures' texels;
 //! 5. write `params`: mesh and texture records, then every instance, then the light table;
-//! 6. validate the objects' transforms;
-//! 7. build the TLAS, unless custom-geometry bounds must come from the GPU first
+//! 6. validate the objects' transforms, and with [`EntityOptions::flatten`] build one world-space
+//!    BVH per group of static objects (`flatten.rs`);
+//! 7. build the TLAS (a leaf per object not flattened and one per group), unless custom-geometry bounds must come from the GPU first
 //!    ([`Entities::needs_bounds`]; the GPU stage calls [`Entities::set_custom_bounds`] and then
 //!    [`Entities::rebuild_tlas`]).
 //!
@@ -34,12 +35,13 @@ use rtc_bvh::{build, build_with_params, Aabb, BuildInput, BuildPreset, NodeRecor
 use rtc_compiler::abi;
 use rtc_compiler::link::Linked;
 use rtc_compiler::sema::hir::{
-    Geometry, Instance, Program, ProgramKind, SceneDesc, Settings, StructId,
+    Geometry, Instance, Program, ProgramKind, SceneDesc, Settings, StructId, TrackTarget,
 };
 use rtc_compiler::Span;
 
-use super::assets_cache::{AssetCache, MeshKey};
+use super::assets_cache::AssetCache;
 use super::encode::{encode_mesh, link_extras};
+use super::flatten::{self, FlatGroup};
 use super::gpu_types::{record, FrameUniforms, GpuInstance};
 use super::models;
 use super::params::ParamsBuilder;
@@ -54,6 +56,9 @@ pub struct EntityOptions {
     pub bvh: BuildPreset,
     /// Folders besides the scene's own that its assets may come from (`--asset-root`).
     pub asset_roots: AssetRoots,
+    /// Flatten static objects with meshes of their own into shared world-space BVHs
+    /// (`flatten.rs`): for one-shot renders. Moving a flattened object undoes it.
+    pub flatten: bool,
 }
 
 /// A type id and the word offset of an instance in `params`.
@@ -198,6 +203,15 @@ pub struct ObjectEntity {
     pub inverse: Mat4,
 }
 
+/// An entry of the scene-level BVH.
+#[derive(Clone, Copy, Debug)]
+enum Entry {
+    /// An object with its own BVH (or custom geometry).
+    Object(usize),
+    /// A group of flattened objects (index into `Entities::flat`).
+    Group(usize),
+}
+
 /// A light: type id and parameters (world space; lights have no transform).
 pub type LightEntity = TypedOffset;
 
@@ -241,6 +255,10 @@ pub struct EntityStats {
     pub max_blas_depth: u32,
     /// Depth of the TLAS.
     pub tlas_depth: u32,
+    /// Objects now flattened into shared world-space BVHs ([`EntityOptions::flatten`]).
+    pub flattened_objects: u32,
+    /// Those shared BVHs.
+    pub flat_bvhs: u32,
 }
 
 /// The scene's entities: everything the GPU stage uploads, as plain data.
@@ -276,6 +294,8 @@ pub struct Entities {
     dirty: Dirty,
     /// The objects glTF node animations move (object indices into `objects`).
     motions: Vec<models::ModelMotion>,
+    /// Groups of flattened static objects (`flatten.rs`), each one scene-level leaf.
+    flat: Vec<FlatGroup>,
 }
 
 static NEXT_VERSION: AtomicU64 = AtomicU64::new(1);
@@ -389,12 +409,8 @@ fn changed_ranges(old: &[u32], new: &[u32]) -> Vec<std::ops::Range<usize>> {
     out
 }
 
-/// Builds, quantises and encodes the object-level BVH of one mesh.
-fn build_mesh(
-    key: &MeshKey,
-    data: &MeshData,
-    preset: BuildPreset,
-) -> Result<BuiltMesh, SceneError> {
+/// Builds, quantises and encodes the object-level BVH of one mesh (`name` for errors).
+fn build_mesh(name: &str, data: &MeshData, preset: BuildPreset) -> Result<BuiltMesh, SceneError> {
     let vertices: &[Vec3] = bytemuck::cast_slice(&data.positions);
     let bvh = build(
         BuildInput::Indexed {
@@ -404,7 +420,7 @@ fn build_mesh(
         preset,
     );
     let quantized = quantize(&bvh).map_err(|source| SceneError::MeshLayout {
-        mesh: key.describe(),
+        mesh: name.to_string(),
         source,
     })?;
     let mut records = Vec::with_capacity(quantized.record_count());
@@ -507,7 +523,7 @@ impl Entities {
             let built = match cache.store.blas(key, options.bvh, *version) {
                 Some(built) => built,
                 None => {
-                    let built = Arc::new(build_mesh(key, data, options.bvh)?);
+                    let built = Arc::new(build_mesh(&key.describe(), data, options.bvh)?);
                     stats.blas_builds += 1;
                     cache
                         .store
@@ -538,15 +554,6 @@ impl Entities {
                 with_extras.push((start..attributes.len(), built));
             }
         }
-        // Extras go after every slot's records (`encode::link_extras`).
-        for (range, built) in with_extras {
-            let base = to_u32("attribute records", attributes.len())?;
-            if let Some(records) = attributes.get_mut(range) {
-                link_extras(records, base);
-            }
-            attributes.extend_from_slice(&built.extras);
-        }
-        let blas_nodes = to_u32("BVH nodes", nodes.len())?;
         to_u32("triangle slots", triangles.len())?;
         stats.blas_ms = ms_since(start);
         if stats.max_blas_depth > linked.config.blas_stack {
@@ -691,6 +698,85 @@ impl Entities {
         let medium_table = params.offset()?;
         stats.pack_ms = ms_since(start);
 
+        // 3b. Static objects flattened into shared BVHs, after every mesh's BVH.
+        let mut flat = Vec::new();
+        if options.flatten {
+            let start = Instant::now();
+            let moved: Vec<usize> = scene
+                .animation
+                .iter()
+                .filter_map(|t| match t.target {
+                    TrackTarget::Object(i) => Some(i),
+                    _ => None,
+                })
+                .chain(motions.iter().map(|m| m.object))
+                .collect();
+            let candidates: Vec<flatten::Candidate> = objects
+                .iter()
+                .enumerate()
+                .map(|(i, o)| flatten::Candidate {
+                    mesh: match o.geometry {
+                        ObjectGeometry::Mesh { mesh } => {
+                            cache.meshes.get(mesh).map(|(_, data, _)| (mesh, &**data))
+                        }
+                        ObjectGeometry::Custom { .. } => None,
+                    },
+                    flags: o.flags,
+                    transform: o.transform,
+                    moves: moved.contains(&i),
+                })
+                .collect();
+            for (flags, members) in flatten::plan(&candidates) {
+                let inputs: Vec<(&MeshData, Mat4)> = members
+                    .iter()
+                    .filter_map(|&i| {
+                        let c = candidates.get(i)?;
+                        Some((c.mesh?.1, c.transform))
+                    })
+                    .collect();
+                let built = flatten::build_group(&inputs, |merged| {
+                    build_mesh("the flattened static objects", merged, options.bvh)
+                })?;
+                stats.max_blas_depth = stats.max_blas_depth.max(built.depth);
+                let group = FlatGroup {
+                    members,
+                    flags,
+                    node_base: to_u32("BVH nodes", nodes.len())?,
+                    triangle_base: to_u32(
+                        "triangle slots",
+                        triangles.len() / record::TRIANGLE_VEC4S,
+                    )?,
+                    bounds: built.bounds,
+                };
+                nodes.extend_from_slice(&built.records);
+                triangles.extend_from_slice(&built.triangles);
+                attributes.extend_from_slice(&built.attributes);
+                to_u32("triangle slots", triangles.len())?;
+                to_u32("attribute records", attributes.len())?;
+                flat.push(group);
+            }
+            stats.blas_ms += ms_since(start);
+        }
+        // Extras go after every slot's records, the flattened groups' included (`encode::link_extras`).
+        for (range, built) in with_extras {
+            let base = to_u32("attribute records", attributes.len())?;
+            if let Some(records) = attributes.get_mut(range) {
+                link_extras(records, base);
+            }
+            attributes.extend_from_slice(&built.extras);
+        }
+        if stats.max_blas_depth > linked.config.blas_stack && !flat.is_empty() {
+            let warning = format!(
+                "a mesh BVH is {} levels deep, deeper than the kernel's traversal stack ({}): \
+                 some triangles may be missed",
+                stats.max_blas_depth, linked.config.blas_stack
+            );
+            if !warnings.contains(&warning) {
+                warnings.push(warning);
+            }
+        }
+        let blas_nodes = to_u32("BVH nodes", nodes.len())?;
+
         let v = next_version();
         let mut entities = Entities {
             scene_name: scene.name.clone(),
@@ -728,6 +814,7 @@ impl Entities {
             warnings,
             dirty: Dirty::default(),
             motions,
+            flat,
         };
         if !entities.needs_bounds() {
             entities.rebuild_tlas()?;
@@ -796,6 +883,11 @@ impl Entities {
         })?;
         obj.transform = transform;
         obj.inverse = inverse;
+        // A flattened object that moves undoes the flattening: every object gets its own BVH
+        // (kept from the build) back, and the groups' records are left unused.
+        if self.flat.iter().any(|g| g.members.contains(&object)) {
+            self.flat.clear();
+        }
         self.tlas_stale = true;
         Ok(())
     }
@@ -1052,7 +1144,30 @@ impl Entities {
             return Err(SceneError::MissingBounds { object });
         }
         let start = Instant::now();
-        let boxes: Vec<Aabb> = self.objects.iter().map(|o| self.world_box(o)).collect();
+        // The scene level's entries: every object not flattened, then each flattened group.
+        let mut flattened = vec![false; self.objects.len()];
+        for g in &self.flat {
+            for &m in &g.members {
+                if let Some(f) = flattened.get_mut(m) {
+                    *f = true;
+                }
+            }
+        }
+        let mut entries: Vec<Entry> = (0..self.objects.len())
+            .filter(|&i| !flattened.get(i).copied().unwrap_or(false))
+            .map(Entry::Object)
+            .collect();
+        entries.extend((0..self.flat.len()).map(Entry::Group));
+        let boxes: Vec<Aabb> = entries
+            .iter()
+            .map(|e| match *e {
+                Entry::Object(o) => self
+                    .objects
+                    .get(o)
+                    .map_or(Aabb::EMPTY, |o| self.world_box(o)),
+                Entry::Group(g) => self.flat.get(g).map_or(Aabb::EMPTY, |g| g.bounds),
+            })
+            .collect();
         // One object per leaf: the kernel's scene-level leaf step tests `a` alone.
         let tlas = build_with_params(BuildInput::Aabbs(&boxes), &self.preset.single_leaf_params());
         self.stats.tlas_builds += 1;
@@ -1078,11 +1193,51 @@ impl Entities {
         } else {
             None
         };
-        let order = tlas.prim_indices().to_vec();
-        self.instances = order
-            .iter()
-            .map(|&o| self.instance_record(o as usize))
-            .collect();
+        // Slots: the scene-level leaves in leaf order, then the flattened groups' members
+        // (group by group, in tag order), whose records a group's `object` points at.
+        let leaves = tlas.prim_indices().len();
+        let mut first_member = Vec::with_capacity(self.flat.len());
+        let mut next = leaves;
+        for g in &self.flat {
+            first_member.push(next);
+            next += g.members.len();
+        }
+        to_u32("objects", next)?;
+        let mut order = Vec::with_capacity(next);
+        let mut instances = Vec::with_capacity(next);
+        for &e in tlas.prim_indices() {
+            match entries.get(e as usize) {
+                Some(&Entry::Object(o)) => {
+                    order.push(o as u32);
+                    instances.push(self.instance_record(o));
+                }
+                Some(&Entry::Group(g)) => {
+                    order.push(u32::MAX);
+                    let first = first_member.get(g).copied().unwrap_or(0) as u32;
+                    instances.push(match self.flat.get(g) {
+                        Some(group) => flatten::group_record(group, first),
+                        None => GpuInstance::default(),
+                    });
+                }
+                None => {
+                    order.push(u32::MAX);
+                    instances.push(GpuInstance::default());
+                }
+            }
+        }
+        for g in &self.flat {
+            for &m in &g.members {
+                order.push(m as u32);
+                instances.push(GpuInstance {
+                    world_to_object: flatten::IDENTITY_ROWS,
+                    object_to_world: flatten::IDENTITY_ROWS,
+                    ..self.instance_record(m)
+                });
+            }
+        }
+        self.instances = instances;
+        self.stats.flattened_objects = self.flat.iter().map(|g| g.members.len() as u32).sum();
+        self.stats.flat_bvhs = self.flat.len() as u32;
 
         // The medium table lists instance slots, which follow the TLAS order.
         let mut slot_of = vec![u32::MAX; self.objects.len()];

@@ -74,7 +74,7 @@ pub struct FrameUniforms {
 /// | 112 | `blas_root` | index in `nodes` of the mesh BVH's header record (`rtc_bvh::quantized`; 0 for custom geometry) |
 /// | 116 | `triangle_offset` | first triangle slot of the mesh in `triangles` (0 for custom geometry) |
 /// | 120 | `flags` | [`GpuInstance::FLAG_ANY_HIT`], [`GpuInstance::FLAG_SECONDARY_RAYS`], [`GpuInstance::FLAG_MEDIUM`], [`GpuInstance::FLAG_CULL_BACK`] |
-/// | 124 | `object` | the object's index in the scene (scene `object` entries in order, then model instances) |
+/// | 124 | `object` | the object's index in the scene (scene `object` entries in order, then model instances); in a flattened group's record, the slot of its first member's record |
 #[repr(C, align(16))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
 pub struct GpuInstance {

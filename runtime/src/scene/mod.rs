@@ -34,7 +34,9 @@
 //!   (BLAS) per distinct mesh, in order of first use, **built once per mesh and shared by all
 //!   objects using it**; then the scene-level BVH (TLAS) over the objects' world-space boxes, **one
 //!   object per leaf** (built with `BuildPreset::single_leaf_params`; the kernel tests a TLAS
-//!   leaf's object without a loop). A BVH whose first record is at index `base` has its header
+//!   leaf's object without a loop). With [`EntityOptions::flatten`], the BVHs of the groups of
+//!   flattened static objects (`flatten.rs`) follow the meshes' and come before the TLAS. A BVH
+//!   whose first record is at index `base` has its header
 //!   (quantisation frame and root reference) at `base` and its inner-node record `r` at
 //!   `base + r`. The TLAS comes last so that rebuilding it (its record count may change) never
 //!   moves a BLAS. `FrameUniforms.tlas_root` is the TLAS's header.
@@ -45,10 +47,14 @@
 //!   first triangle slot; `flags` the material's `FLAG_*`; `object` the scene `object` entries in
 //!   order, then model instances. An object whose world box is empty or not finite (an empty mesh,
 //!   invalid custom bounds) is left out of the TLAS and therefore of this array; `object` keeps its
-//!   index.
+//!   index. A group of flattened objects is one TLAS leaf whose record has identity transforms,
+//!   the group's BVH and in `object` the slot of its first member; the members' records (identity
+//!   transforms, their own materials, flags and `object`) follow every TLAS slot, group by group.
 //! - **`triangles`** and **`attributes`**: one `TRIANGLE` and one `ATTRIBUTE` record per triangle
 //!   slot, per mesh in BLAS leaf order from the mesh's `slot_base` (see `encode.rs`). Slots, not
-//!   triangles: with the `quality` preset's spatial splits a triangle may occupy several slots.
+//!   triangles: with the `quality` preset's spatial splits a triangle may occupy several slots. A
+//!   slot's `v1.w` is 0, except in a flattened group's slots, where it is the member's index in the
+//!   group plus one (the kernel then reports the hit on the member's record).
 //! - **`params`** (`u32` words), in this order: a `MESH` record for every `mesh` value and a
 //!   `TEXTURE` record for every `texture` value of the scene, whose word offsets are what
 //!   `layout::Handles` gives the packer; then every role-struct instance (camera, background,
@@ -91,6 +97,7 @@ mod assets_cache;
 mod encode;
 mod entities;
 mod fields;
+mod flatten;
 mod gpu_types;
 mod models;
 mod params;

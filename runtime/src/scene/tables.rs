@@ -123,7 +123,10 @@ impl UniformTables {
         };
         let node_bytes =
             (blas_records + objects + 1) * std::mem::size_of::<rtc_bvh::NodeRecord>() as u64;
-        let instance_bytes = objects * std::mem::size_of::<GpuInstance>() as u64;
+        // A record per object, and one per group of flattened objects (`flatten.rs`; moving one
+        // of them only drops groups).
+        let records = objects + u64::from(entities.stats().flat_bvhs);
+        let instance_bytes = records * std::mem::size_of::<GpuInstance>() as u64;
         Self::of(
             node_bytes <= u64::from(UNIFORM_TABLE_BYTES),
             instance_bytes <= u64::from(UNIFORM_TABLE_BYTES),

@@ -309,26 +309,34 @@ fn trace(e: &Entities, origin: Vec3, dir: Vec3) -> Option<(u32, u32, f32)> {
             tmin: 0.0,
             tmax: t_max,
         };
-        let mesh = e
-            .meshes()
-            .iter()
-            .find(|m| m.node_base == inst.blas_root)
-            .expect("the instance's mesh");
-        let records = &nodes[inst.blas_root as usize..][..mesh.node_count as usize];
-        let blas = QuantizedBvh::from_records(records).expect("header");
+        // A BVH's records are addressed from its header; those after it are never reached.
+        let blas = QuantizedBvh::from_records(&nodes[inst.blas_root as usize..]).expect("header");
+        // The first `triangles` entry of the last slot hit (the closest: each hit lowers `t_max`).
+        let mut slot_of_hit = 0;
         let h = closest_hit_quantized_with(&blas, &ray, |s, r, tm| {
             let k = (inst.triangle_offset + s) as usize * 3;
             let v = |i: usize| Vec3::from_slice(&tris[k + i][..3]);
-            intersect_triangle(r, &[v(0), v(1), v(2)], tm).map(|(t, u, v)| Hit {
+            let hit = intersect_triangle(r, &[v(0), v(1), v(2)], tm).map(|(t, u, v)| Hit {
                 t,
                 u,
                 v,
                 prim: tris[k][3].to_bits(),
-            })
+            });
+            if hit.is_some() {
+                slot_of_hit = k;
+            }
+            hit
         })?;
-        triangle_of[inst.object as usize] = h.prim;
+        // As the kernel's `intersect_mesh`: a flattened object's slot names its member record.
+        let tag = tris[slot_of_hit + 1][3].to_bits();
+        let owner = if tag == 0 {
+            inst
+        } else {
+            e.instances()[(inst.object + tag - 1) as usize]
+        };
+        triangle_of[owner.object as usize] = h.prim;
         Some(Hit {
-            prim: inst.object,
+            prim: owner.object,
             ..h
         })
     })?;
@@ -397,6 +405,122 @@ fn instance_slots_follow_the_tlas_leaf_order() {
         }
         assert_eq!(trace(&e, Vec3::new(2.0, 10.0, 0.0), -Vec3::Y), None);
     }
+}
+
+fn build_flat(p: &Program, l: &Linked) -> Entities {
+    Entities::build(
+        p,
+        &p.scenes[l.scene],
+        l,
+        &EntityOptions {
+            flatten: true,
+            ..EntityOptions::default()
+        },
+    )
+    .expect("entities")
+}
+
+#[test]
+fn static_objects_are_flattened_into_one_world_space_bvh_that_reports_each_object() {
+    // Six cubes (one shared 12-triangle mesh) and a mirrored seventh, which keeps its own BVH.
+    let text = cube_row(6).replace(
+        "}\n}",
+        "}\n    object mirrored { geometry: cube_mesh(), material: Lambert {}, \
+         transform: translate(vec3f(0.0, 8.0, 0.0)) * scale(vec3f(-1.0, 1.0, 1.0)) }\n}",
+    );
+    let (p, l) = compile(&text);
+    let plain = build_entities(&p, &l);
+    let mut e = build_flat(&p, &l);
+    assert_eq!(e.objects().len(), 7);
+    assert_eq!((e.stats().flattened_objects, e.stats().flat_bvhs), (6, 1));
+    // Two scene-level leaves (the group and the mirrored cube), then the group's six members.
+    assert_eq!(e.instances().len(), 2 + 6);
+    let order = e.tlas_order().expect("TLAS").to_vec();
+    assert_eq!(&order[2..], &[0, 1, 2, 3, 4, 5]);
+    let group = order
+        .iter()
+        .position(|&o| o == u32::MAX)
+        .expect("a group slot");
+    assert_eq!(
+        e.instances()[group].object,
+        2,
+        "the group points at its first member's record"
+    );
+    assert!(
+        order[..2].contains(&6),
+        "the mirrored cube has a leaf of its own"
+    );
+    for (k, inst) in e.instances()[2..].iter().enumerate() {
+        assert_eq!(inst.object, k as u32);
+        assert_eq!(
+            inst.world_to_object,
+            [
+                [1.0, 0.0, 0.0, 0.0],
+                [0.0, 1.0, 0.0, 0.0],
+                [0.0, 0.0, 1.0, 0.0]
+            ]
+        );
+        assert_eq!(inst.object_to_world, inst.world_to_object);
+        let own = plain
+            .instances()
+            .iter()
+            .find(|i| i.object == k as u32)
+            .expect("object");
+        assert_eq!(
+            (inst.material_type, inst.material_offset),
+            (own.material_type, own.material_offset)
+        );
+    }
+    // Every ray finds the object and the mesh triangle it finds without flattening, at the same
+    // distance up to the rounding of the baked vertices.
+    let mut rays = Vec::new();
+    for i in 0..7 {
+        let target = if i == 6 {
+            Vec3::new(0.3, 8.2, 0.1)
+        } else {
+            Vec3::new(4.0 * i as f32 + 0.2, 0.1, -0.15)
+        };
+        rays.push((
+            target + Vec3::new(0.0, 0.0, 10.0),
+            Vec3::new(0.0, 0.0, -1.0),
+        ));
+        rays.push((
+            target + Vec3::new(0.0, 10.0, 0.0),
+            Vec3::new(0.0, -1.0, 0.0),
+        ));
+    }
+    for (origin, dir) in rays {
+        let a = trace(&plain, origin, dir).expect("a hit without flattening");
+        let b = trace(&e, origin, dir).expect("a hit with flattening");
+        assert_eq!((a.0, a.1), (b.0, b.1), "object and triangle from {origin}");
+        assert!((a.2 - b.2).abs() <= 1e-5 * a.2, "t {} against {}", a.2, b.2);
+    }
+
+    // Moving a flattened cube undoes the flattening: every object has its leaf again, no BVH is
+    // built, and the moved cube is found where it went.
+    let blas = e.stats().blas_builds;
+    e.set_transform(3, Mat4::from_translation(Vec3::new(12.0, 5.0, 0.0)))
+        .expect("move");
+    assert!(e.refresh().expect("TLAS"));
+    assert_eq!(e.stats().blas_builds, blas);
+    assert_eq!((e.stats().flattened_objects, e.stats().flat_bvhs), (0, 0));
+    assert_eq!(e.instances().len(), 7);
+    let hit = trace(&e, Vec3::new(12.2, 5.1, 10.0), Vec3::new(0.0, 0.0, -1.0)).expect("moved cube");
+    assert_eq!(hit.0, 3);
+    assert!(trace(&e, Vec3::new(12.2, 0.1, 10.0), Vec3::new(0.0, 0.0, -1.0)).is_none());
+}
+
+#[test]
+fn flattening_leaves_out_what_must_keep_its_own_bvh() {
+    // One object alone is no group, and neither is an object that an animation moves.
+    let (p, l) = compile(&cube_row(1));
+    assert_eq!(build_flat(&p, &l).stats().flattened_objects, 0);
+    let text = cube_row(3).replace("}\n}", "}\n    animate o1 move(vec3f(0.0, 1.0, 0.0))\n}");
+    let (p, l) = compile(&text);
+    let e = build_flat(&p, &l);
+    assert_eq!(e.stats().flattened_objects, 2);
+    let order = e.tlas_order().expect("TLAS");
+    assert_eq!(&order[order.len() - 2..], &[0, 2]);
 }
 
 #[test]

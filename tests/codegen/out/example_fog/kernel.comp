@@ -710,8 +710,8 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
             bool loop_init = true;
             while(true) {
                 if (!loop_init) {
-                    uint _e59 = k;
-                    k = (_e59 + 1u);
+                    uint _e75 = k;
+                    k = (_e75 + 1u);
                 }
                 loop_init = false;
                 uint _e37 = k;
@@ -724,66 +724,69 @@ Candidate intersect_mesh(GpuInstance inst_5, uint slot_2, Ray world_ray, Ray ray
                 vec3 _e46 = hit_triangle(_e9, prim, ray_7.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < uintBitsToFloat(_e49))) {
-                    Candidate c_5 = Candidate(_e46.x, slot_2, prim, _e46.yz, vec3(0.0));
-                    bool _e57 = accept(inst_5, world_ray, c_5);
-                    if (_e57) {
+                    vec4 _e58 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
+                    uint tag = floatBitsToUint(_e58.w);
+                    uint owner = ((tag != 0u) ? ((inst_5.object + tag) - 1u) : slot_2);
+                    Candidate c_5 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0.0));
+                    bool _e73 = accept(inst_5, world_ray, c_5);
+                    if (_e73) {
                         best = c_5;
                         if (shadow) {
-                            Candidate _e58 = best;
-                            return _e58;
+                            Candidate _e74 = best;
+                            return _e74;
                         }
                     }
                 }
             }
         } else {
-            uint _e62 = child;
-            GpuNode n_6 = _group_0_binding_2_cs[(base_1 + _e62)];
-            float _e68 = best.t;
-            vec2 _e69 = children_entry(n_6, origin_4, scale_2, ray_7, _e8, _e68);
-            float tl = _e69.x;
-            float tr = _e69.y;
-            uint _e73 = F32_INF;
-            uint _e77 = F32_INF;
-            if (((tl < uintBitsToFloat(_e73)) && (tr < uintBitsToFloat(_e77)))) {
+            uint _e78 = child;
+            GpuNode n_6 = _group_0_binding_2_cs[(base_1 + _e78)];
+            float _e84 = best.t;
+            vec2 _e85 = children_entry(n_6, origin_4, scale_2, ray_7, _e8, _e84);
+            float tl = _e85.x;
+            float tr = _e85.y;
+            uint _e89 = F32_INF;
+            uint _e93 = F32_INF;
+            if (((tl < uintBitsToFloat(_e89)) && (tr < uintBitsToFloat(_e93)))) {
                 near = n_6.a;
                 far = n_6.b;
                 if (((tr < tl) != shadow)) {
                     near = n_6.b;
                     far = n_6.a;
                 }
-                uint _e89 = sp_1;
-                if ((_e89 < BLAS_STACK)) {
-                    uint _e93 = sp_1;
-                    uint _e95 = far;
-                    traversal_stack[min((TLAS_STACK + _e93), 73u)] = _e95;
-                    uint _e100 = sp_1;
-                    sp_1 = (_e100 + 1u);
+                uint _e105 = sp_1;
+                if ((_e105 < BLAS_STACK)) {
+                    uint _e109 = sp_1;
+                    uint _e111 = far;
+                    traversal_stack[min((TLAS_STACK + _e109), 73u)] = _e111;
+                    uint _e116 = sp_1;
+                    sp_1 = (_e116 + 1u);
                 }
-                uint _e103 = near;
-                child = _e103;
+                uint _e119 = near;
+                child = _e119;
                 continue;
             }
-            uint _e105 = F32_INF;
-            if ((tl < uintBitsToFloat(_e105))) {
+            uint _e121 = F32_INF;
+            if ((tl < uintBitsToFloat(_e121))) {
                 child = n_6.a;
                 continue;
             }
-            uint _e110 = F32_INF;
-            if ((tr < uintBitsToFloat(_e110))) {
+            uint _e126 = F32_INF;
+            if ((tr < uintBitsToFloat(_e126))) {
                 child = n_6.b;
                 continue;
             }
         }
-        uint _e115 = sp_1;
-        uvec2 _e116 = pop(TLAS_STACK, _e115);
-        if ((_e116.x == NO_HIT)) {
+        uint _e131 = sp_1;
+        uvec2 _e132 = pop(TLAS_STACK, _e131);
+        if ((_e132.x == NO_HIT)) {
             break;
         }
-        child = _e116.x;
-        sp_1 = _e116.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    Candidate _e122 = best;
-    return _e122;
+    Candidate _e138 = best;
+    return _e138;
 }
 
 Candidate intersect_object(uint slot_3, Ray ray_8, Candidate best_1, bool shadow_1) {

@@ -683,8 +683,8 @@ Candidate intersect_mesh(
                 if (metal::all(loop_bound_1 == uint2(0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e59 = k;
-                    k = _e59 + 1u;
+                    uint _e75 = k;
+                    k = _e75 + 1u;
                 }
                 loop_init = false;
                 uint _e37 = k;
@@ -697,66 +697,69 @@ Candidate intersect_mesh(
                 metal::float3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45, F32_INF, triangles, _buffer_sizes);
                 uint _e49 = F32_INF;
                 if (_e46.x < as_type<float>(_e49)) {
-                    Candidate c_5 = Candidate {_e46.x, slot_1, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e57 = accept(inst_2, world_ray, c_5);
-                    if (_e57) {
+                    metal::float4 _e58 = triangles[(prim * 3u) + 1u];
+                    uint tag = as_type<uint>(_e58.w);
+                    uint owner = (tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1;
+                    Candidate c_5 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e73 = accept(inst_2, world_ray, c_5);
+                    if (_e73) {
                         best = c_5;
                         if (shadow) {
-                            Candidate _e58 = best;
-                            return _e58;
+                            Candidate _e74 = best;
+                            return _e74;
                         }
                     }
                 }
             }
         } else {
-            uint _e62 = child;
-            GpuNode n_6 = nodes[base_1 + _e62];
-            float _e68 = best.t;
-            metal::float2 _e69 = children_entry(n_6, origin_4, scale_2, ray_4, _e8, _e68, F32_INF);
-            float tl = _e69.x;
-            float tr = _e69.y;
-            uint _e73 = F32_INF;
-            uint _e77 = F32_INF;
-            if ((tl < as_type<float>(_e73)) && (tr < as_type<float>(_e77))) {
+            uint _e78 = child;
+            GpuNode n_6 = nodes[base_1 + _e78];
+            float _e84 = best.t;
+            metal::float2 _e85 = children_entry(n_6, origin_4, scale_2, ray_4, _e8, _e84, F32_INF);
+            float tl = _e85.x;
+            float tr = _e85.y;
+            uint _e89 = F32_INF;
+            uint _e93 = F32_INF;
+            if ((tl < as_type<float>(_e89)) && (tr < as_type<float>(_e93))) {
                 near = n_6.a;
                 far = n_6.b;
                 if ((tr < tl) != shadow) {
                     near = n_6.b;
                     far = n_6.a;
                 }
-                uint _e89 = sp_1;
-                if (_e89 < BLAS_STACK) {
-                    uint _e93 = sp_1;
-                    uint _e95 = far;
-                    traversal_stack.inner[metal::min(TLAS_STACK + _e93, 65u)] = _e95;
-                    uint _e100 = sp_1;
-                    sp_1 = _e100 + 1u;
+                uint _e105 = sp_1;
+                if (_e105 < BLAS_STACK) {
+                    uint _e109 = sp_1;
+                    uint _e111 = far;
+                    traversal_stack.inner[metal::min(TLAS_STACK + _e109, 65u)] = _e111;
+                    uint _e116 = sp_1;
+                    sp_1 = _e116 + 1u;
                 }
-                uint _e103 = near;
-                child = _e103;
+                uint _e119 = near;
+                child = _e119;
                 continue;
             }
-            uint _e105 = F32_INF;
-            if (tl < as_type<float>(_e105)) {
+            uint _e121 = F32_INF;
+            if (tl < as_type<float>(_e121)) {
                 child = n_6.a;
                 continue;
             }
-            uint _e110 = F32_INF;
-            if (tr < as_type<float>(_e110)) {
+            uint _e126 = F32_INF;
+            if (tr < as_type<float>(_e126)) {
                 child = n_6.b;
                 continue;
             }
         }
-        uint _e115 = sp_1;
-        metal::uint2 _e116 = pop(TLAS_STACK, _e115, traversal_stack);
-        if (_e116.x == NO_HIT) {
+        uint _e131 = sp_1;
+        metal::uint2 _e132 = pop(TLAS_STACK, _e131, traversal_stack);
+        if (_e132.x == NO_HIT) {
             break;
         }
-        child = _e116.x;
-        sp_1 = _e116.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    Candidate _e122 = best;
-    return _e122;
+    Candidate _e138 = best;
+    return _e138;
 }
 
 Candidate intersect_object(

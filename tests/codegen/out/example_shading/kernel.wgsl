@@ -568,70 +568,73 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
                 let _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
                 let _e49 = F32_INF;
                 if (_e46.x < bitcast<f32>(_e49)) {
-                    let c_7 = Candidate(_e46.x, slot_1, prim, _e46.yz, vec3(0f));
-                    let _e57 = accept(inst_2, world_ray, c_7);
-                    if _e57 {
+                    let _e58 = triangles[((prim * 3u) + 1u)];
+                    let tag = bitcast<u32>(_e58.w);
+                    let owner = select(slot_1, ((inst_2.object + tag) - 1u), (tag != 0u));
+                    let c_7 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
+                    let _e73 = accept(inst_2, world_ray, c_7);
+                    if _e73 {
                         best = c_7;
                         if shadow {
-                            let _e58 = best;
-                            return _e58;
+                            let _e74 = best;
+                            return _e74;
                         }
                     }
                 }
                 continuing {
-                    let _e59 = k;
-                    k = (_e59 + 1u);
+                    let _e75 = k;
+                    k = (_e75 + 1u);
                 }
             }
         } else {
-            let _e62 = child;
-            let n_7 = nodes[(base_1 + _e62)];
-            let _e68 = best.t;
-            let _e69 = children_entry(n_7, origin_4, scale_2, ray_4, _e8, _e68);
-            let tl = _e69.x;
-            let tr = _e69.y;
-            let _e73 = F32_INF;
-            let _e77 = F32_INF;
-            if ((tl < bitcast<f32>(_e73)) && (tr < bitcast<f32>(_e77))) {
+            let _e78 = child;
+            let n_7 = nodes[(base_1 + _e78)];
+            let _e84 = best.t;
+            let _e85 = children_entry(n_7, origin_4, scale_2, ray_4, _e8, _e84);
+            let tl = _e85.x;
+            let tr = _e85.y;
+            let _e89 = F32_INF;
+            let _e93 = F32_INF;
+            if ((tl < bitcast<f32>(_e89)) && (tr < bitcast<f32>(_e93))) {
                 near = n_7.a;
                 far = n_7.b;
                 if ((tr < tl) != shadow) {
                     near = n_7.b;
                     far = n_7.a;
                 }
-                let _e89 = sp_1;
-                if (_e89 < BLAS_STACK) {
-                    let _e93 = sp_1;
-                    let _e95 = far;
-                    traversal_stack[min((TLAS_STACK + _e93), 66u)] = _e95;
-                    let _e100 = sp_1;
-                    sp_1 = (_e100 + 1u);
+                let _e105 = sp_1;
+                if (_e105 < BLAS_STACK) {
+                    let _e109 = sp_1;
+                    let _e111 = far;
+                    traversal_stack[min((TLAS_STACK + _e109), 66u)] = _e111;
+                    let _e116 = sp_1;
+                    sp_1 = (_e116 + 1u);
                 }
-                let _e103 = near;
-                child = _e103;
+                let _e119 = near;
+                child = _e119;
                 continue;
             }
-            let _e105 = F32_INF;
-            if (tl < bitcast<f32>(_e105)) {
+            let _e121 = F32_INF;
+            if (tl < bitcast<f32>(_e121)) {
                 child = n_7.a;
                 continue;
             }
-            let _e110 = F32_INF;
-            if (tr < bitcast<f32>(_e110)) {
+            let _e126 = F32_INF;
+            if (tr < bitcast<f32>(_e126)) {
                 child = n_7.b;
                 continue;
             }
         }
-        let _e115 = sp_1;
-        let _e116 = pop(TLAS_STACK, _e115);
-        if (_e116.x == NO_HIT) {
+        let _e131 = sp_1;
+        let _e132 = pop(TLAS_STACK, _e131);
+        if (_e132.x == NO_HIT) {
             break;
         }
-        child = _e116.x;
-        sp_1 = _e116.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    let _e122 = best;
-    return _e122;
+    let _e138 = best;
+    return _e138;
 }
 
 fn intersect_object(slot_2: u32, ray_5: Ray, best_1: Candidate, shadow_1: bool) -> Candidate {

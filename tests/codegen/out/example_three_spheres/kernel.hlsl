@@ -700,8 +700,8 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
                 loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
                 if (!loop_init) {
-                    uint _e59 = k;
-                    k = (_e59 + 1u);
+                    uint _e75 = k;
+                    k = (_e75 + 1u);
                 }
                 loop_init = false;
                 uint _e37 = k;
@@ -714,67 +714,70 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                 const float3 _e46 = hit_triangle(_e9, prim, ray_4.tmin, _e45);
                 uint _e49 = F32_INF;
                 if ((_e46.x < asfloat(_e49))) {
-                    Candidate c_6 = ConstructCandidate(_e46.x, slot_1, prim, _e46.yz, (0.0).xxx);
-                    const bool _e57 = accept(inst_2, world_ray, c_6);
-                    if (_e57) {
+                    float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
+                    uint tag = asuint(_e58.w);
+                    uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
+                    Candidate c_6 = ConstructCandidate(_e46.x, owner, prim, _e46.yz, (0.0).xxx);
+                    const bool _e73 = accept(inst_2, world_ray, c_6);
+                    if (_e73) {
                         best = c_6;
                         if (shadow) {
-                            Candidate _e58 = best;
-                            const Candidate candidate_1 = _e58;
+                            Candidate _e74 = best;
+                            const Candidate candidate_1 = _e74;
                             return candidate_1;
                         }
                     }
                 }
             }
         } else {
-            uint _e62 = child;
-            GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e62)*32+0)), asuint(nodes.Load((base_1 + _e62)*32+12)), asfloat(nodes.Load3((base_1 + _e62)*32+16)), asuint(nodes.Load((base_1 + _e62)*32+28)));
-            float _e68 = best.t;
-            const float2 _e69 = children_entry(n_8, origin_4, scale_2, ray_4, _e8, _e68);
-            float tl = _e69.x;
-            float tr = _e69.y;
-            uint _e73 = F32_INF;
-            uint _e77 = F32_INF;
-            if (((tl < asfloat(_e73)) && (tr < asfloat(_e77)))) {
+            uint _e78 = child;
+            GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_1 + _e78)*32+0)), asuint(nodes.Load((base_1 + _e78)*32+12)), asfloat(nodes.Load3((base_1 + _e78)*32+16)), asuint(nodes.Load((base_1 + _e78)*32+28)));
+            float _e84 = best.t;
+            const float2 _e85 = children_entry(n_8, origin_4, scale_2, ray_4, _e8, _e84);
+            float tl = _e85.x;
+            float tr = _e85.y;
+            uint _e89 = F32_INF;
+            uint _e93 = F32_INF;
+            if (((tl < asfloat(_e89)) && (tr < asfloat(_e93)))) {
                 near = n_8.a;
                 far = n_8.b;
                 if (((tr < tl) != shadow)) {
                     near = n_8.b;
                     far = n_8.a;
                 }
-                uint _e89 = sp_1;
-                if ((_e89 < BLAS_STACK)) {
-                    uint _e93 = sp_1;
-                    uint _e95 = far;
-                    traversal_stack[min(uint(min((TLAS_STACK + _e93), 66u)), 66u)] = _e95;
-                    uint _e100 = sp_1;
-                    sp_1 = (_e100 + 1u);
+                uint _e105 = sp_1;
+                if ((_e105 < BLAS_STACK)) {
+                    uint _e109 = sp_1;
+                    uint _e111 = far;
+                    traversal_stack[min(uint(min((TLAS_STACK + _e109), 66u)), 66u)] = _e111;
+                    uint _e116 = sp_1;
+                    sp_1 = (_e116 + 1u);
                 }
-                uint _e103 = near;
-                child = _e103;
+                uint _e119 = near;
+                child = _e119;
                 continue;
             }
-            uint _e105 = F32_INF;
-            if ((tl < asfloat(_e105))) {
+            uint _e121 = F32_INF;
+            if ((tl < asfloat(_e121))) {
                 child = n_8.a;
                 continue;
             }
-            uint _e110 = F32_INF;
-            if ((tr < asfloat(_e110))) {
+            uint _e126 = F32_INF;
+            if ((tr < asfloat(_e126))) {
                 child = n_8.b;
                 continue;
             }
         }
-        uint _e115 = sp_1;
-        const uint2 _e116 = pop(TLAS_STACK, _e115);
-        if ((_e116.x == NO_HIT)) {
+        uint _e131 = sp_1;
+        const uint2 _e132 = pop(TLAS_STACK, _e131);
+        if ((_e132.x == NO_HIT)) {
             break;
         }
-        child = _e116.x;
-        sp_1 = _e116.y;
+        child = _e132.x;
+        sp_1 = _e132.y;
     }
-    Candidate _e122 = best;
-    const Candidate candidate_2 = _e122;
+    Candidate _e138 = best;
+    const Candidate candidate_2 = _e138;
     return candidate_2;
 }
 
