@@ -735,7 +735,8 @@ impl Entities {
                     })
                     .collect();
                 let built = flatten::build_group(&inputs, |merged| {
-                    build_mesh("the flattened static objects", merged, options.bvh)
+                    let preset = flatten::preset(merged.indices.len(), options.bvh);
+                    build_mesh("the flattened static objects", merged, preset)
                 })?;
                 stats.max_blas_depth = stats.max_blas_depth.max(built.depth);
                 let group = FlatGroup {

@@ -17,7 +17,8 @@
 //! group); a group needs at least two objects.
 //!
 //! The group's records ([`build_group`]): its triangles in world space (normals under the inverse
-//! transpose, renormalised), one BVH built over them. Each slot's `TRIANGLE` record keeps in
+//! transpose, renormalised), one BVH built over them (with spatial splits up to
+//! [`QUALITY_TRIANGLES`], [`preset`]). Each slot's `TRIANGLE` record keeps in
 //! `v0.w` the triangle's index in its own mesh (what a hit reports as `primitive`) and holds in
 //! `v1.w` the member's index in the group plus one (`v1.w` is 0 in every other mesh). The kernel
 //! (`intersect_mesh` in `stdlib/kernel/trace.rt`) reports a hit on such a slot as a hit on the
@@ -32,7 +33,7 @@
 //! panics on any mesh (indices out of range read the origin, as the encoder does).
 
 use glam::{Mat3, Mat4, Vec3};
-use rtc_bvh::Aabb;
+use rtc_bvh::{Aabb, BuildPreset};
 
 use super::gpu_types::{record, GpuInstance};
 use super::store::BuiltMesh;
@@ -195,6 +196,22 @@ pub fn build_group(
         }
     }
     Ok(built)
+}
+
+/// The most triangles of a group whose BVH is built with spatial splits whatever the renderer's
+/// preset: a group is made of whole objects (walls, boxes, floors), whose large triangles are what
+/// splits help with, and a group this small builds in milliseconds. On the Cornell box (76
+/// triangles) its frame is about 4 % shorter than with the `fast` preset (Mesa 25.0.7,
+/// docs/bench/README.md).
+pub const QUALITY_TRIANGLES: usize = 16_384;
+
+/// The preset of a group of `triangles` triangles when the renderer's is `preset`.
+pub fn preset(triangles: usize, preset: BuildPreset) -> BuildPreset {
+    if triangles <= QUALITY_TRIANGLES {
+        BuildPreset::Quality
+    } else {
+        preset
+    }
 }
 
 /// The instance record of the group (the scene-level leaf): identity transforms, the group's BVH,
