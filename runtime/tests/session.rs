@@ -255,6 +255,75 @@ fn moving_objects_rebuilds_only_the_scene_level() {
     assert_eq!(r.store().counters().blas_builds, builds);
 }
 
+/// A renderer that flattens its static objects (`RenderOptions::flatten`, what `rtc render` does)
+/// renders what one without flattening does, up to the rounding of the baked vertices; moving a
+/// flattened object drops the flattening without building a BVH, and from then on its frames are
+/// bit for bit those of the renderer that never flattened.
+#[test]
+fn a_flattened_renderer_matches_a_plain_one_and_a_move_undoes_the_flattening() {
+    let Some(gpu) =
+        gpu_or_skip("a_flattened_renderer_matches_a_plain_one_and_a_move_undoes_the_flattening")
+    else {
+        return;
+    };
+    let dir = temp_dir("session", "flatten");
+    let compiled = stage(&dir, &[]);
+    let flat_options = RenderOptions {
+        flatten: true,
+        ..RenderOptions::default()
+    };
+    let mut flat = Renderer::new(&gpu, &compiled, flat_options).expect("renderer");
+    let mut plain = Renderer::new(&gpu, &compiled, RenderOptions::default()).expect("renderer");
+    let a = flat.render(&mut |_, _| {}).expect("render");
+    let b = plain.render(&mut |_, _| {}).expect("render");
+    assert_eq!(
+        a.stats.flattened,
+        (4, 1),
+        "the floor, both triangles and the ball"
+    );
+    assert_eq!(b.stats.flattened, (0, 0));
+    // Up to the rounding of the baked vertices and normals: every channel within 1e-3 of the
+    // plain render's (relative to the image's largest value), but for at most 2 pixels (a
+    // shadow ray that grazes an edge may flip).
+    let peak = b
+        .image
+        .pixels()
+        .iter()
+        .flat_map(|p| p[..3].iter())
+        .fold(0f32, |m, &v| m.max(v));
+    let off = a
+        .image
+        .pixels()
+        .iter()
+        .zip(b.image.pixels())
+        .filter(|(x, y)| (0..3).any(|c| (x[c] - y[c]).abs() > 1e-3 * peak))
+        .count();
+    assert!(
+        off <= 2,
+        "{off} pixels differ by more than 1e-3 of the peak {peak}"
+    );
+    let builds = a.stats.blas_builds;
+
+    let spin = Mat4::from_translation(Vec3::new(0.0, 0.5, -0.5))
+        * Mat4::from_rotation_y(0.7)
+        * Mat4::from_scale(Vec3::splat(0.5));
+    for r in [&mut flat, &mut plain] {
+        r.set_transform(3, spin).expect("move the ball");
+    }
+    let a = flat.accumulate(1, &mut |_, _| {}).expect("accumulate");
+    let b = plain.accumulate(1, &mut |_, _| {}).expect("accumulate");
+    assert_eq!(
+        a.flattened,
+        (0, 0),
+        "moving a flattened object drops the flattening"
+    );
+    assert_eq!(a.blas_builds, builds, "and builds no BVH");
+    let a = flat.render(&mut |_, _| {}).expect("render");
+    let b2 = plain.render(&mut |_, _| {}).expect("render");
+    assert_eq!(b.accumulated_samples, 1);
+    assert_same("after the move", &a.image, &b2.image);
+}
+
 #[test]
 fn replacing_the_kernel_reads_no_file_and_builds_no_blas() {
     let Some(gpu) = gpu_or_skip("replacing_the_kernel_reads_no_file_and_builds_no_blas") else {
