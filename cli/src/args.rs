@@ -194,8 +194,9 @@ pub struct BvhArgs {
         default_value_t = BvhPreset::Fast
     )]
     pub preset: BvhPreset,
-    /// Keep one BVH per object. By default the static objects that have meshes of their own are
-    /// flattened into one world-space BVH, which traces faster in scenes of many small objects.
+    /// Keep one BVH per object. By default the static objects whose meshes are their own (or
+    /// small) are flattened into one world-space BVH, which traces faster in scenes of many small
+    /// objects.
     #[arg(long = "no-flatten")]
     pub no_flatten: bool,
 }
