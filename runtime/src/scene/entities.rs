@@ -556,13 +556,6 @@ impl Entities {
         }
         to_u32("triangle slots", triangles.len())?;
         stats.blas_ms = ms_since(start);
-        if stats.max_blas_depth > linked.config.blas_stack {
-            warnings.push(format!(
-                "a mesh BVH is {} levels deep, deeper than the kernel's traversal stack ({}): \
-                 some triangles may be missed",
-                stats.max_blas_depth, linked.config.blas_stack
-            ));
-        }
 
         // 4. Texels.
         let mut texels = Vec::new();
@@ -702,15 +695,16 @@ impl Entities {
         let mut flat = Vec::new();
         if options.flatten {
             let start = Instant::now();
-            let moved: Vec<usize> = scene
-                .animation
-                .iter()
-                .filter_map(|t| match t.target {
-                    TrackTarget::Object(i) => Some(i),
-                    _ => None,
-                })
-                .chain(motions.iter().map(|m| m.object))
-                .collect();
+            let mut moves = vec![false; objects.len()];
+            let animated = scene.animation.iter().filter_map(|t| match t.target {
+                TrackTarget::Object(i) => Some(i),
+                _ => None,
+            });
+            for i in animated.chain(motions.iter().map(|m| m.object)) {
+                if let Some(m) = moves.get_mut(i) {
+                    *m = true;
+                }
+            }
             let candidates: Vec<flatten::Candidate> = objects
                 .iter()
                 .enumerate()
@@ -723,7 +717,7 @@ impl Entities {
                     },
                     flags: o.flags,
                     transform: o.transform,
-                    moves: moved.contains(&i),
+                    moves: moves.get(i).copied().unwrap_or(false),
                 })
                 .collect();
             for (flags, members) in flatten::plan(&candidates) {
@@ -766,15 +760,13 @@ impl Entities {
             }
             attributes.extend_from_slice(&built.extras);
         }
-        if stats.max_blas_depth > linked.config.blas_stack && !flat.is_empty() {
-            let warning = format!(
+        // Every object-level BVH is built by now, the flattened groups' included.
+        if stats.max_blas_depth > linked.config.blas_stack {
+            warnings.push(format!(
                 "a mesh BVH is {} levels deep, deeper than the kernel's traversal stack ({}): \
                  some triangles may be missed",
                 stats.max_blas_depth, linked.config.blas_stack
-            );
-            if !warnings.contains(&warning) {
-                warnings.push(warning);
-            }
+            ));
         }
         let blas_nodes = to_u32("BVH nodes", nodes.len())?;
 
