@@ -23,8 +23,9 @@
 //!   give the wavefront model's image pixel for pixel; past `LIGHT_QUERIES` queries in one light
 //!   sample the megakernel warns.
 //!
-//! - `sample_light_unoccluded`: a light's sample as if nothing blocked it, with no ray traced, in
-//!   both models, with one light type and with two.
+//! - `sample_light_unoccluded`: a light's sample as if nothing blocked it, with no ray traced, and
+//!   `sample_light_above`: a light's sample that is 0 without a ray below the surface and traced
+//!   above it, in both models, with one light type and with two.
 //!
 //! A test skips only when there is no adapter at all, and then says so on stderr.
 
@@ -694,8 +695,10 @@ fn an_unoccluded_light_sample_ignores_blockers_and_traces_no_ray() {
         return;
     };
     // `unoccluded.rt`: red is `sample_light`, 0 under the blocker (x < 0) and 1 elsewhere; green
-    // is `sample_light_unoccluded`, 1 everywhere. Every camera ray hits the floor, whose shading
-    // traces one shadow ray, for `sample_light` alone: 2 rays a pixel. With one light type (the
+    // is `sample_light_unoccluded`, 1 everywhere; blue is `sample_light_above` on the side the
+    // light is on (red again) plus twice that on the other side (0). Every camera ray hits the
+    // floor, whose shading traces one shadow ray for `sample_light` and one for the sample above
+    // the lit side, none for the others: 3 rays a pixel. With one light type (the
     // light program traces in place) and two (the megakernel defers its queries), both models.
     const SIDE: u32 = 16;
     for scene_name in ["unoccluded_one", "unoccluded_two"] {
@@ -716,13 +719,17 @@ fn an_unoccluded_light_sample_ignores_blockers_and_traces_no_ray() {
                 for x in 0..SIDE {
                     let wx = -2.8125 + 0.375 * f64::from(x);
                     let seen = if wx < 0.0 { 0.0 } else { 1.0 };
-                    assert_eq!(px(&img, x, y), [seen, 1.0, 0.0], "{name}: pixel ({x}, {y})");
+                    assert_eq!(
+                        px(&img, x, y),
+                        [seen, 1.0, seen],
+                        "{name}: pixel ({x}, {y})"
+                    );
                 }
             }
             assert_eq!(
                 stats.rays_traced,
-                2 * u64::from(SIDE * SIDE),
-                "{name}: an unoccluded sample traced a ray"
+                3 * u64::from(SIDE * SIDE),
+                "{name}: an unoccluded sample, or one below the surface, traced a ray"
             );
         }
         let _ = std::fs::remove_dir_all(&dir);

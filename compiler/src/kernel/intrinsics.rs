@@ -86,6 +86,7 @@ fn user_intrinsic_fn(b: Builtin) -> Option<&'static str> {
         Builtin::LightCount => "light_count_query",
         Builtin::SampleLight => "sample_light_query",
         Builtin::SampleLightUnoccluded => "sample_light_unoccluded_query",
+        Builtin::SampleLightAbove => "sample_light_above_query",
         Builtin::Shadow => "shadow_query",
         Builtin::Absorb => "absorb_query",
         _ => return None,
@@ -140,6 +141,9 @@ impl Intrinsics for KernelHooks<'_> {
             Builtin::Shadow if self.defers_light_shadows(call.caller) => Some("shadow_deferred"),
             Builtin::SampleLight if self.defers_light_shadows_at_all() => {
                 Some("sample_light_deferred")
+            }
+            Builtin::SampleLightAbove if self.defers_light_shadows_at_all() => {
+                Some("sample_light_above_deferred")
             }
             b => user_intrinsic_fn(b),
         };

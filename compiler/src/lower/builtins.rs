@@ -35,6 +35,7 @@ pub(super) fn is_intrinsic(b: Builtin) -> bool {
             | B::LightCount
             | B::SampleLight
             | B::SampleLightUnoccluded
+            | B::SampleLightAbove
             | B::Shadow
             | B::Absorb
             | B::Rand

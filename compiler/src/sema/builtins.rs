@@ -346,6 +346,7 @@ builtins! {
     LightCount "light_count" false SHADING => NO_ARGS_U;
     SampleLight "sample_light" false SHADING => &[ov(NONE, &[fx("i", Fixed::U32), fx("position", Fixed::Vec3f), fx("normal", Fixed::Vec3f)], Pat::Fixed(Fixed::LightSample))];
     SampleLightUnoccluded "sample_light_unoccluded" false SHADING => &[ov(NONE, &[fx("i", Fixed::U32), fx("position", Fixed::Vec3f), fx("normal", Fixed::Vec3f)], Pat::Fixed(Fixed::LightSample))];
+    SampleLightAbove "sample_light_above" false SHADING => &[ov(NONE, &[fx("i", Fixed::U32), fx("position", Fixed::Vec3f), fx("normal", Fixed::Vec3f)], Pat::Fixed(Fixed::LightSample))];
     Shadow "shadow" false Allowed::Programs(&[ProgramKind::Light, ProgramKind::ClosestHit, ProgramKind::Medium]) => &[ov(NONE, &[fx("position", Fixed::Vec3f), fx("normal", Fixed::Vec3f), fx("dir", Fixed::Vec3f), fx("dist", Fixed::F32)], RF)];
     Absorb "absorb" false Allowed::Programs(&[ProgramKind::AnyHit]) => &[ov(NONE, &[fx("density", Fixed::F32)], RVOID)];
     Rand "rand" false NOT_BOUNDS => &[ov(NONE, &[], RF)];

@@ -144,7 +144,9 @@ const float GAMMA_4_ = 2.3841864e-7;
 const bool HAS_SECONDARY_RAYS = false;
 const bool HAS_BACKGROUND = false;
 const uint LIGHT_ENTRY_STRIDE = 2u;
-const uint SCRATCH_UNOCCLUDED = 14u;
+const uint SCRATCH_SHADOW_MODE = 14u;
+const uint SHADOW_UNOCCLUDED = 1u;
+const uint SHADOW_ABOVE = 2u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const uint RAY_SHADOW = 2u;
 const float INV_PI = 0.31830987;
@@ -913,6 +915,17 @@ PointLight load_PointLight(uint offset_4) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
+float shadow_preset(vec3 normal, vec3 dir) {
+    uint mode = scratch[min(SCRATCH_SHADOW_MODE, 14u)];
+    if ((mode == SHADOW_UNOCCLUDED)) {
+        return 1.0;
+    }
+    if (((mode == SHADOW_ABOVE) && !((dot(dir, normal) > 0.0)))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 vec3 step_toward(vec3 x_3, vec3 s) {
     uvec3 bits_1 = floatBitsToUint(x_3);
     bvec3 up_1 = greaterThan((sign(x_3) * sign(s)), vec3(0.0));
@@ -929,12 +942,12 @@ vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
     return _e17;
 }
 
-Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
+Ray shadow_ray(vec3 position, vec3 normal_1, vec3 dir_1, float dist) {
     vec3 n_4 = vec3(0.0);
     float tmax_4 = 0.0;
-    n_4 = normal;
+    n_4 = normal_1;
     vec3 _e5 = n_4;
-    if ((dot(dir, _e5) < 0.0)) {
+    if ((dot(dir_1, _e5) < 0.0)) {
         vec3 _e9 = n_4;
         n_4 = -(_e9);
     }
@@ -947,48 +960,48 @@ Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
     tmax_4 = uintBitsToFloat(_e25);
     uint _e29 = F32_INF;
     if ((dist < uintBitsToFloat(_e29))) {
-        vec3 light = (position + (dir * vec3(dist)));
-        float dd_1 = dot(dir, dir);
-        float along_1 = (dot((light - _e23), dir) / dd_1);
-        vec3 l_1 = (abs(position) + abs((dir * vec3(dist))));
+        vec3 light = (position + (dir_1 * vec3(dist)));
+        float dd_1 = dot(dir_1, dir_1);
+        float along_1 = (dot((light - _e23), dir_1) / dd_1);
+        vec3 l_1 = (abs(position) + abs((dir_1 * vec3(dist))));
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    return Ray(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-float shadow_query(vec3 position_1, vec3 normal_1, vec3 dir_1, float dist_1) {
-    uint _e9 = scratch[min(SCRATCH_UNOCCLUDED, 14u)];
-    if ((_e9 != 0u)) {
-        return 1.0;
+float shadow_query(vec3 position_1, vec3 normal_2, vec3 dir_2, float dist_1) {
+    float _e4 = shadow_preset(normal_2, dir_2);
+    if ((_e4 >= 0.0)) {
+        return _e4;
     }
-    Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    Candidate _e15 = intersect_scene(_e13, true);
-    return ((_e15.slot != NO_HIT) ? 0.0 : 1.0);
+    Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    Candidate _e9 = intersect_scene(_e7, true);
+    return ((_e9.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample point_light(PointLight l, vec3 position_2, vec3 normal_2) {
+LightSample point_light(PointLight l, vec3 position_2, vec3 normal_3) {
     float strength = 0.0;
     vec3 to_light = (l.position - position_2);
     float dist_2 = length(to_light);
-    vec3 dir_4 = (to_light / vec3(max(dist_2, 1e-20)));
+    vec3 dir_5 = (to_light / vec3(max(dist_2, 1e-20)));
     strength = (l.intensity / max((dist_2 * dist_2), 1e-20));
     if ((l.range > 0.0)) {
         float _e19 = strength;
         strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_2)));
     }
-    float _e26 = shadow_query(position_2, normal_2, dir_4, dist_2);
+    float _e26 = shadow_query(position_2, normal_3, dir_5, dist_2);
     float _e28 = strength;
-    return LightSample(dir_4, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0.0);
+    return LightSample(dir_5, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0.0);
 }
 
-LightSample dispatch_light(uint type_id_2, uint offset_5, vec3 position_3, vec3 normal_3) {
+LightSample dispatch_light(uint type_id_2, uint offset_5, vec3 position_3, vec3 normal_4) {
     PointLight _e3 = load_PointLight(offset_5);
-    LightSample _e4 = point_light(_e3, position_3, normal_3);
+    LightSample _e4 = point_light(_e3, position_3, normal_4);
     return _e4;
 }
 
-LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_4) {
+LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_5) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
     if ((i_2 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
@@ -996,7 +1009,7 @@ LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_4) {
     uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     uint _e22 = _group_0_binding_6_cs[entry];
     uint _e27 = _group_0_binding_6_cs[(entry + 1u)];
-    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     return _e28;
 }
 
@@ -1063,11 +1076,11 @@ void dispatch_secondary_rays(uint type_id_5, uint offset_8, Ray ray_16, Hit hit_
     return;
 }
 
-vec3 spawn_origin_at(vec3 position_5, vec3 normal_5, float error_1, vec3 dir_2) {
+vec3 spawn_origin_at(vec3 position_5, vec3 normal_6, float error_1, vec3 dir_3) {
     vec3 n_5 = vec3(0.0);
-    n_5 = normal_5;
+    n_5 = normal_6;
     vec3 _e5 = n_5;
-    if ((dot(dir_2, _e5) < 0.0)) {
+    if ((dot(dir_3, _e5) < 0.0)) {
         vec3 _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1076,8 +1089,8 @@ vec3 spawn_origin_at(vec3 position_5, vec3 normal_5, float error_1, vec3 dir_2) 
     return _e12;
 }
 
-vec3 spawn_origin(Hit hit_5, float error_2, vec3 dir_3) {
-    vec3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_3);
+vec3 spawn_origin(Hit hit_5, float error_2, vec3 dir_4) {
+    vec3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
     return _e5;
 }
 
@@ -1271,13 +1284,13 @@ vec3 trace(Ray camera_ray) {
             stack[min(top_1, 0u)].next = (i_6 + 1u);
             Ray parent = stack[min(top_1, 0u)].ray;
             Hit hit_8 = stack[min(top_1, 0u)].hit;
-            vec3 dir_5 = stack[min(top_1, 0u)].dirs[min(i_6, 0u)];
+            vec3 dir_6 = stack[min(top_1, 0u)].dirs[min(i_6, 0u)];
             medium = parent.medium;
             float _e283 = stack[min(top_1, 0u)].error;
-            vec3 _e284 = spawn_origin(hit_8, _e283, dir_5);
+            vec3 _e284 = spawn_origin(hit_8, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_17 = Ray(_e284, 0.0, dir_5, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_17 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(top_1, 0u)].ray;
             s_ray = _e299;

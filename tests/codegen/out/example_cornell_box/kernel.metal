@@ -183,7 +183,9 @@ constant float GAMMA_4_ = 0.00000023841864;
 constant bool HAS_SECONDARY_RAYS = false;
 constant bool HAS_BACKGROUND = false;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
-constant uint SCRATCH_UNOCCLUDED = 14u;
+constant uint SCRATCH_SHADOW_MODE = 14u;
+constant uint SHADOW_UNOCCLUDED = 1u;
+constant uint SHADOW_ABOVE = 2u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
 constant float INV_PI = 0.31830987;
@@ -1162,6 +1164,21 @@ PointLight load_PointLight(
     return PointLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)};
 }
 
+float shadow_preset(
+    metal::float3 normal,
+    metal::float3 dir,
+    thread type_3& scratch
+) {
+    uint mode = scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 14u)];
+    if (mode == SHADOW_UNOCCLUDED) {
+        return 1.0;
+    }
+    if ((mode == SHADOW_ABOVE) && !((metal::dot(dir, normal) > 0.0))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 metal::float3 step_toward(
     metal::float3 x_3,
     metal::float3 s
@@ -1187,17 +1204,17 @@ metal::float3 offset_origin(
 
 Ray shadow_ray(
     metal::float3 position,
-    metal::float3 normal,
-    metal::float3 dir,
+    metal::float3 normal_1,
+    metal::float3 dir_1,
     float dist,
     thread uint& F32_INF,
     thread float& hit_error
 ) {
     metal::float3 n_4 = {};
     float tmax_4 = {};
-    n_4 = normal;
+    n_4 = normal_1;
     metal::float3 _e5 = n_4;
-    if (metal::dot(dir, _e5) < 0.0) {
+    if (metal::dot(dir_1, _e5) < 0.0) {
         metal::float3 _e9 = n_4;
         n_4 = -(_e9);
     }
@@ -1210,20 +1227,20 @@ Ray shadow_ray(
     tmax_4 = as_type<float>(_e25);
     uint _e29 = F32_INF;
     if (dist < as_type<float>(_e29)) {
-        metal::float3 light = position + (dir * metal::float3(dist));
-        float dd_1 = metal::dot(dir, dir);
-        float along_1 = metal::dot(light - _e23, dir) / dd_1;
-        metal::float3 l_1 = metal::abs(position) + metal::abs(dir * metal::float3(dist));
+        metal::float3 light = position + (dir_1 * metal::float3(dist));
+        float dd_1 = metal::dot(dir_1, dir_1);
+        float along_1 = metal::dot(light - _e23, dir_1) / dd_1;
+        metal::float3 l_1 = metal::abs(position) + metal::abs(dir_1 * metal::float3(dist));
         tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_1.x, l_1.y), l_1.z)) / metal::sqrt(dd_1));
     }
     float _e59 = tmax_4;
-    return Ray {_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u};
+    return Ray {_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u};
 }
 
 float shadow_query(
     metal::float3 position_1,
-    metal::float3 normal_1,
-    metal::float3 dir_1,
+    metal::float3 normal_2,
+    metal::float3 dir_2,
     float dist_1,
     constant FrameUniforms& frame,
     thread type_3& scratch,
@@ -1236,19 +1253,19 @@ float shadow_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e9 = scratch.inner[metal::min(SCRATCH_UNOCCLUDED, 14u)];
-    if (_e9 != 0u) {
-        return 1.0;
+    float _e4 = shadow_preset(normal_2, dir_2, scratch);
+    if (_e4 >= 0.0) {
+        return _e4;
     }
-    Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
-    Candidate _e15 = intersect_scene(_e13, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-    return (_e15.slot != NO_HIT) ? 0.0 : 1.0;
+    Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1, F32_INF, hit_error);
+    Candidate _e9 = intersect_scene(_e7, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return (_e9.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
 LightSample point_light(
     PointLight l,
     metal::float3 position_2,
-    metal::float3 normal_2,
+    metal::float3 normal_3,
     constant FrameUniforms& frame,
     thread type_3& scratch,
     thread uint& F32_INF,
@@ -1263,22 +1280,22 @@ LightSample point_light(
     float strength = {};
     metal::float3 to_light = l.position - position_2;
     float dist_2 = metal::length(to_light);
-    metal::float3 dir_4 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
+    metal::float3 dir_5 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
     strength = l.intensity / metal::max(dist_2 * dist_2, 0.00000000000000000001);
     if (l.range > 0.0) {
         float _e19 = strength;
         strength = _e19 * (1.0 - metal::smoothstep(l.inner_range, l.range, dist_2));
     }
-    float _e26 = shadow_query(position_2, normal_2, dir_4, dist_2, frame, scratch, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    float _e26 = shadow_query(position_2, normal_3, dir_5, dist_2, frame, scratch, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     float _e28 = strength;
-    return LightSample {dir_4, dist_2, (l.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
+    return LightSample {dir_5, dist_2, (l.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
 }
 
 LightSample dispatch_light(
     uint type_id_2,
     uint offset_5,
     metal::float3 position_3,
-    metal::float3 normal_3,
+    metal::float3 normal_4,
     constant FrameUniforms& frame,
     thread type_3& scratch,
     device type_5 const& params,
@@ -1292,14 +1309,14 @@ LightSample dispatch_light(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PointLight _e3 = load_PointLight(offset_5, params, _buffer_sizes);
-    LightSample _e4 = point_light(_e3, position_3, normal_3, frame, scratch, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    LightSample _e4 = point_light(_e3, position_3, normal_4, frame, scratch, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e4;
 }
 
 LightSample sample_light_query(
     uint i_2,
     metal::float3 position_4,
-    metal::float3 normal_4,
+    metal::float3 normal_5,
     constant FrameUniforms& frame,
     thread type_3& scratch,
     device type_5 const& params,
@@ -1319,7 +1336,7 @@ LightSample sample_light_query(
     uint entry = frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE);
     uint _e22 = params[entry];
     uint _e27 = params[entry + 1u];
-    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e28;
 }
 
@@ -1455,14 +1472,14 @@ void dispatch_secondary_rays(
 
 metal::float3 spawn_origin_at(
     metal::float3 position_5,
-    metal::float3 normal_5,
+    metal::float3 normal_6,
     float error_1,
-    metal::float3 dir_2
+    metal::float3 dir_3
 ) {
     metal::float3 n_5 = {};
-    n_5 = normal_5;
+    n_5 = normal_6;
     metal::float3 _e5 = n_5;
-    if (metal::dot(dir_2, _e5) < 0.0) {
+    if (metal::dot(dir_3, _e5) < 0.0) {
         metal::float3 _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1474,9 +1491,9 @@ metal::float3 spawn_origin_at(
 metal::float3 spawn_origin(
     Hit hit_5,
     float error_2,
-    metal::float3 dir_3
+    metal::float3 dir_4
 ) {
-    metal::float3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_3);
+    metal::float3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
     return _e5;
 }
 
@@ -1693,13 +1710,13 @@ metal::float3 trace(
             stack.inner[metal::min(top_1, 0u)].next = i_6 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 0u)].ray;
             Hit hit_8 = stack.inner[metal::min(top_1, 0u)].hit;
-            metal::float3 dir_5 = stack.inner[metal::min(top_1, 0u)].dirs.inner[metal::min(i_6, 0u)];
+            metal::float3 dir_6 = stack.inner[metal::min(top_1, 0u)].dirs.inner[metal::min(i_6, 0u)];
             medium = parent.medium;
             float _e283 = stack.inner[metal::min(top_1, 0u)].error;
-            metal::float3 _e284 = spawn_origin(hit_8, _e283, dir_5);
+            metal::float3 _e284 = spawn_origin(hit_8, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_17 = Ray {_e284, 0.0, dir_5, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_17 = Ray {_e284, 0.0, dir_6, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 0u)].ray;
             s_ray = _e299;

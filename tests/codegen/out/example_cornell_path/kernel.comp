@@ -145,10 +145,13 @@ const float GAMMA_6_ = 3.576281e-7;
 const float GAMMA_4_ = 2.3841864e-7;
 const bool HAS_SECONDARY_RAYS = true;
 const bool HAS_BACKGROUND = false;
+const uint SCRATCH_SHADOW_MODE = 14u;
+const uint SHADOW_ABOVE = 2u;
 const uint LIGHT_ENTRY_STRIDE = 2u;
-const uint SCRATCH_UNOCCLUDED = 14u;
+const uint SHADOW_UNOCCLUDED = 1u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const uint RAY_SHADOW = 2u;
+const uint SHADOW_TRACED = 0u;
 const float INV_PI = 0.31830987;
 const uint FLAG_MEDIUM = 4u;
 const uint FLAG_SECONDARY_RAYS = 2u;
@@ -332,10 +335,10 @@ float rand_next() {
     uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
     uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 14u)];
     uint _e24 = laine_karras(bitfieldReverse(_e22), _e16);
-    uint i_4 = bitfieldReverse(_e24);
-    x_2 = i_4;
+    uint i_5 = bitfieldReverse(_e24);
+    x_2 = i_5;
     if (((d_1 & 1u) != 0u)) {
-        uint _e31 = sobol_second_reversed(i_4);
+        uint _e31 = sobol_second_reversed(i_5);
         x_2 = _e31;
     }
     uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
@@ -938,6 +941,17 @@ QuadLight load_QuadLight(uint offset_5) {
     return QuadLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)), vec3(uintBitsToFloat(_e62), uintBitsToFloat(_e68), uintBitsToFloat(_e74)), uintBitsToFloat(_e81), _e87);
 }
 
+float shadow_preset(vec3 normal, vec3 dir) {
+    uint mode = scratch[min(SCRATCH_SHADOW_MODE, 14u)];
+    if ((mode == SHADOW_UNOCCLUDED)) {
+        return 1.0;
+    }
+    if (((mode == SHADOW_ABOVE) && !((dot(dir, normal) > 0.0)))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 vec3 step_toward(vec3 x_3, vec3 s) {
     uvec3 bits_1 = floatBitsToUint(x_3);
     bvec3 up_1 = greaterThan((sign(x_3) * sign(s)), vec3(0.0));
@@ -954,12 +968,12 @@ vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
     return _e17;
 }
 
-Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
+Ray shadow_ray(vec3 position, vec3 normal_1, vec3 dir_1, float dist) {
     vec3 n_4 = vec3(0.0);
     float tmax_4 = 0.0;
-    n_4 = normal;
+    n_4 = normal_1;
     vec3 _e5 = n_4;
-    if ((dot(dir, _e5) < 0.0)) {
+    if ((dot(dir_1, _e5) < 0.0)) {
         vec3 _e9 = n_4;
         n_4 = -(_e9);
     }
@@ -972,51 +986,51 @@ Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
     tmax_4 = uintBitsToFloat(_e25);
     uint _e29 = F32_INF;
     if ((dist < uintBitsToFloat(_e29))) {
-        vec3 light = (position + (dir * vec3(dist)));
-        float dd_1 = dot(dir, dir);
-        float along_1 = (dot((light - _e23), dir) / dd_1);
-        vec3 l_2 = (abs(position) + abs((dir * vec3(dist))));
+        vec3 light = (position + (dir_1 * vec3(dist)));
+        float dd_1 = dot(dir_1, dir_1);
+        float along_1 = (dot((light - _e23), dir_1) / dd_1);
+        vec3 l_2 = (abs(position) + abs((dir_1 * vec3(dist))));
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    return Ray(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-float shadow_query(vec3 position_1, vec3 normal_1, vec3 dir_1, float dist_1) {
-    uint _e9 = scratch[min(SCRATCH_UNOCCLUDED, 14u)];
-    if ((_e9 != 0u)) {
-        return 1.0;
+float shadow_query(vec3 position_1, vec3 normal_2, vec3 dir_2, float dist_1) {
+    float _e4 = shadow_preset(normal_2, dir_2);
+    if ((_e4 >= 0.0)) {
+        return _e4;
     }
-    Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    Candidate _e15 = intersect_scene(_e13, true);
-    return ((_e15.slot != NO_HIT) ? 0.0 : 1.0);
+    Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    Candidate _e9 = intersect_scene(_e7, true);
+    return ((_e9.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample quad_light(QuadLight l, vec3 position_2, vec3 normal_2) {
+LightSample quad_light(QuadLight l, vec3 position_2, vec3 normal_3) {
     vec3 c_7 = cross(l.edge_u, l.edge_v);
     float area = length(c_7);
     vec2 _e7 = rand2_next();
     vec3 to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_2);
     float dist2_ = dot(to_light, to_light);
     float dist_2 = sqrt(dist2_);
-    vec3 dir_7 = (to_light / vec3(max(dist_2, 1e-20)));
-    float cos_light = (-(dot(dir_7, c_7)) / max(area, 1e-30));
+    vec3 dir_8 = (to_light / vec3(max(dist_2, 1e-20)));
+    float cos_light = (-(dot(dir_8, c_7)) / max(area, 1e-30));
     if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
-        return LightSample(dir_7, dist_2, vec3(0.0), 0.0);
+        return LightSample(dir_8, dist_2, vec3(0.0), 0.0);
     }
-    float _e42 = shadow_query(position_2, normal_2, dir_7, dist_2);
+    float _e42 = shadow_query(position_2, normal_3, dir_8, dist_2);
     float strength = (((l.intensity * cos_light) * area) / dist2_);
     float pdf_1 = ((l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0);
-    return LightSample(dir_7, dist_2, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
+    return LightSample(dir_8, dist_2, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
 }
 
-LightSample dispatch_light(uint type_id_2, uint offset_6, vec3 position_3, vec3 normal_3) {
+LightSample dispatch_light(uint type_id_2, uint offset_6, vec3 position_3, vec3 normal_4) {
     QuadLight _e3 = load_QuadLight(offset_6);
-    LightSample _e4 = quad_light(_e3, position_3, normal_3);
+    LightSample _e4 = quad_light(_e3, position_3, normal_4);
     return _e4;
 }
 
-LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_4) {
+LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_5) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
     if ((i_2 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
@@ -1024,8 +1038,15 @@ LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_4) {
     uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     uint _e22 = _group_0_binding_6_cs[entry];
     uint _e27 = _group_0_binding_6_cs[(entry + 1u)];
-    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     return _e28;
+}
+
+LightSample sample_light_above_query(uint i_3, vec3 position_5, vec3 normal_6) {
+    scratch[min(SCRATCH_SHADOW_MODE, 14u)] = SHADOW_ABOVE;
+    LightSample _e9 = sample_light_query(i_3, position_5, normal_6);
+    scratch[min(SCRATCH_SHADOW_MODE, 14u)] = SHADOW_TRACED;
+    return _e9;
 }
 
 float mis_weight(float p_6, float other) {
@@ -1051,31 +1072,32 @@ float mis_light_weight(LightSample l_1, float bsdf_pdf) {
 
 vec3 path_diffuse_shade(PathDiffuse m_1, Ray ray_12, Hit hit_2, vec3 secondary) {
     vec3 direct = vec3(0.0);
-    uint i_3 = 0u;
+    uint i_4 = 0u;
     vec3 n_10 = faceforward(hit_2.normal, ray_12.dir, hit_2.geometric_normal);
+    vec3 ng = faceforward(hit_2.geometric_normal, ray_12.dir, hit_2.geometric_normal);
     direct = vec3(0.0);
-    uint _e12 = light_count_query();
-    i_3 = 0u;
+    uint _e16 = light_count_query();
+    i_4 = 0u;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e33 = i_3;
-            i_3 = (_e33 + 1u);
+            uint _e36 = i_4;
+            i_4 = (_e36 + 1u);
         }
         loop_init_2 = false;
-        uint _e14 = i_3;
-        if ((_e14 >= _e12)) {
+        uint _e18 = i_4;
+        if ((_e18 >= _e16)) {
             break;
         }
-        uint _e16 = i_3;
-        LightSample _e19 = sample_light_query(_e16, hit_2.position, hit_2.geometric_normal);
-        float c_8 = max(dot(n_10, _e19.dir), 0.0);
-        vec3 _e24 = direct;
-        float _e28 = mis_light_weight(_e19, (c_8 * INV_PI));
-        direct = (_e24 + (_e19.radiance * vec3((c_8 * _e28))));
+        uint _e20 = i_4;
+        LightSample _e22 = sample_light_above_query(_e20, hit_2.position, ng);
+        float c_8 = max(dot(n_10, _e22.dir), 0.0);
+        vec3 _e27 = direct;
+        float _e31 = mis_light_weight(_e22, (c_8 * INV_PI));
+        direct = (_e27 + (_e22.radiance * vec3((c_8 * _e31))));
     }
-    vec3 _e40 = direct;
-    return (((m_1.albedo * vec3(INV_PI)) * _e40) + secondary);
+    vec3 _e43 = direct;
+    return (((m_1.albedo * vec3(INV_PI)) * _e43) + secondary);
 }
 
 vec3 dispatch_closest_hit(uint type_id_3, uint offset_7, Ray ray_13, Hit hit_3, vec3 secondary_1) {
@@ -1139,15 +1161,15 @@ vec3 sample_cosine_hemisphere(vec3 n_6, vec2 u) {
     return (_e17 * local);
 }
 
-vec3 mis_bounce_dir(vec3 dir_2, float pdf) {
+vec3 mis_bounce_dir(vec3 dir_3, float pdf) {
     float x_5 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
-    return (dir_2 * vec3((MIS_BOUNCE_LENGTH + x_5)));
+    return (dir_3 * vec3((MIS_BOUNCE_LENGTH + x_5)));
 }
 
-void rt_spawn(vec3 dir_3, vec3 weight) {
+void rt_spawn(vec3 dir_4, vec3 weight) {
     uint _e3 = spawn_count;
     if ((_e3 < 1u)) {
-        spawn_dirs[_e3] = dir_3;
+        spawn_dirs[_e3] = dir_4;
         spawn_weights[_e3] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1155,8 +1177,8 @@ void rt_spawn(vec3 dir_3, vec3 weight) {
 
 void path_diffuse_rays(PathDiffuse m_2, Ray ray_17, Hit hit_4) {
     vec3 weight_1 = vec3(0.0);
-    vec3 ng = (hit_4.front_face ? hit_4.geometric_normal : -(hit_4.geometric_normal));
-    vec3 n_11 = faceforward(hit_4.normal, -(ng), hit_4.normal);
+    vec3 ng_1 = (hit_4.front_face ? hit_4.geometric_normal : -(hit_4.geometric_normal));
+    vec3 n_11 = faceforward(hit_4.normal, -(ng_1), hit_4.normal);
     vec2 _e12 = rand2_next();
     vec3 _e13 = sample_cosine_hemisphere(n_11, _e12);
     weight_1 = m_2.albedo;
@@ -1168,7 +1190,7 @@ void path_diffuse_rays(PathDiffuse m_2, Ray ray_17, Hit hit_4) {
         }
         weight_1 = (m_2.albedo / vec3(q_3));
     }
-    if ((dot(_e13, ng) > 0.0)) {
+    if ((dot(_e13, ng_1) > 0.0)) {
         vec3 _e41 = mis_bounce_dir(_e13, (max(dot(n_11, _e13), 0.0) * INV_PI));
         vec3 _e42 = weight_1;
         rt_spawn(_e41, _e42);
@@ -1182,28 +1204,28 @@ void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_18, Hit hit_
     return;
 }
 
-vec3 spawn_origin_at(vec3 position_5, vec3 normal_5, float error_1, vec3 dir_4) {
+vec3 spawn_origin_at(vec3 position_6, vec3 normal_7, float error_1, vec3 dir_5) {
     vec3 n_7 = vec3(0.0);
-    n_7 = normal_5;
+    n_7 = normal_7;
     vec3 _e5 = n_7;
-    if ((dot(dir_4, _e5) < 0.0)) {
+    if ((dot(dir_5, _e5) < 0.0)) {
         vec3 _e9 = n_7;
         n_7 = -(_e9);
     }
     vec3 _e11 = n_7;
-    vec3 _e12 = offset_origin(position_5, _e11, error_1);
+    vec3 _e12 = offset_origin(position_6, _e11, error_1);
     return _e12;
 }
 
-vec3 spawn_origin(Hit hit_6, float error_2, vec3 dir_5) {
-    vec3 _e5 = spawn_origin_at(hit_6.position, hit_6.geometric_normal, error_2, dir_5);
+vec3 spawn_origin(Hit hit_6, float error_2, vec3 dir_6) {
+    vec3 _e5 = spawn_origin_at(hit_6.position, hit_6.geometric_normal, error_2, dir_6);
     return _e5;
 }
 
 PathState path_step(PathState s_1, Candidate c_3) {
     PathState out_ = PathState(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), vec3(0.0), vec3(0.0), false);
     bool spawned = false;
-    vec3 dir_6 = vec3(0.0);
+    vec3 dir_7 = vec3(0.0);
     vec3 weight_2 = vec3(0.0);
     vec3 beta = vec3(0.0);
     Ray ray_20 = s_1.ray;
@@ -1220,7 +1242,7 @@ PathState path_step(PathState s_1, Candidate c_3) {
     Hit _e22 = finish_hit(ray_20, c_3);
     float error_4 = hit_error;
     spawned = false;
-    dir_6 = vec3(0.0);
+    dir_7 = vec3(0.0);
     weight_2 = vec3(0.0);
     if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_20.depth < MAX_DEPTH))) {
         spawn_count = 0u;
@@ -1229,7 +1251,7 @@ PathState path_step(PathState s_1, Candidate c_3) {
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
             vec3 _e56 = spawn_dirs[0u];
-            dir_6 = _e56;
+            dir_7 = _e56;
             vec3 _e60 = spawn_weights[0u];
             weight_2 = _e60;
         }
@@ -1263,9 +1285,9 @@ PathState path_step(PathState s_1, Candidate c_3) {
     }
     vec3 _e111 = beta;
     out_.beta = _e111;
-    vec3 _e113 = dir_6;
+    vec3 _e113 = dir_7;
     vec3 _e114 = spawn_origin(_e22, error_4, _e113);
-    vec3 _e116 = dir_6;
+    vec3 _e116 = dir_7;
     uint _e118 = F32_INF;
     out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_20.depth + 1u), RAY_SECONDARY, ray_20.medium);
     out_.live = true;

@@ -182,10 +182,13 @@ static const float GAMMA_6_ = 3.576281e-7;
 static const float GAMMA_4_ = 2.3841864e-7;
 static const bool HAS_SECONDARY_RAYS = true;
 static const bool HAS_BACKGROUND = false;
+static const uint SCRATCH_SHADOW_MODE = 14u;
+static const uint SHADOW_ABOVE = 2u;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
-static const uint SCRATCH_UNOCCLUDED = 14u;
+static const uint SHADOW_UNOCCLUDED = 1u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
+static const uint SHADOW_TRACED = 0u;
 static const float INV_PI = 0.31830987;
 static const uint FLAG_MEDIUM = 4u;
 static const uint FLAG_SECONDARY_RAYS = 2u;
@@ -394,10 +397,10 @@ float rand_next()
     const uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
     uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 14u)), 14u)];
     const uint _e24 = laine_karras(reversebits(_e22), _e16);
-    uint i_4 = reversebits(_e24);
-    x_2 = i_4;
+    uint i_5 = reversebits(_e24);
+    x_2 = i_5;
     if (((d_1 & 1u) != 0u)) {
-        const uint _e31 = sobol_second_reversed(i_4);
+        const uint _e31 = sobol_second_reversed(i_5);
         x_2 = _e31;
     }
     uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
@@ -1189,6 +1192,18 @@ QuadLight load_QuadLight(uint offset_5)
     return quadlight;
 }
 
+float shadow_preset(float3 normal, float3 dir)
+{
+    uint mode = scratch[min(uint(min(SCRATCH_SHADOW_MODE, 14u)), 14u)];
+    if ((mode == SHADOW_UNOCCLUDED)) {
+        return 1.0;
+    }
+    if (((mode == SHADOW_ABOVE) && !((dot(dir, normal) > 0.0)))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 float3 step_toward(float3 x_3, float3 s)
 {
     uint3 bits_1 = asuint(x_3);
@@ -1207,14 +1222,14 @@ float3 offset_origin(float3 p_5, float3 n_3, float error)
     return _e17;
 }
 
-Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
+Ray shadow_ray(float3 position, float3 normal_1, float3 dir_1, float dist)
 {
     float3 n_4 = (float3)0;
     float tmax_4 = (float)0;
 
-    n_4 = normal;
+    n_4 = normal_1;
     float3 _e5 = n_4;
-    if ((dot(dir, _e5) < 0.0)) {
+    if ((dot(dir_1, _e5) < 0.0)) {
         float3 _e9 = n_4;
         n_4 = -(_e9);
     }
@@ -1227,26 +1242,26 @@ Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
     tmax_4 = asfloat(_e25);
     uint _e29 = F32_INF;
     if ((dist < asfloat(_e29))) {
-        float3 light = (position + (dir * (dist).xxx));
-        float dd_1 = dot(dir, dir);
-        float along_1 = (dot((light - _e23), dir) / dd_1);
-        float3 l_2 = (abs(position) + abs((dir * (dist).xxx)));
+        float3 light = (position + (dir_1 * (dist).xxx));
+        float dd_1 = dot(dir_1, dir_1);
+        float along_1 = (dot((light - _e23), dir_1) / dd_1);
+        float3 l_2 = (abs(position) + abs((dir_1 * (dist).xxx)));
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_23 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    const Ray ray_23 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
     return ray_23;
 }
 
-float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
+float shadow_query(float3 position_1, float3 normal_2, float3 dir_2, float dist_1)
 {
-    uint _e9 = scratch[min(uint(min(SCRATCH_UNOCCLUDED, 14u)), 14u)];
-    if ((_e9 != 0u)) {
-        return 1.0;
+    const float _e4 = shadow_preset(normal_2, dir_2);
+    if ((_e4 >= 0.0)) {
+        return _e4;
     }
-    const Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    const Candidate _e15 = intersect_scene(_e13, true);
-    return ((_e15.slot != NO_HIT) ? 0.0 : 1.0);
+    const Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    const Candidate _e9 = intersect_scene(_e7, true);
+    return ((_e9.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
 LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
@@ -1258,7 +1273,7 @@ LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg
     return ret;
 }
 
-LightSample quad_light(QuadLight l, float3 position_2, float3 normal_2)
+LightSample quad_light(QuadLight l, float3 position_2, float3 normal_3)
 {
     float3 c_7 = cross(l.edge_u, l.edge_v);
     float area = length(c_7);
@@ -1266,28 +1281,28 @@ LightSample quad_light(QuadLight l, float3 position_2, float3 normal_2)
     float3 to_light = (((l.corner + (l.edge_u * (_e7.x).xxx)) + (l.edge_v * (_e7.y).xxx)) - position_2);
     float dist2_ = dot(to_light, to_light);
     float dist_2 = sqrt(dist2_);
-    float3 dir_7 = (to_light / (max(dist_2, 1e-20)).xxx);
-    float cos_light = (-(dot(dir_7, c_7)) / max(area, 1e-30));
+    float3 dir_8 = (to_light / (max(dist_2, 1e-20)).xxx);
+    float cos_light = (-(dot(dir_8, c_7)) / max(area, 1e-30));
     if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
-        const LightSample lightsample = ConstructLightSample(dir_7, dist_2, (0.0).xxx, 0.0);
+        const LightSample lightsample = ConstructLightSample(dir_8, dist_2, (0.0).xxx, 0.0);
         return lightsample;
     }
-    const float _e42 = shadow_query(position_2, normal_2, dir_7, dist_2);
+    const float _e42 = shadow_query(position_2, normal_3, dir_8, dist_2);
     float strength = (((l.intensity * cos_light) * area) / dist2_);
     float pdf_1 = ((l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0);
-    const LightSample lightsample_1 = ConstructLightSample(dir_7, dist_2, ((l.color * (strength).xxx) * (_e42).xxx), pdf_1);
+    const LightSample lightsample_1 = ConstructLightSample(dir_8, dist_2, ((l.color * (strength).xxx) * (_e42).xxx), pdf_1);
     return lightsample_1;
 }
 
-LightSample dispatch_light(uint type_id_2, uint offset_6, float3 position_3, float3 normal_3)
+LightSample dispatch_light(uint type_id_2, uint offset_6, float3 position_3, float3 normal_4)
 {
     const QuadLight _e3 = load_QuadLight(offset_6);
-    const LightSample _e4 = quad_light(_e3, position_3, normal_3);
+    const LightSample _e4 = quad_light(_e3, position_3, normal_4);
     const LightSample lightsample_2 = _e4;
     return lightsample_2;
 }
 
-LightSample sample_light_query(uint i_2, float3 position_4, float3 normal_4)
+LightSample sample_light_query(uint i_2, float3 position_4, float3 normal_5)
 {
     FrameUniforms frame_4 = frame;
     if ((i_2 >= frame_4.light_count)) {
@@ -1297,9 +1312,18 @@ LightSample sample_light_query(uint i_2, float3 position_4, float3 normal_4)
     uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     uint _e22 = asuint(params.Load(entry*4));
     uint _e27 = asuint(params.Load((entry + 1u)*4));
-    const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     const LightSample lightsample_4 = _e28;
     return lightsample_4;
+}
+
+LightSample sample_light_above_query(uint i_3, float3 position_5, float3 normal_6)
+{
+    scratch[min(uint(min(SCRATCH_SHADOW_MODE, 14u)), 14u)] = SHADOW_ABOVE;
+    const LightSample _e9 = sample_light_query(i_3, position_5, normal_6);
+    scratch[min(uint(min(SCRATCH_SHADOW_MODE, 14u)), 14u)] = SHADOW_TRACED;
+    const LightSample lightsample_5 = _e9;
+    return lightsample_5;
 }
 
 float mis_weight(float p_6, float other)
@@ -1328,35 +1352,36 @@ float mis_light_weight(LightSample l_1, float bsdf_pdf)
 float3 path_diffuse_shade(PathDiffuse m_1, Ray ray_12, Hit hit_2, float3 secondary)
 {
     float3 direct = (float3)0;
-    uint i_3 = (uint)0;
+    uint i_4 = (uint)0;
 
     float3 n_10 = faceforward(hit_2.normal, ray_12.dir, hit_2.geometric_normal);
+    float3 ng = faceforward(hit_2.geometric_normal, ray_12.dir, hit_2.geometric_normal);
     direct = (0.0).xxx;
-    const uint _e12 = light_count_query();
-    i_3 = 0u;
+    const uint _e16 = light_count_query();
+    i_4 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e33 = i_3;
-            i_3 = (_e33 + 1u);
+            uint _e36 = i_4;
+            i_4 = (_e36 + 1u);
         }
         loop_init_2 = false;
-        uint _e14 = i_3;
-        if ((_e14 >= _e12)) {
+        uint _e18 = i_4;
+        if ((_e18 >= _e16)) {
             break;
         }
-        uint _e16 = i_3;
-        const LightSample _e19 = sample_light_query(_e16, hit_2.position, hit_2.geometric_normal);
-        float c_8 = max(dot(n_10, _e19.dir), 0.0);
-        float3 _e24 = direct;
-        const float _e28 = mis_light_weight(_e19, (c_8 * INV_PI));
-        direct = (_e24 + (_e19.radiance * ((c_8 * _e28)).xxx));
+        uint _e20 = i_4;
+        const LightSample _e22 = sample_light_above_query(_e20, hit_2.position, ng);
+        float c_8 = max(dot(n_10, _e22.dir), 0.0);
+        float3 _e27 = direct;
+        const float _e31 = mis_light_weight(_e22, (c_8 * INV_PI));
+        direct = (_e27 + (_e22.radiance * ((c_8 * _e31)).xxx));
     }
-    float3 _e40 = direct;
-    return (((m_1.albedo * (INV_PI).xxx) * _e40) + secondary);
+    float3 _e43 = direct;
+    return (((m_1.albedo * (INV_PI).xxx) * _e43) + secondary);
 }
 
 float3 dispatch_closest_hit(uint type_id_3, uint offset_7, Ray ray_13, Hit hit_3, float3 secondary_1)
@@ -1426,17 +1451,17 @@ float3 sample_cosine_hemisphere(float3 n_6, float2 u)
     return mul(local, _e17);
 }
 
-float3 mis_bounce_dir(float3 dir_2, float pdf)
+float3 mis_bounce_dir(float3 dir_3, float pdf)
 {
     float x_5 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
-    return (dir_2 * ((MIS_BOUNCE_LENGTH + x_5)).xxx);
+    return (dir_3 * ((MIS_BOUNCE_LENGTH + x_5)).xxx);
 }
 
-void rt_spawn(float3 dir_3, float3 weight)
+void rt_spawn(float3 dir_4, float3 weight)
 {
     uint _e3 = spawn_count;
     if ((_e3 < 1u)) {
-        spawn_dirs[min(uint(_e3), 0u)] = dir_3;
+        spawn_dirs[min(uint(_e3), 0u)] = dir_4;
         spawn_weights[min(uint(_e3), 0u)] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1446,8 +1471,8 @@ void path_diffuse_rays(PathDiffuse m_2, Ray ray_17, Hit hit_4)
 {
     float3 weight_1 = (float3)0;
 
-    float3 ng = (hit_4.front_face ? hit_4.geometric_normal : -(hit_4.geometric_normal));
-    float3 n_11 = faceforward(hit_4.normal, -(ng), hit_4.normal);
+    float3 ng_1 = (hit_4.front_face ? hit_4.geometric_normal : -(hit_4.geometric_normal));
+    float3 n_11 = faceforward(hit_4.normal, -(ng_1), hit_4.normal);
     const float2 _e12 = rand2_next();
     const float3 _e13 = sample_cosine_hemisphere(n_11, _e12);
     weight_1 = m_2.albedo;
@@ -1459,7 +1484,7 @@ void path_diffuse_rays(PathDiffuse m_2, Ray ray_17, Hit hit_4)
         }
         weight_1 = (m_2.albedo / (q_3).xxx);
     }
-    if ((dot(_e13, ng) > 0.0)) {
+    if ((dot(_e13, ng_1) > 0.0)) {
         const float3 _e41 = mis_bounce_dir(_e13, (max(dot(n_11, _e13), 0.0) * INV_PI));
         float3 _e42 = weight_1;
         rt_spawn(_e41, _e42);
@@ -1474,24 +1499,24 @@ void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_18, Hit hit_
     return;
 }
 
-float3 spawn_origin_at(float3 position_5, float3 normal_5, float error_1, float3 dir_4)
+float3 spawn_origin_at(float3 position_6, float3 normal_7, float error_1, float3 dir_5)
 {
     float3 n_7 = (float3)0;
 
-    n_7 = normal_5;
+    n_7 = normal_7;
     float3 _e5 = n_7;
-    if ((dot(dir_4, _e5) < 0.0)) {
+    if ((dot(dir_5, _e5) < 0.0)) {
         float3 _e9 = n_7;
         n_7 = -(_e9);
     }
     float3 _e11 = n_7;
-    const float3 _e12 = offset_origin(position_5, _e11, error_1);
+    const float3 _e12 = offset_origin(position_6, _e11, error_1);
     return _e12;
 }
 
-float3 spawn_origin(Hit hit_6, float error_2, float3 dir_5)
+float3 spawn_origin(Hit hit_6, float error_2, float3 dir_6)
 {
-    const float3 _e5 = spawn_origin_at(hit_6.position, hit_6.geometric_normal, error_2, dir_5);
+    const float3 _e5 = spawn_origin_at(hit_6.position, hit_6.geometric_normal, error_2, dir_6);
     return _e5;
 }
 
@@ -1499,7 +1524,7 @@ PathState path_step(PathState s_1, Candidate c_3)
 {
     PathState out_ = (PathState)0;
     bool spawned = (bool)0;
-    float3 dir_6 = (float3)0;
+    float3 dir_7 = (float3)0;
     float3 weight_2 = (float3)0;
     float3 beta = (float3)0;
 
@@ -1518,7 +1543,7 @@ PathState path_step(PathState s_1, Candidate c_3)
     const Hit _e22 = finish_hit(ray_24, c_3);
     float error_4 = hit_error;
     spawned = false;
-    dir_6 = (0.0).xxx;
+    dir_7 = (0.0).xxx;
     weight_2 = (0.0).xxx;
     if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_24.depth < MAX_DEPTH))) {
         spawn_count = 0u;
@@ -1527,7 +1552,7 @@ PathState path_step(PathState s_1, Candidate c_3)
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
             float3 _e56 = spawn_dirs[0u];
-            dir_6 = _e56;
+            dir_7 = _e56;
             float3 _e60 = spawn_weights[0u];
             weight_2 = _e60;
         }
@@ -1564,9 +1589,9 @@ PathState path_step(PathState s_1, Candidate c_3)
     }
     float3 _e111 = beta;
     out_.beta = _e111;
-    float3 _e113 = dir_6;
+    float3 _e113 = dir_7;
     const float3 _e114 = spawn_origin(_e22, error_4, _e113);
-    float3 _e116 = dir_6;
+    float3 _e116 = dir_7;
     uint _e118 = F32_INF;
     out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_24.depth + 1u), RAY_SECONDARY, ray_24.medium);
     out_.live = true;

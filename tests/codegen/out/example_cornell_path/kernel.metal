@@ -181,10 +181,13 @@ constant float GAMMA_6_ = 0.0000003576281;
 constant float GAMMA_4_ = 0.00000023841864;
 constant bool HAS_SECONDARY_RAYS = true;
 constant bool HAS_BACKGROUND = false;
+constant uint SCRATCH_SHADOW_MODE = 14u;
+constant uint SHADOW_ABOVE = 2u;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
-constant uint SCRATCH_UNOCCLUDED = 14u;
+constant uint SHADOW_UNOCCLUDED = 1u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
+constant uint SHADOW_TRACED = 0u;
 constant float INV_PI = 0.31830987;
 constant uint FLAG_MEDIUM = 4u;
 constant uint FLAG_SECONDARY_RAYS = 2u;
@@ -393,10 +396,10 @@ float rand_next(
     uint _e16 = pcg_hash(_e10 ^ ((d_1 >> 1u) * 2654435769u));
     uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)];
     uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
-    uint i_4 = metal::reverse_bits(_e24);
-    x_2 = i_4;
+    uint i_5 = metal::reverse_bits(_e24);
+    x_2 = i_5;
     if ((d_1 & 1u) != 0u) {
-        uint _e31 = sobol_second_reversed(i_4);
+        uint _e31 = sobol_second_reversed(i_5);
         x_2 = _e31;
     }
     uint scramble = _e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
@@ -1191,6 +1194,21 @@ QuadLight load_QuadLight(
     return QuadLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), metal::float3(as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)), metal::float3(as_type<float>(_e62), as_type<float>(_e68), as_type<float>(_e74)), as_type<float>(_e81), _e87};
 }
 
+float shadow_preset(
+    metal::float3 normal,
+    metal::float3 dir,
+    thread type_3& scratch
+) {
+    uint mode = scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 14u)];
+    if (mode == SHADOW_UNOCCLUDED) {
+        return 1.0;
+    }
+    if ((mode == SHADOW_ABOVE) && !((metal::dot(dir, normal) > 0.0))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 metal::float3 step_toward(
     metal::float3 x_3,
     metal::float3 s
@@ -1216,17 +1234,17 @@ metal::float3 offset_origin(
 
 Ray shadow_ray(
     metal::float3 position,
-    metal::float3 normal,
-    metal::float3 dir,
+    metal::float3 normal_1,
+    metal::float3 dir_1,
     float dist,
     thread uint& F32_INF,
     thread float& hit_error
 ) {
     metal::float3 n_4 = {};
     float tmax_4 = {};
-    n_4 = normal;
+    n_4 = normal_1;
     metal::float3 _e5 = n_4;
-    if (metal::dot(dir, _e5) < 0.0) {
+    if (metal::dot(dir_1, _e5) < 0.0) {
         metal::float3 _e9 = n_4;
         n_4 = -(_e9);
     }
@@ -1239,20 +1257,20 @@ Ray shadow_ray(
     tmax_4 = as_type<float>(_e25);
     uint _e29 = F32_INF;
     if (dist < as_type<float>(_e29)) {
-        metal::float3 light = position + (dir * metal::float3(dist));
-        float dd_1 = metal::dot(dir, dir);
-        float along_1 = metal::dot(light - _e23, dir) / dd_1;
-        metal::float3 l_2 = metal::abs(position) + metal::abs(dir * metal::float3(dist));
+        metal::float3 light = position + (dir_1 * metal::float3(dist));
+        float dd_1 = metal::dot(dir_1, dir_1);
+        float along_1 = metal::dot(light - _e23, dir_1) / dd_1;
+        metal::float3 l_2 = metal::abs(position) + metal::abs(dir_1 * metal::float3(dist));
         tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_2.x, l_2.y), l_2.z)) / metal::sqrt(dd_1));
     }
     float _e59 = tmax_4;
-    return Ray {_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u};
+    return Ray {_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u};
 }
 
 float shadow_query(
     metal::float3 position_1,
-    metal::float3 normal_1,
-    metal::float3 dir_1,
+    metal::float3 normal_2,
+    metal::float3 dir_2,
     float dist_1,
     constant FrameUniforms& frame,
     thread type_3& scratch,
@@ -1265,19 +1283,19 @@ float shadow_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e9 = scratch.inner[metal::min(SCRATCH_UNOCCLUDED, 14u)];
-    if (_e9 != 0u) {
-        return 1.0;
+    float _e4 = shadow_preset(normal_2, dir_2, scratch);
+    if (_e4 >= 0.0) {
+        return _e4;
     }
-    Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
-    Candidate _e15 = intersect_scene(_e13, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-    return (_e15.slot != NO_HIT) ? 0.0 : 1.0;
+    Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1, F32_INF, hit_error);
+    Candidate _e9 = intersect_scene(_e7, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return (_e9.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
 LightSample quad_light(
     QuadLight l,
     metal::float3 position_2,
-    metal::float3 normal_2,
+    metal::float3 normal_3,
     constant FrameUniforms& frame,
     thread type_3& scratch,
     thread uint& rng_state,
@@ -1296,22 +1314,22 @@ LightSample quad_light(
     metal::float3 to_light = ((l.corner + (l.edge_u * metal::float3(_e7.x))) + (l.edge_v * metal::float3(_e7.y))) - position_2;
     float dist2_ = metal::dot(to_light, to_light);
     float dist_2 = metal::sqrt(dist2_);
-    metal::float3 dir_7 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
-    float cos_light = -(metal::dot(dir_7, c_7)) / metal::max(area, 0.000000000000000000000000000001);
+    metal::float3 dir_8 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
+    float cos_light = -(metal::dot(dir_8, c_7)) / metal::max(area, 0.000000000000000000000000000001);
     if (!((cos_light > 0.0)) || !((dist2_ > 0.0))) {
-        return LightSample {dir_7, dist_2, metal::float3(0.0), 0.0};
+        return LightSample {dir_8, dist_2, metal::float3(0.0), 0.0};
     }
-    float _e42 = shadow_query(position_2, normal_2, dir_7, dist_2, frame, scratch, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    float _e42 = shadow_query(position_2, normal_3, dir_8, dist_2, frame, scratch, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     float strength = ((l.intensity * cos_light) * area) / dist2_;
     float pdf_1 = (l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0;
-    return LightSample {dir_7, dist_2, (l.color * metal::float3(strength)) * metal::float3(_e42), pdf_1};
+    return LightSample {dir_8, dist_2, (l.color * metal::float3(strength)) * metal::float3(_e42), pdf_1};
 }
 
 LightSample dispatch_light(
     uint type_id_2,
     uint offset_6,
     metal::float3 position_3,
-    metal::float3 normal_3,
+    metal::float3 normal_4,
     constant FrameUniforms& frame,
     thread type_3& scratch,
     thread uint& rng_state,
@@ -1326,14 +1344,14 @@ LightSample dispatch_light(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     QuadLight _e3 = load_QuadLight(offset_6, params, _buffer_sizes);
-    LightSample _e4 = quad_light(_e3, position_3, normal_3, frame, scratch, rng_state, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    LightSample _e4 = quad_light(_e3, position_3, normal_4, frame, scratch, rng_state, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e4;
 }
 
 LightSample sample_light_query(
     uint i_2,
     metal::float3 position_4,
-    metal::float3 normal_4,
+    metal::float3 normal_5,
     constant FrameUniforms& frame,
     thread type_3& scratch,
     thread uint& rng_state,
@@ -1354,8 +1372,31 @@ LightSample sample_light_query(
     uint entry = frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE);
     uint _e22 = params[entry];
     uint _e27 = params[entry + 1u];
-    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e28;
+}
+
+LightSample sample_light_above_query(
+    uint i_3,
+    metal::float3 position_5,
+    metal::float3 normal_6,
+    constant FrameUniforms& frame,
+    thread type_3& scratch,
+    thread uint& rng_state,
+    device type_5 const& params,
+    thread uint& F32_INF,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
+    thread float& hit_error,
+    thread uint& ray_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 14u)] = SHADOW_ABOVE;
+    LightSample _e9 = sample_light_query(i_3, position_5, normal_6, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 14u)] = SHADOW_TRACED;
+    return _e9;
 }
 
 float mis_weight(
@@ -1406,34 +1447,35 @@ metal::float3 path_diffuse_shade(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 direct = {};
-    uint i_3 = {};
+    uint i_4 = {};
     metal::float3 n_10 = metal::faceforward(hit_2.normal, ray_12.dir, hit_2.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_2.geometric_normal, ray_12.dir, hit_2.geometric_normal);
     direct = metal::float3(0.0);
-    uint _e12 = light_count_query(frame);
-    i_3 = 0u;
+    uint _e16 = light_count_query(frame);
+    i_4 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e33 = i_3;
-            i_3 = _e33 + 1u;
+            uint _e36 = i_4;
+            i_4 = _e36 + 1u;
         }
         loop_init_2 = false;
-        uint _e14 = i_3;
-        if (_e14 >= _e12) {
+        uint _e18 = i_4;
+        if (_e18 >= _e16) {
             break;
         }
-        uint _e16 = i_3;
-        LightSample _e19 = sample_light_query(_e16, hit_2.position, hit_2.geometric_normal, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
-        float c_8 = metal::max(metal::dot(n_10, _e19.dir), 0.0);
-        metal::float3 _e24 = direct;
-        float _e28 = mis_light_weight(_e19, c_8 * INV_PI, F32_INF);
-        direct = _e24 + (_e19.radiance * metal::float3(c_8 * _e28));
+        uint _e20 = i_4;
+        LightSample _e22 = sample_light_above_query(_e20, hit_2.position, ng, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+        float c_8 = metal::max(metal::dot(n_10, _e22.dir), 0.0);
+        metal::float3 _e27 = direct;
+        float _e31 = mis_light_weight(_e22, c_8 * INV_PI, F32_INF);
+        direct = _e27 + (_e22.radiance * metal::float3(c_8 * _e31));
     }
-    metal::float3 _e40 = direct;
-    return ((m_1.albedo * metal::float3(INV_PI)) * _e40) + secondary;
+    metal::float3 _e43 = direct;
+    return ((m_1.albedo * metal::float3(INV_PI)) * _e43) + secondary;
 }
 
 metal::float3 dispatch_closest_hit(
@@ -1549,15 +1591,15 @@ metal::float3 sample_cosine_hemisphere(
 }
 
 metal::float3 mis_bounce_dir(
-    metal::float3 dir_2,
+    metal::float3 dir_3,
     float pdf
 ) {
     float x_5 = metal::min(metal::log(1.0 + metal::max(pdf, 0.0)) * (1.0 / 90.0), 0.999);
-    return dir_2 * metal::float3(MIS_BOUNCE_LENGTH + x_5);
+    return dir_3 * metal::float3(MIS_BOUNCE_LENGTH + x_5);
 }
 
 void rt_spawn(
-    metal::float3 dir_3,
+    metal::float3 dir_4,
     metal::float3 weight,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
@@ -1565,7 +1607,7 @@ void rt_spawn(
 ) {
     uint _e3 = spawn_count;
     if (_e3 < 1u) {
-        spawn_dirs.inner[_e3] = dir_3;
+        spawn_dirs.inner[_e3] = dir_4;
         spawn_weights.inner[_e3] = weight;
         spawn_count = _e3 + 1u;
     }
@@ -1582,8 +1624,8 @@ void path_diffuse_rays(
     thread uint& spawn_count
 ) {
     metal::float3 weight_1 = {};
-    metal::float3 ng = hit_4.front_face ? hit_4.geometric_normal : -(hit_4.geometric_normal);
-    metal::float3 n_11 = metal::faceforward(hit_4.normal, -(ng), hit_4.normal);
+    metal::float3 ng_1 = hit_4.front_face ? hit_4.geometric_normal : -(hit_4.geometric_normal);
+    metal::float3 n_11 = metal::faceforward(hit_4.normal, -(ng_1), hit_4.normal);
     metal::float2 _e12 = rand2_next(scratch, rng_state);
     metal::float3 _e13 = sample_cosine_hemisphere(n_11, _e12);
     weight_1 = m_2.albedo;
@@ -1595,7 +1637,7 @@ void path_diffuse_rays(
         }
         weight_1 = m_2.albedo / metal::float3(q_3);
     }
-    if (metal::dot(_e13, ng) > 0.0) {
+    if (metal::dot(_e13, ng_1) > 0.0) {
         metal::float3 _e41 = mis_bounce_dir(_e13, metal::max(metal::dot(n_11, _e13), 0.0) * INV_PI);
         metal::float3 _e42 = weight_1;
         rt_spawn(_e41, _e42, spawn_dirs, spawn_weights, spawn_count);
@@ -1622,29 +1664,29 @@ void dispatch_secondary_rays(
 }
 
 metal::float3 spawn_origin_at(
-    metal::float3 position_5,
-    metal::float3 normal_5,
+    metal::float3 position_6,
+    metal::float3 normal_7,
     float error_1,
-    metal::float3 dir_4
+    metal::float3 dir_5
 ) {
     metal::float3 n_7 = {};
-    n_7 = normal_5;
+    n_7 = normal_7;
     metal::float3 _e5 = n_7;
-    if (metal::dot(dir_4, _e5) < 0.0) {
+    if (metal::dot(dir_5, _e5) < 0.0) {
         metal::float3 _e9 = n_7;
         n_7 = -(_e9);
     }
     metal::float3 _e11 = n_7;
-    metal::float3 _e12 = offset_origin(position_5, _e11, error_1);
+    metal::float3 _e12 = offset_origin(position_6, _e11, error_1);
     return _e12;
 }
 
 metal::float3 spawn_origin(
     Hit hit_6,
     float error_2,
-    metal::float3 dir_5
+    metal::float3 dir_6
 ) {
-    metal::float3 _e5 = spawn_origin_at(hit_6.position, hit_6.geometric_normal, error_2, dir_5);
+    metal::float3 _e5 = spawn_origin_at(hit_6.position, hit_6.geometric_normal, error_2, dir_6);
     return _e5;
 }
 
@@ -1670,7 +1712,7 @@ PathState path_step(
 ) {
     PathState out = {};
     bool spawned = {};
-    metal::float3 dir_6 = {};
+    metal::float3 dir_7 = {};
     metal::float3 weight_2 = {};
     metal::float3 beta = {};
     Ray ray_20 = s_1.ray;
@@ -1687,7 +1729,7 @@ PathState path_step(
     Hit _e22 = finish_hit(ray_20, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
     float error_4 = hit_error;
     spawned = false;
-    dir_6 = metal::float3(0.0);
+    dir_7 = metal::float3(0.0);
     weight_2 = metal::float3(0.0);
     if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_1.ray.depth < MAX_DEPTH)) {
         spawn_count = 0u;
@@ -1696,7 +1738,7 @@ PathState path_step(
         if (metal::min(_e47, 1u) > 0u) {
             spawned = true;
             metal::float3 _e56 = spawn_dirs.inner[0u];
-            dir_6 = _e56;
+            dir_7 = _e56;
             metal::float3 _e60 = spawn_weights.inner[0u];
             weight_2 = _e60;
         }
@@ -1730,9 +1772,9 @@ PathState path_step(
     }
     metal::float3 _e111 = beta;
     out.beta = _e111;
-    metal::float3 _e113 = dir_6;
+    metal::float3 _e113 = dir_7;
     metal::float3 _e114 = spawn_origin(_e22, error_4, _e113);
-    metal::float3 _e116 = dir_6;
+    metal::float3 _e116 = dir_7;
     uint _e118 = F32_INF;
     out.ray = Ray {_e114, 0.0, _e116, as_type<float>(_e118), s_1.ray.depth + 1u, RAY_SECONDARY, s_1.ray.medium};
     out.live = true;

@@ -155,10 +155,13 @@ const GAMMA_6_: f32 = 0.0000003576281f;
 const GAMMA_4_: f32 = 0.00000023841864f;
 const HAS_SECONDARY_RAYS: bool = true;
 const HAS_BACKGROUND: bool = false;
+const SCRATCH_SHADOW_MODE: u32 = 14u;
+const SHADOW_ABOVE: u32 = 2u;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
-const SCRATCH_UNOCCLUDED: u32 = 14u;
+const SHADOW_UNOCCLUDED: u32 = 1u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
+const SHADOW_TRACED: u32 = 0u;
 const INV_PI: f32 = 0.31830987f;
 const FLAG_MEDIUM: u32 = 4u;
 const FLAG_SECONDARY_RAYS: u32 = 2u;
@@ -336,10 +339,10 @@ fn rand_next() -> f32 {
     let _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
     let _e22 = scratch[min(SCRATCH_RNG_INDEX, 14u)];
     let _e24 = laine_karras(reverseBits(_e22), _e16);
-    let i_4 = reverseBits(_e24);
-    x_2 = i_4;
+    let i_5 = reverseBits(_e24);
+    x_2 = i_5;
     if ((d_1 & 1u) != 0u) {
-        let _e31 = sobol_second_reversed(i_4);
+        let _e31 = sobol_second_reversed(i_5);
         x_2 = _e31;
     }
     let scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
@@ -946,6 +949,17 @@ fn load_QuadLight(offset_5: u32) -> QuadLight {
     return QuadLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)), vec3<f32>(bitcast<f32>(_e62), bitcast<f32>(_e68), bitcast<f32>(_e74)), bitcast<f32>(_e81), _e87);
 }
 
+fn shadow_preset(normal: vec3<f32>, dir: vec3<f32>) -> f32 {
+    let mode = scratch[min(SCRATCH_SHADOW_MODE, 14u)];
+    if (mode == SHADOW_UNOCCLUDED) {
+        return 1f;
+    }
+    if ((mode == SHADOW_ABOVE) && !((dot(dir, normal) > 0f))) {
+        return 0f;
+    }
+    return -1f;
+}
+
 fn step_toward(x_3: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
     let bits_1 = bitcast<vec3<u32>>(x_3);
     let up_1 = ((sign(x_3) * sign(s)) > vec3(0f));
@@ -962,13 +976,13 @@ fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
     return _e17;
 }
 
-fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> Ray {
+fn shadow_ray(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist: f32) -> Ray {
     var n_4: vec3<f32>;
     var tmax_4: f32;
 
-    n_4 = normal;
+    n_4 = normal_1;
     let _e5 = n_4;
-    if (dot(dir, _e5) < 0f) {
+    if (dot(dir_1, _e5) < 0f) {
         let _e9 = n_4;
         n_4 = -(_e9);
     }
@@ -981,51 +995,51 @@ fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32)
     tmax_4 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
     if (dist < bitcast<f32>(_e29)) {
-        let light = (position + (dir * vec3(dist)));
-        let dd_1 = dot(dir, dir);
-        let along_1 = (dot((light - _e23), dir) / dd_1);
-        let l_2 = (abs(position) + abs((dir * vec3(dist))));
+        let light = (position + (dir_1 * vec3(dist)));
+        let dd_1 = dot(dir_1, dir_1);
+        let along_1 = (dot((light - _e23), dir_1) / dd_1);
+        let l_2 = (abs(position) + abs((dir_1 * vec3(dist))));
         tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     let _e59 = tmax_4;
-    return Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
-    let _e9 = scratch[min(SCRATCH_UNOCCLUDED, 14u)];
-    if (_e9 != 0u) {
-        return 1f;
+fn shadow_query(position_1: vec3<f32>, normal_2: vec3<f32>, dir_2: vec3<f32>, dist_1: f32) -> f32 {
+    let _e4 = shadow_preset(normal_2, dir_2);
+    if (_e4 >= 0f) {
+        return _e4;
     }
-    let _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    let _e15 = intersect_scene(_e13, true);
-    return select(1f, 0f, (_e15.slot != NO_HIT));
+    let _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    let _e9 = intersect_scene(_e7, true);
+    return select(1f, 0f, (_e9.slot != NO_HIT));
 }
 
-fn quad_light(l: QuadLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
+fn quad_light(l: QuadLight, position_2: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
     let c_7 = cross(l.edge_u, l.edge_v);
     let area = length(c_7);
     let _e7 = rand2_next();
     let to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_2);
     let dist2_ = dot(to_light, to_light);
     let dist_2 = sqrt(dist2_);
-    let dir_7 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
-    let cos_light = (-(dot(dir_7, c_7)) / max(area, 0.000000000000000000000000000001f));
+    let dir_8 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
+    let cos_light = (-(dot(dir_8, c_7)) / max(area, 0.000000000000000000000000000001f));
     if (!((cos_light > 0f)) || !((dist2_ > 0f))) {
-        return LightSample(dir_7, dist_2, vec3(0f), 0f);
+        return LightSample(dir_8, dist_2, vec3(0f), 0f);
     }
-    let _e42 = shadow_query(position_2, normal_2, dir_7, dist_2);
+    let _e42 = shadow_query(position_2, normal_3, dir_8, dist_2);
     let strength = (((l.intensity * cos_light) * area) / dist2_);
     let pdf_1 = select(0f, (dist2_ / (cos_light * area)), (l.lamp == 1u));
-    return LightSample(dir_7, dist_2, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
+    return LightSample(dir_8, dist_2, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
 }
 
-fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
+fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let _e3 = load_QuadLight(offset_6);
-    let _e4 = quad_light(_e3, position_3, normal_3);
+    let _e4 = quad_light(_e3, position_3, normal_4);
     return _e4;
 }
 
-fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
+fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
     let frame_4 = frame;
     if (i_2 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
@@ -1033,8 +1047,15 @@ fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> L
     let entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     let _e22 = params[entry];
     let _e27 = params[(entry + 1u)];
-    let _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    let _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     return _e28;
+}
+
+fn sample_light_above_query(i_3: u32, position_5: vec3<f32>, normal_6: vec3<f32>) -> LightSample {
+    scratch[min(SCRATCH_SHADOW_MODE, 14u)] = SHADOW_ABOVE;
+    let _e9 = sample_light_query(i_3, position_5, normal_6);
+    scratch[min(SCRATCH_SHADOW_MODE, 14u)] = SHADOW_TRACED;
+    return _e9;
 }
 
 fn mis_weight(p_6: f32, other: f32) -> f32 {
@@ -1060,30 +1081,31 @@ fn mis_light_weight(l_1: LightSample, bsdf_pdf: f32) -> f32 {
 
 fn path_diffuse_shade(m_1: PathDiffuse, ray_12: Ray, hit_2: Hit, secondary: vec3<f32>) -> vec3<f32> {
     var direct: vec3<f32>;
-    var i_3: u32;
+    var i_4: u32;
 
     let n_10 = faceForward(hit_2.normal, ray_12.dir, hit_2.geometric_normal);
+    let ng = faceForward(hit_2.geometric_normal, ray_12.dir, hit_2.geometric_normal);
     direct = vec3(0f);
-    let _e12 = light_count_query();
-    i_3 = 0u;
+    let _e16 = light_count_query();
+    i_4 = 0u;
     loop {
-        let _e14 = i_3;
-        if (_e14 >= _e12) {
+        let _e18 = i_4;
+        if (_e18 >= _e16) {
             break;
         }
-        let _e16 = i_3;
-        let _e19 = sample_light_query(_e16, hit_2.position, hit_2.geometric_normal);
-        let c_8 = max(dot(n_10, _e19.dir), 0f);
-        let _e24 = direct;
-        let _e28 = mis_light_weight(_e19, (c_8 * INV_PI));
-        direct = (_e24 + (_e19.radiance * vec3((c_8 * _e28))));
+        let _e20 = i_4;
+        let _e22 = sample_light_above_query(_e20, hit_2.position, ng);
+        let c_8 = max(dot(n_10, _e22.dir), 0f);
+        let _e27 = direct;
+        let _e31 = mis_light_weight(_e22, (c_8 * INV_PI));
+        direct = (_e27 + (_e22.radiance * vec3((c_8 * _e31))));
         continuing {
-            let _e33 = i_3;
-            i_3 = (_e33 + 1u);
+            let _e36 = i_4;
+            i_4 = (_e36 + 1u);
         }
     }
-    let _e40 = direct;
-    return (((m_1.albedo * vec3(INV_PI)) * _e40) + secondary);
+    let _e43 = direct;
+    return (((m_1.albedo * vec3(INV_PI)) * _e43) + secondary);
 }
 
 fn dispatch_closest_hit(type_id_3: u32, offset_7: u32, ray_13: Ray, hit_3: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
@@ -1146,15 +1168,15 @@ fn sample_cosine_hemisphere(n_6: vec3<f32>, u: vec2<f32>) -> vec3<f32> {
     return (_e17 * local);
 }
 
-fn mis_bounce_dir(dir_2: vec3<f32>, pdf: f32) -> vec3<f32> {
+fn mis_bounce_dir(dir_3: vec3<f32>, pdf: f32) -> vec3<f32> {
     let x_5 = min((log((1f + max(pdf, 0f))) * (1f / 90f)), 0.999f);
-    return (dir_2 * vec3((MIS_BOUNCE_LENGTH + x_5)));
+    return (dir_3 * vec3((MIS_BOUNCE_LENGTH + x_5)));
 }
 
-fn rt_spawn(dir_3: vec3<f32>, weight: vec3<f32>) {
+fn rt_spawn(dir_4: vec3<f32>, weight: vec3<f32>) {
     let _e3 = spawn_count;
     if (_e3 < 1u) {
-        spawn_dirs[_e3] = dir_3;
+        spawn_dirs[_e3] = dir_4;
         spawn_weights[_e3] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1163,8 +1185,8 @@ fn rt_spawn(dir_3: vec3<f32>, weight: vec3<f32>) {
 fn path_diffuse_rays(m_2: PathDiffuse, ray_17: Ray, hit_4: Hit) {
     var weight_1: vec3<f32>;
 
-    let ng = select(-(hit_4.geometric_normal), hit_4.geometric_normal, hit_4.front_face);
-    let n_11 = faceForward(hit_4.normal, -(ng), hit_4.normal);
+    let ng_1 = select(-(hit_4.geometric_normal), hit_4.geometric_normal, hit_4.front_face);
+    let n_11 = faceForward(hit_4.normal, -(ng_1), hit_4.normal);
     let _e12 = rand2_next();
     let _e13 = sample_cosine_hemisphere(n_11, _e12);
     weight_1 = m_2.albedo;
@@ -1176,7 +1198,7 @@ fn path_diffuse_rays(m_2: PathDiffuse, ray_17: Ray, hit_4: Hit) {
         }
         weight_1 = (m_2.albedo / vec3(q_3));
     }
-    if (dot(_e13, ng) > 0f) {
+    if (dot(_e13, ng_1) > 0f) {
         let _e41 = mis_bounce_dir(_e13, (max(dot(n_11, _e13), 0f) * INV_PI));
         let _e42 = weight_1;
         rt_spawn(_e41, _e42);
@@ -1190,29 +1212,29 @@ fn dispatch_secondary_rays(type_id_5: u32, offset_9: u32, ray_18: Ray, hit_5: Hi
     return;
 }
 
-fn spawn_origin_at(position_5: vec3<f32>, normal_5: vec3<f32>, error_1: f32, dir_4: vec3<f32>) -> vec3<f32> {
+fn spawn_origin_at(position_6: vec3<f32>, normal_7: vec3<f32>, error_1: f32, dir_5: vec3<f32>) -> vec3<f32> {
     var n_7: vec3<f32>;
 
-    n_7 = normal_5;
+    n_7 = normal_7;
     let _e5 = n_7;
-    if (dot(dir_4, _e5) < 0f) {
+    if (dot(dir_5, _e5) < 0f) {
         let _e9 = n_7;
         n_7 = -(_e9);
     }
     let _e11 = n_7;
-    let _e12 = offset_origin(position_5, _e11, error_1);
+    let _e12 = offset_origin(position_6, _e11, error_1);
     return _e12;
 }
 
-fn spawn_origin(hit_6: Hit, error_2: f32, dir_5: vec3<f32>) -> vec3<f32> {
-    let _e5 = spawn_origin_at(hit_6.position, hit_6.geometric_normal, error_2, dir_5);
+fn spawn_origin(hit_6: Hit, error_2: f32, dir_6: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_6.position, hit_6.geometric_normal, error_2, dir_6);
     return _e5;
 }
 
 fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
     var out: PathState;
     var spawned: bool;
-    var dir_6: vec3<f32>;
+    var dir_7: vec3<f32>;
     var weight_2: vec3<f32>;
     var beta: vec3<f32>;
 
@@ -1230,7 +1252,7 @@ fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
     let _e22 = finish_hit(ray_20, c_3);
     let error_4 = hit_error;
     spawned = false;
-    dir_6 = vec3(0f);
+    dir_7 = vec3(0f);
     weight_2 = vec3(0f);
     if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_20.depth < MAX_DEPTH)) {
         spawn_count = 0u;
@@ -1239,7 +1261,7 @@ fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
         if (min(_e47, 1u) > 0u) {
             spawned = true;
             let _e56 = spawn_dirs[0u];
-            dir_6 = _e56;
+            dir_7 = _e56;
             let _e60 = spawn_weights[0u];
             weight_2 = _e60;
         }
@@ -1273,9 +1295,9 @@ fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
     }
     let _e111 = beta;
     out.beta = _e111;
-    let _e113 = dir_6;
+    let _e113 = dir_7;
     let _e114 = spawn_origin(_e22, error_4, _e113);
-    let _e116 = dir_6;
+    let _e116 = dir_7;
     let _e118 = F32_INF;
     out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_20.depth + 1u), RAY_SECONDARY, ray_20.medium);
     out.live = true;

@@ -157,11 +157,14 @@ const bool HAS_SECONDARY_RAYS = true;
 const bool HAS_BACKGROUND = false;
 const uint SCRATCH_MEDIUM = 10u;
 const uint LIGHT_ENTRY_STRIDE = 2u;
-const uint SCRATCH_UNOCCLUDED = 14u;
+const uint SCRATCH_SHADOW_MODE = 14u;
+const uint SHADOW_UNOCCLUDED = 1u;
+const uint SHADOW_ABOVE = 2u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const bool HAS_ANY_HIT = true;
 const float INV_PI = 0.31830987;
 const uint FLAG_MEDIUM = 4u;
+const uint SHADOW_TRACED = 0u;
 const float PI = 3.1415927;
 const uint FLAG_SECONDARY_RAYS = 2u;
 const uint MAX_DEPTH = 3u;
@@ -1003,6 +1006,17 @@ PointLight load_PointLight(uint offset_6) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
+float shadow_preset(vec3 normal, vec3 dir) {
+    uint mode = scratch[min(SCRATCH_SHADOW_MODE, 14u)];
+    if ((mode == SHADOW_UNOCCLUDED)) {
+        return 1.0;
+    }
+    if (((mode == SHADOW_ABOVE) && !((dot(dir, normal) > 0.0)))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 vec3 step_toward(vec3 x_4, vec3 s) {
     uvec3 bits_1 = floatBitsToUint(x_4);
     bvec3 up_1 = greaterThan((sign(x_4) * sign(s)), vec3(0.0));
@@ -1019,12 +1033,12 @@ vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
     return _e17;
 }
 
-Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
+Ray shadow_ray(vec3 position, vec3 normal_1, vec3 dir_1, float dist) {
     vec3 n_4 = vec3(0.0);
     float tmax_4 = 0.0;
-    n_4 = normal;
+    n_4 = normal_1;
     vec3 _e5 = n_4;
-    if ((dot(dir, _e5) < 0.0)) {
+    if ((dot(dir_1, _e5) < 0.0)) {
         vec3 _e9 = n_4;
         n_4 = -(_e9);
     }
@@ -1037,14 +1051,14 @@ Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
     tmax_4 = uintBitsToFloat(_e25);
     uint _e29 = F32_INF;
     if ((dist < uintBitsToFloat(_e29))) {
-        vec3 light_1 = (position + (dir * vec3(dist)));
-        float dd_1 = dot(dir, dir);
-        float along_1 = (dot((light_1 - _e23), dir) / dd_1);
-        vec3 l_1 = (abs(position) + abs((dir * vec3(dist))));
+        vec3 light_1 = (position + (dir_1 * vec3(dist)));
+        float dd_1 = dot(dir_1, dir_1);
+        float along_1 = (dot((light_1 - _e23), dir_1) / dd_1);
+        vec3 l_1 = (abs(position) + abs((dir_1 * vec3(dist))));
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    return Ray(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
 }
 
 float shadow_transmittance(Ray ray_14, uint medium_1) {
@@ -1086,39 +1100,39 @@ float shadow_transmittance(Ray ray_14, uint medium_1) {
     return exp(-(max(_e118, 0.0)));
 }
 
-float shadow_query(vec3 position_1, vec3 normal_1, vec3 dir_1, float dist_1) {
-    uint _e9 = scratch[min(SCRATCH_UNOCCLUDED, 14u)];
-    if ((_e9 != 0u)) {
-        return 1.0;
+float shadow_query(vec3 position_1, vec3 normal_2, vec3 dir_2, float dist_1) {
+    float _e4 = shadow_preset(normal_2, dir_2);
+    if ((_e4 >= 0.0)) {
+        return _e4;
     }
-    Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    uint _e19 = scratch[min(SCRATCH_MEDIUM, 14u)];
-    float _e20 = shadow_transmittance(_e13, _e19);
-    return _e20;
+    Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    uint _e13 = scratch[min(SCRATCH_MEDIUM, 14u)];
+    float _e14 = shadow_transmittance(_e7, _e13);
+    return _e14;
 }
 
-LightSample point_light(PointLight l, vec3 position_2, vec3 normal_2) {
+LightSample point_light(PointLight l, vec3 position_2, vec3 normal_3) {
     float strength = 0.0;
     vec3 to_light = (l.position - position_2);
     float dist_2 = length(to_light);
-    vec3 dir_6 = (to_light / vec3(max(dist_2, 1e-20)));
+    vec3 dir_7 = (to_light / vec3(max(dist_2, 1e-20)));
     strength = (l.intensity / max((dist_2 * dist_2), 1e-20));
     if ((l.range > 0.0)) {
         float _e19 = strength;
         strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_2)));
     }
-    float _e26 = shadow_query(position_2, normal_2, dir_6, dist_2);
+    float _e26 = shadow_query(position_2, normal_3, dir_7, dist_2);
     float _e28 = strength;
-    return LightSample(dir_6, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0.0);
+    return LightSample(dir_7, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0.0);
 }
 
-LightSample dispatch_light(uint type_id_3, uint offset_7, vec3 position_3, vec3 normal_3) {
+LightSample dispatch_light(uint type_id_3, uint offset_7, vec3 position_3, vec3 normal_4) {
     PointLight _e3 = load_PointLight(offset_7);
-    LightSample _e4 = point_light(_e3, position_3, normal_3);
+    LightSample _e4 = point_light(_e3, position_3, normal_4);
     return _e4;
 }
 
-LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_4) {
+LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_5) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
     if ((i_2 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
@@ -1126,7 +1140,7 @@ LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_4) {
     uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     uint _e22 = _group_0_binding_6_cs[entry];
     uint _e27 = _group_0_binding_6_cs[(entry + 1u)];
-    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     return _e28;
 }
 
@@ -1184,21 +1198,21 @@ vec3 shade_direct(Ray ray_17, Candidate c_2) {
     return _e12;
 }
 
-LightSample sample_light_unoccluded_query(uint i_4, vec3 position_5, vec3 normal_5) {
-    scratch[min(SCRATCH_UNOCCLUDED, 14u)] = 1u;
-    LightSample _e9 = sample_light_query(i_4, position_5, normal_5);
-    scratch[min(SCRATCH_UNOCCLUDED, 14u)] = 0u;
+LightSample sample_light_unoccluded_query(uint i_4, vec3 position_5, vec3 normal_6) {
+    scratch[min(SCRATCH_SHADOW_MODE, 14u)] = SHADOW_UNOCCLUDED;
+    LightSample _e9 = sample_light_query(i_4, position_5, normal_6);
+    scratch[min(SCRATCH_SHADOW_MODE, 14u)] = SHADOW_TRACED;
     return _e9;
 }
 
-vec3 fog_inscatter(Fog m_3, uint i_5, vec3 o, vec3 dir_2, float d_1, float trans) {
+vec3 fog_inscatter(Fog m_3, uint i_5, vec3 o, vec3 dir_3, float d_1, float trans) {
     float s_1 = 0.0;
     float sigma_1 = m_3.density;
     bool tiny_1 = ((sigma_1 * d_1) < 0.001);
     LightSample _e12 = sample_light_unoccluded_query(i_5, o, vec3(0.0));
     vec3 c_6 = (_e12.dir * vec3(_e12.dist));
-    float delta = dot(c_6, dir_2);
-    float h_1 = length((c_6 - (dir_2 * vec3(delta))));
+    float delta = dot(c_6, dir_3);
+    float h_1 = length((c_6 - (dir_3 * vec3(delta))));
     bool _e22 = is_finite_f32_(h_1);
     bool equi = (_e22 && (h_1 > 1e-20));
     float ta = atan(-(delta), h_1);
@@ -1222,7 +1236,7 @@ vec3 fog_inscatter(Fog m_3, uint i_5, vec3 o, vec3 dir_2, float d_1, float trans
     float r_3 = (_e76 - delta);
     float pdf = (((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))) : 0.0));
     float _e91 = s_1;
-    LightSample _e97 = sample_light_query(i_5, (o + (dir_2 * vec3(_e91))), vec3(0.0));
+    LightSample _e97 = sample_light_query(i_5, (o + (dir_3 * vec3(_e91))), vec3(0.0));
     return (_e97.radiance * vec3(((sigma_1 * e_2) / pdf)));
 }
 
@@ -1280,10 +1294,10 @@ vec3 through_medium(Ray ray_20, float t_2, vec3 radiance_2) {
     return _e22;
 }
 
-void rt_spawn(vec3 dir_3, vec3 weight) {
+void rt_spawn(vec3 dir_4, vec3 weight) {
     uint _e3 = spawn_count;
     if ((_e3 < 1u)) {
-        spawn_dirs[_e3] = dir_3;
+        spawn_dirs[_e3] = dir_4;
         spawn_weights[_e3] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1300,11 +1314,11 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_22, Hit hit
     return;
 }
 
-vec3 spawn_origin_at(vec3 position_6, vec3 normal_6, float error_1, vec3 dir_4) {
+vec3 spawn_origin_at(vec3 position_6, vec3 normal_7, float error_1, vec3 dir_5) {
     vec3 n_5 = vec3(0.0);
-    n_5 = normal_6;
+    n_5 = normal_7;
     vec3 _e5 = n_5;
-    if ((dot(dir_4, _e5) < 0.0)) {
+    if ((dot(dir_5, _e5) < 0.0)) {
         vec3 _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1313,8 +1327,8 @@ vec3 spawn_origin_at(vec3 position_6, vec3 normal_6, float error_1, vec3 dir_4) 
     return _e12;
 }
 
-vec3 spawn_origin(Hit hit_9, float error_2, vec3 dir_5) {
-    vec3 _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_5);
+vec3 spawn_origin(Hit hit_9, float error_2, vec3 dir_6) {
+    vec3 _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_6);
     return _e5;
 }
 
@@ -1512,9 +1526,9 @@ vec3 trace(Ray camera_ray) {
             stack[min(top_1, 2u)].next = (i_9 + 1u);
             Ray parent = stack[min(top_1, 2u)].ray;
             Hit hit_12 = stack[min(top_1, 2u)].hit;
-            vec3 dir_7 = stack[min(top_1, 2u)].dirs[min(i_9, 0u)];
+            vec3 dir_8 = stack[min(top_1, 2u)].dirs[min(i_9, 0u)];
             medium_2 = parent.medium;
-            if ((dot(dir_7, hit_12.geometric_normal) < 0.0)) {
+            if ((dot(dir_8, hit_12.geometric_normal) < 0.0)) {
                 uint _e289 = stack[min(top_1, 2u)].slot;
                 medium_2 = (_e289 + 1u);
             } else {
@@ -1548,7 +1562,7 @@ vec3 trace(Ray camera_ray) {
                     bool _e353 = found;
                     if (!(_e353)) {
                         float _e359 = stack[min(top_1, 2u)].error;
-                        vec3 _e360 = spawn_origin(hit_12, _e359, dir_7);
+                        vec3 _e360 = spawn_origin(hit_12, _e359, dir_8);
                         uint _e365 = stack[min(top_1, 2u)].slot;
                         uint _e366 = medium_at(_e360, _e365);
                         medium_2 = _e366;
@@ -1556,10 +1570,10 @@ vec3 trace(Ray camera_ray) {
                 }
             }
             float _e371 = stack[min(top_1, 2u)].error;
-            vec3 _e372 = spawn_origin(hit_12, _e371, dir_7);
+            vec3 _e372 = spawn_origin(hit_12, _e371, dir_8);
             uint _e375 = F32_INF;
             uint _e381 = medium_2;
-            ray_23 = Ray(_e372, 0.0, dir_7, uintBitsToFloat(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
+            ray_23 = Ray(_e372, 0.0, dir_8, uintBitsToFloat(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
         } else {
             Ray _e387 = stack[min(top_1, 2u)].ray;
             s_ray = _e387;

@@ -199,11 +199,14 @@ static const bool HAS_SECONDARY_RAYS = true;
 static const bool HAS_BACKGROUND = false;
 static const uint SCRATCH_MEDIUM = 10u;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
-static const uint SCRATCH_UNOCCLUDED = 14u;
+static const uint SCRATCH_SHADOW_MODE = 14u;
+static const uint SHADOW_UNOCCLUDED = 1u;
+static const uint SHADOW_ABOVE = 2u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const bool HAS_ANY_HIT = true;
 static const float INV_PI = 0.31830987;
 static const uint FLAG_MEDIUM = 4u;
+static const uint SHADOW_TRACED = 0u;
 static const float PI = 3.1415927;
 static const uint FLAG_SECONDARY_RAYS = 2u;
 static const uint MAX_DEPTH = 3u;
@@ -1262,6 +1265,18 @@ PointLight load_PointLight(uint offset_6)
     return pointlight;
 }
 
+float shadow_preset(float3 normal, float3 dir)
+{
+    uint mode = scratch[min(uint(min(SCRATCH_SHADOW_MODE, 14u)), 14u)];
+    if ((mode == SHADOW_UNOCCLUDED)) {
+        return 1.0;
+    }
+    if (((mode == SHADOW_ABOVE) && !((dot(dir, normal) > 0.0)))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 float3 step_toward(float3 x_4, float3 s)
 {
     uint3 bits_1 = asuint(x_4);
@@ -1280,14 +1295,14 @@ float3 offset_origin(float3 p_5, float3 n_3, float error)
     return _e17;
 }
 
-Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
+Ray shadow_ray(float3 position, float3 normal_1, float3 dir_1, float dist)
 {
     float3 n_4 = (float3)0;
     float tmax_4 = (float)0;
 
-    n_4 = normal;
+    n_4 = normal_1;
     float3 _e5 = n_4;
-    if ((dot(dir, _e5) < 0.0)) {
+    if ((dot(dir_1, _e5) < 0.0)) {
         float3 _e9 = n_4;
         n_4 = -(_e9);
     }
@@ -1300,14 +1315,14 @@ Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
     tmax_4 = asfloat(_e25);
     uint _e29 = F32_INF;
     if ((dist < asfloat(_e29))) {
-        float3 light_1 = (position + (dir * (dist).xxx));
-        float dd_1 = dot(dir, dir);
-        float along_1 = (dot((light_1 - _e23), dir) / dd_1);
-        float3 l_1 = (abs(position) + abs((dir * (dist).xxx)));
+        float3 light_1 = (position + (dir_1 * (dist).xxx));
+        float dd_1 = dot(dir_1, dir_1);
+        float along_1 = (dot((light_1 - _e23), dir_1) / dd_1);
+        float3 l_1 = (abs(position) + abs((dir_1 * (dist).xxx)));
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_28 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    const Ray ray_28 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
     return ray_28;
 }
 
@@ -1352,16 +1367,16 @@ float shadow_transmittance(Ray ray_14, uint medium_1)
     return exp(-(max(_e118, 0.0)));
 }
 
-float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
+float shadow_query(float3 position_1, float3 normal_2, float3 dir_2, float dist_1)
 {
-    uint _e9 = scratch[min(uint(min(SCRATCH_UNOCCLUDED, 14u)), 14u)];
-    if ((_e9 != 0u)) {
-        return 1.0;
+    const float _e4 = shadow_preset(normal_2, dir_2);
+    if ((_e4 >= 0.0)) {
+        return _e4;
     }
-    const Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    uint _e19 = scratch[min(uint(min(SCRATCH_MEDIUM, 14u)), 14u)];
-    const float _e20 = shadow_transmittance(_e13, _e19);
-    return _e20;
+    const Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    uint _e13 = scratch[min(uint(min(SCRATCH_MEDIUM, 14u)), 14u)];
+    const float _e14 = shadow_transmittance(_e7, _e13);
+    return _e14;
 }
 
 LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
@@ -1373,33 +1388,33 @@ LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg
     return ret;
 }
 
-LightSample point_light(PointLight l, float3 position_2, float3 normal_2)
+LightSample point_light(PointLight l, float3 position_2, float3 normal_3)
 {
     float strength = (float)0;
 
     float3 to_light = (l.position - position_2);
     float dist_2 = length(to_light);
-    float3 dir_6 = (to_light / (max(dist_2, 1e-20)).xxx);
+    float3 dir_7 = (to_light / (max(dist_2, 1e-20)).xxx);
     strength = (l.intensity / max((dist_2 * dist_2), 1e-20));
     if ((l.range > 0.0)) {
         float _e19 = strength;
         strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_2)));
     }
-    const float _e26 = shadow_query(position_2, normal_2, dir_6, dist_2);
+    const float _e26 = shadow_query(position_2, normal_3, dir_7, dist_2);
     float _e28 = strength;
-    const LightSample lightsample = ConstructLightSample(dir_6, dist_2, ((l.color * (_e28).xxx) * (_e26).xxx), 0.0);
+    const LightSample lightsample = ConstructLightSample(dir_7, dist_2, ((l.color * (_e28).xxx) * (_e26).xxx), 0.0);
     return lightsample;
 }
 
-LightSample dispatch_light(uint type_id_3, uint offset_7, float3 position_3, float3 normal_3)
+LightSample dispatch_light(uint type_id_3, uint offset_7, float3 position_3, float3 normal_4)
 {
     const PointLight _e3 = load_PointLight(offset_7);
-    const LightSample _e4 = point_light(_e3, position_3, normal_3);
+    const LightSample _e4 = point_light(_e3, position_3, normal_4);
     const LightSample lightsample_1 = _e4;
     return lightsample_1;
 }
 
-LightSample sample_light_query(uint i_2, float3 position_4, float3 normal_4)
+LightSample sample_light_query(uint i_2, float3 position_4, float3 normal_5)
 {
     FrameUniforms frame_4 = frame;
     if ((i_2 >= frame_4.light_count)) {
@@ -1409,7 +1424,7 @@ LightSample sample_light_query(uint i_2, float3 position_4, float3 normal_4)
     uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     uint _e22 = asuint(params.Load(entry*4));
     uint _e27 = asuint(params.Load((entry + 1u)*4));
-    const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     const LightSample lightsample_3 = _e28;
     return lightsample_3;
 }
@@ -1475,16 +1490,16 @@ float3 shade_direct(Ray ray_17, Candidate c_2)
     return _e12;
 }
 
-LightSample sample_light_unoccluded_query(uint i_4, float3 position_5, float3 normal_5)
+LightSample sample_light_unoccluded_query(uint i_4, float3 position_5, float3 normal_6)
 {
-    scratch[min(uint(min(SCRATCH_UNOCCLUDED, 14u)), 14u)] = 1u;
-    const LightSample _e9 = sample_light_query(i_4, position_5, normal_5);
-    scratch[min(uint(min(SCRATCH_UNOCCLUDED, 14u)), 14u)] = 0u;
+    scratch[min(uint(min(SCRATCH_SHADOW_MODE, 14u)), 14u)] = SHADOW_UNOCCLUDED;
+    const LightSample _e9 = sample_light_query(i_4, position_5, normal_6);
+    scratch[min(uint(min(SCRATCH_SHADOW_MODE, 14u)), 14u)] = SHADOW_TRACED;
     const LightSample lightsample_4 = _e9;
     return lightsample_4;
 }
 
-float3 fog_inscatter(Fog m_3, uint i_5, float3 o, float3 dir_2, float d_1, float trans)
+float3 fog_inscatter(Fog m_3, uint i_5, float3 o, float3 dir_3, float d_1, float trans)
 {
     float s_1 = (float)0;
 
@@ -1492,8 +1507,8 @@ float3 fog_inscatter(Fog m_3, uint i_5, float3 o, float3 dir_2, float d_1, float
     bool tiny_1 = ((sigma_1 * d_1) < 0.001);
     const LightSample _e12 = sample_light_unoccluded_query(i_5, o, (0.0).xxx);
     float3 c_6 = (_e12.dir * (_e12.dist).xxx);
-    float delta = dot(c_6, dir_2);
-    float h_1 = length((c_6 - (dir_2 * (delta).xxx)));
+    float delta = dot(c_6, dir_3);
+    float h_1 = length((c_6 - (dir_3 * (delta).xxx)));
     const bool _e22 = is_finite_f32_(h_1);
     bool equi = (_e22 && (h_1 > 1e-20));
     float ta = atan2(-(delta), h_1);
@@ -1517,7 +1532,7 @@ float3 fog_inscatter(Fog m_3, uint i_5, float3 o, float3 dir_2, float d_1, float
     float r_3 = (_e76 - delta);
     float pdf = (((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))) : 0.0));
     float _e91 = s_1;
-    const LightSample _e97 = sample_light_query(i_5, (o + (dir_2 * (_e91).xxx)), (0.0).xxx);
+    const LightSample _e97 = sample_light_query(i_5, (o + (dir_3 * (_e91).xxx)), (0.0).xxx);
     return (_e97.radiance * (((sigma_1 * e_2) / pdf)).xxx);
 }
 
@@ -1582,11 +1597,11 @@ float3 through_medium(Ray ray_20, float t_2, float3 radiance_2)
     return _e22;
 }
 
-void rt_spawn(float3 dir_3, float3 weight)
+void rt_spawn(float3 dir_4, float3 weight)
 {
     uint _e3 = spawn_count;
     if ((_e3 < 1u)) {
-        spawn_dirs[min(uint(_e3), 0u)] = dir_3;
+        spawn_dirs[min(uint(_e3), 0u)] = dir_4;
         spawn_weights[min(uint(_e3), 0u)] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1605,13 +1620,13 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_22, Hit hit
     return;
 }
 
-float3 spawn_origin_at(float3 position_6, float3 normal_6, float error_1, float3 dir_4)
+float3 spawn_origin_at(float3 position_6, float3 normal_7, float error_1, float3 dir_5)
 {
     float3 n_5 = (float3)0;
 
-    n_5 = normal_6;
+    n_5 = normal_7;
     float3 _e5 = n_5;
-    if ((dot(dir_4, _e5) < 0.0)) {
+    if ((dot(dir_5, _e5) < 0.0)) {
         float3 _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1620,9 +1635,9 @@ float3 spawn_origin_at(float3 position_6, float3 normal_6, float error_1, float3
     return _e12;
 }
 
-float3 spawn_origin(Hit hit_9, float error_2, float3 dir_5)
+float3 spawn_origin(Hit hit_9, float error_2, float3 dir_6)
 {
-    const float3 _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_5);
+    const float3 _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_6);
     return _e5;
 }
 
@@ -1852,9 +1867,9 @@ float3 trace(Ray camera_ray)
             stack[min(uint(min(top_1, 2u)), 2u)].next = (i_9 + 1u);
             Ray parent = stack[min(uint(min(top_1, 2u)), 2u)].ray;
             Hit hit_13 = stack[min(uint(min(top_1, 2u)), 2u)].hit;
-            float3 dir_7 = stack[min(uint(min(top_1, 2u)), 2u)].dirs[min(uint(min(i_9, 0u)), 0u)];
+            float3 dir_8 = stack[min(uint(min(top_1, 2u)), 2u)].dirs[min(uint(min(i_9, 0u)), 0u)];
             medium_2 = parent.medium;
-            if ((dot(dir_7, hit_13.geometric_normal) < 0.0)) {
+            if ((dot(dir_8, hit_13.geometric_normal) < 0.0)) {
                 uint _e289 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
                 medium_2 = (_e289 + 1u);
             } else {
@@ -1891,7 +1906,7 @@ float3 trace(Ray camera_ray)
                     bool _e353 = found;
                     if (!(_e353)) {
                         float _e359 = stack[min(uint(min(top_1, 2u)), 2u)].error;
-                        const float3 _e360 = spawn_origin(hit_13, _e359, dir_7);
+                        const float3 _e360 = spawn_origin(hit_13, _e359, dir_8);
                         uint _e365 = stack[min(uint(min(top_1, 2u)), 2u)].slot;
                         const uint _e366 = medium_at(_e360, _e365);
                         medium_2 = _e366;
@@ -1899,10 +1914,10 @@ float3 trace(Ray camera_ray)
                 }
             }
             float _e371 = stack[min(uint(min(top_1, 2u)), 2u)].error;
-            const float3 _e372 = spawn_origin(hit_13, _e371, dir_7);
+            const float3 _e372 = spawn_origin(hit_13, _e371, dir_8);
             uint _e375 = F32_INF;
             uint _e381 = medium_2;
-            ray_23 = ConstructRay(_e372, 0.0, dir_7, asfloat(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
+            ray_23 = ConstructRay(_e372, 0.0, dir_8, asfloat(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
         } else {
             Ray _e387 = stack[min(uint(min(top_1, 2u)), 2u)].ray;
             s_ray = _e387;

@@ -197,11 +197,14 @@ constant bool HAS_SECONDARY_RAYS = true;
 constant bool HAS_BACKGROUND = false;
 constant uint SCRATCH_MEDIUM = 10u;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
-constant uint SCRATCH_UNOCCLUDED = 14u;
+constant uint SCRATCH_SHADOW_MODE = 14u;
+constant uint SHADOW_UNOCCLUDED = 1u;
+constant uint SHADOW_ABOVE = 2u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant bool HAS_ANY_HIT = true;
 constant float INV_PI = 0.31830987;
 constant uint FLAG_MEDIUM = 4u;
+constant uint SHADOW_TRACED = 0u;
 constant float PI = 3.1415927;
 constant uint FLAG_SECONDARY_RAYS = 2u;
 constant uint MAX_DEPTH = 3u;
@@ -1304,6 +1307,21 @@ PointLight load_PointLight(
     return PointLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)};
 }
 
+float shadow_preset(
+    metal::float3 normal,
+    metal::float3 dir,
+    thread type_3& scratch
+) {
+    uint mode = scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 14u)];
+    if (mode == SHADOW_UNOCCLUDED) {
+        return 1.0;
+    }
+    if ((mode == SHADOW_ABOVE) && !((metal::dot(dir, normal) > 0.0))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 metal::float3 step_toward(
     metal::float3 x_4,
     metal::float3 s
@@ -1329,17 +1347,17 @@ metal::float3 offset_origin(
 
 Ray shadow_ray(
     metal::float3 position,
-    metal::float3 normal,
-    metal::float3 dir,
+    metal::float3 normal_1,
+    metal::float3 dir_1,
     float dist,
     thread uint& F32_INF,
     thread float& hit_error
 ) {
     metal::float3 n_4 = {};
     float tmax_4 = {};
-    n_4 = normal;
+    n_4 = normal_1;
     metal::float3 _e5 = n_4;
-    if (metal::dot(dir, _e5) < 0.0) {
+    if (metal::dot(dir_1, _e5) < 0.0) {
         metal::float3 _e9 = n_4;
         n_4 = -(_e9);
     }
@@ -1352,14 +1370,14 @@ Ray shadow_ray(
     tmax_4 = as_type<float>(_e25);
     uint _e29 = F32_INF;
     if (dist < as_type<float>(_e29)) {
-        metal::float3 light_1 = position + (dir * metal::float3(dist));
-        float dd_1 = metal::dot(dir, dir);
-        float along_1 = metal::dot(light_1 - _e23, dir) / dd_1;
-        metal::float3 l_1 = metal::abs(position) + metal::abs(dir * metal::float3(dist));
+        metal::float3 light_1 = position + (dir_1 * metal::float3(dist));
+        float dd_1 = metal::dot(dir_1, dir_1);
+        float along_1 = metal::dot(light_1 - _e23, dir_1) / dd_1;
+        metal::float3 l_1 = metal::abs(position) + metal::abs(dir_1 * metal::float3(dist));
         tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_1.x, l_1.y), l_1.z)) / metal::sqrt(dd_1));
     }
     float _e59 = tmax_4;
-    return Ray {_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u};
+    return Ray {_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u};
 }
 
 float shadow_transmittance(
@@ -1418,8 +1436,8 @@ float shadow_transmittance(
 
 float shadow_query(
     metal::float3 position_1,
-    metal::float3 normal_1,
-    metal::float3 dir_1,
+    metal::float3 normal_2,
+    metal::float3 dir_2,
     float dist_1,
     constant FrameUniforms& frame,
     thread type_3& scratch,
@@ -1434,20 +1452,20 @@ float shadow_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e9 = scratch.inner[metal::min(SCRATCH_UNOCCLUDED, 14u)];
-    if (_e9 != 0u) {
-        return 1.0;
+    float _e4 = shadow_preset(normal_2, dir_2, scratch);
+    if (_e4 >= 0.0) {
+        return _e4;
     }
-    Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1, F32_INF, hit_error);
-    uint _e19 = scratch.inner[metal::min(SCRATCH_MEDIUM, 14u)];
-    float _e20 = shadow_transmittance(_e13, _e19, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
-    return _e20;
+    Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1, F32_INF, hit_error);
+    uint _e13 = scratch.inner[metal::min(SCRATCH_MEDIUM, 14u)];
+    float _e14 = shadow_transmittance(_e7, _e13, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    return _e14;
 }
 
 LightSample point_light(
     PointLight l,
     metal::float3 position_2,
-    metal::float3 normal_2,
+    metal::float3 normal_3,
     constant FrameUniforms& frame,
     thread type_3& scratch,
     device type_5 const& params,
@@ -1464,22 +1482,22 @@ LightSample point_light(
     float strength = {};
     metal::float3 to_light = l.position - position_2;
     float dist_2 = metal::length(to_light);
-    metal::float3 dir_6 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
+    metal::float3 dir_7 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
     strength = l.intensity / metal::max(dist_2 * dist_2, 0.00000000000000000001);
     if (l.range > 0.0) {
         float _e19 = strength;
         strength = _e19 * (1.0 - metal::smoothstep(l.inner_range, l.range, dist_2));
     }
-    float _e26 = shadow_query(position_2, normal_2, dir_6, dist_2, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    float _e26 = shadow_query(position_2, normal_3, dir_7, dist_2, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     float _e28 = strength;
-    return LightSample {dir_6, dist_2, (l.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
+    return LightSample {dir_7, dist_2, (l.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
 }
 
 LightSample dispatch_light(
     uint type_id_3,
     uint offset_7,
     metal::float3 position_3,
-    metal::float3 normal_3,
+    metal::float3 normal_4,
     constant FrameUniforms& frame,
     thread type_3& scratch,
     device type_5 const& params,
@@ -1494,14 +1512,14 @@ LightSample dispatch_light(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PointLight _e3 = load_PointLight(offset_7, params, _buffer_sizes);
-    LightSample _e4 = point_light(_e3, position_3, normal_3, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e4 = point_light(_e3, position_3, normal_4, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e4;
 }
 
 LightSample sample_light_query(
     uint i_2,
     metal::float3 position_4,
-    metal::float3 normal_4,
+    metal::float3 normal_5,
     constant FrameUniforms& frame,
     thread type_3& scratch,
     device type_5 const& params,
@@ -1522,7 +1540,7 @@ LightSample sample_light_query(
     uint entry = frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE);
     uint _e22 = params[entry];
     uint _e27 = params[entry + 1u];
-    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e28;
 }
 
@@ -1635,7 +1653,7 @@ metal::float3 shade_direct(
 LightSample sample_light_unoccluded_query(
     uint i_4,
     metal::float3 position_5,
-    metal::float3 normal_5,
+    metal::float3 normal_6,
     constant FrameUniforms& frame,
     thread type_3& scratch,
     device type_5 const& params,
@@ -1649,9 +1667,9 @@ LightSample sample_light_unoccluded_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    scratch.inner[metal::min(SCRATCH_UNOCCLUDED, 14u)] = 1u;
-    LightSample _e9 = sample_light_query(i_4, position_5, normal_5, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
-    scratch.inner[metal::min(SCRATCH_UNOCCLUDED, 14u)] = 0u;
+    scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 14u)] = SHADOW_UNOCCLUDED;
+    LightSample _e9 = sample_light_query(i_4, position_5, normal_6, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 14u)] = SHADOW_TRACED;
     return _e9;
 }
 
@@ -1659,7 +1677,7 @@ metal::float3 fog_inscatter(
     Fog m_3,
     uint i_5,
     metal::float3 o,
-    metal::float3 dir_2,
+    metal::float3 dir_3,
     float d_1,
     float trans,
     constant FrameUniforms& frame,
@@ -1681,8 +1699,8 @@ metal::float3 fog_inscatter(
     bool tiny_1 = (sigma_1 * d_1) < 0.001;
     LightSample _e12 = sample_light_unoccluded_query(i_5, o, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     metal::float3 c_6 = _e12.dir * metal::float3(_e12.dist);
-    float delta = metal::dot(c_6, dir_2);
-    float h_1 = metal::length(c_6 - (dir_2 * metal::float3(delta)));
+    float delta = metal::dot(c_6, dir_3);
+    float h_1 = metal::length(c_6 - (dir_3 * metal::float3(delta)));
     bool _e22 = is_finite_f32_(h_1);
     bool equi = _e22 && (h_1 > 0.00000000000000000001);
     float ta = metal::atan2(-(delta), h_1);
@@ -1706,7 +1724,7 @@ metal::float3 fog_inscatter(
     float r_3 = _e76 - delta;
     float pdf = ((1.0 - w_3) * p_free) + (equi ? ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))) : 0.0);
     float _e91 = s_1;
-    LightSample _e97 = sample_light_query(i_5, o + (dir_2 * metal::float3(_e91)), metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    LightSample _e97 = sample_light_query(i_5, o + (dir_3 * metal::float3(_e91)), metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e97.radiance * metal::float3((sigma_1 * e_2) / pdf);
 }
 
@@ -1822,7 +1840,7 @@ metal::float3 through_medium(
 }
 
 void rt_spawn(
-    metal::float3 dir_3,
+    metal::float3 dir_4,
     metal::float3 weight,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
@@ -1830,7 +1848,7 @@ void rt_spawn(
 ) {
     uint _e3 = spawn_count;
     if (_e3 < 1u) {
-        spawn_dirs.inner[_e3] = dir_3;
+        spawn_dirs.inner[_e3] = dir_4;
         spawn_weights.inner[_e3] = weight;
         spawn_count = _e3 + 1u;
     }
@@ -1866,14 +1884,14 @@ void dispatch_secondary_rays(
 
 metal::float3 spawn_origin_at(
     metal::float3 position_6,
-    metal::float3 normal_6,
+    metal::float3 normal_7,
     float error_1,
-    metal::float3 dir_4
+    metal::float3 dir_5
 ) {
     metal::float3 n_5 = {};
-    n_5 = normal_6;
+    n_5 = normal_7;
     metal::float3 _e5 = n_5;
-    if (metal::dot(dir_4, _e5) < 0.0) {
+    if (metal::dot(dir_5, _e5) < 0.0) {
         metal::float3 _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1885,9 +1903,9 @@ metal::float3 spawn_origin_at(
 metal::float3 spawn_origin(
     Hit hit_9,
     float error_2,
-    metal::float3 dir_5
+    metal::float3 dir_6
 ) {
-    metal::float3 _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_5);
+    metal::float3 _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_6);
     return _e5;
 }
 
@@ -2109,9 +2127,9 @@ metal::float3 trace(
             stack.inner[metal::min(top_1, 2u)].next = i_9 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 2u)].ray;
             Hit hit_12 = stack.inner[metal::min(top_1, 2u)].hit;
-            metal::float3 dir_7 = stack.inner[metal::min(top_1, 2u)].dirs.inner[metal::min(i_9, 0u)];
+            metal::float3 dir_8 = stack.inner[metal::min(top_1, 2u)].dirs.inner[metal::min(i_9, 0u)];
             medium_2 = parent.medium;
-            if (metal::dot(dir_7, hit_12.geometric_normal) < 0.0) {
+            if (metal::dot(dir_8, hit_12.geometric_normal) < 0.0) {
                 uint _e289 = stack.inner[metal::min(top_1, 2u)].slot;
                 medium_2 = _e289 + 1u;
             } else {
@@ -2148,7 +2166,7 @@ metal::float3 trace(
                     bool _e353 = found;
                     if (!(_e353)) {
                         float _e359 = stack.inner[metal::min(top_1, 2u)].error;
-                        metal::float3 _e360 = spawn_origin(hit_12, _e359, dir_7);
+                        metal::float3 _e360 = spawn_origin(hit_12, _e359, dir_8);
                         uint _e365 = stack.inner[metal::min(top_1, 2u)].slot;
                         uint _e366 = medium_at(_e360, _e365, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
                         medium_2 = _e366;
@@ -2156,10 +2174,10 @@ metal::float3 trace(
                 }
             }
             float _e371 = stack.inner[metal::min(top_1, 2u)].error;
-            metal::float3 _e372 = spawn_origin(hit_12, _e371, dir_7);
+            metal::float3 _e372 = spawn_origin(hit_12, _e371, dir_8);
             uint _e375 = F32_INF;
             uint _e381 = medium_2;
-            ray_23 = Ray {_e372, 0.0, dir_7, as_type<float>(_e375), parent.depth + 1u, RAY_SECONDARY, _e381};
+            ray_23 = Ray {_e372, 0.0, dir_8, as_type<float>(_e375), parent.depth + 1u, RAY_SECONDARY, _e381};
         } else {
             Ray _e387 = stack.inner[metal::min(top_1, 2u)].ray;
             s_ray = _e387;

@@ -167,11 +167,14 @@ const HAS_SECONDARY_RAYS: bool = true;
 const HAS_BACKGROUND: bool = false;
 const SCRATCH_MEDIUM: u32 = 10u;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
-const SCRATCH_UNOCCLUDED: u32 = 14u;
+const SCRATCH_SHADOW_MODE: u32 = 14u;
+const SHADOW_UNOCCLUDED: u32 = 1u;
+const SHADOW_ABOVE: u32 = 2u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const HAS_ANY_HIT: bool = true;
 const INV_PI: f32 = 0.31830987f;
 const FLAG_MEDIUM: u32 = 4u;
+const SHADOW_TRACED: u32 = 0u;
 const PI: f32 = 3.1415927f;
 const FLAG_SECONDARY_RAYS: u32 = 2u;
 const MAX_DEPTH: u32 = 3u;
@@ -1012,6 +1015,17 @@ fn load_PointLight(offset_6: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
+fn shadow_preset(normal: vec3<f32>, dir: vec3<f32>) -> f32 {
+    let mode = scratch[min(SCRATCH_SHADOW_MODE, 14u)];
+    if (mode == SHADOW_UNOCCLUDED) {
+        return 1f;
+    }
+    if ((mode == SHADOW_ABOVE) && !((dot(dir, normal) > 0f))) {
+        return 0f;
+    }
+    return -1f;
+}
+
 fn step_toward(x_4: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
     let bits_1 = bitcast<vec3<u32>>(x_4);
     let up_1 = ((sign(x_4) * sign(s)) > vec3(0f));
@@ -1028,13 +1042,13 @@ fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
     return _e17;
 }
 
-fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> Ray {
+fn shadow_ray(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist: f32) -> Ray {
     var n_4: vec3<f32>;
     var tmax_4: f32;
 
-    n_4 = normal;
+    n_4 = normal_1;
     let _e5 = n_4;
-    if (dot(dir, _e5) < 0f) {
+    if (dot(dir_1, _e5) < 0f) {
         let _e9 = n_4;
         n_4 = -(_e9);
     }
@@ -1047,14 +1061,14 @@ fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32)
     tmax_4 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
     if (dist < bitcast<f32>(_e29)) {
-        let light_1 = (position + (dir * vec3(dist)));
-        let dd_1 = dot(dir, dir);
-        let along_1 = (dot((light_1 - _e23), dir) / dd_1);
-        let l_1 = (abs(position) + abs((dir * vec3(dist))));
+        let light_1 = (position + (dir_1 * vec3(dist)));
+        let dd_1 = dot(dir_1, dir_1);
+        let along_1 = (dot((light_1 - _e23), dir_1) / dd_1);
+        let l_1 = (abs(position) + abs((dir_1 * vec3(dist))));
         tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     let _e59 = tmax_4;
-    return Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
 }
 
 fn shadow_transmittance(ray_14: Ray, medium_1: u32) -> f32 {
@@ -1097,40 +1111,40 @@ fn shadow_transmittance(ray_14: Ray, medium_1: u32) -> f32 {
     return exp(-(max(_e118, 0f)));
 }
 
-fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
-    let _e9 = scratch[min(SCRATCH_UNOCCLUDED, 14u)];
-    if (_e9 != 0u) {
-        return 1f;
+fn shadow_query(position_1: vec3<f32>, normal_2: vec3<f32>, dir_2: vec3<f32>, dist_1: f32) -> f32 {
+    let _e4 = shadow_preset(normal_2, dir_2);
+    if (_e4 >= 0f) {
+        return _e4;
     }
-    let _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    let _e19 = scratch[min(SCRATCH_MEDIUM, 14u)];
-    let _e20 = shadow_transmittance(_e13, _e19);
-    return _e20;
+    let _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    let _e13 = scratch[min(SCRATCH_MEDIUM, 14u)];
+    let _e14 = shadow_transmittance(_e7, _e13);
+    return _e14;
 }
 
-fn point_light(l: PointLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
+fn point_light(l: PointLight, position_2: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
     var strength: f32;
 
     let to_light = (l.position - position_2);
     let dist_2 = length(to_light);
-    let dir_6 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
+    let dir_7 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
     strength = (l.intensity / max((dist_2 * dist_2), 0.00000000000000000001f));
     if (l.range > 0f) {
         let _e19 = strength;
         strength = (_e19 * (1f - smoothstep(l.inner_range, l.range, dist_2)));
     }
-    let _e26 = shadow_query(position_2, normal_2, dir_6, dist_2);
+    let _e26 = shadow_query(position_2, normal_3, dir_7, dist_2);
     let _e28 = strength;
-    return LightSample(dir_6, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0f);
+    return LightSample(dir_7, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0f);
 }
 
-fn dispatch_light(type_id_3: u32, offset_7: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
+fn dispatch_light(type_id_3: u32, offset_7: u32, position_3: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let _e3 = load_PointLight(offset_7);
-    let _e4 = point_light(_e3, position_3, normal_3);
+    let _e4 = point_light(_e3, position_3, normal_4);
     return _e4;
 }
 
-fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
+fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
     let frame_4 = frame;
     if (i_2 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
@@ -1138,7 +1152,7 @@ fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> L
     let entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     let _e22 = params[entry];
     let _e27 = params[(entry + 1u)];
-    let _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    let _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     return _e28;
 }
 
@@ -1194,22 +1208,22 @@ fn shade_direct(ray_17: Ray, c_2: Candidate) -> vec3<f32> {
     return _e12;
 }
 
-fn sample_light_unoccluded_query(i_4: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
-    scratch[min(SCRATCH_UNOCCLUDED, 14u)] = 1u;
-    let _e9 = sample_light_query(i_4, position_5, normal_5);
-    scratch[min(SCRATCH_UNOCCLUDED, 14u)] = 0u;
+fn sample_light_unoccluded_query(i_4: u32, position_5: vec3<f32>, normal_6: vec3<f32>) -> LightSample {
+    scratch[min(SCRATCH_SHADOW_MODE, 14u)] = SHADOW_UNOCCLUDED;
+    let _e9 = sample_light_query(i_4, position_5, normal_6);
+    scratch[min(SCRATCH_SHADOW_MODE, 14u)] = SHADOW_TRACED;
     return _e9;
 }
 
-fn fog_inscatter(m_3: Fog, i_5: u32, o: vec3<f32>, dir_2: vec3<f32>, d_1: f32, trans: f32) -> vec3<f32> {
+fn fog_inscatter(m_3: Fog, i_5: u32, o: vec3<f32>, dir_3: vec3<f32>, d_1: f32, trans: f32) -> vec3<f32> {
     var s_1: f32;
 
     let sigma_1 = m_3.density;
     let tiny_1 = ((sigma_1 * d_1) < 0.001f);
     let _e12 = sample_light_unoccluded_query(i_5, o, vec3(0f));
     let c_6 = (_e12.dir * vec3(_e12.dist));
-    let delta = dot(c_6, dir_2);
-    let h_1 = length((c_6 - (dir_2 * vec3(delta))));
+    let delta = dot(c_6, dir_3);
+    let h_1 = length((c_6 - (dir_3 * vec3(delta))));
     let _e22 = is_finite_f32_(h_1);
     let equi = (_e22 && (h_1 > 0.00000000000000000001f));
     let ta = atan2(-(delta), h_1);
@@ -1233,7 +1247,7 @@ fn fog_inscatter(m_3: Fog, i_5: u32, o: vec3<f32>, dir_2: vec3<f32>, d_1: f32, t
     let r_3 = (_e76 - delta);
     let pdf = (((1f - w_3) * p_free) + select(0f, ((w_3 * h_1) / ((tb - ta) * ((h_1 * h_1) + (r_3 * r_3)))), equi));
     let _e91 = s_1;
-    let _e97 = sample_light_query(i_5, (o + (dir_2 * vec3(_e91))), vec3(0f));
+    let _e97 = sample_light_query(i_5, (o + (dir_3 * vec3(_e91))), vec3(0f));
     return (_e97.radiance * vec3(((sigma_1 * e_2) / pdf)));
 }
 
@@ -1290,10 +1304,10 @@ fn through_medium(ray_20: Ray, t_2: f32, radiance_2: vec3<f32>) -> vec3<f32> {
     return _e22;
 }
 
-fn rt_spawn(dir_3: vec3<f32>, weight: vec3<f32>) {
+fn rt_spawn(dir_4: vec3<f32>, weight: vec3<f32>) {
     let _e3 = spawn_count;
     if (_e3 < 1u) {
-        spawn_dirs[_e3] = dir_3;
+        spawn_dirs[_e3] = dir_4;
         spawn_weights[_e3] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1310,12 +1324,12 @@ fn dispatch_secondary_rays(type_id_6: u32, offset_10: u32, ray_22: Ray, hit_8: H
     return;
 }
 
-fn spawn_origin_at(position_6: vec3<f32>, normal_6: vec3<f32>, error_1: f32, dir_4: vec3<f32>) -> vec3<f32> {
+fn spawn_origin_at(position_6: vec3<f32>, normal_7: vec3<f32>, error_1: f32, dir_5: vec3<f32>) -> vec3<f32> {
     var n_5: vec3<f32>;
 
-    n_5 = normal_6;
+    n_5 = normal_7;
     let _e5 = n_5;
-    if (dot(dir_4, _e5) < 0f) {
+    if (dot(dir_5, _e5) < 0f) {
         let _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1324,8 +1338,8 @@ fn spawn_origin_at(position_6: vec3<f32>, normal_6: vec3<f32>, error_1: f32, dir
     return _e12;
 }
 
-fn spawn_origin(hit_9: Hit, error_2: f32, dir_5: vec3<f32>) -> vec3<f32> {
-    let _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_5);
+fn spawn_origin(hit_9: Hit, error_2: f32, dir_6: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_6);
     return _e5;
 }
 
@@ -1522,9 +1536,9 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             stack[min(top_1, 2u)].next = (i_9 + 1u);
             let parent = stack[min(top_1, 2u)].ray;
             let hit_12 = stack[min(top_1, 2u)].hit;
-            let dir_7 = stack[min(top_1, 2u)].dirs[min(i_9, 0u)];
+            let dir_8 = stack[min(top_1, 2u)].dirs[min(i_9, 0u)];
             medium_2 = parent.medium;
-            if (dot(dir_7, hit_12.geometric_normal) < 0f) {
+            if (dot(dir_8, hit_12.geometric_normal) < 0f) {
                 let _e289 = stack[min(top_1, 2u)].slot;
                 medium_2 = (_e289 + 1u);
             } else {
@@ -1558,7 +1572,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                     let _e353 = found;
                     if !(_e353) {
                         let _e359 = stack[min(top_1, 2u)].error;
-                        let _e360 = spawn_origin(hit_12, _e359, dir_7);
+                        let _e360 = spawn_origin(hit_12, _e359, dir_8);
                         let _e365 = stack[min(top_1, 2u)].slot;
                         let _e366 = medium_at(_e360, _e365);
                         medium_2 = _e366;
@@ -1566,10 +1580,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
                 }
             }
             let _e371 = stack[min(top_1, 2u)].error;
-            let _e372 = spawn_origin(hit_12, _e371, dir_7);
+            let _e372 = spawn_origin(hit_12, _e371, dir_8);
             let _e375 = F32_INF;
             let _e381 = medium_2;
-            ray_23 = Ray(_e372, 0f, dir_7, bitcast<f32>(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
+            ray_23 = Ray(_e372, 0f, dir_8, bitcast<f32>(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
         } else {
             let _e387 = stack[min(top_1, 2u)].ray;
             s_ray = _e387;

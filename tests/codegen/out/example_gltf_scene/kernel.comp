@@ -184,7 +184,9 @@ const uint SCRATCH_RESOLVED = 3u;
 const uint SCRATCH_LIGHT_BITS = 11u;
 const uint SCRATCH_QUERY = 2u;
 const uint SCRATCH_PENDING = 4u;
-const uint SCRATCH_UNOCCLUDED = 14u;
+const uint SCRATCH_SHADOW_MODE = 14u;
+const uint SHADOW_UNOCCLUDED = 1u;
+const uint SHADOW_ABOVE = 2u;
 const uint LIGHT_QUERIES = 32u;
 const uint COUNTER_SHADOW_OVERFLOW = 3u;
 const uint SCRATCH_LIGHT_QUERY = 15u;
@@ -1158,6 +1160,17 @@ DirectionalLight load_DirectionalLight(uint offset_6) {
     return DirectionalLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43));
 }
 
+float shadow_preset(vec3 normal, vec3 dir) {
+    uint mode_1 = scratch[min(SCRATCH_SHADOW_MODE, 24u)];
+    if ((mode_1 == SHADOW_UNOCCLUDED)) {
+        return 1.0;
+    }
+    if (((mode_1 == SHADOW_ABOVE) && !((dot(dir, normal) > 0.0)))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 void scratch_store3f(uint i_2, vec3 v_2) {
     uvec3 b_9 = floatBitsToUint(v_2);
     scratch[min(i_2, 24u)] = b_9.x;
@@ -1166,20 +1179,20 @@ void scratch_store3f(uint i_2, vec3 v_2) {
     return;
 }
 
-float shadow_deferred(vec3 position, vec3 normal, vec3 dir, float dist) {
-    uint _e9 = scratch[min(SCRATCH_UNOCCLUDED, 24u)];
-    if ((_e9 != 0u)) {
-        return 1.0;
+float shadow_deferred(vec3 position, vec3 normal_1, vec3 dir_1, float dist) {
+    float _e4 = shadow_preset(normal_1, dir_1);
+    if ((_e4 >= 0.0)) {
+        return _e4;
     }
     uint i_8 = scratch[min(SCRATCH_QUERY, 24u)];
     scratch[min(SCRATCH_QUERY, 24u)] = (i_8 + 1u);
-    uint _e31 = scratch[min(SCRATCH_RESOLVED, 24u)];
-    if ((i_8 < _e31)) {
-        uint _e38 = scratch[min(SCRATCH_LIGHT_BITS, 24u)];
-        return float(((_e38 >> (i_8 & 31u)) & 1u));
+    uint _e25 = scratch[min(SCRATCH_RESOLVED, 24u)];
+    if ((i_8 < _e25)) {
+        uint _e32 = scratch[min(SCRATCH_LIGHT_BITS, 24u)];
+        return float(((_e32 >> (i_8 & 31u)) & 1u));
     }
-    uint _e50 = scratch[min(SCRATCH_PENDING, 24u)];
-    if ((_e50 != 0u)) {
+    uint _e44 = scratch[min(SCRATCH_PENDING, 24u)];
+    if ((_e44 != 0u)) {
         return 1.0;
     }
     if ((i_8 >= LIGHT_QUERIES)) {
@@ -1187,24 +1200,24 @@ float shadow_deferred(vec3 position, vec3 normal, vec3 dir, float dist) {
         return 1.0;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal_1);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir_1);
     scratch[min((SCRATCH_LIGHT_QUERY + 9u), 24u)] = floatBitsToUint(dist);
     scratch[min(SCRATCH_PENDING, 24u)] = 1u;
     return 1.0;
 }
 
-LightSample directional_light(DirectionalLight l, vec3 position_1, vec3 normal_1) {
+LightSample directional_light(DirectionalLight l, vec3 position_1, vec3 normal_2) {
     vec3 _e4 = normalize_vec3f(l.direction);
-    vec3 dir_5 = -(_e4);
-    if ((dot(dir_5, dir_5) == 0.0)) {
+    vec3 dir_6 = -(_e4);
+    if ((dot(dir_6, dir_6) == 0.0)) {
         uint _e14 = F32_INF;
         return LightSample(vec3(0.0, 1.0, 0.0), uintBitsToFloat(_e14), vec3(0.0), 0.0);
     }
     uint _e21 = F32_INF;
-    float _e23 = shadow_deferred(position_1, normal_1, dir_5, uintBitsToFloat(_e21));
+    float _e23 = shadow_deferred(position_1, normal_2, dir_6, uintBitsToFloat(_e21));
     uint _e25 = F32_INF;
-    return LightSample(dir_5, uintBitsToFloat(_e25), ((l.color * vec3(l.intensity)) * vec3(_e23)), 0.0);
+    return LightSample(dir_6, uintBitsToFloat(_e25), ((l.color * vec3(l.intensity)) * vec3(_e23)), 0.0);
 }
 
 PointLight load_PointLight(uint offset_7) {
@@ -1220,31 +1233,31 @@ PointLight load_PointLight(uint offset_7) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
-LightSample point_light(PointLight l_1, vec3 position_2, vec3 normal_2) {
+LightSample point_light(PointLight l_1, vec3 position_2, vec3 normal_3) {
     float strength = 0.0;
     vec3 to_light = (l_1.position - position_2);
     float dist_3 = length(to_light);
-    vec3 dir_6 = (to_light / vec3(max(dist_3, 1e-20)));
+    vec3 dir_7 = (to_light / vec3(max(dist_3, 1e-20)));
     strength = (l_1.intensity / max((dist_3 * dist_3), 1e-20));
     if ((l_1.range > 0.0)) {
         float _e19 = strength;
         strength = (_e19 * (1.0 - smoothstep(l_1.inner_range, l_1.range, dist_3)));
     }
-    float _e26 = shadow_deferred(position_2, normal_2, dir_6, dist_3);
+    float _e26 = shadow_deferred(position_2, normal_3, dir_7, dist_3);
     float _e28 = strength;
-    return LightSample(dir_6, dist_3, ((l_1.color * vec3(_e28)) * vec3(_e26)), 0.0);
+    return LightSample(dir_7, dist_3, ((l_1.color * vec3(_e28)) * vec3(_e26)), 0.0);
 }
 
-LightSample dispatch_light(uint type_id_3, uint offset_8, vec3 position_3, vec3 normal_3) {
+LightSample dispatch_light(uint type_id_3, uint offset_8, vec3 position_3, vec3 normal_4) {
     switch(type_id_3) {
         case 0u: {
             DirectionalLight _e4 = load_DirectionalLight(offset_8);
-            LightSample _e5 = directional_light(_e4, position_3, normal_3);
+            LightSample _e5 = directional_light(_e4, position_3, normal_4);
             return _e5;
         }
         case 1u: {
             PointLight _e6 = load_PointLight(offset_8);
-            LightSample _e7 = point_light(_e6, position_3, normal_3);
+            LightSample _e7 = point_light(_e6, position_3, normal_4);
             return _e7;
         }
         default: {
@@ -1277,12 +1290,12 @@ vec3 offset_origin(vec3 p_5, vec3 n_4, float error) {
     return _e17;
 }
 
-Ray shadow_ray(vec3 position_4, vec3 normal_4, vec3 dir_1, float dist_1) {
+Ray shadow_ray(vec3 position_4, vec3 normal_5, vec3 dir_2, float dist_1) {
     vec3 n_5 = vec3(0.0);
     float tmax_4 = 0.0;
-    n_5 = normal_4;
+    n_5 = normal_5;
     vec3 _e5 = n_5;
-    if ((dot(dir_1, _e5) < 0.0)) {
+    if ((dot(dir_2, _e5) < 0.0)) {
         vec3 _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1295,27 +1308,27 @@ Ray shadow_ray(vec3 position_4, vec3 normal_4, vec3 dir_1, float dist_1) {
     tmax_4 = uintBitsToFloat(_e25);
     uint _e29 = F32_INF;
     if ((dist_1 < uintBitsToFloat(_e29))) {
-        vec3 light = (position_4 + (dir_1 * vec3(dist_1)));
-        float dd_1 = dot(dir_1, dir_1);
-        float along_1 = (dot((light - _e23), dir_1) / dd_1);
-        vec3 l_2 = (abs(position_4) + abs((dir_1 * vec3(dist_1))));
+        vec3 light = (position_4 + (dir_2 * vec3(dist_1)));
+        float dd_1 = dot(dir_2, dir_2);
+        float along_1 = (dot((light - _e23), dir_2) / dd_1);
+        vec3 l_2 = (abs(position_4) + abs((dir_2 * vec3(dist_1))));
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    return Ray(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-float shadow_query(vec3 position_5, vec3 normal_5, vec3 dir_2, float dist_2) {
-    uint _e9 = scratch[min(SCRATCH_UNOCCLUDED, 24u)];
-    if ((_e9 != 0u)) {
-        return 1.0;
+float shadow_query(vec3 position_5, vec3 normal_6, vec3 dir_3, float dist_2) {
+    float _e4 = shadow_preset(normal_6, dir_3);
+    if ((_e4 >= 0.0)) {
+        return _e4;
     }
-    Ray _e13 = shadow_ray(position_5, normal_5, dir_2, dist_2);
-    Candidate _e15 = intersect_scene(_e13, true);
-    return ((_e15.slot != NO_HIT) ? 0.0 : 1.0);
+    Ray _e7 = shadow_ray(position_5, normal_6, dir_3, dist_2);
+    Candidate _e9 = intersect_scene(_e7, true);
+    return ((_e9.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample sample_light_deferred(uint i_4, vec3 position_6, vec3 normal_6) {
+LightSample sample_light_deferred(uint i_4, vec3 position_6, vec3 normal_7) {
     uint after = 0u;
     uint resolved = 0u;
     uint bits_1 = 0u;
@@ -1336,7 +1349,7 @@ LightSample sample_light_deferred(uint i_4, vec3 position_6, vec3 normal_6) {
         rng_state = start;
         scratch[min(SCRATCH_QUERY, 24u)] = 0u;
         scratch[min(SCRATCH_PENDING, 24u)] = 0u;
-        LightSample _e60 = dispatch_light(type_id_7, offset_14, position_6, normal_6);
+        LightSample _e60 = dispatch_light(type_id_7, offset_14, position_6, normal_7);
         uint _e66 = scratch[min(SCRATCH_PENDING, 24u)];
         if ((_e66 == 0u)) {
             uint _e69 = resolved;
@@ -1516,11 +1529,11 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_25, Hit hit
     return;
 }
 
-vec3 spawn_origin_at(vec3 position_7, vec3 normal_7, float error_1, vec3 dir_3) {
+vec3 spawn_origin_at(vec3 position_7, vec3 normal_8, float error_1, vec3 dir_4) {
     vec3 n_6 = vec3(0.0);
-    n_6 = normal_7;
+    n_6 = normal_8;
     vec3 _e5 = n_6;
-    if ((dot(dir_3, _e5) < 0.0)) {
+    if ((dot(dir_4, _e5) < 0.0)) {
         vec3 _e9 = n_6;
         n_6 = -(_e9);
     }
@@ -1529,8 +1542,8 @@ vec3 spawn_origin_at(vec3 position_7, vec3 normal_7, float error_1, vec3 dir_3) 
     return _e12;
 }
 
-vec3 spawn_origin(Hit hit_11, float error_2, vec3 dir_4) {
-    vec3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_4);
+vec3 spawn_origin(Hit hit_11, float error_2, vec3 dir_5) {
+    vec3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_5);
     return _e5;
 }
 
@@ -1724,13 +1737,13 @@ vec3 trace(Ray camera_ray) {
             stack[min(top_1, 3u)].next = (i_9 + 1u);
             Ray parent = stack[min(top_1, 3u)].ray;
             Hit hit_14 = stack[min(top_1, 3u)].hit;
-            vec3 dir_7 = stack[min(top_1, 3u)].dirs[min(i_9, 0u)];
+            vec3 dir_8 = stack[min(top_1, 3u)].dirs[min(i_9, 0u)];
             medium = parent.medium;
             float _e283 = stack[min(top_1, 3u)].error;
-            vec3 _e284 = spawn_origin(hit_14, _e283, dir_7);
+            vec3 _e284 = spawn_origin(hit_14, _e283, dir_8);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_26 = Ray(_e284, 0.0, dir_7, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_26 = Ray(_e284, 0.0, dir_8, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;

@@ -187,7 +187,9 @@ const uint SCRATCH_RESOLVED = 3u;
 const uint SCRATCH_LIGHT_BITS = 11u;
 const uint SCRATCH_QUERY = 2u;
 const uint SCRATCH_PENDING = 4u;
-const uint SCRATCH_UNOCCLUDED = 14u;
+const uint SCRATCH_SHADOW_MODE = 14u;
+const uint SHADOW_UNOCCLUDED = 1u;
+const uint SHADOW_ABOVE = 2u;
 const uint LIGHT_QUERIES = 32u;
 const uint COUNTER_SHADOW_OVERFLOW = 3u;
 const uint SCRATCH_LIGHT_QUERY = 15u;
@@ -1098,6 +1100,17 @@ DirectionalLight load_DirectionalLight(uint offset_8) {
     return DirectionalLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43));
 }
 
+float shadow_preset(vec3 normal, vec3 dir) {
+    uint mode = scratch[min(SCRATCH_SHADOW_MODE, 24u)];
+    if ((mode == SHADOW_UNOCCLUDED)) {
+        return 1.0;
+    }
+    if (((mode == SHADOW_ABOVE) && !((dot(dir, normal) > 0.0)))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 void scratch_store3f(uint i_2, vec3 v_2) {
     uvec3 b_9 = floatBitsToUint(v_2);
     scratch[min(i_2, 24u)] = b_9.x;
@@ -1106,20 +1119,20 @@ void scratch_store3f(uint i_2, vec3 v_2) {
     return;
 }
 
-float shadow_deferred(vec3 position, vec3 normal, vec3 dir, float dist) {
-    uint _e9 = scratch[min(SCRATCH_UNOCCLUDED, 24u)];
-    if ((_e9 != 0u)) {
-        return 1.0;
+float shadow_deferred(vec3 position, vec3 normal_1, vec3 dir_1, float dist) {
+    float _e4 = shadow_preset(normal_1, dir_1);
+    if ((_e4 >= 0.0)) {
+        return _e4;
     }
     uint i_8 = scratch[min(SCRATCH_QUERY, 24u)];
     scratch[min(SCRATCH_QUERY, 24u)] = (i_8 + 1u);
-    uint _e31 = scratch[min(SCRATCH_RESOLVED, 24u)];
-    if ((i_8 < _e31)) {
-        uint _e38 = scratch[min(SCRATCH_LIGHT_BITS, 24u)];
-        return float(((_e38 >> (i_8 & 31u)) & 1u));
+    uint _e25 = scratch[min(SCRATCH_RESOLVED, 24u)];
+    if ((i_8 < _e25)) {
+        uint _e32 = scratch[min(SCRATCH_LIGHT_BITS, 24u)];
+        return float(((_e32 >> (i_8 & 31u)) & 1u));
     }
-    uint _e50 = scratch[min(SCRATCH_PENDING, 24u)];
-    if ((_e50 != 0u)) {
+    uint _e44 = scratch[min(SCRATCH_PENDING, 24u)];
+    if ((_e44 != 0u)) {
         return 1.0;
     }
     if ((i_8 >= LIGHT_QUERIES)) {
@@ -1127,24 +1140,24 @@ float shadow_deferred(vec3 position, vec3 normal, vec3 dir, float dist) {
         return 1.0;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal_1);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir_1);
     scratch[min((SCRATCH_LIGHT_QUERY + 9u), 24u)] = floatBitsToUint(dist);
     scratch[min(SCRATCH_PENDING, 24u)] = 1u;
     return 1.0;
 }
 
-LightSample directional_light(DirectionalLight l, vec3 position_1, vec3 normal_1) {
+LightSample directional_light(DirectionalLight l, vec3 position_1, vec3 normal_2) {
     vec3 _e4 = normalize_vec3f(l.direction);
-    vec3 dir_5 = -(_e4);
-    if ((dot(dir_5, dir_5) == 0.0)) {
+    vec3 dir_6 = -(_e4);
+    if ((dot(dir_6, dir_6) == 0.0)) {
         uint _e14 = F32_INF;
         return LightSample(vec3(0.0, 1.0, 0.0), uintBitsToFloat(_e14), vec3(0.0), 0.0);
     }
     uint _e21 = F32_INF;
-    float _e23 = shadow_deferred(position_1, normal_1, dir_5, uintBitsToFloat(_e21));
+    float _e23 = shadow_deferred(position_1, normal_2, dir_6, uintBitsToFloat(_e21));
     uint _e25 = F32_INF;
-    return LightSample(dir_5, uintBitsToFloat(_e25), ((l.color * vec3(l.intensity)) * vec3(_e23)), 0.0);
+    return LightSample(dir_6, uintBitsToFloat(_e25), ((l.color * vec3(l.intensity)) * vec3(_e23)), 0.0);
 }
 
 PointLight load_PointLight(uint offset_9) {
@@ -1160,19 +1173,19 @@ PointLight load_PointLight(uint offset_9) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
-LightSample point_light(PointLight l_1, vec3 position_2, vec3 normal_2) {
+LightSample point_light(PointLight l_1, vec3 position_2, vec3 normal_3) {
     float strength = 0.0;
     vec3 to_light = (l_1.position - position_2);
     float dist_3 = length(to_light);
-    vec3 dir_6 = (to_light / vec3(max(dist_3, 1e-20)));
+    vec3 dir_7 = (to_light / vec3(max(dist_3, 1e-20)));
     strength = (l_1.intensity / max((dist_3 * dist_3), 1e-20));
     if ((l_1.range > 0.0)) {
         float _e19 = strength;
         strength = (_e19 * (1.0 - smoothstep(l_1.inner_range, l_1.range, dist_3)));
     }
-    float _e26 = shadow_deferred(position_2, normal_2, dir_6, dist_3);
+    float _e26 = shadow_deferred(position_2, normal_3, dir_7, dist_3);
     float _e28 = strength;
-    return LightSample(dir_6, dist_3, ((l_1.color * vec3(_e28)) * vec3(_e26)), 0.0);
+    return LightSample(dir_7, dist_3, ((l_1.color * vec3(_e28)) * vec3(_e26)), 0.0);
 }
 
 SphereLight load_SphereLight(uint offset_10) {
@@ -1196,7 +1209,7 @@ mat3x3 orthonormal_basis(vec3 n_4) {
     return mat3x3(vec3((1.0 + ((_e16 * n_4.x) * a_7)), (sign_1 * b_10), -(_e16)), vec3(b_10, (sign_1 + ((n_4.y * n_4.y) * a_7)), -(n_4.y)), n_4);
 }
 
-LightSample sphere_light(SphereLight l_2, vec3 position_3, vec3 normal_3) {
+LightSample sphere_light(SphereLight l_2, vec3 position_3, vec3 normal_4) {
     vec3 to_center = (l_2.position - position_3);
     float d2_ = dot(to_center, to_center);
     float r2_2 = max((l_2.radius * l_2.radius), 1e-20);
@@ -1216,7 +1229,7 @@ LightSample sphere_light(SphereLight l_2, vec3 position_3, vec3 normal_3) {
     float along_1 = dot(to_center, _e52);
     float dist_4 = max((along_1 - sqrt(max((r2_2 - (d2_ - (along_1 * along_1))), 0.0))), 0.0);
     float weight = (((l_2.intensity * 2.0) * one_minus_cos_max) / r2_2);
-    float _e68 = shadow_deferred(position_3, normal_3, _e52, dist_4);
+    float _e68 = shadow_deferred(position_3, normal_4, _e52, dist_4);
     float pdf = ((l_2.lamp == 1u) ? (1.0 / (TAU * one_minus_cos_max)) : 0.0);
     return LightSample(_e52, dist_4, ((l_2.color * vec3(weight)) * vec3(_e68)), pdf);
 }
@@ -1238,11 +1251,11 @@ SpotLight load_SpotLight(uint offset_11) {
     return SpotLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)), uintBitsToFloat(_e62), uintBitsToFloat(_e68), uintBitsToFloat(_e74), uintBitsToFloat(_e80));
 }
 
-LightSample spot_light(SpotLight l_3, vec3 position_4, vec3 normal_4) {
+LightSample spot_light(SpotLight l_3, vec3 position_4, vec3 normal_5) {
     float strength_1 = 0.0;
     vec3 to_light_1 = (l_3.position - position_4);
     float dist_5 = length(to_light_1);
-    vec3 dir_7 = (to_light_1 / vec3(max(dist_5, 1e-20)));
+    vec3 dir_8 = (to_light_1 / vec3(max(dist_5, 1e-20)));
     strength_1 = (l_3.intensity / max((dist_5 * dist_5), 1e-20));
     if ((l_3.range > 0.0)) {
         float _e19 = strength_1;
@@ -1252,36 +1265,36 @@ LightSample spot_light(SpotLight l_3, vec3 position_4, vec3 normal_4) {
     float cos_outer = min(cos(radians(min(max(l_3.outer_angle, 0.0), 180.0))), (cos_inner - 0.0001));
     float _e43 = strength_1;
     vec3 _e46 = normalize_vec3f(l_3.direction);
-    strength_1 = (_e43 * smoothstep(cos_outer, cos_inner, dot(-(dir_7), _e46)));
+    strength_1 = (_e43 * smoothstep(cos_outer, cos_inner, dot(-(dir_8), _e46)));
     float _e50 = strength_1;
     if ((_e50 <= 0.0)) {
-        return LightSample(dir_7, dist_5, vec3(0.0), 0.0);
+        return LightSample(dir_8, dist_5, vec3(0.0), 0.0);
     }
-    float _e57 = shadow_deferred(position_4, normal_4, dir_7, dist_5);
+    float _e57 = shadow_deferred(position_4, normal_5, dir_8, dist_5);
     float _e59 = strength_1;
-    return LightSample(dir_7, dist_5, ((l_3.color * vec3(_e59)) * vec3(_e57)), 0.0);
+    return LightSample(dir_8, dist_5, ((l_3.color * vec3(_e59)) * vec3(_e57)), 0.0);
 }
 
-LightSample dispatch_light(uint type_id_3, uint offset_12, vec3 position_5, vec3 normal_5) {
+LightSample dispatch_light(uint type_id_3, uint offset_12, vec3 position_5, vec3 normal_6) {
     switch(type_id_3) {
         case 0u: {
             DirectionalLight _e4 = load_DirectionalLight(offset_12);
-            LightSample _e5 = directional_light(_e4, position_5, normal_5);
+            LightSample _e5 = directional_light(_e4, position_5, normal_6);
             return _e5;
         }
         case 1u: {
             PointLight _e6 = load_PointLight(offset_12);
-            LightSample _e7 = point_light(_e6, position_5, normal_5);
+            LightSample _e7 = point_light(_e6, position_5, normal_6);
             return _e7;
         }
         case 2u: {
             SphereLight _e8 = load_SphereLight(offset_12);
-            LightSample _e9 = sphere_light(_e8, position_5, normal_5);
+            LightSample _e9 = sphere_light(_e8, position_5, normal_6);
             return _e9;
         }
         case 3u: {
             SpotLight _e10 = load_SpotLight(offset_12);
-            LightSample _e11 = spot_light(_e10, position_5, normal_5);
+            LightSample _e11 = spot_light(_e10, position_5, normal_6);
             return _e11;
         }
         default: {
@@ -1314,12 +1327,12 @@ vec3 offset_origin(vec3 p_5, vec3 n_5, float error) {
     return _e17;
 }
 
-Ray shadow_ray(vec3 position_6, vec3 normal_6, vec3 dir_1, float dist_1) {
+Ray shadow_ray(vec3 position_6, vec3 normal_7, vec3 dir_2, float dist_1) {
     vec3 n_6 = vec3(0.0);
     float tmax_4 = 0.0;
-    n_6 = normal_6;
+    n_6 = normal_7;
     vec3 _e5 = n_6;
-    if ((dot(dir_1, _e5) < 0.0)) {
+    if ((dot(dir_2, _e5) < 0.0)) {
         vec3 _e9 = n_6;
         n_6 = -(_e9);
     }
@@ -1332,27 +1345,27 @@ Ray shadow_ray(vec3 position_6, vec3 normal_6, vec3 dir_1, float dist_1) {
     tmax_4 = uintBitsToFloat(_e25);
     uint _e29 = F32_INF;
     if ((dist_1 < uintBitsToFloat(_e29))) {
-        vec3 light = (position_6 + (dir_1 * vec3(dist_1)));
-        float dd_1 = dot(dir_1, dir_1);
-        float along_2 = (dot((light - _e23), dir_1) / dd_1);
-        vec3 l_5 = (abs(position_6) + abs((dir_1 * vec3(dist_1))));
+        vec3 light = (position_6 + (dir_2 * vec3(dist_1)));
+        float dd_1 = dot(dir_2, dir_2);
+        float along_2 = (dot((light - _e23), dir_2) / dd_1);
+        vec3 l_5 = (abs(position_6) + abs((dir_2 * vec3(dist_1))));
         tmax_4 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_5.x, l_5.y), l_5.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    return Ray(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-float shadow_query(vec3 position_7, vec3 normal_7, vec3 dir_2, float dist_2) {
-    uint _e9 = scratch[min(SCRATCH_UNOCCLUDED, 24u)];
-    if ((_e9 != 0u)) {
-        return 1.0;
+float shadow_query(vec3 position_7, vec3 normal_8, vec3 dir_3, float dist_2) {
+    float _e4 = shadow_preset(normal_8, dir_3);
+    if ((_e4 >= 0.0)) {
+        return _e4;
     }
-    Ray _e13 = shadow_ray(position_7, normal_7, dir_2, dist_2);
-    Candidate _e15 = intersect_scene(_e13, true);
-    return ((_e15.slot != NO_HIT) ? 0.0 : 1.0);
+    Ray _e7 = shadow_ray(position_7, normal_8, dir_3, dist_2);
+    Candidate _e9 = intersect_scene(_e7, true);
+    return ((_e9.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample sample_light_deferred(uint i_4, vec3 position_8, vec3 normal_8) {
+LightSample sample_light_deferred(uint i_4, vec3 position_8, vec3 normal_9) {
     uint after = 0u;
     uint resolved = 0u;
     uint bits_1 = 0u;
@@ -1373,7 +1386,7 @@ LightSample sample_light_deferred(uint i_4, vec3 position_8, vec3 normal_8) {
         rng_state = start;
         scratch[min(SCRATCH_QUERY, 24u)] = 0u;
         scratch[min(SCRATCH_PENDING, 24u)] = 0u;
-        LightSample _e60 = dispatch_light(type_id_7, offset_17, position_8, normal_8);
+        LightSample _e60 = dispatch_light(type_id_7, offset_17, position_8, normal_9);
         uint _e66 = scratch[min(SCRATCH_PENDING, 24u)];
         if ((_e66 == 0u)) {
             uint _e69 = resolved;
@@ -1482,11 +1495,11 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_20, Hit hit
     return;
 }
 
-vec3 spawn_origin_at(vec3 position_9, vec3 normal_9, float error_1, vec3 dir_3) {
+vec3 spawn_origin_at(vec3 position_9, vec3 normal_10, float error_1, vec3 dir_4) {
     vec3 n_7 = vec3(0.0);
-    n_7 = normal_9;
+    n_7 = normal_10;
     vec3 _e5 = n_7;
-    if ((dot(dir_3, _e5) < 0.0)) {
+    if ((dot(dir_4, _e5) < 0.0)) {
         vec3 _e9 = n_7;
         n_7 = -(_e9);
     }
@@ -1495,8 +1508,8 @@ vec3 spawn_origin_at(vec3 position_9, vec3 normal_9, float error_1, vec3 dir_3) 
     return _e12;
 }
 
-vec3 spawn_origin(Hit hit_5, float error_2, vec3 dir_4) {
-    vec3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
+vec3 spawn_origin(Hit hit_5, float error_2, vec3 dir_5) {
+    vec3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_5);
     return _e5;
 }
 
@@ -1690,13 +1703,13 @@ vec3 trace(Ray camera_ray) {
             stack[min(top_1, 3u)].next = (i_9 + 1u);
             Ray parent = stack[min(top_1, 3u)].ray;
             Hit hit_8 = stack[min(top_1, 3u)].hit;
-            vec3 dir_8 = stack[min(top_1, 3u)].dirs[min(i_9, 0u)];
+            vec3 dir_9 = stack[min(top_1, 3u)].dirs[min(i_9, 0u)];
             medium = parent.medium;
             float _e283 = stack[min(top_1, 3u)].error;
-            vec3 _e284 = spawn_origin(hit_8, _e283, dir_8);
+            vec3 _e284 = spawn_origin(hit_8, _e283, dir_9);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_21 = Ray(_e284, 0.0, dir_8, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_21 = Ray(_e284, 0.0, dir_9, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;

@@ -247,7 +247,9 @@ static const uint SCRATCH_RESOLVED = 3u;
 static const uint SCRATCH_LIGHT_BITS = 11u;
 static const uint SCRATCH_QUERY = 2u;
 static const uint SCRATCH_PENDING = 4u;
-static const uint SCRATCH_UNOCCLUDED = 14u;
+static const uint SCRATCH_SHADOW_MODE = 14u;
+static const uint SHADOW_UNOCCLUDED = 1u;
+static const uint SHADOW_ABOVE = 2u;
 static const uint LIGHT_QUERIES = 32u;
 static const uint COUNTER_SHADOW_OVERFLOW = 3u;
 static const uint SCRATCH_LIGHT_QUERY = 15u;
@@ -1411,6 +1413,18 @@ DirectionalLight load_DirectionalLight(uint offset_8)
     return directionallight;
 }
 
+float shadow_preset(float3 normal, float3 dir)
+{
+    uint mode = scratch[min(uint(min(SCRATCH_SHADOW_MODE, 24u)), 24u)];
+    if ((mode == SHADOW_UNOCCLUDED)) {
+        return 1.0;
+    }
+    if (((mode == SHADOW_ABOVE) && !((dot(dir, normal) > 0.0)))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 void scratch_store3f(uint i_2, float3 v_2)
 {
     uint3 b_9 = asuint(v_2);
@@ -1420,21 +1434,21 @@ void scratch_store3f(uint i_2, float3 v_2)
     return;
 }
 
-float shadow_deferred(float3 position, float3 normal, float3 dir, float dist)
+float shadow_deferred(float3 position, float3 normal_1, float3 dir_1, float dist)
 {
-    uint _e9 = scratch[min(uint(min(SCRATCH_UNOCCLUDED, 24u)), 24u)];
-    if ((_e9 != 0u)) {
-        return 1.0;
+    const float _e4 = shadow_preset(normal_1, dir_1);
+    if ((_e4 >= 0.0)) {
+        return _e4;
     }
     uint i_8 = scratch[min(uint(min(SCRATCH_QUERY, 24u)), 24u)];
     scratch[min(uint(min(SCRATCH_QUERY, 24u)), 24u)] = (i_8 + 1u);
-    uint _e31 = scratch[min(uint(min(SCRATCH_RESOLVED, 24u)), 24u)];
-    if ((i_8 < _e31)) {
-        uint _e38 = scratch[min(uint(min(SCRATCH_LIGHT_BITS, 24u)), 24u)];
-        return float(((_e38 >> (i_8 & 31u)) & 1u));
+    uint _e25 = scratch[min(uint(min(SCRATCH_RESOLVED, 24u)), 24u)];
+    if ((i_8 < _e25)) {
+        uint _e32 = scratch[min(uint(min(SCRATCH_LIGHT_BITS, 24u)), 24u)];
+        return float(((_e32 >> (i_8 & 31u)) & 1u));
     }
-    uint _e50 = scratch[min(uint(min(SCRATCH_PENDING, 24u)), 24u)];
-    if ((_e50 != 0u)) {
+    uint _e44 = scratch[min(uint(min(SCRATCH_PENDING, 24u)), 24u)];
+    if ((_e44 != 0u)) {
         return 1.0;
     }
     if ((i_8 >= LIGHT_QUERIES)) {
@@ -1442,8 +1456,8 @@ float shadow_deferred(float3 position, float3 normal, float3 dir, float dist)
         return 1.0;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal_1);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir_1);
     scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 24u)), 24u)] = asuint(dist);
     scratch[min(uint(min(SCRATCH_PENDING, 24u)), 24u)] = 1u;
     return 1.0;
@@ -1458,19 +1472,19 @@ LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg
     return ret;
 }
 
-LightSample directional_light(DirectionalLight l, float3 position_1, float3 normal_1)
+LightSample directional_light(DirectionalLight l, float3 position_1, float3 normal_2)
 {
     const float3 _e4 = normalize_vec3f(l.direction);
-    float3 dir_5 = -(_e4);
-    if ((dot(dir_5, dir_5) == 0.0)) {
+    float3 dir_6 = -(_e4);
+    if ((dot(dir_6, dir_6) == 0.0)) {
         uint _e14 = F32_INF;
         const LightSample lightsample = ConstructLightSample(float3(0.0, 1.0, 0.0), asfloat(_e14), (0.0).xxx, 0.0);
         return lightsample;
     }
     uint _e21 = F32_INF;
-    const float _e23 = shadow_deferred(position_1, normal_1, dir_5, asfloat(_e21));
+    const float _e23 = shadow_deferred(position_1, normal_2, dir_6, asfloat(_e21));
     uint _e25 = F32_INF;
-    const LightSample lightsample_1 = ConstructLightSample(dir_5, asfloat(_e25), ((l.color * (l.intensity).xxx) * (_e23).xxx), 0.0);
+    const LightSample lightsample_1 = ConstructLightSample(dir_6, asfloat(_e25), ((l.color * (l.intensity).xxx) * (_e23).xxx), 0.0);
     return lightsample_1;
 }
 
@@ -1499,21 +1513,21 @@ PointLight load_PointLight(uint offset_9)
     return pointlight;
 }
 
-LightSample point_light(PointLight l_1, float3 position_2, float3 normal_2)
+LightSample point_light(PointLight l_1, float3 position_2, float3 normal_3)
 {
     float strength = (float)0;
 
     float3 to_light = (l_1.position - position_2);
     float dist_3 = length(to_light);
-    float3 dir_6 = (to_light / (max(dist_3, 1e-20)).xxx);
+    float3 dir_7 = (to_light / (max(dist_3, 1e-20)).xxx);
     strength = (l_1.intensity / max((dist_3 * dist_3), 1e-20));
     if ((l_1.range > 0.0)) {
         float _e19 = strength;
         strength = (_e19 * (1.0 - smoothstep(l_1.inner_range, l_1.range, dist_3)));
     }
-    const float _e26 = shadow_deferred(position_2, normal_2, dir_6, dist_3);
+    const float _e26 = shadow_deferred(position_2, normal_3, dir_7, dist_3);
     float _e28 = strength;
-    const LightSample lightsample_2 = ConstructLightSample(dir_6, dist_3, ((l_1.color * (_e28).xxx) * (_e26).xxx), 0.0);
+    const LightSample lightsample_2 = ConstructLightSample(dir_7, dist_3, ((l_1.color * (_e28).xxx) * (_e26).xxx), 0.0);
     return lightsample_2;
 }
 
@@ -1551,7 +1565,7 @@ float3x3 orthonormal_basis(float3 n_4)
     return float3x3(float3((1.0 + ((_e16 * n_4.x) * a_7)), (sign_1 * b_10), -(_e16)), float3(b_10, (sign_1 + ((n_4.y * n_4.y) * a_7)), -(n_4.y)), n_4);
 }
 
-LightSample sphere_light(SphereLight l_2, float3 position_3, float3 normal_3)
+LightSample sphere_light(SphereLight l_2, float3 position_3, float3 normal_4)
 {
     float3 to_center = (l_2.position - position_3);
     float d2_ = dot(to_center, to_center);
@@ -1573,7 +1587,7 @@ LightSample sphere_light(SphereLight l_2, float3 position_3, float3 normal_3)
     float along_1 = dot(to_center, _e52);
     float dist_4 = max((along_1 - sqrt(max((r2_2 - (d2_ - (along_1 * along_1))), 0.0))), 0.0);
     float weight = (((l_2.intensity * 2.0) * one_minus_cos_max) / r2_2);
-    const float _e68 = shadow_deferred(position_3, normal_3, _e52, dist_4);
+    const float _e68 = shadow_deferred(position_3, normal_4, _e52, dist_4);
     float pdf = ((l_2.lamp == 1u) ? (1.0 / (TAU * one_minus_cos_max)) : 0.0);
     const LightSample lightsample_4 = ConstructLightSample(_e52, dist_4, ((l_2.color * (weight).xxx) * (_e68).xxx), pdf);
     return lightsample_4;
@@ -1610,13 +1624,13 @@ SpotLight load_SpotLight(uint offset_11)
     return spotlight;
 }
 
-LightSample spot_light(SpotLight l_3, float3 position_4, float3 normal_4)
+LightSample spot_light(SpotLight l_3, float3 position_4, float3 normal_5)
 {
     float strength_1 = (float)0;
 
     float3 to_light_1 = (l_3.position - position_4);
     float dist_5 = length(to_light_1);
-    float3 dir_7 = (to_light_1 / (max(dist_5, 1e-20)).xxx);
+    float3 dir_8 = (to_light_1 / (max(dist_5, 1e-20)).xxx);
     strength_1 = (l_3.intensity / max((dist_5 * dist_5), 1e-20));
     if ((l_3.range > 0.0)) {
         float _e19 = strength_1;
@@ -1626,15 +1640,15 @@ LightSample spot_light(SpotLight l_3, float3 position_4, float3 normal_4)
     float cos_outer = min(cos(radians(min(max(l_3.outer_angle, 0.0), 180.0))), (cos_inner - 0.0001));
     float _e43 = strength_1;
     const float3 _e46 = normalize_vec3f(l_3.direction);
-    strength_1 = (_e43 * smoothstep(cos_outer, cos_inner, dot(-(dir_7), _e46)));
+    strength_1 = (_e43 * smoothstep(cos_outer, cos_inner, dot(-(dir_8), _e46)));
     float _e50 = strength_1;
     if ((_e50 <= 0.0)) {
-        const LightSample lightsample_5 = ConstructLightSample(dir_7, dist_5, (0.0).xxx, 0.0);
+        const LightSample lightsample_5 = ConstructLightSample(dir_8, dist_5, (0.0).xxx, 0.0);
         return lightsample_5;
     }
-    const float _e57 = shadow_deferred(position_4, normal_4, dir_7, dist_5);
+    const float _e57 = shadow_deferred(position_4, normal_5, dir_8, dist_5);
     float _e59 = strength_1;
-    const LightSample lightsample_6 = ConstructLightSample(dir_7, dist_5, ((l_3.color * (_e59).xxx) * (_e57).xxx), 0.0);
+    const LightSample lightsample_6 = ConstructLightSample(dir_8, dist_5, ((l_3.color * (_e59).xxx) * (_e57).xxx), 0.0);
     return lightsample_6;
 }
 
@@ -1642,30 +1656,30 @@ LightSample ZeroValueLightSample() {
     return (LightSample)0;
 }
 
-LightSample dispatch_light(uint type_id_3, uint offset_12, float3 position_5, float3 normal_5)
+LightSample dispatch_light(uint type_id_3, uint offset_12, float3 position_5, float3 normal_6)
 {
     switch(type_id_3) {
         case 0u: {
             const DirectionalLight _e4 = load_DirectionalLight(offset_12);
-            const LightSample _e5 = directional_light(_e4, position_5, normal_5);
+            const LightSample _e5 = directional_light(_e4, position_5, normal_6);
             const LightSample lightsample_7 = _e5;
             return lightsample_7;
         }
         case 1u: {
             const PointLight _e6 = load_PointLight(offset_12);
-            const LightSample _e7 = point_light(_e6, position_5, normal_5);
+            const LightSample _e7 = point_light(_e6, position_5, normal_6);
             const LightSample lightsample_8 = _e7;
             return lightsample_8;
         }
         case 2u: {
             const SphereLight _e8 = load_SphereLight(offset_12);
-            const LightSample _e9 = sphere_light(_e8, position_5, normal_5);
+            const LightSample _e9 = sphere_light(_e8, position_5, normal_6);
             const LightSample lightsample_9 = _e9;
             return lightsample_9;
         }
         case 3u: {
             const SpotLight _e10 = load_SpotLight(offset_12);
-            const LightSample _e11 = spot_light(_e10, position_5, normal_5);
+            const LightSample _e11 = spot_light(_e10, position_5, normal_6);
             const LightSample lightsample_10 = _e11;
             return lightsample_10;
         }
@@ -1703,14 +1717,14 @@ float3 offset_origin(float3 p_5, float3 n_5, float error)
     return _e17;
 }
 
-Ray shadow_ray(float3 position_6, float3 normal_6, float3 dir_1, float dist_1)
+Ray shadow_ray(float3 position_6, float3 normal_7, float3 dir_2, float dist_1)
 {
     float3 n_6 = (float3)0;
     float tmax_4 = (float)0;
 
-    n_6 = normal_6;
+    n_6 = normal_7;
     float3 _e5 = n_6;
-    if ((dot(dir_1, _e5) < 0.0)) {
+    if ((dot(dir_2, _e5) < 0.0)) {
         float3 _e9 = n_6;
         n_6 = -(_e9);
     }
@@ -1723,29 +1737,29 @@ Ray shadow_ray(float3 position_6, float3 normal_6, float3 dir_1, float dist_1)
     tmax_4 = asfloat(_e25);
     uint _e29 = F32_INF;
     if ((dist_1 < asfloat(_e29))) {
-        float3 light = (position_6 + (dir_1 * (dist_1).xxx));
-        float dd_1 = dot(dir_1, dir_1);
-        float along_2 = (dot((light - _e23), dir_1) / dd_1);
-        float3 l_5 = (abs(position_6) + abs((dir_1 * (dist_1).xxx)));
+        float3 light = (position_6 + (dir_2 * (dist_1).xxx));
+        float dd_1 = dot(dir_2, dir_2);
+        float along_2 = (dot((light - _e23), dir_2) / dd_1);
+        float3 l_5 = (abs(position_6) + abs((dir_2 * (dist_1).xxx)));
         tmax_4 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_5.x, l_5.y), l_5.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_26 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    const Ray ray_26 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
     return ray_26;
 }
 
-float shadow_query(float3 position_7, float3 normal_7, float3 dir_2, float dist_2)
+float shadow_query(float3 position_7, float3 normal_8, float3 dir_3, float dist_2)
 {
-    uint _e9 = scratch[min(uint(min(SCRATCH_UNOCCLUDED, 24u)), 24u)];
-    if ((_e9 != 0u)) {
-        return 1.0;
+    const float _e4 = shadow_preset(normal_8, dir_3);
+    if ((_e4 >= 0.0)) {
+        return _e4;
     }
-    const Ray _e13 = shadow_ray(position_7, normal_7, dir_2, dist_2);
-    const Candidate _e15 = intersect_scene(_e13, true);
-    return ((_e15.slot != NO_HIT) ? 0.0 : 1.0);
+    const Ray _e7 = shadow_ray(position_7, normal_8, dir_3, dist_2);
+    const Candidate _e9 = intersect_scene(_e7, true);
+    return ((_e9.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample sample_light_deferred(uint i_4, float3 position_8, float3 normal_8)
+LightSample sample_light_deferred(uint i_4, float3 position_8, float3 normal_9)
 {
     uint after = (uint)0;
     uint resolved = (uint)0;
@@ -1772,7 +1786,7 @@ LightSample sample_light_deferred(uint i_4, float3 position_8, float3 normal_8)
         rng_state = start;
         scratch[min(uint(min(SCRATCH_QUERY, 24u)), 24u)] = 0u;
         scratch[min(uint(min(SCRATCH_PENDING, 24u)), 24u)] = 0u;
-        const LightSample _e60 = dispatch_light(type_id_7, offset_17, position_8, normal_8);
+        const LightSample _e60 = dispatch_light(type_id_7, offset_17, position_8, normal_9);
         uint _e66 = scratch[min(uint(min(SCRATCH_PENDING, 24u)), 24u)];
         if ((_e66 == 0u)) {
             uint _e69 = resolved;
@@ -1898,13 +1912,13 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_20, Hit hit
     return;
 }
 
-float3 spawn_origin_at(float3 position_9, float3 normal_9, float error_1, float3 dir_3)
+float3 spawn_origin_at(float3 position_9, float3 normal_10, float error_1, float3 dir_4)
 {
     float3 n_7 = (float3)0;
 
-    n_7 = normal_9;
+    n_7 = normal_10;
     float3 _e5 = n_7;
-    if ((dot(dir_3, _e5) < 0.0)) {
+    if ((dot(dir_4, _e5) < 0.0)) {
         float3 _e9 = n_7;
         n_7 = -(_e9);
     }
@@ -1913,9 +1927,9 @@ float3 spawn_origin_at(float3 position_9, float3 normal_9, float error_1, float3
     return _e12;
 }
 
-float3 spawn_origin(Hit hit_5, float error_2, float3 dir_4)
+float3 spawn_origin(Hit hit_5, float error_2, float3 dir_5)
 {
-    const float3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
+    const float3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_5);
     return _e5;
 }
 
@@ -2141,13 +2155,13 @@ float3 trace(Ray camera_ray)
             stack[min(uint(min(top_1, 3u)), 3u)].next = (i_9 + 1u);
             Ray parent = stack[min(uint(min(top_1, 3u)), 3u)].ray;
             Hit hit_9 = stack[min(uint(min(top_1, 3u)), 3u)].hit;
-            float3 dir_8 = stack[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_9, 0u)), 0u)];
+            float3 dir_9 = stack[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_9, 0u)), 0u)];
             medium = parent.medium;
             float _e283 = stack[min(uint(min(top_1, 3u)), 3u)].error;
-            const float3 _e284 = spawn_origin(hit_9, _e283, dir_8);
+            const float3 _e284 = spawn_origin(hit_9, _e283, dir_9);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_21 = ConstructRay(_e284, 0.0, dir_8, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_21 = ConstructRay(_e284, 0.0, dir_9, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(uint(min(top_1, 3u)), 3u)].ray;
             s_ray = _e299;

@@ -230,7 +230,9 @@ constant uint SCRATCH_RESOLVED = 3u;
 constant uint SCRATCH_LIGHT_BITS = 11u;
 constant uint SCRATCH_QUERY = 2u;
 constant uint SCRATCH_PENDING = 4u;
-constant uint SCRATCH_UNOCCLUDED = 14u;
+constant uint SCRATCH_SHADOW_MODE = 14u;
+constant uint SHADOW_UNOCCLUDED = 1u;
+constant uint SHADOW_ABOVE = 2u;
 constant uint LIGHT_QUERIES = 32u;
 constant uint COUNTER_SHADOW_OVERFLOW = 3u;
 constant uint SCRATCH_LIGHT_QUERY = 15u;
@@ -1387,6 +1389,21 @@ DirectionalLight load_DirectionalLight(
     return DirectionalLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), as_type<float>(_e43)};
 }
 
+float shadow_preset(
+    metal::float3 normal,
+    metal::float3 dir,
+    thread type_3& scratch
+) {
+    uint mode = scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 24u)];
+    if (mode == SHADOW_UNOCCLUDED) {
+        return 1.0;
+    }
+    if ((mode == SHADOW_ABOVE) && !((metal::dot(dir, normal) > 0.0))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 void scratch_store3f(
     uint i_2,
     metal::float3 v_2,
@@ -1401,26 +1418,26 @@ void scratch_store3f(
 
 float shadow_deferred(
     metal::float3 position,
-    metal::float3 normal,
-    metal::float3 dir,
+    metal::float3 normal_1,
+    metal::float3 dir_1,
     float dist,
     thread type_3& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e9 = scratch.inner[metal::min(SCRATCH_UNOCCLUDED, 24u)];
-    if (_e9 != 0u) {
-        return 1.0;
+    float _e4 = shadow_preset(normal_1, dir_1, scratch);
+    if (_e4 >= 0.0) {
+        return _e4;
     }
     uint i_8 = scratch.inner[metal::min(SCRATCH_QUERY, 24u)];
     scratch.inner[metal::min(SCRATCH_QUERY, 24u)] = i_8 + 1u;
-    uint _e31 = scratch.inner[metal::min(SCRATCH_RESOLVED, 24u)];
-    if (i_8 < _e31) {
-        uint _e38 = scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 24u)];
-        return static_cast<float>((_e38 >> (i_8 & 31u)) & 1u);
+    uint _e25 = scratch.inner[metal::min(SCRATCH_RESOLVED, 24u)];
+    if (i_8 < _e25) {
+        uint _e32 = scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 24u)];
+        return static_cast<float>((_e32 >> (i_8 & 31u)) & 1u);
     }
-    uint _e50 = scratch.inner[metal::min(SCRATCH_PENDING, 24u)];
-    if (_e50 != 0u) {
+    uint _e44 = scratch.inner[metal::min(SCRATCH_PENDING, 24u)];
+    if (_e44 != 0u) {
         return 1.0;
     }
     if (i_8 >= LIGHT_QUERIES) {
@@ -1428,8 +1445,8 @@ float shadow_deferred(
         return 1.0;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position, scratch);
-    scratch_store3f(SCRATCH_LIGHT_QUERY + 3u, normal, scratch);
-    scratch_store3f(SCRATCH_LIGHT_QUERY + 6u, dir, scratch);
+    scratch_store3f(SCRATCH_LIGHT_QUERY + 3u, normal_1, scratch);
+    scratch_store3f(SCRATCH_LIGHT_QUERY + 6u, dir_1, scratch);
     scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 24u)] = as_type<uint>(dist);
     scratch.inner[metal::min(SCRATCH_PENDING, 24u)] = 1u;
     return 1.0;
@@ -1438,22 +1455,22 @@ float shadow_deferred(
 LightSample directional_light(
     DirectionalLight l,
     metal::float3 position_1,
-    metal::float3 normal_1,
+    metal::float3 normal_2,
     thread type_3& scratch,
     thread uint& F32_INF,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 _e4 = normalize_vec3f(l.direction);
-    metal::float3 dir_5 = -(_e4);
-    if (metal::dot(dir_5, dir_5) == 0.0) {
+    metal::float3 dir_6 = -(_e4);
+    if (metal::dot(dir_6, dir_6) == 0.0) {
         uint _e14 = F32_INF;
         return LightSample {metal::float3(0.0, 1.0, 0.0), as_type<float>(_e14), metal::float3(0.0), 0.0};
     }
     uint _e21 = F32_INF;
-    float _e23 = shadow_deferred(position_1, normal_1, dir_5, as_type<float>(_e21), scratch, counters, _buffer_sizes);
+    float _e23 = shadow_deferred(position_1, normal_2, dir_6, as_type<float>(_e21), scratch, counters, _buffer_sizes);
     uint _e25 = F32_INF;
-    return LightSample {dir_5, as_type<float>(_e25), (l.color * metal::float3(l.intensity)) * metal::float3(_e23), 0.0};
+    return LightSample {dir_6, as_type<float>(_e25), (l.color * metal::float3(l.intensity)) * metal::float3(_e23), 0.0};
 }
 
 PointLight load_PointLight(
@@ -1476,7 +1493,7 @@ PointLight load_PointLight(
 LightSample point_light(
     PointLight l_1,
     metal::float3 position_2,
-    metal::float3 normal_2,
+    metal::float3 normal_3,
     thread type_3& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
@@ -1484,15 +1501,15 @@ LightSample point_light(
     float strength = {};
     metal::float3 to_light = l_1.position - position_2;
     float dist_3 = metal::length(to_light);
-    metal::float3 dir_6 = to_light / metal::float3(metal::max(dist_3, 0.00000000000000000001));
+    metal::float3 dir_7 = to_light / metal::float3(metal::max(dist_3, 0.00000000000000000001));
     strength = l_1.intensity / metal::max(dist_3 * dist_3, 0.00000000000000000001);
     if (l_1.range > 0.0) {
         float _e19 = strength;
         strength = _e19 * (1.0 - metal::smoothstep(l_1.inner_range, l_1.range, dist_3));
     }
-    float _e26 = shadow_deferred(position_2, normal_2, dir_6, dist_3, scratch, counters, _buffer_sizes);
+    float _e26 = shadow_deferred(position_2, normal_3, dir_7, dist_3, scratch, counters, _buffer_sizes);
     float _e28 = strength;
-    return LightSample {dir_6, dist_3, (l_1.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
+    return LightSample {dir_7, dist_3, (l_1.color * metal::float3(_e28)) * metal::float3(_e26), 0.0};
 }
 
 SphereLight load_SphereLight(
@@ -1525,7 +1542,7 @@ metal::float3x3 orthonormal_basis(
 LightSample sphere_light(
     SphereLight l_2,
     metal::float3 position_3,
-    metal::float3 normal_3,
+    metal::float3 normal_4,
     thread type_3& scratch,
     thread uint& rng_state,
     device type_17& counters,
@@ -1550,7 +1567,7 @@ LightSample sphere_light(
     float along_1 = metal::dot(to_center, _e52);
     float dist_4 = metal::max(along_1 - metal::sqrt(metal::max(r2_2 - (d2_ - (along_1 * along_1)), 0.0)), 0.0);
     float weight = ((l_2.intensity * 2.0) * one_minus_cos_max) / r2_2;
-    float _e68 = shadow_deferred(position_3, normal_3, _e52, dist_4, scratch, counters, _buffer_sizes);
+    float _e68 = shadow_deferred(position_3, normal_4, _e52, dist_4, scratch, counters, _buffer_sizes);
     float pdf = (l_2.lamp == 1u) ? (1.0 / (TAU * one_minus_cos_max)) : 0.0;
     return LightSample {_e52, dist_4, (l_2.color * metal::float3(weight)) * metal::float3(_e68), pdf};
 }
@@ -1579,7 +1596,7 @@ SpotLight load_SpotLight(
 LightSample spot_light(
     SpotLight l_3,
     metal::float3 position_4,
-    metal::float3 normal_4,
+    metal::float3 normal_5,
     thread type_3& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
@@ -1587,7 +1604,7 @@ LightSample spot_light(
     float strength_1 = {};
     metal::float3 to_light_1 = l_3.position - position_4;
     float dist_5 = metal::length(to_light_1);
-    metal::float3 dir_7 = to_light_1 / metal::float3(metal::max(dist_5, 0.00000000000000000001));
+    metal::float3 dir_8 = to_light_1 / metal::float3(metal::max(dist_5, 0.00000000000000000001));
     strength_1 = l_3.intensity / metal::max(dist_5 * dist_5, 0.00000000000000000001);
     if (l_3.range > 0.0) {
         float _e19 = strength_1;
@@ -1597,21 +1614,21 @@ LightSample spot_light(
     float cos_outer = metal::min(metal::cos(((metal::min(metal::max(l_3.outer_angle, 0.0), 180.0)) * 0.017453292519943295474)), cos_inner - 0.0001);
     float _e43 = strength_1;
     metal::float3 _e46 = normalize_vec3f(l_3.direction);
-    strength_1 = _e43 * metal::smoothstep(cos_outer, cos_inner, metal::dot(-(dir_7), _e46));
+    strength_1 = _e43 * metal::smoothstep(cos_outer, cos_inner, metal::dot(-(dir_8), _e46));
     float _e50 = strength_1;
     if (_e50 <= 0.0) {
-        return LightSample {dir_7, dist_5, metal::float3(0.0), 0.0};
+        return LightSample {dir_8, dist_5, metal::float3(0.0), 0.0};
     }
-    float _e57 = shadow_deferred(position_4, normal_4, dir_7, dist_5, scratch, counters, _buffer_sizes);
+    float _e57 = shadow_deferred(position_4, normal_5, dir_8, dist_5, scratch, counters, _buffer_sizes);
     float _e59 = strength_1;
-    return LightSample {dir_7, dist_5, (l_3.color * metal::float3(_e59)) * metal::float3(_e57), 0.0};
+    return LightSample {dir_8, dist_5, (l_3.color * metal::float3(_e59)) * metal::float3(_e57), 0.0};
 }
 
 LightSample dispatch_light(
     uint type_id_3,
     uint offset_12,
     metal::float3 position_5,
-    metal::float3 normal_5,
+    metal::float3 normal_6,
     thread type_3& scratch,
     thread uint& rng_state,
     device type_5 const& params,
@@ -1622,22 +1639,22 @@ LightSample dispatch_light(
     switch(type_id_3) {
         case 0u: {
             DirectionalLight _e4 = load_DirectionalLight(offset_12, params, _buffer_sizes);
-            LightSample _e5 = directional_light(_e4, position_5, normal_5, scratch, F32_INF, counters, _buffer_sizes);
+            LightSample _e5 = directional_light(_e4, position_5, normal_6, scratch, F32_INF, counters, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             PointLight _e6 = load_PointLight(offset_12, params, _buffer_sizes);
-            LightSample _e7 = point_light(_e6, position_5, normal_5, scratch, counters, _buffer_sizes);
+            LightSample _e7 = point_light(_e6, position_5, normal_6, scratch, counters, _buffer_sizes);
             return _e7;
         }
         case 2u: {
             SphereLight _e8 = load_SphereLight(offset_12, params, _buffer_sizes);
-            LightSample _e9 = sphere_light(_e8, position_5, normal_5, scratch, rng_state, counters, _buffer_sizes);
+            LightSample _e9 = sphere_light(_e8, position_5, normal_6, scratch, rng_state, counters, _buffer_sizes);
             return _e9;
         }
         case 3u: {
             SpotLight _e10 = load_SpotLight(offset_12, params, _buffer_sizes);
-            LightSample _e11 = spot_light(_e10, position_5, normal_5, scratch, counters, _buffer_sizes);
+            LightSample _e11 = spot_light(_e10, position_5, normal_6, scratch, counters, _buffer_sizes);
             return _e11;
         }
         default: {
@@ -1682,17 +1699,17 @@ metal::float3 offset_origin(
 
 Ray shadow_ray(
     metal::float3 position_6,
-    metal::float3 normal_6,
-    metal::float3 dir_1,
+    metal::float3 normal_7,
+    metal::float3 dir_2,
     float dist_1,
     thread uint& F32_INF,
     thread float& hit_error
 ) {
     metal::float3 n_6 = {};
     float tmax_4 = {};
-    n_6 = normal_6;
+    n_6 = normal_7;
     metal::float3 _e5 = n_6;
-    if (metal::dot(dir_1, _e5) < 0.0) {
+    if (metal::dot(dir_2, _e5) < 0.0) {
         metal::float3 _e9 = n_6;
         n_6 = -(_e9);
     }
@@ -1705,20 +1722,20 @@ Ray shadow_ray(
     tmax_4 = as_type<float>(_e25);
     uint _e29 = F32_INF;
     if (dist_1 < as_type<float>(_e29)) {
-        metal::float3 light = position_6 + (dir_1 * metal::float3(dist_1));
-        float dd_1 = metal::dot(dir_1, dir_1);
-        float along_2 = metal::dot(light - _e23, dir_1) / dd_1;
-        metal::float3 l_5 = metal::abs(position_6) + metal::abs(dir_1 * metal::float3(dist_1));
+        metal::float3 light = position_6 + (dir_2 * metal::float3(dist_1));
+        float dd_1 = metal::dot(dir_2, dir_2);
+        float along_2 = metal::dot(light - _e23, dir_2) / dd_1;
+        metal::float3 l_5 = metal::abs(position_6) + metal::abs(dir_2 * metal::float3(dist_1));
         tmax_4 = (along_2 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_5.x, l_5.y), l_5.z)) / metal::sqrt(dd_1));
     }
     float _e59 = tmax_4;
-    return Ray {_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u};
+    return Ray {_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u};
 }
 
 float shadow_query(
     metal::float3 position_7,
-    metal::float3 normal_7,
-    metal::float3 dir_2,
+    metal::float3 normal_8,
+    metal::float3 dir_3,
     float dist_2,
     constant FrameUniforms& frame,
     thread type_3& scratch,
@@ -1732,19 +1749,19 @@ float shadow_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e9 = scratch.inner[metal::min(SCRATCH_UNOCCLUDED, 24u)];
-    if (_e9 != 0u) {
-        return 1.0;
+    float _e4 = shadow_preset(normal_8, dir_3, scratch);
+    if (_e4 >= 0.0) {
+        return _e4;
     }
-    Ray _e13 = shadow_ray(position_7, normal_7, dir_2, dist_2, F32_INF, hit_error);
-    Candidate _e15 = intersect_scene(_e13, true, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-    return (_e15.slot != NO_HIT) ? 0.0 : 1.0;
+    Ray _e7 = shadow_ray(position_7, normal_8, dir_3, dist_2, F32_INF, hit_error);
+    Candidate _e9 = intersect_scene(_e7, true, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return (_e9.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
 LightSample sample_light_deferred(
     uint i_4,
     metal::float3 position_8,
-    metal::float3 normal_8,
+    metal::float3 normal_9,
     constant FrameUniforms& frame,
     thread type_3& scratch,
     thread uint& rng_state,
@@ -1782,7 +1799,7 @@ LightSample sample_light_deferred(
         rng_state = start;
         scratch.inner[metal::min(SCRATCH_QUERY, 24u)] = 0u;
         scratch.inner[metal::min(SCRATCH_PENDING, 24u)] = 0u;
-        LightSample _e60 = dispatch_light(type_id_7, offset_17, position_8, normal_8, scratch, rng_state, params, F32_INF, counters, _buffer_sizes);
+        LightSample _e60 = dispatch_light(type_id_7, offset_17, position_8, normal_9, scratch, rng_state, params, F32_INF, counters, _buffer_sizes);
         uint _e66 = scratch.inner[metal::min(SCRATCH_PENDING, 24u)];
         if (_e66 == 0u) {
             uint _e69 = resolved;
@@ -1966,14 +1983,14 @@ void dispatch_secondary_rays(
 
 metal::float3 spawn_origin_at(
     metal::float3 position_9,
-    metal::float3 normal_9,
+    metal::float3 normal_10,
     float error_1,
-    metal::float3 dir_3
+    metal::float3 dir_4
 ) {
     metal::float3 n_7 = {};
-    n_7 = normal_9;
+    n_7 = normal_10;
     metal::float3 _e5 = n_7;
-    if (metal::dot(dir_3, _e5) < 0.0) {
+    if (metal::dot(dir_4, _e5) < 0.0) {
         metal::float3 _e9 = n_7;
         n_7 = -(_e9);
     }
@@ -1985,9 +2002,9 @@ metal::float3 spawn_origin_at(
 metal::float3 spawn_origin(
     Hit hit_5,
     float error_2,
-    metal::float3 dir_4
+    metal::float3 dir_5
 ) {
-    metal::float3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
+    metal::float3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_5);
     return _e5;
 }
 
@@ -2206,13 +2223,13 @@ metal::float3 trace(
             stack.inner[metal::min(top_1, 3u)].next = i_9 + 1u;
             Ray parent = stack.inner[metal::min(top_1, 3u)].ray;
             Hit hit_8 = stack.inner[metal::min(top_1, 3u)].hit;
-            metal::float3 dir_8 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_9, 0u)];
+            metal::float3 dir_9 = stack.inner[metal::min(top_1, 3u)].dirs.inner[metal::min(i_9, 0u)];
             medium = parent.medium;
             float _e283 = stack.inner[metal::min(top_1, 3u)].error;
-            metal::float3 _e284 = spawn_origin(hit_8, _e283, dir_8);
+            metal::float3 _e284 = spawn_origin(hit_8, _e283, dir_9);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_21 = Ray {_e284, 0.0, dir_8, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_21 = Ray {_e284, 0.0, dir_9, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;

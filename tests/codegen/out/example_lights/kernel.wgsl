@@ -203,7 +203,9 @@ const SCRATCH_RESOLVED: u32 = 3u;
 const SCRATCH_LIGHT_BITS: u32 = 11u;
 const SCRATCH_QUERY: u32 = 2u;
 const SCRATCH_PENDING: u32 = 4u;
-const SCRATCH_UNOCCLUDED: u32 = 14u;
+const SCRATCH_SHADOW_MODE: u32 = 14u;
+const SHADOW_UNOCCLUDED: u32 = 1u;
+const SHADOW_ABOVE: u32 = 2u;
 const LIGHT_QUERIES: u32 = 32u;
 const COUNTER_SHADOW_OVERFLOW: u32 = 3u;
 const SCRATCH_LIGHT_QUERY: u32 = 15u;
@@ -1113,6 +1115,17 @@ fn load_DirectionalLight(offset_8: u32) -> DirectionalLight {
     return DirectionalLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43));
 }
 
+fn shadow_preset(normal: vec3<f32>, dir: vec3<f32>) -> f32 {
+    let mode = scratch[min(SCRATCH_SHADOW_MODE, 24u)];
+    if (mode == SHADOW_UNOCCLUDED) {
+        return 1f;
+    }
+    if ((mode == SHADOW_ABOVE) && !((dot(dir, normal) > 0f))) {
+        return 0f;
+    }
+    return -1f;
+}
+
 fn scratch_store3f(i_2: u32, v_2: vec3<f32>) {
     let b_9 = bitcast<vec3<u32>>(v_2);
     scratch[min(i_2, 24u)] = b_9.x;
@@ -1121,20 +1134,20 @@ fn scratch_store3f(i_2: u32, v_2: vec3<f32>) {
     return;
 }
 
-fn shadow_deferred(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
-    let _e9 = scratch[min(SCRATCH_UNOCCLUDED, 24u)];
-    if (_e9 != 0u) {
-        return 1f;
+fn shadow_deferred(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist: f32) -> f32 {
+    let _e4 = shadow_preset(normal_1, dir_1);
+    if (_e4 >= 0f) {
+        return _e4;
     }
     let i_8 = scratch[min(SCRATCH_QUERY, 24u)];
     scratch[min(SCRATCH_QUERY, 24u)] = (i_8 + 1u);
-    let _e31 = scratch[min(SCRATCH_RESOLVED, 24u)];
-    if (i_8 < _e31) {
-        let _e38 = scratch[min(SCRATCH_LIGHT_BITS, 24u)];
-        return f32(((_e38 >> (i_8 & 31u)) & 1u));
+    let _e25 = scratch[min(SCRATCH_RESOLVED, 24u)];
+    if (i_8 < _e25) {
+        let _e32 = scratch[min(SCRATCH_LIGHT_BITS, 24u)];
+        return f32(((_e32 >> (i_8 & 31u)) & 1u));
     }
-    let _e50 = scratch[min(SCRATCH_PENDING, 24u)];
-    if (_e50 != 0u) {
+    let _e44 = scratch[min(SCRATCH_PENDING, 24u)];
+    if (_e44 != 0u) {
         return 1f;
     }
     if (i_8 >= LIGHT_QUERIES) {
@@ -1142,24 +1155,24 @@ fn shadow_deferred(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist:
         return 1f;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal_1);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir_1);
     scratch[min((SCRATCH_LIGHT_QUERY + 9u), 24u)] = bitcast<u32>(dist);
     scratch[min(SCRATCH_PENDING, 24u)] = 1u;
     return 1f;
 }
 
-fn directional_light(l: DirectionalLight, position_1: vec3<f32>, normal_1: vec3<f32>) -> LightSample {
+fn directional_light(l: DirectionalLight, position_1: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
     let _e4 = normalize_vec3f(l.direction);
-    let dir_5 = -(_e4);
-    if (dot(dir_5, dir_5) == 0f) {
+    let dir_6 = -(_e4);
+    if (dot(dir_6, dir_6) == 0f) {
         let _e14 = F32_INF;
         return LightSample(vec3<f32>(0f, 1f, 0f), bitcast<f32>(_e14), vec3(0f), 0f);
     }
     let _e21 = F32_INF;
-    let _e23 = shadow_deferred(position_1, normal_1, dir_5, bitcast<f32>(_e21));
+    let _e23 = shadow_deferred(position_1, normal_2, dir_6, bitcast<f32>(_e21));
     let _e25 = F32_INF;
-    return LightSample(dir_5, bitcast<f32>(_e25), ((l.color * vec3(l.intensity)) * vec3(_e23)), 0f);
+    return LightSample(dir_6, bitcast<f32>(_e25), ((l.color * vec3(l.intensity)) * vec3(_e23)), 0f);
 }
 
 fn load_PointLight(offset_9: u32) -> PointLight {
@@ -1175,20 +1188,20 @@ fn load_PointLight(offset_9: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn point_light(l_1: PointLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
+fn point_light(l_1: PointLight, position_2: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
     var strength: f32;
 
     let to_light = (l_1.position - position_2);
     let dist_3 = length(to_light);
-    let dir_6 = (to_light / vec3(max(dist_3, 0.00000000000000000001f)));
+    let dir_7 = (to_light / vec3(max(dist_3, 0.00000000000000000001f)));
     strength = (l_1.intensity / max((dist_3 * dist_3), 0.00000000000000000001f));
     if (l_1.range > 0f) {
         let _e19 = strength;
         strength = (_e19 * (1f - smoothstep(l_1.inner_range, l_1.range, dist_3)));
     }
-    let _e26 = shadow_deferred(position_2, normal_2, dir_6, dist_3);
+    let _e26 = shadow_deferred(position_2, normal_3, dir_7, dist_3);
     let _e28 = strength;
-    return LightSample(dir_6, dist_3, ((l_1.color * vec3(_e28)) * vec3(_e26)), 0f);
+    return LightSample(dir_7, dist_3, ((l_1.color * vec3(_e28)) * vec3(_e26)), 0f);
 }
 
 fn load_SphereLight(offset_10: u32) -> SphereLight {
@@ -1212,7 +1225,7 @@ fn orthonormal_basis(n_4: vec3<f32>) -> mat3x3<f32> {
     return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_4.x) * a_7)), (sign_1 * b_10), -(_e16)), vec3<f32>(b_10, (sign_1 + ((n_4.y * n_4.y) * a_7)), -(n_4.y)), n_4);
 }
 
-fn sphere_light(l_2: SphereLight, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
+fn sphere_light(l_2: SphereLight, position_3: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let to_center = (l_2.position - position_3);
     let d2_ = dot(to_center, to_center);
     let r2_2 = max((l_2.radius * l_2.radius), 0.00000000000000000001f);
@@ -1232,7 +1245,7 @@ fn sphere_light(l_2: SphereLight, position_3: vec3<f32>, normal_3: vec3<f32>) ->
     let along_1 = dot(to_center, _e52);
     let dist_4 = max((along_1 - sqrt(max((r2_2 - (d2_ - (along_1 * along_1))), 0f))), 0f);
     let weight = (((l_2.intensity * 2f) * one_minus_cos_max) / r2_2);
-    let _e68 = shadow_deferred(position_3, normal_3, _e52, dist_4);
+    let _e68 = shadow_deferred(position_3, normal_4, _e52, dist_4);
     let pdf = select(0f, (1f / (TAU * one_minus_cos_max)), (l_2.lamp == 1u));
     return LightSample(_e52, dist_4, ((l_2.color * vec3(weight)) * vec3(_e68)), pdf);
 }
@@ -1254,12 +1267,12 @@ fn load_SpotLight(offset_11: u32) -> SpotLight {
     return SpotLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)), bitcast<f32>(_e62), bitcast<f32>(_e68), bitcast<f32>(_e74), bitcast<f32>(_e80));
 }
 
-fn spot_light(l_3: SpotLight, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
+fn spot_light(l_3: SpotLight, position_4: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
     var strength_1: f32;
 
     let to_light_1 = (l_3.position - position_4);
     let dist_5 = length(to_light_1);
-    let dir_7 = (to_light_1 / vec3(max(dist_5, 0.00000000000000000001f)));
+    let dir_8 = (to_light_1 / vec3(max(dist_5, 0.00000000000000000001f)));
     strength_1 = (l_3.intensity / max((dist_5 * dist_5), 0.00000000000000000001f));
     if (l_3.range > 0f) {
         let _e19 = strength_1;
@@ -1269,36 +1282,36 @@ fn spot_light(l_3: SpotLight, position_4: vec3<f32>, normal_4: vec3<f32>) -> Lig
     let cos_outer = min(cos(radians(min(max(l_3.outer_angle, 0f), 180f))), (cos_inner - 0.0001f));
     let _e43 = strength_1;
     let _e46 = normalize_vec3f(l_3.direction);
-    strength_1 = (_e43 * smoothstep(cos_outer, cos_inner, dot(-(dir_7), _e46)));
+    strength_1 = (_e43 * smoothstep(cos_outer, cos_inner, dot(-(dir_8), _e46)));
     let _e50 = strength_1;
     if (_e50 <= 0f) {
-        return LightSample(dir_7, dist_5, vec3(0f), 0f);
+        return LightSample(dir_8, dist_5, vec3(0f), 0f);
     }
-    let _e57 = shadow_deferred(position_4, normal_4, dir_7, dist_5);
+    let _e57 = shadow_deferred(position_4, normal_5, dir_8, dist_5);
     let _e59 = strength_1;
-    return LightSample(dir_7, dist_5, ((l_3.color * vec3(_e59)) * vec3(_e57)), 0f);
+    return LightSample(dir_8, dist_5, ((l_3.color * vec3(_e59)) * vec3(_e57)), 0f);
 }
 
-fn dispatch_light(type_id_3: u32, offset_12: u32, position_5: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
+fn dispatch_light(type_id_3: u32, offset_12: u32, position_5: vec3<f32>, normal_6: vec3<f32>) -> LightSample {
     switch type_id_3 {
         case 0u: {
             let _e4 = load_DirectionalLight(offset_12);
-            let _e5 = directional_light(_e4, position_5, normal_5);
+            let _e5 = directional_light(_e4, position_5, normal_6);
             return _e5;
         }
         case 1u: {
             let _e6 = load_PointLight(offset_12);
-            let _e7 = point_light(_e6, position_5, normal_5);
+            let _e7 = point_light(_e6, position_5, normal_6);
             return _e7;
         }
         case 2u: {
             let _e8 = load_SphereLight(offset_12);
-            let _e9 = sphere_light(_e8, position_5, normal_5);
+            let _e9 = sphere_light(_e8, position_5, normal_6);
             return _e9;
         }
         case 3u: {
             let _e10 = load_SpotLight(offset_12);
-            let _e11 = spot_light(_e10, position_5, normal_5);
+            let _e11 = spot_light(_e10, position_5, normal_6);
             return _e11;
         }
         default: {
@@ -1330,13 +1343,13 @@ fn offset_origin(p_5: vec3<f32>, n_5: vec3<f32>, error: f32) -> vec3<f32> {
     return _e17;
 }
 
-fn shadow_ray(position_6: vec3<f32>, normal_6: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> Ray {
+fn shadow_ray(position_6: vec3<f32>, normal_7: vec3<f32>, dir_2: vec3<f32>, dist_1: f32) -> Ray {
     var n_6: vec3<f32>;
     var tmax_4: f32;
 
-    n_6 = normal_6;
+    n_6 = normal_7;
     let _e5 = n_6;
-    if (dot(dir_1, _e5) < 0f) {
+    if (dot(dir_2, _e5) < 0f) {
         let _e9 = n_6;
         n_6 = -(_e9);
     }
@@ -1349,27 +1362,27 @@ fn shadow_ray(position_6: vec3<f32>, normal_6: vec3<f32>, dir_1: vec3<f32>, dist
     tmax_4 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
     if (dist_1 < bitcast<f32>(_e29)) {
-        let light = (position_6 + (dir_1 * vec3(dist_1)));
-        let dd_1 = dot(dir_1, dir_1);
-        let along_2 = (dot((light - _e23), dir_1) / dd_1);
-        let l_5 = (abs(position_6) + abs((dir_1 * vec3(dist_1))));
+        let light = (position_6 + (dir_2 * vec3(dist_1)));
+        let dd_1 = dot(dir_2, dir_2);
+        let along_2 = (dot((light - _e23), dir_2) / dd_1);
+        let l_5 = (abs(position_6) + abs((dir_2 * vec3(dist_1))));
         tmax_4 = ((along_2 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_5.x, l_5.y), l_5.z)) / sqrt(dd_1)));
     }
     let _e59 = tmax_4;
-    return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0f, dir_2, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-fn shadow_query(position_7: vec3<f32>, normal_7: vec3<f32>, dir_2: vec3<f32>, dist_2: f32) -> f32 {
-    let _e9 = scratch[min(SCRATCH_UNOCCLUDED, 24u)];
-    if (_e9 != 0u) {
-        return 1f;
+fn shadow_query(position_7: vec3<f32>, normal_8: vec3<f32>, dir_3: vec3<f32>, dist_2: f32) -> f32 {
+    let _e4 = shadow_preset(normal_8, dir_3);
+    if (_e4 >= 0f) {
+        return _e4;
     }
-    let _e13 = shadow_ray(position_7, normal_7, dir_2, dist_2);
-    let _e15 = intersect_scene(_e13, true);
-    return select(1f, 0f, (_e15.slot != NO_HIT));
+    let _e7 = shadow_ray(position_7, normal_8, dir_3, dist_2);
+    let _e9 = intersect_scene(_e7, true);
+    return select(1f, 0f, (_e9.slot != NO_HIT));
 }
 
-fn sample_light_deferred(i_4: u32, position_8: vec3<f32>, normal_8: vec3<f32>) -> LightSample {
+fn sample_light_deferred(i_4: u32, position_8: vec3<f32>, normal_9: vec3<f32>) -> LightSample {
     var after: u32;
     var resolved: u32;
     var bits_1: u32;
@@ -1391,7 +1404,7 @@ fn sample_light_deferred(i_4: u32, position_8: vec3<f32>, normal_8: vec3<f32>) -
         rng_state = start;
         scratch[min(SCRATCH_QUERY, 24u)] = 0u;
         scratch[min(SCRATCH_PENDING, 24u)] = 0u;
-        let _e60 = dispatch_light(type_id_7, offset_17, position_8, normal_8);
+        let _e60 = dispatch_light(type_id_7, offset_17, position_8, normal_9);
         let _e66 = scratch[min(SCRATCH_PENDING, 24u)];
         if (_e66 == 0u) {
             let _e69 = resolved;
@@ -1499,12 +1512,12 @@ fn dispatch_secondary_rays(type_id_6: u32, offset_15: u32, ray_20: Ray, hit_4: H
     return;
 }
 
-fn spawn_origin_at(position_9: vec3<f32>, normal_9: vec3<f32>, error_1: f32, dir_3: vec3<f32>) -> vec3<f32> {
+fn spawn_origin_at(position_9: vec3<f32>, normal_10: vec3<f32>, error_1: f32, dir_4: vec3<f32>) -> vec3<f32> {
     var n_7: vec3<f32>;
 
-    n_7 = normal_9;
+    n_7 = normal_10;
     let _e5 = n_7;
-    if (dot(dir_3, _e5) < 0f) {
+    if (dot(dir_4, _e5) < 0f) {
         let _e9 = n_7;
         n_7 = -(_e9);
     }
@@ -1513,8 +1526,8 @@ fn spawn_origin_at(position_9: vec3<f32>, normal_9: vec3<f32>, error_1: f32, dir
     return _e12;
 }
 
-fn spawn_origin(hit_5: Hit, error_2: f32, dir_4: vec3<f32>) -> vec3<f32> {
-    let _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
+fn spawn_origin(hit_5: Hit, error_2: f32, dir_5: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_5);
     return _e5;
 }
 
@@ -1707,13 +1720,13 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             stack[min(top_1, 3u)].next = (i_9 + 1u);
             let parent = stack[min(top_1, 3u)].ray;
             let hit_8 = stack[min(top_1, 3u)].hit;
-            let dir_8 = stack[min(top_1, 3u)].dirs[min(i_9, 0u)];
+            let dir_9 = stack[min(top_1, 3u)].dirs[min(i_9, 0u)];
             medium = parent.medium;
             let _e283 = stack[min(top_1, 3u)].error;
-            let _e284 = spawn_origin(hit_8, _e283, dir_8);
+            let _e284 = spawn_origin(hit_8, _e283, dir_9);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_21 = Ray(_e284, 0f, dir_8, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_21 = Ray(_e284, 0f, dir_9, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;

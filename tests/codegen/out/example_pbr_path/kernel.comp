@@ -183,17 +183,20 @@ const float GAMMA_6_ = 3.576281e-7;
 const float GAMMA_4_ = 2.3841864e-7;
 const bool HAS_SECONDARY_RAYS = true;
 const bool HAS_BACKGROUND = true;
+const uint SCRATCH_SHADOW_MODE = 14u;
+const uint SHADOW_ABOVE = 2u;
 const uint LIGHT_ENTRY_STRIDE = 2u;
 const uint SCRATCH_RESOLVED = 3u;
 const uint SCRATCH_LIGHT_BITS = 11u;
 const uint SCRATCH_QUERY = 2u;
 const uint SCRATCH_PENDING = 4u;
-const uint SCRATCH_UNOCCLUDED = 14u;
+const uint SHADOW_UNOCCLUDED = 1u;
 const uint LIGHT_QUERIES = 32u;
 const uint COUNTER_SHADOW_OVERFLOW = 3u;
 const uint SCRATCH_LIGHT_QUERY = 15u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const uint RAY_SHADOW = 2u;
+const uint SHADOW_TRACED = 0u;
 const float MIS_BOUNCE_LENGTH = 3.0;
 const float PBR_MIN_ALPHA = 0.001;
 const uint FLAG_MEDIUM = 4u;
@@ -377,10 +380,10 @@ float rand_next() {
     uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
     uint _e22 = scratch[min(SCRATCH_RNG_INDEX, 24u)];
     uint _e24 = laine_karras(bitfieldReverse(_e22), _e16);
-    uint i_7 = bitfieldReverse(_e24);
-    x_2 = i_7;
+    uint i_8 = bitfieldReverse(_e24);
+    x_2 = i_8;
     if (((d_1 & 1u) != 0u)) {
-        uint _e31 = sobol_second_reversed(i_7);
+        uint _e31 = sobol_second_reversed(i_8);
         x_2 = _e31;
     }
     uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
@@ -1035,6 +1038,17 @@ QuadLight load_QuadLight(uint offset_7) {
     return QuadLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)), vec3(uintBitsToFloat(_e62), uintBitsToFloat(_e68), uintBitsToFloat(_e74)), uintBitsToFloat(_e81), _e87);
 }
 
+float shadow_preset(vec3 normal, vec3 dir) {
+    uint mode = scratch[min(SCRATCH_SHADOW_MODE, 24u)];
+    if ((mode == SHADOW_UNOCCLUDED)) {
+        return 1.0;
+    }
+    if (((mode == SHADOW_ABOVE) && !((dot(dir, normal) > 0.0)))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 void scratch_store3f(uint i_2, vec3 v_2) {
     uvec3 b_8 = floatBitsToUint(v_2);
     scratch[min(i_2, 24u)] = b_8.x;
@@ -1043,50 +1057,50 @@ void scratch_store3f(uint i_2, vec3 v_2) {
     return;
 }
 
-float shadow_deferred(vec3 position, vec3 normal, vec3 dir, float dist) {
-    uint _e9 = scratch[min(SCRATCH_UNOCCLUDED, 24u)];
-    if ((_e9 != 0u)) {
+float shadow_deferred(vec3 position, vec3 normal_1, vec3 dir_1, float dist) {
+    float _e4 = shadow_preset(normal_1, dir_1);
+    if ((_e4 >= 0.0)) {
+        return _e4;
+    }
+    uint i_9 = scratch[min(SCRATCH_QUERY, 24u)];
+    scratch[min(SCRATCH_QUERY, 24u)] = (i_9 + 1u);
+    uint _e25 = scratch[min(SCRATCH_RESOLVED, 24u)];
+    if ((i_9 < _e25)) {
+        uint _e32 = scratch[min(SCRATCH_LIGHT_BITS, 24u)];
+        return float(((_e32 >> (i_9 & 31u)) & 1u));
+    }
+    uint _e44 = scratch[min(SCRATCH_PENDING, 24u)];
+    if ((_e44 != 0u)) {
         return 1.0;
     }
-    uint i_8 = scratch[min(SCRATCH_QUERY, 24u)];
-    scratch[min(SCRATCH_QUERY, 24u)] = (i_8 + 1u);
-    uint _e31 = scratch[min(SCRATCH_RESOLVED, 24u)];
-    if ((i_8 < _e31)) {
-        uint _e38 = scratch[min(SCRATCH_LIGHT_BITS, 24u)];
-        return float(((_e38 >> (i_8 & 31u)) & 1u));
-    }
-    uint _e50 = scratch[min(SCRATCH_PENDING, 24u)];
-    if ((_e50 != 0u)) {
-        return 1.0;
-    }
-    if ((i_8 >= LIGHT_QUERIES)) {
+    if ((i_9 >= LIGHT_QUERIES)) {
         atomicAdd(_group_0_binding_9_cs[min(COUNTER_SHADOW_OVERFLOW, 3u)], 1u);
         return 1.0;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal_1);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir_1);
     scratch[min((SCRATCH_LIGHT_QUERY + 9u), 24u)] = floatBitsToUint(dist);
     scratch[min(SCRATCH_PENDING, 24u)] = 1u;
     return 1.0;
 }
 
-LightSample quad_light(QuadLight l, vec3 position_1, vec3 normal_1) {
+LightSample quad_light(QuadLight l, vec3 position_1, vec3 normal_2) {
     vec3 c_10 = cross(l.edge_u, l.edge_v);
     float area = length(c_10);
     vec2 _e7 = rand2_next();
     vec3 to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_1);
     float dist2_ = dot(to_light, to_light);
     float dist_3 = sqrt(dist2_);
-    vec3 dir_8 = (to_light / vec3(max(dist_3, 1e-20)));
-    float cos_light = (-(dot(dir_8, c_10)) / max(area, 1e-30));
+    vec3 dir_9 = (to_light / vec3(max(dist_3, 1e-20)));
+    float cos_light = (-(dot(dir_9, c_10)) / max(area, 1e-30));
     if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
-        return LightSample(dir_8, dist_3, vec3(0.0), 0.0);
+        return LightSample(dir_9, dist_3, vec3(0.0), 0.0);
     }
-    float _e42 = shadow_deferred(position_1, normal_1, dir_8, dist_3);
+    float _e42 = shadow_deferred(position_1, normal_2, dir_9, dist_3);
     float strength = (((l.intensity * cos_light) * area) / dist2_);
     float pdf_1 = ((l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0);
-    return LightSample(dir_8, dist_3, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
+    return LightSample(dir_9, dist_3, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
 }
 
 SphereLight load_SphereLight(uint offset_8) {
@@ -1110,7 +1124,7 @@ mat3x3 orthonormal_basis(vec3 n_3) {
     return mat3x3(vec3((1.0 + ((_e16 * n_3.x) * a_7)), (sign_ * b_9), -(_e16)), vec3(b_9, (sign_ + ((n_3.y * n_3.y) * a_7)), -(n_3.y)), n_3);
 }
 
-LightSample sphere_light(SphereLight l_1, vec3 position_2, vec3 normal_2) {
+LightSample sphere_light(SphereLight l_1, vec3 position_2, vec3 normal_3) {
     vec3 to_center = (l_1.position - position_2);
     float d2_ = dot(to_center, to_center);
     float r2_2 = max((l_1.radius * l_1.radius), 1e-20);
@@ -1130,21 +1144,21 @@ LightSample sphere_light(SphereLight l_1, vec3 position_2, vec3 normal_2) {
     float along_1 = dot(to_center, _e52);
     float dist_4 = max((along_1 - sqrt(max((r2_2 - (d2_ - (along_1 * along_1))), 0.0))), 0.0);
     float weight_4 = (((l_1.intensity * 2.0) * one_minus_cos_max) / r2_2);
-    float _e68 = shadow_deferred(position_2, normal_2, _e52, dist_4);
+    float _e68 = shadow_deferred(position_2, normal_3, _e52, dist_4);
     float pdf_2 = ((l_1.lamp == 1u) ? (1.0 / (TAU * one_minus_cos_max)) : 0.0);
     return LightSample(_e52, dist_4, ((l_1.color * vec3(weight_4)) * vec3(_e68)), pdf_2);
 }
 
-LightSample dispatch_light(uint type_id_3, uint offset_9, vec3 position_3, vec3 normal_3) {
+LightSample dispatch_light(uint type_id_3, uint offset_9, vec3 position_3, vec3 normal_4) {
     switch(type_id_3) {
         case 0u: {
             QuadLight _e4 = load_QuadLight(offset_9);
-            LightSample _e5 = quad_light(_e4, position_3, normal_3);
+            LightSample _e5 = quad_light(_e4, position_3, normal_4);
             return _e5;
         }
         case 1u: {
             SphereLight _e6 = load_SphereLight(offset_9);
-            LightSample _e7 = sphere_light(_e6, position_3, normal_3);
+            LightSample _e7 = sphere_light(_e6, position_3, normal_4);
             return _e7;
         }
         default: {
@@ -1177,12 +1191,12 @@ vec3 offset_origin(vec3 p_5, vec3 n_4, float error) {
     return _e17;
 }
 
-Ray shadow_ray(vec3 position_4, vec3 normal_4, vec3 dir_1, float dist_1) {
+Ray shadow_ray(vec3 position_4, vec3 normal_5, vec3 dir_2, float dist_1) {
     vec3 n_5 = vec3(0.0);
     float tmax_4 = 0.0;
-    n_5 = normal_4;
+    n_5 = normal_5;
     vec3 _e5 = n_5;
-    if ((dot(dir_1, _e5) < 0.0)) {
+    if ((dot(dir_2, _e5) < 0.0)) {
         vec3 _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1195,27 +1209,27 @@ Ray shadow_ray(vec3 position_4, vec3 normal_4, vec3 dir_1, float dist_1) {
     tmax_4 = uintBitsToFloat(_e25);
     uint _e29 = F32_INF;
     if ((dist_1 < uintBitsToFloat(_e29))) {
-        vec3 light = (position_4 + (dir_1 * vec3(dist_1)));
-        float dd_1 = dot(dir_1, dir_1);
-        float along_2 = (dot((light - _e23), dir_1) / dd_1);
-        vec3 l_7 = (abs(position_4) + abs((dir_1 * vec3(dist_1))));
+        vec3 light = (position_4 + (dir_2 * vec3(dist_1)));
+        float dd_1 = dot(dir_2, dir_2);
+        float along_2 = (dot((light - _e23), dir_2) / dd_1);
+        vec3 l_7 = (abs(position_4) + abs((dir_2 * vec3(dist_1))));
         tmax_4 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    return Ray(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-float shadow_query(vec3 position_5, vec3 normal_5, vec3 dir_2, float dist_2) {
-    uint _e9 = scratch[min(SCRATCH_UNOCCLUDED, 24u)];
-    if ((_e9 != 0u)) {
-        return 1.0;
+float shadow_query(vec3 position_5, vec3 normal_6, vec3 dir_3, float dist_2) {
+    float _e4 = shadow_preset(normal_6, dir_3);
+    if ((_e4 >= 0.0)) {
+        return _e4;
     }
-    Ray _e13 = shadow_ray(position_5, normal_5, dir_2, dist_2);
-    Candidate _e15 = intersect_scene(_e13, true);
-    return ((_e15.slot != NO_HIT) ? 0.0 : 1.0);
+    Ray _e7 = shadow_ray(position_5, normal_6, dir_3, dist_2);
+    Candidate _e9 = intersect_scene(_e7, true);
+    return ((_e9.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample sample_light_deferred(uint i_4, vec3 position_6, vec3 normal_6) {
+LightSample sample_light_deferred(uint i_4, vec3 position_6, vec3 normal_7) {
     uint after = 0u;
     uint resolved = 0u;
     uint bits_1 = 0u;
@@ -1236,7 +1250,7 @@ LightSample sample_light_deferred(uint i_4, vec3 position_6, vec3 normal_6) {
         rng_state = start;
         scratch[min(SCRATCH_QUERY, 24u)] = 0u;
         scratch[min(SCRATCH_PENDING, 24u)] = 0u;
-        LightSample _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_6);
+        LightSample _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_7);
         uint _e66 = scratch[min(SCRATCH_PENDING, 24u)];
         if ((_e66 == 0u)) {
             uint _e69 = resolved;
@@ -1282,6 +1296,13 @@ LightSample sample_light_deferred(uint i_4, vec3 position_6, vec3 normal_6) {
     return LightSample(vec3(0.0), 0.0, vec3(0.0), 0.0);
 }
 
+LightSample sample_light_above_deferred(uint i_5, vec3 position_7, vec3 normal_8) {
+    scratch[min(SCRATCH_SHADOW_MODE, 24u)] = SHADOW_ABOVE;
+    LightSample _e9 = sample_light_deferred(i_5, position_7, normal_8);
+    scratch[min(SCRATCH_SHADOW_MODE, 24u)] = SHADOW_TRACED;
+    return _e9;
+}
+
 float mis_weight(float p_6, float other) {
     if (!((p_6 > 0.0))) {
         return 0.0;
@@ -1305,31 +1326,32 @@ float mis_light_weight(LightSample l_2, float bsdf_pdf) {
 
 vec3 path_diffuse_shade(PathDiffuse m, Ray ray_13, Hit hit_1, vec3 secondary) {
     vec3 direct = vec3(0.0);
-    uint i_5 = 0u;
+    uint i_6 = 0u;
     vec3 n_13 = faceforward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
+    vec3 ng = faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
     direct = vec3(0.0);
-    uint _e12 = light_count_query();
-    i_5 = 0u;
+    uint _e16 = light_count_query();
+    i_6 = 0u;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            uint _e33 = i_5;
-            i_5 = (_e33 + 1u);
+            uint _e36 = i_6;
+            i_6 = (_e36 + 1u);
         }
         loop_init_2 = false;
-        uint _e14 = i_5;
-        if ((_e14 >= _e12)) {
+        uint _e18 = i_6;
+        if ((_e18 >= _e16)) {
             break;
         }
-        uint _e16 = i_5;
-        LightSample _e19 = sample_light_deferred(_e16, hit_1.position, hit_1.geometric_normal);
-        float c_11 = max(dot(n_13, _e19.dir), 0.0);
-        vec3 _e24 = direct;
-        float _e28 = mis_light_weight(_e19, (c_11 * INV_PI));
-        direct = (_e24 + (_e19.radiance * vec3((c_11 * _e28))));
+        uint _e20 = i_6;
+        LightSample _e22 = sample_light_above_deferred(_e20, hit_1.position, ng);
+        float c_11 = max(dot(n_13, _e22.dir), 0.0);
+        vec3 _e27 = direct;
+        float _e31 = mis_light_weight(_e22, (c_11 * INV_PI));
+        direct = (_e27 + (_e22.radiance * vec3((c_11 * _e31))));
     }
-    vec3 _e40 = direct;
-    return (((m.albedo * vec3(INV_PI)) * _e40) + secondary);
+    vec3 _e43 = direct;
+    return (((m.albedo * vec3(INV_PI)) * _e43) + secondary);
 }
 
 QuadLamp load_QuadLamp(uint offset_10) {
@@ -1501,27 +1523,28 @@ float pbr_pdf(vec3 base_3, float metallic_2, float roughness_2, vec3 n_7, vec3 v
 
 vec3 path_pbr_shade(PathPbr m_3, Ray ray_20, Hit hit_6, vec3 secondary_1) {
     vec3 direct_1 = vec3(0.0);
-    uint i_6 = 0u;
+    uint i_7 = 0u;
     float w = 0.0;
     vec3 _e4 = path_pbr_n(ray_20, hit_6);
     vec3 _e6 = normalize_vec3f(ray_20.dir);
     vec3 v_7 = -(_e6);
     direct_1 = vec3(0.0);
-    uint _e12 = light_count_query();
-    i_6 = 0u;
+    vec3 _e11 = path_pbr_ng(ray_20, hit_6);
+    uint _e13 = light_count_query();
+    i_7 = 0u;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e49 = i_6;
-            i_6 = (_e49 + 1u);
+            uint _e49 = i_7;
+            i_7 = (_e49 + 1u);
         }
         loop_init_3 = false;
-        uint _e14 = i_6;
-        if ((_e14 >= _e12)) {
+        uint _e15 = i_7;
+        if ((_e15 >= _e13)) {
             break;
         }
-        uint _e16 = i_6;
-        LightSample _e19 = sample_light_deferred(_e16, hit_6.position, hit_6.geometric_normal);
+        uint _e17 = i_7;
+        LightSample _e19 = sample_light_above_deferred(_e17, hit_6.position, _e11);
         if (any(greaterThan(_e19.radiance, vec3(0.0)))) {
             vec3 _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_7, _e19.dir);
             w = 1.0;
@@ -1602,15 +1625,15 @@ vec3 sample_cosine_hemisphere(vec3 n_8, vec2 u) {
     return (_e17 * local);
 }
 
-vec3 mis_bounce_dir(vec3 dir_3, float pdf) {
+vec3 mis_bounce_dir(vec3 dir_4, float pdf) {
     float x_6 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
-    return (dir_3 * vec3((MIS_BOUNCE_LENGTH + x_6)));
+    return (dir_4 * vec3((MIS_BOUNCE_LENGTH + x_6)));
 }
 
-void rt_spawn(vec3 dir_4, vec3 weight) {
+void rt_spawn(vec3 dir_5, vec3 weight) {
     uint _e3 = spawn_count;
     if ((_e3 < 1u)) {
-        spawn_dirs[_e3] = dir_4;
+        spawn_dirs[_e3] = dir_5;
         spawn_weights[_e3] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1618,8 +1641,8 @@ void rt_spawn(vec3 dir_4, vec3 weight) {
 
 void path_diffuse_rays(PathDiffuse m_4, Ray ray_25, Hit hit_8) {
     vec3 weight_1 = vec3(0.0);
-    vec3 ng = (hit_8.front_face ? hit_8.geometric_normal : -(hit_8.geometric_normal));
-    vec3 n_15 = faceforward(hit_8.normal, -(ng), hit_8.normal);
+    vec3 ng_1 = (hit_8.front_face ? hit_8.geometric_normal : -(hit_8.geometric_normal));
+    vec3 n_15 = faceforward(hit_8.normal, -(ng_1), hit_8.normal);
     vec2 _e12 = rand2_next();
     vec3 _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
@@ -1631,7 +1654,7 @@ void path_diffuse_rays(PathDiffuse m_4, Ray ray_25, Hit hit_8) {
         }
         weight_1 = (m_4.albedo / vec3(q_4));
     }
-    if ((dot(_e13, ng) > 0.0)) {
+    if ((dot(_e13, ng_1) > 0.0)) {
         vec3 _e41 = mis_bounce_dir(_e13, (max(dot(n_15, _e13), 0.0) * INV_PI));
         vec3 _e42 = weight_1;
         rt_spawn(_e41, _e42);
@@ -1741,28 +1764,28 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_27, Hit hit
     return;
 }
 
-vec3 spawn_origin_at(vec3 position_7, vec3 normal_7, float error_1, vec3 dir_5) {
+vec3 spawn_origin_at(vec3 position_8, vec3 normal_9, float error_1, vec3 dir_6) {
     vec3 n_10 = vec3(0.0);
-    n_10 = normal_7;
+    n_10 = normal_9;
     vec3 _e5 = n_10;
-    if ((dot(dir_5, _e5) < 0.0)) {
+    if ((dot(dir_6, _e5) < 0.0)) {
         vec3 _e9 = n_10;
         n_10 = -(_e9);
     }
     vec3 _e11 = n_10;
-    vec3 _e12 = offset_origin(position_7, _e11, error_1);
+    vec3 _e12 = offset_origin(position_8, _e11, error_1);
     return _e12;
 }
 
-vec3 spawn_origin(Hit hit_11, float error_2, vec3 dir_6) {
-    vec3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_6);
+vec3 spawn_origin(Hit hit_11, float error_2, vec3 dir_7) {
+    vec3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_7);
     return _e5;
 }
 
 PathState path_step(PathState s_2, Candidate c_5) {
     PathState out_ = PathState(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), vec3(0.0), vec3(0.0), false);
     bool spawned = false;
-    vec3 dir_7 = vec3(0.0);
+    vec3 dir_8 = vec3(0.0);
     vec3 weight_3 = vec3(0.0);
     vec3 beta = vec3(0.0);
     Ray ray_29 = s_2.ray;
@@ -1779,7 +1802,7 @@ PathState path_step(PathState s_2, Candidate c_5) {
     Hit _e22 = finish_hit(ray_29, c_5);
     float error_4 = hit_error;
     spawned = false;
-    dir_7 = vec3(0.0);
+    dir_8 = vec3(0.0);
     weight_3 = vec3(0.0);
     if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_29.depth < MAX_DEPTH))) {
         spawn_count = 0u;
@@ -1788,7 +1811,7 @@ PathState path_step(PathState s_2, Candidate c_5) {
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
             vec3 _e56 = spawn_dirs[0u];
-            dir_7 = _e56;
+            dir_8 = _e56;
             vec3 _e60 = spawn_weights[0u];
             weight_3 = _e60;
         }
@@ -1822,9 +1845,9 @@ PathState path_step(PathState s_2, Candidate c_5) {
     }
     vec3 _e111 = beta;
     out_.beta = _e111;
-    vec3 _e113 = dir_7;
+    vec3 _e113 = dir_8;
     vec3 _e114 = spawn_origin(_e22, error_4, _e113);
-    vec3 _e116 = dir_7;
+    vec3 _e116 = dir_8;
     uint _e118 = F32_INF;
     out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_29.depth + 1u), RAY_SECONDARY, ray_29.medium);
     out_.live = true;

@@ -244,17 +244,20 @@ static const float GAMMA_6_ = 3.576281e-7;
 static const float GAMMA_4_ = 2.3841864e-7;
 static const bool HAS_SECONDARY_RAYS = true;
 static const bool HAS_BACKGROUND = true;
+static const uint SCRATCH_SHADOW_MODE = 14u;
+static const uint SHADOW_ABOVE = 2u;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
 static const uint SCRATCH_RESOLVED = 3u;
 static const uint SCRATCH_LIGHT_BITS = 11u;
 static const uint SCRATCH_QUERY = 2u;
 static const uint SCRATCH_PENDING = 4u;
-static const uint SCRATCH_UNOCCLUDED = 14u;
+static const uint SHADOW_UNOCCLUDED = 1u;
 static const uint LIGHT_QUERIES = 32u;
 static const uint COUNTER_SHADOW_OVERFLOW = 3u;
 static const uint SCRATCH_LIGHT_QUERY = 15u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
+static const uint SHADOW_TRACED = 0u;
 static const float MIS_BOUNCE_LENGTH = 3.0;
 static const float PBR_MIN_ALPHA = 0.001;
 static const uint FLAG_MEDIUM = 4u;
@@ -463,10 +466,10 @@ float rand_next()
     const uint _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
     uint _e22 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 24u)), 24u)];
     const uint _e24 = laine_karras(reversebits(_e22), _e16);
-    uint i_7 = reversebits(_e24);
-    x_2 = i_7;
+    uint i_8 = reversebits(_e24);
+    x_2 = i_8;
     if (((d_1 & 1u) != 0u)) {
-        const uint _e31 = sobol_second_reversed(i_7);
+        const uint _e31 = sobol_second_reversed(i_8);
         x_2 = _e31;
     }
     uint scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
@@ -1332,6 +1335,18 @@ QuadLight load_QuadLight(uint offset_7)
     return quadlight;
 }
 
+float shadow_preset(float3 normal, float3 dir)
+{
+    uint mode = scratch[min(uint(min(SCRATCH_SHADOW_MODE, 24u)), 24u)];
+    if ((mode == SHADOW_UNOCCLUDED)) {
+        return 1.0;
+    }
+    if (((mode == SHADOW_ABOVE) && !((dot(dir, normal) > 0.0)))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 void scratch_store3f(uint i_2, float3 v_2)
 {
     uint3 b_8 = asuint(v_2);
@@ -1341,30 +1356,30 @@ void scratch_store3f(uint i_2, float3 v_2)
     return;
 }
 
-float shadow_deferred(float3 position, float3 normal, float3 dir, float dist)
+float shadow_deferred(float3 position, float3 normal_1, float3 dir_1, float dist)
 {
-    uint _e9 = scratch[min(uint(min(SCRATCH_UNOCCLUDED, 24u)), 24u)];
-    if ((_e9 != 0u)) {
+    const float _e4 = shadow_preset(normal_1, dir_1);
+    if ((_e4 >= 0.0)) {
+        return _e4;
+    }
+    uint i_9 = scratch[min(uint(min(SCRATCH_QUERY, 24u)), 24u)];
+    scratch[min(uint(min(SCRATCH_QUERY, 24u)), 24u)] = (i_9 + 1u);
+    uint _e25 = scratch[min(uint(min(SCRATCH_RESOLVED, 24u)), 24u)];
+    if ((i_9 < _e25)) {
+        uint _e32 = scratch[min(uint(min(SCRATCH_LIGHT_BITS, 24u)), 24u)];
+        return float(((_e32 >> (i_9 & 31u)) & 1u));
+    }
+    uint _e44 = scratch[min(uint(min(SCRATCH_PENDING, 24u)), 24u)];
+    if ((_e44 != 0u)) {
         return 1.0;
     }
-    uint i_8 = scratch[min(uint(min(SCRATCH_QUERY, 24u)), 24u)];
-    scratch[min(uint(min(SCRATCH_QUERY, 24u)), 24u)] = (i_8 + 1u);
-    uint _e31 = scratch[min(uint(min(SCRATCH_RESOLVED, 24u)), 24u)];
-    if ((i_8 < _e31)) {
-        uint _e38 = scratch[min(uint(min(SCRATCH_LIGHT_BITS, 24u)), 24u)];
-        return float(((_e38 >> (i_8 & 31u)) & 1u));
-    }
-    uint _e50 = scratch[min(uint(min(SCRATCH_PENDING, 24u)), 24u)];
-    if ((_e50 != 0u)) {
-        return 1.0;
-    }
-    if ((i_8 >= LIGHT_QUERIES)) {
+    if ((i_9 >= LIGHT_QUERIES)) {
         counters.InterlockedAdd(min(COUNTER_SHADOW_OVERFLOW, 3u)*4, 1u);
         return 1.0;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal_1);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir_1);
     scratch[min(uint(min((SCRATCH_LIGHT_QUERY + 9u), 24u)), 24u)] = asuint(dist);
     scratch[min(uint(min(SCRATCH_PENDING, 24u)), 24u)] = 1u;
     return 1.0;
@@ -1379,7 +1394,7 @@ LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg
     return ret;
 }
 
-LightSample quad_light(QuadLight l, float3 position_1, float3 normal_1)
+LightSample quad_light(QuadLight l, float3 position_1, float3 normal_2)
 {
     float3 c_10 = cross(l.edge_u, l.edge_v);
     float area = length(c_10);
@@ -1387,16 +1402,16 @@ LightSample quad_light(QuadLight l, float3 position_1, float3 normal_1)
     float3 to_light = (((l.corner + (l.edge_u * (_e7.x).xxx)) + (l.edge_v * (_e7.y).xxx)) - position_1);
     float dist2_ = dot(to_light, to_light);
     float dist_3 = sqrt(dist2_);
-    float3 dir_8 = (to_light / (max(dist_3, 1e-20)).xxx);
-    float cos_light = (-(dot(dir_8, c_10)) / max(area, 1e-30));
+    float3 dir_9 = (to_light / (max(dist_3, 1e-20)).xxx);
+    float cos_light = (-(dot(dir_9, c_10)) / max(area, 1e-30));
     if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
-        const LightSample lightsample = ConstructLightSample(dir_8, dist_3, (0.0).xxx, 0.0);
+        const LightSample lightsample = ConstructLightSample(dir_9, dist_3, (0.0).xxx, 0.0);
         return lightsample;
     }
-    const float _e42 = shadow_deferred(position_1, normal_1, dir_8, dist_3);
+    const float _e42 = shadow_deferred(position_1, normal_2, dir_9, dist_3);
     float strength = (((l.intensity * cos_light) * area) / dist2_);
     float pdf_1 = ((l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0);
-    const LightSample lightsample_1 = ConstructLightSample(dir_8, dist_3, ((l.color * (strength).xxx) * (_e42).xxx), pdf_1);
+    const LightSample lightsample_1 = ConstructLightSample(dir_9, dist_3, ((l.color * (strength).xxx) * (_e42).xxx), pdf_1);
     return lightsample_1;
 }
 
@@ -1434,7 +1449,7 @@ float3x3 orthonormal_basis(float3 n_3)
     return float3x3(float3((1.0 + ((_e16 * n_3.x) * a_7)), (sign_ * b_9), -(_e16)), float3(b_9, (sign_ + ((n_3.y * n_3.y) * a_7)), -(n_3.y)), n_3);
 }
 
-LightSample sphere_light(SphereLight l_1, float3 position_2, float3 normal_2)
+LightSample sphere_light(SphereLight l_1, float3 position_2, float3 normal_3)
 {
     float3 to_center = (l_1.position - position_2);
     float d2_ = dot(to_center, to_center);
@@ -1456,7 +1471,7 @@ LightSample sphere_light(SphereLight l_1, float3 position_2, float3 normal_2)
     float along_1 = dot(to_center, _e52);
     float dist_4 = max((along_1 - sqrt(max((r2_2 - (d2_ - (along_1 * along_1))), 0.0))), 0.0);
     float weight_4 = (((l_1.intensity * 2.0) * one_minus_cos_max) / r2_2);
-    const float _e68 = shadow_deferred(position_2, normal_2, _e52, dist_4);
+    const float _e68 = shadow_deferred(position_2, normal_3, _e52, dist_4);
     float pdf_2 = ((l_1.lamp == 1u) ? (1.0 / (TAU * one_minus_cos_max)) : 0.0);
     const LightSample lightsample_3 = ConstructLightSample(_e52, dist_4, ((l_1.color * (weight_4).xxx) * (_e68).xxx), pdf_2);
     return lightsample_3;
@@ -1466,18 +1481,18 @@ LightSample ZeroValueLightSample() {
     return (LightSample)0;
 }
 
-LightSample dispatch_light(uint type_id_3, uint offset_9, float3 position_3, float3 normal_3)
+LightSample dispatch_light(uint type_id_3, uint offset_9, float3 position_3, float3 normal_4)
 {
     switch(type_id_3) {
         case 0u: {
             const QuadLight _e4 = load_QuadLight(offset_9);
-            const LightSample _e5 = quad_light(_e4, position_3, normal_3);
+            const LightSample _e5 = quad_light(_e4, position_3, normal_4);
             const LightSample lightsample_4 = _e5;
             return lightsample_4;
         }
         case 1u: {
             const SphereLight _e6 = load_SphereLight(offset_9);
-            const LightSample _e7 = sphere_light(_e6, position_3, normal_3);
+            const LightSample _e7 = sphere_light(_e6, position_3, normal_4);
             const LightSample lightsample_5 = _e7;
             return lightsample_5;
         }
@@ -1515,14 +1530,14 @@ float3 offset_origin(float3 p_5, float3 n_4, float error)
     return _e17;
 }
 
-Ray shadow_ray(float3 position_4, float3 normal_4, float3 dir_1, float dist_1)
+Ray shadow_ray(float3 position_4, float3 normal_5, float3 dir_2, float dist_1)
 {
     float3 n_5 = (float3)0;
     float tmax_4 = (float)0;
 
-    n_5 = normal_4;
+    n_5 = normal_5;
     float3 _e5 = n_5;
-    if ((dot(dir_1, _e5) < 0.0)) {
+    if ((dot(dir_2, _e5) < 0.0)) {
         float3 _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1535,29 +1550,29 @@ Ray shadow_ray(float3 position_4, float3 normal_4, float3 dir_1, float dist_1)
     tmax_4 = asfloat(_e25);
     uint _e29 = F32_INF;
     if ((dist_1 < asfloat(_e29))) {
-        float3 light = (position_4 + (dir_1 * (dist_1).xxx));
-        float dd_1 = dot(dir_1, dir_1);
-        float along_2 = (dot((light - _e23), dir_1) / dd_1);
-        float3 l_7 = (abs(position_4) + abs((dir_1 * (dist_1).xxx)));
+        float3 light = (position_4 + (dir_2 * (dist_1).xxx));
+        float dd_1 = dot(dir_2, dir_2);
+        float along_2 = (dot((light - _e23), dir_2) / dd_1);
+        float3 l_7 = (abs(position_4) + abs((dir_2 * (dist_1).xxx)));
         tmax_4 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_32 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    const Ray ray_32 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
     return ray_32;
 }
 
-float shadow_query(float3 position_5, float3 normal_5, float3 dir_2, float dist_2)
+float shadow_query(float3 position_5, float3 normal_6, float3 dir_3, float dist_2)
 {
-    uint _e9 = scratch[min(uint(min(SCRATCH_UNOCCLUDED, 24u)), 24u)];
-    if ((_e9 != 0u)) {
-        return 1.0;
+    const float _e4 = shadow_preset(normal_6, dir_3);
+    if ((_e4 >= 0.0)) {
+        return _e4;
     }
-    const Ray _e13 = shadow_ray(position_5, normal_5, dir_2, dist_2);
-    const Candidate _e15 = intersect_scene(_e13, true);
-    return ((_e15.slot != NO_HIT) ? 0.0 : 1.0);
+    const Ray _e7 = shadow_ray(position_5, normal_6, dir_3, dist_2);
+    const Candidate _e9 = intersect_scene(_e7, true);
+    return ((_e9.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample sample_light_deferred(uint i_4, float3 position_6, float3 normal_6)
+LightSample sample_light_deferred(uint i_4, float3 position_6, float3 normal_7)
 {
     uint after = (uint)0;
     uint resolved = (uint)0;
@@ -1584,7 +1599,7 @@ LightSample sample_light_deferred(uint i_4, float3 position_6, float3 normal_6)
         rng_state = start;
         scratch[min(uint(min(SCRATCH_QUERY, 24u)), 24u)] = 0u;
         scratch[min(uint(min(SCRATCH_PENDING, 24u)), 24u)] = 0u;
-        const LightSample _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_6);
+        const LightSample _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_7);
         uint _e66 = scratch[min(uint(min(SCRATCH_PENDING, 24u)), 24u)];
         if ((_e66 == 0u)) {
             uint _e69 = resolved;
@@ -1633,6 +1648,15 @@ LightSample sample_light_deferred(uint i_4, float3 position_6, float3 normal_6)
     return lightsample_10;
 }
 
+LightSample sample_light_above_deferred(uint i_5, float3 position_7, float3 normal_8)
+{
+    scratch[min(uint(min(SCRATCH_SHADOW_MODE, 24u)), 24u)] = SHADOW_ABOVE;
+    const LightSample _e9 = sample_light_deferred(i_5, position_7, normal_8);
+    scratch[min(uint(min(SCRATCH_SHADOW_MODE, 24u)), 24u)] = SHADOW_TRACED;
+    const LightSample lightsample_11 = _e9;
+    return lightsample_11;
+}
+
 float mis_weight(float p_6, float other)
 {
     if (!((p_6 > 0.0))) {
@@ -1659,35 +1683,36 @@ float mis_light_weight(LightSample l_2, float bsdf_pdf)
 float3 path_diffuse_shade(PathDiffuse m, Ray ray_13, Hit hit_1, float3 secondary)
 {
     float3 direct = (float3)0;
-    uint i_5 = (uint)0;
+    uint i_6 = (uint)0;
 
     float3 n_13 = faceforward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
+    float3 ng = faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
     direct = (0.0).xxx;
-    const uint _e12 = light_count_query();
-    i_5 = 0u;
+    const uint _e16 = light_count_query();
+    i_6 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e33 = i_5;
-            i_5 = (_e33 + 1u);
+            uint _e36 = i_6;
+            i_6 = (_e36 + 1u);
         }
         loop_init_2 = false;
-        uint _e14 = i_5;
-        if ((_e14 >= _e12)) {
+        uint _e18 = i_6;
+        if ((_e18 >= _e16)) {
             break;
         }
-        uint _e16 = i_5;
-        const LightSample _e19 = sample_light_deferred(_e16, hit_1.position, hit_1.geometric_normal);
-        float c_11 = max(dot(n_13, _e19.dir), 0.0);
-        float3 _e24 = direct;
-        const float _e28 = mis_light_weight(_e19, (c_11 * INV_PI));
-        direct = (_e24 + (_e19.radiance * ((c_11 * _e28)).xxx));
+        uint _e20 = i_6;
+        const LightSample _e22 = sample_light_above_deferred(_e20, hit_1.position, ng);
+        float c_11 = max(dot(n_13, _e22.dir), 0.0);
+        float3 _e27 = direct;
+        const float _e31 = mis_light_weight(_e22, (c_11 * INV_PI));
+        direct = (_e27 + (_e22.radiance * ((c_11 * _e31)).xxx));
     }
-    float3 _e40 = direct;
-    return (((m.albedo * (INV_PI).xxx) * _e40) + secondary);
+    float3 _e43 = direct;
+    return (((m.albedo * (INV_PI).xxx) * _e43) + secondary);
 }
 
 QuadLamp ConstructQuadLamp(float3 arg0, float arg1, float arg2) {
@@ -1907,31 +1932,32 @@ float pbr_pdf(float3 base_3, float metallic_2, float roughness_2, float3 n_7, fl
 float3 path_pbr_shade(PathPbr m_3, Ray ray_20, Hit hit_6, float3 secondary_1)
 {
     float3 direct_1 = (float3)0;
-    uint i_6 = (uint)0;
+    uint i_7 = (uint)0;
     float w = (float)0;
 
     const float3 _e4 = path_pbr_n(ray_20, hit_6);
     const float3 _e6 = normalize_vec3f(ray_20.dir);
     float3 v_7 = -(_e6);
     direct_1 = (0.0).xxx;
-    const uint _e12 = light_count_query();
-    i_6 = 0u;
+    const float3 _e11 = path_pbr_ng(ray_20, hit_6);
+    const uint _e13 = light_count_query();
+    i_7 = 0u;
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e49 = i_6;
-            i_6 = (_e49 + 1u);
+            uint _e49 = i_7;
+            i_7 = (_e49 + 1u);
         }
         loop_init_3 = false;
-        uint _e14 = i_6;
-        if ((_e14 >= _e12)) {
+        uint _e15 = i_7;
+        if ((_e15 >= _e13)) {
             break;
         }
-        uint _e16 = i_6;
-        const LightSample _e19 = sample_light_deferred(_e16, hit_6.position, hit_6.geometric_normal);
+        uint _e17 = i_7;
+        const LightSample _e19 = sample_light_above_deferred(_e17, hit_6.position, _e11);
         if (any((_e19.radiance > (0.0).xxx))) {
             const float3 _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_7, _e19.dir);
             w = 1.0;
@@ -2021,17 +2047,17 @@ float3 sample_cosine_hemisphere(float3 n_8, float2 u)
     return mul(local, _e17);
 }
 
-float3 mis_bounce_dir(float3 dir_3, float pdf)
+float3 mis_bounce_dir(float3 dir_4, float pdf)
 {
     float x_6 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
-    return (dir_3 * ((MIS_BOUNCE_LENGTH + x_6)).xxx);
+    return (dir_4 * ((MIS_BOUNCE_LENGTH + x_6)).xxx);
 }
 
-void rt_spawn(float3 dir_4, float3 weight)
+void rt_spawn(float3 dir_5, float3 weight)
 {
     uint _e3 = spawn_count;
     if ((_e3 < 1u)) {
-        spawn_dirs[min(uint(_e3), 0u)] = dir_4;
+        spawn_dirs[min(uint(_e3), 0u)] = dir_5;
         spawn_weights[min(uint(_e3), 0u)] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -2041,8 +2067,8 @@ void path_diffuse_rays(PathDiffuse m_4, Ray ray_25, Hit hit_8)
 {
     float3 weight_1 = (float3)0;
 
-    float3 ng = (hit_8.front_face ? hit_8.geometric_normal : -(hit_8.geometric_normal));
-    float3 n_15 = faceforward(hit_8.normal, -(ng), hit_8.normal);
+    float3 ng_1 = (hit_8.front_face ? hit_8.geometric_normal : -(hit_8.geometric_normal));
+    float3 n_15 = faceforward(hit_8.normal, -(ng_1), hit_8.normal);
     const float2 _e12 = rand2_next();
     const float3 _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
@@ -2054,7 +2080,7 @@ void path_diffuse_rays(PathDiffuse m_4, Ray ray_25, Hit hit_8)
         }
         weight_1 = (m_4.albedo / (q_4).xxx);
     }
-    if ((dot(_e13, ng) > 0.0)) {
+    if ((dot(_e13, ng_1) > 0.0)) {
         const float3 _e41 = mis_bounce_dir(_e13, (max(dot(n_15, _e13), 0.0) * INV_PI));
         float3 _e42 = weight_1;
         rt_spawn(_e41, _e42);
@@ -2182,24 +2208,24 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_27, Hit hit
     return;
 }
 
-float3 spawn_origin_at(float3 position_7, float3 normal_7, float error_1, float3 dir_5)
+float3 spawn_origin_at(float3 position_8, float3 normal_9, float error_1, float3 dir_6)
 {
     float3 n_10 = (float3)0;
 
-    n_10 = normal_7;
+    n_10 = normal_9;
     float3 _e5 = n_10;
-    if ((dot(dir_5, _e5) < 0.0)) {
+    if ((dot(dir_6, _e5) < 0.0)) {
         float3 _e9 = n_10;
         n_10 = -(_e9);
     }
     float3 _e11 = n_10;
-    const float3 _e12 = offset_origin(position_7, _e11, error_1);
+    const float3 _e12 = offset_origin(position_8, _e11, error_1);
     return _e12;
 }
 
-float3 spawn_origin(Hit hit_11, float error_2, float3 dir_6)
+float3 spawn_origin(Hit hit_11, float error_2, float3 dir_7)
 {
-    const float3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_6);
+    const float3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_7);
     return _e5;
 }
 
@@ -2207,7 +2233,7 @@ PathState path_step(PathState s_2, Candidate c_5)
 {
     PathState out_ = (PathState)0;
     bool spawned = (bool)0;
-    float3 dir_7 = (float3)0;
+    float3 dir_8 = (float3)0;
     float3 weight_3 = (float3)0;
     float3 beta = (float3)0;
 
@@ -2226,7 +2252,7 @@ PathState path_step(PathState s_2, Candidate c_5)
     const Hit _e22 = finish_hit(ray_33, c_5);
     float error_4 = hit_error;
     spawned = false;
-    dir_7 = (0.0).xxx;
+    dir_8 = (0.0).xxx;
     weight_3 = (0.0).xxx;
     if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_33.depth < MAX_DEPTH))) {
         spawn_count = 0u;
@@ -2235,7 +2261,7 @@ PathState path_step(PathState s_2, Candidate c_5)
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
             float3 _e56 = spawn_dirs[0u];
-            dir_7 = _e56;
+            dir_8 = _e56;
             float3 _e60 = spawn_weights[0u];
             weight_3 = _e60;
         }
@@ -2272,9 +2298,9 @@ PathState path_step(PathState s_2, Candidate c_5)
     }
     float3 _e111 = beta;
     out_.beta = _e111;
-    float3 _e113 = dir_7;
+    float3 _e113 = dir_8;
     const float3 _e114 = spawn_origin(_e22, error_4, _e113);
-    float3 _e116 = dir_7;
+    float3 _e116 = dir_8;
     uint _e118 = F32_INF;
     out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_33.depth + 1u), RAY_SECONDARY, ray_33.medium);
     out_.live = true;

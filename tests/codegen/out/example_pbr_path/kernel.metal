@@ -224,17 +224,20 @@ constant float GAMMA_6_ = 0.0000003576281;
 constant float GAMMA_4_ = 0.00000023841864;
 constant bool HAS_SECONDARY_RAYS = true;
 constant bool HAS_BACKGROUND = true;
+constant uint SCRATCH_SHADOW_MODE = 14u;
+constant uint SHADOW_ABOVE = 2u;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
 constant uint SCRATCH_RESOLVED = 3u;
 constant uint SCRATCH_LIGHT_BITS = 11u;
 constant uint SCRATCH_QUERY = 2u;
 constant uint SCRATCH_PENDING = 4u;
-constant uint SCRATCH_UNOCCLUDED = 14u;
+constant uint SHADOW_UNOCCLUDED = 1u;
 constant uint LIGHT_QUERIES = 32u;
 constant uint COUNTER_SHADOW_OVERFLOW = 3u;
 constant uint SCRATCH_LIGHT_QUERY = 15u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
+constant uint SHADOW_TRACED = 0u;
 constant float MIS_BOUNCE_LENGTH = 3.0;
 constant float PBR_MIN_ALPHA = 0.001;
 constant uint FLAG_MEDIUM = 4u;
@@ -443,10 +446,10 @@ float rand_next(
     uint _e16 = pcg_hash(_e10 ^ ((d_1 >> 1u) * 2654435769u));
     uint _e22 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 24u)];
     uint _e24 = laine_karras(metal::reverse_bits(_e22), _e16);
-    uint i_7 = metal::reverse_bits(_e24);
-    x_2 = i_7;
+    uint i_8 = metal::reverse_bits(_e24);
+    x_2 = i_8;
     if ((d_1 & 1u) != 0u) {
-        uint _e31 = sobol_second_reversed(i_7);
+        uint _e31 = sobol_second_reversed(i_8);
         x_2 = _e31;
     }
     uint scramble = _e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u));
@@ -1311,6 +1314,21 @@ QuadLight load_QuadLight(
     return QuadLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), metal::float3(as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)), metal::float3(as_type<float>(_e62), as_type<float>(_e68), as_type<float>(_e74)), as_type<float>(_e81), _e87};
 }
 
+float shadow_preset(
+    metal::float3 normal,
+    metal::float3 dir,
+    thread type_3& scratch
+) {
+    uint mode = scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 24u)];
+    if (mode == SHADOW_UNOCCLUDED) {
+        return 1.0;
+    }
+    if ((mode == SHADOW_ABOVE) && !((metal::dot(dir, normal) > 0.0))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 void scratch_store3f(
     uint i_2,
     metal::float3 v_2,
@@ -1325,35 +1343,35 @@ void scratch_store3f(
 
 float shadow_deferred(
     metal::float3 position,
-    metal::float3 normal,
-    metal::float3 dir,
+    metal::float3 normal_1,
+    metal::float3 dir_1,
     float dist,
     thread type_3& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e9 = scratch.inner[metal::min(SCRATCH_UNOCCLUDED, 24u)];
-    if (_e9 != 0u) {
+    float _e4 = shadow_preset(normal_1, dir_1, scratch);
+    if (_e4 >= 0.0) {
+        return _e4;
+    }
+    uint i_9 = scratch.inner[metal::min(SCRATCH_QUERY, 24u)];
+    scratch.inner[metal::min(SCRATCH_QUERY, 24u)] = i_9 + 1u;
+    uint _e25 = scratch.inner[metal::min(SCRATCH_RESOLVED, 24u)];
+    if (i_9 < _e25) {
+        uint _e32 = scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 24u)];
+        return static_cast<float>((_e32 >> (i_9 & 31u)) & 1u);
+    }
+    uint _e44 = scratch.inner[metal::min(SCRATCH_PENDING, 24u)];
+    if (_e44 != 0u) {
         return 1.0;
     }
-    uint i_8 = scratch.inner[metal::min(SCRATCH_QUERY, 24u)];
-    scratch.inner[metal::min(SCRATCH_QUERY, 24u)] = i_8 + 1u;
-    uint _e31 = scratch.inner[metal::min(SCRATCH_RESOLVED, 24u)];
-    if (i_8 < _e31) {
-        uint _e38 = scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 24u)];
-        return static_cast<float>((_e38 >> (i_8 & 31u)) & 1u);
-    }
-    uint _e50 = scratch.inner[metal::min(SCRATCH_PENDING, 24u)];
-    if (_e50 != 0u) {
-        return 1.0;
-    }
-    if (i_8 >= LIGHT_QUERIES) {
+    if (i_9 >= LIGHT_QUERIES) {
         metal::atomic_fetch_add_explicit(&counters[metal::min(COUNTER_SHADOW_OVERFLOW, 3u)], 1u, metal::memory_order_relaxed);
         return 1.0;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position, scratch);
-    scratch_store3f(SCRATCH_LIGHT_QUERY + 3u, normal, scratch);
-    scratch_store3f(SCRATCH_LIGHT_QUERY + 6u, dir, scratch);
+    scratch_store3f(SCRATCH_LIGHT_QUERY + 3u, normal_1, scratch);
+    scratch_store3f(SCRATCH_LIGHT_QUERY + 6u, dir_1, scratch);
     scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 24u)] = as_type<uint>(dist);
     scratch.inner[metal::min(SCRATCH_PENDING, 24u)] = 1u;
     return 1.0;
@@ -1362,7 +1380,7 @@ float shadow_deferred(
 LightSample quad_light(
     QuadLight l,
     metal::float3 position_1,
-    metal::float3 normal_1,
+    metal::float3 normal_2,
     thread type_3& scratch,
     thread uint& rng_state,
     device type_17& counters,
@@ -1374,15 +1392,15 @@ LightSample quad_light(
     metal::float3 to_light = ((l.corner + (l.edge_u * metal::float3(_e7.x))) + (l.edge_v * metal::float3(_e7.y))) - position_1;
     float dist2_ = metal::dot(to_light, to_light);
     float dist_3 = metal::sqrt(dist2_);
-    metal::float3 dir_8 = to_light / metal::float3(metal::max(dist_3, 0.00000000000000000001));
-    float cos_light = -(metal::dot(dir_8, c_10)) / metal::max(area, 0.000000000000000000000000000001);
+    metal::float3 dir_9 = to_light / metal::float3(metal::max(dist_3, 0.00000000000000000001));
+    float cos_light = -(metal::dot(dir_9, c_10)) / metal::max(area, 0.000000000000000000000000000001);
     if (!((cos_light > 0.0)) || !((dist2_ > 0.0))) {
-        return LightSample {dir_8, dist_3, metal::float3(0.0), 0.0};
+        return LightSample {dir_9, dist_3, metal::float3(0.0), 0.0};
     }
-    float _e42 = shadow_deferred(position_1, normal_1, dir_8, dist_3, scratch, counters, _buffer_sizes);
+    float _e42 = shadow_deferred(position_1, normal_2, dir_9, dist_3, scratch, counters, _buffer_sizes);
     float strength = ((l.intensity * cos_light) * area) / dist2_;
     float pdf_1 = (l.lamp == 1u) ? (dist2_ / (cos_light * area)) : 0.0;
-    return LightSample {dir_8, dist_3, (l.color * metal::float3(strength)) * metal::float3(_e42), pdf_1};
+    return LightSample {dir_9, dist_3, (l.color * metal::float3(strength)) * metal::float3(_e42), pdf_1};
 }
 
 SphereLight load_SphereLight(
@@ -1415,7 +1433,7 @@ metal::float3x3 orthonormal_basis(
 LightSample sphere_light(
     SphereLight l_1,
     metal::float3 position_2,
-    metal::float3 normal_2,
+    metal::float3 normal_3,
     thread type_3& scratch,
     thread uint& rng_state,
     device type_17& counters,
@@ -1440,7 +1458,7 @@ LightSample sphere_light(
     float along_1 = metal::dot(to_center, _e52);
     float dist_4 = metal::max(along_1 - metal::sqrt(metal::max(r2_2 - (d2_ - (along_1 * along_1)), 0.0)), 0.0);
     float weight_4 = ((l_1.intensity * 2.0) * one_minus_cos_max) / r2_2;
-    float _e68 = shadow_deferred(position_2, normal_2, _e52, dist_4, scratch, counters, _buffer_sizes);
+    float _e68 = shadow_deferred(position_2, normal_3, _e52, dist_4, scratch, counters, _buffer_sizes);
     float pdf_2 = (l_1.lamp == 1u) ? (1.0 / (TAU * one_minus_cos_max)) : 0.0;
     return LightSample {_e52, dist_4, (l_1.color * metal::float3(weight_4)) * metal::float3(_e68), pdf_2};
 }
@@ -1449,7 +1467,7 @@ LightSample dispatch_light(
     uint type_id_3,
     uint offset_9,
     metal::float3 position_3,
-    metal::float3 normal_3,
+    metal::float3 normal_4,
     thread type_3& scratch,
     thread uint& rng_state,
     device type_5 const& params,
@@ -1459,12 +1477,12 @@ LightSample dispatch_light(
     switch(type_id_3) {
         case 0u: {
             QuadLight _e4 = load_QuadLight(offset_9, params, _buffer_sizes);
-            LightSample _e5 = quad_light(_e4, position_3, normal_3, scratch, rng_state, counters, _buffer_sizes);
+            LightSample _e5 = quad_light(_e4, position_3, normal_4, scratch, rng_state, counters, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             SphereLight _e6 = load_SphereLight(offset_9, params, _buffer_sizes);
-            LightSample _e7 = sphere_light(_e6, position_3, normal_3, scratch, rng_state, counters, _buffer_sizes);
+            LightSample _e7 = sphere_light(_e6, position_3, normal_4, scratch, rng_state, counters, _buffer_sizes);
             return _e7;
         }
         default: {
@@ -1509,17 +1527,17 @@ metal::float3 offset_origin(
 
 Ray shadow_ray(
     metal::float3 position_4,
-    metal::float3 normal_4,
-    metal::float3 dir_1,
+    metal::float3 normal_5,
+    metal::float3 dir_2,
     float dist_1,
     thread uint& F32_INF,
     thread float& hit_error
 ) {
     metal::float3 n_5 = {};
     float tmax_4 = {};
-    n_5 = normal_4;
+    n_5 = normal_5;
     metal::float3 _e5 = n_5;
-    if (metal::dot(dir_1, _e5) < 0.0) {
+    if (metal::dot(dir_2, _e5) < 0.0) {
         metal::float3 _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1532,20 +1550,20 @@ Ray shadow_ray(
     tmax_4 = as_type<float>(_e25);
     uint _e29 = F32_INF;
     if (dist_1 < as_type<float>(_e29)) {
-        metal::float3 light = position_4 + (dir_1 * metal::float3(dist_1));
-        float dd_1 = metal::dot(dir_1, dir_1);
-        float along_2 = metal::dot(light - _e23, dir_1) / dd_1;
-        metal::float3 l_7 = metal::abs(position_4) + metal::abs(dir_1 * metal::float3(dist_1));
+        metal::float3 light = position_4 + (dir_2 * metal::float3(dist_1));
+        float dd_1 = metal::dot(dir_2, dir_2);
+        float along_2 = metal::dot(light - _e23, dir_2) / dd_1;
+        metal::float3 l_7 = metal::abs(position_4) + metal::abs(dir_2 * metal::float3(dist_1));
         tmax_4 = (along_2 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_7.x, l_7.y), l_7.z)) / metal::sqrt(dd_1));
     }
     float _e59 = tmax_4;
-    return Ray {_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u};
+    return Ray {_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u};
 }
 
 float shadow_query(
     metal::float3 position_5,
-    metal::float3 normal_5,
-    metal::float3 dir_2,
+    metal::float3 normal_6,
+    metal::float3 dir_3,
     float dist_2,
     constant FrameUniforms& frame,
     thread type_3& scratch,
@@ -1559,19 +1577,19 @@ float shadow_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e9 = scratch.inner[metal::min(SCRATCH_UNOCCLUDED, 24u)];
-    if (_e9 != 0u) {
-        return 1.0;
+    float _e4 = shadow_preset(normal_6, dir_3, scratch);
+    if (_e4 >= 0.0) {
+        return _e4;
     }
-    Ray _e13 = shadow_ray(position_5, normal_5, dir_2, dist_2, F32_INF, hit_error);
-    Candidate _e15 = intersect_scene(_e13, true, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-    return (_e15.slot != NO_HIT) ? 0.0 : 1.0;
+    Ray _e7 = shadow_ray(position_5, normal_6, dir_3, dist_2, F32_INF, hit_error);
+    Candidate _e9 = intersect_scene(_e7, true, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+    return (_e9.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
 LightSample sample_light_deferred(
     uint i_4,
     metal::float3 position_6,
-    metal::float3 normal_6,
+    metal::float3 normal_7,
     constant FrameUniforms& frame,
     thread type_3& scratch,
     thread uint& rng_state,
@@ -1609,7 +1627,7 @@ LightSample sample_light_deferred(
         rng_state = start;
         scratch.inner[metal::min(SCRATCH_QUERY, 24u)] = 0u;
         scratch.inner[metal::min(SCRATCH_PENDING, 24u)] = 0u;
-        LightSample _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_6, scratch, rng_state, params, counters, _buffer_sizes);
+        LightSample _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_7, scratch, rng_state, params, counters, _buffer_sizes);
         uint _e66 = scratch.inner[metal::min(SCRATCH_PENDING, 24u)];
         if (_e66 == 0u) {
             uint _e69 = resolved;
@@ -1653,6 +1671,30 @@ LightSample sample_light_deferred(
         scratch.inner[metal::min(SCRATCH_RESOLVED, 24u)] = _e132;
     }
     return LightSample {};
+}
+
+LightSample sample_light_above_deferred(
+    uint i_5,
+    metal::float3 position_7,
+    metal::float3 normal_8,
+    constant FrameUniforms& frame,
+    thread type_3& scratch,
+    thread uint& rng_state,
+    device type_5 const& params,
+    thread uint& F32_INF,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
+    thread float& hit_error,
+    thread uint& ray_count,
+    device type_17& counters,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 24u)] = SHADOW_ABOVE;
+    LightSample _e9 = sample_light_deferred(i_5, position_7, normal_8, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+    scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 24u)] = SHADOW_TRACED;
+    return _e9;
 }
 
 float mis_weight(
@@ -1704,34 +1746,35 @@ metal::float3 path_diffuse_shade(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 direct = {};
-    uint i_5 = {};
+    uint i_6 = {};
     metal::float3 n_13 = metal::faceforward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
     direct = metal::float3(0.0);
-    uint _e12 = light_count_query(frame);
-    i_5 = 0u;
+    uint _e16 = light_count_query(frame);
+    i_6 = 0u;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_2) {
-            uint _e33 = i_5;
-            i_5 = _e33 + 1u;
+            uint _e36 = i_6;
+            i_6 = _e36 + 1u;
         }
         loop_init_2 = false;
-        uint _e14 = i_5;
-        if (_e14 >= _e12) {
+        uint _e18 = i_6;
+        if (_e18 >= _e16) {
             break;
         }
-        uint _e16 = i_5;
-        LightSample _e19 = sample_light_deferred(_e16, hit_1.position, hit_1.geometric_normal, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
-        float c_11 = metal::max(metal::dot(n_13, _e19.dir), 0.0);
-        metal::float3 _e24 = direct;
-        float _e28 = mis_light_weight(_e19, c_11 * INV_PI, F32_INF);
-        direct = _e24 + (_e19.radiance * metal::float3(c_11 * _e28));
+        uint _e20 = i_6;
+        LightSample _e22 = sample_light_above_deferred(_e20, hit_1.position, ng, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+        float c_11 = metal::max(metal::dot(n_13, _e22.dir), 0.0);
+        metal::float3 _e27 = direct;
+        float _e31 = mis_light_weight(_e22, c_11 * INV_PI, F32_INF);
+        direct = _e27 + (_e22.radiance * metal::float3(c_11 * _e31));
     }
-    metal::float3 _e40 = direct;
-    return ((m.albedo * metal::float3(INV_PI)) * _e40) + secondary;
+    metal::float3 _e43 = direct;
+    return ((m.albedo * metal::float3(INV_PI)) * _e43) + secondary;
 }
 
 QuadLamp load_QuadLamp(
@@ -1989,30 +2032,31 @@ metal::float3 path_pbr_shade(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 direct_1 = {};
-    uint i_6 = {};
+    uint i_7 = {};
     float w = {};
     metal::float3 _e4 = path_pbr_n(ray_20, hit_6);
     metal::float3 _e6 = normalize_vec3f(ray_20.dir);
     metal::float3 v_7 = -(_e6);
     direct_1 = metal::float3(0.0);
-    uint _e12 = light_count_query(frame);
-    i_6 = 0u;
+    metal::float3 _e11 = path_pbr_ng(ray_20, hit_6);
+    uint _e13 = light_count_query(frame);
+    i_7 = 0u;
     uint2 loop_bound_6 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e49 = i_6;
-            i_6 = _e49 + 1u;
+            uint _e49 = i_7;
+            i_7 = _e49 + 1u;
         }
         loop_init_3 = false;
-        uint _e14 = i_6;
-        if (_e14 >= _e12) {
+        uint _e15 = i_7;
+        if (_e15 >= _e13) {
             break;
         }
-        uint _e16 = i_6;
-        LightSample _e19 = sample_light_deferred(_e16, hit_6.position, hit_6.geometric_normal, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+        uint _e17 = i_7;
+        LightSample _e19 = sample_light_above_deferred(_e17, hit_6.position, _e11, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
         if (metal::any(_e19.radiance > metal::float3(0.0))) {
             metal::float3 _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_7, _e19.dir);
             w = 1.0;
@@ -2145,15 +2189,15 @@ metal::float3 sample_cosine_hemisphere(
 }
 
 metal::float3 mis_bounce_dir(
-    metal::float3 dir_3,
+    metal::float3 dir_4,
     float pdf
 ) {
     float x_6 = metal::min(metal::log(1.0 + metal::max(pdf, 0.0)) * (1.0 / 90.0), 0.999);
-    return dir_3 * metal::float3(MIS_BOUNCE_LENGTH + x_6);
+    return dir_4 * metal::float3(MIS_BOUNCE_LENGTH + x_6);
 }
 
 void rt_spawn(
-    metal::float3 dir_4,
+    metal::float3 dir_5,
     metal::float3 weight,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
@@ -2161,7 +2205,7 @@ void rt_spawn(
 ) {
     uint _e3 = spawn_count;
     if (_e3 < 1u) {
-        spawn_dirs.inner[_e3] = dir_4;
+        spawn_dirs.inner[_e3] = dir_5;
         spawn_weights.inner[_e3] = weight;
         spawn_count = _e3 + 1u;
     }
@@ -2178,8 +2222,8 @@ void path_diffuse_rays(
     thread uint& spawn_count
 ) {
     metal::float3 weight_1 = {};
-    metal::float3 ng = hit_8.front_face ? hit_8.geometric_normal : -(hit_8.geometric_normal);
-    metal::float3 n_15 = metal::faceforward(hit_8.normal, -(ng), hit_8.normal);
+    metal::float3 ng_1 = hit_8.front_face ? hit_8.geometric_normal : -(hit_8.geometric_normal);
+    metal::float3 n_15 = metal::faceforward(hit_8.normal, -(ng_1), hit_8.normal);
     metal::float2 _e12 = rand2_next(scratch, rng_state);
     metal::float3 _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
@@ -2191,7 +2235,7 @@ void path_diffuse_rays(
         }
         weight_1 = m_4.albedo / metal::float3(q_4);
     }
-    if (metal::dot(_e13, ng) > 0.0) {
+    if (metal::dot(_e13, ng_1) > 0.0) {
         metal::float3 _e41 = mis_bounce_dir(_e13, metal::max(metal::dot(n_15, _e13), 0.0) * INV_PI);
         metal::float3 _e42 = weight_1;
         rt_spawn(_e41, _e42, spawn_dirs, spawn_weights, spawn_count);
@@ -2334,29 +2378,29 @@ void dispatch_secondary_rays(
 }
 
 metal::float3 spawn_origin_at(
-    metal::float3 position_7,
-    metal::float3 normal_7,
+    metal::float3 position_8,
+    metal::float3 normal_9,
     float error_1,
-    metal::float3 dir_5
+    metal::float3 dir_6
 ) {
     metal::float3 n_10 = {};
-    n_10 = normal_7;
+    n_10 = normal_9;
     metal::float3 _e5 = n_10;
-    if (metal::dot(dir_5, _e5) < 0.0) {
+    if (metal::dot(dir_6, _e5) < 0.0) {
         metal::float3 _e9 = n_10;
         n_10 = -(_e9);
     }
     metal::float3 _e11 = n_10;
-    metal::float3 _e12 = offset_origin(position_7, _e11, error_1);
+    metal::float3 _e12 = offset_origin(position_8, _e11, error_1);
     return _e12;
 }
 
 metal::float3 spawn_origin(
     Hit hit_11,
     float error_2,
-    metal::float3 dir_6
+    metal::float3 dir_7
 ) {
-    metal::float3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_6);
+    metal::float3 _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_7);
     return _e5;
 }
 
@@ -2383,7 +2427,7 @@ PathState path_step(
 ) {
     PathState out = {};
     bool spawned = {};
-    metal::float3 dir_7 = {};
+    metal::float3 dir_8 = {};
     metal::float3 weight_3 = {};
     metal::float3 beta = {};
     Ray ray_29 = s_2.ray;
@@ -2400,7 +2444,7 @@ PathState path_step(
     Hit _e22 = finish_hit(ray_29, c_5, instances, triangles, hit_error, attributes, _buffer_sizes);
     float error_4 = hit_error;
     spawned = false;
-    dir_7 = metal::float3(0.0);
+    dir_8 = metal::float3(0.0);
     weight_3 = metal::float3(0.0);
     if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_2.ray.depth < MAX_DEPTH)) {
         spawn_count = 0u;
@@ -2409,7 +2453,7 @@ PathState path_step(
         if (metal::min(_e47, 1u) > 0u) {
             spawned = true;
             metal::float3 _e56 = spawn_dirs.inner[0u];
-            dir_7 = _e56;
+            dir_8 = _e56;
             metal::float3 _e60 = spawn_weights.inner[0u];
             weight_3 = _e60;
         }
@@ -2443,9 +2487,9 @@ PathState path_step(
     }
     metal::float3 _e111 = beta;
     out.beta = _e111;
-    metal::float3 _e113 = dir_7;
+    metal::float3 _e113 = dir_8;
     metal::float3 _e114 = spawn_origin(_e22, error_4, _e113);
-    metal::float3 _e116 = dir_7;
+    metal::float3 _e116 = dir_8;
     uint _e118 = F32_INF;
     out.ray = Ray {_e114, 0.0, _e116, as_type<float>(_e118), s_2.ray.depth + 1u, RAY_SECONDARY, s_2.ray.medium};
     out.live = true;

@@ -200,17 +200,20 @@ const GAMMA_6_: f32 = 0.0000003576281f;
 const GAMMA_4_: f32 = 0.00000023841864f;
 const HAS_SECONDARY_RAYS: bool = true;
 const HAS_BACKGROUND: bool = true;
+const SCRATCH_SHADOW_MODE: u32 = 14u;
+const SHADOW_ABOVE: u32 = 2u;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
 const SCRATCH_RESOLVED: u32 = 3u;
 const SCRATCH_LIGHT_BITS: u32 = 11u;
 const SCRATCH_QUERY: u32 = 2u;
 const SCRATCH_PENDING: u32 = 4u;
-const SCRATCH_UNOCCLUDED: u32 = 14u;
+const SHADOW_UNOCCLUDED: u32 = 1u;
 const LIGHT_QUERIES: u32 = 32u;
 const COUNTER_SHADOW_OVERFLOW: u32 = 3u;
 const SCRATCH_LIGHT_QUERY: u32 = 15u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
+const SHADOW_TRACED: u32 = 0u;
 const MIS_BOUNCE_LENGTH: f32 = 3f;
 const PBR_MIN_ALPHA: f32 = 0.001f;
 const FLAG_MEDIUM: u32 = 4u;
@@ -388,10 +391,10 @@ fn rand_next() -> f32 {
     let _e16 = pcg_hash((_e10 ^ ((d_1 >> 1u) * 2654435769u)));
     let _e22 = scratch[min(SCRATCH_RNG_INDEX, 24u)];
     let _e24 = laine_karras(reverseBits(_e22), _e16);
-    let i_7 = reverseBits(_e24);
-    x_2 = i_7;
+    let i_8 = reverseBits(_e24);
+    x_2 = i_8;
     if ((d_1 & 1u) != 0u) {
-        let _e31 = sobol_second_reversed(i_7);
+        let _e31 = sobol_second_reversed(i_8);
         x_2 = _e31;
     }
     let scramble = (_e16 ^ (((2654435769u * (1u + (d_1 & 1u))) + (_e16 << 6u)) + (_e16 >> 2u)));
@@ -1051,6 +1054,17 @@ fn load_QuadLight(offset_7: u32) -> QuadLight {
     return QuadLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)), vec3<f32>(bitcast<f32>(_e62), bitcast<f32>(_e68), bitcast<f32>(_e74)), bitcast<f32>(_e81), _e87);
 }
 
+fn shadow_preset(normal: vec3<f32>, dir: vec3<f32>) -> f32 {
+    let mode = scratch[min(SCRATCH_SHADOW_MODE, 24u)];
+    if (mode == SHADOW_UNOCCLUDED) {
+        return 1f;
+    }
+    if ((mode == SHADOW_ABOVE) && !((dot(dir, normal) > 0f))) {
+        return 0f;
+    }
+    return -1f;
+}
+
 fn scratch_store3f(i_2: u32, v_2: vec3<f32>) {
     let b_8 = bitcast<vec3<u32>>(v_2);
     scratch[min(i_2, 24u)] = b_8.x;
@@ -1059,50 +1073,50 @@ fn scratch_store3f(i_2: u32, v_2: vec3<f32>) {
     return;
 }
 
-fn shadow_deferred(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> f32 {
-    let _e9 = scratch[min(SCRATCH_UNOCCLUDED, 24u)];
-    if (_e9 != 0u) {
+fn shadow_deferred(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist: f32) -> f32 {
+    let _e4 = shadow_preset(normal_1, dir_1);
+    if (_e4 >= 0f) {
+        return _e4;
+    }
+    let i_9 = scratch[min(SCRATCH_QUERY, 24u)];
+    scratch[min(SCRATCH_QUERY, 24u)] = (i_9 + 1u);
+    let _e25 = scratch[min(SCRATCH_RESOLVED, 24u)];
+    if (i_9 < _e25) {
+        let _e32 = scratch[min(SCRATCH_LIGHT_BITS, 24u)];
+        return f32(((_e32 >> (i_9 & 31u)) & 1u));
+    }
+    let _e44 = scratch[min(SCRATCH_PENDING, 24u)];
+    if (_e44 != 0u) {
         return 1f;
     }
-    let i_8 = scratch[min(SCRATCH_QUERY, 24u)];
-    scratch[min(SCRATCH_QUERY, 24u)] = (i_8 + 1u);
-    let _e31 = scratch[min(SCRATCH_RESOLVED, 24u)];
-    if (i_8 < _e31) {
-        let _e38 = scratch[min(SCRATCH_LIGHT_BITS, 24u)];
-        return f32(((_e38 >> (i_8 & 31u)) & 1u));
-    }
-    let _e50 = scratch[min(SCRATCH_PENDING, 24u)];
-    if (_e50 != 0u) {
-        return 1f;
-    }
-    if (i_8 >= LIGHT_QUERIES) {
+    if (i_9 >= LIGHT_QUERIES) {
         atomicAdd((&counters[min(COUNTER_SHADOW_OVERFLOW, 3u)]), 1u);
         return 1f;
     }
     scratch_store3f(SCRATCH_LIGHT_QUERY, position);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal);
-    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 3u), normal_1);
+    scratch_store3f((SCRATCH_LIGHT_QUERY + 6u), dir_1);
     scratch[min((SCRATCH_LIGHT_QUERY + 9u), 24u)] = bitcast<u32>(dist);
     scratch[min(SCRATCH_PENDING, 24u)] = 1u;
     return 1f;
 }
 
-fn quad_light(l: QuadLight, position_1: vec3<f32>, normal_1: vec3<f32>) -> LightSample {
+fn quad_light(l: QuadLight, position_1: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
     let c_10 = cross(l.edge_u, l.edge_v);
     let area = length(c_10);
     let _e7 = rand2_next();
     let to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_1);
     let dist2_ = dot(to_light, to_light);
     let dist_3 = sqrt(dist2_);
-    let dir_8 = (to_light / vec3(max(dist_3, 0.00000000000000000001f)));
-    let cos_light = (-(dot(dir_8, c_10)) / max(area, 0.000000000000000000000000000001f));
+    let dir_9 = (to_light / vec3(max(dist_3, 0.00000000000000000001f)));
+    let cos_light = (-(dot(dir_9, c_10)) / max(area, 0.000000000000000000000000000001f));
     if (!((cos_light > 0f)) || !((dist2_ > 0f))) {
-        return LightSample(dir_8, dist_3, vec3(0f), 0f);
+        return LightSample(dir_9, dist_3, vec3(0f), 0f);
     }
-    let _e42 = shadow_deferred(position_1, normal_1, dir_8, dist_3);
+    let _e42 = shadow_deferred(position_1, normal_2, dir_9, dist_3);
     let strength = (((l.intensity * cos_light) * area) / dist2_);
     let pdf_1 = select(0f, (dist2_ / (cos_light * area)), (l.lamp == 1u));
-    return LightSample(dir_8, dist_3, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
+    return LightSample(dir_9, dist_3, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
 }
 
 fn load_SphereLight(offset_8: u32) -> SphereLight {
@@ -1126,7 +1140,7 @@ fn orthonormal_basis(n_3: vec3<f32>) -> mat3x3<f32> {
     return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_3.x) * a_7)), (sign_ * b_9), -(_e16)), vec3<f32>(b_9, (sign_ + ((n_3.y * n_3.y) * a_7)), -(n_3.y)), n_3);
 }
 
-fn sphere_light(l_1: SphereLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
+fn sphere_light(l_1: SphereLight, position_2: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
     let to_center = (l_1.position - position_2);
     let d2_ = dot(to_center, to_center);
     let r2_2 = max((l_1.radius * l_1.radius), 0.00000000000000000001f);
@@ -1146,21 +1160,21 @@ fn sphere_light(l_1: SphereLight, position_2: vec3<f32>, normal_2: vec3<f32>) ->
     let along_1 = dot(to_center, _e52);
     let dist_4 = max((along_1 - sqrt(max((r2_2 - (d2_ - (along_1 * along_1))), 0f))), 0f);
     let weight_4 = (((l_1.intensity * 2f) * one_minus_cos_max) / r2_2);
-    let _e68 = shadow_deferred(position_2, normal_2, _e52, dist_4);
+    let _e68 = shadow_deferred(position_2, normal_3, _e52, dist_4);
     let pdf_2 = select(0f, (1f / (TAU * one_minus_cos_max)), (l_1.lamp == 1u));
     return LightSample(_e52, dist_4, ((l_1.color * vec3(weight_4)) * vec3(_e68)), pdf_2);
 }
 
-fn dispatch_light(type_id_3: u32, offset_9: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
+fn dispatch_light(type_id_3: u32, offset_9: u32, position_3: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     switch type_id_3 {
         case 0u: {
             let _e4 = load_QuadLight(offset_9);
-            let _e5 = quad_light(_e4, position_3, normal_3);
+            let _e5 = quad_light(_e4, position_3, normal_4);
             return _e5;
         }
         case 1u: {
             let _e6 = load_SphereLight(offset_9);
-            let _e7 = sphere_light(_e6, position_3, normal_3);
+            let _e7 = sphere_light(_e6, position_3, normal_4);
             return _e7;
         }
         default: {
@@ -1192,13 +1206,13 @@ fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
     return _e17;
 }
 
-fn shadow_ray(position_4: vec3<f32>, normal_4: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> Ray {
+fn shadow_ray(position_4: vec3<f32>, normal_5: vec3<f32>, dir_2: vec3<f32>, dist_1: f32) -> Ray {
     var n_5: vec3<f32>;
     var tmax_4: f32;
 
-    n_5 = normal_4;
+    n_5 = normal_5;
     let _e5 = n_5;
-    if (dot(dir_1, _e5) < 0f) {
+    if (dot(dir_2, _e5) < 0f) {
         let _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1211,27 +1225,27 @@ fn shadow_ray(position_4: vec3<f32>, normal_4: vec3<f32>, dir_1: vec3<f32>, dist
     tmax_4 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
     if (dist_1 < bitcast<f32>(_e29)) {
-        let light = (position_4 + (dir_1 * vec3(dist_1)));
-        let dd_1 = dot(dir_1, dir_1);
-        let along_2 = (dot((light - _e23), dir_1) / dd_1);
-        let l_7 = (abs(position_4) + abs((dir_1 * vec3(dist_1))));
+        let light = (position_4 + (dir_2 * vec3(dist_1)));
+        let dd_1 = dot(dir_2, dir_2);
+        let along_2 = (dot((light - _e23), dir_2) / dd_1);
+        let l_7 = (abs(position_4) + abs((dir_2 * vec3(dist_1))));
         tmax_4 = ((along_2 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd_1)));
     }
     let _e59 = tmax_4;
-    return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0f, dir_2, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-fn shadow_query(position_5: vec3<f32>, normal_5: vec3<f32>, dir_2: vec3<f32>, dist_2: f32) -> f32 {
-    let _e9 = scratch[min(SCRATCH_UNOCCLUDED, 24u)];
-    if (_e9 != 0u) {
-        return 1f;
+fn shadow_query(position_5: vec3<f32>, normal_6: vec3<f32>, dir_3: vec3<f32>, dist_2: f32) -> f32 {
+    let _e4 = shadow_preset(normal_6, dir_3);
+    if (_e4 >= 0f) {
+        return _e4;
     }
-    let _e13 = shadow_ray(position_5, normal_5, dir_2, dist_2);
-    let _e15 = intersect_scene(_e13, true);
-    return select(1f, 0f, (_e15.slot != NO_HIT));
+    let _e7 = shadow_ray(position_5, normal_6, dir_3, dist_2);
+    let _e9 = intersect_scene(_e7, true);
+    return select(1f, 0f, (_e9.slot != NO_HIT));
 }
 
-fn sample_light_deferred(i_4: u32, position_6: vec3<f32>, normal_6: vec3<f32>) -> LightSample {
+fn sample_light_deferred(i_4: u32, position_6: vec3<f32>, normal_7: vec3<f32>) -> LightSample {
     var after: u32;
     var resolved: u32;
     var bits_1: u32;
@@ -1253,7 +1267,7 @@ fn sample_light_deferred(i_4: u32, position_6: vec3<f32>, normal_6: vec3<f32>) -
         rng_state = start;
         scratch[min(SCRATCH_QUERY, 24u)] = 0u;
         scratch[min(SCRATCH_PENDING, 24u)] = 0u;
-        let _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_6);
+        let _e60 = dispatch_light(type_id_7, offset_17, position_6, normal_7);
         let _e66 = scratch[min(SCRATCH_PENDING, 24u)];
         if (_e66 == 0u) {
             let _e69 = resolved;
@@ -1299,6 +1313,13 @@ fn sample_light_deferred(i_4: u32, position_6: vec3<f32>, normal_6: vec3<f32>) -
     return LightSample();
 }
 
+fn sample_light_above_deferred(i_5: u32, position_7: vec3<f32>, normal_8: vec3<f32>) -> LightSample {
+    scratch[min(SCRATCH_SHADOW_MODE, 24u)] = SHADOW_ABOVE;
+    let _e9 = sample_light_deferred(i_5, position_7, normal_8);
+    scratch[min(SCRATCH_SHADOW_MODE, 24u)] = SHADOW_TRACED;
+    return _e9;
+}
+
 fn mis_weight(p_6: f32, other: f32) -> f32 {
     if !((p_6 > 0f)) {
         return 0f;
@@ -1322,30 +1343,31 @@ fn mis_light_weight(l_2: LightSample, bsdf_pdf: f32) -> f32 {
 
 fn path_diffuse_shade(m: PathDiffuse, ray_13: Ray, hit_1: Hit, secondary: vec3<f32>) -> vec3<f32> {
     var direct: vec3<f32>;
-    var i_5: u32;
+    var i_6: u32;
 
     let n_13 = faceForward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
+    let ng = faceForward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
     direct = vec3(0f);
-    let _e12 = light_count_query();
-    i_5 = 0u;
+    let _e16 = light_count_query();
+    i_6 = 0u;
     loop {
-        let _e14 = i_5;
-        if (_e14 >= _e12) {
+        let _e18 = i_6;
+        if (_e18 >= _e16) {
             break;
         }
-        let _e16 = i_5;
-        let _e19 = sample_light_deferred(_e16, hit_1.position, hit_1.geometric_normal);
-        let c_11 = max(dot(n_13, _e19.dir), 0f);
-        let _e24 = direct;
-        let _e28 = mis_light_weight(_e19, (c_11 * INV_PI));
-        direct = (_e24 + (_e19.radiance * vec3((c_11 * _e28))));
+        let _e20 = i_6;
+        let _e22 = sample_light_above_deferred(_e20, hit_1.position, ng);
+        let c_11 = max(dot(n_13, _e22.dir), 0f);
+        let _e27 = direct;
+        let _e31 = mis_light_weight(_e22, (c_11 * INV_PI));
+        direct = (_e27 + (_e22.radiance * vec3((c_11 * _e31))));
         continuing {
-            let _e33 = i_5;
-            i_5 = (_e33 + 1u);
+            let _e36 = i_6;
+            i_6 = (_e36 + 1u);
         }
     }
-    let _e40 = direct;
-    return (((m.albedo * vec3(INV_PI)) * _e40) + secondary);
+    let _e43 = direct;
+    return (((m.albedo * vec3(INV_PI)) * _e43) + secondary);
 }
 
 fn load_QuadLamp(offset_10: u32) -> QuadLamp {
@@ -1517,22 +1539,23 @@ fn pbr_pdf(base_3: vec3<f32>, metallic_2: f32, roughness_2: f32, n_7: vec3<f32>,
 
 fn path_pbr_shade(m_3: PathPbr, ray_20: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     var direct_1: vec3<f32>;
-    var i_6: u32;
+    var i_7: u32;
     var w: f32;
 
     let _e4 = path_pbr_n(ray_20, hit_6);
     let _e6 = normalize_vec3f(ray_20.dir);
     let v_7 = -(_e6);
     direct_1 = vec3(0f);
-    let _e12 = light_count_query();
-    i_6 = 0u;
+    let _e11 = path_pbr_ng(ray_20, hit_6);
+    let _e13 = light_count_query();
+    i_7 = 0u;
     loop {
-        let _e14 = i_6;
-        if (_e14 >= _e12) {
+        let _e15 = i_7;
+        if (_e15 >= _e13) {
             break;
         }
-        let _e16 = i_6;
-        let _e19 = sample_light_deferred(_e16, hit_6.position, hit_6.geometric_normal);
+        let _e17 = i_7;
+        let _e19 = sample_light_above_deferred(_e17, hit_6.position, _e11);
         if any((_e19.radiance > vec3(0f))) {
             let _e29 = pbr_eval(m_3.base_color, m_3.metallic, m_3.roughness, _e4, v_7, _e19.dir);
             w = 1f;
@@ -1546,8 +1569,8 @@ fn path_pbr_shade(m_3: PathPbr, ray_20: Ray, hit_6: Hit, secondary_1: vec3<f32>)
             direct_1 = (_e42 + ((_e19.radiance * _e29) * vec3(_e45)));
         }
         continuing {
-            let _e49 = i_6;
-            i_6 = (_e49 + 1u);
+            let _e49 = i_7;
+            i_7 = (_e49 + 1u);
         }
     }
     let _e53 = direct_1;
@@ -1616,15 +1639,15 @@ fn sample_cosine_hemisphere(n_8: vec3<f32>, u: vec2<f32>) -> vec3<f32> {
     return (_e17 * local);
 }
 
-fn mis_bounce_dir(dir_3: vec3<f32>, pdf: f32) -> vec3<f32> {
+fn mis_bounce_dir(dir_4: vec3<f32>, pdf: f32) -> vec3<f32> {
     let x_6 = min((log((1f + max(pdf, 0f))) * (1f / 90f)), 0.999f);
-    return (dir_3 * vec3((MIS_BOUNCE_LENGTH + x_6)));
+    return (dir_4 * vec3((MIS_BOUNCE_LENGTH + x_6)));
 }
 
-fn rt_spawn(dir_4: vec3<f32>, weight: vec3<f32>) {
+fn rt_spawn(dir_5: vec3<f32>, weight: vec3<f32>) {
     let _e3 = spawn_count;
     if (_e3 < 1u) {
-        spawn_dirs[_e3] = dir_4;
+        spawn_dirs[_e3] = dir_5;
         spawn_weights[_e3] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1633,8 +1656,8 @@ fn rt_spawn(dir_4: vec3<f32>, weight: vec3<f32>) {
 fn path_diffuse_rays(m_4: PathDiffuse, ray_25: Ray, hit_8: Hit) {
     var weight_1: vec3<f32>;
 
-    let ng = select(-(hit_8.geometric_normal), hit_8.geometric_normal, hit_8.front_face);
-    let n_15 = faceForward(hit_8.normal, -(ng), hit_8.normal);
+    let ng_1 = select(-(hit_8.geometric_normal), hit_8.geometric_normal, hit_8.front_face);
+    let n_15 = faceForward(hit_8.normal, -(ng_1), hit_8.normal);
     let _e12 = rand2_next();
     let _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
@@ -1646,7 +1669,7 @@ fn path_diffuse_rays(m_4: PathDiffuse, ray_25: Ray, hit_8: Hit) {
         }
         weight_1 = (m_4.albedo / vec3(q_4));
     }
-    if (dot(_e13, ng) > 0f) {
+    if (dot(_e13, ng_1) > 0f) {
         let _e41 = mis_bounce_dir(_e13, (max(dot(n_15, _e13), 0f) * INV_PI));
         let _e42 = weight_1;
         rt_spawn(_e41, _e42);
@@ -1758,29 +1781,29 @@ fn dispatch_secondary_rays(type_id_6: u32, offset_15: u32, ray_27: Ray, hit_10: 
     return;
 }
 
-fn spawn_origin_at(position_7: vec3<f32>, normal_7: vec3<f32>, error_1: f32, dir_5: vec3<f32>) -> vec3<f32> {
+fn spawn_origin_at(position_8: vec3<f32>, normal_9: vec3<f32>, error_1: f32, dir_6: vec3<f32>) -> vec3<f32> {
     var n_10: vec3<f32>;
 
-    n_10 = normal_7;
+    n_10 = normal_9;
     let _e5 = n_10;
-    if (dot(dir_5, _e5) < 0f) {
+    if (dot(dir_6, _e5) < 0f) {
         let _e9 = n_10;
         n_10 = -(_e9);
     }
     let _e11 = n_10;
-    let _e12 = offset_origin(position_7, _e11, error_1);
+    let _e12 = offset_origin(position_8, _e11, error_1);
     return _e12;
 }
 
-fn spawn_origin(hit_11: Hit, error_2: f32, dir_6: vec3<f32>) -> vec3<f32> {
-    let _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_6);
+fn spawn_origin(hit_11: Hit, error_2: f32, dir_7: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_11.position, hit_11.geometric_normal, error_2, dir_7);
     return _e5;
 }
 
 fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
     var out: PathState;
     var spawned: bool;
-    var dir_7: vec3<f32>;
+    var dir_8: vec3<f32>;
     var weight_3: vec3<f32>;
     var beta: vec3<f32>;
 
@@ -1798,7 +1821,7 @@ fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
     let _e22 = finish_hit(ray_29, c_5);
     let error_4 = hit_error;
     spawned = false;
-    dir_7 = vec3(0f);
+    dir_8 = vec3(0f);
     weight_3 = vec3(0f);
     if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_29.depth < MAX_DEPTH)) {
         spawn_count = 0u;
@@ -1807,7 +1830,7 @@ fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
         if (min(_e47, 1u) > 0u) {
             spawned = true;
             let _e56 = spawn_dirs[0u];
-            dir_7 = _e56;
+            dir_8 = _e56;
             let _e60 = spawn_weights[0u];
             weight_3 = _e60;
         }
@@ -1841,9 +1864,9 @@ fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
     }
     let _e111 = beta;
     out.beta = _e111;
-    let _e113 = dir_7;
+    let _e113 = dir_8;
     let _e114 = spawn_origin(_e22, error_4, _e113);
-    let _e116 = dir_7;
+    let _e116 = dir_8;
     let _e118 = F32_INF;
     out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_29.depth + 1u), RAY_SECONDARY, ray_29.medium);
     out.live = true;

@@ -183,7 +183,9 @@ const TEXTURE_FORMAT_RGBA8_UNORM: u32 = 2u;
 const RGBA16F_TEXEL_WORDS: u32 = 2u;
 const INV_PI: f32 = 0.31830987f;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
-const SCRATCH_UNOCCLUDED: u32 = 14u;
+const SCRATCH_SHADOW_MODE: u32 = 14u;
+const SHADOW_UNOCCLUDED: u32 = 1u;
+const SHADOW_ABOVE: u32 = 2u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
 const FLAG_MEDIUM: u32 = 4u;
@@ -1067,6 +1069,17 @@ fn load_PointLight(offset_5: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
+fn shadow_preset(normal: vec3<f32>, dir: vec3<f32>) -> f32 {
+    let mode_1 = scratch[min(SCRATCH_SHADOW_MODE, 14u)];
+    if (mode_1 == SHADOW_UNOCCLUDED) {
+        return 1f;
+    }
+    if ((mode_1 == SHADOW_ABOVE) && !((dot(dir, normal) > 0f))) {
+        return 0f;
+    }
+    return -1f;
+}
+
 fn step_toward(x_5: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
     let bits_1 = bitcast<vec3<u32>>(x_5);
     let up_1 = ((sign(x_5) * sign(s)) > vec3(0f));
@@ -1083,13 +1096,13 @@ fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
     return _e17;
 }
 
-fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> Ray {
+fn shadow_ray(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist: f32) -> Ray {
     var n_5: vec3<f32>;
     var tmax_4: f32;
 
-    n_5 = normal;
+    n_5 = normal_1;
     let _e5 = n_5;
-    if (dot(dir, _e5) < 0f) {
+    if (dot(dir_1, _e5) < 0f) {
         let _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1102,49 +1115,49 @@ fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32)
     tmax_4 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
     if (dist < bitcast<f32>(_e29)) {
-        let light = (position + (dir * vec3(dist)));
-        let dd_1 = dot(dir, dir);
-        let along_1 = (dot((light - _e23), dir) / dd_1);
-        let l_1 = (abs(position) + abs((dir * vec3(dist))));
+        let light = (position + (dir_1 * vec3(dist)));
+        let dd_1 = dot(dir_1, dir_1);
+        let along_1 = (dot((light - _e23), dir_1) / dd_1);
+        let l_1 = (abs(position) + abs((dir_1 * vec3(dist))));
         tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     let _e59 = tmax_4;
-    return Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
-    let _e9 = scratch[min(SCRATCH_UNOCCLUDED, 14u)];
-    if (_e9 != 0u) {
-        return 1f;
+fn shadow_query(position_1: vec3<f32>, normal_2: vec3<f32>, dir_2: vec3<f32>, dist_1: f32) -> f32 {
+    let _e4 = shadow_preset(normal_2, dir_2);
+    if (_e4 >= 0f) {
+        return _e4;
     }
-    let _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    let _e15 = intersect_scene(_e13, true);
-    return select(1f, 0f, (_e15.slot != NO_HIT));
+    let _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    let _e9 = intersect_scene(_e7, true);
+    return select(1f, 0f, (_e9.slot != NO_HIT));
 }
 
-fn point_light(l: PointLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
+fn point_light(l: PointLight, position_2: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
     var strength: f32;
 
     let to_light = (l.position - position_2);
     let dist_2 = length(to_light);
-    let dir_6 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
+    let dir_7 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
     strength = (l.intensity / max((dist_2 * dist_2), 0.00000000000000000001f));
     if (l.range > 0f) {
         let _e19 = strength;
         strength = (_e19 * (1f - smoothstep(l.inner_range, l.range, dist_2)));
     }
-    let _e26 = shadow_query(position_2, normal_2, dir_6, dist_2);
+    let _e26 = shadow_query(position_2, normal_3, dir_7, dist_2);
     let _e28 = strength;
-    return LightSample(dir_6, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0f);
+    return LightSample(dir_7, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0f);
 }
 
-fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
+fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let _e3 = load_PointLight(offset_6);
-    let _e4 = point_light(_e3, position_3, normal_3);
+    let _e4 = point_light(_e3, position_3, normal_4);
     return _e4;
 }
 
-fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
+fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
     let frame_4 = frame;
     if (i_2 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
@@ -1152,7 +1165,7 @@ fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> L
     let entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     let _e22 = params[entry];
     let _e27 = params[(entry + 1u)];
-    let _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    let _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     return _e28;
 }
 
@@ -1312,10 +1325,10 @@ fn through_medium(ray_19: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     return _e21;
 }
 
-fn rt_spawn(dir_2: vec3<f32>, weight: vec3<f32>) {
+fn rt_spawn(dir_3: vec3<f32>, weight: vec3<f32>) {
     let _e3 = spawn_count;
     if (_e3 < 1u) {
-        spawn_dirs[_e3] = dir_2;
+        spawn_dirs[_e3] = dir_3;
         spawn_weights[_e3] = weight;
         spawn_count = (_e3 + 1u);
     }
@@ -1333,12 +1346,12 @@ fn dispatch_secondary_rays(type_id_5: u32, offset_12: u32, ray_21: Ray, hit_8: H
     return;
 }
 
-fn spawn_origin_at(position_5: vec3<f32>, normal_5: vec3<f32>, error_1: f32, dir_3: vec3<f32>) -> vec3<f32> {
+fn spawn_origin_at(position_5: vec3<f32>, normal_6: vec3<f32>, error_1: f32, dir_4: vec3<f32>) -> vec3<f32> {
     var n_6: vec3<f32>;
 
-    n_6 = normal_5;
+    n_6 = normal_6;
     let _e5 = n_6;
-    if (dot(dir_3, _e5) < 0f) {
+    if (dot(dir_4, _e5) < 0f) {
         let _e9 = n_6;
         n_6 = -(_e9);
     }
@@ -1347,15 +1360,15 @@ fn spawn_origin_at(position_5: vec3<f32>, normal_5: vec3<f32>, error_1: f32, dir
     return _e12;
 }
 
-fn spawn_origin(hit_9: Hit, error_2: f32, dir_4: vec3<f32>) -> vec3<f32> {
-    let _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_4);
+fn spawn_origin(hit_9: Hit, error_2: f32, dir_5: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_9.position, hit_9.geometric_normal, error_2, dir_5);
     return _e5;
 }
 
 fn path_step(s_1: PathState, c_4: Candidate) -> PathState {
     var out: PathState;
     var spawned: bool;
-    var dir_5: vec3<f32>;
+    var dir_6: vec3<f32>;
     var weight_1: vec3<f32>;
     var beta: vec3<f32>;
 
@@ -1373,7 +1386,7 @@ fn path_step(s_1: PathState, c_4: Candidate) -> PathState {
     let _e22 = finish_hit(ray_23, c_4);
     let error_4 = hit_error;
     spawned = false;
-    dir_5 = vec3(0f);
+    dir_6 = vec3(0f);
     weight_1 = vec3(0f);
     if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_23.depth < MAX_DEPTH)) {
         spawn_count = 0u;
@@ -1382,7 +1395,7 @@ fn path_step(s_1: PathState, c_4: Candidate) -> PathState {
         if (min(_e47, 1u) > 0u) {
             spawned = true;
             let _e56 = spawn_dirs[0u];
-            dir_5 = _e56;
+            dir_6 = _e56;
             let _e60 = spawn_weights[0u];
             weight_1 = _e60;
         }
@@ -1416,9 +1429,9 @@ fn path_step(s_1: PathState, c_4: Candidate) -> PathState {
     }
     let _e111 = beta;
     out.beta = _e111;
-    let _e113 = dir_5;
+    let _e113 = dir_6;
     let _e114 = spawn_origin(_e22, error_4, _e113);
-    let _e116 = dir_5;
+    let _e116 = dir_6;
     let _e118 = F32_INF;
     out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_23.depth + 1u), RAY_SECONDARY, ray_23.medium);
     out.live = true;

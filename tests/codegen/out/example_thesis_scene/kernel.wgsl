@@ -171,7 +171,9 @@ const TEXTURE_FORMAT_RGBA8_UNORM: u32 = 2u;
 const RGBA16F_TEXEL_WORDS: u32 = 2u;
 const INV_PI: f32 = 0.31830987f;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
-const SCRATCH_UNOCCLUDED: u32 = 14u;
+const SCRATCH_SHADOW_MODE: u32 = 14u;
+const SHADOW_UNOCCLUDED: u32 = 1u;
+const SHADOW_ABOVE: u32 = 2u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
 const FLAG_MEDIUM: u32 = 4u;
@@ -1044,6 +1046,17 @@ fn load_PointLight(offset_5: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
+fn shadow_preset(normal: vec3<f32>, dir: vec3<f32>) -> f32 {
+    let mode_1 = scratch[min(SCRATCH_SHADOW_MODE, 14u)];
+    if (mode_1 == SHADOW_UNOCCLUDED) {
+        return 1f;
+    }
+    if ((mode_1 == SHADOW_ABOVE) && !((dot(dir, normal) > 0f))) {
+        return 0f;
+    }
+    return -1f;
+}
+
 fn step_toward(x_5: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
     let bits_1 = bitcast<vec3<u32>>(x_5);
     let up_1 = ((sign(x_5) * sign(s)) > vec3(0f));
@@ -1060,13 +1073,13 @@ fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
     return _e17;
 }
 
-fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> Ray {
+fn shadow_ray(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist: f32) -> Ray {
     var n_5: vec3<f32>;
     var tmax_4: f32;
 
-    n_5 = normal;
+    n_5 = normal_1;
     let _e5 = n_5;
-    if (dot(dir, _e5) < 0f) {
+    if (dot(dir_1, _e5) < 0f) {
         let _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1079,49 +1092,49 @@ fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32)
     tmax_4 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
     if (dist < bitcast<f32>(_e29)) {
-        let light = (position + (dir * vec3(dist)));
-        let dd_1 = dot(dir, dir);
-        let along_1 = (dot((light - _e23), dir) / dd_1);
-        let l_1 = (abs(position) + abs((dir * vec3(dist))));
+        let light = (position + (dir_1 * vec3(dist)));
+        let dd_1 = dot(dir_1, dir_1);
+        let along_1 = (dot((light - _e23), dir_1) / dd_1);
+        let l_1 = (abs(position) + abs((dir_1 * vec3(dist))));
         tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     let _e59 = tmax_4;
-    return Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
-    let _e9 = scratch[min(SCRATCH_UNOCCLUDED, 14u)];
-    if (_e9 != 0u) {
-        return 1f;
+fn shadow_query(position_1: vec3<f32>, normal_2: vec3<f32>, dir_2: vec3<f32>, dist_1: f32) -> f32 {
+    let _e4 = shadow_preset(normal_2, dir_2);
+    if (_e4 >= 0f) {
+        return _e4;
     }
-    let _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    let _e15 = intersect_scene(_e13, true);
-    return select(1f, 0f, (_e15.slot != NO_HIT));
+    let _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    let _e9 = intersect_scene(_e7, true);
+    return select(1f, 0f, (_e9.slot != NO_HIT));
 }
 
-fn point_light(l: PointLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
+fn point_light(l: PointLight, position_2: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
     var strength: f32;
 
     let to_light = (l.position - position_2);
     let dist_2 = length(to_light);
-    let dir_4 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
+    let dir_5 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
     strength = (l.intensity / max((dist_2 * dist_2), 0.00000000000000000001f));
     if (l.range > 0f) {
         let _e19 = strength;
         strength = (_e19 * (1f - smoothstep(l.inner_range, l.range, dist_2)));
     }
-    let _e26 = shadow_query(position_2, normal_2, dir_4, dist_2);
+    let _e26 = shadow_query(position_2, normal_3, dir_5, dist_2);
     let _e28 = strength;
-    return LightSample(dir_4, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0f);
+    return LightSample(dir_5, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0f);
 }
 
-fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
+fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let _e3 = load_PointLight(offset_6);
-    let _e4 = point_light(_e3, position_3, normal_3);
+    let _e4 = point_light(_e3, position_3, normal_4);
     return _e4;
 }
 
-fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
+fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
     let frame_4 = frame;
     if (i_2 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
@@ -1129,7 +1142,7 @@ fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> L
     let entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     let _e22 = params[entry];
     let _e27 = params[(entry + 1u)];
-    let _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    let _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     return _e28;
 }
 
@@ -1204,12 +1217,12 @@ fn dispatch_secondary_rays(type_id_5: u32, offset_9: u32, ray_17: Ray, hit_4: Hi
     return;
 }
 
-fn spawn_origin_at(position_5: vec3<f32>, normal_5: vec3<f32>, error_1: f32, dir_2: vec3<f32>) -> vec3<f32> {
+fn spawn_origin_at(position_5: vec3<f32>, normal_6: vec3<f32>, error_1: f32, dir_3: vec3<f32>) -> vec3<f32> {
     var n_6: vec3<f32>;
 
-    n_6 = normal_5;
+    n_6 = normal_6;
     let _e5 = n_6;
-    if (dot(dir_2, _e5) < 0f) {
+    if (dot(dir_3, _e5) < 0f) {
         let _e9 = n_6;
         n_6 = -(_e9);
     }
@@ -1218,8 +1231,8 @@ fn spawn_origin_at(position_5: vec3<f32>, normal_5: vec3<f32>, error_1: f32, dir
     return _e12;
 }
 
-fn spawn_origin(hit_5: Hit, error_2: f32, dir_3: vec3<f32>) -> vec3<f32> {
-    let _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_3);
+fn spawn_origin(hit_5: Hit, error_2: f32, dir_4: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
     return _e5;
 }
 
@@ -1412,13 +1425,13 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             stack[min(top_1, 0u)].next = (i_6 + 1u);
             let parent = stack[min(top_1, 0u)].ray;
             let hit_8 = stack[min(top_1, 0u)].hit;
-            let dir_5 = stack[min(top_1, 0u)].dirs[min(i_6, 0u)];
+            let dir_6 = stack[min(top_1, 0u)].dirs[min(i_6, 0u)];
             medium = parent.medium;
             let _e283 = stack[min(top_1, 0u)].error;
-            let _e284 = spawn_origin(hit_8, _e283, dir_5);
+            let _e284 = spawn_origin(hit_8, _e283, dir_6);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_18 = Ray(_e284, 0f, dir_5, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_18 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack[min(top_1, 0u)].ray;
             s_ray = _e299;

@@ -179,7 +179,9 @@ const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
 const uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 const uint RGBA16F_TEXEL_WORDS = 2u;
 const uint LIGHT_ENTRY_STRIDE = 2u;
-const uint SCRATCH_UNOCCLUDED = 14u;
+const uint SCRATCH_SHADOW_MODE = 14u;
+const uint SHADOW_UNOCCLUDED = 1u;
+const uint SHADOW_ABOVE = 2u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const uint RAY_SHADOW = 2u;
 const uint FLAG_MEDIUM = 4u;
@@ -722,18 +724,18 @@ Triangle mesh_triangle_query(uint m_1, uint i_2) {
 
 Intersection intersect_triangle(Ray ray_7, Triangle tri) {
     uvec3 _e10 = uvec3(2139095040u);
-    vec3 dir_4 = mix(ray_7.dir, vec3(0.0), lessThan(abs(ray_7.dir), vec3(1.1754944e-38)));
-    vec3 _e31 = abs(dir_4);
+    vec3 dir_5 = mix(ray_7.dir, vec3(0.0), lessThan(abs(ray_7.dir), vec3(1.1754944e-38)));
+    vec3 _e31 = abs(dir_5);
     bool _e38 = (_e31.y > _e31.x);
     uint kz_1 = ((_e31.z > (_e38 ? _e31.y : _e31.x)) ? 2u : (_e38 ? 1u : 0u));
     uint _e45 = ((kz_1 == 2u) ? 0u : (kz_1 + 1u));
     uint _e49 = ((kz_1 >= 1u) ? (kz_1 - 1u) : (kz_1 + 2u));
-    float dz_1 = dir_4[kz_1];
+    float dz_1 = dir_5[kz_1];
     bool _e52 = (dz_1 < 0.0);
     uint kx_1 = (_e52 ? _e49 : _e45);
     uint ky_1 = (_e52 ? _e45 : _e49);
-    float sx = (dir_4[kx_1] / dz_1);
-    float sy = (dir_4[ky_1] / dz_1);
+    float sx = (dir_5[kx_1] / dz_1);
+    float sy = (dir_5[ky_1] / dz_1);
     float sz = (1.0 / dz_1);
     vec3 _e62 = (tri.v0_ - ray_7.origin);
     float _e68 = (_e62[kx_1] - (sx * _e62[kz_1]));
@@ -1346,6 +1348,17 @@ PointLight load_PointLight(uint offset_8) {
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
+float shadow_preset(vec3 normal, vec3 dir) {
+    uint mode_1 = scratch[min(SCRATCH_SHADOW_MODE, 14u)];
+    if ((mode_1 == SHADOW_UNOCCLUDED)) {
+        return 1.0;
+    }
+    if (((mode_1 == SHADOW_ABOVE) && !((dot(dir, normal) > 0.0)))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 vec3 step_toward(vec3 x_5, vec3 s_1) {
     uvec3 bits_1 = floatBitsToUint(x_5);
     bvec3 up_1 = greaterThan((sign(x_5) * sign(s_1)), vec3(0.0));
@@ -1362,12 +1375,12 @@ vec3 offset_origin(vec3 p_5, vec3 n_5, float error) {
     return _e17;
 }
 
-Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
+Ray shadow_ray(vec3 position, vec3 normal_1, vec3 dir_1, float dist) {
     vec3 n_6 = vec3(0.0);
     float tmax_5 = 0.0;
-    n_6 = normal;
+    n_6 = normal_1;
     vec3 _e5 = n_6;
-    if ((dot(dir, _e5) < 0.0)) {
+    if ((dot(dir_1, _e5) < 0.0)) {
         vec3 _e9 = n_6;
         n_6 = -(_e9);
     }
@@ -1380,48 +1393,48 @@ Ray shadow_ray(vec3 position, vec3 normal, vec3 dir, float dist) {
     tmax_5 = uintBitsToFloat(_e25);
     uint _e29 = F32_INF;
     if ((dist < uintBitsToFloat(_e29))) {
-        vec3 light = (position + (dir * vec3(dist)));
-        float dd_1 = dot(dir, dir);
-        float along_1 = (dot((light - _e23), dir) / dd_1);
-        vec3 l_2 = (abs(position) + abs((dir * vec3(dist))));
+        vec3 light = (position + (dir_1 * vec3(dist)));
+        float dd_1 = dot(dir_1, dir_1);
+        float along_1 = (dot((light - _e23), dir_1) / dd_1);
+        vec3 l_2 = (abs(position) + abs((dir_1 * vec3(dist))));
         tmax_5 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_5;
-    return Ray(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-float shadow_query(vec3 position_1, vec3 normal_1, vec3 dir_1, float dist_1) {
-    uint _e9 = scratch[min(SCRATCH_UNOCCLUDED, 14u)];
-    if ((_e9 != 0u)) {
-        return 1.0;
+float shadow_query(vec3 position_1, vec3 normal_2, vec3 dir_2, float dist_1) {
+    float _e4 = shadow_preset(normal_2, dir_2);
+    if ((_e4 >= 0.0)) {
+        return _e4;
     }
-    Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    Candidate _e15 = intersect_scene(_e13, true);
-    return ((_e15.slot != NO_HIT) ? 0.0 : 1.0);
+    Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    Candidate _e9 = intersect_scene(_e7, true);
+    return ((_e9.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
-LightSample point_light(PointLight l, vec3 position_2, vec3 normal_2) {
+LightSample point_light(PointLight l, vec3 position_2, vec3 normal_3) {
     float strength = 0.0;
     vec3 to_light = (l.position - position_2);
     float dist_2 = length(to_light);
-    vec3 dir_5 = (to_light / vec3(max(dist_2, 1e-20)));
+    vec3 dir_6 = (to_light / vec3(max(dist_2, 1e-20)));
     strength = (l.intensity / max((dist_2 * dist_2), 1e-20));
     if ((l.range > 0.0)) {
         float _e19 = strength;
         strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_2)));
     }
-    float _e26 = shadow_query(position_2, normal_2, dir_5, dist_2);
+    float _e26 = shadow_query(position_2, normal_3, dir_6, dist_2);
     float _e28 = strength;
-    return LightSample(dir_5, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0.0);
+    return LightSample(dir_6, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0.0);
 }
 
-LightSample dispatch_light(uint type_id_3, uint offset_9, vec3 position_3, vec3 normal_3) {
+LightSample dispatch_light(uint type_id_3, uint offset_9, vec3 position_3, vec3 normal_4) {
     PointLight _e3 = load_PointLight(offset_9);
-    LightSample _e4 = point_light(_e3, position_3, normal_3);
+    LightSample _e4 = point_light(_e3, position_3, normal_4);
     return _e4;
 }
 
-LightSample sample_light_query(uint i_4, vec3 position_4, vec3 normal_4) {
+LightSample sample_light_query(uint i_4, vec3 position_4, vec3 normal_5) {
     FrameUniforms frame_4 = _group_0_binding_0_cs;
     if ((i_4 >= frame_4.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
@@ -1429,7 +1442,7 @@ LightSample sample_light_query(uint i_4, vec3 position_4, vec3 normal_4) {
     uint entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     uint _e22 = _group_0_binding_6_cs[entry];
     uint _e27 = _group_0_binding_6_cs[(entry + 1u)];
-    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     return _e28;
 }
 
@@ -1496,11 +1509,11 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_23, Hit hit
     return;
 }
 
-vec3 spawn_origin_at(vec3 position_5, vec3 normal_5, float error_1, vec3 dir_2) {
+vec3 spawn_origin_at(vec3 position_5, vec3 normal_6, float error_1, vec3 dir_3) {
     vec3 n_7 = vec3(0.0);
-    n_7 = normal_5;
+    n_7 = normal_6;
     vec3 _e5 = n_7;
-    if ((dot(dir_2, _e5) < 0.0)) {
+    if ((dot(dir_3, _e5) < 0.0)) {
         vec3 _e9 = n_7;
         n_7 = -(_e9);
     }
@@ -1509,8 +1522,8 @@ vec3 spawn_origin_at(vec3 position_5, vec3 normal_5, float error_1, vec3 dir_2) 
     return _e12;
 }
 
-vec3 spawn_origin(Hit hit_5, float error_2, vec3 dir_3) {
-    vec3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_3);
+vec3 spawn_origin(Hit hit_5, float error_2, vec3 dir_4) {
+    vec3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
     return _e5;
 }
 
@@ -1704,13 +1717,13 @@ vec3 trace(Ray camera_ray) {
             stack_1[min(top_1, 3u)].next = (i_8 + 1u);
             Ray parent = stack_1[min(top_1, 3u)].ray;
             Hit hit_9 = stack_1[min(top_1, 3u)].hit;
-            vec3 dir_6 = stack_1[min(top_1, 3u)].dirs[min(i_8, 0u)];
+            vec3 dir_7 = stack_1[min(top_1, 3u)].dirs[min(i_8, 0u)];
             medium = parent.medium;
             float _e283 = stack_1[min(top_1, 3u)].error;
-            vec3 _e284 = spawn_origin(hit_9, _e283, dir_6);
+            vec3 _e284 = spawn_origin(hit_9, _e283, dir_7);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_24 = Ray(_e284, 0.0, dir_6, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_24 = Ray(_e284, 0.0, dir_7, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack_1[min(top_1, 3u)].ray;
             s_ray = _e299;

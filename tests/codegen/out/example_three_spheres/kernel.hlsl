@@ -231,7 +231,9 @@ static const uint TEXTURE_FORMAT_RGBA8_SRGB = 0u;
 static const uint TEXTURE_FORMAT_RGBA8_UNORM = 2u;
 static const uint RGBA16F_TEXEL_WORDS = 2u;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
-static const uint SCRATCH_UNOCCLUDED = 14u;
+static const uint SCRATCH_SHADOW_MODE = 14u;
+static const uint SHADOW_UNOCCLUDED = 1u;
+static const uint SHADOW_ABOVE = 2u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
 static const uint FLAG_MEDIUM = 4u;
@@ -914,18 +916,18 @@ Intersection ConstructIntersection(float arg0, float3 arg1, float2 arg2) {
 Intersection intersect_triangle(Ray ray_7, Triangle tri)
 {
     uint3 _e10 = (2139095040u).xxx;
-    float3 dir_4 = ((abs(ray_7.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_7.dir);
-    float3 _e31 = abs(dir_4);
+    float3 dir_5 = ((abs(ray_7.dir) < (1.1754944e-38).xxx) ? (0.0).xxx : ray_7.dir);
+    float3 _e31 = abs(dir_5);
     bool _e38 = (_e31.y > _e31.x);
     uint kz_1 = ((_e31.z > (_e38 ? _e31.y : _e31.x)) ? 2u : (_e38 ? 1u : 0u));
     uint _e45 = ((kz_1 == 2u) ? 0u : (kz_1 + 1u));
     uint _e49 = ((kz_1 >= 1u) ? (kz_1 - 1u) : (kz_1 + 2u));
-    float dz_1 = dir_4[min(uint(kz_1), 2u)];
+    float dz_1 = dir_5[min(uint(kz_1), 2u)];
     bool _e52 = (dz_1 < 0.0);
     uint kx_1 = (_e52 ? _e49 : _e45);
     uint ky_1 = (_e52 ? _e45 : _e49);
-    float sx = (dir_4[min(uint(kx_1), 2u)] / dz_1);
-    float sy = (dir_4[min(uint(ky_1), 2u)] / dz_1);
+    float sx = (dir_5[min(uint(kx_1), 2u)] / dz_1);
+    float sy = (dir_5[min(uint(ky_1), 2u)] / dz_1);
     float sz = (1.0 / dz_1);
     float3 _e62 = (tri.v0_ - ray_7.origin);
     float _e68 = (_e62[min(uint(kx_1), 2u)] - (sx * _e62[min(uint(kz_1), 2u)]));
@@ -1702,6 +1704,18 @@ PointLight load_PointLight(uint offset_8)
     return pointlight;
 }
 
+float shadow_preset(float3 normal, float3 dir)
+{
+    uint mode_1 = scratch[min(uint(min(SCRATCH_SHADOW_MODE, 14u)), 14u)];
+    if ((mode_1 == SHADOW_UNOCCLUDED)) {
+        return 1.0;
+    }
+    if (((mode_1 == SHADOW_ABOVE) && !((dot(dir, normal) > 0.0)))) {
+        return 0.0;
+    }
+    return -1.0;
+}
+
 float3 step_toward(float3 x_5, float3 s_1)
 {
     uint3 bits_1 = asuint(x_5);
@@ -1720,14 +1734,14 @@ float3 offset_origin(float3 p_5, float3 n_5, float error)
     return _e17;
 }
 
-Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
+Ray shadow_ray(float3 position, float3 normal_1, float3 dir_1, float dist)
 {
     float3 n_6 = (float3)0;
     float tmax_5 = (float)0;
 
-    n_6 = normal;
+    n_6 = normal_1;
     float3 _e5 = n_6;
-    if ((dot(dir, _e5) < 0.0)) {
+    if ((dot(dir_1, _e5) < 0.0)) {
         float3 _e9 = n_6;
         n_6 = -(_e9);
     }
@@ -1740,26 +1754,26 @@ Ray shadow_ray(float3 position, float3 normal, float3 dir, float dist)
     tmax_5 = asfloat(_e25);
     uint _e29 = F32_INF;
     if ((dist < asfloat(_e29))) {
-        float3 light = (position + (dir * (dist).xxx));
-        float dd_1 = dot(dir, dir);
-        float along_1 = (dot((light - _e23), dir) / dd_1);
-        float3 l_2 = (abs(position) + abs((dir * (dist).xxx)));
+        float3 light = (position + (dir_1 * (dist).xxx));
+        float dd_1 = dot(dir_1, dir_1);
+        float along_1 = (dot((light - _e23), dir_1) / dd_1);
+        float3 l_2 = (abs(position) + abs((dir_1 * (dist).xxx)));
         tmax_5 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_5;
-    const Ray ray_29 = ConstructRay(_e23, 0.0, dir, _e59, 0u, RAY_SHADOW, 0u);
+    const Ray ray_29 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
     return ray_29;
 }
 
-float shadow_query(float3 position_1, float3 normal_1, float3 dir_1, float dist_1)
+float shadow_query(float3 position_1, float3 normal_2, float3 dir_2, float dist_1)
 {
-    uint _e9 = scratch[min(uint(min(SCRATCH_UNOCCLUDED, 14u)), 14u)];
-    if ((_e9 != 0u)) {
-        return 1.0;
+    const float _e4 = shadow_preset(normal_2, dir_2);
+    if ((_e4 >= 0.0)) {
+        return _e4;
     }
-    const Ray _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    const Candidate _e15 = intersect_scene(_e13, true);
-    return ((_e15.slot != NO_HIT) ? 0.0 : 1.0);
+    const Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    const Candidate _e9 = intersect_scene(_e7, true);
+    return ((_e9.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
 LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg3) {
@@ -1771,33 +1785,33 @@ LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg
     return ret;
 }
 
-LightSample point_light(PointLight l, float3 position_2, float3 normal_2)
+LightSample point_light(PointLight l, float3 position_2, float3 normal_3)
 {
     float strength = (float)0;
 
     float3 to_light = (l.position - position_2);
     float dist_2 = length(to_light);
-    float3 dir_5 = (to_light / (max(dist_2, 1e-20)).xxx);
+    float3 dir_6 = (to_light / (max(dist_2, 1e-20)).xxx);
     strength = (l.intensity / max((dist_2 * dist_2), 1e-20));
     if ((l.range > 0.0)) {
         float _e19 = strength;
         strength = (_e19 * (1.0 - smoothstep(l.inner_range, l.range, dist_2)));
     }
-    const float _e26 = shadow_query(position_2, normal_2, dir_5, dist_2);
+    const float _e26 = shadow_query(position_2, normal_3, dir_6, dist_2);
     float _e28 = strength;
-    const LightSample lightsample = ConstructLightSample(dir_5, dist_2, ((l.color * (_e28).xxx) * (_e26).xxx), 0.0);
+    const LightSample lightsample = ConstructLightSample(dir_6, dist_2, ((l.color * (_e28).xxx) * (_e26).xxx), 0.0);
     return lightsample;
 }
 
-LightSample dispatch_light(uint type_id_3, uint offset_9, float3 position_3, float3 normal_3)
+LightSample dispatch_light(uint type_id_3, uint offset_9, float3 position_3, float3 normal_4)
 {
     const PointLight _e3 = load_PointLight(offset_9);
-    const LightSample _e4 = point_light(_e3, position_3, normal_3);
+    const LightSample _e4 = point_light(_e3, position_3, normal_4);
     const LightSample lightsample_1 = _e4;
     return lightsample_1;
 }
 
-LightSample sample_light_query(uint i_4, float3 position_4, float3 normal_4)
+LightSample sample_light_query(uint i_4, float3 position_4, float3 normal_5)
 {
     FrameUniforms frame_4 = frame;
     if ((i_4 >= frame_4.light_count)) {
@@ -1807,7 +1821,7 @@ LightSample sample_light_query(uint i_4, float3 position_4, float3 normal_4)
     uint entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     uint _e22 = asuint(params.Load(entry*4));
     uint _e27 = asuint(params.Load((entry + 1u)*4));
-    const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     const LightSample lightsample_3 = _e28;
     return lightsample_3;
 }
@@ -1889,13 +1903,13 @@ void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_23, Hit hit
     return;
 }
 
-float3 spawn_origin_at(float3 position_5, float3 normal_5, float error_1, float3 dir_2)
+float3 spawn_origin_at(float3 position_5, float3 normal_6, float error_1, float3 dir_3)
 {
     float3 n_7 = (float3)0;
 
-    n_7 = normal_5;
+    n_7 = normal_6;
     float3 _e5 = n_7;
-    if ((dot(dir_2, _e5) < 0.0)) {
+    if ((dot(dir_3, _e5) < 0.0)) {
         float3 _e9 = n_7;
         n_7 = -(_e9);
     }
@@ -1904,9 +1918,9 @@ float3 spawn_origin_at(float3 position_5, float3 normal_5, float error_1, float3
     return _e12;
 }
 
-float3 spawn_origin(Hit hit_5, float error_2, float3 dir_3)
+float3 spawn_origin(Hit hit_5, float error_2, float3 dir_4)
 {
-    const float3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_3);
+    const float3 _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
     return _e5;
 }
 
@@ -2132,13 +2146,13 @@ float3 trace(Ray camera_ray)
             stack_1[min(uint(min(top_1, 3u)), 3u)].next = (i_8 + 1u);
             Ray parent = stack_1[min(uint(min(top_1, 3u)), 3u)].ray;
             Hit hit_10 = stack_1[min(uint(min(top_1, 3u)), 3u)].hit;
-            float3 dir_6 = stack_1[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_8, 0u)), 0u)];
+            float3 dir_7 = stack_1[min(uint(min(top_1, 3u)), 3u)].dirs[min(uint(min(i_8, 0u)), 0u)];
             medium = parent.medium;
             float _e283 = stack_1[min(uint(min(top_1, 3u)), 3u)].error;
-            const float3 _e284 = spawn_origin(hit_10, _e283, dir_6);
+            const float3 _e284 = spawn_origin(hit_10, _e283, dir_7);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_24 = ConstructRay(_e284, 0.0, dir_6, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_24 = ConstructRay(_e284, 0.0, dir_7, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack_1[min(uint(min(top_1, 3u)), 3u)].ray;
             s_ray = _e299;

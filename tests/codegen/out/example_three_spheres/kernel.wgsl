@@ -193,7 +193,9 @@ const TEXTURE_FORMAT_RGBA8_SRGB: u32 = 0u;
 const TEXTURE_FORMAT_RGBA8_UNORM: u32 = 2u;
 const RGBA16F_TEXEL_WORDS: u32 = 2u;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
-const SCRATCH_UNOCCLUDED: u32 = 14u;
+const SCRATCH_SHADOW_MODE: u32 = 14u;
+const SHADOW_UNOCCLUDED: u32 = 1u;
+const SHADOW_ABOVE: u32 = 2u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
 const FLAG_MEDIUM: u32 = 4u;
@@ -730,18 +732,18 @@ fn mesh_triangle_query(m_1: u32, i_2: u32) -> Triangle {
 
 fn intersect_triangle(ray_7: Ray, tri: Triangle) -> Intersection {
     let _e10 = vec3(2139095040u);
-    let dir_4 = select(ray_7.dir, vec3(0f), (abs(ray_7.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
-    let _e31 = abs(dir_4);
+    let dir_5 = select(ray_7.dir, vec3(0f), (abs(ray_7.dir) < vec3(0.000000000000000000000000000000000000011754944f)));
+    let _e31 = abs(dir_5);
     let _e38 = (_e31.y > _e31.x);
     let kz_1 = select(select(0u, 1u, _e38), 2u, (_e31.z > select(_e31.x, _e31.y, _e38)));
     let _e45 = select((kz_1 + 1u), 0u, (kz_1 == 2u));
     let _e49 = select((kz_1 + 2u), (kz_1 - 1u), (kz_1 >= 1u));
-    let dz_1 = dir_4[kz_1];
+    let dz_1 = dir_5[kz_1];
     let _e52 = (dz_1 < 0f);
     let kx_1 = select(_e45, _e49, _e52);
     let ky_1 = select(_e49, _e45, _e52);
-    let sx = (dir_4[kx_1] / dz_1);
-    let sy = (dir_4[ky_1] / dz_1);
+    let sx = (dir_5[kx_1] / dz_1);
+    let sy = (dir_5[ky_1] / dz_1);
     let sz = (1f / dz_1);
     let _e62 = (tri.v0_ - ray_7.origin);
     let _e68 = (_e62[kx_1] - (sx * _e62[kz_1]));
@@ -1356,6 +1358,17 @@ fn load_PointLight(offset_8: u32) -> PointLight {
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
+fn shadow_preset(normal: vec3<f32>, dir: vec3<f32>) -> f32 {
+    let mode_1 = scratch[min(SCRATCH_SHADOW_MODE, 14u)];
+    if (mode_1 == SHADOW_UNOCCLUDED) {
+        return 1f;
+    }
+    if ((mode_1 == SHADOW_ABOVE) && !((dot(dir, normal) > 0f))) {
+        return 0f;
+    }
+    return -1f;
+}
+
 fn step_toward(x_5: vec3<f32>, s_1: vec3<f32>) -> vec3<f32> {
     let bits_1 = bitcast<vec3<u32>>(x_5);
     let up_1 = ((sign(x_5) * sign(s_1)) > vec3(0f));
@@ -1372,13 +1385,13 @@ fn offset_origin(p_5: vec3<f32>, n_5: vec3<f32>, error: f32) -> vec3<f32> {
     return _e17;
 }
 
-fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32) -> Ray {
+fn shadow_ray(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist: f32) -> Ray {
     var n_6: vec3<f32>;
     var tmax_5: f32;
 
-    n_6 = normal;
+    n_6 = normal_1;
     let _e5 = n_6;
-    if (dot(dir, _e5) < 0f) {
+    if (dot(dir_1, _e5) < 0f) {
         let _e9 = n_6;
         n_6 = -(_e9);
     }
@@ -1391,49 +1404,49 @@ fn shadow_ray(position: vec3<f32>, normal: vec3<f32>, dir: vec3<f32>, dist: f32)
     tmax_5 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
     if (dist < bitcast<f32>(_e29)) {
-        let light = (position + (dir * vec3(dist)));
-        let dd_1 = dot(dir, dir);
-        let along_1 = (dot((light - _e23), dir) / dd_1);
-        let l_2 = (abs(position) + abs((dir * vec3(dist))));
+        let light = (position + (dir_1 * vec3(dist)));
+        let dd_1 = dot(dir_1, dir_1);
+        let along_1 = (dot((light - _e23), dir_1) / dd_1);
+        let l_2 = (abs(position) + abs((dir_1 * vec3(dist))));
         tmax_5 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     let _e59 = tmax_5;
-    return Ray(_e23, 0f, dir, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-fn shadow_query(position_1: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist_1: f32) -> f32 {
-    let _e9 = scratch[min(SCRATCH_UNOCCLUDED, 14u)];
-    if (_e9 != 0u) {
-        return 1f;
+fn shadow_query(position_1: vec3<f32>, normal_2: vec3<f32>, dir_2: vec3<f32>, dist_1: f32) -> f32 {
+    let _e4 = shadow_preset(normal_2, dir_2);
+    if (_e4 >= 0f) {
+        return _e4;
     }
-    let _e13 = shadow_ray(position_1, normal_1, dir_1, dist_1);
-    let _e15 = intersect_scene(_e13, true);
-    return select(1f, 0f, (_e15.slot != NO_HIT));
+    let _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    let _e9 = intersect_scene(_e7, true);
+    return select(1f, 0f, (_e9.slot != NO_HIT));
 }
 
-fn point_light(l: PointLight, position_2: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
+fn point_light(l: PointLight, position_2: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
     var strength: f32;
 
     let to_light = (l.position - position_2);
     let dist_2 = length(to_light);
-    let dir_5 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
+    let dir_6 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
     strength = (l.intensity / max((dist_2 * dist_2), 0.00000000000000000001f));
     if (l.range > 0f) {
         let _e19 = strength;
         strength = (_e19 * (1f - smoothstep(l.inner_range, l.range, dist_2)));
     }
-    let _e26 = shadow_query(position_2, normal_2, dir_5, dist_2);
+    let _e26 = shadow_query(position_2, normal_3, dir_6, dist_2);
     let _e28 = strength;
-    return LightSample(dir_5, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0f);
+    return LightSample(dir_6, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0f);
 }
 
-fn dispatch_light(type_id_3: u32, offset_9: u32, position_3: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
+fn dispatch_light(type_id_3: u32, offset_9: u32, position_3: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
     let _e3 = load_PointLight(offset_9);
-    let _e4 = point_light(_e3, position_3, normal_3);
+    let _e4 = point_light(_e3, position_3, normal_4);
     return _e4;
 }
 
-fn sample_light_query(i_4: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
+fn sample_light_query(i_4: u32, position_4: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
     let frame_4 = frame;
     if (i_4 >= frame_4.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
@@ -1441,7 +1454,7 @@ fn sample_light_query(i_4: u32, position_4: vec3<f32>, normal_4: vec3<f32>) -> L
     let entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     let _e22 = params[entry];
     let _e27 = params[(entry + 1u)];
-    let _e28 = dispatch_light(_e22, _e27, position_4, normal_4);
+    let _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     return _e28;
 }
 
@@ -1507,12 +1520,12 @@ fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_23: Ray, hit_4: H
     return;
 }
 
-fn spawn_origin_at(position_5: vec3<f32>, normal_5: vec3<f32>, error_1: f32, dir_2: vec3<f32>) -> vec3<f32> {
+fn spawn_origin_at(position_5: vec3<f32>, normal_6: vec3<f32>, error_1: f32, dir_3: vec3<f32>) -> vec3<f32> {
     var n_7: vec3<f32>;
 
-    n_7 = normal_5;
+    n_7 = normal_6;
     let _e5 = n_7;
-    if (dot(dir_2, _e5) < 0f) {
+    if (dot(dir_3, _e5) < 0f) {
         let _e9 = n_7;
         n_7 = -(_e9);
     }
@@ -1521,8 +1534,8 @@ fn spawn_origin_at(position_5: vec3<f32>, normal_5: vec3<f32>, error_1: f32, dir
     return _e12;
 }
 
-fn spawn_origin(hit_5: Hit, error_2: f32, dir_3: vec3<f32>) -> vec3<f32> {
-    let _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_3);
+fn spawn_origin(hit_5: Hit, error_2: f32, dir_4: vec3<f32>) -> vec3<f32> {
+    let _e5 = spawn_origin_at(hit_5.position, hit_5.geometric_normal, error_2, dir_4);
     return _e5;
 }
 
@@ -1715,13 +1728,13 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             stack_1[min(top_1, 3u)].next = (i_8 + 1u);
             let parent = stack_1[min(top_1, 3u)].ray;
             let hit_9 = stack_1[min(top_1, 3u)].hit;
-            let dir_6 = stack_1[min(top_1, 3u)].dirs[min(i_8, 0u)];
+            let dir_7 = stack_1[min(top_1, 3u)].dirs[min(i_8, 0u)];
             medium = parent.medium;
             let _e283 = stack_1[min(top_1, 3u)].error;
-            let _e284 = spawn_origin(hit_9, _e283, dir_6);
+            let _e284 = spawn_origin(hit_9, _e283, dir_7);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_24 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_24 = Ray(_e284, 0f, dir_7, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack_1[min(top_1, 3u)].ray;
             s_ray = _e299;
