@@ -395,7 +395,7 @@ fn bench_compile_measures_a_scene_in_a_child() {
     let value: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&json).expect("JSON written"))
             .expect("JSON parses");
-    // One row per execution model: the megakernel's one kernel, the wavefront model's five stages.
+    // One row per execution model: the megakernel's one kernel, the wavefront model's seven stages.
     let cold = value["cold"].as_array().expect("cold rows");
     assert_eq!(cold.len(), 2, "{value}");
     for (row, (exec, labels)) in cold.iter().zip([
@@ -403,6 +403,8 @@ fn bench_compile_measures_a_scene_in_a_child() {
         (
             "wavefront",
             &[
+                "rtc wf_count",
+                "rtc wf_compact",
                 "rtc wf_camera",
                 "rtc wf_trace",
                 "rtc wf_shade",

@@ -62,7 +62,7 @@ use rtc_bvh::Aabb;
 /// The BVH builder presets ([`RenderOptions::bvh`]), re-exported for callers without `rtc-bvh`.
 pub use rtc_bvh::BuildPreset;
 use rtc_compiler::abi;
-use rtc_compiler::kernel::wavefront::STAGES;
+use rtc_compiler::kernel::wavefront::{self, STAGES};
 /// The execution models ([`RenderOptions::exec`]), re-exported for callers.
 pub use rtc_compiler::kernel::ExecModel;
 use rtc_compiler::kernel::{CompiledScene, BOUNDS_ENTRY, BOUNDS_WORKGROUP, RENDER_ENTRY};
@@ -70,7 +70,8 @@ use rtc_compiler::kernel::{CompiledScene, BOUNDS_ENTRY, BOUNDS_WORKGROUP, RENDER
 use crate::assets::AssetRoots;
 use crate::gpu::{
     dispatch_once, plan_tiles, BufferLimits, DispatchError, Gpu, Kernel, KernelDesc, KernelReport,
-    KernelSource, PipelineCacheStatus, PipelineError, RoundKernels, TileConfig, TileDispatcher,
+    KernelSource, PipelineCacheStatus, PipelineError, RoundDispatch, RoundKernels, TileConfig,
+    TileDispatcher,
 };
 use crate::image_out::{ImageError, LinearImage, ToneMap};
 use crate::resolve::{ResolveError, ResolveTarget, Resolver};
@@ -329,18 +330,36 @@ enum Kernels {
 }
 
 impl Kernels {
-    /// The dispatch of a wavefront pass: a round is camera, trace, shade, shadow, shade.
+    /// The dispatch of a wavefront pass: a round is count, compact, camera, trace, shade, shadow,
+    /// shade (`stages` in `wavefront::STAGES` order), each dispatched as its
+    /// [`wavefront::Stage::dispatch`] says.
     fn rounds(
         stages: &[Kernel],
         max_rounds: u32,
         flag_offset: u64,
         timed: bool,
     ) -> Option<RoundKernels<'_>> {
-        let [camera, trace, shade, shadow, finish] = stages else {
+        let [count, compact, camera, trace, shade, shadow, finish] = stages else {
             return None;
         };
+        let how = |stage: wavefront::Stage| match stage.dispatch() {
+            wavefront::StageDispatch::Tile => RoundDispatch::Tile,
+            wavefront::StageDispatch::Blocks => RoundDispatch::Row(wavefront::COMPACT_WORKGROUPS),
+            wavefront::StageDispatch::Listed => {
+                RoundDispatch::Indirect(flag_offset + wavefront::TAIL_DISPATCH_OFFSET)
+            }
+        };
+        use wavefront::Stage as S;
         Some(RoundKernels {
-            round: vec![camera, trace, shade, shadow, shade],
+            round: vec![
+                (count, how(S::Count)),
+                (compact, how(S::Compact)),
+                (camera, how(S::Camera)),
+                (trace, how(S::Trace)),
+                (shade, how(S::Shade)),
+                (shadow, how(S::Shadow)),
+                (shade, how(S::Shade)),
+            ],
             finish,
             flag_binding: abi::binding("paths")?.binding,
             flag_offset,
@@ -375,7 +394,7 @@ fn max_rounds(compiled: &CompiledScene) -> u32 {
 /// The wavefront model's tiles (dispatched one at a time, whatever `tiles_per_batch` says): the
 /// adapter's tiles, no larger than the image (rounded up to
 /// whole 8 x 8 workgroups), halved along their longer side until one tile's path records
-/// (`path_words` words a pixel) fit one storage binding of at most `max_binding` bytes.
+/// (`path_words` words a pixel) and their tail (`wavefront::tail_bytes`) fit one storage binding of at most `max_binding` bytes.
 fn wavefront_tiles(
     mut tiles: TileConfig,
     [width, height]: [u32; 2],
@@ -385,7 +404,8 @@ fn wavefront_tiles(
     tiles.tile_width = tiles.tile_width.min(width.next_multiple_of(8)).max(8);
     tiles.tile_height = tiles.tile_height.min(height.next_multiple_of(8)).max(8);
     let bytes = |t: &TileConfig| {
-        u64::from(t.tile_width) * u64::from(t.tile_height) * u64::from(path_words) * 4
+        let slots = t.tile_width * t.tile_height;
+        u64::from(slots) * u64::from(path_words) * 4 + wavefront::tail_bytes(slots)
     };
     while bytes(&tiles) > max_binding && (tiles.tile_width > 8 || tiles.tile_height > 8) {
         if tiles.tile_width >= tiles.tile_height {
@@ -719,14 +739,12 @@ impl<'g> Renderer<'g> {
             // One tile's path records in one binding, within WebGPU's default 128 MiB.
             let max = gpu.limits().max_storage_buffer_binding_size.min(128 << 20);
             tiles = wavefront_tiles(tiles, [width, height], compiled.path_words, max);
-            // The records, then the chunk whose first word is the *running* word the rounds
-            // read (`paths` is an array of 16-byte chunks).
+            // The records, then the tail: the running count the rounds read, the listed stages'
+            // dispatch, and the list of running slots (`wavefront::tail_bytes`).
+            let slots = tiles.tile_width * tiles.tile_height;
             scene.set_path_bytes(
-                u64::from(tiles.tile_width)
-                    * u64::from(tiles.tile_height)
-                    * u64::from(compiled.path_words)
-                    * 4
-                    + 16,
+                u64::from(slots) * u64::from(compiled.path_words) * 4
+                    + wavefront::tail_bytes(slots),
             );
         }
         if let Some(limits) = options.limits {

@@ -373,6 +373,8 @@ fn timing_the_wavefront_stages_changes_nothing_but_the_report() {
     assert_eq!(
         labels,
         [
+            "rtc wf_count",
+            "rtc wf_compact",
             "rtc wf_camera",
             "rtc wf_trace",
             "rtc wf_shade",

@@ -7,12 +7,19 @@
 //! | stage | entry | does | traversal code |
 //! |---|---|---|---|
 //! | camera | `wf_camera` | starts the slot's next sample: seeds, calls the camera, finds the medium | only for media |
+//! | count | `wf_count` | counts the running slots of each of `COMPACT_BLOCKS` blocks of the tile | none |
+//! | compact | `wf_compact` | lists the running slots in slot order, their count and the listed stages' indirect dispatch | none |
 //! | trace | `wf_trace` | closest hit of the slot's pending ray (with `@intersection` and `@any_hit`); for media, first the medium a refracted ray enters when the shade stage could not tell it | one copy, and the medium probe for media |
 //! | shade | `wf_shade` | one shading step: miss, `@secondary_rays`, `@closest_hit`, `@medium`, `@light`; the next ray or the finished sample | none |
 //! | shadow | `wf_shadow` | the shadow queries the last shading step recorded | one copy |
 //! | finish | `wf_finish` | adds the pass's samples to `accum` and resets the slot | none |
 //!
-//! A round is camera, trace, shade, shadow, shade. `shadow(…)` in the shade stage does not trace:
+//! A round is count, compact, camera, trace, shade, shadow, shade. The count and compact stages
+//! run over the tile as a few workgroups, one invocation a block of slots, and list the slots still
+//! running; the other stages of the round run over that *list*, through an indirect dispatch of as
+//! many workgroups as it needs: once some paths have ended (Russian roulette, misses), the lanes of
+//! those stages still all hold a running path, and a round costs what its running paths cost. The
+//! finish stage runs over the tile. `shadow(…)` in the shade stage does not trace:
 //! it is *replayed* (`shadow_replay` in `stdlib/kernel/paths.rt`). The first run of a shading step
 //! records each query it makes and answers "unoccluded"; the shadow stage traces the recorded
 //! queries; the step then runs again from the same saved state (same random numbers), and each query
@@ -20,10 +27,9 @@
 //! answered commits its results, so the outcome is the megakernel's. A step whose later queries
 //! depend on the answers of earlier ones records the changed ones and goes round again.
 //!
-//! Termination: the camera stage, first of a round, stores 1 (a plain store: every writer writes
-//! the same value) into the word after the tile's records, `PATH_WORDS * path_slots`, for every
-//! slot still running; the host zeroes that word before a round and ends the tile's rounds when it
-//! reads 0 after one. Rays are counted per slot (`PATH_RAYS`) and added to `COUNTER_RAYS` once a
+//! Termination: the compact stage stores the count of running slots into the word after the tile's
+//! records, `PATH_WORDS * path_slots` (the first word of the *tail*, [`tail_bytes`]); the host
+//! ends the tile's rounds when it reads 0 after one. Rays are counted per slot (`PATH_RAYS`) and added to `COUNTER_RAYS` once a
 //! pixel by the finish stage: one atomic a pixel, as in the megakernel, instead of one per stage
 //! (atomics on one address from every lane serialise the CPU's threads).
 //!
@@ -39,7 +45,9 @@ use crate::link::KernelConfig;
 
 /// The stage kernels, in the order a round runs them (the shade stage runs twice a round) and
 /// their kernel functions in `stdlib/kernel/wavefront.rt`.
-pub const STAGES: [Stage; 5] = [
+pub const STAGES: [Stage; 7] = [
+    Stage::Count,
+    Stage::Compact,
     Stage::Camera,
     Stage::Trace,
     Stage::Shade,
@@ -52,6 +60,10 @@ pub const STAGES: [Stage; 5] = [
 pub enum Stage {
     /// Starts a sample: the camera ray.
     Camera,
+    /// Running slots per block of the tile.
+    Count,
+    /// The list of running slots and the listed stages' dispatch.
+    Compact,
     /// Closest hits of pending rays.
     Trace,
     /// One shading step per path.
@@ -67,6 +79,8 @@ impl Stage {
     pub fn entry(self) -> &'static str {
         match self {
             Stage::Camera => "wf_camera",
+            Stage::Count => "wf_count",
+            Stage::Compact => "wf_compact",
             Stage::Trace => "wf_trace",
             Stage::Shade => "wf_shade",
             Stage::Shadow => "wf_shadow",
@@ -78,6 +92,8 @@ impl Stage {
     pub fn root(self) -> &'static str {
         match self {
             Stage::Camera => "wf_camera_invocation",
+            Stage::Count => "wf_count_invocation",
+            Stage::Compact => "wf_compact_invocation",
             Stage::Trace => "wf_trace_invocation",
             Stage::Shade => "wf_shade_invocation",
             Stage::Shadow => "wf_shadow_invocation",
@@ -85,10 +101,56 @@ impl Stage {
         }
     }
 
+    /// How the host dispatches the stage: over the tile, as one workgroup, or over the list of
+    /// running slots.
+    pub fn dispatch(self) -> StageDispatch {
+        match self {
+            Stage::Finish => StageDispatch::Tile,
+            Stage::Count | Stage::Compact => StageDispatch::Blocks,
+            Stage::Camera | Stage::Trace | Stage::Shade | Stage::Shadow => StageDispatch::Listed,
+        }
+    }
+
     /// The stage whose entry point is `entry`.
     pub fn from_entry(entry: &str) -> Option<Stage> {
         STAGES.into_iter().find(|s| s.entry() == entry)
     }
+}
+
+/// How a stage kernel is dispatched ([`Stage::dispatch`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum StageDispatch {
+    /// One invocation per pixel of the tile (workgroups cover the tile).
+    Tile,
+    /// A row of [`COMPACT_WORKGROUPS`] workgroups, one invocation per block of slots
+    /// ([`COMPACT_BLOCKS`]).
+    Blocks,
+    /// Indirectly, from the workgroup count the compact stage stored at
+    /// [`TAIL_DISPATCH_OFFSET`] bytes into the tail: one invocation per listed slot, the `n`-th
+    /// at `gid = ((n / 64) * 8 + n % 8, (n / 8) % 8)` (workgroups of 8 x 8 in a row).
+    Listed,
+}
+
+/// Workgroups of the count and compact stages: a few, so every thread of a CPU driver counts.
+pub const COMPACT_WORKGROUPS: u32 = 4;
+/// Blocks of slots the count and compact stages split a tile into: one invocation each,
+/// [`COMPACT_WORKGROUPS`] workgroups of the stage kernels' 8 x 8.
+pub const COMPACT_BLOCKS: u32 =
+    COMPACT_WORKGROUPS * super::RENDER_WORKGROUP[0] * super::RENDER_WORKGROUP[1];
+/// Chunks of the tail before the list: the running count and the indirect dispatch (one chunk),
+/// then the blocks' counts (a chunk each, in its first word).
+pub const TAIL_HEAD_CHUNKS: u32 = 1 + COMPACT_BLOCKS;
+/// Byte offset, from the start of the tail, of the listed stages' indirect dispatch arguments
+/// (`x, y, z` workgroups, after the running count).
+pub const TAIL_DISPATCH_OFFSET: u64 = 4;
+
+/// Bytes of the tail of `paths` after a tile's records (`slots` records): the running count and
+/// the indirect dispatch (one chunk), the blocks' counts, then the list. Each count and each
+/// listed slot takes the first word of a chunk of its own: one store with no other invocation's
+/// word beside it, and one load, where a word packed four to a chunk needs a branch for each
+/// place it can have.
+pub fn tail_bytes(slots: u32) -> u64 {
+    (u64::from(TAIL_HEAD_CHUNKS) + u64::from(slots)) * u64::from(CHUNK_WORDS) * 4
 }
 
 /// Shadow queries one shading step records (a step's further queries are answered "unoccluded"
@@ -196,6 +258,8 @@ pub fn config_constants(c: &KernelConfig) -> Vec<(&'static str, u32)> {
     out.push(("CANDIDATE_WORDS", CANDIDATE_WORDS));
     out.push(("QUERY_WORDS", QUERY_WORDS));
     out.push(("CHUNK_WORDS", CHUNK_WORDS));
+    out.push(("COMPACT_BLOCKS", COMPACT_BLOCKS));
+    out.push(("TAIL_HEAD_CHUNKS", TAIL_HEAD_CHUNKS));
     out
 }
 
@@ -272,6 +336,10 @@ mod tests {
                 let nodes = names.contains(&"nodes");
                 match s.stage {
                     Stage::Trace | Stage::Shadow => assert!(nodes),
+                    Stage::Count | Stage::Compact => {
+                        assert!(!nodes);
+                        assert_eq!(storage, 1, "{:?}: {names:?}", s.stage);
+                    }
                     // The camera stage finds the medium a camera ray starts in; the shade stage
                     // leaves every probe to the trace stage (`MEDIUM_PROBE`), so holds no BVH.
                     Stage::Camera => assert_eq!(nodes, media, "{:?}", s.stage),

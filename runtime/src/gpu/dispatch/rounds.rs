@@ -1,8 +1,10 @@
 //! Rounds of stage kernels over each tile: the wavefront model's dispatch.
 //!
 //! For each tile, a round is one command buffer: the *running* word is zeroed, the round's
-//! kernels are dispatched in order over the tile (same tile parameters, each with its own bind
-//! group), and the word is copied to a mapped buffer and read. A round that found no path
+//! kernels are dispatched in order (same tile parameters, each with its own bind group): over
+//! the tile, as a row of workgroups, or indirectly from workgroup counts an earlier kernel of the round
+//! stored in the flag's buffer, copied before the first of them ([`RoundDispatch`]); then the word
+//! is copied to a mapped buffer and read. A round that found no path
 //! running ends the tile's rounds; the finish kernel then runs once over the tile. Tiles run one
 //! after the other, so one tile's path state is all the state buffer has to hold.
 //!
@@ -16,14 +18,30 @@
 
 use super::*;
 
+/// How a kernel of a round is dispatched.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RoundDispatch {
+    /// Workgroups covering the tile.
+    Tile,
+    /// A row of this many workgroups.
+    Row(u32),
+    /// Indirectly: the `x, y, z` workgroup counts at this byte offset (a multiple of 4) of the
+    /// flag's buffer ([`RoundKernels::flag_binding`]), written by an earlier kernel of the round
+    /// (not by an indirect one). They are copied to a buffer of their own first (a buffer bound
+    /// for storage cannot be read as indirect arguments by the same dispatch), once for a run of
+    /// indirect dispatches from the same offset.
+    Indirect(u64),
+}
+
 /// The kernels of a wavefront dispatch.
 pub struct RoundKernels<'a> {
-    /// The kernels of one round, dispatched in this order (a kernel may appear twice).
-    pub round: Vec<&'a Kernel>,
+    /// The kernels of one round, dispatched in this order and way (a kernel may appear twice).
+    pub round: Vec<(&'a Kernel, RoundDispatch)>,
     /// The kernel run once over a tile after its last round.
     pub finish: &'a Kernel,
     /// The binding of the buffer holding the *running* word: zeroed before each round, set to a
-    /// non-zero value by the round's kernels while some path still runs.
+    /// non-zero value by the round's kernels while some path still runs (and holding the
+    /// indirect dispatches' workgroup counts).
     pub flag_binding: u32,
     /// The byte offset of that word (a multiple of 4).
     pub flag_offset: u64,
@@ -68,7 +86,7 @@ impl TileDispatcher {
     ) -> Result<RoundsReport, DispatchError> {
         let config = self.config;
         check_config(&config)?;
-        let mut all: Vec<&Kernel> = kernels.round.clone();
+        let mut all: Vec<&Kernel> = kernels.round.iter().map(|(k, _)| *k).collect();
         all.push(kernels.finish);
         let mut tile_binding = None;
         for k in &all {
@@ -123,6 +141,15 @@ impl TileDispatcher {
             })
         });
         wgpu_result("read-back allocation", error)?;
+        let (indirect, error) = gpu.scoped(|| {
+            gpu.device().create_buffer(&wgpu::BufferDescriptor {
+                label: Some("rtc round workgroups"),
+                size: 12,
+                usage: wgpu::BufferUsages::INDIRECT | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            })
+        });
+        wgpu_result("read-back allocation", error)?;
 
         report.dispatch.flush_ms = flush_uploads(gpu)?;
 
@@ -132,12 +159,34 @@ impl TileDispatcher {
             // Fits: the buffer size was checked against u32 offsets in params_buffer.
             let offset = (u64::from(tile.tile_index) * stride) as u32;
             let mut finished = false;
-            let dispatch = |pass: &mut wgpu::ComputePass<'_>, k: &Kernel, group| {
-                let [x, y] = tile_workgroups(k, tile);
-                pass.set_pipeline(k.pipeline());
-                pass.set_bind_group(0, group, &[offset]);
-                pass.dispatch_workgroups(x, y, 1);
-            };
+            let dispatch =
+                |pass: &mut wgpu::ComputePass<'_>, k: &Kernel, how: RoundDispatch, group| {
+                    pass.set_pipeline(k.pipeline());
+                    pass.set_bind_group(0, group, &[offset]);
+                    match how {
+                        RoundDispatch::Tile => {
+                            let [x, y] = tile_workgroups(k, tile);
+                            pass.dispatch_workgroups(x, y, 1);
+                        }
+                        RoundDispatch::Row(n) => pass.dispatch_workgroups(n, 1, 1),
+                        RoundDispatch::Indirect(_) => {
+                            pass.dispatch_workgroups_indirect(&indirect, 0);
+                        }
+                    }
+                };
+            // Copies the workgroup counts of an indirect dispatch unless the last copy holds them
+            // (`copied`: its offset, forgotten after a direct dispatch, which may rewrite them).
+            let copy_counts =
+                |e: &mut wgpu::CommandEncoder, how: RoundDispatch, copied: &mut Option<u64>| {
+                    match how {
+                        RoundDispatch::Indirect(at) if *copied != Some(at) => {
+                            e.copy_buffer_to_buffer(flag, at, &indirect, 0, Some(12));
+                            *copied = Some(at);
+                        }
+                        RoundDispatch::Indirect(_) => {}
+                        RoundDispatch::Tile | RoundDispatch::Row(_) => *copied = None,
+                    }
+                };
             let round = "rtc wavefront round";
             for _ in 0..kernels.max_rounds {
                 if timed {
@@ -145,10 +194,12 @@ impl TileDispatcher {
                     submit(gpu, round, "wavefront round", |e| {
                         e.clear_buffer(flag, flag_offset, Some(4))
                     })?;
-                    for (k, group) in kernels.round.iter().zip(&groups) {
+                    let mut copied = None;
+                    for (&(k, how), group) in kernels.round.iter().zip(&groups) {
                         let begin = Instant::now();
                         submit(gpu, k.label(), "wavefront round", |e| {
-                            dispatch(&mut begin_pass(e, k.label()), k, group)
+                            copy_counts(e, how, &mut copied);
+                            dispatch(&mut begin_pass(e, k.label()), k, how, group)
                         })?;
                         wait(gpu)?;
                         add_stage_ms(&mut report.stage_ms, k.label(), elapsed_ms(begin));
@@ -159,10 +210,20 @@ impl TileDispatcher {
                 } else {
                     submit(gpu, round, "wavefront round", |e| {
                         e.clear_buffer(flag, flag_offset, Some(4));
-                        {
+                        // One pass for each run of dispatches between copies of counts.
+                        let mut copied = None;
+                        let mut next = kernels.round.iter().zip(&groups).peekable();
+                        while let Some((&(k, how), group)) = next.next() {
+                            copy_counts(e, how, &mut copied);
                             let mut pass = begin_pass(e, round);
-                            for (k, group) in kernels.round.iter().zip(&groups) {
-                                dispatch(&mut pass, k, group);
+                            dispatch(&mut pass, k, how, group);
+                            while let Some((&(k, how), group)) = next.next_if(|(&(_, how), _)| {
+                                !matches!(how, RoundDispatch::Indirect(at) if copied != Some(at))
+                            }) {
+                                if !matches!(how, RoundDispatch::Indirect(_)) {
+                                    copied = None;
+                                }
+                                dispatch(&mut pass, k, how, group);
                             }
                         }
                         e.copy_buffer_to_buffer(flag, flag_offset, &staging, 0, Some(4));
@@ -186,6 +247,7 @@ impl TileDispatcher {
                 dispatch(
                     &mut begin_pass(e, finish.label()),
                     finish,
+                    RoundDispatch::Tile,
                     &groups[finish_group],
                 );
             })?;
