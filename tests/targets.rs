@@ -1,5 +1,5 @@
 //! Cross-target checks: every example, and a scene that links every standard-library program, is
-//! compiled to all five targets (the megakernel, the bounds kernel and the wavefront model's five
+//! compiled to all five targets (the megakernel, the bounds kernel and the wavefront model's seven
 //! stage kernels), and each output is given to an independent validator:
 //!
 //! | target | check |

@@ -205,7 +205,8 @@ pub struct BvhArgs {
 #[derive(Clone, Copy, Debug, Default, Args)]
 pub struct ExecArgs {
     /// Execution model: `megakernel` traces each pixel's samples in one kernel; `wavefront` runs
-    /// stage kernels (camera, trace, shade, shadow, finish) in rounds over each tile.
+    /// stage kernels (count, compact, camera, trace, shade, shadow, finish) in rounds over each
+    /// tile, the middle ones over the paths still running.
     #[arg(long = "exec", value_name = "MODEL", value_enum)]
     pub exec: Option<ExecChoice>,
 }

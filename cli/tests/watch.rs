@@ -4,7 +4,7 @@
 //! the reload's report line (generous timeouts: the machines that run this are slow and shared) and
 //! then checks the files and the messages. With an adapter, each report's kernel lines say whether
 //! the preview's kernels were compiled or reused (the scene of the first build again reuses its
-//! kernels; a scene left at `EXEC_AUTO` runs the wavefront model's five stage kernels here).
+//! kernels; a scene left at `EXEC_AUTO` runs the wavefront model's stage kernels here).
 
 use std::io::{BufRead, BufReader, Read};
 use std::path::{Path, PathBuf};
@@ -114,7 +114,7 @@ fn collect(stream: impl Read + Send + 'static, lines: Arc<Mutex<Vec<String>>>) {
 }
 
 /// The report's kernel lines (`rtc wf_shade  compiled  …  (driver … ms)`): under `rtc watch` a
-/// scene left at `EXEC_AUTO` runs the wavefront model, five stage kernels.
+/// scene left at `EXEC_AUTO` runs the wavefront model, seven stage kernels.
 fn kernel_lines(text: &str) -> Vec<&str> {
     let lines: Vec<&str> = text
         .lines()
@@ -201,7 +201,7 @@ fn watch_follows_edits_keeps_good_outputs_and_tracks_imports() {
     let has_gpu = text.contains("preview adapter:");
     if has_gpu {
         assert!(preview.is_file(), "{text}");
-        assert_eq!(kernel_counts(&text), (5, 0), "{text}");
+        assert_eq!(kernel_counts(&text), (7, 0), "{text}");
         assert!(
             kernel_lines(&text).iter().all(|l| l.contains("compiled")),
             "{text}"
@@ -237,7 +237,7 @@ fn watch_follows_edits_keeps_good_outputs_and_tracks_imports() {
         );
         assert!(text.contains("edit to preview"), "{text}");
         let (compiled, reused) = kernel_counts(&text);
-        assert!(compiled >= 1 && compiled + reused == 5, "{text}");
+        assert!(compiled >= 1 && compiled + reused == 7, "{text}");
     }
 
     // 2. An invalid edit: diagnostics, and the outputs of #2 are left alone.
@@ -271,7 +271,7 @@ fn watch_follows_edits_keeps_good_outputs_and_tracks_imports() {
     );
     if has_gpu {
         // The kernels of #1 again: their pipelines are reused, not compiled.
-        assert_eq!(kernel_counts(&text), (0, 5), "{text}");
+        assert_eq!(kernel_counts(&text), (0, 7), "{text}");
         assert!(
             kernel_lines(&text)
                 .iter()

@@ -263,6 +263,12 @@ pub struct RenderStats {
     pub exec: ExecModel,
     /// Wavefront rounds run over all tiles and passes (0 for the megakernel).
     pub rounds: u64,
+    /// The running paths the wavefront rounds listed, summed over rounds, tiles and passes: the
+    /// invocations of each listed stage (camera, trace, shade) that held a path.
+    pub listed_slots: u64,
+    /// The tiles' pixels summed over the same rounds: the invocations a stage run over the whole
+    /// tile would take (`listed_slots / slot_rounds`, the lanes compaction keeps busy).
+    pub slot_rounds: u64,
     /// With [`RenderOptions::stage_times`], the wavefront kernels' milliseconds, each dispatch
     /// timed alone (`RoundsReport::stage_ms`, summed over passes); empty otherwise.
     pub stage_ms: Vec<(String, f64)>,
@@ -493,7 +499,7 @@ pub struct SceneKernels {
 
 /// Creates the kernels of `compiled` for `exec` as one set with [`Gpu::create_kernels`] (memory
 /// and disk caches, parallel creation, warm-up, per-kernel accounting in [`Kernel::report`]): the
-/// render kernel or the wavefront model's five stage kernels, and the bounds kernel when
+/// render kernel or the wavefront model's seven stage kernels, and the bounds kernel when
 /// `with_bounds` (a scene with custom geometry), every module specialised with `tables` (the
 /// same for all, so that one set of buffers serves them). Used by [`Renderer::new`] and by `rtc
 /// compile --timings driver`.
@@ -1098,6 +1104,8 @@ impl<'g> Renderer<'g> {
         let mut rays_traced = 0u64;
         let mut last_rays = 0u32;
         let mut rounds = 0u64;
+        let mut listed_slots = 0u64;
+        let mut slot_rounds = 0u64;
         let mut stage_ms: Vec<(String, f64)> = Vec::new();
         for i in 0..passes {
             let pass = self.passes_done.saturating_add(i);
@@ -1129,6 +1137,8 @@ impl<'g> Renderer<'g> {
                         &mut report,
                     )?;
                     rounds += r.rounds;
+                    listed_slots += r.running;
+                    slot_rounds += r.tile_slots;
                     for (label, ms) in &r.stage_ms {
                         crate::gpu::add_stage_ms(&mut stage_ms, label, *ms);
                     }
@@ -1237,6 +1247,8 @@ impl<'g> Renderer<'g> {
                 Kernels::Wavefront { .. } => ExecModel::Wavefront,
             },
             rounds,
+            listed_slots,
+            slot_rounds,
             stage_ms,
         })
     }

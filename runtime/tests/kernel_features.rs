@@ -444,6 +444,36 @@ fn the_wavefront_model_renders_what_the_megakernel_renders() {
     }
 }
 
+/// The wavefront model's compaction: each round's listed stages run over the slots still running
+/// and no others. `listed.rt` at 32 x 32 in 16 x 16 tiles: the left tiles' paths are one ray (the
+/// background), the right tiles' two (a mirror, then the background). A left tile takes two
+/// rounds (its 256 paths, then none), a right tile three (256, 256, none): 10 rounds, 2,560 slots
+/// over them, of which exactly 1,536 were listed. An implementation that listed idle slots (or
+/// lost running ones) would count otherwise, or change the image.
+#[test]
+fn the_listed_stages_run_over_the_running_paths_only() {
+    let Some(gpu) = gpu_or_skip("the_listed_stages_run_over_the_running_paths_only") else {
+        return;
+    };
+    let (mega, wave, stats) = both_models(&gpu, "listed", &scene("listed"), [32, 32]);
+    assert_eq!(stats.rounds, 10);
+    assert_eq!(stats.slot_rounds, 4 * 256 + 6 * 256);
+    assert_eq!(stats.listed_slots, 2 * 256 + 2 * 512);
+    assert_eq!(stats.rays_traced, 1024 + 512);
+    let off = differing(&mega, &wave, 0.0);
+    assert!(off.is_empty(), "{} pixels differ", off.len());
+    for y in 0..32 {
+        for x in 0..32 {
+            let want = if x < 16 {
+                [0.0, 0.0, 1.0]
+            } else {
+                [0.0, 0.0, 0.5]
+            };
+            assert_eq!(px(&wave, x, y), want, "pixel ({x}, {y})");
+        }
+    }
+}
+
 /// The path loop (`KernelConfig::path_loop`: no frames, a throughput, Russian roulette by it)
 /// against the back-tracking stack on the same box (`path_loop.rt`: diffuse walls, a glass and a
 /// mirror ball, an area light and a visible lamp; in scene `path_stack` the walls' material is
@@ -556,9 +586,10 @@ fn a_material_edit_recompiles_only_the_shade_stage() {
         return;
     };
     // The same scene twice, the second with one constant of its material's closest-hit code
-    // changed: of the five stage kernels only the shade stage holds closest-hit programs, so only
-    // it is created again; the other four come from the kernel set's memory cache (counted by
-    // this `Gpu`'s pipeline-creation counter, exact while other tests run).
+    // changed: of the stage kernels only the shade stage holds closest-hit programs, so only it
+    // is created again; the others come from the kernel set's memory cache (counted by this
+    // `Gpu`'s pipeline-creation counter, exact while other tests run).
+    let stages = rtc_compiler::kernel::wavefront::STAGES.len();
     let options = KernelOptions {
         exec: Some(ExecModel::Wavefront),
         ..KernelOptions::default()
@@ -574,10 +605,10 @@ fn a_material_edit_recompiles_only_the_shade_stage() {
         Default::default(),
     )
     .expect("stage kernels");
-    assert_eq!(kernels.render.len(), 5);
+    assert_eq!(kernels.render.len(), stages);
     assert_eq!(
         gpu.pipelines_created() - before,
-        5,
+        stages as u64,
         "a cold set compiles every stage"
     );
     let edited = scene("dependent_shadows")

@@ -673,6 +673,16 @@ pub fn summary(s: &RenderStats, output: &Path) -> String {
         s.traced_rays_per_second / 1e6,
         s.rays_traced
     ));
+    if s.rounds > 0 {
+        // The wavefront model: how busy compaction kept the listed stages' lanes.
+        out.push_str(&format!(
+            "    rounds: {}, running paths listed {} of the tiles' {} slots over those rounds ({:.1} %)\n",
+            s.rounds,
+            s.listed_slots,
+            s.slot_rounds,
+            100.0 * s.listed_slots as f64 / s.slot_rounds.max(1) as f64
+        ));
+    }
     if !s.stage_ms.is_empty() {
         // `RenderOptions::stage_times` (`RTC_STAGE_TIMES`): each wavefront dispatch timed alone.
         let stages: Vec<String> = s

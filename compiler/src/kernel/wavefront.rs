@@ -1,7 +1,7 @@
 //! The wavefront execution model's stage kernels and the layout of its per-path state.
 //!
 //! Beside the megakernel (`render`: one invocation traces a pixel's samples to completion), a scene
-//! can be compiled to five stage kernels (`stdlib/kernel/wavefront.rt`) that a host runs in rounds
+//! can be compiled to seven stage kernels (`stdlib/kernel/wavefront.rt`) that a host runs in rounds
 //! over one tile of pixels, each pixel owning one *path slot* in the `paths` binding:
 //!
 //! | stage | entry | does | traversal code |

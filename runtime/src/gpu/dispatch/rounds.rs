@@ -39,9 +39,9 @@ pub struct RoundKernels<'a> {
     pub round: Vec<(&'a Kernel, RoundDispatch)>,
     /// The kernel run once over a tile after its last round.
     pub finish: &'a Kernel,
-    /// The binding of the buffer holding the *running* word: zeroed before each round, set to a
-    /// non-zero value by the round's kernels while some path still runs (and holding the
-    /// indirect dispatches' workgroup counts).
+    /// The binding of the buffer holding the *running* word: zeroed before each round, set by the
+    /// round's kernels to the number of paths the round ran, non-zero while some path still runs
+    /// (and holding the indirect dispatches' workgroup counts).
     pub flag_binding: u32,
     /// The byte offset of that word (a multiple of 4).
     pub flag_offset: u64,
@@ -58,6 +58,12 @@ pub struct RoundsReport {
     pub dispatch: DispatchReport,
     /// Rounds run over all tiles (each tile's last round found nothing to do).
     pub rounds: u64,
+    /// The *running* words read after each round, summed: the paths the rounds ran (for the
+    /// wavefront model, the slots its listed stages ran over).
+    pub running: u64,
+    /// The tile's pixels summed over the same rounds: what the rounds would run over with every
+    /// slot in every round (`running / tile_slots` is the fraction of lanes that held a path).
+    pub tile_slots: u64,
     /// With [`RoundKernels::timed`]: milliseconds of each kernel (by label, in round order, the
     /// finish kernel last) over all tiles, each dispatch timed alone; empty otherwise.
     pub stage_ms: Vec<(String, f64)>,
@@ -110,6 +116,8 @@ impl TileDispatcher {
                 ..DispatchReport::default()
             },
             rounds: 0,
+            running: 0,
+            tile_slots: 0,
             stage_ms: Vec::new(),
         };
         let timed = kernels.timed;
@@ -230,8 +238,12 @@ impl TileDispatcher {
                     })?;
                 }
                 report.rounds += 1;
-                let running = map_read(gpu, &staging, 4, |bytes| bytes.iter().any(|&b| b != 0))?;
-                if !running {
+                report.tile_slots += u64::from(tile.extent[0]) * u64::from(tile.extent[1]);
+                let running = map_read(gpu, &staging, 4, |bytes| {
+                    u32::from_le_bytes([bytes[0], bytes[1], bytes[2], bytes[3]])
+                })?;
+                report.running += u64::from(running);
+                if running == 0 {
                     finished = true;
                     break;
                 }
