@@ -264,7 +264,7 @@ pub struct RenderStats {
     /// Wavefront rounds run over all tiles and passes (0 for the megakernel).
     pub rounds: u64,
     /// The running paths the wavefront rounds listed, summed over rounds, tiles and passes: the
-    /// invocations of each listed stage (camera, trace, shade) that held a path.
+    /// invocations of each listed stage (camera, trace, shade, shadow) that held a path.
     pub listed_slots: u64,
     /// The tiles' pixels summed over the same rounds: the invocations a stage run over the whole
     /// tile would take (`listed_slots / slot_rounds`, the lanes compaction keeps busy).

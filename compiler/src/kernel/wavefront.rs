@@ -6,9 +6,9 @@
 //!
 //! | stage | entry | does | traversal code |
 //! |---|---|---|---|
-//! | camera | `wf_camera` | starts the slot's next sample: seeds, calls the camera, finds the medium | only for media |
 //! | count | `wf_count` | counts the running slots of each of `COMPACT_BLOCKS` blocks of the tile | none |
 //! | compact | `wf_compact` | lists the running slots in slot order, their count and the listed stages' indirect dispatch | none |
+//! | camera | `wf_camera` | starts the slot's next sample: seeds, calls the camera, finds the medium | only for media |
 //! | trace | `wf_trace` | closest hit of the slot's pending ray (with `@intersection` and `@any_hit`); for media, first the medium a refracted ray enters when the shade stage could not tell it | one copy, and the medium probe for media |
 //! | shade | `wf_shade` | one shading step: miss, `@secondary_rays`, `@closest_hit`, `@medium`, `@light`; the next ray or the finished sample | none |
 //! | shadow | `wf_shadow` | the shadow queries the last shading step recorded | one copy |
@@ -101,8 +101,8 @@ impl Stage {
         }
     }
 
-    /// How the host dispatches the stage: over the tile, as one workgroup, or over the list of
-    /// running slots.
+    /// How the host dispatches the stage: over the tile, as a row of [`COMPACT_WORKGROUPS`]
+    /// workgroups, or over the list of running slots.
     pub fn dispatch(self) -> StageDispatch {
         match self {
             Stage::Finish => StageDispatch::Tile,
@@ -148,7 +148,7 @@ pub const TAIL_DISPATCH_OFFSET: u64 = 4;
 /// the indirect dispatch (one chunk), the blocks' counts, then the list. Each count and each
 /// listed slot takes the first word of a chunk of its own: one store with no other invocation's
 /// word beside it, and one load, where a word packed four to a chunk needs a branch for each
-/// place it can have.
+/// place it can have (literal component indices, as `paths.rt` uses).
 pub fn tail_bytes(slots: u32) -> u64 {
     (u64::from(TAIL_HEAD_CHUNKS) + u64::from(slots)) * u64::from(CHUNK_WORDS) * 4
 }
