@@ -30,6 +30,7 @@
 use crate::back::{self, BackendError, Target};
 use crate::diag::Diagnostic;
 use crate::driver::{self, Checked, Options};
+use crate::kernel::wavefront::Stage;
 use crate::kernel::{
     self, generated, wavefront, CompileFailure, CompiledScene, ExecModel, KernelOptions,
     StageKernel, BOUNDS_ENTRY, KERNEL_ROOTS, RENDER_ENTRY,
@@ -141,18 +142,30 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
     };
     let stages = if exec == ExecModel::Wavefront {
         let lowered = timings.time("lower the stage kernels", || {
-            wavefront::STAGES
-                .iter()
-                .map(|&stage| {
-                    kernel::lower_kernel(&checked, &linked, stage.root(), stage.entry()).map(
-                        |(module, bindings)| StageKernel {
-                            stage,
-                            module,
-                            bindings,
-                        },
-                    )
-                })
-                .collect::<Result<Vec<_>, _>>()
+            let mut stages = Vec::with_capacity(wavefront::STAGES.len());
+            // The shade stage comes before the shadow stage, and says whether there is one.
+            let mut shade_traces = false;
+            for stage in wavefront::STAGES {
+                let (module, bindings) = match stage {
+                    Stage::Shade => {
+                        let (module, bindings, traces) = kernel::lower_shade_stage(
+                            &checked,
+                            &linked,
+                            request.kernel.shadow_rays,
+                        )?;
+                        shade_traces = traces;
+                        (module, bindings)
+                    }
+                    Stage::Shadow if shade_traces => continue,
+                    _ => kernel::lower_kernel(&checked, &linked, stage.root(), stage.entry())?,
+                };
+                stages.push(StageKernel {
+                    stage,
+                    module,
+                    bindings,
+                });
+            }
+            Ok::<_, Box<Diagnostic>>(stages)
         });
         match lowered {
             Ok(s) => Some(s),

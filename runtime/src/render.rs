@@ -62,7 +62,7 @@ use rtc_bvh::Aabb;
 /// The BVH builder presets ([`RenderOptions::bvh`]), re-exported for callers without `rtc-bvh`.
 pub use rtc_bvh::BuildPreset;
 use rtc_compiler::abi;
-use rtc_compiler::kernel::wavefront::{self, STAGES};
+use rtc_compiler::kernel::wavefront;
 /// The execution models ([`RenderOptions::exec`]), re-exported for callers.
 pub use rtc_compiler::kernel::ExecModel;
 use rtc_compiler::kernel::{CompiledScene, BOUNDS_ENTRY, BOUNDS_WORKGROUP, RENDER_ENTRY};
@@ -324,7 +324,7 @@ pub struct Renderer<'g> {
     passes_done: u32,
 }
 
-/// The render kernel, or the wavefront model's stage kernels (in `wavefront::STAGES` order).
+/// The render kernel, or the wavefront model's stage kernels (in `wavefront::stages` order).
 #[derive(Debug)]
 enum Kernels {
     Mega(Kernel),
@@ -336,17 +336,23 @@ enum Kernels {
 }
 
 impl Kernels {
-    /// The dispatch of a wavefront pass: a round is count, compact, camera, trace, shade, shadow,
-    /// shade (`stages` in `wavefront::STAGES` order), each dispatched as its
-    /// [`wavefront::Stage::dispatch`] says.
+    /// The dispatch of a wavefront pass: a round is count, compact, camera, trace, shade, and with
+    /// a shadow stage shadow, shade (`stages` in `wavefront::stages` order), each dispatched as
+    /// its [`wavefront::Stage::dispatch`] says.
     fn rounds(
         stages: &[Kernel],
         max_rounds: u32,
         flag_offset: u64,
         timed: bool,
     ) -> Option<RoundKernels<'_>> {
-        let [count, compact, camera, trace, shade, shadow, finish] = stages else {
-            return None;
+        let (count, compact, camera, trace, shade, shadow, finish) = match stages {
+            [count, compact, camera, trace, shade, shadow, finish] => {
+                (count, compact, camera, trace, shade, Some(shadow), finish)
+            }
+            [count, compact, camera, trace, shade, finish] => {
+                (count, compact, camera, trace, shade, None, finish)
+            }
+            _ => return None,
         };
         let how = |stage: wavefront::Stage| match stage.dispatch() {
             wavefront::StageDispatch::Tile => RoundDispatch::Tile,
@@ -356,16 +362,18 @@ impl Kernels {
             }
         };
         use wavefront::Stage as S;
+        let mut round = vec![
+            (count, how(S::Count)),
+            (compact, how(S::Compact)),
+            (camera, how(S::Camera)),
+            (trace, how(S::Trace)),
+            (shade, how(S::Shade)),
+        ];
+        if let Some(shadow) = shadow {
+            round.extend([(shadow, how(S::Shadow)), (shade, how(S::Shade))]);
+        }
         Some(RoundKernels {
-            round: vec![
-                (count, how(S::Count)),
-                (compact, how(S::Compact)),
-                (camera, how(S::Camera)),
-                (trace, how(S::Trace)),
-                (shade, how(S::Shade)),
-                (shadow, how(S::Shadow)),
-                (shade, how(S::Shade)),
-            ],
+            round,
             finish,
             flag_binding: abi::binding("paths")?.binding,
             flag_offset,
@@ -377,8 +385,8 @@ impl Kernels {
 
 /// Rounds one tile of the wavefront model may take: each of a sample's rays needs a round (the
 /// tree of a sample holds at most `sum of max_spawn^d` rays for `d <= max_depth`), a shading step
-/// whose shadow queries depend on each other up to `SHADOW_QUERIES` more, and the pass one more to
-/// find that nothing runs.
+/// whose shadow queries depend on each other up to `SHADOW_QUERIES` more when the shadow stage
+/// traces them, and the pass one more to find that nothing runs.
 fn max_rounds(compiled: &CompiledScene) -> u32 {
     let c = &compiled.linked.config;
     let mut rays: u64 = 1;
@@ -389,8 +397,17 @@ fn max_rounds(compiled: &CompiledScene) -> u32 {
             rays = rays.saturating_add(level);
         }
     }
-    let per_sample =
-        rays.saturating_mul(1 + u64::from(rtc_compiler::kernel::wavefront::SHADOW_QUERIES));
+    let shadow_stage = compiled
+        .stages
+        .iter()
+        .flatten()
+        .any(|s| s.stage == wavefront::Stage::Shadow);
+    let replays = if shadow_stage {
+        u64::from(wavefront::SHADOW_QUERIES)
+    } else {
+        0
+    };
+    let per_sample = rays.saturating_mul(1 + replays);
     let rounds = per_sample
         .saturating_mul(u64::from(compiled.samples_per_pass.max(1)))
         .saturating_add(2);
@@ -488,7 +505,7 @@ fn declared_bindings(
 /// A scene's kernels, created as one set ([`create_scene_kernels`]).
 #[derive(Debug)]
 pub struct SceneKernels {
-    /// The render kernel (megakernel), or the stage kernels in `wavefront::STAGES` order.
+    /// The render kernel (megakernel), or the stage kernels in `wavefront::stages` order.
     pub render: Vec<Kernel>,
     /// The bounds kernel and the ABI bindings it declares, when it was asked for.
     pub bounds: Option<(Kernel, Vec<&'static abi::BindingDesc>)>,
@@ -499,7 +516,7 @@ pub struct SceneKernels {
 
 /// Creates the kernels of `compiled` for `exec` as one set with [`Gpu::create_kernels`] (memory
 /// and disk caches, parallel creation, warm-up, per-kernel accounting in [`Kernel::report`]): the
-/// render kernel or the wavefront model's seven stage kernels, and the bounds kernel when
+/// render kernel or the wavefront model's stage kernels (six or seven), and the bounds kernel when
 /// `with_bounds` (a scene with custom geometry), every module specialised with `tables` (the
 /// same for all, so that one set of buffers serves them). Used by [`Renderer::new`] and by `rtc
 /// compile --timings driver`.
@@ -533,7 +550,12 @@ pub fn create_scene_kernels(
                 .stages
                 .as_ref()
                 .ok_or(RenderError::NoStageKernels)?;
-            if stages.iter().map(|s| s.stage).ne(STAGES) {
+            let shadow_stage = stages.iter().any(|s| s.stage == wavefront::Stage::Shadow);
+            if stages
+                .iter()
+                .map(|s| s.stage)
+                .ne(wavefront::stages(shadow_stage))
+            {
                 return Err(RenderError::NoStageKernels);
             }
             for s in stages {

@@ -16,8 +16,9 @@
 //!   a ray through a shared edge may take either triangle).
 //!
 //! - the wavefront execution model against the megakernel, on every scene of the suite in small
-//!   tiles (bit-identical on lavapipe), on a shading step whose second shadow query depends on the
-//!   first answer (replayed until exact), and past the shadow queries one step records (warned).
+//!   tiles (bit-identical on lavapipe), with its shadow rays traced in the shadow stage and in the
+//!   shade stage (then the same rays counted); on a shading step whose second shadow query depends on
+//!   the first answer (replayed until exact), and past the shadow queries one step records (warned).
 //! - a `@light` program whose shadow queries depend on each other's answers: the megakernel defers
 //!   them to `sample_light` and runs the program again until every answer is known, so it must
 //!   give the wavefront model's image pixel for pixel; past `LIGHT_QUERIES` queries in one light
@@ -35,6 +36,7 @@ use common::image::{PixelCheck, Tolerance};
 use common::scene::SceneFile;
 use common::{gpu_or_skip, temp_dir};
 
+use rtc_compiler::kernel::ShadowRays;
 use rtc_runtime::gpu::Gpu;
 use rtc_runtime::image_out::LinearImage;
 use rtc_runtime::render::RenderOptions;
@@ -213,14 +215,32 @@ fn compile_with_stages(
     file: &SceneFile,
     dir: &std::path::Path,
 ) -> rtc_compiler::kernel::CompiledScene {
+    compile_with_stages_placing(file, dir, ShadowRays::Stage)
+}
+
+/// The scene's stage kernels with its shadow rays traced where `shadow_rays` says (the tests of
+/// the replay use the shadow stage, [`compile_with_stages`], whatever the scene would choose).
+fn compile_with_stages_placing(
+    file: &SceneFile,
+    dir: &std::path::Path,
+    shadow_rays: ShadowRays,
+) -> rtc_compiler::kernel::CompiledScene {
     use rtc_compiler::kernel::{ExecModel, KernelOptions};
-    file.compile_with(
+    let compiled = file.compile_with(
         dir,
         &KernelOptions {
             exec: Some(ExecModel::Wavefront),
+            shadow_rays,
             ..KernelOptions::default()
         },
-    )
+    );
+    let shadow_stage = compiled
+        .stages
+        .iter()
+        .flatten()
+        .any(|s| s.stage == rtc_compiler::kernel::wavefront::Stage::Shadow);
+    assert_eq!(shadow_stage, shadow_rays == ShadowRays::Stage);
+    compiled
 }
 
 /// Renders `file` with both execution models, in 16 × 16 tiles (so a size that is not a multiple
@@ -232,10 +252,21 @@ fn both_models(
     file: &SceneFile,
     size: [u32; 2],
 ) -> (LinearImage, LinearImage, rtc_runtime::render::RenderStats) {
+    both_models_placing(gpu, name, file, size, ShadowRays::Stage)
+}
+
+/// [`both_models`], with the wavefront model's shadow rays traced where `shadow_rays` says.
+fn both_models_placing(
+    gpu: &Gpu,
+    name: &str,
+    file: &SceneFile,
+    size: [u32; 2],
+    shadow_rays: ShadowRays,
+) -> (LinearImage, LinearImage, rtc_runtime::render::RenderStats) {
     use rtc_compiler::kernel::ExecModel;
     use rtc_runtime::gpu::TileConfig;
     let dir = temp_dir("features", name);
-    let compiled = compile_with_stages(file, &dir);
+    let compiled = compile_with_stages_placing(file, &dir, shadow_rays);
     let options = |exec| RenderOptions {
         size: Some(size),
         samples: Some(1),
@@ -247,7 +278,7 @@ fn both_models(
         exec: Some(exec),
         ..RenderOptions::default()
     };
-    let (mega, _) = common::scene::render(
+    let (mega, mega_stats) = common::scene::render(
         gpu,
         &compiled,
         options(ExecModel::Megakernel),
@@ -261,6 +292,14 @@ fn both_models(
     );
     assert_eq!(stats.exec, ExecModel::Wavefront);
     assert!(stats.rounds > 0, "{name}: no wavefront round ran");
+    // A shade stage that traces its shadow rays traces the megakernel's rays, each counted once
+    // (the shadow stage traces a replayed step's discarded queries too, and none past the limit).
+    if shadow_rays == ShadowRays::Shade {
+        assert_eq!(
+            stats.rays_traced, mega_stats.rays_traced,
+            "{name}: rays traced"
+        );
+    }
     let _ = std::fs::remove_dir_all(&dir);
     (mega, wave, stats)
 }
@@ -414,8 +453,9 @@ fn the_wavefront_model_renders_what_the_megakernel_renders() {
     // inside, custom geometry walking its BVH), and shadow rays through fog, at 40 x 28 in 16 x 16
     // tiles. The two models run the same operations in the same order, so on lavapipe the images
     // are bit-identical; the tolerance (1e-5 absolute on values of order 1) leaves room for
-    // another driver contracting differently in two kernels.
-    for (name, file) in [
+    // another driver contracting differently in two kernels. Both ways of tracing the wavefront
+    // model's shadow rays: in the shadow stage (replayed) and in the shade stage.
+    let scenes = [
         ("cut_out", scene("cut_out").set("SIDE", "40u")),
         ("shadows", scene("shadows").set("SIDE", "40u")),
         ("nested_media", scene("nested_media")),
@@ -432,15 +472,18 @@ fn the_wavefront_model_renders_what_the_megakernel_renders() {
             "fog_shadow_inside",
             SceneFile::open("materials/fog_shadow.rt").scene("inside"),
         ),
-    ] {
-        let (mega, wave, _) = both_models(&gpu, name, &file, [40, 28]);
-        let off = differing(&mega, &wave, 1e-5);
-        assert!(
-            off.is_empty(),
-            "{name}: {} pixels differ between the models, first {:?}",
-            off.len(),
-            &off[..off.len().min(8)]
-        );
+    ];
+    for (name, file) in scenes {
+        for shadow_rays in [ShadowRays::Stage, ShadowRays::Shade] {
+            let (mega, wave, _) = both_models_placing(&gpu, name, &file, [40, 28], shadow_rays);
+            let off = differing(&mega, &wave, 1e-5);
+            assert!(
+                off.is_empty(),
+                "{name} ({shadow_rays:?}): {} pixels differ between the models, first {:?}",
+                off.len(),
+                &off[..off.len().min(8)]
+            );
+        }
     }
 }
 
@@ -589,13 +632,14 @@ fn a_material_edit_recompiles_only_the_shade_stage() {
     // changed: of the stage kernels only the shade stage holds closest-hit programs, so only it
     // is created again; the others come from the kernel set's memory cache (counted by this
     // `Gpu`'s pipeline-creation counter, exact while other tests run).
-    let stages = rtc_compiler::kernel::wavefront::STAGES.len();
     let options = KernelOptions {
         exec: Some(ExecModel::Wavefront),
         ..KernelOptions::default()
     };
     let dir = temp_dir("features", "material_edit");
     let first = scene("dependent_shadows").compile_with(&dir, &options);
+    let stages = first.stages.as_ref().map_or(0, Vec::len);
+    assert!(stages >= 6, "{stages} stage kernels");
     let before = gpu.pipelines_created();
     let kernels = rtc_runtime::render::create_scene_kernels(
         &gpu,

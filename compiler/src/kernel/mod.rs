@@ -147,6 +147,22 @@ pub struct KernelOptions {
     /// (`rtc render` sets it for a small render there; docs/bench/compile.md, "Which model
     /// compiles faster, with uniform tables (2026-12-04)"). 0: no bound.
     pub wavefront_min_weight: u64,
+    /// Where the wavefront model traces the shadow rays of a shading step.
+    pub shadow_rays: ShadowRays,
+}
+
+/// Where the wavefront model traces the shadow rays (`shadow(…)` calls) of a shading step
+/// ([`lower_shade_stage`]; `kernel::wavefront` explains both ways).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum ShadowRays {
+    /// In the shade stage when it then holds at most [`wavefront::MAX_SHADE_TRAVERSALS`] copies of
+    /// the traversal, else in the shadow stage.
+    #[default]
+    Auto,
+    /// In the shade stage, where they are made (the scene has no shadow stage).
+    Shade,
+    /// In the shadow stage: the shade stage records them and replays the step.
+    Stage,
 }
 
 /// The most triangles of built-in meshes a scene may have for [`small_built_in_geometry`]: its
@@ -350,11 +366,50 @@ pub type Bindings = Vec<&'static BindingDesc>;
 /// programs, dispatchers, loaders and bindings the scene uses, wraps it in the compute entry point
 /// `entry` ([`RENDER_ENTRY`] or [`BOUNDS_ENTRY`]), validates and compacts the module. Returns it with
 /// the bindings it declares; a failure is an internal error, as a diagnostic.
+///
+/// The wavefront model's shade stage is lowered with its `shadow` calls replayed (the shadow
+/// stage traces them); [`lower_shade_stage`] chooses.
 pub fn lower_kernel(
     checked: &Checked,
     linked: &Linked,
     root: &str,
     entry: &str,
+) -> Result<(naga::Module, Bindings), Box<Diagnostic>> {
+    let replay_shadows = entry == wavefront::Stage::Shade.entry();
+    lower_kernel_with(checked, linked, root, entry, replay_shadows)
+}
+
+/// The wavefront model's shade stage, and whether it traces its own shadow rays (then the scene
+/// has no shadow stage): with `placement` [`ShadowRays::Auto`], when it then holds at most
+/// [`wavefront::MAX_SHADE_TRAVERSALS`] copies of the traversal ([`weight::inlined_copies`]), else
+/// it replays them (lowered a second time).
+pub fn lower_shade_stage(
+    checked: &Checked,
+    linked: &Linked,
+    placement: ShadowRays,
+) -> Result<(naga::Module, Bindings, bool), Box<Diagnostic>> {
+    let stage = wavefront::Stage::Shade;
+    if placement != ShadowRays::Stage {
+        let (module, bindings) =
+            lower_kernel_with(checked, linked, stage.root(), stage.entry(), false)?;
+        let copies = weight::inlined_copies(&module, stage.entry(), wavefront::TRAVERSAL_FN)
+            .unwrap_or(u64::MAX);
+        if placement == ShadowRays::Shade || copies <= wavefront::MAX_SHADE_TRAVERSALS {
+            return Ok((module, bindings, true));
+        }
+    }
+    let (module, bindings) = lower_kernel_with(checked, linked, stage.root(), stage.entry(), true)?;
+    Ok((module, bindings, false))
+}
+
+/// [`lower_kernel`], with `shadow` calls replayed (`shadow_replay`, the wavefront model's shade
+/// stage) or traced where they are made.
+fn lower_kernel_with(
+    checked: &Checked,
+    linked: &Linked,
+    root: &str,
+    entry: &str,
+    replay_shadows: bool,
 ) -> Result<(naga::Module, Bindings), Box<Diagnostic>> {
     let Some(program) = checked.program.as_ref() else {
         return Err(Box::new(Diagnostic::error(
@@ -363,7 +418,14 @@ pub fn lower_kernel(
             crate::source::Span::default(),
         )));
     };
-    let lowered = lower_entry(program, &checked.sources, linked, root, entry);
+    let lowered = lower_entry(
+        program,
+        &checked.sources,
+        linked,
+        root,
+        entry,
+        replay_shadows,
+    );
     match lowered {
         Ok((mut module, bindings)) => {
             // Compaction drops types and constants nothing uses, so outputs (and their snapshots)
@@ -381,6 +443,7 @@ fn lower_entry(
     linked: &Linked,
     root: &str,
     entry: &str,
+    replay_shadows: bool,
 ) -> Result<(naga::Module, Bindings), LowerError> {
     let root = intrinsics::kernel_fn(program, root)?;
     let mut hooks = KernelHooks {
@@ -388,7 +451,7 @@ fn lower_entry(
         linked,
         config: linked.config,
         generated: dispatch::Generated::default(),
-        replay_shadows: entry == wavefront::Stage::Shade.entry(),
+        replay_shadows,
     };
     let build_entry = |cx: &mut crate::lower::Lowerer<'_>,
                        roots: &[naga::Handle<naga::Function>]| {

@@ -11,16 +11,23 @@
 //! | camera | `wf_camera` | starts the slot's next sample: seeds, calls the camera, finds the medium | only for media |
 //! | trace | `wf_trace` | closest hit of the slot's pending ray (with `@intersection` and `@any_hit`); for media, first the medium a refracted ray enters when the shade stage could not tell it | one copy, and the medium probe for media |
 //! | shade | `wf_shade` | one shading step: miss, `@secondary_rays`, `@closest_hit`, `@medium`, `@light`; the next ray or the finished sample | none |
-//! | shadow | `wf_shadow` | the shadow queries the last shading step recorded | one copy |
+//! | shadow | `wf_shadow` | the shadow queries the last shading step recorded (only in a scene whose shade stage replays them) | one copy |
 //! | finish | `wf_finish` | adds the pass's samples to `accum` and resets the slot | none |
 //!
-//! A round is count, compact, camera, trace, shade, shadow, shade. The count and compact stages
+//! A round is count, compact, camera, trace, shade, and, when the scene has a shadow stage,
+//! shadow, shade. The count and compact stages
 //! run over the tile as a few workgroups, one invocation a block of slots, and list the slots still
 //! running; the other stages of the round run over that *list*, through an indirect dispatch of as
 //! many workgroups as it needs: once some paths have ended (Russian roulette, misses), the lanes of
 //! those stages still all hold a running path, and a round costs what its running paths cost. The
-//! finish stage runs over the tile. `shadow(…)` in the shade stage does not trace:
-//! it is *replayed* (`shadow_replay` in `stdlib/kernel/paths.rt`). The first run of a shading step
+//! finish stage runs over the tile.
+//!
+//! Shadow rays: where the shading step's `shadow(…)` calls, with every call inlined as a driver
+//! inlines them, reach the traversal at most [`MAX_SHADE_TRAVERSALS`] times, the shade stage traces
+//! them where they are made, as the megakernel does (the same random numbers too), and the scene
+//! has no shadow stage: a step runs once. Otherwise each call site would be one more copy of the
+//! traversal to compile, and `shadow(…)` in the shade stage does not trace:
+//! it is *replayed* (`shadow_replay` in `stdlib/kernel/trace.rt`). The first run of a shading step
 //! records each query it makes and answers "unoccluded"; the shadow stage traces the recorded
 //! queries; the step then runs again from the same saved state (same random numbers), and each query
 //! that equals a recorded one bit for bit gets its traced answer. Only a step whose every query was
@@ -43,8 +50,10 @@
 
 use crate::link::KernelConfig;
 
-/// The stage kernels, in the order a round runs them (the shade stage runs twice a round) and
-/// their kernel functions in `stdlib/kernel/wavefront.rt`.
+/// The stage kernels, in the order a round runs them (the shade stage runs twice a round when
+/// the shadow stage is there) and their kernel functions in `stdlib/kernel/wavefront.rt`. A scene
+/// whose shade stage traces its shadow rays has every stage but [`Stage::Shadow`]
+/// ([`stages`]).
 pub const STAGES: [Stage; 7] = [
     Stage::Count,
     Stage::Compact,
@@ -54,6 +63,25 @@ pub const STAGES: [Stage; 7] = [
     Stage::Shadow,
     Stage::Finish,
 ];
+
+/// The stage kernels of a scene, in [`STAGES`] order: all of them with a shadow stage, else all
+/// but [`Stage::Shadow`].
+pub fn stages(shadow_stage: bool) -> impl Iterator<Item = Stage> {
+    STAGES
+        .into_iter()
+        .filter(move |&s| shadow_stage || s != Stage::Shadow)
+}
+
+/// The most copies of the traversal ([`TRAVERSAL_FN`]) the shade stage may hold, every call
+/// inlined, to trace its shadow rays itself ([`super::ShadowRays::Auto`]). One: the shadow stage's
+/// own copy moves into it, so the scene's compile stays what it was (the stage kernels of
+/// thesis_scene and cornell_path compile in about the same time, docs/bench/compile.md), while a
+/// second copy would cost a traversal's compile (gltf_scene's shade stage, two copies: 1.6 s
+/// against 0.68 s with lavapipe's quick JIT).
+pub const MAX_SHADE_TRAVERSALS: u64 = 1;
+
+/// The kernel function that traverses the scene, in `stdlib/kernel/trace.rt`.
+pub const TRAVERSAL_FN: &str = "intersect_scene";
 
 /// One stage kernel of the wavefront model.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -281,8 +309,11 @@ mod tests {
 
     /// Every example's stage kernels: lowered and validated, each within WebGPU's default 8
     /// storage buffers; only the trace and shadow stages (and, for scenes with media, the camera
-    /// stage, whose medium lookup probes objects) read BVH nodes; the shade stage never declares
-    /// `accum`, and only the finish stage does.
+    /// stage, whose medium lookup probes objects, and a shade stage that traces its shadow rays)
+    /// read BVH nodes; only the finish stage declares `accum`. The shade stage traces its shadow
+    /// rays, and the scene has no shadow stage, exactly when that holds at most
+    /// `MAX_SHADE_TRAVERSALS` traversals (counted here on the shade stage lowered that way); the
+    /// examples take both ways.
     #[test]
     fn every_example_has_stage_kernels_within_the_default_limits() {
         let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples");
@@ -295,6 +326,8 @@ mod tests {
             .collect();
         names.sort();
         assert!(names.len() >= 10, "{names:?}");
+        // Examples without a shadow stage, and with one.
+        let mut placements = [0u32; 2];
         for path in names {
             let compiled = compile_scene_with(
                 std::slice::from_ref(&path),
@@ -314,10 +347,28 @@ mod tests {
                 )
             });
             let stages = compiled.stages.as_ref().expect("stage kernels");
+            let shadow_stage = stages.iter().any(|s| s.stage == Stage::Shadow);
             assert_eq!(
                 stages.iter().map(|s| s.stage).collect::<Vec<_>>(),
-                STAGES.to_vec()
+                super::stages(shadow_stage).collect::<Vec<_>>()
             );
+            let (inline, _, traces) = crate::kernel::lower_shade_stage(
+                &compiled.checked,
+                &compiled.linked,
+                crate::kernel::ShadowRays::Shade,
+            )
+            .expect("the shade stage, tracing");
+            assert!(traces);
+            let copies =
+                crate::kernel::weight::inlined_copies(&inline, Stage::Shade.entry(), TRAVERSAL_FN)
+                    .expect("the entry point");
+            assert_eq!(
+                shadow_stage,
+                copies > MAX_SHADE_TRAVERSALS,
+                "{}: {copies} traversals",
+                path.display()
+            );
+            placements[usize::from(shadow_stage)] += 1;
             let media = compiled.linked.config.has_media;
             for s in stages {
                 let names: Vec<&str> = s.bindings.iter().map(|b| b.name).collect();
@@ -343,7 +394,10 @@ mod tests {
                     // The camera stage finds the medium a camera ray starts in; the shade stage
                     // leaves every probe to the trace stage (`MEDIUM_PROBE`), so holds no BVH.
                     Stage::Camera => assert_eq!(nodes, media, "{:?}", s.stage),
-                    Stage::Shade => assert!(!nodes, "{:?}", s.stage),
+                    // A shade stage holds a traversal only to trace shadow rays.
+                    Stage::Shade => {
+                        assert!(!nodes || !shadow_stage, "{}: {:?}", path.display(), s.stage)
+                    }
                     Stage::Finish => assert!(!nodes),
                 }
                 assert_eq!(names.contains(&"accum"), s.stage == Stage::Finish);
@@ -351,6 +405,28 @@ mod tests {
                 assert_eq!(s.module.entry_points[0].name, s.stage.entry());
             }
         }
+        assert!(
+            placements.iter().all(|&n| n > 0),
+            "examples without a shadow stage, and with one: {placements:?}"
+        );
+    }
+
+    #[test]
+    fn inlined_copies_count_every_call_site_of_every_caller() {
+        let m = naga::front::wgsl::parse_str(
+            "fn t(x: f32) -> f32 { return x; }
+             fn s(x: f32) -> f32 { return t(x) + t(x * 2.0); }
+             @compute @workgroup_size(1) fn main() { var a = s(1.0) + s(2.0) + t(3.0); }",
+        )
+        .expect("valid WGSL");
+        let copies = |name| crate::kernel::weight::inlined_copies(&m, "main", name);
+        assert_eq!(copies("t"), Some(5));
+        assert_eq!(copies("s"), Some(2));
+        assert_eq!(copies("u"), Some(0));
+        assert_eq!(
+            crate::kernel::weight::inlined_copies(&m, "nothing", "t"),
+            None
+        );
     }
 
     #[test]

@@ -24,6 +24,31 @@ pub fn inlined_weight(module: &Module, entry: &str) -> Option<u64> {
     Some(weight_of(&entry_point.function, &weights))
 }
 
+/// How many copies of the function named `name` the entry point `entry` of `module` holds with
+/// every call inlined (a traversal called from two places, each called twice, is four copies);
+/// `None` when the module has no such entry point.
+pub fn inlined_copies(module: &Module, entry: &str, name: &str) -> Option<u64> {
+    let entry_point = module.entry_points.iter().find(|e| e.name == entry)?;
+    let mut copies: Vec<u64> = Vec::with_capacity(module.functions.len());
+    let count = |function: &Function, copies: &[u64]| {
+        let mut total = 0u64;
+        for_each_call(&function.body, |callee| {
+            let n = if module.functions[callee].name.as_deref() == Some(name) {
+                1
+            } else {
+                copies.get(callee.index()).copied().unwrap_or(0)
+            };
+            total = total.saturating_add(n);
+        });
+        total
+    };
+    for (_, function) in module.functions.iter() {
+        let n = count(function, &copies);
+        copies.push(n);
+    }
+    Some(count(&entry_point.function, &copies))
+}
+
 /// `function`'s own expressions plus the weight of every call it makes (a callee not yet measured,
 /// which a validated module cannot have, counts as nothing).
 fn weight_of(function: &Function, weights: &[u64]) -> u64 {

@@ -1829,18 +1829,19 @@ LightSample sample_light_deferred(
             if (_e108 == (_e109 + 1u)) {
                 uint _e113 = after;
                 rng_state = _e113;
+                scratch.inner[metal::min(SCRATCH_PENDING, 24u)] = 0u;
                 return _e60;
             }
-            uint _e115 = bits_1;
-            uint _e117 = resolved;
-            bits_1 = _e115 | (1u << (_e117 & 31u));
+            uint _e121 = bits_1;
+            uint _e123 = resolved;
+            bits_1 = _e121 | (1u << (_e123 & 31u));
         }
-        uint _e122 = resolved;
-        resolved = _e122 + 1u;
-        uint _e126 = bits_1;
-        scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 24u)] = _e126;
-        uint _e132 = resolved;
-        scratch.inner[metal::min(SCRATCH_RESOLVED, 24u)] = _e132;
+        uint _e128 = resolved;
+        resolved = _e128 + 1u;
+        uint _e132 = bits_1;
+        scratch.inner[metal::min(SCRATCH_LIGHT_BITS, 24u)] = _e132;
+        uint _e138 = resolved;
+        scratch.inner[metal::min(SCRATCH_RESOLVED, 24u)] = _e138;
     }
     return LightSample {};
 }

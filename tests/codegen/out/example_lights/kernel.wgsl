@@ -1434,18 +1434,19 @@ fn sample_light_deferred(i_4: u32, position_8: vec3<f32>, normal_9: vec3<f32>) -
             if (_e108 == (_e109 + 1u)) {
                 let _e113 = after;
                 rng_state = _e113;
+                scratch[min(SCRATCH_PENDING, 24u)] = 0u;
                 return _e60;
             }
-            let _e115 = bits_1;
-            let _e117 = resolved;
-            bits_1 = (_e115 | (1u << (_e117 & 31u)));
+            let _e121 = bits_1;
+            let _e123 = resolved;
+            bits_1 = (_e121 | (1u << (_e123 & 31u)));
         }
-        let _e122 = resolved;
-        resolved = (_e122 + 1u);
-        let _e126 = bits_1;
-        scratch[min(SCRATCH_LIGHT_BITS, 24u)] = _e126;
-        let _e132 = resolved;
-        scratch[min(SCRATCH_RESOLVED, 24u)] = _e132;
+        let _e128 = resolved;
+        resolved = (_e128 + 1u);
+        let _e132 = bits_1;
+        scratch[min(SCRATCH_LIGHT_BITS, 24u)] = _e132;
+        let _e138 = resolved;
+        scratch[min(SCRATCH_RESOLVED, 24u)] = _e138;
     }
     return LightSample();
 }

@@ -1280,18 +1280,19 @@ LightSample sample_light_deferred(uint i_4, vec3 position_6, vec3 normal_7) {
             if ((_e108 == (_e109 + 1u))) {
                 uint _e113 = after;
                 rng_state = _e113;
+                scratch[min(SCRATCH_PENDING, 24u)] = 0u;
                 return _e60;
             }
-            uint _e115 = bits_1;
-            uint _e117 = resolved;
-            bits_1 = (_e115 | (1u << (_e117 & 31u)));
+            uint _e121 = bits_1;
+            uint _e123 = resolved;
+            bits_1 = (_e121 | (1u << (_e123 & 31u)));
         }
-        uint _e122 = resolved;
-        resolved = (_e122 + 1u);
-        uint _e126 = bits_1;
-        scratch[min(SCRATCH_LIGHT_BITS, 24u)] = _e126;
-        uint _e132 = resolved;
-        scratch[min(SCRATCH_RESOLVED, 24u)] = _e132;
+        uint _e128 = resolved;
+        resolved = (_e128 + 1u);
+        uint _e132 = bits_1;
+        scratch[min(SCRATCH_LIGHT_BITS, 24u)] = _e132;
+        uint _e138 = resolved;
+        scratch[min(SCRATCH_RESOLVED, 24u)] = _e138;
     }
     return LightSample(vec3(0.0), 0.0, vec3(0.0), 0.0);
 }
