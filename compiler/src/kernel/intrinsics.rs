@@ -520,6 +520,9 @@ impl KernelHooks<'_> {
                 );
                 return Ok(None);
             }
+            // A shade stage that replays its shadow rays traces none: its count is 0, a literal
+            // (a load of the never-written counter measurably slowed pbr_path's shade stage).
+            I::RayCountLoad if self.replay_shadows => lit_u32(fb, 0),
             I::RayCountLoad => {
                 let g = self.ray_count(cx);
                 let p = fb.expr(Expression::GlobalVariable(g), span);
