@@ -397,12 +397,7 @@ fn max_rounds(compiled: &CompiledScene) -> u32 {
             rays = rays.saturating_add(level);
         }
     }
-    let shadow_stage = compiled
-        .stages
-        .iter()
-        .flatten()
-        .any(|s| s.stage == wavefront::Stage::Shadow);
-    let replays = if shadow_stage {
+    let replays = if compiled.has_shadow_stage() {
         u64::from(wavefront::SHADOW_QUERIES)
     } else {
         0
@@ -550,11 +545,10 @@ pub fn create_scene_kernels(
                 .stages
                 .as_ref()
                 .ok_or(RenderError::NoStageKernels)?;
-            let shadow_stage = stages.iter().any(|s| s.stage == wavefront::Stage::Shadow);
             if stages
                 .iter()
                 .map(|s| s.stage)
-                .ne(wavefront::stages(shadow_stage))
+                .ne(wavefront::stages(compiled.has_shadow_stage()))
             {
                 return Err(RenderError::NoStageKernels);
             }

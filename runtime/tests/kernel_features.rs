@@ -234,12 +234,10 @@ fn compile_with_stages_placing(
             ..KernelOptions::default()
         },
     );
-    let shadow_stage = compiled
-        .stages
-        .iter()
-        .flatten()
-        .any(|s| s.stage == rtc_compiler::kernel::wavefront::Stage::Shadow);
-    assert_eq!(shadow_stage, shadow_rays == ShadowRays::Stage);
+    assert_eq!(
+        compiled.has_shadow_stage(),
+        shadow_rays == ShadowRays::Stage
+    );
     compiled
 }
 

@@ -55,6 +55,17 @@ pub struct CompiledScene {
     pub timings: Vec<(&'static str, f64)>,
 }
 
+impl CompiledScene {
+    /// Whether its wavefront stage kernels include the shadow stage (the shade stage replays its
+    /// shadow rays, [`lower_shade_stage`]); false without stage kernels.
+    pub fn has_shadow_stage(&self) -> bool {
+        self.stages
+            .iter()
+            .flatten()
+            .any(|s| s.stage == wavefront::Stage::Shadow)
+    }
+}
+
 /// One stage kernel of the wavefront model.
 #[derive(Debug)]
 pub struct StageKernel {

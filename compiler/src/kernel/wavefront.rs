@@ -347,7 +347,7 @@ mod tests {
                 )
             });
             let stages = compiled.stages.as_ref().expect("stage kernels");
-            let shadow_stage = stages.iter().any(|s| s.stage == Stage::Shadow);
+            let shadow_stage = compiled.has_shadow_stage();
             assert_eq!(
                 stages.iter().map(|s| s.stage).collect::<Vec<_>>(),
                 super::stages(shadow_stage).collect::<Vec<_>>()
@@ -408,24 +408,6 @@ mod tests {
         assert!(
             placements.iter().all(|&n| n > 0),
             "examples without a shadow stage, and with one: {placements:?}"
-        );
-    }
-
-    #[test]
-    fn inlined_copies_count_every_call_site_of_every_caller() {
-        let m = naga::front::wgsl::parse_str(
-            "fn t(x: f32) -> f32 { return x; }
-             fn s(x: f32) -> f32 { return t(x) + t(x * 2.0); }
-             @compute @workgroup_size(1) fn main() { var a = s(1.0) + s(2.0) + t(3.0); }",
-        )
-        .expect("valid WGSL");
-        let copies = |name| crate::kernel::weight::inlined_copies(&m, "main", name);
-        assert_eq!(copies("t"), Some(5));
-        assert_eq!(copies("s"), Some(2));
-        assert_eq!(copies("u"), Some(0));
-        assert_eq!(
-            crate::kernel::weight::inlined_copies(&m, "nothing", "t"),
-            None
         );
     }
 

@@ -13,51 +13,58 @@ use naga::{Block, Function, Handle, Module, Statement};
 /// The expressions of the entry point `entry` of `module` with every call inlined; `None` when the
 /// module has no such entry point.
 pub fn inlined_weight(module: &Module, entry: &str) -> Option<u64> {
-    let entry_point = module.entry_points.iter().find(|e| e.name == entry)?;
-    // A validated module calls only functions declared before the caller, so one pass in arena
-    // order sees every callee's weight before its callers need it.
-    let mut weights: Vec<u64> = Vec::with_capacity(module.functions.len());
-    for (_, function) in module.functions.iter() {
-        let w = weight_of(function, &weights);
-        weights.push(w);
-    }
-    Some(weight_of(&entry_point.function, &weights))
+    inlined_sum(
+        module,
+        entry,
+        |function| function.expressions.len() as u64,
+        |_, callee_sum| callee_sum,
+    )
 }
 
 /// How many copies of the function named `name` the entry point `entry` of `module` holds with
 /// every call inlined (a traversal called from two places, each called twice, is four copies);
 /// `None` when the module has no such entry point.
 pub fn inlined_copies(module: &Module, entry: &str, name: &str) -> Option<u64> {
-    let entry_point = module.entry_points.iter().find(|e| e.name == entry)?;
-    let mut copies: Vec<u64> = Vec::with_capacity(module.functions.len());
-    let count = |function: &Function, copies: &[u64]| {
-        let mut total = 0u64;
-        for_each_call(&function.body, |callee| {
-            let n = if module.functions[callee].name.as_deref() == Some(name) {
+    inlined_sum(
+        module,
+        entry,
+        |_| 0,
+        |callee, callee_sum| {
+            if module.functions[callee].name.as_deref() == Some(name) {
                 1
             } else {
-                copies.get(callee.index()).copied().unwrap_or(0)
-            };
-            total = total.saturating_add(n);
+                callee_sum
+            }
+        },
+    )
+}
+
+/// A sum over the entry point `entry` of `module` with every call inlined: each function counts
+/// `own(function)` plus, for every call it makes, `call(callee, the callee's sum)` (a callee not
+/// yet summed, which a validated module cannot have, counts as 0); `None` without that entry.
+fn inlined_sum(
+    module: &Module,
+    entry: &str,
+    own: impl Fn(&Function) -> u64,
+    call: impl Fn(Handle<Function>, u64) -> u64,
+) -> Option<u64> {
+    let entry_point = module.entry_points.iter().find(|e| e.name == entry)?;
+    let sum_of = |function: &Function, sums: &[u64]| {
+        let mut total = own(function);
+        for_each_call(&function.body, |callee| {
+            let callee_sum = sums.get(callee.index()).copied().unwrap_or(0);
+            total = total.saturating_add(call(callee, callee_sum));
         });
         total
     };
+    // A validated module calls only functions declared before the caller, so one pass in arena
+    // order sees every callee's sum before its callers need it.
+    let mut sums: Vec<u64> = Vec::with_capacity(module.functions.len());
     for (_, function) in module.functions.iter() {
-        let n = count(function, &copies);
-        copies.push(n);
+        let n = sum_of(function, &sums);
+        sums.push(n);
     }
-    Some(count(&entry_point.function, &copies))
-}
-
-/// `function`'s own expressions plus the weight of every call it makes (a callee not yet measured,
-/// which a validated module cannot have, counts as nothing).
-fn weight_of(function: &Function, weights: &[u64]) -> u64 {
-    let mut total = function.expressions.len() as u64;
-    for_each_call(&function.body, |callee| {
-        let w = weights.get(callee.index()).copied().unwrap_or(0);
-        total = total.saturating_add(w);
-    });
-    total
+    Some(sum_of(&entry_point.function, &sums))
 }
 
 /// Calls `visit` with the callee of every call statement in `block` and the blocks nested in it.
@@ -124,5 +131,19 @@ mod tests {
         let w = inlined_weight(&m, "main").expect("entry");
         assert!(w >= 6 * g, "weight {w}, g = {g}");
         assert_eq!(inlined_weight(&m, "nothing"), None);
+    }
+
+    #[test]
+    fn inlined_copies_count_every_call_site_of_every_caller() {
+        let m = module(
+            "fn t(x: f32) -> f32 { return x; }
+             fn s(x: f32) -> f32 { return t(x) + t(x * 2.0); }
+             @compute @workgroup_size(1) fn main() { var a = s(1.0) + s(2.0) + t(3.0); }",
+        );
+        let copies = |name| inlined_copies(&m, "main", name);
+        assert_eq!(copies("t"), Some(5));
+        assert_eq!(copies("s"), Some(2));
+        assert_eq!(copies("u"), Some(0));
+        assert_eq!(inlined_copies(&m, "nothing", "t"), None);
     }
 }
