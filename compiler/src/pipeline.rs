@@ -141,6 +141,21 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
         None => ExecModel::resolve(request.kernel.exec, setting, request.kernel.auto),
     };
     let stages = if exec == ExecModel::Wavefront {
+        let shadow_rays = match request.kernel.shadow_rays {
+            kernel::ShadowRays::Auto => {
+                let own = checked.program.as_ref().map_or(0, |p| {
+                    let s = &p.scenes[scene].settings;
+                    u64::from(s.width) * u64::from(s.height) * u64::from(s.samples)
+                });
+                let samples = request.kernel.render_samples.unwrap_or(own);
+                if samples > wavefront::SHADE_REPLAY_MIN_SAMPLES {
+                    kernel::ShadowRays::AutoFastFrames
+                } else {
+                    kernel::ShadowRays::AutoFastCompile
+                }
+            }
+            placement => placement,
+        };
         let lowered = timings.time("lower the stage kernels", || {
             let mut stages = Vec::with_capacity(wavefront::STAGES.len());
             // The shade stage comes before the shadow stage, and says whether there is one.
@@ -148,11 +163,8 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
             for stage in wavefront::STAGES {
                 let (module, bindings) = match stage {
                     Stage::Shade => {
-                        let (module, bindings, traces) = kernel::lower_shade_stage(
-                            &checked,
-                            &linked,
-                            request.kernel.shadow_rays,
-                        )?;
+                        let (module, bindings, traces) =
+                            kernel::lower_shade_stage(&checked, &linked, shadow_rays)?;
                         shade_traces = traces;
                         (module, bindings)
                     }

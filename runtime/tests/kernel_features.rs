@@ -238,6 +238,22 @@ fn compile_with_stages_placing(
         compiled.has_shadow_stage(),
         shadow_rays == ShadowRays::Stage
     );
+    // Only a shade stage that replays its steps itself holds that loop.
+    let shade = compiled
+        .stages
+        .iter()
+        .flatten()
+        .find(|s| s.stage == rtc_compiler::kernel::wavefront::Stage::Shade)
+        .expect("a shade stage");
+    assert_eq!(
+        shade
+            .module
+            .functions
+            .iter()
+            .any(|(_, f)| f.name.as_deref()
+                == Some(rtc_compiler::kernel::wavefront::SHADE_REPLAY_ROOT)),
+        shadow_rays == ShadowRays::Replay
+    );
     compiled
 }
 
@@ -451,8 +467,9 @@ fn the_wavefront_model_renders_what_the_megakernel_renders() {
     // inside, custom geometry walking its BVH), and shadow rays through fog, at 40 x 28 in 16 x 16
     // tiles. The two models run the same operations in the same order, so on lavapipe the images
     // are bit-identical; the tolerance (1e-5 absolute on values of order 1) leaves room for
-    // another driver contracting differently in two kernels. Both ways of tracing the wavefront
-    // model's shadow rays: in the shadow stage (replayed) and in the shade stage.
+    // another driver contracting differently in two kernels. The three ways of tracing the
+    // wavefront model's shadow rays: in the shadow stage (replayed), in the shade stage where
+    // they are made, and in the shade stage replaying the step.
     let scenes = [
         ("cut_out", scene("cut_out").set("SIDE", "40u")),
         ("shadows", scene("shadows").set("SIDE", "40u")),
@@ -472,7 +489,7 @@ fn the_wavefront_model_renders_what_the_megakernel_renders() {
         ),
     ];
     for (name, file) in scenes {
-        for shadow_rays in [ShadowRays::Stage, ShadowRays::Shade] {
+        for shadow_rays in [ShadowRays::Stage, ShadowRays::Shade, ShadowRays::Replay] {
             let (mega, wave, _) = both_models_placing(&gpu, name, &file, [40, 28], shadow_rays);
             let off = differing(&mega, &wave, 1e-5);
             assert!(
@@ -569,29 +586,38 @@ fn a_shading_step_whose_queries_depend_on_answers_is_replayed_until_exact() {
     // not make again; its colours (red where the way up is clear, blue 0.5 or 1 where it is
     // blocked) must come out as the megakernel's, pixel for pixel, and both branches must occur on
     // the floor (the slabs, green, do not count).
+    // Both ways of replaying: the shadow stage, and the shade stage tracing the queries itself.
     let file = scene("dependent_shadows").set("SIDE", "24u");
-    let (mega, wave, stats) = both_models(&gpu, "dependent_shadows", &file, [SIDE, SIDE]);
-    let off = differing(&mega, &wave, 1e-5);
-    assert!(off.is_empty(), "{} pixels differ: {:?}", off.len(), off);
-    let mut branches = [0usize; 2];
-    for y in 0..SIDE {
-        for x in 0..SIDE {
-            let p = px(&wave, x, y);
-            if p == [0.0, 0.0, 1.0] || p == [0.0, 1.0, 0.0] {
-                continue; // the background, a slab
+    for shadow_rays in [ShadowRays::Stage, ShadowRays::Replay] {
+        let (mega, wave, stats) =
+            both_models_placing(&gpu, "dependent_shadows", &file, [SIDE, SIDE], shadow_rays);
+        let off = differing(&mega, &wave, 1e-5);
+        assert!(
+            off.is_empty(),
+            "{shadow_rays:?}: {} pixels differ: {:?}",
+            off.len(),
+            off
+        );
+        let mut branches = [0usize; 2];
+        for y in 0..SIDE {
+            for x in 0..SIDE {
+                let p = px(&wave, x, y);
+                if p == [0.0, 0.0, 1.0] || p == [0.0, 1.0, 0.0] {
+                    continue; // the background, a slab
+                }
+                branches[usize::from(p[0] == 0.0)] += 1;
             }
-            branches[usize::from(p[0] == 0.0)] += 1;
         }
+        assert!(
+            branches[0] > 0 && branches[1] > 0,
+            "{shadow_rays:?}: both branches must occur: {branches:?}"
+        );
+        assert!(
+            stats.warnings.is_empty(),
+            "{shadow_rays:?}: no query overflowed: {:?}",
+            stats.warnings
+        );
     }
-    assert!(
-        branches[0] > 0 && branches[1] > 0,
-        "both branches must occur: {branches:?}"
-    );
-    assert!(
-        stats.warnings.is_empty(),
-        "no query overflowed: {:?}",
-        stats.warnings
-    );
 }
 
 #[test]
@@ -601,23 +627,39 @@ fn shadow_queries_beyond_what_a_step_records_are_warned_about() {
         return;
     };
     let limit = rtc_compiler::kernel::wavefront::SHADOW_QUERIES;
-    // At the limit: no warning, and the image is the megakernel's.
-    let file = scene("many_shadows").set("QUERIES", format!("{limit}u"));
-    let (mega, wave, stats) = both_models(&gpu, "many_shadows_at_limit", &file, [16, 16]);
-    assert!(stats.warnings.is_empty(), "{:?}", stats.warnings);
-    assert!(differing(&mega, &wave, 1e-5).is_empty());
-    // Over it: every query past the limit is answered "unoccluded", counted and named in a
-    // warning (the slab shadows some of the later directions, so the image may be brighter).
-    let file = scene("many_shadows").set("QUERIES", format!("{}u", limit + 4));
-    let (_, wave, stats) = both_models(&gpu, "many_shadows_over_limit", &file, [16, 16]);
-    let warning = stats
-        .warnings
-        .iter()
-        .find(|w| w.contains("answered \"unoccluded\""))
-        .unwrap_or_else(|| panic!("no overflow warning: {:?}", stats.warnings));
-    // 4 extra queries for each floor pixel of each of the replays of its one shading step.
-    assert!(warning.contains(&limit.to_string()), "{warning}");
-    assert_eq!(wave.count_nonfinite(), 0);
+    // Both ways of replaying: the shadow stage, and the shade stage tracing the queries itself.
+    for shadow_rays in [ShadowRays::Stage, ShadowRays::Replay] {
+        // At the limit: no warning, and the image is the megakernel's.
+        let file = scene("many_shadows").set("QUERIES", format!("{limit}u"));
+        let (mega, wave, stats) =
+            both_models_placing(&gpu, "many_shadows_at_limit", &file, [16, 16], shadow_rays);
+        assert!(
+            stats.warnings.is_empty(),
+            "{shadow_rays:?}: {:?}",
+            stats.warnings
+        );
+        assert!(differing(&mega, &wave, 1e-5).is_empty(), "{shadow_rays:?}");
+        // Over it: every query past the limit is answered "unoccluded", counted and named in a
+        // warning (the slab shadows some of the later directions, so the image may be brighter).
+        let file = scene("many_shadows").set("QUERIES", format!("{}u", limit + 4));
+        let (_, wave, stats) = both_models_placing(
+            &gpu,
+            "many_shadows_over_limit",
+            &file,
+            [16, 16],
+            shadow_rays,
+        );
+        let warning = stats
+            .warnings
+            .iter()
+            .find(|w| w.contains("answered \"unoccluded\""))
+            .unwrap_or_else(|| {
+                panic!("{shadow_rays:?}: no overflow warning: {:?}", stats.warnings)
+            });
+        // 4 extra queries for each floor pixel of each of the runs of its one shading step.
+        assert!(warning.contains(&limit.to_string()), "{warning}");
+        assert_eq!(wave.count_nonfinite(), 0);
+    }
 }
 
 #[test]

@@ -250,6 +250,7 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             exec,
             auto,
             wavefront_min_weight,
+            render_samples: args.still_samples(),
             ..KernelOptions::default()
         },
     ) {

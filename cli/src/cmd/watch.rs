@@ -42,7 +42,7 @@ use rtc_compiler::cache::{content_hash, ModuleCache};
 use rtc_compiler::diag::{self, Diagnostic, Severity};
 use rtc_compiler::driver::Options;
 use rtc_compiler::kernel::{
-    compile_scene_with, save_registry, CompiledScene, ExecModel, KernelOptions,
+    compile_scene_with, save_registry, CompiledScene, ExecModel, KernelOptions, ShadowRays,
 };
 use rtc_compiler::link::LinkOptions;
 use rtc_compiler::sema::hir::SceneDesc;
@@ -381,9 +381,12 @@ impl Session {
                     .unwrap_or_default(),
                 ..LinkOptions::default()
             },
+            // The preview's time after an edit is the compile: the shade stage does not take on a
+            // traversal of the shadow rays it could leave to the shadow stage.
             &KernelOptions {
                 exec: self.exec,
                 auto: self.auto,
+                shadow_rays: ShadowRays::AutoFastCompile,
                 ..KernelOptions::default()
             },
         );

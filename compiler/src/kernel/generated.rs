@@ -117,11 +117,16 @@ pub enum Intrinsic {
     CounterAdd,
     /// `ray_count_load() -> u32`: the rays this invocation traced so far (`count_ray`)
     RayCountLoad,
+    /// `pending_step_waits() -> bool`: what the wavefront shade stage does with a shading step
+    /// that made shadow queries without a known answer: a call of `wf_trace_pending` in the shade
+    /// stage that traces them itself (`wf_shade_replay_invocation`), else of
+    /// `wf_wait_for_shadow_stage` (only the one lowered reaches the kernel)
+    PendingStepWaits,
 }
 
 impl Intrinsic {
     /// Every intrinsic, in the order `rtc:abi` declares them.
-    pub const ALL: [Intrinsic; 43] = [
+    pub const ALL: [Intrinsic; 44] = [
         Intrinsic::LoadFrame,
         Intrinsic::LoadTile,
         Intrinsic::LoadNode,
@@ -165,6 +170,7 @@ impl Intrinsic {
         Intrinsic::ScratchStore,
         Intrinsic::CounterAdd,
         Intrinsic::RayCountLoad,
+        Intrinsic::PendingStepWaits,
     ];
 
     /// `(name, parameters, result)` as declared in `rtc:abi` (result `""`: none).
@@ -248,6 +254,7 @@ impl Intrinsic {
             Intrinsic::ScratchStore => ("scratch_store", "i: u32, value: u32", ""),
             Intrinsic::CounterAdd => ("counter_add", "i: u32, value: u32", ""),
             Intrinsic::RayCountLoad => ("ray_count_load", "", "u32"),
+            Intrinsic::PendingStepWaits => ("pending_step_waits", "", "bool"),
         }
     }
 

@@ -44,6 +44,10 @@ pub struct KernelHooks<'a> {
     /// `shadow(…)` is replayed rather than traced (the wavefront model's shade stage:
     /// `shadow_replay` instead of `shadow_query`, see `kernel::wavefront`).
     pub replay_shadows: bool,
+    /// The kernel traces no ray: `ray_count_load()` is a literal 0 (a shade stage whose shadow
+    /// stage traces its recorded queries; with `replay_shadows` and not this, the shade stage
+    /// traces them itself, see `pending_step_waits`).
+    pub traces_no_rays: bool,
 }
 
 /// Words of the private scratch registers (`scratch_load`, `scratch_store`; `stdlib/kernel/paths.rt`
@@ -520,9 +524,20 @@ impl KernelHooks<'_> {
                 );
                 return Ok(None);
             }
-            // A shade stage that replays its shadow rays traces none: its count is 0, a literal
-            // (a load of the never-written counter measurably slowed pbr_path's shade stage).
-            I::RayCountLoad if self.replay_shadows => lit_u32(fb, 0),
+            // A shade stage whose shadow stage traces its queries traces none: its count is 0, a
+            // literal (a load of the never-written counter measurably slowed pbr_path's shade
+            // stage).
+            I::RayCountLoad if self.traces_no_rays => lit_u32(fb, 0),
+            I::PendingStepWaits => {
+                let name = if self.replay_shadows && !self.traces_no_rays {
+                    "wf_trace_pending"
+                } else {
+                    "wf_wait_for_shadow_stage"
+                };
+                let id = kernel_fn(program, name)?;
+                let f = cx.ensure_function(id, self)?;
+                return Ok(fb.call(f, Vec::new(), true, span));
+            }
             I::RayCountLoad => {
                 let g = self.ray_count(cx);
                 let p = fb.expr(Expression::GlobalVariable(g), span);

@@ -160,19 +160,37 @@ pub struct KernelOptions {
     pub wavefront_min_weight: u64,
     /// Where the wavefront model traces the shadow rays of a shading step.
     pub shadow_rays: ShadowRays,
+    /// The samples of the render the kernels are for, when the caller knows them (`rtc render
+    /// --size`, `--spp`); else the scene's own width × height × samples ([`ShadowRays::Auto`]).
+    pub render_samples: Option<u64>,
 }
 
 /// Where the wavefront model traces the shadow rays (`shadow(…)` calls) of a shading step
-/// ([`lower_shade_stage`]; `kernel::wavefront` explains both ways).
+/// ([`lower_shade_stage`]; `kernel::wavefront` explains the three ways).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum ShadowRays {
-    /// In the shade stage when it then holds at most [`wavefront::MAX_SHADE_TRAVERSALS`] copies of
-    /// the traversal, else in the shadow stage.
+    /// [`ShadowRays::AutoFastFrames`] for a render of more than
+    /// [`wavefront::SHADE_REPLAY_MIN_SAMPLES`] samples ([`KernelOptions::render_samples`]), else
+    /// [`ShadowRays::AutoFastCompile`].
     #[default]
     Auto,
+    /// In the shade stage where they are made ([`ShadowRays::Shade`]) when it then holds at most
+    /// [`wavefront::MAX_SHADE_TRAVERSALS`] copies of the traversal, else replayed there
+    /// ([`ShadowRays::Replay`]): the fastest frames.
+    AutoFastFrames,
+    /// As [`ShadowRays::AutoFastFrames`], but in the shadow stage ([`ShadowRays::Stage`]) instead of
+    /// replayed in the shade stage: a render whose time is its compile (the traversal makes the
+    /// shade stage's driver compile 0.4 to 1.5 s longer with lavapipe's quick JIT, more than the
+    /// shadow stage's own compile; docs/bench/lavapipe.md, "Shadow rays replayed in the shade
+    /// stage").
+    AutoFastCompile,
     /// In the shade stage, where they are made (the scene has no shadow stage).
     Shade,
-    /// In the shadow stage: the shade stage records them and replays the step.
+    /// In the shade stage, which records them, traces them at its one traversal, and commits the
+    /// step when they are all unoccluded or runs it again with their answers (the scene has no
+    /// shadow stage).
+    Replay,
+    /// In the shadow stage: the shade stage records them and replays the step in its next dispatch.
     Stage,
 }
 
@@ -387,40 +405,57 @@ pub fn lower_kernel(
     entry: &str,
 ) -> Result<(naga::Module, Bindings), Box<Diagnostic>> {
     let replay_shadows = entry == wavefront::Stage::Shade.entry();
-    lower_kernel_with(checked, linked, root, entry, replay_shadows)
+    lower_kernel_with(checked, linked, root, entry, replay_shadows, replay_shadows)
 }
 
 /// The wavefront model's shade stage, and whether it traces its own shadow rays (then the scene
-/// has no shadow stage): with `placement` [`ShadowRays::Auto`], when it then holds at most
-/// [`wavefront::MAX_SHADE_TRAVERSALS`] copies of the traversal ([`weight::inlined_copies`]), else
-/// it replays them (lowered a second time).
+/// has no shadow stage), as `placement` says ([`ShadowRays::Auto`] is taken as
+/// [`ShadowRays::AutoFastFrames`]; the compile resolves it by the render's samples first): tracing them where they are made when that makes at
+/// most [`wavefront::MAX_SHADE_TRAVERSALS`] copies of the traversal ([`weight::inlined_copies`])
+/// or when asked to, else lowered a second time, replaying them within the stage
+/// (`wf_shade_replay_invocation`) or for the shadow stage.
 pub fn lower_shade_stage(
     checked: &Checked,
     linked: &Linked,
     placement: ShadowRays,
 ) -> Result<(naga::Module, Bindings, bool), Box<Diagnostic>> {
     let stage = wavefront::Stage::Shade;
-    if placement != ShadowRays::Stage {
+    if placement != ShadowRays::Replay && placement != ShadowRays::Stage {
         let (module, bindings) =
-            lower_kernel_with(checked, linked, stage.root(), stage.entry(), false)?;
+            lower_kernel_with(checked, linked, stage.root(), stage.entry(), false, false)?;
         let copies = weight::inlined_copies(&module, stage.entry(), wavefront::TRAVERSAL_FN)
             .unwrap_or(u64::MAX);
         if placement == ShadowRays::Shade || copies <= wavefront::MAX_SHADE_TRAVERSALS {
             return Ok((module, bindings, true));
         }
     }
-    let (module, bindings) = lower_kernel_with(checked, linked, stage.root(), stage.entry(), true)?;
-    Ok((module, bindings, false))
+    if matches!(placement, ShadowRays::Stage | ShadowRays::AutoFastCompile) {
+        let (module, bindings) =
+            lower_kernel_with(checked, linked, stage.root(), stage.entry(), true, true)?;
+        return Ok((module, bindings, false));
+    }
+    let (module, bindings) = lower_kernel_with(
+        checked,
+        linked,
+        wavefront::SHADE_REPLAY_ROOT,
+        stage.entry(),
+        true,
+        false,
+    )?;
+    Ok((module, bindings, true))
 }
 
 /// [`lower_kernel`], with `shadow` calls replayed (`shadow_replay`, the wavefront model's shade
-/// stage) or traced where they are made.
+/// stage) or traced where they are made; with `traces_no_rays`, `ray_count_load()` is a literal 0
+/// and `pending_step_waits()` leaves the queries to the shadow stage (a shade stage whose shadow
+/// stage traces them).
 fn lower_kernel_with(
     checked: &Checked,
     linked: &Linked,
     root: &str,
     entry: &str,
     replay_shadows: bool,
+    traces_no_rays: bool,
 ) -> Result<(naga::Module, Bindings), Box<Diagnostic>> {
     let Some(program) = checked.program.as_ref() else {
         return Err(Box::new(Diagnostic::error(
@@ -436,6 +471,7 @@ fn lower_kernel_with(
         root,
         entry,
         replay_shadows,
+        traces_no_rays,
     );
     match lowered {
         Ok((mut module, bindings)) => {
@@ -455,6 +491,7 @@ fn lower_entry(
     root: &str,
     entry: &str,
     replay_shadows: bool,
+    traces_no_rays: bool,
 ) -> Result<(naga::Module, Bindings), LowerError> {
     let root = intrinsics::kernel_fn(program, root)?;
     let mut hooks = KernelHooks {
@@ -463,6 +500,7 @@ fn lower_entry(
         config: linked.config,
         generated: dispatch::Generated::default(),
         replay_shadows,
+        traces_no_rays,
     };
     let build_entry = |cx: &mut crate::lower::Lowerer<'_>,
                        roots: &[naga::Handle<naga::Function>]| {

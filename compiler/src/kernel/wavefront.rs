@@ -10,7 +10,7 @@
 //! | compact | `wf_compact` | lists the running slots in slot order, their count and the listed stages' indirect dispatch | none |
 //! | camera | `wf_camera` | starts the slot's next sample: seeds, calls the camera, finds the medium | only for media |
 //! | trace | `wf_trace` | closest hit of the slot's pending ray (with `@intersection` and `@any_hit`); for media, first the medium a refracted ray enters when the shade stage could not tell it | one copy, and the medium probe for media |
-//! | shade | `wf_shade` | one shading step: miss, `@secondary_rays`, `@closest_hit`, `@medium`, `@light`; the next ray or the finished sample | none |
+//! | shade | `wf_shade` | one shading step: miss, `@secondary_rays`, `@closest_hit`, `@medium`, `@light`; the next ray or the finished sample | one copy for its shadow rays, or none in a scene with a shadow stage |
 //! | shadow | `wf_shadow` | the shadow queries the last shading step recorded (only in a scene whose shade stage replays them) | one copy |
 //! | finish | `wf_finish` | adds the pass's samples to `accum` and resets the slot | none |
 //!
@@ -22,18 +22,25 @@
 //! those stages still all hold a running path, and a round costs what its running paths cost. The
 //! finish stage runs over the tile.
 //!
-//! Shadow rays: where the shading step's `shadow(…)` calls, with every call inlined as a driver
-//! inlines them, reach the traversal at most [`MAX_SHADE_TRAVERSALS`] times, the shade stage traces
-//! them where they are made, as the megakernel does (the same random numbers too), and the scene
-//! has no shadow stage: a step runs once. Otherwise each call site would be one more copy of the
-//! traversal to compile, and `shadow(…)` in the shade stage does not trace:
-//! it is *replayed* (`shadow_replay` in `stdlib/kernel/trace.rt`). The first run of a shading step
-//! records each query it makes and answers "unoccluded"; the shadow stage traces the recorded
-//! queries; the step then runs again from the same saved state (same random numbers), and each query
-//! that equals a recorded one bit for bit gets its traced answer. Only a step whose every query was
-//! answered commits its results, so the outcome is the megakernel's. A step whose later queries
-//! depend on the answers of earlier ones records the changed ones and goes round again.
-//!
+//! Shadow rays ([`super::ShadowRays`], chosen by [`super::lower_shade_stage`]): where the shading
+//! step's `shadow(…)` calls, with every call inlined as a driver inlines them, reach the traversal
+//! at most [`MAX_SHADE_TRAVERSALS`] times, the shade stage traces them where they are made, as the
+//! megakernel does (the same random numbers too), and the scene has no shadow stage: a step runs
+//! once. Otherwise each call site would be one more copy of the traversal to compile, and
+//! `shadow(…)` in the shade stage does not trace: it is *replayed* (`shadow_replay` in
+//! `stdlib/kernel/trace.rt`). The first run of a shading step records each query it makes and
+//! answers "unoccluded"; the recorded queries are traced; the step then runs again from the same
+//! saved state (same random numbers), and each query that equals a recorded one bit for bit gets
+//! its traced answer. Only a step whose every query was answered commits its results, so the
+//! outcome is the megakernel's. A step whose later queries depend on the answers of earlier ones
+//! records the changed ones and goes round again. Who traces the recorded queries:
+//! - in a render of more than [`SHADE_REPLAY_MIN_SAMPLES`] samples, the shade stage itself
+//!   ([`SHADE_REPLAY_ROOT`]): its one call of the step and one traversal, in a loop. When every
+//!   answer is the "unoccluded" the run assumed, the run's results are what a replay would
+//!   compute, and the step commits at once; only a step with an occluded query runs again. The
+//!   scene has no shadow stage.
+//! - in a smaller render, whose time is mostly the driver's compile, the shadow stage, and the
+//!   step runs again in the round's second shade dispatch: the shade stage holds no traversal.
 //! Termination: the compact stage stores the count of running slots into the word after the tile's
 //! records, `PATH_WORDS * path_slots` (the first word of the *tail*, [`tail_bytes`]); the host
 //! ends the tile's rounds when it reads 0 after one. Rays are counted per slot (`PATH_RAYS`) and added to `COUNTER_RAYS` once a
@@ -79,6 +86,19 @@ pub fn stages(shadow_stage: bool) -> impl Iterator<Item = Stage> {
 /// second copy would cost a traversal's compile (gltf_scene's shade stage, two copies: 1.6 s
 /// against 0.68 s with lavapipe's quick JIT).
 pub const MAX_SHADE_TRAVERSALS: u64 = 1;
+
+/// The most samples of a render whose shadow rays [`super::ShadowRays::Auto`] leaves to the
+/// shadow stage rather than replay in the shade stage, when the shade stage would hold more than
+/// one traversal: 128 K (e.g. 362 x 362 at 1 spp), the most lavapipe's quick JIT compiles the
+/// stage kernels for (`rtc_runtime::gpu::QUICK_JIT_MAX_SAMPLES`). Up to there a render's time is
+/// mostly its compile, which the traversal in the shade stage makes 0.3 to 1.5 s longer; beyond,
+/// the replay in the shade stage gives faster frames (docs/bench/lavapipe.md, "Shadow rays
+/// replayed in the shade stage").
+pub const SHADE_REPLAY_MIN_SAMPLES: u64 = 1 << 17;
+
+/// The kernel function of the shade stage that replays its shadow rays within the stage
+/// ([`super::ShadowRays::Replay`]): the entry point is still [`Stage::Shade`]'s.
+pub const SHADE_REPLAY_ROOT: &str = "wf_shade_replay_invocation";
 
 /// The kernel function that traverses the scene, in `stdlib/kernel/trace.rt`.
 pub const TRAVERSAL_FN: &str = "intersect_scene";
@@ -311,9 +331,11 @@ mod tests {
     /// storage buffers; only the trace and shadow stages (and, for scenes with media, the camera
     /// stage, whose medium lookup probes objects, and a shade stage that traces its shadow rays)
     /// read BVH nodes; only the finish stage declares `accum`. The shade stage traces its shadow
-    /// rays, and the scene has no shadow stage, exactly when that holds at most
-    /// `MAX_SHADE_TRAVERSALS` traversals (counted here on the shade stage lowered that way); the
-    /// examples take both ways.
+    /// rays where they are made exactly when that holds at most `MAX_SHADE_TRAVERSALS` traversals
+    /// (counted here on the shade stage lowered that way), else it replays them
+    /// (`SHADE_REPLAY_ROOT`) in a render of more than `SHADE_REPLAY_MIN_SAMPLES` samples (the
+    /// examples' own sizes), and in a smaller render (`ShadowRays::AutoFastCompile`) the shadow
+    /// stage traces them; the examples take the first two ways.
     #[test]
     fn every_example_has_stage_kernels_within_the_default_limits() {
         let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples");
@@ -326,7 +348,7 @@ mod tests {
             .collect();
         names.sort();
         assert!(names.len() >= 10, "{names:?}");
-        // Examples without a shadow stage, and with one.
+        // Examples tracing their shadow rays where they are made, and replaying them.
         let mut placements = [0u32; 2];
         for path in names {
             let compiled = compile_scene_with(
@@ -362,13 +384,34 @@ mod tests {
             let copies =
                 crate::kernel::weight::inlined_copies(&inline, Stage::Shade.entry(), TRAVERSAL_FN)
                     .expect("the entry point");
+            let replay = copies > MAX_SHADE_TRAVERSALS;
+            let program = compiled.checked.program.as_ref().expect("the program");
+            let own = program.scenes[compiled.scene].settings;
+            let small = u64::from(own.width * own.height * own.samples) <= SHADE_REPLAY_MIN_SAMPLES;
+            assert_eq!(shadow_stage, replay && small, "{}", path.display());
+            let shade = stages
+                .iter()
+                .find(|s| s.stage == Stage::Shade)
+                .expect("shade");
+            let replays = shade
+                .module
+                .functions
+                .iter()
+                .any(|(_, f)| f.name.as_deref() == Some(SHADE_REPLAY_ROOT));
             assert_eq!(
-                shadow_stage,
-                copies > MAX_SHADE_TRAVERSALS,
+                replays,
+                replay && !small,
                 "{}: {copies} traversals",
                 path.display()
             );
-            placements[usize::from(shadow_stage)] += 1;
+            let (_, _, traces) = crate::kernel::lower_shade_stage(
+                &compiled.checked,
+                &compiled.linked,
+                crate::kernel::ShadowRays::AutoFastCompile,
+            )
+            .expect("the shade stage for a small render");
+            assert_eq!(traces, !replay, "{}: {copies} traversals", path.display());
+            placements[usize::from(replay)] += 1;
             let media = compiled.linked.config.has_media;
             for s in stages {
                 let names: Vec<&str> = s.bindings.iter().map(|b| b.name).collect();
@@ -407,7 +450,7 @@ mod tests {
         }
         assert!(
             placements.iter().all(|&n| n > 0),
-            "examples without a shadow stage, and with one: {placements:?}"
+            "examples tracing their shadow rays where made, and replaying them: {placements:?}"
         );
     }
 
