@@ -180,9 +180,9 @@ pub enum ShadowRays {
     AutoFastFrames,
     /// As [`ShadowRays::AutoFastFrames`], but in the shadow stage ([`ShadowRays::Stage`]) instead of
     /// replayed in the shade stage: a render whose time is its compile (the traversal makes the
-    /// shade stage's driver compile 0.4 to 1.5 s longer with lavapipe's quick JIT, more than the
-    /// shadow stage's own compile; docs/bench/lavapipe.md, "Shadow rays replayed in the shade
-    /// stage").
+    /// shade stage's driver compile 0.3 to 1.1 s longer with lavapipe's quick JIT, more than the
+    /// shadow stage's own compile; docs/bench/lavapipe.md,
+    /// "Shadow rays replayed in the shade stage (2026-12-06)").
     AutoFastCompile,
     /// In the shade stage, where they are made (the scene has no shadow stage).
     Shade,

@@ -41,6 +41,7 @@
 //!   scene has no shadow stage.
 //! - in a smaller render, whose time is mostly the driver's compile, the shadow stage, and the
 //!   step runs again in the round's second shade dispatch: the shade stage holds no traversal.
+//!
 //! Termination: the compact stage stores the count of running slots into the word after the tile's
 //! records, `PATH_WORDS * path_slots` (the first word of the *tail*, [`tail_bytes`]); the host
 //! ends the tile's rounds when it reads 0 after one. Rays are counted per slot (`PATH_RAYS`) and added to `COUNTER_RAYS` once a
@@ -91,9 +92,9 @@ pub const MAX_SHADE_TRAVERSALS: u64 = 1;
 /// shadow stage rather than replay in the shade stage, when the shade stage would hold more than
 /// one traversal: 128 K (e.g. 362 x 362 at 1 spp), the most lavapipe's quick JIT compiles the
 /// stage kernels for (`rtc_runtime::gpu::QUICK_JIT_MAX_SAMPLES`). Up to there a render's time is
-/// mostly its compile, which the traversal in the shade stage makes 0.3 to 1.5 s longer; beyond,
-/// the replay in the shade stage gives faster frames (docs/bench/lavapipe.md, "Shadow rays
-/// replayed in the shade stage").
+/// mostly its compile, which the traversal in the shade stage makes 0.3 to 1.1 s longer (quick
+/// JIT, Mesa 25); beyond, the replay in the shade stage gives faster frames (docs/bench/lavapipe.md,
+/// "Shadow rays replayed in the shade stage (2026-12-06)").
 pub const SHADE_REPLAY_MIN_SAMPLES: u64 = 1 << 17;
 
 /// The kernel function of the shade stage that replays its shadow rays within the stage
