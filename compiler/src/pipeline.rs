@@ -143,11 +143,18 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
     let stages = if exec == ExecModel::Wavefront {
         let shadow_rays = match request.kernel.shadow_rays {
             kernel::ShadowRays::Auto => {
-                let own = checked.program.as_ref().map_or(0, |p| {
-                    let s = &p.scenes[scene].settings;
-                    u64::from(s.width) * u64::from(s.height) * u64::from(s.samples)
-                });
-                let samples = request.kernel.render_samples.unwrap_or(own);
+                let own = checked.program.as_ref().map(|p| p.scenes[scene].settings);
+                let [w, h] = request
+                    .kernel
+                    .render_size
+                    .or(own.map(|s| [s.width, s.height]))
+                    .unwrap_or([0, 0]);
+                let spp = request
+                    .kernel
+                    .render_spp
+                    .or(own.map(|s| s.samples))
+                    .unwrap_or(0);
+                let samples = u64::from(w) * u64::from(h) * u64::from(spp);
                 if samples > wavefront::SHADE_REPLAY_MIN_SAMPLES {
                     kernel::ShadowRays::AutoFastFrames
                 } else {

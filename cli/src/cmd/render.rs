@@ -250,7 +250,8 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             exec,
             auto,
             wavefront_min_weight,
-            render_samples: args.still_samples(),
+            render_size: args.render.scene.image_size(),
+            render_spp: args.render.spp.samples,
             ..KernelOptions::default()
         },
     ) {

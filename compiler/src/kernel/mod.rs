@@ -160,9 +160,12 @@ pub struct KernelOptions {
     pub wavefront_min_weight: u64,
     /// Where the wavefront model traces the shadow rays of a shading step.
     pub shadow_rays: ShadowRays,
-    /// The samples of the render the kernels are for, when the caller knows them (`rtc render
-    /// --size`, `--spp`); else the scene's own width × height × samples ([`ShadowRays::Auto`]).
-    pub render_samples: Option<u64>,
+    /// The image size of the render the kernels are for, when the caller sets one (`rtc render
+    /// --size`); else the scene's own ([`ShadowRays::Auto`] weighs the render's samples).
+    pub render_size: Option<[u32; 2]>,
+    /// The samples per pixel of that render, when the caller sets them (`--spp`); else the
+    /// scene's own.
+    pub render_spp: Option<u32>,
 }
 
 /// Where the wavefront model traces the shadow rays (`shadow(…)` calls) of a shading step
@@ -170,7 +173,8 @@ pub struct KernelOptions {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum ShadowRays {
     /// [`ShadowRays::AutoFastFrames`] for a render of more than
-    /// [`wavefront::SHADE_REPLAY_MIN_SAMPLES`] samples ([`KernelOptions::render_samples`]), else
+    /// [`wavefront::SHADE_REPLAY_MIN_SAMPLES`] samples ([`KernelOptions::render_size`] and
+    /// [`KernelOptions::render_spp`], else the scene's own), else
     /// [`ShadowRays::AutoFastCompile`].
     #[default]
     Auto,

@@ -455,6 +455,44 @@ mod tests {
         );
     }
 
+    /// `ShadowRays::Auto` weighs the render's samples: the shading example (two traversals' worth
+    /// of shadow calls) replays its shadow rays in the shade stage at its own 480 x 200 at 4 spp,
+    /// and leaves them to the shadow stage at 64 x 48, whether `--size` and `--spp` both give the
+    /// render or `--spp` alone shrinks the scene's own size below the bound.
+    #[test]
+    fn the_render_size_decides_where_replayed_shadow_rays_are_traced() {
+        let path =
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/shading/scene.rt");
+        let stages = |render_size: Option<[u32; 2]>, render_spp: Option<u32>| {
+            let compiled = compile_scene_with(
+                std::slice::from_ref(&path),
+                None,
+                &Options::default(),
+                &LinkOptions::default(),
+                &KernelOptions {
+                    exec: Some(ExecModel::Wavefront),
+                    render_size,
+                    render_spp,
+                    ..KernelOptions::default()
+                },
+            )
+            .unwrap_or_else(|_| panic!("{} compiles", path.display()));
+            let shade = compiled.stages.as_ref().expect("stage kernels");
+            let replays = shade.iter().any(|s| {
+                s.module
+                    .functions
+                    .iter()
+                    .any(|(_, f)| f.name.as_deref() == Some(SHADE_REPLAY_ROOT))
+            });
+            (compiled.has_shadow_stage(), replays)
+        };
+        // 480 x 200 x 4 = 384 K samples; 64 x 48 x 1 and 480 x 200 x 1 = 96 K are within the bound.
+        assert_eq!(stages(None, None), (false, true));
+        assert_eq!(stages(Some([64, 48]), Some(1)), (true, false));
+        assert_eq!(stages(None, Some(1)), (true, false));
+        assert_eq!(stages(Some([1920, 1080]), None), (false, true));
+    }
+
     #[test]
     fn the_layout_is_in_chunks_and_counts_frames_only_with_secondary_rays() {
         let mut c = KernelConfig::unspecialised();
