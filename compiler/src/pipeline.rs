@@ -155,7 +155,7 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
                     .or(own.map(|s| s.samples))
                     .unwrap_or(0);
                 let samples = u64::from(w) * u64::from(h) * u64::from(spp);
-                if samples > wavefront::SHADE_REPLAY_MIN_SAMPLES {
+                if samples > wavefront::FAST_COMPILE_MAX_SAMPLES {
                     kernel::ShadowRays::AutoFastFrames
                 } else {
                     kernel::ShadowRays::AutoFastCompile

@@ -173,19 +173,19 @@ pub struct KernelOptions {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum ShadowRays {
     /// [`ShadowRays::AutoFastFrames`] for a render of more than
-    /// [`wavefront::SHADE_REPLAY_MIN_SAMPLES`] samples ([`KernelOptions::render_size`] and
+    /// [`wavefront::FAST_COMPILE_MAX_SAMPLES`] samples ([`KernelOptions::render_size`] and
     /// [`KernelOptions::render_spp`], else the scene's own), else
     /// [`ShadowRays::AutoFastCompile`].
     #[default]
     Auto,
     /// In the shade stage where they are made ([`ShadowRays::Shade`]) when it then holds at most
-    /// [`wavefront::MAX_SHADE_TRAVERSALS`] copies of the traversal, else replayed there
-    /// ([`ShadowRays::Replay`]): the fastest frames.
+    /// [`wavefront::MAX_SHADE_TRAVERSALS_FAST_FRAMES`] copies of the traversal, else replayed
+    /// there ([`ShadowRays::Replay`]): the fastest frames.
     AutoFastFrames,
-    /// As [`ShadowRays::AutoFastFrames`], but in the shadow stage ([`ShadowRays::Stage`]) instead of
-    /// replayed in the shade stage: a render whose time is its compile (the traversal makes the
-    /// shade stage's driver compile 0.3 to 1.1 s longer with lavapipe's quick JIT, more than the
-    /// shadow stage's own compile; docs/bench/lavapipe.md,
+    /// In the shade stage where they are made when it then holds at most
+    /// [`wavefront::MAX_SHADE_TRAVERSALS`] copies of the traversal, else in the shadow stage
+    /// ([`ShadowRays::Stage`]): the fastest compile (each further copy makes the shade stage's
+    /// driver compile longer, more than the shadow stage's own compile; docs/bench/lavapipe.md,
     /// "Shadow rays replayed in the shade stage (2026-12-06)").
     AutoFastCompile,
     /// In the shade stage, where they are made (the scene has no shadow stage).
@@ -414,22 +414,30 @@ pub fn lower_kernel(
 
 /// The wavefront model's shade stage, and whether it traces its own shadow rays (then the scene
 /// has no shadow stage), as `placement` says ([`ShadowRays::Auto`] is taken as
-/// [`ShadowRays::AutoFastFrames`]; the compile resolves it by the render's samples first): tracing them where they are made when that makes at
-/// most [`wavefront::MAX_SHADE_TRAVERSALS`] copies of the traversal ([`weight::inlined_copies`])
-/// or when asked to, else lowered a second time, replaying them within the stage
-/// (`wf_shade_replay_invocation`) or for the shadow stage.
+/// [`ShadowRays::AutoFastFrames`]; the compile resolves it by the render's samples first): where
+/// they are made when asked to or when that makes at most the automatic choice's number of copies
+/// of the traversal ([`weight::inlined_copies`]), else lowered a second time, replaying them
+/// within the stage (`wf_shade_replay_invocation`) or for the shadow stage.
 pub fn lower_shade_stage(
     checked: &Checked,
     linked: &Linked,
     placement: ShadowRays,
 ) -> Result<(naga::Module, Bindings, bool), Box<Diagnostic>> {
     let stage = wavefront::Stage::Shade;
-    if placement != ShadowRays::Replay && placement != ShadowRays::Stage {
+    let most = match placement {
+        ShadowRays::Replay | ShadowRays::Stage => None,
+        ShadowRays::Shade => Some(u64::MAX),
+        ShadowRays::AutoFastCompile => Some(wavefront::MAX_SHADE_TRAVERSALS),
+        ShadowRays::Auto | ShadowRays::AutoFastFrames => {
+            Some(wavefront::MAX_SHADE_TRAVERSALS_FAST_FRAMES)
+        }
+    };
+    if let Some(most) = most {
         let (module, bindings) =
             lower_kernel_with(checked, linked, stage.root(), stage.entry(), false, false)?;
         let copies = weight::inlined_copies(&module, stage.entry(), wavefront::TRAVERSAL_FN)
             .unwrap_or(u64::MAX);
-        if placement == ShadowRays::Shade || copies <= wavefront::MAX_SHADE_TRAVERSALS {
+        if copies <= most {
             return Ok((module, bindings, true));
         }
     }

@@ -24,23 +24,24 @@
 //!
 //! Shadow rays ([`super::ShadowRays`], chosen by [`super::lower_shade_stage`]): where the shading
 //! step's `shadow(…)` calls, with every call inlined as a driver inlines them, reach the traversal
-//! at most [`MAX_SHADE_TRAVERSALS`] times, the shade stage traces them where they are made, as the
-//! megakernel does (the same random numbers too), and the scene has no shadow stage: a step runs
-//! once. Otherwise each call site would be one more copy of the traversal to compile, and
-//! `shadow(…)` in the shade stage does not trace: it is *replayed* (`shadow_replay` in
-//! `stdlib/kernel/trace.rt`). The first run of a shading step records each query it makes and
-//! answers "unoccluded"; the recorded queries are traced; the step then runs again from the same
-//! saved state (same random numbers), and each query that equals a recorded one bit for bit gets
-//! its traced answer. Only a step whose every query was answered commits its results, so the
-//! outcome is the megakernel's. A step whose later queries depend on the answers of earlier ones
-//! records the changed ones and goes round again. Who traces the recorded queries:
-//! - in a render of more than [`SHADE_REPLAY_MIN_SAMPLES`] samples, the shade stage itself
-//!   ([`SHADE_REPLAY_ROOT`]): its one call of the step and one traversal, in a loop. When every
-//!   answer is the "unoccluded" the run assumed, the run's results are what a replay would
-//!   compute, and the step commits at once; only a step with an occluded query runs again. The
-//!   scene has no shadow stage.
-//! - in a smaller render, whose time is mostly the driver's compile, the shadow stage, and the
-//!   step runs again in the round's second shade dispatch: the shade stage holds no traversal.
+//! at most [`MAX_SHADE_TRAVERSALS`] times in a render of at most [`FAST_COMPILE_MAX_SAMPLES`]
+//! samples (whose time is mostly its compile), or [`MAX_SHADE_TRAVERSALS_FAST_FRAMES`] times in a
+//! larger one, the shade stage traces them where they are made, as the megakernel does (the same
+//! random numbers too), and the scene has no shadow stage: a step runs once. Otherwise each call
+//! site would be one more copy of the traversal to compile, and `shadow(…)` in the shade stage
+//! does not trace: it is *replayed* (`shadow_replay` in `stdlib/kernel/trace.rt`). The first run
+//! of a shading step records each query it makes and answers "unoccluded"; the recorded queries
+//! are traced; the step then runs again from the same saved state (same random numbers), and each
+//! query that equals a recorded one bit for bit gets its traced answer. Only a step whose every
+//! query was answered commits its results, so the outcome is the megakernel's. A step whose later
+//! queries depend on the answers of earlier ones records the changed ones and goes round again.
+//! Who traces the recorded queries:
+//! - in the small render, the shadow stage, and the step runs again in the round's second shade
+//!   dispatch: the shade stage holds no traversal.
+//! - in the larger one, the shade stage itself ([`SHADE_REPLAY_ROOT`]): its one call of the step
+//!   and one traversal, in a loop. When every answer is the "unoccluded" the run assumed, the
+//!   run's results are what a replay would compute, and the step commits at once; only a step
+//!   with an occluded query runs again. The scene has no shadow stage.
 //!
 //! Termination: the compact stage stores the count of running slots into the word after the tile's
 //! records, `PATH_WORDS * path_slots` (the first word of the *tail*, [`tail_bytes`]); the host
@@ -81,21 +82,31 @@ pub fn stages(shadow_stage: bool) -> impl Iterator<Item = Stage> {
 }
 
 /// The most copies of the traversal ([`TRAVERSAL_FN`]) the shade stage may hold, every call
-/// inlined, to trace its shadow rays itself ([`super::ShadowRays::Auto`]). One: the shadow stage's
-/// own copy moves into it, so the scene's compile stays what it was (the stage kernels of
-/// thesis_scene and cornell_path compile in about the same time, docs/bench/compile.md), while a
-/// second copy would cost a traversal's compile (gltf_scene's shade stage, two copies: 1.6 s
-/// against 0.68 s with lavapipe's quick JIT).
+/// inlined, to trace its shadow rays where they are made in a render whose time is its compile
+/// ([`super::ShadowRays::AutoFastCompile`]); with more, the shadow stage traces them. One: the
+/// shadow stage's own copy moves into it, so the scene's compile stays what it was (the stage
+/// kernels of thesis_scene and cornell_path compile in about the same time,
+/// docs/bench/compile.md), while a second copy would cost a traversal's compile (gltf_scene's
+/// shade stage, two copies: 1.6 s against 0.68 s with lavapipe's quick JIT).
 pub const MAX_SHADE_TRAVERSALS: u64 = 1;
 
-/// The most samples of a render whose shadow rays [`super::ShadowRays::Auto`] leaves to the
-/// shadow stage rather than replay in the shade stage, when the shade stage would hold more than
-/// one traversal: 128 K (e.g. 362 x 362 at 1 spp), the most lavapipe's quick JIT compiles the
-/// stage kernels for (`rtc_runtime::gpu::QUICK_JIT_MAX_SAMPLES`). Up to there a render's time is
-/// mostly its compile, which the traversal in the shade stage makes 0.3 to 1.1 s longer (quick
-/// JIT, Mesa 25); beyond, the replay in the shade stage gives faster frames (docs/bench/lavapipe.md,
+/// The most copies of the traversal the shade stage may hold to trace its shadow rays where they
+/// are made in a render whose time is its frames ([`super::ShadowRays::AutoFastFrames`]); with
+/// more, it replays them around its one traversal ([`SHADE_REPLAY_ROOT`]). Three, the most any
+/// example has (fog): on fog, gltf_scene, pbr_path and shading, tracing in place gave frames 0.70
+/// to 0.93 of the replay's, and a compile within the spread of the replay's, whose loop around
+/// the step costs the driver too (docs/bench/lavapipe.md,
 /// "Shadow rays replayed in the shade stage (2026-12-06)").
-pub const SHADE_REPLAY_MIN_SAMPLES: u64 = 1 << 17;
+pub const MAX_SHADE_TRAVERSALS_FAST_FRAMES: u64 = 3;
+
+/// The most samples of a render for which [`super::ShadowRays::Auto`] means
+/// [`super::ShadowRays::AutoFastCompile`], beyond which it means
+/// [`super::ShadowRays::AutoFastFrames`]: 128 K (e.g. 362 x 362 at 1 spp), the most lavapipe's
+/// quick JIT compiles the stage kernels for (`rtc_runtime::gpu::QUICK_JIT_MAX_SAMPLES`). Up to
+/// there a render's time is mostly its compile, which a traversal in the shade stage makes 0.3 to
+/// 1.1 s longer than the shadow stage's (quick JIT, Mesa 25); beyond, the frames count
+/// (docs/bench/lavapipe.md, "Shadow rays replayed in the shade stage (2026-12-06)").
+pub const FAST_COMPILE_MAX_SAMPLES: u64 = 1 << 17;
 
 /// The kernel function of the shade stage that replays its shadow rays within the stage
 /// ([`super::ShadowRays::Replay`]): the entry point is still [`Stage::Shade`]'s.
@@ -331,12 +342,14 @@ mod tests {
     /// Every example's stage kernels: lowered and validated, each within WebGPU's default 8
     /// storage buffers; only the trace and shadow stages (and, for scenes with media, the camera
     /// stage, whose medium lookup probes objects, and a shade stage that traces its shadow rays)
-    /// read BVH nodes; only the finish stage declares `accum`. The shade stage traces its shadow
-    /// rays where they are made exactly when that holds at most `MAX_SHADE_TRAVERSALS` traversals
-    /// (counted here on the shade stage lowered that way), else it replays them
-    /// (`SHADE_REPLAY_ROOT`) in a render of more than `SHADE_REPLAY_MIN_SAMPLES` samples (the
-    /// examples' own sizes), and in a smaller render (`ShadowRays::AutoFastCompile`) the shadow
-    /// stage traces them; the examples take the first two ways.
+    /// read BVH nodes; only the finish stage declares `accum`. Where the shadow rays are traced,
+    /// from the copies of the traversal the shade stage holds tracing them where they are made
+    /// (counted here on the shade stage lowered that way): there, for a render of at most
+    /// `FAST_COMPILE_MAX_SAMPLES` samples, with at most `MAX_SHADE_TRAVERSALS` copies, else in
+    /// the shadow stage; for a larger one with at most `MAX_SHADE_TRAVERSALS_FAST_FRAMES`, else
+    /// replayed in the shade stage (`SHADE_REPLAY_ROOT`). The examples' own sizes take both ways
+    /// of a small render, and the first of a large one (no example has more than three copies);
+    /// a small render of each takes its way too.
     #[test]
     fn every_example_has_stage_kernels_within_the_default_limits() {
         let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples");
@@ -349,7 +362,8 @@ mod tests {
             .collect();
         names.sort();
         assert!(names.len() >= 10, "{names:?}");
-        // Examples tracing their shadow rays where they are made, and replaying them.
+        // Examples tracing their shadow rays in the shade stage at their own sizes, and in the
+        // shadow stage in a small render.
         let mut placements = [0u32; 2];
         for path in names {
             let compiled = compile_scene_with(
@@ -385,11 +399,26 @@ mod tests {
             let copies =
                 crate::kernel::weight::inlined_copies(&inline, Stage::Shade.entry(), TRAVERSAL_FN)
                     .expect("the entry point");
-            let replay = copies > MAX_SHADE_TRAVERSALS;
             let program = compiled.checked.program.as_ref().expect("the program");
             let own = program.scenes[compiled.scene].settings;
-            let small = u64::from(own.width * own.height * own.samples) <= SHADE_REPLAY_MIN_SAMPLES;
-            assert_eq!(shadow_stage, replay && small, "{}", path.display());
+            let small = u64::from(own.width * own.height * own.samples) <= FAST_COMPILE_MAX_SAMPLES;
+            let most = if small {
+                MAX_SHADE_TRAVERSALS
+            } else {
+                MAX_SHADE_TRAVERSALS_FAST_FRAMES
+            };
+            let in_place = copies <= most;
+            assert!(
+                copies <= MAX_SHADE_TRAVERSALS_FAST_FRAMES,
+                "{}",
+                path.display()
+            );
+            assert_eq!(
+                shadow_stage,
+                !in_place,
+                "{}: {copies} traversals",
+                path.display()
+            );
             let shade = stages
                 .iter()
                 .find(|s| s.stage == Stage::Shade)
@@ -399,20 +428,21 @@ mod tests {
                 .functions
                 .iter()
                 .any(|(_, f)| f.name.as_deref() == Some(SHADE_REPLAY_ROOT));
-            assert_eq!(
-                replays,
-                replay && !small,
-                "{}: {copies} traversals",
-                path.display()
-            );
+            assert!(!replays, "{}: {copies} traversals", path.display());
             let (_, _, traces) = crate::kernel::lower_shade_stage(
                 &compiled.checked,
                 &compiled.linked,
                 crate::kernel::ShadowRays::AutoFastCompile,
             )
             .expect("the shade stage for a small render");
-            assert_eq!(traces, !replay, "{}: {copies} traversals", path.display());
-            placements[usize::from(replay)] += 1;
+            assert_eq!(
+                traces,
+                copies <= MAX_SHADE_TRAVERSALS,
+                "{}: {copies} traversals",
+                path.display()
+            );
+            placements[0] += u32::from(!shadow_stage);
+            placements[1] += u32::from(!traces);
             let media = compiled.linked.config.has_media;
             for s in stages {
                 let names: Vec<&str> = s.bindings.iter().map(|b| b.name).collect();
@@ -451,16 +481,17 @@ mod tests {
         }
         assert!(
             placements.iter().all(|&n| n > 0),
-            "examples tracing their shadow rays where made, and replaying them: {placements:?}"
+            "examples tracing their shadow rays in the shade stage at their own sizes, and in the \
+             shadow stage in a small render: {placements:?}"
         );
     }
 
     /// `ShadowRays::Auto` weighs the render's samples: the shading example (two traversals' worth
-    /// of shadow calls) replays its shadow rays in the shade stage at its own 480 x 200 at 4 spp,
-    /// and leaves them to the shadow stage at 64 x 48, whether `--size` and `--spp` both give the
-    /// render or `--spp` alone shrinks the scene's own size below the bound.
+    /// of shadow calls) traces its shadow rays in the shade stage, where they are made, at its own
+    /// 480 x 200 at 4 spp, and leaves them to the shadow stage at 64 x 48, whether `--size` and
+    /// `--spp` both give the render or `--spp` alone shrinks the scene's own size below the bound.
     #[test]
-    fn the_render_size_decides_where_replayed_shadow_rays_are_traced() {
+    fn the_render_size_decides_where_shadow_rays_are_traced() {
         let path =
             std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/shading/scene.rt");
         let stages = |render_size: Option<[u32; 2]>, render_spp: Option<u32>| {
@@ -487,10 +518,10 @@ mod tests {
             (compiled.has_shadow_stage(), replays)
         };
         // 480 x 200 x 4 = 384 K samples; 64 x 48 x 1 and 480 x 200 x 1 = 96 K are within the bound.
-        assert_eq!(stages(None, None), (false, true));
+        assert_eq!(stages(None, None), (false, false));
         assert_eq!(stages(Some([64, 48]), Some(1)), (true, false));
         assert_eq!(stages(None, Some(1)), (true, false));
-        assert_eq!(stages(Some([1920, 1080]), None), (false, true));
+        assert_eq!(stages(Some([1920, 1080]), None), (false, false));
     }
 
     #[test]
