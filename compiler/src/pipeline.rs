@@ -141,28 +141,21 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
         None => ExecModel::resolve(request.kernel.exec, setting, request.kernel.auto),
     };
     let stages = if exec == ExecModel::Wavefront {
-        let shadow_rays = match request.kernel.shadow_rays {
-            kernel::ShadowRays::Auto => {
-                let own = checked.program.as_ref().map(|p| p.scenes[scene].settings);
-                let [w, h] = request
-                    .kernel
-                    .render_size
-                    .or(own.map(|s| [s.width, s.height]))
-                    .unwrap_or([0, 0]);
-                let spp = request
-                    .kernel
-                    .render_spp
-                    .or(own.map(|s| s.samples))
-                    .unwrap_or(0);
-                let samples = u64::from(w) * u64::from(h) * u64::from(spp);
-                if samples > wavefront::FAST_COMPILE_MAX_SAMPLES {
-                    kernel::ShadowRays::AutoFastFrames
-                } else {
-                    kernel::ShadowRays::AutoFastCompile
-                }
-            }
-            placement => placement,
-        };
+        // The render's samples: its size and samples per pixel as the caller sets them, else the
+        // scene's own.
+        let own = checked.program.as_ref().map(|p| p.scenes[scene].settings);
+        let [w, h] = request
+            .kernel
+            .render_size
+            .or(own.map(|s| [s.width, s.height]))
+            .unwrap_or([0, 0]);
+        let spp = request
+            .kernel
+            .render_spp
+            .or(own.map(|s| s.samples))
+            .unwrap_or(0);
+        let samples = u64::from(w) * u64::from(h) * u64::from(spp);
+        let shadow_rays = request.kernel.shadow_rays.for_samples(samples);
         let lowered = timings.time("lower the stage kernels", || {
             let mut stages = Vec::with_capacity(wavefront::STAGES.len());
             // The shade stage comes before the shadow stage, and says whether there is one.

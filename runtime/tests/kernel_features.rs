@@ -239,19 +239,8 @@ fn compile_with_stages_placing(
         shadow_rays == ShadowRays::Stage
     );
     // Only a shade stage that replays its steps itself holds that loop.
-    let shade = compiled
-        .stages
-        .iter()
-        .flatten()
-        .find(|s| s.stage == rtc_compiler::kernel::wavefront::Stage::Shade)
-        .expect("a shade stage");
     assert_eq!(
-        shade
-            .module
-            .functions
-            .iter()
-            .any(|(_, f)| f.name.as_deref()
-                == Some(rtc_compiler::kernel::wavefront::SHADE_REPLAY_ROOT)),
+        compiled.replays_in_shade_stage(),
         shadow_rays == ShadowRays::Replay
     );
     compiled

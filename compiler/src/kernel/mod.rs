@@ -64,6 +64,21 @@ impl CompiledScene {
             .flatten()
             .any(|s| s.stage == wavefront::Stage::Shadow)
     }
+
+    /// Whether its shade stage replays its shadow rays around its own traversal
+    /// (`wavefront::SHADE_REPLAY_ROOT`, [`ShadowRays::Replay`]); false without stage kernels.
+    pub fn replays_in_shade_stage(&self) -> bool {
+        self.stages
+            .iter()
+            .flatten()
+            .filter(|s| s.stage == wavefront::Stage::Shade)
+            .any(|s| {
+                s.module
+                    .functions
+                    .iter()
+                    .any(|(_, f)| f.name.as_deref() == Some(wavefront::SHADE_REPLAY_ROOT))
+            })
+    }
 }
 
 /// One stage kernel of the wavefront model.
@@ -196,6 +211,21 @@ pub enum ShadowRays {
     Replay,
     /// In the shadow stage: the shade stage records them and replays the step in its next dispatch.
     Stage,
+}
+
+impl ShadowRays {
+    /// [`ShadowRays::Auto`] for a render of `samples` samples: [`ShadowRays::AutoFastFrames`]
+    /// beyond [`wavefront::FAST_COMPILE_MAX_SAMPLES`], else [`ShadowRays::AutoFastCompile`]; any
+    /// other choice as it is.
+    pub fn for_samples(self, samples: u64) -> ShadowRays {
+        match self {
+            ShadowRays::Auto if samples > wavefront::FAST_COMPILE_MAX_SAMPLES => {
+                ShadowRays::AutoFastFrames
+            }
+            ShadowRays::Auto => ShadowRays::AutoFastCompile,
+            placement => placement,
+        }
+    }
 }
 
 /// The most triangles of built-in meshes a scene may have for [`small_built_in_geometry`]: its
@@ -414,7 +444,7 @@ pub fn lower_kernel(
 
 /// The wavefront model's shade stage, and whether it traces its own shadow rays (then the scene
 /// has no shadow stage), as `placement` says ([`ShadowRays::Auto`] is taken as
-/// [`ShadowRays::AutoFastFrames`]; the compile resolves it by the render's samples first): where
+/// [`ShadowRays::AutoFastFrames`]; the compile resolves it first, [`ShadowRays::for_samples`]): where
 /// they are made when asked to or when that makes at most the automatic choice's number of copies
 /// of the traversal ([`weight::inlined_copies`]), else lowered a second time, replaying them
 /// within the stage (`wf_shade_replay_invocation`) or for the shadow stage.

@@ -419,16 +419,11 @@ mod tests {
                 "{}: {copies} traversals",
                 path.display()
             );
-            let shade = stages
-                .iter()
-                .find(|s| s.stage == Stage::Shade)
-                .expect("shade");
-            let replays = shade
-                .module
-                .functions
-                .iter()
-                .any(|(_, f)| f.name.as_deref() == Some(SHADE_REPLAY_ROOT));
-            assert!(!replays, "{}: {copies} traversals", path.display());
+            assert!(
+                !compiled.replays_in_shade_stage(),
+                "{}: {copies} traversals",
+                path.display()
+            );
             let (_, _, traces) = crate::kernel::lower_shade_stage(
                 &compiled.checked,
                 &compiled.linked,
@@ -508,14 +503,11 @@ mod tests {
                 },
             )
             .unwrap_or_else(|_| panic!("{} compiles", path.display()));
-            let shade = compiled.stages.as_ref().expect("stage kernels");
-            let replays = shade.iter().any(|s| {
-                s.module
-                    .functions
-                    .iter()
-                    .any(|(_, f)| f.name.as_deref() == Some(SHADE_REPLAY_ROOT))
-            });
-            (compiled.has_shadow_stage(), replays)
+            assert!(compiled.stages.is_some(), "stage kernels");
+            (
+                compiled.has_shadow_stage(),
+                compiled.replays_in_shade_stage(),
+            )
         };
         // 480 x 200 x 4 = 384 K samples; 64 x 48 x 1 and 480 x 200 x 1 = 96 K are within the bound.
         assert_eq!(stages(None, None), (false, false));
