@@ -386,7 +386,7 @@ impl Kernels {
 /// Rounds one tile of the wavefront model may take: each of a sample's rays needs a round (the
 /// tree of a sample holds at most `sum of max_spawn^d` rays for `d <= max_depth`), a shading step
 /// whose shadow queries depend on each other up to `SHADOW_QUERIES` more when the shadow stage
-/// traces them, and the pass one more to find that nothing runs.
+/// traces them, and two to spare.
 fn max_rounds(compiled: &CompiledScene) -> u32 {
     let c = &compiled.linked.config;
     let mut rays: u64 = 1;

@@ -1,12 +1,14 @@
 //! Rounds of stage kernels over each tile: the wavefront model's dispatch.
 //!
-//! For each tile, a round is one command buffer: the *running* word is zeroed, the round's
-//! kernels are dispatched in order (same tile parameters, each with its own bind group): over
-//! the tile, as a row of workgroups, or indirectly from workgroup counts an earlier kernel of the round
-//! stored in the flag's buffer, copied before the first of them ([`RoundDispatch`]); then the word
-//! is copied to a mapped buffer and read. A round that found no path
-//! running ends the tile's rounds; the finish kernel then runs once over the tile. Tiles run one
-//! after the other, so one tile's path state is all the state buffer has to hold.
+//! For each tile, a round is one command buffer. Its kernels ([`RoundKernels::round`]) are
+//! dispatched in order (same tile parameters, each with its own bind group): over the tile, as a
+//! row of workgroups, or indirectly from workgroup counts an earlier kernel of the round stored in
+//! the flag's buffer, copied before the first of them ([`RoundDispatch`]). The round's leading
+//! direct kernels (those that list the running paths and store the *running* word) run once more
+//! at its end, for the next round: the word is then copied to a mapped buffer and read, and at 0
+//! the tile's paths are done, without a round that runs only to find nothing. A tile's first
+//! round starts with those kernels too. The finish kernel then runs once over the tile.
+//! Tiles run one after the other, so one tile's path state is all the state buffer has to hold.
 //!
 //! With [`RoundKernels::timed`], every dispatch of a round is submitted and waited for alone and
 //! timed, and the report sums each kernel's milliseconds ([`RoundsReport::stage_ms`]): a profile
@@ -39,9 +41,10 @@ pub struct RoundKernels<'a> {
     pub round: Vec<(&'a Kernel, RoundDispatch)>,
     /// The kernel run once over a tile after its last round.
     pub finish: &'a Kernel,
-    /// The binding of the buffer holding the *running* word: zeroed before each round, set by the
-    /// round's kernels to the number of paths the round ran, non-zero while some path still runs
-    /// (and holding the indirect dispatches' workgroup counts).
+    /// The binding of the buffer holding the *running* word: zeroed before a tile's first round,
+    /// set by the round's leading direct kernels to the number of paths the (next) round runs,
+    /// non-zero while some path still runs (and holding the indirect dispatches' workgroup
+    /// counts).
     pub flag_binding: u32,
     /// The byte offset of that word (a multiple of 4).
     pub flag_offset: u64,
@@ -56,10 +59,10 @@ pub struct RoundKernels<'a> {
 pub struct RoundsReport {
     /// Tiles, batches (one per tile) and times, as for a plain dispatch.
     pub dispatch: DispatchReport,
-    /// Rounds run over all tiles (each tile's last round found nothing to do).
+    /// Rounds run over all tiles (a tile's last round is the one after which nothing runs).
     pub rounds: u64,
-    /// The *running* words read after each round, summed: the paths the rounds ran (for the
-    /// wavefront model, the slots its listed stages ran over).
+    /// The *running* words of the rounds, summed: the paths the rounds ran (for the wavefront
+    /// model, the slots its listed stages ran over).
     pub running: u64,
     /// The tile's pixels summed over the same rounds: what the rounds would run over with every
     /// slot in every round (`running / tile_slots` is the fraction of lanes that held a path).
@@ -143,7 +146,7 @@ impl TileDispatcher {
         let (staging, error) = gpu.scoped(|| {
             gpu.device().create_buffer(&wgpu::BufferDescriptor {
                 label: Some("rtc running paths"),
-                size: 4,
+                size: 8,
                 usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
                 mapped_at_creation: false,
             })
@@ -158,92 +161,138 @@ impl TileDispatcher {
             })
         });
         wgpu_result("read-back allocation", error)?;
+        let runs = round_runs(&kernels.round);
+        // The leading direct runs: the ones that list the running slots.
+        let head = runs
+            .iter()
+            .take_while(|r| matches!(r, Run::Direct(_)))
+            .count();
 
         report.dispatch.flush_ms = flush_uploads(gpu)?;
 
         let start = Instant::now();
         let finish_group = groups.len() - 1;
         for (done, tile) in tiles.iter().enumerate() {
+            let slots = u64::from(tile.extent[0]) * u64::from(tile.extent[1]);
             // Fits: the buffer size was checked against u32 offsets in params_buffer.
             let offset = (u64::from(tile.tile_index) * stride) as u32;
-            let mut finished = false;
-            let dispatch =
-                |pass: &mut wgpu::ComputePass<'_>, k: &Kernel, how: RoundDispatch, group| {
-                    pass.set_pipeline(k.pipeline());
-                    pass.set_bind_group(0, group, &[offset]);
-                    match how {
-                        RoundDispatch::Tile => {
-                            let [x, y] = tile_workgroups(k, tile);
-                            pass.dispatch_workgroups(x, y, 1);
-                        }
-                        RoundDispatch::Row(n) => pass.dispatch_workgroups(n, 1, 1),
-                        RoundDispatch::Indirect(_) => {
-                            pass.dispatch_workgroups_indirect(&indirect, 0);
-                        }
+            let dispatch = |pass: &mut wgpu::ComputePass<'_>, at: usize| {
+                let (k, how) = kernels.round[at];
+                pass.set_pipeline(k.pipeline());
+                pass.set_bind_group(0, &groups[at], &[offset]);
+                match how {
+                    RoundDispatch::Tile => {
+                        let [x, y] = tile_workgroups(k, tile);
+                        pass.dispatch_workgroups(x, y, 1);
                     }
-                };
-            // Copies the workgroup counts of an indirect dispatch unless the last copy holds them
-            // (`copied`: its offset, forgotten after a direct dispatch, which may rewrite them).
-            let copy_counts =
-                |e: &mut wgpu::CommandEncoder, how: RoundDispatch, copied: &mut Option<u64>| {
-                    match how {
-                        RoundDispatch::Indirect(at) if *copied != Some(at) => {
-                            e.copy_buffer_to_buffer(flag, at, &indirect, 0, Some(12));
-                            *copied = Some(at);
-                        }
-                        RoundDispatch::Indirect(_) => {}
-                        RoundDispatch::Tile | RoundDispatch::Row(_) => *copied = None,
-                    }
-                };
+                    RoundDispatch::Row(n) => pass.dispatch_workgroups(n, 1, 1),
+                    RoundDispatch::Indirect(_) => pass.dispatch_workgroups_indirect(&indirect, 0),
+                }
+            };
             let round = "rtc wavefront round";
+            // A round's runs, then its leading direct runs (count, compact) again for the next
+            // round, so the word read after a round is the next round's list length and a
+            // tile's rounds end without one that finds nothing. The tile's first round starts
+            // with the leading runs too, and also reads the word they store (its list's length).
+            let mut listed: Option<u32> = None;
+            let mut finished = false;
             for _ in 0..kernels.max_rounds {
+                let first = listed.is_none();
+                // (index into `runs`, where in the read-back buffer to copy the word after it)
+                let mut order: Vec<(usize, Option<u64>)> = Vec::new();
+                if first {
+                    order.extend((0..head).map(|r| (r, None)));
+                    if let Some(last) = order.last_mut() {
+                        last.1 = Some(0);
+                    }
+                }
+                order.extend((head..runs.len()).map(|r| (r, None)));
+                order.extend((0..head).map(|r| (r, None)));
+                if let Some(last) = order.last_mut() {
+                    last.1 = Some(4);
+                }
+                let read = |e: &mut wgpu::CommandEncoder, to: u64| {
+                    e.copy_buffer_to_buffer(flag, flag_offset, &staging, to, Some(4));
+                };
+                let copy = |e: &mut wgpu::CommandEncoder, at: u64| {
+                    e.copy_buffer_to_buffer(flag, at, &indirect, 0, Some(12));
+                };
                 if timed {
-                    // The profile: zero the word, then each dispatch alone, waited for.
-                    submit(gpu, round, "wavefront round", |e| {
-                        e.clear_buffer(flag, flag_offset, Some(4))
-                    })?;
-                    let mut copied = None;
-                    for (&(k, how), group) in kernels.round.iter().zip(&groups) {
+                    // The profile: each dispatch alone, waited for.
+                    if first {
+                        submit(gpu, round, "wavefront round", |e| {
+                            e.clear_buffer(flag, flag_offset, Some(4))
+                        })?;
+                    }
+                    let mut timed_one = |at: usize, counts: Option<u64>| {
+                        let label = kernels.round[at].0.label();
                         let begin = Instant::now();
-                        submit(gpu, k.label(), "wavefront round", |e| {
-                            copy_counts(e, how, &mut copied);
-                            dispatch(&mut begin_pass(e, k.label()), k, how, group)
+                        submit(gpu, label, "wavefront round", |e| {
+                            if let Some(counts) = counts {
+                                copy(e, counts);
+                            }
+                            dispatch(&mut begin_pass(e, label), at)
                         })?;
                         wait(gpu)?;
-                        add_stage_ms(&mut report.stage_ms, k.label(), elapsed_ms(begin));
-                    }
-                    submit(gpu, round, "wavefront round", |e| {
-                        e.copy_buffer_to_buffer(flag, flag_offset, &staging, 0, Some(4));
-                    })?;
-                } else {
-                    submit(gpu, round, "wavefront round", |e| {
-                        e.clear_buffer(flag, flag_offset, Some(4));
-                        // One pass for each run of dispatches between copies of counts.
-                        let mut copied = None;
-                        let mut next = kernels.round.iter().zip(&groups).peekable();
-                        while let Some((&(k, how), group)) = next.next() {
-                            copy_counts(e, how, &mut copied);
-                            let mut pass = begin_pass(e, round);
-                            dispatch(&mut pass, k, how, group);
-                            while let Some((&(k, how), group)) = next.next_if(|(&(_, how), _)| {
-                                !matches!(how, RoundDispatch::Indirect(at) if copied != Some(at))
-                            }) {
-                                if !matches!(how, RoundDispatch::Indirect(_)) {
-                                    copied = None;
+                        add_stage_ms(&mut report.stage_ms, label, elapsed_ms(begin));
+                        Ok::<(), DispatchError>(())
+                    };
+                    for &(r, to) in &order {
+                        match &runs[r] {
+                            Run::Direct(at) => timed_one(*at, None)?,
+                            Run::Indirect { counts, kernels } => {
+                                for (i, &at) in kernels.iter().enumerate() {
+                                    timed_one(at, (i == 0).then_some(*counts))?;
                                 }
-                                dispatch(&mut pass, k, how, group);
                             }
                         }
-                        e.copy_buffer_to_buffer(flag, flag_offset, &staging, 0, Some(4));
+                        if let Some(to) = to {
+                            submit(gpu, round, "wavefront round", |e| read(e, to))?;
+                        }
+                    }
+                } else {
+                    submit(gpu, round, "wavefront round", |e| {
+                        if first {
+                            e.clear_buffer(flag, flag_offset, Some(4));
+                        }
+                        // One pass for each run of direct dispatches and each run of indirect
+                        // ones, whose counts are copied before its pass.
+                        let mut pass: Option<wgpu::ComputePass<'static>> = None;
+                        for &(r, to) in &order {
+                            match &runs[r] {
+                                Run::Direct(at) => {
+                                    let pass = pass.get_or_insert_with(|| {
+                                        begin_pass(e, round).forget_lifetime()
+                                    });
+                                    dispatch(pass, *at);
+                                }
+                                Run::Indirect { counts, kernels } => {
+                                    drop(pass.take());
+                                    copy(e, *counts);
+                                    let mut listed_pass = begin_pass(e, round);
+                                    for &at in kernels {
+                                        dispatch(&mut listed_pass, at);
+                                    }
+                                }
+                            }
+                            if let Some(to) = to {
+                                drop(pass.take());
+                                read(e, to);
+                            }
+                        }
                     })?;
                 }
                 report.rounds += 1;
-                report.tile_slots += u64::from(tile.extent[0]) * u64::from(tile.extent[1]);
-                let running = map_read(gpu, &staging, 4, |bytes| {
-                    u32::from_le_bytes([bytes[0], bytes[1], bytes[2], bytes[3]])
+                report.tile_slots += slots;
+                let [this, next] = map_read(gpu, &staging, 8, |bytes| {
+                    let word = |i: usize| {
+                        u32::from_le_bytes([bytes[i], bytes[i + 1], bytes[i + 2], bytes[i + 3]])
+                    };
+                    [word(0), word(4)]
                 })?;
-                report.running += u64::from(running);
-                if running == 0 {
+                report.running += u64::from(listed.unwrap_or(this));
+                listed = Some(next);
+                if next == 0 {
                     finished = true;
                     break;
                 }
@@ -256,12 +305,11 @@ impl TileDispatcher {
             let finish = kernels.finish;
             let begin = Instant::now();
             submit(gpu, finish.label(), "wavefront finish", |e| {
-                dispatch(
-                    &mut begin_pass(e, finish.label()),
-                    finish,
-                    RoundDispatch::Tile,
-                    &groups[finish_group],
-                );
+                let mut pass = begin_pass(e, finish.label());
+                pass.set_pipeline(finish.pipeline());
+                pass.set_bind_group(0, &groups[finish_group], &[offset]);
+                let [x, y] = tile_workgroups(finish, tile);
+                pass.dispatch_workgroups(x, y, 1);
             })?;
             wait(gpu)?;
             if timed {
@@ -273,6 +321,35 @@ impl TileDispatcher {
         report.dispatch.dispatch_ms = elapsed_ms(start);
         Ok(report)
     }
+}
+
+/// A round's dispatches as runs: a direct dispatch alone, or consecutive indirect ones from the
+/// same counts (copied once, before the first).
+enum Run {
+    /// The round's kernel at this index, dispatched over the tile or as a row.
+    Direct(usize),
+    /// The round's kernels at these indices, indirectly from the counts at `counts`.
+    Indirect { counts: u64, kernels: Vec<usize> },
+}
+
+/// `round` cut into [`Run`]s.
+fn round_runs(round: &[(&Kernel, RoundDispatch)]) -> Vec<Run> {
+    let mut runs: Vec<Run> = Vec::new();
+    for (at, (_, how)) in round.iter().enumerate() {
+        match (how, runs.last_mut()) {
+            (RoundDispatch::Indirect(c), Some(Run::Indirect { counts, kernels }))
+                if c == counts =>
+            {
+                kernels.push(at)
+            }
+            (RoundDispatch::Indirect(c), _) => runs.push(Run::Indirect {
+                counts: *c,
+                kernels: vec![at],
+            }),
+            (RoundDispatch::Tile | RoundDispatch::Row(_), _) => runs.push(Run::Direct(at)),
+        }
+    }
+    runs
 }
 
 /// Records into a new command buffer labelled `label` with `encode` and submits it, in an error
