@@ -3,9 +3,9 @@
 //! For each tile, a round is one command buffer. Its kernels ([`RoundKernels::round`]) are
 //! dispatched in order (same tile parameters, each with its own bind group): over the tile, as a
 //! row of workgroups, or indirectly from workgroup counts an earlier kernel of the round stored in
-//! the flag's buffer, copied before the first of them ([`RoundDispatch`]). The round's leading
-//! direct kernels (those that list the running paths and store the *running* word) run once more
-//! at its end, for the next round: the word is then copied to a mapped buffer and read, and at 0
+//! the flag's buffer, copied before the first of them ([`RoundDispatch`]). The round's direct
+//! kernels before its first indirect one (those that list the running paths and store the
+//! *running* word) run once more at its end, for the next round: the word is then copied to a mapped buffer and read, and at 0
 //! the tile's paths are done, without a round that runs only to find nothing. A tile's first
 //! round starts with those kernels too. The finish kernel then runs once over the tile.
 //! Tiles run one after the other, so one tile's path state is all the state buffer has to hold.
@@ -42,9 +42,9 @@ pub struct RoundKernels<'a> {
     /// The kernel run once over a tile after its last round.
     pub finish: &'a Kernel,
     /// The binding of the buffer holding the *running* word: zeroed before a tile's first round,
-    /// set by the round's leading direct kernels to the number of paths the (next) round runs,
-    /// non-zero while some path still runs (and holding the indirect dispatches' workgroup
-    /// counts).
+    /// set by the round's leading direct kernels to the number of paths the (next) round runs
+    /// (a round without such kernels: zeroed before each round and set by its kernels), non-zero
+    /// while some path still runs (and holding the indirect dispatches' workgroup counts).
     pub flag_binding: u32,
     /// The byte offset of that word (a multiple of 4).
     pub flag_offset: u64,
@@ -162,11 +162,12 @@ impl TileDispatcher {
         });
         wgpu_result("read-back allocation", error)?;
         let runs = round_runs(&kernels.round);
-        // The leading direct runs: the ones that list the running slots.
+        // The leading direct runs before the first indirect one: the ones that list the running
+        // slots (none in a round without indirect dispatches).
         let head = runs
             .iter()
-            .take_while(|r| matches!(r, Run::Direct(_)))
-            .count();
+            .position(|r| matches!(r, Run::Indirect { .. }))
+            .unwrap_or(0);
 
         report.dispatch.flush_ms = flush_uploads(gpu)?;
 
@@ -217,9 +218,11 @@ impl TileDispatcher {
                 let copy = |e: &mut wgpu::CommandEncoder, at: u64| {
                     e.copy_buffer_to_buffer(flag, at, &indirect, 0, Some(12));
                 };
+                // Without leading direct kernels, the word is the round's own, zeroed before it.
+                let zero = first || head == 0;
                 if timed {
                     // The profile: each dispatch alone, waited for.
-                    if first {
+                    if zero {
                         submit(gpu, round, "wavefront round", |e| {
                             e.clear_buffer(flag, flag_offset, Some(4))
                         })?;
@@ -252,7 +255,7 @@ impl TileDispatcher {
                     }
                 } else {
                     submit(gpu, round, "wavefront round", |e| {
-                        if first {
+                        if zero {
                             e.clear_buffer(flag, flag_offset, Some(4));
                         }
                         // One pass for each run of direct dispatches and each run of indirect
@@ -290,7 +293,14 @@ impl TileDispatcher {
                     };
                     [word(0), word(4)]
                 })?;
-                report.running += u64::from(listed.unwrap_or(this));
+                // The paths this round ran: its list's length, or, without leading direct
+                // kernels, the word its kernels stored.
+                let ran = if head == 0 {
+                    next
+                } else {
+                    listed.unwrap_or(this)
+                };
+                report.running += u64::from(ran);
                 listed = Some(next);
                 if next == 0 {
                     finished = true;
