@@ -169,6 +169,24 @@ impl TileDispatcher {
             .position(|r| matches!(r, Run::Indirect { .. }))
             .unwrap_or(0);
 
+        // A tile's first round and its later ones as (index into `runs`, where in the read-back
+        // buffer to copy the word after it): the first starts with the head and reads its word
+        // (the round's list length) at 0; each ends with the head and reads the next round's at 4.
+        let orders: [Vec<(usize, Option<u64>)>; 2] = [true, false].map(|first| {
+            let head_runs =
+                |read: u64| (0..head).map(move |r| (r, (r + 1 == head).then_some(read)));
+            let mut order: Vec<(usize, Option<u64>)> = Vec::new();
+            if first {
+                order.extend(head_runs(0));
+            }
+            order.extend((head..runs.len()).map(|r| (r, None)));
+            order.extend(head_runs(4));
+            if let Some(last) = order.last_mut() {
+                last.1 = Some(4);
+            }
+            order
+        });
+
         report.dispatch.flush_ms = flush_uploads(gpu)?;
 
         let start = Instant::now();
@@ -177,10 +195,12 @@ impl TileDispatcher {
             let slots = u64::from(tile.extent[0]) * u64::from(tile.extent[1]);
             // Fits: the buffer size was checked against u32 offsets in params_buffer.
             let offset = (u64::from(tile.tile_index) * stride) as u32;
-            let dispatch = |pass: &mut wgpu::ComputePass<'_>, at: usize| {
-                let (k, how) = kernels.round[at];
+            let dispatch_kernel = |pass: &mut wgpu::ComputePass<'_>,
+                                   k: &Kernel,
+                                   how: RoundDispatch,
+                                   group: &wgpu::BindGroup| {
                 pass.set_pipeline(k.pipeline());
-                pass.set_bind_group(0, &groups[at], &[offset]);
+                pass.set_bind_group(0, group, &[offset]);
                 match how {
                     RoundDispatch::Tile => {
                         let [x, y] = tile_workgroups(k, tile);
@@ -189,6 +209,11 @@ impl TileDispatcher {
                     RoundDispatch::Row(n) => pass.dispatch_workgroups(n, 1, 1),
                     RoundDispatch::Indirect(_) => pass.dispatch_workgroups_indirect(&indirect, 0),
                 }
+            };
+            // The round's kernel at `at`.
+            let dispatch = |pass: &mut wgpu::ComputePass<'_>, at: usize| {
+                let (k, how) = kernels.round[at];
+                dispatch_kernel(pass, k, how, &groups[at]);
             };
             let round = "rtc wavefront round";
             // A round's runs, then its leading direct runs (count, compact) again for the next
@@ -199,19 +224,7 @@ impl TileDispatcher {
             let mut finished = false;
             for _ in 0..kernels.max_rounds {
                 let first = listed.is_none();
-                // (index into `runs`, where in the read-back buffer to copy the word after it)
-                let mut order: Vec<(usize, Option<u64>)> = Vec::new();
-                if first {
-                    order.extend((0..head).map(|r| (r, None)));
-                    if let Some(last) = order.last_mut() {
-                        last.1 = Some(0);
-                    }
-                }
-                order.extend((head..runs.len()).map(|r| (r, None)));
-                order.extend((0..head).map(|r| (r, None)));
-                if let Some(last) = order.last_mut() {
-                    last.1 = Some(4);
-                }
+                let order = &orders[usize::from(!first)];
                 let read = |e: &mut wgpu::CommandEncoder, to: u64| {
                     e.copy_buffer_to_buffer(flag, flag_offset, &staging, to, Some(4));
                 };
@@ -240,7 +253,7 @@ impl TileDispatcher {
                         add_stage_ms(&mut report.stage_ms, label, elapsed_ms(begin));
                         Ok::<(), DispatchError>(())
                     };
-                    for &(r, to) in &order {
+                    for &(r, to) in order {
                         match &runs[r] {
                             Run::Direct(at) => timed_one(*at, None)?,
                             Run::Indirect { counts, kernels } => {
@@ -261,7 +274,7 @@ impl TileDispatcher {
                         // One pass for each run of direct dispatches and each run of indirect
                         // ones, whose counts are copied before its pass.
                         let mut pass: Option<wgpu::ComputePass<'static>> = None;
-                        for &(r, to) in &order {
+                        for &(r, to) in order {
                             match &runs[r] {
                                 Run::Direct(at) => {
                                     let pass = pass.get_or_insert_with(|| {
@@ -315,11 +328,12 @@ impl TileDispatcher {
             let finish = kernels.finish;
             let begin = Instant::now();
             submit(gpu, finish.label(), "wavefront finish", |e| {
-                let mut pass = begin_pass(e, finish.label());
-                pass.set_pipeline(finish.pipeline());
-                pass.set_bind_group(0, &groups[finish_group], &[offset]);
-                let [x, y] = tile_workgroups(finish, tile);
-                pass.dispatch_workgroups(x, y, 1);
+                dispatch_kernel(
+                    &mut begin_pass(e, finish.label()),
+                    finish,
+                    RoundDispatch::Tile,
+                    &groups[finish_group],
+                );
             })?;
             wait(gpu)?;
             if timed {
