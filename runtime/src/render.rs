@@ -336,14 +336,16 @@ enum Kernels {
 }
 
 impl Kernels {
-    /// The dispatch of a wavefront pass: a round is count, compact, camera, trace, shade, and with
-    /// a shadow stage shadow, shade (`stages` in `wavefront::stages` order), each dispatched as
-    /// its [`wavefront::Stage::dispatch`] says.
+    /// The dispatch of a wavefront pass: a round is count, compact, camera (in a tile's first
+    /// round only, unless `camera_every_round`), trace, shade, and with a shadow stage shadow,
+    /// shade (`stages` in `wavefront::stages` order), each dispatched as its
+    /// [`wavefront::Stage::dispatch`] says.
     fn rounds(
         stages: &[Kernel],
         max_rounds: u32,
         flag_offset: u64,
         timed: bool,
+        camera_every_round: bool,
     ) -> Option<RoundKernels<'_>> {
         let (count, compact, camera, trace, shade, shadow, finish) = match stages {
             [count, compact, camera, trace, shade, shadow, finish] => {
@@ -374,6 +376,9 @@ impl Kernels {
         }
         Some(RoundKernels {
             round,
+            // The camera stage (third): a slot is at `STATUS_CAMERA` when its record is zeroed,
+            // at a tile's first round, and again only after a sample of a pass of several.
+            first_round_only: if camera_every_round { vec![] } else { vec![2] },
             finish,
             flag_binding: abi::binding("paths")?.binding,
             flag_offset,
@@ -1142,6 +1147,7 @@ impl<'g> Renderer<'g> {
                         *max_rounds,
                         self.path_flag_offset,
                         self.options.stage_times,
+                        self.samples_per_pass > 1,
                     )
                     .ok_or(RenderError::NoStageKernels)?;
                     let r = self.dispatcher.dispatch_rounds(

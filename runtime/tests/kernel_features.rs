@@ -18,7 +18,9 @@
 //! - the wavefront execution model against the megakernel, on every scene of the suite in small
 //!   tiles (bit-identical on lavapipe), with its shadow rays traced in the shadow stage and in the
 //!   shade stage (then the same rays counted); on a shading step whose second shadow query depends on
-//!   the first answer (replayed until exact), and past the shadow queries one step records (warned).
+//!   the first answer (replayed until exact), and past the shadow queries one step records (warned);
+//!   its camera stage in a tile's first round only, and in every round for a camera of several
+//!   samples a pass.
 //! - a `@light` program whose shadow queries depend on each other's answers: the megakernel defers
 //!   them to `sample_light` and runs the program again until every answer is known, so it must
 //!   give the wavefront model's image pixel for pixel; past `LIGHT_QUERIES` queries in one light
@@ -520,6 +522,38 @@ fn the_listed_stages_run_over_the_running_paths_only() {
             assert_eq!(px(&wave, x, y), want, "pixel ({x}, {y})");
         }
     }
+}
+
+/// The camera stage's rounds: with one sample per pixel a pass (`listed.rt`, above) it runs in a
+/// tile's first round only; with a camera of three (`samples.rt`: jittered rays, a mirror's edge
+/// through a column of pixels) a slot is back at the camera after each sample but a pass's last,
+/// and the host runs the stage in every round. One pass of three samples, in 16 x 16 tiles: the
+/// image is the megakernel's, bit for bit, and the jitter shows (most of the edge column's pixels
+/// lie strictly between the background's blue and the mirror's half of it: a pixel's three
+/// samples all fall on one side of the edge with probability about 1/4).
+#[test]
+fn a_camera_of_several_samples_a_pass_gets_them_all_from_the_camera_stage() {
+    let Some(gpu) =
+        gpu_or_skip("a_camera_of_several_samples_a_pass_gets_them_all_from_the_camera_stage")
+    else {
+        return;
+    };
+    let file = scene("samples");
+    let dir = temp_dir("features", "samples");
+    let compiled = compile_with_stages(&file, &dir);
+    assert_eq!(compiled.samples_per_pass, 3);
+    let _ = std::fs::remove_dir_all(&dir);
+    let (mega, wave, stats) = both_models(&gpu, "samples", &file, [32, 32]);
+    assert_eq!((stats.samples, stats.passes), (3, 1));
+    let off = differing(&mega, &wave, 0.0);
+    assert!(off.is_empty(), "{} pixels differ", off.len());
+    let edge: Vec<f32> = (0..32).map(|y| px(&wave, 16, y)[2]).collect();
+    assert!(edge.iter().all(|&b| (0.5..=1.0).contains(&b)), "{edge:?}");
+    let mixed = edge.iter().filter(|&&b| b > 0.5 && b < 1.0).count();
+    assert!(
+        mixed >= 8,
+        "{mixed} of the edge column's pixels mix both: {edge:?}"
+    );
 }
 
 /// The path loop (`KernelConfig::path_loop`: no frames, a throughput, Russian roulette by it)

@@ -7,7 +7,8 @@
 //! kernels before its first indirect one (those that list the running paths and store the
 //! *running* word) run once more at its end, for the next round: the word is then copied to a mapped buffer and read, and at 0
 //! the tile's paths are done, without a round that runs only to find nothing. A tile's first
-//! round starts with those kernels too. The finish kernel then runs once over the tile.
+//! round starts with those kernels too; the round's `first_round_only` kernels run in a tile's
+//! first round alone. The finish kernel then runs once over the tile.
 //! Tiles run one after the other, so one tile's path state is all the state buffer has to hold.
 //!
 //! With [`RoundKernels::timed`], every dispatch of a round is submitted and waited for alone and
@@ -39,6 +40,9 @@ pub enum RoundDispatch {
 pub struct RoundKernels<'a> {
     /// The kernels of one round, dispatched in this order and way (a kernel may appear twice).
     pub round: Vec<(&'a Kernel, RoundDispatch)>,
+    /// Indices into `round` of indirect kernels dispatched only in a tile's first round (the
+    /// wavefront model's camera stage: after it, the shade stage starts a slot's samples).
+    pub first_round_only: Vec<usize>,
     /// The kernel run once over a tile after its last round.
     pub finish: &'a Kernel,
     /// The binding of the buffer holding the *running* word: zeroed before a tile's first round,
@@ -161,18 +165,26 @@ impl TileDispatcher {
             })
         });
         wgpu_result("read-back allocation", error)?;
-        let runs = round_runs(&kernels.round);
+        // A tile's first round's runs, and its later rounds' (without `first_round_only`).
+        let runs: [Vec<Run>; 2] = [true, false].map(|first| {
+            round_runs(&kernels.round, |at| {
+                first || !kernels.first_round_only.contains(&at)
+            })
+        });
         // The leading direct runs before the first indirect one: the ones that list the running
-        // slots (none in a round without indirect dispatches).
-        let head = runs
+        // slots (none in a round without indirect dispatches). The same in both, whose direct
+        // runs are the same.
+        let head = runs[0]
             .iter()
             .position(|r| matches!(r, Run::Indirect { .. }))
             .unwrap_or(0);
 
-        // A tile's first round and its later ones as (index into `runs`, where in the read-back
-        // buffer to copy the word after it): the first starts with the head and reads its word
-        // (the round's list length) at 0; each ends with the head and reads the next round's at 4.
+        // A tile's first round and its later ones as (index into its `runs`, where in the
+        // read-back buffer to copy the word after it): the first starts with the head and reads
+        // its word (the round's list length) at 0; each ends with the head and reads the next
+        // round's at 4.
         let orders: [Vec<(usize, Option<u64>)>; 2] = [true, false].map(|first| {
+            let runs = &runs[usize::from(!first)];
             let head_runs =
                 |read: u64| (0..head).map(move |r| (r, (r + 1 == head).then_some(read)));
             let mut order: Vec<(usize, Option<u64>)> = Vec::new();
@@ -225,6 +237,7 @@ impl TileDispatcher {
             for _ in 0..kernels.max_rounds {
                 let first = listed.is_none();
                 let order = &orders[usize::from(!first)];
+                let runs = &runs[usize::from(!first)];
                 let read = |e: &mut wgpu::CommandEncoder, to: u64| {
                     e.copy_buffer_to_buffer(flag, flag_offset, &staging, to, Some(4));
                 };
@@ -356,10 +369,10 @@ enum Run {
     Indirect { counts: u64, kernels: Vec<usize> },
 }
 
-/// `round` cut into [`Run`]s.
-fn round_runs(round: &[(&Kernel, RoundDispatch)]) -> Vec<Run> {
+/// The kernels of `round` that `keep` (by index) cut into [`Run`]s.
+fn round_runs(round: &[(&Kernel, RoundDispatch)], keep: impl Fn(usize) -> bool) -> Vec<Run> {
     let mut runs: Vec<Run> = Vec::new();
-    for (at, (_, how)) in round.iter().enumerate() {
+    for (at, (_, how)) in round.iter().enumerate().filter(|&(at, _)| keep(at)) {
         match (how, runs.last_mut()) {
             (RoundDispatch::Indirect(c), Some(Run::Indirect { counts, kernels }))
                 if c == counts =>
