@@ -5,10 +5,11 @@
 //! row of workgroups, or indirectly from workgroup counts an earlier kernel of the round stored in
 //! the flag's buffer, copied before the first of them ([`RoundDispatch`]). The round's direct
 //! kernels before its first indirect one (those that list the running paths and store the
-//! *running* word) run once more at its end, for the next round: the word is then copied to a mapped buffer and read, and at 0
-//! the tile's paths are done, without a round that runs only to find nothing. A tile's first
-//! round starts with those kernels too; the round's `first_round_only` kernels run in a tile's
-//! first round alone. The finish kernel then runs once over the tile.
+//! *running* word) run once more at its end, for the next round: the word is then copied to a
+//! mapped buffer and read, and at 0 the tile's paths are done, without a round that runs only to
+//! find nothing. A tile's first round starts with those kernels too; the round's
+//! `first_round_only` kernels run in a tile's first round alone. The finish kernel then runs once
+//! over the tile.
 //! Tiles run one after the other, so one tile's path state is all the state buffer has to hold.
 //!
 //! With [`RoundKernels::timed`], every dispatch of a round is submitted and waited for alone and
@@ -41,7 +42,8 @@ pub struct RoundKernels<'a> {
     /// The kernels of one round, dispatched in this order and way (a kernel may appear twice).
     pub round: Vec<(&'a Kernel, RoundDispatch)>,
     /// Indices into `round` of indirect kernels dispatched only in a tile's first round (the
-    /// wavefront model's camera stage: after it, the shade stage starts a slot's samples).
+    /// wavefront model's camera stage when a pass takes one sample per pixel: after that round no
+    /// slot is at its status).
     pub first_round_only: Vec<usize>,
     /// The kernel run once over a tile after its last round.
     pub finish: &'a Kernel,
