@@ -268,6 +268,18 @@ fn both_models_placing(
     size: [u32; 2],
     shadow_rays: ShadowRays,
 ) -> (LinearImage, LinearImage, rtc_runtime::render::RenderStats) {
+    both_models_in_tiles(gpu, name, file, size, shadow_rays, [16, 16])
+}
+
+/// [`both_models_placing`] in tiles of `tile` pixels.
+fn both_models_in_tiles(
+    gpu: &Gpu,
+    name: &str,
+    file: &SceneFile,
+    size: [u32; 2],
+    shadow_rays: ShadowRays,
+    [tile_width, tile_height]: [u32; 2],
+) -> (LinearImage, LinearImage, rtc_runtime::render::RenderStats) {
     use rtc_compiler::kernel::ExecModel;
     use rtc_runtime::gpu::TileConfig;
     let dir = temp_dir("features", name);
@@ -276,8 +288,8 @@ fn both_models_placing(
         size: Some(size),
         samples: Some(1),
         tiles: Some(TileConfig {
-            tile_width: 16,
-            tile_height: 16,
+            tile_width,
+            tile_height,
             tiles_per_batch: 1,
         }),
         exec: Some(exec),
@@ -522,6 +534,60 @@ fn the_listed_stages_run_over_the_running_paths_only() {
             assert_eq!(px(&wave, x, y), want, "pixel ({x}, {y})");
         }
     }
+}
+
+/// The count and compact stages of a tile's later rounds list the running slots of the list the
+/// round before made when it holds at most half the tile, else of the tile (two lists in turn,
+/// `LIST_SELECTOR` and `list_source` in `stdlib/kernel/wavefront.rt`; the entries placed in
+/// permuted runs, `list_place`). `listed.rt` at 32 x 32 in one tile: the first round lists all
+/// 1,024 slots, the second the right half's 512 (from the tile, as the first list holds it
+/// all), and the listing at its end reads that list (16 of each row of 32: an entry's place is no
+/// slot's index) and finds none. `samples.rt`, three samples a pass, in one tile: the left half's
+/// slots run three rounds, the mirror's six, the edge column's in between (jittered samples), so
+/// the later rounds list from lists of about half the tile, in turn. A listing that read the
+/// wrong list, a stale length or a wrong place would lose or repeat slots: the counts or the
+/// image (the megakernel's, bit for bit) would differ (reading list 0 for list 1 leaves 199
+/// pixels different).
+#[test]
+fn later_rounds_list_from_the_last_list() {
+    let Some(gpu) = gpu_or_skip("later_rounds_list_from_the_last_list") else {
+        return;
+    };
+    let (mega, wave, stats) = both_models_in_tiles(
+        &gpu,
+        "listed_one_tile",
+        &scene("listed"),
+        [32, 32],
+        ShadowRays::Stage,
+        [32, 32],
+    );
+    assert_eq!(stats.rounds, 2);
+    assert_eq!(stats.slot_rounds, 2 * 1024);
+    assert_eq!(stats.listed_slots, 1024 + 512);
+    assert_eq!(stats.rays_traced, 1024 + 512);
+    let off = differing(&mega, &wave, 0.0);
+    assert!(off.is_empty(), "{} pixels differ", off.len());
+    assert_eq!(px(&wave, 3, 7), [0.0, 0.0, 1.0]);
+    assert_eq!(px(&wave, 29, 7), [0.0, 0.0, 0.5]);
+
+    let (mega, wave, stats) = both_models_in_tiles(
+        &gpu,
+        "samples_one_tile",
+        &scene("samples"),
+        [32, 32],
+        ShadowRays::Stage,
+        [32, 32],
+    );
+    assert_eq!(stats.rounds, 6, "the mirror's slots: 3 samples of 2 rays");
+    // Every slot runs its left-half rounds at least; the mirror's half (some 15 to 16 columns,
+    // the edge's pixels part of the time) three more.
+    assert!(
+        (3 * 1024 + 3 * 15 * 32..=3 * 1024 + 3 * 17 * 32).contains(&stats.listed_slots),
+        "listed {}",
+        stats.listed_slots
+    );
+    let off = differing(&mega, &wave, 0.0);
+    assert!(off.is_empty(), "{} pixels differ", off.len());
 }
 
 /// The camera stage's rounds: with one sample per pixel a pass (`listed.rt`, above) it runs in a

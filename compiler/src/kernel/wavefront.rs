@@ -6,8 +6,8 @@
 //!
 //! | stage | entry | does | traversal code |
 //! |---|---|---|---|
-//! | count | `wf_count` | counts the running slots of each of `COMPACT_BLOCKS` blocks of the tile | none |
-//! | compact | `wf_compact` | lists the running slots in slot order, their count and the listed stages' indirect dispatch | none |
+//! | count | `wf_count` | counts the running slots of each of `COMPACT_BLOCKS` blocks of the last round's list (of the tile in its first round) | none |
+//! | compact | `wf_compact` | lists those slots in slot order in the other of two lists, their count and the listed stages' indirect dispatch | none |
 //! | camera | `wf_camera` | starts the slot's next sample: seeds, calls the camera (the medium it starts in is left to the trace stage) | none |
 //! | trace | `wf_trace` | closest hit of the slot's pending ray (with `@intersection` and `@any_hit`); for media, first the medium a refracted ray enters when the shade stage could not tell it | one copy, and the medium probe for media |
 //! | shade | `wf_shade` | one shading step: miss, `@secondary_rays`, `@closest_hit`, `@medium`, `@light`; the next ray or the finished sample | one copy for its shadow rays, or none in a scene with a shadow stage |
@@ -16,17 +16,20 @@
 //!
 //! A round is count, compact, camera, trace, shade, and, when the scene has a shadow stage,
 //! shadow, shade; the camera stage only in a tile's first round when a pass takes one sample per
-//! pixel (no slot is back at the camera after it). The count and compact stages
-//! run over the tile as a few workgroups, one invocation a block of slots, and list the slots still
-//! running; the other stages of the round run over that *list*, through an indirect dispatch of as
-//! many workgroups as it needs: once some paths have ended (Russian roulette, misses), the lanes of
-//! those stages still all hold a running path, and a round costs what its running paths cost. The
-//! host runs count and compact again at the end of each round, for the next (`runtime`'s
-//! `gpu::dispatch::rounds`), so the count it reads says whether another round is needed and no
-//! round runs only to find nothing. The listed stages take the list in runs of 8 workgroups, the
-//! runs permuted (`wf_begin_listed`), so that each thread of a CPU driver, which takes a
-//! contiguous range of a dispatch's workgroups, gets paths from all over the tile. The
-//! finish stage runs over the tile.
+//! pixel (no slot is back at the camera after it). The count and compact stages run as a few
+//! workgroups, one invocation a block of entries, over the list the round before made (over the
+//! tile in a tile's first round: the running set only shrinks within a tile, as a slot becomes
+//! idle in the shade stage and running again in the finish stage), and list the slots still
+//! running in the other of two lists: a round's listing costs its running paths, not the tile
+//! (glass_mirror's 62 rounds list 12.6 % of the slots they would scan). The other stages of the
+//! round run over that *list*, through an indirect dispatch of as many workgroups as it needs:
+//! once some paths have ended (Russian roulette, misses), the lanes of those stages still all hold
+//! a running path, and a round costs what its running paths cost. The host runs count and compact
+//! again at the end of each round, for the next (`runtime`'s `gpu::dispatch::rounds`), so the
+//! count it reads says whether another round is needed and no round runs only to find nothing.
+//! The listed stages take the list in runs of 8 workgroups, the runs permuted (`wf_begin_listed`),
+//! so that each thread of a CPU driver, which takes a contiguous range of a dispatch's workgroups,
+//! gets paths from all over the tile. The finish stage runs over the tile.
 //!
 //! Shadow rays ([`super::ShadowRays`], chosen by [`super::lower_shade_stage`]): where the shading
 //! step's `shadow(…)` calls, with every call inlined as a driver inlines them, reach the traversal
@@ -49,11 +52,13 @@
 //!   run's results are what a replay would compute, and the step commits at once; only a step
 //!   with an occluded query runs again. The scene has no shadow stage.
 //!
-//! Termination: the compact stage stores the count of running slots into the word after the tile's
-//! records, `PATH_WORDS * path_slots` (the first word of the *tail*, [`tail_bytes`]); the host
-//! ends the tile's rounds when it reads 0 after one. Rays are counted per slot (`PATH_RAYS`) and added to `COUNTER_RAYS` once a
-//! pixel by the finish stage: one atomic a pixel, as in the megakernel, instead of one per stage
-//! (atomics on one address from every lane serialise the CPU's threads).
+//! Termination: the compact stage stores the count of running slots into the word after the
+//! tile's records, `PATH_WORDS * path_slots` (the first word of the *tail*, [`tail_bytes`]); the
+//! host ends the tile's rounds when it reads 0 after one, and zeroes the word before a tile's
+//! first round, which the count stage reads as "list the tile". Rays are counted per slot
+//! (`PATH_RAYS`) and added to `COUNTER_RAYS` once a pixel by the finish stage: one atomic a
+//! pixel, as in the megakernel, instead of one per stage (atomics on one address from every lane
+//! serialise the CPU's threads).
 //!
 //! Guarantees: the layout below is the one source of the path record's word offsets (they reach
 //! the kernel as `rtc:config` constants, [`config_constants`]); every stage kernel is a separate
@@ -203,18 +208,22 @@ pub const COMPACT_WORKGROUPS: u32 = 4;
 /// [`COMPACT_WORKGROUPS`] workgroups of the stage kernels' 8 x 8.
 pub const COMPACT_BLOCKS: u32 =
     COMPACT_WORKGROUPS * super::RENDER_WORKGROUP[0] * super::RENDER_WORKGROUP[1];
-/// Chunks of the tail before the list: the running count and the indirect dispatch (one chunk),
-/// then the blocks' counts (a chunk each, in its first word).
+/// Chunks of the tail before the lists: the running count and the indirect dispatch (one chunk),
+/// then the blocks' counts (a chunk each, in its first word; the first block's chunk also holds,
+/// in its other words, which list the listed stages read and the count stage's copy of the length
+/// and list it read, for the compact stage).
 pub const TAIL_HEAD_CHUNKS: u32 = 1 + COMPACT_BLOCKS;
 /// Byte offset, from the start of the tail, of the listed stages' indirect dispatch arguments
 /// (`x, y, z` workgroups, after the running count).
 pub const TAIL_DISPATCH_OFFSET: u64 = 4;
 
 /// Bytes of the tail of `paths` after a tile's records (`slots` records): the running count and
-/// the indirect dispatch (one chunk), the blocks' counts, then the list. Each count and each
-/// listed slot takes the first word of a chunk of its own: one store with no other invocation's
-/// word beside it, and one load, where a word packed four to a chunk needs a branch for each
-/// place it can have (literal component indices, as `paths.rt` uses).
+/// the indirect dispatch (one chunk), the blocks' counts, then the two lists, a chunk a slot
+/// (list 0 in its first word, list 1 in its second). Each count and each entry of a list takes a
+/// word of a chunk no other invocation of the same stage writes: one store with no other
+/// invocation's word beside it, and one load, where a word packed four to a chunk needs a branch
+/// for each place it can have (literal component indices, as `paths.rt` uses; the list's word is
+/// one branch, the same for every invocation of a dispatch).
 pub fn tail_bytes(slots: u32) -> u64 {
     (u64::from(TAIL_HEAD_CHUNKS) + u64::from(slots)) * u64::from(CHUNK_WORDS) * 4
 }
