@@ -27,9 +27,10 @@
 //! a running path, and a round costs what its running paths cost. The host runs count and compact
 //! again at the end of each round, for the next (`runtime`'s `gpu::dispatch::rounds`), so the
 //! count it reads says whether another round is needed and no round runs only to find nothing.
-//! The listed stages take the list in runs of 8 workgroups, the runs permuted (`wf_begin_listed`),
-//! so that each thread of a CPU driver, which takes a contiguous range of a dispatch's workgroups,
-//! gets paths from all over the tile. The finish stage runs over the tile.
+//! The listed stages take the list in runs of 8 workgroups, the runs permuted (the compact stage
+//! stores each entry at its place, `list_place`), so that each thread of a CPU driver, which
+//! takes a contiguous range of a dispatch's workgroups, gets paths from all over the tile. The
+//! finish stage runs over the tile.
 //!
 //! Shadow rays ([`super::ShadowRays`], chosen by [`super::lower_shade_stage`]): where the shading
 //! step's `shadow(…)` calls, with every call inlined as a driver inlines them, reach the traversal
