@@ -65,13 +65,15 @@ use rtc_compiler::abi;
 use rtc_compiler::kernel::wavefront;
 /// The execution models ([`RenderOptions::exec`]), re-exported for callers.
 pub use rtc_compiler::kernel::ExecModel;
-use rtc_compiler::kernel::{CompiledScene, BOUNDS_ENTRY, BOUNDS_WORKGROUP, RENDER_ENTRY};
+use rtc_compiler::kernel::{
+    CompiledScene, BOUNDS_ENTRY, BOUNDS_WORKGROUP, RENDER_ENTRY, RENDER_WORKGROUP,
+};
 
 use crate::assets::AssetRoots;
 use crate::gpu::{
     dispatch_once, plan_tiles, BufferLimits, DispatchError, Gpu, Kernel, KernelDesc, KernelReport,
     KernelSource, PipelineCacheStatus, PipelineError, RoundDispatch, RoundKernels, TileConfig,
-    TileDispatcher,
+    TileDispatcher, TileList,
 };
 use crate::image_out::{ImageError, LinearImage, ToneMap};
 use crate::resolve::{ResolveError, ResolveTarget, Resolver};
@@ -332,6 +334,9 @@ enum Kernels {
         stages: Vec<Kernel>,
         /// The most rounds one tile may take.
         max_rounds: u32,
+        /// A sample is one shading step: no secondary rays and no shadow stage, so with one
+        /// sample a pass every path ends in a tile's first round ([`one_step`]).
+        one_step: bool,
     },
 }
 
@@ -339,13 +344,16 @@ impl Kernels {
     /// The dispatch of a wavefront pass: a round is count, compact, camera (in a tile's first
     /// round only, unless `camera_every_round`), trace, shade, and with a shadow stage shadow,
     /// shade (`stages` in `wavefront::stages` order), each dispatched as its
-    /// [`wavefront::Stage::dispatch`] says.
+    /// [`wavefront::Stage::dispatch`] says. With `first_round_ends` (every path ends in a tile's
+    /// first round), the host lists the tile itself (`wavefront::LIST_TILE`) for its one round,
+    /// without the count and compact stages.
     fn rounds(
         stages: &[Kernel],
         max_rounds: u32,
         flag_offset: u64,
         timed: bool,
         camera_every_round: bool,
+        first_round_ends: bool,
     ) -> Option<RoundKernels<'_>> {
         let (count, compact, camera, trace, shade, shadow, finish) = match stages {
             [count, compact, camera, trace, shade, shadow, finish] => {
@@ -380,12 +388,25 @@ impl Kernels {
             // at a tile's first round, and again only after a sample of a pass of several.
             first_round_only: if camera_every_round { vec![] } else { vec![2] },
             finish,
+            tile_list: (first_round_ends && shadow.is_none()).then_some(TileList {
+                selector_offset: flag_offset + wavefront::TAIL_SELECTOR_OFFSET,
+                selector: wavefront::LIST_TILE,
+                group: RENDER_WORKGROUP[0] * RENDER_WORKGROUP[1],
+            }),
             flag_binding: abi::binding("paths")?.binding,
             flag_offset,
             max_rounds,
             timed,
         })
     }
+}
+
+/// Whether a sample of the wavefront model is one shading step: no secondary rays (no stack of
+/// frames, no path loop) and no shadow stage (the shade stage traces its shadow rays, or replays
+/// them within itself until the step commits, `wf_shade_replay_invocation`), so a path that the
+/// camera stage starts ends in the shade stage of the same round.
+fn one_step(compiled: &CompiledScene) -> bool {
+    !compiled.linked.config.has_secondary_rays && !compiled.has_shadow_stage()
 }
 
 /// Rounds one tile of the wavefront model may take: each of a sample's rays needs a round (the
@@ -744,6 +765,7 @@ impl<'g> Renderer<'g> {
             ExecModel::Wavefront => Kernels::Wavefront {
                 stages: render,
                 max_rounds: max_rounds(compiled),
+                one_step: one_step(compiled),
             },
         };
         setup.pipeline_ms = ms_since(start);
@@ -1141,13 +1163,18 @@ impl<'g> Renderer<'g> {
                     pass,
                     &mut report,
                 )?,
-                Kernels::Wavefront { stages, max_rounds } => {
+                Kernels::Wavefront {
+                    stages,
+                    max_rounds,
+                    one_step,
+                } => {
                     let kernels = Kernels::rounds(
                         stages,
                         *max_rounds,
                         self.path_flag_offset,
                         self.options.stage_times,
                         self.samples_per_pass > 1,
+                        *one_step && self.samples_per_pass <= 1,
                     )
                     .ok_or(RenderError::NoStageKernels)?;
                     let r = self.dispatcher.dispatch_rounds(

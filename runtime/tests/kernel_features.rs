@@ -446,6 +446,65 @@ fn timing_the_wavefront_stages_changes_nothing_but_the_report() {
     assert!(off.is_empty(), "{} pixels differ", off.len());
 }
 
+/// A pass whose every path ends in a tile's first round (no secondary rays, no shadow stage, one
+/// sample a pass: `shadows.rt` with its shadow rays traced or replayed in the shade stage) runs
+/// one round a tile without the count and compact stages: the host lists the tile itself
+/// (`wavefront::LIST_TILE`; the listed stages take the tile's slots in `list_place`'s permuted
+/// runs of 512). 80 x 56 in 64 x 48 tiles, a tile of six whole runs and three smaller ones: every
+/// slot is listed once, every ray is the megakernel's and so is the image, bit for bit. With a
+/// shadow stage the paths end in the first round too (the round runs the shadow stage and the
+/// shade stage's replay), but a step whose queries depend on each other may take more, so the
+/// count and compact stages list the slots, and find none at the round's end.
+#[test]
+fn a_pass_whose_paths_end_in_one_round_lists_no_tile() {
+    let Some(gpu) = gpu_or_skip("a_pass_whose_paths_end_in_one_round_lists_no_tile") else {
+        return;
+    };
+    use rtc_compiler::kernel::ExecModel;
+    use rtc_runtime::gpu::TileConfig;
+    let file = scene("shadows").set("SIDE", "80u");
+    for (shadow_rays, listing) in [
+        (ShadowRays::Shade, false),
+        (ShadowRays::Replay, false),
+        (ShadowRays::Stage, true),
+    ] {
+        let dir = temp_dir("features", &format!("tile_list_{shadow_rays:?}"));
+        let compiled = compile_with_stages_placing(&file, &dir, shadow_rays);
+        let options = |exec| RenderOptions {
+            size: Some([80, 56]),
+            samples: Some(1),
+            tiles: Some(TileConfig {
+                tile_width: 64,
+                tile_height: 48,
+                tiles_per_batch: 1,
+            }),
+            exec: Some(exec),
+            stage_times: true,
+            ..RenderOptions::default()
+        };
+        let what = format!("{shadow_rays:?}");
+        let (mega, mega_stats) =
+            common::scene::render(&gpu, &compiled, options(ExecModel::Megakernel), &what);
+        let (wave, stats) =
+            common::scene::render(&gpu, &compiled, options(ExecModel::Wavefront), &what);
+        let _ = std::fs::remove_dir_all(&dir);
+        let labels: Vec<&str> = stats.stage_ms.iter().map(|(l, _)| l.as_str()).collect();
+        assert_eq!(
+            labels.contains(&"rtc wf_count") && labels.contains(&"rtc wf_compact"),
+            listing,
+            "{what}: {labels:?}"
+        );
+        assert_eq!(stats.rounds, 4, "{what}: one round a tile");
+        assert_eq!(stats.slot_rounds, 80 * 56, "{what}");
+        assert_eq!(stats.listed_slots, 80 * 56, "{what}");
+        if shadow_rays != ShadowRays::Stage {
+            assert_eq!(stats.rays_traced, mega_stats.rays_traced, "{what}: rays");
+        }
+        let off = differing(&mega, &wave, 0.0);
+        assert!(off.is_empty(), "{what}: {} pixels differ", off.len());
+    }
+}
+
 /// Pixels where two images differ by more than `tolerance` in some channel.
 fn differing(a: &LinearImage, b: &LinearImage, tolerance: f32) -> Vec<(u32, u32)> {
     assert_eq!((a.width(), a.height()), (b.width(), b.height()));

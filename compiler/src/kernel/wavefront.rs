@@ -217,6 +217,17 @@ pub const TAIL_HEAD_CHUNKS: u32 = 1 + COMPACT_BLOCKS;
 /// Byte offset, from the start of the tail, of the listed stages' indirect dispatch arguments
 /// (`x, y, z` workgroups, after the running count).
 pub const TAIL_DISPATCH_OFFSET: u64 = 4;
+/// Word of the tail's second chunk (the first block count's) that says which list the listed
+/// stages read: 0 or 1, which the compact stage stores, or [`LIST_TILE`].
+pub const LIST_SELECTOR: u32 = 1;
+/// [`LIST_SELECTOR`]'s value for the tile itself: the listed stages' invocation `n` takes the
+/// `n`-th place of the tile's slots in `list_place`'s order. The host stores it, with the tail's
+/// first chunk (the tile's slots and their workgroups), for a pass whose every path ends in the
+/// tile's first round (no secondary rays, no shadow stage, one sample a pass): the count and
+/// compact stages would list every slot, and find none after it.
+pub const LIST_TILE: u32 = 2;
+/// Byte offset, from the start of the tail, of [`LIST_SELECTOR`]'s word.
+pub const TAIL_SELECTOR_OFFSET: u64 = (CHUNK_WORDS as u64 + LIST_SELECTOR as u64) * 4;
 
 /// Bytes of the tail of `paths` after a tile's records (`slots` records): the running count and
 /// the indirect dispatch (one chunk), the blocks' counts, then the two lists, a chunk a slot
@@ -336,6 +347,8 @@ pub fn config_constants(c: &KernelConfig) -> Vec<(&'static str, u32)> {
     out.push(("CHUNK_WORDS", CHUNK_WORDS));
     out.push(("COMPACT_BLOCKS", COMPACT_BLOCKS));
     out.push(("TAIL_HEAD_CHUNKS", TAIL_HEAD_CHUNKS));
+    out.push(("LIST_SELECTOR", LIST_SELECTOR));
+    out.push(("LIST_TILE", LIST_TILE));
     out
 }
 

@@ -30,7 +30,7 @@ use super::{elapsed_ms, error_chain, Gpu};
 
 mod rounds;
 pub(crate) use rounds::add_stage_ms;
-pub use rounds::{RoundDispatch, RoundKernels, RoundsReport};
+pub use rounds::{RoundDispatch, RoundKernels, RoundsReport, TileList};
 
 /// Per-tile parameters, one 32-byte uniform record per tile.
 ///

@@ -53,7 +53,7 @@ pub(crate) use dispatch::add_stage_ms;
 pub use dispatch::{
     dispatch_once, plan_tiles, read_buffer, read_vec4_f32, read_vec4_f32_prefix, DispatchError,
     DispatchReport, RoundDispatch, RoundKernels, RoundsReport, TileConfig, TileDispatcher,
-    TileParams, TILE_PARAMS_WGSL,
+    TileList, TileParams, TILE_PARAMS_WGSL,
 };
 #[cfg(target_arch = "wasm32")]
 pub use dispatch::{read_buffer_async, read_vec4_f32_async};

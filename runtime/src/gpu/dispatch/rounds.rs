@@ -9,7 +9,9 @@
 //! mapped buffer and read, and at 0 the tile's paths are done, without a round that runs only to
 //! find nothing. A tile's first round starts with those kernels too; the round's
 //! `first_round_only` kernels run in a tile's first round alone. The finish kernel then runs once
-//! over the tile.
+//! over the tile. When every path ends in a tile's first round ([`RoundKernels::tile_list`]), the
+//! host stores the word and the workgroup counts for the whole tile itself, and the tile's one
+//! round runs without the listing kernels and without a read-back.
 //! Tiles run one after the other, so one tile's path state is all the state buffer has to hold.
 //!
 //! With [`RoundKernels::timed`], every dispatch of a round is submitted and waited for alone and
@@ -47,6 +49,9 @@ pub struct RoundKernels<'a> {
     pub first_round_only: Vec<usize>,
     /// The kernel run once over a tile after its last round.
     pub finish: &'a Kernel,
+    /// Every path ends in a tile's first round: the host lists the tile itself ([`TileList`]),
+    /// and the round runs without its leading direct kernels and without a read-back.
+    pub tile_list: Option<TileList>,
     /// The binding of the buffer holding the *running* word: zeroed before a tile's first round,
     /// set by the round's leading direct kernels to the number of paths the (next) round runs
     /// (a round without such kernels: zeroed before each round and set by its kernels), non-zero
@@ -58,6 +63,20 @@ pub struct RoundKernels<'a> {
     pub max_rounds: u32,
     /// Submit, wait for and time each dispatch alone ([`RoundsReport::stage_ms`]).
     pub timed: bool,
+}
+
+/// How the host lists a tile for a round that is its last ([`RoundKernels::tile_list`]): it
+/// stores the tile's slot count as the *running* word, the indirect dispatches' workgroups after
+/// it (`x` to cover the slots, `y = z = 1`), and `selector` at `selector_offset`, the word that
+/// tells the indirect kernels to take the tile's slots rather than a list.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TileList {
+    /// Byte offset of the selector's word in the flag's buffer (a multiple of 4).
+    pub selector_offset: u64,
+    /// The selector's value for the tile.
+    pub selector: u32,
+    /// Invocations a workgroup of the indirect kernels.
+    pub group: u32,
 }
 
 /// What a wavefront dispatch did.
@@ -201,6 +220,11 @@ impl TileDispatcher {
             order
         });
 
+        // A round over the tile listed by the host: the first round's runs after the leading
+        // direct ones, nothing read back.
+        let tile_order: Vec<(usize, Option<u64>)> =
+            (head..runs[0].len()).map(|r| (r, None)).collect();
+
         report.dispatch.flush_ms = flush_uploads(gpu)?;
 
         let start = Instant::now();
@@ -236,9 +260,26 @@ impl TileDispatcher {
             // with the leading runs too, and also reads the word they store (its list's length).
             let mut listed: Option<u32> = None;
             let mut finished = false;
+            if let Some(t) = kernels.tile_list {
+                let slots = u32::try_from(slots).unwrap_or(u32::MAX);
+                let mut words = Vec::with_capacity(16);
+                for w in [slots, slots.div_ceil(t.group.max(1)), 1, 1] {
+                    words.extend_from_slice(&w.to_le_bytes());
+                }
+                let ((), error) = gpu.scoped(|| {
+                    gpu.queue().write_buffer(flag, flag_offset, &words);
+                    gpu.queue()
+                        .write_buffer(flag, t.selector_offset, &t.selector.to_le_bytes());
+                });
+                wgpu_result("tile list upload", error)?;
+            }
             for _ in 0..kernels.max_rounds {
                 let first = listed.is_none();
-                let order = &orders[usize::from(!first)];
+                let order = if kernels.tile_list.is_some() {
+                    &tile_order
+                } else {
+                    &orders[usize::from(!first)]
+                };
                 let runs = &runs[usize::from(!first)];
                 let read = |e: &mut wgpu::CommandEncoder, to: u64| {
                     e.copy_buffer_to_buffer(flag, flag_offset, &staging, to, Some(4));
@@ -247,7 +288,7 @@ impl TileDispatcher {
                     e.copy_buffer_to_buffer(flag, at, &indirect, 0, Some(12));
                 };
                 // Without leading direct kernels, the word is the round's own, zeroed before it.
-                let zero = first || head == 0;
+                let zero = kernels.tile_list.is_none() && (first || head == 0);
                 if timed {
                     // The profile: each dispatch alone, waited for.
                     if zero {
@@ -315,6 +356,11 @@ impl TileDispatcher {
                 }
                 report.rounds += 1;
                 report.tile_slots += slots;
+                if kernels.tile_list.is_some() {
+                    report.running += slots;
+                    finished = true;
+                    break;
+                }
                 let [this, next] = map_read(gpu, &staging, 8, |bytes| {
                     let word = |i: usize| {
                         u32::from_le_bytes([bytes[i], bytes[i + 1], bytes[i + 2], bytes[i + 3]])
