@@ -30,7 +30,12 @@
 //! The listed stages take the list in runs of 8 workgroups, the runs permuted (the compact stage
 //! stores each entry at its place, `list_place`), so that each thread of a CPU driver, which
 //! takes a contiguous range of a dispatch's workgroups, gets paths from all over the tile. The
-//! finish stage runs over the tile.
+//! finish stage runs over the tile. When every path ends in a tile's first round (no secondary
+//! rays, no shadow stage, one sample a pass: a shading step always ends its sample), the count
+//! and compact stages would list every slot and then find none: the host instead stores the
+//! tile's slot count, its workgroups and [`LIST_TILE`] in the tail, and the listed stages take
+//! the tile's slots in runs permuted by a multiplication (`tile_place`), one round a tile with no
+//! listing and no read-back.
 //!
 //! Shadow rays ([`super::ShadowRays`], chosen by [`super::lower_shade_stage`]): where the shading
 //! step's `shadow(…)` calls, with every call inlined as a driver inlines them, reach the traversal
