@@ -205,9 +205,9 @@ pub struct BvhArgs {
 #[derive(Clone, Copy, Debug, Default, Args)]
 pub struct ExecArgs {
     /// Execution model: `megakernel` traces each pixel's samples in one kernel; `wavefront` runs
-    /// stage kernels (count, compact, camera, trace, shade, finish, and shadow when the shade stage
-    /// replays its shadow rays) in rounds over each tile, the middle ones over the paths still
-    /// running.
+    /// stage kernels (count, compact, trace, which also makes a new sample's camera ray, shade,
+    /// finish, and shadow when the shade stage replays its shadow rays) in rounds over each tile,
+    /// the middle ones over the paths still running.
     #[arg(long = "exec", value_name = "MODEL", value_enum)]
     pub exec: Option<ExecChoice>,
 }

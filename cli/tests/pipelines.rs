@@ -395,7 +395,7 @@ fn bench_compile_measures_a_scene_in_a_child() {
     let value: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&json).expect("JSON written"))
             .expect("JSON parses");
-    // One row per execution model: the megakernel's one kernel, the wavefront model's six stages
+    // One row per execution model: the megakernel's one kernel, the wavefront model's five stages
     // (the scene's shade stage traces its shadow rays: it has no shadow stage).
     let cold = value["cold"].as_array().expect("cold rows");
     assert_eq!(cold.len(), 2, "{value}");
@@ -406,7 +406,6 @@ fn bench_compile_measures_a_scene_in_a_child() {
             &[
                 "rtc wf_count",
                 "rtc wf_compact",
-                "rtc wf_camera",
                 "rtc wf_trace",
                 "rtc wf_shade",
                 "rtc wf_finish",

@@ -114,7 +114,7 @@ fn collect(stream: impl Read + Send + 'static, lines: Arc<Mutex<Vec<String>>>) {
 }
 
 /// The report's kernel lines (`rtc wf_shade  compiled  …  (driver … ms)`): under `rtc watch` a
-/// scene left at `EXEC_AUTO` runs the wavefront model, seven stage kernels.
+/// scene left at `EXEC_AUTO` runs the wavefront model, five or six stage kernels.
 fn kernel_lines(text: &str) -> Vec<&str> {
     let lines: Vec<&str> = text
         .lines()
@@ -201,9 +201,9 @@ fn watch_follows_edits_keeps_good_outputs_and_tracks_imports() {
     let has_gpu = text.contains("preview adapter:");
     if has_gpu {
         assert!(preview.is_file(), "{text}");
-        // Six stage kernels: the shade stage traces the point light's shadow rays (one
+        // Five stage kernels: the shade stage traces the point light's shadow rays (one
         // traversal), so the scene has no shadow stage.
-        assert_eq!(kernel_counts(&text), (6, 0), "{text}");
+        assert_eq!(kernel_counts(&text), (5, 0), "{text}");
         assert!(
             kernel_lines(&text).iter().all(|l| l.contains("compiled")),
             "{text}"
@@ -239,7 +239,7 @@ fn watch_follows_edits_keeps_good_outputs_and_tracks_imports() {
         );
         assert!(text.contains("edit to preview"), "{text}");
         let (compiled, reused) = kernel_counts(&text);
-        assert!(compiled >= 1 && compiled + reused == 6, "{text}");
+        assert!(compiled >= 1 && compiled + reused == 5, "{text}");
     }
 
     // 2. An invalid edit: diagnostics, and the outputs of #2 are left alone.
@@ -273,7 +273,7 @@ fn watch_follows_edits_keeps_good_outputs_and_tracks_imports() {
     );
     if has_gpu {
         // The kernels of #1 again: their pipelines are reused, not compiled.
-        assert_eq!(kernel_counts(&text), (0, 6), "{text}");
+        assert_eq!(kernel_counts(&text), (0, 5), "{text}");
         assert!(
             kernel_lines(&text)
                 .iter()

@@ -341,9 +341,9 @@ enum Kernels {
 }
 
 impl Kernels {
-    /// The dispatch of a wavefront pass: a round is count, compact, camera (in a tile's first
-    /// round only, unless `camera_every_round`), trace, shade, and with a shadow stage shadow,
-    /// shade (`stages` in `wavefront::stages` order), each dispatched as its
+    /// The dispatch of a wavefront pass: a round is count, compact, trace (which starts a new
+    /// sample's camera ray too), shade, and with a shadow stage shadow, shade (`stages` in
+    /// `wavefront::stages` order), each dispatched as its
     /// [`wavefront::Stage::dispatch`] says. With `first_round_ends` (every path ends in a tile's
     /// first round), the host lists the tile itself (`wavefront::LIST_TILE`) for its one round,
     /// without the count and compact stages.
@@ -352,16 +352,13 @@ impl Kernels {
         max_rounds: u32,
         flag_offset: u64,
         timed: bool,
-        camera_every_round: bool,
         first_round_ends: bool,
     ) -> Option<RoundKernels<'_>> {
-        let (count, compact, camera, trace, shade, shadow, finish) = match stages {
-            [count, compact, camera, trace, shade, shadow, finish] => {
-                (count, compact, camera, trace, shade, Some(shadow), finish)
+        let (count, compact, trace, shade, shadow, finish) = match stages {
+            [count, compact, trace, shade, shadow, finish] => {
+                (count, compact, trace, shade, Some(shadow), finish)
             }
-            [count, compact, camera, trace, shade, finish] => {
-                (count, compact, camera, trace, shade, None, finish)
-            }
+            [count, compact, trace, shade, finish] => (count, compact, trace, shade, None, finish),
             _ => return None,
         };
         let how = |stage: wavefront::Stage| match stage.dispatch() {
@@ -375,7 +372,6 @@ impl Kernels {
         let mut round = vec![
             (count, how(S::Count)),
             (compact, how(S::Compact)),
-            (camera, how(S::Camera)),
             (trace, how(S::Trace)),
             (shade, how(S::Shade)),
         ];
@@ -384,9 +380,6 @@ impl Kernels {
         }
         Some(RoundKernels {
             round,
-            // The camera stage (third): a slot is at `STATUS_CAMERA` when its record is zeroed,
-            // at a tile's first round, and again only after a sample of a pass of several.
-            first_round_only: if camera_every_round { vec![] } else { vec![2] },
             finish,
             tile_list: (first_round_ends && shadow.is_none()).then_some(TileList {
                 selector_offset: flag_offset + wavefront::TAIL_SELECTOR_OFFSET,
@@ -404,7 +397,7 @@ impl Kernels {
 /// Whether a sample of the wavefront model is one shading step: no secondary rays (no stack of
 /// frames, no path loop) and no shadow stage (the shade stage traces its shadow rays, or replays
 /// them within itself until the step commits, `wf_shade_replay_invocation`), so a path that the
-/// camera stage starts ends in the shade stage of the same round.
+/// trace stage starts ends in the shade stage of the same round.
 fn one_step(compiled: &CompiledScene) -> bool {
     !compiled.linked.config.has_secondary_rays && !compiled.has_shadow_stage()
 }
@@ -1173,7 +1166,6 @@ impl<'g> Renderer<'g> {
                         *max_rounds,
                         self.path_flag_offset,
                         self.options.stage_times,
-                        self.samples_per_pass > 1,
                         *one_step && self.samples_per_pass <= 1,
                     )
                     .ok_or(RenderError::NoStageKernels)?;

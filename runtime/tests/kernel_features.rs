@@ -19,8 +19,7 @@
 //!   tiles (bit-identical on lavapipe), with its shadow rays traced in the shadow stage and in the
 //!   shade stage (then the same rays counted); on a shading step whose second shadow query depends on
 //!   the first answer (replayed until exact), and past the shadow queries one step records (warned);
-//!   its camera stage in a tile's first round only, and in every round for a camera of several
-//!   samples a pass.
+//!   a camera of several samples a pass, whose later samples start in later rounds.
 //! - a `@light` program whose shadow queries depend on each other's answers: the megakernel defers
 //!   them to `sample_light` and runs the program again until every answer is known, so it must
 //!   give the wavefront model's image pixel for pixel; past `LIGHT_QUERIES` queries in one light
@@ -431,7 +430,6 @@ fn timing_the_wavefront_stages_changes_nothing_but_the_report() {
         [
             "rtc wf_count",
             "rtc wf_compact",
-            "rtc wf_camera",
             "rtc wf_trace",
             "rtc wf_shade",
             "rtc wf_shadow",
@@ -649,17 +647,16 @@ fn later_rounds_list_from_the_last_list() {
     assert!(off.is_empty(), "{} pixels differ", off.len());
 }
 
-/// The camera stage's rounds: with one sample per pixel a pass (`listed.rt`, above) it runs in a
-/// tile's first round only; with a camera of three (`samples.rt`: jittered rays, a mirror's edge
-/// through a column of pixels) a slot is back at the camera after each sample but a pass's last,
-/// and the host runs the stage in every round. One pass of three samples, in 16 x 16 tiles: the
+/// A camera of several samples a pass: with a camera of three (`samples.rt`: jittered rays, a
+/// mirror's edge through a column of pixels) a slot is back at the camera after each sample but a
+/// pass's last, and the trace stage of the next round makes its next camera ray (a slot at
+/// `STATUS_CAMERA`). One pass of three samples, in 16 x 16 tiles: the
 /// image is the megakernel's, bit for bit, and the jitter shows (most of the edge column's pixels
 /// lie strictly between the background's blue and the mirror's half of it: a pixel's three
 /// samples all fall on one side of the edge with probability about 1/4).
 #[test]
-fn a_camera_of_several_samples_a_pass_gets_them_all_from_the_camera_stage() {
-    let Some(gpu) =
-        gpu_or_skip("a_camera_of_several_samples_a_pass_gets_them_all_from_the_camera_stage")
+fn a_camera_of_several_samples_a_pass_gets_them_all_in_later_rounds() {
+    let Some(gpu) = gpu_or_skip("a_camera_of_several_samples_a_pass_gets_them_all_in_later_rounds")
     else {
         return;
     };

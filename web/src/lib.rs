@@ -94,7 +94,7 @@ pub struct CompileResult {
     /// The scene compiled, when it was chosen.
     pub scene: Option<String>,
     /// WGSL per kernel, by the stem of the file `rtc compile` writes (`kernel`, `bounds`,
-    /// `wf_camera`, …).
+    /// `wf_trace`, …).
     pub wgsl: BTreeMap<String, String>,
     /// `manifest.json`'s text, exactly as `rtc compile` writes it.
     pub manifest: Option<String>,

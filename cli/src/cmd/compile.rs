@@ -69,7 +69,7 @@ pub struct Args {
     /// Build the unspecialised kernel: every program and feature, not only what the scene uses.
     #[arg(long)]
     pub all_programs: bool,
-    /// Also write the wavefront model's stage kernels (`--exec wavefront`: `wf_camera.wgsl`, …).
+    /// Also write the wavefront model's stage kernels (`--exec wavefront`: `wf_trace.wgsl`, …).
     #[command(flatten)]
     pub exec: crate::args::ExecArgs,
     /// Print an intermediate form instead of writing the outputs.

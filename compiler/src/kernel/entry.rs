@@ -3,7 +3,7 @@
 //!
 //! - `render` (`@workgroup_size(8, 8)`): one invocation per pixel of the dispatch's tile; calls
 //!   `render_invocation(gid.xy)` (`stdlib/kernel/trace.rt`), which picks the pixel.
-//! - `wf_count`, `wf_compact`, `wf_camera`, `wf_trace`, `wf_shade`, `wf_shadow` (in a scene whose
+//! - `wf_count`, `wf_compact`, `wf_trace`, `wf_shade`, `wf_shadow` (in a scene whose
 //!   shade stage replays its shadow rays), `wf_finish`
 //!   (`@workgroup_size(8, 8)`): the wavefront model's stages (`kernel::wavefront`), each calling its
 //!   `wf_*_invocation(gid.xy)`, which finds its work item from the id (a pixel of the tile, a block

@@ -1,22 +1,23 @@
 //! The wavefront execution model's stage kernels and the layout of its per-path state.
 //!
 //! Beside the megakernel (`render`: one invocation traces a pixel's samples to completion), a scene
-//! can be compiled to seven stage kernels (`stdlib/kernel/wavefront.rt`) that a host runs in rounds
+//! can be compiled to six stage kernels (`stdlib/kernel/wavefront.rt`) that a host runs in rounds
 //! over one tile of pixels, each pixel owning one *path slot* in the `paths` binding:
 //!
 //! | stage | entry | does | traversal code |
 //! |---|---|---|---|
 //! | count | `wf_count` | counts the running slots of each of `COMPACT_BLOCKS` blocks of the last round's list (of the tile in its first round) | none |
 //! | compact | `wf_compact` | lists those slots in slot order in the other of two lists, their count and the listed stages' indirect dispatch | none |
-//! | camera | `wf_camera` | starts the slot's next sample: seeds, calls the camera (the medium it starts in is left to the trace stage) | none |
-//! | trace | `wf_trace` | closest hit of the slot's pending ray (with `@intersection` and `@any_hit`); for media, first the medium a refracted ray enters when the shade stage could not tell it | one copy, and the medium probe for media |
+//! | trace | `wf_trace` | for a slot starting a sample, first its camera ray (seeds, calls the camera); the closest hit of the slot's pending ray (with `@intersection` and `@any_hit`); for media, first the medium the camera ray starts in or a refracted ray enters when the shade stage could not tell it | one copy, and the medium probe for media |
 //! | shade | `wf_shade` | one shading step: miss, `@secondary_rays`, `@closest_hit`, `@medium`, `@light`; the next ray or the finished sample | one copy for its shadow rays, or none in a scene with a shadow stage |
 //! | shadow | `wf_shadow` | the shadow queries the last shading step recorded (only in a scene whose shade stage replays them) | one copy |
 //! | finish | `wf_finish` | adds the pass's samples to `accum` and resets the slot | none |
 //!
-//! A round is count, compact, camera, trace, shade, and, when the scene has a shadow stage,
-//! shadow, shade; the camera stage only in a tile's first round when a pass takes one sample per
-//! pixel (no slot is back at the camera after it). The count and compact stages run as a few
+//! A round is count, compact, trace, shade, and, when the scene has a shadow stage, shadow,
+//! shade. A slot starts a sample (`STATUS_CAMERA`: a zeroed record, and after each sample of a
+//! pass of several but the last) in the trace stage, which makes the camera ray and traces it at
+//! once: a camera stage of its own cost a dispatch a round and the ray's store and load, more
+//! than the camera's code in the trace kernel. The count and compact stages run as a few
 //! workgroups, one invocation a block of entries, over the list the round before made (over the
 //! tile in a tile's first round: the running set only shrinks within a tile, as a slot becomes
 //! idle in the shade stage and running again in the finish stage), and list the slots still
@@ -80,10 +81,9 @@ use crate::link::KernelConfig;
 /// the shadow stage is there) and their kernel functions in `stdlib/kernel/wavefront.rt`. A scene
 /// whose shade stage traces its shadow rays has every stage but [`Stage::Shadow`]
 /// ([`stages`]).
-pub const STAGES: [Stage; 7] = [
+pub const STAGES: [Stage; 6] = [
     Stage::Count,
     Stage::Compact,
-    Stage::Camera,
     Stage::Trace,
     Stage::Shade,
     Stage::Shadow,
@@ -135,13 +135,11 @@ pub const TRAVERSAL_FN: &str = "intersect_scene";
 /// One stage kernel of the wavefront model.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Stage {
-    /// Starts a sample: the camera ray.
-    Camera,
     /// Running slots per block of the tile.
     Count,
     /// The list of running slots and the listed stages' dispatch.
     Compact,
-    /// Closest hits of pending rays.
+    /// Closest hits of pending rays (a new sample's camera ray first).
     Trace,
     /// One shading step per path.
     Shade,
@@ -155,7 +153,6 @@ impl Stage {
     /// The entry point's name (also the stage's name in summaries and outputs).
     pub fn entry(self) -> &'static str {
         match self {
-            Stage::Camera => "wf_camera",
             Stage::Count => "wf_count",
             Stage::Compact => "wf_compact",
             Stage::Trace => "wf_trace",
@@ -168,7 +165,6 @@ impl Stage {
     /// The kernel function the entry point calls with the invocation's id.
     pub fn root(self) -> &'static str {
         match self {
-            Stage::Camera => "wf_camera_invocation",
             Stage::Count => "wf_count_invocation",
             Stage::Compact => "wf_compact_invocation",
             Stage::Trace => "wf_trace_invocation",
@@ -184,7 +180,7 @@ impl Stage {
         match self {
             Stage::Finish => StageDispatch::Tile,
             Stage::Count | Stage::Compact => StageDispatch::Blocks,
-            Stage::Camera | Stage::Trace | Stage::Shade | Stage::Shadow => StageDispatch::Listed,
+            Stage::Trace | Stage::Shade | Stage::Shadow => StageDispatch::Listed,
         }
     }
 
@@ -374,9 +370,8 @@ mod tests {
     use crate::link::LinkOptions;
 
     /// Every example's stage kernels: lowered and validated, each within WebGPU's default 8
-    /// storage buffers; only the trace and shadow stages (and, for scenes with media, the camera
-    /// stage, whose medium lookup probes objects, and a shade stage that traces its shadow rays)
-    /// read BVH nodes; only the finish stage declares `accum`. Where the shadow rays are traced,
+    /// storage buffers; only the trace and shadow stages (and a shade stage that traces its shadow
+    /// rays) read BVH nodes; only the finish stage declares `accum`. Where the shadow rays are traced,
     /// from the copies of the traversal the shade stage holds tracing them where they are made
     /// (counted here on the shade stage lowered that way): there, for a render of at most
     /// `FAST_COMPILE_MAX_SAMPLES` samples, with at most `MAX_SHADE_TRAVERSALS` copies, else in
@@ -493,9 +488,6 @@ mod tests {
                         assert!(!nodes);
                         assert_eq!(storage, 1, "{:?}: {names:?}", s.stage);
                     }
-                    // The camera and shade stages leave the medium a ray starts in to the trace
-                    // stage (`MEDIUM_PROBE`), so the camera stage holds no BVH.
-                    Stage::Camera => assert!(!nodes, "{:?}", s.stage),
                     // A shade stage holds a traversal only to trace shadow rays.
                     Stage::Shade => {
                         assert!(!nodes || !shadow_stage, "{}: {:?}", path.display(), s.stage)

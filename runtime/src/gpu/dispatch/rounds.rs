@@ -7,9 +7,8 @@
 //! kernels before its first indirect one (those that list the running paths and store the
 //! *running* word) run once more at its end, for the next round: the word is then copied to a
 //! mapped buffer and read, and at 0 the tile's paths are done, without a round that runs only to
-//! find nothing. A tile's first round starts with those kernels too; the round's
-//! `first_round_only` kernels run in a tile's first round alone. The finish kernel then runs once
-//! over the tile. When every path ends in a tile's first round ([`RoundKernels::tile_list`]), the
+//! find nothing. A tile's first round starts with those kernels too. The finish kernel then runs
+//! once over the tile. When every path ends in a tile's first round ([`RoundKernels::tile_list`]), the
 //! host stores the word and the workgroup counts for the whole tile itself, and the tile's one
 //! round runs without the listing kernels and without a read-back.
 //! Tiles run one after the other, so one tile's path state is all the state buffer has to hold.
@@ -43,10 +42,6 @@ pub enum RoundDispatch {
 pub struct RoundKernels<'a> {
     /// The kernels of one round, dispatched in this order and way (a kernel may appear twice).
     pub round: Vec<(&'a Kernel, RoundDispatch)>,
-    /// Indices into `round` of indirect kernels dispatched only in a tile's first round (the
-    /// wavefront model's camera stage when a pass takes one sample per pixel: after that round no
-    /// slot is at its status).
-    pub first_round_only: Vec<usize>,
     /// The kernel run once over a tile after its last round.
     pub finish: &'a Kernel,
     /// Every path ends in a tile's first round: the host lists the tile itself ([`TileList`]),
@@ -186,16 +181,10 @@ impl TileDispatcher {
             })
         });
         wgpu_result("read-back allocation", error)?;
-        // A tile's first round's runs, and its later rounds' (without `first_round_only`).
-        let runs: [Vec<Run>; 2] = [true, false].map(|first| {
-            round_runs(&kernels.round, |at| {
-                first || !kernels.first_round_only.contains(&at)
-            })
-        });
+        let runs = round_runs(&kernels.round);
         // The leading direct runs before the first indirect one: the ones that list the running
-        // slots (none in a round without indirect dispatches). The same in both, whose direct
-        // runs are the same.
-        let head = runs[0]
+        // slots (none in a round without indirect dispatches).
+        let head = runs
             .iter()
             .position(|r| matches!(r, Run::Indirect { .. }))
             .unwrap_or(0);
@@ -205,7 +194,6 @@ impl TileDispatcher {
         // its word (the round's list length) at 0; each ends with the head and reads the next
         // round's at 4.
         let orders: [Vec<(usize, Option<u64>)>; 2] = [true, false].map(|first| {
-            let runs = &runs[usize::from(!first)];
             let head_runs =
                 |read: u64| (0..head).map(move |r| (r, (r + 1 == head).then_some(read)));
             let mut order: Vec<(usize, Option<u64>)> = Vec::new();
@@ -222,8 +210,7 @@ impl TileDispatcher {
 
         // A round over the tile listed by the host: the first round's runs after the leading
         // direct ones, nothing read back.
-        let tile_order: Vec<(usize, Option<u64>)> =
-            (head..runs[0].len()).map(|r| (r, None)).collect();
+        let tile_order: Vec<(usize, Option<u64>)> = (head..runs.len()).map(|r| (r, None)).collect();
 
         report.dispatch.flush_ms = flush_uploads(gpu)?;
 
@@ -280,7 +267,6 @@ impl TileDispatcher {
                 } else {
                     &orders[usize::from(!first)]
                 };
-                let runs = &runs[usize::from(!first)];
                 let read = |e: &mut wgpu::CommandEncoder, to: u64| {
                     e.copy_buffer_to_buffer(flag, flag_offset, &staging, to, Some(4));
                 };
@@ -417,10 +403,10 @@ enum Run {
     Indirect { counts: u64, kernels: Vec<usize> },
 }
 
-/// The kernels of `round` that `keep` (by index) cut into [`Run`]s.
-fn round_runs(round: &[(&Kernel, RoundDispatch)], keep: impl Fn(usize) -> bool) -> Vec<Run> {
+/// The kernels of `round` cut into [`Run`]s.
+fn round_runs(round: &[(&Kernel, RoundDispatch)]) -> Vec<Run> {
     let mut runs: Vec<Run> = Vec::new();
-    for (at, (_, how)) in round.iter().enumerate().filter(|&(at, _)| keep(at)) {
+    for (at, (_, how)) in round.iter().enumerate() {
         match (how, runs.last_mut()) {
             (RoundDispatch::Indirect(c), Some(Run::Indirect { counts, kernels }))
                 if c == counts =>
