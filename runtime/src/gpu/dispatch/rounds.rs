@@ -8,9 +8,10 @@
 //! *running* word) run once more at its end, for the next round: the word is then copied to a
 //! mapped buffer and read, and at 0 the tile's paths are done, without a round that runs only to
 //! find nothing. A tile's first round starts with those kernels too. The finish kernel then runs
-//! once over the tile. When every path ends in a tile's first round ([`RoundKernels::tile_list`]), the
-//! host stores the word and the workgroup counts for the whole tile itself, and the tile's one
-//! round runs without the listing kernels and without a read-back.
+//! once over the tile. When every path ends in a tile's first round
+//! ([`RoundKernels::tile_list`]), the host stores the word and the workgroup counts for the whole
+//! tile itself, and the tile's one round runs without the listing kernels and without a
+//! read-back.
 //! Tiles run one after the other, so one tile's path state is all the state buffer has to hold.
 //!
 //! With [`RoundKernels::timed`], every dispatch of a round is submitted and waited for alone and
