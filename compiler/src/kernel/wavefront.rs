@@ -222,7 +222,7 @@ pub const TAIL_DISPATCH_OFFSET: u64 = 4;
 /// stages read: 0 or 1, which the compact stage stores, or [`LIST_TILE`].
 pub const LIST_SELECTOR: u32 = 1;
 /// [`LIST_SELECTOR`]'s value for the tile itself: the listed stages' invocation `n` takes the
-/// `n`-th place of the tile's slots in `list_place`'s order. The host stores it, with the tail's
+/// `n`-th place of the tile's slots in `tile_place`'s order. The host stores it, with the tail's
 /// first chunk (the tile's slots and their workgroups), for a pass whose every path ends in the
 /// tile's first round (no secondary rays, no shadow stage, one sample a pass): the count and
 /// compact stages would list every slot, and find none after it.
