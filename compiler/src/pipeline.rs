@@ -156,6 +156,7 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
             .unwrap_or(0);
         let samples = u64::from(w) * u64::from(h) * u64::from(spp);
         let shadow_rays = request.kernel.shadow_rays.for_samples(samples);
+        let accumulate = samples > wavefront::SHADE_ACCUMULATES_MIN_SAMPLES;
         let lowered = timings.time("lower the stage kernels", || {
             let mut stages = Vec::with_capacity(wavefront::STAGES.len());
             // The shade stage comes before the shadow stage, and says whether there is one.
@@ -164,7 +165,7 @@ pub fn compile(request: &Request<'_>) -> Result<Compiled, Box<CompileFailure>> {
                 let (module, bindings) = match stage {
                     Stage::Shade => {
                         let (module, bindings, traces) =
-                            kernel::lower_shade_stage(&checked, &linked, shadow_rays)?;
+                            kernel::lower_shade_stage(&checked, &linked, shadow_rays, accumulate)?;
                         shade_traces = traces;
                         (module, bindings)
                     }

@@ -337,6 +337,9 @@ enum Kernels {
         /// A sample is one shading step: no secondary rays and no shadow stage, so with one
         /// sample a pass every path ends in a tile's first round ([`one_step`]).
         one_step: bool,
+        /// The shade stage accumulates the samples of a tile the host listed
+        /// (`CompiledScene::shade_accumulates`): no finish stage after such a round.
+        shade_accumulates: bool,
     },
 }
 
@@ -346,13 +349,15 @@ impl Kernels {
     /// `wavefront::stages` order), each dispatched as its
     /// [`wavefront::Stage::dispatch`] says. With `first_round_ends` (every path ends in a tile's
     /// first round), the host lists the tile itself (`wavefront::LIST_TILE`) for its one round,
-    /// without the count and compact stages.
+    /// without the count and compact stages, and, with `shade_accumulates`, without the finish
+    /// stage, whose work the shade stage does.
     fn rounds(
         stages: &[Kernel],
         max_rounds: u32,
         flag_offset: u64,
         timed: bool,
         first_round_ends: bool,
+        shade_accumulates: bool,
     ) -> Option<RoundKernels<'_>> {
         let (count, compact, trace, shade, shadow, finish) = match stages {
             [count, compact, trace, shade, shadow, finish] => {
@@ -385,6 +390,7 @@ impl Kernels {
                 selector_offset: flag_offset + wavefront::TAIL_SELECTOR_OFFSET,
                 selector: wavefront::LIST_TILE,
                 group: RENDER_WORKGROUP[0] * RENDER_WORKGROUP[1],
+                accumulates: shade_accumulates,
             }),
             flag_binding: abi::binding("paths")?.binding,
             flag_offset,
@@ -759,6 +765,7 @@ impl<'g> Renderer<'g> {
                 stages: render,
                 max_rounds: max_rounds(compiled),
                 one_step: one_step(compiled),
+                shade_accumulates: compiled.shade_accumulates(),
             },
         };
         setup.pipeline_ms = ms_since(start);
@@ -1160,6 +1167,7 @@ impl<'g> Renderer<'g> {
                     stages,
                     max_rounds,
                     one_step,
+                    shade_accumulates,
                 } => {
                     let kernels = Kernels::rounds(
                         stages,
@@ -1167,6 +1175,7 @@ impl<'g> Renderer<'g> {
                         self.path_flag_offset,
                         self.options.stage_times,
                         *one_step && self.samples_per_pass <= 1,
+                        *shade_accumulates,
                     )
                     .ok_or(RenderError::NoStageKernels)?;
                     let r = self.dispatcher.dispatch_rounds(

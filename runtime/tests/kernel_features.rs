@@ -227,11 +227,15 @@ fn compile_with_stages_placing(
     shadow_rays: ShadowRays,
 ) -> rtc_compiler::kernel::CompiledScene {
     use rtc_compiler::kernel::{ExecModel, KernelOptions};
+    // A render larger than `SHADE_ACCUMULATES_MIN_SAMPLES`, so that a shade stage whose samples
+    // end in their first step accumulates a listed tile's samples itself.
     let compiled = file.compile_with(
         dir,
         &KernelOptions {
             exec: Some(ExecModel::Wavefront),
             shadow_rays,
+            render_size: Some([256, 256]),
+            render_spp: Some(1),
             ..KernelOptions::default()
         },
     );
@@ -447,12 +451,14 @@ fn timing_the_wavefront_stages_changes_nothing_but_the_report() {
 /// A pass whose every path ends in a tile's first round (no secondary rays, no shadow stage, one
 /// sample a pass: `shadows.rt` with its shadow rays traced or replayed in the shade stage) runs
 /// one round a tile without the count and compact stages: the host lists the tile itself
-/// (`wavefront::LIST_TILE`; the listed stages take the tile's slots in `list_place`'s permuted
-/// runs of 512). 80 x 56 in 64 x 48 tiles, a tile of six whole runs and three smaller ones: every
-/// slot is listed once, every ray is the megakernel's and so is the image, bit for bit. With a
-/// shadow stage the paths end in the first round too (the round runs the shadow stage and the
-/// shade stage's replay), but a step whose queries depend on each other may take more, so the
-/// count and compact stages list the slots, and find none at the round's end.
+/// (`wavefront::LIST_TILE`; the listed stages take the tile's slots in `tile_place`'s permuted
+/// runs of 512), and the shade stage adds each sample to the image and starts the slot again, so
+/// no finish stage runs. 80 x 56 in 64 x 48 tiles, a tile of six whole runs and three smaller
+/// ones, two passes of one sample: every slot is listed once a pass, every ray is the
+/// megakernel's and so is the image, bit for bit. With a shadow stage the paths end in the first
+/// round too (the round runs the shadow stage and the shade stage's replay), but a step whose
+/// queries depend on each other may take more, so the count and compact stages list the slots,
+/// and find none at the round's end, and the finish stage accumulates.
 #[test]
 fn a_pass_whose_paths_end_in_one_round_lists_no_tile() {
     let Some(gpu) = gpu_or_skip("a_pass_whose_paths_end_in_one_round_lists_no_tile") else {
@@ -468,9 +474,10 @@ fn a_pass_whose_paths_end_in_one_round_lists_no_tile() {
     ] {
         let dir = temp_dir("features", &format!("tile_list_{shadow_rays:?}"));
         let compiled = compile_with_stages_placing(&file, &dir, shadow_rays);
+        assert_eq!(compiled.shade_accumulates(), !listing, "{shadow_rays:?}");
         let options = |exec| RenderOptions {
             size: Some([80, 56]),
-            samples: Some(1),
+            samples: Some(2),
             tiles: Some(TileConfig {
                 tile_width: 64,
                 tile_height: 48,
@@ -492,9 +499,14 @@ fn a_pass_whose_paths_end_in_one_round_lists_no_tile() {
             listing,
             "{what}: {labels:?}"
         );
-        assert_eq!(stats.rounds, 4, "{what}: one round a tile");
-        assert_eq!(stats.slot_rounds, 80 * 56, "{what}");
-        assert_eq!(stats.listed_slots, 80 * 56, "{what}");
+        assert_eq!(
+            labels.contains(&"rtc wf_finish"),
+            listing,
+            "{what}: {labels:?}"
+        );
+        assert_eq!(stats.rounds, 2 * 4, "{what}: one round a tile and pass");
+        assert_eq!(stats.slot_rounds, 2 * 80 * 56, "{what}");
+        assert_eq!(stats.listed_slots, 2 * 80 * 56, "{what}");
         if shadow_rays != ShadowRays::Stage {
             assert_eq!(stats.rays_traced, mega_stats.rays_traced, "{what}: rays");
         }

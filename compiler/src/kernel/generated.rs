@@ -122,11 +122,17 @@ pub enum Intrinsic {
     /// stage that traces them itself (`wf_shade_replay_invocation`), else of
     /// `wf_wait_for_shadow_stage` (only the one lowered reaches the kernel)
     PendingStepWaits,
+    /// `sample_done(value)`: how the wavefront shade stage ends a sample: a call of
+    /// `wf_sample_accumulate` in a scene whose samples all end in their first shading step (no
+    /// secondary rays and no shadow stage: the one that may add the sample to `accum` itself),
+    /// else of `wf_sample_done` (only the one lowered reaches the kernel, so only such a shade
+    /// stage binds `accum`)
+    SampleDone,
 }
 
 impl Intrinsic {
     /// Every intrinsic, in the order `rtc:abi` declares them.
-    pub const ALL: [Intrinsic; 44] = [
+    pub const ALL: [Intrinsic; 45] = [
         Intrinsic::LoadFrame,
         Intrinsic::LoadTile,
         Intrinsic::LoadNode,
@@ -171,6 +177,7 @@ impl Intrinsic {
         Intrinsic::CounterAdd,
         Intrinsic::RayCountLoad,
         Intrinsic::PendingStepWaits,
+        Intrinsic::SampleDone,
     ];
 
     /// `(name, parameters, result)` as declared in `rtc:abi` (result `""`: none).
@@ -255,6 +262,7 @@ impl Intrinsic {
             Intrinsic::CounterAdd => ("counter_add", "i: u32, value: u32", ""),
             Intrinsic::RayCountLoad => ("ray_count_load", "", "u32"),
             Intrinsic::PendingStepWaits => ("pending_step_waits", "", "bool"),
+            Intrinsic::SampleDone => ("sample_done", "value: vec3f", ""),
         }
     }
 

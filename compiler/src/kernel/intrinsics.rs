@@ -48,6 +48,9 @@ pub struct KernelHooks<'a> {
     /// stage traces its recorded queries; with `replay_shadows` and not this, the shade stage
     /// traces them itself, see `pending_step_waits`).
     pub traces_no_rays: bool,
+    /// `sample_done(…)` is `wf_sample_accumulate` (a shade stage whose samples all end in their
+    /// first shading step, when `accum` fits its bindings), else `wf_sample_done`.
+    pub accumulates: bool,
 }
 
 /// Words of the private scratch registers (`scratch_load`, `scratch_store`; `stdlib/kernel/paths.rt`
@@ -537,6 +540,17 @@ impl KernelHooks<'_> {
                 let id = kernel_fn(program, name)?;
                 let f = cx.ensure_function(id, self)?;
                 return Ok(fb.call(f, Vec::new(), true, span));
+            }
+            I::SampleDone => {
+                let name = if self.accumulates {
+                    "wf_sample_accumulate"
+                } else {
+                    "wf_sample_done"
+                };
+                let id = kernel_fn(program, name)?;
+                let f = cx.ensure_function(id, self)?;
+                fb.call(f, vec![arg(0)?], false, span);
+                return Ok(None);
             }
             I::RayCountLoad => {
                 let g = self.ray_count(cx);

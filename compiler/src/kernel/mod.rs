@@ -65,6 +65,15 @@ impl CompiledScene {
             .any(|s| s.stage == wavefront::Stage::Shadow)
     }
 
+    /// Whether its shade stage adds the samples of a tile the host listed to `accum` itself
+    /// (`wf_sample_accumulate`; then no finish stage runs after such a round); false without stage
+    /// kernels.
+    pub fn shade_accumulates(&self) -> bool {
+        self.stages.iter().flatten().any(|s| {
+            s.stage == wavefront::Stage::Shade && s.bindings.iter().any(|b| b.name == "accum")
+        })
+    }
+
     /// Whether its shade stage replays its shadow rays around its own traversal
     /// (`wavefront::SHADE_REPLAY_ROOT`, [`ShadowRays::Replay`]); false without stage kernels.
     pub fn replays_in_shade_stage(&self) -> bool {
@@ -438,8 +447,56 @@ pub fn lower_kernel(
     root: &str,
     entry: &str,
 ) -> Result<(naga::Module, Bindings), Box<Diagnostic>> {
-    let replay_shadows = entry == wavefront::Stage::Shade.entry();
-    lower_kernel_with(checked, linked, root, entry, replay_shadows, replay_shadows)
+    let shade = entry == wavefront::Stage::Shade.entry();
+    let ways = ShadeWays {
+        replay_shadows: shade,
+        traces_no_rays: shade,
+        accumulates: false,
+    };
+    lower_kernel_with(checked, linked, root, entry, ways)
+}
+
+/// How a kernel's shadow rays, ray count and sample ends lower (the wavefront shade stage's ways;
+/// all false in every other kernel), [`KernelHooks`]'s fields of the same names.
+#[derive(Clone, Copy, Debug, Default)]
+struct ShadeWays {
+    /// `shadow(…)` is replayed (`shadow_replay`) rather than traced where it is made.
+    replay_shadows: bool,
+    /// `ray_count_load()` is a literal 0 and `pending_step_waits()` leaves the queries to the
+    /// shadow stage.
+    traces_no_rays: bool,
+    /// `sample_done(…)` is `wf_sample_accumulate`, else `wf_sample_done`.
+    accumulates: bool,
+}
+
+/// [`lower_kernel_with`] for the shade stage: with `accumulate`, where every sample ends in its
+/// first shading step (no secondary rays; `traces_no_rays` false: no shadow stage), first with
+/// `sample_done` lowered to `wf_sample_accumulate`, which binds `accum`; when that takes the stage
+/// past [`wavefront::MAX_STORAGE_BUFFERS`], again without it (the finish stage accumulates).
+fn lower_shade_with(
+    checked: &Checked,
+    linked: &Linked,
+    root: &str,
+    (replay_shadows, traces_no_rays): (bool, bool),
+    accumulate: bool,
+) -> Result<(naga::Module, Bindings), Box<Diagnostic>> {
+    let entry = wavefront::Stage::Shade.entry();
+    let ways = ShadeWays {
+        replay_shadows,
+        traces_no_rays,
+        accumulates: false,
+    };
+    if accumulate && !linked.config.has_secondary_rays && !traces_no_rays {
+        let accumulating = ShadeWays {
+            accumulates: true,
+            ..ways
+        };
+        let lowered = lower_kernel_with(checked, linked, root, entry, accumulating)?;
+        if wavefront::storage_buffers(&lowered.1) <= wavefront::MAX_STORAGE_BUFFERS {
+            return Ok(lowered);
+        }
+    }
+    lower_kernel_with(checked, linked, root, entry, ways)
 }
 
 /// The wavefront model's shade stage, and whether it traces its own shadow rays (then the scene
@@ -447,11 +504,16 @@ pub fn lower_kernel(
 /// [`ShadowRays::AutoFastFrames`]; the compile resolves it first, [`ShadowRays::for_samples`]): where
 /// they are made when asked to or when that makes at most the automatic choice's number of copies
 /// of the traversal ([`weight::inlined_copies`]), else lowered a second time, replaying them
-/// within the stage (`wf_shade_replay_invocation`) or for the shadow stage.
+/// within the stage (`wf_shade_replay_invocation`) or for the shadow stage. With `accumulate`,
+/// a shade stage whose samples all end in their first step also does the finish stage's work in a
+/// round over a tile the host listed, where `accum` fits its bindings
+/// ([`CompiledScene::shade_accumulates`]; the compile asks for it beyond
+/// [`wavefront::SHADE_ACCUMULATES_MIN_SAMPLES`]).
 pub fn lower_shade_stage(
     checked: &Checked,
     linked: &Linked,
     placement: ShadowRays,
+    accumulate: bool,
 ) -> Result<(naga::Module, Bindings, bool), Box<Diagnostic>> {
     let stage = wavefront::Stage::Shade;
     let most = match placement {
@@ -464,7 +526,7 @@ pub fn lower_shade_stage(
     };
     if let Some(most) = most {
         let (module, bindings) =
-            lower_kernel_with(checked, linked, stage.root(), stage.entry(), false, false)?;
+            lower_shade_with(checked, linked, stage.root(), (false, false), accumulate)?;
         let copies = weight::inlined_copies(&module, stage.entry(), wavefront::TRAVERSAL_FN)
             .unwrap_or(u64::MAX);
         if copies <= most {
@@ -473,31 +535,30 @@ pub fn lower_shade_stage(
     }
     if matches!(placement, ShadowRays::Stage | ShadowRays::AutoFastCompile) {
         let (module, bindings) =
-            lower_kernel_with(checked, linked, stage.root(), stage.entry(), true, true)?;
+            lower_shade_with(checked, linked, stage.root(), (true, true), accumulate)?;
         return Ok((module, bindings, false));
     }
-    let (module, bindings) = lower_kernel_with(
+    let (module, bindings) = lower_shade_with(
         checked,
         linked,
         wavefront::SHADE_REPLAY_ROOT,
-        stage.entry(),
-        true,
-        false,
+        (true, false),
+        accumulate,
     )?;
     Ok((module, bindings, true))
 }
 
-/// [`lower_kernel`], with `shadow` calls replayed (`shadow_replay`, the wavefront model's shade
-/// stage) or traced where they are made; with `traces_no_rays`, `ray_count_load()` is a literal 0
-/// and `pending_step_waits()` leaves the queries to the shadow stage (a shade stage whose shadow
-/// stage traces them).
+/// [`lower_kernel`], with the shade stage's `ways`: `shadow` calls replayed (`shadow_replay`) or
+/// traced where they are made; with `traces_no_rays`, `ray_count_load()` is a literal 0 and
+/// `pending_step_waits()` leaves the queries to the shadow stage (a shade stage whose shadow stage
+/// traces them); with `accumulates`, `sample_done(…)` is `wf_sample_accumulate` (a shade stage
+/// whose samples all end in their first step), else `wf_sample_done`.
 fn lower_kernel_with(
     checked: &Checked,
     linked: &Linked,
     root: &str,
     entry: &str,
-    replay_shadows: bool,
-    traces_no_rays: bool,
+    ways: ShadeWays,
 ) -> Result<(naga::Module, Bindings), Box<Diagnostic>> {
     let Some(program) = checked.program.as_ref() else {
         return Err(Box::new(Diagnostic::error(
@@ -506,15 +567,7 @@ fn lower_kernel_with(
             crate::source::Span::default(),
         )));
     };
-    let lowered = lower_entry(
-        program,
-        &checked.sources,
-        linked,
-        root,
-        entry,
-        replay_shadows,
-        traces_no_rays,
-    );
+    let lowered = lower_entry(program, &checked.sources, linked, root, entry, ways);
     match lowered {
         Ok((mut module, bindings)) => {
             // Compaction drops types and constants nothing uses, so outputs (and their snapshots)
@@ -532,8 +585,7 @@ fn lower_entry(
     linked: &Linked,
     root: &str,
     entry: &str,
-    replay_shadows: bool,
-    traces_no_rays: bool,
+    ways: ShadeWays,
 ) -> Result<(naga::Module, Bindings), LowerError> {
     let root = intrinsics::kernel_fn(program, root)?;
     let mut hooks = KernelHooks {
@@ -541,8 +593,9 @@ fn lower_entry(
         linked,
         config: linked.config,
         generated: dispatch::Generated::default(),
-        replay_shadows,
-        traces_no_rays,
+        replay_shadows: ways.replay_shadows,
+        traces_no_rays: ways.traces_no_rays,
+        accumulates: ways.accumulates,
     };
     let build_entry = |cx: &mut crate::lower::Lowerer<'_>,
                        roots: &[naga::Handle<naga::Function>]| {

@@ -11,7 +11,7 @@
 //! | trace | `wf_trace` | for a slot starting a sample, first its camera ray (seeds, calls the camera); the closest hit of the slot's pending ray (with `@intersection` and `@any_hit`); for media, first the medium the camera ray starts in or a refracted ray enters when the shade stage could not tell it | one copy, and the medium probe for media |
 //! | shade | `wf_shade` | one shading step: miss, `@secondary_rays`, `@closest_hit`, `@medium`, `@light`; the next ray or the finished sample | one copy for its shadow rays, or none in a scene with a shadow stage |
 //! | shadow | `wf_shadow` | the shadow queries the last shading step recorded (only in a scene whose shade stage replays them) | one copy |
-//! | finish | `wf_finish` | adds the pass's samples to `accum` and resets the slot | none |
+//! | finish | `wf_finish` | adds the pass's samples to `accum` and resets the slot (not after a round over a tile the host listed whose shade stage did it) | none |
 //!
 //! A round is count, compact, trace, shade, and, when the scene has a shadow stage, shadow,
 //! shade. A slot starts a sample (`STATUS_CAMERA`: a zeroed record, and after each sample of a
@@ -36,7 +36,12 @@
 //! and compact stages would list every slot and then find none: the host instead stores the
 //! tile's slot count, its workgroups and [`LIST_TILE`] in the tail, and the listed stages take
 //! the tile's slots in runs permuted by a multiplication (`tile_place`), one round a tile with no
-//! listing and no read-back.
+//! listing and no read-back. There the shade stage also does the finish stage's work as each
+//! sample ends (`sample_done`, lowered to `wf_sample_accumulate`: the sample to `accum`, the
+//! slot's first chunk reset), and no finish stage runs, where `accum` fits within the stage's
+//! [`MAX_STORAGE_BUFFERS`] (`CompiledScene::shade_accumulates`; not in a scene whose shade
+//! stage reads textures or vertex attributes beside the traversal's buffers, such as the thesis
+//! scene).
 //!
 //! Shadow rays ([`super::ShadowRays`], chosen by [`super::lower_shade_stage`]): where the shading
 //! step's `shadow(…)` calls, with every call inlined as a driver inlines them, reach the traversal
@@ -128,6 +133,26 @@ pub const FAST_COMPILE_MAX_SAMPLES: u64 = 1 << 17;
 /// The kernel function of the shade stage that replays its shadow rays within the stage
 /// ([`super::ShadowRays::Replay`]): the entry point is still [`Stage::Shade`]'s.
 pub const SHADE_REPLAY_ROOT: &str = "wf_shade_replay_invocation";
+
+/// The most samples of a render whose shade stage leaves the accumulation of a tile the host
+/// listed to the finish stage (beyond it, `CompiledScene::shade_accumulates` where it can): 16 K,
+/// the bound below which `rtc render` on a CPU adapter picks the wavefront model for its faster
+/// compile (`rtc_runtime::gpu::WAVEFRONT_PREVIEW_MAX_SAMPLES`). The accumulation made the shade
+/// stage's cold compile 36 to 50 ms longer (cornell_box, lambert_only; Mesa 25.0.7, quick JIT,
+/// medians of 8) to save a finish dispatch of under a millisecond at that size
+/// (docs/bench/lavapipe.md, "The finish stage's work in the shade stage of a listed tile (2026-12-06, late)").
+pub const SHADE_ACCUMULATES_MIN_SAMPLES: u64 = 1 << 14;
+
+/// Storage buffers a stage kernel may bind: WebGPU's default `maxStorageBuffersPerShaderStage`.
+pub const MAX_STORAGE_BUFFERS: usize = 8;
+
+/// The storage buffers among `bindings` (every binding but the uniform ones).
+pub fn storage_buffers(bindings: &[&crate::abi::BindingDesc]) -> usize {
+    bindings
+        .iter()
+        .filter(|b| b.kind != crate::back::ResourceKind::Uniform)
+        .count()
+}
 
 /// The kernel function that traverses the scene, in `stdlib/kernel/trace.rt`.
 pub const TRAVERSAL_FN: &str = "intersect_scene";
@@ -371,7 +396,8 @@ mod tests {
 
     /// Every example's stage kernels: lowered and validated, each within WebGPU's default 8
     /// storage buffers; only the trace and shadow stages (and a shade stage that traces its shadow
-    /// rays) read BVH nodes; only the finish stage declares `accum`. Where the shadow rays are traced,
+    /// rays) read BVH nodes; only the finish stage declares `accum`, and the shade stage of a scene
+    /// whose samples all end in their first shading step. Where the shadow rays are traced,
     /// from the copies of the traversal the shade stage holds tracing them where they are made
     /// (counted here on the shade stage lowered that way): there, for a render of at most
     /// `FAST_COMPILE_MAX_SAMPLES` samples, with at most `MAX_SHADE_TRAVERSALS` copies, else in
@@ -394,6 +420,7 @@ mod tests {
         // Examples tracing their shadow rays in the shade stage at their own sizes, and in the
         // shadow stage in a small render.
         let mut placements = [0u32; 2];
+        let mut one_step_examples: Vec<(String, bool)> = Vec::new();
         for path in names {
             let compiled = compile_scene_with(
                 std::slice::from_ref(&path),
@@ -422,6 +449,7 @@ mod tests {
                 &compiled.checked,
                 &compiled.linked,
                 crate::kernel::ShadowRays::Shade,
+                false,
             )
             .expect("the shade stage, tracing");
             assert!(traces);
@@ -457,6 +485,7 @@ mod tests {
                 &compiled.checked,
                 &compiled.linked,
                 crate::kernel::ShadowRays::AutoFastCompile,
+                false,
             )
             .expect("the shade stage for a small render");
             assert_eq!(
@@ -494,11 +523,45 @@ mod tests {
                     }
                     Stage::Finish => assert!(!nodes),
                 }
-                assert_eq!(names.contains(&"accum"), s.stage == Stage::Finish);
+                // A shade stage whose samples all end in their first step accumulates them in a
+                // listed tile (`wf_sample_accumulate`) where `accum` fits its bindings.
+                let one_step = !compiled.linked.config.has_secondary_rays && !shadow_stage;
+                if s.stage == Stage::Shade {
+                    assert_eq!(names.contains(&"accum"), compiled.shade_accumulates());
+                    assert!(
+                        !compiled.shade_accumulates() || one_step,
+                        "{}",
+                        path.display()
+                    );
+                    if one_step {
+                        let name = path.parent().and_then(|p| p.file_name());
+                        let name = name.map(|n| n.to_string_lossy().into_owned());
+                        one_step_examples
+                            .push((name.unwrap_or_default(), compiled.shade_accumulates()));
+                    }
+                } else {
+                    assert_eq!(names.contains(&"accum"), s.stage == Stage::Finish);
+                }
                 assert_eq!(s.module.entry_points.len(), 1);
                 assert_eq!(s.module.entry_points[0].name, s.stage.entry());
             }
         }
+        // The examples whose samples end in their first shading step, and whether their shade
+        // stage accumulates: not where its storage buffers (with `counters`, for the ray count)
+        // leave no room for `accum` (gltf_scene's, thesis_scene's and three_spheres', which read
+        // textures or vertex attributes beside the traversal's buffers).
+        let expected: Vec<(String, bool)> = [
+            ("cameras", true),
+            ("cornell_box", true),
+            ("gltf_scene", false),
+            ("lambert_only", true),
+            ("lights", true),
+            ("thesis_scene", false),
+            ("three_spheres", false),
+        ]
+        .map(|(n, a)| (n.to_string(), a))
+        .to_vec();
+        assert_eq!(one_step_examples, expected);
         assert!(
             placements.iter().all(|&n| n > 0),
             "examples tracing their shadow rays in the shade stage at their own sizes, and in the \

@@ -11,7 +11,7 @@
 //! once over the tile. When every path ends in a tile's first round
 //! ([`RoundKernels::tile_list`]), the host stores the word and the workgroup counts for the whole
 //! tile itself, and the tile's one round runs without the listing kernels and without a
-//! read-back.
+//! read-back, and without the finish kernel where the round's kernels do its work.
 //! Tiles run one after the other, so one tile's path state is all the state buffer has to hold.
 //!
 //! With [`RoundKernels::timed`], every dispatch of a round is submitted and waited for alone and
@@ -46,7 +46,8 @@ pub struct RoundKernels<'a> {
     /// The kernel run once over a tile after its last round.
     pub finish: &'a Kernel,
     /// Every path ends in a tile's first round: the host lists the tile itself ([`TileList`]),
-    /// and the round runs without its leading direct kernels and without a read-back.
+    /// and the round runs without its leading direct kernels and without a read-back (and, when
+    /// its kernels accumulate the samples, without the finish kernel after it).
     pub tile_list: Option<TileList>,
     /// The binding of the buffer holding the *running* word: zeroed before a tile's first round,
     /// set by the round's leading direct kernels to the number of paths the (next) round runs
@@ -64,7 +65,9 @@ pub struct RoundKernels<'a> {
 /// How the host lists a tile for a round that is its last ([`RoundKernels::tile_list`]): it
 /// stores the tile's slot count as the *running* word, the indirect dispatches' workgroups after
 /// it (`x` to cover the slots, `y = z = 1`), and `selector` at `selector_offset`, the word that
-/// tells the indirect kernels to take the tile's slots rather than a list.
+/// tells the indirect kernels to take the tile's slots rather than a list. With `accumulates`,
+/// the round's kernels also do the finish kernel's work (each path's sample goes to the image,
+/// each slot starts again), and the finish kernel does not run after it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct TileList {
     /// Byte offset of the selector's word in the flag's buffer (a multiple of 4).
@@ -73,6 +76,8 @@ pub struct TileList {
     pub selector: u32,
     /// Invocations a workgroup of the indirect kernels.
     pub group: u32,
+    /// The round's kernels accumulate the tile's samples and start its slots again.
+    pub accumulates: bool,
 }
 
 /// What a wavefront dispatch did.
@@ -372,6 +377,13 @@ impl TileDispatcher {
                 return Err(DispatchError::TooManyRounds {
                     rounds: kernels.max_rounds,
                 });
+            }
+            // A listed tile's round accumulated its paths itself (`TileList`).
+            if kernels.tile_list.is_some_and(|t| t.accumulates) {
+                wait(gpu)?;
+                report.dispatch.batches += 1;
+                progress(done as u32 + 1, total);
+                continue;
             }
             let finish = kernels.finish;
             let begin = Instant::now();
