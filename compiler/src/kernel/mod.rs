@@ -469,33 +469,28 @@ struct ShadeWays {
     accumulates: bool,
 }
 
-/// [`lower_kernel_with`] for the shade stage: with `accumulate`, where every sample ends in its
-/// first shading step (no secondary rays; `traces_no_rays` false: no shadow stage), first with
-/// `sample_done` lowered to `wf_sample_accumulate`, which binds `accum`; when that takes the stage
-/// past [`wavefront::MAX_STORAGE_BUFFERS`], again without it (the finish stage accumulates).
+/// [`lower_kernel_with`] for the shade stage. `ways.accumulates` asks for the accumulation: where
+/// every sample ends in its first shading step (no secondary rays; `traces_no_rays` false: no
+/// shadow stage), the stage is first lowered with `sample_done` as `wf_sample_accumulate`, which
+/// binds `accum`, and kept unless that takes it past [`wavefront::MAX_STORAGE_BUFFERS`]; otherwise
+/// it is lowered without (the finish stage accumulates).
 fn lower_shade_with(
     checked: &Checked,
     linked: &Linked,
     root: &str,
-    (replay_shadows, traces_no_rays): (bool, bool),
-    accumulate: bool,
+    ways: ShadeWays,
 ) -> Result<(naga::Module, Bindings), Box<Diagnostic>> {
     let entry = wavefront::Stage::Shade.entry();
-    let ways = ShadeWays {
-        replay_shadows,
-        traces_no_rays,
-        accumulates: false,
-    };
-    if accumulate && !linked.config.has_secondary_rays && !traces_no_rays {
-        let accumulating = ShadeWays {
-            accumulates: true,
-            ..ways
-        };
-        let lowered = lower_kernel_with(checked, linked, root, entry, accumulating)?;
+    if ways.accumulates && !linked.config.has_secondary_rays && !ways.traces_no_rays {
+        let lowered = lower_kernel_with(checked, linked, root, entry, ways)?;
         if wavefront::storage_buffers(&lowered.1) <= wavefront::MAX_STORAGE_BUFFERS {
             return Ok(lowered);
         }
     }
+    let ways = ShadeWays {
+        accumulates: false,
+        ..ways
+    };
     lower_kernel_with(checked, linked, root, entry, ways)
 }
 
@@ -516,6 +511,11 @@ pub fn lower_shade_stage(
     accumulate: bool,
 ) -> Result<(naga::Module, Bindings, bool), Box<Diagnostic>> {
     let stage = wavefront::Stage::Shade;
+    let ways = |replay_shadows, traces_no_rays| ShadeWays {
+        replay_shadows,
+        traces_no_rays,
+        accumulates: accumulate,
+    };
     let most = match placement {
         ShadowRays::Replay | ShadowRays::Stage => None,
         ShadowRays::Shade => Some(u64::MAX),
@@ -526,7 +526,7 @@ pub fn lower_shade_stage(
     };
     if let Some(most) = most {
         let (module, bindings) =
-            lower_shade_with(checked, linked, stage.root(), (false, false), accumulate)?;
+            lower_shade_with(checked, linked, stage.root(), ways(false, false))?;
         let copies = weight::inlined_copies(&module, stage.entry(), wavefront::TRAVERSAL_FN)
             .unwrap_or(u64::MAX);
         if copies <= most {
@@ -534,16 +534,14 @@ pub fn lower_shade_stage(
         }
     }
     if matches!(placement, ShadowRays::Stage | ShadowRays::AutoFastCompile) {
-        let (module, bindings) =
-            lower_shade_with(checked, linked, stage.root(), (true, true), accumulate)?;
+        let (module, bindings) = lower_shade_with(checked, linked, stage.root(), ways(true, true))?;
         return Ok((module, bindings, false));
     }
     let (module, bindings) = lower_shade_with(
         checked,
         linked,
         wavefront::SHADE_REPLAY_ROOT,
-        (true, false),
-        accumulate,
+        ways(true, false),
     )?;
     Ok((module, bindings, true))
 }

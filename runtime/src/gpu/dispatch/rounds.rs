@@ -378,26 +378,24 @@ impl TileDispatcher {
                     rounds: kernels.max_rounds,
                 });
             }
-            // A listed tile's round accumulated its paths itself (`TileList`).
+            // The finish kernel, unless a listed tile's round did its work (`TileList`).
             if kernels.tile_list.is_some_and(|t| t.accumulates) {
                 wait(gpu)?;
-                report.dispatch.batches += 1;
-                progress(done as u32 + 1, total);
-                continue;
-            }
-            let finish = kernels.finish;
-            let begin = Instant::now();
-            submit(gpu, finish.label(), "wavefront finish", |e| {
-                dispatch_kernel(
-                    &mut begin_pass(e, finish.label()),
-                    finish,
-                    RoundDispatch::Tile,
-                    &groups[finish_group],
-                );
-            })?;
-            wait(gpu)?;
-            if timed {
-                add_stage_ms(&mut report.stage_ms, finish.label(), elapsed_ms(begin));
+            } else {
+                let finish = kernels.finish;
+                let begin = Instant::now();
+                submit(gpu, finish.label(), "wavefront finish", |e| {
+                    dispatch_kernel(
+                        &mut begin_pass(e, finish.label()),
+                        finish,
+                        RoundDispatch::Tile,
+                        &groups[finish_group],
+                    );
+                })?;
+                wait(gpu)?;
+                if timed {
+                    add_stage_ms(&mut report.stage_ms, finish.label(), elapsed_ms(begin));
+                }
             }
             report.dispatch.batches += 1;
             progress(done as u32 + 1, total);
