@@ -21,6 +21,11 @@
 //!   compile (a preview, a first pixel). Images stay byte-identical; kernels compile in a third to
 //!   a half of the time and run 1.1 to 3.9 times slower.
 //!
+//! - A shader cache of its own for each SIMD width on lavapipe before Mesa 26
+//!   (`MESA_SHADER_CACHE_DIR`, [`width_cache_dir`]), where Mesa's cache key leaves the width out: a
+//!   kernel compiled at 256 bits was found again by a 128-bit process and run at 256 bits (and the
+//!   other way round), whatever `LP_NATIVE_VECTOR_WIDTH` and the summary's `host:` line said.
+//!
 //! Both are measured in docs/bench/compile.md and docs/bench/lavapipe.md. [`HostCpu`]'s line says
 //! when a value is rtc's choice rather than the user's.
 
@@ -33,6 +38,9 @@ pub const VECTOR_WIDTH_VAR: &str = "LP_NATIVE_VECTOR_WIDTH";
 
 /// The width [`apply_lavapipe_defaults`] gives lavapipe releases before [`NARROW_BEFORE_MESA`].
 pub const NARROW_WIDTH: &str = "128";
+
+/// The variable of Mesa's shader cache directory (`mesa_shader_cache_db` and the like go inside it).
+pub const CACHE_DIR_VAR: &str = "MESA_SHADER_CACHE_DIR";
 
 /// The first Mesa release whose lavapipe keeps its own width. Mesa 25 turns each storage-buffer
 /// load into a loop over the batch's lanes, so a kernel's LLVM code grows with the batch: at 128
@@ -149,7 +157,11 @@ static APPLIED: OnceLock<Vec<&'static str>> = OnceLock::new();
 /// - [`VECTOR_WIDTH_VAR`]` = `[`NARROW_WIDTH`] when the machine's Vulkan CPU adapter is lavapipe
 ///   from a Mesa release before [`NARROW_BEFORE_MESA`];
 /// - [`JIT_VAR`]` = `[`QUICK_JIT`] when `jit` is [`CpuJit::Quick`] and the machine has a Vulkan
-///   lavapipe adapter.
+///   lavapipe adapter;
+/// - [`CACHE_DIR_VAR`] to [`width_cache_dir`]'s directory for the width when [`VECTOR_WIDTH_VAR`]
+///   is set (by the user or as above) on lavapipe before [`NARROW_BEFORE_MESA`], whose shader
+///   cache keys leave the width out (Mesa 26's keep it), and neither `MESA_SHADER_CACHE_DIR` nor
+///   `MESA_GLSL_CACHE_DIR` is set: kernels compiled at one width are never run at another.
 ///
 /// Returns the names it set. It asks the Vulkan driver first (a Vulkan instance made and dropped;
 /// lavapipe reads the width again for every instance, the JIT switches once per process, hence the
@@ -173,14 +185,51 @@ pub fn apply_lavapipe_defaults(jit: CpuJit) -> &'static [&'static str] {
         } else if quick {
             std::env::remove_var(JIT_VAR);
         }
-        if std::env::var_os(VECTOR_WIDTH_VAR).is_none()
-            && info.is_some_and(|info| wants_narrow_batches(&info))
-        {
+        let narrow = info.as_deref().is_some_and(wants_narrow_batches);
+        if std::env::var_os(VECTOR_WIDTH_VAR).is_none() && narrow {
             std::env::set_var(VECTOR_WIDTH_VAR, NARROW_WIDTH);
             set.push(VECTOR_WIDTH_VAR);
         }
+        // The same releases leave the width out of their shader cache's key.
+        if narrow {
+            // Mesa makes only the last directory of the path; without it the cache is off.
+            if let Some(dir) = width_cache_dir(|name| std::env::var_os(name))
+                .filter(|dir| std::fs::create_dir_all(dir).is_ok())
+            {
+                std::env::set_var(CACHE_DIR_VAR, dir);
+                set.push(CACHE_DIR_VAR);
+            }
+        }
         set
     })
+}
+
+/// The shader cache directory for lavapipe's SIMD width in an environment read through `var`:
+/// `rtc/mesa-lp<width>` in the directory Mesa would use (`$XDG_CACHE_HOME`, else `$HOME/.cache`),
+/// for a non-empty [`VECTOR_WIDTH_VAR`] of digits only; `None` when the width is Mesa's own
+/// (unset or empty), when the user chose a cache directory (`MESA_SHADER_CACHE_DIR` or the older
+/// `MESA_GLSL_CACHE_DIR`), or when there is no home to put it in. Mesa 25's lavapipe keys its
+/// shader cache by the driver build, the CPU's features and `GALLIVM_PERF`, not by the width, so a
+/// kernel compiled at 256 bits by one process was found again and run at 256 bits by a 128-bit one
+/// (measured: `LP_NATIVE_VECTOR_WIDTH=256 rtc render examples/hello/scene.rt` compiled in 970 ms,
+/// then the same render at rtc's 128 bits took 86 ms of "pipelines", a cache hit;
+/// docs/bench/lavapipe.md, "One shader cache per SIMD width (2026-12-06, night)").
+pub fn width_cache_dir(
+    var: impl Fn(&str) -> Option<std::ffi::OsString>,
+) -> Option<std::path::PathBuf> {
+    let width = var(VECTOR_WIDTH_VAR)?;
+    let width = width.to_str()?;
+    if width.is_empty() || !width.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    if var(CACHE_DIR_VAR).is_some() || var("MESA_GLSL_CACHE_DIR").is_some() {
+        return None;
+    }
+    let non_empty = |name: &str| var(name).filter(|v| !v.is_empty());
+    let home = non_empty("XDG_CACHE_HOME")
+        .map(std::path::PathBuf::from)
+        .or_else(|| non_empty("HOME").map(|h| std::path::PathBuf::from(h).join(".cache")))?;
+    Some(home.join("rtc").join(format!("mesa-lp{width}")))
 }
 
 /// The variables [`apply_lavapipe_defaults`] set in this process (empty before it runs). A child
@@ -333,6 +382,55 @@ fn vector_features() -> Vec<&'static str> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn each_simd_width_gets_a_shader_cache_of_its_own() {
+        use std::ffi::OsString;
+        use std::path::PathBuf;
+        fn env<'a>(pairs: &'a [(&'a str, &'a str)]) -> impl Fn(&str) -> Option<OsString> + 'a {
+            move |name: &str| {
+                pairs
+                    .iter()
+                    .find(|(n, _)| *n == name)
+                    .map(|(_, v)| OsString::from(v))
+            }
+        }
+        let home = [("HOME", "/home/u"), (VECTOR_WIDTH_VAR, "128")];
+        assert_eq!(
+            width_cache_dir(env(&home)),
+            Some(PathBuf::from("/home/u/.cache/rtc/mesa-lp128"))
+        );
+        let xdg = [
+            ("HOME", "/home/u"),
+            ("XDG_CACHE_HOME", "/c"),
+            (VECTOR_WIDTH_VAR, "256"),
+        ];
+        assert_eq!(
+            width_cache_dir(env(&xdg)),
+            Some(PathBuf::from("/c/rtc/mesa-lp256"))
+        );
+        // Mesa's own width, the user's cache directory, no home, or a width that is not a number:
+        // nothing.
+        for pairs in [
+            &[("HOME", "/home/u")][..],
+            &[("HOME", "/home/u"), (VECTOR_WIDTH_VAR, "")],
+            &[
+                ("HOME", "/home/u"),
+                (VECTOR_WIDTH_VAR, "128"),
+                (CACHE_DIR_VAR, "/m"),
+            ],
+            &[
+                ("HOME", "/home/u"),
+                (VECTOR_WIDTH_VAR, "128"),
+                ("MESA_GLSL_CACHE_DIR", "/m"),
+            ],
+            &[(VECTOR_WIDTH_VAR, "128")],
+            &[("HOME", ""), (VECTOR_WIDTH_VAR, "128")],
+            &[("HOME", "/home/u"), (VECTOR_WIDTH_VAR, "../x")],
+        ] {
+            assert_eq!(width_cache_dir(env(pairs)), None, "{pairs:?}");
+        }
+    }
 
     #[test]
     fn the_model_name_is_the_first_model_line() {
