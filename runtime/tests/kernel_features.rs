@@ -216,7 +216,7 @@ fn compile_with_stages(
     file: &SceneFile,
     dir: &std::path::Path,
 ) -> rtc_compiler::kernel::CompiledScene {
-    compile_with_stages_placing(file, dir, ShadowRays::Stage)
+    compile_with_stages_placing(file, dir, ShadowRays::Stage, true)
 }
 
 /// The scene's stage kernels with its shadow rays traced where `shadow_rays` says (the tests of
@@ -225,16 +225,18 @@ fn compile_with_stages_placing(
     file: &SceneFile,
     dir: &std::path::Path,
     shadow_rays: ShadowRays,
+    large: bool,
 ) -> rtc_compiler::kernel::CompiledScene {
     use rtc_compiler::kernel::{ExecModel, KernelOptions};
-    // A render larger than `SHADE_ACCUMULATES_MIN_SAMPLES`, so that a shade stage whose samples
-    // end in their first step accumulates a listed tile's samples itself.
+    // `large`: a render larger than `SHADE_ACCUMULATES_MIN_SAMPLES`, so that a shade stage whose
+    // samples end in their first step accumulates a listed tile's samples itself; else one of
+    // 64 x 48, whose shade stage leaves them to the finish stage.
     let compiled = file.compile_with(
         dir,
         &KernelOptions {
             exec: Some(ExecModel::Wavefront),
             shadow_rays,
-            render_size: Some([256, 256]),
+            render_size: Some(if large { [256, 256] } else { [64, 48] }),
             render_spp: Some(1),
             ..KernelOptions::default()
         },
@@ -286,7 +288,7 @@ fn both_models_in_tiles(
     use rtc_compiler::kernel::ExecModel;
     use rtc_runtime::gpu::TileConfig;
     let dir = temp_dir("features", name);
-    let compiled = compile_with_stages_placing(file, &dir, shadow_rays);
+    let compiled = compile_with_stages_placing(file, &dir, shadow_rays, true);
     let options = |exec| RenderOptions {
         size: Some(size),
         samples: Some(1),
@@ -467,14 +469,21 @@ fn a_pass_whose_paths_end_in_one_round_lists_no_tile() {
     use rtc_compiler::kernel::ExecModel;
     use rtc_runtime::gpu::TileConfig;
     let file = scene("shadows").set("SIDE", "80u");
-    for (shadow_rays, listing) in [
-        (ShadowRays::Shade, false),
-        (ShadowRays::Replay, false),
-        (ShadowRays::Stage, true),
+    // (shadow rays, compiled for a large render, the shade stage accumulates, a listing): with a
+    // shadow stage the rounds list their paths; without, the host lists the tile, and the shade
+    // stage of a large render's kernels accumulates the samples where a small one's leaves them
+    // to the finish stage (and, with the record's first chunk known in a listed tile, counts the
+    // camera ray the trace stage left to it).
+    for (shadow_rays, large, accumulates, listing) in [
+        (ShadowRays::Shade, true, true, false),
+        (ShadowRays::Replay, true, true, false),
+        (ShadowRays::Shade, false, false, false),
+        (ShadowRays::Replay, false, false, false),
+        (ShadowRays::Stage, true, false, true),
     ] {
-        let dir = temp_dir("features", &format!("tile_list_{shadow_rays:?}"));
-        let compiled = compile_with_stages_placing(&file, &dir, shadow_rays);
-        assert_eq!(compiled.shade_accumulates(), !listing, "{shadow_rays:?}");
+        let dir = temp_dir("features", &format!("tile_list_{shadow_rays:?}_{large}"));
+        let compiled = compile_with_stages_placing(&file, &dir, shadow_rays, large);
+        assert_eq!(compiled.shade_accumulates(), accumulates, "{shadow_rays:?}");
         let options = |exec| RenderOptions {
             size: Some([80, 56]),
             samples: Some(2),
@@ -487,7 +496,7 @@ fn a_pass_whose_paths_end_in_one_round_lists_no_tile() {
             stage_times: true,
             ..RenderOptions::default()
         };
-        let what = format!("{shadow_rays:?}");
+        let what = format!("{shadow_rays:?}, large {large}");
         let (mega, mega_stats) =
             common::scene::render(&gpu, &compiled, options(ExecModel::Megakernel), &what);
         let (wave, stats) =
@@ -501,7 +510,7 @@ fn a_pass_whose_paths_end_in_one_round_lists_no_tile() {
         );
         assert_eq!(
             labels.contains(&"rtc wf_finish"),
-            listing,
+            !accumulates,
             "{what}: {labels:?}"
         );
         assert_eq!(stats.rounds, 2 * 4, "{what}: one round a tile and pass");
