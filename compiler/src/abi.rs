@@ -119,6 +119,7 @@ pub const FRAME: StructDesc = StructDesc {
         f("background_type", FieldType::U32),
         f("background_offset", FieldType::U32),
         f("path_slots", FieldType::U32),
+        f("passes_per_dispatch", FieldType::U32),
     ],
 };
 

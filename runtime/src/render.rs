@@ -195,7 +195,10 @@ pub struct RenderStats {
     pub samples: u32,
     /// Passes.
     pub passes: u32,
-    /// Tiles dispatched, over all passes.
+    /// Passes one dispatch ran ([`passes_per_dispatch`]; 1 but for a still render with the
+    /// megakernel).
+    pub passes_per_dispatch: u32,
+    /// Tiles dispatched, over all passes (a dispatch of several passes counts once).
     pub tiles: u64,
     /// Milliseconds building BVHs for this render: every BLAS and the TLAS on the first render,
     /// only the TLAS after objects moved, 0 when nothing changed.
@@ -492,6 +495,28 @@ pub fn preview_factor(pass_ms: Option<f64>) -> u32 {
 pub fn preview_size([width, height]: [u32; 2], factor: u32) -> [u32; 2] {
     let f = factor.clamp(1, 64);
     [width.div_ceil(f), height.div_ceil(f)]
+}
+
+/// The most samples per pixel one megakernel dispatch of a still render takes
+/// ([`passes_per_dispatch`]).
+pub const MAX_SAMPLES_PER_DISPATCH: u32 = 16;
+
+/// How many of a still render's `passes` passes (of `samples_per_pass` samples) one dispatch of
+/// the megakernel runs ([`Renderer::render`]): the most that divide `passes` and keep a dispatch
+/// at [`MAX_SAMPLES_PER_DISPATCH`] samples a pixel or fewer (at least 1). The image does not
+/// depend on it (each pass is added to `accum` as its own dispatch adds it, `render_pixel` in
+/// `stdlib/kernel/trace.rt`); the frame does: one dispatch and one read-back of the counters fewer
+/// a pass, and in a path loop a lane whose path ends starts its next sample instead of idling
+/// until its SIMD batch's longest path ends (cornell_path on lavapipe, 16 samples a dispatch:
+/// docs/bench/README.md, "Several passes a dispatch (2026-12-07)"). Interactive
+/// accumulation ([`Renderer::accumulate`]) keeps one pass a dispatch; so does the wavefront
+/// model, whose slots already start their next sample as soon as one ends.
+pub fn passes_per_dispatch(passes: u32, samples_per_pass: u32) -> u32 {
+    let most = MAX_SAMPLES_PER_DISPATCH / samples_per_pass.max(1);
+    (1..=most.min(passes))
+        .rev()
+        .find(|k| passes % k == 0)
+        .unwrap_or(1)
 }
 
 fn ms_since(start: Instant) -> f64 {
@@ -1007,7 +1032,8 @@ impl<'g> Renderer<'g> {
         self.passes_done = 0;
     }
 
-    /// Total tiles the next render dispatches (all passes), for sizing a progress display.
+    /// Tiles times passes of the next render, for sizing a progress display: the total its
+    /// `progress` counts to (a dispatch of several passes counts each of them).
     pub fn total_tiles(&self) -> u64 {
         self.tiles_per_pass() * u64::from(self.passes())
     }
@@ -1033,7 +1059,11 @@ impl<'g> Renderer<'g> {
     ) -> Result<RenderResult, RenderError> {
         self.passes_done = 0;
         let passes = self.passes();
-        let mut stats = self.accumulate(passes, progress)?;
+        let per_dispatch = match self.kernels {
+            Kernels::Mega(_) => passes_per_dispatch(passes, self.samples_per_pass),
+            Kernels::Wavefront { .. } => 1,
+        };
+        let mut stats = self.run_passes(passes, per_dispatch, self.size, progress)?;
         let start = Instant::now();
         let image = self.image()?;
         stats.readback_ms += ms_since(start);
@@ -1075,7 +1105,7 @@ impl<'g> Renderer<'g> {
         passes: u32,
         progress: &mut dyn FnMut(u64, u64),
     ) -> Result<RenderStats, RenderError> {
-        self.run_passes(passes, self.size, progress)
+        self.run_passes(passes, 1, self.size, progress)
     }
 
     /// Renders one pass of the scene as it is now at `1 / factor` of the image's width and
@@ -1088,7 +1118,7 @@ impl<'g> Renderer<'g> {
     pub fn preview(&mut self, factor: u32) -> Result<RenderResult, RenderError> {
         let [width, height] = preview_size(self.size, factor);
         self.passes_done = 0;
-        let result = self.run_passes(1, [width, height], &mut |_, _| {});
+        let result = self.run_passes(1, 1, [width, height], &mut |_, _| {});
         self.passes_done = 0;
         let mut stats = result?;
         stats.accumulated_samples = 0;
@@ -1101,10 +1131,12 @@ impl<'g> Renderer<'g> {
     }
 
     /// `passes` passes at `size` (the image's, or a preview's smaller one), after uploading what
-    /// changed; the accumulation buffer stays sized for the whole image.
+    /// changed, `per_dispatch` of them a dispatch (the megakernel's; 1 unless it divides
+    /// `passes`); the accumulation buffer stays sized for the whole image.
     fn run_passes(
         &mut self,
         passes: u32,
+        per_dispatch: u32,
         size: [u32; 2],
         progress: &mut dyn FnMut(u64, u64),
     ) -> Result<RenderStats, RenderError> {
@@ -1117,8 +1149,15 @@ impl<'g> Renderer<'g> {
         let image_pixels = u64::from(self.size[0]) * u64::from(self.size[1]);
         let [width, height] = size;
         let pixels = u64::from(width) * u64::from(height);
+        // Every dispatch takes as many passes (`passes_per_dispatch` is one uniform).
+        let per_dispatch = if per_dispatch > 0 && passes % per_dispatch == 0 {
+            per_dispatch
+        } else {
+            1
+        };
         let frame = FrameUniforms {
             path_slots: self.path_slots,
+            passes_per_dispatch: per_dispatch,
             ..self
                 .entities
                 .frame_uniforms(self.samples_per_pass, self.total_samples)
@@ -1141,6 +1180,7 @@ impl<'g> Renderer<'g> {
 
         let per_pass = self.tiles_for(size);
         let total = per_pass * u64::from(passes);
+        let dispatches = passes / per_dispatch;
         let mut render_ms = 0.0;
         let mut flush_ms = 0.0;
         let mut tiles = 0u64;
@@ -1150,10 +1190,12 @@ impl<'g> Renderer<'g> {
         let mut listed_slots = 0u64;
         let mut slot_rounds = 0u64;
         let mut stage_ms: Vec<(String, f64)> = Vec::new();
-        for i in 0..passes {
-            let pass = self.passes_done.saturating_add(i);
-            let base = u64::from(i) * per_pass;
-            let mut report = |done: u32, _| progress(base + u64::from(done), total);
+        for i in 0..dispatches {
+            let first = i * per_dispatch;
+            let pass = self.passes_done.saturating_add(first);
+            let base = u64::from(first) * per_pass;
+            let mut report =
+                |done: u32, _| progress(base + u64::from(done) * u64::from(per_dispatch), total);
             let d = match &self.kernels {
                 Kernels::Mega(kernel) => self.dispatcher.dispatch(
                     gpu,
@@ -1199,7 +1241,7 @@ impl<'g> Renderer<'g> {
             flush_ms += d.flush_ms;
             tiles += u64::from(d.tiles);
             // On the web the counters are read only by `counters_async` (nothing may block).
-            if passes > 1 && cfg!(not(target_arch = "wasm32")) {
+            if dispatches > 1 && cfg!(not(target_arch = "wasm32")) {
                 let rays = self.scene.read_counters(gpu)?.rays;
                 rays_traced += u64::from(rays.wrapping_sub(last_rays));
                 last_rays = rays;
@@ -1254,6 +1296,7 @@ impl<'g> Renderer<'g> {
             samples_per_pass: self.samples_per_pass,
             samples,
             passes,
+            passes_per_dispatch: per_dispatch,
             tiles,
             bvh_build_ms: bvh_ms,
             load_ms: setup.load_ms,
@@ -1518,4 +1561,33 @@ fn apply_bounds(entities: &mut Entities, boxes: &[[f32; 4]]) -> Result<(), Rende
     }
     entities.rebuild_tlas()?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{passes_per_dispatch, MAX_SAMPLES_PER_DISPATCH};
+
+    #[test]
+    fn a_dispatch_takes_the_most_passes_that_divide_the_render_within_the_sample_bound() {
+        // (passes, samples a pass) -> passes a dispatch
+        for (passes, samples, want) in [
+            (64, 1, 16),
+            (64, 4, 4),
+            (24, 1, 12),
+            (6, 1, 6),
+            (7, 1, 7),
+            (17, 1, 1),
+            (34, 1, 2),
+            (1, 1, 1),
+            (4, 16, 1),
+            (4, 32, 1),
+            (0, 1, 1),
+            (8, 0, 8),
+        ] {
+            let k = passes_per_dispatch(passes, samples);
+            assert_eq!(k, want, "{passes} passes of {samples}");
+            assert!(k >= 1 && (passes == 0 || passes % k == 0));
+            assert!(k == 1 || k * samples.max(1) <= MAX_SAMPLES_PER_DISPATCH);
+        }
+    }
 }

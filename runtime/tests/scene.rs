@@ -220,8 +220,10 @@ fn render(@builtin(global_invocation_id) gid: vec3<u32>) {{
     let o = frame.background_offset;
     let bg = vec3<f32>(bitcast<f32>(params[o]), bitcast<f32>(params[o + 1u]), bitcast<f32>(params[o + 2u]));
     let n = f32(frame.samples_per_pass);
-    accum[i] += vec4<f32>(bg * n + vec3<f32>(f32(tile.frame)), n);
-    if i == 0u {{ atomicAdd(&counters[0], 1u); }}
+    for (var k = 0u; k < frame.passes_per_dispatch; k++) {{
+        accum[i] += vec4<f32>(bg * n + vec3<f32>(f32(tile.frame + k)), n);
+        if i == 0u {{ atomicAdd(&counters[0], 1u); }}
+    }}
 }}
 ",
         wgsl_struct(&abi::FRAME),
@@ -321,7 +323,9 @@ fn renderer_runs_passes_of_tiles_and_averages() {
         .expect("render");
     let s = &result.stats;
     assert_eq!((s.passes, s.samples, s.samples_per_pass), (4, 8, 2));
-    assert_eq!(s.tiles, 24);
+    // A still render runs the four passes in one dispatch of each tile.
+    assert_eq!(s.passes_per_dispatch, 4);
+    assert_eq!(s.tiles, 6);
     assert_eq!(s.nonfinite_samples, 4, "one counter tick per pass");
     assert_eq!(s.primary_rays, 37 * 23 * 8);
     assert_eq!((s.objects, s.instances), (3, 2));

@@ -99,6 +99,63 @@ fn four_single_passes_accumulate_to_the_four_pass_render() {
     );
 }
 
+/// A still render with the megakernel runs several passes a dispatch
+/// (`rtc_runtime::render::passes_per_dispatch`); each pass is still added to `accum` as a dispatch
+/// of its own adds it, so the image is the one of the passes accumulated one at a time, bit for
+/// bit, the rays counted are the same, and `frame_index()` still numbers each sample's pass. Two
+/// scenes: a path loop (its lanes start their next sample as soon as a path ends) and the stage
+/// (the back-tracking `trace`).
+#[test]
+fn a_still_render_adds_several_passes_a_dispatch_as_single_passes_add_them() {
+    let Some(gpu) =
+        gpu_or_skip("a_still_render_adds_several_passes_a_dispatch_as_single_passes_add_them")
+    else {
+        return;
+    };
+    let dir = temp_dir("session", "passes");
+    std::fs::write(dir.join("tri.obj"), TRI_OBJ).expect("write tri.obj");
+    let megakernel = rtc_compiler::kernel::KernelOptions {
+        exec: Some(ExecModel::Megakernel),
+        ..Default::default()
+    };
+    for (file, path_loop, passes) in [
+        ("session/passes.rt", true, 6),
+        ("session/stage.rt", false, 4),
+    ] {
+        let compiled = SceneFile::open(file).compile_with(&dir, &megakernel);
+        assert_eq!(compiled.exec, ExecModel::Megakernel, "{file}");
+        assert_eq!(compiled.linked.config.path_loop, path_loop, "{file}");
+        let mut r = Renderer::new(&gpu, &compiled, RenderOptions::default()).expect("renderer");
+        let whole = r.render(&mut |_, _| {}).expect("render");
+        assert_eq!(whole.stats.passes, passes, "{file}");
+        assert_eq!(
+            whole.stats.passes_per_dispatch, passes,
+            "{file}: one dispatch"
+        );
+        r.reset_accumulation();
+        let mut rays = 0;
+        for _ in 0..passes {
+            let stats = r.accumulate(1, &mut |_, _| {}).expect("accumulate");
+            assert_eq!(stats.passes_per_dispatch, 1);
+            rays += stats.rays_traced;
+        }
+        assert_same(
+            &format!("{file}: one dispatch of {passes} passes against {passes} of one"),
+            &r.image().expect("image"),
+            &whole.image,
+        );
+        assert_eq!(rays, whole.stats.rays_traced, "{file}: rays counted");
+        if path_loop {
+            // The panel in the middle shows 0.1 times the pass number: the mean of passes 0 to 5.
+            let p = whole.image.pixels()[8 * 24 + 12];
+            assert!(
+                (p[0] - 0.25).abs() < 1e-6,
+                "{file}: the panel's pixel is {p:?}, not the mean pass number 2.5 times 0.1"
+            );
+        }
+    }
+}
+
 #[test]
 fn a_camera_write_restarts_the_accumulation_and_moves_the_view() {
     let Some(gpu) = gpu_or_skip("a_camera_write_restarts_the_accumulation_and_moves_the_view")

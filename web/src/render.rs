@@ -185,6 +185,7 @@ impl WebRenderer {
             "height": stats.height,
             "samples": stats.samples,
             "passes": stats.passes,
+            "passes_per_dispatch": stats.passes_per_dispatch,
             "tiles": stats.tiles,
             "accumulatedSamples": stats.accumulated_samples,
             "renderMs": stats.render_ms,

@@ -622,13 +622,18 @@ pub fn summary(s: &RenderStats, output: &Path) -> String {
     out.push_str(&format!("adapter: {}\n", s.adapter));
     out.push_str(&format!("host: {}\n", rtc_runtime::gpu::HostCpu::detect()));
     out.push_str(&format!(
-        "rendered {}x{} at {} spp ({} pass{} of {}) to {}\n",
+        "rendered {}x{} at {} spp ({} pass{} of {}{}) to {}\n",
         s.width,
         s.height,
         s.samples,
         s.passes,
         if s.passes == 1 { "" } else { "es" },
         s.samples_per_pass,
+        if s.passes_per_dispatch > 1 {
+            format!(", {} a dispatch", s.passes_per_dispatch)
+        } else {
+            String::new()
+        },
         output.display()
     ));
     let flattened = match s.flattened {

@@ -441,6 +441,7 @@ pub fn config_module_with(c: &KernelConfig, debug: Option<super::DebugMode>) -> 
     let b = [
         ("HAS_SECONDARY_RAYS", c.has_secondary_rays),
         ("PATH_LOOP", c.path_loop),
+        ("REGENERATE_PATHS", c.regenerate_paths),
         ("HAS_ANY_HIT", c.has_any_hit),
         ("HAS_CUSTOM_GEOMETRY", c.has_custom_geometry),
         ("HAS_MESHES", c.has_meshes),

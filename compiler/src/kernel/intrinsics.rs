@@ -4,7 +4,7 @@
 //!   Their bodies are placeholders; every call is replaced ([`Intrinsics::lower_call`]): `load_*`
 //!   read the kernel's buffers, `rng_*`, the shaded hit's position error (`hit_error_*`, read by `shadow`), the spawn
 //!   queue, the traversal stack (`stack_load`, `stack_store`), the ray count (`count_ray`, flushed
-//!   to counter `COUNTER_RAYS` by `flush_ray_count`) and a debug kernel's counters (`debug_count`,
+//!   to counter `COUNTER_RAYS` and zeroed by `flush_ray_count`) and a debug kernel's counters (`debug_count`,
 //!   `debug_counts`) use private globals, `accumulate` and `write_bounds` write
 //!   results, and `call_<kind>` calls the generated dispatcher of that program kind.
 //! - **Record accessors** of `rtc:abi` (`mesh_slot_base(m)`, `triangle_v1(slot)`, …,
@@ -598,6 +598,9 @@ impl KernelHooks<'_> {
                     },
                     span,
                 );
+                // Zeroed, so a later flush adds only the rays traced after this one.
+                let zero = lit_u32(fb, 0);
+                fb.store(p, zero, span);
                 return Ok(None);
             }
             I::DebugCount => {

@@ -341,6 +341,7 @@ pub fn manifest_json(c: &CompiledScene) -> String {
     for (k, v) in [
         ("has_secondary_rays", cfg.has_secondary_rays),
         ("path_loop", cfg.path_loop),
+        ("regenerate_paths", cfg.regenerate_paths),
         ("has_any_hit", cfg.has_any_hit),
         ("has_custom_geometry", cfg.has_custom_geometry),
         ("has_meshes", cfg.has_meshes),

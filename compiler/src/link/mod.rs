@@ -85,6 +85,12 @@ pub struct KernelConfig {
     /// With `path_loop`: depth of the first ray Russian roulette may end (the scene's
     /// `roulette_depth`; 0: never).
     pub roulette_depth: u32,
+    /// With `path_loop`: the megakernel starts a lane's next sample as soon as its path ends
+    /// (`render_pixel`), because one material type continues paths. Where several do, a lane's
+    /// bounces fall out of step with its neighbours' and a SIMD batch runs several materials'
+    /// code a step, which cost more than the idle lanes it saves (pbr_path on lavapipe: 0.89 and
+    /// 0.91 of the frame without it; cornell_path 0.86 and 0.83 with it).
+    pub regenerate_paths: bool,
     /// Some used material has an `@any_hit` program.
     pub has_any_hit: bool,
     /// Some object has a custom (`@geometry`) geometry.
@@ -119,6 +125,7 @@ impl KernelConfig {
             has_secondary_rays: true,
             path_loop: false,
             roulette_depth: 2,
+            regenerate_paths: false,
             has_any_hit: true,
             has_custom_geometry: true,
             has_meshes: true,
@@ -379,6 +386,14 @@ pub fn link_again(
                 .is_some_and(|p| p.additive_secondary)
     });
     let path_loop = has_secondary_rays && max_spawn == 1 && !has_media && additive;
+    let continuing = materials
+        .iter()
+        .filter(|t| {
+            program
+                .program_for(t.struct_id, ProgramKind::SecondaryRays)
+                .is_some()
+        })
+        .count();
     let config = KernelConfig {
         max_depth,
         max_spawn,
@@ -388,6 +403,7 @@ pub fn link_again(
         has_secondary_rays,
         path_loop,
         roulette_depth: desc.settings.roulette_depth,
+        regenerate_paths: path_loop && continuing == 1,
         has_any_hit: has(ProgramKind::AnyHit) || options.all_programs,
         has_custom_geometry: has_custom || options.all_programs,
         has_meshes: has_meshes || options.all_programs,

@@ -1408,6 +1408,7 @@ impl Entities {
             background_type: background.type_id,
             background_offset: background.offset,
             path_slots: 0,
+            passes_per_dispatch: 1,
         }
     }
 

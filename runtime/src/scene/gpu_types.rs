@@ -59,6 +59,11 @@ pub struct FrameUniforms {
     /// Path slots of the wavefront model's `paths` per tile (the stride of its chunk-major
     /// records, the same for every tile; 0 for the megakernel, which has none).
     pub path_slots: u32,
+    /// Passes one dispatch of the megakernel adds (`Renderer::render` batches a still render's
+    /// passes: each invocation runs `passes_per_dispatch × samples_per_pass` samples of its
+    /// pixel, adding each pass to `accum` as a dispatch of its own would); 1 for the stage
+    /// kernels, which ignore it.
+    pub passes_per_dispatch: u32,
 }
 
 /// `GpuInstance` ([`abi::INSTANCE`]): one object of the scene, 128 bytes.
@@ -220,7 +225,7 @@ macro_rules! assert_field {
 }
 
 const _: () = assert!(std::mem::size_of::<FrameUniforms>() == struct_size(&abi::FRAME));
-const _: () = assert!(abi::FRAME.fields.len() == 14);
+const _: () = assert!(abi::FRAME.fields.len() == 15);
 assert_field!(
     FrameUniforms,
     samples_per_pass,
@@ -250,6 +255,12 @@ assert_field!(
     "background_offset"
 );
 assert_field!(FrameUniforms, path_slots, abi::FRAME, "path_slots");
+assert_field!(
+    FrameUniforms,
+    passes_per_dispatch,
+    abi::FRAME,
+    "passes_per_dispatch"
+);
 
 const _: () = assert!(std::mem::size_of::<GpuInstance>() == struct_size(&abi::INSTANCE));
 const _: () = assert!(std::mem::size_of::<GpuInstance>() == 128);
@@ -441,6 +452,11 @@ mod tests {
                     "background_offset",
                     offset_of!(FrameUniforms, background_offset),
                 ),
+                ("path_slots", offset_of!(FrameUniforms, path_slots)),
+                (
+                    "passes_per_dispatch",
+                    offset_of!(FrameUniforms, passes_per_dispatch),
+                ),
             ],
         );
         let w2o = offset_of!(GpuInstance, world_to_object);
@@ -525,7 +541,7 @@ mod tests {
     #[test]
     fn element_sizes() {
         let size = |name: &str| element_size(abi::binding(name).expect("binding").element);
-        assert_eq!(size("frame"), 56);
+        assert_eq!(size("frame"), 60);
         assert_eq!(size("tile"), 32);
         assert_eq!(size("nodes"), 32);
         assert_eq!(size("instances"), 128);

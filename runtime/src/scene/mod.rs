@@ -67,8 +67,10 @@
 //!   a texture record's `texel_base` is its first word.
 //! - **`frame`** ([`FrameUniforms`]): `samples_per_pass` (the camera's), `total_samples` (the
 //!   scene's `samples` or an override), `seed`, `tlas_root`, `instance_count`, the light and medium
-//!   tables, camera and background type ids and offsets (background 0/0 without one).
-//! - **`tile`**: `gpu::TileParams`, written by the tile dispatcher; `frame` is the pass index.
+//!   tables, camera and background type ids and offsets (background 0/0 without one), the
+//!   wavefront model's `path_slots` and the megakernel's `passes_per_dispatch`.
+//! - **`tile`**: `gpu::TileParams`, written by the tile dispatcher; `frame` is the pass index (of
+//!   the first of the dispatch's `FrameUniforms::passes_per_dispatch` passes).
 //! - **`accum`**: `width * height` `vec4f` (rgb = radiance sum, a = sample count), zeroed before the
 //!   first pass of a render. **`counters`**: `COUNTER_WORDS` `u32`, zeroed with it (indices
 //!   `COUNTER_NONFINITE`, `COUNTER_RAYS`).

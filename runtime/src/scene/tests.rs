@@ -171,6 +171,7 @@ scene s {{
             background_type: bg.type_id,
             background_offset: bg.offset,
             path_slots: 0,
+            passes_per_dispatch: 1,
         }
     );
     assert_eq!(e.settings().width, 64);

@@ -21,6 +21,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
+    uint passes_per_dispatch;
 };
 
 struct Ray {
@@ -971,13 +972,31 @@ uint medium_at(float3 p_4, uint exclude)
     return _e62;
 }
 
+Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
+{
+    Ray ray_7 = (Ray)0;
+
+    FrameUniforms frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed);
+    const Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    float3 _e15 = ray_7.origin;
+    const uint _e17 = medium_at(_e15, NO_HIT);
+    ray_7.medium = _e17;
+    Ray _e18 = ray_7;
+    const Ray ray_22 = _e18;
+    return ray_22;
+}
+
 float3 node_frame_hi(GpuNode header)
 {
     const float3 _e5 = node_point(header.min_, header.max_, (65535u).xxx);
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_7, bool shadow_2)
+Candidate intersect_scene(Ray ray_8, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -987,22 +1006,22 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_7.tmax);
+    const Candidate _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = frame;
-    if ((frame_2.instance_count == 0u)) {
+    FrameUniforms frame_3 = frame;
+    if ((frame_3.instance_count == 0u)) {
         Candidate _e14 = best_2;
         const Candidate candidate_5 = _e14;
         return candidate_5;
     }
-    const float3 _e16 = safe_inverse(ray_7.dir);
-    uint base_2 = frame_2.tlas_root;
+    const float3 _e16 = safe_inverse(ray_8.dir);
+    uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
     float3 origin_5 = header_2.min_;
     float3 scale_3 = header_2.max_;
     const float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    const float _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
+    const float _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == asfloat(_e30))) {
         Candidate _e33 = best_2;
@@ -1021,7 +1040,7 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2)
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_7, _e55, shadow_2);
+                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_8, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -1034,7 +1053,7 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2)
             uint _e63 = child_1;
             GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e63)*32+0)), asuint(nodes.Load((base_2 + _e63)*32+12)), asfloat(nodes.Load3((base_2 + _e63)*32+16)), asuint(nodes.Load((base_2 + _e63)*32+28)));
             float _e69 = best_2.t;
-            const float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_7, _e16, _e69);
+            const float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_8, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1086,18 +1105,18 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_miss(uint type_id_1, uint offset_2, Ray ray_8)
+float3 dispatch_miss(uint type_id_1, uint offset_2, Ray ray_9)
 {
     return ZeroValuefloat3();
 }
 
-float3 miss(Ray ray_9)
+float3 miss(Ray ray_10)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
-    FrameUniforms frame_3 = frame;
-    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_9);
+    FrameUniforms frame_4 = frame;
+    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_10);
     return _e9;
 }
 
@@ -1116,9 +1135,9 @@ Lambert load_Lambert(uint offset_3)
     return lambert;
 }
 
-float3 shading_normal(Ray ray_10, Hit hit_1)
+float3 shading_normal(Ray ray_11, Hit hit_1)
 {
-    float3 ng = faceforward(hit_1.geometric_normal, ray_10.dir, hit_1.geometric_normal);
+    float3 ng = faceforward(hit_1.geometric_normal, ray_11.dir, hit_1.geometric_normal);
     return faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1210,8 +1229,8 @@ Ray shadow_ray(float3 position, float3 normal_1, float3 dir_1, float dist)
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_22 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_22;
+    const Ray ray_23 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_23;
 }
 
 float shadow_query(float3 position_1, float3 normal_2, float3 dir_2, float dist_1)
@@ -1262,12 +1281,12 @@ LightSample dispatch_light(uint type_id_2, uint offset_5, float3 position_3, flo
 
 LightSample sample_light_query(uint i_2, float3 position_4, float3 normal_5)
 {
-    FrameUniforms frame_4 = frame;
-    if ((i_2 >= frame_4.light_count)) {
+    FrameUniforms frame_5 = frame;
+    if ((i_2 >= frame_5.light_count)) {
         const LightSample lightsample_2 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_2;
     }
-    uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_5.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     uint _e22 = asuint(params.Load(entry*4));
     uint _e27 = asuint(params.Load((entry + 1u)*4));
     const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
@@ -1275,12 +1294,12 @@ LightSample sample_light_query(uint i_2, float3 position_4, float3 normal_5)
     return lightsample_3;
 }
 
-float3 lambert_shade(Lambert m, Ray ray_11, Hit hit_2)
+float3 lambert_shade(Lambert m, Ray ray_12, Hit hit_2)
 {
     float3 color = (float3)0;
     uint i_3 = (uint)0;
 
-    const float3 _e3 = shading_normal(ray_11, hit_2);
+    const float3 _e3 = shading_normal(ray_12, hit_2);
     color = (0.0).xxx;
     const uint _e8 = light_count_query();
     i_3 = 0u;
@@ -1307,43 +1326,43 @@ float3 lambert_shade(Lambert m, Ray ray_11, Hit hit_2)
     return _e33;
 }
 
-float3 dispatch_closest_hit(uint type_id_3, uint offset_6, Ray ray_12, Hit hit_3, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_3, uint offset_6, Ray ray_13, Hit hit_3, float3 secondary)
 {
     const Lambert _e3 = load_Lambert(offset_6);
-    const float3 _e4 = lambert_shade(_e3, ray_12, hit_3);
+    const float3 _e4 = lambert_shade(_e3, ray_13, hit_3);
     return _e4;
 }
 
-float3 shade_direct(Ray ray_13, Candidate c_2)
+float3 shade_direct(Ray ray_14, Candidate c_2)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_13, c_2);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_13, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_14, c_2);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, (0.0).xxx);
     return _e11;
 }
 
-float3 dispatch_medium(uint type_id_4, uint offset_7, Ray ray_14, float t, float3 radiance)
+float3 dispatch_medium(uint type_id_4, uint offset_7, Ray ray_15, float t, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_15, float t_1, float3 radiance_1)
+float3 through_medium(Ray ray_16, float t_1, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_15.medium == 0u)) {
+    if ((ray_16.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_15.medium - 1u)*128+0)), asfloat(instances.Load4((ray_15.medium - 1u)*128+16)), asfloat(instances.Load4((ray_15.medium - 1u)*128+32)), asfloat(instances.Load4((ray_15.medium - 1u)*128+48)), asfloat(instances.Load4((ray_15.medium - 1u)*128+64)), asfloat(instances.Load4((ray_15.medium - 1u)*128+80)), asuint(instances.Load((ray_15.medium - 1u)*128+96)), asuint(instances.Load((ray_15.medium - 1u)*128+100)), asuint(instances.Load((ray_15.medium - 1u)*128+104)), asuint(instances.Load((ray_15.medium - 1u)*128+108)), asuint(instances.Load((ray_15.medium - 1u)*128+112)), asuint(instances.Load((ray_15.medium - 1u)*128+116)), asuint(instances.Load((ray_15.medium - 1u)*128+120)), asuint(instances.Load((ray_15.medium - 1u)*128+124)));
+    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_16.medium - 1u)*128+0)), asfloat(instances.Load4((ray_16.medium - 1u)*128+16)), asfloat(instances.Load4((ray_16.medium - 1u)*128+32)), asfloat(instances.Load4((ray_16.medium - 1u)*128+48)), asfloat(instances.Load4((ray_16.medium - 1u)*128+64)), asfloat(instances.Load4((ray_16.medium - 1u)*128+80)), asuint(instances.Load((ray_16.medium - 1u)*128+96)), asuint(instances.Load((ray_16.medium - 1u)*128+100)), asuint(instances.Load((ray_16.medium - 1u)*128+104)), asuint(instances.Load((ray_16.medium - 1u)*128+108)), asuint(instances.Load((ray_16.medium - 1u)*128+112)), asuint(instances.Load((ray_16.medium - 1u)*128+116)), asuint(instances.Load((ray_16.medium - 1u)*128+120)), asuint(instances.Load((ray_16.medium - 1u)*128+124)));
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_15, t_1, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_16, t_1, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_5, uint offset_8, Ray ray_16, Hit hit_4)
+void dispatch_secondary_rays(uint type_id_5, uint offset_8, Ray ray_17, Hit hit_4)
 {
     return;
 }
@@ -1399,7 +1418,7 @@ float3 trace(Ray camera_ray)
     float t_2 = (float)0;
     Frame stack[1] = (Frame[1])0;
     uint depth = (uint)0;
-    Ray ray_17 = (Ray)0;
+    Ray ray_18 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     Ray s_ray = (Ray)0;
@@ -1438,7 +1457,7 @@ float3 trace(Ray camera_ray)
     }
     stack = ZeroValuearray1_Frame_();
     depth = 0u;
-    ray_17 = camera_ray;
+    ray_18 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     s_ray = camera_ray;
@@ -1457,10 +1476,10 @@ float3 trace(Ray camera_ray)
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_17;
+            Ray _e67 = ray_18;
             const Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_17;
+            Ray _e70 = ray_18;
             s_ray = _e70;
             s_sum = (0.0).xxx;
             fresh = true;
@@ -1597,7 +1616,7 @@ float3 trace(Ray camera_ray)
             const float3 _e284 = spawn_origin(hit_9, _e283, dir_6);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_17 = ConstructRay(_e284, 0.0, dir_6, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_18 = ConstructRay(_e284, 0.0, dir_6, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(uint(min(top_1, 0u)), 0u)].ray;
             s_ray = _e299;
@@ -1628,18 +1647,39 @@ float3 finite_or_zero(float3 c_3)
     return (_e3 ? c_3 : (0.0).xxx);
 }
 
-void render_pixel(uint2 pixel_4)
+void pass_done(uint index, float3 sum, uint bad, uint pass_)
 {
-    float3 sum = (float3)0;
-    uint bad = (uint)0;
-    uint s_1 = (uint)0;
-    Ray ray_18 = (Ray)0;
+    uint _e5 = ray_count;
+    counters.InterlockedAdd(4, _e5);
+    ray_count = 0u;
+    FrameUniforms _e10 = frame;
+    float4 _e13 = float4(sum, float(_e10.samples_per_pass));
+    if ((pass_ == 0u)) {
+        accum.Store4(index*16, asuint(_e13));
+    } else {
+        float4 _e18 = asfloat(accum.Load4(index*16));
+        accum.Store4(index*16, asuint((_e18 + _e13)));
+    }
+    if ((bad > 0u)) {
+        counters.InterlockedAdd(0, bad);
+    }
+    return;
+}
 
-    FrameUniforms frame_5 = frame;
+void render_pixel(uint2 pixel_5)
+{
+    float3 sum_1 = (float3)0;
+    uint bad_1 = (uint)0;
+    uint s_1 = (uint)0;
+
+    FrameUniforms frame_6 = frame;
     TileParams tile_2 = tile;
-    sum = (0.0).xxx;
-    bad = 0u;
-    uint end_1 = frame_5.samples_per_pass;
+    uint index_1 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_1 = (tile_2.frame * per_pass);
+    uint count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
+    sum_1 = (0.0).xxx;
+    bad_1 = 0u;
     s_1 = 0u;
     uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
     bool loop_init_4 = true;
@@ -1647,51 +1687,39 @@ void render_pixel(uint2 pixel_4)
         if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e46 = s_1;
-            s_1 = (_e46 + 1u);
+            uint _e56 = s_1;
+            s_1 = (_e56 + 1u);
         }
         loop_init_4 = false;
-        uint _e13 = s_1;
-        if ((_e13 >= end_1)) {
+        uint _e25 = s_1;
+        if ((_e25 >= count_2)) {
             break;
         }
-        uint _e18 = s_1;
-        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_4, sample_4, frame_5.seed);
-        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
-        ray_18 = _e23;
-        ray_18.depth = 0u;
-        ray_18.kind = RAY_CAMERA;
-        float3 _e31 = ray_18.origin;
-        const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_18.medium = _e33;
-        Ray _e34 = ray_18;
-        const float3 _e35 = trace(_e34);
-        const bool3 _e36 = is_finite_vec3f(_e35);
-        if (all(_e36)) {
-            float3 _e38 = sum;
-            sum = (_e38 + _e35);
+        uint _e27 = s_1;
+        const Ray _e29 = sample_camera_ray(pixel_5, (first_1 + _e27));
+        const float3 _e30 = trace(_e29);
+        const bool3 _e31 = is_finite_vec3f(_e30);
+        if (all(_e31)) {
+            float3 _e33 = sum_1;
+            sum_1 = (_e33 + _e30);
         } else {
-            float3 _e40 = sum;
-            const float3 _e41 = finite_or_zero(_e35);
-            sum = (_e40 + _e41);
-            uint _e43 = bad;
-            bad = (_e43 + 1u);
+            float3 _e35 = sum_1;
+            const float3 _e36 = finite_or_zero(_e30);
+            sum_1 = (_e35 + _e36);
+            uint _e38 = bad_1;
+            bad_1 = (_e38 + 1u);
         }
-    }
-    uint _e50 = ray_count;
-    counters.InterlockedAdd(4, _e50);
-    float3 _e59 = sum;
-    float4 _e62 = float4(_e59, float(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if ((tile_2.frame == 0u)) {
-        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint(_e62));
-    } else {
-        float4 _e69 = asfloat(accum.Load4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16));
-        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint((_e69 + _e62)));
-    }
-    if ((_e63 > 0u)) {
-        counters.InterlockedAdd(0, _e63);
+        uint _e41 = s_1;
+        const uint _e44 = rem_u32_((_e41 + 1u), per_pass);
+        if ((_e44 == 0u)) {
+            float3 _e47 = sum_1;
+            uint _e48 = bad_1;
+            uint _e50 = s_1;
+            const uint _e51 = div_u32_(_e50, per_pass);
+            pass_done(index_1, _e47, _e48, (tile_2.frame + _e51));
+            sum_1 = (0.0).xxx;
+            bad_1 = 0u;
+        }
     }
     return;
 }

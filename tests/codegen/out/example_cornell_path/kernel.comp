@@ -25,6 +25,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
+    uint passes_per_dispatch;
 };
 struct Ray {
     vec3 origin;
@@ -34,6 +35,12 @@ struct Ray {
     uint depth;
     uint kind;
     uint medium;
+};
+struct PathState {
+    Ray ray;
+    vec3 beta;
+    vec3 radiance;
+    bool live;
 };
 struct Pinhole {
     vec3 position;
@@ -93,14 +100,14 @@ struct Triangle {
     vec3 v1_;
     vec3 v2_;
 };
+struct PathDiffuse {
+    vec3 albedo;
+    uint roulette_depth;
+};
 struct Emissive {
     vec3 color;
     float intensity;
     uint two_sided;
-};
-struct PathDiffuse {
-    vec3 albedo;
-    uint roulette_depth;
 };
 struct LightSample {
     vec3 dir;
@@ -115,12 +122,6 @@ struct QuadLight {
     vec3 color;
     float intensity;
     uint lamp;
-};
-struct PathState {
-    Ray ray;
-    vec3 beta;
-    vec3 radiance;
-    bool live;
 };
 const uint WORKGROUP_WIDTH = 8u;
 const uint WORKGROUP_HEIGHT = 8u;
@@ -143,8 +144,11 @@ const float POINT_ERROR = 1.9073486e-6;
 const float GAMMA_1_ = 5.960465e-8;
 const float GAMMA_6_ = 3.576281e-7;
 const float GAMMA_4_ = 2.3841864e-7;
-const bool HAS_SECONDARY_RAYS = true;
 const bool HAS_BACKGROUND = false;
+const uint FLAG_SECONDARY_RAYS = 2u;
+const uint MAX_DEPTH = 6u;
+const float INV_PI = 0.31830987;
+const float MIS_BOUNCE_LENGTH = 3.0;
 const uint SCRATCH_SHADOW_MODE = 14u;
 const uint SHADOW_ABOVE = 2u;
 const uint LIGHT_ENTRY_STRIDE = 2u;
@@ -152,11 +156,6 @@ const uint SHADOW_UNOCCLUDED = 1u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const uint RAY_SHADOW = 2u;
 const uint SHADOW_TRACED = 0u;
-const float INV_PI = 0.31830987;
-const uint FLAG_MEDIUM = 4u;
-const uint FLAG_SECONDARY_RAYS = 2u;
-const uint MAX_DEPTH = 6u;
-const float MIS_BOUNCE_LENGTH = 3.0;
 const uint ROULETTE_DEPTH = 2u;
 const float ROULETTE_THROUGHPUT = 0.5;
 const uint RAY_SECONDARY = 1u;
@@ -169,7 +168,7 @@ uint scratch[15] = uint[15](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 
 
 uint rng_state = 0u;
 
-layout(std430, binding = 6) readonly buffer type_5_block_2Compute { uint _group_0_binding_6_cs[]; };
+layout(std430, binding = 6) readonly buffer type_6_block_2Compute { uint _group_0_binding_6_cs[]; };
 
 uint F32_INF = 2139095040u;
 
@@ -402,8 +401,8 @@ Ray to_object(GpuInstance inst, Ray ray) {
 
 vec3 safe_inverse(vec3 d) {
     vec3 tiny = vec3(1.1754944e-38);
-    vec3 s_4 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
-    vec3 dd = mix(d, (s_4 * tiny), lessThan(abs(d), tiny));
+    vec3 s_3 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
+    vec3 dd = mix(d, (s_3 * tiny), lessThan(abs(d), tiny));
     return (vec3(1.0) / dd);
 }
 
@@ -429,23 +428,23 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
     vec3 b_4 = (_e18.xyz - r_1.origin);
     vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
-    vec3 c_5 = (_e28.xyz - r_1.origin);
+    vec3 c_4 = (_e28.xyz - r_1.origin);
     float ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
     float ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
     float bx = (b_4[min(r_1.kx, 2u)] - (r_1.shear.x * b_4[min(r_1.kz, 2u)]));
     float by = (b_4[min(r_1.ky, 2u)] - (r_1.shear.y * b_4[min(r_1.kz, 2u)]));
-    float cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
-    float cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
+    float cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
+    float cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
     float u_1 = ((cx * by) - (cy * bx));
     float v_2 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u_1 < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
     float det = ((u_1 + v_2) + w);
     float rcp = (1.0 / det);
-    float t_3 = ((((u_1 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
+    float t = ((((u_1 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t >= tmin)) && (t <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_7 ? vec3(t_3, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_7 ? vec3(t, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
@@ -546,10 +545,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                     vec4 _e58 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
                     uint tag = floatBitsToUint(_e58.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_6 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0.0));
-                    bool _e73 = accept(inst_2, world_ray, c_6);
+                    Candidate c_5 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0.0));
+                    bool _e73 = accept(inst_2, world_ray, c_5);
                     if (_e73) {
-                        best = c_6;
+                        best = c_5;
                         if (shadow) {
                             Candidate _e74 = best;
                             return _e74;
@@ -658,9 +657,9 @@ vec3 decode_octahedral(uint bits) {
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n_1;
-        vec2 s_5 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
+        vec2 s_4 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
         vec3 _e29 = n_1;
-        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_5);
+        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_4);
         float _e37 = n_1.z;
         n_1 = vec3(xy.x, xy.y, _e37);
     }
@@ -775,12 +774,27 @@ uint medium_at(vec3 p_4, uint exclude) {
     return _e62;
 }
 
+Ray sample_camera_ray(uvec2 pixel_4, uint sample_4) {
+    Ray ray_7 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    FrameUniforms frame_2 = _group_0_binding_0_cs;
+    rng_seed(pixel_4, sample_4, frame_2.seed);
+    Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    vec3 _e15 = ray_7.origin;
+    uint _e17 = medium_at(_e15, NO_HIT);
+    ray_7.medium = _e17;
+    Ray _e18 = ray_7;
+    return _e18;
+}
+
 vec3 node_frame_hi(GpuNode header) {
     vec3 _e5 = node_point(header.min_, header.max_, uvec3(65535u));
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_7, bool shadow_2) {
+Candidate intersect_scene(Ray ray_8, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -788,21 +802,21 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_7.tmax);
+    Candidate _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = _group_0_binding_0_cs;
-    if ((frame_2.instance_count == 0u)) {
+    FrameUniforms frame_3 = _group_0_binding_0_cs;
+    if ((frame_3.instance_count == 0u)) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    vec3 _e16 = safe_inverse(ray_7.dir);
-    uint base_2 = frame_2.tlas_root;
+    vec3 _e16 = safe_inverse(ray_8.dir);
+    uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_2];
     vec3 origin_5 = header_2.min_;
     vec3 scale_3 = header_2.max_;
     vec3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
+    float _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == uintBitsToFloat(_e30))) {
         Candidate _e33 = best_2;
@@ -817,7 +831,7 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2) {
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_7, _e55, shadow_2);
+                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_8, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -829,7 +843,7 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2) {
             uint _e63 = child_1;
             GpuNode n_9 = _group_0_binding_2_cs[(base_2 + _e63)];
             float _e69 = best_2.t;
-            vec2 _e70 = children_entry(n_9, origin_5, scale_3, ray_7, _e16, _e69);
+            vec2 _e70 = children_entry(n_9, origin_5, scale_3, ray_8, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -876,46 +890,105 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2) {
     return _e120;
 }
 
-vec3 dispatch_miss(uint type_id_1, uint offset_2, Ray ray_8) {
+vec3 dispatch_miss(uint type_id_1, uint offset_2, Ray ray_9) {
     return vec3(0.0);
 }
 
-vec3 miss(Ray ray_9) {
+vec3 miss(Ray ray_10) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
-    FrameUniforms frame_3 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_9);
+    FrameUniforms frame_4 = _group_0_binding_0_cs;
+    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_10);
     return _e9;
 }
 
-Emissive load_Emissive(uint offset_3) {
+PathDiffuse load_PathDiffuse(uint offset_3) {
     uint _e5 = _group_0_binding_6_cs[(offset_3 + 0u)];
     uint _e11 = _group_0_binding_6_cs[(offset_3 + 1u)];
     uint _e17 = _group_0_binding_6_cs[(offset_3 + 2u)];
     uint _e24 = _group_0_binding_6_cs[(offset_3 + 3u)];
-    uint _e30 = _group_0_binding_6_cs[(offset_3 + 4u)];
+    return PathDiffuse(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), _e24);
+}
+
+mat3x3 orthonormal_basis(vec3 n_3) {
+    float sign_ = (((floatBitsToUint(n_3.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
+    float a_6 = (-1.0 / (sign_ + n_3.z));
+    float b_6 = ((n_3.x * n_3.y) * a_6);
+    float _e16 = (sign_ * n_3.x);
+    return mat3x3(vec3((1.0 + ((_e16 * n_3.x) * a_6)), (sign_ * b_6), -(_e16)), vec3(b_6, (sign_ + ((n_3.y * n_3.y) * a_6)), -(n_3.y)), n_3);
+}
+
+vec3 sample_cosine_hemisphere(vec3 n_4, vec2 u) {
+    float r_3 = sqrt(u.x);
+    float phi = (6.2831855 * u.y);
+    vec3 local = vec3((r_3 * cos(phi)), (r_3 * sin(phi)), sqrt(max((1.0 - u.x), 0.0)));
+    mat3x3 _e17 = orthonormal_basis(n_4);
+    return (_e17 * local);
+}
+
+vec3 mis_bounce_dir(vec3 dir, float pdf) {
+    float x_5 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
+    return (dir * vec3((MIS_BOUNCE_LENGTH + x_5)));
+}
+
+void rt_spawn(vec3 dir_1, vec3 weight) {
+    uint _e3 = spawn_count;
+    if ((_e3 < 1u)) {
+        spawn_dirs[_e3] = dir_1;
+        spawn_weights[_e3] = weight;
+        spawn_count = (_e3 + 1u);
+    }
+}
+
+void path_diffuse_rays(PathDiffuse m, Ray ray_11, Hit hit_1) {
+    vec3 weight_1 = vec3(0.0);
+    vec3 ng = (hit_1.front_face ? hit_1.geometric_normal : -(hit_1.geometric_normal));
+    vec3 n_10 = faceforward(hit_1.normal, -(ng), hit_1.normal);
+    vec2 _e12 = rand2_next();
+    vec3 _e13 = sample_cosine_hemisphere(n_10, _e12);
+    weight_1 = m.albedo;
+    if ((ray_11.depth >= m.roulette_depth)) {
+        float q_3 = clamp(max(m.albedo.x, max(m.albedo.y, m.albedo.z)), 0.0, 1.0);
+        float _e28 = rand_next();
+        if ((_e28 >= q_3)) {
+            return;
+        }
+        weight_1 = (m.albedo / vec3(q_3));
+    }
+    if ((dot(_e13, ng) > 0.0)) {
+        vec3 _e41 = mis_bounce_dir(_e13, (max(dot(n_10, _e13), 0.0) * INV_PI));
+        vec3 _e42 = weight_1;
+        rt_spawn(_e41, _e42);
+    }
+    return;
+}
+
+void dispatch_secondary_rays(uint type_id_2, uint offset_4, Ray ray_12, Hit hit_2) {
+    PathDiffuse _e3 = load_PathDiffuse(offset_4);
+    path_diffuse_rays(_e3, ray_12, hit_2);
+    return;
+}
+
+Emissive load_Emissive(uint offset_5) {
+    uint _e5 = _group_0_binding_6_cs[(offset_5 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_5 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_5 + 2u)];
+    uint _e24 = _group_0_binding_6_cs[(offset_5 + 3u)];
+    uint _e30 = _group_0_binding_6_cs[(offset_5 + 4u)];
     return Emissive(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24), _e30);
 }
 
-bool after_nee_bounce(Ray ray_10) {
-    return (dot(ray_10.dir, ray_10.dir) > 2.0);
+bool after_nee_bounce(Ray ray_13) {
+    return (dot(ray_13.dir, ray_13.dir) > 2.0);
 }
 
-vec3 emissive_shade(Emissive m, Ray ray_11, Hit hit_1) {
-    bool _e3 = after_nee_bounce(ray_11);
-    if ((_e3 || (!(hit_1.front_face) && (m.two_sided == 0u)))) {
+vec3 emissive_shade(Emissive m_1, Ray ray_14, Hit hit_3) {
+    bool _e3 = after_nee_bounce(ray_14);
+    if ((_e3 || (!(hit_3.front_face) && (m_1.two_sided == 0u)))) {
         return vec3(0.0);
     }
-    return (m.color * vec3(m.intensity));
-}
-
-PathDiffuse load_PathDiffuse(uint offset_4) {
-    uint _e5 = _group_0_binding_6_cs[(offset_4 + 0u)];
-    uint _e11 = _group_0_binding_6_cs[(offset_4 + 1u)];
-    uint _e17 = _group_0_binding_6_cs[(offset_4 + 2u)];
-    uint _e24 = _group_0_binding_6_cs[(offset_4 + 3u)];
-    return PathDiffuse(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), _e24);
+    return (m_1.color * vec3(m_1.intensity));
 }
 
 uint light_count_query() {
@@ -923,30 +996,30 @@ uint light_count_query() {
     return _e1.light_count;
 }
 
-QuadLight load_QuadLight(uint offset_5) {
-    uint _e5 = _group_0_binding_6_cs[(offset_5 + 0u)];
-    uint _e11 = _group_0_binding_6_cs[(offset_5 + 1u)];
-    uint _e17 = _group_0_binding_6_cs[(offset_5 + 2u)];
-    uint _e24 = _group_0_binding_6_cs[(offset_5 + 4u)];
-    uint _e30 = _group_0_binding_6_cs[(offset_5 + 5u)];
-    uint _e36 = _group_0_binding_6_cs[(offset_5 + 6u)];
-    uint _e43 = _group_0_binding_6_cs[(offset_5 + 8u)];
-    uint _e49 = _group_0_binding_6_cs[(offset_5 + 9u)];
-    uint _e55 = _group_0_binding_6_cs[(offset_5 + 10u)];
-    uint _e62 = _group_0_binding_6_cs[(offset_5 + 12u)];
-    uint _e68 = _group_0_binding_6_cs[(offset_5 + 13u)];
-    uint _e74 = _group_0_binding_6_cs[(offset_5 + 14u)];
-    uint _e81 = _group_0_binding_6_cs[(offset_5 + 15u)];
-    uint _e87 = _group_0_binding_6_cs[(offset_5 + 16u)];
+QuadLight load_QuadLight(uint offset_6) {
+    uint _e5 = _group_0_binding_6_cs[(offset_6 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_6 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_6 + 2u)];
+    uint _e24 = _group_0_binding_6_cs[(offset_6 + 4u)];
+    uint _e30 = _group_0_binding_6_cs[(offset_6 + 5u)];
+    uint _e36 = _group_0_binding_6_cs[(offset_6 + 6u)];
+    uint _e43 = _group_0_binding_6_cs[(offset_6 + 8u)];
+    uint _e49 = _group_0_binding_6_cs[(offset_6 + 9u)];
+    uint _e55 = _group_0_binding_6_cs[(offset_6 + 10u)];
+    uint _e62 = _group_0_binding_6_cs[(offset_6 + 12u)];
+    uint _e68 = _group_0_binding_6_cs[(offset_6 + 13u)];
+    uint _e74 = _group_0_binding_6_cs[(offset_6 + 14u)];
+    uint _e81 = _group_0_binding_6_cs[(offset_6 + 15u)];
+    uint _e87 = _group_0_binding_6_cs[(offset_6 + 16u)];
     return QuadLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)), vec3(uintBitsToFloat(_e62), uintBitsToFloat(_e68), uintBitsToFloat(_e74)), uintBitsToFloat(_e81), _e87);
 }
 
-float shadow_preset(vec3 normal, vec3 dir) {
+float shadow_preset(vec3 normal, vec3 dir_2) {
     uint mode = scratch[min(SCRATCH_SHADOW_MODE, 14u)];
     if ((mode == SHADOW_UNOCCLUDED)) {
         return 1.0;
     }
-    if (((mode == SHADOW_ABOVE) && !((dot(dir, normal) > 0.0)))) {
+    if (((mode == SHADOW_ABOVE) && !((dot(dir_2, normal) > 0.0)))) {
         return 0.0;
     }
     return -1.0;
@@ -961,60 +1034,60 @@ vec3 step_toward(vec3 x_3, vec3 s) {
     return mix(x_3, moved, not(equal(s, vec3(0.0))));
 }
 
-vec3 offset_origin(vec3 p_5, vec3 n_3, float error) {
-    float d_4 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    vec3 offset_10 = (n_3 * vec3(d_4));
-    vec3 _e17 = step_toward((p_5 + offset_10), offset_10);
+vec3 offset_origin(vec3 p_5, vec3 n_5, float error) {
+    float d_4 = ((2.0 * error) * ((abs(n_5.x) + abs(n_5.y)) + abs(n_5.z)));
+    vec3 offset_9 = (n_5 * vec3(d_4));
+    vec3 _e17 = step_toward((p_5 + offset_9), offset_9);
     return _e17;
 }
 
-Ray shadow_ray(vec3 position, vec3 normal_1, vec3 dir_1, float dist) {
-    vec3 n_4 = vec3(0.0);
+Ray shadow_ray(vec3 position, vec3 normal_1, vec3 dir_3, float dist) {
+    vec3 n_6 = vec3(0.0);
     float tmax_4 = 0.0;
-    n_4 = normal_1;
-    vec3 _e5 = n_4;
-    if ((dot(dir_1, _e5) < 0.0)) {
-        vec3 _e9 = n_4;
-        n_4 = -(_e9);
+    n_6 = normal_1;
+    vec3 _e5 = n_6;
+    if ((dot(dir_3, _e5) < 0.0)) {
+        vec3 _e9 = n_6;
+        n_6 = -(_e9);
     }
-    vec3 a_6 = abs(position);
+    vec3 a_7 = abs(position);
     float _e13 = hit_error;
-    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
-    vec3 _e22 = n_4;
+    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_7.x, a_7.y), a_7.z)));
+    vec3 _e22 = n_6;
     vec3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = uintBitsToFloat(_e25);
     uint _e29 = F32_INF;
     if ((dist < uintBitsToFloat(_e29))) {
-        vec3 light = (position + (dir_1 * vec3(dist)));
-        float dd_1 = dot(dir_1, dir_1);
-        float along_1 = (dot((light - _e23), dir_1) / dd_1);
-        vec3 l_2 = (abs(position) + abs((dir_1 * vec3(dist))));
+        vec3 light = (position + (dir_3 * vec3(dist)));
+        float dd_1 = dot(dir_3, dir_3);
+        float along_1 = (dot((light - _e23), dir_3) / dd_1);
+        vec3 l_2 = (abs(position) + abs((dir_3 * vec3(dist))));
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    return Ray(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0.0, dir_3, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-float shadow_query(vec3 position_1, vec3 normal_2, vec3 dir_2, float dist_1) {
-    float _e4 = shadow_preset(normal_2, dir_2);
+float shadow_query(vec3 position_1, vec3 normal_2, vec3 dir_4, float dist_1) {
+    float _e4 = shadow_preset(normal_2, dir_4);
     if ((_e4 >= 0.0)) {
         return _e4;
     }
-    Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    Ray _e7 = shadow_ray(position_1, normal_2, dir_4, dist_1);
     Candidate _e9 = intersect_scene(_e7, true);
     return ((_e9.slot != NO_HIT) ? 0.0 : 1.0);
 }
 
 LightSample quad_light(QuadLight l, vec3 position_2, vec3 normal_3) {
-    vec3 c_7 = cross(l.edge_u, l.edge_v);
-    float area = length(c_7);
+    vec3 c_6 = cross(l.edge_u, l.edge_v);
+    float area = length(c_6);
     vec2 _e7 = rand2_next();
     vec3 to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_2);
     float dist2_ = dot(to_light, to_light);
     float dist_2 = sqrt(dist2_);
     vec3 dir_8 = (to_light / vec3(max(dist_2, 1e-20)));
-    float cos_light = (-(dot(dir_8, c_7)) / max(area, 1e-30));
+    float cos_light = (-(dot(dir_8, c_6)) / max(area, 1e-30));
     if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
         return LightSample(dir_8, dist_2, vec3(0.0), 0.0);
     }
@@ -1024,18 +1097,18 @@ LightSample quad_light(QuadLight l, vec3 position_2, vec3 normal_3) {
     return LightSample(dir_8, dist_2, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
 }
 
-LightSample dispatch_light(uint type_id_2, uint offset_6, vec3 position_3, vec3 normal_4) {
-    QuadLight _e3 = load_QuadLight(offset_6);
+LightSample dispatch_light(uint type_id_3, uint offset_7, vec3 position_3, vec3 normal_4) {
+    QuadLight _e3 = load_QuadLight(offset_7);
     LightSample _e4 = quad_light(_e3, position_3, normal_4);
     return _e4;
 }
 
 LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_5) {
-    FrameUniforms frame_4 = _group_0_binding_0_cs;
-    if ((i_2 >= frame_4.light_count)) {
+    FrameUniforms frame_5 = _group_0_binding_0_cs;
+    if ((i_2 >= frame_5.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
-    uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_5.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     uint _e22 = _group_0_binding_6_cs[entry];
     uint _e27 = _group_0_binding_6_cs[(entry + 1u)];
     LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
@@ -1053,13 +1126,13 @@ float mis_weight(float p_6, float other) {
     if (!((p_6 > 0.0))) {
         return 0.0;
     }
-    float r_3 = (max(other, 0.0) / p_6);
-    if (!((r_3 < 1e18))) {
+    float r_4 = (max(other, 0.0) / p_6);
+    if (!((r_4 < 1e18))) {
         uint _e15 = F32_INF;
         uint _e19 = F32_INF;
         return (((p_6 == uintBitsToFloat(_e15)) && (other < uintBitsToFloat(_e19))) ? 1.0 : 0.0);
     }
-    return (1.0 / (1.0 + (r_3 * r_3)));
+    return (1.0 / (1.0 + (r_4 * r_4)));
 }
 
 float mis_light_weight(LightSample l_1, float bsdf_pdf) {
@@ -1070,11 +1143,11 @@ float mis_light_weight(LightSample l_1, float bsdf_pdf) {
     return _e8;
 }
 
-vec3 path_diffuse_shade(PathDiffuse m_1, Ray ray_12, Hit hit_2, vec3 secondary) {
+vec3 path_diffuse_shade(PathDiffuse m_2, Ray ray_15, Hit hit_4, vec3 secondary) {
     vec3 direct = vec3(0.0);
     uint i_4 = 0u;
-    vec3 n_10 = faceforward(hit_2.normal, ray_12.dir, hit_2.geometric_normal);
-    vec3 ng = faceforward(hit_2.geometric_normal, ray_12.dir, hit_2.geometric_normal);
+    vec3 n_11 = faceforward(hit_4.normal, ray_15.dir, hit_4.geometric_normal);
+    vec3 ng_1 = faceforward(hit_4.geometric_normal, ray_15.dir, hit_4.geometric_normal);
     direct = vec3(0.0);
     uint _e16 = light_count_query();
     i_4 = 0u;
@@ -1090,26 +1163,26 @@ vec3 path_diffuse_shade(PathDiffuse m_1, Ray ray_12, Hit hit_2, vec3 secondary) 
             break;
         }
         uint _e20 = i_4;
-        LightSample _e22 = sample_light_above_query(_e20, hit_2.position, ng);
-        float c_8 = max(dot(n_10, _e22.dir), 0.0);
+        LightSample _e22 = sample_light_above_query(_e20, hit_4.position, ng_1);
+        float c_7 = max(dot(n_11, _e22.dir), 0.0);
         vec3 _e27 = direct;
-        float _e31 = mis_light_weight(_e22, (c_8 * INV_PI));
-        direct = (_e27 + (_e22.radiance * vec3((c_8 * _e31))));
+        float _e31 = mis_light_weight(_e22, (c_7 * INV_PI));
+        direct = (_e27 + (_e22.radiance * vec3((c_7 * _e31))));
     }
     vec3 _e43 = direct;
-    return (((m_1.albedo * vec3(INV_PI)) * _e43) + secondary);
+    return (((m_2.albedo * vec3(INV_PI)) * _e43) + secondary);
 }
 
-vec3 dispatch_closest_hit(uint type_id_3, uint offset_7, Ray ray_13, Hit hit_3, vec3 secondary_1) {
-    switch(type_id_3) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_16, Hit hit_5, vec3 secondary_1) {
+    switch(type_id_4) {
         case 0u: {
-            Emissive _e5 = load_Emissive(offset_7);
-            vec3 _e6 = emissive_shade(_e5, ray_13, hit_3);
+            Emissive _e5 = load_Emissive(offset_8);
+            vec3 _e6 = emissive_shade(_e5, ray_16, hit_5);
             return _e6;
         }
         case 1u: {
-            PathDiffuse _e7 = load_PathDiffuse(offset_7);
-            vec3 _e8 = path_diffuse_shade(_e7, ray_13, hit_3, secondary_1);
+            PathDiffuse _e7 = load_PathDiffuse(offset_8);
+            vec3 _e8 = path_diffuse_shade(_e7, ray_16, hit_5, secondary_1);
             return _e8;
         }
         default: {
@@ -1117,91 +1190,6 @@ vec3 dispatch_closest_hit(uint type_id_3, uint offset_7, Ray ray_13, Hit hit_3, 
         }
     }
     return vec3(0.0);
-}
-
-vec3 shade_direct(Ray ray_14, Candidate c_2) {
-    GpuInstance inst_8 = _group_0_binding_3_cs[c_2.slot];
-    Hit _e6 = finish_hit(ray_14, c_2);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, vec3(0.0));
-    return _e11;
-}
-
-vec3 dispatch_medium(uint type_id_4, uint offset_8, Ray ray_15, float t, vec3 radiance) {
-    return vec3(0.0);
-}
-
-vec3 through_medium(Ray ray_16, float t_1, vec3 radiance_1) {
-    if (!(HAS_MEDIA)) {
-        return radiance_1;
-    }
-    if ((ray_16.medium == 0u)) {
-        return radiance_1;
-    }
-    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_16.medium - 1u)];
-    if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
-        return radiance_1;
-    }
-    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_16, t_1, radiance_1);
-    return _e21;
-}
-
-mat3x3 orthonormal_basis(vec3 n_5) {
-    float sign_ = (((floatBitsToUint(n_5.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
-    float a_7 = (-1.0 / (sign_ + n_5.z));
-    float b_6 = ((n_5.x * n_5.y) * a_7);
-    float _e16 = (sign_ * n_5.x);
-    return mat3x3(vec3((1.0 + ((_e16 * n_5.x) * a_7)), (sign_ * b_6), -(_e16)), vec3(b_6, (sign_ + ((n_5.y * n_5.y) * a_7)), -(n_5.y)), n_5);
-}
-
-vec3 sample_cosine_hemisphere(vec3 n_6, vec2 u) {
-    float r_4 = sqrt(u.x);
-    float phi = (6.2831855 * u.y);
-    vec3 local = vec3((r_4 * cos(phi)), (r_4 * sin(phi)), sqrt(max((1.0 - u.x), 0.0)));
-    mat3x3 _e17 = orthonormal_basis(n_6);
-    return (_e17 * local);
-}
-
-vec3 mis_bounce_dir(vec3 dir_3, float pdf) {
-    float x_5 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
-    return (dir_3 * vec3((MIS_BOUNCE_LENGTH + x_5)));
-}
-
-void rt_spawn(vec3 dir_4, vec3 weight) {
-    uint _e3 = spawn_count;
-    if ((_e3 < 1u)) {
-        spawn_dirs[_e3] = dir_4;
-        spawn_weights[_e3] = weight;
-        spawn_count = (_e3 + 1u);
-    }
-}
-
-void path_diffuse_rays(PathDiffuse m_2, Ray ray_17, Hit hit_4) {
-    vec3 weight_1 = vec3(0.0);
-    vec3 ng_1 = (hit_4.front_face ? hit_4.geometric_normal : -(hit_4.geometric_normal));
-    vec3 n_11 = faceforward(hit_4.normal, -(ng_1), hit_4.normal);
-    vec2 _e12 = rand2_next();
-    vec3 _e13 = sample_cosine_hemisphere(n_11, _e12);
-    weight_1 = m_2.albedo;
-    if ((ray_17.depth >= m_2.roulette_depth)) {
-        float q_3 = clamp(max(m_2.albedo.x, max(m_2.albedo.y, m_2.albedo.z)), 0.0, 1.0);
-        float _e28 = rand_next();
-        if ((_e28 >= q_3)) {
-            return;
-        }
-        weight_1 = (m_2.albedo / vec3(q_3));
-    }
-    if ((dot(_e13, ng_1) > 0.0)) {
-        vec3 _e41 = mis_bounce_dir(_e13, (max(dot(n_11, _e13), 0.0) * INV_PI));
-        vec3 _e42 = weight_1;
-        rt_spawn(_e41, _e42);
-    }
-    return;
-}
-
-void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_18, Hit hit_5) {
-    PathDiffuse _e3 = load_PathDiffuse(offset_9);
-    path_diffuse_rays(_e3, ray_18, hit_5);
-    return;
 }
 
 vec3 spawn_origin_at(vec3 position_6, vec3 normal_7, float error_1, vec3 dir_5) {
@@ -1222,31 +1210,31 @@ vec3 spawn_origin(Hit hit_6, float error_2, vec3 dir_6) {
     return _e5;
 }
 
-PathState path_step(PathState s_1, Candidate c_3) {
+PathState path_step(PathState s_1, Candidate c_2) {
     PathState out_ = PathState(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), vec3(0.0), vec3(0.0), false);
     bool spawned = false;
     vec3 dir_7 = vec3(0.0);
     vec3 weight_2 = vec3(0.0);
     vec3 beta = vec3(0.0);
-    Ray ray_20 = s_1.ray;
+    Ray ray_17 = s_1.ray;
     out_ = s_1;
     out_.live = false;
-    if ((c_3.slot == NO_HIT)) {
+    if ((c_2.slot == NO_HIT)) {
         hit_error = 0.0;
-        vec3 _e14 = miss(ray_20);
+        vec3 _e14 = miss(ray_17);
         out_.radiance = (s_1.radiance + (s_1.beta * _e14));
         PathState _e17 = out_;
         return _e17;
     }
-    GpuInstance inst_10 = _group_0_binding_3_cs[c_3.slot];
-    Hit _e22 = finish_hit(ray_20, c_3);
+    GpuInstance inst_8 = _group_0_binding_3_cs[c_2.slot];
+    Hit _e22 = finish_hit(ray_17, c_2);
     float error_4 = hit_error;
     spawned = false;
     dir_7 = vec3(0.0);
     weight_2 = vec3(0.0);
-    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_20.depth < MAX_DEPTH))) {
+    if ((((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_17.depth < MAX_DEPTH))) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_20, _e22);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_17, _e22);
         uint _e47 = spawn_count;
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
@@ -1256,7 +1244,7 @@ PathState path_step(PathState s_1, Candidate c_3) {
             weight_2 = _e60;
         }
     }
-    vec3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_20, _e22, vec3(0.0));
+    vec3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e22, vec3(0.0));
     out_.radiance = (s_1.radiance + (s_1.beta * _e68));
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -1273,7 +1261,7 @@ PathState path_step(PathState s_1, Candidate c_3) {
         PathState _e89 = out_;
         return _e89;
     }
-    if ((((ROULETTE_DEPTH > 0u) && ((ray_20.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT))) {
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_17.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT))) {
         float survive = (q_4 / ROULETTE_THROUGHPUT);
         float _e104 = rand_next();
         if ((_e104 >= survive)) {
@@ -1289,124 +1277,96 @@ PathState path_step(PathState s_1, Candidate c_3) {
     vec3 _e114 = spawn_origin(_e22, error_4, _e113);
     vec3 _e116 = dir_7;
     uint _e118 = F32_INF;
-    out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_20.depth + 1u), RAY_SECONDARY, ray_20.medium);
+    out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_17.depth + 1u), RAY_SECONDARY, ray_17.medium);
     out_.live = true;
     PathState _e128 = out_;
     return _e128;
-}
-
-vec3 trace_path(Ray camera_ray) {
-    PathState s_2 = PathState(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), vec3(0.0), vec3(0.0), false);
-    s_2 = PathState(camera_ray, vec3(1.0), vec3(0.0), true);
-    while(true) {
-        PathState _e8 = s_2;
-        Ray _e10 = s_2.ray;
-        Candidate _e12 = intersect_scene(_e10, false);
-        PathState _e13 = path_step(_e8, _e12);
-        s_2 = _e13;
-        bool _e15 = s_2.live;
-        if (!(_e15)) {
-            vec3 _e18 = s_2.radiance;
-            return _e18;
-        }
-    }
-    return vec3(0.0);
-}
-
-vec3 trace(Ray camera_ray_1) {
-    vec3 radiance_2 = vec3(0.0);
-    float t_2 = 0.0;
-    if (!(HAS_SECONDARY_RAYS)) {
-        Candidate _e4 = intersect_scene(camera_ray_1, false);
-        radiance_2 = vec3(0.0);
-        uint _e9 = F32_INF;
-        t_2 = uintBitsToFloat(_e9);
-        if ((_e4.slot == NO_HIT)) {
-            hit_error = 0.0;
-            vec3 _e17 = miss(camera_ray_1);
-            radiance_2 = _e17;
-        } else {
-            vec3 _e18 = shade_direct(camera_ray_1, _e4);
-            radiance_2 = _e18;
-            t_2 = _e4.t;
-        }
-        float _e20 = t_2;
-        vec3 _e21 = radiance_2;
-        vec3 _e22 = through_medium(camera_ray_1, _e20, _e21);
-        return _e22;
-    }
-    vec3 _e23 = trace_path(camera_ray_1);
-    return _e23;
 }
 
 bvec3 is_finite_vec3f(vec3 x_4) {
     return lessThan((floatBitsToUint(x_4) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
-vec3 finite_or_zero(vec3 c_4) {
-    bvec3 _e3 = is_finite_vec3f(c_4);
-    return mix(vec3(0.0), c_4, _e3);
+vec3 finite_or_zero(vec3 c_3) {
+    bvec3 _e3 = is_finite_vec3f(c_3);
+    return mix(vec3(0.0), c_3, _e3);
 }
 
-void render_pixel(uvec2 pixel_4) {
-    vec3 sum = vec3(0.0);
-    uint bad = 0u;
-    uint s_3 = 0u;
-    Ray ray_19 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
-    FrameUniforms frame_5 = _group_0_binding_0_cs;
-    TileParams tile_2 = _group_0_binding_1_cs;
-    sum = vec3(0.0);
-    bad = 0u;
-    uint end_1 = frame_5.samples_per_pass;
-    s_3 = 0u;
-    bool loop_init_3 = true;
-    while(true) {
-        if (!loop_init_3) {
-            uint _e46 = s_3;
-            s_3 = (_e46 + 1u);
-        }
-        loop_init_3 = false;
-        uint _e13 = s_3;
-        if ((_e13 >= end_1)) {
-            break;
-        }
-        uint _e18 = s_3;
-        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_4, sample_4, frame_5.seed);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
-        ray_19 = _e23;
-        ray_19.depth = 0u;
-        ray_19.kind = RAY_CAMERA;
-        vec3 _e31 = ray_19.origin;
-        uint _e33 = medium_at(_e31, NO_HIT);
-        ray_19.medium = _e33;
-        Ray _e34 = ray_19;
-        vec3 _e35 = trace(_e34);
-        bvec3 _e36 = is_finite_vec3f(_e35);
-        if (all(_e36)) {
-            vec3 _e38 = sum;
-            sum = (_e38 + _e35);
-        } else {
-            vec3 _e40 = sum;
-            vec3 _e41 = finite_or_zero(_e35);
-            sum = (_e40 + _e41);
-            uint _e43 = bad;
-            bad = (_e43 + 1u);
-        }
-    }
-    uint _e50 = ray_count;
-    atomicAdd(_group_0_binding_9_cs[1], _e50);
-    vec3 _e59 = sum;
-    vec4 _e62 = vec4(_e59, float(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if ((tile_2.frame == 0u)) {
-        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
+void pass_done(uint index, vec3 sum, uint bad, uint pass) {
+    uint _e5 = ray_count;
+    atomicAdd(_group_0_binding_9_cs[1], _e5);
+    ray_count = 0u;
+    FrameUniforms _e10 = _group_0_binding_0_cs;
+    vec4 _e13 = vec4(sum, float(_e10.samples_per_pass));
+    if ((pass == 0u)) {
+        _group_0_binding_8_cs[index] = _e13;
     } else {
-        vec4 _e69 = _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
-        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
+        vec4 _e18 = _group_0_binding_8_cs[index];
+        _group_0_binding_8_cs[index] = (_e18 + _e13);
     }
-    if ((_e63 > 0u)) {
-        atomicAdd(_group_0_binding_9_cs[0], _e63);
+    if ((bad > 0u)) {
+        atomicAdd(_group_0_binding_9_cs[0], bad);
+    }
+    return;
+}
+
+void render_pixel(uvec2 pixel_5) {
+    vec3 sum_1 = vec3(0.0);
+    uint bad_1 = 0u;
+    uint s_2 = 0u;
+    PathState path = PathState(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), vec3(0.0), vec3(0.0), false);
+    FrameUniforms frame_6 = _group_0_binding_0_cs;
+    TileParams tile_2 = _group_0_binding_1_cs;
+    uint index_1 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_1 = (tile_2.frame * per_pass);
+    uint count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
+    sum_1 = vec3(0.0);
+    bad_1 = 0u;
+    s_2 = 0u;
+    Ray _e25 = sample_camera_ray(pixel_5, first_1);
+    path = PathState(_e25, vec3(1.0), vec3(0.0), true);
+    while(true) {
+        PathState _e33 = path;
+        Ray _e35 = path.ray;
+        Candidate _e37 = intersect_scene(_e35, false);
+        PathState _e38 = path_step(_e33, _e37);
+        path = _e38;
+        bool _e40 = path.live;
+        if (!(_e40)) {
+            vec3 c_8 = path.radiance;
+            bvec3 _e44 = is_finite_vec3f(c_8);
+            if (all(_e44)) {
+                vec3 _e46 = sum_1;
+                sum_1 = (_e46 + c_8);
+            } else {
+                vec3 _e48 = sum_1;
+                vec3 _e49 = finite_or_zero(c_8);
+                sum_1 = (_e48 + _e49);
+                uint _e51 = bad_1;
+                bad_1 = (_e51 + 1u);
+            }
+            uint _e54 = s_2;
+            s_2 = (_e54 + 1u);
+            uint _e57 = s_2;
+            uint _e58 = rem_u32_(_e57, per_pass);
+            if ((_e58 == 0u)) {
+                vec3 _e61 = sum_1;
+                uint _e62 = bad_1;
+                uint _e64 = s_2;
+                uint _e65 = div_u32_(_e64, per_pass);
+                pass_done(index_1, _e61, _e62, ((tile_2.frame + _e65) - 1u));
+                sum_1 = vec3(0.0);
+                bad_1 = 0u;
+            }
+            uint _e72 = s_2;
+            if ((_e72 >= count_2)) {
+                break;
+            }
+            uint _e74 = s_2;
+            Ray _e76 = sample_camera_ray(pixel_5, (first_1 + _e74));
+            path = PathState(_e76, vec3(1.0), vec3(0.0), true);
+        }
     }
     return;
 }

@@ -21,6 +21,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
+    uint passes_per_dispatch;
 };
 
 struct Ray {
@@ -32,6 +33,14 @@ struct Ray {
     uint kind;
     uint medium;
     int _end_pad_0;
+};
+
+struct PathState {
+    Ray ray;
+    float3 beta;
+    int _pad2_0;
+    float3 radiance;
+    bool live;
 };
 
 struct Pinhole {
@@ -115,6 +124,11 @@ struct Triangle {
     int _end_pad_0;
 };
 
+struct PathDiffuse {
+    float3 albedo;
+    uint roulette_depth;
+};
+
 struct Emissive {
     float3 color;
     float intensity;
@@ -122,11 +136,6 @@ struct Emissive {
     int _end_pad_0;
     int _end_pad_1;
     int _end_pad_2;
-};
-
-struct PathDiffuse {
-    float3 albedo;
-    uint roulette_depth;
 };
 
 struct LightSample {
@@ -151,14 +160,6 @@ struct QuadLight {
     int _end_pad_2;
 };
 
-struct PathState {
-    Ray ray;
-    float3 beta;
-    int _pad2_0;
-    float3 radiance;
-    bool live;
-};
-
 static const uint WORKGROUP_WIDTH = 8u;
 static const uint WORKGROUP_HEIGHT = 8u;
 static const uint NO_HIT = 4294967295u;
@@ -180,8 +181,11 @@ static const float POINT_ERROR = 1.9073486e-6;
 static const float GAMMA_1_ = 5.960465e-8;
 static const float GAMMA_6_ = 3.576281e-7;
 static const float GAMMA_4_ = 2.3841864e-7;
-static const bool HAS_SECONDARY_RAYS = true;
 static const bool HAS_BACKGROUND = false;
+static const uint FLAG_SECONDARY_RAYS = 2u;
+static const uint MAX_DEPTH = 6u;
+static const float INV_PI = 0.31830987;
+static const float MIS_BOUNCE_LENGTH = 3.0;
 static const uint SCRATCH_SHADOW_MODE = 14u;
 static const uint SHADOW_ABOVE = 2u;
 static const uint LIGHT_ENTRY_STRIDE = 2u;
@@ -189,11 +193,6 @@ static const uint SHADOW_UNOCCLUDED = 1u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
 static const uint SHADOW_TRACED = 0u;
-static const float INV_PI = 0.31830987;
-static const uint FLAG_MEDIUM = 4u;
-static const uint FLAG_SECONDARY_RAYS = 2u;
-static const uint MAX_DEPTH = 6u;
-static const float MIS_BOUNCE_LENGTH = 3.0;
 static const uint ROULETTE_DEPTH = 2u;
 static const float ROULETTE_THROUGHPUT = 0.5;
 static const uint RAY_SECONDARY = 1u;
@@ -454,16 +453,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h) * aspect)).xxx)) - (up * ((ndc.y * h)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_20 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_20;
+    const Ray ray_17 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_17;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
-    const Ray ray_21 = _e4;
-    return ray_21;
+    const Ray ray_18 = _e4;
+    return ray_18;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -492,15 +491,15 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
-    const Ray ray_22 = _e25;
-    return ray_22;
+    const Ray ray_19 = _e25;
+    return ray_19;
 }
 
 float3 safe_inverse(float3 d)
 {
     float3 tiny = (1.1754944e-38).xxx;
-    float3 s_4 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny) ? (s_4 * tiny) : d);
+    float3 s_3 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 dd = ((abs(d) < tiny) ? (s_3 * tiny) : d);
     return ((1.0).xxx / dd);
 }
 
@@ -540,23 +539,23 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
     float3 b_4 = (_e18.xyz - r_1.origin);
     float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
-    float3 c_5 = (_e28.xyz - r_1.origin);
+    float3 c_4 = (_e28.xyz - r_1.origin);
     float ax = (a_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float ay = (a_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float bx = (b_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float by = (b_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * b_4[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float cx = (c_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float cy = (c_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cx = (c_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_4[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cy = (c_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u_1 = ((cx * by) - (cy * bx));
     float v_2 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u_1 < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
     float det = ((u_1 + v_2) + w);
     float rcp_ = (1.0 / det);
-    float t_3 = ((((u_1 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_4[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
+    float t = ((((u_1 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_4[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    bool hit_7 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t >= tmin)) && (t <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_7 ? float3(t_3, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_7 ? float3(t, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -681,10 +680,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                     float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
                     uint tag = asuint(_e58.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_6 = ConstructCandidate(_e46.x, owner, prim, _e46.yz, (0.0).xxx);
-                    const bool _e73 = accept(inst_2, world_ray, c_6);
+                    Candidate c_5 = ConstructCandidate(_e46.x, owner, prim, _e46.yz, (0.0).xxx);
+                    const bool _e73 = accept(inst_2, world_ray, c_5);
                     if (_e73) {
-                        best = c_6;
+                        best = c_5;
                         if (shadow) {
                             Candidate _e74 = best;
                             const Candidate candidate_1 = _e74;
@@ -833,9 +832,9 @@ float3 decode_octahedral(uint bits)
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         float3 _e21 = n_1;
-        float2 s_5 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
+        float2 s_4 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
         float3 _e29 = n_1;
-        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_5);
+        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_4);
         float _e37 = n_1.z;
         n_1 = float3(xy.x, xy.y, _e37);
     }
@@ -975,13 +974,31 @@ uint medium_at(float3 p_4, uint exclude)
     return _e62;
 }
 
+Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
+{
+    Ray ray_7 = (Ray)0;
+
+    FrameUniforms frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed);
+    const Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    float3 _e15 = ray_7.origin;
+    const uint _e17 = medium_at(_e15, NO_HIT);
+    ray_7.medium = _e17;
+    Ray _e18 = ray_7;
+    const Ray ray_20 = _e18;
+    return ray_20;
+}
+
 float3 node_frame_hi(GpuNode header)
 {
     const float3 _e5 = node_point(header.min_, header.max_, (65535u).xxx);
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_7, bool shadow_2)
+Candidate intersect_scene(Ray ray_8, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -991,22 +1008,22 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_7.tmax);
+    const Candidate _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = frame;
-    if ((frame_2.instance_count == 0u)) {
+    FrameUniforms frame_3 = frame;
+    if ((frame_3.instance_count == 0u)) {
         Candidate _e14 = best_2;
         const Candidate candidate_5 = _e14;
         return candidate_5;
     }
-    const float3 _e16 = safe_inverse(ray_7.dir);
-    uint base_2 = frame_2.tlas_root;
+    const float3 _e16 = safe_inverse(ray_8.dir);
+    uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
     float3 origin_5 = header_2.min_;
     float3 scale_3 = header_2.max_;
     const float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    const float _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
+    const float _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == asfloat(_e30))) {
         Candidate _e33 = best_2;
@@ -1025,7 +1042,7 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2)
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_7, _e55, shadow_2);
+                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_8, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -1038,7 +1055,7 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2)
             uint _e63 = child_1;
             GpuNode n_9 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e63)*32+0)), asuint(nodes.Load((base_2 + _e63)*32+12)), asfloat(nodes.Load3((base_2 + _e63)*32+16)), asuint(nodes.Load((base_2 + _e63)*32+28)));
             float _e69 = best_2.t;
-            const float2 _e70 = children_entry(n_9, origin_5, scale_3, ray_7, _e16, _e69);
+            const float2 _e70 = children_entry(n_9, origin_5, scale_3, ray_8, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1090,19 +1107,102 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_miss(uint type_id_1, uint offset_2, Ray ray_8)
+float3 dispatch_miss(uint type_id_1, uint offset_2, Ray ray_9)
 {
     return ZeroValuefloat3();
 }
 
-float3 miss(Ray ray_9)
+float3 miss(Ray ray_10)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
-    FrameUniforms frame_3 = frame;
-    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_9);
+    FrameUniforms frame_4 = frame;
+    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_10);
     return _e9;
+}
+
+PathDiffuse ConstructPathDiffuse(float3 arg0, uint arg1) {
+    PathDiffuse ret = (PathDiffuse)0;
+    ret.albedo = arg0;
+    ret.roulette_depth = arg1;
+    return ret;
+}
+
+PathDiffuse load_PathDiffuse(uint offset_3)
+{
+    uint _e5 = asuint(params.Load((offset_3 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_3 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_3 + 2u)*4));
+    uint _e24 = asuint(params.Load((offset_3 + 3u)*4));
+    const PathDiffuse pathdiffuse = ConstructPathDiffuse(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), _e24);
+    return pathdiffuse;
+}
+
+float3x3 orthonormal_basis(float3 n_3)
+{
+    float sign_ = (((asuint(n_3.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
+    float a_6 = (-1.0 / (sign_ + n_3.z));
+    float b_6 = ((n_3.x * n_3.y) * a_6);
+    float _e16 = (sign_ * n_3.x);
+    return float3x3(float3((1.0 + ((_e16 * n_3.x) * a_6)), (sign_ * b_6), -(_e16)), float3(b_6, (sign_ + ((n_3.y * n_3.y) * a_6)), -(n_3.y)), n_3);
+}
+
+float3 sample_cosine_hemisphere(float3 n_4, float2 u)
+{
+    float r_3 = sqrt(u.x);
+    float phi = (6.2831855 * u.y);
+    float3 local = float3((r_3 * cos(phi)), (r_3 * sin(phi)), sqrt(max((1.0 - u.x), 0.0)));
+    const float3x3 _e17 = orthonormal_basis(n_4);
+    return mul(local, _e17);
+}
+
+float3 mis_bounce_dir(float3 dir, float pdf)
+{
+    float x_5 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
+    return (dir * ((MIS_BOUNCE_LENGTH + x_5)).xxx);
+}
+
+void rt_spawn(float3 dir_1, float3 weight)
+{
+    uint _e3 = spawn_count;
+    if ((_e3 < 1u)) {
+        spawn_dirs[min(uint(_e3), 0u)] = dir_1;
+        spawn_weights[min(uint(_e3), 0u)] = weight;
+        spawn_count = (_e3 + 1u);
+    }
+}
+
+void path_diffuse_rays(PathDiffuse m, Ray ray_11, Hit hit_1)
+{
+    float3 weight_1 = (float3)0;
+
+    float3 ng = (hit_1.front_face ? hit_1.geometric_normal : -(hit_1.geometric_normal));
+    float3 n_10 = faceforward(hit_1.normal, -(ng), hit_1.normal);
+    const float2 _e12 = rand2_next();
+    const float3 _e13 = sample_cosine_hemisphere(n_10, _e12);
+    weight_1 = m.albedo;
+    if ((ray_11.depth >= m.roulette_depth)) {
+        float q_3 = saturate(max(m.albedo.x, max(m.albedo.y, m.albedo.z)));
+        const float _e28 = rand_next();
+        if ((_e28 >= q_3)) {
+            return;
+        }
+        weight_1 = (m.albedo / (q_3).xxx);
+    }
+    if ((dot(_e13, ng) > 0.0)) {
+        const float3 _e41 = mis_bounce_dir(_e13, (max(dot(n_10, _e13), 0.0) * INV_PI));
+        float3 _e42 = weight_1;
+        rt_spawn(_e41, _e42);
+    }
+    return;
+}
+
+void dispatch_secondary_rays(uint type_id_2, uint offset_4, Ray ray_12, Hit hit_2)
+{
+    const PathDiffuse _e3 = load_PathDiffuse(offset_4);
+    path_diffuse_rays(_e3, ray_12, hit_2);
+    return;
 }
 
 Emissive ConstructEmissive(float3 arg0, float arg1, uint arg2) {
@@ -1113,46 +1213,29 @@ Emissive ConstructEmissive(float3 arg0, float arg1, uint arg2) {
     return ret;
 }
 
-Emissive load_Emissive(uint offset_3)
+Emissive load_Emissive(uint offset_5)
 {
-    uint _e5 = asuint(params.Load((offset_3 + 0u)*4));
-    uint _e11 = asuint(params.Load((offset_3 + 1u)*4));
-    uint _e17 = asuint(params.Load((offset_3 + 2u)*4));
-    uint _e24 = asuint(params.Load((offset_3 + 3u)*4));
-    uint _e30 = asuint(params.Load((offset_3 + 4u)*4));
+    uint _e5 = asuint(params.Load((offset_5 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_5 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_5 + 2u)*4));
+    uint _e24 = asuint(params.Load((offset_5 + 3u)*4));
+    uint _e30 = asuint(params.Load((offset_5 + 4u)*4));
     const Emissive emissive = ConstructEmissive(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), asfloat(_e24), _e30);
     return emissive;
 }
 
-bool after_nee_bounce(Ray ray_10)
+bool after_nee_bounce(Ray ray_13)
 {
-    return (dot(ray_10.dir, ray_10.dir) > 2.0);
+    return (dot(ray_13.dir, ray_13.dir) > 2.0);
 }
 
-float3 emissive_shade(Emissive m, Ray ray_11, Hit hit_1)
+float3 emissive_shade(Emissive m_1, Ray ray_14, Hit hit_3)
 {
-    const bool _e3 = after_nee_bounce(ray_11);
-    if ((_e3 || (!(hit_1.front_face) && (m.two_sided == 0u)))) {
+    const bool _e3 = after_nee_bounce(ray_14);
+    if ((_e3 || (!(hit_3.front_face) && (m_1.two_sided == 0u)))) {
         return (0.0).xxx;
     }
-    return (m.color * (m.intensity).xxx);
-}
-
-PathDiffuse ConstructPathDiffuse(float3 arg0, uint arg1) {
-    PathDiffuse ret = (PathDiffuse)0;
-    ret.albedo = arg0;
-    ret.roulette_depth = arg1;
-    return ret;
-}
-
-PathDiffuse load_PathDiffuse(uint offset_4)
-{
-    uint _e5 = asuint(params.Load((offset_4 + 0u)*4));
-    uint _e11 = asuint(params.Load((offset_4 + 1u)*4));
-    uint _e17 = asuint(params.Load((offset_4 + 2u)*4));
-    uint _e24 = asuint(params.Load((offset_4 + 3u)*4));
-    const PathDiffuse pathdiffuse = ConstructPathDiffuse(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), _e24);
-    return pathdiffuse;
+    return (m_1.color * (m_1.intensity).xxx);
 }
 
 uint light_count_query()
@@ -1172,33 +1255,33 @@ QuadLight ConstructQuadLight(float3 arg0, float3 arg1, float3 arg2, float3 arg3,
     return ret;
 }
 
-QuadLight load_QuadLight(uint offset_5)
+QuadLight load_QuadLight(uint offset_6)
 {
-    uint _e5 = asuint(params.Load((offset_5 + 0u)*4));
-    uint _e11 = asuint(params.Load((offset_5 + 1u)*4));
-    uint _e17 = asuint(params.Load((offset_5 + 2u)*4));
-    uint _e24 = asuint(params.Load((offset_5 + 4u)*4));
-    uint _e30 = asuint(params.Load((offset_5 + 5u)*4));
-    uint _e36 = asuint(params.Load((offset_5 + 6u)*4));
-    uint _e43 = asuint(params.Load((offset_5 + 8u)*4));
-    uint _e49 = asuint(params.Load((offset_5 + 9u)*4));
-    uint _e55 = asuint(params.Load((offset_5 + 10u)*4));
-    uint _e62 = asuint(params.Load((offset_5 + 12u)*4));
-    uint _e68 = asuint(params.Load((offset_5 + 13u)*4));
-    uint _e74 = asuint(params.Load((offset_5 + 14u)*4));
-    uint _e81 = asuint(params.Load((offset_5 + 15u)*4));
-    uint _e87 = asuint(params.Load((offset_5 + 16u)*4));
+    uint _e5 = asuint(params.Load((offset_6 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_6 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_6 + 2u)*4));
+    uint _e24 = asuint(params.Load((offset_6 + 4u)*4));
+    uint _e30 = asuint(params.Load((offset_6 + 5u)*4));
+    uint _e36 = asuint(params.Load((offset_6 + 6u)*4));
+    uint _e43 = asuint(params.Load((offset_6 + 8u)*4));
+    uint _e49 = asuint(params.Load((offset_6 + 9u)*4));
+    uint _e55 = asuint(params.Load((offset_6 + 10u)*4));
+    uint _e62 = asuint(params.Load((offset_6 + 12u)*4));
+    uint _e68 = asuint(params.Load((offset_6 + 13u)*4));
+    uint _e74 = asuint(params.Load((offset_6 + 14u)*4));
+    uint _e81 = asuint(params.Load((offset_6 + 15u)*4));
+    uint _e87 = asuint(params.Load((offset_6 + 16u)*4));
     const QuadLight quadlight = ConstructQuadLight(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), float3(asfloat(_e24), asfloat(_e30), asfloat(_e36)), float3(asfloat(_e43), asfloat(_e49), asfloat(_e55)), float3(asfloat(_e62), asfloat(_e68), asfloat(_e74)), asfloat(_e81), _e87);
     return quadlight;
 }
 
-float shadow_preset(float3 normal, float3 dir)
+float shadow_preset(float3 normal, float3 dir_2)
 {
     uint mode = scratch[min(uint(min(SCRATCH_SHADOW_MODE, 14u)), 14u)];
     if ((mode == SHADOW_UNOCCLUDED)) {
         return 1.0;
     }
-    if (((mode == SHADOW_ABOVE) && !((dot(dir, normal) > 0.0)))) {
+    if (((mode == SHADOW_ABOVE) && !((dot(dir_2, normal) > 0.0)))) {
         return 0.0;
     }
     return -1.0;
@@ -1214,52 +1297,52 @@ float3 step_toward(float3 x_3, float3 s)
     return (!((s == (0.0).xxx)) ? moved : x_3);
 }
 
-float3 offset_origin(float3 p_5, float3 n_3, float error)
+float3 offset_origin(float3 p_5, float3 n_5, float error)
 {
-    float d_4 = ((2.0 * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    float3 offset_10 = (n_3 * (d_4).xxx);
-    const float3 _e17 = step_toward((p_5 + offset_10), offset_10);
+    float d_4 = ((2.0 * error) * ((abs(n_5.x) + abs(n_5.y)) + abs(n_5.z)));
+    float3 offset_9 = (n_5 * (d_4).xxx);
+    const float3 _e17 = step_toward((p_5 + offset_9), offset_9);
     return _e17;
 }
 
-Ray shadow_ray(float3 position, float3 normal_1, float3 dir_1, float dist)
+Ray shadow_ray(float3 position, float3 normal_1, float3 dir_3, float dist)
 {
-    float3 n_4 = (float3)0;
+    float3 n_6 = (float3)0;
     float tmax_4 = (float)0;
 
-    n_4 = normal_1;
-    float3 _e5 = n_4;
-    if ((dot(dir_1, _e5) < 0.0)) {
-        float3 _e9 = n_4;
-        n_4 = -(_e9);
+    n_6 = normal_1;
+    float3 _e5 = n_6;
+    if ((dot(dir_3, _e5) < 0.0)) {
+        float3 _e9 = n_6;
+        n_6 = -(_e9);
     }
-    float3 a_6 = abs(position);
+    float3 a_7 = abs(position);
     float _e13 = hit_error;
-    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
-    float3 _e22 = n_4;
+    float error_3 = max(_e13, (GAMMA_4_ * max(max(a_7.x, a_7.y), a_7.z)));
+    float3 _e22 = n_6;
     const float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = asfloat(_e25);
     uint _e29 = F32_INF;
     if ((dist < asfloat(_e29))) {
-        float3 light = (position + (dir_1 * (dist).xxx));
-        float dd_1 = dot(dir_1, dir_1);
-        float along_1 = (dot((light - _e23), dir_1) / dd_1);
-        float3 l_2 = (abs(position) + abs((dir_1 * (dist).xxx)));
+        float3 light = (position + (dir_3 * (dist).xxx));
+        float dd_1 = dot(dir_3, dir_3);
+        float along_1 = (dot((light - _e23), dir_3) / dd_1);
+        float3 l_2 = (abs(position) + abs((dir_3 * (dist).xxx)));
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_23 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_23;
+    const Ray ray_21 = ConstructRay(_e23, 0.0, dir_3, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_21;
 }
 
-float shadow_query(float3 position_1, float3 normal_2, float3 dir_2, float dist_1)
+float shadow_query(float3 position_1, float3 normal_2, float3 dir_4, float dist_1)
 {
-    const float _e4 = shadow_preset(normal_2, dir_2);
+    const float _e4 = shadow_preset(normal_2, dir_4);
     if ((_e4 >= 0.0)) {
         return _e4;
     }
-    const Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    const Ray _e7 = shadow_ray(position_1, normal_2, dir_4, dist_1);
     const Candidate _e9 = intersect_scene(_e7, true);
     return ((_e9.slot != NO_HIT) ? 0.0 : 1.0);
 }
@@ -1275,14 +1358,14 @@ LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg
 
 LightSample quad_light(QuadLight l, float3 position_2, float3 normal_3)
 {
-    float3 c_7 = cross(l.edge_u, l.edge_v);
-    float area = length(c_7);
+    float3 c_6 = cross(l.edge_u, l.edge_v);
+    float area = length(c_6);
     const float2 _e7 = rand2_next();
     float3 to_light = (((l.corner + (l.edge_u * (_e7.x).xxx)) + (l.edge_v * (_e7.y).xxx)) - position_2);
     float dist2_ = dot(to_light, to_light);
     float dist_2 = sqrt(dist2_);
     float3 dir_8 = (to_light / (max(dist_2, 1e-20)).xxx);
-    float cos_light = (-(dot(dir_8, c_7)) / max(area, 1e-30));
+    float cos_light = (-(dot(dir_8, c_6)) / max(area, 1e-30));
     if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
         const LightSample lightsample = ConstructLightSample(dir_8, dist_2, (0.0).xxx, 0.0);
         return lightsample;
@@ -1294,9 +1377,9 @@ LightSample quad_light(QuadLight l, float3 position_2, float3 normal_3)
     return lightsample_1;
 }
 
-LightSample dispatch_light(uint type_id_2, uint offset_6, float3 position_3, float3 normal_4)
+LightSample dispatch_light(uint type_id_3, uint offset_7, float3 position_3, float3 normal_4)
 {
-    const QuadLight _e3 = load_QuadLight(offset_6);
+    const QuadLight _e3 = load_QuadLight(offset_7);
     const LightSample _e4 = quad_light(_e3, position_3, normal_4);
     const LightSample lightsample_2 = _e4;
     return lightsample_2;
@@ -1304,12 +1387,12 @@ LightSample dispatch_light(uint type_id_2, uint offset_6, float3 position_3, flo
 
 LightSample sample_light_query(uint i_2, float3 position_4, float3 normal_5)
 {
-    FrameUniforms frame_4 = frame;
-    if ((i_2 >= frame_4.light_count)) {
+    FrameUniforms frame_5 = frame;
+    if ((i_2 >= frame_5.light_count)) {
         const LightSample lightsample_3 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_3;
     }
-    uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_5.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     uint _e22 = asuint(params.Load(entry*4));
     uint _e27 = asuint(params.Load((entry + 1u)*4));
     const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
@@ -1331,13 +1414,13 @@ float mis_weight(float p_6, float other)
     if (!((p_6 > 0.0))) {
         return 0.0;
     }
-    float r_3 = (max(other, 0.0) / p_6);
-    if (!((r_3 < 1e18))) {
+    float r_4 = (max(other, 0.0) / p_6);
+    if (!((r_4 < 1e18))) {
         uint _e15 = F32_INF;
         uint _e19 = F32_INF;
         return (((p_6 == asfloat(_e15)) && (other < asfloat(_e19))) ? 1.0 : 0.0);
     }
-    return (1.0 / (1.0 + (r_3 * r_3)));
+    return (1.0 / (1.0 + (r_4 * r_4)));
 }
 
 float mis_light_weight(LightSample l_1, float bsdf_pdf)
@@ -1349,13 +1432,13 @@ float mis_light_weight(LightSample l_1, float bsdf_pdf)
     return _e8;
 }
 
-float3 path_diffuse_shade(PathDiffuse m_1, Ray ray_12, Hit hit_2, float3 secondary)
+float3 path_diffuse_shade(PathDiffuse m_2, Ray ray_15, Hit hit_4, float3 secondary)
 {
     float3 direct = (float3)0;
     uint i_4 = (uint)0;
 
-    float3 n_10 = faceforward(hit_2.normal, ray_12.dir, hit_2.geometric_normal);
-    float3 ng = faceforward(hit_2.geometric_normal, ray_12.dir, hit_2.geometric_normal);
+    float3 n_11 = faceforward(hit_4.normal, ray_15.dir, hit_4.geometric_normal);
+    float3 ng_1 = faceforward(hit_4.geometric_normal, ray_15.dir, hit_4.geometric_normal);
     direct = (0.0).xxx;
     const uint _e16 = light_count_query();
     i_4 = 0u;
@@ -1374,27 +1457,27 @@ float3 path_diffuse_shade(PathDiffuse m_1, Ray ray_12, Hit hit_2, float3 seconda
             break;
         }
         uint _e20 = i_4;
-        const LightSample _e22 = sample_light_above_query(_e20, hit_2.position, ng);
-        float c_8 = max(dot(n_10, _e22.dir), 0.0);
+        const LightSample _e22 = sample_light_above_query(_e20, hit_4.position, ng_1);
+        float c_7 = max(dot(n_11, _e22.dir), 0.0);
         float3 _e27 = direct;
-        const float _e31 = mis_light_weight(_e22, (c_8 * INV_PI));
-        direct = (_e27 + (_e22.radiance * ((c_8 * _e31)).xxx));
+        const float _e31 = mis_light_weight(_e22, (c_7 * INV_PI));
+        direct = (_e27 + (_e22.radiance * ((c_7 * _e31)).xxx));
     }
     float3 _e43 = direct;
-    return (((m_1.albedo * (INV_PI).xxx) * _e43) + secondary);
+    return (((m_2.albedo * (INV_PI).xxx) * _e43) + secondary);
 }
 
-float3 dispatch_closest_hit(uint type_id_3, uint offset_7, Ray ray_13, Hit hit_3, float3 secondary_1)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_16, Hit hit_5, float3 secondary_1)
 {
-    switch(type_id_3) {
+    switch(type_id_4) {
         case 0u: {
-            const Emissive _e5 = load_Emissive(offset_7);
-            const float3 _e6 = emissive_shade(_e5, ray_13, hit_3);
+            const Emissive _e5 = load_Emissive(offset_8);
+            const float3 _e6 = emissive_shade(_e5, ray_16, hit_5);
             return _e6;
         }
         case 1u: {
-            const PathDiffuse _e7 = load_PathDiffuse(offset_7);
-            const float3 _e8 = path_diffuse_shade(_e7, ray_13, hit_3, secondary_1);
+            const PathDiffuse _e7 = load_PathDiffuse(offset_8);
+            const float3 _e8 = path_diffuse_shade(_e7, ray_16, hit_5, secondary_1);
             return _e8;
         }
         default: {
@@ -1402,101 +1485,6 @@ float3 dispatch_closest_hit(uint type_id_3, uint offset_7, Ray ray_13, Hit hit_3
         }
     }
     return ZeroValuefloat3();
-}
-
-float3 shade_direct(Ray ray_14, Candidate c_2)
-{
-    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_14, c_2);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, (0.0).xxx);
-    return _e11;
-}
-
-float3 dispatch_medium(uint type_id_4, uint offset_8, Ray ray_15, float t, float3 radiance)
-{
-    return ZeroValuefloat3();
-}
-
-float3 through_medium(Ray ray_16, float t_1, float3 radiance_1)
-{
-    if (!(HAS_MEDIA)) {
-        return radiance_1;
-    }
-    if ((ray_16.medium == 0u)) {
-        return radiance_1;
-    }
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_16.medium - 1u)*128+0)), asfloat(instances.Load4((ray_16.medium - 1u)*128+16)), asfloat(instances.Load4((ray_16.medium - 1u)*128+32)), asfloat(instances.Load4((ray_16.medium - 1u)*128+48)), asfloat(instances.Load4((ray_16.medium - 1u)*128+64)), asfloat(instances.Load4((ray_16.medium - 1u)*128+80)), asuint(instances.Load((ray_16.medium - 1u)*128+96)), asuint(instances.Load((ray_16.medium - 1u)*128+100)), asuint(instances.Load((ray_16.medium - 1u)*128+104)), asuint(instances.Load((ray_16.medium - 1u)*128+108)), asuint(instances.Load((ray_16.medium - 1u)*128+112)), asuint(instances.Load((ray_16.medium - 1u)*128+116)), asuint(instances.Load((ray_16.medium - 1u)*128+120)), asuint(instances.Load((ray_16.medium - 1u)*128+124)));
-    if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
-        return radiance_1;
-    }
-    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_16, t_1, radiance_1);
-    return _e21;
-}
-
-float3x3 orthonormal_basis(float3 n_5)
-{
-    float sign_ = (((asuint(n_5.z) & 2147483648u) != 0u) ? -1.0 : 1.0);
-    float a_7 = (-1.0 / (sign_ + n_5.z));
-    float b_6 = ((n_5.x * n_5.y) * a_7);
-    float _e16 = (sign_ * n_5.x);
-    return float3x3(float3((1.0 + ((_e16 * n_5.x) * a_7)), (sign_ * b_6), -(_e16)), float3(b_6, (sign_ + ((n_5.y * n_5.y) * a_7)), -(n_5.y)), n_5);
-}
-
-float3 sample_cosine_hemisphere(float3 n_6, float2 u)
-{
-    float r_4 = sqrt(u.x);
-    float phi = (6.2831855 * u.y);
-    float3 local = float3((r_4 * cos(phi)), (r_4 * sin(phi)), sqrt(max((1.0 - u.x), 0.0)));
-    const float3x3 _e17 = orthonormal_basis(n_6);
-    return mul(local, _e17);
-}
-
-float3 mis_bounce_dir(float3 dir_3, float pdf)
-{
-    float x_5 = min((log((1.0 + max(pdf, 0.0))) * (1.0 / 90.0)), 0.999);
-    return (dir_3 * ((MIS_BOUNCE_LENGTH + x_5)).xxx);
-}
-
-void rt_spawn(float3 dir_4, float3 weight)
-{
-    uint _e3 = spawn_count;
-    if ((_e3 < 1u)) {
-        spawn_dirs[min(uint(_e3), 0u)] = dir_4;
-        spawn_weights[min(uint(_e3), 0u)] = weight;
-        spawn_count = (_e3 + 1u);
-    }
-}
-
-void path_diffuse_rays(PathDiffuse m_2, Ray ray_17, Hit hit_4)
-{
-    float3 weight_1 = (float3)0;
-
-    float3 ng_1 = (hit_4.front_face ? hit_4.geometric_normal : -(hit_4.geometric_normal));
-    float3 n_11 = faceforward(hit_4.normal, -(ng_1), hit_4.normal);
-    const float2 _e12 = rand2_next();
-    const float3 _e13 = sample_cosine_hemisphere(n_11, _e12);
-    weight_1 = m_2.albedo;
-    if ((ray_17.depth >= m_2.roulette_depth)) {
-        float q_3 = saturate(max(m_2.albedo.x, max(m_2.albedo.y, m_2.albedo.z)));
-        const float _e28 = rand_next();
-        if ((_e28 >= q_3)) {
-            return;
-        }
-        weight_1 = (m_2.albedo / (q_3).xxx);
-    }
-    if ((dot(_e13, ng_1) > 0.0)) {
-        const float3 _e41 = mis_bounce_dir(_e13, (max(dot(n_11, _e13), 0.0) * INV_PI));
-        float3 _e42 = weight_1;
-        rt_spawn(_e41, _e42);
-    }
-    return;
-}
-
-void dispatch_secondary_rays(uint type_id_5, uint offset_9, Ray ray_18, Hit hit_5)
-{
-    const PathDiffuse _e3 = load_PathDiffuse(offset_9);
-    path_diffuse_rays(_e3, ray_18, hit_5);
-    return;
 }
 
 float3 spawn_origin_at(float3 position_6, float3 normal_7, float error_1, float3 dir_5)
@@ -1520,7 +1508,7 @@ float3 spawn_origin(Hit hit_6, float error_2, float3 dir_6)
     return _e5;
 }
 
-PathState path_step(PathState s_1, Candidate c_3)
+PathState path_step(PathState s_1, Candidate c_2)
 {
     PathState out_ = (PathState)0;
     bool spawned = (bool)0;
@@ -1528,26 +1516,26 @@ PathState path_step(PathState s_1, Candidate c_3)
     float3 weight_2 = (float3)0;
     float3 beta = (float3)0;
 
-    Ray ray_24 = s_1.ray;
+    Ray ray_22 = s_1.ray;
     out_ = s_1;
     out_.live = false;
-    if ((c_3.slot == NO_HIT)) {
+    if ((c_2.slot == NO_HIT)) {
         hit_error = 0.0;
-        const float3 _e14 = miss(ray_24);
+        const float3 _e14 = miss(ray_22);
         out_.radiance = (s_1.radiance + (s_1.beta * _e14));
         PathState _e17 = out_;
         const PathState pathstate = _e17;
         return pathstate;
     }
-    GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(c_3.slot*128+0)), asfloat(instances.Load4(c_3.slot*128+16)), asfloat(instances.Load4(c_3.slot*128+32)), asfloat(instances.Load4(c_3.slot*128+48)), asfloat(instances.Load4(c_3.slot*128+64)), asfloat(instances.Load4(c_3.slot*128+80)), asuint(instances.Load(c_3.slot*128+96)), asuint(instances.Load(c_3.slot*128+100)), asuint(instances.Load(c_3.slot*128+104)), asuint(instances.Load(c_3.slot*128+108)), asuint(instances.Load(c_3.slot*128+112)), asuint(instances.Load(c_3.slot*128+116)), asuint(instances.Load(c_3.slot*128+120)), asuint(instances.Load(c_3.slot*128+124)));
-    const Hit _e22 = finish_hit(ray_24, c_3);
+    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
+    const Hit _e22 = finish_hit(ray_22, c_2);
     float error_4 = hit_error;
     spawned = false;
     dir_7 = (0.0).xxx;
     weight_2 = (0.0).xxx;
-    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_24.depth < MAX_DEPTH))) {
+    if ((((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_22.depth < MAX_DEPTH))) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_24, _e22);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_22, _e22);
         uint _e47 = spawn_count;
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
@@ -1557,7 +1545,7 @@ PathState path_step(PathState s_1, Candidate c_3)
             weight_2 = _e60;
         }
     }
-    const float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_24, _e22, (0.0).xxx);
+    const float3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e22, (0.0).xxx);
     out_.radiance = (s_1.radiance + (s_1.beta * _e68));
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -1576,7 +1564,7 @@ PathState path_step(PathState s_1, Candidate c_3)
         const PathState pathstate_2 = _e89;
         return pathstate_2;
     }
-    if ((((ROULETTE_DEPTH > 0u) && ((ray_24.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT))) {
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_22.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT))) {
         float survive = (q_4 / ROULETTE_THROUGHPUT);
         const float _e104 = rand_next();
         if ((_e104 >= survive)) {
@@ -1593,11 +1581,41 @@ PathState path_step(PathState s_1, Candidate c_3)
     const float3 _e114 = spawn_origin(_e22, error_4, _e113);
     float3 _e116 = dir_7;
     uint _e118 = F32_INF;
-    out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_24.depth + 1u), RAY_SECONDARY, ray_24.medium);
+    out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_22.depth + 1u), RAY_SECONDARY, ray_22.medium);
     out_.live = true;
     PathState _e128 = out_;
     const PathState pathstate_4 = _e128;
     return pathstate_4;
+}
+
+bool3 is_finite_vec3f(float3 x_4)
+{
+    return ((asuint(x_4) & (2147483647u).xxx) < (2139095040u).xxx);
+}
+
+float3 finite_or_zero(float3 c_3)
+{
+    const bool3 _e3 = is_finite_vec3f(c_3);
+    return (_e3 ? c_3 : (0.0).xxx);
+}
+
+void pass_done(uint index, float3 sum, uint bad, uint pass_)
+{
+    uint _e5 = ray_count;
+    counters.InterlockedAdd(4, _e5);
+    ray_count = 0u;
+    FrameUniforms _e10 = frame;
+    float4 _e13 = float4(sum, float(_e10.samples_per_pass));
+    if ((pass_ == 0u)) {
+        accum.Store4(index*16, asuint(_e13));
+    } else {
+        float4 _e18 = asfloat(accum.Load4(index*16));
+        accum.Store4(index*16, asuint((_e18 + _e13)));
+    }
+    if ((bad > 0u)) {
+        counters.InterlockedAdd(0, bad);
+    }
+    return;
 }
 
 PathState ConstructPathState(Ray arg0, float3 arg1, float3 arg2, bool arg3) {
@@ -1609,132 +1627,68 @@ PathState ConstructPathState(Ray arg0, float3 arg1, float3 arg2, bool arg3) {
     return ret;
 }
 
-float3 trace_path(Ray camera_ray)
+void render_pixel(uint2 pixel_5)
 {
-    PathState s_2 = (PathState)0;
+    float3 sum_1 = (float3)0;
+    uint bad_1 = (uint)0;
+    uint s_2 = (uint)0;
+    PathState path = (PathState)0;
 
-    s_2 = ConstructPathState(camera_ray, (1.0).xxx, (0.0).xxx, true);
+    FrameUniforms frame_6 = frame;
+    TileParams tile_2 = tile;
+    uint index_1 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_1 = (tile_2.frame * per_pass);
+    uint count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
+    sum_1 = (0.0).xxx;
+    bad_1 = 0u;
+    s_2 = 0u;
+    const Ray _e25 = sample_camera_ray(pixel_5, first_1);
+    path = ConstructPathState(_e25, (1.0).xxx, (0.0).xxx, true);
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        PathState _e8 = s_2;
-        Ray _e10 = s_2.ray;
-        const Candidate _e12 = intersect_scene(_e10, false);
-        const PathState _e13 = path_step(_e8, _e12);
-        s_2 = _e13;
-        bool _e15 = s_2.live;
-        if (!(_e15)) {
-            float3 _e18 = s_2.radiance;
-            return _e18;
+        PathState _e33 = path;
+        Ray _e35 = path.ray;
+        const Candidate _e37 = intersect_scene(_e35, false);
+        const PathState _e38 = path_step(_e33, _e37);
+        path = _e38;
+        bool _e40 = path.live;
+        if (!(_e40)) {
+            float3 c_8 = path.radiance;
+            const bool3 _e44 = is_finite_vec3f(c_8);
+            if (all(_e44)) {
+                float3 _e46 = sum_1;
+                sum_1 = (_e46 + c_8);
+            } else {
+                float3 _e48 = sum_1;
+                const float3 _e49 = finite_or_zero(c_8);
+                sum_1 = (_e48 + _e49);
+                uint _e51 = bad_1;
+                bad_1 = (_e51 + 1u);
+            }
+            uint _e54 = s_2;
+            s_2 = (_e54 + 1u);
+            uint _e57 = s_2;
+            const uint _e58 = rem_u32_(_e57, per_pass);
+            if ((_e58 == 0u)) {
+                float3 _e61 = sum_1;
+                uint _e62 = bad_1;
+                uint _e64 = s_2;
+                const uint _e65 = div_u32_(_e64, per_pass);
+                pass_done(index_1, _e61, _e62, ((tile_2.frame + _e65) - 1u));
+                sum_1 = (0.0).xxx;
+                bad_1 = 0u;
+            }
+            uint _e72 = s_2;
+            if ((_e72 >= count_2)) {
+                break;
+            }
+            uint _e74 = s_2;
+            const Ray _e76 = sample_camera_ray(pixel_5, (first_1 + _e74));
+            path = ConstructPathState(_e76, (1.0).xxx, (0.0).xxx, true);
         }
-    }
-    return ZeroValuefloat3();
-}
-
-float3 trace(Ray camera_ray_1)
-{
-    float3 radiance_2 = (float3)0;
-    float t_2 = (float)0;
-
-    if (!(HAS_SECONDARY_RAYS)) {
-        const Candidate _e4 = intersect_scene(camera_ray_1, false);
-        radiance_2 = (0.0).xxx;
-        uint _e9 = F32_INF;
-        t_2 = asfloat(_e9);
-        if ((_e4.slot == NO_HIT)) {
-            hit_error = 0.0;
-            const float3 _e17 = miss(camera_ray_1);
-            radiance_2 = _e17;
-        } else {
-            const float3 _e18 = shade_direct(camera_ray_1, _e4);
-            radiance_2 = _e18;
-            t_2 = _e4.t;
-        }
-        float _e20 = t_2;
-        float3 _e21 = radiance_2;
-        const float3 _e22 = through_medium(camera_ray_1, _e20, _e21);
-        return _e22;
-    }
-    const float3 _e23 = trace_path(camera_ray_1);
-    return _e23;
-}
-
-bool3 is_finite_vec3f(float3 x_4)
-{
-    return ((asuint(x_4) & (2147483647u).xxx) < (2139095040u).xxx);
-}
-
-float3 finite_or_zero(float3 c_4)
-{
-    const bool3 _e3 = is_finite_vec3f(c_4);
-    return (_e3 ? c_4 : (0.0).xxx);
-}
-
-void render_pixel(uint2 pixel_4)
-{
-    float3 sum = (float3)0;
-    uint bad = (uint)0;
-    uint s_3 = (uint)0;
-    Ray ray_19 = (Ray)0;
-
-    FrameUniforms frame_5 = frame;
-    TileParams tile_2 = tile;
-    sum = (0.0).xxx;
-    bad = 0u;
-    uint end_1 = frame_5.samples_per_pass;
-    s_3 = 0u;
-    uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
-    bool loop_init_3 = true;
-    while(true) {
-        if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e46 = s_3;
-            s_3 = (_e46 + 1u);
-        }
-        loop_init_3 = false;
-        uint _e13 = s_3;
-        if ((_e13 >= end_1)) {
-            break;
-        }
-        uint _e18 = s_3;
-        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_4, sample_4, frame_5.seed);
-        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
-        ray_19 = _e23;
-        ray_19.depth = 0u;
-        ray_19.kind = RAY_CAMERA;
-        float3 _e31 = ray_19.origin;
-        const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_19.medium = _e33;
-        Ray _e34 = ray_19;
-        const float3 _e35 = trace(_e34);
-        const bool3 _e36 = is_finite_vec3f(_e35);
-        if (all(_e36)) {
-            float3 _e38 = sum;
-            sum = (_e38 + _e35);
-        } else {
-            float3 _e40 = sum;
-            const float3 _e41 = finite_or_zero(_e35);
-            sum = (_e40 + _e41);
-            uint _e43 = bad;
-            bad = (_e43 + 1u);
-        }
-    }
-    uint _e50 = ray_count;
-    counters.InterlockedAdd(4, _e50);
-    float3 _e59 = sum;
-    float4 _e62 = float4(_e59, float(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if ((tile_2.frame == 0u)) {
-        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint(_e62));
-    } else {
-        float4 _e69 = asfloat(accum.Load4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16));
-        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint((_e69 + _e62)));
-    }
-    if ((_e63 > 0u)) {
-        counters.InterlockedAdd(0, _e63);
     }
     return;
 }

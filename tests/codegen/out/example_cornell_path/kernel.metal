@@ -36,9 +36,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
-};
-struct type_3 {
-    uint inner[15];
+    uint passes_per_dispatch;
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -50,7 +48,17 @@ struct Ray {
     uint medium;
     char _pad7[4];
 };
-typedef uint type_5[1];
+struct PathState {
+    Ray ray;
+    metal::float3 beta;
+    metal::packed_float3 radiance;
+    bool live;
+    char _pad4[3];
+};
+struct type_5 {
+    uint inner[15];
+};
+typedef uint type_6[1];
 struct Pinhole {
     metal::float3 position;
     metal::float3 look_at;
@@ -122,15 +130,18 @@ struct Triangle {
     metal::float3 v2_;
 };
 typedef metal::uint4 type_15[1];
+struct type_16 {
+    metal::float3 inner[1];
+};
+struct PathDiffuse {
+    metal::packed_float3 albedo;
+    uint roulette_depth;
+};
 struct Emissive {
     metal::packed_float3 color;
     float intensity;
     uint two_sided;
     char _pad3[12];
-};
-struct PathDiffuse {
-    metal::packed_float3 albedo;
-    uint roulette_depth;
 };
 struct LightSample {
     metal::packed_float3 dir;
@@ -146,16 +157,6 @@ struct QuadLight {
     float intensity;
     uint lamp;
     char _pad6[12];
-};
-struct PathState {
-    Ray ray;
-    metal::float3 beta;
-    metal::packed_float3 radiance;
-    bool live;
-    char _pad4[3];
-};
-struct type_16 {
-    metal::float3 inner[1];
 };
 typedef metal::atomic_uint type_20[1];
 constant uint WORKGROUP_WIDTH = 8u;
@@ -179,8 +180,11 @@ constant float POINT_ERROR = 0.0000019073486;
 constant float GAMMA_1_ = 0.00000005960465;
 constant float GAMMA_6_ = 0.0000003576281;
 constant float GAMMA_4_ = 0.00000023841864;
-constant bool HAS_SECONDARY_RAYS = true;
 constant bool HAS_BACKGROUND = false;
+constant uint FLAG_SECONDARY_RAYS = 2u;
+constant uint MAX_DEPTH = 6u;
+constant float INV_PI = 0.31830987;
+constant float MIS_BOUNCE_LENGTH = 3.0;
 constant uint SCRATCH_SHADOW_MODE = 14u;
 constant uint SHADOW_ABOVE = 2u;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
@@ -188,11 +192,6 @@ constant uint SHADOW_UNOCCLUDED = 1u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
 constant uint SHADOW_TRACED = 0u;
-constant float INV_PI = 0.31830987;
-constant uint FLAG_MEDIUM = 4u;
-constant uint FLAG_SECONDARY_RAYS = 2u;
-constant uint MAX_DEPTH = 6u;
-constant float MIS_BOUNCE_LENGTH = 3.0;
 constant uint ROULETTE_DEPTH = 2u;
 constant float ROULETTE_THROUGHPUT = 0.5;
 constant uint RAY_SECONDARY = 1u;
@@ -284,7 +283,7 @@ void rng_resume(
     uint sample,
     uint seed,
     uint state,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state
 ) {
     scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)] = sample;
@@ -300,7 +299,7 @@ void rng_seed(
     metal::uint2 pixel_1,
     uint sample_1,
     uint seed_1,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state
 ) {
     rng_resume(pixel_1, sample_1, seed_1, 0u, scratch, rng_state);
@@ -309,7 +308,7 @@ void rng_seed(
 
 Pinhole load_Pinhole(
     uint offset,
-    device type_5 const& params,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset + 0u];
@@ -386,7 +385,7 @@ uint sobol_second_reversed(
 }
 
 float rand_next(
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state
 ) {
     uint x_2 = {};
@@ -409,7 +408,7 @@ float rand_next(
 }
 
 metal::float2 rand2_next(
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state
 ) {
     float _e0 = rand_next(scratch, rng_state);
@@ -429,7 +428,7 @@ Ray pinhole_ray(
     uint sample_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -461,9 +460,9 @@ Ray dispatch_ray_generation(
     uint sample_3,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -496,8 +495,8 @@ metal::float3 safe_inverse(
     metal::float3 d
 ) {
     metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_4 * tiny, metal::abs(d) < tiny);
+    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_3 * tiny, metal::abs(d) < tiny);
     return metal::float3(1.0) / dd;
 }
 
@@ -533,23 +532,23 @@ metal::float3 hit_triangle(
     metal::float4 _e18 = triangles[(slot * 3u) + 1u];
     metal::float3 b_4 = _e18.xyz - r_1.origin;
     metal::float4 _e28 = triangles[(slot * 3u) + 2u];
-    metal::float3 c_5 = _e28.xyz - r_1.origin;
+    metal::float3 c_4 = _e28.xyz - r_1.origin;
     float ax = a_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_4[metal::min(r_1.kz, 2u)]);
     float ay = a_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_4[metal::min(r_1.kz, 2u)]);
     float bx = b_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_4[metal::min(r_1.kz, 2u)]);
     float by = b_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_4[metal::min(r_1.kz, 2u)]);
-    float cx = c_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_5[metal::min(r_1.kz, 2u)]);
-    float cy = c_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_5[metal::min(r_1.kz, 2u)]);
+    float cx = c_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_4[metal::min(r_1.kz, 2u)]);
+    float cy = c_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_4[metal::min(r_1.kz, 2u)]);
     float u_1 = (cx * by) - (cy * bx);
     float v_2 = (ax * cy) - (ay * cx);
     float w = (bx * ay) - (by * ax);
     bool outside = (((u_1 < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u_1 > 0.0) || (v_2 > 0.0)) || (w > 0.0));
     float det = (u_1 + v_2) + w;
     float rcp = 1.0 / det;
-    float t_3 = (((u_1 * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_4[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1);
+    float t = (((u_1 * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_4[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
+    bool hit_7 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t >= tmin)) && (t <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_7 ? metal::float3(t_3, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_7 ? metal::float3(t, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -700,10 +699,10 @@ Candidate intersect_mesh(
                     metal::float4 _e58 = triangles[(prim * 3u) + 1u];
                     uint tag = as_type<uint>(_e58.w);
                     uint owner = (tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1;
-                    Candidate c_6 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e73 = accept(inst_2, world_ray, c_6);
+                    Candidate c_5 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e73 = accept(inst_2, world_ray, c_5);
                     if (_e73) {
-                        best = c_6;
+                        best = c_5;
                         if (shadow) {
                             Candidate _e74 = best;
                             return _e74;
@@ -841,9 +840,9 @@ metal::float3 decode_octahedral(
     float _e14 = n_1.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n_1;
-        metal::float2 s_5 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float2 s_4 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
         metal::float3 _e29 = n_1;
-        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_5;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_4;
         float _e37 = n_1.z;
         n_1 = metal::float3(xy.x, xy.y, _e37);
     }
@@ -926,7 +925,7 @@ uint medium_at(
     metal::float3 p_4,
     uint exclude,
     constant FrameUniforms& frame,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -985,6 +984,37 @@ uint medium_at(
     return _e62;
 }
 
+Ray sample_camera_ray(
+    metal::uint2 pixel_4,
+    uint sample_4,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread type_5& scratch,
+    thread uint& rng_state,
+    device type_6 const& params,
+    thread uint& F32_INF,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
+    thread float& hit_error,
+    device type_15 const& attributes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Ray ray_7 = {};
+    FrameUniforms frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
+    Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_7.origin;
+    uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+    ray_7.medium = _e17;
+    Ray _e18 = ray_7;
+    return _e18;
+}
+
 metal::float3 node_frame_hi(
     GpuNode header
 ) {
@@ -993,7 +1023,7 @@ metal::float3 node_frame_hi(
 }
 
 Candidate intersect_scene(
-    Ray ray_7,
+    Ray ray_8,
     bool shadow_2,
     constant FrameUniforms& frame,
     thread uint& F32_INF,
@@ -1011,21 +1041,21 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_7.tmax);
+    Candidate _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = frame;
-    if (frame_2.instance_count == 0u) {
+    FrameUniforms frame_3 = frame;
+    if (frame_3.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_7.dir);
-    uint base_2 = frame_2.tlas_root;
+    metal::float3 _e16 = safe_inverse(ray_8.dir);
+    uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = nodes[base_2];
     metal::float3 origin_5 = header_2.min;
     metal::float3 scale_3 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
@@ -1043,7 +1073,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_7, _e55, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_8, _e55, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1055,7 +1085,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_9 = nodes[base_2 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_9, origin_5, scale_3, ray_7, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_9, origin_5, scale_3, ray_8, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1105,64 +1135,158 @@ Candidate intersect_scene(
 metal::float3 dispatch_miss(
     uint type_id_1,
     uint offset_2,
-    Ray ray_8
+    Ray ray_9
 ) {
     return metal::float3 {};
 }
 
 metal::float3 miss(
-    Ray ray_9,
+    Ray ray_10,
     constant FrameUniforms& frame
 ) {
     if (!(HAS_BACKGROUND)) {
         return metal::float3(0.0);
     }
-    FrameUniforms frame_3 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_9);
+    FrameUniforms frame_4 = frame;
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_10);
     return _e9;
 }
 
-Emissive load_Emissive(
+PathDiffuse load_PathDiffuse(
     uint offset_3,
-    device type_5 const& params,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_3 + 0u];
     uint _e11 = params[offset_3 + 1u];
     uint _e17 = params[offset_3 + 2u];
     uint _e24 = params[offset_3 + 3u];
-    uint _e30 = params[offset_3 + 4u];
+    return PathDiffuse {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), _e24};
+}
+
+metal::float3x3 orthonormal_basis(
+    metal::float3 n_3
+) {
+    float sign = ((as_type<uint>(n_3.z) & 2147483648u) != 0u) ? -1.0 : 1.0;
+    float a_6 = -1.0 / (sign + n_3.z);
+    float b_6 = (n_3.x * n_3.y) * a_6;
+    float _e16 = sign * n_3.x;
+    return metal::float3x3(metal::float3(1.0 + ((_e16 * n_3.x) * a_6), sign * b_6, -(_e16)), metal::float3(b_6, sign + ((n_3.y * n_3.y) * a_6), -(n_3.y)), n_3);
+}
+
+metal::float3 sample_cosine_hemisphere(
+    metal::float3 n_4,
+    metal::float2 u
+) {
+    float r_3 = metal::sqrt(u.x);
+    float phi = 6.2831855 * u.y;
+    metal::float3 local = metal::float3(r_3 * metal::cos(phi), r_3 * metal::sin(phi), metal::sqrt(metal::max(1.0 - u.x, 0.0)));
+    metal::float3x3 _e17 = orthonormal_basis(n_4);
+    return _e17 * local;
+}
+
+metal::float3 mis_bounce_dir(
+    metal::float3 dir,
+    float pdf
+) {
+    float x_5 = metal::min(metal::log(1.0 + metal::max(pdf, 0.0)) * (1.0 / 90.0), 0.999);
+    return dir * metal::float3(MIS_BOUNCE_LENGTH + x_5);
+}
+
+void rt_spawn(
+    metal::float3 dir_1,
+    metal::float3 weight,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count
+) {
+    uint _e3 = spawn_count;
+    if (_e3 < 1u) {
+        spawn_dirs.inner[_e3] = dir_1;
+        spawn_weights.inner[_e3] = weight;
+        spawn_count = _e3 + 1u;
+    }
+}
+
+void path_diffuse_rays(
+    PathDiffuse m,
+    Ray ray_11,
+    Hit hit_1,
+    thread type_5& scratch,
+    thread uint& rng_state,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count
+) {
+    metal::float3 weight_1 = {};
+    metal::float3 ng = hit_1.front_face ? hit_1.geometric_normal : -(hit_1.geometric_normal);
+    metal::float3 n_10 = metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
+    metal::float2 _e12 = rand2_next(scratch, rng_state);
+    metal::float3 _e13 = sample_cosine_hemisphere(n_10, _e12);
+    weight_1 = m.albedo;
+    if (ray_11.depth >= m.roulette_depth) {
+        float q_3 = metal::saturate(metal::max(m.albedo[0], metal::max(m.albedo[1], m.albedo[2])));
+        float _e28 = rand_next(scratch, rng_state);
+        if (_e28 >= q_3) {
+            return;
+        }
+        weight_1 = m.albedo / metal::float3(q_3);
+    }
+    if (metal::dot(_e13, ng) > 0.0) {
+        metal::float3 _e41 = mis_bounce_dir(_e13, metal::max(metal::dot(n_10, _e13), 0.0) * INV_PI);
+        metal::float3 _e42 = weight_1;
+        rt_spawn(_e41, _e42, spawn_dirs, spawn_weights, spawn_count);
+    }
+    return;
+}
+
+void dispatch_secondary_rays(
+    uint type_id_2,
+    uint offset_4,
+    Ray ray_12,
+    Hit hit_2,
+    thread type_5& scratch,
+    thread uint& rng_state,
+    device type_6 const& params,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    PathDiffuse _e3 = load_PathDiffuse(offset_4, params, _buffer_sizes);
+    path_diffuse_rays(_e3, ray_12, hit_2, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
+    return;
+}
+
+Emissive load_Emissive(
+    uint offset_5,
+    device type_6 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_5 + 0u];
+    uint _e11 = params[offset_5 + 1u];
+    uint _e17 = params[offset_5 + 2u];
+    uint _e24 = params[offset_5 + 3u];
+    uint _e30 = params[offset_5 + 4u];
     return Emissive {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), as_type<float>(_e24), _e30};
 }
 
 bool after_nee_bounce(
-    Ray ray_10
+    Ray ray_13
 ) {
-    return metal::dot(ray_10.dir, ray_10.dir) > 2.0;
+    return metal::dot(ray_13.dir, ray_13.dir) > 2.0;
 }
 
 metal::float3 emissive_shade(
-    Emissive m,
-    Ray ray_11,
-    Hit hit_1
+    Emissive m_1,
+    Ray ray_14,
+    Hit hit_3
 ) {
-    bool _e3 = after_nee_bounce(ray_11);
-    if (_e3 || (!(hit_1.front_face) && (m.two_sided == 0u))) {
+    bool _e3 = after_nee_bounce(ray_14);
+    if (_e3 || (!(hit_3.front_face) && (m_1.two_sided == 0u))) {
         return metal::float3(0.0);
     }
-    return m.color * metal::float3(m.intensity);
-}
-
-PathDiffuse load_PathDiffuse(
-    uint offset_4,
-    device type_5 const& params,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint _e5 = params[offset_4 + 0u];
-    uint _e11 = params[offset_4 + 1u];
-    uint _e17 = params[offset_4 + 2u];
-    uint _e24 = params[offset_4 + 3u];
-    return PathDiffuse {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), _e24};
+    return m_1.color * metal::float3(m_1.intensity);
 }
 
 uint light_count_query(
@@ -1173,37 +1297,37 @@ uint light_count_query(
 }
 
 QuadLight load_QuadLight(
-    uint offset_5,
-    device type_5 const& params,
+    uint offset_6,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e5 = params[offset_5 + 0u];
-    uint _e11 = params[offset_5 + 1u];
-    uint _e17 = params[offset_5 + 2u];
-    uint _e24 = params[offset_5 + 4u];
-    uint _e30 = params[offset_5 + 5u];
-    uint _e36 = params[offset_5 + 6u];
-    uint _e43 = params[offset_5 + 8u];
-    uint _e49 = params[offset_5 + 9u];
-    uint _e55 = params[offset_5 + 10u];
-    uint _e62 = params[offset_5 + 12u];
-    uint _e68 = params[offset_5 + 13u];
-    uint _e74 = params[offset_5 + 14u];
-    uint _e81 = params[offset_5 + 15u];
-    uint _e87 = params[offset_5 + 16u];
+    uint _e5 = params[offset_6 + 0u];
+    uint _e11 = params[offset_6 + 1u];
+    uint _e17 = params[offset_6 + 2u];
+    uint _e24 = params[offset_6 + 4u];
+    uint _e30 = params[offset_6 + 5u];
+    uint _e36 = params[offset_6 + 6u];
+    uint _e43 = params[offset_6 + 8u];
+    uint _e49 = params[offset_6 + 9u];
+    uint _e55 = params[offset_6 + 10u];
+    uint _e62 = params[offset_6 + 12u];
+    uint _e68 = params[offset_6 + 13u];
+    uint _e74 = params[offset_6 + 14u];
+    uint _e81 = params[offset_6 + 15u];
+    uint _e87 = params[offset_6 + 16u];
     return QuadLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), metal::float3(as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)), metal::float3(as_type<float>(_e62), as_type<float>(_e68), as_type<float>(_e74)), as_type<float>(_e81), _e87};
 }
 
 float shadow_preset(
     metal::float3 normal,
-    metal::float3 dir,
-    thread type_3& scratch
+    metal::float3 dir_2,
+    thread type_5& scratch
 ) {
     uint mode = scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 14u)];
     if (mode == SHADOW_UNOCCLUDED) {
         return 1.0;
     }
-    if ((mode == SHADOW_ABOVE) && !((metal::dot(dir, normal) > 0.0))) {
+    if ((mode == SHADOW_ABOVE) && !((metal::dot(dir_2, normal) > 0.0))) {
         return 0.0;
     }
     return -1.0;
@@ -1223,57 +1347,57 @@ metal::float3 step_toward(
 
 metal::float3 offset_origin(
     metal::float3 p_5,
-    metal::float3 n_3,
+    metal::float3 n_5,
     float error
 ) {
-    float d_4 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
-    metal::float3 offset_10 = n_3 * metal::float3(d_4);
-    metal::float3 _e17 = step_toward(p_5 + offset_10, offset_10);
+    float d_4 = (2.0 * error) * ((metal::abs(n_5.x) + metal::abs(n_5.y)) + metal::abs(n_5.z));
+    metal::float3 offset_9 = n_5 * metal::float3(d_4);
+    metal::float3 _e17 = step_toward(p_5 + offset_9, offset_9);
     return _e17;
 }
 
 Ray shadow_ray(
     metal::float3 position,
     metal::float3 normal_1,
-    metal::float3 dir_1,
+    metal::float3 dir_3,
     float dist,
     thread uint& F32_INF,
     thread float& hit_error
 ) {
-    metal::float3 n_4 = {};
+    metal::float3 n_6 = {};
     float tmax_4 = {};
-    n_4 = normal_1;
-    metal::float3 _e5 = n_4;
-    if (metal::dot(dir_1, _e5) < 0.0) {
-        metal::float3 _e9 = n_4;
-        n_4 = -(_e9);
+    n_6 = normal_1;
+    metal::float3 _e5 = n_6;
+    if (metal::dot(dir_3, _e5) < 0.0) {
+        metal::float3 _e9 = n_6;
+        n_6 = -(_e9);
     }
-    metal::float3 a_6 = metal::abs(position);
+    metal::float3 a_7 = metal::abs(position);
     float _e13 = hit_error;
-    float error_3 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_6.x, a_6.y), a_6.z));
-    metal::float3 _e22 = n_4;
+    float error_3 = metal::max(_e13, GAMMA_4_ * metal::max(metal::max(a_7.x, a_7.y), a_7.z));
+    metal::float3 _e22 = n_6;
     metal::float3 _e23 = offset_origin(position, _e22, error_3);
     uint _e25 = F32_INF;
     tmax_4 = as_type<float>(_e25);
     uint _e29 = F32_INF;
     if (dist < as_type<float>(_e29)) {
-        metal::float3 light = position + (dir_1 * metal::float3(dist));
-        float dd_1 = metal::dot(dir_1, dir_1);
-        float along_1 = metal::dot(light - _e23, dir_1) / dd_1;
-        metal::float3 l_2 = metal::abs(position) + metal::abs(dir_1 * metal::float3(dist));
+        metal::float3 light = position + (dir_3 * metal::float3(dist));
+        float dd_1 = metal::dot(dir_3, dir_3);
+        float along_1 = metal::dot(light - _e23, dir_3) / dd_1;
+        metal::float3 l_2 = metal::abs(position) + metal::abs(dir_3 * metal::float3(dist));
         tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_2.x, l_2.y), l_2.z)) / metal::sqrt(dd_1));
     }
     float _e59 = tmax_4;
-    return Ray {_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u};
+    return Ray {_e23, 0.0, dir_3, _e59, 0u, RAY_SHADOW, 0u};
 }
 
 float shadow_query(
     metal::float3 position_1,
     metal::float3 normal_2,
-    metal::float3 dir_2,
+    metal::float3 dir_4,
     float dist_1,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1283,11 +1407,11 @@ float shadow_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = shadow_preset(normal_2, dir_2, scratch);
+    float _e4 = shadow_preset(normal_2, dir_4, scratch);
     if (_e4 >= 0.0) {
         return _e4;
     }
-    Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1, F32_INF, hit_error);
+    Ray _e7 = shadow_ray(position_1, normal_2, dir_4, dist_1, F32_INF, hit_error);
     Candidate _e9 = intersect_scene(_e7, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
     return (_e9.slot != NO_HIT) ? 0.0 : 1.0;
 }
@@ -1297,7 +1421,7 @@ LightSample quad_light(
     metal::float3 position_2,
     metal::float3 normal_3,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1308,14 +1432,14 @@ LightSample quad_light(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 c_7 = metal::cross(l.edge_u, l.edge_v);
-    float area = metal::length(c_7);
+    metal::float3 c_6 = metal::cross(l.edge_u, l.edge_v);
+    float area = metal::length(c_6);
     metal::float2 _e7 = rand2_next(scratch, rng_state);
     metal::float3 to_light = ((l.corner + (l.edge_u * metal::float3(_e7.x))) + (l.edge_v * metal::float3(_e7.y))) - position_2;
     float dist2_ = metal::dot(to_light, to_light);
     float dist_2 = metal::sqrt(dist2_);
     metal::float3 dir_8 = to_light / metal::float3(metal::max(dist_2, 0.00000000000000000001));
-    float cos_light = -(metal::dot(dir_8, c_7)) / metal::max(area, 0.000000000000000000000000000001);
+    float cos_light = -(metal::dot(dir_8, c_6)) / metal::max(area, 0.000000000000000000000000000001);
     if (!((cos_light > 0.0)) || !((dist2_ > 0.0))) {
         return LightSample {dir_8, dist_2, metal::float3(0.0), 0.0};
     }
@@ -1326,14 +1450,14 @@ LightSample quad_light(
 }
 
 LightSample dispatch_light(
-    uint type_id_2,
-    uint offset_6,
+    uint type_id_3,
+    uint offset_7,
     metal::float3 position_3,
     metal::float3 normal_4,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1343,7 +1467,7 @@ LightSample dispatch_light(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    QuadLight _e3 = load_QuadLight(offset_6, params, _buffer_sizes);
+    QuadLight _e3 = load_QuadLight(offset_7, params, _buffer_sizes);
     LightSample _e4 = quad_light(_e3, position_3, normal_4, frame, scratch, rng_state, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e4;
 }
@@ -1353,9 +1477,9 @@ LightSample sample_light_query(
     metal::float3 position_4,
     metal::float3 normal_5,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1365,11 +1489,11 @@ LightSample sample_light_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    FrameUniforms frame_4 = frame;
-    if (i_2 >= frame_4.light_count) {
+    FrameUniforms frame_5 = frame;
+    if (i_2 >= frame_5.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry = frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE);
+    uint entry = frame_5.light_table + (i_2 * LIGHT_ENTRY_STRIDE);
     uint _e22 = params[entry];
     uint _e27 = params[entry + 1u];
     LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
@@ -1381,9 +1505,9 @@ LightSample sample_light_above_query(
     metal::float3 position_5,
     metal::float3 normal_6,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1407,13 +1531,13 @@ float mis_weight(
     if (!((p_6 > 0.0))) {
         return 0.0;
     }
-    float r_3 = metal::max(other, 0.0) / p_6;
-    if (!((r_3 < 1000000000000000000.0))) {
+    float r_4 = metal::max(other, 0.0) / p_6;
+    if (!((r_4 < 1000000000000000000.0))) {
         uint _e15 = F32_INF;
         uint _e19 = F32_INF;
         return ((p_6 == as_type<float>(_e15)) && (other < as_type<float>(_e19))) ? 1.0 : 0.0;
     }
-    return 1.0 / (1.0 + (r_3 * r_3));
+    return 1.0 / (1.0 + (r_4 * r_4));
 }
 
 float mis_light_weight(
@@ -1429,14 +1553,14 @@ float mis_light_weight(
 }
 
 metal::float3 path_diffuse_shade(
-    PathDiffuse m_1,
-    Ray ray_12,
-    Hit hit_2,
+    PathDiffuse m_2,
+    Ray ray_15,
+    Hit hit_4,
     metal::float3 secondary,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1448,8 +1572,8 @@ metal::float3 path_diffuse_shade(
 ) {
     metal::float3 direct = {};
     uint i_4 = {};
-    metal::float3 n_10 = metal::faceforward(hit_2.normal, ray_12.dir, hit_2.geometric_normal);
-    metal::float3 ng = metal::faceforward(hit_2.geometric_normal, ray_12.dir, hit_2.geometric_normal);
+    metal::float3 n_11 = metal::faceforward(hit_4.normal, ray_15.dir, hit_4.geometric_normal);
+    metal::float3 ng_1 = metal::faceforward(hit_4.geometric_normal, ray_15.dir, hit_4.geometric_normal);
     direct = metal::float3(0.0);
     uint _e16 = light_count_query(frame);
     i_4 = 0u;
@@ -1468,26 +1592,26 @@ metal::float3 path_diffuse_shade(
             break;
         }
         uint _e20 = i_4;
-        LightSample _e22 = sample_light_above_query(_e20, hit_2.position, ng, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
-        float c_8 = metal::max(metal::dot(n_10, _e22.dir), 0.0);
+        LightSample _e22 = sample_light_above_query(_e20, hit_4.position, ng_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+        float c_7 = metal::max(metal::dot(n_11, _e22.dir), 0.0);
         metal::float3 _e27 = direct;
-        float _e31 = mis_light_weight(_e22, c_8 * INV_PI, F32_INF);
-        direct = _e27 + (_e22.radiance * metal::float3(c_8 * _e31));
+        float _e31 = mis_light_weight(_e22, c_7 * INV_PI, F32_INF);
+        direct = _e27 + (_e22.radiance * metal::float3(c_7 * _e31));
     }
     metal::float3 _e43 = direct;
-    return ((m_1.albedo * metal::float3(INV_PI)) * _e43) + secondary;
+    return ((m_2.albedo * metal::float3(INV_PI)) * _e43) + secondary;
 }
 
 metal::float3 dispatch_closest_hit(
-    uint type_id_3,
-    uint offset_7,
-    Ray ray_13,
-    Hit hit_3,
+    uint type_id_4,
+    uint offset_8,
+    Ray ray_16,
+    Hit hit_5,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1497,15 +1621,15 @@ metal::float3 dispatch_closest_hit(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    switch(type_id_3) {
+    switch(type_id_4) {
         case 0u: {
-            Emissive _e5 = load_Emissive(offset_7, params, _buffer_sizes);
-            metal::float3 _e6 = emissive_shade(_e5, ray_13, hit_3);
+            Emissive _e5 = load_Emissive(offset_8, params, _buffer_sizes);
+            metal::float3 _e6 = emissive_shade(_e5, ray_16, hit_5);
             return _e6;
         }
         case 1u: {
-            PathDiffuse _e7 = load_PathDiffuse(offset_7, params, _buffer_sizes);
-            metal::float3 _e8 = path_diffuse_shade(_e7, ray_13, hit_3, secondary_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+            PathDiffuse _e7 = load_PathDiffuse(offset_8, params, _buffer_sizes);
+            metal::float3 _e8 = path_diffuse_shade(_e7, ray_16, hit_5, secondary_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
             return _e8;
         }
         default: {
@@ -1513,154 +1637,6 @@ metal::float3 dispatch_closest_hit(
         }
     }
     return metal::float3 {};
-}
-
-metal::float3 shade_direct(
-    Ray ray_14,
-    Candidate c_2,
-    constant FrameUniforms& frame,
-    thread type_3& scratch,
-    thread uint& rng_state,
-    device type_5 const& params,
-    thread uint& F32_INF,
-    device type_9 const& instances,
-    device type_10 const& nodes,
-    device type_11 const& triangles,
-    thread type_13& traversal_stack,
-    thread float& hit_error,
-    device type_15 const& attributes,
-    thread uint& ray_count,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    GpuInstance inst_8 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_14, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
-    return _e11;
-}
-
-metal::float3 dispatch_medium(
-    uint type_id_4,
-    uint offset_8,
-    Ray ray_15,
-    float t,
-    metal::float3 radiance
-) {
-    return metal::float3 {};
-}
-
-metal::float3 through_medium(
-    Ray ray_16,
-    float t_1,
-    metal::float3 radiance_1,
-    device type_9 const& instances,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    if (!(HAS_MEDIA)) {
-        return radiance_1;
-    }
-    if (ray_16.medium == 0u) {
-        return radiance_1;
-    }
-    GpuInstance inst_9 = instances[ray_16.medium - 1u];
-    if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
-        return radiance_1;
-    }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_16, t_1, radiance_1);
-    return _e21;
-}
-
-metal::float3x3 orthonormal_basis(
-    metal::float3 n_5
-) {
-    float sign = ((as_type<uint>(n_5.z) & 2147483648u) != 0u) ? -1.0 : 1.0;
-    float a_7 = -1.0 / (sign + n_5.z);
-    float b_6 = (n_5.x * n_5.y) * a_7;
-    float _e16 = sign * n_5.x;
-    return metal::float3x3(metal::float3(1.0 + ((_e16 * n_5.x) * a_7), sign * b_6, -(_e16)), metal::float3(b_6, sign + ((n_5.y * n_5.y) * a_7), -(n_5.y)), n_5);
-}
-
-metal::float3 sample_cosine_hemisphere(
-    metal::float3 n_6,
-    metal::float2 u
-) {
-    float r_4 = metal::sqrt(u.x);
-    float phi = 6.2831855 * u.y;
-    metal::float3 local = metal::float3(r_4 * metal::cos(phi), r_4 * metal::sin(phi), metal::sqrt(metal::max(1.0 - u.x, 0.0)));
-    metal::float3x3 _e17 = orthonormal_basis(n_6);
-    return _e17 * local;
-}
-
-metal::float3 mis_bounce_dir(
-    metal::float3 dir_3,
-    float pdf
-) {
-    float x_5 = metal::min(metal::log(1.0 + metal::max(pdf, 0.0)) * (1.0 / 90.0), 0.999);
-    return dir_3 * metal::float3(MIS_BOUNCE_LENGTH + x_5);
-}
-
-void rt_spawn(
-    metal::float3 dir_4,
-    metal::float3 weight,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
-    thread uint& spawn_count
-) {
-    uint _e3 = spawn_count;
-    if (_e3 < 1u) {
-        spawn_dirs.inner[_e3] = dir_4;
-        spawn_weights.inner[_e3] = weight;
-        spawn_count = _e3 + 1u;
-    }
-}
-
-void path_diffuse_rays(
-    PathDiffuse m_2,
-    Ray ray_17,
-    Hit hit_4,
-    thread type_3& scratch,
-    thread uint& rng_state,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
-    thread uint& spawn_count
-) {
-    metal::float3 weight_1 = {};
-    metal::float3 ng_1 = hit_4.front_face ? hit_4.geometric_normal : -(hit_4.geometric_normal);
-    metal::float3 n_11 = metal::faceforward(hit_4.normal, -(ng_1), hit_4.normal);
-    metal::float2 _e12 = rand2_next(scratch, rng_state);
-    metal::float3 _e13 = sample_cosine_hemisphere(n_11, _e12);
-    weight_1 = m_2.albedo;
-    if (ray_17.depth >= m_2.roulette_depth) {
-        float q_3 = metal::saturate(metal::max(m_2.albedo[0], metal::max(m_2.albedo[1], m_2.albedo[2])));
-        float _e28 = rand_next(scratch, rng_state);
-        if (_e28 >= q_3) {
-            return;
-        }
-        weight_1 = m_2.albedo / metal::float3(q_3);
-    }
-    if (metal::dot(_e13, ng_1) > 0.0) {
-        metal::float3 _e41 = mis_bounce_dir(_e13, metal::max(metal::dot(n_11, _e13), 0.0) * INV_PI);
-        metal::float3 _e42 = weight_1;
-        rt_spawn(_e41, _e42, spawn_dirs, spawn_weights, spawn_count);
-    }
-    return;
-}
-
-void dispatch_secondary_rays(
-    uint type_id_5,
-    uint offset_9,
-    Ray ray_18,
-    Hit hit_5,
-    thread type_3& scratch,
-    thread uint& rng_state,
-    device type_5 const& params,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
-    thread uint& spawn_count,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    PathDiffuse _e3 = load_PathDiffuse(offset_9, params, _buffer_sizes);
-    path_diffuse_rays(_e3, ray_18, hit_5, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
-    return;
 }
 
 metal::float3 spawn_origin_at(
@@ -1692,11 +1668,11 @@ metal::float3 spawn_origin(
 
 PathState path_step(
     PathState s_1,
-    Candidate c_3,
+    Candidate c_2,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1715,25 +1691,25 @@ PathState path_step(
     metal::float3 dir_7 = {};
     metal::float3 weight_2 = {};
     metal::float3 beta = {};
-    Ray ray_20 = s_1.ray;
+    Ray ray_17 = s_1.ray;
     out = s_1;
     out.live = false;
-    if (c_3.slot == NO_HIT) {
+    if (c_2.slot == NO_HIT) {
         hit_error = 0.0;
-        metal::float3 _e14 = miss(ray_20, frame);
+        metal::float3 _e14 = miss(ray_17, frame);
         out.radiance = s_1.radiance + (s_1.beta * _e14);
         PathState _e17 = out;
         return _e17;
     }
-    GpuInstance inst_10 = instances[c_3.slot];
-    Hit _e22 = finish_hit(ray_20, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
+    GpuInstance inst_8 = instances[c_2.slot];
+    Hit _e22 = finish_hit(ray_17, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
     float error_4 = hit_error;
     spawned = false;
     dir_7 = metal::float3(0.0);
     weight_2 = metal::float3(0.0);
-    if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_1.ray.depth < MAX_DEPTH)) {
+    if (((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_1.ray.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_20, _e22, scratch, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_17, _e22, scratch, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         uint _e47 = spawn_count;
         if (metal::min(_e47, 1u) > 0u) {
             spawned = true;
@@ -1743,7 +1719,7 @@ PathState path_step(
             weight_2 = _e60;
         }
     }
-    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_20, _e22, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    metal::float3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e22, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     out.radiance = s_1.radiance + (s_1.beta * _e68);
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -1782,89 +1758,6 @@ PathState path_step(
     return _e128;
 }
 
-metal::float3 trace_path(
-    Ray camera_ray,
-    constant FrameUniforms& frame,
-    thread type_3& scratch,
-    thread uint& rng_state,
-    device type_5 const& params,
-    thread uint& F32_INF,
-    device type_9 const& instances,
-    device type_10 const& nodes,
-    device type_11 const& triangles,
-    thread type_13& traversal_stack,
-    thread float& hit_error,
-    device type_15 const& attributes,
-    thread uint& ray_count,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
-    thread uint& spawn_count,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    PathState s_2 = {};
-    s_2 = PathState {camera_ray, metal::float3(1.0), metal::float3(0.0), true};
-    uint2 loop_bound_5 = uint2(4294967295u);
-    while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        PathState _e8 = s_2;
-        Ray _e10 = s_2.ray;
-        Candidate _e12 = intersect_scene(_e10, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        PathState _e13 = path_step(_e8, _e12, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-        s_2 = _e13;
-        bool _e15 = s_2.live;
-        if (!(_e15)) {
-            metal::float3 _e18 = s_2.radiance;
-            return _e18;
-        }
-    }
-    return metal::float3 {};
-}
-
-metal::float3 trace(
-    Ray camera_ray_1,
-    constant FrameUniforms& frame,
-    thread type_3& scratch,
-    thread uint& rng_state,
-    device type_5 const& params,
-    thread uint& F32_INF,
-    device type_9 const& instances,
-    device type_10 const& nodes,
-    device type_11 const& triangles,
-    thread type_13& traversal_stack,
-    thread float& hit_error,
-    device type_15 const& attributes,
-    thread uint& ray_count,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
-    thread uint& spawn_count,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    metal::float3 radiance_2 = {};
-    float t_2 = {};
-    if (!(HAS_SECONDARY_RAYS)) {
-        Candidate _e4 = intersect_scene(camera_ray_1, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        radiance_2 = metal::float3(0.0);
-        uint _e9 = F32_INF;
-        t_2 = as_type<float>(_e9);
-        if (_e4.slot == NO_HIT) {
-            hit_error = 0.0;
-            metal::float3 _e17 = miss(camera_ray_1, frame);
-            radiance_2 = _e17;
-        } else {
-            metal::float3 _e18 = shade_direct(camera_ray_1, _e4, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, _buffer_sizes);
-            radiance_2 = _e18;
-            t_2 = _e4.t;
-        }
-        float _e20 = t_2;
-        metal::float3 _e21 = radiance_2;
-        metal::float3 _e22 = through_medium(camera_ray_1, _e20, _e21, instances, _buffer_sizes);
-        return _e22;
-    }
-    metal::float3 _e23 = trace_path(camera_ray_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-    return _e23;
-}
-
 metal::bool3 is_finite_vec3f(
     metal::float3 x_4
 ) {
@@ -1872,19 +1765,47 @@ metal::bool3 is_finite_vec3f(
 }
 
 metal::float3 finite_or_zero(
-    metal::float3 c_4
+    metal::float3 c_3
 ) {
-    metal::bool3 _e3 = is_finite_vec3f(c_4);
-    return metal::select(metal::float3(0.0), c_4, _e3);
+    metal::bool3 _e3 = is_finite_vec3f(c_3);
+    return metal::select(metal::float3(0.0), c_3, _e3);
+}
+
+void pass_done(
+    uint index,
+    metal::float3 sum,
+    uint bad,
+    uint pass,
+    constant FrameUniforms& frame,
+    thread uint& ray_count,
+    device type_20& counters,
+    device type_11& accum,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e5, metal::memory_order_relaxed);
+    ray_count = 0u;
+    FrameUniforms _e10 = frame;
+    metal::float4 _e13 = metal::float4(sum, static_cast<float>(_e10.samples_per_pass));
+    if (pass == 0u) {
+        accum[index] = _e13;
+    } else {
+        metal::float4 _e18 = accum[index];
+        accum[index] = _e18 + _e13;
+    }
+    if (bad > 0u) {
+        metal::atomic_fetch_add_explicit(&counters[0], bad, metal::memory_order_relaxed);
+    }
+    return;
 }
 
 void render_pixel(
-    metal::uint2 pixel_4,
+    metal::uint2 pixel_5,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1900,67 +1821,65 @@ void render_pixel(
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 sum = {};
-    uint bad = {};
-    uint s_3 = {};
-    Ray ray_19 = {};
-    FrameUniforms frame_5 = frame;
+    metal::float3 sum_1 = {};
+    uint bad_1 = {};
+    uint s_2 = {};
+    PathState path = {};
+    FrameUniforms frame_6 = frame;
     TileParams tile_2 = tile;
-    sum = metal::float3(0.0);
-    bad = 0u;
-    uint end_1 = frame_5.samples_per_pass;
-    s_3 = 0u;
-    uint2 loop_bound_6 = uint2(4294967295u);
-    bool loop_init_3 = true;
+    uint index_1 = (pixel_5.y * tile_2.image_size.x) + pixel_5.x;
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_1 = tile_2.frame * per_pass;
+    uint count_2 = per_pass * metal::max(frame_6.passes_per_dispatch, 1u);
+    sum_1 = metal::float3(0.0);
+    bad_1 = 0u;
+    s_2 = 0u;
+    Ray _e25 = sample_camera_ray(pixel_5, first_1, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+    path = PathState {_e25, metal::float3(1.0), metal::float3(0.0), true};
+    uint2 loop_bound_5 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e46 = s_3;
-            s_3 = _e46 + 1u;
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        PathState _e33 = path;
+        Ray _e35 = path.ray;
+        Candidate _e37 = intersect_scene(_e35, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        PathState _e38 = path_step(_e33, _e37, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        path = _e38;
+        bool _e40 = path.live;
+        if (!(_e40)) {
+            metal::float3 c_8 = path.radiance;
+            metal::bool3 _e44 = is_finite_vec3f(c_8);
+            if (metal::all(_e44)) {
+                metal::float3 _e46 = sum_1;
+                sum_1 = _e46 + c_8;
+            } else {
+                metal::float3 _e48 = sum_1;
+                metal::float3 _e49 = finite_or_zero(c_8);
+                sum_1 = _e48 + _e49;
+                uint _e51 = bad_1;
+                bad_1 = _e51 + 1u;
+            }
+            uint _e54 = s_2;
+            s_2 = _e54 + 1u;
+            uint _e57 = s_2;
+            uint _e58 = rem_u32_(_e57, per_pass);
+            if (_e58 == 0u) {
+                metal::float3 _e61 = sum_1;
+                uint _e62 = bad_1;
+                uint _e64 = s_2;
+                uint _e65 = div_u32_(_e64, per_pass);
+                pass_done(index_1, _e61, _e62, (tile_2.frame + _e65) - 1u, frame, ray_count, counters, accum, _buffer_sizes);
+                sum_1 = metal::float3(0.0);
+                bad_1 = 0u;
+            }
+            uint _e72 = s_2;
+            if (_e72 >= count_2) {
+                break;
+            }
+            uint _e74 = s_2;
+            Ray _e76 = sample_camera_ray(pixel_5, first_1 + _e74, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+            path = PathState {_e76, metal::float3(1.0), metal::float3(0.0), true};
         }
-        loop_init_3 = false;
-        uint _e13 = s_3;
-        if (_e13 >= end_1) {
-            break;
-        }
-        uint _e18 = s_3;
-        uint sample_4 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
-        rng_seed(pixel_4, sample_4, frame_5.seed, scratch, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-        ray_19 = _e23;
-        ray_19.depth = 0u;
-        ray_19.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_19.origin;
-        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-        ray_19.medium = _e33;
-        Ray _e34 = ray_19;
-        metal::float3 _e35 = trace(_e34, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-        metal::bool3 _e36 = is_finite_vec3f(_e35);
-        if (metal::all(_e36)) {
-            metal::float3 _e38 = sum;
-            sum = _e38 + _e35;
-        } else {
-            metal::float3 _e40 = sum;
-            metal::float3 _e41 = finite_or_zero(_e35);
-            sum = _e40 + _e41;
-            uint _e43 = bad;
-            bad = _e43 + 1u;
-        }
-    }
-    uint _e50 = ray_count;
-    metal::atomic_fetch_add_explicit(&counters[1], _e50, metal::memory_order_relaxed);
-    metal::float3 _e59 = sum;
-    metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if (tile_2.frame == 0u) {
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e62;
-    } else {
-        metal::float4 _e69 = accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x];
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e69 + _e62;
-    }
-    if (_e63 > 0u) {
-        metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
     }
     return;
 }
@@ -1969,9 +1888,9 @@ void render_invocation(
     metal::uint2 id_1,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -2002,7 +1921,7 @@ struct renderInput {
   metal::uint3 gid [[thread_position_in_grid]]
 , constant TileParams& tile [[buffer(1)]]
 , constant FrameUniforms& frame [[buffer(0)]]
-, device type_5 const& params [[buffer(6)]]
+, device type_6 const& params [[buffer(6)]]
 , device type_9 const& instances [[buffer(3)]]
 , device type_10 const& nodes [[buffer(2)]]
 , device type_11 const& triangles [[buffer(4)]]
@@ -2011,7 +1930,7 @@ struct renderInput {
 , device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
-    type_3 scratch = {};
+    type_5 scratch = {};
     uint rng_state = {};
     uint F32_INF = 2139095040u;
     type_13 traversal_stack = {};

@@ -21,6 +21,7 @@ struct FrameUniforms {
     background_type: u32,
     background_offset: u32,
     path_slots: u32,
+    passes_per_dispatch: u32,
 }
 
 struct Ray {
@@ -31,6 +32,13 @@ struct Ray {
     depth: u32,
     kind: u32,
     medium: u32,
+}
+
+struct PathState {
+    ray: Ray,
+    beta: vec3<f32>,
+    radiance: vec3<f32>,
+    live: bool,
 }
 
 struct Pinhole {
@@ -98,15 +106,15 @@ struct Triangle {
     v2_: vec3<f32>,
 }
 
+struct PathDiffuse {
+    albedo: vec3<f32>,
+    roulette_depth: u32,
+}
+
 struct Emissive {
     color: vec3<f32>,
     intensity: f32,
     two_sided: u32,
-}
-
-struct PathDiffuse {
-    albedo: vec3<f32>,
-    roulette_depth: u32,
 }
 
 struct LightSample {
@@ -123,13 +131,6 @@ struct QuadLight {
     color: vec3<f32>,
     intensity: f32,
     lamp: u32,
-}
-
-struct PathState {
-    ray: Ray,
-    beta: vec3<f32>,
-    radiance: vec3<f32>,
-    live: bool,
 }
 
 const WORKGROUP_WIDTH: u32 = 8u;
@@ -153,8 +154,11 @@ const POINT_ERROR: f32 = 0.0000019073486f;
 const GAMMA_1_: f32 = 0.00000005960465f;
 const GAMMA_6_: f32 = 0.0000003576281f;
 const GAMMA_4_: f32 = 0.00000023841864f;
-const HAS_SECONDARY_RAYS: bool = true;
 const HAS_BACKGROUND: bool = false;
+const FLAG_SECONDARY_RAYS: u32 = 2u;
+const MAX_DEPTH: u32 = 6u;
+const INV_PI: f32 = 0.31830987f;
+const MIS_BOUNCE_LENGTH: f32 = 3f;
 const SCRATCH_SHADOW_MODE: u32 = 14u;
 const SHADOW_ABOVE: u32 = 2u;
 const LIGHT_ENTRY_STRIDE: u32 = 2u;
@@ -162,11 +166,6 @@ const SHADOW_UNOCCLUDED: u32 = 1u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
 const SHADOW_TRACED: u32 = 0u;
-const INV_PI: f32 = 0.31830987f;
-const FLAG_MEDIUM: u32 = 4u;
-const FLAG_SECONDARY_RAYS: u32 = 2u;
-const MAX_DEPTH: u32 = 6u;
-const MIS_BOUNCE_LENGTH: f32 = 3f;
 const ROULETTE_DEPTH: u32 = 2u;
 const ROULETTE_THROUGHPUT: f32 = 0.5f;
 const RAY_SECONDARY: u32 = 1u;
@@ -408,8 +407,8 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_4 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_4 * tiny), (abs(d) < tiny));
+    let s_3 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_3 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
@@ -435,23 +434,23 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let _e18 = triangles[((slot * 3u) + 1u)];
     let b_4 = (_e18.xyz - r_1.origin);
     let _e28 = triangles[((slot * 3u) + 2u)];
-    let c_5 = (_e28.xyz - r_1.origin);
+    let c_4 = (_e28.xyz - r_1.origin);
     let ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
     let ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
     let bx = (b_4[min(r_1.kx, 2u)] - (r_1.shear.x * b_4[min(r_1.kz, 2u)]));
     let by = (b_4[min(r_1.ky, 2u)] - (r_1.shear.y * b_4[min(r_1.kz, 2u)]));
-    let cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
-    let cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
+    let cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
+    let cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
     let u_1 = ((cx * by) - (cy * bx));
     let v_2 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
     let outside = ((((u_1 < 0f) || (v_2 < 0f)) || (w < 0f)) && (((u_1 > 0f) || (v_2 > 0f)) || (w > 0f)));
     let det = ((u_1 + v_2) + w);
     let rcp = (1f / det);
-    let t_3 = ((((u_1 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
-    let hit_7 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_3 >= tmin)) && (t_3 <= tmax_1));
+    let t = ((((u_1 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    let hit_7 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t >= tmin)) && (t <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_3, (v_2 * rcp), (w * rcp)), hit_7);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t, (v_2 * rcp), (w * rcp)), hit_7);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -547,10 +546,10 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
                     let _e58 = triangles[((prim * 3u) + 1u)];
                     let tag = bitcast<u32>(_e58.w);
                     let owner = select(slot_1, ((inst_2.object + tag) - 1u), (tag != 0u));
-                    let c_6 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
-                    let _e73 = accept(inst_2, world_ray, c_6);
+                    let c_5 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
+                    let _e73 = accept(inst_2, world_ray, c_5);
                     if _e73 {
-                        best = c_6;
+                        best = c_5;
                         if shadow {
                             let _e74 = best;
                             return _e74;
@@ -665,9 +664,9 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     let _e14 = n_1.z;
     if (_e14 < 0f) {
         let _e21 = n_1;
-        let s_5 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_4 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n_1;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_5);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_4);
         let _e37 = n_1.z;
         n_1 = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -782,12 +781,28 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     return _e62;
 }
 
+fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
+    var ray_7: Ray;
+
+    let frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed);
+    let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    let _e15 = ray_7.origin;
+    let _e17 = medium_at(_e15, NO_HIT);
+    ray_7.medium = _e17;
+    let _e18 = ray_7;
+    return _e18;
+}
+
 fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     let _e5 = node_point(header.min, header.max, vec3(65535u));
     return _e5;
 }
 
-fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -796,21 +811,21 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_7.tmax);
+    let _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
-    let frame_2 = frame;
-    if (frame_2.instance_count == 0u) {
+    let frame_3 = frame;
+    if (frame_3.instance_count == 0u) {
         let _e14 = best_2;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_7.dir);
-    let base_2 = frame_2.tlas_root;
+    let _e16 = safe_inverse(ray_8.dir);
+    let base_2 = frame_3.tlas_root;
     let header_2 = nodes[base_2];
     let origin_5 = header_2.min;
     let scale_3 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
+    let _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
@@ -825,7 +840,7 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e52 = child_1;
                 let _e55 = best_2;
-                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_7, _e55, shadow_2);
+                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_8, _e55, shadow_2);
                 best_2 = _e56;
                 let _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -837,7 +852,7 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
             let _e63 = child_1;
             let n_9 = nodes[(base_2 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_9, origin_5, scale_3, ray_7, _e16, _e69);
+            let _e70 = children_entry(n_9, origin_5, scale_3, ray_8, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
@@ -884,46 +899,106 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
     return _e120;
 }
 
-fn dispatch_miss(type_id_1: u32, offset_2: u32, ray_8: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_1: u32, offset_2: u32, ray_9: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn miss(ray_9: Ray) -> vec3<f32> {
+fn miss(ray_10: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
-    let frame_3 = frame;
-    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_9);
+    let frame_4 = frame;
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_10);
     return _e9;
 }
 
-fn load_Emissive(offset_3: u32) -> Emissive {
+fn load_PathDiffuse(offset_3: u32) -> PathDiffuse {
     let _e5 = params[(offset_3 + 0u)];
     let _e11 = params[(offset_3 + 1u)];
     let _e17 = params[(offset_3 + 2u)];
     let _e24 = params[(offset_3 + 3u)];
-    let _e30 = params[(offset_3 + 4u)];
+    return PathDiffuse(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), _e24);
+}
+
+fn orthonormal_basis(n_3: vec3<f32>) -> mat3x3<f32> {
+    let sign_ = select(1f, -1f, ((bitcast<u32>(n_3.z) & 2147483648u) != 0u));
+    let a_6 = (-1f / (sign_ + n_3.z));
+    let b_6 = ((n_3.x * n_3.y) * a_6);
+    let _e16 = (sign_ * n_3.x);
+    return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_3.x) * a_6)), (sign_ * b_6), -(_e16)), vec3<f32>(b_6, (sign_ + ((n_3.y * n_3.y) * a_6)), -(n_3.y)), n_3);
+}
+
+fn sample_cosine_hemisphere(n_4: vec3<f32>, u: vec2<f32>) -> vec3<f32> {
+    let r_3 = sqrt(u.x);
+    let phi = (6.2831855f * u.y);
+    let local = vec3<f32>((r_3 * cos(phi)), (r_3 * sin(phi)), sqrt(max((1f - u.x), 0f)));
+    let _e17 = orthonormal_basis(n_4);
+    return (_e17 * local);
+}
+
+fn mis_bounce_dir(dir: vec3<f32>, pdf: f32) -> vec3<f32> {
+    let x_5 = min((log((1f + max(pdf, 0f))) * (1f / 90f)), 0.999f);
+    return (dir * vec3((MIS_BOUNCE_LENGTH + x_5)));
+}
+
+fn rt_spawn(dir_1: vec3<f32>, weight: vec3<f32>) {
+    let _e3 = spawn_count;
+    if (_e3 < 1u) {
+        spawn_dirs[_e3] = dir_1;
+        spawn_weights[_e3] = weight;
+        spawn_count = (_e3 + 1u);
+    }
+}
+
+fn path_diffuse_rays(m: PathDiffuse, ray_11: Ray, hit_1: Hit) {
+    var weight_1: vec3<f32>;
+
+    let ng = select(-(hit_1.geometric_normal), hit_1.geometric_normal, hit_1.front_face);
+    let n_10 = faceForward(hit_1.normal, -(ng), hit_1.normal);
+    let _e12 = rand2_next();
+    let _e13 = sample_cosine_hemisphere(n_10, _e12);
+    weight_1 = m.albedo;
+    if (ray_11.depth >= m.roulette_depth) {
+        let q_3 = saturate(max(m.albedo.x, max(m.albedo.y, m.albedo.z)));
+        let _e28 = rand_next();
+        if (_e28 >= q_3) {
+            return;
+        }
+        weight_1 = (m.albedo / vec3(q_3));
+    }
+    if (dot(_e13, ng) > 0f) {
+        let _e41 = mis_bounce_dir(_e13, (max(dot(n_10, _e13), 0f) * INV_PI));
+        let _e42 = weight_1;
+        rt_spawn(_e41, _e42);
+    }
+    return;
+}
+
+fn dispatch_secondary_rays(type_id_2: u32, offset_4: u32, ray_12: Ray, hit_2: Hit) {
+    let _e3 = load_PathDiffuse(offset_4);
+    path_diffuse_rays(_e3, ray_12, hit_2);
+    return;
+}
+
+fn load_Emissive(offset_5: u32) -> Emissive {
+    let _e5 = params[(offset_5 + 0u)];
+    let _e11 = params[(offset_5 + 1u)];
+    let _e17 = params[(offset_5 + 2u)];
+    let _e24 = params[(offset_5 + 3u)];
+    let _e30 = params[(offset_5 + 4u)];
     return Emissive(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), bitcast<f32>(_e24), _e30);
 }
 
-fn after_nee_bounce(ray_10: Ray) -> bool {
-    return (dot(ray_10.dir, ray_10.dir) > 2f);
+fn after_nee_bounce(ray_13: Ray) -> bool {
+    return (dot(ray_13.dir, ray_13.dir) > 2f);
 }
 
-fn emissive_shade(m: Emissive, ray_11: Ray, hit_1: Hit) -> vec3<f32> {
-    let _e3 = after_nee_bounce(ray_11);
-    if (_e3 || (!(hit_1.front_face) && (m.two_sided == 0u))) {
+fn emissive_shade(m_1: Emissive, ray_14: Ray, hit_3: Hit) -> vec3<f32> {
+    let _e3 = after_nee_bounce(ray_14);
+    if (_e3 || (!(hit_3.front_face) && (m_1.two_sided == 0u))) {
         return vec3(0f);
     }
-    return (m.color * vec3(m.intensity));
-}
-
-fn load_PathDiffuse(offset_4: u32) -> PathDiffuse {
-    let _e5 = params[(offset_4 + 0u)];
-    let _e11 = params[(offset_4 + 1u)];
-    let _e17 = params[(offset_4 + 2u)];
-    let _e24 = params[(offset_4 + 3u)];
-    return PathDiffuse(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), _e24);
+    return (m_1.color * vec3(m_1.intensity));
 }
 
 fn light_count_query() -> u32 {
@@ -931,30 +1006,30 @@ fn light_count_query() -> u32 {
     return _e1.light_count;
 }
 
-fn load_QuadLight(offset_5: u32) -> QuadLight {
-    let _e5 = params[(offset_5 + 0u)];
-    let _e11 = params[(offset_5 + 1u)];
-    let _e17 = params[(offset_5 + 2u)];
-    let _e24 = params[(offset_5 + 4u)];
-    let _e30 = params[(offset_5 + 5u)];
-    let _e36 = params[(offset_5 + 6u)];
-    let _e43 = params[(offset_5 + 8u)];
-    let _e49 = params[(offset_5 + 9u)];
-    let _e55 = params[(offset_5 + 10u)];
-    let _e62 = params[(offset_5 + 12u)];
-    let _e68 = params[(offset_5 + 13u)];
-    let _e74 = params[(offset_5 + 14u)];
-    let _e81 = params[(offset_5 + 15u)];
-    let _e87 = params[(offset_5 + 16u)];
+fn load_QuadLight(offset_6: u32) -> QuadLight {
+    let _e5 = params[(offset_6 + 0u)];
+    let _e11 = params[(offset_6 + 1u)];
+    let _e17 = params[(offset_6 + 2u)];
+    let _e24 = params[(offset_6 + 4u)];
+    let _e30 = params[(offset_6 + 5u)];
+    let _e36 = params[(offset_6 + 6u)];
+    let _e43 = params[(offset_6 + 8u)];
+    let _e49 = params[(offset_6 + 9u)];
+    let _e55 = params[(offset_6 + 10u)];
+    let _e62 = params[(offset_6 + 12u)];
+    let _e68 = params[(offset_6 + 13u)];
+    let _e74 = params[(offset_6 + 14u)];
+    let _e81 = params[(offset_6 + 15u)];
+    let _e87 = params[(offset_6 + 16u)];
     return QuadLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)), vec3<f32>(bitcast<f32>(_e62), bitcast<f32>(_e68), bitcast<f32>(_e74)), bitcast<f32>(_e81), _e87);
 }
 
-fn shadow_preset(normal: vec3<f32>, dir: vec3<f32>) -> f32 {
+fn shadow_preset(normal: vec3<f32>, dir_2: vec3<f32>) -> f32 {
     let mode = scratch[min(SCRATCH_SHADOW_MODE, 14u)];
     if (mode == SHADOW_UNOCCLUDED) {
         return 1f;
     }
-    if ((mode == SHADOW_ABOVE) && !((dot(dir, normal) > 0f))) {
+    if ((mode == SHADOW_ABOVE) && !((dot(dir_2, normal) > 0f))) {
         return 0f;
     }
     return -1f;
@@ -969,61 +1044,61 @@ fn step_toward(x_3: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
     return select(x_3, moved, !((s == vec3(0f))));
 }
 
-fn offset_origin(p_5: vec3<f32>, n_3: vec3<f32>, error: f32) -> vec3<f32> {
-    let d_4 = ((2f * error) * ((abs(n_3.x) + abs(n_3.y)) + abs(n_3.z)));
-    let offset_10 = (n_3 * vec3(d_4));
-    let _e17 = step_toward((p_5 + offset_10), offset_10);
+fn offset_origin(p_5: vec3<f32>, n_5: vec3<f32>, error: f32) -> vec3<f32> {
+    let d_4 = ((2f * error) * ((abs(n_5.x) + abs(n_5.y)) + abs(n_5.z)));
+    let offset_9 = (n_5 * vec3(d_4));
+    let _e17 = step_toward((p_5 + offset_9), offset_9);
     return _e17;
 }
 
-fn shadow_ray(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist: f32) -> Ray {
-    var n_4: vec3<f32>;
+fn shadow_ray(position: vec3<f32>, normal_1: vec3<f32>, dir_3: vec3<f32>, dist: f32) -> Ray {
+    var n_6: vec3<f32>;
     var tmax_4: f32;
 
-    n_4 = normal_1;
-    let _e5 = n_4;
-    if (dot(dir_1, _e5) < 0f) {
-        let _e9 = n_4;
-        n_4 = -(_e9);
+    n_6 = normal_1;
+    let _e5 = n_6;
+    if (dot(dir_3, _e5) < 0f) {
+        let _e9 = n_6;
+        n_6 = -(_e9);
     }
-    let a_6 = abs(position);
+    let a_7 = abs(position);
     let _e13 = hit_error;
-    let error_3 = max(_e13, (GAMMA_4_ * max(max(a_6.x, a_6.y), a_6.z)));
-    let _e22 = n_4;
+    let error_3 = max(_e13, (GAMMA_4_ * max(max(a_7.x, a_7.y), a_7.z)));
+    let _e22 = n_6;
     let _e23 = offset_origin(position, _e22, error_3);
     let _e25 = F32_INF;
     tmax_4 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
     if (dist < bitcast<f32>(_e29)) {
-        let light = (position + (dir_1 * vec3(dist)));
-        let dd_1 = dot(dir_1, dir_1);
-        let along_1 = (dot((light - _e23), dir_1) / dd_1);
-        let l_2 = (abs(position) + abs((dir_1 * vec3(dist))));
+        let light = (position + (dir_3 * vec3(dist)));
+        let dd_1 = dot(dir_3, dir_3);
+        let along_1 = (dot((light - _e23), dir_3) / dd_1);
+        let l_2 = (abs(position) + abs((dir_3 * vec3(dist))));
         tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     let _e59 = tmax_4;
-    return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0f, dir_3, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-fn shadow_query(position_1: vec3<f32>, normal_2: vec3<f32>, dir_2: vec3<f32>, dist_1: f32) -> f32 {
-    let _e4 = shadow_preset(normal_2, dir_2);
+fn shadow_query(position_1: vec3<f32>, normal_2: vec3<f32>, dir_4: vec3<f32>, dist_1: f32) -> f32 {
+    let _e4 = shadow_preset(normal_2, dir_4);
     if (_e4 >= 0f) {
         return _e4;
     }
-    let _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    let _e7 = shadow_ray(position_1, normal_2, dir_4, dist_1);
     let _e9 = intersect_scene(_e7, true);
     return select(1f, 0f, (_e9.slot != NO_HIT));
 }
 
 fn quad_light(l: QuadLight, position_2: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
-    let c_7 = cross(l.edge_u, l.edge_v);
-    let area = length(c_7);
+    let c_6 = cross(l.edge_u, l.edge_v);
+    let area = length(c_6);
     let _e7 = rand2_next();
     let to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_2);
     let dist2_ = dot(to_light, to_light);
     let dist_2 = sqrt(dist2_);
     let dir_8 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
-    let cos_light = (-(dot(dir_8, c_7)) / max(area, 0.000000000000000000000000000001f));
+    let cos_light = (-(dot(dir_8, c_6)) / max(area, 0.000000000000000000000000000001f));
     if (!((cos_light > 0f)) || !((dist2_ > 0f))) {
         return LightSample(dir_8, dist_2, vec3(0f), 0f);
     }
@@ -1033,18 +1108,18 @@ fn quad_light(l: QuadLight, position_2: vec3<f32>, normal_3: vec3<f32>) -> Light
     return LightSample(dir_8, dist_2, ((l.color * vec3(strength)) * vec3(_e42)), pdf_1);
 }
 
-fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
-    let _e3 = load_QuadLight(offset_6);
+fn dispatch_light(type_id_3: u32, offset_7: u32, position_3: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
+    let _e3 = load_QuadLight(offset_7);
     let _e4 = quad_light(_e3, position_3, normal_4);
     return _e4;
 }
 
 fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
-    let frame_4 = frame;
-    if (i_2 >= frame_4.light_count) {
+    let frame_5 = frame;
+    if (i_2 >= frame_5.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
+    let entry = (frame_5.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     let _e22 = params[entry];
     let _e27 = params[(entry + 1u)];
     let _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
@@ -1062,13 +1137,13 @@ fn mis_weight(p_6: f32, other: f32) -> f32 {
     if !((p_6 > 0f)) {
         return 0f;
     }
-    let r_3 = (max(other, 0f) / p_6);
-    if !((r_3 < 1000000000000000000f)) {
+    let r_4 = (max(other, 0f) / p_6);
+    if !((r_4 < 1000000000000000000f)) {
         let _e15 = F32_INF;
         let _e19 = F32_INF;
         return select(0f, 1f, ((p_6 == bitcast<f32>(_e15)) && (other < bitcast<f32>(_e19))));
     }
-    return (1f / (1f + (r_3 * r_3)));
+    return (1f / (1f + (r_4 * r_4)));
 }
 
 fn mis_light_weight(l_1: LightSample, bsdf_pdf: f32) -> f32 {
@@ -1079,12 +1154,12 @@ fn mis_light_weight(l_1: LightSample, bsdf_pdf: f32) -> f32 {
     return _e8;
 }
 
-fn path_diffuse_shade(m_1: PathDiffuse, ray_12: Ray, hit_2: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn path_diffuse_shade(m_2: PathDiffuse, ray_15: Ray, hit_4: Hit, secondary: vec3<f32>) -> vec3<f32> {
     var direct: vec3<f32>;
     var i_4: u32;
 
-    let n_10 = faceForward(hit_2.normal, ray_12.dir, hit_2.geometric_normal);
-    let ng = faceForward(hit_2.geometric_normal, ray_12.dir, hit_2.geometric_normal);
+    let n_11 = faceForward(hit_4.normal, ray_15.dir, hit_4.geometric_normal);
+    let ng_1 = faceForward(hit_4.geometric_normal, ray_15.dir, hit_4.geometric_normal);
     direct = vec3(0f);
     let _e16 = light_count_query();
     i_4 = 0u;
@@ -1094,122 +1169,36 @@ fn path_diffuse_shade(m_1: PathDiffuse, ray_12: Ray, hit_2: Hit, secondary: vec3
             break;
         }
         let _e20 = i_4;
-        let _e22 = sample_light_above_query(_e20, hit_2.position, ng);
-        let c_8 = max(dot(n_10, _e22.dir), 0f);
+        let _e22 = sample_light_above_query(_e20, hit_4.position, ng_1);
+        let c_7 = max(dot(n_11, _e22.dir), 0f);
         let _e27 = direct;
-        let _e31 = mis_light_weight(_e22, (c_8 * INV_PI));
-        direct = (_e27 + (_e22.radiance * vec3((c_8 * _e31))));
+        let _e31 = mis_light_weight(_e22, (c_7 * INV_PI));
+        direct = (_e27 + (_e22.radiance * vec3((c_7 * _e31))));
         continuing {
             let _e36 = i_4;
             i_4 = (_e36 + 1u);
         }
     }
     let _e43 = direct;
-    return (((m_1.albedo * vec3(INV_PI)) * _e43) + secondary);
+    return (((m_2.albedo * vec3(INV_PI)) * _e43) + secondary);
 }
 
-fn dispatch_closest_hit(type_id_3: u32, offset_7: u32, ray_13: Ray, hit_3: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
-    switch type_id_3 {
+fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_16: Ray, hit_5: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+    switch type_id_4 {
         case 0u: {
-            let _e5 = load_Emissive(offset_7);
-            let _e6 = emissive_shade(_e5, ray_13, hit_3);
+            let _e5 = load_Emissive(offset_8);
+            let _e6 = emissive_shade(_e5, ray_16, hit_5);
             return _e6;
         }
         case 1u: {
-            let _e7 = load_PathDiffuse(offset_7);
-            let _e8 = path_diffuse_shade(_e7, ray_13, hit_3, secondary_1);
+            let _e7 = load_PathDiffuse(offset_8);
+            let _e8 = path_diffuse_shade(_e7, ray_16, hit_5, secondary_1);
             return _e8;
         }
         default: {
         }
     }
     return vec3<f32>();
-}
-
-fn shade_direct(ray_14: Ray, c_2: Candidate) -> vec3<f32> {
-    let inst_8 = instances[c_2.slot];
-    let _e6 = finish_hit(ray_14, c_2);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, vec3(0f));
-    return _e11;
-}
-
-fn dispatch_medium(type_id_4: u32, offset_8: u32, ray_15: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
-    return vec3<f32>();
-}
-
-fn through_medium(ray_16: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
-    if !(HAS_MEDIA) {
-        return radiance_1;
-    }
-    if (ray_16.medium == 0u) {
-        return radiance_1;
-    }
-    let inst_9 = instances[(ray_16.medium - 1u)];
-    if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
-        return radiance_1;
-    }
-    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_16, t_1, radiance_1);
-    return _e21;
-}
-
-fn orthonormal_basis(n_5: vec3<f32>) -> mat3x3<f32> {
-    let sign_ = select(1f, -1f, ((bitcast<u32>(n_5.z) & 2147483648u) != 0u));
-    let a_7 = (-1f / (sign_ + n_5.z));
-    let b_6 = ((n_5.x * n_5.y) * a_7);
-    let _e16 = (sign_ * n_5.x);
-    return mat3x3<f32>(vec3<f32>((1f + ((_e16 * n_5.x) * a_7)), (sign_ * b_6), -(_e16)), vec3<f32>(b_6, (sign_ + ((n_5.y * n_5.y) * a_7)), -(n_5.y)), n_5);
-}
-
-fn sample_cosine_hemisphere(n_6: vec3<f32>, u: vec2<f32>) -> vec3<f32> {
-    let r_4 = sqrt(u.x);
-    let phi = (6.2831855f * u.y);
-    let local = vec3<f32>((r_4 * cos(phi)), (r_4 * sin(phi)), sqrt(max((1f - u.x), 0f)));
-    let _e17 = orthonormal_basis(n_6);
-    return (_e17 * local);
-}
-
-fn mis_bounce_dir(dir_3: vec3<f32>, pdf: f32) -> vec3<f32> {
-    let x_5 = min((log((1f + max(pdf, 0f))) * (1f / 90f)), 0.999f);
-    return (dir_3 * vec3((MIS_BOUNCE_LENGTH + x_5)));
-}
-
-fn rt_spawn(dir_4: vec3<f32>, weight: vec3<f32>) {
-    let _e3 = spawn_count;
-    if (_e3 < 1u) {
-        spawn_dirs[_e3] = dir_4;
-        spawn_weights[_e3] = weight;
-        spawn_count = (_e3 + 1u);
-    }
-}
-
-fn path_diffuse_rays(m_2: PathDiffuse, ray_17: Ray, hit_4: Hit) {
-    var weight_1: vec3<f32>;
-
-    let ng_1 = select(-(hit_4.geometric_normal), hit_4.geometric_normal, hit_4.front_face);
-    let n_11 = faceForward(hit_4.normal, -(ng_1), hit_4.normal);
-    let _e12 = rand2_next();
-    let _e13 = sample_cosine_hemisphere(n_11, _e12);
-    weight_1 = m_2.albedo;
-    if (ray_17.depth >= m_2.roulette_depth) {
-        let q_3 = saturate(max(m_2.albedo.x, max(m_2.albedo.y, m_2.albedo.z)));
-        let _e28 = rand_next();
-        if (_e28 >= q_3) {
-            return;
-        }
-        weight_1 = (m_2.albedo / vec3(q_3));
-    }
-    if (dot(_e13, ng_1) > 0f) {
-        let _e41 = mis_bounce_dir(_e13, (max(dot(n_11, _e13), 0f) * INV_PI));
-        let _e42 = weight_1;
-        rt_spawn(_e41, _e42);
-    }
-    return;
-}
-
-fn dispatch_secondary_rays(type_id_5: u32, offset_9: u32, ray_18: Ray, hit_5: Hit) {
-    let _e3 = load_PathDiffuse(offset_9);
-    path_diffuse_rays(_e3, ray_18, hit_5);
-    return;
 }
 
 fn spawn_origin_at(position_6: vec3<f32>, normal_7: vec3<f32>, error_1: f32, dir_5: vec3<f32>) -> vec3<f32> {
@@ -1231,32 +1220,32 @@ fn spawn_origin(hit_6: Hit, error_2: f32, dir_6: vec3<f32>) -> vec3<f32> {
     return _e5;
 }
 
-fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
+fn path_step(s_1: PathState, c_2: Candidate) -> PathState {
     var out: PathState;
     var spawned: bool;
     var dir_7: vec3<f32>;
     var weight_2: vec3<f32>;
     var beta: vec3<f32>;
 
-    let ray_20 = s_1.ray;
+    let ray_17 = s_1.ray;
     out = s_1;
     out.live = false;
-    if (c_3.slot == NO_HIT) {
+    if (c_2.slot == NO_HIT) {
         hit_error = 0f;
-        let _e14 = miss(ray_20);
+        let _e14 = miss(ray_17);
         out.radiance = (s_1.radiance + (s_1.beta * _e14));
         let _e17 = out;
         return _e17;
     }
-    let inst_10 = instances[c_3.slot];
-    let _e22 = finish_hit(ray_20, c_3);
+    let inst_8 = instances[c_2.slot];
+    let _e22 = finish_hit(ray_17, c_2);
     let error_4 = hit_error;
     spawned = false;
     dir_7 = vec3(0f);
     weight_2 = vec3(0f);
-    if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_20.depth < MAX_DEPTH)) {
+    if (((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_17.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_20, _e22);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_17, _e22);
         let _e47 = spawn_count;
         if (min(_e47, 1u) > 0u) {
             spawned = true;
@@ -1266,7 +1255,7 @@ fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
             weight_2 = _e60;
         }
     }
-    let _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_20, _e22, vec3(0f));
+    let _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e22, vec3(0f));
     out.radiance = (s_1.radiance + (s_1.beta * _e68));
     let _e71 = spawned;
     if !(_e71) {
@@ -1283,7 +1272,7 @@ fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
         let _e89 = out;
         return _e89;
     }
-    if (((ROULETTE_DEPTH > 0u) && ((ray_20.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT)) {
+    if (((ROULETTE_DEPTH > 0u) && ((ray_17.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT)) {
         let survive = (q_4 / ROULETTE_THROUGHPUT);
         let _e104 = rand_next();
         if (_e104 >= survive) {
@@ -1299,125 +1288,97 @@ fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
     let _e114 = spawn_origin(_e22, error_4, _e113);
     let _e116 = dir_7;
     let _e118 = F32_INF;
-    out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_20.depth + 1u), RAY_SECONDARY, ray_20.medium);
+    out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_17.depth + 1u), RAY_SECONDARY, ray_17.medium);
     out.live = true;
     let _e128 = out;
     return _e128;
-}
-
-fn trace_path(camera_ray: Ray) -> vec3<f32> {
-    var s_2: PathState;
-
-    s_2 = PathState(camera_ray, vec3(1f), vec3(0f), true);
-    loop {
-        let _e8 = s_2;
-        let _e10 = s_2.ray;
-        let _e12 = intersect_scene(_e10, false);
-        let _e13 = path_step(_e8, _e12);
-        s_2 = _e13;
-        let _e15 = s_2.live;
-        if !(_e15) {
-            let _e18 = s_2.radiance;
-            return _e18;
-        }
-    }
-    return vec3<f32>();
-}
-
-fn trace(camera_ray_1: Ray) -> vec3<f32> {
-    var radiance_2: vec3<f32>;
-    var t_2: f32;
-
-    if !(HAS_SECONDARY_RAYS) {
-        let _e4 = intersect_scene(camera_ray_1, false);
-        radiance_2 = vec3(0f);
-        let _e9 = F32_INF;
-        t_2 = bitcast<f32>(_e9);
-        if (_e4.slot == NO_HIT) {
-            hit_error = 0f;
-            let _e17 = miss(camera_ray_1);
-            radiance_2 = _e17;
-        } else {
-            let _e18 = shade_direct(camera_ray_1, _e4);
-            radiance_2 = _e18;
-            t_2 = _e4.t;
-        }
-        let _e20 = t_2;
-        let _e21 = radiance_2;
-        let _e22 = through_medium(camera_ray_1, _e20, _e21);
-        return _e22;
-    }
-    let _e23 = trace_path(camera_ray_1);
-    return _e23;
 }
 
 fn is_finite_vec3f(x_4: vec3<f32>) -> vec3<bool> {
     return ((bitcast<vec3<u32>>(x_4) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
-fn finite_or_zero(c_4: vec3<f32>) -> vec3<f32> {
-    let _e3 = is_finite_vec3f(c_4);
-    return select(vec3(0f), c_4, _e3);
+fn finite_or_zero(c_3: vec3<f32>) -> vec3<f32> {
+    let _e3 = is_finite_vec3f(c_3);
+    return select(vec3(0f), c_3, _e3);
 }
 
-fn render_pixel(pixel_4: vec2<u32>) {
-    var sum: vec3<f32>;
-    var bad: u32;
-    var s_3: u32;
-    var ray_19: Ray;
-
-    let frame_5 = frame;
-    let tile_2 = tile;
-    sum = vec3(0f);
-    bad = 0u;
-    let end_1 = frame_5.samples_per_pass;
-    s_3 = 0u;
-    loop {
-        let _e13 = s_3;
-        if (_e13 >= end_1) {
-            break;
-        }
-        let _e18 = s_3;
-        let sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_4, sample_4, frame_5.seed);
-        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
-        ray_19 = _e23;
-        ray_19.depth = 0u;
-        ray_19.kind = RAY_CAMERA;
-        let _e31 = ray_19.origin;
-        let _e33 = medium_at(_e31, NO_HIT);
-        ray_19.medium = _e33;
-        let _e34 = ray_19;
-        let _e35 = trace(_e34);
-        let _e36 = is_finite_vec3f(_e35);
-        if all(_e36) {
-            let _e38 = sum;
-            sum = (_e38 + _e35);
-        } else {
-            let _e40 = sum;
-            let _e41 = finite_or_zero(_e35);
-            sum = (_e40 + _e41);
-            let _e43 = bad;
-            bad = (_e43 + 1u);
-        }
-        continuing {
-            let _e46 = s_3;
-            s_3 = (_e46 + 1u);
-        }
-    }
-    let _e50 = ray_count;
-    atomicAdd((&counters[1]), _e50);
-    let _e59 = sum;
-    let _e62 = vec4<f32>(_e59, f32(frame_5.samples_per_pass));
-    let _e63 = bad;
-    if (tile_2.frame == 0u) {
-        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
+fn pass_done(index: u32, sum: vec3<f32>, bad: u32, pass_: u32) {
+    let _e5 = ray_count;
+    atomicAdd((&counters[1]), _e5);
+    ray_count = 0u;
+    let _e10 = frame;
+    let _e13 = vec4<f32>(sum, f32(_e10.samples_per_pass));
+    if (pass_ == 0u) {
+        accum[index] = _e13;
     } else {
-        let _e69 = accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
-        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
+        let _e18 = accum[index];
+        accum[index] = (_e18 + _e13);
     }
-    if (_e63 > 0u) {
-        atomicAdd((&counters[0]), _e63);
+    if (bad > 0u) {
+        atomicAdd((&counters[0]), bad);
+    }
+    return;
+}
+
+fn render_pixel(pixel_5: vec2<u32>) {
+    var sum_1: vec3<f32>;
+    var bad_1: u32;
+    var s_2: u32;
+    var path: PathState;
+
+    let frame_6 = frame;
+    let tile_2 = tile;
+    let index_1 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
+    let per_pass = frame_6.samples_per_pass;
+    let first_1 = (tile_2.frame * per_pass);
+    let count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
+    sum_1 = vec3(0f);
+    bad_1 = 0u;
+    s_2 = 0u;
+    let _e25 = sample_camera_ray(pixel_5, first_1);
+    path = PathState(_e25, vec3(1f), vec3(0f), true);
+    loop {
+        let _e33 = path;
+        let _e35 = path.ray;
+        let _e37 = intersect_scene(_e35, false);
+        let _e38 = path_step(_e33, _e37);
+        path = _e38;
+        let _e40 = path.live;
+        if !(_e40) {
+            let c_8 = path.radiance;
+            let _e44 = is_finite_vec3f(c_8);
+            if all(_e44) {
+                let _e46 = sum_1;
+                sum_1 = (_e46 + c_8);
+            } else {
+                let _e48 = sum_1;
+                let _e49 = finite_or_zero(c_8);
+                sum_1 = (_e48 + _e49);
+                let _e51 = bad_1;
+                bad_1 = (_e51 + 1u);
+            }
+            let _e54 = s_2;
+            s_2 = (_e54 + 1u);
+            let _e57 = s_2;
+            let _e58 = rem_u32_(_e57, per_pass);
+            if (_e58 == 0u) {
+                let _e61 = sum_1;
+                let _e62 = bad_1;
+                let _e64 = s_2;
+                let _e65 = div_u32_(_e64, per_pass);
+                pass_done(index_1, _e61, _e62, ((tile_2.frame + _e65) - 1u));
+                sum_1 = vec3(0f);
+                bad_1 = 0u;
+            }
+            let _e72 = s_2;
+            if (_e72 >= count_2) {
+                break;
+            }
+            let _e74 = s_2;
+            let _e76 = sample_camera_ray(pixel_5, (first_1 + _e74));
+            path = PathState(_e76, vec3(1f), vec3(0f), true);
+        }
     }
     return;
 }

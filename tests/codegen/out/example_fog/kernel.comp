@@ -25,6 +25,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
+    uint passes_per_dispatch;
 };
 struct Ray {
     vec3 origin;
@@ -853,12 +854,27 @@ uint medium_at(vec3 p_4, uint exclude) {
     return _e62;
 }
 
+Ray sample_camera_ray(uvec2 pixel_4, uint sample_4) {
+    Ray ray_9 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    FrameUniforms frame_2 = _group_0_binding_0_cs;
+    rng_seed(pixel_4, sample_4, frame_2.seed);
+    Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
+    ray_9 = _e7;
+    ray_9.depth = 0u;
+    ray_9.kind = RAY_CAMERA;
+    vec3 _e15 = ray_9.origin;
+    uint _e17 = medium_at(_e15, NO_HIT);
+    ray_9.medium = _e17;
+    Ray _e18 = ray_9;
+    return _e18;
+}
+
 vec3 node_frame_hi(GpuNode header) {
     vec3 _e5 = node_point(header.min_, header.max_, uvec3(65535u));
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_9, bool shadow_2) {
+Candidate intersect_scene(Ray ray_10, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -866,21 +882,21 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_9.tmax);
+    Candidate _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = _group_0_binding_0_cs;
-    if ((frame_2.instance_count == 0u)) {
+    FrameUniforms frame_3 = _group_0_binding_0_cs;
+    if ((frame_3.instance_count == 0u)) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    vec3 _e16 = safe_inverse(ray_9.dir);
-    uint base_2 = frame_2.tlas_root;
+    vec3 _e16 = safe_inverse(ray_10.dir);
+    uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_2];
     vec3 origin_5 = header_2.min_;
     vec3 scale_3 = header_2.max_;
     vec3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
+    float _e28 = slab(origin_5, _e23, ray_10.origin, _e16, ray_10.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == uintBitsToFloat(_e30))) {
         Candidate _e33 = best_2;
@@ -895,7 +911,7 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_9, _e55, shadow_2);
+                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_10, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -907,7 +923,7 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
             uint _e63 = child_1;
             GpuNode n_7 = _group_0_binding_2_cs[(base_2 + _e63)];
             float _e69 = best_2.t;
-            vec2 _e70 = children_entry(n_7, origin_5, scale_3, ray_9, _e16, _e69);
+            vec2 _e70 = children_entry(n_7, origin_5, scale_3, ray_10, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -954,16 +970,16 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
     return _e120;
 }
 
-vec3 dispatch_miss(uint type_id_2, uint offset_4, Ray ray_10) {
+vec3 dispatch_miss(uint type_id_2, uint offset_4, Ray ray_11) {
     return vec3(0.0);
 }
 
-vec3 miss(Ray ray_11) {
+vec3 miss(Ray ray_12) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
-    FrameUniforms frame_3 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_11);
+    FrameUniforms frame_4 = _group_0_binding_0_cs;
+    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
     return _e9;
 }
 
@@ -972,7 +988,7 @@ void shading_medium(uint medium) {
     return;
 }
 
-vec3 fog_shade(Fog m_1, Ray ray_12, Hit hit_3, vec3 secondary) {
+vec3 fog_shade(Fog m_1, Ray ray_13, Hit hit_3, vec3 secondary) {
     return secondary;
 }
 
@@ -983,8 +999,8 @@ Lambert load_Lambert(uint offset_5) {
     return Lambert(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 shading_normal(Ray ray_13, Hit hit_4) {
-    vec3 ng = faceforward(hit_4.geometric_normal, ray_13.dir, hit_4.geometric_normal);
+vec3 shading_normal(Ray ray_14, Hit hit_4) {
+    vec3 ng = faceforward(hit_4.geometric_normal, ray_14.dir, hit_4.geometric_normal);
     return faceforward(hit_4.normal, -(ng), hit_4.normal);
 }
 
@@ -1061,7 +1077,7 @@ Ray shadow_ray(vec3 position, vec3 normal_1, vec3 dir_1, float dist) {
     return Ray(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-float shadow_transmittance(Ray ray_14, uint medium_1) {
+float shadow_transmittance(Ray ray_15, uint medium_1) {
     float depth = 0.0;
     scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
     scratch[min(SCRATCH_DEPTH, 14u)] = 0u;
@@ -1071,15 +1087,15 @@ float shadow_transmittance(Ray ray_14, uint medium_1) {
         if ((medium_1 != 0u)) {
             GpuInstance inst_8 = _group_0_binding_3_cs[(medium_1 - 1u)];
             if (((inst_8.flags & FLAG_ANY_HIT) != 0u)) {
-                Hit start = Hit(ray_14.origin, 0.0, -(ray_14.dir), -(ray_14.dir), vec2(0.0), true, inst_8.object, 0u);
+                Hit start = Hit(ray_15.origin, 0.0, -(ray_15.dir), -(ray_15.dir), vec2(0.0), true, inst_8.object, 0u);
                 scratch[min(SCRATCH_ABSORB, 14u)] = 1u;
                 scratch[min(SCRATCH_ABSORB_T, 14u)] = 0u;
-                bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start);
+                bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_15, start);
                 scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
             }
         }
     }
-    Candidate _e75 = intersect_scene(ray_14, true);
+    Candidate _e75 = intersect_scene(ray_15, true);
     if ((_e75.slot != NO_HIT)) {
         return 0.0;
     }
@@ -1090,11 +1106,11 @@ float shadow_transmittance(Ray ray_14, uint medium_1) {
     uint _e101 = scratch[min(SCRATCH_DENSITY_MAX, 14u)];
     if ((net_1 > (1e-6 * uintBitsToFloat(_e101)))) {
         uint _e107 = F32_INF;
-        if ((ray_14.tmax == uintBitsToFloat(_e107))) {
+        if ((ray_15.tmax == uintBitsToFloat(_e107))) {
             return 0.0;
         }
         float _e111 = depth;
-        depth = (_e111 + (net_1 * (ray_14.tmax * length(ray_14.dir))));
+        depth = (_e111 + (net_1 * (ray_15.tmax * length(ray_15.dir))));
     }
     float _e118 = depth;
     return exp(-(max(_e118, 0.0)));
@@ -1133,21 +1149,21 @@ LightSample dispatch_light(uint type_id_3, uint offset_7, vec3 position_3, vec3 
 }
 
 LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_5) {
-    FrameUniforms frame_4 = _group_0_binding_0_cs;
-    if ((i_2 >= frame_4.light_count)) {
+    FrameUniforms frame_5 = _group_0_binding_0_cs;
+    if ((i_2 >= frame_5.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
-    uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_5.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     uint _e22 = _group_0_binding_6_cs[entry];
     uint _e27 = _group_0_binding_6_cs[(entry + 1u)];
     LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     return _e28;
 }
 
-vec3 lambert_shade(Lambert m_2, Ray ray_15, Hit hit_5) {
+vec3 lambert_shade(Lambert m_2, Ray ray_16, Hit hit_5) {
     vec3 color = vec3(0.0);
     uint i_3 = 0u;
-    vec3 _e3 = shading_normal(ray_15, hit_5);
+    vec3 _e3 = shading_normal(ray_16, hit_5);
     color = vec3(0.0);
     uint _e8 = light_count_query();
     i_3 = 0u;
@@ -1171,16 +1187,16 @@ vec3 lambert_shade(Lambert m_2, Ray ray_15, Hit hit_5) {
     return _e33;
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_16, Hit hit_6, vec3 secondary_1) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_17, Hit hit_6, vec3 secondary_1) {
     switch(type_id_4) {
         case 0u: {
             Fog _e5 = load_Fog(offset_8);
-            vec3 _e6 = fog_shade(_e5, ray_16, hit_6, secondary_1);
+            vec3 _e6 = fog_shade(_e5, ray_17, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_8);
-            vec3 _e8 = lambert_shade(_e7, ray_16, hit_6);
+            vec3 _e8 = lambert_shade(_e7, ray_17, hit_6);
             return _e8;
         }
         default: {
@@ -1190,11 +1206,11 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_16, Hit hit_6, 
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_17, Candidate c_2) {
+vec3 shade_direct(Ray ray_18, Candidate c_2) {
     GpuInstance inst_9 = _group_0_binding_3_cs[c_2.slot];
-    Hit _e6 = finish_hit(ray_17, c_2);
-    shading_medium(ray_17.medium);
-    vec3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_17, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_18, c_2);
+    shading_medium(ray_18.medium);
+    vec3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_18, _e6, vec3(0.0));
     return _e12;
 }
 
@@ -1240,10 +1256,10 @@ vec3 fog_inscatter(Fog m_3, uint i_5, vec3 o, vec3 dir_3, float d_1, float trans
     return (_e97.radiance * vec3(((sigma_1 * e_2) / pdf)));
 }
 
-vec3 fog_medium(Fog m_4, Ray ray_18, float t, vec3 radiance) {
+vec3 fog_medium(Fog m_4, Ray ray_19, float t, vec3 radiance) {
     vec3 light = vec3(0.0);
     uint i_6 = 0u;
-    float len = length(ray_18.dir);
+    float len = length(ray_19.dir);
     if ((!((m_4.density > 0.0)) || !((len > 0.0)))) {
         return radiance;
     }
@@ -1265,32 +1281,32 @@ vec3 fog_medium(Fog m_4, Ray ray_18, float t, vec3 radiance) {
         }
         vec3 _e27 = light;
         uint _e28 = i_6;
-        vec3 _e33 = fog_inscatter(m_4, _e28, ray_18.origin, (ray_18.dir / vec3(len)), d_6, trans_1);
+        vec3 _e33 = fog_inscatter(m_4, _e28, ray_19.origin, (ray_19.dir / vec3(len)), d_6, trans_1);
         light = (_e27 + _e33);
     }
     vec3 _e46 = light;
     return ((radiance * vec3(trans_1)) + ((m_4.albedo * vec3((0.25 * INV_PI))) * _e46));
 }
 
-vec3 dispatch_medium(uint type_id_5, uint offset_9, Ray ray_19, float t_1, vec3 radiance_1) {
+vec3 dispatch_medium(uint type_id_5, uint offset_9, Ray ray_20, float t_1, vec3 radiance_1) {
     Fog _e4 = load_Fog(offset_9);
-    vec3 _e5 = fog_medium(_e4, ray_19, t_1, radiance_1);
+    vec3 _e5 = fog_medium(_e4, ray_20, t_1, radiance_1);
     return _e5;
 }
 
-vec3 through_medium(Ray ray_20, float t_2, vec3 radiance_2) {
+vec3 through_medium(Ray ray_21, float t_2, vec3 radiance_2) {
     if (!(HAS_MEDIA)) {
         return radiance_2;
     }
-    if ((ray_20.medium == 0u)) {
+    if ((ray_21.medium == 0u)) {
         return radiance_2;
     }
-    GpuInstance inst_10 = _group_0_binding_3_cs[(ray_20.medium - 1u)];
+    GpuInstance inst_10 = _group_0_binding_3_cs[(ray_21.medium - 1u)];
     if (((inst_10.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_2;
     }
-    shading_medium(ray_20.medium);
-    vec3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_20, t_2, radiance_2);
+    shading_medium(ray_21.medium);
+    vec3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_21, t_2, radiance_2);
     return _e22;
 }
 
@@ -1303,14 +1319,14 @@ void rt_spawn(vec3 dir_4, vec3 weight) {
     }
 }
 
-void fog_rays(Fog m_5, Ray ray_21, Hit hit_7) {
-    rt_spawn(ray_21.dir, vec3(1.0));
+void fog_rays(Fog m_5, Ray ray_22, Hit hit_7) {
+    rt_spawn(ray_22.dir, vec3(1.0));
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_22, Hit hit_8) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_10, Ray ray_23, Hit hit_8) {
     Fog _e3 = load_Fog(offset_10);
-    fog_rays(_e3, ray_22, hit_8);
+    fog_rays(_e3, ray_23, hit_8);
     return;
 }
 
@@ -1337,7 +1353,7 @@ vec3 trace(Ray camera_ray) {
     float t_3 = 0.0;
     Frame stack[3] = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     uint depth_1 = 0u;
-    Ray ray_23 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_24 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
@@ -1377,7 +1393,7 @@ vec3 trace(Ray camera_ray) {
     }
     stack = Frame[3](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[1](vec3(0.0)), vec3[1](vec3(0.0)), 0u, 0u));
     depth_1 = 0u;
-    ray_23 = camera_ray;
+    ray_24 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1393,10 +1409,10 @@ vec3 trace(Ray camera_ray) {
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_23;
+            Ray _e67 = ray_24;
             Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_23;
+            Ray _e70 = ray_24;
             s_ray = _e70;
             s_sum = vec3(0.0);
             fresh = true;
@@ -1573,7 +1589,7 @@ vec3 trace(Ray camera_ray) {
             vec3 _e372 = spawn_origin(hit_12, _e371, dir_8);
             uint _e375 = F32_INF;
             uint _e381 = medium_2;
-            ray_23 = Ray(_e372, 0.0, dir_8, uintBitsToFloat(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
+            ray_24 = Ray(_e372, 0.0, dir_8, uintBitsToFloat(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
         } else {
             Ray _e387 = stack[min(top_1, 2u)].ray;
             s_ray = _e387;
@@ -1602,65 +1618,73 @@ vec3 finite_or_zero(vec3 c_3) {
     return mix(vec3(0.0), c_3, _e3);
 }
 
-void render_pixel(uvec2 pixel_4) {
-    vec3 sum = vec3(0.0);
-    uint bad = 0u;
+void pass_done(uint index, vec3 sum, uint bad, uint pass) {
+    uint _e5 = ray_count;
+    atomicAdd(_group_0_binding_9_cs[1], _e5);
+    ray_count = 0u;
+    FrameUniforms _e10 = _group_0_binding_0_cs;
+    vec4 _e13 = vec4(sum, float(_e10.samples_per_pass));
+    if ((pass == 0u)) {
+        _group_0_binding_8_cs[index] = _e13;
+    } else {
+        vec4 _e18 = _group_0_binding_8_cs[index];
+        _group_0_binding_8_cs[index] = (_e18 + _e13);
+    }
+    if ((bad > 0u)) {
+        atomicAdd(_group_0_binding_9_cs[0], bad);
+    }
+    return;
+}
+
+void render_pixel(uvec2 pixel_5) {
+    vec3 sum_1 = vec3(0.0);
+    uint bad_1 = 0u;
     uint s_2 = 0u;
-    Ray ray_24 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
-    FrameUniforms frame_5 = _group_0_binding_0_cs;
+    FrameUniforms frame_6 = _group_0_binding_0_cs;
     TileParams tile_2 = _group_0_binding_1_cs;
-    sum = vec3(0.0);
-    bad = 0u;
-    uint end_1 = frame_5.samples_per_pass;
+    uint index_1 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_1 = (tile_2.frame * per_pass);
+    uint count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
+    sum_1 = vec3(0.0);
+    bad_1 = 0u;
     s_2 = 0u;
     bool loop_init_5 = true;
     while(true) {
         if (!loop_init_5) {
-            uint _e46 = s_2;
-            s_2 = (_e46 + 1u);
+            uint _e56 = s_2;
+            s_2 = (_e56 + 1u);
         }
         loop_init_5 = false;
-        uint _e13 = s_2;
-        if ((_e13 >= end_1)) {
+        uint _e25 = s_2;
+        if ((_e25 >= count_2)) {
             break;
         }
-        uint _e18 = s_2;
-        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_4, sample_4, frame_5.seed);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
-        ray_24 = _e23;
-        ray_24.depth = 0u;
-        ray_24.kind = RAY_CAMERA;
-        vec3 _e31 = ray_24.origin;
-        uint _e33 = medium_at(_e31, NO_HIT);
-        ray_24.medium = _e33;
-        Ray _e34 = ray_24;
-        vec3 _e35 = trace(_e34);
-        bvec3 _e36 = is_finite_vec3f(_e35);
-        if (all(_e36)) {
-            vec3 _e38 = sum;
-            sum = (_e38 + _e35);
+        uint _e27 = s_2;
+        Ray _e29 = sample_camera_ray(pixel_5, (first_1 + _e27));
+        vec3 _e30 = trace(_e29);
+        bvec3 _e31 = is_finite_vec3f(_e30);
+        if (all(_e31)) {
+            vec3 _e33 = sum_1;
+            sum_1 = (_e33 + _e30);
         } else {
-            vec3 _e40 = sum;
-            vec3 _e41 = finite_or_zero(_e35);
-            sum = (_e40 + _e41);
-            uint _e43 = bad;
-            bad = (_e43 + 1u);
+            vec3 _e35 = sum_1;
+            vec3 _e36 = finite_or_zero(_e30);
+            sum_1 = (_e35 + _e36);
+            uint _e38 = bad_1;
+            bad_1 = (_e38 + 1u);
         }
-    }
-    uint _e50 = ray_count;
-    atomicAdd(_group_0_binding_9_cs[1], _e50);
-    vec3 _e59 = sum;
-    vec4 _e62 = vec4(_e59, float(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if ((tile_2.frame == 0u)) {
-        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
-    } else {
-        vec4 _e69 = _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
-        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
-    }
-    if ((_e63 > 0u)) {
-        atomicAdd(_group_0_binding_9_cs[0], _e63);
+        uint _e41 = s_2;
+        uint _e44 = rem_u32_((_e41 + 1u), per_pass);
+        if ((_e44 == 0u)) {
+            vec3 _e47 = sum_1;
+            uint _e48 = bad_1;
+            uint _e50 = s_2;
+            uint _e51 = div_u32_(_e50, per_pass);
+            pass_done(index_1, _e47, _e48, (tile_2.frame + _e51));
+            sum_1 = vec3(0.0);
+            bad_1 = 0u;
+        }
     }
     return;
 }

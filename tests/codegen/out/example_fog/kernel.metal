@@ -36,9 +36,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
-};
-struct type_3 {
-    uint inner[15];
+    uint passes_per_dispatch;
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -49,6 +47,9 @@ struct Ray {
     uint kind;
     uint medium;
     char _pad7[4];
+};
+struct type_4 {
+    uint inner[15];
 };
 typedef uint type_5[1];
 struct Pinhole {
@@ -299,7 +300,7 @@ void rng_resume(
     uint sample,
     uint seed,
     uint state,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)] = sample;
@@ -315,7 +316,7 @@ void rng_seed(
     metal::uint2 pixel_1,
     uint sample_1,
     uint seed_1,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     rng_resume(pixel_1, sample_1, seed_1, 0u, scratch, rng_state);
@@ -401,7 +402,7 @@ uint sobol_second_reversed(
 }
 
 float rand_next(
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     uint x_2 = {};
@@ -424,7 +425,7 @@ float rand_next(
 }
 
 metal::float2 rand2_next(
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     float _e0 = rand_next(scratch, rng_state);
@@ -444,7 +445,7 @@ Ray pinhole_ray(
     uint sample_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -476,7 +477,7 @@ Ray dispatch_ray_generation(
     uint sample_3,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -722,7 +723,7 @@ bool is_finite_f32_(
 
 void absorb_query(
     float density,
-    thread type_3& scratch
+    thread type_4& scratch
 ) {
     float sigma = {};
     if (!(HAS_ABSORB)) {
@@ -759,7 +760,7 @@ bool fog_any_hit(
     Fog m,
     Ray ray_3,
     Hit hit_1,
-    thread type_3& scratch
+    thread type_4& scratch
 ) {
     absorb_query(m.density, scratch);
     return ray_3.kind != RAY_SHADOW;
@@ -770,7 +771,7 @@ bool dispatch_any_hit(
     uint offset_3,
     Ray ray_4,
     Hit hit_2,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -783,7 +784,7 @@ bool accept(
     GpuInstance inst_4,
     Ray ray_5,
     Candidate c_1,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     device type_9 const& instances,
     device type_11 const& triangles,
@@ -891,7 +892,7 @@ Candidate intersect_mesh(
     Ray ray_7,
     Candidate best_in,
     bool shadow,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1018,7 +1019,7 @@ Candidate intersect_object(
     Ray ray_8,
     Candidate best_1,
     bool shadow_1,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1046,7 +1047,7 @@ uint medium_at(
     metal::float3 p_4,
     uint exclude,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1106,6 +1107,37 @@ uint medium_at(
     return _e62;
 }
 
+Ray sample_camera_ray(
+    metal::uint2 pixel_4,
+    uint sample_4,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread type_4& scratch,
+    thread uint& rng_state,
+    device type_5 const& params,
+    thread uint& F32_INF,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread float& hit_error,
+    device type_13 const& attributes,
+    thread type_15& traversal_stack,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Ray ray_9 = {};
+    FrameUniforms frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
+    Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
+    ray_9 = _e7;
+    ray_9.depth = 0u;
+    ray_9.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_9.origin;
+    uint _e17 = medium_at(_e15, NO_HIT, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
+    ray_9.medium = _e17;
+    Ray _e18 = ray_9;
+    return _e18;
+}
+
 metal::float3 node_frame_hi(
     GpuNode header
 ) {
@@ -1114,10 +1146,10 @@ metal::float3 node_frame_hi(
 }
 
 Candidate intersect_scene(
-    Ray ray_9,
+    Ray ray_10,
     bool shadow_2,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1136,21 +1168,21 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_9.tmax);
+    Candidate _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = frame;
-    if (frame_2.instance_count == 0u) {
+    FrameUniforms frame_3 = frame;
+    if (frame_3.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_9.dir);
-    uint base_2 = frame_2.tlas_root;
+    metal::float3 _e16 = safe_inverse(ray_10.dir);
+    uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = nodes[base_2];
     metal::float3 origin_5 = header_2.min;
     metal::float3 scale_3 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_10.origin, _e16, ray_10.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
@@ -1168,7 +1200,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_9, _e55, shadow_2, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_10, _e55, shadow_2, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1180,7 +1212,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_7 = nodes[base_2 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_9, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_10, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1230,26 +1262,26 @@ Candidate intersect_scene(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_4,
-    Ray ray_10
+    Ray ray_11
 ) {
     return metal::float3 {};
 }
 
 metal::float3 miss(
-    Ray ray_11,
+    Ray ray_12,
     constant FrameUniforms& frame
 ) {
     if (!(HAS_BACKGROUND)) {
         return metal::float3(0.0);
     }
-    FrameUniforms frame_3 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_11);
+    FrameUniforms frame_4 = frame;
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
     return _e9;
 }
 
 void shading_medium(
     uint medium,
-    thread type_3& scratch
+    thread type_4& scratch
 ) {
     scratch.inner[metal::min(SCRATCH_MEDIUM, 14u)] = medium;
     return;
@@ -1257,7 +1289,7 @@ void shading_medium(
 
 metal::float3 fog_shade(
     Fog m_1,
-    Ray ray_12,
+    Ray ray_13,
     Hit hit_3,
     metal::float3 secondary
 ) {
@@ -1276,10 +1308,10 @@ Lambert load_Lambert(
 }
 
 metal::float3 shading_normal(
-    Ray ray_13,
+    Ray ray_14,
     Hit hit_4
 ) {
-    metal::float3 ng = metal::faceforward(hit_4.geometric_normal, ray_13.dir, hit_4.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_4.geometric_normal, ray_14.dir, hit_4.geometric_normal);
     return metal::faceforward(hit_4.normal, -(ng), hit_4.normal);
 }
 
@@ -1310,7 +1342,7 @@ PointLight load_PointLight(
 float shadow_preset(
     metal::float3 normal,
     metal::float3 dir,
-    thread type_3& scratch
+    thread type_4& scratch
 ) {
     uint mode = scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 14u)];
     if (mode == SHADOW_UNOCCLUDED) {
@@ -1381,10 +1413,10 @@ Ray shadow_ray(
 }
 
 float shadow_transmittance(
-    Ray ray_14,
+    Ray ray_15,
     uint medium_1,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1405,15 +1437,15 @@ float shadow_transmittance(
         if (medium_1 != 0u) {
             GpuInstance inst_8 = instances[medium_1 - 1u];
             if ((inst_8.flags & FLAG_ANY_HIT) != 0u) {
-                Hit start = Hit {ray_14.origin, 0.0, -(ray_14.dir), -(ray_14.dir), metal::float2(0.0), true, {}, inst_8.object, 0u};
+                Hit start = Hit {ray_15.origin, 0.0, -(ray_15.dir), -(ray_15.dir), metal::float2(0.0), true, {}, inst_8.object, 0u};
                 scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = 1u;
                 scratch.inner[metal::min(SCRATCH_ABSORB_T, 14u)] = 0u;
-                bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start, scratch, params, _buffer_sizes);
+                bool _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_15, start, scratch, params, _buffer_sizes);
                 scratch.inner[metal::min(SCRATCH_ABSORB, 14u)] = 0u;
             }
         }
     }
-    Candidate _e75 = intersect_scene(ray_14, true, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    Candidate _e75 = intersect_scene(ray_15, true, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     if (_e75.slot != NO_HIT) {
         return 0.0;
     }
@@ -1424,11 +1456,11 @@ float shadow_transmittance(
     uint _e101 = scratch.inner[metal::min(SCRATCH_DENSITY_MAX, 14u)];
     if (net_1 > (0.000001 * as_type<float>(_e101))) {
         uint _e107 = F32_INF;
-        if (ray_14.tmax == as_type<float>(_e107)) {
+        if (ray_15.tmax == as_type<float>(_e107)) {
             return 0.0;
         }
         float _e111 = depth;
-        depth = _e111 + (net_1 * (ray_14.tmax * metal::length(ray_14.dir)));
+        depth = _e111 + (net_1 * (ray_15.tmax * metal::length(ray_15.dir)));
     }
     float _e118 = depth;
     return metal::exp(-(metal::max(_e118, 0.0)));
@@ -1440,7 +1472,7 @@ float shadow_query(
     metal::float3 dir_2,
     float dist_1,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1467,7 +1499,7 @@ LightSample point_light(
     metal::float3 position_2,
     metal::float3 normal_3,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1499,7 +1531,7 @@ LightSample dispatch_light(
     metal::float3 position_3,
     metal::float3 normal_4,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1521,7 +1553,7 @@ LightSample sample_light_query(
     metal::float3 position_4,
     metal::float3 normal_5,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1533,11 +1565,11 @@ LightSample sample_light_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    FrameUniforms frame_4 = frame;
-    if (i_2 >= frame_4.light_count) {
+    FrameUniforms frame_5 = frame;
+    if (i_2 >= frame_5.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry = frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE);
+    uint entry = frame_5.light_table + (i_2 * LIGHT_ENTRY_STRIDE);
     uint _e22 = params[entry];
     uint _e27 = params[entry + 1u];
     LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
@@ -1546,10 +1578,10 @@ LightSample sample_light_query(
 
 metal::float3 lambert_shade(
     Lambert m_2,
-    Ray ray_15,
+    Ray ray_16,
     Hit hit_5,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1563,7 +1595,7 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_3 = {};
-    metal::float3 _e3 = shading_normal(ray_15, hit_5);
+    metal::float3 _e3 = shading_normal(ray_16, hit_5);
     color = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
     i_3 = 0u;
@@ -1593,11 +1625,11 @@ metal::float3 lambert_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_8,
-    Ray ray_16,
+    Ray ray_17,
     Hit hit_6,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1612,12 +1644,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             Fog _e5 = load_Fog(offset_8, params, _buffer_sizes);
-            metal::float3 _e6 = fog_shade(_e5, ray_16, hit_6, secondary_1);
+            metal::float3 _e6 = fog_shade(_e5, ray_17, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_8, params, _buffer_sizes);
-            metal::float3 _e8 = lambert_shade(_e7, ray_16, hit_6, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+            metal::float3 _e8 = lambert_shade(_e7, ray_17, hit_6, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
             return _e8;
         }
         default: {
@@ -1628,10 +1660,10 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_17,
+    Ray ray_18,
     Candidate c_2,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1644,9 +1676,9 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_9 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_17, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
-    shading_medium(ray_17.medium, scratch);
-    metal::float3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_17, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_18, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
+    shading_medium(ray_18.medium, scratch);
+    metal::float3 _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_18, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e12;
 }
 
@@ -1655,7 +1687,7 @@ LightSample sample_light_unoccluded_query(
     metal::float3 position_5,
     metal::float3 normal_6,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1681,7 +1713,7 @@ metal::float3 fog_inscatter(
     float d_1,
     float trans,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1730,11 +1762,11 @@ metal::float3 fog_inscatter(
 
 metal::float3 fog_medium(
     Fog m_4,
-    Ray ray_18,
+    Ray ray_19,
     float t,
     metal::float3 radiance,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1749,7 +1781,7 @@ metal::float3 fog_medium(
 ) {
     metal::float3 light = {};
     uint i_6 = {};
-    float len = metal::length(ray_18.dir);
+    float len = metal::length(ray_19.dir);
     if (!((m_4.density > 0.0)) || !((len > 0.0))) {
         return radiance;
     }
@@ -1774,7 +1806,7 @@ metal::float3 fog_medium(
         }
         metal::float3 _e27 = light;
         uint _e28 = i_6;
-        metal::float3 _e33 = fog_inscatter(m_4, _e28, ray_18.origin, ray_18.dir / metal::float3(len), d_6, trans_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+        metal::float3 _e33 = fog_inscatter(m_4, _e28, ray_19.origin, ray_19.dir / metal::float3(len), d_6, trans_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
         light = _e27 + _e33;
     }
     metal::float3 _e46 = light;
@@ -1784,11 +1816,11 @@ metal::float3 fog_medium(
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_9,
-    Ray ray_19,
+    Ray ray_20,
     float t_1,
     metal::float3 radiance_1,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1802,16 +1834,16 @@ metal::float3 dispatch_medium(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Fog _e4 = load_Fog(offset_9, params, _buffer_sizes);
-    metal::float3 _e5 = fog_medium(_e4, ray_19, t_1, radiance_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    metal::float3 _e5 = fog_medium(_e4, ray_20, t_1, radiance_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e5;
 }
 
 metal::float3 through_medium(
-    Ray ray_20,
+    Ray ray_21,
     float t_2,
     metal::float3 radiance_2,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1827,15 +1859,15 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_2;
     }
-    if (ray_20.medium == 0u) {
+    if (ray_21.medium == 0u) {
         return radiance_2;
     }
-    GpuInstance inst_10 = instances[ray_20.medium - 1u];
+    GpuInstance inst_10 = instances[ray_21.medium - 1u];
     if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_2;
     }
-    shading_medium(ray_20.medium, scratch);
-    metal::float3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_20, t_2, radiance_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
+    shading_medium(ray_21.medium, scratch);
+    metal::float3 _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_21, t_2, radiance_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
     return _e22;
 }
 
@@ -1856,20 +1888,20 @@ void rt_spawn(
 
 void fog_rays(
     Fog m_5,
-    Ray ray_21,
+    Ray ray_22,
     Hit hit_7,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
     thread uint& spawn_count
 ) {
-    rt_spawn(ray_21.dir, metal::float3(1.0), spawn_dirs, spawn_weights, spawn_count);
+    rt_spawn(ray_22.dir, metal::float3(1.0), spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_10,
-    Ray ray_22,
+    Ray ray_23,
     Hit hit_8,
     device type_5 const& params,
     thread type_16& spawn_dirs,
@@ -1878,7 +1910,7 @@ void dispatch_secondary_rays(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Fog _e3 = load_Fog(offset_10, params, _buffer_sizes);
-    fog_rays(_e3, ray_22, hit_8, spawn_dirs, spawn_weights, spawn_count);
+    fog_rays(_e3, ray_23, hit_8, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
@@ -1912,7 +1944,7 @@ metal::float3 spawn_origin(
 metal::float3 trace(
     Ray camera_ray,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1932,7 +1964,7 @@ metal::float3 trace(
     float t_3 = {};
     type_17 stack = {};
     uint depth_1 = {};
-    Ray ray_23 = {};
+    Ray ray_24 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -1972,7 +2004,7 @@ metal::float3 trace(
     }
     stack = type_17 {};
     depth_1 = 0u;
-    ray_23 = camera_ray;
+    ray_24 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1991,10 +2023,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_23;
+            Ray _e67 = ray_24;
             Candidate _e69 = intersect_scene(_e67, false, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_23;
+            Ray _e70 = ray_24;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -2177,7 +2209,7 @@ metal::float3 trace(
             metal::float3 _e372 = spawn_origin(hit_12, _e371, dir_8);
             uint _e375 = F32_INF;
             uint _e381 = medium_2;
-            ray_23 = Ray {_e372, 0.0, dir_8, as_type<float>(_e375), parent.depth + 1u, RAY_SECONDARY, _e381};
+            ray_24 = Ray {_e372, 0.0, dir_8, as_type<float>(_e375), parent.depth + 1u, RAY_SECONDARY, _e381};
         } else {
             Ray _e387 = stack.inner[metal::min(top_1, 2u)].ray;
             s_ray = _e387;
@@ -2210,11 +2242,39 @@ metal::float3 finite_or_zero(
     return metal::select(metal::float3(0.0), c_3, _e3);
 }
 
+void pass_done(
+    uint index,
+    metal::float3 sum,
+    uint bad,
+    uint pass,
+    constant FrameUniforms& frame,
+    thread uint& ray_count,
+    device type_20& counters,
+    device type_11& accum,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e5, metal::memory_order_relaxed);
+    ray_count = 0u;
+    FrameUniforms _e10 = frame;
+    metal::float4 _e13 = metal::float4(sum, static_cast<float>(_e10.samples_per_pass));
+    if (pass == 0u) {
+        accum[index] = _e13;
+    } else {
+        metal::float4 _e18 = accum[index];
+        accum[index] = _e18 + _e13;
+    }
+    if (bad > 0u) {
+        metal::atomic_fetch_add_explicit(&counters[0], bad, metal::memory_order_relaxed);
+    }
+    return;
+}
+
 void render_pixel(
-    metal::uint2 pixel_4,
+    metal::uint2 pixel_5,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2232,15 +2292,17 @@ void render_pixel(
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 sum = {};
-    uint bad = {};
+    metal::float3 sum_1 = {};
+    uint bad_1 = {};
     uint s_2 = {};
-    Ray ray_24 = {};
-    FrameUniforms frame_5 = frame;
+    FrameUniforms frame_6 = frame;
     TileParams tile_2 = tile;
-    sum = metal::float3(0.0);
-    bad = 0u;
-    uint end_1 = frame_5.samples_per_pass;
+    uint index_1 = (pixel_5.y * tile_2.image_size.x) + pixel_5.x;
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_1 = tile_2.frame * per_pass;
+    uint count_2 = per_pass * metal::max(frame_6.passes_per_dispatch, 1u);
+    sum_1 = metal::float3(0.0);
+    bad_1 = 0u;
     s_2 = 0u;
     uint2 loop_bound_9 = uint2(4294967295u);
     bool loop_init_5 = true;
@@ -2248,51 +2310,39 @@ void render_pixel(
         if (metal::all(loop_bound_9 == uint2(0u))) { break; }
         loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e46 = s_2;
-            s_2 = _e46 + 1u;
+            uint _e56 = s_2;
+            s_2 = _e56 + 1u;
         }
         loop_init_5 = false;
-        uint _e13 = s_2;
-        if (_e13 >= end_1) {
+        uint _e25 = s_2;
+        if (_e25 >= count_2) {
             break;
         }
-        uint _e18 = s_2;
-        uint sample_4 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
-        rng_seed(pixel_4, sample_4, frame_5.seed, scratch, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-        ray_24 = _e23;
-        ray_24.depth = 0u;
-        ray_24.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_24.origin;
-        uint _e33 = medium_at(_e31, NO_HIT, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
-        ray_24.medium = _e33;
-        Ray _e34 = ray_24;
-        metal::float3 _e35 = trace(_e34, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-        metal::bool3 _e36 = is_finite_vec3f(_e35);
-        if (metal::all(_e36)) {
-            metal::float3 _e38 = sum;
-            sum = _e38 + _e35;
+        uint _e27 = s_2;
+        Ray _e29 = sample_camera_ray(pixel_5, first_1 + _e27, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, _buffer_sizes);
+        metal::float3 _e30 = trace(_e29, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, traversal_stack, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::bool3 _e31 = is_finite_vec3f(_e30);
+        if (metal::all(_e31)) {
+            metal::float3 _e33 = sum_1;
+            sum_1 = _e33 + _e30;
         } else {
-            metal::float3 _e40 = sum;
-            metal::float3 _e41 = finite_or_zero(_e35);
-            sum = _e40 + _e41;
-            uint _e43 = bad;
-            bad = _e43 + 1u;
+            metal::float3 _e35 = sum_1;
+            metal::float3 _e36 = finite_or_zero(_e30);
+            sum_1 = _e35 + _e36;
+            uint _e38 = bad_1;
+            bad_1 = _e38 + 1u;
         }
-    }
-    uint _e50 = ray_count;
-    metal::atomic_fetch_add_explicit(&counters[1], _e50, metal::memory_order_relaxed);
-    metal::float3 _e59 = sum;
-    metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if (tile_2.frame == 0u) {
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e62;
-    } else {
-        metal::float4 _e69 = accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x];
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e69 + _e62;
-    }
-    if (_e63 > 0u) {
-        metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
+        uint _e41 = s_2;
+        uint _e44 = rem_u32_(_e41 + 1u, per_pass);
+        if (_e44 == 0u) {
+            metal::float3 _e47 = sum_1;
+            uint _e48 = bad_1;
+            uint _e50 = s_2;
+            uint _e51 = div_u32_(_e50, per_pass);
+            pass_done(index_1, _e47, _e48, tile_2.frame + _e51, frame, ray_count, counters, accum, _buffer_sizes);
+            sum_1 = metal::float3(0.0);
+            bad_1 = 0u;
+        }
     }
     return;
 }
@@ -2301,7 +2351,7 @@ void render_invocation(
     metal::uint2 id_1,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2343,7 +2393,7 @@ struct renderInput {
 , device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
-    type_3 scratch = {};
+    type_4 scratch = {};
     uint rng_state = {};
     uint F32_INF = 2139095040u;
     float hit_error = {};

@@ -21,6 +21,7 @@ struct FrameUniforms {
     background_type: u32,
     background_offset: u32,
     path_slots: u32,
+    passes_per_dispatch: u32,
 }
 
 struct Ray {
@@ -861,12 +862,28 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     return _e62;
 }
 
+fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
+    var ray_9: Ray;
+
+    let frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed);
+    let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
+    ray_9 = _e7;
+    ray_9.depth = 0u;
+    ray_9.kind = RAY_CAMERA;
+    let _e15 = ray_9.origin;
+    let _e17 = medium_at(_e15, NO_HIT);
+    ray_9.medium = _e17;
+    let _e18 = ray_9;
+    return _e18;
+}
+
 fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     let _e5 = node_point(header.min, header.max, vec3(65535u));
     return _e5;
 }
 
-fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -875,21 +892,21 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_9.tmax);
+    let _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
-    let frame_2 = frame;
-    if (frame_2.instance_count == 0u) {
+    let frame_3 = frame;
+    if (frame_3.instance_count == 0u) {
         let _e14 = best_2;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_9.dir);
-    let base_2 = frame_2.tlas_root;
+    let _e16 = safe_inverse(ray_10.dir);
+    let base_2 = frame_3.tlas_root;
     let header_2 = nodes[base_2];
     let origin_5 = header_2.min;
     let scale_3 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
+    let _e28 = slab(origin_5, _e23, ray_10.origin, _e16, ray_10.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
@@ -904,7 +921,7 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e52 = child_1;
                 let _e55 = best_2;
-                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_9, _e55, shadow_2);
+                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_10, _e55, shadow_2);
                 best_2 = _e56;
                 let _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -916,7 +933,7 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
             let _e63 = child_1;
             let n_7 = nodes[(base_2 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_7, origin_5, scale_3, ray_9, _e16, _e69);
+            let _e70 = children_entry(n_7, origin_5, scale_3, ray_10, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
@@ -963,16 +980,16 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
     return _e120;
 }
 
-fn dispatch_miss(type_id_2: u32, offset_4: u32, ray_10: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_4: u32, ray_11: Ray) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn miss(ray_11: Ray) -> vec3<f32> {
+fn miss(ray_12: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
-    let frame_3 = frame;
-    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_11);
+    let frame_4 = frame;
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
     return _e9;
 }
 
@@ -981,7 +998,7 @@ fn shading_medium(medium: u32) {
     return;
 }
 
-fn fog_shade(m_1: Fog, ray_12: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn fog_shade(m_1: Fog, ray_13: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
     return secondary;
 }
 
@@ -992,8 +1009,8 @@ fn load_Lambert(offset_5: u32) -> Lambert {
     return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn shading_normal(ray_13: Ray, hit_4: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_4.geometric_normal, ray_13.dir, hit_4.geometric_normal);
+fn shading_normal(ray_14: Ray, hit_4: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_4.geometric_normal, ray_14.dir, hit_4.geometric_normal);
     return faceForward(hit_4.normal, -(ng), hit_4.normal);
 }
 
@@ -1071,7 +1088,7 @@ fn shadow_ray(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist: 
     return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-fn shadow_transmittance(ray_14: Ray, medium_1: u32) -> f32 {
+fn shadow_transmittance(ray_15: Ray, medium_1: u32) -> f32 {
     var depth: f32;
 
     scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
@@ -1082,15 +1099,15 @@ fn shadow_transmittance(ray_14: Ray, medium_1: u32) -> f32 {
         if (medium_1 != 0u) {
             let inst_8 = instances[(medium_1 - 1u)];
             if ((inst_8.flags & FLAG_ANY_HIT) != 0u) {
-                let start = Hit(ray_14.origin, 0f, -(ray_14.dir), -(ray_14.dir), vec2(0f), true, inst_8.object, 0u);
+                let start = Hit(ray_15.origin, 0f, -(ray_15.dir), -(ray_15.dir), vec2(0f), true, inst_8.object, 0u);
                 scratch[min(SCRATCH_ABSORB, 14u)] = 1u;
                 scratch[min(SCRATCH_ABSORB_T, 14u)] = 0u;
-                let _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_14, start);
+                let _e67 = dispatch_any_hit(inst_8.material_type, inst_8.material_offset, ray_15, start);
                 scratch[min(SCRATCH_ABSORB, 14u)] = 0u;
             }
         }
     }
-    let _e75 = intersect_scene(ray_14, true);
+    let _e75 = intersect_scene(ray_15, true);
     if (_e75.slot != NO_HIT) {
         return 0f;
     }
@@ -1101,11 +1118,11 @@ fn shadow_transmittance(ray_14: Ray, medium_1: u32) -> f32 {
     let _e101 = scratch[min(SCRATCH_DENSITY_MAX, 14u)];
     if (net_1 > (0.000001f * bitcast<f32>(_e101))) {
         let _e107 = F32_INF;
-        if (ray_14.tmax == bitcast<f32>(_e107)) {
+        if (ray_15.tmax == bitcast<f32>(_e107)) {
             return 0f;
         }
         let _e111 = depth;
-        depth = (_e111 + (net_1 * (ray_14.tmax * length(ray_14.dir))));
+        depth = (_e111 + (net_1 * (ray_15.tmax * length(ray_15.dir))));
     }
     let _e118 = depth;
     return exp(-(max(_e118, 0f)));
@@ -1145,22 +1162,22 @@ fn dispatch_light(type_id_3: u32, offset_7: u32, position_3: vec3<f32>, normal_4
 }
 
 fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
-    let frame_4 = frame;
-    if (i_2 >= frame_4.light_count) {
+    let frame_5 = frame;
+    if (i_2 >= frame_5.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
+    let entry = (frame_5.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     let _e22 = params[entry];
     let _e27 = params[(entry + 1u)];
     let _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     return _e28;
 }
 
-fn lambert_shade(m_2: Lambert, ray_15: Ray, hit_5: Hit) -> vec3<f32> {
+fn lambert_shade(m_2: Lambert, ray_16: Ray, hit_5: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_3: u32;
 
-    let _e3 = shading_normal(ray_15, hit_5);
+    let _e3 = shading_normal(ray_16, hit_5);
     color = vec3(0f);
     let _e8 = light_count_query();
     i_3 = 0u;
@@ -1182,16 +1199,16 @@ fn lambert_shade(m_2: Lambert, ray_15: Ray, hit_5: Hit) -> vec3<f32> {
     return _e33;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_16: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_17: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e5 = load_Fog(offset_8);
-            let _e6 = fog_shade(_e5, ray_16, hit_6, secondary_1);
+            let _e6 = fog_shade(_e5, ray_17, hit_6, secondary_1);
             return _e6;
         }
         case 1u: {
             let _e7 = load_Lambert(offset_8);
-            let _e8 = lambert_shade(_e7, ray_16, hit_6);
+            let _e8 = lambert_shade(_e7, ray_17, hit_6);
             return _e8;
         }
         default: {
@@ -1200,11 +1217,11 @@ fn dispatch_closest_hit(type_id_4: u32, offset_8: u32, ray_16: Ray, hit_6: Hit, 
     return vec3<f32>();
 }
 
-fn shade_direct(ray_17: Ray, c_2: Candidate) -> vec3<f32> {
+fn shade_direct(ray_18: Ray, c_2: Candidate) -> vec3<f32> {
     let inst_9 = instances[c_2.slot];
-    let _e6 = finish_hit(ray_17, c_2);
-    shading_medium(ray_17.medium);
-    let _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_17, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_18, c_2);
+    shading_medium(ray_18.medium);
+    let _e12 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_18, _e6, vec3(0f));
     return _e12;
 }
 
@@ -1251,11 +1268,11 @@ fn fog_inscatter(m_3: Fog, i_5: u32, o: vec3<f32>, dir_3: vec3<f32>, d_1: f32, t
     return (_e97.radiance * vec3(((sigma_1 * e_2) / pdf)));
 }
 
-fn fog_medium(m_4: Fog, ray_18: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn fog_medium(m_4: Fog, ray_19: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     var light: vec3<f32>;
     var i_6: u32;
 
-    let len = length(ray_18.dir);
+    let len = length(ray_19.dir);
     if (!((m_4.density > 0f)) || !((len > 0f))) {
         return radiance;
     }
@@ -1271,7 +1288,7 @@ fn fog_medium(m_4: Fog, ray_18: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
         }
         let _e27 = light;
         let _e28 = i_6;
-        let _e33 = fog_inscatter(m_4, _e28, ray_18.origin, (ray_18.dir / vec3(len)), d_6, trans_1);
+        let _e33 = fog_inscatter(m_4, _e28, ray_19.origin, (ray_19.dir / vec3(len)), d_6, trans_1);
         light = (_e27 + _e33);
         continuing {
             let _e35 = i_6;
@@ -1282,25 +1299,25 @@ fn fog_medium(m_4: Fog, ray_18: Ray, t: f32, radiance: vec3<f32>) -> vec3<f32> {
     return ((radiance * vec3(trans_1)) + ((m_4.albedo * vec3((0.25f * INV_PI))) * _e46));
 }
 
-fn dispatch_medium(type_id_5: u32, offset_9: u32, ray_19: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_9: u32, ray_20: Ray, t_1: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     let _e4 = load_Fog(offset_9);
-    let _e5 = fog_medium(_e4, ray_19, t_1, radiance_1);
+    let _e5 = fog_medium(_e4, ray_20, t_1, radiance_1);
     return _e5;
 }
 
-fn through_medium(ray_20: Ray, t_2: f32, radiance_2: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_21: Ray, t_2: f32, radiance_2: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_2;
     }
-    if (ray_20.medium == 0u) {
+    if (ray_21.medium == 0u) {
         return radiance_2;
     }
-    let inst_10 = instances[(ray_20.medium - 1u)];
+    let inst_10 = instances[(ray_21.medium - 1u)];
     if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_2;
     }
-    shading_medium(ray_20.medium);
-    let _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_20, t_2, radiance_2);
+    shading_medium(ray_21.medium);
+    let _e22 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_21, t_2, radiance_2);
     return _e22;
 }
 
@@ -1313,14 +1330,14 @@ fn rt_spawn(dir_4: vec3<f32>, weight: vec3<f32>) {
     }
 }
 
-fn fog_rays(m_5: Fog, ray_21: Ray, hit_7: Hit) {
-    rt_spawn(ray_21.dir, vec3(1f));
+fn fog_rays(m_5: Fog, ray_22: Ray, hit_7: Hit) {
+    rt_spawn(ray_22.dir, vec3(1f));
     return;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_10: u32, ray_22: Ray, hit_8: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_10: u32, ray_23: Ray, hit_8: Hit) {
     let _e3 = load_Fog(offset_10);
-    fog_rays(_e3, ray_22, hit_8);
+    fog_rays(_e3, ray_23, hit_8);
     return;
 }
 
@@ -1348,7 +1365,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_3: f32;
     var stack: array<Frame, 3>;
     var depth_1: u32;
-    var ray_23: Ray;
+    var ray_24: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1389,7 +1406,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 3>();
     depth_1 = 0u;
-    ray_23 = camera_ray;
+    ray_24 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1405,10 +1422,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_23;
+            let _e67 = ray_24;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_23;
+            let _e70 = ray_24;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1583,7 +1600,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e372 = spawn_origin(hit_12, _e371, dir_8);
             let _e375 = F32_INF;
             let _e381 = medium_2;
-            ray_23 = Ray(_e372, 0f, dir_8, bitcast<f32>(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
+            ray_24 = Ray(_e372, 0f, dir_8, bitcast<f32>(_e375), (parent.depth + 1u), RAY_SECONDARY, _e381);
         } else {
             let _e387 = stack[min(top_1, 2u)].ray;
             s_ray = _e387;
@@ -1612,64 +1629,72 @@ fn finite_or_zero(c_3: vec3<f32>) -> vec3<f32> {
     return select(vec3(0f), c_3, _e3);
 }
 
-fn render_pixel(pixel_4: vec2<u32>) {
-    var sum: vec3<f32>;
-    var bad: u32;
-    var s_2: u32;
-    var ray_24: Ray;
+fn pass_done(index: u32, sum: vec3<f32>, bad: u32, pass_: u32) {
+    let _e5 = ray_count;
+    atomicAdd((&counters[1]), _e5);
+    ray_count = 0u;
+    let _e10 = frame;
+    let _e13 = vec4<f32>(sum, f32(_e10.samples_per_pass));
+    if (pass_ == 0u) {
+        accum[index] = _e13;
+    } else {
+        let _e18 = accum[index];
+        accum[index] = (_e18 + _e13);
+    }
+    if (bad > 0u) {
+        atomicAdd((&counters[0]), bad);
+    }
+    return;
+}
 
-    let frame_5 = frame;
+fn render_pixel(pixel_5: vec2<u32>) {
+    var sum_1: vec3<f32>;
+    var bad_1: u32;
+    var s_2: u32;
+
+    let frame_6 = frame;
     let tile_2 = tile;
-    sum = vec3(0f);
-    bad = 0u;
-    let end_1 = frame_5.samples_per_pass;
+    let index_1 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
+    let per_pass = frame_6.samples_per_pass;
+    let first_1 = (tile_2.frame * per_pass);
+    let count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
+    sum_1 = vec3(0f);
+    bad_1 = 0u;
     s_2 = 0u;
     loop {
-        let _e13 = s_2;
-        if (_e13 >= end_1) {
+        let _e25 = s_2;
+        if (_e25 >= count_2) {
             break;
         }
-        let _e18 = s_2;
-        let sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_4, sample_4, frame_5.seed);
-        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
-        ray_24 = _e23;
-        ray_24.depth = 0u;
-        ray_24.kind = RAY_CAMERA;
-        let _e31 = ray_24.origin;
-        let _e33 = medium_at(_e31, NO_HIT);
-        ray_24.medium = _e33;
-        let _e34 = ray_24;
-        let _e35 = trace(_e34);
-        let _e36 = is_finite_vec3f(_e35);
-        if all(_e36) {
-            let _e38 = sum;
-            sum = (_e38 + _e35);
+        let _e27 = s_2;
+        let _e29 = sample_camera_ray(pixel_5, (first_1 + _e27));
+        let _e30 = trace(_e29);
+        let _e31 = is_finite_vec3f(_e30);
+        if all(_e31) {
+            let _e33 = sum_1;
+            sum_1 = (_e33 + _e30);
         } else {
-            let _e40 = sum;
-            let _e41 = finite_or_zero(_e35);
-            sum = (_e40 + _e41);
-            let _e43 = bad;
-            bad = (_e43 + 1u);
+            let _e35 = sum_1;
+            let _e36 = finite_or_zero(_e30);
+            sum_1 = (_e35 + _e36);
+            let _e38 = bad_1;
+            bad_1 = (_e38 + 1u);
+        }
+        let _e41 = s_2;
+        let _e44 = rem_u32_((_e41 + 1u), per_pass);
+        if (_e44 == 0u) {
+            let _e47 = sum_1;
+            let _e48 = bad_1;
+            let _e50 = s_2;
+            let _e51 = div_u32_(_e50, per_pass);
+            pass_done(index_1, _e47, _e48, (tile_2.frame + _e51));
+            sum_1 = vec3(0f);
+            bad_1 = 0u;
         }
         continuing {
-            let _e46 = s_2;
-            s_2 = (_e46 + 1u);
+            let _e56 = s_2;
+            s_2 = (_e56 + 1u);
         }
-    }
-    let _e50 = ray_count;
-    atomicAdd((&counters[1]), _e50);
-    let _e59 = sum;
-    let _e62 = vec4<f32>(_e59, f32(frame_5.samples_per_pass));
-    let _e63 = bad;
-    if (tile_2.frame == 0u) {
-        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
-    } else {
-        let _e69 = accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
-        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
-    }
-    if (_e63 > 0u) {
-        atomicAdd((&counters[0]), _e63);
     }
     return;
 }

@@ -25,6 +25,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
+    uint passes_per_dispatch;
 };
 struct Ray {
     vec3 origin;
@@ -760,12 +761,27 @@ uint medium_at(vec3 p_4, uint exclude) {
     return _e62;
 }
 
+Ray sample_camera_ray(uvec2 pixel_4, uint sample_4) {
+    Ray ray_7 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    FrameUniforms frame_2 = _group_0_binding_0_cs;
+    rng_seed(pixel_4, sample_4, frame_2.seed);
+    Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    vec3 _e15 = ray_7.origin;
+    uint _e17 = medium_at(_e15, NO_HIT);
+    ray_7.medium = _e17;
+    Ray _e18 = ray_7;
+    return _e18;
+}
+
 vec3 node_frame_hi(GpuNode header) {
     vec3 _e5 = node_point(header.min_, header.max_, uvec3(65535u));
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_7, bool shadow_2) {
+Candidate intersect_scene(Ray ray_8, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -773,21 +789,21 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_7.tmax);
+    Candidate _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = _group_0_binding_0_cs;
-    if ((frame_2.instance_count == 0u)) {
+    FrameUniforms frame_3 = _group_0_binding_0_cs;
+    if ((frame_3.instance_count == 0u)) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    vec3 _e16 = safe_inverse(ray_7.dir);
-    uint base_2 = frame_2.tlas_root;
+    vec3 _e16 = safe_inverse(ray_8.dir);
+    uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_2];
     vec3 origin_5 = header_2.min_;
     vec3 scale_3 = header_2.max_;
     vec3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
+    float _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == uintBitsToFloat(_e30))) {
         Candidate _e33 = best_2;
@@ -802,7 +818,7 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2) {
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_7, _e55, shadow_2);
+                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_8, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -814,7 +830,7 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2) {
             uint _e63 = child_1;
             GpuNode n_7 = _group_0_binding_2_cs[(base_2 + _e63)];
             float _e69 = best_2.t;
-            vec2 _e70 = children_entry(n_7, origin_5, scale_3, ray_7, _e16, _e69);
+            vec2 _e70 = children_entry(n_7, origin_5, scale_3, ray_8, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -874,8 +890,8 @@ SkyGradient load_SkyGradient(uint offset_2) {
     return SkyGradient(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)));
 }
 
-vec3 sky_gradient(SkyGradient b_4, Ray ray_8) {
-    vec3 _e3 = normalize_vec3f(ray_8.dir);
+vec3 sky_gradient(SkyGradient b_4, Ray ray_9) {
+    vec3 _e3 = normalize_vec3f(ray_9.dir);
     float y = _e3.y;
     if ((y < 0.0)) {
         return mix(b_4.horizon, b_4.ground, vec3(min((-(y) * 4.0), 1.0)));
@@ -883,18 +899,18 @@ vec3 sky_gradient(SkyGradient b_4, Ray ray_8) {
     return mix(b_4.horizon, b_4.zenith, vec3(sqrt(y)));
 }
 
-vec3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_9) {
+vec3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_10) {
     SkyGradient _e2 = load_SkyGradient(offset_3);
-    vec3 _e3 = sky_gradient(_e2, ray_9);
+    vec3 _e3 = sky_gradient(_e2, ray_10);
     return _e3;
 }
 
-vec3 miss(Ray ray_10) {
+vec3 miss(Ray ray_11) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
-    FrameUniforms frame_3 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_10);
+    FrameUniforms frame_4 = _group_0_binding_0_cs;
+    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11);
     return _e9;
 }
 
@@ -906,7 +922,7 @@ Glass load_Glass(uint offset_4) {
     return Glass(uintBitsToFloat(_e5), vec3(uintBitsToFloat(_e11), uintBitsToFloat(_e17), uintBitsToFloat(_e23)));
 }
 
-vec3 glass_shade(Glass m, Ray ray_11, Hit hit_1, vec3 secondary) {
+vec3 glass_shade(Glass m, Ray ray_12, Hit hit_1, vec3 secondary) {
     return secondary;
 }
 
@@ -917,20 +933,20 @@ Mirror load_Mirror(uint offset_5) {
     return Mirror(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 mirror_shade(Mirror m_1, Ray ray_12, Hit hit_2, vec3 secondary_1) {
+vec3 mirror_shade(Mirror m_1, Ray ray_13, Hit hit_2, vec3 secondary_1) {
     return secondary_1;
 }
 
-vec3 dispatch_closest_hit(uint type_id_2, uint offset_6, Ray ray_13, Hit hit_3, vec3 secondary_2) {
+vec3 dispatch_closest_hit(uint type_id_2, uint offset_6, Ray ray_14, Hit hit_3, vec3 secondary_2) {
     switch(type_id_2) {
         case 0u: {
             Glass _e5 = load_Glass(offset_6);
-            vec3 _e6 = glass_shade(_e5, ray_13, hit_3, secondary_2);
+            vec3 _e6 = glass_shade(_e5, ray_14, hit_3, secondary_2);
             return _e6;
         }
         case 1u: {
             Mirror _e7 = load_Mirror(offset_6);
-            vec3 _e8 = mirror_shade(_e7, ray_13, hit_3, secondary_2);
+            vec3 _e8 = mirror_shade(_e7, ray_14, hit_3, secondary_2);
             return _e8;
         }
         default: {
@@ -940,29 +956,29 @@ vec3 dispatch_closest_hit(uint type_id_2, uint offset_6, Ray ray_13, Hit hit_3, 
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_14, Candidate c_2) {
+vec3 shade_direct(Ray ray_15, Candidate c_2) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_2.slot];
-    Hit _e6 = finish_hit(ray_14, c_2);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_15, c_2);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, vec3(0.0));
     return _e11;
 }
 
-vec3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_15, float t, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_3, uint offset_7, Ray ray_16, float t, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_16, float t_1, vec3 radiance_1) {
+vec3 through_medium(Ray ray_17, float t_1, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_16.medium == 0u)) {
+    if ((ray_17.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_16.medium - 1u)];
+    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_17.medium - 1u)];
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_16, t_1, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_17, t_1, radiance_1);
     return _e21;
 }
 
@@ -987,10 +1003,10 @@ void rt_spawn(vec3 dir, vec3 weight) {
     }
 }
 
-void glass_rays(Glass m_2, Ray ray_17, Hit hit_4) {
+void glass_rays(Glass m_2, Ray ray_18, Hit hit_4) {
     vec3 n_3 = vec3(0.0);
     float eta_1 = 0.0;
-    vec3 _e4 = normalize_vec3f(ray_17.dir);
+    vec3 _e4 = normalize_vec3f(ray_18.dir);
     n_3 = hit_4.normal;
     eta_1 = (1.0 / m_2.ior);
     if (!(hit_4.front_face)) {
@@ -1016,22 +1032,22 @@ void glass_rays(Glass m_2, Ray ray_17, Hit hit_4) {
     return;
 }
 
-void mirror_rays(Mirror m_3, Ray ray_18, Hit hit_5) {
-    vec3 _e4 = normalize_vec3f(ray_18.dir);
+void mirror_rays(Mirror m_3, Ray ray_19, Hit hit_5) {
+    vec3 _e4 = normalize_vec3f(ray_19.dir);
     rt_spawn(reflect(_e4, hit_5.normal), m_3.tint);
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_4, uint offset_8, Ray ray_19, Hit hit_6) {
+void dispatch_secondary_rays(uint type_id_4, uint offset_8, Ray ray_20, Hit hit_6) {
     switch(type_id_4) {
         case 0u: {
             Glass _e4 = load_Glass(offset_8);
-            glass_rays(_e4, ray_19, hit_6);
+            glass_rays(_e4, ray_20, hit_6);
             return;
         }
         case 1u: {
             Mirror _e5 = load_Mirror(offset_8);
-            mirror_rays(_e5, ray_19, hit_6);
+            mirror_rays(_e5, ray_20, hit_6);
             return;
         }
         default: {
@@ -1080,7 +1096,7 @@ vec3 trace(Ray camera_ray) {
     float t_2 = 0.0;
     Frame stack[6] = Frame[6](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u));
     uint depth = 0u;
-    Ray ray_20 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    Ray ray_21 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
     vec3 value = vec3(0.0);
     bool have_value = false;
     Ray s_ray = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
@@ -1118,7 +1134,7 @@ vec3 trace(Ray camera_ray) {
     }
     stack = Frame[6](Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u), Frame(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), Hit(vec3(0.0), 0.0, vec3(0.0), vec3(0.0), vec2(0.0), false, 0u, 0u), 0.0, 0u, vec3(0.0), vec3[2](vec3(0.0), vec3(0.0)), vec3[2](vec3(0.0), vec3(0.0)), 0u, 0u));
     depth = 0u;
-    ray_20 = camera_ray;
+    ray_21 = camera_ray;
     value = vec3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1134,10 +1150,10 @@ vec3 trace(Ray camera_ray) {
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_20;
+            Ray _e67 = ray_21;
             Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_20;
+            Ray _e70 = ray_21;
             s_ray = _e70;
             s_sum = vec3(0.0);
             fresh = true;
@@ -1271,7 +1287,7 @@ vec3 trace(Ray camera_ray) {
             vec3 _e284 = spawn_origin(hit_10, _e283, dir_3);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_20 = Ray(_e284, 0.0, dir_3, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_21 = Ray(_e284, 0.0, dir_3, uintBitsToFloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(top_1, 5u)].ray;
             s_ray = _e299;
@@ -1300,65 +1316,73 @@ vec3 finite_or_zero(vec3 c_3) {
     return mix(vec3(0.0), c_3, _e3);
 }
 
-void render_pixel(uvec2 pixel_4) {
-    vec3 sum = vec3(0.0);
-    uint bad = 0u;
+void pass_done(uint index, vec3 sum, uint bad, uint pass) {
+    uint _e5 = ray_count;
+    atomicAdd(_group_0_binding_9_cs[1], _e5);
+    ray_count = 0u;
+    FrameUniforms _e10 = _group_0_binding_0_cs;
+    vec4 _e13 = vec4(sum, float(_e10.samples_per_pass));
+    if ((pass == 0u)) {
+        _group_0_binding_8_cs[index] = _e13;
+    } else {
+        vec4 _e18 = _group_0_binding_8_cs[index];
+        _group_0_binding_8_cs[index] = (_e18 + _e13);
+    }
+    if ((bad > 0u)) {
+        atomicAdd(_group_0_binding_9_cs[0], bad);
+    }
+    return;
+}
+
+void render_pixel(uvec2 pixel_5) {
+    vec3 sum_1 = vec3(0.0);
+    uint bad_1 = 0u;
     uint s_1 = 0u;
-    Ray ray_21 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
-    FrameUniforms frame_4 = _group_0_binding_0_cs;
+    FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_2 = _group_0_binding_1_cs;
-    sum = vec3(0.0);
-    bad = 0u;
-    uint end_1 = frame_4.samples_per_pass;
+    uint index_1 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
+    uint per_pass = frame_5.samples_per_pass;
+    uint first_1 = (tile_2.frame * per_pass);
+    uint count_2 = (per_pass * max(frame_5.passes_per_dispatch, 1u));
+    sum_1 = vec3(0.0);
+    bad_1 = 0u;
     s_1 = 0u;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e46 = s_1;
-            s_1 = (_e46 + 1u);
+            uint _e56 = s_1;
+            s_1 = (_e56 + 1u);
         }
         loop_init_3 = false;
-        uint _e13 = s_1;
-        if ((_e13 >= end_1)) {
+        uint _e25 = s_1;
+        if ((_e25 >= count_2)) {
             break;
         }
-        uint _e18 = s_1;
-        uint sample_4 = ((tile_2.frame * frame_4.samples_per_pass) + _e18);
-        rng_seed(pixel_4, sample_4, frame_4.seed);
-        Ray _e23 = dispatch_ray_generation(frame_4.camera_type, frame_4.camera_offset, pixel_4, sample_4);
-        ray_21 = _e23;
-        ray_21.depth = 0u;
-        ray_21.kind = RAY_CAMERA;
-        vec3 _e31 = ray_21.origin;
-        uint _e33 = medium_at(_e31, NO_HIT);
-        ray_21.medium = _e33;
-        Ray _e34 = ray_21;
-        vec3 _e35 = trace(_e34);
-        bvec3 _e36 = is_finite_vec3f(_e35);
-        if (all(_e36)) {
-            vec3 _e38 = sum;
-            sum = (_e38 + _e35);
+        uint _e27 = s_1;
+        Ray _e29 = sample_camera_ray(pixel_5, (first_1 + _e27));
+        vec3 _e30 = trace(_e29);
+        bvec3 _e31 = is_finite_vec3f(_e30);
+        if (all(_e31)) {
+            vec3 _e33 = sum_1;
+            sum_1 = (_e33 + _e30);
         } else {
-            vec3 _e40 = sum;
-            vec3 _e41 = finite_or_zero(_e35);
-            sum = (_e40 + _e41);
-            uint _e43 = bad;
-            bad = (_e43 + 1u);
+            vec3 _e35 = sum_1;
+            vec3 _e36 = finite_or_zero(_e30);
+            sum_1 = (_e35 + _e36);
+            uint _e38 = bad_1;
+            bad_1 = (_e38 + 1u);
         }
-    }
-    uint _e50 = ray_count;
-    atomicAdd(_group_0_binding_9_cs[1], _e50);
-    vec3 _e59 = sum;
-    vec4 _e62 = vec4(_e59, float(frame_4.samples_per_pass));
-    uint _e63 = bad;
-    if ((tile_2.frame == 0u)) {
-        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
-    } else {
-        vec4 _e69 = _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
-        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
-    }
-    if ((_e63 > 0u)) {
-        atomicAdd(_group_0_binding_9_cs[0], _e63);
+        uint _e41 = s_1;
+        uint _e44 = rem_u32_((_e41 + 1u), per_pass);
+        if ((_e44 == 0u)) {
+            vec3 _e47 = sum_1;
+            uint _e48 = bad_1;
+            uint _e50 = s_1;
+            uint _e51 = div_u32_(_e50, per_pass);
+            pass_done(index_1, _e47, _e48, (tile_2.frame + _e51));
+            sum_1 = vec3(0.0);
+            bad_1 = 0u;
+        }
     }
     return;
 }

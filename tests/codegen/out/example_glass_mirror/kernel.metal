@@ -36,9 +36,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
-};
-struct type_3 {
-    uint inner[15];
+    uint passes_per_dispatch;
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -49,6 +47,9 @@ struct Ray {
     uint kind;
     uint medium;
     char _pad7[4];
+};
+struct type_4 {
+    uint inner[15];
 };
 typedef uint type_5[1];
 struct Pinhole {
@@ -272,7 +273,7 @@ void rng_resume(
     uint sample,
     uint seed,
     uint state,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)] = sample;
@@ -288,7 +289,7 @@ void rng_seed(
     metal::uint2 pixel_1,
     uint sample_1,
     uint seed_1,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     rng_resume(pixel_1, sample_1, seed_1, 0u, scratch, rng_state);
@@ -374,7 +375,7 @@ uint sobol_second_reversed(
 }
 
 float rand_next(
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     uint x_2 = {};
@@ -397,7 +398,7 @@ float rand_next(
 }
 
 metal::float2 rand2_next(
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     float _e0 = rand_next(scratch, rng_state);
@@ -417,7 +418,7 @@ Ray pinhole_ray(
     uint sample_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -449,7 +450,7 @@ Ray dispatch_ray_generation(
     uint sample_3,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -973,6 +974,37 @@ uint medium_at(
     return _e62;
 }
 
+Ray sample_camera_ray(
+    metal::uint2 pixel_4,
+    uint sample_4,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread type_4& scratch,
+    thread uint& rng_state,
+    device type_5 const& params,
+    thread uint& F32_INF,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
+    thread float& hit_error,
+    device type_15 const& attributes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Ray ray_7 = {};
+    FrameUniforms frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
+    Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_7.origin;
+    uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+    ray_7.medium = _e17;
+    Ray _e18 = ray_7;
+    return _e18;
+}
+
 metal::float3 node_frame_hi(
     GpuNode header
 ) {
@@ -981,7 +1013,7 @@ metal::float3 node_frame_hi(
 }
 
 Candidate intersect_scene(
-    Ray ray_7,
+    Ray ray_8,
     bool shadow_2,
     constant FrameUniforms& frame,
     thread uint& F32_INF,
@@ -999,21 +1031,21 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_7.tmax);
+    Candidate _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = frame;
-    if (frame_2.instance_count == 0u) {
+    FrameUniforms frame_3 = frame;
+    if (frame_3.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_7.dir);
-    uint base_2 = frame_2.tlas_root;
+    metal::float3 _e16 = safe_inverse(ray_8.dir);
+    uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = nodes[base_2];
     metal::float3 origin_5 = header_2.min;
     metal::float3 scale_3 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
@@ -1031,7 +1063,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_7, _e55, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_8, _e55, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1043,7 +1075,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_7 = nodes[base_2 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_7, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_8, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1109,9 +1141,9 @@ SkyGradient load_SkyGradient(
 
 metal::float3 sky_gradient(
     SkyGradient b_4,
-    Ray ray_8
+    Ray ray_9
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_8.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_9.dir);
     float y = _e3.y;
     if (y < 0.0) {
         return metal::mix(b_4.horizon, b_4.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
@@ -1122,17 +1154,17 @@ metal::float3 sky_gradient(
 metal::float3 dispatch_miss(
     uint type_id_1,
     uint offset_3,
-    Ray ray_9,
+    Ray ray_10,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_3, params, _buffer_sizes);
-    metal::float3 _e3 = sky_gradient(_e2, ray_9);
+    metal::float3 _e3 = sky_gradient(_e2, ray_10);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_10,
+    Ray ray_11,
     constant FrameUniforms& frame,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1140,8 +1172,8 @@ metal::float3 miss(
     if (!(HAS_BACKGROUND)) {
         return metal::float3(0.0);
     }
-    FrameUniforms frame_3 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_10, params, _buffer_sizes);
+    FrameUniforms frame_4 = frame;
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11, params, _buffer_sizes);
     return _e9;
 }
 
@@ -1159,7 +1191,7 @@ Glass load_Glass(
 
 metal::float3 glass_shade(
     Glass m,
-    Ray ray_11,
+    Ray ray_12,
     Hit hit_1,
     metal::float3 secondary
 ) {
@@ -1179,7 +1211,7 @@ Mirror load_Mirror(
 
 metal::float3 mirror_shade(
     Mirror m_1,
-    Ray ray_12,
+    Ray ray_13,
     Hit hit_2,
     metal::float3 secondary_1
 ) {
@@ -1189,7 +1221,7 @@ metal::float3 mirror_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_2,
     uint offset_6,
-    Ray ray_13,
+    Ray ray_14,
     Hit hit_3,
     metal::float3 secondary_2,
     device type_5 const& params,
@@ -1198,12 +1230,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_2) {
         case 0u: {
             Glass _e5 = load_Glass(offset_6, params, _buffer_sizes);
-            metal::float3 _e6 = glass_shade(_e5, ray_13, hit_3, secondary_2);
+            metal::float3 _e6 = glass_shade(_e5, ray_14, hit_3, secondary_2);
             return _e6;
         }
         case 1u: {
             Mirror _e7 = load_Mirror(offset_6, params, _buffer_sizes);
-            metal::float3 _e8 = mirror_shade(_e7, ray_13, hit_3, secondary_2);
+            metal::float3 _e8 = mirror_shade(_e7, ray_14, hit_3, secondary_2);
             return _e8;
         }
         default: {
@@ -1214,7 +1246,7 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_14,
+    Ray ray_15,
     Candidate c_2,
     device type_5 const& params,
     device type_9 const& instances,
@@ -1224,15 +1256,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_14, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, metal::float3(0.0), params, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_15, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, metal::float3(0.0), params, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_3,
     uint offset_7,
-    Ray ray_15,
+    Ray ray_16,
     float t,
     metal::float3 radiance
 ) {
@@ -1240,7 +1272,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_16,
+    Ray ray_17,
     float t_1,
     metal::float3 radiance_1,
     device type_9 const& instances,
@@ -1249,14 +1281,14 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_16.medium == 0u) {
+    if (ray_17.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_9 = instances[ray_16.medium - 1u];
+    GpuInstance inst_9 = instances[ray_17.medium - 1u];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_16, t_1, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_17, t_1, radiance_1);
     return _e21;
 }
 
@@ -1292,7 +1324,7 @@ void rt_spawn(
 
 void glass_rays(
     Glass m_2,
-    Ray ray_17,
+    Ray ray_18,
     Hit hit_4,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
@@ -1300,7 +1332,7 @@ void glass_rays(
 ) {
     metal::float3 n_3 = {};
     float eta_1 = {};
-    metal::float3 _e4 = normalize_vec3f(ray_17.dir);
+    metal::float3 _e4 = normalize_vec3f(ray_18.dir);
     n_3 = hit_4.normal;
     eta_1 = 1.0 / m_2.ior;
     if (!(hit_4.front_face)) {
@@ -1328,13 +1360,13 @@ void glass_rays(
 
 void mirror_rays(
     Mirror m_3,
-    Ray ray_18,
+    Ray ray_19,
     Hit hit_5,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
     thread uint& spawn_count
 ) {
-    metal::float3 _e4 = normalize_vec3f(ray_18.dir);
+    metal::float3 _e4 = normalize_vec3f(ray_19.dir);
     rt_spawn(metal::reflect(_e4, hit_5.normal), m_3.tint, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
@@ -1342,7 +1374,7 @@ void mirror_rays(
 void dispatch_secondary_rays(
     uint type_id_4,
     uint offset_8,
-    Ray ray_19,
+    Ray ray_20,
     Hit hit_6,
     device type_5 const& params,
     thread type_16& spawn_dirs,
@@ -1353,12 +1385,12 @@ void dispatch_secondary_rays(
     switch(type_id_4) {
         case 0u: {
             Glass _e4 = load_Glass(offset_8, params, _buffer_sizes);
-            glass_rays(_e4, ray_19, hit_6, spawn_dirs, spawn_weights, spawn_count);
+            glass_rays(_e4, ray_20, hit_6, spawn_dirs, spawn_weights, spawn_count);
             return;
         }
         case 1u: {
             Mirror _e5 = load_Mirror(offset_8, params, _buffer_sizes);
-            mirror_rays(_e5, ray_19, hit_6, spawn_dirs, spawn_weights, spawn_count);
+            mirror_rays(_e5, ray_20, hit_6, spawn_dirs, spawn_weights, spawn_count);
             return;
         }
         default: {
@@ -1439,7 +1471,7 @@ metal::float3 trace(
     float t_2 = {};
     type_17 stack = {};
     uint depth = {};
-    Ray ray_20 = {};
+    Ray ray_21 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -1477,7 +1509,7 @@ metal::float3 trace(
     }
     stack = type_17 {};
     depth = 0u;
-    ray_20 = camera_ray;
+    ray_21 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -1496,10 +1528,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_20;
+            Ray _e67 = ray_21;
             Candidate _e69 = intersect_scene(_e67, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_20;
+            Ray _e70 = ray_21;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -1636,7 +1668,7 @@ metal::float3 trace(
             metal::float3 _e284 = spawn_origin(hit_10, _e283, dir_3);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_20 = Ray {_e284, 0.0, dir_3, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_21 = Ray {_e284, 0.0, dir_3, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 5u)].ray;
             s_ray = _e299;
@@ -1669,11 +1701,39 @@ metal::float3 finite_or_zero(
     return metal::select(metal::float3(0.0), c_3, _e3);
 }
 
+void pass_done(
+    uint index,
+    metal::float3 sum,
+    uint bad,
+    uint pass,
+    constant FrameUniforms& frame,
+    thread uint& ray_count,
+    device type_20& counters,
+    device type_11& accum,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e5, metal::memory_order_relaxed);
+    ray_count = 0u;
+    FrameUniforms _e10 = frame;
+    metal::float4 _e13 = metal::float4(sum, static_cast<float>(_e10.samples_per_pass));
+    if (pass == 0u) {
+        accum[index] = _e13;
+    } else {
+        metal::float4 _e18 = accum[index];
+        accum[index] = _e18 + _e13;
+    }
+    if (bad > 0u) {
+        metal::atomic_fetch_add_explicit(&counters[0], bad, metal::memory_order_relaxed);
+    }
+    return;
+}
+
 void render_pixel(
-    metal::uint2 pixel_4,
+    metal::uint2 pixel_5,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1691,15 +1751,17 @@ void render_pixel(
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 sum = {};
-    uint bad = {};
+    metal::float3 sum_1 = {};
+    uint bad_1 = {};
     uint s_1 = {};
-    Ray ray_21 = {};
-    FrameUniforms frame_4 = frame;
+    FrameUniforms frame_5 = frame;
     TileParams tile_2 = tile;
-    sum = metal::float3(0.0);
-    bad = 0u;
-    uint end_1 = frame_4.samples_per_pass;
+    uint index_1 = (pixel_5.y * tile_2.image_size.x) + pixel_5.x;
+    uint per_pass = frame_5.samples_per_pass;
+    uint first_1 = tile_2.frame * per_pass;
+    uint count_2 = per_pass * metal::max(frame_5.passes_per_dispatch, 1u);
+    sum_1 = metal::float3(0.0);
+    bad_1 = 0u;
     s_1 = 0u;
     uint2 loop_bound_6 = uint2(4294967295u);
     bool loop_init_3 = true;
@@ -1707,51 +1769,39 @@ void render_pixel(
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e46 = s_1;
-            s_1 = _e46 + 1u;
+            uint _e56 = s_1;
+            s_1 = _e56 + 1u;
         }
         loop_init_3 = false;
-        uint _e13 = s_1;
-        if (_e13 >= end_1) {
+        uint _e25 = s_1;
+        if (_e25 >= count_2) {
             break;
         }
-        uint _e18 = s_1;
-        uint sample_4 = (tile_2.frame * frame_4.samples_per_pass) + _e18;
-        rng_seed(pixel_4, sample_4, frame_4.seed, scratch, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_4.camera_type, frame_4.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-        ray_21 = _e23;
-        ray_21.depth = 0u;
-        ray_21.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_21.origin;
-        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-        ray_21.medium = _e33;
-        Ray _e34 = ray_21;
-        metal::float3 _e35 = trace(_e34, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-        metal::bool3 _e36 = is_finite_vec3f(_e35);
-        if (metal::all(_e36)) {
-            metal::float3 _e38 = sum;
-            sum = _e38 + _e35;
+        uint _e27 = s_1;
+        Ray _e29 = sample_camera_ray(pixel_5, first_1 + _e27, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+        metal::float3 _e30 = trace(_e29, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::bool3 _e31 = is_finite_vec3f(_e30);
+        if (metal::all(_e31)) {
+            metal::float3 _e33 = sum_1;
+            sum_1 = _e33 + _e30;
         } else {
-            metal::float3 _e40 = sum;
-            metal::float3 _e41 = finite_or_zero(_e35);
-            sum = _e40 + _e41;
-            uint _e43 = bad;
-            bad = _e43 + 1u;
+            metal::float3 _e35 = sum_1;
+            metal::float3 _e36 = finite_or_zero(_e30);
+            sum_1 = _e35 + _e36;
+            uint _e38 = bad_1;
+            bad_1 = _e38 + 1u;
         }
-    }
-    uint _e50 = ray_count;
-    metal::atomic_fetch_add_explicit(&counters[1], _e50, metal::memory_order_relaxed);
-    metal::float3 _e59 = sum;
-    metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_4.samples_per_pass));
-    uint _e63 = bad;
-    if (tile_2.frame == 0u) {
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e62;
-    } else {
-        metal::float4 _e69 = accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x];
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e69 + _e62;
-    }
-    if (_e63 > 0u) {
-        metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
+        uint _e41 = s_1;
+        uint _e44 = rem_u32_(_e41 + 1u, per_pass);
+        if (_e44 == 0u) {
+            metal::float3 _e47 = sum_1;
+            uint _e48 = bad_1;
+            uint _e50 = s_1;
+            uint _e51 = div_u32_(_e50, per_pass);
+            pass_done(index_1, _e47, _e48, tile_2.frame + _e51, frame, ray_count, counters, accum, _buffer_sizes);
+            sum_1 = metal::float3(0.0);
+            bad_1 = 0u;
+        }
     }
     return;
 }
@@ -1760,7 +1810,7 @@ void render_invocation(
     metal::uint2 id_1,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1802,7 +1852,7 @@ struct renderInput {
 , device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
-    type_3 scratch = {};
+    type_4 scratch = {};
     uint rng_state = {};
     uint F32_INF = 2139095040u;
     type_13 traversal_stack = {};

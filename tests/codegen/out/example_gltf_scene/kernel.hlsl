@@ -21,6 +21,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
+    uint passes_per_dispatch;
 };
 
 struct Ray {
@@ -857,10 +858,10 @@ float4 texel_at(uint t, uint xi, uint yi)
 {
     uint base_1 = asuint(params.Load(t*4));
     uint _e10 = asuint(params.Load((t + 1u)*4));
-    uint index = ((yi * max(_e10, 1u)) + xi);
+    uint index_1 = ((yi * max(_e10, 1u)) + xi);
     uint format = asuint(params.Load((t + 3u)*4));
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
-        uint _e25 = asuint(texels.Load((base_1 + index)*4));
+        uint _e25 = asuint(texels.Load((base_1 + index_1)*4));
         float4 c_9 = (float4(_e25 & 0xFF, _e25 >> 8 & 0xFF, _e25 >> 16 & 0xFF, _e25 >> 24) / 255.0);
         const float _e28 = srgb_channel(c_9.x);
         const float _e30 = srgb_channel(c_9.y);
@@ -868,12 +869,12 @@ float4 texel_at(uint t, uint xi, uint yi)
         return float4(_e28, _e30, _e32, c_9.w);
     }
     if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
-        uint _e40 = asuint(texels.Load((base_1 + index)*4));
+        uint _e40 = asuint(texels.Load((base_1 + index_1)*4));
         return (float4(_e40 & 0xFF, _e40 >> 8 & 0xFF, _e40 >> 16 & 0xFF, _e40 >> 24) / 255.0);
     }
-    uint _e47 = asuint(texels.Load((base_1 + (index * RGBA16F_TEXEL_WORDS))*4));
+    uint _e47 = asuint(texels.Load((base_1 + (index_1 * RGBA16F_TEXEL_WORDS))*4));
     float2 rg = float2(f16tof32(_e47), f16tof32((_e47) >> 16));
-    uint _e56 = asuint(texels.Load(((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)*4));
+    uint _e56 = asuint(texels.Load(((base_1 + (index_1 * RGBA16F_TEXEL_WORDS)) + 1u)*4));
     float2 ba = float2(f16tof32(_e56), f16tof32((_e56) >> 16));
     return float4(rg, ba);
 }
@@ -912,8 +913,10 @@ float4 sample_texture(uint t_1, float2 uv)
 
 uint frame_index_query()
 {
-    TileParams _e1 = tile;
-    return _e1.frame;
+    uint _e5 = scratch[min(uint(min(SCRATCH_RNG_INDEX, 24u)), 24u)];
+    FrameUniforms _e7 = frame;
+    const uint _e9 = div_u32_(_e5, _e7.samples_per_pass);
+    return _e9;
 }
 
 uint gltf_pcg(uint x_5)
@@ -1245,13 +1248,31 @@ uint medium_at(float3 p_4, uint exclude)
     return _e62;
 }
 
+Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
+{
+    Ray ray_13 = (Ray)0;
+
+    FrameUniforms frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed);
+    const Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
+    ray_13 = _e7;
+    ray_13.depth = 0u;
+    ray_13.kind = RAY_CAMERA;
+    float3 _e15 = ray_13.origin;
+    const uint _e17 = medium_at(_e15, NO_HIT);
+    ray_13.medium = _e17;
+    Ray _e18 = ray_13;
+    const Ray ray_31 = _e18;
+    return ray_31;
+}
+
 float3 node_frame_hi(GpuNode header)
 {
     const float3 _e5 = node_point(header.min_, header.max_, (65535u).xxx);
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_13, bool shadow_2)
+Candidate intersect_scene(Ray ray_14, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -1261,22 +1282,22 @@ Candidate intersect_scene(Ray ray_13, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_13.tmax);
+    const Candidate _e7 = no_candidate(ray_14.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = frame;
-    if ((frame_2.instance_count == 0u)) {
+    FrameUniforms frame_3 = frame;
+    if ((frame_3.instance_count == 0u)) {
         Candidate _e14 = best_2;
         const Candidate candidate_5 = _e14;
         return candidate_5;
     }
-    const float3 _e16 = safe_inverse(ray_13.dir);
-    uint base_3 = frame_2.tlas_root;
+    const float3 _e16 = safe_inverse(ray_14.dir);
+    uint base_3 = frame_3.tlas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_3*32+0)), asuint(nodes.Load(base_3*32+12)), asfloat(nodes.Load3(base_3*32+16)), asuint(nodes.Load(base_3*32+28)));
     float3 origin_5 = header_2.min_;
     float3 scale_3 = header_2.max_;
     const float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    const float _e28 = slab(origin_5, _e23, ray_13.origin, _e16, ray_13.tmin, _e27);
+    const float _e28 = slab(origin_5, _e23, ray_14.origin, _e16, ray_14.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == asfloat(_e30))) {
         Candidate _e33 = best_2;
@@ -1295,7 +1316,7 @@ Candidate intersect_scene(Ray ray_13, bool shadow_2)
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_13, _e55, shadow_2);
+                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_14, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -1308,7 +1329,7 @@ Candidate intersect_scene(Ray ray_13, bool shadow_2)
             uint _e63 = child_1;
             GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_3 + _e63)*32+0)), asuint(nodes.Load((base_3 + _e63)*32+12)), asfloat(nodes.Load3((base_3 + _e63)*32+16)), asuint(nodes.Load((base_3 + _e63)*32+28)));
             float _e69 = best_2.t;
-            const float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_13, _e16, _e69);
+            const float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_14, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1379,9 +1400,9 @@ SkyGradient load_SkyGradient(uint offset_4)
     return skygradient;
 }
 
-float3 sky_gradient(SkyGradient b_5, Ray ray_14)
+float3 sky_gradient(SkyGradient b_5, Ray ray_15)
 {
-    const float3 _e3 = normalize_vec3f(ray_14.dir);
+    const float3 _e3 = normalize_vec3f(ray_15.dir);
     float y = _e3.y;
     if ((y < 0.0)) {
         return lerp(b_5.horizon, b_5.ground, (min((-(y) * 4.0), 1.0)).xxx);
@@ -1389,26 +1410,26 @@ float3 sky_gradient(SkyGradient b_5, Ray ray_14)
     return lerp(b_5.horizon, b_5.zenith, (sqrt(y)).xxx);
 }
 
-float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_15)
+float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_16)
 {
     const SkyGradient _e2 = load_SkyGradient(offset_5);
-    const float3 _e3 = sky_gradient(_e2, ray_15);
+    const float3 _e3 = sky_gradient(_e2, ray_16);
     return _e3;
 }
 
-float3 miss(Ray ray_16)
+float3 miss(Ray ray_17)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
-    FrameUniforms frame_3 = frame;
-    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_16);
+    FrameUniforms frame_4 = frame;
+    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17);
     return _e9;
 }
 
-float3 shading_normal(Ray ray_17, Hit hit_5)
+float3 shading_normal(Ray ray_18, Hit hit_5)
 {
-    float3 ng = faceforward(hit_5.geometric_normal, ray_17.dir, hit_5.geometric_normal);
+    float3 ng = faceforward(hit_5.geometric_normal, ray_18.dir, hit_5.geometric_normal);
     return faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1643,8 +1664,8 @@ Ray shadow_ray(float3 position_4, float3 normal_5, float3 dir_2, float dist_1)
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_2.x, l_2.y), l_2.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_31 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_31;
+    const Ray ray_32 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_32;
 }
 
 float shadow_query(float3 position_5, float3 normal_6, float3 dir_3, float dist_2)
@@ -1664,12 +1685,12 @@ LightSample sample_light_deferred(uint i_4, float3 position_6, float3 normal_7)
     uint resolved = (uint)0;
     uint bits_1 = (uint)0;
 
-    FrameUniforms frame_4 = frame;
-    if ((i_4 >= frame_4.light_count)) {
+    FrameUniforms frame_5 = frame;
+    if ((i_4 >= frame_5.light_count)) {
         const LightSample lightsample_6 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_6;
     }
-    uint entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_5.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     uint type_id_7 = asuint(params.Load(entry*4));
     uint offset_14 = asuint(params.Load((entry + 1u)*4));
     uint start = rng_state;
@@ -1755,13 +1776,13 @@ float pbr_smith_v(float ndl, float ndv, float a2_1)
     return (0.5 / max((gv + gl), 1e-20));
 }
 
-float3 gltf_radiance(float3 c_5, float metallic, float roughness_1, float occlusion, float3 emissive, Ray ray_18, Hit hit_6)
+float3 gltf_radiance(float3 c_5, float metallic, float roughness_1, float occlusion, float3 emissive, Ray ray_19, Hit hit_6)
 {
     float3 color = (float3)0;
     uint i_5 = (uint)0;
 
-    const float3 _e7 = shading_normal(ray_18, hit_6);
-    const float3 _e9 = normalize_vec3f(ray_18.dir);
+    const float3 _e7 = shading_normal(ray_19, hit_6);
+    const float3 _e9 = normalize_vec3f(ray_19.dir);
     float3 v_4 = -(_e9);
     float metal = saturate(metallic);
     const float _e12 = pbr_alpha2_(roughness_1);
@@ -1800,11 +1821,11 @@ float3 gltf_radiance(float3 c_5, float metallic, float roughness_1, float occlus
     return _e68;
 }
 
-float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_19, Hit hit_7)
+float3 gltf_masked_shade(GltfMaskedMaterial m_1, Ray ray_20, Hit hit_7)
 {
     const float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv);
     float3 c_11 = (m_1.base_color.xyz * _e7.xyz);
-    const float3 _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_19, hit_7);
+    const float3 _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_20, hit_7);
     return _e14;
 }
 
@@ -1834,11 +1855,11 @@ GltfMaterial load_GltfMaterial(uint offset_9)
     return gltfmaterial;
 }
 
-float3 gltf_shade(GltfMaterial m_2, Ray ray_20, Hit hit_8)
+float3 gltf_shade(GltfMaterial m_2, Ray ray_21, Hit hit_8)
 {
     const float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv);
     float3 c_12 = (m_2.base_color.xyz * _e7.xyz);
-    const float3 _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_20, hit_8);
+    const float3 _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_21, hit_8);
     return _e14;
 }
 
@@ -1846,17 +1867,17 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_21, Hit hit_9, float3 secondary)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_22, Hit hit_9, float3 secondary)
 {
     switch(type_id_4) {
         case 0u: {
             const GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10);
-            const float3 _e5 = gltf_masked_shade(_e4, ray_21, hit_9);
+            const float3 _e5 = gltf_masked_shade(_e4, ray_22, hit_9);
             return _e5;
         }
         case 1u: {
             const GltfMaterial _e6 = load_GltfMaterial(offset_10);
-            const float3 _e7 = gltf_shade(_e6, ray_21, hit_9);
+            const float3 _e7 = gltf_shade(_e6, ray_22, hit_9);
             return _e7;
         }
         default: {
@@ -1866,36 +1887,36 @@ float3 dispatch_closest_hit(uint type_id_4, uint offset_10, Ray ray_21, Hit hit_
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_22, Candidate c_6)
+float3 shade_direct(Ray ray_23, Candidate c_6)
 {
     GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4(c_6.slot*128+0)), asfloat(instances.Load4(c_6.slot*128+16)), asfloat(instances.Load4(c_6.slot*128+32)), asfloat(instances.Load4(c_6.slot*128+48)), asfloat(instances.Load4(c_6.slot*128+64)), asfloat(instances.Load4(c_6.slot*128+80)), asuint(instances.Load(c_6.slot*128+96)), asuint(instances.Load(c_6.slot*128+100)), asuint(instances.Load(c_6.slot*128+104)), asuint(instances.Load(c_6.slot*128+108)), asuint(instances.Load(c_6.slot*128+112)), asuint(instances.Load(c_6.slot*128+116)), asuint(instances.Load(c_6.slot*128+120)), asuint(instances.Load(c_6.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_22, c_6);
-    const float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_22, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_23, c_6);
+    const float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_23, _e6, (0.0).xxx);
     return _e11;
 }
 
-float3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_23, float t_2, float3 radiance)
+float3 dispatch_medium(uint type_id_5, uint offset_11, Ray ray_24, float t_2, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_24, float t_3, float3 radiance_1)
+float3 through_medium(Ray ray_25, float t_3, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_24.medium == 0u)) {
+    if ((ray_25.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4((ray_24.medium - 1u)*128+0)), asfloat(instances.Load4((ray_24.medium - 1u)*128+16)), asfloat(instances.Load4((ray_24.medium - 1u)*128+32)), asfloat(instances.Load4((ray_24.medium - 1u)*128+48)), asfloat(instances.Load4((ray_24.medium - 1u)*128+64)), asfloat(instances.Load4((ray_24.medium - 1u)*128+80)), asuint(instances.Load((ray_24.medium - 1u)*128+96)), asuint(instances.Load((ray_24.medium - 1u)*128+100)), asuint(instances.Load((ray_24.medium - 1u)*128+104)), asuint(instances.Load((ray_24.medium - 1u)*128+108)), asuint(instances.Load((ray_24.medium - 1u)*128+112)), asuint(instances.Load((ray_24.medium - 1u)*128+116)), asuint(instances.Load((ray_24.medium - 1u)*128+120)), asuint(instances.Load((ray_24.medium - 1u)*128+124)));
+    GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4((ray_25.medium - 1u)*128+0)), asfloat(instances.Load4((ray_25.medium - 1u)*128+16)), asfloat(instances.Load4((ray_25.medium - 1u)*128+32)), asfloat(instances.Load4((ray_25.medium - 1u)*128+48)), asfloat(instances.Load4((ray_25.medium - 1u)*128+64)), asfloat(instances.Load4((ray_25.medium - 1u)*128+80)), asuint(instances.Load((ray_25.medium - 1u)*128+96)), asuint(instances.Load((ray_25.medium - 1u)*128+100)), asuint(instances.Load((ray_25.medium - 1u)*128+104)), asuint(instances.Load((ray_25.medium - 1u)*128+108)), asuint(instances.Load((ray_25.medium - 1u)*128+112)), asuint(instances.Load((ray_25.medium - 1u)*128+116)), asuint(instances.Load((ray_25.medium - 1u)*128+120)), asuint(instances.Load((ray_25.medium - 1u)*128+124)));
     if (((inst_10.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_24, t_3, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_25, t_3, radiance_1);
     return _e21;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_25, Hit hit_10)
+void dispatch_secondary_rays(uint type_id_6, uint offset_12, Ray ray_26, Hit hit_10)
 {
     return;
 }
@@ -1951,7 +1972,7 @@ float3 trace(Ray camera_ray)
     float t_4 = (float)0;
     Frame stack[4] = (Frame[4])0;
     uint depth = (uint)0;
-    Ray ray_26 = (Ray)0;
+    Ray ray_27 = (Ray)0;
     float3 value = (float3)0;
     bool have_value = (bool)0;
     Ray s_ray = (Ray)0;
@@ -1990,7 +2011,7 @@ float3 trace(Ray camera_ray)
     }
     stack = ZeroValuearray4_Frame_();
     depth = 0u;
-    ray_26 = camera_ray;
+    ray_27 = camera_ray;
     value = (0.0).xxx;
     have_value = false;
     s_ray = camera_ray;
@@ -2009,10 +2030,10 @@ float3 trace(Ray camera_ray)
         bool _e62 = have_value;
         bool _e64 = waiting;
         if ((!(_e62) && !(_e64))) {
-            Ray _e67 = ray_26;
+            Ray _e67 = ray_27;
             const Candidate _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            Ray _e70 = ray_26;
+            Ray _e70 = ray_27;
             s_ray = _e70;
             s_sum = (0.0).xxx;
             fresh = true;
@@ -2149,7 +2170,7 @@ float3 trace(Ray camera_ray)
             const float3 _e284 = spawn_origin(hit_15, _e283, dir_8);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_26 = ConstructRay(_e284, 0.0, dir_8, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_27 = ConstructRay(_e284, 0.0, dir_8, asfloat(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             Ray _e299 = stack[min(uint(min(top_1, 3u)), 3u)].ray;
             s_ray = _e299;
@@ -2180,18 +2201,39 @@ float3 finite_or_zero(float3 c_7)
     return (_e3 ? c_7 : (0.0).xxx);
 }
 
-void render_pixel(uint2 pixel_4)
+void pass_done(uint index, float3 sum, uint bad, uint pass_)
 {
-    float3 sum = (float3)0;
-    uint bad = (uint)0;
-    uint s_1 = (uint)0;
-    Ray ray_27 = (Ray)0;
+    uint _e5 = ray_count;
+    counters.InterlockedAdd(4, _e5);
+    ray_count = 0u;
+    FrameUniforms _e10 = frame;
+    float4 _e13 = float4(sum, float(_e10.samples_per_pass));
+    if ((pass_ == 0u)) {
+        accum.Store4(index*16, asuint(_e13));
+    } else {
+        float4 _e18 = asfloat(accum.Load4(index*16));
+        accum.Store4(index*16, asuint((_e18 + _e13)));
+    }
+    if ((bad > 0u)) {
+        counters.InterlockedAdd(0, bad);
+    }
+    return;
+}
 
-    FrameUniforms frame_5 = frame;
+void render_pixel(uint2 pixel_5)
+{
+    float3 sum_1 = (float3)0;
+    uint bad_1 = (uint)0;
+    uint s_1 = (uint)0;
+
+    FrameUniforms frame_6 = frame;
     TileParams tile_2 = tile;
-    sum = (0.0).xxx;
-    bad = 0u;
-    uint end_1 = frame_5.samples_per_pass;
+    uint index_2 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_1 = (tile_2.frame * per_pass);
+    uint count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
+    sum_1 = (0.0).xxx;
+    bad_1 = 0u;
     s_1 = 0u;
     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_4 = true;
@@ -2199,51 +2241,39 @@ void render_pixel(uint2 pixel_4)
         if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e46 = s_1;
-            s_1 = (_e46 + 1u);
+            uint _e56 = s_1;
+            s_1 = (_e56 + 1u);
         }
         loop_init_4 = false;
-        uint _e13 = s_1;
-        if ((_e13 >= end_1)) {
+        uint _e25 = s_1;
+        if ((_e25 >= count_2)) {
             break;
         }
-        uint _e18 = s_1;
-        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_4, sample_4, frame_5.seed);
-        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
-        ray_27 = _e23;
-        ray_27.depth = 0u;
-        ray_27.kind = RAY_CAMERA;
-        float3 _e31 = ray_27.origin;
-        const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_27.medium = _e33;
-        Ray _e34 = ray_27;
-        const float3 _e35 = trace(_e34);
-        const bool3 _e36 = is_finite_vec3f(_e35);
-        if (all(_e36)) {
-            float3 _e38 = sum;
-            sum = (_e38 + _e35);
+        uint _e27 = s_1;
+        const Ray _e29 = sample_camera_ray(pixel_5, (first_1 + _e27));
+        const float3 _e30 = trace(_e29);
+        const bool3 _e31 = is_finite_vec3f(_e30);
+        if (all(_e31)) {
+            float3 _e33 = sum_1;
+            sum_1 = (_e33 + _e30);
         } else {
-            float3 _e40 = sum;
-            const float3 _e41 = finite_or_zero(_e35);
-            sum = (_e40 + _e41);
-            uint _e43 = bad;
-            bad = (_e43 + 1u);
+            float3 _e35 = sum_1;
+            const float3 _e36 = finite_or_zero(_e30);
+            sum_1 = (_e35 + _e36);
+            uint _e38 = bad_1;
+            bad_1 = (_e38 + 1u);
         }
-    }
-    uint _e50 = ray_count;
-    counters.InterlockedAdd(4, _e50);
-    float3 _e59 = sum;
-    float4 _e62 = float4(_e59, float(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if ((tile_2.frame == 0u)) {
-        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint(_e62));
-    } else {
-        float4 _e69 = asfloat(accum.Load4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16));
-        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint((_e69 + _e62)));
-    }
-    if ((_e63 > 0u)) {
-        counters.InterlockedAdd(0, _e63);
+        uint _e41 = s_1;
+        const uint _e44 = rem_u32_((_e41 + 1u), per_pass);
+        if ((_e44 == 0u)) {
+            float3 _e47 = sum_1;
+            uint _e48 = bad_1;
+            uint _e50 = s_1;
+            const uint _e51 = div_u32_(_e50, per_pass);
+            pass_done(index_2, _e47, _e48, (tile_2.frame + _e51));
+            sum_1 = (0.0).xxx;
+            bad_1 = 0u;
+        }
     }
     return;
 }

@@ -37,9 +37,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
-};
-struct type_3 {
-    uint inner[25];
+    uint passes_per_dispatch;
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -50,6 +48,9 @@ struct Ray {
     uint kind;
     uint medium;
     char _pad7[4];
+};
+struct type_4 {
+    uint inner[25];
 };
 typedef uint type_5[1];
 struct Pinhole {
@@ -329,7 +330,7 @@ void rng_resume(
     uint sample,
     uint seed,
     uint state,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     scratch.inner[metal::min(SCRATCH_RNG_INDEX, 24u)] = sample;
@@ -345,7 +346,7 @@ void rng_seed(
     metal::uint2 pixel_1,
     uint sample_1,
     uint seed_1,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     rng_resume(pixel_1, sample_1, seed_1, 0u, scratch, rng_state);
@@ -431,7 +432,7 @@ uint sobol_second_reversed(
 }
 
 float rand_next(
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     uint x_2 = {};
@@ -454,7 +455,7 @@ float rand_next(
 }
 
 metal::float2 rand2_next(
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     float _e0 = rand_next(scratch, rng_state);
@@ -474,7 +475,7 @@ Ray pinhole_ray(
     uint sample_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -506,7 +507,7 @@ Ray dispatch_ray_generation(
     uint sample_3,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -829,10 +830,10 @@ metal::float4 texel_at(
 ) {
     uint base_1 = params[t];
     uint _e10 = params[t + 1u];
-    uint index = (yi * metal::max(_e10, 1u)) + xi;
+    uint index_1 = (yi * metal::max(_e10, 1u)) + xi;
     uint format = params[t + 3u];
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        uint _e25 = texels[base_1 + index];
+        uint _e25 = texels[base_1 + index_1];
         metal::float4 c_9 = metal::unpack_unorm4x8_to_float(_e25);
         float _e28 = srgb_channel(c_9.x);
         float _e30 = srgb_channel(c_9.y);
@@ -840,12 +841,12 @@ metal::float4 texel_at(
         return metal::float4(_e28, _e30, _e32, c_9.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
-        uint _e40 = texels[base_1 + index];
+        uint _e40 = texels[base_1 + index_1];
         return metal::unpack_unorm4x8_to_float(_e40);
     }
-    uint _e47 = texels[base_1 + (index * RGBA16F_TEXEL_WORDS)];
+    uint _e47 = texels[base_1 + (index_1 * RGBA16F_TEXEL_WORDS)];
     metal::float2 rg = float2(as_type<half2>(_e47));
-    uint _e56 = texels[(base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
+    uint _e56 = texels[(base_1 + (index_1 * RGBA16F_TEXEL_WORDS)) + 1u];
     metal::float2 ba = float2(as_type<half2>(_e56));
     return metal::float4(rg, ba);
 }
@@ -888,10 +889,13 @@ metal::float4 sample_texture(
 }
 
 uint frame_index_query(
-    constant TileParams& tile
+    constant FrameUniforms& frame,
+    thread type_4& scratch
 ) {
-    TileParams _e1 = tile;
-    return _e1.frame;
+    uint _e5 = scratch.inner[metal::min(SCRATCH_RNG_INDEX, 24u)];
+    FrameUniforms _e7 = frame;
+    uint _e9 = div_u32_(_e5, _e7.samples_per_pass);
+    return _e9;
 }
 
 uint gltf_pcg(
@@ -905,7 +909,8 @@ uint gltf_pcg(
 float gltf_coverage(
     Ray ray_5,
     Hit hit_1,
-    constant TileParams& tile
+    constant FrameUniforms& frame,
+    thread type_4& scratch
 ) {
     uint h = {};
     metal::uint3 o_1 = as_type<metal::uint3>(ray_5.origin);
@@ -914,7 +919,7 @@ float gltf_coverage(
     uint _e20 = h;
     h = ((_e20 ^ (d_4.y * 668265263u)) ^ (d_4.z * 374761393u)) ^ (hit_1.primitive * 3550635116u);
     uint _e33 = h;
-    uint _e38 = frame_index_query(tile);
+    uint _e38 = frame_index_query(frame, scratch);
     h = (_e33 ^ (hit_1.instance * 4251993797u)) ^ (_e38 * 3042594569u);
     uint _e42 = h;
     uint _e43 = gltf_pcg(_e42);
@@ -931,13 +936,14 @@ bool gltf_counts(
     uint double_sided,
     Ray ray_6,
     Hit hit_2,
-    constant TileParams& tile
+    constant FrameUniforms& frame,
+    thread type_4& scratch
 ) {
     if ((double_sided == 0u) && (hit_2.front_face == (ray_6.kind == RAY_SHADOW))) {
         return false;
     }
     if (blend != 0u) {
-        float _e17 = gltf_coverage(ray_6, hit_2, tile);
+        float _e17 = gltf_coverage(ray_6, hit_2, frame, scratch);
         return _e17 < alpha;
     }
     return alpha >= cutoff;
@@ -947,14 +953,15 @@ bool gltf_masked_any_hit(
     GltfMaskedMaterial m,
     Ray ray_7,
     Hit hit_3,
-    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread type_4& scratch,
     device type_5 const& params,
     device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e7 = sample_texture(m.base_texture, hit_3.uv, params, texels, _buffer_sizes);
     float alpha_1 = m.base_color.w * _e7.w;
-    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_7, hit_3, tile);
+    bool _e13 = gltf_counts(alpha_1, m.alpha_cutoff, m.blend, m.double_sided, ray_7, hit_3, frame, scratch);
     return _e13;
 }
 
@@ -963,13 +970,14 @@ bool dispatch_any_hit(
     uint offset_3,
     Ray ray_8,
     Hit hit_4,
-    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread type_4& scratch,
     device type_5 const& params,
     device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GltfMaskedMaterial _e3 = load_GltfMaskedMaterial(offset_3, params, _buffer_sizes);
-    bool _e4 = gltf_masked_any_hit(_e3, ray_8, hit_4, tile, params, texels, _buffer_sizes);
+    bool _e4 = gltf_masked_any_hit(_e3, ray_8, hit_4, frame, scratch, params, texels, _buffer_sizes);
     return _e4;
 }
 
@@ -977,7 +985,8 @@ bool accept(
     GpuInstance inst_5,
     Ray ray_9,
     Candidate c_3,
-    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread type_4& scratch,
     device type_5 const& params,
     device type_9 const& instances,
     device type_11 const& triangles,
@@ -1001,7 +1010,7 @@ bool accept(
         float shaded = hit_error;
         Hit _e19 = finish_hit(ray_9, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
         hit_error = shaded;
-        bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_9, _e19, tile, params, texels, _buffer_sizes);
+        bool _e23 = dispatch_any_hit(inst_5.material_type, inst_5.material_offset, ray_9, _e19, frame, scratch, params, texels, _buffer_sizes);
         return _e23;
     }
     return true;
@@ -1092,7 +1101,8 @@ Candidate intersect_mesh(
     Ray ray_11,
     Candidate best_in,
     bool shadow,
-    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1154,7 +1164,7 @@ Candidate intersect_mesh(
                     uint tag = as_type<uint>(_e58.w);
                     uint owner = (tag != 0u) ? ((inst_6.object + tag) - 1u) : slot_2;
                     Candidate c_10 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e73 = accept(inst_6, world_ray, c_10, tile, params, instances, triangles, hit_error, attributes, texels, _buffer_sizes);
+                    bool _e73 = accept(inst_6, world_ray, c_10, frame, scratch, params, instances, triangles, hit_error, attributes, texels, _buffer_sizes);
                     if (_e73) {
                         best = c_10;
                         if (shadow) {
@@ -1220,7 +1230,8 @@ Candidate intersect_object(
     Ray ray_12,
     Candidate best_1,
     bool shadow_1,
-    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1239,7 +1250,7 @@ Candidate intersect_object(
     r_2.tmax = best_1.t;
     if (inst_8.geometry_type == MESH_GEOMETRY) {
         Ray _e14 = r_2;
-        Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_12, _e14, best_1, shadow_1, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+        Candidate _e15 = intersect_mesh(inst_8, slot_3, ray_12, _e14, best_1, shadow_1, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
         return _e15;
     }
     return best_1;
@@ -1248,8 +1259,8 @@ Candidate intersect_object(
 uint medium_at(
     metal::float3 p_4,
     uint exclude,
-    constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1295,7 +1306,7 @@ uint medium_at(
         if (slot_4 != exclude) {
             uint _e41 = F32_INF;
             Candidate _e43 = no_candidate(as_type<float>(_e41));
-            Candidate _e45 = intersect_object(slot_4, probe, _e43, false, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+            Candidate _e45 = intersect_object(slot_4, probe, _e43, false, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
             float _e50 = nearest;
             if ((_e45.slot != NO_HIT) && (_e45.t < _e50)) {
                 Hit _e53 = finish_hit(probe, _e45, instances, triangles, hit_error, attributes, _buffer_sizes);
@@ -1310,6 +1321,38 @@ uint medium_at(
     return _e62;
 }
 
+Ray sample_camera_ray(
+    metal::uint2 pixel_4,
+    uint sample_4,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread type_4& scratch,
+    thread uint& rng_state,
+    device type_5 const& params,
+    thread uint& F32_INF,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread float& hit_error,
+    device type_13 const& attributes,
+    device type_5 const& texels,
+    thread type_16& traversal_stack,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Ray ray_13 = {};
+    FrameUniforms frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
+    Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
+    ray_13 = _e7;
+    ray_13.depth = 0u;
+    ray_13.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_13.origin;
+    uint _e17 = medium_at(_e15, NO_HIT, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+    ray_13.medium = _e17;
+    Ray _e18 = ray_13;
+    return _e18;
+}
+
 metal::float3 node_frame_hi(
     GpuNode header
 ) {
@@ -1318,10 +1361,10 @@ metal::float3 node_frame_hi(
 }
 
 Candidate intersect_scene(
-    Ray ray_13,
+    Ray ray_14,
     bool shadow_2,
-    constant TileParams& tile,
     constant FrameUniforms& frame,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1341,21 +1384,21 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_13.tmax);
+    Candidate _e7 = no_candidate(ray_14.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = frame;
-    if (frame_2.instance_count == 0u) {
+    FrameUniforms frame_3 = frame;
+    if (frame_3.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_13.dir);
-    uint base_3 = frame_2.tlas_root;
+    metal::float3 _e16 = safe_inverse(ray_14.dir);
+    uint base_3 = frame_3.tlas_root;
     GpuNode header_2 = nodes[base_3];
     metal::float3 origin_5 = header_2.min;
     metal::float3 scale_3 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_13.origin, _e16, ray_13.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_14.origin, _e16, ray_14.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
@@ -1373,7 +1416,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_13, _e55, shadow_2, tile, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_14, _e55, shadow_2, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1385,7 +1428,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_8 = nodes[base_3 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_13, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_14, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1451,9 +1494,9 @@ SkyGradient load_SkyGradient(
 
 metal::float3 sky_gradient(
     SkyGradient b_5,
-    Ray ray_14
+    Ray ray_15
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_14.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_15.dir);
     float y = _e3.y;
     if (y < 0.0) {
         return metal::mix(b_5.horizon, b_5.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
@@ -1464,17 +1507,17 @@ metal::float3 sky_gradient(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_5,
-    Ray ray_15,
+    Ray ray_16,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_5, params, _buffer_sizes);
-    metal::float3 _e3 = sky_gradient(_e2, ray_15);
+    metal::float3 _e3 = sky_gradient(_e2, ray_16);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_16,
+    Ray ray_17,
     constant FrameUniforms& frame,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1482,16 +1525,16 @@ metal::float3 miss(
     if (!(HAS_BACKGROUND)) {
         return metal::float3(0.0);
     }
-    FrameUniforms frame_3 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_16, params, _buffer_sizes);
+    FrameUniforms frame_4 = frame;
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17, params, _buffer_sizes);
     return _e9;
 }
 
 metal::float3 shading_normal(
-    Ray ray_17,
+    Ray ray_18,
     Hit hit_5
 ) {
-    metal::float3 ng = metal::faceforward(hit_5.geometric_normal, ray_17.dir, hit_5.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_5.geometric_normal, ray_18.dir, hit_5.geometric_normal);
     return metal::faceforward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1527,7 +1570,7 @@ DirectionalLight load_DirectionalLight(
 float shadow_preset(
     metal::float3 normal,
     metal::float3 dir,
-    thread type_3& scratch
+    thread type_4& scratch
 ) {
     uint mode_1 = scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 24u)];
     if (mode_1 == SHADOW_UNOCCLUDED) {
@@ -1542,7 +1585,7 @@ float shadow_preset(
 void scratch_store3f(
     uint i_2,
     metal::float3 v_2,
-    thread type_3& scratch
+    thread type_4& scratch
 ) {
     metal::uint3 b_9 = as_type<metal::uint3>(v_2);
     scratch.inner[metal::min(i_2, 24u)] = b_9.x;
@@ -1556,7 +1599,7 @@ float shadow_deferred(
     metal::float3 normal_1,
     metal::float3 dir_1,
     float dist,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1591,7 +1634,7 @@ LightSample directional_light(
     DirectionalLight l,
     metal::float3 position_1,
     metal::float3 normal_2,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& F32_INF,
     device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
@@ -1629,7 +1672,7 @@ LightSample point_light(
     PointLight l_1,
     metal::float3 position_2,
     metal::float3 normal_3,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_18& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1652,7 +1695,7 @@ LightSample dispatch_light(
     uint offset_8,
     metal::float3 position_3,
     metal::float3 normal_4,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_18& counters,
@@ -1678,7 +1721,7 @@ LightSample dispatch_light(
 
 metal::float3 scratch_load3f(
     uint i_3,
-    thread type_3& scratch
+    thread type_4& scratch
 ) {
     uint _e5 = scratch.inner[metal::min(i_3, 24u)];
     uint _e12 = scratch.inner[metal::min(i_3 + 1u, 24u)];
@@ -1749,9 +1792,8 @@ float shadow_query(
     metal::float3 normal_6,
     metal::float3 dir_3,
     float dist_2,
-    constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1769,7 +1811,7 @@ float shadow_query(
         return _e4;
     }
     Ray _e7 = shadow_ray(position_5, normal_6, dir_3, dist_2, F32_INF, hit_error);
-    Candidate _e9 = intersect_scene(_e7, true, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+    Candidate _e9 = intersect_scene(_e7, true, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
     return (_e9.slot != NO_HIT) ? 0.0 : 1.0;
 }
 
@@ -1777,9 +1819,8 @@ LightSample sample_light_deferred(
     uint i_4,
     metal::float3 position_6,
     metal::float3 normal_7,
-    constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1797,11 +1838,11 @@ LightSample sample_light_deferred(
     uint after = {};
     uint resolved = {};
     uint bits_1 = {};
-    FrameUniforms frame_4 = frame;
-    if (i_4 >= frame_4.light_count) {
+    FrameUniforms frame_5 = frame;
+    if (i_4 >= frame_5.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry = frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE);
+    uint entry = frame_5.light_table + (i_4 * LIGHT_ENTRY_STRIDE);
     uint type_id_7 = params[entry];
     uint offset_14 = params[entry + 1u];
     uint start = rng_state;
@@ -1838,7 +1879,7 @@ LightSample sample_light_deferred(
         metal::float3 _e85 = scratch_load3f(SCRATCH_LIGHT_QUERY + 3u, scratch);
         metal::float3 _e88 = scratch_load3f(SCRATCH_LIGHT_QUERY + 6u, scratch);
         uint _e95 = scratch.inner[metal::min(SCRATCH_LIGHT_QUERY + 9u, 24u)];
-        float _e97 = shadow_query(_e82, _e85, _e88, as_type<float>(_e95), tile, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+        float _e97 = shadow_query(_e82, _e85, _e88, as_type<float>(_e95), frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
         uint _e99 = rng_state;
         after = _e99;
         if (!((_e97 == 0.0))) {
@@ -1897,11 +1938,10 @@ metal::float3 gltf_radiance(
     float roughness_1,
     float occlusion,
     metal::float3 emissive,
-    Ray ray_18,
+    Ray ray_19,
     Hit hit_6,
-    constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1918,8 +1958,8 @@ metal::float3 gltf_radiance(
 ) {
     metal::float3 color = {};
     uint i_5 = {};
-    metal::float3 _e7 = shading_normal(ray_18, hit_6);
-    metal::float3 _e9 = normalize_vec3f(ray_18.dir);
+    metal::float3 _e7 = shading_normal(ray_19, hit_6);
+    metal::float3 _e9 = normalize_vec3f(ray_19.dir);
     metal::float3 v_4 = -(_e9);
     float metal_ = metal::saturate(metallic);
     float _e12 = pbr_alpha2_(roughness_1);
@@ -1943,7 +1983,7 @@ metal::float3 gltf_radiance(
             break;
         }
         uint _e26 = i_5;
-        LightSample _e29 = sample_light_deferred(_e26, hit_6.position, hit_6.geometric_normal, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+        LightSample _e29 = sample_light_deferred(_e26, hit_6.position, hit_6.geometric_normal, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
         float ndl_1 = metal::max(metal::dot(_e7, _e29.dir), 0.0);
         metal::float3 _e36 = normalize_vec3f(_e29.dir + v_4);
         metal::float3 _e38 = pbr_fresnel(f0_1, metal::dot(v_4, _e36));
@@ -1960,11 +2000,10 @@ metal::float3 gltf_radiance(
 
 metal::float3 gltf_masked_shade(
     GltfMaskedMaterial m_1,
-    Ray ray_19,
+    Ray ray_20,
     Hit hit_7,
-    constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1981,7 +2020,7 @@ metal::float3 gltf_masked_shade(
 ) {
     metal::float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv, params, texels, _buffer_sizes);
     metal::float3 c_11 = m_1.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_19, hit_7, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+    metal::float3 _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1.0, m_1.emissive, ray_20, hit_7, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
     return _e14;
 }
 
@@ -2005,11 +2044,10 @@ GltfMaterial load_GltfMaterial(
 
 metal::float3 gltf_shade(
     GltfMaterial m_2,
-    Ray ray_20,
+    Ray ray_21,
     Hit hit_8,
-    constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2026,19 +2064,18 @@ metal::float3 gltf_shade(
 ) {
     metal::float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv, params, texels, _buffer_sizes);
     metal::float3 c_12 = m_2.base_color.xyz * _e7.xyz;
-    metal::float3 _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_20, hit_8, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+    metal::float3 _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1.0, m_2.emissive, ray_21, hit_8, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
     return _e14;
 }
 
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_10,
-    Ray ray_21,
+    Ray ray_22,
     Hit hit_9,
     metal::float3 secondary,
-    constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2056,12 +2093,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             GltfMaskedMaterial _e4 = load_GltfMaskedMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e5 = gltf_masked_shade(_e4, ray_21, hit_9, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+            metal::float3 _e5 = gltf_masked_shade(_e4, ray_22, hit_9, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
             return _e5;
         }
         case 1u: {
             GltfMaterial _e6 = load_GltfMaterial(offset_10, params, _buffer_sizes);
-            metal::float3 _e7 = gltf_shade(_e6, ray_21, hit_9, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+            metal::float3 _e7 = gltf_shade(_e6, ray_22, hit_9, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
             return _e7;
         }
         default: {
@@ -2072,11 +2109,10 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_22,
+    Ray ray_23,
     Candidate c_6,
-    constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2092,15 +2128,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_9 = instances[c_6.slot];
-    Hit _e6 = finish_hit(ray_22, c_6, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_22, _e6, metal::float3(0.0), tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_23, c_6, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_23, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_11,
-    Ray ray_23,
+    Ray ray_24,
     float t_2,
     metal::float3 radiance
 ) {
@@ -2108,7 +2144,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_24,
+    Ray ray_25,
     float t_3,
     metal::float3 radiance_1,
     device type_9 const& instances,
@@ -2117,21 +2153,21 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_24.medium == 0u) {
+    if (ray_25.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_10 = instances[ray_24.medium - 1u];
+    GpuInstance inst_10 = instances[ray_25.medium - 1u];
     if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_24, t_3, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_25, t_3, radiance_1);
     return _e21;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_12,
-    Ray ray_25,
+    Ray ray_26,
     Hit hit_10
 ) {
     return;
@@ -2166,9 +2202,8 @@ metal::float3 spawn_origin(
 
 metal::float3 trace(
     Ray camera_ray,
-    constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2190,7 +2225,7 @@ metal::float3 trace(
     float t_4 = {};
     type_20 stack = {};
     uint depth = {};
-    Ray ray_26 = {};
+    Ray ray_27 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -2208,7 +2243,7 @@ metal::float3 trace(
     uint i_6 = {};
     uint medium = {};
     if (!(HAS_SECONDARY_RAYS)) {
-        Candidate _e4 = intersect_scene(camera_ray, false, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+        Candidate _e4 = intersect_scene(camera_ray, false, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
         radiance_2 = metal::float3(0.0);
         uint _e9 = F32_INF;
         t_4 = as_type<float>(_e9);
@@ -2217,7 +2252,7 @@ metal::float3 trace(
             metal::float3 _e17 = miss(camera_ray, frame, params, _buffer_sizes);
             radiance_2 = _e17;
         } else {
-            metal::float3 _e18 = shade_direct(camera_ray, _e4, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+            metal::float3 _e18 = shade_direct(camera_ray, _e4, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
             radiance_2 = _e18;
             t_4 = _e4.t;
         }
@@ -2228,7 +2263,7 @@ metal::float3 trace(
     }
     stack = type_20 {};
     depth = 0u;
-    ray_26 = camera_ray;
+    ray_27 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -2247,10 +2282,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_26;
-            Candidate _e69 = intersect_scene(_e67, false, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
+            Ray _e67 = ray_27;
+            Candidate _e69 = intersect_scene(_e67, false, frame, scratch, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_26;
+            Ray _e70 = ray_27;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -2341,7 +2376,7 @@ metal::float3 trace(
                     Ray _e191 = s_ray;
                     Hit _e192 = hit_12;
                     metal::float3 _e193 = s_sum;
-                    metal::float3 _e194 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e191, _e192, _e193, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
+                    metal::float3 _e194 = dispatch_closest_hit(inst_11.material_type, inst_11.material_offset, _e191, _e192, _e193, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, _buffer_sizes);
                     radiance_3 = _e194;
                 }
             }
@@ -2387,7 +2422,7 @@ metal::float3 trace(
             metal::float3 _e284 = spawn_origin(hit_14, _e283, dir_8);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_26 = Ray {_e284, 0.0, dir_8, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_27 = Ray {_e284, 0.0, dir_8, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -2420,11 +2455,39 @@ metal::float3 finite_or_zero(
     return metal::select(metal::float3(0.0), c_7, _e3);
 }
 
+void pass_done(
+    uint index,
+    metal::float3 sum,
+    uint bad,
+    uint pass,
+    constant FrameUniforms& frame,
+    thread uint& ray_count,
+    device type_18& counters,
+    device type_11& accum,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e5, metal::memory_order_relaxed);
+    ray_count = 0u;
+    FrameUniforms _e10 = frame;
+    metal::float4 _e13 = metal::float4(sum, static_cast<float>(_e10.samples_per_pass));
+    if (pass == 0u) {
+        accum[index] = _e13;
+    } else {
+        metal::float4 _e18 = accum[index];
+        accum[index] = _e18 + _e13;
+    }
+    if (bad > 0u) {
+        metal::atomic_fetch_add_explicit(&counters[0], bad, metal::memory_order_relaxed);
+    }
+    return;
+}
+
 void render_pixel(
-    metal::uint2 pixel_4,
+    metal::uint2 pixel_5,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2443,15 +2506,17 @@ void render_pixel(
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 sum = {};
-    uint bad = {};
+    metal::float3 sum_1 = {};
+    uint bad_1 = {};
     uint s_1 = {};
-    Ray ray_27 = {};
-    FrameUniforms frame_5 = frame;
+    FrameUniforms frame_6 = frame;
     TileParams tile_2 = tile;
-    sum = metal::float3(0.0);
-    bad = 0u;
-    uint end_1 = frame_5.samples_per_pass;
+    uint index_2 = (pixel_5.y * tile_2.image_size.x) + pixel_5.x;
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_1 = tile_2.frame * per_pass;
+    uint count_2 = per_pass * metal::max(frame_6.passes_per_dispatch, 1u);
+    sum_1 = metal::float3(0.0);
+    bad_1 = 0u;
     s_1 = 0u;
     uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_4 = true;
@@ -2459,51 +2524,39 @@ void render_pixel(
         if (metal::all(loop_bound_8 == uint2(0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e46 = s_1;
-            s_1 = _e46 + 1u;
+            uint _e56 = s_1;
+            s_1 = _e56 + 1u;
         }
         loop_init_4 = false;
-        uint _e13 = s_1;
-        if (_e13 >= end_1) {
+        uint _e25 = s_1;
+        if (_e25 >= count_2) {
             break;
         }
-        uint _e18 = s_1;
-        uint sample_4 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
-        rng_seed(pixel_4, sample_4, frame_5.seed, scratch, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-        ray_27 = _e23;
-        ray_27.depth = 0u;
-        ray_27.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_27.origin;
-        uint _e33 = medium_at(_e31, NO_HIT, tile, frame, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
-        ray_27.medium = _e33;
-        Ray _e34 = ray_27;
-        metal::float3 _e35 = trace(_e34, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-        metal::bool3 _e36 = is_finite_vec3f(_e35);
-        if (metal::all(_e36)) {
-            metal::float3 _e38 = sum;
-            sum = _e38 + _e35;
+        uint _e27 = s_1;
+        Ray _e29 = sample_camera_ray(pixel_5, first_1 + _e27, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, _buffer_sizes);
+        metal::float3 _e30 = trace(_e29, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::bool3 _e31 = is_finite_vec3f(_e30);
+        if (metal::all(_e31)) {
+            metal::float3 _e33 = sum_1;
+            sum_1 = _e33 + _e30;
         } else {
-            metal::float3 _e40 = sum;
-            metal::float3 _e41 = finite_or_zero(_e35);
-            sum = _e40 + _e41;
-            uint _e43 = bad;
-            bad = _e43 + 1u;
+            metal::float3 _e35 = sum_1;
+            metal::float3 _e36 = finite_or_zero(_e30);
+            sum_1 = _e35 + _e36;
+            uint _e38 = bad_1;
+            bad_1 = _e38 + 1u;
         }
-    }
-    uint _e50 = ray_count;
-    metal::atomic_fetch_add_explicit(&counters[1], _e50, metal::memory_order_relaxed);
-    metal::float3 _e59 = sum;
-    metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if (tile_2.frame == 0u) {
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e62;
-    } else {
-        metal::float4 _e69 = accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x];
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e69 + _e62;
-    }
-    if (_e63 > 0u) {
-        metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
+        uint _e41 = s_1;
+        uint _e44 = rem_u32_(_e41 + 1u, per_pass);
+        if (_e44 == 0u) {
+            metal::float3 _e47 = sum_1;
+            uint _e48 = bad_1;
+            uint _e50 = s_1;
+            uint _e51 = div_u32_(_e50, per_pass);
+            pass_done(index_2, _e47, _e48, tile_2.frame + _e51, frame, ray_count, counters, accum, _buffer_sizes);
+            sum_1 = metal::float3(0.0);
+            bad_1 = 0u;
+        }
     }
     return;
 }
@@ -2512,7 +2565,7 @@ void render_invocation(
     metal::uint2 id_1,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2556,7 +2609,7 @@ struct renderInput {
 , device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
-    type_3 scratch = {};
+    type_4 scratch = {};
     uint rng_state = {};
     uint F32_INF = 2139095040u;
     float hit_error = {};

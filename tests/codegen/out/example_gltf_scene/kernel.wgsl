@@ -21,6 +21,7 @@ struct FrameUniforms {
     background_type: u32,
     background_offset: u32,
     path_slots: u32,
+    passes_per_dispatch: u32,
 }
 
 struct Ray {
@@ -662,10 +663,10 @@ fn srgb_channel(c_2: f32) -> f32 {
 fn texel_at(t: u32, xi: u32, yi: u32) -> vec4<f32> {
     let base_1 = params[t];
     let _e10 = params[(t + 1u)];
-    let index = ((yi * max(_e10, 1u)) + xi);
+    let index_1 = ((yi * max(_e10, 1u)) + xi);
     let format = params[(t + 3u)];
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        let _e25 = texels[(base_1 + index)];
+        let _e25 = texels[(base_1 + index_1)];
         let c_9 = unpack4x8unorm(_e25);
         let _e28 = srgb_channel(c_9.x);
         let _e30 = srgb_channel(c_9.y);
@@ -673,12 +674,12 @@ fn texel_at(t: u32, xi: u32, yi: u32) -> vec4<f32> {
         return vec4<f32>(_e28, _e30, _e32, c_9.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
-        let _e40 = texels[(base_1 + index)];
+        let _e40 = texels[(base_1 + index_1)];
         return unpack4x8unorm(_e40);
     }
-    let _e47 = texels[(base_1 + (index * RGBA16F_TEXEL_WORDS))];
+    let _e47 = texels[(base_1 + (index_1 * RGBA16F_TEXEL_WORDS))];
     let rg = unpack2x16float(_e47);
-    let _e56 = texels[((base_1 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
+    let _e56 = texels[((base_1 + (index_1 * RGBA16F_TEXEL_WORDS)) + 1u)];
     let ba = unpack2x16float(_e56);
     return vec4<f32>(rg, ba);
 }
@@ -715,8 +716,10 @@ fn sample_texture(t_1: u32, uv: vec2<f32>) -> vec4<f32> {
 }
 
 fn frame_index_query() -> u32 {
-    let _e1 = tile;
-    return _e1.frame;
+    let _e5 = scratch[min(SCRATCH_RNG_INDEX, 24u)];
+    let _e7 = frame;
+    let _e9 = div_u32_(_e5, _e7.samples_per_pass);
+    return _e9;
 }
 
 fn gltf_pcg(x_5: u32) -> u32 {
@@ -1007,12 +1010,28 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     return _e62;
 }
 
+fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
+    var ray_13: Ray;
+
+    let frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed);
+    let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
+    ray_13 = _e7;
+    ray_13.depth = 0u;
+    ray_13.kind = RAY_CAMERA;
+    let _e15 = ray_13.origin;
+    let _e17 = medium_at(_e15, NO_HIT);
+    ray_13.medium = _e17;
+    let _e18 = ray_13;
+    return _e18;
+}
+
 fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     let _e5 = node_point(header.min, header.max, vec3(65535u));
     return _e5;
 }
 
-fn intersect_scene(ray_13: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_14: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -1021,21 +1040,21 @@ fn intersect_scene(ray_13: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_13.tmax);
+    let _e7 = no_candidate(ray_14.tmax);
     best_2 = _e7;
-    let frame_2 = frame;
-    if (frame_2.instance_count == 0u) {
+    let frame_3 = frame;
+    if (frame_3.instance_count == 0u) {
         let _e14 = best_2;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_13.dir);
-    let base_3 = frame_2.tlas_root;
+    let _e16 = safe_inverse(ray_14.dir);
+    let base_3 = frame_3.tlas_root;
     let header_2 = nodes[base_3];
     let origin_5 = header_2.min;
     let scale_3 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_5, _e23, ray_13.origin, _e16, ray_13.tmin, _e27);
+    let _e28 = slab(origin_5, _e23, ray_14.origin, _e16, ray_14.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
@@ -1050,7 +1069,7 @@ fn intersect_scene(ray_13: Ray, shadow_2: bool) -> Candidate {
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e52 = child_1;
                 let _e55 = best_2;
-                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_13, _e55, shadow_2);
+                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_14, _e55, shadow_2);
                 best_2 = _e56;
                 let _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1062,7 +1081,7 @@ fn intersect_scene(ray_13: Ray, shadow_2: bool) -> Candidate {
             let _e63 = child_1;
             let n_8 = nodes[(base_3 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_8, origin_5, scale_3, ray_13, _e16, _e69);
+            let _e70 = children_entry(n_8, origin_5, scale_3, ray_14, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
@@ -1122,8 +1141,8 @@ fn load_SkyGradient(offset_4: u32) -> SkyGradient {
     return SkyGradient(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)));
 }
 
-fn sky_gradient(b_5: SkyGradient, ray_14: Ray) -> vec3<f32> {
-    let _e3 = normalize_vec3f(ray_14.dir);
+fn sky_gradient(b_5: SkyGradient, ray_15: Ray) -> vec3<f32> {
+    let _e3 = normalize_vec3f(ray_15.dir);
     let y = _e3.y;
     if (y < 0f) {
         return mix(b_5.horizon, b_5.ground, vec3(min((-(y) * 4f), 1f)));
@@ -1131,23 +1150,23 @@ fn sky_gradient(b_5: SkyGradient, ray_14: Ray) -> vec3<f32> {
     return mix(b_5.horizon, b_5.zenith, vec3(sqrt(y)));
 }
 
-fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_15: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_16: Ray) -> vec3<f32> {
     let _e2 = load_SkyGradient(offset_5);
-    let _e3 = sky_gradient(_e2, ray_15);
+    let _e3 = sky_gradient(_e2, ray_16);
     return _e3;
 }
 
-fn miss(ray_16: Ray) -> vec3<f32> {
+fn miss(ray_17: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
-    let frame_3 = frame;
-    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_16);
+    let frame_4 = frame;
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17);
     return _e9;
 }
 
-fn shading_normal(ray_17: Ray, hit_5: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_5.geometric_normal, ray_17.dir, hit_5.geometric_normal);
+fn shading_normal(ray_18: Ray, hit_5: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_5.geometric_normal, ray_18.dir, hit_5.geometric_normal);
     return faceForward(hit_5.normal, -(ng), hit_5.normal);
 }
 
@@ -1346,11 +1365,11 @@ fn sample_light_deferred(i_4: u32, position_6: vec3<f32>, normal_7: vec3<f32>) -
     var resolved: u32;
     var bits_1: u32;
 
-    let frame_4 = frame;
-    if (i_4 >= frame_4.light_count) {
+    let frame_5 = frame;
+    if (i_4 >= frame_5.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
+    let entry = (frame_5.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     let type_id_7 = params[entry];
     let offset_14 = params[(entry + 1u)];
     let start = rng_state;
@@ -1427,12 +1446,12 @@ fn pbr_smith_v(ndl: f32, ndv: f32, a2_1: f32) -> f32 {
     return (0.5f / max((gv + gl), 0.00000000000000000001f));
 }
 
-fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32, emissive: vec3<f32>, ray_18: Ray, hit_6: Hit) -> vec3<f32> {
+fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32, emissive: vec3<f32>, ray_19: Ray, hit_6: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_5: u32;
 
-    let _e7 = shading_normal(ray_18, hit_6);
-    let _e9 = normalize_vec3f(ray_18.dir);
+    let _e7 = shading_normal(ray_19, hit_6);
+    let _e9 = normalize_vec3f(ray_19.dir);
     let v_4 = -(_e9);
     let metal = saturate(metallic);
     let _e12 = pbr_alpha2_(roughness_1);
@@ -1466,10 +1485,10 @@ fn gltf_radiance(c_5: vec3<f32>, metallic: f32, roughness_1: f32, occlusion: f32
     return _e68;
 }
 
-fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_19: Ray, hit_7: Hit) -> vec3<f32> {
+fn gltf_masked_shade(m_1: GltfMaskedMaterial, ray_20: Ray, hit_7: Hit) -> vec3<f32> {
     let _e7 = sample_texture(m_1.base_texture, hit_7.uv);
     let c_11 = (m_1.base_color.xyz * _e7.xyz);
-    let _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1f, m_1.emissive, ray_19, hit_7);
+    let _e14 = gltf_radiance(c_11, m_1.metallic, m_1.roughness, 1f, m_1.emissive, ray_20, hit_7);
     return _e14;
 }
 
@@ -1487,23 +1506,23 @@ fn load_GltfMaterial(offset_9: u32) -> GltfMaterial {
     return GltfMaterial(vec4<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17), bitcast<f32>(_e23)), _e30, bitcast<f32>(_e35), bitcast<f32>(_e41), vec3<f32>(bitcast<f32>(_e47), bitcast<f32>(_e53), bitcast<f32>(_e59)));
 }
 
-fn gltf_shade(m_2: GltfMaterial, ray_20: Ray, hit_8: Hit) -> vec3<f32> {
+fn gltf_shade(m_2: GltfMaterial, ray_21: Ray, hit_8: Hit) -> vec3<f32> {
     let _e7 = sample_texture(m_2.base_texture, hit_8.uv);
     let c_12 = (m_2.base_color.xyz * _e7.xyz);
-    let _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1f, m_2.emissive, ray_20, hit_8);
+    let _e14 = gltf_radiance(c_12, m_2.metallic, m_2.roughness, 1f, m_2.emissive, ray_21, hit_8);
     return _e14;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_21: Ray, hit_9: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_22: Ray, hit_9: Hit, secondary: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e4 = load_GltfMaskedMaterial(offset_10);
-            let _e5 = gltf_masked_shade(_e4, ray_21, hit_9);
+            let _e5 = gltf_masked_shade(_e4, ray_22, hit_9);
             return _e5;
         }
         case 1u: {
             let _e6 = load_GltfMaterial(offset_10);
-            let _e7 = gltf_shade(_e6, ray_21, hit_9);
+            let _e7 = gltf_shade(_e6, ray_22, hit_9);
             return _e7;
         }
         default: {
@@ -1512,33 +1531,33 @@ fn dispatch_closest_hit(type_id_4: u32, offset_10: u32, ray_21: Ray, hit_9: Hit,
     return vec3<f32>();
 }
 
-fn shade_direct(ray_22: Ray, c_6: Candidate) -> vec3<f32> {
+fn shade_direct(ray_23: Ray, c_6: Candidate) -> vec3<f32> {
     let inst_9 = instances[c_6.slot];
-    let _e6 = finish_hit(ray_22, c_6);
-    let _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_22, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_23, c_6);
+    let _e11 = dispatch_closest_hit(inst_9.material_type, inst_9.material_offset, ray_23, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_23: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_11: u32, ray_24: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_24: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_25: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_24.medium == 0u) {
+    if (ray_25.medium == 0u) {
         return radiance_1;
     }
-    let inst_10 = instances[(ray_24.medium - 1u)];
+    let inst_10 = instances[(ray_25.medium - 1u)];
     if ((inst_10.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_24, t_3, radiance_1);
+    let _e21 = dispatch_medium(inst_10.material_type, inst_10.material_offset, ray_25, t_3, radiance_1);
     return _e21;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_25: Ray, hit_10: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_12: u32, ray_26: Ray, hit_10: Hit) {
     return;
 }
 
@@ -1566,7 +1585,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_4: f32;
     var stack: array<Frame, 4>;
     var depth: u32;
-    var ray_26: Ray;
+    var ray_27: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1605,7 +1624,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 4>();
     depth = 0u;
-    ray_26 = camera_ray;
+    ray_27 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1621,10 +1640,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_26;
+            let _e67 = ray_27;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_26;
+            let _e70 = ray_27;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1756,7 +1775,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e284 = spawn_origin(hit_14, _e283, dir_8);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_26 = Ray(_e284, 0f, dir_8, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_27 = Ray(_e284, 0f, dir_8, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack[min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -1785,64 +1804,72 @@ fn finite_or_zero(c_7: vec3<f32>) -> vec3<f32> {
     return select(vec3(0f), c_7, _e3);
 }
 
-fn render_pixel(pixel_4: vec2<u32>) {
-    var sum: vec3<f32>;
-    var bad: u32;
-    var s_1: u32;
-    var ray_27: Ray;
+fn pass_done(index: u32, sum: vec3<f32>, bad: u32, pass_: u32) {
+    let _e5 = ray_count;
+    atomicAdd((&counters[1]), _e5);
+    ray_count = 0u;
+    let _e10 = frame;
+    let _e13 = vec4<f32>(sum, f32(_e10.samples_per_pass));
+    if (pass_ == 0u) {
+        accum[index] = _e13;
+    } else {
+        let _e18 = accum[index];
+        accum[index] = (_e18 + _e13);
+    }
+    if (bad > 0u) {
+        atomicAdd((&counters[0]), bad);
+    }
+    return;
+}
 
-    let frame_5 = frame;
+fn render_pixel(pixel_5: vec2<u32>) {
+    var sum_1: vec3<f32>;
+    var bad_1: u32;
+    var s_1: u32;
+
+    let frame_6 = frame;
     let tile_2 = tile;
-    sum = vec3(0f);
-    bad = 0u;
-    let end_1 = frame_5.samples_per_pass;
+    let index_2 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
+    let per_pass = frame_6.samples_per_pass;
+    let first_1 = (tile_2.frame * per_pass);
+    let count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
+    sum_1 = vec3(0f);
+    bad_1 = 0u;
     s_1 = 0u;
     loop {
-        let _e13 = s_1;
-        if (_e13 >= end_1) {
+        let _e25 = s_1;
+        if (_e25 >= count_2) {
             break;
         }
-        let _e18 = s_1;
-        let sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_4, sample_4, frame_5.seed);
-        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
-        ray_27 = _e23;
-        ray_27.depth = 0u;
-        ray_27.kind = RAY_CAMERA;
-        let _e31 = ray_27.origin;
-        let _e33 = medium_at(_e31, NO_HIT);
-        ray_27.medium = _e33;
-        let _e34 = ray_27;
-        let _e35 = trace(_e34);
-        let _e36 = is_finite_vec3f(_e35);
-        if all(_e36) {
-            let _e38 = sum;
-            sum = (_e38 + _e35);
+        let _e27 = s_1;
+        let _e29 = sample_camera_ray(pixel_5, (first_1 + _e27));
+        let _e30 = trace(_e29);
+        let _e31 = is_finite_vec3f(_e30);
+        if all(_e31) {
+            let _e33 = sum_1;
+            sum_1 = (_e33 + _e30);
         } else {
-            let _e40 = sum;
-            let _e41 = finite_or_zero(_e35);
-            sum = (_e40 + _e41);
-            let _e43 = bad;
-            bad = (_e43 + 1u);
+            let _e35 = sum_1;
+            let _e36 = finite_or_zero(_e30);
+            sum_1 = (_e35 + _e36);
+            let _e38 = bad_1;
+            bad_1 = (_e38 + 1u);
+        }
+        let _e41 = s_1;
+        let _e44 = rem_u32_((_e41 + 1u), per_pass);
+        if (_e44 == 0u) {
+            let _e47 = sum_1;
+            let _e48 = bad_1;
+            let _e50 = s_1;
+            let _e51 = div_u32_(_e50, per_pass);
+            pass_done(index_2, _e47, _e48, (tile_2.frame + _e51));
+            sum_1 = vec3(0f);
+            bad_1 = 0u;
         }
         continuing {
-            let _e46 = s_1;
-            s_1 = (_e46 + 1u);
+            let _e56 = s_1;
+            s_1 = (_e56 + 1u);
         }
-    }
-    let _e50 = ray_count;
-    atomicAdd((&counters[1]), _e50);
-    let _e59 = sum;
-    let _e62 = vec4<f32>(_e59, f32(frame_5.samples_per_pass));
-    let _e63 = bad;
-    if (tile_2.frame == 0u) {
-        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
-    } else {
-        let _e69 = accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
-        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
-    }
-    if (_e63 > 0u) {
-        atomicAdd((&counters[0]), _e63);
     }
     return;
 }

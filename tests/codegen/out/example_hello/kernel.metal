@@ -36,9 +36,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
-};
-struct type_3 {
-    uint inner[15];
+    uint passes_per_dispatch;
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -50,7 +48,17 @@ struct Ray {
     uint medium;
     char _pad7[4];
 };
-typedef uint type_5[1];
+struct PathState {
+    Ray ray;
+    metal::float3 beta;
+    metal::packed_float3 radiance;
+    bool live;
+    char _pad4[3];
+};
+struct type_5 {
+    uint inner[15];
+};
+typedef uint type_6[1];
 struct Pinhole {
     metal::float3 position;
     metal::float3 look_at;
@@ -127,6 +135,12 @@ struct SkyGradient {
     metal::float3 horizon;
     metal::float3 ground;
 };
+struct type_16 {
+    metal::float3 inner[1];
+};
+struct Mirror {
+    metal::float3 tint;
+};
 struct Lambert {
     metal::float3 albedo;
 };
@@ -143,19 +157,6 @@ struct PointLight {
     float range;
     float inner_range;
     char _pad5[8];
-};
-struct Mirror {
-    metal::float3 tint;
-};
-struct PathState {
-    Ray ray;
-    metal::float3 beta;
-    metal::packed_float3 radiance;
-    bool live;
-    char _pad4[3];
-};
-struct type_16 {
-    metal::float3 inner[1];
 };
 typedef metal::atomic_uint type_19[1];
 constant uint WORKGROUP_WIDTH = 8u;
@@ -179,8 +180,9 @@ constant float POINT_ERROR = 0.0000019073486;
 constant float GAMMA_1_ = 0.00000005960465;
 constant float GAMMA_6_ = 0.0000003576281;
 constant float GAMMA_4_ = 0.00000023841864;
-constant bool HAS_SECONDARY_RAYS = true;
 constant bool HAS_BACKGROUND = true;
+constant uint FLAG_SECONDARY_RAYS = 2u;
+constant uint MAX_DEPTH = 3u;
 constant uint LIGHT_ENTRY_STRIDE = 2u;
 constant uint SCRATCH_SHADOW_MODE = 14u;
 constant uint SHADOW_UNOCCLUDED = 1u;
@@ -188,9 +190,6 @@ constant uint SHADOW_ABOVE = 2u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
 constant float INV_PI = 0.31830987;
-constant uint FLAG_MEDIUM = 4u;
-constant uint FLAG_SECONDARY_RAYS = 2u;
-constant uint MAX_DEPTH = 3u;
 constant uint ROULETTE_DEPTH = 2u;
 constant float ROULETTE_THROUGHPUT = 0.5;
 constant uint RAY_SECONDARY = 1u;
@@ -282,7 +281,7 @@ void rng_resume(
     uint sample,
     uint seed,
     uint state,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state
 ) {
     scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)] = sample;
@@ -298,7 +297,7 @@ void rng_seed(
     metal::uint2 pixel_1,
     uint sample_1,
     uint seed_1,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state
 ) {
     rng_resume(pixel_1, sample_1, seed_1, 0u, scratch, rng_state);
@@ -307,7 +306,7 @@ void rng_seed(
 
 Pinhole load_Pinhole(
     uint offset,
-    device type_5 const& params,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset + 0u];
@@ -384,7 +383,7 @@ uint sobol_second_reversed(
 }
 
 float rand_next(
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state
 ) {
     uint x_2 = {};
@@ -407,7 +406,7 @@ float rand_next(
 }
 
 metal::float2 rand2_next(
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state
 ) {
     float _e0 = rand_next(scratch, rng_state);
@@ -427,7 +426,7 @@ Ray pinhole_ray(
     uint sample_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -459,9 +458,9 @@ Ray dispatch_ray_generation(
     uint sample_3,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -494,8 +493,8 @@ metal::float3 safe_inverse(
     metal::float3 d
 ) {
     metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_4 * tiny, metal::abs(d) < tiny);
+    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_3 * tiny, metal::abs(d) < tiny);
     return metal::float3(1.0) / dd;
 }
 
@@ -531,23 +530,23 @@ metal::float3 hit_triangle(
     metal::float4 _e18 = triangles[(slot * 3u) + 1u];
     metal::float3 b_5 = _e18.xyz - r_1.origin;
     metal::float4 _e28 = triangles[(slot * 3u) + 2u];
-    metal::float3 c_5 = _e28.xyz - r_1.origin;
+    metal::float3 c_4 = _e28.xyz - r_1.origin;
     float ax = a_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_4[metal::min(r_1.kz, 2u)]);
     float ay = a_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_4[metal::min(r_1.kz, 2u)]);
     float bx = b_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_5[metal::min(r_1.kz, 2u)]);
     float by = b_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_5[metal::min(r_1.kz, 2u)]);
-    float cx = c_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_5[metal::min(r_1.kz, 2u)]);
-    float cy = c_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_5[metal::min(r_1.kz, 2u)]);
+    float cx = c_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_4[metal::min(r_1.kz, 2u)]);
+    float cy = c_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_4[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
     float v_2 = (ax * cy) - (ay * cx);
     float w = (bx * ay) - (by * ax);
     bool outside = (((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0));
     float det = (u + v_2) + w;
     float rcp = 1.0 / det;
-    float t_3 = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_8 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_3 >= tmin)) && (t_3 <= tmax_1);
+    float t = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
+    bool hit_8 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t >= tmin)) && (t <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_8 ? metal::float3(t_3, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_8 ? metal::float3(t, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -698,10 +697,10 @@ Candidate intersect_mesh(
                     metal::float4 _e58 = triangles[(prim * 3u) + 1u];
                     uint tag = as_type<uint>(_e58.w);
                     uint owner = (tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1;
-                    Candidate c_6 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e73 = accept(inst_2, world_ray, c_6);
+                    Candidate c_5 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e73 = accept(inst_2, world_ray, c_5);
                     if (_e73) {
-                        best = c_6;
+                        best = c_5;
                         if (shadow) {
                             Candidate _e74 = best;
                             return _e74;
@@ -839,9 +838,9 @@ metal::float3 decode_octahedral(
     float _e14 = n_1.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n_1;
-        metal::float2 s_5 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float2 s_4 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
         metal::float3 _e29 = n_1;
-        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_5;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_4;
         float _e37 = n_1.z;
         n_1 = metal::float3(xy.x, xy.y, _e37);
     }
@@ -924,7 +923,7 @@ uint medium_at(
     metal::float3 p_4,
     uint exclude,
     constant FrameUniforms& frame,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -983,6 +982,37 @@ uint medium_at(
     return _e62;
 }
 
+Ray sample_camera_ray(
+    metal::uint2 pixel_4,
+    uint sample_4,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread type_5& scratch,
+    thread uint& rng_state,
+    device type_6 const& params,
+    thread uint& F32_INF,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
+    thread float& hit_error,
+    device type_15 const& attributes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Ray ray_7 = {};
+    FrameUniforms frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
+    Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_7.origin;
+    uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+    ray_7.medium = _e17;
+    Ray _e18 = ray_7;
+    return _e18;
+}
+
 metal::float3 node_frame_hi(
     GpuNode header
 ) {
@@ -991,7 +1021,7 @@ metal::float3 node_frame_hi(
 }
 
 Candidate intersect_scene(
-    Ray ray_7,
+    Ray ray_8,
     bool shadow_2,
     constant FrameUniforms& frame,
     thread uint& F32_INF,
@@ -1009,21 +1039,21 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_7.tmax);
+    Candidate _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = frame;
-    if (frame_2.instance_count == 0u) {
+    FrameUniforms frame_3 = frame;
+    if (frame_3.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_7.dir);
-    uint base_2 = frame_2.tlas_root;
+    metal::float3 _e16 = safe_inverse(ray_8.dir);
+    uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = nodes[base_2];
     metal::float3 origin_5 = header_2.min;
     metal::float3 scale_3 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
@@ -1041,7 +1071,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_7, _e55, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_8, _e55, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1053,7 +1083,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_7 = nodes[base_2 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_7, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_8, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1102,7 +1132,7 @@ Candidate intersect_scene(
 
 SkyGradient load_SkyGradient(
     uint offset_2,
-    device type_5 const& params,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_2 + 0u];
@@ -1119,9 +1149,9 @@ SkyGradient load_SkyGradient(
 
 metal::float3 sky_gradient(
     SkyGradient b_4,
-    Ray ray_8
+    Ray ray_9
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_8.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_9.dir);
     float y = _e3.y;
     if (y < 0.0) {
         return metal::mix(b_4.horizon, b_4.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
@@ -1132,46 +1162,101 @@ metal::float3 sky_gradient(
 metal::float3 dispatch_miss(
     uint type_id_1,
     uint offset_3,
-    Ray ray_9,
-    device type_5 const& params,
+    Ray ray_10,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_3, params, _buffer_sizes);
-    metal::float3 _e3 = sky_gradient(_e2, ray_9);
+    metal::float3 _e3 = sky_gradient(_e2, ray_10);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_10,
+    Ray ray_11,
     constant FrameUniforms& frame,
-    device type_5 const& params,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (!(HAS_BACKGROUND)) {
         return metal::float3(0.0);
     }
-    FrameUniforms frame_3 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_10, params, _buffer_sizes);
+    FrameUniforms frame_4 = frame;
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11, params, _buffer_sizes);
     return _e9;
 }
 
-Lambert load_Lambert(
+Mirror load_Mirror(
     uint offset_4,
-    device type_5 const& params,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_4 + 0u];
     uint _e11 = params[offset_4 + 1u];
     uint _e17 = params[offset_4 + 2u];
+    return Mirror {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17))};
+}
+
+void rt_spawn(
+    metal::float3 dir,
+    metal::float3 weight,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count
+) {
+    uint _e3 = spawn_count;
+    if (_e3 < 1u) {
+        spawn_dirs.inner[_e3] = dir;
+        spawn_weights.inner[_e3] = weight;
+        spawn_count = _e3 + 1u;
+    }
+}
+
+void mirror_rays(
+    Mirror m,
+    Ray ray_12,
+    Hit hit_1,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count
+) {
+    metal::float3 _e4 = normalize_vec3f(ray_12.dir);
+    rt_spawn(metal::reflect(_e4, hit_1.normal), m.tint, spawn_dirs, spawn_weights, spawn_count);
+    return;
+}
+
+void dispatch_secondary_rays(
+    uint type_id_2,
+    uint offset_5,
+    Ray ray_13,
+    Hit hit_2,
+    device type_6 const& params,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Mirror _e3 = load_Mirror(offset_5, params, _buffer_sizes);
+    mirror_rays(_e3, ray_13, hit_2, spawn_dirs, spawn_weights, spawn_count);
+    return;
+}
+
+Lambert load_Lambert(
+    uint offset_6,
+    device type_6 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_6 + 0u];
+    uint _e11 = params[offset_6 + 1u];
+    uint _e17 = params[offset_6 + 2u];
     return Lambert {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17))};
 }
 
 metal::float3 shading_normal(
-    Ray ray_11,
-    Hit hit_1
+    Ray ray_14,
+    Hit hit_3
 ) {
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_11.dir, hit_1.geometric_normal);
-    return metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
+    metal::float3 ng = metal::faceforward(hit_3.geometric_normal, ray_14.dir, hit_3.geometric_normal);
+    return metal::faceforward(hit_3.normal, -(ng), hit_3.normal);
 }
 
 uint light_count_query(
@@ -1182,32 +1267,32 @@ uint light_count_query(
 }
 
 PointLight load_PointLight(
-    uint offset_5,
-    device type_5 const& params,
+    uint offset_7,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e5 = params[offset_5 + 0u];
-    uint _e11 = params[offset_5 + 1u];
-    uint _e17 = params[offset_5 + 2u];
-    uint _e24 = params[offset_5 + 4u];
-    uint _e30 = params[offset_5 + 5u];
-    uint _e36 = params[offset_5 + 6u];
-    uint _e43 = params[offset_5 + 7u];
-    uint _e49 = params[offset_5 + 8u];
-    uint _e55 = params[offset_5 + 9u];
+    uint _e5 = params[offset_7 + 0u];
+    uint _e11 = params[offset_7 + 1u];
+    uint _e17 = params[offset_7 + 2u];
+    uint _e24 = params[offset_7 + 4u];
+    uint _e30 = params[offset_7 + 5u];
+    uint _e36 = params[offset_7 + 6u];
+    uint _e43 = params[offset_7 + 7u];
+    uint _e49 = params[offset_7 + 8u];
+    uint _e55 = params[offset_7 + 9u];
     return PointLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)};
 }
 
 float shadow_preset(
     metal::float3 normal,
-    metal::float3 dir,
-    thread type_3& scratch
+    metal::float3 dir_1,
+    thread type_5& scratch
 ) {
     uint mode = scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 14u)];
     if (mode == SHADOW_UNOCCLUDED) {
         return 1.0;
     }
-    if ((mode == SHADOW_ABOVE) && !((metal::dot(dir, normal) > 0.0))) {
+    if ((mode == SHADOW_ABOVE) && !((metal::dot(dir_1, normal) > 0.0))) {
         return 0.0;
     }
     return -1.0;
@@ -1231,15 +1316,15 @@ metal::float3 offset_origin(
     float error
 ) {
     float d_4 = (2.0 * error) * ((metal::abs(n_3.x) + metal::abs(n_3.y)) + metal::abs(n_3.z));
-    metal::float3 offset_11 = n_3 * metal::float3(d_4);
-    metal::float3 _e17 = step_toward(p_5 + offset_11, offset_11);
+    metal::float3 offset_10 = n_3 * metal::float3(d_4);
+    metal::float3 _e17 = step_toward(p_5 + offset_10, offset_10);
     return _e17;
 }
 
 Ray shadow_ray(
     metal::float3 position,
     metal::float3 normal_1,
-    metal::float3 dir_1,
+    metal::float3 dir_2,
     float dist,
     thread uint& F32_INF,
     thread float& hit_error
@@ -1248,7 +1333,7 @@ Ray shadow_ray(
     float tmax_4 = {};
     n_4 = normal_1;
     metal::float3 _e5 = n_4;
-    if (metal::dot(dir_1, _e5) < 0.0) {
+    if (metal::dot(dir_2, _e5) < 0.0) {
         metal::float3 _e9 = n_4;
         n_4 = -(_e9);
     }
@@ -1261,23 +1346,23 @@ Ray shadow_ray(
     tmax_4 = as_type<float>(_e25);
     uint _e29 = F32_INF;
     if (dist < as_type<float>(_e29)) {
-        metal::float3 light = position + (dir_1 * metal::float3(dist));
-        float dd_1 = metal::dot(dir_1, dir_1);
-        float along_1 = metal::dot(light - _e23, dir_1) / dd_1;
-        metal::float3 l_1 = metal::abs(position) + metal::abs(dir_1 * metal::float3(dist));
+        metal::float3 light = position + (dir_2 * metal::float3(dist));
+        float dd_1 = metal::dot(dir_2, dir_2);
+        float along_1 = metal::dot(light - _e23, dir_2) / dd_1;
+        metal::float3 l_1 = metal::abs(position) + metal::abs(dir_2 * metal::float3(dist));
         tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_1.x, l_1.y), l_1.z)) / metal::sqrt(dd_1));
     }
     float _e59 = tmax_4;
-    return Ray {_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u};
+    return Ray {_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u};
 }
 
 float shadow_query(
     metal::float3 position_1,
     metal::float3 normal_2,
-    metal::float3 dir_2,
+    metal::float3 dir_3,
     float dist_1,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1287,11 +1372,11 @@ float shadow_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = shadow_preset(normal_2, dir_2, scratch);
+    float _e4 = shadow_preset(normal_2, dir_3, scratch);
     if (_e4 >= 0.0) {
         return _e4;
     }
-    Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1, F32_INF, hit_error);
+    Ray _e7 = shadow_ray(position_1, normal_2, dir_3, dist_1, F32_INF, hit_error);
     Candidate _e9 = intersect_scene(_e7, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
     return (_e9.slot != NO_HIT) ? 0.0 : 1.0;
 }
@@ -1301,7 +1386,7 @@ LightSample point_light(
     metal::float3 position_2,
     metal::float3 normal_3,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1326,13 +1411,13 @@ LightSample point_light(
 }
 
 LightSample dispatch_light(
-    uint type_id_2,
-    uint offset_6,
+    uint type_id_3,
+    uint offset_8,
     metal::float3 position_3,
     metal::float3 normal_4,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
-    device type_5 const& params,
+    thread type_5& scratch,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1342,7 +1427,7 @@ LightSample dispatch_light(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    PointLight _e3 = load_PointLight(offset_6, params, _buffer_sizes);
+    PointLight _e3 = load_PointLight(offset_8, params, _buffer_sizes);
     LightSample _e4 = point_light(_e3, position_3, normal_4, frame, scratch, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e4;
 }
@@ -1352,8 +1437,8 @@ LightSample sample_light_query(
     metal::float3 position_4,
     metal::float3 normal_5,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
-    device type_5 const& params,
+    thread type_5& scratch,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1363,11 +1448,11 @@ LightSample sample_light_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    FrameUniforms frame_4 = frame;
-    if (i_2 >= frame_4.light_count) {
+    FrameUniforms frame_5 = frame;
+    if (i_2 >= frame_5.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry = frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE);
+    uint entry = frame_5.light_table + (i_2 * LIGHT_ENTRY_STRIDE);
     uint _e22 = params[entry];
     uint _e27 = params[entry + 1u];
     LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
@@ -1375,12 +1460,12 @@ LightSample sample_light_query(
 }
 
 metal::float3 lambert_shade(
-    Lambert m,
-    Ray ray_12,
-    Hit hit_2,
+    Lambert m_1,
+    Ray ray_15,
+    Hit hit_4,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
-    device type_5 const& params,
+    thread type_5& scratch,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1392,7 +1477,7 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_3 = {};
-    metal::float3 _e3 = shading_normal(ray_12, hit_2);
+    metal::float3 _e3 = shading_normal(ray_15, hit_4);
     color = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
     i_3 = 0u;
@@ -1411,43 +1496,32 @@ metal::float3 lambert_shade(
             break;
         }
         uint _e12 = i_3;
-        LightSample _e15 = sample_light_query(_e12, hit_2.position, hit_2.geometric_normal, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+        LightSample _e15 = sample_light_query(_e12, hit_4.position, hit_4.geometric_normal, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
         metal::float3 _e16 = color;
-        color = _e16 + (((m.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
+        color = _e16 + (((m_1.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
     }
     metal::float3 _e33 = color;
     return _e33;
 }
 
-Mirror load_Mirror(
-    uint offset_7,
-    device type_5 const& params,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint _e5 = params[offset_7 + 0u];
-    uint _e11 = params[offset_7 + 1u];
-    uint _e17 = params[offset_7 + 2u];
-    return Mirror {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17))};
-}
-
 metal::float3 mirror_shade(
-    Mirror m_1,
-    Ray ray_13,
-    Hit hit_3,
+    Mirror m_2,
+    Ray ray_16,
+    Hit hit_5,
     metal::float3 secondary
 ) {
     return secondary;
 }
 
 metal::float3 dispatch_closest_hit(
-    uint type_id_3,
-    uint offset_8,
-    Ray ray_14,
-    Hit hit_4,
+    uint type_id_4,
+    uint offset_9,
+    Ray ray_17,
+    Hit hit_6,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
-    device type_5 const& params,
+    thread type_5& scratch,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1457,15 +1531,15 @@ metal::float3 dispatch_closest_hit(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    switch(type_id_3) {
+    switch(type_id_4) {
         case 0u: {
-            Lambert _e5 = load_Lambert(offset_8, params, _buffer_sizes);
-            metal::float3 _e6 = lambert_shade(_e5, ray_14, hit_4, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+            Lambert _e5 = load_Lambert(offset_9, params, _buffer_sizes);
+            metal::float3 _e6 = lambert_shade(_e5, ray_17, hit_6, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
             return _e6;
         }
         case 1u: {
-            Mirror _e7 = load_Mirror(offset_8, params, _buffer_sizes);
-            metal::float3 _e8 = mirror_shade(_e7, ray_14, hit_4, secondary_1);
+            Mirror _e7 = load_Mirror(offset_9, params, _buffer_sizes);
+            metal::float3 _e8 = mirror_shade(_e7, ray_17, hit_6, secondary_1);
             return _e8;
         }
         default: {
@@ -1473,103 +1547,6 @@ metal::float3 dispatch_closest_hit(
         }
     }
     return metal::float3 {};
-}
-
-metal::float3 shade_direct(
-    Ray ray_15,
-    Candidate c_2,
-    constant FrameUniforms& frame,
-    thread type_3& scratch,
-    device type_5 const& params,
-    thread uint& F32_INF,
-    device type_9 const& instances,
-    device type_10 const& nodes,
-    device type_11 const& triangles,
-    thread type_13& traversal_stack,
-    thread float& hit_error,
-    device type_15 const& attributes,
-    thread uint& ray_count,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    GpuInstance inst_8 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_15, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
-    return _e11;
-}
-
-metal::float3 dispatch_medium(
-    uint type_id_4,
-    uint offset_9,
-    Ray ray_16,
-    float t,
-    metal::float3 radiance
-) {
-    return metal::float3 {};
-}
-
-metal::float3 through_medium(
-    Ray ray_17,
-    float t_1,
-    metal::float3 radiance_1,
-    device type_9 const& instances,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    if (!(HAS_MEDIA)) {
-        return radiance_1;
-    }
-    if (ray_17.medium == 0u) {
-        return radiance_1;
-    }
-    GpuInstance inst_9 = instances[ray_17.medium - 1u];
-    if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
-        return radiance_1;
-    }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_17, t_1, radiance_1);
-    return _e21;
-}
-
-void rt_spawn(
-    metal::float3 dir_3,
-    metal::float3 weight,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
-    thread uint& spawn_count
-) {
-    uint _e3 = spawn_count;
-    if (_e3 < 1u) {
-        spawn_dirs.inner[_e3] = dir_3;
-        spawn_weights.inner[_e3] = weight;
-        spawn_count = _e3 + 1u;
-    }
-}
-
-void mirror_rays(
-    Mirror m_2,
-    Ray ray_18,
-    Hit hit_5,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
-    thread uint& spawn_count
-) {
-    metal::float3 _e4 = normalize_vec3f(ray_18.dir);
-    rt_spawn(metal::reflect(_e4, hit_5.normal), m_2.tint, spawn_dirs, spawn_weights, spawn_count);
-    return;
-}
-
-void dispatch_secondary_rays(
-    uint type_id_5,
-    uint offset_10,
-    Ray ray_19,
-    Hit hit_6,
-    device type_5 const& params,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
-    thread uint& spawn_count,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    Mirror _e3 = load_Mirror(offset_10, params, _buffer_sizes);
-    mirror_rays(_e3, ray_19, hit_6, spawn_dirs, spawn_weights, spawn_count);
-    return;
 }
 
 metal::float3 spawn_origin_at(
@@ -1601,11 +1578,11 @@ metal::float3 spawn_origin(
 
 PathState path_step(
     PathState s_1,
-    Candidate c_3,
+    Candidate c_2,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1624,25 +1601,25 @@ PathState path_step(
     metal::float3 dir_6 = {};
     metal::float3 weight_1 = {};
     metal::float3 beta = {};
-    Ray ray_21 = s_1.ray;
+    Ray ray_18 = s_1.ray;
     out = s_1;
     out.live = false;
-    if (c_3.slot == NO_HIT) {
+    if (c_2.slot == NO_HIT) {
         hit_error = 0.0;
-        metal::float3 _e14 = miss(ray_21, frame, params, _buffer_sizes);
+        metal::float3 _e14 = miss(ray_18, frame, params, _buffer_sizes);
         out.radiance = s_1.radiance + (s_1.beta * _e14);
         PathState _e17 = out;
         return _e17;
     }
-    GpuInstance inst_10 = instances[c_3.slot];
-    Hit _e22 = finish_hit(ray_21, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
+    GpuInstance inst_8 = instances[c_2.slot];
+    Hit _e22 = finish_hit(ray_18, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
     float error_4 = hit_error;
     spawned = false;
     dir_6 = metal::float3(0.0);
     weight_1 = metal::float3(0.0);
-    if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_1.ray.depth < MAX_DEPTH)) {
+    if (((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_1.ray.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_21, _e22, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_18, _e22, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         uint _e47 = spawn_count;
         if (metal::min(_e47, 1u) > 0u) {
             spawned = true;
@@ -1652,7 +1629,7 @@ PathState path_step(
             weight_1 = _e60;
         }
     }
-    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_21, _e22, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    metal::float3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e22, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     out.radiance = s_1.radiance + (s_1.beta * _e68);
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -1691,89 +1668,6 @@ PathState path_step(
     return _e128;
 }
 
-metal::float3 trace_path(
-    Ray camera_ray,
-    constant FrameUniforms& frame,
-    thread type_3& scratch,
-    thread uint& rng_state,
-    device type_5 const& params,
-    thread uint& F32_INF,
-    device type_9 const& instances,
-    device type_10 const& nodes,
-    device type_11 const& triangles,
-    thread type_13& traversal_stack,
-    thread float& hit_error,
-    device type_15 const& attributes,
-    thread uint& ray_count,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
-    thread uint& spawn_count,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    PathState s_2 = {};
-    s_2 = PathState {camera_ray, metal::float3(1.0), metal::float3(0.0), true};
-    uint2 loop_bound_5 = uint2(4294967295u);
-    while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        PathState _e8 = s_2;
-        Ray _e10 = s_2.ray;
-        Candidate _e12 = intersect_scene(_e10, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        PathState _e13 = path_step(_e8, _e12, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-        s_2 = _e13;
-        bool _e15 = s_2.live;
-        if (!(_e15)) {
-            metal::float3 _e18 = s_2.radiance;
-            return _e18;
-        }
-    }
-    return metal::float3 {};
-}
-
-metal::float3 trace(
-    Ray camera_ray_1,
-    constant FrameUniforms& frame,
-    thread type_3& scratch,
-    thread uint& rng_state,
-    device type_5 const& params,
-    thread uint& F32_INF,
-    device type_9 const& instances,
-    device type_10 const& nodes,
-    device type_11 const& triangles,
-    thread type_13& traversal_stack,
-    thread float& hit_error,
-    device type_15 const& attributes,
-    thread uint& ray_count,
-    thread type_16& spawn_dirs,
-    thread type_16& spawn_weights,
-    thread uint& spawn_count,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    metal::float3 radiance_2 = {};
-    float t_2 = {};
-    if (!(HAS_SECONDARY_RAYS)) {
-        Candidate _e4 = intersect_scene(camera_ray_1, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        radiance_2 = metal::float3(0.0);
-        uint _e9 = F32_INF;
-        t_2 = as_type<float>(_e9);
-        if (_e4.slot == NO_HIT) {
-            hit_error = 0.0;
-            metal::float3 _e17 = miss(camera_ray_1, frame, params, _buffer_sizes);
-            radiance_2 = _e17;
-        } else {
-            metal::float3 _e18 = shade_direct(camera_ray_1, _e4, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, _buffer_sizes);
-            radiance_2 = _e18;
-            t_2 = _e4.t;
-        }
-        float _e20 = t_2;
-        metal::float3 _e21 = radiance_2;
-        metal::float3 _e22 = through_medium(camera_ray_1, _e20, _e21, instances, _buffer_sizes);
-        return _e22;
-    }
-    metal::float3 _e23 = trace_path(camera_ray_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-    return _e23;
-}
-
 metal::bool3 is_finite_vec3f(
     metal::float3 x_4
 ) {
@@ -1781,19 +1675,47 @@ metal::bool3 is_finite_vec3f(
 }
 
 metal::float3 finite_or_zero(
-    metal::float3 c_4
+    metal::float3 c_3
 ) {
-    metal::bool3 _e3 = is_finite_vec3f(c_4);
-    return metal::select(metal::float3(0.0), c_4, _e3);
+    metal::bool3 _e3 = is_finite_vec3f(c_3);
+    return metal::select(metal::float3(0.0), c_3, _e3);
+}
+
+void pass_done(
+    uint index,
+    metal::float3 sum,
+    uint bad,
+    uint pass,
+    constant FrameUniforms& frame,
+    thread uint& ray_count,
+    device type_19& counters,
+    device type_11& accum,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e5, metal::memory_order_relaxed);
+    ray_count = 0u;
+    FrameUniforms _e10 = frame;
+    metal::float4 _e13 = metal::float4(sum, static_cast<float>(_e10.samples_per_pass));
+    if (pass == 0u) {
+        accum[index] = _e13;
+    } else {
+        metal::float4 _e18 = accum[index];
+        accum[index] = _e18 + _e13;
+    }
+    if (bad > 0u) {
+        metal::atomic_fetch_add_explicit(&counters[0], bad, metal::memory_order_relaxed);
+    }
+    return;
 }
 
 void render_pixel(
-    metal::uint2 pixel_4,
+    metal::uint2 pixel_5,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1809,67 +1731,65 @@ void render_pixel(
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 sum = {};
-    uint bad = {};
-    uint s_3 = {};
-    Ray ray_20 = {};
-    FrameUniforms frame_5 = frame;
+    metal::float3 sum_1 = {};
+    uint bad_1 = {};
+    uint s_2 = {};
+    PathState path = {};
+    FrameUniforms frame_6 = frame;
     TileParams tile_2 = tile;
-    sum = metal::float3(0.0);
-    bad = 0u;
-    uint end_1 = frame_5.samples_per_pass;
-    s_3 = 0u;
-    uint2 loop_bound_6 = uint2(4294967295u);
-    bool loop_init_3 = true;
+    uint index_1 = (pixel_5.y * tile_2.image_size.x) + pixel_5.x;
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_1 = tile_2.frame * per_pass;
+    uint count_2 = per_pass * metal::max(frame_6.passes_per_dispatch, 1u);
+    sum_1 = metal::float3(0.0);
+    bad_1 = 0u;
+    s_2 = 0u;
+    Ray _e25 = sample_camera_ray(pixel_5, first_1, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+    path = PathState {_e25, metal::float3(1.0), metal::float3(0.0), true};
+    uint2 loop_bound_5 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e46 = s_3;
-            s_3 = _e46 + 1u;
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        PathState _e33 = path;
+        Ray _e35 = path.ray;
+        Candidate _e37 = intersect_scene(_e35, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        PathState _e38 = path_step(_e33, _e37, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        path = _e38;
+        bool _e40 = path.live;
+        if (!(_e40)) {
+            metal::float3 c_6 = path.radiance;
+            metal::bool3 _e44 = is_finite_vec3f(c_6);
+            if (metal::all(_e44)) {
+                metal::float3 _e46 = sum_1;
+                sum_1 = _e46 + c_6;
+            } else {
+                metal::float3 _e48 = sum_1;
+                metal::float3 _e49 = finite_or_zero(c_6);
+                sum_1 = _e48 + _e49;
+                uint _e51 = bad_1;
+                bad_1 = _e51 + 1u;
+            }
+            uint _e54 = s_2;
+            s_2 = _e54 + 1u;
+            uint _e57 = s_2;
+            uint _e58 = rem_u32_(_e57, per_pass);
+            if (_e58 == 0u) {
+                metal::float3 _e61 = sum_1;
+                uint _e62 = bad_1;
+                uint _e64 = s_2;
+                uint _e65 = div_u32_(_e64, per_pass);
+                pass_done(index_1, _e61, _e62, (tile_2.frame + _e65) - 1u, frame, ray_count, counters, accum, _buffer_sizes);
+                sum_1 = metal::float3(0.0);
+                bad_1 = 0u;
+            }
+            uint _e72 = s_2;
+            if (_e72 >= count_2) {
+                break;
+            }
+            uint _e74 = s_2;
+            Ray _e76 = sample_camera_ray(pixel_5, first_1 + _e74, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+            path = PathState {_e76, metal::float3(1.0), metal::float3(0.0), true};
         }
-        loop_init_3 = false;
-        uint _e13 = s_3;
-        if (_e13 >= end_1) {
-            break;
-        }
-        uint _e18 = s_3;
-        uint sample_4 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
-        rng_seed(pixel_4, sample_4, frame_5.seed, scratch, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-        ray_20 = _e23;
-        ray_20.depth = 0u;
-        ray_20.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_20.origin;
-        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-        ray_20.medium = _e33;
-        Ray _e34 = ray_20;
-        metal::float3 _e35 = trace(_e34, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-        metal::bool3 _e36 = is_finite_vec3f(_e35);
-        if (metal::all(_e36)) {
-            metal::float3 _e38 = sum;
-            sum = _e38 + _e35;
-        } else {
-            metal::float3 _e40 = sum;
-            metal::float3 _e41 = finite_or_zero(_e35);
-            sum = _e40 + _e41;
-            uint _e43 = bad;
-            bad = _e43 + 1u;
-        }
-    }
-    uint _e50 = ray_count;
-    metal::atomic_fetch_add_explicit(&counters[1], _e50, metal::memory_order_relaxed);
-    metal::float3 _e59 = sum;
-    metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if (tile_2.frame == 0u) {
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e62;
-    } else {
-        metal::float4 _e69 = accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x];
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e69 + _e62;
-    }
-    if (_e63 > 0u) {
-        metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
     }
     return;
 }
@@ -1878,9 +1798,9 @@ void render_invocation(
     metal::uint2 id_1,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1911,7 +1831,7 @@ struct renderInput {
   metal::uint3 gid [[thread_position_in_grid]]
 , constant TileParams& tile [[buffer(1)]]
 , constant FrameUniforms& frame [[buffer(0)]]
-, device type_5 const& params [[buffer(6)]]
+, device type_6 const& params [[buffer(6)]]
 , device type_9 const& instances [[buffer(3)]]
 , device type_10 const& nodes [[buffer(2)]]
 , device type_11 const& triangles [[buffer(4)]]
@@ -1920,7 +1840,7 @@ struct renderInput {
 , device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
-    type_3 scratch = {};
+    type_5 scratch = {};
     uint rng_state = {};
     uint F32_INF = 2139095040u;
     type_13 traversal_stack = {};

@@ -36,9 +36,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
-};
-struct type_3 {
-    uint inner[25];
+    uint passes_per_dispatch;
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -49,6 +47,9 @@ struct Ray {
     uint kind;
     uint medium;
     char _pad7[4];
+};
+struct type_4 {
+    uint inner[25];
 };
 typedef uint type_5[1];
 struct Pinhole {
@@ -332,7 +333,7 @@ void rng_resume(
     uint sample,
     uint seed,
     uint state,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     scratch.inner[metal::min(SCRATCH_RNG_INDEX, 24u)] = sample;
@@ -348,7 +349,7 @@ void rng_seed(
     metal::uint2 pixel_1,
     uint sample_1,
     uint seed_1,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     rng_resume(pixel_1, sample_1, seed_1, 0u, scratch, rng_state);
@@ -434,7 +435,7 @@ uint sobol_second_reversed(
 }
 
 float rand_next(
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     uint x_2 = {};
@@ -457,7 +458,7 @@ float rand_next(
 }
 
 metal::float2 rand2_next(
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     float _e0 = rand_next(scratch, rng_state);
@@ -477,7 +478,7 @@ Ray pinhole_ray(
     uint sample_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -509,7 +510,7 @@ Ray dispatch_ray_generation(
     uint sample_3,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1186,6 +1187,37 @@ uint medium_at(
     return _e62;
 }
 
+Ray sample_camera_ray(
+    metal::uint2 pixel_4,
+    uint sample_4,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread type_4& scratch,
+    thread uint& rng_state,
+    device type_5 const& params,
+    thread uint& F32_INF,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
+    thread float& hit_error,
+    device type_15 const& attributes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Ray ray_10 = {};
+    FrameUniforms frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
+    Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
+    ray_10 = _e7;
+    ray_10.depth = 0u;
+    ray_10.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_10.origin;
+    uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+    ray_10.medium = _e17;
+    Ray _e18 = ray_10;
+    return _e18;
+}
+
 metal::float3 node_frame_hi(
     GpuNode header
 ) {
@@ -1194,7 +1226,7 @@ metal::float3 node_frame_hi(
 }
 
 Candidate intersect_scene(
-    Ray ray_10,
+    Ray ray_11,
     bool shadow_2,
     constant FrameUniforms& frame,
     device type_5 const& params,
@@ -1213,21 +1245,21 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_10.tmax);
+    Candidate _e7 = no_candidate(ray_11.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = frame;
-    if (frame_2.instance_count == 0u) {
+    FrameUniforms frame_3 = frame;
+    if (frame_3.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_10.dir);
-    uint base_2 = frame_2.tlas_root;
+    metal::float3 _e16 = safe_inverse(ray_11.dir);
+    uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = nodes[base_2];
     metal::float3 origin_5 = header_2.min;
     metal::float3 scale_3 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_10.origin, _e16, ray_10.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_11.origin, _e16, ray_11.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
@@ -1245,7 +1277,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_10, _e55, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_11, _e55, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1257,7 +1289,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_9 = nodes[base_2 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_9, origin_5, scale_3, ray_10, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_9, origin_5, scale_3, ray_11, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1317,7 +1349,7 @@ ConstantBackground load_ConstantBackground(
 
 metal::float3 constant_background(
     ConstantBackground b_5,
-    Ray ray_11
+    Ray ray_12
 ) {
     return b_5.color;
 }
@@ -1325,17 +1357,17 @@ metal::float3 constant_background(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_6,
-    Ray ray_12,
+    Ray ray_13,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     ConstantBackground _e2 = load_ConstantBackground(offset_6, params, _buffer_sizes);
-    metal::float3 _e3 = constant_background(_e2, ray_12);
+    metal::float3 _e3 = constant_background(_e2, ray_13);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_13,
+    Ray ray_14,
     constant FrameUniforms& frame,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1343,8 +1375,8 @@ metal::float3 miss(
     if (!(HAS_BACKGROUND)) {
         return metal::float3(0.0);
     }
-    FrameUniforms frame_3 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_13, params, _buffer_sizes);
+    FrameUniforms frame_4 = frame;
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_14, params, _buffer_sizes);
     return _e9;
 }
 
@@ -1360,10 +1392,10 @@ Lambert load_Lambert(
 }
 
 metal::float3 shading_normal(
-    Ray ray_14,
+    Ray ray_15,
     Hit hit_1
 ) {
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_14.dir, hit_1.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_15.dir, hit_1.geometric_normal);
     return metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1392,7 +1424,7 @@ DirectionalLight load_DirectionalLight(
 float shadow_preset(
     metal::float3 normal,
     metal::float3 dir,
-    thread type_3& scratch
+    thread type_4& scratch
 ) {
     uint mode = scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 24u)];
     if (mode == SHADOW_UNOCCLUDED) {
@@ -1407,7 +1439,7 @@ float shadow_preset(
 void scratch_store3f(
     uint i_2,
     metal::float3 v_2,
-    thread type_3& scratch
+    thread type_4& scratch
 ) {
     metal::uint3 b_9 = as_type<metal::uint3>(v_2);
     scratch.inner[metal::min(i_2, 24u)] = b_9.x;
@@ -1421,7 +1453,7 @@ float shadow_deferred(
     metal::float3 normal_1,
     metal::float3 dir_1,
     float dist,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1456,7 +1488,7 @@ LightSample directional_light(
     DirectionalLight l,
     metal::float3 position_1,
     metal::float3 normal_2,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& F32_INF,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
@@ -1494,7 +1526,7 @@ LightSample point_light(
     PointLight l_1,
     metal::float3 position_2,
     metal::float3 normal_3,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1543,7 +1575,7 @@ LightSample sphere_light(
     SphereLight l_2,
     metal::float3 position_3,
     metal::float3 normal_4,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
@@ -1597,7 +1629,7 @@ LightSample spot_light(
     SpotLight l_3,
     metal::float3 position_4,
     metal::float3 normal_5,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1629,7 +1661,7 @@ LightSample dispatch_light(
     uint offset_12,
     metal::float3 position_5,
     metal::float3 normal_6,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1666,7 +1698,7 @@ LightSample dispatch_light(
 
 metal::float3 scratch_load3f(
     uint i_3,
-    thread type_3& scratch
+    thread type_4& scratch
 ) {
     uint _e5 = scratch.inner[metal::min(i_3, 24u)];
     uint _e12 = scratch.inner[metal::min(i_3 + 1u, 24u)];
@@ -1738,7 +1770,7 @@ float shadow_query(
     metal::float3 dir_3,
     float dist_2,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1763,7 +1795,7 @@ LightSample sample_light_deferred(
     metal::float3 position_8,
     metal::float3 normal_9,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1779,11 +1811,11 @@ LightSample sample_light_deferred(
     uint after = {};
     uint resolved = {};
     uint bits_1 = {};
-    FrameUniforms frame_4 = frame;
-    if (i_4 >= frame_4.light_count) {
+    FrameUniforms frame_5 = frame;
+    if (i_4 >= frame_5.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry_1 = frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE);
+    uint entry_1 = frame_5.light_table + (i_4 * LIGHT_ENTRY_STRIDE);
     uint type_id_7 = params[entry_1];
     uint offset_17 = params[entry_1 + 1u];
     uint start = rng_state;
@@ -1848,10 +1880,10 @@ LightSample sample_light_deferred(
 
 metal::float3 lambert_shade(
     Lambert m,
-    Ray ray_15,
+    Ray ray_16,
     Hit hit_2,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1866,7 +1898,7 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_5 = {};
-    metal::float3 _e3 = shading_normal(ray_15, hit_2);
+    metal::float3 _e3 = shading_normal(ray_16, hit_2);
     color = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
     i_5 = 0u;
@@ -1896,11 +1928,11 @@ metal::float3 lambert_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_13,
-    Ray ray_16,
+    Ray ray_17,
     Hit hit_3,
     metal::float3 secondary,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1914,15 +1946,15 @@ metal::float3 dispatch_closest_hit(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Lambert _e3 = load_Lambert(offset_13, params, _buffer_sizes);
-    metal::float3 _e4 = lambert_shade(_e3, ray_16, hit_3, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+    metal::float3 _e4 = lambert_shade(_e3, ray_17, hit_3, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
     return _e4;
 }
 
 metal::float3 shade_direct(
-    Ray ray_17,
+    Ray ray_18,
     Candidate c_2,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1937,15 +1969,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_2.slot];
-    Hit _e6 = finish_hit(ray_17, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_18, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_14,
-    Ray ray_18,
+    Ray ray_19,
     float t_2,
     metal::float3 radiance
 ) {
@@ -1953,7 +1985,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_19,
+    Ray ray_20,
     float t_3,
     metal::float3 radiance_1,
     device type_9 const& instances,
@@ -1962,21 +1994,21 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_19.medium == 0u) {
+    if (ray_20.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_9 = instances[ray_19.medium - 1u];
+    GpuInstance inst_9 = instances[ray_20.medium - 1u];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_19, t_3, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_20, t_3, radiance_1);
     return _e21;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_15,
-    Ray ray_20,
+    Ray ray_21,
     Hit hit_4
 ) {
     return;
@@ -2012,7 +2044,7 @@ metal::float3 spawn_origin(
 metal::float3 trace(
     Ray camera_ray,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2033,7 +2065,7 @@ metal::float3 trace(
     float t_4 = {};
     type_20 stack = {};
     uint depth = {};
-    Ray ray_21 = {};
+    Ray ray_22 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -2071,7 +2103,7 @@ metal::float3 trace(
     }
     stack = type_20 {};
     depth = 0u;
-    ray_21 = camera_ray;
+    ray_22 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -2090,10 +2122,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_21;
+            Ray _e67 = ray_22;
             Candidate _e69 = intersect_scene(_e67, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_21;
+            Ray _e70 = ray_22;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -2230,7 +2262,7 @@ metal::float3 trace(
             metal::float3 _e284 = spawn_origin(hit_8, _e283, dir_9);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_21 = Ray {_e284, 0.0, dir_9, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_22 = Ray {_e284, 0.0, dir_9, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -2263,11 +2295,39 @@ metal::float3 finite_or_zero(
     return metal::select(metal::float3(0.0), c_3, _e3);
 }
 
+void pass_done(
+    uint index,
+    metal::float3 sum,
+    uint bad,
+    uint pass,
+    constant FrameUniforms& frame,
+    thread uint& ray_count,
+    device type_17& counters,
+    device type_11& accum,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e5, metal::memory_order_relaxed);
+    ray_count = 0u;
+    FrameUniforms _e10 = frame;
+    metal::float4 _e13 = metal::float4(sum, static_cast<float>(_e10.samples_per_pass));
+    if (pass == 0u) {
+        accum[index] = _e13;
+    } else {
+        metal::float4 _e18 = accum[index];
+        accum[index] = _e18 + _e13;
+    }
+    if (bad > 0u) {
+        metal::atomic_fetch_add_explicit(&counters[0], bad, metal::memory_order_relaxed);
+    }
+    return;
+}
+
 void render_pixel(
-    metal::uint2 pixel_4,
+    metal::uint2 pixel_5,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2285,15 +2345,17 @@ void render_pixel(
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 sum = {};
-    uint bad = {};
+    metal::float3 sum_1 = {};
+    uint bad_1 = {};
     uint s_2 = {};
-    Ray ray_22 = {};
-    FrameUniforms frame_5 = frame;
+    FrameUniforms frame_6 = frame;
     TileParams tile_2 = tile;
-    sum = metal::float3(0.0);
-    bad = 0u;
-    uint end_1 = frame_5.samples_per_pass;
+    uint index_1 = (pixel_5.y * tile_2.image_size.x) + pixel_5.x;
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_1 = tile_2.frame * per_pass;
+    uint count_2 = per_pass * metal::max(frame_6.passes_per_dispatch, 1u);
+    sum_1 = metal::float3(0.0);
+    bad_1 = 0u;
     s_2 = 0u;
     uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_4 = true;
@@ -2301,51 +2363,39 @@ void render_pixel(
         if (metal::all(loop_bound_8 == uint2(0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e46 = s_2;
-            s_2 = _e46 + 1u;
+            uint _e56 = s_2;
+            s_2 = _e56 + 1u;
         }
         loop_init_4 = false;
-        uint _e13 = s_2;
-        if (_e13 >= end_1) {
+        uint _e25 = s_2;
+        if (_e25 >= count_2) {
             break;
         }
-        uint _e18 = s_2;
-        uint sample_4 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
-        rng_seed(pixel_4, sample_4, frame_5.seed, scratch, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_22.origin;
-        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-        ray_22.medium = _e33;
-        Ray _e34 = ray_22;
-        metal::float3 _e35 = trace(_e34, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-        metal::bool3 _e36 = is_finite_vec3f(_e35);
-        if (metal::all(_e36)) {
-            metal::float3 _e38 = sum;
-            sum = _e38 + _e35;
+        uint _e27 = s_2;
+        Ray _e29 = sample_camera_ray(pixel_5, first_1 + _e27, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+        metal::float3 _e30 = trace(_e29, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::bool3 _e31 = is_finite_vec3f(_e30);
+        if (metal::all(_e31)) {
+            metal::float3 _e33 = sum_1;
+            sum_1 = _e33 + _e30;
         } else {
-            metal::float3 _e40 = sum;
-            metal::float3 _e41 = finite_or_zero(_e35);
-            sum = _e40 + _e41;
-            uint _e43 = bad;
-            bad = _e43 + 1u;
+            metal::float3 _e35 = sum_1;
+            metal::float3 _e36 = finite_or_zero(_e30);
+            sum_1 = _e35 + _e36;
+            uint _e38 = bad_1;
+            bad_1 = _e38 + 1u;
         }
-    }
-    uint _e50 = ray_count;
-    metal::atomic_fetch_add_explicit(&counters[1], _e50, metal::memory_order_relaxed);
-    metal::float3 _e59 = sum;
-    metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if (tile_2.frame == 0u) {
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e62;
-    } else {
-        metal::float4 _e69 = accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x];
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e69 + _e62;
-    }
-    if (_e63 > 0u) {
-        metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
+        uint _e41 = s_2;
+        uint _e44 = rem_u32_(_e41 + 1u, per_pass);
+        if (_e44 == 0u) {
+            metal::float3 _e47 = sum_1;
+            uint _e48 = bad_1;
+            uint _e50 = s_2;
+            uint _e51 = div_u32_(_e50, per_pass);
+            pass_done(index_1, _e47, _e48, tile_2.frame + _e51, frame, ray_count, counters, accum, _buffer_sizes);
+            sum_1 = metal::float3(0.0);
+            bad_1 = 0u;
+        }
     }
     return;
 }
@@ -2354,7 +2404,7 @@ void render_invocation(
     metal::uint2 id_1,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2396,7 +2446,7 @@ struct renderInput {
 , device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
-    type_3 scratch = {};
+    type_4 scratch = {};
     uint rng_state = {};
     uint F32_INF = 2139095040u;
     type_13 traversal_stack = {};

@@ -25,6 +25,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
+    uint passes_per_dispatch;
 };
 struct Ray {
     vec3 origin;
@@ -880,12 +881,27 @@ uint medium_at(vec3 p_4, uint exclude) {
     return _e62;
 }
 
+Ray sample_camera_ray(uvec2 pixel_4, uint sample_4) {
+    Ray ray_9 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    FrameUniforms frame_2 = _group_0_binding_0_cs;
+    rng_seed(pixel_4, sample_4, frame_2.seed);
+    Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
+    ray_9 = _e7;
+    ray_9.depth = 0u;
+    ray_9.kind = RAY_CAMERA;
+    vec3 _e15 = ray_9.origin;
+    uint _e17 = medium_at(_e15, NO_HIT);
+    ray_9.medium = _e17;
+    Ray _e18 = ray_9;
+    return _e18;
+}
+
 vec3 node_frame_hi(GpuNode header) {
     vec3 _e5 = node_point(header.min_, header.max_, uvec3(65535u));
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_9, bool shadow_2) {
+Candidate intersect_scene(Ray ray_10, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -893,21 +909,21 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_9.tmax);
+    Candidate _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = _group_0_binding_0_cs;
-    if ((frame_2.instance_count == 0u)) {
+    FrameUniforms frame_3 = _group_0_binding_0_cs;
+    if ((frame_3.instance_count == 0u)) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    vec3 _e16 = safe_inverse(ray_9.dir);
-    uint base_6 = frame_2.tlas_root;
+    vec3 _e16 = safe_inverse(ray_10.dir);
+    uint base_6 = frame_3.tlas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_6];
     vec3 origin_5 = header_2.min_;
     vec3 scale_3 = header_2.max_;
     vec3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
+    float _e28 = slab(origin_5, _e23, ray_10.origin, _e16, ray_10.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == uintBitsToFloat(_e30))) {
         Candidate _e33 = best_2;
@@ -922,7 +938,7 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_9, _e55, shadow_2);
+                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_10, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -934,7 +950,7 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2) {
             uint _e63 = child_1;
             GpuNode n_12 = _group_0_binding_2_cs[(base_6 + _e63)];
             float _e69 = best_2.t;
-            vec2 _e70 = children_entry(n_12, origin_5, scale_3, ray_9, _e16, _e69);
+            vec2 _e70 = children_entry(n_12, origin_5, scale_3, ray_10, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -988,22 +1004,22 @@ ConstantBackground load_ConstantBackground(uint offset_4) {
     return ConstantBackground(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 constant_background(ConstantBackground b_4, Ray ray_10) {
+vec3 constant_background(ConstantBackground b_4, Ray ray_11) {
     return b_4.color;
 }
 
-vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_11) {
+vec3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_12) {
     ConstantBackground _e2 = load_ConstantBackground(offset_5);
-    vec3 _e3 = constant_background(_e2, ray_11);
+    vec3 _e3 = constant_background(_e2, ray_12);
     return _e3;
 }
 
-vec3 miss(Ray ray_12) {
+vec3 miss(Ray ray_13) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
-    FrameUniforms frame_3 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_12);
+    FrameUniforms frame_4 = _group_0_binding_0_cs;
+    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13);
     return _e9;
 }
 
@@ -1233,11 +1249,11 @@ LightSample sample_light_deferred(uint i_4, vec3 position_6, vec3 normal_7) {
     uint after = 0u;
     uint resolved = 0u;
     uint bits_1 = 0u;
-    FrameUniforms frame_4 = _group_0_binding_0_cs;
-    if ((i_4 >= frame_4.light_count)) {
+    FrameUniforms frame_5 = _group_0_binding_0_cs;
+    if ((i_4 >= frame_5.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
-    uint entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_5.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     uint type_id_7 = _group_0_binding_6_cs[entry];
     uint offset_17 = _group_0_binding_6_cs[(entry + 1u)];
     uint start = rng_state;
@@ -1325,11 +1341,11 @@ float mis_light_weight(LightSample l_2, float bsdf_pdf) {
     return _e8;
 }
 
-vec3 path_diffuse_shade(PathDiffuse m, Ray ray_13, Hit hit_1, vec3 secondary) {
+vec3 path_diffuse_shade(PathDiffuse m, Ray ray_14, Hit hit_1, vec3 secondary) {
     vec3 direct = vec3(0.0);
     uint i_6 = 0u;
-    vec3 n_13 = faceforward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
-    vec3 ng = faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    vec3 n_13 = faceforward(hit_1.normal, ray_14.dir, hit_1.geometric_normal);
+    vec3 ng = faceforward(hit_1.geometric_normal, ray_14.dir, hit_1.geometric_normal);
     direct = vec3(0.0);
     uint _e16 = light_count_query();
     i_6 = 0u;
@@ -1364,31 +1380,31 @@ QuadLamp load_QuadLamp(uint offset_10) {
     return QuadLamp(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24), uintBitsToFloat(_e30));
 }
 
-bool after_nee_bounce(Ray ray_14) {
-    return (dot(ray_14.dir, ray_14.dir) > 2.0);
+bool after_nee_bounce(Ray ray_15) {
+    return (dot(ray_15.dir, ray_15.dir) > 2.0);
 }
 
-float bounce_pdf(Ray ray_15) {
-    float x_5 = (length(ray_15.dir) - MIS_BOUNCE_LENGTH);
+float bounce_pdf(Ray ray_16) {
+    float x_5 = (length(ray_16.dir) - MIS_BOUNCE_LENGTH);
     if (!((x_5 > -0.25))) {
         return 0.0;
     }
     return (exp((max(x_5, 0.0) * 90.0)) - 1.0);
 }
 
-vec3 quad_lamp_shade(QuadLamp m_1, Ray ray_16, Hit hit_2) {
+vec3 quad_lamp_shade(QuadLamp m_1, Ray ray_17, Hit hit_2) {
     if (!(hit_2.front_face)) {
         return vec3(0.0);
     }
     vec3 le = (m_1.color * vec3(m_1.intensity));
-    bool _e11 = after_nee_bounce(ray_16);
+    bool _e11 = after_nee_bounce(ray_17);
     if (!(_e11)) {
         return le;
     }
-    float _e13 = bounce_pdf(ray_16);
-    float len = length(ray_16.dir);
+    float _e13 = bounce_pdf(ray_17);
+    float len = length(ray_17.dir);
     float dist_5 = (hit_2.t * len);
-    float cos_l = (abs(dot(hit_2.geometric_normal, ray_16.dir)) / len);
+    float cos_l = (abs(dot(hit_2.geometric_normal, ray_17.dir)) / len);
     float pl = ((dist_5 * dist_5) / max((cos_l * m_1.area), 1e-30));
     float _e29 = mis_weight(_e13, pl);
     return (le * vec3(_e29));
@@ -1403,19 +1419,19 @@ SphereLamp load_SphereLamp(uint offset_11) {
     return SphereLamp(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24), uintBitsToFloat(_e30));
 }
 
-vec3 sphere_lamp_shade(SphereLamp m_2, Ray ray_17, Hit hit_3) {
+vec3 sphere_lamp_shade(SphereLamp m_2, Ray ray_18, Hit hit_3) {
     if (!(hit_3.front_face)) {
         return vec3(0.0);
     }
     float r2_3 = max((m_2.radius * m_2.radius), 1e-20);
     vec3 le_1 = (m_2.color * vec3(((m_2.intensity * INV_PI) / r2_3)));
-    bool _e19 = after_nee_bounce(ray_17);
+    bool _e19 = after_nee_bounce(ray_18);
     if (!(_e19)) {
         return le_1;
     }
-    float _e21 = bounce_pdf(ray_17);
+    float _e21 = bounce_pdf(ray_18);
     vec3 center = (hit_3.position - (hit_3.normal * vec3(m_2.radius)));
-    vec3 to_center_1 = (center - ray_17.origin);
+    vec3 to_center_1 = (center - ray_18.origin);
     float s2_1 = (r2_3 / max(dot(to_center_1, to_center_1), r2_3));
     float one_minus_cos_max_1 = (s2_1 / (1.0 + sqrt((1.0 - s2_1))));
     float pl_1 = (1.0 / max((TAU * one_minus_cos_max_1), 1e-30));
@@ -1436,14 +1452,14 @@ PathPbr load_PathPbr(uint offset_12) {
     return PathPbr(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24), uintBitsToFloat(_e30), vec3(uintBitsToFloat(_e36), uintBitsToFloat(_e42), uintBitsToFloat(_e48)), _e55);
 }
 
-vec3 path_pbr_ng(Ray ray_18, Hit hit_4) {
-    return faceforward(hit_4.geometric_normal, ray_18.dir, hit_4.geometric_normal);
+vec3 path_pbr_ng(Ray ray_19, Hit hit_4) {
+    return faceforward(hit_4.geometric_normal, ray_19.dir, hit_4.geometric_normal);
 }
 
-vec3 path_pbr_n(Ray ray_19, Hit hit_5) {
-    vec3 _e2 = path_pbr_ng(ray_19, hit_5);
+vec3 path_pbr_n(Ray ray_20, Hit hit_5) {
+    vec3 _e2 = path_pbr_ng(ray_20, hit_5);
     vec3 n_14 = faceforward(hit_5.normal, -(_e2), hit_5.normal);
-    return ((dot(n_14, ray_19.dir) < 0.0) ? n_14 : _e2);
+    return ((dot(n_14, ray_20.dir) < 0.0) ? n_14 : _e2);
 }
 
 float pbr_alpha2_(float roughness) {
@@ -1522,15 +1538,15 @@ float pbr_pdf(vec3 base_3, float metallic_2, float roughness_2, vec3 n_7, vec3 v
     return ((_e17 * _e22) + (((1.0 - _e17) * ndl_2) * INV_PI));
 }
 
-vec3 path_pbr_shade(PathPbr m_3, Ray ray_20, Hit hit_6, vec3 secondary_1) {
+vec3 path_pbr_shade(PathPbr m_3, Ray ray_21, Hit hit_6, vec3 secondary_1) {
     vec3 direct_1 = vec3(0.0);
     uint i_7 = 0u;
     float w = 0.0;
-    vec3 _e4 = path_pbr_n(ray_20, hit_6);
-    vec3 _e6 = normalize_vec3f(ray_20.dir);
+    vec3 _e4 = path_pbr_n(ray_21, hit_6);
+    vec3 _e6 = normalize_vec3f(ray_21.dir);
     vec3 v_7 = -(_e6);
     direct_1 = vec3(0.0);
-    vec3 _e11 = path_pbr_ng(ray_20, hit_6);
+    vec3 _e11 = path_pbr_ng(ray_21, hit_6);
     uint _e13 = light_count_query();
     i_7 = 0u;
     bool loop_init_3 = true;
@@ -1563,26 +1579,26 @@ vec3 path_pbr_shade(PathPbr m_3, Ray ray_20, Hit hit_6, vec3 secondary_1) {
     return ((m_3.emissive + _e53) + secondary_1);
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_21, Hit hit_7, vec3 secondary_2) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_22, Hit hit_7, vec3 secondary_2) {
     switch(type_id_4) {
         case 0u: {
             PathDiffuse _e5 = load_PathDiffuse(offset_13);
-            vec3 _e6 = path_diffuse_shade(_e5, ray_21, hit_7, secondary_2);
+            vec3 _e6 = path_diffuse_shade(_e5, ray_22, hit_7, secondary_2);
             return _e6;
         }
         case 1u: {
             QuadLamp _e7 = load_QuadLamp(offset_13);
-            vec3 _e8 = quad_lamp_shade(_e7, ray_21, hit_7);
+            vec3 _e8 = quad_lamp_shade(_e7, ray_22, hit_7);
             return _e8;
         }
         case 2u: {
             SphereLamp _e9 = load_SphereLamp(offset_13);
-            vec3 _e10 = sphere_lamp_shade(_e9, ray_21, hit_7);
+            vec3 _e10 = sphere_lamp_shade(_e9, ray_22, hit_7);
             return _e10;
         }
         case 3u: {
             PathPbr _e11 = load_PathPbr(offset_13);
-            vec3 _e12 = path_pbr_shade(_e11, ray_21, hit_7, secondary_2);
+            vec3 _e12 = path_pbr_shade(_e11, ray_22, hit_7, secondary_2);
             return _e12;
         }
         default: {
@@ -1592,29 +1608,29 @@ vec3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_21, Hit hit_7,
     return vec3(0.0);
 }
 
-vec3 shade_direct(Ray ray_22, Candidate c_4) {
+vec3 shade_direct(Ray ray_23, Candidate c_4) {
     GpuInstance inst_8 = _group_0_binding_3_cs[c_4.slot];
-    Hit _e6 = finish_hit(ray_22, c_4);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, vec3(0.0));
+    Hit _e6 = finish_hit(ray_23, c_4);
+    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_23, _e6, vec3(0.0));
     return _e11;
 }
 
-vec3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_23, float t_1, vec3 radiance) {
+vec3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_24, float t_1, vec3 radiance) {
     return vec3(0.0);
 }
 
-vec3 through_medium(Ray ray_24, float t_2, vec3 radiance_1) {
+vec3 through_medium(Ray ray_25, float t_2, vec3 radiance_1) {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_24.medium == 0u)) {
+    if ((ray_25.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_24.medium - 1u)];
+    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_25.medium - 1u)];
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_24, t_2, radiance_1);
+    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_25, t_2, radiance_1);
     return _e21;
 }
 
@@ -1640,14 +1656,14 @@ void rt_spawn(vec3 dir_5, vec3 weight) {
     }
 }
 
-void path_diffuse_rays(PathDiffuse m_4, Ray ray_25, Hit hit_8) {
+void path_diffuse_rays(PathDiffuse m_4, Ray ray_26, Hit hit_8) {
     vec3 weight_1 = vec3(0.0);
     vec3 ng_1 = (hit_8.front_face ? hit_8.geometric_normal : -(hit_8.geometric_normal));
     vec3 n_15 = faceforward(hit_8.normal, -(ng_1), hit_8.normal);
     vec2 _e12 = rand2_next();
     vec3 _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
-    if ((ray_25.depth >= m_4.roulette_depth)) {
+    if ((ray_26.depth >= m_4.roulette_depth)) {
         float q_4 = clamp(max(m_4.albedo.x, max(m_4.albedo.y, m_4.albedo.z)), 0.0, 1.0);
         float _e28 = rand_next();
         if ((_e28 >= q_4)) {
@@ -1715,11 +1731,11 @@ PbrSample pbr_sample(vec3 base_4, float metallic_3, float roughness_3, vec3 n_9,
     return PbrSample(_e46, weight_5, _e33);
 }
 
-void path_pbr_rays(PathPbr m_5, Ray ray_26, Hit hit_9) {
+void path_pbr_rays(PathPbr m_5, Ray ray_27, Hit hit_9) {
     vec3 weight_2 = vec3(0.0);
-    vec3 _e3 = path_pbr_ng(ray_26, hit_9);
-    vec3 _e4 = path_pbr_n(ray_26, hit_9);
-    vec3 _e6 = normalize_vec3f(ray_26.dir);
+    vec3 _e3 = path_pbr_ng(ray_27, hit_9);
+    vec3 _e4 = path_pbr_n(ray_27, hit_9);
+    vec3 _e6 = normalize_vec3f(ray_27.dir);
     vec3 v_8 = -(_e6);
     float _e11 = rand_next();
     vec2 _e12 = rand2_next();
@@ -1728,7 +1744,7 @@ void path_pbr_rays(PathPbr m_5, Ray ray_26, Hit hit_9) {
         return;
     }
     weight_2 = _e14.weight;
-    if ((ray_26.depth >= m_5.roulette_depth)) {
+    if ((ray_27.depth >= m_5.roulette_depth)) {
         float _e31 = weight_2.x;
         float _e33 = weight_2.y;
         float _e35 = weight_2.z;
@@ -1746,16 +1762,16 @@ void path_pbr_rays(PathPbr m_5, Ray ray_26, Hit hit_9) {
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_27, Hit hit_10) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_28, Hit hit_10) {
     switch(type_id_6) {
         case 0u: {
             PathDiffuse _e4 = load_PathDiffuse(offset_15);
-            path_diffuse_rays(_e4, ray_27, hit_10);
+            path_diffuse_rays(_e4, ray_28, hit_10);
             return;
         }
         case 3u: {
             PathPbr _e5 = load_PathPbr(offset_15);
-            path_pbr_rays(_e5, ray_27, hit_10);
+            path_pbr_rays(_e5, ray_28, hit_10);
             return;
         }
         default: {
@@ -1909,65 +1925,73 @@ vec3 finite_or_zero(vec3 c_6) {
     return mix(vec3(0.0), c_6, _e3);
 }
 
-void render_pixel(uvec2 pixel_4) {
-    vec3 sum = vec3(0.0);
-    uint bad = 0u;
+void pass_done(uint index, vec3 sum, uint bad, uint pass) {
+    uint _e5 = ray_count;
+    atomicAdd(_group_0_binding_9_cs[1], _e5);
+    ray_count = 0u;
+    FrameUniforms _e10 = _group_0_binding_0_cs;
+    vec4 _e13 = vec4(sum, float(_e10.samples_per_pass));
+    if ((pass == 0u)) {
+        _group_0_binding_8_cs[index] = _e13;
+    } else {
+        vec4 _e18 = _group_0_binding_8_cs[index];
+        _group_0_binding_8_cs[index] = (_e18 + _e13);
+    }
+    if ((bad > 0u)) {
+        atomicAdd(_group_0_binding_9_cs[0], bad);
+    }
+    return;
+}
+
+void render_pixel(uvec2 pixel_5) {
+    vec3 sum_1 = vec3(0.0);
+    uint bad_1 = 0u;
     uint s_4 = 0u;
-    Ray ray_28 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
-    FrameUniforms frame_5 = _group_0_binding_0_cs;
+    FrameUniforms frame_6 = _group_0_binding_0_cs;
     TileParams tile_2 = _group_0_binding_1_cs;
-    sum = vec3(0.0);
-    bad = 0u;
-    uint end_1 = frame_5.samples_per_pass;
+    uint index_1 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_1 = (tile_2.frame * per_pass);
+    uint count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
+    sum_1 = vec3(0.0);
+    bad_1 = 0u;
     s_4 = 0u;
     bool loop_init_4 = true;
     while(true) {
         if (!loop_init_4) {
-            uint _e46 = s_4;
-            s_4 = (_e46 + 1u);
+            uint _e56 = s_4;
+            s_4 = (_e56 + 1u);
         }
         loop_init_4 = false;
-        uint _e13 = s_4;
-        if ((_e13 >= end_1)) {
+        uint _e25 = s_4;
+        if ((_e25 >= count_2)) {
             break;
         }
-        uint _e18 = s_4;
-        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_4, sample_4, frame_5.seed);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
-        ray_28 = _e23;
-        ray_28.depth = 0u;
-        ray_28.kind = RAY_CAMERA;
-        vec3 _e31 = ray_28.origin;
-        uint _e33 = medium_at(_e31, NO_HIT);
-        ray_28.medium = _e33;
-        Ray _e34 = ray_28;
-        vec3 _e35 = trace(_e34);
-        bvec3 _e36 = is_finite_vec3f(_e35);
-        if (all(_e36)) {
-            vec3 _e38 = sum;
-            sum = (_e38 + _e35);
+        uint _e27 = s_4;
+        Ray _e29 = sample_camera_ray(pixel_5, (first_1 + _e27));
+        vec3 _e30 = trace(_e29);
+        bvec3 _e31 = is_finite_vec3f(_e30);
+        if (all(_e31)) {
+            vec3 _e33 = sum_1;
+            sum_1 = (_e33 + _e30);
         } else {
-            vec3 _e40 = sum;
-            vec3 _e41 = finite_or_zero(_e35);
-            sum = (_e40 + _e41);
-            uint _e43 = bad;
-            bad = (_e43 + 1u);
+            vec3 _e35 = sum_1;
+            vec3 _e36 = finite_or_zero(_e30);
+            sum_1 = (_e35 + _e36);
+            uint _e38 = bad_1;
+            bad_1 = (_e38 + 1u);
         }
-    }
-    uint _e50 = ray_count;
-    atomicAdd(_group_0_binding_9_cs[1], _e50);
-    vec3 _e59 = sum;
-    vec4 _e62 = vec4(_e59, float(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if ((tile_2.frame == 0u)) {
-        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
-    } else {
-        vec4 _e69 = _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
-        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
-    }
-    if ((_e63 > 0u)) {
-        atomicAdd(_group_0_binding_9_cs[0], _e63);
+        uint _e41 = s_4;
+        uint _e44 = rem_u32_((_e41 + 1u), per_pass);
+        if ((_e44 == 0u)) {
+            vec3 _e47 = sum_1;
+            uint _e48 = bad_1;
+            uint _e50 = s_4;
+            uint _e51 = div_u32_(_e50, per_pass);
+            pass_done(index_1, _e47, _e48, (tile_2.frame + _e51));
+            sum_1 = vec3(0.0);
+            bad_1 = 0u;
+        }
     }
     return;
 }

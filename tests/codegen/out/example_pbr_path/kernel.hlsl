@@ -21,6 +21,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
+    uint passes_per_dispatch;
 };
 
 struct Ray {
@@ -1133,13 +1134,31 @@ uint medium_at(float3 p_4, uint exclude)
     return _e62;
 }
 
+Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
+{
+    Ray ray_9 = (Ray)0;
+
+    FrameUniforms frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed);
+    const Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
+    ray_9 = _e7;
+    ray_9.depth = 0u;
+    ray_9.kind = RAY_CAMERA;
+    float3 _e15 = ray_9.origin;
+    const uint _e17 = medium_at(_e15, NO_HIT);
+    ray_9.medium = _e17;
+    Ray _e18 = ray_9;
+    const Ray ray_32 = _e18;
+    return ray_32;
+}
+
 float3 node_frame_hi(GpuNode header)
 {
     const float3 _e5 = node_point(header.min_, header.max_, (65535u).xxx);
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_9, bool shadow_2)
+Candidate intersect_scene(Ray ray_10, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -1149,22 +1168,22 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_9.tmax);
+    const Candidate _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = frame;
-    if ((frame_2.instance_count == 0u)) {
+    FrameUniforms frame_3 = frame;
+    if ((frame_3.instance_count == 0u)) {
         Candidate _e14 = best_2;
         const Candidate candidate_6 = _e14;
         return candidate_6;
     }
-    const float3 _e16 = safe_inverse(ray_9.dir);
-    uint base_6 = frame_2.tlas_root;
+    const float3 _e16 = safe_inverse(ray_10.dir);
+    uint base_6 = frame_3.tlas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_6*32+0)), asuint(nodes.Load(base_6*32+12)), asfloat(nodes.Load3(base_6*32+16)), asuint(nodes.Load(base_6*32+28)));
     float3 origin_5 = header_2.min_;
     float3 scale_3 = header_2.max_;
     const float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    const float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
+    const float _e28 = slab(origin_5, _e23, ray_10.origin, _e16, ray_10.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == asfloat(_e30))) {
         Candidate _e33 = best_2;
@@ -1183,7 +1202,7 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2)
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_9, _e55, shadow_2);
+                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_10, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -1196,7 +1215,7 @@ Candidate intersect_scene(Ray ray_9, bool shadow_2)
             uint _e63 = child_1;
             GpuNode n_12 = ConstructGpuNode(asfloat(nodes.Load3((base_6 + _e63)*32+0)), asuint(nodes.Load((base_6 + _e63)*32+12)), asfloat(nodes.Load3((base_6 + _e63)*32+16)), asuint(nodes.Load((base_6 + _e63)*32+28)));
             float _e69 = best_2.t;
-            const float2 _e70 = children_entry(n_12, origin_5, scale_3, ray_9, _e16, _e69);
+            const float2 _e70 = children_entry(n_12, origin_5, scale_3, ray_10, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1259,25 +1278,25 @@ ConstantBackground load_ConstantBackground(uint offset_4)
     return constantbackground;
 }
 
-float3 constant_background(ConstantBackground b_4, Ray ray_10)
+float3 constant_background(ConstantBackground b_4, Ray ray_11)
 {
     return b_4.color;
 }
 
-float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_11)
+float3 dispatch_miss(uint type_id_2, uint offset_5, Ray ray_12)
 {
     const ConstantBackground _e2 = load_ConstantBackground(offset_5);
-    const float3 _e3 = constant_background(_e2, ray_11);
+    const float3 _e3 = constant_background(_e2, ray_12);
     return _e3;
 }
 
-float3 miss(Ray ray_12)
+float3 miss(Ray ray_13)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
-    FrameUniforms frame_3 = frame;
-    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_12);
+    FrameUniforms frame_4 = frame;
+    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13);
     return _e9;
 }
 
@@ -1557,8 +1576,8 @@ Ray shadow_ray(float3 position_4, float3 normal_5, float3 dir_2, float dist_1)
         tmax_4 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_32 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_32;
+    const Ray ray_33 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_33;
 }
 
 float shadow_query(float3 position_5, float3 normal_6, float3 dir_3, float dist_2)
@@ -1578,12 +1597,12 @@ LightSample sample_light_deferred(uint i_4, float3 position_6, float3 normal_7)
     uint resolved = (uint)0;
     uint bits_1 = (uint)0;
 
-    FrameUniforms frame_4 = frame;
-    if ((i_4 >= frame_4.light_count)) {
+    FrameUniforms frame_5 = frame;
+    if ((i_4 >= frame_5.light_count)) {
         const LightSample lightsample_7 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_7;
     }
-    uint entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_5.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     uint type_id_7 = asuint(params.Load(entry*4));
     uint offset_17 = asuint(params.Load((entry + 1u)*4));
     uint start = rng_state;
@@ -1681,13 +1700,13 @@ float mis_light_weight(LightSample l_2, float bsdf_pdf)
     return _e8;
 }
 
-float3 path_diffuse_shade(PathDiffuse m, Ray ray_13, Hit hit_1, float3 secondary)
+float3 path_diffuse_shade(PathDiffuse m, Ray ray_14, Hit hit_1, float3 secondary)
 {
     float3 direct = (float3)0;
     uint i_6 = (uint)0;
 
-    float3 n_13 = faceforward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
-    float3 ng = faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    float3 n_13 = faceforward(hit_1.normal, ray_14.dir, hit_1.geometric_normal);
+    float3 ng = faceforward(hit_1.geometric_normal, ray_14.dir, hit_1.geometric_normal);
     direct = (0.0).xxx;
     const uint _e16 = light_count_query();
     i_6 = 0u;
@@ -1735,34 +1754,34 @@ QuadLamp load_QuadLamp(uint offset_10)
     return quadlamp;
 }
 
-bool after_nee_bounce(Ray ray_14)
+bool after_nee_bounce(Ray ray_15)
 {
-    return (dot(ray_14.dir, ray_14.dir) > 2.0);
+    return (dot(ray_15.dir, ray_15.dir) > 2.0);
 }
 
-float bounce_pdf(Ray ray_15)
+float bounce_pdf(Ray ray_16)
 {
-    float x_5 = (length(ray_15.dir) - MIS_BOUNCE_LENGTH);
+    float x_5 = (length(ray_16.dir) - MIS_BOUNCE_LENGTH);
     if (!((x_5 > -0.25))) {
         return 0.0;
     }
     return (exp((max(x_5, 0.0) * 90.0)) - 1.0);
 }
 
-float3 quad_lamp_shade(QuadLamp m_1, Ray ray_16, Hit hit_2)
+float3 quad_lamp_shade(QuadLamp m_1, Ray ray_17, Hit hit_2)
 {
     if (!(hit_2.front_face)) {
         return (0.0).xxx;
     }
     float3 le = (m_1.color * (m_1.intensity).xxx);
-    const bool _e11 = after_nee_bounce(ray_16);
+    const bool _e11 = after_nee_bounce(ray_17);
     if (!(_e11)) {
         return le;
     }
-    const float _e13 = bounce_pdf(ray_16);
-    float len = length(ray_16.dir);
+    const float _e13 = bounce_pdf(ray_17);
+    float len = length(ray_17.dir);
     float dist_5 = (hit_2.t * len);
-    float cos_l = (abs(dot(hit_2.geometric_normal, ray_16.dir)) / len);
+    float cos_l = (abs(dot(hit_2.geometric_normal, ray_17.dir)) / len);
     float pl = ((dist_5 * dist_5) / max((cos_l * m_1.area), 1e-30));
     const float _e29 = mis_weight(_e13, pl);
     return (le * (_e29).xxx);
@@ -1787,20 +1806,20 @@ SphereLamp load_SphereLamp(uint offset_11)
     return spherelamp;
 }
 
-float3 sphere_lamp_shade(SphereLamp m_2, Ray ray_17, Hit hit_3)
+float3 sphere_lamp_shade(SphereLamp m_2, Ray ray_18, Hit hit_3)
 {
     if (!(hit_3.front_face)) {
         return (0.0).xxx;
     }
     float r2_3 = max((m_2.radius * m_2.radius), 1e-20);
     float3 le_1 = (m_2.color * (((m_2.intensity * INV_PI) / r2_3)).xxx);
-    const bool _e19 = after_nee_bounce(ray_17);
+    const bool _e19 = after_nee_bounce(ray_18);
     if (!(_e19)) {
         return le_1;
     }
-    const float _e21 = bounce_pdf(ray_17);
+    const float _e21 = bounce_pdf(ray_18);
     float3 center_ = (hit_3.position - (hit_3.normal * (m_2.radius).xxx));
-    float3 to_center_1 = (center_ - ray_17.origin);
+    float3 to_center_1 = (center_ - ray_18.origin);
     float s2_1 = (r2_3 / max(dot(to_center_1, to_center_1), r2_3));
     float one_minus_cos_max_1 = (s2_1 / (1.0 + sqrt((1.0 - s2_1))));
     float pl_1 = (1.0 / max((TAU * one_minus_cos_max_1), 1e-30));
@@ -1833,16 +1852,16 @@ PathPbr load_PathPbr(uint offset_12)
     return pathpbr;
 }
 
-float3 path_pbr_ng(Ray ray_18, Hit hit_4)
+float3 path_pbr_ng(Ray ray_19, Hit hit_4)
 {
-    return faceforward(hit_4.geometric_normal, ray_18.dir, hit_4.geometric_normal);
+    return faceforward(hit_4.geometric_normal, ray_19.dir, hit_4.geometric_normal);
 }
 
-float3 path_pbr_n(Ray ray_19, Hit hit_5)
+float3 path_pbr_n(Ray ray_20, Hit hit_5)
 {
-    const float3 _e2 = path_pbr_ng(ray_19, hit_5);
+    const float3 _e2 = path_pbr_ng(ray_20, hit_5);
     float3 n_14 = faceforward(hit_5.normal, -(_e2), hit_5.normal);
-    return ((dot(n_14, ray_19.dir) < 0.0) ? n_14 : _e2);
+    return ((dot(n_14, ray_20.dir) < 0.0) ? n_14 : _e2);
 }
 
 float pbr_alpha2_(float roughness)
@@ -1930,17 +1949,17 @@ float pbr_pdf(float3 base_3, float metallic_2, float roughness_2, float3 n_7, fl
     return ((_e17 * _e22) + (((1.0 - _e17) * ndl_2) * INV_PI));
 }
 
-float3 path_pbr_shade(PathPbr m_3, Ray ray_20, Hit hit_6, float3 secondary_1)
+float3 path_pbr_shade(PathPbr m_3, Ray ray_21, Hit hit_6, float3 secondary_1)
 {
     float3 direct_1 = (float3)0;
     uint i_7 = (uint)0;
     float w = (float)0;
 
-    const float3 _e4 = path_pbr_n(ray_20, hit_6);
-    const float3 _e6 = normalize_vec3f(ray_20.dir);
+    const float3 _e4 = path_pbr_n(ray_21, hit_6);
+    const float3 _e6 = normalize_vec3f(ray_21.dir);
     float3 v_7 = -(_e6);
     direct_1 = (0.0).xxx;
-    const float3 _e11 = path_pbr_ng(ray_20, hit_6);
+    const float3 _e11 = path_pbr_ng(ray_21, hit_6);
     const uint _e13 = light_count_query();
     i_7 = 0u;
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
@@ -1980,27 +1999,27 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_21, Hit hit_7, float3 secondary_2)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_22, Hit hit_7, float3 secondary_2)
 {
     switch(type_id_4) {
         case 0u: {
             const PathDiffuse _e5 = load_PathDiffuse(offset_13);
-            const float3 _e6 = path_diffuse_shade(_e5, ray_21, hit_7, secondary_2);
+            const float3 _e6 = path_diffuse_shade(_e5, ray_22, hit_7, secondary_2);
             return _e6;
         }
         case 1u: {
             const QuadLamp _e7 = load_QuadLamp(offset_13);
-            const float3 _e8 = quad_lamp_shade(_e7, ray_21, hit_7);
+            const float3 _e8 = quad_lamp_shade(_e7, ray_22, hit_7);
             return _e8;
         }
         case 2u: {
             const SphereLamp _e9 = load_SphereLamp(offset_13);
-            const float3 _e10 = sphere_lamp_shade(_e9, ray_21, hit_7);
+            const float3 _e10 = sphere_lamp_shade(_e9, ray_22, hit_7);
             return _e10;
         }
         case 3u: {
             const PathPbr _e11 = load_PathPbr(offset_13);
-            const float3 _e12 = path_pbr_shade(_e11, ray_21, hit_7, secondary_2);
+            const float3 _e12 = path_pbr_shade(_e11, ray_22, hit_7, secondary_2);
             return _e12;
         }
         default: {
@@ -2010,32 +2029,32 @@ float3 dispatch_closest_hit(uint type_id_4, uint offset_13, Ray ray_21, Hit hit_
     return ZeroValuefloat3();
 }
 
-float3 shade_direct(Ray ray_22, Candidate c_4)
+float3 shade_direct(Ray ray_23, Candidate c_4)
 {
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_4.slot*128+0)), asfloat(instances.Load4(c_4.slot*128+16)), asfloat(instances.Load4(c_4.slot*128+32)), asfloat(instances.Load4(c_4.slot*128+48)), asfloat(instances.Load4(c_4.slot*128+64)), asfloat(instances.Load4(c_4.slot*128+80)), asuint(instances.Load(c_4.slot*128+96)), asuint(instances.Load(c_4.slot*128+100)), asuint(instances.Load(c_4.slot*128+104)), asuint(instances.Load(c_4.slot*128+108)), asuint(instances.Load(c_4.slot*128+112)), asuint(instances.Load(c_4.slot*128+116)), asuint(instances.Load(c_4.slot*128+120)), asuint(instances.Load(c_4.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_22, c_4);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, (0.0).xxx);
+    const Hit _e6 = finish_hit(ray_23, c_4);
+    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_23, _e6, (0.0).xxx);
     return _e11;
 }
 
-float3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_23, float t_1, float3 radiance)
+float3 dispatch_medium(uint type_id_5, uint offset_14, Ray ray_24, float t_1, float3 radiance)
 {
     return ZeroValuefloat3();
 }
 
-float3 through_medium(Ray ray_24, float t_2, float3 radiance_1)
+float3 through_medium(Ray ray_25, float t_2, float3 radiance_1)
 {
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if ((ray_24.medium == 0u)) {
+    if ((ray_25.medium == 0u)) {
         return radiance_1;
     }
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_24.medium - 1u)*128+0)), asfloat(instances.Load4((ray_24.medium - 1u)*128+16)), asfloat(instances.Load4((ray_24.medium - 1u)*128+32)), asfloat(instances.Load4((ray_24.medium - 1u)*128+48)), asfloat(instances.Load4((ray_24.medium - 1u)*128+64)), asfloat(instances.Load4((ray_24.medium - 1u)*128+80)), asuint(instances.Load((ray_24.medium - 1u)*128+96)), asuint(instances.Load((ray_24.medium - 1u)*128+100)), asuint(instances.Load((ray_24.medium - 1u)*128+104)), asuint(instances.Load((ray_24.medium - 1u)*128+108)), asuint(instances.Load((ray_24.medium - 1u)*128+112)), asuint(instances.Load((ray_24.medium - 1u)*128+116)), asuint(instances.Load((ray_24.medium - 1u)*128+120)), asuint(instances.Load((ray_24.medium - 1u)*128+124)));
+    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_25.medium - 1u)*128+0)), asfloat(instances.Load4((ray_25.medium - 1u)*128+16)), asfloat(instances.Load4((ray_25.medium - 1u)*128+32)), asfloat(instances.Load4((ray_25.medium - 1u)*128+48)), asfloat(instances.Load4((ray_25.medium - 1u)*128+64)), asfloat(instances.Load4((ray_25.medium - 1u)*128+80)), asuint(instances.Load((ray_25.medium - 1u)*128+96)), asuint(instances.Load((ray_25.medium - 1u)*128+100)), asuint(instances.Load((ray_25.medium - 1u)*128+104)), asuint(instances.Load((ray_25.medium - 1u)*128+108)), asuint(instances.Load((ray_25.medium - 1u)*128+112)), asuint(instances.Load((ray_25.medium - 1u)*128+116)), asuint(instances.Load((ray_25.medium - 1u)*128+120)), asuint(instances.Load((ray_25.medium - 1u)*128+124)));
     if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
         return radiance_1;
     }
-    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_24, t_2, radiance_1);
+    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_25, t_2, radiance_1);
     return _e21;
 }
 
@@ -2064,7 +2083,7 @@ void rt_spawn(float3 dir_5, float3 weight)
     }
 }
 
-void path_diffuse_rays(PathDiffuse m_4, Ray ray_25, Hit hit_8)
+void path_diffuse_rays(PathDiffuse m_4, Ray ray_26, Hit hit_8)
 {
     float3 weight_1 = (float3)0;
 
@@ -2073,7 +2092,7 @@ void path_diffuse_rays(PathDiffuse m_4, Ray ray_25, Hit hit_8)
     const float2 _e12 = rand2_next();
     const float3 _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
-    if ((ray_25.depth >= m_4.roulette_depth)) {
+    if ((ray_26.depth >= m_4.roulette_depth)) {
         float q_4 = saturate(max(m_4.albedo.x, max(m_4.albedo.y, m_4.albedo.z)));
         const float _e28 = rand_next();
         if ((_e28 >= q_4)) {
@@ -2156,13 +2175,13 @@ PbrSample pbr_sample(float3 base_4, float metallic_3, float roughness_3, float3 
     return pbrsample_2;
 }
 
-void path_pbr_rays(PathPbr m_5, Ray ray_26, Hit hit_9)
+void path_pbr_rays(PathPbr m_5, Ray ray_27, Hit hit_9)
 {
     float3 weight_2 = (float3)0;
 
-    const float3 _e3 = path_pbr_ng(ray_26, hit_9);
-    const float3 _e4 = path_pbr_n(ray_26, hit_9);
-    const float3 _e6 = normalize_vec3f(ray_26.dir);
+    const float3 _e3 = path_pbr_ng(ray_27, hit_9);
+    const float3 _e4 = path_pbr_n(ray_27, hit_9);
+    const float3 _e6 = normalize_vec3f(ray_27.dir);
     float3 v_8 = -(_e6);
     const float _e11 = rand_next();
     const float2 _e12 = rand2_next();
@@ -2171,7 +2190,7 @@ void path_pbr_rays(PathPbr m_5, Ray ray_26, Hit hit_9)
         return;
     }
     weight_2 = _e14.weight;
-    if ((ray_26.depth >= m_5.roulette_depth)) {
+    if ((ray_27.depth >= m_5.roulette_depth)) {
         float _e31 = weight_2.x;
         float _e33 = weight_2.y;
         float _e35 = weight_2.z;
@@ -2189,17 +2208,17 @@ void path_pbr_rays(PathPbr m_5, Ray ray_26, Hit hit_9)
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_27, Hit hit_10)
+void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_28, Hit hit_10)
 {
     switch(type_id_6) {
         case 0u: {
             const PathDiffuse _e4 = load_PathDiffuse(offset_15);
-            path_diffuse_rays(_e4, ray_27, hit_10);
+            path_diffuse_rays(_e4, ray_28, hit_10);
             return;
         }
         case 3u: {
             const PathPbr _e5 = load_PathPbr(offset_15);
-            path_pbr_rays(_e5, ray_27, hit_10);
+            path_pbr_rays(_e5, ray_28, hit_10);
             return;
         }
         default: {
@@ -2238,26 +2257,26 @@ PathState path_step(PathState s_2, Candidate c_5)
     float3 weight_3 = (float3)0;
     float3 beta = (float3)0;
 
-    Ray ray_33 = s_2.ray;
+    Ray ray_34 = s_2.ray;
     out_ = s_2;
     out_.live = false;
     if ((c_5.slot == NO_HIT)) {
         hit_error = 0.0;
-        const float3 _e14 = miss(ray_33);
+        const float3 _e14 = miss(ray_34);
         out_.radiance = (s_2.radiance + (s_2.beta * _e14));
         PathState _e17 = out_;
         const PathState pathstate = _e17;
         return pathstate;
     }
     GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(c_5.slot*128+0)), asfloat(instances.Load4(c_5.slot*128+16)), asfloat(instances.Load4(c_5.slot*128+32)), asfloat(instances.Load4(c_5.slot*128+48)), asfloat(instances.Load4(c_5.slot*128+64)), asfloat(instances.Load4(c_5.slot*128+80)), asuint(instances.Load(c_5.slot*128+96)), asuint(instances.Load(c_5.slot*128+100)), asuint(instances.Load(c_5.slot*128+104)), asuint(instances.Load(c_5.slot*128+108)), asuint(instances.Load(c_5.slot*128+112)), asuint(instances.Load(c_5.slot*128+116)), asuint(instances.Load(c_5.slot*128+120)), asuint(instances.Load(c_5.slot*128+124)));
-    const Hit _e22 = finish_hit(ray_33, c_5);
+    const Hit _e22 = finish_hit(ray_34, c_5);
     float error_4 = hit_error;
     spawned = false;
     dir_8 = (0.0).xxx;
     weight_3 = (0.0).xxx;
-    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_33.depth < MAX_DEPTH))) {
+    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_34.depth < MAX_DEPTH))) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_33, _e22);
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_34, _e22);
         uint _e47 = spawn_count;
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
@@ -2267,7 +2286,7 @@ PathState path_step(PathState s_2, Candidate c_5)
             weight_3 = _e60;
         }
     }
-    const float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_33, _e22, (0.0).xxx);
+    const float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_34, _e22, (0.0).xxx);
     out_.radiance = (s_2.radiance + (s_2.beta * _e68));
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -2286,7 +2305,7 @@ PathState path_step(PathState s_2, Candidate c_5)
         const PathState pathstate_2 = _e89;
         return pathstate_2;
     }
-    if ((((ROULETTE_DEPTH > 0u) && ((ray_33.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT))) {
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_34.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT))) {
         float survive = (q_6 / ROULETTE_THROUGHPUT);
         const float _e104 = rand_next();
         if ((_e104 >= survive)) {
@@ -2303,7 +2322,7 @@ PathState path_step(PathState s_2, Candidate c_5)
     const float3 _e114 = spawn_origin(_e22, error_4, _e113);
     float3 _e116 = dir_8;
     uint _e118 = F32_INF;
-    out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_33.depth + 1u), RAY_SECONDARY, ray_33.medium);
+    out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_34.depth + 1u), RAY_SECONDARY, ray_34.medium);
     out_.live = true;
     PathState _e128 = out_;
     const PathState pathstate_4 = _e128;
@@ -2381,18 +2400,39 @@ float3 finite_or_zero(float3 c_6)
     return (_e3 ? c_6 : (0.0).xxx);
 }
 
-void render_pixel(uint2 pixel_4)
+void pass_done(uint index, float3 sum, uint bad, uint pass_)
 {
-    float3 sum = (float3)0;
-    uint bad = (uint)0;
-    uint s_4 = (uint)0;
-    Ray ray_28 = (Ray)0;
+    uint _e5 = ray_count;
+    counters.InterlockedAdd(4, _e5);
+    ray_count = 0u;
+    FrameUniforms _e10 = frame;
+    float4 _e13 = float4(sum, float(_e10.samples_per_pass));
+    if ((pass_ == 0u)) {
+        accum.Store4(index*16, asuint(_e13));
+    } else {
+        float4 _e18 = asfloat(accum.Load4(index*16));
+        accum.Store4(index*16, asuint((_e18 + _e13)));
+    }
+    if ((bad > 0u)) {
+        counters.InterlockedAdd(0, bad);
+    }
+    return;
+}
 
-    FrameUniforms frame_5 = frame;
+void render_pixel(uint2 pixel_5)
+{
+    float3 sum_1 = (float3)0;
+    uint bad_1 = (uint)0;
+    uint s_4 = (uint)0;
+
+    FrameUniforms frame_6 = frame;
     TileParams tile_2 = tile;
-    sum = (0.0).xxx;
-    bad = 0u;
-    uint end_1 = frame_5.samples_per_pass;
+    uint index_1 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_1 = (tile_2.frame * per_pass);
+    uint count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
+    sum_1 = (0.0).xxx;
+    bad_1 = 0u;
     s_4 = 0u;
     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_4 = true;
@@ -2400,51 +2440,39 @@ void render_pixel(uint2 pixel_4)
         if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e46 = s_4;
-            s_4 = (_e46 + 1u);
+            uint _e56 = s_4;
+            s_4 = (_e56 + 1u);
         }
         loop_init_4 = false;
-        uint _e13 = s_4;
-        if ((_e13 >= end_1)) {
+        uint _e25 = s_4;
+        if ((_e25 >= count_2)) {
             break;
         }
-        uint _e18 = s_4;
-        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_4, sample_4, frame_5.seed);
-        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
-        ray_28 = _e23;
-        ray_28.depth = 0u;
-        ray_28.kind = RAY_CAMERA;
-        float3 _e31 = ray_28.origin;
-        const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_28.medium = _e33;
-        Ray _e34 = ray_28;
-        const float3 _e35 = trace(_e34);
-        const bool3 _e36 = is_finite_vec3f(_e35);
-        if (all(_e36)) {
-            float3 _e38 = sum;
-            sum = (_e38 + _e35);
+        uint _e27 = s_4;
+        const Ray _e29 = sample_camera_ray(pixel_5, (first_1 + _e27));
+        const float3 _e30 = trace(_e29);
+        const bool3 _e31 = is_finite_vec3f(_e30);
+        if (all(_e31)) {
+            float3 _e33 = sum_1;
+            sum_1 = (_e33 + _e30);
         } else {
-            float3 _e40 = sum;
-            const float3 _e41 = finite_or_zero(_e35);
-            sum = (_e40 + _e41);
-            uint _e43 = bad;
-            bad = (_e43 + 1u);
+            float3 _e35 = sum_1;
+            const float3 _e36 = finite_or_zero(_e30);
+            sum_1 = (_e35 + _e36);
+            uint _e38 = bad_1;
+            bad_1 = (_e38 + 1u);
         }
-    }
-    uint _e50 = ray_count;
-    counters.InterlockedAdd(4, _e50);
-    float3 _e59 = sum;
-    float4 _e62 = float4(_e59, float(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if ((tile_2.frame == 0u)) {
-        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint(_e62));
-    } else {
-        float4 _e69 = asfloat(accum.Load4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16));
-        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint((_e69 + _e62)));
-    }
-    if ((_e63 > 0u)) {
-        counters.InterlockedAdd(0, _e63);
+        uint _e41 = s_4;
+        const uint _e44 = rem_u32_((_e41 + 1u), per_pass);
+        if ((_e44 == 0u)) {
+            float3 _e47 = sum_1;
+            uint _e48 = bad_1;
+            uint _e50 = s_4;
+            const uint _e51 = div_u32_(_e50, per_pass);
+            pass_done(index_1, _e47, _e48, (tile_2.frame + _e51));
+            sum_1 = (0.0).xxx;
+            bad_1 = 0u;
+        }
     }
     return;
 }

@@ -36,9 +36,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
-};
-struct type_3 {
-    uint inner[25];
+    uint passes_per_dispatch;
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -49,6 +47,9 @@ struct Ray {
     uint kind;
     uint medium;
     char _pad7[4];
+};
+struct type_4 {
+    uint inner[25];
 };
 typedef uint type_5[1];
 struct Pinhole {
@@ -334,7 +335,7 @@ void rng_resume(
     uint sample,
     uint seed,
     uint state,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     scratch.inner[metal::min(SCRATCH_RNG_INDEX, 24u)] = sample;
@@ -350,7 +351,7 @@ void rng_seed(
     metal::uint2 pixel_1,
     uint sample_1,
     uint seed_1,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     rng_resume(pixel_1, sample_1, seed_1, 0u, scratch, rng_state);
@@ -436,7 +437,7 @@ uint sobol_second_reversed(
 }
 
 float rand_next(
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     uint x_2 = {};
@@ -459,7 +460,7 @@ float rand_next(
 }
 
 metal::float2 rand2_next(
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     float _e0 = rand_next(scratch, rng_state);
@@ -479,7 +480,7 @@ Ray pinhole_ray(
     uint sample_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -511,7 +512,7 @@ Ray dispatch_ray_generation(
     uint sample_3,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1111,6 +1112,37 @@ uint medium_at(
     return _e62;
 }
 
+Ray sample_camera_ray(
+    metal::uint2 pixel_4,
+    uint sample_4,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread type_4& scratch,
+    thread uint& rng_state,
+    device type_5 const& params,
+    thread uint& F32_INF,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
+    thread float& hit_error,
+    device type_15 const& attributes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Ray ray_9 = {};
+    FrameUniforms frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
+    Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
+    ray_9 = _e7;
+    ray_9.depth = 0u;
+    ray_9.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_9.origin;
+    uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+    ray_9.medium = _e17;
+    Ray _e18 = ray_9;
+    return _e18;
+}
+
 metal::float3 node_frame_hi(
     GpuNode header
 ) {
@@ -1119,7 +1151,7 @@ metal::float3 node_frame_hi(
 }
 
 Candidate intersect_scene(
-    Ray ray_9,
+    Ray ray_10,
     bool shadow_2,
     constant FrameUniforms& frame,
     device type_5 const& params,
@@ -1138,21 +1170,21 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_9.tmax);
+    Candidate _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = frame;
-    if (frame_2.instance_count == 0u) {
+    FrameUniforms frame_3 = frame;
+    if (frame_3.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_9.dir);
-    uint base_6 = frame_2.tlas_root;
+    metal::float3 _e16 = safe_inverse(ray_10.dir);
+    uint base_6 = frame_3.tlas_root;
     GpuNode header_2 = nodes[base_6];
     metal::float3 origin_5 = header_2.min;
     metal::float3 scale_3 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_10.origin, _e16, ray_10.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
@@ -1170,7 +1202,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_9, _e55, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_10, _e55, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1182,7 +1214,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_12 = nodes[base_6 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_12, origin_5, scale_3, ray_9, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_12, origin_5, scale_3, ray_10, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1242,7 +1274,7 @@ ConstantBackground load_ConstantBackground(
 
 metal::float3 constant_background(
     ConstantBackground b_4,
-    Ray ray_10
+    Ray ray_11
 ) {
     return b_4.color;
 }
@@ -1250,17 +1282,17 @@ metal::float3 constant_background(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_5,
-    Ray ray_11,
+    Ray ray_12,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     ConstantBackground _e2 = load_ConstantBackground(offset_5, params, _buffer_sizes);
-    metal::float3 _e3 = constant_background(_e2, ray_11);
+    metal::float3 _e3 = constant_background(_e2, ray_12);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_12,
+    Ray ray_13,
     constant FrameUniforms& frame,
     device type_5 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1268,8 +1300,8 @@ metal::float3 miss(
     if (!(HAS_BACKGROUND)) {
         return metal::float3(0.0);
     }
-    FrameUniforms frame_3 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_12, params, _buffer_sizes);
+    FrameUniforms frame_4 = frame;
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13, params, _buffer_sizes);
     return _e9;
 }
 
@@ -1317,7 +1349,7 @@ QuadLight load_QuadLight(
 float shadow_preset(
     metal::float3 normal,
     metal::float3 dir,
-    thread type_3& scratch
+    thread type_4& scratch
 ) {
     uint mode = scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 24u)];
     if (mode == SHADOW_UNOCCLUDED) {
@@ -1332,7 +1364,7 @@ float shadow_preset(
 void scratch_store3f(
     uint i_2,
     metal::float3 v_2,
-    thread type_3& scratch
+    thread type_4& scratch
 ) {
     metal::uint3 b_8 = as_type<metal::uint3>(v_2);
     scratch.inner[metal::min(i_2, 24u)] = b_8.x;
@@ -1346,7 +1378,7 @@ float shadow_deferred(
     metal::float3 normal_1,
     metal::float3 dir_1,
     float dist,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1381,7 +1413,7 @@ LightSample quad_light(
     QuadLight l,
     metal::float3 position_1,
     metal::float3 normal_2,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
@@ -1434,7 +1466,7 @@ LightSample sphere_light(
     SphereLight l_1,
     metal::float3 position_2,
     metal::float3 normal_3,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
@@ -1468,7 +1500,7 @@ LightSample dispatch_light(
     uint offset_9,
     metal::float3 position_3,
     metal::float3 normal_4,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     device type_17& counters,
@@ -1494,7 +1526,7 @@ LightSample dispatch_light(
 
 metal::float3 scratch_load3f(
     uint i_3,
-    thread type_3& scratch
+    thread type_4& scratch
 ) {
     uint _e5 = scratch.inner[metal::min(i_3, 24u)];
     uint _e12 = scratch.inner[metal::min(i_3 + 1u, 24u)];
@@ -1566,7 +1598,7 @@ float shadow_query(
     metal::float3 dir_3,
     float dist_2,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1591,7 +1623,7 @@ LightSample sample_light_deferred(
     metal::float3 position_6,
     metal::float3 normal_7,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1607,11 +1639,11 @@ LightSample sample_light_deferred(
     uint after = {};
     uint resolved = {};
     uint bits_1 = {};
-    FrameUniforms frame_4 = frame;
-    if (i_4 >= frame_4.light_count) {
+    FrameUniforms frame_5 = frame;
+    if (i_4 >= frame_5.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry = frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE);
+    uint entry = frame_5.light_table + (i_4 * LIGHT_ENTRY_STRIDE);
     uint type_id_7 = params[entry];
     uint offset_17 = params[entry + 1u];
     uint start = rng_state;
@@ -1679,7 +1711,7 @@ LightSample sample_light_above_deferred(
     metal::float3 position_7,
     metal::float3 normal_8,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1729,11 +1761,11 @@ float mis_light_weight(
 
 metal::float3 path_diffuse_shade(
     PathDiffuse m,
-    Ray ray_13,
+    Ray ray_14,
     Hit hit_1,
     metal::float3 secondary,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1748,8 +1780,8 @@ metal::float3 path_diffuse_shade(
 ) {
     metal::float3 direct = {};
     uint i_6 = {};
-    metal::float3 n_13 = metal::faceforward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    metal::float3 n_13 = metal::faceforward(hit_1.normal, ray_14.dir, hit_1.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_14.dir, hit_1.geometric_normal);
     direct = metal::float3(0.0);
     uint _e16 = light_count_query(frame);
     i_6 = 0u;
@@ -1792,15 +1824,15 @@ QuadLamp load_QuadLamp(
 }
 
 bool after_nee_bounce(
-    Ray ray_14
+    Ray ray_15
 ) {
-    return metal::dot(ray_14.dir, ray_14.dir) > 2.0;
+    return metal::dot(ray_15.dir, ray_15.dir) > 2.0;
 }
 
 float bounce_pdf(
-    Ray ray_15
+    Ray ray_16
 ) {
-    float x_5 = metal::length(ray_15.dir) - MIS_BOUNCE_LENGTH;
+    float x_5 = metal::length(ray_16.dir) - MIS_BOUNCE_LENGTH;
     if (!((x_5 > -0.25))) {
         return 0.0;
     }
@@ -1809,7 +1841,7 @@ float bounce_pdf(
 
 metal::float3 quad_lamp_shade(
     QuadLamp m_1,
-    Ray ray_16,
+    Ray ray_17,
     Hit hit_2,
     thread uint& F32_INF
 ) {
@@ -1817,14 +1849,14 @@ metal::float3 quad_lamp_shade(
         return metal::float3(0.0);
     }
     metal::float3 le = m_1.color * metal::float3(m_1.intensity);
-    bool _e11 = after_nee_bounce(ray_16);
+    bool _e11 = after_nee_bounce(ray_17);
     if (!(_e11)) {
         return le;
     }
-    float _e13 = bounce_pdf(ray_16);
-    float len = metal::length(ray_16.dir);
+    float _e13 = bounce_pdf(ray_17);
+    float len = metal::length(ray_17.dir);
     float dist_5 = hit_2.t * len;
-    float cos_l = metal::abs(metal::dot(hit_2.geometric_normal, ray_16.dir)) / len;
+    float cos_l = metal::abs(metal::dot(hit_2.geometric_normal, ray_17.dir)) / len;
     float pl = (dist_5 * dist_5) / metal::max(cos_l * m_1.area, 0.000000000000000000000000000001);
     float _e29 = mis_weight(_e13, pl, F32_INF);
     return le * metal::float3(_e29);
@@ -1845,7 +1877,7 @@ SphereLamp load_SphereLamp(
 
 metal::float3 sphere_lamp_shade(
     SphereLamp m_2,
-    Ray ray_17,
+    Ray ray_18,
     Hit hit_3,
     thread uint& F32_INF
 ) {
@@ -1854,13 +1886,13 @@ metal::float3 sphere_lamp_shade(
     }
     float r2_3 = metal::max(m_2.radius * m_2.radius, 0.00000000000000000001);
     metal::float3 le_1 = m_2.color * metal::float3((m_2.intensity * INV_PI) / r2_3);
-    bool _e19 = after_nee_bounce(ray_17);
+    bool _e19 = after_nee_bounce(ray_18);
     if (!(_e19)) {
         return le_1;
     }
-    float _e21 = bounce_pdf(ray_17);
+    float _e21 = bounce_pdf(ray_18);
     metal::float3 center = hit_3.position - (hit_3.normal * metal::float3(m_2.radius));
-    metal::float3 to_center_1 = center - ray_17.origin;
+    metal::float3 to_center_1 = center - ray_18.origin;
     float s2_1 = r2_3 / metal::max(metal::dot(to_center_1, to_center_1), r2_3);
     float one_minus_cos_max_1 = s2_1 / (1.0 + metal::sqrt(1.0 - s2_1));
     float pl_1 = 1.0 / metal::max(TAU * one_minus_cos_max_1, 0.000000000000000000000000000001);
@@ -1886,19 +1918,19 @@ PathPbr load_PathPbr(
 }
 
 metal::float3 path_pbr_ng(
-    Ray ray_18,
+    Ray ray_19,
     Hit hit_4
 ) {
-    return metal::faceforward(hit_4.geometric_normal, ray_18.dir, hit_4.geometric_normal);
+    return metal::faceforward(hit_4.geometric_normal, ray_19.dir, hit_4.geometric_normal);
 }
 
 metal::float3 path_pbr_n(
-    Ray ray_19,
+    Ray ray_20,
     Hit hit_5
 ) {
-    metal::float3 _e2 = path_pbr_ng(ray_19, hit_5);
+    metal::float3 _e2 = path_pbr_ng(ray_20, hit_5);
     metal::float3 n_14 = metal::faceforward(hit_5.normal, -(_e2), hit_5.normal);
-    return (metal::dot(n_14, ray_19.dir) < 0.0) ? n_14 : _e2;
+    return (metal::dot(n_14, ray_20.dir) < 0.0) ? n_14 : _e2;
 }
 
 float pbr_alpha2_(
@@ -2015,11 +2047,11 @@ float pbr_pdf(
 
 metal::float3 path_pbr_shade(
     PathPbr m_3,
-    Ray ray_20,
+    Ray ray_21,
     Hit hit_6,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2035,11 +2067,11 @@ metal::float3 path_pbr_shade(
     metal::float3 direct_1 = {};
     uint i_7 = {};
     float w = {};
-    metal::float3 _e4 = path_pbr_n(ray_20, hit_6);
-    metal::float3 _e6 = normalize_vec3f(ray_20.dir);
+    metal::float3 _e4 = path_pbr_n(ray_21, hit_6);
+    metal::float3 _e6 = normalize_vec3f(ray_21.dir);
     metal::float3 v_7 = -(_e6);
     direct_1 = metal::float3(0.0);
-    metal::float3 _e11 = path_pbr_ng(ray_20, hit_6);
+    metal::float3 _e11 = path_pbr_ng(ray_21, hit_6);
     uint _e13 = light_count_query(frame);
     i_7 = 0u;
     uint2 loop_bound_6 = uint2(4294967295u);
@@ -2078,11 +2110,11 @@ metal::float3 path_pbr_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_13,
-    Ray ray_21,
+    Ray ray_22,
     Hit hit_7,
     metal::float3 secondary_2,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2098,22 +2130,22 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             PathDiffuse _e5 = load_PathDiffuse(offset_13, params, _buffer_sizes);
-            metal::float3 _e6 = path_diffuse_shade(_e5, ray_21, hit_7, secondary_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+            metal::float3 _e6 = path_diffuse_shade(_e5, ray_22, hit_7, secondary_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
             return _e6;
         }
         case 1u: {
             QuadLamp _e7 = load_QuadLamp(offset_13, params, _buffer_sizes);
-            metal::float3 _e8 = quad_lamp_shade(_e7, ray_21, hit_7, F32_INF);
+            metal::float3 _e8 = quad_lamp_shade(_e7, ray_22, hit_7, F32_INF);
             return _e8;
         }
         case 2u: {
             SphereLamp _e9 = load_SphereLamp(offset_13, params, _buffer_sizes);
-            metal::float3 _e10 = sphere_lamp_shade(_e9, ray_21, hit_7, F32_INF);
+            metal::float3 _e10 = sphere_lamp_shade(_e9, ray_22, hit_7, F32_INF);
             return _e10;
         }
         case 3u: {
             PathPbr _e11 = load_PathPbr(offset_13, params, _buffer_sizes);
-            metal::float3 _e12 = path_pbr_shade(_e11, ray_21, hit_7, secondary_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+            metal::float3 _e12 = path_pbr_shade(_e11, ray_22, hit_7, secondary_2, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
             return _e12;
         }
         default: {
@@ -2124,10 +2156,10 @@ metal::float3 dispatch_closest_hit(
 }
 
 metal::float3 shade_direct(
-    Ray ray_22,
+    Ray ray_23,
     Candidate c_4,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2142,15 +2174,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_4.slot];
-    Hit _e6 = finish_hit(ray_22, c_4, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_23, c_4, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_23, _e6, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_14,
-    Ray ray_23,
+    Ray ray_24,
     float t_1,
     metal::float3 radiance
 ) {
@@ -2158,7 +2190,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_24,
+    Ray ray_25,
     float t_2,
     metal::float3 radiance_1,
     device type_9 const& instances,
@@ -2167,14 +2199,14 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_24.medium == 0u) {
+    if (ray_25.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_9 = instances[ray_24.medium - 1u];
+    GpuInstance inst_9 = instances[ray_25.medium - 1u];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_24, t_2, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_25, t_2, radiance_1);
     return _e21;
 }
 
@@ -2214,9 +2246,9 @@ void rt_spawn(
 
 void path_diffuse_rays(
     PathDiffuse m_4,
-    Ray ray_25,
+    Ray ray_26,
     Hit hit_8,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
@@ -2228,7 +2260,7 @@ void path_diffuse_rays(
     metal::float2 _e12 = rand2_next(scratch, rng_state);
     metal::float3 _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
-    if (ray_25.depth >= m_4.roulette_depth) {
+    if (ray_26.depth >= m_4.roulette_depth) {
         float q_4 = metal::saturate(metal::max(m_4.albedo[0], metal::max(m_4.albedo[1], m_4.albedo[2])));
         float _e28 = rand_next(scratch, rng_state);
         if (_e28 >= q_4) {
@@ -2309,18 +2341,18 @@ PbrSample pbr_sample(
 
 void path_pbr_rays(
     PathPbr m_5,
-    Ray ray_26,
+    Ray ray_27,
     Hit hit_9,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     thread type_19& spawn_dirs,
     thread type_19& spawn_weights,
     thread uint& spawn_count
 ) {
     metal::float3 weight_2 = {};
-    metal::float3 _e3 = path_pbr_ng(ray_26, hit_9);
-    metal::float3 _e4 = path_pbr_n(ray_26, hit_9);
-    metal::float3 _e6 = normalize_vec3f(ray_26.dir);
+    metal::float3 _e3 = path_pbr_ng(ray_27, hit_9);
+    metal::float3 _e4 = path_pbr_n(ray_27, hit_9);
+    metal::float3 _e6 = normalize_vec3f(ray_27.dir);
     metal::float3 v_8 = -(_e6);
     float _e11 = rand_next(scratch, rng_state);
     metal::float2 _e12 = rand2_next(scratch, rng_state);
@@ -2329,7 +2361,7 @@ void path_pbr_rays(
         return;
     }
     weight_2 = _e14.weight;
-    if (ray_26.depth >= m_5.roulette_depth) {
+    if (ray_27.depth >= m_5.roulette_depth) {
         float _e31 = weight_2.x;
         float _e33 = weight_2.y;
         float _e35 = weight_2.z;
@@ -2350,9 +2382,9 @@ void path_pbr_rays(
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_15,
-    Ray ray_27,
+    Ray ray_28,
     Hit hit_10,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread type_19& spawn_dirs,
@@ -2363,12 +2395,12 @@ void dispatch_secondary_rays(
     switch(type_id_6) {
         case 0u: {
             PathDiffuse _e4 = load_PathDiffuse(offset_15, params, _buffer_sizes);
-            path_diffuse_rays(_e4, ray_27, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
+            path_diffuse_rays(_e4, ray_28, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
             return;
         }
         case 3u: {
             PathPbr _e5 = load_PathPbr(offset_15, params, _buffer_sizes);
-            path_pbr_rays(_e5, ray_27, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
+            path_pbr_rays(_e5, ray_28, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
             return;
         }
         default: {
@@ -2409,7 +2441,7 @@ PathState path_step(
     PathState s_2,
     Candidate c_5,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2501,7 +2533,7 @@ PathState path_step(
 metal::float3 trace_path(
     Ray camera_ray,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2541,7 +2573,7 @@ metal::float3 trace_path(
 metal::float3 trace(
     Ray camera_ray_1,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2596,11 +2628,39 @@ metal::float3 finite_or_zero(
     return metal::select(metal::float3(0.0), c_6, _e3);
 }
 
+void pass_done(
+    uint index,
+    metal::float3 sum,
+    uint bad,
+    uint pass,
+    constant FrameUniforms& frame,
+    thread uint& ray_count,
+    device type_17& counters,
+    device type_11& accum,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e5, metal::memory_order_relaxed);
+    ray_count = 0u;
+    FrameUniforms _e10 = frame;
+    metal::float4 _e13 = metal::float4(sum, static_cast<float>(_e10.samples_per_pass));
+    if (pass == 0u) {
+        accum[index] = _e13;
+    } else {
+        metal::float4 _e18 = accum[index];
+        accum[index] = _e18 + _e13;
+    }
+    if (bad > 0u) {
+        metal::atomic_fetch_add_explicit(&counters[0], bad, metal::memory_order_relaxed);
+    }
+    return;
+}
+
 void render_pixel(
-    metal::uint2 pixel_4,
+    metal::uint2 pixel_5,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2618,15 +2678,17 @@ void render_pixel(
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 sum = {};
-    uint bad = {};
+    metal::float3 sum_1 = {};
+    uint bad_1 = {};
     uint s_4 = {};
-    Ray ray_28 = {};
-    FrameUniforms frame_5 = frame;
+    FrameUniforms frame_6 = frame;
     TileParams tile_2 = tile;
-    sum = metal::float3(0.0);
-    bad = 0u;
-    uint end_1 = frame_5.samples_per_pass;
+    uint index_1 = (pixel_5.y * tile_2.image_size.x) + pixel_5.x;
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_1 = tile_2.frame * per_pass;
+    uint count_2 = per_pass * metal::max(frame_6.passes_per_dispatch, 1u);
+    sum_1 = metal::float3(0.0);
+    bad_1 = 0u;
     s_4 = 0u;
     uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_4 = true;
@@ -2634,51 +2696,39 @@ void render_pixel(
         if (metal::all(loop_bound_8 == uint2(0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e46 = s_4;
-            s_4 = _e46 + 1u;
+            uint _e56 = s_4;
+            s_4 = _e56 + 1u;
         }
         loop_init_4 = false;
-        uint _e13 = s_4;
-        if (_e13 >= end_1) {
+        uint _e25 = s_4;
+        if (_e25 >= count_2) {
             break;
         }
-        uint _e18 = s_4;
-        uint sample_4 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
-        rng_seed(pixel_4, sample_4, frame_5.seed, scratch, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-        ray_28 = _e23;
-        ray_28.depth = 0u;
-        ray_28.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_28.origin;
-        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-        ray_28.medium = _e33;
-        Ray _e34 = ray_28;
-        metal::float3 _e35 = trace(_e34, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-        metal::bool3 _e36 = is_finite_vec3f(_e35);
-        if (metal::all(_e36)) {
-            metal::float3 _e38 = sum;
-            sum = _e38 + _e35;
+        uint _e27 = s_4;
+        Ray _e29 = sample_camera_ray(pixel_5, first_1 + _e27, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+        metal::float3 _e30 = trace(_e29, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::bool3 _e31 = is_finite_vec3f(_e30);
+        if (metal::all(_e31)) {
+            metal::float3 _e33 = sum_1;
+            sum_1 = _e33 + _e30;
         } else {
-            metal::float3 _e40 = sum;
-            metal::float3 _e41 = finite_or_zero(_e35);
-            sum = _e40 + _e41;
-            uint _e43 = bad;
-            bad = _e43 + 1u;
+            metal::float3 _e35 = sum_1;
+            metal::float3 _e36 = finite_or_zero(_e30);
+            sum_1 = _e35 + _e36;
+            uint _e38 = bad_1;
+            bad_1 = _e38 + 1u;
         }
-    }
-    uint _e50 = ray_count;
-    metal::atomic_fetch_add_explicit(&counters[1], _e50, metal::memory_order_relaxed);
-    metal::float3 _e59 = sum;
-    metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if (tile_2.frame == 0u) {
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e62;
-    } else {
-        metal::float4 _e69 = accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x];
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e69 + _e62;
-    }
-    if (_e63 > 0u) {
-        metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
+        uint _e41 = s_4;
+        uint _e44 = rem_u32_(_e41 + 1u, per_pass);
+        if (_e44 == 0u) {
+            metal::float3 _e47 = sum_1;
+            uint _e48 = bad_1;
+            uint _e50 = s_4;
+            uint _e51 = div_u32_(_e50, per_pass);
+            pass_done(index_1, _e47, _e48, tile_2.frame + _e51, frame, ray_count, counters, accum, _buffer_sizes);
+            sum_1 = metal::float3(0.0);
+            bad_1 = 0u;
+        }
     }
     return;
 }
@@ -2687,7 +2737,7 @@ void render_invocation(
     metal::uint2 id_1,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2729,7 +2779,7 @@ struct renderInput {
 , device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
-    type_3 scratch = {};
+    type_4 scratch = {};
     uint rng_state = {};
     uint F32_INF = 2139095040u;
     type_13 traversal_stack = {};

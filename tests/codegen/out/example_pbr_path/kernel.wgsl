@@ -21,6 +21,7 @@ struct FrameUniforms {
     background_type: u32,
     background_offset: u32,
     path_slots: u32,
+    passes_per_dispatch: u32,
 }
 
 struct Ray {
@@ -895,12 +896,28 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     return _e62;
 }
 
+fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
+    var ray_9: Ray;
+
+    let frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed);
+    let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
+    ray_9 = _e7;
+    ray_9.depth = 0u;
+    ray_9.kind = RAY_CAMERA;
+    let _e15 = ray_9.origin;
+    let _e17 = medium_at(_e15, NO_HIT);
+    ray_9.medium = _e17;
+    let _e18 = ray_9;
+    return _e18;
+}
+
 fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     let _e5 = node_point(header.min, header.max, vec3(65535u));
     return _e5;
 }
 
-fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_10: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -909,21 +926,21 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_9.tmax);
+    let _e7 = no_candidate(ray_10.tmax);
     best_2 = _e7;
-    let frame_2 = frame;
-    if (frame_2.instance_count == 0u) {
+    let frame_3 = frame;
+    if (frame_3.instance_count == 0u) {
         let _e14 = best_2;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_9.dir);
-    let base_6 = frame_2.tlas_root;
+    let _e16 = safe_inverse(ray_10.dir);
+    let base_6 = frame_3.tlas_root;
     let header_2 = nodes[base_6];
     let origin_5 = header_2.min;
     let scale_3 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
+    let _e28 = slab(origin_5, _e23, ray_10.origin, _e16, ray_10.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
@@ -938,7 +955,7 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e52 = child_1;
                 let _e55 = best_2;
-                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_9, _e55, shadow_2);
+                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_10, _e55, shadow_2);
                 best_2 = _e56;
                 let _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -950,7 +967,7 @@ fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
             let _e63 = child_1;
             let n_12 = nodes[(base_6 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_12, origin_5, scale_3, ray_9, _e16, _e69);
+            let _e70 = children_entry(n_12, origin_5, scale_3, ray_10, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
@@ -1004,22 +1021,22 @@ fn load_ConstantBackground(offset_4: u32) -> ConstantBackground {
     return ConstantBackground(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn constant_background(b_4: ConstantBackground, ray_10: Ray) -> vec3<f32> {
+fn constant_background(b_4: ConstantBackground, ray_11: Ray) -> vec3<f32> {
     return b_4.color;
 }
 
-fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_11: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_2: u32, offset_5: u32, ray_12: Ray) -> vec3<f32> {
     let _e2 = load_ConstantBackground(offset_5);
-    let _e3 = constant_background(_e2, ray_11);
+    let _e3 = constant_background(_e2, ray_12);
     return _e3;
 }
 
-fn miss(ray_12: Ray) -> vec3<f32> {
+fn miss(ray_13: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
-    let frame_3 = frame;
-    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_12);
+    let frame_4 = frame;
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_13);
     return _e9;
 }
 
@@ -1250,11 +1267,11 @@ fn sample_light_deferred(i_4: u32, position_6: vec3<f32>, normal_7: vec3<f32>) -
     var resolved: u32;
     var bits_1: u32;
 
-    let frame_4 = frame;
-    if (i_4 >= frame_4.light_count) {
+    let frame_5 = frame;
+    if (i_4 >= frame_5.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
+    let entry = (frame_5.light_table + (i_4 * LIGHT_ENTRY_STRIDE));
     let type_id_7 = params[entry];
     let offset_17 = params[(entry + 1u)];
     let start = rng_state;
@@ -1342,12 +1359,12 @@ fn mis_light_weight(l_2: LightSample, bsdf_pdf: f32) -> f32 {
     return _e8;
 }
 
-fn path_diffuse_shade(m: PathDiffuse, ray_13: Ray, hit_1: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn path_diffuse_shade(m: PathDiffuse, ray_14: Ray, hit_1: Hit, secondary: vec3<f32>) -> vec3<f32> {
     var direct: vec3<f32>;
     var i_6: u32;
 
-    let n_13 = faceForward(hit_1.normal, ray_13.dir, hit_1.geometric_normal);
-    let ng = faceForward(hit_1.geometric_normal, ray_13.dir, hit_1.geometric_normal);
+    let n_13 = faceForward(hit_1.normal, ray_14.dir, hit_1.geometric_normal);
+    let ng = faceForward(hit_1.geometric_normal, ray_14.dir, hit_1.geometric_normal);
     direct = vec3(0f);
     let _e16 = light_count_query();
     i_6 = 0u;
@@ -1380,31 +1397,31 @@ fn load_QuadLamp(offset_10: u32) -> QuadLamp {
     return QuadLamp(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), bitcast<f32>(_e24), bitcast<f32>(_e30));
 }
 
-fn after_nee_bounce(ray_14: Ray) -> bool {
-    return (dot(ray_14.dir, ray_14.dir) > 2f);
+fn after_nee_bounce(ray_15: Ray) -> bool {
+    return (dot(ray_15.dir, ray_15.dir) > 2f);
 }
 
-fn bounce_pdf(ray_15: Ray) -> f32 {
-    let x_5 = (length(ray_15.dir) - MIS_BOUNCE_LENGTH);
+fn bounce_pdf(ray_16: Ray) -> f32 {
+    let x_5 = (length(ray_16.dir) - MIS_BOUNCE_LENGTH);
     if !((x_5 > -0.25f)) {
         return 0f;
     }
     return (exp((max(x_5, 0f) * 90f)) - 1f);
 }
 
-fn quad_lamp_shade(m_1: QuadLamp, ray_16: Ray, hit_2: Hit) -> vec3<f32> {
+fn quad_lamp_shade(m_1: QuadLamp, ray_17: Ray, hit_2: Hit) -> vec3<f32> {
     if !(hit_2.front_face) {
         return vec3(0f);
     }
     let le = (m_1.color * vec3(m_1.intensity));
-    let _e11 = after_nee_bounce(ray_16);
+    let _e11 = after_nee_bounce(ray_17);
     if !(_e11) {
         return le;
     }
-    let _e13 = bounce_pdf(ray_16);
-    let len = length(ray_16.dir);
+    let _e13 = bounce_pdf(ray_17);
+    let len = length(ray_17.dir);
     let dist_5 = (hit_2.t * len);
-    let cos_l = (abs(dot(hit_2.geometric_normal, ray_16.dir)) / len);
+    let cos_l = (abs(dot(hit_2.geometric_normal, ray_17.dir)) / len);
     let pl = ((dist_5 * dist_5) / max((cos_l * m_1.area), 0.000000000000000000000000000001f));
     let _e29 = mis_weight(_e13, pl);
     return (le * vec3(_e29));
@@ -1419,19 +1436,19 @@ fn load_SphereLamp(offset_11: u32) -> SphereLamp {
     return SphereLamp(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), bitcast<f32>(_e24), bitcast<f32>(_e30));
 }
 
-fn sphere_lamp_shade(m_2: SphereLamp, ray_17: Ray, hit_3: Hit) -> vec3<f32> {
+fn sphere_lamp_shade(m_2: SphereLamp, ray_18: Ray, hit_3: Hit) -> vec3<f32> {
     if !(hit_3.front_face) {
         return vec3(0f);
     }
     let r2_3 = max((m_2.radius * m_2.radius), 0.00000000000000000001f);
     let le_1 = (m_2.color * vec3(((m_2.intensity * INV_PI) / r2_3)));
-    let _e19 = after_nee_bounce(ray_17);
+    let _e19 = after_nee_bounce(ray_18);
     if !(_e19) {
         return le_1;
     }
-    let _e21 = bounce_pdf(ray_17);
+    let _e21 = bounce_pdf(ray_18);
     let center = (hit_3.position - (hit_3.normal * vec3(m_2.radius)));
-    let to_center_1 = (center - ray_17.origin);
+    let to_center_1 = (center - ray_18.origin);
     let s2_1 = (r2_3 / max(dot(to_center_1, to_center_1), r2_3));
     let one_minus_cos_max_1 = (s2_1 / (1f + sqrt((1f - s2_1))));
     let pl_1 = (1f / max((TAU * one_minus_cos_max_1), 0.000000000000000000000000000001f));
@@ -1452,14 +1469,14 @@ fn load_PathPbr(offset_12: u32) -> PathPbr {
     return PathPbr(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), bitcast<f32>(_e24), bitcast<f32>(_e30), vec3<f32>(bitcast<f32>(_e36), bitcast<f32>(_e42), bitcast<f32>(_e48)), _e55);
 }
 
-fn path_pbr_ng(ray_18: Ray, hit_4: Hit) -> vec3<f32> {
-    return faceForward(hit_4.geometric_normal, ray_18.dir, hit_4.geometric_normal);
+fn path_pbr_ng(ray_19: Ray, hit_4: Hit) -> vec3<f32> {
+    return faceForward(hit_4.geometric_normal, ray_19.dir, hit_4.geometric_normal);
 }
 
-fn path_pbr_n(ray_19: Ray, hit_5: Hit) -> vec3<f32> {
-    let _e2 = path_pbr_ng(ray_19, hit_5);
+fn path_pbr_n(ray_20: Ray, hit_5: Hit) -> vec3<f32> {
+    let _e2 = path_pbr_ng(ray_20, hit_5);
     let n_14 = faceForward(hit_5.normal, -(_e2), hit_5.normal);
-    return select(_e2, n_14, (dot(n_14, ray_19.dir) < 0f));
+    return select(_e2, n_14, (dot(n_14, ray_20.dir) < 0f));
 }
 
 fn pbr_alpha2_(roughness: f32) -> f32 {
@@ -1538,16 +1555,16 @@ fn pbr_pdf(base_3: vec3<f32>, metallic_2: f32, roughness_2: f32, n_7: vec3<f32>,
     return ((_e17 * _e22) + (((1f - _e17) * ndl_2) * INV_PI));
 }
 
-fn path_pbr_shade(m_3: PathPbr, ray_20: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+fn path_pbr_shade(m_3: PathPbr, ray_21: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     var direct_1: vec3<f32>;
     var i_7: u32;
     var w: f32;
 
-    let _e4 = path_pbr_n(ray_20, hit_6);
-    let _e6 = normalize_vec3f(ray_20.dir);
+    let _e4 = path_pbr_n(ray_21, hit_6);
+    let _e6 = normalize_vec3f(ray_21.dir);
     let v_7 = -(_e6);
     direct_1 = vec3(0f);
-    let _e11 = path_pbr_ng(ray_20, hit_6);
+    let _e11 = path_pbr_ng(ray_21, hit_6);
     let _e13 = light_count_query();
     i_7 = 0u;
     loop {
@@ -1578,26 +1595,26 @@ fn path_pbr_shade(m_3: PathPbr, ray_20: Ray, hit_6: Hit, secondary_1: vec3<f32>)
     return ((m_3.emissive + _e53) + secondary_1);
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_13: u32, ray_21: Ray, hit_7: Hit, secondary_2: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_13: u32, ray_22: Ray, hit_7: Hit, secondary_2: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e5 = load_PathDiffuse(offset_13);
-            let _e6 = path_diffuse_shade(_e5, ray_21, hit_7, secondary_2);
+            let _e6 = path_diffuse_shade(_e5, ray_22, hit_7, secondary_2);
             return _e6;
         }
         case 1u: {
             let _e7 = load_QuadLamp(offset_13);
-            let _e8 = quad_lamp_shade(_e7, ray_21, hit_7);
+            let _e8 = quad_lamp_shade(_e7, ray_22, hit_7);
             return _e8;
         }
         case 2u: {
             let _e9 = load_SphereLamp(offset_13);
-            let _e10 = sphere_lamp_shade(_e9, ray_21, hit_7);
+            let _e10 = sphere_lamp_shade(_e9, ray_22, hit_7);
             return _e10;
         }
         case 3u: {
             let _e11 = load_PathPbr(offset_13);
-            let _e12 = path_pbr_shade(_e11, ray_21, hit_7, secondary_2);
+            let _e12 = path_pbr_shade(_e11, ray_22, hit_7, secondary_2);
             return _e12;
         }
         default: {
@@ -1606,29 +1623,29 @@ fn dispatch_closest_hit(type_id_4: u32, offset_13: u32, ray_21: Ray, hit_7: Hit,
     return vec3<f32>();
 }
 
-fn shade_direct(ray_22: Ray, c_4: Candidate) -> vec3<f32> {
+fn shade_direct(ray_23: Ray, c_4: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_4.slot];
-    let _e6 = finish_hit(ray_22, c_4);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_22, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_23, c_4);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_23, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_medium(type_id_5: u32, offset_14: u32, ray_23: Ray, t_1: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_5: u32, offset_14: u32, ray_24: Ray, t_1: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_24: Ray, t_2: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_25: Ray, t_2: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_24.medium == 0u) {
+    if (ray_25.medium == 0u) {
         return radiance_1;
     }
-    let inst_9 = instances[(ray_24.medium - 1u)];
+    let inst_9 = instances[(ray_25.medium - 1u)];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_24, t_2, radiance_1);
+    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_25, t_2, radiance_1);
     return _e21;
 }
 
@@ -1654,7 +1671,7 @@ fn rt_spawn(dir_5: vec3<f32>, weight: vec3<f32>) {
     }
 }
 
-fn path_diffuse_rays(m_4: PathDiffuse, ray_25: Ray, hit_8: Hit) {
+fn path_diffuse_rays(m_4: PathDiffuse, ray_26: Ray, hit_8: Hit) {
     var weight_1: vec3<f32>;
 
     let ng_1 = select(-(hit_8.geometric_normal), hit_8.geometric_normal, hit_8.front_face);
@@ -1662,7 +1679,7 @@ fn path_diffuse_rays(m_4: PathDiffuse, ray_25: Ray, hit_8: Hit) {
     let _e12 = rand2_next();
     let _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
-    if (ray_25.depth >= m_4.roulette_depth) {
+    if (ray_26.depth >= m_4.roulette_depth) {
         let q_4 = saturate(max(m_4.albedo.x, max(m_4.albedo.y, m_4.albedo.z)));
         let _e28 = rand_next();
         if (_e28 >= q_4) {
@@ -1732,12 +1749,12 @@ fn pbr_sample(base_4: vec3<f32>, metallic_3: f32, roughness_3: f32, n_9: vec3<f3
     return PbrSample(_e46, weight_5, _e33);
 }
 
-fn path_pbr_rays(m_5: PathPbr, ray_26: Ray, hit_9: Hit) {
+fn path_pbr_rays(m_5: PathPbr, ray_27: Ray, hit_9: Hit) {
     var weight_2: vec3<f32>;
 
-    let _e3 = path_pbr_ng(ray_26, hit_9);
-    let _e4 = path_pbr_n(ray_26, hit_9);
-    let _e6 = normalize_vec3f(ray_26.dir);
+    let _e3 = path_pbr_ng(ray_27, hit_9);
+    let _e4 = path_pbr_n(ray_27, hit_9);
+    let _e6 = normalize_vec3f(ray_27.dir);
     let v_8 = -(_e6);
     let _e11 = rand_next();
     let _e12 = rand2_next();
@@ -1746,7 +1763,7 @@ fn path_pbr_rays(m_5: PathPbr, ray_26: Ray, hit_9: Hit) {
         return;
     }
     weight_2 = _e14.weight;
-    if (ray_26.depth >= m_5.roulette_depth) {
+    if (ray_27.depth >= m_5.roulette_depth) {
         let _e31 = weight_2.x;
         let _e33 = weight_2.y;
         let _e35 = weight_2.z;
@@ -1764,16 +1781,16 @@ fn path_pbr_rays(m_5: PathPbr, ray_26: Ray, hit_9: Hit) {
     return;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_15: u32, ray_27: Ray, hit_10: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_15: u32, ray_28: Ray, hit_10: Hit) {
     switch type_id_6 {
         case 0u: {
             let _e4 = load_PathDiffuse(offset_15);
-            path_diffuse_rays(_e4, ray_27, hit_10);
+            path_diffuse_rays(_e4, ray_28, hit_10);
             return;
         }
         case 3u: {
             let _e5 = load_PathPbr(offset_15);
-            path_pbr_rays(_e5, ray_27, hit_10);
+            path_pbr_rays(_e5, ray_28, hit_10);
             return;
         }
         default: {
@@ -1930,64 +1947,72 @@ fn finite_or_zero(c_6: vec3<f32>) -> vec3<f32> {
     return select(vec3(0f), c_6, _e3);
 }
 
-fn render_pixel(pixel_4: vec2<u32>) {
-    var sum: vec3<f32>;
-    var bad: u32;
-    var s_4: u32;
-    var ray_28: Ray;
+fn pass_done(index: u32, sum: vec3<f32>, bad: u32, pass_: u32) {
+    let _e5 = ray_count;
+    atomicAdd((&counters[1]), _e5);
+    ray_count = 0u;
+    let _e10 = frame;
+    let _e13 = vec4<f32>(sum, f32(_e10.samples_per_pass));
+    if (pass_ == 0u) {
+        accum[index] = _e13;
+    } else {
+        let _e18 = accum[index];
+        accum[index] = (_e18 + _e13);
+    }
+    if (bad > 0u) {
+        atomicAdd((&counters[0]), bad);
+    }
+    return;
+}
 
-    let frame_5 = frame;
+fn render_pixel(pixel_5: vec2<u32>) {
+    var sum_1: vec3<f32>;
+    var bad_1: u32;
+    var s_4: u32;
+
+    let frame_6 = frame;
     let tile_2 = tile;
-    sum = vec3(0f);
-    bad = 0u;
-    let end_1 = frame_5.samples_per_pass;
+    let index_1 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
+    let per_pass = frame_6.samples_per_pass;
+    let first_1 = (tile_2.frame * per_pass);
+    let count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
+    sum_1 = vec3(0f);
+    bad_1 = 0u;
     s_4 = 0u;
     loop {
-        let _e13 = s_4;
-        if (_e13 >= end_1) {
+        let _e25 = s_4;
+        if (_e25 >= count_2) {
             break;
         }
-        let _e18 = s_4;
-        let sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_4, sample_4, frame_5.seed);
-        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
-        ray_28 = _e23;
-        ray_28.depth = 0u;
-        ray_28.kind = RAY_CAMERA;
-        let _e31 = ray_28.origin;
-        let _e33 = medium_at(_e31, NO_HIT);
-        ray_28.medium = _e33;
-        let _e34 = ray_28;
-        let _e35 = trace(_e34);
-        let _e36 = is_finite_vec3f(_e35);
-        if all(_e36) {
-            let _e38 = sum;
-            sum = (_e38 + _e35);
+        let _e27 = s_4;
+        let _e29 = sample_camera_ray(pixel_5, (first_1 + _e27));
+        let _e30 = trace(_e29);
+        let _e31 = is_finite_vec3f(_e30);
+        if all(_e31) {
+            let _e33 = sum_1;
+            sum_1 = (_e33 + _e30);
         } else {
-            let _e40 = sum;
-            let _e41 = finite_or_zero(_e35);
-            sum = (_e40 + _e41);
-            let _e43 = bad;
-            bad = (_e43 + 1u);
+            let _e35 = sum_1;
+            let _e36 = finite_or_zero(_e30);
+            sum_1 = (_e35 + _e36);
+            let _e38 = bad_1;
+            bad_1 = (_e38 + 1u);
+        }
+        let _e41 = s_4;
+        let _e44 = rem_u32_((_e41 + 1u), per_pass);
+        if (_e44 == 0u) {
+            let _e47 = sum_1;
+            let _e48 = bad_1;
+            let _e50 = s_4;
+            let _e51 = div_u32_(_e50, per_pass);
+            pass_done(index_1, _e47, _e48, (tile_2.frame + _e51));
+            sum_1 = vec3(0f);
+            bad_1 = 0u;
         }
         continuing {
-            let _e46 = s_4;
-            s_4 = (_e46 + 1u);
+            let _e56 = s_4;
+            s_4 = (_e56 + 1u);
         }
-    }
-    let _e50 = ray_count;
-    atomicAdd((&counters[1]), _e50);
-    let _e59 = sum;
-    let _e62 = vec4<f32>(_e59, f32(frame_5.samples_per_pass));
-    let _e63 = bad;
-    if (tile_2.frame == 0u) {
-        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
-    } else {
-        let _e69 = accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
-        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
-    }
-    if (_e63 > 0u) {
-        atomicAdd((&counters[0]), _e63);
     }
     return;
 }

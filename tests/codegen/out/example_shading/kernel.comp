@@ -25,6 +25,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
+    uint passes_per_dispatch;
 };
 struct Ray {
     vec3 origin;
@@ -34,6 +35,12 @@ struct Ray {
     uint depth;
     uint kind;
     uint medium;
+};
+struct PathState {
+    Ray ray;
+    vec3 beta;
+    vec3 radiance;
+    bool live;
 };
 struct Pinhole {
     vec3 position;
@@ -98,6 +105,9 @@ struct SkyGradient {
     vec3 horizon;
     vec3 ground;
 };
+struct Mirror {
+    vec3 tint;
+};
 struct BlinnPhong {
     uint texture_;
     vec3 diffuse;
@@ -122,20 +132,11 @@ struct PointLight {
 struct Lambert {
     vec3 albedo;
 };
-struct Mirror {
-    vec3 tint;
-};
 struct UnlitTexture {
     uint texture_;
     vec3 tint;
     vec2 uv_scale;
     uint planar;
-};
-struct PathState {
-    Ray ray;
-    vec3 beta;
-    vec3 radiance;
-    bool live;
 };
 const uint WORKGROUP_WIDTH = 8u;
 const uint WORKGROUP_HEIGHT = 8u;
@@ -158,8 +159,9 @@ const float POINT_ERROR = 1.9073486e-6;
 const float GAMMA_1_ = 5.960465e-8;
 const float GAMMA_6_ = 3.576281e-7;
 const float GAMMA_4_ = 2.3841864e-7;
-const bool HAS_SECONDARY_RAYS = true;
 const bool HAS_BACKGROUND = true;
+const uint FLAG_SECONDARY_RAYS = 2u;
+const uint MAX_DEPTH = 3u;
 const uint TEXTURE_WRAP_MASK = 3u;
 const uint TEXTURE_WRAP_V_SHIFT = 2u;
 const uint TEXTURE_NEAREST = 16u;
@@ -175,9 +177,6 @@ const uint SHADOW_UNOCCLUDED = 1u;
 const uint SHADOW_ABOVE = 2u;
 const float LIGHT_ERROR = 4.7683716e-7;
 const uint RAY_SHADOW = 2u;
-const uint FLAG_MEDIUM = 4u;
-const uint FLAG_SECONDARY_RAYS = 2u;
-const uint MAX_DEPTH = 3u;
 const uint ROULETTE_DEPTH = 2u;
 const float ROULETTE_THROUGHPUT = 0.5;
 const uint RAY_SECONDARY = 1u;
@@ -190,7 +189,7 @@ uint scratch[15] = uint[15](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 
 
 uint rng_state = 0u;
 
-layout(std430, binding = 6) readonly buffer type_5_block_2Compute { uint _group_0_binding_6_cs[]; };
+layout(std430, binding = 6) readonly buffer type_6_block_2Compute { uint _group_0_binding_6_cs[]; };
 
 uint F32_INF = 2139095040u;
 
@@ -208,13 +207,13 @@ layout(std430, binding = 5) readonly buffer type_15_block_6Compute { uvec4 _grou
 
 uint ray_count = 0u;
 
-layout(std430, binding = 7) readonly buffer type_5_block_7Compute { uint _group_0_binding_7_cs[]; };
-
 vec3 spawn_dirs[1] = vec3[1](vec3(0.0));
 
 vec3 spawn_weights[1] = vec3[1](vec3(0.0));
 
 uint spawn_count = 0u;
+
+layout(std430, binding = 7) readonly buffer type_6_block_7Compute { uint _group_0_binding_7_cs[]; };
 
 layout(std430, binding = 9) buffer type_20_block_8Compute { uint _group_0_binding_9_cs[]; };
 
@@ -425,8 +424,8 @@ Ray to_object(GpuInstance inst, Ray ray) {
 
 vec3 safe_inverse(vec3 d) {
     vec3 tiny = vec3(1.1754944e-38);
-    vec3 s_4 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
-    vec3 dd = mix(d, (s_4 * tiny), lessThan(abs(d), tiny));
+    vec3 s_3 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
+    vec3 dd = mix(d, (s_3 * tiny), lessThan(abs(d), tiny));
     return (vec3(1.0) / dd);
 }
 
@@ -452,23 +451,23 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
     vec3 b_6 = (_e18.xyz - r_1.origin);
     vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
-    vec3 c_6 = (_e28.xyz - r_1.origin);
+    vec3 c_5 = (_e28.xyz - r_1.origin);
     float ax = (a_5[min(r_1.kx, 2u)] - (r_1.shear.x * a_5[min(r_1.kz, 2u)]));
     float ay = (a_5[min(r_1.ky, 2u)] - (r_1.shear.y * a_5[min(r_1.kz, 2u)]));
     float bx = (b_6[min(r_1.kx, 2u)] - (r_1.shear.x * b_6[min(r_1.kz, 2u)]));
     float by = (b_6[min(r_1.ky, 2u)] - (r_1.shear.y * b_6[min(r_1.kz, 2u)]));
-    float cx = (c_6[min(r_1.kx, 2u)] - (r_1.shear.x * c_6[min(r_1.kz, 2u)]));
-    float cy = (c_6[min(r_1.ky, 2u)] - (r_1.shear.y * c_6[min(r_1.kz, 2u)]));
+    float cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
+    float cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
     float v_2 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
     float det = ((u + v_2) + w);
     float rcp = (1.0 / det);
-    float t_5 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
-    bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
+    float t_2 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_10 ? vec3(t_5, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
+    return (hit_10 ? vec3(t_2, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c) {
@@ -569,10 +568,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                     vec4 _e58 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
                     uint tag = floatBitsToUint(_e58.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_7 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0.0));
-                    bool _e73 = accept(inst_2, world_ray, c_7);
+                    Candidate c_6 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0.0));
+                    bool _e73 = accept(inst_2, world_ray, c_6);
                     if (_e73) {
-                        best = c_7;
+                        best = c_6;
                         if (shadow) {
                             Candidate _e74 = best;
                             return _e74;
@@ -681,9 +680,9 @@ vec3 decode_octahedral(uint bits) {
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n_1;
-        vec2 s_5 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
+        vec2 s_4 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
         vec3 _e29 = n_1;
-        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_5);
+        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_4);
         float _e37 = n_1.z;
         n_1 = vec3(xy.x, xy.y, _e37);
     }
@@ -798,12 +797,27 @@ uint medium_at(vec3 p_4, uint exclude) {
     return _e62;
 }
 
+Ray sample_camera_ray(uvec2 pixel_4, uint sample_4) {
+    Ray ray_7 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
+    FrameUniforms frame_2 = _group_0_binding_0_cs;
+    rng_seed(pixel_4, sample_4, frame_2.seed);
+    Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    vec3 _e15 = ray_7.origin;
+    uint _e17 = medium_at(_e15, NO_HIT);
+    ray_7.medium = _e17;
+    Ray _e18 = ray_7;
+    return _e18;
+}
+
 vec3 node_frame_hi(GpuNode header) {
     vec3 _e5 = node_point(header.min_, header.max_, uvec3(65535u));
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_7, bool shadow_2) {
+Candidate intersect_scene(Ray ray_8, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -811,21 +825,21 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_7.tmax);
+    Candidate _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = _group_0_binding_0_cs;
-    if ((frame_2.instance_count == 0u)) {
+    FrameUniforms frame_3 = _group_0_binding_0_cs;
+    if ((frame_3.instance_count == 0u)) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    vec3 _e16 = safe_inverse(ray_7.dir);
-    uint base_2 = frame_2.tlas_root;
+    vec3 _e16 = safe_inverse(ray_8.dir);
+    uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_2];
     vec3 origin_5 = header_2.min_;
     vec3 scale_3 = header_2.max_;
     vec3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
+    float _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == uintBitsToFloat(_e30))) {
         Candidate _e33 = best_2;
@@ -840,7 +854,7 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2) {
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_7, _e55, shadow_2);
+                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_8, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -852,7 +866,7 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2) {
             uint _e63 = child_1;
             GpuNode n_8 = _group_0_binding_2_cs[(base_2 + _e63)];
             float _e69 = best_2.t;
-            vec2 _e70 = children_entry(n_8, origin_5, scale_3, ray_7, _e16, _e69);
+            vec2 _e70 = children_entry(n_8, origin_5, scale_3, ray_8, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -912,8 +926,8 @@ SkyGradient load_SkyGradient(uint offset_2) {
     return SkyGradient(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), vec3(uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55)));
 }
 
-vec3 sky_gradient(SkyGradient b_4, Ray ray_8) {
-    vec3 _e3 = normalize_vec3f(ray_8.dir);
+vec3 sky_gradient(SkyGradient b_4, Ray ray_9) {
+    vec3 _e3 = normalize_vec3f(ray_9.dir);
     float y = _e3.y;
     if ((y < 0.0)) {
         return mix(b_4.horizon, b_4.ground, vec3(min((-(y) * 4.0), 1.0)));
@@ -921,41 +935,69 @@ vec3 sky_gradient(SkyGradient b_4, Ray ray_8) {
     return mix(b_4.horizon, b_4.zenith, vec3(sqrt(y)));
 }
 
-vec3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_9) {
+vec3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_10) {
     SkyGradient _e2 = load_SkyGradient(offset_3);
-    vec3 _e3 = sky_gradient(_e2, ray_9);
+    vec3 _e3 = sky_gradient(_e2, ray_10);
     return _e3;
 }
 
-vec3 miss(Ray ray_10) {
+vec3 miss(Ray ray_11) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
-    FrameUniforms frame_3 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_10);
+    FrameUniforms frame_4 = _group_0_binding_0_cs;
+    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11);
     return _e9;
 }
 
-BlinnPhong load_BlinnPhong(uint offset_4) {
+Mirror load_Mirror(uint offset_4) {
     uint _e5 = _group_0_binding_6_cs[(offset_4 + 0u)];
-    uint _e10 = _group_0_binding_6_cs[(offset_4 + 4u)];
-    uint _e16 = _group_0_binding_6_cs[(offset_4 + 5u)];
-    uint _e22 = _group_0_binding_6_cs[(offset_4 + 6u)];
-    uint _e29 = _group_0_binding_6_cs[(offset_4 + 8u)];
-    uint _e35 = _group_0_binding_6_cs[(offset_4 + 9u)];
-    uint _e41 = _group_0_binding_6_cs[(offset_4 + 10u)];
-    uint _e48 = _group_0_binding_6_cs[(offset_4 + 11u)];
-    uint _e54 = _group_0_binding_6_cs[(offset_4 + 12u)];
-    uint _e60 = _group_0_binding_6_cs[(offset_4 + 13u)];
-    uint _e66 = _group_0_binding_6_cs[(offset_4 + 14u)];
-    uint _e73 = _group_0_binding_6_cs[(offset_4 + 16u)];
-    uint _e79 = _group_0_binding_6_cs[(offset_4 + 17u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_4 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_4 + 2u)];
+    return Mirror(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
+}
+
+void rt_spawn(vec3 dir, vec3 weight) {
+    uint _e3 = spawn_count;
+    if ((_e3 < 1u)) {
+        spawn_dirs[_e3] = dir;
+        spawn_weights[_e3] = weight;
+        spawn_count = (_e3 + 1u);
+    }
+}
+
+void mirror_rays(Mirror m, Ray ray_12, Hit hit_1) {
+    vec3 _e4 = normalize_vec3f(ray_12.dir);
+    rt_spawn(reflect(_e4, hit_1.normal), m.tint);
+    return;
+}
+
+void dispatch_secondary_rays(uint type_id_2, uint offset_5, Ray ray_13, Hit hit_2) {
+    Mirror _e3 = load_Mirror(offset_5);
+    mirror_rays(_e3, ray_13, hit_2);
+    return;
+}
+
+BlinnPhong load_BlinnPhong(uint offset_6) {
+    uint _e5 = _group_0_binding_6_cs[(offset_6 + 0u)];
+    uint _e10 = _group_0_binding_6_cs[(offset_6 + 4u)];
+    uint _e16 = _group_0_binding_6_cs[(offset_6 + 5u)];
+    uint _e22 = _group_0_binding_6_cs[(offset_6 + 6u)];
+    uint _e29 = _group_0_binding_6_cs[(offset_6 + 8u)];
+    uint _e35 = _group_0_binding_6_cs[(offset_6 + 9u)];
+    uint _e41 = _group_0_binding_6_cs[(offset_6 + 10u)];
+    uint _e48 = _group_0_binding_6_cs[(offset_6 + 11u)];
+    uint _e54 = _group_0_binding_6_cs[(offset_6 + 12u)];
+    uint _e60 = _group_0_binding_6_cs[(offset_6 + 13u)];
+    uint _e66 = _group_0_binding_6_cs[(offset_6 + 14u)];
+    uint _e73 = _group_0_binding_6_cs[(offset_6 + 16u)];
+    uint _e79 = _group_0_binding_6_cs[(offset_6 + 17u)];
     return BlinnPhong(_e5, vec3(uintBitsToFloat(_e10), uintBitsToFloat(_e16), uintBitsToFloat(_e22)), vec3(uintBitsToFloat(_e29), uintBitsToFloat(_e35), uintBitsToFloat(_e41)), uintBitsToFloat(_e48), vec3(uintBitsToFloat(_e54), uintBitsToFloat(_e60), uintBitsToFloat(_e66)), vec2(uintBitsToFloat(_e73), uintBitsToFloat(_e79)));
 }
 
-vec3 shading_normal(Ray ray_11, Hit hit_1) {
-    vec3 ng = faceforward(hit_1.geometric_normal, ray_11.dir, hit_1.geometric_normal);
-    return faceforward(hit_1.normal, -(ng), hit_1.normal);
+vec3 shading_normal(Ray ray_14, Hit hit_3) {
+    vec3 ng = faceforward(hit_3.geometric_normal, ray_14.dir, hit_3.geometric_normal);
+    return faceforward(hit_3.normal, -(ng), hit_3.normal);
 }
 
 int i32_from_f32_(float x_3) {
@@ -988,23 +1030,23 @@ float srgb_channel(float c_2) {
 vec4 texel_at(uint t, uint xi, uint yi) {
     uint base_3 = _group_0_binding_6_cs[t];
     uint _e10 = _group_0_binding_6_cs[(t + 1u)];
-    uint index = ((yi * max(_e10, 1u)) + xi);
+    uint index_1 = ((yi * max(_e10, 1u)) + xi);
     uint format = _group_0_binding_6_cs[(t + 3u)];
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
-        uint _e25 = _group_0_binding_7_cs[(base_3 + index)];
-        vec4 c_8 = unpackUnorm4x8(_e25);
-        float _e28 = srgb_channel(c_8.x);
-        float _e30 = srgb_channel(c_8.y);
-        float _e32 = srgb_channel(c_8.z);
-        return vec4(_e28, _e30, _e32, c_8.w);
+        uint _e25 = _group_0_binding_7_cs[(base_3 + index_1)];
+        vec4 c_7 = unpackUnorm4x8(_e25);
+        float _e28 = srgb_channel(c_7.x);
+        float _e30 = srgb_channel(c_7.y);
+        float _e32 = srgb_channel(c_7.z);
+        return vec4(_e28, _e30, _e32, c_7.w);
     }
     if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
-        uint _e40 = _group_0_binding_7_cs[(base_3 + index)];
+        uint _e40 = _group_0_binding_7_cs[(base_3 + index_1)];
         return unpackUnorm4x8(_e40);
     }
-    uint _e47 = _group_0_binding_7_cs[(base_3 + (index * RGBA16F_TEXEL_WORDS))];
+    uint _e47 = _group_0_binding_7_cs[(base_3 + (index_1 * RGBA16F_TEXEL_WORDS))];
     vec2 rg = unpackHalf2x16(_e47);
-    uint _e56 = _group_0_binding_7_cs[((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
+    uint _e56 = _group_0_binding_7_cs[((base_3 + (index_1 * RGBA16F_TEXEL_WORDS)) + 1u)];
     vec2 ba = unpackHalf2x16(_e56);
     return vec4(rg, ba);
 }
@@ -1045,25 +1087,25 @@ uint light_count_query() {
     return _e1.light_count;
 }
 
-PointLight load_PointLight(uint offset_5) {
-    uint _e5 = _group_0_binding_6_cs[(offset_5 + 0u)];
-    uint _e11 = _group_0_binding_6_cs[(offset_5 + 1u)];
-    uint _e17 = _group_0_binding_6_cs[(offset_5 + 2u)];
-    uint _e24 = _group_0_binding_6_cs[(offset_5 + 4u)];
-    uint _e30 = _group_0_binding_6_cs[(offset_5 + 5u)];
-    uint _e36 = _group_0_binding_6_cs[(offset_5 + 6u)];
-    uint _e43 = _group_0_binding_6_cs[(offset_5 + 7u)];
-    uint _e49 = _group_0_binding_6_cs[(offset_5 + 8u)];
-    uint _e55 = _group_0_binding_6_cs[(offset_5 + 9u)];
+PointLight load_PointLight(uint offset_7) {
+    uint _e5 = _group_0_binding_6_cs[(offset_7 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_7 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_7 + 2u)];
+    uint _e24 = _group_0_binding_6_cs[(offset_7 + 4u)];
+    uint _e30 = _group_0_binding_6_cs[(offset_7 + 5u)];
+    uint _e36 = _group_0_binding_6_cs[(offset_7 + 6u)];
+    uint _e43 = _group_0_binding_6_cs[(offset_7 + 7u)];
+    uint _e49 = _group_0_binding_6_cs[(offset_7 + 8u)];
+    uint _e55 = _group_0_binding_6_cs[(offset_7 + 9u)];
     return PointLight(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), vec3(uintBitsToFloat(_e24), uintBitsToFloat(_e30), uintBitsToFloat(_e36)), uintBitsToFloat(_e43), uintBitsToFloat(_e49), uintBitsToFloat(_e55));
 }
 
-float shadow_preset(vec3 normal, vec3 dir) {
+float shadow_preset(vec3 normal, vec3 dir_1) {
     uint mode_1 = scratch[min(SCRATCH_SHADOW_MODE, 14u)];
     if ((mode_1 == SHADOW_UNOCCLUDED)) {
         return 1.0;
     }
-    if (((mode_1 == SHADOW_ABOVE) && !((dot(dir, normal) > 0.0)))) {
+    if (((mode_1 == SHADOW_ABOVE) && !((dot(dir_1, normal) > 0.0)))) {
         return 0.0;
     }
     return -1.0;
@@ -1080,17 +1122,17 @@ vec3 step_toward(vec3 x_5, vec3 s) {
 
 vec3 offset_origin(vec3 p_5, vec3 n_4, float error) {
     float d_4 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    vec3 offset_13 = (n_4 * vec3(d_4));
-    vec3 _e17 = step_toward((p_5 + offset_13), offset_13);
+    vec3 offset_12 = (n_4 * vec3(d_4));
+    vec3 _e17 = step_toward((p_5 + offset_12), offset_12);
     return _e17;
 }
 
-Ray shadow_ray(vec3 position, vec3 normal_1, vec3 dir_1, float dist) {
+Ray shadow_ray(vec3 position, vec3 normal_1, vec3 dir_2, float dist) {
     vec3 n_5 = vec3(0.0);
     float tmax_4 = 0.0;
     n_5 = normal_1;
     vec3 _e5 = n_5;
-    if ((dot(dir_1, _e5) < 0.0)) {
+    if ((dot(dir_2, _e5) < 0.0)) {
         vec3 _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1103,22 +1145,22 @@ Ray shadow_ray(vec3 position, vec3 normal_1, vec3 dir_1, float dist) {
     tmax_4 = uintBitsToFloat(_e25);
     uint _e29 = F32_INF;
     if ((dist < uintBitsToFloat(_e29))) {
-        vec3 light = (position + (dir_1 * vec3(dist)));
-        float dd_1 = dot(dir_1, dir_1);
-        float along_1 = (dot((light - _e23), dir_1) / dd_1);
-        vec3 l_1 = (abs(position) + abs((dir_1 * vec3(dist))));
+        vec3 light = (position + (dir_2 * vec3(dist)));
+        float dd_1 = dot(dir_2, dir_2);
+        float along_1 = (dot((light - _e23), dir_2) / dd_1);
+        vec3 l_1 = (abs(position) + abs((dir_2 * vec3(dist))));
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    return Ray(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-float shadow_query(vec3 position_1, vec3 normal_2, vec3 dir_2, float dist_1) {
-    float _e4 = shadow_preset(normal_2, dir_2);
+float shadow_query(vec3 position_1, vec3 normal_2, vec3 dir_3, float dist_1) {
+    float _e4 = shadow_preset(normal_2, dir_3);
     if ((_e4 >= 0.0)) {
         return _e4;
     }
-    Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    Ray _e7 = shadow_ray(position_1, normal_2, dir_3, dist_1);
     Candidate _e9 = intersect_scene(_e7, true);
     return ((_e9.slot != NO_HIT) ? 0.0 : 1.0);
 }
@@ -1138,35 +1180,35 @@ LightSample point_light(PointLight l, vec3 position_2, vec3 normal_3) {
     return LightSample(dir_7, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0.0);
 }
 
-LightSample dispatch_light(uint type_id_2, uint offset_6, vec3 position_3, vec3 normal_4) {
-    PointLight _e3 = load_PointLight(offset_6);
+LightSample dispatch_light(uint type_id_3, uint offset_8, vec3 position_3, vec3 normal_4) {
+    PointLight _e3 = load_PointLight(offset_8);
     LightSample _e4 = point_light(_e3, position_3, normal_4);
     return _e4;
 }
 
 LightSample sample_light_query(uint i_2, vec3 position_4, vec3 normal_5) {
-    FrameUniforms frame_4 = _group_0_binding_0_cs;
-    if ((i_2 >= frame_4.light_count)) {
+    FrameUniforms frame_5 = _group_0_binding_0_cs;
+    if ((i_2 >= frame_5.light_count)) {
         return LightSample(vec3(0.0, 1.0, 0.0), 0.0, vec3(0.0), 0.0);
     }
-    uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_5.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     uint _e22 = _group_0_binding_6_cs[entry];
     uint _e27 = _group_0_binding_6_cs[(entry + 1u)];
     LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     return _e28;
 }
 
-vec3 blinn_phong_shade(BlinnPhong m, Ray ray_12, Hit hit_2) {
+vec3 blinn_phong_shade(BlinnPhong m_1, Ray ray_15, Hit hit_4) {
     vec3 color = vec3(0.0);
     uint i_3 = 0u;
-    vec3 _e3 = shading_normal(ray_12, hit_2);
-    vec3 _e5 = normalize_vec3f(ray_12.dir);
+    vec3 _e3 = shading_normal(ray_15, hit_4);
+    vec3 _e5 = normalize_vec3f(ray_15.dir);
     vec3 v_3 = -(_e5);
-    vec4 _e12 = sample_texture(m.texture_, (hit_2.uv * m.uv_scale));
-    vec3 kd = (m.diffuse * _e12.xyz);
-    float s_6 = max(m.shininess, 0.0);
-    float norm = ((s_6 + 8.0) * (INV_PI / 8.0));
-    color = (m.ambient * kd);
+    vec4 _e12 = sample_texture(m_1.texture_, (hit_4.uv * m_1.uv_scale));
+    vec3 kd = (m_1.diffuse * _e12.xyz);
+    float s_5 = max(m_1.shininess, 0.0);
+    float norm = ((s_5 + 8.0) * (INV_PI / 8.0));
+    color = (m_1.ambient * kd);
     uint _e28 = light_count_query();
     i_3 = 0u;
     bool loop_init_2 = true;
@@ -1181,28 +1223,28 @@ vec3 blinn_phong_shade(BlinnPhong m, Ray ray_12, Hit hit_2) {
             break;
         }
         uint _e32 = i_3;
-        LightSample _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal);
+        LightSample _e35 = sample_light_query(_e32, hit_4.position, hit_4.geometric_normal);
         float ndl = max(dot(_e3, _e35.dir), 0.0);
         vec3 _e42 = normalize_vec3f((_e35.dir + v_3));
-        float highlight = (pow(max(dot(_e3, _e42), 0.0), s_6) * norm);
+        float highlight = (pow(max(dot(_e3, _e42), 0.0), s_5) * norm);
         vec3 _e48 = color;
-        color = (_e48 + ((_e35.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m.specular * vec3(highlight)))));
+        color = (_e48 + ((_e35.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m_1.specular * vec3(highlight)))));
     }
     vec3 _e64 = color;
     return _e64;
 }
 
-Lambert load_Lambert(uint offset_7) {
-    uint _e5 = _group_0_binding_6_cs[(offset_7 + 0u)];
-    uint _e11 = _group_0_binding_6_cs[(offset_7 + 1u)];
-    uint _e17 = _group_0_binding_6_cs[(offset_7 + 2u)];
+Lambert load_Lambert(uint offset_9) {
+    uint _e5 = _group_0_binding_6_cs[(offset_9 + 0u)];
+    uint _e11 = _group_0_binding_6_cs[(offset_9 + 1u)];
+    uint _e17 = _group_0_binding_6_cs[(offset_9 + 2u)];
     return Lambert(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
 }
 
-vec3 lambert_shade(Lambert m_1, Ray ray_13, Hit hit_3) {
+vec3 lambert_shade(Lambert m_2, Ray ray_16, Hit hit_5) {
     vec3 color_1 = vec3(0.0);
     uint i_4 = 0u;
-    vec3 _e3 = shading_normal(ray_13, hit_3);
+    vec3 _e3 = shading_normal(ray_16, hit_5);
     color_1 = vec3(0.0);
     uint _e8 = light_count_query();
     i_4 = 0u;
@@ -1218,67 +1260,60 @@ vec3 lambert_shade(Lambert m_1, Ray ray_13, Hit hit_3) {
             break;
         }
         uint _e12 = i_4;
-        LightSample _e15 = sample_light_query(_e12, hit_3.position, hit_3.geometric_normal);
+        LightSample _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal);
         vec3 _e16 = color_1;
-        color_1 = (_e16 + (((m_1.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0.0))));
+        color_1 = (_e16 + (((m_2.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0.0))));
     }
     vec3 _e33 = color_1;
     return _e33;
 }
 
-Mirror load_Mirror(uint offset_8) {
-    uint _e5 = _group_0_binding_6_cs[(offset_8 + 0u)];
-    uint _e11 = _group_0_binding_6_cs[(offset_8 + 1u)];
-    uint _e17 = _group_0_binding_6_cs[(offset_8 + 2u)];
-    return Mirror(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)));
-}
-
-vec3 mirror_shade(Mirror m_2, Ray ray_14, Hit hit_4, vec3 secondary) {
+vec3 mirror_shade(Mirror m_3, Ray ray_17, Hit hit_6, vec3 secondary) {
     return secondary;
 }
 
-UnlitTexture load_UnlitTexture(uint offset_9) {
-    uint _e5 = _group_0_binding_6_cs[(offset_9 + 0u)];
-    uint _e10 = _group_0_binding_6_cs[(offset_9 + 4u)];
-    uint _e16 = _group_0_binding_6_cs[(offset_9 + 5u)];
-    uint _e22 = _group_0_binding_6_cs[(offset_9 + 6u)];
-    uint _e29 = _group_0_binding_6_cs[(offset_9 + 8u)];
-    uint _e35 = _group_0_binding_6_cs[(offset_9 + 9u)];
-    uint _e42 = _group_0_binding_6_cs[(offset_9 + 10u)];
+UnlitTexture load_UnlitTexture(uint offset_10) {
+    uint _e5 = _group_0_binding_6_cs[(offset_10 + 0u)];
+    uint _e10 = _group_0_binding_6_cs[(offset_10 + 4u)];
+    uint _e16 = _group_0_binding_6_cs[(offset_10 + 5u)];
+    uint _e22 = _group_0_binding_6_cs[(offset_10 + 6u)];
+    uint _e29 = _group_0_binding_6_cs[(offset_10 + 8u)];
+    uint _e35 = _group_0_binding_6_cs[(offset_10 + 9u)];
+    uint _e42 = _group_0_binding_6_cs[(offset_10 + 10u)];
     return UnlitTexture(_e5, vec3(uintBitsToFloat(_e10), uintBitsToFloat(_e16), uintBitsToFloat(_e22)), vec2(uintBitsToFloat(_e29), uintBitsToFloat(_e35)), _e42);
 }
 
-vec3 unlit_texture_shade(UnlitTexture m_3, Ray ray_15, Hit hit_5) {
+vec3 unlit_texture_shade(UnlitTexture m_4, Ray ray_18, Hit hit_7) {
     vec2 uv_1 = vec2(0.0);
-    uv_1 = hit_5.uv;
-    if ((m_3.planar == 1u)) {
-        uv_1 = vec2(hit_5.position.x, -(hit_5.position.y));
+    uv_1 = hit_7.uv;
+    if ((m_4.planar == 1u)) {
+        uv_1 = vec2(hit_7.position.x, -(hit_7.position.y));
     }
     vec2 _e14 = uv_1;
-    vec4 _e17 = sample_texture(m_3.texture_, (_e14 * m_3.uv_scale));
-    return (_e17.xyz * m_3.tint);
+    vec4 _e17 = sample_texture(m_4.texture_, (_e14 * m_4.uv_scale));
+    return (_e17.xyz * m_4.tint);
 }
 
-vec3 dispatch_closest_hit(uint type_id_3, uint offset_10, Ray ray_16, Hit hit_6, vec3 secondary_1) {
-    switch(type_id_3) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_11, Ray ray_19, Hit hit_8, vec3 secondary_1) {
+    switch(type_id_4) {
         case 0u: {
-            BlinnPhong _e5 = load_BlinnPhong(offset_10);
-            vec3 _e6 = blinn_phong_shade(_e5, ray_16, hit_6);
+            BlinnPhong _e5 = load_BlinnPhong(offset_11);
+            vec3 _e6 = blinn_phong_shade(_e5, ray_19, hit_8);
             return _e6;
         }
         case 1u: {
-            Lambert _e7 = load_Lambert(offset_10);
-            vec3 _e8 = lambert_shade(_e7, ray_16, hit_6);
+            Lambert _e7 = load_Lambert(offset_11);
+            vec3 _e8 = lambert_shade(_e7, ray_19, hit_8);
             return _e8;
         }
         case 2u: {
-            Mirror _e9 = load_Mirror(offset_10);
-            vec3 _e10 = mirror_shade(_e9, ray_16, hit_6, secondary_1);
+            Mirror _e9 = load_Mirror(offset_11);
+            vec3 _e10 = mirror_shade(_e9, ray_19, hit_8, secondary_1);
             return _e10;
         }
         case 3u: {
-            UnlitTexture _e11 = load_UnlitTexture(offset_10);
-            vec3 _e12 = unlit_texture_shade(_e11, ray_16, hit_6);
+            UnlitTexture _e11 = load_UnlitTexture(offset_11);
+            vec3 _e12 = unlit_texture_shade(_e11, ray_19, hit_8);
             return _e12;
         }
         default: {
@@ -1286,53 +1321,6 @@ vec3 dispatch_closest_hit(uint type_id_3, uint offset_10, Ray ray_16, Hit hit_6,
         }
     }
     return vec3(0.0);
-}
-
-vec3 shade_direct(Ray ray_17, Candidate c_3) {
-    GpuInstance inst_8 = _group_0_binding_3_cs[c_3.slot];
-    Hit _e6 = finish_hit(ray_17, c_3);
-    vec3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e6, vec3(0.0));
-    return _e11;
-}
-
-vec3 dispatch_medium(uint type_id_4, uint offset_11, Ray ray_18, float t_2, vec3 radiance) {
-    return vec3(0.0);
-}
-
-vec3 through_medium(Ray ray_19, float t_3, vec3 radiance_1) {
-    if (!(HAS_MEDIA)) {
-        return radiance_1;
-    }
-    if ((ray_19.medium == 0u)) {
-        return radiance_1;
-    }
-    GpuInstance inst_9 = _group_0_binding_3_cs[(ray_19.medium - 1u)];
-    if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
-        return radiance_1;
-    }
-    vec3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_19, t_3, radiance_1);
-    return _e21;
-}
-
-void rt_spawn(vec3 dir_3, vec3 weight) {
-    uint _e3 = spawn_count;
-    if ((_e3 < 1u)) {
-        spawn_dirs[_e3] = dir_3;
-        spawn_weights[_e3] = weight;
-        spawn_count = (_e3 + 1u);
-    }
-}
-
-void mirror_rays(Mirror m_4, Ray ray_20, Hit hit_7) {
-    vec3 _e4 = normalize_vec3f(ray_20.dir);
-    rt_spawn(reflect(_e4, hit_7.normal), m_4.tint);
-    return;
-}
-
-void dispatch_secondary_rays(uint type_id_5, uint offset_12, Ray ray_21, Hit hit_8) {
-    Mirror _e3 = load_Mirror(offset_12);
-    mirror_rays(_e3, ray_21, hit_8);
-    return;
 }
 
 vec3 spawn_origin_at(vec3 position_5, vec3 normal_6, float error_1, vec3 dir_4) {
@@ -1353,31 +1341,31 @@ vec3 spawn_origin(Hit hit_9, float error_2, vec3 dir_5) {
     return _e5;
 }
 
-PathState path_step(PathState s_1, Candidate c_4) {
+PathState path_step(PathState s_1, Candidate c_3) {
     PathState out_ = PathState(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), vec3(0.0), vec3(0.0), false);
     bool spawned = false;
     vec3 dir_6 = vec3(0.0);
     vec3 weight_1 = vec3(0.0);
     vec3 beta = vec3(0.0);
-    Ray ray_23 = s_1.ray;
+    Ray ray_20 = s_1.ray;
     out_ = s_1;
     out_.live = false;
-    if ((c_4.slot == NO_HIT)) {
+    if ((c_3.slot == NO_HIT)) {
         hit_error = 0.0;
-        vec3 _e14 = miss(ray_23);
+        vec3 _e14 = miss(ray_20);
         out_.radiance = (s_1.radiance + (s_1.beta * _e14));
         PathState _e17 = out_;
         return _e17;
     }
-    GpuInstance inst_10 = _group_0_binding_3_cs[c_4.slot];
-    Hit _e22 = finish_hit(ray_23, c_4);
+    GpuInstance inst_8 = _group_0_binding_3_cs[c_3.slot];
+    Hit _e22 = finish_hit(ray_20, c_3);
     float error_4 = hit_error;
     spawned = false;
     dir_6 = vec3(0.0);
     weight_1 = vec3(0.0);
-    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_23.depth < MAX_DEPTH))) {
+    if ((((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_20.depth < MAX_DEPTH))) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_23, _e22);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_20, _e22);
         uint _e47 = spawn_count;
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
@@ -1387,7 +1375,7 @@ PathState path_step(PathState s_1, Candidate c_4) {
             weight_1 = _e60;
         }
     }
-    vec3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_23, _e22, vec3(0.0));
+    vec3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e22, vec3(0.0));
     out_.radiance = (s_1.radiance + (s_1.beta * _e68));
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -1404,7 +1392,7 @@ PathState path_step(PathState s_1, Candidate c_4) {
         PathState _e89 = out_;
         return _e89;
     }
-    if ((((ROULETTE_DEPTH > 0u) && ((ray_23.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT))) {
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_20.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT))) {
         float survive = (q_4 / ROULETTE_THROUGHPUT);
         float _e104 = rand_next();
         if ((_e104 >= survive)) {
@@ -1420,124 +1408,96 @@ PathState path_step(PathState s_1, Candidate c_4) {
     vec3 _e114 = spawn_origin(_e22, error_4, _e113);
     vec3 _e116 = dir_6;
     uint _e118 = F32_INF;
-    out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_23.depth + 1u), RAY_SECONDARY, ray_23.medium);
+    out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_20.depth + 1u), RAY_SECONDARY, ray_20.medium);
     out_.live = true;
     PathState _e128 = out_;
     return _e128;
-}
-
-vec3 trace_path(Ray camera_ray) {
-    PathState s_2 = PathState(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), vec3(0.0), vec3(0.0), false);
-    s_2 = PathState(camera_ray, vec3(1.0), vec3(0.0), true);
-    while(true) {
-        PathState _e8 = s_2;
-        Ray _e10 = s_2.ray;
-        Candidate _e12 = intersect_scene(_e10, false);
-        PathState _e13 = path_step(_e8, _e12);
-        s_2 = _e13;
-        bool _e15 = s_2.live;
-        if (!(_e15)) {
-            vec3 _e18 = s_2.radiance;
-            return _e18;
-        }
-    }
-    return vec3(0.0);
-}
-
-vec3 trace(Ray camera_ray_1) {
-    vec3 radiance_2 = vec3(0.0);
-    float t_4 = 0.0;
-    if (!(HAS_SECONDARY_RAYS)) {
-        Candidate _e4 = intersect_scene(camera_ray_1, false);
-        radiance_2 = vec3(0.0);
-        uint _e9 = F32_INF;
-        t_4 = uintBitsToFloat(_e9);
-        if ((_e4.slot == NO_HIT)) {
-            hit_error = 0.0;
-            vec3 _e17 = miss(camera_ray_1);
-            radiance_2 = _e17;
-        } else {
-            vec3 _e18 = shade_direct(camera_ray_1, _e4);
-            radiance_2 = _e18;
-            t_4 = _e4.t;
-        }
-        float _e20 = t_4;
-        vec3 _e21 = radiance_2;
-        vec3 _e22 = through_medium(camera_ray_1, _e20, _e21);
-        return _e22;
-    }
-    vec3 _e23 = trace_path(camera_ray_1);
-    return _e23;
 }
 
 bvec3 is_finite_vec3f(vec3 x_6) {
     return lessThan((floatBitsToUint(x_6) & uvec3(2147483647u)), uvec3(2139095040u));
 }
 
-vec3 finite_or_zero(vec3 c_5) {
-    bvec3 _e3 = is_finite_vec3f(c_5);
-    return mix(vec3(0.0), c_5, _e3);
+vec3 finite_or_zero(vec3 c_4) {
+    bvec3 _e3 = is_finite_vec3f(c_4);
+    return mix(vec3(0.0), c_4, _e3);
 }
 
-void render_pixel(uvec2 pixel_4) {
-    vec3 sum = vec3(0.0);
-    uint bad = 0u;
-    uint s_3 = 0u;
-    Ray ray_22 = Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u);
-    FrameUniforms frame_5 = _group_0_binding_0_cs;
-    TileParams tile_2 = _group_0_binding_1_cs;
-    sum = vec3(0.0);
-    bad = 0u;
-    uint end_1 = frame_5.samples_per_pass;
-    s_3 = 0u;
-    bool loop_init_4 = true;
-    while(true) {
-        if (!loop_init_4) {
-            uint _e46 = s_3;
-            s_3 = (_e46 + 1u);
-        }
-        loop_init_4 = false;
-        uint _e13 = s_3;
-        if ((_e13 >= end_1)) {
-            break;
-        }
-        uint _e18 = s_3;
-        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_4, sample_4, frame_5.seed);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        vec3 _e31 = ray_22.origin;
-        uint _e33 = medium_at(_e31, NO_HIT);
-        ray_22.medium = _e33;
-        Ray _e34 = ray_22;
-        vec3 _e35 = trace(_e34);
-        bvec3 _e36 = is_finite_vec3f(_e35);
-        if (all(_e36)) {
-            vec3 _e38 = sum;
-            sum = (_e38 + _e35);
-        } else {
-            vec3 _e40 = sum;
-            vec3 _e41 = finite_or_zero(_e35);
-            sum = (_e40 + _e41);
-            uint _e43 = bad;
-            bad = (_e43 + 1u);
-        }
-    }
-    uint _e50 = ray_count;
-    atomicAdd(_group_0_binding_9_cs[1], _e50);
-    vec3 _e59 = sum;
-    vec4 _e62 = vec4(_e59, float(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if ((tile_2.frame == 0u)) {
-        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
+void pass_done(uint index, vec3 sum, uint bad, uint pass) {
+    uint _e5 = ray_count;
+    atomicAdd(_group_0_binding_9_cs[1], _e5);
+    ray_count = 0u;
+    FrameUniforms _e10 = _group_0_binding_0_cs;
+    vec4 _e13 = vec4(sum, float(_e10.samples_per_pass));
+    if ((pass == 0u)) {
+        _group_0_binding_8_cs[index] = _e13;
     } else {
-        vec4 _e69 = _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
-        _group_0_binding_8_cs[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
+        vec4 _e18 = _group_0_binding_8_cs[index];
+        _group_0_binding_8_cs[index] = (_e18 + _e13);
     }
-    if ((_e63 > 0u)) {
-        atomicAdd(_group_0_binding_9_cs[0], _e63);
+    if ((bad > 0u)) {
+        atomicAdd(_group_0_binding_9_cs[0], bad);
+    }
+    return;
+}
+
+void render_pixel(uvec2 pixel_5) {
+    vec3 sum_1 = vec3(0.0);
+    uint bad_1 = 0u;
+    uint s_2 = 0u;
+    PathState path = PathState(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), vec3(0.0), vec3(0.0), false);
+    FrameUniforms frame_6 = _group_0_binding_0_cs;
+    TileParams tile_2 = _group_0_binding_1_cs;
+    uint index_2 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_1 = (tile_2.frame * per_pass);
+    uint count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
+    sum_1 = vec3(0.0);
+    bad_1 = 0u;
+    s_2 = 0u;
+    Ray _e25 = sample_camera_ray(pixel_5, first_1);
+    path = PathState(_e25, vec3(1.0), vec3(0.0), true);
+    while(true) {
+        PathState _e33 = path;
+        Ray _e35 = path.ray;
+        Candidate _e37 = intersect_scene(_e35, false);
+        PathState _e38 = path_step(_e33, _e37);
+        path = _e38;
+        bool _e40 = path.live;
+        if (!(_e40)) {
+            vec3 c_8 = path.radiance;
+            bvec3 _e44 = is_finite_vec3f(c_8);
+            if (all(_e44)) {
+                vec3 _e46 = sum_1;
+                sum_1 = (_e46 + c_8);
+            } else {
+                vec3 _e48 = sum_1;
+                vec3 _e49 = finite_or_zero(c_8);
+                sum_1 = (_e48 + _e49);
+                uint _e51 = bad_1;
+                bad_1 = (_e51 + 1u);
+            }
+            uint _e54 = s_2;
+            s_2 = (_e54 + 1u);
+            uint _e57 = s_2;
+            uint _e58 = rem_u32_(_e57, per_pass);
+            if ((_e58 == 0u)) {
+                vec3 _e61 = sum_1;
+                uint _e62 = bad_1;
+                uint _e64 = s_2;
+                uint _e65 = div_u32_(_e64, per_pass);
+                pass_done(index_2, _e61, _e62, ((tile_2.frame + _e65) - 1u));
+                sum_1 = vec3(0.0);
+                bad_1 = 0u;
+            }
+            uint _e72 = s_2;
+            if ((_e72 >= count_2)) {
+                break;
+            }
+            uint _e74 = s_2;
+            Ray _e76 = sample_camera_ray(pixel_5, (first_1 + _e74));
+            path = PathState(_e76, vec3(1.0), vec3(0.0), true);
+        }
     }
     return;
 }

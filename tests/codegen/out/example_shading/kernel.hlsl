@@ -21,6 +21,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
+    uint passes_per_dispatch;
 };
 
 struct Ray {
@@ -32,6 +33,14 @@ struct Ray {
     uint kind;
     uint medium;
     int _end_pad_0;
+};
+
+struct PathState {
+    Ray ray;
+    float3 beta;
+    int _pad2_0;
+    float3 radiance;
+    bool live;
 };
 
 struct Pinhole {
@@ -124,6 +133,11 @@ struct SkyGradient {
     int _end_pad_0;
 };
 
+struct Mirror {
+    float3 tint;
+    int _end_pad_0;
+};
+
 struct BlinnPhong {
     uint texture_;
     int _pad1_0;
@@ -163,11 +177,6 @@ struct Lambert {
     int _end_pad_0;
 };
 
-struct Mirror {
-    float3 tint;
-    int _end_pad_0;
-};
-
 struct UnlitTexture {
     uint texture_;
     int _pad1_0;
@@ -178,14 +187,6 @@ struct UnlitTexture {
     float2 uv_scale;
     uint planar;
     int _end_pad_0;
-};
-
-struct PathState {
-    Ray ray;
-    float3 beta;
-    int _pad2_0;
-    float3 radiance;
-    bool live;
 };
 
 static const uint WORKGROUP_WIDTH = 8u;
@@ -209,8 +210,9 @@ static const float POINT_ERROR = 1.9073486e-6;
 static const float GAMMA_1_ = 5.960465e-8;
 static const float GAMMA_6_ = 3.576281e-7;
 static const float GAMMA_4_ = 2.3841864e-7;
-static const bool HAS_SECONDARY_RAYS = true;
 static const bool HAS_BACKGROUND = true;
+static const uint FLAG_SECONDARY_RAYS = 2u;
+static const uint MAX_DEPTH = 3u;
 static const uint TEXTURE_WRAP_MASK = 3u;
 static const uint TEXTURE_WRAP_V_SHIFT = 2u;
 static const uint TEXTURE_NEAREST = 16u;
@@ -226,9 +228,6 @@ static const uint SHADOW_UNOCCLUDED = 1u;
 static const uint SHADOW_ABOVE = 2u;
 static const float LIGHT_ERROR = 4.7683716e-7;
 static const uint RAY_SHADOW = 2u;
-static const uint FLAG_MEDIUM = 4u;
-static const uint FLAG_SECONDARY_RAYS = 2u;
-static const uint MAX_DEPTH = 3u;
 static const uint ROULETTE_DEPTH = 2u;
 static const float ROULETTE_THROUGHPUT = 0.5;
 static const uint RAY_SECONDARY = 1u;
@@ -246,10 +245,10 @@ static uint traversal_stack[67] = (uint[67])0;
 static float hit_error = (float)0;
 ByteAddressBuffer attributes : register(t5);
 static uint ray_count = (uint)0;
-ByteAddressBuffer texels : register(t7);
 static float3 spawn_dirs[1] = (float3[1])0;
 static float3 spawn_weights[1] = (float3[1])0;
 static uint spawn_count = (uint)0;
+ByteAddressBuffer texels : register(t7);
 RWByteAddressBuffer counters : register(u9);
 RWByteAddressBuffer accum : register(u8);
 
@@ -490,16 +489,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h) * aspect)).xxx)) - (up * ((ndc.y * h)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_23 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_23;
+    const Ray ray_20 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_20;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
-    const Ray ray_24 = _e4;
-    return ray_24;
+    const Ray ray_21 = _e4;
+    return ray_21;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -528,15 +527,15 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
-    const Ray ray_25 = _e25;
-    return ray_25;
+    const Ray ray_22 = _e25;
+    return ray_22;
 }
 
 float3 safe_inverse(float3 d)
 {
     float3 tiny = (1.1754944e-38).xxx;
-    float3 s_4 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny) ? (s_4 * tiny) : d);
+    float3 s_3 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 dd = ((abs(d) < tiny) ? (s_3 * tiny) : d);
     return ((1.0).xxx / dd);
 }
 
@@ -576,23 +575,23 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
     float3 b_6 = (_e18.xyz - r_1.origin);
     float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
-    float3 c_6 = (_e28.xyz - r_1.origin);
+    float3 c_5 = (_e28.xyz - r_1.origin);
     float ax = (a_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float ay = (a_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float bx = (b_6[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_6[min(uint(min(r_1.kz, 2u)), 2u)]));
     float by = (b_6[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * b_6[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float cx = (c_6[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_6[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float cy = (c_6[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_6[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cx = (c_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cy = (c_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u = ((cx * by) - (cy * bx));
     float v_2 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
     float det = ((u + v_2) + w);
     float rcp_ = (1.0 / det);
-    float t_5 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_6[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
-    bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
+    float t_2 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
     uint _e173 = F32_INF;
-    return (hit_10 ? float3(t_5, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
+    return (hit_10 ? float3(t_2, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
 }
 
 bool accept(GpuInstance inst_1, Ray ray_2, Candidate c)
@@ -717,10 +716,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                     float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
                     uint tag = asuint(_e58.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_7 = ConstructCandidate(_e46.x, owner, prim, _e46.yz, (0.0).xxx);
-                    const bool _e73 = accept(inst_2, world_ray, c_7);
+                    Candidate c_6 = ConstructCandidate(_e46.x, owner, prim, _e46.yz, (0.0).xxx);
+                    const bool _e73 = accept(inst_2, world_ray, c_6);
                     if (_e73) {
-                        best = c_7;
+                        best = c_6;
                         if (shadow) {
                             Candidate _e74 = best;
                             const Candidate candidate_1 = _e74;
@@ -869,9 +868,9 @@ float3 decode_octahedral(uint bits)
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         float3 _e21 = n_1;
-        float2 s_5 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
+        float2 s_4 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
         float3 _e29 = n_1;
-        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_5);
+        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_4);
         float _e37 = n_1.z;
         n_1 = float3(xy.x, xy.y, _e37);
     }
@@ -1011,13 +1010,31 @@ uint medium_at(float3 p_4, uint exclude)
     return _e62;
 }
 
+Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
+{
+    Ray ray_7 = (Ray)0;
+
+    FrameUniforms frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed);
+    const Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    float3 _e15 = ray_7.origin;
+    const uint _e17 = medium_at(_e15, NO_HIT);
+    ray_7.medium = _e17;
+    Ray _e18 = ray_7;
+    const Ray ray_23 = _e18;
+    return ray_23;
+}
+
 float3 node_frame_hi(GpuNode header)
 {
     const float3 _e5 = node_point(header.min_, header.max_, (65535u).xxx);
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_7, bool shadow_2)
+Candidate intersect_scene(Ray ray_8, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -1027,22 +1044,22 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_7.tmax);
+    const Candidate _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = frame;
-    if ((frame_2.instance_count == 0u)) {
+    FrameUniforms frame_3 = frame;
+    if ((frame_3.instance_count == 0u)) {
         Candidate _e14 = best_2;
         const Candidate candidate_5 = _e14;
         return candidate_5;
     }
-    const float3 _e16 = safe_inverse(ray_7.dir);
-    uint base_2 = frame_2.tlas_root;
+    const float3 _e16 = safe_inverse(ray_8.dir);
+    uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
     float3 origin_5 = header_2.min_;
     float3 scale_3 = header_2.max_;
     const float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    const float _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
+    const float _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == asfloat(_e30))) {
         Candidate _e33 = best_2;
@@ -1061,7 +1078,7 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2)
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_7, _e55, shadow_2);
+                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_8, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -1074,7 +1091,7 @@ Candidate intersect_scene(Ray ray_7, bool shadow_2)
             uint _e63 = child_1;
             GpuNode n_8 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e63)*32+0)), asuint(nodes.Load((base_2 + _e63)*32+12)), asfloat(nodes.Load3((base_2 + _e63)*32+16)), asuint(nodes.Load((base_2 + _e63)*32+28)));
             float _e69 = best_2.t;
-            const float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_7, _e16, _e69);
+            const float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_8, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1145,9 +1162,9 @@ SkyGradient load_SkyGradient(uint offset_2)
     return skygradient;
 }
 
-float3 sky_gradient(SkyGradient b_4, Ray ray_8)
+float3 sky_gradient(SkyGradient b_4, Ray ray_9)
 {
-    const float3 _e3 = normalize_vec3f(ray_8.dir);
+    const float3 _e3 = normalize_vec3f(ray_9.dir);
     float y = _e3.y;
     if ((y < 0.0)) {
         return lerp(b_4.horizon, b_4.ground, (min((-(y) * 4.0), 1.0)).xxx);
@@ -1155,21 +1172,60 @@ float3 sky_gradient(SkyGradient b_4, Ray ray_8)
     return lerp(b_4.horizon, b_4.zenith, (sqrt(y)).xxx);
 }
 
-float3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_9)
+float3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_10)
 {
     const SkyGradient _e2 = load_SkyGradient(offset_3);
-    const float3 _e3 = sky_gradient(_e2, ray_9);
+    const float3 _e3 = sky_gradient(_e2, ray_10);
     return _e3;
 }
 
-float3 miss(Ray ray_10)
+float3 miss(Ray ray_11)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
-    FrameUniforms frame_3 = frame;
-    const float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_10);
+    FrameUniforms frame_4 = frame;
+    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11);
     return _e9;
+}
+
+Mirror ConstructMirror(float3 arg0) {
+    Mirror ret = (Mirror)0;
+    ret.tint = arg0;
+    return ret;
+}
+
+Mirror load_Mirror(uint offset_4)
+{
+    uint _e5 = asuint(params.Load((offset_4 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_4 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_4 + 2u)*4));
+    const Mirror mirror = ConstructMirror(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)));
+    return mirror;
+}
+
+void rt_spawn(float3 dir, float3 weight)
+{
+    uint _e3 = spawn_count;
+    if ((_e3 < 1u)) {
+        spawn_dirs[min(uint(_e3), 0u)] = dir;
+        spawn_weights[min(uint(_e3), 0u)] = weight;
+        spawn_count = (_e3 + 1u);
+    }
+}
+
+void mirror_rays(Mirror m, Ray ray_12, Hit hit_1)
+{
+    const float3 _e4 = normalize_vec3f(ray_12.dir);
+    rt_spawn(reflect(_e4, hit_1.normal), m.tint);
+    return;
+}
+
+void dispatch_secondary_rays(uint type_id_2, uint offset_5, Ray ray_13, Hit hit_2)
+{
+    const Mirror _e3 = load_Mirror(offset_5);
+    mirror_rays(_e3, ray_13, hit_2);
+    return;
 }
 
 BlinnPhong ConstructBlinnPhong(uint arg0, float3 arg1, float3 arg2, float arg3, float3 arg4, float2 arg5) {
@@ -1183,29 +1239,29 @@ BlinnPhong ConstructBlinnPhong(uint arg0, float3 arg1, float3 arg2, float arg3, 
     return ret;
 }
 
-BlinnPhong load_BlinnPhong(uint offset_4)
+BlinnPhong load_BlinnPhong(uint offset_6)
 {
-    uint _e5 = asuint(params.Load((offset_4 + 0u)*4));
-    uint _e10 = asuint(params.Load((offset_4 + 4u)*4));
-    uint _e16 = asuint(params.Load((offset_4 + 5u)*4));
-    uint _e22 = asuint(params.Load((offset_4 + 6u)*4));
-    uint _e29 = asuint(params.Load((offset_4 + 8u)*4));
-    uint _e35 = asuint(params.Load((offset_4 + 9u)*4));
-    uint _e41 = asuint(params.Load((offset_4 + 10u)*4));
-    uint _e48 = asuint(params.Load((offset_4 + 11u)*4));
-    uint _e54 = asuint(params.Load((offset_4 + 12u)*4));
-    uint _e60 = asuint(params.Load((offset_4 + 13u)*4));
-    uint _e66 = asuint(params.Load((offset_4 + 14u)*4));
-    uint _e73 = asuint(params.Load((offset_4 + 16u)*4));
-    uint _e79 = asuint(params.Load((offset_4 + 17u)*4));
+    uint _e5 = asuint(params.Load((offset_6 + 0u)*4));
+    uint _e10 = asuint(params.Load((offset_6 + 4u)*4));
+    uint _e16 = asuint(params.Load((offset_6 + 5u)*4));
+    uint _e22 = asuint(params.Load((offset_6 + 6u)*4));
+    uint _e29 = asuint(params.Load((offset_6 + 8u)*4));
+    uint _e35 = asuint(params.Load((offset_6 + 9u)*4));
+    uint _e41 = asuint(params.Load((offset_6 + 10u)*4));
+    uint _e48 = asuint(params.Load((offset_6 + 11u)*4));
+    uint _e54 = asuint(params.Load((offset_6 + 12u)*4));
+    uint _e60 = asuint(params.Load((offset_6 + 13u)*4));
+    uint _e66 = asuint(params.Load((offset_6 + 14u)*4));
+    uint _e73 = asuint(params.Load((offset_6 + 16u)*4));
+    uint _e79 = asuint(params.Load((offset_6 + 17u)*4));
     const BlinnPhong blinnphong = ConstructBlinnPhong(_e5, float3(asfloat(_e10), asfloat(_e16), asfloat(_e22)), float3(asfloat(_e29), asfloat(_e35), asfloat(_e41)), asfloat(_e48), float3(asfloat(_e54), asfloat(_e60), asfloat(_e66)), float2(asfloat(_e73), asfloat(_e79)));
     return blinnphong;
 }
 
-float3 shading_normal(Ray ray_11, Hit hit_1)
+float3 shading_normal(Ray ray_14, Hit hit_3)
 {
-    float3 ng = faceforward(hit_1.geometric_normal, ray_11.dir, hit_1.geometric_normal);
-    return faceforward(hit_1.normal, -(ng), hit_1.normal);
+    float3 ng = faceforward(hit_3.geometric_normal, ray_14.dir, hit_3.geometric_normal);
+    return faceforward(hit_3.normal, -(ng), hit_3.normal);
 }
 
 int naga_f2i32(float value) {
@@ -1234,8 +1290,8 @@ int wrap_texel(int x_4, int n_3, uint mode)
     const int _e5 = rem_i32_(asint(asuint(_e3) + asuint(n_3)), n_3);
     const int _e8 = rem_i32_(x_4, asint(asuint(int(2)) * asuint(n_3)));
     const int _e14 = rem_i32_(asint(asuint(_e8) + asuint(asint(asuint(int(2)) * asuint(n_3)))), asint(asuint(int(2)) * asuint(n_3)));
-    int mirror = ((_e14 >= n_3) ? asint(asuint(asint(asuint(asint(asuint(int(2)) * asuint(n_3))) - asuint(int(1)))) - asuint(_e14)) : _e14);
-    int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5);
+    int mirror_1 = ((_e14 >= n_3) ? asint(asuint(asint(asuint(asint(asuint(int(2)) * asuint(n_3))) - asuint(int(1)))) - asuint(_e14)) : _e14);
+    int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror_1 : _e5);
     return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_4, int(0)), asint(asuint(n_3) - asuint(int(1)))) : wrapped);
 }
 
@@ -1251,23 +1307,23 @@ float4 texel_at(uint t, uint xi, uint yi)
 {
     uint base_3 = asuint(params.Load(t*4));
     uint _e10 = asuint(params.Load((t + 1u)*4));
-    uint index = ((yi * max(_e10, 1u)) + xi);
+    uint index_1 = ((yi * max(_e10, 1u)) + xi);
     uint format = asuint(params.Load((t + 3u)*4));
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
-        uint _e25 = asuint(texels.Load((base_3 + index)*4));
-        float4 c_8 = (float4(_e25 & 0xFF, _e25 >> 8 & 0xFF, _e25 >> 16 & 0xFF, _e25 >> 24) / 255.0);
-        const float _e28 = srgb_channel(c_8.x);
-        const float _e30 = srgb_channel(c_8.y);
-        const float _e32 = srgb_channel(c_8.z);
-        return float4(_e28, _e30, _e32, c_8.w);
+        uint _e25 = asuint(texels.Load((base_3 + index_1)*4));
+        float4 c_7 = (float4(_e25 & 0xFF, _e25 >> 8 & 0xFF, _e25 >> 16 & 0xFF, _e25 >> 24) / 255.0);
+        const float _e28 = srgb_channel(c_7.x);
+        const float _e30 = srgb_channel(c_7.y);
+        const float _e32 = srgb_channel(c_7.z);
+        return float4(_e28, _e30, _e32, c_7.w);
     }
     if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
-        uint _e40 = asuint(texels.Load((base_3 + index)*4));
+        uint _e40 = asuint(texels.Load((base_3 + index_1)*4));
         return (float4(_e40 & 0xFF, _e40 >> 8 & 0xFF, _e40 >> 16 & 0xFF, _e40 >> 24) / 255.0);
     }
-    uint _e47 = asuint(texels.Load((base_3 + (index * RGBA16F_TEXEL_WORDS))*4));
+    uint _e47 = asuint(texels.Load((base_3 + (index_1 * RGBA16F_TEXEL_WORDS))*4));
     float2 rg = float2(f16tof32(_e47), f16tof32((_e47) >> 16));
-    uint _e56 = asuint(texels.Load(((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)*4));
+    uint _e56 = asuint(texels.Load(((base_3 + (index_1 * RGBA16F_TEXEL_WORDS)) + 1u)*4));
     float2 ba = float2(f16tof32(_e56), f16tof32((_e56) >> 16));
     return float4(rg, ba);
 }
@@ -1320,28 +1376,28 @@ PointLight ConstructPointLight(float3 arg0, float3 arg1, float arg2, float arg3,
     return ret;
 }
 
-PointLight load_PointLight(uint offset_5)
+PointLight load_PointLight(uint offset_7)
 {
-    uint _e5 = asuint(params.Load((offset_5 + 0u)*4));
-    uint _e11 = asuint(params.Load((offset_5 + 1u)*4));
-    uint _e17 = asuint(params.Load((offset_5 + 2u)*4));
-    uint _e24 = asuint(params.Load((offset_5 + 4u)*4));
-    uint _e30 = asuint(params.Load((offset_5 + 5u)*4));
-    uint _e36 = asuint(params.Load((offset_5 + 6u)*4));
-    uint _e43 = asuint(params.Load((offset_5 + 7u)*4));
-    uint _e49 = asuint(params.Load((offset_5 + 8u)*4));
-    uint _e55 = asuint(params.Load((offset_5 + 9u)*4));
+    uint _e5 = asuint(params.Load((offset_7 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_7 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_7 + 2u)*4));
+    uint _e24 = asuint(params.Load((offset_7 + 4u)*4));
+    uint _e30 = asuint(params.Load((offset_7 + 5u)*4));
+    uint _e36 = asuint(params.Load((offset_7 + 6u)*4));
+    uint _e43 = asuint(params.Load((offset_7 + 7u)*4));
+    uint _e49 = asuint(params.Load((offset_7 + 8u)*4));
+    uint _e55 = asuint(params.Load((offset_7 + 9u)*4));
     const PointLight pointlight = ConstructPointLight(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)), float3(asfloat(_e24), asfloat(_e30), asfloat(_e36)), asfloat(_e43), asfloat(_e49), asfloat(_e55));
     return pointlight;
 }
 
-float shadow_preset(float3 normal, float3 dir)
+float shadow_preset(float3 normal, float3 dir_1)
 {
     uint mode_1 = scratch[min(uint(min(SCRATCH_SHADOW_MODE, 14u)), 14u)];
     if ((mode_1 == SHADOW_UNOCCLUDED)) {
         return 1.0;
     }
-    if (((mode_1 == SHADOW_ABOVE) && !((dot(dir, normal) > 0.0)))) {
+    if (((mode_1 == SHADOW_ABOVE) && !((dot(dir_1, normal) > 0.0)))) {
         return 0.0;
     }
     return -1.0;
@@ -1360,19 +1416,19 @@ float3 step_toward(float3 x_5, float3 s)
 float3 offset_origin(float3 p_5, float3 n_4, float error)
 {
     float d_4 = ((2.0 * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    float3 offset_13 = (n_4 * (d_4).xxx);
-    const float3 _e17 = step_toward((p_5 + offset_13), offset_13);
+    float3 offset_12 = (n_4 * (d_4).xxx);
+    const float3 _e17 = step_toward((p_5 + offset_12), offset_12);
     return _e17;
 }
 
-Ray shadow_ray(float3 position, float3 normal_1, float3 dir_1, float dist)
+Ray shadow_ray(float3 position, float3 normal_1, float3 dir_2, float dist)
 {
     float3 n_5 = (float3)0;
     float tmax_4 = (float)0;
 
     n_5 = normal_1;
     float3 _e5 = n_5;
-    if ((dot(dir_1, _e5) < 0.0)) {
+    if ((dot(dir_2, _e5) < 0.0)) {
         float3 _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1385,24 +1441,24 @@ Ray shadow_ray(float3 position, float3 normal_1, float3 dir_1, float dist)
     tmax_4 = asfloat(_e25);
     uint _e29 = F32_INF;
     if ((dist < asfloat(_e29))) {
-        float3 light = (position + (dir_1 * (dist).xxx));
-        float dd_1 = dot(dir_1, dir_1);
-        float along_1 = (dot((light - _e23), dir_1) / dd_1);
-        float3 l_1 = (abs(position) + abs((dir_1 * (dist).xxx)));
+        float3 light = (position + (dir_2 * (dist).xxx));
+        float dd_1 = dot(dir_2, dir_2);
+        float along_1 = (dot((light - _e23), dir_2) / dd_1);
+        float3 l_1 = (abs(position) + abs((dir_2 * (dist).xxx)));
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_26 = ConstructRay(_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_26;
+    const Ray ray_24 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_24;
 }
 
-float shadow_query(float3 position_1, float3 normal_2, float3 dir_2, float dist_1)
+float shadow_query(float3 position_1, float3 normal_2, float3 dir_3, float dist_1)
 {
-    const float _e4 = shadow_preset(normal_2, dir_2);
+    const float _e4 = shadow_preset(normal_2, dir_3);
     if ((_e4 >= 0.0)) {
         return _e4;
     }
-    const Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    const Ray _e7 = shadow_ray(position_1, normal_2, dir_3, dist_1);
     const Candidate _e9 = intersect_scene(_e7, true);
     return ((_e9.slot != NO_HIT) ? 0.0 : 1.0);
 }
@@ -1434,9 +1490,9 @@ LightSample point_light(PointLight l, float3 position_2, float3 normal_3)
     return lightsample;
 }
 
-LightSample dispatch_light(uint type_id_2, uint offset_6, float3 position_3, float3 normal_4)
+LightSample dispatch_light(uint type_id_3, uint offset_8, float3 position_3, float3 normal_4)
 {
-    const PointLight _e3 = load_PointLight(offset_6);
+    const PointLight _e3 = load_PointLight(offset_8);
     const LightSample _e4 = point_light(_e3, position_3, normal_4);
     const LightSample lightsample_1 = _e4;
     return lightsample_1;
@@ -1444,12 +1500,12 @@ LightSample dispatch_light(uint type_id_2, uint offset_6, float3 position_3, flo
 
 LightSample sample_light_query(uint i_2, float3 position_4, float3 normal_5)
 {
-    FrameUniforms frame_4 = frame;
-    if ((i_2 >= frame_4.light_count)) {
+    FrameUniforms frame_5 = frame;
+    if ((i_2 >= frame_5.light_count)) {
         const LightSample lightsample_2 = ConstructLightSample(float3(0.0, 1.0, 0.0), 0.0, (0.0).xxx, 0.0);
         return lightsample_2;
     }
-    uint entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
+    uint entry = (frame_5.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     uint _e22 = asuint(params.Load(entry*4));
     uint _e27 = asuint(params.Load((entry + 1u)*4));
     const LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
@@ -1457,19 +1513,19 @@ LightSample sample_light_query(uint i_2, float3 position_4, float3 normal_5)
     return lightsample_3;
 }
 
-float3 blinn_phong_shade(BlinnPhong m, Ray ray_12, Hit hit_2)
+float3 blinn_phong_shade(BlinnPhong m_1, Ray ray_15, Hit hit_4)
 {
     float3 color = (float3)0;
     uint i_3 = (uint)0;
 
-    const float3 _e3 = shading_normal(ray_12, hit_2);
-    const float3 _e5 = normalize_vec3f(ray_12.dir);
+    const float3 _e3 = shading_normal(ray_15, hit_4);
+    const float3 _e5 = normalize_vec3f(ray_15.dir);
     float3 v_3 = -(_e5);
-    const float4 _e12 = sample_texture(m.texture_, (hit_2.uv * m.uv_scale));
-    float3 kd = (m.diffuse * _e12.xyz);
-    float s_6 = max(m.shininess, 0.0);
-    float norm = ((s_6 + 8.0) * (INV_PI / 8.0));
-    color = (m.ambient * kd);
+    const float4 _e12 = sample_texture(m_1.texture_, (hit_4.uv * m_1.uv_scale));
+    float3 kd = (m_1.diffuse * _e12.xyz);
+    float s_5 = max(m_1.shininess, 0.0);
+    float norm = ((s_5 + 8.0) * (INV_PI / 8.0));
+    color = (m_1.ambient * kd);
     const uint _e28 = light_count_query();
     i_3 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
@@ -1487,12 +1543,12 @@ float3 blinn_phong_shade(BlinnPhong m, Ray ray_12, Hit hit_2)
             break;
         }
         uint _e32 = i_3;
-        const LightSample _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal);
+        const LightSample _e35 = sample_light_query(_e32, hit_4.position, hit_4.geometric_normal);
         float ndl = max(dot(_e3, _e35.dir), 0.0);
         const float3 _e42 = normalize_vec3f((_e35.dir + v_3));
-        float highlight = (pow(max(dot(_e3, _e42), 0.0), s_6) * norm);
+        float highlight = (pow(max(dot(_e3, _e42), 0.0), s_5) * norm);
         float3 _e48 = color;
-        color = (_e48 + ((_e35.radiance * (ndl).xxx) * ((kd * (INV_PI).xxx) + (m.specular * (highlight).xxx))));
+        color = (_e48 + ((_e35.radiance * (ndl).xxx) * ((kd * (INV_PI).xxx) + (m_1.specular * (highlight).xxx))));
     }
     float3 _e64 = color;
     return _e64;
@@ -1504,21 +1560,21 @@ Lambert ConstructLambert(float3 arg0) {
     return ret;
 }
 
-Lambert load_Lambert(uint offset_7)
+Lambert load_Lambert(uint offset_9)
 {
-    uint _e5 = asuint(params.Load((offset_7 + 0u)*4));
-    uint _e11 = asuint(params.Load((offset_7 + 1u)*4));
-    uint _e17 = asuint(params.Load((offset_7 + 2u)*4));
+    uint _e5 = asuint(params.Load((offset_9 + 0u)*4));
+    uint _e11 = asuint(params.Load((offset_9 + 1u)*4));
+    uint _e17 = asuint(params.Load((offset_9 + 2u)*4));
     const Lambert lambert = ConstructLambert(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)));
     return lambert;
 }
 
-float3 lambert_shade(Lambert m_1, Ray ray_13, Hit hit_3)
+float3 lambert_shade(Lambert m_2, Ray ray_16, Hit hit_5)
 {
     float3 color_1 = (float3)0;
     uint i_4 = (uint)0;
 
-    const float3 _e3 = shading_normal(ray_13, hit_3);
+    const float3 _e3 = shading_normal(ray_16, hit_5);
     color_1 = (0.0).xxx;
     const uint _e8 = light_count_query();
     i_4 = 0u;
@@ -1537,30 +1593,15 @@ float3 lambert_shade(Lambert m_1, Ray ray_13, Hit hit_3)
             break;
         }
         uint _e12 = i_4;
-        const LightSample _e15 = sample_light_query(_e12, hit_3.position, hit_3.geometric_normal);
+        const LightSample _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal);
         float3 _e16 = color_1;
-        color_1 = (_e16 + (((m_1.albedo * (INV_PI).xxx) * _e15.radiance) * (max(dot(_e3, _e15.dir), 0.0)).xxx));
+        color_1 = (_e16 + (((m_2.albedo * (INV_PI).xxx) * _e15.radiance) * (max(dot(_e3, _e15.dir), 0.0)).xxx));
     }
     float3 _e33 = color_1;
     return _e33;
 }
 
-Mirror ConstructMirror(float3 arg0) {
-    Mirror ret = (Mirror)0;
-    ret.tint = arg0;
-    return ret;
-}
-
-Mirror load_Mirror(uint offset_8)
-{
-    uint _e5 = asuint(params.Load((offset_8 + 0u)*4));
-    uint _e11 = asuint(params.Load((offset_8 + 1u)*4));
-    uint _e17 = asuint(params.Load((offset_8 + 2u)*4));
-    const Mirror mirror_1 = ConstructMirror(float3(asfloat(_e5), asfloat(_e11), asfloat(_e17)));
-    return mirror_1;
-}
-
-float3 mirror_shade(Mirror m_2, Ray ray_14, Hit hit_4, float3 secondary)
+float3 mirror_shade(Mirror m_3, Ray ray_17, Hit hit_6, float3 secondary)
 {
     return secondary;
 }
@@ -1574,57 +1615,57 @@ UnlitTexture ConstructUnlitTexture(uint arg0, float3 arg1, float2 arg2, uint arg
     return ret;
 }
 
-UnlitTexture load_UnlitTexture(uint offset_9)
+UnlitTexture load_UnlitTexture(uint offset_10)
 {
-    uint _e5 = asuint(params.Load((offset_9 + 0u)*4));
-    uint _e10 = asuint(params.Load((offset_9 + 4u)*4));
-    uint _e16 = asuint(params.Load((offset_9 + 5u)*4));
-    uint _e22 = asuint(params.Load((offset_9 + 6u)*4));
-    uint _e29 = asuint(params.Load((offset_9 + 8u)*4));
-    uint _e35 = asuint(params.Load((offset_9 + 9u)*4));
-    uint _e42 = asuint(params.Load((offset_9 + 10u)*4));
+    uint _e5 = asuint(params.Load((offset_10 + 0u)*4));
+    uint _e10 = asuint(params.Load((offset_10 + 4u)*4));
+    uint _e16 = asuint(params.Load((offset_10 + 5u)*4));
+    uint _e22 = asuint(params.Load((offset_10 + 6u)*4));
+    uint _e29 = asuint(params.Load((offset_10 + 8u)*4));
+    uint _e35 = asuint(params.Load((offset_10 + 9u)*4));
+    uint _e42 = asuint(params.Load((offset_10 + 10u)*4));
     const UnlitTexture unlittexture = ConstructUnlitTexture(_e5, float3(asfloat(_e10), asfloat(_e16), asfloat(_e22)), float2(asfloat(_e29), asfloat(_e35)), _e42);
     return unlittexture;
 }
 
-float3 unlit_texture_shade(UnlitTexture m_3, Ray ray_15, Hit hit_5)
+float3 unlit_texture_shade(UnlitTexture m_4, Ray ray_18, Hit hit_7)
 {
     float2 uv_1 = (float2)0;
 
-    uv_1 = hit_5.uv;
-    if ((m_3.planar == 1u)) {
-        uv_1 = float2(hit_5.position.x, -(hit_5.position.y));
+    uv_1 = hit_7.uv;
+    if ((m_4.planar == 1u)) {
+        uv_1 = float2(hit_7.position.x, -(hit_7.position.y));
     }
     float2 _e14 = uv_1;
-    const float4 _e17 = sample_texture(m_3.texture_, (_e14 * m_3.uv_scale));
-    return (_e17.xyz * m_3.tint);
+    const float4 _e17 = sample_texture(m_4.texture_, (_e14 * m_4.uv_scale));
+    return (_e17.xyz * m_4.tint);
 }
 
 float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_closest_hit(uint type_id_3, uint offset_10, Ray ray_16, Hit hit_6, float3 secondary_1)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_11, Ray ray_19, Hit hit_8, float3 secondary_1)
 {
-    switch(type_id_3) {
+    switch(type_id_4) {
         case 0u: {
-            const BlinnPhong _e5 = load_BlinnPhong(offset_10);
-            const float3 _e6 = blinn_phong_shade(_e5, ray_16, hit_6);
+            const BlinnPhong _e5 = load_BlinnPhong(offset_11);
+            const float3 _e6 = blinn_phong_shade(_e5, ray_19, hit_8);
             return _e6;
         }
         case 1u: {
-            const Lambert _e7 = load_Lambert(offset_10);
-            const float3 _e8 = lambert_shade(_e7, ray_16, hit_6);
+            const Lambert _e7 = load_Lambert(offset_11);
+            const float3 _e8 = lambert_shade(_e7, ray_19, hit_8);
             return _e8;
         }
         case 2u: {
-            const Mirror _e9 = load_Mirror(offset_10);
-            const float3 _e10 = mirror_shade(_e9, ray_16, hit_6, secondary_1);
+            const Mirror _e9 = load_Mirror(offset_11);
+            const float3 _e10 = mirror_shade(_e9, ray_19, hit_8, secondary_1);
             return _e10;
         }
         case 3u: {
-            const UnlitTexture _e11 = load_UnlitTexture(offset_10);
-            const float3 _e12 = unlit_texture_shade(_e11, ray_16, hit_6);
+            const UnlitTexture _e11 = load_UnlitTexture(offset_11);
+            const float3 _e12 = unlit_texture_shade(_e11, ray_19, hit_8);
             return _e12;
         }
         default: {
@@ -1632,59 +1673,6 @@ float3 dispatch_closest_hit(uint type_id_3, uint offset_10, Ray ray_16, Hit hit_
         }
     }
     return ZeroValuefloat3();
-}
-
-float3 shade_direct(Ray ray_17, Candidate c_3)
-{
-    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_3.slot*128+0)), asfloat(instances.Load4(c_3.slot*128+16)), asfloat(instances.Load4(c_3.slot*128+32)), asfloat(instances.Load4(c_3.slot*128+48)), asfloat(instances.Load4(c_3.slot*128+64)), asfloat(instances.Load4(c_3.slot*128+80)), asuint(instances.Load(c_3.slot*128+96)), asuint(instances.Load(c_3.slot*128+100)), asuint(instances.Load(c_3.slot*128+104)), asuint(instances.Load(c_3.slot*128+108)), asuint(instances.Load(c_3.slot*128+112)), asuint(instances.Load(c_3.slot*128+116)), asuint(instances.Load(c_3.slot*128+120)), asuint(instances.Load(c_3.slot*128+124)));
-    const Hit _e6 = finish_hit(ray_17, c_3);
-    const float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e6, (0.0).xxx);
-    return _e11;
-}
-
-float3 dispatch_medium(uint type_id_4, uint offset_11, Ray ray_18, float t_2, float3 radiance)
-{
-    return ZeroValuefloat3();
-}
-
-float3 through_medium(Ray ray_19, float t_3, float3 radiance_1)
-{
-    if (!(HAS_MEDIA)) {
-        return radiance_1;
-    }
-    if ((ray_19.medium == 0u)) {
-        return radiance_1;
-    }
-    GpuInstance inst_9 = ConstructGpuInstance(asfloat(instances.Load4((ray_19.medium - 1u)*128+0)), asfloat(instances.Load4((ray_19.medium - 1u)*128+16)), asfloat(instances.Load4((ray_19.medium - 1u)*128+32)), asfloat(instances.Load4((ray_19.medium - 1u)*128+48)), asfloat(instances.Load4((ray_19.medium - 1u)*128+64)), asfloat(instances.Load4((ray_19.medium - 1u)*128+80)), asuint(instances.Load((ray_19.medium - 1u)*128+96)), asuint(instances.Load((ray_19.medium - 1u)*128+100)), asuint(instances.Load((ray_19.medium - 1u)*128+104)), asuint(instances.Load((ray_19.medium - 1u)*128+108)), asuint(instances.Load((ray_19.medium - 1u)*128+112)), asuint(instances.Load((ray_19.medium - 1u)*128+116)), asuint(instances.Load((ray_19.medium - 1u)*128+120)), asuint(instances.Load((ray_19.medium - 1u)*128+124)));
-    if (((inst_9.flags & FLAG_MEDIUM) == 0u)) {
-        return radiance_1;
-    }
-    const float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_19, t_3, radiance_1);
-    return _e21;
-}
-
-void rt_spawn(float3 dir_3, float3 weight)
-{
-    uint _e3 = spawn_count;
-    if ((_e3 < 1u)) {
-        spawn_dirs[min(uint(_e3), 0u)] = dir_3;
-        spawn_weights[min(uint(_e3), 0u)] = weight;
-        spawn_count = (_e3 + 1u);
-    }
-}
-
-void mirror_rays(Mirror m_4, Ray ray_20, Hit hit_7)
-{
-    const float3 _e4 = normalize_vec3f(ray_20.dir);
-    rt_spawn(reflect(_e4, hit_7.normal), m_4.tint);
-    return;
-}
-
-void dispatch_secondary_rays(uint type_id_5, uint offset_12, Ray ray_21, Hit hit_8)
-{
-    const Mirror _e3 = load_Mirror(offset_12);
-    mirror_rays(_e3, ray_21, hit_8);
-    return;
 }
 
 float3 spawn_origin_at(float3 position_5, float3 normal_6, float error_1, float3 dir_4)
@@ -1708,7 +1696,7 @@ float3 spawn_origin(Hit hit_9, float error_2, float3 dir_5)
     return _e5;
 }
 
-PathState path_step(PathState s_1, Candidate c_4)
+PathState path_step(PathState s_1, Candidate c_3)
 {
     PathState out_ = (PathState)0;
     bool spawned = (bool)0;
@@ -1716,26 +1704,26 @@ PathState path_step(PathState s_1, Candidate c_4)
     float3 weight_1 = (float3)0;
     float3 beta = (float3)0;
 
-    Ray ray_27 = s_1.ray;
+    Ray ray_25 = s_1.ray;
     out_ = s_1;
     out_.live = false;
-    if ((c_4.slot == NO_HIT)) {
+    if ((c_3.slot == NO_HIT)) {
         hit_error = 0.0;
-        const float3 _e14 = miss(ray_27);
+        const float3 _e14 = miss(ray_25);
         out_.radiance = (s_1.radiance + (s_1.beta * _e14));
         PathState _e17 = out_;
         const PathState pathstate = _e17;
         return pathstate;
     }
-    GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(c_4.slot*128+0)), asfloat(instances.Load4(c_4.slot*128+16)), asfloat(instances.Load4(c_4.slot*128+32)), asfloat(instances.Load4(c_4.slot*128+48)), asfloat(instances.Load4(c_4.slot*128+64)), asfloat(instances.Load4(c_4.slot*128+80)), asuint(instances.Load(c_4.slot*128+96)), asuint(instances.Load(c_4.slot*128+100)), asuint(instances.Load(c_4.slot*128+104)), asuint(instances.Load(c_4.slot*128+108)), asuint(instances.Load(c_4.slot*128+112)), asuint(instances.Load(c_4.slot*128+116)), asuint(instances.Load(c_4.slot*128+120)), asuint(instances.Load(c_4.slot*128+124)));
-    const Hit _e22 = finish_hit(ray_27, c_4);
+    GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_3.slot*128+0)), asfloat(instances.Load4(c_3.slot*128+16)), asfloat(instances.Load4(c_3.slot*128+32)), asfloat(instances.Load4(c_3.slot*128+48)), asfloat(instances.Load4(c_3.slot*128+64)), asfloat(instances.Load4(c_3.slot*128+80)), asuint(instances.Load(c_3.slot*128+96)), asuint(instances.Load(c_3.slot*128+100)), asuint(instances.Load(c_3.slot*128+104)), asuint(instances.Load(c_3.slot*128+108)), asuint(instances.Load(c_3.slot*128+112)), asuint(instances.Load(c_3.slot*128+116)), asuint(instances.Load(c_3.slot*128+120)), asuint(instances.Load(c_3.slot*128+124)));
+    const Hit _e22 = finish_hit(ray_25, c_3);
     float error_4 = hit_error;
     spawned = false;
     dir_6 = (0.0).xxx;
     weight_1 = (0.0).xxx;
-    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_27.depth < MAX_DEPTH))) {
+    if ((((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_25.depth < MAX_DEPTH))) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_27, _e22);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_25, _e22);
         uint _e47 = spawn_count;
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
@@ -1745,7 +1733,7 @@ PathState path_step(PathState s_1, Candidate c_4)
             weight_1 = _e60;
         }
     }
-    const float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_27, _e22, (0.0).xxx);
+    const float3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_25, _e22, (0.0).xxx);
     out_.radiance = (s_1.radiance + (s_1.beta * _e68));
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -1764,7 +1752,7 @@ PathState path_step(PathState s_1, Candidate c_4)
         const PathState pathstate_2 = _e89;
         return pathstate_2;
     }
-    if ((((ROULETTE_DEPTH > 0u) && ((ray_27.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT))) {
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_25.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT))) {
         float survive = (q_4 / ROULETTE_THROUGHPUT);
         const float _e104 = rand_next();
         if ((_e104 >= survive)) {
@@ -1781,11 +1769,41 @@ PathState path_step(PathState s_1, Candidate c_4)
     const float3 _e114 = spawn_origin(_e22, error_4, _e113);
     float3 _e116 = dir_6;
     uint _e118 = F32_INF;
-    out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_27.depth + 1u), RAY_SECONDARY, ray_27.medium);
+    out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_25.depth + 1u), RAY_SECONDARY, ray_25.medium);
     out_.live = true;
     PathState _e128 = out_;
     const PathState pathstate_4 = _e128;
     return pathstate_4;
+}
+
+bool3 is_finite_vec3f(float3 x_6)
+{
+    return ((asuint(x_6) & (2147483647u).xxx) < (2139095040u).xxx);
+}
+
+float3 finite_or_zero(float3 c_4)
+{
+    const bool3 _e3 = is_finite_vec3f(c_4);
+    return (_e3 ? c_4 : (0.0).xxx);
+}
+
+void pass_done(uint index, float3 sum, uint bad, uint pass_)
+{
+    uint _e5 = ray_count;
+    counters.InterlockedAdd(4, _e5);
+    ray_count = 0u;
+    FrameUniforms _e10 = frame;
+    float4 _e13 = float4(sum, float(_e10.samples_per_pass));
+    if ((pass_ == 0u)) {
+        accum.Store4(index*16, asuint(_e13));
+    } else {
+        float4 _e18 = asfloat(accum.Load4(index*16));
+        accum.Store4(index*16, asuint((_e18 + _e13)));
+    }
+    if ((bad > 0u)) {
+        counters.InterlockedAdd(0, bad);
+    }
+    return;
 }
 
 PathState ConstructPathState(Ray arg0, float3 arg1, float3 arg2, bool arg3) {
@@ -1797,132 +1815,68 @@ PathState ConstructPathState(Ray arg0, float3 arg1, float3 arg2, bool arg3) {
     return ret;
 }
 
-float3 trace_path(Ray camera_ray)
+void render_pixel(uint2 pixel_5)
 {
-    PathState s_2 = (PathState)0;
+    float3 sum_1 = (float3)0;
+    uint bad_1 = (uint)0;
+    uint s_2 = (uint)0;
+    PathState path = (PathState)0;
 
-    s_2 = ConstructPathState(camera_ray, (1.0).xxx, (0.0).xxx, true);
+    FrameUniforms frame_6 = frame;
+    TileParams tile_2 = tile;
+    uint index_2 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_1 = (tile_2.frame * per_pass);
+    uint count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
+    sum_1 = (0.0).xxx;
+    bad_1 = 0u;
+    s_2 = 0u;
+    const Ray _e25 = sample_camera_ray(pixel_5, first_1);
+    path = ConstructPathState(_e25, (1.0).xxx, (0.0).xxx, true);
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        PathState _e8 = s_2;
-        Ray _e10 = s_2.ray;
-        const Candidate _e12 = intersect_scene(_e10, false);
-        const PathState _e13 = path_step(_e8, _e12);
-        s_2 = _e13;
-        bool _e15 = s_2.live;
-        if (!(_e15)) {
-            float3 _e18 = s_2.radiance;
-            return _e18;
+        PathState _e33 = path;
+        Ray _e35 = path.ray;
+        const Candidate _e37 = intersect_scene(_e35, false);
+        const PathState _e38 = path_step(_e33, _e37);
+        path = _e38;
+        bool _e40 = path.live;
+        if (!(_e40)) {
+            float3 c_8 = path.radiance;
+            const bool3 _e44 = is_finite_vec3f(c_8);
+            if (all(_e44)) {
+                float3 _e46 = sum_1;
+                sum_1 = (_e46 + c_8);
+            } else {
+                float3 _e48 = sum_1;
+                const float3 _e49 = finite_or_zero(c_8);
+                sum_1 = (_e48 + _e49);
+                uint _e51 = bad_1;
+                bad_1 = (_e51 + 1u);
+            }
+            uint _e54 = s_2;
+            s_2 = (_e54 + 1u);
+            uint _e57 = s_2;
+            const uint _e58 = rem_u32_(_e57, per_pass);
+            if ((_e58 == 0u)) {
+                float3 _e61 = sum_1;
+                uint _e62 = bad_1;
+                uint _e64 = s_2;
+                const uint _e65 = div_u32_(_e64, per_pass);
+                pass_done(index_2, _e61, _e62, ((tile_2.frame + _e65) - 1u));
+                sum_1 = (0.0).xxx;
+                bad_1 = 0u;
+            }
+            uint _e72 = s_2;
+            if ((_e72 >= count_2)) {
+                break;
+            }
+            uint _e74 = s_2;
+            const Ray _e76 = sample_camera_ray(pixel_5, (first_1 + _e74));
+            path = ConstructPathState(_e76, (1.0).xxx, (0.0).xxx, true);
         }
-    }
-    return ZeroValuefloat3();
-}
-
-float3 trace(Ray camera_ray_1)
-{
-    float3 radiance_2 = (float3)0;
-    float t_4 = (float)0;
-
-    if (!(HAS_SECONDARY_RAYS)) {
-        const Candidate _e4 = intersect_scene(camera_ray_1, false);
-        radiance_2 = (0.0).xxx;
-        uint _e9 = F32_INF;
-        t_4 = asfloat(_e9);
-        if ((_e4.slot == NO_HIT)) {
-            hit_error = 0.0;
-            const float3 _e17 = miss(camera_ray_1);
-            radiance_2 = _e17;
-        } else {
-            const float3 _e18 = shade_direct(camera_ray_1, _e4);
-            radiance_2 = _e18;
-            t_4 = _e4.t;
-        }
-        float _e20 = t_4;
-        float3 _e21 = radiance_2;
-        const float3 _e22 = through_medium(camera_ray_1, _e20, _e21);
-        return _e22;
-    }
-    const float3 _e23 = trace_path(camera_ray_1);
-    return _e23;
-}
-
-bool3 is_finite_vec3f(float3 x_6)
-{
-    return ((asuint(x_6) & (2147483647u).xxx) < (2139095040u).xxx);
-}
-
-float3 finite_or_zero(float3 c_5)
-{
-    const bool3 _e3 = is_finite_vec3f(c_5);
-    return (_e3 ? c_5 : (0.0).xxx);
-}
-
-void render_pixel(uint2 pixel_4)
-{
-    float3 sum = (float3)0;
-    uint bad = (uint)0;
-    uint s_3 = (uint)0;
-    Ray ray_22 = (Ray)0;
-
-    FrameUniforms frame_5 = frame;
-    TileParams tile_2 = tile;
-    sum = (0.0).xxx;
-    bad = 0u;
-    uint end_1 = frame_5.samples_per_pass;
-    s_3 = 0u;
-    uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
-    bool loop_init_4 = true;
-    while(true) {
-        if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_4) {
-            uint _e46 = s_3;
-            s_3 = (_e46 + 1u);
-        }
-        loop_init_4 = false;
-        uint _e13 = s_3;
-        if ((_e13 >= end_1)) {
-            break;
-        }
-        uint _e18 = s_3;
-        uint sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_4, sample_4, frame_5.seed);
-        const Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        float3 _e31 = ray_22.origin;
-        const uint _e33 = medium_at(_e31, NO_HIT);
-        ray_22.medium = _e33;
-        Ray _e34 = ray_22;
-        const float3 _e35 = trace(_e34);
-        const bool3 _e36 = is_finite_vec3f(_e35);
-        if (all(_e36)) {
-            float3 _e38 = sum;
-            sum = (_e38 + _e35);
-        } else {
-            float3 _e40 = sum;
-            const float3 _e41 = finite_or_zero(_e35);
-            sum = (_e40 + _e41);
-            uint _e43 = bad;
-            bad = (_e43 + 1u);
-        }
-    }
-    uint _e50 = ray_count;
-    counters.InterlockedAdd(4, _e50);
-    float3 _e59 = sum;
-    float4 _e62 = float4(_e59, float(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if ((tile_2.frame == 0u)) {
-        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint(_e62));
-    } else {
-        float4 _e69 = asfloat(accum.Load4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16));
-        accum.Store4(((pixel_4.y * tile_2.image_size.x) + pixel_4.x)*16, asuint((_e69 + _e62)));
-    }
-    if ((_e63 > 0u)) {
-        counters.InterlockedAdd(0, _e63);
     }
     return;
 }

@@ -10,7 +10,7 @@ struct _mslBufferSizes {
     uint size7;
     uint size8;
     uint size11;
-    uint size13;
+    uint size16;
     uint size17;
     uint size18;
 };
@@ -37,9 +37,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
-};
-struct type_3 {
-    uint inner[15];
+    uint passes_per_dispatch;
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -51,7 +49,17 @@ struct Ray {
     uint medium;
     char _pad7[4];
 };
-typedef uint type_5[1];
+struct PathState {
+    Ray ray;
+    metal::float3 beta;
+    metal::packed_float3 radiance;
+    bool live;
+    char _pad4[3];
+};
+struct type_5 {
+    uint inner[15];
+};
+typedef uint type_6[1];
 struct Pinhole {
     metal::float3 position;
     metal::float3 look_at;
@@ -128,6 +136,12 @@ struct SkyGradient {
     metal::float3 horizon;
     metal::float3 ground;
 };
+struct type_16 {
+    metal::float3 inner[1];
+};
+struct Mirror {
+    metal::float3 tint;
+};
 struct BlinnPhong {
     uint texture;
     char _pad1[12];
@@ -155,9 +169,6 @@ struct PointLight {
 struct Lambert {
     metal::float3 albedo;
 };
-struct Mirror {
-    metal::float3 tint;
-};
 struct UnlitTexture {
     uint texture;
     char _pad1[12];
@@ -165,16 +176,6 @@ struct UnlitTexture {
     metal::float2 uv_scale;
     uint planar;
     char _pad4[4];
-};
-struct PathState {
-    Ray ray;
-    metal::float3 beta;
-    metal::packed_float3 radiance;
-    bool live;
-    char _pad4[3];
-};
-struct type_17 {
-    metal::float3 inner[1];
 };
 typedef metal::atomic_uint type_20[1];
 constant uint WORKGROUP_WIDTH = 8u;
@@ -198,8 +199,9 @@ constant float POINT_ERROR = 0.0000019073486;
 constant float GAMMA_1_ = 0.00000005960465;
 constant float GAMMA_6_ = 0.0000003576281;
 constant float GAMMA_4_ = 0.00000023841864;
-constant bool HAS_SECONDARY_RAYS = true;
 constant bool HAS_BACKGROUND = true;
+constant uint FLAG_SECONDARY_RAYS = 2u;
+constant uint MAX_DEPTH = 3u;
 constant uint TEXTURE_WRAP_MASK = 3u;
 constant uint TEXTURE_WRAP_V_SHIFT = 2u;
 constant uint TEXTURE_NEAREST = 16u;
@@ -215,9 +217,6 @@ constant uint SHADOW_UNOCCLUDED = 1u;
 constant uint SHADOW_ABOVE = 2u;
 constant float LIGHT_ERROR = 0.00000047683716;
 constant uint RAY_SHADOW = 2u;
-constant uint FLAG_MEDIUM = 4u;
-constant uint FLAG_SECONDARY_RAYS = 2u;
-constant uint MAX_DEPTH = 3u;
 constant uint ROULETTE_DEPTH = 2u;
 constant float ROULETTE_THROUGHPUT = 0.5;
 constant uint RAY_SECONDARY = 1u;
@@ -309,7 +308,7 @@ void rng_resume(
     uint sample,
     uint seed,
     uint state,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state
 ) {
     scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)] = sample;
@@ -325,7 +324,7 @@ void rng_seed(
     metal::uint2 pixel_1,
     uint sample_1,
     uint seed_1,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state
 ) {
     rng_resume(pixel_1, sample_1, seed_1, 0u, scratch, rng_state);
@@ -334,7 +333,7 @@ void rng_seed(
 
 Pinhole load_Pinhole(
     uint offset,
-    device type_5 const& params,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset + 0u];
@@ -411,7 +410,7 @@ uint sobol_second_reversed(
 }
 
 float rand_next(
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state
 ) {
     uint x_2 = {};
@@ -434,7 +433,7 @@ float rand_next(
 }
 
 metal::float2 rand2_next(
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state
 ) {
     float _e0 = rand_next(scratch, rng_state);
@@ -454,7 +453,7 @@ Ray pinhole_ray(
     uint sample_2,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -486,9 +485,9 @@ Ray dispatch_ray_generation(
     uint sample_3,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -521,8 +520,8 @@ metal::float3 safe_inverse(
     metal::float3 d
 ) {
     metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_4 * tiny, metal::abs(d) < tiny);
+    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_3 * tiny, metal::abs(d) < tiny);
     return metal::float3(1.0) / dd;
 }
 
@@ -558,23 +557,23 @@ metal::float3 hit_triangle(
     metal::float4 _e18 = triangles[(slot * 3u) + 1u];
     metal::float3 b_6 = _e18.xyz - r_1.origin;
     metal::float4 _e28 = triangles[(slot * 3u) + 2u];
-    metal::float3 c_6 = _e28.xyz - r_1.origin;
+    metal::float3 c_5 = _e28.xyz - r_1.origin;
     float ax = a_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_5[metal::min(r_1.kz, 2u)]);
     float ay = a_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_5[metal::min(r_1.kz, 2u)]);
     float bx = b_6[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_6[metal::min(r_1.kz, 2u)]);
     float by = b_6[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_6[metal::min(r_1.kz, 2u)]);
-    float cx = c_6[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_6[metal::min(r_1.kz, 2u)]);
-    float cy = c_6[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_6[metal::min(r_1.kz, 2u)]);
+    float cx = c_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_5[metal::min(r_1.kz, 2u)]);
+    float cy = c_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_5[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
     float v_2 = (ax * cy) - (ay * cx);
     float w = (bx * ay) - (by * ax);
     bool outside = (((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0));
     float det = (u + v_2) + w;
     float rcp = 1.0 / det;
-    float t_5 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_6[metal::min(r_1.kz, 2u)]))) * rcp;
-    bool hit_10 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_5 >= tmin)) && (t_5 <= tmax_1);
+    float t_2 = (((u * (r_1.shear[2] * a_5[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_6[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
+    bool hit_10 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1);
     uint _e173 = F32_INF;
-    return hit_10 ? metal::float3(t_5, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
+    return hit_10 ? metal::float3(t_2, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
 }
 
 bool accept(
@@ -725,10 +724,10 @@ Candidate intersect_mesh(
                     metal::float4 _e58 = triangles[(prim * 3u) + 1u];
                     uint tag = as_type<uint>(_e58.w);
                     uint owner = (tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1;
-                    Candidate c_7 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e73 = accept(inst_2, world_ray, c_7);
+                    Candidate c_6 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e73 = accept(inst_2, world_ray, c_6);
                     if (_e73) {
-                        best = c_7;
+                        best = c_6;
                         if (shadow) {
                             Candidate _e74 = best;
                             return _e74;
@@ -866,9 +865,9 @@ metal::float3 decode_octahedral(
     float _e14 = n_1.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n_1;
-        metal::float2 s_5 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float2 s_4 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
         metal::float3 _e29 = n_1;
-        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_5;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_4;
         float _e37 = n_1.z;
         n_1 = metal::float3(xy.x, xy.y, _e37);
     }
@@ -951,7 +950,7 @@ uint medium_at(
     metal::float3 p_4,
     uint exclude,
     constant FrameUniforms& frame,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1010,6 +1009,37 @@ uint medium_at(
     return _e62;
 }
 
+Ray sample_camera_ray(
+    metal::uint2 pixel_4,
+    uint sample_4,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread type_5& scratch,
+    thread uint& rng_state,
+    device type_6 const& params,
+    thread uint& F32_INF,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
+    thread float& hit_error,
+    device type_15 const& attributes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Ray ray_7 = {};
+    FrameUniforms frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
+    Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_7.origin;
+    uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+    ray_7.medium = _e17;
+    Ray _e18 = ray_7;
+    return _e18;
+}
+
 metal::float3 node_frame_hi(
     GpuNode header
 ) {
@@ -1018,7 +1048,7 @@ metal::float3 node_frame_hi(
 }
 
 Candidate intersect_scene(
-    Ray ray_7,
+    Ray ray_8,
     bool shadow_2,
     constant FrameUniforms& frame,
     thread uint& F32_INF,
@@ -1036,21 +1066,21 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_7.tmax);
+    Candidate _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
-    FrameUniforms frame_2 = frame;
-    if (frame_2.instance_count == 0u) {
+    FrameUniforms frame_3 = frame;
+    if (frame_3.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_7.dir);
-    uint base_2 = frame_2.tlas_root;
+    metal::float3 _e16 = safe_inverse(ray_8.dir);
+    uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = nodes[base_2];
     metal::float3 origin_5 = header_2.min;
     metal::float3 scale_3 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
@@ -1068,7 +1098,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_7, _e55, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_8, _e55, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1080,7 +1110,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_8 = nodes[base_2 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_7, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_8, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1129,7 +1159,7 @@ Candidate intersect_scene(
 
 SkyGradient load_SkyGradient(
     uint offset_2,
-    device type_5 const& params,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_2 + 0u];
@@ -1146,9 +1176,9 @@ SkyGradient load_SkyGradient(
 
 metal::float3 sky_gradient(
     SkyGradient b_4,
-    Ray ray_8
+    Ray ray_9
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_8.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_9.dir);
     float y = _e3.y;
     if (y < 0.0) {
         return metal::mix(b_4.horizon, b_4.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
@@ -1159,56 +1189,111 @@ metal::float3 sky_gradient(
 metal::float3 dispatch_miss(
     uint type_id_1,
     uint offset_3,
-    Ray ray_9,
-    device type_5 const& params,
+    Ray ray_10,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_3, params, _buffer_sizes);
-    metal::float3 _e3 = sky_gradient(_e2, ray_9);
+    metal::float3 _e3 = sky_gradient(_e2, ray_10);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_10,
+    Ray ray_11,
     constant FrameUniforms& frame,
-    device type_5 const& params,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     if (!(HAS_BACKGROUND)) {
         return metal::float3(0.0);
     }
-    FrameUniforms frame_3 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_10, params, _buffer_sizes);
+    FrameUniforms frame_4 = frame;
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11, params, _buffer_sizes);
     return _e9;
 }
 
-BlinnPhong load_BlinnPhong(
+Mirror load_Mirror(
     uint offset_4,
-    device type_5 const& params,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e5 = params[offset_4 + 0u];
-    uint _e10 = params[offset_4 + 4u];
-    uint _e16 = params[offset_4 + 5u];
-    uint _e22 = params[offset_4 + 6u];
-    uint _e29 = params[offset_4 + 8u];
-    uint _e35 = params[offset_4 + 9u];
-    uint _e41 = params[offset_4 + 10u];
-    uint _e48 = params[offset_4 + 11u];
-    uint _e54 = params[offset_4 + 12u];
-    uint _e60 = params[offset_4 + 13u];
-    uint _e66 = params[offset_4 + 14u];
-    uint _e73 = params[offset_4 + 16u];
-    uint _e79 = params[offset_4 + 17u];
+    uint _e11 = params[offset_4 + 1u];
+    uint _e17 = params[offset_4 + 2u];
+    return Mirror {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17))};
+}
+
+void rt_spawn(
+    metal::float3 dir,
+    metal::float3 weight,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count
+) {
+    uint _e3 = spawn_count;
+    if (_e3 < 1u) {
+        spawn_dirs.inner[_e3] = dir;
+        spawn_weights.inner[_e3] = weight;
+        spawn_count = _e3 + 1u;
+    }
+}
+
+void mirror_rays(
+    Mirror m,
+    Ray ray_12,
+    Hit hit_1,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count
+) {
+    metal::float3 _e4 = normalize_vec3f(ray_12.dir);
+    rt_spawn(metal::reflect(_e4, hit_1.normal), m.tint, spawn_dirs, spawn_weights, spawn_count);
+    return;
+}
+
+void dispatch_secondary_rays(
+    uint type_id_2,
+    uint offset_5,
+    Ray ray_13,
+    Hit hit_2,
+    device type_6 const& params,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
+    thread uint& spawn_count,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Mirror _e3 = load_Mirror(offset_5, params, _buffer_sizes);
+    mirror_rays(_e3, ray_13, hit_2, spawn_dirs, spawn_weights, spawn_count);
+    return;
+}
+
+BlinnPhong load_BlinnPhong(
+    uint offset_6,
+    device type_6 const& params,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = params[offset_6 + 0u];
+    uint _e10 = params[offset_6 + 4u];
+    uint _e16 = params[offset_6 + 5u];
+    uint _e22 = params[offset_6 + 6u];
+    uint _e29 = params[offset_6 + 8u];
+    uint _e35 = params[offset_6 + 9u];
+    uint _e41 = params[offset_6 + 10u];
+    uint _e48 = params[offset_6 + 11u];
+    uint _e54 = params[offset_6 + 12u];
+    uint _e60 = params[offset_6 + 13u];
+    uint _e66 = params[offset_6 + 14u];
+    uint _e73 = params[offset_6 + 16u];
+    uint _e79 = params[offset_6 + 17u];
     return BlinnPhong {_e5, {}, metal::float3(as_type<float>(_e10), as_type<float>(_e16), as_type<float>(_e22)), metal::float3(as_type<float>(_e29), as_type<float>(_e35), as_type<float>(_e41)), as_type<float>(_e48), metal::float3(as_type<float>(_e54), as_type<float>(_e60), as_type<float>(_e66)), metal::float2(as_type<float>(_e73), as_type<float>(_e79))};
 }
 
 metal::float3 shading_normal(
-    Ray ray_11,
-    Hit hit_1
+    Ray ray_14,
+    Hit hit_3
 ) {
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_11.dir, hit_1.geometric_normal);
-    return metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
+    metal::float3 ng = metal::faceforward(hit_3.geometric_normal, ray_14.dir, hit_3.geometric_normal);
+    return metal::faceforward(hit_3.normal, -(ng), hit_3.normal);
 }
 
 int naga_f2i32(float value) {
@@ -1261,29 +1346,29 @@ metal::float4 texel_at(
     uint t,
     uint xi,
     uint yi,
-    device type_5 const& params,
-    device type_5 const& texels,
+    device type_6 const& params,
+    device type_6 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint base_3 = params[t];
     uint _e10 = params[t + 1u];
-    uint index = (yi * metal::max(_e10, 1u)) + xi;
+    uint index_1 = (yi * metal::max(_e10, 1u)) + xi;
     uint format = params[t + 3u];
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        uint _e25 = texels[base_3 + index];
-        metal::float4 c_8 = metal::unpack_unorm4x8_to_float(_e25);
-        float _e28 = srgb_channel(c_8.x);
-        float _e30 = srgb_channel(c_8.y);
-        float _e32 = srgb_channel(c_8.z);
-        return metal::float4(_e28, _e30, _e32, c_8.w);
+        uint _e25 = texels[base_3 + index_1];
+        metal::float4 c_7 = metal::unpack_unorm4x8_to_float(_e25);
+        float _e28 = srgb_channel(c_7.x);
+        float _e30 = srgb_channel(c_7.y);
+        float _e32 = srgb_channel(c_7.z);
+        return metal::float4(_e28, _e30, _e32, c_7.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
-        uint _e40 = texels[base_3 + index];
+        uint _e40 = texels[base_3 + index_1];
         return metal::unpack_unorm4x8_to_float(_e40);
     }
-    uint _e47 = texels[base_3 + (index * RGBA16F_TEXEL_WORDS)];
+    uint _e47 = texels[base_3 + (index_1 * RGBA16F_TEXEL_WORDS)];
     metal::float2 rg = float2(as_type<half2>(_e47));
-    uint _e56 = texels[(base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
+    uint _e56 = texels[(base_3 + (index_1 * RGBA16F_TEXEL_WORDS)) + 1u];
     metal::float2 ba = float2(as_type<half2>(_e56));
     return metal::float4(rg, ba);
 }
@@ -1291,8 +1376,8 @@ metal::float4 texel_at(
 metal::float4 sample_texture(
     uint t_1,
     metal::float2 uv,
-    device type_5 const& params,
-    device type_5 const& texels,
+    device type_6 const& params,
+    device type_6 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e6 = params[t_1 + 1u];
@@ -1333,32 +1418,32 @@ uint light_count_query(
 }
 
 PointLight load_PointLight(
-    uint offset_5,
-    device type_5 const& params,
+    uint offset_7,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e5 = params[offset_5 + 0u];
-    uint _e11 = params[offset_5 + 1u];
-    uint _e17 = params[offset_5 + 2u];
-    uint _e24 = params[offset_5 + 4u];
-    uint _e30 = params[offset_5 + 5u];
-    uint _e36 = params[offset_5 + 6u];
-    uint _e43 = params[offset_5 + 7u];
-    uint _e49 = params[offset_5 + 8u];
-    uint _e55 = params[offset_5 + 9u];
+    uint _e5 = params[offset_7 + 0u];
+    uint _e11 = params[offset_7 + 1u];
+    uint _e17 = params[offset_7 + 2u];
+    uint _e24 = params[offset_7 + 4u];
+    uint _e30 = params[offset_7 + 5u];
+    uint _e36 = params[offset_7 + 6u];
+    uint _e43 = params[offset_7 + 7u];
+    uint _e49 = params[offset_7 + 8u];
+    uint _e55 = params[offset_7 + 9u];
     return PointLight {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17)), metal::float3(as_type<float>(_e24), as_type<float>(_e30), as_type<float>(_e36)), as_type<float>(_e43), as_type<float>(_e49), as_type<float>(_e55)};
 }
 
 float shadow_preset(
     metal::float3 normal,
-    metal::float3 dir,
-    thread type_3& scratch
+    metal::float3 dir_1,
+    thread type_5& scratch
 ) {
     uint mode_1 = scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 14u)];
     if (mode_1 == SHADOW_UNOCCLUDED) {
         return 1.0;
     }
-    if ((mode_1 == SHADOW_ABOVE) && !((metal::dot(dir, normal) > 0.0))) {
+    if ((mode_1 == SHADOW_ABOVE) && !((metal::dot(dir_1, normal) > 0.0))) {
         return 0.0;
     }
     return -1.0;
@@ -1382,15 +1467,15 @@ metal::float3 offset_origin(
     float error
 ) {
     float d_4 = (2.0 * error) * ((metal::abs(n_4.x) + metal::abs(n_4.y)) + metal::abs(n_4.z));
-    metal::float3 offset_13 = n_4 * metal::float3(d_4);
-    metal::float3 _e17 = step_toward(p_5 + offset_13, offset_13);
+    metal::float3 offset_12 = n_4 * metal::float3(d_4);
+    metal::float3 _e17 = step_toward(p_5 + offset_12, offset_12);
     return _e17;
 }
 
 Ray shadow_ray(
     metal::float3 position,
     metal::float3 normal_1,
-    metal::float3 dir_1,
+    metal::float3 dir_2,
     float dist,
     thread uint& F32_INF,
     thread float& hit_error
@@ -1399,7 +1484,7 @@ Ray shadow_ray(
     float tmax_4 = {};
     n_5 = normal_1;
     metal::float3 _e5 = n_5;
-    if (metal::dot(dir_1, _e5) < 0.0) {
+    if (metal::dot(dir_2, _e5) < 0.0) {
         metal::float3 _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1412,23 +1497,23 @@ Ray shadow_ray(
     tmax_4 = as_type<float>(_e25);
     uint _e29 = F32_INF;
     if (dist < as_type<float>(_e29)) {
-        metal::float3 light = position + (dir_1 * metal::float3(dist));
-        float dd_1 = metal::dot(dir_1, dir_1);
-        float along_1 = metal::dot(light - _e23, dir_1) / dd_1;
-        metal::float3 l_1 = metal::abs(position) + metal::abs(dir_1 * metal::float3(dist));
+        metal::float3 light = position + (dir_2 * metal::float3(dist));
+        float dd_1 = metal::dot(dir_2, dir_2);
+        float along_1 = metal::dot(light - _e23, dir_2) / dd_1;
+        metal::float3 l_1 = metal::abs(position) + metal::abs(dir_2 * metal::float3(dist));
         tmax_4 = (along_1 * (1.0 - 0.00001)) - ((LIGHT_ERROR * metal::max(metal::max(l_1.x, l_1.y), l_1.z)) / metal::sqrt(dd_1));
     }
     float _e59 = tmax_4;
-    return Ray {_e23, 0.0, dir_1, _e59, 0u, RAY_SHADOW, 0u};
+    return Ray {_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u};
 }
 
 float shadow_query(
     metal::float3 position_1,
     metal::float3 normal_2,
-    metal::float3 dir_2,
+    metal::float3 dir_3,
     float dist_1,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1438,11 +1523,11 @@ float shadow_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = shadow_preset(normal_2, dir_2, scratch);
+    float _e4 = shadow_preset(normal_2, dir_3, scratch);
     if (_e4 >= 0.0) {
         return _e4;
     }
-    Ray _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1, F32_INF, hit_error);
+    Ray _e7 = shadow_ray(position_1, normal_2, dir_3, dist_1, F32_INF, hit_error);
     Candidate _e9 = intersect_scene(_e7, true, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
     return (_e9.slot != NO_HIT) ? 0.0 : 1.0;
 }
@@ -1452,7 +1537,7 @@ LightSample point_light(
     metal::float3 position_2,
     metal::float3 normal_3,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1477,13 +1562,13 @@ LightSample point_light(
 }
 
 LightSample dispatch_light(
-    uint type_id_2,
-    uint offset_6,
+    uint type_id_3,
+    uint offset_8,
     metal::float3 position_3,
     metal::float3 normal_4,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
-    device type_5 const& params,
+    thread type_5& scratch,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1493,7 +1578,7 @@ LightSample dispatch_light(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    PointLight _e3 = load_PointLight(offset_6, params, _buffer_sizes);
+    PointLight _e3 = load_PointLight(offset_8, params, _buffer_sizes);
     LightSample _e4 = point_light(_e3, position_3, normal_4, frame, scratch, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     return _e4;
 }
@@ -1503,8 +1588,8 @@ LightSample sample_light_query(
     metal::float3 position_4,
     metal::float3 normal_5,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
-    device type_5 const& params,
+    thread type_5& scratch,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1514,11 +1599,11 @@ LightSample sample_light_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    FrameUniforms frame_4 = frame;
-    if (i_2 >= frame_4.light_count) {
+    FrameUniforms frame_5 = frame;
+    if (i_2 >= frame_5.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry = frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE);
+    uint entry = frame_5.light_table + (i_2 * LIGHT_ENTRY_STRIDE);
     uint _e22 = params[entry];
     uint _e27 = params[entry + 1u];
     LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
@@ -1526,12 +1611,12 @@ LightSample sample_light_query(
 }
 
 metal::float3 blinn_phong_shade(
-    BlinnPhong m,
-    Ray ray_12,
-    Hit hit_2,
+    BlinnPhong m_1,
+    Ray ray_15,
+    Hit hit_4,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
-    device type_5 const& params,
+    thread type_5& scratch,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1539,19 +1624,19 @@ metal::float3 blinn_phong_shade(
     thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
-    device type_5 const& texels,
+    device type_6 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 color = {};
     uint i_3 = {};
-    metal::float3 _e3 = shading_normal(ray_12, hit_2);
-    metal::float3 _e5 = normalize_vec3f(ray_12.dir);
+    metal::float3 _e3 = shading_normal(ray_15, hit_4);
+    metal::float3 _e5 = normalize_vec3f(ray_15.dir);
     metal::float3 v_3 = -(_e5);
-    metal::float4 _e12 = sample_texture(m.texture, hit_2.uv * m.uv_scale, params, texels, _buffer_sizes);
-    metal::float3 kd = m.diffuse * _e12.xyz;
-    float s_6 = metal::max(m.shininess, 0.0);
-    float norm = (s_6 + 8.0) * (INV_PI / 8.0);
-    color = m.ambient * kd;
+    metal::float4 _e12 = sample_texture(m_1.texture, hit_4.uv * m_1.uv_scale, params, texels, _buffer_sizes);
+    metal::float3 kd = m_1.diffuse * _e12.xyz;
+    float s_5 = metal::max(m_1.shininess, 0.0);
+    float norm = (s_5 + 8.0) * (INV_PI / 8.0);
+    color = m_1.ambient * kd;
     uint _e28 = light_count_query(frame);
     i_3 = 0u;
     uint2 loop_bound_4 = uint2(4294967295u);
@@ -1569,35 +1654,35 @@ metal::float3 blinn_phong_shade(
             break;
         }
         uint _e32 = i_3;
-        LightSample _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+        LightSample _e35 = sample_light_query(_e32, hit_4.position, hit_4.geometric_normal, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
         float ndl = metal::max(metal::dot(_e3, _e35.dir), 0.0);
         metal::float3 _e42 = normalize_vec3f(_e35.dir + v_3);
-        float highlight = metal::pow(metal::max(metal::dot(_e3, _e42), 0.0), s_6) * norm;
+        float highlight = metal::pow(metal::max(metal::dot(_e3, _e42), 0.0), s_5) * norm;
         metal::float3 _e48 = color;
-        color = _e48 + ((_e35.radiance * metal::float3(ndl)) * ((kd * metal::float3(INV_PI)) + (m.specular * metal::float3(highlight))));
+        color = _e48 + ((_e35.radiance * metal::float3(ndl)) * ((kd * metal::float3(INV_PI)) + (m_1.specular * metal::float3(highlight))));
     }
     metal::float3 _e64 = color;
     return _e64;
 }
 
 Lambert load_Lambert(
-    uint offset_7,
-    device type_5 const& params,
+    uint offset_9,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e5 = params[offset_7 + 0u];
-    uint _e11 = params[offset_7 + 1u];
-    uint _e17 = params[offset_7 + 2u];
+    uint _e5 = params[offset_9 + 0u];
+    uint _e11 = params[offset_9 + 1u];
+    uint _e17 = params[offset_9 + 2u];
     return Lambert {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17))};
 }
 
 metal::float3 lambert_shade(
-    Lambert m_1,
-    Ray ray_13,
-    Hit hit_3,
+    Lambert m_2,
+    Ray ray_16,
+    Hit hit_5,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
-    device type_5 const& params,
+    thread type_5& scratch,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1609,7 +1694,7 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color_1 = {};
     uint i_4 = {};
-    metal::float3 _e3 = shading_normal(ray_13, hit_3);
+    metal::float3 _e3 = shading_normal(ray_16, hit_5);
     color_1 = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
     i_4 = 0u;
@@ -1628,76 +1713,65 @@ metal::float3 lambert_shade(
             break;
         }
         uint _e12 = i_4;
-        LightSample _e15 = sample_light_query(_e12, hit_3.position, hit_3.geometric_normal, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+        LightSample _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
         metal::float3 _e16 = color_1;
-        color_1 = _e16 + (((m_1.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
+        color_1 = _e16 + (((m_2.albedo * metal::float3(INV_PI)) * _e15.radiance) * metal::float3(metal::max(metal::dot(_e3, _e15.dir), 0.0)));
     }
     metal::float3 _e33 = color_1;
     return _e33;
 }
 
-Mirror load_Mirror(
-    uint offset_8,
-    device type_5 const& params,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint _e5 = params[offset_8 + 0u];
-    uint _e11 = params[offset_8 + 1u];
-    uint _e17 = params[offset_8 + 2u];
-    return Mirror {metal::float3(as_type<float>(_e5), as_type<float>(_e11), as_type<float>(_e17))};
-}
-
 metal::float3 mirror_shade(
-    Mirror m_2,
-    Ray ray_14,
-    Hit hit_4,
+    Mirror m_3,
+    Ray ray_17,
+    Hit hit_6,
     metal::float3 secondary
 ) {
     return secondary;
 }
 
 UnlitTexture load_UnlitTexture(
-    uint offset_9,
-    device type_5 const& params,
+    uint offset_10,
+    device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e5 = params[offset_9 + 0u];
-    uint _e10 = params[offset_9 + 4u];
-    uint _e16 = params[offset_9 + 5u];
-    uint _e22 = params[offset_9 + 6u];
-    uint _e29 = params[offset_9 + 8u];
-    uint _e35 = params[offset_9 + 9u];
-    uint _e42 = params[offset_9 + 10u];
+    uint _e5 = params[offset_10 + 0u];
+    uint _e10 = params[offset_10 + 4u];
+    uint _e16 = params[offset_10 + 5u];
+    uint _e22 = params[offset_10 + 6u];
+    uint _e29 = params[offset_10 + 8u];
+    uint _e35 = params[offset_10 + 9u];
+    uint _e42 = params[offset_10 + 10u];
     return UnlitTexture {_e5, {}, metal::float3(as_type<float>(_e10), as_type<float>(_e16), as_type<float>(_e22)), metal::float2(as_type<float>(_e29), as_type<float>(_e35)), _e42};
 }
 
 metal::float3 unlit_texture_shade(
-    UnlitTexture m_3,
-    Ray ray_15,
-    Hit hit_5,
-    device type_5 const& params,
-    device type_5 const& texels,
+    UnlitTexture m_4,
+    Ray ray_18,
+    Hit hit_7,
+    device type_6 const& params,
+    device type_6 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float2 uv_1 = {};
-    uv_1 = hit_5.uv;
-    if (m_3.planar == 1u) {
-        uv_1 = metal::float2(hit_5.position[0], -(hit_5.position[1]));
+    uv_1 = hit_7.uv;
+    if (m_4.planar == 1u) {
+        uv_1 = metal::float2(hit_7.position[0], -(hit_7.position[1]));
     }
     metal::float2 _e14 = uv_1;
-    metal::float4 _e17 = sample_texture(m_3.texture, _e14 * m_3.uv_scale, params, texels, _buffer_sizes);
-    return _e17.xyz * m_3.tint;
+    metal::float4 _e17 = sample_texture(m_4.texture, _e14 * m_4.uv_scale, params, texels, _buffer_sizes);
+    return _e17.xyz * m_4.tint;
 }
 
 metal::float3 dispatch_closest_hit(
-    uint type_id_3,
-    uint offset_10,
-    Ray ray_16,
-    Hit hit_6,
+    uint type_id_4,
+    uint offset_11,
+    Ray ray_19,
+    Hit hit_8,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
-    device type_5 const& params,
+    thread type_5& scratch,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1705,28 +1779,28 @@ metal::float3 dispatch_closest_hit(
     thread type_13& traversal_stack,
     thread float& hit_error,
     thread uint& ray_count,
-    device type_5 const& texels,
+    device type_6 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    switch(type_id_3) {
+    switch(type_id_4) {
         case 0u: {
-            BlinnPhong _e5 = load_BlinnPhong(offset_10, params, _buffer_sizes);
-            metal::float3 _e6 = blinn_phong_shade(_e5, ray_16, hit_6, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
+            BlinnPhong _e5 = load_BlinnPhong(offset_11, params, _buffer_sizes);
+            metal::float3 _e6 = blinn_phong_shade(_e5, ray_19, hit_8, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
             return _e6;
         }
         case 1u: {
-            Lambert _e7 = load_Lambert(offset_10, params, _buffer_sizes);
-            metal::float3 _e8 = lambert_shade(_e7, ray_16, hit_6, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+            Lambert _e7 = load_Lambert(offset_11, params, _buffer_sizes);
+            metal::float3 _e8 = lambert_shade(_e7, ray_19, hit_8, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
             return _e8;
         }
         case 2u: {
-            Mirror _e9 = load_Mirror(offset_10, params, _buffer_sizes);
-            metal::float3 _e10 = mirror_shade(_e9, ray_16, hit_6, secondary_1);
+            Mirror _e9 = load_Mirror(offset_11, params, _buffer_sizes);
+            metal::float3 _e10 = mirror_shade(_e9, ray_19, hit_8, secondary_1);
             return _e10;
         }
         case 3u: {
-            UnlitTexture _e11 = load_UnlitTexture(offset_10, params, _buffer_sizes);
-            metal::float3 _e12 = unlit_texture_shade(_e11, ray_16, hit_6, params, texels, _buffer_sizes);
+            UnlitTexture _e11 = load_UnlitTexture(offset_11, params, _buffer_sizes);
+            metal::float3 _e12 = unlit_texture_shade(_e11, ray_19, hit_8, params, texels, _buffer_sizes);
             return _e12;
         }
         default: {
@@ -1734,104 +1808,6 @@ metal::float3 dispatch_closest_hit(
         }
     }
     return metal::float3 {};
-}
-
-metal::float3 shade_direct(
-    Ray ray_17,
-    Candidate c_3,
-    constant FrameUniforms& frame,
-    thread type_3& scratch,
-    device type_5 const& params,
-    thread uint& F32_INF,
-    device type_9 const& instances,
-    device type_10 const& nodes,
-    device type_11 const& triangles,
-    thread type_13& traversal_stack,
-    thread float& hit_error,
-    device type_15 const& attributes,
-    thread uint& ray_count,
-    device type_5 const& texels,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    GpuInstance inst_8 = instances[c_3.slot];
-    Hit _e6 = finish_hit(ray_17, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
-    return _e11;
-}
-
-metal::float3 dispatch_medium(
-    uint type_id_4,
-    uint offset_11,
-    Ray ray_18,
-    float t_2,
-    metal::float3 radiance
-) {
-    return metal::float3 {};
-}
-
-metal::float3 through_medium(
-    Ray ray_19,
-    float t_3,
-    metal::float3 radiance_1,
-    device type_9 const& instances,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    if (!(HAS_MEDIA)) {
-        return radiance_1;
-    }
-    if (ray_19.medium == 0u) {
-        return radiance_1;
-    }
-    GpuInstance inst_9 = instances[ray_19.medium - 1u];
-    if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
-        return radiance_1;
-    }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_19, t_3, radiance_1);
-    return _e21;
-}
-
-void rt_spawn(
-    metal::float3 dir_3,
-    metal::float3 weight,
-    thread type_17& spawn_dirs,
-    thread type_17& spawn_weights,
-    thread uint& spawn_count
-) {
-    uint _e3 = spawn_count;
-    if (_e3 < 1u) {
-        spawn_dirs.inner[_e3] = dir_3;
-        spawn_weights.inner[_e3] = weight;
-        spawn_count = _e3 + 1u;
-    }
-}
-
-void mirror_rays(
-    Mirror m_4,
-    Ray ray_20,
-    Hit hit_7,
-    thread type_17& spawn_dirs,
-    thread type_17& spawn_weights,
-    thread uint& spawn_count
-) {
-    metal::float3 _e4 = normalize_vec3f(ray_20.dir);
-    rt_spawn(metal::reflect(_e4, hit_7.normal), m_4.tint, spawn_dirs, spawn_weights, spawn_count);
-    return;
-}
-
-void dispatch_secondary_rays(
-    uint type_id_5,
-    uint offset_12,
-    Ray ray_21,
-    Hit hit_8,
-    device type_5 const& params,
-    thread type_17& spawn_dirs,
-    thread type_17& spawn_weights,
-    thread uint& spawn_count,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    Mirror _e3 = load_Mirror(offset_12, params, _buffer_sizes);
-    mirror_rays(_e3, ray_21, hit_8, spawn_dirs, spawn_weights, spawn_count);
-    return;
 }
 
 metal::float3 spawn_origin_at(
@@ -1863,11 +1839,11 @@ metal::float3 spawn_origin(
 
 PathState path_step(
     PathState s_1,
-    Candidate c_4,
+    Candidate c_3,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -1876,10 +1852,10 @@ PathState path_step(
     thread float& hit_error,
     device type_15 const& attributes,
     thread uint& ray_count,
-    device type_5 const& texels,
-    thread type_17& spawn_dirs,
-    thread type_17& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count,
+    device type_6 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PathState out = {};
@@ -1887,25 +1863,25 @@ PathState path_step(
     metal::float3 dir_6 = {};
     metal::float3 weight_1 = {};
     metal::float3 beta = {};
-    Ray ray_23 = s_1.ray;
+    Ray ray_20 = s_1.ray;
     out = s_1;
     out.live = false;
-    if (c_4.slot == NO_HIT) {
+    if (c_3.slot == NO_HIT) {
         hit_error = 0.0;
-        metal::float3 _e14 = miss(ray_23, frame, params, _buffer_sizes);
+        metal::float3 _e14 = miss(ray_20, frame, params, _buffer_sizes);
         out.radiance = s_1.radiance + (s_1.beta * _e14);
         PathState _e17 = out;
         return _e17;
     }
-    GpuInstance inst_10 = instances[c_4.slot];
-    Hit _e22 = finish_hit(ray_23, c_4, instances, triangles, hit_error, attributes, _buffer_sizes);
+    GpuInstance inst_8 = instances[c_3.slot];
+    Hit _e22 = finish_hit(ray_20, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
     float error_4 = hit_error;
     spawned = false;
     dir_6 = metal::float3(0.0);
     weight_1 = metal::float3(0.0);
-    if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_1.ray.depth < MAX_DEPTH)) {
+    if (((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_1.ray.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_23, _e22, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_20, _e22, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         uint _e47 = spawn_count;
         if (metal::min(_e47, 1u) > 0u) {
             spawned = true;
@@ -1915,7 +1891,7 @@ PathState path_step(
             weight_1 = _e60;
         }
     }
-    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_23, _e22, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
+    metal::float3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e22, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
     out.radiance = s_1.radiance + (s_1.beta * _e68);
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -1954,91 +1930,6 @@ PathState path_step(
     return _e128;
 }
 
-metal::float3 trace_path(
-    Ray camera_ray,
-    constant FrameUniforms& frame,
-    thread type_3& scratch,
-    thread uint& rng_state,
-    device type_5 const& params,
-    thread uint& F32_INF,
-    device type_9 const& instances,
-    device type_10 const& nodes,
-    device type_11 const& triangles,
-    thread type_13& traversal_stack,
-    thread float& hit_error,
-    device type_15 const& attributes,
-    thread uint& ray_count,
-    device type_5 const& texels,
-    thread type_17& spawn_dirs,
-    thread type_17& spawn_weights,
-    thread uint& spawn_count,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    PathState s_2 = {};
-    s_2 = PathState {camera_ray, metal::float3(1.0), metal::float3(0.0), true};
-    uint2 loop_bound_6 = uint2(4294967295u);
-    while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        PathState _e8 = s_2;
-        Ray _e10 = s_2.ray;
-        Candidate _e12 = intersect_scene(_e10, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        PathState _e13 = path_step(_e8, _e12, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-        s_2 = _e13;
-        bool _e15 = s_2.live;
-        if (!(_e15)) {
-            metal::float3 _e18 = s_2.radiance;
-            return _e18;
-        }
-    }
-    return metal::float3 {};
-}
-
-metal::float3 trace(
-    Ray camera_ray_1,
-    constant FrameUniforms& frame,
-    thread type_3& scratch,
-    thread uint& rng_state,
-    device type_5 const& params,
-    thread uint& F32_INF,
-    device type_9 const& instances,
-    device type_10 const& nodes,
-    device type_11 const& triangles,
-    thread type_13& traversal_stack,
-    thread float& hit_error,
-    device type_15 const& attributes,
-    thread uint& ray_count,
-    device type_5 const& texels,
-    thread type_17& spawn_dirs,
-    thread type_17& spawn_weights,
-    thread uint& spawn_count,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    metal::float3 radiance_2 = {};
-    float t_4 = {};
-    if (!(HAS_SECONDARY_RAYS)) {
-        Candidate _e4 = intersect_scene(camera_ray_1, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        radiance_2 = metal::float3(0.0);
-        uint _e9 = F32_INF;
-        t_4 = as_type<float>(_e9);
-        if (_e4.slot == NO_HIT) {
-            hit_error = 0.0;
-            metal::float3 _e17 = miss(camera_ray_1, frame, params, _buffer_sizes);
-            radiance_2 = _e17;
-        } else {
-            metal::float3 _e18 = shade_direct(camera_ray_1, _e4, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, _buffer_sizes);
-            radiance_2 = _e18;
-            t_4 = _e4.t;
-        }
-        float _e20 = t_4;
-        metal::float3 _e21 = radiance_2;
-        metal::float3 _e22 = through_medium(camera_ray_1, _e20, _e21, instances, _buffer_sizes);
-        return _e22;
-    }
-    metal::float3 _e23 = trace_path(camera_ray_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-    return _e23;
-}
-
 metal::bool3 is_finite_vec3f(
     metal::float3 x_6
 ) {
@@ -2046,19 +1937,47 @@ metal::bool3 is_finite_vec3f(
 }
 
 metal::float3 finite_or_zero(
-    metal::float3 c_5
+    metal::float3 c_4
 ) {
-    metal::bool3 _e3 = is_finite_vec3f(c_5);
-    return metal::select(metal::float3(0.0), c_5, _e3);
+    metal::bool3 _e3 = is_finite_vec3f(c_4);
+    return metal::select(metal::float3(0.0), c_4, _e3);
+}
+
+void pass_done(
+    uint index,
+    metal::float3 sum,
+    uint bad,
+    uint pass,
+    constant FrameUniforms& frame,
+    thread uint& ray_count,
+    device type_20& counters,
+    device type_11& accum,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e5, metal::memory_order_relaxed);
+    ray_count = 0u;
+    FrameUniforms _e10 = frame;
+    metal::float4 _e13 = metal::float4(sum, static_cast<float>(_e10.samples_per_pass));
+    if (pass == 0u) {
+        accum[index] = _e13;
+    } else {
+        metal::float4 _e18 = accum[index];
+        accum[index] = _e18 + _e13;
+    }
+    if (bad > 0u) {
+        metal::atomic_fetch_add_explicit(&counters[0], bad, metal::memory_order_relaxed);
+    }
+    return;
 }
 
 void render_pixel(
-    metal::uint2 pixel_4,
+    metal::uint2 pixel_5,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -2067,75 +1986,73 @@ void render_pixel(
     thread float& hit_error,
     device type_15 const& attributes,
     thread uint& ray_count,
-    device type_5 const& texels,
-    thread type_17& spawn_dirs,
-    thread type_17& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count,
+    device type_6 const& texels,
     device type_20& counters,
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 sum = {};
-    uint bad = {};
-    uint s_3 = {};
-    Ray ray_22 = {};
-    FrameUniforms frame_5 = frame;
+    metal::float3 sum_1 = {};
+    uint bad_1 = {};
+    uint s_2 = {};
+    PathState path = {};
+    FrameUniforms frame_6 = frame;
     TileParams tile_2 = tile;
-    sum = metal::float3(0.0);
-    bad = 0u;
-    uint end_1 = frame_5.samples_per_pass;
-    s_3 = 0u;
-    uint2 loop_bound_7 = uint2(4294967295u);
-    bool loop_init_4 = true;
+    uint index_2 = (pixel_5.y * tile_2.image_size.x) + pixel_5.x;
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_1 = tile_2.frame * per_pass;
+    uint count_2 = per_pass * metal::max(frame_6.passes_per_dispatch, 1u);
+    sum_1 = metal::float3(0.0);
+    bad_1 = 0u;
+    s_2 = 0u;
+    Ray _e25 = sample_camera_ray(pixel_5, first_1, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+    path = PathState {_e25, metal::float3(1.0), metal::float3(0.0), true};
+    uint2 loop_bound_6 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_4) {
-            uint _e46 = s_3;
-            s_3 = _e46 + 1u;
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        PathState _e33 = path;
+        Ray _e35 = path.ray;
+        Candidate _e37 = intersect_scene(_e35, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        PathState _e38 = path_step(_e33, _e37, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, texels, _buffer_sizes);
+        path = _e38;
+        bool _e40 = path.live;
+        if (!(_e40)) {
+            metal::float3 c_8 = path.radiance;
+            metal::bool3 _e44 = is_finite_vec3f(c_8);
+            if (metal::all(_e44)) {
+                metal::float3 _e46 = sum_1;
+                sum_1 = _e46 + c_8;
+            } else {
+                metal::float3 _e48 = sum_1;
+                metal::float3 _e49 = finite_or_zero(c_8);
+                sum_1 = _e48 + _e49;
+                uint _e51 = bad_1;
+                bad_1 = _e51 + 1u;
+            }
+            uint _e54 = s_2;
+            s_2 = _e54 + 1u;
+            uint _e57 = s_2;
+            uint _e58 = rem_u32_(_e57, per_pass);
+            if (_e58 == 0u) {
+                metal::float3 _e61 = sum_1;
+                uint _e62 = bad_1;
+                uint _e64 = s_2;
+                uint _e65 = div_u32_(_e64, per_pass);
+                pass_done(index_2, _e61, _e62, (tile_2.frame + _e65) - 1u, frame, ray_count, counters, accum, _buffer_sizes);
+                sum_1 = metal::float3(0.0);
+                bad_1 = 0u;
+            }
+            uint _e72 = s_2;
+            if (_e72 >= count_2) {
+                break;
+            }
+            uint _e74 = s_2;
+            Ray _e76 = sample_camera_ray(pixel_5, first_1 + _e74, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+            path = PathState {_e76, metal::float3(1.0), metal::float3(0.0), true};
         }
-        loop_init_4 = false;
-        uint _e13 = s_3;
-        if (_e13 >= end_1) {
-            break;
-        }
-        uint _e18 = s_3;
-        uint sample_4 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
-        rng_seed(pixel_4, sample_4, frame_5.seed, scratch, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4, tile, frame, scratch, rng_state, params, F32_INF, _buffer_sizes);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_22.origin;
-        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-        ray_22.medium = _e33;
-        Ray _e34 = ray_22;
-        metal::float3 _e35 = trace(_e34, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-        metal::bool3 _e36 = is_finite_vec3f(_e35);
-        if (metal::all(_e36)) {
-            metal::float3 _e38 = sum;
-            sum = _e38 + _e35;
-        } else {
-            metal::float3 _e40 = sum;
-            metal::float3 _e41 = finite_or_zero(_e35);
-            sum = _e40 + _e41;
-            uint _e43 = bad;
-            bad = _e43 + 1u;
-        }
-    }
-    uint _e50 = ray_count;
-    metal::atomic_fetch_add_explicit(&counters[1], _e50, metal::memory_order_relaxed);
-    metal::float3 _e59 = sum;
-    metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if (tile_2.frame == 0u) {
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e62;
-    } else {
-        metal::float4 _e69 = accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x];
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e69 + _e62;
-    }
-    if (_e63 > 0u) {
-        metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
     }
     return;
 }
@@ -2144,9 +2061,9 @@ void render_invocation(
     metal::uint2 id_1,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_5& scratch,
     thread uint& rng_state,
-    device type_5 const& params,
+    device type_6 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
     device type_10 const& nodes,
@@ -2155,10 +2072,10 @@ void render_invocation(
     thread float& hit_error,
     device type_15 const& attributes,
     thread uint& ray_count,
-    device type_5 const& texels,
-    thread type_17& spawn_dirs,
-    thread type_17& spawn_weights,
+    thread type_16& spawn_dirs,
+    thread type_16& spawn_weights,
     thread uint& spawn_count,
+    device type_6 const& texels,
     device type_20& counters,
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
@@ -2168,7 +2085,7 @@ void render_invocation(
     if (metal::any(_e3 >= tile_3.extent)) {
         return;
     }
-    render_pixel(tile_3.origin + _e3, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_pixel(tile_3.origin + _e3, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, texels, counters, accum, _buffer_sizes);
     return;
 }
 
@@ -2178,25 +2095,25 @@ struct renderInput {
   metal::uint3 gid [[thread_position_in_grid]]
 , constant TileParams& tile [[buffer(1)]]
 , constant FrameUniforms& frame [[buffer(0)]]
-, device type_5 const& params [[buffer(6)]]
+, device type_6 const& params [[buffer(6)]]
 , device type_9 const& instances [[buffer(3)]]
 , device type_10 const& nodes [[buffer(2)]]
 , device type_11 const& triangles [[buffer(4)]]
 , device type_15 const& attributes [[buffer(5)]]
-, device type_5 const& texels [[buffer(7)]]
+, device type_6 const& texels [[buffer(7)]]
 , device type_20& counters [[buffer(9)]]
 , device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
-    type_3 scratch = {};
+    type_5 scratch = {};
     uint rng_state = {};
     uint F32_INF = 2139095040u;
     type_13 traversal_stack = {};
     float hit_error = {};
     uint ray_count = {};
-    type_17 spawn_dirs = {};
-    type_17 spawn_weights = {};
+    type_16 spawn_dirs = {};
+    type_16 spawn_weights = {};
     uint spawn_count = {};
-    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
+    render_invocation(metal::uint2(gid.x, gid.y), tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, texels, counters, accum, _buffer_sizes);
     return;
 }

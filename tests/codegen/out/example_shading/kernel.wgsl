@@ -21,6 +21,7 @@ struct FrameUniforms {
     background_type: u32,
     background_offset: u32,
     path_slots: u32,
+    passes_per_dispatch: u32,
 }
 
 struct Ray {
@@ -31,6 +32,13 @@ struct Ray {
     depth: u32,
     kind: u32,
     medium: u32,
+}
+
+struct PathState {
+    ray: Ray,
+    beta: vec3<f32>,
+    radiance: vec3<f32>,
+    live: bool,
 }
 
 struct Pinhole {
@@ -104,6 +112,10 @@ struct SkyGradient {
     ground: vec3<f32>,
 }
 
+struct Mirror {
+    tint: vec3<f32>,
+}
+
 struct BlinnPhong {
     texture: u32,
     diffuse: vec3<f32>,
@@ -132,22 +144,11 @@ struct Lambert {
     albedo: vec3<f32>,
 }
 
-struct Mirror {
-    tint: vec3<f32>,
-}
-
 struct UnlitTexture {
     texture: u32,
     tint: vec3<f32>,
     uv_scale: vec2<f32>,
     planar: u32,
-}
-
-struct PathState {
-    ray: Ray,
-    beta: vec3<f32>,
-    radiance: vec3<f32>,
-    live: bool,
 }
 
 const WORKGROUP_WIDTH: u32 = 8u;
@@ -171,8 +172,9 @@ const POINT_ERROR: f32 = 0.0000019073486f;
 const GAMMA_1_: f32 = 0.00000005960465f;
 const GAMMA_6_: f32 = 0.0000003576281f;
 const GAMMA_4_: f32 = 0.00000023841864f;
-const HAS_SECONDARY_RAYS: bool = true;
 const HAS_BACKGROUND: bool = true;
+const FLAG_SECONDARY_RAYS: u32 = 2u;
+const MAX_DEPTH: u32 = 3u;
 const TEXTURE_WRAP_MASK: u32 = 3u;
 const TEXTURE_WRAP_V_SHIFT: u32 = 2u;
 const TEXTURE_NEAREST: u32 = 16u;
@@ -188,9 +190,6 @@ const SHADOW_UNOCCLUDED: u32 = 1u;
 const SHADOW_ABOVE: u32 = 2u;
 const LIGHT_ERROR: f32 = 0.00000047683716f;
 const RAY_SHADOW: u32 = 2u;
-const FLAG_MEDIUM: u32 = 4u;
-const FLAG_SECONDARY_RAYS: u32 = 2u;
-const MAX_DEPTH: u32 = 3u;
 const ROULETTE_DEPTH: u32 = 2u;
 const ROULETTE_THROUGHPUT: f32 = 0.5f;
 const RAY_SECONDARY: u32 = 1u;
@@ -215,11 +214,11 @@ var<private> hit_error: f32;
 @group(0) @binding(5) 
 var<storage> attributes: array<vec4<u32>>;
 var<private> ray_count: u32;
-@group(0) @binding(7) 
-var<storage> texels: array<u32>;
 var<private> spawn_dirs: array<vec3<f32>, 1>;
 var<private> spawn_weights: array<vec3<f32>, 1>;
 var<private> spawn_count: u32;
+@group(0) @binding(7) 
+var<storage> texels: array<u32>;
 @group(0) @binding(9) 
 var<storage, read_write> counters: array<atomic<u32>>;
 @group(0) @binding(8) 
@@ -434,8 +433,8 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_4 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_4 * tiny), (abs(d) < tiny));
+    let s_3 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_3 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
@@ -461,23 +460,23 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let _e18 = triangles[((slot * 3u) + 1u)];
     let b_6 = (_e18.xyz - r_1.origin);
     let _e28 = triangles[((slot * 3u) + 2u)];
-    let c_6 = (_e28.xyz - r_1.origin);
+    let c_5 = (_e28.xyz - r_1.origin);
     let ax = (a_5[min(r_1.kx, 2u)] - (r_1.shear.x * a_5[min(r_1.kz, 2u)]));
     let ay = (a_5[min(r_1.ky, 2u)] - (r_1.shear.y * a_5[min(r_1.kz, 2u)]));
     let bx = (b_6[min(r_1.kx, 2u)] - (r_1.shear.x * b_6[min(r_1.kz, 2u)]));
     let by = (b_6[min(r_1.ky, 2u)] - (r_1.shear.y * b_6[min(r_1.kz, 2u)]));
-    let cx = (c_6[min(r_1.kx, 2u)] - (r_1.shear.x * c_6[min(r_1.kz, 2u)]));
-    let cy = (c_6[min(r_1.ky, 2u)] - (r_1.shear.y * c_6[min(r_1.kz, 2u)]));
+    let cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
+    let cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
     let v_2 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
     let outside = ((((u < 0f) || (v_2 < 0f)) || (w < 0f)) && (((u > 0f) || (v_2 > 0f)) || (w > 0f)));
     let det = ((u + v_2) + w);
     let rcp = (1f / det);
-    let t_5 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
-    let hit_10 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_5 >= tmin)) && (t_5 <= tmax_1));
+    let t_2 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    let hit_10 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
     let _e173 = F32_INF;
-    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_5, (v_2 * rcp), (w * rcp)), hit_10);
+    return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_2, (v_2 * rcp), (w * rcp)), hit_10);
 }
 
 fn accept(inst_1: GpuInstance, ray_2: Ray, c: Candidate) -> bool {
@@ -573,10 +572,10 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
                     let _e58 = triangles[((prim * 3u) + 1u)];
                     let tag = bitcast<u32>(_e58.w);
                     let owner = select(slot_1, ((inst_2.object + tag) - 1u), (tag != 0u));
-                    let c_7 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
-                    let _e73 = accept(inst_2, world_ray, c_7);
+                    let c_6 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
+                    let _e73 = accept(inst_2, world_ray, c_6);
                     if _e73 {
-                        best = c_7;
+                        best = c_6;
                         if shadow {
                             let _e74 = best;
                             return _e74;
@@ -691,9 +690,9 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     let _e14 = n_1.z;
     if (_e14 < 0f) {
         let _e21 = n_1;
-        let s_5 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_4 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n_1;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_5);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_4);
         let _e37 = n_1.z;
         n_1 = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -808,12 +807,28 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     return _e62;
 }
 
+fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
+    var ray_7: Ray;
+
+    let frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed);
+    let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    let _e15 = ray_7.origin;
+    let _e17 = medium_at(_e15, NO_HIT);
+    ray_7.medium = _e17;
+    let _e18 = ray_7;
+    return _e18;
+}
+
 fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     let _e5 = node_point(header.min, header.max, vec3(65535u));
     return _e5;
 }
 
-fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -822,21 +837,21 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_7.tmax);
+    let _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
-    let frame_2 = frame;
-    if (frame_2.instance_count == 0u) {
+    let frame_3 = frame;
+    if (frame_3.instance_count == 0u) {
         let _e14 = best_2;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_7.dir);
-    let base_2 = frame_2.tlas_root;
+    let _e16 = safe_inverse(ray_8.dir);
+    let base_2 = frame_3.tlas_root;
     let header_2 = nodes[base_2];
     let origin_5 = header_2.min;
     let scale_3 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
+    let _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
@@ -851,7 +866,7 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e52 = child_1;
                 let _e55 = best_2;
-                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_7, _e55, shadow_2);
+                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_8, _e55, shadow_2);
                 best_2 = _e56;
                 let _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -863,7 +878,7 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
             let _e63 = child_1;
             let n_8 = nodes[(base_2 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_8, origin_5, scale_3, ray_7, _e16, _e69);
+            let _e70 = children_entry(n_8, origin_5, scale_3, ray_8, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
@@ -923,8 +938,8 @@ fn load_SkyGradient(offset_2: u32) -> SkyGradient {
     return SkyGradient(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)));
 }
 
-fn sky_gradient(b_4: SkyGradient, ray_8: Ray) -> vec3<f32> {
-    let _e3 = normalize_vec3f(ray_8.dir);
+fn sky_gradient(b_4: SkyGradient, ray_9: Ray) -> vec3<f32> {
+    let _e3 = normalize_vec3f(ray_9.dir);
     let y = _e3.y;
     if (y < 0f) {
         return mix(b_4.horizon, b_4.ground, vec3(min((-(y) * 4f), 1f)));
@@ -932,41 +947,69 @@ fn sky_gradient(b_4: SkyGradient, ray_8: Ray) -> vec3<f32> {
     return mix(b_4.horizon, b_4.zenith, vec3(sqrt(y)));
 }
 
-fn dispatch_miss(type_id_1: u32, offset_3: u32, ray_9: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_1: u32, offset_3: u32, ray_10: Ray) -> vec3<f32> {
     let _e2 = load_SkyGradient(offset_3);
-    let _e3 = sky_gradient(_e2, ray_9);
+    let _e3 = sky_gradient(_e2, ray_10);
     return _e3;
 }
 
-fn miss(ray_10: Ray) -> vec3<f32> {
+fn miss(ray_11: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
-    let frame_3 = frame;
-    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_10);
+    let frame_4 = frame;
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11);
     return _e9;
 }
 
-fn load_BlinnPhong(offset_4: u32) -> BlinnPhong {
+fn load_Mirror(offset_4: u32) -> Mirror {
     let _e5 = params[(offset_4 + 0u)];
-    let _e10 = params[(offset_4 + 4u)];
-    let _e16 = params[(offset_4 + 5u)];
-    let _e22 = params[(offset_4 + 6u)];
-    let _e29 = params[(offset_4 + 8u)];
-    let _e35 = params[(offset_4 + 9u)];
-    let _e41 = params[(offset_4 + 10u)];
-    let _e48 = params[(offset_4 + 11u)];
-    let _e54 = params[(offset_4 + 12u)];
-    let _e60 = params[(offset_4 + 13u)];
-    let _e66 = params[(offset_4 + 14u)];
-    let _e73 = params[(offset_4 + 16u)];
-    let _e79 = params[(offset_4 + 17u)];
+    let _e11 = params[(offset_4 + 1u)];
+    let _e17 = params[(offset_4 + 2u)];
+    return Mirror(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
+}
+
+fn rt_spawn(dir: vec3<f32>, weight: vec3<f32>) {
+    let _e3 = spawn_count;
+    if (_e3 < 1u) {
+        spawn_dirs[_e3] = dir;
+        spawn_weights[_e3] = weight;
+        spawn_count = (_e3 + 1u);
+    }
+}
+
+fn mirror_rays(m: Mirror, ray_12: Ray, hit_1: Hit) {
+    let _e4 = normalize_vec3f(ray_12.dir);
+    rt_spawn(reflect(_e4, hit_1.normal), m.tint);
+    return;
+}
+
+fn dispatch_secondary_rays(type_id_2: u32, offset_5: u32, ray_13: Ray, hit_2: Hit) {
+    let _e3 = load_Mirror(offset_5);
+    mirror_rays(_e3, ray_13, hit_2);
+    return;
+}
+
+fn load_BlinnPhong(offset_6: u32) -> BlinnPhong {
+    let _e5 = params[(offset_6 + 0u)];
+    let _e10 = params[(offset_6 + 4u)];
+    let _e16 = params[(offset_6 + 5u)];
+    let _e22 = params[(offset_6 + 6u)];
+    let _e29 = params[(offset_6 + 8u)];
+    let _e35 = params[(offset_6 + 9u)];
+    let _e41 = params[(offset_6 + 10u)];
+    let _e48 = params[(offset_6 + 11u)];
+    let _e54 = params[(offset_6 + 12u)];
+    let _e60 = params[(offset_6 + 13u)];
+    let _e66 = params[(offset_6 + 14u)];
+    let _e73 = params[(offset_6 + 16u)];
+    let _e79 = params[(offset_6 + 17u)];
     return BlinnPhong(_e5, vec3<f32>(bitcast<f32>(_e10), bitcast<f32>(_e16), bitcast<f32>(_e22)), vec3<f32>(bitcast<f32>(_e29), bitcast<f32>(_e35), bitcast<f32>(_e41)), bitcast<f32>(_e48), vec3<f32>(bitcast<f32>(_e54), bitcast<f32>(_e60), bitcast<f32>(_e66)), vec2<f32>(bitcast<f32>(_e73), bitcast<f32>(_e79)));
 }
 
-fn shading_normal(ray_11: Ray, hit_1: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_1.geometric_normal, ray_11.dir, hit_1.geometric_normal);
-    return faceForward(hit_1.normal, -(ng), hit_1.normal);
+fn shading_normal(ray_14: Ray, hit_3: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_3.geometric_normal, ray_14.dir, hit_3.geometric_normal);
+    return faceForward(hit_3.normal, -(ng), hit_3.normal);
 }
 
 fn i32_from_f32_(x_3: f32) -> i32 {
@@ -999,23 +1042,23 @@ fn srgb_channel(c_2: f32) -> f32 {
 fn texel_at(t: u32, xi: u32, yi: u32) -> vec4<f32> {
     let base_3 = params[t];
     let _e10 = params[(t + 1u)];
-    let index = ((yi * max(_e10, 1u)) + xi);
+    let index_1 = ((yi * max(_e10, 1u)) + xi);
     let format = params[(t + 3u)];
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        let _e25 = texels[(base_3 + index)];
-        let c_8 = unpack4x8unorm(_e25);
-        let _e28 = srgb_channel(c_8.x);
-        let _e30 = srgb_channel(c_8.y);
-        let _e32 = srgb_channel(c_8.z);
-        return vec4<f32>(_e28, _e30, _e32, c_8.w);
+        let _e25 = texels[(base_3 + index_1)];
+        let c_7 = unpack4x8unorm(_e25);
+        let _e28 = srgb_channel(c_7.x);
+        let _e30 = srgb_channel(c_7.y);
+        let _e32 = srgb_channel(c_7.z);
+        return vec4<f32>(_e28, _e30, _e32, c_7.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
-        let _e40 = texels[(base_3 + index)];
+        let _e40 = texels[(base_3 + index_1)];
         return unpack4x8unorm(_e40);
     }
-    let _e47 = texels[(base_3 + (index * RGBA16F_TEXEL_WORDS))];
+    let _e47 = texels[(base_3 + (index_1 * RGBA16F_TEXEL_WORDS))];
     let rg = unpack2x16float(_e47);
-    let _e56 = texels[((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
+    let _e56 = texels[((base_3 + (index_1 * RGBA16F_TEXEL_WORDS)) + 1u)];
     let ba = unpack2x16float(_e56);
     return vec4<f32>(rg, ba);
 }
@@ -1056,25 +1099,25 @@ fn light_count_query() -> u32 {
     return _e1.light_count;
 }
 
-fn load_PointLight(offset_5: u32) -> PointLight {
-    let _e5 = params[(offset_5 + 0u)];
-    let _e11 = params[(offset_5 + 1u)];
-    let _e17 = params[(offset_5 + 2u)];
-    let _e24 = params[(offset_5 + 4u)];
-    let _e30 = params[(offset_5 + 5u)];
-    let _e36 = params[(offset_5 + 6u)];
-    let _e43 = params[(offset_5 + 7u)];
-    let _e49 = params[(offset_5 + 8u)];
-    let _e55 = params[(offset_5 + 9u)];
+fn load_PointLight(offset_7: u32) -> PointLight {
+    let _e5 = params[(offset_7 + 0u)];
+    let _e11 = params[(offset_7 + 1u)];
+    let _e17 = params[(offset_7 + 2u)];
+    let _e24 = params[(offset_7 + 4u)];
+    let _e30 = params[(offset_7 + 5u)];
+    let _e36 = params[(offset_7 + 6u)];
+    let _e43 = params[(offset_7 + 7u)];
+    let _e49 = params[(offset_7 + 8u)];
+    let _e55 = params[(offset_7 + 9u)];
     return PointLight(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55));
 }
 
-fn shadow_preset(normal: vec3<f32>, dir: vec3<f32>) -> f32 {
+fn shadow_preset(normal: vec3<f32>, dir_1: vec3<f32>) -> f32 {
     let mode_1 = scratch[min(SCRATCH_SHADOW_MODE, 14u)];
     if (mode_1 == SHADOW_UNOCCLUDED) {
         return 1f;
     }
-    if ((mode_1 == SHADOW_ABOVE) && !((dot(dir, normal) > 0f))) {
+    if ((mode_1 == SHADOW_ABOVE) && !((dot(dir_1, normal) > 0f))) {
         return 0f;
     }
     return -1f;
@@ -1091,18 +1134,18 @@ fn step_toward(x_5: vec3<f32>, s: vec3<f32>) -> vec3<f32> {
 
 fn offset_origin(p_5: vec3<f32>, n_4: vec3<f32>, error: f32) -> vec3<f32> {
     let d_4 = ((2f * error) * ((abs(n_4.x) + abs(n_4.y)) + abs(n_4.z)));
-    let offset_13 = (n_4 * vec3(d_4));
-    let _e17 = step_toward((p_5 + offset_13), offset_13);
+    let offset_12 = (n_4 * vec3(d_4));
+    let _e17 = step_toward((p_5 + offset_12), offset_12);
     return _e17;
 }
 
-fn shadow_ray(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist: f32) -> Ray {
+fn shadow_ray(position: vec3<f32>, normal_1: vec3<f32>, dir_2: vec3<f32>, dist: f32) -> Ray {
     var n_5: vec3<f32>;
     var tmax_4: f32;
 
     n_5 = normal_1;
     let _e5 = n_5;
-    if (dot(dir_1, _e5) < 0f) {
+    if (dot(dir_2, _e5) < 0f) {
         let _e9 = n_5;
         n_5 = -(_e9);
     }
@@ -1115,22 +1158,22 @@ fn shadow_ray(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, dist: 
     tmax_4 = bitcast<f32>(_e25);
     let _e29 = F32_INF;
     if (dist < bitcast<f32>(_e29)) {
-        let light = (position + (dir_1 * vec3(dist)));
-        let dd_1 = dot(dir_1, dir_1);
-        let along_1 = (dot((light - _e23), dir_1) / dd_1);
-        let l_1 = (abs(position) + abs((dir_1 * vec3(dist))));
+        let light = (position + (dir_2 * vec3(dist)));
+        let dd_1 = dot(dir_2, dir_2);
+        let along_1 = (dot((light - _e23), dir_2) / dd_1);
+        let l_1 = (abs(position) + abs((dir_2 * vec3(dist))));
         tmax_4 = ((along_1 * (1f - 0.00001f)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     let _e59 = tmax_4;
-    return Ray(_e23, 0f, dir_1, _e59, 0u, RAY_SHADOW, 0u);
+    return Ray(_e23, 0f, dir_2, _e59, 0u, RAY_SHADOW, 0u);
 }
 
-fn shadow_query(position_1: vec3<f32>, normal_2: vec3<f32>, dir_2: vec3<f32>, dist_1: f32) -> f32 {
-    let _e4 = shadow_preset(normal_2, dir_2);
+fn shadow_query(position_1: vec3<f32>, normal_2: vec3<f32>, dir_3: vec3<f32>, dist_1: f32) -> f32 {
+    let _e4 = shadow_preset(normal_2, dir_3);
     if (_e4 >= 0f) {
         return _e4;
     }
-    let _e7 = shadow_ray(position_1, normal_2, dir_2, dist_1);
+    let _e7 = shadow_ray(position_1, normal_2, dir_3, dist_1);
     let _e9 = intersect_scene(_e7, true);
     return select(1f, 0f, (_e9.slot != NO_HIT));
 }
@@ -1151,36 +1194,36 @@ fn point_light(l: PointLight, position_2: vec3<f32>, normal_3: vec3<f32>) -> Lig
     return LightSample(dir_7, dist_2, ((l.color * vec3(_e28)) * vec3(_e26)), 0f);
 }
 
-fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
-    let _e3 = load_PointLight(offset_6);
+fn dispatch_light(type_id_3: u32, offset_8: u32, position_3: vec3<f32>, normal_4: vec3<f32>) -> LightSample {
+    let _e3 = load_PointLight(offset_8);
     let _e4 = point_light(_e3, position_3, normal_4);
     return _e4;
 }
 
 fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
-    let frame_4 = frame;
-    if (i_2 >= frame_4.light_count) {
+    let frame_5 = frame;
+    if (i_2 >= frame_5.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
+    let entry = (frame_5.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     let _e22 = params[entry];
     let _e27 = params[(entry + 1u)];
     let _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     return _e28;
 }
 
-fn blinn_phong_shade(m: BlinnPhong, ray_12: Ray, hit_2: Hit) -> vec3<f32> {
+fn blinn_phong_shade(m_1: BlinnPhong, ray_15: Ray, hit_4: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_3: u32;
 
-    let _e3 = shading_normal(ray_12, hit_2);
-    let _e5 = normalize_vec3f(ray_12.dir);
+    let _e3 = shading_normal(ray_15, hit_4);
+    let _e5 = normalize_vec3f(ray_15.dir);
     let v_3 = -(_e5);
-    let _e12 = sample_texture(m.texture, (hit_2.uv * m.uv_scale));
-    let kd = (m.diffuse * _e12.xyz);
-    let s_6 = max(m.shininess, 0f);
-    let norm = ((s_6 + 8f) * (INV_PI / 8f));
-    color = (m.ambient * kd);
+    let _e12 = sample_texture(m_1.texture, (hit_4.uv * m_1.uv_scale));
+    let kd = (m_1.diffuse * _e12.xyz);
+    let s_5 = max(m_1.shininess, 0f);
+    let norm = ((s_5 + 8f) * (INV_PI / 8f));
+    color = (m_1.ambient * kd);
     let _e28 = light_count_query();
     i_3 = 0u;
     loop {
@@ -1189,12 +1232,12 @@ fn blinn_phong_shade(m: BlinnPhong, ray_12: Ray, hit_2: Hit) -> vec3<f32> {
             break;
         }
         let _e32 = i_3;
-        let _e35 = sample_light_query(_e32, hit_2.position, hit_2.geometric_normal);
+        let _e35 = sample_light_query(_e32, hit_4.position, hit_4.geometric_normal);
         let ndl = max(dot(_e3, _e35.dir), 0f);
         let _e42 = normalize_vec3f((_e35.dir + v_3));
-        let highlight = (pow(max(dot(_e3, _e42), 0f), s_6) * norm);
+        let highlight = (pow(max(dot(_e3, _e42), 0f), s_5) * norm);
         let _e48 = color;
-        color = (_e48 + ((_e35.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m.specular * vec3(highlight)))));
+        color = (_e48 + ((_e35.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m_1.specular * vec3(highlight)))));
         continuing {
             let _e61 = i_3;
             i_3 = (_e61 + 1u);
@@ -1204,18 +1247,18 @@ fn blinn_phong_shade(m: BlinnPhong, ray_12: Ray, hit_2: Hit) -> vec3<f32> {
     return _e64;
 }
 
-fn load_Lambert(offset_7: u32) -> Lambert {
-    let _e5 = params[(offset_7 + 0u)];
-    let _e11 = params[(offset_7 + 1u)];
-    let _e17 = params[(offset_7 + 2u)];
+fn load_Lambert(offset_9: u32) -> Lambert {
+    let _e5 = params[(offset_9 + 0u)];
+    let _e11 = params[(offset_9 + 1u)];
+    let _e17 = params[(offset_9 + 2u)];
     return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn lambert_shade(m_1: Lambert, ray_13: Ray, hit_3: Hit) -> vec3<f32> {
+fn lambert_shade(m_2: Lambert, ray_16: Ray, hit_5: Hit) -> vec3<f32> {
     var color_1: vec3<f32>;
     var i_4: u32;
 
-    let _e3 = shading_normal(ray_13, hit_3);
+    let _e3 = shading_normal(ray_16, hit_5);
     color_1 = vec3(0f);
     let _e8 = light_count_query();
     i_4 = 0u;
@@ -1225,9 +1268,9 @@ fn lambert_shade(m_1: Lambert, ray_13: Ray, hit_3: Hit) -> vec3<f32> {
             break;
         }
         let _e12 = i_4;
-        let _e15 = sample_light_query(_e12, hit_3.position, hit_3.geometric_normal);
+        let _e15 = sample_light_query(_e12, hit_5.position, hit_5.geometric_normal);
         let _e16 = color_1;
-        color_1 = (_e16 + (((m_1.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0f))));
+        color_1 = (_e16 + (((m_2.albedo * vec3(INV_PI)) * _e15.radiance) * vec3(max(dot(_e3, _e15.dir), 0f))));
         continuing {
             let _e30 = i_4;
             i_4 = (_e30 + 1u);
@@ -1237,113 +1280,59 @@ fn lambert_shade(m_1: Lambert, ray_13: Ray, hit_3: Hit) -> vec3<f32> {
     return _e33;
 }
 
-fn load_Mirror(offset_8: u32) -> Mirror {
-    let _e5 = params[(offset_8 + 0u)];
-    let _e11 = params[(offset_8 + 1u)];
-    let _e17 = params[(offset_8 + 2u)];
-    return Mirror(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
-}
-
-fn mirror_shade(m_2: Mirror, ray_14: Ray, hit_4: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn mirror_shade(m_3: Mirror, ray_17: Ray, hit_6: Hit, secondary: vec3<f32>) -> vec3<f32> {
     return secondary;
 }
 
-fn load_UnlitTexture(offset_9: u32) -> UnlitTexture {
-    let _e5 = params[(offset_9 + 0u)];
-    let _e10 = params[(offset_9 + 4u)];
-    let _e16 = params[(offset_9 + 5u)];
-    let _e22 = params[(offset_9 + 6u)];
-    let _e29 = params[(offset_9 + 8u)];
-    let _e35 = params[(offset_9 + 9u)];
-    let _e42 = params[(offset_9 + 10u)];
+fn load_UnlitTexture(offset_10: u32) -> UnlitTexture {
+    let _e5 = params[(offset_10 + 0u)];
+    let _e10 = params[(offset_10 + 4u)];
+    let _e16 = params[(offset_10 + 5u)];
+    let _e22 = params[(offset_10 + 6u)];
+    let _e29 = params[(offset_10 + 8u)];
+    let _e35 = params[(offset_10 + 9u)];
+    let _e42 = params[(offset_10 + 10u)];
     return UnlitTexture(_e5, vec3<f32>(bitcast<f32>(_e10), bitcast<f32>(_e16), bitcast<f32>(_e22)), vec2<f32>(bitcast<f32>(_e29), bitcast<f32>(_e35)), _e42);
 }
 
-fn unlit_texture_shade(m_3: UnlitTexture, ray_15: Ray, hit_5: Hit) -> vec3<f32> {
+fn unlit_texture_shade(m_4: UnlitTexture, ray_18: Ray, hit_7: Hit) -> vec3<f32> {
     var uv_1: vec2<f32>;
 
-    uv_1 = hit_5.uv;
-    if (m_3.planar == 1u) {
-        uv_1 = vec2<f32>(hit_5.position.x, -(hit_5.position.y));
+    uv_1 = hit_7.uv;
+    if (m_4.planar == 1u) {
+        uv_1 = vec2<f32>(hit_7.position.x, -(hit_7.position.y));
     }
     let _e14 = uv_1;
-    let _e17 = sample_texture(m_3.texture, (_e14 * m_3.uv_scale));
-    return (_e17.xyz * m_3.tint);
+    let _e17 = sample_texture(m_4.texture, (_e14 * m_4.uv_scale));
+    return (_e17.xyz * m_4.tint);
 }
 
-fn dispatch_closest_hit(type_id_3: u32, offset_10: u32, ray_16: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
-    switch type_id_3 {
+fn dispatch_closest_hit(type_id_4: u32, offset_11: u32, ray_19: Ray, hit_8: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+    switch type_id_4 {
         case 0u: {
-            let _e5 = load_BlinnPhong(offset_10);
-            let _e6 = blinn_phong_shade(_e5, ray_16, hit_6);
+            let _e5 = load_BlinnPhong(offset_11);
+            let _e6 = blinn_phong_shade(_e5, ray_19, hit_8);
             return _e6;
         }
         case 1u: {
-            let _e7 = load_Lambert(offset_10);
-            let _e8 = lambert_shade(_e7, ray_16, hit_6);
+            let _e7 = load_Lambert(offset_11);
+            let _e8 = lambert_shade(_e7, ray_19, hit_8);
             return _e8;
         }
         case 2u: {
-            let _e9 = load_Mirror(offset_10);
-            let _e10 = mirror_shade(_e9, ray_16, hit_6, secondary_1);
+            let _e9 = load_Mirror(offset_11);
+            let _e10 = mirror_shade(_e9, ray_19, hit_8, secondary_1);
             return _e10;
         }
         case 3u: {
-            let _e11 = load_UnlitTexture(offset_10);
-            let _e12 = unlit_texture_shade(_e11, ray_16, hit_6);
+            let _e11 = load_UnlitTexture(offset_11);
+            let _e12 = unlit_texture_shade(_e11, ray_19, hit_8);
             return _e12;
         }
         default: {
         }
     }
     return vec3<f32>();
-}
-
-fn shade_direct(ray_17: Ray, c_3: Candidate) -> vec3<f32> {
-    let inst_8 = instances[c_3.slot];
-    let _e6 = finish_hit(ray_17, c_3);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e6, vec3(0f));
-    return _e11;
-}
-
-fn dispatch_medium(type_id_4: u32, offset_11: u32, ray_18: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
-    return vec3<f32>();
-}
-
-fn through_medium(ray_19: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
-    if !(HAS_MEDIA) {
-        return radiance_1;
-    }
-    if (ray_19.medium == 0u) {
-        return radiance_1;
-    }
-    let inst_9 = instances[(ray_19.medium - 1u)];
-    if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
-        return radiance_1;
-    }
-    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_19, t_3, radiance_1);
-    return _e21;
-}
-
-fn rt_spawn(dir_3: vec3<f32>, weight: vec3<f32>) {
-    let _e3 = spawn_count;
-    if (_e3 < 1u) {
-        spawn_dirs[_e3] = dir_3;
-        spawn_weights[_e3] = weight;
-        spawn_count = (_e3 + 1u);
-    }
-}
-
-fn mirror_rays(m_4: Mirror, ray_20: Ray, hit_7: Hit) {
-    let _e4 = normalize_vec3f(ray_20.dir);
-    rt_spawn(reflect(_e4, hit_7.normal), m_4.tint);
-    return;
-}
-
-fn dispatch_secondary_rays(type_id_5: u32, offset_12: u32, ray_21: Ray, hit_8: Hit) {
-    let _e3 = load_Mirror(offset_12);
-    mirror_rays(_e3, ray_21, hit_8);
-    return;
 }
 
 fn spawn_origin_at(position_5: vec3<f32>, normal_6: vec3<f32>, error_1: f32, dir_4: vec3<f32>) -> vec3<f32> {
@@ -1365,32 +1354,32 @@ fn spawn_origin(hit_9: Hit, error_2: f32, dir_5: vec3<f32>) -> vec3<f32> {
     return _e5;
 }
 
-fn path_step(s_1: PathState, c_4: Candidate) -> PathState {
+fn path_step(s_1: PathState, c_3: Candidate) -> PathState {
     var out: PathState;
     var spawned: bool;
     var dir_6: vec3<f32>;
     var weight_1: vec3<f32>;
     var beta: vec3<f32>;
 
-    let ray_23 = s_1.ray;
+    let ray_20 = s_1.ray;
     out = s_1;
     out.live = false;
-    if (c_4.slot == NO_HIT) {
+    if (c_3.slot == NO_HIT) {
         hit_error = 0f;
-        let _e14 = miss(ray_23);
+        let _e14 = miss(ray_20);
         out.radiance = (s_1.radiance + (s_1.beta * _e14));
         let _e17 = out;
         return _e17;
     }
-    let inst_10 = instances[c_4.slot];
-    let _e22 = finish_hit(ray_23, c_4);
+    let inst_8 = instances[c_3.slot];
+    let _e22 = finish_hit(ray_20, c_3);
     let error_4 = hit_error;
     spawned = false;
     dir_6 = vec3(0f);
     weight_1 = vec3(0f);
-    if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_23.depth < MAX_DEPTH)) {
+    if (((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_20.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_23, _e22);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_20, _e22);
         let _e47 = spawn_count;
         if (min(_e47, 1u) > 0u) {
             spawned = true;
@@ -1400,7 +1389,7 @@ fn path_step(s_1: PathState, c_4: Candidate) -> PathState {
             weight_1 = _e60;
         }
     }
-    let _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_23, _e22, vec3(0f));
+    let _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e22, vec3(0f));
     out.radiance = (s_1.radiance + (s_1.beta * _e68));
     let _e71 = spawned;
     if !(_e71) {
@@ -1417,7 +1406,7 @@ fn path_step(s_1: PathState, c_4: Candidate) -> PathState {
         let _e89 = out;
         return _e89;
     }
-    if (((ROULETTE_DEPTH > 0u) && ((ray_23.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT)) {
+    if (((ROULETTE_DEPTH > 0u) && ((ray_20.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT)) {
         let survive = (q_4 / ROULETTE_THROUGHPUT);
         let _e104 = rand_next();
         if (_e104 >= survive) {
@@ -1433,125 +1422,97 @@ fn path_step(s_1: PathState, c_4: Candidate) -> PathState {
     let _e114 = spawn_origin(_e22, error_4, _e113);
     let _e116 = dir_6;
     let _e118 = F32_INF;
-    out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_23.depth + 1u), RAY_SECONDARY, ray_23.medium);
+    out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_20.depth + 1u), RAY_SECONDARY, ray_20.medium);
     out.live = true;
     let _e128 = out;
     return _e128;
-}
-
-fn trace_path(camera_ray: Ray) -> vec3<f32> {
-    var s_2: PathState;
-
-    s_2 = PathState(camera_ray, vec3(1f), vec3(0f), true);
-    loop {
-        let _e8 = s_2;
-        let _e10 = s_2.ray;
-        let _e12 = intersect_scene(_e10, false);
-        let _e13 = path_step(_e8, _e12);
-        s_2 = _e13;
-        let _e15 = s_2.live;
-        if !(_e15) {
-            let _e18 = s_2.radiance;
-            return _e18;
-        }
-    }
-    return vec3<f32>();
-}
-
-fn trace(camera_ray_1: Ray) -> vec3<f32> {
-    var radiance_2: vec3<f32>;
-    var t_4: f32;
-
-    if !(HAS_SECONDARY_RAYS) {
-        let _e4 = intersect_scene(camera_ray_1, false);
-        radiance_2 = vec3(0f);
-        let _e9 = F32_INF;
-        t_4 = bitcast<f32>(_e9);
-        if (_e4.slot == NO_HIT) {
-            hit_error = 0f;
-            let _e17 = miss(camera_ray_1);
-            radiance_2 = _e17;
-        } else {
-            let _e18 = shade_direct(camera_ray_1, _e4);
-            radiance_2 = _e18;
-            t_4 = _e4.t;
-        }
-        let _e20 = t_4;
-        let _e21 = radiance_2;
-        let _e22 = through_medium(camera_ray_1, _e20, _e21);
-        return _e22;
-    }
-    let _e23 = trace_path(camera_ray_1);
-    return _e23;
 }
 
 fn is_finite_vec3f(x_6: vec3<f32>) -> vec3<bool> {
     return ((bitcast<vec3<u32>>(x_6) & vec3(2147483647u)) < vec3(2139095040u));
 }
 
-fn finite_or_zero(c_5: vec3<f32>) -> vec3<f32> {
-    let _e3 = is_finite_vec3f(c_5);
-    return select(vec3(0f), c_5, _e3);
+fn finite_or_zero(c_4: vec3<f32>) -> vec3<f32> {
+    let _e3 = is_finite_vec3f(c_4);
+    return select(vec3(0f), c_4, _e3);
 }
 
-fn render_pixel(pixel_4: vec2<u32>) {
-    var sum: vec3<f32>;
-    var bad: u32;
-    var s_3: u32;
-    var ray_22: Ray;
-
-    let frame_5 = frame;
-    let tile_2 = tile;
-    sum = vec3(0f);
-    bad = 0u;
-    let end_1 = frame_5.samples_per_pass;
-    s_3 = 0u;
-    loop {
-        let _e13 = s_3;
-        if (_e13 >= end_1) {
-            break;
-        }
-        let _e18 = s_3;
-        let sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_4, sample_4, frame_5.seed);
-        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
-        ray_22 = _e23;
-        ray_22.depth = 0u;
-        ray_22.kind = RAY_CAMERA;
-        let _e31 = ray_22.origin;
-        let _e33 = medium_at(_e31, NO_HIT);
-        ray_22.medium = _e33;
-        let _e34 = ray_22;
-        let _e35 = trace(_e34);
-        let _e36 = is_finite_vec3f(_e35);
-        if all(_e36) {
-            let _e38 = sum;
-            sum = (_e38 + _e35);
-        } else {
-            let _e40 = sum;
-            let _e41 = finite_or_zero(_e35);
-            sum = (_e40 + _e41);
-            let _e43 = bad;
-            bad = (_e43 + 1u);
-        }
-        continuing {
-            let _e46 = s_3;
-            s_3 = (_e46 + 1u);
-        }
-    }
-    let _e50 = ray_count;
-    atomicAdd((&counters[1]), _e50);
-    let _e59 = sum;
-    let _e62 = vec4<f32>(_e59, f32(frame_5.samples_per_pass));
-    let _e63 = bad;
-    if (tile_2.frame == 0u) {
-        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
+fn pass_done(index: u32, sum: vec3<f32>, bad: u32, pass_: u32) {
+    let _e5 = ray_count;
+    atomicAdd((&counters[1]), _e5);
+    ray_count = 0u;
+    let _e10 = frame;
+    let _e13 = vec4<f32>(sum, f32(_e10.samples_per_pass));
+    if (pass_ == 0u) {
+        accum[index] = _e13;
     } else {
-        let _e69 = accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
-        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
+        let _e18 = accum[index];
+        accum[index] = (_e18 + _e13);
     }
-    if (_e63 > 0u) {
-        atomicAdd((&counters[0]), _e63);
+    if (bad > 0u) {
+        atomicAdd((&counters[0]), bad);
+    }
+    return;
+}
+
+fn render_pixel(pixel_5: vec2<u32>) {
+    var sum_1: vec3<f32>;
+    var bad_1: u32;
+    var s_2: u32;
+    var path: PathState;
+
+    let frame_6 = frame;
+    let tile_2 = tile;
+    let index_2 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
+    let per_pass = frame_6.samples_per_pass;
+    let first_1 = (tile_2.frame * per_pass);
+    let count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
+    sum_1 = vec3(0f);
+    bad_1 = 0u;
+    s_2 = 0u;
+    let _e25 = sample_camera_ray(pixel_5, first_1);
+    path = PathState(_e25, vec3(1f), vec3(0f), true);
+    loop {
+        let _e33 = path;
+        let _e35 = path.ray;
+        let _e37 = intersect_scene(_e35, false);
+        let _e38 = path_step(_e33, _e37);
+        path = _e38;
+        let _e40 = path.live;
+        if !(_e40) {
+            let c_8 = path.radiance;
+            let _e44 = is_finite_vec3f(c_8);
+            if all(_e44) {
+                let _e46 = sum_1;
+                sum_1 = (_e46 + c_8);
+            } else {
+                let _e48 = sum_1;
+                let _e49 = finite_or_zero(c_8);
+                sum_1 = (_e48 + _e49);
+                let _e51 = bad_1;
+                bad_1 = (_e51 + 1u);
+            }
+            let _e54 = s_2;
+            s_2 = (_e54 + 1u);
+            let _e57 = s_2;
+            let _e58 = rem_u32_(_e57, per_pass);
+            if (_e58 == 0u) {
+                let _e61 = sum_1;
+                let _e62 = bad_1;
+                let _e64 = s_2;
+                let _e65 = div_u32_(_e64, per_pass);
+                pass_done(index_2, _e61, _e62, ((tile_2.frame + _e65) - 1u));
+                sum_1 = vec3(0f);
+                bad_1 = 0u;
+            }
+            let _e72 = s_2;
+            if (_e72 >= count_2) {
+                break;
+            }
+            let _e74 = s_2;
+            let _e76 = sample_camera_ray(pixel_5, (first_1 + _e74));
+            path = PathState(_e76, vec3(1f), vec3(0f), true);
+        }
     }
     return;
 }

@@ -21,6 +21,7 @@ struct FrameUniforms {
     background_type: u32,
     background_offset: u32,
     path_slots: u32,
+    passes_per_dispatch: u32,
 }
 
 struct Ray {
@@ -796,12 +797,28 @@ fn medium_at(p_4: vec3<f32>, exclude: u32) -> u32 {
     return _e62;
 }
 
+fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
+    var ray_7: Ray;
+
+    let frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed);
+    let _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4);
+    ray_7 = _e7;
+    ray_7.depth = 0u;
+    ray_7.kind = RAY_CAMERA;
+    let _e15 = ray_7.origin;
+    let _e17 = medium_at(_e15, NO_HIT);
+    ray_7.medium = _e17;
+    let _e18 = ray_7;
+    return _e18;
+}
+
 fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     let _e5 = node_point(header.min, header.max, vec3(65535u));
     return _e5;
 }
 
-fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -810,21 +827,21 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_7.tmax);
+    let _e7 = no_candidate(ray_8.tmax);
     best_2 = _e7;
-    let frame_2 = frame;
-    if (frame_2.instance_count == 0u) {
+    let frame_3 = frame;
+    if (frame_3.instance_count == 0u) {
         let _e14 = best_2;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_7.dir);
-    let base_2 = frame_2.tlas_root;
+    let _e16 = safe_inverse(ray_8.dir);
+    let base_2 = frame_3.tlas_root;
     let header_2 = nodes[base_2];
     let origin_5 = header_2.min;
     let scale_3 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_5, _e23, ray_7.origin, _e16, ray_7.tmin, _e27);
+    let _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
@@ -839,7 +856,7 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e52 = child_1;
                 let _e55 = best_2;
-                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_7, _e55, shadow_2);
+                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_8, _e55, shadow_2);
                 best_2 = _e56;
                 let _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -851,7 +868,7 @@ fn intersect_scene(ray_7: Ray, shadow_2: bool) -> Candidate {
             let _e63 = child_1;
             let n_8 = nodes[(base_2 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_8, origin_5, scale_3, ray_7, _e16, _e69);
+            let _e70 = children_entry(n_8, origin_5, scale_3, ray_8, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
@@ -905,22 +922,22 @@ fn load_ConstantBackground(offset_2: u32) -> ConstantBackground {
     return ConstantBackground(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn constant_background(b_4: ConstantBackground, ray_8: Ray) -> vec3<f32> {
+fn constant_background(b_4: ConstantBackground, ray_9: Ray) -> vec3<f32> {
     return b_4.color;
 }
 
-fn dispatch_miss(type_id_1: u32, offset_3: u32, ray_9: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_1: u32, offset_3: u32, ray_10: Ray) -> vec3<f32> {
     let _e2 = load_ConstantBackground(offset_3);
-    let _e3 = constant_background(_e2, ray_9);
+    let _e3 = constant_background(_e2, ray_10);
     return _e3;
 }
 
-fn miss(ray_10: Ray) -> vec3<f32> {
+fn miss(ray_11: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
-    let frame_3 = frame;
-    let _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_10);
+    let frame_4 = frame;
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11);
     return _e9;
 }
 
@@ -941,8 +958,8 @@ fn load_BlinnPhong(offset_4: u32) -> BlinnPhong {
     return BlinnPhong(_e5, vec3<f32>(bitcast<f32>(_e10), bitcast<f32>(_e16), bitcast<f32>(_e22)), vec3<f32>(bitcast<f32>(_e29), bitcast<f32>(_e35), bitcast<f32>(_e41)), bitcast<f32>(_e48), vec3<f32>(bitcast<f32>(_e54), bitcast<f32>(_e60), bitcast<f32>(_e66)), vec2<f32>(bitcast<f32>(_e73), bitcast<f32>(_e79)));
 }
 
-fn shading_normal(ray_11: Ray, hit_1: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_1.geometric_normal, ray_11.dir, hit_1.geometric_normal);
+fn shading_normal(ray_12: Ray, hit_1: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_1.geometric_normal, ray_12.dir, hit_1.geometric_normal);
     return faceForward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -976,10 +993,10 @@ fn srgb_channel(c_2: f32) -> f32 {
 fn texel_at(t: u32, xi: u32, yi: u32) -> vec4<f32> {
     let base_3 = params[t];
     let _e10 = params[(t + 1u)];
-    let index = ((yi * max(_e10, 1u)) + xi);
+    let index_1 = ((yi * max(_e10, 1u)) + xi);
     let format = params[(t + 3u)];
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        let _e25 = texels[(base_3 + index)];
+        let _e25 = texels[(base_3 + index_1)];
         let c_7 = unpack4x8unorm(_e25);
         let _e28 = srgb_channel(c_7.x);
         let _e30 = srgb_channel(c_7.y);
@@ -987,12 +1004,12 @@ fn texel_at(t: u32, xi: u32, yi: u32) -> vec4<f32> {
         return vec4<f32>(_e28, _e30, _e32, c_7.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
-        let _e40 = texels[(base_3 + index)];
+        let _e40 = texels[(base_3 + index_1)];
         return unpack4x8unorm(_e40);
     }
-    let _e47 = texels[(base_3 + (index * RGBA16F_TEXEL_WORDS))];
+    let _e47 = texels[(base_3 + (index_1 * RGBA16F_TEXEL_WORDS))];
     let rg = unpack2x16float(_e47);
-    let _e56 = texels[((base_3 + (index * RGBA16F_TEXEL_WORDS)) + 1u)];
+    let _e56 = texels[((base_3 + (index_1 * RGBA16F_TEXEL_WORDS)) + 1u)];
     let ba = unpack2x16float(_e56);
     return vec4<f32>(rg, ba);
 }
@@ -1135,23 +1152,23 @@ fn dispatch_light(type_id_2: u32, offset_6: u32, position_3: vec3<f32>, normal_4
 }
 
 fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_5: vec3<f32>) -> LightSample {
-    let frame_4 = frame;
-    if (i_2 >= frame_4.light_count) {
+    let frame_5 = frame;
+    if (i_2 >= frame_5.light_count) {
         return LightSample(vec3<f32>(0f, 1f, 0f), 0f, vec3(0f), 0f);
     }
-    let entry = (frame_4.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
+    let entry = (frame_5.light_table + (i_2 * LIGHT_ENTRY_STRIDE));
     let _e22 = params[entry];
     let _e27 = params[(entry + 1u)];
     let _e28 = dispatch_light(_e22, _e27, position_4, normal_5);
     return _e28;
 }
 
-fn blinn_phong_shade(m: BlinnPhong, ray_12: Ray, hit_2: Hit) -> vec3<f32> {
+fn blinn_phong_shade(m: BlinnPhong, ray_13: Ray, hit_2: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_3: u32;
 
-    let _e3 = shading_normal(ray_12, hit_2);
-    let _e5 = normalize_vec3f(ray_12.dir);
+    let _e3 = shading_normal(ray_13, hit_2);
+    let _e5 = normalize_vec3f(ray_13.dir);
     let v_3 = -(_e5);
     let _e12 = sample_texture(m.texture, (hit_2.uv * m.uv_scale));
     let kd = (m.diffuse * _e12.xyz);
@@ -1181,39 +1198,39 @@ fn blinn_phong_shade(m: BlinnPhong, ray_12: Ray, hit_2: Hit) -> vec3<f32> {
     return _e64;
 }
 
-fn dispatch_closest_hit(type_id_3: u32, offset_7: u32, ray_13: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_3: u32, offset_7: u32, ray_14: Ray, hit_3: Hit, secondary: vec3<f32>) -> vec3<f32> {
     let _e3 = load_BlinnPhong(offset_7);
-    let _e4 = blinn_phong_shade(_e3, ray_13, hit_3);
+    let _e4 = blinn_phong_shade(_e3, ray_14, hit_3);
     return _e4;
 }
 
-fn shade_direct(ray_14: Ray, c_3: Candidate) -> vec3<f32> {
+fn shade_direct(ray_15: Ray, c_3: Candidate) -> vec3<f32> {
     let inst_8 = instances[c_3.slot];
-    let _e6 = finish_hit(ray_14, c_3);
-    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_14, _e6, vec3(0f));
+    let _e6 = finish_hit(ray_15, c_3);
+    let _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_15, _e6, vec3(0f));
     return _e11;
 }
 
-fn dispatch_medium(type_id_4: u32, offset_8: u32, ray_15: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
+fn dispatch_medium(type_id_4: u32, offset_8: u32, ray_16: Ray, t_2: f32, radiance: vec3<f32>) -> vec3<f32> {
     return vec3<f32>();
 }
 
-fn through_medium(ray_16: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
+fn through_medium(ray_17: Ray, t_3: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     if !(HAS_MEDIA) {
         return radiance_1;
     }
-    if (ray_16.medium == 0u) {
+    if (ray_17.medium == 0u) {
         return radiance_1;
     }
-    let inst_9 = instances[(ray_16.medium - 1u)];
+    let inst_9 = instances[(ray_17.medium - 1u)];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_16, t_3, radiance_1);
+    let _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_17, t_3, radiance_1);
     return _e21;
 }
 
-fn dispatch_secondary_rays(type_id_5: u32, offset_9: u32, ray_17: Ray, hit_4: Hit) {
+fn dispatch_secondary_rays(type_id_5: u32, offset_9: u32, ray_18: Ray, hit_4: Hit) {
     return;
 }
 
@@ -1241,7 +1258,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     var t_4: f32;
     var stack: array<Frame, 1>;
     var depth: u32;
-    var ray_18: Ray;
+    var ray_19: Ray;
     var value: vec3<f32>;
     var have_value: bool;
     var s_ray: Ray;
@@ -1280,7 +1297,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
     }
     stack = array<Frame, 1>();
     depth = 0u;
-    ray_18 = camera_ray;
+    ray_19 = camera_ray;
     value = vec3(0f);
     have_value = false;
     s_ray = camera_ray;
@@ -1296,10 +1313,10 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
         let _e62 = have_value;
         let _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            let _e67 = ray_18;
+            let _e67 = ray_19;
             let _e69 = intersect_scene(_e67, false);
             s_c = _e69;
-            let _e70 = ray_18;
+            let _e70 = ray_19;
             s_ray = _e70;
             s_sum = vec3(0f);
             fresh = true;
@@ -1431,7 +1448,7 @@ fn trace(camera_ray: Ray) -> vec3<f32> {
             let _e284 = spawn_origin(hit_8, _e283, dir_6);
             let _e287 = F32_INF;
             let _e293 = medium;
-            ray_18 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
+            ray_19 = Ray(_e284, 0f, dir_6, bitcast<f32>(_e287), (parent.depth + 1u), RAY_SECONDARY, _e293);
         } else {
             let _e299 = stack[min(top_1, 0u)].ray;
             s_ray = _e299;
@@ -1460,64 +1477,72 @@ fn finite_or_zero(c_4: vec3<f32>) -> vec3<f32> {
     return select(vec3(0f), c_4, _e3);
 }
 
-fn render_pixel(pixel_4: vec2<u32>) {
-    var sum: vec3<f32>;
-    var bad: u32;
-    var s_1: u32;
-    var ray_19: Ray;
+fn pass_done(index: u32, sum: vec3<f32>, bad: u32, pass_: u32) {
+    let _e5 = ray_count;
+    atomicAdd((&counters[1]), _e5);
+    ray_count = 0u;
+    let _e10 = frame;
+    let _e13 = vec4<f32>(sum, f32(_e10.samples_per_pass));
+    if (pass_ == 0u) {
+        accum[index] = _e13;
+    } else {
+        let _e18 = accum[index];
+        accum[index] = (_e18 + _e13);
+    }
+    if (bad > 0u) {
+        atomicAdd((&counters[0]), bad);
+    }
+    return;
+}
 
-    let frame_5 = frame;
+fn render_pixel(pixel_5: vec2<u32>) {
+    var sum_1: vec3<f32>;
+    var bad_1: u32;
+    var s_1: u32;
+
+    let frame_6 = frame;
     let tile_2 = tile;
-    sum = vec3(0f);
-    bad = 0u;
-    let end_1 = frame_5.samples_per_pass;
+    let index_2 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
+    let per_pass = frame_6.samples_per_pass;
+    let first_1 = (tile_2.frame * per_pass);
+    let count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
+    sum_1 = vec3(0f);
+    bad_1 = 0u;
     s_1 = 0u;
     loop {
-        let _e13 = s_1;
-        if (_e13 >= end_1) {
+        let _e25 = s_1;
+        if (_e25 >= count_2) {
             break;
         }
-        let _e18 = s_1;
-        let sample_4 = ((tile_2.frame * frame_5.samples_per_pass) + _e18);
-        rng_seed(pixel_4, sample_4, frame_5.seed);
-        let _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4);
-        ray_19 = _e23;
-        ray_19.depth = 0u;
-        ray_19.kind = RAY_CAMERA;
-        let _e31 = ray_19.origin;
-        let _e33 = medium_at(_e31, NO_HIT);
-        ray_19.medium = _e33;
-        let _e34 = ray_19;
-        let _e35 = trace(_e34);
-        let _e36 = is_finite_vec3f(_e35);
-        if all(_e36) {
-            let _e38 = sum;
-            sum = (_e38 + _e35);
+        let _e27 = s_1;
+        let _e29 = sample_camera_ray(pixel_5, (first_1 + _e27));
+        let _e30 = trace(_e29);
+        let _e31 = is_finite_vec3f(_e30);
+        if all(_e31) {
+            let _e33 = sum_1;
+            sum_1 = (_e33 + _e30);
         } else {
-            let _e40 = sum;
-            let _e41 = finite_or_zero(_e35);
-            sum = (_e40 + _e41);
-            let _e43 = bad;
-            bad = (_e43 + 1u);
+            let _e35 = sum_1;
+            let _e36 = finite_or_zero(_e30);
+            sum_1 = (_e35 + _e36);
+            let _e38 = bad_1;
+            bad_1 = (_e38 + 1u);
+        }
+        let _e41 = s_1;
+        let _e44 = rem_u32_((_e41 + 1u), per_pass);
+        if (_e44 == 0u) {
+            let _e47 = sum_1;
+            let _e48 = bad_1;
+            let _e50 = s_1;
+            let _e51 = div_u32_(_e50, per_pass);
+            pass_done(index_2, _e47, _e48, (tile_2.frame + _e51));
+            sum_1 = vec3(0f);
+            bad_1 = 0u;
         }
         continuing {
-            let _e46 = s_1;
-            s_1 = (_e46 + 1u);
+            let _e56 = s_1;
+            s_1 = (_e56 + 1u);
         }
-    }
-    let _e50 = ray_count;
-    atomicAdd((&counters[1]), _e50);
-    let _e59 = sum;
-    let _e62 = vec4<f32>(_e59, f32(frame_5.samples_per_pass));
-    let _e63 = bad;
-    if (tile_2.frame == 0u) {
-        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = _e62;
-    } else {
-        let _e69 = accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)];
-        accum[((pixel_4.y * tile_2.image_size.x) + pixel_4.x)] = (_e69 + _e62);
-    }
-    if (_e63 > 0u) {
-        atomicAdd((&counters[0]), _e63);
     }
     return;
 }

@@ -37,9 +37,7 @@ struct FrameUniforms {
     uint background_type;
     uint background_offset;
     uint path_slots;
-};
-struct type_3 {
-    uint inner[15];
+    uint passes_per_dispatch;
 };
 struct Ray {
     metal::packed_float3 origin;
@@ -50,6 +48,9 @@ struct Ray {
     uint kind;
     uint medium;
     char _pad7[4];
+};
+struct type_4 {
+    uint inner[15];
 };
 typedef uint type_5[1];
 struct SupersampledPinhole {
@@ -327,7 +328,7 @@ void rng_resume(
     uint sample,
     uint seed,
     uint state,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     scratch.inner[metal::min(SCRATCH_RNG_INDEX, 14u)] = sample;
@@ -343,7 +344,7 @@ void rng_seed(
     metal::uint2 pixel_1,
     uint sample_1,
     uint seed_1,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     rng_resume(pixel_1, sample_1, seed_1, 0u, scratch, rng_state);
@@ -422,7 +423,7 @@ uint sobol_second_reversed(
 }
 
 float rand_next(
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     uint x_2 = {};
@@ -445,7 +446,7 @@ float rand_next(
 }
 
 metal::float2 rand2_next(
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state
 ) {
     float _e0 = rand_next(scratch, rng_state);
@@ -464,7 +465,7 @@ Ray supersampled_ray(
     metal::uint2 pixel_2,
     uint sample_2,
     constant TileParams& tile,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     thread uint& F32_INF
 ) {
@@ -493,7 +494,7 @@ Ray dispatch_ray_generation(
     metal::uint2 pixel_3,
     uint sample_3,
     constant TileParams& tile,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -1396,8 +1397,40 @@ uint medium_at(
     return _e62;
 }
 
+Ray sample_camera_ray(
+    metal::uint2 pixel_4,
+    uint sample_4,
+    constant TileParams& tile,
+    constant FrameUniforms& frame,
+    thread type_4& scratch,
+    thread uint& rng_state,
+    device type_5 const& params,
+    thread uint& F32_INF,
+    device type_9 const& instances,
+    device type_10 const& nodes,
+    device type_11 const& triangles,
+    thread type_13& traversal_stack,
+    thread uint& F32_NEG_INF,
+    thread float& hit_error,
+    device type_17 const& attributes,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    Ray ray_13 = {};
+    FrameUniforms frame_2 = frame;
+    rng_seed(pixel_4, sample_4, frame_2.seed, scratch, rng_state);
+    Ray _e7 = dispatch_ray_generation(frame_2.camera_type, frame_2.camera_offset, pixel_4, sample_4, tile, scratch, rng_state, params, F32_INF, _buffer_sizes);
+    ray_13 = _e7;
+    ray_13.depth = 0u;
+    ray_13.kind = RAY_CAMERA;
+    metal::float3 _e15 = ray_13.origin;
+    uint _e17 = medium_at(_e15, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, _buffer_sizes);
+    ray_13.medium = _e17;
+    Ray _e18 = ray_13;
+    return _e18;
+}
+
 Candidate intersect_scene(
-    Ray ray_13,
+    Ray ray_14,
     bool shadow_2,
     constant FrameUniforms& frame,
     device type_5 const& params,
@@ -1417,21 +1450,21 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_13.tmax);
+    Candidate _e7 = no_candidate(ray_14.tmax);
     best_3 = _e7;
-    FrameUniforms frame_2 = frame;
-    if (frame_2.instance_count == 0u) {
+    FrameUniforms frame_3 = frame;
+    if (frame_3.instance_count == 0u) {
         Candidate _e14 = best_3;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_13.dir);
-    uint base_3 = frame_2.tlas_root;
+    metal::float3 _e16 = safe_inverse(ray_14.dir);
+    uint base_3 = frame_3.tlas_root;
     GpuNode header_3 = nodes[base_3];
     metal::float3 origin_5 = header_3.min;
     metal::float3 scale_3 = header_3.max;
     metal::float3 _e23 = node_frame_hi(header_3);
     float _e27 = best_3.t;
-    float _e28 = slab(origin_5, _e23, ray_13.origin, _e16, ray_13.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_14.origin, _e16, ray_14.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_3;
@@ -1449,7 +1482,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_3;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_13, _e55, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_14, _e55, shadow_2, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, _buffer_sizes);
                 best_3 = _e56;
                 uint _e58 = best_3.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1461,7 +1494,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_10 = nodes[base_3 + _e63];
             float _e69 = best_3.t;
-            metal::float2 _e70 = children_entry(n_10, origin_5, scale_3, ray_13, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_10, origin_5, scale_3, ray_14, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1575,10 +1608,10 @@ metal::float4 texel_at(
 ) {
     uint base_4 = params[t_1];
     uint _e10 = params[t_1 + 1u];
-    uint index = (yi * metal::max(_e10, 1u)) + xi;
+    uint index_1 = (yi * metal::max(_e10, 1u)) + xi;
     uint format = params[t_1 + 3u];
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
-        uint _e25 = texels[base_4 + index];
+        uint _e25 = texels[base_4 + index_1];
         metal::float4 c_8 = metal::unpack_unorm4x8_to_float(_e25);
         float _e28 = srgb_channel(c_8.x);
         float _e30 = srgb_channel(c_8.y);
@@ -1586,12 +1619,12 @@ metal::float4 texel_at(
         return metal::float4(_e28, _e30, _e32, c_8.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
-        uint _e40 = texels[base_4 + index];
+        uint _e40 = texels[base_4 + index_1];
         return metal::unpack_unorm4x8_to_float(_e40);
     }
-    uint _e47 = texels[base_4 + (index * RGBA16F_TEXEL_WORDS)];
+    uint _e47 = texels[base_4 + (index_1 * RGBA16F_TEXEL_WORDS)];
     metal::float2 rg = float2(as_type<half2>(_e47));
-    uint _e56 = texels[(base_4 + (index * RGBA16F_TEXEL_WORDS)) + 1u];
+    uint _e56 = texels[(base_4 + (index_1 * RGBA16F_TEXEL_WORDS)) + 1u];
     metal::float2 ba = float2(as_type<half2>(_e56));
     return metal::float4(rg, ba);
 }
@@ -1635,12 +1668,12 @@ metal::float4 sample_texture(
 
 metal::float3 skybox(
     Skybox b_5,
-    Ray ray_14,
+    Ray ray_15,
     device type_5 const& params,
     device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_14.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_15.dir);
     bool pole = (_e3.x == 0.0) && (_e3.z == 0.0);
     float longitude = (pole ? 0.0 : metal::atan2(_e3.x, -(_e3.z))) - ((b_5.rotation) * 0.017453292519943295474);
     float latitude = metal::acos(metal::min(metal::max(_e3.y, -1.0), 1.0));
@@ -1652,18 +1685,18 @@ metal::float3 skybox(
 metal::float3 dispatch_miss(
     uint type_id_2,
     uint offset_6,
-    Ray ray_15,
+    Ray ray_16,
     device type_5 const& params,
     device type_5 const& texels,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Skybox _e2 = load_Skybox(offset_6, params, _buffer_sizes);
-    metal::float3 _e3 = skybox(_e2, ray_15, params, texels, _buffer_sizes);
+    metal::float3 _e3 = skybox(_e2, ray_16, params, texels, _buffer_sizes);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_16,
+    Ray ray_17,
     constant FrameUniforms& frame,
     device type_5 const& params,
     device type_5 const& texels,
@@ -1672,8 +1705,8 @@ metal::float3 miss(
     if (!(HAS_BACKGROUND)) {
         return metal::float3(0.0);
     }
-    FrameUniforms frame_3 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_3.background_type, frame_3.background_offset, ray_16, params, texels, _buffer_sizes);
+    FrameUniforms frame_4 = frame;
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_17, params, texels, _buffer_sizes);
     return _e9;
 }
 
@@ -1689,10 +1722,10 @@ Lambert load_Lambert(
 }
 
 metal::float3 shading_normal(
-    Ray ray_17,
+    Ray ray_18,
     Hit hit_1
 ) {
-    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_17.dir, hit_1.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_1.geometric_normal, ray_18.dir, hit_1.geometric_normal);
     return metal::faceforward(hit_1.normal, -(ng), hit_1.normal);
 }
 
@@ -1723,7 +1756,7 @@ PointLight load_PointLight(
 float shadow_preset(
     metal::float3 normal,
     metal::float3 dir,
-    thread type_3& scratch
+    thread type_4& scratch
 ) {
     uint mode_1 = scratch.inner[metal::min(SCRATCH_SHADOW_MODE, 14u)];
     if (mode_1 == SHADOW_UNOCCLUDED) {
@@ -1799,7 +1832,7 @@ float shadow_query(
     metal::float3 dir_2,
     float dist_1,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1825,7 +1858,7 @@ LightSample point_light(
     metal::float3 position_2,
     metal::float3 normal_3,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1857,7 +1890,7 @@ LightSample dispatch_light(
     metal::float3 position_3,
     metal::float3 normal_4,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1879,7 +1912,7 @@ LightSample sample_light_query(
     metal::float3 position_4,
     metal::float3 normal_5,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1891,11 +1924,11 @@ LightSample sample_light_query(
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    FrameUniforms frame_4 = frame;
-    if (i_4 >= frame_4.light_count) {
+    FrameUniforms frame_5 = frame;
+    if (i_4 >= frame_5.light_count) {
         return LightSample {metal::float3(0.0, 1.0, 0.0), 0.0, metal::float3(0.0), 0.0};
     }
-    uint entry = frame_4.light_table + (i_4 * LIGHT_ENTRY_STRIDE);
+    uint entry = frame_5.light_table + (i_4 * LIGHT_ENTRY_STRIDE);
     uint _e22 = params[entry];
     uint _e27 = params[entry + 1u];
     LightSample _e28 = dispatch_light(_e22, _e27, position_4, normal_5, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
@@ -1904,10 +1937,10 @@ LightSample sample_light_query(
 
 metal::float3 lambert_shade(
     Lambert m_2,
-    Ray ray_18,
+    Ray ray_19,
     Hit hit_2,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1921,7 +1954,7 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color = {};
     uint i_5 = {};
-    metal::float3 _e3 = shading_normal(ray_18, hit_2);
+    metal::float3 _e3 = shading_normal(ray_19, hit_2);
     color = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
     i_5 = 0u;
@@ -1951,11 +1984,11 @@ metal::float3 lambert_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_10,
-    Ray ray_19,
+    Ray ray_20,
     Hit hit_3,
     metal::float3 secondary,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1968,15 +2001,15 @@ metal::float3 dispatch_closest_hit(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Lambert _e3 = load_Lambert(offset_10, params, _buffer_sizes);
-    metal::float3 _e4 = lambert_shade(_e3, ray_19, hit_3, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
+    metal::float3 _e4 = lambert_shade(_e3, ray_20, hit_3, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
     return _e4;
 }
 
 metal::float3 shade_direct(
-    Ray ray_20,
+    Ray ray_21,
     Candidate c_3,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -1990,15 +2023,15 @@ metal::float3 shade_direct(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_8 = instances[c_3.slot];
-    Hit _e6 = finish_hit(ray_20, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
-    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
+    Hit _e6 = finish_hit(ray_21, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
+    metal::float3 _e11 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e6, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, ray_count, _buffer_sizes);
     return _e11;
 }
 
 metal::float3 dispatch_medium(
     uint type_id_5,
     uint offset_11,
-    Ray ray_21,
+    Ray ray_22,
     float t_3,
     metal::float3 radiance
 ) {
@@ -2006,7 +2039,7 @@ metal::float3 dispatch_medium(
 }
 
 metal::float3 through_medium(
-    Ray ray_22,
+    Ray ray_23,
     float t_4,
     metal::float3 radiance_1,
     device type_9 const& instances,
@@ -2015,21 +2048,21 @@ metal::float3 through_medium(
     if (!(HAS_MEDIA)) {
         return radiance_1;
     }
-    if (ray_22.medium == 0u) {
+    if (ray_23.medium == 0u) {
         return radiance_1;
     }
-    GpuInstance inst_9 = instances[ray_22.medium - 1u];
+    GpuInstance inst_9 = instances[ray_23.medium - 1u];
     if ((inst_9.flags & FLAG_MEDIUM) == 0u) {
         return radiance_1;
     }
-    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_22, t_4, radiance_1);
+    metal::float3 _e21 = dispatch_medium(inst_9.material_type, inst_9.material_offset, ray_23, t_4, radiance_1);
     return _e21;
 }
 
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_12,
-    Ray ray_23,
+    Ray ray_24,
     Hit hit_4
 ) {
     return;
@@ -2065,7 +2098,7 @@ metal::float3 spawn_origin(
 metal::float3 trace(
     Ray camera_ray,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
     device type_9 const& instances,
@@ -2086,7 +2119,7 @@ metal::float3 trace(
     float t_5 = {};
     type_20 stack_1 = {};
     uint depth = {};
-    Ray ray_24 = {};
+    Ray ray_25 = {};
     metal::float3 value = {};
     bool have_value = {};
     Ray s_ray = {};
@@ -2124,7 +2157,7 @@ metal::float3 trace(
     }
     stack_1 = type_20 {};
     depth = 0u;
-    ray_24 = camera_ray;
+    ray_25 = camera_ray;
     value = metal::float3(0.0);
     have_value = false;
     s_ray = camera_ray;
@@ -2143,10 +2176,10 @@ metal::float3 trace(
         bool _e62 = have_value;
         bool _e64 = waiting;
         if (!(_e62) && !(_e64)) {
-            Ray _e67 = ray_24;
+            Ray _e67 = ray_25;
             Candidate _e69 = intersect_scene(_e67, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, ray_count, _buffer_sizes);
             s_c = _e69;
-            Ray _e70 = ray_24;
+            Ray _e70 = ray_25;
             s_ray = _e70;
             s_sum = metal::float3(0.0);
             fresh = true;
@@ -2283,7 +2316,7 @@ metal::float3 trace(
             metal::float3 _e284 = spawn_origin(hit_9, _e283, dir_7);
             uint _e287 = F32_INF;
             uint _e293 = medium;
-            ray_24 = Ray {_e284, 0.0, dir_7, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
+            ray_25 = Ray {_e284, 0.0, dir_7, as_type<float>(_e287), parent.depth + 1u, RAY_SECONDARY, _e293};
         } else {
             Ray _e299 = stack_1.inner[metal::min(top_1, 3u)].ray;
             s_ray = _e299;
@@ -2316,11 +2349,39 @@ metal::float3 finite_or_zero(
     return metal::select(metal::float3(0.0), c_4, _e3);
 }
 
+void pass_done(
+    uint index,
+    metal::float3 sum,
+    uint bad,
+    uint pass,
+    constant FrameUniforms& frame,
+    thread uint& ray_count,
+    device type_23& counters,
+    device type_11& accum,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e5, metal::memory_order_relaxed);
+    ray_count = 0u;
+    FrameUniforms _e10 = frame;
+    metal::float4 _e13 = metal::float4(sum, static_cast<float>(_e10.samples_per_pass));
+    if (pass == 0u) {
+        accum[index] = _e13;
+    } else {
+        metal::float4 _e18 = accum[index];
+        accum[index] = _e18 + _e13;
+    }
+    if (bad > 0u) {
+        metal::atomic_fetch_add_explicit(&counters[0], bad, metal::memory_order_relaxed);
+    }
+    return;
+}
+
 void render_pixel(
-    metal::uint2 pixel_4,
+    metal::uint2 pixel_5,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2340,15 +2401,17 @@ void render_pixel(
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 sum = {};
-    uint bad = {};
+    metal::float3 sum_1 = {};
+    uint bad_1 = {};
     uint s_2 = {};
-    Ray ray_25 = {};
-    FrameUniforms frame_5 = frame;
+    FrameUniforms frame_6 = frame;
     TileParams tile_2 = tile;
-    sum = metal::float3(0.0);
-    bad = 0u;
-    uint end_2 = frame_5.samples_per_pass;
+    uint index_2 = (pixel_5.y * tile_2.image_size.x) + pixel_5.x;
+    uint per_pass = frame_6.samples_per_pass;
+    uint first_2 = tile_2.frame * per_pass;
+    uint count_3 = per_pass * metal::max(frame_6.passes_per_dispatch, 1u);
+    sum_1 = metal::float3(0.0);
+    bad_1 = 0u;
     s_2 = 0u;
     uint2 loop_bound_10 = uint2(4294967295u);
     bool loop_init_5 = true;
@@ -2356,51 +2419,39 @@ void render_pixel(
         if (metal::all(loop_bound_10 == uint2(0u))) { break; }
         loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
         if (!loop_init_5) {
-            uint _e46 = s_2;
-            s_2 = _e46 + 1u;
+            uint _e56 = s_2;
+            s_2 = _e56 + 1u;
         }
         loop_init_5 = false;
-        uint _e13 = s_2;
-        if (_e13 >= end_2) {
+        uint _e25 = s_2;
+        if (_e25 >= count_3) {
             break;
         }
-        uint _e18 = s_2;
-        uint sample_4 = (tile_2.frame * frame_5.samples_per_pass) + _e18;
-        rng_seed(pixel_4, sample_4, frame_5.seed, scratch, rng_state);
-        Ray _e23 = dispatch_ray_generation(frame_5.camera_type, frame_5.camera_offset, pixel_4, sample_4, tile, scratch, rng_state, params, F32_INF, _buffer_sizes);
-        ray_25 = _e23;
-        ray_25.depth = 0u;
-        ray_25.kind = RAY_CAMERA;
-        metal::float3 _e31 = ray_25.origin;
-        uint _e33 = medium_at(_e31, NO_HIT, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, _buffer_sizes);
-        ray_25.medium = _e33;
-        Ray _e34 = ray_25;
-        metal::float3 _e35 = trace(_e34, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-        metal::bool3 _e36 = is_finite_vec3f(_e35);
-        if (metal::all(_e36)) {
-            metal::float3 _e38 = sum;
-            sum = _e38 + _e35;
+        uint _e27 = s_2;
+        Ray _e29 = sample_camera_ray(pixel_5, first_2 + _e27, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, _buffer_sizes);
+        metal::float3 _e30 = trace(_e29, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        metal::bool3 _e31 = is_finite_vec3f(_e30);
+        if (metal::all(_e31)) {
+            metal::float3 _e33 = sum_1;
+            sum_1 = _e33 + _e30;
         } else {
-            metal::float3 _e40 = sum;
-            metal::float3 _e41 = finite_or_zero(_e35);
-            sum = _e40 + _e41;
-            uint _e43 = bad;
-            bad = _e43 + 1u;
+            metal::float3 _e35 = sum_1;
+            metal::float3 _e36 = finite_or_zero(_e30);
+            sum_1 = _e35 + _e36;
+            uint _e38 = bad_1;
+            bad_1 = _e38 + 1u;
         }
-    }
-    uint _e50 = ray_count;
-    metal::atomic_fetch_add_explicit(&counters[1], _e50, metal::memory_order_relaxed);
-    metal::float3 _e59 = sum;
-    metal::float4 _e62 = metal::float4(_e59, static_cast<float>(frame_5.samples_per_pass));
-    uint _e63 = bad;
-    if (tile_2.frame == 0u) {
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e62;
-    } else {
-        metal::float4 _e69 = accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x];
-        accum[(pixel_4.y * tile_2.image_size.x) + pixel_4.x] = _e69 + _e62;
-    }
-    if (_e63 > 0u) {
-        metal::atomic_fetch_add_explicit(&counters[0], _e63, metal::memory_order_relaxed);
+        uint _e41 = s_2;
+        uint _e44 = rem_u32_(_e41 + 1u, per_pass);
+        if (_e44 == 0u) {
+            metal::float3 _e47 = sum_1;
+            uint _e48 = bad_1;
+            uint _e50 = s_2;
+            uint _e51 = div_u32_(_e50, per_pass);
+            pass_done(index_2, _e47, _e48, tile_2.frame + _e51, frame, ray_count, counters, accum, _buffer_sizes);
+            sum_1 = metal::float3(0.0);
+            bad_1 = 0u;
+        }
     }
     return;
 }
@@ -2409,7 +2460,7 @@ void render_invocation(
     metal::uint2 id_1,
     constant TileParams& tile,
     constant FrameUniforms& frame,
-    thread type_3& scratch,
+    thread type_4& scratch,
     thread uint& rng_state,
     device type_5 const& params,
     thread uint& F32_INF,
@@ -2454,7 +2505,7 @@ struct renderInput {
 , device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
-    type_3 scratch = {};
+    type_4 scratch = {};
     uint rng_state = {};
     uint F32_INF = 2139095040u;
     type_13 traversal_stack = {};
