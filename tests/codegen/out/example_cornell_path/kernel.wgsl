@@ -24,6 +24,11 @@ struct FrameUniforms {
     passes_per_dispatch: u32,
 }
 
+struct PassSum {
+    sum: vec3<f32>,
+    bad: u32,
+}
+
 struct Ray {
     origin: vec3<f32>,
     tmin: f32,
@@ -407,8 +412,8 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_3 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_3 * tiny), (abs(d) < tiny));
+    let s_4 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_4 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
@@ -434,20 +439,20 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let _e18 = triangles[((slot * 3u) + 1u)];
     let b_4 = (_e18.xyz - r_1.origin);
     let _e28 = triangles[((slot * 3u) + 2u)];
-    let c_4 = (_e28.xyz - r_1.origin);
+    let c_5 = (_e28.xyz - r_1.origin);
     let ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
     let ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
     let bx = (b_4[min(r_1.kx, 2u)] - (r_1.shear.x * b_4[min(r_1.kz, 2u)]));
     let by = (b_4[min(r_1.ky, 2u)] - (r_1.shear.y * b_4[min(r_1.kz, 2u)]));
-    let cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
-    let cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
+    let cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
+    let cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
     let u_1 = ((cx * by) - (cy * bx));
     let v_2 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
     let outside = ((((u_1 < 0f) || (v_2 < 0f)) || (w < 0f)) && (((u_1 > 0f) || (v_2 > 0f)) || (w > 0f)));
     let det = ((u_1 + v_2) + w);
     let rcp = (1f / det);
-    let t = ((((u_1 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    let t = ((((u_1 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_4[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
     let hit_7 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t >= tmin)) && (t <= tmax_1));
     let _e173 = F32_INF;
     return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t, (v_2 * rcp), (w * rcp)), hit_7);
@@ -546,10 +551,10 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
                     let _e58 = triangles[((prim * 3u) + 1u)];
                     let tag = bitcast<u32>(_e58.w);
                     let owner = select(slot_1, ((inst_2.object + tag) - 1u), (tag != 0u));
-                    let c_5 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
-                    let _e73 = accept(inst_2, world_ray, c_5);
+                    let c_6 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
+                    let _e73 = accept(inst_2, world_ray, c_6);
                     if _e73 {
-                        best = c_5;
+                        best = c_6;
                         if shadow {
                             let _e74 = best;
                             return _e74;
@@ -664,9 +669,9 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     let _e14 = n_1.z;
     if (_e14 < 0f) {
         let _e21 = n_1;
-        let s_4 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_5 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n_1;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_4);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_5);
         let _e37 = n_1.z;
         n_1 = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -698,10 +703,10 @@ fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
         let w_2 = ((1f - b_5.x) - b_5.y);
         let e1_ = (_e42.v1_ - _e42.v0_);
         let e2_ = (_e42.v2_ - _e42.v0_);
-        let p_7 = (_e42.v0_ + ((e1_ * vec3(b_5.x)) + (e2_ * vec3(b_5.y))));
-        let _e65 = point_to_world(inst_7, p_7);
+        let p_8 = (_e42.v0_ + ((e1_ * vec3(b_5.x)) + (e2_ * vec3(b_5.y))));
+        let _e65 = point_to_world(inst_7, p_8);
         hit.position = _e65;
-        let _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_5.x)), (e2_ * vec3(b_5.y)), p_7);
+        let _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_5.x)), (e2_ * vec3(b_5.y)), p_8);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
         let a0_ = attributes[(c_1.primitive * 2u)];
@@ -1091,14 +1096,14 @@ fn shadow_query(position_1: vec3<f32>, normal_2: vec3<f32>, dir_4: vec3<f32>, di
 }
 
 fn quad_light(l: QuadLight, position_2: vec3<f32>, normal_3: vec3<f32>) -> LightSample {
-    let c_6 = cross(l.edge_u, l.edge_v);
-    let area = length(c_6);
+    let c_7 = cross(l.edge_u, l.edge_v);
+    let area = length(c_7);
     let _e7 = rand2_next();
     let to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_2);
     let dist2_ = dot(to_light, to_light);
     let dist_2 = sqrt(dist2_);
     let dir_8 = (to_light / vec3(max(dist_2, 0.00000000000000000001f)));
-    let cos_light = (-(dot(dir_8, c_6)) / max(area, 0.000000000000000000000000000001f));
+    let cos_light = (-(dot(dir_8, c_7)) / max(area, 0.000000000000000000000000000001f));
     if (!((cos_light > 0f)) || !((dist2_ > 0f))) {
         return LightSample(dir_8, dist_2, vec3(0f), 0f);
     }
@@ -1170,10 +1175,10 @@ fn path_diffuse_shade(m_2: PathDiffuse, ray_15: Ray, hit_4: Hit, secondary: vec3
         }
         let _e20 = i_4;
         let _e22 = sample_light_above_query(_e20, hit_4.position, ng_1);
-        let c_7 = max(dot(n_11, _e22.dir), 0f);
+        let c_8 = max(dot(n_11, _e22.dir), 0f);
         let _e27 = direct;
-        let _e31 = mis_light_weight(_e22, (c_7 * INV_PI));
-        direct = (_e27 + (_e22.radiance * vec3((c_7 * _e31))));
+        let _e31 = mis_light_weight(_e22, (c_8 * INV_PI));
+        direct = (_e27 + (_e22.radiance * vec3((c_8 * _e31))));
         continuing {
             let _e36 = i_4;
             i_4 = (_e36 + 1u);
@@ -1303,39 +1308,59 @@ fn finite_or_zero(c_3: vec3<f32>) -> vec3<f32> {
     return select(vec3(0f), c_3, _e3);
 }
 
-fn pass_done(index: u32, sum: vec3<f32>, bad: u32, pass_: u32) {
-    let _e5 = ray_count;
-    atomicAdd((&counters[1]), _e5);
-    ray_count = 0u;
-    let _e10 = frame;
-    let _e13 = vec4<f32>(sum, f32(_e10.samples_per_pass));
-    if (pass_ == 0u) {
-        accum[index] = _e13;
+fn add_sample(p_7: PassSum, c_4: vec3<f32>, s_2: u32, index: u32, first_pass: u32, per_pass: u32) -> PassSum {
+    var next: PassSum;
+
+    next = p_7;
+    let _e7 = is_finite_vec3f(c_4);
+    if all(_e7) {
+        let _e10 = next.sum;
+        next.sum = (_e10 + c_4);
     } else {
-        let _e18 = accum[index];
-        accum[index] = (_e18 + _e13);
+        let _e13 = next.sum;
+        let _e14 = finite_or_zero(c_4);
+        next.sum = (_e13 + _e14);
+        let _e17 = next.bad;
+        next.bad = (_e17 + 1u);
     }
-    if (bad > 0u) {
-        atomicAdd((&counters[0]), bad);
+    let _e22 = rem_u32_((s_2 + 1u), per_pass);
+    if (_e22 != 0u) {
+        let _e25 = next;
+        return _e25;
     }
-    return;
+    let _e27 = ray_count;
+    atomicAdd((&counters[1]), _e27);
+    ray_count = 0u;
+    let _e31 = div_u32_(s_2, per_pass);
+    let pass_ = (first_pass + _e31);
+    let _e34 = next.sum;
+    let _e36 = vec4<f32>(_e34, f32(per_pass));
+    let _e38 = next.bad;
+    if (pass_ == 0u) {
+        accum[index] = _e36;
+    } else {
+        let _e43 = accum[index];
+        accum[index] = (_e43 + _e36);
+    }
+    if (_e38 > 0u) {
+        atomicAdd((&counters[0]), _e38);
+    }
+    return PassSum(vec3(0f), 0u);
 }
 
 fn render_pixel(pixel_5: vec2<u32>) {
-    var sum_1: vec3<f32>;
-    var bad_1: u32;
-    var s_2: u32;
+    var sums: PassSum;
+    var s_3: u32;
     var path: PathState;
 
     let frame_6 = frame;
     let tile_2 = tile;
     let index_1 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
-    let per_pass = frame_6.samples_per_pass;
-    let first_1 = (tile_2.frame * per_pass);
-    let count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
-    sum_1 = vec3(0f);
-    bad_1 = 0u;
-    s_2 = 0u;
+    let per_pass_1 = frame_6.samples_per_pass;
+    let first_1 = (tile_2.frame * per_pass_1);
+    let count_2 = (per_pass_1 * max(frame_6.passes_per_dispatch, 1u));
+    sums = PassSum(vec3(0f), 0u);
+    s_3 = 0u;
     let _e25 = sample_camera_ray(pixel_5, first_1);
     path = PathState(_e25, vec3(1f), vec3(0f), true);
     loop {
@@ -1346,38 +1371,20 @@ fn render_pixel(pixel_5: vec2<u32>) {
         path = _e38;
         let _e40 = path.live;
         if !(_e40) {
-            let c_8 = path.radiance;
-            let _e44 = is_finite_vec3f(c_8);
-            if all(_e44) {
-                let _e46 = sum_1;
-                sum_1 = (_e46 + c_8);
-            } else {
-                let _e48 = sum_1;
-                let _e49 = finite_or_zero(c_8);
-                sum_1 = (_e48 + _e49);
-                let _e51 = bad_1;
-                bad_1 = (_e51 + 1u);
-            }
-            let _e54 = s_2;
-            s_2 = (_e54 + 1u);
-            let _e57 = s_2;
-            let _e58 = rem_u32_(_e57, per_pass);
-            if (_e58 == 0u) {
-                let _e61 = sum_1;
-                let _e62 = bad_1;
-                let _e64 = s_2;
-                let _e65 = div_u32_(_e64, per_pass);
-                pass_done(index_1, _e61, _e62, ((tile_2.frame + _e65) - 1u));
-                sum_1 = vec3(0f);
-                bad_1 = 0u;
-            }
-            let _e72 = s_2;
-            if (_e72 >= count_2) {
+            let _e42 = sums;
+            let _e44 = path.radiance;
+            let _e45 = s_3;
+            let _e47 = add_sample(_e42, _e44, _e45, index_1, tile_2.frame, per_pass_1);
+            sums = _e47;
+            let _e48 = s_3;
+            s_3 = (_e48 + 1u);
+            let _e51 = s_3;
+            if (_e51 >= count_2) {
                 break;
             }
-            let _e74 = s_2;
-            let _e76 = sample_camera_ray(pixel_5, (first_1 + _e74));
-            path = PathState(_e76, vec3(1f), vec3(0f), true);
+            let _e53 = s_3;
+            let _e55 = sample_camera_ray(pixel_5, (first_1 + _e53));
+            path = PathState(_e55, vec3(1f), vec3(0f), true);
         }
     }
     return;

@@ -27,6 +27,10 @@ struct FrameUniforms {
     uint path_slots;
     uint passes_per_dispatch;
 };
+struct PassSum {
+    vec3 sum;
+    uint bad;
+};
 struct Ray {
     vec3 origin;
     float tmin;
@@ -388,8 +392,8 @@ Ray to_object(GpuInstance inst, Ray ray) {
 
 vec3 safe_inverse(vec3 d) {
     vec3 tiny = vec3(1.1754944e-38);
-    vec3 s_2 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
-    vec3 dd = mix(d, (s_2 * tiny), lessThan(abs(d), tiny));
+    vec3 s_3 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
+    vec3 dd = mix(d, (s_3 * tiny), lessThan(abs(d), tiny));
     return (vec3(1.0) / dd);
 }
 
@@ -415,20 +419,20 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
     vec3 b_5 = (_e18.xyz - r_1.origin);
     vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
-    vec3 c_4 = (_e28.xyz - r_1.origin);
+    vec3 c_5 = (_e28.xyz - r_1.origin);
     float ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
     float ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
     float bx = (b_5[min(r_1.kx, 2u)] - (r_1.shear.x * b_5[min(r_1.kz, 2u)]));
     float by = (b_5[min(r_1.ky, 2u)] - (r_1.shear.y * b_5[min(r_1.kz, 2u)]));
-    float cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
-    float cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
+    float cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
+    float cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
     float v_2 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
     float det = ((u + v_2) + w);
     float rcp = (1.0 / det);
-    float t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    float t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
     bool hit_9 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_9 ? vec3(t_4, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
@@ -532,10 +536,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                     vec4 _e58 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
                     uint tag = floatBitsToUint(_e58.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_5 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0.0));
-                    bool _e73 = accept(inst_2, world_ray, c_5);
+                    Candidate c_6 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0.0));
+                    bool _e73 = accept(inst_2, world_ray, c_6);
                     if (_e73) {
-                        best = c_5;
+                        best = c_6;
                         if (shadow) {
                             Candidate _e74 = best;
                             return _e74;
@@ -644,9 +648,9 @@ vec3 decode_octahedral(uint bits) {
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n_1;
-        vec2 s_3 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
+        vec2 s_4 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
         vec3 _e29 = n_1;
-        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_3);
+        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_4);
         float _e37 = n_1.z;
         n_1 = vec3(xy.x, xy.y, _e37);
     }
@@ -677,10 +681,10 @@ Hit finish_hit(Ray ray_6, Candidate c_1) {
         float w_2 = ((1.0 - b_6.x) - b_6.y);
         vec3 e1_ = (_e42.v1_ - _e42.v0_);
         vec3 e2_ = (_e42.v2_ - _e42.v0_);
-        vec3 p_6 = (_e42.v0_ + ((e1_ * vec3(b_6.x)) + (e2_ * vec3(b_6.y))));
-        vec3 _e65 = point_to_world(inst_7, p_6);
+        vec3 p_7 = (_e42.v0_ + ((e1_ * vec3(b_6.x)) + (e2_ * vec3(b_6.y))));
+        vec3 _e65 = point_to_world(inst_7, p_7);
         hit.position = _e65;
-        float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_6.x)), (e2_ * vec3(b_6.y)), p_6);
+        float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_6.x)), (e2_ * vec3(b_6.y)), p_7);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
         uvec4 a0_ = _group_0_binding_5_cs[(c_1.primitive * 2u)];
@@ -1015,12 +1019,12 @@ void glass_rays(Glass m_2, Ray ray_18, Hit hit_4) {
         eta_1 = m_2.ior;
     }
     vec3 _e17 = n_3;
-    float c_6 = min(dot(-(_e4), _e17), 1.0);
+    float c_7 = min(dot(-(_e4), _e17), 1.0);
     vec3 _e21 = n_3;
     float _e22 = eta_1;
     vec3 t_5 = refract(_e4, _e21, _e22);
     float _e24 = eta_1;
-    float _e25 = fresnel_dielectric(c_6, _e24);
+    float _e25 = fresnel_dielectric(c_7, _e24);
     if (((dot(t_5, t_5) == 0.0) || (_e25 >= 1.0))) {
         vec3 _e32 = n_3;
         rt_spawn(reflect(_e4, _e32), m_2.tint);
@@ -1316,73 +1320,74 @@ vec3 finite_or_zero(vec3 c_3) {
     return mix(vec3(0.0), c_3, _e3);
 }
 
-void pass_done(uint index, vec3 sum, uint bad, uint pass) {
-    uint _e5 = ray_count;
-    atomicAdd(_group_0_binding_9_cs[1], _e5);
-    ray_count = 0u;
-    FrameUniforms _e10 = _group_0_binding_0_cs;
-    vec4 _e13 = vec4(sum, float(_e10.samples_per_pass));
-    if ((pass == 0u)) {
-        _group_0_binding_8_cs[index] = _e13;
+PassSum add_sample(PassSum p_6, vec3 c_4, uint s_1, uint index, uint first_pass, uint per_pass) {
+    PassSum next = PassSum(vec3(0.0), 0u);
+    next = p_6;
+    bvec3 _e7 = is_finite_vec3f(c_4);
+    if (all(_e7)) {
+        vec3 _e10 = next.sum;
+        next.sum = (_e10 + c_4);
     } else {
-        vec4 _e18 = _group_0_binding_8_cs[index];
-        _group_0_binding_8_cs[index] = (_e18 + _e13);
+        vec3 _e13 = next.sum;
+        vec3 _e14 = finite_or_zero(c_4);
+        next.sum = (_e13 + _e14);
+        uint _e17 = next.bad;
+        next.bad = (_e17 + 1u);
     }
-    if ((bad > 0u)) {
-        atomicAdd(_group_0_binding_9_cs[0], bad);
+    uint _e22 = rem_u32_((s_1 + 1u), per_pass);
+    if ((_e22 != 0u)) {
+        PassSum _e25 = next;
+        return _e25;
     }
-    return;
+    uint _e27 = ray_count;
+    atomicAdd(_group_0_binding_9_cs[1], _e27);
+    ray_count = 0u;
+    uint _e31 = div_u32_(s_1, per_pass);
+    uint pass = (first_pass + _e31);
+    vec3 _e34 = next.sum;
+    vec4 _e36 = vec4(_e34, float(per_pass));
+    uint _e38 = next.bad;
+    if ((pass == 0u)) {
+        _group_0_binding_8_cs[index] = _e36;
+    } else {
+        vec4 _e43 = _group_0_binding_8_cs[index];
+        _group_0_binding_8_cs[index] = (_e43 + _e36);
+    }
+    if ((_e38 > 0u)) {
+        atomicAdd(_group_0_binding_9_cs[0], _e38);
+    }
+    return PassSum(vec3(0.0), 0u);
 }
 
 void render_pixel(uvec2 pixel_5) {
-    vec3 sum_1 = vec3(0.0);
-    uint bad_1 = 0u;
-    uint s_1 = 0u;
+    PassSum sums = PassSum(vec3(0.0), 0u);
+    uint s_2 = 0u;
     FrameUniforms frame_5 = _group_0_binding_0_cs;
     TileParams tile_2 = _group_0_binding_1_cs;
     uint index_1 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
-    uint per_pass = frame_5.samples_per_pass;
-    uint first_1 = (tile_2.frame * per_pass);
-    uint count_2 = (per_pass * max(frame_5.passes_per_dispatch, 1u));
-    sum_1 = vec3(0.0);
-    bad_1 = 0u;
-    s_1 = 0u;
+    uint per_pass_1 = frame_5.samples_per_pass;
+    uint first_1 = (tile_2.frame * per_pass_1);
+    uint count_2 = (per_pass_1 * max(frame_5.passes_per_dispatch, 1u));
+    sums = PassSum(vec3(0.0), 0u);
+    s_2 = 0u;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e56 = s_1;
-            s_1 = (_e56 + 1u);
+            uint _e35 = s_2;
+            s_2 = (_e35 + 1u);
         }
         loop_init_3 = false;
-        uint _e25 = s_1;
+        uint _e25 = s_2;
         if ((_e25 >= count_2)) {
             break;
         }
-        uint _e27 = s_1;
-        Ray _e29 = sample_camera_ray(pixel_5, (first_1 + _e27));
-        vec3 _e30 = trace(_e29);
-        bvec3 _e31 = is_finite_vec3f(_e30);
-        if (all(_e31)) {
-            vec3 _e33 = sum_1;
-            sum_1 = (_e33 + _e30);
-        } else {
-            vec3 _e35 = sum_1;
-            vec3 _e36 = finite_or_zero(_e30);
-            sum_1 = (_e35 + _e36);
-            uint _e38 = bad_1;
-            bad_1 = (_e38 + 1u);
-        }
-        uint _e41 = s_1;
-        uint _e44 = rem_u32_((_e41 + 1u), per_pass);
-        if ((_e44 == 0u)) {
-            vec3 _e47 = sum_1;
-            uint _e48 = bad_1;
-            uint _e50 = s_1;
-            uint _e51 = div_u32_(_e50, per_pass);
-            pass_done(index_1, _e47, _e48, (tile_2.frame + _e51));
-            sum_1 = vec3(0.0);
-            bad_1 = 0u;
-        }
+        PassSum _e27 = sums;
+        uint _e28 = s_2;
+        Ray _e30 = sample_camera_ray(pixel_5, (first_1 + _e28));
+        vec3 _e31 = trace(_e30);
+        uint _e32 = s_2;
+        PassSum _e34 = add_sample(_e27, _e31, _e32, index_1, tile_2.frame, per_pass_1);
+        sums = _e34;
     }
     return;
 }

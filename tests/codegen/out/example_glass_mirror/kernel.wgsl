@@ -24,6 +24,11 @@ struct FrameUniforms {
     passes_per_dispatch: u32,
 }
 
+struct PassSum {
+    sum: vec3<f32>,
+    bad: u32,
+}
+
 struct Ray {
     origin: vec3<f32>,
     tmin: f32,
@@ -393,8 +398,8 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_2 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_2 * tiny), (abs(d) < tiny));
+    let s_3 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_3 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
@@ -420,20 +425,20 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let _e18 = triangles[((slot * 3u) + 1u)];
     let b_5 = (_e18.xyz - r_1.origin);
     let _e28 = triangles[((slot * 3u) + 2u)];
-    let c_4 = (_e28.xyz - r_1.origin);
+    let c_5 = (_e28.xyz - r_1.origin);
     let ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
     let ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
     let bx = (b_5[min(r_1.kx, 2u)] - (r_1.shear.x * b_5[min(r_1.kz, 2u)]));
     let by = (b_5[min(r_1.ky, 2u)] - (r_1.shear.y * b_5[min(r_1.kz, 2u)]));
-    let cx = (c_4[min(r_1.kx, 2u)] - (r_1.shear.x * c_4[min(r_1.kz, 2u)]));
-    let cy = (c_4[min(r_1.ky, 2u)] - (r_1.shear.y * c_4[min(r_1.kz, 2u)]));
+    let cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
+    let cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
     let v_2 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
     let outside = ((((u < 0f) || (v_2 < 0f)) || (w < 0f)) && (((u > 0f) || (v_2 > 0f)) || (w > 0f)));
     let det = ((u + v_2) + w);
     let rcp = (1f / det);
-    let t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_4[min(r_1.kz, 2u)]))) * rcp);
+    let t_4 = ((((u * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
     let hit_9 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     let _e173 = F32_INF;
     return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_2 * rcp), (w * rcp)), hit_9);
@@ -532,10 +537,10 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
                     let _e58 = triangles[((prim * 3u) + 1u)];
                     let tag = bitcast<u32>(_e58.w);
                     let owner = select(slot_1, ((inst_2.object + tag) - 1u), (tag != 0u));
-                    let c_5 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
-                    let _e73 = accept(inst_2, world_ray, c_5);
+                    let c_6 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
+                    let _e73 = accept(inst_2, world_ray, c_6);
                     if _e73 {
-                        best = c_5;
+                        best = c_6;
                         if shadow {
                             let _e74 = best;
                             return _e74;
@@ -650,9 +655,9 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     let _e14 = n_1.z;
     if (_e14 < 0f) {
         let _e21 = n_1;
-        let s_3 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_4 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n_1;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_3);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_4);
         let _e37 = n_1.z;
         n_1 = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -684,10 +689,10 @@ fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
         let w_2 = ((1f - b_6.x) - b_6.y);
         let e1_ = (_e42.v1_ - _e42.v0_);
         let e2_ = (_e42.v2_ - _e42.v0_);
-        let p_6 = (_e42.v0_ + ((e1_ * vec3(b_6.x)) + (e2_ * vec3(b_6.y))));
-        let _e65 = point_to_world(inst_7, p_6);
+        let p_7 = (_e42.v0_ + ((e1_ * vec3(b_6.x)) + (e2_ * vec3(b_6.y))));
+        let _e65 = point_to_world(inst_7, p_7);
         hit.position = _e65;
-        let _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_6.x)), (e2_ * vec3(b_6.y)), p_6);
+        let _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_6.x)), (e2_ * vec3(b_6.y)), p_7);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
         let a0_ = attributes[(c_1.primitive * 2u)];
@@ -1023,12 +1028,12 @@ fn glass_rays(m_2: Glass, ray_18: Ray, hit_4: Hit) {
         eta_1 = m_2.ior;
     }
     let _e17 = n_3;
-    let c_6 = min(dot(-(_e4), _e17), 1f);
+    let c_7 = min(dot(-(_e4), _e17), 1f);
     let _e21 = n_3;
     let _e22 = eta_1;
     let t_5 = refract(_e4, _e21, _e22);
     let _e24 = eta_1;
-    let _e25 = fresnel_dielectric(c_6, _e24);
+    let _e25 = fresnel_dielectric(c_7, _e24);
     if ((dot(t_5, t_5) == 0f) || (_e25 >= 1f)) {
         let _e32 = n_3;
         rt_spawn(reflect(_e4, _e32), m_2.tint);
@@ -1323,71 +1328,73 @@ fn finite_or_zero(c_3: vec3<f32>) -> vec3<f32> {
     return select(vec3(0f), c_3, _e3);
 }
 
-fn pass_done(index: u32, sum: vec3<f32>, bad: u32, pass_: u32) {
-    let _e5 = ray_count;
-    atomicAdd((&counters[1]), _e5);
-    ray_count = 0u;
-    let _e10 = frame;
-    let _e13 = vec4<f32>(sum, f32(_e10.samples_per_pass));
-    if (pass_ == 0u) {
-        accum[index] = _e13;
+fn add_sample(p_6: PassSum, c_4: vec3<f32>, s_1: u32, index: u32, first_pass: u32, per_pass: u32) -> PassSum {
+    var next: PassSum;
+
+    next = p_6;
+    let _e7 = is_finite_vec3f(c_4);
+    if all(_e7) {
+        let _e10 = next.sum;
+        next.sum = (_e10 + c_4);
     } else {
-        let _e18 = accum[index];
-        accum[index] = (_e18 + _e13);
+        let _e13 = next.sum;
+        let _e14 = finite_or_zero(c_4);
+        next.sum = (_e13 + _e14);
+        let _e17 = next.bad;
+        next.bad = (_e17 + 1u);
     }
-    if (bad > 0u) {
-        atomicAdd((&counters[0]), bad);
+    let _e22 = rem_u32_((s_1 + 1u), per_pass);
+    if (_e22 != 0u) {
+        let _e25 = next;
+        return _e25;
     }
-    return;
+    let _e27 = ray_count;
+    atomicAdd((&counters[1]), _e27);
+    ray_count = 0u;
+    let _e31 = div_u32_(s_1, per_pass);
+    let pass_ = (first_pass + _e31);
+    let _e34 = next.sum;
+    let _e36 = vec4<f32>(_e34, f32(per_pass));
+    let _e38 = next.bad;
+    if (pass_ == 0u) {
+        accum[index] = _e36;
+    } else {
+        let _e43 = accum[index];
+        accum[index] = (_e43 + _e36);
+    }
+    if (_e38 > 0u) {
+        atomicAdd((&counters[0]), _e38);
+    }
+    return PassSum(vec3(0f), 0u);
 }
 
 fn render_pixel(pixel_5: vec2<u32>) {
-    var sum_1: vec3<f32>;
-    var bad_1: u32;
-    var s_1: u32;
+    var sums: PassSum;
+    var s_2: u32;
 
     let frame_5 = frame;
     let tile_2 = tile;
     let index_1 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
-    let per_pass = frame_5.samples_per_pass;
-    let first_1 = (tile_2.frame * per_pass);
-    let count_2 = (per_pass * max(frame_5.passes_per_dispatch, 1u));
-    sum_1 = vec3(0f);
-    bad_1 = 0u;
-    s_1 = 0u;
+    let per_pass_1 = frame_5.samples_per_pass;
+    let first_1 = (tile_2.frame * per_pass_1);
+    let count_2 = (per_pass_1 * max(frame_5.passes_per_dispatch, 1u));
+    sums = PassSum(vec3(0f), 0u);
+    s_2 = 0u;
     loop {
-        let _e25 = s_1;
+        let _e25 = s_2;
         if (_e25 >= count_2) {
             break;
         }
-        let _e27 = s_1;
-        let _e29 = sample_camera_ray(pixel_5, (first_1 + _e27));
-        let _e30 = trace(_e29);
-        let _e31 = is_finite_vec3f(_e30);
-        if all(_e31) {
-            let _e33 = sum_1;
-            sum_1 = (_e33 + _e30);
-        } else {
-            let _e35 = sum_1;
-            let _e36 = finite_or_zero(_e30);
-            sum_1 = (_e35 + _e36);
-            let _e38 = bad_1;
-            bad_1 = (_e38 + 1u);
-        }
-        let _e41 = s_1;
-        let _e44 = rem_u32_((_e41 + 1u), per_pass);
-        if (_e44 == 0u) {
-            let _e47 = sum_1;
-            let _e48 = bad_1;
-            let _e50 = s_1;
-            let _e51 = div_u32_(_e50, per_pass);
-            pass_done(index_1, _e47, _e48, (tile_2.frame + _e51));
-            sum_1 = vec3(0f);
-            bad_1 = 0u;
-        }
+        let _e27 = sums;
+        let _e28 = s_2;
+        let _e30 = sample_camera_ray(pixel_5, (first_1 + _e28));
+        let _e31 = trace(_e30);
+        let _e32 = s_2;
+        let _e34 = add_sample(_e27, _e31, _e32, index_1, tile_2.frame, per_pass_1);
+        sums = _e34;
         continuing {
-            let _e56 = s_1;
-            s_1 = (_e56 + 1u);
+            let _e35 = s_2;
+            s_2 = (_e35 + 1u);
         }
     }
     return;

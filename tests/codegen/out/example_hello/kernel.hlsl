@@ -24,6 +24,11 @@ struct FrameUniforms {
     uint passes_per_dispatch;
 };
 
+struct PassSum {
+    float3 sum;
+    uint bad;
+};
+
 struct Ray {
     float3 origin;
     float tmin;
@@ -497,8 +502,8 @@ Ray to_object(GpuInstance inst, Ray ray)
 float3 safe_inverse(float3 d)
 {
     float3 tiny = (1.1754944e-38).xxx;
-    float3 s_3 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny) ? (s_3 * tiny) : d);
+    float3 s_4 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 dd = ((abs(d) < tiny) ? (s_4 * tiny) : d);
     return ((1.0).xxx / dd);
 }
 
@@ -538,20 +543,20 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
     float3 b_5 = (_e18.xyz - r_1.origin);
     float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
-    float3 c_4 = (_e28.xyz - r_1.origin);
+    float3 c_5 = (_e28.xyz - r_1.origin);
     float ax = (a_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float ay = (a_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float bx = (b_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float by = (b_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * b_5[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float cx = (c_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_4[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float cy = (c_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_4[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cx = (c_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cy = (c_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u = ((cx * by) - (cy * bx));
     float v_2 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
     float det = ((u + v_2) + w);
     float rcp_ = (1.0 / det);
-    float t = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_4[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t = ((((u * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_8 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t >= tmin)) && (t <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_8 ? float3(t, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
@@ -679,10 +684,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                     float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
                     uint tag = asuint(_e58.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_5 = ConstructCandidate(_e46.x, owner, prim, _e46.yz, (0.0).xxx);
-                    const bool _e73 = accept(inst_2, world_ray, c_5);
+                    Candidate c_6 = ConstructCandidate(_e46.x, owner, prim, _e46.yz, (0.0).xxx);
+                    const bool _e73 = accept(inst_2, world_ray, c_6);
                     if (_e73) {
-                        best = c_5;
+                        best = c_6;
                         if (shadow) {
                             Candidate _e74 = best;
                             const Candidate candidate_1 = _e74;
@@ -831,9 +836,9 @@ float3 decode_octahedral(uint bits)
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         float3 _e21 = n_1;
-        float2 s_4 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
+        float2 s_5 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
         float3 _e29 = n_1;
-        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_4);
+        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_5);
         float _e37 = n_1.z;
         n_1 = float3(xy.x, xy.y, _e37);
     }
@@ -880,10 +885,10 @@ Hit finish_hit(Ray ray_6, Candidate c_1)
         float w_2 = ((1.0 - b_6.x) - b_6.y);
         float3 e1_ = (_e42.v1_ - _e42.v0_);
         float3 e2_ = (_e42.v2_ - _e42.v0_);
-        float3 p_6 = (_e42.v0_ + ((e1_ * (b_6.x).xxx) + (e2_ * (b_6.y).xxx)));
-        const float3 _e65 = point_to_world(inst_7, p_6);
+        float3 p_7 = (_e42.v0_ + ((e1_ * (b_6.x).xxx) + (e2_ * (b_6.y).xxx)));
+        const float3 _e65 = point_to_world(inst_7, p_7);
         hit.position = _e65;
-        const float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * (b_6.x).xxx), (e2_ * (b_6.y).xxx), p_6);
+        const float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * (b_6.x).xxx), (e2_ * (b_6.y).xxx), p_7);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
         uint4 a0_ = asuint(attributes.Load4((c_1.primitive * 2u)*16));
@@ -1538,23 +1543,54 @@ float3 finite_or_zero(float3 c_3)
     return (_e3 ? c_3 : (0.0).xxx);
 }
 
-void pass_done(uint index, float3 sum, uint bad, uint pass_)
+PassSum ConstructPassSum(float3 arg0, uint arg1) {
+    PassSum ret = (PassSum)0;
+    ret.sum = arg0;
+    ret.bad = arg1;
+    return ret;
+}
+
+PassSum add_sample(PassSum p_6, float3 c_4, uint s_2, uint index, uint first_pass, uint per_pass)
 {
-    uint _e5 = ray_count;
-    counters.InterlockedAdd(4, _e5);
-    ray_count = 0u;
-    FrameUniforms _e10 = frame;
-    float4 _e13 = float4(sum, float(_e10.samples_per_pass));
-    if ((pass_ == 0u)) {
-        accum.Store4(index*16, asuint(_e13));
+    PassSum next = (PassSum)0;
+
+    next = p_6;
+    const bool3 _e7 = is_finite_vec3f(c_4);
+    if (all(_e7)) {
+        float3 _e10 = next.sum;
+        next.sum = (_e10 + c_4);
     } else {
-        float4 _e18 = asfloat(accum.Load4(index*16));
-        accum.Store4(index*16, asuint((_e18 + _e13)));
+        float3 _e13 = next.sum;
+        const float3 _e14 = finite_or_zero(c_4);
+        next.sum = (_e13 + _e14);
+        uint _e17 = next.bad;
+        next.bad = (_e17 + 1u);
     }
-    if ((bad > 0u)) {
-        counters.InterlockedAdd(0, bad);
+    const uint _e22 = rem_u32_((s_2 + 1u), per_pass);
+    if ((_e22 != 0u)) {
+        PassSum _e25 = next;
+        const PassSum passsum = _e25;
+        return passsum;
     }
-    return;
+    uint _e27 = ray_count;
+    counters.InterlockedAdd(4, _e27);
+    ray_count = 0u;
+    const uint _e31 = div_u32_(s_2, per_pass);
+    uint pass_ = (first_pass + _e31);
+    float3 _e34 = next.sum;
+    float4 _e36 = float4(_e34, float(per_pass));
+    uint _e38 = next.bad;
+    if ((pass_ == 0u)) {
+        accum.Store4(index*16, asuint(_e36));
+    } else {
+        float4 _e43 = asfloat(accum.Load4(index*16));
+        accum.Store4(index*16, asuint((_e43 + _e36)));
+    }
+    if ((_e38 > 0u)) {
+        counters.InterlockedAdd(0, _e38);
+    }
+    const PassSum passsum_1 = ConstructPassSum((0.0).xxx, 0u);
+    return passsum_1;
 }
 
 PathState ConstructPathState(Ray arg0, float3 arg1, float3 arg2, bool arg3) {
@@ -1568,20 +1604,18 @@ PathState ConstructPathState(Ray arg0, float3 arg1, float3 arg2, bool arg3) {
 
 void render_pixel(uint2 pixel_5)
 {
-    float3 sum_1 = (float3)0;
-    uint bad_1 = (uint)0;
-    uint s_2 = (uint)0;
+    PassSum sums = (PassSum)0;
+    uint s_3 = (uint)0;
     PathState path = (PathState)0;
 
     FrameUniforms frame_6 = frame;
     TileParams tile_2 = tile;
     uint index_1 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
-    uint per_pass = frame_6.samples_per_pass;
-    uint first_1 = (tile_2.frame * per_pass);
-    uint count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
-    sum_1 = (0.0).xxx;
-    bad_1 = 0u;
-    s_2 = 0u;
+    uint per_pass_1 = frame_6.samples_per_pass;
+    uint first_1 = (tile_2.frame * per_pass_1);
+    uint count_2 = (per_pass_1 * max(frame_6.passes_per_dispatch, 1u));
+    sums = ConstructPassSum((0.0).xxx, 0u);
+    s_3 = 0u;
     const Ray _e25 = sample_camera_ray(pixel_5, first_1);
     path = ConstructPathState(_e25, (1.0).xxx, (0.0).xxx, true);
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
@@ -1595,38 +1629,20 @@ void render_pixel(uint2 pixel_5)
         path = _e38;
         bool _e40 = path.live;
         if (!(_e40)) {
-            float3 c_6 = path.radiance;
-            const bool3 _e44 = is_finite_vec3f(c_6);
-            if (all(_e44)) {
-                float3 _e46 = sum_1;
-                sum_1 = (_e46 + c_6);
-            } else {
-                float3 _e48 = sum_1;
-                const float3 _e49 = finite_or_zero(c_6);
-                sum_1 = (_e48 + _e49);
-                uint _e51 = bad_1;
-                bad_1 = (_e51 + 1u);
-            }
-            uint _e54 = s_2;
-            s_2 = (_e54 + 1u);
-            uint _e57 = s_2;
-            const uint _e58 = rem_u32_(_e57, per_pass);
-            if ((_e58 == 0u)) {
-                float3 _e61 = sum_1;
-                uint _e62 = bad_1;
-                uint _e64 = s_2;
-                const uint _e65 = div_u32_(_e64, per_pass);
-                pass_done(index_1, _e61, _e62, ((tile_2.frame + _e65) - 1u));
-                sum_1 = (0.0).xxx;
-                bad_1 = 0u;
-            }
-            uint _e72 = s_2;
-            if ((_e72 >= count_2)) {
+            PassSum _e42 = sums;
+            float3 _e44 = path.radiance;
+            uint _e45 = s_3;
+            const PassSum _e47 = add_sample(_e42, _e44, _e45, index_1, tile_2.frame, per_pass_1);
+            sums = _e47;
+            uint _e48 = s_3;
+            s_3 = (_e48 + 1u);
+            uint _e51 = s_3;
+            if ((_e51 >= count_2)) {
                 break;
             }
-            uint _e74 = s_2;
-            const Ray _e76 = sample_camera_ray(pixel_5, (first_1 + _e74));
-            path = ConstructPathState(_e76, (1.0).xxx, (0.0).xxx, true);
+            uint _e53 = s_3;
+            const Ray _e55 = sample_camera_ray(pixel_5, (first_1 + _e53));
+            path = ConstructPathState(_e55, (1.0).xxx, (0.0).xxx, true);
         }
     }
     return;

@@ -38,6 +38,10 @@ struct FrameUniforms {
     uint path_slots;
     uint passes_per_dispatch;
 };
+struct PassSum {
+    metal::packed_float3 sum;
+    uint bad;
+};
 struct Ray {
     metal::packed_float3 origin;
     float tmin;
@@ -493,8 +497,8 @@ metal::float3 safe_inverse(
     metal::float3 d
 ) {
     metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_3 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_3 * tiny, metal::abs(d) < tiny);
+    metal::float3 s_4 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_4 * tiny, metal::abs(d) < tiny);
     return metal::float3(1.0) / dd;
 }
 
@@ -530,20 +534,20 @@ metal::float3 hit_triangle(
     metal::float4 _e18 = triangles[(slot * 3u) + 1u];
     metal::float3 b_5 = _e18.xyz - r_1.origin;
     metal::float4 _e28 = triangles[(slot * 3u) + 2u];
-    metal::float3 c_4 = _e28.xyz - r_1.origin;
+    metal::float3 c_5 = _e28.xyz - r_1.origin;
     float ax = a_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_4[metal::min(r_1.kz, 2u)]);
     float ay = a_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_4[metal::min(r_1.kz, 2u)]);
     float bx = b_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_5[metal::min(r_1.kz, 2u)]);
     float by = b_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_5[metal::min(r_1.kz, 2u)]);
-    float cx = c_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_4[metal::min(r_1.kz, 2u)]);
-    float cy = c_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_4[metal::min(r_1.kz, 2u)]);
+    float cx = c_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_5[metal::min(r_1.kz, 2u)]);
+    float cy = c_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_5[metal::min(r_1.kz, 2u)]);
     float u = (cx * by) - (cy * bx);
     float v_2 = (ax * cy) - (ay * cx);
     float w = (bx * ay) - (by * ax);
     bool outside = (((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0));
     float det = (u + v_2) + w;
     float rcp = 1.0 / det;
-    float t = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_4[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t = (((u * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_2 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w * (r_1.shear[2] * c_5[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_8 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t >= tmin)) && (t <= tmax_1);
     uint _e173 = F32_INF;
     return hit_8 ? metal::float3(t, v_2 * rcp, w * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
@@ -697,10 +701,10 @@ Candidate intersect_mesh(
                     metal::float4 _e58 = triangles[(prim * 3u) + 1u];
                     uint tag = as_type<uint>(_e58.w);
                     uint owner = (tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1;
-                    Candidate c_5 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e73 = accept(inst_2, world_ray, c_5);
+                    Candidate c_6 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e73 = accept(inst_2, world_ray, c_6);
                     if (_e73) {
-                        best = c_5;
+                        best = c_6;
                         if (shadow) {
                             Candidate _e74 = best;
                             return _e74;
@@ -838,9 +842,9 @@ metal::float3 decode_octahedral(
     float _e14 = n_1.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n_1;
-        metal::float2 s_4 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float2 s_5 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
         metal::float3 _e29 = n_1;
-        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_4;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_5;
         float _e37 = n_1.z;
         n_1 = metal::float3(xy.x, xy.y, _e37);
     }
@@ -882,10 +886,10 @@ Hit finish_hit(
         float w_2 = (1.0 - c_1.uv.x) - c_1.uv.y;
         metal::float3 e1_ = _e42.v1_ - _e42.v0_;
         metal::float3 e2_ = _e42.v2_ - _e42.v0_;
-        metal::float3 p_6 = _e42.v0_ + ((e1_ * metal::float3(c_1.uv.x)) + (e2_ * metal::float3(c_1.uv.y)));
-        metal::float3 _e65 = point_to_world(inst_7, p_6);
+        metal::float3 p_7 = _e42.v0_ + ((e1_ * metal::float3(c_1.uv.x)) + (e2_ * metal::float3(c_1.uv.y)));
+        metal::float3 _e65 = point_to_world(inst_7, p_7);
         hit.position = _e65;
-        float _e73 = mesh_error(inst_7, _e42.v0_, e1_ * metal::float3(c_1.uv.x), e2_ * metal::float3(c_1.uv.y), p_6);
+        float _e73 = mesh_error(inst_7, _e42.v0_, e1_ * metal::float3(c_1.uv.x), e2_ * metal::float3(c_1.uv.y), p_7);
         hit_error = _e73;
         n_geo = metal::cross(e1_, e2_);
         metal::uint4 a0_ = attributes[c_1.primitive * 2u];
@@ -1681,32 +1685,54 @@ metal::float3 finite_or_zero(
     return metal::select(metal::float3(0.0), c_3, _e3);
 }
 
-void pass_done(
+PassSum add_sample(
+    PassSum p_6,
+    metal::float3 c_4,
+    uint s_2,
     uint index,
-    metal::float3 sum,
-    uint bad,
-    uint pass,
-    constant FrameUniforms& frame,
+    uint first_pass,
+    uint per_pass,
     thread uint& ray_count,
     device type_19& counters,
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e5 = ray_count;
-    metal::atomic_fetch_add_explicit(&counters[1], _e5, metal::memory_order_relaxed);
-    ray_count = 0u;
-    FrameUniforms _e10 = frame;
-    metal::float4 _e13 = metal::float4(sum, static_cast<float>(_e10.samples_per_pass));
-    if (pass == 0u) {
-        accum[index] = _e13;
+    PassSum next = {};
+    next = p_6;
+    metal::bool3 _e7 = is_finite_vec3f(c_4);
+    if (metal::all(_e7)) {
+        metal::float3 _e10 = next.sum;
+        next.sum = _e10 + c_4;
     } else {
-        metal::float4 _e18 = accum[index];
-        accum[index] = _e18 + _e13;
+        metal::float3 _e13 = next.sum;
+        metal::float3 _e14 = finite_or_zero(c_4);
+        next.sum = _e13 + _e14;
+        uint _e17 = next.bad;
+        next.bad = _e17 + 1u;
     }
-    if (bad > 0u) {
-        metal::atomic_fetch_add_explicit(&counters[0], bad, metal::memory_order_relaxed);
+    uint _e22 = rem_u32_(s_2 + 1u, per_pass);
+    if (_e22 != 0u) {
+        PassSum _e25 = next;
+        return _e25;
     }
-    return;
+    uint _e27 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e27, metal::memory_order_relaxed);
+    ray_count = 0u;
+    uint _e31 = div_u32_(s_2, per_pass);
+    uint pass = first_pass + _e31;
+    metal::float3 _e34 = next.sum;
+    metal::float4 _e36 = metal::float4(_e34, static_cast<float>(per_pass));
+    uint _e38 = next.bad;
+    if (pass == 0u) {
+        accum[index] = _e36;
+    } else {
+        metal::float4 _e43 = accum[index];
+        accum[index] = _e43 + _e36;
+    }
+    if (_e38 > 0u) {
+        metal::atomic_fetch_add_explicit(&counters[0], _e38, metal::memory_order_relaxed);
+    }
+    return PassSum {metal::float3(0.0), 0u};
 }
 
 void render_pixel(
@@ -1731,19 +1757,17 @@ void render_pixel(
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 sum_1 = {};
-    uint bad_1 = {};
-    uint s_2 = {};
+    PassSum sums = {};
+    uint s_3 = {};
     PathState path = {};
     FrameUniforms frame_6 = frame;
     TileParams tile_2 = tile;
     uint index_1 = (pixel_5.y * tile_2.image_size.x) + pixel_5.x;
-    uint per_pass = frame_6.samples_per_pass;
-    uint first_1 = tile_2.frame * per_pass;
-    uint count_2 = per_pass * metal::max(frame_6.passes_per_dispatch, 1u);
-    sum_1 = metal::float3(0.0);
-    bad_1 = 0u;
-    s_2 = 0u;
+    uint per_pass_1 = frame_6.samples_per_pass;
+    uint first_1 = tile_2.frame * per_pass_1;
+    uint count_2 = per_pass_1 * metal::max(frame_6.passes_per_dispatch, 1u);
+    sums = PassSum {metal::float3(0.0), 0u};
+    s_3 = 0u;
     Ray _e25 = sample_camera_ray(pixel_5, first_1, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
     path = PathState {_e25, metal::float3(1.0), metal::float3(0.0), true};
     uint2 loop_bound_5 = uint2(4294967295u);
@@ -1757,38 +1781,20 @@ void render_pixel(
         path = _e38;
         bool _e40 = path.live;
         if (!(_e40)) {
-            metal::float3 c_6 = path.radiance;
-            metal::bool3 _e44 = is_finite_vec3f(c_6);
-            if (metal::all(_e44)) {
-                metal::float3 _e46 = sum_1;
-                sum_1 = _e46 + c_6;
-            } else {
-                metal::float3 _e48 = sum_1;
-                metal::float3 _e49 = finite_or_zero(c_6);
-                sum_1 = _e48 + _e49;
-                uint _e51 = bad_1;
-                bad_1 = _e51 + 1u;
-            }
-            uint _e54 = s_2;
-            s_2 = _e54 + 1u;
-            uint _e57 = s_2;
-            uint _e58 = rem_u32_(_e57, per_pass);
-            if (_e58 == 0u) {
-                metal::float3 _e61 = sum_1;
-                uint _e62 = bad_1;
-                uint _e64 = s_2;
-                uint _e65 = div_u32_(_e64, per_pass);
-                pass_done(index_1, _e61, _e62, (tile_2.frame + _e65) - 1u, frame, ray_count, counters, accum, _buffer_sizes);
-                sum_1 = metal::float3(0.0);
-                bad_1 = 0u;
-            }
-            uint _e72 = s_2;
-            if (_e72 >= count_2) {
+            PassSum _e42 = sums;
+            metal::float3 _e44 = path.radiance;
+            uint _e45 = s_3;
+            PassSum _e47 = add_sample(_e42, _e44, _e45, index_1, tile_2.frame, per_pass_1, ray_count, counters, accum, _buffer_sizes);
+            sums = _e47;
+            uint _e48 = s_3;
+            s_3 = _e48 + 1u;
+            uint _e51 = s_3;
+            if (_e51 >= count_2) {
                 break;
             }
-            uint _e74 = s_2;
-            Ray _e76 = sample_camera_ray(pixel_5, first_1 + _e74, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-            path = PathState {_e76, metal::float3(1.0), metal::float3(0.0), true};
+            uint _e53 = s_3;
+            Ray _e55 = sample_camera_ray(pixel_5, first_1 + _e53, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+            path = PathState {_e55, metal::float3(1.0), metal::float3(0.0), true};
         }
     }
     return;

@@ -24,6 +24,11 @@ struct FrameUniforms {
     uint passes_per_dispatch;
 };
 
+struct PassSum {
+    float3 sum;
+    uint bad;
+};
+
 struct Ray {
     float3 origin;
     float tmin;
@@ -569,8 +574,8 @@ Ray to_object(GpuInstance inst, Ray ray)
 float3 safe_inverse(float3 d)
 {
     float3 tiny = (1.1754944e-38).xxx;
-    float3 s_5 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny) ? (s_5 * tiny) : d);
+    float3 s_6 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 dd = ((abs(d) < tiny) ? (s_6 * tiny) : d);
     return ((1.0).xxx / dd);
 }
 
@@ -610,20 +615,20 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
     float3 b_5 = (_e18.xyz - r_1.origin);
     float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
-    float3 c_7 = (_e28.xyz - r_1.origin);
+    float3 c_8 = (_e28.xyz - r_1.origin);
     float ax = (a_4[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float ay = (a_4[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_4[min(uint(min(r_1.kz, 2u)), 2u)]));
     float bx = (b_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float by = (b_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * b_5[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float cx = (c_7[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_7[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float cy = (c_7[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_7[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cx = (c_8[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_8[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cy = (c_8[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_8[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u_3 = ((cx * by) - (cy * bx));
     float v_6 = ((ax * cy) - (ay * cx));
     float w_1 = ((bx * ay) - (by * ax));
     bool outside = ((((u_3 < 0.0) || (v_6 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_6 > 0.0)) || (w_1 > 0.0)));
     float det = ((u_3 + v_6) + w_1);
     float rcp_ = (1.0 / det);
-    float t_4 = ((((u_3 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_6 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w_1 * (r_1.shear.z * c_7[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_4 = ((((u_3 * (r_1.shear.z * a_4[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_6 * (r_1.shear.z * b_5[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w_1 * (r_1.shear.z * c_8[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_12 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_12 ? float3(t_4, (v_6 * rcp_), (w_1 * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
@@ -751,10 +756,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                     float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
                     uint tag = asuint(_e58.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_8 = ConstructCandidate(_e46.x, owner, prim, _e46.yz, (0.0).xxx);
-                    const bool _e73 = accept(inst_2, world_ray, c_8);
+                    Candidate c_9 = ConstructCandidate(_e46.x, owner, prim, _e46.yz, (0.0).xxx);
+                    const bool _e73 = accept(inst_2, world_ray, c_9);
                     if (_e73) {
-                        best = c_8;
+                        best = c_9;
                         if (shadow) {
                             Candidate _e74 = best;
                             const Candidate candidate_1 = _e74;
@@ -930,10 +935,10 @@ Candidate intersect_object(uint slot_2, Ray ray_7, Candidate best_1, bool shadow
     float _e26 = r_2.tmax;
     uint _e31 = F32_INF;
     if ((((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < asfloat(_e31)))) {
-        Candidate c_9 = ConstructCandidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        const bool _e40 = accept(inst_6, ray_7, c_9);
+        Candidate c_10 = ConstructCandidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
+        const bool _e40 = accept(inst_6, ray_7, c_10);
         if (_e40) {
-            const Candidate candidate_4 = c_9;
+            const Candidate candidate_4 = c_10;
             return candidate_4;
         }
     }
@@ -992,9 +997,9 @@ float3 decode_octahedral(uint bits)
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         float3 _e21 = n_1;
-        float2 s_6 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
+        float2 s_7 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
         float3 _e29 = n_1;
-        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_6);
+        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_7);
         float _e37 = n_1.z;
         n_1 = float3(xy.x, xy.y, _e37);
     }
@@ -1041,10 +1046,10 @@ Hit finish_hit(Ray ray_8, Candidate c_1)
         float w_3 = ((1.0 - b_7.x) - b_7.y);
         float3 e1_ = (_e42.v1_ - _e42.v0_);
         float3 e2_ = (_e42.v2_ - _e42.v0_);
-        float3 p_7 = (_e42.v0_ + ((e1_ * (b_7.x).xxx) + (e2_ * (b_7.y).xxx)));
-        const float3 _e65 = point_to_world(inst_7, p_7);
+        float3 p_8 = (_e42.v0_ + ((e1_ * (b_7.x).xxx) + (e2_ * (b_7.y).xxx)));
+        const float3 _e65 = point_to_world(inst_7, p_8);
         hit.position = _e65;
-        const float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * (b_7.x).xxx), (e2_ * (b_7.y).xxx), p_7);
+        const float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * (b_7.x).xxx), (e2_ * (b_7.y).xxx), p_8);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
         uint4 a0_ = asuint(attributes.Load4((c_1.primitive * 2u)*16));
@@ -1415,14 +1420,14 @@ LightSample ConstructLightSample(float3 arg0, float arg1, float3 arg2, float arg
 
 LightSample quad_light(QuadLight l, float3 position_1, float3 normal_2)
 {
-    float3 c_10 = cross(l.edge_u, l.edge_v);
-    float area = length(c_10);
+    float3 c_11 = cross(l.edge_u, l.edge_v);
+    float area = length(c_11);
     const float2 _e7 = rand2_next();
     float3 to_light = (((l.corner + (l.edge_u * (_e7.x).xxx)) + (l.edge_v * (_e7.y).xxx)) - position_1);
     float dist2_ = dot(to_light, to_light);
     float dist_3 = sqrt(dist2_);
     float3 dir_9 = (to_light / (max(dist_3, 1e-20)).xxx);
-    float cos_light = (-(dot(dir_9, c_10)) / max(area, 1e-30));
+    float cos_light = (-(dot(dir_9, c_11)) / max(area, 1e-30));
     if ((!((cos_light > 0.0)) || !((dist2_ > 0.0)))) {
         const LightSample lightsample = ConstructLightSample(dir_9, dist_3, (0.0).xxx, 0.0);
         return lightsample;
@@ -1726,10 +1731,10 @@ float3 path_diffuse_shade(PathDiffuse m, Ray ray_14, Hit hit_1, float3 secondary
         }
         uint _e20 = i_6;
         const LightSample _e22 = sample_light_above_deferred(_e20, hit_1.position, ng);
-        float c_11 = max(dot(n_13, _e22.dir), 0.0);
+        float c_12 = max(dot(n_13, _e22.dir), 0.0);
         float3 _e27 = direct;
-        const float _e31 = mis_light_weight(_e22, (c_11 * INV_PI));
-        direct = (_e27 + (_e22.radiance * ((c_11 * _e31)).xxx));
+        const float _e31 = mis_light_weight(_e22, (c_12 * INV_PI));
+        direct = (_e27 + (_e22.radiance * ((c_12 * _e31)).xxx));
     }
     float3 _e43 = direct;
     return (((m.albedo * (INV_PI).xxx) * _e43) + secondary);
@@ -2123,8 +2128,8 @@ float3 pbr_sample_vndf(float3 ve, float alpha, float2 u_1)
     float r_5 = sqrt(u_1.x);
     float phi_2 = (TAU * u_1.y);
     float p1_ = (r_5 * cos(phi_2));
-    float s_7 = (0.5 * (1.0 + _e9.z));
-    float p2_ = (((1.0 - s_7) * sqrt(max((1.0 - (p1_ * p1_)), 0.0))) + ((s_7 * r_5) * sin(phi_2)));
+    float s_8 = (0.5 * (1.0 + _e9.z));
+    float p2_ = (((1.0 - s_8) * sqrt(max((1.0 - (p1_ * p1_)), 0.0))) + ((s_8 * r_5) * sin(phi_2)));
     float3 _e59 = t1_;
     float3 nh = (((_e59 * (p1_).xxx) + (t2_ * (p2_).xxx)) + (_e9 * (sqrt(max(((1.0 - (p1_ * p1_)) - (p2_ * p2_)), 0.0))).xxx));
     const float3 _e84 = normalize_vec3f(float3((alpha * nh.x), (alpha * nh.y), max(nh.z, 0.0)));
@@ -2400,79 +2405,90 @@ float3 finite_or_zero(float3 c_6)
     return (_e3 ? c_6 : (0.0).xxx);
 }
 
-void pass_done(uint index, float3 sum, uint bad, uint pass_)
+PassSum ConstructPassSum(float3 arg0, uint arg1) {
+    PassSum ret = (PassSum)0;
+    ret.sum = arg0;
+    ret.bad = arg1;
+    return ret;
+}
+
+PassSum add_sample(PassSum p_7, float3 c_7, uint s_4, uint index, uint first_pass, uint per_pass)
 {
-    uint _e5 = ray_count;
-    counters.InterlockedAdd(4, _e5);
-    ray_count = 0u;
-    FrameUniforms _e10 = frame;
-    float4 _e13 = float4(sum, float(_e10.samples_per_pass));
-    if ((pass_ == 0u)) {
-        accum.Store4(index*16, asuint(_e13));
+    PassSum next = (PassSum)0;
+
+    next = p_7;
+    const bool3 _e7 = is_finite_vec3f(c_7);
+    if (all(_e7)) {
+        float3 _e10 = next.sum;
+        next.sum = (_e10 + c_7);
     } else {
-        float4 _e18 = asfloat(accum.Load4(index*16));
-        accum.Store4(index*16, asuint((_e18 + _e13)));
+        float3 _e13 = next.sum;
+        const float3 _e14 = finite_or_zero(c_7);
+        next.sum = (_e13 + _e14);
+        uint _e17 = next.bad;
+        next.bad = (_e17 + 1u);
     }
-    if ((bad > 0u)) {
-        counters.InterlockedAdd(0, bad);
+    const uint _e22 = rem_u32_((s_4 + 1u), per_pass);
+    if ((_e22 != 0u)) {
+        PassSum _e25 = next;
+        const PassSum passsum = _e25;
+        return passsum;
     }
-    return;
+    uint _e27 = ray_count;
+    counters.InterlockedAdd(4, _e27);
+    ray_count = 0u;
+    const uint _e31 = div_u32_(s_4, per_pass);
+    uint pass_ = (first_pass + _e31);
+    float3 _e34 = next.sum;
+    float4 _e36 = float4(_e34, float(per_pass));
+    uint _e38 = next.bad;
+    if ((pass_ == 0u)) {
+        accum.Store4(index*16, asuint(_e36));
+    } else {
+        float4 _e43 = asfloat(accum.Load4(index*16));
+        accum.Store4(index*16, asuint((_e43 + _e36)));
+    }
+    if ((_e38 > 0u)) {
+        counters.InterlockedAdd(0, _e38);
+    }
+    const PassSum passsum_1 = ConstructPassSum((0.0).xxx, 0u);
+    return passsum_1;
 }
 
 void render_pixel(uint2 pixel_5)
 {
-    float3 sum_1 = (float3)0;
-    uint bad_1 = (uint)0;
-    uint s_4 = (uint)0;
+    PassSum sums = (PassSum)0;
+    uint s_5 = (uint)0;
 
     FrameUniforms frame_6 = frame;
     TileParams tile_2 = tile;
     uint index_1 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
-    uint per_pass = frame_6.samples_per_pass;
-    uint first_1 = (tile_2.frame * per_pass);
-    uint count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
-    sum_1 = (0.0).xxx;
-    bad_1 = 0u;
-    s_4 = 0u;
+    uint per_pass_1 = frame_6.samples_per_pass;
+    uint first_1 = (tile_2.frame * per_pass_1);
+    uint count_2 = (per_pass_1 * max(frame_6.passes_per_dispatch, 1u));
+    sums = ConstructPassSum((0.0).xxx, 0u);
+    s_5 = 0u;
     uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
     bool loop_init_4 = true;
     while(true) {
         if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e56 = s_4;
-            s_4 = (_e56 + 1u);
+            uint _e35 = s_5;
+            s_5 = (_e35 + 1u);
         }
         loop_init_4 = false;
-        uint _e25 = s_4;
+        uint _e25 = s_5;
         if ((_e25 >= count_2)) {
             break;
         }
-        uint _e27 = s_4;
-        const Ray _e29 = sample_camera_ray(pixel_5, (first_1 + _e27));
-        const float3 _e30 = trace(_e29);
-        const bool3 _e31 = is_finite_vec3f(_e30);
-        if (all(_e31)) {
-            float3 _e33 = sum_1;
-            sum_1 = (_e33 + _e30);
-        } else {
-            float3 _e35 = sum_1;
-            const float3 _e36 = finite_or_zero(_e30);
-            sum_1 = (_e35 + _e36);
-            uint _e38 = bad_1;
-            bad_1 = (_e38 + 1u);
-        }
-        uint _e41 = s_4;
-        const uint _e44 = rem_u32_((_e41 + 1u), per_pass);
-        if ((_e44 == 0u)) {
-            float3 _e47 = sum_1;
-            uint _e48 = bad_1;
-            uint _e50 = s_4;
-            const uint _e51 = div_u32_(_e50, per_pass);
-            pass_done(index_1, _e47, _e48, (tile_2.frame + _e51));
-            sum_1 = (0.0).xxx;
-            bad_1 = 0u;
-        }
+        PassSum _e27 = sums;
+        uint _e28 = s_5;
+        const Ray _e30 = sample_camera_ray(pixel_5, (first_1 + _e28));
+        const float3 _e31 = trace(_e30);
+        uint _e32 = s_5;
+        const PassSum _e34 = add_sample(_e27, _e31, _e32, index_1, tile_2.frame, per_pass_1);
+        sums = _e34;
     }
     return;
 }

@@ -38,6 +38,10 @@ struct FrameUniforms {
     uint path_slots;
     uint passes_per_dispatch;
 };
+struct PassSum {
+    metal::packed_float3 sum;
+    uint bad;
+};
 struct Ray {
     metal::packed_float3 origin;
     float tmin;
@@ -547,8 +551,8 @@ metal::float3 safe_inverse(
     metal::float3 d
 ) {
     metal::float3 tiny = metal::float3(0.000000000000000000000000000000000000011754944);
-    metal::float3 s_5 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
-    metal::float3 dd = metal::select(d, s_5 * tiny, metal::abs(d) < tiny);
+    metal::float3 s_6 = metal::select(metal::float3(1.0), metal::float3(-1.0), d < metal::float3(0.0));
+    metal::float3 dd = metal::select(d, s_6 * tiny, metal::abs(d) < tiny);
     return metal::float3(1.0) / dd;
 }
 
@@ -584,20 +588,20 @@ metal::float3 hit_triangle(
     metal::float4 _e18 = triangles[(slot * 3u) + 1u];
     metal::float3 b_5 = _e18.xyz - r_1.origin;
     metal::float4 _e28 = triangles[(slot * 3u) + 2u];
-    metal::float3 c_7 = _e28.xyz - r_1.origin;
+    metal::float3 c_8 = _e28.xyz - r_1.origin;
     float ax = a_4[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * a_4[metal::min(r_1.kz, 2u)]);
     float ay = a_4[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * a_4[metal::min(r_1.kz, 2u)]);
     float bx = b_5[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * b_5[metal::min(r_1.kz, 2u)]);
     float by = b_5[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * b_5[metal::min(r_1.kz, 2u)]);
-    float cx = c_7[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_7[metal::min(r_1.kz, 2u)]);
-    float cy = c_7[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_7[metal::min(r_1.kz, 2u)]);
+    float cx = c_8[metal::min(r_1.kx, 2u)] - (r_1.shear[0] * c_8[metal::min(r_1.kz, 2u)]);
+    float cy = c_8[metal::min(r_1.ky, 2u)] - (r_1.shear[1] * c_8[metal::min(r_1.kz, 2u)]);
     float u_3 = (cx * by) - (cy * bx);
     float v_6 = (ax * cy) - (ay * cx);
     float w_1 = (bx * ay) - (by * ax);
     bool outside = (((u_3 < 0.0) || (v_6 < 0.0)) || (w_1 < 0.0)) && (((u_3 > 0.0) || (v_6 > 0.0)) || (w_1 > 0.0));
     float det = (u_3 + v_6) + w_1;
     float rcp = 1.0 / det;
-    float t_4 = (((u_3 * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_6 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear[2] * c_7[metal::min(r_1.kz, 2u)]))) * rcp;
+    float t_4 = (((u_3 * (r_1.shear[2] * a_4[metal::min(r_1.kz, 2u)])) + (v_6 * (r_1.shear[2] * b_5[metal::min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear[2] * c_8[metal::min(r_1.kz, 2u)]))) * rcp;
     bool hit_12 = (((r_1.valid && !(outside)) && !((det == 0.0))) && (t_4 >= tmin)) && (t_4 <= tmax_1);
     uint _e173 = F32_INF;
     return hit_12 ? metal::float3(t_4, v_6 * rcp, w_1 * rcp) : metal::float3(as_type<float>(_e173), 0.0, 0.0);
@@ -751,10 +755,10 @@ Candidate intersect_mesh(
                     metal::float4 _e58 = triangles[(prim * 3u) + 1u];
                     uint tag = as_type<uint>(_e58.w);
                     uint owner = (tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1;
-                    Candidate c_8 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
-                    bool _e73 = accept(inst_2, world_ray, c_8);
+                    Candidate c_9 = Candidate {_e46.x, owner, prim, {}, _e46.yz, {}, metal::float3(0.0)};
+                    bool _e73 = accept(inst_2, world_ray, c_9);
                     if (_e73) {
-                        best = c_8;
+                        best = c_9;
                         if (shadow) {
                             Candidate _e74 = best;
                             return _e74;
@@ -905,10 +909,10 @@ Candidate intersect_object(
     float _e26 = r_2.tmax;
     uint _e31 = F32_INF;
     if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < as_type<float>(_e31))) {
-        Candidate c_9 = Candidate {_e19.t, slot_2, 0u, {}, _e19.uv, {}, _e19.normal};
-        bool _e40 = accept(inst_6, ray_7, c_9);
+        Candidate c_10 = Candidate {_e19.t, slot_2, 0u, {}, _e19.uv, {}, _e19.normal};
+        bool _e40 = accept(inst_6, ray_7, c_10);
         if (_e40) {
-            return c_9;
+            return c_10;
         }
     }
     return best_1;
@@ -968,9 +972,9 @@ metal::float3 decode_octahedral(
     float _e14 = n_1.z;
     if (_e14 < 0.0) {
         metal::float3 _e21 = n_1;
-        metal::float2 s_6 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
+        metal::float2 s_7 = metal::select(metal::float2(-1.0), metal::float2(1.0), _e21.xy >= metal::float2(0.0));
         metal::float3 _e29 = n_1;
-        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_6;
+        metal::float2 xy = (metal::float2(1.0) - metal::abs(_e29.yx)) * s_7;
         float _e37 = n_1.z;
         n_1 = metal::float3(xy.x, xy.y, _e37);
     }
@@ -1012,10 +1016,10 @@ Hit finish_hit(
         float w_3 = (1.0 - c_1.uv.x) - c_1.uv.y;
         metal::float3 e1_ = _e42.v1_ - _e42.v0_;
         metal::float3 e2_ = _e42.v2_ - _e42.v0_;
-        metal::float3 p_7 = _e42.v0_ + ((e1_ * metal::float3(c_1.uv.x)) + (e2_ * metal::float3(c_1.uv.y)));
-        metal::float3 _e65 = point_to_world(inst_7, p_7);
+        metal::float3 p_8 = _e42.v0_ + ((e1_ * metal::float3(c_1.uv.x)) + (e2_ * metal::float3(c_1.uv.y)));
+        metal::float3 _e65 = point_to_world(inst_7, p_8);
         hit.position = _e65;
-        float _e73 = mesh_error(inst_7, _e42.v0_, e1_ * metal::float3(c_1.uv.x), e2_ * metal::float3(c_1.uv.y), p_7);
+        float _e73 = mesh_error(inst_7, _e42.v0_, e1_ * metal::float3(c_1.uv.x), e2_ * metal::float3(c_1.uv.y), p_8);
         hit_error = _e73;
         n_geo = metal::cross(e1_, e2_);
         metal::uint4 a0_ = attributes[c_1.primitive * 2u];
@@ -1418,14 +1422,14 @@ LightSample quad_light(
     device type_17& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 c_10 = metal::cross(l.edge_u, l.edge_v);
-    float area = metal::length(c_10);
+    metal::float3 c_11 = metal::cross(l.edge_u, l.edge_v);
+    float area = metal::length(c_11);
     metal::float2 _e7 = rand2_next(scratch, rng_state);
     metal::float3 to_light = ((l.corner + (l.edge_u * metal::float3(_e7.x))) + (l.edge_v * metal::float3(_e7.y))) - position_1;
     float dist2_ = metal::dot(to_light, to_light);
     float dist_3 = metal::sqrt(dist2_);
     metal::float3 dir_9 = to_light / metal::float3(metal::max(dist_3, 0.00000000000000000001));
-    float cos_light = -(metal::dot(dir_9, c_10)) / metal::max(area, 0.000000000000000000000000000001);
+    float cos_light = -(metal::dot(dir_9, c_11)) / metal::max(area, 0.000000000000000000000000000001);
     if (!((cos_light > 0.0)) || !((dist2_ > 0.0))) {
         return LightSample {dir_9, dist_3, metal::float3(0.0), 0.0};
     }
@@ -1801,10 +1805,10 @@ metal::float3 path_diffuse_shade(
         }
         uint _e20 = i_6;
         LightSample _e22 = sample_light_above_deferred(_e20, hit_1.position, ng, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
-        float c_11 = metal::max(metal::dot(n_13, _e22.dir), 0.0);
+        float c_12 = metal::max(metal::dot(n_13, _e22.dir), 0.0);
         metal::float3 _e27 = direct;
-        float _e31 = mis_light_weight(_e22, c_11 * INV_PI, F32_INF);
-        direct = _e27 + (_e22.radiance * metal::float3(c_11 * _e31));
+        float _e31 = mis_light_weight(_e22, c_12 * INV_PI, F32_INF);
+        direct = _e27 + (_e22.radiance * metal::float3(c_12 * _e31));
     }
     metal::float3 _e43 = direct;
     return ((m.albedo * metal::float3(INV_PI)) * _e43) + secondary;
@@ -2293,8 +2297,8 @@ metal::float3 pbr_sample_vndf(
     float r_5 = metal::sqrt(u_1.x);
     float phi_2 = TAU * u_1.y;
     float p1_ = r_5 * metal::cos(phi_2);
-    float s_7 = 0.5 * (1.0 + _e9.z);
-    float p2_ = ((1.0 - s_7) * metal::sqrt(metal::max(1.0 - (p1_ * p1_), 0.0))) + ((s_7 * r_5) * metal::sin(phi_2));
+    float s_8 = 0.5 * (1.0 + _e9.z);
+    float p2_ = ((1.0 - s_8) * metal::sqrt(metal::max(1.0 - (p1_ * p1_), 0.0))) + ((s_8 * r_5) * metal::sin(phi_2));
     metal::float3 _e59 = t1_;
     metal::float3 nh = ((_e59 * metal::float3(p1_)) + (t2_ * metal::float3(p2_))) + (_e9 * metal::float3(metal::sqrt(metal::max((1.0 - (p1_ * p1_)) - (p2_ * p2_), 0.0))));
     metal::float3 _e84 = normalize_vec3f(metal::float3(alpha * nh.x, alpha * nh.y, metal::max(nh.z, 0.0)));
@@ -2628,32 +2632,54 @@ metal::float3 finite_or_zero(
     return metal::select(metal::float3(0.0), c_6, _e3);
 }
 
-void pass_done(
+PassSum add_sample(
+    PassSum p_7,
+    metal::float3 c_7,
+    uint s_4,
     uint index,
-    metal::float3 sum,
-    uint bad,
-    uint pass,
-    constant FrameUniforms& frame,
+    uint first_pass,
+    uint per_pass,
     thread uint& ray_count,
     device type_17& counters,
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e5 = ray_count;
-    metal::atomic_fetch_add_explicit(&counters[1], _e5, metal::memory_order_relaxed);
-    ray_count = 0u;
-    FrameUniforms _e10 = frame;
-    metal::float4 _e13 = metal::float4(sum, static_cast<float>(_e10.samples_per_pass));
-    if (pass == 0u) {
-        accum[index] = _e13;
+    PassSum next = {};
+    next = p_7;
+    metal::bool3 _e7 = is_finite_vec3f(c_7);
+    if (metal::all(_e7)) {
+        metal::float3 _e10 = next.sum;
+        next.sum = _e10 + c_7;
     } else {
-        metal::float4 _e18 = accum[index];
-        accum[index] = _e18 + _e13;
+        metal::float3 _e13 = next.sum;
+        metal::float3 _e14 = finite_or_zero(c_7);
+        next.sum = _e13 + _e14;
+        uint _e17 = next.bad;
+        next.bad = _e17 + 1u;
     }
-    if (bad > 0u) {
-        metal::atomic_fetch_add_explicit(&counters[0], bad, metal::memory_order_relaxed);
+    uint _e22 = rem_u32_(s_4 + 1u, per_pass);
+    if (_e22 != 0u) {
+        PassSum _e25 = next;
+        return _e25;
     }
-    return;
+    uint _e27 = ray_count;
+    metal::atomic_fetch_add_explicit(&counters[1], _e27, metal::memory_order_relaxed);
+    ray_count = 0u;
+    uint _e31 = div_u32_(s_4, per_pass);
+    uint pass = first_pass + _e31;
+    metal::float3 _e34 = next.sum;
+    metal::float4 _e36 = metal::float4(_e34, static_cast<float>(per_pass));
+    uint _e38 = next.bad;
+    if (pass == 0u) {
+        accum[index] = _e36;
+    } else {
+        metal::float4 _e43 = accum[index];
+        accum[index] = _e43 + _e36;
+    }
+    if (_e38 > 0u) {
+        metal::atomic_fetch_add_explicit(&counters[0], _e38, metal::memory_order_relaxed);
+    }
+    return PassSum {metal::float3(0.0), 0u};
 }
 
 void render_pixel(
@@ -2678,57 +2704,37 @@ void render_pixel(
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::float3 sum_1 = {};
-    uint bad_1 = {};
-    uint s_4 = {};
+    PassSum sums = {};
+    uint s_5 = {};
     FrameUniforms frame_6 = frame;
     TileParams tile_2 = tile;
     uint index_1 = (pixel_5.y * tile_2.image_size.x) + pixel_5.x;
-    uint per_pass = frame_6.samples_per_pass;
-    uint first_1 = tile_2.frame * per_pass;
-    uint count_2 = per_pass * metal::max(frame_6.passes_per_dispatch, 1u);
-    sum_1 = metal::float3(0.0);
-    bad_1 = 0u;
-    s_4 = 0u;
+    uint per_pass_1 = frame_6.samples_per_pass;
+    uint first_1 = tile_2.frame * per_pass_1;
+    uint count_2 = per_pass_1 * metal::max(frame_6.passes_per_dispatch, 1u);
+    sums = PassSum {metal::float3(0.0), 0u};
+    s_5 = 0u;
     uint2 loop_bound_8 = uint2(4294967295u);
     bool loop_init_4 = true;
     while(true) {
         if (metal::all(loop_bound_8 == uint2(0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e56 = s_4;
-            s_4 = _e56 + 1u;
+            uint _e35 = s_5;
+            s_5 = _e35 + 1u;
         }
         loop_init_4 = false;
-        uint _e25 = s_4;
+        uint _e25 = s_5;
         if (_e25 >= count_2) {
             break;
         }
-        uint _e27 = s_4;
-        Ray _e29 = sample_camera_ray(pixel_5, first_1 + _e27, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-        metal::float3 _e30 = trace(_e29, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-        metal::bool3 _e31 = is_finite_vec3f(_e30);
-        if (metal::all(_e31)) {
-            metal::float3 _e33 = sum_1;
-            sum_1 = _e33 + _e30;
-        } else {
-            metal::float3 _e35 = sum_1;
-            metal::float3 _e36 = finite_or_zero(_e30);
-            sum_1 = _e35 + _e36;
-            uint _e38 = bad_1;
-            bad_1 = _e38 + 1u;
-        }
-        uint _e41 = s_4;
-        uint _e44 = rem_u32_(_e41 + 1u, per_pass);
-        if (_e44 == 0u) {
-            metal::float3 _e47 = sum_1;
-            uint _e48 = bad_1;
-            uint _e50 = s_4;
-            uint _e51 = div_u32_(_e50, per_pass);
-            pass_done(index_1, _e47, _e48, tile_2.frame + _e51, frame, ray_count, counters, accum, _buffer_sizes);
-            sum_1 = metal::float3(0.0);
-            bad_1 = 0u;
-        }
+        PassSum _e27 = sums;
+        uint _e28 = s_5;
+        Ray _e30 = sample_camera_ray(pixel_5, first_1 + _e28, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+        metal::float3 _e31 = trace(_e30, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        uint _e32 = s_5;
+        PassSum _e34 = add_sample(_e27, _e31, _e32, index_1, tile_2.frame, per_pass_1, ray_count, counters, accum, _buffer_sizes);
+        sums = _e34;
     }
     return;
 }

@@ -24,6 +24,11 @@ struct FrameUniforms {
     passes_per_dispatch: u32,
 }
 
+struct PassSum {
+    sum: vec3<f32>,
+    bad: u32,
+}
+
 struct Ray {
     origin: vec3<f32>,
     tmin: f32,
@@ -461,8 +466,8 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_5 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_5 * tiny), (abs(d) < tiny));
+    let s_6 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_6 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
@@ -488,20 +493,20 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let _e18 = triangles[((slot * 3u) + 1u)];
     let b_5 = (_e18.xyz - r_1.origin);
     let _e28 = triangles[((slot * 3u) + 2u)];
-    let c_7 = (_e28.xyz - r_1.origin);
+    let c_8 = (_e28.xyz - r_1.origin);
     let ax = (a_4[min(r_1.kx, 2u)] - (r_1.shear.x * a_4[min(r_1.kz, 2u)]));
     let ay = (a_4[min(r_1.ky, 2u)] - (r_1.shear.y * a_4[min(r_1.kz, 2u)]));
     let bx = (b_5[min(r_1.kx, 2u)] - (r_1.shear.x * b_5[min(r_1.kz, 2u)]));
     let by = (b_5[min(r_1.ky, 2u)] - (r_1.shear.y * b_5[min(r_1.kz, 2u)]));
-    let cx = (c_7[min(r_1.kx, 2u)] - (r_1.shear.x * c_7[min(r_1.kz, 2u)]));
-    let cy = (c_7[min(r_1.ky, 2u)] - (r_1.shear.y * c_7[min(r_1.kz, 2u)]));
+    let cx = (c_8[min(r_1.kx, 2u)] - (r_1.shear.x * c_8[min(r_1.kz, 2u)]));
+    let cy = (c_8[min(r_1.ky, 2u)] - (r_1.shear.y * c_8[min(r_1.kz, 2u)]));
     let u_3 = ((cx * by) - (cy * bx));
     let v_6 = ((ax * cy) - (ay * cx));
     let w_1 = ((bx * ay) - (by * ax));
     let outside = ((((u_3 < 0f) || (v_6 < 0f)) || (w_1 < 0f)) && (((u_3 > 0f) || (v_6 > 0f)) || (w_1 > 0f)));
     let det = ((u_3 + v_6) + w_1);
     let rcp = (1f / det);
-    let t_4 = ((((u_3 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_6 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear.z * c_7[min(r_1.kz, 2u)]))) * rcp);
+    let t_4 = ((((u_3 * (r_1.shear.z * a_4[min(r_1.kz, 2u)])) + (v_6 * (r_1.shear.z * b_5[min(r_1.kz, 2u)]))) + (w_1 * (r_1.shear.z * c_8[min(r_1.kz, 2u)]))) * rcp);
     let hit_12 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_4 >= tmin)) && (t_4 <= tmax_1));
     let _e173 = F32_INF;
     return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_4, (v_6 * rcp), (w_1 * rcp)), hit_12);
@@ -600,10 +605,10 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
                     let _e58 = triangles[((prim * 3u) + 1u)];
                     let tag = bitcast<u32>(_e58.w);
                     let owner = select(slot_1, ((inst_2.object + tag) - 1u), (tag != 0u));
-                    let c_8 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
-                    let _e73 = accept(inst_2, world_ray, c_8);
+                    let c_9 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
+                    let _e73 = accept(inst_2, world_ray, c_9);
                     if _e73 {
-                        best = c_8;
+                        best = c_9;
                         if shadow {
                             let _e74 = best;
                             return _e74;
@@ -733,10 +738,10 @@ fn intersect_object(slot_2: u32, ray_7: Ray, best_1: Candidate, shadow_1: bool) 
     let _e26 = r_2.tmax;
     let _e31 = F32_INF;
     if (((_e19.t >= _e22) && (_e19.t <= _e26)) && (_e19.t < bitcast<f32>(_e31))) {
-        let c_9 = Candidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
-        let _e40 = accept(inst_6, ray_7, c_9);
+        let c_10 = Candidate(_e19.t, slot_2, 0u, _e19.uv, _e19.normal);
+        let _e40 = accept(inst_6, ray_7, c_10);
         if _e40 {
-            return c_9;
+            return c_10;
         }
     }
     return best_1;
@@ -779,9 +784,9 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     let _e14 = n_1.z;
     if (_e14 < 0f) {
         let _e21 = n_1;
-        let s_6 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_7 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n_1;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_6);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_7);
         let _e37 = n_1.z;
         n_1 = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -813,10 +818,10 @@ fn finish_hit(ray_8: Ray, c_1: Candidate) -> Hit {
         let w_3 = ((1f - b_7.x) - b_7.y);
         let e1_ = (_e42.v1_ - _e42.v0_);
         let e2_ = (_e42.v2_ - _e42.v0_);
-        let p_7 = (_e42.v0_ + ((e1_ * vec3(b_7.x)) + (e2_ * vec3(b_7.y))));
-        let _e65 = point_to_world(inst_7, p_7);
+        let p_8 = (_e42.v0_ + ((e1_ * vec3(b_7.x)) + (e2_ * vec3(b_7.y))));
+        let _e65 = point_to_world(inst_7, p_8);
         hit.position = _e65;
-        let _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_7.x)), (e2_ * vec3(b_7.y)), p_7);
+        let _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_7.x)), (e2_ * vec3(b_7.y)), p_8);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
         let a0_ = attributes[(c_1.primitive * 2u)];
@@ -1119,14 +1124,14 @@ fn shadow_deferred(position: vec3<f32>, normal_1: vec3<f32>, dir_1: vec3<f32>, d
 }
 
 fn quad_light(l: QuadLight, position_1: vec3<f32>, normal_2: vec3<f32>) -> LightSample {
-    let c_10 = cross(l.edge_u, l.edge_v);
-    let area = length(c_10);
+    let c_11 = cross(l.edge_u, l.edge_v);
+    let area = length(c_11);
     let _e7 = rand2_next();
     let to_light = (((l.corner + (l.edge_u * vec3(_e7.x))) + (l.edge_v * vec3(_e7.y))) - position_1);
     let dist2_ = dot(to_light, to_light);
     let dist_3 = sqrt(dist2_);
     let dir_9 = (to_light / vec3(max(dist_3, 0.00000000000000000001f)));
-    let cos_light = (-(dot(dir_9, c_10)) / max(area, 0.000000000000000000000000000001f));
+    let cos_light = (-(dot(dir_9, c_11)) / max(area, 0.000000000000000000000000000001f));
     if (!((cos_light > 0f)) || !((dist2_ > 0f))) {
         return LightSample(dir_9, dist_3, vec3(0f), 0f);
     }
@@ -1375,10 +1380,10 @@ fn path_diffuse_shade(m: PathDiffuse, ray_14: Ray, hit_1: Hit, secondary: vec3<f
         }
         let _e20 = i_6;
         let _e22 = sample_light_above_deferred(_e20, hit_1.position, ng);
-        let c_11 = max(dot(n_13, _e22.dir), 0f);
+        let c_12 = max(dot(n_13, _e22.dir), 0f);
         let _e27 = direct;
-        let _e31 = mis_light_weight(_e22, (c_11 * INV_PI));
-        direct = (_e27 + (_e22.radiance * vec3((c_11 * _e31))));
+        let _e31 = mis_light_weight(_e22, (c_12 * INV_PI));
+        direct = (_e27 + (_e22.radiance * vec3((c_12 * _e31))));
         continuing {
             let _e36 = i_6;
             i_6 = (_e36 + 1u);
@@ -1709,8 +1714,8 @@ fn pbr_sample_vndf(ve: vec3<f32>, alpha: f32, u_1: vec2<f32>) -> vec3<f32> {
     let r_5 = sqrt(u_1.x);
     let phi_2 = (TAU * u_1.y);
     let p1_ = (r_5 * cos(phi_2));
-    let s_7 = (0.5f * (1f + _e9.z));
-    let p2_ = (((1f - s_7) * sqrt(max((1f - (p1_ * p1_)), 0f))) + ((s_7 * r_5) * sin(phi_2)));
+    let s_8 = (0.5f * (1f + _e9.z));
+    let p2_ = (((1f - s_8) * sqrt(max((1f - (p1_ * p1_)), 0f))) + ((s_8 * r_5) * sin(phi_2)));
     let _e59 = t1_;
     let nh = (((_e59 * vec3(p1_)) + (t2_ * vec3(p2_))) + (_e9 * vec3(sqrt(max(((1f - (p1_ * p1_)) - (p2_ * p2_)), 0f)))));
     let _e84 = normalize_vec3f(vec3<f32>((alpha * nh.x), (alpha * nh.y), max(nh.z, 0f)));
@@ -1947,71 +1952,73 @@ fn finite_or_zero(c_6: vec3<f32>) -> vec3<f32> {
     return select(vec3(0f), c_6, _e3);
 }
 
-fn pass_done(index: u32, sum: vec3<f32>, bad: u32, pass_: u32) {
-    let _e5 = ray_count;
-    atomicAdd((&counters[1]), _e5);
-    ray_count = 0u;
-    let _e10 = frame;
-    let _e13 = vec4<f32>(sum, f32(_e10.samples_per_pass));
-    if (pass_ == 0u) {
-        accum[index] = _e13;
+fn add_sample(p_7: PassSum, c_7: vec3<f32>, s_4: u32, index: u32, first_pass: u32, per_pass: u32) -> PassSum {
+    var next: PassSum;
+
+    next = p_7;
+    let _e7 = is_finite_vec3f(c_7);
+    if all(_e7) {
+        let _e10 = next.sum;
+        next.sum = (_e10 + c_7);
     } else {
-        let _e18 = accum[index];
-        accum[index] = (_e18 + _e13);
+        let _e13 = next.sum;
+        let _e14 = finite_or_zero(c_7);
+        next.sum = (_e13 + _e14);
+        let _e17 = next.bad;
+        next.bad = (_e17 + 1u);
     }
-    if (bad > 0u) {
-        atomicAdd((&counters[0]), bad);
+    let _e22 = rem_u32_((s_4 + 1u), per_pass);
+    if (_e22 != 0u) {
+        let _e25 = next;
+        return _e25;
     }
-    return;
+    let _e27 = ray_count;
+    atomicAdd((&counters[1]), _e27);
+    ray_count = 0u;
+    let _e31 = div_u32_(s_4, per_pass);
+    let pass_ = (first_pass + _e31);
+    let _e34 = next.sum;
+    let _e36 = vec4<f32>(_e34, f32(per_pass));
+    let _e38 = next.bad;
+    if (pass_ == 0u) {
+        accum[index] = _e36;
+    } else {
+        let _e43 = accum[index];
+        accum[index] = (_e43 + _e36);
+    }
+    if (_e38 > 0u) {
+        atomicAdd((&counters[0]), _e38);
+    }
+    return PassSum(vec3(0f), 0u);
 }
 
 fn render_pixel(pixel_5: vec2<u32>) {
-    var sum_1: vec3<f32>;
-    var bad_1: u32;
-    var s_4: u32;
+    var sums: PassSum;
+    var s_5: u32;
 
     let frame_6 = frame;
     let tile_2 = tile;
     let index_1 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
-    let per_pass = frame_6.samples_per_pass;
-    let first_1 = (tile_2.frame * per_pass);
-    let count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
-    sum_1 = vec3(0f);
-    bad_1 = 0u;
-    s_4 = 0u;
+    let per_pass_1 = frame_6.samples_per_pass;
+    let first_1 = (tile_2.frame * per_pass_1);
+    let count_2 = (per_pass_1 * max(frame_6.passes_per_dispatch, 1u));
+    sums = PassSum(vec3(0f), 0u);
+    s_5 = 0u;
     loop {
-        let _e25 = s_4;
+        let _e25 = s_5;
         if (_e25 >= count_2) {
             break;
         }
-        let _e27 = s_4;
-        let _e29 = sample_camera_ray(pixel_5, (first_1 + _e27));
-        let _e30 = trace(_e29);
-        let _e31 = is_finite_vec3f(_e30);
-        if all(_e31) {
-            let _e33 = sum_1;
-            sum_1 = (_e33 + _e30);
-        } else {
-            let _e35 = sum_1;
-            let _e36 = finite_or_zero(_e30);
-            sum_1 = (_e35 + _e36);
-            let _e38 = bad_1;
-            bad_1 = (_e38 + 1u);
-        }
-        let _e41 = s_4;
-        let _e44 = rem_u32_((_e41 + 1u), per_pass);
-        if (_e44 == 0u) {
-            let _e47 = sum_1;
-            let _e48 = bad_1;
-            let _e50 = s_4;
-            let _e51 = div_u32_(_e50, per_pass);
-            pass_done(index_1, _e47, _e48, (tile_2.frame + _e51));
-            sum_1 = vec3(0f);
-            bad_1 = 0u;
-        }
+        let _e27 = sums;
+        let _e28 = s_5;
+        let _e30 = sample_camera_ray(pixel_5, (first_1 + _e28));
+        let _e31 = trace(_e30);
+        let _e32 = s_5;
+        let _e34 = add_sample(_e27, _e31, _e32, index_1, tile_2.frame, per_pass_1);
+        sums = _e34;
         continuing {
-            let _e56 = s_4;
-            s_4 = (_e56 + 1u);
+            let _e35 = s_5;
+            s_5 = (_e35 + 1u);
         }
     }
     return;

@@ -27,6 +27,10 @@ struct FrameUniforms {
     uint path_slots;
     uint passes_per_dispatch;
 };
+struct PassSum {
+    vec3 sum;
+    uint bad;
+};
 struct Ray {
     vec3 origin;
     float tmin;
@@ -424,8 +428,8 @@ Ray to_object(GpuInstance inst, Ray ray) {
 
 vec3 safe_inverse(vec3 d) {
     vec3 tiny = vec3(1.1754944e-38);
-    vec3 s_3 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
-    vec3 dd = mix(d, (s_3 * tiny), lessThan(abs(d), tiny));
+    vec3 s_4 = mix(vec3(1.0), vec3(-1.0), lessThan(d, vec3(0.0)));
+    vec3 dd = mix(d, (s_4 * tiny), lessThan(abs(d), tiny));
     return (vec3(1.0) / dd);
 }
 
@@ -451,20 +455,20 @@ vec3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1) {
     vec4 _e18 = _group_0_binding_4_cs[((slot * 3u) + 1u)];
     vec3 b_6 = (_e18.xyz - r_1.origin);
     vec4 _e28 = _group_0_binding_4_cs[((slot * 3u) + 2u)];
-    vec3 c_5 = (_e28.xyz - r_1.origin);
+    vec3 c_6 = (_e28.xyz - r_1.origin);
     float ax = (a_5[min(r_1.kx, 2u)] - (r_1.shear.x * a_5[min(r_1.kz, 2u)]));
     float ay = (a_5[min(r_1.ky, 2u)] - (r_1.shear.y * a_5[min(r_1.kz, 2u)]));
     float bx = (b_6[min(r_1.kx, 2u)] - (r_1.shear.x * b_6[min(r_1.kz, 2u)]));
     float by = (b_6[min(r_1.ky, 2u)] - (r_1.shear.y * b_6[min(r_1.kz, 2u)]));
-    float cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
-    float cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
+    float cx = (c_6[min(r_1.kx, 2u)] - (r_1.shear.x * c_6[min(r_1.kz, 2u)]));
+    float cy = (c_6[min(r_1.ky, 2u)] - (r_1.shear.y * c_6[min(r_1.kz, 2u)]));
     float u = ((cx * by) - (cy * bx));
     float v_2 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
     float det = ((u + v_2) + w);
     float rcp = (1.0 / det);
-    float t_2 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    float t_2 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
     bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_10 ? vec3(t_2, (v_2 * rcp), (w * rcp)) : vec3(uintBitsToFloat(_e173), 0.0, 0.0));
@@ -568,10 +572,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                     vec4 _e58 = _group_0_binding_4_cs[((prim * 3u) + 1u)];
                     uint tag = floatBitsToUint(_e58.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_6 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0.0));
-                    bool _e73 = accept(inst_2, world_ray, c_6);
+                    Candidate c_7 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0.0));
+                    bool _e73 = accept(inst_2, world_ray, c_7);
                     if (_e73) {
-                        best = c_6;
+                        best = c_7;
                         if (shadow) {
                             Candidate _e74 = best;
                             return _e74;
@@ -680,9 +684,9 @@ vec3 decode_octahedral(uint bits) {
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         vec3 _e21 = n_1;
-        vec2 s_4 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
+        vec2 s_5 = mix(vec2(-1.0), vec2(1.0), greaterThanEqual(_e21.xy, vec2(0.0)));
         vec3 _e29 = n_1;
-        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_4);
+        vec2 xy = ((vec2(1.0) - abs(_e29.yx)) * s_5);
         float _e37 = n_1.z;
         n_1 = vec3(xy.x, xy.y, _e37);
     }
@@ -713,10 +717,10 @@ Hit finish_hit(Ray ray_6, Candidate c_1) {
         float w_2 = ((1.0 - b_7.x) - b_7.y);
         vec3 e1_ = (_e42.v1_ - _e42.v0_);
         vec3 e2_ = (_e42.v2_ - _e42.v0_);
-        vec3 p_6 = (_e42.v0_ + ((e1_ * vec3(b_7.x)) + (e2_ * vec3(b_7.y))));
-        vec3 _e65 = point_to_world(inst_7, p_6);
+        vec3 p_7 = (_e42.v0_ + ((e1_ * vec3(b_7.x)) + (e2_ * vec3(b_7.y))));
+        vec3 _e65 = point_to_world(inst_7, p_7);
         hit.position = _e65;
-        float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_7.x)), (e2_ * vec3(b_7.y)), p_6);
+        float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_7.x)), (e2_ * vec3(b_7.y)), p_7);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
         uvec4 a0_ = _group_0_binding_5_cs[(c_1.primitive * 2u)];
@@ -1034,11 +1038,11 @@ vec4 texel_at(uint t, uint xi, uint yi) {
     uint format = _group_0_binding_6_cs[(t + 3u)];
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
         uint _e25 = _group_0_binding_7_cs[(base_3 + index_1)];
-        vec4 c_7 = unpackUnorm4x8(_e25);
-        float _e28 = srgb_channel(c_7.x);
-        float _e30 = srgb_channel(c_7.y);
-        float _e32 = srgb_channel(c_7.z);
-        return vec4(_e28, _e30, _e32, c_7.w);
+        vec4 c_8 = unpackUnorm4x8(_e25);
+        float _e28 = srgb_channel(c_8.x);
+        float _e30 = srgb_channel(c_8.y);
+        float _e32 = srgb_channel(c_8.z);
+        return vec4(_e28, _e30, _e32, c_8.w);
     }
     if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
         uint _e40 = _group_0_binding_7_cs[(base_3 + index_1)];
@@ -1060,9 +1064,9 @@ vec4 sample_texture(uint t_1, vec2 uv) {
     uint mu = (sampler_ & TEXTURE_WRAP_MASK);
     uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
     vec2 q_3 = (uv * vec2(float(wi), float(hi_1)));
-    vec2 p_7 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_3) : (q_3 - vec2(0.5)));
-    vec2 f_1 = floor(p_7);
-    vec2 fr = (p_7 - f_1);
+    vec2 p_8 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_3) : (q_3 - vec2(0.5)));
+    vec2 f_1 = floor(p_8);
+    vec2 fr = (p_8 - f_1);
     int _e47 = i32_from_f32_(f_1.x);
     int _e49 = i32_from_f32_(f_1.y);
     int _e50 = wrap_texel(_e47, wi, mu);
@@ -1206,8 +1210,8 @@ vec3 blinn_phong_shade(BlinnPhong m_1, Ray ray_15, Hit hit_4) {
     vec3 v_3 = -(_e5);
     vec4 _e12 = sample_texture(m_1.texture_, (hit_4.uv * m_1.uv_scale));
     vec3 kd = (m_1.diffuse * _e12.xyz);
-    float s_5 = max(m_1.shininess, 0.0);
-    float norm = ((s_5 + 8.0) * (INV_PI / 8.0));
+    float s_6 = max(m_1.shininess, 0.0);
+    float norm = ((s_6 + 8.0) * (INV_PI / 8.0));
     color = (m_1.ambient * kd);
     uint _e28 = light_count_query();
     i_3 = 0u;
@@ -1226,7 +1230,7 @@ vec3 blinn_phong_shade(BlinnPhong m_1, Ray ray_15, Hit hit_4) {
         LightSample _e35 = sample_light_query(_e32, hit_4.position, hit_4.geometric_normal);
         float ndl = max(dot(_e3, _e35.dir), 0.0);
         vec3 _e42 = normalize_vec3f((_e35.dir + v_3));
-        float highlight = (pow(max(dot(_e3, _e42), 0.0), s_5) * norm);
+        float highlight = (pow(max(dot(_e3, _e42), 0.0), s_6) * norm);
         vec3 _e48 = color;
         color = (_e48 + ((_e35.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m_1.specular * vec3(highlight)))));
     }
@@ -1423,38 +1427,57 @@ vec3 finite_or_zero(vec3 c_4) {
     return mix(vec3(0.0), c_4, _e3);
 }
 
-void pass_done(uint index, vec3 sum, uint bad, uint pass) {
-    uint _e5 = ray_count;
-    atomicAdd(_group_0_binding_9_cs[1], _e5);
-    ray_count = 0u;
-    FrameUniforms _e10 = _group_0_binding_0_cs;
-    vec4 _e13 = vec4(sum, float(_e10.samples_per_pass));
-    if ((pass == 0u)) {
-        _group_0_binding_8_cs[index] = _e13;
+PassSum add_sample(PassSum p_6, vec3 c_5, uint s_2, uint index, uint first_pass, uint per_pass) {
+    PassSum next = PassSum(vec3(0.0), 0u);
+    next = p_6;
+    bvec3 _e7 = is_finite_vec3f(c_5);
+    if (all(_e7)) {
+        vec3 _e10 = next.sum;
+        next.sum = (_e10 + c_5);
     } else {
-        vec4 _e18 = _group_0_binding_8_cs[index];
-        _group_0_binding_8_cs[index] = (_e18 + _e13);
+        vec3 _e13 = next.sum;
+        vec3 _e14 = finite_or_zero(c_5);
+        next.sum = (_e13 + _e14);
+        uint _e17 = next.bad;
+        next.bad = (_e17 + 1u);
     }
-    if ((bad > 0u)) {
-        atomicAdd(_group_0_binding_9_cs[0], bad);
+    uint _e22 = rem_u32_((s_2 + 1u), per_pass);
+    if ((_e22 != 0u)) {
+        PassSum _e25 = next;
+        return _e25;
     }
-    return;
+    uint _e27 = ray_count;
+    atomicAdd(_group_0_binding_9_cs[1], _e27);
+    ray_count = 0u;
+    uint _e31 = div_u32_(s_2, per_pass);
+    uint pass = (first_pass + _e31);
+    vec3 _e34 = next.sum;
+    vec4 _e36 = vec4(_e34, float(per_pass));
+    uint _e38 = next.bad;
+    if ((pass == 0u)) {
+        _group_0_binding_8_cs[index] = _e36;
+    } else {
+        vec4 _e43 = _group_0_binding_8_cs[index];
+        _group_0_binding_8_cs[index] = (_e43 + _e36);
+    }
+    if ((_e38 > 0u)) {
+        atomicAdd(_group_0_binding_9_cs[0], _e38);
+    }
+    return PassSum(vec3(0.0), 0u);
 }
 
 void render_pixel(uvec2 pixel_5) {
-    vec3 sum_1 = vec3(0.0);
-    uint bad_1 = 0u;
-    uint s_2 = 0u;
+    PassSum sums = PassSum(vec3(0.0), 0u);
+    uint s_3 = 0u;
     PathState path = PathState(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), vec3(0.0), vec3(0.0), false);
     FrameUniforms frame_6 = _group_0_binding_0_cs;
     TileParams tile_2 = _group_0_binding_1_cs;
     uint index_2 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
-    uint per_pass = frame_6.samples_per_pass;
-    uint first_1 = (tile_2.frame * per_pass);
-    uint count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
-    sum_1 = vec3(0.0);
-    bad_1 = 0u;
-    s_2 = 0u;
+    uint per_pass_1 = frame_6.samples_per_pass;
+    uint first_1 = (tile_2.frame * per_pass_1);
+    uint count_2 = (per_pass_1 * max(frame_6.passes_per_dispatch, 1u));
+    sums = PassSum(vec3(0.0), 0u);
+    s_3 = 0u;
     Ray _e25 = sample_camera_ray(pixel_5, first_1);
     path = PathState(_e25, vec3(1.0), vec3(0.0), true);
     while(true) {
@@ -1465,38 +1488,20 @@ void render_pixel(uvec2 pixel_5) {
         path = _e38;
         bool _e40 = path.live;
         if (!(_e40)) {
-            vec3 c_8 = path.radiance;
-            bvec3 _e44 = is_finite_vec3f(c_8);
-            if (all(_e44)) {
-                vec3 _e46 = sum_1;
-                sum_1 = (_e46 + c_8);
-            } else {
-                vec3 _e48 = sum_1;
-                vec3 _e49 = finite_or_zero(c_8);
-                sum_1 = (_e48 + _e49);
-                uint _e51 = bad_1;
-                bad_1 = (_e51 + 1u);
-            }
-            uint _e54 = s_2;
-            s_2 = (_e54 + 1u);
-            uint _e57 = s_2;
-            uint _e58 = rem_u32_(_e57, per_pass);
-            if ((_e58 == 0u)) {
-                vec3 _e61 = sum_1;
-                uint _e62 = bad_1;
-                uint _e64 = s_2;
-                uint _e65 = div_u32_(_e64, per_pass);
-                pass_done(index_2, _e61, _e62, ((tile_2.frame + _e65) - 1u));
-                sum_1 = vec3(0.0);
-                bad_1 = 0u;
-            }
-            uint _e72 = s_2;
-            if ((_e72 >= count_2)) {
+            PassSum _e42 = sums;
+            vec3 _e44 = path.radiance;
+            uint _e45 = s_3;
+            PassSum _e47 = add_sample(_e42, _e44, _e45, index_2, tile_2.frame, per_pass_1);
+            sums = _e47;
+            uint _e48 = s_3;
+            s_3 = (_e48 + 1u);
+            uint _e51 = s_3;
+            if ((_e51 >= count_2)) {
                 break;
             }
-            uint _e74 = s_2;
-            Ray _e76 = sample_camera_ray(pixel_5, (first_1 + _e74));
-            path = PathState(_e76, vec3(1.0), vec3(0.0), true);
+            uint _e53 = s_3;
+            Ray _e55 = sample_camera_ray(pixel_5, (first_1 + _e53));
+            path = PathState(_e55, vec3(1.0), vec3(0.0), true);
         }
     }
     return;

@@ -24,6 +24,11 @@ struct FrameUniforms {
     uint passes_per_dispatch;
 };
 
+struct PassSum {
+    float3 sum;
+    uint bad;
+};
+
 struct Ray {
     float3 origin;
     float tmin;
@@ -534,8 +539,8 @@ Ray to_object(GpuInstance inst, Ray ray)
 float3 safe_inverse(float3 d)
 {
     float3 tiny = (1.1754944e-38).xxx;
-    float3 s_3 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
-    float3 dd = ((abs(d) < tiny) ? (s_3 * tiny) : d);
+    float3 s_4 = ((d < (0.0).xxx) ? (-1.0).xxx : (1.0).xxx);
+    float3 dd = ((abs(d) < tiny) ? (s_4 * tiny) : d);
     return ((1.0).xxx / dd);
 }
 
@@ -575,20 +580,20 @@ float3 hit_triangle(TriangleRay r_1, uint slot, float tmin, float tmax_1)
     float4 _e18 = asfloat(triangles.Load4(((slot * 3u) + 1u)*16));
     float3 b_6 = (_e18.xyz - r_1.origin);
     float4 _e28 = asfloat(triangles.Load4(((slot * 3u) + 2u)*16));
-    float3 c_5 = (_e28.xyz - r_1.origin);
+    float3 c_6 = (_e28.xyz - r_1.origin);
     float ax = (a_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * a_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float ay = (a_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * a_5[min(uint(min(r_1.kz, 2u)), 2u)]));
     float bx = (b_6[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * b_6[min(uint(min(r_1.kz, 2u)), 2u)]));
     float by = (b_6[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * b_6[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float cx = (c_5[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
-    float cy = (c_5[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_5[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cx = (c_6[min(uint(min(r_1.kx, 2u)), 2u)] - (r_1.shear.x * c_6[min(uint(min(r_1.kz, 2u)), 2u)]));
+    float cy = (c_6[min(uint(min(r_1.ky, 2u)), 2u)] - (r_1.shear.y * c_6[min(uint(min(r_1.kz, 2u)), 2u)]));
     float u = ((cx * by) - (cy * bx));
     float v_2 = ((ax * cy) - (ay * cx));
     float w = ((bx * ay) - (by * ax));
     bool outside = ((((u < 0.0) || (v_2 < 0.0)) || (w < 0.0)) && (((u > 0.0) || (v_2 > 0.0)) || (w > 0.0)));
     float det = ((u + v_2) + w);
     float rcp_ = (1.0 / det);
-    float t_2 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_5[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
+    float t_2 = ((((u * (r_1.shear.z * a_5[min(uint(min(r_1.kz, 2u)), 2u)])) + (v_2 * (r_1.shear.z * b_6[min(uint(min(r_1.kz, 2u)), 2u)]))) + (w * (r_1.shear.z * c_6[min(uint(min(r_1.kz, 2u)), 2u)]))) * rcp_);
     bool hit_10 = ((((r_1.valid && !(outside)) && !((det == 0.0))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
     uint _e173 = F32_INF;
     return (hit_10 ? float3(t_2, (v_2 * rcp_), (w * rcp_)) : float3(asfloat(_e173), 0.0, 0.0));
@@ -716,10 +721,10 @@ Candidate intersect_mesh(GpuInstance inst_2, uint slot_1, Ray world_ray, Ray ray
                     float4 _e58 = asfloat(triangles.Load4(((prim * 3u) + 1u)*16));
                     uint tag = asuint(_e58.w);
                     uint owner = ((tag != 0u) ? ((inst_2.object + tag) - 1u) : slot_1);
-                    Candidate c_6 = ConstructCandidate(_e46.x, owner, prim, _e46.yz, (0.0).xxx);
-                    const bool _e73 = accept(inst_2, world_ray, c_6);
+                    Candidate c_7 = ConstructCandidate(_e46.x, owner, prim, _e46.yz, (0.0).xxx);
+                    const bool _e73 = accept(inst_2, world_ray, c_7);
                     if (_e73) {
-                        best = c_6;
+                        best = c_7;
                         if (shadow) {
                             Candidate _e74 = best;
                             const Candidate candidate_1 = _e74;
@@ -868,9 +873,9 @@ float3 decode_octahedral(uint bits)
     float _e14 = n_1.z;
     if ((_e14 < 0.0)) {
         float3 _e21 = n_1;
-        float2 s_4 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
+        float2 s_5 = ((_e21.xy >= (0.0).xx) ? (1.0).xx : (-1.0).xx);
         float3 _e29 = n_1;
-        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_4);
+        float2 xy = (((1.0).xx - abs(_e29.yx)) * s_5);
         float _e37 = n_1.z;
         n_1 = float3(xy.x, xy.y, _e37);
     }
@@ -917,10 +922,10 @@ Hit finish_hit(Ray ray_6, Candidate c_1)
         float w_2 = ((1.0 - b_7.x) - b_7.y);
         float3 e1_ = (_e42.v1_ - _e42.v0_);
         float3 e2_ = (_e42.v2_ - _e42.v0_);
-        float3 p_6 = (_e42.v0_ + ((e1_ * (b_7.x).xxx) + (e2_ * (b_7.y).xxx)));
-        const float3 _e65 = point_to_world(inst_7, p_6);
+        float3 p_7 = (_e42.v0_ + ((e1_ * (b_7.x).xxx) + (e2_ * (b_7.y).xxx)));
+        const float3 _e65 = point_to_world(inst_7, p_7);
         hit.position = _e65;
-        const float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * (b_7.x).xxx), (e2_ * (b_7.y).xxx), p_6);
+        const float _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * (b_7.x).xxx), (e2_ * (b_7.y).xxx), p_7);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
         uint4 a0_ = asuint(attributes.Load4((c_1.primitive * 2u)*16));
@@ -1311,11 +1316,11 @@ float4 texel_at(uint t, uint xi, uint yi)
     uint format = asuint(params.Load((t + 3u)*4));
     if ((format == TEXTURE_FORMAT_RGBA8_SRGB)) {
         uint _e25 = asuint(texels.Load((base_3 + index_1)*4));
-        float4 c_7 = (float4(_e25 & 0xFF, _e25 >> 8 & 0xFF, _e25 >> 16 & 0xFF, _e25 >> 24) / 255.0);
-        const float _e28 = srgb_channel(c_7.x);
-        const float _e30 = srgb_channel(c_7.y);
-        const float _e32 = srgb_channel(c_7.z);
-        return float4(_e28, _e30, _e32, c_7.w);
+        float4 c_8 = (float4(_e25 & 0xFF, _e25 >> 8 & 0xFF, _e25 >> 16 & 0xFF, _e25 >> 24) / 255.0);
+        const float _e28 = srgb_channel(c_8.x);
+        const float _e30 = srgb_channel(c_8.y);
+        const float _e32 = srgb_channel(c_8.z);
+        return float4(_e28, _e30, _e32, c_8.w);
     }
     if ((format == TEXTURE_FORMAT_RGBA8_UNORM)) {
         uint _e40 = asuint(texels.Load((base_3 + index_1)*4));
@@ -1338,9 +1343,9 @@ float4 sample_texture(uint t_1, float2 uv)
     uint mu = (sampler_ & TEXTURE_WRAP_MASK);
     uint mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
     float2 q_3 = (uv * float2(float(wi), float(hi_1)));
-    float2 p_7 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_3) : (q_3 - (0.5).xx));
-    float2 f_1 = floor(p_7);
-    float2 fr = (p_7 - f_1);
+    float2 p_8 = (((sampler_ & TEXTURE_NEAREST) != 0u) ? floor(q_3) : (q_3 - (0.5).xx));
+    float2 f_1 = floor(p_8);
+    float2 fr = (p_8 - f_1);
     const int _e47 = i32_from_f32_(f_1.x);
     const int _e49 = i32_from_f32_(f_1.y);
     const int _e50 = wrap_texel(_e47, wi, mu);
@@ -1523,8 +1528,8 @@ float3 blinn_phong_shade(BlinnPhong m_1, Ray ray_15, Hit hit_4)
     float3 v_3 = -(_e5);
     const float4 _e12 = sample_texture(m_1.texture_, (hit_4.uv * m_1.uv_scale));
     float3 kd = (m_1.diffuse * _e12.xyz);
-    float s_5 = max(m_1.shininess, 0.0);
-    float norm = ((s_5 + 8.0) * (INV_PI / 8.0));
+    float s_6 = max(m_1.shininess, 0.0);
+    float norm = ((s_6 + 8.0) * (INV_PI / 8.0));
     color = (m_1.ambient * kd);
     const uint _e28 = light_count_query();
     i_3 = 0u;
@@ -1546,7 +1551,7 @@ float3 blinn_phong_shade(BlinnPhong m_1, Ray ray_15, Hit hit_4)
         const LightSample _e35 = sample_light_query(_e32, hit_4.position, hit_4.geometric_normal);
         float ndl = max(dot(_e3, _e35.dir), 0.0);
         const float3 _e42 = normalize_vec3f((_e35.dir + v_3));
-        float highlight = (pow(max(dot(_e3, _e42), 0.0), s_5) * norm);
+        float highlight = (pow(max(dot(_e3, _e42), 0.0), s_6) * norm);
         float3 _e48 = color;
         color = (_e48 + ((_e35.radiance * (ndl).xxx) * ((kd * (INV_PI).xxx) + (m_1.specular * (highlight).xxx))));
     }
@@ -1787,23 +1792,54 @@ float3 finite_or_zero(float3 c_4)
     return (_e3 ? c_4 : (0.0).xxx);
 }
 
-void pass_done(uint index, float3 sum, uint bad, uint pass_)
+PassSum ConstructPassSum(float3 arg0, uint arg1) {
+    PassSum ret = (PassSum)0;
+    ret.sum = arg0;
+    ret.bad = arg1;
+    return ret;
+}
+
+PassSum add_sample(PassSum p_6, float3 c_5, uint s_2, uint index, uint first_pass, uint per_pass)
 {
-    uint _e5 = ray_count;
-    counters.InterlockedAdd(4, _e5);
-    ray_count = 0u;
-    FrameUniforms _e10 = frame;
-    float4 _e13 = float4(sum, float(_e10.samples_per_pass));
-    if ((pass_ == 0u)) {
-        accum.Store4(index*16, asuint(_e13));
+    PassSum next = (PassSum)0;
+
+    next = p_6;
+    const bool3 _e7 = is_finite_vec3f(c_5);
+    if (all(_e7)) {
+        float3 _e10 = next.sum;
+        next.sum = (_e10 + c_5);
     } else {
-        float4 _e18 = asfloat(accum.Load4(index*16));
-        accum.Store4(index*16, asuint((_e18 + _e13)));
+        float3 _e13 = next.sum;
+        const float3 _e14 = finite_or_zero(c_5);
+        next.sum = (_e13 + _e14);
+        uint _e17 = next.bad;
+        next.bad = (_e17 + 1u);
     }
-    if ((bad > 0u)) {
-        counters.InterlockedAdd(0, bad);
+    const uint _e22 = rem_u32_((s_2 + 1u), per_pass);
+    if ((_e22 != 0u)) {
+        PassSum _e25 = next;
+        const PassSum passsum = _e25;
+        return passsum;
     }
-    return;
+    uint _e27 = ray_count;
+    counters.InterlockedAdd(4, _e27);
+    ray_count = 0u;
+    const uint _e31 = div_u32_(s_2, per_pass);
+    uint pass_ = (first_pass + _e31);
+    float3 _e34 = next.sum;
+    float4 _e36 = float4(_e34, float(per_pass));
+    uint _e38 = next.bad;
+    if ((pass_ == 0u)) {
+        accum.Store4(index*16, asuint(_e36));
+    } else {
+        float4 _e43 = asfloat(accum.Load4(index*16));
+        accum.Store4(index*16, asuint((_e43 + _e36)));
+    }
+    if ((_e38 > 0u)) {
+        counters.InterlockedAdd(0, _e38);
+    }
+    const PassSum passsum_1 = ConstructPassSum((0.0).xxx, 0u);
+    return passsum_1;
 }
 
 PathState ConstructPathState(Ray arg0, float3 arg1, float3 arg2, bool arg3) {
@@ -1817,20 +1853,18 @@ PathState ConstructPathState(Ray arg0, float3 arg1, float3 arg2, bool arg3) {
 
 void render_pixel(uint2 pixel_5)
 {
-    float3 sum_1 = (float3)0;
-    uint bad_1 = (uint)0;
-    uint s_2 = (uint)0;
+    PassSum sums = (PassSum)0;
+    uint s_3 = (uint)0;
     PathState path = (PathState)0;
 
     FrameUniforms frame_6 = frame;
     TileParams tile_2 = tile;
     uint index_2 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
-    uint per_pass = frame_6.samples_per_pass;
-    uint first_1 = (tile_2.frame * per_pass);
-    uint count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
-    sum_1 = (0.0).xxx;
-    bad_1 = 0u;
-    s_2 = 0u;
+    uint per_pass_1 = frame_6.samples_per_pass;
+    uint first_1 = (tile_2.frame * per_pass_1);
+    uint count_2 = (per_pass_1 * max(frame_6.passes_per_dispatch, 1u));
+    sums = ConstructPassSum((0.0).xxx, 0u);
+    s_3 = 0u;
     const Ray _e25 = sample_camera_ray(pixel_5, first_1);
     path = ConstructPathState(_e25, (1.0).xxx, (0.0).xxx, true);
     uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
@@ -1844,38 +1878,20 @@ void render_pixel(uint2 pixel_5)
         path = _e38;
         bool _e40 = path.live;
         if (!(_e40)) {
-            float3 c_8 = path.radiance;
-            const bool3 _e44 = is_finite_vec3f(c_8);
-            if (all(_e44)) {
-                float3 _e46 = sum_1;
-                sum_1 = (_e46 + c_8);
-            } else {
-                float3 _e48 = sum_1;
-                const float3 _e49 = finite_or_zero(c_8);
-                sum_1 = (_e48 + _e49);
-                uint _e51 = bad_1;
-                bad_1 = (_e51 + 1u);
-            }
-            uint _e54 = s_2;
-            s_2 = (_e54 + 1u);
-            uint _e57 = s_2;
-            const uint _e58 = rem_u32_(_e57, per_pass);
-            if ((_e58 == 0u)) {
-                float3 _e61 = sum_1;
-                uint _e62 = bad_1;
-                uint _e64 = s_2;
-                const uint _e65 = div_u32_(_e64, per_pass);
-                pass_done(index_2, _e61, _e62, ((tile_2.frame + _e65) - 1u));
-                sum_1 = (0.0).xxx;
-                bad_1 = 0u;
-            }
-            uint _e72 = s_2;
-            if ((_e72 >= count_2)) {
+            PassSum _e42 = sums;
+            float3 _e44 = path.radiance;
+            uint _e45 = s_3;
+            const PassSum _e47 = add_sample(_e42, _e44, _e45, index_2, tile_2.frame, per_pass_1);
+            sums = _e47;
+            uint _e48 = s_3;
+            s_3 = (_e48 + 1u);
+            uint _e51 = s_3;
+            if ((_e51 >= count_2)) {
                 break;
             }
-            uint _e74 = s_2;
-            const Ray _e76 = sample_camera_ray(pixel_5, (first_1 + _e74));
-            path = ConstructPathState(_e76, (1.0).xxx, (0.0).xxx, true);
+            uint _e53 = s_3;
+            const Ray _e55 = sample_camera_ray(pixel_5, (first_1 + _e53));
+            path = ConstructPathState(_e55, (1.0).xxx, (0.0).xxx, true);
         }
     }
     return;

@@ -24,6 +24,11 @@ struct FrameUniforms {
     passes_per_dispatch: u32,
 }
 
+struct PassSum {
+    sum: vec3<f32>,
+    bad: u32,
+}
+
 struct Ray {
     origin: vec3<f32>,
     tmin: f32,
@@ -433,8 +438,8 @@ fn to_object(inst: GpuInstance, ray: Ray) -> Ray {
 
 fn safe_inverse(d: vec3<f32>) -> vec3<f32> {
     let tiny = vec3(0.000000000000000000000000000000000000011754944f);
-    let s_3 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
-    let dd = select(d, (s_3 * tiny), (abs(d) < tiny));
+    let s_4 = select(vec3(1f), vec3(-1f), (d < vec3(0f)));
+    let dd = select(d, (s_4 * tiny), (abs(d) < tiny));
     return (vec3(1f) / dd);
 }
 
@@ -460,20 +465,20 @@ fn hit_triangle(r_1: TriangleRay, slot: u32, tmin: f32, tmax_1: f32) -> vec3<f32
     let _e18 = triangles[((slot * 3u) + 1u)];
     let b_6 = (_e18.xyz - r_1.origin);
     let _e28 = triangles[((slot * 3u) + 2u)];
-    let c_5 = (_e28.xyz - r_1.origin);
+    let c_6 = (_e28.xyz - r_1.origin);
     let ax = (a_5[min(r_1.kx, 2u)] - (r_1.shear.x * a_5[min(r_1.kz, 2u)]));
     let ay = (a_5[min(r_1.ky, 2u)] - (r_1.shear.y * a_5[min(r_1.kz, 2u)]));
     let bx = (b_6[min(r_1.kx, 2u)] - (r_1.shear.x * b_6[min(r_1.kz, 2u)]));
     let by = (b_6[min(r_1.ky, 2u)] - (r_1.shear.y * b_6[min(r_1.kz, 2u)]));
-    let cx = (c_5[min(r_1.kx, 2u)] - (r_1.shear.x * c_5[min(r_1.kz, 2u)]));
-    let cy = (c_5[min(r_1.ky, 2u)] - (r_1.shear.y * c_5[min(r_1.kz, 2u)]));
+    let cx = (c_6[min(r_1.kx, 2u)] - (r_1.shear.x * c_6[min(r_1.kz, 2u)]));
+    let cy = (c_6[min(r_1.ky, 2u)] - (r_1.shear.y * c_6[min(r_1.kz, 2u)]));
     let u = ((cx * by) - (cy * bx));
     let v_2 = ((ax * cy) - (ay * cx));
     let w = ((bx * ay) - (by * ax));
     let outside = ((((u < 0f) || (v_2 < 0f)) || (w < 0f)) && (((u > 0f) || (v_2 > 0f)) || (w > 0f)));
     let det = ((u + v_2) + w);
     let rcp = (1f / det);
-    let t_2 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_5[min(r_1.kz, 2u)]))) * rcp);
+    let t_2 = ((((u * (r_1.shear.z * a_5[min(r_1.kz, 2u)])) + (v_2 * (r_1.shear.z * b_6[min(r_1.kz, 2u)]))) + (w * (r_1.shear.z * c_6[min(r_1.kz, 2u)]))) * rcp);
     let hit_10 = ((((r_1.valid && !(outside)) && !((det == 0f))) && (t_2 >= tmin)) && (t_2 <= tmax_1));
     let _e173 = F32_INF;
     return select(vec3<f32>(bitcast<f32>(_e173), 0f, 0f), vec3<f32>(t_2, (v_2 * rcp), (w * rcp)), hit_10);
@@ -572,10 +577,10 @@ fn intersect_mesh(inst_2: GpuInstance, slot_1: u32, world_ray: Ray, ray_4: Ray, 
                     let _e58 = triangles[((prim * 3u) + 1u)];
                     let tag = bitcast<u32>(_e58.w);
                     let owner = select(slot_1, ((inst_2.object + tag) - 1u), (tag != 0u));
-                    let c_6 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
-                    let _e73 = accept(inst_2, world_ray, c_6);
+                    let c_7 = Candidate(_e46.x, owner, prim, _e46.yz, vec3(0f));
+                    let _e73 = accept(inst_2, world_ray, c_7);
                     if _e73 {
-                        best = c_6;
+                        best = c_7;
                         if shadow {
                             let _e74 = best;
                             return _e74;
@@ -690,9 +695,9 @@ fn decode_octahedral(bits: u32) -> vec3<f32> {
     let _e14 = n_1.z;
     if (_e14 < 0f) {
         let _e21 = n_1;
-        let s_4 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
+        let s_5 = select(vec2(-1f), vec2(1f), (_e21.xy >= vec2(0f)));
         let _e29 = n_1;
-        let xy = ((vec2(1f) - abs(_e29.yx)) * s_4);
+        let xy = ((vec2(1f) - abs(_e29.yx)) * s_5);
         let _e37 = n_1.z;
         n_1 = vec3<f32>(xy.x, xy.y, _e37);
     }
@@ -724,10 +729,10 @@ fn finish_hit(ray_6: Ray, c_1: Candidate) -> Hit {
         let w_2 = ((1f - b_7.x) - b_7.y);
         let e1_ = (_e42.v1_ - _e42.v0_);
         let e2_ = (_e42.v2_ - _e42.v0_);
-        let p_6 = (_e42.v0_ + ((e1_ * vec3(b_7.x)) + (e2_ * vec3(b_7.y))));
-        let _e65 = point_to_world(inst_7, p_6);
+        let p_7 = (_e42.v0_ + ((e1_ * vec3(b_7.x)) + (e2_ * vec3(b_7.y))));
+        let _e65 = point_to_world(inst_7, p_7);
         hit.position = _e65;
-        let _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_7.x)), (e2_ * vec3(b_7.y)), p_6);
+        let _e73 = mesh_error(inst_7, _e42.v0_, (e1_ * vec3(b_7.x)), (e2_ * vec3(b_7.y)), p_7);
         hit_error = _e73;
         n_geo = cross(e1_, e2_);
         let a0_ = attributes[(c_1.primitive * 2u)];
@@ -1046,11 +1051,11 @@ fn texel_at(t: u32, xi: u32, yi: u32) -> vec4<f32> {
     let format = params[(t + 3u)];
     if (format == TEXTURE_FORMAT_RGBA8_SRGB) {
         let _e25 = texels[(base_3 + index_1)];
-        let c_7 = unpack4x8unorm(_e25);
-        let _e28 = srgb_channel(c_7.x);
-        let _e30 = srgb_channel(c_7.y);
-        let _e32 = srgb_channel(c_7.z);
-        return vec4<f32>(_e28, _e30, _e32, c_7.w);
+        let c_8 = unpack4x8unorm(_e25);
+        let _e28 = srgb_channel(c_8.x);
+        let _e30 = srgb_channel(c_8.y);
+        let _e32 = srgb_channel(c_8.z);
+        return vec4<f32>(_e28, _e30, _e32, c_8.w);
     }
     if (format == TEXTURE_FORMAT_RGBA8_UNORM) {
         let _e40 = texels[(base_3 + index_1)];
@@ -1072,9 +1077,9 @@ fn sample_texture(t_1: u32, uv: vec2<f32>) -> vec4<f32> {
     let mu = (sampler_ & TEXTURE_WRAP_MASK);
     let mv = ((sampler_ >> (TEXTURE_WRAP_V_SHIFT & 31u)) & TEXTURE_WRAP_MASK);
     let q_3 = (uv * vec2<f32>(f32(wi), f32(hi_1)));
-    let p_7 = select((q_3 - vec2(0.5f)), floor(q_3), ((sampler_ & TEXTURE_NEAREST) != 0u));
-    let f_1 = floor(p_7);
-    let fr = (p_7 - f_1);
+    let p_8 = select((q_3 - vec2(0.5f)), floor(q_3), ((sampler_ & TEXTURE_NEAREST) != 0u));
+    let f_1 = floor(p_8);
+    let fr = (p_8 - f_1);
     let _e47 = i32_from_f32_(f_1.x);
     let _e49 = i32_from_f32_(f_1.y);
     let _e50 = wrap_texel(_e47, wi, mu);
@@ -1221,8 +1226,8 @@ fn blinn_phong_shade(m_1: BlinnPhong, ray_15: Ray, hit_4: Hit) -> vec3<f32> {
     let v_3 = -(_e5);
     let _e12 = sample_texture(m_1.texture, (hit_4.uv * m_1.uv_scale));
     let kd = (m_1.diffuse * _e12.xyz);
-    let s_5 = max(m_1.shininess, 0f);
-    let norm = ((s_5 + 8f) * (INV_PI / 8f));
+    let s_6 = max(m_1.shininess, 0f);
+    let norm = ((s_6 + 8f) * (INV_PI / 8f));
     color = (m_1.ambient * kd);
     let _e28 = light_count_query();
     i_3 = 0u;
@@ -1235,7 +1240,7 @@ fn blinn_phong_shade(m_1: BlinnPhong, ray_15: Ray, hit_4: Hit) -> vec3<f32> {
         let _e35 = sample_light_query(_e32, hit_4.position, hit_4.geometric_normal);
         let ndl = max(dot(_e3, _e35.dir), 0f);
         let _e42 = normalize_vec3f((_e35.dir + v_3));
-        let highlight = (pow(max(dot(_e3, _e42), 0f), s_5) * norm);
+        let highlight = (pow(max(dot(_e3, _e42), 0f), s_6) * norm);
         let _e48 = color;
         color = (_e48 + ((_e35.radiance * vec3(ndl)) * ((kd * vec3(INV_PI)) + (m_1.specular * vec3(highlight)))));
         continuing {
@@ -1437,39 +1442,59 @@ fn finite_or_zero(c_4: vec3<f32>) -> vec3<f32> {
     return select(vec3(0f), c_4, _e3);
 }
 
-fn pass_done(index: u32, sum: vec3<f32>, bad: u32, pass_: u32) {
-    let _e5 = ray_count;
-    atomicAdd((&counters[1]), _e5);
-    ray_count = 0u;
-    let _e10 = frame;
-    let _e13 = vec4<f32>(sum, f32(_e10.samples_per_pass));
-    if (pass_ == 0u) {
-        accum[index] = _e13;
+fn add_sample(p_6: PassSum, c_5: vec3<f32>, s_2: u32, index: u32, first_pass: u32, per_pass: u32) -> PassSum {
+    var next: PassSum;
+
+    next = p_6;
+    let _e7 = is_finite_vec3f(c_5);
+    if all(_e7) {
+        let _e10 = next.sum;
+        next.sum = (_e10 + c_5);
     } else {
-        let _e18 = accum[index];
-        accum[index] = (_e18 + _e13);
+        let _e13 = next.sum;
+        let _e14 = finite_or_zero(c_5);
+        next.sum = (_e13 + _e14);
+        let _e17 = next.bad;
+        next.bad = (_e17 + 1u);
     }
-    if (bad > 0u) {
-        atomicAdd((&counters[0]), bad);
+    let _e22 = rem_u32_((s_2 + 1u), per_pass);
+    if (_e22 != 0u) {
+        let _e25 = next;
+        return _e25;
     }
-    return;
+    let _e27 = ray_count;
+    atomicAdd((&counters[1]), _e27);
+    ray_count = 0u;
+    let _e31 = div_u32_(s_2, per_pass);
+    let pass_ = (first_pass + _e31);
+    let _e34 = next.sum;
+    let _e36 = vec4<f32>(_e34, f32(per_pass));
+    let _e38 = next.bad;
+    if (pass_ == 0u) {
+        accum[index] = _e36;
+    } else {
+        let _e43 = accum[index];
+        accum[index] = (_e43 + _e36);
+    }
+    if (_e38 > 0u) {
+        atomicAdd((&counters[0]), _e38);
+    }
+    return PassSum(vec3(0f), 0u);
 }
 
 fn render_pixel(pixel_5: vec2<u32>) {
-    var sum_1: vec3<f32>;
-    var bad_1: u32;
-    var s_2: u32;
+    var sums: PassSum;
+    var s_3: u32;
     var path: PathState;
 
     let frame_6 = frame;
     let tile_2 = tile;
     let index_2 = ((pixel_5.y * tile_2.image_size.x) + pixel_5.x);
-    let per_pass = frame_6.samples_per_pass;
-    let first_1 = (tile_2.frame * per_pass);
-    let count_2 = (per_pass * max(frame_6.passes_per_dispatch, 1u));
-    sum_1 = vec3(0f);
-    bad_1 = 0u;
-    s_2 = 0u;
+    let per_pass_1 = frame_6.samples_per_pass;
+    let first_1 = (tile_2.frame * per_pass_1);
+    let count_2 = (per_pass_1 * max(frame_6.passes_per_dispatch, 1u));
+    sums = PassSum(vec3(0f), 0u);
+    s_3 = 0u;
     let _e25 = sample_camera_ray(pixel_5, first_1);
     path = PathState(_e25, vec3(1f), vec3(0f), true);
     loop {
@@ -1480,38 +1505,20 @@ fn render_pixel(pixel_5: vec2<u32>) {
         path = _e38;
         let _e40 = path.live;
         if !(_e40) {
-            let c_8 = path.radiance;
-            let _e44 = is_finite_vec3f(c_8);
-            if all(_e44) {
-                let _e46 = sum_1;
-                sum_1 = (_e46 + c_8);
-            } else {
-                let _e48 = sum_1;
-                let _e49 = finite_or_zero(c_8);
-                sum_1 = (_e48 + _e49);
-                let _e51 = bad_1;
-                bad_1 = (_e51 + 1u);
-            }
-            let _e54 = s_2;
-            s_2 = (_e54 + 1u);
-            let _e57 = s_2;
-            let _e58 = rem_u32_(_e57, per_pass);
-            if (_e58 == 0u) {
-                let _e61 = sum_1;
-                let _e62 = bad_1;
-                let _e64 = s_2;
-                let _e65 = div_u32_(_e64, per_pass);
-                pass_done(index_2, _e61, _e62, ((tile_2.frame + _e65) - 1u));
-                sum_1 = vec3(0f);
-                bad_1 = 0u;
-            }
-            let _e72 = s_2;
-            if (_e72 >= count_2) {
+            let _e42 = sums;
+            let _e44 = path.radiance;
+            let _e45 = s_3;
+            let _e47 = add_sample(_e42, _e44, _e45, index_2, tile_2.frame, per_pass_1);
+            sums = _e47;
+            let _e48 = s_3;
+            s_3 = (_e48 + 1u);
+            let _e51 = s_3;
+            if (_e51 >= count_2) {
                 break;
             }
-            let _e74 = s_2;
-            let _e76 = sample_camera_ray(pixel_5, (first_1 + _e74));
-            path = PathState(_e76, vec3(1f), vec3(0f), true);
+            let _e53 = s_3;
+            let _e55 = sample_camera_ray(pixel_5, (first_1 + _e53));
+            path = PathState(_e55, vec3(1f), vec3(0f), true);
         }
     }
     return;
