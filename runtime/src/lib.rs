@@ -22,9 +22,9 @@
 //! device with [`gpu::required_limits`]), renders a compiled scene with a [`render::Renderer`],
 //! and resolves the image into a texture or buffer it owns, in its own command encoder
 //! ([`render::Renderer::resolve_into`]); rtc creates no window, instance or second device.
-//! `examples/embed.rs` does this every frame in a winit window. On lavapipe before Mesa 26 a host
-//! may call [`gpu::apply_lavapipe_defaults`] first thing in `main`, as `rtc` does, to halve the
-//! driver's compile of every kernel (it sets `LP_NATIVE_VECTOR_WIDTH=128` unless that is set; with
+//! `examples/embed.rs` does this every frame in a winit window. On lavapipe before Mesa 26 (and
+//! on CPUs without AVX-512) a host may call [`gpu::apply_lavapipe_defaults`] first thing in
+//! `main`, as `rtc` does, to halve the driver's compile of every kernel (it sets `LP_NATIVE_VECTOR_WIDTH=128` unless that is set; with
 //! [`gpu::CpuJit::Quick`] it also turns LLVM's optimisation off, for work too small to repay it).
 //!
 //! ```

@@ -1,5 +1,5 @@
 //! The execution model `rtc render` gives a small render of a scene left at `EXEC_AUTO` on a driver
-//! that gets uniform tables (lavapipe before Mesa 26): the megakernel for a light kernel over small,
+//! that gets uniform tables (lavapipe before Mesa 26, or on a CPU without AVX-512): the megakernel for a light kernel over small,
 //! built-in geometry, the wavefront model otherwise. Checked on every example against the model
 //! whose cold compile was measured shorter there (docs/bench/compile.md, "Which model compiles
 //! faster, with uniform tables (2026-12-04)"), and against the rules that make the choice:

@@ -327,7 +327,7 @@ fn both_models_in_tiles(
 }
 
 /// Small tables in uniform buffers (`rtc_runtime::scene::UniformTables`; by default on lavapipe
-/// before Mesa 26, forced on and off here): every pixel is the one the storage buffers give, in
+/// whose loads are per-lane code, forced on and off here): every pixel is the one the storage buffers give, in
 /// both execution models, on scenes with any-hit shadows, a custom geometry whose program walks
 /// its mesh's BVH (`nodes` read by user code), nested media and the path loop. A scene with more
 /// objects than one uniform buffer holds (600 × 128 bytes) keeps `instances` in storage and still

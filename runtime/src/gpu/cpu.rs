@@ -13,9 +13,13 @@
 //!
 //! [`apply_lavapipe_defaults`] makes rtc's two settings for the driver, each only where the
 //! environment does not set the variable itself:
-//! - 128-bit SIMD batches for lavapipe releases before Mesa 26 (`LP_NATIVE_VECTOR_WIDTH=128`).
-//!   There it halves the driver's compile of every kernel and leaves images byte-identical and
-//!   frames as fast; on Mesa 26 it would make frames slower, so it is left alone.
+//! - 128-bit SIMD batches (`LP_NATIVE_VECTOR_WIDTH=128`) for lavapipe releases before Mesa 26,
+//!   and for later ones on x86-64 CPUs without AVX-512. Before Mesa 26 it halves the driver's
+//!   compile of every kernel and leaves images byte-identical and frames about as fast. Mesa 26
+//!   compiles storage loads to LLVM gathers, which LLVM emits as gather instructions with AVX-512
+//!   and, on CPUs it does not count as fast at gathering (AMD Zen 3), as one tested branch and load
+//!   per lane: there 128 bits make the compile shorter and most frames faster too, while with
+//!   AVX-512 they would make frames slower, so that case is left alone.
 //! - The quick JIT ([`CpuJit::Quick`], `GALLIVM_PERF=nopt`: LLVM's optimisation passes off) when
 //!   the caller asks for it, which `rtc` does for renders too small for optimised code to repay its
 //!   compile (a preview, a first pixel). Images stay byte-identical; kernels compile in a third to
@@ -42,12 +46,13 @@ pub const NARROW_WIDTH: &str = "128";
 /// The variable of Mesa's shader cache directory (`mesa_shader_cache_db` and the like go inside it).
 pub const CACHE_DIR_VAR: &str = "MESA_SHADER_CACHE_DIR";
 
-/// The first Mesa release whose lavapipe keeps its own width. Mesa 25 turns each storage-buffer
-/// load into a loop over the batch's lanes, so a kernel's LLVM code grows with the batch: at 128
-/// bits (4 lanes) every example compiles 1.8 to 2.8 times faster, with byte-identical images and
-/// frame times within the machine's spread (0.70 to 1.14 of the 256-bit frame). Mesa 26.1 compiles
-/// those loads to one gather: its compile gains little from 4 lanes and its frames lose (the
-/// thesis frame 1.39 times slower).
+/// The first Mesa release whose lavapipe keeps its own width on a CPU with AVX-512, and whose
+/// shader cache keys include the width. Mesa 25 turns each storage-buffer load into a loop over the
+/// batch's lanes, so a kernel's LLVM code grows with the batch: at 128 bits (4 lanes) every
+/// example compiles 1.6 to 2.8 times faster, with byte-identical images and frame times of 0.70 to
+/// 1.14 of the 256-bit frame with AVX-512 and 0.95 to 1.19 without (AMD Zen 3). Mesa 26.1 compiles
+/// those loads to one gather: with AVX-512 its compile gains little from 4 lanes and its frames
+/// lose (the thesis frame 1.39 times slower); without AVX-512 see [`loads_per_lane`].
 pub const NARROW_BEFORE_MESA: u32 = 26;
 
 /// The variable of llvmpipe's performance switches; [`QUICK_JIT`] is the one rtc sets.
@@ -106,10 +111,11 @@ pub const QUICK_JIT_MAX_SAMPLES_PRIMARY: u64 = 3 << 18;
 /// ([`WAVEFRONT_PREVIEW_MIN_WEIGHT_WITH_TABLES`]).
 pub const WAVEFRONT_PREVIEW_MAX_SAMPLES: u64 = 1 << 14;
 
-/// On a driver that gets uniform tables (`scene::prefers_uniform_tables`: lavapipe before Mesa
-/// 26), the smallest megakernel, in `rtc_compiler::kernel::weight::inlined_weight`, for which a
-/// render of at most [`WAVEFRONT_PREVIEW_MAX_SAMPLES`] runs the wavefront model when the scene's
-/// geometry is small and built in (`rtc_compiler::kernel::small_built_in_geometry`, so that its
+/// On a driver that gets uniform tables (`scene::prefers_uniform_tables`: lavapipe whose loads
+/// are per-lane code), the smallest megakernel, in
+/// `rtc_compiler::kernel::weight::inlined_weight`, for which a render of at most
+/// [`WAVEFRONT_PREVIEW_MAX_SAMPLES`] runs the wavefront model when the scene's geometry is small
+/// and built in (`rtc_compiler::kernel::small_built_in_geometry`, so that its
 /// BVH records go to a uniform table too). With both tables a megakernel's inlined traversals
 /// compile about twice as fast, and a light one then compiles faster than the five stage kernels:
 /// cold, Mesa 25.0.7, 64x48 at 1 spp, the examples' megakernels of weight 5,777 to 12,796
@@ -155,7 +161,8 @@ static APPLIED: OnceLock<Vec<&'static str>> = OnceLock::new();
 /// rtc's settings for a CPU driver, each made only where the environment does not set the
 /// variable (an empty value counts as set: `LP_NATIVE_VECTOR_WIDTH=` keeps Mesa's own choice):
 /// - [`VECTOR_WIDTH_VAR`]` = `[`NARROW_WIDTH`] when the machine's Vulkan CPU adapter is lavapipe
-///   from a Mesa release before [`NARROW_BEFORE_MESA`];
+///   from a Mesa release before [`NARROW_BEFORE_MESA`], or from a later one on an x86-64 CPU
+///   without AVX-512 ([`lavapipe_loads_per_lane`]);
 /// - [`JIT_VAR`]` = `[`QUICK_JIT`] when `jit` is [`CpuJit::Quick`] and the machine has a Vulkan
 ///   lavapipe adapter;
 /// - [`CACHE_DIR_VAR`] to [`width_cache_dir`]'s directory for the width when [`VECTOR_WIDTH_VAR`]
@@ -185,13 +192,17 @@ pub fn apply_lavapipe_defaults(jit: CpuJit) -> &'static [&'static str] {
         } else if quick {
             std::env::remove_var(JIT_VAR);
         }
-        let narrow = info.as_deref().is_some_and(wants_narrow_batches);
+        let narrow = info.as_deref().is_some_and(lavapipe_loads_per_lane);
         if std::env::var_os(VECTOR_WIDTH_VAR).is_none() && narrow {
             std::env::set_var(VECTOR_WIDTH_VAR, NARROW_WIDTH);
             set.push(VECTOR_WIDTH_VAR);
         }
-        // The same releases leave the width out of their shader cache's key.
-        if narrow {
+        // Releases before Mesa 26 leave the width out of their shader cache's key.
+        let unkeyed = info
+            .as_deref()
+            .and_then(mesa_major)
+            .is_some_and(|major| major < NARROW_BEFORE_MESA);
+        if unkeyed {
             // Mesa makes only the last directory of the path; without it the cache is off.
             if let Some(dir) = width_cache_dir(|name| std::env::var_os(name))
                 .filter(|dir| std::fs::create_dir_all(dir).is_ok())
@@ -253,15 +264,44 @@ fn lavapipe_driver_info() -> Option<String> {
         .map(|a| a.driver_info)
 }
 
-/// Whether lavapipe with this `driver_info` gets 128-bit batches: Mesa before
-/// [`NARROW_BEFORE_MESA`]. A string without a Mesa version gets nothing.
-#[cfg(not(target_arch = "wasm32"))]
-fn wants_narrow_batches(driver_info: &str) -> bool {
-    mesa_major(driver_info).is_some_and(|major| major < NARROW_BEFORE_MESA)
+/// Whether lavapipe with this `driver_info`, on this machine, compiles storage-buffer loads to
+/// code per lane of a SIMD batch, where rtc gives it 128-bit batches ([`apply_lavapipe_defaults`])
+/// and small tables in uniform buffers (`scene::prefers_uniform_tables`). See [`loads_per_lane`].
+pub fn lavapipe_loads_per_lane(driver_info: &str) -> bool {
+    loads_per_lane(
+        driver_info,
+        lavapipe_has_avx512(|name| std::env::var_os(name)),
+    )
 }
 
-/// The major version of `Mesa X.Y.Z…` in a driver string (also `scene::UniformTables`' rule).
-pub(crate) fn mesa_major(driver_info: &str) -> Option<u32> {
+/// Whether lavapipe with this `driver_info` compiles storage-buffer loads to code per lane: Mesa
+/// before [`NARROW_BEFORE_MESA`] (a loop over the lanes, a bounds check and a branch a word), and
+/// later releases when their code may not use AVX-512 (`avx512` false: see `lavapipe_has_avx512`).
+/// Mesa 26 compiles loads to LLVM gathers, which LLVM emits as gather instructions with AVX-512
+/// and, without it, only on CPUs it counts as fast at them (Intel's since Skylake); on the others
+/// as one tested branch and load per lane (AMD Zen 3, `GALLIVM_DEBUG=asm`: 4 `vpgatherdd` against
+/// 2,711 `testb` in hello's kernel). There 128 bits compiled every example measured 1.2 to 1.5
+/// times faster and ran its megakernel frame 0.75 to 1.02 times as long (the thesis scene 1.08),
+/// its stage kernels 0.80 to 0.92 (the thesis scene 1.20), and uniform tables then made frames
+/// 0.71 to 0.99 times as long, images byte-identical (docs/bench/lavapipe.md,
+/// "Per-lane loads on CPUs without AVX-512 (2026-12-07)"). An Intel CPU without AVX-512 counts as
+/// per-lane too; not measured there. A string without a Mesa version is not lavapipe's.
+pub fn loads_per_lane(driver_info: &str, avx512: bool) -> bool {
+    mesa_major(driver_info).is_some_and(|major| major < NARROW_BEFORE_MESA || !avx512)
+}
+
+/// Whether llvmpipe may compile for AVX-512 in an environment read through `var`: the CPU has
+/// AVX-512F and `GALLIUM_OVERRIDE_CPU_CAPS` is unset (each of its values, `nosse` to `avx`, leaves
+/// AVX-512 out). `true` off x86-64, where nothing here applies.
+fn lavapipe_has_avx512(var: impl Fn(&str) -> Option<std::ffi::OsString>) -> bool {
+    if !cfg!(target_arch = "x86_64") {
+        return true;
+    }
+    vector_features().contains(&"AVX-512") && var("GALLIUM_OVERRIDE_CPU_CAPS").is_none()
+}
+
+/// The major version of `Mesa X.Y.Z…` in a driver string.
+fn mesa_major(driver_info: &str) -> Option<u32> {
     let rest = &driver_info[driver_info.find("Mesa ")? + "Mesa ".len()..];
     let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
     digits.parse().ok()
@@ -464,18 +504,39 @@ mod tests {
     }
 
     #[test]
-    fn only_mesa_releases_before_26_get_narrow_batches() {
+    fn lavapipe_loads_per_lane_before_mesa_26_and_without_avx512() {
         assert_eq!(mesa_major("Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)"), Some(25));
         assert_eq!(mesa_major("Mesa 26.1.6-1~bpo13+1 (LLVM 19.1.7)"), Some(26));
         assert_eq!(mesa_major("Mesa 22.3.6"), Some(22));
-        assert!(wants_narrow_batches("Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)"));
-        assert!(wants_narrow_batches("Mesa 22.3.6"));
-        assert!(!wants_narrow_batches("Mesa 26.1.6-1~bpo13+1 (LLVM 19.1.7)"));
-        assert!(!wants_narrow_batches("Mesa 27.0.0-devel"));
-        // No version, or not Mesa: nothing.
-        assert!(!wants_narrow_batches(""));
-        assert!(!wants_narrow_batches("Mesa devel"));
-        assert!(!wants_narrow_batches("535.104.05"));
+        for avx512 in [true, false] {
+            assert!(loads_per_lane(
+                "Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)",
+                avx512
+            ));
+            assert!(loads_per_lane("Mesa 22.3.6", avx512));
+            // No version, or not Mesa: nothing.
+            assert!(!loads_per_lane("", avx512));
+            assert!(!loads_per_lane("Mesa devel", avx512));
+            assert!(!loads_per_lane("535.104.05", avx512));
+        }
+        // Mesa 26 on: only where llvmpipe may not use AVX-512.
+        assert!(!loads_per_lane("Mesa 26.1.6-1~bpo13+1 (LLVM 19.1.7)", true));
+        assert!(!loads_per_lane("Mesa 27.0.0-devel", true));
+        assert!(loads_per_lane("Mesa 26.1.6-1~bpo13+1 (LLVM 19.1.7)", false));
+        assert!(loads_per_lane("Mesa 27.0.0-devel", false));
+    }
+
+    #[test]
+    fn a_cpu_caps_override_keeps_llvmpipe_off_avx512() {
+        let caps = |name: &str| {
+            (name == "GALLIUM_OVERRIDE_CPU_CAPS").then(|| std::ffi::OsString::from("avx"))
+        };
+        assert!(!lavapipe_has_avx512(caps) || !cfg!(target_arch = "x86_64"));
+        let none = |_: &str| None;
+        assert_eq!(
+            lavapipe_has_avx512(none),
+            !cfg!(target_arch = "x86_64") || vector_features().contains(&"AVX-512")
+        );
     }
 
     #[test]

@@ -1,4 +1,4 @@
-//! Small read-only tables in uniform buffers, for lavapipe releases before Mesa 26.
+//! Small read-only tables in uniform buffers, for lavapipe where its storage loads are per lane.
 //!
 //! Mesa 25's lavapipe compiles every storage-buffer load to a loop over the SIMD batch's lanes,
 //! with a bounds check and a lane-mask branch per 32-bit word, and a uniform-buffer load to one
@@ -8,10 +8,13 @@
 //! fixed-size `var<uniform>` arrays in every kernel: on Mesa 25.0.7 that makes the driver's cold
 //! compile 1.3 to 2.0 times shorter, with frames the same or faster and byte-identical images
 //! (docs/bench/compile.md, "Small tables in uniform buffers (2026-12-04)"). Mesa 26 compiles
-//! storage loads to gathers too, and there it made compiles and most frames slower (up to 1.28
-//! and 1.19 times); GPUs read a uniform array indexed differently by each lane one address at a
-//! time. So by default only lavapipe before
-//! Mesa 26 gets it ([`TablePlacement::Auto`]); `RTC_UNIFORM_TABLES=on|off` or
+//! storage loads to gathers, and on a CPU with AVX-512 it made compiles and most frames slower (up
+//! to 1.28 and 1.19 times); without AVX-512 (AMD Zen 3) LLVM turns those gathers into a branch and
+//! a load per lane, and there uniform tables made frames 0.71 to 0.99 times as long
+//! (docs/bench/lavapipe.md, "Per-lane loads on CPUs without AVX-512 (2026-12-07)"). GPUs read a
+//! uniform array indexed differently by each lane one address at a time. So by default only
+//! lavapipe whose loads are per lane gets it ([`TablePlacement::Auto`],
+//! [`crate::gpu::lavapipe_loads_per_lane`]); `RTC_UNIFORM_TABLES=on|off` or
 //! [`RenderOptions::uniform_tables`](crate::render::RenderOptions::uniform_tables) overrides.
 //!
 //! The compiler's kernels, and every file `rtc compile` writes, keep storage buffers: this is a
@@ -34,7 +37,7 @@ use rtc_compiler::abi;
 
 use super::entities::Entities;
 use super::gpu_types::GpuInstance;
-use crate::gpu::{mesa_major, AdapterDescription, BindingDesc, BindingKind};
+use crate::gpu::{AdapterDescription, BindingDesc, BindingKind};
 
 /// The size of a table placed in a uniform buffer: WebGPU's default
 /// `maxUniformBufferBindingSize`, so the kernels stay within the default limits.
@@ -45,18 +48,14 @@ pub const UNIFORM_TABLE_BYTES: u32 = 64 << 10;
 /// choice to the adapter.
 pub const UNIFORM_TABLES_ENV: &str = "RTC_UNIFORM_TABLES";
 
-/// The first Mesa release whose lavapipe compiles storage-buffer loads to gathers, and so gets
-/// nothing from uniform tables.
-const GATHERS_FROM_MESA: u32 = 26;
-
 /// The bindings that may be placed, in binding order.
 const CANDIDATES: [&str; 2] = ["nodes", "instances"];
 
 /// Where a render wants the small tables.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum TablePlacement {
-    /// [`UNIFORM_TABLES_ENV`] if it says `on` or `off`, else uniform buffers on lavapipe before
-    /// Mesa 26 and storage buffers everywhere else.
+    /// [`UNIFORM_TABLES_ENV`] if it says `on` or `off`, else uniform buffers on lavapipe whose
+    /// loads are per-lane code ([`prefers_uniform_tables`]) and storage buffers everywhere else.
     #[default]
     Auto,
     /// Every table that fits in a uniform buffer.
@@ -88,12 +87,17 @@ impl TablePlacement {
     }
 }
 
-/// Whether `adapter` is lavapipe (Vulkan, llvmpipe) from a Mesa release before 26.
+/// Whether `adapter` is lavapipe (Vulkan, llvmpipe) whose storage loads are per-lane code on this
+/// machine ([`crate::gpu::lavapipe_loads_per_lane`]: Mesa before 26, or a CPU without AVX-512).
 pub fn prefers_uniform_tables(adapter: &AdapterDescription) -> bool {
+    is_lavapipe(adapter) && crate::gpu::lavapipe_loads_per_lane(&adapter.driver_info)
+}
+
+/// Whether `adapter` is lavapipe: llvmpipe under Vulkan.
+fn is_lavapipe(adapter: &AdapterDescription) -> bool {
     adapter.backend == wgpu::Backend::Vulkan
         && adapter.device_type == wgpu::DeviceType::Cpu
         && adapter.name.starts_with("llvmpipe")
-        && mesa_major(&adapter.driver_info).is_some_and(|major| major < GATHERS_FROM_MESA)
 }
 
 /// The bindings of one scene's kernels placed in uniform buffers (none by default).
@@ -251,7 +255,7 @@ mod tests {
     }
 
     #[test]
-    fn only_lavapipe_before_mesa_26_prefers_uniform_tables() {
+    fn lavapipe_with_per_lane_loads_prefers_uniform_tables() {
         let vk = wgpu::Backend::Vulkan;
         let lvp = "llvmpipe (LLVM 15.0.6, 128 bits)";
         assert!(prefers_uniform_tables(&adapter(
@@ -260,11 +264,12 @@ mod tests {
             "Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)"
         )));
         assert!(prefers_uniform_tables(&adapter(lvp, vk, "Mesa 22.3.6")));
-        assert!(!prefers_uniform_tables(&adapter(
-            lvp,
-            vk,
-            "Mesa 26.1.6-1~bpo13+1 (LLVM 19.1.7)"
-        )));
+        // From Mesa 26 on, as this machine's CPU decides (`gpu::loads_per_lane` tests both).
+        let mesa_26 = "Mesa 26.1.6-1~bpo13+1 (LLVM 19.1.7)";
+        assert_eq!(
+            prefers_uniform_tables(&adapter(lvp, vk, mesa_26)),
+            crate::gpu::lavapipe_loads_per_lane(mesa_26)
+        );
         assert!(!prefers_uniform_tables(&adapter(lvp, vk, "Mesa devel")));
         // llvmpipe under GL, and any GPU, keep storage buffers.
         assert!(!prefers_uniform_tables(&adapter(
