@@ -108,8 +108,9 @@ pub struct RenderOptions {
     /// the frame is slower by the waits, the image the same.
     pub stage_times: bool,
     /// Which small tables (`nodes`, `instances`) the kernels read from uniform buffers instead
-    /// of storage buffers ([`TablePlacement::Auto`]: on lavapipe before Mesa 26, or on a CPU without
-    /// AVX-512, where it makes the compile shorter; see `scene::UniformTables`). The image is the same either way.
+    /// of storage buffers ([`TablePlacement::Auto`]: on lavapipe before Mesa 26, or on a CPU
+    /// without AVX-512, where it makes the compile shorter; see `scene::UniformTables`). The image
+    /// is the same either way.
     pub uniform_tables: TablePlacement,
     /// Flatten static objects that have meshes of their own into shared world-space BVHs (one
     /// scene-level leaf for them all; `scene::EntityOptions::flatten`): faster to trace for scenes

@@ -227,8 +227,8 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
             .still_samples()
             .is_some_and(|n| n <= rtc_runtime::gpu::WAVEFRONT_PREVIEW_MAX_SAMPLES);
     let early_gpu = if small { Gpu::new(&choice).ok() } else { None };
-    // With uniform tables (lavapipe whose loads are per-lane code) a light megakernel compiles faster than the
-    // stage kernels, so only a heavier one gives way to them.
+    // With uniform tables (lavapipe whose loads are per-lane code) a light megakernel compiles
+    // faster than the stage kernels, so only a heavier one gives way to them.
     let (auto, wavefront_min_weight) = match early_gpu
         .as_ref()
         .map(|g| g.description())

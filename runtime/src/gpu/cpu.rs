@@ -52,7 +52,7 @@ pub const CACHE_DIR_VAR: &str = "MESA_SHADER_CACHE_DIR";
 /// example compiles 1.6 to 2.8 times faster, with byte-identical images and frame times of 0.70 to
 /// 1.14 of the 256-bit frame with AVX-512 and 0.95 to 1.19 without (AMD Zen 3). Mesa 26.1 compiles
 /// those loads to one gather: with AVX-512 its compile gains little from 4 lanes and its frames
-/// lose (the thesis frame 1.39 times slower); without AVX-512 see [`loads_per_lane`].
+/// lose (the thesis frame 1.39 times slower); without AVX-512 see [`lavapipe_loads_per_lane`].
 pub const NARROW_BEFORE_MESA: u32 = 26;
 
 /// The variable of llvmpipe's performance switches; [`QUICK_JIT`] is the one rtc sets.
@@ -266,7 +266,7 @@ fn lavapipe_driver_info() -> Option<String> {
 
 /// Whether lavapipe with this `driver_info`, on this machine, compiles storage-buffer loads to
 /// code per lane of a SIMD batch, where rtc gives it 128-bit batches ([`apply_lavapipe_defaults`])
-/// and small tables in uniform buffers (`scene::prefers_uniform_tables`). See [`loads_per_lane`].
+/// and small tables in uniform buffers (`scene::prefers_uniform_tables`). See `loads_per_lane`.
 pub fn lavapipe_loads_per_lane(driver_info: &str) -> bool {
     loads_per_lane(
         driver_info,
@@ -286,7 +286,7 @@ pub fn lavapipe_loads_per_lane(driver_info: &str) -> bool {
 /// 0.71 to 0.99 times as long, images byte-identical (docs/bench/lavapipe.md,
 /// "Per-lane loads on CPUs without AVX-512 (2026-12-07)"). An Intel CPU without AVX-512 counts as
 /// per-lane too; not measured there. A string without a Mesa version is not lavapipe's.
-pub fn loads_per_lane(driver_info: &str, avx512: bool) -> bool {
+fn loads_per_lane(driver_info: &str, avx512: bool) -> bool {
     mesa_major(driver_info).is_some_and(|major| major < NARROW_BEFORE_MESA || !avx512)
 }
 

@@ -43,10 +43,10 @@ pub use buffers::{BufferError, BufferLimits, BufferSet, UploadOutcome, UploadSta
 #[cfg(not(target_arch = "wasm32"))]
 pub use cpu::apply_lavapipe_defaults;
 pub use cpu::{
-    lavapipe_defaults_applied, lavapipe_loads_per_lane, loads_per_lane, width_cache_dir, CpuJit,
-    HostCpu, CACHE_DIR_VAR, JIT_VAR, NARROW_BEFORE_MESA, NARROW_WIDTH, QUICK_JIT,
-    QUICK_JIT_MAX_SAMPLES, QUICK_JIT_MAX_SAMPLES_PRIMARY, QUICK_JIT_MAX_SAMPLES_SECONDARY,
-    VECTOR_WIDTH_VAR, WAVEFRONT_PREVIEW_MAX_SAMPLES, WAVEFRONT_PREVIEW_MIN_WEIGHT_WITH_TABLES,
+    lavapipe_defaults_applied, lavapipe_loads_per_lane, width_cache_dir, CpuJit, HostCpu,
+    CACHE_DIR_VAR, JIT_VAR, NARROW_BEFORE_MESA, NARROW_WIDTH, QUICK_JIT, QUICK_JIT_MAX_SAMPLES,
+    QUICK_JIT_MAX_SAMPLES_PRIMARY, QUICK_JIT_MAX_SAMPLES_SECONDARY, VECTOR_WIDTH_VAR,
+    WAVEFRONT_PREVIEW_MAX_SAMPLES, WAVEFRONT_PREVIEW_MIN_WEIGHT_WITH_TABLES,
 };
 pub(crate) use dispatch::add_stage_ms;
 pub use dispatch::{

@@ -90,14 +90,10 @@ impl TablePlacement {
 /// Whether `adapter` is lavapipe (Vulkan, llvmpipe) whose storage loads are per-lane code on this
 /// machine ([`crate::gpu::lavapipe_loads_per_lane`]: Mesa before 26, or a CPU without AVX-512).
 pub fn prefers_uniform_tables(adapter: &AdapterDescription) -> bool {
-    is_lavapipe(adapter) && crate::gpu::lavapipe_loads_per_lane(&adapter.driver_info)
-}
-
-/// Whether `adapter` is lavapipe: llvmpipe under Vulkan.
-fn is_lavapipe(adapter: &AdapterDescription) -> bool {
     adapter.backend == wgpu::Backend::Vulkan
         && adapter.device_type == wgpu::DeviceType::Cpu
         && adapter.name.starts_with("llvmpipe")
+        && crate::gpu::lavapipe_loads_per_lane(&adapter.driver_info)
 }
 
 /// The bindings of one scene's kernels placed in uniform buffers (none by default).
@@ -264,7 +260,7 @@ mod tests {
             "Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)"
         )));
         assert!(prefers_uniform_tables(&adapter(lvp, vk, "Mesa 22.3.6")));
-        // From Mesa 26 on, as this machine's CPU decides (`gpu::loads_per_lane` tests both).
+        // From Mesa 26 on, as this machine's CPU decides (`gpu::cpu`'s tests take both).
         let mesa_26 = "Mesa 26.1.6-1~bpo13+1 (LLVM 19.1.7)";
         assert_eq!(
             prefers_uniform_tables(&adapter(lvp, vk, mesa_26)),
