@@ -793,12 +793,16 @@ Ray sample_camera_ray(uvec2 pixel_4, uint sample_4) {
     return _e18;
 }
 
+PathState start_path(Ray ray_8) {
+    return PathState(ray_8, vec3(1.0), vec3(0.0), true);
+}
+
 vec3 node_frame_hi(GpuNode header) {
     vec3 _e5 = node_point(header.min_, header.max_, uvec3(65535u));
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_8, bool shadow_2) {
+Candidate intersect_scene(Ray ray_9, bool shadow_2) {
     Candidate best_2 = Candidate(0.0, 0u, 0u, vec2(0.0), vec3(0.0));
     uint sp_2 = 0u;
     uint child_1 = 0u;
@@ -806,21 +810,21 @@ Candidate intersect_scene(Ray ray_8, bool shadow_2) {
     uint far_1 = 0u;
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    Candidate _e7 = no_candidate(ray_8.tmax);
+    Candidate _e7 = no_candidate(ray_9.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = _group_0_binding_0_cs;
     if ((frame_3.instance_count == 0u)) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    vec3 _e16 = safe_inverse(ray_8.dir);
+    vec3 _e16 = safe_inverse(ray_9.dir);
     uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = _group_0_binding_2_cs[base_2];
     vec3 origin_5 = header_2.min_;
     vec3 scale_3 = header_2.max_;
     vec3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27);
+    float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == uintBitsToFloat(_e30))) {
         Candidate _e33 = best_2;
@@ -835,7 +839,7 @@ Candidate intersect_scene(Ray ray_8, bool shadow_2) {
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_8, _e55, shadow_2);
+                Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_9, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -847,7 +851,7 @@ Candidate intersect_scene(Ray ray_8, bool shadow_2) {
             uint _e63 = child_1;
             GpuNode n_9 = _group_0_binding_2_cs[(base_2 + _e63)];
             float _e69 = best_2.t;
-            vec2 _e70 = children_entry(n_9, origin_5, scale_3, ray_8, _e16, _e69);
+            vec2 _e70 = children_entry(n_9, origin_5, scale_3, ray_9, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -894,16 +898,16 @@ Candidate intersect_scene(Ray ray_8, bool shadow_2) {
     return _e120;
 }
 
-vec3 dispatch_miss(uint type_id_1, uint offset_2, Ray ray_9) {
+vec3 dispatch_miss(uint type_id_1, uint offset_2, Ray ray_10) {
     return vec3(0.0);
 }
 
-vec3 miss(Ray ray_10) {
+vec3 miss(Ray ray_11) {
     if (!(HAS_BACKGROUND)) {
         return vec3(0.0);
     }
     FrameUniforms frame_4 = _group_0_binding_0_cs;
-    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_10);
+    vec3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11);
     return _e9;
 }
 
@@ -945,14 +949,14 @@ void rt_spawn(vec3 dir_1, vec3 weight) {
     }
 }
 
-void path_diffuse_rays(PathDiffuse m, Ray ray_11, Hit hit_1) {
+void path_diffuse_rays(PathDiffuse m, Ray ray_12, Hit hit_1) {
     vec3 weight_1 = vec3(0.0);
     vec3 ng = (hit_1.front_face ? hit_1.geometric_normal : -(hit_1.geometric_normal));
     vec3 n_10 = faceforward(hit_1.normal, -(ng), hit_1.normal);
     vec2 _e12 = rand2_next();
     vec3 _e13 = sample_cosine_hemisphere(n_10, _e12);
     weight_1 = m.albedo;
-    if ((ray_11.depth >= m.roulette_depth)) {
+    if ((ray_12.depth >= m.roulette_depth)) {
         float q_3 = clamp(max(m.albedo.x, max(m.albedo.y, m.albedo.z)), 0.0, 1.0);
         float _e28 = rand_next();
         if ((_e28 >= q_3)) {
@@ -968,9 +972,9 @@ void path_diffuse_rays(PathDiffuse m, Ray ray_11, Hit hit_1) {
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_2, uint offset_4, Ray ray_12, Hit hit_2) {
+void dispatch_secondary_rays(uint type_id_2, uint offset_4, Ray ray_13, Hit hit_2) {
     PathDiffuse _e3 = load_PathDiffuse(offset_4);
-    path_diffuse_rays(_e3, ray_12, hit_2);
+    path_diffuse_rays(_e3, ray_13, hit_2);
     return;
 }
 
@@ -983,12 +987,12 @@ Emissive load_Emissive(uint offset_5) {
     return Emissive(vec3(uintBitsToFloat(_e5), uintBitsToFloat(_e11), uintBitsToFloat(_e17)), uintBitsToFloat(_e24), _e30);
 }
 
-bool after_nee_bounce(Ray ray_13) {
-    return (dot(ray_13.dir, ray_13.dir) > 2.0);
+bool after_nee_bounce(Ray ray_14) {
+    return (dot(ray_14.dir, ray_14.dir) > 2.0);
 }
 
-vec3 emissive_shade(Emissive m_1, Ray ray_14, Hit hit_3) {
-    bool _e3 = after_nee_bounce(ray_14);
+vec3 emissive_shade(Emissive m_1, Ray ray_15, Hit hit_3) {
+    bool _e3 = after_nee_bounce(ray_15);
     if ((_e3 || (!(hit_3.front_face) && (m_1.two_sided == 0u)))) {
         return vec3(0.0);
     }
@@ -1147,11 +1151,11 @@ float mis_light_weight(LightSample l_1, float bsdf_pdf) {
     return _e8;
 }
 
-vec3 path_diffuse_shade(PathDiffuse m_2, Ray ray_15, Hit hit_4, vec3 secondary) {
+vec3 path_diffuse_shade(PathDiffuse m_2, Ray ray_16, Hit hit_4, vec3 secondary) {
     vec3 direct = vec3(0.0);
     uint i_4 = 0u;
-    vec3 n_11 = faceforward(hit_4.normal, ray_15.dir, hit_4.geometric_normal);
-    vec3 ng_1 = faceforward(hit_4.geometric_normal, ray_15.dir, hit_4.geometric_normal);
+    vec3 n_11 = faceforward(hit_4.normal, ray_16.dir, hit_4.geometric_normal);
+    vec3 ng_1 = faceforward(hit_4.geometric_normal, ray_16.dir, hit_4.geometric_normal);
     direct = vec3(0.0);
     uint _e16 = light_count_query();
     i_4 = 0u;
@@ -1177,16 +1181,16 @@ vec3 path_diffuse_shade(PathDiffuse m_2, Ray ray_15, Hit hit_4, vec3 secondary) 
     return (((m_2.albedo * vec3(INV_PI)) * _e43) + secondary);
 }
 
-vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_16, Hit hit_5, vec3 secondary_1) {
+vec3 dispatch_closest_hit(uint type_id_4, uint offset_8, Ray ray_17, Hit hit_5, vec3 secondary_1) {
     switch(type_id_4) {
         case 0u: {
             Emissive _e5 = load_Emissive(offset_8);
-            vec3 _e6 = emissive_shade(_e5, ray_16, hit_5);
+            vec3 _e6 = emissive_shade(_e5, ray_17, hit_5);
             return _e6;
         }
         case 1u: {
             PathDiffuse _e7 = load_PathDiffuse(offset_8);
-            vec3 _e8 = path_diffuse_shade(_e7, ray_16, hit_5, secondary_1);
+            vec3 _e8 = path_diffuse_shade(_e7, ray_17, hit_5, secondary_1);
             return _e8;
         }
         default: {
@@ -1220,25 +1224,25 @@ PathState path_step(PathState s_1, Candidate c_2) {
     vec3 dir_7 = vec3(0.0);
     vec3 weight_2 = vec3(0.0);
     vec3 beta = vec3(0.0);
-    Ray ray_17 = s_1.ray;
+    Ray ray_18 = s_1.ray;
     out_ = s_1;
     out_.live = false;
     if ((c_2.slot == NO_HIT)) {
         hit_error = 0.0;
-        vec3 _e14 = miss(ray_17);
+        vec3 _e14 = miss(ray_18);
         out_.radiance = (s_1.radiance + (s_1.beta * _e14));
         PathState _e17 = out_;
         return _e17;
     }
     GpuInstance inst_8 = _group_0_binding_3_cs[c_2.slot];
-    Hit _e22 = finish_hit(ray_17, c_2);
+    Hit _e22 = finish_hit(ray_18, c_2);
     float error_4 = hit_error;
     spawned = false;
     dir_7 = vec3(0.0);
     weight_2 = vec3(0.0);
-    if ((((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_17.depth < MAX_DEPTH))) {
+    if ((((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_18.depth < MAX_DEPTH))) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_17, _e22);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_18, _e22);
         uint _e47 = spawn_count;
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
@@ -1248,7 +1252,7 @@ PathState path_step(PathState s_1, Candidate c_2) {
             weight_2 = _e60;
         }
     }
-    vec3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e22, vec3(0.0));
+    vec3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e22, vec3(0.0));
     out_.radiance = (s_1.radiance + (s_1.beta * _e68));
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -1265,7 +1269,7 @@ PathState path_step(PathState s_1, Candidate c_2) {
         PathState _e89 = out_;
         return _e89;
     }
-    if ((((ROULETTE_DEPTH > 0u) && ((ray_17.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT))) {
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_18.depth + 1u) >= ROULETTE_DEPTH)) && (q_4 < ROULETTE_THROUGHPUT))) {
         float survive = (q_4 / ROULETTE_THROUGHPUT);
         float _e104 = rand_next();
         if ((_e104 >= survive)) {
@@ -1281,7 +1285,7 @@ PathState path_step(PathState s_1, Candidate c_2) {
     vec3 _e114 = spawn_origin(_e22, error_4, _e113);
     vec3 _e116 = dir_7;
     uint _e118 = F32_INF;
-    out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_17.depth + 1u), RAY_SECONDARY, ray_17.medium);
+    out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_18.depth + 1u), RAY_SECONDARY, ray_18.medium);
     out_.live = true;
     PathState _e128 = out_;
     return _e128;
@@ -1348,29 +1352,31 @@ void render_pixel(uvec2 pixel_5) {
     sums = PassSum(vec3(0.0), 0u);
     s_3 = 0u;
     Ray _e25 = sample_camera_ray(pixel_5, first_1);
-    path = PathState(_e25, vec3(1.0), vec3(0.0), true);
+    PathState _e26 = start_path(_e25);
+    path = _e26;
     while(true) {
-        PathState _e33 = path;
-        Ray _e35 = path.ray;
-        Candidate _e37 = intersect_scene(_e35, false);
-        PathState _e38 = path_step(_e33, _e37);
-        path = _e38;
-        bool _e40 = path.live;
-        if (!(_e40)) {
-            PassSum _e42 = sums;
-            vec3 _e44 = path.radiance;
-            uint _e45 = s_3;
-            PassSum _e47 = add_sample(_e42, _e44, _e45, index_1, tile_2.frame, per_pass_1);
-            sums = _e47;
-            uint _e48 = s_3;
-            s_3 = (_e48 + 1u);
-            uint _e51 = s_3;
-            if ((_e51 >= count_2)) {
+        PathState _e28 = path;
+        Ray _e30 = path.ray;
+        Candidate _e32 = intersect_scene(_e30, false);
+        PathState _e33 = path_step(_e28, _e32);
+        path = _e33;
+        bool _e35 = path.live;
+        if (!(_e35)) {
+            PassSum _e37 = sums;
+            vec3 _e39 = path.radiance;
+            uint _e40 = s_3;
+            PassSum _e42 = add_sample(_e37, _e39, _e40, index_1, tile_2.frame, per_pass_1);
+            sums = _e42;
+            uint _e43 = s_3;
+            s_3 = (_e43 + 1u);
+            uint _e46 = s_3;
+            if ((_e46 >= count_2)) {
                 break;
             }
-            uint _e53 = s_3;
-            Ray _e55 = sample_camera_ray(pixel_5, (first_1 + _e53));
-            path = PathState(_e55, vec3(1.0), vec3(0.0), true);
+            uint _e48 = s_3;
+            Ray _e50 = sample_camera_ray(pixel_5, (first_1 + _e48));
+            PathState _e51 = start_path(_e50);
+            path = _e51;
         }
     }
     return;

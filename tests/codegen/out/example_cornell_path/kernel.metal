@@ -1019,6 +1019,12 @@ Ray sample_camera_ray(
     return _e18;
 }
 
+PathState start_path(
+    Ray ray_8
+) {
+    return PathState {ray_8, metal::float3(1.0), metal::float3(0.0), true};
+}
+
 metal::float3 node_frame_hi(
     GpuNode header
 ) {
@@ -1027,7 +1033,7 @@ metal::float3 node_frame_hi(
 }
 
 Candidate intersect_scene(
-    Ray ray_8,
+    Ray ray_9,
     bool shadow_2,
     constant FrameUniforms& frame,
     thread uint& F32_INF,
@@ -1045,21 +1051,21 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_8.tmax);
+    Candidate _e7 = no_candidate(ray_9.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if (frame_3.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_8.dir);
+    metal::float3 _e16 = safe_inverse(ray_9.dir);
     uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = nodes[base_2];
     metal::float3 origin_5 = header_2.min;
     metal::float3 scale_3 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
@@ -1077,7 +1083,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_8, _e55, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_9, _e55, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1089,7 +1095,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_9 = nodes[base_2 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_9, origin_5, scale_3, ray_8, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_9, origin_5, scale_3, ray_9, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1139,20 +1145,20 @@ Candidate intersect_scene(
 metal::float3 dispatch_miss(
     uint type_id_1,
     uint offset_2,
-    Ray ray_9
+    Ray ray_10
 ) {
     return metal::float3 {};
 }
 
 metal::float3 miss(
-    Ray ray_10,
+    Ray ray_11,
     constant FrameUniforms& frame
 ) {
     if (!(HAS_BACKGROUND)) {
         return metal::float3(0.0);
     }
     FrameUniforms frame_4 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_10);
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11);
     return _e9;
 }
 
@@ -1214,7 +1220,7 @@ void rt_spawn(
 
 void path_diffuse_rays(
     PathDiffuse m,
-    Ray ray_11,
+    Ray ray_12,
     Hit hit_1,
     thread type_5& scratch,
     thread uint& rng_state,
@@ -1228,7 +1234,7 @@ void path_diffuse_rays(
     metal::float2 _e12 = rand2_next(scratch, rng_state);
     metal::float3 _e13 = sample_cosine_hemisphere(n_10, _e12);
     weight_1 = m.albedo;
-    if (ray_11.depth >= m.roulette_depth) {
+    if (ray_12.depth >= m.roulette_depth) {
         float q_3 = metal::saturate(metal::max(m.albedo[0], metal::max(m.albedo[1], m.albedo[2])));
         float _e28 = rand_next(scratch, rng_state);
         if (_e28 >= q_3) {
@@ -1247,7 +1253,7 @@ void path_diffuse_rays(
 void dispatch_secondary_rays(
     uint type_id_2,
     uint offset_4,
-    Ray ray_12,
+    Ray ray_13,
     Hit hit_2,
     thread type_5& scratch,
     thread uint& rng_state,
@@ -1258,7 +1264,7 @@ void dispatch_secondary_rays(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PathDiffuse _e3 = load_PathDiffuse(offset_4, params, _buffer_sizes);
-    path_diffuse_rays(_e3, ray_12, hit_2, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
+    path_diffuse_rays(_e3, ray_13, hit_2, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
@@ -1276,17 +1282,17 @@ Emissive load_Emissive(
 }
 
 bool after_nee_bounce(
-    Ray ray_13
+    Ray ray_14
 ) {
-    return metal::dot(ray_13.dir, ray_13.dir) > 2.0;
+    return metal::dot(ray_14.dir, ray_14.dir) > 2.0;
 }
 
 metal::float3 emissive_shade(
     Emissive m_1,
-    Ray ray_14,
+    Ray ray_15,
     Hit hit_3
 ) {
-    bool _e3 = after_nee_bounce(ray_14);
+    bool _e3 = after_nee_bounce(ray_15);
     if (_e3 || (!(hit_3.front_face) && (m_1.two_sided == 0u))) {
         return metal::float3(0.0);
     }
@@ -1558,7 +1564,7 @@ float mis_light_weight(
 
 metal::float3 path_diffuse_shade(
     PathDiffuse m_2,
-    Ray ray_15,
+    Ray ray_16,
     Hit hit_4,
     metal::float3 secondary,
     constant FrameUniforms& frame,
@@ -1576,8 +1582,8 @@ metal::float3 path_diffuse_shade(
 ) {
     metal::float3 direct = {};
     uint i_4 = {};
-    metal::float3 n_11 = metal::faceforward(hit_4.normal, ray_15.dir, hit_4.geometric_normal);
-    metal::float3 ng_1 = metal::faceforward(hit_4.geometric_normal, ray_15.dir, hit_4.geometric_normal);
+    metal::float3 n_11 = metal::faceforward(hit_4.normal, ray_16.dir, hit_4.geometric_normal);
+    metal::float3 ng_1 = metal::faceforward(hit_4.geometric_normal, ray_16.dir, hit_4.geometric_normal);
     direct = metal::float3(0.0);
     uint _e16 = light_count_query(frame);
     i_4 = 0u;
@@ -1609,7 +1615,7 @@ metal::float3 path_diffuse_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_8,
-    Ray ray_16,
+    Ray ray_17,
     Hit hit_5,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
@@ -1628,12 +1634,12 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             Emissive _e5 = load_Emissive(offset_8, params, _buffer_sizes);
-            metal::float3 _e6 = emissive_shade(_e5, ray_16, hit_5);
+            metal::float3 _e6 = emissive_shade(_e5, ray_17, hit_5);
             return _e6;
         }
         case 1u: {
             PathDiffuse _e7 = load_PathDiffuse(offset_8, params, _buffer_sizes);
-            metal::float3 _e8 = path_diffuse_shade(_e7, ray_16, hit_5, secondary_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+            metal::float3 _e8 = path_diffuse_shade(_e7, ray_17, hit_5, secondary_1, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
             return _e8;
         }
         default: {
@@ -1695,25 +1701,25 @@ PathState path_step(
     metal::float3 dir_7 = {};
     metal::float3 weight_2 = {};
     metal::float3 beta = {};
-    Ray ray_17 = s_1.ray;
+    Ray ray_18 = s_1.ray;
     out = s_1;
     out.live = false;
     if (c_2.slot == NO_HIT) {
         hit_error = 0.0;
-        metal::float3 _e14 = miss(ray_17, frame);
+        metal::float3 _e14 = miss(ray_18, frame);
         out.radiance = s_1.radiance + (s_1.beta * _e14);
         PathState _e17 = out;
         return _e17;
     }
     GpuInstance inst_8 = instances[c_2.slot];
-    Hit _e22 = finish_hit(ray_17, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
+    Hit _e22 = finish_hit(ray_18, c_2, instances, triangles, hit_error, attributes, _buffer_sizes);
     float error_4 = hit_error;
     spawned = false;
     dir_7 = metal::float3(0.0);
     weight_2 = metal::float3(0.0);
     if (((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_1.ray.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_17, _e22, scratch, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_18, _e22, scratch, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         uint _e47 = spawn_count;
         if (metal::min(_e47, 1u) > 0u) {
             spawned = true;
@@ -1723,7 +1729,7 @@ PathState path_step(
             weight_2 = _e60;
         }
     }
-    metal::float3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_17, _e22, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+    metal::float3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e22, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
     out.radiance = s_1.radiance + (s_1.beta * _e68);
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -1859,32 +1865,34 @@ void render_pixel(
     sums = PassSum {metal::float3(0.0), 0u};
     s_3 = 0u;
     Ray _e25 = sample_camera_ray(pixel_5, first_1, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-    path = PathState {_e25, metal::float3(1.0), metal::float3(0.0), true};
+    PathState _e26 = start_path(_e25);
+    path = _e26;
     uint2 loop_bound_5 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        PathState _e33 = path;
-        Ray _e35 = path.ray;
-        Candidate _e37 = intersect_scene(_e35, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        PathState _e38 = path_step(_e33, _e37, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-        path = _e38;
-        bool _e40 = path.live;
-        if (!(_e40)) {
-            PassSum _e42 = sums;
-            metal::float3 _e44 = path.radiance;
-            uint _e45 = s_3;
-            PassSum _e47 = add_sample(_e42, _e44, _e45, index_1, tile_2.frame, per_pass_1, ray_count, counters, accum, _buffer_sizes);
-            sums = _e47;
-            uint _e48 = s_3;
-            s_3 = _e48 + 1u;
-            uint _e51 = s_3;
-            if (_e51 >= count_2) {
+        PathState _e28 = path;
+        Ray _e30 = path.ray;
+        Candidate _e32 = intersect_scene(_e30, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        PathState _e33 = path_step(_e28, _e32, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        path = _e33;
+        bool _e35 = path.live;
+        if (!(_e35)) {
+            PassSum _e37 = sums;
+            metal::float3 _e39 = path.radiance;
+            uint _e40 = s_3;
+            PassSum _e42 = add_sample(_e37, _e39, _e40, index_1, tile_2.frame, per_pass_1, ray_count, counters, accum, _buffer_sizes);
+            sums = _e42;
+            uint _e43 = s_3;
+            s_3 = _e43 + 1u;
+            uint _e46 = s_3;
+            if (_e46 >= count_2) {
                 break;
             }
-            uint _e53 = s_3;
-            Ray _e55 = sample_camera_ray(pixel_5, first_1 + _e53, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-            path = PathState {_e55, metal::float3(1.0), metal::float3(0.0), true};
+            uint _e48 = s_3;
+            Ray _e50 = sample_camera_ray(pixel_5, first_1 + _e48, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+            PathState _e51 = start_path(_e50);
+            path = _e51;
         }
     }
     return;

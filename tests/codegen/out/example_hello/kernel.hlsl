@@ -457,16 +457,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h) * aspect)).xxx)) - (up * ((ndc.y * h)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_18 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_18;
+    const Ray ray_19 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_19;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
-    const Ray ray_19 = _e4;
-    return ray_19;
+    const Ray ray_20 = _e4;
+    return ray_20;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -495,8 +495,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
-    const Ray ray_20 = _e25;
-    return ray_20;
+    const Ray ray_21 = _e25;
+    return ray_21;
 }
 
 float3 safe_inverse(float3 d)
@@ -992,8 +992,23 @@ Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
     const uint _e17 = medium_at(_e15, NO_HIT);
     ray_7.medium = _e17;
     Ray _e18 = ray_7;
-    const Ray ray_21 = _e18;
-    return ray_21;
+    const Ray ray_22 = _e18;
+    return ray_22;
+}
+
+PathState ConstructPathState(Ray arg0, float3 arg1, float3 arg2, bool arg3) {
+    PathState ret = (PathState)0;
+    ret.ray = arg0;
+    ret.beta = arg1;
+    ret.radiance = arg2;
+    ret.live = arg3;
+    return ret;
+}
+
+PathState start_path(Ray ray_8)
+{
+    const PathState pathstate = ConstructPathState(ray_8, (1.0).xxx, (0.0).xxx, true);
+    return pathstate;
 }
 
 float3 node_frame_hi(GpuNode header)
@@ -1002,7 +1017,7 @@ float3 node_frame_hi(GpuNode header)
     return _e5;
 }
 
-Candidate intersect_scene(Ray ray_8, bool shadow_2)
+Candidate intersect_scene(Ray ray_9, bool shadow_2)
 {
     Candidate best_2 = (Candidate)0;
     uint sp_2 = (uint)0;
@@ -1012,7 +1027,7 @@ Candidate intersect_scene(Ray ray_8, bool shadow_2)
 
     uint _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    const Candidate _e7 = no_candidate(ray_8.tmax);
+    const Candidate _e7 = no_candidate(ray_9.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if ((frame_3.instance_count == 0u)) {
@@ -1020,14 +1035,14 @@ Candidate intersect_scene(Ray ray_8, bool shadow_2)
         const Candidate candidate_5 = _e14;
         return candidate_5;
     }
-    const float3 _e16 = safe_inverse(ray_8.dir);
+    const float3 _e16 = safe_inverse(ray_9.dir);
     uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = ConstructGpuNode(asfloat(nodes.Load3(base_2*32+0)), asuint(nodes.Load(base_2*32+12)), asfloat(nodes.Load3(base_2*32+16)), asuint(nodes.Load(base_2*32+28)));
     float3 origin_5 = header_2.min_;
     float3 scale_3 = header_2.max_;
     const float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    const float _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27);
+    const float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
     uint _e30 = F32_INF;
     if ((_e28 == asfloat(_e30))) {
         Candidate _e33 = best_2;
@@ -1046,7 +1061,7 @@ Candidate intersect_scene(Ray ray_8, bool shadow_2)
             if ((((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u)) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_8, _e55, shadow_2);
+                const Candidate _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_9, _e55, shadow_2);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if ((shadow_2 && (_e58 != NO_HIT))) {
@@ -1059,7 +1074,7 @@ Candidate intersect_scene(Ray ray_8, bool shadow_2)
             uint _e63 = child_1;
             GpuNode n_7 = ConstructGpuNode(asfloat(nodes.Load3((base_2 + _e63)*32+0)), asuint(nodes.Load((base_2 + _e63)*32+12)), asfloat(nodes.Load3((base_2 + _e63)*32+16)), asuint(nodes.Load((base_2 + _e63)*32+28)));
             float _e69 = best_2.t;
-            const float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_8, _e16, _e69);
+            const float2 _e70 = children_entry(n_7, origin_5, scale_3, ray_9, _e16, _e69);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1130,9 +1145,9 @@ SkyGradient load_SkyGradient(uint offset_2)
     return skygradient;
 }
 
-float3 sky_gradient(SkyGradient b_4, Ray ray_9)
+float3 sky_gradient(SkyGradient b_4, Ray ray_10)
 {
-    const float3 _e3 = normalize_vec3f(ray_9.dir);
+    const float3 _e3 = normalize_vec3f(ray_10.dir);
     float y = _e3.y;
     if ((y < 0.0)) {
         return lerp(b_4.horizon, b_4.ground, (min((-(y) * 4.0), 1.0)).xxx);
@@ -1140,20 +1155,20 @@ float3 sky_gradient(SkyGradient b_4, Ray ray_9)
     return lerp(b_4.horizon, b_4.zenith, (sqrt(y)).xxx);
 }
 
-float3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_10)
+float3 dispatch_miss(uint type_id_1, uint offset_3, Ray ray_11)
 {
     const SkyGradient _e2 = load_SkyGradient(offset_3);
-    const float3 _e3 = sky_gradient(_e2, ray_10);
+    const float3 _e3 = sky_gradient(_e2, ray_11);
     return _e3;
 }
 
-float3 miss(Ray ray_11)
+float3 miss(Ray ray_12)
 {
     if (!(HAS_BACKGROUND)) {
         return (0.0).xxx;
     }
     FrameUniforms frame_4 = frame;
-    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11);
+    const float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
     return _e9;
 }
 
@@ -1182,17 +1197,17 @@ void rt_spawn(float3 dir, float3 weight)
     }
 }
 
-void mirror_rays(Mirror m, Ray ray_12, Hit hit_1)
+void mirror_rays(Mirror m, Ray ray_13, Hit hit_1)
 {
-    const float3 _e4 = normalize_vec3f(ray_12.dir);
+    const float3 _e4 = normalize_vec3f(ray_13.dir);
     rt_spawn(reflect(_e4, hit_1.normal), m.tint);
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_2, uint offset_5, Ray ray_13, Hit hit_2)
+void dispatch_secondary_rays(uint type_id_2, uint offset_5, Ray ray_14, Hit hit_2)
 {
     const Mirror _e3 = load_Mirror(offset_5);
-    mirror_rays(_e3, ray_13, hit_2);
+    mirror_rays(_e3, ray_14, hit_2);
     return;
 }
 
@@ -1211,9 +1226,9 @@ Lambert load_Lambert(uint offset_6)
     return lambert;
 }
 
-float3 shading_normal(Ray ray_14, Hit hit_3)
+float3 shading_normal(Ray ray_15, Hit hit_3)
 {
-    float3 ng = faceforward(hit_3.geometric_normal, ray_14.dir, hit_3.geometric_normal);
+    float3 ng = faceforward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
     return faceforward(hit_3.normal, -(ng), hit_3.normal);
 }
 
@@ -1305,8 +1320,8 @@ Ray shadow_ray(float3 position, float3 normal_1, float3 dir_2, float dist)
         tmax_4 = ((along_1 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_1.x, l_1.y), l_1.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_22 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_22;
+    const Ray ray_23 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_23;
 }
 
 float shadow_query(float3 position_1, float3 normal_2, float3 dir_3, float dist_1)
@@ -1370,12 +1385,12 @@ LightSample sample_light_query(uint i_2, float3 position_4, float3 normal_5)
     return lightsample_3;
 }
 
-float3 lambert_shade(Lambert m_1, Ray ray_15, Hit hit_4)
+float3 lambert_shade(Lambert m_1, Ray ray_16, Hit hit_4)
 {
     float3 color = (float3)0;
     uint i_3 = (uint)0;
 
-    const float3 _e3 = shading_normal(ray_15, hit_4);
+    const float3 _e3 = shading_normal(ray_16, hit_4);
     color = (0.0).xxx;
     const uint _e8 = light_count_query();
     i_3 = 0u;
@@ -1402,7 +1417,7 @@ float3 lambert_shade(Lambert m_1, Ray ray_15, Hit hit_4)
     return _e33;
 }
 
-float3 mirror_shade(Mirror m_2, Ray ray_16, Hit hit_5, float3 secondary)
+float3 mirror_shade(Mirror m_2, Ray ray_17, Hit hit_5, float3 secondary)
 {
     return secondary;
 }
@@ -1411,17 +1426,17 @@ float3 ZeroValuefloat3() {
     return (float3)0;
 }
 
-float3 dispatch_closest_hit(uint type_id_4, uint offset_9, Ray ray_17, Hit hit_6, float3 secondary_1)
+float3 dispatch_closest_hit(uint type_id_4, uint offset_9, Ray ray_18, Hit hit_6, float3 secondary_1)
 {
     switch(type_id_4) {
         case 0u: {
             const Lambert _e5 = load_Lambert(offset_9);
-            const float3 _e6 = lambert_shade(_e5, ray_17, hit_6);
+            const float3 _e6 = lambert_shade(_e5, ray_18, hit_6);
             return _e6;
         }
         case 1u: {
             const Mirror _e7 = load_Mirror(offset_9);
-            const float3 _e8 = mirror_shade(_e7, ray_17, hit_6, secondary_1);
+            const float3 _e8 = mirror_shade(_e7, ray_18, hit_6, secondary_1);
             return _e8;
         }
         default: {
@@ -1460,26 +1475,26 @@ PathState path_step(PathState s_1, Candidate c_2)
     float3 weight_1 = (float3)0;
     float3 beta = (float3)0;
 
-    Ray ray_23 = s_1.ray;
+    Ray ray_24 = s_1.ray;
     out_ = s_1;
     out_.live = false;
     if ((c_2.slot == NO_HIT)) {
         hit_error = 0.0;
-        const float3 _e14 = miss(ray_23);
+        const float3 _e14 = miss(ray_24);
         out_.radiance = (s_1.radiance + (s_1.beta * _e14));
         PathState _e17 = out_;
-        const PathState pathstate = _e17;
-        return pathstate;
+        const PathState pathstate_1 = _e17;
+        return pathstate_1;
     }
     GpuInstance inst_8 = ConstructGpuInstance(asfloat(instances.Load4(c_2.slot*128+0)), asfloat(instances.Load4(c_2.slot*128+16)), asfloat(instances.Load4(c_2.slot*128+32)), asfloat(instances.Load4(c_2.slot*128+48)), asfloat(instances.Load4(c_2.slot*128+64)), asfloat(instances.Load4(c_2.slot*128+80)), asuint(instances.Load(c_2.slot*128+96)), asuint(instances.Load(c_2.slot*128+100)), asuint(instances.Load(c_2.slot*128+104)), asuint(instances.Load(c_2.slot*128+108)), asuint(instances.Load(c_2.slot*128+112)), asuint(instances.Load(c_2.slot*128+116)), asuint(instances.Load(c_2.slot*128+120)), asuint(instances.Load(c_2.slot*128+124)));
-    const Hit _e22 = finish_hit(ray_23, c_2);
+    const Hit _e22 = finish_hit(ray_24, c_2);
     float error_4 = hit_error;
     spawned = false;
     dir_6 = (0.0).xxx;
     weight_1 = (0.0).xxx;
-    if ((((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_23.depth < MAX_DEPTH))) {
+    if ((((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_24.depth < MAX_DEPTH))) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_23, _e22);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_24, _e22);
         uint _e47 = spawn_count;
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
@@ -1489,13 +1504,13 @@ PathState path_step(PathState s_1, Candidate c_2)
             weight_1 = _e60;
         }
     }
-    const float3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_23, _e22, (0.0).xxx);
+    const float3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_24, _e22, (0.0).xxx);
     out_.radiance = (s_1.radiance + (s_1.beta * _e68));
     bool _e71 = spawned;
     if (!(_e71)) {
         PathState _e73 = out_;
-        const PathState pathstate_1 = _e73;
-        return pathstate_1;
+        const PathState pathstate_2 = _e73;
+        return pathstate_2;
     }
     float3 _e75 = weight_1;
     beta = (s_1.beta * _e75);
@@ -1505,16 +1520,16 @@ PathState path_step(PathState s_1, Candidate c_2)
     float q_3 = max(_e79, max(_e81, _e83));
     if (!((q_3 > 0.0))) {
         PathState _e89 = out_;
-        const PathState pathstate_2 = _e89;
-        return pathstate_2;
+        const PathState pathstate_3 = _e89;
+        return pathstate_3;
     }
-    if ((((ROULETTE_DEPTH > 0u) && ((ray_23.depth + 1u) >= ROULETTE_DEPTH)) && (q_3 < ROULETTE_THROUGHPUT))) {
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_24.depth + 1u) >= ROULETTE_DEPTH)) && (q_3 < ROULETTE_THROUGHPUT))) {
         float survive = (q_3 / ROULETTE_THROUGHPUT);
         const float _e104 = rand_next();
         if ((_e104 >= survive)) {
             PathState _e106 = out_;
-            const PathState pathstate_3 = _e106;
-            return pathstate_3;
+            const PathState pathstate_4 = _e106;
+            return pathstate_4;
         }
         float3 _e107 = beta;
         beta = (_e107 / (survive).xxx);
@@ -1525,11 +1540,11 @@ PathState path_step(PathState s_1, Candidate c_2)
     const float3 _e114 = spawn_origin(_e22, error_4, _e113);
     float3 _e116 = dir_6;
     uint _e118 = F32_INF;
-    out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_23.depth + 1u), RAY_SECONDARY, ray_23.medium);
+    out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_24.depth + 1u), RAY_SECONDARY, ray_24.medium);
     out_.live = true;
     PathState _e128 = out_;
-    const PathState pathstate_4 = _e128;
-    return pathstate_4;
+    const PathState pathstate_5 = _e128;
+    return pathstate_5;
 }
 
 bool3 is_finite_vec3f(float3 x_4)
@@ -1593,15 +1608,6 @@ PassSum add_sample(PassSum p_6, float3 c_4, uint s_2, uint index, uint first_pas
     return passsum_1;
 }
 
-PathState ConstructPathState(Ray arg0, float3 arg1, float3 arg2, bool arg3) {
-    PathState ret = (PathState)0;
-    ret.ray = arg0;
-    ret.beta = arg1;
-    ret.radiance = arg2;
-    ret.live = arg3;
-    return ret;
-}
-
 void render_pixel(uint2 pixel_5)
 {
     PassSum sums = (PassSum)0;
@@ -1617,32 +1623,34 @@ void render_pixel(uint2 pixel_5)
     sums = ConstructPassSum((0.0).xxx, 0u);
     s_3 = 0u;
     const Ray _e25 = sample_camera_ray(pixel_5, first_1);
-    path = ConstructPathState(_e25, (1.0).xxx, (0.0).xxx, true);
+    const PathState _e26 = start_path(_e25);
+    path = _e26;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        PathState _e33 = path;
-        Ray _e35 = path.ray;
-        const Candidate _e37 = intersect_scene(_e35, false);
-        const PathState _e38 = path_step(_e33, _e37);
-        path = _e38;
-        bool _e40 = path.live;
-        if (!(_e40)) {
-            PassSum _e42 = sums;
-            float3 _e44 = path.radiance;
-            uint _e45 = s_3;
-            const PassSum _e47 = add_sample(_e42, _e44, _e45, index_1, tile_2.frame, per_pass_1);
-            sums = _e47;
-            uint _e48 = s_3;
-            s_3 = (_e48 + 1u);
-            uint _e51 = s_3;
-            if ((_e51 >= count_2)) {
+        PathState _e28 = path;
+        Ray _e30 = path.ray;
+        const Candidate _e32 = intersect_scene(_e30, false);
+        const PathState _e33 = path_step(_e28, _e32);
+        path = _e33;
+        bool _e35 = path.live;
+        if (!(_e35)) {
+            PassSum _e37 = sums;
+            float3 _e39 = path.radiance;
+            uint _e40 = s_3;
+            const PassSum _e42 = add_sample(_e37, _e39, _e40, index_1, tile_2.frame, per_pass_1);
+            sums = _e42;
+            uint _e43 = s_3;
+            s_3 = (_e43 + 1u);
+            uint _e46 = s_3;
+            if ((_e46 >= count_2)) {
                 break;
             }
-            uint _e53 = s_3;
-            const Ray _e55 = sample_camera_ray(pixel_5, (first_1 + _e53));
-            path = ConstructPathState(_e55, (1.0).xxx, (0.0).xxx, true);
+            uint _e48 = s_3;
+            const Ray _e50 = sample_camera_ray(pixel_5, (first_1 + _e48));
+            const PathState _e51 = start_path(_e50);
+            path = _e51;
         }
     }
     return;

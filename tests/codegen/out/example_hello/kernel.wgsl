@@ -802,12 +802,16 @@ fn sample_camera_ray(pixel_4: vec2<u32>, sample_4: u32) -> Ray {
     return _e18;
 }
 
+fn start_path(ray_8: Ray) -> PathState {
+    return PathState(ray_8, vec3(1f), vec3(0f), true);
+}
+
 fn node_frame_hi(header: GpuNode) -> vec3<f32> {
     let _e5 = node_point(header.min, header.max, vec3(65535u));
     return _e5;
 }
 
-fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
+fn intersect_scene(ray_9: Ray, shadow_2: bool) -> Candidate {
     var best_2: Candidate;
     var sp_2: u32;
     var child_1: u32;
@@ -816,21 +820,21 @@ fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
 
     let _e3 = ray_count;
     ray_count = (_e3 + 1u);
-    let _e7 = no_candidate(ray_8.tmax);
+    let _e7 = no_candidate(ray_9.tmax);
     best_2 = _e7;
     let frame_3 = frame;
     if (frame_3.instance_count == 0u) {
         let _e14 = best_2;
         return _e14;
     }
-    let _e16 = safe_inverse(ray_8.dir);
+    let _e16 = safe_inverse(ray_9.dir);
     let base_2 = frame_3.tlas_root;
     let header_2 = nodes[base_2];
     let origin_5 = header_2.min;
     let scale_3 = header_2.max;
     let _e23 = node_frame_hi(header_2);
     let _e27 = best_2.t;
-    let _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27);
+    let _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27);
     let _e30 = F32_INF;
     if (_e28 == bitcast<f32>(_e30)) {
         let _e33 = best_2;
@@ -845,7 +849,7 @@ fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 let _e52 = child_1;
                 let _e55 = best_2;
-                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_8, _e55, shadow_2);
+                let _e56 = intersect_object((_e52 & NODE_FIRST_MASK), ray_9, _e55, shadow_2);
                 best_2 = _e56;
                 let _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -857,7 +861,7 @@ fn intersect_scene(ray_8: Ray, shadow_2: bool) -> Candidate {
             let _e63 = child_1;
             let n_7 = nodes[(base_2 + _e63)];
             let _e69 = best_2.t;
-            let _e70 = children_entry(n_7, origin_5, scale_3, ray_8, _e16, _e69);
+            let _e70 = children_entry(n_7, origin_5, scale_3, ray_9, _e16, _e69);
             let tl_1 = _e70.x;
             let tr_1 = _e70.y;
             let _e74 = F32_INF;
@@ -917,8 +921,8 @@ fn load_SkyGradient(offset_2: u32) -> SkyGradient {
     return SkyGradient(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)), vec3<f32>(bitcast<f32>(_e24), bitcast<f32>(_e30), bitcast<f32>(_e36)), vec3<f32>(bitcast<f32>(_e43), bitcast<f32>(_e49), bitcast<f32>(_e55)));
 }
 
-fn sky_gradient(b_4: SkyGradient, ray_9: Ray) -> vec3<f32> {
-    let _e3 = normalize_vec3f(ray_9.dir);
+fn sky_gradient(b_4: SkyGradient, ray_10: Ray) -> vec3<f32> {
+    let _e3 = normalize_vec3f(ray_10.dir);
     let y = _e3.y;
     if (y < 0f) {
         return mix(b_4.horizon, b_4.ground, vec3(min((-(y) * 4f), 1f)));
@@ -926,18 +930,18 @@ fn sky_gradient(b_4: SkyGradient, ray_9: Ray) -> vec3<f32> {
     return mix(b_4.horizon, b_4.zenith, vec3(sqrt(y)));
 }
 
-fn dispatch_miss(type_id_1: u32, offset_3: u32, ray_10: Ray) -> vec3<f32> {
+fn dispatch_miss(type_id_1: u32, offset_3: u32, ray_11: Ray) -> vec3<f32> {
     let _e2 = load_SkyGradient(offset_3);
-    let _e3 = sky_gradient(_e2, ray_10);
+    let _e3 = sky_gradient(_e2, ray_11);
     return _e3;
 }
 
-fn miss(ray_11: Ray) -> vec3<f32> {
+fn miss(ray_12: Ray) -> vec3<f32> {
     if !(HAS_BACKGROUND) {
         return vec3(0f);
     }
     let frame_4 = frame;
-    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11);
+    let _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12);
     return _e9;
 }
 
@@ -957,15 +961,15 @@ fn rt_spawn(dir: vec3<f32>, weight: vec3<f32>) {
     }
 }
 
-fn mirror_rays(m: Mirror, ray_12: Ray, hit_1: Hit) {
-    let _e4 = normalize_vec3f(ray_12.dir);
+fn mirror_rays(m: Mirror, ray_13: Ray, hit_1: Hit) {
+    let _e4 = normalize_vec3f(ray_13.dir);
     rt_spawn(reflect(_e4, hit_1.normal), m.tint);
     return;
 }
 
-fn dispatch_secondary_rays(type_id_2: u32, offset_5: u32, ray_13: Ray, hit_2: Hit) {
+fn dispatch_secondary_rays(type_id_2: u32, offset_5: u32, ray_14: Ray, hit_2: Hit) {
     let _e3 = load_Mirror(offset_5);
-    mirror_rays(_e3, ray_13, hit_2);
+    mirror_rays(_e3, ray_14, hit_2);
     return;
 }
 
@@ -976,8 +980,8 @@ fn load_Lambert(offset_6: u32) -> Lambert {
     return Lambert(vec3<f32>(bitcast<f32>(_e5), bitcast<f32>(_e11), bitcast<f32>(_e17)));
 }
 
-fn shading_normal(ray_14: Ray, hit_3: Hit) -> vec3<f32> {
-    let ng = faceForward(hit_3.geometric_normal, ray_14.dir, hit_3.geometric_normal);
+fn shading_normal(ray_15: Ray, hit_3: Hit) -> vec3<f32> {
+    let ng = faceForward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
     return faceForward(hit_3.normal, -(ng), hit_3.normal);
 }
 
@@ -1099,11 +1103,11 @@ fn sample_light_query(i_2: u32, position_4: vec3<f32>, normal_5: vec3<f32>) -> L
     return _e28;
 }
 
-fn lambert_shade(m_1: Lambert, ray_15: Ray, hit_4: Hit) -> vec3<f32> {
+fn lambert_shade(m_1: Lambert, ray_16: Ray, hit_4: Hit) -> vec3<f32> {
     var color: vec3<f32>;
     var i_3: u32;
 
-    let _e3 = shading_normal(ray_15, hit_4);
+    let _e3 = shading_normal(ray_16, hit_4);
     color = vec3(0f);
     let _e8 = light_count_query();
     i_3 = 0u;
@@ -1125,20 +1129,20 @@ fn lambert_shade(m_1: Lambert, ray_15: Ray, hit_4: Hit) -> vec3<f32> {
     return _e33;
 }
 
-fn mirror_shade(m_2: Mirror, ray_16: Ray, hit_5: Hit, secondary: vec3<f32>) -> vec3<f32> {
+fn mirror_shade(m_2: Mirror, ray_17: Ray, hit_5: Hit, secondary: vec3<f32>) -> vec3<f32> {
     return secondary;
 }
 
-fn dispatch_closest_hit(type_id_4: u32, offset_9: u32, ray_17: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
+fn dispatch_closest_hit(type_id_4: u32, offset_9: u32, ray_18: Ray, hit_6: Hit, secondary_1: vec3<f32>) -> vec3<f32> {
     switch type_id_4 {
         case 0u: {
             let _e5 = load_Lambert(offset_9);
-            let _e6 = lambert_shade(_e5, ray_17, hit_6);
+            let _e6 = lambert_shade(_e5, ray_18, hit_6);
             return _e6;
         }
         case 1u: {
             let _e7 = load_Mirror(offset_9);
-            let _e8 = mirror_shade(_e7, ray_17, hit_6, secondary_1);
+            let _e8 = mirror_shade(_e7, ray_18, hit_6, secondary_1);
             return _e8;
         }
         default: {
@@ -1173,25 +1177,25 @@ fn path_step(s_1: PathState, c_2: Candidate) -> PathState {
     var weight_1: vec3<f32>;
     var beta: vec3<f32>;
 
-    let ray_18 = s_1.ray;
+    let ray_19 = s_1.ray;
     out = s_1;
     out.live = false;
     if (c_2.slot == NO_HIT) {
         hit_error = 0f;
-        let _e14 = miss(ray_18);
+        let _e14 = miss(ray_19);
         out.radiance = (s_1.radiance + (s_1.beta * _e14));
         let _e17 = out;
         return _e17;
     }
     let inst_8 = instances[c_2.slot];
-    let _e22 = finish_hit(ray_18, c_2);
+    let _e22 = finish_hit(ray_19, c_2);
     let error_4 = hit_error;
     spawned = false;
     dir_6 = vec3(0f);
     weight_1 = vec3(0f);
-    if (((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_18.depth < MAX_DEPTH)) {
+    if (((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_19.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_18, _e22);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_19, _e22);
         let _e47 = spawn_count;
         if (min(_e47, 1u) > 0u) {
             spawned = true;
@@ -1201,7 +1205,7 @@ fn path_step(s_1: PathState, c_2: Candidate) -> PathState {
             weight_1 = _e60;
         }
     }
-    let _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_18, _e22, vec3(0f));
+    let _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_19, _e22, vec3(0f));
     out.radiance = (s_1.radiance + (s_1.beta * _e68));
     let _e71 = spawned;
     if !(_e71) {
@@ -1218,7 +1222,7 @@ fn path_step(s_1: PathState, c_2: Candidate) -> PathState {
         let _e89 = out;
         return _e89;
     }
-    if (((ROULETTE_DEPTH > 0u) && ((ray_18.depth + 1u) >= ROULETTE_DEPTH)) && (q_3 < ROULETTE_THROUGHPUT)) {
+    if (((ROULETTE_DEPTH > 0u) && ((ray_19.depth + 1u) >= ROULETTE_DEPTH)) && (q_3 < ROULETTE_THROUGHPUT)) {
         let survive = (q_3 / ROULETTE_THROUGHPUT);
         let _e104 = rand_next();
         if (_e104 >= survive) {
@@ -1234,7 +1238,7 @@ fn path_step(s_1: PathState, c_2: Candidate) -> PathState {
     let _e114 = spawn_origin(_e22, error_4, _e113);
     let _e116 = dir_6;
     let _e118 = F32_INF;
-    out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_18.depth + 1u), RAY_SECONDARY, ray_18.medium);
+    out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_19.depth + 1u), RAY_SECONDARY, ray_19.medium);
     out.live = true;
     let _e128 = out;
     return _e128;
@@ -1303,29 +1307,31 @@ fn render_pixel(pixel_5: vec2<u32>) {
     sums = PassSum(vec3(0f), 0u);
     s_3 = 0u;
     let _e25 = sample_camera_ray(pixel_5, first_1);
-    path = PathState(_e25, vec3(1f), vec3(0f), true);
+    let _e26 = start_path(_e25);
+    path = _e26;
     loop {
-        let _e33 = path;
-        let _e35 = path.ray;
-        let _e37 = intersect_scene(_e35, false);
-        let _e38 = path_step(_e33, _e37);
-        path = _e38;
-        let _e40 = path.live;
-        if !(_e40) {
-            let _e42 = sums;
-            let _e44 = path.radiance;
-            let _e45 = s_3;
-            let _e47 = add_sample(_e42, _e44, _e45, index_1, tile_2.frame, per_pass_1);
-            sums = _e47;
-            let _e48 = s_3;
-            s_3 = (_e48 + 1u);
-            let _e51 = s_3;
-            if (_e51 >= count_2) {
+        let _e28 = path;
+        let _e30 = path.ray;
+        let _e32 = intersect_scene(_e30, false);
+        let _e33 = path_step(_e28, _e32);
+        path = _e33;
+        let _e35 = path.live;
+        if !(_e35) {
+            let _e37 = sums;
+            let _e39 = path.radiance;
+            let _e40 = s_3;
+            let _e42 = add_sample(_e37, _e39, _e40, index_1, tile_2.frame, per_pass_1);
+            sums = _e42;
+            let _e43 = s_3;
+            s_3 = (_e43 + 1u);
+            let _e46 = s_3;
+            if (_e46 >= count_2) {
                 break;
             }
-            let _e53 = s_3;
-            let _e55 = sample_camera_ray(pixel_5, (first_1 + _e53));
-            path = PathState(_e55, vec3(1f), vec3(0f), true);
+            let _e48 = s_3;
+            let _e50 = sample_camera_ray(pixel_5, (first_1 + _e48));
+            let _e51 = start_path(_e50);
+            path = _e51;
         }
     }
     return;

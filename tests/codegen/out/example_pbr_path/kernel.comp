@@ -1638,6 +1638,10 @@ vec3 through_medium(Ray ray_25, float t_2, vec3 radiance_1) {
     return _e21;
 }
 
+PathState start_path(Ray ray_26) {
+    return PathState(ray_26, vec3(1.0), vec3(0.0), true);
+}
+
 vec3 sample_cosine_hemisphere(vec3 n_8, vec2 u) {
     float r_4 = sqrt(u.x);
     float phi_1 = (6.2831855 * u.y);
@@ -1660,14 +1664,14 @@ void rt_spawn(vec3 dir_5, vec3 weight) {
     }
 }
 
-void path_diffuse_rays(PathDiffuse m_4, Ray ray_26, Hit hit_8) {
+void path_diffuse_rays(PathDiffuse m_4, Ray ray_27, Hit hit_8) {
     vec3 weight_1 = vec3(0.0);
     vec3 ng_1 = (hit_8.front_face ? hit_8.geometric_normal : -(hit_8.geometric_normal));
     vec3 n_15 = faceforward(hit_8.normal, -(ng_1), hit_8.normal);
     vec2 _e12 = rand2_next();
     vec3 _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
-    if ((ray_26.depth >= m_4.roulette_depth)) {
+    if ((ray_27.depth >= m_4.roulette_depth)) {
         float q_4 = clamp(max(m_4.albedo.x, max(m_4.albedo.y, m_4.albedo.z)), 0.0, 1.0);
         float _e28 = rand_next();
         if ((_e28 >= q_4)) {
@@ -1735,11 +1739,11 @@ PbrSample pbr_sample(vec3 base_4, float metallic_3, float roughness_3, vec3 n_9,
     return PbrSample(_e46, weight_5, _e33);
 }
 
-void path_pbr_rays(PathPbr m_5, Ray ray_27, Hit hit_9) {
+void path_pbr_rays(PathPbr m_5, Ray ray_28, Hit hit_9) {
     vec3 weight_2 = vec3(0.0);
-    vec3 _e3 = path_pbr_ng(ray_27, hit_9);
-    vec3 _e4 = path_pbr_n(ray_27, hit_9);
-    vec3 _e6 = normalize_vec3f(ray_27.dir);
+    vec3 _e3 = path_pbr_ng(ray_28, hit_9);
+    vec3 _e4 = path_pbr_n(ray_28, hit_9);
+    vec3 _e6 = normalize_vec3f(ray_28.dir);
     vec3 v_8 = -(_e6);
     float _e11 = rand_next();
     vec2 _e12 = rand2_next();
@@ -1748,7 +1752,7 @@ void path_pbr_rays(PathPbr m_5, Ray ray_27, Hit hit_9) {
         return;
     }
     weight_2 = _e14.weight;
-    if ((ray_27.depth >= m_5.roulette_depth)) {
+    if ((ray_28.depth >= m_5.roulette_depth)) {
         float _e31 = weight_2.x;
         float _e33 = weight_2.y;
         float _e35 = weight_2.z;
@@ -1766,16 +1770,16 @@ void path_pbr_rays(PathPbr m_5, Ray ray_27, Hit hit_9) {
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_28, Hit hit_10) {
+void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_29, Hit hit_10) {
     switch(type_id_6) {
         case 0u: {
             PathDiffuse _e4 = load_PathDiffuse(offset_15);
-            path_diffuse_rays(_e4, ray_28, hit_10);
+            path_diffuse_rays(_e4, ray_29, hit_10);
             return;
         }
         case 3u: {
             PathPbr _e5 = load_PathPbr(offset_15);
-            path_pbr_rays(_e5, ray_28, hit_10);
+            path_pbr_rays(_e5, ray_29, hit_10);
             return;
         }
         default: {
@@ -1809,25 +1813,25 @@ PathState path_step(PathState s_2, Candidate c_5) {
     vec3 dir_8 = vec3(0.0);
     vec3 weight_3 = vec3(0.0);
     vec3 beta = vec3(0.0);
-    Ray ray_29 = s_2.ray;
+    Ray ray_30 = s_2.ray;
     out_ = s_2;
     out_.live = false;
     if ((c_5.slot == NO_HIT)) {
         hit_error = 0.0;
-        vec3 _e14 = miss(ray_29);
+        vec3 _e14 = miss(ray_30);
         out_.radiance = (s_2.radiance + (s_2.beta * _e14));
         PathState _e17 = out_;
         return _e17;
     }
     GpuInstance inst_10 = _group_0_binding_3_cs[c_5.slot];
-    Hit _e22 = finish_hit(ray_29, c_5);
+    Hit _e22 = finish_hit(ray_30, c_5);
     float error_4 = hit_error;
     spawned = false;
     dir_8 = vec3(0.0);
     weight_3 = vec3(0.0);
-    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_29.depth < MAX_DEPTH))) {
+    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_30.depth < MAX_DEPTH))) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_29, _e22);
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_30, _e22);
         uint _e47 = spawn_count;
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
@@ -1837,7 +1841,7 @@ PathState path_step(PathState s_2, Candidate c_5) {
             weight_3 = _e60;
         }
     }
-    vec3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_29, _e22, vec3(0.0));
+    vec3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_30, _e22, vec3(0.0));
     out_.radiance = (s_2.radiance + (s_2.beta * _e68));
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -1854,7 +1858,7 @@ PathState path_step(PathState s_2, Candidate c_5) {
         PathState _e89 = out_;
         return _e89;
     }
-    if ((((ROULETTE_DEPTH > 0u) && ((ray_29.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT))) {
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_30.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT))) {
         float survive = (q_6 / ROULETTE_THROUGHPUT);
         float _e104 = rand_next();
         if ((_e104 >= survive)) {
@@ -1870,7 +1874,7 @@ PathState path_step(PathState s_2, Candidate c_5) {
     vec3 _e114 = spawn_origin(_e22, error_4, _e113);
     vec3 _e116 = dir_8;
     uint _e118 = F32_INF;
-    out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_29.depth + 1u), RAY_SECONDARY, ray_29.medium);
+    out_.ray = Ray(_e114, 0.0, _e116, uintBitsToFloat(_e118), (ray_30.depth + 1u), RAY_SECONDARY, ray_30.medium);
     out_.live = true;
     PathState _e128 = out_;
     return _e128;
@@ -1878,17 +1882,18 @@ PathState path_step(PathState s_2, Candidate c_5) {
 
 vec3 trace_path(Ray camera_ray) {
     PathState s_3 = PathState(Ray(vec3(0.0), 0.0, vec3(0.0), 0.0, 0u, 0u, 0u), vec3(0.0), vec3(0.0), false);
-    s_3 = PathState(camera_ray, vec3(1.0), vec3(0.0), true);
+    PathState _e1 = start_path(camera_ray);
+    s_3 = _e1;
     while(true) {
-        PathState _e8 = s_3;
-        Ray _e10 = s_3.ray;
-        Candidate _e12 = intersect_scene(_e10, false);
-        PathState _e13 = path_step(_e8, _e12);
-        s_3 = _e13;
-        bool _e15 = s_3.live;
-        if (!(_e15)) {
-            vec3 _e18 = s_3.radiance;
-            return _e18;
+        PathState _e3 = s_3;
+        Ray _e5 = s_3.ray;
+        Candidate _e7 = intersect_scene(_e5, false);
+        PathState _e8 = path_step(_e3, _e7);
+        s_3 = _e8;
+        bool _e10 = s_3.live;
+        if (!(_e10)) {
+            vec3 _e13 = s_3.radiance;
+            return _e13;
         }
     }
     return vec3(0.0);

@@ -529,16 +529,16 @@ Ray pinhole_ray(Pinhole cam, uint2 pixel_2, uint sample_2)
     float aspect = (size_1.x / size_1.y);
     const float3 _e48 = normalize_vec3f(((_e24 + (_e27 * (((ndc.x * h) * aspect)).xxx)) - (up * ((ndc.y * h)).xxx)));
     uint _e52 = F32_INF;
-    const Ray ray_29 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
-    return ray_29;
+    const Ray ray_30 = ConstructRay(cam.position, 0.0, _e48, asfloat(_e52), 0u, 0u, 0u);
+    return ray_30;
 }
 
 Ray dispatch_ray_generation(uint type_id, uint offset_1, uint2 pixel_3, uint sample_3)
 {
     const Pinhole _e3 = load_Pinhole(offset_1);
     const Ray _e4 = pinhole_ray(_e3, pixel_3, sample_3);
-    const Ray ray_30 = _e4;
-    return ray_30;
+    const Ray ray_31 = _e4;
+    return ray_31;
 }
 
 Candidate ConstructCandidate(float arg0, uint arg1, uint arg2, float2 arg3, float3 arg4) {
@@ -567,8 +567,8 @@ Ray to_object(GpuInstance inst, Ray ray)
     r.origin = float3(dot(inst.world_to_object_0_, o), dot(inst.world_to_object_1_, o), dot(inst.world_to_object_2_, o));
     r.dir = float3(dot(inst.world_to_object_0_, d_2), dot(inst.world_to_object_1_, d_2), dot(inst.world_to_object_2_, d_2));
     Ray _e25 = r;
-    const Ray ray_31 = _e25;
-    return ray_31;
+    const Ray ray_32 = _e25;
+    return ray_32;
 }
 
 float3 safe_inverse(float3 d)
@@ -1153,8 +1153,8 @@ Ray sample_camera_ray(uint2 pixel_4, uint sample_4)
     const uint _e17 = medium_at(_e15, NO_HIT);
     ray_9.medium = _e17;
     Ray _e18 = ray_9;
-    const Ray ray_32 = _e18;
-    return ray_32;
+    const Ray ray_33 = _e18;
+    return ray_33;
 }
 
 float3 node_frame_hi(GpuNode header)
@@ -1581,8 +1581,8 @@ Ray shadow_ray(float3 position_4, float3 normal_5, float3 dir_2, float dist_1)
         tmax_4 = ((along_2 * (1.0 - 1e-5)) - ((LIGHT_ERROR * max(max(l_7.x, l_7.y), l_7.z)) / sqrt(dd_1)));
     }
     float _e59 = tmax_4;
-    const Ray ray_33 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
-    return ray_33;
+    const Ray ray_34 = ConstructRay(_e23, 0.0, dir_2, _e59, 0u, RAY_SHADOW, 0u);
+    return ray_34;
 }
 
 float shadow_query(float3 position_5, float3 normal_6, float3 dir_3, float dist_2)
@@ -2063,6 +2063,21 @@ float3 through_medium(Ray ray_25, float t_2, float3 radiance_1)
     return _e21;
 }
 
+PathState ConstructPathState(Ray arg0, float3 arg1, float3 arg2, bool arg3) {
+    PathState ret = (PathState)0;
+    ret.ray = arg0;
+    ret.beta = arg1;
+    ret.radiance = arg2;
+    ret.live = arg3;
+    return ret;
+}
+
+PathState start_path(Ray ray_26)
+{
+    const PathState pathstate = ConstructPathState(ray_26, (1.0).xxx, (0.0).xxx, true);
+    return pathstate;
+}
+
 float3 sample_cosine_hemisphere(float3 n_8, float2 u)
 {
     float r_4 = sqrt(u.x);
@@ -2088,7 +2103,7 @@ void rt_spawn(float3 dir_5, float3 weight)
     }
 }
 
-void path_diffuse_rays(PathDiffuse m_4, Ray ray_26, Hit hit_8)
+void path_diffuse_rays(PathDiffuse m_4, Ray ray_27, Hit hit_8)
 {
     float3 weight_1 = (float3)0;
 
@@ -2097,7 +2112,7 @@ void path_diffuse_rays(PathDiffuse m_4, Ray ray_26, Hit hit_8)
     const float2 _e12 = rand2_next();
     const float3 _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
-    if ((ray_26.depth >= m_4.roulette_depth)) {
+    if ((ray_27.depth >= m_4.roulette_depth)) {
         float q_4 = saturate(max(m_4.albedo.x, max(m_4.albedo.y, m_4.albedo.z)));
         const float _e28 = rand_next();
         if ((_e28 >= q_4)) {
@@ -2180,13 +2195,13 @@ PbrSample pbr_sample(float3 base_4, float metallic_3, float roughness_3, float3 
     return pbrsample_2;
 }
 
-void path_pbr_rays(PathPbr m_5, Ray ray_27, Hit hit_9)
+void path_pbr_rays(PathPbr m_5, Ray ray_28, Hit hit_9)
 {
     float3 weight_2 = (float3)0;
 
-    const float3 _e3 = path_pbr_ng(ray_27, hit_9);
-    const float3 _e4 = path_pbr_n(ray_27, hit_9);
-    const float3 _e6 = normalize_vec3f(ray_27.dir);
+    const float3 _e3 = path_pbr_ng(ray_28, hit_9);
+    const float3 _e4 = path_pbr_n(ray_28, hit_9);
+    const float3 _e6 = normalize_vec3f(ray_28.dir);
     float3 v_8 = -(_e6);
     const float _e11 = rand_next();
     const float2 _e12 = rand2_next();
@@ -2195,7 +2210,7 @@ void path_pbr_rays(PathPbr m_5, Ray ray_27, Hit hit_9)
         return;
     }
     weight_2 = _e14.weight;
-    if ((ray_27.depth >= m_5.roulette_depth)) {
+    if ((ray_28.depth >= m_5.roulette_depth)) {
         float _e31 = weight_2.x;
         float _e33 = weight_2.y;
         float _e35 = weight_2.z;
@@ -2213,17 +2228,17 @@ void path_pbr_rays(PathPbr m_5, Ray ray_27, Hit hit_9)
     return;
 }
 
-void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_28, Hit hit_10)
+void dispatch_secondary_rays(uint type_id_6, uint offset_15, Ray ray_29, Hit hit_10)
 {
     switch(type_id_6) {
         case 0u: {
             const PathDiffuse _e4 = load_PathDiffuse(offset_15);
-            path_diffuse_rays(_e4, ray_28, hit_10);
+            path_diffuse_rays(_e4, ray_29, hit_10);
             return;
         }
         case 3u: {
             const PathPbr _e5 = load_PathPbr(offset_15);
-            path_pbr_rays(_e5, ray_28, hit_10);
+            path_pbr_rays(_e5, ray_29, hit_10);
             return;
         }
         default: {
@@ -2262,26 +2277,26 @@ PathState path_step(PathState s_2, Candidate c_5)
     float3 weight_3 = (float3)0;
     float3 beta = (float3)0;
 
-    Ray ray_34 = s_2.ray;
+    Ray ray_35 = s_2.ray;
     out_ = s_2;
     out_.live = false;
     if ((c_5.slot == NO_HIT)) {
         hit_error = 0.0;
-        const float3 _e14 = miss(ray_34);
+        const float3 _e14 = miss(ray_35);
         out_.radiance = (s_2.radiance + (s_2.beta * _e14));
         PathState _e17 = out_;
-        const PathState pathstate = _e17;
-        return pathstate;
+        const PathState pathstate_1 = _e17;
+        return pathstate_1;
     }
     GpuInstance inst_10 = ConstructGpuInstance(asfloat(instances.Load4(c_5.slot*128+0)), asfloat(instances.Load4(c_5.slot*128+16)), asfloat(instances.Load4(c_5.slot*128+32)), asfloat(instances.Load4(c_5.slot*128+48)), asfloat(instances.Load4(c_5.slot*128+64)), asfloat(instances.Load4(c_5.slot*128+80)), asuint(instances.Load(c_5.slot*128+96)), asuint(instances.Load(c_5.slot*128+100)), asuint(instances.Load(c_5.slot*128+104)), asuint(instances.Load(c_5.slot*128+108)), asuint(instances.Load(c_5.slot*128+112)), asuint(instances.Load(c_5.slot*128+116)), asuint(instances.Load(c_5.slot*128+120)), asuint(instances.Load(c_5.slot*128+124)));
-    const Hit _e22 = finish_hit(ray_34, c_5);
+    const Hit _e22 = finish_hit(ray_35, c_5);
     float error_4 = hit_error;
     spawned = false;
     dir_8 = (0.0).xxx;
     weight_3 = (0.0).xxx;
-    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_34.depth < MAX_DEPTH))) {
+    if ((((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_35.depth < MAX_DEPTH))) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_34, _e22);
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_35, _e22);
         uint _e47 = spawn_count;
         if ((min(_e47, 1u) > 0u)) {
             spawned = true;
@@ -2291,13 +2306,13 @@ PathState path_step(PathState s_2, Candidate c_5)
             weight_3 = _e60;
         }
     }
-    const float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_34, _e22, (0.0).xxx);
+    const float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_35, _e22, (0.0).xxx);
     out_.radiance = (s_2.radiance + (s_2.beta * _e68));
     bool _e71 = spawned;
     if (!(_e71)) {
         PathState _e73 = out_;
-        const PathState pathstate_1 = _e73;
-        return pathstate_1;
+        const PathState pathstate_2 = _e73;
+        return pathstate_2;
     }
     float3 _e75 = weight_3;
     beta = (s_2.beta * _e75);
@@ -2307,16 +2322,16 @@ PathState path_step(PathState s_2, Candidate c_5)
     float q_6 = max(_e79, max(_e81, _e83));
     if (!((q_6 > 0.0))) {
         PathState _e89 = out_;
-        const PathState pathstate_2 = _e89;
-        return pathstate_2;
+        const PathState pathstate_3 = _e89;
+        return pathstate_3;
     }
-    if ((((ROULETTE_DEPTH > 0u) && ((ray_34.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT))) {
+    if ((((ROULETTE_DEPTH > 0u) && ((ray_35.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT))) {
         float survive = (q_6 / ROULETTE_THROUGHPUT);
         const float _e104 = rand_next();
         if ((_e104 >= survive)) {
             PathState _e106 = out_;
-            const PathState pathstate_3 = _e106;
-            return pathstate_3;
+            const PathState pathstate_4 = _e106;
+            return pathstate_4;
         }
         float3 _e107 = beta;
         beta = (_e107 / (survive).xxx);
@@ -2327,40 +2342,32 @@ PathState path_step(PathState s_2, Candidate c_5)
     const float3 _e114 = spawn_origin(_e22, error_4, _e113);
     float3 _e116 = dir_8;
     uint _e118 = F32_INF;
-    out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_34.depth + 1u), RAY_SECONDARY, ray_34.medium);
+    out_.ray = ConstructRay(_e114, 0.0, _e116, asfloat(_e118), (ray_35.depth + 1u), RAY_SECONDARY, ray_35.medium);
     out_.live = true;
     PathState _e128 = out_;
-    const PathState pathstate_4 = _e128;
-    return pathstate_4;
-}
-
-PathState ConstructPathState(Ray arg0, float3 arg1, float3 arg2, bool arg3) {
-    PathState ret = (PathState)0;
-    ret.ray = arg0;
-    ret.beta = arg1;
-    ret.radiance = arg2;
-    ret.live = arg3;
-    return ret;
+    const PathState pathstate_5 = _e128;
+    return pathstate_5;
 }
 
 float3 trace_path(Ray camera_ray)
 {
     PathState s_3 = (PathState)0;
 
-    s_3 = ConstructPathState(camera_ray, (1.0).xxx, (0.0).xxx, true);
+    const PathState _e1 = start_path(camera_ray);
+    s_3 = _e1;
     uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        PathState _e8 = s_3;
-        Ray _e10 = s_3.ray;
-        const Candidate _e12 = intersect_scene(_e10, false);
-        const PathState _e13 = path_step(_e8, _e12);
-        s_3 = _e13;
-        bool _e15 = s_3.live;
-        if (!(_e15)) {
-            float3 _e18 = s_3.radiance;
-            return _e18;
+        PathState _e3 = s_3;
+        Ray _e5 = s_3.ray;
+        const Candidate _e7 = intersect_scene(_e5, false);
+        const PathState _e8 = path_step(_e3, _e7);
+        s_3 = _e8;
+        bool _e10 = s_3.live;
+        if (!(_e10)) {
+            float3 _e13 = s_3.radiance;
+            return _e13;
         }
     }
     return ZeroValuefloat3();

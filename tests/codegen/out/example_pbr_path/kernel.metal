@@ -2214,6 +2214,12 @@ metal::float3 through_medium(
     return _e21;
 }
 
+PathState start_path(
+    Ray ray_26
+) {
+    return PathState {ray_26, metal::float3(1.0), metal::float3(0.0), true};
+}
+
 metal::float3 sample_cosine_hemisphere(
     metal::float3 n_8,
     metal::float2 u
@@ -2250,7 +2256,7 @@ void rt_spawn(
 
 void path_diffuse_rays(
     PathDiffuse m_4,
-    Ray ray_26,
+    Ray ray_27,
     Hit hit_8,
     thread type_4& scratch,
     thread uint& rng_state,
@@ -2264,7 +2270,7 @@ void path_diffuse_rays(
     metal::float2 _e12 = rand2_next(scratch, rng_state);
     metal::float3 _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
-    if (ray_26.depth >= m_4.roulette_depth) {
+    if (ray_27.depth >= m_4.roulette_depth) {
         float q_4 = metal::saturate(metal::max(m_4.albedo[0], metal::max(m_4.albedo[1], m_4.albedo[2])));
         float _e28 = rand_next(scratch, rng_state);
         if (_e28 >= q_4) {
@@ -2345,7 +2351,7 @@ PbrSample pbr_sample(
 
 void path_pbr_rays(
     PathPbr m_5,
-    Ray ray_27,
+    Ray ray_28,
     Hit hit_9,
     thread type_4& scratch,
     thread uint& rng_state,
@@ -2354,9 +2360,9 @@ void path_pbr_rays(
     thread uint& spawn_count
 ) {
     metal::float3 weight_2 = {};
-    metal::float3 _e3 = path_pbr_ng(ray_27, hit_9);
-    metal::float3 _e4 = path_pbr_n(ray_27, hit_9);
-    metal::float3 _e6 = normalize_vec3f(ray_27.dir);
+    metal::float3 _e3 = path_pbr_ng(ray_28, hit_9);
+    metal::float3 _e4 = path_pbr_n(ray_28, hit_9);
+    metal::float3 _e6 = normalize_vec3f(ray_28.dir);
     metal::float3 v_8 = -(_e6);
     float _e11 = rand_next(scratch, rng_state);
     metal::float2 _e12 = rand2_next(scratch, rng_state);
@@ -2365,7 +2371,7 @@ void path_pbr_rays(
         return;
     }
     weight_2 = _e14.weight;
-    if (ray_27.depth >= m_5.roulette_depth) {
+    if (ray_28.depth >= m_5.roulette_depth) {
         float _e31 = weight_2.x;
         float _e33 = weight_2.y;
         float _e35 = weight_2.z;
@@ -2386,7 +2392,7 @@ void path_pbr_rays(
 void dispatch_secondary_rays(
     uint type_id_6,
     uint offset_15,
-    Ray ray_28,
+    Ray ray_29,
     Hit hit_10,
     thread type_4& scratch,
     thread uint& rng_state,
@@ -2399,12 +2405,12 @@ void dispatch_secondary_rays(
     switch(type_id_6) {
         case 0u: {
             PathDiffuse _e4 = load_PathDiffuse(offset_15, params, _buffer_sizes);
-            path_diffuse_rays(_e4, ray_28, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
+            path_diffuse_rays(_e4, ray_29, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
             return;
         }
         case 3u: {
             PathPbr _e5 = load_PathPbr(offset_15, params, _buffer_sizes);
-            path_pbr_rays(_e5, ray_28, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
+            path_pbr_rays(_e5, ray_29, hit_10, scratch, rng_state, spawn_dirs, spawn_weights, spawn_count);
             return;
         }
         default: {
@@ -2467,25 +2473,25 @@ PathState path_step(
     metal::float3 dir_8 = {};
     metal::float3 weight_3 = {};
     metal::float3 beta = {};
-    Ray ray_29 = s_2.ray;
+    Ray ray_30 = s_2.ray;
     out = s_2;
     out.live = false;
     if (c_5.slot == NO_HIT) {
         hit_error = 0.0;
-        metal::float3 _e14 = miss(ray_29, frame, params, _buffer_sizes);
+        metal::float3 _e14 = miss(ray_30, frame, params, _buffer_sizes);
         out.radiance = s_2.radiance + (s_2.beta * _e14);
         PathState _e17 = out;
         return _e17;
     }
     GpuInstance inst_10 = instances[c_5.slot];
-    Hit _e22 = finish_hit(ray_29, c_5, instances, triangles, hit_error, attributes, _buffer_sizes);
+    Hit _e22 = finish_hit(ray_30, c_5, instances, triangles, hit_error, attributes, _buffer_sizes);
     float error_4 = hit_error;
     spawned = false;
     dir_8 = metal::float3(0.0);
     weight_3 = metal::float3(0.0);
     if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_2.ray.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_29, _e22, scratch, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_30, _e22, scratch, rng_state, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         uint _e47 = spawn_count;
         if (metal::min(_e47, 1u) > 0u) {
             spawned = true;
@@ -2495,7 +2501,7 @@ PathState path_step(
             weight_3 = _e60;
         }
     }
-    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_29, _e22, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
+    metal::float3 _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_30, _e22, metal::float3(0.0), frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, counters, _buffer_sizes);
     out.radiance = s_2.radiance + (s_2.beta * _e68);
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -2555,20 +2561,21 @@ metal::float3 trace_path(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     PathState s_3 = {};
-    s_3 = PathState {camera_ray, metal::float3(1.0), metal::float3(0.0), true};
+    PathState _e1 = start_path(camera_ray);
+    s_3 = _e1;
     uint2 loop_bound_7 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_7 == uint2(0u))) { break; }
         loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        PathState _e8 = s_3;
-        Ray _e10 = s_3.ray;
-        Candidate _e12 = intersect_scene(_e10, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        PathState _e13 = path_step(_e8, _e12, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
-        s_3 = _e13;
-        bool _e15 = s_3.live;
-        if (!(_e15)) {
-            metal::float3 _e18 = s_3.radiance;
-            return _e18;
+        PathState _e3 = s_3;
+        Ray _e5 = s_3.ray;
+        Candidate _e7 = intersect_scene(_e5, false, frame, params, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        PathState _e8 = path_step(_e3, _e7, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        s_3 = _e8;
+        bool _e10 = s_3.live;
+        if (!(_e10)) {
+            metal::float3 _e13 = s_3.radiance;
+            return _e13;
         }
     }
     return metal::float3 {};

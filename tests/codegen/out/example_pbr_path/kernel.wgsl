@@ -1654,6 +1654,10 @@ fn through_medium(ray_25: Ray, t_2: f32, radiance_1: vec3<f32>) -> vec3<f32> {
     return _e21;
 }
 
+fn start_path(ray_26: Ray) -> PathState {
+    return PathState(ray_26, vec3(1f), vec3(0f), true);
+}
+
 fn sample_cosine_hemisphere(n_8: vec3<f32>, u: vec2<f32>) -> vec3<f32> {
     let r_4 = sqrt(u.x);
     let phi_1 = (6.2831855f * u.y);
@@ -1676,7 +1680,7 @@ fn rt_spawn(dir_5: vec3<f32>, weight: vec3<f32>) {
     }
 }
 
-fn path_diffuse_rays(m_4: PathDiffuse, ray_26: Ray, hit_8: Hit) {
+fn path_diffuse_rays(m_4: PathDiffuse, ray_27: Ray, hit_8: Hit) {
     var weight_1: vec3<f32>;
 
     let ng_1 = select(-(hit_8.geometric_normal), hit_8.geometric_normal, hit_8.front_face);
@@ -1684,7 +1688,7 @@ fn path_diffuse_rays(m_4: PathDiffuse, ray_26: Ray, hit_8: Hit) {
     let _e12 = rand2_next();
     let _e13 = sample_cosine_hemisphere(n_15, _e12);
     weight_1 = m_4.albedo;
-    if (ray_26.depth >= m_4.roulette_depth) {
+    if (ray_27.depth >= m_4.roulette_depth) {
         let q_4 = saturate(max(m_4.albedo.x, max(m_4.albedo.y, m_4.albedo.z)));
         let _e28 = rand_next();
         if (_e28 >= q_4) {
@@ -1754,12 +1758,12 @@ fn pbr_sample(base_4: vec3<f32>, metallic_3: f32, roughness_3: f32, n_9: vec3<f3
     return PbrSample(_e46, weight_5, _e33);
 }
 
-fn path_pbr_rays(m_5: PathPbr, ray_27: Ray, hit_9: Hit) {
+fn path_pbr_rays(m_5: PathPbr, ray_28: Ray, hit_9: Hit) {
     var weight_2: vec3<f32>;
 
-    let _e3 = path_pbr_ng(ray_27, hit_9);
-    let _e4 = path_pbr_n(ray_27, hit_9);
-    let _e6 = normalize_vec3f(ray_27.dir);
+    let _e3 = path_pbr_ng(ray_28, hit_9);
+    let _e4 = path_pbr_n(ray_28, hit_9);
+    let _e6 = normalize_vec3f(ray_28.dir);
     let v_8 = -(_e6);
     let _e11 = rand_next();
     let _e12 = rand2_next();
@@ -1768,7 +1772,7 @@ fn path_pbr_rays(m_5: PathPbr, ray_27: Ray, hit_9: Hit) {
         return;
     }
     weight_2 = _e14.weight;
-    if (ray_27.depth >= m_5.roulette_depth) {
+    if (ray_28.depth >= m_5.roulette_depth) {
         let _e31 = weight_2.x;
         let _e33 = weight_2.y;
         let _e35 = weight_2.z;
@@ -1786,16 +1790,16 @@ fn path_pbr_rays(m_5: PathPbr, ray_27: Ray, hit_9: Hit) {
     return;
 }
 
-fn dispatch_secondary_rays(type_id_6: u32, offset_15: u32, ray_28: Ray, hit_10: Hit) {
+fn dispatch_secondary_rays(type_id_6: u32, offset_15: u32, ray_29: Ray, hit_10: Hit) {
     switch type_id_6 {
         case 0u: {
             let _e4 = load_PathDiffuse(offset_15);
-            path_diffuse_rays(_e4, ray_28, hit_10);
+            path_diffuse_rays(_e4, ray_29, hit_10);
             return;
         }
         case 3u: {
             let _e5 = load_PathPbr(offset_15);
-            path_pbr_rays(_e5, ray_28, hit_10);
+            path_pbr_rays(_e5, ray_29, hit_10);
             return;
         }
         default: {
@@ -1830,25 +1834,25 @@ fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
     var weight_3: vec3<f32>;
     var beta: vec3<f32>;
 
-    let ray_29 = s_2.ray;
+    let ray_30 = s_2.ray;
     out = s_2;
     out.live = false;
     if (c_5.slot == NO_HIT) {
         hit_error = 0f;
-        let _e14 = miss(ray_29);
+        let _e14 = miss(ray_30);
         out.radiance = (s_2.radiance + (s_2.beta * _e14));
         let _e17 = out;
         return _e17;
     }
     let inst_10 = instances[c_5.slot];
-    let _e22 = finish_hit(ray_29, c_5);
+    let _e22 = finish_hit(ray_30, c_5);
     let error_4 = hit_error;
     spawned = false;
     dir_8 = vec3(0f);
     weight_3 = vec3(0f);
-    if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_29.depth < MAX_DEPTH)) {
+    if (((inst_10.flags & FLAG_SECONDARY_RAYS) != 0u) && (ray_30.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_29, _e22);
+        dispatch_secondary_rays(inst_10.material_type, inst_10.material_offset, ray_30, _e22);
         let _e47 = spawn_count;
         if (min(_e47, 1u) > 0u) {
             spawned = true;
@@ -1858,7 +1862,7 @@ fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
             weight_3 = _e60;
         }
     }
-    let _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_29, _e22, vec3(0f));
+    let _e68 = dispatch_closest_hit(inst_10.material_type, inst_10.material_offset, ray_30, _e22, vec3(0f));
     out.radiance = (s_2.radiance + (s_2.beta * _e68));
     let _e71 = spawned;
     if !(_e71) {
@@ -1875,7 +1879,7 @@ fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
         let _e89 = out;
         return _e89;
     }
-    if (((ROULETTE_DEPTH > 0u) && ((ray_29.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT)) {
+    if (((ROULETTE_DEPTH > 0u) && ((ray_30.depth + 1u) >= ROULETTE_DEPTH)) && (q_6 < ROULETTE_THROUGHPUT)) {
         let survive = (q_6 / ROULETTE_THROUGHPUT);
         let _e104 = rand_next();
         if (_e104 >= survive) {
@@ -1891,7 +1895,7 @@ fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
     let _e114 = spawn_origin(_e22, error_4, _e113);
     let _e116 = dir_8;
     let _e118 = F32_INF;
-    out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_29.depth + 1u), RAY_SECONDARY, ray_29.medium);
+    out.ray = Ray(_e114, 0f, _e116, bitcast<f32>(_e118), (ray_30.depth + 1u), RAY_SECONDARY, ray_30.medium);
     out.live = true;
     let _e128 = out;
     return _e128;
@@ -1900,17 +1904,18 @@ fn path_step(s_2: PathState, c_5: Candidate) -> PathState {
 fn trace_path(camera_ray: Ray) -> vec3<f32> {
     var s_3: PathState;
 
-    s_3 = PathState(camera_ray, vec3(1f), vec3(0f), true);
+    let _e1 = start_path(camera_ray);
+    s_3 = _e1;
     loop {
-        let _e8 = s_3;
-        let _e10 = s_3.ray;
-        let _e12 = intersect_scene(_e10, false);
-        let _e13 = path_step(_e8, _e12);
-        s_3 = _e13;
-        let _e15 = s_3.live;
-        if !(_e15) {
-            let _e18 = s_3.radiance;
-            return _e18;
+        let _e3 = s_3;
+        let _e5 = s_3.ray;
+        let _e7 = intersect_scene(_e5, false);
+        let _e8 = path_step(_e3, _e7);
+        s_3 = _e8;
+        let _e10 = s_3.live;
+        if !(_e10) {
+            let _e13 = s_3.radiance;
+            return _e13;
         }
     }
     return vec3<f32>();

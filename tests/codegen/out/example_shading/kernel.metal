@@ -1044,6 +1044,12 @@ Ray sample_camera_ray(
     return _e18;
 }
 
+PathState start_path(
+    Ray ray_8
+) {
+    return PathState {ray_8, metal::float3(1.0), metal::float3(0.0), true};
+}
+
 metal::float3 node_frame_hi(
     GpuNode header
 ) {
@@ -1052,7 +1058,7 @@ metal::float3 node_frame_hi(
 }
 
 Candidate intersect_scene(
-    Ray ray_8,
+    Ray ray_9,
     bool shadow_2,
     constant FrameUniforms& frame,
     thread uint& F32_INF,
@@ -1070,21 +1076,21 @@ Candidate intersect_scene(
     uint far_1 = {};
     uint _e3 = ray_count;
     ray_count = _e3 + 1u;
-    Candidate _e7 = no_candidate(ray_8.tmax);
+    Candidate _e7 = no_candidate(ray_9.tmax);
     best_2 = _e7;
     FrameUniforms frame_3 = frame;
     if (frame_3.instance_count == 0u) {
         Candidate _e14 = best_2;
         return _e14;
     }
-    metal::float3 _e16 = safe_inverse(ray_8.dir);
+    metal::float3 _e16 = safe_inverse(ray_9.dir);
     uint base_2 = frame_3.tlas_root;
     GpuNode header_2 = nodes[base_2];
     metal::float3 origin_5 = header_2.min;
     metal::float3 scale_3 = header_2.max;
     metal::float3 _e23 = node_frame_hi(header_2);
     float _e27 = best_2.t;
-    float _e28 = slab(origin_5, _e23, ray_8.origin, _e16, ray_8.tmin, _e27, F32_INF);
+    float _e28 = slab(origin_5, _e23, ray_9.origin, _e16, ray_9.tmin, _e27, F32_INF);
     uint _e30 = F32_INF;
     if (_e28 == as_type<float>(_e30)) {
         Candidate _e33 = best_2;
@@ -1102,7 +1108,7 @@ Candidate intersect_scene(
             if (((_e43 >> (NODE_COUNT_SHIFT & 31u)) & NODE_COUNT_MASK) != 0u) {
                 uint _e52 = child_1;
                 Candidate _e55 = best_2;
-                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_8, _e55, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
+                Candidate _e56 = intersect_object(_e52 & NODE_FIRST_MASK, ray_9, _e55, shadow_2, F32_INF, instances, nodes, triangles, traversal_stack, _buffer_sizes);
                 best_2 = _e56;
                 uint _e58 = best_2.slot;
                 if (shadow_2 && (_e58 != NO_HIT)) {
@@ -1114,7 +1120,7 @@ Candidate intersect_scene(
             uint _e63 = child_1;
             GpuNode n_8 = nodes[base_2 + _e63];
             float _e69 = best_2.t;
-            metal::float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_8, _e16, _e69, F32_INF);
+            metal::float2 _e70 = children_entry(n_8, origin_5, scale_3, ray_9, _e16, _e69, F32_INF);
             float tl_1 = _e70.x;
             float tr_1 = _e70.y;
             uint _e74 = F32_INF;
@@ -1180,9 +1186,9 @@ SkyGradient load_SkyGradient(
 
 metal::float3 sky_gradient(
     SkyGradient b_4,
-    Ray ray_9
+    Ray ray_10
 ) {
-    metal::float3 _e3 = normalize_vec3f(ray_9.dir);
+    metal::float3 _e3 = normalize_vec3f(ray_10.dir);
     float y = _e3.y;
     if (y < 0.0) {
         return metal::mix(b_4.horizon, b_4.ground, metal::float3(metal::min(-(y) * 4.0, 1.0)));
@@ -1193,17 +1199,17 @@ metal::float3 sky_gradient(
 metal::float3 dispatch_miss(
     uint type_id_1,
     uint offset_3,
-    Ray ray_10,
+    Ray ray_11,
     device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     SkyGradient _e2 = load_SkyGradient(offset_3, params, _buffer_sizes);
-    metal::float3 _e3 = sky_gradient(_e2, ray_10);
+    metal::float3 _e3 = sky_gradient(_e2, ray_11);
     return _e3;
 }
 
 metal::float3 miss(
-    Ray ray_11,
+    Ray ray_12,
     constant FrameUniforms& frame,
     device type_6 const& params,
     constant _mslBufferSizes& _buffer_sizes
@@ -1212,7 +1218,7 @@ metal::float3 miss(
         return metal::float3(0.0);
     }
     FrameUniforms frame_4 = frame;
-    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_11, params, _buffer_sizes);
+    metal::float3 _e9 = dispatch_miss(frame_4.background_type, frame_4.background_offset, ray_12, params, _buffer_sizes);
     return _e9;
 }
 
@@ -1244,13 +1250,13 @@ void rt_spawn(
 
 void mirror_rays(
     Mirror m,
-    Ray ray_12,
+    Ray ray_13,
     Hit hit_1,
     thread type_16& spawn_dirs,
     thread type_16& spawn_weights,
     thread uint& spawn_count
 ) {
-    metal::float3 _e4 = normalize_vec3f(ray_12.dir);
+    metal::float3 _e4 = normalize_vec3f(ray_13.dir);
     rt_spawn(metal::reflect(_e4, hit_1.normal), m.tint, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
@@ -1258,7 +1264,7 @@ void mirror_rays(
 void dispatch_secondary_rays(
     uint type_id_2,
     uint offset_5,
-    Ray ray_13,
+    Ray ray_14,
     Hit hit_2,
     device type_6 const& params,
     thread type_16& spawn_dirs,
@@ -1267,7 +1273,7 @@ void dispatch_secondary_rays(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Mirror _e3 = load_Mirror(offset_5, params, _buffer_sizes);
-    mirror_rays(_e3, ray_13, hit_2, spawn_dirs, spawn_weights, spawn_count);
+    mirror_rays(_e3, ray_14, hit_2, spawn_dirs, spawn_weights, spawn_count);
     return;
 }
 
@@ -1293,10 +1299,10 @@ BlinnPhong load_BlinnPhong(
 }
 
 metal::float3 shading_normal(
-    Ray ray_14,
+    Ray ray_15,
     Hit hit_3
 ) {
-    metal::float3 ng = metal::faceforward(hit_3.geometric_normal, ray_14.dir, hit_3.geometric_normal);
+    metal::float3 ng = metal::faceforward(hit_3.geometric_normal, ray_15.dir, hit_3.geometric_normal);
     return metal::faceforward(hit_3.normal, -(ng), hit_3.normal);
 }
 
@@ -1616,7 +1622,7 @@ LightSample sample_light_query(
 
 metal::float3 blinn_phong_shade(
     BlinnPhong m_1,
-    Ray ray_15,
+    Ray ray_16,
     Hit hit_4,
     constant FrameUniforms& frame,
     thread type_5& scratch,
@@ -1633,8 +1639,8 @@ metal::float3 blinn_phong_shade(
 ) {
     metal::float3 color = {};
     uint i_3 = {};
-    metal::float3 _e3 = shading_normal(ray_15, hit_4);
-    metal::float3 _e5 = normalize_vec3f(ray_15.dir);
+    metal::float3 _e3 = shading_normal(ray_16, hit_4);
+    metal::float3 _e5 = normalize_vec3f(ray_16.dir);
     metal::float3 v_3 = -(_e5);
     metal::float4 _e12 = sample_texture(m_1.texture, hit_4.uv * m_1.uv_scale, params, texels, _buffer_sizes);
     metal::float3 kd = m_1.diffuse * _e12.xyz;
@@ -1682,7 +1688,7 @@ Lambert load_Lambert(
 
 metal::float3 lambert_shade(
     Lambert m_2,
-    Ray ray_16,
+    Ray ray_17,
     Hit hit_5,
     constant FrameUniforms& frame,
     thread type_5& scratch,
@@ -1698,7 +1704,7 @@ metal::float3 lambert_shade(
 ) {
     metal::float3 color_1 = {};
     uint i_4 = {};
-    metal::float3 _e3 = shading_normal(ray_16, hit_5);
+    metal::float3 _e3 = shading_normal(ray_17, hit_5);
     color_1 = metal::float3(0.0);
     uint _e8 = light_count_query(frame);
     i_4 = 0u;
@@ -1727,7 +1733,7 @@ metal::float3 lambert_shade(
 
 metal::float3 mirror_shade(
     Mirror m_3,
-    Ray ray_17,
+    Ray ray_18,
     Hit hit_6,
     metal::float3 secondary
 ) {
@@ -1751,7 +1757,7 @@ UnlitTexture load_UnlitTexture(
 
 metal::float3 unlit_texture_shade(
     UnlitTexture m_4,
-    Ray ray_18,
+    Ray ray_19,
     Hit hit_7,
     device type_6 const& params,
     device type_6 const& texels,
@@ -1770,7 +1776,7 @@ metal::float3 unlit_texture_shade(
 metal::float3 dispatch_closest_hit(
     uint type_id_4,
     uint offset_11,
-    Ray ray_19,
+    Ray ray_20,
     Hit hit_8,
     metal::float3 secondary_1,
     constant FrameUniforms& frame,
@@ -1789,22 +1795,22 @@ metal::float3 dispatch_closest_hit(
     switch(type_id_4) {
         case 0u: {
             BlinnPhong _e5 = load_BlinnPhong(offset_11, params, _buffer_sizes);
-            metal::float3 _e6 = blinn_phong_shade(_e5, ray_19, hit_8, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
+            metal::float3 _e6 = blinn_phong_shade(_e5, ray_20, hit_8, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
             return _e6;
         }
         case 1u: {
             Lambert _e7 = load_Lambert(offset_11, params, _buffer_sizes);
-            metal::float3 _e8 = lambert_shade(_e7, ray_19, hit_8, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
+            metal::float3 _e8 = lambert_shade(_e7, ray_20, hit_8, frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, _buffer_sizes);
             return _e8;
         }
         case 2u: {
             Mirror _e9 = load_Mirror(offset_11, params, _buffer_sizes);
-            metal::float3 _e10 = mirror_shade(_e9, ray_19, hit_8, secondary_1);
+            metal::float3 _e10 = mirror_shade(_e9, ray_20, hit_8, secondary_1);
             return _e10;
         }
         case 3u: {
             UnlitTexture _e11 = load_UnlitTexture(offset_11, params, _buffer_sizes);
-            metal::float3 _e12 = unlit_texture_shade(_e11, ray_19, hit_8, params, texels, _buffer_sizes);
+            metal::float3 _e12 = unlit_texture_shade(_e11, ray_20, hit_8, params, texels, _buffer_sizes);
             return _e12;
         }
         default: {
@@ -1867,25 +1873,25 @@ PathState path_step(
     metal::float3 dir_6 = {};
     metal::float3 weight_1 = {};
     metal::float3 beta = {};
-    Ray ray_20 = s_1.ray;
+    Ray ray_21 = s_1.ray;
     out = s_1;
     out.live = false;
     if (c_3.slot == NO_HIT) {
         hit_error = 0.0;
-        metal::float3 _e14 = miss(ray_20, frame, params, _buffer_sizes);
+        metal::float3 _e14 = miss(ray_21, frame, params, _buffer_sizes);
         out.radiance = s_1.radiance + (s_1.beta * _e14);
         PathState _e17 = out;
         return _e17;
     }
     GpuInstance inst_8 = instances[c_3.slot];
-    Hit _e22 = finish_hit(ray_20, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
+    Hit _e22 = finish_hit(ray_21, c_3, instances, triangles, hit_error, attributes, _buffer_sizes);
     float error_4 = hit_error;
     spawned = false;
     dir_6 = metal::float3(0.0);
     weight_1 = metal::float3(0.0);
     if (((inst_8.flags & FLAG_SECONDARY_RAYS) != 0u) && (s_1.ray.depth < MAX_DEPTH)) {
         spawn_count = 0u;
-        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_20, _e22, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
+        dispatch_secondary_rays(inst_8.material_type, inst_8.material_offset, ray_21, _e22, params, spawn_dirs, spawn_weights, spawn_count, _buffer_sizes);
         uint _e47 = spawn_count;
         if (metal::min(_e47, 1u) > 0u) {
             spawned = true;
@@ -1895,7 +1901,7 @@ PathState path_step(
             weight_1 = _e60;
         }
     }
-    metal::float3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_20, _e22, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
+    metal::float3 _e68 = dispatch_closest_hit(inst_8.material_type, inst_8.material_offset, ray_21, _e22, metal::float3(0.0), frame, scratch, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, ray_count, texels, _buffer_sizes);
     out.radiance = s_1.radiance + (s_1.beta * _e68);
     bool _e71 = spawned;
     if (!(_e71)) {
@@ -2032,32 +2038,34 @@ void render_pixel(
     sums = PassSum {metal::float3(0.0), 0u};
     s_3 = 0u;
     Ray _e25 = sample_camera_ray(pixel_5, first_1, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-    path = PathState {_e25, metal::float3(1.0), metal::float3(0.0), true};
+    PathState _e26 = start_path(_e25);
+    path = _e26;
     uint2 loop_bound_6 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_6 == uint2(0u))) { break; }
         loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
-        PathState _e33 = path;
-        Ray _e35 = path.ray;
-        Candidate _e37 = intersect_scene(_e35, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
-        PathState _e38 = path_step(_e33, _e37, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, texels, _buffer_sizes);
-        path = _e38;
-        bool _e40 = path.live;
-        if (!(_e40)) {
-            PassSum _e42 = sums;
-            metal::float3 _e44 = path.radiance;
-            uint _e45 = s_3;
-            PassSum _e47 = add_sample(_e42, _e44, _e45, index_2, tile_2.frame, per_pass_1, ray_count, counters, accum, _buffer_sizes);
-            sums = _e47;
-            uint _e48 = s_3;
-            s_3 = _e48 + 1u;
-            uint _e51 = s_3;
-            if (_e51 >= count_2) {
+        PathState _e28 = path;
+        Ray _e30 = path.ray;
+        Candidate _e32 = intersect_scene(_e30, false, frame, F32_INF, instances, nodes, triangles, traversal_stack, ray_count, _buffer_sizes);
+        PathState _e33 = path_step(_e28, _e32, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, spawn_dirs, spawn_weights, spawn_count, texels, _buffer_sizes);
+        path = _e33;
+        bool _e35 = path.live;
+        if (!(_e35)) {
+            PassSum _e37 = sums;
+            metal::float3 _e39 = path.radiance;
+            uint _e40 = s_3;
+            PassSum _e42 = add_sample(_e37, _e39, _e40, index_2, tile_2.frame, per_pass_1, ray_count, counters, accum, _buffer_sizes);
+            sums = _e42;
+            uint _e43 = s_3;
+            s_3 = _e43 + 1u;
+            uint _e46 = s_3;
+            if (_e46 >= count_2) {
                 break;
             }
-            uint _e53 = s_3;
-            Ray _e55 = sample_camera_ray(pixel_5, first_1 + _e53, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
-            path = PathState {_e55, metal::float3(1.0), metal::float3(0.0), true};
+            uint _e48 = s_3;
+            Ray _e50 = sample_camera_ray(pixel_5, first_1 + _e48, tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, _buffer_sizes);
+            PathState _e51 = start_path(_e50);
+            path = _e51;
         }
     }
     return;
