@@ -464,4 +464,35 @@ mod tests {
         );
         assert_eq!(jit(&["check", "s.rt"]), Some(CpuJit::Optimized));
     }
+
+    #[test]
+    fn only_still_renders_with_size_and_samples_know_their_samples_before_the_compile() {
+        let known = |args: &[&str]| {
+            Cli::try_parse_from(std::iter::once("rtc").chain(args.iter().copied()))
+                .expect("the arguments parse")
+                .command
+                .known_samples()
+        };
+        let render = ["render", "s.rt", "-o", "s.png"];
+        let long = ["--size", "4096x4096", "--spp", "2"];
+        assert_eq!(
+            known(&[&render[..], &long[..]].concat()),
+            Some(rtc_runtime::gpu::WIDE_MIN_SAMPLES)
+        );
+        assert_eq!(
+            known(&[&render[..], &long[..], &["--cpu-jit", "optimized"]].concat()),
+            Some(1 << 25)
+        );
+        // The scene's own size or samples, an animation and other commands: not known here.
+        assert_eq!(
+            known(&[&render[..], &["--size", "4096x4096"]].concat()),
+            None
+        );
+        assert_eq!(
+            known(&[&render[..], &long[..], &["--frames", "0..2"]].concat()),
+            None
+        );
+        assert_eq!(known(&[&["view", "s.rt"][..], &long[..]].concat()), None);
+        assert_eq!(known(&["bench", "s.rt"]), None);
+    }
 }

@@ -39,7 +39,7 @@ fn main() -> ExitCode {
     // Before any other thread or GPU instance exists: lavapipe reads these when it loads. A
     // render whose JIT depends on its compiled scene applies them itself, before its GPU work.
     if let Some(jit) = cli.command.cpu_jit().filter(|_| cli.command.uses_gpu()) {
-        rtc_runtime::gpu::apply_lavapipe_defaults(jit);
+        rtc_runtime::gpu::apply_lavapipe_defaults(jit, cli.command.known_samples());
     }
     run_guarded(cli).into()
 }

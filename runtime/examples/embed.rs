@@ -798,9 +798,10 @@ fn run_windowed(args: Args) -> Result<(), String> {
 
 fn main() -> std::process::ExitCode {
     // What `rtc` does first: 128-bit batches on lavapipe before Mesa 26 (half the compile time
-    // there) and on CPUs without AVX-512, unless LP_NATIVE_VECTOR_WIDTH is set; optimised kernels, since the example renders
+    // there) and on CPUs without AVX-512, unless LP_NATIVE_VECTOR_WIDTH is set (the samples to
+    // come are not known: a session of frames); optimised kernels, since the example renders
     // frame after frame. Before any thread or wgpu instance exists.
-    rtc_runtime::gpu::apply_lavapipe_defaults(rtc_runtime::gpu::CpuJit::Optimized);
+    rtc_runtime::gpu::apply_lavapipe_defaults(rtc_runtime::gpu::CpuJit::Optimized, None);
     let result = parse_args().and_then(|args| {
         if args.headless {
             run_headless(&args)

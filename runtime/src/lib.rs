@@ -24,7 +24,8 @@
 //! ([`render::Renderer::resolve_into`]); rtc creates no window, instance or second device.
 //! `examples/embed.rs` does this every frame in a winit window. On lavapipe before Mesa 26 (and
 //! on CPUs without AVX-512) a host may call [`gpu::apply_lavapipe_defaults`] first thing in
-//! `main`, as `rtc` does, to halve the driver's compile of every kernel (it sets `LP_NATIVE_VECTOR_WIDTH=128` unless that is set; with
+//! `main`, as `rtc` does, to halve the driver's compile of every kernel (it sets `LP_NATIVE_VECTOR_WIDTH=128` unless that is set,
+//! or, on a CPU without AVX-512, unless the samples it is given make a long render; with
 //! [`gpu::CpuJit::Quick`] it also turns LLVM's optimisation off, for work too small to repay it).
 //!
 //! ```

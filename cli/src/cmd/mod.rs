@@ -82,6 +82,16 @@ impl Command {
             Command::View(args) => args.render.adapter.cpu_jit.resolve(None),
         })
     }
+
+    /// The samples this command renders when known before its compile (a still `render` whose
+    /// `--size` and `--spp` are both given), for lavapipe's SIMD width
+    /// ([`rtc_runtime::gpu::WIDE_MIN_SAMPLES`]); `None` for everything else.
+    pub fn known_samples(&self) -> Option<u64> {
+        match self {
+            Command::Render(args) => args.still_samples(),
+            _ => None,
+        }
+    }
 }
 
 /// What every subcommand gets besides its own arguments.

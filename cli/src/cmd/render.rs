@@ -299,11 +299,16 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
 
     if args.jit_after_compile() {
         // Nothing has touched a GPU yet, and the compile's threads are done.
-        rtc_runtime::gpu::apply_lavapipe_defaults(rtc_runtime::gpu::CpuJit::for_render(
-            render_samples(args, &compiled),
-            compiled.exec == ExecModel::Wavefront,
-            compiled.linked.config.has_secondary_rays,
-        ));
+        let samples = render_samples(args, &compiled);
+        rtc_runtime::gpu::apply_lavapipe_defaults(
+            rtc_runtime::gpu::CpuJit::for_render(
+                samples,
+                compiled.exec == ExecModel::Wavefront,
+                compiled.linked.config.has_secondary_rays,
+            ),
+            // `u64::MAX`: not known (no scene description), so not counted as long work.
+            Some(samples).filter(|&n| n != u64::MAX),
+        );
     }
     let gpu = match early_gpu.map_or_else(|| Gpu::new(&choice), Ok) {
         Ok(gpu) => gpu,

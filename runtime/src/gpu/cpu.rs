@@ -18,8 +18,9 @@
 //!   compile of every kernel and leaves images byte-identical and frames about as fast. Mesa 26
 //!   compiles storage loads to LLVM gathers, which LLVM emits as gather instructions with AVX-512
 //!   and, on CPUs it does not count as fast at gathering (AMD Zen 3), as one tested branch and load
-//!   per lane: there 128 bits make the compile shorter and most frames faster too, while with
-//!   AVX-512 they would make frames slower, so that case is left alone.
+//!   per lane: there 128 bits make the compile shorter, while with AVX-512 they would make frames
+//!   slower, so that case is left alone. On a CPU without AVX-512 wider batches run most frames
+//!   faster, so a render known to be long ([`WIDE_MIN_SAMPLES`]) keeps Mesa's own width there.
 //! - The quick JIT ([`CpuJit::Quick`], `GALLIVM_PERF=nopt`: LLVM's optimisation passes off) when
 //!   the caller asks for it, which `rtc` does for renders too small for optimised code to repay its
 //!   compile (a preview, a first pixel). Images stay byte-identical; kernels compile in a third to
@@ -162,7 +163,9 @@ static APPLIED: OnceLock<Vec<&'static str>> = OnceLock::new();
 /// variable (an empty value counts as set: `LP_NATIVE_VECTOR_WIDTH=` keeps Mesa's own choice):
 /// - [`VECTOR_WIDTH_VAR`]` = `[`NARROW_WIDTH`] when the machine's Vulkan CPU adapter is lavapipe
 ///   from a Mesa release before [`NARROW_BEFORE_MESA`], or from a later one on an x86-64 CPU
-///   without AVX-512 ([`lavapipe_loads_per_lane`]);
+///   without AVX-512 ([`lavapipe_loads_per_lane`]); on a CPU without AVX-512 only for work of
+///   unknown size or below [`WIDE_MIN_SAMPLES`] (`samples`: what the process will render, when
+///   known);
 /// - [`JIT_VAR`]` = `[`QUICK_JIT`] when `jit` is [`CpuJit::Quick`] and the machine has a Vulkan
 ///   lavapipe adapter;
 /// - [`CACHE_DIR_VAR`] to [`width_cache_dir`]'s directory for the width when [`VECTOR_WIDTH_VAR`]
@@ -179,7 +182,7 @@ static APPLIED: OnceLock<Vec<&'static str>> = OnceLock::new();
 /// while another thread reads it is undefined behaviour in most C libraries. Later calls change
 /// nothing. Drivers other than llvmpipe ignore both variables.
 #[cfg(not(target_arch = "wasm32"))]
-pub fn apply_lavapipe_defaults(jit: CpuJit) -> &'static [&'static str] {
+pub fn apply_lavapipe_defaults(jit: CpuJit, samples: Option<u64>) -> &'static [&'static str] {
     APPLIED.get_or_init(|| {
         let quick = jit == CpuJit::Quick && std::env::var_os(JIT_VAR).is_none();
         if quick {
@@ -192,7 +195,10 @@ pub fn apply_lavapipe_defaults(jit: CpuJit) -> &'static [&'static str] {
         } else if quick {
             std::env::remove_var(JIT_VAR);
         }
-        let narrow = info.as_deref().is_some_and(lavapipe_loads_per_lane);
+        let avx512 = lavapipe_has_avx512(|name| std::env::var_os(name));
+        let narrow = info
+            .as_deref()
+            .is_some_and(|info| narrow_width(info, avx512, samples));
         if std::env::var_os(VECTOR_WIDTH_VAR).is_none() && narrow {
             std::env::set_var(VECTOR_WIDTH_VAR, NARROW_WIDTH);
             set.push(VECTOR_WIDTH_VAR);
@@ -288,6 +294,31 @@ pub fn lavapipe_loads_per_lane(driver_info: &str) -> bool {
 /// per-lane too; not measured there. A string without a Mesa version is not lavapipe's.
 fn loads_per_lane(driver_info: &str, avx512: bool) -> bool {
     mesa_major(driver_info).is_some_and(|major| major < NARROW_BEFORE_MESA || !avx512)
+}
+
+/// The fewest samples (pixels times samples per pixel) of a render for which rtc leaves lavapipe
+/// its own SIMD width on a CPU without AVX-512 (see `narrow_width`): 2^25 (33.5 M), e.g. 1920x1080
+/// at 17 spp or 4096x4096 at 2. There (AMD Zen 3) 256-bit batches run most frames faster than
+/// 128-bit ones but compile every kernel 1.3 to 2.0 times longer (optimised JIT, cold), so they pay
+/// only for long work: 256 / 128-bit frame on Mesa 25.0.7 0.80 (cameras) to 1.05 (shading), on
+/// Mesa 26.1.6 0.67 (lights) to 1.05 (cornell_path); the compile repaid after 7 M (cornell_path) to
+/// 31 M samples (thesis_scene) for six of nine examples on Mesa 25 (gltf_scene 168 M, pbr_path
+/// 145 M, shading never), and after 1.7 M (hello) to 10 M (gltf_scene) for five of nine on Mesa 26
+/// (not for cornell_path, pbr_path and shading, whose frames are 1 to 5 % slower at 256 bits, nor
+/// for the thesis scene's 1 to 6 %). The thesis scene at 17 spp, cold, Mesa 25: 21.9 s at 256 bits
+/// against 22.8 s at 128. So one still render of any example's own size, a preview and the first
+/// pixel keep 128 bits. Measured on 2026-12-07:
+/// docs/bench/lavapipe.md, "The SIMD width by the size of the render (2026-12-07, later)".
+pub const WIDE_MIN_SAMPLES: u64 = 1 << 25;
+
+/// Whether [`apply_lavapipe_defaults`] gives lavapipe with this `driver_info` 128-bit batches for a
+/// render of `samples` samples (`None`: unknown, or a session of frames not counted ahead, such as
+/// `rtc view`): wherever its loads are per-lane code (`loads_per_lane`), except on a CPU without
+/// AVX-512 for a render of at least [`WIDE_MIN_SAMPLES`]. With AVX-512 (Mesa 25) 256 bits do not
+/// run frames faster (0.70 to 1.14 of the 128-bit frame, docs/bench/lavapipe.md), so every render
+/// keeps 128 there.
+fn narrow_width(driver_info: &str, avx512: bool, samples: Option<u64>) -> bool {
+    loads_per_lane(driver_info, avx512) && (avx512 || samples.is_none_or(|n| n < WIDE_MIN_SAMPLES))
 }
 
 /// Whether llvmpipe may compile for AVX-512 in an environment read through `var`: the CPU has
@@ -524,6 +555,31 @@ mod tests {
         assert!(!loads_per_lane("Mesa 27.0.0-devel", true));
         assert!(loads_per_lane("Mesa 26.1.6-1~bpo13+1 (LLVM 19.1.7)", false));
         assert!(loads_per_lane("Mesa 27.0.0-devel", false));
+    }
+
+    #[test]
+    fn long_renders_keep_mesas_width_only_without_avx512() {
+        let mesa_25 = "Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)";
+        let mesa_26 = "Mesa 26.1.6-1~bpo13+1 (LLVM 19.1.7)";
+        let long = Some(WIDE_MIN_SAMPLES);
+        let short = Some(WIDE_MIN_SAMPLES - 1);
+        for samples in [None, short, long] {
+            // With AVX-512: Mesa 25 always narrow, Mesa 26 never.
+            assert!(narrow_width(mesa_25, true, samples));
+            assert!(!narrow_width(mesa_26, true, samples));
+            // Not lavapipe: nothing.
+            assert!(!narrow_width("535.104.05", false, samples));
+        }
+        // Without AVX-512: narrow unless the render is known to be long.
+        for info in [mesa_25, mesa_26] {
+            assert!(narrow_width(info, false, None));
+            assert!(narrow_width(info, false, short));
+            assert!(!narrow_width(info, false, long));
+        }
+        // 1920x1080 at 16 spp is just below the bound, at 17 spp above it (as its docs say).
+        let full_hd = |spp: u64| Some(1920 * 1080 * spp);
+        assert!(narrow_width(mesa_25, false, full_hd(16)));
+        assert!(!narrow_width(mesa_25, false, full_hd(17)));
     }
 
     #[test]
