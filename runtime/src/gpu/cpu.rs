@@ -317,6 +317,7 @@ pub const WIDE_MIN_SAMPLES: u64 = 1 << 25;
 /// AVX-512 for a render of at least [`WIDE_MIN_SAMPLES`]. With AVX-512 (Mesa 25) 256 bits do not
 /// run frames faster (0.70 to 1.14 of the 128-bit frame, docs/bench/lavapipe.md), so every render
 /// keeps 128 there.
+#[cfg(not(target_arch = "wasm32"))]
 fn narrow_width(driver_info: &str, avx512: bool, samples: Option<u64>) -> bool {
     loads_per_lane(driver_info, avx512) && (avx512 || samples.is_none_or(|n| n < WIDE_MIN_SAMPLES))
 }
