@@ -302,12 +302,12 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         let samples = render_samples(args, &compiled);
         rtc_runtime::gpu::apply_lavapipe_defaults(
             rtc_runtime::gpu::CpuJit::for_render(
-                samples,
+                // Unknown: larger than any bound, so the optimising JIT.
+                samples.unwrap_or(u64::MAX),
                 compiled.exec == ExecModel::Wavefront,
                 compiled.linked.config.has_secondary_rays,
             ),
-            // `u64::MAX`: not known (no scene description), so not counted as long work.
-            Some(samples).filter(|&n| n != u64::MAX),
+            samples,
         );
     }
     let gpu = match early_gpu.map_or_else(|| Gpu::new(&choice), Ok) {
@@ -440,11 +440,11 @@ fn print_model_reports(desc: &SceneDesc, scene_path: &Path, roots: &AssetRoots, 
 }
 
 /// The samples (pixels times samples per pixel) a still render of `compiled` takes: `--size` and
-/// `--spp` where given, else the scene's settings (`u64::MAX`, which no bound admits, if the
-/// compiled program had no scene description to read them from).
-fn render_samples(args: &Args, compiled: &CompiledScene) -> u64 {
+/// `--spp` where given, else the scene's settings (`None` if the compiled program had no scene
+/// description to read them from).
+fn render_samples(args: &Args, compiled: &CompiledScene) -> Option<u64> {
     let Some(settings) = scene_of(compiled).map(|d| &d.settings) else {
-        return args.still_samples().unwrap_or(u64::MAX);
+        return args.still_samples();
     };
     let [w, h] = args
         .render
@@ -452,7 +452,7 @@ fn render_samples(args: &Args, compiled: &CompiledScene) -> u64 {
         .image_size()
         .unwrap_or([settings.width, settings.height]);
     let spp = args.render.spp.samples.unwrap_or(settings.samples);
-    u64::from(w) * u64::from(h) * u64::from(spp)
+    Some(u64::from(w) * u64::from(h) * u64::from(spp))
 }
 
 /// The scene description of a compiled scene.
