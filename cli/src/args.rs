@@ -434,16 +434,18 @@ mod tests {
         assert_eq!(render(&["--size", "64x48"]), None);
         assert_eq!(render(&["--spp", "1"]), None);
         assert_eq!(render(&[]), None);
-        // Animations go on; the flag decides over `auto`.
-        assert_eq!(
-            render(&[&small[..], &["--frames", "0..2"]].concat()),
-            Some(CpuJit::Optimized)
-        );
+        // Animations too (their frames may be the scene's); the flag decides over `auto`, after
+        // the compile when the scene's size or samples decide the SIMD width.
+        assert_eq!(render(&[&small[..], &["--frames", "0..2"]].concat()), None);
         assert_eq!(
             render(&[&small[..], &["--cpu-jit", "optimized"]].concat()),
             Some(CpuJit::Optimized)
         );
-        assert_eq!(render(&["--cpu-jit", "quick"]), Some(CpuJit::Quick));
+        assert_eq!(
+            render(&[&small[..], &["--cpu-jit", "quick"]].concat()),
+            Some(CpuJit::Quick)
+        );
+        assert_eq!(render(&["--cpu-jit", "quick"]), None);
         // A watch gets it for a small preview only; views and benchmarks run on.
         assert_eq!(
             jit(&[&["watch", "s.rt", "-o", "p.png"][..], &small[..]].concat()),

@@ -133,12 +133,25 @@ pub fn is_animated_with(desc: &SceneDesc, renderer: &Renderer) -> bool {
 /// entries or sets `frames`, else enough to reach the last key of its models' glTF animations
 /// (the last key's frame included), at least 1.
 pub fn frame_count(desc: &SceneDesc, renderer: &Renderer, fps: u32) -> u32 {
-    if is_animated(desc) || desc.settings.frames > 1 || !renderer.has_model_animation() {
+    if let Some(frames) = frame_count_of(desc) {
+        return frames;
+    }
+    if !renderer.has_model_animation() {
         return desc.settings.frames.max(1);
     }
     let length = f64::from(renderer.model_animation_length());
     let frames = (length * f64::from(fps.max(1))).floor() + 1.0;
     frames.clamp(1.0, f64::from(rtc_compiler::sema::scenes::MAX_FRAMES)) as u32
+}
+
+/// [`frame_count`] where the description alone decides it, before any renderer exists: `None`
+/// for a scene that neither animates nor sets `frames` but has glTF models, whose node
+/// animations' length decides.
+pub fn frame_count_of(desc: &SceneDesc) -> Option<u32> {
+    if is_animated(desc) || desc.settings.frames > 1 || desc.models.is_empty() {
+        return Some(desc.settings.frames.max(1));
+    }
+    None
 }
 
 /// Applies `state` to `renderer`: objects moved (the scene's and its models' animated nodes),
@@ -389,6 +402,38 @@ import "std/lights/point.rt";
             Mat4::from_cols_array_2d(&d.objects[0].transform)
         ));
         assert_eq!(frame_time(6, 4), 1.5);
+    }
+
+    #[test]
+    fn frames_known_before_a_renderer_exists_unless_a_model_may_animate() {
+        let spin = scene(&format!(
+            "{HEAD}scene s {{ camera Pinhole {{}}
+                object b {{ geometry: cube_mesh(), material: Lambert {{}} }}
+                animate b spin(vec3f(0.0, 1.0, 0.0), 90.0) }}"
+        ));
+        assert_eq!(frame_count_of(&spin), Some(1));
+        let long = scene(&format!(
+            "{HEAD}scene s {{ settings {{ frames: 48 }} camera Pinhole {{}}
+                object b {{ geometry: cube_mesh(), material: Lambert {{}} }} }}"
+        ));
+        assert_eq!(frame_count_of(&long), Some(48));
+        let model = |settings: &str, animate: &str| {
+            scene(&format!(
+                "{HEAD}scene s {{ settings {{ {settings} }} camera Pinhole {{}}
+                    object b {{ geometry: cube_mesh(), material: Lambert {{}} }}
+                    model \"m.glb\" {{}} {animate} }}"
+            ))
+        };
+        // Only the glTF file's node animations would say how long it is.
+        assert_eq!(frame_count_of(&model("", "")), None);
+        assert_eq!(frame_count_of(&model("frames: 12", "")), Some(12));
+        assert_eq!(
+            frame_count_of(&model(
+                "fps: 10",
+                "animate b keys { 0.0: identity(), 2.0: identity() }"
+            )),
+            Some(21)
+        );
     }
 
     #[test]

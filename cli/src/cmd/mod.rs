@@ -62,13 +62,14 @@ impl Command {
 
     /// The JIT a CPU driver should give this command's kernels (`--cpu-jit`; `auto` is quick only
     /// for a still `render`, or a `watch` preview, whose `--size` and `--spp` make a small render),
-    /// or `None` when `render` chooses it after the compile, from the scene's own size and samples
-    /// and its kernels ([`render::Args::jit_after_compile`]).
+    /// or `None` when `render` chooses it (and the SIMD width) after the compile, from the
+    /// scene's own size, samples and frames and its kernels
+    /// ([`render::Args::defaults_after_compile`]).
     pub fn cpu_jit(&self) -> Option<rtc_runtime::gpu::CpuJit> {
         Some(match self {
             Command::Check(_) => rtc_runtime::gpu::CpuJit::Optimized,
             Command::Compile(args) => args.adapter.cpu_jit.resolve(None),
-            Command::Render(args) if args.jit_after_compile() => return None,
+            Command::Render(args) if args.defaults_after_compile() => return None,
             Command::Render(args) => args.render.adapter.cpu_jit.resolve(args.still_samples()),
             Command::Bench(args) => args.adapter.cpu_jit.resolve(None),
             Command::Bvh(args) => args.render.adapter.cpu_jit.resolve(None),

@@ -98,16 +98,17 @@ impl Args {
         self.frames.is_none() && self.shard.is_none() && self.fps.is_none()
     }
 
-    /// Whether the CPU driver's JIT is chosen after the compile (`--cpu-jit auto`, a still render
-    /// that `--size` and `--spp` do not make small enough for the quick JIT whatever its kernels):
-    /// from the samples the scene's own size and samples give, and from its kernels
-    /// ([`rtc_runtime::gpu::CpuJit::for_render`]).
-    pub fn jit_after_compile(&self) -> bool {
-        self.render.adapter.cpu_jit == CpuJitChoice::Auto
-            && self.is_still()
-            && self
-                .still_samples()
-                .is_none_or(|n| n > rtc_runtime::gpu::QUICK_JIT_MAX_SAMPLES)
+    /// Whether rtc's settings for a CPU driver (its JIT and SIMD width,
+    /// [`rtc_runtime::gpu::apply_lavapipe_defaults`]) are chosen after the compile, from what the
+    /// compiled scene says: for an animation (its frames, and without `--size` and `--spp` their
+    /// size and samples, are the scene's), for a still render without both `--size` and `--spp`,
+    /// and for `--cpu-jit auto` on a still render that they do not make small enough for the
+    /// quick JIT whatever its kernels ([`rtc_runtime::gpu::CpuJit::for_render`]).
+    pub fn defaults_after_compile(&self) -> bool {
+        self.still_samples().is_none_or(|n| {
+            self.render.adapter.cpu_jit == CpuJitChoice::Auto
+                && n > rtc_runtime::gpu::QUICK_JIT_MAX_SAMPLES
+        })
     }
 }
 
@@ -297,18 +298,19 @@ pub fn run(args: &Args, ctx: &Context) -> Exit {
         }
     }
 
-    if args.jit_after_compile() {
+    if args.defaults_after_compile() {
         // Nothing has touched a GPU yet, and the compile's threads are done.
-        let samples = render_samples(args, &compiled);
-        rtc_runtime::gpu::apply_lavapipe_defaults(
-            rtc_runtime::gpu::CpuJit::for_render(
+        let samples = render_samples(args, animate.as_ref(), &compiled);
+        let jit = match args.render.adapter.cpu_jit {
+            CpuJitChoice::Auto => rtc_runtime::gpu::CpuJit::for_render(
                 // Unknown: larger than any bound, so the optimising JIT.
                 samples.unwrap_or(u64::MAX),
                 compiled.exec == ExecModel::Wavefront,
                 compiled.linked.config.has_secondary_rays,
             ),
-            samples,
-        );
+            chosen => chosen.resolve(samples),
+        };
+        rtc_runtime::gpu::apply_lavapipe_defaults(jit, samples);
     }
     let gpu = match early_gpu.map_or_else(|| Gpu::new(&choice), Ok) {
         Ok(gpu) => gpu,
@@ -439,20 +441,32 @@ fn print_model_reports(desc: &SceneDesc, scene_path: &Path, roots: &AssetRoots, 
     }
 }
 
-/// The samples (pixels times samples per pixel) a still render of `compiled` takes: `--size` and
-/// `--spp` where given, else the scene's settings (`None` if the compiled program had no scene
-/// description to read them from).
-fn render_samples(args: &Args, compiled: &CompiledScene) -> Option<u64> {
-    let Some(settings) = scene_of(compiled).map(|d| &d.settings) else {
+/// The samples (pixels times samples per pixel) a render of `compiled` takes: `--size` and
+/// `--spp` where given, else the scene's settings, times the frames of an animation (`animate`;
+/// the whole range, not a shard's share, so that every shard chooses as the unsharded render
+/// does). `None` if the compiled program had no scene description to read them from, or when the
+/// frames are the length of its glTF models' animations, known only once they are loaded.
+fn render_samples(
+    args: &Args,
+    animate: Option<&FrameArgs>,
+    compiled: &CompiledScene,
+) -> Option<u64> {
+    let Some(desc) = scene_of(compiled) else {
         return args.still_samples();
     };
+    let settings = &desc.settings;
     let [w, h] = args
         .render
         .scene
         .image_size()
         .unwrap_or([settings.width, settings.height]);
     let spp = args.render.spp.samples.unwrap_or(settings.samples);
-    Some(u64::from(w) * u64::from(h) * u64::from(spp))
+    let frames = match animate.map(|a| a.range) {
+        None => 1,
+        Some(frames::FrameRange::Span { start, end }) => end - start,
+        Some(frames::FrameRange::All) => animation::frame_count_of(desc)?,
+    };
+    Some(u64::from(w) * u64::from(h) * u64::from(spp) * u64::from(frames))
 }
 
 /// The scene description of a compiled scene.
@@ -772,5 +786,49 @@ mod tests {
         assert_eq!(output_format(Path::new("a.EXR")), Some(Format::Exr));
         assert_eq!(output_format(Path::new("a.jpg")), None);
         assert_eq!(output_format(Path::new("a")), None);
+    }
+
+    #[test]
+    fn an_animation_counts_the_samples_of_all_its_frames_whatever_the_shard() {
+        let path =
+            Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/thesis_scene/animated.rt");
+        let compiled = compile_scene_with(
+            std::slice::from_ref(&path),
+            None,
+            &rtc_compiler::driver::Options::default(),
+            &LinkOptions::default(),
+            &KernelOptions::default(),
+        )
+        .unwrap_or_else(|_| panic!("the animated thesis scene compiles"));
+        let samples = |extra: &[&str]| {
+            let mut argv = vec!["rtc", "render", "animated.rt", "-o", "f_%04d.png"];
+            argv.extend_from_slice(extra);
+            let cli = <crate::args::Cli as clap::Parser>::try_parse_from(argv).expect("parses");
+            let crate::cmd::Command::Render(args) = cli.command else {
+                panic!("a render");
+            };
+            let animate = frame_args(&args).expect("valid frame arguments");
+            (
+                args.defaults_after_compile(),
+                render_samples(&args, animate.as_ref(), &compiled),
+            )
+        };
+        // 24 frames of 1920x1080 at 1 spp: from 2^25 samples lavapipe keeps its own SIMD width
+        // on a CPU without AVX-512, so every shard must count the whole animation.
+        let all = Some(24 * 1920 * 1080);
+        assert_eq!(samples(&["--frames", "all"]), (true, all));
+        assert_eq!(samples(&["--frames", "all", "--shard", "2/3"]), (true, all));
+        assert_eq!(samples(&["--shard", "0/3"]), (true, all));
+        assert_eq!(
+            samples(&["--frames", "0..4", "--size", "64x48", "--spp", "2"]),
+            (true, Some(4 * 64 * 48 * 2))
+        );
+        assert_eq!(samples(&["--frames", "5"]), (true, Some(1920 * 1080)));
+        // A still render: the scene's own size and samples, once.
+        assert_eq!(samples(&[]), (true, Some(1920 * 1080)));
+        assert_eq!(
+            samples(&["--size", "64x48", "--spp", "1"]),
+            (false, Some(64 * 48))
+        );
     }
 }

@@ -307,7 +307,9 @@ fn loads_per_lane(driver_info: &str, avx512: bool) -> bool {
 /// (not for cornell_path, pbr_path and shading, whose frames are 1 to 5 % slower at 256 bits, nor
 /// for the thesis scene's 1 to 6 %). The thesis scene at 17 spp, cold, Mesa 25: 21.9 s at 256 bits
 /// against 22.8 s at 128. So one still render of any example's own size, a preview and the first
-/// pixel keep 128 bits. Measured on 2026-12-07:
+/// pixel keep 128 bits; `rtc render` counts an animation's samples over all its frames (every
+/// shard alike, so that shards stay byte-identical to the unsharded render). Measured on
+/// 2026-12-07:
 /// docs/bench/lavapipe.md, "The SIMD width by the size of the render (2026-12-07, later)".
 pub const WIDE_MIN_SAMPLES: u64 = 1 << 25;
 
