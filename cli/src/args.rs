@@ -126,7 +126,8 @@ pub struct AdapterArgs {
     /// image), `optimized` keeps them; `auto` is quick for a still `rtc render` or `rtc watch`
     /// preview whose `--size` and `--spp` make at most 131,072 samples (e.g. 256x256 at 2 spp),
     /// for a still `rtc render` through a megakernel of at most 393,216 (786,432 when its scene
-    /// has no secondary rays) counting the scene's own size and samples, and optimized otherwise.
+    /// has no secondary rays) counting the scene's own size and samples (an animation: all its
+    /// frames' samples), and optimized otherwise.
     /// `GALLIVM_PERF` in the environment overrides it; GPU drivers ignore it.
     #[arg(long, value_name = "JIT", value_enum, default_value_t = CpuJitChoice::Auto)]
     pub cpu_jit: CpuJitChoice,
