@@ -328,8 +328,13 @@ pub fn vector_f32(v: &[f32]) -> ConstValue {
     }
 }
 
-/// The zero value of a type.
+/// The zero value of a type; `None` for a type without one, and for a struct that contains
+/// itself (an error of its own, E0801), which has no finite value.
 pub fn zero(env: &Env, ty: TypeId) -> Option<ConstValue> {
+    zero_in(env, ty, &mut Vec::new())
+}
+
+fn zero_in(env: &Env, ty: TypeId, open: &mut Vec<super::hir::StructId>) -> Option<ConstValue> {
     Some(match env.types.get(ty) {
         Type::Scalar(k) => ConstValue::Scalar(zero_scalar(k)),
         Type::Vector { size, scalar } => ConstValue::Vector {
@@ -342,15 +347,21 @@ pub fn zero(env: &Env, ty: TypeId) -> Option<ConstValue> {
             data: [[0.0; 4]; 4],
         },
         Type::Array { elem, len } => {
-            let z = zero(env, elem)?;
+            let z = zero_in(env, elem, open)?;
             ConstValue::Array(vec![z; len as usize])
         }
+        Type::Struct(s) if open.contains(&s) => return None,
         Type::Struct(s) => {
+            open.push(s);
             let mut fields = Vec::with_capacity(env.structs[s].fields.len());
             for f in &env.structs[s].fields {
-                fields.push(zero(env, f.ty)?);
+                fields.push(zero_in(env, f.ty, open));
             }
-            ConstValue::Struct { id: s, fields }
+            open.pop();
+            ConstValue::Struct {
+                id: s,
+                fields: fields.into_iter().collect::<Option<_>>()?,
+            }
         }
         _ => return None,
     })
