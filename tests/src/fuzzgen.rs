@@ -402,13 +402,82 @@ pub fn deep_mix(rng: &mut Rng, max_depth: usize) -> String {
     out
 }
 
+/// Numbers a mutation puts in place of a numeric literal: zeros, extremes, denormals, integers
+/// past `f32`'s exact range, the ends of `u32` and `i32`.
+const EXTREME_NUMBERS: &[&str] = &[
+    "0",
+    "0.0",
+    "-0.0",
+    "1",
+    "-1",
+    "0.5",
+    "1e-38",
+    "1e-45",
+    "3.4e38",
+    "-3.4e38",
+    "1e30",
+    "16777217.0",
+    "65536",
+    "4294967295",
+    "2147483647",
+    "-2147483648",
+    "0u",
+    "4294967295u",
+    "65536u",
+];
+
+/// The byte ranges of the identifiers (`[A-Za-z_][A-Za-z0-9_]*`) and of the numeric literals
+/// (starting with a digit) of `data`: `(identifiers, numbers)`.
+fn word_spans(data: &[u8]) -> (Vec<(usize, usize)>, Vec<(usize, usize)>) {
+    let (mut idents, mut numbers) = (Vec::new(), Vec::new());
+    let mut i = 0;
+    while i < data.len() {
+        let c = data[i];
+        let word = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
+        if c.is_ascii_alphabetic() || c == b'_' || c.is_ascii_digit() {
+            let start = i;
+            while i < data.len() && (word(data[i]) || (c.is_ascii_digit() && data[i] == b'.')) {
+                i += 1;
+            }
+            if c.is_ascii_digit() {
+                numbers.push((start, i));
+            } else {
+                idents.push((start, i));
+            }
+        } else {
+            i += 1;
+        }
+    }
+    (idents, numbers)
+}
+
 /// Applies 1 to 8 random edits to `base`: byte flips, deletions, duplications, insertions of tokens,
-/// splices from another corpus file, truncation.
+/// splices from another corpus file, truncation, and two that keep a program well formed more often
+/// and so reach the checker's later passes: an identifier replaced by another of the same file (a
+/// type by another type, a struct named in its own fields), a number by an extreme one.
 pub fn mutate(rng: &mut Rng, base: &[u8], corpus: &[(String, Vec<u8>)]) -> Vec<u8> {
     let mut data = base.to_vec();
     for _ in 0..1 + rng.below(8) {
         let len = data.len();
-        match rng.below(7) {
+        match rng.below(9) {
+            k @ (7 | 8) => {
+                let (idents, numbers) = word_spans(&data);
+                if k == 7 {
+                    if idents.is_empty() {
+                        continue;
+                    }
+                    let (a, b) = *rng.pick(&idents);
+                    let (c, d) = *rng.pick(&idents);
+                    let name = data[c..d].to_vec();
+                    data.splice(a..b, name);
+                } else {
+                    if numbers.is_empty() {
+                        continue;
+                    }
+                    let (a, b) = *rng.pick(&numbers);
+                    data.splice(a..b, rng.pick(EXTREME_NUMBERS).bytes());
+                }
+            }
             0 if len > 0 => {
                 let i = rng.below(len);
                 data[i] ^= 1 << rng.below(8);
@@ -547,6 +616,26 @@ mod tests {
         assert_eq!(deep_parens(2), "fn f() -> f32 { return ((1)); }\n");
         assert!(big_valid(1000).len() >= 1000);
         assert_eq!(big_random(&mut a, 13).len(), 13);
+    }
+
+    #[test]
+    fn word_mutations_find_identifiers_and_numbers() {
+        let text = b"struct S { a: array<f32, 4u> = x_1 * 2.5, }";
+        let (idents, numbers) = word_spans(text);
+        let words = |spans: &[(usize, usize)]| -> Vec<String> {
+            spans
+                .iter()
+                .map(|&(a, b)| String::from_utf8_lossy(&text[a..b]).into_owned())
+                .collect()
+        };
+        assert_eq!(words(&idents), ["struct", "S", "a", "array", "f32", "x_1"]);
+        assert_eq!(words(&numbers), ["4u", "2.5"]);
+        // Over many seeds, an identifier swap yields a struct named in its own field.
+        let recursive = (0..2000).any(|seed| {
+            let out = mutate(&mut Rng::new(seed), text, &[]);
+            out.starts_with(b"struct S { a: array<S, 4u>")
+        });
+        assert!(recursive, "no identifier swap gave `array<S, 4u>`");
     }
 
     #[test]

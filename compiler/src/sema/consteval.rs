@@ -77,8 +77,10 @@ pub enum EvalError {
 /// and the constants lowered into the kernel stay small.
 pub const MAX_CONST_SCALARS: u64 = 65_536;
 
-/// The number of scalars in a value of type `ty` (saturating; handles count as one; a struct
-/// that contains itself, an error of its own, counts as empty inside itself).
+/// The number of scalars in a value of type `ty` (saturating; handles count as one, and so does a
+/// struct without fields, so that an array's count is never below its length, which bounds what
+/// its zero value allocates; a struct that contains itself, an error of its own, counts as empty
+/// inside itself).
 pub fn scalar_count(env: &Env, ty: TypeId) -> u64 {
     count_in(env, ty, &mut Vec::new())
 }
@@ -96,7 +98,7 @@ fn count_in(env: &Env, ty: TypeId, open: &mut Vec<super::hir::StructId>) -> u64 
                 .iter()
                 .fold(0u64, |n, f| n.saturating_add(count_in(env, f.ty, open)));
             open.pop();
-            n
+            n.max(1)
         }
         _ => 1,
     }
