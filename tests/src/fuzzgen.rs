@@ -426,9 +426,12 @@ const EXTREME_NUMBERS: &[&str] = &[
     "65536u",
 ];
 
+/// Byte ranges `(start, end)` of words of a text.
+type Spans = Vec<(usize, usize)>;
+
 /// The byte ranges of the identifiers (`[A-Za-z_][A-Za-z0-9_]*`) and of the numeric literals
 /// (starting with a digit) of `data`: `(identifiers, numbers)`.
-fn word_spans(data: &[u8]) -> (Vec<(usize, usize)>, Vec<(usize, usize)>) {
+fn word_spans(data: &[u8]) -> (Spans, Spans) {
     let (mut idents, mut numbers) = (Vec::new(), Vec::new());
     let mut i = 0;
     while i < data.len() {
