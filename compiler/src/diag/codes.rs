@@ -72,6 +72,7 @@ codes! {
     E0413 => "a type that cannot be used here",
     E0414 => "a call to something that is not a function",
     E0415 => "a constant operation on finite values whose `f32` result is infinite or NaN",
+    E0416 => "a struct without fields",
 
     // ---- statements and control flow ----
     E0501 => "assignment to an immutable binding",

@@ -665,6 +665,11 @@ pub(crate) fn resolve_structs(cx: &mut Ctx) {
     for &s in &ids {
         cx.ensure_fields(s);
         let (module, _, decl) = cx.structs_ast[ix(s)];
+        if decl.fields.is_empty() {
+            let st = &cx.p.structs[s];
+            let (span, name) = (st.span, st.name.clone());
+            cx.err(ExprError::EmptyStruct { span, name });
+        }
         let plain = cx.structs_ast[ix(s)]
             .1
             .attrs

@@ -390,6 +390,14 @@ impl ExprError {
                 *span,
             )
             .with_label("not allowed here"),
+            E::EmptyStruct { span, name } => err(
+                codes::E0416,
+                format!("struct `{name}` has no fields"),
+                *span,
+            )
+            .with_label("declared without fields")
+            .with_note("GPU code has no empty structs (WGSL, SPIR-V and the other targets forbid them)")
+            .with_help("give it a field; a material without parameters can hold an unused one, e.g. `unused: f32 = 0.0`"),
             E::NotCallable { span, name, kind } => err(
                 codes::E0414,
                 format!("`{name}` is a {}, not a function", kind.describe()),

@@ -299,6 +299,12 @@ pub enum ExprError {
         ty: TypeId,
         context: &'static str,
     },
+    /// A struct declared without fields (E0416): WGSL, SPIR-V and the other targets have no
+    /// empty structs.
+    EmptyStruct {
+        span: Span,
+        name: String,
+    },
     NotCallable {
         span: Span,
         name: String,
