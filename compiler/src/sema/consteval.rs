@@ -355,14 +355,15 @@ fn zero_in(env: &Env, ty: TypeId, open: &mut Vec<super::hir::StructId>) -> Optio
         Type::Struct(s) if open.contains(&s) => return None,
         Type::Struct(s) => {
             open.push(s);
-            let mut fields = Vec::with_capacity(env.structs[s].fields.len());
-            for f in &env.structs[s].fields {
-                fields.push(zero_in(env, f.ty, open));
-            }
+            let fields = env.structs[s]
+                .fields
+                .iter()
+                .map(|f| zero_in(env, f.ty, open))
+                .collect::<Option<Vec<_>>>();
             open.pop();
             ConstValue::Struct {
                 id: s,
-                fields: fields.into_iter().collect::<Option<_>>()?,
+                fields: fields?,
             }
         }
         _ => return None,
