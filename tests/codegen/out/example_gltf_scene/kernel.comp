@@ -232,7 +232,7 @@ uint traversal_stack[128] = uint[128](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u
 
 uint ray_count = 0u;
 
-layout(std430, binding = 9) buffer type_18_block_8Compute { uint _group_0_binding_9_cs[]; };
+layout(std430, binding = 9) buffer type_19_block_8Compute { uint _group_0_binding_9_cs[]; };
 
 vec3 spawn_dirs[1] = vec3[1](vec3(0.0));
 
@@ -637,14 +637,29 @@ int rem_i32_(int a_4, int b_4) {
     return (by_zero_4 ? 0 : (a_4 - (divisor_4 * (a_4 / divisor_4))));
 }
 
-int wrap_texel(int x_4, int n_2, uint mode) {
-    int _e3 = rem_i32_(x_4, n_2);
-    int _e5 = rem_i32_((_e3 + n_2), n_2);
-    int _e8 = rem_i32_(x_4, (2 * n_2));
-    int _e14 = rem_i32_((_e8 + (2 * n_2)), (2 * n_2));
-    int mirror = ((_e14 >= n_2) ? (((2 * n_2) - 1) - _e14) : _e14);
-    int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5);
-    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_4, 0), (n_2 - 1)) : wrapped);
+ivec2 wrap_texel_pair(int x_4, int n_2, uint mode) {
+    int m0_ = 0;
+    int period = (2 * n_2);
+    int _e5 = rem_i32_(x_4, period);
+    m0_ = _e5;
+    int _e7 = m0_;
+    int _e8 = m0_;
+    int _e10 = m0_;
+    m0_ = ((_e10 < 0) ? (_e8 + period) : _e7);
+    int _e14 = m0_;
+    int _e18 = m0_;
+    int m1_ = (((_e18 + 1) == period) ? 0 : (_e14 + 1));
+    int _e23 = m0_;
+    int _e24 = m0_;
+    int _e26 = m0_;
+    int r0_1 = ((_e26 >= n_2) ? (_e24 - n_2) : _e23);
+    int r1_1 = ((m1_ >= n_2) ? (m1_ - n_2) : m1_);
+    int _e32 = m0_;
+    int _e35 = m0_;
+    int _e37 = m0_;
+    ivec2 mirror = ivec2(((_e37 >= n_2) ? ((period - 1) - _e35) : _e32), ((m1_ >= n_2) ? ((period - 1) - m1_) : m1_));
+    ivec2 wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror : ivec2(r0_1, r1_1));
+    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(ivec2(x_4, (x_4 + 1)), ivec2(0)), ivec2((n_2 - 1))) : wrapped);
 }
 
 float srgb_channel(float c_2) {
@@ -692,20 +707,20 @@ vec4 sample_texture(uint t_1, vec2 uv) {
     vec2 fr = (p_8 - f_2);
     int _e47 = i32_from_f32_(f_2.x);
     int _e49 = i32_from_f32_(f_2.y);
-    int _e50 = wrap_texel(_e47, wi, mu);
-    uint x0_ = uint(_e50);
-    int _e54 = wrap_texel((_e47 + 1), wi, mu);
-    uint x1_ = uint(_e54);
-    int _e56 = wrap_texel(_e49, hi_1, mv);
-    uint y0_ = uint(_e56);
-    int _e60 = wrap_texel((_e49 + 1), hi_1, mv);
-    uint y1_ = uint(_e60);
-    vec4 _e62 = texel_at(t_1, x0_, y0_);
-    vec4 _e63 = texel_at(t_1, x1_, y0_);
-    vec4 a_7 = mix(_e62, _e63, vec4(fr.x));
-    vec4 _e67 = texel_at(t_1, x0_, y1_);
-    vec4 _e68 = texel_at(t_1, x1_, y1_);
-    vec4 b_8 = mix(_e67, _e68, vec4(fr.x));
+    ivec2 _e50 = wrap_texel_pair(_e47, wi, mu);
+    uvec2 xs = uvec2(_e50);
+    ivec2 _e52 = wrap_texel_pair(_e49, hi_1, mv);
+    uvec2 ys = uvec2(_e52);
+    uint x0_ = xs.x;
+    uint x1_ = xs.y;
+    uint y0_ = ys.x;
+    uint y1_ = ys.y;
+    vec4 _e58 = texel_at(t_1, x0_, y0_);
+    vec4 _e59 = texel_at(t_1, x1_, y0_);
+    vec4 a_7 = mix(_e58, _e59, vec4(fr.x));
+    vec4 _e63 = texel_at(t_1, x0_, y1_);
+    vec4 _e64 = texel_at(t_1, x1_, y1_);
+    vec4 b_8 = mix(_e63, _e64, vec4(fr.x));
     return mix(a_7, b_8, vec4(fr.y));
 }
 

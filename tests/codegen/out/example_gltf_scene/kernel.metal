@@ -137,7 +137,7 @@ struct GltfMaskedMaterial {
     uint double_sided;
     char _pad8[8];
 };
-struct type_16 {
+struct type_17 {
     uint inner[128];
 };
 struct SkyGradient {
@@ -156,7 +156,7 @@ struct DirectionalLight {
     metal::packed_float3 color;
     float intensity;
 };
-typedef metal::atomic_uint type_18[1];
+typedef metal::atomic_uint type_19[1];
 struct PointLight {
     metal::float3 position;
     metal::packed_float3 color;
@@ -173,7 +173,7 @@ struct GltfMaterial {
     char _pad4[4];
     metal::float3 emissive;
 };
-struct type_19 {
+struct type_20 {
     metal::float3 inner[1];
 };
 struct Frame {
@@ -183,13 +183,13 @@ struct Frame {
     uint slot;
     char _pad4[8];
     metal::float3 sum;
-    type_19 dirs;
-    type_19 weights;
+    type_20 dirs;
+    type_20 weights;
     uint count;
     uint next;
     char _pad9[8];
 };
-struct type_20 {
+struct type_21 {
     Frame inner[4];
 };
 constant uint WORKGROUP_WIDTH = 8u;
@@ -801,18 +801,33 @@ int rem_i32_(
     return by_zero_4 ? 0 : as_type<int>(as_type<uint>(a_4) - as_type<uint>(as_type<int>(as_type<uint>(divisor_4) * as_type<uint>(naga_div(a_4, divisor_4)))));
 }
 
-int wrap_texel(
+metal::int2 wrap_texel_pair(
     int x_4,
     int n_2,
     uint mode
 ) {
-    int _e3 = rem_i32_(x_4, n_2);
-    int _e5 = rem_i32_(as_type<int>(as_type<uint>(_e3) + as_type<uint>(n_2)), n_2);
-    int _e8 = rem_i32_(x_4, as_type<int>(as_type<uint>(2) * as_type<uint>(n_2)));
-    int _e14 = rem_i32_(as_type<int>(as_type<uint>(_e8) + as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_2)))), as_type<int>(as_type<uint>(2) * as_type<uint>(n_2)));
-    int mirror = (_e14 >= n_2) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_2))) - as_type<uint>(1))) - as_type<uint>(_e14)) : _e14;
-    int wrapped = (mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5;
-    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(x_4, 0), as_type<int>(as_type<uint>(n_2) - as_type<uint>(1))) : wrapped;
+    int m0_ = {};
+    int period = as_type<int>(as_type<uint>(2) * as_type<uint>(n_2));
+    int _e5 = rem_i32_(x_4, period);
+    m0_ = _e5;
+    int _e7 = m0_;
+    int _e8 = m0_;
+    int _e10 = m0_;
+    m0_ = (_e10 < 0) ? as_type<int>(as_type<uint>(_e8) + as_type<uint>(period)) : _e7;
+    int _e14 = m0_;
+    int _e18 = m0_;
+    int m1_ = (as_type<int>(as_type<uint>(_e18) + as_type<uint>(1)) == period) ? 0 : as_type<int>(as_type<uint>(_e14) + as_type<uint>(1));
+    int _e23 = m0_;
+    int _e24 = m0_;
+    int _e26 = m0_;
+    int r0_1 = (_e26 >= n_2) ? as_type<int>(as_type<uint>(_e24) - as_type<uint>(n_2)) : _e23;
+    int r1_1 = (m1_ >= n_2) ? as_type<int>(as_type<uint>(m1_) - as_type<uint>(n_2)) : m1_;
+    int _e32 = m0_;
+    int _e35 = m0_;
+    int _e37 = m0_;
+    metal::int2 mirror = metal::int2((_e37 >= n_2) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(period) - as_type<uint>(1))) - as_type<uint>(_e35)) : _e32, (m1_ >= n_2) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(period) - as_type<uint>(1))) - as_type<uint>(m1_)) : m1_);
+    metal::int2 wrapped = (mode == TEXTURE_WRAP_MIRROR) ? mirror : metal::int2(r0_1, r1_1);
+    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(metal::int2(x_4, as_type<int>(as_type<uint>(x_4) + as_type<uint>(1))), metal::int2(0)), metal::int2(as_type<int>(as_type<uint>(n_2) - as_type<uint>(1)))) : wrapped;
 }
 
 float srgb_channel(
@@ -875,20 +890,20 @@ metal::float4 sample_texture(
     metal::float2 fr = p_8 - f_2;
     int _e47 = i32_from_f32_(f_2.x);
     int _e49 = i32_from_f32_(f_2.y);
-    int _e50 = wrap_texel(_e47, wi, mu);
-    uint x0_ = static_cast<uint>(_e50);
-    int _e54 = wrap_texel(as_type<int>(as_type<uint>(_e47) + as_type<uint>(1)), wi, mu);
-    uint x1_ = static_cast<uint>(_e54);
-    int _e56 = wrap_texel(_e49, hi_1, mv);
-    uint y0_ = static_cast<uint>(_e56);
-    int _e60 = wrap_texel(as_type<int>(as_type<uint>(_e49) + as_type<uint>(1)), hi_1, mv);
-    uint y1_ = static_cast<uint>(_e60);
-    metal::float4 _e62 = texel_at(t_1, x0_, y0_, params, texels, _buffer_sizes);
-    metal::float4 _e63 = texel_at(t_1, x1_, y0_, params, texels, _buffer_sizes);
-    metal::float4 a_7 = metal::mix(_e62, _e63, metal::float4(fr.x));
-    metal::float4 _e67 = texel_at(t_1, x0_, y1_, params, texels, _buffer_sizes);
-    metal::float4 _e68 = texel_at(t_1, x1_, y1_, params, texels, _buffer_sizes);
-    metal::float4 b_8 = metal::mix(_e67, _e68, metal::float4(fr.x));
+    metal::int2 _e50 = wrap_texel_pair(_e47, wi, mu);
+    metal::uint2 xs = static_cast<metal::uint2>(_e50);
+    metal::int2 _e52 = wrap_texel_pair(_e49, hi_1, mv);
+    metal::uint2 ys = static_cast<metal::uint2>(_e52);
+    uint x0_ = xs.x;
+    uint x1_ = xs.y;
+    uint y0_ = ys.x;
+    uint y1_ = ys.y;
+    metal::float4 _e58 = texel_at(t_1, x0_, y0_, params, texels, _buffer_sizes);
+    metal::float4 _e59 = texel_at(t_1, x1_, y0_, params, texels, _buffer_sizes);
+    metal::float4 a_7 = metal::mix(_e58, _e59, metal::float4(fr.x));
+    metal::float4 _e63 = texel_at(t_1, x0_, y1_, params, texels, _buffer_sizes);
+    metal::float4 _e64 = texel_at(t_1, x1_, y1_, params, texels, _buffer_sizes);
+    metal::float4 b_8 = metal::mix(_e63, _e64, metal::float4(fr.x));
     return metal::mix(a_7, b_8, metal::float4(fr.y));
 }
 
@@ -1089,7 +1104,7 @@ metal::float2 children_entry(
 metal::uint2 pop(
     uint base,
     uint sp,
-    thread type_16& traversal_stack
+    thread type_17& traversal_stack
 ) {
     if (sp == 0u) {
         return metal::uint2(NO_HIT, 0u);
@@ -1115,7 +1130,7 @@ Candidate intersect_mesh(
     thread float& hit_error,
     device type_13 const& attributes,
     device type_5 const& texels,
-    thread type_16& traversal_stack,
+    thread type_17& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Candidate best = {};
@@ -1244,7 +1259,7 @@ Candidate intersect_object(
     thread float& hit_error,
     device type_13 const& attributes,
     device type_5 const& texels,
-    thread type_16& traversal_stack,
+    thread type_17& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray r_2 = {};
@@ -1273,7 +1288,7 @@ uint medium_at(
     thread float& hit_error,
     device type_13 const& attributes,
     device type_5 const& texels,
-    thread type_16& traversal_stack,
+    thread type_17& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint inside = {};
@@ -1340,7 +1355,7 @@ Ray sample_camera_ray(
     thread float& hit_error,
     device type_13 const& attributes,
     device type_5 const& texels,
-    thread type_16& traversal_stack,
+    thread type_17& traversal_stack,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     Ray ray_13 = {};
@@ -1377,7 +1392,7 @@ Candidate intersect_scene(
     thread float& hit_error,
     device type_13 const& attributes,
     device type_5 const& texels,
-    thread type_16& traversal_stack,
+    thread type_17& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1604,7 +1619,7 @@ float shadow_deferred(
     metal::float3 dir_1,
     float dist,
     thread type_4& scratch,
-    device type_18& counters,
+    device type_19& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float _e4 = shadow_preset(normal_1, dir_1, scratch);
@@ -1640,7 +1655,7 @@ LightSample directional_light(
     metal::float3 normal_2,
     thread type_4& scratch,
     thread uint& F32_INF,
-    device type_18& counters,
+    device type_19& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 _e4 = normalize_vec3f(l.direction);
@@ -1677,7 +1692,7 @@ LightSample point_light(
     metal::float3 position_2,
     metal::float3 normal_3,
     thread type_4& scratch,
-    device type_18& counters,
+    device type_19& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     float strength = {};
@@ -1702,7 +1717,7 @@ LightSample dispatch_light(
     thread type_4& scratch,
     device type_5 const& params,
     thread uint& F32_INF,
-    device type_18& counters,
+    device type_19& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     switch(type_id_3) {
@@ -1806,7 +1821,7 @@ float shadow_query(
     thread float& hit_error,
     device type_13 const& attributes,
     device type_5 const& texels,
-    thread type_16& traversal_stack,
+    thread type_17& traversal_stack,
     thread uint& ray_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -1834,9 +1849,9 @@ LightSample sample_light_deferred(
     thread float& hit_error,
     device type_13 const& attributes,
     device type_5 const& texels,
-    thread type_16& traversal_stack,
+    thread type_17& traversal_stack,
     thread uint& ray_count,
-    device type_18& counters,
+    device type_19& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint after = {};
@@ -1955,9 +1970,9 @@ metal::float3 gltf_radiance(
     thread float& hit_error,
     device type_13 const& attributes,
     device type_5 const& texels,
-    thread type_16& traversal_stack,
+    thread type_17& traversal_stack,
     thread uint& ray_count,
-    device type_18& counters,
+    device type_19& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 color = {};
@@ -2017,9 +2032,9 @@ metal::float3 gltf_masked_shade(
     thread float& hit_error,
     device type_13 const& attributes,
     device type_5 const& texels,
-    thread type_16& traversal_stack,
+    thread type_17& traversal_stack,
     thread uint& ray_count,
-    device type_18& counters,
+    device type_19& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e7 = sample_texture(m_1.base_texture, hit_7.uv, params, texels, _buffer_sizes);
@@ -2061,9 +2076,9 @@ metal::float3 gltf_shade(
     thread float& hit_error,
     device type_13 const& attributes,
     device type_5 const& texels,
-    thread type_16& traversal_stack,
+    thread type_17& traversal_stack,
     thread uint& ray_count,
-    device type_18& counters,
+    device type_19& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 _e7 = sample_texture(m_2.base_texture, hit_8.uv, params, texels, _buffer_sizes);
@@ -2089,9 +2104,9 @@ metal::float3 dispatch_closest_hit(
     thread float& hit_error,
     device type_13 const& attributes,
     device type_5 const& texels,
-    thread type_16& traversal_stack,
+    thread type_17& traversal_stack,
     thread uint& ray_count,
-    device type_18& counters,
+    device type_19& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     switch(type_id_4) {
@@ -2126,9 +2141,9 @@ metal::float3 shade_direct(
     thread float& hit_error,
     device type_13 const& attributes,
     device type_5 const& texels,
-    thread type_16& traversal_stack,
+    thread type_17& traversal_stack,
     thread uint& ray_count,
-    device type_18& counters,
+    device type_19& counters,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     GpuInstance inst_9 = instances[c_6.slot];
@@ -2217,17 +2232,17 @@ metal::float3 trace(
     thread float& hit_error,
     device type_13 const& attributes,
     device type_5 const& texels,
-    thread type_16& traversal_stack,
+    thread type_17& traversal_stack,
     thread uint& ray_count,
-    device type_18& counters,
-    thread type_19& spawn_dirs,
-    thread type_19& spawn_weights,
+    device type_19& counters,
+    thread type_20& spawn_dirs,
+    thread type_20& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 radiance_2 = {};
     float t_4 = {};
-    type_20 stack = {};
+    type_21 stack = {};
     uint depth = {};
     Ray ray_27 = {};
     metal::float3 value = {};
@@ -2265,7 +2280,7 @@ metal::float3 trace(
         metal::float3 _e22 = through_medium(camera_ray, _e20, _e21, instances, _buffer_sizes);
         return _e22;
     }
-    stack = type_20 {};
+    stack = type_21 {};
     depth = 0u;
     ray_27 = camera_ray;
     value = metal::float3(0.0);
@@ -2342,7 +2357,7 @@ metal::float3 trace(
                         Hit _e142 = hit_12;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f_1 = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_19 {}, type_19 {}, n_9, 0u};
+                        f_1 = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_20 {}, type_20 {}, n_9, 0u};
                         i_6 = 0u;
                         uint2 loop_bound_7 = uint2(4294967295u);
                         bool loop_init_3 = true;
@@ -2467,7 +2482,7 @@ PassSum add_sample(
     uint first_pass,
     uint per_pass,
     thread uint& ray_count,
-    device type_18& counters,
+    device type_19& counters,
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2523,11 +2538,11 @@ void render_pixel(
     thread float& hit_error,
     device type_13 const& attributes,
     device type_5 const& texels,
-    thread type_16& traversal_stack,
+    thread type_17& traversal_stack,
     thread uint& ray_count,
-    device type_18& counters,
-    thread type_19& spawn_dirs,
-    thread type_19& spawn_weights,
+    device type_19& counters,
+    thread type_20& spawn_dirs,
+    thread type_20& spawn_weights,
     thread uint& spawn_count,
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
@@ -2581,11 +2596,11 @@ void render_invocation(
     thread float& hit_error,
     device type_13 const& attributes,
     device type_5 const& texels,
-    thread type_16& traversal_stack,
+    thread type_17& traversal_stack,
     thread uint& ray_count,
-    device type_18& counters,
-    thread type_19& spawn_dirs,
-    thread type_19& spawn_weights,
+    device type_19& counters,
+    thread type_20& spawn_dirs,
+    thread type_20& spawn_weights,
     thread uint& spawn_count,
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
@@ -2611,7 +2626,7 @@ struct renderInput {
 , device type_11 const& triangles [[buffer(4)]]
 , device type_13 const& attributes [[buffer(5)]]
 , device type_5 const& texels [[buffer(7)]]
-, device type_18& counters [[buffer(9)]]
+, device type_19& counters [[buffer(9)]]
 , device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
@@ -2619,10 +2634,10 @@ struct renderInput {
     uint rng_state = {};
     uint F32_INF = 2139095040u;
     float hit_error = {};
-    type_16 traversal_stack = {};
+    type_17 traversal_stack = {};
     uint ray_count = {};
-    type_19 spawn_dirs = {};
-    type_19 spawn_weights = {};
+    type_20 spawn_dirs = {};
+    type_20 spawn_weights = {};
     uint spawn_count = {};
     render_invocation(metal::uint2(gid.x, gid.y), tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, hit_error, attributes, texels, traversal_stack, ray_count, counters, spawn_dirs, spawn_weights, spawn_count, accum, _buffer_sizes);
     return;

@@ -1304,15 +1304,31 @@ int rem_i32_(int a_4, int b_5)
     return (by_zero_4 ? int(0) : asint(asuint(a_4) - asuint(asint(asuint(divisor_4) * asuint(naga_div(a_4, divisor_4))))));
 }
 
-int wrap_texel(int x_4, int n_3, uint mode)
+int2 wrap_texel_pair(int x_4, int n_3, uint mode)
 {
-    const int _e3 = rem_i32_(x_4, n_3);
-    const int _e5 = rem_i32_(asint(asuint(_e3) + asuint(n_3)), n_3);
-    const int _e8 = rem_i32_(x_4, asint(asuint(int(2)) * asuint(n_3)));
-    const int _e14 = rem_i32_(asint(asuint(_e8) + asuint(asint(asuint(int(2)) * asuint(n_3)))), asint(asuint(int(2)) * asuint(n_3)));
-    int mirror_1 = ((_e14 >= n_3) ? asint(asuint(asint(asuint(asint(asuint(int(2)) * asuint(n_3))) - asuint(int(1)))) - asuint(_e14)) : _e14);
-    int wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror_1 : _e5);
-    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(x_4, int(0)), asint(asuint(n_3) - asuint(int(1)))) : wrapped);
+    int m0_ = (int)0;
+
+    int period = asint(asuint(int(2)) * asuint(n_3));
+    const int _e5 = rem_i32_(x_4, period);
+    m0_ = _e5;
+    int _e7 = m0_;
+    int _e8 = m0_;
+    int _e10 = m0_;
+    m0_ = ((_e10 < int(0)) ? asint(asuint(_e8) + asuint(period)) : _e7);
+    int _e14 = m0_;
+    int _e18 = m0_;
+    int m1_ = ((asint(asuint(_e18) + asuint(int(1))) == period) ? int(0) : asint(asuint(_e14) + asuint(int(1))));
+    int _e23 = m0_;
+    int _e24 = m0_;
+    int _e26 = m0_;
+    int r0_1 = ((_e26 >= n_3) ? asint(asuint(_e24) - asuint(n_3)) : _e23);
+    int r1_1 = ((m1_ >= n_3) ? asint(asuint(m1_) - asuint(n_3)) : m1_);
+    int _e32 = m0_;
+    int _e35 = m0_;
+    int _e37 = m0_;
+    int2 mirror_1 = int2(((_e37 >= n_3) ? asint(asuint(asint(asuint(period) - asuint(int(1)))) - asuint(_e35)) : _e32), ((m1_ >= n_3) ? asint(asuint(asint(asuint(period) - asuint(int(1)))) - asuint(m1_)) : m1_));
+    int2 wrapped = ((mode == TEXTURE_WRAP_MIRROR) ? mirror_1 : int2(r0_1, r1_1));
+    return ((mode == TEXTURE_WRAP_CLAMP) ? min(max(int2(x_4, asint(asuint(x_4) + asuint(int(1)))), (int(0)).xx), (asint(asuint(n_3) - asuint(int(1)))).xx) : wrapped);
 }
 
 float srgb_channel(float c_2)
@@ -1363,20 +1379,20 @@ float4 sample_texture(uint t_1, float2 uv)
     float2 fr = (p_8 - f_1);
     const int _e47 = i32_from_f32_(f_1.x);
     const int _e49 = i32_from_f32_(f_1.y);
-    const int _e50 = wrap_texel(_e47, wi, mu);
-    uint x0_ = uint(_e50);
-    const int _e54 = wrap_texel(asint(asuint(_e47) + asuint(int(1))), wi, mu);
-    uint x1_ = uint(_e54);
-    const int _e56 = wrap_texel(_e49, hi_1, mv);
-    uint y0_ = uint(_e56);
-    const int _e60 = wrap_texel(asint(asuint(_e49) + asuint(int(1))), hi_1, mv);
-    uint y1_ = uint(_e60);
-    const float4 _e62 = texel_at(t_1, x0_, y0_);
-    const float4 _e63 = texel_at(t_1, x1_, y0_);
-    float4 a_7 = lerp(_e62, _e63, (fr.x).xxxx);
-    const float4 _e67 = texel_at(t_1, x0_, y1_);
-    const float4 _e68 = texel_at(t_1, x1_, y1_);
-    float4 b_8 = lerp(_e67, _e68, (fr.x).xxxx);
+    const int2 _e50 = wrap_texel_pair(_e47, wi, mu);
+    uint2 xs = uint2(_e50);
+    const int2 _e52 = wrap_texel_pair(_e49, hi_1, mv);
+    uint2 ys = uint2(_e52);
+    uint x0_ = xs.x;
+    uint x1_ = xs.y;
+    uint y0_ = ys.x;
+    uint y1_ = ys.y;
+    const float4 _e58 = texel_at(t_1, x0_, y0_);
+    const float4 _e59 = texel_at(t_1, x1_, y0_);
+    float4 a_7 = lerp(_e58, _e59, (fr.x).xxxx);
+    const float4 _e63 = texel_at(t_1, x0_, y1_);
+    const float4 _e64 = texel_at(t_1, x1_, y1_);
+    float4 b_8 = lerp(_e63, _e64, (fr.x).xxxx);
     return lerp(a_7, b_8, (fr.y).xxxx);
 }
 

@@ -181,7 +181,7 @@ struct UnlitTexture {
     uint planar;
     char _pad4[4];
 };
-typedef metal::atomic_uint type_20[1];
+typedef metal::atomic_uint type_21[1];
 constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint NO_HIT = 4294967295u;
@@ -1329,18 +1329,33 @@ int rem_i32_(
     return by_zero_4 ? 0 : as_type<int>(as_type<uint>(a_4) - as_type<uint>(as_type<int>(as_type<uint>(divisor_4) * as_type<uint>(naga_div(a_4, divisor_4)))));
 }
 
-int wrap_texel(
+metal::int2 wrap_texel_pair(
     int x_4,
     int n_3,
     uint mode
 ) {
-    int _e3 = rem_i32_(x_4, n_3);
-    int _e5 = rem_i32_(as_type<int>(as_type<uint>(_e3) + as_type<uint>(n_3)), n_3);
-    int _e8 = rem_i32_(x_4, as_type<int>(as_type<uint>(2) * as_type<uint>(n_3)));
-    int _e14 = rem_i32_(as_type<int>(as_type<uint>(_e8) + as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_3)))), as_type<int>(as_type<uint>(2) * as_type<uint>(n_3)));
-    int mirror = (_e14 >= n_3) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_3))) - as_type<uint>(1))) - as_type<uint>(_e14)) : _e14;
-    int wrapped = (mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5;
-    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(x_4, 0), as_type<int>(as_type<uint>(n_3) - as_type<uint>(1))) : wrapped;
+    int m0_ = {};
+    int period = as_type<int>(as_type<uint>(2) * as_type<uint>(n_3));
+    int _e5 = rem_i32_(x_4, period);
+    m0_ = _e5;
+    int _e7 = m0_;
+    int _e8 = m0_;
+    int _e10 = m0_;
+    m0_ = (_e10 < 0) ? as_type<int>(as_type<uint>(_e8) + as_type<uint>(period)) : _e7;
+    int _e14 = m0_;
+    int _e18 = m0_;
+    int m1_ = (as_type<int>(as_type<uint>(_e18) + as_type<uint>(1)) == period) ? 0 : as_type<int>(as_type<uint>(_e14) + as_type<uint>(1));
+    int _e23 = m0_;
+    int _e24 = m0_;
+    int _e26 = m0_;
+    int r0_1 = (_e26 >= n_3) ? as_type<int>(as_type<uint>(_e24) - as_type<uint>(n_3)) : _e23;
+    int r1_1 = (m1_ >= n_3) ? as_type<int>(as_type<uint>(m1_) - as_type<uint>(n_3)) : m1_;
+    int _e32 = m0_;
+    int _e35 = m0_;
+    int _e37 = m0_;
+    metal::int2 mirror = metal::int2((_e37 >= n_3) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(period) - as_type<uint>(1))) - as_type<uint>(_e35)) : _e32, (m1_ >= n_3) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(period) - as_type<uint>(1))) - as_type<uint>(m1_)) : m1_);
+    metal::int2 wrapped = (mode == TEXTURE_WRAP_MIRROR) ? mirror : metal::int2(r0_1, r1_1);
+    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(metal::int2(x_4, as_type<int>(as_type<uint>(x_4) + as_type<uint>(1))), metal::int2(0)), metal::int2(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1)))) : wrapped;
 }
 
 float srgb_channel(
@@ -1403,20 +1418,20 @@ metal::float4 sample_texture(
     metal::float2 fr = p_8 - f_1;
     int _e47 = i32_from_f32_(f_1.x);
     int _e49 = i32_from_f32_(f_1.y);
-    int _e50 = wrap_texel(_e47, wi, mu);
-    uint x0_ = static_cast<uint>(_e50);
-    int _e54 = wrap_texel(as_type<int>(as_type<uint>(_e47) + as_type<uint>(1)), wi, mu);
-    uint x1_ = static_cast<uint>(_e54);
-    int _e56 = wrap_texel(_e49, hi_1, mv);
-    uint y0_ = static_cast<uint>(_e56);
-    int _e60 = wrap_texel(as_type<int>(as_type<uint>(_e49) + as_type<uint>(1)), hi_1, mv);
-    uint y1_ = static_cast<uint>(_e60);
-    metal::float4 _e62 = texel_at(t_1, x0_, y0_, params, texels, _buffer_sizes);
-    metal::float4 _e63 = texel_at(t_1, x1_, y0_, params, texels, _buffer_sizes);
-    metal::float4 a_7 = metal::mix(_e62, _e63, metal::float4(fr.x));
-    metal::float4 _e67 = texel_at(t_1, x0_, y1_, params, texels, _buffer_sizes);
-    metal::float4 _e68 = texel_at(t_1, x1_, y1_, params, texels, _buffer_sizes);
-    metal::float4 b_8 = metal::mix(_e67, _e68, metal::float4(fr.x));
+    metal::int2 _e50 = wrap_texel_pair(_e47, wi, mu);
+    metal::uint2 xs = static_cast<metal::uint2>(_e50);
+    metal::int2 _e52 = wrap_texel_pair(_e49, hi_1, mv);
+    metal::uint2 ys = static_cast<metal::uint2>(_e52);
+    uint x0_ = xs.x;
+    uint x1_ = xs.y;
+    uint y0_ = ys.x;
+    uint y1_ = ys.y;
+    metal::float4 _e58 = texel_at(t_1, x0_, y0_, params, texels, _buffer_sizes);
+    metal::float4 _e59 = texel_at(t_1, x1_, y0_, params, texels, _buffer_sizes);
+    metal::float4 a_7 = metal::mix(_e58, _e59, metal::float4(fr.x));
+    metal::float4 _e63 = texel_at(t_1, x0_, y1_, params, texels, _buffer_sizes);
+    metal::float4 _e64 = texel_at(t_1, x1_, y1_, params, texels, _buffer_sizes);
+    metal::float4 b_8 = metal::mix(_e63, _e64, metal::float4(fr.x));
     return metal::mix(a_7, b_8, metal::float4(fr.y));
 }
 
@@ -1961,7 +1976,7 @@ PassSum add_sample(
     uint first_pass,
     uint per_pass,
     thread uint& ray_count,
-    device type_20& counters,
+    device type_21& counters,
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2022,7 +2037,7 @@ void render_pixel(
     thread type_16& spawn_weights,
     thread uint& spawn_count,
     device type_6 const& texels,
-    device type_20& counters,
+    device type_21& counters,
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2090,7 +2105,7 @@ void render_invocation(
     thread type_16& spawn_weights,
     thread uint& spawn_count,
     device type_6 const& texels,
-    device type_20& counters,
+    device type_21& counters,
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2115,7 +2130,7 @@ struct renderInput {
 , device type_11 const& triangles [[buffer(4)]]
 , device type_15 const& attributes [[buffer(5)]]
 , device type_6 const& texels [[buffer(7)]]
-, device type_20& counters [[buffer(9)]]
+, device type_21& counters [[buffer(9)]]
 , device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {

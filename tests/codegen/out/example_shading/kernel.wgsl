@@ -1031,14 +1031,30 @@ fn rem_i32_(a_4: i32, b_5: i32) -> i32 {
     return select((a_4 - (divisor_4 * (a_4 / divisor_4))), 0i, by_zero_4);
 }
 
-fn wrap_texel(x_4: i32, n_3: i32, mode: u32) -> i32 {
-    let _e3 = rem_i32_(x_4, n_3);
-    let _e5 = rem_i32_((_e3 + n_3), n_3);
-    let _e8 = rem_i32_(x_4, (2i * n_3));
-    let _e14 = rem_i32_((_e8 + (2i * n_3)), (2i * n_3));
-    let mirror = select(_e14, (((2i * n_3) - 1i) - _e14), (_e14 >= n_3));
-    let wrapped = select(_e5, mirror, (mode == TEXTURE_WRAP_MIRROR));
-    return select(wrapped, min(max(x_4, 0i), (n_3 - 1i)), (mode == TEXTURE_WRAP_CLAMP));
+fn wrap_texel_pair(x_4: i32, n_3: i32, mode: u32) -> vec2<i32> {
+    var m0_: i32;
+
+    let period = (2i * n_3);
+    let _e5 = rem_i32_(x_4, period);
+    m0_ = _e5;
+    let _e7 = m0_;
+    let _e8 = m0_;
+    let _e10 = m0_;
+    m0_ = select(_e7, (_e8 + period), (_e10 < 0i));
+    let _e14 = m0_;
+    let _e18 = m0_;
+    let m1_ = select((_e14 + 1i), 0i, ((_e18 + 1i) == period));
+    let _e23 = m0_;
+    let _e24 = m0_;
+    let _e26 = m0_;
+    let r0_1 = select(_e23, (_e24 - n_3), (_e26 >= n_3));
+    let r1_1 = select(m1_, (m1_ - n_3), (m1_ >= n_3));
+    let _e32 = m0_;
+    let _e35 = m0_;
+    let _e37 = m0_;
+    let mirror = vec2<i32>(select(_e32, ((period - 1i) - _e35), (_e37 >= n_3)), select(m1_, ((period - 1i) - m1_), (m1_ >= n_3)));
+    let wrapped = select(vec2<i32>(r0_1, r1_1), mirror, (mode == TEXTURE_WRAP_MIRROR));
+    return select(wrapped, min(max(vec2<i32>(x_4, (x_4 + 1i)), vec2(0i)), vec2((n_3 - 1i))), (mode == TEXTURE_WRAP_CLAMP));
 }
 
 fn srgb_channel(c_2: f32) -> f32 {
@@ -1086,20 +1102,20 @@ fn sample_texture(t_1: u32, uv: vec2<f32>) -> vec4<f32> {
     let fr = (p_8 - f_1);
     let _e47 = i32_from_f32_(f_1.x);
     let _e49 = i32_from_f32_(f_1.y);
-    let _e50 = wrap_texel(_e47, wi, mu);
-    let x0_ = u32(_e50);
-    let _e54 = wrap_texel((_e47 + 1i), wi, mu);
-    let x1_ = u32(_e54);
-    let _e56 = wrap_texel(_e49, hi_1, mv);
-    let y0_ = u32(_e56);
-    let _e60 = wrap_texel((_e49 + 1i), hi_1, mv);
-    let y1_ = u32(_e60);
-    let _e62 = texel_at(t_1, x0_, y0_);
-    let _e63 = texel_at(t_1, x1_, y0_);
-    let a_7 = mix(_e62, _e63, vec4(fr.x));
-    let _e67 = texel_at(t_1, x0_, y1_);
-    let _e68 = texel_at(t_1, x1_, y1_);
-    let b_8 = mix(_e67, _e68, vec4(fr.x));
+    let _e50 = wrap_texel_pair(_e47, wi, mu);
+    let xs = vec2<u32>(_e50);
+    let _e52 = wrap_texel_pair(_e49, hi_1, mv);
+    let ys = vec2<u32>(_e52);
+    let x0_ = xs.x;
+    let x1_ = xs.y;
+    let y0_ = ys.x;
+    let y1_ = ys.y;
+    let _e58 = texel_at(t_1, x0_, y0_);
+    let _e59 = texel_at(t_1, x1_, y0_);
+    let a_7 = mix(_e58, _e59, vec4(fr.x));
+    let _e63 = texel_at(t_1, x0_, y1_);
+    let _e64 = texel_at(t_1, x1_, y1_);
+    let b_8 = mix(_e63, _e64, vec4(fr.x));
     return mix(a_7, b_8, vec4(fr.y));
 }
 

@@ -155,7 +155,7 @@ struct PointLight {
     float inner_range;
     char _pad5[8];
 };
-struct type_17 {
+struct type_18 {
     metal::float3 inner[1];
 };
 struct Frame {
@@ -165,16 +165,16 @@ struct Frame {
     uint slot;
     char _pad4[8];
     metal::float3 sum;
-    type_17 dirs;
-    type_17 weights;
+    type_18 dirs;
+    type_18 weights;
     uint count;
     uint next;
     char _pad9[8];
 };
-struct type_18 {
+struct type_19 {
     Frame inner[1];
 };
-typedef metal::atomic_uint type_21[1];
+typedef metal::atomic_uint type_22[1];
 constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint NO_HIT = 4294967295u;
@@ -1252,18 +1252,33 @@ int rem_i32_(
     return by_zero_4 ? 0 : as_type<int>(as_type<uint>(a_4) - as_type<uint>(as_type<int>(as_type<uint>(divisor_4) * as_type<uint>(naga_div(a_4, divisor_4)))));
 }
 
-int wrap_texel(
+metal::int2 wrap_texel_pair(
     int x_4,
     int n_3,
     uint mode
 ) {
-    int _e3 = rem_i32_(x_4, n_3);
-    int _e5 = rem_i32_(as_type<int>(as_type<uint>(_e3) + as_type<uint>(n_3)), n_3);
-    int _e8 = rem_i32_(x_4, as_type<int>(as_type<uint>(2) * as_type<uint>(n_3)));
-    int _e14 = rem_i32_(as_type<int>(as_type<uint>(_e8) + as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_3)))), as_type<int>(as_type<uint>(2) * as_type<uint>(n_3)));
-    int mirror = (_e14 >= n_3) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_3))) - as_type<uint>(1))) - as_type<uint>(_e14)) : _e14;
-    int wrapped = (mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5;
-    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(x_4, 0), as_type<int>(as_type<uint>(n_3) - as_type<uint>(1))) : wrapped;
+    int m0_ = {};
+    int period = as_type<int>(as_type<uint>(2) * as_type<uint>(n_3));
+    int _e5 = rem_i32_(x_4, period);
+    m0_ = _e5;
+    int _e7 = m0_;
+    int _e8 = m0_;
+    int _e10 = m0_;
+    m0_ = (_e10 < 0) ? as_type<int>(as_type<uint>(_e8) + as_type<uint>(period)) : _e7;
+    int _e14 = m0_;
+    int _e18 = m0_;
+    int m1_ = (as_type<int>(as_type<uint>(_e18) + as_type<uint>(1)) == period) ? 0 : as_type<int>(as_type<uint>(_e14) + as_type<uint>(1));
+    int _e23 = m0_;
+    int _e24 = m0_;
+    int _e26 = m0_;
+    int r0_1 = (_e26 >= n_3) ? as_type<int>(as_type<uint>(_e24) - as_type<uint>(n_3)) : _e23;
+    int r1_1 = (m1_ >= n_3) ? as_type<int>(as_type<uint>(m1_) - as_type<uint>(n_3)) : m1_;
+    int _e32 = m0_;
+    int _e35 = m0_;
+    int _e37 = m0_;
+    metal::int2 mirror = metal::int2((_e37 >= n_3) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(period) - as_type<uint>(1))) - as_type<uint>(_e35)) : _e32, (m1_ >= n_3) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(period) - as_type<uint>(1))) - as_type<uint>(m1_)) : m1_);
+    metal::int2 wrapped = (mode == TEXTURE_WRAP_MIRROR) ? mirror : metal::int2(r0_1, r1_1);
+    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(metal::int2(x_4, as_type<int>(as_type<uint>(x_4) + as_type<uint>(1))), metal::int2(0)), metal::int2(as_type<int>(as_type<uint>(n_3) - as_type<uint>(1)))) : wrapped;
 }
 
 float srgb_channel(
@@ -1326,20 +1341,20 @@ metal::float4 sample_texture(
     metal::float2 fr = p_8 - f_2;
     int _e47 = i32_from_f32_(f_2.x);
     int _e49 = i32_from_f32_(f_2.y);
-    int _e50 = wrap_texel(_e47, wi, mu);
-    uint x0_ = static_cast<uint>(_e50);
-    int _e54 = wrap_texel(as_type<int>(as_type<uint>(_e47) + as_type<uint>(1)), wi, mu);
-    uint x1_ = static_cast<uint>(_e54);
-    int _e56 = wrap_texel(_e49, hi_1, mv);
-    uint y0_ = static_cast<uint>(_e56);
-    int _e60 = wrap_texel(as_type<int>(as_type<uint>(_e49) + as_type<uint>(1)), hi_1, mv);
-    uint y1_ = static_cast<uint>(_e60);
-    metal::float4 _e62 = texel_at(t_1, x0_, y0_, params, texels, _buffer_sizes);
-    metal::float4 _e63 = texel_at(t_1, x1_, y0_, params, texels, _buffer_sizes);
-    metal::float4 a_7 = metal::mix(_e62, _e63, metal::float4(fr.x));
-    metal::float4 _e67 = texel_at(t_1, x0_, y1_, params, texels, _buffer_sizes);
-    metal::float4 _e68 = texel_at(t_1, x1_, y1_, params, texels, _buffer_sizes);
-    metal::float4 b_8 = metal::mix(_e67, _e68, metal::float4(fr.x));
+    metal::int2 _e50 = wrap_texel_pair(_e47, wi, mu);
+    metal::uint2 xs = static_cast<metal::uint2>(_e50);
+    metal::int2 _e52 = wrap_texel_pair(_e49, hi_1, mv);
+    metal::uint2 ys = static_cast<metal::uint2>(_e52);
+    uint x0_ = xs.x;
+    uint x1_ = xs.y;
+    uint y0_ = ys.x;
+    uint y1_ = ys.y;
+    metal::float4 _e58 = texel_at(t_1, x0_, y0_, params, texels, _buffer_sizes);
+    metal::float4 _e59 = texel_at(t_1, x1_, y0_, params, texels, _buffer_sizes);
+    metal::float4 a_7 = metal::mix(_e58, _e59, metal::float4(fr.x));
+    metal::float4 _e63 = texel_at(t_1, x0_, y1_, params, texels, _buffer_sizes);
+    metal::float4 _e64 = texel_at(t_1, x1_, y1_, params, texels, _buffer_sizes);
+    metal::float4 b_8 = metal::mix(_e63, _e64, metal::float4(fr.x));
     return metal::mix(a_7, b_8, metal::float4(fr.y));
 }
 
@@ -1726,14 +1741,14 @@ metal::float3 trace(
     device type_15 const& attributes,
     thread uint& ray_count,
     device type_5 const& texels,
-    thread type_17& spawn_dirs,
-    thread type_17& spawn_weights,
+    thread type_18& spawn_dirs,
+    thread type_18& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 radiance_2 = {};
     float t_4 = {};
-    type_18 stack = {};
+    type_19 stack = {};
     uint depth = {};
     Ray ray_19 = {};
     metal::float3 value = {};
@@ -1771,7 +1786,7 @@ metal::float3 trace(
         metal::float3 _e22 = through_medium(camera_ray, _e20, _e21, instances, _buffer_sizes);
         return _e22;
     }
-    stack = type_18 {};
+    stack = type_19 {};
     depth = 0u;
     ray_19 = camera_ray;
     value = metal::float3(0.0);
@@ -1848,7 +1863,7 @@ metal::float3 trace(
                         Hit _e142 = hit_6;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f_1 = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_17 {}, type_17 {}, n_9, 0u};
+                        f_1 = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_18 {}, type_18 {}, n_9, 0u};
                         i_4 = 0u;
                         uint2 loop_bound_6 = uint2(4294967295u);
                         bool loop_init_3 = true;
@@ -1973,7 +1988,7 @@ PassSum add_sample(
     uint first_pass,
     uint per_pass,
     thread uint& ray_count,
-    device type_21& counters,
+    device type_22& counters,
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2031,10 +2046,10 @@ void render_pixel(
     device type_15 const& attributes,
     thread uint& ray_count,
     device type_5 const& texels,
-    thread type_17& spawn_dirs,
-    thread type_17& spawn_weights,
+    thread type_18& spawn_dirs,
+    thread type_18& spawn_weights,
     thread uint& spawn_count,
-    device type_21& counters,
+    device type_22& counters,
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2089,10 +2104,10 @@ void render_invocation(
     device type_15 const& attributes,
     thread uint& ray_count,
     device type_5 const& texels,
-    thread type_17& spawn_dirs,
-    thread type_17& spawn_weights,
+    thread type_18& spawn_dirs,
+    thread type_18& spawn_weights,
     thread uint& spawn_count,
-    device type_21& counters,
+    device type_22& counters,
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2117,7 +2132,7 @@ struct renderInput {
 , device type_11 const& triangles [[buffer(4)]]
 , device type_15 const& attributes [[buffer(5)]]
 , device type_5 const& texels [[buffer(7)]]
-, device type_21& counters [[buffer(9)]]
+, device type_22& counters [[buffer(9)]]
 , device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
@@ -2127,8 +2142,8 @@ struct renderInput {
     type_13 traversal_stack = {};
     float hit_error = {};
     uint ray_count = {};
-    type_17 spawn_dirs = {};
-    type_17 spawn_weights = {};
+    type_18 spawn_dirs = {};
+    type_18 spawn_weights = {};
     uint spawn_count = {};
     render_invocation(metal::uint2(gid.x, gid.y), tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;

@@ -177,7 +177,7 @@ struct PointLight {
     float inner_range;
     char _pad5[8];
 };
-struct type_19 {
+struct type_20 {
     metal::float3 inner[1];
 };
 struct Frame {
@@ -187,16 +187,16 @@ struct Frame {
     uint slot;
     char _pad4[8];
     metal::float3 sum;
-    type_19 dirs;
-    type_19 weights;
+    type_20 dirs;
+    type_20 weights;
     uint count;
     uint next;
     char _pad9[8];
 };
-struct type_20 {
+struct type_21 {
     Frame inner[4];
 };
-typedef metal::atomic_uint type_23[1];
+typedef metal::atomic_uint type_24[1];
 constant uint WORKGROUP_WIDTH = 8u;
 constant uint WORKGROUP_HEIGHT = 8u;
 constant uint NO_HIT = 4294967295u;
@@ -1579,18 +1579,33 @@ int rem_i32_(
     return by_zero_4 ? 0 : as_type<int>(as_type<uint>(a_4) - as_type<uint>(as_type<int>(as_type<uint>(divisor_4) * as_type<uint>(naga_div(a_4, divisor_4)))));
 }
 
-int wrap_texel(
+metal::int2 wrap_texel_pair(
     int x_4,
     int n_4,
     uint mode
 ) {
-    int _e3 = rem_i32_(x_4, n_4);
-    int _e5 = rem_i32_(as_type<int>(as_type<uint>(_e3) + as_type<uint>(n_4)), n_4);
-    int _e8 = rem_i32_(x_4, as_type<int>(as_type<uint>(2) * as_type<uint>(n_4)));
-    int _e14 = rem_i32_(as_type<int>(as_type<uint>(_e8) + as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_4)))), as_type<int>(as_type<uint>(2) * as_type<uint>(n_4)));
-    int mirror = (_e14 >= n_4) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(2) * as_type<uint>(n_4))) - as_type<uint>(1))) - as_type<uint>(_e14)) : _e14;
-    int wrapped = (mode == TEXTURE_WRAP_MIRROR) ? mirror : _e5;
-    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(x_4, 0), as_type<int>(as_type<uint>(n_4) - as_type<uint>(1))) : wrapped;
+    int m0_ = {};
+    int period = as_type<int>(as_type<uint>(2) * as_type<uint>(n_4));
+    int _e5 = rem_i32_(x_4, period);
+    m0_ = _e5;
+    int _e7 = m0_;
+    int _e8 = m0_;
+    int _e10 = m0_;
+    m0_ = (_e10 < 0) ? as_type<int>(as_type<uint>(_e8) + as_type<uint>(period)) : _e7;
+    int _e14 = m0_;
+    int _e18 = m0_;
+    int m1_ = (as_type<int>(as_type<uint>(_e18) + as_type<uint>(1)) == period) ? 0 : as_type<int>(as_type<uint>(_e14) + as_type<uint>(1));
+    int _e23 = m0_;
+    int _e24 = m0_;
+    int _e26 = m0_;
+    int r0_1 = (_e26 >= n_4) ? as_type<int>(as_type<uint>(_e24) - as_type<uint>(n_4)) : _e23;
+    int r1_1 = (m1_ >= n_4) ? as_type<int>(as_type<uint>(m1_) - as_type<uint>(n_4)) : m1_;
+    int _e32 = m0_;
+    int _e35 = m0_;
+    int _e37 = m0_;
+    metal::int2 mirror = metal::int2((_e37 >= n_4) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(period) - as_type<uint>(1))) - as_type<uint>(_e35)) : _e32, (m1_ >= n_4) ? as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(period) - as_type<uint>(1))) - as_type<uint>(m1_)) : m1_);
+    metal::int2 wrapped = (mode == TEXTURE_WRAP_MIRROR) ? mirror : metal::int2(r0_1, r1_1);
+    return (mode == TEXTURE_WRAP_CLAMP) ? metal::min(metal::max(metal::int2(x_4, as_type<int>(as_type<uint>(x_4) + as_type<uint>(1))), metal::int2(0)), metal::int2(as_type<int>(as_type<uint>(n_4) - as_type<uint>(1)))) : wrapped;
 }
 
 float srgb_channel(
@@ -1653,20 +1668,20 @@ metal::float4 sample_texture(
     metal::float2 fr = p_8 - f_3;
     int _e47 = i32_from_f32_(f_3.x);
     int _e49 = i32_from_f32_(f_3.y);
-    int _e50 = wrap_texel(_e47, wi, mu);
-    uint x0_ = static_cast<uint>(_e50);
-    int _e54 = wrap_texel(as_type<int>(as_type<uint>(_e47) + as_type<uint>(1)), wi, mu);
-    uint x1_ = static_cast<uint>(_e54);
-    int _e56 = wrap_texel(_e49, hi_2, mv);
-    uint y0_ = static_cast<uint>(_e56);
-    int _e60 = wrap_texel(as_type<int>(as_type<uint>(_e49) + as_type<uint>(1)), hi_2, mv);
-    uint y1_ = static_cast<uint>(_e60);
-    metal::float4 _e62 = texel_at(t_2, x0_, y0_, params, texels, _buffer_sizes);
-    metal::float4 _e63 = texel_at(t_2, x1_, y0_, params, texels, _buffer_sizes);
-    metal::float4 a_8 = metal::mix(_e62, _e63, metal::float4(fr.x));
-    metal::float4 _e67 = texel_at(t_2, x0_, y1_, params, texels, _buffer_sizes);
-    metal::float4 _e68 = texel_at(t_2, x1_, y1_, params, texels, _buffer_sizes);
-    metal::float4 b_9 = metal::mix(_e67, _e68, metal::float4(fr.x));
+    metal::int2 _e50 = wrap_texel_pair(_e47, wi, mu);
+    metal::uint2 xs = static_cast<metal::uint2>(_e50);
+    metal::int2 _e52 = wrap_texel_pair(_e49, hi_2, mv);
+    metal::uint2 ys = static_cast<metal::uint2>(_e52);
+    uint x0_ = xs.x;
+    uint x1_ = xs.y;
+    uint y0_ = ys.x;
+    uint y1_ = ys.y;
+    metal::float4 _e58 = texel_at(t_2, x0_, y0_, params, texels, _buffer_sizes);
+    metal::float4 _e59 = texel_at(t_2, x1_, y0_, params, texels, _buffer_sizes);
+    metal::float4 a_8 = metal::mix(_e58, _e59, metal::float4(fr.x));
+    metal::float4 _e63 = texel_at(t_2, x0_, y1_, params, texels, _buffer_sizes);
+    metal::float4 _e64 = texel_at(t_2, x1_, y1_, params, texels, _buffer_sizes);
+    metal::float4 b_9 = metal::mix(_e63, _e64, metal::float4(fr.x));
     return metal::mix(a_8, b_9, metal::float4(fr.y));
 }
 
@@ -2114,14 +2129,14 @@ metal::float3 trace(
     device type_17 const& attributes,
     thread uint& ray_count,
     device type_5 const& texels,
-    thread type_19& spawn_dirs,
-    thread type_19& spawn_weights,
+    thread type_20& spawn_dirs,
+    thread type_20& spawn_weights,
     thread uint& spawn_count,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float3 radiance_2 = {};
     float t_5 = {};
-    type_20 stack_1 = {};
+    type_21 stack_1 = {};
     uint depth = {};
     Ray ray_25 = {};
     metal::float3 value = {};
@@ -2159,7 +2174,7 @@ metal::float3 trace(
         metal::float3 _e22 = through_medium(camera_ray, _e20, _e21, instances, _buffer_sizes);
         return _e22;
     }
-    stack_1 = type_20 {};
+    stack_1 = type_21 {};
     depth = 0u;
     ray_25 = camera_ray;
     value = metal::float3(0.0);
@@ -2236,7 +2251,7 @@ metal::float3 trace(
                         Hit _e142 = hit_6;
                         float _e143 = s_error;
                         uint _e145 = s_c.slot;
-                        f_1 = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_19 {}, type_19 {}, n_11, 0u};
+                        f_1 = Frame {_e141, _e142, _e143, _e145, {}, metal::float3(0.0), type_20 {}, type_20 {}, n_11, 0u};
                         i_6 = 0u;
                         uint2 loop_bound_9 = uint2(4294967295u);
                         bool loop_init_4 = true;
@@ -2361,7 +2376,7 @@ PassSum add_sample(
     uint first_pass,
     uint per_pass,
     thread uint& ray_count,
-    device type_23& counters,
+    device type_24& counters,
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2420,10 +2435,10 @@ void render_pixel(
     device type_17 const& attributes,
     thread uint& ray_count,
     device type_5 const& texels,
-    thread type_19& spawn_dirs,
-    thread type_19& spawn_weights,
+    thread type_20& spawn_dirs,
+    thread type_20& spawn_weights,
     thread uint& spawn_count,
-    device type_23& counters,
+    device type_24& counters,
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2479,10 +2494,10 @@ void render_invocation(
     device type_17 const& attributes,
     thread uint& ray_count,
     device type_5 const& texels,
-    thread type_19& spawn_dirs,
-    thread type_19& spawn_weights,
+    thread type_20& spawn_dirs,
+    thread type_20& spawn_weights,
     thread uint& spawn_count,
-    device type_23& counters,
+    device type_24& counters,
     device type_11& accum,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -2507,7 +2522,7 @@ struct renderInput {
 , device type_11 const& triangles [[buffer(4)]]
 , device type_17 const& attributes [[buffer(5)]]
 , device type_5 const& texels [[buffer(7)]]
-, device type_23& counters [[buffer(9)]]
+, device type_24& counters [[buffer(9)]]
 , device type_11& accum [[buffer(8)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(10)]]
 ) {
@@ -2518,8 +2533,8 @@ struct renderInput {
     uint F32_NEG_INF = 4286578688u;
     float hit_error = {};
     uint ray_count = {};
-    type_19 spawn_dirs = {};
-    type_19 spawn_weights = {};
+    type_20 spawn_dirs = {};
+    type_20 spawn_weights = {};
     uint spawn_count = {};
     render_invocation(metal::uint2(gid.x, gid.y), tile, frame, scratch, rng_state, params, F32_INF, instances, nodes, triangles, traversal_stack, F32_NEG_INF, hit_error, attributes, ray_count, texels, spawn_dirs, spawn_weights, spawn_count, counters, accum, _buffer_sizes);
     return;
