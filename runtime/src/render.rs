@@ -81,7 +81,7 @@ use crate::resolve::{ResolveError, ResolveTarget, Resolver};
 pub use crate::scene::FieldTarget;
 use crate::scene::{
     AssetStore, Entities, EntityOptions, FrameUniforms, GpuScene, ObjectGeometry, SceneError,
-    TablePlacement, UniformTables, UploadReport,
+    SrgbTextures, TablePlacement, UniformTables, UploadReport,
 };
 use rtc_compiler::sema::hir::{ConstValue, Instance, Program};
 
@@ -117,6 +117,10 @@ pub struct RenderOptions {
     /// of many small objects. For one-shot renders: moving a flattened object undoes it. The
     /// image differs only by the rounding of the baked vertices and normals.
     pub flatten: bool,
+    /// How 8-bit sRGB textures are stored ([`SrgbTextures`]: decoded to linear half floats
+    /// while they fit a budget, unless this or `RTC_SRGB_TEXTURES=encoded` says encoded). The
+    /// image differs by the half floats' rounding, about 2^-11 of a texel's value.
+    pub srgb_textures: SrgbTextures,
 }
 
 /// Why a scene could not be rendered.
@@ -257,6 +261,8 @@ pub struct RenderStats {
     /// Objects flattened into shared world-space BVHs ([`RenderOptions::flatten`]), and those
     /// BVHs.
     pub flattened: (u32, u32),
+    /// 8-bit sRGB textures stored decoded as linear half floats ([`RenderOptions::srgb_textures`]).
+    pub decoded_textures: u32,
     /// Asset files (meshes, images, glTF files) read so far in this renderer's life.
     pub files_read: u32,
     /// Samples per pixel in the accumulation after these passes.
@@ -755,6 +761,10 @@ impl<'g> Renderer<'g> {
                 bvh: options.bvh,
                 asset_roots: options.asset_roots.clone(),
                 flatten: options.flatten,
+                srgb_textures: match SrgbTextures::from_env() {
+                    SrgbTextures::Encoded => SrgbTextures::Encoded,
+                    SrgbTextures::Decoded => options.srgb_textures,
+                },
             },
             &mut store,
         )?;
@@ -1332,6 +1342,7 @@ impl<'g> Renderer<'g> {
             lights: self.entities.lights().len() as u32,
             blas_builds: store.blas_builds,
             flattened: (es.flattened_objects, es.flat_bvhs),
+            decoded_textures: es.decoded_textures,
             tlas_builds: es.tlas_builds,
             files_read: store.meshes_read + store.images_read + store.models_read,
             accumulated_samples: self.accumulated_samples(),

@@ -318,8 +318,9 @@ fn the_thesis_scene_decodes_from_the_manifest_alone() {
         [0, 4].map(|o| d.f32_at("params", d.param_byte(l, at, "uv_scale") + o)),
         [20.0; 2]
     );
-    // Its texture: the record the `texture` field names holds checker.png's size and format, and
-    // its texels lie inside `texels`.
+    // Its texture: the record the `texture` field names holds checker.png's size and format (the
+    // 8-bit sRGB image stored decoded, as linear half floats: two words a texel), and its texels
+    // lie inside `texels`.
     let texture = d.u32_at("params", d.param_byte(l, at, "texture")) as usize;
     let png = std::fs::read(thesis_dir().join("checker.png")).expect("checker.png");
     let be = |o: usize| u32::from_be_bytes(png[o..o + 4].try_into().expect("4 bytes"));
@@ -327,10 +328,10 @@ fn the_thesis_scene_decodes_from_the_manifest_alone() {
     assert_eq!(d.record_u32("texture", texture, "height"), be(20));
     assert_eq!(
         d.record_u32("texture", texture, "format"),
-        d.constant("TEXTURE_FORMAT_RGBA8_SRGB")
+        d.constant("TEXTURE_FORMAT_RGBA16F")
     );
     let texel_base = d.record_u32("texture", texture, "texel_base") as usize;
-    assert!((texel_base + (be(16) * be(20)) as usize) * 4 <= buffers["texels"].len());
+    assert!((texel_base + 2 * (be(16) * be(20)) as usize) * 4 <= buffers["texels"].len());
 
     // Lights: the light table's entries name the two PointLights in scene order.
     assert_eq!(d.frame("light_count"), 2);

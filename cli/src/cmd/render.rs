@@ -687,8 +687,15 @@ pub fn summary(s: &RenderStats, output: &Path) -> String {
     if let Some(cache) = &s.pipeline_cache {
         out.push_str(&format!("    pipeline cache: {cache}\n"));
     }
+    let decoded = match s.decoded_textures {
+        0 => String::new(),
+        n => format!(
+            "; {n} sRGB texture{} stored decoded, as linear half floats",
+            if n == 1 { "" } else { "s" }
+        ),
+    };
     out.push_str(&format!(
-        "  upload    {:>10.2} ms  ({:.2} MB)\n",
+        "  upload    {:>10.2} ms  ({:.2} MB{decoded})\n",
         s.upload_ms,
         s.bytes_uploaded as f64 / 1e6
     ));

@@ -27,7 +27,10 @@
 //! PNG and JPEG (8 or 16 bits per channel, grey or colour, with or without alpha) become
 //! `Rgba8Srgb` (16-bit channels are rounded to 8 bits; grey is replicated; missing alpha is 1).
 //! HDR and EXR (floating point) become `Rgba16F`. [`solid_texture`] is `Rgba16F` so a colour is
-//! stored linearly, without an sRGB round trip, and may exceed 1.
+//! stored linearly, without an sRGB round trip, and may exceed 1. The entity stage then stores
+//! `Rgba8Srgb` textures decoded, as `Rgba16F` ([`TextureData::decoded_srgb`]), while they fit its
+//! budget (`scene::SrgbTextures`): the kernel's lookup then reads two words a texel and decodes
+//! nothing.
 //!
 //! Invariants: `words.len() == width * height * format.words_per_texel()`; `1 <= width, height
 //! <= MAX_TEXTURE_SIZE`, and a decoder allocates at most [`MAX_DECODE_BYTES`]. Decoding never panics on bad bytes; it returns [`AssetError`].
@@ -155,6 +158,37 @@ impl TextureData {
             self.format = TextureFormat::Rgba8Unorm;
         }
         self
+    }
+
+    /// An `Rgba8Srgb` texture decoded to linear `Rgba16F` (twice the words), or `None` for any
+    /// other format. Each channel is [`srgb_to_linear`] (alpha `a / 255`) rounded once to the
+    /// nearest half float, so a lookup returns what the kernel's decoding of the 8-bit texel
+    /// returns up to that rounding (a relative 2^-11), without the kernel's three `pow`s a texel.
+    pub fn decoded_srgb(&self) -> Option<TextureData> {
+        if self.format != TextureFormat::Rgba8Srgb {
+            return None;
+        }
+        let half = |x: f32| f16::from_f32(x).to_bits();
+        let colour: [u16; 256] = std::array::from_fn(|k| half(srgb_to_linear(k as f32 / 255.0)));
+        let alpha: [u16; 256] = std::array::from_fn(|k| half(k as f32 / 255.0));
+        let mut words = Vec::with_capacity(self.words.len() * 2);
+        for &w in &self.words {
+            let [r, g, b, a] = w.to_le_bytes();
+            // Every byte indexes a 256-entry table: `get` never misses.
+            let at = |table: &[u16; 256], c: u8| {
+                u32::from(table.get(usize::from(c)).copied().unwrap_or(0))
+            };
+            words.push(at(&colour, r) | at(&colour, g) << 16);
+            words.push(at(&colour, b) | at(&alpha, a) << 16);
+        }
+        Some(TextureData {
+            width: self.width,
+            height: self.height,
+            format: TextureFormat::Rgba16F,
+            words,
+            nonfinite_texels: self.nonfinite_texels,
+            sampler: self.sampler,
+        })
     }
 
     /// The inverse of [`TextureData::linear`]: `Rgba8Unorm` becomes `Rgba8Srgb`.

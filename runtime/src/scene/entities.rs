@@ -59,7 +59,71 @@ pub struct EntityOptions {
     /// Flatten static objects with meshes of their own into shared world-space BVHs
     /// (`flatten.rs`): for one-shot renders. Moving a flattened object undoes it.
     pub flatten: bool,
+    /// How 8-bit sRGB textures are stored in `texels` ([`SrgbTextures`]).
+    pub srgb_textures: SrgbTextures,
 }
+
+/// How the entity stage stores 8-bit sRGB textures (PNG, JPEG, glTF colour textures) in `texels`.
+///
+/// Decoding an sRGB texel takes the kernel three `pow`s, and a bilinear lookup reads four texels:
+/// on lavapipe that was about 4 % of the thesis scene's frame (its one textured floor) and 15 % of
+/// a frame of that floor alone (docs/bench/lavapipe.md). Stored decoded, as linear half floats,
+/// a texel is two words read and no arithmetic, at twice the memory; renderers on CPUs make the
+/// same trade (Mitsuba converts bitmaps to linear floats on load; pbrt-v4 decodes 8-bit sRGB
+/// through a 256-entry table).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum SrgbTextures {
+    /// Decoded to linear `Rgba16F` ([`crate::assets::TextureData::decoded_srgb`]) while every
+    /// texture of the scene, decoded ones counted twice, fits in [`LINEAR_TEXEL_BUDGET`] bytes;
+    /// textures are taken in the scene's texture order, and one that does not fit stays 8-bit.
+    #[default]
+    Decoded,
+    /// Kept 8-bit sRGB and decoded by the kernel at each lookup (`RTC_SRGB_TEXTURES=encoded`).
+    Encoded,
+}
+
+/// The environment variable that keeps 8-bit sRGB textures encoded (`encoded`) for comparisons;
+/// any other value, or none, leaves [`SrgbTextures::Decoded`].
+pub const SRGB_TEXTURES_ENV: &str = "RTC_SRGB_TEXTURES";
+
+impl SrgbTextures {
+    /// [`SrgbTextures::Encoded`] if [`SRGB_TEXTURES_ENV`] says `encoded`, else the default.
+    pub fn from_env() -> Self {
+        match std::env::var(SRGB_TEXTURES_ENV).as_deref() {
+            Ok("encoded") => SrgbTextures::Encoded,
+            _ => SrgbTextures::Decoded,
+        }
+    }
+}
+
+/// Which textures [`SrgbTextures::Decoded`] stores decoded, from each texture's `(is 8-bit sRGB,
+/// bytes)` in the scene's order: every 8-bit sRGB texture whose decoding (twice its bytes) keeps
+/// all textures within `budget` bytes, in order; one that does not fit stays 8-bit and a later,
+/// smaller one may still be decoded.
+pub(super) fn textures_to_decode(
+    textures: impl Iterator<Item = (bool, u64)> + Clone,
+    budget: u64,
+) -> Vec<bool> {
+    let mut total: u64 = textures
+        .clone()
+        .map(|(_, bytes)| bytes)
+        .fold(0, u64::saturating_add);
+    textures
+        .map(|(srgb, bytes)| {
+            let grown = total.saturating_add(bytes);
+            let decode = srgb && grown <= budget;
+            if decode {
+                total = grown;
+            }
+            decode
+        })
+        .collect()
+}
+
+/// The most bytes of `texels` up to which [`SrgbTextures::Decoded`] stores sRGB textures decoded:
+/// half of WebGPU's default 128 MiB storage binding, so a scene whose 8-bit textures are close to
+/// the limit still binds them, and the doubled upload stays bounded.
+pub const LINEAR_TEXEL_BUDGET: u64 = 64 << 20;
 
 /// A type id and the word offset of an instance in `params`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -259,6 +323,8 @@ pub struct EntityStats {
     pub flattened_objects: u32,
     /// Those shared BVHs.
     pub flat_bvhs: u32,
+    /// 8-bit sRGB textures stored decoded as linear half floats ([`SrgbTextures::Decoded`]).
+    pub decoded_textures: u32,
 }
 
 /// The scene's entities: everything the GPU stage uploads, as plain data.
@@ -557,10 +623,26 @@ impl Entities {
         to_u32("triangle slots", triangles.len())?;
         stats.blas_ms = ms_since(start);
 
-        // 4. Texels.
+        // 4. Texels: 8-bit sRGB textures decoded to half floats while they fit the budget.
         let mut texels = Vec::new();
         let mut textures = Vec::with_capacity(cache.textures.len());
-        for (key, data) in &cache.textures {
+        let budget = match options.srgb_textures {
+            SrgbTextures::Decoded => LINEAR_TEXEL_BUDGET,
+            SrgbTextures::Encoded => 0,
+        };
+        let decode = textures_to_decode(
+            cache.textures.iter().map(|(_, data)| {
+                (
+                    data.format == TextureFormat::Rgba8Srgb,
+                    4 * data.words.len() as u64,
+                )
+            }),
+            budget,
+        );
+        for ((key, data), decode) in cache.textures.iter().zip(decode) {
+            let decoded = if decode { data.decoded_srgb() } else { None };
+            stats.decoded_textures += u32::from(decoded.is_some());
+            let data = decoded.as_ref().unwrap_or(data);
             textures.push(TextureEntity {
                 source: key.describe(),
                 width: data.width,

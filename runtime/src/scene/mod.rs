@@ -119,7 +119,8 @@ pub(crate) mod upload_for_tests {
 pub use encode::{decode_octahedral, octahedral, pack_snorm2x16, unpack_snorm2x16};
 pub use entities::{
     Dirty, Entities, EntityOptions, EntityStats, FieldTarget, LightEntity, MeshEntity,
-    ObjectEntity, ObjectGeometry, TextureEntity, TypedOffset, Versions,
+    ObjectEntity, ObjectGeometry, SrgbTextures, TextureEntity, TypedOffset, Versions,
+    LINEAR_TEXEL_BUDGET, SRGB_TEXTURES_ENV,
 };
 pub use gpu_types::{
     element_size, field_offset, struct_align, struct_size, FrameUniforms, GpuInstance,

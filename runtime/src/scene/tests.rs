@@ -842,3 +842,71 @@ fn an_empty_scene_has_an_empty_tlas() {
     assert_eq!(e.frame_uniforms(1, 1).instance_count, 0);
     assert!(e.triangles().is_empty() && e.params().len() >= 4);
 }
+
+#[test]
+fn srgb_textures_are_decoded_in_order_while_all_texels_fit_the_budget() {
+    use super::entities::textures_to_decode;
+    let plan =
+        |textures: &[(bool, u64)], budget| textures_to_decode(textures.iter().copied(), budget);
+    // 30 bytes in all: decoding the first sRGB texture (10) makes 40, the second (4) then 44.
+    let textures = [(true, 10), (false, 16), (true, 4)];
+    assert_eq!(plan(&textures, 44), [true, false, true]);
+    // At 43 the first still fits (40) and the second no longer (44); at 39 the first does not
+    // fit (40), the smaller second does (34).
+    assert_eq!(plan(&textures, 43), [true, false, false]);
+    assert_eq!(plan(&textures, 39), [false, false, true]);
+    // A budget of 0 (`SrgbTextures::Encoded`) decodes nothing; other formats never are.
+    assert_eq!(plan(&textures, 0), [false, false, false]);
+    assert_eq!(plan(&[(false, 1)], u64::MAX), [false]);
+    assert!(plan(&[], 0).is_empty());
+}
+
+#[test]
+fn scene_textures_from_8_bit_srgb_images_are_stored_decoded_unless_kept_encoded() {
+    let dir = std::env::temp_dir().join(format!("rtc_srgb_entities_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let png: image::RgbaImage =
+        image::ImageBuffer::from_raw(2, 1, vec![0, 64, 128, 255, 255, 200, 100, 7]).unwrap();
+    png.save(dir.join("t.png")).unwrap();
+    let text = format!(
+        "{HEADER}{TEXTURED}
+scene s {{
+    camera Pinhole {{}}
+    object a {{
+        geometry: cube_mesh(),
+        material: Textured {{ tex: load_image(\"t.png\"), shape: cube_mesh() }},
+    }}
+    object b {{
+        geometry: cube_mesh(),
+        material: Textured {{ tex: solid_texture(vec4f(0.5)), shape: cube_mesh() }},
+    }}
+}}"
+    );
+    let (p, l) = compile_at(dir.join("s.rt").to_str().unwrap(), &text);
+    let tex_word = field_word(&p, "Textured", "tex");
+    let image = crate::assets::load_image(dir.join("t.png")).unwrap();
+    for (mode, decoded) in [(SrgbTextures::Decoded, 1), (SrgbTextures::Encoded, 0)] {
+        let options = EntityOptions {
+            srgb_textures: mode,
+            ..EntityOptions::default()
+        };
+        let e = Entities::build(&p, &p.scenes[l.scene], &l, &options).expect("entities");
+        assert_eq!(e.stats().decoded_textures, decoded, "{mode:?}");
+        // Object a's texture record: [texel_base, width, height, format].
+        let rec = e.params()[e.objects()[0].material.offset as usize + tex_word] as usize;
+        let [base, w, h, format] = e.params()[rec..rec + 4] else {
+            unreachable!()
+        };
+        let (want_format, want) = match mode {
+            SrgbTextures::Decoded => (1, image.decoded_srgb().unwrap().words),
+            SrgbTextures::Encoded => (0, image.words.clone()),
+        };
+        assert_eq!((w, h, format), (2, 1, want_format), "{mode:?}");
+        assert_eq!(
+            e.texels()[base as usize..][..want.len()],
+            want[..],
+            "{mode:?}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

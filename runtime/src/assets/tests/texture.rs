@@ -257,3 +257,57 @@ fn sampling_follows_the_wrap_mode_and_filter() {
     assert_eq!(srgb.format, TextureFormat::Rgba8Srgb);
     assert_eq!(srgb.clone().linear().format, TextureFormat::Rgba8Unorm);
 }
+
+#[test]
+fn decoded_srgb_textures_hold_each_byte_as_the_nearest_half_float_of_its_linear_value() {
+    // 256 texels: red takes every byte value, green its complement, blue another order, alpha too.
+    let words: Vec<u32> = (0..=255u8)
+        .map(|r| u32::from_le_bytes([r, 255 - r, r.wrapping_mul(97), r.wrapping_add(3)]))
+        .collect();
+    let sampler = Sampler {
+        wrap_u: Wrap::ClampToEdge,
+        ..Sampler::default()
+    };
+    let srgb = TextureData {
+        width: 16,
+        height: 16,
+        format: TextureFormat::Rgba8Srgb,
+        words,
+        nonfinite_texels: 0,
+        sampler,
+    };
+    let decoded = srgb.decoded_srgb().expect("an sRGB texture decodes");
+    assert_eq!(
+        (
+            decoded.width,
+            decoded.height,
+            decoded.format,
+            decoded.sampler
+        ),
+        (16, 16, TextureFormat::Rgba16F, sampler)
+    );
+    assert_eq!(decoded.words.len(), 2 * srgb.words.len());
+    let half = |x: f32| half::f16::from_f32(x).to_f32();
+    for y in 0..16 {
+        for x in 0..16 {
+            let want = srgb.texel(x, y).unwrap();
+            let got = decoded.texel(x, y).unwrap();
+            // Exactly the half float nearest the 8-bit texel's decoding (alpha: byte / 255).
+            assert_eq!(got, want.map(half), "texel ({x}, {y})");
+            for (g, w) in got.iter().zip(want) {
+                assert!(
+                    (g - w).abs() <= w.abs() / 2048.0,
+                    "texel ({x}, {y}): {g} against {w}"
+                );
+            }
+        }
+    }
+    assert_eq!(
+        decoded.texel(0, 0).unwrap(),
+        [0.0, 1.0, 0.0, half(3.0 / 255.0)]
+    );
+    // Only 8-bit sRGB textures decode.
+    assert!(srgb.clone().linear().decoded_srgb().is_none());
+    assert!(decoded.decoded_srgb().is_none());
+    assert!(solid_texture([0.5; 4]).decoded_srgb().is_none());
+}
