@@ -171,15 +171,16 @@ impl TextureData {
         let half = |x: f32| f16::from_f32(x).to_bits();
         let colour: [u16; 256] = std::array::from_fn(|k| half(srgb_to_linear(k as f32 / 255.0)));
         let alpha: [u16; 256] = std::array::from_fn(|k| half(k as f32 / 255.0));
-        let mut words = Vec::with_capacity(self.words.len() * 2);
-        for &w in &self.words {
+        // Every byte indexes a 256-entry table: `get` never misses.
+        let at =
+            |table: &[u16; 256], c: u8| u32::from(table.get(usize::from(c)).copied().unwrap_or(0));
+        let mut words = vec![0; self.words.len() * 2];
+        for (pair, &w) in words.chunks_exact_mut(2).zip(&self.words) {
             let [r, g, b, a] = w.to_le_bytes();
-            // Every byte indexes a 256-entry table: `get` never misses.
-            let at = |table: &[u16; 256], c: u8| {
-                u32::from(table.get(usize::from(c)).copied().unwrap_or(0))
-            };
-            words.push(at(&colour, r) | at(&colour, g) << 16);
-            words.push(at(&colour, b) | at(&alpha, a) << 16);
+            if let [rg, ba] = pair {
+                *rg = at(&colour, r) | at(&colour, g) << 16;
+                *ba = at(&colour, b) | at(&alpha, a) << 16;
+            }
         }
         Some(TextureData {
             width: self.width,
