@@ -66,8 +66,8 @@ pub struct EntityOptions {
 /// How the entity stage stores 8-bit sRGB textures (PNG, JPEG, glTF colour textures) in `texels`.
 ///
 /// Decoding an sRGB texel takes the kernel three `pow`s, and a bilinear lookup reads four texels:
-/// on lavapipe that was about 4 % of the thesis scene's frame (its one textured floor) and 15 % of
-/// a frame of that floor alone (docs/bench/lavapipe.md). Stored decoded, as linear half floats,
+/// on lavapipe, storing them decoded made a frame of the thesis scene's textured floor alone about
+/// 13 % shorter (docs/bench/lavapipe.md, "Texture lookups: sRGB stored decoded, one division per axis (2026-12-07, evening)"). Stored decoded, as linear half floats,
 /// a texel is two words read and no arithmetic, at twice the memory; renderers on CPUs make the
 /// same trade (Mitsuba converts bitmaps to linear floats on load; pbrt-v4 decodes 8-bit sRGB
 /// through a 256-entry table).
