@@ -15,6 +15,7 @@ mod common;
 
 use std::path::Path;
 
+use common::image::srgb_to_linear;
 use common::{gpu_or_skip, temp_dir};
 use rtc_compiler::driver::Options;
 use rtc_compiler::kernel::{compile_scene_with, KernelOptions};
@@ -47,14 +48,6 @@ const QUADS: [(u32, u32, u32); 4] = [
     (MIRROR, MIRROR, NEAREST),
     (CLAMP, MIRROR, LINEAR),
 ];
-
-fn srgb_to_linear(c: f64) -> f64 {
-    if c <= 0.04045 {
-        c / 12.92
-    } else {
-        ((c + 0.055) / 1.055).powf(2.4)
-    }
-}
 
 /// Texel `(x, y)` of [`TEXELS`] as linear RGB.
 fn texel(x: i64, y: i64) -> [f64; 3] {

@@ -14,7 +14,7 @@
 
 mod common;
 
-use common::image::{PixelCheck, Tolerance};
+use common::image::{srgb_to_linear, PixelCheck, Tolerance};
 use common::{gpu_or_skip, temp_dir};
 use rtc_compiler::driver::Options;
 use rtc_compiler::kernel::{compile_scene_with, KernelOptions};
@@ -23,14 +23,6 @@ use rtc_runtime::render::RenderOptions;
 use rtc_runtime::scene::SrgbTextures;
 
 const SIDE: u32 = 16;
-
-fn srgb_to_linear(c: f64) -> f64 {
-    if c <= 0.04045 {
-        c / 12.92
-    } else {
-        ((c + 0.055) / 1.055).powf(2.4)
-    }
-}
 
 /// The sRGB bytes of texel `(x, y)`.
 fn texel(x: u32, y: u32) -> [u8; 4] {

@@ -10,6 +10,16 @@
 
 use std::fmt::Write as _;
 
+/// The sRGB transfer function, decoding (IEC 61966-2-1), in `f64`: the independent reference the
+/// texture tests compare the kernel's and the runtime's decodings with.
+pub fn srgb_to_linear(c: f64) -> f64 {
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
+}
+
 /// How far a value may be from its expectation: `abs + rel · |want|`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Tolerance {
