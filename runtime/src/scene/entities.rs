@@ -623,7 +623,8 @@ impl Entities {
         to_u32("triangle slots", triangles.len())?;
         stats.blas_ms = ms_since(start);
 
-        // 4. Texels: 8-bit sRGB textures decoded to half floats while they fit the budget.
+        // 4. Texels: 8-bit sRGB textures decoded to half floats while they fit the budget (the
+        //    store keeps each decoded copy for the next build).
         let mut texels = Vec::new();
         let mut textures = Vec::with_capacity(cache.textures.len());
         let budget = match options.srgb_textures {
@@ -640,7 +641,11 @@ impl Entities {
             budget,
         );
         for ((key, data), decode) in cache.textures.iter().zip(decode) {
-            let decoded = if decode { data.decoded_srgb() } else { None };
+            let decoded = if decode {
+                cache.store.decoded_texture(key, data)
+            } else {
+                None
+            };
             stats.decoded_textures += u32::from(decoded.is_some());
             let data = decoded.as_ref().unwrap_or(data);
             textures.push(TextureEntity {

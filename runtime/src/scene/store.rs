@@ -7,7 +7,9 @@
 //! file's **content hash**; its length and modification time ([`Stamp`]) decide, without reading
 //! the file, whether the hash can have changed. A file whose stamp changed is hashed again: same
 //! content, and the entry (and its object-level BVH) is kept under the new stamp; new content,
-//! and it is loaded again. Object-level BVHs are keyed by mesh, content and builder preset.
+//! and it is loaded again. Object-level BVHs are keyed by mesh, content and builder preset, and
+//! the decoded copies of 8-bit sRGB textures (`scene::SrgbTextures`) by the texture they were
+//! decoded from, so an unchanged texture is decoded once over any number of rebuilds.
 //!
 //! Invariants: the store never holds data of a file whose current stamp differs from the one it
 //! was read with (every lookup compares stamps first); counters only grow, so a caller can tell
@@ -103,6 +105,8 @@ pub struct StoreCounters {
     pub models_read: u32,
     /// Object-level BVHs built.
     pub blas_builds: u32,
+    /// 8-bit sRGB textures decoded to linear half floats (`TextureData::decoded_srgb`).
+    pub textures_decoded: u32,
     /// Lookups answered from the store.
     pub reused: u32,
 }
@@ -115,6 +119,9 @@ pub struct AssetStore {
     models: HashMap<PathBuf, Entry<ModelScene>>,
     /// Object-level BVHs by mesh and preset, with the content they were built from.
     blas: HashMap<(MeshKey, BuildPreset), (Version, Arc<BuiltMesh>)>,
+    /// Textures stored decoded, each with the texture it was decoded from (kept alive, so the
+    /// same allocation is the same data).
+    decoded: HashMap<TextureKey, (Arc<TextureData>, Arc<TextureData>)>,
     counters: StoreCounters,
 }
 
@@ -310,6 +317,28 @@ impl AssetStore {
             .map(|(_, b)| Arc::clone(b));
         self.counters.reused += u32::from(hit.is_some());
         hit
+    }
+
+    /// `data`, the texture of `key`, decoded to linear half floats
+    /// (`TextureData::decoded_srgb`; `None` for a texture that is not 8-bit sRGB): the copy
+    /// decoded before when `data` is the very texture it was decoded from (the store hands out the
+    /// same `Arc` while a file's content is unchanged), else decoded now and kept.
+    pub(super) fn decoded_texture(
+        &mut self,
+        key: &TextureKey,
+        data: &Arc<TextureData>,
+    ) -> Option<Arc<TextureData>> {
+        if let Some((source, decoded)) = self.decoded.get(key) {
+            if Arc::ptr_eq(source, data) {
+                self.counters.reused += 1;
+                return Some(Arc::clone(decoded));
+            }
+        }
+        let decoded = Arc::new(data.decoded_srgb()?);
+        self.counters.textures_decoded += 1;
+        self.decoded
+            .insert(key.clone(), (Arc::clone(data), Arc::clone(&decoded)));
+        Some(decoded)
     }
 
     /// Stores an object-level BVH just built.

@@ -861,6 +861,58 @@ fn srgb_textures_are_decoded_in_order_while_all_texels_fit_the_budget() {
     assert!(plan(&[], 0).is_empty());
 }
 
+/// A store keeps what it decoded: rebuilding the entities of an unchanged scene (what
+/// `Renderer::replace_kernel` does after a program edit) decodes no texture again and stores the
+/// same texels; a new image in the same file is decoded once more.
+#[test]
+fn a_store_decodes_an_unchanged_srgb_texture_once_over_rebuilds() {
+    let dir = std::env::temp_dir().join(format!("rtc_srgb_store_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let save = |pixels: Vec<u8>, width: u32| {
+        let png: image::RgbaImage = image::ImageBuffer::from_raw(width, 1, pixels).unwrap();
+        png.save(dir.join("t.png")).unwrap();
+    };
+    save(vec![0, 64, 128, 255, 255, 200, 100, 7], 2);
+    let text = format!(
+        "{HEADER}{TEXTURED}
+scene s {{
+    camera Pinhole {{}}
+    object a {{
+        geometry: cube_mesh(),
+        material: Textured {{ tex: load_image(\"t.png\"), shape: cube_mesh() }},
+    }}
+}}"
+    );
+    let (p, l) = compile_at(dir.join("s.rt").to_str().unwrap(), &text);
+    let options = EntityOptions::default();
+    let mut store = AssetStore::new();
+    let build = |store: &mut AssetStore| {
+        let e = Entities::build_with_store(&p, &p.scenes[l.scene], &l, &options, store)
+            .expect("entities");
+        assert_eq!(e.stats().decoded_textures, 1, "stored decoded");
+        e.texels().to_vec()
+    };
+    let first = build(&mut store);
+    assert_eq!(store.counters().textures_decoded, 1);
+    let image = crate::assets::load_image(dir.join("t.png")).unwrap();
+    assert_eq!(first, image.decoded_srgb().unwrap().words);
+    for _ in 0..2 {
+        assert_eq!(build(&mut store), first, "the same texels");
+        assert_eq!(store.counters().textures_decoded, 1, "not decoded again");
+    }
+    // A new image (three texels, so the file's length changes) is read and decoded again.
+    save(vec![10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110, 120], 3);
+    let edited = build(&mut store);
+    assert_eq!(
+        store.counters().textures_decoded,
+        2,
+        "the new image decoded"
+    );
+    let image = crate::assets::load_image(dir.join("t.png")).unwrap();
+    assert_eq!(edited, image.decoded_srgb().unwrap().words);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn scene_textures_from_8_bit_srgb_images_are_stored_decoded_unless_kept_encoded() {
     let dir = std::env::temp_dir().join(format!("rtc_srgb_entities_{}", std::process::id()));
