@@ -219,6 +219,59 @@ fn assets_are_watched_and_an_asset_edit_skips_the_compile() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A reload reads again only the watched files whose length or modification time changed, so an
+/// edit is not slowed down by hashing large assets; a file written less than `SETTLE` before it was
+/// read is read again whatever its stamp, so that a rewrite within the same tick of the file
+/// system's clock is still seen.
+#[test]
+fn a_reload_reads_only_files_whose_stamp_changed_unless_just_written() {
+    use std::time::{Duration, SystemTime};
+    let dir = temp_dir("stamp");
+    let file = dir.join("scene.rt");
+    let mesh = dir.join("tri.obj");
+    // Two meshes of the same length.
+    let small = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    let large = "v 0 0 0\nv 2 0 0\nv 0 2 0\nf 1 2 3\n";
+    let write = |text: &str, time: SystemTime| {
+        std::fs::write(&mesh, text).expect("write obj");
+        let f = std::fs::File::options()
+            .write(true)
+            .open(&mesh)
+            .expect("open obj");
+        f.set_modified(time).expect("set the time");
+    };
+    let minute_ago = SystemTime::now() - Duration::from_secs(60);
+    write(small, minute_ago);
+    let text = scene("40.0").replace(
+        "geometry: sphere_mesh(1u)",
+        "geometry: load_mesh(\"tri.obj\")",
+    );
+    std::fs::write(&file, text).expect("write");
+    let mut session = wgsl_session(&file, &dir);
+    let first = session.reload(&[]);
+    assert_eq!(first.status, Status::Built, "{}", first.messages);
+    let canon = mesh.canonicalize().expect("canonical");
+    let reload = |session: &mut Session| session.reload(std::slice::from_ref(&mesh));
+
+    // Other content under the same length and time, settled when read: not read again.
+    write(large, minute_ago);
+    assert_eq!(reload(&mut session).status, Status::Unchanged);
+    // A new time: read, and the change found.
+    write(large, minute_ago + Duration::from_secs(1));
+    let r = reload(&mut session);
+    assert_eq!(r.status, Status::Rerendered, "{}", r.messages);
+    assert_eq!(r.changed, vec![canon.clone()]);
+    // Written just now: a rewrite under the same length and time is still read.
+    let now = SystemTime::now();
+    write(small, now);
+    assert_eq!(reload(&mut session).changed, vec![canon.clone()]);
+    write(large, now);
+    let r = reload(&mut session);
+    assert_eq!(r.status, Status::Rerendered, "{}", r.messages);
+    assert_eq!(r.changed, vec![canon]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn a_change_before_a_folder_is_watched_is_found() {
     let dir = temp_dir("missed");
