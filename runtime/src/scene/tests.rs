@@ -861,6 +861,20 @@ fn srgb_textures_are_decoded_in_order_while_all_texels_fit_the_budget() {
     assert!(plan(&[], 0).is_empty());
 }
 
+/// A scene whose object `a` is a cube textured with `t.png` (next to the scene), then `more`.
+fn png_scene(more: &str) -> String {
+    format!(
+        "{HEADER}{TEXTURED}
+scene s {{
+    camera Pinhole {{}}
+    object a {{
+        geometry: cube_mesh(),
+        material: Textured {{ tex: load_image(\"t.png\"), shape: cube_mesh() }},
+    }}{more}
+}}"
+    )
+}
+
 /// A store keeps what it decoded: rebuilding the entities of an unchanged scene (what
 /// `Renderer::replace_kernel` does after a program edit) decodes no texture again and stores the
 /// same texels; a new image in the same file is decoded once more.
@@ -873,17 +887,7 @@ fn a_store_decodes_an_unchanged_srgb_texture_once_over_rebuilds() {
         png.save(dir.join("t.png")).unwrap();
     };
     save(vec![0, 64, 128, 255, 255, 200, 100, 7], 2);
-    let text = format!(
-        "{HEADER}{TEXTURED}
-scene s {{
-    camera Pinhole {{}}
-    object a {{
-        geometry: cube_mesh(),
-        material: Textured {{ tex: load_image(\"t.png\"), shape: cube_mesh() }},
-    }}
-}}"
-    );
-    let (p, l) = compile_at(dir.join("s.rt").to_str().unwrap(), &text);
+    let (p, l) = compile_at(dir.join("s.rt").to_str().unwrap(), &png_scene(""));
     let options = EntityOptions::default();
     let mut store = AssetStore::new();
     let build = |store: &mut AssetStore| {
@@ -920,21 +924,12 @@ fn scene_textures_from_8_bit_srgb_images_are_stored_decoded_unless_kept_encoded(
     let png: image::RgbaImage =
         image::ImageBuffer::from_raw(2, 1, vec![0, 64, 128, 255, 255, 200, 100, 7]).unwrap();
     png.save(dir.join("t.png")).unwrap();
-    let text = format!(
-        "{HEADER}{TEXTURED}
-scene s {{
-    camera Pinhole {{}}
-    object a {{
+    let object_b = "
+    object b {
         geometry: cube_mesh(),
-        material: Textured {{ tex: load_image(\"t.png\"), shape: cube_mesh() }},
-    }}
-    object b {{
-        geometry: cube_mesh(),
-        material: Textured {{ tex: solid_texture(vec4f(0.5)), shape: cube_mesh() }},
-    }}
-}}"
-    );
-    let (p, l) = compile_at(dir.join("s.rt").to_str().unwrap(), &text);
+        material: Textured { tex: solid_texture(vec4f(0.5)), shape: cube_mesh() },
+    }";
+    let (p, l) = compile_at(dir.join("s.rt").to_str().unwrap(), &png_scene(object_b));
     let tex_word = field_word(&p, "Textured", "tex");
     let image = crate::assets::load_image(dir.join("t.png")).unwrap();
     for (mode, decoded) in [(SrgbTextures::Decoded, 1), (SrgbTextures::Encoded, 0)] {

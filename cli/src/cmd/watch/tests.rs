@@ -63,6 +63,22 @@ fn wgsl_session(file: &Path, dir: &Path) -> Session {
     )
 }
 
+/// A session (as [`wgsl_session`]) over `dir/scene.rt`, whose object's geometry is the mesh
+/// `dir/tri.obj` (written by the caller), after its first build; with the mesh's canonical path.
+fn mesh_session(dir: &Path) -> (Session, PathBuf) {
+    let file = dir.join("scene.rt");
+    let text = scene("40.0").replace(
+        "geometry: sphere_mesh(1u)",
+        "geometry: load_mesh(\"tri.obj\")",
+    );
+    std::fs::write(&file, text).expect("write");
+    let mut session = wgsl_session(&file, dir);
+    let first = session.reload(&[]);
+    assert_eq!(first.status, Status::Built, "{}", first.messages);
+    let canon = dir.join("tri.obj").canonicalize().expect("canonical");
+    (session, canon)
+}
+
 /// Runs `cycles` edits on `file`, even ones valid (a new field of view each time, so the content
 /// always changes) and odd ones invalid; checks each reload's outcome. Returns the resident-set
 /// growth from after `warmup` cycles to the end.
@@ -194,18 +210,9 @@ fn a_touch_without_a_change_does_nothing() {
 #[test]
 fn assets_are_watched_and_an_asset_edit_skips_the_compile() {
     let dir = temp_dir("asset");
-    let file = dir.join("scene.rt");
     let mesh = dir.join("tri.obj");
     std::fs::write(&mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").expect("write obj");
-    let text = scene("40.0").replace(
-        "geometry: sphere_mesh(1u)",
-        "geometry: load_mesh(\"tri.obj\")",
-    );
-    std::fs::write(&file, text).expect("write");
-    let mut session = wgsl_session(&file, &dir);
-    let first = session.reload(&[]);
-    assert_eq!(first.status, Status::Built, "{}", first.messages);
-    let canon = mesh.canonicalize().expect("canonical");
+    let (mut session, canon) = mesh_session(&dir);
     assert!(
         session.watched().any(|p| *p == canon),
         "the mesh is watched"
@@ -227,7 +234,6 @@ fn assets_are_watched_and_an_asset_edit_skips_the_compile() {
 fn a_reload_reads_only_files_whose_stamp_changed_unless_just_written() {
     use std::time::{Duration, SystemTime};
     let dir = temp_dir("stamp");
-    let file = dir.join("scene.rt");
     let mesh = dir.join("tri.obj");
     // Two meshes of the same length.
     let small = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
@@ -242,15 +248,7 @@ fn a_reload_reads_only_files_whose_stamp_changed_unless_just_written() {
     };
     let minute_ago = SystemTime::now() - Duration::from_secs(60);
     write(small, minute_ago);
-    let text = scene("40.0").replace(
-        "geometry: sphere_mesh(1u)",
-        "geometry: load_mesh(\"tri.obj\")",
-    );
-    std::fs::write(&file, text).expect("write");
-    let mut session = wgsl_session(&file, &dir);
-    let first = session.reload(&[]);
-    assert_eq!(first.status, Status::Built, "{}", first.messages);
-    let canon = mesh.canonicalize().expect("canonical");
+    let (mut session, canon) = mesh_session(&dir);
     let reload = |session: &mut Session| session.reload(std::slice::from_ref(&mesh));
 
     // Other content under the same length and time, settled when read: not read again.
