@@ -63,8 +63,9 @@ fn wgsl_session(file: &Path, dir: &Path) -> Session {
     )
 }
 
-/// A session (as [`wgsl_session`]) over `dir/scene.rt`, whose object's geometry is the mesh
-/// `dir/tri.obj` (written by the caller), after its first build; with the mesh's canonical path.
+/// A session (as [`wgsl_session`]) over a scene written in `dir` whose object's geometry is the
+/// mesh `tri.obj` beside it (written by the caller), after its first build; with the mesh's
+/// canonical path.
 fn mesh_session(dir: &Path) -> (Session, PathBuf) {
     let file = dir.join("scene.rt");
     let text = scene("40.0").replace(
